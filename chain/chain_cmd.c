@@ -1,0 +1,147 @@
+/*
+ * chain_cmd.c: `granwave chain`, one column collision (physics.md 1.1-1.4).
+ */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "chain_options.h"
+
+static const char *chain_summary =
+    "One collision of a column of N beads with a wall (Falcon et al. 1998, eq. F.11):\n"
+    "Hertz contacts, beads initially touching and moving at v_imp toward the wall.\n"
+    "Reports the peak wall force, its time, the contact time tau_N, the force\n"
+    "oscillation period, detachment, restitution and the energy error. SI units.";
+
+static cJSON *result_json(const chain_cli *c, const gw_chain_result *r, double wall_ms)
+{
+    const gw_chain_params *p = &c->params;
+    cJSON *o = cJSON_CreateObject();
+    cJSON_AddStringToObject(o, "version", gw_version());
+    cJSON_AddNumberToObject(o, "n", p->n);
+    cJSON_AddNumberToObject(o, "v_imp", p->v_imp);
+    cJSON_AddStringToObject(o, "solver", c->solver);
+    cJSON_AddNumberToObject(o, "f_max", r->f_max);
+    cJSON_AddNumberToObject(o, "tau_max", r->tau_max);
+    cJSON_AddNumberToObject(o, "tau_n", r->tau_n);
+    cJSON_AddNumberToObject(o, "period", r->period);
+    cJSON_AddNumberToObject(o, "n_maxima", r->n_maxima);
+    cJSON_AddNumberToObject(o, "energy_error", r->energy_error);
+    cJSON_AddItemToObject(o, "final_velocities", gw_json_doubles(r->final_v, r->n));
+    cJSON_AddItemToObject(o, "detach_times", gw_json_doubles(r->detach_t, r->n));
+    cJSON_AddItemToObject(o, "velocities_at_tau_n", gw_json_doubles(r->v_tau_n, r->n));
+    cJSON_AddNumberToObject(o, "n_s", r->n_s);
+    cJSON_AddNumberToObject(o, "cluster", r->cluster);
+    cJSON_AddNumberToObject(o, "e_rel_over_e_k", r->e_rel_over_e_k);
+    cJSON_AddNumberToObject(o, "eps_eff", r->eps_eff);
+    cJSON_AddNumberToObject(o, "eps_col", r->eps_col);
+    cJSON_AddNumberToObject(o, "wall_contacts", r->wall_contacts);
+    cJSON_AddBoolToObject(o, "converged", r->converged);
+    cJSON_AddNumberToObject(o, "t_end", r->t_end);
+    cJSON_AddNumberToObject(o, "events", (double)r->n_events);
+    cJSON_AddNumberToObject(o, "steps", (double)r->stats.steps);
+    cJSON_AddNumberToObject(o, "rhs_evals", (double)r->stats.rhs_evals);
+    cJSON_AddNumberToObject(o, "jac_evals", (double)r->stats.jac_evals);
+    cJSON_AddNumberToObject(o, "restarts", (double)r->stats.restarts);
+    cJSON_AddNumberToObject(o, "wall_time_ms", wall_ms);
+    cJSON *th = cJSON_AddObjectToObject(o, "closed_forms");
+    cJSON_AddNumberToObject(th, "tau_1", gw_chain_tau1(p->mass, p->kwall, p->v_imp));
+    cJSON_AddNumberToObject(th, "f_max_1", gw_chain_fmax1(p->mass, p->kwall, p->v_imp));
+    cJSON_AddNumberToObject(th, "t_q", gw_chain_tq_theory(p->mass, p->k, p->v_imp));
+    cJSON_AddNumberToObject(th, "k_c", gw_chain_kc(p->k));
+    cJSON_AddItemToObject(o, "settings", chain_cli_settings_json(c));
+    return o;
+}
+
+static void print_text(const chain_cli *c, const gw_chain_result *r)
+{
+    const gw_chain_params *p = &c->params;
+    printf("granwave %s chain: n = %d, v_imp = %g m/s, solver %s\n", gw_version(), p->n,
+           p->v_imp, c->solver);
+    printf("  m = %.6g kg, k = %.6g N/m^1.5, K = %.6g N/m^1.5\n", p->mass, p->k, p->kwall);
+    printf("  F_max      %.6g N at tau_max = %.6g us\n", r->f_max, r->tau_max * 1e6);
+    printf("  tau_N      %.6g us (wall contacts: %d)\n", r->tau_n * 1e6, r->wall_contacts);
+    printf("  period P   %.6g us (%d maxima)\n", r->period * 1e6, r->n_maxima);
+    printf("  eps_eff    %.6g   eps_col %.6g   E_rel/E_K %.6g\n", r->eps_eff, r->eps_col,
+           r->e_rel_over_e_k);
+    printf("  N_s        %d (cluster of %d)\n", r->n_s, r->cluster);
+    printf("  energy     max relative error %.3g\n", r->energy_error);
+    printf("  solver     %ld steps, %ld rhs evaluations, %ld restarts\n", r->stats.steps,
+           r->stats.rhs_evals, r->stats.restarts);
+}
+
+int gw_cmd_chain(int argc, char **argv)
+{
+    chain_cli c;
+    gw_opt opts[CHAIN_CLI_NOPTS + 3];
+    chain_cli_options(&c, opts);
+    long n = 1;
+    double vimp = 0.3;
+    opts[CHAIN_CLI_NOPTS] = (gw_opt){.name = "n", .kind = GW_OPT_LONG, .dest = &n, .metavar = "N",
+                                     .help = "number of beads [1]", .lo = 1, .hi = 50000000};
+    opts[CHAIN_CLI_NOPTS + 1] = (gw_opt){.name = "vimp", .kind = GW_OPT_DOUBLE, .dest = &vimp,
+                                         .metavar = "V", .help = "impact velocity, m/s [0.3]",
+                                         .lo = 0, .hi = 1e3, .open_lo = 1};
+    opts[CHAIN_CLI_NOPTS + 2] = (gw_opt){0};
+    gw_err err = {{0}};
+    int help = 0, npos = 0;
+    const char *pos[1];
+    if (gw_cli_parse("chain", opts, argc, argv, &help, pos, 0, &npos, &err) != GW_OK)
+        return chain_cli_fail(err.msg);
+    if (help) {
+        gw_cli_help(stdout, "chain", "granwave chain [options]", chain_summary, opts);
+        return 0;
+    }
+    c.params.n = (int)n;
+    c.params.v_imp = vimp;
+    if (chain_cli_resolve(&c, opts, "chain", &err) != GW_OK)
+        return chain_cli_fail(err.msg);
+    if (c.out && gw_mkdir_p(c.out, &err) != GW_OK)
+        return chain_cli_fail(err.msg);
+
+    gw_chain *chain = NULL;
+    if (gw_chain_create(&c.params, &chain, &err) != GW_OK)
+        return chain_cli_fail(err.msg);
+    gw_chain_trace tr;
+    gw_chain_trace_init(&tr, c.params.n);
+    if (c.out) {
+        c.run.sample = gw_chain_trace_sample;
+        c.run.sample_ctx = &tr;
+    }
+    gw_chain_result r;
+    double t0 = gw_clock_ms();
+    int rc = gw_chain_collide(chain, &c.run, &r, &err);
+    double wall_ms = gw_clock_ms() - t0;
+    int code = 0;
+    if (rc != GW_OK) {
+        fprintf(stderr, "granwave chain: %s\n", err.msg);
+        code = rc == GW_EINVAL ? 2 : 1;
+    } else {
+        if (c.out) {
+            char *hdr = chain_cli_header(&c, argc, argv);
+            char path[4096];
+            cJSON *o = result_json(&c, &r, wall_ms);
+            if (gw_chain_trace_write(&tr, c.out, "chain", hdr ? hdr : "", &err) != GW_OK ||
+                gw_path_join(path, sizeof path, c.out, "chain.json") != GW_OK ||
+                gw_json_write(path, o, &err) != GW_OK) {
+                fprintf(stderr, "granwave chain --out: %s\n", err.msg);
+                code = 1;
+            }
+            cJSON_Delete(o);
+            free(hdr);
+        }
+        if (code == 0) {
+            if (c.json) {
+                cJSON *o = result_json(&c, &r, wall_ms);
+                gw_json_print(o, stdout);
+                cJSON_Delete(o);
+            } else {
+                print_text(&c, &r);
+            }
+        }
+    }
+    gw_chain_result_free(&r);
+    gw_chain_trace_free(&tr);
+    gw_chain_free(chain);
+    return code;
+}

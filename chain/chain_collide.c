@@ -1,0 +1,259 @@
+/*
+ * chain_collide.c: one column-wall collision and its observables (physics.md 1.3,
+ * 1.4).
+ *
+ * The integration stops at every root of the chain's event functions (wall
+ * contact x_0 = 0, contact overlaps d_i = 0, wall-bead velocity v_0 = 0) and
+ * restarts the solver there, so contact times are exact and the methods keep
+ * their order between contact changes. Observables:
+ *   f_max, tau_max  largest wall force and its time (maxima of F_0 are the roots
+ *                   v_0 = 0 with x_0 > 0; samples catch the damped case)
+ *   tau_n           last time bead 1 leaves the wall (x_0 -> 0 from above)
+ *   period          mean spacing of successive wall-force maxima
+ *   eps_eff (F.7), eps_col (F.30), E_rel/E_K at tau_n (F.20, mass-weighted)
+ *   detach_t[i]     last opening of a contact of bead i (wall counts for bead 1)
+ *   n_s             n minus the beads still in contact with bead 1 at tau_n
+ * Units: SI.
+ */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "gw_chain.h"
+
+gw_chain_run_opts gw_chain_run_opts_default(void)
+{
+    gw_chain_run_opts o;
+    memset(&o, 0, sizeof o);
+    o.solver = gw_solver_cvode;
+    o.sp = gw_solver_params_default();
+    return o;
+}
+
+typedef struct run_state {
+    const gw_chain *c;
+    const gw_chain_run_opts *o;
+    gw_chain_result *r;
+    int n;
+    char *closed;    /* [n]: 0 = wall, 1+i = contact i */
+    double *last_open;
+    double t_first_max, t_last_max;
+} run_state;
+
+static int observe(run_state *st, double t, const double *y, int is_event)
+{
+    gw_chain_result *r = st->r;
+    double f = gw_chain_wall_force(st->c, y);
+    if (f > r->f_max) {
+        r->f_max = f;
+        r->tau_max = t;
+    }
+    gw_chain_energy e;
+    gw_chain_energy_of(st->c, y, &e);
+    double err = fabs(e.total - r->e0) / r->e0;
+    if (err > r->energy_error)
+        r->energy_error = err;
+    if (st->o->sample)
+        return st->o->sample(st->o->sample_ctx, t, y, f, is_event);
+    return 0;
+}
+
+static void on_wall_open(run_state *st, double t, const double *y)
+{
+    gw_chain_result *r = st->r;
+    const int n = st->n;
+    r->tau_n = t;
+    int cl = 1;
+    while (cl < n && st->closed[cl])
+        cl++;
+    r->cluster = cl;
+    r->n_s = n - cl;
+    double mv = 0, msum = 0;
+    for (int i = 0; i < n; i++) {
+        double m = gw_chain_bead_mass(st->c, i);
+        r->v_tau_n[i] = y[2 * i + 1];
+        mv += m * y[2 * i + 1];
+        msum += m;
+    }
+    double vg = mv / msum, erel = 0, ek = 0;
+    for (int i = 0; i < n; i++) {
+        double m = gw_chain_bead_mass(st->c, i), v = y[2 * i + 1];
+        erel += m * (v - vg) * (v - vg);
+        ek += m * v * v;
+    }
+    r->e_rel_over_e_k = ek > 0 ? erel / ek : 0.0;
+}
+
+/* Handle the roots reported at time t. */
+static void on_roots(run_state *st, double t, const double *y, const int *roots)
+{
+    gw_chain_result *r = st->r;
+    const int n = st->n;
+    for (int k = 0; k < n; k++) {
+        if (roots[k] == 0)
+            continue;
+        r->n_events++;
+        int open = roots[k] < 0;
+        if (open && st->closed[k]) {
+            st->last_open[k] = t;
+            st->closed[k] = 0;
+            if (k == 0)
+                on_wall_open(st, t, y);
+        } else if (!open && !st->closed[k]) {
+            st->closed[k] = 1;
+            if (k == 0)
+                r->wall_contacts++;
+        }
+    }
+    if (roots[n] < 0 && y[0] > 0) { /* v_0 falls through 0: wall-force maximum */
+        r->n_events++;
+        if (r->n_maxima == 0)
+            st->t_first_max = t;
+        st->t_last_max = t;
+        r->n_maxima++;
+    }
+}
+
+/* Every contact open and every neighbour pair separating. */
+static int finished(const run_state *st, const double *y)
+{
+    const int n = st->n;
+    for (int k = 0; k < n; k++)
+        if (st->closed[k])
+            return 0;
+    if (y[1] > 0)
+        return 0;
+    for (int i = 0; i < n - 1; i++)
+        if (y[2 * i + 3] > y[2 * i + 1])
+            return 0;
+    return 1;
+}
+
+static void finish_result(run_state *st, const double *y)
+{
+    gw_chain_result *r = st->r;
+    const int n = st->n;
+    double p_f = 0, p_i = 0, e_f = 0, e_i = 0;
+    double v0 = gw_chain_get_params(st->c)->v_imp;
+    for (int i = 0; i < n; i++) {
+        double m = gw_chain_bead_mass(st->c, i), v = y[2 * i + 1];
+        r->final_v[i] = v;
+        p_f += m * v;
+        p_i += m * v0;
+        e_f += m * v * v;
+        e_i += m * v0 * v0;
+        double a = i > 0 ? st->last_open[i] : st->last_open[0];      /* below */
+        double b = i < n - 1 ? st->last_open[i + 1] : -INFINITY;    /* above */
+        double d = fmax(a, b);
+        r->detach_t[i] = isfinite(d) ? d : NAN;
+    }
+    r->eps_eff = -p_f / p_i;
+    r->eps_col = sqrt(e_f / e_i);
+    r->period = r->n_maxima >= 2 ? (st->t_last_max - st->t_first_max) / (r->n_maxima - 1)
+                                 : NAN;
+}
+
+int gw_chain_collide(const gw_chain *c, const gw_chain_run_opts *o, gw_chain_result *r,
+                     gw_err *err)
+{
+    const gw_chain_params *p = gw_chain_get_params(c);
+    const gw_system *sys = gw_chain_system(c);
+    const int n = p->n;
+    memset(r, 0, sizeof *r);
+    r->n = n;
+    r->final_v = calloc(3 * (size_t)n, sizeof *r->final_v);
+    double *y = malloc((size_t)sys->dim * sizeof *y);
+    int *roots = calloc((size_t)sys->nroots, sizeof *roots);
+    run_state st = {c, o, r, n, calloc((size_t)n, 1), malloc((size_t)n * sizeof(double)), 0, 0};
+    int rc = GW_OK;
+    gw_solver *s = NULL;
+    if (!r->final_v || !y || !roots || !st.closed || !st.last_open) {
+        rc = gw_err_set(err, GW_ENOMEM, "chain: out of memory for %d beads", n);
+        goto done;
+    }
+    r->detach_t = r->final_v + n;
+    r->v_tau_n = r->final_v + 2 * n;
+    r->tau_n = r->tau_max = NAN;
+    for (int k = 0; k < n; k++) {
+        st.closed[k] = 1;
+        st.last_open[k] = -INFINITY;
+    }
+    r->wall_contacts = 1;
+
+    double tc = gw_chain_time_scale(p);
+    double tau1 = gw_chain_tau1(gw_chain_bead_mass(c, 0), p->kwall, p->v_imp);
+    double dt_out = o->dt_out > 0 ? o->dt_out : tau1 / 200.0;
+    double t_max = o->t_max > 0 ? o->t_max : 20.0 * (n * 2.0 * tc + tau1);
+    gw_solver_params sp = o->sp;
+    const gw_solver_type *type = o->solver ? o->solver : gw_solver_cvode;
+    if (type == gw_solver_rk4 && !(sp.dt > 0))
+        sp.dt = tc / 400.0;
+
+    gw_chain_initial_state(c, y);
+    gw_chain_energy e;
+    gw_chain_energy_of(c, y, &e);
+    r->e0 = e.total;
+    if ((rc = gw_solver_create(type, sys, &sp, 0.0, y, &s, err)) != GW_OK)
+        goto done;
+    double t = 0.0, tnext = dt_out;
+    if (observe(&st, t, y, 0) != 0)
+        goto stopped;
+    for (;;) {
+        if (tnext > t_max)
+            tnext = t_max;
+        rc = gw_solver_advance(s, tnext, &t, y, roots);
+        if (rc < 0) {
+            gw_err_set(err, rc, "%s", gw_solver_error(s));
+            break;
+        }
+        if (rc == GW_ROOT) {
+            on_roots(&st, t, y, roots);
+            if (observe(&st, t, y, 1) != 0)
+                goto stopped;
+            if ((rc = gw_solver_reset(s, t, y)) != GW_OK) {
+                gw_err_set(err, rc, "%s", gw_solver_error(s));
+                break;
+            }
+        } else {
+            if (observe(&st, t, y, 0) != 0)
+                goto stopped;
+            tnext = t + dt_out;
+        }
+        rc = GW_OK;
+        if (o->energy_tol > 0 && r->energy_error > o->energy_tol) {
+            rc = gw_err_set(err, GW_EENERGY,
+                            "chain: relative energy error %.3g exceeds the limit %.3g at t = %.9g s",
+                            r->energy_error, o->energy_tol, t);
+            break;
+        }
+        if (finished(&st, y)) {
+            r->converged = 1;
+            break;
+        }
+        if (t >= t_max) {
+            if (!isfinite(r->tau_n))
+                rc = gw_err_set(err, GW_ELIMIT,
+                                "chain: bead 1 still on the wall at t_max = %.6g s", t_max);
+            break;
+        }
+    }
+stopped:
+    r->t_end = t;
+    finish_result(&st, y);
+    gw_solver_get_stats(s, &r->stats);
+done:
+    gw_solver_free(s);
+    free(y);
+    free(roots);
+    free(st.closed);
+    free(st.last_open);
+    return rc;
+}
+
+void gw_chain_result_free(gw_chain_result *r)
+{
+    if (!r)
+        return;
+    free(r->final_v);
+    r->final_v = r->detach_t = r->v_tau_n = NULL;
+}

@@ -1,0 +1,88 @@
+/*
+ * chain_material.c: materials, Hertz coefficients and the single-bead closed forms.
+ *
+ *   k = (4/3) E* sqrt(R_eff), 1/E* = (1-nu1^2)/E1 + (1-nu2^2)/E2,
+ *   1/R_eff = 1/R1 + 1/R2 (a plane has 1/R = 0)                 (F.12, F.3)
+ *   tau_1 = c_tau (5m/(4K))^(2/5) v^(-1/5), c_tau = (4/5) B(2/5, 1/2)   (F.2)
+ *   d_max = (5 m v^2 / (4K))^(2/5),  F_max = K d_max^(3/2)        (F.13, F.14)
+ *   T_q = 2 (m/k)^(2/5) v^(-1/5)                                 (F.17, F.29)
+ *   K_c = (c_tau/4)^(5/2) (5k/4)                                   (F.22)
+ * Units: Pa, m, kg, m/s, s, N/m^1.5.
+ */
+#include <math.h>
+#include <string.h>
+
+#include <gsl/gsl_sf_gamma.h>
+
+#include "gw_chain.h"
+
+/* The experiment's steel is from physics.md; the others are handbook values
+ * (room temperature, order-of-magnitude accuracy) for exploring soft walls. */
+static const gw_material materials[] = {
+    {"steel", 21.6e10, 0.276, 7850.0},
+    {"rigid", INFINITY, 0.0, INFINITY},
+    {"brass", 1.00e11, 0.34, 8500.0},
+    {"aluminium", 7.0e10, 0.33, 2700.0},
+    {"glass", 6.3e10, 0.22, 2500.0},
+    {"pmma", 3.0e9, 0.37, 1180.0},
+    {"pvc", 3.0e9, 0.38, 1400.0},
+};
+
+const gw_material *gw_material_find(const char *name)
+{
+    for (size_t i = 0; name && i < sizeof materials / sizeof materials[0]; i++)
+        if (strcmp(materials[i].name, name) == 0)
+            return &materials[i];
+    return NULL;
+}
+
+const char *gw_material_names(void)
+{
+    return "steel, rigid, brass, aluminium, glass, pmma, pvc";
+}
+
+static double compliance(const gw_material *m)
+{
+    return isinf(m->young) ? 0.0 : (1.0 - m->poisson * m->poisson) / m->young;
+}
+
+double gw_hertz_coefficient(double r1, const gw_material *m1, double r2,
+                            const gw_material *m2)
+{
+    double inv_r = (isinf(r1) ? 0.0 : 1.0 / r1) + (isinf(r2) ? 0.0 : 1.0 / r2);
+    double c = compliance(m1) + compliance(m2);
+    if (!(inv_r > 0) || !(c > 0))
+        return INFINITY;
+    return 4.0 / 3.0 / c * sqrt(1.0 / inv_r);
+}
+
+double gw_chain_tau_constant(void)
+{
+    return 0.8 * gsl_sf_beta(0.4, 0.5);
+}
+
+double gw_chain_tau1(double m, double K, double v)
+{
+    return gw_chain_tau_constant() * pow(5.0 * m / (4.0 * K), 0.4) * pow(v, -0.2);
+}
+
+double gw_chain_dmax1(double m, double K, double v)
+{
+    return pow(5.0 * m * v * v / (4.0 * K), 0.4);
+}
+
+double gw_chain_fmax1(double m, double K, double v)
+{
+    double d = gw_chain_dmax1(m, K, v);
+    return K * d * sqrt(d);
+}
+
+double gw_chain_tq_theory(double m, double k, double v)
+{
+    return 2.0 * pow(m / k, 0.4) * pow(v, -0.2);
+}
+
+double gw_chain_kc(double k)
+{
+    return pow(gw_chain_tau_constant() / 4.0, 2.5) * 1.25 * k;
+}

@@ -1,0 +1,388 @@
+/*
+ * chain_model.c: the bead column as an ODE system (physics.md 1.1, eq. F.11).
+ *
+ *   m_i x_i'' = F_i - F_(i-1) + m_i g,   F_i = k_i d_i^(3/2) [d_i > 0],
+ *   d_i = x_(i+1) - x_i,   F_(-1) = F_wall = K x_0^(3/2) [x_0 > 0]   (0-based)
+ *
+ * Damping (physics.md 1.5), force clamped at >= 0:
+ *   Kuwabara-Kono  F = k d^(3/2) + gamma d^(1/2) d'
+ *   Hunt-Crossley  F = k d^(3/2) (1 + (3/2) alpha d')
+ * The dissipated power sum (F_el - F) (-d') is integrated as an extra state so the
+ * energy ledger is closed by integration, not inferred.
+ * Energies: kinetic (1/2) m v^2, elastic (2/5) k d^(5/2), gravity -m g x.
+ * Units: SI (m, s, kg, N, N/m^1.5, J).
+ */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "gw_chain.h"
+
+struct gw_chain {
+    gw_chain_params p;
+    int n;
+    double *m, *minv, *kc, *gam; /* masses [n], 1/m [n], k [n-1], gamma [n-1] */
+    double kwall, gwall;         /* wall coefficient and its KK constant */
+    double *scale;               /* [dim] */
+    gw_system sys;
+};
+
+/* Contact force and dissipated power for overlap d > 0 and rate dd = d'. */
+static inline double damped_force(const gw_chain *c, double k, double gam, double d,
+                                  double dd, double *pdiss)
+{
+    double sd = sqrt(d), fel = k * d * sd, f;
+    if (c->p.damping == GW_DAMP_KUWABARA_KONO)
+        f = fel + gam * sd * dd;
+    else
+        f = fel * (1.0 + 1.5 * c->p.alpha * dd);
+    if (f < 0)
+        f = 0;
+    *pdiss += (fel - f) * (-dd);
+    return f;
+}
+
+/* Forces part: dv/dt from contacts (and dE_d/dt); positions untouched. */
+static void chain_forces(const gw_chain *c, const double *y, double *yd, int add)
+{
+    const int n = c->n;
+    const double *m1 = c->minv, *kc = c->kc;
+    double x0 = y[0];
+    double fprev = 0.0;
+    if (c->p.damping == GW_DAMP_NONE) {
+        if (x0 > 0)
+            fprev = c->kwall * x0 * sqrt(x0);
+        for (int i = 0; i < n - 1; i++) {
+            double d = y[2 * i + 2] - y[2 * i], f = 0.0;
+            if (d > 0)
+                f = kc[i] * d * sqrt(d);
+            double a = (f - fprev) * m1[i];
+            yd[2 * i + 1] = add ? yd[2 * i + 1] + a : a;
+            fprev = f;
+        }
+        double a = -fprev * m1[n - 1];
+        yd[2 * n - 1] = add ? yd[2 * n - 1] + a : a;
+        return;
+    }
+    double pd = 0.0;
+    if (x0 > 0)
+        fprev = damped_force(c, c->kwall, c->gwall, x0, y[1], &pd);
+    for (int i = 0; i < n; i++) {
+        double f = 0.0;
+        if (i < n - 1) {
+            double d = y[2 * i + 2] - y[2 * i];
+            if (d > 0)
+                f = damped_force(c, kc[i], c->gam[i], d, y[2 * i + 3] - y[2 * i + 1], &pd);
+        }
+        double a = (f - fprev) * m1[i];
+        yd[2 * i + 1] = add ? yd[2 * i + 1] + a : a;
+        fprev = f;
+    }
+    yd[2 * n] = add ? yd[2 * n] + pd : pd;
+}
+
+/* Kinematic part: dx/dt = v, dv/dt = g. */
+static void chain_kinematics(const gw_chain *c, const double *y, double *yd)
+{
+    const double g = c->p.gravity;
+    for (int i = 0; i < c->n; i++) {
+        yd[2 * i] = y[2 * i + 1];
+        yd[2 * i + 1] = g;
+    }
+    if (c->p.damping != GW_DAMP_NONE)
+        yd[2 * c->n] = 0.0;
+}
+
+static int chain_rhs(double t, const double *y, double *yd, void *P)
+{
+    (void)t;
+    const gw_chain *c = P;
+    chain_kinematics(c, y, yd);
+    chain_forces(c, y, yd, 1);
+    return 0;
+}
+
+static int chain_rhs_ex(double t, const double *y, double *yd, void *P)
+{
+    (void)t;
+    chain_kinematics(P, y, yd);
+    return 0;
+}
+
+static int chain_rhs_im(double t, const double *y, double *yd, void *P)
+{
+    (void)t;
+    const gw_chain *c = P;
+    for (int i = 0; i < c->n; i++)
+        yd[2 * i] = 0.0;
+    chain_forces(c, y, yd, 0);
+    return 0;
+}
+
+/* dF/dd and dF/dd' of one contact (zero when open or clamped). */
+static void contact_partials(const gw_chain *c, double k, double gam, double d, double dd,
+                             double *fd, double *fv)
+{
+    *fd = *fv = 0.0;
+    if (!(d > 0))
+        return;
+    double sd = sqrt(d);
+    switch (c->p.damping) {
+    case GW_DAMP_NONE:
+        *fd = 1.5 * k * sd;
+        break;
+    case GW_DAMP_KUWABARA_KONO:
+        if (k * d * sd + gam * sd * dd > 0) {
+            *fd = 1.5 * k * sd + 0.5 * gam * dd / sd;
+            *fv = gam * sd;
+        }
+        break;
+    case GW_DAMP_HUNT_CROSSLEY:
+        if (1.0 + 1.5 * c->p.alpha * dd > 0) {
+            *fd = 1.5 * k * sd * (1.0 + 1.5 * c->p.alpha * dd);
+            *fv = 1.5 * c->p.alpha * k * d * sd;
+        }
+        break;
+    }
+}
+
+/* Banded Jacobian. Row of a_i: F_i depends on (x_i, x_(i+1), v_i, v_(i+1)),
+ * F_(i-1) on (x_(i-1), x_i, v_(i-1), v_i). The dissipated-energy row (full) is
+ * left out: it does not feed back into the dynamics. */
+static int chain_jac(double t, const double *y, const double *f, gw_band *J, void *P)
+{
+    (void)t;
+    (void)f;
+    const gw_chain *c = P;
+    const int n = c->n;
+    double wd, wv; /* partials of the force below bead i (wall or contact i-1) */
+    contact_partials(c, c->kwall, c->gwall, y[0], y[1], &wd, &wv);
+    for (int i = 0; i < n; i++) {
+        long xi = 2 * i, vi = 2 * i + 1;
+        gw_band_set(J, xi, vi, 1.0);
+        double cd = 0.0, cv = 0.0;
+        if (i < n - 1)
+            contact_partials(c, c->kc[i], c->gam[i], y[xi + 2] - y[xi], y[vi + 2] - y[vi],
+                             &cd, &cv);
+        double m1 = c->minv[i];
+        /* a_i = (F_i - F_(i-1)) / m_i */
+        gw_band_set(J, vi, xi, -(cd + wd) * m1);
+        gw_band_set(J, vi, vi, -(cv + wv) * m1);
+        if (i < n - 1) {
+            gw_band_set(J, vi, xi + 2, cd * m1);
+            gw_band_set(J, vi, vi + 2, cv * m1);
+        }
+        if (i > 0) {
+            gw_band_set(J, vi, xi - 2, wd * m1);
+            gw_band_set(J, vi, vi - 2, wv * m1);
+        }
+        wd = cd;
+        wv = cv;
+    }
+    return 0;
+}
+
+static int chain_roots(double t, const double *y, double *g, void *P)
+{
+    (void)t;
+    const gw_chain *c = P;
+    const int n = c->n;
+    g[0] = y[0];
+    for (int i = 0; i < n - 1; i++)
+        g[1 + i] = y[2 * i + 2] - y[2 * i];
+    g[n] = y[1];
+    return 0;
+}
+
+gw_chain_params gw_chain_params_default(void)
+{
+    gw_chain_params p;
+    memset(&p, 0, sizeof p);
+    const gw_material *steel = gw_material_find("steel");
+    p.n = 1;
+    p.v_imp = 0.3;
+    p.radius = 4e-3;
+    p.mass = 4.0 / 3.0 * M_PI * pow(p.radius, 3) * steel->density;
+    p.k = gw_hertz_coefficient(p.radius, steel, p.radius, steel);
+    p.kwall = gw_hertz_coefficient(p.radius, steel, INFINITY, steel);
+    p.damping = GW_DAMP_NONE;
+    return p;
+}
+
+int gw_chain_params_validate(const gw_chain_params *p, gw_err *err)
+{
+    int rc;
+    if (p->n < 1)
+        return gw_err_set(err, GW_EINVAL, "n: number of beads must be >= 1, got %d", p->n);
+    if (p->n > 50000000)
+        return gw_err_set(err, GW_EINVAL, "n: %d beads exceed the supported 5e7", p->n);
+    if ((rc = gw_check_positive(p->v_imp, "v_imp (impact velocity, m/s)", err)) != GW_OK)
+        return rc;
+    if (!p->masses && (rc = gw_check_positive(p->mass, "mass (kg)", err)) != GW_OK)
+        return rc;
+    if (!p->kc && (rc = gw_check_positive(p->k, "k (bead-bead Hertz coefficient, N/m^1.5)", err)) != GW_OK)
+        return rc;
+    if ((rc = gw_check_positive(p->kwall, "kwall (wall Hertz coefficient, N/m^1.5)", err)) != GW_OK)
+        return rc;
+    if ((rc = gw_check_positive(p->radius, "radius (m)", err)) != GW_OK)
+        return rc;
+    if ((rc = gw_check_range(p->gravity, "gravity (m/s^2)", -1e4, 1e4, err)) != GW_OK)
+        return rc;
+    for (int i = 0; p->masses && i < p->n; i++)
+        if (!(p->masses[i] > 0) || !isfinite(p->masses[i]))
+            return gw_err_set(err, GW_EINVAL, "masses[%d]: must be positive and finite", i);
+    for (int i = 0; p->kc && i < p->n - 1; i++)
+        if (!(p->kc[i] > 0) || !isfinite(p->kc[i]))
+            return gw_err_set(err, GW_EINVAL, "kc[%d]: must be positive and finite", i);
+    switch (p->damping) {
+    case GW_DAMP_NONE:
+        break;
+    case GW_DAMP_KUWABARA_KONO:
+        if ((rc = gw_check_range(p->gamma, "gamma (Kuwabara-Kono, N s/m^1.5)", 0, INFINITY, err)) != GW_OK)
+            return rc;
+        break;
+    case GW_DAMP_HUNT_CROSSLEY:
+        if ((rc = gw_check_range(p->alpha, "alpha (Hunt-Crossley, s/m)", 0, INFINITY, err)) != GW_OK)
+            return rc;
+        break;
+    default:
+        return gw_err_set(err, GW_EINVAL, "damping: unknown model %d", (int)p->damping);
+    }
+    return GW_OK;
+}
+
+double gw_chain_time_scale(const gw_chain_params *p)
+{
+    double m = p->masses ? p->masses[0] : p->mass;
+    double k = p->kc && p->n > 1 ? p->kc[0] : p->k;
+    return pow(m / k, 0.4) * pow(p->v_imp, -0.2);
+}
+
+int gw_chain_create(const gw_chain_params *p, gw_chain **out, gw_err *err)
+{
+    *out = NULL;
+    int rc = gw_chain_params_validate(p, err);
+    if (rc != GW_OK)
+        return rc;
+    gw_chain *c = calloc(1, sizeof *c);
+    const int n = p->n;
+    const long dim = 2L * n + (p->damping != GW_DAMP_NONE);
+    if (c) {
+        c->m = malloc((size_t)(4 * n) * sizeof *c->m);
+        c->scale = malloc((size_t)dim * sizeof *c->scale);
+    }
+    if (!c || !c->m || !c->scale) {
+        gw_chain_free(c);
+        return gw_err_set(err, GW_ENOMEM, "chain: out of memory for %d beads", n);
+    }
+    c->p = *p;
+    c->p.masses = NULL;
+    c->p.kc = NULL;
+    c->n = n;
+    c->minv = c->m + n;
+    c->kc = c->m + 2 * n;
+    c->gam = c->m + 3 * n;
+    for (int i = 0; i < n; i++) {
+        c->m[i] = p->masses ? p->masses[i] : p->mass;
+        c->minv[i] = 1.0 / c->m[i];
+    }
+    for (int i = 0; i < n - 1; i++) {
+        c->kc[i] = p->kc ? p->kc[i] : p->k;
+        c->gam[i] = p->gamma * c->kc[i] / (p->kc ? p->kc[0] : p->k);
+    }
+    c->kwall = p->kwall;
+    c->gwall = p->gamma * p->kwall / (p->kc && n > 1 ? p->kc[0] : p->k);
+    double xs = gw_chain_dmax1(c->m[0], p->kwall, p->v_imp);
+    for (int i = 0; i < n; i++) {
+        c->scale[2 * i] = xs;
+        c->scale[2 * i + 1] = p->v_imp;
+    }
+    double e0 = 0;
+    for (int i = 0; i < n; i++)
+        e0 += 0.5 * c->m[i] * p->v_imp * p->v_imp;
+    if (p->damping != GW_DAMP_NONE)
+        c->scale[2 * n] = e0;
+
+    gw_system *s = &c->sys;
+    s->dim = dim;
+    s->rhs = chain_rhs;
+    s->rhs_ex = chain_rhs_ex;
+    s->rhs_im = chain_rhs_im;
+    s->jac = chain_jac;
+    s->mu = 2;
+    s->ml = 3;
+    s->roots = chain_roots;
+    s->nroots = n + 1;
+    s->scale = c->scale;
+    s->params = c;
+    *out = c;
+    return GW_OK;
+}
+
+void gw_chain_free(gw_chain *c)
+{
+    if (!c)
+        return;
+    free(c->m);
+    free(c->scale);
+    free(c);
+}
+
+const gw_system *gw_chain_system(const gw_chain *c)
+{
+    return &c->sys;
+}
+
+const gw_chain_params *gw_chain_get_params(const gw_chain *c)
+{
+    return &c->p;
+}
+
+double gw_chain_bead_mass(const gw_chain *c, int i)
+{
+    return c->m[i];
+}
+
+void gw_chain_initial_state(const gw_chain *c, double *y)
+{
+    for (int i = 0; i < c->n; i++) {
+        y[2 * i] = 0.0;
+        y[2 * i + 1] = c->p.v_imp;
+    }
+    if (c->p.damping != GW_DAMP_NONE)
+        y[2 * c->n] = 0.0;
+}
+
+double gw_chain_wall_force(const gw_chain *c, const double *y)
+{
+    double x = y[0];
+    if (!(x > 0))
+        return 0.0;
+    if (c->p.damping == GW_DAMP_NONE)
+        return c->kwall * x * sqrt(x);
+    double pd = 0;
+    return damped_force(c, c->kwall, c->gwall, x, y[1], &pd);
+}
+
+void gw_chain_energy_of(const gw_chain *c, const double *y, gw_chain_energy *e)
+{
+    const int n = c->n;
+    double ke = 0, el = 0, pg = 0;
+    for (int i = 0; i < n; i++) {
+        double v = y[2 * i + 1];
+        ke += 0.5 * c->m[i] * v * v;
+        pg -= c->m[i] * c->p.gravity * y[2 * i];
+        if (i < n - 1) {
+            double d = y[2 * i + 2] - y[2 * i];
+            if (d > 0)
+                el += 0.4 * c->kc[i] * d * d * sqrt(d);
+        }
+    }
+    if (y[0] > 0)
+        el += 0.4 * c->kwall * y[0] * y[0] * sqrt(y[0]);
+    e->kinetic = ke;
+    e->elastic = el;
+    e->gravity = pg;
+    e->dissipated = c->p.damping != GW_DAMP_NONE ? y[2 * n] : 0.0;
+    e->total = ke + el + pg + e->dissipated;
+}

@@ -1,0 +1,174 @@
+/*
+ * chain_options.c: shared options of the chain commands (see chain_options.h).
+ * Coefficients come from the materials (F.12, F.3) unless given directly:
+ * --k and --kwall in N/m^1.5, --mass in kg.
+ */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "chain_options.h"
+
+#define OPT_D(nm, dst, mv, hl, lo_, hi_, open_)                                          \
+    (gw_opt) { .name = nm, .kind = GW_OPT_DOUBLE, .dest = dst, .metavar = mv, .help = hl, \
+               .lo = lo_, .hi = hi_, .open_lo = open_ }
+#define OPT_S(nm, dst, mv, hl)                                                           \
+    (gw_opt) { .name = nm, .kind = GW_OPT_STRING, .dest = dst, .metavar = mv, .help = hl }
+
+void chain_cli_options(chain_cli *c, gw_opt *o)
+{
+    memset(c, 0, sizeof *c);
+    c->radius = 4e-3;
+    c->material = "steel";
+    c->wall_material = "steel";
+    c->damping = "none";
+    c->solver = "cvode";
+    c->method = "default";
+    gw_solver_params sp = gw_solver_params_default();
+    c->rtol = sp.rtol;
+    c->atol = sp.atol;
+    c->max_steps = sp.max_steps;
+    int i = 0;
+    o[i++] = OPT_S("material", &c->material, "NAME", "bead material (steel, rigid, brass, aluminium, glass, pmma, pvc) [steel]");
+    o[i++] = OPT_D("radius", &c->radius, "R", "bead radius, m [4e-3]", 0, INFINITY, 1);
+    o[i++] = OPT_S("wall-material", &c->wall_material, "NAME", "wall material (a half-space) [steel]");
+    o[i++] = OPT_D("k", &c->k, "K", "bead-bead Hertz coefficient, N/m^1.5 [from material, F.12]", 0, INFINITY, 1);
+    o[i++] = OPT_D("kwall", &c->kwall, "K", "bead-wall Hertz coefficient, N/m^1.5 [from materials, F.3]", 0, INFINITY, 1);
+    o[i++] = OPT_D("mass", &c->mass, "M", "bead mass, kg [4/3 pi R^3 rho]", 0, INFINITY, 1);
+    o[i++] = OPT_D("gravity", &c->gravity, "G", "gravity toward the wall, m/s^2 [0 = off]", 0, 1e4, 0);
+    o[i++] = OPT_S("damping", &c->damping, "MODEL", "none, kk (Kuwabara-Kono) or hc (Hunt-Crossley) [none]");
+    o[i++] = OPT_D("gamma", &c->gamma, "G", "Kuwabara-Kono constant of bead contacts, N s/m^1.5 [0]", 0, INFINITY, 0);
+    o[i++] = OPT_D("alpha", &c->alpha, "A", "Hunt-Crossley constant, s/m [0]", 0, INFINITY, 0);
+    o[i++] = OPT_S("solver", &c->solver, "NAME", "cvode, arkode or rk4 [cvode]");
+    o[i++] = OPT_S("method", &c->method, "NAME", "cvode: bdf|adams; arkode: erk|dirk|imex [bdf / erk]");
+    o[i++] = OPT_D("rtol", &c->rtol, "R", "relative tolerance [1e-10]", 0, 1, 1);
+    o[i++] = OPT_D("atol", &c->atol, "A", "absolute tolerance in units of the overlap and velocity scales [1e-10]", 0, INFINITY, 1);
+    o[i++] = OPT_D("dt", &c->dt, "DT", "RK4 step, s [T_c/400]; initial step for cvode/arkode", 0, 1, 0);
+    o[i++] = OPT_D("dt-max", &c->dt_max, "DT", "largest step, s [unlimited]", 0, 1, 0);
+    o[i++] = (gw_opt){.name = "max-steps", .kind = GW_OPT_LONG, .dest = &c->max_steps, .metavar = "N",
+                      .help = "internal steps allowed between outputs [1e7]", .lo = 1, .hi = 1e12};
+    o[i++] = OPT_D("t-max", &c->t_max, "T", "stop after T seconds [20 (n T_q + tau_1)]", 0, 1e6, 0);
+    o[i++] = OPT_D("dt-out", &c->dt_out, "DT", "sampling interval for traces, energy and F_max, s [tau_1/200]", 0, 1, 0);
+    o[i++] = OPT_D("energy-tol", &c->energy_tol, "E", "abort when the relative energy error exceeds E [off]", 0, INFINITY, 0);
+    o[i++] = (gw_opt){.name = "json", .kind = GW_OPT_FLAG, .dest = &c->json, .help = "print results as one JSON object on stdout"};
+    o[i++] = OPT_S("out", &c->out, "DIR", "write CSV (and HDF5) files into DIR");
+}
+
+int chain_cli_resolve(chain_cli *c, const gw_opt *opts, const char *cmd, gw_err *err)
+{
+    const gw_material *bm = gw_material_find(c->material);
+    if (!bm || isinf(bm->density))
+        return gw_err_set(err, GW_EINVAL, "%s --material: unknown or unusable bead material '%s' (known: %s; not rigid)",
+                          cmd, c->material, gw_material_names());
+    const gw_material *wm = gw_material_find(c->wall_material);
+    if (!wm)
+        return gw_err_set(err, GW_EINVAL, "%s --wall-material: unknown material '%s' (known: %s)",
+                          cmd, c->wall_material, gw_material_names());
+    gw_chain_params *p = &c->params;
+    int n = p->n;
+    double v = p->v_imp;
+    *p = gw_chain_params_default();
+    p->n = n;
+    p->v_imp = v;
+    p->radius = c->radius;
+    p->mass = gw_cli_find(opts, "mass")->seen ? c->mass
+                                               : 4.0 / 3.0 * M_PI * pow(c->radius, 3) * bm->density;
+    p->k = gw_cli_find(opts, "k")->seen ? c->k : gw_hertz_coefficient(c->radius, bm, c->radius, bm);
+    p->kwall = gw_cli_find(opts, "kwall")->seen ? c->kwall
+                                                 : gw_hertz_coefficient(c->radius, bm, INFINITY, wm);
+    if (isinf(p->kwall))
+        return gw_err_set(err, GW_EINVAL, "%s --wall-material: a rigid wall needs a deformable bead material", cmd);
+    p->gravity = c->gravity;
+    if (strcmp(c->damping, "none") == 0)
+        p->damping = GW_DAMP_NONE;
+    else if (strcmp(c->damping, "kk") == 0)
+        p->damping = GW_DAMP_KUWABARA_KONO;
+    else if (strcmp(c->damping, "hc") == 0)
+        p->damping = GW_DAMP_HUNT_CROSSLEY;
+    else
+        return gw_err_set(err, GW_EINVAL, "%s --damping: unknown model '%s' (none, kk, hc)", cmd, c->damping);
+    p->gamma = c->gamma;
+    p->alpha = c->alpha;
+
+    gw_chain_run_opts *r = &c->run;
+    *r = gw_chain_run_opts_default();
+    r->solver = gw_solver_type_find(c->solver);
+    if (!r->solver)
+        return gw_err_set(err, GW_EINVAL, "%s --solver: unknown solver '%s' (cvode, arkode, rk4)", cmd, c->solver);
+    int method = gw_solver_method_find(c->method);
+    if (method < 0)
+        return gw_err_set(err, GW_EINVAL, "%s --method: unknown method '%s' (bdf, adams, erk, dirk, imex)", cmd, c->method);
+    r->sp.method = method;
+    r->sp.rtol = c->rtol;
+    r->sp.atol = c->atol;
+    r->sp.dt = c->dt;
+    r->sp.dt_max = c->dt_max;
+    r->sp.max_steps = c->max_steps;
+    r->t_max = c->t_max;
+    r->dt_out = c->dt_out;
+    r->energy_tol = c->energy_tol;
+    char what[64];
+    snprintf(what, sizeof what, "%s", cmd);
+    int rc = gw_chain_params_validate(p, err);
+    if (rc != GW_OK) {
+        char tmp[sizeof err->msg];
+        snprintf(tmp, sizeof tmp, "%s", err->msg);
+        return gw_err_set(err, rc, "%s: %s", what, tmp);
+    }
+    return GW_OK;
+}
+
+cJSON *chain_cli_settings_json(const chain_cli *c)
+{
+    const gw_chain_params *p = &c->params;
+    cJSON *o = cJSON_CreateObject();
+    cJSON_AddStringToObject(o, "version", gw_version());
+    cJSON *m = cJSON_AddObjectToObject(o, "model");
+    cJSON_AddStringToObject(m, "material", c->material);
+    cJSON_AddStringToObject(m, "wall_material", c->wall_material);
+    cJSON_AddNumberToObject(m, "radius", p->radius);
+    cJSON_AddNumberToObject(m, "mass", p->mass);
+    cJSON_AddNumberToObject(m, "k", p->k);
+    cJSON_AddNumberToObject(m, "kwall", p->kwall);
+    cJSON_AddNumberToObject(m, "gravity", p->gravity);
+    cJSON_AddStringToObject(m, "damping", c->damping);
+    cJSON_AddNumberToObject(m, "gamma", p->gamma);
+    cJSON_AddNumberToObject(m, "alpha", p->alpha);
+    cJSON *s = cJSON_AddObjectToObject(o, "solver");
+    cJSON_AddStringToObject(s, "name", c->solver);
+    cJSON_AddStringToObject(s, "method", c->method);
+    cJSON_AddNumberToObject(s, "rtol", c->run.sp.rtol);
+    cJSON_AddNumberToObject(s, "atol", c->run.sp.atol);
+    cJSON_AddNumberToObject(s, "dt", c->run.sp.dt);
+    cJSON_AddNumberToObject(s, "dt_max", c->run.sp.dt_max);
+    cJSON_AddNumberToObject(s, "max_steps", (double)c->run.sp.max_steps);
+    cJSON_AddNumberToObject(s, "t_max", c->run.t_max);
+    cJSON_AddNumberToObject(s, "dt_out", c->run.dt_out);
+    return o;
+}
+
+char *chain_cli_header(const chain_cli *c, int argc, char **argv)
+{
+    cJSON *o = chain_cli_settings_json(c);
+    char *js = cJSON_PrintUnformatted(o);
+    cJSON_Delete(o);
+    size_t len = 256 + (js ? strlen(js) : 0);
+    for (int i = 0; i < argc; i++)
+        len += strlen(argv[i]) + 1;
+    char *h = malloc(len);
+    if (h) {
+        size_t w = (size_t)snprintf(h, len, "granwave %s\ncommand: granwave", gw_version());
+        for (int i = 0; i < argc && w < len; i++)
+            w += (size_t)snprintf(h + w, len - w, " %s", argv[i]);
+        if (w < len)
+            snprintf(h + w, len - w, "\nsettings: %s", js ? js : "{}");
+    }
+    free(js);
+    return h;
+}
+
+int chain_cli_fail(const char *msg)
+{
+    fprintf(stderr, "granwave %s\n", msg);
+    return 2;
+}

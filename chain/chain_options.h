@@ -1,0 +1,43 @@
+/*
+ * chain_options.h (private to chain/): the command-line options shared by the
+ * chain commands (model, materials, solver), turned into gw_chain_params and
+ * gw_chain_run_opts with one validation path.
+ */
+#ifndef GW_CHAIN_OPTIONS_H
+#define GW_CHAIN_OPTIONS_H
+
+#include "gw_chain.h"
+
+typedef struct chain_cli {
+    /* raw option values */
+    double k, kwall, mass, radius, gravity, gamma, alpha;
+    double rtol, atol, dt, dt_max, t_max, dt_out, energy_tol;
+    long max_steps;
+    int json;
+    const char *out;
+    const char *material, *wall_material, *damping, *solver, *method;
+    /* resolved */
+    gw_chain_params params;
+    gw_chain_run_opts run;
+} chain_cli;
+
+/* Number of options chain_cli_options writes. */
+#define CHAIN_CLI_NOPTS 22
+
+/* Fill defaults and write the shared option table into opts[0..CHAIN_CLI_NOPTS). */
+void chain_cli_options(chain_cli *c, gw_opt *opts);
+
+/* Resolve materials, damping and solver into c->params / c->run (n and v_imp are
+ * the caller's). GW_EINVAL with a message naming the option. */
+int chain_cli_resolve(chain_cli *c, const gw_opt *opts, const char *cmd, gw_err *err);
+
+/* A JSON object with the model parameters and solver settings of a run. */
+cJSON *chain_cli_settings_json(const chain_cli *c);
+
+/* Multi-line text (version, command line, settings) for file headers; caller frees. */
+char *chain_cli_header(const chain_cli *c, int argc, char **argv);
+
+/* Print "granwave CMD: message" and return exit code 2. */
+int chain_cli_fail(const char *msg);
+
+#endif

@@ -1,0 +1,192 @@
+/*
+ * chain_trace.c: time series of a collision (wall force, bead positions and
+ * velocities) kept in memory and written as CSV, and as HDF5 when built with it.
+ * Units: s, N, m, m/s.
+ */
+#include <stdlib.h>
+#include <string.h>
+
+#include "gw_chain.h"
+#if GW_HAVE_HDF5
+#include <hdf5.h>
+#endif
+
+void gw_chain_trace_init(gw_chain_trace *tr, int n)
+{
+    memset(tr, 0, sizeof *tr);
+    tr->n = n;
+}
+
+void gw_chain_trace_free(gw_chain_trace *tr)
+{
+    free(tr->t);
+    free(tr->f);
+    free(tr->x);
+    free(tr->v);
+    memset(tr, 0, sizeof *tr);
+}
+
+int gw_chain_trace_sample(void *ctx, double t, const double *y, double f_wall, int is_event)
+{
+    (void)is_event;
+    gw_chain_trace *tr = ctx;
+    const int n = tr->n;
+    if (tr->len == tr->cap) {
+        size_t cap = tr->cap ? 2 * tr->cap : 1024;
+        double *nt = realloc(tr->t, cap * sizeof *nt);
+        if (nt)
+            tr->t = nt;
+        double *nf = realloc(tr->f, cap * sizeof *nf);
+        if (nf)
+            tr->f = nf;
+        double *nx = realloc(tr->x, cap * (size_t)n * sizeof *nx);
+        if (nx)
+            tr->x = nx;
+        double *nv = realloc(tr->v, cap * (size_t)n * sizeof *nv);
+        if (nv)
+            tr->v = nv;
+        if (!nt || !nf || !nx || !nv)
+            return GW_ENOMEM;
+        tr->cap = cap;
+    }
+    tr->t[tr->len] = t;
+    tr->f[tr->len] = f_wall;
+    for (int i = 0; i < n; i++) {
+        tr->x[tr->len * (size_t)n + (size_t)i] = y[2 * i];
+        tr->v[tr->len * (size_t)n + (size_t)i] = y[2 * i + 1];
+    }
+    tr->len++;
+    return 0;
+}
+
+static void write_header(FILE *fp, const char *header)
+{
+    const char *p = header;
+    while (p && *p) {
+        const char *nl = strchr(p, '\n');
+        size_t len = nl ? (size_t)(nl - p) : strlen(p);
+        fprintf(fp, "# %.*s\n", (int)len, p);
+        p = nl ? nl + 1 : p + len;
+    }
+}
+
+static int write_csv(const gw_chain_trace *tr, const char *dir, const char *stem,
+                     const char *header, gw_err *err)
+{
+    char path[4096], name[512];
+    gw_afile f;
+    int rc;
+    snprintf(name, sizeof name, "%s_wall_force.csv", stem);
+    if (gw_path_join(path, sizeof path, dir, name) != GW_OK)
+        return gw_err_set(err, GW_EINVAL, "%s: output path too long", dir);
+    if ((rc = gw_afile_open(&f, path, err)) != GW_OK)
+        return rc;
+    write_header(f.fp, header);
+    fprintf(f.fp, "t_s,f_wall_N\n");
+    for (size_t k = 0; k < tr->len; k++)
+        fprintf(f.fp, "%.12e,%.12e\n", tr->t[k], tr->f[k]);
+    if ((rc = gw_afile_commit(&f, err)) != GW_OK)
+        return rc;
+
+    snprintf(name, sizeof name, "%s_beads.csv", stem);
+    if (gw_path_join(path, sizeof path, dir, name) != GW_OK)
+        return gw_err_set(err, GW_EINVAL, "%s: output path too long", dir);
+    if ((rc = gw_afile_open(&f, path, err)) != GW_OK)
+        return rc;
+    write_header(f.fp, header);
+    fprintf(f.fp, "t_s");
+    for (int i = 1; i <= tr->n; i++)
+        fprintf(f.fp, ",x%d_m", i);
+    for (int i = 1; i <= tr->n; i++)
+        fprintf(f.fp, ",v%d_m_s", i);
+    fputc('\n', f.fp);
+    for (size_t k = 0; k < tr->len; k++) {
+        fprintf(f.fp, "%.12e", tr->t[k]);
+        for (int i = 0; i < tr->n; i++)
+            fprintf(f.fp, ",%.12e", tr->x[k * (size_t)tr->n + (size_t)i]);
+        for (int i = 0; i < tr->n; i++)
+            fprintf(f.fp, ",%.12e", tr->v[k * (size_t)tr->n + (size_t)i]);
+        fputc('\n', f.fp);
+    }
+    return gw_afile_commit(&f, err);
+}
+
+#if GW_HAVE_HDF5
+static int h5_dataset(hid_t file, const char *name, const double *data, int rank,
+                      const hsize_t *dims, const char *units)
+{
+    hid_t space = H5Screate_simple(rank, dims, NULL);
+    hid_t ds = H5Dcreate2(file, name, H5T_NATIVE_DOUBLE, space, H5P_DEFAULT, H5P_DEFAULT,
+                          H5P_DEFAULT);
+    int bad = ds < 0 || H5Dwrite(ds, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, data) < 0;
+    if (!bad) {
+        hid_t ts = H5Tcopy(H5T_C_S1);
+        H5Tset_size(ts, strlen(units) + 1);
+        hid_t as = H5Screate(H5S_SCALAR);
+        hid_t at = H5Acreate2(ds, "units", ts, as, H5P_DEFAULT, H5P_DEFAULT);
+        bad = at < 0 || H5Awrite(at, ts, units) < 0;
+        if (at >= 0)
+            H5Aclose(at);
+        H5Sclose(as);
+        H5Tclose(ts);
+    }
+    if (ds >= 0)
+        H5Dclose(ds);
+    H5Sclose(space);
+    return bad ? GW_EIO : GW_OK;
+}
+
+static int write_h5(const gw_chain_trace *tr, const char *dir, const char *stem,
+                    const char *header, gw_err *err)
+{
+    char path[4096], name[512], tmp[4200];
+    snprintf(name, sizeof name, "%s.h5", stem);
+    if (gw_path_join(path, sizeof path, dir, name) != GW_OK)
+        return gw_err_set(err, GW_EINVAL, "%s: output path too long", dir);
+    snprintf(tmp, sizeof tmp, "%s.tmp", path);
+    hid_t file = H5Fcreate(tmp, H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
+    if (file < 0)
+        return gw_err_set(err, GW_EIO, "%s: cannot create HDF5 file", path);
+    hsize_t d1[1] = {tr->len}, d2[2] = {tr->len, (hsize_t)tr->n};
+    int rc = GW_OK;
+    if (tr->len > 0) {
+        rc = h5_dataset(file, "t", tr->t, 1, d1, "s");
+        if (rc == GW_OK)
+            rc = h5_dataset(file, "f_wall", tr->f, 1, d1, "N");
+        if (rc == GW_OK)
+            rc = h5_dataset(file, "x", tr->x, 2, d2, "m");
+        if (rc == GW_OK)
+            rc = h5_dataset(file, "v", tr->v, 2, d2, "m/s");
+    }
+    if (rc == GW_OK) {
+        hid_t ts = H5Tcopy(H5T_C_S1);
+        H5Tset_size(ts, strlen(header) + 1);
+        hid_t as = H5Screate(H5S_SCALAR);
+        hid_t at = H5Acreate2(file, "run", ts, as, H5P_DEFAULT, H5P_DEFAULT);
+        if (at < 0 || H5Awrite(at, ts, header) < 0)
+            rc = GW_EIO;
+        if (at >= 0)
+            H5Aclose(at);
+        H5Sclose(as);
+        H5Tclose(ts);
+    }
+    if (H5Fclose(file) < 0)
+        rc = GW_EIO;
+    if (rc != GW_OK || rename(tmp, path) != 0) {
+        remove(tmp);
+        return gw_err_set(err, GW_EIO, "%s: HDF5 write failed", path);
+    }
+    return GW_OK;
+}
+#endif
+
+int gw_chain_trace_write(const gw_chain_trace *tr, const char *dir, const char *stem,
+                         const char *header, gw_err *err)
+{
+    int rc = write_csv(tr, dir, stem, header, err);
+#if GW_HAVE_HDF5
+    if (rc == GW_OK)
+        rc = write_h5(tr, dir, stem, header, err);
+#endif
+    return rc;
+}

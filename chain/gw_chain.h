@@ -1,0 +1,187 @@
+/*
+ * gw_chain.h: the 1D column of beads hitting a wall (Falcon et al. 1998), its
+ * materials and closed forms, one collision run with its observables, and the
+ * studies built on it (the Falcon rigid-wall study).
+ *
+ * Model (physics.md 1.1, eq. F.11): N point masses, x_i the displacement of bead i
+ * (bead 1 = wall bead) from its initial position, positive toward the wall; at
+ * t = 0 every contact just touches and every bead moves at v_imp toward the wall.
+ * Contact i (beads i, i+1) has overlap d_i = x_(i+1) - x_i and force
+ * F_i = k_i d_i^(3/2) for d_i > 0, else 0; the wall force is F_0 = K x_1^(3/2).
+ * Optional gravity g (toward the wall) and viscoelastic damping (physics.md 1.5).
+ * SI units throughout: m, s, kg, N, N/m^1.5.
+ */
+#ifndef GW_CHAIN_H
+#define GW_CHAIN_H
+
+#include "gw_common.h"
+#include "gw_solver.h"
+
+/* ---- materials and closed forms (physics.md 1.2, 1.3) ---- */
+
+typedef struct gw_material {
+    const char *name;
+    double young;   /* Pa (INFINITY for an ideal rigid body) */
+    double poisson; /* - */
+    double density; /* kg/m^3 */
+} gw_material;
+
+/* Material by name ("steel", "rigid", ...); NULL if unknown. */
+const gw_material *gw_material_find(const char *name);
+/* Comma-separated list of known material names (static string). */
+const char *gw_material_names(void);
+
+/* Hertz coefficient of two spheres: k = (4/3) E* sqrt(R_eff), N/m^1.5; a radius of
+ * INFINITY is a plane. (F.12) for equal spheres, (F.3) for sphere on plane. */
+double gw_hertz_coefficient(double r1, const gw_material *m1, double r2,
+                            const gw_material *m2);
+
+/* (4/5) B(2/5, 1/2) = 2.94322..., the constant of (F.2), from GSL's Beta. */
+double gw_chain_tau_constant(void);
+/* Single bead on a wall of stiffness K: contact time (F.2), peak overlap, peak
+ * force (F.13) and its time tau_1/2 (F.21). */
+double gw_chain_tau1(double m, double K, double v);
+double gw_chain_dmax1(double m, double K, double v);
+double gw_chain_fmax1(double m, double K, double v);
+/* Analytic deformation-wave time T_q = 2 (m/k)^(2/5) v^(-1/5) (F.17 with C3 = 2),
+ * and speed v = 4R/T_q (F.27). */
+double gw_chain_tq_theory(double m, double k, double v);
+/* Critical wall coefficient K_c = (tau_c/4)^(5/2) (5k/4) (F.22), tau_c = 2.943. */
+double gw_chain_kc(double k);
+
+/* ---- model ---- */
+
+typedef enum {
+    GW_DAMP_NONE = 0,
+    GW_DAMP_KUWABARA_KONO = 1, /* F = k d^1.5 + gamma d^0.5 d' */
+    GW_DAMP_HUNT_CROSSLEY = 2  /* F = k d^1.5 (1 + 1.5 alpha d') */
+} gw_chain_damping;
+
+typedef struct gw_chain_params {
+    int n;                 /* number of beads, >= 1 */
+    double v_imp;          /* impact velocity toward the wall, m/s, > 0 */
+    double mass;           /* bead mass, kg (when masses == NULL) */
+    double k;              /* bead-bead Hertz coefficient (when kc == NULL) */
+    double kwall;          /* bead-wall Hertz coefficient K, > 0 */
+    double radius;         /* bead radius, m (wave speed 4R/T_q, outputs) */
+    const double *masses;  /* optional per-bead masses [n], caller-owned */
+    const double *kc;      /* optional per-contact coefficients [n-1], caller-owned */
+    double gravity;        /* m/s^2 toward the wall; 0 = off (default) */
+    gw_chain_damping damping;
+    double gamma;          /* Kuwabara-Kono constant of bead-bead contacts,
+                              N s/m^1.5; the wall uses gamma * kwall / k */
+    double alpha;          /* Hunt-Crossley constant, s/m (all contacts) */
+} gw_chain_params;
+
+/* Stainless steel beads of the experiment: R = 4 mm, E = 21.6e10 Pa,
+ * nu = 0.276, rho = 7850 kg/m^3 (m = 4/3 pi R^3 rho), steel wall, n = 1,
+ * v_imp = 0.3 m/s, no gravity, no damping. */
+gw_chain_params gw_chain_params_default(void);
+
+/* Check every field; GW_EINVAL with a message naming the field. */
+int gw_chain_params_validate(const gw_chain_params *p, gw_err *err);
+
+typedef struct gw_chain gw_chain;
+
+/* Build the ODE system for p (validated; p's arrays are copied). */
+int gw_chain_create(const gw_chain_params *p, gw_chain **out, gw_err *err);
+void gw_chain_free(gw_chain *c);
+
+/* The gw_system handed to solvers. State layout, interleaved so the Jacobian is
+ * banded (mu = 2, ml = 3): y[2i] = x_i, y[2i+1] = v_i (i = 0..n-1, bead 1 is
+ * i = 0), then y[2n] = dissipated energy when damping is on.
+ * Root functions: g[0] = x_0 (wall contact), g[1+i] = d_i (contact i,
+ * i = 0..n-2), g[n] = v_0 (extrema of the wall force). */
+const gw_system *gw_chain_system(const gw_chain *c);
+const gw_chain_params *gw_chain_get_params(const gw_chain *c);
+double gw_chain_bead_mass(const gw_chain *c, int i);
+/* Initial state: all x = 0, all v = v_imp (dissipated energy 0). */
+void gw_chain_initial_state(const gw_chain *c, double *y);
+
+typedef struct gw_chain_energy {
+    double kinetic, elastic, gravity, dissipated, total; /* J */
+} gw_chain_energy;
+
+/* Energies of state y; gravity is the potential -sum m g x. */
+void gw_chain_energy_of(const gw_chain *c, const double *y, gw_chain_energy *e);
+/* Force on the wall (N) in state y. */
+double gw_chain_wall_force(const gw_chain *c, const double *y);
+
+/* ---- one collision ---- */
+
+/* Called at every sample and event: time, state, wall force. Non-zero stops. */
+typedef int (*gw_chain_sample_fn)(void *ctx, double t, const double *y, double f_wall,
+                                  int is_event);
+
+typedef struct gw_chain_run_opts {
+    const gw_solver_type *solver; /* default CVODE */
+    gw_solver_params sp;          /* dt == 0 for rk4: T_c / 400, see below */
+    double dt_out;     /* sampling interval, s; 0 = tau_1/200 (energy and F_max) */
+    double t_max;      /* give up after this time, s; 0 = 20 (n T_q + tau_1) */
+    double energy_tol; /* stop with GW_EENERGY when the relative energy error
+                          exceeds this (0 = off) */
+    gw_chain_sample_fn sample;
+    void *sample_ctx;
+} gw_chain_run_opts;
+
+gw_chain_run_opts gw_chain_run_opts_default(void);
+
+typedef struct gw_chain_result {
+    int n;
+    double f_max;        /* largest wall force, N */
+    double tau_max;      /* time of f_max, s */
+    double tau_n;        /* time bead 1 leaves the wall for the last time, s */
+    double period;       /* mean spacing of wall-force maxima, s (NaN if < 2) */
+    int n_maxima;        /* wall-force maxima seen */
+    double energy_error; /* max |E(t) - E(0)| / E(0) over samples and events */
+    double e0;           /* initial energy, J */
+    double *final_v;     /* [n] velocities at the end, m/s (toward wall > 0) */
+    double *detach_t;    /* [n] last opening of a contact of bead i, s */
+    double *v_tau_n;     /* [n] velocities at tau_n */
+    int n_s;             /* beads leaving from the top before the cluster */
+    int cluster;         /* beads in contact with bead 1 when it left the wall */
+    double e_rel_over_e_k; /* (F.20) at tau_n */
+    double eps_eff;      /* (F.7) with final velocities */
+    double eps_col;      /* (F.30) */
+    int wall_contacts;   /* number of separate wall contacts (> 1: re-contact) */
+    int converged;       /* 1: all contacts open and separating at t_end */
+    double t_end;
+    long n_events;
+    gw_solver_stats stats;
+} gw_chain_result;
+
+/* Run one collision from the initial state until every contact is open and every
+ * pair separates (or t_max). Returns GW_OK, or GW_ESOLVER / GW_ELIMIT /
+ * GW_EENERGY with a message (backend message and time) in err; r is then
+ * partially filled and must still be freed. */
+int gw_chain_collide(const gw_chain *c, const gw_chain_run_opts *o,
+                     gw_chain_result *r, gw_err *err);
+void gw_chain_result_free(gw_chain_result *r);
+
+/* Characteristic time (m/k)^(2/5) v^(-1/5) of the chain, s. */
+double gw_chain_time_scale(const gw_chain_params *p);
+
+/* ---- traces (wall force and bead trajectories) ---- */
+
+typedef struct gw_chain_trace {
+    int n;
+    size_t len, cap;
+    double *t, *f, *x, *v; /* x, v: len rows of n */
+} gw_chain_trace;
+
+void gw_chain_trace_init(gw_chain_trace *tr, int n);
+/* gw_chain_sample_fn storing every sample (ctx = gw_chain_trace*). */
+int gw_chain_trace_sample(void *ctx, double t, const double *y, double f_wall,
+                          int is_event);
+void gw_chain_trace_free(gw_chain_trace *tr);
+/* Write DIR/<stem>_wall_force.csv and DIR/<stem>_beads.csv (and DIR/<stem>.h5 when
+ * built with HDF5); header lines record version and parameters. */
+int gw_chain_trace_write(const gw_chain_trace *tr, const char *dir, const char *stem,
+                         const char *header, gw_err *err);
+
+/* ---- program commands ---- */
+
+int gw_cmd_chain(int argc, char **argv);
+int gw_cmd_falcon(int argc, char **argv);
+
+#endif

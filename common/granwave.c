@@ -1,0 +1,58 @@
+/*
+ * granwave.c: the `granwave <command>` program. Each command lives with its
+ * module; this file only dispatches. Exit codes: 0 ok, 1 run failure (solver,
+ * output), 2 bad input (one line on stderr naming the input).
+ */
+#include <stdio.h>
+#include <string.h>
+
+#include "gw_chain.h"
+#if GW_HAVE_LAYER
+#include "gw_layer.h"
+#endif
+
+typedef struct command {
+    const char *name;
+    int (*run)(int argc, char **argv);
+    const char *summary;
+} command;
+
+static const command commands[] = {
+    {"chain", gw_cmd_chain, "one collision of a bead column with a wall"},
+    {"falcon", gw_cmd_falcon, "the Falcon et al. (1998) rigid-wall study (main job)"},
+#if GW_HAVE_LAYER
+    GW_LAYER_COMMANDS
+#endif
+};
+
+static void usage(FILE *fp)
+{
+    fprintf(fp, "granwave %s: wave propagation in granular matter (ODE systems, SUNDIALS)\n\n"
+                "usage: granwave <command> [options]   (granwave <command> --help)\n\ncommands:\n",
+            gw_version());
+    for (size_t i = 0; i < sizeof commands / sizeof commands[0]; i++)
+        fprintf(fp, "  %-14s %s\n", commands[i].name, commands[i].summary);
+    fprintf(fp, "  %-14s %s\n", "version", "print the version");
+}
+
+int main(int argc, char **argv)
+{
+    if (argc < 2) {
+        usage(stderr);
+        return 2;
+    }
+    const char *cmd = argv[1];
+    if (strcmp(cmd, "--help") == 0 || strcmp(cmd, "-h") == 0 || strcmp(cmd, "help") == 0) {
+        usage(stdout);
+        return 0;
+    }
+    if (strcmp(cmd, "version") == 0 || strcmp(cmd, "--version") == 0) {
+        printf("granwave %s\n", gw_version());
+        return 0;
+    }
+    for (size_t i = 0; i < sizeof commands / sizeof commands[0]; i++)
+        if (strcmp(commands[i].name, cmd) == 0)
+            return commands[i].run(argc - 2, argv + 2);
+    fprintf(stderr, "granwave: unknown command '%s' (see granwave --help)\n", cmd);
+    return 2;
+}

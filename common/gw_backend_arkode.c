@@ -1,0 +1,198 @@
+/*
+ * gw_backend_arkode.c: ARKode (ARKStep) backend. Variants:
+ *   erk  - explicit Verner 8(5)6 (default; no linear algebra),
+ *   dirk - implicit ARK5(4)8L[2]SA DIRK table with a band linear solver and the
+ *          system's analytic banded Jacobian when it has one,
+ *   imex - ARK5(4)8L[2]SA additive pair: rhs_ex explicit, rhs_im implicit (band
+ *          solver, finite-difference Jacobian of rhs_im).
+ * Roots by ARKode's root finder; gw_solver_reset calls ARKStepReset.
+ */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <arkode/arkode_arkstep.h>
+
+#include "gw_sundials.h"
+
+typedef struct ark_impl {
+    SUNContext ctx;
+    void *mem;
+    N_Vector y, abstol;
+    SUNMatrix A;
+    SUNLinearSolver LS;
+    int *rootinfo;
+    double t;
+} ark_impl;
+
+static void ark_destroy(gw_solver *s)
+{
+    ark_impl *a = s->impl;
+    if (!a)
+        return;
+    if (a->mem)
+        ARKStepFree(&a->mem);
+    if (a->LS)
+        SUNLinSolFree(a->LS);
+    if (a->A)
+        SUNMatDestroy(a->A);
+    if (a->abstol)
+        N_VDestroy(a->abstol);
+    if (a->y)
+        N_VDestroy(a->y);
+    if (a->ctx)
+        SUNContext_Free(&a->ctx);
+    free(a->rootinfo);
+    free(a);
+    s->impl = NULL;
+}
+
+/* Configure the created ARKStep memory; returns the failing call's name or NULL. */
+static const char *ark_configure(gw_solver *s, ark_impl *a, int method, int *flag)
+{
+#define ARK_CHECK(call)                                                              \
+    if ((*flag = (call)) < 0)                                                        \
+        return #call;
+    ARK_CHECK(ARKStepSetErrHandlerFn(a->mem, gw_sun_errh, s));
+    ARK_CHECK(ARKStepSetUserData(a->mem, s));
+    ARK_CHECK(ARKStepSVtolerances(a->mem, s->p.rtol, a->abstol));
+    ARK_CHECK(ARKStepSetMaxNumSteps(a->mem, s->p.max_steps));
+    if (s->p.dt > 0)
+        ARK_CHECK(ARKStepSetInitStep(a->mem, s->p.dt));
+    if (s->p.dt_max > 0)
+        ARK_CHECK(ARKStepSetMaxStep(a->mem, s->p.dt_max));
+    if (method == GW_ARKODE_ERK) {
+        ARK_CHECK(ARKStepSetTableName(a->mem, "ARKODE_DIRK_NONE", "ARKODE_VERNER_8_5_6"));
+    } else {
+        if (gw_sun_band(s, a->y, a->ctx, &a->A, &a->LS) != GW_OK) {
+            *flag = -1;
+            return "band matrix allocation";
+        }
+        ARK_CHECK(ARKStepSetLinearSolver(a->mem, a->LS, a->A));
+        if (method == GW_ARKODE_DIRK) {
+            ARK_CHECK(ARKStepSetTableName(a->mem, "ARKODE_ARK548L2SA_DIRK_8_4_5",
+                                          "ARKODE_ERK_NONE"));
+            if (s->p.use_jac && s->sys.jac)
+                ARK_CHECK(ARKStepSetJacFn(a->mem, gw_sun_jac));
+        } else {
+            ARK_CHECK(ARKStepSetTableName(a->mem, "ARKODE_ARK548L2SA_DIRK_8_4_5",
+                                          "ARKODE_ARK548L2SA_ERK_8_4_5"));
+        }
+    }
+    if (s->sys.nroots > 0)
+        ARK_CHECK(ARKStepRootInit(a->mem, s->sys.nroots, gw_sun_roots));
+#undef ARK_CHECK
+    return NULL;
+}
+
+static int ark_create(gw_solver *s, double t0, const double *y0, gw_err *err)
+{
+    int method = s->p.method == GW_METHOD_DEFAULT ? GW_ARKODE_ERK : s->p.method;
+    if (method != GW_ARKODE_ERK && method != GW_ARKODE_DIRK && method != GW_ARKODE_IMEX)
+        return gw_err_set(err, GW_EUNSUPPORTED,
+                          "arkode: method '%s' not offered (use erk, dirk or imex)",
+                          gw_solver_method_name(s->p.method));
+    if (method == GW_ARKODE_IMEX && (!s->sys.rhs_ex || !s->sys.rhs_im))
+        return gw_err_set(err, GW_EUNSUPPORTED,
+                          "arkode: imex needs a model with an explicit/implicit split");
+    ark_impl *a = calloc(1, sizeof *a);
+    if (!a)
+        return gw_err_set(err, GW_ENOMEM, "arkode: out of memory");
+    s->impl = a;
+    if (SUNContext_Create(NULL, &a->ctx) != 0) {
+        ark_destroy(s);
+        return gw_err_set(err, GW_ESOLVER, "arkode: SUNContext_Create failed");
+    }
+    a->y = N_VNew_Serial(s->sys.dim, a->ctx);
+    a->abstol = gw_sun_abstol(s, a->ctx);
+    if (s->sys.nroots > 0)
+        a->rootinfo = calloc((size_t)s->sys.nroots, sizeof *a->rootinfo);
+    if (!a->y || !a->abstol || (s->sys.nroots > 0 && !a->rootinfo)) {
+        ark_destroy(s);
+        return gw_err_set(err, GW_ENOMEM, "arkode: out of memory");
+    }
+    memcpy(N_VGetArrayPointer(a->y), y0, (size_t)s->sys.dim * sizeof *y0);
+    a->t = t0;
+    if (method == GW_ARKODE_ERK)
+        a->mem = ARKStepCreate(gw_sun_rhs, NULL, t0, a->y, a->ctx);
+    else if (method == GW_ARKODE_DIRK)
+        a->mem = ARKStepCreate(NULL, gw_sun_rhs, t0, a->y, a->ctx);
+    else
+        a->mem = ARKStepCreate(gw_sun_rhs_ex, gw_sun_rhs_im, t0, a->y, a->ctx);
+    if (!a->mem) {
+        ark_destroy(s);
+        return gw_err_set(err, GW_ESOLVER, "arkode: ARKStepCreate failed");
+    }
+    int flag = 0;
+    const char *failed = ark_configure(s, a, method, &flag);
+    if (failed) {
+        gw_err_set(err, GW_ESOLVER, "arkode: %s failed (flag %d)", failed, flag);
+        ark_destroy(s);
+        return GW_ESOLVER;
+    }
+    return GW_OK;
+}
+
+static int ark_advance(gw_solver *s, double tout, double *t, double *y, int *roots)
+{
+    ark_impl *a = s->impl;
+    double tret = a->t;
+    if (fabs(tout - a->t) <= 1e-13 * fmax(fabs(tout), fabs(a->t))) {
+        *t = a->t;
+        gw_sun_copy_out(a->y, y, s->sys.dim);
+        return GW_OK;
+    }
+    int flag = ARKStepEvolve(a->mem, tout, a->y, &tret, ARK_NORMAL);
+    a->t = tret;
+    *t = tret;
+    gw_sun_copy_out(a->y, y, s->sys.dim);
+    if (flag == ARK_ROOT_RETURN) {
+        ARKStepGetRootInfo(a->mem, a->rootinfo);
+        if (roots)
+            memcpy(roots, a->rootinfo, (size_t)s->sys.nroots * sizeof *roots);
+        return GW_ROOT;
+    }
+    if (flag >= 0)
+        return GW_OK;
+    char msg[sizeof s->errmsg];
+    snprintf(msg, sizeof msg, "%s", s->errmsg);
+    gw_solver_set_error(s, "arkode failed at t = %.9g s (%s): %s", tret,
+                        ARKStepGetReturnFlagName(flag), msg[0] ? msg : "no message");
+    return flag == ARK_TOO_MUCH_WORK ? GW_ELIMIT : GW_ESOLVER;
+}
+
+static int ark_reset(gw_solver *s, double t, const double *y)
+{
+    ark_impl *a = s->impl;
+    memcpy(N_VGetArrayPointer(a->y), y, (size_t)s->sys.dim * sizeof *y);
+    a->t = t;
+    int flag = ARKStepReset(a->mem, t, a->y);
+    if (flag < 0) {
+        gw_solver_set_error(s, "arkode: ARKStepReset at t = %.9g s failed: %s", t,
+                            ARKStepGetReturnFlagName(flag));
+        return GW_ESOLVER;
+    }
+    return GW_OK;
+}
+
+static void ark_stats(const gw_solver *s, gw_solver_stats *st)
+{
+    const ark_impl *a = s->impl;
+    long v = 0, fe = 0, fi = 0;
+    ARKStepGetNumSteps(a->mem, &v);
+    st->steps = v;
+    ARKStepGetNumRhsEvals(a->mem, &fe, &fi);
+    st->rhs_evals = fe + fi;
+    if (a->LS) {
+        ARKStepGetNumJacEvals(a->mem, &v);
+        st->jac_evals = v;
+    }
+    if (a->rootinfo) {
+        ARKStepGetNumGEvals(a->mem, &v);
+        st->root_evals = v;
+    }
+}
+
+static const gw_solver_type arkode_type = {"arkode", ark_create, ark_advance, ark_reset,
+                                           ark_stats, ark_destroy};
+const gw_solver_type *const gw_solver_arkode = &arkode_type;

@@ -1,0 +1,213 @@
+/*
+ * gw_backend_cvode.c: CVODE backend. BDF with a band linear solver (analytic
+ * banded Jacobian when the system has one) or Adams-Moulton with fixed-point
+ * iteration. Roots are located by CVODE's own root finder; gw_solver_reset
+ * re-initialises CVODE at the event so the multistep history restarts there.
+ */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <cvode/cvode.h>
+#include <sunnonlinsol/sunnonlinsol_fixedpoint.h>
+
+#include "gw_sundials.h"
+
+typedef struct cv_impl {
+    SUNContext ctx;
+    void *mem;
+    N_Vector y;
+    N_Vector abstol;
+    SUNMatrix A;
+    SUNLinearSolver LS;
+    SUNNonlinearSolver NLS;
+    int *rootinfo;
+    double t;
+    gw_solver_stats base; /* counters accumulated over re-initialisations */
+} cv_impl;
+
+static void cv_raw_stats(const cv_impl *c, gw_solver_stats *st)
+{
+    long v = 0;
+    memset(st, 0, sizeof *st);
+    CVodeGetNumSteps(c->mem, &v);
+    st->steps = v;
+    CVodeGetNumRhsEvals(c->mem, &v);
+    st->rhs_evals = v;
+    if (c->LS) {
+        CVodeGetNumJacEvals(c->mem, &v);
+        st->jac_evals = v;
+    }
+    if (c->rootinfo) {
+        CVodeGetNumGEvals(c->mem, &v);
+        st->root_evals = v;
+    }
+}
+
+/* CVodeReInit zeroes some counters: carry whatever dropped into the base. */
+static void cv_carry(cv_impl *c, const gw_solver_stats *before)
+{
+    gw_solver_stats after;
+    cv_raw_stats(c, &after);
+    if (after.steps < before->steps)
+        c->base.steps += before->steps;
+    if (after.rhs_evals < before->rhs_evals)
+        c->base.rhs_evals += before->rhs_evals;
+    if (after.jac_evals < before->jac_evals)
+        c->base.jac_evals += before->jac_evals;
+    if (after.root_evals < before->root_evals)
+        c->base.root_evals += before->root_evals;
+}
+
+static void cv_destroy(gw_solver *s)
+{
+    cv_impl *c = s->impl;
+    if (!c)
+        return;
+    if (c->mem)
+        CVodeFree(&c->mem);
+    if (c->LS)
+        SUNLinSolFree(c->LS);
+    if (c->NLS)
+        SUNNonlinSolFree(c->NLS);
+    if (c->A)
+        SUNMatDestroy(c->A);
+    if (c->abstol)
+        N_VDestroy(c->abstol);
+    if (c->y)
+        N_VDestroy(c->y);
+    if (c->ctx)
+        SUNContext_Free(&c->ctx);
+    free(c->rootinfo);
+    free(c);
+    s->impl = NULL;
+}
+
+#define CV_TRY(call, what)                                                           \
+    do {                                                                             \
+        int flag_ = (call);                                                          \
+        if (flag_ < 0) {                                                             \
+            gw_err_set(err, GW_ESOLVER, "cvode: %s failed: %s", what,                \
+                       CVodeGetReturnFlagName(flag_));                               \
+            cv_destroy(s);                                                           \
+            return GW_ESOLVER;                                                       \
+        }                                                                            \
+    } while (0)
+
+static int cv_create(gw_solver *s, double t0, const double *y0, gw_err *err)
+{
+    int method = s->p.method == GW_METHOD_DEFAULT ? GW_CVODE_BDF : s->p.method;
+    if (method != GW_CVODE_BDF && method != GW_CVODE_ADAMS)
+        return gw_err_set(err, GW_EUNSUPPORTED, "cvode: method '%s' not offered (use bdf or adams)",
+                          gw_solver_method_name(s->p.method));
+    cv_impl *c = calloc(1, sizeof *c);
+    if (!c)
+        return gw_err_set(err, GW_ENOMEM, "cvode: out of memory");
+    s->impl = c;
+    if (SUNContext_Create(NULL, &c->ctx) != 0) {
+        cv_destroy(s);
+        return gw_err_set(err, GW_ESOLVER, "cvode: SUNContext_Create failed");
+    }
+    c->y = N_VNew_Serial(s->sys.dim, c->ctx);
+    c->abstol = gw_sun_abstol(s, c->ctx);
+    if (s->sys.nroots > 0)
+        c->rootinfo = calloc((size_t)s->sys.nroots, sizeof *c->rootinfo);
+    if (!c->y || !c->abstol || (s->sys.nroots > 0 && !c->rootinfo)) {
+        cv_destroy(s);
+        return gw_err_set(err, GW_ENOMEM, "cvode: out of memory");
+    }
+    memcpy(N_VGetArrayPointer(c->y), y0, (size_t)s->sys.dim * sizeof *y0);
+    c->t = t0;
+    c->mem = CVodeCreate(method == GW_CVODE_BDF ? CV_BDF : CV_ADAMS, c->ctx);
+    if (!c->mem) {
+        cv_destroy(s);
+        return gw_err_set(err, GW_ESOLVER, "cvode: CVodeCreate failed");
+    }
+    CV_TRY(CVodeSetErrHandlerFn(c->mem, gw_sun_errh, s), "CVodeSetErrHandlerFn");
+    CV_TRY(CVodeInit(c->mem, gw_sun_rhs, t0, c->y), "CVodeInit");
+    CV_TRY(CVodeSetUserData(c->mem, s), "CVodeSetUserData");
+    CV_TRY(CVodeSVtolerances(c->mem, s->p.rtol, c->abstol), "CVodeSVtolerances");
+    CV_TRY(CVodeSetMaxNumSteps(c->mem, s->p.max_steps), "CVodeSetMaxNumSteps");
+    if (s->p.dt > 0)
+        CV_TRY(CVodeSetInitStep(c->mem, s->p.dt), "CVodeSetInitStep");
+    if (s->p.dt_max > 0)
+        CV_TRY(CVodeSetMaxStep(c->mem, s->p.dt_max), "CVodeSetMaxStep");
+    if (method == GW_CVODE_BDF) {
+        if (gw_sun_band(s, c->y, c->ctx, &c->A, &c->LS) != GW_OK) {
+            cv_destroy(s);
+            return gw_err_set(err, GW_ENOMEM, "cvode: band matrix allocation failed");
+        }
+        CV_TRY(CVodeSetLinearSolver(c->mem, c->LS, c->A), "CVodeSetLinearSolver");
+        if (s->p.use_jac && s->sys.jac)
+            CV_TRY(CVodeSetJacFn(c->mem, gw_sun_jac), "CVodeSetJacFn");
+    } else {
+        c->NLS = SUNNonlinSol_FixedPoint(c->y, 0, c->ctx);
+        if (!c->NLS) {
+            cv_destroy(s);
+            return gw_err_set(err, GW_ENOMEM, "cvode: fixed-point solver allocation failed");
+        }
+        CV_TRY(CVodeSetNonlinearSolver(c->mem, c->NLS), "CVodeSetNonlinearSolver");
+    }
+    if (s->sys.nroots > 0)
+        CV_TRY(CVodeRootInit(c->mem, s->sys.nroots, gw_sun_roots), "CVodeRootInit");
+    return GW_OK;
+}
+
+static int cv_advance(gw_solver *s, double tout, double *t, double *y, int *roots)
+{
+    cv_impl *c = s->impl;
+    double tret = c->t;
+    if (fabs(tout - c->t) <= 1e-13 * fmax(fabs(tout), fabs(c->t))) {
+        *t = c->t;
+        gw_sun_copy_out(c->y, y, s->sys.dim);
+        return GW_OK;
+    }
+    int flag = CVode(c->mem, tout, c->y, &tret, CV_NORMAL);
+    c->t = tret;
+    *t = tret;
+    gw_sun_copy_out(c->y, y, s->sys.dim);
+    if (flag == CV_ROOT_RETURN) {
+        CVodeGetRootInfo(c->mem, c->rootinfo);
+        if (roots)
+            memcpy(roots, c->rootinfo, (size_t)s->sys.nroots * sizeof *roots);
+        return GW_ROOT;
+    }
+    if (flag >= 0)
+        return GW_OK;
+    char msg[sizeof s->errmsg];
+    snprintf(msg, sizeof msg, "%s", s->errmsg);
+    gw_solver_set_error(s, "cvode failed at t = %.9g s (%s): %s", tret,
+                        CVodeGetReturnFlagName(flag), msg[0] ? msg : "no message");
+    return flag == CV_TOO_MUCH_WORK ? GW_ELIMIT : GW_ESOLVER;
+}
+
+static int cv_reset(gw_solver *s, double t, const double *y)
+{
+    cv_impl *c = s->impl;
+    memcpy(N_VGetArrayPointer(c->y), y, (size_t)s->sys.dim * sizeof *y);
+    c->t = t;
+    gw_solver_stats before;
+    cv_raw_stats(c, &before);
+    int flag = CVodeReInit(c->mem, t, c->y);
+    cv_carry(c, &before);
+    if (flag < 0) {
+        gw_solver_set_error(s, "cvode: CVodeReInit at t = %.9g s failed: %s", t,
+                            CVodeGetReturnFlagName(flag));
+        return GW_ESOLVER;
+    }
+    return GW_OK;
+}
+
+static void cv_stats(const gw_solver *s, gw_solver_stats *st)
+{
+    const cv_impl *c = s->impl;
+    cv_raw_stats(c, st);
+    st->steps += c->base.steps;
+    st->rhs_evals += c->base.rhs_evals;
+    st->jac_evals += c->base.jac_evals;
+    st->root_evals += c->base.root_evals;
+}
+
+static const gw_solver_type cvode_type = {"cvode", cv_create, cv_advance, cv_reset,
+                                          cv_stats, cv_destroy};
+const gw_solver_type *const gw_solver_cvode = &cvode_type;

@@ -1,0 +1,285 @@
+/*
+ * gw_backend_rk4.c: classic fixed-step fourth-order Runge-Kutta, written here as
+ * an independent cross-check of the SUNDIALS backends.
+ *
+ * Events: after every step the root functions are compared with their sign at
+ * the start of the step. A component that changed sign is located by the
+ * Illinois (modified regula falsi) method on the step length h, each trial being
+ * a full RK4 step from the start of the step, so the located event lies on the
+ * RK4 solution itself. The integrator lands just past the earliest root (on the
+ * new-sign side, within a time tolerance of 1e-12 dt), which is where a restart
+ * puts the model. Components that are exactly zero are inactive until they move
+ * away from zero (the same convention as CVODE's and ARKode's root finders).
+ * The last step before tout is shortened to land on tout exactly.
+ */
+#include <float.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "gw_solver_impl.h"
+
+typedef struct rk4_impl {
+    double t;
+    double *y, *ynew, *ytry, *k1, *k2, *k3, *k4, *tmp;
+    double *g, *g0, *gtry; /* g at step end, step start, trial */
+    signed char *sign; /* reference sign of each root function, 0 = inactive */
+    long steps, rhs_evals, root_evals;
+} rk4_impl;
+
+static void rk4_destroy(gw_solver *s)
+{
+    rk4_impl *r = s->impl;
+    if (!r)
+        return;
+    free(r->y);
+    free(r->g);
+    free(r->sign);
+    free(r);
+    s->impl = NULL;
+}
+
+static int sgn(double x)
+{
+    return (x > 0) - (x < 0);
+}
+
+/* One RK4 step of length h from (t, y0) into out. */
+static int rk4_step(gw_solver *s, double t, const double *y0, double h, double *out)
+{
+    rk4_impl *r = s->impl;
+    const long n = s->sys.dim;
+    void *P = s->sys.params;
+    int rc;
+    if ((rc = s->sys.rhs(t, y0, r->k1, P)) != 0)
+        return rc;
+    for (long i = 0; i < n; i++)
+        r->tmp[i] = y0[i] + 0.5 * h * r->k1[i];
+    if ((rc = s->sys.rhs(t + 0.5 * h, r->tmp, r->k2, P)) != 0)
+        return rc;
+    for (long i = 0; i < n; i++)
+        r->tmp[i] = y0[i] + 0.5 * h * r->k2[i];
+    if ((rc = s->sys.rhs(t + 0.5 * h, r->tmp, r->k3, P)) != 0)
+        return rc;
+    for (long i = 0; i < n; i++)
+        r->tmp[i] = y0[i] + h * r->k3[i];
+    if ((rc = s->sys.rhs(t + h, r->tmp, r->k4, P)) != 0)
+        return rc;
+    for (long i = 0; i < n; i++)
+        out[i] = y0[i] + (h / 6.0) * (r->k1[i] + 2.0 * r->k2[i] + 2.0 * r->k3[i] + r->k4[i]);
+    r->rhs_evals += 4;
+    return 0;
+}
+
+static int rk4_roots(gw_solver *s, double t, const double *y, double *g)
+{
+    rk4_impl *r = s->impl;
+    r->root_evals++;
+    return s->sys.roots(t, y, g, s->sys.params);
+}
+
+static void rk4_init_signs(gw_solver *s)
+{
+    rk4_impl *r = s->impl;
+    for (int k = 0; k < s->sys.nroots; k++)
+        r->sign[k] = (signed char)sgn(r->g0[k]);
+}
+
+static int rk4_create(gw_solver *s, double t0, const double *y0, gw_err *err)
+{
+    if (!(s->p.dt > 0))
+        return gw_err_set(err, GW_EINVAL, "rk4: the fixed step dt must be set (> 0)");
+    if (s->p.method != GW_METHOD_DEFAULT)
+        return gw_err_set(err, GW_EUNSUPPORTED, "rk4: method '%s' not offered",
+                          gw_solver_method_name(s->p.method));
+    rk4_impl *r = calloc(1, sizeof *r);
+    if (!r)
+        return gw_err_set(err, GW_ENOMEM, "rk4: out of memory");
+    s->impl = r;
+    const size_t n = (size_t)s->sys.dim, nr = (size_t)s->sys.nroots;
+    r->y = malloc(8 * n * sizeof *r->y);
+    r->g = malloc((3 * nr + 1) * sizeof *r->g);
+    r->sign = calloc(nr + 1, 1);
+    if (!r->y || !r->g || !r->sign) {
+        rk4_destroy(s);
+        return gw_err_set(err, GW_ENOMEM, "rk4: out of memory");
+    }
+    r->ynew = r->y + n;
+    r->ytry = r->y + 2 * n;
+    r->k1 = r->y + 3 * n;
+    r->k2 = r->y + 4 * n;
+    r->k3 = r->y + 5 * n;
+    r->k4 = r->y + 6 * n;
+    r->tmp = r->y + 7 * n;
+    r->g0 = r->g + nr;
+    r->gtry = r->g + 2 * nr;
+    memcpy(r->y, y0, n * sizeof *y0);
+    r->t = t0;
+    if (nr > 0) {
+        if (rk4_roots(s, t0, r->y, r->g0) != 0) {
+            rk4_destroy(s);
+            return gw_err_set(err, GW_ESOLVER, "rk4: root function failed at t0");
+        }
+        rk4_init_signs(s);
+    }
+    return GW_OK;
+}
+
+/* Does component k differ from its reference sign in g (crossed or hit zero)? */
+static int crossed(const rk4_impl *r, const double *g, int k)
+{
+    return r->sign[k] != 0 && sgn(g[k]) != r->sign[k];
+}
+
+/* Locate the earliest root inside the step (t, t + h] in which some component
+ * crossed (r->g holds g at the step end, r->g0 at its start). Sets *hland to a
+ * step length just past the earliest root. */
+static int rk4_locate(gw_solver *s, double h, double *hland)
+{
+    rk4_impl *r = s->impl;
+    const int nr = s->sys.nroots;
+    const double htol = fmax(1e-12 * s->p.dt, 4 * DBL_EPSILON * fabs(r->t + h));
+    double best = h;
+    int rc;
+    for (int k = 0; k < nr; k++) {
+        if (!crossed(r, r->g, k))
+            continue;
+        double lo = 0.0, hi = best;
+        double glo = r->g0[k] * r->sign[k]; /* > 0 on the old side */
+        double ghi;
+        if (hi == h) {
+            ghi = r->g[k] * r->sign[k];
+        } else {
+            if ((rc = rk4_step(s, r->t, r->y, hi, r->ytry)) != 0)
+                return rc;
+            if ((rc = rk4_roots(s, r->t + hi, r->ytry, r->gtry)) != 0)
+                return rc;
+            if (!crossed(r, r->gtry, k))
+                continue; /* this component's root lies after the current best */
+            ghi = r->gtry[k] * r->sign[k];
+        }
+        int side = 0;
+        for (int it = 0; it < 200 && hi - lo > htol; it++) {
+            double c = (glo > 0 && ghi < 0) ? hi - ghi * (hi - lo) / (ghi - glo)
+                                            : 0.5 * (lo + hi);
+            if (!(c > lo && c < hi))
+                c = 0.5 * (lo + hi);
+            if ((rc = rk4_step(s, r->t, r->y, c, r->ytry)) != 0)
+                return rc;
+            if ((rc = rk4_roots(s, r->t + c, r->ytry, r->gtry)) != 0)
+                return rc;
+            double gc = r->gtry[k] * r->sign[k];
+            if (gc > 0) { /* Illinois: halve the stale end's value */
+                lo = c;
+                glo = gc;
+                if (side == -1)
+                    ghi *= 0.5;
+                side = -1;
+            } else {
+                hi = c;
+                ghi = gc;
+                if (side == 1)
+                    glo *= 0.5;
+                side = 1;
+            }
+        }
+        best = hi;
+    }
+    *hland = best;
+    return 0;
+}
+
+static int rk4_advance(gw_solver *s, double tout, double *t, double *y, int *roots)
+{
+    rk4_impl *r = s->impl;
+    const long n = s->sys.dim;
+    const int nr = s->sys.nroots;
+    const double dt = s->p.dt;
+    long taken = 0;
+    int rc = 0;
+    while (r->t < tout) {
+        double h = tout - r->t;
+        if (h > dt)
+            h = (h < dt * (1 + 1e-9)) ? h : dt;
+        if (taken++ >= s->p.max_steps) {
+            gw_solver_set_error(s, "rk4: more than %ld steps before t = %.9g s at t = %.9g s",
+                                s->p.max_steps, tout, r->t);
+            rc = GW_ELIMIT;
+            break;
+        }
+        if ((rc = rk4_step(s, r->t, r->y, h, r->ynew)) != 0)
+            break;
+        r->steps++;
+        if (nr > 0) {
+            if ((rc = rk4_roots(s, r->t + h, r->ynew, r->g)) != 0)
+                break;
+            int any = 0;
+            for (int k = 0; k < nr && !any; k++)
+                any = crossed(r, r->g, k);
+            if (any) {
+                double hl = h;
+                if ((rc = rk4_locate(s, h, &hl)) != 0)
+                    break;
+                if ((rc = rk4_step(s, r->t, r->y, hl, r->ynew)) != 0)
+                    break;
+                if ((rc = rk4_roots(s, r->t + hl, r->ynew, r->g)) != 0)
+                    break;
+                r->t = (hl == h && r->t + h >= tout) ? tout : r->t + hl;
+                memcpy(r->y, r->ynew, (size_t)n * sizeof *y);
+                memcpy(r->g0, r->g, (size_t)nr * sizeof *r->g);
+                for (int k = 0; k < nr; k++) {
+                    int c = crossed(r, r->g, k);
+                    if (roots)
+                        roots[k] = c ? -r->sign[k] : 0;
+                    if (c || r->sign[k] == 0)
+                        r->sign[k] = (signed char)sgn(r->g[k]);
+                }
+                *t = r->t;
+                memcpy(y, r->y, (size_t)n * sizeof *y);
+                return GW_ROOT;
+            }
+            memcpy(r->g0, r->g, (size_t)nr * sizeof *r->g);
+            for (int k = 0; k < nr; k++)
+                if (r->sign[k] == 0)
+                    r->sign[k] = (signed char)sgn(r->g[k]);
+        }
+        r->t = (r->t + h >= tout || tout - (r->t + h) < 1e-9 * dt) ? tout : r->t + h;
+        memcpy(r->y, r->ynew, (size_t)n * sizeof *y);
+    }
+    *t = r->t;
+    memcpy(y, r->y, (size_t)n * sizeof *y);
+    if (rc == GW_ELIMIT)
+        return rc;
+    if (rc != 0) {
+        gw_solver_set_error(s, "rk4: model callback failed (code %d) at t = %.9g s", rc, r->t);
+        return GW_ESOLVER;
+    }
+    return GW_OK;
+}
+
+static int rk4_reset(gw_solver *s, double t, const double *y)
+{
+    rk4_impl *r = s->impl;
+    r->t = t;
+    memcpy(r->y, y, (size_t)s->sys.dim * sizeof *y);
+    if (s->sys.nroots > 0) {
+        if (rk4_roots(s, t, r->y, r->g0) != 0) {
+            gw_solver_set_error(s, "rk4: root function failed at t = %.9g s", t);
+            return GW_ESOLVER;
+        }
+        rk4_init_signs(s);
+    }
+    return GW_OK;
+}
+
+static void rk4_stats(const gw_solver *s, gw_solver_stats *st)
+{
+    const rk4_impl *r = s->impl;
+    st->steps = r->steps;
+    st->rhs_evals = r->rhs_evals;
+    st->root_evals = r->root_evals;
+}
+
+static const gw_solver_type rk4_type = {"rk4", rk4_create, rk4_advance, rk4_reset,
+                                        rk4_stats, rk4_destroy};
+const gw_solver_type *const gw_solver_rk4 = &rk4_type;

@@ -1,0 +1,153 @@
+/*
+ * gw_common.c: status table, error text, validated number parsing.
+ */
+#include <errno.h>
+#include <limits.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "gw_common.h"
+
+const char *gw_strerror(int status)
+{
+    switch (status) {
+    case GW_OK: return "ok";
+    case GW_ROOT: return "stopped at an event";
+    case GW_EINVAL: return "invalid input";
+    case GW_ENOMEM: return "out of memory";
+    case GW_EIO: return "input/output error";
+    case GW_ESOLVER: return "ODE solver failure";
+    case GW_EFORMAT: return "malformed file";
+    case GW_EUNSUPPORTED: return "not supported";
+    case GW_EENERGY: return "energy error above threshold";
+    case GW_ELIMIT: return "step or time limit reached";
+    default: return "unknown status";
+    }
+}
+
+const char *gw_version(void)
+{
+    return GW_VERSION;
+}
+
+int gw_err_set(gw_err *err, int status, const char *fmt, ...)
+{
+    if (err) {
+        va_list ap;
+        va_start(ap, fmt);
+        vsnprintf(err->msg, sizeof err->msg, fmt, ap);
+        va_end(ap);
+    }
+    return status;
+}
+
+int gw_parse_double(const char *s, const char *name, double *out, gw_err *err)
+{
+    if (!s || !*s)
+        return gw_err_set(err, GW_EINVAL, "%s: expected a number, got an empty value", name);
+    char *end = NULL;
+    errno = 0;
+    double v = strtod(s, &end);
+    if (end == s || *end != '\0')
+        return gw_err_set(err, GW_EINVAL, "%s: '%s' is not a number", name, s);
+    if (!isfinite(v) || errno == ERANGE)
+        return gw_err_set(err, GW_EINVAL, "%s: '%s' is not a finite number", name, s);
+    *out = v;
+    return GW_OK;
+}
+
+int gw_parse_long(const char *s, const char *name, long lo, long hi, long *out, gw_err *err)
+{
+    if (!s || !*s)
+        return gw_err_set(err, GW_EINVAL, "%s: expected an integer, got an empty value", name);
+    char *end = NULL;
+    errno = 0;
+    long v = strtol(s, &end, 10);
+    if (end == s || *end != '\0')
+        return gw_err_set(err, GW_EINVAL, "%s: '%s' is not an integer", name, s);
+    if (errno == ERANGE || v < lo || v > hi)
+        return gw_err_set(err, GW_EINVAL, "%s: %s is outside [%ld, %ld]", name, s, lo, hi);
+    *out = v;
+    return GW_OK;
+}
+
+int gw_check_range(double x, const char *name, double lo, double hi, gw_err *err)
+{
+    if (!isfinite(x))
+        return gw_err_set(err, GW_EINVAL, "%s: must be finite, got %g", name, x);
+    if (x < lo || x > hi)
+        return gw_err_set(err, GW_EINVAL, "%s: %g is outside [%g, %g]", name, x, lo, hi);
+    return GW_OK;
+}
+
+int gw_check_positive(double x, const char *name, gw_err *err)
+{
+    if (!isfinite(x) || !(x > 0))
+        return gw_err_set(err, GW_EINVAL, "%s: must be a positive finite number, got %g", name, x);
+    return GW_OK;
+}
+
+int gw_parse_double_list(const char *s, const char *name, double **out, int *n, gw_err *err)
+{
+    *out = NULL;
+    *n = 0;
+    if (!s || !*s)
+        return gw_err_set(err, GW_EINVAL, "%s: empty list", name);
+    size_t len = strlen(s);
+    char *copy = malloc(len + 1);
+    double *v = malloc((len / 2 + 2) * sizeof *v);
+    if (!copy || !v) {
+        free(copy);
+        free(v);
+        return gw_err_set(err, GW_ENOMEM, "%s: out of memory", name);
+    }
+    memcpy(copy, s, len + 1);
+    int count = 0, rc = GW_OK;
+    char *p = copy;
+    for (;;) {
+        char *comma = strchr(p, ',');
+        if (comma)
+            *comma = '\0';
+        if ((rc = gw_parse_double(p, name, &v[count], err)) != GW_OK)
+            break;
+        count++;
+        if (!comma)
+            break;
+        p = comma + 1;
+    }
+    free(copy);
+    if (rc != GW_OK) {
+        free(v);
+        return rc;
+    }
+    *out = v;
+    *n = count;
+    return GW_OK;
+}
+
+int gw_parse_int_range(const char *s, const char *name, long lo, long hi, long *a, long *b,
+                       gw_err *err)
+{
+    if (!s || !*s)
+        return gw_err_set(err, GW_EINVAL, "%s: empty value", name);
+    const char *colon = strchr(s, ':');
+    if (!colon) {
+        int rc = gw_parse_long(s, name, lo, hi, a, err);
+        *b = *a;
+        return rc;
+    }
+    char left[64];
+    size_t ln = (size_t)(colon - s);
+    if (ln >= sizeof left)
+        return gw_err_set(err, GW_EINVAL, "%s: '%s' is not a range A:B", name, s);
+    memcpy(left, s, ln);
+    left[ln] = '\0';
+    int rc = gw_parse_long(left, name, lo, hi, a, err);
+    if (rc == GW_OK)
+        rc = gw_parse_long(colon + 1, name, lo, hi, b, err);
+    if (rc == GW_OK && *a > *b)
+        rc = gw_err_set(err, GW_EINVAL, "%s: range '%s' is empty (start > end)", name, s);
+    return rc;
+}

@@ -1,0 +1,146 @@
+/*
+ * gw_common.h: status codes, error text, input validation, atomic files, CSV and
+ * JSON output helpers, linear fits. Shared by every granwave module.
+ *
+ * Conventions: every fallible call returns an int status (GW_OK = 0, negative on
+ * error). Calls that check user input also fill a gw_err with one line naming the
+ * offending input; the program prints that line and exits with code 2.
+ */
+#ifndef GW_COMMON_H
+#define GW_COMMON_H
+
+#include <stddef.h>
+#include <stdio.h>
+
+#include <cjson/cJSON.h>
+
+#include "gw_version.h"
+
+enum {
+    GW_OK = 0,
+    GW_ROOT = 1,          /* not an error: the solver stopped at an event */
+    GW_EINVAL = -1,       /* invalid argument or user input */
+    GW_ENOMEM = -2,       /* allocation failed */
+    GW_EIO = -3,          /* file could not be read or written */
+    GW_ESOLVER = -4,      /* the ODE backend failed; message on the solver */
+    GW_EFORMAT = -5,      /* malformed input file */
+    GW_EUNSUPPORTED = -6, /* option not available in this backend or build */
+    GW_EENERGY = -7,      /* energy monitor threshold exceeded */
+    GW_ELIMIT = -8        /* a run hit its time or step limit before finishing */
+};
+
+/* Message for a status code (static string, never NULL). */
+const char *gw_strerror(int status);
+
+/* Monotonic wall clock in milliseconds (for run-time reports). */
+double gw_clock_ms(void);
+
+/* Library version string, "MAJOR.MINOR.PATCH". */
+const char *gw_version(void);
+
+/* One line of error text, filled by calls that validate input. */
+typedef struct gw_err {
+    char msg[512];
+} gw_err;
+
+/* printf-style: store a message in err (may be NULL) and return status. */
+int gw_err_set(gw_err *err, int status, const char *fmt, ...)
+    __attribute__((format(printf, 3, 4)));
+
+/* ---- validation of numbers (name is the input's name for the message) ---- */
+
+/* Parse a whole string as a finite double; GW_EINVAL with a message otherwise. */
+int gw_parse_double(const char *s, const char *name, double *out, gw_err *err);
+/* Parse a whole string as an integer in [lo, hi]. */
+int gw_parse_long(const char *s, const char *name, long lo, long hi, long *out,
+                  gw_err *err);
+/* Check that x is finite and lo <= x <= hi (use -INFINITY/INFINITY for open). */
+int gw_check_range(double x, const char *name, double lo, double hi, gw_err *err);
+/* Check that x is finite and strictly positive. */
+int gw_check_positive(double x, const char *name, gw_err *err);
+/* Parse a comma-separated list of finite doubles into a new array (caller frees). */
+int gw_parse_double_list(const char *s, const char *name, double **out, int *n,
+                         gw_err *err);
+/* Parse "A:B" or "A" (integers, A <= B, both in [lo, hi]). */
+int gw_parse_int_range(const char *s, const char *name, long lo, long hi, long *a,
+                       long *b, gw_err *err);
+
+/* ---- files ---- */
+
+/* A file written under a temporary name and renamed into place on commit, so a
+ * reader sees either the previous file or the complete new one. */
+typedef struct gw_afile {
+    FILE *fp;
+    char path[4096];
+    char tmp[4096 + 32];
+} gw_afile;
+
+/* Open path for writing through a temporary file. On failure nothing is created. */
+int gw_afile_open(gw_afile *f, const char *path, gw_err *err);
+/* Flush, fsync and rename into place. On failure the temporary is removed. */
+int gw_afile_commit(gw_afile *f, gw_err *err);
+/* Discard the temporary file (safe to call on a closed or failed file). */
+void gw_afile_abort(gw_afile *f);
+
+/* Create directory (and parents) if missing. */
+int gw_mkdir_p(const char *path, gw_err *err);
+/* Join dir and name into buf (size n); GW_EINVAL if it does not fit. */
+int gw_path_join(char *buf, size_t n, const char *dir, const char *name);
+
+/* Write a string to path atomically. */
+int gw_write_text(const char *path, const char *text, gw_err *err);
+
+/* ---- fits (GSL) ---- */
+
+typedef struct gw_linfit {
+    double c0, c1;         /* y = c0 + c1 x */
+    double c0_err, c1_err; /* standard errors from the scatter about the line */
+    double r2;             /* coefficient of determination */
+    double max_rel_resid;  /* max |y - fit| / |fit| */
+    int n;
+} gw_linfit;
+
+/* Least-squares line through (x[i], y[i]), n >= 2 (errors need n >= 3). */
+int gw_fit_linear(const double *x, const double *y, int n, gw_linfit *fit);
+
+/* Power law y = A x^beta by a line in log-log; c0 = ln A, c1 = beta. */
+int gw_fit_power(const double *x, const double *y, int n, gw_linfit *fit);
+
+/* ---- JSON (cJSON) ---- */
+
+/* New JSON array of n doubles (NaN and infinities print as null). NULL on ENOMEM. */
+cJSON *gw_json_doubles(const double *v, int n);
+cJSON *gw_json_ints(const int *v, int n);
+/* Print o (indented) with a newline to fp. */
+int gw_json_print(const cJSON *o, FILE *fp);
+/* Write o to path atomically. */
+int gw_json_write(const char *path, const cJSON *o, gw_err *err);
+
+/* ---- command-line options ---- */
+
+typedef enum { GW_OPT_FLAG, GW_OPT_DOUBLE, GW_OPT_LONG, GW_OPT_STRING } gw_opt_kind;
+
+typedef struct gw_opt {
+    const char *name;    /* option "--name" */
+    gw_opt_kind kind;
+    void *dest;          /* int* (flag), double*, long*, const char** */
+    const char *metavar; /* shown in --help, e.g. "N" */
+    const char *help;    /* one line, with units and default */
+    double lo, hi;       /* accepted range for numbers (inclusive) */
+    int open_lo;         /* 1: value must be > lo */
+    int seen;            /* set by the parser */
+} gw_opt;
+
+/* Parse argv[0..argc) against opts (terminated by name == NULL). Accepts
+ * "--name value" and "--name=value"; "--help"/"-h" sets *help. Positional
+ * arguments go to pos (at most maxpos; more is an error). Returns GW_EINVAL with
+ * a message naming the option on unknown options, missing or bad values. */
+int gw_cli_parse(const char *cmd, gw_opt *opts, int argc, char **argv, int *help,
+                 const char **pos, int maxpos, int *npos, gw_err *err);
+/* Print usage and every option's help. */
+void gw_cli_help(FILE *fp, const char *cmd, const char *usage, const char *summary,
+                 const gw_opt *opts);
+/* The option named name, or NULL. */
+const gw_opt *gw_cli_find(const gw_opt *opts, const char *name);
+
+#endif

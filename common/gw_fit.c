@@ -1,0 +1,58 @@
+/*
+ * gw_fit.c: least-squares lines (gsl_fit_linear) and power laws fitted as lines
+ * in log-log. Standard errors come from the scatter of the points about the line
+ * (GSL's covariance for unweighted data).
+ */
+#include <math.h>
+#include <stdlib.h>
+
+#include <gsl/gsl_fit.h>
+
+#include "gw_common.h"
+
+int gw_fit_linear(const double *x, const double *y, int n, gw_linfit *fit)
+{
+    if (n < 2)
+        return GW_EINVAL;
+    double c0, c1, cov00, cov01, cov11, sumsq;
+    if (gsl_fit_linear(x, 1, y, 1, (size_t)n, &c0, &c1, &cov00, &cov01, &cov11, &sumsq) != 0)
+        return GW_EINVAL;
+    double mean = 0, sst = 0, maxrel = 0;
+    for (int i = 0; i < n; i++)
+        mean += y[i] / n;
+    for (int i = 0; i < n; i++) {
+        double f = c0 + c1 * x[i];
+        sst += (y[i] - mean) * (y[i] - mean);
+        if (f != 0 && fabs(y[i] - f) / fabs(f) > maxrel)
+            maxrel = fabs(y[i] - f) / fabs(f);
+    }
+    fit->c0 = c0;
+    fit->c1 = c1;
+    fit->c0_err = n > 2 ? sqrt(cov00) : NAN;
+    fit->c1_err = n > 2 ? sqrt(cov11) : NAN;
+    fit->r2 = sst > 0 ? 1.0 - sumsq / sst : 1.0;
+    fit->max_rel_resid = maxrel;
+    fit->n = n;
+    return GW_OK;
+}
+
+int gw_fit_power(const double *x, const double *y, int n, gw_linfit *fit)
+{
+    if (n < 2)
+        return GW_EINVAL;
+    double *lx = malloc(2 * (size_t)n * sizeof *lx);
+    if (!lx)
+        return GW_ENOMEM;
+    double *ly = lx + n;
+    for (int i = 0; i < n; i++) {
+        if (!(x[i] > 0) || !(y[i] > 0)) {
+            free(lx);
+            return GW_EINVAL;
+        }
+        lx[i] = log(x[i]);
+        ly[i] = log(y[i]);
+    }
+    int rc = gw_fit_linear(lx, ly, n, fit);
+    free(lx);
+    return rc;
+}

@@ -1,0 +1,149 @@
+/*
+ * gw_solver.c: backend-independent part of the solver layer (lookup, argument
+ * checks, dispatch, error text).
+ */
+#include <math.h>
+#include <stdarg.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "gw_solver_impl.h"
+
+gw_solver_params gw_solver_params_default(void)
+{
+    gw_solver_params p;
+    p.rtol = 1e-10;
+    p.atol = 1e-10;
+    p.dt = 0.0;
+    p.dt_max = 0.0;
+    p.max_steps = 10000000L;
+    p.method = GW_METHOD_DEFAULT;
+    p.use_jac = 1;
+    return p;
+}
+
+const gw_solver_type *gw_solver_type_find(const char *name)
+{
+    const gw_solver_type *const all[] = {gw_solver_cvode, gw_solver_arkode,
+                                         gw_solver_rk4};
+    if (!name)
+        return NULL;
+    for (size_t i = 0; i < sizeof all / sizeof all[0]; i++)
+        if (strcmp(all[i]->name, name) == 0)
+            return all[i];
+    return NULL;
+}
+
+const char *gw_solver_type_name(const gw_solver_type *type)
+{
+    return type ? type->name : "(none)";
+}
+
+static const struct {
+    const char *name;
+    int method;
+} method_names[] = {{"default", GW_METHOD_DEFAULT}, {"bdf", GW_CVODE_BDF},
+                    {"adams", GW_CVODE_ADAMS},       {"erk", GW_ARKODE_ERK},
+                    {"dirk", GW_ARKODE_DIRK},        {"imex", GW_ARKODE_IMEX}};
+
+int gw_solver_method_find(const char *name)
+{
+    for (size_t i = 0; i < sizeof method_names / sizeof method_names[0]; i++)
+        if (name && strcmp(method_names[i].name, name) == 0)
+            return method_names[i].method;
+    return -1;
+}
+
+const char *gw_solver_method_name(int method)
+{
+    for (size_t i = 0; i < sizeof method_names / sizeof method_names[0]; i++)
+        if (method_names[i].method == method)
+            return method_names[i].name;
+    return "unknown";
+}
+
+void gw_solver_set_error(gw_solver *s, const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(s->errmsg, sizeof s->errmsg, fmt, ap);
+    va_end(ap);
+}
+
+int gw_solver_create(const gw_solver_type *type, const gw_system *sys,
+                     const gw_solver_params *p, double t0, const double *y0,
+                     gw_solver **out, gw_err *err)
+{
+    *out = NULL;
+    if (!type)
+        return gw_err_set(err, GW_EINVAL, "solver: unknown backend");
+    if (!sys || !sys->rhs || sys->dim <= 0 || !y0)
+        return gw_err_set(err, GW_EINVAL, "solver: system has no right-hand side or dimension");
+    if (sys->nroots < 0 || (sys->nroots > 0 && !sys->roots))
+        return gw_err_set(err, GW_EINVAL, "solver: root count without root function");
+    if (!(p->rtol > 0) || !isfinite(p->rtol) || p->rtol >= 1)
+        return gw_err_set(err, GW_EINVAL, "solver: rtol must be in (0, 1), got %g", p->rtol);
+    if (!(p->atol > 0) || !isfinite(p->atol))
+        return gw_err_set(err, GW_EINVAL, "solver: atol must be positive, got %g", p->atol);
+    if (!(p->dt >= 0) || !isfinite(p->dt))
+        return gw_err_set(err, GW_EINVAL, "solver: dt must be >= 0, got %g", p->dt);
+    if (!(p->dt_max >= 0) || !isfinite(p->dt_max))
+        return gw_err_set(err, GW_EINVAL, "solver: dt_max must be >= 0, got %g", p->dt_max);
+    if (p->max_steps <= 0)
+        return gw_err_set(err, GW_EINVAL, "solver: max_steps must be positive");
+    for (long i = 0; i < sys->dim; i++)
+        if (!isfinite(y0[i]))
+            return gw_err_set(err, GW_EINVAL, "solver: initial state component %ld is not finite", i);
+
+    gw_solver *s = calloc(1, sizeof *s);
+    if (!s)
+        return gw_err_set(err, GW_ENOMEM, "solver: out of memory");
+    s->type = type;
+    s->sys = *sys;
+    s->p = *p;
+    int rc = type->create(s, t0, y0, err);
+    if (rc != GW_OK) {
+        free(s);
+        return rc;
+    }
+    *out = s;
+    return GW_OK;
+}
+
+int gw_solver_advance(gw_solver *s, double tout, double *t, double *y, int *rootsfound)
+{
+    s->errmsg[0] = '\0';
+    return s->type->advance(s, tout, t, y, rootsfound);
+}
+
+int gw_solver_reset(gw_solver *s, double t, const double *y)
+{
+    s->restarts++;
+    return s->type->reset(s, t, y);
+}
+
+void gw_solver_get_stats(const gw_solver *s, gw_solver_stats *st)
+{
+    memset(st, 0, sizeof *st);
+    s->type->stats(s, st);
+    st->restarts = s->restarts;
+}
+
+const char *gw_solver_error(const gw_solver *s)
+{
+    return s->errmsg;
+}
+
+const gw_solver_type *gw_solver_get_type(const gw_solver *s)
+{
+    return s->type;
+}
+
+void gw_solver_free(gw_solver *s)
+{
+    if (!s)
+        return;
+    if (s->type && s->type->destroy)
+        s->type->destroy(s);
+    free(s);
+}

@@ -1,0 +1,129 @@
+/*
+ * gw_solver.h: the ODE solver layer shared by every granwave model.
+ *
+ * A model describes itself with a gw_system (right-hand side, optional banded
+ * Jacobian, root functions, dimension, parameters) and hands it to a solver built
+ * on one backend: CVODE (BDF or Adams), ARKode (ERK, DIRK or IMEX ARK) or the
+ * fixed-step RK4 written here as an independent cross-check. All three locate
+ * roots of the event functions and stop there, so a model can restart the
+ * integration exactly at contact openings and closings (the Hertz force is only
+ * C^1 at zero overlap; restarting there restores the methods' order).
+ *
+ * Units are the model's (granwave models use SI).
+ */
+#ifndef GW_SOLVER_H
+#define GW_SOLVER_H
+
+#include "gw_common.h"
+
+/* Right-hand side dy/dt = f(t, y). Return 0 on success, > 0 for a recoverable
+ * failure (the adaptive backends retry with a smaller step), < 0 to stop. */
+typedef int (*gw_rhs_fn)(double t, const double *y, double *ydot, void *params);
+
+/* Event (root) functions g_k(t, y), k = 0..nroots-1. Same return convention. */
+typedef int (*gw_root_fn)(double t, const double *y, double *g, void *params);
+
+/* Banded Jacobian storage as SUNDIALS lays it out: column j, row i with
+ * -ml <= i - j <= mu. Use gw_band_set to write entries; all entries start at 0. */
+typedef struct gw_band {
+    double **cols;
+    long smu; /* storage upper bandwidth */
+    long mu, ml;
+} gw_band;
+
+static inline void gw_band_set(gw_band *J, long i, long j, double v)
+{
+    J->cols[j][J->smu + i - j] = v;
+}
+
+/* Fill the banded Jacobian df/dy at (t, y); f = f(t, y) is given. */
+typedef int (*gw_jac_fn)(double t, const double *y, const double *f, gw_band *J,
+                         void *params);
+
+typedef struct gw_system {
+    long dim;            /* number of state components */
+    gw_rhs_fn rhs;       /* full right-hand side (required) */
+    gw_rhs_fn rhs_ex;    /* IMEX split, non-stiff part (optional) */
+    gw_rhs_fn rhs_im;    /* IMEX split, stiff part; rhs = rhs_ex + rhs_im */
+    gw_jac_fn jac;       /* banded Jacobian of rhs (optional: finite differences) */
+    long mu, ml;         /* Jacobian half-bandwidths (implicit methods need them) */
+    gw_root_fn roots;    /* event functions (optional) */
+    int nroots;
+    const double *scale; /* typical magnitude of each component, or NULL (= 1):
+                            absolute tolerance of component i is atol * scale[i] */
+    void *params;        /* passed to every callback, owned by the model */
+} gw_system;
+
+/* Backend variants. */
+enum {
+    GW_METHOD_DEFAULT = 0,
+    GW_CVODE_BDF = 1,
+    GW_CVODE_ADAMS = 2,
+    GW_ARKODE_ERK = 3,
+    GW_ARKODE_DIRK = 4,
+    GW_ARKODE_IMEX = 5
+};
+
+typedef struct gw_solver_params {
+    double rtol;       /* relative tolerance (adaptive backends) */
+    double atol;       /* absolute tolerance, multiplied by gw_system.scale[i] */
+    double dt;         /* RK4 step; initial step for adaptive backends (0 = auto) */
+    double dt_max;     /* largest step (0 = unlimited) */
+    long max_steps;    /* internal steps allowed per gw_solver_advance call */
+    int method;        /* GW_METHOD_DEFAULT or a backend variant above */
+    int use_jac;       /* use gw_system.jac when present (else finite differences) */
+} gw_solver_params;
+
+/* rtol 1e-10, atol 1e-10, dt 0 (RK4 needs it set), max_steps 1e7, default method. */
+gw_solver_params gw_solver_params_default(void);
+
+typedef struct gw_solver gw_solver;
+typedef struct gw_solver_type gw_solver_type;
+
+/* The backends: const singleton tables. */
+extern const gw_solver_type *const gw_solver_cvode;
+extern const gw_solver_type *const gw_solver_arkode;
+extern const gw_solver_type *const gw_solver_rk4;
+
+/* Backend by name ("cvode", "arkode", "rk4"); NULL if unknown. */
+const gw_solver_type *gw_solver_type_find(const char *name);
+const char *gw_solver_type_name(const gw_solver_type *type);
+/* Backend variant by name ("bdf", "adams", "erk", "dirk", "imex"); -1 if unknown. */
+int gw_solver_method_find(const char *name);
+const char *gw_solver_method_name(int method);
+
+typedef struct gw_solver_stats {
+    long steps;      /* internal steps taken (all restarts summed) */
+    long rhs_evals;  /* right-hand side evaluations */
+    long jac_evals;  /* Jacobian evaluations */
+    long root_evals; /* root function evaluations */
+    long restarts;   /* gw_solver_reset calls */
+} gw_solver_stats;
+
+/* Create a solver for sys at (t0, y0). sys and its params must outlive the solver;
+ * y0 is copied. Returns GW_EINVAL (bad tolerances or step, message in err),
+ * GW_EUNSUPPORTED (variant not offered by the backend, e.g. IMEX without a split),
+ * GW_ESOLVER (backend setup failed, message in err). *out is NULL on failure. */
+int gw_solver_create(const gw_solver_type *type, const gw_system *sys,
+                     const gw_solver_params *p, double t0, const double *y0,
+                     gw_solver **out, gw_err *err);
+
+/* Integrate towards tout. Returns GW_OK with *t == tout, GW_ROOT when an event
+ * stopped it at *t (rootsfound[k] = +1 for a rising and -1 for a falling zero of
+ * g_k, 0 for components without a root; rootsfound may be NULL), or GW_ESOLVER /
+ * GW_ELIMIT with the backend's message and the time in gw_solver_error(). After a
+ * failure *t and y hold the last successful state. */
+int gw_solver_advance(gw_solver *s, double tout, double *t, double *y,
+                      int *rootsfound);
+
+/* Restart the integration at (t, y), discarding the step history. */
+int gw_solver_reset(gw_solver *s, double t, const double *y);
+
+void gw_solver_get_stats(const gw_solver *s, gw_solver_stats *st);
+/* Last error message ("" if none). Owned by the solver. */
+const char *gw_solver_error(const gw_solver *s);
+const gw_solver_type *gw_solver_get_type(const gw_solver *s);
+/* Free; NULL is a no-op. */
+void gw_solver_free(gw_solver *s);
+
+#endif

@@ -1,0 +1,36 @@
+/*
+ * gw_sundials.h: glue shared by the CVODE and ARKode backends (private): callback
+ * wrappers that unpack N_Vectors and forward to the gw_system, the error handler
+ * that keeps the backend's message on the solver, and the absolute tolerance vector.
+ * The user_data of every SUNDIALS callback is the gw_solver.
+ */
+#ifndef GW_SUNDIALS_H
+#define GW_SUNDIALS_H
+
+#include <nvector/nvector_serial.h>
+#include <sundials/sundials_context.h>
+#include <sundials/sundials_linearsolver.h>
+#include <sundials/sundials_matrix.h>
+
+#include "gw_solver_impl.h"
+
+int gw_sun_rhs(realtype t, N_Vector y, N_Vector ydot, void *ud);
+int gw_sun_rhs_ex(realtype t, N_Vector y, N_Vector ydot, void *ud);
+int gw_sun_rhs_im(realtype t, N_Vector y, N_Vector ydot, void *ud);
+int gw_sun_roots(realtype t, N_Vector y, realtype *g, void *ud);
+int gw_sun_jac(realtype t, N_Vector y, N_Vector fy, SUNMatrix J, void *ud,
+               N_Vector t1, N_Vector t2, N_Vector t3);
+void gw_sun_errh(int code, const char *module, const char *function, char *msg,
+                 void *ud);
+
+/* Vector of atol * scale[i]; NULL on allocation failure. */
+N_Vector gw_sun_abstol(const gw_solver *s, SUNContext ctx);
+
+/* Band matrix and band linear solver sized from the system's bandwidths. */
+int gw_sun_band(const gw_solver *s, N_Vector y, SUNContext ctx, SUNMatrix *A,
+                SUNLinearSolver *LS);
+
+/* Copy n doubles from an N_Vector. */
+void gw_sun_copy_out(N_Vector v, double *y, long n);
+
+#endif

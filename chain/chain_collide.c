@@ -114,15 +114,19 @@ static void on_roots(run_state *st, double t, const double *y, const int *roots)
     }
 }
 
-/* Every contact open and every neighbour pair separating. */
-static int finished(const run_state *st, const double *y)
+/* Every contact open (by its events and by its geometry, so that a contact the
+ * root finder missed still counts) and every neighbour pair separating. */
+static int finished(const run_state *st, const double *y, double dtol)
 {
     const int n = st->n;
     for (int k = 0; k < n; k++)
         if (st->closed[k])
             return 0;
-    if (y[1] > 0)
+    if (y[1] > 0 || y[0] > dtol)
         return 0;
+    for (int i = 0; i < n - 1; i++)
+        if (y[2 * i + 2] - y[2 * i] > dtol)
+            return 0;
     for (int i = 0; i < n - 1; i++)
         if (y[2 * i + 3] > y[2 * i + 1])
             return 0;
@@ -184,7 +188,16 @@ int gw_chain_collide(const gw_chain *c, const gw_chain_run_opts *o, gw_chain_res
     double tau1 = gw_chain_tau1(gw_chain_bead_mass(c, 0), p->kwall, p->v_imp);
     double dt_out = o->dt_out > 0 ? o->dt_out : tau1 / 200.0;
     double t_max = o->t_max > 0 ? o->t_max : 20.0 * (n * 2.0 * tc + tau1);
+    double dscale = gw_chain_dmax1(gw_chain_bead_mass(c, 0), p->kwall, p->v_imp);
     gw_solver_params sp = o->sp;
+    /* The root finders compare signs at step ends only: a step longer than half a
+     * contact could step over a whole contact. Contacts last at least about the
+     * binary contact time at twice v_imp, so cap the step at a quarter of it. */
+    if (!(sp.dt_max > 0)) {
+        double m = gw_chain_bead_mass(c, 0);
+        sp.dt_max = 0.25 * fmin(gw_chain_tau1(m, p->kwall, 2 * p->v_imp),
+                                gw_chain_tau1(0.5 * m, p->k, 2 * p->v_imp));
+    }
     const gw_solver_type *type = o->solver ? o->solver : gw_solver_cvode;
     if (type == gw_solver_rk4 && !(sp.dt > 0))
         sp.dt = tc / 400.0;
@@ -226,7 +239,7 @@ int gw_chain_collide(const gw_chain *c, const gw_chain_run_opts *o, gw_chain_res
                             r->energy_error, o->energy_tol, t);
             break;
         }
-        if (finished(&st, y)) {
+        if (finished(&st, y, 1e-9 * dscale)) {
             r->converged = 1;
             break;
         }

@@ -179,6 +179,19 @@ void gw_chain_trace_free(gw_chain_trace *tr);
 int gw_chain_trace_write(const gw_chain_trace *tr, const char *dir, const char *stem,
                          const char *header, gw_err *err);
 
+/* ---- sweeps over N and v_imp (threaded) ---- */
+
+/* Run one collision for every (v[iv], N) with n_lo <= N <= n_hi, using the
+ * template tmpl (its n and v_imp are replaced) and run options o (no sample
+ * callback). res must hold nv * (n_hi - n_lo + 1) results, index
+ * iv * (n_hi - n_lo + 1) + (N - n_lo); free each with gw_chain_result_free.
+ * jobs threads (<= 0: one per online CPU); progress != 0 prints progress lines
+ * on stderr. On the first failing case returns its status and message (naming
+ * N and v_imp); all results are still allocated and must be freed. */
+int gw_chain_sweep_n(const gw_chain_params *tmpl, const gw_chain_run_opts *o,
+                     const double *v, int nv, int n_lo, int n_hi, int jobs,
+                     int progress, gw_chain_result *res, gw_err *err);
+
 /* ---- program commands ---- */
 
 int gw_cmd_chain(int argc, char **argv);

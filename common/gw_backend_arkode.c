@@ -1,6 +1,10 @@
 /*
  * gw_backend_arkode.c: ARKode (ARKStep) backend. Variants:
- *   erk  - explicit Verner 8(5)6 (default; no linear algebra),
+ *   erk  - explicit Cash-Karp 5(4)6 (default; no linear algebra). Higher-order
+ *          tables (Verner 8(5)6) take steps so long that ARKode's degree-5
+ *          Hermite dense output, which places roots and outputs, limits the
+ *          accuracy: measured on a 7-bead column at rtol 1e-12, energy error
+ *          1.9e-7 with Verner against 5.8e-10 with Cash-Karp.
  *   dirk - implicit ARK5(4)8L[2]SA DIRK table with a band linear solver and the
  *          system's analytic banded Jacobian when it has one,
  *   imex - ARK5(4)8L[2]SA additive pair: rhs_ex explicit, rhs_im implicit (band
@@ -62,7 +66,7 @@ static const char *ark_configure(gw_solver *s, ark_impl *a, int method, int *fla
     if (s->p.dt_max > 0)
         ARK_CHECK(ARKStepSetMaxStep(a->mem, s->p.dt_max));
     if (method == GW_ARKODE_ERK) {
-        ARK_CHECK(ARKStepSetTableName(a->mem, "ARKODE_DIRK_NONE", "ARKODE_VERNER_8_5_6"));
+        ARK_CHECK(ARKStepSetTableName(a->mem, "ARKODE_DIRK_NONE", "ARKODE_CASH_KARP_6_4_5"));
     } else {
         if (gw_sun_band(s, a->y, a->ctx, &a->A, &a->LS) != GW_OK) {
             *flag = -1;

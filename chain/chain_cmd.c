@@ -39,6 +39,7 @@ static cJSON *result_json(const chain_cli *c, const gw_chain_result *r, double w
     cJSON_AddBoolToObject(o, "converged", r->converged);
     cJSON_AddNumberToObject(o, "t_end", r->t_end);
     cJSON_AddNumberToObject(o, "events", (double)r->n_events);
+    cJSON_AddNumberToObject(o, "missed_events", (double)r->missed_events);
     cJSON_AddNumberToObject(o, "steps", (double)r->stats.steps);
     cJSON_AddNumberToObject(o, "rhs_evals", (double)r->stats.rhs_evals);
     cJSON_AddNumberToObject(o, "jac_evals", (double)r->stats.jac_evals);

@@ -100,6 +100,13 @@ int chain_cli_resolve(chain_cli *c, const gw_opt *opts, const char *cmd, gw_err 
     int method = gw_solver_method_find(c->method);
     if (method < 0)
         return gw_err_set(err, GW_EINVAL, "%s --method: unknown method '%s' (bdf, adams, erk, dirk, imex)", cmd, c->method);
+    int ok = method == GW_METHOD_DEFAULT ||
+             (r->solver == gw_solver_cvode && (method == GW_CVODE_BDF || method == GW_CVODE_ADAMS)) ||
+             (r->solver == gw_solver_arkode &&
+              (method == GW_ARKODE_ERK || method == GW_ARKODE_DIRK || method == GW_ARKODE_IMEX));
+    if (!ok)
+        return gw_err_set(err, GW_EINVAL, "%s --method: '%s' is not a method of solver %s (cvode: bdf, adams; arkode: erk, dirk, imex; rk4: none)",
+                          cmd, c->method, c->solver);
     r->sp.method = method;
     r->sp.rtol = c->rtol;
     r->sp.atol = c->atol;

@@ -147,6 +147,7 @@ typedef struct gw_chain_result {
     int converged;       /* 1: all contacts open and separating at t_end */
     double t_end;
     long n_events;
+    long missed_events;  /* contact changes found from the state, not a root */
     gw_solver_stats stats;
 } gw_chain_result;
 

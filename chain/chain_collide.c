@@ -39,12 +39,47 @@ typedef struct run_state {
     double *last_open;
     double dtol;     /* overlap below which a contact counts as open, m */
     double t_first_max, t_last_max;
+    double t_prev, f_prev;   /* previous observation (wall force) */
+    double *fc_prev;         /* [n] contact forces at the previous observation */
 } run_state;
+
+/* Elastic force of contact k (0 = wall, k = contact between beads k-1, k). */
+static double contact_force(const run_state *st, const double *y, int k)
+{
+    if (k == 0)
+        return gw_chain_wall_force(st->c, y);
+    double d = y[2 * k] - y[2 * k - 2];
+    const gw_chain_params *p = gw_chain_get_params(st->c);
+    return d > 0 ? (p->kc ? p->kc[k - 1] : p->k) * d * sqrt(d) : 0.0;
+}
+
+/* First crossing of the front threshold by each contact, by linear
+ * interpolation between the previous and the current observation. */
+static void track_front(run_state *st, double t, const double *y)
+{
+    double thr = st->o->front_threshold;
+    for (int k = 0; k < st->n; k++) {
+        double f = contact_force(st, y, k);
+        if (isnan(st->r->front_t[k]) && f >= thr) {
+            double f0 = st->fc_prev[k];
+            st->r->front_t[k] = f > f0 && t > st->t_prev
+                                    ? st->t_prev + (thr - f0) / (f - f0) * (t - st->t_prev)
+                                    : t;
+        }
+        st->fc_prev[k] = f;
+    }
+}
 
 static int observe(run_state *st, double t, const double *y, int is_event)
 {
     gw_chain_result *r = st->r;
     double f = gw_chain_wall_force(st->c, y);
+    if (t > st->t_prev) /* trapezoidal impulse on the wall */
+        r->impulse += 0.5 * (f + st->f_prev) * (t - st->t_prev);
+    if (r->front_t)
+        track_front(st, t, y);
+    st->t_prev = t;
+    st->f_prev = f;
     if (f > r->f_max) {
         r->f_max = f;
         r->tau_max = t;
@@ -195,19 +230,25 @@ int gw_chain_collide(const gw_chain *c, const gw_chain_run_opts *o, gw_chain_res
     const int n = p->n;
     memset(r, 0, sizeof *r);
     r->n = n;
-    r->final_v = calloc(3 * (size_t)n, sizeof *r->final_v);
+    r->final_v = calloc(4 * (size_t)n, sizeof *r->final_v);
     double *y = malloc((size_t)sys->dim * sizeof *y);
     int *roots = calloc((size_t)sys->nroots, sizeof *roots);
     run_state st = {.c = c, .o = o, .r = r, .n = n, .closed = calloc((size_t)n, 1),
-                    .last_open = malloc((size_t)n * sizeof(double))};
+                    .last_open = malloc((size_t)n * sizeof(double)),
+                    .fc_prev = calloc((size_t)n, sizeof(double))};
     int rc = GW_OK;
     gw_solver *s = NULL;
-    if (!r->final_v || !y || !roots || !st.closed || !st.last_open) {
+    if (!r->final_v || !y || !roots || !st.closed || !st.last_open || !st.fc_prev) {
         rc = gw_err_set(err, GW_ENOMEM, "chain: out of memory for %d beads", n);
         goto done;
     }
     r->detach_t = r->final_v + n;
     r->v_tau_n = r->final_v + 2 * n;
+    if (o->front_threshold > 0) {
+        r->front_t = r->final_v + 3 * n;
+        for (int k = 0; k < n; k++)
+            r->front_t[k] = NAN;
+    }
     r->tau_n = r->tau_max = NAN;
     for (int k = 0; k < n; k++) {
         st.closed[k] = 1;
@@ -296,6 +337,7 @@ done:
     free(roots);
     free(st.closed);
     free(st.last_open);
+    free(st.fc_prev);
     return rc;
 }
 
@@ -304,5 +346,5 @@ void gw_chain_result_free(gw_chain_result *r)
     if (!r)
         return;
     free(r->final_v);
-    r->final_v = r->detach_t = r->v_tau_n = NULL;
+    r->final_v = r->detach_t = r->v_tau_n = r->front_t = NULL;
 }

@@ -122,6 +122,9 @@ typedef struct gw_chain_run_opts {
                           exceeds this (0 = off) */
     gw_chain_sample_fn sample;
     void *sample_ctx;
+    double front_threshold; /* N; > 0: record when each contact's force first
+                               reaches it (result front_t), interpolated
+                               linearly between samples */
 } gw_chain_run_opts;
 
 gw_chain_run_opts gw_chain_run_opts_default(void);
@@ -138,6 +141,9 @@ typedef struct gw_chain_result {
     double *final_v;     /* [n] velocities at the end, m/s (toward wall > 0) */
     double *detach_t;    /* [n] last opening of a contact of bead i, s */
     double *v_tau_n;     /* [n] velocities at tau_n */
+    double *front_t;     /* [n] first time contact i-1 (i = 0: the wall) carries
+                            front_threshold; NaN if never; NULL if not asked */
+    double impulse;      /* integral of the wall force over the run, N s */
     int n_s;             /* beads leaving from the top before the cluster */
     int cluster;         /* beads in contact with bead 1 when it left the wall */
     double e_rel_over_e_k; /* (F.20) at tau_n */
@@ -197,5 +203,6 @@ int gw_chain_sweep_n(const gw_chain_params *tmpl, const gw_chain_run_opts *o,
 
 int gw_cmd_chain(int argc, char **argv);
 int gw_cmd_falcon(int argc, char **argv);
+int gw_cmd_wavespeed(int argc, char **argv);
 
 #endif

@@ -1,0 +1,65 @@
+#!/bin/bash
+# granwave set-up: installs the missing Debian packages (non-interactive, only
+# what is missing), configures and builds, then runs the chosen job.
+#
+#   ./setup.sh main   install + build + run the main job (Falcon study, figures)
+#   ./setup.sh test   install + build (warnings are errors) + run every test
+#   ./setup.sh build  install + build only
+#
+# Environment: BUILD_DIR (default build), RESULTS (default results/falcon),
+# JOBS (build parallelism, default nproc).
+set -euo pipefail
+cd "$(dirname "$0")"
+mode=${1:-main}
+BUILD_DIR=${BUILD_DIR:-build}
+RESULTS=${RESULTS:-results/falcon}
+JOBS=${JOBS:-$(nproc)}
+
+packages=(build-essential cmake pkg-config libsundials-dev libgsl-dev libfftw3-dev
+          libhdf5-dev libcjson-dev python3-numpy python3-scipy python3-matplotlib
+          jupyter-nbconvert python3-ipykernel)
+
+install_missing() {
+    local missing=()
+    for p in "${packages[@]}"; do
+        dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+    done
+    if [ ${#missing[@]} -eq 0 ]; then
+        echo "setup: all ${#packages[@]} Debian packages present"
+        return
+    fi
+    echo "setup: installing ${missing[*]}"
+    local sudo=""
+    [ "$(id -u)" -eq 0 ] || sudo="sudo"
+    $sudo apt-get update -qq
+    DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
+}
+
+build() {
+    cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=Release "$@"
+    cmake --build "$BUILD_DIR" -j "$JOBS"
+}
+
+case "$mode" in
+main)
+    install_missing
+    build
+    "$BUILD_DIR/granwave" falcon --out "$RESULTS"
+    MPLBACKEND=Agg /usr/bin/python3 notebooks/plot_falcon.py "$RESULTS"
+    echo "setup: report $RESULTS/report.md, figures $RESULTS/figures/"
+    ;;
+test)
+    install_missing
+    build -DGW_WERROR=ON
+    cd "$BUILD_DIR"
+    ctest --output-on-failure -j 2
+    ;;
+build)
+    install_missing
+    build
+    ;;
+*)
+    echo "setup.sh: unknown mode '$mode' (main, test, build)" >&2
+    exit 2
+    ;;
+esac

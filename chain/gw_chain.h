@@ -204,5 +204,6 @@ int gw_chain_sweep_n(const gw_chain_params *tmpl, const gw_chain_run_opts *o,
 int gw_cmd_chain(int argc, char **argv);
 int gw_cmd_falcon(int argc, char **argv);
 int gw_cmd_wavespeed(int argc, char **argv);
+int gw_cmd_softwall(int argc, char **argv);
 
 #endif

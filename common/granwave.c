@@ -21,6 +21,7 @@ static const command commands[] = {
     {"chain", gw_cmd_chain, "one collision of a bead column with a wall"},
     {"falcon", gw_cmd_falcon, "the Falcon et al. (1998) rigid-wall study (main job)"},
     {"wavespeed", gw_cmd_wavespeed, "deformation-wave speed against v_imp, three estimators"},
+    {"softwall", gw_cmd_softwall, "soft walls: F_max(N), saturation number N_d, sheets"},
 #if GW_HAVE_LAYER
     GW_LAYER_COMMANDS
 #endif

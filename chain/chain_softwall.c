@@ -1,0 +1,226 @@
+/*
+ * chain_softwall.c: `granwave softwall`, columns on a soft wall (physics.md 1.3).
+ *
+ *   K_c = (c_tau/4)^(5/2) (5k/4)                        (F.22): rigid if K > K_c
+ *   N_d = first N from which F_max(N') stays within a tolerance (default 1 %) of
+ *         the plateau F_max(n_max) for every N' >= N            (measured)
+ *   N_d predicted = ceil(tau_max(N_d) / T_q)                      (F.8)
+ * T_q is measured on the same beads with the steel (rigid) wall: slope of tau_N
+ * over N = 1..20 (F.4). The predicted N_d is the smallest N with
+ * N >= ceil(tau_max(N)/T_q), tau_max taken from the soft-wall runs.
+ * Sheet mode (--sheets): an effective K for each sheet of the paper's Table 2 from
+ * its measured tau_max(N = 1) with tau_max = tau_1/2 and (F.2):
+ *   K_eff = (5m/4) (c_tau / (2 tau_max v^(1/5)))^(5/2)
+ * then N_d of the model with K_eff against the measured N_d (h = 2.9 mm).
+ * Units: SI (tables print us).
+ */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "chain_options.h"
+
+/* Falcon et al. 1998, Table 2 (physics.md 1.7): sheets on the sensor, h = 2.9 mm. */
+typedef struct sheet {
+    const char *name;
+    double tau_max1_us; /* measured tau_max(N = 1), input of the K_eff fit */
+    double n_d, n_d_err; /* measured saturation number, for comparison */
+} sheet;
+
+static const sheet sheets[] = {
+    {"none", 17, 1, 0},          {"brass", 47.5, 2, 0},   {"adhesive tape", 47.5, 4, 0},
+    {"PVC", 67.5, 6, 1},         {"PMMA", 69, 8, 1},      {"cardboard II", 191, 11, 1},
+    {"beech", 127.5, 15, 1},     {"cardboard I", 227, 22, 2}, {"rubber", 221, 28, 4},
+};
+
+typedef struct sw_result {
+    int n_d, n_d_pred;
+    double plateau;
+} sw_result;
+
+static sw_result analyse(const gw_chain_result *r, int n_lo, int n_hi, double tol, double t_q)
+{
+    sw_result s = {n_hi, -1, r[n_hi - n_lo].f_max};
+    for (int n = n_hi; n >= n_lo; n--) {
+        if (fabs(r[n - n_lo].f_max - s.plateau) > tol * s.plateau)
+            break;
+        s.n_d = n;
+    }
+    for (int n = n_lo; n <= n_hi; n++)
+        if (n >= (int)ceil(r[n - n_lo].tau_max / t_q - 1e-9)) {
+            s.n_d_pred = n;
+            break;
+        }
+    return s;
+}
+
+/* Rigid-wall T_q of the beads at v: slope of tau_N over N = 1..20. */
+static int measure_tq(const chain_cli *c, double v, int jobs, double *t_q, gw_err *err)
+{
+    gw_chain_params p = c->params;
+    const gw_material *steel = gw_material_find("steel");
+    p.kwall = gw_hertz_coefficient(p.radius, steel, INFINITY, steel);
+    gw_chain_result r[20];
+    int rc = gw_chain_sweep_n(&p, &c->run, &v, 1, 1, 20, jobs, 0, r, err);
+    double x[20], y[20];
+    for (int i = 0; i < 20; i++) {
+        x[i] = i;
+        y[i] = r[i].tau_n;
+        gw_chain_result_free(&r[i]);
+    }
+    gw_linfit lf;
+    if (rc == GW_OK && gw_fit_linear(x, y, 20, &lf) == GW_OK)
+        *t_q = lf.c1;
+    return rc;
+}
+
+static const char *sw_summary =
+    "Columns on a soft wall: F_max(N) and tau_max(N) for a wall coefficient K, the\n"
+    "saturation number N_d (F_max within --tol of its plateau from N_d on) against\n"
+    "the prediction N_d = ceil(tau_max(N_d)/T_q) (F.8), K_c (F.22) and the rigid/soft\n"
+    "verdict. --sheets fits K_eff for each sheet of the paper's Table 2 from its\n"
+    "measured tau_max(N=1) and compares the model's N_d with the measured one.";
+
+int gw_cmd_softwall(int argc, char **argv)
+{
+    chain_cli c;
+    gw_opt opts[CHAIN_CLI_NOPTS + 7];
+    chain_cli_options(&c, opts);
+    const char *nrange = "1:30";
+    double vimp = sqrt(2 * 9.81 * 2.9e-3), tol = 0.01;
+    long jobs = 0;
+    int quiet = 0, use_sheets = 0, k = CHAIN_CLI_NOPTS;
+    opts[k++] = (gw_opt){.name = "n", .kind = GW_OPT_STRING, .dest = &nrange, .metavar = "A:B", .help = "column sizes [1:30]"};
+    opts[k++] = (gw_opt){.name = "vimp", .kind = GW_OPT_DOUBLE, .dest = &vimp, .metavar = "V",
+                         .help = "impact velocity, m/s [0.2385 = h 2.9 mm]", .lo = 0, .hi = 1e3, .open_lo = 1};
+    opts[k++] = (gw_opt){.name = "tol", .kind = GW_OPT_DOUBLE, .dest = &tol, .metavar = "F",
+                         .help = "plateau tolerance for N_d (fraction) [0.01]", .lo = 0, .hi = 0.5, .open_lo = 1};
+    opts[k++] = (gw_opt){.name = "sheets", .kind = GW_OPT_FLAG, .dest = &use_sheets, .help = "the paper's sheets (Table 2) with fitted K_eff"};
+    opts[k++] = (gw_opt){.name = "jobs", .kind = GW_OPT_LONG, .dest = &jobs, .metavar = "J", .help = "threads [0 = one per CPU]", .lo = 0, .hi = 1024};
+    opts[k++] = (gw_opt){.name = "quiet", .kind = GW_OPT_FLAG, .dest = &quiet, .help = "no progress lines"};
+    opts[k] = (gw_opt){0};
+    gw_err err = {{0}};
+    int help = 0, npos = 0;
+    const char *pos[1];
+    if (gw_cli_parse("softwall", opts, argc, argv, &help, pos, 0, &npos, &err) != GW_OK)
+        return chain_cli_fail(err.msg);
+    if (help) {
+        gw_cli_help(stdout, "softwall", "granwave softwall [--kwall K | --sheets] [options]", sw_summary, opts);
+        return 0;
+    }
+    if (!gw_cli_find(opts, "kwall")->seen && !use_sheets)
+        c.kwall = 1e9, ((gw_opt *)gw_cli_find(opts, "kwall"))->seen = 1;
+    long a, b;
+    if (gw_parse_int_range(nrange, "softwall --n", 1, 100000, &a, &b, &err) != GW_OK)
+        return chain_cli_fail(err.msg);
+    if (b - a < 2)
+        return chain_cli_fail("softwall --n: need at least 3 column sizes");
+    c.params.n = (int)a;
+    c.params.v_imp = vimp;
+    if (chain_cli_resolve(&c, opts, "softwall", &err) != GW_OK || (c.out && gw_mkdir_p(c.out, &err) != GW_OK))
+        return chain_cli_fail(err.msg);
+    const gw_chain_params *p = &c.params;
+    double kc = gw_chain_kc(p->k), t_q = NAN, t0 = gw_clock_ms();
+    int nw = use_sheets ? (int)(sizeof sheets / sizeof sheets[0]) : 1, per = (int)(b - a + 1);
+    gw_chain_result *res = calloc((size_t)(nw * per), sizeof *res);
+    double *kw = calloc((size_t)nw, sizeof *kw);
+    sw_result *sr = calloc((size_t)nw, sizeof *sr);
+    int rc = res && kw && sr ? measure_tq(&c, vimp, (int)jobs, &t_q, &err) : GW_ENOMEM;
+    for (int w = 0; rc == GW_OK && w < nw; w++) {
+        gw_chain_params q = *p;
+        if (use_sheets)
+            q.kwall = 1.25 * q.mass * pow(gw_chain_tau_constant() / (2e-6 * sheets[w].tau_max1_us * pow(vimp, 0.2)), 2.5);
+        kw[w] = q.kwall;
+        if (!quiet)
+            fprintf(stderr, "softwall: K = %.4g N/m^1.5%s%s (%d/%d)\n", q.kwall, use_sheets ? ", sheet " : "",
+                    use_sheets ? sheets[w].name : "", w + 1, nw);
+        rc = gw_chain_sweep_n(&q, &c.run, &vimp, 1, (int)a, (int)b, (int)jobs, 0, res + w * per, &err);
+        if (rc == GW_OK)
+            sr[w] = analyse(res + w * per, (int)a, (int)b, tol, t_q);
+    }
+    double wall_s = (gw_clock_ms() - t0) / 1e3;
+    int code = 0;
+    if (rc != GW_OK) {
+        fprintf(stderr, "granwave softwall: %s\n", err.msg);
+        code = rc == GW_EINVAL ? 2 : 1;
+    } else {
+        cJSON *o = cJSON_CreateObject();
+        cJSON_AddStringToObject(o, "version", gw_version());
+        cJSON_AddNumberToObject(o, "v_imp", vimp);
+        cJSON_AddNumberToObject(o, "k_c", kc);
+        cJSON_AddNumberToObject(o, "t_q_rigid", t_q);
+        cJSON_AddNumberToObject(o, "tol", tol);
+        int ns = per;
+        int *nn = malloc((size_t)ns * sizeof *nn);
+        double *fm = malloc(2 * (size_t)ns * sizeof *fm);
+        for (int i = 0; nn && i < ns; i++)
+            nn[i] = (int)a + i;
+        cJSON_AddItemToObject(o, "n", gw_json_ints(nn, ns));
+        cJSON *walls = cJSON_AddArrayToObject(o, "walls");
+        for (int w = 0; fm && w < nw; w++) {
+            cJSON *e = use_sheets ? cJSON_CreateObject() : o;
+            for (int i = 0; i < ns; i++) {
+                fm[i] = res[w * per + i].f_max;
+                fm[ns + i] = res[w * per + i].tau_max;
+            }
+            if (use_sheets) {
+                cJSON_AddStringToObject(e, "sheet", sheets[w].name);
+                cJSON_AddNumberToObject(e, "tau_max_n1_measured", sheets[w].tau_max1_us * 1e-6);
+                cJSON_AddNumberToObject(e, "n_d_measured", sheets[w].n_d);
+                cJSON_AddNumberToObject(e, "n_d_measured_err", sheets[w].n_d_err);
+                cJSON_AddItemToArray(walls, e);
+            }
+            cJSON_AddNumberToObject(e, "kwall", kw[w]);
+            cJSON_AddStringToObject(e, "wall", kw[w] > kc ? "rigid" : "soft");
+            cJSON_AddItemToObject(e, "f_max", gw_json_doubles(fm, ns));
+            cJSON_AddItemToObject(e, "tau_max", gw_json_doubles(fm + ns, ns));
+            /* null when F_max has not saturated (or F.8 is not met) within n_max */
+            cJSON_AddNumberToObject(e, "n_d", sr[w].n_d < b ? sr[w].n_d : NAN);
+            cJSON_AddNumberToObject(e, "n_d_predicted", sr[w].n_d_pred > 0 ? sr[w].n_d_pred : NAN);
+            cJSON_AddNumberToObject(e, "f_plateau", sr[w].plateau);
+            cJSON_AddNumberToObject(e, "tau_max_at_n_d", res[w * per + sr[w].n_d - a].tau_max);
+            cJSON_AddNumberToObject(e, "saturated_below_n_max", sr[w].n_d < b);
+        }
+        cJSON_AddNumberToObject(o, "wall_time_s", wall_s);
+        cJSON_AddItemToObject(o, "settings", chain_cli_settings_json(&c));
+        char path[4096];
+        if (c.out && (gw_path_join(path, sizeof path, c.out, "softwall.json") != GW_OK ||
+                      gw_json_write(path, o, &err) != GW_OK)) {
+            fprintf(stderr, "granwave softwall --out: %s\n", err.msg);
+            code = 1;
+        }
+        if (code == 0 && c.json) {
+            gw_json_print(o, stdout);
+        } else if (code == 0) {
+            printf("granwave %s softwall: v_imp %.4g m/s, K_c %.4g N/m^1.5, rigid-wall T_q %.3f us (%.1f s)\n",
+                   gw_version(), vimp, kc, t_q * 1e6, wall_s);
+            printf("  %-14s %11s %6s %8s %8s %11s %14s\n", "wall", "K", "kind", "N_d", "F.8", "F_plateau",
+                   use_sheets ? "N_d measured" : "");
+            for (int w = 0; w < nw; w++) {
+                char meas[32] = "";
+                if (use_sheets)
+                    snprintf(meas, sizeof meas, "%g +- %g", sheets[w].n_d, sheets[w].n_d_err);
+                char nd[32], np[32];
+                if (sr[w].n_d < b)
+                    snprintf(nd, sizeof nd, "%d", sr[w].n_d);
+                else
+                    snprintf(nd, sizeof nd, ">%ld", b - 1);
+                if (sr[w].n_d_pred > 0)
+                    snprintf(np, sizeof np, "%d", sr[w].n_d_pred);
+                else
+                    snprintf(np, sizeof np, ">%ld", b);
+                printf("  %-14s %11.4g %6s %8s %8s %9.2f N %14s\n", use_sheets ? sheets[w].name : "--kwall",
+                       kw[w], kw[w] > kc ? "rigid" : "soft", nd, np, sr[w].plateau, meas);
+            }
+        }
+        free(nn);
+        free(fm);
+        cJSON_Delete(o);
+    }
+    for (int i = 0; res && i < nw * per; i++)
+        gw_chain_result_free(&res[i]);
+    free(res);
+    free(kw);
+    free(sr);
+    return code;
+}

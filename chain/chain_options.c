@@ -41,6 +41,8 @@ void chain_cli_options(chain_cli *c, gw_opt *o)
     o[i++] = OPT_S("damping", &c->damping, "MODEL", "none, kk (Kuwabara-Kono) or hc (Hunt-Crossley) [none]");
     o[i++] = OPT_D("gamma", &c->gamma, "G", "Kuwabara-Kono constant of bead contacts, N s/m^1.5 [0]", 0, INFINITY, 0);
     o[i++] = OPT_D("alpha", &c->alpha, "A", "Hunt-Crossley constant, s/m [0]", 0, INFINITY, 0);
+    o[i++] = OPT_D("restitution", &c->restitution, "E", "calibrate gamma/alpha so one bead on the wall rebounds with E", 0, 1, 1);
+    o[i++] = OPT_D("restitution-v", &c->restitution_v, "V", "impact velocity of that calibration, m/s [v_imp]", 0, 1e3, 1);
     o[i++] = OPT_S("solver", &c->solver, "NAME", "cvode, arkode or rk4 [cvode]");
     o[i++] = OPT_S("method", &c->method, "NAME", "cvode: bdf|adams; arkode: erk|dirk|imex [bdf / erk]");
     o[i++] = OPT_D("rtol", &c->rtol, "R", "relative tolerance [1e-12]", 0, 1, 1);
@@ -116,13 +118,28 @@ int chain_cli_resolve(chain_cli *c, const gw_opt *opts, const char *cmd, gw_err 
     r->t_max = c->t_max;
     r->dt_out = c->dt_out;
     r->energy_tol = c->energy_tol;
-    char what[64];
-    snprintf(what, sizeof what, "%s", cmd);
     int rc = gw_chain_params_validate(p, err);
+    if (rc == GW_OK && gw_cli_find(opts, "restitution")->seen) {
+        if (c->restitution >= 1)
+            return gw_err_set(err, GW_EINVAL, "%s --restitution: %g must be below 1", cmd, c->restitution);
+        if (p->damping == GW_DAMP_NONE)
+            return gw_err_set(err, GW_EINVAL, "%s --restitution: needs --damping kk or hc", cmd);
+        gw_chain_params q = *p;
+        if (c->restitution_v > 0)
+            q.v_imp = c->restitution_v;
+        double cst = 0;
+        rc = gw_chain_calibrate(&q, r, c->restitution, &cst, err);
+        if (rc == GW_OK) {
+            if (p->damping == GW_DAMP_HUNT_CROSSLEY)
+                p->alpha = c->alpha = cst;
+            else
+                p->gamma = c->gamma = cst;
+        }
+    }
     if (rc != GW_OK) {
         char tmp[sizeof err->msg];
         snprintf(tmp, sizeof tmp, "%s", err->msg);
-        return gw_err_set(err, rc, "%s: %s", what, tmp);
+        return gw_err_set(err, rc, "%s: %s", cmd, tmp);
     }
     return GW_OK;
 }
@@ -143,6 +160,8 @@ cJSON *chain_cli_settings_json(const chain_cli *c)
     cJSON_AddStringToObject(m, "damping", c->damping);
     cJSON_AddNumberToObject(m, "gamma", p->gamma);
     cJSON_AddNumberToObject(m, "alpha", p->alpha);
+    cJSON_AddNumberToObject(m, "restitution_target", c->restitution > 0 ? c->restitution : NAN);
+    cJSON_AddNumberToObject(m, "restitution_v", c->restitution_v > 0 ? c->restitution_v : p->v_imp);
     cJSON *s = cJSON_AddObjectToObject(o, "solver");
     cJSON_AddStringToObject(s, "name", c->solver);
     cJSON_AddStringToObject(s, "method", c->method);

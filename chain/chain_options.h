@@ -11,7 +11,7 @@
 typedef struct chain_cli {
     /* raw option values */
     double k, kwall, mass, radius, gravity, gamma, alpha;
-    double rtol, atol, dt, dt_max, t_max, dt_out, energy_tol;
+    double rtol, atol, dt, dt_max, t_max, dt_out, energy_tol, restitution, restitution_v;
     long max_steps;
     int json;
     const char *out;
@@ -22,7 +22,7 @@ typedef struct chain_cli {
 } chain_cli;
 
 /* Number of options chain_cli_options writes. */
-#define CHAIN_CLI_NOPTS 22
+#define CHAIN_CLI_NOPTS 24
 
 /* Fill defaults and write the shared option table into opts[0..CHAIN_CLI_NOPTS). */
 void chain_cli_options(chain_cli *c, gw_opt *opts);

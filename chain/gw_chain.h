@@ -186,6 +186,15 @@ void gw_chain_trace_free(gw_chain_trace *tr);
 int gw_chain_trace_write(const gw_chain_trace *tr, const char *dir, const char *stem,
                          const char *header, gw_err *err);
 
+/* ---- damping calibration (chain_restitution.c) ---- */
+
+/* Damping constant (alpha for Hunt-Crossley, gamma for Kuwabara-Kono, chosen by
+ * p->damping) such that one bead hitting the wall at p->v_imp rebounds with
+ * restitution e_target in (0, 1). Runs collisions with o (sample ignored).
+ * GW_EINVAL for a bad target or no damping model; GW_ESOLVER if not bracketed. */
+int gw_chain_calibrate(const gw_chain_params *p, const gw_chain_run_opts *o,
+                       double e_target, double *constant, gw_err *err);
+
 /* ---- sweeps over N and v_imp (threaded) ---- */
 
 /* Run one collision for every (v[iv], N) with n_lo <= N <= n_hi, using the

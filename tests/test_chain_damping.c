@@ -1,0 +1,140 @@
+/*
+ * test_chain_damping.c: viscoelastic damping (physics.md 1.5).
+ *  - Calibration: the Hunt-Crossley alpha and Kuwabara-Kono gamma found for a
+ *    target restitution e give a single bead on the wall that restitution to
+ *    1e-3 (the issue asks 1 %; Brent converges to ~1e-10).
+ *  - Viscoelastic restitution falls with the impact velocity (same constant,
+ *    v = 0.1, 0.3, 1 m/s): a velocity-independent damping would not.
+ *  - Kuwabara-Kono e = 0.9: eps_eff (F.7) decreases with N (the experiment's
+ *    trend, Fig. 11 of the paper) over N = 1, 2, 5, 10, 20, 40.
+ *  - The damped wall force is never negative (30-bead column). The plateau
+ *    decay is printed for the record: this damping does not reproduce it.
+ */
+#include "chain_test_util.h"
+#include "gw_test.h"
+
+static double bead_e(gw_chain_params p, double v)
+{
+    p.n = 1;
+    p.v_imp = v;
+    gw_chain_run_opts o = test_opts("cvode", "bdf");
+    gw_chain_result r;
+    double e = test_collide(&p, &o, &r) == GW_OK ? -r.final_v[0] / v : NAN;
+    gw_chain_result_free(&r);
+    return e;
+}
+
+typedef struct peaks {
+    double fmin, f_prev2, f_prev1, first, second, last;
+    int count;
+} peaks;
+
+static int track(void *ctx, double t, const double *y, double f, int is_event)
+{
+    (void)t;
+    (void)y;
+    (void)is_event;
+    peaks *pk = ctx;
+    if (f < pk->fmin)
+        pk->fmin = f;
+    if (pk->f_prev1 > pk->f_prev2 && pk->f_prev1 >= f && pk->f_prev1 > 0) {
+        pk->count++;
+        if (pk->count == 1)
+            pk->first = pk->f_prev1;
+        if (pk->count == 2)
+            pk->second = pk->f_prev1;
+        pk->last = pk->f_prev1;
+    }
+    pk->f_prev2 = pk->f_prev1;
+    pk->f_prev1 = f;
+    return 0;
+}
+
+int main(void)
+{
+    char what[800];
+    const double targets[] = {0.9, 0.7};
+    for (int model = 1; model <= 2; model++)
+        for (int i = 0; i < 2; i++) {
+            gw_chain_params p = test_params(1, 0.3);
+            p.damping = model;
+            gw_chain_run_opts o = test_opts("cvode", "bdf");
+            double cst = NAN;
+            gw_err err = {{0}};
+            int rc = gw_chain_calibrate(&p, &o, targets[i], &cst, &err);
+            snprintf(what, sizeof what, "%s calibration to e = %.1f succeeded (%s)",
+                     model == 1 ? "Kuwabara-Kono" : "Hunt-Crossley", targets[i], rc ? err.msg : "ok");
+            gw_test_true(rc == GW_OK, what);
+            if (model == 1)
+                p.gamma = cst;
+            else
+                p.alpha = cst;
+            snprintf(what, sizeof what, "%s constant %.6g: bead restitution at 0.3 m/s",
+                     model == 1 ? "Kuwabara-Kono" : "Hunt-Crossley", cst);
+            gw_test_rel(bead_e(p, 0.3), targets[i], 1e-3, what);
+            double e1 = bead_e(p, 0.1), e3 = bead_e(p, 0.3), e10 = bead_e(p, 1.0);
+            snprintf(what, sizeof what, "%s: restitution falls with velocity (%.4f, %.4f, %.4f at 0.1, 0.3, 1 m/s)",
+                     model == 1 ? "Kuwabara-Kono" : "Hunt-Crossley", e1, e3, e10);
+            gw_test_true(e1 > e3 && e3 > e10, what);
+        }
+
+    gw_chain_params p = test_params(1, 0.3);
+    p.damping = GW_DAMP_KUWABARA_KONO;
+    gw_chain_run_opts o = test_opts("cvode", "bdf");
+    gw_err err = {{0}};
+    if (gw_chain_calibrate(&p, &o, 0.9, &p.gamma, &err) != GW_OK) {
+        printf("FAIL: calibration: %s\n", err.msg);
+        return 1;
+    }
+    const int ns[] = {1, 2, 5, 10, 20, 40};
+    double prev = 2.0;
+    int mono = 1;
+    char list[256] = "";
+    for (size_t k = 0; k < sizeof ns / sizeof ns[0]; k++) {
+        p.n = ns[k];
+        gw_chain_result r;
+        if (test_collide(&p, &o, &r) != GW_OK)
+            return 1;
+        mono &= r.eps_eff < prev;
+        prev = r.eps_eff;
+        size_t len = strlen(list);
+        snprintf(list + len, sizeof list - len, " %d:%.4f", ns[k], r.eps_eff);
+        gw_chain_result_free(&r);
+    }
+    snprintf(what, sizeof what, "Kuwabara-Kono e = 0.9: eps_eff decreases with N (%s)", list);
+    gw_test_true(mono, what);
+
+    /* Plateau: ratio of the last to the second wall-force maximum, damped vs
+     * the same column without damping. */
+    double ratio[2];
+    double fmin = 1e300;
+    int count[2];
+    for (int damped = 0; damped < 2; damped++) {
+        gw_chain_params q = p;
+        q.n = 30;
+        if (!damped)
+            q.damping = GW_DAMP_NONE;
+        peaks pk = {1e300, 0, 0, 0, 0, 0, 0};
+        gw_chain_run_opts oo = o;
+        oo.sample = track;
+        oo.sample_ctx = &pk;
+        gw_chain_result r;
+        if (test_collide(&q, &oo, &r) != GW_OK)
+            return 1;
+        gw_chain_result_free(&r);
+        ratio[damped] = pk.last / pk.second;
+        count[damped] = pk.count;
+        if (damped)
+            fmin = pk.fmin;
+    }
+    gw_test_true(fmin >= 0, "damped wall force never negative");
+    snprintf(what, sizeof what,
+             "N = 30: plateau decays with damping (last/second maximum %.4f, %d maxima) more than without (%.4f, %d maxima)",
+             ratio[1], count[1], ratio[0], count[0]);
+    /* Measured, not asserted: with Kuwabara-Kono e = 0.9 the model's plateau is
+     * not more decaying than without damping (maxima 54.3 -> 50.5 N against
+     * 57.9 -> 51.1 N); the experiment's decaying plateau is not reproduced by
+     * this damping (reported in README). */
+    printf("INFO: %s\n", what);
+    return gw_test_summary("test_chain_damping");
+}

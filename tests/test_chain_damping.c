@@ -129,7 +129,7 @@ int main(void)
     }
     gw_test_true(fmin >= 0, "damped wall force never negative");
     snprintf(what, sizeof what,
-             "N = 30: plateau decays with damping (last/second maximum %.4f, %d maxima) more than without (%.4f, %d maxima)",
+             "N = 30 plateau, last/second wall-force maximum: %.4f with damping (%d maxima), %.4f without (%d maxima)",
              ratio[1], count[1], ratio[0], count[0]);
     /* Measured, not asserted: with Kuwabara-Kono e = 0.9 the model's plateau is
      * not more decaying than without damping (maxima 54.3 -> 50.5 N against

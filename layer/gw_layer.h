@@ -1,0 +1,278 @@
+/*
+ * gw_layer.h: the 2D granular layer of Bourrier et al. (2008) (physics.md
+ * section 2): Hertz-Mindlin discs with Coulomb friction in a box with rigid walls,
+ * integrated as one ODE system through the granwave solver layer; pluviated
+ * samples; block impacts with an energy ledger and a crowns (shock-wave) analysis.
+ *
+ * Units: SI everywhere (m, s, kg, N, J, rad; angles given in degrees where the
+ * name says _deg). The box spans 0 <= x <= width, gravity acts along -y, the
+ * bottom wall is y = 0.
+ *
+ * State vector of a gw_layer (dimension 6 n + n_c + 2, rebuilt with the contact
+ * list): per particle i: x, y, theta, vx, vy, omega (6 i .. 6 i + 5); per listed
+ * contact c: its tangential elastic force F_t (6 n + c); then the dissipated
+ * energy E_d and the Mindlin stiffness-variation work W_K (see layer_model.c).
+ *
+ * Errors: every fallible call returns GW_OK or a negative gw status and fills a
+ * gw_err naming the offending input. A failed call leaves no half-built object
+ * (*out is NULL) and no half-written file.
+ */
+#ifndef GW_LAYER_H
+#define GW_LAYER_H
+
+#include "gw_common.h"
+#include "gw_solver.h"
+
+/* ---------------------------------------------------------------- model ---- */
+
+enum { GW_LAYER_MASS_DISC = 0, GW_LAYER_MASS_SPHERE = 1 };
+
+/* Wall bits for gw_layer_params.walls. */
+enum { GW_LAYER_WALL_LEFT = 1, GW_LAYER_WALL_RIGHT = 2, GW_LAYER_WALL_BOTTOM = 4,
+       GW_LAYER_WALLS_ALL = 7 };
+
+typedef struct gw_layer_params {
+    double shear_modulus; /* G, Pa [40e9] */
+    double poisson;       /* nu, in [0, 0.5) [0.25] */
+    double friction_deg;  /* phi, deg in [0, 90) [30] */
+    double density;       /* kg/m^3 [2650] */
+    double gravity;       /* m/s^2 along -y [9.81] */
+    double width;         /* box width 2L, m (walls at x = 0 and x = width) [16.25] */
+    int walls;            /* GW_LAYER_WALL_* mask [all] */
+    int mass_law;         /* GW_LAYER_MASS_DISC (unit thickness, m = rho pi R^2,
+                             I = m R^2 / 2) or _SPHERE (m = 4/3 rho pi R^3,
+                             I = 2/5 m R^2) [disc] */
+    double damping;       /* Hunt-Crossley normal damping alpha, s/m [0 = none, as
+                             the paper]; used to settle pluviated samples */
+    double skin;          /* Verlet skin of the contact list, m [0.1] */
+    int potential_from_start; /* 1: gravitational energy measured from the initial
+                                 positions (A = initial kinetic + strain energy);
+                                 0: from y = 0 [0] */
+} gw_layer_params;
+
+gw_layer_params gw_layer_params_default(void);
+
+/* Check a parameter set; GW_EINVAL with a message naming the parameter. */
+int gw_layer_params_validate(const gw_layer_params *p, gw_err *err);
+
+/* Hertz normal coefficient K_n (B.3) and Mindlin factor k_t with
+ * K_t = k_t F_n^(1/3) (B.4) for the mean radius R_p (m). */
+double gw_layer_kn(const gw_layer_params *p, double rp);
+double gw_layer_kt_factor(const gw_layer_params *p, double rp);
+/* Mass (kg) and moment of inertia (kg m^2) of a particle of radius r. */
+double gw_layer_mass(const gw_layer_params *p, double r);
+double gw_layer_inertia(const gw_layer_params *p, double r);
+/* "disc (unit thickness)" or "sphere". */
+const char *gw_layer_mass_law_name(int mass_law);
+
+/* One particle's initial state. fixed = 1 freezes it (infinite mass, no motion). */
+typedef struct gw_layer_body {
+    double x, y, r;    /* m */
+    double vx, vy, w;  /* m/s, rad/s */
+    int fixed;
+} gw_layer_body;
+
+typedef struct gw_layer gw_layer;
+
+/* Build a layer of n bodies (copied). Validates the parameters, the radii
+ * (positive, finite) and the positions (finite, inside the walls). */
+int gw_layer_create(const gw_layer_params *p, int n, const gw_layer_body *bodies,
+                    gw_layer **out, gw_err *err);
+void gw_layer_free(gw_layer *L);
+
+/* Build the contact list, the state and a solver of the given backend at t = 0.
+ * Must be called once before gw_layer_advance. The solver is re-created by
+ * every contact-list rebuild. */
+int gw_layer_start(gw_layer *L, const gw_solver_type *type, const gw_solver_params *sp,
+                   gw_err *err);
+
+/* Integrate to tout. Stops at contact openings/closings (roots of the overlaps)
+ * and restarts the solver there; when a particle has moved more than half the
+ * skin since the last list, rebuilds the contact list, resizes the state and
+ * re-creates the solver. GW_ESOLVER/GW_ELIMIT with the solver's message in err;
+ * the layer then holds the last good state. */
+int gw_layer_advance(gw_layer *L, double tout, gw_err *err);
+
+typedef struct gw_layer_stats {
+    long steps, rhs_evals, events, rebuilds, contacts_listed, projections;
+} gw_layer_stats;
+void gw_layer_get_stats(const gw_layer *L, gw_layer_stats *st);
+
+int gw_layer_n(const gw_layer *L);
+double gw_layer_time(const gw_layer *L);
+/* Current state of particle i: x, y, theta, vx, vy, omega. */
+void gw_layer_particle(const gw_layer *L, int i, double s[6]);
+double gw_layer_radius(const gw_layer *L, int i);
+double gw_layer_particle_mass(const gw_layer *L, int i);
+const gw_layer_params *gw_layer_get_params(const gw_layer *L);
+/* Mark particle i as the block: its kinetic energy is booked as E_k,b. */
+void gw_layer_set_block(gw_layer *L, int i);
+
+/* Energy ledger (B.7-B.14), J. */
+typedef struct gw_layer_energy {
+    double kinetic_block;   /* (1/2) M V^2 + (1/2) I w^2 of the block */
+    double kinetic_soil;    /* same summed over the other particles */
+    double strain_normal;   /* sum (2/5) K_n u_n^(5/2) */
+    double strain_tangent;  /* sum F_t^2 / (2 K_t) */
+    double mindlin_excess;  /* W_K: tangential strain work not in F_t^2/(2K_t) */
+    double dissipated;      /* E_d: friction sliding (+ normal damping if on) */
+    double potential;       /* sum m g (y - y_ref) */
+    double total;           /* sum of all of the above */
+} gw_layer_energy;
+
+void gw_layer_energy_of(const gw_layer *L, gw_layer_energy *e);
+/* Initial total A (set by gw_layer_start). */
+double gw_layer_energy_initial(const gw_layer *L);
+
+/* Per-ring energies around (cx, cy): ring k holds distances [k w, (k+1) w).
+ * Kinetic energy by particle centre (block excluded), strain energy (normal +
+ * tangential state function) by contact point, coordination = contacts with
+ * u_n > 0 counted per particle / particles. Arrays of nring entries. */
+void gw_layer_rings(const gw_layer *L, double cx, double cy, double w, int nring,
+                    double *kinetic, double *strain, double *coord);
+
+/* Write a VTK legacy POLYDATA snapshot: points with radius, velocity, omega;
+ * contacts with u_n > 0 as lines carrying F_n and F_t. */
+int gw_layer_write_vtk(const gw_layer *L, const char *path, const char *title,
+                       gw_err *err);
+
+/* -------------------------------------------------------------- samples ---- */
+
+/* A pluviated sample: positions and radii of settled soil particles. */
+typedef struct gw_layer_sample {
+    int n;
+    double width;        /* box width, m */
+    double rm;           /* mean radius R_m, m */
+    double volume_ratio; /* largest / smallest particle volume */
+    double porosity;     /* as measured by layer-make */
+    long seed;
+    int mass_law;
+    double *x, *y, *r;   /* [n], m; owned by the sample */
+} gw_layer_sample;
+
+void gw_layer_sample_free(gw_layer_sample *s);
+
+/* Text sample format (version 1), one record per line, '#' starts a comment:
+ *   granwave-layer-sample 1
+ *   width W          (m)
+ *   rm R             (m)
+ *   volume_ratio V
+ *   porosity P
+ *   seed S
+ *   mass_law disc|sphere
+ *   n N
+ * then N lines "x y r" (m). Read checks every field (finite, r > 0, inside the
+ * box, n lines); GW_EFORMAT/GW_EIO naming the file and line otherwise. */
+int gw_layer_sample_write(const gw_layer_sample *s, const char *path, const char *header,
+                          gw_err *err);
+int gw_layer_sample_read(const char *path, gw_layer_sample *s, gw_err *err);
+
+/* Pluviation (physics.md 2.2). */
+typedef struct gw_layer_make_params {
+    int n;                 /* particles [300] */
+    double rm;             /* mean radius R_m, m [0.325] */
+    double volume_ratio;   /* largest/smallest volume [10] */
+    double width_rm;       /* box width in R_m [50] */
+    long seed;             /* PRNG seed [1] */
+    double ke_threshold;   /* stop when E_k < ke_threshold * m_total g R_m [1e-4] */
+    double t_max;          /* give up after t_max s of simulated time [6] */
+    double damping;        /* Hunt-Crossley alpha while settling, s/m [0.3] */
+    double modulus_factor; /* settle with G * factor, then relax with true G [1] */
+    double dt;             /* RK4 step, s [2e-5] */
+} gw_layer_make_params;
+
+gw_layer_make_params gw_layer_make_params_default(void);
+
+typedef struct gw_layer_make_result {
+    double porosity;
+    double t_settle;      /* simulated time, s */
+    double ke_final;      /* J */
+    double max_overlap;   /* largest u_n / R_p at the end */
+    int converged;        /* kinetic energy went below the threshold */
+    double wall_ms;
+    long steps, rebuilds;
+} gw_layer_make_result;
+
+/* Pluviate a sample (lp: material, friction; width and mass law are taken from
+ * mp / lp). Deterministic for a seed: a splitmix64 generator draws the radii
+ * (uniform in radius between R_min and R_max = V^(1/3) R_min, mean R_m) and the
+ * jitter of the initial grid. */
+int gw_layer_make(const gw_layer_params *lp, const gw_layer_make_params *mp,
+                  gw_layer_sample *out, gw_layer_make_result *res, gw_err *err);
+
+/* Porosity of the sample in the window x in [0.1, 0.9] W, y in [0.1, 0.8] h,
+ * with h = max(y + r), by sampling on a 600 x 600 grid. */
+double gw_layer_sample_porosity(const gw_layer_sample *s);
+
+/* --------------------------------------------------------------- impact ---- */
+
+typedef struct gw_layer_impact_params {
+    double rb_rm;       /* block radius in R_m [1] */
+    double vi;          /* incident speed, m/s [20] */
+    double alpha_deg;   /* incidence from the normal, deg in [0, 90) [0] */
+    double x;           /* impact abscissa from the box centre, m [0] */
+    double height_rm;   /* layer height kept mobile, in R_m [0 = all] */
+    double gap;         /* initial gap between block and target particle, m [1e-6] */
+    double t_max;       /* s [0.05] */
+    double dt_out;      /* sampling interval, s [2e-5] */
+    double ring_width;  /* crown width d_c, m [2 R_m] */
+    int nrings;         /* crowns [12] */
+} gw_layer_impact_params;
+
+gw_layer_impact_params gw_layer_impact_params_default(void);
+
+/* Time series recorded every dt_out (allocated by the run, freed with
+ * gw_layer_impact_result_free). */
+typedef struct gw_layer_impact_result {
+    int bounced;
+    double v_ni, v_nr, v_r, e_n, e, alpha_r_deg;
+    double t_rebound;       /* T_i: time of the largest upward velocity, s */
+    double penetration;     /* largest downward block displacement, m */
+    double energy_error;    /* max |sum - A| / A over the run */
+    double e_incident;      /* (1/2) M V_i^2, J */
+    double dissipated_first_contact; /* E_d / E_incident at the end of the first contact */
+    double t_first_contact; /* time the first block contact opened (or t_end), s */
+    double wave_speed, wave_speed_err;      /* from strain-energy peaks, m/s */
+    double wave_speed_kin, wave_speed_kin_err; /* from kinetic-energy peaks */
+    int wave_rings;         /* rings in the strain fit */
+    double t_end;
+    double impact_x, impact_y; /* ring centre, m */
+    double block_mass, wall_ms;
+    int n_mobile, n_frozen;
+    gw_layer_stats stats;
+    /* series */
+    int ns, cap;
+    double *t;              /* [ns] */
+    gw_layer_energy *ledger;/* [ns] */
+    double *block;          /* [ns * 4]: x, y, vx, vy */
+    int nrings;
+    double *ring_kin, *ring_strain, *ring_coord; /* [ns * nrings] */
+    double *peak_strain_t, *peak_kin_t;          /* [nrings] (NaN when none) */
+    double *ring_r;                              /* [nrings] mid radius, m */
+} gw_layer_impact_result;
+
+void gw_layer_impact_result_free(gw_layer_impact_result *r);
+
+/* One block impact on a sample (physics.md 2.3). vtk_dir (may be NULL) receives
+ * snapshot_0.vtk and snapshot_end.vtk. GW_EINVAL names the input (block
+ * overlapping the layer, block outside the box, bad parameters). */
+int gw_layer_impact(const gw_layer_sample *s, const gw_layer_params *lp,
+                    const gw_layer_impact_params *ip, const gw_solver_type *type,
+                    const gw_solver_params *sp, const char *vtk_dir,
+                    gw_layer_impact_result *res, gw_err *err);
+
+/* Crown analysis on res's ring series: peak times per ring and the wave speed
+ * by a linear fit (GSL) of ring radius against peak time. Fills the peak and
+ * wave-speed fields of res. */
+int gw_layer_crowns(gw_layer_impact_result *res);
+
+/* ------------------------------------------------------------- commands ---- */
+
+int gw_cmd_layer_make(int argc, char **argv);
+int gw_cmd_layer_impact(int argc, char **argv);
+
+#define GW_LAYER_COMMANDS                                                           \
+    {"layer-make", gw_cmd_layer_make, "pluviate a 2D granular sample (Bourrier 2008)"}, \
+    {"layer-impact", gw_cmd_layer_impact, "one block impact on a 2D granular layer"},
+
+#endif

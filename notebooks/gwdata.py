@@ -1,0 +1,164 @@
+"""gwdata: load granwave's reference tables and run the granwave program.
+
+Small helpers shared by the notebooks and plot scripts. No physics lives here: the
+numbers come either from the paper (data/falcon1998/*.csv) or from the program.
+
+    load_table(name)       a table of data/falcon1998 (e.g. "wave_speed_table1")
+    load_csv(path)         any granwave CSV ('#' comment lines, one header row)
+    paper_value(q, h_mm)   one row of rigid_wall.csv, selected by quantity and height
+    find_granwave()        path of the program: $GRANWAVE, ../build/granwave, build/granwave
+    run_granwave(args)     run it; parsed JSON (json=True) or stdout text
+
+Columns whose non-empty cells all parse as numbers become float numpy arrays (empty cells
+and "nan" -> NaN); other columns are lists of str. Dicts keep the file's column order.
+Use Debian's /usr/bin/python3 (numpy).
+"""
+
+import csv
+import json as _json
+import os
+import subprocess
+
+import numpy as np
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+DATA_DIR = os.path.normpath(os.path.join(HERE, "..", "data", "falcon1998"))
+
+__all__ = ["DATA_DIR", "GranwaveError", "load_csv", "load_table", "paper_value",
+           "find_granwave", "run_granwave"]
+
+
+class GranwaveError(RuntimeError):
+    """The granwave program could not be found, failed, or printed invalid JSON."""
+
+
+def _column(cells):
+    """Float array if every non-empty cell is a number, else the list of strings."""
+    values = []
+    for c in cells:
+        c = c.strip()
+        if c == "":
+            values.append(np.nan)
+            continue
+        try:
+            values.append(float(c))
+        except ValueError:
+            return [x.strip() for x in cells]
+    return np.array(values, dtype=float)
+
+
+def load_csv(path, comments=False):
+    """Read a CSV with leading/interleaved '#' comment lines and one header row.
+
+    Returns {column: numpy array or list of str}; with comments=True returns
+    (table, list of comment lines without the leading '#').
+    Raises FileNotFoundError if path is missing, ValueError if it has no header or a row
+    has the wrong number of cells (the message names the file and line).
+    """
+    notes, header, rows = [], None, []
+    with open(path, newline="") as f:
+        for lineno, row in enumerate(csv.reader(f), start=1):
+            if not row or (len(row) == 1 and row[0].strip() == ""):
+                continue
+            if row[0].lstrip().startswith("#"):
+                notes.append(",".join(row).lstrip()[1:].strip())
+                continue
+            if header is None:
+                header = [h.strip() for h in row]
+                continue
+            if len(row) != len(header):
+                raise ValueError(f"{path}:{lineno}: {len(row)} cells, header has {len(header)}")
+            rows.append(row)
+    if header is None:
+        raise ValueError(f"{path}: no header row")
+    cols = list(zip(*rows)) if rows else [()] * len(header)
+    table = {name: _column(list(c)) for name, c in zip(header, cols)}
+    return (table, notes) if comments else table
+
+
+def load_table(name):
+    """A table of data/falcon1998: name with or without '.csv' (or a path to a CSV).
+
+    Example: load_table("soft_walls_table2")["n_d"] -> array([1, 2, 4, ...]).
+    """
+    path = name
+    if not os.path.isfile(path):
+        base = name if name.endswith(".csv") else name + ".csv"
+        path = os.path.join(DATA_DIR, base)
+    if not os.path.isfile(path):
+        have = sorted(f[:-4] for f in os.listdir(DATA_DIR) if f.endswith(".csv")) \
+            if os.path.isdir(DATA_DIR) else []
+        raise FileNotFoundError(f"no table '{name}' in {DATA_DIR} (have: {', '.join(have)})")
+    return load_csv(path)
+
+
+def paper_value(quantity, h_mm, unit=None):
+    """(value, uncertainty or NaN, unit) of rigid_wall.csv for quantity at drop height h_mm.
+
+    The row is the one whose condition starts with 'h = <h_mm> mm'; with several rows
+    (collision_time), pass unit or get the first. Returns None if there is no such row.
+    """
+    t = load_table("rigid_wall")
+    for q, v, u, un, cond in zip(t["quantity"], t["value"], t["uncertainty"],
+                                 t["unit"], t["condition"]):
+        if q != quantity or (unit is not None and un != unit):
+            continue
+        head = cond.split(";")[0].replace(" ", "")
+        if head.startswith("h=") and head.endswith("mm"):
+            try:
+                h = float(head[2:-2])
+            except ValueError:
+                continue
+            if abs(h - float(h_mm)) < 1e-9:
+                return float(v), float(u), un
+    return None
+
+
+def find_granwave():
+    """Path of the granwave program.
+
+    Order: $GRANWAVE; ../build/granwave relative to this file's directory; build/granwave
+    relative to the current directory. Raises GranwaveError naming what was tried.
+    """
+    tried = []
+    env = os.environ.get("GRANWAVE")
+    if env:
+        if os.path.isfile(env) and os.access(env, os.X_OK):
+            return os.path.abspath(env)
+        raise GranwaveError(f"GRANWAVE={env} is not an executable file")
+    for cand in (os.path.join(HERE, "..", "build", "granwave"),
+                 os.path.join(os.getcwd(), "build", "granwave")):
+        cand = os.path.normpath(cand)
+        tried.append(cand)
+        if os.path.isfile(cand) and os.access(cand, os.X_OK):
+            return cand
+    raise GranwaveError("granwave program not found: set GRANWAVE=/path/to/granwave or build "
+                        "it (cmake --build build); tried " + ", ".join(tried))
+
+
+def run_granwave(args, json=True, timeout=600, program=None):
+    """Run granwave with the argument list args (e.g. ["chain", "--n", "7"]).
+
+    json=True appends --json (unless present) and returns the parsed object; json=False
+    returns stdout as text. Raises GranwaveError with the command line, exit code and
+    stderr if the program exits non-zero, times out (timeout in s), or prints invalid JSON.
+    """
+    exe = program or find_granwave()
+    args = [str(a) for a in args]
+    if json and "--json" not in args:
+        args.append("--json")
+    cmd = [exe] + args
+    try:
+        p = subprocess.run(cmd, capture_output=True, text=True, timeout=timeout)
+    except subprocess.TimeoutExpired as e:
+        raise GranwaveError(f"{' '.join(cmd)}: no answer after {timeout} s") from e
+    if p.returncode != 0:
+        raise GranwaveError(f"{' '.join(cmd)} exited with code {p.returncode}:\n"
+                            f"{p.stderr.strip() or '(no stderr)'}")
+    if not json:
+        return p.stdout
+    try:
+        return _json.loads(p.stdout)
+    except ValueError as e:
+        raise GranwaveError(f"{' '.join(cmd)}: stdout is not JSON ({e}); "
+                            f"first 200 chars: {p.stdout[:200]!r}") from e

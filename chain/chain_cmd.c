@@ -84,15 +84,10 @@ int gw_cmd_chain(int argc, char **argv)
                                          .metavar = "V", .help = "impact velocity, m/s [0.3]",
                                          .lo = 0, .hi = 1e3, .open_lo = 1};
     opts[CHAIN_CLI_NOPTS + 2] = (gw_opt){0};
+    int done = chain_cli_parse("chain", "granwave chain [options]", chain_summary, opts, argc, argv);
+    if (done >= 0)
+        return done;
     gw_err err = {{0}};
-    int help = 0, npos = 0;
-    const char *pos[1];
-    if (gw_cli_parse("chain", opts, argc, argv, &help, pos, 0, &npos, &err) != GW_OK)
-        return chain_cli_fail(err.msg);
-    if (help) {
-        gw_cli_help(stdout, "chain", "granwave chain [options]", chain_summary, opts);
-        return 0;
-    }
     c.params.n = (int)n;
     c.params.v_imp = vimp;
     if (chain_cli_resolve(&c, opts, "chain", &err) != GW_OK)

@@ -218,19 +218,12 @@ int gw_cmd_falcon(int argc, char **argv)
                          .help = "drop heights, mm, v = sqrt(2 g h) ['none' to skip] [1.9,2.9,3.1,5.1]"};
     opts[k++] = (gw_opt){.name = "n", .kind = GW_OPT_STRING, .dest = &nrange, .metavar = "A:B",
                          .help = "column sizes [1:40]"};
-    opts[k++] = (gw_opt){.name = "jobs", .kind = GW_OPT_LONG, .dest = &jobs, .metavar = "J",
-                         .help = "threads [0 = one per CPU]", .lo = 0, .hi = 1024};
-    opts[k++] = (gw_opt){.name = "quiet", .kind = GW_OPT_FLAG, .dest = &quiet, .help = "no progress lines"};
+    chain_cli_sweep_opts(opts, &k, &jobs, &quiet);
     opts[k] = (gw_opt){0};
+    int done = chain_cli_parse("falcon", "granwave falcon [--out DIR] [options]", falcon_summary, opts, argc, argv);
+    if (done >= 0)
+        return done;
     gw_err err = {{0}};
-    int help = 0, npos = 0;
-    const char *pos[1];
-    if (gw_cli_parse("falcon", opts, argc, argv, &help, pos, 0, &npos, &err) != GW_OK)
-        return chain_cli_fail(err.msg);
-    if (help) {
-        gw_cli_help(stdout, "falcon", "granwave falcon [--out DIR] [options]", falcon_summary, opts);
-        return 0;
-    }
     long a, b;
     double *vv = NULL, *hh = NULL;
     int nvv = 0, nhh = 0;

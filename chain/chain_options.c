@@ -200,3 +200,26 @@ int chain_cli_fail(const char *msg)
     fprintf(stderr, "granwave %s\n", msg);
     return 2;
 }
+
+int chain_cli_parse(const char *cmd, const char *usage, const char *summary, gw_opt *opts,
+                    int argc, char **argv)
+{
+    gw_err err = {{0}};
+    int help = 0, npos = 0;
+    const char *pos[1];
+    if (gw_cli_parse(cmd, opts, argc, argv, &help, pos, 0, &npos, &err) != GW_OK)
+        return chain_cli_fail(err.msg);
+    if (help) {
+        gw_cli_help(stdout, cmd, usage, summary, opts);
+        return 0;
+    }
+    return -1;
+}
+
+void chain_cli_sweep_opts(gw_opt *opts, int *k, long *jobs, int *quiet)
+{
+    opts[(*k)++] = (gw_opt){.name = "jobs", .kind = GW_OPT_LONG, .dest = jobs, .metavar = "J",
+                            .help = "threads [0 = one per CPU]", .lo = 0, .hi = 1024};
+    opts[(*k)++] = (gw_opt){.name = "quiet", .kind = GW_OPT_FLAG, .dest = quiet,
+                            .help = "no progress lines"};
+}

@@ -37,6 +37,15 @@ cJSON *chain_cli_settings_json(const chain_cli *c);
 /* Multi-line text (version, command line, settings) for file headers; caller frees. */
 char *chain_cli_header(const chain_cli *c, int argc, char **argv);
 
+/* Parse argv against opts (NULL-terminated). Returns -1 to go on, or the exit
+ * code when the command is done: 0 after printing --help, 2 after one error
+ * line. */
+int chain_cli_parse(const char *cmd, const char *usage, const char *summary, gw_opt *opts,
+                    int argc, char **argv);
+
+/* Append the sweep options --jobs and --quiet at opts[*k] (advances *k). */
+void chain_cli_sweep_opts(gw_opt *opts, int *k, long *jobs, int *quiet);
+
 /* Print "granwave CMD: message" and return exit code 2. */
 int chain_cli_fail(const char *msg);
 

@@ -96,18 +96,12 @@ int gw_cmd_softwall(int argc, char **argv)
     opts[k++] = (gw_opt){.name = "tol", .kind = GW_OPT_DOUBLE, .dest = &tol, .metavar = "F",
                          .help = "plateau tolerance for N_d (fraction) [0.01]", .lo = 0, .hi = 0.5, .open_lo = 1};
     opts[k++] = (gw_opt){.name = "sheets", .kind = GW_OPT_FLAG, .dest = &use_sheets, .help = "the paper's sheets (Table 2) with fitted K_eff"};
-    opts[k++] = (gw_opt){.name = "jobs", .kind = GW_OPT_LONG, .dest = &jobs, .metavar = "J", .help = "threads [0 = one per CPU]", .lo = 0, .hi = 1024};
-    opts[k++] = (gw_opt){.name = "quiet", .kind = GW_OPT_FLAG, .dest = &quiet, .help = "no progress lines"};
+    chain_cli_sweep_opts(opts, &k, &jobs, &quiet);
     opts[k] = (gw_opt){0};
+    int done = chain_cli_parse("softwall", "granwave softwall [--kwall K | --sheets] [options]", sw_summary, opts, argc, argv);
+    if (done >= 0)
+        return done;
     gw_err err = {{0}};
-    int help = 0, npos = 0;
-    const char *pos[1];
-    if (gw_cli_parse("softwall", opts, argc, argv, &help, pos, 0, &npos, &err) != GW_OK)
-        return chain_cli_fail(err.msg);
-    if (help) {
-        gw_cli_help(stdout, "softwall", "granwave softwall [--kwall K | --sheets] [options]", sw_summary, opts);
-        return 0;
-    }
     if (!gw_cli_find(opts, "kwall")->seen && !use_sheets)
         c.kwall = 1e9, ((gw_opt *)gw_cli_find(opts, "kwall"))->seen = 1;
     long a, b;

@@ -105,19 +105,12 @@ int gw_cmd_wavespeed(int argc, char **argv)
                          .help = "column sizes for the tau_N fit; B is the front column [5:40]"};
     opts[k++] = (gw_opt){.name = "threshold", .kind = GW_OPT_DOUBLE, .dest = &frac, .metavar = "F",
                          .help = "front threshold as a fraction of F_max(1) [0.1]", .lo = 0, .hi = 1, .open_lo = 1};
-    opts[k++] = (gw_opt){.name = "jobs", .kind = GW_OPT_LONG, .dest = &jobs, .metavar = "J",
-                         .help = "threads [0 = one per CPU]", .lo = 0, .hi = 1024};
-    opts[k++] = (gw_opt){.name = "quiet", .kind = GW_OPT_FLAG, .dest = &quiet, .help = "no progress lines"};
+    chain_cli_sweep_opts(opts, &k, &jobs, &quiet);
     opts[k] = (gw_opt){0};
+    int done = chain_cli_parse("wavespeed", "granwave wavespeed [options]", ws_summary, opts, argc, argv);
+    if (done >= 0)
+        return done;
     gw_err err = {{0}};
-    int help = 0, npos = 0;
-    const char *pos[1];
-    if (gw_cli_parse("wavespeed", opts, argc, argv, &help, pos, 0, &npos, &err) != GW_OK)
-        return chain_cli_fail(err.msg);
-    if (help) {
-        gw_cli_help(stdout, "wavespeed", "granwave wavespeed [options]", ws_summary, opts);
-        return 0;
-    }
     long a, b;
     double *v = NULL;
     int nv = 0;

@@ -3,7 +3,8 @@
 # what is missing), configures and builds, then runs the chosen job.
 #
 #   ./setup.sh main   install + build + run the main job (Falcon study, figures)
-#   ./setup.sh test   install + build (warnings are errors) + run every test
+#   ./setup.sh test   install + build (warnings are errors) + run every test, then
+#                     again in an AddressSanitizer + UBSan build
 #   ./setup.sh build  install + build only
 #
 # Environment: BUILD_DIR (default build), RESULTS (default results/falcon),
@@ -39,6 +40,7 @@ build() {
     cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=Release "$@"
     cmake --build "$BUILD_DIR" -j "$JOBS"
 }
+# (a later -DCMAKE_BUILD_TYPE in "$@" overrides the Release default)
 
 case "$mode" in
 main)
@@ -51,8 +53,12 @@ main)
 test)
     install_missing
     build -DGW_WERROR=ON
-    cd "$BUILD_DIR"
-    ctest --output-on-failure -j 2
+    (cd "$BUILD_DIR" && ctest --output-on-failure -j 2)
+    # the same tests again under AddressSanitizer + UBSan (leaks included)
+    echo "setup: sanitizer build ($BUILD_DIR-asan)"
+    BUILD_DIR="$BUILD_DIR-asan" build -DGW_WERROR=ON -DGW_SANITIZE=ON -DCMAKE_BUILD_TYPE=Debug
+    cd "$BUILD_DIR-asan"
+    UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1 ctest --output-on-failure -j 2
     ;;
 build)
     install_missing

@@ -90,14 +90,13 @@ int gw_cmd_chain(int argc, char **argv)
     gw_err err = {{0}};
     c.params.n = (int)n;
     c.params.v_imp = vimp;
-    if (chain_cli_resolve(&c, opts, "chain", &err) != GW_OK)
-        return chain_cli_fail(err.msg);
-    if (c.out && gw_mkdir_p(c.out, &err) != GW_OK)
-        return chain_cli_fail(err.msg);
-
     gw_chain *chain = NULL;
-    if (gw_chain_create(&c.params, &chain, &err) != GW_OK)
+    if (chain_cli_resolve(&c, opts, "chain", &err) != GW_OK ||
+        (c.out && gw_mkdir_p(c.out, &err) != GW_OK) ||
+        gw_chain_create(&c.params, &chain, &err) != GW_OK) {
+        chain_cli_free(&c);
         return chain_cli_fail(err.msg);
+    }
     gw_chain_trace tr;
     gw_chain_trace_init(&tr, c.params.n);
     if (c.out) {
@@ -139,5 +138,6 @@ int gw_cmd_chain(int argc, char **argv)
     gw_chain_result_free(&r);
     gw_chain_trace_free(&tr);
     gw_chain_free(chain);
+    chain_cli_free(&c);
     return code;
 }

@@ -223,6 +223,8 @@ int gw_cmd_falcon(int argc, char **argv)
     int done = chain_cli_parse("falcon", "granwave falcon [--out DIR] [options]", falcon_summary, opts, argc, argv);
     if (done >= 0)
         return done;
+    if (f.c.radii)
+        return chain_cli_fail("falcon --radii: per-bead radii need a fixed N (use granwave chain)");
     gw_err err = {{0}};
     long a, b;
     double *vv = NULL, *hh = NULL;

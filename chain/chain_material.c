@@ -7,6 +7,8 @@
  *   d_max = (5 m v^2 / (4K))^(2/5),  F_max = K d_max^(3/2)        (F.13, F.14)
  *   T_q = 2 (m/k)^(2/5) v^(-1/5)                                 (F.17, F.29)
  *   K_c = (c_tau/4)^(5/2) (5k/4)                                   (F.22)
+ *   sheets: K_eff = (5m/4) (c_tau / (2 tau_max1 v^(1/5)))^(5/2), from the
+ *   measured tau_max(N = 1) = tau_1/2 (F.21) at v = sqrt(2 g 2.9 mm)
  * Units: Pa, m, kg, m/s, s, N/m^1.5.
  */
 #include <math.h>
@@ -85,4 +87,37 @@ double gw_chain_tq_theory(double m, double k, double v)
 double gw_chain_kc(double k)
 {
     return pow(gw_chain_tau_constant() / 4.0, 2.5) * 1.25 * k;
+}
+
+/* Falcon et al. 1998, Table 2 (physics.md 1.7): sheets glued on the sensor,
+ * h = 2.9 mm. tau_max(N = 1) is the input of the K_eff fit; N_d is kept for
+ * comparison with the model. */
+static const gw_sheet sheets[] = {
+    {"none", 17, 1, 0},       {"brass", 47.5, 2, 0},  {"tape", 47.5, 4, 0},
+    {"pvc", 67.5, 6, 1},      {"pmma", 69, 8, 1},     {"cardboard2", 191, 11, 1},
+    {"beech", 127.5, 15, 1},  {"cardboard1", 227, 22, 2}, {"rubber", 221, 28, 4},
+};
+
+int gw_sheet_count(void)
+{
+    return (int)(sizeof sheets / sizeof sheets[0]);
+}
+
+const gw_sheet *gw_sheet_get(int i)
+{
+    return i >= 0 && i < gw_sheet_count() ? &sheets[i] : NULL;
+}
+
+const gw_sheet *gw_sheet_find(const char *name)
+{
+    for (int i = 0; name && i < gw_sheet_count(); i++)
+        if (strcmp(sheets[i].name, name) == 0)
+            return &sheets[i];
+    return NULL;
+}
+
+double gw_sheet_kwall(const gw_sheet *s, double m)
+{
+    double v = sqrt(2 * 9.81 * 2.9e-3);
+    return 1.25 * m * pow(gw_chain_tau_constant() / (2e-6 * s->tau_max1_us * pow(v, 0.2)), 2.5);
 }

@@ -34,6 +34,8 @@ void chain_cli_options(chain_cli *c, gw_opt *o)
     o[i++] = OPT_S("material", &c->material, "NAME", "bead material (steel, rigid, brass, aluminium, glass, pmma, pvc) [steel]");
     o[i++] = OPT_D("radius", &c->radius, "R", "bead radius, m [4e-3]", 0, INFINITY, 1);
     o[i++] = OPT_S("wall-material", &c->wall_material, "NAME", "wall material (a half-space) [steel]");
+    o[i++] = OPT_S("sheet", &c->sheet, "NAME", "wall: a sheet of the paper's Table 2 with its fitted K_eff (none, brass, tape, pvc, pmma, cardboard2, beech, cardboard1, rubber)");
+    o[i++] = OPT_S("radii", &c->radii, "R,R..", "per-bead radii, m, bead 1 first (masses and contact k from the material)");
     o[i++] = OPT_D("k", &c->k, "K", "bead-bead Hertz coefficient, N/m^1.5 [from material, F.12]", 0, INFINITY, 1);
     o[i++] = OPT_D("kwall", &c->kwall, "K", "bead-wall Hertz coefficient, N/m^1.5 [from materials, F.3]", 0, INFINITY, 1);
     o[i++] = OPT_D("mass", &c->mass, "M", "bead mass, kg [4/3 pi R^3 rho]", 0, INFINITY, 1);
@@ -80,6 +82,46 @@ int chain_cli_resolve(chain_cli *c, const gw_opt *opts, const char *cmd, gw_err 
     p->k = gw_cli_find(opts, "k")->seen ? c->k : gw_hertz_coefficient(c->radius, bm, c->radius, bm);
     p->kwall = gw_cli_find(opts, "kwall")->seen ? c->kwall
                                                  : gw_hertz_coefficient(c->radius, bm, INFINITY, wm);
+    if (c->sheet) {
+        const gw_sheet *sh = gw_sheet_find(c->sheet);
+        if (!sh)
+            return gw_err_set(err, GW_EINVAL, "%s --sheet: unknown sheet '%s' (none, brass, tape, pvc, pmma, cardboard2, beech, cardboard1, rubber)",
+                              cmd, c->sheet);
+        if (gw_cli_find(opts, "kwall")->seen)
+            return gw_err_set(err, GW_EINVAL, "%s --sheet: give either --sheet or --kwall", cmd);
+        p->kwall = gw_sheet_kwall(sh, p->mass);
+    }
+    if (c->radii) {
+        int nr = 0;
+        chain_cli_free(c);
+        if (gw_parse_double_list(c->radii, "--radii", &c->radii_v, &nr, err) != GW_OK) {
+            char tmp[sizeof err->msg];
+            snprintf(tmp, sizeof tmp, "%s", err->msg);
+            return gw_err_set(err, GW_EINVAL, "%s %s", cmd, tmp);
+        }
+        if (nr != n)
+            return gw_err_set(err, GW_EINVAL, "%s --radii: %d radii for %d beads", cmd, nr, n);
+        c->masses_v = malloc((size_t)nr * sizeof *c->masses_v);
+        c->kc_v = malloc((size_t)nr * sizeof *c->kc_v);
+        if (!c->masses_v || !c->kc_v)
+            return gw_err_set(err, GW_ENOMEM, "%s --radii: out of memory", cmd);
+        for (int i = 0; i < nr; i++) {
+            double r = c->radii_v[i];
+            if (!(r > 0))
+                return gw_err_set(err, GW_EINVAL, "%s --radii: radius %d is %g, must be > 0", cmd, i + 1, r);
+            c->masses_v[i] = 4.0 / 3.0 * M_PI * r * r * r * bm->density;
+            if (i > 0)
+                c->kc_v[i - 1] = gw_hertz_coefficient(c->radii_v[i - 1], bm, r, bm);
+        }
+        if (gw_cli_find(opts, "mass")->seen || gw_cli_find(opts, "k")->seen)
+            return gw_err_set(err, GW_EINVAL, "%s --radii: derives masses and k; drop --mass and --k", cmd);
+        p->masses = c->masses_v;
+        p->kc = n > 1 ? c->kc_v : NULL;
+        p->mass = c->masses_v[0];
+        p->radius = c->radii_v[0];
+        if (!gw_cli_find(opts, "kwall")->seen && !c->sheet)
+            p->kwall = gw_hertz_coefficient(p->radius, bm, INFINITY, wm);
+    }
     if (isinf(p->kwall))
         return gw_err_set(err, GW_EINVAL, "%s --wall-material: a rigid wall needs a deformable bead material", cmd);
     p->gravity = c->gravity;
@@ -152,6 +194,10 @@ cJSON *chain_cli_settings_json(const chain_cli *c)
     cJSON *m = cJSON_AddObjectToObject(o, "model");
     cJSON_AddStringToObject(m, "material", c->material);
     cJSON_AddStringToObject(m, "wall_material", c->wall_material);
+    if (c->sheet)
+        cJSON_AddStringToObject(m, "sheet", c->sheet);
+    if (c->radii_v)
+        cJSON_AddItemToObject(m, "radii", gw_json_doubles(c->radii_v, p->n));
     cJSON_AddNumberToObject(m, "radius", p->radius);
     cJSON_AddNumberToObject(m, "mass", p->mass);
     cJSON_AddNumberToObject(m, "k", p->k);
@@ -222,4 +268,12 @@ void chain_cli_sweep_opts(gw_opt *opts, int *k, long *jobs, int *quiet)
                             .help = "threads [0 = one per CPU]", .lo = 0, .hi = 1024};
     opts[(*k)++] = (gw_opt){.name = "quiet", .kind = GW_OPT_FLAG, .dest = quiet,
                             .help = "no progress lines"};
+}
+
+void chain_cli_free(chain_cli *c)
+{
+    free(c->radii_v);
+    free(c->masses_v);
+    free(c->kc_v);
+    c->radii_v = c->masses_v = c->kc_v = NULL;
 }

@@ -15,14 +15,15 @@ typedef struct chain_cli {
     long max_steps;
     int json;
     const char *out;
-    const char *material, *wall_material, *damping, *solver, *method;
+    const char *material, *wall_material, *damping, *solver, *method, *sheet, *radii;
+    double *radii_v, *masses_v, *kc_v; /* owned arrays for --radii */
     /* resolved */
     gw_chain_params params;
     gw_chain_run_opts run;
 } chain_cli;
 
 /* Number of options chain_cli_options writes. */
-#define CHAIN_CLI_NOPTS 24
+#define CHAIN_CLI_NOPTS 26
 
 /* Fill defaults and write the shared option table into opts[0..CHAIN_CLI_NOPTS). */
 void chain_cli_options(chain_cli *c, gw_opt *opts);
@@ -30,6 +31,9 @@ void chain_cli_options(chain_cli *c, gw_opt *opts);
 /* Resolve materials, damping and solver into c->params / c->run (n and v_imp are
  * the caller's). GW_EINVAL with a message naming the option. */
 int chain_cli_resolve(chain_cli *c, const gw_opt *opts, const char *cmd, gw_err *err);
+
+/* Free what chain_cli_resolve allocated (safe to call twice). */
+void chain_cli_free(chain_cli *c);
 
 /* A JSON object with the model parameters and solver settings of a run. */
 cJSON *chain_cli_settings_json(const chain_cli *c);

@@ -8,10 +8,9 @@
  * T_q is measured on the same beads with the steel (rigid) wall: slope of tau_N
  * over N = 1..20 (F.4). The predicted N_d is the smallest N with
  * N >= ceil(tau_max(N)/T_q), tau_max taken from the soft-wall runs.
- * Sheet mode (--sheets): an effective K for each sheet of the paper's Table 2 from
- * its measured tau_max(N = 1) with tau_max = tau_1/2 and (F.2):
- *   K_eff = (5m/4) (c_tau / (2 tau_max v^(1/5)))^(5/2)
- * then N_d of the model with K_eff against the measured N_d (h = 2.9 mm).
+ * Sheet mode (--sheets): each sheet of the paper's Table 2 with its effective K
+ * (gw_sheet_kwall, chain_material.c), then N_d of the model against the
+ * measured N_d (h = 2.9 mm).
  * Units: SI (tables print us).
  */
 #include <math.h>
@@ -19,19 +18,6 @@
 #include <string.h>
 
 #include "chain_options.h"
-
-/* Falcon et al. 1998, Table 2 (physics.md 1.7): sheets on the sensor, h = 2.9 mm. */
-typedef struct sheet {
-    const char *name;
-    double tau_max1_us; /* measured tau_max(N = 1), input of the K_eff fit */
-    double n_d, n_d_err; /* measured saturation number, for comparison */
-} sheet;
-
-static const sheet sheets[] = {
-    {"none", 17, 1, 0},          {"brass", 47.5, 2, 0},   {"adhesive tape", 47.5, 4, 0},
-    {"PVC", 67.5, 6, 1},         {"PMMA", 69, 8, 1},      {"cardboard II", 191, 11, 1},
-    {"beech", 127.5, 15, 1},     {"cardboard I", 227, 22, 2}, {"rubber", 221, 28, 4},
-};
 
 typedef struct sw_result {
     int n_d, n_d_pred;
@@ -101,6 +87,8 @@ int gw_cmd_softwall(int argc, char **argv)
     int done = chain_cli_parse("softwall", "granwave softwall [--kwall K | --sheets] [options]", sw_summary, opts, argc, argv);
     if (done >= 0)
         return done;
+    if (c.radii)
+        return chain_cli_fail("softwall --radii: per-bead radii need a fixed N (use granwave chain)");
     gw_err err = {{0}};
     if (!gw_cli_find(opts, "kwall")->seen && !use_sheets)
         c.kwall = 1e9, ((gw_opt *)gw_cli_find(opts, "kwall"))->seen = 1;
@@ -115,7 +103,7 @@ int gw_cmd_softwall(int argc, char **argv)
         return chain_cli_fail(err.msg);
     const gw_chain_params *p = &c.params;
     double kc = gw_chain_kc(p->k), t_q = NAN, t0 = gw_clock_ms();
-    int nw = use_sheets ? (int)(sizeof sheets / sizeof sheets[0]) : 1, per = (int)(b - a + 1);
+    int nw = use_sheets ? gw_sheet_count() : 1, per = (int)(b - a + 1);
     gw_chain_result *res = calloc((size_t)(nw * per), sizeof *res);
     double *kw = calloc((size_t)nw, sizeof *kw);
     sw_result *sr = calloc((size_t)nw, sizeof *sr);
@@ -123,11 +111,11 @@ int gw_cmd_softwall(int argc, char **argv)
     for (int w = 0; rc == GW_OK && w < nw; w++) {
         gw_chain_params q = *p;
         if (use_sheets)
-            q.kwall = 1.25 * q.mass * pow(gw_chain_tau_constant() / (2e-6 * sheets[w].tau_max1_us * pow(vimp, 0.2)), 2.5);
+            q.kwall = gw_sheet_kwall(gw_sheet_get(w), q.mass);
         kw[w] = q.kwall;
         if (!quiet)
             fprintf(stderr, "softwall: K = %.4g N/m^1.5%s%s (%d/%d)\n", q.kwall, use_sheets ? ", sheet " : "",
-                    use_sheets ? sheets[w].name : "", w + 1, nw);
+                    use_sheets ? gw_sheet_get(w)->name : "", w + 1, nw);
         rc = gw_chain_sweep_n(&q, &c.run, &vimp, 1, (int)a, (int)b, (int)jobs, 0, res + w * per, &err);
         if (rc == GW_OK)
             sr[w] = analyse(res + w * per, (int)a, (int)b, tol, t_q);
@@ -158,10 +146,10 @@ int gw_cmd_softwall(int argc, char **argv)
                 fm[ns + i] = res[w * per + i].tau_max;
             }
             if (use_sheets) {
-                cJSON_AddStringToObject(e, "sheet", sheets[w].name);
-                cJSON_AddNumberToObject(e, "tau_max_n1_measured", sheets[w].tau_max1_us * 1e-6);
-                cJSON_AddNumberToObject(e, "n_d_measured", sheets[w].n_d);
-                cJSON_AddNumberToObject(e, "n_d_measured_err", sheets[w].n_d_err);
+                cJSON_AddStringToObject(e, "sheet", gw_sheet_get(w)->name);
+                cJSON_AddNumberToObject(e, "tau_max_n1_measured", gw_sheet_get(w)->tau_max1_us * 1e-6);
+                cJSON_AddNumberToObject(e, "n_d_measured", gw_sheet_get(w)->n_d);
+                cJSON_AddNumberToObject(e, "n_d_measured_err", gw_sheet_get(w)->n_d_err);
                 cJSON_AddItemToArray(walls, e);
             }
             cJSON_AddNumberToObject(e, "kwall", kw[w]);
@@ -193,7 +181,7 @@ int gw_cmd_softwall(int argc, char **argv)
             for (int w = 0; w < nw; w++) {
                 char meas[32] = "";
                 if (use_sheets)
-                    snprintf(meas, sizeof meas, "%g +- %g", sheets[w].n_d, sheets[w].n_d_err);
+                    snprintf(meas, sizeof meas, "%g +- %g", gw_sheet_get(w)->n_d, gw_sheet_get(w)->n_d_err);
                 char nd[32], np[32];
                 if (sr[w].n_d < b)
                     snprintf(nd, sizeof nd, "%d", sr[w].n_d);
@@ -203,7 +191,7 @@ int gw_cmd_softwall(int argc, char **argv)
                     snprintf(np, sizeof np, "%d", sr[w].n_d_pred);
                 else
                     snprintf(np, sizeof np, ">%ld", b);
-                printf("  %-14s %11.4g %6s %8s %8s %9.2f N %14s\n", use_sheets ? sheets[w].name : "--kwall",
+                printf("  %-14s %11.4g %6s %8s %8s %9.2f N %14s\n", use_sheets ? gw_sheet_get(w)->name : "--kwall",
                        kw[w], kw[w] > kc ? "rigid" : "soft", nd, np, sr[w].plateau, meas);
             }
         }

@@ -110,6 +110,8 @@ int gw_cmd_wavespeed(int argc, char **argv)
     int done = chain_cli_parse("wavespeed", "granwave wavespeed [options]", ws_summary, opts, argc, argv);
     if (done >= 0)
         return done;
+    if (c.radii)
+        return chain_cli_fail("wavespeed --radii: per-bead radii need a fixed N (use granwave chain)");
     gw_err err = {{0}};
     long a, b;
     double *v = NULL;

@@ -49,6 +49,22 @@ double gw_chain_tq_theory(double m, double k, double v);
 /* Critical wall coefficient K_c = (tau_c/4)^(5/2) (5k/4) (F.22), tau_c = 2.943. */
 double gw_chain_kc(double k);
 
+/* Sheets of the paper's Table 2 (soft walls; names: none, brass, tape, pvc,
+ * pmma, cardboard2, beech, cardboard1, rubber). */
+typedef struct gw_sheet {
+    const char *name;
+    double tau_max1_us;  /* measured tau_max(N = 1), us, at h = 2.9 mm */
+    double n_d, n_d_err; /* measured saturation number */
+} gw_sheet;
+
+int gw_sheet_count(void);
+const gw_sheet *gw_sheet_get(int i);
+const gw_sheet *gw_sheet_find(const char *name);
+/* Effective wall coefficient of a sheet for beads of mass m (N/m^1.5): the
+ * Hertz K whose single-bead tau_max = tau_1/2 (F.2, F.21) equals the measured
+ * tau_max(N = 1) at v_imp = sqrt(2 g 2.9 mm). */
+double gw_sheet_kwall(const gw_sheet *s, double m);
+
 /* ---- model ---- */
 
 typedef enum {
@@ -208,11 +224,126 @@ int gw_chain_sweep_n(const gw_chain_params *tmpl, const gw_chain_run_opts *o,
                      const double *v, int nv, int n_lo, int n_hi, int jobs,
                      int progress, gw_chain_result *res, gw_err *err);
 
+/* ---- dispersion (chain_dispersion.c) ---- */
+
+/* Small-amplitude dispersion of a precompressed Hertz chain (physics.md 1.6):
+ * n identical beads (mass m, Hertz coefficient k) under static force f0, overlap
+ * d0 = (f0/k)^(2/3) on every contact, linear stiffness
+ * kappa = (3/2) k^(2/3) f0^(1/3), omega(q) = 2 sqrt(kappa/m) |sin(q a/2)|,
+ * a = 2R - d0. The chain starts at equilibrium with small random velocities, is
+ * integrated by the solver layer, its bead velocities are sampled at uniform
+ * times and the space-time power spectrum |V(q, omega)|^2 (FFTW r2c, Hann window
+ * in time) gives the ridge omega(q). SI units; wavenumbers in lattice units q a
+ * (rad per bead). */
+
+typedef enum {
+    GW_CHAIN_DISP_PERIODIC = 0, /* bead n-1 touches bead 0; q a = 2 pi j / n */
+    GW_CHAIN_DISP_FIXED = 1     /* beads 0 and n-1 touch fixed rigid neighbours (same
+                             contact law); standing modes q a = pi j / (n + 1) */
+} gw_chain_disp_ends;
+
+typedef struct gw_chain_disp_params {
+    int n;                /* beads, >= 8 */
+    double f0;            /* static precompression, N, > 0 (d0 < radius) */
+    double mass;          /* bead mass, kg */
+    double k;             /* bead-bead Hertz coefficient, N/m^1.5 */
+    double radius;        /* bead radius, m (spacing a = 2R - d0) */
+    gw_chain_disp_ends ends;
+    double amp;           /* rms overlap perturbation of the initial velocities
+                             relative to d0, in (0, 0.1] (linear regime) */
+    unsigned long seed;   /* random velocities (deterministic for a seed) */
+    int t_samples;        /* velocity samples in time, even, >= 64 */
+    double dt_sample;     /* sampling interval, s; 0 = pi / (1.25 omega_c), i.e.
+                             omega_c at 80 % of the Nyquist frequency */
+    int steps_per_sample; /* RK4 steps per sampling interval (fixed step) */
+    double min_bins;      /* a ridge is resolved when its frequency is at least
+                             this many frequency bins (2 pi / T) above zero */
+    int fftw_measure;     /* 1: plan with FFTW_MEASURE, 0: FFTW_ESTIMATE */
+} gw_chain_disp_params;
+
+/* Steel beads of gw_chain_params_default, n = 1024, f0 = 10 N, periodic,
+ * amp = 1e-3, seed 1, 2048 samples, dt_sample 0 (auto), 16 RK4 steps per sample,
+ * min_bins 8, FFTW_ESTIMATE. */
+gw_chain_disp_params gw_chain_disp_params_default(void);
+
+/* Check every field; GW_EINVAL with a message naming the field by its option
+ * name in `granwave dispersion` (--n, --f0, --t-samples, ...). */
+int gw_chain_disp_params_validate(const gw_chain_disp_params *p, gw_err *err);
+
+/* Linear contact stiffness kappa = (3/2) k^(2/3) f0^(1/3), N/m. */
+double gw_chain_disp_kappa(double k, double f0);
+/* omega(q) = 2 sqrt(kappa/m) |sin(qa/2)|, rad/s, for qa in rad per bead. */
+double gw_chain_disp_omega(double kappa, double m, double qa);
+
+typedef struct gw_chain_disp_result {
+    int nq;               /* wavenumbers reported (j = 1..nq) */
+    double *qa;           /* [nq] q a, rad per bead */
+    double *omega_ridge;  /* [nq] frequency of maximum power, rad/s (parabolic
+                             interpolation of log power over three bins) */
+    double *omega_theory; /* [nq] physics.md 1.6 */
+    double *ridge_power;  /* [nq] power at the ridge bin */
+    int *resolved;        /* [nq] 1 when the ridge counts (see min_bins) */
+    int n_omega;          /* frequency bins 0 .. t_samples/2 */
+    double d_omega;       /* bin spacing 2 pi / (t_samples dt_sample), rad/s */
+    double *power;        /* [nq * n_omega] |V(q_j, omega_l)|^2 (q and -q summed),
+                             row j-1, m^2/s^2 (unnormalised FFT) */
+    double d0, kappa, a;  /* m, N/m, m */
+    double omega_c_theory, omega_c_measured, omega_c_rel_err; /* rad/s, -, - */
+    double omega_edge;    /* highest frequency where the q-summed power is above
+                             1e-3 of its peak, rad/s (a second cutoff estimate) */
+    double ridge_max_rel_err; /* max |ridge - theory| / theory, resolved q */
+    int n_resolved;
+    double qa_resolved_min, qa_resolved_max;
+    double c0_theory;     /* a sqrt(kappa/m), m/s */
+    double c0_measured;   /* a * intercept of a line through omega/(qa) against
+                             (qa)^2 over resolved qa <= 0.5 (NaN if < 3 points) */
+    double max_overlap_dev; /* max |d - d0| / d0 over contacts and samples */
+    double dt_sample, dt_step, t_total; /* s */
+    double integrate_ms, fft_ms;
+    gw_solver_stats stats;
+} gw_chain_disp_result;
+
+/* Integrate the chain with solver type (NULL: rk4) and settings sp, then
+ * transform and extract the ridge. rk4 steps at dt_sample / steps_per_sample
+ * (sp->dt ignored); sp->method GW_METHOD_DEFAULT means adams for cvode and erk
+ * for arkode (the linear chain is not stiff); bdf and dirk use a band solver
+ * with a finite-difference Jacobian and are refused for periodic ends
+ * (GW_EUNSUPPORTED: the ring's Jacobian is not banded). r is zeroed first; free
+ * it with gw_chain_disp_result_free, also after a failure (arrays may then be
+ * NULL). Returns GW_EINVAL (parameters), GW_ENOMEM, GW_EUNSUPPORTED,
+ * GW_ESOLVER / GW_ELIMIT (backend message and time in err). */
+int gw_chain_disp_run(const gw_chain_disp_params *p, const gw_solver_type *solver,
+                      const gw_solver_params *sp, gw_chain_disp_result *r, gw_err *err);
+void gw_chain_disp_result_free(gw_chain_disp_result *r);
+
+/* Power spectrum of a column's wall force (the plateau oscillation, 1/P). */
+typedef struct gw_chain_spectrum {
+    int len;         /* bins 0 .. len-1 */
+    double df;       /* bin spacing, Hz */
+    double *freq;    /* [len] Hz */
+    double *power;   /* [len] |dt sum_i w_i (F_i - mean) e^(-2 pi i f t_i)|^2, N^2 s^2 */
+    double f_peak;   /* dominant peak above f_min, Hz (log-parabolic refinement) */
+    double f_min;    /* lowest frequency searched, Hz */
+    double dt;       /* uniform resampling interval, s */
+    int samples;     /* uniform samples in [t0, t1] (before zero padding) */
+} gw_chain_spectrum;
+
+/* Resample tr->f linearly onto t0 + i dt in [t0, t1] (events make the trace
+ * non-uniform), remove the mean, apply a Hann window, zero-pad 8x and take the
+ * r2c FFT. dt <= 0: the median trace spacing; f_min <= 0: 4 / (t1 - t0) (above
+ * the envelope of the contact). GW_EINVAL for fewer than 16 samples or a bad
+ * interval, GW_ENOMEM. sp is zeroed first; free with gw_chain_spectrum_free. */
+int gw_chain_wall_spectrum(const gw_chain_trace *tr, double t0, double t1, double dt,
+                           double f_min, int fftw_measure, gw_chain_spectrum *sp,
+                           gw_err *err);
+void gw_chain_spectrum_free(gw_chain_spectrum *sp);
+
 /* ---- program commands ---- */
 
 int gw_cmd_chain(int argc, char **argv);
 int gw_cmd_falcon(int argc, char **argv);
 int gw_cmd_wavespeed(int argc, char **argv);
 int gw_cmd_softwall(int argc, char **argv);
+int gw_cmd_dispersion(int argc, char **argv);
 
 #endif

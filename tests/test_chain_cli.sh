@@ -48,6 +48,13 @@ bad "falcon --n" falcon --n 5:2
 bad "falcon --vimp" falcon --vimp 0.3,abc
 bad "heights" falcon --heights -1
 bad "unknown command" nosuchcommand
+bad "radii" chain --n 3 --radii 4e-3,3e-3
+bad "radii" chain --n 2 --radii 4e-3,-1
+bad "radii" falcon --radii 4e-3
+bad "sheet" chain --sheet foam
+bad "sheet" chain --sheet brass --kwall 1e9
+bad "restitution" chain --restitution 0.9
+bad "restitution" chain --damping hc --restitution 1.5
 
 check() { # description, command (status 0 expected)
     local what=$1; shift

@@ -42,6 +42,34 @@ int main(void)
         }
     }
 
+    /* Unequal beads (radii 2..5 mm, masses and contact k from steel): energy and
+     * momentum of the column (mass-weighted eps_col = 1) on CVODE and RK4. */
+    for (size_t s = 0; s < 2; s++) {
+        double radii[6] = {5e-3, 2e-3, 4e-3, 3e-3, 5e-3, 2.5e-3}, masses[6], kc[5];
+        const gw_material *steel = gw_material_find("steel");
+        for (int i = 0; i < 6; i++) {
+            masses[i] = 4.0 / 3.0 * M_PI * pow(radii[i], 3) * steel->density;
+            if (i > 0)
+                kc[i - 1] = gw_hertz_coefficient(radii[i - 1], steel, radii[i], steel);
+        }
+        gw_chain_params p = test_params(6, 0.3);
+        p.masses = masses;
+        p.kc = kc;
+        p.mass = masses[0];
+        p.kwall = gw_hertz_coefficient(radii[0], steel, INFINITY, steel);
+        gw_chain_run_opts o = test_opts(s == 0 ? "cvode" : "rk4", s == 0 ? "bdf" : "default");
+        gw_chain_result r;
+        if (test_collide(&p, &o, &r) == GW_OK) {
+            snprintf(what, sizeof what, "%s unequal beads: energy error < 1e-8", s == 0 ? "cvode" : "rk4");
+            gw_test_abs(r.energy_error, 0, 1e-8, what);
+            snprintf(what, sizeof what, "%s unequal beads: mass-weighted eps_col = 1", s == 0 ? "cvode" : "rk4");
+            gw_test_rel(r.eps_col, 1.0, 1e-7, what);
+        } else {
+            gw_test_failures++;
+        }
+        gw_chain_result_free(&r);
+    }
+
     /* Damping and gravity: CVODE BDF and RK4. */
     const char *dsol[][2] = {{"cvode", "bdf"}, {"rk4", "default"}};
     for (size_t s = 0; s < 2; s++) {

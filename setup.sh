@@ -17,7 +17,7 @@ RESULTS=${RESULTS:-results/falcon}
 JOBS=${JOBS:-$(nproc)}
 
 packages=(build-essential cmake pkg-config libsundials-dev libgsl-dev libfftw3-dev
-          libhdf5-dev libcjson-dev python3-numpy python3-scipy python3-matplotlib
+          libhdf5-dev libcjson-dev libinih-dev libopenmpi-dev openmpi-bin python3-numpy python3-scipy python3-matplotlib
           jupyter-nbconvert python3-ipykernel)
 
 install_missing() {
@@ -54,11 +54,14 @@ test)
     install_missing
     build -DGW_WERROR=ON
     (cd "$BUILD_DIR" && ctest --output-on-failure -j 2)
-    # the same tests again under AddressSanitizer + UBSan (leaks included)
+    # the C unit tests (label "unit") again under AddressSanitizer + UBSan,
+    # leaks included, plus the program's input-handling test
     echo "setup: sanitizer build ($BUILD_DIR-asan)"
     BUILD_DIR="$BUILD_DIR-asan" build -DGW_WERROR=ON -DGW_SANITIZE=ON -DCMAKE_BUILD_TYPE=Debug
     cd "$BUILD_DIR-asan"
-    UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1 ctest --output-on-failure -j 2
+    export UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1
+    ctest --output-on-failure -j 2 -L unit
+    ctest --output-on-failure -R test_chain_cli
     ;;
 build)
     install_missing

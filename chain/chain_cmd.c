@@ -113,7 +113,7 @@ int gw_cmd_chain(int argc, char **argv)
         code = rc == GW_EINVAL ? 2 : 1;
     } else {
         if (c.out) {
-            char *hdr = chain_cli_header(&c, argc, argv);
+            char *hdr = chain_cli_header(&c, "chain", argc, argv);
             char path[4096];
             cJSON *o = result_json(&c, &r, wall_ms);
             if (gw_chain_trace_write(&tr, c.out, "chain", hdr ? hdr : "", &err) != GW_OK ||

@@ -289,7 +289,7 @@ int gw_cmd_falcon(int argc, char **argv)
         analyse_velocity(&f, iv);
     cJSON *sum = summary_json(&f);
     if (f.c.out) {
-        char *hdr = chain_cli_header(&f.c, argc, argv);
+        char *hdr = chain_cli_header(&f.c, "falcon", argc, argv);
         char path[4096];
         for (char *p = hdr; p && *p; p++)
             if (*p == '\n')

@@ -221,17 +221,17 @@ cJSON *chain_cli_settings_json(const chain_cli *c)
     return o;
 }
 
-char *chain_cli_header(const chain_cli *c, int argc, char **argv)
+char *chain_cli_header(const chain_cli *c, const char *cmd, int argc, char **argv)
 {
     cJSON *o = chain_cli_settings_json(c);
     char *js = cJSON_PrintUnformatted(o);
     cJSON_Delete(o);
-    size_t len = 256 + (js ? strlen(js) : 0);
+    size_t len = 256 + strlen(cmd) + (js ? strlen(js) : 0);
     for (int i = 0; i < argc; i++)
         len += strlen(argv[i]) + 1;
     char *h = malloc(len);
     if (h) {
-        size_t w = (size_t)snprintf(h, len, "granwave %s\ncommand: granwave", gw_version());
+        size_t w = (size_t)snprintf(h, len, "granwave %s\ncommand: granwave %s", gw_version(), cmd);
         for (int i = 0; i < argc && w < len; i++)
             w += (size_t)snprintf(h + w, len - w, " %s", argv[i]);
         if (w < len)

@@ -39,7 +39,7 @@ void chain_cli_free(chain_cli *c);
 cJSON *chain_cli_settings_json(const chain_cli *c);
 
 /* Multi-line text (version, command line, settings) for file headers; caller frees. */
-char *chain_cli_header(const chain_cli *c, int argc, char **argv);
+char *chain_cli_header(const chain_cli *c, const char *cmd, int argc, char **argv);
 
 /* Parse argv against opts (NULL-terminated). Returns -1 to go on, or the exit
  * code when the command is done: 0 after printing --help, 2 after one error

@@ -232,7 +232,7 @@ int gw_cmd_wavespeed(int argc, char **argv)
         char path[4096];
         if (c.out) {
             gw_afile af;
-            char *hdr = chain_cli_header(&c, argc, argv);
+            char *hdr = chain_cli_header(&c, "wavespeed", argc, argv);
             for (char *h = hdr; h && *h; h++)
                 if (*h == '\n')
                     *h = ' ';

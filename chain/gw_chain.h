@@ -251,7 +251,8 @@ typedef struct gw_chain_disp_params {
     gw_chain_disp_ends ends;
     double amp;           /* rms overlap perturbation of the initial velocities
                              relative to d0, in (0, 0.1] (linear regime) */
-    unsigned long seed;   /* random velocities (deterministic for a seed) */
+    unsigned long seed;   /* random mode phases of the initial velocities (every
+                             mode gets the same amplitude; deterministic) */
     int t_samples;        /* velocity samples in time, even, >= 64 */
     double dt_sample;     /* sampling interval, s; 0 = pi / (1.25 omega_c), i.e.
                              omega_c at 80 % of the Nyquist frequency */
@@ -322,7 +323,9 @@ typedef struct gw_chain_spectrum {
     double df;       /* bin spacing, Hz */
     double *freq;    /* [len] Hz */
     double *power;   /* [len] |dt sum_i w_i (F_i - mean) e^(-2 pi i f t_i)|^2, N^2 s^2 */
-    double f_peak;   /* dominant peak above f_min, Hz (log-parabolic refinement) */
+    double f_peak;   /* dominant peak of f^2 power (the spectrum of dF/dt, which
+                        the contact's envelope does not dominate) above f_min,
+                        Hz, refined by a parabola through its log */
     double f_min;    /* lowest frequency searched, Hz */
     double dt;       /* uniform resampling interval, s */
     int samples;     /* uniform samples in [t0, t1] (before zero padding) */
@@ -337,6 +340,11 @@ int gw_chain_wall_spectrum(const gw_chain_trace *tr, double t0, double t1, doubl
                            double f_min, int fftw_measure, gw_chain_spectrum *sp,
                            gw_err *err);
 void gw_chain_spectrum_free(gw_chain_spectrum *sp);
+
+/* ---- the chain as a sweep model (chain_sweep_model.c, see gw_sweep.h) ---- */
+
+struct gw_sweep_model;
+extern const struct gw_sweep_model gw_chain_sweep_model;
 
 /* ---- program commands ---- */
 

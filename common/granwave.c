@@ -7,9 +7,21 @@
 #include <string.h>
 
 #include "gw_chain.h"
+#include "gw_sweep.h"
 #if GW_HAVE_LAYER
 #include "gw_layer.h"
 #endif
+
+static int cmd_sweep(int argc, char **argv)
+{
+    const gw_sweep_model *const models[] = {
+        &gw_chain_sweep_model,
+#if GW_HAVE_LAYER && defined(GW_LAYER_SWEEP_MODEL)
+        &GW_LAYER_SWEEP_MODEL,
+#endif
+    };
+    return gw_cmd_sweep(argc, argv, models, (int)(sizeof models / sizeof models[0]));
+}
 
 typedef struct command {
     const char *name;
@@ -20,8 +32,10 @@ typedef struct command {
 static const command commands[] = {
     {"chain", gw_cmd_chain, "one collision of a bead column with a wall"},
     {"falcon", gw_cmd_falcon, "the Falcon et al. (1998) rigid-wall study (main job)"},
+    {"dispersion", gw_cmd_dispersion, "small-amplitude dispersion of a precompressed chain (FFTW)"},
     {"wavespeed", gw_cmd_wavespeed, "deformation-wave speed against v_imp, three estimators"},
     {"softwall", gw_cmd_softwall, "soft walls: F_max(N), saturation number N_d, sheets"},
+    {"sweep", cmd_sweep, "a grid of cases from a config file (resumable; threads or MPI)"},
 #if GW_HAVE_LAYER
     GW_LAYER_COMMANDS
 #endif

@@ -1,0 +1,454 @@
+/*
+ * gw_sweep.c: sweep configs (libinih), grid expansion, the append-only journal
+ * and the final table (see gw_sweep.h). A journal row is complete only with its
+ * trailing FNV-1a checksum and newline, so a row torn by kill -9 is detected and
+ * dropped on the next run; rows are appended with one write() and fsync().
+ */
+#define _POSIX_C_SOURCE 200809L
+#include <errno.h>
+#include <fcntl.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include <ini.h>
+
+#include "gw_sweep.h"
+
+typedef struct parse_ctx {
+    gw_sweep_config *cfg;
+    const gw_sweep_model *const *models;
+    int nmodels;
+    char msg[400];
+    int line; /* current line, counted by the reader */
+} parse_ctx;
+
+static char *dupstr(const char *s)
+{
+    size_t n = strlen(s) + 1;
+    char *d = malloc(n);
+    if (d)
+        memcpy(d, s, n);
+    return d;
+}
+
+static char *trim(char *s)
+{
+    while (*s == ' ' || *s == '\t')
+        s++;
+    size_t n = strlen(s);
+    while (n > 0 && (s[n - 1] == ' ' || s[n - 1] == '\t' || s[n - 1] == '\r'))
+        s[--n] = '\0';
+    return s;
+}
+
+/* Split a grid value: "A:B" (integers) or "a, b, c". */
+static int split_values(const char *value, gw_sweep_key *k, char *msg, size_t mlen)
+{
+    long a, b;
+    gw_err err;
+    if (strchr(value, ':') && gw_parse_int_range(value, k->name, -1000000000L, 1000000000L, &a, &b, &err) == GW_OK) {
+        if (b - a >= 100000000L) {
+            snprintf(msg, mlen, "%s: range %s is too long", k->name, value);
+            return 0;
+        }
+        k->nvalues = (int)(b - a + 1);
+        k->values = calloc((size_t)k->nvalues, sizeof *k->values);
+        for (long i = 0; k->values && i <= b - a; i++) {
+            char buf[32];
+            snprintf(buf, sizeof buf, "%ld", a + i);
+            if (!(k->values[i] = dupstr(buf)))
+                return 0;
+        }
+        return k->values != NULL;
+    }
+    char *copy = dupstr(value);
+    if (!copy)
+        return 0;
+    int cap = 1;
+    for (const char *p = value; *p; p++)
+        cap += *p == ',';
+    k->values = calloc((size_t)cap, sizeof *k->values);
+    char *save = NULL;
+    for (char *tok = strtok_r(copy, ",", &save); k->values && tok; tok = strtok_r(NULL, ",", &save)) {
+        char *t = trim(tok);
+        if (!*t) {
+            snprintf(msg, mlen, "%s: empty value in list '%s'", k->name, value);
+            free(copy);
+            return 0;
+        }
+        k->values[k->nvalues++] = dupstr(t);
+    }
+    free(copy);
+    if (k->nvalues != cap) {
+        snprintf(msg, mlen, "%s: empty value in list '%s'", k->name, value);
+        return 0;
+    }
+    return k->values != NULL;
+}
+
+static int find_key(const gw_sweep_key *keys, int n, const char *name)
+{
+    for (int i = 0; i < n; i++)
+        if (strcmp(keys[i].name, name) == 0)
+            return i;
+    return -1;
+}
+
+static int handler(void *user, const char *section, const char *name, const char *value)
+{
+    parse_ctx *pc = user;
+    gw_sweep_config *cfg = pc->cfg;
+    if (strcmp(section, "sweep") == 0) {
+        char **dst = strcmp(name, "model") == 0 ? &cfg->model : strcmp(name, "out") == 0 ? &cfg->out : NULL;
+        if (!dst) {
+            snprintf(pc->msg, sizeof pc->msg, "unknown key '%s' in [sweep] (model, out)", name);
+            return 0;
+        }
+        if (*dst) {
+            snprintf(pc->msg, sizeof pc->msg, "duplicate key '%s'", name);
+            return 0;
+        }
+        if (!*value) {
+            snprintf(pc->msg, sizeof pc->msg, "empty value for '%s'", name);
+            return 0;
+        }
+        if (dst == &cfg->model) {
+            int known = 0;
+            for (int i = 0; i < pc->nmodels; i++)
+                known |= strcmp(pc->models[i]->name, value) == 0;
+            if (!known) {
+                snprintf(pc->msg, sizeof pc->msg, "unknown model '%s'", value);
+                return 0;
+            }
+        }
+        *dst = dupstr(value);
+        return *dst != NULL;
+    }
+    int is_grid = strcmp(section, "grid") == 0;
+    if (!is_grid && strcmp(section, "params") != 0) {
+        snprintf(pc->msg, sizeof pc->msg, "unknown section [%s] (sweep, grid, params)", section);
+        return 0;
+    }
+    if (!cfg->model) {
+        snprintf(pc->msg, sizeof pc->msg, "[sweep] model must come before [%s]", section);
+        return 0;
+    }
+    const gw_sweep_model *m = NULL;
+    for (int i = 0; i < pc->nmodels; i++)
+        if (strcmp(pc->models[i]->name, cfg->model) == 0)
+            m = pc->models[i];
+    if (!m) {
+        snprintf(pc->msg, sizeof pc->msg, "unknown model '%s'", cfg->model);
+        return 0;
+    }
+    if (!m->has_key(name)) {
+        snprintf(pc->msg, sizeof pc->msg, "'%s' is not an option of model %s", name, cfg->model);
+        return 0;
+    }
+    if (find_key(cfg->grid, cfg->ngrid, name) >= 0 || find_key(cfg->params, cfg->nparams, name) >= 0) {
+        snprintf(pc->msg, sizeof pc->msg, "duplicate key '%s'", name);
+        return 0;
+    }
+    gw_sweep_key *keys = is_grid ? cfg->grid : cfg->params;
+    int *nk = is_grid ? &cfg->ngrid : &cfg->nparams;
+    if (*nk >= GW_SWEEP_MAX_KEYS) {
+        snprintf(pc->msg, sizeof pc->msg, "more than %d keys in [%s]", GW_SWEEP_MAX_KEYS, section);
+        return 0;
+    }
+    gw_sweep_key *k = &keys[(*nk)++];
+    memset(k, 0, sizeof *k);
+    k->name = dupstr(name);
+    if (!k->name)
+        return 0;
+    if (is_grid)
+        return split_values(value, k, pc->msg, sizeof pc->msg);
+    k->values = calloc(1, sizeof *k->values);
+    if (!k->values || !(k->values[0] = dupstr(value)))
+        return 0;
+    k->nvalues = 1;
+    return 1;
+}
+
+static unsigned long fnv64(unsigned long h, const char *s)
+{
+    for (; *s; s++) {
+        h ^= (unsigned char)*s;
+        h *= 1099511628211UL;
+    }
+    return h ^ 0xff; /* separator */
+}
+
+int gw_sweep_config_read(const char *path, const gw_sweep_model *const *models, int nmodels,
+                         gw_sweep_config *cfg, const gw_sweep_model **model, gw_err *err)
+{
+    memset(cfg, 0, sizeof *cfg);
+    *model = NULL;
+    parse_ctx pc = {cfg, models, nmodels, "", 0};
+    int rc = ini_parse(path, handler, &pc);
+    if (rc == -1) {
+        gw_sweep_config_free(cfg);
+        return gw_err_set(err, GW_EINVAL, "%s: cannot open the config file", path);
+    }
+    if (rc != 0) {
+        gw_err_set(err, GW_EINVAL, "%s:%d: %s", path, rc, pc.msg[0] ? pc.msg : "syntax error");
+        gw_sweep_config_free(cfg);
+        return GW_EINVAL;
+    }
+    if (!cfg->model) {
+        gw_sweep_config_free(cfg);
+        return gw_err_set(err, GW_EINVAL, "%s: no [sweep] model", path);
+    }
+    for (int i = 0; i < nmodels; i++)
+        if (strcmp(models[i]->name, cfg->model) == 0)
+            *model = models[i];
+    if (!*model) {
+        gw_err_set(err, GW_EINVAL, "%s: unknown model '%s'", path, cfg->model);
+        gw_sweep_config_free(cfg);
+        return GW_EINVAL;
+    }
+    if (cfg->ngrid == 0) {
+        gw_sweep_config_free(cfg);
+        return gw_err_set(err, GW_EINVAL, "%s: the [grid] section is empty or missing", path);
+    }
+    cfg->ncases = 1;
+    unsigned long h = fnv64(14695981039346656037UL, cfg->model);
+    for (int i = 0; i < cfg->ngrid; i++) {
+        cfg->ncases *= cfg->grid[i].nvalues;
+        if (cfg->ncases > 1000000000L) {
+            gw_sweep_config_free(cfg);
+            return gw_err_set(err, GW_EINVAL, "%s: the grid has more than 1e9 cases", path);
+        }
+        h = fnv64(h, cfg->grid[i].name);
+        for (int j = 0; j < cfg->grid[i].nvalues; j++)
+            h = fnv64(h, cfg->grid[i].values[j]);
+    }
+    for (int i = 0; i < cfg->nparams; i++)
+        h = fnv64(fnv64(h, cfg->params[i].name), cfg->params[i].values[0]);
+    cfg->hash = h;
+    return GW_OK;
+}
+
+static void free_keys(gw_sweep_key *k, int n)
+{
+    for (int i = 0; i < n; i++) {
+        for (int j = 0; k[i].values && j < k[i].nvalues; j++)
+            free(k[i].values[j]);
+        free(k[i].values);
+        free(k[i].name);
+    }
+}
+
+void gw_sweep_config_free(gw_sweep_config *cfg)
+{
+    free_keys(cfg->grid, cfg->ngrid);
+    free_keys(cfg->params, cfg->nparams);
+    free(cfg->model);
+    free(cfg->out);
+    memset(cfg, 0, sizeof *cfg);
+}
+
+int gw_sweep_case(const gw_sweep_config *cfg, long k, const char **names, const char **values)
+{
+    if (k < 0 || k >= cfg->ncases)
+        return GW_EINVAL;
+    for (int i = cfg->ngrid - 1; i >= 0; i--) {
+        names[i] = cfg->grid[i].name;
+        values[i] = cfg->grid[i].values[k % cfg->grid[i].nvalues];
+        k /= cfg->grid[i].nvalues;
+    }
+    for (int i = 0; i < cfg->nparams; i++) {
+        names[cfg->ngrid + i] = cfg->params[i].name;
+        values[cfg->ngrid + i] = cfg->params[i].values[0];
+    }
+    return GW_OK;
+}
+
+static unsigned fnv32(const char *s, size_t n)
+{
+    unsigned h = 2166136261u;
+    for (size_t i = 0; i < n; i++) {
+        h ^= (unsigned char)s[i];
+        h *= 16777619u;
+    }
+    return h;
+}
+
+int gw_sweep_format_row(const gw_sweep_config *cfg, long k, const double *out, int ncol, char *buf,
+                        size_t n)
+{
+    const char *names[2 * GW_SWEEP_MAX_KEYS], *values[2 * GW_SWEEP_MAX_KEYS];
+    gw_sweep_case(cfg, k, names, values);
+    size_t w = (size_t)snprintf(buf, n, "%ld", k);
+    for (int i = 0; i < cfg->ngrid && w < n; i++)
+        w += (size_t)snprintf(buf + w, n - w, ",%s", values[i]);
+    for (int i = 0; i < ncol && w < n; i++)
+        w += (size_t)snprintf(buf + w, n - w, ",%.17g", out[i]);
+    if (w + 12 >= n)
+        return GW_EINVAL;
+    buf[w] = ','; /* the checksum covers the row up to and including this comma */
+    snprintf(buf + w + 1, n - w - 1, "%08x\n", fnv32(buf, w + 1));
+    return GW_OK;
+}
+
+/* A complete journal line: returns its case number, or -1. */
+static long check_line(const char *line, size_t len, long ncases)
+{
+    if (len < 11 || line[len - 1] != '\n' || line[0] == '#')
+        return -1;
+    const char *comma = NULL;
+    for (size_t i = len - 2; i > 0; i--)
+        if (line[i] == ',') {
+            comma = line + i;
+            break;
+        }
+    if (!comma || (size_t)(line + len - 1 - comma) != 9)
+        return -1;
+    char hex[9];
+    memcpy(hex, comma + 1, 8);
+    hex[8] = '\0';
+    char *end;
+    unsigned long sum = strtoul(hex, &end, 16);
+    if (*end || sum != fnv32(line, (size_t)(comma - line) + 1))
+        return -1;
+    long k = strtol(line, &end, 10);
+    return (*end == ',' && k >= 0 && k < ncases) ? k : -1;
+}
+
+static char *slurp(const char *path, size_t *len)
+{
+    FILE *fp = fopen(path, "rb");
+    if (!fp)
+        return NULL;
+    fseek(fp, 0, SEEK_END);
+    long n = ftell(fp);
+    fseek(fp, 0, SEEK_SET);
+    char *buf = n >= 0 ? malloc((size_t)n + 1) : NULL;
+    if (buf && fread(buf, 1, (size_t)n, fp) != (size_t)n) {
+        free(buf);
+        buf = NULL;
+    }
+    fclose(fp);
+    if (buf) {
+        buf[n] = '\0';
+        *len = (size_t)n;
+    }
+    return buf;
+}
+
+int gw_sweep_journal_scan(const char *dir, const gw_sweep_config *cfg, char *done, long *ndone, gw_err *err)
+{
+    char path[4096];
+    *ndone = 0;
+    if (gw_path_join(path, sizeof path, dir, "journal.csv") != GW_OK)
+        return gw_err_set(err, GW_EINVAL, "%s: path too long", dir);
+    size_t len = 0;
+    char *buf = slurp(path, &len);
+    char head[96];
+    snprintf(head, sizeof head, "# granwave sweep journal %016lx\n", cfg->hash);
+    if (!buf) {
+        if (errno != ENOENT)
+            return gw_err_set(err, GW_EIO, "%s: cannot read: %s", path, strerror(errno));
+        return gw_write_text(path, head, err); /* a new journal */
+    }
+    if (strncmp(buf, "# granwave sweep journal ", 25) != 0 || strncmp(buf, head, strlen(head)) != 0) {
+        free(buf);
+        return gw_err_set(err, GW_EINVAL,
+                          "%s: this directory holds another sweep (different config); remove it or choose another output",
+                          dir);
+    }
+    size_t good = strlen(head), pos = good;
+    while (pos < len) {
+        const char *nl = memchr(buf + pos, '\n', len - pos);
+        size_t l = nl ? (size_t)(nl - (buf + pos)) + 1 : len - pos;
+        long k = check_line(buf + pos, l, cfg->ncases);
+        if (k >= 0) {
+            if (!done[k])
+                (*ndone)++;
+            done[k] = 1;
+            good = pos + l;
+        } else {
+            break; /* a torn row can only be the last one */
+        }
+        pos += l;
+    }
+    free(buf);
+    if (good < len && truncate(path, (off_t)good) != 0)
+        return gw_err_set(err, GW_EIO, "%s: cannot cut a torn row: %s", path, strerror(errno));
+    return GW_OK;
+}
+
+int gw_sweep_journal_append(int fd, const char *row, gw_err *err)
+{
+    size_t n = strlen(row);
+    ssize_t w = write(fd, row, n);
+    if (w != (ssize_t)n || fsync(fd) != 0)
+        return gw_err_set(err, GW_EIO, "sweep journal: write failed: %s", strerror(errno));
+    return GW_OK;
+}
+
+typedef struct row_ref {
+    long k;
+    const char *s;
+    size_t len;
+} row_ref;
+
+static int cmp_rows(const void *a, const void *b)
+{
+    long x = ((const row_ref *)a)->k, y = ((const row_ref *)b)->k;
+    return (x > y) - (x < y);
+}
+
+int gw_sweep_write_table(const char *dir, const gw_sweep_config *cfg, const gw_sweep_model *m, gw_err *err)
+{
+    char path[4096];
+    if (gw_path_join(path, sizeof path, dir, "journal.csv") != GW_OK)
+        return gw_err_set(err, GW_EINVAL, "%s: path too long", dir);
+    size_t len = 0;
+    char *buf = slurp(path, &len);
+    if (!buf)
+        return gw_err_set(err, GW_EIO, "%s: cannot read", path);
+    row_ref *rows = calloc((size_t)cfg->ncases + 1, sizeof *rows);
+    char *seen = calloc((size_t)cfg->ncases + 1, 1);
+    long nr = 0;
+    for (size_t pos = 0; rows && seen && pos < len;) {
+        const char *nl = memchr(buf + pos, '\n', len - pos);
+        size_t l = nl ? (size_t)(nl - (buf + pos)) + 1 : len - pos;
+        long k = check_line(buf + pos, l, cfg->ncases);
+        if (k >= 0 && !seen[k]) {
+            seen[k] = 1;
+            rows[nr++] = (row_ref){k, buf + pos, l - 10}; /* drop ",checksum\n" */
+        }
+        pos += l;
+    }
+    int rc = GW_OK;
+    if (!rows || !seen) {
+        rc = gw_err_set(err, GW_ENOMEM, "sweep: out of memory");
+    } else {
+        qsort(rows, (size_t)nr, sizeof *rows, cmp_rows);
+        gw_afile f;
+        if (gw_path_join(path, sizeof path, dir, "results.csv") != GW_OK)
+            rc = gw_err_set(err, GW_EINVAL, "%s: path too long", dir);
+        else if ((rc = gw_afile_open(&f, path, err)) == GW_OK) {
+            fprintf(f.fp, "# granwave %s sweep, model %s, config %016lx, %ld of %ld cases\n", gw_version(),
+                    cfg->model, cfg->hash, nr, cfg->ncases);
+            for (int i = 0; i < cfg->nparams; i++)
+                fprintf(f.fp, "# param %s = %s\n", cfg->params[i].name, cfg->params[i].values[0]);
+            fprintf(f.fp, "case");
+            for (int i = 0; i < cfg->ngrid; i++)
+                fprintf(f.fp, ",%s", cfg->grid[i].name);
+            for (int i = 0; i < m->ncolumns; i++)
+                fprintf(f.fp, ",%s", m->columns[i]);
+            fputc('\n', f.fp);
+            for (long i = 0; i < nr; i++) {
+                fwrite(rows[i].s, 1, rows[i].len, f.fp);
+                fputc('\n', f.fp);
+            }
+            rc = gw_afile_commit(&f, err);
+        }
+    }
+    free(rows);
+    free(seen);
+    free(buf);
+    return rc;
+}

@@ -1,0 +1,89 @@
+/*
+ * gw_sweep.h: grids of independent cases described by an INI config file, run
+ * resumably (an append-only journal of complete, checksummed rows) by threads or
+ * MPI ranks, gathered into one table sorted by case number.
+ *
+ * Config format (parsed with libinih; '#' or ';' comments):
+ *   [sweep]
+ *   model = chain              ; which model runs the cases
+ *   out = results/my_sweep     ; output directory (or --out DIR)
+ *   [grid]                     ; every combination of these values is a case
+ *   n = 1:40                   ; integer range A:B, or a comma list
+ *   vimp = 0.1, 0.2, 0.3
+ *   [params]                   ; the same for every case
+ *   solver = rk4
+ * Keys of [grid] and [params] are the model command's option names (for the
+ * chain: the options of `granwave chain`, without the leading --). Case numbers
+ * run over the grid with the last grid key varying fastest.
+ */
+#ifndef GW_SWEEP_H
+#define GW_SWEEP_H
+
+#include "gw_common.h"
+
+#define GW_SWEEP_MAX_KEYS 32
+
+typedef struct gw_sweep_key {
+    char *name;
+    char **values; /* grid values (strings as given), or one value for params */
+    int nvalues;
+    int line;      /* config line, for messages */
+} gw_sweep_key;
+
+typedef struct gw_sweep_config {
+    char *model;
+    char *out;
+    gw_sweep_key grid[GW_SWEEP_MAX_KEYS];
+    int ngrid;
+    gw_sweep_key params[GW_SWEEP_MAX_KEYS];
+    int nparams;
+    long ncases;
+    unsigned long hash; /* of the normalised config: a journal belongs to one config */
+} gw_sweep_config;
+
+/* A model that runs one case: name/value pairs in, ncolumns numbers out. */
+typedef struct gw_sweep_model {
+    const char *name;
+    int ncolumns;
+    const char *const *columns;
+    /* Is name an option of this model? (unknown keys are refused at parse time) */
+    int (*has_key)(const char *name);
+    /* Run a case. Returns GW_OK, GW_EINVAL (bad value: message names it) or a
+     * run failure. */
+    int (*run)(int nkeys, const char *const *names, const char *const *values, double *out,
+               gw_err *err);
+    /* Validate a case without running it (may be NULL). */
+    int (*check)(int nkeys, const char *const *names, const char *const *values, gw_err *err);
+} gw_sweep_model;
+
+/* The `granwave sweep` command over the given models. */
+int gw_cmd_sweep(int argc, char **argv, const gw_sweep_model *const *models, int nmodels);
+
+/* Parse path. Errors (exit code 2 material): unreadable file, syntax error or
+ * unknown section/key with "path:line: ..." in err, empty grid values, a grid
+ * larger than 1e9 cases. models/nmodels: the known models. */
+int gw_sweep_config_read(const char *path, const gw_sweep_model *const *models, int nmodels,
+                         gw_sweep_config *cfg, const gw_sweep_model **model, gw_err *err);
+void gw_sweep_config_free(gw_sweep_config *cfg);
+
+/* The name/value pairs of case k (grid values, then params). names/values must
+ * hold ngrid + nparams entries; they point into cfg. */
+int gw_sweep_case(const gw_sweep_config *cfg, long k, const char **names, const char **values);
+
+/* One journal row: "k,<grid values>,<numbers>,<checksum>\n" into buf. */
+int gw_sweep_format_row(const gw_sweep_config *cfg, long k, const double *out, int ncol,
+                        char *buf, size_t n);
+
+/* Read DIR/journal.csv: done[k] = 1 for every complete row with a valid checksum.
+ * A torn last line (no newline or bad checksum) is cut off the file. */
+int gw_sweep_journal_scan(const char *dir, const gw_sweep_config *cfg, char *done, long *ndone,
+                          gw_err *err);
+
+/* Append one row to DIR/journal.csv with a single write and fsync. */
+int gw_sweep_journal_append(int fd, const char *row, gw_err *err);
+
+/* Write DIR/results.csv (header, rows sorted by case) atomically from the journal. */
+int gw_sweep_write_table(const char *dir, const gw_sweep_config *cfg, const gw_sweep_model *m,
+                         gw_err *err);
+
+#endif

@@ -1,0 +1,322 @@
+/*
+ * sweep_cmd.c: `granwave sweep CONFIG`, a grid of independent cases (gw_sweep.h).
+ *
+ * Serial runs use one thread per core; under mpirun (OpenMPI) rank 0 is the only
+ * writer and hands out cases one at a time (dynamic load balancing: cases differ
+ * a lot in cost) to the other ranks. Finished cases go to DIR/journal.csv as they
+ * complete; a rerun with the same config skips them, so a sweep killed by
+ * SIGINT, SIGTERM or kill -9 resumes without losing finished cases. At the end
+ * DIR/results.csv holds one row per case sorted by case number, identical
+ * whichever way the cases were run.
+ */
+#define _POSIX_C_SOURCE 200809L
+#include <fcntl.h>
+#include <pthread.h>
+#include <signal.h>
+#include <stdatomic.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "gw_sweep.h"
+#if GW_HAVE_MPI
+#include <mpi.h>
+#endif
+
+#define ROW_MAX 8192
+
+static volatile sig_atomic_t stop_requested;
+
+static void on_signal(int sig)
+{
+    (void)sig;
+    stop_requested = 1;
+    signal(SIGINT, SIG_DFL); /* a second signal ends the program at once */
+    signal(SIGTERM, SIG_DFL);
+}
+
+typedef struct sweep_run {
+    const gw_sweep_config *cfg;
+    const gw_sweep_model *m;
+    long *todo;
+    long ntodo, ndone0;
+    atomic_long next;
+    long done;
+    int fd, quiet, failed;
+    gw_err err;
+    pthread_mutex_t lock;
+    double t0, last_report;
+} sweep_run;
+
+static int run_case(const sweep_run *s, long k, char *row, gw_err *err)
+{
+    const char *names[2 * GW_SWEEP_MAX_KEYS], *values[2 * GW_SWEEP_MAX_KEYS];
+    double out[64];
+    gw_sweep_case(s->cfg, k, names, values);
+    int rc = s->m->run(s->cfg->ngrid + s->cfg->nparams, names, values, out, err);
+    if (rc != GW_OK) {
+        char tmp[sizeof err->msg];
+        snprintf(tmp, sizeof tmp, "%s", err->msg);
+        return gw_err_set(err, rc, "case %ld: %s", k, tmp);
+    }
+    return gw_sweep_format_row(s->cfg, k, out, s->m->ncolumns, row, ROW_MAX);
+}
+
+/* Record a finished row (caller holds the lock) and report progress. */
+static int record(sweep_run *s, const char *row, gw_err *err)
+{
+    int rc = gw_sweep_journal_append(s->fd, row, err);
+    s->done++;
+    double now = gw_clock_ms();
+    if (!s->quiet && (now - s->last_report > 2000 || s->done == s->ntodo)) {
+        double rate = s->done / ((now - s->t0) / 1e3);
+        fprintf(stderr, "sweep: %ld/%ld cases (%ld done before), %.2f cases/s, ~%.0f s left\n", s->done, s->ntodo,
+                s->ndone0, rate, (s->ntodo - s->done) / (rate > 0 ? rate : 1));
+        s->last_report = now;
+    }
+    return rc;
+}
+
+static void *worker(void *arg)
+{
+    sweep_run *s = arg;
+    char *row = malloc(ROW_MAX);
+    while (row && !stop_requested) {
+        long i = atomic_fetch_add(&s->next, 1);
+        if (i >= s->ntodo)
+            break;
+        pthread_mutex_lock(&s->lock);
+        int failed = s->failed;
+        pthread_mutex_unlock(&s->lock);
+        if (failed)
+            break;
+        gw_err err = {{0}};
+        int rc = run_case(s, s->todo[i], row, &err);
+        pthread_mutex_lock(&s->lock);
+        if (rc == GW_OK)
+            rc = record(s, row, &err);
+        if (rc != GW_OK && !s->failed) {
+            s->failed = rc;
+            s->err = err;
+        }
+        pthread_mutex_unlock(&s->lock);
+    }
+    free(row);
+    return NULL;
+}
+
+static void run_threads(sweep_run *s, long jobs)
+{
+    if (jobs <= 0)
+        jobs = sysconf(_SC_NPROCESSORS_ONLN);
+    if (jobs < 1)
+        jobs = 1;
+    if (jobs > s->ntodo)
+        jobs = s->ntodo > 0 ? s->ntodo : 1;
+    pthread_t *th = calloc((size_t)jobs, sizeof *th);
+    long started = 0;
+    for (long j = 0; th && j < jobs; j++)
+        if (pthread_create(&th[j], NULL, worker, s) == 0)
+            started++;
+    if (started == 0)
+        worker(s);
+    for (long j = 0; j < started; j++)
+        pthread_join(th[j], NULL);
+    free(th);
+}
+
+#if GW_HAVE_MPI
+enum { TAG_READY = 1, TAG_ROW = 2, TAG_FAIL = 3, TAG_WORK = 4 };
+
+static void mpi_master(sweep_run *s, int size)
+{
+    char *buf = malloc(ROW_MAX + 16);
+    int active = size - 1;
+    long next = 0;
+    while (active > 0 && buf) {
+        MPI_Status st;
+        MPI_Recv(buf, ROW_MAX + 16, MPI_CHAR, MPI_ANY_SOURCE, MPI_ANY_TAG, MPI_COMM_WORLD, &st);
+        gw_err err = {{0}};
+        if (st.MPI_TAG == TAG_ROW) {
+            int rc = record(s, buf, &err);
+            if (rc != GW_OK && !s->failed) {
+                s->failed = rc;
+                s->err = err;
+            }
+        } else if (st.MPI_TAG == TAG_FAIL && !s->failed) {
+            s->failed = buf[0] == 'I' ? GW_EINVAL : GW_ESOLVER;
+            gw_err_set(&s->err, s->failed, "%s", buf + 1);
+        }
+        long k = -1;
+        if (next < s->ntodo && !s->failed && !stop_requested)
+            k = s->todo[next++];
+        else
+            active--;
+        MPI_Send(&k, 1, MPI_LONG, st.MPI_SOURCE, TAG_WORK, MPI_COMM_WORLD);
+    }
+    free(buf);
+}
+
+static void mpi_worker(sweep_run *s)
+{
+    char *row = malloc(ROW_MAX + 16);
+    char dummy = 0;
+    MPI_Send(&dummy, 1, MPI_CHAR, 0, TAG_READY, MPI_COMM_WORLD);
+    for (;;) {
+        long k;
+        MPI_Recv(&k, 1, MPI_LONG, 0, TAG_WORK, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+        if (k < 0 || !row)
+            break;
+        gw_err err = {{0}};
+        int rc = run_case(s, k, row, &err);
+        if (rc == GW_OK) {
+            MPI_Send(row, (int)strlen(row) + 1, MPI_CHAR, 0, TAG_ROW, MPI_COMM_WORLD);
+        } else {
+            snprintf(row, ROW_MAX, "%c%s", rc == GW_EINVAL ? 'I' : 'F', err.msg);
+            MPI_Send(row, (int)strlen(row) + 1, MPI_CHAR, 0, TAG_FAIL, MPI_COMM_WORLD);
+        }
+    }
+    free(row);
+}
+#endif
+
+static const char *summary =
+    "Run every case of the grid in CONFIG (an INI file: [sweep] model/out, [grid]\n"
+    "keys with lists or A:B ranges, [params] fixed keys; keys are the model command's\n"
+    "options). Resumable: finished cases are journaled in OUT/journal.csv and skipped\n"
+    "on a rerun; OUT/results.csv gets one row per case, sorted. Under mpirun, rank 0\n"
+    "writes and hands out cases to the other ranks; otherwise one thread per core.";
+
+int gw_cmd_sweep(int argc, char **argv, const gw_sweep_model *const *models, int nmodels)
+{
+    const char *out = NULL;
+    long jobs = 0;
+    int quiet = 0, help = 0, npos = 0, check_only = 0;
+    const char *pos[1] = {NULL};
+    gw_opt opts[] = {
+        {.name = "out", .kind = GW_OPT_STRING, .dest = &out, .metavar = "DIR", .help = "output directory [config's [sweep] out]"},
+        {.name = "jobs", .kind = GW_OPT_LONG, .dest = &jobs, .metavar = "J", .help = "threads without MPI [0 = one per CPU]", .lo = 0, .hi = 4096},
+        {.name = "check", .kind = GW_OPT_FLAG, .dest = &check_only, .help = "validate the config and every case, run nothing"},
+        {.name = "quiet", .kind = GW_OPT_FLAG, .dest = &quiet, .help = "no progress lines"},
+        {0}};
+    gw_err err = {{0}};
+    int rank = 0, size = 1, use_mpi = 0;
+#if GW_HAVE_MPI
+    use_mpi = getenv("OMPI_COMM_WORLD_SIZE") || getenv("PMI_SIZE");
+    if (use_mpi) {
+        MPI_Init(NULL, NULL);
+        MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+        MPI_Comm_size(MPI_COMM_WORLD, &size);
+    }
+#endif
+    int code = 0;
+    gw_sweep_config cfg;
+    memset(&cfg, 0, sizeof cfg);
+    const gw_sweep_model *m = NULL;
+    sweep_run s;
+    memset(&s, 0, sizeof s);
+    char *done = NULL;
+    if (gw_cli_parse("sweep", opts, argc, argv, &help, pos, 1, &npos, &err) != GW_OK) {
+        code = 2;
+    } else if (help) {
+        if (rank == 0)
+            gw_cli_help(stdout, "sweep", "granwave sweep CONFIG [--out DIR] [options]", summary, opts);
+        goto finish;
+    } else if (npos != 1) {
+        gw_err_set(&err, GW_EINVAL, "a config file is required (see granwave sweep --help)");
+        code = 2;
+    } else if (gw_sweep_config_read(pos[0], models, nmodels, &cfg, &m, &err) != GW_OK) {
+        code = 2;
+    } else if (!out && !(out = cfg.out)) {
+        gw_err_set(&err, GW_EINVAL, "%s: no output directory ([sweep] out or --out)", pos[0]);
+        code = 2;
+    }
+    /* Validate every case before running anything (bad values exit 2). */
+    if (code == 0 && rank == 0 && m->check) {
+        const char *names[2 * GW_SWEEP_MAX_KEYS], *values[2 * GW_SWEEP_MAX_KEYS];
+        for (long k = 0; k < cfg.ncases && code == 0; k++) {
+            gw_sweep_case(&cfg, k, names, values);
+            if (m->check(cfg.ngrid + cfg.nparams, names, values, &err) != GW_OK)
+                code = 2;
+        }
+        if (code)
+            fprintf(stderr, "granwave sweep: %s: %s\n", pos[0], err.msg);
+        err.msg[0] = '\0';
+    }
+    if (code == 0 && check_only) {
+        if (rank == 0)
+            printf("sweep: %s is valid: model %s, %ld cases\n", pos[0], cfg.model, cfg.ncases);
+        goto finish;
+    }
+    if (code == 0 && rank == 0) {
+        done = calloc((size_t)cfg.ncases, 1);
+        s.todo = malloc((size_t)cfg.ncases * sizeof *s.todo);
+        if (!done || !s.todo)
+            code = 1, gw_err_set(&err, GW_ENOMEM, "out of memory");
+        else if (gw_mkdir_p(out, &err) != GW_OK || gw_sweep_journal_scan(out, &cfg, done, &s.ndone0, &err) != GW_OK)
+            code = 2;
+    }
+    char jpath[4096];
+    if (code == 0 && rank == 0) {
+        for (long k = 0; k < cfg.ncases; k++)
+            if (!done[k])
+                s.todo[s.ntodo++] = k;
+        gw_path_join(jpath, sizeof jpath, out, "journal.csv");
+        s.fd = open(jpath, O_WRONLY | O_APPEND);
+        if (s.fd < 0)
+            code = 1, gw_err_set(&err, GW_EIO, "%s: cannot open for appending", jpath);
+    }
+#if GW_HAVE_MPI
+    if (use_mpi)
+        MPI_Bcast(&code, 1, MPI_INT, 0, MPI_COMM_WORLD);
+#endif
+    if (code == 0) {
+        s.cfg = &cfg;
+        s.m = m;
+        s.quiet = quiet;
+        s.t0 = s.last_report = gw_clock_ms();
+        pthread_mutex_init(&s.lock, NULL);
+        signal(SIGINT, on_signal);
+        signal(SIGTERM, on_signal);
+        if (rank == 0 && !quiet)
+            fprintf(stderr, "sweep: %ld cases, %ld already done, %ld to run on %s\n", cfg.ncases, s.ndone0, s.ntodo,
+                    use_mpi && size > 1 ? "MPI ranks" : "threads");
+#if GW_HAVE_MPI
+        if (use_mpi && size > 1) {
+            if (rank == 0)
+                mpi_master(&s, size);
+            else
+                mpi_worker(&s);
+        } else
+#endif
+            if (rank == 0)
+            run_threads(&s, jobs);
+        pthread_mutex_destroy(&s.lock);
+        if (rank == 0) {
+            close(s.fd);
+            if (s.failed) {
+                err = s.err;
+                code = s.failed == GW_EINVAL ? 2 : 1;
+            } else if (stop_requested) {
+                fprintf(stderr, "sweep: interrupted after %ld new cases; rerun the same command to resume\n", s.done);
+                code = 130;
+            } else if (gw_sweep_write_table(out, &cfg, m, &err) != GW_OK) {
+                code = 1;
+            } else if (!quiet) {
+                fprintf(stderr, "sweep: %ld cases in %.1f s; table %s/results.csv\n", s.done,
+                        (gw_clock_ms() - s.t0) / 1e3, out);
+            }
+        }
+    }
+    if (code != 0 && code != 130 && rank == 0 && err.msg[0])
+        fprintf(stderr, strncmp(err.msg, "sweep", 5) == 0 ? "granwave %s\n" : "granwave sweep: %s\n", err.msg);
+finish:
+    free(done);
+    free(s.todo);
+    gw_sweep_config_free(&cfg);
+#if GW_HAVE_MPI
+    if (use_mpi)
+        MPI_Finalize();
+#endif
+    return code;
+}

@@ -1,0 +1,340 @@
+#!/usr/bin/python3
+"""plot_falcon.py DIR: figures of a `granwave falcon --out DIR` run, written to DIR/figures/.
+
+Reads (all produced by the program; nothing is recomputed here but unit conversions):
+  falcon_runs.csv              F_max, tau_N, E_rel/E_K per (v_imp, N)
+  falcon_final_velocities.csv  final velocity of every bead
+  falcon_summary.json          per-velocity fit (T_q, intercept) and closed forms
+  trace_n7_wall_force.csv, trace_n7_beads.csv   required
+  trace_n15_wall_force.csv, trace_n30_wall_force.csv   optional (the program writes them
+                               only when N = 15 / 30 is in its --n range): a missing one
+                               is reported on stderr and left out of the figure
+and data/falcon1998/rigid_wall.csv for the paper's measured F_max (69 N at h = 5.1 mm,
+51.8 N at h = 3.1 mm, drawn with a +-5 % band).
+
+Writes fmax_vs_n.png, taun_vs_n.png, wall_force_n7_15_30.png, velocities_n7.png,
+erel_vs_n.png, final_velocities.png. Each PNG carries the program version and settings
+in its metadata and a footer line.
+
+Exit status: 0 ok, 2 if DIR or a required file is missing or unreadable.
+Use Debian's /usr/bin/python3. The functions (load_run, make_figures) are also used by
+notebooks/falcon_column.ipynb to show the figures inline.
+"""
+
+import json
+import os
+import sys
+
+import numpy as np
+import matplotlib
+from matplotlib.figure import Figure
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import gwdata  # noqa: E402
+
+US = 1e6  # s -> us
+REQUIRED = ["falcon_runs.csv", "falcon_final_velocities.csv", "falcon_summary.json",
+            "trace_n7_wall_force.csv", "trace_n7_beads.csv"]
+OPTIONAL_TRACES = [15, 30]
+RUN_COLUMNS = ["v_imp_m_s", "h_mm", "n", "f_max_N", "tau_n_s", "e_rel_over_e_k"]
+FINAL_COLUMNS = ["v_imp_m_s", "n", "bead", "final_v_m_s"]
+FIGURES = ["fmax_vs_n", "taun_vs_n", "wall_force_n7_15_30", "velocities_n7", "erel_vs_n",
+           "final_velocities"]
+PAPER_BAND = 0.05  # "independent of N within 5 %" (physics.md 1.7)
+
+
+class InputError(Exception):
+    """A missing or malformed input; main() prints it and exits with 2."""
+
+
+def _csv(path, columns=()):
+    try:
+        t = gwdata.load_csv(path)
+    except FileNotFoundError:
+        raise InputError(f"missing file {path}")
+    except (ValueError, OSError) as e:
+        raise InputError(f"cannot read {path}: {e}")
+    missing = [c for c in columns if c not in t]
+    if missing:
+        raise InputError(f"{path}: missing column(s) {', '.join(missing)}")
+    for c in columns:
+        if not isinstance(t[c], np.ndarray):
+            raise InputError(f"{path}: column {c} is not numeric")
+    return t
+
+
+def load_run(d):
+    """Everything plot_falcon needs from DIR d, as a dict. Raises InputError."""
+    if not os.path.isdir(d):
+        raise InputError(f"no such directory {d} (run: granwave falcon --out {d})")
+    for f in REQUIRED:
+        if not os.path.isfile(os.path.join(d, f)):
+            raise InputError(f"missing file {os.path.join(d, f)} "
+                             f"(is {d} the --out directory of granwave falcon?)")
+    run = {"dir": d, "notes": []}
+    run["runs"] = _csv(os.path.join(d, "falcon_runs.csv"), RUN_COLUMNS)
+    run["final"] = _csv(os.path.join(d, "falcon_final_velocities.csv"), FINAL_COLUMNS)
+    path = os.path.join(d, "falcon_summary.json")
+    try:
+        with open(path) as f:
+            run["summary"] = json.load(f)
+        vel = run["summary"]["velocities"]
+        for key in ("v_imp", "h_mm", "t_q", "t_q_err", "tau_fit_intercept", "f_max_1_theory"):
+            for v in vel:
+                v[key]  # noqa: B018 (presence check)
+    except (OSError, ValueError) as e:
+        raise InputError(f"cannot read {path}: {e}")
+    except (KeyError, TypeError) as e:
+        raise InputError(f"{path}: missing key {e}")
+    run["wall"] = {}
+    for n in [7] + OPTIONAL_TRACES:
+        p = os.path.join(d, f"trace_n{n}_wall_force.csv")
+        if n != 7 and not os.path.isfile(p):
+            run["notes"].append(f"{p} not found (N = {n} outside the run's --n range?): "
+                                f"left out of wall_force_n7_15_30.png")
+            continue
+        run["wall"][n] = _csv(p, ["t_s", "f_wall_N"])
+    run["beads7"] = _csv(os.path.join(d, "trace_n7_beads.csv"), ["t_s", "v1_m_s"])
+    return run
+
+
+def _velocity_groups(run):
+    """[(v_imp, h_mm or None, summary entry or None, row mask)], in the file's order."""
+    r = run["runs"]
+    out, seen = [], []
+    summ = run["summary"].get("velocities", [])
+    for v in r["v_imp_m_s"]:
+        if any(abs(v - s) <= 1e-12 * max(1.0, abs(v)) for s in seen):
+            continue
+        seen.append(v)
+        mask = np.abs(r["v_imp_m_s"] - v) <= 1e-12 * max(1.0, abs(v))
+        h = r["h_mm"][mask][0]
+        entry = next((s for s in summ if abs(s["v_imp"] - v) <= 1e-9 * max(1.0, abs(v))), None)
+        out.append((v, None if not np.isfinite(h) else float(h), entry, mask))
+    return out
+
+
+def _label(v, h):
+    return f"v_imp = {v:.3f} m/s" if h is None else f"h = {h:g} mm (v_imp = {v:.3f} m/s)"
+
+
+def _color(i):
+    return matplotlib.colormaps["tab10"](i % 10)
+
+
+def _footer(fig, run):
+    s = run["summary"]
+    solver = s.get("settings", {}).get("solver", {})
+    model = s.get("settings", {}).get("model", {})
+    text = (f"granwave {s.get('version', '?')} falcon; {model.get('material', '?')} beads, "
+            f"m = {model.get('mass', float('nan')):.4g} kg; {solver.get('name', '?')} "
+            f"rtol {solver.get('rtol', '?')}; {os.path.abspath(run['dir'])}")
+    fig.text(0.005, 0.003, text, fontsize=6, color="0.4", ha="left", va="bottom")
+    # keep the axes (and their x label) clear of this footer line
+    fig.get_layout_engine().set(rect=(0, 0.025, 1, 0.975))
+
+
+def _reference_velocity(groups):
+    """The group to use for single-velocity figures: v_imp = 0.3 if present, else the first."""
+    for g in groups:
+        if abs(g[0] - 0.3) < 1e-9:
+            return g
+    return groups[0]
+
+
+def fig_fmax(run, groups):
+    fig = Figure(figsize=(10.5, 5.5), layout="constrained")
+    ax = fig.add_subplot()
+    r = run["runs"]
+    nmax = np.nanmax(r["n"])
+    for i, (v, h, s, m) in enumerate(groups):
+        c = _color(i)
+        ax.plot(r["n"][m], r["f_max_N"][m], "o-", ms=3.5, lw=1, color=c, label=_label(v, h))
+        if s is not None and s.get("f_max_1_theory") is not None:
+            ax.axhline(s["f_max_1_theory"], color=c, ls="--", lw=0.9)
+    ax.plot([], [], "k--", lw=0.9, label="single bead F_max(1), closed form (F.13)")
+    for h_paper in (5.1, 3.1):
+        pv = gwdata.paper_value("f_max", h_paper)
+        if pv is None:
+            continue
+        idx = next((i for i, g in enumerate(groups) if g[1] is not None
+                    and abs(g[1] - h_paper) < 1e-9), None)
+        c = _color(idx) if idx is not None else "k"
+        val = pv[0]
+        ax.axhspan(val * (1 - PAPER_BAND), val * (1 + PAPER_BAND), color=c, alpha=0.12, lw=0)
+        ax.errorbar([nmax + 1.5], [val], yerr=[[val * PAPER_BAND], [val * PAPER_BAND]],
+                    fmt="*", ms=11, color=c, mec="k", capsize=4,
+                    label=f"paper (exp.) h = {h_paper:g} mm: {val:g} N +- 5 % band")
+    ax.set_xlabel("number of beads N")
+    ax.set_ylabel("peak wall force F_max (N)")
+    ax.set_title("Peak wall force vs column length (rigid wall, no dissipation)")
+    ax.set_xlim(0, nmax + 3)
+    ax.legend(fontsize=7.5, loc="upper left", bbox_to_anchor=(1.01, 1.0))
+    ax.grid(alpha=0.3)
+    _footer(fig, run)
+    return fig
+
+
+def fig_taun(run, groups):
+    fig = Figure(figsize=(8, 5.5), layout="constrained")
+    ax = fig.add_subplot()
+    r = run["runs"]
+    paper_tq = {h: gwdata.paper_value("t_q", h) for h in (5.1, 2.9)}
+    for i, (v, h, s, m) in enumerate(groups):
+        c = _color(i)
+        n, tau = r["n"][m], r["tau_n_s"][m]
+        ax.plot(n, tau * US, "o", ms=3.5, color=c)
+        label = _label(v, h)
+        if s is not None and s.get("t_q") is not None:
+            nn = np.linspace(np.nanmin(n), np.nanmax(n), 2)
+            ax.plot(nn, (s["t_q"] * (nn - 1) + s["tau_fit_intercept"]) * US, "-", lw=1, color=c)
+            err = s.get("t_q_err")
+            label += f": T_q = {s['t_q'] * US:.2f}" + (f" +- {err * US:.2f}" if err else "") + " us"
+            tq20 = s.get("t_q_n20")
+            if tq20 is not None and np.nanmax(n) > 20 and abs(tq20 - s["t_q"]) > 1e-12:
+                label += f" [N <= 20: {tq20 * US:.2f}]"
+            pt = paper_tq.get(h) if h is not None else None
+            if pt is not None:
+                label += f" (paper {pt[0]:g} us)"
+        ax.plot([], [], "o-", ms=3.5, lw=1, color=c, label=label)
+    ax.set_xlabel("number of beads N")
+    ax.set_ylabel("contact duration tau_N (us)")
+    ax.set_title("Column-wall contact duration; lines: fit tau_N = T_q (N - 1) + intercept (F.4)")
+    ax.legend(fontsize=7.5, loc="upper left")
+    ax.grid(alpha=0.3)
+    _footer(fig, run)
+    return fig
+
+
+def fig_wall_force(run, groups):
+    fig = Figure(figsize=(9, 5), layout="constrained")
+    ax = fig.add_subplot()
+    for i, (n, t) in enumerate(sorted(run["wall"].items())):
+        ax.plot(t["t_s"] * US, t["f_wall_N"], lw=1, color=_color(i), label=f"N = {n}")
+    ax.set_xlabel("time since first contact t (us)")
+    ax.set_ylabel("wall force F_0 (N)")
+    v0 = run["beads7"]["v1_m_s"][0]  # the traces' impact velocity (0.3 m/s by default)
+    ax.set_title(f"Force on the wall (sensor) at v_imp = {v0:.3g} m/s")
+    ax.legend()
+    ax.grid(alpha=0.3)
+    _footer(fig, run)
+    return fig
+
+
+def fig_velocities_n7(run, groups):
+    b = run["beads7"]
+    t = b["t_s"] * US
+    nb = sum(1 for k in b if k.startswith("v") and k.endswith("_m_s"))
+    fig = Figure(figsize=(9, 5.5), layout="constrained")
+    ax = fig.add_subplot()
+    cmap = matplotlib.colormaps["viridis"]
+    for i in range(1, nb + 1):
+        ax.plot(t, b[f"v{i}_m_s"], lw=1, color=cmap((i - 1) / max(1, nb - 1)),
+                label=f"bead {i}" + (" (wall)" if i == 1 else " (top)" if i == nb else ""))
+    v0 = b["v1_m_s"][0]
+    ax.axhline(v0, color="0.5", ls=":", lw=0.8)
+    ax.axhline(-v0, color="0.5", ls=":", lw=0.8)
+    ax.axhline(0, color="0.7", lw=0.6)
+    ax.set_xlabel("time since first contact t (us)")
+    ax.set_ylabel("bead velocity v_i (m/s, positive toward the wall)")
+    ax.set_title(f"Bead velocities, N = {nb}, v_imp = {v0:.3g} m/s (dotted: +-v_imp)")
+    ax.legend(fontsize=8, ncol=2)
+    ax.grid(alpha=0.3)
+    _footer(fig, run)
+    return fig
+
+
+def fig_erel(run, groups):
+    fig = Figure(figsize=(8, 5), layout="constrained")
+    ax = fig.add_subplot()
+    r = run["runs"]
+    markers = "os^dvP*X"
+    for i, (v, h, s, m) in enumerate(groups):
+        ax.plot(r["n"][m], r["e_rel_over_e_k"][m], markers[i % len(markers)] + "-",
+                ms=7 - 0.9 * i, lw=0.8, mfc="none", color=_color(i), label=_label(v, h))
+    ax.set_xlabel("number of beads N")
+    ax.set_ylabel("E_rel / E_K at tau_N (F.20)")
+    ax.set_title("Relative kinetic energy (granular temperature) at the end of the collision\n"
+                 "(curves coincide when E_rel/E_K does not depend on v_imp, as for the "
+                 "dissipation-free Hertz chain)", fontsize=10)
+    ax.legend(fontsize=8)
+    ax.grid(alpha=0.3)
+    _footer(fig, run)
+    return fig
+
+
+def fig_final(run, groups):
+    fv = run["final"]
+    v, h, _, _ = _reference_velocity(groups)
+    sel = np.abs(fv["v_imp_m_s"] - v) <= 1e-9 * max(1.0, abs(v))
+    ns = sorted(set(int(n) for n in fv["n"][sel]))
+    wanted = [n for n in (3, 5, 10, 20, 30, 40) if n in ns] or ns[-4:]
+    fig = Figure(figsize=(8, 5.5), layout="constrained")
+    ax = fig.add_subplot()
+    cmap = matplotlib.colormaps["plasma"]
+    for j, n in enumerate(wanted):
+        m = sel & (fv["n"] == n)
+        order = np.argsort(fv["bead"][m])
+        ax.plot(fv["bead"][m][order], -fv["final_v_m_s"][m][order] / v, "o-", ms=3.5, lw=1,
+                color=cmap(j / max(1, len(wanted))), label=f"N = {n}")
+    ax.axhline(1.0, color="k", ls="--", lw=0.9, label="rebound speed = v_imp")
+    ax.set_xlabel("bead index i (1 = bead on the wall)")
+    ax.set_ylabel("final rebound speed -v_i^f / v_imp")
+    ax.set_title(f"Final velocities, {_label(v, h)}: top beads faster than v_imp, "
+                 "bottom ones slower", fontsize=10)
+    ax.legend(fontsize=8)
+    ax.grid(alpha=0.3)
+    _footer(fig, run)
+    return fig
+
+
+_MAKERS = {"fmax_vs_n": fig_fmax, "taun_vs_n": fig_taun, "wall_force_n7_15_30": fig_wall_force,
+           "velocities_n7": fig_velocities_n7, "erel_vs_n": fig_erel,
+           "final_velocities": fig_final}
+
+
+def make_figures(run):
+    """{name: matplotlib Figure} for a run from load_run (no backend or pyplot needed)."""
+    groups = _velocity_groups(run)
+    if not groups:
+        raise InputError(f"{run['dir']}/falcon_runs.csv has no rows")
+    return {name: _MAKERS[name](run, groups) for name in FIGURES}
+
+
+def write_figures(d, quiet=False):
+    """Load DIR d, write DIR/figures/*.png; returns the list of paths. Raises InputError."""
+    run = load_run(d)
+    for note in run["notes"]:
+        print(f"plot_falcon.py: note: {note}", file=sys.stderr)
+    figs = make_figures(run)
+    outdir = os.path.join(d, "figures")
+    os.makedirs(outdir, exist_ok=True)
+    meta = {"Software": f"granwave {run['summary'].get('version', '?')} + plot_falcon.py",
+            "Description": json.dumps(run["summary"].get("settings", {}), sort_keys=True),
+            "Source": os.path.abspath(d)}
+    paths = []
+    for name, fig in figs.items():
+        p = os.path.join(outdir, name + ".png")
+        fig.savefig(p, dpi=120, metadata=meta)
+        paths.append(p)
+        if not quiet:
+            print(p)
+    return paths
+
+
+def main(argv):
+    matplotlib.use("Agg")
+    if len(argv) != 2 or argv[1] in ("-h", "--help"):
+        print("usage: plot_falcon.py DIR   (DIR = granwave falcon --out DIR)",
+              file=sys.stderr if len(argv) != 2 else sys.stdout)
+        return 0 if len(argv) == 2 else 2
+    try:
+        write_figures(argv[1])
+    except InputError as e:
+        print(f"plot_falcon.py: error: {e}", file=sys.stderr)
+        return 2
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))

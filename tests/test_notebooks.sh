@@ -1,0 +1,76 @@
+#!/bin/bash
+# test_notebooks.sh GRANWAVE SRCDIR: the Python side of the Falcon study.
+#  1. `granwave falcon --out TMP` (N = 1..30 so that every trace the figures use is
+#     written), then notebooks/plot_falcon.py TMP must exit 0 and write the six PNGs of
+#     TMP/figures/, each a non-empty PNG file.
+#  2. plot_falcon.py must exit 2 (not crash) on a missing directory and on a directory
+#     with a required file removed.
+#  3. Every notebooks/*.ipynb executes headless (nbconvert --execute, Agg backend) with
+#     GRANWAVE set to the binary under test; outputs go to a temp dir, never the repo.
+# Exits non-zero with a message on the first failure. Skips (exit 0) only when
+# /usr/bin/jupyter is missing. Python: Debian's /usr/bin/python3 (numpy, matplotlib).
+set -u
+if [ $# -ne 2 ]; then
+    echo "usage: $0 GRANWAVE SRCDIR" >&2
+    exit 2
+fi
+GW=$(readlink -f "$1")
+SRC=$(readlink -f "$2")
+PY=/usr/bin/python3
+JUPYTER=/usr/bin/jupyter
+
+if [ ! -x "$JUPYTER" ]; then
+    echo "SKIP: $JUPYTER not found (install jupyter-nbconvert and python3-ipykernel)"
+    exit 0
+fi
+fail() { echo "FAIL: $*"; exit 1; }
+[ -x "$GW" ] || fail "granwave binary $1 not found or not executable"
+[ -x "$PY" ] || fail "$PY not found"
+[ -f "$SRC/notebooks/plot_falcon.py" ] || fail "$SRC/notebooks/plot_falcon.py not found"
+
+tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
+export MPLBACKEND=Agg PYTHONDONTWRITEBYTECODE=1 GRANWAVE="$GW"
+
+# 1. plot_falcon.py on a fresh run
+"$GW" falcon --out "$tmp/falcon" --n 1:30 --quiet >"$tmp/falcon.log" 2>&1 \
+    || { cat "$tmp/falcon.log"; fail "granwave falcon --out $tmp/falcon"; }
+"$PY" "$SRC/notebooks/plot_falcon.py" "$tmp/falcon" >"$tmp/plot.log" 2>&1 \
+    || { cat "$tmp/plot.log"; fail "plot_falcon.py $tmp/falcon"; }
+for f in fmax_vs_n taun_vs_n wall_force_n7_15_30 velocities_n7 erel_vs_n final_velocities; do
+    p="$tmp/falcon/figures/$f.png"
+    [ -s "$p" ] || fail "figure $f.png missing or empty"
+    [ "$(head -c 8 "$p" | od -An -tx1 | tr -d ' \n')" = "89504e470d0a1a0a" ] \
+        || fail "figure $f.png is not a PNG file"
+    echo "PASS: figure $f.png ($(stat -c %s "$p") bytes)"
+done
+
+# 2. clear errors (exit 2) on bad input
+"$PY" "$SRC/notebooks/plot_falcon.py" "$tmp/does-not-exist" >/dev/null 2>"$tmp/err.log"
+rc=$?
+[ $rc -eq 2 ] || fail "plot_falcon.py on a missing directory: exit $rc, expected 2"
+grep -q "does-not-exist" "$tmp/err.log" || fail "plot_falcon.py error does not name the directory"
+echo "PASS: missing directory -> exit 2: $(head -1 "$tmp/err.log")"
+mkdir "$tmp/partial"
+cp "$tmp/falcon/falcon_summary.json" "$tmp/falcon/falcon_final_velocities.csv" "$tmp/partial/"
+"$PY" "$SRC/notebooks/plot_falcon.py" "$tmp/partial" >/dev/null 2>"$tmp/err.log"
+rc=$?
+[ $rc -eq 2 ] || fail "plot_falcon.py without falcon_runs.csv: exit $rc, expected 2"
+grep -q "falcon_runs.csv" "$tmp/err.log" || fail "plot_falcon.py error does not name the missing file"
+echo "PASS: missing file -> exit 2: $(head -1 "$tmp/err.log")"
+
+# 3. every notebook, headless
+shopt -s nullglob
+nbs=("$SRC"/notebooks/*.ipynb)
+[ ${#nbs[@]} -gt 0 ] || fail "no notebooks in $SRC/notebooks"
+for nb in "${nbs[@]}"; do
+    name=$(basename "$nb")
+    start=$(date +%s)
+    if ! "$JUPYTER" nbconvert --to notebook --execute --ExecutePreprocessor.timeout=300 \
+            --output-dir "$tmp/nbout" "$nb" >"$tmp/nb.log" 2>&1; then
+        grep -v -e "frozen modules" -e "Debugger warning" -e "make the debugger" \
+             -e "PYDEVD_DISABLE_FILE_VALIDATION" "$tmp/nb.log" | tail -40
+        fail "notebook $name did not execute"
+    fi
+    echo "PASS: notebook $name executed in $(( $(date +%s) - start )) s"
+done
+echo "all notebook tests passed"

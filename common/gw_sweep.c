@@ -179,6 +179,10 @@ static unsigned long fnv64(unsigned long h, const char *s)
     return h ^ 0xff; /* separator */
 }
 
+static int config_finish(const char *path, const gw_sweep_model *const *models, int nmodels,
+                         gw_sweep_config *cfg, const gw_sweep_model **model, int rc,
+                         const parse_ctx *pc, gw_err *err);
+
 int gw_sweep_config_read(const char *path, const gw_sweep_model *const *models, int nmodels,
                          gw_sweep_config *cfg, const gw_sweep_model **model, gw_err *err)
 {
@@ -186,12 +190,29 @@ int gw_sweep_config_read(const char *path, const gw_sweep_model *const *models, 
     *model = NULL;
     parse_ctx pc = {cfg, models, nmodels, "", 0};
     int rc = ini_parse(path, handler, &pc);
+    return config_finish(path, models, nmodels, cfg, model, rc, &pc, err);
+}
+
+int gw_sweep_config_read_string(const char *text, const char *name, const gw_sweep_model *const *models,
+                                int nmodels, gw_sweep_config *cfg, const gw_sweep_model **model, gw_err *err)
+{
+    memset(cfg, 0, sizeof *cfg);
+    *model = NULL;
+    parse_ctx pc = {cfg, models, nmodels, "", 0};
+    int rc = ini_parse_string(text, handler, &pc);
+    return config_finish(name, models, nmodels, cfg, model, rc, &pc, err);
+}
+
+static int config_finish(const char *path, const gw_sweep_model *const *models, int nmodels,
+                         gw_sweep_config *cfg, const gw_sweep_model **model, int rc,
+                         const parse_ctx *pc, gw_err *err)
+{
     if (rc == -1) {
         gw_sweep_config_free(cfg);
         return gw_err_set(err, GW_EINVAL, "%s: cannot open the config file", path);
     }
     if (rc != 0) {
-        gw_err_set(err, GW_EINVAL, "%s:%d: %s", path, rc, pc.msg[0] ? pc.msg : "syntax error");
+        gw_err_set(err, GW_EINVAL, "%s:%d: %s", path, rc, pc->msg[0] ? pc->msg : "syntax error");
         gw_sweep_config_free(cfg);
         return GW_EINVAL;
     }

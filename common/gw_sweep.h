@@ -64,6 +64,9 @@ int gw_cmd_sweep(int argc, char **argv, const gw_sweep_model *const *models, int
  * larger than 1e9 cases. models/nmodels: the known models. */
 int gw_sweep_config_read(const char *path, const gw_sweep_model *const *models, int nmodels,
                          gw_sweep_config *cfg, const gw_sweep_model **model, gw_err *err);
+/* The same from a string (name is used in messages). */
+int gw_sweep_config_read_string(const char *text, const char *name, const gw_sweep_model *const *models,
+                                int nmodels, gw_sweep_config *cfg, const gw_sweep_model **model, gw_err *err);
 void gw_sweep_config_free(gw_sweep_config *cfg);
 
 /* The name/value pairs of case k (grid values, then params). names/values must

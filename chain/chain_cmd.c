@@ -111,6 +111,21 @@ int gw_cmd_chain(int argc, char **argv)
     if (rc != GW_OK) {
         fprintf(stderr, "granwave chain: %s\n", err.msg);
         code = rc == GW_EINVAL ? 2 : 1;
+        if (c.out) { /* keep what was computed: the trace up to the failure and its state */
+            char *hdr = chain_cli_header(&c, "chain", argc, argv);
+            char path[4096];
+            gw_err werr = {{0}};
+            cJSON *o = result_json(&c, &r, wall_ms);
+            cJSON_AddStringToObject(o, "error", err.msg);
+            if (gw_chain_trace_write(&tr, c.out, "chain", hdr ? hdr : "", &werr) != GW_OK ||
+                gw_path_join(path, sizeof path, c.out, "chain_failure.json") != GW_OK ||
+                gw_json_write(path, o, &werr) != GW_OK)
+                fprintf(stderr, "granwave chain --out: %s\n", werr.msg);
+            else
+                fprintf(stderr, "granwave chain: state at t = %.9g s and the trace so far are in %s\n", r.t_end, c.out);
+            cJSON_Delete(o);
+            free(hdr);
+        }
     } else {
         if (c.out) {
             char *hdr = chain_cli_header(&c, "chain", argc, argv);

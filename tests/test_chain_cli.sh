@@ -76,6 +76,8 @@ assert 60 < d["f_max"] < 75 and d["energy_error"] < 1e-8
 PYEOF
 check "chain --out writes CSV with a version header" bash -c "'$GW' chain --n 5 --out '$tmp/o' >/dev/null && head -1 '$tmp/o/chain_wall_force.csv' | grep -q 'granwave' && grep -q '^t_s,f_wall_N' '$tmp/o/chain_wall_force.csv' && test -s '$tmp/o/chain_beads.csv' && test -s '$tmp/o/chain.json'"
 check "falcon small run writes report and tables" bash -c "'$GW' falcon --n 1:8 --heights 5.1 --quiet --out '$tmp/f' >/dev/null && test -s '$tmp/f/report.md' && test -s '$tmp/f/falcon_runs.csv' && test -s '$tmp/f/falcon_summary.json' && test -s '$tmp/f/trace_n7_beads.csv'"
+check "solver failure: exit 1, backend message with the time, state kept" bash -c "'$GW' chain --n 40 --max-steps 30 --out '$tmp/fail' 2>'$tmp/ferr'; test \$? -eq 1 && grep -q 'failed at t = ' '$tmp/ferr' && grep -q 'mxstep' '$tmp/ferr' && test -s '$tmp/fail/chain_failure.json' && test -s '$tmp/fail/chain_wall_force.csv'"
+check "energy monitor: exit 1 naming the limit" bash -c "'$GW' chain --n 10 --energy-tol 1e-14 2>'$tmp/eerr'; test \$? -eq 1 && grep -q 'exceeds the limit' '$tmp/eerr'"
 check "no temporary files left behind" bash -c "! ls '$tmp'/o '$tmp'/f | grep -q '\.tmp'"
 
 echo "$passes passed, $fails failed"

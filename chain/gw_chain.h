@@ -269,6 +269,9 @@ gw_chain_disp_params gw_chain_disp_params_default(void);
 
 /* Check every field; GW_EINVAL with a message naming the field by its option
  * name in `granwave dispersion` (--n, --f0, --t-samples, ...). */
+/* Default sampling interval pi / (1.25 omega_c) when dt_sample is 0, s. */
+double gw_chain_disp_dt_sample(const gw_chain_disp_params *p);
+
 int gw_chain_disp_params_validate(const gw_chain_disp_params *p, gw_err *err);
 
 /* Linear contact stiffness kappa = (3/2) k^(2/3) f0^(1/3), N/m. */

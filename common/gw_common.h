@@ -106,6 +106,11 @@ int gw_fit_linear(const double *x, const double *y, int n, gw_linfit *fit);
 /* Power law y = A x^beta by a line in log-log; c0 = ln A, c1 = beta. */
 int gw_fit_power(const double *x, const double *y, int n, gw_linfit *fit);
 
+/* Offset (in bins, within [-1, 1]) of the vertex of the parabola through the
+ * logs of three positive samples pm, p0, pp around a peak at p0; 0 when the
+ * samples do not bracket a maximum. */
+double gw_peak_offset_log(double pm, double p0, double pp);
+
 /* ---- JSON (cJSON) ---- */
 
 /* New JSON array of n doubles (NaN and infinities print as null). NULL on ENOMEM. */

@@ -56,3 +56,12 @@ int gw_fit_power(const double *x, const double *y, int n, gw_linfit *fit)
     free(lx);
     return rc;
 }
+
+double gw_peak_offset_log(double pm, double p0, double pp)
+{
+    if (!(pm > 0 && p0 > 0 && pp > 0))
+        return 0.0;
+    double a = log(pm), b = log(p0), c = log(pp), den = a - 2 * b + c;
+    double off = den < 0 ? 0.5 * (a - c) / den : 0.0;
+    return fabs(off) <= 1.0 ? off : 0.0;
+}

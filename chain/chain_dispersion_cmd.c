@@ -1,0 +1,468 @@
+/*
+ * chain_dispersion_cmd.c: `granwave dispersion`, the dispersion study of
+ * chain_dispersion.c (physics.md 1.6) and, with --column-n, the wall-force
+ * spectrum of a column (chain_spectrum.c). SI units; JSON, CSV and FFTW wisdom.
+ */
+#include <math.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <fftw3.h>
+
+#include "chain_options.h"
+
+/* ---- `granwave dispersion` ---- */
+
+static const char *disp_summary =
+    "Small-amplitude dispersion of a Hertz chain under static precompression F0\n"
+    "(physics.md 1.6): random small velocities, velocities sampled in time, space-time\n"
+    "power spectrum (FFTW r2c, Hann window in time), ridge omega(q) against\n"
+    "omega = 2 sqrt(kappa/m) |sin(qa/2)|, kappa = (3/2) k^(2/3) F0^(1/3). Steel beads\n"
+    "(R = 4 mm). Wavenumbers in lattice units qa. --column-n N instead runs one column\n"
+    "collision (granwave chain) and reports the wall-force spectrum peak against 1/P.";
+
+typedef struct disp_cli {
+    long n, t_samples, steps, seed, column_n;
+    double f0, dt_out, amp, min_bins, rtol, atol, vimp;
+    int measure, json;
+    const char *ends, *solver, *method, *out, *wisdom;
+} disp_cli;
+
+enum { DISP_NOPTS = 20 };
+
+#define DOPT_L(nm, dst, mv, hl, lo_, hi_)                                                 \
+    (gw_opt) { .name = nm, .kind = GW_OPT_LONG, .dest = dst, .metavar = mv, .help = hl, \
+               .lo = lo_, .hi = hi_ }
+#define DOPT_D(nm, dst, mv, hl, lo_, hi_, open_)                                           \
+    (gw_opt) { .name = nm, .kind = GW_OPT_DOUBLE, .dest = dst, .metavar = mv, .help = hl, \
+               .lo = lo_, .hi = hi_, .open_lo = open_ }
+#define DOPT_S(nm, dst, mv, hl) \
+    (gw_opt) { .name = nm, .kind = GW_OPT_STRING, .dest = dst, .metavar = mv, .help = hl }
+
+static void disp_options(disp_cli *c, gw_opt *o)
+{
+    gw_chain_disp_params d = gw_chain_disp_params_default();
+    memset(c, 0, sizeof *c);
+    c->n = d.n;
+    c->f0 = d.f0;
+    c->t_samples = d.t_samples;
+    c->steps = d.steps_per_sample;
+    c->amp = d.amp;
+    c->seed = (long)d.seed;
+    c->min_bins = d.min_bins;
+    c->rtol = c->atol = 1e-10;
+    c->vimp = 0.3;
+    c->ends = "periodic";
+    c->solver = "rk4";
+    c->method = "default";
+    int i = 0;
+    o[i++] = DOPT_L("n", &c->n, "N", "number of beads [1024]", 8, 1 << 22);
+    o[i++] = DOPT_D("f0", &c->f0, "F", "static precompression, N [10]", 0, 1e9, 1);
+    o[i++] = DOPT_S("ends", &c->ends, "KIND", "periodic or fixed [periodic]");
+    o[i++] = DOPT_L("t-samples", &c->t_samples, "T", "velocity samples in time, even [2048]", 64, 1 << 24);
+    o[i++] = DOPT_D("dt-out", &c->dt_out, "DT", "sampling interval, s [pi / (1.25 omega_c)]", 0, 1, 0);
+    o[i++] = DOPT_L("steps-per-sample", &c->steps, "K", "RK4 steps per sampling interval [16]", 1, 100000);
+    o[i++] = DOPT_D("amp", &c->amp, "A", "rms overlap perturbation / d0 of the initial velocities [1e-3]", 0, 0.1, 1);
+    o[i++] = DOPT_L("seed", &c->seed, "S", "seed of the random mode phases of the initial velocities [1]", 0, 9.0e18);
+    o[i++] = DOPT_D("min-bins", &c->min_bins, "B", "ridge resolved from B frequency bins up [8]", 1, 1e9, 0);
+    o[i++] = DOPT_S("solver", &c->solver, "NAME", "rk4, cvode or arkode [rk4]");
+    o[i++] = DOPT_S("method", &c->method, "NAME", "cvode: adams|bdf; arkode: erk|dirk (bdf, dirk: fixed ends) [adams / erk]");
+    o[i++] = DOPT_D("rtol", &c->rtol, "R", "relative tolerance, cvode/arkode [1e-10]", 0, 1, 1);
+    o[i++] = DOPT_D("atol", &c->atol, "A", "absolute tolerance in units of the perturbation scales [1e-10]", 0, INFINITY, 1);
+    o[i++] = (gw_opt){.name = "fftw-measure", .kind = GW_OPT_FLAG, .dest = &c->measure,
+                      .help = "plan the FFTs with FFTW_MEASURE (default FFTW_ESTIMATE)"};
+    o[i++] = DOPT_S("wisdom", &c->wisdom, "FILE", "import FFTW wisdom from FILE if present, export it after the run");
+    o[i++] = DOPT_L("column-n", &c->column_n, "N", "instead: wall-force spectrum of an N-bead column collision", 1, 100000);
+    o[i++] = DOPT_D("vimp", &c->vimp, "V", "impact velocity of that column, m/s [0.3]", 0, 1e3, 1);
+    o[i++] = (gw_opt){.name = "json", .kind = GW_OPT_FLAG, .dest = &c->json, .help = "print results as one JSON object on stdout"};
+    o[i++] = DOPT_S("out", &c->out, "DIR", "write CSV files (and the JSON) into DIR");
+    o[i++] = (gw_opt){0};
+}
+
+/* Solver and method from the options; GW_EINVAL with a message naming them. */
+static int disp_solver(const disp_cli *c, const gw_solver_type **type, gw_solver_params *sp,
+                       gw_err *err)
+{
+    *type = gw_solver_type_find(c->solver);
+    if (!*type)
+        return gw_err_set(err, GW_EINVAL, "dispersion --solver: unknown solver '%s' (rk4, cvode, arkode)", c->solver);
+    int m = gw_solver_method_find(c->method);
+    int ok = m == GW_METHOD_DEFAULT ||
+             (*type == gw_solver_cvode && (m == GW_CVODE_ADAMS || m == GW_CVODE_BDF)) ||
+             (*type == gw_solver_arkode && (m == GW_ARKODE_ERK || m == GW_ARKODE_DIRK));
+    if (!ok)
+        return gw_err_set(err, GW_EINVAL, "dispersion --method: '%s' is not a method of solver %s (cvode: adams, bdf; arkode: erk, dirk; rk4: none)",
+                          c->method, c->solver);
+    *sp = gw_solver_params_default();
+    sp->method = m;
+    sp->rtol = c->rtol;
+    sp->atol = c->atol;
+    return GW_OK;
+}
+
+static cJSON *disp_settings_json(const disp_cli *c, const gw_chain_disp_params *p,
+                                 const gw_solver_params *sp)
+{
+    cJSON *o = cJSON_CreateObject();
+    cJSON_AddStringToObject(o, "version", gw_version());
+    cJSON *m = cJSON_AddObjectToObject(o, "model");
+    cJSON_AddNumberToObject(m, "n", p->n);
+    cJSON_AddNumberToObject(m, "f0", p->f0);
+    cJSON_AddStringToObject(m, "ends", c->ends);
+    cJSON_AddNumberToObject(m, "mass", p->mass);
+    cJSON_AddNumberToObject(m, "k", p->k);
+    cJSON_AddNumberToObject(m, "radius", p->radius);
+    cJSON_AddNumberToObject(m, "amp", p->amp);
+    cJSON_AddNumberToObject(m, "seed", (double)p->seed);
+    cJSON *s = cJSON_AddObjectToObject(o, "solver");
+    cJSON_AddStringToObject(s, "name", c->solver);
+    const gw_solver_type *type = gw_solver_type_find(c->solver);
+    cJSON_AddStringToObject(s, "method", type == gw_solver_rk4 ? "none"
+                                         : sp->method != GW_METHOD_DEFAULT ? gw_solver_method_name(sp->method)
+                                         : type == gw_solver_cvode ? "adams" : "erk");
+    cJSON_AddNumberToObject(s, "rtol", sp->rtol);
+    cJSON_AddNumberToObject(s, "atol", sp->atol);
+    cJSON_AddNumberToObject(s, "steps_per_sample", p->steps_per_sample);
+    cJSON_AddNumberToObject(s, "rk4_dt", gw_chain_disp_dt_sample(p) / p->steps_per_sample);
+    cJSON *f = cJSON_AddObjectToObject(o, "spectrum");
+    cJSON_AddNumberToObject(f, "t_samples", p->t_samples);
+    cJSON_AddNumberToObject(f, "dt_out", gw_chain_disp_dt_sample(p));
+    cJSON_AddStringToObject(f, "window", "hann (time)");
+    cJSON_AddStringToObject(f, "fftw_planner", p->fftw_measure ? "measure" : "estimate");
+    cJSON_AddNumberToObject(f, "min_bins", p->min_bins);
+    return o;
+}
+
+/* "granwave VERSION\ncommand: ...\nsettings: {...}"; caller frees (NULL: ENOMEM). */
+static char *disp_header(const cJSON *settings, int argc, char **argv)
+{
+    char *js = cJSON_PrintUnformatted(settings);
+    size_t len = 256 + (js ? strlen(js) : 0);
+    for (int i = 0; i < argc; i++)
+        len += strlen(argv[i]) + 1;
+    char *h = malloc(len);
+    if (h) {
+        size_t w = (size_t)snprintf(h, len, "granwave %s\ncommand: granwave dispersion", gw_version());
+        for (int i = 0; i < argc && w < len; i++)
+            w += (size_t)snprintf(h + w, len - w, " %s", argv[i]);
+        if (w < len)
+            snprintf(h + w, len - w, "\nsettings: %s", js ? js : "{}");
+    }
+    free(js);
+    return h;
+}
+
+static void write_comment(FILE *fp, const char *text)
+{
+    for (const char *p = text; p && *p;) {
+        const char *nl = strchr(p, '\n');
+        int len = nl ? (int)(nl - p) : (int)strlen(p);
+        fprintf(fp, "# %.*s\n", len, p);
+        p += len + (nl != NULL);
+    }
+}
+
+/* DIR/name through an atomic file: header, then body(ctx). */
+static int write_csv(const char *dir, const char *name, const char *hdr,
+                     void (*body)(FILE *, const void *), const void *ctx, gw_err *err)
+{
+    char path[4096];
+    gw_afile f;
+    if (gw_path_join(path, sizeof path, dir, name) != GW_OK)
+        return gw_err_set(err, GW_EINVAL, "%s/%s: path too long", dir, name);
+    int rc = gw_afile_open(&f, path, err);
+    if (rc != GW_OK)
+        return rc;
+    write_comment(f.fp, hdr);
+    body(f.fp, ctx);
+    return gw_afile_commit(&f, err);
+}
+
+static void ridge_body(FILE *fp, const void *ctx)
+{
+    const gw_chain_disp_result *r = ctx;
+    fprintf(fp, "j,qa_rad,omega_ridge_rad_s,omega_theory_rad_s,rel_err,resolved,ridge_power\n");
+    for (int k = 0; k < r->nq; k++)
+        fprintf(fp, "%d,%.10g,%.10g,%.10g,%.6g,%d,%.6g\n", k + 1, r->qa[k], r->omega_ridge[k],
+                r->omega_theory[k], fabs(r->omega_ridge[k] / r->omega_theory[k] - 1), r->resolved[k],
+                r->ridge_power[k]);
+}
+
+/* The power spectrum reduced to at most 128 x 256 blocks (max over a block keeps
+ * the ridge visible), long format. */
+static void power_body(FILE *fp, const void *ctx)
+{
+    const gw_chain_disp_result *r = ctx;
+    const int gq = (r->nq + 127) / 128, gw = (r->n_omega + 255) / 256;
+    const int rows = (r->nq + gq - 1) / gq, cols = (r->n_omega + gw - 1) / gw;
+    fprintf(fp, "# grid: %d qa rows x %d omega columns, each the max over %d x %d bins\n", rows, cols, gq, gw);
+    fprintf(fp, "qa_rad,omega_rad_s,power\n");
+    for (int bq = 0; bq < rows; bq++)
+        for (int bw = 0; bw < cols; bw++) {
+            double pmax = 0, qs = 0, ws = 0;
+            int cq = 0, cw = 0;
+            for (int j = bq * gq; j < r->nq && j < (bq + 1) * gq; j++, cq++) {
+                qs += r->qa[j];
+                for (int l = bw * gw; l < r->n_omega && l < (bw + 1) * gw; l++)
+                    pmax = fmax(pmax, r->power[(size_t)j * (size_t)r->n_omega + (size_t)l]);
+            }
+            for (int l = bw * gw; l < r->n_omega && l < (bw + 1) * gw; l++, cw++)
+                ws += l * r->d_omega;
+            fprintf(fp, "%.8g,%.8g,%.6g\n", qs / cq, ws / cw, pmax);
+        }
+}
+
+static cJSON *disp_json(const gw_chain_disp_params *p, const gw_chain_disp_result *r,
+                        cJSON *settings, double wall_ms)
+{
+    cJSON *o = cJSON_CreateObject();
+    cJSON_AddStringToObject(o, "version", gw_version());
+    cJSON_AddNumberToObject(o, "n", p->n);
+    cJSON_AddNumberToObject(o, "f0", p->f0);
+    cJSON_AddStringToObject(o, "ends", p->ends == GW_CHAIN_DISP_FIXED ? "fixed" : "periodic");
+    cJSON_AddNumberToObject(o, "d0", r->d0);
+    cJSON_AddNumberToObject(o, "kappa", r->kappa);
+    cJSON_AddNumberToObject(o, "a", r->a);
+    cJSON_AddNumberToObject(o, "omega_c_theory", r->omega_c_theory);
+    cJSON_AddNumberToObject(o, "omega_c_measured", r->omega_c_measured);
+    cJSON_AddNumberToObject(o, "omega_c_rel_err", r->omega_c_rel_err);
+    cJSON_AddNumberToObject(o, "omega_edge", r->omega_edge);
+    cJSON_AddNumberToObject(o, "ridge_max_rel_err", r->ridge_max_rel_err);
+    cJSON_AddNumberToObject(o, "n_resolved", r->n_resolved);
+    cJSON_AddNumberToObject(o, "qa_resolved_min", r->qa_resolved_min);
+    cJSON_AddNumberToObject(o, "qa_resolved_max", r->qa_resolved_max);
+    cJSON_AddNumberToObject(o, "c0", r->c0_theory);
+    cJSON_AddNumberToObject(o, "c0_measured", r->c0_measured);
+    cJSON_AddNumberToObject(o, "c0_rel_err", fabs(r->c0_measured / r->c0_theory - 1));
+    cJSON_AddNumberToObject(o, "max_overlap_dev", r->max_overlap_dev);
+    cJSON_AddNumberToObject(o, "d_omega", r->d_omega);
+    cJSON_AddNumberToObject(o, "dt_out", r->dt_sample);
+    cJSON_AddNumberToObject(o, "dt_step", r->dt_step);
+    cJSON_AddNumberToObject(o, "t_total", r->t_total);
+    cJSON_AddStringToObject(o, "q_units", "qa, rad per bead");
+    cJSON_AddItemToObject(o, "q", gw_json_doubles(r->qa, r->nq));
+    cJSON_AddItemToObject(o, "omega_ridge", gw_json_doubles(r->omega_ridge, r->nq));
+    cJSON_AddItemToObject(o, "omega_theory", gw_json_doubles(r->omega_theory, r->nq));
+    cJSON_AddItemToObject(o, "resolved", gw_json_ints(r->resolved, r->nq));
+    cJSON_AddNumberToObject(o, "steps", (double)r->stats.steps);
+    cJSON_AddNumberToObject(o, "rhs_evals", (double)r->stats.rhs_evals);
+    cJSON_AddNumberToObject(o, "integrate_ms", r->integrate_ms);
+    cJSON_AddNumberToObject(o, "fft_ms", r->fft_ms);
+    cJSON_AddNumberToObject(o, "wall_time_ms", wall_ms);
+    cJSON_AddItemToObject(o, "settings", cJSON_Duplicate(settings, 1));
+    return o;
+}
+
+static void disp_print(const disp_cli *c, const gw_chain_disp_result *r, double wall_ms)
+{
+    printf("granwave %s dispersion: n = %ld beads, F0 = %g N, %s ends, solver %s\n", gw_version(),
+           c->n, c->f0, c->ends, c->solver);
+    printf("  d0 = %.6g m, kappa = %.6g N/m, a = %.6g m\n", r->d0, r->kappa, r->a);
+    printf("  omega_c   theory %.6g rad/s, ridge max %.6g (rel err %.2e), edge %.6g\n",
+           r->omega_c_theory, r->omega_c_measured, r->omega_c_rel_err, r->omega_edge);
+    printf("  ridge     max rel err %.2e over qa in [%.4g, %.4g] (%d of %d resolved)\n",
+           r->ridge_max_rel_err, r->qa_resolved_min, r->qa_resolved_max, r->n_resolved, r->nq);
+    printf("  c0        theory %.6g m/s, long-wave fit %.6g m/s\n", r->c0_theory, r->c0_measured);
+    printf("  linearity max |d - d0| / d0 = %.3g\n", r->max_overlap_dev);
+    printf("  run       %.0f ms (integration %.0f ms, %ld steps; FFT %.0f ms)\n", wall_ms,
+           r->integrate_ms, r->stats.steps, r->fft_ms);
+}
+
+static int disp_write_out(const char *dir, const char *hdr, const cJSON *o,
+                          const gw_chain_disp_result *r, gw_err *err)
+{
+    char path[4096];
+    int rc = gw_mkdir_p(dir, err);
+    if (rc == GW_OK)
+        rc = write_csv(dir, "dispersion_ridge.csv", hdr, ridge_body, r, err);
+    if (rc == GW_OK)
+        rc = write_csv(dir, "dispersion_power.csv", hdr, power_body, r, err);
+    if (rc == GW_OK && gw_path_join(path, sizeof path, dir, "dispersion.json") != GW_OK)
+        rc = gw_err_set(err, GW_EINVAL, "%s: path too long", dir);
+    if (rc == GW_OK)
+        rc = gw_json_write(path, o, err);
+    return rc;
+}
+
+static void spectrum_body(FILE *fp, const void *ctx)
+{
+    const gw_chain_spectrum *sp = ctx;
+    fprintf(fp, "freq_hz,power_n2s2\n");
+    for (int l = 0; l < sp->len && sp->freq[l] <= 8 * sp->f_peak; l++)
+        fprintf(fp, "%.8g,%.6g\n", sp->freq[l], sp->power[l]);
+}
+
+/* --column-n: one column collision, then the wall-force spectrum over the
+ * contact [0, tau_N] against 1/P from the maxima of the wall force. */
+static int disp_column(const disp_cli *c, const gw_opt *opts, int argc, char **argv)
+{
+    gw_err err = {{0}};
+    gw_chain_params p = gw_chain_params_default();
+    p.n = (int)c->column_n;
+    p.v_imp = c->vimp;
+    gw_chain_run_opts o = gw_chain_run_opts_default();
+    const gw_solver_type *type;
+    if (disp_solver(c, &type, &o.sp, &err) != GW_OK)
+        return chain_cli_fail(err.msg);
+    if (gw_cli_find(opts, "solver")->seen)
+        o.solver = type;
+    else
+        o.sp.method = GW_METHOD_DEFAULT;
+    /* Tolerances of `granwave chain` unless given. */
+    o.sp.rtol = gw_cli_find(opts, "rtol")->seen ? c->rtol : 1e-12;
+    o.sp.atol = gw_cli_find(opts, "atol")->seen ? c->atol : 1e-12;
+    o.dt_out = gw_chain_tau1(p.mass, p.kwall, p.v_imp) / 200;
+    gw_chain *ch = NULL;
+    gw_chain_trace tr;
+    gw_chain_trace_init(&tr, p.n);
+    o.sample = gw_chain_trace_sample;
+    o.sample_ctx = &tr;
+    gw_chain_result r;
+    memset(&r, 0, sizeof r);
+    gw_chain_spectrum sp;
+    memset(&sp, 0, sizeof sp);
+    int rc = gw_chain_create(&p, &ch, &err), code = 0;
+    if (rc == GW_OK)
+        rc = gw_chain_collide(ch, &o, &r, &err);
+    if (rc == GW_OK)
+        rc = gw_chain_wall_spectrum(&tr, 0.0, r.tau_n, o.dt_out, 0.0, c->measure, &sp, &err);
+    if (rc != GW_OK) {
+        fprintf(stderr, "granwave dispersion --column-n: %s\n", err.msg);
+        code = rc == GW_EINVAL ? 2 : 1;
+    } else {
+        cJSON *js = cJSON_CreateObject();
+        cJSON_AddStringToObject(js, "version", gw_version());
+        cJSON_AddStringToObject(js, "mode", "column_wall_spectrum");
+        cJSON_AddNumberToObject(js, "column_n", p.n);
+        cJSON_AddNumberToObject(js, "v_imp", p.v_imp);
+        cJSON_AddStringToObject(js, "solver", gw_solver_type_name(o.solver));
+        cJSON_AddNumberToObject(js, "rtol", o.sp.rtol);
+        cJSON_AddNumberToObject(js, "atol", o.sp.atol);
+        cJSON_AddNumberToObject(js, "mass", p.mass);
+        cJSON_AddNumberToObject(js, "k", p.k);
+        cJSON_AddNumberToObject(js, "kwall", p.kwall);
+        cJSON_AddNumberToObject(js, "radius", p.radius);
+        cJSON_AddNumberToObject(js, "dt_out", o.dt_out);
+        cJSON_AddNumberToObject(js, "tau_n", r.tau_n);
+        cJSON_AddNumberToObject(js, "period", r.period);
+        cJSON_AddNumberToObject(js, "inv_period", 1.0 / r.period);
+        cJSON_AddNumberToObject(js, "f_peak", sp.f_peak);
+        cJSON_AddNumberToObject(js, "f_peak_rel_diff", sp.f_peak * r.period - 1);
+        cJSON_AddNumberToObject(js, "df", sp.df);
+        cJSON_AddNumberToObject(js, "f_min", sp.f_min);
+        cJSON_AddNumberToObject(js, "samples", sp.samples);
+        cJSON_AddNumberToObject(js, "n_maxima", r.n_maxima);
+        cJSON_AddStringToObject(js, "fftw_planner", c->measure ? "measure" : "estimate");
+        char *hdr = disp_header(js, argc, argv);
+        if (c->out && (gw_mkdir_p(c->out, &err) != GW_OK ||
+                       write_csv(c->out, "wall_spectrum.csv", hdr ? hdr : "", spectrum_body, &sp, &err) != GW_OK)) {
+            fprintf(stderr, "granwave dispersion --out: %s\n", err.msg);
+            code = 1;
+        }
+        if (code == 0 && c->json)
+            gw_json_print(js, stdout);
+        else if (code == 0)
+            printf("granwave %s dispersion --column-n %d (v_imp %g m/s): wall-force peak %.6g Hz, "
+                   "1/P %.6g Hz (rel diff %+.2e), bin %.3g Hz, contact %.4g us\n",
+                   gw_version(), p.n, p.v_imp, sp.f_peak, 1.0 / r.period, sp.f_peak * r.period - 1,
+                   sp.df, r.tau_n * 1e6);
+        free(hdr);
+        cJSON_Delete(js);
+    }
+    gw_chain_spectrum_free(&sp);
+    gw_chain_result_free(&r);
+    gw_chain_trace_free(&tr);
+    gw_chain_free(ch);
+    return code;
+}
+
+static void disp_export_wisdom(const char *path)
+{
+    gw_afile f;
+    gw_err err = {{0}};
+    if (gw_afile_open(&f, path, &err) != GW_OK) {
+        fprintf(stderr, "granwave dispersion --wisdom: %s (not saved)\n", err.msg);
+        return;
+    }
+    fftw_export_wisdom_to_file(f.fp);
+    if (gw_afile_commit(&f, &err) != GW_OK)
+        fprintf(stderr, "granwave dispersion --wisdom: %s (not saved)\n", err.msg);
+}
+
+int gw_cmd_dispersion(int argc, char **argv)
+{
+    disp_cli c;
+    gw_opt opts[DISP_NOPTS];
+    disp_options(&c, opts);
+    gw_err err = {{0}};
+    int help = 0, npos = 0;
+    const char *pos[1];
+    if (gw_cli_parse("dispersion", opts, argc, argv, &help, pos, 0, &npos, &err) != GW_OK)
+        return chain_cli_fail(err.msg);
+    if (help) {
+        gw_cli_help(stdout, "dispersion", "granwave dispersion [options]", disp_summary, opts);
+        return 0;
+    }
+    if (c.wisdom)
+        fftw_import_wisdom_from_filename(c.wisdom); /* absent file: plan afresh */
+    if (c.column_n > 0) {
+        int code = disp_column(&c, opts, argc, argv);
+        if (c.wisdom && code == 0)
+            disp_export_wisdom(c.wisdom);
+        return code;
+    }
+    gw_chain_disp_params p = gw_chain_disp_params_default();
+    p.n = (int)c.n;
+    p.f0 = c.f0;
+    if (strcmp(c.ends, "periodic") == 0)
+        p.ends = GW_CHAIN_DISP_PERIODIC;
+    else if (strcmp(c.ends, "fixed") == 0)
+        p.ends = GW_CHAIN_DISP_FIXED;
+    else
+        return chain_cli_fail("dispersion --ends: expected periodic or fixed");
+    p.t_samples = (int)c.t_samples;
+    p.dt_sample = c.dt_out;
+    p.steps_per_sample = (int)c.steps;
+    p.amp = c.amp;
+    p.seed = (unsigned long)c.seed;
+    p.min_bins = c.min_bins;
+    p.fftw_measure = c.measure;
+    const gw_solver_type *type;
+    gw_solver_params sp;
+    if (disp_solver(&c, &type, &sp, &err) != GW_OK)
+        return chain_cli_fail(err.msg);
+    char msg[sizeof err.msg + 32];
+    if (gw_chain_disp_params_validate(&p, &err) != GW_OK) {
+        snprintf(msg, sizeof msg, "dispersion %s", err.msg);
+        return chain_cli_fail(msg);
+    }
+    gw_chain_disp_result r;
+    double t0 = gw_clock_ms();
+    int rc = gw_chain_disp_run(&p, type, &sp, &r, &err);
+    double wall_ms = gw_clock_ms() - t0;
+    int code = 0;
+    if (rc != GW_OK) {
+        fprintf(stderr, "granwave %s\n", err.msg);
+        code = rc == GW_EINVAL || rc == GW_EUNSUPPORTED ? 2 : 1;
+    } else {
+        cJSON *settings = disp_settings_json(&c, &p, &sp);
+        cJSON *o = disp_json(&p, &r, settings, wall_ms);
+        char *hdr = disp_header(settings, argc, argv);
+        if (c.out && disp_write_out(c.out, hdr ? hdr : "", o, &r, &err) != GW_OK) {
+            fprintf(stderr, "granwave dispersion --out: %s\n", err.msg);
+            code = 1;
+        }
+        if (code == 0 && c.json)
+            gw_json_print(o, stdout);
+        else if (code == 0)
+            disp_print(&c, &r, wall_ms);
+        free(hdr);
+        cJSON_Delete(o);
+        cJSON_Delete(settings);
+    }
+    if (c.wisdom && code == 0)
+        disp_export_wisdom(c.wisdom);
+    gw_chain_disp_result_free(&r);
+    return code;
+}

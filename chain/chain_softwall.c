@@ -4,10 +4,13 @@
  *   K_c = (c_tau/4)^(5/2) (5k/4)                        (F.22): rigid if K > K_c
  *   N_d = first N from which F_max(N') stays within a tolerance (default 1 %) of
  *         the plateau F_max(n_max) for every N' >= N            (measured)
+ *         A plateau needs SATURATION_RUN sizes within the tolerance: with fewer
+ *         the force may still be rising and N_d is reported as not reached.
  *   N_d predicted = ceil(tau_max(N_d) / T_q)                      (F.8)
+ *         evaluated at the measured N_d; also its self-consistent form, the
+ *         smallest N with N >= ceil(tau_max(N)/T_q) (n_d_fixed_point).
  * T_q is measured on the same beads with the steel (rigid) wall: slope of tau_N
- * over N = 1..20 (F.4). The predicted N_d is the smallest N with
- * N >= ceil(tau_max(N)/T_q), tau_max taken from the soft-wall runs.
+ * over N = 1..20 (F.4); tau_max comes from the soft-wall runs.
  * Sheet mode (--sheets): each sheet of the paper's Table 2 with its effective K
  * (gw_sheet_kwall, chain_material.c), then N_d of the model against the
  * measured N_d (h = 2.9 mm).
@@ -19,22 +22,30 @@
 
 #include "chain_options.h"
 
+#define SATURATION_RUN 6
+
 typedef struct sw_result {
-    int n_d, n_d_pred;
+    int n_d;      /* -1: not saturated within the sizes run */
+    int n_d_pred; /* (F.8) at the measured N_d, -1 without N_d */
+    int n_d_fix;  /* smallest N >= ceil(tau_max(N)/T_q), -1 if none */
     double plateau;
 } sw_result;
 
 static sw_result analyse(const gw_chain_result *r, int n_lo, int n_hi, double tol, double t_q)
 {
-    sw_result s = {n_hi, -1, r[n_hi - n_lo].f_max};
+    sw_result s = {n_hi, -1, -1, r[n_hi - n_lo].f_max};
     for (int n = n_hi; n >= n_lo; n--) {
         if (fabs(r[n - n_lo].f_max - s.plateau) > tol * s.plateau)
             break;
         s.n_d = n;
     }
+    if (n_hi - s.n_d + 1 < SATURATION_RUN && s.n_d > n_lo)
+        s.n_d = -1;
+    if (s.n_d > 0)
+        s.n_d_pred = (int)ceil(r[s.n_d - n_lo].tau_max / t_q - 1e-9);
     for (int n = n_lo; n <= n_hi; n++)
         if (n >= (int)ceil(r[n - n_lo].tau_max / t_q - 1e-9)) {
-            s.n_d_pred = n;
+            s.n_d_fix = n;
             break;
         }
     return s;
@@ -157,11 +168,12 @@ int gw_cmd_softwall(int argc, char **argv)
             cJSON_AddItemToObject(e, "f_max", gw_json_doubles(fm, ns));
             cJSON_AddItemToObject(e, "tau_max", gw_json_doubles(fm + ns, ns));
             /* null when F_max has not saturated (or F.8 is not met) within n_max */
-            cJSON_AddNumberToObject(e, "n_d", sr[w].n_d < b ? sr[w].n_d : NAN);
+            cJSON_AddNumberToObject(e, "n_d", sr[w].n_d > 0 ? sr[w].n_d : NAN);
             cJSON_AddNumberToObject(e, "n_d_predicted", sr[w].n_d_pred > 0 ? sr[w].n_d_pred : NAN);
+            cJSON_AddNumberToObject(e, "n_d_fixed_point", sr[w].n_d_fix > 0 ? sr[w].n_d_fix : NAN);
             cJSON_AddNumberToObject(e, "f_plateau", sr[w].plateau);
-            cJSON_AddNumberToObject(e, "tau_max_at_n_d", res[w * per + sr[w].n_d - a].tau_max);
-            cJSON_AddNumberToObject(e, "saturated_below_n_max", sr[w].n_d < b);
+            cJSON_AddNumberToObject(e, "tau_max_at_n_d", sr[w].n_d > 0 ? res[w * per + sr[w].n_d - a].tau_max : NAN);
+            cJSON_AddBoolToObject(e, "saturated", sr[w].n_d > 0);
         }
         cJSON_AddNumberToObject(o, "wall_time_s", wall_s);
         cJSON_AddItemToObject(o, "settings", chain_cli_settings_json(&c));
@@ -176,22 +188,22 @@ int gw_cmd_softwall(int argc, char **argv)
         } else if (code == 0) {
             printf("granwave %s softwall: v_imp %.4g m/s, K_c %.4g N/m^1.5, rigid-wall T_q %.3f us (%.1f s)\n",
                    gw_version(), vimp, kc, t_q * 1e6, wall_s);
-            printf("  %-14s %11s %6s %8s %8s %11s %14s\n", "wall", "K", "kind", "N_d", "F.8", "F_plateau",
+            printf("  %-14s %11s %6s %9s %8s %11s %14s\n", "wall", "K", "kind", "N_d", "F.8", "F_plateau",
                    use_sheets ? "N_d measured" : "");
             for (int w = 0; w < nw; w++) {
                 char meas[32] = "";
                 if (use_sheets)
                     snprintf(meas, sizeof meas, "%g +- %g", gw_sheet_get(w)->n_d, gw_sheet_get(w)->n_d_err);
                 char nd[32], np[32];
-                if (sr[w].n_d < b)
+                if (sr[w].n_d > 0)
                     snprintf(nd, sizeof nd, "%d", sr[w].n_d);
                 else
-                    snprintf(nd, sizeof nd, ">%ld", b - 1);
+                    snprintf(nd, sizeof nd, "not in %ld", b);
                 if (sr[w].n_d_pred > 0)
                     snprintf(np, sizeof np, "%d", sr[w].n_d_pred);
                 else
-                    snprintf(np, sizeof np, ">%ld", b);
-                printf("  %-14s %11.4g %6s %8s %8s %9.2f N %14s\n", use_sheets ? gw_sheet_get(w)->name : "--kwall",
+                    snprintf(np, sizeof np, "-");
+                printf("  %-14s %11.4g %6s %9s %8s %9.2f N %14s\n", use_sheets ? gw_sheet_get(w)->name : "--kwall",
                        kw[w], kw[w] > kc ? "rigid" : "soft", nd, np, sr[w].plateau, meas);
             }
         }

@@ -11,6 +11,12 @@
  *                 1.6: c0 = 2R sqrt(kappa/m), kappa = (3/2) k^(2/3) F^(1/3), of a
  *                 chain statically compressed by the column's mean wall force
  *                 F = (wall impulse)/tau_N of the longest column.
+ * (c) is the speed of small vibrations, not of the front. In the uniformly
+ * compressed state behind a front moving at V (the momentum balance of F.27:
+ * k d^(3/2) = m v_imp V/(2R), d = 2R v_imp/V) the linear sound speed is
+ * c0 = 2R sqrt((3/2) k d^(1/2)/m) = sqrt(3/2) V, so c0/sqrt(3/2) is a third,
+ * independent estimate of the front speed (v_group_front, reported beside c0;
+ * the factor is this relation, not a fit).
  * Each is fitted as v = A v_imp^beta (GSL, log-log) and A is expressed as C3 in
  * v = C3 (k/m)^(2/5) R v_imp^beta (F.16; the momentum balance F.27 gives C3 = 2).
  * The wall-force period is fitted as P = C2 (m/k)^(2/5) v_imp^(-1/5) (F.15).
@@ -139,9 +145,9 @@ int gw_cmd_wavespeed(int argc, char **argv)
     const gw_chain_params *p = &c.params;
     int per_v = (int)(b - a + 1), code = 0;
     gw_chain_result *res = calloc((size_t)(nv * per_v), sizeof *res);
-    double *out = calloc(6 * (size_t)nv, sizeof *out);
+    double *out = calloc(7 * (size_t)nv, sizeof *out);
     double *v_tq = out, *v_front = out + nv, *v_group = out + 2 * nv, *period = out + 3 * nv;
-    double *t_q = out + 4 * nv, *fbar = out + 5 * nv;
+    double *t_q = out + 4 * nv, *fbar = out + 5 * nv, *v_gf = out + 6 * nv;
     if (!res || !out) {
         free(res);
         free(out);
@@ -179,6 +185,7 @@ int gw_cmd_wavespeed(int argc, char **argv)
         fbar[iv] = rl->impulse / rl->tau_n;
         double kappa = 1.5 * pow(p->k, 2.0 / 3.0) * cbrt(fbar[iv]);
         v_group[iv] = 2 * p->radius * sqrt(kappa / p->mass);
+        v_gf[iv] = v_group[iv] / sqrt(1.5);
         gw_chain_params q = *p;
         q.v_imp = v[iv];
         double ferr = 0;
@@ -193,12 +200,12 @@ int gw_cmd_wavespeed(int argc, char **argv)
     } else {
         double scale = pow(p->k / p->mass, 0.4) * p->radius;
         ws_fit f_tq = power_fit(v, v_tq, nv, scale), f_fr = power_fit(v, v_front, nv, scale);
-        ws_fit f_gr = power_fit(v, v_group, nv, scale);
+        ws_fit f_gr = power_fit(v, v_group, nv, scale), f_gf = power_fit(v, v_gf, nv, scale);
         ws_fit f_p = power_fit(v, period, nv, pow(p->mass / p->k, 0.4));
         double c2 = 0, worst = 0;
         for (int iv = 0; iv < nv; iv++) {
             c2 += period[iv] * pow(v[iv], 0.2) / pow(p->mass / p->k, 0.4) / nv;
-            double s3[3] = {v_tq[iv], v_front[iv], v_group[iv]};
+            double s3[3] = {v_tq[iv], v_front[iv], v_gf[iv]};
             for (int i = 0; i < 3; i++)
                 for (int j = 0; j < 3; j++)
                     worst = fmax(worst, fabs(s3[i] - s3[j]) / s3[j]);
@@ -209,6 +216,7 @@ int gw_cmd_wavespeed(int argc, char **argv)
         cJSON_AddItemToObject(o, "v_tq", gw_json_doubles(v_tq, nv));
         cJSON_AddItemToObject(o, "v_front", gw_json_doubles(v_front, nv));
         cJSON_AddItemToObject(o, "v_group", gw_json_doubles(v_group, nv));
+        cJSON_AddItemToObject(o, "v_group_front", gw_json_doubles(v_gf, nv));
         cJSON_AddItemToObject(o, "t_q", gw_json_doubles(t_q, nv));
         cJSON_AddItemToObject(o, "mean_wall_force", gw_json_doubles(fbar, nv));
         cJSON_AddItemToObject(o, "period", gw_json_doubles(period, nv));
@@ -220,10 +228,11 @@ int gw_cmd_wavespeed(int argc, char **argv)
         cJSON_AddItemToObject(fits, "tq", fit_json(&f_tq));
         cJSON_AddItemToObject(fits, "front", fit_json(&f_fr));
         cJSON_AddItemToObject(fits, "group", fit_json(&f_gr));
+        cJSON_AddItemToObject(fits, "group_front", fit_json(&f_gf));
         cJSON_AddNumberToObject(o, "c2", c2);
         cJSON_AddNumberToObject(o, "beta_period", f_p.beta);
         cJSON_AddNumberToObject(o, "beta_period_err", f_p.beta_err);
-        cJSON_AddNumberToObject(o, "max_disagreement", worst);
+        cJSON_AddNumberToObject(o, "max_disagreement", worst); /* tq, front, group/sqrt(3/2) */
         cJSON_AddNumberToObject(o, "front_threshold_fraction", frac);
         cJSON_AddNumberToObject(o, "n_min", (double)a);
         cJSON_AddNumberToObject(o, "n_max", (double)b);
@@ -240,11 +249,11 @@ int gw_cmd_wavespeed(int argc, char **argv)
                 gw_afile_open(&af, path, &err) != GW_OK) {
                 code = 1;
             } else {
-                fprintf(af.fp, "# %s\nv_imp_m_s,v_tq_m_s,v_front_m_s,v_group_m_s,t_q_s,period_s,mean_wall_force_N\n",
+                fprintf(af.fp, "# %s\nv_imp_m_s,v_tq_m_s,v_front_m_s,v_group_m_s,v_group_front_m_s,t_q_s,period_s,mean_wall_force_N\n",
                         hdr ? hdr : "");
                 for (int iv = 0; iv < nv; iv++)
-                    fprintf(af.fp, "%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g\n", v[iv], v_tq[iv],
-                            v_front[iv], v_group[iv], t_q[iv], period[iv], fbar[iv]);
+                    fprintf(af.fp, "%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g\n", v[iv], v_tq[iv],
+                            v_front[iv], v_group[iv], v_gf[iv], t_q[iv], period[iv], fbar[iv]);
                 if (gw_afile_commit(&af, &err) != GW_OK)
                     code = 1;
             }
@@ -258,14 +267,16 @@ int gw_cmd_wavespeed(int argc, char **argv)
         if (code == 0 && c.json) {
             gw_json_print(o, stdout);
         } else if (code == 0) {
-            printf("granwave %s wavespeed (%.1f s)\n  v_imp     v_tq    v_front  v_group  (m/s)\n", gw_version(), wall_s);
+            printf("granwave %s wavespeed (%.1f s)\n  v_imp     v_tq    v_front  v_group  v_group/sqrt(3/2)  (m/s)\n",
+                   gw_version(), wall_s);
             for (int iv = 0; iv < nv; iv++)
-                printf("  %-8.4g %8.2f %8.2f %8.2f\n", v[iv], v_tq[iv], v_front[iv], v_group[iv]);
+                printf("  %-8.4g %8.2f %8.2f %8.2f %8.2f\n", v[iv], v_tq[iv], v_front[iv], v_group[iv], v_gf[iv]);
             printf("  beta: tq %.5f +- %.5f, front %.5f +- %.5f, group %.5f +- %.5f\n", f_tq.beta,
                    f_tq.beta_err, f_fr.beta, f_fr.beta_err, f_gr.beta, f_gr.beta_err);
-            printf("  C3: tq %.4f, front %.4f, group %.4f (F.27: 2)\n", f_tq.c3, f_fr.c3, f_gr.c3);
-            printf("  period: C2 %.4f, beta %.5f; estimators disagree by up to %.1f %%\n", c2,
-                   f_p.beta, 100 * worst);
+            printf("  C3: tq %.4f, front %.4f, group %.4f, group/sqrt(3/2) %.4f (F.27: 2)\n", f_tq.c3, f_fr.c3,
+                   f_gr.c3, f_gf.c3);
+            printf("  period: C2 %.4f, beta %.5f; front-speed estimators (tq, front, group/sqrt(3/2)) "
+                   "disagree by up to %.1f %%\n", c2, f_p.beta, 100 * worst);
         }
         cJSON_Delete(o);
     }

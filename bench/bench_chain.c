@@ -12,6 +12,9 @@
  *     tolerances: wall time, steps, RHS evaluations, ns per bead-step, the
  *     fraction of the time spent in the RHS, and F_max / tau_N error against a
  *     tight reference (RK4 with dt = T_c / 3200).
+ *  3. A flop-count bound for the RHS (see hardware_bound below): the largest of
+ *     flops / measured flop rate, sqrt / measured sqrt rate, and a memory-only
+ *     loop with the model's loads and stores; printed as a fraction of the RHS.
  * Usage: bench_chain [reps]
  */
 #include <math.h>
@@ -38,6 +41,144 @@ static double bound_loop(int n, const double *x, double *a, double k, double m1,
         sink += a[n / 2];
     }
     return (gw_clock_ms() - t0) * 1e6 / ((double)reps * n);
+}
+
+/* ---- 3. flop-count bound ----
+ * Per bead and RHS evaluation the model does 5 floating-point operations
+ * (d = x_(i+1) - x_i; k * d * sqrt(d): 2 multiplications; F_i - F_(i-1);
+ * times 1/m) and one square root; the kinematic half (dx/dt = v) is a copy.
+ * Bounds, each measured in this run with the same compiler flags:
+ *   flops: 5 / (rate of a tight loop of independent multiply-adds, 8 chains)
+ *   sqrt:  1 / (rate of a tight loop of independent square roots, L1-resident)
+ *   memory: a loop with the model's loads and stores (x, v, 1/m, k in; dx/dt,
+ *           dv/dt out: 48 bytes per bead) and no square root or branch
+ * The hardware bound is the largest of the three (they can overlap); the
+ * fraction printed is bound / measured RHS time. */
+static double flop_ns(void)
+{
+    volatile double vb = 0.999999, vc = 1e-6;
+    double b = vb, c = vc;
+    double a0 = 1, a1 = 2, a2 = 3, a3 = 4, a4 = 5, a5 = 6, a6 = 7, a7 = 8;
+    const long it = 20000000;
+    double best = 1e300;
+    for (int rep = 0; rep < 5; rep++) {
+        double t0 = gw_clock_ms();
+        for (long i = 0; i < it; i++) {
+            a0 = a0 * b + c;
+            a1 = a1 * b + c;
+            a2 = a2 * b + c;
+            a3 = a3 * b + c;
+            a4 = a4 * b + c;
+            a5 = a5 * b + c;
+            a6 = a6 * b + c;
+            a7 = a7 * b + c;
+        }
+        best = fmin(best, gw_clock_ms() - t0);
+    }
+    sink += a0 + a1 + a2 + a3 + a4 + a5 + a6 + a7;
+    return best * 1e6 / (16.0 * it); /* ns per flop */
+}
+
+static double sqrt_ns(void)
+{
+    enum { L = 1024 };
+    static double v[L];
+    for (int i = 0; i < L; i++)
+        v[i] = 1e-6 * (1 + i);
+    const int it = 20000;
+    double best = 1e300;
+    for (int rep = 0; rep < 5; rep++) {
+        double s0 = 0, s1 = 0, s2 = 0, s3 = 0;
+        double t0 = gw_clock_ms();
+        for (int r = 0; r < it; r++) {
+            for (int i = 0; i < L; i += 4) {
+                s0 += sqrt(v[i]);
+                s1 += sqrt(v[i + 1]);
+                s2 += sqrt(v[i + 2]);
+                s3 += sqrt(v[i + 3]);
+            }
+            v[r & (L - 1)] += 1e-20; /* keep the loop from being hoisted */
+        }
+        best = fmin(best, gw_clock_ms() - t0);
+        sink += s0 + s1 + s2 + s3;
+    }
+    return best * 1e6 / ((double)it * L); /* ns per square root */
+}
+
+static double mem_ns(int n, const double *y, double *yd, const double *m1, const double *kc, int reps)
+{
+    double best = 1e300;
+    for (int rep = 0; rep < 5; rep++) {
+        double t0 = gw_clock_ms();
+        for (int r = 0; r < reps; r++) {
+            for (int i = 0; i < n - 1; i++) {
+                yd[2 * i] = y[2 * i + 1];
+                yd[2 * i + 1] = (y[2 * i + 2] - y[2 * i]) * kc[i] * m1[i];
+            }
+            sink += yd[n];
+        }
+        best = fmin(best, gw_clock_ms() - t0);
+    }
+    return best * 1e6 / ((double)reps * n);
+}
+
+static double rhs_ns(const gw_system *sys, int n, const double *y, double *yd, int reps)
+{
+    double best = 1e300;
+    for (int rep = 0; rep < 5; rep++) {
+        double t0 = gw_clock_ms();
+        for (int r = 0; r < reps; r++) {
+            sys->rhs(0, y, yd, sys->params);
+            sink += yd[n];
+        }
+        best = fmin(best, gw_clock_ms() - t0);
+    }
+    return best * 1e6 / ((double)reps * n);
+}
+
+static int hardware_bound(int reps)
+{
+    double fl = flop_ns(), sq = sqrt_ns();
+    printf("\n3. flop-count bound: 5 flops + 1 sqrt per bead per RHS; tight loops here: "
+           "%.3f ns/flop (%.2f Gflop/s), %.3f ns/sqrt\n",
+           fl, 1 / fl, sq);
+    printf("%10s %9s %9s %9s %9s %9s %9s %10s\n", "beads", "RHS", "flops", "sqrt", "memory",
+           "bound", "fraction", "Gflop/s");
+    const int sizes[] = {40, 1000, 100000, 1000000};
+    for (size_t s = 0; s < sizeof sizes / sizeof sizes[0]; s++) {
+        int n = sizes[s];
+        gw_chain_params p = gw_chain_params_default();
+        p.n = n;
+        gw_chain *c = NULL;
+        gw_err err;
+        if (gw_chain_create(&p, &c, &err) != GW_OK) {
+            fprintf(stderr, "%s\n", err.msg);
+            return 1;
+        }
+        const gw_system *sys = gw_chain_system(c);
+        double *y = malloc((size_t)sys->dim * sizeof *y), *yd = malloc((size_t)sys->dim * sizeof *yd);
+        double *m1 = malloc((size_t)n * sizeof *m1), *kc = malloc((size_t)n * sizeof *kc);
+        for (int i = 0; i < n; i++) {
+            y[2 * i] = 1e-6 * (1 + 0.01 * i);
+            y[2 * i + 1] = 0.1;
+            m1[i] = 1 / p.mass;
+            kc[i] = p.k;
+        }
+        int rr = (int)fmax(4, reps * 40.0 / n);
+        sys->rhs(0, y, yd, sys->params);
+        double rhs = rhs_ns(sys, n, y, yd, rr);
+        double mem = mem_ns(n, y, yd, m1, kc, rr);
+        double bound = fmax(fmax(5 * fl, sq), mem);
+        printf("%10d %9.3f %9.3f %9.3f %9.3f %9.3f %8.0f%% %10.2f\n", n, rhs, 5 * fl, sq, mem, bound,
+               100 * bound / rhs, 5 / rhs);
+        free(y);
+        free(yd);
+        free(m1);
+        free(kc);
+        gw_chain_free(c);
+    }
+    printf("(ns per bead per RHS evaluation; fraction = bound / RHS; Gflop/s = 5 flops / RHS)\n");
+    return 0;
 }
 
 int main(int argc, char **argv)
@@ -67,13 +208,15 @@ int main(int argc, char **argv)
             y[2 * i] = x[i];
             y[2 * i + 1] = 0.1;
         }
-        int rr = (int)fmax(1, reps * 40.0 / n);
+        int rr = (int)fmax(20, reps * 40.0 / n);
+        sys->rhs(0, y, yd, sys->params); /* warm-up: first touch of yd, caches */
         double t0 = gw_clock_ms();
         for (int r = 0; r < rr; r++) {
             sys->rhs(0, y, yd, sys->params);
             sink += yd[n];
         }
         double model = (gw_clock_ms() - t0) * 1e6 / ((double)rr * n);
+        bound_loop(n, x, a, p.k, 1 / p.mass, 1);
         double bound = bound_loop(n, x, a, p.k, 1 / p.mass, rr);
         printf("%10d %12.3f %12.3f %8.2f\n", n, model, bound, model / bound);
         free(y);
@@ -140,5 +283,5 @@ int main(int argc, char **argv)
     }
     gw_chain_result_free(&ref);
     gw_chain_free(c);
-    return 0;
+    return hardware_bound(reps);
 }

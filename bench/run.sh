@@ -1,7 +1,15 @@
 #!/bin/bash
 # bench/run.sh [BUILD_DIR]: build and run the benchmarks; prints measurements only.
+#   bench_chain  RHS cost against a force-only loop and a flop-count bound,
+#                per-backend cost on the 40-bead column
+#   bench_long   1e3 .. 1e6 beads: ns per bead-step and peak RSS per backend
+#                (LONG_ARGS, e.g. "--nmax 100000 --reps 1" for a quick run)
+# Peers (SciPy, LAMMPS) and time to solution: bench/run_peers.sh.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 B=${1:-build}
-cmake --build "$B" --target bench_chain >/dev/null
+cmake --build "$B" --target bench_chain bench_long >/dev/null
 "$B/bench/bench_chain"
+echo
+# shellcheck disable=SC2086
+"$B/bench/bench_long" ${LONG_ARGS:-}

@@ -68,11 +68,15 @@ int gw_parse_int_range(const char *s, const char *name, long lo, long hi, long *
 /* ---- files ---- */
 
 /* A file written under a temporary name and renamed into place on commit, so a
- * reader sees either the previous file or the complete new one. */
+ * reader sees either the previous file or the complete new one. SIGINT, SIGTERM
+ * and SIGHUP are held from open to commit/abort (delivered right after), so an
+ * interrupt never leaves the temporary behind; only kill -9 can. */
 typedef struct gw_afile {
     FILE *fp;
     char path[4096];
     char tmp[4096 + 32];
+    unsigned char oldmask[128]; /* the caller's signal mask (a sigset_t) */
+    int masked;
 } gw_afile;
 
 /* Open path for writing through a temporary file. On failure nothing is created. */

@@ -4,17 +4,39 @@
 #define _POSIX_C_SOURCE 200809L
 #include <errno.h>
 #include <fcntl.h>
+#include <signal.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
+#include <pthread.h>
 #include <time.h>
 #include <unistd.h>
 
 #include "gw_common.h"
 
+_Static_assert(sizeof(sigset_t) <= sizeof(((gw_afile *)0)->oldmask), "sigset_t does not fit");
+
+static void hold_signals(gw_afile *f)
+{
+    sigset_t s;
+    sigemptyset(&s);
+    sigaddset(&s, SIGINT);
+    sigaddset(&s, SIGTERM);
+    sigaddset(&s, SIGHUP);
+    f->masked = pthread_sigmask(SIG_BLOCK, &s, (sigset_t *)(void *)f->oldmask) == 0;
+}
+
+static void release_signals(gw_afile *f)
+{
+    if (f->masked)
+        pthread_sigmask(SIG_SETMASK, (sigset_t *)(void *)f->oldmask, NULL);
+    f->masked = 0;
+}
+
 int gw_afile_open(gw_afile *f, const char *path, gw_err *err)
 {
     memset(f, 0, sizeof *f);
+    hold_signals(f);
     if (strlen(path) >= sizeof f->path)
         return gw_err_set(err, GW_EINVAL, "%s: path too long", path);
     snprintf(f->path, sizeof f->path, "%s", path);
@@ -22,23 +44,29 @@ int gw_afile_open(gw_afile *f, const char *path, gw_err *err)
     int fd = mkstemp(f->tmp);
     if (fd < 0) {
         f->tmp[0] = '\0';
-        return gw_err_set(err, GW_EIO, "%s: cannot create: %s", path, strerror(errno));
+        int e = errno;
+        release_signals(f);
+        return gw_err_set(err, GW_EIO, "%s: cannot create: %s", path, strerror(e));
     }
     fchmod(fd, 0644);
     f->fp = fdopen(fd, "w");
     if (!f->fp) {
+        int e = errno;
         close(fd);
         unlink(f->tmp);
         f->tmp[0] = '\0';
-        return gw_err_set(err, GW_EIO, "%s: cannot open: %s", path, strerror(errno));
+        release_signals(f);
+        return gw_err_set(err, GW_EIO, "%s: cannot open: %s", path, strerror(e));
     }
     return GW_OK;
 }
 
 int gw_afile_commit(gw_afile *f, gw_err *err)
 {
-    if (!f->fp)
+    if (!f->fp) {
+        release_signals(f);
         return gw_err_set(err, GW_EIO, "%s: file not open", f->path);
+    }
     int bad = ferror(f->fp) || fflush(f->fp) != 0 || fsync(fileno(f->fp)) != 0;
     int saved = errno;
     if (fclose(f->fp) != 0)
@@ -49,9 +77,11 @@ int gw_afile_commit(gw_afile *f, gw_err *err)
             saved = errno;
         unlink(f->tmp);
         f->tmp[0] = '\0';
+        release_signals(f);
         return gw_err_set(err, GW_EIO, "%s: write failed: %s", f->path, strerror(saved));
     }
     f->tmp[0] = '\0';
+    release_signals(f);
     return GW_OK;
 }
 
@@ -65,6 +95,7 @@ void gw_afile_abort(gw_afile *f)
         unlink(f->tmp);
         f->tmp[0] = '\0';
     }
+    release_signals(f);
 }
 
 int gw_mkdir_p(const char *path, gw_err *err)

@@ -45,6 +45,9 @@ typedef struct gw_layer_params {
     double damping;       /* Hunt-Crossley normal damping alpha, s/m [0 = none, as
                              the paper]; used to settle pluviated samples */
     double skin;          /* Verlet skin of the contact list, m [0.1] */
+    int no_events;        /* 1: do not stop at contact openings/closings and
+                             stick/slip switches (only at list rebuilds): faster,
+                             lower order; used for pluviation [0] */
     int potential_from_start; /* 1: gravitational energy measured from the initial
                                  positions (A = initial kinetic + strain energy);
                                  0: from y = 0 [0] */
@@ -93,8 +96,15 @@ int gw_layer_start(gw_layer *L, const gw_solver_type *type, const gw_solver_para
  * the layer then holds the last good state. */
 int gw_layer_advance(gw_layer *L, double tout, gw_err *err);
 
+/* Called at every contact event found by the solver's root finder: dir = +1
+ * when contact (a, b) closes (u_n rises through 0), -1 when it opens; b < 0 is a
+ * wall (-1 left, -2 right, -3 bottom). Events of particles crossing the skin
+ * are not reported. */
+typedef void (*gw_layer_event_fn)(void *ctx, double t, int a, int b, int dir);
+void gw_layer_set_event_hook(gw_layer *L, gw_layer_event_fn fn, void *ctx);
+
 typedef struct gw_layer_stats {
-    long steps, rhs_evals, events, rebuilds, contacts_listed, projections;
+    long steps, rhs_evals, events, rebuilds, contacts_listed, projections, zeno_guards;
 } gw_layer_stats;
 void gw_layer_get_stats(const gw_layer *L, gw_layer_stats *st);
 
@@ -105,6 +115,8 @@ void gw_layer_particle(const gw_layer *L, int i, double s[6]);
 double gw_layer_radius(const gw_layer *L, int i);
 double gw_layer_particle_mass(const gw_layer *L, int i);
 const gw_layer_params *gw_layer_get_params(const gw_layer *L);
+/* Number of closed contacts (u_n > 0) of particle i, walls included. */
+int gw_layer_contact_count(const gw_layer *L, int i);
 /* Mark particle i as the block: its kinetic energy is booked as E_k,b. */
 void gw_layer_set_block(gw_layer *L, int i);
 
@@ -174,7 +186,7 @@ typedef struct gw_layer_make_params {
     double volume_ratio;   /* largest/smallest volume [10] */
     double width_rm;       /* box width in R_m [50] */
     long seed;             /* PRNG seed [1] */
-    double ke_threshold;   /* stop when E_k < ke_threshold * m_total g R_m [1e-4] */
+    double ke_threshold;   /* stop when E_k < ke_threshold * m_total g R_m [1e-5] */
     double t_max;          /* give up after t_max s of simulated time [6] */
     double damping;        /* Hunt-Crossley alpha while settling, s/m [0.3] */
     double modulus_factor; /* settle with G * factor, then relax with true G [1] */
@@ -217,6 +229,8 @@ typedef struct gw_layer_impact_params {
     double dt_out;      /* sampling interval, s [2e-5] */
     double ring_width;  /* crown width d_c, m [2 R_m] */
     int nrings;         /* crowns [12] */
+    int full;           /* 1: run to t_max even after the block has left [0] */
+    int remove_walls;   /* 1: no left/right/bottom walls from the impact on [0] */
 } gw_layer_impact_params;
 
 gw_layer_impact_params gw_layer_impact_params_default(void);
@@ -224,8 +238,9 @@ gw_layer_impact_params gw_layer_impact_params_default(void);
 /* Time series recorded every dt_out (allocated by the run, freed with
  * gw_layer_impact_result_free). */
 typedef struct gw_layer_impact_result {
-    int bounced;
-    double v_ni, v_nr, v_r, e_n, e, alpha_r_deg;
+    int bounced;            /* vy changed sign and the block left all contacts */
+    double v_ni, v_nr, v_r, e_n, e, alpha_r_deg; /* at the largest upward velocity
+                                                    (0 / NaN if vy never > 0) */
     double t_rebound;       /* T_i: time of the largest upward velocity, s */
     double penetration;     /* largest downward block displacement, m */
     double energy_error;    /* max |sum - A| / A over the run */
@@ -252,6 +267,11 @@ typedef struct gw_layer_impact_result {
 } gw_layer_impact_result;
 
 void gw_layer_impact_result_free(gw_layer_impact_result *r);
+
+/* Check impact parameters against a sample (block radius, speed, incidence,
+ * gap >= 0, block inside the box, ...): GW_EINVAL naming the input. */
+int gw_layer_impact_check(const gw_layer_sample *s, const gw_layer_impact_params *ip,
+                          gw_err *err);
 
 /* One block impact on a sample (physics.md 2.3). vtk_dir (may be NULL) receives
  * snapshot_0.vtk and snapshot_end.vtk. GW_EINVAL names the input (block

@@ -88,7 +88,7 @@ static void head_on(const gw_solver_type *type)
     gw_layer_particle(L, 0, s0);
     gw_layer_particle(L, 1, s1);
     snprintf(what, sizeof what, "%s: restitution of the relative velocity", nm);
-    gw_test_rel((s0[3] - s1[3]) / vrel, 1.0, 1e-6, what);
+    gw_test_rel((s1[3] - s0[3]) / vrel, 1.0, 1e-6, what);
     gw_layer_free(L);
 }
 

@@ -1,0 +1,13 @@
+# The 2D granular layer (issue 4): Hertz-Mindlin discs, pluviation, block impact.
+add_library(gw_layer STATIC
+  ${CMAKE_CURRENT_LIST_DIR}/layer_model.c
+  ${CMAKE_CURRENT_LIST_DIR}/layer_contacts.c
+  ${CMAKE_CURRENT_LIST_DIR}/layer_sim.c
+  ${CMAKE_CURRENT_LIST_DIR}/layer_sample.c
+  ${CMAKE_CURRENT_LIST_DIR}/layer_make.c
+  ${CMAKE_CURRENT_LIST_DIR}/layer_impact.c
+  ${CMAKE_CURRENT_LIST_DIR}/layer_crowns.c
+  ${CMAKE_CURRENT_LIST_DIR}/layer_vtk.c
+  ${CMAKE_CURRENT_LIST_DIR}/layer_cmd.c)
+target_include_directories(gw_layer PUBLIC ${CMAKE_CURRENT_SOURCE_DIR})
+target_link_libraries(gw_layer PUBLIC gw_common)

@@ -1,0 +1,481 @@
+/*
+ * layer_cmd.c: the commands `granwave layer-make` (pluviation, physics.md 2.2)
+ * and `granwave layer-impact` (one block impact, physics.md 2.3-2.5; B.5-B.18).
+ * Option tables (gw_cli), JSON results (cJSON) and the --out files: ledger.csv
+ * (energy ledger B.7-B.14 over time), crowns.csv (per-ring strain, kinetic
+ * energy and coordination over time), crowns_peaks.csv, impact.json and VTK
+ * snapshots. Every output records the version, the parameters and the solver.
+ * Exit codes: 0 ok, 1 run failure, 2 bad input (one line naming the input).
+ * Units: SI; angles in degrees on the command line.
+ */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "gw_layer.h"
+
+#define OPT_D(nm, dst, mv, hl, lo_, hi_, open_)                                          \
+    (gw_opt) { .name = nm, .kind = GW_OPT_DOUBLE, .dest = dst, .metavar = mv, .help = hl, \
+               .lo = lo_, .hi = hi_, .open_lo = open_ }
+#define OPT_S(nm, dst, mv, hl)                                                           \
+    (gw_opt) { .name = nm, .kind = GW_OPT_STRING, .dest = dst, .metavar = mv, .help = hl }
+#define OPT_L(nm, dst, mv, hl, lo_, hi_)                                                 \
+    (gw_opt) { .name = nm, .kind = GW_OPT_LONG, .dest = dst, .metavar = mv, .help = hl,   \
+               .lo = lo_, .hi = hi_ }
+
+/* Material options shared by both commands. */
+typedef struct mat_cli {
+    gw_layer_params lp;
+    const char *mass_law;
+} mat_cli;
+
+static int mat_options(mat_cli *m, gw_opt *o)
+{
+    m->lp = gw_layer_params_default();
+    m->mass_law = "disc";
+    int i = 0;
+    /* ranges are checked by gw_layer_params_validate, so the message names the
+     * physical quantity (e.g. friction outside [0, 90)) */
+    o[i++] = OPT_D("friction", &m->lp.friction_deg, "PHI", "friction angle phi, deg in [0, 90) [30]", -INFINITY, INFINITY, 0);
+    o[i++] = OPT_D("shear-modulus", &m->lp.shear_modulus, "G", "shear modulus, Pa [40e9]", -INFINITY, INFINITY, 0);
+    o[i++] = OPT_D("poisson", &m->lp.poisson, "NU", "Poisson ratio [0.25]", -INFINITY, INFINITY, 0);
+    o[i++] = OPT_D("density", &m->lp.density, "RHO", "particle density, kg/m^3 [2650]", -INFINITY, INFINITY, 0);
+    o[i++] = OPT_D("gravity", &m->lp.gravity, "G", "gravity, m/s^2 [9.81]", -INFINITY, INFINITY, 0);
+    o[i++] = OPT_D("skin", &m->lp.skin, "S", "contact-list skin, m [0.1]", -INFINITY, INFINITY, 0);
+    o[i++] = OPT_S("mass-law", &m->mass_law, "LAW", "disc (unit thickness) or sphere [disc; impacts: the sample's]");
+    return i;
+}
+
+static int mat_resolve(mat_cli *m, gw_err *err)
+{
+    if (strcmp(m->mass_law, "disc") == 0)
+        m->lp.mass_law = GW_LAYER_MASS_DISC;
+    else if (strcmp(m->mass_law, "sphere") == 0)
+        m->lp.mass_law = GW_LAYER_MASS_SPHERE;
+    else
+        return gw_err_set(err, GW_EINVAL, "--mass-law: unknown '%s' (disc, sphere)", m->mass_law);
+    return gw_layer_params_validate(&m->lp, err);
+}
+
+static cJSON *mat_json(const gw_layer_params *p)
+{
+    cJSON *o = cJSON_CreateObject();
+    cJSON_AddNumberToObject(o, "shear_modulus", p->shear_modulus);
+    cJSON_AddNumberToObject(o, "poisson", p->poisson);
+    cJSON_AddNumberToObject(o, "friction_deg", p->friction_deg);
+    cJSON_AddNumberToObject(o, "density", p->density);
+    cJSON_AddNumberToObject(o, "gravity", p->gravity);
+    cJSON_AddNumberToObject(o, "skin", p->skin);
+    cJSON_AddNumberToObject(o, "normal_damping", p->damping);
+    cJSON_AddStringToObject(o, "mass_law", gw_layer_mass_law_name(p->mass_law));
+    cJSON_AddStringToObject(o, "contact_law", "Hertz-Mindlin B.1-B.4, R_p = 2RaRb/(Ra+Rb), R_ball at walls");
+    return o;
+}
+
+static int fail(const char *cmd, const char *msg)
+{
+    fprintf(stderr, "granwave %s: %s\n", cmd, msg);
+    return 2;
+}
+
+/* "granwave VERSION\ncommand: ..." for file headers; caller frees. */
+static char *command_line(const char *cmd, int argc, char **argv)
+{
+    size_t len = 128 + strlen(cmd);
+    for (int i = 0; i < argc; i++)
+        len += strlen(argv[i]) + 1;
+    char *h = malloc(len);
+    if (!h)
+        return NULL;
+    size_t w = (size_t)snprintf(h, len, "granwave %s\ncommand: granwave %s", gw_version(), cmd);
+    for (int i = 0; i < argc && w < len; i++)
+        w += (size_t)snprintf(h + w, len - w, " %s", argv[i]);
+    return h;
+}
+
+/* ------------------------------------------------------------ layer-make --- */
+
+static const char *make_summary =
+    "Pluviate a 2D sample (Bourrier et al. 2008, physics.md 2.2): polydisperse discs\n"
+    "dropped under gravity in a box with rigid walls until the kinetic energy is below\n"
+    "a threshold; Hertz-Mindlin contacts with friction, Hunt-Crossley normal damping\n"
+    "while settling. Writes the text sample format of gw_layer.h. Deterministic for a\n"
+    "seed. SI units.";
+
+int gw_cmd_layer_make(int argc, char **argv)
+{
+    mat_cli m;
+    gw_opt o[32];
+    int i = mat_options(&m, o);
+    gw_layer_make_params mp = gw_layer_make_params_default();
+    long n = mp.n, seed = mp.seed;
+    const char *out = NULL;
+    int json = 0;
+    o[i++] = OPT_L("n", &n, "N", "number of particles [300]", 1, 1000000);
+    o[i++] = OPT_D("rm", &mp.rm, "R", "mean particle radius R_m, m [0.325]", 0, INFINITY, 1);
+    o[i++] = OPT_D("volume-ratio", &mp.volume_ratio, "V", "largest/smallest particle volume [10]", 1, 1e6, 0);
+    o[i++] = OPT_D("width-rm", &mp.width_rm, "W", "box width in R_m [50]", 0, 1e6, 1);
+    o[i++] = OPT_L("seed", &seed, "S", "random seed [1]", 0, 9000000000000000000.0);
+    o[i++] = OPT_D("ke-threshold", &mp.ke_threshold, "E", "stop when E_k < E * M g R_m [1e-5]", 0, 1, 1);
+    o[i++] = OPT_D("t-max", &mp.t_max, "T", "give up after T s simulated [6]", 0, 1e4, 1);
+    o[i++] = OPT_D("damping", &mp.damping, "A", "Hunt-Crossley alpha while settling, s/m [0.3]", 0, 1e3, 0);
+    o[i++] = OPT_D("modulus-factor", &mp.modulus_factor, "F", "settle with F*G then relax with G [1]", 0, 1, 1);
+    o[i++] = OPT_D("dt", &mp.dt, "DT", "RK4 step, s [2e-5]", 0, 1, 1);
+    o[i++] = OPT_S("out", &out, "FILE", "sample file to write (required)");
+    o[i++] = (gw_opt){.name = "json", .kind = GW_OPT_FLAG, .dest = &json, .help = "print the result as JSON"};
+    o[i] = (gw_opt){0};
+    gw_err err = {{0}};
+    int help = 0, npos = 0;
+    const char *pos[1];
+    if (gw_cli_parse("layer-make", o, argc, argv, &help, pos, 0, &npos, &err) != GW_OK)
+        return fail("layer-make", err.msg);
+    if (help) {
+        gw_cli_help(stdout, "layer-make", "granwave layer-make --out FILE [options]", make_summary, o);
+        return 0;
+    }
+    if (mat_resolve(&m, &err) != GW_OK)
+        return fail("layer-make", err.msg);
+    if (!out)
+        return fail("layer-make", "--out: the sample file to write is required");
+    size_t lo = strlen(out);
+    if (lo >= 3 && strcmp(out + lo - 3, ".h5") == 0) /* not silently text in a .h5 file */
+        return fail("layer-make", "--out: HDF5 samples are not implemented yet; give a text file name (e.g. sample.txt)");
+    mp.n = (int)n;
+    mp.seed = seed;
+    gw_layer_sample s;
+    gw_layer_make_result r;
+    int rc = gw_layer_make(&m.lp, &mp, &s, &r, &err);
+    if (rc != GW_OK) {
+        fprintf(stderr, "granwave layer-make: %s\n", err.msg);
+        return rc == GW_EINVAL ? 2 : 1;
+    }
+    char *hdr = command_line("layer-make", argc, argv);
+    char info[512];
+    snprintf(info, sizeof info, "%s\nsettled: t = %.4g s, E_k = %.4g J, converged %d, max overlap %.3g R_p; "
+             "mass law %s; settling damping alpha = %g s/m, modulus factor %g, RK4 dt = %g s",
+             hdr ? hdr : "", r.t_settle, r.ke_final, r.converged, r.max_overlap,
+             gw_layer_mass_law_name(m.lp.mass_law), mp.damping, mp.modulus_factor, mp.dt);
+    free(hdr);
+    rc = gw_layer_sample_write(&s, out, info, &err);
+    if (rc != GW_OK) {
+        gw_layer_sample_free(&s);
+        fprintf(stderr, "granwave layer-make --out: %s\n", err.msg);
+        return 1;
+    }
+    double h = 0;
+    for (int k = 0; k < s.n; k++)
+        h = fmax(h, s.y[k] + s.r[k]);
+    if (json) {
+        cJSON *j = cJSON_CreateObject();
+        cJSON_AddStringToObject(j, "version", gw_version());
+        cJSON_AddStringToObject(j, "sample", out);
+        cJSON_AddNumberToObject(j, "n", s.n);
+        cJSON_AddNumberToObject(j, "porosity", r.porosity);
+        cJSON_AddNumberToObject(j, "height", h);
+        cJSON_AddNumberToObject(j, "height_rm", h / mp.rm);
+        cJSON_AddNumberToObject(j, "width", s.width);
+        cJSON_AddNumberToObject(j, "t_settle", r.t_settle);
+        cJSON_AddNumberToObject(j, "ke_final", r.ke_final);
+        cJSON_AddBoolToObject(j, "converged", r.converged);
+        cJSON_AddNumberToObject(j, "max_overlap_over_rp", r.max_overlap);
+        cJSON_AddNumberToObject(j, "steps", (double)r.steps);
+        cJSON_AddNumberToObject(j, "rebuilds", (double)r.rebuilds);
+        cJSON_AddNumberToObject(j, "wall_time_ms", r.wall_ms);
+        cJSON *st = cJSON_AddObjectToObject(j, "settings");
+        cJSON_AddNumberToObject(st, "rm", mp.rm);
+        cJSON_AddNumberToObject(st, "volume_ratio", mp.volume_ratio);
+        cJSON_AddNumberToObject(st, "width_rm", mp.width_rm);
+        cJSON_AddNumberToObject(st, "seed", (double)mp.seed);
+        cJSON_AddNumberToObject(st, "ke_threshold", mp.ke_threshold);
+        cJSON_AddNumberToObject(st, "damping", mp.damping);
+        cJSON_AddNumberToObject(st, "modulus_factor", mp.modulus_factor);
+        cJSON_AddStringToObject(st, "solver", "rk4 (contact events not located while settling)");
+        cJSON_AddNumberToObject(st, "dt", mp.dt);
+        cJSON_AddItemToObject(st, "material", mat_json(&m.lp));
+        gw_json_print(j, stdout);
+        cJSON_Delete(j);
+    } else {
+        printf("granwave %s layer-make: %d particles, porosity %.4f, height %.3f m (%.2f R_m)\n",
+               gw_version(), s.n, r.porosity, h, h / mp.rm);
+        printf("  settled in %.3g s simulated (%s), E_k = %.3g J, max overlap %.3g R_p\n", r.t_settle,
+               r.converged ? "converged" : "NOT converged: t-max reached", r.ke_final, r.max_overlap);
+        printf("  mass law %s; settling: Hunt-Crossley alpha %g s/m, modulus factor %g; RK4 dt %g s\n",
+               gw_layer_mass_law_name(m.lp.mass_law), mp.damping, mp.modulus_factor, mp.dt);
+        printf("  wall time %.0f ms, %ld steps, %ld list rebuilds; written to %s\n", r.wall_ms, r.steps,
+               r.rebuilds, out);
+    }
+    gw_layer_sample_free(&s);
+    return 0;
+}
+
+/* ---------------------------------------------------------- layer-impact --- */
+
+static const char *impact_summary =
+    "One block impact on a 2D granular layer (Bourrier et al. 2008, physics.md 2.3):\n"
+    "a disc of radius rb-rm * R_m hits the sample at speed vi and incidence alpha.\n"
+    "Reports bouncing, restitution (e_n, e, alpha_r), penetration, the energy ledger\n"
+    "closure, the friction loss of the first contact and the wave speed from crowns.\n"
+    "SI units, angles in degrees.";
+
+typedef struct impact_cli {
+    mat_cli m;
+    gw_layer_impact_params ip;
+    const char *sample, *solver, *method, *out;
+    double dt, rtol, atol, rm;
+    long rings;
+    int json;
+} impact_cli;
+
+static cJSON *impact_json(const impact_cli *c, const gw_layer_impact_result *r,
+                          const gw_solver_params *sp)
+{
+    cJSON *o = cJSON_CreateObject();
+    cJSON_AddStringToObject(o, "version", gw_version());
+    cJSON_AddBoolToObject(o, "bounced", r->bounced);
+    cJSON_AddNumberToObject(o, "e_n", r->e_n);
+    cJSON_AddNumberToObject(o, "e", r->e);
+    cJSON_AddNumberToObject(o, "alpha_r", r->alpha_r_deg);
+    cJSON_AddNumberToObject(o, "v_nr", r->v_nr);
+    cJSON_AddNumberToObject(o, "v_ni", r->v_ni);
+    cJSON_AddNumberToObject(o, "v_r", r->v_r);
+    cJSON_AddNumberToObject(o, "t_rebound", r->t_rebound);
+    cJSON_AddNumberToObject(o, "penetration", r->penetration);
+    cJSON_AddNumberToObject(o, "penetration_rm", r->penetration / c->rm);
+    cJSON_AddNumberToObject(o, "energy_error", r->energy_error);
+    cJSON_AddNumberToObject(o, "e_incident", r->e_incident);
+    cJSON_AddNumberToObject(o, "dissipated_first_contact", r->dissipated_first_contact);
+    cJSON_AddNumberToObject(o, "t_first_contact", r->t_first_contact);
+    cJSON_AddNumberToObject(o, "wave_speed", r->wave_speed);
+    cJSON_AddNumberToObject(o, "wave_speed_err", r->wave_speed_err);
+    cJSON_AddNumberToObject(o, "wave_speed_kinetic", r->wave_speed_kin);
+    cJSON_AddNumberToObject(o, "wave_speed_kinetic_err", r->wave_speed_kin_err);
+    cJSON_AddNumberToObject(o, "wave_rings", r->wave_rings);
+    cJSON_AddNumberToObject(o, "t_end", r->t_end);
+    cJSON_AddNumberToObject(o, "block_mass", r->block_mass);
+    cJSON_AddNumberToObject(o, "froude", c->ip.vi / sqrt(2 * c->m.lp.gravity * c->ip.rb_rm * c->rm));
+    cJSON_AddNumberToObject(o, "n_mobile", r->n_mobile);
+    cJSON_AddNumberToObject(o, "n_frozen", r->n_frozen);
+    const gw_layer_energy *e = &r->ledger[r->ns - 1];
+    cJSON *l = cJSON_AddObjectToObject(o, "ledger_end");
+    cJSON_AddNumberToObject(l, "kinetic_block", e->kinetic_block);
+    cJSON_AddNumberToObject(l, "kinetic_soil", e->kinetic_soil);
+    cJSON_AddNumberToObject(l, "strain_normal", e->strain_normal);
+    cJSON_AddNumberToObject(l, "strain_tangent", e->strain_tangent);
+    cJSON_AddNumberToObject(l, "mindlin_excess", e->mindlin_excess);
+    cJSON_AddNumberToObject(l, "dissipated", e->dissipated);
+    cJSON_AddNumberToObject(l, "potential", e->potential);
+    cJSON_AddNumberToObject(l, "total", e->total);
+    cJSON_AddNumberToObject(l, "A", r->ledger[0].total);
+    cJSON *cr = cJSON_AddObjectToObject(o, "crowns");
+    cJSON_AddNumberToObject(cr, "x", r->impact_x);
+    cJSON_AddNumberToObject(cr, "y", r->impact_y);
+    cJSON_AddItemToObject(cr, "ring_r", gw_json_doubles(r->ring_r, r->nrings));
+    cJSON_AddItemToObject(cr, "peak_strain_t", gw_json_doubles(r->peak_strain_t, r->nrings));
+    cJSON_AddItemToObject(cr, "peak_kinetic_t", gw_json_doubles(r->peak_kin_t, r->nrings));
+    cJSON_AddNumberToObject(o, "wall_time_ms", r->wall_ms);
+    cJSON_AddNumberToObject(o, "steps", (double)r->stats.steps);
+    cJSON_AddNumberToObject(o, "rhs_evals", (double)r->stats.rhs_evals);
+    cJSON_AddNumberToObject(o, "events", (double)r->stats.events);
+    cJSON_AddNumberToObject(o, "rebuilds", (double)r->stats.rebuilds);
+    cJSON_AddNumberToObject(o, "zeno_guards", (double)r->stats.zeno_guards);
+    cJSON *s = cJSON_AddObjectToObject(o, "settings");
+    cJSON_AddStringToObject(s, "sample", c->sample);
+    cJSON_AddNumberToObject(s, "rb_rm", c->ip.rb_rm);
+    cJSON_AddNumberToObject(s, "vi", c->ip.vi);
+    cJSON_AddNumberToObject(s, "alpha_deg", c->ip.alpha_deg);
+    cJSON_AddNumberToObject(s, "x", c->ip.x);
+    cJSON_AddNumberToObject(s, "height_rm", c->ip.height_rm);
+    cJSON_AddNumberToObject(s, "gap", c->ip.gap);
+    cJSON_AddNumberToObject(s, "t_max", c->ip.t_max);
+    cJSON_AddNumberToObject(s, "dt_out", c->ip.dt_out);
+    cJSON_AddNumberToObject(s, "ring_width", c->ip.ring_width > 0 ? c->ip.ring_width : 2 * c->rm);
+    cJSON_AddBoolToObject(s, "full", c->ip.full);
+    cJSON_AddBoolToObject(s, "remove_walls", c->ip.remove_walls);
+    cJSON_AddItemToObject(s, "material", mat_json(&c->m.lp));
+    cJSON *so = cJSON_AddObjectToObject(s, "solver");
+    cJSON_AddStringToObject(so, "name", c->solver);
+    cJSON_AddStringToObject(so, "method", c->method);
+    cJSON_AddNumberToObject(so, "rtol", sp->rtol);
+    cJSON_AddNumberToObject(so, "atol", sp->atol);
+    cJSON_AddNumberToObject(so, "dt", sp->dt);
+    return o;
+}
+
+static int write_csvs(const impact_cli *c, const gw_layer_impact_result *r, const char *hdr,
+                      gw_err *err)
+{
+    char path[4096];
+    gw_afile f;
+    int rc;
+    if (gw_path_join(path, sizeof path, c->out, "ledger.csv") != GW_OK)
+        return gw_err_set(err, GW_EINVAL, "--out: directory name too long");
+    if ((rc = gw_afile_open(&f, path, err)) != GW_OK)
+        return rc;
+    fprintf(f.fp, "# %s\n# energy ledger (B.7-B.14), J; A = total at t = 0; potential from the initial "
+            "heights; closure = |total - A| / A\n", hdr);
+    fprintf(f.fp, "t,kinetic_block,kinetic_soil,strain_normal,strain_tangent,mindlin_excess,dissipated,"
+            "potential,total,closure,block_x,block_y,block_vx,block_vy\n");
+    const double A = r->ledger[0].total;
+    for (int k = 0; k < r->ns; k++) {
+        const gw_layer_energy *e = &r->ledger[k];
+        const double *b = r->block + 4 * k;
+        fprintf(f.fp, "%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.12g,%.3e,%.9g,%.9g,%.9g,%.9g\n", r->t[k],
+                e->kinetic_block, e->kinetic_soil, e->strain_normal, e->strain_tangent, e->mindlin_excess,
+                e->dissipated, e->potential, e->total, fabs(e->total - A) / A, b[0], b[1], b[2], b[3]);
+    }
+    if ((rc = gw_afile_commit(&f, err)) != GW_OK)
+        return rc;
+    if (gw_path_join(path, sizeof path, c->out, "crowns.csv") != GW_OK)
+        return gw_err_set(err, GW_EINVAL, "--out: directory name too long");
+    if ((rc = gw_afile_open(&f, path, err)) != GW_OK)
+        return rc;
+    fprintf(f.fp, "# %s\n# rings of width d_c around (%.6g, %.6g) m: strain energy increase over t = 0 "
+            "and kinetic energy (J), coordination (contacts per particle)\n", hdr, r->impact_x, r->impact_y);
+    fprintf(f.fp, "t,ring,r_mid,strain,kinetic,coordination\n");
+    for (int k = 0; k < r->ns; k++)
+        for (int q = 0; q < r->nrings; q++) {
+            size_t i = (size_t)k * r->nrings + q;
+            fprintf(f.fp, "%.9g,%d,%.6g,%.9g,%.9g,%.6g\n", r->t[k], q, r->ring_r[q], r->ring_strain[i],
+                    r->ring_kin[i], r->ring_coord[i]);
+        }
+    if ((rc = gw_afile_commit(&f, err)) != GW_OK)
+        return rc;
+    if (gw_path_join(path, sizeof path, c->out, "crowns_peaks.csv") != GW_OK)
+        return gw_err_set(err, GW_EINVAL, "--out: directory name too long");
+    if ((rc = gw_afile_open(&f, path, err)) != GW_OK)
+        return rc;
+    fprintf(f.fp, "# %s\n# peak times per ring (s, empty = no significant peak); wave speed %.6g +- %.3g m/s "
+            "(strain), %.6g +- %.3g m/s (kinetic)\n", hdr, r->wave_speed, r->wave_speed_err,
+            r->wave_speed_kin, r->wave_speed_kin_err);
+    fprintf(f.fp, "ring,r_mid,t_peak_strain,t_peak_kinetic\n");
+    for (int q = 0; q < r->nrings; q++) {
+        fprintf(f.fp, "%d,%.6g,", q, r->ring_r[q]);
+        if (isfinite(r->peak_strain_t[q]))
+            fprintf(f.fp, "%.9g", r->peak_strain_t[q]);
+        fprintf(f.fp, ",");
+        if (isfinite(r->peak_kin_t[q]))
+            fprintf(f.fp, "%.9g", r->peak_kin_t[q]);
+        fprintf(f.fp, "\n");
+    }
+    return gw_afile_commit(&f, err);
+}
+
+int gw_cmd_layer_impact(int argc, char **argv)
+{
+    impact_cli c;
+    memset(&c, 0, sizeof c);
+    gw_opt o[40];
+    int i = mat_options(&c.m, o);
+    c.ip = gw_layer_impact_params_default();
+    c.solver = "rk4";
+    c.method = "default";
+    c.dt = 1e-6;
+    c.rtol = 1e-8;
+    c.atol = 1e-8;
+    c.rings = c.ip.nrings;
+    o[i++] = OPT_S("sample", &c.sample, "FILE", "sample written by layer-make (required)");
+    o[i++] = OPT_D("rb-rm", &c.ip.rb_rm, "R", "block radius in R_m [1]", -INFINITY, INFINITY, 0);
+    o[i++] = OPT_D("vi", &c.ip.vi, "V", "incident speed, m/s [20]", -INFINITY, INFINITY, 0);
+    o[i++] = OPT_D("alpha", &c.ip.alpha_deg, "DEG", "incidence from the normal, deg in [0, 90) [0]", -INFINITY, INFINITY, 0);
+    o[i++] = OPT_D("x", &c.ip.x, "X", "impact abscissa from the box centre, m [0]", -INFINITY, INFINITY, 0);
+    o[i++] = OPT_D("height-rm", &c.ip.height_rm, "H", "mobile layer height in R_m; deeper particles frozen [0 = all]", -INFINITY, INFINITY, 0);
+    o[i++] = OPT_D("gap", &c.ip.gap, "G", "initial block-target gap, m [1e-6]; < 0 = overlapping (refused)", -INFINITY, INFINITY, 0);
+    o[i++] = OPT_D("t-max", &c.ip.t_max, "T", "end of the run, s [0.05]", -INFINITY, INFINITY, 0);
+    o[i++] = OPT_D("dt-out", &c.ip.dt_out, "DT", "sampling interval, s [2e-5]", -INFINITY, INFINITY, 0);
+    o[i++] = OPT_D("ring-width", &c.ip.ring_width, "DC", "crown width d_c, m [2 R_m]", -INFINITY, INFINITY, 0);
+    o[i++] = OPT_L("rings", &c.rings, "N", "number of crowns [12]", 1, 1000);
+    o[i++] = OPT_S("solver", &c.solver, "NAME", "rk4, cvode or arkode [rk4]");
+    o[i++] = OPT_S("method", &c.method, "NAME", "cvode: bdf|adams; arkode: erk|dirk [default]");
+    o[i++] = OPT_D("dt", &c.dt, "DT", "RK4 step, s [1e-6]", 0, 1, 1);
+    o[i++] = OPT_D("rtol", &c.rtol, "R", "relative tolerance of cvode/arkode [1e-8]", 0, 1, 1);
+    o[i++] = OPT_D("atol", &c.atol, "A", "absolute tolerance (scaled per component) [1e-8]", 0, 1, 1);
+    o[i++] = (gw_opt){.name = "remove-walls", .kind = GW_OPT_FLAG, .dest = &c.ip.remove_walls, .help = "take the left, right and bottom walls away at the start of the impact"};
+    o[i++] = (gw_opt){.name = "full", .kind = GW_OPT_FLAG, .dest = &c.ip.full, .help = "run to t-max even after the block has left (for the crowns)"};
+    o[i++] = (gw_opt){.name = "json", .kind = GW_OPT_FLAG, .dest = &c.json, .help = "print the result as JSON"};
+    o[i++] = OPT_S("out", &c.out, "DIR", "write ledger.csv, crowns.csv, crowns_peaks.csv, impact.json, VTK");
+    o[i] = (gw_opt){0};
+    gw_err err = {{0}};
+    int help = 0, npos = 0;
+    const char *pos[1];
+    if (gw_cli_parse("layer-impact", o, argc, argv, &help, pos, 0, &npos, &err) != GW_OK)
+        return fail("layer-impact", err.msg);
+    if (help) {
+        gw_cli_help(stdout, "layer-impact", "granwave layer-impact --sample FILE [options]", impact_summary, o);
+        return 0;
+    }
+    c.ip.nrings = (int)c.rings;
+    if (mat_resolve(&c.m, &err) != GW_OK)
+        return fail("layer-impact", err.msg);
+    const gw_solver_type *type = gw_solver_type_find(c.solver);
+    if (!type)
+        return fail("layer-impact", "--solver: unknown solver (cvode, arkode, rk4)");
+    gw_solver_params sp = gw_solver_params_default();
+    sp.method = gw_solver_method_find(c.method);
+    if (sp.method < 0)
+        return fail("layer-impact", "--method: unknown method (bdf, adams, erk, dirk)");
+    sp.dt = type == gw_solver_rk4 ? c.dt : 0;
+    sp.rtol = c.rtol;
+    sp.atol = c.atol;
+    if (!c.sample)
+        return fail("layer-impact", "--sample: a sample file (from layer-make) is required");
+    gw_layer_sample s;
+    if (gw_layer_sample_read(c.sample, &s, &err) != GW_OK)
+        return fail("layer-impact", err.msg);
+    c.rm = s.rm;
+    if (!gw_cli_find(o, "mass-law")->seen) /* the sample's mass law unless overridden */
+        c.m.lp.mass_law = s.mass_law;
+    if (gw_layer_impact_check(&s, &c.ip, &err) != GW_OK) {
+        gw_layer_sample_free(&s);
+        return fail("layer-impact", err.msg);
+    }
+    if (c.out && gw_mkdir_p(c.out, &err) != GW_OK) {
+        gw_layer_sample_free(&s);
+        return fail("layer-impact", err.msg);
+    }
+    gw_layer_impact_result r;
+    int rc = gw_layer_impact(&s, &c.m.lp, &c.ip, type, &sp, c.out, &r, &err);
+    gw_layer_sample_free(&s);
+    if (rc != GW_OK) {
+        fprintf(stderr, "granwave layer-impact: %s\n", err.msg);
+        return rc == GW_EINVAL || rc == GW_EUNSUPPORTED ? 2 : 1;
+    }
+    int code = 0;
+    cJSON *j = impact_json(&c, &r, &sp);
+    if (c.out) {
+        char *hdr = command_line("layer-impact", argc, argv);
+        char path[4096];
+        if (hdr)
+            for (char *p = hdr; *p; p++)
+                if (*p == '\n')
+                    *p = ';';
+        if (write_csvs(&c, &r, hdr ? hdr : "", &err) != GW_OK ||
+            gw_path_join(path, sizeof path, c.out, "impact.json") != GW_OK ||
+            gw_json_write(path, j, &err) != GW_OK) {
+            fprintf(stderr, "granwave layer-impact --out: %s\n", err.msg);
+            code = 1;
+        }
+        free(hdr);
+    }
+    if (code == 0) {
+        if (c.json) {
+            gw_json_print(j, stdout);
+        } else {
+            printf("granwave %s layer-impact: R_b = %g R_m, V_i = %g m/s, alpha = %g deg, solver %s\n",
+                   gw_version(), c.ip.rb_rm, c.ip.vi, c.ip.alpha_deg, c.solver);
+            printf("  mass law %s, %d mobile + %d frozen particles\n",
+                   gw_layer_mass_law_name(c.m.lp.mass_law), r.n_mobile, r.n_frozen);
+            printf("  bounced %s: e_n = %.4g, e = %.4g, alpha_r = %.4g deg (V_nr = %.4g m/s at %.4g ms)\n",
+                   r.bounced ? "yes" : "no", r.e_n, r.e, r.alpha_r_deg, r.v_nr, r.t_rebound * 1e3);
+            printf("  penetration %.4g m (%.3g R_m)\n", r.penetration, r.penetration / c.rm);
+            printf("  first contact: E_d = %.3g of E_incident (ends at %.4g ms)\n",
+                   r.dissipated_first_contact, r.t_first_contact * 1e3);
+            printf("  wave speed %.4g +- %.3g m/s (strain peaks, %d rings), %.4g +- %.3g m/s (kinetic)\n",
+                   r.wave_speed, r.wave_speed_err, r.wave_rings, r.wave_speed_kin, r.wave_speed_kin_err);
+            printf("  energy closure max %.3g; t_end %.4g ms; wall %.0f ms, %ld steps, %ld events, %ld rebuilds\n",
+                   r.energy_error, r.t_end * 1e3, r.wall_ms, r.stats.steps, r.stats.events, r.stats.rebuilds);
+        }
+    }
+    cJSON_Delete(j);
+    gw_layer_impact_result_free(&r);
+    return code;
+}

@@ -1,0 +1,182 @@
+/*
+ * layer_contacts.c: the Verlet contact list of the layer, built with a cell
+ * list (physics.md 2.1 for the coefficients K_n (B.3) and K_t/F_n^(1/3) (B.4)).
+ *
+ * A pair is listed when its gap is below the skin s: |x_a - x_b| < R_a + R_b + s
+ * (disc-disc, cells of side 2 R_max + s) or R_a + s beyond the wall distance. No
+ * listed-out pair can touch before some particle has moved s/2, which is the
+ * rebuild root of layer_model.c. R_p = 2 R_a R_b / (R_a + R_b) for two discs,
+ * R_a against a wall. A rebuild changes the state dimension (one F_t per listed
+ * contact); F_t of pairs listed before and after is carried over.
+ * Units: SI.
+ */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "layer_impl.h"
+
+static int contact_cmp(const void *pa, const void *pb)
+{
+    const layer_contact *a = pa, *b = pb;
+    if (a->a != b->a)
+        return a->a < b->a ? -1 : 1;
+    return (a->b > b->b) - (a->b < b->b);
+}
+
+static int push(layer_contact **c, int *nc, int *cap, int a, int b)
+{
+    if (*nc == *cap) {
+        int nc2 = *cap ? 2 * *cap : 256;
+        layer_contact *t = realloc(*c, (size_t)nc2 * sizeof *t);
+        if (!t)
+            return GW_ENOMEM;
+        *c = t;
+        *cap = nc2;
+    }
+    (*c)[*nc].a = a;
+    (*c)[*nc].b = b;
+    (*nc)++;
+    return GW_OK;
+}
+
+/* Candidate pairs by a cell list over the bounding box of the particles. */
+static int pairs_cells(const gw_layer *L, layer_contact **c, int *nc, int *cap)
+{
+    const int n = L->n;
+    const double *y = L->y, s = L->p.skin, h = 2 * L->rmax + s;
+    double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
+    for (int i = 0; i < n; i++) {
+        x0 = fmin(x0, y[6 * i]), x1 = fmax(x1, y[6 * i]);
+        y0 = fmin(y0, y[6 * i + 1]), y1 = fmax(y1, y[6 * i + 1]);
+    }
+    /* a particle far away (a block thrown high) must not blow up the grid:
+     * coarsen the cells until their number is linear in n (pairs stay exact) */
+    double hx = h;
+    long nx = (long)((x1 - x0) / hx) + 1, ny = (long)((y1 - y0) / hx) + 1;
+    const long maxc = 16L * n + 64;
+    while ((double)nx * (double)ny > (double)maxc) {
+        hx *= 2;
+        nx = (long)((x1 - x0) / hx) + 1, ny = (long)((y1 - y0) / hx) + 1;
+    }
+    const double hy = hx;
+    long ncell = nx * ny;
+    int *start = calloc((size_t)ncell + 1, sizeof *start);
+    int *idx = malloc((size_t)n * sizeof *idx), *cell = malloc((size_t)n * sizeof *cell);
+    int rc = GW_OK;
+    if (!start || !idx || !cell) {
+        rc = GW_ENOMEM;
+        goto done;
+    }
+    for (int i = 0; i < n; i++) {
+        long cx = (long)((y[6 * i] - x0) / hx), cy = (long)((y[6 * i + 1] - y0) / hy);
+        cx = cx < 0 ? 0 : cx >= nx ? nx - 1 : cx;
+        cy = cy < 0 ? 0 : cy >= ny ? ny - 1 : cy;
+        cell[i] = (int)(cy * nx + cx);
+        start[cell[i] + 1]++;
+    }
+    for (long k = 0; k < ncell; k++)
+        start[k + 1] += start[k];
+    {
+        int *fill = malloc((size_t)ncell * sizeof *fill);
+        if (!fill) {
+            rc = GW_ENOMEM;
+            goto done;
+        }
+        memcpy(fill, start, (size_t)ncell * sizeof *fill);
+        for (int i = 0; i < n; i++)
+            idx[fill[cell[i]]++] = i;
+        free(fill);
+    }
+    for (int i = 0; i < n && rc == GW_OK; i++) {
+        long cx = cell[i] % nx, cy = cell[i] / nx;
+        for (long ky = cy - 1; ky <= cy + 1; ky++) {
+            if (ky < 0 || ky >= ny)
+                continue;
+            for (long kx = cx - 1; kx <= cx + 1; kx++) {
+                if (kx < 0 || kx >= nx)
+                    continue;
+                long kc = ky * nx + kx;
+                for (int q = start[kc]; q < start[kc + 1]; q++) {
+                    int j = idx[q];
+                    if (j <= i || (L->fixed[i] && L->fixed[j]))
+                        continue;
+                    double dx = y[6 * j] - y[6 * i], dy = y[6 * j + 1] - y[6 * i + 1];
+                    double lim = L->r[i] + L->r[j] + s;
+                    if (dx * dx + dy * dy < lim * lim && (rc = push(c, nc, cap, i, j)) != GW_OK)
+                        break;
+                }
+            }
+        }
+    }
+done:
+    free(start);
+    free(idx);
+    free(cell);
+    return rc;
+}
+
+int layer_contacts_build(gw_layer *L, gw_err *err)
+{
+    const int n = L->n;
+    const double s = L->p.skin;
+    layer_contact *c = NULL;
+    int nc = 0, cap = 0;
+    int rc = pairs_cells(L, &c, &nc, &cap);
+    for (int i = 0; i < n && rc == GW_OK; i++) {
+        if (L->fixed[i])
+            continue;
+        const double x = L->y[6 * i], yy = L->y[6 * i + 1], r = L->r[i];
+        if ((L->p.walls & GW_LAYER_WALL_LEFT) && x - r < s)
+            rc = push(&c, &nc, &cap, i, LAYER_LEFT);
+        if (rc == GW_OK && (L->p.walls & GW_LAYER_WALL_RIGHT) && L->p.width - x - r < s)
+            rc = push(&c, &nc, &cap, i, LAYER_RIGHT);
+        if (rc == GW_OK && (L->p.walls & GW_LAYER_WALL_BOTTOM) && yy - r < s)
+            rc = push(&c, &nc, &cap, i, LAYER_BOTTOM);
+    }
+    if (rc != GW_OK) {
+        free(c);
+        return gw_err_set(err, rc, "layer: out of memory building the contact list");
+    }
+    if (nc > 1)
+        qsort(c, (size_t)nc, sizeof *c, contact_cmp);
+    for (int k = 0; k < nc; k++) {
+        double ra = L->r[c[k].a];
+        double rp = c[k].b >= 0 ? 2 * ra * L->r[c[k].b] / (ra + L->r[c[k].b]) : ra;
+        c[k].kn = gw_layer_kn(&L->p, rp);
+        c[k].ktf = gw_layer_kt_factor(&L->p, rp);
+    }
+    long dim = 6L * n + nc + 2;
+    double *ny = malloc((size_t)dim * sizeof *ny), *nsc = malloc((size_t)dim * sizeof *nsc);
+    int *roots = malloc((2 * (size_t)nc + (size_t)n + 1) * sizeof *roots);
+    if (!ny || !nsc || !roots) {
+        free(c), free(ny), free(nsc), free(roots);
+        return gw_err_set(err, GW_ENOMEM, "layer: out of memory for %d contacts", nc);
+    }
+    memcpy(ny, L->y, 6 * (size_t)n * sizeof *ny);
+    for (int k = 0; k < nc; k++) {
+        ny[6 * n + k] = 0;
+        const layer_contact *old = L->nc > 0 ? bsearch(&c[k], L->c, (size_t)L->nc, sizeof *c,
+                                                       contact_cmp) : NULL;
+        if (old)
+            ny[6 * n + k] = L->y[6 * n + (old - L->c)];
+    }
+    ny[6 * n + nc] = L->y[6 * n + L->nc];
+    ny[6 * n + nc + 1] = L->y[6 * n + L->nc + 1];
+    free(L->y), free(L->scale), free(L->c), free(L->roots);
+    L->y = ny;
+    L->scale = nsc;
+    L->roots = roots;
+    L->c = c;
+    L->nc = nc;
+    L->cap_c = cap;
+    L->cap_y = dim;
+    for (int i = 0; i < n; i++) {
+        L->x_list[2 * i] = L->y[6 * i];
+        L->x_list[2 * i + 1] = L->y[6 * i + 1];
+    }
+    layer_system_fill(L);
+    L->st.rebuilds++;
+    L->st.contacts_listed = nc;
+    return GW_OK;
+}

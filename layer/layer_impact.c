@@ -1,0 +1,285 @@
+/*
+ * layer_impact.c: one block impact on a pluviated layer (physics.md 2.3, 2.4;
+ * eqs. B.5-B.18).
+ *
+ * Set-up: the block is a disc of radius R_b = rb_rm R_m (same density and mass
+ * law as the soil) centred at x_c = W/2 + x, lowered vertically until it is
+ * `gap` above the first soil particle under it (the target), with velocity
+ * V_i (sin alpha, -cos alpha) and no spin:  V_ni = V_i cos alpha,
+ * V_ti = V_i sin alpha (B.5, B.6). With height_rm > 0, particles more than
+ * height_rm R_m below the surface (max of y + r) are frozen (infinite mass), as
+ * in the paper's reduced heights; remove_walls takes the three walls away at
+ * the start of the impact (physics.md 2.5, bottom-wall study). Gravitational energy is measured from the
+ * initial positions, so A = (1/2) M V_i^2 + the initial strain energy.
+ * Observables: bounced when the block's vertical velocity has changed sign and
+ * the block has left every contact while moving up (a block vibrating in the
+ * layer with tiny upward velocities does not count); the reflected velocities
+ * are taken at the largest upward velocity (T_i) and the
+ * run stops once the block has left all contacts and its upward velocity has
+ * started to fall (gravity), or at t_max (always at t_max with `full`, for the
+ * crowns). e_n = V_nr / V_ni, e = V_r / V_i,
+ * alpha_r = arccos(V_nr / V_r) (B.16-B.18). Penetration: largest downward
+ * displacement of the block centre. First contact: until the first sample
+ * (every dt_out) at which the block-target overlap is back to <= 0; E_d then
+ * over (1/2) M V_i^2 (sampled, so identical on every backend up to dt_out).
+ * Crowns: rings of width d_c centred on the initial block-target contact point
+ * (layer_crowns.c).
+ * Units: SI.
+ */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "gw_layer.h"
+
+gw_layer_impact_params gw_layer_impact_params_default(void)
+{
+    gw_layer_impact_params p;
+    memset(&p, 0, sizeof p);
+    p.rb_rm = 1;
+    p.vi = 20;
+    p.alpha_deg = 0;
+    p.x = 0;
+    p.height_rm = 0;
+    p.gap = 1e-6;
+    p.t_max = 0.05;
+    p.dt_out = 2e-5;
+    p.ring_width = 0; /* 0: 2 R_m */
+    p.nrings = 12;
+    return p;
+}
+
+void gw_layer_impact_result_free(gw_layer_impact_result *r)
+{
+    if (!r)
+        return;
+    free(r->t);
+    free(r->ledger);
+    free(r->block);
+    free(r->ring_kin);
+    free(r->peak_strain_t);
+    memset(r, 0, sizeof *r);
+}
+
+int gw_layer_impact_check(const gw_layer_sample *smp, const gw_layer_impact_params *p, gw_err *err)
+{
+    int rc;
+    if (!(p->rb_rm > 0) || !isfinite(p->rb_rm))
+        return gw_err_set(err, GW_EINVAL, "rb-rm: block radius %g R_m must be positive", p->rb_rm);
+    if ((rc = gw_check_positive(p->vi, "vi (incident speed, m/s)", err)) != GW_OK)
+        return rc;
+    if (!(p->alpha_deg >= 0 && p->alpha_deg < 90))
+        return gw_err_set(err, GW_EINVAL, "alpha: incidence %g deg is outside [0, 90)", p->alpha_deg);
+    if (!(p->gap >= 0) || !isfinite(p->gap))
+        return gw_err_set(err, GW_EINVAL, "gap: %g m < 0 puts the block inside the layer (overlapping)",
+                          p->gap);
+    if ((rc = gw_check_range(p->x, "x (impact abscissa, m)", -1e6, 1e6, err)) != GW_OK ||
+        (rc = gw_check_range(p->height_rm, "height-rm", 0, 1e6, err)) != GW_OK ||
+        (rc = gw_check_positive(p->t_max, "t-max (s)", err)) != GW_OK ||
+        (rc = gw_check_positive(p->dt_out, "dt-out (s)", err)) != GW_OK ||
+        (rc = gw_check_range(p->ring_width, "ring-width (m)", 0, 1e6, err)) != GW_OK)
+        return rc;
+    if (p->nrings < 1 || p->nrings > 1000)
+        return gw_err_set(err, GW_EINVAL, "rings: %d is outside [1, 1000]", p->nrings);
+    if (p->t_max / p->dt_out > 2e6)
+        return gw_err_set(err, GW_EINVAL, "dt-out: %g s gives more than 2e6 samples up to t-max", p->dt_out);
+    const double rb = p->rb_rm * smp->rm, xc = 0.5 * smp->width + p->x;
+    if (xc - rb < 0 || xc + rb > smp->width)
+        return gw_err_set(err, GW_EINVAL, "x: block of radius %g m at x = %g m from the centre "
+                          "does not fit in the box of width %g m", rb, p->x, smp->width);
+    return GW_OK;
+}
+
+/* Overlap (m) of the block with the target particle. */
+static double target_overlap(const gw_layer *L, int block, int target)
+{
+    double sb[6], st[6];
+    gw_layer_particle(L, block, sb);
+    gw_layer_particle(L, target, st);
+    return gw_layer_radius(L, block) + gw_layer_radius(L, target) - hypot(sb[0] - st[0], sb[1] - st[1]);
+}
+
+static int alloc_series(gw_layer_impact_result *r, int cap, int nr)
+{
+    r->cap = cap;
+    r->nrings = nr;
+    r->t = malloc((size_t)cap * sizeof *r->t);
+    r->ledger = malloc((size_t)cap * sizeof *r->ledger);
+    r->block = malloc(4 * (size_t)cap * sizeof *r->block);
+    r->ring_kin = malloc(3 * (size_t)cap * (size_t)nr * sizeof *r->ring_kin);
+    r->peak_strain_t = malloc(3 * (size_t)nr * sizeof *r->peak_strain_t);
+    if (!r->t || !r->ledger || !r->block || !r->ring_kin || !r->peak_strain_t)
+        return GW_ENOMEM;
+    r->ring_strain = r->ring_kin + (size_t)cap * nr;
+    r->ring_coord = r->ring_kin + 2 * (size_t)cap * nr;
+    r->peak_kin_t = r->peak_strain_t + nr;
+    r->ring_r = r->peak_strain_t + 2 * nr;
+    return GW_OK;
+}
+
+/* Record one sample; returns the block's vertical velocity. */
+static double record(gw_layer_impact_result *r, gw_layer *L, int block, double w,
+                     const double *strain0)
+{
+    int k = r->ns++;
+    r->t[k] = gw_layer_time(L);
+    gw_layer_energy_of(L, &r->ledger[k]);
+    double s[6];
+    gw_layer_particle(L, block, s);
+    r->block[4 * k] = s[0], r->block[4 * k + 1] = s[1];
+    r->block[4 * k + 2] = s[3], r->block[4 * k + 3] = s[4];
+    double *kin = r->ring_kin + (size_t)k * r->nrings, *str = r->ring_strain + (size_t)k * r->nrings;
+    gw_layer_rings(L, r->impact_x, r->impact_y, w, r->nrings, kin, str,
+                   r->ring_coord + (size_t)k * r->nrings);
+    for (int q = 0; strain0 && q < r->nrings; q++)
+        str[q] -= strain0[q];
+    double A = gw_layer_energy_initial(L);
+    double e = fabs(r->ledger[k].total - A) / A;
+    if (e > r->energy_error)
+        r->energy_error = e;
+    return s[4];
+}
+
+int gw_layer_impact(const gw_layer_sample *smp, const gw_layer_params *lp0,
+                    const gw_layer_impact_params *ip, const gw_solver_type *type,
+                    const gw_solver_params *sp, const char *vtk_dir,
+                    gw_layer_impact_result *res, gw_err *err)
+{
+    memset(res, 0, sizeof *res);
+    int rc = gw_layer_impact_check(smp, ip, err);
+    if (rc != GW_OK)
+        return rc;
+    const int n = smp->n;
+    const double rm = smp->rm, rb = ip->rb_rm * rm, xc = 0.5 * smp->width + ip->x;
+    gw_layer_params lp = *lp0;
+    lp.width = smp->width;
+    lp.potential_from_start = 1;
+    lp.no_events = 0;
+    lp.walls = ip->remove_walls ? 0 : GW_LAYER_WALLS_ALL;
+    double top = 0, yb = -INFINITY;
+    int target = -1;
+    for (int i = 0; i < n; i++) {
+        top = fmax(top, smp->y[i] + smp->r[i]);
+        double dx = smp->x[i] - xc, reach = rb + smp->r[i];
+        if (fabs(dx) < reach) {
+            double yy = smp->y[i] + sqrt(reach * reach - dx * dx);
+            if (yy > yb)
+                yb = yy, target = i;
+        }
+    }
+    if (target < 0)
+        return gw_err_set(err, GW_EINVAL, "x: no soil particle under the block at x = %g m", ip->x);
+    yb += ip->gap;
+    gw_layer_body *b = calloc((size_t)n + 1, sizeof *b);
+    if (!b)
+        return gw_err_set(err, GW_ENOMEM, "layer-impact: out of memory");
+    const double y_freeze = ip->height_rm > 0 ? top - ip->height_rm * rm : -INFINITY;
+    for (int i = 0; i < n; i++) {
+        b[i] = (gw_layer_body){.x = smp->x[i], .y = smp->y[i], .r = smp->r[i]};
+        b[i].fixed = smp->y[i] < y_freeze;
+        res->n_frozen += b[i].fixed;
+    }
+    res->n_mobile = n - res->n_frozen;
+    const double al = ip->alpha_deg * M_PI / 180;
+    b[n] = (gw_layer_body){.x = xc, .y = yb, .r = rb, .vx = ip->vi * sin(al), .vy = -ip->vi * cos(al)};
+    gw_layer *L = NULL;
+    rc = gw_layer_create(&lp, n + 1, b, &L, err);
+    free(b);
+    if (rc != GW_OK)
+        return rc;
+    gw_layer_set_block(L, n);
+    const double w = ip->ring_width > 0 ? ip->ring_width : 2 * rm;
+    {
+        double dx = xc - smp->x[target], dy = yb - smp->y[target], d = hypot(dx, dy);
+        res->impact_x = smp->x[target] + smp->r[target] * dx / d;
+        res->impact_y = smp->y[target] + smp->r[target] * dy / d;
+    }
+    res->block_mass = gw_layer_particle_mass(L, n);
+    res->e_incident = 0.5 * res->block_mass * ip->vi * ip->vi;
+    res->v_ni = ip->vi * cos(al);
+    int touched = 0;
+    double t_open = NAN, ed_open = NAN;
+    int cap = (int)ceil(ip->t_max / ip->dt_out) + 2;
+    double *strain0 = malloc((size_t)ip->nrings * 3 * sizeof *strain0);
+    if (!strain0 || alloc_series(res, cap, ip->nrings) != GW_OK) {
+        free(strain0);
+        gw_layer_free(L);
+        gw_layer_impact_result_free(res);
+        return gw_err_set(err, GW_ENOMEM, "layer-impact: out of memory for %d samples", cap);
+    }
+    for (int k = 0; k < ip->nrings; k++)
+        res->ring_r[k] = (k + 0.5) * w;
+    double t0 = gw_clock_ms();
+    rc = gw_layer_start(L, type, sp, err);
+    if (rc == GW_OK) {
+        gw_layer_rings(L, res->impact_x, res->impact_y, w, ip->nrings, strain0 + ip->nrings,
+                       strain0, strain0 + 2 * ip->nrings);
+        record(res, L, n, w, strain0);
+    }
+    if (rc == GW_OK && vtk_dir) {
+        char path[4096];
+        if (gw_path_join(path, sizeof path, vtk_dir, "snapshot_0.vtk") != GW_OK)
+            rc = gw_err_set(err, GW_EINVAL, "out: directory name too long");
+        else
+            rc = gw_layer_write_vtk(L, path, "granwave layer-impact t = 0", err);
+    }
+    double ymin = yb, vmax_up = 0;
+    for (int k = 1; rc == GW_OK && k < cap; k++) {
+        double tk = fmin(k * ip->dt_out, ip->t_max);
+        rc = gw_layer_advance(L, tk, err);
+        if (rc != GW_OK)
+            break;
+        double vy = record(res, L, n, w, strain0);
+        double ov = target_overlap(L, n, target);
+        if (ov > 0)
+            touched = 1;
+        else if (touched && isnan(t_open))
+            t_open = tk, ed_open = res->ledger[res->ns - 1].dissipated;
+        const double *bs = res->block + 4 * (res->ns - 1);
+        ymin = fmin(ymin, bs[1]);
+        if (vy > 0) {
+            int free_flight = gw_layer_contact_count(L, n) == 0;
+            res->bounced |= free_flight;
+            if (vy > vmax_up) {
+                vmax_up = vy;
+                res->v_nr = vy;
+                res->v_r = hypot(bs[2], bs[3]);
+                res->t_rebound = tk;
+            } else if (!ip->full && free_flight) {
+                break; /* left the layer, decelerating under gravity */
+            }
+        }
+        if (tk >= ip->t_max)
+            break;
+    }
+    free(strain0);
+    res->wall_ms = gw_clock_ms() - t0;
+    res->t_end = gw_layer_time(L);
+    gw_layer_get_stats(L, &res->stats);
+    if (rc == GW_OK && vtk_dir) {
+        char path[4096];
+        if (gw_path_join(path, sizeof path, vtk_dir, "snapshot_end.vtk") != GW_OK)
+            rc = gw_err_set(err, GW_EINVAL, "out: directory name too long");
+        else
+            rc = gw_layer_write_vtk(L, path, "granwave layer-impact t = t_end", err);
+    }
+    if (rc != GW_OK) {
+        gw_layer_free(L);
+        gw_layer_impact_result_free(res);
+        return rc;
+    }
+    res->penetration = yb - ymin;
+    res->e_n = res->v_nr / res->v_ni;
+    res->e = res->v_r / ip->vi;
+    res->alpha_r_deg = res->v_r > 0 ? acos(fmin(1, res->v_nr / res->v_r)) * 180 / M_PI
+                                                    : NAN;
+    if (isnan(t_open)) {
+        res->t_first_contact = res->t_end;
+        res->dissipated_first_contact = res->ledger[res->ns - 1].dissipated / res->e_incident;
+    } else {
+        res->t_first_contact = t_open;
+        res->dissipated_first_contact = ed_open / res->e_incident;
+    }
+    gw_layer_free(L);
+    return gw_layer_crowns(res);
+}

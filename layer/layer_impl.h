@@ -1,0 +1,89 @@
+/*
+ * layer_impl.h (private to layer/): the gw_layer object shared by the model
+ * (layer_model.c), the contact list (layer_contacts.c) and the run driver
+ * (layer_sim.c).
+ */
+#ifndef GW_LAYER_IMPL_H
+#define GW_LAYER_IMPL_H
+
+#include "gw_layer.h"
+
+/* Sliding margin of the tangential state outside the Coulomb cap and its
+ * restoring rate, 1/s (layer_model.c). */
+#define LAYER_CAP_MARGIN 1e-4
+#define LAYER_CAP_RATE 1e4
+
+/* Zeno guard of layer_sim.c: events closer than LAYER_ZENO_DT s, how many in a
+ * row trigger it, and how long the contact roots stay off. */
+#define LAYER_ZENO_DT 1e-12
+#define LAYER_ZENO_COUNT 20
+#define LAYER_ZENO_QUIET 1e-7
+
+/* Walls are contact partners with negative ids. */
+enum { LAYER_LEFT = -1, LAYER_RIGHT = -2, LAYER_BOTTOM = -3 };
+
+typedef struct layer_contact {
+    int a, b;        /* particle a < b, or b = LAYER_* wall */
+    double kn, ktf;  /* K_n (B.3) and k_t with K_t = k_t F_n^(1/3) (B.4) */
+} layer_contact;
+
+struct gw_layer {
+    gw_layer_params p;
+    double tan_phi;
+    int n, block;
+    double *r, *m, *inertia, *minv, *iinv; /* [n]; minv = iinv = 0 when fixed */
+    unsigned char *fixed;
+    double *y_ref;     /* [n] potential-energy reference heights */
+    double rmax;
+    /* contact list */
+    layer_contact *c;
+    int nc, cap_c;
+    double *x_list;    /* [2n] positions at the last list build */
+    /* state and solver */
+    double t;
+    double *y;         /* [dim] */
+    double *scale;     /* [dim] */
+    long dim, cap_y;
+    gw_system sys;
+    gw_solver *solver;
+    const gw_solver_type *type;
+    gw_solver_params sp;
+    int *roots;        /* [nroots] */
+    double e0;         /* A */
+    double v_scale, u_scale, f_scale, e_scale;
+    gw_layer_stats st;
+    double t_event, quiet_until; /* Zeno guard (layer_sim.c) */
+    int storm, no_events_user;
+    gw_layer_event_fn hook;
+    void *hook_ctx;
+};
+
+/* Build the contact list from the positions in L->y (cell list, skin L->p.skin)
+ * carrying F_t of contacts present in both lists. Rewrites L->y, L->scale and
+ * L->sys for the new dimension. */
+int layer_contacts_build(gw_layer *L, gw_err *err);
+
+/* Index of the first rebuild root and of the first stick/slip root (-1: none). */
+static inline int layer_root_rebuild(const gw_layer *L)
+{
+    return L->p.no_events ? 0 : L->nc;
+}
+static inline int layer_root_slip(const gw_layer *L)
+{
+    return L->p.no_events || !(L->tan_phi > 0) ? -1 : L->nc + L->n;
+}
+
+/* Fill sys (rhs, roots, dim, scale) for the current list. */
+void layer_system_fill(gw_layer *L);
+
+/* Overlap u_n (m), unit normal n (a -> b), tangent t = (-n_y, n_x) and the
+ * contact point of contact c in state y. */
+void layer_contact_geometry(const gw_layer *L, const layer_contact *c, const double *y,
+                            double *un, double n[2], double pt[2]);
+
+/* Elastic Hertz force and the used (capped) tangential force of contact index k
+ * in state y (0 when open). */
+void layer_contact_forces(const gw_layer *L, int k, const double *y, double *fn,
+                          double *ft, double *kt);
+
+#endif

@@ -1,0 +1,536 @@
+/*
+ * layer_model.c: the Hertz-Mindlin disc layer as an ODE system (physics.md 2.1,
+ * 2.4; eqs. B.1-B.4, B.7-B.14).
+ *
+ * Particles i: m_i dv_i/dt = sum of contact forces - m_i g e_y,
+ *              I_i dw_i/dt = sum of R_i F_t (torques of tangential forces).
+ * Contact (a, b), n the unit normal from a to b, t = (-n_y, n_x):
+ *   u_n = R_a + R_b - |x_b - x_a|  (wall: R_a minus the distance to the wall)
+ *   F_n = K_n u_n^(3/2),  K_n = 2 sqrt(2 R_p) G / (3 (1 - nu))          (B.1, B.3)
+ *   K_t = 2 (3 G^2 (1 - nu) R_p)^(1/3) / (2 - nu) * F_n^(1/3)            (B.4)
+ *   R_p = 2 R_a R_b / (R_a + R_b) for two discs, R_p = R_a against a wall (a wall
+ *   is a particle of infinite radius and mass; PFC2D's convention, physics.md 2.1).
+ *   v_t = (v_b - v_a).t - w_a R_a - w_b R_b (relative tangential velocity of the
+ *   contact points; contact arms taken as the radii).
+ *   Force on a: -F_n n + F_t t, torque R_a F_t; on b the opposite force, torque
+ *   R_b F_t.
+ * Tangential law (B.2), the state holds the elastic tangential force F_t of every
+ * listed contact (not a displacement: K_t changes with F_n, so the incremental
+ * law integrates the force):
+ *   elastic rate r_e = K_t v_t; cap rate r_c = s tan(phi) dF_n/dt, s = sign(F_t).
+ *   The force used is F_t clamped to the cap [-F_n tan phi, F_n tan phi].
+ *   Sticking (|F_t| < cap, or at the cap and unloading, s r_e <= s r_c):
+ *   dF_t/dt = r_e. Sliding (|F_t| >= cap and s r_e > s r_c): the used force rides
+ *   the cap (rate r_c, zero rate relative to the cap), and the state is held a
+ *   margin eta = 1e-4 outside it, dF_t/dt = r_c + s lambda (cap (1 + eta) - |F_t|),
+ *   lambda = 1e4 /s. Why the margin: a state exactly on the cap chatters between
+ *   the two branches under the stage perturbations of an adaptive method (the
+ *   elastic rate is ~1e8 N/s), which drives its steps to ~1e-14 s. The margin
+ *   delays the elastic unloading after a reversal by eta cap / |r_e| (~1e-9 s).
+ *   The ledger uses the clamped force and its true rate (r_c at the cap), so
+ *   the margin moves no energy. Solver stops zero F_t of open contacts.
+ * Energy (B.7-B.14): the contact absorbs the power F_t v_t + F_n du_n/dt. With
+ *   E_st = F_t^2 / (2 K_t) the split is
+ *   F_t v_t = dE_st/dt + dW_K/dt + dE_d/dt,
+ *   dE_d/dt = F_t (v_t - (dF_t/dt)/K_t)       (= -F_t du_t^p, zero when sticking)
+ *   dW_K/dt = F_t^2 (dK_t/dt) / (2 K_t^2) = F_t^2 (dF_n/dt) / (6 K_t F_n)
+ *   W_K is the part of the incremental tangential strain work (physics.md 2.4:
+ *   dE_s = -F_t du_t^e) that the state function F_t^2/(2 K_t) misses because K_t
+ *   varies with F_n (the Mindlin law with K_t(F_n) has no potential). E_d and W_K
+ *   are integrated as the last two state components, so the ledger
+ *   E_kb + E_ks + E_sn + E_st + W_K + E_d + E_p = A closes to integration error.
+ * Optional normal damping (pluviation only; the paper has none), Hunt-Crossley:
+ *   F = F_n (1 + (3/2) alpha du_n/dt) clamped >= 0; its power goes into E_d. The
+ *   Mindlin stiffness and the cap use the elastic F_n.
+ * Units: SI (m, s, kg, N, Pa, J).
+ */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "layer_impl.h"
+
+gw_layer_params gw_layer_params_default(void)
+{
+    gw_layer_params p;
+    memset(&p, 0, sizeof p);
+    p.shear_modulus = 40e9;
+    p.poisson = 0.25;
+    p.friction_deg = 30;
+    p.density = 2650;
+    p.gravity = 9.81;
+    p.width = 50 * 0.325;
+    p.walls = GW_LAYER_WALLS_ALL;
+    p.mass_law = GW_LAYER_MASS_DISC;
+    p.damping = 0;
+    p.skin = 0.1;
+    return p;
+}
+
+int gw_layer_params_validate(const gw_layer_params *p, gw_err *err)
+{
+    int rc;
+    if ((rc = gw_check_positive(p->shear_modulus, "shear modulus G (Pa)", err)) != GW_OK ||
+        (rc = gw_check_range(p->poisson, "Poisson ratio nu", 0, 0.499999, err)) != GW_OK ||
+        (rc = gw_check_positive(p->density, "density (kg/m^3)", err)) != GW_OK ||
+        (rc = gw_check_range(p->gravity, "gravity (m/s^2)", 0, 1e4, err)) != GW_OK ||
+        (rc = gw_check_positive(p->width, "box width (m)", err)) != GW_OK ||
+        (rc = gw_check_range(p->damping, "normal damping alpha (s/m)", 0, 1e3, err)) != GW_OK ||
+        (rc = gw_check_positive(p->skin, "contact-list skin (m)", err)) != GW_OK)
+        return rc;
+    if (!(p->friction_deg >= 0 && p->friction_deg < 90))
+        return gw_err_set(err, GW_EINVAL, "friction angle phi: %g deg is outside [0, 90)",
+                          p->friction_deg);
+    if (p->mass_law != GW_LAYER_MASS_DISC && p->mass_law != GW_LAYER_MASS_SPHERE)
+        return gw_err_set(err, GW_EINVAL, "mass law: unknown value %d", p->mass_law);
+    if (p->walls < 0 || p->walls > GW_LAYER_WALLS_ALL)
+        return gw_err_set(err, GW_EINVAL, "walls: bad mask %d", p->walls);
+    return GW_OK;
+}
+
+double gw_layer_kn(const gw_layer_params *p, double rp)
+{
+    return 2.0 * sqrt(2.0 * rp) * p->shear_modulus / (3.0 * (1.0 - p->poisson));
+}
+
+double gw_layer_kt_factor(const gw_layer_params *p, double rp)
+{
+    double G = p->shear_modulus, nu = p->poisson;
+    return 2.0 * cbrt(3.0 * G * G * (1.0 - nu) * rp) / (2.0 - nu);
+}
+
+double gw_layer_mass(const gw_layer_params *p, double r)
+{
+    if (p->mass_law == GW_LAYER_MASS_SPHERE)
+        return 4.0 / 3.0 * M_PI * r * r * r * p->density;
+    return M_PI * r * r * p->density;
+}
+
+double gw_layer_inertia(const gw_layer_params *p, double r)
+{
+    double m = gw_layer_mass(p, r);
+    return (p->mass_law == GW_LAYER_MASS_SPHERE ? 0.4 : 0.5) * m * r * r;
+}
+
+const char *gw_layer_mass_law_name(int mass_law)
+{
+    return mass_law == GW_LAYER_MASS_SPHERE ? "sphere" : "disc (unit thickness)";
+}
+
+int gw_layer_create(const gw_layer_params *p, int n, const gw_layer_body *b, gw_layer **out,
+                    gw_err *err)
+{
+    *out = NULL;
+    int rc = gw_layer_params_validate(p, err);
+    if (rc != GW_OK)
+        return rc;
+    if (n < 1)
+        return gw_err_set(err, GW_EINVAL, "layer: at least one particle needed, got %d", n);
+    for (int i = 0; i < n; i++) {
+        if (!(b[i].r > 0) || !isfinite(b[i].r))
+            return gw_err_set(err, GW_EINVAL, "particle %d: radius %g m must be positive and finite",
+                              i, b[i].r);
+        if (!isfinite(b[i].x) || !isfinite(b[i].y) || !isfinite(b[i].vx) ||
+            !isfinite(b[i].vy) || !isfinite(b[i].w))
+            return gw_err_set(err, GW_EINVAL, "particle %d: position and velocity must be finite", i);
+        if (((p->walls & GW_LAYER_WALL_LEFT) && b[i].x < 0) ||
+            ((p->walls & GW_LAYER_WALL_RIGHT) && b[i].x > p->width) ||
+            ((p->walls & GW_LAYER_WALL_BOTTOM) && b[i].y < 0))
+            return gw_err_set(err, GW_EINVAL, "particle %d: centre (%g, %g) m outside the walls "
+                              "(0 <= x <= %g, y >= 0)", i, b[i].x, b[i].y, p->width);
+    }
+    gw_layer *L = calloc(1, sizeof *L);
+    if (!L)
+        return gw_err_set(err, GW_ENOMEM, "layer: out of memory");
+    L->p = *p;
+    L->n = n;
+    L->block = -1;
+    L->tan_phi = tan(p->friction_deg * M_PI / 180.0);
+    L->r = malloc(6 * (size_t)n * sizeof *L->r);
+    L->fixed = calloc((size_t)n, 1);
+    L->x_list = malloc(2 * (size_t)n * sizeof *L->x_list);
+    L->cap_y = 6L * n + 2;
+    L->y = malloc((size_t)L->cap_y * sizeof *L->y);
+    L->scale = malloc((size_t)L->cap_y * sizeof *L->scale);
+    if (!L->r || !L->fixed || !L->x_list || !L->y || !L->scale) {
+        gw_layer_free(L);
+        return gw_err_set(err, GW_ENOMEM, "layer: out of memory for %d particles", n);
+    }
+    L->m = L->r + n;
+    L->inertia = L->r + 2 * n;
+    L->minv = L->r + 3 * n;
+    L->iinv = L->r + 4 * n;
+    L->y_ref = L->r + 5 * n;
+    double vmax = 0;
+    for (int i = 0; i < n; i++) {
+        L->r[i] = b[i].r;
+        L->m[i] = gw_layer_mass(p, b[i].r);
+        L->inertia[i] = gw_layer_inertia(p, b[i].r);
+        L->fixed[i] = b[i].fixed != 0;
+        L->minv[i] = L->fixed[i] ? 0 : 1.0 / L->m[i];
+        L->iinv[i] = L->fixed[i] ? 0 : 1.0 / L->inertia[i];
+        L->y_ref[i] = p->potential_from_start ? b[i].y : 0.0;
+        if (b[i].r > L->rmax)
+            L->rmax = b[i].r;
+        double *s = L->y + 6 * i;
+        s[0] = b[i].x;
+        s[1] = b[i].y;
+        s[2] = 0;
+        s[3] = L->fixed[i] ? 0 : b[i].vx;
+        s[4] = L->fixed[i] ? 0 : b[i].vy;
+        s[5] = L->fixed[i] ? 0 : b[i].w;
+        double v = hypot(s[3], s[4]) + fabs(s[5]) * b[i].r;
+        if (v > vmax)
+            vmax = v;
+    }
+    L->y[6 * n] = L->y[6 * n + 1] = 0;
+    L->dim = 6L * n + 2;
+    L->v_scale = fmax(vmax, sqrt(fmax(p->gravity, 1e-3) * L->rmax));
+    L->u_scale = 1e-3 * L->rmax;
+    L->f_scale = gw_layer_kn(p, L->rmax) * pow(L->u_scale, 1.5);
+    *out = L;
+    return GW_OK;
+}
+
+void gw_layer_free(gw_layer *L)
+{
+    if (!L)
+        return;
+    gw_solver_free(L->solver);
+    free(L->r);
+    free(L->fixed);
+    free(L->x_list);
+    free(L->y);
+    free(L->scale);
+    free(L->c);
+    free(L->roots);
+    free(L);
+}
+
+void layer_contact_geometry(const gw_layer *L, const layer_contact *c, const double *y,
+                            double *un, double n[2], double pt[2])
+{
+    const double *sa = y + 6 * c->a;
+    double ra = L->r[c->a];
+    switch (c->b) {
+    case LAYER_LEFT:
+        n[0] = -1, n[1] = 0, *un = ra - sa[0];
+        break;
+    case LAYER_RIGHT:
+        n[0] = 1, n[1] = 0, *un = ra - (L->p.width - sa[0]);
+        break;
+    case LAYER_BOTTOM:
+        n[0] = 0, n[1] = -1, *un = ra - sa[1];
+        break;
+    default: {
+        const double *sb = y + 6 * c->b;
+        double dx = sb[0] - sa[0], dy = sb[1] - sa[1], d = hypot(dx, dy);
+        if (d > 0)
+            n[0] = dx / d, n[1] = dy / d;
+        else
+            n[0] = 0, n[1] = 1;
+        *un = ra + L->r[c->b] - d;
+    }
+    }
+    if (pt) {
+        pt[0] = sa[0] + (ra - 0.5 * *un) * n[0];
+        pt[1] = sa[1] + (ra - 0.5 * *un) * n[1];
+    }
+}
+
+/* Kinematics of contact c: overlap, normal, overlap rate and tangential
+ * relative velocity. */
+static void contact_kinematics(const gw_layer *L, const layer_contact *c, const double *y,
+                               double *un, double n[2], double *und, double *vt)
+{
+    layer_contact_geometry(L, c, y, un, n, NULL);
+    const double *sa = y + 6 * c->a;
+    double vbx = 0, vby = 0, wrb = 0;
+    if (c->b >= 0) {
+        const double *sb = y + 6 * c->b;
+        vbx = sb[3], vby = sb[4], wrb = sb[5] * L->r[c->b];
+    }
+    double rx = vbx - sa[3], ry = vby - sa[4];
+    *und = -(rx * n[0] + ry * n[1]);
+    *vt = -rx * n[1] + ry * n[0] - sa[5] * L->r[c->a] - wrb;
+}
+
+void layer_contact_forces(const gw_layer *L, int k, const double *y, double *fn, double *ft,
+                          double *kt)
+{
+    const layer_contact *c = &L->c[k];
+    double un, n[2];
+    layer_contact_geometry(L, c, y, &un, n, NULL);
+    *fn = *ft = *kt = 0;
+    if (!(un > 0))
+        return;
+    *fn = c->kn * un * sqrt(un);
+    *kt = c->ktf * cbrt(*fn);
+    double cap = L->tan_phi * *fn, f = y[6 * L->n + k];
+    *ft = f > cap ? cap : f < -cap ? -cap : f;
+}
+
+static int layer_rhs(double t, const double *y, double *yd, void *P)
+{
+    (void)t;
+    const gw_layer *L = P;
+    const int n = L->n;
+    const double g = L->p.gravity, tp = L->tan_phi, alpha = L->p.damping;
+    double pd = 0, pk = 0;
+    for (int i = 0; i < n; i++) {
+        const double *s = y + 6 * i;
+        double *d = yd + 6 * i;
+        d[0] = s[3], d[1] = s[4], d[2] = s[5];
+        d[3] = d[4] = d[5] = 0; /* forces and torque, scaled below */
+    }
+    for (int k = 0; k < L->nc; k++) {
+        const layer_contact *c = &L->c[k];
+        double un, nn[2], und, vt;
+        double *fdot = yd + 6 * n + k;
+        contact_kinematics(L, c, y, &un, nn, &und, &vt);
+        if (!(un > 0)) {
+            *fdot = 0;
+            continue;
+        }
+        double su = sqrt(un), fel = c->kn * un * su, fnd = 1.5 * c->kn * su * und;
+        if (!(fel > 0)) { /* overlap so small that F_n underflows: open */
+            *fdot = 0;
+            continue;
+        }
+        double fn = fel;
+        if (alpha > 0) {
+            fn = fel * (1.0 + 1.5 * alpha * und);
+            if (fn < 0)
+                fn = 0;
+            pd += (fn - fel) * und;
+        }
+        double ft = 0;
+        if (tp > 0) {
+            double kt = c->ktf * cbrt(fel), cap = tp * fel, f = y[6 * n + k];
+            double re = kt * vt;
+            double sg = f > 0 ? 1 : f < 0 ? -1 : (re >= 0 ? 1 : -1);
+            double rc = sg * tp * fnd, rate = re, fud = re;
+            if (fabs(f) >= cap) {
+                fud = rc; /* the force used rides the cap */
+                if (sg * re > sg * rc) /* sliding: keep the state a margin outside */
+                    rate = rc + sg * LAYER_CAP_RATE * (cap * (1 + LAYER_CAP_MARGIN) - fabs(f));
+            }
+            ft = f > cap ? cap : f < -cap ? -cap : f;
+            *fdot = rate;
+            pd += ft * (vt - fud / kt);
+            pk += ft * ft * fnd / (6.0 * kt * fel);
+        } else {
+            *fdot = 0;
+        }
+        double fx = -fn * nn[0] - ft * nn[1], fy = -fn * nn[1] + ft * nn[0];
+        double *da = yd + 6 * c->a;
+        da[3] += fx, da[4] += fy, da[5] += ft * L->r[c->a];
+        if (c->b >= 0) {
+            double *db = yd + 6 * c->b;
+            db[3] -= fx, db[4] -= fy, db[5] += ft * L->r[c->b];
+        }
+    }
+    for (int i = 0; i < n; i++) {
+        double *d = yd + 6 * i;
+        if (L->fixed[i]) {
+            d[0] = d[1] = d[2] = d[3] = d[4] = d[5] = 0;
+            continue;
+        }
+        d[3] *= L->minv[i];
+        d[4] = d[4] * L->minv[i] - g;
+        d[5] *= L->iinv[i];
+    }
+    yd[6 * n + L->nc] = pd;
+    yd[6 * n + L->nc + 1] = pk;
+    return 0;
+}
+
+/* Roots: the overlap of every listed contact, then (skin/2)^2 - |x_i - x_list|^2
+ * per particle (the list must be rebuilt when one of those reaches zero), then
+ * with friction |F_t| - F_n tan(phi) per contact: the stick/slip switches are a
+ * discontinuity of the right-hand side, and restarting there keeps the methods'
+ * order (RK4 stepping across them loses it: ledger error 1e-4 instead of 1e-8). */
+static int layer_roots(double t, const double *y, double *g, void *P)
+{
+    (void)t;
+    const gw_layer *L = P;
+    double un, nn[2], h = 0.5 * L->p.skin;
+    const int r0 = layer_root_rebuild(L), s0 = layer_root_slip(L);
+    for (int i = 0; i < L->n; i++) {
+        double dx = y[6 * i] - L->x_list[2 * i], dy = y[6 * i + 1] - L->x_list[2 * i + 1];
+        g[r0 + i] = L->fixed[i] ? 1.0 : h * h - dx * dx - dy * dy;
+    }
+    if (L->p.no_events)
+        return 0;
+    for (int k = 0; k < L->nc; k++) {
+        layer_contact_geometry(L, &L->c[k], y, &un, nn, NULL);
+        g[k] = un;
+        if (s0 >= 0) {
+            double cap = un > 0 ? L->tan_phi * L->c[k].kn * un * sqrt(un) : 0;
+            g[s0 + k] = fabs(y[6 * L->n + k]) - cap;
+        }
+    }
+    return 0;
+}
+
+void layer_system_fill(gw_layer *L)
+{
+    const int n = L->n;
+    L->dim = 6L * n + L->nc + 2;
+    for (int i = 0; i < n; i++) {
+        double *s = L->scale + 6 * i;
+        s[0] = s[1] = L->u_scale;
+        s[2] = L->u_scale / L->r[i];
+        s[3] = s[4] = L->v_scale;
+        s[5] = L->v_scale / L->r[i];
+    }
+    for (int k = 0; k < L->nc; k++)
+        L->scale[6 * n + k] = L->f_scale;
+    L->scale[6 * n + L->nc] = L->scale[6 * n + L->nc + 1] = L->e_scale > 0 ? L->e_scale : 1.0;
+    memset(&L->sys, 0, sizeof L->sys);
+    L->sys.dim = L->dim;
+    L->sys.rhs = layer_rhs;
+    L->sys.roots = layer_roots;
+    L->sys.nroots = L->p.no_events ? n : L->nc * (L->tan_phi > 0 ? 2 : 1) + n;
+    L->sys.scale = L->scale;
+    L->sys.params = L;
+}
+
+void gw_layer_energy_of(const gw_layer *L, gw_layer_energy *e)
+{
+    memset(e, 0, sizeof *e);
+    const double *y = L->y;
+    const int n = L->n;
+    for (int i = 0; i < n; i++) {
+        const double *s = y + 6 * i;
+        double ke = 0.5 * L->m[i] * (s[3] * s[3] + s[4] * s[4]) +
+                    0.5 * L->inertia[i] * s[5] * s[5];
+        if (i == L->block)
+            e->kinetic_block += ke;
+        else
+            e->kinetic_soil += ke;
+        if (!L->fixed[i])
+            e->potential += L->m[i] * L->p.gravity * (s[1] - L->y_ref[i]);
+    }
+    for (int k = 0; k < L->nc; k++) {
+        double fn, ft, kt, un, nn[2];
+        layer_contact_forces(L, k, y, &fn, &ft, &kt);
+        if (fn > 0) {
+            layer_contact_geometry(L, &L->c[k], y, &un, nn, NULL);
+            e->strain_normal += 0.4 * fn * un;
+            e->strain_tangent += ft * ft / (2 * kt);
+        }
+    }
+    e->dissipated = y[6 * n + L->nc];
+    e->mindlin_excess = y[6 * n + L->nc + 1];
+    e->total = e->kinetic_block + e->kinetic_soil + e->strain_normal + e->strain_tangent +
+               e->mindlin_excess + e->dissipated + e->potential;
+}
+
+double gw_layer_energy_initial(const gw_layer *L)
+{
+    return L->e0;
+}
+
+void gw_layer_rings(const gw_layer *L, double cx, double cy, double w, int nring,
+                    double *kin, double *strain, double *coord)
+{
+    const double *y = L->y;
+    int *np = calloc((size_t)nring, sizeof *np);
+    for (int k = 0; k < nring; k++)
+        kin[k] = strain[k] = coord[k] = 0;
+    for (int i = 0; i < L->n; i++) {
+        if (i == L->block)
+            continue;
+        const double *s = y + 6 * i;
+        int k = (int)(hypot(s[0] - cx, s[1] - cy) / w);
+        if (k < 0 || k >= nring)
+            continue;
+        kin[k] += 0.5 * L->m[i] * (s[3] * s[3] + s[4] * s[4]) + 0.5 * L->inertia[i] * s[5] * s[5];
+        if (np)
+            np[k]++;
+    }
+    for (int c = 0; c < L->nc; c++) {
+        double fn, ft, kt, un, nn[2], pt[2];
+        layer_contact_forces(L, c, y, &fn, &ft, &kt);
+        if (!(fn > 0))
+            continue;
+        layer_contact_geometry(L, &L->c[c], y, &un, nn, pt);
+        int k = (int)(hypot(pt[0] - cx, pt[1] - cy) / w);
+        if (k >= 0 && k < nring)
+            strain[k] += 0.4 * fn * un + ft * ft / (2 * kt);
+        /* coordination: each end inside a ring counts once for that ring */
+        int ends[2] = {L->c[c].a, L->c[c].b};
+        for (int e = 0; e < 2; e++) {
+            int i = ends[e];
+            if (i < 0 || i == L->block)
+                continue;
+            const double *s = y + 6 * i;
+            int kk = (int)(hypot(s[0] - cx, s[1] - cy) / w);
+            if (kk >= 0 && kk < nring)
+                coord[kk] += 1;
+        }
+    }
+    for (int k = 0; k < nring; k++)
+        coord[k] = np && np[k] > 0 ? coord[k] / np[k] : NAN;
+    free(np);
+}
+
+int gw_layer_n(const gw_layer *L)
+{
+    return L->n;
+}
+
+double gw_layer_time(const gw_layer *L)
+{
+    return L->t;
+}
+
+void gw_layer_particle(const gw_layer *L, int i, double s[6])
+{
+    memcpy(s, L->y + 6 * i, 6 * sizeof *s);
+}
+
+double gw_layer_radius(const gw_layer *L, int i)
+{
+    return L->r[i];
+}
+
+double gw_layer_particle_mass(const gw_layer *L, int i)
+{
+    return L->m[i];
+}
+
+const gw_layer_params *gw_layer_get_params(const gw_layer *L)
+{
+    return &L->p;
+}
+
+void gw_layer_set_block(gw_layer *L, int i)
+{
+    L->block = i;
+}
+
+void gw_layer_get_stats(const gw_layer *L, gw_layer_stats *st)
+{
+    *st = L->st;
+    if (L->solver) {
+        gw_solver_stats ss;
+        gw_solver_get_stats(L->solver, &ss);
+        st->steps += ss.steps;
+        st->rhs_evals += ss.rhs_evals;
+    }
+}
+
+int gw_layer_contact_count(const gw_layer *L, int i)
+{
+    int c = 0;
+    for (int k = 0; k < L->nc; k++) {
+        if (L->c[k].a != i && L->c[k].b != i)
+            continue;
+        double un, nn[2];
+        layer_contact_geometry(L, &L->c[k], L->y, &un, nn, NULL);
+        c += un > 0;
+    }
+    return c;
+}

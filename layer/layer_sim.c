@@ -1,0 +1,171 @@
+/*
+ * layer_sim.c: the run driver of the layer (physics.md 2.1, numerical notes of
+ * 1.1): integrates the ODE system of layer_model.c through the gw_solver layer.
+ *
+ * - At every root of a contact overlap (u_n = 0) the solver is restarted
+ *   (gw_solver_reset), because the Hertz force is only C^1 there.
+ * - When a particle has moved half the skin since the list was built (root
+ *   (s/2)^2 - |dx|^2 = 0) the contact list is rebuilt: the state dimension
+ *   changes, so the solver is freed and re-created with the new gw_system.
+ * - At every stop the tangential state is projected: F_t = 0 on open contacts and
+ *   on contacts that just closed; a state drifted far outside the Coulomb cap is
+ *   brought back to the sliding margin. The ledger books the capped force, so
+ *   the projection moves no energy.
+ * - Zeno guard: more than LAYER_ZENO_COUNT events within LAYER_ZENO_DT of each
+ *   other (seen with CVODE when a contact grazes u_n = 0) switch the event roots
+ *   off for LAYER_ZENO_QUIET s; counted in gw_layer_stats.zeno_guards.
+ * Units: SI.
+ */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "layer_impl.h"
+
+/* Project F_t; closing[k] > 0 marks contacts that just closed, slipping[k] > 0
+ * contacts that just reached the Coulomb cap (both may be NULL).
+ * Returns the number of components changed. */
+static int project(gw_layer *L, const int *closing, const int *slipping)
+{
+    int changed = 0;
+    const int n = L->n;
+    for (int k = 0; k < L->nc; k++) {
+        double *f = L->y + 6 * n + k;
+        if (*f == 0)
+            continue;
+        double un, nn[2];
+        layer_contact_geometry(L, &L->c[k], L->y, &un, nn, NULL);
+        double cap = un > 0 ? L->tan_phi * L->c[k].kn * un * sqrt(un) : 0;
+        double nf = *f;
+        if ((closing && closing[k] > 0) || !(un > 0))
+            nf = 0;
+        else if (slipping && slipping[k] > 0) /* onto the sliding branch */
+            nf = nf > 0 ? cap * (1 + LAYER_CAP_MARGIN) : -cap * (1 + LAYER_CAP_MARGIN);
+        else if (fabs(nf) > cap * (1 + 4 * LAYER_CAP_MARGIN))
+            nf = nf > 0 ? cap * (1 + LAYER_CAP_MARGIN) : -cap * (1 + LAYER_CAP_MARGIN);
+        if (nf != *f) {
+            *f = nf;
+            changed++;
+        }
+    }
+    L->st.projections += changed;
+    return changed;
+}
+
+static void harvest_stats(gw_layer *L)
+{
+    if (!L->solver)
+        return;
+    gw_solver_stats ss;
+    gw_solver_get_stats(L->solver, &ss);
+    L->st.steps += ss.steps;
+    L->st.rhs_evals += ss.rhs_evals;
+}
+
+static int make_solver(gw_layer *L, gw_err *err)
+{
+    harvest_stats(L);
+    gw_solver_free(L->solver);
+    L->solver = NULL;
+    int rc = gw_solver_create(L->type, &L->sys, &L->sp, L->t, L->y, &L->solver, err);
+    if (rc != GW_OK) {
+        char tmp[sizeof err->msg];
+        snprintf(tmp, sizeof tmp, "%s", err ? err->msg : "");
+        return gw_err_set(err, rc, "layer: solver set-up failed at t = %.9g s: %s", L->t, tmp);
+    }
+    return GW_OK;
+}
+
+int gw_layer_start(gw_layer *L, const gw_solver_type *type, const gw_solver_params *sp,
+                   gw_err *err)
+{
+    if (!type)
+        return gw_err_set(err, GW_EINVAL, "layer: no solver backend given");
+    L->type = type;
+    L->sp = *sp;
+    /* The contact network couples particles far apart in the state vector (no
+     * useful band), and the Hertz-Mindlin layer is not stiff at the solver
+     * tolerances used: CVODE runs Adams with fixed-point iteration unless a
+     * method is asked for (BDF with a diagonal band is far slower here). */
+    if (type == gw_solver_cvode && L->sp.method == GW_METHOD_DEFAULT)
+        L->sp.method = GW_CVODE_ADAMS;
+    L->t = 0;
+    int rc = layer_contacts_build(L, err);
+    if (rc != GW_OK)
+        return rc;
+    project(L, NULL, NULL);
+    gw_layer_energy e;
+    gw_layer_energy_of(L, &e);
+    L->e0 = e.total;
+    double mg = 0;
+    for (int i = 0; i < L->n; i++)
+        mg += L->m[i] * L->p.gravity * L->r[i];
+    L->e_scale = fmax(fabs(e.total), fmax(e.kinetic_block + e.kinetic_soil, mg));
+    layer_system_fill(L);
+    return make_solver(L, err);
+}
+
+int gw_layer_advance(gw_layer *L, double tout, gw_err *err)
+{
+    if (!L->solver)
+        return gw_err_set(err, GW_EINVAL, "layer: gw_layer_start was not called");
+    while (L->t < tout) {
+        double t = L->t;
+        if (L->quiet_until > 0 && L->t >= L->quiet_until) { /* end of a Zeno guard */
+            L->quiet_until = 0;
+            L->p.no_events = L->no_events_user;
+            layer_system_fill(L);
+            int rc = make_solver(L, err);
+            if (rc != GW_OK)
+                return rc;
+        }
+        double target = L->quiet_until > 0 && L->quiet_until < tout ? L->quiet_until : tout;
+        int rc = gw_solver_advance(L->solver, target, &t, L->y, L->roots);
+        if (rc != GW_OK && rc != GW_ROOT) {
+            L->t = t;
+            return gw_err_set(err, rc, "layer: %s", gw_solver_error(L->solver));
+        }
+        L->t = t;
+        if (rc == GW_OK) {
+            if (project(L, NULL, NULL) > 0 && gw_solver_reset(L->solver, L->t, L->y) != GW_OK)
+                return gw_err_set(err, GW_ESOLVER, "layer: %s", gw_solver_error(L->solver));
+            continue;
+        }
+        L->st.events++;
+        L->storm = L->t - L->t_event < LAYER_ZENO_DT ? L->storm + 1 : 0;
+        L->t_event = L->t;
+        const int r0 = layer_root_rebuild(L), s0 = layer_root_slip(L);
+        for (int k = 0; L->hook && !L->p.no_events && k < L->nc; k++)
+            if (L->roots[k])
+                L->hook(L->hook_ctx, L->t, L->c[k].a, L->c[k].b, L->roots[k] > 0 ? 1 : -1);
+        int rebuild = 0;
+        for (int i = 0; i < L->n; i++)
+            rebuild |= L->roots[r0 + i] != 0;
+        project(L, L->p.no_events ? NULL : L->roots, s0 >= 0 ? L->roots + s0 : NULL);
+        if (L->storm > LAYER_ZENO_COUNT && L->quiet_until == 0) {
+            /* Zeno guard: the root finder keeps stopping at the same instant (a
+             * contact grazing u_n = 0 with CVODE's zero-at-restart rule). Step
+             * over LAYER_ZENO_QUIET s with only the rebuild roots, then resume. */
+            L->no_events_user = L->p.no_events;
+            L->p.no_events = 1;
+            L->quiet_until = L->t + LAYER_ZENO_QUIET;
+            L->st.zeno_guards++;
+            L->storm = 0;
+            if ((rc = layer_contacts_build(L, err)) != GW_OK || (rc = make_solver(L, err)) != GW_OK)
+                return rc;
+        } else if (rebuild) {
+            if ((rc = layer_contacts_build(L, err)) != GW_OK ||
+                (rc = make_solver(L, err)) != GW_OK)
+                return rc;
+        } else if (gw_solver_reset(L->solver, L->t, L->y) != GW_OK) {
+            return gw_err_set(err, GW_ESOLVER, "layer: %s", gw_solver_error(L->solver));
+        }
+    }
+    return GW_OK;
+}
+
+void gw_layer_set_event_hook(gw_layer *L, gw_layer_event_fn fn, void *ctx)
+{
+    L->hook = fn;
+    L->hook_ctx = ctx;
+}

@@ -1,0 +1,74 @@
+/*
+ * layer_vtk.c: VTK legacy (ASCII POLYDATA) snapshots of the layer, for ParaView.
+ *
+ * Points: particle centres (z = 0) with point data radius (m), velocity (m/s,
+ * 3-vector), omega (rad/s), fixed (0/1), block (0/1). Lines: closed
+ * particle-particle contacts (u_n > 0) with cell data F_n and F_t (N, from
+ * B.1 and the capped tangential state). Written atomically.
+ * Units: SI.
+ */
+#include <math.h>
+#include <stdlib.h>
+
+#include "layer_impl.h"
+
+int gw_layer_write_vtk(const gw_layer *L, const char *path, const char *title, gw_err *err)
+{
+    gw_afile f;
+    int rc = gw_afile_open(&f, path, err);
+    if (rc != GW_OK)
+        return rc;
+    FILE *fp = f.fp;
+    const int n = L->n;
+    int nl = 0;
+    for (int k = 0; k < L->nc; k++) {
+        double fn, ft, kt;
+        layer_contact_forces(L, k, L->y, &fn, &ft, &kt);
+        nl += L->c[k].b >= 0 && fn > 0;
+    }
+    fprintf(fp, "# vtk DataFile Version 3.0\n%s (granwave %s)\nASCII\nDATASET POLYDATA\n", title,
+            gw_version());
+    fprintf(fp, "POINTS %d double\n", n);
+    for (int i = 0; i < n; i++)
+        fprintf(fp, "%.9g %.9g 0\n", L->y[6 * i], L->y[6 * i + 1]);
+    fprintf(fp, "LINES %d %d\n", nl, 3 * nl);
+    for (int k = 0; k < L->nc; k++) {
+        double fn, ft, kt;
+        layer_contact_forces(L, k, L->y, &fn, &ft, &kt);
+        if (L->c[k].b >= 0 && fn > 0)
+            fprintf(fp, "2 %d %d\n", L->c[k].a, L->c[k].b);
+    }
+    fprintf(fp, "POINT_DATA %d\nSCALARS radius double 1\nLOOKUP_TABLE default\n", n);
+    for (int i = 0; i < n; i++)
+        fprintf(fp, "%.9g\n", L->r[i]);
+    fprintf(fp, "SCALARS omega double 1\nLOOKUP_TABLE default\n");
+    for (int i = 0; i < n; i++)
+        fprintf(fp, "%.9g\n", L->y[6 * i + 5]);
+    fprintf(fp, "SCALARS fixed int 1\nLOOKUP_TABLE default\n");
+    for (int i = 0; i < n; i++)
+        fprintf(fp, "%d\n", L->fixed[i]);
+    fprintf(fp, "SCALARS block int 1\nLOOKUP_TABLE default\n");
+    for (int i = 0; i < n; i++)
+        fprintf(fp, "%d\n", i == L->block);
+    fprintf(fp, "VECTORS velocity double\n");
+    for (int i = 0; i < n; i++)
+        fprintf(fp, "%.9g %.9g 0\n", L->y[6 * i + 3], L->y[6 * i + 4]);
+    if (nl > 0) {
+        fprintf(fp, "CELL_DATA %d\nSCALARS F_n double 1\nLOOKUP_TABLE default\n", nl);
+        for (int pass = 0; pass < 2; pass++) {
+            if (pass == 1)
+                fprintf(fp, "SCALARS F_t double 1\nLOOKUP_TABLE default\n");
+            for (int k = 0; k < L->nc; k++) {
+                double fn, ft, kt;
+                layer_contact_forces(L, k, L->y, &fn, &ft, &kt);
+                if (L->c[k].b >= 0 && fn > 0)
+                    fprintf(fp, "%.9g\n", pass == 0 ? fn : ft);
+            }
+        }
+    }
+    if (ferror(fp)) {
+        gw_afile_abort(&f);
+        return gw_err_set(err, GW_EIO, "%s: write error", path);
+    }
+    return gw_afile_commit(&f, err);
+}

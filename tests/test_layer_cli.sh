@@ -1,0 +1,61 @@
+#!/usr/bin/env bash
+# test_layer_cli.sh: `granwave layer-make` and `granwave layer-impact` end to end
+# (physics.md 2.2-2.5). $1 = granwave binary, $2 = source dir.
+# - a small sample (60 discs) is made twice with one seed: identical files
+#   apart from nothing (deterministic), and the JSON reports the particle count;
+# - an impact prints JSON with every key of the issue, a closure error <= 1e-4,
+#   and --out writes ledger.csv, crowns.csv, crowns_peaks.csv, impact.json and
+#   two VTK snapshots;
+# - bad input exits 2 with one line on stderr naming the input, and writes
+#   nothing: negative block radius, friction outside [0, 90), block overlapping
+#   the layer, unreadable and corrupt sample files, unknown solver.
+set -u
+gw="$1"
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+fails=0
+check() { if eval "$2"; then echo "PASS: $1"; else echo "FAIL: $1"; fails=$((fails + 1)); fi; }
+
+"$gw" layer-make --n 60 --width-rm 16 --seed 3 --out "$tmp/a.txt" --json > "$tmp/make.json"
+check "layer-make exits 0" "[ $? -eq 0 ]"
+"$gw" layer-make --n 60 --width-rm 16 --seed 3 --out "$tmp/b.txt" > /dev/null
+check "layer-make deterministic for a seed (same particle lines)" \
+  "cmp -s <(grep -v '^#' '$tmp/a.txt') <(grep -v '^#' '$tmp/b.txt')"
+check "layer-make JSON has n = 60 and a porosity" \
+  "python3 -c 'import json,sys; d=json.load(open(\"$tmp/make.json\")); sys.exit(0 if d[\"n\"]==60 and 0<d[\"porosity\"]<1 else 1)'"
+
+"$gw" layer-impact --sample "$tmp/a.txt" --rb-rm 1 --vi 10 --alpha 30 --t-max 0.005 --json --out "$tmp/out" > "$tmp/imp.json"
+check "layer-impact exits 0" "[ $? -eq 0 ]"
+check "layer-impact JSON keys and closure <= 1e-4" "python3 - '$tmp/imp.json' <<'PY'
+import json, sys
+d = json.load(open(sys.argv[1]))
+keys = ['bounced', 'e_n', 'e', 'alpha_r', 'v_nr', 'v_ni', 'penetration', 'energy_error',
+        'dissipated_first_contact', 'wave_speed', 't_end', 'version', 'settings']
+missing = [k for k in keys if k not in d]
+print('missing', missing, 'energy_error', d.get('energy_error'))
+sys.exit(0 if not missing and d['energy_error'] <= 1e-4 and abs(d['v_ni'] - 10 * 0.8660254) < 1e-6 else 1)
+PY"
+for f in ledger.csv crowns.csv crowns_peaks.csv impact.json snapshot_0.vtk snapshot_end.vtk; do
+  check "--out wrote $f" "[ -s '$tmp/out/$f' ]"
+done
+
+bad() { # name, expected word in the message, args...
+  local name="$1" word="$2"; shift 2
+  "$gw" layer-impact "$@" > "$tmp/stdout" 2> "$tmp/stderr"
+  local rc=$?
+  check "$name: exit 2 (got $rc)" "[ $rc -eq 2 ]"
+  check "$name: one line naming '$word'" "[ \$(wc -l < '$tmp/stderr') -eq 1 ] && grep -q -- '$word' '$tmp/stderr'"
+  check "$name: nothing on stdout, no output dir" "[ ! -s '$tmp/stdout' ] && [ ! -e '$tmp/badout' ]"
+}
+bad "negative block radius" "rb-rm" --sample "$tmp/a.txt" --rb-rm -1 --out "$tmp/badout"
+bad "friction 90 deg" "friction" --sample "$tmp/a.txt" --friction 90 --out "$tmp/badout"
+bad "block overlapping the layer" "gap" --sample "$tmp/a.txt" --gap -0.05 --out "$tmp/badout"
+bad "unreadable sample" "no_such_file" --sample "$tmp/no_such_file" --out "$tmp/badout"
+printf 'granwave-layer-sample 1\nwidth 5\nrm 0.3\nn 3\n1 1 0.3\n' > "$tmp/corrupt.txt"
+bad "corrupt sample" "corrupt.txt" --sample "$tmp/corrupt.txt" --out "$tmp/badout"
+bad "unknown solver" "solver" --sample "$tmp/a.txt" --solver euler --out "$tmp/badout"
+"$gw" layer-make --n 10 --rm -1 --out "$tmp/c.txt" 2> "$tmp/stderr"
+check "layer-make negative radius: exit 2, nothing written" "[ $? -eq 2 ] && [ ! -e '$tmp/c.txt' ] && grep -q rm '$tmp/stderr'"
+
+echo "test_layer_cli: $fails failure(s)"
+[ $fails -eq 0 ]

@@ -136,6 +136,20 @@ void gw_layer_energy_of(const gw_layer *L, gw_layer_energy *e);
 /* Initial total A (set by gw_layer_start). */
 double gw_layer_energy_initial(const gw_layer *L);
 
+/* Energy regions (physics.md 2.4): rings k = 0 .. nring-1 of width w (m)
+ * around (cx, cy) (distance in [k w, (k+1) w)), region nring = outside the
+ * rings, region nring + 1 = the block and its contacts. Kinetic and potential
+ * energy go by particle centre, strain energy, friction dissipation and W_K by
+ * contact point; dissipation and W_K are integrated per region as part of the
+ * ODE state. Must be called before gw_layer_start (GW_EINVAL otherwise; the
+ * layer is unchanged on failure). */
+int gw_layer_set_regions(gw_layer *L, double cx, double cy, double w, int nring, gw_err *err);
+/* Number of regions (nring + 2, or 0 when none were set). */
+int gw_layer_region_count(const gw_layer *L);
+/* Ledger per region into out[gw_layer_region_count(L)]; the regions add up to
+ * gw_layer_energy_of. Returns the number of regions filled. */
+int gw_layer_region_ledger(const gw_layer *L, gw_layer_energy *out);
+
 /* Per-ring energies around (cx, cy): ring k holds distances [k w, (k+1) w).
  * Kinetic energy by particle centre (block excluded), strain energy (normal +
  * tangential state function) by contact point, coordination = contacts with
@@ -245,8 +259,18 @@ typedef struct gw_layer_impact_result {
     double penetration;     /* largest downward block displacement, m */
     double energy_error;    /* max |sum - A| / A over the run */
     double e_incident;      /* (1/2) M V_i^2, J */
-    double dissipated_first_contact; /* E_d / E_incident at the end of the first contact */
-    double t_first_contact; /* time the first block contact opened (or t_end), s */
+    /* First contact (physics.md 2.5): from the touch to the smallest block
+     * kinetic energy while the block touches the target particle (sampled every
+     * dt_out). */
+    double t_first_contact; /* its end, s */
+    double dissipated_first_contact; /* E_d / E_incident at its end */
+    double dissipated_first_contact_block; /* the part of it at the block's contacts */
+    double block_loss_first_contact; /* (E_kb(0) - E_kb) / E_incident at its end
+                                        (binary analogy B.24-B.28) */
+    double contact_angle_deg; /* angle between the incident velocity and the
+                                 block-target contact normal, deg (0: head-on) */
+    double t_contact_open;  /* time the block-target contact opened (or t_end), s */
+    double dissipated_contact_open; /* E_d / E_incident then */
     double wave_speed, wave_speed_err;      /* from strain-energy peaks, m/s */
     double wave_speed_kin, wave_speed_kin_err; /* from kinetic-energy peaks */
     int wave_rings;         /* rings in the strain fit */
@@ -262,6 +286,9 @@ typedef struct gw_layer_impact_result {
     double *block;          /* [ns * 4]: x, y, vx, vy */
     int nrings;
     double *ring_kin, *ring_strain, *ring_coord; /* [ns * nrings] */
+    double *ring_diss;      /* [ns * nrings] friction dissipation per ring, J */
+    gw_layer_energy *regions; /* [nrings + 2] region ledger at the last sample:
+                                 rings, outside, block (gw_layer_region_ledger) */
     double *peak_strain_t, *peak_kin_t;          /* [nrings] (NaN when none) */
     double *ring_r;                              /* [nrings] mid radius, m */
 } gw_layer_impact_result;

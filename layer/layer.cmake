@@ -7,6 +7,7 @@ add_library(gw_layer STATIC
   ${CMAKE_CURRENT_LIST_DIR}/layer_make.c
   ${CMAKE_CURRENT_LIST_DIR}/layer_impact.c
   ${CMAKE_CURRENT_LIST_DIR}/layer_crowns.c
+  ${CMAKE_CURRENT_LIST_DIR}/layer_regions.c
   ${CMAKE_CURRENT_LIST_DIR}/layer_vtk.c
   ${CMAKE_CURRENT_LIST_DIR}/layer_cmd.c)
 target_include_directories(gw_layer PUBLIC ${CMAKE_CURRENT_SOURCE_DIR})

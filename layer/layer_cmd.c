@@ -244,7 +244,12 @@ static cJSON *impact_json(const impact_cli *c, const gw_layer_impact_result *r,
     cJSON_AddNumberToObject(o, "energy_error", r->energy_error);
     cJSON_AddNumberToObject(o, "e_incident", r->e_incident);
     cJSON_AddNumberToObject(o, "dissipated_first_contact", r->dissipated_first_contact);
+    cJSON_AddNumberToObject(o, "block_loss_first_contact", r->block_loss_first_contact);
+    cJSON_AddNumberToObject(o, "dissipated_first_contact_block", r->dissipated_first_contact_block);
     cJSON_AddNumberToObject(o, "t_first_contact", r->t_first_contact);
+    cJSON_AddNumberToObject(o, "contact_angle", r->contact_angle_deg);
+    cJSON_AddNumberToObject(o, "t_contact_open", r->t_contact_open);
+    cJSON_AddNumberToObject(o, "dissipated_contact_open", r->dissipated_contact_open);
     cJSON_AddNumberToObject(o, "wave_speed", r->wave_speed);
     cJSON_AddNumberToObject(o, "wave_speed_err", r->wave_speed_err);
     cJSON_AddNumberToObject(o, "wave_speed_kinetic", r->wave_speed_kin);
@@ -266,6 +271,21 @@ static cJSON *impact_json(const impact_cli *c, const gw_layer_impact_result *r,
     cJSON_AddNumberToObject(l, "potential", e->potential);
     cJSON_AddNumberToObject(l, "total", e->total);
     cJSON_AddNumberToObject(l, "A", r->ledger[0].total);
+    cJSON *rg = cJSON_AddArrayToObject(o, "regions_end");
+    for (int q = 0; r->regions && q < r->nrings + 2; q++) {
+        const gw_layer_energy *g = &r->regions[q];
+        cJSON *x = cJSON_CreateObject();
+        char nm[32];
+        snprintf(nm, sizeof nm, q < r->nrings ? "ring %d" : q == r->nrings ? "outside" : "block", q);
+        cJSON_AddStringToObject(x, "region", nm);
+        cJSON_AddNumberToObject(x, "kinetic", g->kinetic_block + g->kinetic_soil);
+        cJSON_AddNumberToObject(x, "strain", g->strain_normal + g->strain_tangent);
+        cJSON_AddNumberToObject(x, "mindlin_excess", g->mindlin_excess);
+        cJSON_AddNumberToObject(x, "dissipated", g->dissipated);
+        cJSON_AddNumberToObject(x, "potential", g->potential);
+        cJSON_AddNumberToObject(x, "total", g->total);
+        cJSON_AddItemToArray(rg, x);
+    }
     cJSON *cr = cJSON_AddObjectToObject(o, "crowns");
     cJSON_AddNumberToObject(cr, "x", r->impact_x);
     cJSON_AddNumberToObject(cr, "y", r->impact_y);
@@ -330,13 +350,14 @@ static int write_csvs(const impact_cli *c, const gw_layer_impact_result *r, cons
     if ((rc = gw_afile_open(&f, path, err)) != GW_OK)
         return rc;
     fprintf(f.fp, "# %s\n# rings of width d_c around (%.6g, %.6g) m: strain energy increase over t = 0 "
-            "and kinetic energy (J), coordination (contacts per particle)\n", hdr, r->impact_x, r->impact_y);
-    fprintf(f.fp, "t,ring,r_mid,strain,kinetic,coordination\n");
+            "and kinetic energy (J), coordination (contacts per particle), friction dissipation "
+            "at contacts in the ring (J, integrated)\n", hdr, r->impact_x, r->impact_y);
+    fprintf(f.fp, "t,ring,r_mid,strain,kinetic,coordination,dissipated\n");
     for (int k = 0; k < r->ns; k++)
         for (int q = 0; q < r->nrings; q++) {
             size_t i = (size_t)k * r->nrings + q;
-            fprintf(f.fp, "%.9g,%d,%.6g,%.9g,%.9g,%.6g\n", r->t[k], q, r->ring_r[q], r->ring_strain[i],
-                    r->ring_kin[i], r->ring_coord[i]);
+            fprintf(f.fp, "%.9g,%d,%.6g,%.9g,%.9g,%.6g,%.9g\n", r->t[k], q, r->ring_r[q], r->ring_strain[i],
+                    r->ring_kin[i], r->ring_coord[i], r->ring_diss[i]);
         }
     if ((rc = gw_afile_commit(&f, err)) != GW_OK)
         return rc;

@@ -146,7 +146,7 @@ int layer_contacts_build(gw_layer *L, gw_err *err)
         c[k].kn = gw_layer_kn(&L->p, rp);
         c[k].ktf = gw_layer_kt_factor(&L->p, rp);
     }
-    long dim = 6L * n + nc + 2;
+    long dim = 6L * n + nc + L->ntail;
     double *ny = malloc((size_t)dim * sizeof *ny), *nsc = malloc((size_t)dim * sizeof *nsc);
     int *roots = malloc((2 * (size_t)nc + (size_t)n + 1) * sizeof *roots);
     if (!ny || !nsc || !roots) {
@@ -161,8 +161,7 @@ int layer_contacts_build(gw_layer *L, gw_err *err)
         if (old)
             ny[6 * n + k] = L->y[6 * n + (old - L->c)];
     }
-    ny[6 * n + nc] = L->y[6 * n + L->nc];
-    ny[6 * n + nc + 1] = L->y[6 * n + L->nc + 1];
+    memcpy(ny + 6 * n + nc, L->y + 6 * n + L->nc, (size_t)L->ntail * sizeof *ny);
     free(L->y), free(L->scale), free(L->c), free(L->roots);
     L->y = ny;
     L->scale = nsc;

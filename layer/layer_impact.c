@@ -58,6 +58,7 @@ void gw_layer_impact_result_free(gw_layer_impact_result *r)
     free(r->block);
     free(r->ring_kin);
     free(r->peak_strain_t);
+    free(r->regions);
     memset(r, 0, sizeof *r);
 }
 
@@ -106,12 +107,16 @@ static int alloc_series(gw_layer_impact_result *r, int cap, int nr)
     r->t = malloc((size_t)cap * sizeof *r->t);
     r->ledger = malloc((size_t)cap * sizeof *r->ledger);
     r->block = malloc(4 * (size_t)cap * sizeof *r->block);
-    r->ring_kin = malloc(3 * (size_t)cap * (size_t)nr * sizeof *r->ring_kin);
+    r->ring_kin = malloc(4 * (size_t)cap * (size_t)nr * sizeof *r->ring_kin);
     r->peak_strain_t = malloc(3 * (size_t)nr * sizeof *r->peak_strain_t);
     if (!r->t || !r->ledger || !r->block || !r->ring_kin || !r->peak_strain_t)
         return GW_ENOMEM;
     r->ring_strain = r->ring_kin + (size_t)cap * nr;
     r->ring_coord = r->ring_kin + 2 * (size_t)cap * nr;
+    r->ring_diss = r->ring_kin + 3 * (size_t)cap * nr;
+    r->regions = calloc((size_t)nr + 2, sizeof *r->regions);
+    if (!r->regions)
+        return GW_ENOMEM;
     r->peak_kin_t = r->peak_strain_t + nr;
     r->ring_r = r->peak_strain_t + 2 * nr;
     return GW_OK;
@@ -133,6 +138,9 @@ static double record(gw_layer_impact_result *r, gw_layer *L, int block, double w
                    r->ring_coord + (size_t)k * r->nrings);
     for (int q = 0; strain0 && q < r->nrings; q++)
         str[q] -= strain0[q];
+    gw_layer_region_ledger(L, r->regions);
+    for (int q = 0; q < r->nrings; q++)
+        r->ring_diss[(size_t)k * r->nrings + q] = r->regions[q].dissipated;
     double A = gw_layer_energy_initial(L);
     double e = fabs(r->ledger[k].total - A) / A;
     if (e > r->energy_error)
@@ -193,12 +201,26 @@ int gw_layer_impact(const gw_layer_sample *smp, const gw_layer_params *lp0,
         double dx = xc - smp->x[target], dy = yb - smp->y[target], d = hypot(dx, dy);
         res->impact_x = smp->x[target] + smp->r[target] * dx / d;
         res->impact_y = smp->y[target] + smp->r[target] * dy / d;
+        /* obliquity of the first contact: incident velocity against the normal */
+        double vn = -(sin(ip->alpha_deg * M_PI / 180) * dx - cos(ip->alpha_deg * M_PI / 180) * dy) / d;
+        res->contact_angle_deg = acos(fmax(-1, fmin(1, vn))) * 180 / M_PI;
+    }
+    rc = gw_layer_set_regions(L, res->impact_x, res->impact_y, w, ip->nrings, err);
+    if (rc != GW_OK) {
+        gw_layer_free(L);
+        return rc;
     }
     res->block_mass = gw_layer_particle_mass(L, n);
     res->e_incident = 0.5 * res->block_mass * ip->vi * ip->vi;
     res->v_ni = ip->vi * cos(al);
     int touched = 0;
+    /* First contact (physics.md 2.5): from the touch to the block's smallest
+     * kinetic energy while it still touches the target particle, the phase in
+     * which the block hands its energy over. The contact itself may last longer
+     * (the target pushes the block back); the dissipation up to the opening is
+     * reported separately. */
     double t_open = NAN, ed_open = NAN;
+    double t_min = NAN, ed_min = NAN, kb_min = INFINITY, edb_min = NAN;
     int cap = (int)ceil(ip->t_max / ip->dt_out) + 2;
     double *strain0 = malloc((size_t)ip->nrings * 3 * sizeof *strain0);
     if (!strain0 || alloc_series(res, cap, ip->nrings) != GW_OK) {
@@ -231,10 +253,19 @@ int gw_layer_impact(const gw_layer_sample *smp, const gw_layer_params *lp0,
             break;
         double vy = record(res, L, n, w, strain0);
         double ov = target_overlap(L, n, target);
-        if (ov > 0)
+        const gw_layer_energy *le = &res->ledger[res->ns - 1];
+        if (ov > 0) {
             touched = 1;
-        else if (touched && isnan(t_open))
-            t_open = tk, ed_open = res->ledger[res->ns - 1].dissipated;
+            if (isnan(t_open) && le->kinetic_block < kb_min) {
+                kb_min = le->kinetic_block;
+                t_min = tk;
+                ed_min = le->dissipated;
+                edb_min = res->regions[ip->nrings + 1].dissipated;
+            }
+        } else if (touched && isnan(t_open)) {
+            t_open = tk;
+            ed_open = le->dissipated;
+        }
         const double *bs = res->block + 4 * (res->ns - 1);
         ymin = fmin(ymin, bs[1]);
         if (vy > 0) {
@@ -273,13 +304,22 @@ int gw_layer_impact(const gw_layer_sample *smp, const gw_layer_params *lp0,
     res->e = res->v_r / ip->vi;
     res->alpha_r_deg = res->v_r > 0 ? acos(fmin(1, res->v_nr / res->v_r)) * 180 / M_PI
                                                     : NAN;
-    if (isnan(t_open)) {
-        res->t_first_contact = res->t_end;
-        res->dissipated_first_contact = res->ledger[res->ns - 1].dissipated / res->e_incident;
-    } else {
-        res->t_first_contact = t_open;
-        res->dissipated_first_contact = ed_open / res->e_incident;
+    if (isnan(t_open)) { /* still touching at the end */
+        t_open = res->t_end;
+        ed_open = res->ledger[res->ns - 1].dissipated;
     }
+    if (isnan(t_min)) { /* the target was never touched (sampling too coarse) */
+        t_min = t_open;
+        kb_min = res->ledger[res->ns - 1].kinetic_block;
+        ed_min = ed_open;
+        edb_min = res->regions[ip->nrings + 1].dissipated;
+    }
+    res->t_first_contact = t_min;
+    res->dissipated_first_contact = ed_min / res->e_incident;
+    res->dissipated_first_contact_block = edb_min / res->e_incident;
+    res->block_loss_first_contact = (res->ledger[0].kinetic_block - kb_min) / res->e_incident;
+    res->t_contact_open = t_open;
+    res->dissipated_contact_open = ed_open / res->e_incident;
     gw_layer_free(L);
     return gw_layer_crowns(res);
 }

@@ -50,6 +50,12 @@ struct gw_layer {
     gw_solver_params sp;
     int *roots;        /* [nroots] */
     double e0;         /* A */
+    /* Energy regions (gw_layer_set_regions): rings of width reg_w around
+     * (reg_cx, reg_cy), then "outside", then "block"; ntail = 2 + 2 (reg_n + 2)
+     * state components after the contacts (E_d, W_K, then E_d and W_K per
+     * region), or 2 without regions. */
+    double reg_cx, reg_cy, reg_w;
+    int reg_n, ntail;
     double v_scale, u_scale, f_scale, e_scale;
     gw_layer_stats st;
     double t_event, quiet_until; /* Zeno guard (layer_sim.c) */
@@ -72,6 +78,13 @@ static inline int layer_root_slip(const gw_layer *L)
 {
     return L->p.no_events || !(L->tan_phi > 0) ? -1 : L->nc + L->n;
 }
+
+/* Region of contact c (state y) when regions are set: ring index, reg_n
+ * beyond the last ring, reg_n + 1 for a contact of the block. */
+int layer_contact_region(const gw_layer *L, const layer_contact *c, const double *y);
+/* The same from the overlap and normal already computed. */
+int layer_contact_region_at(const gw_layer *L, const layer_contact *c, const double *y,
+                            double un, const double nn[2]);
 
 /* Fill sys (rhs, roots, dim, scale) for the current list. */
 void layer_system_fill(gw_layer *L);

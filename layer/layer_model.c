@@ -184,6 +184,7 @@ int gw_layer_create(const gw_layer_params *p, int n, const gw_layer_body *b, gw_
             vmax = v;
     }
     L->y[6 * n] = L->y[6 * n + 1] = 0;
+    L->ntail = 2;
     L->dim = 6L * n + 2;
     L->v_scale = fmax(vmax, sqrt(fmax(p->gravity, 1e-3) * L->rmax));
     L->u_scale = 1e-3 * L->rmax;
@@ -277,6 +278,9 @@ static int layer_rhs(double t, const double *y, double *yd, void *P)
     const int n = L->n;
     const double g = L->p.gravity, tp = L->tan_phi, alpha = L->p.damping;
     double pd = 0, pk = 0;
+    double *rtail = L->reg_n > 0 ? yd + 6 * n + L->nc + 2 : NULL;
+    for (int q = 0; rtail && q < 2 * (L->reg_n + 2); q++)
+        rtail[q] = 0;
     for (int i = 0; i < n; i++) {
         const double *s = y + 6 * i;
         double *d = yd + 6 * i;
@@ -317,10 +321,18 @@ static int layer_rhs(double t, const double *y, double *yd, void *P)
             }
             ft = f > cap ? cap : f < -cap ? -cap : f;
             *fdot = rate;
-            pd += ft * (vt - fud / kt);
-            pk += ft * ft * fnd / (6.0 * kt * fel);
+            double cd = ft * (vt - fud / kt), ck = ft * ft * fnd / (6.0 * kt * fel);
+            pd += cd;
+            pk += ck;
+            if (rtail) {
+                int q = layer_contact_region_at(L, c, y, un, nn);
+                rtail[2 * q] += cd + (fn - fel) * und;
+                rtail[2 * q + 1] += ck;
+            }
         } else {
             *fdot = 0;
+            if (rtail && alpha > 0)
+                rtail[2 * layer_contact_region_at(L, c, y, un, nn)] += (fn - fel) * und;
         }
         double fx = -fn * nn[0] - ft * nn[1], fy = -fn * nn[1] + ft * nn[0];
         double *da = yd + 6 * c->a;
@@ -376,7 +388,7 @@ static int layer_roots(double t, const double *y, double *g, void *P)
 void layer_system_fill(gw_layer *L)
 {
     const int n = L->n;
-    L->dim = 6L * n + L->nc + 2;
+    L->dim = 6L * n + L->nc + L->ntail;
     for (int i = 0; i < n; i++) {
         double *s = L->scale + 6 * i;
         s[0] = s[1] = L->u_scale;
@@ -386,7 +398,8 @@ void layer_system_fill(gw_layer *L)
     }
     for (int k = 0; k < L->nc; k++)
         L->scale[6 * n + k] = L->f_scale;
-    L->scale[6 * n + L->nc] = L->scale[6 * n + L->nc + 1] = L->e_scale > 0 ? L->e_scale : 1.0;
+    for (int q = 0; q < L->ntail; q++)
+        L->scale[6 * n + L->nc + q] = L->e_scale > 0 ? L->e_scale : 1.0;
     memset(&L->sys, 0, sizeof L->sys);
     L->sys.dim = L->dim;
     L->sys.rhs = layer_rhs;

@@ -9,6 +9,8 @@ add_library(gw_layer STATIC
   ${CMAKE_CURRENT_LIST_DIR}/layer_crowns.c
   ${CMAKE_CURRENT_LIST_DIR}/layer_regions.c
   ${CMAKE_CURRENT_LIST_DIR}/layer_vtk.c
-  ${CMAKE_CURRENT_LIST_DIR}/layer_cmd.c)
+  ${CMAKE_CURRENT_LIST_DIR}/layer_cmd.c
+  ${CMAKE_CURRENT_LIST_DIR}/layer_cli.c
+  ${CMAKE_CURRENT_LIST_DIR}/layer_sweep_model.c)
 target_include_directories(gw_layer PUBLIC ${CMAKE_CURRENT_SOURCE_DIR})
 target_link_libraries(gw_layer PUBLIC gw_common)

@@ -12,50 +12,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "gw_layer.h"
-
-#define OPT_D(nm, dst, mv, hl, lo_, hi_, open_)                                          \
-    (gw_opt) { .name = nm, .kind = GW_OPT_DOUBLE, .dest = dst, .metavar = mv, .help = hl, \
-               .lo = lo_, .hi = hi_, .open_lo = open_ }
-#define OPT_S(nm, dst, mv, hl)                                                           \
-    (gw_opt) { .name = nm, .kind = GW_OPT_STRING, .dest = dst, .metavar = mv, .help = hl }
-#define OPT_L(nm, dst, mv, hl, lo_, hi_)                                                 \
-    (gw_opt) { .name = nm, .kind = GW_OPT_LONG, .dest = dst, .metavar = mv, .help = hl,   \
-               .lo = lo_, .hi = hi_ }
-
-/* Material options shared by both commands. */
-typedef struct mat_cli {
-    gw_layer_params lp;
-    const char *mass_law;
-} mat_cli;
-
-static int mat_options(mat_cli *m, gw_opt *o)
-{
-    m->lp = gw_layer_params_default();
-    m->mass_law = "disc";
-    int i = 0;
-    /* ranges are checked by gw_layer_params_validate, so the message names the
-     * physical quantity (e.g. friction outside [0, 90)) */
-    o[i++] = OPT_D("friction", &m->lp.friction_deg, "PHI", "friction angle phi, deg in [0, 90) [30]", -INFINITY, INFINITY, 0);
-    o[i++] = OPT_D("shear-modulus", &m->lp.shear_modulus, "G", "shear modulus, Pa [40e9]", -INFINITY, INFINITY, 0);
-    o[i++] = OPT_D("poisson", &m->lp.poisson, "NU", "Poisson ratio [0.25]", -INFINITY, INFINITY, 0);
-    o[i++] = OPT_D("density", &m->lp.density, "RHO", "particle density, kg/m^3 [2650]", -INFINITY, INFINITY, 0);
-    o[i++] = OPT_D("gravity", &m->lp.gravity, "G", "gravity, m/s^2 [9.81]", -INFINITY, INFINITY, 0);
-    o[i++] = OPT_D("skin", &m->lp.skin, "S", "contact-list skin, m [0.1]", -INFINITY, INFINITY, 0);
-    o[i++] = OPT_S("mass-law", &m->mass_law, "LAW", "disc (unit thickness) or sphere [disc; impacts: the sample's]");
-    return i;
-}
-
-static int mat_resolve(mat_cli *m, gw_err *err)
-{
-    if (strcmp(m->mass_law, "disc") == 0)
-        m->lp.mass_law = GW_LAYER_MASS_DISC;
-    else if (strcmp(m->mass_law, "sphere") == 0)
-        m->lp.mass_law = GW_LAYER_MASS_SPHERE;
-    else
-        return gw_err_set(err, GW_EINVAL, "--mass-law: unknown '%s' (disc, sphere)", m->mass_law);
-    return gw_layer_params_validate(&m->lp, err);
-}
+#include "layer_cli.h"
 
 static cJSON *mat_json(const gw_layer_params *p)
 {
@@ -104,9 +61,9 @@ static const char *make_summary =
 
 int gw_cmd_layer_make(int argc, char **argv)
 {
-    mat_cli m;
+    layer_mat_cli m;
     gw_opt o[32];
-    int i = mat_options(&m, o);
+    int i = layer_mat_options(&m, o);
     gw_layer_make_params mp = gw_layer_make_params_default();
     long n = mp.n, seed = mp.seed;
     const char *out = NULL;
@@ -133,7 +90,7 @@ int gw_cmd_layer_make(int argc, char **argv)
         gw_cli_help(stdout, "layer-make", "granwave layer-make --out FILE [options]", make_summary, o);
         return 0;
     }
-    if (mat_resolve(&m, &err) != GW_OK)
+    if (layer_mat_resolve(&m, &err) != GW_OK)
         return fail("layer-make", err.msg);
     if (!out)
         return fail("layer-make", "--out: the sample file to write is required");
@@ -217,14 +174,8 @@ static const char *impact_summary =
     "closure, the friction loss of the first contact and the wave speed from crowns.\n"
     "SI units, angles in degrees.";
 
-typedef struct impact_cli {
-    mat_cli m;
-    gw_layer_impact_params ip;
-    const char *sample, *solver, *method, *out;
-    double dt, rtol, atol, rm;
-    long rings;
-    int json;
-} impact_cli;
+/* The impact options are shared with the layer sweep model (layer_cli.c). */
+typedef layer_impact_cli impact_cli;
 
 static cJSON *impact_json(const impact_cli *c, const gw_layer_impact_result *r,
                           const gw_solver_params *sp)
@@ -384,34 +335,8 @@ static int write_csvs(const impact_cli *c, const gw_layer_impact_result *r, cons
 int gw_cmd_layer_impact(int argc, char **argv)
 {
     impact_cli c;
-    memset(&c, 0, sizeof c);
-    gw_opt o[40];
-    int i = mat_options(&c.m, o);
-    c.ip = gw_layer_impact_params_default();
-    c.solver = "rk4";
-    c.method = "default";
-    c.dt = 1e-6;
-    c.rtol = 1e-8;
-    c.atol = 1e-8;
-    c.rings = c.ip.nrings;
-    o[i++] = OPT_S("sample", &c.sample, "FILE", "sample written by layer-make (required)");
-    o[i++] = OPT_D("rb-rm", &c.ip.rb_rm, "R", "block radius in R_m [1]", -INFINITY, INFINITY, 0);
-    o[i++] = OPT_D("vi", &c.ip.vi, "V", "incident speed, m/s [20]", -INFINITY, INFINITY, 0);
-    o[i++] = OPT_D("alpha", &c.ip.alpha_deg, "DEG", "incidence from the normal, deg in [0, 90) [0]", -INFINITY, INFINITY, 0);
-    o[i++] = OPT_D("x", &c.ip.x, "X", "impact abscissa from the box centre, m [0]", -INFINITY, INFINITY, 0);
-    o[i++] = OPT_D("height-rm", &c.ip.height_rm, "H", "mobile layer height in R_m; deeper particles frozen [0 = all]", -INFINITY, INFINITY, 0);
-    o[i++] = OPT_D("gap", &c.ip.gap, "G", "initial block-target gap, m [1e-6]; < 0 = overlapping (refused)", -INFINITY, INFINITY, 0);
-    o[i++] = OPT_D("t-max", &c.ip.t_max, "T", "end of the run, s [0.05]", -INFINITY, INFINITY, 0);
-    o[i++] = OPT_D("dt-out", &c.ip.dt_out, "DT", "sampling interval, s [2e-5]", -INFINITY, INFINITY, 0);
-    o[i++] = OPT_D("ring-width", &c.ip.ring_width, "DC", "crown width d_c, m [2 R_m]", -INFINITY, INFINITY, 0);
-    o[i++] = OPT_L("rings", &c.rings, "N", "number of crowns [12]", 1, 1000);
-    o[i++] = OPT_S("solver", &c.solver, "NAME", "rk4, cvode or arkode [rk4]");
-    o[i++] = OPT_S("method", &c.method, "NAME", "cvode: bdf|adams; arkode: erk|dirk [default]");
-    o[i++] = OPT_D("dt", &c.dt, "DT", "RK4 step, s [1e-6]", 0, 1, 1);
-    o[i++] = OPT_D("rtol", &c.rtol, "R", "relative tolerance of cvode/arkode [1e-8]", 0, 1, 1);
-    o[i++] = OPT_D("atol", &c.atol, "A", "absolute tolerance (scaled per component) [1e-8]", 0, 1, 1);
-    o[i++] = (gw_opt){.name = "remove-walls", .kind = GW_OPT_FLAG, .dest = &c.ip.remove_walls, .help = "take the left, right and bottom walls away at the start of the impact"};
-    o[i++] = (gw_opt){.name = "full", .kind = GW_OPT_FLAG, .dest = &c.ip.full, .help = "run to t-max even after the block has left (for the crowns)"};
+    gw_opt o[LAYER_IMPACT_NOPTS + 8];
+    int i = layer_impact_options(&c, o);
     o[i++] = (gw_opt){.name = "json", .kind = GW_OPT_FLAG, .dest = &c.json, .help = "print the result as JSON"};
     o[i++] = OPT_S("out", &c.out, "DIR", "write ledger.csv, crowns.csv, crowns_peaks.csv, impact.json, VTK");
     o[i] = (gw_opt){0};
@@ -424,28 +349,14 @@ int gw_cmd_layer_impact(int argc, char **argv)
         gw_cli_help(stdout, "layer-impact", "granwave layer-impact --sample FILE [options]", impact_summary, o);
         return 0;
     }
-    c.ip.nrings = (int)c.rings;
-    if (mat_resolve(&c.m, &err) != GW_OK)
+    if (layer_impact_resolve(&c, &err) != GW_OK)
         return fail("layer-impact", err.msg);
-    const gw_solver_type *type = gw_solver_type_find(c.solver);
-    if (!type)
-        return fail("layer-impact", "--solver: unknown solver (cvode, arkode, rk4)");
-    gw_solver_params sp = gw_solver_params_default();
-    sp.method = gw_solver_method_find(c.method);
-    if (sp.method < 0)
-        return fail("layer-impact", "--method: unknown method (bdf, adams, erk, dirk)");
-    sp.dt = type == gw_solver_rk4 ? c.dt : 0;
-    sp.rtol = c.rtol;
-    sp.atol = c.atol;
-    if (!c.sample)
-        return fail("layer-impact", "--sample: a sample file (from layer-make) is required");
+    const gw_solver_type *type = c.type;
+    gw_solver_params sp = c.sp;
     gw_layer_sample s;
     if (gw_layer_sample_read(c.sample, &s, &err) != GW_OK)
         return fail("layer-impact", err.msg);
-    c.rm = s.rm;
-    if (!gw_cli_find(o, "mass-law")->seen) /* the sample's mass law unless overridden */
-        c.m.lp.mass_law = s.mass_law;
-    if (gw_layer_impact_check(&s, &c.ip, &err) != GW_OK) {
+    if (layer_impact_use_sample(&c, o, &s, &err) != GW_OK) {
         gw_layer_sample_free(&s);
         return fail("layer-impact", err.msg);
     }

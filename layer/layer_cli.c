@@ -1,0 +1,105 @@
+/*
+ * layer_cli.c: the option tables of the layer commands (layer_cli.h). One
+ * table for an impact (physics.md 2.3: R_b = rb-rm R_m, V_i, alpha_i, impact
+ * abscissa, height H = height-rm R_m; B.5, B.6) used by `granwave layer-impact`
+ * and by the `layer` sweep model, so a sweep case and the command resolve the
+ * same options to the same gw_layer_impact call.
+ * Units: SI, angles in degrees.
+ */
+#include <math.h>
+#include <string.h>
+
+#include "layer_cli.h"
+
+int layer_mat_options(layer_mat_cli *m, gw_opt *o)
+{
+    m->lp = gw_layer_params_default();
+    m->mass_law = "disc";
+    int i = 0;
+    /* ranges are checked by gw_layer_params_validate, so the message names the
+     * physical quantity (e.g. friction outside [0, 90)) */
+    o[i++] = OPT_D("friction", &m->lp.friction_deg, "PHI", "friction angle phi, deg in [0, 90) [30]", -INFINITY, INFINITY, 0);
+    o[i++] = OPT_D("shear-modulus", &m->lp.shear_modulus, "G", "shear modulus, Pa [40e9]", -INFINITY, INFINITY, 0);
+    o[i++] = OPT_D("poisson", &m->lp.poisson, "NU", "Poisson ratio [0.25]", -INFINITY, INFINITY, 0);
+    o[i++] = OPT_D("density", &m->lp.density, "RHO", "particle density, kg/m^3 [2650]", -INFINITY, INFINITY, 0);
+    o[i++] = OPT_D("gravity", &m->lp.gravity, "G", "gravity, m/s^2 [9.81]", -INFINITY, INFINITY, 0);
+    o[i++] = OPT_D("skin", &m->lp.skin, "S", "contact-list skin, m [0.1]", -INFINITY, INFINITY, 0);
+    o[i++] = OPT_S("mass-law", &m->mass_law, "LAW", "disc (unit thickness) or sphere [disc; impacts: the sample's]");
+    return i;
+}
+
+int layer_mat_resolve(layer_mat_cli *m, gw_err *err)
+{
+    if (strcmp(m->mass_law, "disc") == 0)
+        m->lp.mass_law = GW_LAYER_MASS_DISC;
+    else if (strcmp(m->mass_law, "sphere") == 0)
+        m->lp.mass_law = GW_LAYER_MASS_SPHERE;
+    else
+        return gw_err_set(err, GW_EINVAL, "--mass-law: unknown '%s' (disc, sphere)", m->mass_law);
+    return gw_layer_params_validate(&m->lp, err);
+}
+
+int layer_impact_options(layer_impact_cli *c, gw_opt *o)
+{
+    memset(c, 0, sizeof *c);
+    int i = layer_mat_options(&c->m, o);
+    c->ip = gw_layer_impact_params_default();
+    c->solver = "rk4";
+    c->method = "default";
+    c->dt = 1e-6;
+    c->rtol = 1e-8;
+    c->atol = 1e-8;
+    c->rings = c->ip.nrings;
+    /* physical ranges are checked by gw_layer_impact_check (messages name the
+     * quantity); the table only bounds the solver settings. An option added here must also
+     * raise LAYER_IMPACT_NOPTS (layer_cli.h): callers size their tables by it. */
+    o[i++] = OPT_S("sample", &c->sample, "FILE", "sample written by layer-make (required)");
+    o[i++] = OPT_D("rb-rm", &c->ip.rb_rm, "R", "block radius in R_m [1]", -INFINITY, INFINITY, 0);
+    o[i++] = OPT_D("vi", &c->ip.vi, "V", "incident speed, m/s [20]", -INFINITY, INFINITY, 0);
+    o[i++] = OPT_D("alpha", &c->ip.alpha_deg, "DEG", "incidence from the normal, deg in [0, 90) [0]", -INFINITY, INFINITY, 0);
+    o[i++] = OPT_D("x", &c->ip.x, "X", "impact abscissa from the box centre, m [0]", -INFINITY, INFINITY, 0);
+    o[i++] = OPT_D("height-rm", &c->ip.height_rm, "H", "mobile layer height in R_m; deeper particles frozen [0 = all]", -INFINITY, INFINITY, 0);
+    o[i++] = OPT_D("gap", &c->ip.gap, "G", "initial block-target gap, m [1e-6]; < 0 = overlapping (refused)", -INFINITY, INFINITY, 0);
+    o[i++] = OPT_D("t-max", &c->ip.t_max, "T", "end of the run, s [0.05]", -INFINITY, INFINITY, 0);
+    o[i++] = OPT_D("dt-out", &c->ip.dt_out, "DT", "sampling interval, s [2e-5]", -INFINITY, INFINITY, 0);
+    o[i++] = OPT_D("ring-width", &c->ip.ring_width, "DC", "crown width d_c, m [2 R_m]", -INFINITY, INFINITY, 0);
+    o[i++] = OPT_L("rings", &c->rings, "N", "number of crowns [12]", 1, 1000);
+    o[i++] = OPT_S("solver", &c->solver, "NAME", "rk4, cvode or arkode [rk4]");
+    o[i++] = OPT_S("method", &c->method, "NAME", "cvode: bdf|adams; arkode: erk|dirk [default]");
+    o[i++] = OPT_D("dt", &c->dt, "DT", "RK4 step, s [1e-6]", 0, 1, 1);
+    o[i++] = OPT_D("rtol", &c->rtol, "R", "relative tolerance of cvode/arkode [1e-8]", 0, 1, 1);
+    o[i++] = OPT_D("atol", &c->atol, "A", "absolute tolerance (scaled per component) [1e-8]", 0, 1, 1);
+    o[i++] = (gw_opt){.name = "remove-walls", .kind = GW_OPT_FLAG, .dest = &c->ip.remove_walls, .help = "take the left, right and bottom walls away at the start of the impact"};
+    o[i++] = (gw_opt){.name = "full", .kind = GW_OPT_FLAG, .dest = &c->ip.full, .help = "run to t-max even after the block has left (for the crowns)"};
+    return i;
+}
+
+int layer_impact_resolve(layer_impact_cli *c, gw_err *err)
+{
+    c->ip.nrings = (int)c->rings;
+    int rc = layer_mat_resolve(&c->m, err);
+    if (rc != GW_OK)
+        return rc;
+    c->type = gw_solver_type_find(c->solver);
+    if (!c->type)
+        return gw_err_set(err, GW_EINVAL, "--solver: unknown solver '%s' (cvode, arkode, rk4)", c->solver);
+    c->sp = gw_solver_params_default();
+    c->sp.method = gw_solver_method_find(c->method);
+    if (c->sp.method < 0)
+        return gw_err_set(err, GW_EINVAL, "--method: unknown method '%s' (bdf, adams, erk, dirk)", c->method);
+    c->sp.dt = c->type == gw_solver_rk4 ? c->dt : 0;
+    c->sp.rtol = c->rtol;
+    c->sp.atol = c->atol;
+    if (!c->sample)
+        return gw_err_set(err, GW_EINVAL, "--sample: a sample file (from layer-make) is required");
+    return GW_OK;
+}
+
+int layer_impact_use_sample(layer_impact_cli *c, const gw_opt *o, const gw_layer_sample *s, gw_err *err)
+{
+    c->rm = s->rm;
+    const gw_opt *ml = gw_cli_find(o, "mass-law");
+    if (!ml || !ml->seen) /* the sample's mass law unless overridden */
+        c->m.lp.mass_law = s->mass_law;
+    return gw_layer_impact_check(s, &c->ip, err);
+}

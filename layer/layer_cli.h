@@ -1,0 +1,72 @@
+/*
+ * layer_cli.h (private to layer/): the option tables of the layer commands, so
+ * that `granwave layer-impact` and the `layer` sweep model (layer_sweep_model.c)
+ * parse, default and validate an impact with one code path (layer_cli.c).
+ * Units: SI, angles in degrees (physics.md 2.1-2.3).
+ */
+#ifndef GW_LAYER_CLI_H
+#define GW_LAYER_CLI_H
+
+#include "gw_layer.h"
+
+#define OPT_D(nm, dst, mv, hl, lo_, hi_, open_)                                          \
+    (gw_opt) { .name = nm, .kind = GW_OPT_DOUBLE, .dest = dst, .metavar = mv, .help = hl, \
+               .lo = lo_, .hi = hi_, .open_lo = open_ }
+#define OPT_S(nm, dst, mv, hl)                                                           \
+    (gw_opt) { .name = nm, .kind = GW_OPT_STRING, .dest = dst, .metavar = mv, .help = hl }
+#define OPT_L(nm, dst, mv, hl, lo_, hi_)                                                 \
+    (gw_opt) { .name = nm, .kind = GW_OPT_LONG, .dest = dst, .metavar = mv, .help = hl,   \
+               .lo = lo_, .hi = hi_ }
+
+/* Material options shared by layer-make and layer-impact. */
+typedef struct layer_mat_cli {
+    gw_layer_params lp;
+    const char *mass_law;
+} layer_mat_cli;
+
+/* Number of options layer_mat_options writes. */
+#define LAYER_MAT_NOPTS 7
+
+/* Fill defaults into m and write the material options into o[0 .. LAYER_MAT_NOPTS);
+ * returns LAYER_MAT_NOPTS. */
+int layer_mat_options(layer_mat_cli *m, gw_opt *o);
+
+/* Mass law name into m->lp.mass_law, then gw_layer_params_validate. GW_EINVAL
+ * with a message naming the option. */
+int layer_mat_resolve(layer_mat_cli *m, gw_err *err);
+
+/* The options of one impact (layer-impact without --json and --out). */
+typedef struct layer_impact_cli {
+    layer_mat_cli m;
+    gw_layer_impact_params ip;
+    const char *sample, *solver, *method, *out;
+    double dt, rtol, atol;
+    double rm; /* the sample's R_m, m (set by layer_impact_use_sample) */
+    long rings;
+    int json;
+    /* resolved by layer_impact_resolve */
+    const gw_solver_type *type;
+    gw_solver_params sp;
+} layer_impact_cli;
+
+/* Number of options layer_impact_options writes (materials included). */
+#define LAYER_IMPACT_NOPTS (LAYER_MAT_NOPTS + 18)
+
+/* Zero c, fill the defaults and write the impact option table (materials,
+ * sample, block, run, solver, flags remove-walls and full) into
+ * o[0 .. LAYER_IMPACT_NOPTS); returns LAYER_IMPACT_NOPTS. The caller appends
+ * its own options and the {0} terminator. String options point into argv. */
+int layer_impact_options(layer_impact_cli *c, gw_opt *o);
+
+/* After parsing: rings, materials, solver and method into c->type and c->sp;
+ * a sample path is required. GW_EINVAL with a message naming the option; c is
+ * then only partly resolved. */
+int layer_impact_resolve(layer_impact_cli *c, gw_err *err);
+
+/* Take R_m and (unless --mass-law was given in o) the mass law from sample s,
+ * then check the impact against it (gw_layer_impact_check). GW_EINVAL naming the
+ * input. */
+int layer_impact_use_sample(layer_impact_cli *c, const gw_opt *o, const gw_layer_sample *s,
+                            gw_err *err);
+
+#endif

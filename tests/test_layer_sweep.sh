@@ -1,0 +1,159 @@
+#!/bin/bash
+# test_layer_sweep.sh GRANWAVE SRCDIR: `granwave sweep` with the layer model
+# (issue 5; physics.md 2.3, impact-point statistics).
+#  - a 2 x 3 grid (rb-rm x point) on a 40-disc sample runs with exit 0; the
+#    table has the grid keys and the 16 columns in the documented order, one
+#    row per case; x_impact = x + (point - (points - 1)/2) spacing; e = v_r/V_i,
+#    e_n = v_nr/v_ni and penetration_rm = penetration/R_m (R_m from the sample);
+#  - a sweep killed with kill -9 after its first journaled case and rerun gives
+#    a results.csv byte-identical to the uninterrupted one;
+#  - serial (threads) and MPI (2 ranks) tables are identical (SKIP when
+#    granwave has no MPI or mpirun is missing);
+#  - bad values (rb-rm = -1, a missing sample, a flag value that is not
+#    0/1/true/false, point >= points) exit 2 with one line naming the key or
+#    file, and nothing runs (no output directory);
+#  - rows equal the JSON of `granwave layer-impact` with the same options (x
+#    set to the row's x_impact): the same code path, to printed precision.
+set -u
+GW=$1
+PY=/usr/bin/python3
+tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
+fails=0; passes=0
+ok() { echo "PASS: $1"; passes=$((passes+1)); }
+ko() { echo "FAIL: $1"; fails=$((fails+1)); }
+
+"$GW" layer-make --n 40 --width-rm 14 --seed 2 --out "$tmp/S.txt" >/dev/null || { echo "FAIL: layer-make"; exit 1; }
+
+# full = true: every case runs to t-max (about 0.3 s each), long enough to be
+# killed mid-sweep; x and spacing are not round numbers so the formula is tested.
+cat >"$tmp/s.ini" <<CFG
+[sweep]
+model = layer
+[grid]
+rb-rm = 0.8, 1.5
+point = 0:2
+[params]
+sample = $tmp/S.txt
+points = 3
+x = 0.1
+spacing = 0.07
+t-max = 0.012
+full = true
+CFG
+"$GW" sweep "$tmp/s.ini" --out "$tmp/ref" --quiet --jobs 2; rc=$?
+[ $rc -eq 0 ] && ok "layer sweep exits 0" || ko "layer sweep exit $rc"
+
+$PY - "$tmp/ref/results.csv" "$tmp/S.txt" <<'PY' && ok "table: header, 6 rows, x_impact formula, e/e_n/penetration_rm consistent" || ko "table contents"
+import csv, math, sys
+cols = ("x_impact,bounced,e_n,e,alpha_r,v_ni,v_nr,v_r,penetration,penetration_rm,dissipated_first_contact,"
+        "block_loss_first_contact,energy_error,wave_speed,t_end,steps").split(",")
+lines = [l for l in open(sys.argv[1]) if not l.startswith("#")]
+head = lines[0].strip().split(",")
+bad = []
+if head != ["case", "rb-rm", "point"] + cols:
+    bad.append("header %s" % head)
+rows = list(csv.DictReader(lines))
+if len(rows) != 6:
+    bad.append("%d rows" % len(rows))
+rm = next(float(l.split()[1]) for l in open(sys.argv[2]) if l.startswith("rm "))
+for k, r in enumerate(rows):
+    v = {c: float(r[c]) for c in cols}
+    if int(r["case"]) != k or r["rb-rm"] != ["0.8", "1.5"][k // 3] or r["point"] != str(k % 3):
+        bad.append("case %d keys %s" % (k, r))
+    x = 0.1 + (k % 3 - (3 - 1) / 2) * 0.07
+    if abs(v["x_impact"] - x) > 1e-15:
+        bad.append("case %d x_impact %r != %r" % (k, v["x_impact"], x))
+    if v["bounced"] not in (0, 1) or v["steps"] < 1000 or abs(v["t_end"] - 0.012) > 1e-12:
+        bad.append("case %d bounced/steps/t_end %s" % (k, r))
+    if v["v_ni"] != 20 or abs(v["e"] - v["v_r"] / 20) > 1e-15 or abs(v["e_n"] - v["v_nr"] / 20) > 1e-15:
+        bad.append("case %d e, e_n vs v_r, v_nr" % k)
+    if abs(v["penetration_rm"] - v["penetration"] / rm) > 1e-15 * v["penetration_rm"] or not v["penetration"] > 0:
+        bad.append("case %d penetration_rm" % k)
+    if not (0 < v["block_loss_first_contact"] <= 1 and 0 <= v["dissipated_first_contact"] < 0.2):
+        bad.append("case %d first-contact fractions out of range" % k)
+    if not v["energy_error"] < 1e-3:
+        bad.append("case %d energy closure %g" % (k, v["energy_error"]))
+xs = {round(float(r["x_impact"]), 12) for r in rows}
+if len(xs) != 3:
+    bad.append("x_impact values %s" % xs)
+bad and print("\n".join(bad))
+sys.exit(1 if bad else 0)
+PY
+
+# kill -9 once the first case is journaled, then resume
+"$GW" sweep "$tmp/s.ini" --out "$tmp/k" --quiet --jobs 1 & pid=$!
+for _ in $(seq 1 300); do
+    n=$(grep -vc '^#' "$tmp/k/journal.csv" 2>/dev/null); n=${n:-0}
+    [ "$n" -ge 1 ] && break
+    sleep 0.02
+done
+kill -9 $pid 2>/dev/null; wait $pid 2>/dev/null
+n1=$(grep -vc '^#' "$tmp/k/journal.csv" 2>/dev/null)
+if [ ! -e "$tmp/k/results.csv" ] && [ "${n1:-0}" -ge 1 ] && [ "${n1:-0}" -lt 6 ]; then
+    ok "kill -9 mid-sweep: $n1 of 6 cases journaled, no table"
+else
+    ko "kill -9 did not land mid-sweep (journaled ${n1:-0}, table $(ls "$tmp/k" 2>/dev/null))"
+fi
+"$GW" sweep "$tmp/s.ini" --out "$tmp/k" --quiet --jobs 2 || ko "resume after kill -9 failed"
+cmp -s "$tmp/ref/results.csv" "$tmp/k/results.csv" && ok "resumed after kill -9: table byte-identical" || ko "resumed table differs"
+
+# serial vs MPI (rank 0 hands out cases, rank 1 runs them)
+if ! command -v mpirun >/dev/null; then
+    echo "SKIP: mpirun not installed"
+elif ! ldd "$GW" 2>/dev/null | grep -q libmpi; then
+    echo "SKIP: granwave built without MPI"
+else
+    OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 mpirun --allow-run-as-root --oversubscribe -n 2 \
+        "$GW" sweep "$tmp/s.ini" --out "$tmp/mpi" --quiet >"$tmp/mpi.log" 2>&1
+    cmp -s "$tmp/ref/results.csv" "$tmp/mpi/results.csv" && ok "MPI (2 ranks) table identical to the threaded one" ||
+        { ko "MPI table differs or failed"; tail -5 "$tmp/mpi.log"; }
+fi
+
+# bad values: refused before anything runs
+badcase() { # name expected-text extra-grid-or-params
+    sed "$3" "$tmp/s.ini" >"$tmp/$1.ini"
+    "$GW" sweep "$tmp/$1.ini" --out "$tmp/o_$1" >"$tmp/out" 2>"$tmp/err"; rc=$?
+    if [ $rc -eq 2 ] && [ "$(wc -l <"$tmp/err")" -eq 1 ] && grep -q -- "$2" "$tmp/err" && [ ! -e "$tmp/o_$1" ]; then
+        ok "bad case $1 -> exit 2, nothing run: $(cat "$tmp/err")"
+    else
+        ko "bad case $1 -> exit $rc: $(cat "$tmp/err")"
+    fi
+}
+badcase negative_radius "rb-rm" 's/^rb-rm = .*/rb-rm = 0.8, -1/'
+badcase missing_sample "no_such_sample" "s|^sample = .*|sample = $tmp/no_such_sample.txt|"
+badcase bad_flag "full" 's/^full = true/full = maybe/'
+badcase point_out_of_range "point" 's/^points = 3/points = 2/'
+badcase unknown_key ":6:" 's/^point = 0:2/point = 0:2\njson = 1/'
+
+# rows equal the command's JSON with the same options (a bouncing block,
+# rb-rm 0.8, and a non-bouncing one, rb-rm 1.5)
+for k in 2 5; do
+row=$(grep "^$k," "$tmp/ref/results.csv")
+rb=$(echo "$row" | cut -d, -f2); xk=$(echo "$row" | cut -d, -f4)
+"$GW" layer-impact --sample "$tmp/S.txt" --rb-rm "$rb" --x "$xk" --t-max 0.012 --full --json >"$tmp/imp.json" ||
+    ko "layer-impact for the JSON comparison failed"
+$PY - "$tmp/ref/results.csv" "$tmp/imp.json" "$k" <<'PY' && ok "row $k equals layer-impact --json with the same options (rb-rm $rb, x = $xk)" || ko "row $k differs from layer-impact --json"
+import csv, json, math, sys
+rows = list(csv.DictReader(l for l in open(sys.argv[1]) if not l.startswith("#")))
+r, j = rows[int(sys.argv[3])], json.load(open(sys.argv[2]))
+bad = []
+pairs = {"x_impact": j["settings"]["x"], "alpha_r": j["alpha_r"]}
+for c in ("bounced,e_n,e,v_ni,v_nr,v_r,penetration,penetration_rm,dissipated_first_contact,"
+          "block_loss_first_contact,energy_error,wave_speed,t_end,steps").split(","):
+    pairs[c] = j[c]
+for c, jv in pairs.items():
+    sv = float(r[c])
+    if jv is None:  # cJSON writes NaN as null
+        good = math.isnan(sv)
+    else:
+        jv = float(jv)  # cJSON prints 15 digits when they round-trip within its epsilon
+        good = sv == jv or abs(sv - jv) <= 1e-14 * abs(jv)
+    if not good:
+        bad.append("%s: sweep %s, json %s" % (c, r[c], jv))
+bad and print("\n".join(bad))
+sys.exit(1 if bad else 0)
+PY
+done
+
+echo "$passes passed, $fails failed"
+[ $fails -eq 0 ]

@@ -11,6 +11,10 @@ add_library(gw_layer STATIC
   ${CMAKE_CURRENT_LIST_DIR}/layer_vtk.c
   ${CMAKE_CURRENT_LIST_DIR}/layer_cmd.c
   ${CMAKE_CURRENT_LIST_DIR}/layer_cli.c
-  ${CMAKE_CURRENT_LIST_DIR}/layer_sweep_model.c)
+  ${CMAKE_CURRENT_LIST_DIR}/layer_sweep_model.c
+  ${CMAKE_CURRENT_LIST_DIR}/layer_stats.c
+  ${CMAKE_CURRENT_LIST_DIR}/layer_stats_table.c
+  ${CMAKE_CURRENT_LIST_DIR}/layer_stats_diagram.c
+  ${CMAKE_CURRENT_LIST_DIR}/layer_stats_out.c)
 target_include_directories(gw_layer PUBLIC ${CMAKE_CURRENT_SOURCE_DIR})
 target_link_libraries(gw_layer PUBLIC gw_common)

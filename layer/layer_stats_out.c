@@ -1,0 +1,462 @@
+/*
+ * layer_stats_out.c: the outputs of `granwave layer-stats` (layer_stats.c):
+ * JSON (stdout, boundary_fit.json) and the CSV tables groups.csv,
+ * convergence.csv, binary.csv, walls.csv and diagram.csv. Every file opens
+ * with the program version, the command line and the input path, and says
+ * how the boundary is placed and which B.31 parameters were fitted.
+ * Units: R_m for the diagram, degrees for angles, fractions of the incident
+ * kinetic energy for the first-contact losses; NaN prints as "nan" (CSV) or
+ * null (JSON).
+ */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "layer_stats.h"
+
+static const char *placement =
+    "bouncing lies below the boundary; in each R_b/R_m column H* is placed between the lowest "
+    "globally bouncing cell h_lo and its upper neighbour h_hi that does not bounce, where the bounce "
+    "share interpolated linearly in H equals the criterion S: "
+    "H* = h_lo + (s_lo - S) / (s_lo - s_hi) (h_hi - h_lo)";
+
+static const char *identifiability =
+    "B.31 depends on a and b only through a/b. With u = x - beta and K = (a/b) tan(gamma), "
+    "f = offset + (sqrt(u^2 + K x^2) - u) / (2 tan gamma), which for u >> sqrt(K) x is "
+    "offset + (a/b) x^2 / (4 u): tan(gamma) shapes the curve only within about sqrt(K) x of "
+    "x = beta, where a grid boundary has no points (those columns bounce at every H), so it is "
+    "fixed (--gamma-deg, 0.2 deg as in the paper). The offset delta* / (2 R_m) trades off against "
+    "beta and a/b (the large-x line is offset + (a/b)(x + beta)/4), so it is fixed from the "
+    "measured mean penetration at the boundary (or --delta-rm). Free by default: beta and a/b "
+    "(--fit changes this). b = a / (a/b) with a = (pi/2) rho V_i^2.";
+
+static const char *kind_name(int k)
+{
+    static const char *names[] = {"cross", "above", "below", "inverted"};
+    return k >= 0 && k < 4 ? names[k] : "?";
+}
+
+static cJSON *moment_json(const gw_layer_moment *m)
+{
+    cJSON *o = cJSON_CreateObject();
+    cJSON_AddNumberToObject(o, "mean", m->mean);
+    cJSON_AddNumberToObject(o, "std", m->std);
+    cJSON_AddNumberToObject(o, "n", m->n);
+    return o;
+}
+
+static const char *gval(const layer_stats_run *R, long row, int key)
+{
+    return R->t.grid_value[row * R->t.ngrid + key];
+}
+
+/* {key: value} of the grouping keys of row, except skip1/skip2 (grid indices). */
+static cJSON *keys_json(const layer_stats_run *R, long row, int skip1, int skip2)
+{
+    cJSON *o = cJSON_CreateObject();
+    for (int k = 0; k < R->gs.nkeys; k++) {
+        int c = R->gs.key[k];
+        if (c == skip1 || c == skip2)
+            continue;
+        double v = R->t.grid_num[row * R->t.ngrid + c];
+        if (isfinite(v))
+            cJSON_AddNumberToObject(o, R->t.grid_name[c], v);
+        else
+            cJSON_AddStringToObject(o, R->t.grid_name[c], gval(R, row, c));
+    }
+    return o;
+}
+
+static cJSON *group_json(const layer_stats_run *R, const gw_layer_group *g)
+{
+    cJSON *o = cJSON_CreateObject();
+    cJSON_AddItemToObject(o, "keys", keys_json(R, g->first, -1, -1));
+    cJSON_AddNumberToObject(o, "n_points", g->n);
+    cJSON_AddNumberToObject(o, "n_valid", g->n_valid);
+    cJSON_AddNumberToObject(o, "n_bounced", g->n_bounced);
+    cJSON_AddNumberToObject(o, "bounce_share", g->share);
+    cJSON_AddBoolToObject(o, "bouncing", g->bouncing);
+    cJSON_AddItemToObject(o, "e_n", moment_json(&g->e_n));
+    cJSON_AddItemToObject(o, "e", moment_json(&g->e));
+    cJSON_AddItemToObject(o, "alpha_r", moment_json(&g->alpha_r));
+    cJSON_AddItemToObject(o, "penetration", moment_json(&g->penetration));
+    cJSON_AddItemToObject(o, "penetration_rm", moment_json(&g->penetration_rm));
+    cJSON_AddItemToObject(o, "block_loss_first_contact", moment_json(&g->block_loss));
+    cJSON_AddItemToObject(o, "dissipated_first_contact", moment_json(&g->dissipated));
+    cJSON_AddNumberToObject(o, "energy_error_max", g->energy_error_max);
+    cJSON_AddNumberToObject(o, "k_stable_e", g->k_stable_e);
+    cJSON_AddItemToObject(o, "running_mean_e_n", gw_json_doubles(g->run_e_n, g->n));
+    cJSON_AddItemToObject(o, "running_mean_e", gw_json_doubles(g->run_e, g->n));
+    cJSON_AddItemToObject(o, "running_share", gw_json_doubles(g->run_share, g->n));
+    return o;
+}
+
+static cJSON *fit_json(const layer_stats_run *R, const layer_stats_diagram *D)
+{
+    const gw_layer_b31_fit *f = &D->fit;
+    cJSON *o = cJSON_CreateObject();
+    cJSON_AddStringToObject(o, "model", "B.31: f(x) = offset + (x - beta)/(2 tan gamma) (sqrt(1 + (a tan gamma / b) "
+                                        "x^2/(x - beta)^2) - 1), offset = delta* / (2 R_m)");
+    cJSON *fr = cJSON_AddArrayToObject(o, "free"), *fx = cJSON_AddArrayToObject(o, "fixed");
+    static const struct {
+        int bit;
+        const char *name;
+    } bits[] = {{GW_LAYER_B31_OFFSET, "offset"}, {GW_LAYER_B31_BETA, "beta"},
+                {GW_LAYER_B31_AB, "a_over_b"}, {GW_LAYER_B31_TANG, "tan_gamma"}};
+    for (int k = 0; k < 4; k++)
+        cJSON_AddItemToArray(R->fit_mask & bits[k].bit ? fr : fx, cJSON_CreateString(bits[k].name));
+    cJSON_AddStringToObject(o, "offset_source", (R->fit_mask & GW_LAYER_B31_OFFSET) ? "fitted" : D->offset_source);
+    cJSON_AddNumberToObject(o, "offset", f->p.offset);
+    cJSON_AddNumberToObject(o, "offset_err", f->err.offset);
+    cJSON_AddNumberToObject(o, "beta", f->p.beta);
+    cJSON_AddNumberToObject(o, "beta_err", f->err.beta);
+    cJSON_AddNumberToObject(o, "a_over_b", f->p.a_over_b);
+    cJSON_AddNumberToObject(o, "a_over_b_err", f->err.a_over_b);
+    cJSON_AddNumberToObject(o, "tan_gamma", f->p.tan_gamma);
+    cJSON_AddNumberToObject(o, "tan_gamma_err", f->err.tan_gamma);
+    cJSON_AddNumberToObject(o, "gamma_deg", atan(f->p.tan_gamma) * 180 / M_PI);
+    cJSON_AddNumberToObject(o, "corr_beta_a_over_b", f->corr_beta_ab);
+    cJSON_AddNumberToObject(o, "a", D->a);
+    cJSON_AddNumberToObject(o, "b", D->a / f->p.a_over_b);
+    cJSON_AddNumberToObject(o, "b_err", D->a / f->p.a_over_b * f->err.a_over_b / f->p.a_over_b);
+    cJSON_AddNumberToObject(o, "x_min", f->x_min);
+    cJSON_AddNumberToObject(o, "h_min", f->h_min);
+    cJSON_AddNumberToObject(o, "n_points", f->n);
+    cJSON_AddNumberToObject(o, "dof", f->dof);
+    cJSON_AddNumberToObject(o, "rms_residual", f->rms);
+    cJSON_AddNumberToObject(o, "iterations", f->iterations);
+    cJSON_AddStringToObject(o, "errors", "standard errors from (J^T J)^-1 scaled by chi^2/dof (unweighted); "
+                                         "null when dof = 0");
+    cJSON_AddStringToObject(o, "identifiability", identifiability);
+    /* the fitted curve over the diagram's R_b/R_m range, for plots */
+    enum { NCURVE = 201 };
+    double cx[NCURVE], cf[NCURVE], x0 = D->d.xs[0], x1 = D->d.xs[D->d.nx - 1];
+    for (int i = 0; i < NCURVE; i++) {
+        cx[i] = x0 + (x1 - x0) * i / (NCURVE - 1);
+        cf[i] = gw_layer_b31_eval(&f->p, cx[i]);
+    }
+    cJSON *c = cJSON_AddObjectToObject(o, "curve");
+    cJSON_AddItemToObject(c, "rb_rm", gw_json_doubles(cx, NCURVE));
+    cJSON_AddItemToObject(c, "h", gw_json_doubles(cf, NCURVE));
+    return o;
+}
+
+static cJSON *diagram_json(const layer_stats_run *R, const layer_stats_diagram *D)
+{
+    int kx = gw_layer_results_key(&R->t, "rb-rm"), kh = gw_layer_results_key(&R->t, "height-rm");
+    cJSON *o = cJSON_CreateObject();
+    cJSON_AddItemToObject(o, "keys", keys_json(R, R->gs.g[D->groups[0]].first, kx, kh));
+    if (!D->ok) {
+        cJSON_AddStringToObject(o, "error", D->reason);
+        return o;
+    }
+    const gw_layer_diagram *d = &D->d;
+    cJSON_AddItemToObject(o, "rb_rm", gw_json_doubles(d->xs, d->nx));
+    cJSON_AddItemToObject(o, "height_rm", gw_json_doubles(d->hs, d->nh));
+    cJSON *sh = cJSON_AddArrayToObject(o, "share");
+    for (int i = 0; i < d->nx; i++)
+        cJSON_AddItemToArray(sh, gw_json_doubles(d->share + (size_t)i * d->nh, d->nh));
+    cJSON_AddStringToObject(o, "placement", placement);
+    cJSON *b = cJSON_AddArrayToObject(o, "boundary");
+    for (int i = 0; i < d->nx; i++) {
+        const gw_layer_boundary_pt *p = &d->pts[i];
+        cJSON *q = cJSON_CreateObject();
+        cJSON_AddNumberToObject(q, "rb_rm", p->x);
+        cJSON_AddStringToObject(q, "kind", kind_name(p->kind));
+        cJSON_AddNumberToObject(q, "h_star", p->h);
+        cJSON_AddNumberToObject(q, "h_lo", p->h_lo);
+        cJSON_AddNumberToObject(q, "h_hi", p->h_hi);
+        cJSON_AddNumberToObject(q, "share_lo", p->s_lo);
+        cJSON_AddNumberToObject(q, "share_hi", p->s_hi);
+        cJSON_AddNumberToObject(q, "changes", p->changes);
+        cJSON_AddNumberToObject(q, "penetration_rm", p->penetration_rm);
+        cJSON_AddItemToArray(b, q);
+    }
+    cJSON_AddNumberToObject(o, "r_crit", d->r_crit);
+    cJSON_AddNumberToObject(o, "r_crit_upper", d->r_crit_upper);
+    cJSON_AddStringToObject(o, "r_crit_means", "largest R_b/R_m of the grid up to which every column bounces at "
+                                               "every H; the true R_crit lies in [r_crit, r_crit_upper)");
+    cJSON_AddNumberToObject(o, "r_min", d->r_min);
+    cJSON_AddNumberToObject(o, "h_min", d->h_min);
+    cJSON_AddNumberToObject(o, "penetration_rm_boundary", d->penetration_rm);
+    if (D->fit_ok) {
+        cJSON_AddItemToObject(o, "fit", fit_json(R, D));
+    } else {
+        cJSON_AddNullToObject(o, "fit");
+        cJSON_AddStringToObject(o, "fit_reason", D->fit_reason);
+    }
+    return o;
+}
+
+static cJSON *binary_json(const layer_stats_run *R)
+{
+    cJSON *a = cJSON_CreateArray();
+    for (int k = 0; k < R->nbin; k++) {
+        const layer_stats_binary *b = &R->bin[k];
+        cJSON *o = cJSON_CreateObject();
+        cJSON_AddNumberToObject(o, "rb_rm", b->rb_rm);
+        cJSON_AddNumberToObject(o, "alpha", b->alpha);
+        cJSON_AddItemToObject(o, "block_loss_first_contact", moment_json(&b->loss));
+        cJSON_AddNumberToObject(o, "binary_disc", b->disc);
+        cJSON_AddNumberToObject(o, "binary_sphere", b->sphere);
+        cJSON_AddItemToArray(a, o);
+    }
+    return a;
+}
+
+static cJSON *walls_json(const layer_stats_run *R)
+{
+    cJSON *a = cJSON_CreateArray();
+    int kw = gw_layer_results_key(&R->t, "remove-walls");
+    for (int k = 0; k < R->nwalls; k++) {
+        cJSON *o = cJSON_CreateObject();
+        cJSON_AddItemToObject(o, "keys", keys_json(R, R->gs.g[R->walls[k][0]].first, kw, -1));
+        for (int w = 0; w < 2; w++) {
+            const gw_layer_group *g = &R->gs.g[R->walls[k][w]];
+            cJSON *q = cJSON_AddObjectToObject(o, w ? "walls_removed" : "walls");
+            cJSON_AddNumberToObject(q, "n_points", g->n);
+            cJSON_AddNumberToObject(q, "bounce_share", g->share);
+            cJSON_AddBoolToObject(q, "bouncing", g->bouncing);
+            cJSON_AddNumberToObject(q, "e_n", g->e_n.mean);
+            cJSON_AddNumberToObject(q, "e", g->e.mean);
+            cJSON_AddNumberToObject(q, "penetration_rm", g->penetration_rm.mean);
+            cJSON_AddNumberToObject(q, "block_loss_first_contact", g->block_loss.mean);
+        }
+        cJSON_AddItemToArray(a, o);
+    }
+    return a;
+}
+
+cJSON *layer_stats_json(const layer_stats_run *R, int full)
+{
+    const gw_layer_results *t = &R->t;
+    cJSON *o = cJSON_CreateObject();
+    cJSON_AddStringToObject(o, "program", "granwave layer-stats");
+    cJSON_AddStringToObject(o, "version", gw_version());
+    cJSON_AddStringToObject(o, "command", R->cmdline);
+    cJSON_AddStringToObject(o, "input", R->input);
+    cJSON_AddNumberToObject(o, "criterion", R->gs.criterion);
+    cJSON_AddNumberToObject(o, "rows", (double)t->nrows);
+    cJSON *p = cJSON_AddObjectToObject(o, "params");
+    for (int i = 0; i < t->nparams; i++)
+        cJSON_AddStringToObject(p, t->param_name[i], t->param_value[i]);
+    cJSON *gk = cJSON_AddArrayToObject(o, "group_keys");
+    for (int k = 0; k < R->gs.nkeys; k++)
+        cJSON_AddItemToArray(gk, cJSON_CreateString(t->grid_name[R->gs.key[k]]));
+    if (full) {
+        cJSON *g = cJSON_AddArrayToObject(o, "groups");
+        for (int a = 0; a < R->gs.n; a++)
+            cJSON_AddItemToArray(g, group_json(R, &R->gs.g[a]));
+        cJSON_AddItemToObject(o, "binary", binary_json(R));
+        cJSON_AddItemToObject(o, "walls", walls_json(R));
+    }
+    cJSON *d = cJSON_AddArrayToObject(o, "diagrams");
+    for (int q = 0; q < R->ndia; q++)
+        cJSON_AddItemToArray(d, diagram_json(R, &R->dia[q]));
+    return o;
+}
+
+/* ------------------------------------------------------------------- CSVs --- */
+
+static void num(FILE *fp, double v)
+{
+    if (isnan(v))
+        fputs(",nan", fp);
+    else
+        fprintf(fp, ",%.9g", v);
+}
+
+static void head(FILE *fp, const layer_stats_run *R, const char *what)
+{
+    fprintf(fp, "# granwave %s layer-stats\n# command: %s\n# input: %s\n", gw_version(), R->cmdline, R->input);
+    fprintf(fp, "# criterion: %.6g (a group bounces globally when its share of bouncing impact points >= "
+                "criterion)\n# %s\n", R->gs.criterion, what);
+}
+
+/* Header cells of the grouping keys (skipping grid indices skip1, skip2). */
+static void key_names(FILE *fp, const layer_stats_run *R, int skip1, int skip2)
+{
+    for (int k = 0; k < R->gs.nkeys; k++)
+        if (R->gs.key[k] != skip1 && R->gs.key[k] != skip2)
+            fprintf(fp, ",%s", R->t.grid_name[R->gs.key[k]]);
+}
+
+static void key_values(FILE *fp, const layer_stats_run *R, long row, int skip1, int skip2)
+{
+    for (int k = 0; k < R->gs.nkeys; k++)
+        if (R->gs.key[k] != skip1 && R->gs.key[k] != skip2)
+            fprintf(fp, ",%s", gval(R, row, R->gs.key[k]));
+}
+
+static void write_groups(FILE *fp, const layer_stats_run *R)
+{
+    head(fp, R, "per group of impact points (every grid key but point): e_n, e, alpha_r (deg) over the "
+                "bouncing points (n_rebound of them), the others over all points; std = sample standard "
+                "deviation (n - 1); penetration in m and in R_m; first-contact block loss and friction "
+                "dissipation as fractions of the incident energy; k_stable_e = points after which the running "
+                "mean of e stays within 5 % of the final mean");
+    fprintf(fp, "group");
+    key_names(fp, R, -1, -1);
+    fprintf(fp, ",n_points,n_valid,n_bounced,bounce_share,bouncing,e_n_mean,e_n_std,e_mean,e_std,alpha_r_mean,"
+                "alpha_r_std,n_rebound,penetration_mean,penetration_std,penetration_rm_mean,penetration_rm_std,"
+                "block_loss_mean,block_loss_std,dissipated_mean,dissipated_std,energy_error_max,k_stable_e\n");
+    for (int a = 0; a < R->gs.n; a++) {
+        const gw_layer_group *g = &R->gs.g[a];
+        fprintf(fp, "%d", a);
+        key_values(fp, R, g->first, -1, -1);
+        fprintf(fp, ",%d,%d,%d", g->n, g->n_valid, g->n_bounced);
+        num(fp, g->share);
+        fprintf(fp, ",%d", g->bouncing);
+        const gw_layer_moment *m[] = {&g->e_n, &g->e, &g->alpha_r};
+        for (int k = 0; k < 3; k++) {
+            num(fp, m[k]->mean);
+            num(fp, m[k]->std);
+        }
+        fprintf(fp, ",%d", g->e.n);
+        const gw_layer_moment *m2[] = {&g->penetration, &g->penetration_rm, &g->block_loss, &g->dissipated};
+        for (int k = 0; k < 4; k++) {
+            num(fp, m2[k]->mean);
+            num(fp, m2[k]->std);
+        }
+        num(fp, g->energy_error_max);
+        fprintf(fp, ",%d\n", g->k_stable_e);
+    }
+}
+
+static void write_convergence(FILE *fp, const layer_stats_run *R)
+{
+    const gw_layer_results *t = &R->t;
+    int cb = gw_layer_results_col(t, "bounced"), cen = gw_layer_results_col(t, "e_n"),
+        ce = gw_layer_results_col(t, "e");
+    head(fp, R, "convergence with the number of points (the paper's Fig. 10): row k of a group holds its k-th "
+                "point (by point index) and the means of e_n and e over the bouncing points among the first k, "
+                "and the bounce share of the first k");
+    fprintf(fp, "group");
+    key_names(fp, R, -1, -1);
+    fprintf(fp, ",k,case,point,bounced,e_n,e,running_mean_e_n,running_mean_e,running_share\n");
+    for (int a = 0; a < R->gs.n; a++) {
+        const gw_layer_group *g = &R->gs.g[a];
+        for (int k = 0; k < g->n; k++) {
+            long r = g->rows[k];
+            fprintf(fp, "%d", a);
+            key_values(fp, R, g->first, -1, -1);
+            fprintf(fp, ",%d,%ld,%s", k + 1, t->case_id[r], R->gs.point_key >= 0 ? gval(R, r, R->gs.point_key) : "nan");
+            num(fp, t->val[r * t->ncols + cb]);
+            num(fp, t->val[r * t->ncols + cen]);
+            num(fp, t->val[r * t->ncols + ce]);
+            num(fp, g->run_e_n[k]);
+            num(fp, g->run_e[k]);
+            num(fp, g->run_share[k]);
+            fputc('\n', fp);
+        }
+    }
+}
+
+static void write_binary(FILE *fp, const layer_stats_run *R)
+{
+    head(fp, R, "first contact against the binary impact (B.24-B.28): block_loss = (E_kb(0) - E_kb)/E_incident at "
+                "the end of the block's first contact, over every row with this R_b/R_m and incidence (deg); "
+                "binary_disc = 4 r^2/(1 + r^2)^2 (disc masses, the layer default), binary_sphere = "
+                "4 r^3/(1 + r^3)^2, r = R_b/R_m");
+    fprintf(fp, "rb_rm,alpha,n,block_loss_mean,block_loss_std,binary_disc,binary_sphere\n");
+    for (int k = 0; k < R->nbin; k++) {
+        const layer_stats_binary *b = &R->bin[k];
+        fprintf(fp, "%.9g,%.9g,%d", b->rb_rm, b->alpha, b->loss.n);
+        num(fp, b->loss.mean);
+        num(fp, b->loss.std);
+        num(fp, b->disc);
+        num(fp, b->sphere);
+        fputc('\n', fp);
+    }
+}
+
+static void write_walls(FILE *fp, const layer_stats_run *R)
+{
+    int kw = gw_layer_results_key(&R->t, "remove-walls");
+    head(fp, R, kw < 0 ? "walls: the table has no remove-walls grid key, nothing to compare"
+                       : "walls kept (remove-walls = 0) and removed at impact time (remove-walls = 1) side by "
+                         "side, for the groups that agree on every other key");
+    fprintf(fp, "pair");
+    key_names(fp, R, kw, -1);
+    static const char *cols[] = {"n_points", "bounce_share", "bouncing", "e_n_mean", "e_mean", "penetration_rm_mean",
+                                 "block_loss_mean"};
+    for (int w = 0; w < 2; w++)
+        for (size_t c = 0; c < sizeof cols / sizeof cols[0]; c++)
+            fprintf(fp, ",%s_%s", w ? "removed" : "walls", cols[c]);
+    fputc('\n', fp);
+    for (int k = 0; k < R->nwalls; k++) {
+        fprintf(fp, "%d", k);
+        key_values(fp, R, R->gs.g[R->walls[k][0]].first, kw, -1);
+        for (int w = 0; w < 2; w++) {
+            const gw_layer_group *g = &R->gs.g[R->walls[k][w]];
+            fprintf(fp, ",%d", g->n);
+            num(fp, g->share);
+            fprintf(fp, ",%d", g->bouncing);
+            num(fp, g->e_n.mean);
+            num(fp, g->e.mean);
+            num(fp, g->penetration_rm.mean);
+            num(fp, g->block_loss.mean);
+        }
+        fputc('\n', fp);
+    }
+}
+
+static void write_diagram(FILE *fp, const layer_stats_run *R)
+{
+    int kx = gw_layer_results_key(&R->t, "rb-rm"), kh = gw_layer_results_key(&R->t, "height-rm");
+    head(fp, R, placement);
+    fprintf(fp, "# kind: cross (boundary between two cells), above (every H bounces), below (no H bounces), "
+                "inverted (bouncing only above); changes > 1: the verdict changes more than once along H; "
+                "b31 = the fitted B.31 at rb_rm (boundary_fit.json)\n");
+    fprintf(fp, "diagram");
+    key_names(fp, R, kx, kh);
+    fprintf(fp, ",rb_rm,kind,h_star,h_lo,h_hi,share_lo,share_hi,changes,penetration_rm,b31\n");
+    for (int q = 0; q < R->ndia; q++) {
+        const layer_stats_diagram *D = &R->dia[q];
+        for (int i = 0; D->ok && i < D->d.nx; i++) {
+            const gw_layer_boundary_pt *p = &D->d.pts[i];
+            fprintf(fp, "%d", q);
+            key_values(fp, R, R->gs.g[D->groups[0]].first, kx, kh);
+            fprintf(fp, ",%.9g,%s", p->x, kind_name(p->kind));
+            num(fp, p->h);
+            num(fp, p->h_lo);
+            num(fp, p->h_hi);
+            num(fp, p->s_lo);
+            num(fp, p->s_hi);
+            fprintf(fp, ",%d", p->changes);
+            num(fp, p->penetration_rm);
+            num(fp, D->fit_ok ? gw_layer_b31_eval(&D->fit.p, p->x) : NAN);
+            fputc('\n', fp);
+        }
+    }
+}
+
+typedef void (*writer)(FILE *fp, const layer_stats_run *R);
+
+int layer_stats_write_files(const layer_stats_run *R, const char *dir, gw_err *err)
+{
+    static const struct {
+        const char *name;
+        writer fn;
+    } files[] = {{"groups.csv", write_groups}, {"convergence.csv", write_convergence},
+                 {"binary.csv", write_binary}, {"walls.csv", write_walls}, {"diagram.csv", write_diagram}};
+    int rc = gw_mkdir_p(dir, err);
+    char path[4096];
+    for (size_t i = 0; rc == GW_OK && i < sizeof files / sizeof files[0]; i++) {
+        if (gw_path_join(path, sizeof path, dir, files[i].name) != GW_OK)
+            return gw_err_set(err, GW_EINVAL, "%s: path too long", dir);
+        gw_afile f;
+        if ((rc = gw_afile_open(&f, path, err)) != GW_OK)
+            break;
+        files[i].fn(f.fp, R);
+        rc = gw_afile_commit(&f, err);
+    }
+    if (rc == GW_OK) {
+        if (gw_path_join(path, sizeof path, dir, "boundary_fit.json") != GW_OK)
+            return gw_err_set(err, GW_EINVAL, "%s: path too long", dir);
+        cJSON *j = layer_stats_json(R, 0);
+        rc = j ? gw_json_write(path, j, err) : gw_err_set(err, GW_ENOMEM, "%s: out of memory", path);
+        cJSON_Delete(j);
+    }
+    return rc;
+}

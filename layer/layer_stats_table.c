@@ -1,0 +1,567 @@
+/*
+ * layer_stats_table.c: reading a layer sweep table (OUT/results.csv of
+ * `granwave sweep` with model = layer) and the per-group statistics of
+ * physics.md 2.3: over the N impact points of one configuration, the mean and
+ * sample standard deviation of e_n = V_nr/V_ni, e = V_r/V_i and
+ * alpha_r = arccos(V_nr/V_r) (B.16-B.18; over the bouncing points, the only
+ * ones where they are defined), of the penetration and of the first-contact
+ * energy fractions; the bounce share and the global verdict share >= S
+ * (physics.md 2.5, S = 75 % in the paper); the running means over the first k
+ * points (the paper's Fig. 10: how many points make the mean stable).
+ * Units: as in the table (m, deg, fractions of the incident energy, R_m).
+ */
+#define _POSIX_C_SOURCE 200809L
+#include <errno.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "layer_stats.h"
+
+const char *const gw_layer_results_required[] = {
+    "x_impact", "bounced", "e_n", "e", "alpha_r", "penetration", "penetration_rm",
+    "block_loss_first_contact"};
+const int gw_layer_results_nrequired =
+    (int)(sizeof gw_layer_results_required / sizeof gw_layer_results_required[0]);
+
+void gw_layer_results_free(gw_layer_results *t)
+{
+    if (!t)
+        return;
+    for (int i = 0; i < t->ngrid; i++)
+        free(t->grid_name[i]);
+    for (int i = 0; i < t->ncols; i++)
+        free(t->col_name ? t->col_name[i] : NULL);
+    free(t->col_name);
+    if (t->grid_value)
+        for (long i = 0; i < t->nrows * t->ngrid; i++)
+            free(t->grid_value[i]);
+    free(t->grid_value);
+    free(t->grid_num);
+    free(t->val);
+    free(t->case_id);
+    for (int i = 0; i < t->nparams; i++) {
+        free(t->param_name[i]);
+        free(t->param_value[i]);
+    }
+    memset(t, 0, sizeof *t);
+}
+
+static char *trim(char *s)
+{
+    while (*s == ' ' || *s == '\t')
+        s++;
+    size_t n = strlen(s);
+    while (n > 0 && (s[n - 1] == ' ' || s[n - 1] == '\t' || s[n - 1] == '\r'))
+        s[--n] = '\0';
+    return s;
+}
+
+/* Split line in place at commas into at most max cells; returns the count
+ * (max + 1 when there are more). */
+static int split(char *line, char **cells, int max)
+{
+    int n = 0;
+    for (char *p = line;;) {
+        char *c = strchr(p, ',');
+        if (c)
+            *c = '\0';
+        if (n < max)
+            cells[n] = trim(p);
+        n++;
+        if (!c || n > max)
+            return n;
+        p = c + 1;
+    }
+}
+
+/* A whole cell as a double; nan and inf are accepted. */
+static int cell_number(const char *s, double *v)
+{
+    if (!*s)
+        return 0;
+    char *end;
+    errno = 0;
+    *v = strtod(s, &end);
+    return *end == '\0' && !(errno == ERANGE && fabs(*v) > 1);
+}
+
+static int add_param(gw_layer_results *t, char *text)
+{
+    char *eq = strchr(text, '=');
+    if (!eq || t->nparams >= GW_LAYER_RESULTS_MAX_KEYS)
+        return GW_OK; /* other comments carry no parameter */
+    *eq = '\0';
+    char *name = trim(text), *value = trim(eq + 1);
+    if (!*name)
+        return GW_OK;
+    t->param_name[t->nparams] = strdup(name);
+    t->param_value[t->nparams] = strdup(value);
+    if (!t->param_name[t->nparams] || !t->param_value[t->nparams]) {
+        free(t->param_name[t->nparams]);
+        free(t->param_value[t->nparams]);
+        return GW_ENOMEM;
+    }
+    t->nparams++;
+    return GW_OK;
+}
+
+static int parse_header(gw_layer_results *t, char *line, long ln, int *ncells, gw_err *err)
+{
+    char *cells[GW_LAYER_RESULTS_MAX_KEYS + 256];
+    const int max = (int)(sizeof cells / sizeof cells[0]);
+    int n = split(line, cells, max);
+    if (n > max)
+        return gw_err_set(err, GW_EFORMAT, "%s:%ld: more than %d columns", t->path, ln, max);
+    if (strcmp(cells[0], "case") != 0)
+        return gw_err_set(err, GW_EFORMAT, "%s:%ld: header must start with 'case' (a sweep results table)",
+                          t->path, ln);
+    int xi = -1;
+    for (int i = 1; i < n && xi < 0; i++)
+        if (strcmp(cells[i], "x_impact") == 0)
+            xi = i;
+    if (xi < 0)
+        return gw_err_set(err, GW_EFORMAT, "%s:%ld: header has no column 'x_impact' (not a layer sweep table)",
+                          t->path, ln);
+    if (xi - 1 > GW_LAYER_RESULTS_MAX_KEYS)
+        return gw_err_set(err, GW_EFORMAT, "%s:%ld: more than %d grid keys", t->path, ln,
+                          GW_LAYER_RESULTS_MAX_KEYS);
+    for (int i = 0; i < n; i++) {
+        if (!*cells[i])
+            return gw_err_set(err, GW_EFORMAT, "%s:%ld: header column %d is empty", t->path, ln, i + 1);
+        for (int j = 0; j < i; j++)
+            if (strcmp(cells[i], cells[j]) == 0)
+                return gw_err_set(err, GW_EFORMAT, "%s:%ld: header column '%s' appears twice", t->path,
+                                  ln, cells[i]);
+    }
+    t->ngrid = xi - 1;
+    t->ncols = n - xi;
+    t->col_name = calloc((size_t)t->ncols, sizeof *t->col_name);
+    if (!t->col_name)
+        return gw_err_set(err, GW_ENOMEM, "%s: out of memory", t->path);
+    for (int i = 1; i < n; i++) {
+        char *s = strdup(cells[i]);
+        if (!s)
+            return gw_err_set(err, GW_ENOMEM, "%s: out of memory", t->path);
+        if (i < xi)
+            t->grid_name[i - 1] = s;
+        else
+            t->col_name[i - xi] = s;
+    }
+    for (int k = 0; k < gw_layer_results_nrequired; k++)
+        if (gw_layer_results_col(t, gw_layer_results_required[k]) < 0)
+            return gw_err_set(err, GW_EFORMAT, "%s:%ld: header has no column '%s' (a layer sweep table is required)",
+                              t->path, ln, gw_layer_results_required[k]);
+    *ncells = n;
+    return GW_OK;
+}
+
+static int grow(gw_layer_results *t, long *cap)
+{
+    long nc = *cap ? 2 * *cap : 64;
+    long *ci = realloc(t->case_id, (size_t)nc * sizeof *ci);
+    if (ci)
+        t->case_id = ci;
+    char **gv = realloc(t->grid_value, (size_t)(nc * t->ngrid + 1) * sizeof *gv);
+    if (gv)
+        t->grid_value = gv;
+    double *gn = realloc(t->grid_num, (size_t)(nc * t->ngrid + 1) * sizeof *gn);
+    if (gn)
+        t->grid_num = gn;
+    double *v = realloc(t->val, (size_t)(nc * t->ncols) * sizeof *v);
+    if (v)
+        t->val = v;
+    if (!ci || !gv || !gn || !v)
+        return GW_ENOMEM;
+    *cap = nc;
+    return GW_OK;
+}
+
+static int parse_row(gw_layer_results *t, char *line, long ln, int ncells, int cb, gw_err *err)
+{
+    char *cells[GW_LAYER_RESULTS_MAX_KEYS + 256];
+    int n = split(line, cells, ncells);
+    if (n != ncells)
+        return gw_err_set(err, GW_EFORMAT, "%s:%ld: %s%d cells, header has %d", t->path, ln,
+                          n > ncells ? "more than " : "", n > ncells ? ncells : n, ncells);
+    long r = t->nrows;
+    char *end;
+    errno = 0;
+    long k = strtol(cells[0], &end, 10);
+    if (!*cells[0] || *end || errno || k < 0)
+        return gw_err_set(err, GW_EFORMAT, "%s:%ld: case '%s' is not a case number", t->path, ln, cells[0]);
+    t->case_id[r] = k;
+    for (int i = 0; i < t->ngrid; i++) {
+        if (!*cells[1 + i])
+            return gw_err_set(err, GW_EFORMAT, "%s:%ld: grid key %s: empty cell", t->path, ln, t->grid_name[i]);
+        double v;
+        t->grid_num[r * t->ngrid + i] = cell_number(cells[1 + i], &v) && isfinite(v) ? v : NAN;
+        t->grid_value[r * t->ngrid + i] = NULL;
+    }
+    for (int i = 0; i < t->ncols; i++) {
+        double v;
+        const char *c = cells[1 + t->ngrid + i];
+        if (!cell_number(c, &v))
+            return gw_err_set(err, GW_EFORMAT, "%s:%ld: column %s: '%s' is not a number", t->path, ln,
+                              t->col_name[i], c);
+        if (i == cb && !(v == 0 || v == 1 || isnan(v)))
+            return gw_err_set(err, GW_EFORMAT, "%s:%ld: column bounced: '%s' is not 0 or 1", t->path, ln, c);
+        t->val[r * t->ncols + i] = v;
+    }
+    /* strings last, so that a refused row leaves nothing half-owned */
+    for (int i = 0; i < t->ngrid; i++)
+        if (!(t->grid_value[r * t->ngrid + i] = strdup(cells[1 + i]))) {
+            for (int j = 0; j < i; j++)
+                free(t->grid_value[r * t->ngrid + j]);
+            return gw_err_set(err, GW_ENOMEM, "%s: out of memory", t->path);
+        }
+    t->nrows++;
+    return GW_OK;
+}
+
+int gw_layer_results_parse(const char *text, const char *name, gw_layer_results *t, gw_err *err)
+{
+    memset(t, 0, sizeof *t);
+    snprintf(t->path, sizeof t->path, "%s", name);
+    char *buf = strdup(text);
+    if (!buf)
+        return gw_err_set(err, GW_ENOMEM, "%s: out of memory", name);
+    int rc = GW_OK, ncells = 0, cb = -1;
+    long ln = 0, cap = 0, header_line = 0;
+    for (char *p = buf, *next; p && rc == GW_OK; p = next) {
+        next = strchr(p, '\n');
+        if (next)
+            *next++ = '\0';
+        ln++;
+        char *line = trim(p);
+        if (!*line)
+            continue;
+        if (*line == '#') {
+            line = trim(line + 1);
+            if (!header_line && strncmp(line, "param ", 6) == 0 && add_param(t, line + 6) != GW_OK)
+                rc = gw_err_set(err, GW_ENOMEM, "%s: out of memory", name);
+            continue;
+        }
+        if (!header_line) {
+            header_line = ln;
+            rc = parse_header(t, line, ln, &ncells, err);
+            cb = gw_layer_results_col(t, "bounced");
+            continue;
+        }
+        if (t->nrows == cap && grow(t, &cap) != GW_OK)
+            rc = gw_err_set(err, GW_ENOMEM, "%s: out of memory", name);
+        else
+            rc = parse_row(t, line, ln, ncells, cb, err);
+    }
+    free(buf);
+    if (rc == GW_OK && !header_line)
+        rc = gw_err_set(err, GW_EFORMAT, "%s:%ld: no header line (an empty table)", name, ln);
+    else if (rc == GW_OK && t->nrows == 0)
+        rc = gw_err_set(err, GW_EFORMAT, "%s:%ld: no data rows after the header", name, header_line);
+    if (rc != GW_OK)
+        gw_layer_results_free(t);
+    return rc;
+}
+
+int gw_layer_results_read(const char *path, gw_layer_results *t, gw_err *err)
+{
+    memset(t, 0, sizeof *t);
+    FILE *fp = fopen(path, "rb");
+    if (!fp)
+        return gw_err_set(err, GW_EIO, "%s: cannot open: %s", path, strerror(errno));
+    size_t cap = 1 << 16, len = 0;
+    char *buf = malloc(cap);
+    int rc = GW_OK;
+    while (buf) {
+        len += fread(buf + len, 1, cap - 1 - len, fp);
+        if (len < cap - 1)
+            break;
+        char *nb = realloc(buf, 2 * cap);
+        if (!nb) {
+            free(buf);
+            buf = NULL;
+            break;
+        }
+        buf = nb;
+        cap *= 2;
+    }
+    if (!buf)
+        rc = gw_err_set(err, GW_ENOMEM, "%s: out of memory", path);
+    else if (ferror(fp))
+        rc = gw_err_set(err, GW_EIO, "%s: read error", path);
+    else if (memchr(buf, '\0', len))
+        rc = gw_err_set(err, GW_EFORMAT, "%s:1: binary data (NUL byte), not a CSV table", path);
+    fclose(fp);
+    if (rc == GW_OK) {
+        buf[len] = '\0';
+        rc = gw_layer_results_parse(buf, path, t, err);
+    }
+    free(buf);
+    return rc;
+}
+
+int gw_layer_results_col(const gw_layer_results *t, const char *name)
+{
+    for (int i = 0; i < t->ncols; i++)
+        if (strcmp(t->col_name[i], name) == 0)
+            return i;
+    return -1;
+}
+
+int gw_layer_results_key(const gw_layer_results *t, const char *name)
+{
+    for (int i = 0; i < t->ngrid; i++)
+        if (strcmp(t->grid_name[i], name) == 0)
+            return i;
+    return -1;
+}
+
+const char *gw_layer_results_param(const gw_layer_results *t, const char *name)
+{
+    for (int i = 0; i < t->nparams; i++)
+        if (strcmp(t->param_name[i], name) == 0)
+            return t->param_value[i];
+    return NULL;
+}
+
+double gw_layer_results_value(const gw_layer_results *t, long i, const char *name, double dflt)
+{
+    int k = gw_layer_results_key(t, name);
+    if (k >= 0)
+        return t->grid_num[i * t->ngrid + k];
+    const char *s = gw_layer_results_param(t, name);
+    double v;
+    if (s && cell_number(s, &v))
+        return v;
+    return dflt;
+}
+
+/* ------------------------------------------------------------- statistics --- */
+
+void gw_layer_moment_of(const double *v, int n, gw_layer_moment *m)
+{
+    double s = 0;
+    int k = 0;
+    for (int i = 0; i < n; i++)
+        if (isfinite(v[i])) {
+            s += v[i];
+            k++;
+        }
+    m->n = k;
+    m->mean = k ? s / k : NAN;
+    double ss = 0; /* two-pass: no cancellation in the variance */
+    for (int i = 0; i < n; i++)
+        if (isfinite(v[i]))
+            ss += (v[i] - m->mean) * (v[i] - m->mean);
+    m->std = k > 1 ? sqrt(ss / (k - 1)) : NAN;
+}
+
+typedef struct row_key {
+    const char *key;
+    double point;
+    long case_id, row;
+} row_key;
+
+static int cmp_row_key(const void *a, const void *b)
+{
+    const row_key *x = a, *y = b;
+    int c = strcmp(x->key, y->key);
+    if (c)
+        return c;
+    int nx = isnan(x->point), ny = isnan(y->point);
+    if (nx != ny)
+        return nx - ny;
+    if (!nx && x->point != y->point)
+        return x->point < y->point ? -1 : 1;
+    return (x->case_id > y->case_id) - (x->case_id < y->case_id);
+}
+
+typedef struct group_ref {
+    long first_case;
+    gw_layer_group g;
+} group_ref;
+
+static int cmp_group_ref(const void *a, const void *b)
+{
+    const group_ref *x = a, *y = b;
+    return (x->first_case > y->first_case) - (x->first_case < y->first_case);
+}
+
+/* Order the groups by their first case (the config's grid order). */
+static int sort_groups(gw_layer_group *g, int n, const gw_layer_results *t)
+{
+    group_ref *ref = malloc((size_t)n * sizeof *ref);
+    if (!ref)
+        return GW_ENOMEM;
+    for (int i = 0; i < n; i++)
+        ref[i] = (group_ref){t->case_id[g[i].first], g[i]};
+    qsort(ref, (size_t)n, sizeof *ref, cmp_group_ref);
+    for (int i = 0; i < n; i++)
+        g[i] = ref[i].g;
+    free(ref);
+    return GW_OK;
+}
+
+static double cell(const gw_layer_results *t, long row, int col)
+{
+    return col >= 0 ? t->val[row * t->ncols + col] : NAN;
+}
+
+static int group_stats(const gw_layer_results *t, double criterion, gw_layer_group *g)
+{
+    const int cb = gw_layer_results_col(t, "bounced"), cen = gw_layer_results_col(t, "e_n"),
+              ce = gw_layer_results_col(t, "e"), ca = gw_layer_results_col(t, "alpha_r"),
+              cp = gw_layer_results_col(t, "penetration"),
+              cpr = gw_layer_results_col(t, "penetration_rm"),
+              cl = gw_layer_results_col(t, "block_loss_first_contact"),
+              cd = gw_layer_results_col(t, "dissipated_first_contact"),
+              cee = gw_layer_results_col(t, "energy_error");
+    int n = g->n;
+    double *w = malloc(7 * (size_t)n * sizeof *w);
+    g->run_e_n = malloc(3 * (size_t)n * sizeof *g->run_e_n);
+    if (!w || !g->run_e_n) {
+        free(w);
+        return GW_ENOMEM;
+    }
+    g->run_e = g->run_e_n + n;
+    g->run_share = g->run_e + n;
+    double *en = w, *e = w + n, *al = w + 2 * n, *pen = w + 3 * n, *penrm = w + 4 * n,
+           *loss = w + 5 * n, *dis = w + 6 * n;
+    double sen = 0, se = 0;
+    int nen = 0, ne = 0;
+    g->n_valid = g->n_bounced = 0;
+    g->energy_error_max = NAN;
+    for (int k = 0; k < n; k++) {
+        long r = g->rows[k];
+        double b = cell(t, r, cb);
+        int bounced = b == 1;
+        g->n_valid += !isnan(b);
+        g->n_bounced += bounced;
+        en[k] = bounced ? cell(t, r, cen) : NAN;
+        e[k] = bounced ? cell(t, r, ce) : NAN;
+        al[k] = bounced ? cell(t, r, ca) : NAN;
+        pen[k] = cell(t, r, cp);
+        penrm[k] = cell(t, r, cpr);
+        loss[k] = cell(t, r, cl);
+        dis[k] = cell(t, r, cd);
+        double ee = cell(t, r, cee);
+        if (isfinite(ee) && !(ee <= g->energy_error_max))
+            g->energy_error_max = ee;
+        if (isfinite(en[k])) {
+            sen += en[k];
+            nen++;
+        }
+        if (isfinite(e[k])) {
+            se += e[k];
+            ne++;
+        }
+        g->run_e_n[k] = nen ? sen / nen : NAN;
+        g->run_e[k] = ne ? se / ne : NAN;
+        g->run_share[k] = g->n_valid ? (double)g->n_bounced / g->n_valid : NAN;
+    }
+    g->share = g->n_valid ? (double)g->n_bounced / g->n_valid : NAN;
+    g->bouncing = g->share >= criterion;
+    gw_layer_moment_of(en, n, &g->e_n);
+    gw_layer_moment_of(e, n, &g->e);
+    gw_layer_moment_of(al, n, &g->alpha_r);
+    gw_layer_moment_of(pen, n, &g->penetration);
+    gw_layer_moment_of(penrm, n, &g->penetration_rm);
+    gw_layer_moment_of(loss, n, &g->block_loss);
+    gw_layer_moment_of(dis, n, &g->dissipated);
+    /* stable from k on: every running mean from k to n within 5 % of the last */
+    double fin = g->run_e[n - 1];
+    g->k_stable_e = 0;
+    if (isfinite(fin) && fin != 0) {
+        int k = n;
+        while (k > 1 && fabs(g->run_e[k - 2] - fin) <= 0.05 * fabs(fin))
+            k--;
+        g->k_stable_e = k;
+    }
+    free(w);
+    return GW_OK;
+}
+
+void gw_layer_groups_free(gw_layer_groups *gs)
+{
+    if (!gs)
+        return;
+    for (int i = 0; i < gs->n; i++) {
+        free(gs->g[i].rows);
+        free(gs->g[i].run_e_n);
+    }
+    free(gs->g);
+    memset(gs, 0, sizeof *gs);
+}
+
+/* The group key of row r: its grouping grid values joined by '\x1f'. */
+static char *row_key_string(const gw_layer_results *t, const gw_layer_groups *gs, long r)
+{
+    size_t len = 1;
+    for (int k = 0; k < gs->nkeys; k++)
+        len += strlen(t->grid_value[r * t->ngrid + gs->key[k]]) + 1;
+    char *s = malloc(len), *p = s;
+    for (int k = 0; s && k < gs->nkeys; k++)
+        p += sprintf(p, "%s\x1f", t->grid_value[r * t->ngrid + gs->key[k]]);
+    if (s)
+        *p = '\0';
+    return s;
+}
+
+int gw_layer_groups_make(const gw_layer_results *t, double criterion, gw_layer_groups *gs,
+                         gw_err *err)
+{
+    memset(gs, 0, sizeof *gs);
+    if (!(criterion > 0 && criterion <= 1))
+        return gw_err_set(err, GW_EINVAL, "--criterion: %g is not in (0, 1]", criterion);
+    gs->criterion = criterion;
+    gs->point_key = gw_layer_results_key(t, "point");
+    for (int k = 0; k < t->ngrid; k++)
+        if (k != gs->point_key)
+            gs->key[gs->nkeys++] = k;
+    row_key *rk = calloc((size_t)t->nrows, sizeof *rk);
+    gs->g = calloc((size_t)t->nrows, sizeof *gs->g);
+    int rc = rk && gs->g ? GW_OK : GW_ENOMEM;
+    for (long r = 0; rc == GW_OK && r < t->nrows; r++) {
+        rk[r] = (row_key){row_key_string(t, gs, r),
+                          gs->point_key >= 0 ? t->grid_num[r * t->ngrid + gs->point_key] : NAN,
+                          t->case_id[r], r};
+        if (!rk[r].key)
+            rc = GW_ENOMEM;
+    }
+    if (rc == GW_OK)
+        qsort(rk, (size_t)t->nrows, sizeof *rk, cmp_row_key);
+    for (long a = 0, b; rc == GW_OK && a < t->nrows; a = b) {
+        for (b = a + 1; b < t->nrows && strcmp(rk[b].key, rk[a].key) == 0; b++)
+            ;
+        gw_layer_group *g = &gs->g[gs->n++];
+        g->n = (int)(b - a);
+        g->rows = malloc((size_t)g->n * sizeof *g->rows);
+        if (!g->rows) {
+            rc = GW_ENOMEM;
+            break;
+        }
+        g->first = rk[a].row;
+        for (long i = a; i < b; i++) {
+            g->rows[i - a] = rk[i].row;
+            if (t->case_id[rk[i].row] < t->case_id[g->first])
+                g->first = rk[i].row;
+        }
+        rc = group_stats(t, criterion, g);
+    }
+    for (long r = 0; rk && r < t->nrows; r++)
+        free((void *)rk[r].key);
+    free(rk);
+    if (rc == GW_OK)
+        rc = sort_groups(gs->g, gs->n, t);
+    if (rc != GW_OK) {
+        gw_layer_groups_free(gs);
+        return gw_err_set(err, rc, "%s: out of memory", t->path);
+    }
+    return GW_OK;
+}
+
+double gw_layer_binary_loss(double r, int sphere)
+{
+    double m = sphere ? r * r * r : r * r;
+    return 4 * m / ((1 + m) * (1 + m));
+}

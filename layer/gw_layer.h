@@ -178,20 +178,40 @@ typedef struct gw_layer_sample {
 
 void gw_layer_sample_free(gw_layer_sample *s);
 
-/* Text sample format (version 1), one record per line, '#' starts a comment:
+/* Text sample format (version 1), one record per line (LF or CRLF), '#' starts
+ * a comment line, blank lines are skipped, lines other than comments are at
+ * most 1024 characters:
  *   granwave-layer-sample 1
- *   width W          (m)
- *   rm R             (m)
- *   volume_ratio V
- *   porosity P
- *   seed S
- *   mass_law disc|sphere
- *   n N
- * then N lines "x y r" (m). Read checks every field (finite, r > 0, inside the
- * box, n lines); GW_EFORMAT/GW_EIO naming the file and line otherwise. */
+ *   width W          (m, > 0; required)
+ *   rm R             (m, > 0; required)
+ *   volume_ratio V   (>= 1; 0 when absent = unknown)
+ *   porosity P       (in [0, 1])
+ *   seed S           (integer)
+ *   mass_law disc|sphere   [disc]
+ *   n N              (integer in [1, 1e7]; last header line)
+ * then N lines "x y r" (m), each key at most once, nothing after the value.
+ * HDF5 sample (format version 1, builds with HDF5): root attributes format =
+ * "granwave-layer-sample", format_version = 1, granwave_version, width, rm,
+ * volume_ratio, porosity (double), seed (integer), mass_law ("disc"/"sphere"),
+ * n (integer), units and header (strings); datasets x, y, r of n doubles (m).
+ *
+ * Write: HDF5 when path ends in .h5 or .hdf5 (GW_EUNSUPPORTED in a build
+ * without HDF5), text otherwise; atomically (temporary name, then rename).
+ * GW_EINVAL (nothing written) when s fails the reader's checks; header (may be
+ * NULL) goes into comment lines / the "header" attribute.
+ * Read: the format is told by content (HDF5 signature), not by name. Every field
+ * is checked the same way in both formats: finite, r > 0, inside the box
+ * (0 <= x <= width, y >= 0, up to 0.02 r), n within limits and matching the
+ * data. GW_EFORMAT (GW_EIO: unreadable; GW_EUNSUPPORTED: HDF5 file in a build
+ * without HDF5) with a message naming the file and the line or particle; s is
+ * then empty (safe to free). HDF5's own error printing is silenced during both
+ * calls (its handler is process-wide: not thread-safe). */
 int gw_layer_sample_write(const gw_layer_sample *s, const char *path, const char *header,
                           gw_err *err);
 int gw_layer_sample_read(const char *path, gw_layer_sample *s, gw_err *err);
+/* GW_EUNSUPPORTED when path asks for HDF5 (.h5, .hdf5) and this build has no
+ * HDF5: lets a command refuse before a long run. GW_OK otherwise. */
+int gw_layer_sample_format_check(const char *path, gw_err *err);
 
 /* Pluviation (physics.md 2.2). */
 typedef struct gw_layer_make_params {
@@ -205,6 +225,9 @@ typedef struct gw_layer_make_params {
     double damping;        /* Hunt-Crossley alpha while settling, s/m [0.3] */
     double modulus_factor; /* settle with G * factor, then relax with true G [1] */
     double dt;             /* RK4 step, s [2e-5] */
+    double height_rm;      /* > 0: after settling keep only the particles lying
+                              wholly below height_rm R_m (the box height H of
+                              physics.md 2.2) [0 = keep all] */
 } gw_layer_make_params;
 
 gw_layer_make_params gw_layer_make_params_default(void);
@@ -217,6 +240,7 @@ typedef struct gw_layer_make_result {
     int converged;        /* kinetic energy went below the threshold */
     double wall_ms;
     long steps, rebuilds;
+    int n_removed;        /* particles above height_rm R_m taken away */
 } gw_layer_make_result;
 
 /* Pluviate a sample (lp: material, friction; width and mass law are taken from
@@ -245,6 +269,8 @@ typedef struct gw_layer_impact_params {
     int nrings;         /* crowns [12] */
     int full;           /* 1: run to t_max even after the block has left [0] */
     int remove_walls;   /* 1: no left/right/bottom walls from the impact on [0] */
+    double energy_tol;  /* > 0: stop with GW_ESOLVER when the ledger closure
+                           |sum - A|/A exceeds it at a sample [0 = off] */
 } gw_layer_impact_params;
 
 gw_layer_impact_params gw_layer_impact_params_default(void);

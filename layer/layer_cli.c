@@ -69,6 +69,7 @@ int layer_impact_options(layer_impact_cli *c, gw_opt *o)
     o[i++] = OPT_D("dt", &c->dt, "DT", "RK4 step, s [1e-6]", 0, 1, 1);
     o[i++] = OPT_D("rtol", &c->rtol, "R", "relative tolerance of cvode/arkode [1e-8]", 0, 1, 1);
     o[i++] = OPT_D("atol", &c->atol, "A", "absolute tolerance (scaled per component) [1e-8]", 0, 1, 1);
+    o[i++] = OPT_D("energy-tol", &c->ip.energy_tol, "E", "stop (exit 1) when the ledger closure |sum - A|/A exceeds E [0 = off]", -INFINITY, INFINITY, 0);
     o[i++] = (gw_opt){.name = "remove-walls", .kind = GW_OPT_FLAG, .dest = &c->ip.remove_walls, .help = "take the left, right and bottom walls away at the start of the impact"};
     o[i++] = (gw_opt){.name = "full", .kind = GW_OPT_FLAG, .dest = &c->ip.full, .help = "run to t-max even after the block has left (for the crowns)"};
     return i;

@@ -50,7 +50,7 @@ typedef struct layer_impact_cli {
 } layer_impact_cli;
 
 /* Number of options layer_impact_options writes (materials included). */
-#define LAYER_IMPACT_NOPTS (LAYER_MAT_NOPTS + 18)
+#define LAYER_IMPACT_NOPTS (LAYER_MAT_NOPTS + 19)
 
 /* Zero c, fill the defaults and write the impact option table (materials,
  * sample, block, run, solver, flags remove-walls and full) into

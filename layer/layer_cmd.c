@@ -78,6 +78,7 @@ int gw_cmd_layer_make(int argc, char **argv)
     o[i++] = OPT_D("damping", &mp.damping, "A", "Hunt-Crossley alpha while settling, s/m [0.3]", 0, 1e3, 0);
     o[i++] = OPT_D("modulus-factor", &mp.modulus_factor, "F", "settle with F*G then relax with G [1]", 0, 1, 1);
     o[i++] = OPT_D("dt", &mp.dt, "DT", "RK4 step, s [2e-5]", 0, 1, 1);
+    o[i++] = OPT_D("height-rm", &mp.height_rm, "H", "keep the particles wholly below H R_m after settling [0 = all]", 0, 1e6, 0);
     o[i++] = OPT_S("out", &out, "FILE", "sample file to write (required)");
     o[i++] = (gw_opt){.name = "json", .kind = GW_OPT_FLAG, .dest = &json, .help = "print the result as JSON"};
     o[i] = (gw_opt){0};
@@ -127,6 +128,7 @@ int gw_cmd_layer_make(int argc, char **argv)
         cJSON_AddStringToObject(j, "version", gw_version());
         cJSON_AddStringToObject(j, "sample", out);
         cJSON_AddNumberToObject(j, "n", s.n);
+        cJSON_AddNumberToObject(j, "n_removed_above_height", r.n_removed);
         cJSON_AddNumberToObject(j, "porosity", r.porosity);
         cJSON_AddNumberToObject(j, "height", h);
         cJSON_AddNumberToObject(j, "height_rm", h / mp.rm);
@@ -148,12 +150,15 @@ int gw_cmd_layer_make(int argc, char **argv)
         cJSON_AddNumberToObject(st, "modulus_factor", mp.modulus_factor);
         cJSON_AddStringToObject(st, "solver", "rk4 (contact events not located while settling)");
         cJSON_AddNumberToObject(st, "dt", mp.dt);
+        cJSON_AddNumberToObject(st, "height_rm", mp.height_rm);
         cJSON_AddItemToObject(st, "material", mat_json(&m.lp));
         gw_json_print(j, stdout);
         cJSON_Delete(j);
     } else {
         printf("granwave %s layer-make: %d particles, porosity %.4f, height %.3f m (%.2f R_m)\n",
                gw_version(), s.n, r.porosity, h, h / mp.rm);
+        if (r.n_removed > 0)
+            printf("  %d particles above %g R_m removed after settling\n", r.n_removed, mp.height_rm);
         printf("  settled in %.3g s simulated (%s), E_k = %.3g J, max overlap %.3g R_p\n", r.t_settle,
                r.converged ? "converged" : "NOT converged: t-max reached", r.ke_final, r.max_overlap);
         printf("  mass law %s; settling: Hunt-Crossley alpha %g s/m, modulus factor %g; RK4 dt %g s\n",

@@ -78,7 +78,8 @@ int gw_layer_impact_check(const gw_layer_sample *smp, const gw_layer_impact_para
         (rc = gw_check_range(p->height_rm, "height-rm", 0, 1e6, err)) != GW_OK ||
         (rc = gw_check_positive(p->t_max, "t-max (s)", err)) != GW_OK ||
         (rc = gw_check_positive(p->dt_out, "dt-out (s)", err)) != GW_OK ||
-        (rc = gw_check_range(p->ring_width, "ring-width (m)", 0, 1e6, err)) != GW_OK)
+        (rc = gw_check_range(p->ring_width, "ring-width (m)", 0, 1e6, err)) != GW_OK ||
+        (rc = gw_check_range(p->energy_tol, "energy-tol", 0, 1, err)) != GW_OK)
         return rc;
     if (p->nrings < 1 || p->nrings > 1000)
         return gw_err_set(err, GW_EINVAL, "rings: %d is outside [1, 1000]", p->nrings);
@@ -252,6 +253,15 @@ int gw_layer_impact(const gw_layer_sample *smp, const gw_layer_params *lp0,
         if (rc != GW_OK)
             break;
         double vy = record(res, L, n, w, strain0);
+        if (ip->energy_tol > 0 && res->energy_error > ip->energy_tol) {
+            double sb[6];
+            gw_layer_particle(L, n, sb);
+            rc = gw_err_set(err, GW_ESOLVER, "energy monitor: ledger closure %.3g exceeds energy-tol %g "
+                            "at t = %.9g s (block at (%.6g, %.6g) m, velocity (%.6g, %.6g) m/s); "
+                            "reduce dt or the tolerances", res->energy_error, ip->energy_tol, tk,
+                            sb[0], sb[1], sb[3], sb[4]);
+            break;
+        }
         double ov = target_overlap(L, n, target);
         const gw_layer_energy *le = &res->ledger[res->ns - 1];
         if (ov > 0) {
@@ -293,6 +303,16 @@ int gw_layer_impact(const gw_layer_sample *smp, const gw_layer_params *lp0,
             rc = gw_err_set(err, GW_EINVAL, "out: directory name too long");
         else
             rc = gw_layer_write_vtk(L, path, "granwave layer-impact t = t_end", err);
+    }
+    if (rc != GW_OK && rc != GW_EINVAL && vtk_dir && err) {
+        /* run failure: keep the state at failure beside the outputs already written */
+        char path[4096];
+        gw_err e2 = {{0}};
+        if (gw_path_join(path, sizeof path, vtk_dir, "snapshot_failure.vtk") == GW_OK &&
+            gw_layer_write_vtk(L, path, "granwave layer-impact: state at the failure", &e2) == GW_OK) {
+            size_t k = strlen(err->msg);
+            snprintf(err->msg + k, sizeof err->msg - k, "; state at failure in %s", path);
+        }
     }
     if (rc != GW_OK) {
         gw_layer_free(L);

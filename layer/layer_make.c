@@ -133,7 +133,7 @@ int gw_layer_make(const gw_layer_params *lp0, const gw_layer_make_params *m,
     lp.no_events = 1; /* a settling pile chatters: thousands of contact events/s */
     if ((rc = gw_layer_params_validate(&lp, err)) != GW_OK)
         return rc;
-    const int n = m->n;
+    int n = m->n;
     const double cv = cbrt(m->volume_ratio), rmin = 2 * m->rm / (1 + cv), rmax = cv * rmin;
     gw_layer_body *b = calloc((size_t)n, sizeof *b);
     if (!b)
@@ -174,6 +174,20 @@ int gw_layer_make(const gw_layer_params *lp0, const gw_layer_make_params *m,
         free(b);
         memset(out, 0, sizeof *out);
         return rc;
+    }
+    if (m->height_rm > 0) { /* trim to the box height: removing the top only unloads the rest */
+        int kept = 0;
+        for (int i = 0; i < n; i++)
+            if (b[i].y + b[i].r <= m->height_rm * m->rm)
+                b[kept++] = b[i];
+        if (kept == 0) {
+            free(b);
+            free(out->x);
+            memset(out, 0, sizeof *out);
+            return gw_err_set(err, GW_EINVAL, "height-rm: no particle lies below %g R_m", m->height_rm);
+        }
+        res->n_removed = n - kept;
+        n = kept;
     }
     out->y = out->x + n;
     out->r = out->x + 2 * n;

@@ -123,7 +123,9 @@ int gw_layer_advance(gw_layer *L, double tout, gw_err *err)
         int rc = gw_solver_advance(L->solver, target, &t, L->y, L->roots);
         if (rc != GW_OK && rc != GW_ROOT) {
             L->t = t;
-            return gw_err_set(err, rc, "layer: %s", gw_solver_error(L->solver));
+            return gw_err_set(err, rc, "layer: %s solver failed at t = %.9g s (%d particles, %d "
+                              "listed contacts): %s", gw_solver_type_name(L->type), t, L->n, L->nc,
+                              gw_solver_error(L->solver));
         }
         L->t = t;
         if (rc == GW_OK) {

@@ -24,6 +24,31 @@ check "layer-make deterministic for a seed (same particle lines)" \
 check "layer-make JSON has n = 60 and a porosity" \
   "python3 -c 'import json,sys; d=json.load(open(\"$tmp/make.json\")); sys.exit(0 if d[\"n\"]==60 and 0<d[\"porosity\"]<1 else 1)'"
 
+"$gw" layer-make --n 60 --width-rm 16 --seed 3 --height-rm 5 --out "$tmp/h.txt" --json > "$tmp/makeh.json"
+check "layer-make --height-rm 5: same settled sample cut at 5 R_m (every top <= 5 R_m, fewer particles, kept ones unchanged)" "python3 - '$tmp' <<'PY'
+import json, sys
+t = sys.argv[1]
+def parts(p):
+    out, head = [], True
+    for l in open(p):
+        if l.startswith('#'):
+            continue
+        f = l.split()
+        if head and f[0] == 'n':
+            head = False
+            continue
+        if not head:
+            out.append(tuple(f))
+    return out
+a, h = parts(t + '/a.txt'), parts(t + '/h.txt')
+d = json.load(open(t + '/makeh.json'))
+rm = 0.325
+ok = 0 < len(h) < len(a) and d['n'] == len(h) and d['n_removed_above_height'] == len(a) - len(h)
+ok = ok and all(float(y) + float(r) <= 5 * rm for x, y, r in h) and set(h) <= set(a)
+print('kept', len(h), 'of', len(a))
+sys.exit(0 if ok else 1)
+PY"
+
 "$gw" layer-impact --sample "$tmp/a.txt" --rb-rm 1 --vi 10 --alpha 30 --t-max 0.005 --json --out "$tmp/out" > "$tmp/imp.json"
 check "layer-impact exits 0" "[ $? -eq 0 ]"
 check "layer-impact JSON keys and closure <= 1e-4" "python3 - '$tmp/imp.json' <<'PY'
@@ -38,6 +63,11 @@ PY"
 for f in ledger.csv crowns.csv crowns_peaks.csv impact.json snapshot_0.vtk snapshot_end.vtk; do
   check "--out wrote $f" "[ -s '$tmp/out/$f' ]"
 done
+
+"$gw" layer-impact --sample "$tmp/a.txt" --rb-rm 1 --vi 10 --dt 3e-5 --energy-tol 1e-3 --out "$tmp/emon" > "$tmp/stdout" 2> "$tmp/stderr"
+rc=$?
+check "energy monitor: RK4 at 30 us breaks the 1e-3 closure -> exit 1 naming the time; the state at failure kept as VTK, no half-written table (got $rc: $(cat "$tmp/stderr"))" \
+  "[ $rc -eq 1 ] && grep -q 'energy monitor: ledger closure .* exceeds energy-tol 0.001 at t = .*snapshot_failure.vtk' '$tmp/stderr' && grep -q '^POINTS' '$tmp/emon/snapshot_failure.vtk' && [ ! -e '$tmp/emon/ledger.csv' ] && [ ! -e '$tmp/emon/impact.json' ]"
 
 bad() { # name, expected word in the message, args...
   local name="$1" word="$2"; shift 2

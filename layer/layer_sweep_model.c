@@ -21,9 +21,10 @@
  * the cases ran. No wall-clock time in the row.
  *
  * The sample file is read for every case (and once more by the check pass),
- * with no cache: reading a 300-disc sample costs about 0.2 ms against seconds
- * for the impact itself (bench/README_layer.md), and no state is shared
- * between the sweep's threads.
+ * with no cache: parsing, reading and checking a case on the 300-disc sample
+ * takes 0.18 ms (`sweep --check` of 8000 cases in 1.4 s, bench/README_layer.md),
+ * 0.5 % of the cheapest impact measured (40 ms) and 0.004 % of the mean one
+ * (4.5 s); no state is shared between the sweep's threads.
  */
 #include <math.h>
 #include <stdlib.h>

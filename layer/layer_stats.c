@@ -308,10 +308,14 @@ static void print_text(const layer_stats_run *R)
         }
         printf("  diagram %d: %d crossings, R_crit %g (next %g), R_min %g, H_min %g\n", q, D->d.ncross,
                D->d.r_crit, D->d.r_crit_upper, D->d.r_min, D->d.h_min);
-        if (D->fit_ok)
-            printf("    B.31 fit: beta %.4g +- %.2g, a/b %.4g +- %.2g, tan gamma %.4g, offset %.4g, rms %.3g R_m\n",
-                   D->fit.p.beta, D->fit.err.beta, D->fit.p.a_over_b, D->fit.err.a_over_b, D->fit.p.tan_gamma,
-                   D->fit.p.offset, D->fit.rms);
+        if (D->fit_ok && D->fit.dof == 0)
+            printf("    B.31 fit: beta %.4g, a/b %.4g (as many points as free parameters: exact, no errors), "
+                   "tan gamma %.4g, offset %.4g\n", D->fit.p.beta, D->fit.p.a_over_b, D->fit.p.tan_gamma,
+                   D->fit.p.offset);
+        else if (D->fit_ok)
+            printf("    B.31 fit: beta %.4g +- %.2g, a/b %.4g +- %.2g, tan gamma %.4g, offset %.4g, rms %.3g R_m "
+                   "(%d dof)\n", D->fit.p.beta, D->fit.err.beta, D->fit.p.a_over_b, D->fit.err.a_over_b,
+                   D->fit.p.tan_gamma, D->fit.p.offset, D->fit.rms, D->fit.dof);
         else
             printf("    B.31 fit: not done: %s\n", D->fit_reason);
     }

@@ -12,6 +12,9 @@
 #    curve and the errors come from that scatter; beta_err < 0.5 keeps the
 #    check from being vacuous); every output file carries the version and
 #    the input path;
+#  - walls kept / removed are paired per rb-rm (flags written false/true),
+#    and the binary table holds per R_b/R_m the mean first-contact loss with
+#    the incidence of the "# param" line and the two closed forms;
 #  - a real tiny sweep (model layer, 2 R_b x 2 H x 3 points on a 40-disc
 #    sample) runs through layer-stats: the group shares and means of e over
 #    the bouncing points equal those recomputed in Python from results.csv.
@@ -108,6 +111,38 @@ bf = json.load(open(os.path.join(sys.argv[3], "boundary_fit.json")))
 if bf["version"] != version or bf["input"] != sys.argv[4] or bf["diagrams"][0]["fit"] != fit:
     bad.append("boundary_fit.json: version, input or fit differ")
 print("\n".join(bad) or "diagram ok: " + json.dumps({k: fit[k] for k in ("beta", "beta_err", "a_over_b", "a_over_b_err", "rms_residual")}))
+sys.exit(1 if bad else 0)
+PY
+
+# walls side by side and the binary check: rb-rm x remove-walls (false/true, as
+# the sweep model writes flags) x 2 points; block loss and bounces chosen by hand
+printf '# param alpha = 30\ncase,rb-rm,remove-walls,point,%s\n' "$COLS" >"$tmp/walls.csv"
+k=0
+for rb in 1 2; do for w in false true; do for p in 0 1; do
+    b=$([ "$w" = true ] && [ "$p" = 1 ] && echo 0 || echo 1)      # walls removed: 1 of 2 bounce
+    loss=$(echo "$rb $p" | awk '{print 0.1 * $1 + 0.2 * $2}')     # mean over a rb: 0.1 rb + 0.1
+    echo "$k,$rb,$w,$p,0,$b,0.5,0.6,10,20,10,12,0.1,0.3,0.001,$loss,1e-6,nan,0.01,100" >>"$tmp/walls.csv"
+    k=$((k+1))
+done; done; done
+"$GW" layer-stats "$tmp/walls.csv" --json >"$tmp/walls.json" 2>"$tmp/err" || ko "walls table: $(cat "$tmp/err")"
+$PY - "$tmp/walls.json" <<'PY' && ok "walls paired (kept vs removed) per rb-rm; binary loss per R_b/R_m at alpha 30 beside 4r^2/(1+r^2)^2, 4r^3/(1+r^3)^2" || ko "walls / binary"
+import json, sys
+j = json.load(open(sys.argv[1]))
+bad = []
+w = j["walls"]
+if len(w) != 2 or [p["keys"] for p in w] != [{"rb-rm": 1}, {"rb-rm": 2}]:
+    bad.append("pairs %s" % [p["keys"] for p in w])
+for p in w:
+    if p["walls"]["bounce_share"] != 1 or p["walls_removed"]["bounce_share"] != 0.5 or p["walls_removed"]["bouncing"]:
+        bad.append("shares %s" % p)
+b = {x["rb_rm"]: x for x in j["binary"]}
+for r in (1, 2):
+    x = b.get(r)
+    if not x or x["alpha"] != 30 or x["block_loss_first_contact"]["n"] != 4 \
+            or abs(x["block_loss_first_contact"]["mean"] - (0.1 * r + 0.1)) > 1e-12 \
+            or abs(x["binary_disc"] - 4 * r**2 / (1 + r**2)**2) > 1e-15 or abs(x["binary_sphere"] - 4 * r**3 / (1 + r**3)**2) > 1e-15:
+        bad.append("binary %s" % x)
+print("\n".join(bad))
 sys.exit(1 if bad else 0)
 PY
 

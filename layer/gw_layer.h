@@ -204,8 +204,10 @@ void gw_layer_sample_free(gw_layer_sample *s);
  * (0 <= x <= width, y >= 0, up to 0.02 r), n within limits and matching the
  * data. GW_EFORMAT (GW_EIO: unreadable; GW_EUNSUPPORTED: HDF5 file in a build
  * without HDF5) with a message naming the file and the line or particle; s is
- * then empty (safe to free). HDF5's own error printing is silenced during both
- * calls (its handler is process-wide: not thread-safe). */
+ * then empty (safe to free). HDF5 files are opened only in the 1.8 format or
+ * later (metadata checksums; libhdf5 can crash on corrupt files without them).
+ * HDF5's own error printing is silenced during both calls and stays off after
+ * a failed HDF5 read (its handler is process-wide: not thread-safe). */
 int gw_layer_sample_write(const gw_layer_sample *s, const char *path, const char *header,
                           gw_err *err);
 int gw_layer_sample_read(const char *path, gw_layer_sample *s, gw_err *err);

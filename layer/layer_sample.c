@@ -1,22 +1,37 @@
 /*
- * layer_sample.c: the text sample format of pluviated layers (physics.md 2.2)
- * and its porosity.
+ * layer_sample.c: the sample files of pluviated layers (physics.md 2.2), text
+ * (format version 1) and HDF5, and the sample porosity.
  *
- * Format (version 1), documented in gw_layer.h: "key value" header lines, then
- * "n N" and N lines "x y r" in metres. '#' starts a comment line (the writer
- * puts the program version and the command line there). The reader rejects
- * anything else with the file name and line number.
+ * Text format, documented in gw_layer.h: a magic line, "key value" header lines,
+ * then "n N" and N lines "x y r" in metres. '#' starts a comment line (the
+ * writer puts the program version and the command line there). Lines end in LF
+ * or CRLF. The reader refuses anything else with the file name and line number.
+ * HDF5 format (when built with HDF5): datasets x, y, r [n] (m) and the header
+ * as attributes of the root group (see gw_layer.h). The reader tells the two
+ * apart by the HDF5 signature, not by the file name, and checks the fields of
+ * both with the same functions (check_header, check_particle).
  * Porosity: 1 - (solid area / window area) in the window x in [0.1, 0.9] W,
  * y in [0.1, 0.8] h, h = max(y + r), sampled on a 600 x 600 grid (the wall and
  * free-surface layers are excluded; sampling error ~1e-3).
  * Units: SI (m).
  */
 #include <errno.h>
+#include <limits.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#include <strings.h>
 
 #include "gw_layer.h"
+#if GW_HAVE_HDF5
+#include <hdf5.h>
+#endif
+
+#define SAMPLE_NMAX 10000000L /* 240 MB of coordinates */
+#define SAMPLE_LINE_MAX 1024  /* longest header or particle line; comments may be longer */
+#define SAMPLE_MAGIC "granwave-layer-sample"
+
+static const unsigned char h5_signature[8] = {0x89, 'H', 'D', 'F', '\r', '\n', 0x1a, '\n'};
 
 void gw_layer_sample_free(gw_layer_sample *s)
 {
@@ -27,158 +42,699 @@ void gw_layer_sample_free(gw_layer_sample *s)
     s->n = 0;
 }
 
-int gw_layer_sample_write(const gw_layer_sample *s, const char *path, const char *header,
-                          gw_err *err)
+/* ------------------------------------------------------------ checks ---- */
+
+/* Up to 40 characters of untrusted text for a message, non-printables as '?'. */
+static const char *shown(const char *s, char out[48])
+{
+    size_t i = 0;
+    for (; s[i] && i < 40; i++)
+        out[i] = (s[i] >= 0x20 && s[i] < 0x7f) ? s[i] : '?';
+    if (s[i]) {
+        out[i++] = '.', out[i++] = '.', out[i++] = '.';
+    }
+    out[i] = '\0';
+    return out;
+}
+
+/* The header fields every reader and the writers check: width and rm finite
+ * and positive, volume_ratio 0 (unknown) or >= 1, porosity in [0, 1]. */
+static int check_header(const gw_layer_sample *s, const char *path, int status, gw_err *err)
+{
+    if (!isfinite(s->width) || !(s->width > 0))
+        return gw_err_set(err, status, "sample '%s': width %g m must be finite and positive", path, s->width);
+    if (!isfinite(s->rm) || !(s->rm > 0))
+        return gw_err_set(err, status, "sample '%s': rm %g m must be finite and positive", path, s->rm);
+    if (!isfinite(s->volume_ratio) || (s->volume_ratio != 0 && !(s->volume_ratio >= 1)))
+        return gw_err_set(err, status, "sample '%s': volume_ratio %g must be >= 1", path, s->volume_ratio);
+    if (!(s->porosity >= 0 && s->porosity <= 1))
+        return gw_err_set(err, status, "sample '%s': porosity %g must be in [0, 1]", path, s->porosity);
+    if (s->mass_law != GW_LAYER_MASS_DISC && s->mass_law != GW_LAYER_MASS_SPHERE)
+        return gw_err_set(err, status, "sample '%s': unknown mass law %d", path, s->mass_law);
+    return GW_OK;
+}
+
+/* One particle: finite, r > 0, inside the box (0 <= x <= width, y >= 0) up to
+ * the 0.02 R overlap that settling under gravity leaves against the walls.
+ * where: "line 12" or "particle 3". */
+static int check_particle(double width, double x, double y, double r, const char *path,
+                          const char *where, int status, gw_err *err)
+{
+    if (!isfinite(x) || !isfinite(y) || !isfinite(r))
+        return gw_err_set(err, status, "sample '%s': %s: x, y, r must be finite numbers (got %g %g %g)",
+                          path, where, x, y, r);
+    if (!(r > 0))
+        return gw_err_set(err, status, "sample '%s': %s: radius %g m must be positive", path, where, r);
+    if (x - r < -2e-2 * r || x + r > width + 2e-2 * r || y - r < -2e-2 * r)
+        return gw_err_set(err, status, "sample '%s': %s: particle outside the box (0 <= x <= %g, y >= 0) "
+                          "beyond the 0.02 R overlap tolerance", path, where, width);
+    return GW_OK;
+}
+
+static int check_sample(const gw_layer_sample *s, const char *path, int status, gw_err *err)
+{
+    int rc = check_header(s, path, status, err);
+    if (rc != GW_OK)
+        return rc;
+    if (s->n < 1 || s->n > SAMPLE_NMAX || !s->x || !s->y || !s->r)
+        return gw_err_set(err, status, "sample '%s': n = %d must be in [1, %ld] with coordinates",
+                          path, s->n, SAMPLE_NMAX);
+    char where[48];
+    for (int i = 0; i < s->n && rc == GW_OK; i++) {
+        snprintf(where, sizeof where, "particle at index %d", i);
+        rc = check_particle(s->width, s->x[i], s->y[i], s->r[i], path, where, status, err);
+    }
+    return rc;
+}
+
+/* 1 when the name asks for HDF5 (.h5, .hdf5; any case). */
+static int wants_h5(const char *path)
+{
+    size_t n = strlen(path);
+    return (n >= 3 && strcasecmp(path + n - 3, ".h5") == 0) ||
+           (n >= 5 && strcasecmp(path + n - 5, ".hdf5") == 0);
+}
+
+int gw_layer_sample_format_check(const char *path, gw_err *err)
+{
+    if (wants_h5(path) && !GW_HAVE_HDF5)
+        return gw_err_set(err, GW_EUNSUPPORTED, "sample '%s': HDF5 samples need granwave built with HDF5 "
+                          "(GW_WITH_HDF5=ON and libhdf5); give a text name such as sample.txt", path);
+    return GW_OK;
+}
+
+/* ------------------------------------------------------------- text ---- */
+
+static int write_text(const gw_layer_sample *s, const char *path, const char *header, gw_err *err)
 {
     gw_afile f;
     int rc = gw_afile_open(&f, path, err);
     if (rc != GW_OK)
         return rc;
-    fprintf(f.fp, "granwave-layer-sample 1\n");
-    if (header) {
-        const char *p = header;
-        while (*p) {
-            const char *e = strchr(p, '\n');
-            size_t len = e ? (size_t)(e - p) : strlen(p);
-            fprintf(f.fp, "# %.*s\n", (int)len, p);
-            p += len + (e ? 1 : 0);
-        }
+    fprintf(f.fp, SAMPLE_MAGIC " 1\n");
+    for (const char *p = header; p && *p;) {
+        const char *e = strchr(p, '\n');
+        size_t len = e ? (size_t)(e - p) : strlen(p);
+        fprintf(f.fp, "# %.*s\n", (int)len, p);
+        p += len + (e ? 1 : 0);
     }
     fprintf(f.fp, "# units: metres; lines after 'n' are: x y r\n");
     fprintf(f.fp, "width %.17g\nrm %.17g\nvolume_ratio %.17g\nporosity %.17g\nseed %ld\n",
             s->width, s->rm, s->volume_ratio, s->porosity, s->seed);
-    fprintf(f.fp, "mass_law %s\nn %d\n", s->mass_law == GW_LAYER_MASS_SPHERE ? "sphere" : "disc",
-            s->n);
+    fprintf(f.fp, "mass_law %s\nn %d\n", s->mass_law == GW_LAYER_MASS_SPHERE ? "sphere" : "disc", s->n);
     for (int i = 0; i < s->n; i++)
         fprintf(f.fp, "%.17g %.17g %.17g\n", s->x[i], s->y[i], s->r[i]);
     return gw_afile_commit(&f, err);
 }
 
-/* Next non-comment line into buf; 0 at end of file. */
-static int next_line(FILE *fp, char *buf, size_t n, int *lineno)
+/* A line source: the bytes already read to look for the HDF5 signature, then
+ * the stream (so pipes work too). */
+typedef struct text_in {
+    FILE *fp;
+    const char *path;
+    unsigned char pre[8];
+    size_t npre, ipre;
+    long line;
+    char buf[SAMPLE_LINE_MAX + 1];
+} text_in;
+
+static int text_getc(text_in *t)
 {
-    while (fgets(buf, (int)n, fp)) {
-        (*lineno)++;
-        char *p = buf;
-        while (*p == ' ' || *p == '\t')
-            p++;
-        if (*p == '#' || *p == '\n' || *p == '\r' || *p == 0)
-            continue;
-        return 1;
+    return t->ipre < t->npre ? t->pre[t->ipre++] : getc(t->fp);
+}
+
+/* Next line that is neither blank nor a comment into t->buf, without its LF or
+ * CRLF. 1: a line; 0: end of file; < 0: GW_EFORMAT (NUL byte, line too long)
+ * or GW_EIO (read error), with err set. */
+static int text_next(text_in *t, gw_err *err)
+{
+    for (;;) {
+        int c, any = 0, lead = 1, comment = 0, nul = 0;
+        size_t len = 0;
+        while ((c = text_getc(t)) != EOF && c != '\n') {
+            any = 1;
+            nul |= c == 0;
+            if (lead && (c == ' ' || c == '\t'))
+                continue;
+            if (lead)
+                comment = c == '#', lead = 0;
+            if (comment)
+                continue;
+            if (len == SAMPLE_LINE_MAX)
+                return gw_err_set(err, GW_EFORMAT, "sample '%s': line %ld: longer than %d characters",
+                                  t->path, t->line + 1, SAMPLE_LINE_MAX);
+            t->buf[len++] = (char)c;
+        }
+        if (c == EOF && ferror(t->fp))
+            return gw_err_set(err, GW_EIO, "sample '%s': read error after line %ld: %s", t->path,
+                              t->line, strerror(errno));
+        if (c == EOF && !any)
+            return 0;
+        t->line++;
+        if (nul)
+            return gw_err_set(err, GW_EFORMAT, "sample '%s': line %ld: NUL byte (binary data, not a text sample)",
+                              t->path, t->line);
+        if (len > 0 && t->buf[len - 1] == '\r')
+            len--;
+        t->buf[len] = '\0';
+        if (!comment && len > 0)
+            return 1;
+    }
+}
+
+/* Split s at blanks in place into at most max tokens; returns the token count,
+ * max + 1 when there are more. */
+static int split(char *s, char **tok, int max)
+{
+    int k = 0;
+    for (;;) {
+        while (*s == ' ' || *s == '\t')
+            s++;
+        if (!*s)
+            return k;
+        if (k == max)
+            return max + 1;
+        tok[k++] = s;
+        while (*s && *s != ' ' && *s != '\t')
+            s++;
+        if (*s)
+            *s++ = '\0';
+    }
+}
+
+/* The whole token as a finite double (underflow to a subnormal is fine). */
+static int parse_num(const char *s, double *v)
+{
+    char *end;
+    *v = strtod(s, &end);
+    return end != s && *end == '\0' && isfinite(*v);
+}
+
+static int parse_long(const char *s, long *v)
+{
+    char *end;
+    errno = 0;
+    *v = strtol(s, &end, 10);
+    return end != s && *end == '\0' && errno == 0;
+}
+
+enum { K_WIDTH, K_RM, K_VR, K_POR, K_SEED, K_LAW, K_N, K_COUNT };
+static const char *const header_keys[K_COUNT] = {"width", "rm", "volume_ratio", "porosity",
+                                                 "seed", "mass_law", "n"};
+
+/* Header lines up to and including "n N": fills s and *n. */
+static int text_header(text_in *t, gw_layer_sample *s, long *n, gw_err *err)
+{
+    char *tok[3], show[48];
+    int rc = text_next(t, err), seen = 0;
+    if (rc <= 0)
+        return rc < 0 ? rc : gw_err_set(err, GW_EFORMAT, "sample '%s': empty file, not a granwave layer sample",
+                                        t->path);
+    int k = split(t->buf, tok, 2);
+    if (strcmp(tok[0], SAMPLE_MAGIC) != 0)
+        return gw_err_set(err, GW_EFORMAT, "sample '%s': line %ld: not a granwave layer sample (expected '"
+                          SAMPLE_MAGIC " 1')", t->path, t->line);
+    if (k > 2)
+        return gw_err_set(err, GW_EFORMAT, "sample '%s': line %ld: characters after '" SAMPLE_MAGIC " %s'",
+                          t->path, t->line, shown(tok[1], show));
+    if (k != 2 || strcmp(tok[1], "1") != 0)
+        return gw_err_set(err, GW_EFORMAT, "sample '%s': line %ld: unsupported format version '%s' "
+                          "(this build reads 1)", t->path, t->line, k == 2 ? shown(tok[1], show) : "");
+    while ((rc = text_next(t, err)) > 0) {
+        k = split(t->buf, tok, 2);
+        int key = 0;
+        while (key < K_COUNT && strcmp(tok[0], header_keys[key]) != 0)
+            key++;
+        if (key == K_COUNT)
+            return gw_err_set(err, GW_EFORMAT, "sample '%s': line %ld: unknown key '%s'", t->path, t->line,
+                              shown(tok[0], show));
+        if (k != 2)
+            return gw_err_set(err, GW_EFORMAT, "sample '%s': line %ld: expected '%s VALUE'%s", t->path,
+                              t->line, header_keys[key], k > 2 ? " and nothing after it" : "");
+        if (seen & (1 << key))
+            return gw_err_set(err, GW_EFORMAT, "sample '%s': line %ld: '%s' given twice", t->path, t->line,
+                              header_keys[key]);
+        seen |= 1 << key;
+        double v = 0;
+        int ok = 1;
+        if (key == K_LAW) {
+            ok = strcmp(tok[1], "disc") == 0 || strcmp(tok[1], "sphere") == 0;
+            s->mass_law = strcmp(tok[1], "sphere") == 0 ? GW_LAYER_MASS_SPHERE : GW_LAYER_MASS_DISC;
+        } else if (key == K_SEED) {
+            ok = parse_long(tok[1], &s->seed);
+        } else {
+            ok = parse_num(tok[1], &v);
+        }
+        if (!ok)
+            return gw_err_set(err, GW_EFORMAT, "sample '%s': line %ld: %s '%s' is not %s", t->path, t->line,
+                              header_keys[key], shown(tok[1], show),
+                              key == K_LAW ? "disc or sphere" : key == K_SEED ? "an integer" : "a finite number");
+        if (key == K_WIDTH)
+            s->width = v;
+        else if (key == K_RM)
+            s->rm = v;
+        else if (key == K_VR)
+            s->volume_ratio = v;
+        else if (key == K_POR)
+            s->porosity = v;
+        else if (key == K_N) {
+            if (!(v >= 1 && v <= SAMPLE_NMAX && v == floor(v)))
+                return gw_err_set(err, GW_EFORMAT, "sample '%s': line %ld: n = %g must be an integer in "
+                                  "[1, %ld]", t->path, t->line, v, SAMPLE_NMAX);
+            *n = (long)v;
+            break;
+        }
+    }
+    if (rc < 0)
+        return rc;
+    if (!(seen & (1 << K_N)) || !(seen & (1 << K_WIDTH)) || !(seen & (1 << K_RM)))
+        return gw_err_set(err, GW_EFORMAT, "sample '%s': header incomplete after line %ld (needs width, rm "
+                          "and then n)", t->path, t->line);
+    return check_header(s, t->path, GW_EFORMAT, err);
+}
+
+/* Room for cap particles in one block x | y | r (the sample owns s->x only);
+ * grows with the file so that a short file claiming a large n costs little. */
+static int grow(gw_layer_sample *s, long *cap, long want)
+{
+    long nc = *cap;
+    while (nc < want)
+        nc = nc ? 2 * nc : 1024;
+    if (nc > SAMPLE_NMAX)
+        nc = SAMPLE_NMAX;
+    double *b = realloc(s->x, 3 * (size_t)nc * sizeof *b);
+    if (!b)
+        return GW_ENOMEM;
+    /* r first: its new place [2 nc, 2 nc + cap) lies above the old y */
+    memmove(b + 2 * nc, b + 2 * *cap, (size_t)*cap * sizeof *b);
+    memmove(b + nc, b + *cap, (size_t)*cap * sizeof *b);
+    s->x = b, s->y = b + nc, s->r = b + 2 * nc;
+    *cap = nc;
+    return GW_OK;
+}
+
+static int read_text(text_in *t, gw_layer_sample *s, gw_err *err)
+{
+    long n = 0, cap = 0, i = 0;
+    int rc = text_header(t, s, &n, err);
+    char *tok[3], where[48];
+    while (rc == GW_OK && i < n) {
+        int got = text_next(t, err);
+        if (got <= 0) {
+            rc = got < 0 ? got : gw_err_set(err, GW_EFORMAT, "sample '%s': truncated after line %ld: %ld of "
+                                            "%ld particles", t->path, t->line, i, n);
+            break;
+        }
+        if (i == cap && grow(s, &cap, i + 1) != GW_OK) {
+            rc = gw_err_set(err, GW_ENOMEM, "sample '%s': out of memory for %ld particles", t->path, n);
+            break;
+        }
+        if (split(t->buf, tok, 3) != 3 || !parse_num(tok[0], &s->x[i]) || !parse_num(tok[1], &s->y[i]) ||
+            !parse_num(tok[2], &s->r[i])) {
+            rc = gw_err_set(err, GW_EFORMAT, "sample '%s': line %ld: expected three finite numbers 'x y r' "
+                            "(particle %ld of %ld)", t->path, t->line, i + 1, n);
+            break;
+        }
+        snprintf(where, sizeof where, "line %ld", t->line);
+        rc = check_particle(s->width, s->x[i], s->y[i], s->r[i], t->path, where, GW_EFORMAT, err);
+        i++;
+    }
+    if (rc == GW_OK && (rc = text_next(t, err)) > 0)
+        rc = gw_err_set(err, GW_EFORMAT, "sample '%s': line %ld: data after the %ld particles", t->path,
+                        t->line, n);
+    if (rc != GW_OK)
+        return rc;
+    if (cap > n) { /* close the gaps of the x | y | r block */
+        memmove(s->x + n, s->y, (size_t)n * sizeof *s->x);
+        memmove(s->x + 2 * n, s->r, (size_t)n * sizeof *s->x);
+        double *b = realloc(s->x, 3 * (size_t)n * sizeof *b);
+        if (b)
+            s->x = b;
+        s->y = s->x + n, s->r = s->x + 2 * n;
+    }
+    s->n = (int)n;
+    return GW_OK;
+}
+
+/* ------------------------------------------------------------- HDF5 ---- */
+
+#if GW_HAVE_HDF5
+/* HDF5 prints its error stack by default. While granwave calls it, a handler
+ * records the most specific message of the first failure instead (for gw_err);
+ * the caller's handler is put back afterwards (it is process-wide state). */
+typedef struct h5_quiet {
+    H5E_auto2_t fn;
+    void *data;
+    char why[160];
+} h5_quiet;
+
+static herr_t h5_innermost(unsigned k, const H5E_error2_t *e, void *ctx)
+{
+    char *why = ctx;
+    if (k == 0 && e->desc) {
+        snprintf(why, 160, "%s", e->desc);
+        for (char *p = why; *p; p++)
+            if (*p == '\n' || *p == '\r')
+                *p = ' ';
     }
     return 0;
 }
 
-static int parse_num(const char *s, double *v)
+static herr_t h5_record(hid_t stack, void *ctx)
 {
-    char *end;
-    errno = 0;
-    *v = strtod(s, &end);
-    while (*end == ' ' || *end == '\t' || *end == '\n' || *end == '\r')
-        end++;
-    return end != s && *end == 0 && errno == 0 && isfinite(*v);
+    char *why = ctx;
+    if (!why[0])
+        H5Ewalk2(stack, H5E_WALK_UPWARD, h5_innermost, why);
+    if (!why[0])
+        snprintf(why, 160, "HDF5 call failed");
+    return 0;
+}
+
+static void h5_quiet_on(h5_quiet *q)
+{
+    q->why[0] = '\0';
+    H5Eget_auto2(H5E_DEFAULT, &q->fn, &q->data);
+    H5Eset_auto2(H5E_DEFAULT, h5_record, q->why);
+}
+
+static void h5_quiet_off(const h5_quiet *q)
+{
+    H5Eset_auto2(H5E_DEFAULT, q->fn, q->data);
+}
+
+static int h5_attr_write(hid_t loc, const char *name, hid_t type, const void *v)
+{
+    hid_t sp = H5Screate(H5S_SCALAR);
+    hid_t a = sp < 0 ? -1 : H5Acreate2(loc, name, type, sp, H5P_DEFAULT, H5P_DEFAULT);
+    int bad = a < 0 || H5Awrite(a, type, v) < 0;
+    if (a >= 0)
+        H5Aclose(a);
+    if (sp >= 0)
+        H5Sclose(sp);
+    return bad;
+}
+
+/* A fixed-length string attribute; cut at 16 kB, well below the 64 kB an
+ * object header can hold, so a long command line cannot fail the write. */
+static int h5_attr_write_str(hid_t loc, const char *name, const char *v)
+{
+    size_t len = strnlen(v, 16384);
+    char *copy = malloc(len + 1);
+    hid_t t = H5Tcopy(H5T_C_S1);
+    int bad = !copy || t < 0 || H5Tset_size(t, len + 1) < 0;
+    if (!bad) {
+        memcpy(copy, v, len);
+        copy[len] = '\0';
+        bad = h5_attr_write(loc, name, t, copy);
+    }
+    free(copy);
+    if (t >= 0)
+        H5Tclose(t);
+    return bad;
+}
+
+static int h5_column_write(hid_t f, const char *name, const double *v, int n)
+{
+    hsize_t dim = (hsize_t)n;
+    hid_t sp = H5Screate_simple(1, &dim, NULL);
+    hid_t d = sp < 0 ? -1 : H5Dcreate2(f, name, H5T_IEEE_F64LE, sp, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+    int bad = d < 0 || H5Dwrite(d, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, v) < 0 ||
+              h5_attr_write_str(d, "units", "m");
+    if (d >= 0)
+        H5Dclose(d);
+    if (sp >= 0)
+        H5Sclose(sp);
+    return bad;
+}
+
+/* Written under a temporary name through gw_afile (signals held, fsync, rename
+ * on commit): the stdio stream it opens is closed while HDF5 writes the
+ * temporary, then reopened so that commit can sync and rename it. The 1.8 file
+ * format (superblock 2) puts checksums on all metadata (see read_h5). */
+static int write_h5(const gw_layer_sample *s, const char *path, const char *header, gw_err *err)
+{
+    gw_afile f;
+    int rc = gw_afile_open(&f, path, err);
+    if (rc != GW_OK)
+        return rc;
+    fclose(f.fp);
+    f.fp = NULL;
+    h5_quiet q;
+    h5_quiet_on(&q);
+    int version = 1, n = s->n;
+    hid_t fapl = H5Pcreate(H5P_FILE_ACCESS);
+    hid_t file = fapl < 0 || H5Pset_libver_bounds(fapl, H5F_LIBVER_V18, H5F_LIBVER_LATEST) < 0 ? -1 :
+                 H5Fcreate(f.tmp, H5F_ACC_TRUNC, H5P_DEFAULT, fapl);
+    int bad = file < 0 || h5_column_write(file, "x", s->x, n) || h5_column_write(file, "y", s->y, n) ||
+              h5_column_write(file, "r", s->r, n) || h5_attr_write_str(file, "format", SAMPLE_MAGIC) ||
+              h5_attr_write(file, "format_version", H5T_NATIVE_INT, &version) ||
+              h5_attr_write_str(file, "granwave_version", gw_version()) ||
+              h5_attr_write(file, "width", H5T_NATIVE_DOUBLE, &s->width) ||
+              h5_attr_write(file, "rm", H5T_NATIVE_DOUBLE, &s->rm) ||
+              h5_attr_write(file, "volume_ratio", H5T_NATIVE_DOUBLE, &s->volume_ratio) ||
+              h5_attr_write(file, "porosity", H5T_NATIVE_DOUBLE, &s->porosity) ||
+              h5_attr_write(file, "seed", H5T_NATIVE_LONG, &s->seed) ||
+              h5_attr_write_str(file, "mass_law", s->mass_law == GW_LAYER_MASS_SPHERE ? "sphere" : "disc") ||
+              h5_attr_write(file, "n", H5T_NATIVE_INT, &n) ||
+              h5_attr_write_str(file, "units", "SI: x, y, r, width, rm in metres") ||
+              (header && h5_attr_write_str(file, "header", header));
+    if (file >= 0 && H5Fclose(file) < 0)
+        bad = 1;
+    if (fapl >= 0)
+        H5Pclose(fapl);
+    h5_quiet_off(&q);
+    if (!bad && !(f.fp = fopen(f.tmp, "r+b")))
+        bad = 1;
+    if (bad) {
+        gw_afile_abort(&f);
+        return gw_err_set(err, GW_EIO, "sample '%s': HDF5 write failed%s%s", path, q.why[0] ? ": " : "", q.why);
+    }
+    return gw_afile_commit(&f, err);
+}
+
+/* A scalar root attribute of class want (H5T_FLOAT also takes integers; a
+ * string goes into char[64]) read as memtype: 0 absent, 1 read, -1 malformed. */
+static int h5_attr_read(hid_t f, const char *name, H5T_class_t want, hid_t memtype, void *out)
+{
+    htri_t ex = H5Aexists(f, name);
+    if (ex == 0)
+        return 0;
+    hid_t a = ex > 0 ? H5Aopen(f, name, H5P_DEFAULT) : -1;
+    hid_t t = a >= 0 ? H5Aget_type(a) : -1, sp = a >= 0 ? H5Aget_space(a) : -1;
+    H5T_class_t cls = t >= 0 ? H5Tget_class(t) : H5T_NO_CLASS;
+    int ok = sp >= 0 && H5Sget_simple_extent_npoints(sp) == 1 &&
+             (cls == want || (want == H5T_FLOAT && cls == H5T_INTEGER));
+    if (ok && want == H5T_STRING) { /* fixed or variable length */
+        char *vs = NULL;
+        htri_t var = H5Tis_variable_str(t);
+        size_t size = H5Tget_size(t);
+        hid_t mt = H5Tcopy(H5T_C_S1);
+        ok = var >= 0 && mt >= 0 && (var > 0 || (size > 0 && size < 64)) &&
+             H5Tset_size(mt, var > 0 ? H5T_VARIABLE : 64) >= 0 && H5Tset_cset(mt, H5Tget_cset(t)) >= 0 &&
+             H5Tset_strpad(mt, H5T_STR_NULLTERM) >= 0 && H5Aread(a, mt, var > 0 ? (void *)&vs : out) >= 0;
+        if (ok && var > 0) {
+            ok = vs && strlen(vs) < 64;
+            if (ok)
+                memcpy(out, vs, strlen(vs) + 1);
+        }
+        if (vs)
+            H5free_memory(vs);
+        if (mt >= 0)
+            H5Tclose(mt);
+        if (ok)
+            ((char *)out)[63] = '\0';
+    } else if (ok) {
+        ok = H5Aread(a, memtype, out) >= 0;
+    }
+    if (t >= 0)
+        H5Tclose(t);
+    if (sp >= 0)
+        H5Sclose(sp);
+    if (a >= 0)
+        H5Aclose(a);
+    return ok ? 1 : -1;
+}
+
+/* Dataset name: one dimension of n numbers, read as doubles into v. */
+static int h5_column_read(hid_t f, const char *name, long n, double *v, const char *path, const char *why,
+                          gw_err *err)
+{
+    htri_t ex = H5Lexists(f, name, H5P_DEFAULT);
+    hid_t d = ex > 0 ? H5Dopen2(f, name, H5P_DEFAULT) : -1;
+    if (d < 0)
+        return gw_err_set(err, GW_EFORMAT, "sample '%s': HDF5 dataset '%s' %s%s%s", path, name,
+                          ex == 0 ? "missing" : "unreadable", why[0] ? ": " : "", why);
+    hid_t sp = H5Dget_space(d), t = H5Dget_type(d);
+    hsize_t dim = 0;
+    H5T_class_t cls = t >= 0 ? H5Tget_class(t) : H5T_NO_CLASS;
+    int shape = sp >= 0 && H5Sget_simple_extent_ndims(sp) == 1 && H5Sget_simple_extent_dims(sp, &dim, NULL) == 1;
+    int rc = GW_OK;
+    if (!shape || (cls != H5T_FLOAT && cls != H5T_INTEGER))
+        rc = gw_err_set(err, GW_EFORMAT, "sample '%s': HDF5 dataset '%s' must be a 1-D array of numbers",
+                        path, name);
+    else if (dim != (hsize_t)n)
+        rc = gw_err_set(err, GW_EFORMAT, "sample '%s': HDF5 dataset '%s' has %llu values, n = %ld", path, name,
+                        (unsigned long long)dim, n);
+    else if (H5Dread(d, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, v) < 0)
+        rc = gw_err_set(err, GW_EFORMAT, "sample '%s': HDF5 dataset '%s' unreadable: %s", path, name, why);
+    if (t >= 0)
+        H5Tclose(t);
+    if (sp >= 0)
+        H5Sclose(sp);
+    H5Dclose(d);
+    return rc;
+}
+
+static int h5_fields(hid_t f, gw_layer_sample *s, const char *path, const char *why, gw_err *err)
+{
+    char str[64], show[48];
+    long long ver = 0, n = 0, seed = 0;
+    int got = h5_attr_read(f, "format", H5T_STRING, -1, str);
+    if (got < 0 && why[0])
+        return gw_err_set(err, GW_EFORMAT, "sample '%s': corrupt HDF5 file (%s)", path, why);
+    if (got != 1 || strcmp(str, SAMPLE_MAGIC) != 0)
+        return gw_err_set(err, GW_EFORMAT, "sample '%s': HDF5 file is not a granwave layer sample (no "
+                          "attribute format = '" SAMPLE_MAGIC "')", path);
+    if (h5_attr_read(f, "format_version", H5T_INTEGER, H5T_NATIVE_LLONG, &ver) != 1 || ver != 1)
+        return gw_err_set(err, GW_EFORMAT, "sample '%s': HDF5 attribute format_version (%lld) missing or "
+                          "unsupported (this build reads 1)", path, ver);
+    const struct {
+        const char *name;
+        double *v;
+        int required;
+    } num[] = {{"width", &s->width, 1}, {"rm", &s->rm, 1}, {"volume_ratio", &s->volume_ratio, 0},
+               {"porosity", &s->porosity, 0}};
+    for (size_t k = 0; k < sizeof num / sizeof num[0]; k++) {
+        got = h5_attr_read(f, num[k].name, H5T_FLOAT, H5T_NATIVE_DOUBLE, num[k].v);
+        if (got < 0 || (got == 0 && num[k].required))
+            return gw_err_set(err, GW_EFORMAT, "sample '%s': HDF5 attribute '%s' %s", path, num[k].name,
+                              got < 0 ? "is not one number" : "missing");
+    }
+    got = h5_attr_read(f, "seed", H5T_INTEGER, H5T_NATIVE_LLONG, &seed);
+    if (got < 0 || seed < LONG_MIN || seed > LONG_MAX)
+        return gw_err_set(err, GW_EFORMAT, "sample '%s': HDF5 attribute 'seed' is not one integer", path);
+    s->seed = (long)seed;
+    got = h5_attr_read(f, "mass_law", H5T_STRING, -1, str);
+    if (got < 0 || (got > 0 && strcmp(str, "disc") != 0 && strcmp(str, "sphere") != 0))
+        return gw_err_set(err, GW_EFORMAT, "sample '%s': HDF5 attribute mass_law '%s' is not disc or sphere",
+                          path, got > 0 ? shown(str, show) : "?");
+    s->mass_law = got > 0 && strcmp(str, "sphere") == 0 ? GW_LAYER_MASS_SPHERE : GW_LAYER_MASS_DISC;
+    got = h5_attr_read(f, "n", H5T_INTEGER, H5T_NATIVE_LLONG, &n);
+    if (got != 1 || n < 1 || n > SAMPLE_NMAX)
+        return gw_err_set(err, GW_EFORMAT, "sample '%s': HDF5 attribute n = %lld must be an integer in [1, %ld]",
+                          path, got == 1 ? n : 0, SAMPLE_NMAX);
+    int rc = check_header(s, path, GW_EFORMAT, err);
+    if (rc != GW_OK)
+        return rc;
+    s->x = malloc(3 * (size_t)n * sizeof *s->x);
+    if (!s->x)
+        return gw_err_set(err, GW_ENOMEM, "sample '%s': out of memory for %lld particles", path, n);
+    s->y = s->x + n, s->r = s->x + 2 * n;
+    s->n = (int)n;
+    if ((rc = h5_column_read(f, "x", (long)n, s->x, path, why, err)) != GW_OK ||
+        (rc = h5_column_read(f, "y", (long)n, s->y, path, why, err)) != GW_OK ||
+        (rc = h5_column_read(f, "r", (long)n, s->r, path, why, err)) != GW_OK)
+        return rc;
+    return check_sample(s, path, GW_EFORMAT, err);
+}
+
+/* libhdf5 decodes metadata without bounds checks, so a corrupt file can crash
+ * it (memory errors found by fuzzing 1.10.8 with superblock-0 files).
+ * Superblocks from version 2 on (HDF5 1.8 format and later) come with
+ * checksums on all metadata, which HDF5 verifies before decoding: only those
+ * files are opened. sb: the superblock version, byte 8 of the file. */
+static int read_h5(const char *path, int sb, gw_layer_sample *s, gw_err *err)
+{
+    if (sb < 0)
+        return gw_err_set(err, GW_EFORMAT, "sample '%s': truncated HDF5 file (signature only)", path);
+    if (sb < 2)
+        return gw_err_set(err, GW_EFORMAT, "sample '%s': HDF5 file without metadata checksums (superblock "
+                          "version %d; write it with the 1.8 format or later, e.g. h5py libver='v108')", path, sb);
+    h5_quiet q;
+    h5_quiet_on(&q);
+    int rc;
+    /* strong close: H5Fclose also closes what a failed read left open */
+    hid_t fapl = H5Pcreate(H5P_FILE_ACCESS);
+    hid_t f = fapl < 0 || H5Pset_fclose_degree(fapl, H5F_CLOSE_STRONG) < 0 ? -1 :
+              H5Fopen(path, H5F_ACC_RDONLY, fapl);
+    if (f < 0) {
+        rc = gw_err_set(err, GW_EFORMAT, "sample '%s': corrupt or truncated HDF5 file (%s)", path, q.why);
+    } else {
+        rc = h5_fields(f, s, path, q.why, err);
+        if (H5Fclose(f) < 0 && rc == GW_OK)
+            rc = gw_err_set(err, GW_EFORMAT, "sample '%s': corrupt HDF5 file (%s)", path, q.why);
+    }
+    if (fapl >= 0)
+        H5Pclose(fapl);
+    H5Eclear2(H5E_DEFAULT);
+    /* After some corrupt files HDF5 1.10 loses track of a block (a leak inside
+     * the library) and at exit prints "infinite loop closing library" unless
+     * automatic error printing is off: after a failed read it stays off
+     * (granwave reports HDF5 errors through gw_err). */
+    if (rc == GW_OK)
+        h5_quiet_off(&q);
+    else
+        H5Eset_auto2(H5E_DEFAULT, NULL, NULL);
+    return rc;
+}
+#endif
+
+/* -------------------------------------------------------- public API ---- */
+
+int gw_layer_sample_write(const gw_layer_sample *s, const char *path, const char *header,
+                          gw_err *err)
+{
+    int rc = gw_layer_sample_format_check(path, err);
+    if (rc == GW_OK)
+        rc = check_sample(s, path, GW_EINVAL, err);
+    if (rc != GW_OK)
+        return rc;
+#if GW_HAVE_HDF5
+    if (wants_h5(path))
+        return write_h5(s, path, header, err);
+#endif
+    return write_text(s, path, header, err);
 }
 
 int gw_layer_sample_read(const char *path, gw_layer_sample *s, gw_err *err)
 {
     memset(s, 0, sizeof *s);
-    FILE *fp = fopen(path, "r");
-    if (!fp)
-        return gw_err_set(err, GW_EIO, "sample '%s': cannot open: %s", path, strerror(errno));
-    char buf[1024], key[64], val[512];
-    int line = 0, rc = GW_OK, have_w = 0;
     s->mass_law = GW_LAYER_MASS_DISC;
-    if (!next_line(fp, buf, sizeof buf, &line) ||
-        strncmp(buf, "granwave-layer-sample 1", 23) != 0) {
-        fclose(fp);
-        return gw_err_set(err, GW_EFORMAT, "sample '%s': line %d: not a granwave layer sample "
-                          "(expected 'granwave-layer-sample 1')", path, line);
+    text_in t = {.path = path};
+    t.fp = fopen(path, "rb");
+    if (!t.fp)
+        return gw_err_set(err, GW_EIO, "sample '%s': cannot open: %s", path, strerror(errno));
+    t.npre = fread(t.pre, 1, sizeof t.pre, t.fp);
+    int rc;
+    if (t.npre == sizeof t.pre && memcmp(t.pre, h5_signature, sizeof t.pre) == 0) {
+        int sb = getc(t.fp);
+        fclose(t.fp);
+#if GW_HAVE_HDF5
+        rc = read_h5(path, sb, s, err);
+#else
+        (void)sb;
+        rc = gw_err_set(err, GW_EUNSUPPORTED, "sample '%s': an HDF5 file, and this granwave was built "
+                        "without HDF5", path);
+#endif
+    } else {
+        rc = read_text(&t, s, err);
+        fclose(t.fp);
     }
-    long n = -1;
-    while (n < 0 && next_line(fp, buf, sizeof buf, &line)) {
-        double v;
-        if (sscanf(buf, "%63s %511[^\n]", key, val) != 2) {
-            rc = gw_err_set(err, GW_EFORMAT, "sample '%s': line %d: expected 'key value'", path, line);
-            break;
-        }
-        if (strcmp(key, "mass_law") == 0) {
-            if (strncmp(val, "sphere", 6) == 0)
-                s->mass_law = GW_LAYER_MASS_SPHERE;
-            else if (strncmp(val, "disc", 4) != 0)
-                rc = gw_err_set(err, GW_EFORMAT, "sample '%s': line %d: mass_law must be disc or sphere",
-                                path, line);
-            if (rc != GW_OK)
-                break;
-            continue;
-        }
-        if (!parse_num(val, &v)) {
-            rc = gw_err_set(err, GW_EFORMAT, "sample '%s': line %d: '%s' is not a finite number",
-                            path, line, val);
-            break;
-        }
-        if (strcmp(key, "width") == 0)
-            s->width = v, have_w = 1;
-        else if (strcmp(key, "rm") == 0)
-            s->rm = v;
-        else if (strcmp(key, "volume_ratio") == 0)
-            s->volume_ratio = v;
-        else if (strcmp(key, "porosity") == 0)
-            s->porosity = v;
-        else if (strcmp(key, "seed") == 0)
-            s->seed = (long)v;
-        else if (strcmp(key, "n") == 0) {
-            if (v < 1 || v > 1e7 || v != floor(v)) {
-                rc = gw_err_set(err, GW_EFORMAT, "sample '%s': line %d: n = %g must be an integer in [1, 1e7]",
-                                path, line, v);
-                break;
-            }
-            n = (long)v;
-        } else {
-            rc = gw_err_set(err, GW_EFORMAT, "sample '%s': line %d: unknown key '%s'", path, line, key);
-            break;
-        }
-    }
-    if (rc == GW_OK && (n < 0 || !have_w || !(s->width > 0) || !(s->rm > 0)))
-        rc = gw_err_set(err, GW_EFORMAT, "sample '%s': header incomplete (needs positive width, rm, and n)",
-                        path);
-    if (rc == GW_OK) {
-        s->x = malloc(3 * (size_t)n * sizeof *s->x);
-        if (!s->x)
-            rc = gw_err_set(err, GW_ENOMEM, "sample '%s': out of memory for %ld particles", path, n);
-        else
-            s->y = s->x + n, s->r = s->x + 2 * n;
-    }
-    for (long i = 0; rc == GW_OK && i < n; i++) {
-        char extra[8];
-        if (!next_line(fp, buf, sizeof buf, &line)) {
-            rc = gw_err_set(err, GW_EFORMAT, "sample '%s': truncated: %ld of %ld particles", path, i, n);
-            break;
-        }
-        if (sscanf(buf, "%lf %lf %lf %7s", &s->x[i], &s->y[i], &s->r[i], extra) != 3 ||
-            !isfinite(s->x[i]) || !isfinite(s->y[i]) || !isfinite(s->r[i])) {
-            rc = gw_err_set(err, GW_EFORMAT, "sample '%s': line %d: expected three finite numbers 'x y r'",
-                            path, line);
-            break;
-        }
-        if (!(s->r[i] > 0))
-            rc = gw_err_set(err, GW_EFORMAT, "sample '%s': line %d: radius %g m must be positive",
-                            path, line, s->r[i]);
-        else if (s->x[i] - s->r[i] < -2e-2 * s->r[i] || s->x[i] + s->r[i] > s->width + 2e-2 * s->r[i] ||
-                 s->y[i] - s->r[i] < -2e-2 * s->r[i])
-            rc = gw_err_set(err, GW_EFORMAT, "sample '%s': line %d: particle outside the box "
-                            "(0 <= x <= %g, y >= 0) beyond the 0.02 R overlap tolerance", path, line, s->width);
-    }
-    if (rc == GW_OK && next_line(fp, buf, sizeof buf, &line))
-        rc = gw_err_set(err, GW_EFORMAT, "sample '%s': line %d: data after the %ld particles", path, line, n);
-    if (rc == GW_OK && ferror(fp))
-        rc = gw_err_set(err, GW_EIO, "sample '%s': read error", path);
-    fclose(fp);
     if (rc != GW_OK) {
         gw_layer_sample_free(s);
-        return rc;
+        memset(s, 0, sizeof *s);
     }
-    s->n = (int)n;
-    return GW_OK;
+    return rc;
+}
+
+/* ---------------------------------------------------------- porosity ---- */
+
+/* Grid index of coordinate v (cells of size d from v0), clamped to [-1, G] in
+ * floating point first, so no value converts out of the int range. */
+static int cell_of(double v, double v0, double d, int G, int up)
+{
+    double q = up ? ceil((v - v0) / d) : floor((v - v0) / d);
+    return !(q >= -1) ? -1 : q > G ? G : (int)q; /* NaN: -1 */
 }
 
 double gw_layer_sample_porosity(const gw_layer_sample *s)
@@ -189,13 +745,15 @@ double gw_layer_sample_porosity(const gw_layer_sample *s)
     const int G = 600;
     double x0 = 0.1 * s->width, x1 = 0.9 * s->width, y0 = 0.1 * h, y1 = 0.8 * h;
     double dx = (x1 - x0) / G, dy = (y1 - y0) / G;
+    if (!(dx > 0) || !(dy > 0) || !isfinite(dx) || !isfinite(dy))
+        return NAN;
     /* mark covered grid points particle by particle (bounding boxes only) */
     unsigned char *cov = calloc((size_t)G * G, 1);
     if (!cov)
         return NAN;
     for (int i = 0; i < s->n; i++) {
-        int ia = (int)floor((s->x[i] - s->r[i] - x0) / dx), ib = (int)ceil((s->x[i] + s->r[i] - x0) / dx);
-        int ja = (int)floor((s->y[i] - s->r[i] - y0) / dy), jb = (int)ceil((s->y[i] + s->r[i] - y0) / dy);
+        int ia = cell_of(s->x[i] - s->r[i], x0, dx, G, 0), ib = cell_of(s->x[i] + s->r[i], x0, dx, G, 1);
+        int ja = cell_of(s->y[i] - s->r[i], y0, dy, G, 0), jb = cell_of(s->y[i] + s->r[i], y0, dy, G, 1);
         for (int j = ja < 0 ? 0 : ja; j <= jb && j < G; j++)
             for (int k = ia < 0 ? 0 : ia; k <= ib && k < G; k++) {
                 double px = x0 + (k + 0.5) * dx - s->x[i], py = y0 + (j + 0.5) * dy - s->y[i];

@@ -4,7 +4,11 @@
 #    a previous report leaves either the previous files or complete new ones,
 #    never a temporary or truncated file.
 #  - valgrind memcheck (when installed) finds no errors and no definite or
-#    indirect leaks in a short chain run with --out and a short falcon run.
+#    indirect leaks in a short chain run with --out and a short falcon run, and
+#    in the 2D layer: layer-make --n 30 --width-rm 12 (stopped at 0.5 s of
+#    settling to stay short), layer-impact --t-max 0.002 --out on a settled
+#    sample of the same size made without valgrind, and, when the build writes
+#    HDF5 samples, the same impact read from an .h5 sample (~10 s in all).
 set -u
 GW=$1
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
@@ -34,6 +38,26 @@ if command -v valgrind >/dev/null; then
             ko "valgrind memcheck: granwave $args"; tail -20 "$tmp/vg.log"
         fi
     done
+    layer=()
+    if "$GW" layer-make --n 30 --width-rm 12 --out "$tmp/s30.txt" >/dev/null 2>&1; then
+        layer+=("layer-make --n 30 --width-rm 12 --t-max 0.5 --out $tmp/vm.txt"
+                "layer-impact --sample $tmp/s30.txt --t-max 0.002 --out $tmp/vi")
+        if "$GW" layer-make --n 30 --width-rm 12 --out "$tmp/s30.h5" >/dev/null 2>&1; then
+            layer+=("layer-impact --sample $tmp/s30.h5 --t-max 0.002 --json")
+        else
+            echo "SKIP: valgrind on an HDF5 sample: layer-make does not write .h5 in this build"
+        fi
+    else
+        echo "SKIP: valgrind on the layer: layer-make not available"
+    fi
+    for args in "${layer[@]}"; do
+        if valgrind --error-exitcode=9 --leak-check=full --errors-for-leak-kinds=definite,indirect -q "$GW" $args >/dev/null 2>"$tmp/vg.log"; then
+            ok "valgrind memcheck clean: granwave $args"
+        else
+            ko "valgrind memcheck: granwave $args"; tail -20 "$tmp/vg.log"
+        fi
+    done
+    [ -s "$tmp/vi/ledger.csv" ] && [ -s "$tmp/vm.txt" ] || [ ${#layer[@]} -eq 0 ] || ko "layer runs under valgrind wrote no output"
 else
     echo "SKIP: valgrind not installed"
 fi

@@ -68,8 +68,10 @@ int gw_cmd_layer_make(int argc, char **argv)
     long n = mp.n, seed = mp.seed;
     const char *out = NULL;
     int json = 0;
-    o[i++] = OPT_L("n", &n, "N", "number of particles [300]", 1, 1000000);
-    o[i++] = OPT_D("rm", &mp.rm, "R", "mean particle radius R_m, m [0.325]", 0, INFINITY, 1);
+    /* the final overlap check is O(n^2): 1e5 particles take seconds there (and
+     * days of pluviation before) */
+    o[i++] = OPT_L("n", &n, "N", "number of particles, 1 .. 100000 [300]", 1, 100000);
+    o[i++] = OPT_D("rm", &mp.rm, "R", "mean particle radius R_m, m in [1e-5, 1e3] [0.325]", 1e-5, 1e3, 0);
     o[i++] = OPT_D("volume-ratio", &mp.volume_ratio, "V", "largest/smallest particle volume [10]", 1, 1e6, 0);
     o[i++] = OPT_D("width-rm", &mp.width_rm, "W", "box width in R_m [50]", 0, 1e6, 1);
     o[i++] = OPT_L("seed", &seed, "S", "random seed [1]", 0, 9000000000000000000.0);
@@ -95,9 +97,10 @@ int gw_cmd_layer_make(int argc, char **argv)
         return fail("layer-make", err.msg);
     if (!out)
         return fail("layer-make", "--out: the sample file to write is required");
-    size_t lo = strlen(out);
-    if (lo >= 3 && strcmp(out + lo - 3, ".h5") == 0) /* not silently text in a .h5 file */
-        return fail("layer-make", "--out: HDF5 samples are not implemented yet; give a text file name (e.g. sample.txt)");
+    if (gw_layer_sample_format_check(out, &err) != GW_OK) /* no HDF5 in this build: refuse before the run */
+        return fail("layer-make", err.msg);
+    if (!(m.lp.gravity > 0))
+        return fail("layer-make", "--gravity: pluviation needs gravity > 0 m/s^2");
     mp.n = (int)n;
     mp.seed = seed;
     gw_layer_sample s;

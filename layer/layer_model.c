@@ -70,9 +70,11 @@ gw_layer_params gw_layer_params_default(void)
 int gw_layer_params_validate(const gw_layer_params *p, gw_err *err)
 {
     int rc;
-    if ((rc = gw_check_positive(p->shear_modulus, "shear modulus G (Pa)", err)) != GW_OK ||
+    /* the upper bounds keep K_n u^(3/2) and the energies finite in double
+     * precision (diamond is 5e11 Pa, osmium 2.2e4 kg/m^3) */
+    if ((rc = gw_check_range(p->shear_modulus, "shear modulus G (Pa)", 1e-3, 1e15, err)) != GW_OK ||
         (rc = gw_check_range(p->poisson, "Poisson ratio nu", 0, 0.499999, err)) != GW_OK ||
-        (rc = gw_check_positive(p->density, "density (kg/m^3)", err)) != GW_OK ||
+        (rc = gw_check_range(p->density, "density (kg/m^3)", 1e-6, 1e6, err)) != GW_OK ||
         (rc = gw_check_range(p->gravity, "gravity (m/s^2)", 0, 1e4, err)) != GW_OK ||
         (rc = gw_check_positive(p->width, "box width (m)", err)) != GW_OK ||
         (rc = gw_check_range(p->damping, "normal damping alpha (s/m)", 0, 1e3, err)) != GW_OK ||

@@ -69,6 +69,20 @@ rc=$?
 check "energy monitor: RK4 at 30 us breaks the 1e-3 closure -> exit 1 naming the time; the state at failure kept as VTK, no half-written table (got $rc: $(cat "$tmp/stderr"))" \
   "[ $rc -eq 1 ] && grep -q 'energy monitor: ledger closure .* exceeds energy-tol 0.001 at t = .*snapshot_failure.vtk' '$tmp/stderr' && grep -q '^POINTS' '$tmp/emon/snapshot_failure.vtk' && [ ! -e '$tmp/emon/ledger.csv' ] && [ ! -e '$tmp/emon/impact.json' ]"
 
+# HDF5 samples (builds with HDF5): the same seed written as .h5 gives the same impact
+if "$gw" layer-make --n 60 --width-rm 16 --seed 3 --out "$tmp/a.h5" > /dev/null 2> "$tmp/h5err"; then
+  "$gw" layer-impact --sample "$tmp/a.h5" --rb-rm 1 --vi 10 --alpha 30 --t-max 0.005 --json > "$tmp/imp_h5.json"
+  check "layer-impact on the .h5 sample = on the text sample (e, penetration, ledger)" "python3 - '$tmp' <<'PY'
+import json, sys
+t = sys.argv[1]
+a, b = json.load(open(t + '/imp.json')), json.load(open(t + '/imp_h5.json'))
+keys = ['e', 'e_n', 'penetration', 'energy_error', 'dissipated_first_contact', 't_end']
+sys.exit(0 if all(a[k] == b[k] for k in keys) and a['ledger_end'] == b['ledger_end'] else 1)
+PY"
+else
+  check "without HDF5, layer-make .h5 refused with one line naming HDF5" "grep -qi hdf5 '$tmp/h5err' && [ ! -e '$tmp/a.h5' ]"
+fi
+
 bad() { # name, expected word in the message, args...
   local name="$1" word="$2"; shift 2
   "$gw" layer-impact "$@" > "$tmp/stdout" 2> "$tmp/stderr"

@@ -15,7 +15,7 @@
 #      64 MPI ranks (63 workers);
 #   5. the check pass of an 8000-case config (`sweep --check`: every case parsed,
 #      its sample read and checked), i.e. the cost of reading the sample per case.
-# Environment: NPT (impact points in 2-3, default 4).
+# Environment: NPT (impact points in 2-3, default 4); ONLY=speed runs items 1-3 only.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 B=$(cd "${1:-build}" && pwd)
@@ -78,6 +78,8 @@ print("default impact (R_b = R_m, V_i = 20 m/s, rk4), %d cases per run:" % n)
 for k in t:
     print("  %-30s %7.2f s wall %7.2f s CPU  %6.3f cases/s  speed-up %.2f" % (label[k], t[k], c[k], n / t[k], t["serial"] / t[k]))
 PY
+
+if [ "${ONLY:-}" = speed ]; then echo "# load average at end: $(cut -d' ' -f1-3 /proc/loadavg)"; exit 0; fi
 
 # 4. per-case cost against R_b and H
 echo "per-case cost (layer-impact, one core), wall s / CPU s / t_end s / bounced / mobile particles:"

@@ -6,6 +6,9 @@
  */
 #define _POSIX_C_SOURCE 200809L
 #include <errno.h>
+#include <math.h>
+#include <stdio.h>
+#include <sys/stat.h>
 #include <fcntl.h>
 #include <stdlib.h>
 #include <string.h>
@@ -179,6 +182,28 @@ static unsigned long fnv64(unsigned long h, const char *s)
     return h ^ 0xff; /* separator */
 }
 
+/* A value that names an existing regular file (a layer sample, say) adds the
+ * file's bytes to the config hash: a journal made with another version of the
+ * file is then refused instead of silently mixing rows of both. */
+static unsigned long fnv64_file(unsigned long h, const char *path)
+{
+    struct stat sb;
+    if (stat(path, &sb) != 0 || !S_ISREG(sb.st_mode))
+        return h;
+    FILE *f = fopen(path, "rb");
+    if (!f)
+        return h;
+    unsigned char buf[65536];
+    size_t got;
+    while ((got = fread(buf, 1, sizeof buf, f)) > 0)
+        for (size_t i = 0; i < got; i++) {
+            h ^= buf[i];
+            h *= 1099511628211UL;
+        }
+    fclose(f);
+    return h ^ 0xfe;
+}
+
 static int config_finish(const char *path, const gw_sweep_model *const *models, int nmodels,
                          gw_sweep_config *cfg, const gw_sweep_model **model, int rc,
                          const parse_ctx *pc, gw_err *err);
@@ -242,10 +267,11 @@ static int config_finish(const char *path, const gw_sweep_model *const *models, 
         }
         h = fnv64(h, cfg->grid[i].name);
         for (int j = 0; j < cfg->grid[i].nvalues; j++)
-            h = fnv64(h, cfg->grid[i].values[j]);
+            h = fnv64_file(fnv64(h, cfg->grid[i].values[j]), cfg->grid[i].values[j]);
     }
     for (int i = 0; i < cfg->nparams; i++)
-        h = fnv64(fnv64(h, cfg->params[i].name), cfg->params[i].values[0]);
+        h = fnv64_file(fnv64(fnv64(h, cfg->params[i].name), cfg->params[i].values[0]),
+                       cfg->params[i].values[0]);
     cfg->hash = h;
     return GW_OK;
 }
@@ -304,7 +330,8 @@ int gw_sweep_format_row(const gw_sweep_config *cfg, long k, const double *out, i
     for (int i = 0; i < cfg->ngrid && w < n; i++)
         w += (size_t)snprintf(buf + w, n - w, ",%s", values[i]);
     for (int i = 0; i < ncol && w < n; i++)
-        w += (size_t)snprintf(buf + w, n - w, ",%.17g", out[i]);
+        w += isnan(out[i]) ? (size_t)snprintf(buf + w, n - w, ",nan") /* never "-nan" */
+                           : (size_t)snprintf(buf + w, n - w, ",%.17g", out[i]);
     if (w + 12 >= n)
         return GW_EINVAL;
     buf[w] = ','; /* the checksum covers the row up to and including this comma */

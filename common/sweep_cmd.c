@@ -16,6 +16,7 @@
 #include <stdatomic.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 #include <unistd.h>
 
 #include "gw_sweep.h"
@@ -52,6 +53,8 @@ static int run_case(const sweep_run *s, long k, char *row, gw_err *err)
 {
     const char *names[2 * GW_SWEEP_MAX_KEYS], *values[2 * GW_SWEEP_MAX_KEYS];
     double out[64];
+    if (s->m->ncolumns > 64)
+        return gw_err_set(err, GW_EINVAL, "model %s has %d columns (at most 64)", s->m->name, s->m->ncolumns);
     gw_sweep_case(s->cfg, k, names, values);
     int rc = s->m->run(s->cfg->ngrid + s->cfg->nparams, names, values, out, err);
     if (rc != GW_OK) {
@@ -135,7 +138,12 @@ static void mpi_master(sweep_run *s, int size)
     long next = 0;
     while (active > 0 && buf) {
         MPI_Status st;
-        MPI_Recv(buf, ROW_MAX + 16, MPI_CHAR, MPI_ANY_SOURCE, MPI_ANY_TAG, MPI_COMM_WORLD, &st);
+        /* Wait without spinning: Open MPI's blocking receive busy-polls, and an
+         * idle master would take a core from the workers (bench/README_layer.md). */
+        int ready = 0;
+        while (MPI_Iprobe(MPI_ANY_SOURCE, MPI_ANY_TAG, MPI_COMM_WORLD, &ready, &st) == MPI_SUCCESS && !ready)
+            nanosleep(&(struct timespec){.tv_sec = 0, .tv_nsec = 1000000}, NULL);
+        MPI_Recv(buf, ROW_MAX + 16, MPI_CHAR, st.MPI_SOURCE, st.MPI_TAG, MPI_COMM_WORLD, &st);
         gw_err err = {{0}};
         if (st.MPI_TAG == TAG_ROW) {
             int rc = record(s, buf, &err);
@@ -236,8 +244,12 @@ int gw_cmd_sweep(int argc, char **argv, const gw_sweep_model *const *models, int
         const char *names[2 * GW_SWEEP_MAX_KEYS], *values[2 * GW_SWEEP_MAX_KEYS];
         for (long k = 0; k < cfg.ncases && code == 0; k++) {
             gw_sweep_case(&cfg, k, names, values);
-            if (m->check(cfg.ngrid + cfg.nparams, names, values, &err) != GW_OK)
+            if (m->check(cfg.ngrid + cfg.nparams, names, values, &err) != GW_OK) {
+                char tmp[sizeof err.msg];
+                snprintf(tmp, sizeof tmp, "%s", err.msg);
+                gw_err_set(&err, GW_EINVAL, "case %ld: %s", k, tmp);
                 code = 2;
+            }
         }
         if (code)
             fprintf(stderr, "granwave sweep: %s: %s\n", pos[0], err.msg);

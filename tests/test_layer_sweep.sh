@@ -109,6 +109,17 @@ else
         { ko "MPI table differs or failed"; tail -5 "$tmp/mpi.log"; }
 fi
 
+# the sample's contents belong to the config: a journal made with another
+# sample is refused, not mixed (the config text alone is unchanged)
+cp "$tmp/S.txt" "$tmp/S.orig"
+echo "# edited" >>"$tmp/S.txt"
+"$GW" sweep "$tmp/s.ini" --out "$tmp/ref" --quiet --jobs 2 >"$tmp/o" 2>"$tmp/e"; rc=$?
+[ $rc -eq 2 ] && grep -q "another sweep" "$tmp/e" && ok "rerun after the sample changed is refused: $(cat "$tmp/e")" ||
+    ko "rerun after the sample changed: exit $rc: $(cat "$tmp/e")"
+cp "$tmp/S.orig" "$tmp/S.txt"
+"$GW" sweep "$tmp/s.ini" --out "$tmp/ref" --quiet --jobs 2 >"$tmp/o" 2>"$tmp/e"; rc=$?
+[ $rc -eq 0 ] && ok "the original sample resumes the finished sweep (exit 0)" || ko "rerun with the original sample: exit $rc: $(cat "$tmp/e")"
+
 # bad values: refused before anything runs
 badcase() { # name expected-text extra-grid-or-params
     sed "$3" "$tmp/s.ini" >"$tmp/$1.ini"

@@ -7,6 +7,7 @@
 #include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
+#include <strings.h>
 
 #include "gw_common.h"
 
@@ -150,4 +151,23 @@ int gw_parse_int_range(const char *s, const char *name, long lo, long hi, long *
     if (rc == GW_OK && *a > *b)
         rc = gw_err_set(err, GW_EINVAL, "%s: range '%s' is empty (start > end)", name, s);
     return rc;
+}
+
+char *gw_str_trim(char *s)
+{
+    while (*s == ' ' || *s == '\t')
+        s++;
+    size_t n = strlen(s);
+    while (n > 0 && (s[n - 1] == ' ' || s[n - 1] == '\t' || s[n - 1] == '\r'))
+        s[--n] = '\0';
+    return s;
+}
+
+int gw_parse_flag(const char *v)
+{
+    if (strcmp(v, "1") == 0 || strcasecmp(v, "true") == 0)
+        return 1;
+    if (strcmp(v, "0") == 0 || strcasecmp(v, "false") == 0)
+        return 0;
+    return -1;
 }

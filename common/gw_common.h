@@ -64,6 +64,12 @@ int gw_parse_double_list(const char *s, const char *name, double **out, int *n,
 /* Parse "A:B" or "A" (integers, A <= B, both in [lo, hi]). */
 int gw_parse_int_range(const char *s, const char *name, long lo, long hi, long *a,
                        long *b, gw_err *err);
+/* Strip leading blanks/tabs and trailing blanks/tabs/CR in place; returns the
+ * first kept character. */
+char *gw_str_trim(char *s);
+/* A flag's value in a config or table: 1 for "1"/"true", 0 for "0"/"false"
+ * (case-insensitive), -1 otherwise. */
+int gw_parse_flag(const char *v);
 
 /* ---- files ---- */
 

@@ -35,15 +35,6 @@ static char *dupstr(const char *s)
     return d;
 }
 
-static char *trim(char *s)
-{
-    while (*s == ' ' || *s == '\t')
-        s++;
-    size_t n = strlen(s);
-    while (n > 0 && (s[n - 1] == ' ' || s[n - 1] == '\t' || s[n - 1] == '\r'))
-        s[--n] = '\0';
-    return s;
-}
 
 /* Split a grid value: "A:B" (integers) or "a, b, c". */
 static int split_values(const char *value, gw_sweep_key *k, char *msg, size_t mlen)
@@ -74,7 +65,7 @@ static int split_values(const char *value, gw_sweep_key *k, char *msg, size_t ml
     k->values = calloc((size_t)cap, sizeof *k->values);
     char *save = NULL;
     for (char *tok = strtok_r(copy, ",", &save); k->values && tok; tok = strtok_r(NULL, ",", &save)) {
-        char *t = trim(tok);
+        char *t = gw_str_trim(tok);
         if (!*t) {
             snprintf(msg, mlen, "%s: empty value in list '%s'", k->name, value);
             free(copy);

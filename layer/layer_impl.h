@@ -86,6 +86,10 @@ int layer_contact_region(const gw_layer *L, const layer_contact *c, const double
 int layer_contact_region_at(const gw_layer *L, const layer_contact *c, const double *y,
                             double un, const double nn[2]);
 
+/* Add the state-function terms of the ledger (kinetic, potential, strain) into
+ * out[0] (by_region = 0) or into out[region] (layer_regions.c). */
+void layer_ledger_sum(const gw_layer *L, gw_layer_energy *out, int by_region);
+
 /* Fill sys (rhs, roots, dim, scale) for the current list. */
 void layer_system_fill(gw_layer *L);
 

@@ -414,28 +414,9 @@ void layer_system_fill(gw_layer *L)
 void gw_layer_energy_of(const gw_layer *L, gw_layer_energy *e)
 {
     memset(e, 0, sizeof *e);
+    layer_ledger_sum(L, e, 0);
     const double *y = L->y;
     const int n = L->n;
-    for (int i = 0; i < n; i++) {
-        const double *s = y + 6 * i;
-        double ke = 0.5 * L->m[i] * (s[3] * s[3] + s[4] * s[4]) +
-                    0.5 * L->inertia[i] * s[5] * s[5];
-        if (i == L->block)
-            e->kinetic_block += ke;
-        else
-            e->kinetic_soil += ke;
-        if (!L->fixed[i])
-            e->potential += L->m[i] * L->p.gravity * (s[1] - L->y_ref[i]);
-    }
-    for (int k = 0; k < L->nc; k++) {
-        double fn, ft, kt, un, nn[2];
-        layer_contact_forces(L, k, y, &fn, &ft, &kt);
-        if (fn > 0) {
-            layer_contact_geometry(L, &L->c[k], y, &un, nn, NULL);
-            e->strain_normal += 0.4 * fn * un;
-            e->strain_tangent += ft * ft / (2 * kt);
-        }
-    }
     e->dissipated = y[6 * n + L->nc];
     e->mindlin_excess = y[6 * n + L->nc + 1];
     e->total = e->kinetic_block + e->kinetic_soil + e->strain_normal + e->strain_tangent +

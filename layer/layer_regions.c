@@ -82,17 +82,12 @@ int gw_layer_region_count(const gw_layer *L)
     return L->reg_n > 0 ? L->reg_n + 2 : 0;
 }
 
-int gw_layer_region_ledger(const gw_layer *L, gw_layer_energy *out)
+void layer_ledger_sum(const gw_layer *L, gw_layer_energy *out, int by_region)
 {
-    const int nr = gw_layer_region_count(L);
-    if (nr == 0)
-        return 0;
-    memset(out, 0, (size_t)nr * sizeof *out);
     const double *y = L->y;
-    const int n = L->n;
-    for (int i = 0; i < n; i++) {
+    for (int i = 0; i < L->n; i++) {
         const double *s = y + 6 * i;
-        gw_layer_energy *e = out + particle_region(L, i, y);
+        gw_layer_energy *e = out + (by_region ? particle_region(L, i, y) : 0);
         double ke = 0.5 * L->m[i] * (s[3] * s[3] + s[4] * s[4]) + 0.5 * L->inertia[i] * s[5] * s[5];
         if (i == L->block)
             e->kinetic_block += ke;
@@ -107,11 +102,20 @@ int gw_layer_region_ledger(const gw_layer *L, gw_layer_energy *out)
         if (!(fn > 0))
             continue;
         layer_contact_geometry(L, &L->c[k], y, &un, nn, NULL);
-        gw_layer_energy *e = out + layer_contact_region(L, &L->c[k], y);
+        gw_layer_energy *e = out + (by_region ? layer_contact_region_at(L, &L->c[k], y, un, nn) : 0);
         e->strain_normal += 0.4 * fn * un;
         e->strain_tangent += ft * ft / (2 * kt);
     }
-    const double *tail = y + 6 * n + L->nc + 2;
+}
+
+int gw_layer_region_ledger(const gw_layer *L, gw_layer_energy *out)
+{
+    const int nr = gw_layer_region_count(L);
+    if (nr == 0)
+        return 0;
+    memset(out, 0, (size_t)nr * sizeof *out);
+    layer_ledger_sum(L, out, 1);
+    const double *tail = L->y + 6 * L->n + L->nc + 2;
     for (int q = 0; q < nr; q++) {
         gw_layer_energy *e = out + q;
         e->dissipated = tail[2 * q];

@@ -133,16 +133,6 @@ static int same_except(const gw_layer_results *t, const gw_layer_groups *gs, lon
     return 1;
 }
 
-/* A flag's grid value: 1/true or 0/false (case-insensitive, as the layer
- * sweep model accepts them); -1 otherwise. */
-static int flag_value(const char *v)
-{
-    if (strcmp(v, "1") == 0 || strcasecmp(v, "true") == 0)
-        return 1;
-    if (strcmp(v, "0") == 0 || strcasecmp(v, "false") == 0)
-        return 0;
-    return -1;
-}
 
 static int walls_make(layer_stats_run *R)
 {
@@ -155,11 +145,11 @@ static int walls_make(layer_stats_run *R)
         return GW_ENOMEM;
     for (int a = 0; a < R->gs.n; a++) {
         long ra = R->gs.g[a].first;
-        if (flag_value(t->grid_value[ra * t->ngrid + kw]) != 0)
+        if (gw_parse_flag(t->grid_value[ra * t->ngrid + kw]) != 0)
             continue;
         for (int b = 0; b < R->gs.n; b++) {
             long rb = R->gs.g[b].first;
-            if (flag_value(t->grid_value[rb * t->ngrid + kw]) == 1 && same_except(t, &R->gs, ra, rb, kw)) {
+            if (gw_parse_flag(t->grid_value[rb * t->ngrid + kw]) == 1 && same_except(t, &R->gs, ra, rb, kw)) {
                 R->walls[R->nwalls][0] = a;
                 R->walls[R->nwalls++][1] = b;
                 break;

@@ -47,15 +47,6 @@ void gw_layer_results_free(gw_layer_results *t)
     memset(t, 0, sizeof *t);
 }
 
-static char *trim(char *s)
-{
-    while (*s == ' ' || *s == '\t')
-        s++;
-    size_t n = strlen(s);
-    while (n > 0 && (s[n - 1] == ' ' || s[n - 1] == '\t' || s[n - 1] == '\r'))
-        s[--n] = '\0';
-    return s;
-}
 
 /* Split line in place at commas into at most max cells; returns the count
  * (max + 1 when there are more). */
@@ -67,7 +58,7 @@ static int split(char *line, char **cells, int max)
         if (c)
             *c = '\0';
         if (n < max)
-            cells[n] = trim(p);
+            cells[n] = gw_str_trim(p);
         n++;
         if (!c || n > max)
             return n;
@@ -92,7 +83,7 @@ static int add_param(gw_layer_results *t, char *text)
     if (!eq || t->nparams >= GW_LAYER_RESULTS_MAX_KEYS)
         return GW_OK; /* other comments carry no parameter */
     *eq = '\0';
-    char *name = trim(text), *value = trim(eq + 1);
+    char *name = gw_str_trim(text), *value = gw_str_trim(eq + 1);
     if (!*name)
         return GW_OK;
     t->param_name[t->nparams] = strdup(name);
@@ -233,11 +224,11 @@ int gw_layer_results_parse(const char *text, const char *name, gw_layer_results 
         if (next)
             *next++ = '\0';
         ln++;
-        char *line = trim(p);
+        char *line = gw_str_trim(p);
         if (!*line)
             continue;
         if (*line == '#') {
-            line = trim(line + 1);
+            line = gw_str_trim(line + 1);
             if (!header_line && strncmp(line, "param ", 6) == 0 && add_param(t, line + 6) != GW_OK)
                 rc = gw_err_set(err, GW_ENOMEM, "%s: out of memory", name);
             continue;

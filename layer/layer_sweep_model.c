@@ -65,15 +65,6 @@ static int has_key(const char *name)
     return gw_cli_find(co.o, name) != NULL;
 }
 
-/* A flag's value in a sweep: 1/true or 0/false (case-insensitive); -1 otherwise. */
-static int flag_value(const char *v)
-{
-    if (strcmp(v, "1") == 0 || strcasecmp(v, "true") == 0)
-        return 1;
-    if (strcmp(v, "0") == 0 || strcasecmp(v, "false") == 0)
-        return 0;
-    return -1;
-}
 
 /* Parse the pairs with the command's table (as argv "--name value", flags as
  * "--name" when true), resolve them, place the impact point and read the
@@ -89,7 +80,7 @@ static int prepare(case_opts *co, int nk, const char *const *names, const char *
     int argc = 0, rc = argv && dashed ? GW_OK : gw_err_set(err, GW_ENOMEM, "out of memory");
     for (int i = 0; rc == GW_OK && i < nk; i++) {
         const gw_opt *o = gw_cli_find(co->o, names[i]);
-        const int flag = o && o->kind == GW_OPT_FLAG, on = flag ? flag_value(values[i]) : 1;
+        const int flag = o && o->kind == GW_OPT_FLAG, on = flag ? gw_parse_flag(values[i]) : 1;
         size_t len = strlen(names[i]) + 3;
         if (on < 0)
             rc = gw_err_set(err, GW_EINVAL, "%s: '%s' is not a flag value (0, 1, true, false)", names[i], values[i]);

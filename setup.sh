@@ -58,8 +58,10 @@ test)
     # leaks included, plus the program's input-handling test
     echo "setup: sanitizer build ($BUILD_DIR-asan)"
     BUILD_DIR="$BUILD_DIR-asan" build -DGW_WERROR=ON -DGW_SANITIZE=ON -DCMAKE_BUILD_TYPE=Debug
+    src=$PWD
     cd "$BUILD_DIR-asan"
     export UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1
+    export LSAN_OPTIONS="suppressions=$src/tests/lsan.supp:print_suppressions=0"
     ctest --output-on-failure -j 2 -L unit
     ctest --output-on-failure -R test_chain_cli
     ;;

@@ -336,6 +336,13 @@ int gw_layer_impact(const gw_layer_sample *s, const gw_layer_params *lp,
                     const gw_solver_params *sp, const char *vtk_dir,
                     gw_layer_impact_result *res, gw_err *err);
 
+/* Write res's time series (ledger, block, rings, peaks) and scalar results to
+ * path as HDF5 (layer_h5.c documents the layout), atomically. GW_EUNSUPPORTED
+ * in a build without HDF5, GW_EIO when the file cannot be written (nothing is
+ * left behind). */
+int gw_layer_impact_write_h5(const gw_layer_impact_result *res, const char *path,
+                             const char *header, gw_err *err);
+
 /* Crown analysis on res's ring series: peak times per ring and the wave speed
  * by a linear fit (GSL) of ring radius against peak time. Fills the peak and
  * wave-speed fields of res. */

@@ -8,6 +8,7 @@ add_library(gw_layer STATIC
   ${CMAKE_CURRENT_LIST_DIR}/layer_impact.c
   ${CMAKE_CURRENT_LIST_DIR}/layer_crowns.c
   ${CMAKE_CURRENT_LIST_DIR}/layer_regions.c
+  ${CMAKE_CURRENT_LIST_DIR}/layer_h5.c
   ${CMAKE_CURRENT_LIST_DIR}/layer_vtk.c
   ${CMAKE_CURRENT_LIST_DIR}/layer_cmd.c
   ${CMAKE_CURRENT_LIST_DIR}/layer_cli.c

@@ -337,7 +337,15 @@ static int write_csvs(const impact_cli *c, const gw_layer_impact_result *r, cons
             fprintf(f.fp, "%.9g", r->peak_kin_t[q]);
         fprintf(f.fp, "\n");
     }
-    return gw_afile_commit(&f, err);
+    if ((rc = gw_afile_commit(&f, err)) != GW_OK)
+        return rc;
+#if GW_HAVE_HDF5
+    if (gw_path_join(path, sizeof path, c->out, "impact.h5") != GW_OK)
+        return gw_err_set(err, GW_EINVAL, "--out: directory name too long");
+    return gw_layer_impact_write_h5(r, path, hdr, err);
+#else
+    return GW_OK;
+#endif
 }
 
 int gw_cmd_layer_impact(int argc, char **argv)
@@ -346,7 +354,7 @@ int gw_cmd_layer_impact(int argc, char **argv)
     gw_opt o[LAYER_IMPACT_NOPTS + 8];
     int i = layer_impact_options(&c, o);
     o[i++] = (gw_opt){.name = "json", .kind = GW_OPT_FLAG, .dest = &c.json, .help = "print the result as JSON"};
-    o[i++] = OPT_S("out", &c.out, "DIR", "write ledger.csv, crowns.csv, crowns_peaks.csv, impact.json, VTK");
+    o[i++] = OPT_S("out", &c.out, "DIR", "write ledger.csv, crowns.csv, crowns_peaks.csv, impact.json, VTK (and impact.h5 with HDF5)");
     o[i] = (gw_opt){0};
     gw_err err = {{0}};
     int help = 0, npos = 0;

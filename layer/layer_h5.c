@@ -1,0 +1,135 @@
+/*
+ * layer_h5.c: the time series of one impact as one HDF5 file (impact.h5), the
+ * same numbers as ledger.csv and crowns.csv (physics.md 2.4-2.5, B.7-B.14).
+ *
+ * Datasets (SI units, attribute "units" on each; "columns" where a dataset has
+ * named columns):
+ *   t [ns] (s); ledger [ns x 8] (J: kinetic_block, kinetic_soil, strain_normal,
+ *   strain_tangent, mindlin_excess, dissipated, potential, total);
+ *   block [ns x 4] (x, y in m, vx, vy in m/s);
+ *   ring_strain, ring_kinetic, ring_dissipated [ns x nrings] (J),
+ *   ring_coordination [ns x nrings] (contacts per particle); ring_r [nrings] (m);
+ *   peak_strain_t, peak_kinetic_t [nrings] (s, NaN: no peak).
+ * Root attributes: "run" (version, command line, settings) and the scalar
+ * results (e_n, e, wave_speed, ...). Written under a temporary name and renamed
+ * into place, so an interrupted run leaves no partial file.
+ */
+#define _POSIX_C_SOURCE 200809L
+#include <fcntl.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <unistd.h>
+#include <string.h>
+
+#include "gw_layer.h"
+
+#if GW_HAVE_HDF5
+#include <hdf5.h>
+
+static int put_string_attr(hid_t obj, const char *name, const char *value)
+{
+    hid_t ts = H5Tcopy(H5T_C_S1);
+    H5Tset_size(ts, strlen(value) + 1);
+    hid_t as = H5Screate(H5S_SCALAR);
+    hid_t at = H5Acreate2(obj, name, ts, as, H5P_DEFAULT, H5P_DEFAULT);
+    int bad = at < 0 || H5Awrite(at, ts, value) < 0;
+    if (at >= 0)
+        H5Aclose(at);
+    H5Sclose(as);
+    H5Tclose(ts);
+    return bad;
+}
+
+static int put_double_attr(hid_t obj, const char *name, double v)
+{
+    hid_t as = H5Screate(H5S_SCALAR);
+    hid_t at = H5Acreate2(obj, name, H5T_NATIVE_DOUBLE, as, H5P_DEFAULT, H5P_DEFAULT);
+    int bad = at < 0 || H5Awrite(at, H5T_NATIVE_DOUBLE, &v) < 0;
+    if (at >= 0)
+        H5Aclose(at);
+    H5Sclose(as);
+    return bad;
+}
+
+static int put(hid_t file, const char *name, const double *data, hsize_t rows, hsize_t cols,
+               const char *units, const char *columns)
+{
+    hsize_t dims[2] = {rows, cols};
+    hid_t space = H5Screate_simple(cols > 0 ? 2 : 1, dims, NULL);
+    hid_t ds = H5Dcreate2(file, name, H5T_NATIVE_DOUBLE, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+    int bad = ds < 0 || H5Dwrite(ds, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, data) < 0;
+    if (!bad)
+        bad = put_string_attr(ds, "units", units) || (columns && put_string_attr(ds, "columns", columns));
+    if (ds >= 0)
+        H5Dclose(ds);
+    H5Sclose(space);
+    return bad;
+}
+
+int gw_layer_impact_write_h5(const gw_layer_impact_result *r, const char *path, const char *header,
+                             gw_err *err)
+{
+    const size_t ns = (size_t)r->ns, nr = (size_t)r->nrings;
+    double *led = malloc(8 * ns * sizeof *led);
+    if (!led)
+        return gw_err_set(err, GW_ENOMEM, "impact.h5: out of memory");
+    for (size_t k = 0; k < ns; k++) {
+        const gw_layer_energy *e = &r->ledger[k];
+        double v[8] = {e->kinetic_block, e->kinetic_soil, e->strain_normal, e->strain_tangent,
+                       e->mindlin_excess, e->dissipated, e->potential, e->total};
+        memcpy(led + 8 * k, v, sizeof v);
+    }
+    char tmp[4200];
+    snprintf(tmp, sizeof tmp, "%s.tmp", path);
+    /* our message names the file; HDF5's own error stack would add dozens of lines */
+    H5E_auto2_t old_fn;
+    void *old_data;
+    H5Eget_auto2(H5E_DEFAULT, &old_fn, &old_data);
+    H5Eset_auto2(H5E_DEFAULT, NULL, NULL);
+    hid_t file = H5Fcreate(tmp, H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
+    int bad = file < 0;
+    if (!bad) {
+        bad = put(file, "t", r->t, ns, 0, "s", NULL) ||
+              put(file, "ledger", led, ns, 8, "J",
+                  "kinetic_block,kinetic_soil,strain_normal,strain_tangent,mindlin_excess,"
+                  "dissipated,potential,total") ||
+              put(file, "block", r->block, ns, 4, "m, m, m/s, m/s", "x,y,vx,vy") ||
+              put(file, "ring_strain", r->ring_strain, ns, nr, "J", NULL) ||
+              put(file, "ring_kinetic", r->ring_kin, ns, nr, "J", NULL) ||
+              put(file, "ring_dissipated", r->ring_diss, ns, nr, "J", NULL) ||
+              put(file, "ring_coordination", r->ring_coord, ns, nr, "contacts per particle", NULL) ||
+              put(file, "ring_r", r->ring_r, nr, 0, "m", NULL) ||
+              put(file, "peak_strain_t", r->peak_strain_t, nr, 0, "s", NULL) ||
+              put(file, "peak_kinetic_t", r->peak_kin_t, nr, 0, "s", NULL) ||
+              put_string_attr(file, "run", header ? header : "") ||
+              put_double_attr(file, "e_n", r->e_n) || put_double_attr(file, "e", r->e) ||
+              put_double_attr(file, "penetration", r->penetration) ||
+              put_double_attr(file, "energy_error", r->energy_error) ||
+              put_double_attr(file, "wave_speed", r->wave_speed) ||
+              put_double_attr(file, "dissipated_first_contact", r->dissipated_first_contact) ||
+              put_double_attr(file, "bounced", r->bounced);
+        if (H5Fclose(file) < 0)
+            bad = 1;
+    }
+    free(led);
+    H5Eset_auto2(H5E_DEFAULT, old_fn, old_data);
+    if (!bad) { /* on disk before the rename makes it visible */
+        int fd = open(tmp, O_RDONLY);
+        bad = fd < 0 || fsync(fd) != 0;
+        if (fd >= 0)
+            close(fd);
+    }
+    if (bad || rename(tmp, path) != 0) {
+        remove(tmp);
+        return gw_err_set(err, GW_EIO, "%s: cannot write the HDF5 file", path);
+    }
+    return GW_OK;
+}
+#else
+int gw_layer_impact_write_h5(const gw_layer_impact_result *r, const char *path, const char *header,
+                             gw_err *err)
+{
+    (void)r, (void)header;
+    return gw_err_set(err, GW_EUNSUPPORTED, "%s: this build has no HDF5", path);
+}
+#endif

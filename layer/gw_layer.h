@@ -8,10 +8,12 @@
  * name says _deg). The box spans 0 <= x <= width, gravity acts along -y, the
  * bottom wall is y = 0.
  *
- * State vector of a gw_layer (dimension 6 n + n_c + 2, rebuilt with the contact
- * list): per particle i: x, y, theta, vx, vy, omega (6 i .. 6 i + 5); per listed
- * contact c: its tangential elastic force F_t (6 n + c); then the dissipated
- * energy E_d and the Mindlin stiffness-variation work W_K (see layer_model.c).
+ * State vector of a gw_layer (dimension 6 n_b + n_c + 2, rebuilt with the contact
+ * list): per rigid body k: x, y, theta, vx, vy, omega of its centre of mass
+ * (6 k .. 6 k + 5); per listed contact c: its tangential elastic force F_t
+ * (6 n_b + c); then the dissipated energy E_d and the Mindlin stiffness-variation
+ * work W_K (see layer_model.c). A body is one disc (type A soil; then n_b = n and
+ * body k is particle k) or a rigid clump of discs (type B, layer_clumps.c).
  *
  * Errors: every fallible call returns GW_OK or a negative gw status and fills a
  * gw_err naming the offending input. A failed call leaves no half-built object
@@ -68,17 +70,26 @@ double gw_layer_inertia(const gw_layer_params *p, double r);
 /* "disc (unit thickness)" or "sphere". */
 const char *gw_layer_mass_law_name(int mass_law);
 
-/* One particle's initial state. fixed = 1 freezes it (infinite mass, no motion). */
+/* One particle's initial state. fixed = 1 freezes it (infinite mass, no motion).
+ * clump = 0: the disc is a body of its own. clump = k > 0: all particles with
+ * the same k form one rigid clump (type B soil): mass and moment of inertia are
+ * the sums over the members (parallel-axis terms included; the area shared by
+ * overlapping members is counted twice), its velocity and spin at the centre
+ * of mass are the vx, vy, w of its first member, and it is fixed when any
+ * member is. */
 typedef struct gw_layer_body {
     double x, y, r;    /* m */
     double vx, vy, w;  /* m/s, rad/s */
     int fixed;
+    int clump;
 } gw_layer_body;
 
 typedef struct gw_layer gw_layer;
 
-/* Build a layer of n bodies (copied). Validates the parameters, the radii
- * (positive, finite) and the positions (finite, inside the walls). */
+/* Build a layer of n particles (copied). Validates the parameters, the radii
+ * (positive, finite), the positions (finite, inside the walls) and the clump
+ * ids (>= 0; members of a clump must overlap or touch each other: connected;
+ * at most 64 members). */
 int gw_layer_create(const gw_layer_params *p, int n, const gw_layer_body *bodies,
                     gw_layer **out, gw_err *err);
 void gw_layer_free(gw_layer *L);
@@ -110,10 +121,17 @@ void gw_layer_get_stats(const gw_layer *L, gw_layer_stats *st);
 
 int gw_layer_n(const gw_layer *L);
 double gw_layer_time(const gw_layer *L);
-/* Current state of particle i: x, y, theta, vx, vy, omega. */
+/* Current state of particle i: centre x, y, its body's theta, the velocity
+ * vx, vy of the disc centre, its body's omega. */
 void gw_layer_particle(const gw_layer *L, int i, double s[6]);
 double gw_layer_radius(const gw_layer *L, int i);
+/* Mass of the rigid body particle i belongs to (kg). */
 double gw_layer_particle_mass(const gw_layer *L, int i);
+/* Rigid bodies: their number (n without clumps), the body of particle i, and
+ * body k's state x, y, theta, vx, vy, omega at its centre of mass. */
+int gw_layer_body_count(const gw_layer *L);
+int gw_layer_body_of(const gw_layer *L, int i);
+void gw_layer_body_state(const gw_layer *L, int k, double s[6]);
 const gw_layer_params *gw_layer_get_params(const gw_layer *L);
 /* Number of closed contacts (u_n > 0) of particle i, walls included. */
 int gw_layer_contact_count(const gw_layer *L, int i);
@@ -174,6 +192,8 @@ typedef struct gw_layer_sample {
     long seed;
     int mass_law;
     double *x, *y, *r;   /* [n], m; owned by the sample */
+    int *body;           /* [n] rigid-body id of each particle in [0, n), or NULL
+                            (every particle a disc); owned by the sample */
 } gw_layer_sample;
 
 void gw_layer_sample_free(gw_layer_sample *s);
@@ -190,10 +210,17 @@ void gw_layer_sample_free(gw_layer_sample *s);
  *   mass_law disc|sphere   [disc]
  *   n N              (integer in [1, 1e7]; last header line)
  * then N lines "x y r" (m), each key at most once, nothing after the value.
+ * Version 2 (written for clump samples, type B soil) is the same with a 4th
+ * column: "x y r body", body an integer id in [0, N); particles sharing an id
+ * form one rigid clump and must overlap or touch (members connected within
+ * 1e-9 of the sum of radii), at most 64 per clump. Version 1 files read with
+ * body = NULL.
  * HDF5 sample (format version 1, builds with HDF5): root attributes format =
  * "granwave-layer-sample", format_version = 1, granwave_version, width, rm,
  * volume_ratio, porosity (double), seed (integer), mass_law ("disc"/"sphere"),
- * n (integer), units and header (strings); datasets x, y, r of n doubles (m).
+ * n (integer), units and header (strings); datasets x, y, r of n doubles (m),
+ * and for clump samples an integer dataset body (read when present, same
+ * checks as the text column).
  *
  * Write: HDF5 when path ends in .h5 or .hdf5 (GW_EUNSUPPORTED in a build
  * without HDF5), text otherwise; atomically (temporary name, then rename).
@@ -230,6 +257,7 @@ typedef struct gw_layer_make_params {
     double height_rm;      /* > 0: after settling keep only the particles lying
                               wholly below height_rm R_m (the box height H of
                               physics.md 2.2) [0 = keep all] */
+    int clumps;            /* 1: type B soil, n rigid clumps (layer_clumps.c) [0] */
 } gw_layer_make_params;
 
 gw_layer_make_params gw_layer_make_params_default(void);
@@ -242,13 +270,17 @@ typedef struct gw_layer_make_result {
     int converged;        /* kinetic energy went below the threshold */
     double wall_ms;
     long steps, rebuilds;
-    int n_removed;        /* particles above height_rm R_m taken away */
+    int n_removed;        /* particles (clumps: grains) above height_rm R_m taken away */
+    int n_bodies, n_discs; /* grains and discs in the sample */
 } gw_layer_make_result;
 
 /* Pluviate a sample (lp: material, friction; width and mass law are taken from
  * mp / lp). Deterministic for a seed: a splitmix64 generator draws the radii
  * (uniform in radius between R_min and R_max = V^(1/3) R_min, mean R_m) and the
- * jitter of the initial grid. */
+ * jitter of the initial grid. With mp->clumps (type B soil) it draws per clump
+ * the equivalent radius from the same grading, the aspect ratio (uniform in
+ * [1, 4]) and the orientation; out->body then holds the clump of each disc and
+ * out->n counts discs (res->n_bodies the clumps). */
 int gw_layer_make(const gw_layer_params *lp, const gw_layer_make_params *mp,
                   gw_layer_sample *out, gw_layer_make_result *res, gw_err *err);
 

@@ -57,7 +57,9 @@ static const char *make_summary =
     "dropped under gravity in a box with rigid walls until the kinetic energy is below\n"
     "a threshold; Hertz-Mindlin contacts with friction, Hunt-Crossley normal damping\n"
     "while settling. Writes the text sample format of gw_layer.h. Deterministic for a\n"
-    "seed. SI units.";
+    "seed. SI units. --clumps: type B soil, n rigid clumps of overlapping discs\n"
+    "(quasi-rectangular, aspect ratio uniform in [1, 4], equivalent radius on the\n"
+    "discs' grading curve); the sample then carries a body id per disc.";
 
 int gw_cmd_layer_make(int argc, char **argv)
 {
@@ -81,6 +83,8 @@ int gw_cmd_layer_make(int argc, char **argv)
     o[i++] = OPT_D("modulus-factor", &mp.modulus_factor, "F", "settle with F*G then relax with G [1]", 0, 1, 1);
     o[i++] = OPT_D("dt", &mp.dt, "DT", "RK4 step, s [2e-5]", 0, 1, 1);
     o[i++] = OPT_D("height-rm", &mp.height_rm, "H", "keep the particles wholly below H R_m after settling [0 = all]", 0, 1e6, 0);
+    o[i++] = (gw_opt){.name = "clumps", .kind = GW_OPT_FLAG, .dest = &mp.clumps,
+                      .help = "type B soil: n rigid clumps (aspect ratio 1-4) instead of n discs"};
     o[i++] = OPT_S("out", &out, "FILE", "sample file to write (required)");
     o[i++] = (gw_opt){.name = "json", .kind = GW_OPT_FLAG, .dest = &json, .help = "print the result as JSON"};
     o[i] = (gw_opt){0};
@@ -132,6 +136,10 @@ int gw_cmd_layer_make(int argc, char **argv)
         cJSON_AddStringToObject(j, "sample", out);
         cJSON_AddNumberToObject(j, "n", s.n);
         cJSON_AddNumberToObject(j, "n_removed_above_height", r.n_removed);
+        if (mp.clumps) { /* type B: n counts discs, n_bodies the clumps */
+            cJSON_AddBoolToObject(j, "clumps", 1);
+            cJSON_AddNumberToObject(j, "n_bodies", r.n_bodies);
+        }
         cJSON_AddNumberToObject(j, "porosity", r.porosity);
         cJSON_AddNumberToObject(j, "height", h);
         cJSON_AddNumberToObject(j, "height_rm", h / mp.rm);
@@ -160,6 +168,8 @@ int gw_cmd_layer_make(int argc, char **argv)
     } else {
         printf("granwave %s layer-make: %d particles, porosity %.4f, height %.3f m (%.2f R_m)\n",
                gw_version(), s.n, r.porosity, h, h / mp.rm);
+        if (mp.clumps)
+            printf("  type B: %d rigid clumps of %d discs\n", r.n_bodies, s.n);
         if (r.n_removed > 0)
             printf("  %d particles above %g R_m removed after settling\n", r.n_removed, mp.height_rm);
         printf("  settled in %.3g s simulated (%s), E_k = %.3g J, max overlap %.3g R_p\n", r.t_settle,

@@ -7,7 +7,8 @@
  * listed-out pair can touch before some particle has moved s/2, which is the
  * rebuild root of layer_model.c. R_p = 2 R_a R_b / (R_a + R_b) for two discs,
  * R_a against a wall. A rebuild changes the state dimension (one F_t per listed
- * contact); F_t of pairs listed before and after is carried over.
+ * contact); F_t of pairs listed before and after is carried over. Discs of one
+ * rigid clump are never listed against each other (layer_clumps.c).
  * Units: SI.
  */
 #include <math.h>
@@ -44,11 +45,11 @@ static int push(layer_contact **c, int *nc, int *cap, int a, int b)
 static int pairs_cells(const gw_layer *L, layer_contact **c, int *nc, int *cap)
 {
     const int n = L->n;
-    const double *y = L->y, s = L->p.skin, h = 2 * L->rmax + s;
+    const double *y = L->x_list, s = L->p.skin, h = 2 * L->rmax + s; /* disc positions */
     double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
     for (int i = 0; i < n; i++) {
-        x0 = fmin(x0, y[6 * i]), x1 = fmax(x1, y[6 * i]);
-        y0 = fmin(y0, y[6 * i + 1]), y1 = fmax(y1, y[6 * i + 1]);
+        x0 = fmin(x0, y[2 * i]), x1 = fmax(x1, y[2 * i]);
+        y0 = fmin(y0, y[2 * i + 1]), y1 = fmax(y1, y[2 * i + 1]);
     }
     /* a particle far away (a block thrown high) must not blow up the grid:
      * coarsen the cells until their number is linear in n (pairs stay exact) */
@@ -69,7 +70,7 @@ static int pairs_cells(const gw_layer *L, layer_contact **c, int *nc, int *cap)
         goto done;
     }
     for (int i = 0; i < n; i++) {
-        long cx = (long)((y[6 * i] - x0) / hx), cy = (long)((y[6 * i + 1] - y0) / hy);
+        long cx = (long)((y[2 * i] - x0) / hx), cy = (long)((y[2 * i + 1] - y0) / hy);
         cx = cx < 0 ? 0 : cx >= nx ? nx - 1 : cx;
         cy = cy < 0 ? 0 : cy >= ny ? ny - 1 : cy;
         cell[i] = (int)(cy * nx + cx);
@@ -99,9 +100,12 @@ static int pairs_cells(const gw_layer *L, layer_contact **c, int *nc, int *cap)
                 long kc = ky * nx + kx;
                 for (int q = start[kc]; q < start[kc + 1]; q++) {
                     int j = idx[q];
-                    if (j <= i || (L->fixed[i] && L->fixed[j]))
+                    if (j <= i)
                         continue;
-                    double dx = y[6 * j] - y[6 * i], dy = y[6 * j + 1] - y[6 * i + 1];
+                    int bi = layer_body(L, i), bj = layer_body(L, j);
+                    if (bi == bj || (L->fixed[bi] && L->fixed[bj]))
+                        continue;
+                    double dx = y[2 * j] - y[2 * i], dy = y[2 * j + 1] - y[2 * i + 1];
                     double lim = L->r[i] + L->r[j] + s;
                     if (dx * dx + dy * dy < lim * lim && (rc = push(c, nc, cap, i, j)) != GW_OK)
                         break;
@@ -122,11 +126,15 @@ int layer_contacts_build(gw_layer *L, gw_err *err)
     const double s = L->p.skin;
     layer_contact *c = NULL;
     int nc = 0, cap = 0;
+    for (int i = 0; i < n; i++) {
+        double arm[2];
+        layer_disc_xy(L, L->y, i, L->x_list + 2 * i, arm);
+    }
     int rc = pairs_cells(L, &c, &nc, &cap);
     for (int i = 0; i < n && rc == GW_OK; i++) {
-        if (L->fixed[i])
+        if (L->fixed[layer_body(L, i)])
             continue;
-        const double x = L->y[6 * i], yy = L->y[6 * i + 1], r = L->r[i];
+        const double x = L->x_list[2 * i], yy = L->x_list[2 * i + 1], r = L->r[i];
         if ((L->p.walls & GW_LAYER_WALL_LEFT) && x - r < s)
             rc = push(&c, &nc, &cap, i, LAYER_LEFT);
         if (rc == GW_OK && (L->p.walls & GW_LAYER_WALL_RIGHT) && L->p.width - x - r < s)
@@ -146,22 +154,23 @@ int layer_contacts_build(gw_layer *L, gw_err *err)
         c[k].kn = gw_layer_kn(&L->p, rp);
         c[k].ktf = gw_layer_kt_factor(&L->p, rp);
     }
-    long dim = 6L * n + nc + L->ntail;
+    const int nb = L->nb;
+    long dim = 6L * nb + nc + L->ntail;
     double *ny = malloc((size_t)dim * sizeof *ny), *nsc = malloc((size_t)dim * sizeof *nsc);
     int *roots = malloc((2 * (size_t)nc + (size_t)n + 1) * sizeof *roots);
     if (!ny || !nsc || !roots) {
         free(c), free(ny), free(nsc), free(roots);
         return gw_err_set(err, GW_ENOMEM, "layer: out of memory for %d contacts", nc);
     }
-    memcpy(ny, L->y, 6 * (size_t)n * sizeof *ny);
+    memcpy(ny, L->y, 6 * (size_t)nb * sizeof *ny);
     for (int k = 0; k < nc; k++) {
-        ny[6 * n + k] = 0;
+        ny[6 * nb + k] = 0;
         const layer_contact *old = L->nc > 0 ? bsearch(&c[k], L->c, (size_t)L->nc, sizeof *c,
                                                        contact_cmp) : NULL;
         if (old)
-            ny[6 * n + k] = L->y[6 * n + (old - L->c)];
+            ny[6 * nb + k] = L->y[6 * nb + (old - L->c)];
     }
-    memcpy(ny + 6 * n + nc, L->y + 6 * n + L->nc, (size_t)L->ntail * sizeof *ny);
+    memcpy(ny + 6 * nb + nc, L->y + 6 * nb + L->nc, (size_t)L->ntail * sizeof *ny);
     free(L->y), free(L->scale), free(L->c), free(L->roots);
     L->y = ny;
     L->scale = nsc;
@@ -170,10 +179,6 @@ int layer_contacts_build(gw_layer *L, gw_err *err)
     L->nc = nc;
     L->cap_c = cap;
     L->cap_y = dim;
-    for (int i = 0; i < n; i++) {
-        L->x_list[2 * i] = L->y[6 * i];
-        L->x_list[2 * i + 1] = L->y[6 * i + 1];
-    }
     layer_system_fill(L);
     L->st.rebuilds++;
     L->st.contacts_listed = nc;

@@ -185,7 +185,8 @@ int gw_layer_impact(const gw_layer_sample *smp, const gw_layer_params *lp0,
     const double y_freeze = ip->height_rm > 0 ? top - ip->height_rm * rm : -INFINITY;
     for (int i = 0; i < n; i++) {
         b[i] = (gw_layer_body){.x = smp->x[i], .y = smp->y[i], .r = smp->r[i]};
-        b[i].fixed = smp->y[i] < y_freeze;
+        b[i].fixed = smp->y[i] < y_freeze; /* a clump with a frozen member is frozen whole */
+        b[i].clump = smp->body ? smp->body[i] + 1 : 0;
         res->n_frozen += b[i].fixed;
     }
     res->n_mobile = n - res->n_frozen;

@@ -30,15 +30,24 @@ typedef struct layer_contact {
 struct gw_layer {
     gw_layer_params p;
     double tan_phi;
-    int n, block;
-    double *r, *m, *inertia, *minv, *iinv; /* [n]; minv = iinv = 0 when fixed */
-    unsigned char *fixed;
-    double *y_ref;     /* [n] potential-energy reference heights */
-    double rmax;
+    int n, block;      /* discs; the block's disc index (-1: none) */
+    /* Rigid bodies (layer_clumps.c): nb bodies, disc i belongs to body bid[i]
+     * and sits at off[2 i .. 2 i + 1] from its centre of mass in the body frame.
+     * Without clumps bid = off = NULL and body i is disc i (the disc-only code
+     * path, kept bit for bit). */
+    int nb, block_body;
+    int *bid;
+    double *off;
+    double *r;         /* [n] disc radii */
+    double *m, *inertia, *minv, *iinv; /* [nb] per body; minv = iinv = 0 when fixed */
+    double *brad;      /* [nb] bounding radius of the body (r for a disc) */
+    unsigned char *fixed; /* [nb] */
+    double *y_ref;     /* [nb] potential-energy reference heights */
+    double rmax;       /* largest disc radius */
     /* contact list */
     layer_contact *c;
     int nc, cap_c;
-    double *x_list;    /* [2n] positions at the last list build */
+    double *x_list;    /* [2n] disc positions at the last list build */
     /* state and solver */
     double t;
     double *y;         /* [dim] */
@@ -63,6 +72,45 @@ struct gw_layer {
     gw_layer_event_fn hook;
     void *hook_ctx;
 };
+
+/* Body of disc i. */
+static inline int layer_body(const gw_layer *L, int i)
+{
+    return L->bid ? L->bid[i] : i;
+}
+
+/* Centre p of disc i in state y and, for a clump member, its arm (centre minus
+ * the body's centre of mass, world frame; 0 for discs). */
+void layer_disc_xy(const gw_layer *L, const double *y, int i, double p[2], double arm[2]);
+
+/* Set up the bodies of L (bid, off, nb, masses, inertia, brad, fixed, y_ref)
+ * from the particles b (layer_clumps.c). Writes the body states into L->y. */
+int layer_bodies_build(gw_layer *L, const gw_layer_body *b, gw_err *err);
+
+/* (clump id, particle index) pairs sorted by clump, then index. */
+typedef struct layer_clump_key {
+    int clump, i;
+} layer_clump_key;
+int layer_clump_key_cmp(const void *pa, const void *pb);
+
+/* 1 when the k particles m[] (indices into x, y, r; reordered) overlap or touch
+ * as one connected set; stack: k ints of scratch (layer_clump_check.c). */
+int layer_members_connected(const double *x, const double *y, const double *r, int *m, int k,
+                            int *stack);
+
+/* Body ids of a sample (NULL: none): in [0, n), members of one body connected by
+ * overlap or touch, at most LAYER_CLUMP_MEMBERS per body. status (GW_EINVAL or GW_EFORMAT) with a message starting
+ * with what. */
+int layer_bodies_check(int n, const double *x, const double *y, const double *r, const int *body,
+                       const char *what, int status, gw_err *err);
+
+/* A quasi-rectangular clump of equivalent radius req (m), aspect ratio in
+ * [1, 4], long axis at angle (rad): a row of k <= 6 discs. Writes the member
+ * offsets from the clump centre and their radii into ox, oy, r [6]; returns k. */
+#define LAYER_CLUMP_MAX 6
+/* Most members a clump may have (samples and gw_layer_create). */
+#define LAYER_CLUMP_MEMBERS 64
+int layer_clump_shape(double req, double aspect, double angle, double *ox, double *oy, double *r);
 
 /* Build the contact list from the positions in L->y (cell list, skin L->p.skin)
  * carrying F_t of contacts present in both lists. Rewrites L->y, L->scale and

@@ -14,13 +14,19 @@
  * (same damping) until the threshold is met again.
  * Deterministic for a seed: splitmix64 (Steele, Lea, Flood 2014) drives all
  * random draws; the integration is RK4 with a fixed step.
+ * Type B soil (clumps = 1): n rigid clumps instead of n discs. Each clump draws
+ * its equivalent radius R_eq from the discs' grading (same curve), its aspect
+ * ratio uniform in [1, 4] and its orientation uniform in [0, pi); its shape is
+ * a row of overlapping discs (layer_clumps.c). The clumps start at rest, packed
+ * row by row by their bounding boxes (gap 0.1 R_max) from the bottom of the box,
+ * and settle like the discs; the trim to height_rm removes whole clumps.
  * Units: SI.
  */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
-#include "gw_layer.h"
+#include "layer_impl.h"
 
 typedef struct splitmix64 {
     unsigned long long s;
@@ -116,6 +122,159 @@ static int settle(const gw_layer_params *lp, const gw_layer_make_params *m, int 
     return rc;
 }
 
+/* Largest overlap / R_p between discs of different bodies and against the
+ * walls. */
+static double max_overlap(const gw_layer_body *b, int n, double width)
+{
+    double maxov = 0;
+    for (int i = 0; i < n; i++) {
+        maxov = fmax(maxov, (b[i].r - b[i].y) / b[i].r);
+        maxov = fmax(maxov, (b[i].r - b[i].x) / b[i].r);
+        maxov = fmax(maxov, (b[i].r - (width - b[i].x)) / b[i].r);
+        for (int j = i + 1; j < n; j++) {
+            if (b[i].clump > 0 && b[i].clump == b[j].clump)
+                continue;
+            double d = hypot(b[j].x - b[i].x, b[j].y - b[i].y), rp = 2 * b[i].r * b[j].r / (b[i].r + b[j].r);
+            maxov = fmax(maxov, (b[i].r + b[j].r - d) / rp);
+        }
+    }
+    return maxov;
+}
+
+/* Initial clumps: shapes drawn per clump, packed in rows of bounding boxes.
+ * Returns the number of discs (members) in *nd; b has LAYER_CLUMP_MAX n room. */
+static void clumps_initial(const gw_layer_make_params *m, double width, gw_layer_body *b, int *nd)
+{
+    const double cv = cbrt(m->volume_ratio), rmin = 2 * m->rm / (1 + cv), rmax = cv * rmin;
+    const double gap = 0.1 * rmax;
+    splitmix64 g = {(unsigned long long)m->seed};
+    double cx = gap, ry = gap, rowh = 0;
+    int k = 0;
+    for (int j = 0; j < m->n; j++) {
+        double req = rmin + (rmax - rmin) * sm_uniform(&g);
+        double aspect = 1 + 3 * sm_uniform(&g), angle = M_PI * sm_uniform(&g);
+        double ox[LAYER_CLUMP_MAX], oy[LAYER_CLUMP_MAX], r[LAYER_CLUMP_MAX];
+        int km = 0;
+        double x0, x1, y0, y1;
+        for (int pass = 0; pass < 2; pass++) { /* too wide for the box: stood upright */
+            km = layer_clump_shape(req, aspect, pass ? 0.5 * M_PI : angle, ox, oy, r);
+            x0 = y0 = INFINITY, x1 = y1 = -INFINITY;
+            for (int q = 0; q < km; q++) {
+                x0 = fmin(x0, ox[q] - r[q]), x1 = fmax(x1, ox[q] + r[q]);
+                y0 = fmin(y0, oy[q] - r[q]), y1 = fmax(y1, oy[q] + r[q]);
+            }
+            if (x1 - x0 <= width - 2 * gap)
+                break;
+        }
+        if (cx + (x1 - x0) > width - gap && cx > gap) { /* next row */
+            ry += rowh + gap;
+            cx = gap, rowh = 0;
+        }
+        double xc = cx - x0, yc = ry - y0;
+        if (xc + x1 > width) /* a clump wider than the box: centred, it settles tilted */
+            xc = 0.5 * width;
+        for (int q = 0; q < km; q++)
+            b[k++] = (gw_layer_body){.x = xc + ox[q], .y = yc + oy[q], .r = r[q], .clump = j + 1};
+        cx += (x1 - x0) + gap;
+        rowh = fmax(rowh, y1 - y0);
+    }
+    *nd = k;
+}
+
+static int make_clumps(const gw_layer_params *lp0, const gw_layer_make_params *m,
+                       gw_layer_sample *out, gw_layer_make_result *res, gw_err *err)
+{
+    double t0 = gw_clock_ms();
+    gw_layer_params lp = *lp0;
+    lp.width = m->width_rm * m->rm;
+    lp.walls = GW_LAYER_WALLS_ALL;
+    lp.damping = m->damping;
+    lp.potential_from_start = 0;
+    lp.no_events = 1;
+    int rc = gw_layer_params_validate(&lp, err);
+    if (rc != GW_OK)
+        return rc;
+    gw_layer_body *b = calloc(LAYER_CLUMP_MAX * (size_t)m->n, sizeof *b);
+    if (!b)
+        return gw_err_set(err, GW_ENOMEM, "layer-make: out of memory");
+    int nd = 0;
+    clumps_initial(m, lp.width, b, &nd);
+    double mtot = 0;
+    for (int i = 0; i < nd; i++)
+        mtot += gw_layer_mass(&lp, b[i].r);
+    const double thr = m->ke_threshold * mtot * lp.gravity * m->rm;
+    double t = 0, ke = 0;
+    int conv = 0;
+    if (m->modulus_factor < 1) {
+        gw_layer_params soft = lp;
+        soft.shear_modulus *= m->modulus_factor;
+        double ts = 0;
+        rc = settle(&soft, m, nd, b, thr, &ts, &ke, &conv, &res->steps, &res->rebuilds, err);
+        t += ts;
+    }
+    if (rc == GW_OK) {
+        double tr = 0;
+        rc = settle(&lp, m, nd, b, thr, &tr, &ke, &conv, &res->steps, &res->rebuilds, err);
+        t += tr;
+    }
+    /* keep the clumps lying wholly below height_rm R_m; ids renumbered 0.. */
+    int kept = 0, nbody = 0;
+    for (int a = 0; rc == GW_OK && a < nd;) {
+        int e = a;
+        double top = 0;
+        while (e < nd && b[e].clump == b[a].clump)
+            top = fmax(top, b[e].y + b[e].r), e++;
+        if (!(m->height_rm > 0) || top <= m->height_rm * m->rm) {
+            for (int q = a; q < e; q++) {
+                b[kept] = b[q];
+                b[kept++].clump = nbody;
+            }
+            nbody++;
+        } else {
+            res->n_removed++;
+        }
+        a = e;
+    }
+    if (rc == GW_OK && kept == 0)
+        rc = gw_err_set(err, GW_EINVAL, "height-rm: no clump lies below %g R_m", m->height_rm);
+    if (rc == GW_OK) {
+        out->x = malloc(3 * (size_t)kept * sizeof *out->x);
+        out->body = malloc((size_t)kept * sizeof *out->body);
+        if (!out->x || !out->body)
+            rc = gw_err_set(err, GW_ENOMEM, "layer-make: out of memory");
+    }
+    if (rc != GW_OK) {
+        free(b);
+        gw_layer_sample_free(out);
+        memset(out, 0, sizeof *out);
+        return rc;
+    }
+    out->y = out->x + kept;
+    out->r = out->x + 2 * kept;
+    out->n = kept;
+    out->width = lp.width;
+    out->rm = m->rm;
+    out->volume_ratio = m->volume_ratio;
+    out->seed = m->seed;
+    out->mass_law = lp.mass_law;
+    for (int i = 0; i < kept; i++) {
+        out->x[i] = b[i].x, out->y[i] = b[i].y, out->r[i] = b[i].r;
+        out->body[i] = b[i].clump;
+        b[i].clump++; /* 0 is "no clump" for max_overlap */
+    }
+    res->max_overlap = max_overlap(b, kept, lp.width);
+    free(b);
+    out->porosity = gw_layer_sample_porosity(out);
+    res->porosity = out->porosity;
+    res->t_settle = t;
+    res->ke_final = ke;
+    res->converged = conv;
+    res->n_bodies = nbody;
+    res->n_discs = kept;
+    res->wall_ms = gw_clock_ms() - t0;
+    return GW_OK;
+}
+
 int gw_layer_make(const gw_layer_params *lp0, const gw_layer_make_params *m,
                   gw_layer_sample *out, gw_layer_make_result *res, gw_err *err)
 {
@@ -125,6 +284,8 @@ int gw_layer_make(const gw_layer_params *lp0, const gw_layer_make_params *m,
     if (rc != GW_OK)
         return rc;
     double t0 = gw_clock_ms();
+    if (m->clumps)
+        return make_clumps(lp0, m, out, res, err);
     gw_layer_params lp = *lp0;
     lp.width = m->width_rm * m->rm;
     lp.walls = GW_LAYER_WALLS_ALL;
@@ -197,17 +358,9 @@ int gw_layer_make(const gw_layer_params *lp0, const gw_layer_make_params *m,
     out->volume_ratio = m->volume_ratio;
     out->seed = m->seed;
     out->mass_law = lp.mass_law;
-    double maxov = 0;
-    for (int i = 0; i < n; i++) {
+    for (int i = 0; i < n; i++)
         out->x[i] = b[i].x, out->y[i] = b[i].y, out->r[i] = b[i].r;
-        maxov = fmax(maxov, (b[i].r - b[i].y) / b[i].r);
-        maxov = fmax(maxov, (b[i].r - b[i].x) / b[i].r);
-        maxov = fmax(maxov, (b[i].r - (lp.width - b[i].x)) / b[i].r);
-        for (int j = i + 1; j < n; j++) {
-            double d = hypot(b[j].x - b[i].x, b[j].y - b[i].y), rp = 2 * b[i].r * b[j].r / (b[i].r + b[j].r);
-            maxov = fmax(maxov, (b[i].r + b[j].r - d) / rp);
-        }
-    }
+    double maxov = max_overlap(b, n, lp.width);
     free(b);
     out->porosity = gw_layer_sample_porosity(out);
     res->porosity = out->porosity;
@@ -215,6 +368,7 @@ int gw_layer_make(const gw_layer_params *lp0, const gw_layer_make_params *m,
     res->ke_final = ke;
     res->max_overlap = maxov;
     res->converged = conv;
+    res->n_bodies = res->n_discs = n;
     res->wall_ms = gw_clock_ms() - t0;
     return GW_OK;
 }

@@ -4,6 +4,15 @@
  *
  * Particles i: m_i dv_i/dt = sum of contact forces - m_i g e_y,
  *              I_i dw_i/dt = sum of R_i F_t (torques of tangential forces).
+ * Rigid clumps (layer_clumps.c): the sums run over the contacts of all members
+ * and act on the body's centre of mass; the torque of a member's contact is
+ * (a_i + l_i n) x F = a_i x F + l_i F_t, a_i the arm from the centre of mass to
+ * the member's centre (normal force included), and the member's centre moves
+ * at V + omega e_z x a_i, which enters u_n's rate and v_t below. In a layer
+ * with clumps every contact acts at its contact point, l_i = R_i - u_n/2 (in
+ * v_t too), so that the two bodies' torques about any point cancel and angular
+ * momentum is conserved; the disc-only layer keeps l_i = R_i as before (its
+ * results unchanged bit for bit; the two differ by u_n/R ~ 1e-4 relative).
  * Contact (a, b), n the unit normal from a to b, t = (-n_y, n_x):
  *   u_n = R_a + R_b - |x_b - x_a|  (wall: R_a minus the distance to the wall)
  *   F_n = K_n u_n^(3/2),  K_n = 2 sqrt(2 R_p) G / (3 (1 - nu))          (B.1, B.3)
@@ -11,7 +20,7 @@
  *   R_p = 2 R_a R_b / (R_a + R_b) for two discs, R_p = R_a against a wall (a wall
  *   is a particle of infinite radius and mass; PFC2D's convention, physics.md 2.1).
  *   v_t = (v_b - v_a).t - w_a R_a - w_b R_b (relative tangential velocity of the
- *   contact points; contact arms taken as the radii).
+ *   contact points; contact arms taken as the radii; v the disc centres').
  *   Force on a: -F_n n + F_t t, torque R_a F_t; on b the opposite force, torque
  *   R_b F_t.
  * Tangential law (B.2), the state holds the elastic tangential force F_t of every
@@ -132,6 +141,9 @@ int gw_layer_create(const gw_layer_params *p, int n, const gw_layer_body *b, gw_
         if (!(b[i].r > 0) || !isfinite(b[i].r))
             return gw_err_set(err, GW_EINVAL, "particle %d: radius %g m must be positive and finite",
                               i, b[i].r);
+        if (b[i].clump < 0)
+            return gw_err_set(err, GW_EINVAL, "particle %d: clump id %d must be >= 0 (0: no clump)",
+                              i, b[i].clump);
         if (!isfinite(b[i].x) || !isfinite(b[i].y) || !isfinite(b[i].vx) ||
             !isfinite(b[i].vy) || !isfinite(b[i].w))
             return gw_err_set(err, GW_EINVAL, "particle %d: position and velocity must be finite", i);
@@ -146,9 +158,9 @@ int gw_layer_create(const gw_layer_params *p, int n, const gw_layer_body *b, gw_
         return gw_err_set(err, GW_ENOMEM, "layer: out of memory");
     L->p = *p;
     L->n = n;
-    L->block = -1;
+    L->block = L->block_body = -1;
     L->tan_phi = tan(p->friction_deg * M_PI / 180.0);
-    L->r = malloc(6 * (size_t)n * sizeof *L->r);
+    L->r = malloc(7 * (size_t)n * sizeof *L->r);
     L->fixed = calloc((size_t)n, 1);
     L->x_list = malloc(2 * (size_t)n * sizeof *L->x_list);
     L->cap_y = 6L * n + 2;
@@ -163,31 +175,27 @@ int gw_layer_create(const gw_layer_params *p, int n, const gw_layer_body *b, gw_
     L->minv = L->r + 3 * n;
     L->iinv = L->r + 4 * n;
     L->y_ref = L->r + 5 * n;
-    double vmax = 0;
+    L->brad = L->r + 6 * n;
     for (int i = 0; i < n; i++) {
         L->r[i] = b[i].r;
-        L->m[i] = gw_layer_mass(p, b[i].r);
-        L->inertia[i] = gw_layer_inertia(p, b[i].r);
-        L->fixed[i] = b[i].fixed != 0;
-        L->minv[i] = L->fixed[i] ? 0 : 1.0 / L->m[i];
-        L->iinv[i] = L->fixed[i] ? 0 : 1.0 / L->inertia[i];
-        L->y_ref[i] = p->potential_from_start ? b[i].y : 0.0;
         if (b[i].r > L->rmax)
             L->rmax = b[i].r;
-        double *s = L->y + 6 * i;
-        s[0] = b[i].x;
-        s[1] = b[i].y;
-        s[2] = 0;
-        s[3] = L->fixed[i] ? 0 : b[i].vx;
-        s[4] = L->fixed[i] ? 0 : b[i].vy;
-        s[5] = L->fixed[i] ? 0 : b[i].w;
-        double v = hypot(s[3], s[4]) + fabs(s[5]) * b[i].r;
+    }
+    if ((rc = layer_bodies_build(L, b, err)) != GW_OK) {
+        gw_layer_free(L);
+        return rc;
+    }
+    const int nb = L->nb;
+    double vmax = 0;
+    for (int q = 0; q < nb; q++) {
+        const double *s = L->y + 6 * q;
+        double v = hypot(s[3], s[4]) + fabs(s[5]) * L->brad[q];
         if (v > vmax)
             vmax = v;
     }
-    L->y[6 * n] = L->y[6 * n + 1] = 0;
+    L->y[6 * nb] = L->y[6 * nb + 1] = 0;
     L->ntail = 2;
-    L->dim = 6L * n + 2;
+    L->dim = 6L * nb + 2;
     L->v_scale = fmax(vmax, sqrt(fmax(p->gravity, 1e-3) * L->rmax));
     L->u_scale = 1e-3 * L->rmax;
     L->f_scale = gw_layer_kn(p, L->rmax) * pow(L->u_scale, 1.5);
@@ -207,13 +215,17 @@ void gw_layer_free(gw_layer *L)
     free(L->scale);
     free(L->c);
     free(L->roots);
+    free(L->bid);
+    free(L->off);
     free(L);
 }
 
-void layer_contact_geometry(const gw_layer *L, const layer_contact *c, const double *y,
-                            double *un, double n[2], double pt[2])
+/* Geometry of contact c with the arms of its discs (layer_disc_xy). */
+static void geometry_arms(const gw_layer *L, const layer_contact *c, const double *y, double *un,
+                          double n[2], double pt[2], double arma[2], double armb[2])
 {
-    const double *sa = y + 6 * c->a;
+    double sa[2], sb[2];
+    layer_disc_xy(L, y, c->a, sa, arma);
     double ra = L->r[c->a];
     switch (c->b) {
     case LAYER_LEFT:
@@ -226,7 +238,7 @@ void layer_contact_geometry(const gw_layer *L, const layer_contact *c, const dou
         n[0] = 0, n[1] = -1, *un = ra - sa[1];
         break;
     default: {
-        const double *sb = y + 6 * c->b;
+        layer_disc_xy(L, y, c->b, sb, armb);
         double dx = sb[0] - sa[0], dy = sb[1] - sa[1], d = hypot(dx, dy);
         if (d > 0)
             n[0] = dx / d, n[1] = dy / d;
@@ -241,21 +253,43 @@ void layer_contact_geometry(const gw_layer *L, const layer_contact *c, const dou
     }
 }
 
+void layer_contact_geometry(const gw_layer *L, const layer_contact *c, const double *y,
+                            double *un, double n[2], double pt[2])
+{
+    double arma[2], armb[2];
+    geometry_arms(L, c, y, un, n, pt, arma, armb);
+}
+
 /* Kinematics of contact c: overlap, normal, overlap rate and tangential
  * relative velocity. */
 static void contact_kinematics(const gw_layer *L, const layer_contact *c, const double *y,
-                               double *un, double n[2], double *und, double *vt)
+                               double *un, double n[2], double *und, double *vt,
+                               double arma[2], double armb[2], double lev[2])
 {
-    layer_contact_geometry(L, c, y, un, n, NULL);
-    const double *sa = y + 6 * c->a;
+    arma[0] = arma[1] = armb[0] = armb[1] = 0;
+    geometry_arms(L, c, y, un, n, NULL, arma, armb);
+    const double *sa = y + 6 * layer_body(L, c->a);
+    double vax = sa[3], vay = sa[4];
     double vbx = 0, vby = 0, wrb = 0;
     if (c->b >= 0) {
-        const double *sb = y + 6 * c->b;
+        const double *sb = y + 6 * layer_body(L, c->b);
         vbx = sb[3], vby = sb[4], wrb = sb[5] * L->r[c->b];
+        if (L->off) /* velocity of the member's centre */
+            vbx -= sb[5] * armb[1], vby += sb[5] * armb[0];
     }
-    double rx = vbx - sa[3], ry = vby - sa[4];
+    lev[0] = L->r[c->a];
+    lev[1] = c->b >= 0 ? L->r[c->b] : 0;
+    if (L->off) { /* with clumps: levers to the contact point */
+        vax -= sa[5] * arma[1], vay += sa[5] * arma[0];
+        lev[0] -= 0.5 * *un;
+        if (c->b >= 0) {
+            lev[1] -= 0.5 * *un;
+            wrb = y[6 * layer_body(L, c->b) + 5] * lev[1];
+        }
+    }
+    double rx = vbx - vax, ry = vby - vay;
     *und = -(rx * n[0] + ry * n[1]);
-    *vt = -rx * n[1] + ry * n[0] - sa[5] * L->r[c->a] - wrb;
+    *vt = -rx * n[1] + ry * n[0] - sa[5] * lev[0] - wrb;
 }
 
 void layer_contact_forces(const gw_layer *L, int k, const double *y, double *fn, double *ft,
@@ -269,7 +303,7 @@ void layer_contact_forces(const gw_layer *L, int k, const double *y, double *fn,
         return;
     *fn = c->kn * un * sqrt(un);
     *kt = c->ktf * cbrt(*fn);
-    double cap = L->tan_phi * *fn, f = y[6 * L->n + k];
+    double cap = L->tan_phi * *fn, f = y[6 * L->nb + k];
     *ft = f > cap ? cap : f < -cap ? -cap : f;
 }
 
@@ -277,7 +311,7 @@ static int layer_rhs(double t, const double *y, double *yd, void *P)
 {
     (void)t;
     const gw_layer *L = P;
-    const int n = L->n;
+    const int n = L->nb; /* the state is per body */
     const double g = L->p.gravity, tp = L->tan_phi, alpha = L->p.damping;
     double pd = 0, pk = 0;
     double *rtail = L->reg_n > 0 ? yd + 6 * n + L->nc + 2 : NULL;
@@ -291,9 +325,9 @@ static int layer_rhs(double t, const double *y, double *yd, void *P)
     }
     for (int k = 0; k < L->nc; k++) {
         const layer_contact *c = &L->c[k];
-        double un, nn[2], und, vt;
+        double un, nn[2], und, vt, arma[2], armb[2], lev[2];
         double *fdot = yd + 6 * n + k;
-        contact_kinematics(L, c, y, &un, nn, &und, &vt);
+        contact_kinematics(L, c, y, &un, nn, &und, &vt, arma, armb, lev);
         if (!(un > 0)) {
             *fdot = 0;
             continue;
@@ -337,11 +371,15 @@ static int layer_rhs(double t, const double *y, double *yd, void *P)
                 rtail[2 * layer_contact_region_at(L, c, y, un, nn)] += (fn - fel) * und;
         }
         double fx = -fn * nn[0] - ft * nn[1], fy = -fn * nn[1] + ft * nn[0];
-        double *da = yd + 6 * c->a;
-        da[3] += fx, da[4] += fy, da[5] += ft * L->r[c->a];
+        double *da = yd + 6 * layer_body(L, c->a);
+        da[3] += fx, da[4] += fy, da[5] += ft * lev[0];
+        if (L->off) /* arm x F, normal force included */
+            da[5] += arma[0] * fy - arma[1] * fx;
         if (c->b >= 0) {
-            double *db = yd + 6 * c->b;
-            db[3] -= fx, db[4] -= fy, db[5] += ft * L->r[c->b];
+            double *db = yd + 6 * layer_body(L, c->b);
+            db[3] -= fx, db[4] -= fy, db[5] += ft * lev[1];
+            if (L->off)
+                db[5] -= armb[0] * fy - armb[1] * fx;
         }
     }
     for (int i = 0; i < n; i++) {
@@ -371,8 +409,10 @@ static int layer_roots(double t, const double *y, double *g, void *P)
     double un, nn[2], h = 0.5 * L->p.skin;
     const int r0 = layer_root_rebuild(L), s0 = layer_root_slip(L);
     for (int i = 0; i < L->n; i++) {
-        double dx = y[6 * i] - L->x_list[2 * i], dy = y[6 * i + 1] - L->x_list[2 * i + 1];
-        g[r0 + i] = L->fixed[i] ? 1.0 : h * h - dx * dx - dy * dy;
+        double p[2], arm[2];
+        layer_disc_xy(L, y, i, p, arm);
+        double dx = p[0] - L->x_list[2 * i], dy = p[1] - L->x_list[2 * i + 1];
+        g[r0 + i] = L->fixed[layer_body(L, i)] ? 1.0 : h * h - dx * dx - dy * dy;
     }
     if (L->p.no_events)
         return 0;
@@ -381,7 +421,7 @@ static int layer_roots(double t, const double *y, double *g, void *P)
         g[k] = un;
         if (s0 >= 0) {
             double cap = un > 0 ? L->tan_phi * L->c[k].kn * un * sqrt(un) : 0;
-            g[s0 + k] = fabs(y[6 * L->n + k]) - cap;
+            g[s0 + k] = fabs(y[6 * L->nb + k]) - cap;
         }
     }
     return 0;
@@ -389,14 +429,14 @@ static int layer_roots(double t, const double *y, double *g, void *P)
 
 void layer_system_fill(gw_layer *L)
 {
-    const int n = L->n;
+    const int n = L->nb;
     L->dim = 6L * n + L->nc + L->ntail;
     for (int i = 0; i < n; i++) {
         double *s = L->scale + 6 * i;
         s[0] = s[1] = L->u_scale;
-        s[2] = L->u_scale / L->r[i];
+        s[2] = L->u_scale / L->brad[i];
         s[3] = s[4] = L->v_scale;
-        s[5] = L->v_scale / L->r[i];
+        s[5] = L->v_scale / L->brad[i];
     }
     for (int k = 0; k < L->nc; k++)
         L->scale[6 * n + k] = L->f_scale;
@@ -406,7 +446,7 @@ void layer_system_fill(gw_layer *L)
     L->sys.dim = L->dim;
     L->sys.rhs = layer_rhs;
     L->sys.roots = layer_roots;
-    L->sys.nroots = L->p.no_events ? n : L->nc * (L->tan_phi > 0 ? 2 : 1) + n;
+    L->sys.nroots = L->p.no_events ? L->n : L->nc * (L->tan_phi > 0 ? 2 : 1) + L->n;
     L->sys.scale = L->scale;
     L->sys.params = L;
 }
@@ -416,7 +456,7 @@ void gw_layer_energy_of(const gw_layer *L, gw_layer_energy *e)
     memset(e, 0, sizeof *e);
     layer_ledger_sum(L, e, 0);
     const double *y = L->y;
-    const int n = L->n;
+    const int n = L->nb;
     e->dissipated = y[6 * n + L->nc];
     e->mindlin_excess = y[6 * n + L->nc + 1];
     e->total = e->kinetic_block + e->kinetic_soil + e->strain_normal + e->strain_tangent +
@@ -435,15 +475,22 @@ void gw_layer_rings(const gw_layer *L, double cx, double cy, double w, int nring
     int *np = calloc((size_t)nring, sizeof *np);
     for (int k = 0; k < nring; k++)
         kin[k] = strain[k] = coord[k] = 0;
-    for (int i = 0; i < L->n; i++) {
-        if (i == L->block)
+    for (int i = 0; i < L->nb; i++) { /* kinetic energy by body centre */
+        if (i == L->block_body)
             continue;
         const double *s = y + 6 * i;
         int k = (int)(hypot(s[0] - cx, s[1] - cy) / w);
         if (k < 0 || k >= nring)
             continue;
         kin[k] += 0.5 * L->m[i] * (s[3] * s[3] + s[4] * s[4]) + 0.5 * L->inertia[i] * s[5] * s[5];
-        if (np)
+    }
+    for (int i = 0; np && i < L->n; i++) { /* coordination: per disc */
+        if (i == L->block)
+            continue;
+        double s[2], arm[2];
+        layer_disc_xy(L, y, i, s, arm);
+        int k = (int)(hypot(s[0] - cx, s[1] - cy) / w);
+        if (k >= 0 && k < nring)
             np[k]++;
     }
     for (int c = 0; c < L->nc; c++) {
@@ -461,7 +508,8 @@ void gw_layer_rings(const gw_layer *L, double cx, double cy, double w, int nring
             int i = ends[e];
             if (i < 0 || i == L->block)
                 continue;
-            const double *s = y + 6 * i;
+            double s[2], arm[2];
+            layer_disc_xy(L, y, i, s, arm);
             int kk = (int)(hypot(s[0] - cx, s[1] - cy) / w);
             if (kk >= 0 && kk < nring)
                 coord[kk] += 1;
@@ -482,11 +530,6 @@ double gw_layer_time(const gw_layer *L)
     return L->t;
 }
 
-void gw_layer_particle(const gw_layer *L, int i, double s[6])
-{
-    memcpy(s, L->y + 6 * i, 6 * sizeof *s);
-}
-
 double gw_layer_radius(const gw_layer *L, int i)
 {
     return L->r[i];
@@ -494,7 +537,7 @@ double gw_layer_radius(const gw_layer *L, int i)
 
 double gw_layer_particle_mass(const gw_layer *L, int i)
 {
-    return L->m[i];
+    return L->m[layer_body(L, i)];
 }
 
 const gw_layer_params *gw_layer_get_params(const gw_layer *L)
@@ -505,6 +548,7 @@ const gw_layer_params *gw_layer_get_params(const gw_layer *L)
 void gw_layer_set_block(gw_layer *L, int i)
 {
     L->block = i;
+    L->block_body = i >= 0 ? layer_body(L, i) : -1;
 }
 
 void gw_layer_get_stats(const gw_layer *L, gw_layer_stats *st)

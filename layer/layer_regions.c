@@ -5,7 +5,8 @@
  * The regions partition the system: rings k = 0 .. nring-1 of width w around a
  * centre (distance in [k w, (k+1) w)), then "outside" (beyond the last ring),
  * then "block" (the block particle and every contact it takes part in).
- * Kinetic and potential energy are booked by particle centre, strain energy and
+ * Kinetic and potential energy are booked by body centre (a disc's centre, a
+ * clump's centre of mass), strain energy and
  * the two integrated terms (friction dissipation E_d, Mindlin stiffness work
  * W_K) by contact point. E_d and W_K are path integrals, so each region has its
  * own pair of state components, integrated with the rest of the ODE system from
@@ -22,9 +23,13 @@
 int layer_contact_region_at(const gw_layer *L, const layer_contact *c, const double *y,
                             double un, const double nn[2])
 {
-    if (c->a == L->block || c->b == L->block)
+    /* (a wall id equal to block_body = -1 books a left-wall contact of a layer
+     * without a block as "block": kept as it was) */
+    if (layer_body(L, c->a) == L->block_body ||
+        (c->b >= 0 ? layer_body(L, c->b) : c->b) == L->block_body)
         return L->reg_n + 1;
-    const double *sa = y + 6 * c->a, arm = L->r[c->a] - 0.5 * un;
+    double sa[2], am[2], arm = L->r[c->a] - 0.5 * un;
+    layer_disc_xy(L, y, c->a, sa, am);
     double dx = sa[0] + arm * nn[0] - L->reg_cx, dy = sa[1] + arm * nn[1] - L->reg_cy;
     double d2 = (dx * dx + dy * dy) / (L->reg_w * L->reg_w);
     double lim = (double)L->reg_n * L->reg_n;
@@ -38,9 +43,10 @@ int layer_contact_region(const gw_layer *L, const layer_contact *c, const double
     return layer_contact_region_at(L, c, y, un, nn);
 }
 
+/* Region of body i by its centre of mass. */
 static int particle_region(const gw_layer *L, int i, const double *y)
 {
-    if (i == L->block)
+    if (i == L->block_body)
         return L->reg_n + 1;
     const double *s = y + 6 * i;
     double d = hypot(s[0] - L->reg_cx, s[1] - L->reg_cy) / L->reg_w;
@@ -57,7 +63,7 @@ int gw_layer_set_regions(gw_layer *L, double cx, double cy, double w, int nring,
         return gw_err_set(err, GW_EINVAL, "layer regions: ring width %g m must be positive", w);
     if (nring < 1 || nring > 10000)
         return gw_err_set(err, GW_EINVAL, "layer regions: %d rings (1 .. 10000)", nring);
-    const long n6 = 6L * L->n;
+    const long n6 = 6L * L->nb;
     int ntail = 2 + 2 * (nring + 2);
     double *y = realloc(L->y, (size_t)(n6 + ntail) * sizeof *y);
     if (!y)
@@ -85,11 +91,11 @@ int gw_layer_region_count(const gw_layer *L)
 void layer_ledger_sum(const gw_layer *L, gw_layer_energy *out, int by_region)
 {
     const double *y = L->y;
-    for (int i = 0; i < L->n; i++) {
+    for (int i = 0; i < L->nb; i++) { /* bodies */
         const double *s = y + 6 * i;
         gw_layer_energy *e = out + (by_region ? particle_region(L, i, y) : 0);
         double ke = 0.5 * L->m[i] * (s[3] * s[3] + s[4] * s[4]) + 0.5 * L->inertia[i] * s[5] * s[5];
-        if (i == L->block)
+        if (i == L->block_body)
             e->kinetic_block += ke;
         else
             e->kinetic_soil += ke;
@@ -115,7 +121,7 @@ int gw_layer_region_ledger(const gw_layer *L, gw_layer_energy *out)
         return 0;
     memset(out, 0, (size_t)nr * sizeof *out);
     layer_ledger_sum(L, out, 1);
-    const double *tail = L->y + 6 * L->n + L->nc + 2;
+    const double *tail = L->y + 6 * L->nb + L->nc + 2;
     for (int q = 0; q < nr; q++) {
         gw_layer_energy *e = out + q;
         e->dissipated = tail[2 * q];

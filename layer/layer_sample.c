@@ -1,13 +1,16 @@
 /*
  * layer_sample.c: the sample files of pluviated layers (physics.md 2.2), text
- * (format version 1) and HDF5, and the sample porosity.
+ * (format versions 1 and 2) and HDF5, and the sample porosity.
  *
  * Text format, documented in gw_layer.h: a magic line, "key value" header lines,
- * then "n N" and N lines "x y r" in metres. '#' starts a comment line (the
+ * then "n N" and N lines "x y r" in metres (version 2, clump samples of type B
+ * soil: "x y r body", the rigid-body id; disc samples keep writing version 1,
+ * so their files are unchanged). '#' starts a comment line (the
  * writer puts the program version and the command line there). Lines end in LF
  * or CRLF. The reader refuses anything else with the file name and line number.
- * HDF5 format (when built with HDF5): datasets x, y, r [n] (m) and the header
- * as attributes of the root group (see gw_layer.h). The reader tells the two
+ * HDF5 format (when built with HDF5): datasets x, y, r [n] (m), body [n] for
+ * clump samples, and the header as attributes of the root group (see
+ * gw_layer.h). Body ids are checked by layer_bodies_check (layer_clumps.c). The reader tells the two
  * apart by the HDF5 signature, not by the file name, and checks the fields of
  * both with the same functions (check_header, check_particle).
  * Porosity: 1 - (solid area / window area) in the window x in [0.1, 0.9] W,
@@ -22,7 +25,7 @@
 #include <string.h>
 #include <strings.h>
 
-#include "gw_layer.h"
+#include "layer_impl.h"
 #if GW_HAVE_HDF5
 #include <hdf5.h>
 #endif
@@ -38,7 +41,9 @@ void gw_layer_sample_free(gw_layer_sample *s)
     if (!s)
         return;
     free(s->x);
+    free(s->body);
     s->x = s->y = s->r = NULL;
+    s->body = NULL;
     s->n = 0;
 }
 
@@ -104,6 +109,11 @@ static int check_sample(const gw_layer_sample *s, const char *path, int status, 
         snprintf(where, sizeof where, "particle at index %d", i);
         rc = check_particle(s->width, s->x[i], s->y[i], s->r[i], path, where, status, err);
     }
+    if (rc == GW_OK && s->body) {
+        char what[4200];
+        snprintf(what, sizeof what, "sample '%s'", path);
+        rc = layer_bodies_check(s->n, s->x, s->y, s->r, s->body, what, status, err);
+    }
     return rc;
 }
 
@@ -131,19 +141,23 @@ static int write_text(const gw_layer_sample *s, const char *path, const char *he
     int rc = gw_afile_open(&f, path, err);
     if (rc != GW_OK)
         return rc;
-    fprintf(f.fp, SAMPLE_MAGIC " 1\n");
+    fprintf(f.fp, SAMPLE_MAGIC " %d\n", s->body ? 2 : 1);
     for (const char *p = header; p && *p;) {
         const char *e = strchr(p, '\n');
         size_t len = e ? (size_t)(e - p) : strlen(p);
         fprintf(f.fp, "# %.*s\n", (int)len, p);
         p += len + (e ? 1 : 0);
     }
-    fprintf(f.fp, "# units: metres; lines after 'n' are: x y r\n");
+    fprintf(f.fp, "# units: metres; lines after 'n' are: x y r%s\n", s->body ? " body" : "");
     fprintf(f.fp, "width %.17g\nrm %.17g\nvolume_ratio %.17g\nporosity %.17g\nseed %ld\n",
             s->width, s->rm, s->volume_ratio, s->porosity, s->seed);
     fprintf(f.fp, "mass_law %s\nn %d\n", s->mass_law == GW_LAYER_MASS_SPHERE ? "sphere" : "disc", s->n);
-    for (int i = 0; i < s->n; i++)
-        fprintf(f.fp, "%.17g %.17g %.17g\n", s->x[i], s->y[i], s->r[i]);
+    for (int i = 0; i < s->n; i++) {
+        if (s->body)
+            fprintf(f.fp, "%.17g %.17g %.17g %d\n", s->x[i], s->y[i], s->r[i], s->body[i]);
+        else
+            fprintf(f.fp, "%.17g %.17g %.17g\n", s->x[i], s->y[i], s->r[i]);
+    }
     return gw_afile_commit(&f, err);
 }
 
@@ -242,8 +256,8 @@ enum { K_WIDTH, K_RM, K_VR, K_POR, K_SEED, K_LAW, K_N, K_COUNT };
 static const char *const header_keys[K_COUNT] = {"width", "rm", "volume_ratio", "porosity",
                                                  "seed", "mass_law", "n"};
 
-/* Header lines up to and including "n N": fills s and *n. */
-static int text_header(text_in *t, gw_layer_sample *s, long *n, gw_err *err)
+/* Header lines up to and including "n N": fills s, *n and the format version. */
+static int text_header(text_in *t, gw_layer_sample *s, long *n, int *version, gw_err *err)
 {
     char *tok[3], show[48];
     int rc = text_next(t, err), seen = 0;
@@ -257,9 +271,10 @@ static int text_header(text_in *t, gw_layer_sample *s, long *n, gw_err *err)
     if (k > 2)
         return gw_err_set(err, GW_EFORMAT, "sample '%s': line %ld: characters after '" SAMPLE_MAGIC " %s'",
                           t->path, t->line, shown(tok[1], show));
-    if (k != 2 || strcmp(tok[1], "1") != 0)
+    if (k != 2 || (strcmp(tok[1], "1") != 0 && strcmp(tok[1], "2") != 0))
         return gw_err_set(err, GW_EFORMAT, "sample '%s': line %ld: unsupported format version '%s' "
-                          "(this build reads 1)", t->path, t->line, k == 2 ? shown(tok[1], show) : "");
+                          "(this build reads 1 and 2)", t->path, t->line, k == 2 ? shown(tok[1], show) : "");
+    *version = tok[1][0] - '0';
     while ((rc = text_next(t, err)) > 0) {
         k = split(t->buf, tok, 2);
         int key = 0;
@@ -315,13 +330,19 @@ static int text_header(text_in *t, gw_layer_sample *s, long *n, gw_err *err)
 
 /* Room for cap particles in one block x | y | r (the sample owns s->x only);
  * grows with the file so that a short file claiming a large n costs little. */
-static int grow(gw_layer_sample *s, long *cap, long want)
+static int grow(gw_layer_sample *s, long *cap, long want, int bodies)
 {
     long nc = *cap;
     while (nc < want)
         nc = nc ? 2 * nc : 1024;
     if (nc > SAMPLE_NMAX)
         nc = SAMPLE_NMAX;
+    if (bodies) {
+        int *bd = realloc(s->body, (size_t)nc * sizeof *bd);
+        if (!bd)
+            return GW_ENOMEM;
+        s->body = bd;
+    }
     double *b = realloc(s->x, 3 * (size_t)nc * sizeof *b);
     if (!b)
         return GW_ENOMEM;
@@ -335,9 +356,11 @@ static int grow(gw_layer_sample *s, long *cap, long want)
 
 static int read_text(text_in *t, gw_layer_sample *s, gw_err *err)
 {
-    long n = 0, cap = 0, i = 0;
-    int rc = text_header(t, s, &n, err);
-    char *tok[3], where[48];
+    long n = 0, cap = 0, i = 0, id = 0;
+    int version = 1;
+    int rc = text_header(t, s, &n, &version, err);
+    const int ncol = version == 2 ? 4 : 3;
+    char *tok[4], where[48];
     while (rc == GW_OK && i < n) {
         int got = text_next(t, err);
         if (got <= 0) {
@@ -345,16 +368,25 @@ static int read_text(text_in *t, gw_layer_sample *s, gw_err *err)
                                             "%ld particles", t->path, t->line, i, n);
             break;
         }
-        if (i == cap && grow(s, &cap, i + 1) != GW_OK) {
+        if (i == cap && grow(s, &cap, i + 1, version == 2) != GW_OK) {
             rc = gw_err_set(err, GW_ENOMEM, "sample '%s': out of memory for %ld particles", t->path, n);
             break;
         }
-        if (split(t->buf, tok, 3) != 3 || !parse_num(tok[0], &s->x[i]) || !parse_num(tok[1], &s->y[i]) ||
-            !parse_num(tok[2], &s->r[i])) {
-            rc = gw_err_set(err, GW_EFORMAT, "sample '%s': line %ld: expected three finite numbers 'x y r' "
-                            "(particle %ld of %ld)", t->path, t->line, i + 1, n);
+        if (split(t->buf, tok, ncol) != ncol || !parse_num(tok[0], &s->x[i]) ||
+            !parse_num(tok[1], &s->y[i]) || !parse_num(tok[2], &s->r[i]) ||
+            (ncol == 4 && !parse_long(tok[3], &id))) {
+            rc = gw_err_set(err, GW_EFORMAT, "sample '%s': line %ld: expected %s (particle %ld of %ld)",
+                            t->path, t->line, ncol == 4 ? "three finite numbers and an integer 'x y r body'"
+                            : "three finite numbers 'x y r'", i + 1, n);
             break;
         }
+        if (ncol == 4 && (id < 0 || id >= n)) {
+            rc = gw_err_set(err, GW_EFORMAT, "sample '%s': line %ld: body id %ld outside [0, %ld)", t->path,
+                            t->line, id, n);
+            break;
+        }
+        if (ncol == 4)
+            s->body[i] = (int)id;
         snprintf(where, sizeof where, "line %ld", t->line);
         rc = check_particle(s->width, s->x[i], s->y[i], s->r[i], t->path, where, GW_EFORMAT, err);
         i++;
@@ -373,6 +405,11 @@ static int read_text(text_in *t, gw_layer_sample *s, gw_err *err)
         s->y = s->x + n, s->r = s->x + 2 * n;
     }
     s->n = (int)n;
+    if (s->body) {
+        char what[4200];
+        snprintf(what, sizeof what, "sample '%s'", t->path);
+        return layer_bodies_check(s->n, s->x, s->y, s->r, s->body, what, GW_EFORMAT, err);
+    }
     return GW_OK;
 }
 
@@ -467,6 +504,20 @@ static int h5_column_write(hid_t f, const char *name, const double *v, int n)
     return bad;
 }
 
+/* The rigid-body ids of a clump sample as 32-bit integers. */
+static int h5_body_write(hid_t f, const int *v, int n)
+{
+    hsize_t dim = (hsize_t)n;
+    hid_t sp = H5Screate_simple(1, &dim, NULL);
+    hid_t d = sp < 0 ? -1 : H5Dcreate2(f, "body", H5T_STD_I32LE, sp, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+    int bad = d < 0 || H5Dwrite(d, H5T_NATIVE_INT, H5S_ALL, H5S_ALL, H5P_DEFAULT, v) < 0;
+    if (d >= 0)
+        H5Dclose(d);
+    if (sp >= 0)
+        H5Sclose(sp);
+    return bad;
+}
+
 /* Written under a temporary name through gw_afile (signals held, fsync, rename
  * on commit): the stdio stream it opens is closed while HDF5 writes the
  * temporary, then reopened so that commit can sync and rename it. The 1.8 file
@@ -497,7 +548,8 @@ static int write_h5(const gw_layer_sample *s, const char *path, const char *head
               h5_attr_write_str(file, "mass_law", s->mass_law == GW_LAYER_MASS_SPHERE ? "sphere" : "disc") ||
               h5_attr_write(file, "n", H5T_NATIVE_INT, &n) ||
               h5_attr_write_str(file, "units", "SI: x, y, r, width, rm in metres") ||
-              (header && h5_attr_write_str(file, "header", header));
+              (header && h5_attr_write_str(file, "header", header)) ||
+              (s->body && h5_body_write(file, s->body, n));
     if (file >= 0 && H5Fclose(file) < 0)
         bad = 1;
     if (fapl >= 0)
@@ -635,6 +687,25 @@ static int h5_fields(hid_t f, gw_layer_sample *s, const char *path, const char *
         (rc = h5_column_read(f, "y", (long)n, s->y, path, why, err)) != GW_OK ||
         (rc = h5_column_read(f, "r", (long)n, s->r, path, why, err)) != GW_OK)
         return rc;
+    if (H5Lexists(f, "body", H5P_DEFAULT) > 0) { /* a clump sample: ids read as numbers, then checked */
+        double *v = malloc((size_t)n * sizeof *v);
+        s->body = malloc((size_t)n * sizeof *s->body);
+        if (!v || !s->body) {
+            free(v);
+            return gw_err_set(err, GW_ENOMEM, "sample '%s': out of memory for %lld body ids", path, n);
+        }
+        rc = h5_column_read(f, "body", (long)n, v, path, why, err);
+        for (long long i = 0; rc == GW_OK && i < n; i++) {
+            if (!(v[i] >= 0 && v[i] < (double)n && v[i] == floor(v[i])))
+                rc = gw_err_set(err, GW_EFORMAT, "sample '%s': HDF5 dataset 'body': value %g at index %lld is "
+                                "not an integer in [0, %lld)", path, v[i], i, n);
+            else
+                s->body[i] = (int)v[i];
+        }
+        free(v);
+        if (rc != GW_OK)
+            return rc;
+    }
     return check_sample(s, path, GW_EFORMAT, err);
 }
 

@@ -28,7 +28,7 @@
 static int project(gw_layer *L, const int *closing, const int *slipping)
 {
     int changed = 0;
-    const int n = L->n;
+    const int n = L->nb;
     for (int k = 0; k < L->nc; k++) {
         double *f = L->y + 6 * n + k;
         if (*f == 0)
@@ -98,8 +98,8 @@ int gw_layer_start(gw_layer *L, const gw_solver_type *type, const gw_solver_para
     gw_layer_energy_of(L, &e);
     L->e0 = e.total;
     double mg = 0;
-    for (int i = 0; i < L->n; i++)
-        mg += L->m[i] * L->p.gravity * L->r[i];
+    for (int i = 0; i < L->nb; i++)
+        mg += L->m[i] * L->p.gravity * L->brad[i];
     L->e_scale = fmax(fabs(e.total), fmax(e.kinetic_block + e.kinetic_soil, mg));
     layer_system_fill(L);
     return make_solver(L, err);

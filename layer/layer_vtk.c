@@ -29,8 +29,11 @@ int gw_layer_write_vtk(const gw_layer *L, const char *path, const char *title, g
     fprintf(fp, "# vtk DataFile Version 3.0\n%s (granwave %s)\nASCII\nDATASET POLYDATA\n", title,
             gw_version());
     fprintf(fp, "POINTS %d double\n", n);
-    for (int i = 0; i < n; i++)
-        fprintf(fp, "%.9g %.9g 0\n", L->y[6 * i], L->y[6 * i + 1]);
+    for (int i = 0; i < n; i++) {
+        double s[6];
+        gw_layer_particle(L, i, s);
+        fprintf(fp, "%.9g %.9g 0\n", s[0], s[1]);
+    }
     fprintf(fp, "LINES %d %d\n", nl, 3 * nl);
     for (int k = 0; k < L->nc; k++) {
         double fn, ft, kt;
@@ -43,16 +46,19 @@ int gw_layer_write_vtk(const gw_layer *L, const char *path, const char *title, g
         fprintf(fp, "%.9g\n", L->r[i]);
     fprintf(fp, "SCALARS omega double 1\nLOOKUP_TABLE default\n");
     for (int i = 0; i < n; i++)
-        fprintf(fp, "%.9g\n", L->y[6 * i + 5]);
+        fprintf(fp, "%.9g\n", L->y[6 * layer_body(L, i) + 5]);
     fprintf(fp, "SCALARS fixed int 1\nLOOKUP_TABLE default\n");
     for (int i = 0; i < n; i++)
-        fprintf(fp, "%d\n", L->fixed[i]);
+        fprintf(fp, "%d\n", L->fixed[layer_body(L, i)]);
     fprintf(fp, "SCALARS block int 1\nLOOKUP_TABLE default\n");
     for (int i = 0; i < n; i++)
         fprintf(fp, "%d\n", i == L->block);
     fprintf(fp, "VECTORS velocity double\n");
-    for (int i = 0; i < n; i++)
-        fprintf(fp, "%.9g %.9g 0\n", L->y[6 * i + 3], L->y[6 * i + 4]);
+    for (int i = 0; i < n; i++) {
+        double s[6];
+        gw_layer_particle(L, i, s);
+        fprintf(fp, "%.9g %.9g 0\n", s[3], s[4]);
+    }
     if (nl > 0) {
         fprintf(fp, "CELL_DATA %d\nSCALARS F_n double 1\nLOOKUP_TABLE default\n", nl);
         for (int pass = 0; pass < 2; pass++) {

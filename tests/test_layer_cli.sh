@@ -8,7 +8,10 @@
 #   two VTK snapshots;
 # - bad input exits 2 with one line on stderr naming the input, and writes
 #   nothing: negative block radius, friction outside [0, 90), block overlapping
-#   the layer, unreadable and corrupt sample files, unknown solver.
+#   the layer, unreadable and corrupt sample files, unknown solver;
+# - clumps (type B): layer-make --clumps writes format 2 with body ids,
+#   deterministically, an impact on it closes its ledger to 1e-4, and a
+#   two-point layer sweep on it runs.
 set -u
 gw="$1"
 tmp=$(mktemp -d)
@@ -82,6 +85,23 @@ PY"
 else
   check "without HDF5, layer-make .h5 refused with one line naming HDF5" "grep -qi hdf5 '$tmp/h5err' && [ ! -e '$tmp/a.h5' ]"
 fi
+
+# type B soil (issue 5): clumps of discs, sample format 2 with a body column
+"$gw" layer-make --clumps --n 20 --width-rm 16 --seed 3 --t-max 0.5 --out "$tmp/c1.txt" --json > "$tmp/cmake.json"
+check "layer-make --clumps exits 0 and writes format 2 (x y r body)" \
+  "[ $? -eq 0 ] && head -1 '$tmp/c1.txt' | grep -q 'granwave-layer-sample 2' && [ \$(grep -v '^#' '$tmp/c1.txt' | tail -1 | wc -w) -eq 4 ]"
+"$gw" layer-make --clumps --n 20 --width-rm 16 --seed 3 --t-max 0.5 --out "$tmp/c2.txt" > /dev/null
+check "layer-make --clumps deterministic for a seed" "cmp -s <(grep -v '^#' '$tmp/c1.txt') <(grep -v '^#' '$tmp/c2.txt')"
+check "layer-make --clumps JSON: 20 bodies, more discs than bodies" \
+  "python3 -c 'import json,sys; d=json.load(open(\"$tmp/cmake.json\")); sys.exit(0 if d[\"n_bodies\"]==20 and d[\"n\"]>20 and 0<d[\"porosity\"]<1 else 1)'"
+"$gw" layer-impact --sample "$tmp/c1.txt" --vi 10 --t-max 0.003 --json > "$tmp/cimp.json"
+check "layer-impact on a clump sample: exit 0, closure <= 1e-4" \
+  "[ $? -eq 0 ] && python3 -c 'import json,sys; d=json.load(open(\"$tmp/cimp.json\")); sys.exit(0 if d[\"energy_error\"]<=1e-4 else 1)'"
+printf '[sweep]\nmodel = layer\n[grid]\npoint = 0:1\n[params]\nsample = %s\npoints = 2\nvi = 10\nt-max = 0.002\n' \
+  "$tmp/c1.txt" > "$tmp/cs.ini"
+"$gw" sweep "$tmp/cs.ini" --out "$tmp/csw" --quiet --jobs 1
+check "a layer sweep on the clump sample: exit 0, two rows" \
+  "[ $? -eq 0 ] && [ \$(grep -vc '^#' '$tmp/csw/results.csv') -eq 3 ]"
 
 bad() { # name, expected word in the message, args...
   local name="$1" word="$2"; shift 2

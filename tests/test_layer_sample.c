@@ -140,8 +140,13 @@ static void bad_text_inputs(void)
     refused(path, "empty", "only comments and blank lines");
     write_bytes(path, "\x7f" "ELF\x02\x01\x01\0\0\0\xff\xfe\n\x01", 15);
     refused(path, "line 1", "binary junk");
+    write_file(path, "granwave-layer-sample 3\nwidth 5\nrm 0.3\nn 1\n1 1 0.3\n");
+    refused(path, "version", "format version 3");
+    /* version 2 (clump samples) needs the body column */
     write_file(path, "granwave-layer-sample 2\nwidth 5\nrm 0.3\nn 1\n1 1 0.3\n");
-    refused(path, "version", "format version 2");
+    refused(path, "body", "format version 2 without the body column");
+    write_file(path, "granwave-layer-sample 2\nwidth 5\nrm 0.3\nn 1\n1 1 0.3 0.5\n");
+    refused(path, "body", "format version 2 with a body id that is not an integer");
     write_file(path, "granwave-layer-sample 12\nwidth 5\nrm 0.3\nn 1\n1 1 0.3\n");
     refused(path, "version", "format version 12 (was read as 1)");
     const char nul[] = "granwave-layer-sample 1\nwidth 5\nrm 0.3\nn 1\n1 1 0.3\0 9 9\n";

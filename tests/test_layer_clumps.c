@@ -1,0 +1,469 @@
+/*
+ * test_layer_clumps.c: rigid clumps of discs, type B soil (physics.md 2.2;
+ * layer_clumps.c, layer_model.c).
+ *
+ * - Energy: three clumps (2-3 members, spinning) and four discs thrown into a
+ *   box with walls under gravity, no friction: the ledger closes to
+ *   |sum - A|/A <= 1e-8 over 0.04 s with RK4 at 0.5 us (the disc pile of
+ *   test_layer_energy.c gives 2.3e-9 at that step; a wrong lever arm, a
+ *   missing normal-force torque or a wrong inertia breaks it at the 1e-3 level).
+ * - Shape: member-to-member distances, taken from gw_layer_particle, stay at
+ *   their initial values to 1e-12 m (rounding of x = X + R(theta) o on a 1 m
+ *   scale is ~1e-16; a member integrated on its own would drift by mm).
+ * - Momentum: two clumps collide off-centre with friction (30 deg), no gravity,
+ *   no walls: total linear momentum (exact for any Runge-Kutta method: the
+ *   contact forces cancel pairwise in every stage) and angular momentum about
+ *   the origin, sum I w + M X x V (quadratic: RK4 keeps it to its truncation
+ *   error, 1e-14 relative at 0.2 us here), are conserved to 1e-10 relative,
+ *   while the collision changes the momenta of each clump by order one and
+ *   friction dissipates energy. Contacts acting at the disc centre or a
+ *   missing a x F_n term would leave an angular-momentum error ~1e-3.
+ * - Pluviation of clumps is deterministic for a seed (identical arrays), a
+ *   different seed gives another sample, members per clump are 1 .. 6, and
+ *   the sample round-trips through the text format (version 2) and HDF5 with
+ *   its body ids. Malformed body ids are refused.
+ * - Disc-only results unchanged: a 17-disc pile with a block, regions,
+ *   friction, a fixed disc, run 0.06 s with RK4 and with CVODE, hashed over
+ *   the final state bits, the ledger and the region ledgers, equals the hash
+ *   recorded with the code before clumps (commit 7ca0d95). Giving every disc
+ *   a clump id of its own (singleton clumps) gives the same bits.
+ * - An impact on a clump sample runs and its ledger closes to 1e-3 (friction,
+ *   RK4 at 1 us: the disc impacts of test_layer_cli show 3e-6).
+ */
+#include <math.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "gw_layer.h"
+#include "gw_test.h"
+
+/* --------------------------------------------------------------- helpers */
+
+/* Append a row of k discs of radius r, spacing d, centred at (x, y), angle a
+ * (rad), as clump id; velocity (vx, vy), spin w. */
+static int add_row(gw_layer_body *b, int n, int id, int k, double r, double d, double x, double y,
+                   double a, double vx, double vy, double w)
+{
+    for (int j = 0; j < k; j++) {
+        double u = (j - 0.5 * (k - 1)) * d;
+        b[n++] = (gw_layer_body){.x = x + u * cos(a), .y = y + u * sin(a), .r = r, .vx = vx, .vy = vy,
+                                 .w = w, .clump = id};
+    }
+    return n;
+}
+
+/* All member distances of every clump into dist (pairs in order). */
+static int member_distances(const gw_layer *L, const gw_layer_body *b, int n, double *dist)
+{
+    int k = 0;
+    for (int i = 0; i < n; i++)
+        for (int j = i + 1; j < n; j++)
+            if (b[i].clump > 0 && b[i].clump == b[j].clump) {
+                double si[6], sj[6];
+                gw_layer_particle(L, i, si);
+                gw_layer_particle(L, j, sj);
+                dist[k++] = hypot(si[0] - sj[0], si[1] - sj[1]);
+            }
+    return k;
+}
+
+/* ------------------------------------------------- energy and rigidity */
+
+static void test_energy_and_shape(void)
+{
+    gw_layer_params p = gw_layer_params_default();
+    p.width = 1.2;
+    p.friction_deg = 0;
+    p.skin = 0.02;
+    p.potential_from_start = 1;
+    gw_layer_body b[16];
+    int n = 0;
+    n = add_row(b, n, 1, 3, 0.06, 0.08, 0.3, 0.3, 0.2, 0.5, -2.0, 5.0);
+    n = add_row(b, n, 2, 2, 0.07, 0.09, 0.75, 0.35, M_PI / 3, -0.4, -2.5, -3.0);
+    n = add_row(b, n, 3, 3, 0.05, 0.09, 0.5, 0.75, -0.4, 0.0, -3.0, 8.0);
+    for (int i = 0; i < 4; i++)
+        b[n++] = (gw_layer_body){.x = 0.15 + 0.3 * i, .y = 0.08, .r = 0.06 + 0.005 * i, .vx = 0.3 * (i - 1.5)};
+    gw_layer *L = NULL;
+    gw_err err = {{0}};
+    int rc = gw_layer_create(&p, n, b, &L, &err);
+    gw_test_true(rc == GW_OK, "clump layer created");
+    if (rc != GW_OK) {
+        printf("  %s\n", err.msg);
+        return;
+    }
+    gw_test_true(gw_layer_body_count(L) == 7, "3 clumps + 4 discs = 7 bodies");
+    gw_test_true(gw_layer_body_of(L, 0) == gw_layer_body_of(L, 2) &&
+                 gw_layer_body_of(L, 2) != gw_layer_body_of(L, 3), "members share a body");
+    /* mass of clump 1 = 3 disc masses */
+    gw_test_rel(gw_layer_particle_mass(L, 1), 3 * gw_layer_mass(&p, 0.06), 1e-15, "clump mass = sum of members");
+    gw_solver_params sp = gw_solver_params_default();
+    sp.dt = 5e-7;
+    rc = gw_layer_start(L, gw_solver_rk4, &sp, &err);
+    double A = gw_layer_energy_initial(L), d0[16], d1[16], emax = 0, dmax = 0;
+    int nd = member_distances(L, b, n, d0);
+    double ke0 = 0;
+    gw_layer_energy e;
+    gw_layer_energy_of(L, &e);
+    ke0 = e.kinetic_soil;
+    double wmin = INFINITY, wmax = -INFINITY;
+    for (int k = 1; k <= 80 && rc == GW_OK; k++) {
+        rc = gw_layer_advance(L, 0.08 * k / 80, &err);
+        gw_layer_energy_of(L, &e);
+        emax = fmax(emax, fabs(e.total - A) / A);
+        member_distances(L, b, n, d1);
+        for (int q = 0; q < nd; q++)
+            dmax = fmax(dmax, fabs(d1[q] - d0[q]));
+        for (int q = 0; q < 3; q++) { /* largest spin change of a clump */
+            double s[6];
+            gw_layer_body_state(L, gw_layer_body_of(L, q == 0 ? 0 : q == 1 ? 3 : 5), s);
+            double w0 = q == 0 ? 5.0 : q == 1 ? -3.0 : 8.0;
+            wmin = fmin(wmin, s[5] - w0), wmax = fmax(wmax, s[5] - w0);
+        }
+    }
+    if (rc != GW_OK)
+        printf("  run failed: %s\n", err.msg);
+    gw_layer_stats st;
+    gw_layer_get_stats(L, &st);
+    printf("  frictionless clumps: A = %g J, %ld events, %ld rebuilds, %d member pairs, spin changes of "
+           "the clumps in [%g, %g] rad/s\n", A, st.events, st.rebuilds, nd, wmin, wmax);
+    gw_test_true(rc == GW_OK && st.events >= 10, "the clumps collide (>= 10 contact events)");
+    gw_test_true(fabs(e.kinetic_soil - ke0) > 0.05 * ke0, "kinetic energy exchanged (> 5 %)");
+    gw_test_true(wmax - wmin > 1.0, "contacts change a clump's spin by more than 1 rad/s");
+    gw_test_abs(emax, 0, 1e-8, "ledger closure |sum - A|/A without friction (RK4 0.5 us)");
+    gw_test_true(e.dissipated == 0, "no dissipation without friction");
+    gw_test_abs(dmax, 0, 1e-12, "member distances constant (m)");
+    gw_layer_free(L);
+}
+
+/* ------------------------------------------------------------- momentum */
+
+/* Linear momentum and the orbital part M X x V of the angular momentum (the
+ * spin part I w is added by the caller). */
+static void momenta(const gw_layer *L, double P[2], double *Lz, double *scale_p, double *scale_l)
+{
+    P[0] = P[1] = *Lz = *scale_p = *scale_l = 0;
+    for (int k = 0; k < gw_layer_body_count(L); k++) {
+        double s[6];
+        gw_layer_body_state(L, k, s);
+        int i = 0;
+        while (gw_layer_body_of(L, i) != k)
+            i++;
+        double M = gw_layer_particle_mass(L, i);
+        P[0] += M * s[3], P[1] += M * s[4];
+        *scale_p += M * hypot(s[3], s[4]);
+        double lo = M * (s[0] * s[4] - s[1] * s[3]);
+        *Lz += lo;
+        *scale_l += fabs(lo);
+    }
+}
+
+static void test_momentum(void)
+{
+    gw_layer_params p = gw_layer_params_default();
+    p.width = 1.0;
+    p.walls = 0;
+    p.gravity = 0;
+    p.friction_deg = 30;
+    p.skin = 0.02;
+    gw_layer_body b[8];
+    int n = 0;
+    n = add_row(b, n, 1, 3, 0.05, 0.07, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
+    n = add_row(b, n, 2, 2, 0.06, 0.08, 0.09, 0.215, M_PI / 6, -0.5, -3.0, 2.0);
+    gw_layer *L = NULL;
+    gw_err err = {{0}};
+    int rc = gw_layer_create(&p, n, b, &L, &err);
+    gw_test_true(rc == GW_OK, "two-clump layer created");
+    if (rc != GW_OK) {
+        printf("  %s\n", err.msg);
+        return;
+    }
+    /* I of each clump rebuilt from its members (sum of I_i + m_i d_i^2), the
+     * law checked against the ledger's kinetic energy below */
+    double I[2] = {0, 0};
+    for (int q = 0; q < 2; q++) {
+        double X = 0, Y = 0, M = 0;
+        for (int i = 0; i < n; i++)
+            if (b[i].clump == q + 1) {
+                double m = gw_layer_mass(&p, b[i].r);
+                X += m * b[i].x, Y += m * b[i].y, M += m;
+            }
+        X /= M, Y /= M;
+        for (int i = 0; i < n; i++)
+            if (b[i].clump == q + 1) {
+                double m = gw_layer_mass(&p, b[i].r);
+                I[q] += gw_layer_inertia(&p, b[i].r) + m * ((b[i].x - X) * (b[i].x - X) + (b[i].y - Y) * (b[i].y - Y));
+            }
+    }
+    gw_solver_params sp = gw_solver_params_default();
+    sp.dt = 1e-7;
+    rc = gw_layer_start(L, gw_solver_rk4, &sp, &err);
+    double P0[2], L0, sp0, sl0, s[6];
+    momenta(L, P0, &L0, &sp0, &sl0);
+    for (int q = 0; q < 2; q++) {
+        gw_layer_body_state(L, q, s);
+        L0 += I[q] * s[5];
+        sl0 += fabs(I[q] * s[5]);
+    }
+    double s1a[6];
+    gw_layer_body_state(L, 0, s1a);
+    double perr = 0, lerr = 0;
+    for (int k = 1; k <= 40 && rc == GW_OK; k++) {
+        rc = gw_layer_advance(L, 0.03 * k / 40, &err);
+        double P[2], Lz, scp, scl;
+        momenta(L, P, &Lz, &scp, &scl);
+        for (int q = 0; q < 2; q++) {
+            gw_layer_body_state(L, q, s);
+            Lz += I[q] * s[5];
+        }
+        perr = fmax(perr, hypot(P[0] - P0[0], P[1] - P0[1]) / sp0);
+        lerr = fmax(lerr, fabs(Lz - L0) / sl0);
+    }
+    if (rc != GW_OK)
+        printf("  run failed: %s\n", err.msg);
+    gw_layer_energy e;
+    gw_layer_energy_of(L, &e);
+    double s1[6];
+    gw_layer_body_state(L, 0, s1);
+    gw_layer_stats st;
+    gw_layer_get_stats(L, &st);
+    printf("  two clumps: %ld events; clump 1 after: v = (%g, %g) m/s, w = %g rad/s; E_d = %g J\n", st.events,
+           s1[3], s1[4], s1[5], e.dissipated);
+    gw_test_true(rc == GW_OK && hypot(s1[3], s1[4]) > 0.3, "the collision sets the struck clump moving");
+    gw_test_true(fabs(s1[5]) > 0.5, "and spinning (> 0.5 rad/s)");
+    gw_test_true(e.dissipated > 0, "friction dissipates");
+    gw_test_abs(perr, 0, 1e-10, "linear momentum conserved (relative to sum |M V|)");
+    gw_test_abs(lerr, 0, 1e-10, "angular momentum about the origin conserved (relative)");
+    /* the moment of inertia of the model is the one rebuilt here: the
+     * rotational kinetic energy of clump 1 must equal (1/2) I w^2 */
+    gw_layer_energy_of(L, &e);
+    double ke = 0;
+    for (int q = 0; q < 2; q++) {
+        gw_layer_body_state(L, q, s);
+        int i = q == 0 ? 0 : 3;
+        ke += 0.5 * gw_layer_particle_mass(L, i) * (s[3] * s[3] + s[4] * s[4]) + 0.5 * I[q] * s[5] * s[5];
+    }
+    gw_test_rel(e.kinetic_soil, ke, 1e-14, "ledger kinetic energy uses I = sum (I_i + m_i d_i^2)");
+    gw_layer_free(L);
+}
+
+/* ----------------------------------------------------------- pluviation */
+
+static int make(long seed, gw_layer_sample *s, gw_layer_make_result *r)
+{
+    gw_layer_params lp = gw_layer_params_default();
+    gw_layer_make_params mp = gw_layer_make_params_default();
+    mp.n = 10;
+    mp.width_rm = 12;
+    mp.t_max = 0.3;
+    mp.seed = seed;
+    mp.clumps = 1;
+    gw_err err = {{0}};
+    int rc = gw_layer_make(&lp, &mp, s, r, &err);
+    if (rc != GW_OK)
+        printf("  make failed: %s\n", err.msg);
+    return rc;
+}
+
+static int same_sample(const gw_layer_sample *a, const gw_layer_sample *b)
+{
+    return a->n == b->n && memcmp(a->x, b->x, 3 * (size_t)a->n * sizeof *a->x) == 0 && a->body && b->body &&
+           memcmp(a->body, b->body, (size_t)a->n * sizeof *a->body) == 0;
+}
+
+static void test_pluviation(gw_layer_sample *keep)
+{
+    gw_layer_sample a, b, c;
+    gw_layer_make_result ra, rb, rc;
+    int ok = make(7, &a, &ra) == GW_OK && make(7, &b, &rb) == GW_OK && make(8, &c, &rc) == GW_OK;
+    gw_test_true(ok, "clump pluviation runs");
+    if (!ok)
+        return;
+    gw_test_true(same_sample(&a, &b), "same seed: identical positions, radii and body ids");
+    gw_test_true(!(a.n == c.n && memcmp(a.x, c.x, 3 * (size_t)a.n * sizeof *a.x) == 0), "another seed differs");
+    int count[10] = {0}, ids_ok = ra.n_bodies == 10;
+    for (int i = 0; i < a.n; i++) {
+        if (a.body[i] < 0 || a.body[i] >= 10)
+            ids_ok = 0;
+        else
+            count[a.body[i]]++;
+    }
+    int kmin = 99, kmax = 0;
+    for (int q = 0; q < 10; q++)
+        kmin = count[q] < kmin ? count[q] : kmin, kmax = count[q] > kmax ? count[q] : kmax;
+    printf("  10 clumps, %d discs (members %d .. %d), porosity %.4f, max overlap %.3g R_p\n", a.n, kmin, kmax,
+           ra.porosity, ra.max_overlap);
+    gw_test_true(ids_ok && kmin >= 1 && kmax <= 6 && kmax >= 2, "10 bodies of 1 .. 6 members, some clumps");
+    gw_test_true(ra.porosity > 0 && ra.porosity < 1 && ra.porosity == a.porosity, "porosity reported");
+    /* round trips */
+    gw_err err = {{0}};
+    const char *paths[2] = {"test_layer_clumps_sample.txt", "test_layer_clumps_sample.h5"};
+    for (int f = 0; f < 2; f++) {
+        if (gw_layer_sample_format_check(paths[f], &err) != GW_OK)
+            continue; /* no HDF5 in this build */
+        gw_layer_sample r;
+        int w = gw_layer_sample_write(&a, paths[f], "test", &err) == GW_OK &&
+                gw_layer_sample_read(paths[f], &r, &err) == GW_OK;
+        char what[96];
+        snprintf(what, sizeof what, "%s: written and read back with its body ids", paths[f]);
+        gw_test_true(w && same_sample(&a, &r), what);
+        if (w)
+            gw_layer_sample_free(&r);
+        remove(paths[f]);
+    }
+    gw_layer_sample_free(&b);
+    gw_layer_sample_free(&c);
+    *keep = a;
+}
+
+static void test_bad_bodies(void)
+{
+    const char *path = "test_layer_clumps_bad.txt";
+    const char *cases[3][2] = {
+        {"0.5 0.5 0.1 0\n0.65 0.5 0.1 0\n", "touching members accepted"},
+        {"0.5 0.5 0.1 0\n0.75 0.5 0.1 0\n", "members apart (gap 0.05 m) refused"},
+        {"0.5 0.5 0.1 0\n0.65 0.5 0.1 2\n", "body id 2 of n = 2 refused"},
+    };
+    for (int k = 0; k < 3; k++) {
+        FILE *f = fopen(path, "w");
+        if (!f)
+            return;
+        fprintf(f, "granwave-layer-sample 2\nwidth 2\nrm 0.1\nn 2\n%s", cases[k][0]);
+        fclose(f);
+        gw_layer_sample s;
+        gw_err err = {{0}};
+        int rc = gw_layer_sample_read(path, &s, &err);
+        printf("  %s\n", rc == GW_OK ? "read" : err.msg);
+        gw_test_true(k == 0 ? rc == GW_OK && s.body && s.body[1] == 0 : rc == GW_EFORMAT, cases[k][1]);
+        gw_layer_sample_free(&s);
+    }
+    remove(path);
+    /* the model refuses a clump whose members do not touch */
+    gw_layer_params p = gw_layer_params_default();
+    p.width = 2;
+    gw_layer_body b[2] = {{.x = 0.5, .y = 0.5, .r = 0.1, .clump = 4}, {.x = 0.8, .y = 0.5, .r = 0.1, .clump = 4}};
+    gw_layer *L = NULL;
+    gw_err err = {{0}};
+    gw_test_true(gw_layer_create(&p, 2, b, &L, &err) == GW_EINVAL && !L, "gw_layer_create refuses a split clump");
+    /* at most 64 members: a touching row of 65 discs is refused, 64 accepted */
+    gw_layer_body row[65];
+    for (int i = 0; i < 65; i++)
+        row[i] = (gw_layer_body){.x = 0.1 + 0.02 * i, .y = 0.5, .r = 0.01, .clump = 1};
+    p.width = 2;
+    gw_test_true(gw_layer_create(&p, 65, row, &L, &err) == GW_EINVAL && !L, "a clump of 65 members refused");
+    int ok = gw_layer_create(&p, 64, row, &L, &err) == GW_OK && gw_layer_body_count(L) == 1;
+    gw_test_true(ok, "a clump of 64 members is one body");
+    gw_layer_free(L);
+}
+
+/* ------------------------------------------------------ disc-only bits */
+
+static uint64_t mix(uint64_t h, double v)
+{
+    uint64_t u;
+    memcpy(&u, &v, sizeof u);
+    return h ^ (u + 0x9E3779B97F4A7C15ULL + (h << 6) + (h >> 2));
+}
+
+static uint64_t disc_pile_hash(const gw_solver_type *type, int singleton_clumps)
+{
+    gw_layer_params p = gw_layer_params_default();
+    p.width = 1.0;
+    p.friction_deg = 30;
+    p.skin = 0.02;
+    p.potential_from_start = 1;
+    gw_layer_body b[17];
+    for (int i = 0; i < 16; i++) {
+        int row = i / 4, col = i % 4;
+        b[i] = (gw_layer_body){.x = 0.13 + 0.245 * col + 0.01 * row, .y = 0.1 + 0.23 * row,
+                               .r = 0.08 + 0.03 * ((i * 7) % 5) / 4.0, .vy = -2.0,
+                               .vx = 0.3 * ((i % 3) - 1), .w = 0.5 * (i % 2)};
+    }
+    b[0].fixed = 1;
+    b[16] = (gw_layer_body){.x = 0.5, .y = 1.1, .r = 0.1, .vy = -5};
+    for (int i = 0; singleton_clumps && i < 17; i++)
+        b[i].clump = 100 + i;
+    gw_layer *L = NULL;
+    gw_err err = {{0}};
+    if (gw_layer_create(&p, 17, b, &L, &err) != GW_OK)
+        return 0;
+    gw_layer_set_block(L, 16);
+    gw_layer_set_regions(L, 0.5, 0.5, 0.2, 3, &err);
+    gw_solver_params sp = gw_solver_params_default();
+    sp.dt = 1e-6;
+    sp.rtol = sp.atol = 1e-9;
+    uint64_t h = 0;
+    if (gw_layer_start(L, type, &sp, &err) == GW_OK && gw_layer_advance(L, 0.06, &err) == GW_OK) {
+        double s[6];
+        for (int i = 0; i < 17; i++) {
+            gw_layer_particle(L, i, s);
+            for (int q = 0; q < 6; q++)
+                h = mix(h, s[q]);
+        }
+        gw_layer_energy e, rg[5];
+        gw_layer_energy_of(L, &e);
+        h = mix(h, e.total), h = mix(h, e.dissipated), h = mix(h, e.kinetic_block);
+        gw_layer_region_ledger(L, rg);
+        for (int q = 0; q < 5; q++)
+            h = mix(h, rg[q].total);
+    } else {
+        printf("  run failed: %s\n", err.msg);
+    }
+    gw_layer_free(L);
+    return h;
+}
+
+static void test_disc_bits(void)
+{
+    /* recorded with the build of commit 7ca0d95 (before clumps), x86-64, gcc -O3,
+     * SUNDIALS 6.4.1 for CVODE */
+    const uint64_t ref_rk4 = 0x1e1594d3ddde4b87ULL, ref_cvode = 0x0347575bb4ca8f0aULL;
+    uint64_t h1 = disc_pile_hash(gw_solver_rk4, 0), h2 = disc_pile_hash(gw_solver_cvode, 0);
+    uint64_t h3 = disc_pile_hash(gw_solver_rk4, 1);
+    printf("  disc pile hashes: rk4 0x%016llx, cvode 0x%016llx, rk4 singleton clumps 0x%016llx\n",
+           (unsigned long long)h1, (unsigned long long)h2, (unsigned long long)h3);
+    gw_test_true(h1 == ref_rk4, "disc-only RK4 run bit-identical to the code before clumps");
+    gw_test_true(h2 == ref_cvode, "disc-only CVODE run bit-identical to the code before clumps");
+    gw_test_true(h3 == ref_rk4, "every disc a clump of its own: the same bits");
+}
+
+/* --------------------------------------------------------------- impact */
+
+static void test_impact(const gw_layer_sample *s)
+{
+    gw_layer_params lp = gw_layer_params_default();
+    gw_layer_impact_params ip = gw_layer_impact_params_default();
+    ip.vi = 10;
+    ip.t_max = 0.003;
+    ip.nrings = 3;
+    gw_solver_params sp = gw_solver_params_default();
+    sp.dt = 1e-6;
+    gw_layer_impact_result r;
+    gw_err err = {{0}};
+    int rc = gw_layer_impact(s, &lp, &ip, gw_solver_rk4, &sp, NULL, &r, &err);
+    if (rc != GW_OK)
+        printf("  impact failed: %s\n", err.msg);
+    gw_test_true(rc == GW_OK, "an impact on a clump sample runs");
+    if (rc != GW_OK)
+        return;
+    printf("  impact on 10 clumps: e_n = %g, penetration %g m, closure %.3g, block loss %g\n", r.e_n,
+           r.penetration, r.energy_error, r.block_loss_first_contact);
+    gw_test_abs(r.energy_error, 0, 1e-3, "impact ledger closure (friction, RK4 1 us)");
+    gw_test_true(r.block_loss_first_contact > 0.01, "the block hands energy to the clumps");
+    gw_layer_impact_result_free(&r);
+}
+
+int main(void)
+{
+    test_energy_and_shape();
+    test_momentum();
+    gw_layer_sample s = {0};
+    test_pluviation(&s);
+    test_bad_bodies();
+    test_disc_bits();
+    if (s.n > 0)
+        test_impact(&s);
+    gw_layer_sample_free(&s);
+    return gw_test_summary("test_layer_clumps");
+}

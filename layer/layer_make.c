@@ -141,6 +141,71 @@ static double max_overlap(const gw_layer_body *b, int n, double width)
     return maxov;
 }
 
+/* The pluviation box: the layer parameters of lp0 with the box of m, all walls,
+ * settling damping, no event location (a settling pile chatters: thousands of
+ * contact events/s). */
+static int box_params(const gw_layer_params *lp0, const gw_layer_make_params *m, gw_layer_params *lp,
+                      gw_err *err)
+{
+    *lp = *lp0;
+    lp->width = m->width_rm * m->rm;
+    lp->walls = GW_LAYER_WALLS_ALL;
+    lp->damping = m->damping;
+    lp->potential_from_start = 0;
+    lp->no_events = 1;
+    return gw_layer_params_validate(lp, err);
+}
+
+/* Settle the n discs b (softened by modulus_factor first when it is < 1) until
+ * the kinetic energy is below ke_threshold M g R_m; b receives the settled
+ * positions. */
+static int settle_all(const gw_layer_params *lp, const gw_layer_make_params *m, int n, gw_layer_body *b,
+                      double *t, double *ke, int *conv, gw_layer_make_result *res, gw_err *err)
+{
+    double mtot = 0;
+    for (int i = 0; i < n; i++)
+        mtot += gw_layer_mass(lp, b[i].r);
+    const double thr = m->ke_threshold * mtot * lp->gravity * m->rm;
+    int rc = GW_OK;
+    *t = *ke = 0;
+    *conv = 0;
+    if (m->modulus_factor < 1) {
+        gw_layer_params soft = *lp;
+        soft.shear_modulus *= m->modulus_factor;
+        double ts = 0;
+        rc = settle(&soft, m, n, b, thr, &ts, ke, conv, &res->steps, &res->rebuilds, err);
+        *t += ts;
+    }
+    if (rc == GW_OK) {
+        double tr = 0;
+        rc = settle(lp, m, n, b, thr, &tr, ke, conv, &res->steps, &res->rebuilds, err);
+        *t += tr;
+    }
+    return rc;
+}
+
+/* The sample's header and the result, once out->x, y, r (and body) hold the
+ * n settled discs b. */
+static void finish(const gw_layer_params *lp, const gw_layer_make_params *m, const gw_layer_body *b,
+                   int n, double t, double ke, int conv, double t0, gw_layer_sample *out,
+                   gw_layer_make_result *res)
+{
+    out->n = n;
+    out->width = lp->width;
+    out->rm = m->rm;
+    out->volume_ratio = m->volume_ratio;
+    out->seed = m->seed;
+    out->mass_law = lp->mass_law;
+    res->max_overlap = max_overlap(b, n, lp->width);
+    out->porosity = gw_layer_sample_porosity(out);
+    res->porosity = out->porosity;
+    res->t_settle = t;
+    res->ke_final = ke;
+    res->converged = conv;
+    res->n_discs = n;
+    res->wall_ms = gw_clock_ms() - t0;
+}
+
 /* Initial clumps: shapes drawn per clump, packed in rows of bounding boxes.
  * Returns the number of discs (members) in *nd; b has LAYER_CLUMP_MAX n room. */
 static void clumps_initial(const gw_layer_make_params *m, double width, gw_layer_body *b, int *nd)
@@ -185,13 +250,8 @@ static int make_clumps(const gw_layer_params *lp0, const gw_layer_make_params *m
                        gw_layer_sample *out, gw_layer_make_result *res, gw_err *err)
 {
     double t0 = gw_clock_ms();
-    gw_layer_params lp = *lp0;
-    lp.width = m->width_rm * m->rm;
-    lp.walls = GW_LAYER_WALLS_ALL;
-    lp.damping = m->damping;
-    lp.potential_from_start = 0;
-    lp.no_events = 1;
-    int rc = gw_layer_params_validate(&lp, err);
+    gw_layer_params lp;
+    int rc = box_params(lp0, m, &lp, err);
     if (rc != GW_OK)
         return rc;
     gw_layer_body *b = calloc(LAYER_CLUMP_MAX * (size_t)m->n, sizeof *b);
@@ -199,24 +259,9 @@ static int make_clumps(const gw_layer_params *lp0, const gw_layer_make_params *m
         return gw_err_set(err, GW_ENOMEM, "layer-make: out of memory");
     int nd = 0;
     clumps_initial(m, lp.width, b, &nd);
-    double mtot = 0;
-    for (int i = 0; i < nd; i++)
-        mtot += gw_layer_mass(&lp, b[i].r);
-    const double thr = m->ke_threshold * mtot * lp.gravity * m->rm;
-    double t = 0, ke = 0;
-    int conv = 0;
-    if (m->modulus_factor < 1) {
-        gw_layer_params soft = lp;
-        soft.shear_modulus *= m->modulus_factor;
-        double ts = 0;
-        rc = settle(&soft, m, nd, b, thr, &ts, &ke, &conv, &res->steps, &res->rebuilds, err);
-        t += ts;
-    }
-    if (rc == GW_OK) {
-        double tr = 0;
-        rc = settle(&lp, m, nd, b, thr, &tr, &ke, &conv, &res->steps, &res->rebuilds, err);
-        t += tr;
-    }
+    double t, ke;
+    int conv;
+    rc = settle_all(&lp, m, nd, b, &t, &ke, &conv, res, err);
     /* keep the clumps lying wholly below height_rm R_m; ids renumbered 0.. */
     int kept = 0, nbody = 0;
     for (int a = 0; rc == GW_OK && a < nd;) {
@@ -251,27 +296,14 @@ static int make_clumps(const gw_layer_params *lp0, const gw_layer_make_params *m
     }
     out->y = out->x + kept;
     out->r = out->x + 2 * kept;
-    out->n = kept;
-    out->width = lp.width;
-    out->rm = m->rm;
-    out->volume_ratio = m->volume_ratio;
-    out->seed = m->seed;
-    out->mass_law = lp.mass_law;
     for (int i = 0; i < kept; i++) {
         out->x[i] = b[i].x, out->y[i] = b[i].y, out->r[i] = b[i].r;
         out->body[i] = b[i].clump;
         b[i].clump++; /* 0 is "no clump" for max_overlap */
     }
-    res->max_overlap = max_overlap(b, kept, lp.width);
+    finish(&lp, m, b, kept, t, ke, conv, t0, out, res);
     free(b);
-    out->porosity = gw_layer_sample_porosity(out);
-    res->porosity = out->porosity;
-    res->t_settle = t;
-    res->ke_final = ke;
-    res->converged = conv;
     res->n_bodies = nbody;
-    res->n_discs = kept;
-    res->wall_ms = gw_clock_ms() - t0;
     return GW_OK;
 }
 
@@ -286,13 +318,8 @@ int gw_layer_make(const gw_layer_params *lp0, const gw_layer_make_params *m,
     double t0 = gw_clock_ms();
     if (m->clumps)
         return make_clumps(lp0, m, out, res, err);
-    gw_layer_params lp = *lp0;
-    lp.width = m->width_rm * m->rm;
-    lp.walls = GW_LAYER_WALLS_ALL;
-    lp.damping = m->damping;
-    lp.potential_from_start = 0;
-    lp.no_events = 1; /* a settling pile chatters: thousands of contact events/s */
-    if ((rc = gw_layer_params_validate(&lp, err)) != GW_OK)
+    gw_layer_params lp;
+    if ((rc = box_params(lp0, m, &lp, err)) != GW_OK)
         return rc;
     int n = m->n;
     const double cv = cbrt(m->volume_ratio), rmin = 2 * m->rm / (1 + cv), rmax = cv * rmin;
@@ -303,29 +330,15 @@ int gw_layer_make(const gw_layer_params *lp0, const gw_layer_make_params *m,
     const double pitch = 2.2 * rmax, jit = 0.05 * rmax;
     const int ncol = (int)(lp.width / pitch) > 0 ? (int)(lp.width / pitch) : 1;
     const double x0 = 0.5 * (lp.width - ncol * pitch) + 0.5 * pitch;
-    double mtot = 0;
     for (int i = 0; i < n; i++) {
         int row = i / ncol, col = i % ncol;
         b[i].r = rmin + (rmax - rmin) * sm_uniform(&g);
         b[i].x = x0 + col * pitch + jit * (2 * sm_uniform(&g) - 1);
         b[i].y = 0.5 * pitch + row * pitch + jit * (2 * sm_uniform(&g) - 1);
-        mtot += gw_layer_mass(&lp, b[i].r);
     }
-    const double thr = m->ke_threshold * mtot * lp.gravity * m->rm;
-    double t = 0, ke = 0;
-    int conv = 0;
-    if (m->modulus_factor < 1) {
-        gw_layer_params soft = lp;
-        soft.shear_modulus *= m->modulus_factor;
-        double ts = 0;
-        rc = settle(&soft, m, n, b, thr, &ts, &ke, &conv, &res->steps, &res->rebuilds, err);
-        t += ts;
-    }
-    if (rc == GW_OK) {
-        double tr = 0;
-        rc = settle(&lp, m, n, b, thr, &tr, &ke, &conv, &res->steps, &res->rebuilds, err);
-        t += tr;
-    }
+    double t, ke;
+    int conv;
+    rc = settle_all(&lp, m, n, b, &t, &ke, &conv, res, err);
     if (rc == GW_OK) {
         out->x = malloc(3 * (size_t)n * sizeof *out->x);
         if (!out->x)
@@ -352,23 +365,10 @@ int gw_layer_make(const gw_layer_params *lp0, const gw_layer_make_params *m,
     }
     out->y = out->x + n;
     out->r = out->x + 2 * n;
-    out->n = n;
-    out->width = lp.width;
-    out->rm = m->rm;
-    out->volume_ratio = m->volume_ratio;
-    out->seed = m->seed;
-    out->mass_law = lp.mass_law;
     for (int i = 0; i < n; i++)
         out->x[i] = b[i].x, out->y[i] = b[i].y, out->r[i] = b[i].r;
-    double maxov = max_overlap(b, n, lp.width);
+    finish(&lp, m, b, n, t, ke, conv, t0, out, res);
     free(b);
-    out->porosity = gw_layer_sample_porosity(out);
-    res->porosity = out->porosity;
-    res->t_settle = t;
-    res->ke_final = ke;
-    res->max_overlap = maxov;
-    res->converged = conv;
-    res->n_bodies = res->n_discs = n;
-    res->wall_ms = gw_clock_ms() - t0;
+    res->n_bodies = n;
     return GW_OK;
 }

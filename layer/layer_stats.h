@@ -87,6 +87,9 @@ typedef struct gw_layer_group {
     double share;         /* n_bounced / n_valid (NaN if none valid) */
     int bouncing;         /* global verdict: share >= criterion */
     gw_layer_moment e_n, e, alpha_r, penetration, penetration_rm, block_loss, dissipated;
+    gw_layer_moment rebound_energy; /* e^2 (the block's rebound kinetic energy over the
+                                       incident one, translation), 0 for a point that does
+                                       not bounce; over every valid row */
     double energy_error_max;
     /* convergence with the number of points (Fig. 10): over the first k points
      * (k = 1..n), the mean over the bouncing ones among them and the share */

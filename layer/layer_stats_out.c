@@ -82,6 +82,7 @@ static cJSON *group_json(const layer_stats_run *R, const gw_layer_group *g)
     cJSON_AddItemToObject(o, "penetration", moment_json(&g->penetration));
     cJSON_AddItemToObject(o, "penetration_rm", moment_json(&g->penetration_rm));
     cJSON_AddItemToObject(o, "block_loss_first_contact", moment_json(&g->block_loss));
+    cJSON_AddItemToObject(o, "rebound_energy", moment_json(&g->rebound_energy));
     cJSON_AddItemToObject(o, "dissipated_first_contact", moment_json(&g->dissipated));
     cJSON_AddNumberToObject(o, "energy_error_max", g->energy_error_max);
     cJSON_AddNumberToObject(o, "k_stable_e", g->k_stable_e);
@@ -221,6 +222,7 @@ static cJSON *walls_json(const layer_stats_run *R)
             cJSON_AddNumberToObject(q, "e", g->e.mean);
             cJSON_AddNumberToObject(q, "penetration_rm", g->penetration_rm.mean);
             cJSON_AddNumberToObject(q, "block_loss_first_contact", g->block_loss.mean);
+            cJSON_AddNumberToObject(q, "rebound_energy", g->rebound_energy.mean);
         }
         cJSON_AddItemToArray(a, o);
     }
@@ -293,13 +295,15 @@ static void write_groups(FILE *fp, const layer_stats_run *R)
     head(fp, R, "per group of impact points (every grid key but point): e_n, e, alpha_r (deg) over the "
                 "bouncing points (n_rebound of them), the others over all points; std = sample standard "
                 "deviation (n - 1); penetration in m and in R_m; first-contact block loss and friction "
-                "dissipation as fractions of the incident energy; k_stable_e = points after which the running "
+                "dissipation as fractions of the incident energy; rebound_energy = e^2, the block's rebound "
+                "kinetic energy (translation) over the incident one, 0 where it does not bounce; k_stable_e = points after which the running "
                 "mean of e stays within 5 % of the final mean");
     fprintf(fp, "group");
     key_names(fp, R, -1, -1);
     fprintf(fp, ",n_points,n_valid,n_bounced,bounce_share,bouncing,e_n_mean,e_n_std,e_mean,e_std,alpha_r_mean,"
                 "alpha_r_std,n_rebound,penetration_mean,penetration_std,penetration_rm_mean,penetration_rm_std,"
-                "block_loss_mean,block_loss_std,dissipated_mean,dissipated_std,energy_error_max,k_stable_e\n");
+                "block_loss_mean,block_loss_std,dissipated_mean,dissipated_std,rebound_energy_mean,rebound_energy_std,"
+                "energy_error_max,k_stable_e\n");
     for (int a = 0; a < R->gs.n; a++) {
         const gw_layer_group *g = &R->gs.g[a];
         fprintf(fp, "%d", a);
@@ -313,8 +317,9 @@ static void write_groups(FILE *fp, const layer_stats_run *R)
             num(fp, m[k]->std);
         }
         fprintf(fp, ",%d", g->e.n);
-        const gw_layer_moment *m2[] = {&g->penetration, &g->penetration_rm, &g->block_loss, &g->dissipated};
-        for (int k = 0; k < 4; k++) {
+        const gw_layer_moment *m2[] = {&g->penetration, &g->penetration_rm, &g->block_loss, &g->dissipated,
+                                       &g->rebound_energy};
+        for (int k = 0; k < 5; k++) {
             num(fp, m2[k]->mean);
             num(fp, m2[k]->std);
         }
@@ -379,7 +384,7 @@ static void write_walls(FILE *fp, const layer_stats_run *R)
     fprintf(fp, "pair");
     key_names(fp, R, kw, -1);
     static const char *cols[] = {"n_points", "bounce_share", "bouncing", "e_n_mean", "e_mean", "penetration_rm_mean",
-                                 "block_loss_mean"};
+                                 "block_loss_mean", "rebound_energy_mean"};
     for (int w = 0; w < 2; w++)
         for (size_t c = 0; c < sizeof cols / sizeof cols[0]; c++)
             fprintf(fp, ",%s_%s", w ? "removed" : "walls", cols[c]);
@@ -396,6 +401,7 @@ static void write_walls(FILE *fp, const layer_stats_run *R)
             num(fp, g->e.mean);
             num(fp, g->penetration_rm.mean);
             num(fp, g->block_loss.mean);
+            num(fp, g->rebound_energy.mean);
         }
         fputc('\n', fp);
     }

@@ -408,7 +408,7 @@ static int group_stats(const gw_layer_results *t, double criterion, gw_layer_gro
               cd = gw_layer_results_col(t, "dissipated_first_contact"),
               cee = gw_layer_results_col(t, "energy_error");
     int n = g->n;
-    double *w = malloc(7 * (size_t)n * sizeof *w);
+    double *w = malloc(8 * (size_t)n * sizeof *w);
     g->run_e_n = malloc(3 * (size_t)n * sizeof *g->run_e_n);
     if (!w || !g->run_e_n) {
         free(w);
@@ -417,7 +417,7 @@ static int group_stats(const gw_layer_results *t, double criterion, gw_layer_gro
     g->run_e = g->run_e_n + n;
     g->run_share = g->run_e + n;
     double *en = w, *e = w + n, *al = w + 2 * n, *pen = w + 3 * n, *penrm = w + 4 * n,
-           *loss = w + 5 * n, *dis = w + 6 * n;
+           *loss = w + 5 * n, *dis = w + 6 * n, *reb = w + 7 * n;
     double sen = 0, se = 0;
     int nen = 0, ne = 0;
     g->n_valid = g->n_bounced = 0;
@@ -431,6 +431,7 @@ static int group_stats(const gw_layer_results *t, double criterion, gw_layer_gro
         en[k] = bounced ? cell(t, r, cen) : NAN;
         e[k] = bounced ? cell(t, r, ce) : NAN;
         al[k] = bounced ? cell(t, r, ca) : NAN;
+        reb[k] = bounced ? e[k] * e[k] : b == 0 ? 0 : NAN;
         pen[k] = cell(t, r, cp);
         penrm[k] = cell(t, r, cpr);
         loss[k] = cell(t, r, cl);
@@ -459,6 +460,7 @@ static int group_stats(const gw_layer_results *t, double criterion, gw_layer_gro
     gw_layer_moment_of(penrm, n, &g->penetration_rm);
     gw_layer_moment_of(loss, n, &g->block_loss);
     gw_layer_moment_of(dis, n, &g->dissipated);
+    gw_layer_moment_of(reb, n, &g->rebound_energy);
     /* stable from k on: every running mean from k to n within 5 % of the last */
     double fin = g->run_e[n - 1];
     g->k_stable_e = 0;

@@ -5,7 +5,8 @@
  *     alpha_r over the bouncing points only (a non-bouncing row carries values
  *     that must be ignored), penetration over all points; rows grouped by every
  *     grid key but point and ordered by point whatever the case order; running
- *     means (Fig. 10). Exact arithmetic on short decimals: tolerance 1e-12.
+ *     means (Fig. 10); the rebound energy fraction e^2 over every point (0 where
+ *     the block does not bounce). Exact arithmetic on short decimals: tolerance 1e-12.
  *  2. Bounce share and verdict at the 75 % edge: 3 of 4 bounces at S = 0.75,
  *     not at S = 0.76; 2 of 3 does not bounce at 0.75.
  *  3. Malformed tables: GW_EFORMAT naming "name:line:" and the column.
@@ -105,6 +106,9 @@ static void test_groups(void)
     gw_test_rel(a->penetration_rm.std, sqrt(14.0 / 3), tol, "std penetration_rm = sqrt(14/3)");
     gw_test_rel(a->block_loss.mean, 0.6, tol, "mean block loss (0.5, 0.7, 0.6, 0.6)");
     gw_test_rel(a->energy_error_max, 3e-7, tol, "largest energy error (nan skipped)");
+    gw_test_rel(a->rebound_energy.mean, (0.04 + 0 + 0.16 + 0.36) / 4, tol,
+                "rebound energy: mean of e^2 with 0 for the point that does not bounce");
+    gw_test_true(a->rebound_energy.n == 4, "rebound energy over all 4 points");
     gw_test_true(a->e.n == 3 && a->penetration.n == 4, "3 rebounds, 4 penetrations");
     double run_e[] = {0.2, 0.2, 0.3, 0.4}, run_s[] = {1, 0.5, 2.0 / 3, 0.75};
     int run_ok = 1;

@@ -125,7 +125,7 @@ for rb in 1 2; do for w in false true; do for p in 0 1; do
     k=$((k+1))
 done; done; done
 "$GW" layer-stats "$tmp/walls.csv" --json >"$tmp/walls.json" 2>"$tmp/err" || ko "walls table: $(cat "$tmp/err")"
-$PY - "$tmp/walls.json" <<'PY' && ok "walls paired (kept vs removed) per rb-rm; binary loss per R_b/R_m at alpha 30 beside 4r^2/(1+r^2)^2, 4r^3/(1+r^3)^2" || ko "walls / binary"
+$PY - "$tmp/walls.json" <<'PY' && ok "walls paired (kept vs removed) per rb-rm, rebound energy 0.36 / 0.18; binary loss per R_b/R_m at alpha 30 beside 4r^2/(1+r^2)^2, 4r^3/(1+r^3)^2" || ko "walls / binary"
 import json, sys
 j = json.load(open(sys.argv[1]))
 bad = []
@@ -135,6 +135,9 @@ if len(w) != 2 or [p["keys"] for p in w] != [{"rb-rm": 1}, {"rb-rm": 2}]:
 for p in w:
     if p["walls"]["bounce_share"] != 1 or p["walls_removed"]["bounce_share"] != 0.5 or p["walls_removed"]["bouncing"]:
         bad.append("shares %s" % p)
+    # rebound energy e^2 = 0.36 where the block bounces, 0 where it does not
+    if abs(p["walls"]["rebound_energy"] - 0.36) > 1e-12 or abs(p["walls_removed"]["rebound_energy"] - 0.18) > 1e-12:
+        bad.append("rebound energy %s" % p)
 b = {x["rb_rm"]: x for x in j["binary"]}
 for r in (1, 2):
     x = b.get(r)

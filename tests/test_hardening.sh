@@ -7,7 +7,8 @@
 #    indirect leaks in a short chain run with --out and a short falcon run, and
 #    in the 2D layer: layer-make --n 30 --width-rm 12 (stopped at 0.5 s of
 #    settling to stay short), layer-impact --t-max 0.002 --out on a settled
-#    sample of the same size made without valgrind, and, when the build writes
+#    sample of the same size made without valgrind, the same two for a sample of
+#    12 clumps (type B), and, when the build writes
 #    HDF5 samples, the same impact read from an .h5 sample (~10 s in all).
 set -u
 GW=$1
@@ -42,6 +43,13 @@ if command -v valgrind >/dev/null; then
     if "$GW" layer-make --n 30 --width-rm 12 --out "$tmp/s30.txt" >/dev/null 2>&1; then
         layer+=("layer-make --n 30 --width-rm 12 --t-max 0.5 --out $tmp/vm.txt"
                 "layer-impact --sample $tmp/s30.txt --t-max 0.002 --out $tmp/vi")
+        # type B: clumps (rigid bodies of several discs) through make and impact
+        if "$GW" layer-make --clumps --n 12 --width-rm 12 --t-max 0.5 --out "$tmp/c12.txt" >/dev/null 2>&1; then
+            layer+=("layer-make --clumps --n 12 --width-rm 12 --t-max 0.2 --out $tmp/vc.txt"
+                    "layer-impact --sample $tmp/c12.txt --t-max 0.002 --json")
+        else
+            ko "layer-make --clumps failed outside valgrind"
+        fi
         if "$GW" layer-make --n 30 --width-rm 12 --out "$tmp/s30.h5" >/dev/null 2>&1; then
             layer+=("layer-impact --sample $tmp/s30.h5 --t-max 0.002 --json")
         else

@@ -246,10 +246,10 @@ static void clumps_initial(const gw_layer_make_params *m, double width, gw_layer
     *nd = k;
 }
 
-static int make_clumps(const gw_layer_params *lp0, const gw_layer_make_params *m,
+/* t0: gw_clock_ms() at the start of gw_layer_make (for res->wall_ms). */
+static int make_clumps(const gw_layer_params *lp0, const gw_layer_make_params *m, double t0,
                        gw_layer_sample *out, gw_layer_make_result *res, gw_err *err)
 {
-    double t0 = gw_clock_ms();
     gw_layer_params lp;
     int rc = box_params(lp0, m, &lp, err);
     if (rc != GW_OK)
@@ -317,7 +317,7 @@ int gw_layer_make(const gw_layer_params *lp0, const gw_layer_make_params *m,
         return rc;
     double t0 = gw_clock_ms();
     if (m->clumps)
-        return make_clumps(lp0, m, out, res, err);
+        return make_clumps(lp0, m, t0, out, res, err);
     gw_layer_params lp;
     if ((rc = box_params(lp0, m, &lp, err)) != GW_OK)
         return rc;

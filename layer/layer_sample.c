@@ -10,7 +10,7 @@
  * or CRLF. The reader refuses anything else with the file name and line number.
  * HDF5 format (when built with HDF5): datasets x, y, r [n] (m), body [n] for
  * clump samples, and the header as attributes of the root group (see
- * gw_layer.h). Body ids are checked by layer_bodies_check (layer_clumps.c). The reader tells the two
+ * gw_layer.h). Body ids are checked by layer_bodies_check (layer_clump_check.c). The reader tells the two
  * apart by the HDF5 signature, not by the file name, and checks the fields of
  * both with the same functions (check_header, check_particle).
  * Porosity: 1 - (solid area / window area) in the window x in [0.1, 0.9] W,
@@ -96,6 +96,16 @@ static int check_particle(double width, double x, double y, double r, const char
     return GW_OK;
 }
 
+/* The body ids of a clump sample (none: GW_OK), the message naming the sample. */
+static int check_bodies(const gw_layer_sample *s, const char *path, int status, gw_err *err)
+{
+    if (!s->body)
+        return GW_OK;
+    char what[4200];
+    snprintf(what, sizeof what, "sample '%s'", path);
+    return layer_bodies_check(s->n, s->x, s->y, s->r, s->body, what, status, err);
+}
+
 static int check_sample(const gw_layer_sample *s, const char *path, int status, gw_err *err)
 {
     int rc = check_header(s, path, status, err);
@@ -109,12 +119,7 @@ static int check_sample(const gw_layer_sample *s, const char *path, int status, 
         snprintf(where, sizeof where, "particle at index %d", i);
         rc = check_particle(s->width, s->x[i], s->y[i], s->r[i], path, where, status, err);
     }
-    if (rc == GW_OK && s->body) {
-        char what[4200];
-        snprintf(what, sizeof what, "sample '%s'", path);
-        rc = layer_bodies_check(s->n, s->x, s->y, s->r, s->body, what, status, err);
-    }
-    return rc;
+    return rc == GW_OK ? check_bodies(s, path, status, err) : rc;
 }
 
 /* 1 when the name asks for HDF5 (.h5, .hdf5; any case). */
@@ -405,12 +410,7 @@ static int read_text(text_in *t, gw_layer_sample *s, gw_err *err)
         s->y = s->x + n, s->r = s->x + 2 * n;
     }
     s->n = (int)n;
-    if (s->body) {
-        char what[4200];
-        snprintf(what, sizeof what, "sample '%s'", t->path);
-        return layer_bodies_check(s->n, s->x, s->y, s->r, s->body, what, GW_EFORMAT, err);
-    }
-    return GW_OK;
+    return check_bodies(s, t->path, GW_EFORMAT, err);
 }
 
 /* ------------------------------------------------------------- HDF5 ---- */

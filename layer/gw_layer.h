@@ -28,6 +28,8 @@
 /* ---------------------------------------------------------------- model ---- */
 
 enum { GW_LAYER_MASS_DISC = 0, GW_LAYER_MASS_SPHERE = 1 };
+/* Mass of a rigid clump (gw_layer_params.clump_mass, layer_clumps.c). */
+enum { GW_LAYER_CLUMP_MASS_SUM = 0, GW_LAYER_CLUMP_MASS_UNION = 1 };
 
 /* Wall bits for gw_layer_params.walls. */
 enum { GW_LAYER_WALL_LEFT = 1, GW_LAYER_WALL_RIGHT = 2, GW_LAYER_WALL_BOTTOM = 4,
@@ -44,6 +46,10 @@ typedef struct gw_layer_params {
     int mass_law;         /* GW_LAYER_MASS_DISC (unit thickness, m = rho pi R^2,
                              I = m R^2 / 2) or _SPHERE (m = 4/3 rho pi R^3,
                              I = 2/5 m R^2) [disc] */
+    int clump_mass;       /* GW_LAYER_CLUMP_MASS_SUM: a clump weighs the sum of its
+                             members (overlaps counted twice, as PFC2D clumps);
+                             _UNION: density x the area of the members' union
+                             (disc mass law only) [sum] */
     double damping;       /* Hunt-Crossley normal damping alpha, s/m [0 = none, as
                              the paper]; used to settle pluviated samples */
     double skin;          /* Verlet skin of the contact list, m [0.1] */
@@ -67,8 +73,9 @@ double gw_layer_kt_factor(const gw_layer_params *p, double rp);
 /* Mass (kg) and moment of inertia (kg m^2) of a particle of radius r. */
 double gw_layer_mass(const gw_layer_params *p, double r);
 double gw_layer_inertia(const gw_layer_params *p, double r);
-/* "disc (unit thickness)" or "sphere". */
+/* "disc (unit thickness)" or "sphere"; "sum" or "union". */
 const char *gw_layer_mass_law_name(int mass_law);
+const char *gw_layer_clump_mass_name(int clump_mass);
 
 /* One particle's initial state. fixed = 1 freezes it (infinite mass, no motion).
  * clump = 0: the disc is a body of its own. clump = k > 0: all particles with
@@ -125,8 +132,10 @@ double gw_layer_time(const gw_layer *L);
  * vx, vy of the disc centre, its body's omega. */
 void gw_layer_particle(const gw_layer *L, int i, double s[6]);
 double gw_layer_radius(const gw_layer *L, int i);
-/* Mass of the rigid body particle i belongs to (kg). */
+/* Mass (kg) and moment of inertia about its centre of mass (kg m^2) of the
+ * rigid body particle i belongs to. */
 double gw_layer_particle_mass(const gw_layer *L, int i);
+double gw_layer_particle_inertia(const gw_layer *L, int i);
 /* Rigid bodies: their number (n without clumps), the body of particle i, and
  * body k's state x, y, theta, vx, vy, omega at its centre of mass. */
 int gw_layer_body_count(const gw_layer *L);
@@ -191,6 +200,7 @@ typedef struct gw_layer_sample {
     double porosity;     /* as measured by layer-make */
     long seed;
     int mass_law;
+    int clump_mass;      /* GW_LAYER_CLUMP_MASS_*, the law the clumps settled under */
     double *x, *y, *r;   /* [n], m; owned by the sample */
     int *body;           /* [n] rigid-body id of each particle in [0, n), or NULL
                             (every particle a disc); owned by the sample */
@@ -208,6 +218,7 @@ void gw_layer_sample_free(gw_layer_sample *s);
  *   porosity P       (in [0, 1])
  *   seed S           (integer)
  *   mass_law disc|sphere   [disc]
+ *   clump_mass sum|union   [sum; optional, written only for union]
  *   n N              (integer in [1, 1e7]; last header line)
  * then N lines "x y r" (m), each key at most once, nothing after the value.
  * Version 2 (written for clump samples, type B soil) is the same with a 4th
@@ -218,6 +229,7 @@ void gw_layer_sample_free(gw_layer_sample *s);
  * HDF5 sample (format version 1, builds with HDF5): root attributes format =
  * "granwave-layer-sample", format_version = 1, granwave_version, width, rm,
  * volume_ratio, porosity (double), seed (integer), mass_law ("disc"/"sphere"),
+ * clump_mass ("sum"/"union"; optional, written only for union),
  * n (integer), units and header (strings); datasets x, y, r of n doubles (m),
  * and for clump samples an integer dataset body (read when present, same
  * checks as the text column).

@@ -15,6 +15,7 @@ int layer_mat_options(layer_mat_cli *m, gw_opt *o)
 {
     m->lp = gw_layer_params_default();
     m->mass_law = "disc";
+    m->clump_mass = "sum";
     int i = 0;
     /* ranges are checked by gw_layer_params_validate, so the message names the
      * physical quantity (e.g. friction outside [0, 90)) */
@@ -25,6 +26,8 @@ int layer_mat_options(layer_mat_cli *m, gw_opt *o)
     o[i++] = OPT_D("gravity", &m->lp.gravity, "G", "gravity, m/s^2 [9.81]", -INFINITY, INFINITY, 0);
     o[i++] = OPT_D("skin", &m->lp.skin, "S", "contact-list skin, m [0.1]", -INFINITY, INFINITY, 0);
     o[i++] = OPT_S("mass-law", &m->mass_law, "LAW", "disc (unit thickness) or sphere [disc; impacts: the sample's]");
+    o[i++] = OPT_S("clump-mass", &m->clump_mass, "HOW", "clump mass: sum (members added, overlaps twice, as PFC2D) "
+                   "or union (density x the union's area; disc law) [sum; impacts: the sample's]");
     return i;
 }
 
@@ -36,6 +39,12 @@ int layer_mat_resolve(layer_mat_cli *m, gw_err *err)
         m->lp.mass_law = GW_LAYER_MASS_SPHERE;
     else
         return gw_err_set(err, GW_EINVAL, "--mass-law: unknown '%s' (disc, sphere)", m->mass_law);
+    if (strcmp(m->clump_mass, "sum") == 0)
+        m->lp.clump_mass = GW_LAYER_CLUMP_MASS_SUM;
+    else if (strcmp(m->clump_mass, "union") == 0)
+        m->lp.clump_mass = GW_LAYER_CLUMP_MASS_UNION;
+    else
+        return gw_err_set(err, GW_EINVAL, "--clump-mass: unknown '%s' (sum, union)", m->clump_mass);
     return gw_layer_params_validate(&m->lp, err);
 }
 
@@ -102,5 +111,8 @@ int layer_impact_use_sample(layer_impact_cli *c, const gw_opt *o, const gw_layer
     const gw_opt *ml = gw_cli_find(o, "mass-law");
     if (!ml || !ml->seen) /* the sample's mass law unless overridden */
         c->m.lp.mass_law = s->mass_law;
+    const gw_opt *cm = gw_cli_find(o, "clump-mass");
+    if (!cm || !cm->seen) /* and its clump mass */
+        c->m.lp.clump_mass = s->clump_mass;
     return gw_layer_impact_check(s, &c->ip, err);
 }

@@ -22,16 +22,17 @@
 typedef struct layer_mat_cli {
     gw_layer_params lp;
     const char *mass_law;
+    const char *clump_mass;
 } layer_mat_cli;
 
 /* Number of options layer_mat_options writes. */
-#define LAYER_MAT_NOPTS 7
+#define LAYER_MAT_NOPTS 8
 
 /* Fill defaults into m and write the material options into o[0 .. LAYER_MAT_NOPTS);
  * returns LAYER_MAT_NOPTS. */
 int layer_mat_options(layer_mat_cli *m, gw_opt *o);
 
-/* Mass law name into m->lp.mass_law, then gw_layer_params_validate. GW_EINVAL
+/* Mass law and clump mass names into m->lp, then gw_layer_params_validate. GW_EINVAL
  * with a message naming the option. */
 int layer_mat_resolve(layer_mat_cli *m, gw_err *err);
 

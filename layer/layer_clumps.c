@@ -5,10 +5,15 @@
  * A body is a set of member discs i at fixed offsets o_i from its centre of mass
  * in the body frame; at orientation theta the member centre is
  *   x_i = X + R(theta) o_i,  v_i = V + omega e_z x (R(theta) o_i).
- * Mass and inertia (members under the mass law of layer_model.c):
+ * Mass and inertia, clump_mass = sum (members under the mass law of layer_model.c):
  *   M = sum m_i,  X = sum m_i x_i / M,  I = sum (I_i + m_i |x_i - X|^2),
  * the area (volume) shared by overlapping members counted twice: the mass law
  * is per disc, and the double count is what a clump of PFC2D balls does too.
+ * clump_mass = union (disc law): the clump is the members' union U of unit
+ * thickness, M = rho |U|, X its centroid, I = rho int_U |x - X|^2 dA, each
+ * integral computed column by column (union_moments): on a vertical line the
+ * union is a union of chords, merged exactly, and the columns add up by the
+ * midpoint rule with UNION_COLUMNS columns (relative error ~1e-6, test_layer_clumps).
  * A disc alone is a body with o = 0; a layer without clumps keeps the disc-only
  * code path (bid = off = NULL), bit for bit the model before clumps existed.
  * Members of one clump must overlap or touch (their contact graph connected,
@@ -47,6 +52,81 @@ void layer_disc_xy(const gw_layer *L, const double *y, int i, double p[2], doubl
         arm[1] = sn * ox + c * oy;
     }
     p[0] = s[0] + arm[0], p[1] = s[1] + arm[1];
+}
+
+enum { UNION_COLUMNS = 8192 };
+
+/* Moments of the union of k discs (x, y, r), centres taken relative to
+ * (x[m[0]], y[m[0]]): mom = {area, int x dA, int y dA, int (x^2 + y^2) dA}.
+ * iv is scratch for 2k doubles. */
+static void union_moments(const gw_layer_body *b, const int *m, int k, double *iv, double mom[4])
+{
+    const double x0 = b[m[0]].x, y0 = b[m[0]].y;
+    double lo = INFINITY, hi = -INFINITY;
+    for (int j = 0; j < k; j++) {
+        lo = fmin(lo, b[m[j]].x - x0 - b[m[j]].r);
+        hi = fmax(hi, b[m[j]].x - x0 + b[m[j]].r);
+    }
+    const double dx = (hi - lo) / UNION_COLUMNS;
+    mom[0] = mom[1] = mom[2] = mom[3] = 0;
+    for (int c = 0; c < UNION_COLUMNS; c++) {
+        const double x = lo + (c + 0.5) * dx;
+        int ni = 0;
+        for (int j = 0; j < k; j++) { /* the chords on this column, sorted by their start */
+            const double u = x - (b[m[j]].x - x0), r = b[m[j]].r;
+            if (u * u >= r * r)
+                continue;
+            const double h = sqrt(r * r - u * u), yc = b[m[j]].y - y0;
+            int at = ni++;
+            while (at > 0 && iv[2 * (at - 1)] > yc - h) {
+                iv[2 * at] = iv[2 * (at - 1)], iv[2 * at + 1] = iv[2 * (at - 1) + 1];
+                at--;
+            }
+            iv[2 * at] = yc - h, iv[2 * at + 1] = yc + h;
+        }
+        for (int a = 0; a < ni;) { /* merge overlapping chords, then integrate exactly in y */
+            double y1 = iv[2 * a], y2 = iv[2 * a + 1];
+            while (++a < ni && iv[2 * a] <= y2)
+                y2 = fmax(y2, iv[2 * a + 1]);
+            const double len = y2 - y1;
+            mom[0] += len * dx;
+            mom[1] += x * len * dx;
+            mom[2] += 0.5 * (y2 * y2 - y1 * y1) * dx;
+            mom[3] += (x * x * len + (y2 * y2 * y2 - y1 * y1 * y1) / 3.0) * dx;
+        }
+    }
+}
+
+/* clump_mass = union: overwrite the mass, centre (cx) and inertia (iu) of every
+ * body with more than one member by the union's moments. */
+static int union_fill(gw_layer *L, const gw_layer_body *b, const int *cnt, double *cx, double *iu, gw_err *err)
+{
+    const int n = L->n, nb = L->nb;
+    int *start = malloc(2 * ((size_t)nb + 1) * sizeof *start), *mem = malloc((size_t)n * sizeof *mem);
+    double *iv = malloc(2 * LAYER_CLUMP_MEMBERS * sizeof *iv);
+    if (!start || !mem || !iv) {
+        free(start), free(mem), free(iv);
+        return gw_err_set(err, GW_ENOMEM, "layer: out of memory for %d bodies", nb);
+    }
+    int *pos = start + nb + 1;
+    start[0] = 0;
+    for (int q = 0; q < nb; q++)
+        pos[q] = start[q + 1] = start[q] + cnt[q];
+    for (int i = n - 1; i >= 0; i--) /* members of q in mem[start[q] ..], in index order */
+        mem[--pos[L->bid[i]]] = i;
+    for (int q = 0; q < nb; q++) {
+        if (cnt[q] < 2)
+            continue;
+        const int *mq = mem + start[q];
+        double mom[4];
+        union_moments(b, mq, cnt[q], iv, mom);
+        const double gx = mom[1] / mom[0], gy = mom[2] / mom[0];
+        L->m[q] = L->p.density * mom[0];
+        cx[2 * q] = b[mq[0]].x + gx, cx[2 * q + 1] = b[mq[0]].y + gy;
+        iu[q] = L->p.density * (mom[3] - mom[0] * (gx * gx + gy * gy));
+    }
+    free(start), free(mem), free(iv);
+    return GW_OK;
 }
 
 /* The disc-only set-up, unchanged from before clumps. */
@@ -144,6 +224,15 @@ int layer_bodies_build(gw_layer *L, const gw_layer_body *b, gw_err *err)
     }
     for (int q = 0; q < nb; q++)
         cx[2 * q] /= L->m[q], cx[2 * q + 1] /= L->m[q];
+    double *iu = NULL;
+    if (p->clump_mass == GW_LAYER_CLUMP_MASS_UNION) {
+        int rc = (iu = calloc((size_t)nb, sizeof *iu)) ? union_fill(L, b, cnt, cx, iu, err)
+                 : gw_err_set(err, GW_ENOMEM, "layer: out of memory for %d bodies", nb);
+        if (rc != GW_OK) {
+            free(cx), free(cnt), free(iu);
+            return rc;
+        }
+    }
     for (int i = n - 1; i >= 0; i--) { /* downwards: the first member's velocity wins */
         int q = L->bid[i];
         if (cnt[q] == 1) /* a lone disc: its centre exactly, not m x / m */
@@ -159,13 +248,15 @@ int layer_bodies_build(gw_layer *L, const gw_layer_body *b, gw_err *err)
     }
     for (int q = 0; q < nb; q++) {
         double *s = L->y + 6 * q;
+        if (iu && cnt[q] > 1)
+            L->inertia[q] = iu[q];
         if (L->fixed[q])
             s[3] = s[4] = s[5] = 0;
         L->minv[q] = L->fixed[q] ? 0 : 1.0 / L->m[q];
         L->iinv[q] = L->fixed[q] ? 0 : 1.0 / L->inertia[q];
         L->y_ref[q] = p->potential_from_start ? s[1] : 0.0;
     }
-    free(cx), free(cnt);
+    free(cx), free(cnt), free(iu);
     return GW_OK;
 }
 

@@ -25,6 +25,7 @@ static cJSON *mat_json(const gw_layer_params *p)
     cJSON_AddNumberToObject(o, "skin", p->skin);
     cJSON_AddNumberToObject(o, "normal_damping", p->damping);
     cJSON_AddStringToObject(o, "mass_law", gw_layer_mass_law_name(p->mass_law));
+    cJSON_AddStringToObject(o, "clump_mass", gw_layer_clump_mass_name(p->clump_mass));
     cJSON_AddStringToObject(o, "contact_law", "Hertz-Mindlin B.1-B.4, R_p = 2RaRb/(Ra+Rb), R_ball at walls");
     return o;
 }
@@ -117,9 +118,9 @@ int gw_cmd_layer_make(int argc, char **argv)
     char *hdr = command_line("layer-make", argc, argv);
     char info[512];
     snprintf(info, sizeof info, "%s\nsettled: t = %.4g s, E_k = %.4g J, converged %d, max overlap %.3g R_p; "
-             "mass law %s; settling damping alpha = %g s/m, modulus factor %g, RK4 dt = %g s",
+             "mass law %s, clump mass %s; settling damping alpha = %g s/m, modulus factor %g, RK4 dt = %g s",
              hdr ? hdr : "", r.t_settle, r.ke_final, r.converged, r.max_overlap,
-             gw_layer_mass_law_name(m.lp.mass_law), mp.damping, mp.modulus_factor, mp.dt);
+             gw_layer_mass_law_name(m.lp.mass_law), gw_layer_clump_mass_name(m.lp.clump_mass), mp.damping, mp.modulus_factor, mp.dt);
     free(hdr);
     rc = gw_layer_sample_write(&s, out, info, &err);
     if (rc != GW_OK) {
@@ -169,7 +170,8 @@ int gw_cmd_layer_make(int argc, char **argv)
         printf("granwave %s layer-make: %d particles, porosity %.4f, height %.3f m (%.2f R_m)\n",
                gw_version(), s.n, r.porosity, h, h / mp.rm);
         if (mp.clumps)
-            printf("  type B: %d rigid clumps of %d discs\n", r.n_bodies, s.n);
+            printf("  type B: %d rigid clumps of %d discs, clump mass %s\n", r.n_bodies, s.n,
+                   gw_layer_clump_mass_name(m.lp.clump_mass));
         if (r.n_removed > 0)
             printf("  %d particles above %g R_m removed after settling\n", r.n_removed, mp.height_rm);
         printf("  settled in %.3g s simulated (%s), E_k = %.3g J, max overlap %.3g R_p\n", r.t_settle,

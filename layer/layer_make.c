@@ -196,6 +196,7 @@ static void finish(const gw_layer_params *lp, const gw_layer_make_params *m, con
     out->volume_ratio = m->volume_ratio;
     out->seed = m->seed;
     out->mass_law = lp->mass_law;
+    out->clump_mass = lp->clump_mass;
     res->max_overlap = max_overlap(b, n, lp->width);
     out->porosity = gw_layer_sample_porosity(out);
     res->porosity = out->porosity;

@@ -94,6 +94,11 @@ int gw_layer_params_validate(const gw_layer_params *p, gw_err *err)
                           p->friction_deg);
     if (p->mass_law != GW_LAYER_MASS_DISC && p->mass_law != GW_LAYER_MASS_SPHERE)
         return gw_err_set(err, GW_EINVAL, "mass law: unknown value %d", p->mass_law);
+    if (p->clump_mass != GW_LAYER_CLUMP_MASS_SUM && p->clump_mass != GW_LAYER_CLUMP_MASS_UNION)
+        return gw_err_set(err, GW_EINVAL, "clump mass: unknown value %d", p->clump_mass);
+    if (p->clump_mass == GW_LAYER_CLUMP_MASS_UNION && p->mass_law != GW_LAYER_MASS_DISC)
+        return gw_err_set(err, GW_EINVAL, "clump mass 'union' needs the disc mass law (the area of the "
+                          "members' union), not 'sphere'");
     if (p->walls < 0 || p->walls > GW_LAYER_WALLS_ALL)
         return gw_err_set(err, GW_EINVAL, "walls: bad mask %d", p->walls);
     return GW_OK;
@@ -126,6 +131,11 @@ double gw_layer_inertia(const gw_layer_params *p, double r)
 const char *gw_layer_mass_law_name(int mass_law)
 {
     return mass_law == GW_LAYER_MASS_SPHERE ? "sphere" : "disc (unit thickness)";
+}
+
+const char *gw_layer_clump_mass_name(int clump_mass)
+{
+    return clump_mass == GW_LAYER_CLUMP_MASS_UNION ? "union" : "sum";
 }
 
 int gw_layer_create(const gw_layer_params *p, int n, const gw_layer_body *b, gw_layer **out,
@@ -538,6 +548,11 @@ double gw_layer_radius(const gw_layer *L, int i)
 double gw_layer_particle_mass(const gw_layer *L, int i)
 {
     return L->m[layer_body(L, i)];
+}
+
+double gw_layer_particle_inertia(const gw_layer *L, int i)
+{
+    return L->inertia[layer_body(L, i)];
 }
 
 const gw_layer_params *gw_layer_get_params(const gw_layer *L)

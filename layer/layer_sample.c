@@ -76,6 +76,8 @@ static int check_header(const gw_layer_sample *s, const char *path, int status, 
         return gw_err_set(err, status, "sample '%s': porosity %g must be in [0, 1]", path, s->porosity);
     if (s->mass_law != GW_LAYER_MASS_DISC && s->mass_law != GW_LAYER_MASS_SPHERE)
         return gw_err_set(err, status, "sample '%s': unknown mass law %d", path, s->mass_law);
+    if (s->clump_mass != GW_LAYER_CLUMP_MASS_SUM && s->clump_mass != GW_LAYER_CLUMP_MASS_UNION)
+        return gw_err_set(err, status, "sample '%s': unknown clump mass %d", path, s->clump_mass);
     return GW_OK;
 }
 
@@ -156,7 +158,10 @@ static int write_text(const gw_layer_sample *s, const char *path, const char *he
     fprintf(f.fp, "# units: metres; lines after 'n' are: x y r%s\n", s->body ? " body" : "");
     fprintf(f.fp, "width %.17g\nrm %.17g\nvolume_ratio %.17g\nporosity %.17g\nseed %ld\n",
             s->width, s->rm, s->volume_ratio, s->porosity, s->seed);
-    fprintf(f.fp, "mass_law %s\nn %d\n", s->mass_law == GW_LAYER_MASS_SPHERE ? "sphere" : "disc", s->n);
+    fprintf(f.fp, "mass_law %s\n", s->mass_law == GW_LAYER_MASS_SPHERE ? "sphere" : "disc");
+    if (s->clump_mass == GW_LAYER_CLUMP_MASS_UNION) /* sum, the default, is not written */
+        fprintf(f.fp, "clump_mass union\n");
+    fprintf(f.fp, "n %d\n", s->n);
     for (int i = 0; i < s->n; i++) {
         if (s->body)
             fprintf(f.fp, "%.17g %.17g %.17g %d\n", s->x[i], s->y[i], s->r[i], s->body[i]);
@@ -257,9 +262,9 @@ static int parse_long(const char *s, long *v)
     return end != s && *end == '\0' && errno == 0;
 }
 
-enum { K_WIDTH, K_RM, K_VR, K_POR, K_SEED, K_LAW, K_N, K_COUNT };
+enum { K_WIDTH, K_RM, K_VR, K_POR, K_SEED, K_LAW, K_CMASS, K_N, K_COUNT };
 static const char *const header_keys[K_COUNT] = {"width", "rm", "volume_ratio", "porosity",
-                                                 "seed", "mass_law", "n"};
+                                                 "seed", "mass_law", "clump_mass", "n"};
 
 /* Header lines up to and including "n N": fills s, *n and the format version. */
 static int text_header(text_in *t, gw_layer_sample *s, long *n, int *version, gw_err *err)
@@ -300,6 +305,9 @@ static int text_header(text_in *t, gw_layer_sample *s, long *n, int *version, gw
         if (key == K_LAW) {
             ok = strcmp(tok[1], "disc") == 0 || strcmp(tok[1], "sphere") == 0;
             s->mass_law = strcmp(tok[1], "sphere") == 0 ? GW_LAYER_MASS_SPHERE : GW_LAYER_MASS_DISC;
+        } else if (key == K_CMASS) {
+            ok = strcmp(tok[1], "sum") == 0 || strcmp(tok[1], "union") == 0;
+            s->clump_mass = strcmp(tok[1], "union") == 0 ? GW_LAYER_CLUMP_MASS_UNION : GW_LAYER_CLUMP_MASS_SUM;
         } else if (key == K_SEED) {
             ok = parse_long(tok[1], &s->seed);
         } else {
@@ -308,7 +316,8 @@ static int text_header(text_in *t, gw_layer_sample *s, long *n, int *version, gw
         if (!ok)
             return gw_err_set(err, GW_EFORMAT, "sample '%s': line %ld: %s '%s' is not %s", t->path, t->line,
                               header_keys[key], shown(tok[1], show),
-                              key == K_LAW ? "disc or sphere" : key == K_SEED ? "an integer" : "a finite number");
+                              key == K_LAW ? "disc or sphere" : key == K_CMASS ? "sum or union"
+                              : key == K_SEED ? "an integer" : "a finite number");
         if (key == K_WIDTH)
             s->width = v;
         else if (key == K_RM)
@@ -546,6 +555,7 @@ static int write_h5(const gw_layer_sample *s, const char *path, const char *head
               h5_attr_write(file, "porosity", H5T_NATIVE_DOUBLE, &s->porosity) ||
               h5_attr_write(file, "seed", H5T_NATIVE_LONG, &s->seed) ||
               h5_attr_write_str(file, "mass_law", s->mass_law == GW_LAYER_MASS_SPHERE ? "sphere" : "disc") ||
+              (s->clump_mass == GW_LAYER_CLUMP_MASS_UNION && h5_attr_write_str(file, "clump_mass", "union")) ||
               h5_attr_write(file, "n", H5T_NATIVE_INT, &n) ||
               h5_attr_write_str(file, "units", "SI: x, y, r, width, rm in metres") ||
               (header && h5_attr_write_str(file, "header", header)) ||
@@ -671,6 +681,11 @@ static int h5_fields(hid_t f, gw_layer_sample *s, const char *path, const char *
         return gw_err_set(err, GW_EFORMAT, "sample '%s': HDF5 attribute mass_law '%s' is not disc or sphere",
                           path, got > 0 ? shown(str, show) : "?");
     s->mass_law = got > 0 && strcmp(str, "sphere") == 0 ? GW_LAYER_MASS_SPHERE : GW_LAYER_MASS_DISC;
+    got = h5_attr_read(f, "clump_mass", H5T_STRING, -1, str);
+    if (got < 0 || (got > 0 && strcmp(str, "sum") != 0 && strcmp(str, "union") != 0))
+        return gw_err_set(err, GW_EFORMAT, "sample '%s': HDF5 attribute clump_mass '%s' is not sum or union",
+                          path, got > 0 ? shown(str, show) : "?");
+    s->clump_mass = got > 0 && strcmp(str, "union") == 0 ? GW_LAYER_CLUMP_MASS_UNION : GW_LAYER_CLUMP_MASS_SUM;
     got = h5_attr_read(f, "n", H5T_INTEGER, H5T_NATIVE_LLONG, &n);
     if (got != 1 || n < 1 || n > SAMPLE_NMAX)
         return gw_err_set(err, GW_EFORMAT, "sample '%s': HDF5 attribute n = %lld must be an integer in [1, %ld]",

@@ -97,6 +97,15 @@ check "layer-make --clumps JSON: 20 bodies, more discs than bodies" \
 "$gw" layer-impact --sample "$tmp/c1.txt" --vi 10 --t-max 0.003 --json > "$tmp/cimp.json"
 check "layer-impact on a clump sample: exit 0, closure <= 1e-4" \
   "[ $? -eq 0 ] && python3 -c 'import json,sys; d=json.load(open(\"$tmp/cimp.json\")); sys.exit(0 if d[\"energy_error\"]<=1e-4 else 1)'"
+# clump mass union: recorded in the sample, taken by the impact unless overridden,
+# and lighter than the sum of the members (their overlaps count once)
+"$gw" layer-make --clumps --clump-mass union --n 20 --width-rm 16 --seed 3 --t-max 0.5 --out "$tmp/cu.txt" > /dev/null
+check "layer-make --clump-mass union: exit 0, 'clump_mass union' in the sample" \
+  "[ $? -eq 0 ] && grep -qx 'clump_mass union' '$tmp/cu.txt' && ! grep -q '^clump_mass' '$tmp/c1.txt'"
+"$gw" layer-impact --sample "$tmp/cu.txt" --vi 10 --t-max 0.003 --json > "$tmp/cuimp.json"
+"$gw" layer-impact --sample "$tmp/cu.txt" --clump-mass sum --vi 10 --t-max 0.003 --json > "$tmp/cusum.json"
+check "layer-impact on a union sample: its clump mass by default, the option overrides it" \
+  "python3 -c 'import json,sys; u=json.load(open(\"$tmp/cuimp.json\")); s=json.load(open(\"$tmp/cusum.json\")); sys.exit(0 if u[\"settings\"][\"material\"][\"clump_mass\"]==\"union\" and s[\"settings\"][\"material\"][\"clump_mass\"]==\"sum\" and u[\"energy_error\"]<=1e-4 else 1)'"
 printf '[sweep]\nmodel = layer\n[grid]\npoint = 0:1\n[params]\nsample = %s\npoints = 2\nvi = 10\nt-max = 0.002\n' \
   "$tmp/c1.txt" > "$tmp/cs.ini"
 "$gw" sweep "$tmp/cs.ini" --out "$tmp/csw" --quiet --jobs 1
@@ -118,6 +127,9 @@ bad "unreadable sample" "no_such_file" --sample "$tmp/no_such_file" --out "$tmp/
 printf 'granwave-layer-sample 1\nwidth 5\nrm 0.3\nn 3\n1 1 0.3\n' > "$tmp/corrupt.txt"
 bad "corrupt sample" "corrupt.txt" --sample "$tmp/corrupt.txt" --out "$tmp/badout"
 bad "unknown solver" "solver" --sample "$tmp/a.txt" --solver euler --out "$tmp/badout"
+bad "unknown clump mass" "clump-mass" --sample "$tmp/a.txt" --clump-mass heavy --out "$tmp/badout"
+bad "union clump mass with sphere masses" "union" --sample "$tmp/a.txt" --clump-mass union --mass-law sphere \
+  --out "$tmp/badout"
 "$gw" layer-make --n 10 --rm -1 --out "$tmp/c.txt" 2> "$tmp/stderr"
 check "layer-make negative radius: exit 2, nothing written" "[ $? -eq 2 ] && [ ! -e '$tmp/c.txt' ] && grep -q rm '$tmp/stderr'"
 

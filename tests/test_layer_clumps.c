@@ -71,9 +71,18 @@ static int member_distances(const gw_layer *L, const gw_layer_body *b, int n, do
 
 /* ------------------------------------------------- energy and rigidity */
 
-static void test_energy_and_shape(void)
+/* Area of the lens shared by two discs of radius r at distance d < 2r. */
+static double lens_area(double r, double d)
 {
+    return 2 * r * r * acos(d / (2 * r)) - 0.5 * d * sqrt(4 * r * r - d * d);
+}
+
+static void test_energy_and_shape(int clump_mass)
+{
+    const int uni = clump_mass == GW_LAYER_CLUMP_MASS_UNION;
+    printf("clump mass %s:\n", gw_layer_clump_mass_name(clump_mass));
     gw_layer_params p = gw_layer_params_default();
+    p.clump_mass = clump_mass;
     p.width = 1.2;
     p.friction_deg = 0;
     p.skin = 0.02;
@@ -96,8 +105,15 @@ static void test_energy_and_shape(void)
     gw_test_true(gw_layer_body_count(L) == 7, "3 clumps + 4 discs = 7 bodies");
     gw_test_true(gw_layer_body_of(L, 0) == gw_layer_body_of(L, 2) &&
                  gw_layer_body_of(L, 2) != gw_layer_body_of(L, 3), "members share a body");
-    /* mass of clump 1 = 3 disc masses */
-    gw_test_rel(gw_layer_particle_mass(L, 1), 3 * gw_layer_mass(&p, 0.06), 1e-15, "clump mass = sum of members");
+    /* clump 1: three discs r = 0.06, neighbours 0.08 apart (lens overlaps, the
+     * outer two 0.16 apart do not meet) */
+    if (uni)
+        gw_test_rel(gw_layer_particle_mass(L, 1), p.density * (3 * M_PI * 0.06 * 0.06 - 2 * lens_area(0.06, 0.08)),
+                    1e-5, "union clump mass = rho (3 pi r^2 - 2 lens)");
+    else
+        gw_test_rel(gw_layer_particle_mass(L, 1), 3 * gw_layer_mass(&p, 0.06), 1e-15,
+                    "clump mass = sum of members");
+    gw_test_rel(gw_layer_particle_mass(L, 8), gw_layer_mass(&p, 0.06), 1e-15, "a lone disc keeps its mass");
     gw_solver_params sp = gw_solver_params_default();
     sp.dt = 5e-7;
     rc = gw_layer_start(L, gw_solver_rk4, &sp, &err);
@@ -135,6 +151,80 @@ static void test_energy_and_shape(void)
     gw_test_true(e.dissipated == 0, "no dissipation without friction");
     gw_test_abs(dmax, 0, 1e-12, "member distances constant (m)");
     gw_layer_free(L);
+}
+
+/* ------------------------------------------------------ union moments */
+
+/* Polar moment about its centre of the lens of two discs of radius r whose
+ * centres are d apart, integrated by rows (Simpson, 4000 intervals): for
+ * |y| <= h = sqrt(r^2 - d^2/4) the lens spans |x| <= w(y) = sqrt(r^2 - y^2) - d/2. */
+static double lens_polar(double r, double d)
+{
+    const double h = sqrt(r * r - 0.25 * d * d);
+    const int n = 4000;
+    double sum = 0;
+    for (int i = 0; i <= n; i++) {
+        double y = -h + 2 * h * i / n, w = fmax(0, sqrt(r * r - y * y) - 0.5 * d);
+        double f = 2 * w * y * y + 2 * w * w * w / 3;
+        sum += f * (i == 0 || i == n ? 1 : i % 2 ? 4 : 2);
+    }
+    return sum * (2 * h / n) / 3;
+}
+
+/* Mass, centre and inertia of one clump of k discs (x, y, r) under clump
+ * mass union: s receives the body state (x, y at the centre of mass). */
+static int one_clump(int k, const double *x, const double *y, const double *r, double *m, double *I, double s[6])
+{
+    gw_layer_params p = gw_layer_params_default();
+    p.clump_mass = GW_LAYER_CLUMP_MASS_UNION;
+    p.density = 1;
+    p.width = 10;
+    gw_layer_body b[4];
+    for (int i = 0; i < k; i++)
+        b[i] = (gw_layer_body){.x = x[i], .y = y[i], .r = r[i], .clump = 1};
+    gw_layer *L = NULL;
+    gw_err err = {{0}};
+    if (gw_layer_create(&p, k, b, &L, &err) != GW_OK) {
+        printf("  %s\n", err.msg);
+        return 0;
+    }
+    *m = gw_layer_particle_mass(L, 0);
+    *I = gw_layer_particle_inertia(L, 0);
+    gw_layer_body_state(L, 0, s);
+    gw_layer_free(L);
+    return 1;
+}
+
+/* clump_mass = union against closed forms: two touching discs of radii 0.5
+ * and 0.3 (no overlap: M, X and I are those of the two discs exactly); two
+ * equal discs overlapping by 0.6 r (area 2 pi r^2 - lens, polar moment
+ * 2 (I_disc + m_disc (d/2)^2) - lens moment, the lens integrated by rows here
+ * and by columns in the code); the sum law on the same pair is heavier by the
+ * lens. Tolerance 1e-5 (the midpoint rule over 8192 columns is ~1e-6). */
+static void test_union_moments(void)
+{
+    double m, I, s[6];
+    const double xa[2] = {2.0, 2.8}, ya[2] = {1.0, 1.0}, ra[2] = {0.5, 0.3};
+    if (one_clump(2, xa, ya, ra, &m, &I, s)) {
+        double m1 = M_PI * 0.25, m2 = M_PI * 0.09, xc = (m1 * 2.0 + m2 * 2.8) / (m1 + m2);
+        double Iref = 0.5 * m1 * 0.25 + 0.5 * m2 * 0.09 + m1 * pow(xc - 2.0, 2) + m2 * pow(2.8 - xc, 2);
+        gw_test_rel(m, m1 + m2, 1e-5, "touching pair: union mass = both discs");
+        gw_test_abs(s[0], xc, 1e-5, "touching pair: centre of mass (m)");
+        gw_test_abs(s[1], 1.0, 1e-9, "touching pair: centre on the axis (m)");
+        gw_test_rel(I, Iref, 1e-5, "touching pair: inertia");
+    }
+    const double r = 0.4, d = 0.56, xb[2] = {3.0, 3.0 + d * cos(0.7)}, yb[2] = {2.0, 2.0 + d * sin(0.7)},
+                 rb[2] = {r, r};
+    if (one_clump(2, xb, yb, rb, &m, &I, s)) {
+        double md = M_PI * r * r, Iref = 2 * (0.5 * md * r * r + md * 0.25 * d * d) - lens_polar(r, d);
+        printf("  overlapping pair: M = %.9g (ref %.9g), I = %.9g (ref %.9g), lens area by rows %.9g\n", m,
+               2 * md - lens_area(r, d), I, Iref, lens_area(r, d));
+        gw_test_rel(m, 2 * md - lens_area(r, d), 1e-5, "overlapping pair: union mass = 2 pi r^2 - lens");
+        gw_test_abs(hypot(s[0] - 0.5 * (xb[0] + xb[1]), s[1] - 0.5 * (yb[0] + yb[1])), 0, 1e-6,
+                    "overlapping pair: centre at the midpoint (m)");
+        gw_test_rel(I, Iref, 1e-5, "overlapping pair: inertia = 2 discs - lens");
+        gw_test_true(2 * md > m * 1.05, "the sum law counts the lens twice (> 5 % heavier here)");
+    }
 }
 
 /* ------------------------------------------------------------- momentum */
@@ -299,19 +389,22 @@ static void test_pluviation(gw_layer_sample *keep)
     /* round trips */
     gw_err err = {{0}};
     const char *paths[2] = {"test_layer_clumps_sample.txt", "test_layer_clumps_sample.h5"};
-    for (int f = 0; f < 2; f++) {
-        if (gw_layer_sample_format_check(paths[f], &err) != GW_OK)
+    for (int f = 0; f < 4; f++) { /* text, HDF5, then both with clump mass union */
+        if (gw_layer_sample_format_check(paths[f % 2], &err) != GW_OK)
             continue; /* no HDF5 in this build */
+        a.clump_mass = f < 2 ? GW_LAYER_CLUMP_MASS_SUM : GW_LAYER_CLUMP_MASS_UNION;
         gw_layer_sample r;
-        int w = gw_layer_sample_write(&a, paths[f], "test", &err) == GW_OK &&
-                gw_layer_sample_read(paths[f], &r, &err) == GW_OK;
-        char what[96];
-        snprintf(what, sizeof what, "%s: written and read back with its body ids", paths[f]);
-        gw_test_true(w && same_sample(&a, &r), what);
+        int w = gw_layer_sample_write(&a, paths[f % 2], "test", &err) == GW_OK &&
+                gw_layer_sample_read(paths[f % 2], &r, &err) == GW_OK;
+        char what[112];
+        snprintf(what, sizeof what, "%s: written and read back with its body ids and clump mass %s", paths[f % 2],
+                 gw_layer_clump_mass_name(a.clump_mass));
+        gw_test_true(w && same_sample(&a, &r) && r.clump_mass == a.clump_mass, what);
         if (w)
             gw_layer_sample_free(&r);
-        remove(paths[f]);
+        remove(paths[f % 2]);
     }
+    a.clump_mass = GW_LAYER_CLUMP_MASS_SUM;
     gw_layer_sample_free(&b);
     gw_layer_sample_free(&c);
     *keep = a;
@@ -336,6 +429,26 @@ static void test_bad_bodies(void)
         int rc = gw_layer_sample_read(path, &s, &err);
         printf("  %s\n", rc == GW_OK ? "read" : err.msg);
         gw_test_true(k == 0 ? rc == GW_OK && s.body && s.body[1] == 0 : rc == GW_EFORMAT, cases[k][1]);
+        gw_layer_sample_free(&s);
+    }
+    /* the clump_mass header line: sum or union, nothing else */
+    const char *cm[3] = {"union", "sum", "heavy"};
+    for (int k = 0; k < 3; k++) {
+        FILE *f = fopen(path, "w");
+        if (!f)
+            return;
+        fprintf(f, "granwave-layer-sample 2\nwidth 2\nrm 0.1\nclump_mass %s\nn 2\n0.5 0.5 0.1 0\n0.6 0.5 0.1 0\n",
+                cm[k]);
+        fclose(f);
+        gw_layer_sample s;
+        gw_err err = {{0}};
+        int rc = gw_layer_sample_read(path, &s, &err);
+        char what[64];
+        snprintf(what, sizeof what, "clump_mass %s %s", cm[k], k < 2 ? "read" : "refused");
+        if (rc != GW_OK)
+            printf("  %s\n", err.msg);
+        gw_test_true(k < 2 ? rc == GW_OK && s.clump_mass == (k == 0 ? GW_LAYER_CLUMP_MASS_UNION : GW_LAYER_CLUMP_MASS_SUM)
+                           : rc == GW_EFORMAT, what);
         gw_layer_sample_free(&s);
     }
     remove(path);
@@ -456,7 +569,9 @@ static void test_impact(const gw_layer_sample *s)
 
 int main(void)
 {
-    test_energy_and_shape();
+    test_energy_and_shape(GW_LAYER_CLUMP_MASS_SUM);
+    test_energy_and_shape(GW_LAYER_CLUMP_MASS_UNION);
+    test_union_moments();
     test_momentum();
     gw_layer_sample s = {0};
     test_pluviation(&s);

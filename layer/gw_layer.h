@@ -76,12 +76,16 @@ double gw_layer_inertia(const gw_layer_params *p, double r);
 /* "disc (unit thickness)" or "sphere"; "sum" or "union". */
 const char *gw_layer_mass_law_name(int mass_law);
 const char *gw_layer_clump_mass_name(int clump_mass);
+/* The GW_LAYER_CLUMP_MASS_* that gw_layer_clump_mass_name names ("sum",
+ * "union"), -1 for any other string. */
+int gw_layer_clump_mass_parse(const char *name);
 
 /* One particle's initial state. fixed = 1 freezes it (infinite mass, no motion).
  * clump = 0: the disc is a body of its own. clump = k > 0: all particles with
- * the same k form one rigid clump (type B soil): mass and moment of inertia are
- * the sums over the members (parallel-axis terms included; the area shared by
- * overlapping members is counted twice), its velocity and spin at the centre
+ * the same k form one rigid clump (type B soil): mass and moment of inertia as
+ * gw_layer_params.clump_mass says (sum: over the members, parallel-axis terms
+ * included, the area shared by overlapping members counted twice; union: of
+ * the members' union), its velocity and spin at the centre
  * of mass are the vx, vy, w of its first member, and it is fixed when any
  * member is. */
 typedef struct gw_layer_body {

@@ -15,7 +15,7 @@ int layer_mat_options(layer_mat_cli *m, gw_opt *o)
 {
     m->lp = gw_layer_params_default();
     m->mass_law = "disc";
-    m->clump_mass = "sum";
+    m->clump_mass = gw_layer_clump_mass_name(GW_LAYER_CLUMP_MASS_SUM);
     int i = 0;
     /* ranges are checked by gw_layer_params_validate, so the message names the
      * physical quantity (e.g. friction outside [0, 90)) */
@@ -39,11 +39,7 @@ int layer_mat_resolve(layer_mat_cli *m, gw_err *err)
         m->lp.mass_law = GW_LAYER_MASS_SPHERE;
     else
         return gw_err_set(err, GW_EINVAL, "--mass-law: unknown '%s' (disc, sphere)", m->mass_law);
-    if (strcmp(m->clump_mass, "sum") == 0)
-        m->lp.clump_mass = GW_LAYER_CLUMP_MASS_SUM;
-    else if (strcmp(m->clump_mass, "union") == 0)
-        m->lp.clump_mass = GW_LAYER_CLUMP_MASS_UNION;
-    else
+    if ((m->lp.clump_mass = gw_layer_clump_mass_parse(m->clump_mass)) < 0)
         return gw_err_set(err, GW_EINVAL, "--clump-mass: unknown '%s' (sum, union)", m->clump_mass);
     return gw_layer_params_validate(&m->lp, err);
 }

@@ -5,11 +5,13 @@
  * and there are at most LAYER_CLUMP_MEMBERS of them (the check is quadratic in
  * the members: the bound keeps a hostile sample of one huge body from stalling
  * the reader). Used by the sample reader and writer and by gw_layer_create;
- * free of the model so that the sample fuzzer links it alone.
+ * free of the model so that the sample fuzzer links it alone. Also the names
+ * of the clump mass laws, which samples and options spell.
  * Units: SI (m).
  */
 #include <math.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "layer_impl.h"
 
@@ -79,3 +81,15 @@ int layer_bodies_check(int n, const double *x, const double *y, const double *r,
     return rc;
 }
 
+const char *gw_layer_clump_mass_name(int clump_mass)
+{
+    return clump_mass == GW_LAYER_CLUMP_MASS_UNION ? "union" : "sum";
+}
+
+int gw_layer_clump_mass_parse(const char *name)
+{
+    for (int c = GW_LAYER_CLUMP_MASS_SUM; c <= GW_LAYER_CLUMP_MASS_UNION; c++)
+        if (strcmp(name, gw_layer_clump_mass_name(c)) == 0)
+            return c;
+    return -1;
+}

@@ -133,11 +133,6 @@ const char *gw_layer_mass_law_name(int mass_law)
     return mass_law == GW_LAYER_MASS_SPHERE ? "sphere" : "disc (unit thickness)";
 }
 
-const char *gw_layer_clump_mass_name(int clump_mass)
-{
-    return clump_mass == GW_LAYER_CLUMP_MASS_UNION ? "union" : "sum";
-}
-
 int gw_layer_create(const gw_layer_params *p, int n, const gw_layer_body *b, gw_layer **out,
                     gw_err *err)
 {

@@ -160,7 +160,7 @@ static int write_text(const gw_layer_sample *s, const char *path, const char *he
             s->width, s->rm, s->volume_ratio, s->porosity, s->seed);
     fprintf(f.fp, "mass_law %s\n", s->mass_law == GW_LAYER_MASS_SPHERE ? "sphere" : "disc");
     if (s->clump_mass == GW_LAYER_CLUMP_MASS_UNION) /* sum, the default, is not written */
-        fprintf(f.fp, "clump_mass union\n");
+        fprintf(f.fp, "clump_mass %s\n", gw_layer_clump_mass_name(s->clump_mass));
     fprintf(f.fp, "n %d\n", s->n);
     for (int i = 0; i < s->n; i++) {
         if (s->body)
@@ -306,8 +306,8 @@ static int text_header(text_in *t, gw_layer_sample *s, long *n, int *version, gw
             ok = strcmp(tok[1], "disc") == 0 || strcmp(tok[1], "sphere") == 0;
             s->mass_law = strcmp(tok[1], "sphere") == 0 ? GW_LAYER_MASS_SPHERE : GW_LAYER_MASS_DISC;
         } else if (key == K_CMASS) {
-            ok = strcmp(tok[1], "sum") == 0 || strcmp(tok[1], "union") == 0;
-            s->clump_mass = strcmp(tok[1], "union") == 0 ? GW_LAYER_CLUMP_MASS_UNION : GW_LAYER_CLUMP_MASS_SUM;
+            s->clump_mass = gw_layer_clump_mass_parse(tok[1]);
+            ok = s->clump_mass >= 0;
         } else if (key == K_SEED) {
             ok = parse_long(tok[1], &s->seed);
         } else {
@@ -555,7 +555,7 @@ static int write_h5(const gw_layer_sample *s, const char *path, const char *head
               h5_attr_write(file, "porosity", H5T_NATIVE_DOUBLE, &s->porosity) ||
               h5_attr_write(file, "seed", H5T_NATIVE_LONG, &s->seed) ||
               h5_attr_write_str(file, "mass_law", s->mass_law == GW_LAYER_MASS_SPHERE ? "sphere" : "disc") ||
-              (s->clump_mass == GW_LAYER_CLUMP_MASS_UNION && h5_attr_write_str(file, "clump_mass", "union")) ||
+              (s->clump_mass == GW_LAYER_CLUMP_MASS_UNION && h5_attr_write_str(file, "clump_mass", gw_layer_clump_mass_name(s->clump_mass))) ||
               h5_attr_write(file, "n", H5T_NATIVE_INT, &n) ||
               h5_attr_write_str(file, "units", "SI: x, y, r, width, rm in metres") ||
               (header && h5_attr_write_str(file, "header", header)) ||
@@ -682,10 +682,10 @@ static int h5_fields(hid_t f, gw_layer_sample *s, const char *path, const char *
                           path, got > 0 ? shown(str, show) : "?");
     s->mass_law = got > 0 && strcmp(str, "sphere") == 0 ? GW_LAYER_MASS_SPHERE : GW_LAYER_MASS_DISC;
     got = h5_attr_read(f, "clump_mass", H5T_STRING, -1, str);
-    if (got < 0 || (got > 0 && strcmp(str, "sum") != 0 && strcmp(str, "union") != 0))
+    s->clump_mass = got > 0 ? gw_layer_clump_mass_parse(str) : GW_LAYER_CLUMP_MASS_SUM;
+    if (got < 0 || s->clump_mass < 0)
         return gw_err_set(err, GW_EFORMAT, "sample '%s': HDF5 attribute clump_mass '%s' is not sum or union",
                           path, got > 0 ? shown(str, show) : "?");
-    s->clump_mass = got > 0 && strcmp(str, "union") == 0 ? GW_LAYER_CLUMP_MASS_UNION : GW_LAYER_CLUMP_MASS_SUM;
     got = h5_attr_read(f, "n", H5T_INTEGER, H5T_NATIVE_LLONG, &n);
     if (got != 1 || n < 1 || n > SAMPLE_NMAX)
         return gw_err_set(err, GW_EFORMAT, "sample '%s': HDF5 attribute n = %lld must be an integer in [1, %ld]",

@@ -54,6 +54,19 @@ static int add_row(gw_layer_body *b, int n, int id, int k, double r, double d, d
     return n;
 }
 
+/* gw_layer_create as a test named what: the layer, or NULL with the message
+ * printed. */
+static gw_layer *create(const gw_layer_params *p, int n, const gw_layer_body *b, const char *what)
+{
+    gw_layer *L = NULL;
+    gw_err err = {{0}};
+    int rc = gw_layer_create(p, n, b, &L, &err);
+    gw_test_true(rc == GW_OK, what);
+    if (rc != GW_OK)
+        printf("  %s\n", err.msg);
+    return L;
+}
+
 /* All member distances of every clump into dist (pairs in order). */
 static int member_distances(const gw_layer *L, const gw_layer_body *b, int n, double *dist)
 {
@@ -94,14 +107,10 @@ static void test_energy_and_shape(int clump_mass)
     n = add_row(b, n, 3, 3, 0.05, 0.09, 0.5, 0.75, -0.4, 0.0, -3.0, 8.0);
     for (int i = 0; i < 4; i++)
         b[n++] = (gw_layer_body){.x = 0.15 + 0.3 * i, .y = 0.08, .r = 0.06 + 0.005 * i, .vx = 0.3 * (i - 1.5)};
-    gw_layer *L = NULL;
-    gw_err err = {{0}};
-    int rc = gw_layer_create(&p, n, b, &L, &err);
-    gw_test_true(rc == GW_OK, "clump layer created");
-    if (rc != GW_OK) {
-        printf("  %s\n", err.msg);
+    gw_layer *L = create(&p, n, b, "clump layer created");
+    if (!L)
         return;
-    }
+    gw_err err = {{0}};
     gw_test_true(gw_layer_body_count(L) == 7, "3 clumps + 4 discs = 7 bodies");
     gw_test_true(gw_layer_body_of(L, 0) == gw_layer_body_of(L, 2) &&
                  gw_layer_body_of(L, 2) != gw_layer_body_of(L, 3), "members share a body");
@@ -116,7 +125,7 @@ static void test_energy_and_shape(int clump_mass)
     gw_test_rel(gw_layer_particle_mass(L, 8), gw_layer_mass(&p, 0.06), 1e-15, "a lone disc keeps its mass");
     gw_solver_params sp = gw_solver_params_default();
     sp.dt = 5e-7;
-    rc = gw_layer_start(L, gw_solver_rk4, &sp, &err);
+    int rc = gw_layer_start(L, gw_solver_rk4, &sp, &err);
     double A = gw_layer_energy_initial(L), d0[16], d1[16], emax = 0, dmax = 0;
     int nd = member_distances(L, b, n, d0);
     double ke0 = 0;
@@ -182,12 +191,9 @@ static int one_clump(int k, const double *x, const double *y, const double *r, d
     gw_layer_body b[4];
     for (int i = 0; i < k; i++)
         b[i] = (gw_layer_body){.x = x[i], .y = y[i], .r = r[i], .clump = 1};
-    gw_layer *L = NULL;
-    gw_err err = {{0}};
-    if (gw_layer_create(&p, k, b, &L, &err) != GW_OK) {
-        printf("  %s\n", err.msg);
+    gw_layer *L = create(&p, k, b, "union clump created");
+    if (!L)
         return 0;
-    }
     *m = gw_layer_particle_mass(L, 0);
     *I = gw_layer_particle_inertia(L, 0);
     gw_layer_body_state(L, 0, s);
@@ -261,14 +267,10 @@ static void test_momentum(void)
     int n = 0;
     n = add_row(b, n, 1, 3, 0.05, 0.07, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
     n = add_row(b, n, 2, 2, 0.06, 0.08, 0.09, 0.215, M_PI / 6, -0.5, -3.0, 2.0);
-    gw_layer *L = NULL;
-    gw_err err = {{0}};
-    int rc = gw_layer_create(&p, n, b, &L, &err);
-    gw_test_true(rc == GW_OK, "two-clump layer created");
-    if (rc != GW_OK) {
-        printf("  %s\n", err.msg);
+    gw_layer *L = create(&p, n, b, "two-clump layer created");
+    if (!L)
         return;
-    }
+    gw_err err = {{0}};
     /* I of each clump rebuilt from its members (sum of I_i + m_i d_i^2), the
      * law checked against the ledger's kinetic energy below */
     double I[2] = {0, 0};
@@ -288,7 +290,7 @@ static void test_momentum(void)
     }
     gw_solver_params sp = gw_solver_params_default();
     sp.dt = 1e-7;
-    rc = gw_layer_start(L, gw_solver_rk4, &sp, &err);
+    int rc = gw_layer_start(L, gw_solver_rk4, &sp, &err);
     double P0[2], L0, sp0, sl0, s[6];
     momenta(L, P0, &L0, &sp0, &sl0);
     for (int q = 0; q < 2; q++) {

@@ -274,6 +274,8 @@ typedef struct gw_layer_make_params {
                               wholly below height_rm R_m (the box height H of
                               physics.md 2.2) [0 = keep all] */
     int clumps;            /* 1: type B soil, n rigid clumps (layer_clumps.c) [0] */
+    double aspect_max;     /* clumps: aspect ratio uniform in [1, aspect_max],
+                              aspect_max in [1, 4]; 1 gives one-disc grains [4] */
 } gw_layer_make_params;
 
 gw_layer_make_params gw_layer_make_params_default(void);
@@ -295,7 +297,7 @@ typedef struct gw_layer_make_result {
  * (uniform in radius between R_min and R_max = V^(1/3) R_min, mean R_m) and the
  * jitter of the initial grid. With mp->clumps (type B soil) it draws per clump
  * the equivalent radius from the same grading, the aspect ratio (uniform in
- * [1, 4]) and the orientation; out->body then holds the clump of each disc and
+ * [1, aspect_max]) and the orientation; out->body then holds the clump of each disc and
  * out->n counts discs (res->n_bodies the clumps). */
 int gw_layer_make(const gw_layer_params *lp, const gw_layer_make_params *mp,
                   gw_layer_sample *out, gw_layer_make_result *res, gw_err *err);

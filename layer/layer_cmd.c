@@ -59,8 +59,9 @@ static const char *make_summary =
     "a threshold; Hertz-Mindlin contacts with friction, Hunt-Crossley normal damping\n"
     "while settling. Writes the text sample format of gw_layer.h. Deterministic for a\n"
     "seed. SI units. --clumps: type B soil, n rigid clumps of overlapping discs\n"
-    "(quasi-rectangular, aspect ratio uniform in [1, 4], equivalent radius on the\n"
-    "discs' grading curve); the sample then carries a body id per disc.";
+    "(quasi-rectangular, aspect ratio uniform in [1, A] with A = --aspect-max, 4 by\n"
+    "default; equivalent radius on the discs' grading curve); the sample then carries\n"
+    "a body id per disc.";
 
 int gw_cmd_layer_make(int argc, char **argv)
 {
@@ -86,6 +87,7 @@ int gw_cmd_layer_make(int argc, char **argv)
     o[i++] = OPT_D("height-rm", &mp.height_rm, "H", "keep the particles wholly below H R_m after settling [0 = all]", 0, 1e6, 0);
     o[i++] = (gw_opt){.name = "clumps", .kind = GW_OPT_FLAG, .dest = &mp.clumps,
                       .help = "type B soil: n rigid clumps (aspect ratio 1-4) instead of n discs"};
+    o[i++] = OPT_D("aspect-max", &mp.aspect_max, "A", "clumps: aspect ratio uniform in [1, A], A in [1, 4] [4]", 1, 4, 0);
     o[i++] = OPT_S("out", &out, "FILE", "sample file to write (required)");
     o[i++] = (gw_opt){.name = "json", .kind = GW_OPT_FLAG, .dest = &json, .help = "print the result as JSON"};
     o[i] = (gw_opt){0};
@@ -106,6 +108,8 @@ int gw_cmd_layer_make(int argc, char **argv)
         return fail("layer-make", err.msg);
     if (!(m.lp.gravity > 0))
         return fail("layer-make", "--gravity: pluviation needs gravity > 0 m/s^2");
+    if (mp.aspect_max != 4 && !mp.clumps)
+        return fail("layer-make", "--aspect-max: shapes clumps, so it needs --clumps");
     mp.n = (int)n;
     mp.seed = seed;
     gw_layer_sample s;
@@ -140,6 +144,7 @@ int gw_cmd_layer_make(int argc, char **argv)
         if (mp.clumps) { /* type B: n counts discs, n_bodies the clumps */
             cJSON_AddBoolToObject(j, "clumps", 1);
             cJSON_AddNumberToObject(j, "n_bodies", r.n_bodies);
+            cJSON_AddNumberToObject(j, "aspect_max", mp.aspect_max);
         }
         cJSON_AddNumberToObject(j, "porosity", r.porosity);
         cJSON_AddNumberToObject(j, "height", h);
@@ -170,8 +175,8 @@ int gw_cmd_layer_make(int argc, char **argv)
         printf("granwave %s layer-make: %d particles, porosity %.4f, height %.3f m (%.2f R_m)\n",
                gw_version(), s.n, r.porosity, h, h / mp.rm);
         if (mp.clumps)
-            printf("  type B: %d rigid clumps of %d discs, clump mass %s\n", r.n_bodies, s.n,
-                   gw_layer_clump_mass_name(m.lp.clump_mass));
+            printf("  type B: %d rigid clumps of %d discs, aspect ratio in [1, %g], clump mass %s\n", r.n_bodies,
+                   s.n, mp.aspect_max, gw_layer_clump_mass_name(m.lp.clump_mass));
         if (r.n_removed > 0)
             printf("  %d particles above %g R_m removed after settling\n", r.n_removed, mp.height_rm);
         printf("  settled in %.3g s simulated (%s), E_k = %.3g J, max overlap %.3g R_p\n", r.t_settle,

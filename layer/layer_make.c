@@ -16,7 +16,7 @@
  * random draws; the integration is RK4 with a fixed step.
  * Type B soil (clumps = 1): n rigid clumps instead of n discs. Each clump draws
  * its equivalent radius R_eq from the discs' grading (same curve), its aspect
- * ratio uniform in [1, 4] and its orientation uniform in [0, pi); its shape is
+ * ratio uniform in [1, aspect_max] ([1, 4] by default) and its orientation uniform in [0, pi); its shape is
  * a row of overlapping discs (layer_clumps.c). The clumps start at rest, packed
  * row by row by their bounding boxes (gap 0.1 R_max) from the bottom of the box,
  * and settle like the discs; the trim to height_rm removes whole clumps.
@@ -60,6 +60,7 @@ gw_layer_make_params gw_layer_make_params_default(void)
     m.damping = 0.3;
     m.modulus_factor = 1;
     m.dt = 2e-5;
+    m.aspect_max = 4;
     return m;
 }
 
@@ -74,7 +75,8 @@ static int check_make(const gw_layer_make_params *m, gw_err *err)
         (rc = gw_check_positive(m->t_max, "t-max (s)", err)) != GW_OK ||
         (rc = gw_check_range(m->damping, "damping (s/m)", 0, 1e3, err)) != GW_OK ||
         (rc = gw_check_range(m->modulus_factor, "modulus-factor", 1e-9, 1, err)) != GW_OK ||
-        (rc = gw_check_positive(m->dt, "dt (s)", err)) != GW_OK)
+        (rc = gw_check_positive(m->dt, "dt (s)", err)) != GW_OK ||
+        (rc = gw_check_range(m->aspect_max, "aspect-max", 1, 4, err)) != GW_OK)
         return rc;
     double rmax = m->rm * 2 * cbrt(m->volume_ratio) / (1 + cbrt(m->volume_ratio));
     if (m->width_rm * m->rm < 2.2 * rmax)
@@ -218,7 +220,7 @@ static void clumps_initial(const gw_layer_make_params *m, double width, gw_layer
     int k = 0;
     for (int j = 0; j < m->n; j++) {
         double req = rmin + (rmax - rmin) * sm_uniform(&g);
-        double aspect = 1 + 3 * sm_uniform(&g), angle = M_PI * sm_uniform(&g);
+        double aspect = 1 + (m->aspect_max - 1) * sm_uniform(&g), angle = M_PI * sm_uniform(&g);
         double ox[LAYER_CLUMP_MAX], oy[LAYER_CLUMP_MAX], r[LAYER_CLUMP_MAX];
         int km = 0;
         double x0, x1, y0, y1;

@@ -132,6 +132,11 @@ bad "union clump mass with sphere masses" "union" --sample "$tmp/a.txt" --clump-
   --out "$tmp/badout"
 "$gw" layer-make --n 10 --rm -1 --out "$tmp/c.txt" 2> "$tmp/stderr"
 check "layer-make negative radius: exit 2, nothing written" "[ $? -eq 2 ] && [ ! -e '$tmp/c.txt' ] && grep -q rm '$tmp/stderr'"
+for args in "--clumps --aspect-max 5" "--clumps --aspect-max 0.5" "--aspect-max 2"; do
+  "$gw" layer-make --n 10 $args --out "$tmp/c.txt" > "$tmp/stdout" 2> "$tmp/stderr"
+  check "layer-make $args: exit 2, one line naming aspect-max, nothing written" \
+    "[ $? -eq 2 ] && [ ! -e '$tmp/c.txt' ] && [ \$(wc -l < '$tmp/stderr') -eq 1 ] && grep -q aspect-max '$tmp/stderr'"
+done
 
 echo "test_layer_cli: $fails failure(s)"
 [ $fails -eq 0 ]

@@ -342,7 +342,7 @@ static void test_momentum(void)
 
 /* ----------------------------------------------------------- pluviation */
 
-static int make(long seed, gw_layer_sample *s, gw_layer_make_result *r)
+static int make_aspect(long seed, double aspect_max, gw_layer_sample *s, gw_layer_make_result *r)
 {
     gw_layer_params lp = gw_layer_params_default();
     gw_layer_make_params mp = gw_layer_make_params_default();
@@ -351,11 +351,44 @@ static int make(long seed, gw_layer_sample *s, gw_layer_make_result *r)
     mp.t_max = 0.3;
     mp.seed = seed;
     mp.clumps = 1;
+    mp.aspect_max = aspect_max;
     gw_err err = {{0}};
     int rc = gw_layer_make(&lp, &mp, s, r, &err);
     if (rc != GW_OK)
         printf("  make failed: %s\n", err.msg);
     return rc;
+}
+
+static int make(long seed, gw_layer_sample *s, gw_layer_make_result *r)
+{
+    return make_aspect(seed, 4, s, r);
+}
+
+/* Members per grain: 1 + ceil(1.5 (a - 1)) for aspect ratio a (layer_clumps.c),
+ * so aspect_max = 1 gives one-disc grains and aspect_max = 2 at most 3 members.
+ * The grading is drawn the same way, so a one-disc "clump" sample has exactly
+ * n discs, each its own body. */
+static void test_aspect_max(void)
+{
+    const double amax[2] = {1, 2};
+    const int kcap[2] = {1, 3};
+    for (int t = 0; t < 2; t++) {
+        gw_layer_sample s;
+        gw_layer_make_result r;
+        int ok = make_aspect(7, amax[t], &s, &r) == GW_OK;
+        int count[10] = {0}, kmax = 0;
+        for (int i = 0; ok && i < s.n; i++)
+            if (s.body[i] >= 0 && s.body[i] < 10)
+                count[s.body[i]]++;
+        for (int q = 0; q < 10; q++)
+            kmax = count[q] > kmax ? count[q] : kmax;
+        char what[128];
+        snprintf(what, sizeof what, "aspect-max %g: 10 grains of at most %d member(s) (measured %d discs, at most %d)",
+                 amax[t], kcap[t], ok ? s.n : -1, kmax);
+        gw_test_true(ok && r.n_bodies == 10 && kmax <= kcap[t] && (t == 0 ? s.n == 10 : kmax >= 2), what);
+        if (ok)
+            gw_layer_sample_free(&s);
+    }
 }
 
 static int same_sample(const gw_layer_sample *a, const gw_layer_sample *b)
@@ -577,6 +610,7 @@ int main(void)
     test_momentum();
     gw_layer_sample s = {0};
     test_pluviation(&s);
+    test_aspect_max();
     test_bad_bodies();
     test_disc_bits();
     if (s.n > 0)

@@ -283,8 +283,9 @@ static void print_text(const layer_stats_run *R)
         for (int k = 0; k < R->gs.nkeys; k++)
             printf("%s=%s ", t->grid_name[R->gs.key[k]], t->grid_value[g->first * t->ngrid + R->gs.key[k]]);
         printf(": n %d, share %.3f (%s), e_n %.3f +- %.3f, e %.3f +- %.3f, alpha_r %.1f +- %.1f deg, "
-               "penetration %.3g R_m\n", g->n, g->share, g->bouncing ? "bounces" : "no bounce", g->e_n.mean,
-               g->e_n.std, g->e.mean, g->e.std, g->alpha_r.mean, g->alpha_r.std, g->penetration_rm.mean);
+               "penetration %.3g R_m, points over %.3g R_m\n", g->n, g->share, g->bouncing ? "bounces" : "no bounce",
+               g->e_n.mean, g->e_n.std, g->e.mean, g->e.std, g->alpha_r.mean, g->alpha_r.std, g->penetration_rm.mean,
+               g->x_span_rm);
     }
     for (int k = 0; k < R->nbin; k++)
         printf("  binary: R_b/R_m %g, alpha %g: block loss %.3f +- %.3f (n %d); disc %.3f, sphere %.3f\n",

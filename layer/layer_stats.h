@@ -91,6 +91,11 @@ typedef struct gw_layer_group {
                                        incident one, translation), 0 for a point that does
                                        not bounce; over every valid row */
     double energy_error_max;
+    /* spread of the impact points: max - min x_impact (m), and in R_m with R_m
+     * = penetration / penetration_rm of the group's first row where both are
+     * finite and positive (NaN otherwise). The paper's 100 points 0.05 m apart
+     * span 5 m; a few points at that spacing hit one spot of the surface. */
+    double x_span, x_span_rm;
     /* convergence with the number of points (Fig. 10): over the first k points
      * (k = 1..n), the mean over the bouncing ones among them and the share */
     double *run_e_n, *run_e, *run_share; /* [n] */

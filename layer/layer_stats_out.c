@@ -86,6 +86,8 @@ static cJSON *group_json(const layer_stats_run *R, const gw_layer_group *g)
     cJSON_AddItemToObject(o, "dissipated_first_contact", moment_json(&g->dissipated));
     cJSON_AddNumberToObject(o, "energy_error_max", g->energy_error_max);
     cJSON_AddNumberToObject(o, "k_stable_e", g->k_stable_e);
+    cJSON_AddNumberToObject(o, "x_span", g->x_span);
+    cJSON_AddNumberToObject(o, "x_span_rm", g->x_span_rm);
     cJSON_AddItemToObject(o, "running_mean_e_n", gw_json_doubles(g->run_e_n, g->n));
     cJSON_AddItemToObject(o, "running_mean_e", gw_json_doubles(g->run_e, g->n));
     cJSON_AddItemToObject(o, "running_share", gw_json_doubles(g->run_share, g->n));
@@ -297,13 +299,14 @@ static void write_groups(FILE *fp, const layer_stats_run *R)
                 "deviation (n - 1); penetration in m and in R_m; first-contact block loss and friction "
                 "dissipation as fractions of the incident energy; rebound_energy = e^2, the block's rebound "
                 "kinetic energy (translation) over the incident one, 0 where it does not bounce; k_stable_e = points after which the running "
-                "mean of e stays within 5 % of the final mean");
+                "mean of e stays within 5 % of the final mean; x_span = spread of the impact points (max - min "
+                "x_impact, m; x_span_rm in R_m)");
     fprintf(fp, "group");
     key_names(fp, R, -1, -1);
     fprintf(fp, ",n_points,n_valid,n_bounced,bounce_share,bouncing,e_n_mean,e_n_std,e_mean,e_std,alpha_r_mean,"
                 "alpha_r_std,n_rebound,penetration_mean,penetration_std,penetration_rm_mean,penetration_rm_std,"
                 "block_loss_mean,block_loss_std,dissipated_mean,dissipated_std,rebound_energy_mean,rebound_energy_std,"
-                "energy_error_max,k_stable_e\n");
+                "energy_error_max,k_stable_e,x_span,x_span_rm\n");
     for (int a = 0; a < R->gs.n; a++) {
         const gw_layer_group *g = &R->gs.g[a];
         fprintf(fp, "%d", a);
@@ -324,7 +327,10 @@ static void write_groups(FILE *fp, const layer_stats_run *R)
             num(fp, m2[k]->std);
         }
         num(fp, g->energy_error_max);
-        fprintf(fp, ",%d\n", g->k_stable_e);
+        fprintf(fp, ",%d", g->k_stable_e);
+        num(fp, g->x_span);
+        num(fp, g->x_span_rm);
+        fputc('\n', fp);
     }
 }
 

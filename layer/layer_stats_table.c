@@ -406,7 +406,8 @@ static int group_stats(const gw_layer_results *t, double criterion, gw_layer_gro
               cpr = gw_layer_results_col(t, "penetration_rm"),
               cl = gw_layer_results_col(t, "block_loss_first_contact"),
               cd = gw_layer_results_col(t, "dissipated_first_contact"),
-              cee = gw_layer_results_col(t, "energy_error");
+              cee = gw_layer_results_col(t, "energy_error"),
+              cx = gw_layer_results_col(t, "x_impact");
     int n = g->n;
     double *w = malloc(8 * (size_t)n * sizeof *w);
     g->run_e_n = malloc(3 * (size_t)n * sizeof *g->run_e_n);
@@ -422,8 +423,14 @@ static int group_stats(const gw_layer_results *t, double criterion, gw_layer_gro
     int nen = 0, ne = 0;
     g->n_valid = g->n_bounced = 0;
     g->energy_error_max = NAN;
+    double xlo = INFINITY, xhi = -INFINITY, rm = NAN;
     for (int k = 0; k < n; k++) {
         long r = g->rows[k];
+        double x = cell(t, r, cx), pm = cell(t, r, cp), prm = cell(t, r, cpr);
+        if (isfinite(x))
+            xlo = fmin(xlo, x), xhi = fmax(xhi, x);
+        if (isnan(rm) && isfinite(pm) && isfinite(prm) && pm > 0 && prm > 0)
+            rm = pm / prm;
         double b = cell(t, r, cb);
         int bounced = b == 1;
         g->n_valid += !isnan(b);
@@ -451,6 +458,8 @@ static int group_stats(const gw_layer_results *t, double criterion, gw_layer_gro
         g->run_e[k] = ne ? se / ne : NAN;
         g->run_share[k] = g->n_valid ? (double)g->n_bounced / g->n_valid : NAN;
     }
+    g->x_span = xhi >= xlo ? xhi - xlo : NAN;
+    g->x_span_rm = g->x_span / rm;
     g->share = g->n_valid ? (double)g->n_bounced / g->n_valid : NAN;
     g->bouncing = g->share >= criterion;
     gw_layer_moment_of(en, n, &g->e_n);

@@ -38,16 +38,18 @@
  * 2, 0, 3, 1). In point order: p0 bounces (e_n 0.1, e 0.2, alpha_r 10, pen 1),
  * p1 does not (its e = 0.9 etc. must be ignored; pen 2), p2 bounces (0.3, 0.4,
  * 20, pen 3), p3 bounces (0.5, 0.6, 60, pen 6). Share 3/4.
- * Group (rb-rm = 2, height-rm = 8): 2 of 3 bounce. */
+ * Group (rb-rm = 2, height-rm = 8): 2 of 3 bounce. The first group's points lie
+ * at x = -0.15, -0.05, 0.05, 0.15 m (span 0.3 m; R_m = 0.1 m from the
+ * penetration columns), the second's all at 0. */
 static const char *table =
     "# granwave 0.1.0 sweep, model layer\n"
     "# param vi = 12.5\n"
     "# param sample = s.txt\n"
     "case,rb-rm,height-rm,point," COLS "\n"
-    "0,2,5,2,0,1,0.3,0.4,20,1,1,1,0.3,3,0.1,0.5,1e-7,0,0,0\n"
-    "1,2,5,0,0,1,0.1,0.2,10,1,1,1,0.1,1,0.2,0.7,3e-7,0,0,0\n"
-    "2,2,5,3,0,1,0.5,0.6,60,1,1,1,0.6,6,0.3,0.6,2e-7,0,0,0\n"
-    "3,2,5,1,0,0,0.8,0.9,80,1,1,1,0.2,2,0.4,0.6,nan,0,0,0\n"
+    "0,2,5,2,0.05,1,0.3,0.4,20,1,1,1,0.3,3,0.1,0.5,1e-7,0,0,0\n"
+    "1,2,5,0,-0.15,1,0.1,0.2,10,1,1,1,0.1,1,0.2,0.7,3e-7,0,0,0\n"
+    "2,2,5,3,0.15,1,0.5,0.6,60,1,1,1,0.6,6,0.3,0.6,2e-7,0,0,0\n"
+    "3,2,5,1,-0.05,0,0.8,0.9,80,1,1,1,0.2,2,0.4,0.6,nan,0,0,0\n"
     "4,2,8,0,0,1,0.2,0.3,5,1,1,1,0.1,1,0,0.4,0,0,0,0\n"
     "5,2,8,1,0,0,nan,nan,nan,1,1,1,0.1,1,0,0.4,0,0,0,0\n"
     "6,2,8,2,0,1,0.4,0.5,15,1,1,1,0.1,1,0,0.4,0,0,0,0\n";
@@ -116,6 +118,9 @@ static void test_groups(void)
         run_ok &= fabs(a->run_e[k] - run_e[k]) < tol && fabs(a->run_share[k] - run_s[k]) < tol;
     gw_test_true(run_ok, "running mean of e over the first k points 0.2, 0.2, 0.3, 0.4; share 1, 1/2, 2/3, 3/4");
     gw_test_true(a->k_stable_e == 4, "k_stable_e = 4 (0.3 is 25 % below the final 0.4)");
+    gw_test_rel(a->x_span, 0.3, tol, "impact points span 0.3 m (x_impact -0.15 .. 0.15)");
+    gw_test_rel(a->x_span_rm, 3, tol, "and 3 R_m (R_m = penetration / penetration_rm = 0.1 m)");
+    gw_test_abs(b->x_span, 0, 0, "points all at x = 0 span 0 m");
     gw_test_abs(b->share, 2.0 / 3, tol, "share 2/3");
     gw_test_true(b->bouncing == 0, "share 2/3 does not bounce at S = 0.75");
     gw_test_rel(b->e_n.mean, 0.3, tol, "group 2: mean e_n (0.2, 0.4)");

@@ -106,8 +106,11 @@ static void plateau_checks(const gw_chain_run_opts *o)
         gw_chain_run_opts oo = *o;
         oo.sample = gw_chain_trace_sample;
         oo.sample_ctx = &tr;
-        gw_chain_result r;
-        if (test_collide(&p, &oo, &r) == GW_OK) {
+        gw_chain_result r = {0};
+        int ok = test_collide(&p, &oo, &r) == GW_OK;
+        snprintf(what, sizeof what, "%s e = %.1f, N = 30: collision ran", name, cases[c].e);
+        gw_test_true(ok, what);
+        if (ok) {
             double fp = pow(p.mass, 0.6) * pow(p.k, 0.4) * pow(p.v_imp, 1.2);
             double lo = 1e300, hi = 0.0;
             for (int j = 1; j <= 6; j++) {

@@ -34,6 +34,32 @@ static double bead_e(gw_chain_params p, double v)
     return e;
 }
 
+static const char *model_name(gw_chain_damping model)
+{
+    return model == GW_DAMP_KUWABARA_KONO ? "Kuwabara-Kono" : "Hunt-Crossley";
+}
+
+/* One bead at 0.3 m/s with model's constant calibrated to restitution e;
+ * asserts the calibration and returns its code. */
+static int calibrated(gw_chain_damping model, double e, const gw_chain_run_opts *o,
+                      gw_chain_params *p)
+{
+    *p = test_params(1, 0.3);
+    p->damping = model;
+    double cst = NAN;
+    gw_err err = {{0}};
+    int rc = gw_chain_calibrate(p, o, e, &cst, &err);
+    char what[800];
+    snprintf(what, sizeof what, "%s calibration to e = %.1f succeeded (%s)", model_name(model), e,
+             rc ? err.msg : "ok");
+    gw_test_true(rc == GW_OK, what);
+    if (model == GW_DAMP_KUWABARA_KONO)
+        p->gamma = cst;
+    else
+        p->alpha = cst;
+    return rc;
+}
+
 typedef struct peaks {
     double fmin, f_prev2, f_prev1, first, second, last;
     int count;
@@ -86,20 +112,10 @@ static void plateau_checks(const gw_chain_run_opts *o)
     } cases[] = {{GW_DAMP_KUWABARA_KONO, 0.5}, {GW_DAMP_KUWABARA_KONO, 0.2}, {GW_DAMP_HUNT_CROSSLEY, 0.5}};
     char what[800];
     for (size_t c = 0; c < sizeof cases / sizeof cases[0]; c++) {
-        gw_chain_params p = test_params(1, 0.3);
-        p.damping = cases[c].model;
-        gw_err err = {{0}};
-        double cst = NAN;
-        int rc = gw_chain_calibrate(&p, o, cases[c].e, &cst, &err);
-        const char *name = p.damping == GW_DAMP_KUWABARA_KONO ? "Kuwabara-Kono" : "Hunt-Crossley";
-        snprintf(what, sizeof what, "%s calibration to e = %.1f (%s)", name, cases[c].e, rc ? err.msg : "ok");
-        gw_test_true(rc == GW_OK, what);
-        if (rc != GW_OK)
+        gw_chain_params p;
+        if (calibrated(cases[c].model, cases[c].e, o, &p) != GW_OK)
             continue;
-        if (p.damping == GW_DAMP_KUWABARA_KONO)
-            p.gamma = cst;
-        else
-            p.alpha = cst;
+        const char *name = model_name(p.damping);
         p.n = 30;
         gw_chain_trace tr;
         gw_chain_trace_init(&tr, p.n);
@@ -135,36 +151,22 @@ int main(void)
     const double targets[] = {0.9, 0.7};
     for (int model = 1; model <= 2; model++)
         for (int i = 0; i < 2; i++) {
-            gw_chain_params p = test_params(1, 0.3);
-            p.damping = model;
+            gw_chain_params p;
             gw_chain_run_opts o = test_opts("cvode", "bdf");
-            double cst = NAN;
-            gw_err err = {{0}};
-            int rc = gw_chain_calibrate(&p, &o, targets[i], &cst, &err);
-            snprintf(what, sizeof what, "%s calibration to e = %.1f succeeded (%s)",
-                     model == 1 ? "Kuwabara-Kono" : "Hunt-Crossley", targets[i], rc ? err.msg : "ok");
-            gw_test_true(rc == GW_OK, what);
-            if (model == 1)
-                p.gamma = cst;
-            else
-                p.alpha = cst;
+            calibrated(model, targets[i], &o, &p);
             snprintf(what, sizeof what, "%s constant %.6g: bead restitution at 0.3 m/s",
-                     model == 1 ? "Kuwabara-Kono" : "Hunt-Crossley", cst);
+                     model_name(model), model == GW_DAMP_KUWABARA_KONO ? p.gamma : p.alpha);
             gw_test_rel(bead_e(p, 0.3), targets[i], 1e-3, what);
             double e1 = bead_e(p, 0.1), e3 = bead_e(p, 0.3), e10 = bead_e(p, 1.0);
             snprintf(what, sizeof what, "%s: restitution falls with velocity (%.4f, %.4f, %.4f at 0.1, 0.3, 1 m/s)",
-                     model == 1 ? "Kuwabara-Kono" : "Hunt-Crossley", e1, e3, e10);
+                     model_name(model), e1, e3, e10);
             gw_test_true(e1 > e3 && e3 > e10, what);
         }
 
-    gw_chain_params p = test_params(1, 0.3);
-    p.damping = GW_DAMP_KUWABARA_KONO;
+    gw_chain_params p;
     gw_chain_run_opts o = test_opts("cvode", "bdf");
-    gw_err err = {{0}};
-    if (gw_chain_calibrate(&p, &o, 0.9, &p.gamma, &err) != GW_OK) {
-        printf("FAIL: calibration: %s\n", err.msg);
+    if (calibrated(GW_DAMP_KUWABARA_KONO, 0.9, &o, &p) != GW_OK)
         return 1;
-    }
     const int ns[] = {1, 2, 5, 10, 20, 40};
     double prev = 2.0;
     int mono = 1;

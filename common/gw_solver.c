@@ -25,7 +25,7 @@ gw_solver_params gw_solver_params_default(void)
 const gw_solver_type *gw_solver_type_find(const char *name)
 {
     const gw_solver_type *const all[] = {gw_solver_cvode, gw_solver_arkode,
-                                         gw_solver_rk4};
+                                         gw_solver_rk4, gw_solver_verlet};
     if (!name)
         return NULL;
     for (size_t i = 0; i < sizeof all / sizeof all[0]; i++)

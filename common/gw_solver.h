@@ -3,11 +3,14 @@
  *
  * A model describes itself with a gw_system (right-hand side, optional banded
  * Jacobian, root functions, dimension, parameters) and hands it to a solver built
- * on one backend: CVODE (BDF or Adams), ARKode (ERK, DIRK or IMEX ARK) or the
- * fixed-step RK4 written here as an independent cross-check. All three locate
+ * on one backend: CVODE (BDF or Adams), ARKode (ERK, DIRK or IMEX ARK), the
+ * fixed-step RK4 written here as an independent cross-check, or the fixed-step
+ * velocity Verlet (kick-drift-kick) of explicit DEM codes. The first three locate
  * roots of the event functions and stop there, so a model can restart the
  * integration exactly at contact openings and closings (the Hertz force is only
- * C^1 at zero overlap; restarting there restores the methods' order).
+ * C^1 at zero overlap; restarting there restores the methods' order). Verlet
+ * reports a root at the end of the step in which it changed sign, unlocated:
+ * one right-hand side evaluation per step, as in DEM codes.
  *
  * Units are the model's (granwave models use SI).
  */
@@ -22,6 +25,14 @@ typedef int (*gw_rhs_fn)(double t, const double *y, double *ydot, void *params);
 
 /* Event (root) functions g_k(t, y), k = 0..nroots-1. Same return convention. */
 typedef int (*gw_root_fn)(double t, const double *y, double *g, void *params);
+
+/* Projection after a step of length h (verlet backend): y is the end state,
+ * whose last half kick used the rates ydot. The model may change y in place
+ * (e.g. zero the history of a contact that opened) and correct ydot, which the
+ * next step starts from; a rate it corrects by d must also move y by (h/2) d,
+ * so that the half kick it already took is the corrected one. Same return
+ * convention as the rhs. */
+typedef int (*gw_project_fn)(double t, double h, double *y, double *ydot, void *params);
 
 /* Banded Jacobian storage as SUNDIALS lays it out: column j, row i with
  * -ml <= i - j <= mu. Use gw_band_set to write entries; all entries start at 0. */
@@ -52,6 +63,12 @@ typedef struct gw_system {
     const double *scale; /* typical magnitude of each component, or NULL (= 1):
                             absolute tolerance of component i is atol * scale[i] */
     void *params;        /* passed to every callback, owned by the model */
+    /* Second-order structure, used by the verlet backend (required there, ignored
+     * by the others): drift[i] = j >= 0 says dy_i/dt = y_j (a coordinate and its
+     * velocity); drift[i] = -1 marks every other component, whose rate the rhs
+     * gives (velocities, forces carried as state, integrated ledgers). */
+    const long *drift;
+    gw_project_fn project; /* after each verlet step (optional) */
 } gw_system;
 
 /* Backend variants. */
@@ -84,8 +101,9 @@ typedef struct gw_solver_type gw_solver_type;
 extern const gw_solver_type *const gw_solver_cvode;
 extern const gw_solver_type *const gw_solver_arkode;
 extern const gw_solver_type *const gw_solver_rk4;
+extern const gw_solver_type *const gw_solver_verlet;
 
-/* Backend by name ("cvode", "arkode", "rk4"); NULL if unknown. */
+/* Backend by name ("cvode", "arkode", "rk4", "verlet"); NULL if unknown. */
 const gw_solver_type *gw_solver_type_find(const char *name);
 const char *gw_solver_type_name(const gw_solver_type *type);
 /* Backend variant by name ("bdf", "adams", "erk", "dirk", "imex"); -1 if unknown. */

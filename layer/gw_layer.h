@@ -179,6 +179,10 @@ int gw_layer_set_regions(gw_layer *L, double cx, double cy, double w, int nring,
 int gw_layer_region_count(const gw_layer *L);
 /* Ledger per region into out[gw_layer_region_count(L)]; the regions add up to
  * gw_layer_energy_of. Returns the number of regions filled. */
+/* gw_layer_energy_of into *e and gw_layer_region_ledger into regions in one
+ * pass over the contacts (either may be NULL); returns the region count
+ * written (0 without regions or with regions = NULL). */
+int gw_layer_ledgers(const gw_layer *L, gw_layer_energy *e, gw_layer_energy *regions);
 int gw_layer_region_ledger(const gw_layer *L, gw_layer_energy *out);
 
 /* Per-ring energies around (cx, cy): ring k holds distances [k w, (k+1) w).
@@ -269,7 +273,9 @@ typedef struct gw_layer_make_params {
     double t_max;          /* give up after t_max s of simulated time [6] */
     double damping;        /* Hunt-Crossley alpha while settling, s/m [0.3] */
     double modulus_factor; /* settle with G * factor, then relax with true G [1] */
-    double dt;             /* RK4 step, s [2e-5] */
+    double dt;             /* fixed step, s [2e-5] */
+    const gw_solver_type *solver; /* verlet (explicit DEM) or rk4, contact events
+                                     not located either way [gw_solver_verlet] */
     double height_rm;      /* > 0: after settling keep only the particles lying
                               wholly below height_rm R_m (the box height H of
                               physics.md 2.2) [0 = keep all] */
@@ -355,6 +361,7 @@ typedef struct gw_layer_impact_result {
     double t_end;
     double impact_x, impact_y; /* ring centre, m */
     double block_mass, wall_ms;
+    double dt;              /* fixed step used (verlet, rk4), s; 0 for cvode/arkode */
     int n_mobile, n_frozen;
     gw_layer_stats stats;
     /* series */
@@ -377,6 +384,14 @@ void gw_layer_impact_result_free(gw_layer_impact_result *r);
  * gap >= 0, block inside the box, ...): GW_EINVAL naming the input. */
 int gw_layer_impact_check(const gw_layer_sample *s, const gw_layer_impact_params *ip,
                           gw_err *err);
+
+/* The verlet step gw_layer_impact takes when sp->dt is 0: the Hertz contact
+ * time of the two smallest discs meeting at V_i, tau = (4/5) B(2/5, 1/2)
+ * (5 M / (4 K_n))^(2/5) V_i^(-1/5) with the reduced mass M = m/2, over GW_LAYER_DEM_STEPS,
+ * shortened so that dt_out is a whole number of steps. s. */
+#define GW_LAYER_DEM_STEPS 200
+double gw_layer_impact_dem_dt(const gw_layer_sample *s, const gw_layer_params *lp,
+                              const gw_layer_impact_params *ip);
 
 /* One block impact on a sample (physics.md 2.3). vtk_dir (may be NULL) receives
  * snapshot_0.vtk and snapshot_end.vtk. GW_EINVAL names the input (block

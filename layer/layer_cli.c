@@ -49,9 +49,9 @@ int layer_impact_options(layer_impact_cli *c, gw_opt *o)
     memset(c, 0, sizeof *c);
     int i = layer_mat_options(&c->m, o);
     c->ip = gw_layer_impact_params_default();
-    c->solver = "rk4";
+    c->solver = NULL; /* verlet, or rk4 with --exact */
     c->method = "default";
-    c->dt = 1e-6;
+    c->dt = 0; /* auto */
     c->rtol = 1e-8;
     c->atol = 1e-8;
     c->rings = c->ip.nrings;
@@ -69,9 +69,10 @@ int layer_impact_options(layer_impact_cli *c, gw_opt *o)
     o[i++] = OPT_D("dt-out", &c->ip.dt_out, "DT", "sampling interval, s [2e-5]", -INFINITY, INFINITY, 0);
     o[i++] = OPT_D("ring-width", &c->ip.ring_width, "DC", "crown width d_c, m [2 R_m]", -INFINITY, INFINITY, 0);
     o[i++] = OPT_L("rings", &c->rings, "N", "number of crowns [12]", 1, 1000);
-    o[i++] = OPT_S("solver", &c->solver, "NAME", "rk4, cvode or arkode [rk4]");
+    o[i++] = OPT_S("solver", &c->solver, "NAME", "verlet (explicit DEM, no located events), rk4, cvode or arkode [verlet; rk4 with --exact]");
     o[i++] = OPT_S("method", &c->method, "NAME", "cvode: bdf|adams; arkode: erk|dirk [default]");
-    o[i++] = OPT_D("dt", &c->dt, "DT", "RK4 step, s [1e-6]", 0, 1, 1);
+    o[i++] = OPT_D("dt", &c->dt, "DT", "fixed step of verlet or rk4, s [0 = auto: verlet the shortest binary contact time / 200, rk4 1e-6]", 0, 1, 1);
+    o[i++] = (gw_opt){.name = "exact", .kind = GW_OPT_FLAG, .dest = &c->exact, .help = "exact mode: RK4 (or --solver cvode|arkode) stopping at every contact and stick/slip transition, dt 1e-6 s; the reference the fast default is tested against"};
     o[i++] = OPT_D("rtol", &c->rtol, "R", "relative tolerance of cvode/arkode [1e-8]", 0, 1, 1);
     o[i++] = OPT_D("atol", &c->atol, "A", "absolute tolerance (scaled per component) [1e-8]", 0, 1, 1);
     o[i++] = OPT_D("energy-tol", &c->ip.energy_tol, "E", "stop (exit 1) when the ledger closure |sum - A|/A exceeds E [0 = off]", -INFINITY, INFINITY, 0);
@@ -86,14 +87,20 @@ int layer_impact_resolve(layer_impact_cli *c, gw_err *err)
     int rc = layer_mat_resolve(&c->m, err);
     if (rc != GW_OK)
         return rc;
+    if (!c->solver)
+        c->solver = c->exact ? "rk4" : "verlet";
     c->type = gw_solver_type_find(c->solver);
     if (!c->type)
-        return gw_err_set(err, GW_EINVAL, "--solver: unknown solver '%s' (cvode, arkode, rk4)", c->solver);
+        return gw_err_set(err, GW_EINVAL, "--solver: unknown solver '%s' (verlet, rk4, cvode, arkode)", c->solver);
+    if (c->exact && c->type == gw_solver_verlet)
+        return gw_err_set(err, GW_EINVAL, "--exact: needs a solver that locates contact events (rk4, cvode, "
+                          "arkode), not verlet");
     c->sp = gw_solver_params_default();
     c->sp.method = gw_solver_method_find(c->method);
     if (c->sp.method < 0)
         return gw_err_set(err, GW_EINVAL, "--method: unknown method '%s' (bdf, adams, erk, dirk)", c->method);
-    c->sp.dt = c->type == gw_solver_rk4 ? c->dt : 0;
+    c->sp.dt = c->type == gw_solver_verlet ? c->dt /* 0: gw_layer_impact chooses */
+             : c->type == gw_solver_rk4 ? (c->dt > 0 ? c->dt : 1e-6) : 0;
     c->sp.rtol = c->rtol;
     c->sp.atol = c->atol;
     if (!c->sample)

@@ -44,14 +44,14 @@ typedef struct layer_impact_cli {
     double dt, rtol, atol;
     double rm; /* the sample's R_m, m (set by layer_impact_use_sample) */
     long rings;
-    int json;
+    int json, exact;
     /* resolved by layer_impact_resolve */
     const gw_solver_type *type;
     gw_solver_params sp;
 } layer_impact_cli;
 
 /* Number of options layer_impact_options writes (materials included). */
-#define LAYER_IMPACT_NOPTS (LAYER_MAT_NOPTS + 19)
+#define LAYER_IMPACT_NOPTS (LAYER_MAT_NOPTS + 20)
 
 /* Zero c, fill the defaults and write the impact option table (materials,
  * sample, block, run, solver, flags remove-walls and full) into

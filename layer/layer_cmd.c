@@ -70,7 +70,7 @@ int gw_cmd_layer_make(int argc, char **argv)
     int i = layer_mat_options(&m, o);
     gw_layer_make_params mp = gw_layer_make_params_default();
     long n = mp.n, seed = mp.seed;
-    const char *out = NULL;
+    const char *out = NULL, *solver = "verlet";
     int json = 0;
     /* the final overlap check is O(n^2): 1e5 particles take seconds there (and
      * days of pluviation before) */
@@ -83,7 +83,8 @@ int gw_cmd_layer_make(int argc, char **argv)
     o[i++] = OPT_D("t-max", &mp.t_max, "T", "give up after T s simulated [6]", 0, 1e4, 1);
     o[i++] = OPT_D("damping", &mp.damping, "A", "Hunt-Crossley alpha while settling, s/m [0.3]", 0, 1e3, 0);
     o[i++] = OPT_D("modulus-factor", &mp.modulus_factor, "F", "settle with F*G then relax with G [1]", 0, 1, 1);
-    o[i++] = OPT_D("dt", &mp.dt, "DT", "RK4 step, s [2e-5]", 0, 1, 1);
+    o[i++] = OPT_D("dt", &mp.dt, "DT", "fixed step, s [2e-5]", 0, 1, 1);
+    o[i++] = OPT_S("solver", &solver, "NAME", "verlet (explicit DEM) or rk4; contact events are not located while settling [verlet]");
     o[i++] = OPT_D("height-rm", &mp.height_rm, "H", "keep the particles wholly below H R_m after settling [0 = all]", 0, 1e6, 0);
     o[i++] = (gw_opt){.name = "clumps", .kind = GW_OPT_FLAG, .dest = &mp.clumps,
                       .help = "type B soil: n rigid clumps (aspect ratio 1-4) instead of n discs"};
@@ -110,6 +111,9 @@ int gw_cmd_layer_make(int argc, char **argv)
         return fail("layer-make", "--gravity: pluviation needs gravity > 0 m/s^2");
     if (mp.aspect_max != 4 && !mp.clumps)
         return fail("layer-make", "--aspect-max: shapes clumps, so it needs --clumps");
+    mp.solver = gw_solver_type_find(solver);
+    if (mp.solver != gw_solver_verlet && mp.solver != gw_solver_rk4)
+        return fail("layer-make", "--solver: pluviation takes verlet or rk4");
     mp.n = (int)n;
     mp.seed = seed;
     gw_layer_sample s;
@@ -122,9 +126,9 @@ int gw_cmd_layer_make(int argc, char **argv)
     char *hdr = command_line("layer-make", argc, argv);
     char info[512];
     snprintf(info, sizeof info, "%s\nsettled: t = %.4g s, E_k = %.4g J, converged %d, max overlap %.3g R_p; "
-             "mass law %s, clump mass %s; settling damping alpha = %g s/m, modulus factor %g, RK4 dt = %g s",
+             "mass law %s, clump mass %s; settling damping alpha = %g s/m, modulus factor %g, %s dt = %g s",
              hdr ? hdr : "", r.t_settle, r.ke_final, r.converged, r.max_overlap,
-             gw_layer_mass_law_name(m.lp.mass_law), gw_layer_clump_mass_name(m.lp.clump_mass), mp.damping, mp.modulus_factor, mp.dt);
+             gw_layer_mass_law_name(m.lp.mass_law), gw_layer_clump_mass_name(m.lp.clump_mass), mp.damping, mp.modulus_factor, solver, mp.dt);
     free(hdr);
     rc = gw_layer_sample_write(&s, out, info, &err);
     if (rc != GW_OK) {
@@ -165,7 +169,8 @@ int gw_cmd_layer_make(int argc, char **argv)
         cJSON_AddNumberToObject(st, "ke_threshold", mp.ke_threshold);
         cJSON_AddNumberToObject(st, "damping", mp.damping);
         cJSON_AddNumberToObject(st, "modulus_factor", mp.modulus_factor);
-        cJSON_AddStringToObject(st, "solver", "rk4 (contact events not located while settling)");
+        cJSON_AddStringToObject(st, "solver", gw_solver_type_name(mp.solver));
+        cJSON_AddBoolToObject(st, "contact_events_located", 0);
         cJSON_AddNumberToObject(st, "dt", mp.dt);
         cJSON_AddNumberToObject(st, "height_rm", mp.height_rm);
         cJSON_AddItemToObject(st, "material", mat_json(&m.lp));
@@ -181,8 +186,8 @@ int gw_cmd_layer_make(int argc, char **argv)
             printf("  %d particles above %g R_m removed after settling\n", r.n_removed, mp.height_rm);
         printf("  settled in %.3g s simulated (%s), E_k = %.3g J, max overlap %.3g R_p\n", r.t_settle,
                r.converged ? "converged" : "NOT converged: t-max reached", r.ke_final, r.max_overlap);
-        printf("  mass law %s; settling: Hunt-Crossley alpha %g s/m, modulus factor %g; RK4 dt %g s\n",
-               gw_layer_mass_law_name(m.lp.mass_law), mp.damping, mp.modulus_factor, mp.dt);
+        printf("  mass law %s; settling: Hunt-Crossley alpha %g s/m, modulus factor %g; %s dt %g s\n",
+               gw_layer_mass_law_name(m.lp.mass_law), mp.damping, mp.modulus_factor, solver, mp.dt);
         printf("  wall time %.0f ms, %ld steps, %ld list rebuilds; written to %s\n", r.wall_ms, r.steps,
                r.rebuilds, out);
     }
@@ -293,7 +298,8 @@ static cJSON *impact_json(const impact_cli *c, const gw_layer_impact_result *r,
     cJSON_AddStringToObject(so, "method", c->method);
     cJSON_AddNumberToObject(so, "rtol", sp->rtol);
     cJSON_AddNumberToObject(so, "atol", sp->atol);
-    cJSON_AddNumberToObject(so, "dt", sp->dt);
+    cJSON_AddNumberToObject(so, "dt", r->dt > 0 ? r->dt : sp->dt);
+    cJSON_AddBoolToObject(so, "exact", c->exact);
     return o;
 }
 

@@ -149,17 +149,25 @@ int layer_contacts_build(gw_layer *L, gw_err *err)
     if (nc > 1)
         qsort(c, (size_t)nc, sizeof *c, contact_cmp);
     for (int k = 0; k < nc; k++) {
-        double ra = L->r[c[k].a];
-        double rp = c[k].b >= 0 ? 2 * ra * L->r[c[k].b] / (ra + L->r[c[k].b]) : ra;
+        double ra = L->r[c[k].a], rb = c[k].b >= 0 ? L->r[c[k].b] : 0;
+        double rp = c[k].b >= 0 ? 2 * ra * rb / (ra + rb) : ra;
+        c[k].qa = layer_body(L, c[k].a);
+        c[k].qb = c[k].b >= 0 ? layer_body(L, c[k].b) : c[k].b;
+        c[k].ra = ra, c[k].rb = rb;
         c[k].kn = gw_layer_kn(&L->p, rp);
         c[k].ktf = gw_layer_kt_factor(&L->p, rp);
+        c[k].kts = c[k].ktf * cbrt(c[k].kn);
     }
     const int nb = L->nb;
     long dim = 6L * nb + nc + L->ntail;
     double *ny = malloc((size_t)dim * sizeof *ny), *nsc = malloc((size_t)dim * sizeof *nsc);
     int *roots = malloc((2 * (size_t)nc + (size_t)n + 1) * sizeof *roots);
-    if (!ny || !nsc || !roots) {
-        free(c), free(ny), free(nsc), free(roots);
+    long *drift = malloc((size_t)dim * sizeof *drift);
+    double *un_last = calloc((size_t)nc + 1, sizeof *un_last);
+    layer_tscr *tscr = calloc((size_t)nc + 1, sizeof *tscr);
+    double *snap = malloc(((size_t)nc + 1) * LAYER_SNAP_W * sizeof *snap);
+    if (!ny || !nsc || !roots || !drift || !un_last || !tscr || !snap) {
+        free(c), free(ny), free(nsc), free(roots), free(drift), free(un_last), free(tscr), free(snap);
         return gw_err_set(err, GW_ENOMEM, "layer: out of memory for %d contacts", nc);
     }
     memcpy(ny, L->y, 6 * (size_t)nb * sizeof *ny);
@@ -171,7 +179,13 @@ int layer_contacts_build(gw_layer *L, gw_err *err)
             ny[6 * nb + k] = L->y[6 * nb + (old - L->c)];
     }
     memcpy(ny + 6 * nb + nc, L->y + 6 * nb + L->nc, (size_t)L->ntail * sizeof *ny);
-    free(L->y), free(L->scale), free(L->c), free(L->roots);
+    free(L->y), free(L->scale), free(L->c), free(L->roots), free(L->drift), free(L->un_last);
+    free(L->tscr), free(L->snap);
+    L->tscr = tscr;
+    L->snap = snap;
+    L->stamp++;
+    L->drift = drift;
+    L->un_last = un_last;
     L->y = ny;
     L->scale = nsc;
     L->roots = roots;

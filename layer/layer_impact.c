@@ -24,6 +24,8 @@
  * over (1/2) M V_i^2 (sampled, so identical on every backend up to dt_out).
  * Crowns: rings of width d_c centred on the initial block-target contact point
  * (layer_crowns.c).
+ * Integration: any backend; verlet (explicit DEM, the program's default) with
+ * dt = 0 takes gw_layer_impact_dem_dt.
  * Units: SI.
  */
 #include <math.h>
@@ -92,6 +94,20 @@ int gw_layer_impact_check(const gw_layer_sample *smp, const gw_layer_impact_para
     return GW_OK;
 }
 
+double gw_layer_impact_dem_dt(const gw_layer_sample *s, const gw_layer_params *lp,
+                              const gw_layer_impact_params *ip)
+{
+    double rmin = INFINITY;
+    for (int i = 0; i < s->n; i++)
+        rmin = fmin(rmin, s->r[i]);
+    rmin = fmin(rmin, ip->rb_rm * s->rm);
+    const double ms = 0.5 * gw_layer_mass(lp, rmin), K = gw_layer_kn(lp, rmin);
+    const double beta = tgamma(0.4) * tgamma(0.5) / tgamma(0.9); /* B(2/5, 1/2) */
+    double tau = 0.8 * beta * pow(1.25 * ms / K, 0.4) * pow(ip->vi, -0.2);
+    double dt = tau / GW_LAYER_DEM_STEPS;
+    return ip->dt_out / ceil(ip->dt_out / dt);
+}
+
 /* Overlap (m) of the block with the target particle. */
 static double target_overlap(const gw_layer *L, int block, int target)
 {
@@ -129,7 +145,7 @@ static double record(gw_layer_impact_result *r, gw_layer *L, int block, double w
 {
     int k = r->ns++;
     r->t[k] = gw_layer_time(L);
-    gw_layer_energy_of(L, &r->ledger[k]);
+    gw_layer_ledgers(L, &r->ledger[k], r->regions);
     double s[6];
     gw_layer_particle(L, block, s);
     r->block[4 * k] = s[0], r->block[4 * k + 1] = s[1];
@@ -139,7 +155,6 @@ static double record(gw_layer_impact_result *r, gw_layer *L, int block, double w
                    r->ring_coord + (size_t)k * r->nrings);
     for (int q = 0; strain0 && q < r->nrings; q++)
         str[q] -= strain0[q];
-    gw_layer_region_ledger(L, r->regions);
     for (int q = 0; q < r->nrings; q++)
         r->ring_diss[(size_t)k * r->nrings + q] = r->regions[q].dissipated;
     double A = gw_layer_energy_initial(L);
@@ -234,7 +249,11 @@ int gw_layer_impact(const gw_layer_sample *smp, const gw_layer_params *lp0,
     for (int k = 0; k < ip->nrings; k++)
         res->ring_r[k] = (k + 0.5) * w;
     double t0 = gw_clock_ms();
-    rc = gw_layer_start(L, type, sp, err);
+    gw_solver_params spu = *sp;
+    if (type == gw_solver_verlet && !(spu.dt > 0))
+        spu.dt = gw_layer_impact_dem_dt(smp, &lp, ip);
+    res->dt = type == gw_solver_verlet || type == gw_solver_rk4 ? spu.dt : 0;
+    rc = gw_layer_start(L, type, &spu, err);
     if (rc == GW_OK) {
         gw_layer_rings(L, res->impact_x, res->impact_y, w, ip->nrings, strain0 + ip->nrings,
                        strain0, strain0 + 2 * ip->nrings);

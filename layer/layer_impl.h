@@ -6,6 +6,8 @@
 #ifndef GW_LAYER_IMPL_H
 #define GW_LAYER_IMPL_H
 
+#include <math.h>
+
 #include "gw_layer.h"
 
 /* Sliding margin of the tangential state outside the Coulomb cap and its
@@ -24,7 +26,10 @@ enum { LAYER_LEFT = -1, LAYER_RIGHT = -2, LAYER_BOTTOM = -3 };
 
 typedef struct layer_contact {
     int a, b;        /* particle a < b, or b = LAYER_* wall */
+    int qa, qb;      /* bodies of a and b (qb = b for a wall) */
     double kn, ktf;  /* K_n (B.3) and k_t with K_t = k_t F_n^(1/3) (B.4) */
+    double kts;      /* k_t K_n^(1/3): K_t = kts sqrt(u_n), no cube root in the loop */
+    double ra, rb;   /* radii of a and b (rb = 0 for a wall) */
 } layer_contact;
 
 struct gw_layer {
@@ -71,7 +76,72 @@ struct gw_layer {
     int storm, no_events_user;
     gw_layer_event_fn hook;
     void *hook_ctx;
+    /* Explicit DEM mode (the verlet backend): no contact events; drift maps
+     * positions to velocities; un_last[k] is contact k's overlap at the last rhs
+     * evaluation (0 when open), which for verlet is the state at the step end
+     * that the step projection (layer_sim.c) reads. */
+    int dem;
+    long *drift;        /* [cap_y] */
+    double *un_last;    /* [cap_c] */
+    struct layer_tscr *tscr; /* [cap_c], DEM mode only */
+    /* Contact snapshot for the ledger and ring analyses (layer_snapshot): one
+     * pass of contact geometry per state, shared by every consumer. stamp
+     * counts the changes of y; snap_stamp is the stamp the snapshot was made at. */
+    unsigned long stamp, snap_stamp;
+    double *snap;       /* [6 cap_c]: u_n, F_n (elastic), F_t used, K_t, contact point x, y */
+    double *snap_xy;    /* [2 n] disc centres */
 };
+
+/* Contact k of the snapshot (layer_snapshot). */
+enum { LAYER_SNAP_UN, LAYER_SNAP_FN, LAYER_SNAP_FT, LAYER_SNAP_KT, LAYER_SNAP_PX, LAYER_SNAP_PY,
+       LAYER_SNAP_W };
+
+/* The snapshot of state L->y, made if y changed since the last one: per
+ * contact (LAYER_SNAP_W doubles each) u_n, elastic F_n, used F_t, K_t (all 0
+ * when open) and the contact point; disc centres in L->snap_xy. */
+const double *layer_snapshot(const gw_layer *L);
+
+/* Region of a contact from its contact point (px, py): as
+ * layer_contact_region_at. */
+static inline int layer_contact_region_pt(const gw_layer *L, const layer_contact *c, double px,
+                                          double py)
+{
+    if (c->qa == L->block_body || c->qb == L->block_body)
+        return L->reg_n + 1;
+    double dx = px - L->reg_cx, dy = py - L->reg_cy;
+    double d2 = (dx * dx + dy * dy) / (L->reg_w * L->reg_w);
+    double lim = (double)L->reg_n * L->reg_n;
+    return d2 < lim ? (int)sqrt(d2) : L->reg_n;
+}
+
+/* What the rhs saw of a closed frictional contact, kept in DEM mode for the
+ * step projection: F_t, K_t, v_t, dF_n/dt, elastic F_n, the dissipation and
+ * Mindlin-work rates it booked, and the contact's region (-1: none). */
+typedef struct layer_tscr {
+    double f, kt, vt, fnd, fel, cd, ck; /* f: the state the rhs saw */
+    int q;
+} layer_tscr;
+
+/* The tangential law of layer_model.c (B.2) for a closed contact with state f,
+ * K_t = kt, tangential velocity vt, dF_n/dt = fnd, elastic F_n = fel, tan phi =
+ * tp: the force used (f clamped to the cap), the state's rate, and the
+ * dissipation and Mindlin-work rates (B.7-B.14). */
+static inline void layer_tangential(double f, double kt, double vt, double fnd, double fel, double tp,
+                                    double *ft, double *rate, double *cd, double *ck)
+{
+    double cap = tp * fel, re = kt * vt;
+    double sg = f > 0 ? 1 : f < 0 ? -1 : (re >= 0 ? 1 : -1);
+    double rc = sg * tp * fnd, fud = re;
+    *rate = re;
+    if (fabs(f) >= cap) {
+        fud = rc; /* the force used rides the cap */
+        if (sg * re > sg * rc) /* sliding: keep the state a margin outside */
+            *rate = rc + sg * LAYER_CAP_RATE * (cap * (1 + LAYER_CAP_MARGIN) - fabs(f));
+    }
+    *ft = f > cap ? cap : f < -cap ? -cap : f;
+    *cd = *ft * (vt - fud / kt);
+    *ck = *ft * *ft * fnd / (6.0 * kt * fel);
+}
 
 /* Body of disc i. */
 static inline int layer_body(const gw_layer *L, int i)
@@ -135,10 +205,15 @@ int layer_contact_region_at(const gw_layer *L, const layer_contact *c, const dou
                             double un, const double nn[2]);
 
 /* Add the state-function terms of the ledger (kinetic, potential, strain) into
- * out[0] (by_region = 0) or into out[region] (layer_regions.c). */
-void layer_ledger_sum(const gw_layer *L, gw_layer_energy *out, int by_region);
+ * *global and into regions[region] (either may be NULL; layer_regions.c). */
+void layer_ledger_sum(const gw_layer *L, gw_layer_energy *global, gw_layer_energy *regions);
 
-/* Fill sys (rhs, roots, dim, scale) for the current list. */
+/* DEM mode: after each verlet step of length h, zero F_t of contacts that
+ * opened and evaluate the tangential law at the state the step ended with
+ * (layer_sim.c). */
+int layer_step_project(double t, double h, double *y, double *ydot, void *P);
+
+/* Fill sys (rhs, roots, dim, scale, drift) for the current list. */
 void layer_system_fill(gw_layer *L);
 
 /* Overlap u_n (m), unit normal n (a -> b), tangent t = (-n_y, n_x) and the

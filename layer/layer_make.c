@@ -60,6 +60,7 @@ gw_layer_make_params gw_layer_make_params_default(void)
     m.damping = 0.3;
     m.modulus_factor = 1;
     m.dt = 2e-5;
+    m.solver = gw_solver_verlet;
     m.aspect_max = 4;
     return m;
 }
@@ -76,6 +77,8 @@ static int check_make(const gw_layer_make_params *m, gw_err *err)
         (rc = gw_check_range(m->damping, "damping (s/m)", 0, 1e3, err)) != GW_OK ||
         (rc = gw_check_range(m->modulus_factor, "modulus-factor", 1e-9, 1, err)) != GW_OK ||
         (rc = gw_check_positive(m->dt, "dt (s)", err)) != GW_OK ||
+        (rc = m->solver == gw_solver_verlet || m->solver == gw_solver_rk4 ? GW_OK
+              : gw_err_set(err, GW_EINVAL, "solver: pluviation takes verlet or rk4")) != GW_OK ||
         (rc = gw_check_range(m->aspect_max, "aspect-max", 1, 4, err)) != GW_OK)
         return rc;
     double rmax = m->rm * 2 * cbrt(m->volume_ratio) / (1 + cbrt(m->volume_ratio));
@@ -96,7 +99,7 @@ static int settle(const gw_layer_params *lp, const gw_layer_make_params *m, int 
         return rc;
     gw_solver_params sp = gw_solver_params_default();
     sp.dt = m->dt;
-    rc = gw_layer_start(L, gw_solver_rk4, &sp, err);
+    rc = gw_layer_start(L, m->solver, &sp, err);
     *conv = 0;
     const double chunk = 0.01;
     for (int k = 1; rc == GW_OK && k * chunk <= m->t_max + 1e-12; k++) {

@@ -171,7 +171,9 @@ int gw_layer_create(const gw_layer_params *p, int n, const gw_layer_body *b, gw_
     L->cap_y = 6L * n + 2;
     L->y = malloc((size_t)L->cap_y * sizeof *L->y);
     L->scale = malloc((size_t)L->cap_y * sizeof *L->scale);
-    if (!L->r || !L->fixed || !L->x_list || !L->y || !L->scale) {
+    L->drift = malloc((size_t)L->cap_y * sizeof *L->drift);
+    L->snap_xy = malloc(2 * (size_t)n * sizeof *L->snap_xy);
+    if (!L->r || !L->fixed || !L->x_list || !L->y || !L->scale || !L->drift || !L->snap_xy) {
         gw_layer_free(L);
         return gw_err_set(err, GW_ENOMEM, "layer: out of memory for %d particles", n);
     }
@@ -204,6 +206,7 @@ int gw_layer_create(const gw_layer_params *p, int n, const gw_layer_body *b, gw_
     L->v_scale = fmax(vmax, sqrt(fmax(p->gravity, 1e-3) * L->rmax));
     L->u_scale = 1e-3 * L->rmax;
     L->f_scale = gw_layer_kn(p, L->rmax) * pow(L->u_scale, 1.5);
+    L->stamp = 1;
     *out = L;
     return GW_OK;
 }
@@ -218,6 +221,11 @@ void gw_layer_free(gw_layer *L)
     free(L->x_list);
     free(L->y);
     free(L->scale);
+    free(L->drift);
+    free(L->un_last);
+    free(L->tscr);
+    free(L->snap);
+    free(L->snap_xy);
     free(L->c);
     free(L->roots);
     free(L->bid);
@@ -244,7 +252,7 @@ static void geometry_arms(const gw_layer *L, const layer_contact *c, const doubl
         break;
     default: {
         layer_disc_xy(L, y, c->b, sb, armb);
-        double dx = sb[0] - sa[0], dy = sb[1] - sa[1], d = hypot(dx, dy);
+        double dx = sb[0] - sa[0], dy = sb[1] - sa[1], d = sqrt(dx * dx + dy * dy);
         if (d > 0)
             n[0] = dx / d, n[1] = dy / d;
         else
@@ -306,10 +314,51 @@ void layer_contact_forces(const gw_layer *L, int k, const double *y, double *fn,
     *fn = *ft = *kt = 0;
     if (!(un > 0))
         return;
-    *fn = c->kn * un * sqrt(un);
-    *kt = c->ktf * cbrt(*fn);
+    double su = sqrt(un);
+    *fn = c->kn * un * su;
+    *kt = c->kts * su;
     double cap = L->tan_phi * *fn, f = y[6 * L->nb + k];
     *ft = f > cap ? cap : f < -cap ? -cap : f;
+}
+
+/* Kinematics of disc-only contact c (no clumps: body = disc, arms = radii):
+ * overlap, normal, overlap rate and tangential relative velocity; 0 when open
+ * (the square root is only taken for pairs closer than R_a + R_b). */
+static inline int disc_kinematics(const layer_contact *c, const double *y, double width,
+                                  double *un, double n[2], double *und, double *vt)
+{
+    const double *sa = y + 6 * c->qa;
+    double rx = -sa[3], ry = -sa[4], wrb = 0;
+    switch (c->b) {
+    case LAYER_LEFT:
+        n[0] = -1, n[1] = 0, *un = c->ra - sa[0];
+        break;
+    case LAYER_RIGHT:
+        n[0] = 1, n[1] = 0, *un = c->ra - (width - sa[0]);
+        break;
+    case LAYER_BOTTOM:
+        n[0] = 0, n[1] = -1, *un = c->ra - sa[1];
+        break;
+    default: {
+        const double *sb = y + 6 * c->qb;
+        double dx = sb[0] - sa[0], dy = sb[1] - sa[1], d2 = dx * dx + dy * dy;
+        double rs = c->ra + c->rb;
+        if (!(d2 < rs * rs))
+            return 0;
+        double d = sqrt(d2);
+        if (d > 0)
+            n[0] = dx / d, n[1] = dy / d;
+        else
+            n[0] = 0, n[1] = 1;
+        *un = rs - d;
+        rx += sb[3], ry += sb[4], wrb = sb[5] * c->rb;
+    }
+    }
+    if (!(*un > 0))
+        return 0;
+    *und = -(rx * n[0] + ry * n[1]);
+    *vt = -rx * n[1] + ry * n[0] - sa[5] * c->ra - wrb;
+    return 1;
 }
 
 static int layer_rhs(double t, const double *y, double *yd, void *P)
@@ -317,9 +366,12 @@ static int layer_rhs(double t, const double *y, double *yd, void *P)
     (void)t;
     const gw_layer *L = P;
     const int n = L->nb; /* the state is per body */
-    const double g = L->p.gravity, tp = L->tan_phi, alpha = L->p.damping;
+    const double g = L->p.gravity, tp = L->tan_phi, alpha = L->p.damping, width = L->p.width;
+    const int clumps = L->off != NULL;
     double pd = 0, pk = 0;
     double *rtail = L->reg_n > 0 ? yd + 6 * n + L->nc + 2 : NULL;
+    double *un_last = L->un_last;
+    layer_tscr *tscr = L->dem ? L->tscr : NULL;
     for (int q = 0; rtail && q < 2 * (L->reg_n + 2); q++)
         rtail[q] = 0;
     for (int i = 0; i < n; i++) {
@@ -330,19 +382,24 @@ static int layer_rhs(double t, const double *y, double *yd, void *P)
     }
     for (int k = 0; k < L->nc; k++) {
         const layer_contact *c = &L->c[k];
-        double un, nn[2], und, vt, arma[2], armb[2], lev[2];
+        double un = 0, nn[2], und = 0, vt = 0, arma[2], armb[2], lev[2];
         double *fdot = yd + 6 * n + k;
-        contact_kinematics(L, c, y, &un, nn, &und, &vt, arma, armb, lev);
-        if (!(un > 0)) {
+        int closed;
+        if (clumps) {
+            contact_kinematics(L, c, y, &un, nn, &und, &vt, arma, armb, lev);
+            closed = un > 0;
+        } else {
+            closed = disc_kinematics(c, y, width, &un, nn, &und, &vt);
+            lev[0] = c->ra, lev[1] = c->rb;
+        }
+        double su = closed ? sqrt(un) : 0, fel = c->kn * un * su;
+        if (!closed || !(fel > 0)) { /* open, or F_n underflows */
             *fdot = 0;
+            un_last[k] = 0;
             continue;
         }
-        double su = sqrt(un), fel = c->kn * un * su, fnd = 1.5 * c->kn * su * und;
-        if (!(fel > 0)) { /* overlap so small that F_n underflows: open */
-            *fdot = 0;
-            continue;
-        }
-        double fn = fel;
+        un_last[k] = un;
+        double fnd = 1.5 * c->kn * su * und, fn = fel;
         if (alpha > 0) {
             fn = fel * (1.0 + 1.5 * alpha * und);
             if (fn < 0)
@@ -351,39 +408,34 @@ static int layer_rhs(double t, const double *y, double *yd, void *P)
         }
         double ft = 0;
         if (tp > 0) {
-            double kt = c->ktf * cbrt(fel), cap = tp * fel, f = y[6 * n + k];
-            double re = kt * vt;
-            double sg = f > 0 ? 1 : f < 0 ? -1 : (re >= 0 ? 1 : -1);
-            double rc = sg * tp * fnd, rate = re, fud = re;
-            if (fabs(f) >= cap) {
-                fud = rc; /* the force used rides the cap */
-                if (sg * re > sg * rc) /* sliding: keep the state a margin outside */
-                    rate = rc + sg * LAYER_CAP_RATE * (cap * (1 + LAYER_CAP_MARGIN) - fabs(f));
-            }
-            ft = f > cap ? cap : f < -cap ? -cap : f;
-            *fdot = rate;
-            double cd = ft * (vt - fud / kt), ck = ft * ft * fnd / (6.0 * kt * fel);
+            double kt = c->kts * su, cd, ck;
+            layer_tangential(y[6 * n + k], kt, vt, fnd, fel, tp, &ft, fdot, &cd, &ck);
             pd += cd;
             pk += ck;
+            int q = -1;
             if (rtail) {
-                int q = layer_contact_region_at(L, c, y, un, nn);
+                q = clumps ? layer_contact_region_at(L, c, y, un, nn)
+                           : layer_contact_region_pt(L, c, y[6 * c->qa] + (c->ra - 0.5 * un) * nn[0],
+                                                     y[6 * c->qa + 1] + (c->ra - 0.5 * un) * nn[1]);
                 rtail[2 * q] += cd + (fn - fel) * und;
                 rtail[2 * q + 1] += ck;
             }
+            if (tscr)
+                tscr[k] = (layer_tscr){y[6 * n + k], kt, vt, fnd, fel, cd, ck, q};
         } else {
             *fdot = 0;
             if (rtail && alpha > 0)
                 rtail[2 * layer_contact_region_at(L, c, y, un, nn)] += (fn - fel) * und;
         }
         double fx = -fn * nn[0] - ft * nn[1], fy = -fn * nn[1] + ft * nn[0];
-        double *da = yd + 6 * layer_body(L, c->a);
+        double *da = yd + 6 * c->qa;
         da[3] += fx, da[4] += fy, da[5] += ft * lev[0];
-        if (L->off) /* arm x F, normal force included */
+        if (clumps) /* arm x F, normal force included */
             da[5] += arma[0] * fy - arma[1] * fx;
         if (c->b >= 0) {
-            double *db = yd + 6 * layer_body(L, c->b);
+            double *db = yd + 6 * c->qb;
             db[3] -= fx, db[4] -= fy, db[5] += ft * lev[1];
-            if (L->off)
+            if (clumps)
                 db[5] -= armb[0] * fy - armb[1] * fx;
         }
     }
@@ -411,7 +463,10 @@ static int layer_roots(double t, const double *y, double *g, void *P)
 {
     (void)t;
     const gw_layer *L = P;
-    double un, nn[2], h = 0.5 * L->p.skin;
+    /* DEM mode reports the rebuild root at the end of the step that crossed it
+     * (not located): rebuild at 0.45 skin, so that a step of up to 0.05 skin
+     * cannot bring an unlisted pair into contact */
+    double un, nn[2], h = (L->dem ? 0.45 : 0.5) * L->p.skin;
     const int r0 = layer_root_rebuild(L), s0 = layer_root_slip(L);
     for (int i = 0; i < L->n; i++) {
         double p[2], arm[2];
@@ -454,18 +509,18 @@ void layer_system_fill(gw_layer *L)
     L->sys.nroots = L->p.no_events ? L->n : L->nc * (L->tan_phi > 0 ? 2 : 1) + L->n;
     L->sys.scale = L->scale;
     L->sys.params = L;
+    for (int i = 0; i < n; i++)
+        for (int q = 0; q < 6; q++)
+            L->drift[6 * i + q] = q < 3 ? 6 * i + q + 3 : -1;
+    for (long q = 6L * n; q < L->dim; q++)
+        L->drift[q] = -1;
+    L->sys.drift = L->drift;
+    L->sys.project = L->dem ? layer_step_project : NULL;
 }
 
 void gw_layer_energy_of(const gw_layer *L, gw_layer_energy *e)
 {
-    memset(e, 0, sizeof *e);
-    layer_ledger_sum(L, e, 0);
-    const double *y = L->y;
-    const int n = L->nb;
-    e->dissipated = y[6 * n + L->nc];
-    e->mindlin_excess = y[6 * n + L->nc + 1];
-    e->total = e->kinetic_block + e->kinetic_soil + e->strain_normal + e->strain_tangent +
-               e->mindlin_excess + e->dissipated + e->potential;
+    gw_layer_ledgers(L, e, NULL);
 }
 
 double gw_layer_energy_initial(const gw_layer *L)
@@ -473,53 +528,100 @@ double gw_layer_energy_initial(const gw_layer *L)
     return L->e0;
 }
 
+/* Ring index of the offset (dx, dy) from the centre for rings of width w, or
+ * -1 beyond the last ring (the distance truncated, as (int)(hypot / w)). */
+static int ring_of(double dx, double dy, double w, int nring)
+{
+    double d = sqrt(dx * dx + dy * dy) / w;
+    return d < nring ? (int)d : -1;
+}
+
+const double *layer_snapshot(const gw_layer *L)
+{
+    if (L->snap_stamp == L->stamp)
+        return L->snap;
+    gw_layer *M = (gw_layer *)L; /* the cache only */
+    const double *y = L->y, W = L->p.width, tp = L->tan_phi;
+    double *xy = M->snap_xy, arm[2];
+    for (int i = 0; i < L->n; i++)
+        layer_disc_xy(L, y, i, xy + 2 * i, arm);
+    for (int k = 0; k < L->nc; k++) {
+        const layer_contact *c = &L->c[k];
+        double *o = M->snap + LAYER_SNAP_W * k;
+        const double *pa = xy + 2 * c->a;
+        double un, nx = 0, ny = 0;
+        switch (c->b) {
+        case LAYER_LEFT:
+            nx = -1, un = c->ra - pa[0];
+            break;
+        case LAYER_RIGHT:
+            nx = 1, un = c->ra - (W - pa[0]);
+            break;
+        case LAYER_BOTTOM:
+            ny = -1, un = c->ra - pa[1];
+            break;
+        default: {
+            const double *pb = xy + 2 * c->b;
+            double dx = pb[0] - pa[0], dy = pb[1] - pa[1], d = sqrt(dx * dx + dy * dy);
+            if (d > 0)
+                nx = dx / d, ny = dy / d;
+            else
+                ny = 1;
+            un = c->ra + c->rb - d;
+        }
+        }
+        o[LAYER_SNAP_UN] = o[LAYER_SNAP_FN] = o[LAYER_SNAP_FT] = o[LAYER_SNAP_KT] = 0;
+        o[LAYER_SNAP_PX] = pa[0] + (c->ra - 0.5 * un) * nx;
+        o[LAYER_SNAP_PY] = pa[1] + (c->ra - 0.5 * un) * ny;
+        if (!(un > 0))
+            continue;
+        double su = sqrt(un), fn = c->kn * un * su, cap = tp * fn, f = y[6 * L->nb + k];
+        o[LAYER_SNAP_UN] = un;
+        o[LAYER_SNAP_FN] = fn;
+        o[LAYER_SNAP_KT] = c->kts * su;
+        o[LAYER_SNAP_FT] = f > cap ? cap : f < -cap ? -cap : f;
+    }
+    M->snap_stamp = L->stamp;
+    return L->snap;
+}
+
 void gw_layer_rings(const gw_layer *L, double cx, double cy, double w, int nring,
                     double *kin, double *strain, double *coord)
 {
-    const double *y = L->y;
-    int *np = calloc((size_t)nring, sizeof *np);
+    const double *y = L->y, *snap = layer_snapshot(L), *xy = L->snap_xy;
+    int *np = calloc((size_t)nring + (size_t)L->n, sizeof *np), *rk = np ? np + nring : NULL;
     for (int k = 0; k < nring; k++)
         kin[k] = strain[k] = coord[k] = 0;
+    /* ring of a point, or -1 outside the rings */
+#define RING(px, py) ring_of((px) - cx, (py) - cy, w, nring)
     for (int i = 0; i < L->nb; i++) { /* kinetic energy by body centre */
         if (i == L->block_body)
             continue;
         const double *s = y + 6 * i;
-        int k = (int)(hypot(s[0] - cx, s[1] - cy) / w);
-        if (k < 0 || k >= nring)
-            continue;
-        kin[k] += 0.5 * L->m[i] * (s[3] * s[3] + s[4] * s[4]) + 0.5 * L->inertia[i] * s[5] * s[5];
+        int k = RING(s[0], s[1]);
+        if (k >= 0)
+            kin[k] += 0.5 * L->m[i] * (s[3] * s[3] + s[4] * s[4]) + 0.5 * L->inertia[i] * s[5] * s[5];
     }
     for (int i = 0; np && i < L->n; i++) { /* coordination: per disc */
-        if (i == L->block)
-            continue;
-        double s[2], arm[2];
-        layer_disc_xy(L, y, i, s, arm);
-        int k = (int)(hypot(s[0] - cx, s[1] - cy) / w);
-        if (k >= 0 && k < nring)
-            np[k]++;
+        rk[i] = i == L->block ? -1 : RING(xy[2 * i], xy[2 * i + 1]);
+        if (rk[i] >= 0)
+            np[rk[i]]++;
     }
-    for (int c = 0; c < L->nc; c++) {
-        double fn, ft, kt, un, nn[2], pt[2];
-        layer_contact_forces(L, c, y, &fn, &ft, &kt);
-        if (!(fn > 0))
+    for (int c = 0; np && c < L->nc; c++) {
+        const double *o = snap + LAYER_SNAP_W * c;
+        if (!(o[LAYER_SNAP_FN] > 0))
             continue;
-        layer_contact_geometry(L, &L->c[c], y, &un, nn, pt);
-        int k = (int)(hypot(pt[0] - cx, pt[1] - cy) / w);
-        if (k >= 0 && k < nring)
-            strain[k] += 0.4 * fn * un + ft * ft / (2 * kt);
+        int k = RING(o[LAYER_SNAP_PX], o[LAYER_SNAP_PY]);
+        if (k >= 0)
+            strain[k] += 0.4 * o[LAYER_SNAP_FN] * o[LAYER_SNAP_UN] +
+                         o[LAYER_SNAP_FT] * o[LAYER_SNAP_FT] / (2 * o[LAYER_SNAP_KT]);
         /* coordination: each end inside a ring counts once for that ring */
-        int ends[2] = {L->c[c].a, L->c[c].b};
-        for (int e = 0; e < 2; e++) {
-            int i = ends[e];
-            if (i < 0 || i == L->block)
-                continue;
-            double s[2], arm[2];
-            layer_disc_xy(L, y, i, s, arm);
-            int kk = (int)(hypot(s[0] - cx, s[1] - cy) / w);
-            if (kk >= 0 && kk < nring)
-                coord[kk] += 1;
-        }
+        if (rk[L->c[c].a] >= 0)
+            coord[rk[L->c[c].a]] += 1;
+        if (L->c[c].b >= 0 && rk[L->c[c].b] >= 0)
+            coord[rk[L->c[c].b]] += 1;
     }
+#undef RING
     for (int k = 0; k < nring; k++)
         coord[k] = np && np[k] > 0 ? coord[k] / np[k] : NAN;
     free(np);
@@ -574,13 +676,9 @@ void gw_layer_get_stats(const gw_layer *L, gw_layer_stats *st)
 
 int gw_layer_contact_count(const gw_layer *L, int i)
 {
+    const double *snap = layer_snapshot(L);
     int c = 0;
-    for (int k = 0; k < L->nc; k++) {
-        if (L->c[k].a != i && L->c[k].b != i)
-            continue;
-        double un, nn[2];
-        layer_contact_geometry(L, &L->c[k], L->y, &un, nn, NULL);
-        c += un > 0;
-    }
+    for (int k = 0; k < L->nc; k++)
+        c += (L->c[k].a == i || L->c[k].b == i) && snap[LAYER_SNAP_W * k + LAYER_SNAP_UN] > 0;
     return c;
 }

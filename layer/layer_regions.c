@@ -25,15 +25,9 @@ int layer_contact_region_at(const gw_layer *L, const layer_contact *c, const dou
 {
     /* (a wall id equal to block_body = -1 books a left-wall contact of a layer
      * without a block as "block": kept as it was) */
-    if (layer_body(L, c->a) == L->block_body ||
-        (c->b >= 0 ? layer_body(L, c->b) : c->b) == L->block_body)
-        return L->reg_n + 1;
     double sa[2], am[2], arm = L->r[c->a] - 0.5 * un;
     layer_disc_xy(L, y, c->a, sa, am);
-    double dx = sa[0] + arm * nn[0] - L->reg_cx, dy = sa[1] + arm * nn[1] - L->reg_cy;
-    double d2 = (dx * dx + dy * dy) / (L->reg_w * L->reg_w);
-    double lim = (double)L->reg_n * L->reg_n;
-    return d2 < lim ? (int)sqrt(d2) : L->reg_n;
+    return layer_contact_region_pt(L, c, sa[0] + arm * nn[0], sa[1] + arm * nn[1]);
 }
 
 int layer_contact_region(const gw_layer *L, const layer_contact *c, const double *y)
@@ -49,7 +43,7 @@ static int particle_region(const gw_layer *L, int i, const double *y)
     if (i == L->block_body)
         return L->reg_n + 1;
     const double *s = y + 6 * i;
-    double d = hypot(s[0] - L->reg_cx, s[1] - L->reg_cy) / L->reg_w;
+    double dx = s[0] - L->reg_cx, dy = s[1] - L->reg_cy, d = sqrt(dx * dx + dy * dy) / L->reg_w;
     return d < L->reg_n ? (int)d : L->reg_n;
 }
 
@@ -73,10 +67,15 @@ int gw_layer_set_regions(gw_layer *L, double cx, double cy, double w, int nring,
     if (!sc)
         return gw_err_set(err, GW_ENOMEM, "layer regions: out of memory");
     L->scale = sc;
+    long *dr = realloc(L->drift, (size_t)(n6 + ntail) * sizeof *dr);
+    if (!dr)
+        return gw_err_set(err, GW_ENOMEM, "layer regions: out of memory");
+    L->drift = dr;
     /* before gw_layer_start the list is empty: the tail follows the particles */
     for (int q = 2; q < ntail; q++)
         L->y[n6 + q] = 0;
     L->reg_cx = cx, L->reg_cy = cy, L->reg_w = w, L->reg_n = nring;
+    L->stamp++;
     L->ntail = ntail;
     L->cap_y = n6 + ntail;
     L->dim = n6 + L->nc + ntail;
@@ -88,46 +87,73 @@ int gw_layer_region_count(const gw_layer *L)
     return L->reg_n > 0 ? L->reg_n + 2 : 0;
 }
 
-void layer_ledger_sum(const gw_layer *L, gw_layer_energy *out, int by_region)
+/* Add body b's kinetic and potential energy into e. */
+static void body_terms(const gw_layer *L, int i, gw_layer_energy *e)
 {
-    const double *y = L->y;
+    const double *s = L->y + 6 * i;
+    double ke = 0.5 * L->m[i] * (s[3] * s[3] + s[4] * s[4]) + 0.5 * L->inertia[i] * s[5] * s[5];
+    if (i == L->block_body)
+        e->kinetic_block += ke;
+    else
+        e->kinetic_soil += ke;
+    if (!L->fixed[i])
+        e->potential += L->m[i] * L->p.gravity * (s[1] - L->y_ref[i]);
+}
+
+void layer_ledger_sum(const gw_layer *L, gw_layer_energy *global, gw_layer_energy *regions)
+{
     for (int i = 0; i < L->nb; i++) { /* bodies */
-        const double *s = y + 6 * i;
-        gw_layer_energy *e = out + (by_region ? particle_region(L, i, y) : 0);
-        double ke = 0.5 * L->m[i] * (s[3] * s[3] + s[4] * s[4]) + 0.5 * L->inertia[i] * s[5] * s[5];
-        if (i == L->block_body)
-            e->kinetic_block += ke;
-        else
-            e->kinetic_soil += ke;
-        if (!L->fixed[i])
-            e->potential += L->m[i] * L->p.gravity * (s[1] - L->y_ref[i]);
+        if (global)
+            body_terms(L, i, global);
+        if (regions)
+            body_terms(L, i, regions + particle_region(L, i, L->y));
     }
+    const double *snap = layer_snapshot(L);
     for (int k = 0; k < L->nc; k++) {
-        double fn, ft, kt, un, nn[2];
-        layer_contact_forces(L, k, y, &fn, &ft, &kt);
-        if (!(fn > 0))
+        const double *o = snap + LAYER_SNAP_W * k;
+        if (!(o[LAYER_SNAP_FN] > 0))
             continue;
-        layer_contact_geometry(L, &L->c[k], y, &un, nn, NULL);
-        gw_layer_energy *e = out + (by_region ? layer_contact_region_at(L, &L->c[k], y, un, nn) : 0);
-        e->strain_normal += 0.4 * fn * un;
-        e->strain_tangent += ft * ft / (2 * kt);
+        double sn = 0.4 * o[LAYER_SNAP_FN] * o[LAYER_SNAP_UN];
+        double st = o[LAYER_SNAP_FT] * o[LAYER_SNAP_FT] / (2 * o[LAYER_SNAP_KT]);
+        if (global)
+            global->strain_normal += sn, global->strain_tangent += st;
+        if (regions) {
+            gw_layer_energy *e = regions + layer_contact_region_pt(L, &L->c[k], o[LAYER_SNAP_PX],
+                                                                  o[LAYER_SNAP_PY]);
+            e->strain_normal += sn, e->strain_tangent += st;
+        }
     }
+}
+
+static void ledger_total(gw_layer_energy *e)
+{
+    e->total = e->kinetic_block + e->kinetic_soil + e->strain_normal + e->strain_tangent +
+               e->mindlin_excess + e->dissipated + e->potential;
+}
+
+int gw_layer_ledgers(const gw_layer *L, gw_layer_energy *e, gw_layer_energy *regions)
+{
+    const int nr = regions ? gw_layer_region_count(L) : 0;
+    if (e)
+        memset(e, 0, sizeof *e);
+    if (nr > 0)
+        memset(regions, 0, (size_t)nr * sizeof *regions);
+    layer_ledger_sum(L, e, nr > 0 ? regions : NULL);
+    const double *tail = L->y + 6 * L->nb + L->nc; /* E_d, W_K, then per region */
+    if (e) {
+        e->dissipated = tail[0];
+        e->mindlin_excess = tail[1];
+        ledger_total(e);
+    }
+    for (int q = 0; q < nr; q++) {
+        regions[q].dissipated = tail[2 + 2 * q];
+        regions[q].mindlin_excess = tail[3 + 2 * q];
+        ledger_total(regions + q);
+    }
+    return nr;
 }
 
 int gw_layer_region_ledger(const gw_layer *L, gw_layer_energy *out)
 {
-    const int nr = gw_layer_region_count(L);
-    if (nr == 0)
-        return 0;
-    memset(out, 0, (size_t)nr * sizeof *out);
-    layer_ledger_sum(L, out, 1);
-    const double *tail = L->y + 6 * L->nb + L->nc + 2;
-    for (int q = 0; q < nr; q++) {
-        gw_layer_energy *e = out + q;
-        e->dissipated = tail[2 * q];
-        e->mindlin_excess = tail[2 * q + 1];
-        e->total = e->kinetic_block + e->kinetic_soil + e->strain_normal + e->strain_tangent +
-                   e->mindlin_excess + e->dissipated + e->potential;
-    }
-    return nr;
+    return gw_layer_ledgers(L, NULL, out);
 }

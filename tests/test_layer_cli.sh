@@ -3,7 +3,9 @@
 # (physics.md 2.2-2.5). $1 = granwave binary, $2 = source dir.
 # - a small sample (60 discs) is made twice with one seed: identical files
 #   apart from nothing (deterministic), and the JSON reports the particle count;
-# - an impact prints JSON with every key of the issue, a closure error <= 1e-4,
+# - an impact (--exact) prints JSON with every key of the issue, a closure
+#   error <= 1e-4; the default fast mode (verlet) closes to 2e-3 and gives
+#   e_n and penetration as the exact mode (0.005, 1 %);
 #   and --out writes ledger.csv, crowns.csv, crowns_peaks.csv, impact.json and
 #   two VTK snapshots;
 # - bad input exits 2 with one line on stderr naming the input, and writes
@@ -52,7 +54,7 @@ print('kept', len(h), 'of', len(a))
 sys.exit(0 if ok else 1)
 PY"
 
-"$gw" layer-impact --sample "$tmp/a.txt" --rb-rm 1 --vi 10 --alpha 30 --t-max 0.005 --json --out "$tmp/out" > "$tmp/imp.json"
+"$gw" layer-impact --sample "$tmp/a.txt" --rb-rm 1 --vi 10 --alpha 30 --t-max 0.005 --exact --json --out "$tmp/out" > "$tmp/imp.json"
 check "layer-impact exits 0" "[ $? -eq 0 ]"
 check "layer-impact JSON keys and closure <= 1e-4" "python3 - '$tmp/imp.json' <<'PY'
 import json, sys
@@ -63,18 +65,36 @@ missing = [k for k in keys if k not in d]
 print('missing', missing, 'energy_error', d.get('energy_error'))
 sys.exit(0 if not missing and d['energy_error'] <= 1e-4 and abs(d['v_ni'] - 10 * 0.8660254) < 1e-6 else 1)
 PY"
+# the default (fast) mode: verlet with the step from the contact time, ledger
+# closure reported and below 2e-3, e_n and penetration as in the exact mode
+"$gw" layer-impact --sample "$tmp/a.txt" --rb-rm 1 --vi 10 --alpha 30 --t-max 0.005 --json > "$tmp/fast.json"
+check "default layer-impact: verlet, dt from the contact time, closure < 2e-3, e_n within 0.005 and penetration within 1 % of --exact" "python3 - '$tmp' <<'PY'
+import json, sys
+f = json.load(open(sys.argv[1] + '/fast.json')); e = json.load(open(sys.argv[1] + '/imp.json'))
+so = f['settings']['solver']
+print('fast', so['name'], so['dt'], f['energy_error'], f['e_n'], e['e_n'], f['penetration'], e['penetration'])
+ok = so['name'] == 'verlet' and so['exact'] is False and 0 < so['dt'] < 2e-5 and f['energy_error'] < 2e-3
+ok = ok and e['settings']['solver']['name'] == 'rk4' and e['settings']['solver']['exact'] is True
+ok = ok and abs(f['e_n'] - e['e_n']) < 0.005 and abs(f['penetration'] - e['penetration']) <= 0.01 * e['penetration']
+sys.exit(0 if ok else 1)
+PY"
+bad_exact_verlet() {
+  "$gw" layer-impact --sample "$tmp/a.txt" --exact --solver verlet > "$tmp/stdout" 2> "$tmp/stderr"
+  [ $? -eq 2 ] && [ $(wc -l < "$tmp/stderr") -eq 1 ] && grep -q -- '--exact' "$tmp/stderr"
+}
+check "--exact with --solver verlet: exit 2, one line naming --exact" bad_exact_verlet
 for f in ledger.csv crowns.csv crowns_peaks.csv impact.json snapshot_0.vtk snapshot_end.vtk; do
   check "--out wrote $f" "[ -s '$tmp/out/$f' ]"
 done
 
-"$gw" layer-impact --sample "$tmp/a.txt" --rb-rm 1 --vi 10 --dt 3e-5 --energy-tol 1e-3 --out "$tmp/emon" > "$tmp/stdout" 2> "$tmp/stderr"
+"$gw" layer-impact --sample "$tmp/a.txt" --rb-rm 1 --vi 10 --exact --dt 3e-5 --energy-tol 1e-3 --out "$tmp/emon" > "$tmp/stdout" 2> "$tmp/stderr"
 rc=$?
 check "energy monitor: RK4 at 30 us breaks the 1e-3 closure -> exit 1 naming the time; the state at failure kept as VTK, no half-written table (got $rc: $(cat "$tmp/stderr"))" \
   "[ $rc -eq 1 ] && grep -q 'energy monitor: ledger closure .* exceeds energy-tol 0.001 at t = .*snapshot_failure.vtk' '$tmp/stderr' && grep -q '^POINTS' '$tmp/emon/snapshot_failure.vtk' && [ ! -e '$tmp/emon/ledger.csv' ] && [ ! -e '$tmp/emon/impact.json' ]"
 
 # HDF5 samples (builds with HDF5): the same seed written as .h5 gives the same impact
 if "$gw" layer-make --n 60 --width-rm 16 --seed 3 --out "$tmp/a.h5" > /dev/null 2> "$tmp/h5err"; then
-  "$gw" layer-impact --sample "$tmp/a.h5" --rb-rm 1 --vi 10 --alpha 30 --t-max 0.005 --json > "$tmp/imp_h5.json"
+  "$gw" layer-impact --sample "$tmp/a.h5" --rb-rm 1 --vi 10 --alpha 30 --t-max 0.005 --exact --json > "$tmp/imp_h5.json"
   check "layer-impact on the .h5 sample = on the text sample (e, penetration, ledger)" "python3 - '$tmp' <<'PY'
 import json, sys
 t = sys.argv[1]
@@ -94,7 +114,7 @@ check "layer-make --clumps exits 0 and writes format 2 (x y r body)" \
 check "layer-make --clumps deterministic for a seed" "cmp -s <(grep -v '^#' '$tmp/c1.txt') <(grep -v '^#' '$tmp/c2.txt')"
 check "layer-make --clumps JSON: 20 bodies, more discs than bodies" \
   "python3 -c 'import json,sys; d=json.load(open(\"$tmp/cmake.json\")); sys.exit(0 if d[\"n_bodies\"]==20 and d[\"n\"]>20 and 0<d[\"porosity\"]<1 else 1)'"
-"$gw" layer-impact --sample "$tmp/c1.txt" --vi 10 --t-max 0.003 --json > "$tmp/cimp.json"
+"$gw" layer-impact --sample "$tmp/c1.txt" --vi 10 --t-max 0.003 --exact --json > "$tmp/cimp.json"
 check "layer-impact on a clump sample: exit 0, closure <= 1e-4" \
   "[ $? -eq 0 ] && python3 -c 'import json,sys; d=json.load(open(\"$tmp/cimp.json\")); sys.exit(0 if d[\"energy_error\"]<=1e-4 else 1)'"
 # clump mass union: recorded in the sample, taken by the impact unless overridden,
@@ -102,8 +122,8 @@ check "layer-impact on a clump sample: exit 0, closure <= 1e-4" \
 "$gw" layer-make --clumps --clump-mass union --n 20 --width-rm 16 --seed 3 --t-max 0.5 --out "$tmp/cu.txt" > /dev/null
 check "layer-make --clump-mass union: exit 0, 'clump_mass union' in the sample" \
   "[ $? -eq 0 ] && grep -qx 'clump_mass union' '$tmp/cu.txt' && ! grep -q '^clump_mass' '$tmp/c1.txt'"
-"$gw" layer-impact --sample "$tmp/cu.txt" --vi 10 --t-max 0.003 --json > "$tmp/cuimp.json"
-"$gw" layer-impact --sample "$tmp/cu.txt" --clump-mass sum --vi 10 --t-max 0.003 --json > "$tmp/cusum.json"
+"$gw" layer-impact --sample "$tmp/cu.txt" --vi 10 --t-max 0.003 --exact --json > "$tmp/cuimp.json"
+"$gw" layer-impact --sample "$tmp/cu.txt" --clump-mass sum --vi 10 --t-max 0.003 --exact --json > "$tmp/cusum.json"
 check "layer-impact on a union sample: its clump mass by default, the option overrides it" \
   "python3 -c 'import json,sys; u=json.load(open(\"$tmp/cuimp.json\")); s=json.load(open(\"$tmp/cusum.json\")); sys.exit(0 if u[\"settings\"][\"material\"][\"clump_mass\"]==\"union\" and s[\"settings\"][\"material\"][\"clump_mass\"]==\"sum\" and u[\"energy_error\"]<=1e-4 else 1)'"
 printf '[sweep]\nmodel = layer\n[grid]\npoint = 0:1\n[params]\nsample = %s\npoints = 2\nvi = 10\nt-max = 0.002\n' \

@@ -9,6 +9,7 @@
 #    a results.csv byte-identical to the uninterrupted one;
 #  - serial (threads) and MPI (2 ranks) tables are identical (SKIP when
 #    granwave has no MPI or mpirun is missing);
+#  - exact = true runs the exact mode (ledger closure < 1e-4);
 #  - bad values (rb-rm = -1, a missing sample, a flag value that is not
 #    0/1/true/false, point >= points) exit 2 with one line naming the key or
 #    file, and nothing runs (no output directory);
@@ -69,9 +70,12 @@ for k, r in enumerate(rows):
         bad.append("case %d e, e_n vs v_r, v_nr" % k)
     if abs(v["penetration_rm"] - v["penetration"] / rm) > 1e-15 * v["penetration_rm"] or not v["penetration"] > 0:
         bad.append("case %d penetration_rm" % k)
-    if not (0 < v["block_loss_first_contact"] <= 1 and 0 <= v["dissipated_first_contact"] < 0.2):
+    # (E_d of the first contact reaches 0.21 for R_b = 1.5 R_m at x = 0.17 m
+    # in both modes on this sample; 0.5 bounds it well above that)
+    if not (0 < v["block_loss_first_contact"] <= 1 and 0 <= v["dissipated_first_contact"] < 0.5):
         bad.append("case %d first-contact fractions out of range" % k)
-    if not v["energy_error"] < 1e-3:
+    # the default fast mode (verlet): closure below 2e-3 (test_layer_fast)
+    if not v["energy_error"] < 2e-3:
         bad.append("case %d energy closure %g" % (k, v["energy_error"]))
 xs = {round(float(r["x_impact"]), 12) for r in rows}
 if len(xs) != 3:
@@ -165,6 +169,27 @@ bad and print("\n".join(bad))
 sys.exit(1 if bad else 0)
 PY
 done
+
+# exact = true in a sweep: the exact mode (RK4 at 1 us with located events),
+# whose ledger closes to 1e-4 where the fast mode's is ~1e-3 on this sample
+cat >"$tmp/ex.ini" <<CFG
+[sweep]
+model = layer
+[grid]
+point = 0:1
+[params]
+sample = $tmp/S.txt
+points = 2
+t-max = 0.004
+exact = true
+CFG
+"$GW" sweep "$tmp/ex.ini" --out "$tmp/ex" --quiet --jobs 2 &&
+$PY - "$tmp/ex/results.csv" <<'PY' && ok "exact = true sweep: closure < 1e-4 in every row" || ko "exact = true sweep"
+import csv, sys
+rows = list(csv.DictReader(l for l in open(sys.argv[1]) if not l.startswith("#")))
+print([r["energy_error"] for r in rows])
+sys.exit(0 if len(rows) == 2 and all(float(r["energy_error"]) < 1e-4 for r in rows) else 1)
+PY
 
 echo "$passes passed, $fails failed"
 [ $fails -eq 0 ]

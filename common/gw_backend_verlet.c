@@ -1,0 +1,223 @@
+/*
+ * gw_backend_verlet.c: fixed-step velocity Verlet (kick-drift-kick), the
+ * second-order symplectic step of explicit DEM codes, for systems that state
+ * their second-order structure in gw_system.drift.
+ *
+ * The components split into drifts q (dq_i/dt = y[drift[i]]) and kicks p
+ * (every other component: velocities, forces carried as state, integrated
+ * ledgers; their rates come from the rhs). One step of length h, with
+ * f = rhs(t, q, p) kept from the end of the previous step:
+ *     p' = p + (h/2) f_p;   q += h v(p');   f = rhs(t + h, q, p' + (h/2) f_p);
+ *     p = p' + (h/2) f_p (the new f).
+ * For q'' = a(q) this is velocity Verlet: symplectic, second order, one rhs
+ * evaluation per step. Rates that also depend on p (tangential contact forces
+ * carried as state, their velocities, damping, integrated ledgers) are
+ * evaluated at the predicted end-of-step p (the old rates carried over the
+ * second half step) rather than at the half-step p of plain velocity Verlet:
+ * the half-step p lags by h/2, which makes plain velocity Verlet first order
+ * for such rates (measured on the default layer impact: ledger closure 1.6e-2
+ * at dt = 1e-5 s, halving with dt). After each
+ * step gw_system.project (optional) may change y (zero the history of a
+ * contact that opened) and correct the rates f it left with (gw_project_fn):
+ * no extra rhs evaluation.
+ * Roots: g is evaluated at every step end; a component that changed sign is
+ * reported at the end of that step (GW_ROOT, rootsfound as in the other
+ * backends), not located inside it. Components exactly zero are inactive until
+ * they move away from zero. The last step before tout is shortened to land on
+ * tout. Units are the model's.
+ */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "gw_solver_impl.h"
+
+typedef struct verlet_impl {
+    double t;
+    double *y, *f, *g, *pp; /* pp: y at the half step (kick components) */
+    double *kick;       /* 1 for a kick component, 0 for a drift (masks, so the
+                           kicks run over the whole contiguous state) */
+    long *qi, *qv;      /* drift components and their velocities */
+    long nq;
+    signed char *sign;
+    long steps, rhs_evals, root_evals;
+} verlet_impl;
+
+static void verlet_destroy(gw_solver *s)
+{
+    verlet_impl *v = s->impl;
+    if (!v)
+        return;
+    free(v->y);
+    free(v->qi);
+    free(v->sign);
+    free(v);
+    s->impl = NULL;
+}
+
+static int sgn(double x)
+{
+    return (x > 0) - (x < 0);
+}
+
+/* f and the root signs at (t, y): the start of an integration. */
+static int verlet_restart(gw_solver *s)
+{
+    verlet_impl *v = s->impl;
+    int rc = s->sys.rhs(v->t, v->y, v->f, s->sys.params);
+    v->rhs_evals++;
+    if (rc != 0)
+        return rc;
+    if (s->sys.nroots > 0) {
+        v->root_evals++;
+        if ((rc = s->sys.roots(v->t, v->y, v->g, s->sys.params)) != 0)
+            return rc;
+        for (int k = 0; k < s->sys.nroots; k++)
+            v->sign[k] = (signed char)sgn(v->g[k]);
+    }
+    return 0;
+}
+
+static int verlet_create(gw_solver *s, double t0, const double *y0, gw_err *err)
+{
+    if (!(s->p.dt > 0))
+        return gw_err_set(err, GW_EINVAL, "verlet: the fixed step dt must be set (> 0)");
+    if (s->p.method != GW_METHOD_DEFAULT)
+        return gw_err_set(err, GW_EUNSUPPORTED, "verlet: method '%s' not offered",
+                          gw_solver_method_name(s->p.method));
+    if (!s->sys.drift)
+        return gw_err_set(err, GW_EUNSUPPORTED, "verlet: the model gives no second-order "
+                          "structure (gw_system.drift)");
+    const long n = s->sys.dim;
+    for (long i = 0; i < n; i++) {
+        long j = s->sys.drift[i];
+        if (j < -1 || j >= n || (j >= 0 && s->sys.drift[j] >= 0))
+            return gw_err_set(err, GW_EINVAL, "verlet: drift[%ld] = %ld is not a kick component", i, j);
+    }
+    verlet_impl *v = calloc(1, sizeof *v);
+    if (!v)
+        return gw_err_set(err, GW_ENOMEM, "verlet: out of memory");
+    s->impl = v;
+    const size_t nr = (size_t)s->sys.nroots;
+    v->y = malloc((4 * (size_t)n + nr + 1) * sizeof *v->y);
+    v->qi = malloc(2 * (size_t)n * sizeof *v->qi);
+    v->sign = calloc(nr + 1, 1);
+    if (!v->y || !v->qi || !v->sign) {
+        verlet_destroy(s);
+        return gw_err_set(err, GW_ENOMEM, "verlet: out of memory for %ld components", n);
+    }
+    v->f = v->y + n;
+    v->pp = v->y + 2 * n;
+    v->kick = v->y + 3 * n;
+    v->g = v->y + 4 * n;
+    v->qv = v->qi + n;
+    for (long i = 0; i < n; i++) {
+        v->kick[i] = s->sys.drift[i] < 0;
+        if (s->sys.drift[i] >= 0) {
+            v->qi[v->nq] = i;
+            v->qv[v->nq++] = s->sys.drift[i];
+        }
+    }
+    memcpy(v->y, y0, (size_t)n * sizeof *y0);
+    v->t = t0;
+    if (verlet_restart(s) != 0) {
+        verlet_destroy(s);
+        return gw_err_set(err, GW_ESOLVER, "verlet: model callback failed at t0 = %.9g s", t0);
+    }
+    return GW_OK;
+}
+
+/* One kick-drift-kick step of length h. */
+static int verlet_step(gw_solver *s, double h)
+{
+    verlet_impl *v = s->impl;
+    double *restrict y = v->y, *restrict pp = v->pp;
+    const double *restrict f = v->f, *restrict kick = v->kick;
+    const long n = s->sys.dim;
+    const double hh = 0.5 * h;
+    for (long i = 0; i < n; i++) { /* half kick; y holds the predicted end */
+        double d = kick[i] * hh * f[i];
+        pp[i] = y[i] + d;
+        y[i] = pp[i] + d;
+    }
+    for (long k = 0; k < v->nq; k++) /* drift with the half-step velocities */
+        y[v->qi[k]] = pp[v->qi[k]] + h * pp[v->qv[k]];
+    int rc = s->sys.rhs(v->t + h, y, v->f, s->sys.params);
+    v->rhs_evals++;
+    if (rc != 0)
+        return rc;
+    for (long i = 0; i < n; i++) /* blend, not branch: the loop vectorises */
+        y[i] = kick[i] * (pp[i] + hh * f[i]) + (1 - kick[i]) * y[i];
+    v->steps++;
+    return s->sys.project ? s->sys.project(v->t + h, h, y, v->f, s->sys.params) : 0;
+}
+
+static int verlet_advance(gw_solver *s, double tout, double *t, double *y, int *roots)
+{
+    verlet_impl *v = s->impl;
+    const long n = s->sys.dim;
+    const int nr = s->sys.nroots;
+    const double dt = s->p.dt;
+    long taken = 0;
+    int rc = 0, found = 0;
+    while (v->t < tout && !found) {
+        double h = tout - v->t;
+        if (h > dt)
+            h = (h < dt * (1 + 1e-9)) ? h : dt;
+        if (taken++ >= s->p.max_steps) {
+            gw_solver_set_error(s, "verlet: more than %ld steps before t = %.9g s at t = %.9g s",
+                                s->p.max_steps, tout, v->t);
+            rc = GW_ELIMIT;
+            break;
+        }
+        if ((rc = verlet_step(s, h)) != 0)
+            break;
+        v->t = (v->t + h >= tout || tout - (v->t + h) < 1e-9 * dt) ? tout : v->t + h;
+        if (nr > 0) {
+            v->root_evals++;
+            if ((rc = s->sys.roots(v->t, v->y, v->g, s->sys.params)) != 0)
+                break;
+            for (int k = 0; k < nr; k++) {
+                int c = v->sign[k] != 0 && sgn(v->g[k]) != v->sign[k];
+                if (roots)
+                    roots[k] = c ? -v->sign[k] : 0;
+                found |= c;
+                if (c || v->sign[k] == 0)
+                    v->sign[k] = (signed char)sgn(v->g[k]);
+            }
+        }
+    }
+    *t = v->t;
+    memcpy(y, v->y, (size_t)n * sizeof *y);
+    if (rc == GW_ELIMIT)
+        return rc;
+    if (rc != 0) {
+        gw_solver_set_error(s, "verlet: model callback failed (code %d) at t = %.9g s", rc, v->t);
+        return GW_ESOLVER;
+    }
+    return found ? GW_ROOT : GW_OK;
+}
+
+static int verlet_reset(gw_solver *s, double t, const double *y)
+{
+    verlet_impl *v = s->impl;
+    v->t = t;
+    memcpy(v->y, y, (size_t)s->sys.dim * sizeof *y);
+    if (verlet_restart(s) != 0) {
+        gw_solver_set_error(s, "verlet: model callback failed at t = %.9g s", t);
+        return GW_ESOLVER;
+    }
+    return GW_OK;
+}
+
+static void verlet_stats(const gw_solver *s, gw_solver_stats *st)
+{
+    const verlet_impl *v = s->impl;
+    st->steps = v->steps;
+    st->rhs_evals = v->rhs_evals;
+    st->root_evals = v->root_evals;
+}
+
+static const gw_solver_type verlet_type = {"verlet", verlet_create, verlet_advance, verlet_reset,
+                                           verlet_stats, verlet_destroy};
+const gw_solver_type *const gw_solver_verlet = &verlet_type;

@@ -19,27 +19,28 @@ LAMMPS 29 Sep 2021 (Debian `lammps`), pair_style granular, for R_eff =
 R_a R_b / (R_a + R_b) (pair_granular doc page):
     hertz/material E eta_n0 nu:  F_n = (4/3) E_eff sqrt(R_eff) u^(3/2),
         E_eff = 1 / ((1 - nu_a^2)/E_a + (1 - nu_b^2)/E_b) = E / (2 (1 - nu^2))
-    tangential mindlin/force NULL x_gamma_t mu: incremental tangential force
-        dF_t = -k_t a dxi, a = sqrt(R_eff u), k_t = 8 G_eff,
-        G_eff = 1 / (2 (2 - nu_a)(1 + nu_a)/E_a + ...) = E / (4 (2 - nu)(1 + nu)),
+    tangential mindlin/force k_t x_gamma_t mu: incremental tangential force
+        dF_t = -k_t a dxi, a = sqrt(R_eff u) (k_t NULL: 8 G_eff,
+        G_eff = E / (4 (2 - nu)(1 + nu)) for two equal materials),
         capped at mu |F_n| (the stored force is rescaled onto the cap).
-Two discs: R_p = 4 R_eff, so granwave's K_n = (4 sqrt(2)/3) G / (1 - nu) sqrt(R_eff)
-and K_t = 4 sqrt(2) G sqrt(R_eff u) / (2 - nu). Both match with one value,
-    E_pair = 2 sqrt(2) (1 + nu) G,  nu_LAMMPS = nu
-(E_eff = sqrt(2) G / (1 - nu), 8 G_eff = 4 sqrt(2) G / (2 - nu)); `mindlin/force`
-(force history, incremental) is granwave's incremental law; `mindlin` would
-store a displacement and give F_t = k_t a xi, a different (path-independent)
-law when a changes.
-Walls (fix wall/gran granular, a flat wall: R_eff = R_a = R_p): measured
-here, not taken from the doc page. With hertz/material the wall uses
-E_eff = E / (2 (1 - nu)) (not (1 - nu^2): a disc dropped on the wall with
-E = 1.1314e11 has a contact time matching E/(2(1 - nu)) at nu = 0.25 and 0.4,
-to 1e-4). granwave's wall K_n = (2 sqrt(2)/3) G / (1 - nu) sqrt(R_a) then needs
-    E_wall = sqrt(2) G,
-and the wall's Mindlin law (k_t from E_wall, nu as for the pair, which gives
-k_t = 4 E_wall / ((2 - nu)(1 + nu)) ... whatever LAMMPS does) is checked by
---verify below (tangential oscillation of a disc resting on the wall) rather
-than assumed. See bench/README_layer_peer.md for the numbers.
+Two discs: R_p = 2 R_eff, so granwave's K_n = (4/3) G / (1 - nu) sqrt(R_eff)
+and K_t = 4 G sqrt(R_eff u) / (2 - nu). They match with
+    E_pair = 2 (1 + nu) G (the material's true Young modulus, 1e11 Pa),
+    nu_LAMMPS = nu,  k_t,pair = 4 G / (2 - nu)
+(E_eff = G / (1 - nu); k_t,pair is also what NULL gives from E_pair).
+`mindlin/force` (force history, incremented) is granwave's incremental law;
+`mindlin` would store a displacement and give F_t = k_t a xi, which differs
+when a changes during the contact.
+Walls (fix wall/gran granular, a flat wall: R_eff = R_a = R_p): measured,
+not taken from the doc page. With hertz/material this LAMMPS version gives
+the wall E_eff = E / (2 (1 - nu)) (not (1 - nu^2)): a disc dropped on the wall
+with E = 1.1314e11 Pa had contact times matching E/(2 (1 - nu)) to 1e-4 at
+nu = 0.25 and at nu = 0.4. granwave's wall K_n = (2 sqrt(2)/3) G / (1 - nu)
+sqrt(R_a) then needs
+    E_wall = sqrt(2) G = 5.657e10 Pa,  k_t,wall = 2 sqrt(2) G / (2 - nu),
+the latter given explicitly: with NULL the wall's tangential stiffness came
+out 2.09 times below granwave's (oscillation period 9.895 ms against
+6.845 ms in the --verify test). --verify checks all four numbers.
 Disc masses pi r^2 rho (unit thickness; `--mass-law disc`, granwave's default,
 read from the sample's mass_law) with I = m r^2 / 2 (`fix nve/sphere disc`);
 sphere masses 4/3 pi r^3 rho with I = 2/5 m r^2 (`fix nve/sphere`) when the

@@ -42,7 +42,7 @@ fi
 S=$W/sample300.txt
 
 echo "# bench_layer_peer: $(date -u +%Y-%m-%dT%H:%MZ) on $(hostname), $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')"
-echo "# granwave $("$GW" version | cut -d' ' -f2) ($B), $("$LMP" -h | grep -m1 'Large-scale' | sed 's/.* - \(.*\)$/LAMMPS \1/')"
+echo "# granwave $("$GW" version | cut -d' ' -f2) ($B), LAMMPS $("$LMP" -h | sed -n 's/.*Simulator - \(.*\)$/\1/p' | head -1)"
 echo "# GW_FLAGS='$GW_FLAGS' REPS=$REPS; load average at start: $(cut -d' ' -f1-3 /proc/loadavg)"
 
 # a. sample

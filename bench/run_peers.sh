@@ -1,5 +1,6 @@
 #!/bin/bash
 # bench/run_peers.sh [BUILD_DIR]: time to solution of the 40-bead Falcon column
+# (and, last, the 2D layer against LAMMPS: bench_layer_peer.sh)
 # (v_imp = 0.3 m/s, steel: k, K, m of gw_chain_params_default) at 1e-6 relative
 # accuracy on F_max and tau_N, for granwave's backends (bench_tts) and the peers
 # that are installed: SciPy solve_ivp (DOP853, LSODA; Debian python3-scipy) and
@@ -67,3 +68,11 @@ awk -v acc="$ACC" '
         printf "%-14s %-14s %11.3f %16.3g %10.1e %10.1e\n", name[i], set[i], ms[i], best / ms[i], ef[i], et[i]
       }
     }' "$OUT/table.txt"
+
+echo
+echo "== the 2D layer: granwave layer-impact against LAMMPS (bench_layer_peer.sh)"
+if [ -n "$LMP" ]; then
+    LMP="$LMP" REPS="$REPS" bash bench/bench_layer_peer.sh "$B"
+else
+    echo "skipped: LAMMPS binary (lmp or lmp_serial) not found (Debian package lammps)"
+fi

@@ -299,7 +299,7 @@ static cJSON *impact_json(const impact_cli *c, const gw_layer_impact_result *r,
     cJSON_AddNumberToObject(so, "rtol", sp->rtol);
     cJSON_AddNumberToObject(so, "atol", sp->atol);
     cJSON_AddNumberToObject(so, "dt", r->dt > 0 ? r->dt : sp->dt);
-    cJSON_AddBoolToObject(so, "exact", c->exact);
+    cJSON_AddBoolToObject(so, "exact", c->type != gw_solver_verlet); /* events located */
     return o;
 }
 

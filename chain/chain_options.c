@@ -1,13 +1,70 @@
 /*
  * chain_options.c: shared options of the chain commands (see chain_options.h).
  * Coefficients come from the materials (F.12, F.3) unless given directly:
- * --k and --kwall in N/m^1.5, --mass in kg.
+ * --k and --kwall in N/m^1.5, --mass in kg. One validation path for every chain
+ * command: impact speeds (a single --vimp, a --vimp list, --heights in mm) in
+ * (0, GW_CHAIN_VIMP_MAX] m/s, tolerances in [GW_TOL_MIN, GW_TOL_MAX], and options
+ * that would have no effect (--gamma without --damping kk, --alpha without
+ * --damping hc, either with --restitution) refused.
  */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
-#include "chain_options.h"
+#include "chain_falcon.h" /* G_EARTH: falcon's --heights are drop heights in mm */
+
+/* Every impact speed of the command: --vimp (one value, or a list for falcon and
+ * wavespeed) and falcon's --heights (mm, v = sqrt(2 g h)), checked in the list
+ * parser itself so that chain, falcon, wavespeed and sweeps agree. */
+static int check_speeds(const gw_opt *opts, const char *cmd, gw_err *err)
+{
+    char name[96];
+    const gw_opt *o = gw_cli_find(opts, "vimp");
+    if (o && o->kind == GW_OPT_STRING && *(const char *const *)o->dest) {
+        double *v = NULL;
+        int nv = 0;
+        snprintf(name, sizeof name, "%s --vimp", cmd);
+        int rc = gw_parse_double_list_in(*(const char *const *)o->dest, name, 0, GW_CHAIN_VIMP_MAX, 1,
+                                         &v, &nv, err);
+        free(v);
+        if (rc != GW_OK)
+            return rc;
+    }
+    o = gw_cli_find(opts, "heights");
+    if (o && o->kind == GW_OPT_STRING && *(const char *const *)o->dest &&
+        strcmp(*(const char *const *)o->dest, "none") != 0) {
+        double *h = NULL;
+        int nh = 0;
+        double hmax = GW_CHAIN_VIMP_MAX * GW_CHAIN_VIMP_MAX / (2 * G_EARTH * 1e-3);
+        snprintf(name, sizeof name, "%s --heights", cmd);
+        int rc = gw_parse_double_list_in(*(const char *const *)o->dest, name, 0, hmax, 1, &h, &nh, err);
+        free(h);
+        if (rc != GW_OK)
+            return rc;
+    }
+    return GW_OK;
+}
+
+/* An option given on the command line that the chosen model would ignore. */
+static int check_no_effect(const chain_cli *c, const gw_opt *opts, const char *cmd, gw_err *err)
+{
+    int restitution = gw_cli_find(opts, "restitution")->seen;
+    if (gw_cli_find(opts, "gamma")->seen) {
+        if (c->params.damping != GW_DAMP_KUWABARA_KONO)
+            return gw_err_set(err, GW_EINVAL, "%s --gamma: has no effect without --damping kk", cmd);
+        if (restitution)
+            return gw_err_set(err, GW_EINVAL, "%s --gamma: --restitution sets gamma; give one of them", cmd);
+    }
+    if (gw_cli_find(opts, "alpha")->seen) {
+        if (c->params.damping != GW_DAMP_HUNT_CROSSLEY)
+            return gw_err_set(err, GW_EINVAL, "%s --alpha: has no effect without --damping hc", cmd);
+        if (restitution)
+            return gw_err_set(err, GW_EINVAL, "%s --alpha: --restitution sets alpha; give one of them", cmd);
+    }
+    if (gw_cli_find(opts, "restitution-v")->seen && !restitution)
+        return gw_err_set(err, GW_EINVAL, "%s --restitution-v: has no effect without --restitution", cmd);
+    return GW_OK;
+}
 
 #define OPT_D(nm, dst, mv, hl, lo_, hi_, open_)                                          \
     (gw_opt) { .name = nm, .kind = GW_OPT_DOUBLE, .dest = dst, .metavar = mv, .help = hl, \
@@ -47,8 +104,8 @@ void chain_cli_options(chain_cli *c, gw_opt *o)
     o[i++] = OPT_D("restitution-v", &c->restitution_v, "V", "impact velocity of that calibration, m/s [v_imp]", 0, 1e3, 1);
     o[i++] = OPT_S("solver", &c->solver, "NAME", "cvode, arkode or rk4 [cvode]");
     o[i++] = OPT_S("method", &c->method, "NAME", "cvode: bdf|adams; arkode: erk|dirk|imex [bdf / erk]");
-    o[i++] = OPT_D("rtol", &c->rtol, "R", "relative tolerance [1e-12]", 0, 1, 1);
-    o[i++] = OPT_D("atol", &c->atol, "A", "absolute tolerance in units of the overlap and velocity scales [1e-12]", 0, INFINITY, 1);
+    o[i++] = OPT_D("rtol", &c->rtol, "R", "relative tolerance [1e-12]", GW_TOL_MIN, GW_TOL_MAX, 0);
+    o[i++] = OPT_D("atol", &c->atol, "A", "absolute tolerance in units of the overlap and velocity scales [1e-12]", GW_TOL_MIN, GW_TOL_MAX, 0);
     o[i++] = OPT_D("dt", &c->dt, "DT", "RK4 step, s [T_c/400]; initial step for cvode/arkode", 0, 1, 0);
     o[i++] = OPT_D("dt-max", &c->dt_max, "DT", "largest step, s [unlimited]", 0, 1, 0);
     o[i++] = (gw_opt){.name = "max-steps", .kind = GW_OPT_LONG, .dest = &c->max_steps, .metavar = "N",
@@ -62,6 +119,12 @@ void chain_cli_options(chain_cli *c, gw_opt *o)
 
 int chain_cli_resolve(chain_cli *c, const gw_opt *opts, const char *cmd, gw_err *err)
 {
+    int src = check_speeds(opts, cmd, err);
+    if (src != GW_OK)
+        return src;
+    if (!(c->params.v_imp > 0 && c->params.v_imp <= GW_CHAIN_VIMP_MAX))
+        return gw_err_set(err, GW_EINVAL, "%s --vimp: %g is outside (0, %g]", cmd, c->params.v_imp,
+                          GW_CHAIN_VIMP_MAX);
     const gw_material *bm = gw_material_find(c->material);
     if (!bm || isinf(bm->density))
         return gw_err_set(err, GW_EINVAL, "%s --material: unknown or unusable bead material '%s' (known: %s; not rigid)",
@@ -135,6 +198,13 @@ int chain_cli_resolve(chain_cli *c, const gw_opt *opts, const char *cmd, gw_err 
         return gw_err_set(err, GW_EINVAL, "%s --damping: unknown model '%s' (none, kk, hc)", cmd, c->damping);
     p->gamma = c->gamma;
     p->alpha = c->alpha;
+    if ((src = check_no_effect(c, opts, cmd, err)) != GW_OK)
+        return src;
+    if ((src = gw_solver_tolerances_check(c->rtol, c->atol, "--rtol", "--atol", err)) != GW_OK) {
+        char tmp[sizeof err->msg];
+        snprintf(tmp, sizeof tmp, "%s", err->msg);
+        return gw_err_set(err, src, "%s %s", cmd, tmp);
+    }
 
     gw_chain_run_opts *r = &c->run;
     *r = gw_chain_run_opts_default();
@@ -182,6 +252,11 @@ int chain_cli_resolve(chain_cli *c, const gw_opt *opts, const char *cmd, gw_err 
         char tmp[sizeof err->msg];
         snprintf(tmp, sizeof tmp, "%s", err->msg);
         return gw_err_set(err, rc, "%s: %s", cmd, tmp);
+    }
+    if (c->out) { /* before any work: a run that cannot write its results never starts */
+        char name[96];
+        snprintf(name, sizeof name, "%s --out", cmd);
+        return gw_out_check(c->out, name, err);
     }
     return GW_OK;
 }

@@ -141,8 +141,8 @@ int gw_input_read(const char *path, const char *what, size_t max, char **out, si
  * gw_out_check: dir is an existing writable directory, or does not exist and its
  * nearest existing ancestor is a writable directory (it creates nothing; the
  * caller makes the directory with gw_mkdir_p when it has something to write).
- * gw_out_file_check: path is absent or a regular file, in a directory that passes
- * gw_out_check. GW_EINVAL with one line naming what. */
+ * gw_out_file_check: path is absent or a regular file, in an existing writable
+ * directory. GW_EINVAL with one line naming what. */
 int gw_out_check(const char *dir, const char *what, gw_err *err);
 int gw_out_file_check(const char *path, const char *what, gw_err *err);
 

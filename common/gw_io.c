@@ -302,5 +302,8 @@ int gw_out_file_check(const char *path, const char *what, gw_err *err)
         dir[1] = '\0';
     else
         *slash = '\0';
+    /* a file is written into an existing directory (nothing makes its parents) */
+    if (stat(dir, &st) != 0)
+        return gw_err_set(err, GW_EINVAL, "%s: directory '%s' of '%s': %s", what, dir, path, strerror(errno));
     return gw_out_check(dir, what, err);
 }

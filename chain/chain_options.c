@@ -13,6 +13,13 @@
 
 #include "chain_falcon.h" /* G_EARTH: falcon's --heights are drop heights in mm */
 
+/* Physical ranges of the option table (beyond them a run overflows its step
+ * count or never ends): the stiffest real contact (diamond on diamond, R = 1 m)
+ * has k ~ 1e12 N/m^1.5, the softest sheet of Table 2 K_eff ~ 1e6; the beads are
+ * at most 1 m and 1 t. */
+#define GW_CHAIN_K_MIN 1e3
+#define GW_CHAIN_K_MAX 1e14
+
 /* Every impact speed of the command: --vimp (one value, or a list for falcon and
  * wavespeed) and falcon's --heights (mm, v = sqrt(2 g h)), checked in the list
  * parser itself so that chain, falcon, wavespeed and sweeps agree. */
@@ -89,13 +96,13 @@ void chain_cli_options(chain_cli *c, gw_opt *o)
     c->max_steps = sp.max_steps;
     int i = 0;
     o[i++] = OPT_S("material", &c->material, "NAME", "bead material (steel, rigid, brass, aluminium, glass, pmma, pvc) [steel]");
-    o[i++] = OPT_D("radius", &c->radius, "R", "bead radius, m [4e-3]", 0, INFINITY, 1);
+    o[i++] = OPT_D("radius", &c->radius, "R", "bead radius, m, in (0, 1] [4e-3]", 0, 1, 1);
     o[i++] = OPT_S("wall-material", &c->wall_material, "NAME", "wall material (a half-space) [steel]");
     o[i++] = OPT_S("sheet", &c->sheet, "NAME", "wall: a sheet of the paper's Table 2 with its fitted K_eff (none, brass, tape, pvc, pmma, cardboard2, beech, cardboard1, rubber)");
     o[i++] = OPT_S("radii", &c->radii, "R,R..", "per-bead radii, m, bead 1 first (masses and contact k from the material)");
-    o[i++] = OPT_D("k", &c->k, "K", "bead-bead Hertz coefficient, N/m^1.5 [from material, F.12]", 0, INFINITY, 1);
-    o[i++] = OPT_D("kwall", &c->kwall, "K", "bead-wall Hertz coefficient, N/m^1.5 [from materials, F.3]", 0, INFINITY, 1);
-    o[i++] = OPT_D("mass", &c->mass, "M", "bead mass, kg [4/3 pi R^3 rho]", 0, INFINITY, 1);
+    o[i++] = OPT_D("k", &c->k, "K", "bead-bead Hertz coefficient, N/m^1.5, in [1e3, 1e14] [from material, F.12]", GW_CHAIN_K_MIN, GW_CHAIN_K_MAX, 0);
+    o[i++] = OPT_D("kwall", &c->kwall, "K", "bead-wall Hertz coefficient, N/m^1.5, in [1e3, 1e14] [from materials, F.3]", GW_CHAIN_K_MIN, GW_CHAIN_K_MAX, 0);
+    o[i++] = OPT_D("mass", &c->mass, "M", "bead mass, kg, in (0, 1e3] [4/3 pi R^3 rho]", 0, 1e3, 1);
     o[i++] = OPT_D("gravity", &c->gravity, "G", "gravity toward the wall, m/s^2 [0 = off]", 0, 1e4, 0);
     o[i++] = OPT_S("damping", &c->damping, "MODEL", "none, kk (Kuwabara-Kono) or hc (Hunt-Crossley) [none]");
     o[i++] = OPT_D("gamma", &c->gamma, "G", "Kuwabara-Kono constant of bead contacts, N s/m^1.5 [0]", 0, INFINITY, 0);
@@ -157,7 +164,7 @@ int chain_cli_resolve(chain_cli *c, const gw_opt *opts, const char *cmd, gw_err 
     if (c->radii) {
         int nr = 0;
         chain_cli_free(c);
-        if (gw_parse_double_list(c->radii, "--radii", &c->radii_v, &nr, err) != GW_OK) {
+        if (gw_parse_double_list_in(c->radii, "--radii", 0, 1, 1, &c->radii_v, &nr, err) != GW_OK) {
             char tmp[sizeof err->msg];
             snprintf(tmp, sizeof tmp, "%s", err->msg);
             return gw_err_set(err, GW_EINVAL, "%s %s", cmd, tmp);

@@ -73,8 +73,11 @@ int gw_afile_commit(gw_afile *f, gw_err *err)
      * error flag was set by an earlier fwrite reports EIO, never "Success" */
     errno = 0;
     int bad = 0, saved = 0;
-    if (ferror(f->fp))
-        bad = 1, saved = EIO;
+    if (ferror(f->fp)) { /* an earlier write failed: flushing again gives its errno */
+        bad = 1;
+        fflush(f->fp);
+        saved = errno ? errno : EIO;
+    }
     else if (fflush(f->fp) != 0 || fsync(fileno(f->fp)) != 0)
         bad = 1, saved = errno ? errno : EIO;
     errno = 0;

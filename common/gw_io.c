@@ -170,16 +170,16 @@ int gw_input_open(const char *path, const char *what, FILE **out, gw_err *err)
     /* O_NONBLOCK: opening a FIFO without a writer would block until one comes */
     int fd = open(path, O_RDONLY | O_NONBLOCK | O_NOCTTY);
     if (fd < 0)
-        return gw_err_set(err, GW_EIO, "%s: cannot open '%s': %s", what, path, strerror(errno));
+        return gw_err_set(err, GW_EIO, "%s: %s: cannot open: %s", what, path, strerror(errno));
     struct stat st;
     if (fstat(fd, &st) != 0) {
         int e = errno;
         close(fd);
-        return gw_err_set(err, GW_EIO, "%s: cannot read '%s': %s", what, path, strerror(e));
+        return gw_err_set(err, GW_EIO, "%s: %s: cannot read: %s", what, path, strerror(e));
     }
     if (!S_ISREG(st.st_mode)) {
         close(fd);
-        return gw_err_set(err, GW_EINVAL, "%s: '%s' is %s; give a regular file", what, path,
+        return gw_err_set(err, GW_EINVAL, "%s: %s is %s; give a regular file", what, path,
                           file_kind(st.st_mode));
     }
     int fl = fcntl(fd, F_GETFL);
@@ -189,7 +189,7 @@ int gw_input_open(const char *path, const char *what, FILE **out, gw_err *err)
     if (!fp) {
         int e = errno;
         close(fd);
-        return gw_err_set(err, GW_EIO, "%s: cannot open '%s': %s", what, path, strerror(e));
+        return gw_err_set(err, GW_EIO, "%s: %s: cannot open: %s", what, path, strerror(e));
     }
     *out = fp;
     return GW_OK;

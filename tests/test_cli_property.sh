@@ -28,8 +28,8 @@
 #     runs again in the sanitizer build, see setup.sh).
 # KNOWN lists cases that fail because of code another change owns (layer CLI and
 # layer model files); each is printed as KNOWN, not counted, and listed in the
-# hardening report with the fix. Total: ~900 cases, about a minute (two to three
-# in the sanitizer build).
+# hardening report with the fix. Total: ~1260 cases, one background job per
+# command: about 1.5 min (a few in the sanitizer build).
 #
 # A longer run: GW_PROPERTY_VALUES="nan inf ... 1e-3 1e3 5e-324" overrides the
 # value list; GW_PROPERTY_CMDS="chain falcon" restricts the commands.
@@ -68,6 +68,7 @@ MEMLIM="ulimit -v 4194304;"
 bash -c "$MEMLIM \"$GW\" version" >/dev/null 2>&1 || MEMLIM=""
 
 # fixtures: a small sample, a results table, a sweep config
+fix=$tmp
 "$GW" layer-make --n 20 --width-rm 8 --out "$tmp/s20.txt" >/dev/null 2>&1 || { echo "FAIL: fixture layer-make"; exit 1; }
 cp "$SRC/data/measured/layer_walls/results.csv" "$tmp/results.csv"
 printf '[sweep]\nmodel = chain\n[grid]\nn = 1:2\n[params]\nsolver = rk4\n' >"$tmp/sweep.ini"
@@ -79,10 +80,10 @@ base_args() { # cmd outdir -> the short valid run of cmd
     wavespeed) echo "--n 6:8 --vimp 0.3 --quiet --jobs 1 --out $2";;
     softwall) echo "--n 1:3 --quiet --jobs 1 --out $2";;
     dispersion) echo "--n 16 --t-samples 64 --out $2";;
-    sweep) echo "$tmp/sweep.ini --quiet --out $2";;
+    sweep) echo "$fix/sweep.ini --quiet --out $2";;
     layer-make) echo "--n 10 --width-rm 6 --t-max 0.05 --out $2/sample.txt";;
-    layer-impact) echo "--sample $tmp/s20.txt --t-max 0.001 --out $2";;
-    layer-stats) echo "$tmp/results.csv --out $2";;
+    layer-impact) echo "--sample $fix/s20.txt --t-max 0.001 --out $2";;
+    layer-stats) echo "$fix/results.csv --out $2";;
     esac
 }
 
@@ -92,8 +93,10 @@ numeric_flags() { # cmd -> "flag metavar" lines
 }
 
 t0=$(date +%s)
-ncase=0
-for cmd in $CMDS; do
+# one command per background job (the cases of a command run in sequence)
+run_cmd() {
+    local cmd=$1 ncase=0 passes=0 fails=0 known=0
+    tmp=$tmp/$cmd; mkdir -p "$tmp"
     help=$("$GW" "$cmd" --help)
     while read -r flag mv; do
         [ -n "$flag" ] || continue
@@ -155,6 +158,18 @@ for cmd in $CMDS; do
             rm -rf "$out"
         done
     done < <(numeric_flags "$cmd")
+    echo "$ncase $passes $fails $known" >"$tmp/counts"
+}
+base=$tmp
+for cmd in $CMDS; do
+    run_cmd "$cmd" >"$base/$cmd.log" 2>&1 &
+done
+wait
+ncase=0
+for cmd in $CMDS; do
+    cat "$base/$cmd.log"
+    read -r c p f k <"$base/$cmd/counts" || { echo "FAIL: $cmd: no result"; fails=$((fails+1)); continue; }
+    ncase=$((ncase+c)); passes=$((passes+p)); fails=$((fails+f)); known=$((known+k))
 done
 echo "$ncase cases, $passes passed, $fails failed, $known known, $(( $(date +%s) - t0 )) s"
 [ $fails -eq 0 ]

@@ -55,7 +55,8 @@ test)
     build -DGW_WERROR=ON
     (cd "$BUILD_DIR" && ctest --output-on-failure -j 2)
     # the C unit tests (label "unit") again under AddressSanitizer + UBSan,
-    # leaks included, plus the program's input-handling test
+    # leaks included, plus the program's input-handling tests (the CLI refusals
+    # and the CLI property test: no sanitizer report on any hostile value)
     echo "setup: sanitizer build ($BUILD_DIR-asan)"
     BUILD_DIR="$BUILD_DIR-asan" build -DGW_WERROR=ON -DGW_SANITIZE=ON -DCMAKE_BUILD_TYPE=Debug
     src=$PWD
@@ -63,7 +64,7 @@ test)
     export UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1
     export LSAN_OPTIONS="suppressions=$src/tests/lsan.supp:print_suppressions=0"
     ctest --output-on-failure -j 2 -L unit
-    ctest --output-on-failure -R test_chain_cli
+    ctest --output-on-failure -R 'test_chain_cli|test_cli_refusals|test_cli_property'
     ;;
 build)
     install_missing

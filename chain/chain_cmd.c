@@ -82,7 +82,7 @@ int gw_cmd_chain(int argc, char **argv)
                                      .help = "number of beads [1]", .lo = 1, .hi = 50000000};
     opts[CHAIN_CLI_NOPTS + 1] = (gw_opt){.name = "vimp", .kind = GW_OPT_DOUBLE, .dest = &vimp,
                                          .metavar = "V", .help = "impact velocity, m/s [0.3]",
-                                         .lo = 0, .hi = 1e3, .open_lo = 1};
+                                         .lo = 0, .hi = GW_CHAIN_VIMP_MAX, .open_lo = 1};
     opts[CHAIN_CLI_NOPTS + 2] = (gw_opt){0};
     int done = chain_cli_parse("chain", "granwave chain [options]", chain_summary, opts, argc, argv);
     if (done >= 0)
@@ -111,7 +111,7 @@ int gw_cmd_chain(int argc, char **argv)
     if (rc != GW_OK) {
         fprintf(stderr, "granwave chain: %s\n", err.msg);
         code = rc == GW_EINVAL ? 2 : 1;
-        if (c.out) { /* keep what was computed: the trace up to the failure and its state */
+        if (c.out && code == 1) { /* keep what was computed: the trace up to the failure and its state */
             char *hdr = chain_cli_header(&c, "chain", argc, argv);
             char path[4096];
             gw_err werr = {{0}};

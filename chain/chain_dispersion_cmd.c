@@ -1,12 +1,17 @@
 /*
  * chain_dispersion_cmd.c: `granwave dispersion`, the dispersion study of
  * chain_dispersion.c (physics.md 1.6) and, with --column-n, the wall-force
- * spectrum of a column (chain_spectrum.c). SI units; JSON, CSV and FFTW wisdom.
+ * spectrum of a column (chain_spectrum.c). SI units; JSON, CSV and FFTW wisdom
+ * (--wisdom: read only from a regular file that holds FFTW wisdom, which is then
+ * the only kind of file it overwrites; checked with --out before any work).
  */
+#define _POSIX_C_SOURCE 200809L
+#include <errno.h>
 #include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 #include <fftw3.h>
 
@@ -68,8 +73,8 @@ static void disp_options(disp_cli *c, gw_opt *o)
     o[i++] = DOPT_D("min-bins", &c->min_bins, "B", "ridge resolved from B frequency bins up [8]", 1, 1e9, 0);
     o[i++] = DOPT_S("solver", &c->solver, "NAME", "rk4, cvode or arkode [rk4]");
     o[i++] = DOPT_S("method", &c->method, "NAME", "cvode: adams|bdf; arkode: erk|dirk (bdf, dirk: fixed ends) [adams / erk]");
-    o[i++] = DOPT_D("rtol", &c->rtol, "R", "relative tolerance, cvode/arkode [1e-10]", 0, 1, 1);
-    o[i++] = DOPT_D("atol", &c->atol, "A", "absolute tolerance in units of the perturbation scales [1e-10]", 0, INFINITY, 1);
+    o[i++] = DOPT_D("rtol", &c->rtol, "R", "relative tolerance, cvode/arkode [1e-10]", GW_TOL_MIN, GW_TOL_MAX, 0);
+    o[i++] = DOPT_D("atol", &c->atol, "A", "absolute tolerance in units of the perturbation scales [1e-10]", GW_TOL_MIN, GW_TOL_MAX, 0);
     o[i++] = (gw_opt){.name = "fftw-measure", .kind = GW_OPT_FLAG, .dest = &c->measure,
                       .help = "plan the FFTs with FFTW_MEASURE (default FFTW_ESTIMATE)"};
     o[i++] = DOPT_S("wisdom", &c->wisdom, "FILE", "import FFTW wisdom from FILE if present, export it after the run");
@@ -98,7 +103,7 @@ static int disp_solver(const disp_cli *c, const gw_solver_type **type, gw_solver
     sp->method = m;
     sp->rtol = c->rtol;
     sp->atol = c->atol;
-    return GW_OK;
+    return gw_solver_tolerances_check(sp->rtol, sp->atol, "dispersion --rtol", "dispersion --atol", err);
 }
 
 static cJSON *disp_settings_json(const disp_cli *c, const gw_chain_disp_params *p,
@@ -377,6 +382,25 @@ static int disp_column(const disp_cli *c, const gw_opt *opts, int argc, char **a
     return code;
 }
 
+/* Wisdom is read through gw_input_read (a regular file, at most 64 MiB: a FIFO or
+ * /dev/zero is refused, never read forever). An absent file is planned afresh
+ * and created at the end; an existing file must be FFTW wisdom, since it is
+ * overwritten at the end of the run. */
+static int disp_import_wisdom(const char *path, gw_err *err)
+{
+    struct stat st;
+    if (stat(path, &st) != 0 && errno == ENOENT)
+        return gw_out_file_check(path, "dispersion --wisdom", err);
+    char *text = NULL;
+    int rc = gw_input_read(path, "dispersion --wisdom", (size_t)64 << 20, &text, NULL, err);
+    if (rc != GW_OK)
+        return GW_EINVAL;
+    if (strncmp(text, "(fftw-3", 7) != 0 || !fftw_import_wisdom_from_string(text))
+        rc = gw_err_set(err, GW_EINVAL, "dispersion --wisdom: '%s' is not FFTW wisdom; refusing to overwrite it", path);
+    free(text);
+    return rc == GW_OK ? gw_out_file_check(path, "dispersion --wisdom", err) : rc;
+}
+
 static void disp_export_wisdom(const char *path)
 {
     gw_afile f;
@@ -404,8 +428,10 @@ int gw_cmd_dispersion(int argc, char **argv)
         gw_cli_help(stdout, "dispersion", "granwave dispersion [options]", disp_summary, opts);
         return 0;
     }
-    if (c.wisdom)
-        fftw_import_wisdom_from_filename(c.wisdom); /* absent file: plan afresh */
+    /* inputs and output locations before any work: a refused run writes nothing */
+    if ((c.out && gw_out_check(c.out, "dispersion --out", &err) != GW_OK) ||
+        (c.wisdom && disp_import_wisdom(c.wisdom, &err) != GW_OK))
+        return chain_cli_fail(err.msg);
     if (c.column_n > 0) {
         int code = disp_column(&c, opts, argc, argv);
         if (c.wisdom && code == 0)

@@ -1,13 +1,77 @@
 /*
  * chain_options.c: shared options of the chain commands (see chain_options.h).
  * Coefficients come from the materials (F.12, F.3) unless given directly:
- * --k and --kwall in N/m^1.5, --mass in kg.
+ * --k and --kwall in N/m^1.5, --mass in kg. One validation path for every chain
+ * command: impact speeds (a single --vimp, a --vimp list, --heights in mm) in
+ * (0, GW_CHAIN_VIMP_MAX] m/s, tolerances in [GW_TOL_MIN, GW_TOL_MAX], and options
+ * that would have no effect (--gamma without --damping kk, --alpha without
+ * --damping hc, either with --restitution) refused.
  */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
-#include "chain_options.h"
+#include "chain_falcon.h" /* G_EARTH: falcon's --heights are drop heights in mm */
+
+/* Physical ranges of the option table (beyond them a run overflows its step
+ * count or never ends): the stiffest real contact (diamond on diamond, R = 1 m)
+ * has k ~ 1e12 N/m^1.5, the softest sheet of Table 2 K_eff ~ 1e6; the beads are
+ * at most 1 m and 1 t. */
+#define GW_CHAIN_K_MIN 1e3
+#define GW_CHAIN_K_MAX 1e14
+
+/* Every impact speed of the command: --vimp (one value, or a list for falcon and
+ * wavespeed) and falcon's --heights (mm, v = sqrt(2 g h)), checked in the list
+ * parser itself so that chain, falcon, wavespeed and sweeps agree. */
+static int check_speeds(const gw_opt *opts, const char *cmd, gw_err *err)
+{
+    char name[96];
+    const gw_opt *o = gw_cli_find(opts, "vimp");
+    if (o && o->kind == GW_OPT_STRING && *(const char *const *)o->dest) {
+        double *v = NULL;
+        int nv = 0;
+        snprintf(name, sizeof name, "%s --vimp", cmd);
+        int rc = gw_parse_double_list_in(*(const char *const *)o->dest, name, 0, GW_CHAIN_VIMP_MAX, 1,
+                                         &v, &nv, err);
+        free(v);
+        if (rc != GW_OK)
+            return rc;
+    }
+    o = gw_cli_find(opts, "heights");
+    if (o && o->kind == GW_OPT_STRING && *(const char *const *)o->dest &&
+        strcmp(*(const char *const *)o->dest, "none") != 0) {
+        double *h = NULL;
+        int nh = 0;
+        double hmax = GW_CHAIN_VIMP_MAX * GW_CHAIN_VIMP_MAX / (2 * G_EARTH * 1e-3);
+        snprintf(name, sizeof name, "%s --heights", cmd);
+        int rc = gw_parse_double_list_in(*(const char *const *)o->dest, name, 0, hmax, 1, &h, &nh, err);
+        free(h);
+        if (rc != GW_OK)
+            return rc;
+    }
+    return GW_OK;
+}
+
+/* An option given on the command line that the chosen model would ignore. */
+static int check_no_effect(const chain_cli *c, const gw_opt *opts, const char *cmd, gw_err *err)
+{
+    int restitution = gw_cli_find(opts, "restitution")->seen;
+    if (gw_cli_find(opts, "gamma")->seen) {
+        if (c->params.damping != GW_DAMP_KUWABARA_KONO)
+            return gw_err_set(err, GW_EINVAL, "%s --gamma: has no effect without --damping kk", cmd);
+        if (restitution)
+            return gw_err_set(err, GW_EINVAL, "%s --gamma: --restitution sets gamma; give one of them", cmd);
+    }
+    if (gw_cli_find(opts, "alpha")->seen) {
+        if (c->params.damping != GW_DAMP_HUNT_CROSSLEY)
+            return gw_err_set(err, GW_EINVAL, "%s --alpha: has no effect without --damping hc", cmd);
+        if (restitution)
+            return gw_err_set(err, GW_EINVAL, "%s --alpha: --restitution sets alpha; give one of them", cmd);
+    }
+    if (gw_cli_find(opts, "restitution-v")->seen && !restitution)
+        return gw_err_set(err, GW_EINVAL, "%s --restitution-v: has no effect without --restitution", cmd);
+    return GW_OK;
+}
 
 #define OPT_D(nm, dst, mv, hl, lo_, hi_, open_)                                          \
     (gw_opt) { .name = nm, .kind = GW_OPT_DOUBLE, .dest = dst, .metavar = mv, .help = hl, \
@@ -32,13 +96,13 @@ void chain_cli_options(chain_cli *c, gw_opt *o)
     c->max_steps = sp.max_steps;
     int i = 0;
     o[i++] = OPT_S("material", &c->material, "NAME", "bead material (steel, rigid, brass, aluminium, glass, pmma, pvc) [steel]");
-    o[i++] = OPT_D("radius", &c->radius, "R", "bead radius, m [4e-3]", 0, INFINITY, 1);
+    o[i++] = OPT_D("radius", &c->radius, "R", "bead radius, m, in (0, 1] [4e-3]", 0, 1, 1);
     o[i++] = OPT_S("wall-material", &c->wall_material, "NAME", "wall material (a half-space) [steel]");
     o[i++] = OPT_S("sheet", &c->sheet, "NAME", "wall: a sheet of the paper's Table 2 with its fitted K_eff (none, brass, tape, pvc, pmma, cardboard2, beech, cardboard1, rubber)");
     o[i++] = OPT_S("radii", &c->radii, "R,R..", "per-bead radii, m, bead 1 first (masses and contact k from the material)");
-    o[i++] = OPT_D("k", &c->k, "K", "bead-bead Hertz coefficient, N/m^1.5 [from material, F.12]", 0, INFINITY, 1);
-    o[i++] = OPT_D("kwall", &c->kwall, "K", "bead-wall Hertz coefficient, N/m^1.5 [from materials, F.3]", 0, INFINITY, 1);
-    o[i++] = OPT_D("mass", &c->mass, "M", "bead mass, kg [4/3 pi R^3 rho]", 0, INFINITY, 1);
+    o[i++] = OPT_D("k", &c->k, "K", "bead-bead Hertz coefficient, N/m^1.5, in [1e3, 1e14] [from material, F.12]", GW_CHAIN_K_MIN, GW_CHAIN_K_MAX, 0);
+    o[i++] = OPT_D("kwall", &c->kwall, "K", "bead-wall Hertz coefficient, N/m^1.5, in [1e3, 1e14] [from materials, F.3]", GW_CHAIN_K_MIN, GW_CHAIN_K_MAX, 0);
+    o[i++] = OPT_D("mass", &c->mass, "M", "bead mass, kg, in (0, 1e3] [4/3 pi R^3 rho]", 0, 1e3, 1);
     o[i++] = OPT_D("gravity", &c->gravity, "G", "gravity toward the wall, m/s^2 [0 = off]", 0, 1e4, 0);
     o[i++] = OPT_S("damping", &c->damping, "MODEL", "none, kk (Kuwabara-Kono) or hc (Hunt-Crossley) [none]");
     o[i++] = OPT_D("gamma", &c->gamma, "G", "Kuwabara-Kono constant of bead contacts, N s/m^1.5 [0]", 0, INFINITY, 0);
@@ -47,8 +111,8 @@ void chain_cli_options(chain_cli *c, gw_opt *o)
     o[i++] = OPT_D("restitution-v", &c->restitution_v, "V", "impact velocity of that calibration, m/s [v_imp]", 0, 1e3, 1);
     o[i++] = OPT_S("solver", &c->solver, "NAME", "cvode, arkode or rk4 [cvode]");
     o[i++] = OPT_S("method", &c->method, "NAME", "cvode: bdf|adams; arkode: erk|dirk|imex [bdf / erk]");
-    o[i++] = OPT_D("rtol", &c->rtol, "R", "relative tolerance [1e-12]", 0, 1, 1);
-    o[i++] = OPT_D("atol", &c->atol, "A", "absolute tolerance in units of the overlap and velocity scales [1e-12]", 0, INFINITY, 1);
+    o[i++] = OPT_D("rtol", &c->rtol, "R", "relative tolerance [1e-12]", GW_TOL_MIN, GW_TOL_MAX, 0);
+    o[i++] = OPT_D("atol", &c->atol, "A", "absolute tolerance in units of the overlap and velocity scales [1e-12]", GW_TOL_MIN, GW_TOL_MAX, 0);
     o[i++] = OPT_D("dt", &c->dt, "DT", "RK4 step, s [T_c/400]; initial step for cvode/arkode", 0, 1, 0);
     o[i++] = OPT_D("dt-max", &c->dt_max, "DT", "largest step, s [unlimited]", 0, 1, 0);
     o[i++] = (gw_opt){.name = "max-steps", .kind = GW_OPT_LONG, .dest = &c->max_steps, .metavar = "N",
@@ -62,6 +126,12 @@ void chain_cli_options(chain_cli *c, gw_opt *o)
 
 int chain_cli_resolve(chain_cli *c, const gw_opt *opts, const char *cmd, gw_err *err)
 {
+    int src = check_speeds(opts, cmd, err);
+    if (src != GW_OK)
+        return src;
+    if (!(c->params.v_imp > 0 && c->params.v_imp <= GW_CHAIN_VIMP_MAX))
+        return gw_err_set(err, GW_EINVAL, "%s --vimp: %g is outside (0, %g]", cmd, c->params.v_imp,
+                          GW_CHAIN_VIMP_MAX);
     const gw_material *bm = gw_material_find(c->material);
     if (!bm || isinf(bm->density))
         return gw_err_set(err, GW_EINVAL, "%s --material: unknown or unusable bead material '%s' (known: %s; not rigid)",
@@ -94,7 +164,7 @@ int chain_cli_resolve(chain_cli *c, const gw_opt *opts, const char *cmd, gw_err 
     if (c->radii) {
         int nr = 0;
         chain_cli_free(c);
-        if (gw_parse_double_list(c->radii, "--radii", &c->radii_v, &nr, err) != GW_OK) {
+        if (gw_parse_double_list_in(c->radii, "--radii", 0, 1, 1, &c->radii_v, &nr, err) != GW_OK) {
             char tmp[sizeof err->msg];
             snprintf(tmp, sizeof tmp, "%s", err->msg);
             return gw_err_set(err, GW_EINVAL, "%s %s", cmd, tmp);
@@ -135,6 +205,13 @@ int chain_cli_resolve(chain_cli *c, const gw_opt *opts, const char *cmd, gw_err 
         return gw_err_set(err, GW_EINVAL, "%s --damping: unknown model '%s' (none, kk, hc)", cmd, c->damping);
     p->gamma = c->gamma;
     p->alpha = c->alpha;
+    if ((src = check_no_effect(c, opts, cmd, err)) != GW_OK)
+        return src;
+    if ((src = gw_solver_tolerances_check(c->rtol, c->atol, "--rtol", "--atol", err)) != GW_OK) {
+        char tmp[sizeof err->msg];
+        snprintf(tmp, sizeof tmp, "%s", err->msg);
+        return gw_err_set(err, src, "%s %s", cmd, tmp);
+    }
 
     gw_chain_run_opts *r = &c->run;
     *r = gw_chain_run_opts_default();
@@ -182,6 +259,11 @@ int chain_cli_resolve(chain_cli *c, const gw_opt *opts, const char *cmd, gw_err 
         char tmp[sizeof err->msg];
         snprintf(tmp, sizeof tmp, "%s", err->msg);
         return gw_err_set(err, rc, "%s: %s", cmd, tmp);
+    }
+    if (c->out) { /* before any work: a run that cannot write its results never starts */
+        char name[96];
+        snprintf(name, sizeof name, "%s --out", cmd);
+        return gw_out_check(c->out, name, err);
     }
     return GW_OK;
 }

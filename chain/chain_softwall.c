@@ -89,7 +89,7 @@ int gw_cmd_softwall(int argc, char **argv)
     int quiet = 0, use_sheets = 0, k = CHAIN_CLI_NOPTS;
     opts[k++] = (gw_opt){.name = "n", .kind = GW_OPT_STRING, .dest = &nrange, .metavar = "A:B", .help = "column sizes [1:30]"};
     opts[k++] = (gw_opt){.name = "vimp", .kind = GW_OPT_DOUBLE, .dest = &vimp, .metavar = "V",
-                         .help = "impact velocity, m/s [0.2385 = h 2.9 mm]", .lo = 0, .hi = 1e3, .open_lo = 1};
+                         .help = "impact velocity, m/s [0.2385 = h 2.9 mm]", .lo = 0, .hi = GW_CHAIN_VIMP_MAX, .open_lo = 1};
     opts[k++] = (gw_opt){.name = "tol", .kind = GW_OPT_DOUBLE, .dest = &tol, .metavar = "F",
                          .help = "plateau tolerance for N_d (fraction) [0.01]", .lo = 0, .hi = 0.5, .open_lo = 1};
     opts[k++] = (gw_opt){.name = "sheets", .kind = GW_OPT_FLAG, .dest = &use_sheets, .help = "the paper's sheets (Table 2) with fitted K_eff"};
@@ -101,6 +101,17 @@ int gw_cmd_softwall(int argc, char **argv)
     if (c.radii)
         return chain_cli_fail("softwall --radii: per-bead radii need a fixed N (use granwave chain)");
     gw_err err = {{0}};
+    /* every wall option is ignored with --sheets (each sheet has its fitted K_eff),
+     * and the wall material is ignored when the wall is a stiffness */
+    static const char *const wall_opts[] = {"kwall", "sheet", "wall-material"};
+    for (int i = 0; i < 3; i++)
+        if (gw_cli_find(opts, wall_opts[i])->seen && (use_sheets || i == 2)) {
+            char msg[160];
+            snprintf(msg, sizeof msg, "softwall --%s: has no effect %s", wall_opts[i],
+                     use_sheets ? "with --sheets (each sheet has its fitted K_eff)"
+                                : "(the wall is --kwall, default 1e9 N/m^1.5, or --sheets)");
+            return chain_cli_fail(msg);
+        }
     if (!gw_cli_find(opts, "kwall")->seen && !use_sheets)
         c.kwall = 1e9, ((gw_opt *)gw_cli_find(opts, "kwall"))->seen = 1;
     long a, b;

@@ -26,7 +26,7 @@ static void case_init(case_opts *co)
     co->n = 1;
     co->vimp = 0.3;
     co->opts[CHAIN_CLI_NOPTS] = (gw_opt){.name = "n", .kind = GW_OPT_LONG, .dest = &co->n, .lo = 1, .hi = 50000000};
-    co->opts[CHAIN_CLI_NOPTS + 1] = (gw_opt){.name = "vimp", .kind = GW_OPT_DOUBLE, .dest = &co->vimp, .lo = 0, .hi = 1e3, .open_lo = 1};
+    co->opts[CHAIN_CLI_NOPTS + 1] = (gw_opt){.name = "vimp", .kind = GW_OPT_DOUBLE, .dest = &co->vimp, .lo = 0, .hi = GW_CHAIN_VIMP_MAX, .open_lo = 1};
     co->opts[CHAIN_CLI_NOPTS + 2] = (gw_opt){0};
 }
 

@@ -123,14 +123,8 @@ int gw_cmd_wavespeed(int argc, char **argv)
     double *v = NULL;
     int nv = 0;
     if (gw_parse_int_range(nrange, "wavespeed --n", 1, 100000, &a, &b, &err) != GW_OK ||
-        gw_parse_double_list(vlist, "wavespeed --vimp", &v, &nv, &err) != GW_OK)
+        gw_parse_double_list_in(vlist, "wavespeed --vimp", 0, GW_CHAIN_VIMP_MAX, 1, &v, &nv, &err) != GW_OK)
         return chain_cli_fail(err.msg);
-    for (int i = 0; i < nv; i++)
-        if (!(v[i] > 0)) {
-            free(v);
-            gw_err_set(&err, GW_EINVAL, "wavespeed --vimp: %g must be > 0", v[i]);
-            return chain_cli_fail(err.msg);
-        }
     if (b - a < 2 || b < 8) {
         free(v);
         return chain_cli_fail("wavespeed --n: need at least 3 sizes and a largest column of >= 8 beads");

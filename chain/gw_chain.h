@@ -89,6 +89,10 @@ typedef struct gw_chain_params {
     double alpha;          /* Hunt-Crossley constant, s/m (all contacts) */
 } gw_chain_params;
 
+/* Impact velocities every chain command accepts, m/s: (0, GW_CHAIN_VIMP_MAX]
+ * (beyond, the Hertz overlaps exceed the bead radius long before). */
+#define GW_CHAIN_VIMP_MAX 1e3
+
 /* Stainless steel beads of the experiment: R = 4 mm, E = 21.6e10 Pa,
  * nu = 0.276, rho = 7850 kg/m^3 (m = 4/3 pi R^3 rho), steel wall, n = 1,
  * v_imp = 0.3 m/s, no gravity, no damping. */

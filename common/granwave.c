@@ -1,8 +1,10 @@
 /*
  * granwave.c: the `granwave <command>` program. Each command lives with its
- * module; this file only dispatches. Exit codes: 0 ok, 1 run failure (solver,
- * output), 2 bad input (one line on stderr naming the input).
+ * module; this file only dispatches, and checks that stdout was written (exit
+ * 1 otherwise). Exit codes: 0 ok, 1 run failure (solver, output), 2 bad input
+ * (one line on stderr naming the input).
  */
+#include <errno.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -67,8 +69,19 @@ int main(int argc, char **argv)
         return 0;
     }
     for (size_t i = 0; i < sizeof commands / sizeof commands[0]; i++)
-        if (strcmp(commands[i].name, cmd) == 0)
-            return commands[i].run(argc - 2, argv + 2);
+        if (strcmp(commands[i].name, cmd) == 0) {
+            int code = commands[i].run(argc - 2, argv + 2);
+            /* one check for every command: results that did not reach stdout (a
+             * full disk, /dev/full, a closed pipe) are a run failure, never exit 0 */
+            errno = 0;
+            if (fflush(stdout) != 0 || ferror(stdout)) {
+                int e = errno ? errno : EIO;
+                fprintf(stderr, "granwave %s: stdout: write failed: %s\n", cmd, strerror(e));
+                if (code == 0)
+                    code = 1;
+            }
+            return code;
+        }
     fprintf(stderr, "granwave: unknown command '%s' (see granwave --help)\n", cmd);
     return 2;
 }

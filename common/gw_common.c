@@ -92,6 +92,12 @@ int gw_check_positive(double x, const char *name, gw_err *err)
 
 int gw_parse_double_list(const char *s, const char *name, double **out, int *n, gw_err *err)
 {
+    return gw_parse_double_list_in(s, name, -INFINITY, INFINITY, 0, out, n, err);
+}
+
+int gw_parse_double_list_in(const char *s, const char *name, double lo, double hi, int open_lo,
+                            double **out, int *n, gw_err *err)
+{
     *out = NULL;
     *n = 0;
     if (!s || !*s)
@@ -113,6 +119,15 @@ int gw_parse_double_list(const char *s, const char *name, double **out, int *n, 
             *comma = '\0';
         if ((rc = gw_parse_double(p, name, &v[count], err)) != GW_OK)
             break;
+        double x = v[count];
+        if (x < lo || x > hi || (open_lo && !(x > lo))) {
+            if (open_lo && !isfinite(hi))
+                rc = gw_err_set(err, GW_EINVAL, "%s: item %d is %g, must be > %g", name, count + 1, x, lo);
+            else
+                rc = gw_err_set(err, GW_EINVAL, "%s: item %d is %g, outside %s%g, %g]", name,
+                                count + 1, x, open_lo ? "(" : "[", lo, hi);
+            break;
+        }
         count++;
         if (!comma)
             break;

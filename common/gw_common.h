@@ -58,7 +58,13 @@ int gw_parse_long(const char *s, const char *name, long lo, long hi, long *out,
 int gw_check_range(double x, const char *name, double lo, double hi, gw_err *err);
 /* Check that x is finite and strictly positive. */
 int gw_check_positive(double x, const char *name, gw_err *err);
-/* Parse a comma-separated list of finite doubles into a new array (caller frees). */
+/* Parse a comma-separated list of finite doubles into a new array (caller frees).
+ * Every item is checked inside the parser (lo <= x <= hi, x > lo when open_lo), so
+ * a caller never has to check the items, or name one, after freeing the list. On
+ * failure *out is NULL, *n is 0 and the message names the item. */
+int gw_parse_double_list_in(const char *s, const char *name, double lo, double hi,
+                            int open_lo, double **out, int *n, gw_err *err);
+/* gw_parse_double_list_in with no bounds (any finite number). */
 int gw_parse_double_list(const char *s, const char *name, double **out, int *n,
                          gw_err *err);
 /* Parse "A:B" or "A" (integers, A <= B, both in [lo, hi]). */
@@ -70,6 +76,20 @@ char *gw_str_trim(char *s);
 /* A flag's value in a config or table: 1 for "1"/"true", 0 for "0"/"false"
  * (case-insensitive), -1 otherwise. */
 int gw_parse_flag(const char *v);
+
+/* ---- solver tolerances: the one range every command and backend accepts ----
+ * Relative and absolute tolerances of the adaptive backends (the absolute one in
+ * units of each component's scale). Above 1e-4 the 5-bead Falcon column's peak
+ * force is already 0.3 % off (1e-3: 1.8 %, 1e-2: 17 %, 1: the run "succeeds"
+ * 60 % off); below 1e-15 a tolerance asks for less than the rounding of a
+ * double. */
+#define GW_TOL_MIN 1e-15
+#define GW_TOL_MAX 1e-4
+/* Check rtol and atol against [GW_TOL_MIN, GW_TOL_MAX]; rname and aname name the
+ * inputs ("chain --rtol"). Used by gw_solver_create and by every command before
+ * any work. GW_EINVAL with one line naming the input. */
+int gw_solver_tolerances_check(double rtol, double atol, const char *rname, const char *aname,
+                               gw_err *err);
 
 /* ---- files ---- */
 
@@ -99,6 +119,32 @@ int gw_path_join(char *buf, size_t n, const char *dir, const char *name);
 
 /* Write a string to path atomically. */
 int gw_write_text(const char *path, const char *text, gw_err *err);
+
+/* ---- inputs: the one way every input file is opened ----
+ * Only a regular file is accepted: the file is opened with O_NONBLOCK and
+ * fstat'ed before any read, so a FIFO, a device (/dev/zero), a socket or a
+ * directory is refused at once instead of blocking or reading forever. what names
+ * the input in the message ("layer-impact --sample"). GW_EINVAL (not a regular
+ * file, too large) or GW_EIO (cannot open or read) with one line in err. */
+
+/* Open path for reading ("rb"); on success *out is the stream (caller fcloses),
+ * on failure *out is NULL and nothing is open. */
+int gw_input_open(const char *path, const char *what, FILE **out, gw_err *err);
+/* gw_input_open and close again: for libraries that open the file by name. */
+int gw_input_check(const char *path, const char *what, gw_err *err);
+/* Read the whole file, at most max bytes, into a new NUL-terminated buffer
+ * (caller frees; *len without the NUL; len may be NULL). */
+int gw_input_read(const char *path, const char *what, size_t max, char **out, size_t *len,
+                  gw_err *err);
+
+/* ---- output locations, checked before any work ----
+ * gw_out_check: dir is an existing writable directory, or does not exist and its
+ * nearest existing ancestor is a writable directory (it creates nothing; the
+ * caller makes the directory with gw_mkdir_p when it has something to write).
+ * gw_out_file_check: path is absent or a regular file, in an existing writable
+ * directory. GW_EINVAL with one line naming what. */
+int gw_out_check(const char *dir, const char *what, gw_err *err);
+int gw_out_file_check(const char *path, const char *what, gw_err *err);
 
 /* ---- fits (GSL) ---- */
 

@@ -1,5 +1,7 @@
 /*
- * gw_io.c: atomic files (temporary name, fsync, rename), directories, paths.
+ * gw_io.c: atomic files (temporary name, fsync, rename), directories, paths, and
+ * the one way inputs are opened: regular files only (a FIFO, device or directory
+ * is refused before any read, so nothing can block), reads bounded in size.
  */
 #define _POSIX_C_SOURCE 200809L
 #include <errno.h>
@@ -67,14 +69,24 @@ int gw_afile_commit(gw_afile *f, gw_err *err)
         release_signals(f);
         return gw_err_set(err, GW_EIO, "%s: file not open", f->path);
     }
-    int bad = ferror(f->fp) || fflush(f->fp) != 0 || fsync(fileno(f->fp)) != 0;
-    int saved = errno;
-    if (fclose(f->fp) != 0)
+    /* errno is only meaningful right after the call that failed: a stream whose
+     * error flag was set by an earlier fwrite reports EIO, never "Success" */
+    errno = 0;
+    int bad = 0, saved = 0;
+    if (ferror(f->fp)) { /* an earlier write failed: flushing again gives its errno */
         bad = 1;
+        fflush(f->fp);
+        saved = errno ? errno : EIO;
+    }
+    else if (fflush(f->fp) != 0 || fsync(fileno(f->fp)) != 0)
+        bad = 1, saved = errno ? errno : EIO;
+    errno = 0;
+    if (fclose(f->fp) != 0 && !bad)
+        bad = 1, saved = errno ? errno : EIO;
     f->fp = NULL;
     if (bad || rename(f->tmp, f->path) != 0) {
         if (!bad)
-            saved = errno;
+            saved = errno ? errno : EIO;
         unlink(f->tmp);
         f->tmp[0] = '\0';
         release_signals(f);
@@ -142,4 +154,159 @@ double gw_clock_ms(void)
     struct timespec ts;
     clock_gettime(CLOCK_MONOTONIC, &ts);
     return ts.tv_sec * 1e3 + ts.tv_nsec * 1e-6;
+}
+
+static const char *file_kind(mode_t m)
+{
+    return S_ISFIFO(m) ? "a FIFO" : S_ISCHR(m) ? "a character device" : S_ISBLK(m) ? "a block device"
+         : S_ISDIR(m) ? "a directory" : S_ISSOCK(m) ? "a socket" : "not a regular file";
+}
+
+int gw_input_open(const char *path, const char *what, FILE **out, gw_err *err)
+{
+    *out = NULL;
+    if (!path || !*path)
+        return gw_err_set(err, GW_EINVAL, "%s: empty file name", what);
+    /* O_NONBLOCK: opening a FIFO without a writer would block until one comes */
+    int fd = open(path, O_RDONLY | O_NONBLOCK | O_NOCTTY);
+    if (fd < 0)
+        return gw_err_set(err, GW_EIO, "%s: %s: cannot open: %s", what, path, strerror(errno));
+    struct stat st;
+    if (fstat(fd, &st) != 0) {
+        int e = errno;
+        close(fd);
+        return gw_err_set(err, GW_EIO, "%s: %s: cannot read: %s", what, path, strerror(e));
+    }
+    if (!S_ISREG(st.st_mode)) {
+        close(fd);
+        return gw_err_set(err, GW_EINVAL, "%s: %s is %s; give a regular file", what, path,
+                          file_kind(st.st_mode));
+    }
+    int fl = fcntl(fd, F_GETFL);
+    if (fl != -1)
+        fcntl(fd, F_SETFL, fl & ~O_NONBLOCK);
+    FILE *fp = fdopen(fd, "rb");
+    if (!fp) {
+        int e = errno;
+        close(fd);
+        return gw_err_set(err, GW_EIO, "%s: %s: cannot open: %s", what, path, strerror(e));
+    }
+    *out = fp;
+    return GW_OK;
+}
+
+int gw_input_check(const char *path, const char *what, gw_err *err)
+{
+    FILE *fp = NULL;
+    int rc = gw_input_open(path, what, &fp, err);
+    if (fp)
+        fclose(fp);
+    return rc;
+}
+
+int gw_input_read(const char *path, const char *what, size_t max, char **out, size_t *len,
+                  gw_err *err)
+{
+    *out = NULL;
+    if (len)
+        *len = 0;
+    FILE *fp = NULL;
+    int rc = gw_input_open(path, what, &fp, err);
+    if (rc != GW_OK)
+        return rc;
+    struct stat st;
+    if (fstat(fileno(fp), &st) == 0 && (unsigned long long)st.st_size > (unsigned long long)max) {
+        fclose(fp);
+        return gw_err_set(err, GW_EINVAL, "%s: '%s' is larger than %zu bytes", what, path, max);
+    }
+    size_t cap = st.st_size > 0 ? (size_t)st.st_size + 1 : 4096, n = 0;
+    char *buf = malloc(cap + 1);
+    while (buf) {
+        size_t got = fread(buf + n, 1, cap - n, fp);
+        n += got;
+        if (got == 0 || n > max)
+            break;
+        if (n == cap) { /* the file grew since fstat: read on, still bounded by max */
+            char *nb = realloc(buf, 2 * cap + 1);
+            if (!nb) {
+                free(buf);
+                buf = NULL;
+                break;
+            }
+            buf = nb;
+            cap *= 2;
+        }
+    }
+    int bad = ferror(fp);
+    fclose(fp);
+    if (!buf)
+        return gw_err_set(err, GW_ENOMEM, "%s: out of memory reading '%s'", what, path);
+    if (bad || n > max) {
+        free(buf);
+        return n > max ? gw_err_set(err, GW_EINVAL, "%s: '%s' is larger than %zu bytes", what, path, max)
+                       : gw_err_set(err, GW_EIO, "%s: cannot read '%s'", what, path);
+    }
+    buf[n] = '\0';
+    *out = buf;
+    if (len)
+        *len = n;
+    return GW_OK;
+}
+
+int gw_out_check(const char *dir, const char *what, gw_err *err)
+{
+    char buf[4096];
+    size_t n = dir ? strlen(dir) : 0;
+    if (n == 0 || n >= sizeof buf)
+        return gw_err_set(err, GW_EINVAL, "%s: bad path '%s'", what, dir ? dir : "");
+    memcpy(buf, dir, n + 1);
+    struct stat st;
+    /* the directory, or else its nearest existing ancestor, must be a writable directory */
+    for (;;) {
+        if (stat(buf, &st) == 0) {
+            if (!S_ISDIR(st.st_mode))
+                return gw_err_set(err, GW_EINVAL, "%s: '%s' exists and is not a directory", what, buf);
+            if (access(buf, W_OK | X_OK) != 0)
+                return gw_err_set(err, GW_EINVAL, "%s: cannot write into '%s': %s", what, buf,
+                                  strerror(errno));
+            return GW_OK;
+        }
+        if (errno != ENOENT)
+            return gw_err_set(err, GW_EINVAL, "%s: '%s': %s", what, buf, strerror(errno));
+        while (n > 1 && buf[n - 1] == '/')
+            buf[--n] = '\0';
+        char *slash = strrchr(buf, '/');
+        if (!slash) {
+            buf[0] = '.', buf[1] = '\0', n = 1;
+        } else if (slash == buf) {
+            buf[1] = '\0', n = 1;
+        } else {
+            *slash = '\0';
+            n = (size_t)(slash - buf);
+        }
+    }
+}
+
+int gw_out_file_check(const char *path, const char *what, gw_err *err)
+{
+    char dir[4096];
+    size_t n = path ? strlen(path) : 0;
+    if (n == 0 || n >= sizeof dir)
+        return gw_err_set(err, GW_EINVAL, "%s: bad path '%s'", what, path ? path : "");
+    struct stat st;
+    if (stat(path, &st) == 0 && !S_ISREG(st.st_mode))
+        return gw_err_set(err, GW_EINVAL, "%s: '%s' is %s; give a regular file", what, path,
+                          file_kind(st.st_mode));
+    memcpy(dir, path, n + 1);
+    char *slash = strrchr(dir, '/');
+    if (!slash)
+        snprintf(dir, sizeof dir, ".");
+    else if (slash == dir)
+        dir[1] = '\0';
+    else
+        *slash = '\0';
+    /* a file is written into an existing directory (nothing makes its parents) */
+    if (stat(dir, &st) != 0)
+        return gw_err_set(err, GW_EINVAL, "%s: directory '%s' of '%s': %s", what, dir, path, strerror(errno));
+    return gw_out_check(dir, what, err);
 }

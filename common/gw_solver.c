@@ -1,6 +1,7 @@
 /*
  * gw_solver.c: backend-independent part of the solver layer (lookup, argument
- * checks, dispatch, error text).
+ * checks, dispatch, error text). The tolerance range [GW_TOL_MIN, GW_TOL_MAX]
+ * (gw_common.h) is checked here, for every backend and every command.
  */
 #include <math.h>
 #include <stdarg.h>
@@ -62,6 +63,18 @@ const char *gw_solver_method_name(int method)
     return "unknown";
 }
 
+int gw_solver_tolerances_check(double rtol, double atol, const char *rname, const char *aname,
+                               gw_err *err)
+{
+    if (!(rtol >= GW_TOL_MIN && rtol <= GW_TOL_MAX)) /* also refuses NaN */
+        return gw_err_set(err, GW_EINVAL, "%s: %g is outside [%g, %g]", rname, rtol, GW_TOL_MIN,
+                          GW_TOL_MAX);
+    if (!(atol >= GW_TOL_MIN && atol <= GW_TOL_MAX))
+        return gw_err_set(err, GW_EINVAL, "%s: %g is outside [%g, %g]", aname, atol, GW_TOL_MIN,
+                          GW_TOL_MAX);
+    return GW_OK;
+}
+
 void gw_solver_set_error(gw_solver *s, const char *fmt, ...)
 {
     va_list ap;
@@ -81,10 +94,9 @@ int gw_solver_create(const gw_solver_type *type, const gw_system *sys,
         return gw_err_set(err, GW_EINVAL, "solver: system has no right-hand side or dimension");
     if (sys->nroots < 0 || (sys->nroots > 0 && !sys->roots))
         return gw_err_set(err, GW_EINVAL, "solver: root count without root function");
-    if (!(p->rtol > 0) || !isfinite(p->rtol) || p->rtol >= 1)
-        return gw_err_set(err, GW_EINVAL, "solver: rtol must be in (0, 1), got %g", p->rtol);
-    if (!(p->atol > 0) || !isfinite(p->atol))
-        return gw_err_set(err, GW_EINVAL, "solver: atol must be positive, got %g", p->atol);
+    int rc = gw_solver_tolerances_check(p->rtol, p->atol, "solver: rtol", "solver: atol", err);
+    if (rc != GW_OK)
+        return rc;
     if (!(p->dt >= 0) || !isfinite(p->dt))
         return gw_err_set(err, GW_EINVAL, "solver: dt must be >= 0, got %g", p->dt);
     if (!(p->dt_max >= 0) || !isfinite(p->dt_max))
@@ -101,7 +113,7 @@ int gw_solver_create(const gw_solver_type *type, const gw_system *sys,
     s->type = type;
     s->sys = *sys;
     s->p = *p;
-    int rc = type->create(s, t0, y0, err);
+    rc = type->create(s, t0, y0, err);
     if (rc != GW_OK) {
         free(s);
         return rc;

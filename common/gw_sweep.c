@@ -24,6 +24,7 @@ typedef struct parse_ctx {
     int nmodels;
     char msg[400];
     int line; /* current line, counted by the reader */
+    int failed; /* a handler call failed: later calls are ignored */
 } parse_ctx;
 
 static char *dupstr(const char *s)
@@ -36,12 +37,31 @@ static char *dupstr(const char *s)
 }
 
 
+/* "A:B" with two integers (blanks allowed around them): a range, even when it is
+ * empty or out of bounds, so that its error is a range error. */
+static int looks_like_range(const char *v)
+{
+    const char *colon = strchr(v, ':');
+    if (!colon || strchr(colon + 1, ':'))
+        return 0;
+    for (const char *p = v; *p; p++)
+        if (p != colon && !(*p == ' ' || *p == '\t' || *p == '-' || *p == '+' || (*p >= '0' && *p <= '9')))
+            return 0;
+    return 1;
+}
+
 /* Split a grid value: "A:B" (integers) or "a, b, c". */
 static int split_values(const char *value, gw_sweep_key *k, char *msg, size_t mlen)
 {
     long a, b;
     gw_err err;
-    if (strchr(value, ':') && gw_parse_int_range(value, k->name, -1000000000L, 1000000000L, &a, &b, &err) == GW_OK) {
+    if (looks_like_range(value)) {
+        if (gw_parse_int_range(value, k->name, -1000000000L, 1000000000L, &a, &b, &err) != GW_OK) {
+            size_t l = strnlen(err.msg, mlen - 1); /* "5:1": an empty range, not "not an integer" */
+            memcpy(msg, err.msg, l);
+            msg[l] = '\0';
+            return 0;
+        }
         if (b - a >= 1000000L) { /* each value is a string: bound the memory */
             snprintf(msg, mlen, "%s: range %s has more than 1000000 values", k->name, value);
             return 0;
@@ -89,9 +109,24 @@ static int find_key(const gw_sweep_key *keys, int n, const char *name)
     return -1;
 }
 
+/* libinih goes on after a handler error and reports the first error's line: keep
+ * the first message too (a misspelt model would otherwise be reported as the
+ * next section's "model must come before"). */
+static int handler_one(parse_ctx *pc, const char *section, const char *name, const char *value);
+
 static int handler(void *user, const char *section, const char *name, const char *value)
 {
     parse_ctx *pc = user;
+    if (pc->failed)
+        return 0;
+    int ok = handler_one(pc, section, name, value);
+    if (!ok)
+        pc->failed = 1;
+    return ok;
+}
+
+static int handler_one(parse_ctx *pc, const char *section, const char *name, const char *value)
+{
     gw_sweep_config *cfg = pc->cfg;
     if (strcmp(section, "sweep") == 0) {
         char **dst = strcmp(name, "model") == 0 ? &cfg->model : strcmp(name, "out") == 0 ? &cfg->out : NULL;
@@ -181,8 +216,9 @@ static unsigned long fnv64_file(unsigned long h, const char *path)
     struct stat sb;
     if (stat(path, &sb) != 0 || !S_ISREG(sb.st_mode))
         return h;
-    FILE *f = fopen(path, "rb");
-    if (!f)
+    FILE *f = NULL;
+    gw_err err;
+    if (gw_input_open(path, "sweep", &f, &err) != GW_OK) /* never blocks on a FIFO */
         return h;
     unsigned char buf[65536];
     size_t got;
@@ -204,8 +240,13 @@ int gw_sweep_config_read(const char *path, const gw_sweep_model *const *models, 
 {
     memset(cfg, 0, sizeof *cfg);
     *model = NULL;
-    parse_ctx pc = {cfg, models, nmodels, "", 0};
-    int rc = ini_parse(path, handler, &pc);
+    parse_ctx pc = {cfg, models, nmodels, "", 0, 0};
+    char *text = NULL;
+    int rc = gw_input_read(path, "sweep CONFIG", GW_SWEEP_CONFIG_MAX, &text, NULL, err);
+    if (rc != GW_OK)
+        return GW_EINVAL; /* a config that cannot be read is bad input (exit 2) */
+    rc = ini_parse_string(text, handler, &pc);
+    free(text);
     return config_finish(path, models, nmodels, cfg, model, rc, &pc, err);
 }
 
@@ -214,7 +255,7 @@ int gw_sweep_config_read_string(const char *text, const char *name, const gw_swe
 {
     memset(cfg, 0, sizeof *cfg);
     *model = NULL;
-    parse_ctx pc = {cfg, models, nmodels, "", 0};
+    parse_ctx pc = {cfg, models, nmodels, "", 0, 0};
     int rc = ini_parse_string(text, handler, &pc);
     return config_finish(name, models, nmodels, cfg, model, rc, &pc, err);
 }
@@ -354,23 +395,18 @@ static long check_line(const char *line, size_t len, long ncases)
     return (*end == ',' && k >= 0 && k < ncases) ? k : -1;
 }
 
+/* The journal or table: a regular file only (gw_input_read), NULL with errno set
+ * (ENOENT when absent). */
 static char *slurp(const char *path, size_t *len)
 {
-    FILE *fp = fopen(path, "rb");
-    if (!fp)
+    struct stat st;
+    if (stat(path, &st) != 0)
         return NULL;
-    fseek(fp, 0, SEEK_END);
-    long n = ftell(fp);
-    fseek(fp, 0, SEEK_SET);
-    char *buf = n >= 0 ? malloc((size_t)n + 1) : NULL;
-    if (buf && fread(buf, 1, (size_t)n, fp) != (size_t)n) {
-        free(buf);
-        buf = NULL;
-    }
-    fclose(fp);
-    if (buf) {
-        buf[n] = '\0';
-        *len = (size_t)n;
+    char *buf = NULL;
+    gw_err err;
+    if (gw_input_read(path, "sweep journal", (size_t)1 << 34, &buf, len, &err) != GW_OK) {
+        errno = EINVAL;
+        return NULL;
     }
     return buf;
 }

@@ -22,6 +22,7 @@
 #include "gw_common.h"
 
 #define GW_SWEEP_MAX_KEYS 32
+#define GW_SWEEP_CONFIG_MAX (1L << 20) /* bytes: a config is read whole, bounded */
 
 typedef struct gw_sweep_key {
     char *name;

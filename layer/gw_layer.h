@@ -259,7 +259,9 @@ int gw_layer_sample_write(const gw_layer_sample *s, const char *path, const char
                           gw_err *err);
 int gw_layer_sample_read(const char *path, gw_layer_sample *s, gw_err *err);
 /* GW_EUNSUPPORTED when path asks for HDF5 (.h5, .hdf5) and this build has no
- * HDF5: lets a command refuse before a long run. GW_OK otherwise. */
+ * HDF5; GW_EINVAL when path cannot be written as a sample (it names a FIFO,
+ * device or directory, or its directory is missing or not writable; see
+ * gw_out_file_check): lets a command refuse before a long run. GW_OK otherwise. */
 int gw_layer_sample_format_check(const char *path, gw_err *err);
 
 /* Pluviation (physics.md 2.2). */

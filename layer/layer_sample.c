@@ -7,7 +7,8 @@
  * soil: "x y r body", the rigid-body id; disc samples keep writing version 1,
  * so their files are unchanged). '#' starts a comment line (the
  * writer puts the program version and the command line there). Lines end in LF
- * or CRLF. The reader refuses anything else with the file name and line number.
+ * or CRLF. The reader refuses anything else with the file name and line number,
+ * and opens only regular files (gw_input_open: a FIFO or device never blocks it).
  * HDF5 format (when built with HDF5): datasets x, y, r [n] (m), body [n] for
  * clump samples, and the header as attributes of the root group (see
  * gw_layer.h). Body ids are checked by layer_bodies_check (layer_clump_check.c). The reader tells the two
@@ -137,7 +138,9 @@ int gw_layer_sample_format_check(const char *path, gw_err *err)
     if (wants_h5(path) && !GW_HAVE_HDF5)
         return gw_err_set(err, GW_EUNSUPPORTED, "sample '%s': HDF5 samples need granwave built with HDF5 "
                           "(GW_WITH_HDF5=ON and libhdf5); give a text name such as sample.txt", path);
-    return GW_OK;
+    /* the place the sample goes, before the run: a FIFO, device or directory of
+     * that name, or a missing or read-only directory, is refused */
+    return gw_out_file_check(path, "sample", err);
 }
 
 /* ------------------------------------------------------------- text ---- */
@@ -787,9 +790,10 @@ int gw_layer_sample_read(const char *path, gw_layer_sample *s, gw_err *err)
     memset(s, 0, sizeof *s);
     s->mass_law = GW_LAYER_MASS_DISC;
     text_in t = {.path = path};
-    t.fp = fopen(path, "rb");
-    if (!t.fp)
-        return gw_err_set(err, GW_EIO, "sample '%s': cannot open: %s", path, strerror(errno));
+    /* a regular file only: a FIFO or a device is refused before any read */
+    int orc = gw_input_open(path, "sample", &t.fp, err);
+    if (orc != GW_OK)
+        return orc;
     t.npre = fread(t.pre, 1, sizeof t.pre, t.fp);
     int rc;
     if (t.npre == sizeof t.pre && memcmp(t.pre, h5_signature, sizeof t.pre) == 0) {

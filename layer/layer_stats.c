@@ -349,6 +349,8 @@ int gw_cmd_layer_stats(int argc, char **argv)
         return fail("a results table is required: granwave layer-stats RESULTS.csv");
     if (parse_fit_mask(fit, &R.fit_mask, &err) != GW_OK)
         return fail(err.msg);
+    if (out && gw_out_check(out, "layer-stats --out", &err) != GW_OK) /* before any work */
+        return fail(err.msg);
     R.input = pos[0];
     R.cmdline = command_line(argc, argv);
     int rc = gw_layer_results_read(R.input, &R.t, &err);
@@ -364,6 +366,12 @@ int gw_cmd_layer_stats(int argc, char **argv)
         fprintf(stderr, "granwave layer-stats: %s: out of memory\n", R.input);
         return 1;
     }
+    long undecided = 0;
+    for (int i = 0; i < R.gs.n; i++)
+        undecided += R.gs.g[i].n - R.gs.g[i].n_valid;
+    if (undecided > 0) /* recorded as n_points - n_valid in groups.csv and the JSON */
+        fprintf(stderr, "granwave layer-stats: warning: %ld point(s) with bounced = nan (undecided) are left out of "
+                        "the bounce shares\n", undecided);
     int status = 0;
     if (out && layer_stats_write_files(&R, out, &err) != GW_OK) {
         fprintf(stderr, "granwave layer-stats --out: %s\n", err.msg);

@@ -50,7 +50,9 @@ extern const int gw_layer_results_nrequired;
  * messages). GW_EIO when the file cannot be read; GW_EFORMAT naming
  * "path:line" for a missing header or required column, a wrong number of
  * cells, a non-numeric model cell or case number, `bounced` other than 0, 1
- * or NaN, no data rows. */
+ * or NaN, no data rows, a case number that appears twice, a row with bounced 1
+ * and a non-finite e_n, e or alpha_r. A FIFO, device or directory is refused
+ * (GW_EFORMAT) without reading it. */
 int gw_layer_results_read(const char *path, gw_layer_results *t, gw_err *err);
 int gw_layer_results_parse(const char *text, const char *name, gw_layer_results *t,
                            gw_err *err);

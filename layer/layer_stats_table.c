@@ -8,6 +8,8 @@
  * energy fractions; the bounce share and the global verdict share >= S
  * (physics.md 2.5, S = 75 % in the paper); the running means over the first k
  * points (the paper's Fig. 10: how many points make the mean stable).
+ * The table is read as a regular file only (gw_input_read); a case number
+ * appearing twice, or a bouncing row without e_n, e or alpha_r, is refused.
  * Units: as in the table (m, deg, fractions of the incident energy, R_m).
  */
 #define _POSIX_C_SOURCE 200809L
@@ -210,6 +212,46 @@ static int parse_row(gw_layer_results *t, char *line, long ln, int ncells, int c
     return GW_OK;
 }
 
+static int cmp_case(const void *a, const void *b)
+{
+    long x = *(const long *)a, y = *(const long *)b;
+    return (x > y) - (x < y);
+}
+
+/* Whole-table checks: a case number appears once (a table stitched from two
+ * runs would count its points twice), and a bouncing point carries its e_n, e
+ * and alpha_r (a NaN there would drop out of the means while the point still
+ * counts in the share). */
+static int check_rows(const gw_layer_results *t, gw_err *err)
+{
+    long *ids = malloc((size_t)t->nrows * sizeof *ids);
+    if (!ids)
+        return gw_err_set(err, GW_ENOMEM, "%s: out of memory", t->path);
+    memcpy(ids, t->case_id, (size_t)t->nrows * sizeof *ids);
+    qsort(ids, (size_t)t->nrows, sizeof *ids, cmp_case);
+    long dup = -1;
+    for (long i = 1; i < t->nrows && dup < 0; i++)
+        if (ids[i] == ids[i - 1])
+            dup = ids[i];
+    free(ids);
+    if (dup >= 0)
+        return gw_err_set(err, GW_EFORMAT, "%s: case %ld appears more than once (a table of one sweep holds each case once)",
+                          t->path, dup);
+    const int cb = gw_layer_results_col(t, "bounced");
+    const char *const need[] = {"e_n", "e", "alpha_r"};
+    for (long r = 0; cb >= 0 && r < t->nrows; r++) {
+        if (t->val[r * t->ncols + cb] != 1)
+            continue;
+        for (int j = 0; j < 3; j++) {
+            int c = gw_layer_results_col(t, need[j]);
+            if (c >= 0 && !isfinite(t->val[r * t->ncols + c]))
+                return gw_err_set(err, GW_EFORMAT, "%s: case %ld bounced but its %s is %g", t->path,
+                                  t->case_id[r], need[j], t->val[r * t->ncols + c]);
+        }
+    }
+    return GW_OK;
+}
+
 int gw_layer_results_parse(const char *text, const char *name, gw_layer_results *t, gw_err *err)
 {
     memset(t, 0, sizeof *t);
@@ -245,6 +287,8 @@ int gw_layer_results_parse(const char *text, const char *name, gw_layer_results 
             rc = parse_row(t, line, ln, ncells, cb, err);
     }
     free(buf);
+    if (rc == GW_OK && header_line && t->nrows > 0)
+        rc = check_rows(t, err);
     if (rc == GW_OK && !header_line)
         rc = gw_err_set(err, GW_EFORMAT, "%s:%ld: no header line (an empty table)", name, ln);
     else if (rc == GW_OK && t->nrows == 0)
@@ -257,36 +301,16 @@ int gw_layer_results_parse(const char *text, const char *name, gw_layer_results 
 int gw_layer_results_read(const char *path, gw_layer_results *t, gw_err *err)
 {
     memset(t, 0, sizeof *t);
-    FILE *fp = fopen(path, "rb");
-    if (!fp)
-        return gw_err_set(err, GW_EIO, "%s: cannot open: %s", path, strerror(errno));
-    size_t cap = 1 << 16, len = 0;
-    char *buf = malloc(cap);
-    int rc = GW_OK;
-    while (buf) {
-        len += fread(buf + len, 1, cap - 1 - len, fp);
-        if (len < cap - 1)
-            break;
-        char *nb = realloc(buf, 2 * cap);
-        if (!nb) {
-            free(buf);
-            buf = NULL;
-            break;
-        }
-        buf = nb;
-        cap *= 2;
-    }
-    if (!buf)
-        rc = gw_err_set(err, GW_ENOMEM, "%s: out of memory", path);
-    else if (ferror(fp))
-        rc = gw_err_set(err, GW_EIO, "%s: read error", path);
-    else if (memchr(buf, '\0', len))
+    char *buf = NULL;
+    size_t len = 0;
+    /* a regular file only (a FIFO or device is refused, never read), bounded */
+    int rc = gw_input_read(path, "layer-stats RESULTS.csv", (size_t)1 << 32, &buf, &len, err);
+    if (rc == GW_EINVAL)
+        rc = GW_EFORMAT;
+    if (rc == GW_OK && memchr(buf, '\0', len))
         rc = gw_err_set(err, GW_EFORMAT, "%s:1: binary data (NUL byte), not a CSV table", path);
-    fclose(fp);
-    if (rc == GW_OK) {
-        buf[len] = '\0';
+    if (rc == GW_OK)
         rc = gw_layer_results_parse(buf, path, t, err);
-    }
     free(buf);
     return rc;
 }

@@ -1,0 +1,177 @@
+#!/bin/bash
+# test_cli_property.sh GRANWAVE SRCDIR: a property test of every command's numeric
+# flags (issue 18).
+#
+# What is tried: for every command (chain, falcon, wavespeed, softwall, dispersion,
+# sweep, layer-make, layer-impact, layer-stats) the numeric flags are read from
+# the command's own --help (a flag with an upper-case metavar that is not a name,
+# file, directory, model, kind, law, list or "how": R, K, V,V.., A:B, N, ...), and
+# each is given, on top of a short valid run of that command (small n, short
+# t-max), each of the values
+#     nan  inf  -inf  -1  0  1e-308  1e308  99999999999999999999  junk
+# What is asserted for each case, run under `timeout` (20 s) and, outside the
+# sanitizer build, a memory limit (ulimit -v 4 GiB):
+#   - it ends (no hang: timeout kills it and the case fails) and does not crash
+#     (exit code 0, 1 or 2 only; no signal);
+#   - nan, inf, -inf and junk are refused: exit 2; so is 99999999999999999999
+#     for an integer flag (A:B lists and ranges too);
+#   - exit 0 only where the value is legitimate for that flag, decided per value
+#     class: -1 only for the flags listed in NEG_OK (signed quantities),
+#     0 where the flag's help documents it ("0 =", "[0", "[0]") or in ZERO_OK,
+#     1e-308 / 1e308 / 1e20 only where the flag is bounded by nothing physical
+#     (TINY_OK, HUGE_OK); elsewhere a tiny or absurd value must be refused (2)
+#     or fail the run (1);
+#   - on exit 2: exactly one line on stderr, naming the flag ("--flag", or the
+#     flag's name as the quantity, "t-max (s): ..."), and nothing written in the
+#     --out directory (an existing empty directory; layer-make's sample goes in it);
+#   - no AddressSanitizer / UndefinedBehaviorSanitizer report on stderr (the test
+#     runs again in the sanitizer build, see setup.sh).
+# KNOWN lists cases that fail because of code another change owns (layer CLI and
+# layer model files); each is printed as KNOWN, not counted, and listed in the
+# hardening report with the fix. Total: ~1260 cases, one background job per
+# command: about 1.5 min (a few in the sanitizer build).
+#
+# A longer run: GW_PROPERTY_VALUES="nan inf ... 1e-3 1e3 5e-324" overrides the
+# value list; GW_PROPERTY_CMDS="chain falcon" restricts the commands.
+set -u
+GW=$1
+SRC=${2:-.}
+tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
+fails=0; passes=0; known=0
+ko() { echo "FAIL: $1"; fails=$((fails+1)); }
+
+VALUES=${GW_PROPERTY_VALUES:-"nan inf -inf -1 0 1e-308 1e308 99999999999999999999 junk"}
+CMDS=${GW_PROPERTY_CMDS:-"chain falcon wavespeed softwall dispersion sweep layer-make layer-impact layer-stats"}
+
+# flag classes (command:flag or *:flag)
+NEG_OK=" layer-impact:x layer-impact:gap "          # signed: x is an abscissa; gap < 0 is refused by the model (2)
+ZERO_OK=" *:poisson layer-make:damping layer-impact:ring-width *:gravity *:gamma *:alpha *:dt *:dt-max *:t-max *:dt-out *:energy-tol *:jobs *:seed
+          layer-stats:delta-rm layer-impact:x layer-impact:alpha layer-make:height-rm dispersion:column-n
+          dispersion:dt-out *:restitution-v "
+TINY_OK=" *:gravity *:gamma *:alpha *:energy-tol layer-impact:x layer-impact:alpha layer-impact:gap
+          layer-stats:delta-rm layer-make:height-rm "
+HUGE_OK=" *:energy-tol *:skin layer-impact:dt-out " # a huge list skin or sampling step only costs or thins output
+# known failures owned by files this change may not edit (see the report)
+# (layer_model.c / layer_cli.c / layer_cmd.c: messages name the quantity, not the
+# flag; --rb-rm is reported as --x; --vi 1e20 runs out of memory or time; --vi and
+# --gap near 1e308 overflow the cell count in layer_contacts.c pairs_cells, a
+# signed overflow UBSan reports)
+KNOWN=${GW_PROPERTY_KNOWN:-" layer-make:shear-modulus layer-make:poisson layer-impact:shear-modulus
+       layer-impact:poisson layer-impact:rb-rm layer-impact:vi layer-impact:gap "}
+
+in_list() { # list cmd flag
+    case "$1" in *" $2:$3 "*|*" *:$3 "*) return 0;; esac
+    case "$1" in *" $2:$3"$'\n'*|*" *:$3"$'\n'*) return 0;; esac
+    return 1
+}
+
+# ulimit -v breaks AddressSanitizer's shadow memory: use it only when it works
+MEMLIM="ulimit -v 4194304;"
+bash -c "$MEMLIM \"$GW\" version" >/dev/null 2>&1 || MEMLIM=""
+
+# fixtures: a small sample, a results table, a sweep config
+fix=$tmp
+"$GW" layer-make --n 20 --width-rm 8 --out "$tmp/s20.txt" >/dev/null 2>&1 || { echo "FAIL: fixture layer-make"; exit 1; }
+cp "$SRC/data/measured/layer_walls/results.csv" "$tmp/results.csv"
+printf '[sweep]\nmodel = chain\n[grid]\nn = 1:2\n[params]\nsolver = rk4\n' >"$tmp/sweep.ini"
+
+base_args() { # cmd outdir -> the short valid run of cmd
+    case "$1" in
+    chain) echo "--n 2 --out $2";;
+    falcon) echo "--n 1:2 --heights none --quiet --jobs 1 --out $2";;
+    wavespeed) echo "--n 6:8 --vimp 0.3 --quiet --jobs 1 --out $2";;
+    softwall) echo "--n 1:3 --quiet --jobs 1 --out $2";;
+    dispersion) echo "--n 16 --t-samples 64 --out $2";;
+    sweep) echo "$fix/sweep.ini --quiet --out $2";;
+    layer-make) echo "--n 10 --width-rm 6 --t-max 0.05 --out $2/sample.txt";;
+    layer-impact) echo "--sample $fix/s20.txt --t-max 0.001 --out $2";;
+    layer-stats) echo "$fix/results.csv --out $2";;
+    esac
+}
+
+numeric_flags() { # cmd -> "flag metavar" lines
+    "$GW" "$1" --help | awk '/^  --/ {print $1, $2}' |
+        awk '$2 ~ /^[A-Z][A-Z0-9:,.]*$/ && $2 !~ /^(NAME|DIR|FILE|MODEL|KIND|LAW|HOW|LIST)$/ {sub(/^--/, "", $1); print $1, $2}'
+}
+
+t0=$(date +%s)
+# one command per background job (the cases of a command run in sequence)
+run_cmd() {
+    local cmd=$1 ncase=0 passes=0 fails=0 known=0
+    tmp=$tmp/$cmd; mkdir -p "$tmp"
+    help=$("$GW" "$cmd" --help)
+    while read -r flag mv; do
+        [ -n "$flag" ] || continue
+        fhelp=$(printf '%s\n' "$help" | grep -E -- "^  --$flag " | head -1)
+        # integer flags: the parser says so for a fractional value
+        intflag=0
+        out1="$tmp/probe"; rm -rf "$out1"
+        if timeout -s KILL 3 "$GW" "$cmd" $(base_args "$cmd" "$out1") "--$flag" 1.5 2>&1 >/dev/null </dev/null |
+                grep -q "not an integer"; then
+            intflag=1
+        fi
+        rm -rf "$out1"
+        for val in $VALUES; do
+            ncase=$((ncase+1))
+            out="$tmp/out_$ncase"
+            mkdir "$out" # an existing, empty --out: it must stay empty on exit 2
+            args=$(base_args "$cmd" "$out")
+            bash -c "$MEMLIM exec timeout -s KILL 20 \"\$@\"" _ "$GW" "$cmd" $args "--$flag" "$val" \
+                >"$tmp/stdout" 2>"$tmp/stderr" </dev/null
+            rc=$?
+            what="$cmd --$flag $val"
+            bad=""
+            if grep -qE 'ERROR: AddressSanitizer|runtime error:|ERROR: LeakSanitizer' "$tmp/stderr"; then
+                bad="sanitizer report"
+            elif [ $rc -gt 2 ]; then
+                bad="exit $rc (crash, hang or memory limit)"
+            else
+                # which exit codes this value class allows
+                allow="12"
+                case "$val" in
+                nan|inf|-inf|junk) allow="2";;
+                99999999999999999999) if [ $intflag -eq 1 ] || [ "$mv" = "A:B" ]; then allow="2";
+                                      elif in_list "$HUGE_OK" "$cmd" "$flag"; then allow="012"; fi;;
+                -1) in_list "$NEG_OK" "$cmd" "$flag" && allow="012";;
+                0) if in_list "$ZERO_OK" "$cmd" "$flag" || printf '%s' "$fhelp" | grep -qE '0 =|\[0[],]|\[0\]'; then allow="012"; fi;;
+                1e-308) in_list "$TINY_OK" "$cmd" "$flag" && allow="012";;
+                1e308) in_list "$HUGE_OK" "$cmd" "$flag" && allow="012";;
+                *) allow="012";;
+                esac
+                case "$allow" in *$rc*) ;; *) bad="exit $rc, allowed: $allow";; esac
+                if [ -z "$bad" ] && [ $rc -eq 2 ]; then
+                    nl=$(wc -l <"$tmp/stderr")
+                    if [ "$nl" -ne 1 ]; then
+                        bad="exit 2 with $nl stderr lines"
+                    elif ! grep -qE -- "(--|[ :(])$flag([^a-z-]|$)" "$tmp/stderr"; then
+                        bad="exit 2 without naming --$flag"
+                    elif [ -n "$(ls -A "$out" 2>/dev/null)" ]; then
+                        bad="exit 2 but wrote into --out"
+                    fi
+                fi
+            fi
+            if [ -n "$bad" ] && in_list " $KNOWN " "$cmd" "$flag"; then
+                echo "KNOWN: $what: $bad: $(head -c 200 "$tmp/stderr" | head -1)"; known=$((known+1))
+            elif [ -n "$bad" ]; then
+                ko "$what: $bad: $(head -c 300 "$tmp/stderr" | head -2 | tr '\n' ' ')"
+            else
+                passes=$((passes+1))
+            fi
+            rm -rf "$out"
+        done
+    done < <(numeric_flags "$cmd")
+    echo "$ncase $passes $fails $known" >"$tmp/counts"
+}
+base=$tmp
+for cmd in $CMDS; do
+    run_cmd "$cmd" >"$base/$cmd.log" 2>&1 &
+done
+wait
+ncase=0
+for cmd in $CMDS; do
+    cat "$base/$cmd.log"
+    read -r c p f k <"$base/$cmd/counts" || { echo "FAIL: $cmd: no result"; fails=$((fails+1)); continue; }
+    ncase=$((ncase+c)); passes=$((passes+p)); fails=$((fails+f)); known=$((known+k))
+done
+echo "$ncase cases, $passes passed, $fails failed, $known known, $(( $(date +%s) - t0 )) s"
+[ $fails -eq 0 ]

@@ -1,0 +1,136 @@
+#!/bin/bash
+# test_cli_refusals.sh GRANWAVE SRCDIR: the hardening classes of issue 18, each
+# asserted by its behaviour (exit code, nothing written, no hang, no sanitizer
+# report), not only by its message:
+#  1 memory: a negative or absurd item of a --vimp / --heights / --radii list is
+#    refused by the list parser itself (exit 2, the item named; before the fix
+#    wavespeed printed it after freeing the list); falcon refuses the speeds
+#    chain refuses.
+#  3 special files: a FIFO or /dev/zero given as a sweep config, a layer sample,
+#    a layer-stats table or FFTW wisdom is refused at once (exit 2 within 5 s,
+#    one line naming the input), never read.
+#  4 outputs: a refused run writes nothing in --out; an --out under a file or a
+#    read-only directory is refused before the work; --wisdom never overwrites a
+#    file that is not FFTW wisdom (exit 2, the file unchanged) and still writes
+#    real wisdom.
+#  5 tolerances outside [1e-15, 1e-4] are refused by every command (chain,
+#    falcon, wavespeed, softwall, dispersion, sweep); options with no effect
+#    (--gamma without --damping kk, --alpha without hc, --restitution-v without
+#    --restitution, softwall --sheets with --kwall / --sheet / --wall-material)
+#    are refused, naming the option.
+#  8 a misspelt sweep model is reported as such; "n = 5:1" as an empty range;
+#    results written to a full device (/dev/full) exit 1 with "stdout: write
+#    failed", never 0 nor "write failed: Success"; layer-stats
+#    refuses duplicated cases and bouncing rows without e_n, and warns about
+#    undecided points.
+set -u
+GW=$1
+SRC=${2:-.}
+tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
+fails=0; passes=0
+ok() { echo "PASS: $1"; passes=$((passes+1)); }
+ko() { echo "FAIL: $1"; fails=$((fails+1)); }
+
+# refused WHAT PATTERN CMD...: exit 2 within 10 s, exactly one stderr line that
+# matches PATTERN, no sanitizer report, nothing in $tmp/o
+refused() {
+    local what=$1 pat=$2; shift 2
+    rm -rf "$tmp/o"
+    timeout -s KILL 10 "$GW" "$@" >"$tmp/stdout" 2>"$tmp/stderr" </dev/null
+    local rc=$?
+    if [ $rc -ne 2 ]; then ko "$what: exit $rc, expected 2 ($(head -c 200 "$tmp/stderr"))"; return; fi
+    if [ "$(wc -l <"$tmp/stderr")" -ne 1 ]; then ko "$what: $(wc -l <"$tmp/stderr") stderr lines"; cat "$tmp/stderr"; return; fi
+    if ! grep -qE -- "$pat" "$tmp/stderr"; then ko "$what: message does not match '$pat': $(cat "$tmp/stderr")"; return; fi
+    if grep -qE 'Sanitizer|runtime error' "$tmp/stderr"; then ko "$what: sanitizer report"; return; fi
+    if [ -e "$tmp/o" ]; then ko "$what: wrote $tmp/o ($(ls "$tmp/o" 2>/dev/null | tr '\n' ' '))"; return; fi
+    ok "$what"
+}
+
+# --- 1: lists checked item by item inside the parser
+refused "wavespeed --vimp with a negative item" 'wavespeed --vimp: item 2 is -0.3' wavespeed --vimp 0.1,-0.3 --out "$tmp/o"
+refused "wavespeed --vimp with an absurd item" 'wavespeed --vimp: item 1 is 1e\+308' wavespeed --vimp 1e308 --out "$tmp/o"
+refused "falcon --vimp refuses what chain refuses (2000 m/s)" 'falcon --vimp: item 2' falcon --n 1:2 --vimp 0.3,2000 --heights none --out "$tmp/o"
+"$GW" chain --vimp 2000 >/dev/null 2>&1; [ $? -eq 2 ] && ok "chain --vimp 2000 refused (the shared bound)" || ko "chain --vimp 2000 not refused"
+refused "falcon --heights beyond the shared speed bound" 'falcon --heights: item 1' falcon --n 1:2 --heights 1e12 --out "$tmp/o"
+refused "chain --radii with a zero radius" 'radii: item 2 is 0' chain --n 3 --radii 4e-3,0,4e-3 --out "$tmp/o"
+
+# --- 3: special files
+mkfifo "$tmp/fifo"
+refused "sweep config is a FIFO" 'FIFO' sweep "$tmp/fifo" --out "$tmp/o"
+refused "layer-impact --sample is a FIFO" 'sample.*FIFO' layer-impact --sample "$tmp/fifo" --out "$tmp/o"
+refused "layer-impact --sample is /dev/zero" 'sample.*character device' layer-impact --sample /dev/zero --out "$tmp/o"
+refused "layer-stats table is a FIFO" 'FIFO' layer-stats "$tmp/fifo" --out "$tmp/o"
+refused "dispersion --wisdom is a FIFO" 'wisdom.*FIFO' dispersion --n 16 --t-samples 64 --wisdom "$tmp/fifo" --out "$tmp/o"
+refused "dispersion --wisdom is /dev/zero" 'wisdom.*character device' dispersion --n 16 --t-samples 64 --wisdom /dev/zero --out "$tmp/o"
+refused "layer-make --out is a FIFO" 'FIFO' layer-make --n 10 --width-rm 6 --t-max 0.05 --out "$tmp/fifo"
+[ -p "$tmp/fifo" ] && ok "the FIFO is still a FIFO" || ko "layer-make replaced the FIFO"
+
+# --- 4: outputs
+echo "my notes" >"$tmp/notes.txt"
+refused "--wisdom naming a file that is not wisdom" 'not FFTW wisdom' dispersion --n 16 --t-samples 64 --wisdom "$tmp/notes.txt"
+[ "$(cat "$tmp/notes.txt")" = "my notes" ] && ok "that file is unchanged" || ko "--wisdom overwrote a file that is not wisdom"
+"$GW" dispersion --n 16 --t-samples 64 --wisdom "$tmp/w.wis" >/dev/null 2>&1 && head -c 7 "$tmp/w.wis" | grep -q '(fftw-3' &&
+    "$GW" dispersion --n 16 --t-samples 64 --wisdom "$tmp/w.wis" >/dev/null 2>&1 &&
+    ok "--wisdom writes wisdom and reads it back" || ko "--wisdom round trip"
+refused "chain --out under a regular file" '[Nn]ot a directory' chain --n 2 --out "$tmp/notes.txt/sub"
+mkdir "$tmp/ro"; chmod 555 "$tmp/ro"
+if [ "$(id -u)" -ne 0 ]; then
+    refused "chain --out in a read-only directory" 'cannot write' chain --n 2 --out "$tmp/ro/x"
+else
+    echo "SKIP: read-only directory (running as root)"
+fi
+refused "layer-make --out in a missing directory, before the run" 'directory' layer-make --n 10 --width-rm 6 --out "$tmp/missing/s.txt"
+refused "layer-stats --out under a file, before reading" '[Nn]ot a directory' layer-stats "$SRC/data/measured/layer_walls/results.csv" --out "$tmp/notes.txt/x"
+
+# --- 5: tolerances and options with no effect
+for cmd in "chain --n 2" "falcon --n 1:2 --heights none" "wavespeed --n 6:8 --vimp 0.3" "softwall --n 1:3" "dispersion --n 16 --t-samples 64"; do
+    c=${cmd%% *}
+    refused "$c --rtol 1" "$c --rtol: 1 is outside" $cmd --rtol 1 --out "$tmp/o"
+    refused "$c --atol 1" "$c --atol: 1 is outside" $cmd --atol 1 --out "$tmp/o"
+    refused "$c --rtol 1e-2 (17 % off)" "$c --rtol" $cmd --rtol 1e-2 --out "$tmp/o"
+done
+printf '[sweep]\nmodel = chain\n[grid]\nn = 1:2\n[params]\nrtol = 0.5\n' >"$tmp/tol.ini"
+refused "sweep with rtol = 0.5" 'rtol' sweep "$tmp/tol.ini" --out "$tmp/o"
+"$GW" chain --n 2 --rtol 1e-4 --atol 1e-4 >/dev/null 2>&1 && ok "chain --rtol 1e-4 accepted (the bound)" || ko "chain --rtol 1e-4 refused"
+refused "chain --gamma without damping" 'chain --gamma: has no effect' chain --n 2 --gamma 3 --out "$tmp/o"
+refused "chain --alpha with kk" 'chain --alpha: has no effect' chain --n 2 --damping kk --alpha 0.1 --out "$tmp/o"
+refused "chain --gamma with --restitution" 'chain --gamma' chain --n 2 --damping kk --gamma 1 --restitution 0.9 --out "$tmp/o"
+refused "chain --restitution-v without --restitution" 'restitution-v' chain --n 2 --restitution-v 0.3 --out "$tmp/o"
+refused "softwall --sheets --kwall" 'softwall --kwall: has no effect with --sheets' softwall --sheets --kwall 1e9 --out "$tmp/o"
+refused "softwall --sheets --sheet" 'softwall --sheet: has no effect' softwall --sheets --sheet brass --out "$tmp/o"
+refused "softwall --wall-material (the wall is --kwall)" 'softwall --wall-material' softwall --wall-material brass --out "$tmp/o"
+"$GW" chain --n 2 --damping kk --gamma 1 >/dev/null 2>&1 && ok "chain --damping kk --gamma accepted" || ko "chain --damping kk --gamma refused"
+
+# --- 8: smaller gaps
+printf '[sweep]\nmodel = chian\n[grid]\nn = 1:2\n' >"$tmp/m.ini"
+refused "misspelt sweep model" "m.ini:2: unknown model 'chian'" sweep "$tmp/m.ini" --out "$tmp/o"
+printf '[sweep]\nmodel = chain\n[grid]\nn = 5:1\n' >"$tmp/r.ini"
+refused "n = 5:1 is an empty range" "r.ini:4: n: range '5:1' is empty" sweep "$tmp/r.ini" --out "$tmp/o"
+if [ -w /dev/full ]; then
+    # results to a full device: exit 1 with the reason, never exit 0 or "Success"
+    for args in "chain --n 2 --json" "chain --n 2" "layer-stats $SRC/data/measured/layer_walls/results.csv --json"; do
+        "$GW" $args >/dev/full 2>"$tmp/full.err"; rc=$?
+        if [ $rc -eq 1 ] && grep -q "stdout: write failed" "$tmp/full.err" && ! grep -q Success "$tmp/full.err"; then
+            ok "granwave $args >/dev/full: exit 1, 'stdout: write failed' (not 'Success')"
+        else
+            ko "granwave $args >/dev/full: exit $rc: $(cat "$tmp/full.err")"
+        fi
+    done
+else
+    echo "SKIP: /dev/full not available"
+fi
+h="# granwave test\ncase,rb-rm,point,x_impact,bounced,e_n,e,alpha_r,v_ni,v_nr,v_r,penetration,penetration_rm,dissipated_first_contact,block_loss_first_contact,energy_error,wave_speed,t_end,steps"
+row() { echo "$1,1,$2,0,$3,$4,0.5,10,1,0.5,0.5,0.01,0.1,0.1,0.1,1e-6,100,0.05,1000"; }
+{ echo -e "$h"; row 0 0 1 0.5; row 1 1 0 nan; row 1 2 1 0.5; } >"$tmp/dup.csv"
+refused "layer-stats refuses a duplicated case" 'case 1 appears more than once' layer-stats "$tmp/dup.csv" --out "$tmp/o"
+{ echo -e "$h"; row 0 0 1 0.5; row 1 1 1 nan; } >"$tmp/nan.csv"
+refused "layer-stats refuses a bouncing row without e_n" 'case 1 bounced but its e_n is nan' layer-stats "$tmp/nan.csv" --out "$tmp/o"
+{ echo -e "$h"; row 0 0 1 0.5; row 1 1 nan nan; row 2 2 0 nan; } >"$tmp/und.csv"
+"$GW" layer-stats "$tmp/und.csv" --json >"$tmp/und.json" 2>"$tmp/und.err"; rc=$?
+if [ $rc -eq 0 ] && grep -q "1 point(s) with bounced = nan" "$tmp/und.err" && grep -q '"n_valid":[[:space:]]*2' "$tmp/und.json"; then
+    ok "layer-stats warns about an undecided point and records n_valid = 2 of 3"
+else
+    ko "layer-stats undecided point: exit $rc, $(cat "$tmp/und.err")"
+fi
+echo "$passes passed, $fails failed"
+[ $fails -eq 0 ]

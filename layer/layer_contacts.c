@@ -52,14 +52,16 @@ static int pairs_cells(const gw_layer *L, layer_contact **c, int *nc, int *cap)
         y0 = fmin(y0, y[2 * i + 1]), y1 = fmax(y1, y[2 * i + 1]);
     }
     /* a particle far away (a block thrown high) must not blow up the grid:
-     * coarsen the cells until their number is linear in n (pairs stay exact) */
+     * coarsen the cells until their number is linear in n (pairs stay exact);
+     * counted in doubles, so that no extent overflows an integer */
+    const double ex = x1 - x0, ey = y1 - y0;
+    if (!isfinite(ex) || !isfinite(ey))
+        return GW_ELIMIT;
     double hx = h;
-    long nx = (long)((x1 - x0) / hx) + 1, ny = (long)((y1 - y0) / hx) + 1;
     const long maxc = 16L * n + 64;
-    while ((double)nx * (double)ny > (double)maxc) {
+    while ((ex / hx + 1) * (ey / hx + 1) > (double)maxc)
         hx *= 2;
-        nx = (long)((x1 - x0) / hx) + 1, ny = (long)((y1 - y0) / hx) + 1;
-    }
+    long nx = (long)(ex / hx) + 1, ny = (long)(ey / hx) + 1;
     const double hy = hx;
     long ncell = nx * ny;
     int *start = calloc((size_t)ncell + 1, sizeof *start);
@@ -144,7 +146,10 @@ int layer_contacts_build(gw_layer *L, gw_err *err)
     }
     if (rc != GW_OK) {
         free(c);
-        return gw_err_set(err, rc, "layer: out of memory building the contact list");
+        return rc == GW_ELIMIT
+                   ? gw_err_set(err, rc, "layer: the particles spread over an extent too large for "
+                                "double precision: no contact list")
+                   : gw_err_set(err, rc, "layer: out of memory building the contact list");
     }
     if (nc > 1)
         qsort(c, (size_t)nc, sizeof *c, contact_cmp);

@@ -69,13 +69,19 @@ int gw_layer_impact_check(const gw_layer_sample *smp, const gw_layer_impact_para
     int rc;
     if (!(p->rb_rm > 0) || !isfinite(p->rb_rm))
         return gw_err_set(err, GW_EINVAL, "rb-rm: block radius %g R_m must be positive", p->rb_rm);
-    if ((rc = gw_check_positive(p->vi, "vi (incident speed, m/s)", err)) != GW_OK)
+    /* (1 km/s: beyond it the grains' sound speed is near and Hertz contacts
+     * are no model; the verlet step falls as V_i^(-1/5)) */
+    if ((rc = gw_check_positive(p->vi, "vi (incident speed, m/s)", err)) != GW_OK ||
+        (rc = gw_check_range(p->vi, "vi (incident speed, m/s)", 0, 1e3, err)) != GW_OK)
         return rc;
     if (!(p->alpha_deg >= 0 && p->alpha_deg < 90))
         return gw_err_set(err, GW_EINVAL, "alpha: incidence %g deg is outside [0, 90)", p->alpha_deg);
     if (!(p->gap >= 0) || !isfinite(p->gap))
         return gw_err_set(err, GW_EINVAL, "gap: %g m < 0 puts the block inside the layer (overlapping)",
                           p->gap);
+    if (p->gap > 1e3)
+        return gw_err_set(err, GW_EINVAL, "gap: %g m is above 1000 m (start the block closer and "
+                          "give its speed)", p->gap);
     if ((rc = gw_check_range(p->x, "x (impact abscissa, m)", -1e6, 1e6, err)) != GW_OK ||
         (rc = gw_check_range(p->height_rm, "height-rm", 0, 1e6, err)) != GW_OK ||
         (rc = gw_check_positive(p->t_max, "t-max (s)", err)) != GW_OK ||
@@ -88,6 +94,9 @@ int gw_layer_impact_check(const gw_layer_sample *smp, const gw_layer_impact_para
     if (p->t_max / p->dt_out > 2e6)
         return gw_err_set(err, GW_EINVAL, "dt-out: %g s gives more than 2e6 samples up to t-max", p->dt_out);
     const double rb = p->rb_rm * smp->rm, xc = 0.5 * smp->width + p->x;
+    if (2 * rb > smp->width)
+        return gw_err_set(err, GW_EINVAL, "rb-rm: a block of radius %g R_m (%g m) is wider than the box "
+                          "(%g m)", p->rb_rm, rb, smp->width);
     if (xc - rb < 0 || xc + rb > smp->width)
         return gw_err_set(err, GW_EINVAL, "x: block of radius %g m at x = %g m from the centre "
                           "does not fit in the box of width %g m", rb, p->x, smp->width);

@@ -57,7 +57,7 @@ HUGE_OK=" *:energy-tol *:skin layer-impact:dt-out " # a huge list skin or sampli
 # --gap near 1e308 overflow the cell count in layer_contacts.c pairs_cells, a
 # signed overflow UBSan reports)
 KNOWN=${GW_PROPERTY_KNOWN:-" layer-make:shear-modulus layer-make:poisson layer-impact:shear-modulus
-       layer-impact:poisson layer-impact:rb-rm layer-impact:vi layer-impact:gap "}
+       layer-impact:poisson "}
 
 in_list() { # list cmd flag
     case "$1" in *" $2:$3 "*|*" *:$3 "*) return 0;; esac

@@ -146,7 +146,7 @@ static int verlet_step(gw_solver *s, double h)
     v->rhs_evals++;
     if (rc != 0)
         return rc;
-    for (long i = 0; i < n; i++) /* blend, not branch: the loop vectorises */
+    for (long i = 0; i < n; i++) /* second half kick (a blend: drifts keep y) */
         y[i] = kick[i] * (pp[i] + hh * f[i]) + (1 - kick[i]) * y[i];
     v->steps++;
     return s->sys.project ? s->sys.project(v->t + h, h, y, v->f, s->sys.params) : 0;

@@ -26,12 +26,11 @@ typedef int (*gw_rhs_fn)(double t, const double *y, double *ydot, void *params);
 /* Event (root) functions g_k(t, y), k = 0..nroots-1. Same return convention. */
 typedef int (*gw_root_fn)(double t, const double *y, double *g, void *params);
 
-/* Projection after a step of length h (verlet backend): y is the end state,
- * whose last half kick used the rates ydot. The model may change y in place
- * (e.g. zero the history of a contact that opened) and correct ydot, which the
- * next step starts from; a rate it corrects by d must also move y by (h/2) d,
- * so that the half kick it already took is the corrected one. Same return
- * convention as the rhs. */
+/* Projection after a step of length h (verlet backend): y is the end state.
+ * The model may change y in place (e.g. zero the history of a contact that
+ * opened) and correct ydot, the rates the next step starts from (e.g. the
+ * rates at the end state where the rhs saw the predicted state on the other
+ * side of a discontinuity of the rates). Same return convention as the rhs. */
 typedef int (*gw_project_fn)(double t, double h, double *y, double *ydot, void *params);
 
 /* Banded Jacobian storage as SUNDIALS lays it out: column j, row i with

@@ -64,10 +64,9 @@ static int project(gw_layer *L, const int *closing, const int *slipping)
 
 int layer_step_project(double t, double h, double *y, double *ydot, void *P)
 {
-    (void)t;
+    (void)t, (void)h;
     gw_layer *L = P;
     const int n = L->nb, nc = L->nc;
-    (void)h;
     double *f = y + 6L * n, *fdot = ydot + 6L * n, *edot = fdot + nc;
     for (int k = 0; k < nc; k++) {
         if (!(L->un_last[k] > 0)) { /* open: its rate is already zero */

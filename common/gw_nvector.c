@@ -222,7 +222,32 @@ static realtype gw_nv_minquotient(N_Vector num, N_Vector den)
     return m;
 }
 
-/* z = sum_j c_j X_j, in j order per element; blocks keep z in L1 between terms. */
+/* The library's order when z is also a later term X_j (j > 0): z is first
+ * overwritten with c_0 X_0, and that new z is the X_j added later. */
+static int lincomb_aliased(int nvec, realtype *c, N_Vector *X, N_Vector z)
+{
+    const sunindextype n = LEN(z);
+    realtype *zd = DATA(z);
+    if (X[0] == z) {
+        if (c[0] != 1.0)
+            for (sunindextype i = 0; i < n; i++)
+                zd[i] *= c[0];
+    } else {
+        const realtype *x0 = DATA(X[0]);
+        for (sunindextype i = 0; i < n; i++)
+            zd[i] = c[0] * x0[i];
+    }
+    for (int j = 1; j < nvec; j++) {
+        const realtype *xj = DATA(X[j]);
+        for (sunindextype i = 0; i < n; i++)
+            zd[i] += c[j] * xj[i];
+    }
+    return 0;
+}
+
+/* z = sum_j c_j X_j, summed in j order per element (as the library). Sixteen
+ * elements at a time are kept in registers while the terms stream in, so z is
+ * written once instead of read and written per term. */
 static int gw_nv_linearcombination(int nvec, realtype *c, N_Vector *X, N_Vector z)
 {
     if (nvec < 1)
@@ -235,26 +260,33 @@ static int gw_nv_linearcombination(int nvec, realtype *c, N_Vector *X, N_Vector 
         gw_nv_linearsum(c[0], X[0], c[1], X[1], z);
         return 0;
     }
+    enum { V = 16 };
     const sunindextype n = LEN(z);
     realtype *zd = DATA(z);
-    enum { B = 512 };
-    for (sunindextype i0 = 0; i0 < n; i0 += B) {
-        sunindextype i1 = n - i0 < B ? n : i0 + B;
-        int j0 = 1;
-        if (X[0] == z) {
-            if (c[0] != 1.0)
-                for (sunindextype i = i0; i < i1; i++)
-                    zd[i] *= c[0];
-        } else {
-            const realtype *x0 = DATA(X[0]);
-            for (sunindextype i = i0; i < i1; i++)
-                zd[i] = c[0] * x0[i];
+    for (int j = 1; j < nvec; j++)
+        if (X[j] == z)
+            return lincomb_aliased(nvec, c, X, z);
+    /* first term: X[0] == z with c[0] == 1 starts from z itself */
+    const int keep = X[0] == z && c[0] == 1.0;
+    const realtype *x0 = DATA(X[0]);
+    sunindextype i = 0;
+    for (; i + V <= n; i += V) {
+        realtype acc[V];
+        for (int k = 0; k < V; k++)
+            acc[k] = keep ? x0[i + k] : c[0] * x0[i + k];
+        for (int j = 1; j < nvec; j++) {
+            const realtype *xj = DATA(X[j]) + i, cj = c[j];
+            for (int k = 0; k < V; k++)
+                acc[k] += cj * xj[k];
         }
-        for (int j = j0; j < nvec; j++) {
-            const realtype *xj = DATA(X[j]), cj = c[j];
-            for (sunindextype i = i0; i < i1; i++)
-                zd[i] += cj * xj[i];
-        }
+        for (int k = 0; k < V; k++)
+            zd[i + k] = acc[k];
+    }
+    for (; i < n; i++) {
+        realtype acc = keep ? x0[i] : c[0] * x0[i];
+        for (int j = 1; j < nvec; j++)
+            acc += c[j] * DATA(X[j])[i];
+        zd[i] = acc;
     }
     return 0;
 }

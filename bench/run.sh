@@ -4,7 +4,10 @@
 #                per-backend cost on the 40-bead column
 #   bench_long   1e3 .. 1e6 beads: ns per bead-step and peak RSS per backend
 #                (LONG_ARGS, e.g. "--nmax 100000 --reps 1" for a quick run)
-# Peers (SciPy, LAMMPS) and time to solution: bench/run_peers.sh.
+# Not run here: bench_falcon_accuracy (the convergence study behind the falcon
+# main job's RK4 step), bench/falcon_vs_lsoda.sh (falcon main job CPU against
+# 3 SciPy LSODA collisions). Peers (SciPy, LAMMPS) and time to solution:
+# bench/run_peers.sh.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 B=${1:-build}

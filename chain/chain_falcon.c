@@ -107,6 +107,8 @@ static cJSON *summary_json(const falcon *f)
         cJSON_AddNumberToObject(e, "energy_error_max", emax);
         cJSON_AddItemToArray(a, e);
     }
+    if (f->accuracy > 0)
+        cJSON_AddNumberToObject(o, "accuracy_target", f->accuracy);
     cJSON_AddNumberToObject(o, "wall_time_s", f->wall_s);
     return o;
 }
@@ -166,6 +168,10 @@ static int write_traces(const falcon *f, const char *dir, const char *hdr, gw_er
         gw_chain_trace tr;
         gw_chain_trace_init(&tr, p.n);
         gw_chain_run_opts o = f->c.run;
+        if (f->accuracy > 0) /* tau_1/50, 0.7 us at 0.3 m/s: one sample per pixel of
+                                the 1080-pixel-wide figures of the longest (N = 30,
+                                0.8 ms) trace, 45 per force period; maxima are events */
+            o.dt_out = gw_chain_tau1(p.mass, p.kwall, p.v_imp) / 50;
         o.sample = gw_chain_trace_sample;
         o.sample_ctx = &tr;
         gw_chain_result r;
@@ -194,6 +200,47 @@ static int write_traces(const falcon *f, const char *dir, const char *hdr, gw_er
     return GW_OK;
 }
 
+/* The solver by accuracy target: unless a solver option is given, RK4 with events
+ * as roots and dt = T_c/M, M = gw_chain_rk4_steps_per_tc(accuracy) (F_max and
+ * tau_N within the target, measured), sampled every tau_1/10 of the fastest
+ * impact (samples only feed the energy check and the state-based contact check;
+ * F_max and tau_N are events). The traces are sampled every tau_1/50 (see
+ * write_traces). */
+static int falcon_pick_solver(falcon *f, const gw_opt *opts, double accuracy, gw_err *err)
+{
+    const char *given[] = {"solver", "method", "rtol", "atol", "dt"};
+    int any = 0;
+    for (size_t i = 0; i < sizeof given / sizeof given[0]; i++)
+        any |= gw_cli_find(opts, given[i])->seen;
+    if (any) {
+        if (gw_cli_find(opts, "accuracy")->seen)
+            return gw_err_set(err, GW_EINVAL, "falcon --accuracy: give either --accuracy or the solver options");
+        return GW_OK;
+    }
+    if (f->c.params.damping != GW_DAMP_NONE || f->c.params.gravity != 0 || f->n_hi > 40) {
+        if (gw_cli_find(opts, "accuracy")->seen)
+            return gw_err_set(err, GW_EINVAL, "falcon --accuracy: the step study covers undamped columns "
+                                              "of N <= 40 without gravity; give --solver instead");
+        return GW_OK; /* outside the study: the adaptive default */
+    }
+    int m = gw_chain_rk4_steps_per_tc(accuracy);
+    if (m <= 0)
+        return gw_err_set(err, GW_EINVAL, "falcon --accuracy: %g outside [1e-9, 1e-2]", accuracy);
+    f->c.solver = "rk4";
+    f->c.method = "default";
+    f->c.run.solver = gw_solver_rk4;
+    f->c.run.sp.method = GW_METHOD_DEFAULT;
+    f->c.run.steps_per_tc = m;
+    f->accuracy = accuracy;
+    if (!gw_cli_find(opts, "dt-out")->seen) {
+        double vmax = 0;
+        for (int i = 0; i < f->nv; i++)
+            vmax = fmax(vmax, f->v[i]);
+        f->c.run.dt_out = gw_chain_tau1(f->c.params.mass, f->c.params.kwall, vmax) / 10;
+    }
+    return GW_OK;
+}
+
 static const char *falcon_summary =
     "The rigid-wall study of Falcon et al. (1998): one collision for every N in\n"
     "[1, nmax] at each impact velocity (v_imp = 0.3 m/s and the paper's drop heights\n"
@@ -206,9 +253,10 @@ int gw_cmd_falcon(int argc, char **argv)
 {
     falcon f;
     memset(&f, 0, sizeof f);
-    gw_opt opts[CHAIN_CLI_NOPTS + 6];
+    gw_opt opts[CHAIN_CLI_NOPTS + 7];
     chain_cli_options(&f.c, opts);
     const char *vlist = "0.3", *hlist = "1.9,2.9,3.1,5.1", *nrange = "1:40";
+    double accuracy = 1e-6;
     long jobs = 0;
     int quiet = 0;
     int k = CHAIN_CLI_NOPTS;
@@ -218,6 +266,10 @@ int gw_cmd_falcon(int argc, char **argv)
                          .help = "drop heights, mm, v = sqrt(2 g h) ['none' to skip] [1.9,2.9,3.1,5.1]"};
     opts[k++] = (gw_opt){.name = "n", .kind = GW_OPT_STRING, .dest = &nrange, .metavar = "A:B",
                          .help = "column sizes [1:40]"};
+    opts[k++] = (gw_opt){.name = "accuracy", .kind = GW_OPT_DOUBLE, .dest = &accuracy, .metavar = "A",
+                         .help = "relative accuracy of F_max and tau_N when no solver option is given: "
+                                 "RK4, dt = T_c/M with M from a measured convergence study [1e-6]",
+                         .lo = 1e-9, .hi = 1e-2};
     chain_cli_sweep_opts(opts, &k, &jobs, &quiet);
     opts[k] = (gw_opt){0};
     int done = chain_cli_parse("falcon", "granwave falcon [--out DIR] [options]", falcon_summary, opts, argc, argv);
@@ -241,7 +293,7 @@ int gw_cmd_falcon(int argc, char **argv)
     f.nv = nvv + nhh;
     f.v = malloc((size_t)f.nv * sizeof *f.v);
     f.fv = calloc((size_t)f.nv, sizeof *f.fv);
-    int code = 0;
+    int code = 0, rc0;
     if (!f.v || !f.fv) {
         code = chain_cli_fail("falcon: out of memory");
         goto out;
@@ -260,6 +312,10 @@ int gw_cmd_falcon(int argc, char **argv)
     f.c.params.n = f.n_lo;
     f.c.params.v_imp = f.v[0];
     if (chain_cli_resolve(&f.c, opts, "falcon", &err) != GW_OK) {
+        code = chain_cli_fail(err.msg);
+        goto out;
+    }
+    if ((rc0 = falcon_pick_solver(&f, opts, accuracy, &err)) != GW_OK) {
         code = chain_cli_fail(err.msg);
         goto out;
     }

@@ -24,6 +24,7 @@ typedef struct falcon {
     falcon_vel *fv;
     gw_chain_result *res;
     double wall_s;
+    double accuracy; /* > 0: solver picked by this relative accuracy target */
 } falcon;
 
 static inline const gw_chain_result *res_at(const falcon *f, int iv, int n)

@@ -188,12 +188,19 @@ int falcon_write_report(const falcon *f, const char *path, gw_err *err)
     fprintf(fp, "# Falcon column: granwave %s against Falcon et al. (1998)\n\n", gw_version());
     fprintf(fp, "Model (F.11): N beads of mass m = %.6g kg (%s, R = %.4g m), bead-bead k = %.6g N/m^1.5 (F.12),\n"
                 "wall K = %.6g N/m^1.5 (F.3, %s wall); K_c = %.4g N/m^1.5 (F.22), so the wall is %s.\n"
-                "No gravity%s, no dissipation%s. Solver: %s (%s), rtol %.1e, atol %.1e.\n"
-                "%d collisions (N = %d..%d at %d velocities) in %.2f s of wall time.\n\n",
+                "No gravity%s, no dissipation%s. ",
             p->mass, f->c.material, p->radius, p->k, p->kwall, f->c.wall_material, kc,
             p->kwall > kc ? "rigid (K > K_c)" : "soft (K <= K_c)", p->gravity > 0 ? " (off: gravity on)" : "",
-            p->damping != GW_DAMP_NONE ? " (off: damping on)" : "", f->c.solver, f->c.method,
-            f->c.run.sp.rtol, f->c.run.sp.atol, falcon_ncase(f), f->n_lo, f->n_hi, f->nv, f->wall_s);
+            p->damping != GW_DAMP_NONE ? " (off: damping on)" : "");
+    if (f->accuracy > 0)
+        fprintf(fp, "Solver: rk4, events as roots, dt = T_c/%g (T_c = (m/k)^(2/5) v_imp^(-1/5)),\n"
+                    "chosen for F_max and tau_N within %.1e relative (measured convergence study).\n",
+                f->c.run.steps_per_tc, f->accuracy);
+    else
+        fprintf(fp, "Solver: %s (%s), rtol %.1e, atol %.1e.\n", f->c.solver, f->c.method,
+                f->c.run.sp.rtol, f->c.run.sp.atol);
+    fprintf(fp, "%d collisions (N = %d..%d at %d velocities) in %.2f s of wall time.\n\n",
+            falcon_ncase(f), f->n_lo, f->n_hi, f->nv, f->wall_s);
     fprintf(fp, "The paper's simulations use m = 2.05e-3 kg; the material mass 4/3 pi R^3 rho is\n"
                 "2.104e-3 kg (used here unless --mass is given). Drop heights map to v_imp = sqrt(2 g h)\n"
                 "with g = 9.81 m/s^2 (1.9 mm gives 0.193 m/s where the paper's Table 1 lists 0.191).\n\n");

@@ -42,28 +42,126 @@ static inline double damped_force(const gw_chain *c, double k, double gam, doubl
     return f;
 }
 
-/* Forces part: dv/dt from contacts (and dE_d/dt); positions untouched. */
+/* ---- undamped right-hand side, written for packed square roots ----
+ * Per bead j (physics.md 1.1, F.11), with f_j the force below bead j:
+ *   f_0 = K max(x_0, 0)^(3/2) (wall),  f_j = k_(j-1) max(x_j - x_(j-1), 0)^(3/2),
+ *   f_n = 0,  dx_j/dt = v_j,  dv_j/dt = g + (f_(j+1) - f_j) / m_j.
+ * The clamp max(u, 0) is branch-free, and sqrt(0) = 0 gives the open contact's
+ * zero force. Every value is computed with the same operations in the same order
+ * as a contact-by-contact loop (k u sqrt(u), then g + (f_above - f_below) / m), so
+ * the results do not depend on the path taken. No scratch memory is kept on the
+ * chain: it stays read-only and one chain may serve several threads.
+ * With SSE2 (every x86-64) one loop handles two beads per iteration: the forces
+ * of the next pair are computed with one packed square root while the current
+ * pair's accelerations are written, so the other work hides under the square
+ * root's throughput. Elsewhere two compiler-vectorised passes per block of beads
+ * do the same (forces into a contiguous stack array, then the outputs);
+ * -DGW_CHAIN_PORTABLE_RHS selects them on x86 too. */
+
+#if defined(__SSE2__) && !defined(GW_CHAIN_PORTABLE_RHS)
+#include <emmintrin.h>
+
+/* f_j for 1 <= j < n, scalar. */
+static inline double lean_force(const gw_chain *c, const double *y, int j)
+{
+    double u = y[2 * j] - y[2 * j - 2];
+    u = u > 0 ? u : 0.0;
+    return c->kc[j - 1] * u * sqrt(u);
+}
+
+/* Beads j0..n-1 one at a time; fb = f_j0, fa1 = f_(j0+1) (or NAN to compute). */
+static void lean_tail(const gw_chain *c, const double *y, double *yd, int j0, double fb,
+                      double fa1, double g, int kinematics)
+{
+    const int n = c->n;
+    for (int j = j0; j < n; j++) {
+        double fa = j + 1 >= n ? 0.0 : (j == j0 && !isnan(fa1)) ? fa1 : lean_force(c, y, j + 1);
+        yd[2 * j] = kinematics ? y[2 * j + 1] : 0.0;
+        yd[2 * j + 1] = g + (fa - fb) * c->minv[j];
+        fb = fa;
+    }
+}
+
+static void lean_rhs(const gw_chain *c, const double *restrict y, double *restrict yd, double g,
+                     int kinematics)
+{
+    const int n = c->n;
+    double u0 = y[0] > 0 ? y[0] : 0.0, f0 = c->kwall * u0 * sqrt(u0);
+    if (n < 4) {
+        lean_tail(c, y, yd, 0, f0, NAN, g, kinematics);
+        return;
+    }
+    const double *restrict kc = c->kc, *restrict m1 = c->minv;
+    const __m128d zero = _mm_setzero_pd(), vg = _mm_set1_pd(g);
+    const __m128d vmask = kinematics ? _mm_castsi128_pd(_mm_set1_epi32(-1)) : zero;
+    __m128d x = _mm_unpacklo_pd(_mm_loadu_pd(y), _mm_loadu_pd(y + 2)); /* x_0, x_1 */
+    __m128d fb = _mm_set_pd(lean_force(c, y, 1), f0);                  /* f_0, f_1 */
+    int p = 0;
+    for (; 2 * p + 3 < n; p++) { /* beads 2p, 2p+1; forces of beads 2p+2, 2p+3 */
+        const double *yp = y + 4 * p;
+        __m128d xn = _mm_unpacklo_pd(_mm_loadu_pd(yp + 4), _mm_loadu_pd(yp + 6));
+        __m128d u = _mm_max_pd(_mm_sub_pd(xn, _mm_shuffle_pd(x, xn, 1)), zero);
+        __m128d fn = _mm_mul_pd(_mm_mul_pd(_mm_loadu_pd(kc + 2 * p + 1), u), _mm_sqrt_pd(u));
+        __m128d fa = _mm_shuffle_pd(fb, fn, 1); /* f_(2p+1), f_(2p+2) */
+        __m128d a = _mm_add_pd(vg, _mm_mul_pd(_mm_sub_pd(fa, fb), _mm_loadu_pd(m1 + 2 * p)));
+        __m128d v = _mm_and_pd(_mm_unpackhi_pd(_mm_loadu_pd(yp), _mm_loadu_pd(yp + 2)), vmask);
+        _mm_storeu_pd(yd + 4 * p, _mm_unpacklo_pd(v, a));
+        _mm_storeu_pd(yd + 4 * p + 2, _mm_unpackhi_pd(v, a));
+        x = xn;
+        fb = fn;
+    }
+    lean_tail(c, y, yd, 2 * p, _mm_cvtsd_f64(fb), _mm_cvtsd_f64(_mm_unpackhi_pd(fb, fb)), g,
+              kinematics);
+}
+#else
+enum { LEAN_BLOCK = 512 };
+
+static void lean_block(const gw_chain *c, const double *restrict y, double *restrict yd,
+                       int j0, int nb, double g, int kinematics)
+{
+    const int n = c->n;
+    double f[LEAN_BLOCK + 1];
+    int k0 = 0, k1 = nb; /* f[k] = f_(j0+k) */
+    if (j0 == 0) {
+        double u = y[0] > 0 ? y[0] : 0.0;
+        f[0] = c->kwall * u * sqrt(u);
+        k0 = 1;
+    }
+    if (j0 + nb == n) {
+        f[nb] = 0.0;
+        k1 = nb - 1;
+    }
+    const double *restrict x = y + 2 * (size_t)j0;
+    const double *restrict kb = c->kc + j0 + k0 - 1; /* kb[k - k0]: contact j0 + k - 1 */
+    for (int k = k0; k <= k1; k++) {
+        double u = x[2 * k] - x[2 * k - 2];
+        u = u > 0 ? u : 0.0;
+        f[k] = kb[k - k0] * u * sqrt(u);
+    }
+    const double *restrict mb = c->minv + j0;
+    double *restrict out = yd + 2 * (size_t)j0;
+    for (int k = 0; k < nb; k++) {
+        out[2 * k] = kinematics ? x[2 * k + 1] : 0.0;
+        out[2 * k + 1] = g + (f[k + 1] - f[k]) * mb[k];
+    }
+}
+
+static void lean_rhs(const gw_chain *c, const double *y, double *yd, double g, int kinematics)
+{
+    for (int j0 = 0; j0 < c->n; j0 += LEAN_BLOCK) {
+        int nb = c->n - j0 < LEAN_BLOCK ? c->n - j0 : LEAN_BLOCK;
+        lean_block(c, y, yd, j0, nb, g, kinematics);
+    }
+}
+#endif
+
+/* Damped forces: dv/dt from contacts (and dE_d/dt) added to yd or stored. */
 static void chain_forces(const gw_chain *c, const double *y, double *yd, int add)
 {
     const int n = c->n;
     const double *m1 = c->minv, *kc = c->kc;
     double x0 = y[0];
     double fprev = 0.0;
-    if (c->p.damping == GW_DAMP_NONE) {
-        if (x0 > 0)
-            fprev = c->kwall * x0 * sqrt(x0);
-        for (int i = 0; i < n - 1; i++) {
-            double d = y[2 * i + 2] - y[2 * i], f = 0.0;
-            if (d > 0)
-                f = kc[i] * d * sqrt(d);
-            double a = (f - fprev) * m1[i];
-            yd[2 * i + 1] = add ? yd[2 * i + 1] + a : a;
-            fprev = f;
-        }
-        double a = -fprev * m1[n - 1];
-        yd[2 * n - 1] = add ? yd[2 * n - 1] + a : a;
-        return;
-    }
     double pd = 0.0;
     if (x0 > 0)
         fprev = damped_force(c, c->kwall, c->gwall, x0, y[1], &pd);
@@ -97,6 +195,10 @@ static int chain_rhs(double t, const double *y, double *yd, void *P)
 {
     (void)t;
     const gw_chain *c = P;
+    if (c->p.damping == GW_DAMP_NONE) {
+        lean_rhs(c, y, yd, c->p.gravity, 1);
+        return 0;
+    }
     chain_kinematics(c, y, yd);
     chain_forces(c, y, yd, 1);
     return 0;
@@ -113,6 +215,10 @@ static int chain_rhs_im(double t, const double *y, double *yd, void *P)
 {
     (void)t;
     const gw_chain *c = P;
+    if (c->p.damping == GW_DAMP_NONE) {
+        lean_rhs(c, y, yd, 0.0, 0);
+        return 0;
+    }
     for (int i = 0; i < c->n; i++)
         yd[2 * i] = 0.0;
     chain_forces(c, y, yd, 0);

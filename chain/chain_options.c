@@ -296,6 +296,8 @@ cJSON *chain_cli_settings_json(const chain_cli *c)
     cJSON_AddNumberToObject(s, "rtol", c->run.sp.rtol);
     cJSON_AddNumberToObject(s, "atol", c->run.sp.atol);
     cJSON_AddNumberToObject(s, "dt", c->run.sp.dt);
+    if (c->run.steps_per_tc > 0)
+        cJSON_AddNumberToObject(s, "steps_per_tc", c->run.steps_per_tc);
     cJSON_AddNumberToObject(s, "dt_max", c->run.sp.dt_max);
     cJSON_AddNumberToObject(s, "max_steps", (double)c->run.sp.max_steps);
     cJSON_AddNumberToObject(s, "t_max", c->run.t_max);

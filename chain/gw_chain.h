@@ -135,7 +135,7 @@ typedef int (*gw_chain_sample_fn)(void *ctx, double t, const double *y, double f
 
 typedef struct gw_chain_run_opts {
     const gw_solver_type *solver; /* default CVODE */
-    gw_solver_params sp;          /* dt == 0 for rk4: T_c / 400, see below */
+    gw_solver_params sp;          /* dt == 0 for rk4: T_c / steps_per_tc, see below */
     double dt_out;     /* sampling interval, s; 0 = tau_1/200 (energy and F_max) */
     double t_max;      /* give up after this time, s; 0 = 20 (n T_q + tau_1) */
     double energy_tol; /* stop with GW_EENERGY when the relative energy error
@@ -145,9 +145,19 @@ typedef struct gw_chain_run_opts {
     double front_threshold; /* N; > 0: record when each contact's force first
                                reaches it (result front_t), interpolated
                                linearly between samples */
+    double steps_per_tc; /* rk4 with sp.dt == 0: dt = T_c / steps_per_tc, T_c the
+                            chain's time scale (gw_chain_time_scale) of this run's
+                            v_imp; 0 = 400 */
 } gw_chain_run_opts;
 
 gw_chain_run_opts gw_chain_run_opts_default(void);
+
+/* RK4 steps per time scale T_c (for gw_chain_run_opts.steps_per_tc) that keep
+ * F_max and tau_N of an undamped column (N <= 40, no gravity) within the relative
+ * error rel_acc of a converged solution, sampling every tau_1/10 or coarser.
+ * From the convergence study bench/bench_falcon_accuracy (see chain_collide.c).
+ * Returns 0 when rel_acc is outside [1e-9, 1e-2] (use an adaptive backend). */
+int gw_chain_rk4_steps_per_tc(double rel_acc);
 
 typedef struct gw_chain_result {
     int n;

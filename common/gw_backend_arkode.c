@@ -29,6 +29,14 @@ typedef struct ark_impl {
     double t;
 } ark_impl;
 
+/* ARKStepGetReturnFlagName returns a malloc'ed string: copy it and free it. */
+static void ark_flag_name(int flag, char *buf, size_t len)
+{
+    char *name = ARKStepGetReturnFlagName(flag);
+    snprintf(buf, len, "%s", name ? name : "unknown flag");
+    free(name);
+}
+
 static void ark_destroy(gw_solver *s)
 {
     ark_impl *a = s->impl;
@@ -59,7 +67,13 @@ static const char *ark_configure(gw_solver *s, ark_impl *a, int method, int *fla
         return #call;
     ARK_CHECK(ARKStepSetErrHandlerFn(a->mem, gw_sun_errh, s));
     ARK_CHECK(ARKStepSetUserData(a->mem, s));
-    ARK_CHECK(ARKStepSVtolerances(a->mem, s->p.rtol, a->abstol));
+    /* error weights from gw_sun_ewt (the values of ARKStepSVtolerances, one pass) */
+    if (gw_sun_abstol_positive(a->abstol)) {
+        ARK_CHECK(ARKStepWFtolerances(a->mem, gw_sun_ewt));
+        ARK_CHECK(ARKStepSetUserData(a->mem, s));
+    } else {
+        ARK_CHECK(ARKStepSVtolerances(a->mem, s->p.rtol, a->abstol));
+    }
     ARK_CHECK(ARKStepSetMaxNumSteps(a->mem, s->p.max_steps));
     if (s->p.dt > 0)
         ARK_CHECK(ARKStepSetInitStep(a->mem, s->p.dt));
@@ -107,7 +121,7 @@ static int ark_create(gw_solver *s, double t0, const double *y0, gw_err *err)
         ark_destroy(s);
         return gw_err_set(err, GW_ESOLVER, "arkode: SUNContext_Create failed");
     }
-    a->y = N_VNew_Serial(s->sys.dim, a->ctx);
+    a->y = gw_sun_vector(s->sys.dim, a->ctx);
     a->abstol = gw_sun_abstol(s, a->ctx);
     if (s->sys.nroots > 0)
         a->rootinfo = calloc((size_t)s->sys.nroots, sizeof *a->rootinfo);
@@ -158,10 +172,11 @@ static int ark_advance(gw_solver *s, double tout, double *t, double *y, int *roo
     }
     if (flag >= 0)
         return GW_OK;
-    char msg[sizeof s->errmsg];
+    char msg[sizeof s->errmsg], name[64];
     snprintf(msg, sizeof msg, "%s", s->errmsg);
-    gw_solver_set_error(s, "arkode failed at t = %.9g s (%s): %s", tret,
-                        ARKStepGetReturnFlagName(flag), msg[0] ? msg : "no message");
+    ark_flag_name(flag, name, sizeof name);
+    gw_solver_set_error(s, "arkode failed at t = %.9g s (%s): %s", tret, name,
+                        msg[0] ? msg : "no message");
     return flag == ARK_TOO_MUCH_WORK ? GW_ELIMIT : GW_ESOLVER;
 }
 
@@ -172,8 +187,9 @@ static int ark_reset(gw_solver *s, double t, const double *y)
     a->t = t;
     int flag = ARKStepReset(a->mem, t, a->y);
     if (flag < 0) {
-        gw_solver_set_error(s, "arkode: ARKStepReset at t = %.9g s failed: %s", t,
-                            ARKStepGetReturnFlagName(flag));
+        char name[64];
+        ark_flag_name(flag, name, sizeof name);
+        gw_solver_set_error(s, "arkode: ARKStepReset at t = %.9g s failed: %s", t, name);
         return GW_ESOLVER;
     }
     return GW_OK;

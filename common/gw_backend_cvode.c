@@ -83,12 +83,21 @@ static void cv_destroy(gw_solver *s)
     s->impl = NULL;
 }
 
+/* CVodeGetReturnFlagName returns a malloc'ed string: copy it and free it. */
+static void cv_flag_name(int flag, char *buf, size_t len)
+{
+    char *name = CVodeGetReturnFlagName(flag);
+    snprintf(buf, len, "%s", name ? name : "unknown flag");
+    free(name);
+}
+
 #define CV_TRY(call, what)                                                           \
     do {                                                                             \
         int flag_ = (call);                                                          \
         if (flag_ < 0) {                                                             \
-            gw_err_set(err, GW_ESOLVER, "cvode: %s failed: %s", what,                \
-                       CVodeGetReturnFlagName(flag_));                               \
+            char name_[64];                                                          \
+            cv_flag_name(flag_, name_, sizeof name_);                                \
+            gw_err_set(err, GW_ESOLVER, "cvode: %s failed: %s", what, name_);        \
             cv_destroy(s);                                                           \
             return GW_ESOLVER;                                                       \
         }                                                                            \
@@ -108,7 +117,7 @@ static int cv_create(gw_solver *s, double t0, const double *y0, gw_err *err)
         cv_destroy(s);
         return gw_err_set(err, GW_ESOLVER, "cvode: SUNContext_Create failed");
     }
-    c->y = N_VNew_Serial(s->sys.dim, c->ctx);
+    c->y = gw_sun_vector(s->sys.dim, c->ctx);
     c->abstol = gw_sun_abstol(s, c->ctx);
     if (s->sys.nroots > 0)
         c->rootinfo = calloc((size_t)s->sys.nroots, sizeof *c->rootinfo);
@@ -126,7 +135,14 @@ static int cv_create(gw_solver *s, double t0, const double *y0, gw_err *err)
     CV_TRY(CVodeSetErrHandlerFn(c->mem, gw_sun_errh, s), "CVodeSetErrHandlerFn");
     CV_TRY(CVodeInit(c->mem, gw_sun_rhs, t0, c->y), "CVodeInit");
     CV_TRY(CVodeSetUserData(c->mem, s), "CVodeSetUserData");
-    CV_TRY(CVodeSVtolerances(c->mem, s->p.rtol, c->abstol), "CVodeSVtolerances");
+    /* error weights from gw_sun_ewt: the values CVodeSVtolerances gives with
+     * the abstol vector, in one pass instead of four per step */
+    if (gw_sun_abstol_positive(c->abstol)) {
+        CV_TRY(CVodeWFtolerances(c->mem, gw_sun_ewt), "CVodeWFtolerances");
+        CV_TRY(CVodeSetUserData(c->mem, s), "CVodeSetUserData");
+    } else {
+        CV_TRY(CVodeSVtolerances(c->mem, s->p.rtol, c->abstol), "CVodeSVtolerances");
+    }
     CV_TRY(CVodeSetMaxNumSteps(c->mem, s->p.max_steps), "CVodeSetMaxNumSteps");
     if (s->p.dt > 0)
         CV_TRY(CVodeSetInitStep(c->mem, s->p.dt), "CVodeSetInitStep");
@@ -174,10 +190,11 @@ static int cv_advance(gw_solver *s, double tout, double *t, double *y, int *root
     }
     if (flag >= 0)
         return GW_OK;
-    char msg[sizeof s->errmsg];
+    char msg[sizeof s->errmsg], name[64];
     snprintf(msg, sizeof msg, "%s", s->errmsg);
-    gw_solver_set_error(s, "cvode failed at t = %.9g s (%s): %s", tret,
-                        CVodeGetReturnFlagName(flag), msg[0] ? msg : "no message");
+    cv_flag_name(flag, name, sizeof name);
+    gw_solver_set_error(s, "cvode failed at t = %.9g s (%s): %s", tret, name,
+                        msg[0] ? msg : "no message");
     return flag == CV_TOO_MUCH_WORK ? GW_ELIMIT : GW_ESOLVER;
 }
 
@@ -191,8 +208,9 @@ static int cv_reset(gw_solver *s, double t, const double *y)
     int flag = CVodeReInit(c->mem, t, c->y);
     cv_carry(c, &before);
     if (flag < 0) {
-        gw_solver_set_error(s, "cvode: CVodeReInit at t = %.9g s failed: %s", t,
-                            CVodeGetReturnFlagName(flag));
+        char name[64];
+        cv_flag_name(flag, name, sizeof name);
+        gw_solver_set_error(s, "cvode: CVodeReInit at t = %.9g s failed: %s", t, name);
         return GW_ESOLVER;
     }
     return GW_OK;

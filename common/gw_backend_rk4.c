@@ -44,29 +44,34 @@ static int sgn(double x)
     return (x > 0) - (x < 0);
 }
 
-/* One RK4 step of length h from (t, y0) into out. */
-static int rk4_step(gw_solver *s, double t, const double *y0, double h, double *out)
+/* One RK4 step of length h from (t, y0) into out (y0, out and the stage
+ * arrays are distinct, hence restrict: the loops vectorise without alias checks). */
+static int rk4_step(gw_solver *s, double t, const double *restrict y0, double h,
+                    double *restrict out)
 {
     rk4_impl *r = s->impl;
     const long n = s->sys.dim;
     void *P = s->sys.params;
+    double *restrict tmp = r->tmp, *restrict k1 = r->k1, *restrict k2 = r->k2;
+    double *restrict k3 = r->k3, *restrict k4 = r->k4;
+    const double h2 = 0.5 * h, h6 = h / 6.0;
     int rc;
-    if ((rc = s->sys.rhs(t, y0, r->k1, P)) != 0)
+    if ((rc = s->sys.rhs(t, y0, k1, P)) != 0)
         return rc;
     for (long i = 0; i < n; i++)
-        r->tmp[i] = y0[i] + 0.5 * h * r->k1[i];
-    if ((rc = s->sys.rhs(t + 0.5 * h, r->tmp, r->k2, P)) != 0)
+        tmp[i] = y0[i] + h2 * k1[i];
+    if ((rc = s->sys.rhs(t + 0.5 * h, tmp, k2, P)) != 0)
         return rc;
     for (long i = 0; i < n; i++)
-        r->tmp[i] = y0[i] + 0.5 * h * r->k2[i];
-    if ((rc = s->sys.rhs(t + 0.5 * h, r->tmp, r->k3, P)) != 0)
+        tmp[i] = y0[i] + h2 * k2[i];
+    if ((rc = s->sys.rhs(t + 0.5 * h, tmp, k3, P)) != 0)
         return rc;
     for (long i = 0; i < n; i++)
-        r->tmp[i] = y0[i] + h * r->k3[i];
-    if ((rc = s->sys.rhs(t + h, r->tmp, r->k4, P)) != 0)
+        tmp[i] = y0[i] + h * k3[i];
+    if ((rc = s->sys.rhs(t + h, tmp, k4, P)) != 0)
         return rc;
     for (long i = 0; i < n; i++)
-        out[i] = y0[i] + (h / 6.0) * (r->k1[i] + 2.0 * r->k2[i] + 2.0 * r->k3[i] + r->k4[i]);
+        out[i] = y0[i] + h6 * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i]);
     r->rhs_evals += 4;
     return 0;
 }

@@ -1,6 +1,7 @@
 /*
  * gw_sundials.c: callback wrappers between SUNDIALS and gw_system (see header).
  */
+#include <math.h>
 #include <string.h>
 
 #include <sunlinsol/sunlinsol_band.h>
@@ -55,9 +56,44 @@ void gw_sun_errh(int code, const char *module, const char *function, char *msg, 
     gw_solver_set_error(s, "%s %s (flag %d): %s", module, function, code, msg);
 }
 
+int gw_sun_ewt(N_Vector y, N_Vector w, void *ud)
+{
+    const gw_solver *s = ud;
+    const long n = s->sys.dim;
+    const double rtol = s->p.rtol, atol = s->p.atol;
+    const double *restrict yd = N_VGetArrayPointer(y), *restrict sc = s->sys.scale;
+    double *restrict wd = N_VGetArrayPointer(w);
+    if (sc)
+        for (long i = 0; i < n; i++)
+            wd[i] = 1.0 / (rtol * fabs(yd[i]) + atol * sc[i]);
+    else
+        for (long i = 0; i < n; i++)
+            wd[i] = 1.0 / (rtol * fabs(yd[i]) + atol * 1.0);
+    return 0;
+}
+
+int gw_sun_abstol_positive(N_Vector abstol)
+{
+    const double *a = N_VGetArrayPointer(abstol);
+    for (long i = 0; i < N_VGetLength(abstol); i++)
+        if (!(a[i] > 0))
+            return 0;
+    return 1;
+}
+
+N_Vector gw_sun_vector(long n, SUNContext ctx)
+{
+    N_Vector v = N_VNew_Serial(n, ctx);
+    if (v && gw_sun_tune_vector(v) != 0) {
+        N_VDestroy(v);
+        return NULL;
+    }
+    return v;
+}
+
 N_Vector gw_sun_abstol(const gw_solver *s, SUNContext ctx)
 {
-    N_Vector v = N_VNew_Serial(s->sys.dim, ctx);
+    N_Vector v = gw_sun_vector(s->sys.dim, ctx);
     if (!v)
         return NULL;
     double *a = N_VGetArrayPointer(v);

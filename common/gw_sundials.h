@@ -23,6 +23,24 @@ int gw_sun_jac(realtype t, N_Vector y, N_Vector fy, SUNMatrix J, void *ud,
 void gw_sun_errh(int code, const char *module, const char *function, char *msg,
                  void *ud);
 
+/* Serial vector of length n with SUNDIALS' fused and vector-array operations
+ * enabled and the hot operations replaced by gw_nvector.c's compiled kernels
+ * (clones inherit both). NULL on allocation failure. */
+N_Vector gw_sun_vector(long n, SUNContext ctx);
+
+/* Enable fused operations on a serial vector and install gw_nvector.c's
+ * kernels in its ops table. 0 on success, -1 if v is not a serial vector. */
+int gw_sun_tune_vector(N_Vector v);
+
+/* Error weights w_i = 1 / (rtol |y_i| + atol scale_i) in one pass (the values
+ * SUNDIALS' vector-tolerance path computes in four passes); ud is the gw_solver.
+ * Only for solvers whose atol scale_i are all > 0 (gw_sun_abstol_positive): the
+ * denominator is then positive and needs no check. Returns 0. */
+int gw_sun_ewt(N_Vector y, N_Vector w, void *ud);
+
+/* 1 if every component of the absolute tolerance vector is > 0, else 0. */
+int gw_sun_abstol_positive(N_Vector abstol);
+
 /* Vector of atol * scale[i]; NULL on allocation failure. */
 N_Vector gw_sun_abstol(const gw_solver *s, SUNContext ctx);
 

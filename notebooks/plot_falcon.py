@@ -126,9 +126,13 @@ def _footer(fig, run):
     s = run["summary"]
     solver = s.get("settings", {}).get("solver", {})
     model = s.get("settings", {}).get("model", {})
+    if "steps_per_tc" in solver:  # rk4 with the step chosen by an accuracy target
+        setting = f"dt = T_c/{solver['steps_per_tc']:g}"
+    else:
+        setting = f"rtol {solver.get('rtol', '?')}"
     text = (f"granwave {s.get('version', '?')} falcon; {model.get('material', '?')} beads, "
             f"m = {model.get('mass', float('nan')):.4g} kg; {solver.get('name', '?')} "
-            f"rtol {solver.get('rtol', '?')}; {os.path.abspath(run['dir'])}")
+            f"{setting}; {os.path.abspath(run['dir'])}")
     fig.text(0.005, 0.003, text, fontsize=6, color="0.4", ha="left", va="bottom")
     # keep the axes (and their x label) clear of this footer line
     fig.get_layout_engine().set(rect=(0, 0.025, 1, 0.975))

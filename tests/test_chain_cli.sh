@@ -51,6 +51,8 @@ bad "unknown command" nosuchcommand
 bad "radii" chain --n 3 --radii 4e-3,3e-3
 bad "radii" chain --n 2 --radii 4e-3,-1
 bad "radii" falcon --radii 4e-3
+bad "accuracy" falcon --accuracy 1e-7 --solver cvode
+bad "accuracy" falcon --accuracy 1e-12
 bad "sheet" chain --sheet foam
 bad "sheet" chain --sheet brass --kwall 1e9
 bad "restitution" chain --restitution 0.9

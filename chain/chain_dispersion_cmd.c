@@ -90,7 +90,7 @@ static int disp_solver(const disp_cli *c, const gw_solver_type **type, gw_solver
                        gw_err *err)
 {
     *type = gw_solver_type_find(c->solver);
-    if (!*type)
+    if (!*type || *type == gw_solver_verlet)
         return gw_err_set(err, GW_EINVAL, "dispersion --solver: unknown solver '%s' (rk4, cvode, arkode)", c->solver);
     int m = gw_solver_method_find(c->method);
     int ok = m == GW_METHOD_DEFAULT ||

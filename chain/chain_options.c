@@ -216,8 +216,9 @@ int chain_cli_resolve(chain_cli *c, const gw_opt *opts, const char *cmd, gw_err 
     gw_chain_run_opts *r = &c->run;
     *r = gw_chain_run_opts_default();
     r->solver = gw_solver_type_find(c->solver);
-    if (!r->solver)
-        return gw_err_set(err, GW_EINVAL, "%s --solver: unknown solver '%s' (cvode, arkode, rk4)", cmd, c->solver);
+    if (!r->solver || r->solver == gw_solver_verlet) /* (verlet: the layer's explicit DEM step) */
+        return gw_err_set(err, GW_EINVAL, "%s --solver: unknown solver '%s' for the column (cvode, arkode, "
+                          "rk4)", cmd, c->solver);
     int method = gw_solver_method_find(c->method);
     if (method < 0)
         return gw_err_set(err, GW_EINVAL, "%s --method: unknown method '%s' (bdf, adams, erk, dirk, imex)", cmd, c->method);

@@ -42,6 +42,23 @@ static double rel(double a, double b)
     return fabs(a - b) / fabs(b);
 }
 
+/* One collision of n beads at v_imp with run options o; *cpu += its CPU ms. */
+static int collide(int n, double v_imp, const gw_chain_run_opts *o, gw_chain_result *r, double *cpu,
+                   gw_err *err)
+{
+    gw_chain_params p = gw_chain_params_default();
+    p.n = n;
+    p.v_imp = v_imp;
+    gw_chain *c = NULL;
+    double t0 = cpu_ms();
+    int rc = gw_chain_create(&p, &c, err);
+    if (rc == GW_OK)
+        rc = gw_chain_collide(c, o, r, err);
+    *cpu += cpu_ms() - t0;
+    gw_chain_free(c);
+    return rc;
+}
+
 int main(int argc, char **argv)
 {
     int nmax = argc > 1 ? atoi(argv[1]) : 40;
@@ -55,20 +72,13 @@ int main(int argc, char **argv)
     double ref_ms = 0;
     for (int iv = 0; iv < NV; iv++)
         for (int in = 0; in < NN && ns[in] <= nmax; in++) {
-            gw_chain_params p = gw_chain_params_default();
-            p.n = ns[in];
-            p.v_imp = vs[iv];
-            gw_chain *c = NULL;
             gw_chain_run_opts o = gw_chain_run_opts_default();
             o.sp.rtol = o.sp.atol = 1e-12;
             o.dt_out = 1.0; /* events only */
-            double t0 = cpu_ms();
-            if (gw_chain_create(&p, &c, &err) != GW_OK || gw_chain_collide(c, &o, &ref[iv][in], &err) != GW_OK) {
+            if (collide(ns[in], vs[iv], &o, &ref[iv][in], &ref_ms, &err) != GW_OK) {
                 fprintf(stderr, "reference N = %d: %s\n", ns[in], err.msg);
                 return 1;
             }
-            ref_ms += cpu_ms() - t0;
-            gw_chain_free(c);
         }
     printf("reference: %.0f ms CPU\n\n", ref_ms);
     printf("%5s %-10s %10s %10s %10s %10s %12s %12s %9s\n", "M", "sampling", "F_max", "tau_max",
@@ -78,22 +88,17 @@ int main(int argc, char **argv)
             double ef = 0, etm = 0, etn = 0, ep = 0, cpu = 0;
             for (int iv = 0; iv < NV; iv++)
                 for (int in = 0; in < NN && ns[in] <= nmax; in++) {
-                    gw_chain_params p = gw_chain_params_default();
-                    p.n = ns[in];
-                    p.v_imp = vs[iv];
-                    gw_chain *c = NULL;
                     gw_chain_run_opts o = gw_chain_run_opts_default();
                     o.solver = gw_solver_rk4;
                     o.steps_per_tc = ms[im];
-                    double tau1 = gw_chain_tau1(p.mass, p.kwall, p.v_imp);
+                    gw_chain_params p = gw_chain_params_default();
+                    double tau1 = gw_chain_tau1(p.mass, p.kwall, vs[iv]);
                     o.dt_out = s == 0 ? 1.0 : tau1 / 10;
                     gw_chain_result r;
-                    double t0 = cpu_ms();
-                    if (gw_chain_create(&p, &c, &err) != GW_OK || gw_chain_collide(c, &o, &r, &err) != GW_OK) {
+                    if (collide(ns[in], vs[iv], &o, &r, &cpu, &err) != GW_OK) {
                         fprintf(stderr, "M = %g N = %d: %s\n", ms[im], ns[in], err.msg);
                         return 1;
                     }
-                    cpu += cpu_ms() - t0;
                     const gw_chain_result *q = &ref[iv][in];
                     ef = fmax(ef, rel(r.f_max, q->f_max));
                     etm = fmax(etm, rel(r.tau_max, q->tau_max));
@@ -103,7 +108,6 @@ int main(int argc, char **argv)
                     else if (q->n_maxima >= 2)
                         ep = INFINITY;
                     gw_chain_result_free(&r);
-                    gw_chain_free(c);
                 }
             double m4 = pow(ms[im], 2.5);
             printf("%5g %-10s %10.2e %10.2e %10.2e %10.2e %12.3g %12.3g %9.1f\n", ms[im],

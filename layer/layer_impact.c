@@ -113,8 +113,8 @@ double gw_layer_impact_dem_dt(const gw_layer_sample *s, const gw_layer_params *l
     const double ms = 0.5 * gw_layer_mass(lp, rmin), K = gw_layer_kn(lp, rmin);
     const double beta = tgamma(0.4) * tgamma(0.5) / tgamma(0.9); /* B(2/5, 1/2) */
     double tau = 0.8 * beta * pow(1.25 * ms / K, 0.4) * pow(ip->vi, -0.2);
-    double dt = tau / GW_LAYER_DEM_STEPS;
-    return ip->dt_out / ceil(ip->dt_out / dt);
+    double dt = tau / GW_LAYER_DEM_STEPS, k = ceil(ip->dt_out / dt);
+    return k < 1e9 ? ip->dt_out / k : dt; /* (a dt-out beyond any run: steps unaligned) */
 }
 
 /* Overlap (m) of the block with the target particle. */

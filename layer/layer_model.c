@@ -37,7 +37,8 @@
  *   elastic rate is ~1e8 N/s), which drives its steps to ~1e-14 s. The margin
  *   delays the elastic unloading after a reversal by eta cap / |r_e| (~1e-9 s).
  *   The ledger uses the clamped force and its true rate (r_c at the cap), so
- *   the margin moves no energy. Solver stops zero F_t of open contacts.
+ *   the margin moves no energy. F_t of open contacts is zeroed at the solver's
+ *   stops (exact mode) or after every step (DEM mode, layer_sim.c).
  * Energy (B.7-B.14): the contact absorbs the power F_t v_t + F_n du_n/dt. With
  *   E_st = F_t^2 / (2 K_t) the split is
  *   F_t v_t = dE_st/dt + dW_K/dt + dE_d/dt,
@@ -51,6 +52,12 @@
  * Optional normal damping (pluviation only; the paper has none), Hunt-Crossley:
  *   F = F_n (1 + (3/2) alpha du_n/dt) clamped >= 0; its power goes into E_d. The
  *   Mindlin stiffness and the cap use the elastic F_n.
+ * Computation: per-contact constants are set at list build (layer_contacts.c);
+ * K_t = k_t F_n^(1/3) = (k_t K_n^(1/3)) u_n^(1/2), the same to rounding, needs no
+ * cube root; a layer without clumps takes a disc-only kinematics path (arms =
+ * radii) that skips the pairs farther apart than R_a + R_b before any square
+ * root. The tangential law itself is layer_tangential (layer_impl.h), shared with
+ * the DEM step projection.
  * Units: SI (m, s, kg, N, Pa, J).
  */
 #include <math.h>

@@ -276,8 +276,8 @@ typedef struct gw_layer_make_params {
     double damping;        /* Hunt-Crossley alpha while settling, s/m [0.3] */
     double modulus_factor; /* settle with G * factor, then relax with true G [1] */
     double dt;             /* fixed step, s [2e-5] */
-    const gw_solver_type *solver; /* verlet (explicit DEM) or rk4, contact events
-                                     not located either way [gw_solver_verlet] */
+    const gw_solver_type *solver; /* rk4 or verlet (explicit DEM), contact events
+                                     not located either way [gw_solver_rk4] */
     double height_rm;      /* > 0: after settling keep only the particles lying
                               wholly below height_rm R_m (the box height H of
                               physics.md 2.2) [0 = keep all] */

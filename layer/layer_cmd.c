@@ -70,7 +70,7 @@ int gw_cmd_layer_make(int argc, char **argv)
     int i = layer_mat_options(&m, o);
     gw_layer_make_params mp = gw_layer_make_params_default();
     long n = mp.n, seed = mp.seed;
-    const char *out = NULL, *solver = "verlet";
+    const char *out = NULL, *solver = "rk4";
     int json = 0;
     /* the final overlap check is O(n^2): 1e5 particles take seconds there (and
      * days of pluviation before) */
@@ -84,7 +84,7 @@ int gw_cmd_layer_make(int argc, char **argv)
     o[i++] = OPT_D("damping", &mp.damping, "A", "Hunt-Crossley alpha while settling, s/m [0.3]", 0, 1e3, 0);
     o[i++] = OPT_D("modulus-factor", &mp.modulus_factor, "F", "settle with F*G then relax with G [1]", 0, 1, 1);
     o[i++] = OPT_D("dt", &mp.dt, "DT", "fixed step, s [2e-5]", 0, 1, 1);
-    o[i++] = OPT_S("solver", &solver, "NAME", "verlet (explicit DEM) or rk4; contact events are not located while settling [verlet]");
+    o[i++] = OPT_S("solver", &solver, "NAME", "rk4 or verlet (explicit DEM); contact events are not located while settling [rk4]");
     o[i++] = OPT_D("height-rm", &mp.height_rm, "H", "keep the particles wholly below H R_m after settling [0 = all]", 0, 1e6, 0);
     o[i++] = (gw_opt){.name = "clumps", .kind = GW_OPT_FLAG, .dest = &mp.clumps,
                       .help = "type B soil: n rigid clumps (aspect ratio 1-4) instead of n discs"};

@@ -75,8 +75,8 @@ for k, r in enumerate(rows):
     if not (0 < v["block_loss_first_contact"] <= 1 and 0 <= v["dissipated_first_contact"] < 0.5):
         bad.append("case %d first-contact fractions out of range" % k)
     # the default fast mode (verlet): closure second order in dt, measured
-    # 1.3e-3 .. 2.2e-3 on this 40-disc sample over 12 ms (README, fast and
-    # exact modes); a lost tangential history or a first-order step gives 5e-3+
+    # 6e-4 .. 1.6e-3 on this 40-disc sample over 12 ms (2.2e-3 on a verlet-
+    # settled one); a lost tangential history or a first-order step gives 5e-3+
     if not v["energy_error"] < 3e-3:
         bad.append("case %d energy closure %g" % (k, v["energy_error"]))
 xs = {round(float(r["x_impact"]), 12) for r in rows}

@@ -240,36 +240,44 @@ void gw_layer_free(gw_layer *L)
     free(L);
 }
 
-/* Geometry of contact c with the arms of its discs (layer_disc_xy). */
-static void geometry_arms(const gw_layer *L, const layer_contact *c, const double *y, double *un,
-                          double n[2], double pt[2], double arma[2], double armb[2])
+/* Overlap u_n and unit normal n (a -> b) of contact c whose discs are centred
+ * at pa and pb (pb unused against a wall); box width w. */
+static double pair_geometry(const layer_contact *c, const double pa[2], const double pb[2], double w,
+                            double n[2])
 {
-    double sa[2], sb[2];
-    layer_disc_xy(L, y, c->a, sa, arma);
-    double ra = L->r[c->a];
     switch (c->b) {
     case LAYER_LEFT:
-        n[0] = -1, n[1] = 0, *un = ra - sa[0];
-        break;
+        n[0] = -1, n[1] = 0;
+        return c->ra - pa[0];
     case LAYER_RIGHT:
-        n[0] = 1, n[1] = 0, *un = ra - (L->p.width - sa[0]);
-        break;
+        n[0] = 1, n[1] = 0;
+        return c->ra - (w - pa[0]);
     case LAYER_BOTTOM:
-        n[0] = 0, n[1] = -1, *un = ra - sa[1];
-        break;
+        n[0] = 0, n[1] = -1;
+        return c->ra - pa[1];
     default: {
-        layer_disc_xy(L, y, c->b, sb, armb);
-        double dx = sb[0] - sa[0], dy = sb[1] - sa[1], d = sqrt(dx * dx + dy * dy);
+        double dx = pb[0] - pa[0], dy = pb[1] - pa[1], d = sqrt(dx * dx + dy * dy);
         if (d > 0)
             n[0] = dx / d, n[1] = dy / d;
         else
             n[0] = 0, n[1] = 1;
-        *un = ra + L->r[c->b] - d;
+        return c->ra + c->rb - d;
     }
     }
+}
+
+/* Geometry of contact c with the arms of its discs (layer_disc_xy). */
+static void geometry_arms(const gw_layer *L, const layer_contact *c, const double *y, double *un,
+                          double n[2], double pt[2], double arma[2], double armb[2])
+{
+    double sa[2], sb[2] = {0, 0};
+    layer_disc_xy(L, y, c->a, sa, arma);
+    if (c->b >= 0)
+        layer_disc_xy(L, y, c->b, sb, armb);
+    *un = pair_geometry(c, sa, sb, L->p.width, n);
     if (pt) {
-        pt[0] = sa[0] + (ra - 0.5 * *un) * n[0];
-        pt[1] = sa[1] + (ra - 0.5 * *un) * n[1];
+        pt[0] = sa[0] + (c->ra - 0.5 * *un) * n[0];
+        pt[1] = sa[1] + (c->ra - 0.5 * *un) * n[1];
     }
 }
 
@@ -548,38 +556,18 @@ const double *layer_snapshot(const gw_layer *L)
     if (L->snap_stamp == L->stamp)
         return L->snap;
     gw_layer *M = (gw_layer *)L; /* the cache only */
-    const double *y = L->y, W = L->p.width, tp = L->tan_phi;
+    const double *y = L->y, tp = L->tan_phi;
     double *xy = M->snap_xy, arm[2];
     for (int i = 0; i < L->n; i++)
         layer_disc_xy(L, y, i, xy + 2 * i, arm);
     for (int k = 0; k < L->nc; k++) {
         const layer_contact *c = &L->c[k];
         double *o = M->snap + LAYER_SNAP_W * k;
-        const double *pa = xy + 2 * c->a;
-        double un, nx = 0, ny = 0;
-        switch (c->b) {
-        case LAYER_LEFT:
-            nx = -1, un = c->ra - pa[0];
-            break;
-        case LAYER_RIGHT:
-            nx = 1, un = c->ra - (W - pa[0]);
-            break;
-        case LAYER_BOTTOM:
-            ny = -1, un = c->ra - pa[1];
-            break;
-        default: {
-            const double *pb = xy + 2 * c->b;
-            double dx = pb[0] - pa[0], dy = pb[1] - pa[1], d = sqrt(dx * dx + dy * dy);
-            if (d > 0)
-                nx = dx / d, ny = dy / d;
-            else
-                ny = 1;
-            un = c->ra + c->rb - d;
-        }
-        }
+        const double *pa = xy + 2 * c->a, *pb = c->b >= 0 ? xy + 2 * c->b : pa;
+        double nn[2], un = pair_geometry(c, pa, pb, L->p.width, nn);
         o[LAYER_SNAP_UN] = o[LAYER_SNAP_FN] = o[LAYER_SNAP_FT] = o[LAYER_SNAP_KT] = 0;
-        o[LAYER_SNAP_PX] = pa[0] + (c->ra - 0.5 * un) * nx;
-        o[LAYER_SNAP_PY] = pa[1] + (c->ra - 0.5 * un) * ny;
+        o[LAYER_SNAP_PX] = pa[0] + (c->ra - 0.5 * un) * nn[0];
+        o[LAYER_SNAP_PY] = pa[1] + (c->ra - 0.5 * un) * nn[1];
         if (!(un > 0))
             continue;
         double su = sqrt(un), fn = c->kn * un * su, cap = tp * fn, f = y[6 * L->nb + k];

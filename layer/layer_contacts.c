@@ -160,8 +160,7 @@ int layer_contacts_build(gw_layer *L, gw_err *err)
         c[k].qb = c[k].b >= 0 ? layer_body(L, c[k].b) : c[k].b;
         c[k].ra = ra, c[k].rb = rb;
         c[k].kn = gw_layer_kn(&L->p, rp);
-        c[k].ktf = gw_layer_kt_factor(&L->p, rp);
-        c[k].kts = c[k].ktf * cbrt(c[k].kn);
+        c[k].kts = gw_layer_kt_factor(&L->p, rp) * cbrt(c[k].kn);
     }
     const int nb = L->nb;
     long dim = 6L * nb + nc + L->ntail;

@@ -27,8 +27,9 @@ enum { LAYER_LEFT = -1, LAYER_RIGHT = -2, LAYER_BOTTOM = -3 };
 typedef struct layer_contact {
     int a, b;        /* particle a < b, or b = LAYER_* wall */
     int qa, qb;      /* bodies of a and b (qb = b for a wall) */
-    double kn, ktf;  /* K_n (B.3) and k_t with K_t = k_t F_n^(1/3) (B.4) */
-    double kts;      /* k_t K_n^(1/3): K_t = kts sqrt(u_n), no cube root in the loop */
+    double kn;       /* K_n (B.3) */
+    double kts;      /* k_t K_n^(1/3), k_t from K_t = k_t F_n^(1/3) (B.4): K_t = kts
+                        sqrt(u_n), no cube root in the loop */
     double ra, rb;   /* radii of a and b (rb = 0 for a wall) */
 } layer_contact;
 
@@ -220,10 +221,5 @@ void layer_system_fill(gw_layer *L);
  * contact point of contact c in state y. */
 void layer_contact_geometry(const gw_layer *L, const layer_contact *c, const double *y,
                             double *un, double n[2], double pt[2]);
-
-/* Elastic Hertz force and the used (capped) tangential force of contact index k
- * in state y (0 when open). */
-void layer_contact_forces(const gw_layer *L, int k, const double *y, double *fn,
-                          double *ft, double *kt);
 
 #endif

@@ -320,22 +320,6 @@ static void contact_kinematics(const gw_layer *L, const layer_contact *c, const 
     *vt = -rx * n[1] + ry * n[0] - sa[5] * lev[0] - wrb;
 }
 
-void layer_contact_forces(const gw_layer *L, int k, const double *y, double *fn, double *ft,
-                          double *kt)
-{
-    const layer_contact *c = &L->c[k];
-    double un, n[2];
-    layer_contact_geometry(L, c, y, &un, n, NULL);
-    *fn = *ft = *kt = 0;
-    if (!(un > 0))
-        return;
-    double su = sqrt(un);
-    *fn = c->kn * un * su;
-    *kt = c->kts * su;
-    double cap = L->tan_phi * *fn, f = y[6 * L->nb + k];
-    *ft = f > cap ? cap : f < -cap ? -cap : f;
-}
-
 /* Kinematics of disc-only contact c (no clumps: body = disc, arms = radii):
  * overlap, normal, overlap rate and tangential relative velocity; 0 when open
  * (the square root is only taken for pairs closer than R_a + R_b). */

@@ -20,12 +20,11 @@ int gw_layer_write_vtk(const gw_layer *L, const char *path, const char *title, g
         return rc;
     FILE *fp = f.fp;
     const int n = L->n;
+    const double *snap = layer_snapshot(L);
+#define CLOSED_PAIR(k) (L->c[k].b >= 0 && snap[LAYER_SNAP_W * (k) + LAYER_SNAP_FN] > 0)
     int nl = 0;
-    for (int k = 0; k < L->nc; k++) {
-        double fn, ft, kt;
-        layer_contact_forces(L, k, L->y, &fn, &ft, &kt);
-        nl += L->c[k].b >= 0 && fn > 0;
-    }
+    for (int k = 0; k < L->nc; k++)
+        nl += CLOSED_PAIR(k);
     fprintf(fp, "# vtk DataFile Version 3.0\n%s (granwave %s)\nASCII\nDATASET POLYDATA\n", title,
             gw_version());
     fprintf(fp, "POINTS %d double\n", n);
@@ -35,12 +34,9 @@ int gw_layer_write_vtk(const gw_layer *L, const char *path, const char *title, g
         fprintf(fp, "%.9g %.9g 0\n", s[0], s[1]);
     }
     fprintf(fp, "LINES %d %d\n", nl, 3 * nl);
-    for (int k = 0; k < L->nc; k++) {
-        double fn, ft, kt;
-        layer_contact_forces(L, k, L->y, &fn, &ft, &kt);
-        if (L->c[k].b >= 0 && fn > 0)
+    for (int k = 0; k < L->nc; k++)
+        if (CLOSED_PAIR(k))
             fprintf(fp, "2 %d %d\n", L->c[k].a, L->c[k].b);
-    }
     fprintf(fp, "POINT_DATA %d\nSCALARS radius double 1\nLOOKUP_TABLE default\n", n);
     for (int i = 0; i < n; i++)
         fprintf(fp, "%.9g\n", L->r[i]);
@@ -64,14 +60,12 @@ int gw_layer_write_vtk(const gw_layer *L, const char *path, const char *title, g
         for (int pass = 0; pass < 2; pass++) {
             if (pass == 1)
                 fprintf(fp, "SCALARS F_t double 1\nLOOKUP_TABLE default\n");
-            for (int k = 0; k < L->nc; k++) {
-                double fn, ft, kt;
-                layer_contact_forces(L, k, L->y, &fn, &ft, &kt);
-                if (L->c[k].b >= 0 && fn > 0)
-                    fprintf(fp, "%.9g\n", pass == 0 ? fn : ft);
-            }
+            for (int k = 0; k < L->nc; k++)
+                if (CLOSED_PAIR(k))
+                    fprintf(fp, "%.9g\n", snap[LAYER_SNAP_W * k + (pass == 0 ? LAYER_SNAP_FN : LAYER_SNAP_FT)]);
         }
     }
+#undef CLOSED_PAIR
     if (ferror(fp)) {
         gw_afile_abort(&f);
         return gw_err_set(err, GW_EIO, "%s: write error", path);

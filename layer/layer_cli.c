@@ -103,6 +103,8 @@ int layer_impact_resolve(layer_impact_cli *c, gw_err *err)
              : c->type == gw_solver_rk4 ? (c->dt > 0 ? c->dt : 1e-6) : 0;
     c->sp.rtol = c->rtol;
     c->sp.atol = c->atol;
+    if ((rc = gw_solver_tolerances_check(c->rtol, c->atol, "--rtol", "--atol", err)) != GW_OK)
+        return rc;
     if (!c->sample)
         return gw_err_set(err, GW_EINVAL, "--sample: a sample file (from layer-make) is required");
     return GW_OK;

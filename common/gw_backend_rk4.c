@@ -39,11 +39,6 @@ static void rk4_destroy(gw_solver *s)
     s->impl = NULL;
 }
 
-static int sgn(double x)
-{
-    return (x > 0) - (x < 0);
-}
-
 /* One RK4 step of length h from (t, y0) into out (y0, out and the stage
  * arrays are distinct, hence restrict: the loops vectorise without alias checks). */
 static int rk4_step(gw_solver *s, double t, const double *restrict y0, double h,
@@ -87,7 +82,7 @@ static void rk4_init_signs(gw_solver *s)
 {
     rk4_impl *r = s->impl;
     for (int k = 0; k < s->sys.nroots; k++)
-        r->sign[k] = (signed char)sgn(r->g0[k]);
+        r->sign[k] = (signed char)gw_sgn(r->g0[k]);
 }
 
 static int rk4_create(gw_solver *s, double t0, const double *y0, gw_err *err)
@@ -133,7 +128,7 @@ static int rk4_create(gw_solver *s, double t0, const double *y0, gw_err *err)
 /* Does component k differ from its reference sign in g (crossed or hit zero)? */
 static int crossed(const rk4_impl *r, const double *g, int k)
 {
-    return r->sign[k] != 0 && sgn(g[k]) != r->sign[k];
+    return gw_root_crossed(r->sign, g, k);
 }
 
 /* Locate the earliest root inside the step (t, t + h] in which some component
@@ -237,7 +232,7 @@ static int rk4_advance(gw_solver *s, double tout, double *t, double *y, int *roo
                     if (roots)
                         roots[k] = c ? -r->sign[k] : 0;
                     if (c || r->sign[k] == 0)
-                        r->sign[k] = (signed char)sgn(r->g[k]);
+                        r->sign[k] = (signed char)gw_sgn(r->g[k]);
                 }
                 *t = r->t;
                 memcpy(y, r->y, (size_t)n * sizeof *y);
@@ -246,7 +241,7 @@ static int rk4_advance(gw_solver *s, double tout, double *t, double *y, int *roo
             memcpy(r->g0, r->g, (size_t)nr * sizeof *r->g);
             for (int k = 0; k < nr; k++)
                 if (r->sign[k] == 0)
-                    r->sign[k] = (signed char)sgn(r->g[k]);
+                    r->sign[k] = (signed char)gw_sgn(r->g[k]);
         }
         r->t = (r->t + h >= tout || tout - (r->t + h) < 1e-9 * dt) ? tout : r->t + h;
         memcpy(r->y, r->ynew, (size_t)n * sizeof *y);

@@ -55,11 +55,6 @@ static void verlet_destroy(gw_solver *s)
     s->impl = NULL;
 }
 
-static int sgn(double x)
-{
-    return (x > 0) - (x < 0);
-}
-
 /* f and the root signs at (t, y): the start of an integration. */
 static int verlet_restart(gw_solver *s)
 {
@@ -73,7 +68,7 @@ static int verlet_restart(gw_solver *s)
         if ((rc = s->sys.roots(v->t, v->y, v->g, s->sys.params)) != 0)
             return rc;
         for (int k = 0; k < s->sys.nroots; k++)
-            v->sign[k] = (signed char)sgn(v->g[k]);
+            v->sign[k] = (signed char)gw_sgn(v->g[k]);
     }
     return 0;
 }
@@ -178,12 +173,12 @@ static int verlet_advance(gw_solver *s, double tout, double *t, double *y, int *
             if ((rc = s->sys.roots(v->t, v->y, v->g, s->sys.params)) != 0)
                 break;
             for (int k = 0; k < nr; k++) {
-                int c = v->sign[k] != 0 && sgn(v->g[k]) != v->sign[k];
+                int c = gw_root_crossed(v->sign, v->g, k);
                 if (roots)
                     roots[k] = c ? -v->sign[k] : 0;
                 found |= c;
                 if (c || v->sign[k] == 0)
-                    v->sign[k] = (signed char)sgn(v->g[k]);
+                    v->sign[k] = (signed char)gw_sgn(v->g[k]);
             }
         }
     }

@@ -26,6 +26,19 @@ struct gw_solver {
     void *impl;
 };
 
+/* Sign of x (-1, 0, 1), and whether root function k has left its reference
+ * sign (crossed or hit zero; sign 0 = inactive until it moves away from zero):
+ * the root convention of the fixed-step backends. */
+static inline int gw_sgn(double x)
+{
+    return (x > 0) - (x < 0);
+}
+
+static inline int gw_root_crossed(const signed char *sign, const double *g, int k)
+{
+    return sign[k] != 0 && gw_sgn(g[k]) != sign[k];
+}
+
 /* Record an error message on the solver (printf-style). */
 void gw_solver_set_error(gw_solver *s, const char *fmt, ...)
     __attribute__((format(printf, 2, 3)));

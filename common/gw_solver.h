@@ -33,6 +33,19 @@ typedef int (*gw_root_fn)(double t, const double *y, double *g, void *params);
  * side of a discontinuity of the rates). Same return convention as the rhs. */
 typedef int (*gw_project_fn)(double t, double h, double *y, double *ydot, void *params);
 
+/* Drift of the model's own position-like components (verlet backend): called
+ * in every step after the coordinates have drifted, with ph the state at the
+ * half step (velocities v(t + h/2); coordinates and the components marked
+ * GW_DRIFT_MODEL still at their values at t) and y the state whose coordinates are at t + h. The model
+ * writes the end values of its GW_DRIFT_MODEL components into y (e.g. the
+ * incremental tangential force of a contact, F_t += K_t v_t(t + h/2) h, and
+ * the ledgers it feeds); the rhs then sees them at t + h. Same return
+ * convention as the rhs. */
+typedef int (*gw_drift_fn)(double t, double h, const double *ph, double *y, void *params);
+
+/* drift[i] of a component the model advances itself (gw_drift_fn). */
+#define GW_DRIFT_MODEL (-2L)
+
 /* Banded Jacobian storage as SUNDIALS lays it out: column j, row i with
  * -ml <= i - j <= mu. Use gw_band_set to write entries; all entries start at 0. */
 typedef struct gw_band {
@@ -65,9 +78,11 @@ typedef struct gw_system {
     /* Second-order structure, used by the verlet backend (required there, ignored
      * by the others): drift[i] = j >= 0 says dy_i/dt = y_j (a coordinate and its
      * velocity); drift[i] = -1 marks every other component, whose rate the rhs
-     * gives (velocities, forces carried as state, integrated ledgers). */
+     * gives (velocities, forces carried as state, integrated ledgers);
+     * drift[i] = GW_DRIFT_MODEL a component that drift_fn advances. */
     const long *drift;
     gw_project_fn project; /* after each verlet step (optional) */
+    gw_drift_fn drift_fn;  /* required when some drift[i] == GW_DRIFT_MODEL */
 } gw_system;
 
 /* Backend variants. */

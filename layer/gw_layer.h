@@ -391,7 +391,7 @@ int gw_layer_impact_check(const gw_layer_sample *s, const gw_layer_impact_params
  * time of the two smallest discs meeting at V_i, tau = (4/5) B(2/5, 1/2)
  * (5 M / (4 K_n))^(2/5) V_i^(-1/5) with the reduced mass M = m/2, over GW_LAYER_DEM_STEPS,
  * shortened so that dt_out is a whole number of steps. s. */
-#define GW_LAYER_DEM_STEPS 200
+#define GW_LAYER_DEM_STEPS 100
 double gw_layer_impact_dem_dt(const gw_layer_sample *s, const gw_layer_params *lp,
                               const gw_layer_impact_params *ip);
 

@@ -5,6 +5,7 @@ add_library(gw_layer STATIC
   ${CMAKE_CURRENT_LIST_DIR}/layer_clump_check.c
   ${CMAKE_CURRENT_LIST_DIR}/layer_contacts.c
   ${CMAKE_CURRENT_LIST_DIR}/layer_sim.c
+  ${CMAKE_CURRENT_LIST_DIR}/layer_dem.c
   ${CMAKE_CURRENT_LIST_DIR}/layer_sample.c
   ${CMAKE_CURRENT_LIST_DIR}/layer_make.c
   ${CMAKE_CURRENT_LIST_DIR}/layer_impact.c

@@ -71,7 +71,7 @@ int layer_impact_options(layer_impact_cli *c, gw_opt *o)
     o[i++] = OPT_L("rings", &c->rings, "N", "number of crowns [12]", 1, 1000);
     o[i++] = OPT_S("solver", &c->solver, "NAME", "verlet (explicit DEM, no located events), rk4, cvode or arkode [verlet; rk4 with --exact]");
     o[i++] = OPT_S("method", &c->method, "NAME", "cvode: bdf|adams; arkode: erk|dirk [default]");
-    o[i++] = OPT_D("dt", &c->dt, "DT", "fixed step of verlet or rk4, s [0 = auto: verlet the shortest binary contact time / 200, rk4 1e-6]", 0, 1, 1);
+    o[i++] = OPT_D("dt", &c->dt, "DT", "fixed step of verlet or rk4, s [0 = auto: verlet the shortest binary contact time / 100, rk4 1e-6]", 0, 1, 1);
     o[i++] = (gw_opt){.name = "exact", .kind = GW_OPT_FLAG, .dest = &c->exact, .help = "exact mode: RK4 (or --solver cvode|arkode) stopping at every contact and stick/slip transition, dt 1e-6 s; the reference the fast default is tested against"};
     o[i++] = OPT_D("rtol", &c->rtol, "R", "relative tolerance of cvode/arkode [1e-8]", 0, 1, 1);
     o[i++] = OPT_D("atol", &c->atol, "A", "absolute tolerance (scaled per component) [1e-8]", 0, 1, 1);

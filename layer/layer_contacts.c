@@ -169,9 +169,11 @@ int layer_contacts_build(gw_layer *L, gw_err *err)
     long *drift = malloc((size_t)dim * sizeof *drift);
     double *un_last = calloc((size_t)nc + 1, sizeof *un_last);
     layer_tscr *tscr = calloc((size_t)nc + 1, sizeof *tscr);
+    double *geo = malloc((4 * (size_t)nc + 4) * sizeof *geo);
     double *snap = malloc(((size_t)nc + 1) * LAYER_SNAP_W * sizeof *snap);
-    if (!ny || !nsc || !roots || !drift || !un_last || !tscr || !snap) {
+    if (!ny || !nsc || !roots || !drift || !un_last || !tscr || !geo || !snap) {
         free(c), free(ny), free(nsc), free(roots), free(drift), free(un_last), free(tscr), free(snap);
+        free(geo);
         return gw_err_set(err, GW_ENOMEM, "layer: out of memory for %d contacts", nc);
     }
     memcpy(ny, L->y, 6 * (size_t)nb * sizeof *ny);
@@ -184,8 +186,10 @@ int layer_contacts_build(gw_layer *L, gw_err *err)
     }
     memcpy(ny + 6 * nb + nc, L->y + 6 * nb + L->nc, (size_t)L->ntail * sizeof *ny);
     free(L->y), free(L->scale), free(L->c), free(L->roots), free(L->drift), free(L->un_last);
-    free(L->tscr), free(L->snap);
+    free(L->tscr), free(L->snap), free(L->geo);
     L->tscr = tscr;
+    L->geo = geo;
+    L->geo_valid = L->geo_pos = 0;
     L->snap = snap;
     L->stamp++;
     L->drift = drift;

@@ -79,12 +79,19 @@ struct gw_layer {
     void *hook_ctx;
     /* Explicit DEM mode (the verlet backend): no contact events; drift maps
      * positions to velocities; un_last[k] is contact k's overlap at the last rhs
-     * evaluation (0 when open), which for verlet is the state at the step end
-     * that the step projection (layer_sim.c) reads. */
+     * evaluation (0 when open), which for verlet is the state at the step end:
+     * the start of the next step for layer_dem_drift (layer_dem.c). */
     int dem;
     long *drift;        /* [cap_y] */
     double *un_last;    /* [cap_c] */
     struct layer_tscr *tscr; /* [cap_c], DEM mode only */
+    double *ymid;       /* [6 nb], DEM mode: the mid-step state (layer_dem.c) */
+    double *dem_book;   /* [ntail], DEM mode: the ledger increments of a step */
+    double *geo;        /* [4 cap_c], DEM mode, discs only: u_n, sqrt(u_n), normal
+                           of the step's end positions (layer_dem_drift) */
+    int geo_valid;      /* geo holds the state the next rhs sees */
+    int geo_pos;        /* geo holds the positions of the last rhs evaluation
+                           (layer_dem_rhs; 0 after a list rebuild) */
     /* Contact snapshot for the ledger and ring analyses (layer_snapshot): one
      * pass of contact geometry per state, shared by every consumer. stamp
      * counts the changes of y; snap_stamp is the stamp the snapshot was made at. */
@@ -115,11 +122,11 @@ static inline int layer_contact_region_pt(const gw_layer *L, const layer_contact
     return d2 < lim ? (int)sqrt(d2) : L->reg_n;
 }
 
-/* What the rhs saw of a closed frictional contact, kept in DEM mode for the
- * step projection: F_t, K_t, v_t, dF_n/dt, elastic F_n, the dissipation and
- * Mindlin-work rates it booked, and the contact's region (-1: none). */
+/* What the last rhs evaluation found of a closed frictional contact, kept in
+ * DEM mode for the next step (layer_dem.c): K_t at the step's start and the
+ * contact's region (-1: none). */
 typedef struct layer_tscr {
-    double f, kt, vt, fnd, fel, cd, ck; /* f: the state the rhs saw */
+    double kt;
     int q;
 } layer_tscr;
 
@@ -209,10 +216,14 @@ int layer_contact_region_at(const gw_layer *L, const layer_contact *c, const dou
  * *global and into regions[region] (either may be NULL; layer_regions.c). */
 void layer_ledger_sum(const gw_layer *L, gw_layer_energy *global, gw_layer_energy *regions);
 
-/* DEM mode: after each verlet step of length h, zero F_t of contacts that
- * opened and evaluate the tangential law at the state the step ended with
- * (layer_sim.c). */
-int layer_step_project(double t, double h, double *y, double *ydot, void *P);
+/* The DEM step (layer_dem.c): gw_system.drift_fn and .project in DEM mode. */
+int layer_dem_drift(double t, double h, const double *ph, double *y, void *P);
+int layer_dem_project(double t, double h, double *y, double *ydot, void *P);
+int layer_dem_rhs(double t, const double *y, double *yd, void *P);
+
+/* Overlap (*un) and tangential relative velocity of contact c in state y, the
+ * velocity also when the contact is open there (layer_model.c). */
+double layer_contact_vt(const gw_layer *L, const layer_contact *c, const double *y, double *un);
 
 /* Fill sys (rhs, roots, dim, scale, drift) for the current list. */
 void layer_system_fill(gw_layer *L);

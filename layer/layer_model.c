@@ -38,7 +38,8 @@
  *   delays the elastic unloading after a reversal by eta cap / |r_e| (~1e-9 s).
  *   The ledger uses the clamped force and its true rate (r_c at the cap), so
  *   the margin moves no energy. F_t of open contacts is zeroed at the solver's
- *   stops (exact mode) or after every step (DEM mode, layer_sim.c).
+ *   stops. (DEM mode advances F_t by the incremental law instead, layer_dem.c:
+ *   the rate form here serves the exact mode and the other backends.)
  * Energy (B.7-B.14): the contact absorbs the power F_t v_t + F_n du_n/dt. With
  *   E_st = F_t^2 / (2 K_t) the split is
  *   F_t v_t = dE_st/dt + dW_K/dt + dE_d/dt,
@@ -56,8 +57,8 @@
  * K_t = k_t F_n^(1/3) = (k_t K_n^(1/3)) u_n^(1/2), the same to rounding, needs no
  * cube root; a layer without clumps takes a disc-only kinematics path (arms =
  * radii) that skips the pairs farther apart than R_a + R_b before any square
- * root. The tangential law itself is layer_tangential (layer_impl.h), shared with
- * the DEM step projection.
+ * root. The tangential law itself is layer_tangential (layer_impl.h). In DEM
+ * mode a disc-only layer uses layer_dem_rhs (layer_dem.c) instead.
  * Units: SI (m, s, kg, N, Pa, J).
  */
 #include <math.h>
@@ -231,6 +232,9 @@ void gw_layer_free(gw_layer *L)
     free(L->drift);
     free(L->un_last);
     free(L->tscr);
+    free(L->ymid);
+    free(L->dem_book);
+    free(L->geo);
     free(L->snap);
     free(L->snap_xy);
     free(L->c);
@@ -320,6 +324,13 @@ static void contact_kinematics(const gw_layer *L, const layer_contact *c, const 
     *vt = -rx * n[1] + ry * n[0] - sa[5] * lev[0] - wrb;
 }
 
+double layer_contact_vt(const gw_layer *L, const layer_contact *c, const double *y, double *un)
+{
+    double nn[2], und, vt, arma[2], armb[2], lev[2];
+    contact_kinematics(L, c, y, un, nn, &und, &vt, arma, armb, lev);
+    return vt;
+}
+
 /* Kinematics of disc-only contact c (no clumps: body = disc, arms = radii):
  * overlap, normal, overlap rate and tangential relative velocity; 0 when open
  * (the square root is only taken for pairs closer than R_a + R_b). */
@@ -358,6 +369,16 @@ static inline int disc_kinematics(const layer_contact *c, const double *y, doubl
     *und = -(rx * n[0] + ry * n[1]);
     *vt = -rx * n[1] + ry * n[0] - sa[5] * c->ra - wrb;
     return 1;
+}
+
+/* Region of closed contact c (overlap un, normal nn) for the regional ledgers. */
+static inline int rhs_region(const gw_layer *L, const layer_contact *c, const double *y, double un,
+                             const double nn[2], int clumps)
+{
+    if (clumps)
+        return layer_contact_region_at(L, c, y, un, nn);
+    return layer_contact_region_pt(L, c, y[6 * c->qa] + (c->ra - 0.5 * un) * nn[0],
+                                   y[6 * c->qa + 1] + (c->ra - 0.5 * un) * nn[1]);
 }
 
 static int layer_rhs(double t, const double *y, double *yd, void *P)
@@ -406,21 +427,26 @@ static int layer_rhs(double t, const double *y, double *yd, void *P)
             pd += (fn - fel) * und;
         }
         double ft = 0;
-        if (tp > 0) {
+        if (tp > 0 && tscr) { /* DEM: F_t is the step's (layer_dem.c), tangential books there */
+            double cap = tp * fel, f = y[6 * n + k];
+            ft = f > cap ? cap : f < -cap ? -cap : f;
+            *fdot = 0;
+            tscr[k].kt = c->kts * su;
+            if (rtail) {
+                int q = rhs_region(L, c, y, un, nn, clumps);
+                tscr[k].q = q;
+                rtail[2 * q] += (fn - fel) * und;
+            }
+        } else if (tp > 0) {
             double kt = c->kts * su, cd, ck;
             layer_tangential(y[6 * n + k], kt, vt, fnd, fel, tp, &ft, fdot, &cd, &ck);
             pd += cd;
             pk += ck;
-            int q = -1;
             if (rtail) {
-                q = clumps ? layer_contact_region_at(L, c, y, un, nn)
-                           : layer_contact_region_pt(L, c, y[6 * c->qa] + (c->ra - 0.5 * un) * nn[0],
-                                                     y[6 * c->qa + 1] + (c->ra - 0.5 * un) * nn[1]);
+                int q = rhs_region(L, c, y, un, nn, clumps);
                 rtail[2 * q] += cd + (fn - fel) * und;
                 rtail[2 * q + 1] += ck;
             }
-            if (tscr)
-                tscr[k] = (layer_tscr){y[6 * n + k], kt, vt, fnd, fel, cd, ck, q};
         } else {
             *fdot = 0;
             if (rtail && alpha > 0)
@@ -467,11 +493,18 @@ static int layer_roots(double t, const double *y, double *g, void *P)
      * cannot bring an unlisted pair into contact */
     double un, nn[2], h = (L->dem ? 0.45 : 0.5) * L->p.skin;
     const int r0 = layer_root_rebuild(L), s0 = layer_root_slip(L);
-    for (int i = 0; i < L->n; i++) {
-        double p[2], arm[2];
-        layer_disc_xy(L, y, i, p, arm);
-        double dx = p[0] - L->x_list[2 * i], dy = p[1] - L->x_list[2 * i + 1];
-        g[r0 + i] = L->fixed[layer_body(L, i)] ? 1.0 : h * h - dx * dx - dy * dy;
+    if (L->off) {
+        for (int i = 0; i < L->n; i++) {
+            double p[2], arm[2];
+            layer_disc_xy(L, y, i, p, arm);
+            double dx = p[0] - L->x_list[2 * i], dy = p[1] - L->x_list[2 * i + 1];
+            g[r0 + i] = L->fixed[layer_body(L, i)] ? 1.0 : h * h - dx * dx - dy * dy;
+        }
+    } else { /* discs only: particle i is body i */
+        for (int i = 0; i < L->n; i++) {
+            double dx = y[6 * i] - L->x_list[2 * i], dy = y[6 * i + 1] - L->x_list[2 * i + 1];
+            g[r0 + i] = L->fixed[i] ? 1.0 : h * h - dx * dx - dy * dy;
+        }
     }
     if (L->p.no_events)
         return 0;
@@ -503,7 +536,7 @@ void layer_system_fill(gw_layer *L)
         L->scale[6 * n + L->nc + q] = L->e_scale > 0 ? L->e_scale : 1.0;
     memset(&L->sys, 0, sizeof L->sys);
     L->sys.dim = L->dim;
-    L->sys.rhs = layer_rhs;
+    L->sys.rhs = L->dem && !L->off ? layer_dem_rhs : layer_rhs;
     L->sys.roots = layer_roots;
     L->sys.nroots = L->p.no_events ? L->n : L->nc * (L->tan_phi > 0 ? 2 : 1) + L->n;
     L->sys.scale = L->scale;
@@ -511,10 +544,11 @@ void layer_system_fill(gw_layer *L)
     for (int i = 0; i < n; i++)
         for (int q = 0; q < 6; q++)
             L->drift[6 * i + q] = q < 3 ? 6 * i + q + 3 : -1;
-    for (long q = 6L * n; q < L->dim; q++)
-        L->drift[q] = -1;
+    for (long q = 6L * n; q < L->dim; q++) /* DEM: F_t advanced by layer_dem_drift */
+        L->drift[q] = L->dem && L->tan_phi > 0 && q < 6L * n + L->nc ? GW_DRIFT_MODEL : -1;
     L->sys.drift = L->drift;
-    L->sys.project = L->dem ? layer_step_project : NULL;
+    L->sys.project = L->dem ? layer_dem_project : NULL;
+    L->sys.drift_fn = L->dem ? layer_dem_drift : NULL;
 }
 
 void gw_layer_energy_of(const gw_layer *L, gw_layer_energy *e)
@@ -544,7 +578,26 @@ const double *layer_snapshot(const gw_layer *L)
     double *xy = M->snap_xy, arm[2];
     for (int i = 0; i < L->n; i++)
         layer_disc_xy(L, y, i, xy + 2 * i, arm);
-    for (int k = 0; k < L->nc; k++) {
+    /* DEM mode, discs only: the last rhs evaluation's geometry is the state's
+     * (the same arithmetic; layer_dem.c) */
+    const double *geo = L->dem && !L->off && L->geo_pos ? L->geo : NULL;
+    for (int k = 0; geo && k < L->nc; k++) {
+        const layer_contact *c = &L->c[k];
+        const double *g = geo + 4 * k, *pa = xy + 2 * c->a;
+        double *o = M->snap + LAYER_SNAP_W * k, un = g[0], su = g[1];
+        o[LAYER_SNAP_UN] = o[LAYER_SNAP_FN] = o[LAYER_SNAP_FT] = o[LAYER_SNAP_KT] = 0;
+        o[LAYER_SNAP_PX] = pa[0], o[LAYER_SNAP_PY] = pa[1];
+        if (!(un > 0))
+            continue;
+        o[LAYER_SNAP_PX] += (c->ra - 0.5 * un) * g[2];
+        o[LAYER_SNAP_PY] += (c->ra - 0.5 * un) * g[3];
+        double fn = c->kn * un * su, cap = tp * fn, f = y[6 * L->nb + k];
+        o[LAYER_SNAP_UN] = un;
+        o[LAYER_SNAP_FN] = fn;
+        o[LAYER_SNAP_KT] = c->kts * su;
+        o[LAYER_SNAP_FT] = f > cap ? cap : f < -cap ? -cap : f;
+    }
+    for (int k = 0; !geo && k < L->nc; k++) {
         const layer_contact *c = &L->c[k];
         double *o = M->snap + LAYER_SNAP_W * k;
         const double *pa = xy + 2 * c->a, *pb = c->b >= 0 ? xy + 2 * c->b : pa;

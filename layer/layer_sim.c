@@ -13,13 +13,8 @@
  *   the projection moves no energy.
  * - DEM mode (the verlet backend, gw_solver.h): no contact or stick/slip
  *   events, only the list rebuild root, reported at the end of the step that
- *   crossed it. After every step layer_step_project zeroes F_t of contacts that
- *   opened (their rate is already zero: consistent with the rates the step
- *   keeps). A sliding state is held at the margin by the rate of
- *   layer_model.c alone: clamping it here would leave the step's kept rate,
- *   computed from the unclamped state, to pull it inside the cap, a jump of the
- *   used force outside the ledger (measured: closure 3.5e-2 with the clamp,
- *   1.1e-4 without, on the default impact's first 0.5 ms).
+ *   crossed it. The tangential force is advanced as a coordinate of the step
+ *   and the ledger books it feeds are added after the step (layer_dem.c).
  * - Zeno guard: more than LAYER_ZENO_COUNT events within LAYER_ZENO_DT of each
  *   other (seen with CVODE when a contact grazes u_n = 0) switch the event roots
  *   off for LAYER_ZENO_QUIET s; counted in gw_layer_stats.zeno_guards.
@@ -62,43 +57,6 @@ static int project(gw_layer *L, const int *closing, const int *slipping)
     return changed;
 }
 
-int layer_step_project(double t, double h, double *y, double *ydot, void *P)
-{
-    (void)t, (void)h;
-    gw_layer *L = P;
-    const int n = L->nb, nc = L->nc;
-    double *f = y + 6L * n, *fdot = ydot + 6L * n, *edot = fdot + nc;
-    for (int k = 0; k < nc; k++) {
-        if (!(L->un_last[k] > 0)) { /* open: its rate is already zero */
-            if (f[k] != 0) {
-                f[k] = 0;
-                L->st.projections++;
-            }
-            continue;
-        }
-        if (!(L->tan_phi > 0))
-            continue;
-        /* The rhs saw the predicted state, which near the Coulomb cap may lie
-         * on its other side (stick where the step ends in slip): then the rates
-         * the next step starts from are the law's at the end state. (Redoing the
-         * last half kick with them as well makes the step first order:
-         * measured e_n error 2.5e-4 instead of 3.5e-5 at dt = 1e-5 s.) */
-        const layer_tscr *s = &L->tscr[k];
-        const double cap = L->tan_phi * s->fel;
-        if ((fabs(s->f) >= cap) == (fabs(f[k]) >= cap))
-            continue; /* same side of the cap: the rates stand (second order) */
-        double ft, cd, ck;
-        layer_tangential(f[k], s->kt, s->vt, s->fnd, s->fel, L->tan_phi, &ft, &fdot[k], &cd, &ck);
-        edot[0] += cd - s->cd;
-        edot[1] += ck - s->ck;
-        if (L->reg_n > 0 && s->q >= 0) {
-            edot[2 + 2 * s->q] += cd - s->cd;
-            edot[3 + 2 * s->q] += ck - s->ck;
-        }
-    }
-    return 0;
-}
-
 static void harvest_stats(gw_layer *L)
 {
     if (!L->solver)
@@ -131,8 +89,14 @@ int gw_layer_start(gw_layer *L, const gw_solver_type *type, const gw_solver_para
     L->type = type;
     L->sp = *sp;
     L->dem = type == gw_solver_verlet;
-    if (L->dem) /* explicit DEM: no contact events (gw_layer_params.no_events) */
+    if (L->dem) { /* explicit DEM: no contact events (gw_layer_params.no_events) */
         L->p.no_events = 1;
+        free(L->ymid), free(L->dem_book);
+        L->ymid = malloc(6 * (size_t)L->nb * sizeof *L->ymid);
+        L->dem_book = calloc((size_t)L->ntail + 1, sizeof *L->dem_book);
+        if (!L->ymid || !L->dem_book)
+            return gw_err_set(err, GW_ENOMEM, "layer: out of memory for the DEM step");
+    }
     /* The contact network couples particles far apart in the state vector (no
      * useful band), and the Hertz-Mindlin layer is not stiff at the solver
      * tolerances used: CVODE runs Adams with fixed-point iteration unless a

@@ -66,14 +66,14 @@ print('missing', missing, 'energy_error', d.get('energy_error'))
 sys.exit(0 if not missing and d['energy_error'] <= 1e-4 and abs(d['v_ni'] - 10 * 0.8660254) < 1e-6 else 1)
 PY"
 # the default (fast) mode: verlet with the step from the contact time, ledger
-# closure reported and below 2e-3, e_n and penetration as in the exact mode
+# closure reported and below 2.5e-4 (measured 2.7e-5), e_n and penetration as in the exact mode
 "$gw" layer-impact --sample "$tmp/a.txt" --rb-rm 1 --vi 10 --alpha 30 --t-max 0.005 --json > "$tmp/fast.json"
-check "default layer-impact: verlet, dt from the contact time, closure < 2e-3, e_n within 0.005 and penetration within 1 % of --exact" "python3 - '$tmp' <<'PY'
+check "default layer-impact: verlet, dt from the contact time, closure < 2.5e-4, e_n within 0.005 and penetration within 1 % of --exact" "python3 - '$tmp' <<'PY'
 import json, sys
 f = json.load(open(sys.argv[1] + '/fast.json')); e = json.load(open(sys.argv[1] + '/imp.json'))
 so = f['settings']['solver']
 print('fast', so['name'], so['dt'], f['energy_error'], f['e_n'], e['e_n'], f['penetration'], e['penetration'])
-ok = so['name'] == 'verlet' and so['exact'] is False and 0 < so['dt'] < 2e-5 and f['energy_error'] < 2e-3
+ok = so['name'] == 'verlet' and so['exact'] is False and 0 < so['dt'] < 2e-5 and f['energy_error'] < 2.5e-4
 ok = ok and e['settings']['solver']['name'] == 'rk4' and e['settings']['solver']['exact'] is True
 ok = ok and abs(f['e_n'] - e['e_n']) < 0.005 and abs(f['penetration'] - e['penetration']) <= 0.01 * e['penetration']
 sys.exit(0 if ok else 1)

@@ -75,9 +75,10 @@ for k, r in enumerate(rows):
     if not (0 < v["block_loss_first_contact"] <= 1 and 0 <= v["dissipated_first_contact"] < 0.5):
         bad.append("case %d first-contact fractions out of range" % k)
     # the default fast mode (verlet): closure second order in dt, measured
-    # 6e-4 .. 1.6e-3 on this 40-disc sample over 12 ms (2.2e-3 on a verlet-
-    # settled one); a lost tangential history or a first-order step gives 5e-3+
-    if not v["energy_error"] < 3e-3:
+    # 7e-6 .. 4.6e-5 on this 40-disc sample over 12 ms; a lost tangential history,
+    # or a first-order step gives 5e-3+ (the default impact without the
+    # Mindlin-work term: 1.3e-2)
+    if not v["energy_error"] < 5e-4:
         bad.append("case %d energy closure %g" % (k, v["energy_error"]))
 xs = {round(float(r["x_impact"]), 12) for r in rows}
 if len(xs) != 3:

@@ -30,7 +30,8 @@ FENCE = re.compile(r"^\s*(```|~~~)")
 CODE_SPAN = re.compile(r"`[^`]*`")
 # built from pieces so that this file does not match its own patterns
 OUTSIDE = re.compile(r"\.\./" + "shared/" + r"|(?<![\w/])" + "shared/" + r"physics\.md|(?<![\w.])/" + "work/")
-CITE = re.compile(r"docs/physics\.md(?:'s)?(?:\s+section)?\s+(\d+)(?:\.(\d+))?")
+# a section number N or N.M, not a value such as 2.94322 or 4.0e9
+CITE = re.compile(r"docs/physics\.md(?:'s)?(?:\s+section)?\s+(\d)(?:\.(\d{1,2}))?(?![\deE]|\.\d)")
 HEADING = re.compile(r"^(#{1,6})\s+(.*?)\s*#*\s*$")
 
 
@@ -157,7 +158,7 @@ def selftest():
                      "```\n[ignored in a code block](nothere.md)\n```\n"
                      "See " + ".." + "/shared/notes.md.\n")
         with open(os.path.join(tmp, "src", "a.c"), "w") as fh:
-            fh.write("/* docs/physics.md 1.1 and docs/physics.md 1.9 */\n")
+            fh.write("/* docs/physics.md 1.1, docs/physics.md 2.94322 (a value) and docs/physics.md 1.9 */\n")
         found, _ = check(tmp)
         want = ["nothere.md': no such", "no heading '#12-nothing'", "leaves the repository",
                 "outside the repository", "docs/physics.md 1.9"]

@@ -1,5 +1,5 @@
 /*
- * test_chain_damping.c: viscoelastic damping (physics.md 1.5).
+ * test_chain_damping.c: viscoelastic damping (docs/physics.md 1.5).
  *  - Calibration: the Hunt-Crossley alpha and Kuwabara-Kono gamma found for a
  *    target restitution e give a single bead on the wall that restitution to
  *    1e-3 (the issue asks 1 %; Brent converges to ~1e-10).

@@ -1,6 +1,6 @@
 /*
  * test_layer_contact.c: contact laws of the 2D layer against closed forms
- * (physics.md 1.3, 2.1, 2.5), on the three backends.
+ * (docs/physics.md 1.3, 2.1, 2.5), on the three backends.
  *
  * 1. Two equal discs head-on, no friction, no gravity: the relative coordinate
  *    obeys m_eff u'' = -K_n u^(3/2), m_eff = m/2, so the contact lasts

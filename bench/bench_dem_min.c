@@ -1,6 +1,6 @@
 /*
  * bench_dem_min.c: the leanest DEM step we can write for the Bourrier layer
- * (physics.md 2.1, eqs. B.1-B.4), as a cost bound for granwave's layer
+ * (docs/physics.md 2.1, eqs. B.1-B.4), as a cost bound for granwave's layer
  * impacts. Measurement only, never run by ctest.
  *
  * Reads a granwave text sample (layer/gw_layer.h, version 1), adds the block

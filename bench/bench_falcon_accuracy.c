@@ -2,7 +2,7 @@
  * bench_falcon_accuracy.c: convergence study behind the falcon main job's step.
  * Never a pass/fail test: prints measurements.
  *
- * Case: the Falcon column (physics.md 1.1, eq. F.11; gw_chain_params_default,
+ * Case: the Falcon column (docs/physics.md 1.1, eq. F.11; gw_chain_params_default,
  * steel) of N beads hitting the rigid wall at v_imp. Observables: F_max (largest
  * wall force, N), tau_max (its time, s), tau_N (last time bead 1 leaves the wall,
  * s) and the force period P (s). Reference: CVODE BDF at rtol = atol = 1e-12 (the

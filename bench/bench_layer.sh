@@ -1,5 +1,5 @@
 #!/bin/bash
-# bench/bench_layer.sh [BUILD_DIR]: cost of layer impacts (physics.md 2.3) and of
+# bench/bench_layer.sh [BUILD_DIR]: cost of layer impacts (docs/physics.md 2.3) and of
 # `granwave sweep` over them. Never a pass/fail test: prints measurements.
 #   1. the default 300-disc sample (granwave layer-make, made once and kept in
 #      BUILD_DIR/bench-layer/sample300.txt);

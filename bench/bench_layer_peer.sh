@@ -1,5 +1,5 @@
 #!/bin/bash
-# bench/bench_layer_peer.sh [BUILD_DIR]: granwave's layer impact (physics.md 2.3)
+# bench/bench_layer_peer.sh [BUILD_DIR]: granwave's layer impact (docs/physics.md 2.3)
 # against its LAMMPS peer (bench/peer_lammps_layer.py) and against a minimal
 # fixed-list DEM step (bench_dem_min). Measurement only, never pass/fail.
 #   a. the default 300-disc sample (granwave layer-make, made once and kept in

@@ -2,7 +2,7 @@
  * bench_long.c: long chains (1e3 .. 1e6 beads), cost per bead-step and memory.
  * Never a pass/fail test: prints measurements.
  *
- * Case: the Falcon column (physics.md 1.1, eq. F.11) of N steel beads
+ * Case: the Falcon column (docs/physics.md 1.1, eq. F.11) of N steel beads
  * (gw_chain_params_default) hitting the wall at v_imp = 0.3 m/s. The compression
  * front runs up the chain at v = 4R/T_q (F.27), one bead per T_q/2 = tc, with
  * tc = (m/k)^(2/5) v_imp^(-1/5) (F.17, C3 = 2); the run stops at a fixed end time

@@ -3,7 +3,7 @@
  * granwave side of bench/run_peers.sh. Never a pass/fail test.
  *
  * Case: N = 40 steel beads (gw_chain_params_default: k, K, m), v_imp = 0.3 m/s,
- * rigid steel wall, no damping (physics.md 1.1, eq. F.11). Observables: the
+ * rigid steel wall, no damping (docs/physics.md 1.1, eq. F.11). Observables: the
  * peak wall force F_max (F.13) and the contact duration tau_N (F.4), from
  * gw_chain_collide, which locates every contact change as a root and restarts
  * the integrator there.

@@ -9,7 +9,7 @@ Force law. LAMMPS's granular `hertz` normal model is
 (pair_granular doc; fix wall/gran uses R_eff = R_i for a flat wall). With
 damping coefficient eta_n0 = 0 (no normal damping, whatever the damping model)
 and `tangential linear_nohistory 0 0` (no tangential force; the motion is along
-the line of centres anyway) the force is exactly the Hertz law of physics.md
+the line of centres anyway) the force is exactly the Hertz law of docs/physics.md
 1.1 when
     bead-bead: k_N = k / sqrt(R/2)      wall: k_N = K / sqrt(R)
 The wall is `fix wall/gran granular hertz ... zplane 0 NULL`, a true rigid

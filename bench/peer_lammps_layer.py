@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """peer_lammps_layer.py: LAMMPS (pair_style granular, fix wall/gran) on the
-Bourrier layer impact (physics.md 2.1-2.3), as a peer of `granwave
+Bourrier layer impact (docs/physics.md 2.1-2.3), as a peer of `granwave
 layer-impact`. Measurement only, never a pass/fail test. Python writes the
 LAMMPS input, runs the LAMMPS binary and reads its output; LAMMPS does all the
 integration. The time reported here is LAMMPS's own "Loop time"; the bench

@@ -3,7 +3,7 @@
 40-bead Falcon column, run 3 times (one collision each). Peer measurement for
 bench/falcon_vs_lsoda.sh; never a pass/fail test.
 
-Model and events as bench/peer_scipy.py (physics.md 1.1, eq. F.11; SI units):
+Model and events as bench/peer_scipy.py (docs/physics.md 1.1, eq. F.11; SI units):
 N beads at v_imp hitting a rigid wall, F = k d^(3/2) per contact, wall K x_1^(3/2);
 events v_1 = 0 (F_max) and x_1 = 0 falling (tau_N); integrated from 0 to t_end,
 the time granwave's run stops. atol per component = rtol times the granwave scale

@@ -3,7 +3,7 @@
 time to solution at a fixed accuracy. Peer benchmark for bench/run_peers.sh;
 never a pass/fail test.
 
-Model (physics.md 1.1, eq. F.11), SI units: x_i displacement toward the wall,
+Model (docs/physics.md 1.1, eq. F.11), SI units: x_i displacement toward the wall,
 d_i = x_(i+1) - x_i, F_i = k d_i^(3/2) [d_i > 0], wall F_0 = K x_1^(3/2) [x_1 > 0],
 m x_1'' = F_1 - F_0, m x_i'' = F_i - F_(i-1), m x_N'' = -F_(N-1); all x = 0 and
 all v = v_imp at t = 0. State y = [x_1..x_N, v_1..v_N] (numpy-vectorised RHS).
@@ -19,7 +19,7 @@ times the granwave scale (d_max of one bead on the wall for x, v_imp for v).
 The first rtol with both errors <= acc is the time to solution (best of reps);
 the two next tighter rtol are run once more to show whether the pass holds.
 SciPy's adaptive methods do not restart at contact changes, so their error is
-not monotonic in rtol (physics.md 1.1); the whole scan is printed.
+not monotonic in rtol (docs/physics.md 1.1); the whole scan is printed.
 
 Usage: peer_scipy.py --params k K m v R --ref fmax tau_n t_end [--n 40]
                      [--acc 1e-6] [--reps 3] [--methods DOP853,LSODA]

@@ -1,5 +1,5 @@
 /*
- * chain_cmd.c: `granwave chain`, one column collision (physics.md 1.1-1.4).
+ * chain_cmd.c: `granwave chain`, one column collision (docs/physics.md 1.1-1.4).
  */
 #include <math.h>
 #include <stdlib.h>

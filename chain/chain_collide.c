@@ -1,5 +1,5 @@
 /*
- * chain_collide.c: one column-wall collision and its observables (physics.md 1.3,
+ * chain_collide.c: one column-wall collision and its observables (docs/physics.md 1.3,
  * 1.4).
  *
  * The integration stops at every root of the chain's event functions (wall

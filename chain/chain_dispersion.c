@@ -1,6 +1,6 @@
 /*
  * chain_dispersion.c: small-amplitude dispersion of a precompressed Hertz chain
- * from its space-time spectrum (physics.md 1.6). The column's wall-force
+ * from its space-time spectrum (docs/physics.md 1.6). The column's wall-force
  * spectrum is in chain_spectrum.c, the command in chain_dispersion_cmd.c.
  *
  * Model: u_i is the displacement of bead i from its equilibrium site along the

@@ -1,6 +1,6 @@
 /*
  * chain_dispersion_cmd.c: `granwave dispersion`, the dispersion study of
- * chain_dispersion.c (physics.md 1.6) and, with --column-n, the wall-force
+ * chain_dispersion.c (docs/physics.md 1.6) and, with --column-n, the wall-force
  * spectrum of a column (chain_spectrum.c). SI units; JSON, CSV and FFTW wisdom
  * (--wisdom: read only from a regular file that holds FFTW wisdom, which is then
  * the only kind of file it overwrites; checked with --out before any work).
@@ -21,7 +21,7 @@
 
 static const char *disp_summary =
     "Small-amplitude dispersion of a Hertz chain under static precompression F0\n"
-    "(physics.md 1.6): random small velocities, velocities sampled in time, space-time\n"
+    "(docs/physics.md 1.6): random small velocities, velocities sampled in time, space-time\n"
     "power spectrum (FFTW r2c, Hann window in time), ridge omega(q) against\n"
     "omega = 2 sqrt(kappa/m) |sin(qa/2)|, kappa = (3/2) k^(2/3) F0^(1/3). Steel beads\n"
     "(R = 4 mm). Wavenumbers in lattice units qa. --column-n N instead runs one column\n"

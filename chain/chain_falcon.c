@@ -9,7 +9,7 @@
  * P, detachment (final velocities, times, N_s) and E_rel/E_K(N) (F.20).
  * Outputs (--out DIR): falcon_runs.csv, falcon_final_velocities.csv,
  * falcon_summary.json, traces for N = 7, 15, 30 at the first velocity, report.md.
- * The paper's measured values below are quoted for comparison only (physics.md
+ * The paper's measured values below are quoted for comparison only (docs/physics.md
  * 1.7); every granwave number in the outputs comes from the runs.
  */
 #include <math.h>

@@ -1,7 +1,7 @@
 /*
  * chain_falcon_report.c: the markdown report of `granwave falcon`. Each granwave
  * number (from the runs) is set beside the closed forms (F.2, F.13, F.17, F.27)
- * and the paper's measured values (physics.md 1.7, quoted here with their
+ * and the paper's measured values (docs/physics.md 1.7, quoted here with their
  * conditions), with the relative difference. Velocities are matched to the
  * paper's drop heights by h_mm; rows whose condition was not run are omitted.
  */
@@ -22,7 +22,7 @@ typedef struct paper_ref {
     double unit_scale;   /* SI -> unit */
 } paper_ref;
 
-/* Falcon et al. 1998, as listed in physics.md 1.7 (rigid wall, steel beads). */
+/* Falcon et al. 1998, as listed in docs/physics.md 1.7 (rigid wall, steel beads). */
 static const paper_ref refs[] = {
     {Q_FMAX, 5.1, 69.0, 0.05 * 69.0, NAN, "F_max (N = 1..40)", "N", 1},
     {Q_FMAX, 3.1, 51.8, 0, NAN, "F_max", "N", 1},
@@ -91,7 +91,7 @@ static void fmt(char *b, size_t n, double x, const char *spec)
 static void write_comparison(const falcon *f, FILE *fp)
 {
     fprintf(fp, "## granwave against the paper\n\n"
-                "Paper values are the measurements of physics.md 1.7 (experiment) and the paper's own\n"
+                "Paper values are the measurements of docs/physics.md 1.7 (experiment) and the paper's own\n"
                 "simulation where it gives one. `model - exp` is relative to the experiment; `within`\n"
                 "says whether the model lies inside the stated experimental uncertainty (or 5 %% where\n"
                 "none is given).\n\n"

@@ -18,7 +18,7 @@
 
 #include "gw_chain.h"
 
-/* The experiment's steel is from physics.md; the others are handbook values
+/* The experiment's steel is from docs/physics.md; the others are handbook values
  * (room temperature, order-of-magnitude accuracy) for exploring soft walls. */
 static const gw_material materials[] = {
     {"steel", 21.6e10, 0.276, 7850.0},
@@ -89,7 +89,7 @@ double gw_chain_kc(double k)
     return pow(gw_chain_tau_constant() / 4.0, 2.5) * 1.25 * k;
 }
 
-/* Falcon et al. 1998, Table 2 (physics.md 1.7): sheets glued on the sensor,
+/* Falcon et al. 1998, Table 2 (docs/physics.md 1.7): sheets glued on the sensor,
  * h = 2.9 mm. tau_max(N = 1) is the input of the K_eff fit; N_d is kept for
  * comparison with the model. */
 static const gw_sheet sheets[] = {

@@ -1,10 +1,10 @@
 /*
- * chain_model.c: the bead column as an ODE system (physics.md 1.1, eq. F.11).
+ * chain_model.c: the bead column as an ODE system (docs/physics.md 1.1, eq. F.11).
  *
  *   m_i x_i'' = F_i - F_(i-1) + m_i g,   F_i = k_i d_i^(3/2) [d_i > 0],
  *   d_i = x_(i+1) - x_i,   F_(-1) = F_wall = K x_0^(3/2) [x_0 > 0]   (0-based)
  *
- * Damping (physics.md 1.5), force clamped at >= 0:
+ * Damping (docs/physics.md 1.5), force clamped at >= 0:
  *   Kuwabara-Kono  F = k d^(3/2) + gamma d^(1/2) d'
  *   Hunt-Crossley  F = k d^(3/2) (1 + (3/2) alpha d')
  * The dissipated power sum (F_el - F) (-d') is integrated as an extra state so the
@@ -43,7 +43,7 @@ static inline double damped_force(const gw_chain *c, double k, double gam, doubl
 }
 
 /* ---- undamped right-hand side, written for packed square roots ----
- * Per bead j (physics.md 1.1, F.11), with f_j the force below bead j:
+ * Per bead j (docs/physics.md 1.1, F.11), with f_j the force below bead j:
  *   f_0 = K max(x_0, 0)^(3/2) (wall),  f_j = k_(j-1) max(x_j - x_(j-1), 0)^(3/2),
  *   f_n = 0,  dx_j/dt = v_j,  dv_j/dt = g + (f_(j+1) - f_j) / m_j.
  * The clamp max(u, 0) is branch-free, and sqrt(0) = 0 gives the open contact's

@@ -1,6 +1,6 @@
 /*
  * chain_restitution.c: calibration of the viscoelastic damping constant from a
- * target restitution coefficient (physics.md 1.5).
+ * target restitution coefficient (docs/physics.md 1.5).
  *
  * A single bead hits the wall at v: e(c) = -v_f / v with c the Hunt-Crossley
  * alpha (s/m; F = K d^(3/2) (1 + 1.5 alpha d')) or the Kuwabara-Kono gamma

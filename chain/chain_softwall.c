@@ -1,5 +1,5 @@
 /*
- * chain_softwall.c: `granwave softwall`, columns on a soft wall (physics.md 1.3).
+ * chain_softwall.c: `granwave softwall`, columns on a soft wall (docs/physics.md 1.3).
  *
  *   K_c = (c_tau/4)^(5/2) (5k/4)                        (F.22): rigid if K > K_c
  *   N_d = first N from which F_max(N') stays within a tolerance (default 1 %) of

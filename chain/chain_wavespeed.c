@@ -1,13 +1,13 @@
 /*
  * chain_wavespeed.c: `granwave wavespeed`, the deformation-wave speed of the
- * column against v_imp, measured three independent ways (physics.md 1.3):
+ * column against v_imp, measured three independent ways (docs/physics.md 1.3):
  *   (a) v_tq    = 4R / T_q, T_q the slope of tau_N against N (F.4, F.6);
  *   (b) v_front = time of flight of the compression front: the first time each
  *                 contact carries a force threshold (default 10 % of the
  *                 single-bead peak F_max(1), F.13), position 2R i fitted
  *                 linearly against time over the contacts 2..N-2 of the longest
  *                 column (away from the wall and the free end);
- *   (c) v_group = long-wave group (= sound) speed of small vibrations, physics.md
+ *   (c) v_group = long-wave group (= sound) speed of small vibrations, docs/physics.md
  *                 1.6: c0 = 2R sqrt(kappa/m), kappa = (3/2) k^(2/3) F^(1/3), of a
  *                 chain statically compressed by the column's mean wall force
  *                 F = (wall impulse)/tau_N of the longest column.

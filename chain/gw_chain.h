@@ -3,12 +3,12 @@
  * materials and closed forms, one collision run with its observables, and the
  * studies built on it (the Falcon rigid-wall study).
  *
- * Model (physics.md 1.1, eq. F.11): N point masses, x_i the displacement of bead i
+ * Model (docs/physics.md 1.1, eq. F.11): N point masses, x_i the displacement of bead i
  * (bead 1 = wall bead) from its initial position, positive toward the wall; at
  * t = 0 every contact just touches and every bead moves at v_imp toward the wall.
  * Contact i (beads i, i+1) has overlap d_i = x_(i+1) - x_i and force
  * F_i = k_i d_i^(3/2) for d_i > 0, else 0; the wall force is F_0 = K x_1^(3/2).
- * Optional gravity g (toward the wall) and viscoelastic damping (physics.md 1.5).
+ * Optional gravity g (toward the wall) and viscoelastic damping (docs/physics.md 1.5).
  * SI units throughout: m, s, kg, N, N/m^1.5.
  */
 #ifndef GW_CHAIN_H
@@ -17,7 +17,7 @@
 #include "gw_common.h"
 #include "gw_solver.h"
 
-/* ---- materials and closed forms (physics.md 1.2, 1.3) ---- */
+/* ---- materials and closed forms (docs/physics.md 1.2, 1.3) ---- */
 
 typedef struct gw_material {
     const char *name;
@@ -240,7 +240,7 @@ int gw_chain_sweep_n(const gw_chain_params *tmpl, const gw_chain_run_opts *o,
 
 /* ---- dispersion (chain_dispersion.c) ---- */
 
-/* Small-amplitude dispersion of a precompressed Hertz chain (physics.md 1.6):
+/* Small-amplitude dispersion of a precompressed Hertz chain (docs/physics.md 1.6):
  * n identical beads (mass m, Hertz coefficient k) under static force f0, overlap
  * d0 = (f0/k)^(2/3) on every contact, linear stiffness
  * kappa = (3/2) k^(2/3) f0^(1/3), omega(q) = 2 sqrt(kappa/m) |sin(q a/2)|,
@@ -298,7 +298,7 @@ typedef struct gw_chain_disp_result {
     double *qa;           /* [nq] q a, rad per bead */
     double *omega_ridge;  /* [nq] frequency of maximum power, rad/s (parabolic
                              interpolation of log power over three bins) */
-    double *omega_theory; /* [nq] physics.md 1.6 */
+    double *omega_theory; /* [nq] docs/physics.md 1.6 */
     double *ridge_power;  /* [nq] power at the ridge bin */
     int *resolved;        /* [nq] 1 when the ridge counts (see min_bins) */
     int n_omega;          /* frequency bins 0 .. t_samples/2 */

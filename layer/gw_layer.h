@@ -1,5 +1,5 @@
 /*
- * gw_layer.h: the 2D granular layer of Bourrier et al. (2008) (physics.md
+ * gw_layer.h: the 2D granular layer of Bourrier et al. (2008) (docs/physics.md
  * section 2): Hertz-Mindlin discs with Coulomb friction in a box with rigid walls,
  * integrated as one ODE system through the granwave solver layer; pluviated
  * samples; block impacts with an energy ledger and a crowns (shock-wave) analysis.
@@ -167,7 +167,7 @@ void gw_layer_energy_of(const gw_layer *L, gw_layer_energy *e);
 /* Initial total A (set by gw_layer_start). */
 double gw_layer_energy_initial(const gw_layer *L);
 
-/* Energy regions (physics.md 2.4): rings k = 0 .. nring-1 of width w (m)
+/* Energy regions (docs/physics.md 2.4): rings k = 0 .. nring-1 of width w (m)
  * around (cx, cy) (distance in [k w, (k+1) w)), region nring = outside the
  * rings, region nring + 1 = the block and its contacts. Kinetic and potential
  * energy go by particle centre, strain energy, friction dissipation and W_K by
@@ -264,7 +264,7 @@ int gw_layer_sample_read(const char *path, gw_layer_sample *s, gw_err *err);
  * gw_out_file_check): lets a command refuse before a long run. GW_OK otherwise. */
 int gw_layer_sample_format_check(const char *path, gw_err *err);
 
-/* Pluviation (physics.md 2.2). */
+/* Pluviation (docs/physics.md 2.2). */
 typedef struct gw_layer_make_params {
     int n;                 /* particles [300] */
     double rm;             /* mean radius R_m, m [0.325] */
@@ -280,7 +280,7 @@ typedef struct gw_layer_make_params {
                                      not located either way [gw_solver_rk4] */
     double height_rm;      /* > 0: after settling keep only the particles lying
                               wholly below height_rm R_m (the box height H of
-                              physics.md 2.2) [0 = keep all] */
+                              docs/physics.md 2.2) [0 = keep all] */
     int clumps;            /* 1: type B soil, n rigid clumps (layer_clumps.c) [0] */
     double aspect_max;     /* clumps: aspect ratio uniform in [1, aspect_max],
                               aspect_max in [1, 4]; 1 gives one-disc grains [4] */
@@ -345,7 +345,7 @@ typedef struct gw_layer_impact_result {
     double penetration;     /* largest downward block displacement, m */
     double energy_error;    /* max |sum - A| / A over the run */
     double e_incident;      /* (1/2) M V_i^2, J */
-    /* First contact (physics.md 2.5): from the touch to the smallest block
+    /* First contact (docs/physics.md 2.5): from the touch to the smallest block
      * kinetic energy while the block touches the target particle (sampled every
      * dt_out). */
     double t_first_contact; /* its end, s */
@@ -395,7 +395,7 @@ int gw_layer_impact_check(const gw_layer_sample *s, const gw_layer_impact_params
 double gw_layer_impact_dem_dt(const gw_layer_sample *s, const gw_layer_params *lp,
                               const gw_layer_impact_params *ip);
 
-/* One block impact on a sample (physics.md 2.3). vtk_dir (may be NULL) receives
+/* One block impact on a sample (docs/physics.md 2.3). vtk_dir (may be NULL) receives
  * snapshot_0.vtk and snapshot_end.vtk. GW_EINVAL names the input (block
  * overlapping the layer, block outside the box, bad parameters). */
 int gw_layer_impact(const gw_layer_sample *s, const gw_layer_params *lp,

@@ -1,6 +1,6 @@
 /*
  * layer_cli.c: the option tables of the layer commands (layer_cli.h). One
- * table for an impact (physics.md 2.3: R_b = rb-rm R_m, V_i, alpha_i, impact
+ * table for an impact (docs/physics.md 2.3: R_b = rb-rm R_m, V_i, alpha_i, impact
  * abscissa, height H = height-rm R_m; B.5, B.6) used by `granwave layer-impact`
  * and by the `layer` sweep model, so a sweep case and the command resolve the
  * same options to the same gw_layer_impact call.

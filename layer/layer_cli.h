@@ -2,7 +2,7 @@
  * layer_cli.h (private to layer/): the option tables of the layer commands, so
  * that `granwave layer-impact` and the `layer` sweep model (layer_sweep_model.c)
  * parse, default and validate an impact with one code path (layer_cli.c).
- * Units: SI, angles in degrees (physics.md 2.1-2.3).
+ * Units: SI, angles in degrees (docs/physics.md 2.1-2.3).
  */
 #ifndef GW_LAYER_CLI_H
 #define GW_LAYER_CLI_H

@@ -1,6 +1,6 @@
 /*
  * layer_clump_check.c: the rule every rigid clump of the layer obeys (type B
- * soil, physics.md 2.2; layer_clumps.c): its members overlap or touch, that
+ * soil, docs/physics.md 2.2; layer_clumps.c): its members overlap or touch, that
  * is their overlap graph is connected with |x_i - x_j| <= (r_i + r_j)(1 + 1e-9),
  * and there are at most LAYER_CLUMP_MEMBERS of them (the check is quadratic in
  * the members: the bound keeps a hostile sample of one huge body from stalling

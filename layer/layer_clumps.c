@@ -1,5 +1,5 @@
 /*
- * layer_clumps.c: rigid bodies of the layer, type B soil (physics.md 2.2:
+ * layer_clumps.c: rigid bodies of the layer, type B soil (docs/physics.md 2.2:
  * "rigid clumps of discs, quasi-rectangular, aspect ratio uniform in [1, 4]").
  *
  * A body is a set of member discs i at fixed offsets o_i from its centre of mass

@@ -1,6 +1,6 @@
 /*
- * layer_cmd.c: the commands `granwave layer-make` (pluviation, physics.md 2.2)
- * and `granwave layer-impact` (one block impact, physics.md 2.3-2.5; B.5-B.18).
+ * layer_cmd.c: the commands `granwave layer-make` (pluviation, docs/physics.md 2.2)
+ * and `granwave layer-impact` (one block impact, docs/physics.md 2.3-2.5; B.5-B.18).
  * Option tables (gw_cli), JSON results (cJSON) and the --out files: ledger.csv
  * (energy ledger B.7-B.14 over time), crowns.csv (per-ring strain, kinetic
  * energy and coordination over time), crowns_peaks.csv, impact.json and VTK
@@ -54,7 +54,7 @@ static char *command_line(const char *cmd, int argc, char **argv)
 /* ------------------------------------------------------------ layer-make --- */
 
 static const char *make_summary =
-    "Pluviate a 2D sample (Bourrier et al. 2008, physics.md 2.2): polydisperse discs\n"
+    "Pluviate a 2D sample (Bourrier et al. 2008, docs/physics.md 2.2): polydisperse discs\n"
     "dropped under gravity in a box with rigid walls until the kinetic energy is below\n"
     "a threshold; Hertz-Mindlin contacts with friction, Hunt-Crossley normal damping\n"
     "while settling. Writes the text sample format of gw_layer.h. Deterministic for a\n"
@@ -198,7 +198,7 @@ int gw_cmd_layer_make(int argc, char **argv)
 /* ---------------------------------------------------------- layer-impact --- */
 
 static const char *impact_summary =
-    "One block impact on a 2D granular layer (Bourrier et al. 2008, physics.md 2.3):\n"
+    "One block impact on a 2D granular layer (Bourrier et al. 2008, docs/physics.md 2.3):\n"
     "a disc of radius rb-rm * R_m hits the sample at speed vi and incidence alpha.\n"
     "Reports bouncing, restitution (e_n, e, alpha_r), penetration, the energy ledger\n"
     "closure, the friction loss of the first contact and the wave speed from crowns.\n"

@@ -1,6 +1,6 @@
 /*
  * layer_contacts.c: the Verlet contact list of the layer, built with a cell
- * list (physics.md 2.1 for the coefficients K_n (B.3) and K_t/F_n^(1/3) (B.4)).
+ * list (docs/physics.md 2.1 for the coefficients K_n (B.3) and K_t/F_n^(1/3) (B.4)).
  *
  * A pair is listed when its gap is below the skin s: |x_a - x_b| < R_a + R_b + s
  * (disc-disc, cells of side 2 R_max + s) or R_a + s beyond the wall distance. No

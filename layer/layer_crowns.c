@@ -1,5 +1,5 @@
 /*
- * layer_crowns.c: shock-wave analysis on concentric crowns (physics.md 2.5).
+ * layer_crowns.c: shock-wave analysis on concentric crowns (docs/physics.md 2.5).
  *
  * Ring k holds distances [k d_c, (k+1) d_c) from the impact point. For each
  * ring, the arrival times of the strain-energy increase (over its value at

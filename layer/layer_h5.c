@@ -1,6 +1,6 @@
 /*
  * layer_h5.c: the time series of one impact as one HDF5 file (impact.h5), the
- * same numbers as ledger.csv and crowns.csv (physics.md 2.4-2.5, B.7-B.14).
+ * same numbers as ledger.csv and crowns.csv (docs/physics.md 2.4-2.5, B.7-B.14).
  *
  * Datasets (SI units, attribute "units" on each; "columns" where a dataset has
  * named columns):

@@ -1,5 +1,5 @@
 /*
- * layer_impact.c: one block impact on a pluviated layer (physics.md 2.3, 2.4;
+ * layer_impact.c: one block impact on a pluviated layer (docs/physics.md 2.3, 2.4;
  * eqs. B.5-B.18).
  *
  * Set-up: the block is a disc of radius R_b = rb_rm R_m (same density and mass
@@ -9,7 +9,7 @@
  * V_ti = V_i sin alpha (B.5, B.6). With height_rm > 0, particles more than
  * height_rm R_m below the surface (max of y + r) are frozen (infinite mass), as
  * in the paper's reduced heights; remove_walls takes the three walls away at
- * the start of the impact (physics.md 2.5, bottom-wall study). Gravitational energy is measured from the
+ * the start of the impact (docs/physics.md 2.5, bottom-wall study). Gravitational energy is measured from the
  * initial positions, so A = (1/2) M V_i^2 + the initial strain energy.
  * Observables: bounced when the block's vertical velocity has changed sign and
  * the block has left every contact while moving up (a block vibrating in the
@@ -240,7 +240,7 @@ int gw_layer_impact(const gw_layer_sample *smp, const gw_layer_params *lp0,
     res->e_incident = 0.5 * res->block_mass * ip->vi * ip->vi;
     res->v_ni = ip->vi * cos(al);
     int touched = 0;
-    /* First contact (physics.md 2.5): from the touch to the block's smallest
+    /* First contact (docs/physics.md 2.5): from the touch to the block's smallest
      * kinetic energy while it still touches the target particle, the phase in
      * which the block hands its energy over. The contact itself may last longer
      * (the target pushes the block back); the dissipation up to the opening is

@@ -1,5 +1,5 @@
 /*
- * layer_make.c: pluviation of a 2D sample (physics.md 2.2).
+ * layer_make.c: pluviation of a 2D sample (docs/physics.md 2.2).
  *
  * Radii: uniform in radius on [R_min, R_max], R_max = V^(1/3) R_min (V the
  * largest/smallest volume ratio), mean R_m: R_min = 2 R_m / (1 + V^(1/3)).

@@ -1,5 +1,5 @@
 /*
- * layer_model.c: the Hertz-Mindlin disc layer as an ODE system (physics.md 2.1,
+ * layer_model.c: the Hertz-Mindlin disc layer as an ODE system (docs/physics.md 2.1,
  * 2.4; eqs. B.1-B.4, B.7-B.14).
  *
  * Particles i: m_i dv_i/dt = sum of contact forces - m_i g e_y,
@@ -18,7 +18,7 @@
  *   F_n = K_n u_n^(3/2),  K_n = 2 sqrt(2 R_p) G / (3 (1 - nu))          (B.1, B.3)
  *   K_t = 2 (3 G^2 (1 - nu) R_p)^(1/3) / (2 - nu) * F_n^(1/3)            (B.4)
  *   R_p = 2 R_a R_b / (R_a + R_b) for two discs, R_p = R_a against a wall (a wall
- *   is a particle of infinite radius and mass; PFC2D's convention, physics.md 2.1).
+ *   is a particle of infinite radius and mass; PFC2D's convention, docs/physics.md 2.1).
  *   v_t = (v_b - v_a).t - w_a R_a - w_b R_b (relative tangential velocity of the
  *   contact points; contact arms taken as the radii; v the disc centres').
  *   Force on a: -F_n n + F_t t, torque R_a F_t; on b the opposite force, torque
@@ -45,7 +45,7 @@
  *   F_t v_t = dE_st/dt + dW_K/dt + dE_d/dt,
  *   dE_d/dt = F_t (v_t - (dF_t/dt)/K_t)       (= -F_t du_t^p, zero when sticking)
  *   dW_K/dt = F_t^2 (dK_t/dt) / (2 K_t^2) = F_t^2 (dF_n/dt) / (6 K_t F_n)
- *   W_K is the part of the incremental tangential strain work (physics.md 2.4:
+ *   W_K is the part of the incremental tangential strain work (docs/physics.md 2.4:
  *   dE_s = -F_t du_t^e) that the state function F_t^2/(2 K_t) misses because K_t
  *   varies with F_n (the Mindlin law with K_t(F_n) has no potential). E_d and W_K
  *   are integrated as the last two state components, so the ledger

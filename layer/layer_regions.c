@@ -1,5 +1,5 @@
 /*
- * layer_regions.c: the energy ledger restricted to regions (physics.md 2.4:
+ * layer_regions.c: the energy ledger restricted to regions (docs/physics.md 2.4:
  * "every term can be restricted to a region D"; eqs. B.7-B.14).
  *
  * The regions partition the system: rings k = 0 .. nring-1 of width w around a

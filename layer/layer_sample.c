@@ -1,5 +1,5 @@
 /*
- * layer_sample.c: the sample files of pluviated layers (physics.md 2.2), text
+ * layer_sample.c: the sample files of pluviated layers (docs/physics.md 2.2), text
  * (format versions 1 and 2) and HDF5, and the sample porosity.
  *
  * Text format, documented in gw_layer.h: a magic line, "key value" header lines,

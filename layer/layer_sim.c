@@ -1,5 +1,5 @@
 /*
- * layer_sim.c: the run driver of the layer (physics.md 2.1, numerical notes of
+ * layer_sim.c: the run driver of the layer (docs/physics.md 2.1, numerical notes of
  * 1.1): integrates the ODE system of layer_model.c through the gw_solver layer.
  *
  * - At every root of a contact overlap (u_n = 0) the solver is restarted

@@ -1,6 +1,6 @@
 /*
  * layer_stats.c: `granwave layer-stats RESULTS.csv`, the Bourrier analyses of a
- * layer sweep table (physics.md 2.3, 2.5):
+ * layer sweep table (docs/physics.md 2.3, 2.5):
  *  - per group (every grid key but `point`): mean and sample standard deviation
  *    of e_n, e, alpha_r (B.16-B.18, bouncing points only) and the penetration,
  *    bounce share and global verdict share >= S (S = 75 % in the paper), the
@@ -28,7 +28,7 @@
 
 static const char *summary =
     "Statistics of a layer sweep table (OUT/results.csv of `granwave sweep` with\n"
-    "model = layer; Bourrier et al. 2008, physics.md 2.3 and 2.5): per group of impact\n"
+    "model = layer; Bourrier et al. 2008, docs/physics.md 2.3 and 2.5): per group of impact\n"
     "points, mean and standard deviation of e_n, e, alpha_r (bouncing points) and the\n"
     "penetration; bounce share and global verdict (share >= criterion); running means\n"
     "(Fig. 10); first-contact energy loss against the binary-impact formula (B.24-B.28);\n"

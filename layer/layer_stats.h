@@ -1,6 +1,6 @@
 /*
  * layer_stats.h (private to layer/ and its tests): the Bourrier analyses of a
- * layer sweep table (physics.md 2.3 statistics, 2.5 bouncing-occurrence
+ * layer sweep table (docs/physics.md 2.3 statistics, 2.5 bouncing-occurrence
  * diagram, binary-impact formula B.24-B.28, boundary model B.31), used by
  * `granwave layer-stats` (layer_stats.c).
  *
@@ -119,7 +119,7 @@ int gw_layer_groups_make(const gw_layer_results *t, double criterion, gw_layer_g
                          gw_err *err);
 void gw_layer_groups_free(gw_layer_groups *gs);
 
-/* ---- bouncing-occurrence diagram (physics.md 2.5) ---- */
+/* ---- bouncing-occurrence diagram (docs/physics.md 2.5) ---- */
 
 enum {
     GW_LAYER_BND_CROSS = 0, /* the verdict changes from bouncing to not along H */

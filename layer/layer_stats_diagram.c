@@ -1,5 +1,5 @@
 /*
- * layer_stats_diagram.c: the bouncing-occurrence diagram of physics.md 2.5 and
+ * layer_stats_diagram.c: the bouncing-occurrence diagram of docs/physics.md 2.5 and
  * the boundary model B.31.
  *
  * Diagram: cells (x = R_b/R_m, h = H/R_m) carry the bounce share over their

@@ -1,12 +1,12 @@
 /*
  * layer_stats_table.c: reading a layer sweep table (OUT/results.csv of
  * `granwave sweep` with model = layer) and the per-group statistics of
- * physics.md 2.3: over the N impact points of one configuration, the mean and
+ * docs/physics.md 2.3: over the N impact points of one configuration, the mean and
  * sample standard deviation of e_n = V_nr/V_ni, e = V_r/V_i and
  * alpha_r = arccos(V_nr/V_r) (B.16-B.18; over the bouncing points, the only
  * ones where they are defined), of the penetration and of the first-contact
  * energy fractions; the bounce share and the global verdict share >= S
- * (physics.md 2.5, S = 75 % in the paper); the running means over the first k
+ * (docs/physics.md 2.5, S = 75 % in the paper); the running means over the first k
  * points (the paper's Fig. 10: how many points make the mean stable).
  * The table is read as a regular file only (gw_input_read); a case number
  * appearing twice, or a bouncing row without e_n, e or alpha_r, is refused.

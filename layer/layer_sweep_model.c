@@ -1,5 +1,5 @@
 /*
- * layer_sweep_model.c: the 2D layer (physics.md section 2) as the `layer` model
+ * layer_sweep_model.c: the 2D layer (docs/physics.md section 2) as the `layer` model
  * of `granwave sweep` (gw_sweep.h): one block impact per case, for bouncing
  * diagrams and impact-point statistics.
  *
@@ -7,14 +7,14 @@
  * table, layer_cli.c, so a case and the command resolve the same options to the
  * same gw_layer_impact call); the flags remove-walls and full take 0/1/true/
  * false. Extra keys place the block on one of `points` impact points `spacing`
- * apart around x (physics.md 2.3, statistics: N = 100 points d_i = 0.05 m apart):
+ * apart around x (docs/physics.md 2.3, statistics: N = 100 points d_i = 0.05 m apart):
  *     x_impact = x + (point - (points - 1) / 2) spacing          (m, from the box centre)
  * with 0 <= point < points (defaults point 0, points 1, spacing 0.05 m).
  *
  * Row (SI; angles in degrees): x_impact, bounced (0/1), e_n, e, alpha_r
  * (B.16-B.18), v_ni, v_nr, v_r (m/s), penetration (m), penetration_rm (in R_m),
  * dissipated_first_contact and block_loss_first_contact (over E_incident,
- * physics.md 2.5), energy_error (ledger closure B.7-B.14), wave_speed (m/s, from
+ * docs/physics.md 2.5), energy_error (ledger closure B.7-B.14), wave_speed (m/s, from
  * the crowns' strain peaks), t_end (s), steps. Undefined values (e.g. e_n of a
  * block that never moves up, a wave speed without enough crowns) are NaN,
  * written as "nan" whatever the sign bit, so tables are byte-identical however

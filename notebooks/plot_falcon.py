@@ -40,7 +40,7 @@ RUN_COLUMNS = ["v_imp_m_s", "h_mm", "n", "f_max_N", "tau_n_s", "e_rel_over_e_k"]
 FINAL_COLUMNS = ["v_imp_m_s", "n", "bead", "final_v_m_s"]
 FIGURES = ["fmax_vs_n", "taun_vs_n", "wall_force_n7_15_30", "velocities_n7", "erel_vs_n",
            "final_velocities"]
-PAPER_BAND = 0.05  # "independent of N within 5 %" (physics.md 1.7)
+PAPER_BAND = 0.05  # "independent of N within 5 %" (docs/physics.md 1.7)
 
 
 class InputError(Exception):

@@ -1,11 +1,11 @@
 /*
  * test_chain_closed_forms.c: a single Hertz bead on the wall against the closed
- * forms (physics.md 1.3: F.2, F.13, F.21) on every backend, and the material
- * coefficients (F.12, F.3) against physics.md's values.
+ * forms (docs/physics.md 1.3: F.2, F.13, F.21) on every backend, and the material
+ * coefficients (F.12, F.3) against docs/physics.md's values.
  *
  * Tolerances: 1e-4 relative for tau_1 and F_max (issue requirement; the
  * integrations at rtol 1e-12 are ~1e-9 accurate, so a wrong exponent or
- * constant fails by orders of magnitude). physics.md quotes k = 6.9716e9 and
+ * constant fails by orders of magnitude). docs/physics.md quotes k = 6.9716e9 and
  * K = 9.858e9 rounded: checked to 2e-4 (F.12 gives 6.97089e9, 1.0e-4 below
  * the quoted value) and 1e-4; the mass 2.104e-3 (4 digits, rounding up to
  * 2.4e-4) to 3e-4.
@@ -16,17 +16,17 @@
 int main(void)
 {
     /* (4/5) B(2/5, 1/2) from GSL against the Gamma-function form with libm's
-     * tgamma (independent code) to 1e-12. physics.md quotes 2.94322; the exact
+     * tgamma (independent code) to 1e-12. docs/physics.md quotes 2.94322; the exact
      * value is 2.9432752, so the quoted digits are off by 1.9e-5: checked to 3e-5. */
     double c_exact = 0.8 * tgamma(0.4) * tgamma(0.5) / tgamma(0.9);
     gw_test_rel(gw_chain_tau_constant(), c_exact, 1e-12, "tau constant vs (4/5) G(2/5) G(1/2) / G(9/10)");
-    gw_test_rel(gw_chain_tau_constant(), 2.94322, 3e-5, "tau constant vs physics.md 2.94322");
+    gw_test_rel(gw_chain_tau_constant(), 2.94322, 3e-5, "tau constant vs docs/physics.md 2.94322");
 
     gw_chain_params p = gw_chain_params_default();
-    gw_test_rel(p.k, 6.9716e9, 2e-4, "steel k (F.12) vs physics.md");
-    gw_test_rel(p.kwall, 9.858e9, 1e-4, "steel-on-steel K (F.3) vs physics.md");
+    gw_test_rel(p.k, 6.9716e9, 2e-4, "steel k (F.12) vs docs/physics.md");
+    gw_test_rel(p.kwall, 9.858e9, 1e-4, "steel-on-steel K (F.3) vs docs/physics.md");
     gw_test_rel(p.mass, 2.104e-3, 3e-4, "steel bead mass 4/3 pi R^3 rho");
-    gw_test_rel(gw_chain_kc(p.k), 4.0e9, 0.02, "K_c (F.22) vs physics.md 4.0e9");
+    gw_test_rel(gw_chain_kc(p.k), 4.0e9, 0.02, "K_c (F.22) vs docs/physics.md 4.0e9");
 
     const char *solvers[][2] = {{"cvode", "bdf"}, {"cvode", "adams"}, {"arkode", "erk"},
                                 {"arkode", "dirk"}, {"rk4", "default"}};

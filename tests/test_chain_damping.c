@@ -1,5 +1,5 @@
 /*
- * test_chain_damping.c: viscoelastic damping (physics.md 1.5).
+ * test_chain_damping.c: viscoelastic damping (docs/physics.md 1.5).
  *  - Calibration: the Hunt-Crossley alpha and Kuwabara-Kono gamma found for a
  *    target restitution e give a single bead on the wall that restitution to
  *    1e-3 (the issue asks 1 %; Brent converges to ~1e-10).
@@ -215,7 +215,7 @@ int main(void)
     /* Measured, not asserted: with Kuwabara-Kono e = 0.9 the model's plateau is
      * not more decaying than without damping (maxima 54.3 -> 50.5 N against
      * 57.9 -> 51.1 N); the experiment's decaying plateau is not reproduced by
-     * this damping (reported in README). */
+     * this damping (reported in docs/column.md). */
     printf("INFO: %s\n", what);
 
     plateau_checks(&o);

@@ -1,6 +1,6 @@
 /*
  * test_chain_dispersion.c: small-amplitude dispersion of the precompressed Hertz
- * chain (physics.md 1.6) and the wall-force spectrum of the column.
+ * chain (docs/physics.md 1.6) and the wall-force spectrum of the column.
  *  - kappa: gw_chain_disp_kappa equals dF/dd of F = k d^(3/2) at d0 = (F0/k)^(2/3)
  *    by a central difference (1e-6: the difference's truncation is ~1e-9).
  *  - Ridge: 256 steel beads, F0 = 10 N, periodic and fixed ends, RK4: the ridge

@@ -2,7 +2,7 @@
  * test_chain_falcon_accuracy.c: the falcon main job's solver setting meets its
  * accuracy target.
  *
- * Model: the Falcon column (physics.md 1.1, eq. F.11), steel beads, rigid steel
+ * Model: the Falcon column (docs/physics.md 1.1, eq. F.11), steel beads, rigid steel
  * wall, no gravity or damping, v_imp = 0.3 m/s and sqrt(2 g h) at h = 5.1 mm
  * (the fastest impact of the main job). Observables: F_max (largest wall force,
  * N) and tau_N (last time bead 1 leaves the wall, s).

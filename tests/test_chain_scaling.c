@@ -1,5 +1,5 @@
 /*
- * test_chain_scaling.c: the column's laws (physics.md 1.3, 1.4).
+ * test_chain_scaling.c: the column's laws (docs/physics.md 1.3, 1.4).
  *  - Rigid wall (K = 9.86e9 > K_c): F_max independent of N: spread over
  *    N = 1..20 below 5 % (the paper's experimental bound); a soft wall
  *    (K = 1e9 < K_c) must instead grow by more than 5 %, so the check can fail.
@@ -57,7 +57,7 @@ int main(void)
     double worst = 0;
     for (int i = 0; i < NMAX; i++)
         worst = fmax(worst, fabs(tau[i] - (fit.c0 + fit.c1 * nn[i])));
-    /* The first columns are off the line (the intercept is not tau_1, physics.md
+    /* The first columns are off the line (the intercept is not tau_1, docs/physics.md
      * 1.3); a quarter of T_q bounds the deviation while a quadratic tau_N ~ N^2
      * over this range would leave residuals of several T_q. */
     gw_test_abs(worst / fit.c1, 0, 0.25, "tau_N linear in N: max |residual| below T_q / 4");

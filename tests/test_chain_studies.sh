@@ -51,7 +51,7 @@ for K in ["2e9", "1e9", "5e8"]:
     check(sw[K]["wall"] == "soft", f"K = {K} < K_c is soft")
 r = sw["2e10"]["f_max"]
 check(sw["2e10"]["wall"] == "rigid" and (max(r) - min(r)) / min(r) < 0.05, f"K = 2e10 rigid, F_max spread {(max(r)-min(r))/min(r):.4f} < 5 %")
-check(abs(sw["1e9"]["k_c"] - 4.0e9) / 4.0e9 < 0.02, f"K_c = {sw['1e9']['k_c']:.4g} within 2 % of 4.0e9 (physics.md)")
+check(abs(sw["1e9"]["k_c"] - 4.0e9) / 4.0e9 < 0.02, f"K_c = {sw['1e9']['k_c']:.4g} within 2 % of 4.0e9 (docs/physics.md)")
 print(f"{passes} passed, {fails} failed")
 sys.exit(1 if fails else 0)
 PYEOF

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # test_layer_cli.sh: `granwave layer-make` and `granwave layer-impact` end to end
-# (physics.md 2.2-2.5). $1 = granwave binary, $2 = source dir.
+# (docs/physics.md 2.2-2.5). $1 = granwave binary, $2 = source dir.
 # - a small sample (60 discs) is made twice with one seed: identical files
 #   apart from nothing (deterministic), and the JSON reports the particle count;
 # - an impact (--exact) prints JSON with every key of the issue, a closure

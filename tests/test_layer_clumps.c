@@ -1,5 +1,5 @@
 /*
- * test_layer_clumps.c: rigid clumps of discs, type B soil (physics.md 2.2;
+ * test_layer_clumps.c: rigid clumps of discs, type B soil (docs/physics.md 2.2;
  * layer_clumps.c, layer_model.c).
  *
  * - Energy: three clumps (2-3 members, spinning) and four discs thrown into a

@@ -1,6 +1,6 @@
 /*
  * test_layer_contact.c: contact laws of the 2D layer against closed forms
- * (physics.md 1.3, 2.1, 2.5), on the three backends.
+ * (docs/physics.md 1.3, 2.1, 2.5), on the three backends.
  *
  * 1. Two equal discs head-on, no friction, no gravity: the relative coordinate
  *    obeys m_eff u'' = -K_n u^(3/2), m_eff = m/2, so the contact lasts
@@ -33,7 +33,7 @@
  *    times the sticking bound (measured 0.88). Without the discs' rotation
  *    (m_t = m_eff) the contact would stick at 75 deg and lose 3x less; a wrong
  *    cap changes the sliding loss in proportion to mu. This is the physics of
- *    the first-contact friction loss in the layer (README: 9 % at 45 deg).
+ *    the first-contact friction loss in the layer (docs/layer.md: 9 % at 45 deg).
  */
 #include <math.h>
 #include <stdlib.h>

@@ -1,5 +1,5 @@
 /*
- * test_layer_crowns.c: the crowns analysis (physics.md 2.5) on synthetic ring
+ * test_layer_crowns.c: the crowns analysis (docs/physics.md 2.5) on synthetic ring
  * series with a known front speed.
  *
  * Ring k (mid radius r_k = (k + 1/2) d_c) sees a strain pulse peaking at

@@ -1,5 +1,5 @@
 /*
- * test_layer_energy.c: the energy ledger of the layer closes (physics.md 2.4,
+ * test_layer_energy.c: the energy ledger of the layer closes (docs/physics.md 2.4,
  * B.7-B.14) and the three backends agree on a small pile.
  *
  * A pile of 16 polydisperse discs is thrown down into a box with walls

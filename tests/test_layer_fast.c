@@ -3,7 +3,7 @@
  * backend: explicit DEM, no located contact events, step from the contact
  * time, gw_layer_impact_dem_dt) against the exact mode (RK4 at 1 us stopping
  * at every contact and stick/slip transition) on the same impacts
- * (physics.md 2.3; B.16 for e_n).
+ * (docs/physics.md 2.3; B.16 for e_n).
  *
  * A 100-disc sample is pluviated (seed 5, width 20 R_m), then seven impacts
  * run in both modes: normal and oblique incidence, off-centre, a small block,

@@ -1,5 +1,5 @@
 /*
- * test_layer_regions.c: the energy ledger restricted to regions (physics.md 2.4,
+ * test_layer_regions.c: the energy ledger restricted to regions (docs/physics.md 2.4,
  * "every term can be restricted to a region D"; layer_regions.c).
  *
  * A frictional pile of 16 discs (phi = 30 deg; the bottom row starts up to 5 mm

@@ -1,6 +1,6 @@
 /*
- * test_layer_sample.c: pluviation and the sample format (physics.md 2.2), and
- * the impact on a small sample (physics.md 2.3-2.4) on the three backends.
+ * test_layer_sample.c: pluviation and the sample format (docs/physics.md 2.2), and
+ * the impact on a small sample (docs/physics.md 2.3-2.4) on the three backends.
  *
  * - Pluviation is deterministic for a seed: two runs give bitwise identical
  *   positions; another seed gives a different sample.

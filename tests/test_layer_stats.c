@@ -1,5 +1,5 @@
 /*
- * test_layer_stats.c: the Bourrier analyses of layer_stats (physics.md 2.3, 2.5,
+ * test_layer_stats.c: the Bourrier analyses of layer_stats (docs/physics.md 2.3, 2.5,
  * B.24-B.28, B.31) on synthetic tables whose answers are known by hand.
  *  1. Group statistics: means and sample standard deviations (n - 1) of e_n, e,
  *     alpha_r over the bouncing points only (a non-bouncing row carries values

@@ -1,6 +1,6 @@
 #!/bin/bash
 # test_layer_stats_cli.sh GRANWAVE SRCDIR: `granwave layer-stats` (issue 5,
-# physics.md 2.3 and 2.5).
+# docs/physics.md 2.3 and 2.5).
 #  - bad input (missing file, a non-numeric cell, a missing column, a short
 #    row, a bad option value) exits 2 with one line on stderr naming the file
 #    and line (or the option), and writes nothing (no --out directory);

@@ -1,6 +1,6 @@
 #!/bin/bash
 # test_layer_sweep.sh GRANWAVE SRCDIR: `granwave sweep` with the layer model
-# (issue 5; physics.md 2.3, impact-point statistics).
+# (issue 5; docs/physics.md 2.3, impact-point statistics).
 #  - a 2 x 3 grid (rb-rm x point) on a 40-disc sample runs with exit 0; the
 #    table has the grid keys and the 16 columns in the documented order, one
 #    row per case; x_impact = x + (point - (points - 1)/2) spacing; e = v_r/V_i,

@@ -1,5 +1,5 @@
 /*
- * layer_dem.c: the explicit DEM step of the layer (physics.md 2.1, 2.4; eqs.
+ * layer_dem.c: the explicit DEM step of the layer (docs/physics.md 2.1, 2.4; eqs.
  * B.2, B.7-B.14): the incremental Mindlin law advanced as a coordinate of the
  * verlet step (gw_drift_fn), and the ledger it feeds.
  *

@@ -48,6 +48,8 @@ typedef struct verlet_impl {
     long bm, bn;        /* block layout (bn > 0): components [0, 2 bm bn) are bn
                            blocks of bm drifts followed by their bm velocities,
                            no later component a drift (the fused loops) */
+    long *run, nrun;    /* block layout: the kicks after the blocks as nrun runs
+                           [run[2r], run[2r + 1]) (model components skipped) */
     signed char *sign;
     long steps, rhs_evals, root_evals;
 } verlet_impl;
@@ -59,6 +61,7 @@ static void verlet_destroy(gw_solver *s)
         return;
     free(v->y);
     free(v->qi);
+    free(v->run);
     free(v->sign);
     free(v);
     s->impl = NULL;
@@ -152,6 +155,25 @@ static int verlet_create(gw_solver *s, double t0, const double *y0, gw_err *err)
         }
     }
     block_layout(s->sys.drift, n, v);
+    if (v->bn > 0) {
+        v->run = malloc((2 * (size_t)(n - 2 * v->bm * v->bn) + 2) * sizeof *v->run);
+        if (!v->run) {
+            verlet_destroy(s);
+            return gw_err_set(err, GW_ENOMEM, "verlet: out of memory for %ld components", n);
+        }
+        for (long i = 2 * v->bm * v->bn; i < n;) {
+            if (s->sys.drift[i] != -1) {
+                i++;
+                continue;
+            }
+            long e = i;
+            while (e < n && s->sys.drift[e] == -1)
+                e++;
+            v->run[2 * v->nrun] = i, v->run[2 * v->nrun + 1] = e;
+            v->nrun++;
+            i = e;
+        }
+    }
     memcpy(v->y, y0, (size_t)n * sizeof *y0);
     v->t = t0;
     if (verlet_restart(s) != 0) {
@@ -173,20 +195,32 @@ static int verlet_step(gw_solver *s, double h)
     if (v->bn > 0) { /* fused: half kick of the velocities, drift, predicted end */
         const long m = v->bm;
         i0 = 2 * m * v->bn;
-        for (long b = 0; b < i0; b += 2 * m)
-            for (long j = 0; j < m; j++) {
-                long q = b + j, u = q + m;
-                double d = hh * f[u];
-                pp[u] = y[u] + d;
-                y[u] = pp[u] + d;
-                pp[q] = y[q];
-                y[q] += h * pp[u];
-            }
-        for (long i = i0; i < n; i++) {
-            double d = kick[i] * hh * f[i];
-            pp[i] = y[i] + d;
-            y[i] = pp[i] + d;
+        if (m == 3) { /* (x, y, angle) bodies: a fixed trip count the compiler unrolls */
+            for (long b = 0; b < i0; b += 6)
+                for (long j = 0; j < 3; j++) {
+                    double d = hh * f[b + 3 + j];
+                    pp[b + 3 + j] = y[b + 3 + j] + d;
+                    y[b + 3 + j] = pp[b + 3 + j] + d;
+                    pp[b + j] = y[b + j];
+                    y[b + j] += h * pp[b + 3 + j];
+                }
+        } else {
+            for (long b = 0; b < i0; b += 2 * m)
+                for (long j = 0; j < m; j++) {
+                    long q = b + j, u = q + m;
+                    double d = hh * f[u];
+                    pp[u] = y[u] + d;
+                    y[u] = pp[u] + d;
+                    pp[q] = y[q];
+                    y[q] += h * pp[u];
+                }
         }
+        for (long r = 0; r < v->nrun; r++)
+            for (long i = v->run[2 * r]; i < v->run[2 * r + 1]; i++) {
+                double d = hh * f[i];
+                pp[i] = y[i] + d;
+                y[i] = pp[i] + d;
+            }
     } else {
         for (long i = 0; i < n; i++) { /* half kick; y holds the predicted end */
             double d = kick[i] * hh * f[i];
@@ -208,8 +242,9 @@ static int verlet_step(gw_solver *s, double h)
         for (long b = 0; b < i0; b += 2 * m)
             for (long j = b + m; j < b + 2 * m; j++)
                 y[j] = pp[j] + hh * f[j];
-        for (long i = i0; i < n; i++)
-            y[i] = kick[i] * (pp[i] + hh * f[i]) + (1 - kick[i]) * y[i];
+        for (long r = 0; r < v->nrun; r++)
+            for (long i = v->run[2 * r]; i < v->run[2 * r + 1]; i++)
+                y[i] = pp[i] + hh * f[i];
     } else {
         for (long i = 0; i < n; i++) /* second half kick (a blend: drifts keep y) */
             y[i] = kick[i] * (pp[i] + hh * f[i]) + (1 - kick[i]) * y[i];

@@ -35,12 +35,12 @@ typedef int (*gw_project_fn)(double t, double h, double *y, double *ydot, void *
 
 /* Drift of the model's own position-like components (verlet backend): called
  * in every step after the coordinates have drifted, with ph the state at the
- * half step (velocities v(t + h/2); coordinates and the components marked
- * GW_DRIFT_MODEL still at their values at t) and y the state whose coordinates are at t + h. The model
- * writes the end values of its GW_DRIFT_MODEL components into y (e.g. the
- * incremental tangential force of a contact, F_t += K_t v_t(t + h/2) h, and
- * the ledgers it feeds); the rhs then sees them at t + h. Same return
- * convention as the rhs. */
+ * half step (velocities v(t + h/2), coordinates at t; its GW_DRIFT_MODEL
+ * components are not defined) and y the state whose coordinates are at
+ * t + h and whose GW_DRIFT_MODEL components still hold their values at t. The
+ * model advances those in place (e.g. the incremental tangential force of a
+ * contact, F_t += K_t v_t(t + h/2) h, and the ledgers it feeds); the rhs then
+ * sees them at t + h. Same return convention as the rhs. */
 typedef int (*gw_drift_fn)(double t, double h, const double *ph, double *y, void *params);
 
 /* drift[i] of a component the model advances itself (gw_drift_fn). */

@@ -103,49 +103,120 @@ static inline double disc_geometry(const layer_contact *c, const double *y, doub
     }
 }
 
+/* The drift of a disc-only layer, fused with its force pass: per contact the
+ * end geometry, the tangential step and its books, then the end forces the
+ * rhs would compute (Hertz, the damping at the predicted velocities, F_t as
+ * the cap allows), summed per body into L->facc with the rhs's arithmetic, so
+ * that layer_dem_rhs only assembles them (bit-identical to its own pass). */
+static void drift_discs(gw_layer *L, double h, double *y)
+{
+    const int nb = L->nb, nc = L->nc;
+    const double tp = L->tan_phi, alpha = L->p.damping, width = L->p.width;
+    const double *ym = L->ymid;
+    double *fe = y + 6L * nb, *book = L->dem_book, *rate = L->dem_rate, *fa = L->facc;
+    double *geo = L->geo, *un_last = L->un_last, pd = 0;
+    layer_tscr *tscr = L->tscr;
+    const int reg = L->reg_n > 0;
+    memset(fa, 0, 3 * (size_t)nb * sizeof *fa);
+    memset(rate, 0, (size_t)L->ntail * sizeof *rate);
+    for (int k = 0; k < nc; k++) {
+        const layer_contact *c = &L->c[k];
+        double nn[2], um;
+        const double ue = disc_geometry(c, y, width, nn);
+        const double ks = un_last[k] > 0 ? tscr[k].kt : 0;
+        const int q0 = un_last[k] > 0 ? tscr[k].q : -1;
+        const double su = ue > 0 ? sqrt(ue) : 0, ke = c->kts * su;
+        const double fel = ue > 0 ? c->kn * ue * su : 0;
+        double *g = geo + 4 * k;
+        g[0] = ue, g[1] = su, g[2] = nn[0], g[3] = nn[1];
+        un_last[k] = fel > 0 ? ue : 0; /* as the rhs sets it */
+        double f1 = 0;
+        if (ks > 0 || ke > 0) { /* the tangential step (see the file's head) */
+            const double vt = disc_vt(c, ym, width, &um);
+            const double km = ks > 0 && ke > 0 ? 2 * ks * ke / (ks + ke) : ks > 0 ? ks : ke;
+            const double cap = ue > 0 ? tp * c->kn * ue * su : 0;
+            const double f0 = fe[k], ftr = f0 + km * vt * h;
+            f1 = ftr > cap ? cap : ftr < -cap ? -cap : ftr;
+            const double ed = 0.5 * (f0 + f1) * (ftr - f1) / km;
+            const double ek = ks > 0 && ke > 0 ? 0.25 * (f0 * f0 + f1 * f1) * (1 / ks - 1 / ke) : 0;
+            book[0] += ed;
+            book[1] += ek;
+            if (reg) {
+                int q = q0 >= 0 ? q0 : layer_contact_region(L, c, y);
+                book[2 + 2 * q] += ed;
+                book[3 + 2 * q] += ek;
+            }
+        }
+        fe[k] = f1;
+        if (!(fel > 0))
+            continue;
+        double fn = fel, und = 0;
+        if (alpha > 0) {
+            const double *sa = y + 6 * c->qa;
+            double rx = -sa[3], ry = -sa[4];
+            if (c->b >= 0)
+                rx += y[6 * c->qb + 3], ry += y[6 * c->qb + 4];
+            und = -(rx * nn[0] + ry * nn[1]);
+            fn = fel * (1.0 + 1.5 * alpha * und);
+            if (fn < 0)
+                fn = 0;
+            pd += (fn - fel) * und;
+        }
+        const double capr = tp * fel, ft = f1 > capr ? capr : f1 < -capr ? -capr : f1;
+        tscr[k].kt = ke;
+        if (reg) {
+            const double arm = c->ra - 0.5 * ue;
+            int q = layer_contact_region_pt(L, c, y[6 * c->qa] + arm * nn[0], y[6 * c->qa + 1] + arm * nn[1]);
+            tscr[k].q = q;
+            rate[2 + 2 * q] += (fn - fel) * und;
+        }
+        const double fx = -fn * nn[0] - ft * nn[1], fy = -fn * nn[1] + ft * nn[0];
+        double *da = fa + 3 * c->qa;
+        da[0] += fx, da[1] += fy, da[2] += ft * c->ra;
+        if (c->b >= 0) {
+            double *db = fa + 3 * c->qb;
+            db[0] -= fx, db[1] -= fy, db[2] += ft * c->rb;
+        }
+    }
+    rate[0] = pd;
+    L->geo_valid = 1;
+}
+
 int layer_dem_drift(double t, double h, const double *ph, double *y, void *P)
 {
     (void)t;
     gw_layer *L = P;
     const int nb = L->nb, nc = L->nc;
-    const double tp = L->tan_phi, hh = 0.5 * h, width = L->p.width;
+    const double tp = L->tan_phi, hh = 0.5 * h;
     double *ym = L->ymid, *book = L->dem_book;
     memset(book, 0, (size_t)L->ntail * sizeof *book);
     if (!(tp > 0))
         return 0;
-    L->geo_valid = !L->off;
     for (int i = 0; i < nb; i++) { /* mid-step positions, half-step velocities */
         const double *s = ph + 6 * i;
         double *m = ym + 6 * i;
         m[3] = s[3], m[4] = s[4], m[5] = s[5];
         m[0] = s[0] + hh * s[3], m[1] = s[1] + hh * s[4], m[2] = s[2] + hh * s[5];
     }
-    const double *fs = ph + 6L * nb;
-    double *fe = y + 6L * nb, *geo = L->off ? NULL : L->geo;
-    for (int k = 0; k < nc; k++) {
+    if (!L->off) {
+        drift_discs(L, h, y);
+        return 0;
+    }
+    double *fe = y + 6L * nb; /* F_t at the step's start, advanced in place */
+    for (int k = 0; k < nc; k++) { /* clumps: the rhs (layer_model.c) does the forces */
         const layer_contact *c = &L->c[k];
-        double ue, nn[2], um, vt;
-        if (geo)
-            ue = disc_geometry(c, y, width, nn);
-        else
-            layer_contact_geometry(L, c, y, &ue, nn, NULL);
+        double ue, nn[2], um;
+        layer_contact_geometry(L, c, y, &ue, nn, NULL);
         const double ks = L->un_last[k] > 0 ? L->tscr[k].kt : 0;
         const double su = ue > 0 ? sqrt(ue) : 0, ke = c->kts * su;
-        if (geo) { /* the end geometry, for layer_dem_rhs at the same positions */
-            double *g = geo + 4 * k;
-            g[0] = ue, g[1] = su, g[2] = nn[0], g[3] = nn[1];
-        }
         if (!(ks > 0) && !(ke > 0)) {
             fe[k] = 0; /* open at both ends (F_s is 0: zeroed when it opened) */
             continue;
         }
-        if (L->off)
-            vt = layer_contact_vt(L, c, ym, &um);
-        else
-            vt = disc_vt(c, ym, width, &um);
+        const double vt = layer_contact_vt(L, c, ym, &um);
         const double km = ks > 0 && ke > 0 ? 2 * ks * ke / (ks + ke) : ks > 0 ? ks : ke;
         const double cap = ue > 0 ? tp * c->kn * ue * su : 0;
-        const double f0 = fs[k], ftr = f0 + km * vt * h;
+        const double f0 = fe[k], ftr = f0 + km * vt * h;
         const double f1 = ftr > cap ? cap : ftr < -cap ? -cap : ftr;
         fe[k] = f1;
         double ed = 0.5 * (f0 + f1) * (ftr - f1) / km;
@@ -176,8 +247,8 @@ int layer_dem_project(double t, double h, double *y, double *ydot, void *P)
 
 /* The rhs of a disc-only layer in DEM mode (layer_model.c's, B.1-B.4): Hertz
  * normal force, the tangential force F_t of the state (layer_dem_drift's, used
- * as the Coulomb cap allows), gravity; the contact geometry is
- * layer_dem_drift's of the same positions when it ran just before. F_t's rate
+ * as the Coulomb cap allows), gravity; after a drift the forces are
+ * drift_discs's of the same state, only assembled here. F_t's rate
  * is 0 (the drift advances it); the ledger tail gets the normal damping power
  * only (the tangential books are layer_dem_drift's). */
 int layer_dem_rhs(double t, const double *y, double *yd, void *P)
@@ -188,9 +259,27 @@ int layer_dem_rhs(double t, const double *y, double *yd, void *P)
     const double g = L->p.gravity, tp = L->tan_phi, alpha = L->p.damping, width = L->p.width;
     double pd = 0;
     double *rtail = L->reg_n > 0 ? yd + 6 * n + L->nc + 2 : NULL, *un_last = L->un_last;
-    const double *geo = L->geo_valid ? L->geo : NULL;
-    layer_tscr *tscr = L->tscr;
-    L->geo_valid = 0;
+    if (L->geo_valid) { /* drift_discs computed the forces at this state */
+        L->geo_valid = 0;
+        const double *fa = L->facc;
+        for (int i = 0; i < n; i++) {
+            const double *s = y + 6 * i;
+            double *d = yd + 6 * i;
+            if (L->fixed[i]) {
+                d[0] = d[1] = d[2] = d[3] = d[4] = d[5] = 0;
+                continue;
+            }
+            d[0] = s[3], d[1] = s[4], d[2] = s[5];
+            d[3] = fa[3 * i] * L->minv[i];
+            d[4] = fa[3 * i + 1] * L->minv[i] - g;
+            d[5] = fa[3 * i + 2] * L->iinv[i];
+        }
+        memset(yd + 6 * n, 0, (size_t)L->nc * sizeof *yd);
+        memcpy(yd + 6 * n + L->nc, L->dem_rate, (size_t)L->ntail * sizeof *yd);
+        L->geo_pos = 1;
+        return 0;
+    }
+    layer_tscr *tscr = L->tscr; /* at a (re)start: the rhs's own pass */
     for (int q = 0; rtail && q < 2 * (L->reg_n + 2); q++)
         rtail[q] = 0;
     for (int i = 0; i < n; i++) {
@@ -203,14 +292,10 @@ int layer_dem_rhs(double t, const double *y, double *yd, void *P)
         const layer_contact *c = &L->c[k];
         double un, su, nn[2];
         yd[6 * n + k] = 0;
-        double *gk = L->geo + 4 * k;
-        if (geo) {
-            un = gk[0], su = gk[1], nn[0] = gk[2], nn[1] = gk[3];
-        } else { /* (kept: the snapshot reads the last evaluation's geometry) */
-            un = disc_geometry(c, y, width, nn);
-            su = un > 0 ? sqrt(un) : 0;
-            gk[0] = un, gk[1] = su, gk[2] = nn[0], gk[3] = nn[1];
-        }
+        double *gk = L->geo + 4 * k; /* kept: the snapshot reads it */
+        un = disc_geometry(c, y, width, nn);
+        su = un > 0 ? sqrt(un) : 0;
+        gk[0] = un, gk[1] = su, gk[2] = nn[0], gk[3] = nn[1];
         const double fel = un > 0 ? c->kn * un * su : 0;
         if (!(fel > 0)) { /* open, or F_n underflows */
             un_last[k] = 0;

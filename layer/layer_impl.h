@@ -89,7 +89,10 @@ struct gw_layer {
     double *dem_book;   /* [ntail], DEM mode: the ledger increments of a step */
     double *geo;        /* [4 cap_c], DEM mode, discs only: u_n, sqrt(u_n), normal
                            of the step's end positions (layer_dem_drift) */
-    int geo_valid;      /* geo holds the state the next rhs sees */
+    double *facc;       /* [3 nb], DEM mode, discs only: contact forces and torques
+                           per body at the step's end (layer_dem.c) */
+    double *dem_rate;   /* [ntail], DEM mode, discs only: the ledger tail's rates */
+    int geo_valid;      /* facc and dem_rate hold the state the next rhs sees */
     int geo_pos;        /* geo holds the positions of the last rhs evaluation
                            (layer_dem_rhs; 0 after a list rebuild) */
     /* Contact snapshot for the ledger and ring analyses (layer_snapshot): one
@@ -98,6 +101,8 @@ struct gw_layer {
     unsigned long stamp, snap_stamp;
     double *snap;       /* [6 cap_c]: u_n, F_n (elastic), F_t used, K_t, contact point x, y */
     double *snap_xy;    /* [2 n] disc centres */
+    int *snap_breg;     /* [nb] region of each body by its centre (layer_body_region;
+                           0 without regions) */
 };
 
 /* Contact k of the snapshot (layer_snapshot). */
@@ -108,6 +113,17 @@ enum { LAYER_SNAP_UN, LAYER_SNAP_FN, LAYER_SNAP_FT, LAYER_SNAP_KT, LAYER_SNAP_PX
  * contact (LAYER_SNAP_W doubles each) u_n, elastic F_n, used F_t, K_t (all 0
  * when open) and the contact point; disc centres in L->snap_xy. */
 const double *layer_snapshot(const gw_layer *L);
+
+/* Region of body i by its centre of mass in state y: the ring (0 .. reg_n - 1),
+ * reg_n outside them, reg_n + 1 for the block. */
+static inline int layer_body_region(const gw_layer *L, int i, const double *y)
+{
+    if (i == L->block_body)
+        return L->reg_n + 1;
+    const double *s = y + 6 * i;
+    double dx = s[0] - L->reg_cx, dy = s[1] - L->reg_cy, d = sqrt(dx * dx + dy * dy) / L->reg_w;
+    return d < L->reg_n ? (int)d : L->reg_n;
+}
 
 /* Region of a contact from its contact point (px, py): as
  * layer_contact_region_at. */

@@ -181,7 +181,9 @@ int gw_layer_create(const gw_layer_params *p, int n, const gw_layer_body *b, gw_
     L->scale = malloc((size_t)L->cap_y * sizeof *L->scale);
     L->drift = malloc((size_t)L->cap_y * sizeof *L->drift);
     L->snap_xy = malloc(2 * (size_t)n * sizeof *L->snap_xy);
-    if (!L->r || !L->fixed || !L->x_list || !L->y || !L->scale || !L->drift || !L->snap_xy) {
+    L->snap_breg = calloc((size_t)n + 1, sizeof *L->snap_breg);
+    if (!L->r || !L->fixed || !L->x_list || !L->y || !L->scale || !L->drift || !L->snap_xy ||
+        !L->snap_breg) {
         gw_layer_free(L);
         return gw_err_set(err, GW_ENOMEM, "layer: out of memory for %d particles", n);
     }
@@ -235,8 +237,11 @@ void gw_layer_free(gw_layer *L)
     free(L->ymid);
     free(L->dem_book);
     free(L->geo);
+    free(L->facc);
+    free(L->dem_rate);
     free(L->snap);
     free(L->snap_xy);
+    free(L->snap_breg);
     free(L->c);
     free(L->roots);
     free(L->bid);
@@ -578,6 +583,8 @@ const double *layer_snapshot(const gw_layer *L)
     double *xy = M->snap_xy, arm[2];
     for (int i = 0; i < L->n; i++)
         layer_disc_xy(L, y, i, xy + 2 * i, arm);
+    for (int i = 0; L->reg_n > 0 && i < L->nb; i++)
+        M->snap_breg[i] = layer_body_region(L, i, y);
     /* DEM mode, discs only: the last rhs evaluation's geometry is the state's
      * (the same arithmetic; layer_dem.c) */
     const double *geo = L->dem && !L->off && L->geo_pos ? L->geo : NULL;
@@ -626,16 +633,25 @@ void gw_layer_rings(const gw_layer *L, double cx, double cy, double w, int nring
         kin[k] = strain[k] = coord[k] = 0;
     /* ring of a point, or -1 outside the rings */
 #define RING(px, py) ring_of((px) - cx, (py) - cy, w, nring)
+    /* the rings of the regional ledgers (layer_regions.c): the snapshot has the
+     * bodies' (the same arithmetic as ring_of) */
+    const int regs = L->reg_n > 0 && cx == L->reg_cx && cy == L->reg_cy && w == L->reg_w &&
+                     nring == L->reg_n;
     for (int i = 0; i < L->nb; i++) { /* kinetic energy by body centre */
         if (i == L->block_body)
             continue;
         const double *s = y + 6 * i;
-        int k = RING(s[0], s[1]);
+        int k = regs ? (L->snap_breg[i] < nring ? L->snap_breg[i] : -1) : RING(s[0], s[1]);
         if (k >= 0)
             kin[k] += 0.5 * L->m[i] * (s[3] * s[3] + s[4] * s[4]) + 0.5 * L->inertia[i] * s[5] * s[5];
     }
     for (int i = 0; np && i < L->n; i++) { /* coordination: per disc */
-        rk[i] = i == L->block ? -1 : RING(xy[2 * i], xy[2 * i + 1]);
+        if (i == L->block)
+            rk[i] = -1;
+        else if (regs && !L->off) /* discs only: disc i is body i */
+            rk[i] = L->snap_breg[i] < nring ? L->snap_breg[i] : -1;
+        else
+            rk[i] = RING(xy[2 * i], xy[2 * i + 1]);
         if (rk[i] >= 0)
             np[rk[i]]++;
     }

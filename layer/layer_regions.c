@@ -37,15 +37,6 @@ int layer_contact_region(const gw_layer *L, const layer_contact *c, const double
     return layer_contact_region_at(L, c, y, un, nn);
 }
 
-/* Region of body i by its centre of mass. */
-static int particle_region(const gw_layer *L, int i, const double *y)
-{
-    if (i == L->block_body)
-        return L->reg_n + 1;
-    const double *s = y + 6 * i;
-    double dx = s[0] - L->reg_cx, dy = s[1] - L->reg_cy, d = sqrt(dx * dx + dy * dy) / L->reg_w;
-    return d < L->reg_n ? (int)d : L->reg_n;
-}
 
 int gw_layer_set_regions(gw_layer *L, double cx, double cy, double w, int nring, gw_err *err)
 {
@@ -102,13 +93,15 @@ static void body_terms(const gw_layer *L, int i, gw_layer_energy *e)
 
 void layer_ledger_sum(const gw_layer *L, gw_layer_energy *global, gw_layer_energy *regions)
 {
+    const double *snap = layer_snapshot(L);
     for (int i = 0; i < L->nb; i++) { /* bodies */
         if (global)
             body_terms(L, i, global);
         if (regions)
-            body_terms(L, i, regions + particle_region(L, i, L->y));
+            body_terms(L, i, regions + L->snap_breg[i]);
     }
-    const double *snap = layer_snapshot(L);
+    /* DEM mode, discs only: the regions the step found at these positions */
+    const int dem_q = L->dem && !L->off && L->geo_pos && L->tan_phi > 0;
     for (int k = 0; k < L->nc; k++) {
         const double *o = snap + LAYER_SNAP_W * k;
         if (!(o[LAYER_SNAP_FN] > 0))
@@ -118,8 +111,9 @@ void layer_ledger_sum(const gw_layer *L, gw_layer_energy *global, gw_layer_energ
         if (global)
             global->strain_normal += sn, global->strain_tangent += st;
         if (regions) {
-            gw_layer_energy *e = regions + layer_contact_region_pt(L, &L->c[k], o[LAYER_SNAP_PX],
-                                                                  o[LAYER_SNAP_PY]);
+            gw_layer_energy *e = regions + (dem_q ? L->tscr[k].q
+                                                  : layer_contact_region_pt(L, &L->c[k], o[LAYER_SNAP_PX],
+                                                                            o[LAYER_SNAP_PY]));
             e->strain_normal += sn, e->strain_tangent += st;
         }
     }

@@ -91,10 +91,12 @@ int gw_layer_start(gw_layer *L, const gw_solver_type *type, const gw_solver_para
     L->dem = type == gw_solver_verlet;
     if (L->dem) { /* explicit DEM: no contact events (gw_layer_params.no_events) */
         L->p.no_events = 1;
-        free(L->ymid), free(L->dem_book);
+        free(L->ymid), free(L->dem_book), free(L->facc), free(L->dem_rate);
         L->ymid = malloc(6 * (size_t)L->nb * sizeof *L->ymid);
+        L->facc = malloc(3 * (size_t)L->nb * sizeof *L->facc);
         L->dem_book = calloc((size_t)L->ntail + 1, sizeof *L->dem_book);
-        if (!L->ymid || !L->dem_book)
+        L->dem_rate = calloc((size_t)L->ntail + 1, sizeof *L->dem_rate);
+        if (!L->ymid || !L->facc || !L->dem_book || !L->dem_rate)
             return gw_err_set(err, GW_ENOMEM, "layer: out of memory for the DEM step");
     }
     /* The contact network couples particles far apart in the state vector (no

@@ -126,7 +126,7 @@ static int spring_rhs(double t, const double *y, double *yd, void *P)
 static int spring_drift(double t, double h, const double *ph, double *y, void *P)
 {
     (void)t, (void)P;
-    y[1] = ph[1] + W * W * ph[0] * h;
+    y[1] += W * W * ph[0] * h;
     return 0;
 }
 

@@ -39,35 +39,28 @@
 
 #include "layer_impl.h"
 
-/* Overlap, and tangential velocity with the normal of the positions in y (the
- * mid-step state: mid positions, half-step velocities), of a disc-only
- * contact; the velocity is computed even when the contact is open there. */
-static inline double disc_vt(const layer_contact *c, const double *y, double width, double *un)
+/* Tangential relative velocity of a disc-only contact with the normal of the
+ * positions in y (the mid-step state: mid positions, half-step velocities),
+ * also when the contact is open there. */
+static inline double disc_vt(const layer_contact *c, const double *y)
 {
     const double *sa = y + 6 * c->qa;
-    double rx = -sa[3], ry = -sa[4], wrb = 0, n0, n1;
-    switch (c->b) {
-    case LAYER_LEFT:
-        n0 = -1, n1 = 0, *un = c->ra - sa[0];
-        break;
-    case LAYER_RIGHT:
-        n0 = 1, n1 = 0, *un = c->ra - (width - sa[0]);
-        break;
-    case LAYER_BOTTOM:
-        n0 = 0, n1 = -1, *un = c->ra - sa[1];
-        break;
+    double rx = -sa[3], ry = -sa[4];
+    switch (c->b) { /* v_t = -r_x n_y + r_y n_x - w_a R_a (- w_b R_b) */
+    case LAYER_LEFT: /* n = (-1, 0) */
+        return -ry - sa[5] * c->ra;
+    case LAYER_RIGHT: /* n = (1, 0) */
+        return ry - sa[5] * c->ra;
+    case LAYER_BOTTOM: /* n = (0, -1) */
+        return rx - sa[5] * c->ra;
     default: {
         const double *sb = y + 6 * c->qb;
         double dx = sb[0] - sa[0], dy = sb[1] - sa[1], d = sqrt(dx * dx + dy * dy);
-        if (d > 0)
-            n0 = dx / d, n1 = dy / d;
-        else
-            n0 = 0, n1 = 1;
-        *un = c->ra + c->rb - d;
-        rx += sb[3], ry += sb[4], wrb = sb[5] * c->rb;
+        rx += sb[3], ry += sb[4];
+        double w = -sa[5] * c->ra - sb[5] * c->rb;
+        return d > 0 ? (-rx * dy + ry * dx) / d + w : -rx + w; /* coincident: n = (0, 1) */
     }
     }
-    return -rx * n1 + ry * n0 - sa[5] * c->ra - wrb;
 }
 
 /* Overlap and unit normal (a -> b) of a disc-only contact in state y; a
@@ -94,9 +87,10 @@ static inline double disc_geometry(const layer_contact *c, const double *y, doub
             return -1;
         }
         double d = sqrt(d2);
-        if (d > 0)
-            n[0] = dx / d, n[1] = dy / d;
-        else
+        if (d > 0) {
+            double id = 1 / d;
+            n[0] = dx * id, n[1] = dy * id;
+        } else
             n[0] = 0, n[1] = 1;
         return rs - d;
     }
@@ -121,24 +115,26 @@ static void drift_discs(gw_layer *L, double h, double *y)
     memset(rate, 0, (size_t)L->ntail * sizeof *rate);
     for (int k = 0; k < nc; k++) {
         const layer_contact *c = &L->c[k];
-        double nn[2], um;
+        double nn[2];
         const double ue = disc_geometry(c, y, width, nn);
-        const double ks = un_last[k] > 0 ? tscr[k].kt : 0;
         const int q0 = un_last[k] > 0 ? tscr[k].q : -1;
+        const double iks = un_last[k] > 0 ? tscr[k].ikt : 0; /* 1/K_s, 0 when open */
         const double su = ue > 0 ? sqrt(ue) : 0, ke = c->kts * su;
         const double fel = ue > 0 ? c->kn * ue * su : 0;
+        const double ike = ke > 0 ? 1 / ke : 0;
         double *g = geo + 4 * k;
         g[0] = ue, g[1] = su, g[2] = nn[0], g[3] = nn[1];
         un_last[k] = fel > 0 ? ue : 0; /* as the rhs sets it */
         double f1 = 0;
-        if (ks > 0 || ke > 0) { /* the tangential step (see the file's head) */
-            const double vt = disc_vt(c, ym, width, &um);
-            const double km = ks > 0 && ke > 0 ? 2 * ks * ke / (ks + ke) : ks > 0 ? ks : ke;
+        if (iks > 0 || ike > 0) { /* the tangential step (see the file's head) */
+            const double vt = disc_vt(c, ym);
+            /* 1/K_m = (1/K_s + 1/K_e)/2, or the closed end's alone */
+            const double ikm = iks > 0 && ike > 0 ? 0.5 * (iks + ike) : iks > 0 ? iks : ike;
             const double cap = ue > 0 ? tp * c->kn * ue * su : 0;
-            const double f0 = fe[k], ftr = f0 + km * vt * h;
+            const double f0 = fe[k], ftr = f0 + vt * h / ikm;
             f1 = ftr > cap ? cap : ftr < -cap ? -cap : ftr;
-            const double ed = 0.5 * (f0 + f1) * (ftr - f1) / km;
-            const double ek = ks > 0 && ke > 0 ? 0.25 * (f0 * f0 + f1 * f1) * (1 / ks - 1 / ke) : 0;
+            const double ed = ftr == f1 ? 0 : 0.5 * (f0 + f1) * (ftr - f1) * ikm;
+            const double ek = iks > 0 && ike > 0 ? 0.25 * (f0 * f0 + f1 * f1) * (iks - ike) : 0;
             book[0] += ed;
             book[1] += ek;
             if (reg) {
@@ -164,9 +160,11 @@ static void drift_discs(gw_layer *L, double h, double *y)
         }
         const double capr = tp * fel, ft = f1 > capr ? capr : f1 < -capr ? -capr : f1;
         tscr[k].kt = ke;
+        tscr[k].ikt = ike;
         if (reg) {
             const double arm = c->ra - 0.5 * ue;
-            int q = layer_contact_region_pt(L, c, y[6 * c->qa] + arm * nn[0], y[6 * c->qa + 1] + arm * nn[1]);
+            int q = layer_contact_region_near(L, c, y[6 * c->qa] + arm * nn[0], y[6 * c->qa + 1] + arm * nn[1],
+                                              q0);
             tscr[k].q = q;
             rate[2 + 2 * q] += (fn - fel) * und;
         }
@@ -319,6 +317,7 @@ int layer_dem_rhs(double t, const double *y, double *yd, void *P)
             const double cap = tp * fel, f = y[6 * n + k];
             ft = f > cap ? cap : f < -cap ? -cap : f;
             tscr[k].kt = c->kts * su;
+            tscr[k].ikt = 1 / tscr[k].kt;
         }
         if (rtail) {
             const double arm = c->ra - 0.5 * un;

@@ -138,11 +138,26 @@ static inline int layer_contact_region_pt(const gw_layer *L, const layer_contact
     return d2 < lim ? (int)sqrt(d2) : L->reg_n;
 }
 
+/* layer_contact_region_pt knowing the contact's region q0 (-1: unknown) at a
+ * nearby earlier point: q0 when the point is still in that ring, without the
+ * square root. */
+static inline int layer_contact_region_near(const gw_layer *L, const layer_contact *c, double px,
+                                            double py, int q0)
+{
+    if (q0 >= 0 && q0 < L->reg_n && c->qa != L->block_body && c->qb != L->block_body) {
+        double dx = px - L->reg_cx, dy = py - L->reg_cy;
+        double d2 = (dx * dx + dy * dy) / (L->reg_w * L->reg_w);
+        if ((double)q0 * q0 <= d2 && d2 < (double)(q0 + 1) * (q0 + 1))
+            return q0;
+    }
+    return layer_contact_region_pt(L, c, px, py);
+}
+
 /* What the last rhs evaluation found of a closed frictional contact, kept in
  * DEM mode for the next step (layer_dem.c): K_t at the step's start and the
  * contact's region (-1: none). */
 typedef struct layer_tscr {
-    double kt;
+    double kt, ikt; /* K_t and 1/K_t */
     int q;
 } layer_tscr;
 

@@ -637,6 +637,9 @@ void gw_layer_rings(const gw_layer *L, double cx, double cy, double w, int nring
      * bodies' (the same arithmetic as ring_of) */
     const int regs = L->reg_n > 0 && cx == L->reg_cx && cy == L->reg_cy && w == L->reg_w &&
                      nring == L->reg_n;
+    /* DEM mode, discs only: the contacts' regions the step found at these
+     * positions (ring, outside, or block: the block's contacts by their point) */
+    const int dem_q = regs && L->dem && !L->off && L->geo_pos && L->tan_phi > 0;
     for (int i = 0; i < L->nb; i++) { /* kinetic energy by body centre */
         if (i == L->block_body)
             continue;
@@ -659,7 +662,8 @@ void gw_layer_rings(const gw_layer *L, double cx, double cy, double w, int nring
         const double *o = snap + LAYER_SNAP_W * c;
         if (!(o[LAYER_SNAP_FN] > 0))
             continue;
-        int k = RING(o[LAYER_SNAP_PX], o[LAYER_SNAP_PY]);
+        int k = dem_q && L->tscr[c].q < nring ? L->tscr[c].q
+                : dem_q && L->tscr[c].q == nring ? -1 : RING(o[LAYER_SNAP_PX], o[LAYER_SNAP_PY]);
         if (k >= 0)
             strain[k] += 0.4 * o[LAYER_SNAP_FN] * o[LAYER_SNAP_UN] +
                          o[LAYER_SNAP_FT] * o[LAYER_SNAP_FT] / (2 * o[LAYER_SNAP_KT]);

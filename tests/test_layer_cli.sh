@@ -21,13 +21,18 @@ trap 'rm -rf "$tmp"' EXIT
 fails=0
 check() { if eval "$2"; then echo "PASS: $1"; else echo "FAIL: $1"; fails=$((fails + 1)); fi; }
 
-"$gw" layer-make --n 60 --width-rm 16 --seed 3 --out "$tmp/a.txt" --json > "$tmp/make.json"
+"$gw" layer-make --n 60 --width-rm 16 --seed 3 --out "$tmp/a.txt" --json > "$tmp/make.json" 2> "$tmp/make.err"
 check "layer-make exits 0" "[ $? -eq 0 ]"
 "$gw" layer-make --n 60 --width-rm 16 --seed 3 --out "$tmp/b.txt" > /dev/null
 check "layer-make deterministic for a seed (same particle lines)" \
   "cmp -s <(grep -v '^#' '$tmp/a.txt') <(grep -v '^#' '$tmp/b.txt')"
 check "layer-make JSON has n = 60 and a porosity" \
   "python3 -c 'import json,sys; d=json.load(open(\"$tmp/make.json\")); sys.exit(0 if d[\"n\"]==60 and 0<d[\"porosity\"]<1 else 1)'"
+# a pluviation cut before it settles: the sample is kept, but never silently
+"$gw" layer-make --n 60 --width-rm 16 --seed 3 --t-max 0.02 --out "$tmp/u.txt" --json > "$tmp/makeu.json" 2> "$tmp/makeu.err"
+check "layer-make not settled at --t-max: exit 0, one warning line naming --t-max, JSON converged false" \
+  "[ $? -eq 0 ] && [ \$(wc -l < '$tmp/makeu.err') -eq 1 ] && grep -q 'not settled at --t-max 0.02' '$tmp/makeu.err' && python3 -c 'import json,sys; sys.exit(0 if json.load(open(\"$tmp/makeu.json\"))[\"converged\"] is False else 1)'"
+check "layer-make that settles: no warning" "[ ! -s '$tmp/make.err' ]"
 
 "$gw" layer-make --n 60 --width-rm 16 --seed 3 --height-rm 5 --out "$tmp/h.txt" --json > "$tmp/makeh.json"
 check "layer-make --height-rm 5: same settled sample cut at 5 R_m (every top <= 5 R_m, fewer particles, kept ones unchanged)" "python3 - '$tmp' <<'PY'

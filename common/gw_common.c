@@ -33,6 +33,21 @@ const char *gw_version(void)
     return GW_VERSION;
 }
 
+int gw_version_major(void)
+{
+    return GW_VERSION_MAJOR;
+}
+
+int gw_version_minor(void)
+{
+    return GW_VERSION_MINOR;
+}
+
+int gw_version_patch(void)
+{
+    return GW_VERSION_PATCH;
+}
+
 int gw_err_set(gw_err *err, int status, const char *fmt, ...)
 {
     if (err) {

@@ -35,8 +35,13 @@ const char *gw_strerror(int status);
 /* Monotonic wall clock in milliseconds (for run-time reports). */
 double gw_clock_ms(void);
 
-/* Library version string, "MAJOR.MINOR.PATCH". */
+/* Library version string, "MAJOR.MINOR.PATCH", and its three numbers: the version
+ * of the library linked at run time (GW_VERSION in gw_version.h is the one a
+ * program was compiled against). */
 const char *gw_version(void);
+int gw_version_major(void);
+int gw_version_minor(void);
+int gw_version_patch(void);
 
 /* One line of error text, filled by calls that validate input. */
 typedef struct gw_err {

@@ -24,6 +24,7 @@ const char *gw_strerror(int status)
     case GW_EUNSUPPORTED: return "not supported";
     case GW_EENERGY: return "energy error above threshold";
     case GW_ELIMIT: return "step or time limit reached";
+    case GW_ECANCELED: return "canceled by the caller";
     default: return "unknown status";
     }
 }

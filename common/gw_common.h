@@ -26,8 +26,15 @@ enum {
     GW_EFORMAT = -5,      /* malformed input file */
     GW_EUNSUPPORTED = -6, /* option not available in this backend or build */
     GW_EENERGY = -7,      /* energy monitor threshold exceeded */
-    GW_ELIMIT = -8        /* a run hit its time or step limit before finishing */
+    GW_ELIMIT = -8,       /* a run hit its time or step limit before finishing */
+    GW_ECANCELED = -9     /* the caller's progress callback asked to stop */
 };
+
+/* Progress of a long call: done of total units (cases, collisions) finished.
+ * Called from the calling thread or a worker thread, one call at a time (the
+ * library serialises them); return 0 to go on, non-zero to stop the call, which
+ * then returns GW_ECANCELED after the units under way have finished. */
+typedef int (*gw_progress_fn)(void *ctx, long done, long total);
 
 /* Message for a status code (static string, never NULL). */
 const char *gw_strerror(int status);

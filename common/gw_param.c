@@ -57,16 +57,16 @@ static const void *cfield(const void *obj, const gw_param *p)
     return (const char *)obj + p->offset;
 }
 
-/* "(0, 1000]" or "[0, 90]" or "> 0" for messages */
+/* within [min, max], "(" / ")" for open ends; messages "(0, 1000]", "> 0" */
 static int range_bad(const gw_param *p, double x, gw_err *err, const char *what)
 {
-    if (x >= p->min && x <= p->max && !(p->open_min && !(x > p->min)))
+    if (x >= p->min && x <= p->max && !(p->open_min && !(x > p->min)) && !(p->open_max && !(x < p->max)))
         return GW_OK;
     if (!isfinite(p->max))
         return gw_err_set(err, GW_EINVAL, "%s: %s%g must be %s %g", p->name, what, x,
                           p->open_min ? ">" : ">=", p->min);
-    return gw_err_set(err, GW_EINVAL, "%s: %s%g is outside %s%g, %g]", p->name, what, x,
-                      p->open_min ? "(" : "[", p->min, p->max);
+    return gw_err_set(err, GW_EINVAL, "%s: %s%g is outside %s%g, %g%s", p->name, what, x,
+                      p->open_min ? "(" : "[", p->min, p->max, p->open_max ? ")" : "]");
 }
 
 /* index of value in the comma-separated choices, -1 if absent */

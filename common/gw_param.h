@@ -51,9 +51,11 @@ typedef struct gw_param {
     const char *unit;     /* "m/s", "deg", "" */
     double min, max;      /* accepted numbers (list items and range ends too) */
     int open_min;         /* 1: a number must be > min */
+    int open_max;         /* 1: a number must be < max */
     const char *def;      /* default as text, NULL = not given / derived (help says) */
     const char *help;     /* one line */
-    const char *choices;  /* GW_PARAM_CHOICE: the names, comma-separated */
+    const char *choices;  /* GW_PARAM_CHOICE: the names, comma-separated; arrays:
+                             the names of the columns (NULL: none) */
     const char *metavar;  /* placeholder in --help ("V") */
     const char *rows;     /* arrays: number of rows, a number or an int row's name */
     const char *cols;     /* arrays: values per row, likewise (NULL = 1) */

@@ -8,6 +8,8 @@
  *   gw_chain.h   the 1D bead column (Falcon et al. 1998) and its studies
  *   gw_chain_study.h  a column collision from its parameter table
  *   gw_layer.h   the 2D granular layer (Bourrier et al. 2008)
+ *   gw_layer_study.h  a block impact from its parameter table
+ *   gw_study.h   the index of studies and sweep models (for bindings)
  *   gw_version.h GW_VERSION, GW_VERSION_MAJOR/MINOR/PATCH of these headers
  *
  * Link with pkg-config (pkg-config --cflags --libs granwave) or CMake
@@ -24,5 +26,7 @@
 #include "gw_chain.h"
 #include "gw_chain_study.h"
 #include "gw_layer.h"
+#include "gw_layer_study.h"
+#include "gw_study.h"
 
 #endif

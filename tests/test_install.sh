@@ -6,7 +6,8 @@
 # collision checked against the closed form and the version (see colliding.c).
 # Also: every installed header compiles on its own (so none includes a header
 # that is not installed), the soname carries the version, and the .pc and
-# CMake package report the project version.
+# CMake package report the project version, and the installed Python module
+# loads the installed library.
 set -euo pipefail
 build=$(cd "$1" && pwd)
 src=$(cd "$2" && pwd)
@@ -61,3 +62,20 @@ cmake -S "$src/tests/install" -B "$tmp/b" -DCMAKE_PREFIX_PATH="$p" -DGW_EXPECT_V
 cmake --build "$tmp/b" > "$tmp/build.log" || { cat "$tmp/build.log"; fail "build with find_package"; }
 "$tmp/b/colliding" "$version" || fail "colliding (find_package)"
 echo "PASS: find_package(granwave CONFIG) build"
+
+# the Python module installed beside the library finds it without GRANWAVE_LIB
+if /usr/bin/python3 -c "import numpy" 2>/dev/null; then
+    pyout=$(cd "$tmp" && env -u GRANWAVE_LIB PYTHONPATH="$p/lib/python3/dist-packages" PYTHONDONTWRITEBYTECODE=1 \
+        /usr/bin/python3 -c "
+import granwave
+r = granwave.chain(n=1, vimp=0.3)
+print(granwave.version(), granwave.library_path, abs(r.f_max - r.f_max_1) / r.f_max_1)
+") || fail "import the installed Python module"
+    read -r pyver pylib pyrel <<< "$pyout"
+    [ "$pyver" = "$version" ] || fail "Python module reports version $pyver"
+    case "$pylib" in "$p"/lib/*) ;; *) fail "installed module loaded $pylib, not the installed library";; esac
+    /usr/bin/python3 -c "import sys; sys.exit(0 if float('$pyrel') <= 1e-6 else 1)" || fail "Python F_max(1) rel error $pyrel"
+    echo "PASS: installed Python module (library $pylib, F_max(1) rel error $pyrel)"
+else
+    echo "SKIP: /usr/bin/python3 without numpy: installed Python module not checked"
+fi

@@ -100,4 +100,66 @@ const gw_param *gw_chain_collision_fields(void);
 int gw_chain_collision_run(const gw_chain_setup *s, gw_chain_collision *out, gw_err *err);
 void gw_chain_collision_free(gw_chain_collision *out);
 
+/* ---- the Falcon rigid-wall study (physics.md 1.3, 1.7) ---- */
+
+/* Per impact velocity: tau_N = T_q (N - 1) + tau_1 (F.4) fitted over all N and
+ * over N <= 20 (GSL), wave speed 4R/T_q (F.6) against 2 (k/m)^(2/5) R v^(1/5)
+ * (F.27), F_max over N, the mean force period P (N >= 10), closed forms. */
+typedef struct gw_chain_falcon_fit {
+    gw_linfit fit, fit20;  /* x = N - 1, y = tau_N (s): c1 = T_q, c0 the intercept */
+    double f_mean, f_min, f_max, tau_max_mean, period_mean; /* N, N, N, s, s */
+    double t_q_theory, tau_1_theory, f_max_1_theory;        /* s, s, N */
+    double speed, speed20, speed_theory;                    /* m/s */
+} gw_chain_falcon_fit;
+
+/* Analyse the collisions res[0 .. n_hi - n_lo] (N = n_lo .. n_hi) of the column
+ * p at impact velocity v into a. */
+void gw_chain_falcon_analyse(const gw_chain_params *p, double v, const gw_chain_result *res, int n_lo,
+                             int n_hi, gw_chain_falcon_fit *a);
+
+/* The inputs of `granwave falcon`: the column (its model and solver rows; its n,
+ * vimp and trace are not used) and the study's own. */
+typedef struct gw_chain_falcon_setup {
+    gw_chain_setup col;
+    gw_param_list vimp;    /* impact velocities, m/s [0.3] */
+    gw_param_list heights; /* drop heights, mm, v = sqrt(2 g h), g = 9.81 [1.9,2.9,3.1,5.1] */
+    long n[2];             /* column sizes [1:40] */
+    double accuracy;       /* relative accuracy of F_max and tau_N for the RK4 step
+                              study, used when every solver row of col is at its
+                              default (0: col's solver rows as they are) [1e-6] */
+    long jobs;             /* threads [0 = one per CPU] */
+} gw_chain_falcon_setup;
+
+const gw_param *gw_chain_falcon_setup_params(void);
+int gw_chain_falcon_setup_init(gw_chain_falcon_setup *s);
+void gw_chain_falcon_setup_clear(gw_chain_falcon_setup *s);
+
+typedef struct gw_chain_falcon_outcome {
+    int nv, nn, ncase;     /* velocities, column sizes, nv * nn */
+    double *v_imp, *h_mm;  /* [nv] m/s; mm (NaN: velocity given directly) */
+    double *n;             /* [nn] column sizes */
+    /* [nv * nn], velocity-major: case (iv, N) at iv * nn + (N - n_lo) */
+    double *f_max, *tau_max, *tau_n, *period, *eps_eff, *eps_col, *e_rel_over_e_k, *n_s, *energy_error;
+    /* [nv] per velocity (gw_chain_falcon_fit) */
+    double *t_q, *t_q_err, *tau_fit_intercept, *tau_fit_intercept_err, *r2, *tau_fit_max_rel_resid;
+    double *t_q_n20, *t_q_n20_err, *wave_speed, *wave_speed_n20, *wave_speed_theory;
+    double *t_q_theory, *tau_1_theory, *f_max_1_theory;
+    double *f_max_mean, *f_max_min, *f_max_max, *tau_max_mean, *period_mean;
+    double k_c;            /* N/m^1.5 (F.22) */
+    int rigid;             /* K > K_c */
+    double accuracy;       /* the accuracy target used (0: col's solver) */
+    double wall_time_s;
+} gw_chain_falcon_outcome;
+
+const gw_param *gw_chain_falcon_outcome_fields(void);
+
+/* Run the study: every (v, N) collision on jobs threads, progress per
+ * collision (may be NULL), then the analysis per velocity. out zeroed first;
+ * free with gw_chain_falcon_outcome_free also after a failure. GW_EINVAL
+ * "NAME: reason", a collision's failure ("N = .., v_imp = ..: ..."),
+ * GW_ECANCELED, GW_ENOMEM. */
+int gw_chain_falcon_run(const gw_chain_falcon_setup *s, gw_progress_fn progress, void *pctx,
+                        gw_chain_falcon_outcome *out, gw_err *err);
+void gw_chain_falcon_outcome_free(gw_chain_falcon_outcome *out);
+
 #endif

@@ -211,6 +211,13 @@ static int set_text(const gw_param *p, void *obj, const char *value, gw_err *err
     case GW_PARAM_LIST: {
         double *v = NULL;
         int n = 0;
+        if (strcmp(value, "none") == 0) { /* an empty list: not given */
+            gw_param_list *l = field(obj, p);
+            free(l->v);
+            l->v = NULL;
+            l->n = 0;
+            return GW_OK;
+        }
         int rc = gw_parse_double_list_in(value, p->name, p->min, p->max, p->open_min, &v, &n, err);
         if (rc != GW_OK)
             return rc;

@@ -32,7 +32,8 @@ typedef enum gw_param_type {
     GW_PARAM_CHOICE = 4, /* int: index into choices ("none,kk,hc"); -1 = not given */
     GW_PARAM_TEXT = 5,   /* char *, owned by the struct (gw_param_clear frees it);
                             NULL = not given */
-    GW_PARAM_LIST = 6,   /* gw_param_list, owned; text "a,b,c"; empty = not given */
+    GW_PARAM_LIST = 6,   /* gw_param_list, owned; text "a,b,c"; empty = not given
+                            (text "none") */
     GW_PARAM_RANGE = 7,  /* long[2] {a, b}, a <= b; text "A:B" or "A" */
     GW_PARAM_DARRAY = 8, /* result: double *, rows x cols, row-major */
     GW_PARAM_IARRAY = 9  /* result: int *, rows x cols */

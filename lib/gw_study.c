@@ -21,6 +21,14 @@ static int chain_run(const void *s, void *out, gw_progress_fn progress, void *pc
 }
 static void chain_free(void *out) { gw_chain_collision_free(out); }
 
+static int falcon_init(void *s) { return gw_chain_falcon_setup_init(s); }
+static void falcon_clear(void *s) { gw_chain_falcon_setup_clear(s); }
+static int falcon_run(const void *s, void *out, gw_progress_fn progress, void *pctx, gw_err *err)
+{
+    return gw_chain_falcon_run(s, progress, pctx, out, err);
+}
+static void falcon_free(void *out) { gw_chain_falcon_outcome_free(out); }
+
 #if GW_HAVE_LAYER
 static int impact_init(void *s) { return gw_layer_impact_setup_init(s); }
 static void impact_clear(void *s) { gw_layer_impact_setup_clear(s); }
@@ -37,6 +45,9 @@ static const gw_study studies[] = {
     {"chain", "one collision of a column of beads with a wall (Falcon et al. 1998)", gw_chain_setup_params,
      sizeof(gw_chain_setup), chain_init, chain_clear, gw_chain_collision_fields, sizeof(gw_chain_collision),
      chain_run, chain_free},
+    {"falcon", "the rigid-wall study of Falcon et al. (1998): N = A..B at each impact velocity",
+     gw_chain_falcon_setup_params, sizeof(gw_chain_falcon_setup), falcon_init, falcon_clear,
+     gw_chain_falcon_outcome_fields, sizeof(gw_chain_falcon_outcome), falcon_run, falcon_free},
 #if GW_HAVE_LAYER
     {"layer-impact", "one block impact on a 2D granular layer (Bourrier et al. 2008)",
      gw_layer_impact_setup_params, sizeof(gw_layer_impact_setup), impact_init, impact_clear,

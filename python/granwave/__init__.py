@@ -8,6 +8,8 @@ same models and numbers as the `granwave` program.
     r.f_max, r.tau_n, r.final_velocities         # N, s, m/s (numpy array)
     r = granwave.chain(n=7, vimp=0.3, trace=True)
     r.t, r.f_wall                                # the wall-force trace
+    f = granwave.falcon(n=(1, 20), vimp=[0.3], heights=[])   # the Falcon study
+    f.t_q, f.wave_speed, f.f_max                 # per velocity; [velocity, N]
     r = granwave.layer_impact(sample="a.txt", rb_rm=1, vi=20)
     r.e_n, r.ledger["total"]                     # restitution, energy ledger series
     s = granwave.sweep("chain", grid={"n": range(1, 11), "vimp": [0.2, 0.3]}, solver="rk4")
@@ -29,7 +31,7 @@ from ._core import (GranwaveError, GranwaveIOError, GranwaveRunError, GranwaveUn
 from ._lib import lib as _clib
 from ._lib import path as library_path
 
-__all__ = ["version", "version_info", "chain", "layer_impact", "sweep", "params", "library_path",
+__all__ = ["version", "version_info", "chain", "falcon", "layer_impact", "sweep", "params", "library_path",
            "Result", "GranwaveError", "GranwaveValueError", "GranwaveIOError", "GranwaveRunError",
            "GranwaveUnsupported"]
 
@@ -72,6 +74,10 @@ def layer_impact(**kwargs):
     return _study("layer-impact").run(kwargs)
 
 
+def falcon(*, progress=None, **kwargs):
+    return _study("falcon").run(kwargs, progress)
+
+
 def sweep(model="chain", grid=None, *, jobs=0, progress=None, **params):
     """Run a grid of cases of a sweep model ("chain" or "layer") in memory,
     on `jobs` threads (0: one per CPU), with the library's sweep engine (the
@@ -91,6 +97,12 @@ chain.__doc__ = _study("chain").doc(
     "One collision of a column of n beads with a wall (Falcon et al. 1998, eq. F.11):\n"
     "Hertz contacts, beads initially touching and moving at vimp toward the wall, as\n"
     "`granwave chain`. trace=True adds the series t, f_wall, x, v (numpy arrays).")
+falcon.__doc__ = _study("falcon").doc(
+    "The rigid-wall study of Falcon et al. (1998), as `granwave falcon`: one collision\n"
+    "for every N in n = (A, B) at each impact velocity (vimp, and heights in mm), the\n"
+    "line tau_N = T_q (N - 1) + tau_1, the wave speed 4R/T_q against (F.27), F_max(N).\n"
+    "Per-case results are arrays [velocity, N]. progress: optional f(done, total) per\n"
+    "collision; return True (or raise) to stop. heights=[] (or 'none') for none.")
 layer_impact.__doc__ = _study("layer-impact").doc(
     "One block impact on a 2D granular layer (Bourrier et al. 2008), as\n"
     "`granwave layer-impact` (fast default: verlet; exact=True for the exact mode).\n"

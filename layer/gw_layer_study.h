@@ -87,4 +87,50 @@ const gw_param *gw_layer_impact_outcome_fields(void);
 int gw_layer_impact_run(const gw_layer_impact_setup *s, gw_layer_impact_outcome *out, gw_err *err);
 void gw_layer_impact_outcome_free(gw_layer_impact_outcome *out);
 
+/* ---- pluviation (physics.md 2.2) ---- */
+
+/* The inputs of `granwave layer-make`: materials (mass law disc, clump mass
+ * sum by default) and gw_layer_make_params; out (may be NULL) is the sample
+ * file to write. */
+typedef struct gw_layer_make_setup {
+    double friction, shear_modulus, poisson, density, gravity, skin; /* as gw_layer_impact_setup */
+    int mass_law;          /* disc, sphere [disc] */
+    int clump_mass;        /* sum, union [sum] */
+    long n;                /* particles (clumps with clumps = 1) [300] */
+    double rm;             /* mean radius R_m, m [0.325] */
+    double volume_ratio;   /* largest/smallest volume [10] */
+    double width_rm;       /* box width in R_m [50] */
+    long seed;             /* [1] */
+    double ke_threshold;   /* stop when E_k < E M g R_m [1e-5] */
+    double t_max;          /* s [6] */
+    double damping;        /* Hunt-Crossley alpha while settling, s/m [0.3] */
+    double modulus_factor; /* settle with F G [1] */
+    double dt;             /* fixed step, s [2e-5] */
+    int solver;            /* rk4, verlet (choice) [rk4] */
+    double height_rm;      /* keep particles wholly below H R_m [0 = all] */
+    int clumps;            /* type B soil [0] */
+    double aspect_max;     /* clumps: aspect ratio in [1, A] [4] */
+    char *out;             /* sample file to write (text, or HDF5 for .h5) [NULL: none], owned */
+} gw_layer_make_setup;
+
+const gw_param *gw_layer_make_setup_params(void);
+int gw_layer_make_setup_init(gw_layer_make_setup *s);
+void gw_layer_make_setup_clear(gw_layer_make_setup *s);
+
+typedef struct gw_layer_make_outcome {
+    gw_layer_make_result r;
+    gw_layer_sample sample; /* the sample: n discs, x, y, r, body (NULL for discs) */
+    double height;          /* max(y + r), m */
+    double height_rm;       /* height / R_m */
+} gw_layer_make_outcome;
+
+const gw_param *gw_layer_make_outcome_fields(void);
+
+/* Pluviate (gw_layer_make) and, when s->out is set, write the sample there
+ * atomically with the settings in its header. out zeroed first; free with
+ * gw_layer_make_outcome_free also after a failure. GW_EINVAL "NAME: reason",
+ * GW_EUNSUPPORTED (HDF5 out without HDF5), GW_EIO, the run's status. */
+int gw_layer_make_run(const gw_layer_make_setup *s, gw_layer_make_outcome *out, gw_err *err);
+void gw_layer_make_outcome_free(gw_layer_make_outcome *out);
+
 #endif

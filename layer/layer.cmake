@@ -19,7 +19,8 @@ add_library(gw_layer_obj OBJECT
   ${CMAKE_CURRENT_LIST_DIR}/layer_stats_table.c
   ${CMAKE_CURRENT_LIST_DIR}/layer_stats_diagram.c
   ${CMAKE_CURRENT_LIST_DIR}/layer_stats_out.c
-  ${CMAKE_CURRENT_LIST_DIR}/layer_setup.c)
+  ${CMAKE_CURRENT_LIST_DIR}/layer_setup.c
+  ${CMAKE_CURRENT_LIST_DIR}/layer_make_study.c)
 gw_library_objects(gw_layer_obj)
 target_include_directories(gw_layer_obj PUBLIC ${CMAKE_CURRENT_SOURCE_DIR})
 target_link_libraries(gw_layer_obj PUBLIC gw_common_obj)

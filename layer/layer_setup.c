@@ -11,7 +11,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "gw_layer_study.h"
+#include "layer_setup_rows.h"
 
 #define OFF(f) offsetof(gw_layer_impact_setup, f)
 #define ROW(nm, ty, f, un, lo, hi, op, opx, df, mv, hl)                                           \
@@ -23,23 +23,11 @@
 #define FLAG(nm, f, hl) {.name = nm, .type = GW_PARAM_FLAG, .offset = OFF(f), .unit = "", .min = 0, .max = 1, \
                          .def = "0", .help = hl}
 
-/* mass-law choices in GW_LAYER_MASS_* order, clump-mass in GW_LAYER_CLUMP_MASS_* order */
-_Static_assert(GW_LAYER_MASS_DISC == 0 && GW_LAYER_MASS_SPHERE == 1, "mass-law choices disc,sphere");
-_Static_assert(GW_LAYER_CLUMP_MASS_SUM == 0 && GW_LAYER_CLUMP_MASS_UNION == 1, "clump-mass choices sum,union");
 
 static const gw_param impact_params[] = {
     {.name = "sample", .type = GW_PARAM_TEXT, .offset = OFF(sample), .unit = "", .metavar = "FILE",
      .help = "sample written by layer-make (required)"},
-    ROW("friction", GW_PARAM_DOUBLE, friction, "deg", 0, 90, 0, 1, "30", "PHI", "friction angle phi, deg in [0, 90) [30]"),
-    ROW("shear-modulus", GW_PARAM_DOUBLE, shear_modulus, "Pa", 1e-3, 1e15, 0, 0, "40e9", "G", "shear modulus, Pa [40e9]"),
-    ROW("poisson", GW_PARAM_DOUBLE, poisson, "", 0, 0.499999, 0, 0, "0.25", "NU", "Poisson ratio [0.25]"),
-    ROW("density", GW_PARAM_DOUBLE, density, "kg/m^3", 1e-6, 1e6, 0, 0, "2650", "RHO", "particle density, kg/m^3 [2650]"),
-    ROW("gravity", GW_PARAM_DOUBLE, gravity, "m/s^2", 0, 1e4, 0, 0, "9.81", "G", "gravity, m/s^2 [9.81]"),
-    ROW("skin", GW_PARAM_DOUBLE, skin, "m", 0, INFINITY, 1, 0, "0.1", "S", "contact-list skin, m [0.1]"),
-    CHOICE("mass-law", mass_law, "disc,sphere", NULL, "LAW", "disc (unit thickness) or sphere [the sample's]"),
-    CHOICE("clump-mass", clump_mass, "sum,union", NULL, "HOW",
-           "clump mass: sum (members added, overlaps twice, as PFC2D) or union (density x the union's area; "
-           "disc law) [the sample's]"),
+    GW_LAYER_MATERIAL_ROWS(NULL, NULL, "[the sample's]")
     ROW("rb-rm", GW_PARAM_DOUBLE, rb_rm, "", 0, 1e6, 1, 0, "1", "R", "block radius in R_m [1]"),
     ROW("vi", GW_PARAM_DOUBLE, vi, "m/s", 0, 1e3, 1, 0, "20", "V", "incident speed, m/s [20]"),
     ROW("alpha", GW_PARAM_DOUBLE, alpha, "deg", 0, 90, 0, 1, "0", "DEG", "incidence from the normal, deg in [0, 90) [0]"),

@@ -39,6 +39,16 @@ static int impact_run(const void *s, void *out, gw_progress_fn progress, void *p
     return gw_layer_impact_run(s, out, err);
 }
 static void impact_free(void *out) { gw_layer_impact_outcome_free(out); }
+
+static int make_init(void *s) { return gw_layer_make_setup_init(s); }
+static void make_clear(void *s) { gw_layer_make_setup_clear(s); }
+static int make_run(const void *s, void *out, gw_progress_fn progress, void *pctx, gw_err *err)
+{
+    (void)progress;
+    (void)pctx;
+    return gw_layer_make_run(s, out, err);
+}
+static void make_free(void *out) { gw_layer_make_outcome_free(out); }
 #endif
 
 static const gw_study studies[] = {
@@ -52,6 +62,9 @@ static const gw_study studies[] = {
     {"layer-impact", "one block impact on a 2D granular layer (Bourrier et al. 2008)",
      gw_layer_impact_setup_params, sizeof(gw_layer_impact_setup), impact_init, impact_clear,
      gw_layer_impact_outcome_fields, sizeof(gw_layer_impact_outcome), impact_run, impact_free},
+    {"layer-make", "pluviate a 2D granular sample (Bourrier et al. 2008)", gw_layer_make_setup_params,
+     sizeof(gw_layer_make_setup), make_init, make_clear, gw_layer_make_outcome_fields,
+     sizeof(gw_layer_make_outcome), make_run, make_free},
 #endif
 };
 #define NSTUDIES ((int)(sizeof studies / sizeof studies[0]))

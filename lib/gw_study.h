@@ -7,6 +7,7 @@
  *   study           inputs (table)                       results (table)
  *   "chain"         gw_chain_setup                       gw_chain_collision
  *   "falcon"        gw_chain_falcon_setup                gw_chain_falcon_outcome
+ *   "layer-make"    gw_layer_make_setup                  gw_layer_make_outcome
  *   "layer-impact"  gw_layer_impact_setup                gw_layer_impact_outcome
  *
  * The sweep models (gw_sweep.h) are listed too, for gw_sweep_config_read_string

@@ -10,6 +10,7 @@ same models and numbers as the `granwave` program.
     r.t, r.f_wall                                # the wall-force trace
     f = granwave.falcon(n=(1, 20), vimp=[0.3], heights=[])   # the Falcon study
     f.t_q, f.wave_speed, f.f_max                 # per velocity; [velocity, N]
+    granwave.layer_make(n=60, width_rm=16, seed=3, out="a.txt")   # a small sample
     r = granwave.layer_impact(sample="a.txt", rb_rm=1, vi=20)
     r.e_n, r.ledger["total"]                     # restitution, energy ledger series
     s = granwave.sweep("chain", grid={"n": range(1, 11), "vimp": [0.2, 0.3]}, solver="rk4")
@@ -31,7 +32,7 @@ from ._core import (GranwaveError, GranwaveIOError, GranwaveRunError, GranwaveUn
 from ._lib import lib as _clib
 from ._lib import path as library_path
 
-__all__ = ["version", "version_info", "chain", "falcon", "layer_impact", "sweep", "params", "library_path",
+__all__ = ["version", "version_info", "chain", "falcon", "layer_make", "layer_impact", "sweep", "params", "library_path",
            "Result", "GranwaveError", "GranwaveValueError", "GranwaveIOError", "GranwaveRunError",
            "GranwaveUnsupported"]
 
@@ -70,6 +71,10 @@ def chain(**kwargs):
     return _study("chain").run(kwargs)
 
 
+def layer_make(**kwargs):
+    return _study("layer-make").run(kwargs)
+
+
 def layer_impact(**kwargs):
     return _study("layer-impact").run(kwargs)
 
@@ -103,6 +108,11 @@ falcon.__doc__ = _study("falcon").doc(
     "line tau_N = T_q (N - 1) + tau_1, the wave speed 4R/T_q against (F.27), F_max(N).\n"
     "Per-case results are arrays [velocity, N]. progress: optional f(done, total) per\n"
     "collision; return True (or raise) to stop. heights=[] (or 'none') for none.")
+layer_make.__doc__ = _study("layer-make").doc(
+    "Pluviate a 2D sample (Bourrier et al. 2008, physics.md 2.2), as `granwave layer-make`:\n"
+    "polydisperse discs (clumps=True: rigid clumps) dropped under gravity until the kinetic\n"
+    "energy is below a threshold. Deterministic for a seed. out=FILE writes the sample\n"
+    "for layer_impact(sample=FILE); the result holds the discs (x, y, r) either way.")
 layer_impact.__doc__ = _study("layer-impact").doc(
     "One block impact on a 2D granular layer (Bourrier et al. 2008), as\n"
     "`granwave layer-impact` (fast default: verlet; exact=True for the exact mode).\n"

@@ -64,3 +64,21 @@ def test_ledger_closes(sample):
 def test_exact_mode_closes_tighter(sample):
     r = granwave.layer_impact(sample=sample, exact=True, t_max=0.01)
     assert r.exact == 1 and r.energy_error < 1e-4
+
+
+def test_layer_make_writes_the_programs_sample(sample, tmp_path):
+    """granwave.layer_make with the inputs of the fixture's `granwave layer-make`
+    writes the same discs (pluviation is deterministic for a seed), returns them,
+    and records its settings in the file's header."""
+    out = tmp_path / "py.txt"
+    m = granwave.layer_make(n=60, width_rm=16, seed=3, out=out)
+    data = [line for line in out.read_text().splitlines() if not line.startswith("#")]
+    assert data == [line for line in sample.read_text().splitlines() if not line.startswith("#")]
+    assert '"seed":3' in out.read_text() and m.converged == 1 and m.n == 60
+    assert m.x.shape == m.y.shape == m.r.shape == (60,)
+    assert m.height == pytest.approx((m.y + m.r).max(), rel=1e-15)
+    assert m.width == pytest.approx(16 * 0.325, rel=1e-15)
+    with pytest.raises(ValueError, match="aspect_max"):
+        granwave.layer_make(n=10, aspect_max=2)
+    with pytest.raises(ValueError, match="gravity"):
+        granwave.layer_make(n=10, gravity=0)

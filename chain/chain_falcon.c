@@ -17,49 +17,26 @@
 #include <string.h>
 
 #include "chain_falcon.h"
+#include "gw_chain_study.h"
 
 static void analyse_velocity(falcon *f, int iv)
 {
     falcon_vel *fv = &f->fv[iv];
-    const gw_chain_params *p = &f->c.params;
-    int count = f->n_hi - f->n_lo + 1, c20 = 0, np = 0;
-    double *x = malloc(2 * (size_t)count * sizeof *x), *y = x ? x + count : NULL;
-    fv->f_min = INFINITY;
-    fv->f_max = -INFINITY;
-    fv->f_mean = fv->tau_max_mean = fv->period_mean = 0;
-    for (int n = f->n_lo; n <= f->n_hi; n++) {
-        const gw_chain_result *r = res_at(f, iv, n);
-        int k = n - f->n_lo;
-        if (x) {
-            x[k] = n - 1;
-            y[k] = r->tau_n;
-        }
-        if (n <= 20)
-            c20++;
-        fv->f_mean += r->f_max / count;
-        fv->tau_max_mean += r->tau_max / count;
-        fv->f_min = fmin(fv->f_min, r->f_max);
-        fv->f_max = fmax(fv->f_max, r->f_max);
-        if (n >= 10 && r->n_maxima >= 2) {
-            fv->period_mean += r->period;
-            np++;
-        }
-    }
-    fv->period_mean = np ? fv->period_mean / np : NAN;
-    memset(&fv->fit, 0, sizeof fv->fit);
-    memset(&fv->fit20, 0, sizeof fv->fit20);
-    fv->fit.c1 = fv->fit20.c1 = NAN;
-    if (x && count >= 2)
-        gw_fit_linear(x, y, count, &fv->fit);
-    if (x && c20 >= 2)
-        gw_fit_linear(x, y, c20, &fv->fit20);
-    free(x);
-    fv->t_q_theory = gw_chain_tq_theory(p->mass, p->k, fv->v);
-    fv->tau_1_theory = gw_chain_tau1(p->mass, p->kwall, fv->v);
-    fv->f_max_1_theory = gw_chain_fmax1(p->mass, p->kwall, fv->v);
-    fv->speed = 4 * p->radius / fv->fit.c1;
-    fv->speed20 = 4 * p->radius / fv->fit20.c1;
-    fv->speed_theory = 4 * p->radius / fv->t_q_theory;
+    gw_chain_falcon_fit a;
+    gw_chain_falcon_analyse(&f->c.params, fv->v, res_at(f, iv, f->n_lo), f->n_lo, f->n_hi, &a);
+    fv->fit = a.fit;
+    fv->fit20 = a.fit20;
+    fv->f_mean = a.f_mean;
+    fv->f_min = a.f_min;
+    fv->f_max = a.f_max;
+    fv->tau_max_mean = a.tau_max_mean;
+    fv->period_mean = a.period_mean;
+    fv->t_q_theory = a.t_q_theory;
+    fv->tau_1_theory = a.tau_1_theory;
+    fv->f_max_1_theory = a.f_max_1_theory;
+    fv->speed = a.speed;
+    fv->speed20 = a.speed20;
+    fv->speed_theory = a.speed_theory;
 }
 
 static cJSON *summary_json(const falcon *f)

@@ -1,24 +1,21 @@
 /*
  * chain_options.c: shared options of the chain commands (see chain_options.h).
- * Coefficients come from the materials (F.12, F.3) unless given directly:
- * --k and --kwall in N/m^1.5, --mass in kg. One validation path for every chain
- * command: impact speeds (a single --vimp, a --vimp list, --heights in mm) in
- * (0, GW_CHAIN_VIMP_MAX] m/s, tolerances in [GW_TOL_MIN, GW_TOL_MAX], and options
- * that would have no effect (--gamma without --damping kk, --alpha without
- * --damping hc, either with --restitution) refused.
+ * The options are the rows of the column's parameter table (gw_chain_study.h:
+ * name, help, range, default) and resolve through gw_chain_setup_resolve, the
+ * library's one path: coefficients from the materials (F.12, F.3) unless given
+ * directly (--k and --kwall in N/m^1.5, --mass in kg), tolerances in
+ * [GW_TOL_MIN, GW_TOL_MAX], options that would have no effect (--gamma without
+ * --damping kk, --alpha without --damping hc, either with --restitution)
+ * refused. Here only what is the command line's own: impact speeds as lists
+ * (falcon, wavespeed: --vimp, --heights in mm) checked in (0, GW_CHAIN_VIMP_MAX]
+ * m/s, messages prefixed "CMD --NAME", and the --out check.
  */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "chain_falcon.h" /* G_EARTH: falcon's --heights are drop heights in mm */
-
-/* Physical ranges of the option table (beyond them a run overflows its step
- * count or never ends): the stiffest real contact (diamond on diamond, R = 1 m)
- * has k ~ 1e12 N/m^1.5, the softest sheet of Table 2 K_eff ~ 1e6; the beads are
- * at most 1 m and 1 t. */
-#define GW_CHAIN_K_MIN 1e3
-#define GW_CHAIN_K_MAX 1e14
+#include "gw_chain_study.h"
 
 /* Every impact speed of the command: --vimp (one value, or a list for falcon and
  * wavespeed) and falcon's --heights (mm, v = sqrt(2 g h)), checked in the list
@@ -52,215 +49,130 @@ static int check_speeds(const gw_opt *opts, const char *cmd, gw_err *err)
     return GW_OK;
 }
 
-/* An option given on the command line that the chosen model would ignore. */
-static int check_no_effect(const chain_cli *c, const gw_opt *opts, const char *cmd, gw_err *err)
-{
-    int restitution = gw_cli_find(opts, "restitution")->seen;
-    if (gw_cli_find(opts, "gamma")->seen) {
-        if (c->params.damping != GW_DAMP_KUWABARA_KONO)
-            return gw_err_set(err, GW_EINVAL, "%s --gamma: has no effect without --damping kk", cmd);
-        if (restitution)
-            return gw_err_set(err, GW_EINVAL, "%s --gamma: --restitution sets gamma; give one of them", cmd);
-    }
-    if (gw_cli_find(opts, "alpha")->seen) {
-        if (c->params.damping != GW_DAMP_HUNT_CROSSLEY)
-            return gw_err_set(err, GW_EINVAL, "%s --alpha: has no effect without --damping hc", cmd);
-        if (restitution)
-            return gw_err_set(err, GW_EINVAL, "%s --alpha: --restitution sets alpha; give one of them", cmd);
-    }
-    if (gw_cli_find(opts, "restitution-v")->seen && !restitution)
-        return gw_err_set(err, GW_EINVAL, "%s --restitution-v: has no effect without --restitution", cmd);
-    return GW_OK;
-}
-
-#define OPT_D(nm, dst, mv, hl, lo_, hi_, open_)                                          \
-    (gw_opt) { .name = nm, .kind = GW_OPT_DOUBLE, .dest = dst, .metavar = mv, .help = hl, \
-               .lo = lo_, .hi = hi_, .open_lo = open_ }
-#define OPT_S(nm, dst, mv, hl)                                                           \
-    (gw_opt) { .name = nm, .kind = GW_OPT_STRING, .dest = dst, .metavar = mv, .help = hl }
+/* Where each row of the setup table (gw_chain_study.h) lands in chain_cli: the
+ * command-line options are the table's rows (name, help, range, default), read
+ * into chain_cli's raw fields that the commands use; chain_cli_resolve hands them
+ * to gw_chain_setup_resolve, the one resolution of a column. n and vimp are the
+ * commands' own options (a list in falcon and wavespeed), trace is the library's. */
+static const struct {
+    const char *name;
+    size_t off;
+} cli_dest[] = {
+    {"material", offsetof(chain_cli, material)},   {"radius", offsetof(chain_cli, radius)},
+    {"wall-material", offsetof(chain_cli, wall_material)}, {"sheet", offsetof(chain_cli, sheet)},
+    {"radii", offsetof(chain_cli, radii)},         {"k", offsetof(chain_cli, k)},
+    {"kwall", offsetof(chain_cli, kwall)},         {"mass", offsetof(chain_cli, mass)},
+    {"gravity", offsetof(chain_cli, gravity)},     {"damping", offsetof(chain_cli, damping)},
+    {"gamma", offsetof(chain_cli, gamma)},         {"alpha", offsetof(chain_cli, alpha)},
+    {"restitution", offsetof(chain_cli, restitution)}, {"restitution-v", offsetof(chain_cli, restitution_v)},
+    {"solver", offsetof(chain_cli, solver)},       {"method", offsetof(chain_cli, method)},
+    {"rtol", offsetof(chain_cli, rtol)},           {"atol", offsetof(chain_cli, atol)},
+    {"dt", offsetof(chain_cli, dt)},               {"dt-max", offsetof(chain_cli, dt_max)},
+    {"max-steps", offsetof(chain_cli, max_steps)}, {"t-max", offsetof(chain_cli, t_max)},
+    {"dt-out", offsetof(chain_cli, dt_out)},       {"energy-tol", offsetof(chain_cli, energy_tol)}};
+#define NDEST (sizeof cli_dest / sizeof cli_dest[0])
+_Static_assert(NDEST + 2 == CHAIN_CLI_NOPTS, "chain_cli options: the table's rows plus --json and --out");
 
 void chain_cli_options(chain_cli *c, gw_opt *o)
 {
     memset(c, 0, sizeof *c);
-    c->radius = 4e-3;
-    c->material = "steel";
-    c->wall_material = "steel";
-    c->damping = "none";
-    c->solver = "cvode";
-    c->method = "default";
-    gw_solver_params sp = gw_solver_params_default();
-    /* 1e-12 on both: at the solver default 1e-10 the energy error of a 40-bead
-     * column is ~3e-8 (the absolute tolerance limits it); at 1e-12, ~1e-9. */
-    c->rtol = 1e-12;
-    c->atol = 1e-12;
-    c->max_steps = sp.max_steps;
-    int i = 0;
-    o[i++] = OPT_S("material", &c->material, "NAME", "bead material (steel, rigid, brass, aluminium, glass, pmma, pvc) [steel]");
-    o[i++] = OPT_D("radius", &c->radius, "R", "bead radius, m, in (0, 1] [4e-3]", 0, 1, 1);
-    o[i++] = OPT_S("wall-material", &c->wall_material, "NAME", "wall material (a half-space) [steel]");
-    o[i++] = OPT_S("sheet", &c->sheet, "NAME", "wall: a sheet of the paper's Table 2 with its fitted K_eff (none, brass, tape, pvc, pmma, cardboard2, beech, cardboard1, rubber)");
-    o[i++] = OPT_S("radii", &c->radii, "R,R..", "per-bead radii, m, bead 1 first (masses and contact k from the material)");
-    o[i++] = OPT_D("k", &c->k, "K", "bead-bead Hertz coefficient, N/m^1.5, in [1e3, 1e14] [from material, F.12]", GW_CHAIN_K_MIN, GW_CHAIN_K_MAX, 0);
-    o[i++] = OPT_D("kwall", &c->kwall, "K", "bead-wall Hertz coefficient, N/m^1.5, in [1e3, 1e14] [from materials, F.3]", GW_CHAIN_K_MIN, GW_CHAIN_K_MAX, 0);
-    o[i++] = OPT_D("mass", &c->mass, "M", "bead mass, kg, in (0, 1e3] [4/3 pi R^3 rho]", 0, 1e3, 1);
-    o[i++] = OPT_D("gravity", &c->gravity, "G", "gravity toward the wall, m/s^2 [0 = off]", 0, 1e4, 0);
-    o[i++] = OPT_S("damping", &c->damping, "MODEL", "none, kk (Kuwabara-Kono) or hc (Hunt-Crossley) [none]");
-    o[i++] = OPT_D("gamma", &c->gamma, "G", "Kuwabara-Kono constant of bead contacts, N s/m^1.5 [0]", 0, INFINITY, 0);
-    o[i++] = OPT_D("alpha", &c->alpha, "A", "Hunt-Crossley constant, s/m [0]", 0, INFINITY, 0);
-    o[i++] = OPT_D("restitution", &c->restitution, "E", "calibrate gamma/alpha so one bead on the wall rebounds with E", 0, 1, 1);
-    o[i++] = OPT_D("restitution-v", &c->restitution_v, "V", "impact velocity of that calibration, m/s [v_imp]", 0, 1e3, 1);
-    o[i++] = OPT_S("solver", &c->solver, "NAME", "cvode, arkode or rk4 [cvode]");
-    o[i++] = OPT_S("method", &c->method, "NAME", "cvode: bdf|adams; arkode: erk|dirk|imex [bdf / erk]");
-    o[i++] = OPT_D("rtol", &c->rtol, "R", "relative tolerance [1e-12]", GW_TOL_MIN, GW_TOL_MAX, 0);
-    o[i++] = OPT_D("atol", &c->atol, "A", "absolute tolerance in units of the overlap and velocity scales [1e-12]", GW_TOL_MIN, GW_TOL_MAX, 0);
-    o[i++] = OPT_D("dt", &c->dt, "DT", "RK4 step, s [T_c/400]; initial step for cvode/arkode", 0, 1, 0);
-    o[i++] = OPT_D("dt-max", &c->dt_max, "DT", "largest step, s [unlimited]", 0, 1, 0);
-    o[i++] = (gw_opt){.name = "max-steps", .kind = GW_OPT_LONG, .dest = &c->max_steps, .metavar = "N",
-                      .help = "internal steps allowed between outputs [1e7]", .lo = 1, .hi = 1e12};
-    o[i++] = OPT_D("t-max", &c->t_max, "T", "stop after T seconds [20 (n T_q + tau_1)]", 0, 1e6, 0);
-    o[i++] = OPT_D("dt-out", &c->dt_out, "DT", "sampling interval for traces, energy and F_max, s [tau_1/200]", 0, 1, 0);
-    o[i++] = OPT_D("energy-tol", &c->energy_tol, "E", "abort when the relative energy error exceeds E [off]", 0, INFINITY, 0);
-    o[i++] = (gw_opt){.name = "json", .kind = GW_OPT_FLAG, .dest = &c->json, .help = "print results as one JSON object on stdout"};
-    o[i++] = OPT_S("out", &c->out, "DIR", "write CSV (and HDF5) files into DIR");
+    for (size_t i = 0; i < NDEST; i++) {
+        const gw_param *p = gw_param_find(gw_chain_setup_params(), cli_dest[i].name);
+        void *dest = (char *)c + cli_dest[i].off;
+        gw_opt *x = &o[i];
+        *x = (gw_opt){.name = p->name, .dest = dest, .metavar = p->metavar, .help = p->help,
+                      .lo = p->min, .hi = p->max, .open_lo = p->open_min};
+        if (p->type == GW_PARAM_DOUBLE) {
+            x->kind = GW_OPT_DOUBLE;
+            *(double *)dest = p->def ? strtod(p->def, NULL) : 0;
+        } else if (p->type == GW_PARAM_LONG) {
+            x->kind = GW_OPT_LONG;
+            *(long *)dest = p->def ? strtol(p->def, NULL, 10) : 0;
+        } else { /* choices and the radii list: text, resolved by the table */
+            x->kind = GW_OPT_STRING;
+            *(const char **)dest = p->def;
+        }
+    }
+    o[NDEST] = (gw_opt){.name = "json", .kind = GW_OPT_FLAG, .dest = &c->json, .help = "print results as one JSON object on stdout"};
+    o[NDEST + 1] = (gw_opt){.name = "out", .kind = GW_OPT_STRING, .dest = &c->out, .metavar = "DIR",
+                            .help = "write CSV (and HDF5) files into DIR"};
+}
+
+/* "NAME: reason" from the library as "CMD --NAME: reason"; other messages as
+ * "CMD: message". */
+static int cli_error(const char *cmd, int rc, gw_err *err)
+{
+    char tmp[sizeof err->msg];
+    snprintf(tmp, sizeof tmp, "%s", err->msg);
+    const char *colon = strchr(tmp, ':');
+    int named = 0;
+    if (colon) {
+        char name[64];
+        size_t n = (size_t)(colon - tmp);
+        if (n < sizeof name) {
+            memcpy(name, tmp, n);
+            name[n] = '\0';
+            named = gw_param_find(gw_chain_setup_params(), name) && strcmp(name, "trace") != 0;
+        }
+    }
+    return gw_err_set(err, rc, named ? "%s --%s" : "%s: %s", cmd, tmp);
+}
+
+/* The raw options into a setup: given options and text values over the table's
+ * defaults (so an option not given keeps the library's default or "not given"). */
+static int cli_setup(const chain_cli *c, const gw_opt *opts, gw_chain_setup *s, gw_err *err)
+{
+    const gw_param *t = gw_chain_setup_params();
+    gw_chain_setup_init(s);
+    s->n = c->params.n;
+    s->vimp = c->params.v_imp;
+    for (size_t i = 0; i < NDEST; i++) {
+        const gw_param *p = gw_param_find(t, cli_dest[i].name);
+        const gw_opt *o = gw_cli_find(opts, cli_dest[i].name);
+        const void *src = (const char *)c + cli_dest[i].off;
+        void *dst = (char *)s + p->offset;
+        int rc = GW_OK;
+        if (p->type == GW_PARAM_DOUBLE) {
+            if (o->seen)
+                *(double *)dst = *(const double *)src;
+        } else if (p->type == GW_PARAM_LONG) {
+            if (o->seen)
+                *(long *)dst = *(const long *)src;
+        } else if (*(const char *const *)src) {
+            rc = gw_param_set(t, s, p->name, *(const char *const *)src, err);
+        }
+        if (rc != GW_OK)
+            return rc;
+    }
+    return GW_OK;
 }
 
 int chain_cli_resolve(chain_cli *c, const gw_opt *opts, const char *cmd, gw_err *err)
 {
-    int src = check_speeds(opts, cmd, err);
-    if (src != GW_OK)
-        return src;
-    if (!(c->params.v_imp > 0 && c->params.v_imp <= GW_CHAIN_VIMP_MAX))
-        return gw_err_set(err, GW_EINVAL, "%s --vimp: %g is outside (0, %g]", cmd, c->params.v_imp,
-                          GW_CHAIN_VIMP_MAX);
-    const gw_material *bm = gw_material_find(c->material);
-    if (!bm || isinf(bm->density))
-        return gw_err_set(err, GW_EINVAL, "%s --material: unknown or unusable bead material '%s' (known: %s; not rigid)",
-                          cmd, c->material, gw_material_names());
-    const gw_material *wm = gw_material_find(c->wall_material);
-    if (!wm)
-        return gw_err_set(err, GW_EINVAL, "%s --wall-material: unknown material '%s' (known: %s)",
-                          cmd, c->wall_material, gw_material_names());
-    gw_chain_params *p = &c->params;
-    int n = p->n;
-    double v = p->v_imp;
-    *p = gw_chain_params_default();
-    p->n = n;
-    p->v_imp = v;
-    p->radius = c->radius;
-    p->mass = gw_cli_find(opts, "mass")->seen ? c->mass
-                                               : 4.0 / 3.0 * M_PI * pow(c->radius, 3) * bm->density;
-    p->k = gw_cli_find(opts, "k")->seen ? c->k : gw_hertz_coefficient(c->radius, bm, c->radius, bm);
-    p->kwall = gw_cli_find(opts, "kwall")->seen ? c->kwall
-                                                 : gw_hertz_coefficient(c->radius, bm, INFINITY, wm);
-    if (c->sheet) {
-        const gw_sheet *sh = gw_sheet_find(c->sheet);
-        if (!sh)
-            return gw_err_set(err, GW_EINVAL, "%s --sheet: unknown sheet '%s' (none, brass, tape, pvc, pmma, cardboard2, beech, cardboard1, rubber)",
-                              cmd, c->sheet);
-        if (gw_cli_find(opts, "kwall")->seen)
-            return gw_err_set(err, GW_EINVAL, "%s --sheet: give either --sheet or --kwall", cmd);
-        p->kwall = gw_sheet_kwall(sh, p->mass);
+    int rc = check_speeds(opts, cmd, err);
+    if (rc != GW_OK)
+        return rc;
+    gw_chain_setup s;
+    gw_chain_resolved r;
+    memset(&r, 0, sizeof r);
+    chain_cli_free(c);
+    rc = cli_setup(c, opts, &s, err);
+    if (rc == GW_OK)
+        rc = gw_chain_setup_resolve(&s, &r, err);
+    if (rc == GW_OK && s.radii.n > 0) { /* the radii for the settings JSON */
+        c->radii_v = s.radii.v;
+        s.radii.v = NULL;
+        s.radii.n = 0;
     }
-    if (c->radii) {
-        int nr = 0;
-        chain_cli_free(c);
-        if (gw_parse_double_list_in(c->radii, "--radii", 0, 1, 1, &c->radii_v, &nr, err) != GW_OK) {
-            char tmp[sizeof err->msg];
-            snprintf(tmp, sizeof tmp, "%s", err->msg);
-            return gw_err_set(err, GW_EINVAL, "%s %s", cmd, tmp);
-        }
-        if (nr != n)
-            return gw_err_set(err, GW_EINVAL, "%s --radii: %d radii for %d beads", cmd, nr, n);
-        c->masses_v = malloc((size_t)nr * sizeof *c->masses_v);
-        c->kc_v = malloc((size_t)nr * sizeof *c->kc_v);
-        if (!c->masses_v || !c->kc_v)
-            return gw_err_set(err, GW_ENOMEM, "%s --radii: out of memory", cmd);
-        for (int i = 0; i < nr; i++) {
-            double r = c->radii_v[i];
-            if (!(r > 0))
-                return gw_err_set(err, GW_EINVAL, "%s --radii: radius %d is %g, must be > 0", cmd, i + 1, r);
-            c->masses_v[i] = 4.0 / 3.0 * M_PI * r * r * r * bm->density;
-            if (i > 0)
-                c->kc_v[i - 1] = gw_hertz_coefficient(c->radii_v[i - 1], bm, r, bm);
-        }
-        if (gw_cli_find(opts, "mass")->seen || gw_cli_find(opts, "k")->seen)
-            return gw_err_set(err, GW_EINVAL, "%s --radii: derives masses and k; drop --mass and --k", cmd);
-        p->masses = c->masses_v;
-        p->kc = n > 1 ? c->kc_v : NULL;
-        p->mass = c->masses_v[0];
-        p->radius = c->radii_v[0];
-        if (!gw_cli_find(opts, "kwall")->seen && !c->sheet)
-            p->kwall = gw_hertz_coefficient(p->radius, bm, INFINITY, wm);
-    }
-    if (isinf(p->kwall))
-        return gw_err_set(err, GW_EINVAL, "%s --wall-material: a rigid wall needs a deformable bead material", cmd);
-    p->gravity = c->gravity;
-    if (strcmp(c->damping, "none") == 0)
-        p->damping = GW_DAMP_NONE;
-    else if (strcmp(c->damping, "kk") == 0)
-        p->damping = GW_DAMP_KUWABARA_KONO;
-    else if (strcmp(c->damping, "hc") == 0)
-        p->damping = GW_DAMP_HUNT_CROSSLEY;
-    else
-        return gw_err_set(err, GW_EINVAL, "%s --damping: unknown model '%s' (none, kk, hc)", cmd, c->damping);
-    p->gamma = c->gamma;
-    p->alpha = c->alpha;
-    if ((src = check_no_effect(c, opts, cmd, err)) != GW_OK)
-        return src;
-    if ((src = gw_solver_tolerances_check(c->rtol, c->atol, "--rtol", "--atol", err)) != GW_OK) {
-        char tmp[sizeof err->msg];
-        snprintf(tmp, sizeof tmp, "%s", err->msg);
-        return gw_err_set(err, src, "%s %s", cmd, tmp);
-    }
-
-    gw_chain_run_opts *r = &c->run;
-    *r = gw_chain_run_opts_default();
-    r->solver = gw_solver_type_find(c->solver);
-    if (!r->solver || r->solver == gw_solver_verlet) /* (verlet: the layer's explicit DEM step) */
-        return gw_err_set(err, GW_EINVAL, "%s --solver: unknown solver '%s' for the column (cvode, arkode, "
-                          "rk4)", cmd, c->solver);
-    int method = gw_solver_method_find(c->method);
-    if (method < 0)
-        return gw_err_set(err, GW_EINVAL, "%s --method: unknown method '%s' (bdf, adams, erk, dirk, imex)", cmd, c->method);
-    int ok = method == GW_METHOD_DEFAULT ||
-             (r->solver == gw_solver_cvode && (method == GW_CVODE_BDF || method == GW_CVODE_ADAMS)) ||
-             (r->solver == gw_solver_arkode &&
-              (method == GW_ARKODE_ERK || method == GW_ARKODE_DIRK || method == GW_ARKODE_IMEX));
-    if (!ok)
-        return gw_err_set(err, GW_EINVAL, "%s --method: '%s' is not a method of solver %s (cvode: bdf, adams; arkode: erk, dirk, imex; rk4: none)",
-                          cmd, c->method, c->solver);
-    r->sp.method = method;
-    r->sp.rtol = c->rtol;
-    r->sp.atol = c->atol;
-    r->sp.dt = c->dt;
-    r->sp.dt_max = c->dt_max;
-    r->sp.max_steps = c->max_steps;
-    r->t_max = c->t_max;
-    r->dt_out = c->dt_out;
-    r->energy_tol = c->energy_tol;
-    int rc = gw_chain_params_validate(p, err);
-    if (rc == GW_OK && gw_cli_find(opts, "restitution")->seen) {
-        if (c->restitution >= 1)
-            return gw_err_set(err, GW_EINVAL, "%s --restitution: %g must be below 1", cmd, c->restitution);
-        if (p->damping == GW_DAMP_NONE)
-            return gw_err_set(err, GW_EINVAL, "%s --restitution: needs --damping kk or hc", cmd);
-        gw_chain_params q = *p;
-        if (c->restitution_v > 0)
-            q.v_imp = c->restitution_v;
-        double cst = 0;
-        rc = gw_chain_calibrate(&q, r, c->restitution, &cst, err);
-        if (rc == GW_OK) {
-            if (p->damping == GW_DAMP_HUNT_CROSSLEY)
-                p->alpha = c->alpha = cst;
-            else
-                p->gamma = c->gamma = cst;
-        }
-    }
-    if (rc != GW_OK) {
-        char tmp[sizeof err->msg];
-        snprintf(tmp, sizeof tmp, "%s", err->msg);
-        return gw_err_set(err, rc, "%s: %s", cmd, tmp);
-    }
+    gw_chain_setup_clear(&s);
+    c->masses_v = r.masses; /* owned by c from here (chain_cli_free) */
+    c->kc_v = r.kc;
+    if (rc != GW_OK)
+        return cli_error(cmd, rc, err);
+    c->params = r.params;
+    c->run = r.run;
+    c->gamma = r.params.gamma; /* calibrated by --restitution */
+    c->alpha = r.params.alpha;
     if (c->out) { /* before any work: a run that cannot write its results never starts */
         char name[96];
         snprintf(name, sizeof name, "%s --out", cmd);

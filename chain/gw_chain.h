@@ -237,6 +237,12 @@ int gw_chain_calibrate(const gw_chain_params *p, const gw_chain_run_opts *o,
 int gw_chain_sweep_n(const gw_chain_params *tmpl, const gw_chain_run_opts *o,
                      const double *v, int nv, int n_lo, int n_hi, int jobs,
                      int progress, gw_chain_result *res, gw_err *err);
+/* The same with progress reported to the caller (gw_progress_fn, may be NULL:
+ * nothing printed); a non-zero return from it stops the sweep (GW_ECANCELED). */
+int gw_chain_sweep_n_progress(const gw_chain_params *tmpl, const gw_chain_run_opts *o,
+                              const double *v, int nv, int n_lo, int n_hi, int jobs,
+                              gw_progress_fn progress, void *pctx, gw_chain_result *res,
+                              gw_err *err);
 
 /* ---- dispersion (chain_dispersion.c) ---- */
 

@@ -24,6 +24,7 @@ const char *gw_strerror(int status)
     case GW_EUNSUPPORTED: return "not supported";
     case GW_EENERGY: return "energy error above threshold";
     case GW_ELIMIT: return "step or time limit reached";
+    case GW_ECANCELED: return "canceled by the caller";
     default: return "unknown status";
     }
 }
@@ -31,6 +32,21 @@ const char *gw_strerror(int status)
 const char *gw_version(void)
 {
     return GW_VERSION;
+}
+
+int gw_version_major(void)
+{
+    return GW_VERSION_MAJOR;
+}
+
+int gw_version_minor(void)
+{
+    return GW_VERSION_MINOR;
+}
+
+int gw_version_patch(void)
+{
+    return GW_VERSION_PATCH;
 }
 
 int gw_err_set(gw_err *err, int status, const char *fmt, ...)

@@ -26,8 +26,15 @@ enum {
     GW_EFORMAT = -5,      /* malformed input file */
     GW_EUNSUPPORTED = -6, /* option not available in this backend or build */
     GW_EENERGY = -7,      /* energy monitor threshold exceeded */
-    GW_ELIMIT = -8        /* a run hit its time or step limit before finishing */
+    GW_ELIMIT = -8,       /* a run hit its time or step limit before finishing */
+    GW_ECANCELED = -9     /* the caller's progress callback asked to stop */
 };
+
+/* Progress of a long call: done of total units (cases, collisions) finished.
+ * Called from the calling thread or a worker thread, one call at a time (the
+ * library serialises them); return 0 to go on, non-zero to stop the call, which
+ * then returns GW_ECANCELED after the units under way have finished. */
+typedef int (*gw_progress_fn)(void *ctx, long done, long total);
 
 /* Message for a status code (static string, never NULL). */
 const char *gw_strerror(int status);
@@ -35,8 +42,13 @@ const char *gw_strerror(int status);
 /* Monotonic wall clock in milliseconds (for run-time reports). */
 double gw_clock_ms(void);
 
-/* Library version string, "MAJOR.MINOR.PATCH". */
+/* Library version string, "MAJOR.MINOR.PATCH", and its three numbers: the version
+ * of the library linked at run time (GW_VERSION in gw_version.h is the one a
+ * program was compiled against). */
 const char *gw_version(void);
+int gw_version_major(void);
+int gw_version_minor(void);
+int gw_version_patch(void);
 
 /* One line of error text, filled by calls that validate input. */
 typedef struct gw_err {

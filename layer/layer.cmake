@@ -1,5 +1,5 @@
 # The 2D granular layer (issue 4): Hertz-Mindlin discs, pluviation, block impact.
-add_library(gw_layer STATIC
+add_library(gw_layer_obj OBJECT
   ${CMAKE_CURRENT_LIST_DIR}/layer_model.c
   ${CMAKE_CURRENT_LIST_DIR}/layer_clumps.c
   ${CMAKE_CURRENT_LIST_DIR}/layer_clump_check.c
@@ -19,6 +19,11 @@ add_library(gw_layer STATIC
   ${CMAKE_CURRENT_LIST_DIR}/layer_stats.c
   ${CMAKE_CURRENT_LIST_DIR}/layer_stats_table.c
   ${CMAKE_CURRENT_LIST_DIR}/layer_stats_diagram.c
-  ${CMAKE_CURRENT_LIST_DIR}/layer_stats_out.c)
-target_include_directories(gw_layer PUBLIC ${CMAKE_CURRENT_SOURCE_DIR})
-target_link_libraries(gw_layer PUBLIC gw_common)
+  ${CMAKE_CURRENT_LIST_DIR}/layer_stats_out.c
+  ${CMAKE_CURRENT_LIST_DIR}/layer_setup.c
+  ${CMAKE_CURRENT_LIST_DIR}/layer_make_study.c)
+gw_library_objects(gw_layer_obj)
+target_include_directories(gw_layer_obj PUBLIC ${CMAKE_CURRENT_SOURCE_DIR})
+target_link_libraries(gw_layer_obj PUBLIC gw_common_obj)
+add_library(gw_layer STATIC)
+target_link_libraries(gw_layer PUBLIC gw_layer_obj gw_common)

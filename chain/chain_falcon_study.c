@@ -1,0 +1,306 @@
+/*
+ * chain_falcon_study.c: the rigid-wall study of Falcon et al. (1998) as a
+ * library call (gw_chain_study.h): one collision for every N in [n_lo, n_hi]
+ * at each impact velocity (given directly, or from drop heights h in mm:
+ * v = sqrt(2 g h), g = 9.81 m/s^2), then per velocity
+ *   tau_N = T_q (N - 1) + tau_1            (F.4, GSL least squares)
+ *   wave speed 4R/T_q                      (F.6)
+ *   against 2 (k/m)^(2/5) R v^(1/5)        (F.27), T_q = 2 (m/k)^(2/5) v^(-1/5) (F.17)
+ * F_max over N (flat on a rigid wall, K > K_c, F.22), the mean period P of the
+ * wall force (N >= 10), the closed forms of one bead (F.2, F.13).
+ * The solver by accuracy target: RK4 with events as roots and dt = T_c/M,
+ * M = gw_chain_rk4_steps_per_tc(accuracy) (a measured convergence study).
+ * SI units (heights in mm).
+ */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "chain_setup_rows.h"
+
+#define G_EARTH 9.81
+
+void gw_chain_falcon_analyse(const gw_chain_params *p, double v, const gw_chain_result *res, int n_lo,
+                             int n_hi, gw_chain_falcon_fit *a)
+{
+    int count = n_hi - n_lo + 1, c20 = 0, np = 0;
+    double *x = calloc(2 * (size_t)count, sizeof *x), *y = x ? x + count : NULL;
+    memset(a, 0, sizeof *a);
+    a->f_min = INFINITY;
+    a->f_max = -INFINITY;
+    for (int n = n_lo; n <= n_hi; n++) {
+        const gw_chain_result *r = &res[n - n_lo];
+        int k = n - n_lo;
+        if (x) {
+            x[k] = n - 1;
+            y[k] = r->tau_n;
+        }
+        if (n <= 20)
+            c20++;
+        a->f_mean += r->f_max / count;
+        a->tau_max_mean += r->tau_max / count;
+        a->f_min = fmin(a->f_min, r->f_max);
+        a->f_max = fmax(a->f_max, r->f_max);
+        if (n >= 10 && r->n_maxima >= 2) {
+            a->period_mean += r->period;
+            np++;
+        }
+    }
+    a->period_mean = np ? a->period_mean / np : NAN;
+    a->fit.c1 = a->fit20.c1 = NAN;
+    if (x && count >= 2)
+        gw_fit_linear(x, y, count, &a->fit);
+    if (x && c20 >= 2)
+        gw_fit_linear(x, y, c20, &a->fit20);
+    free(x);
+    a->t_q_theory = gw_chain_tq_theory(p->mass, p->k, v);
+    a->tau_1_theory = gw_chain_tau1(p->mass, p->kwall, v);
+    a->f_max_1_theory = gw_chain_fmax1(p->mass, p->kwall, v);
+    a->speed = 4 * p->radius / a->fit.c1;
+    a->speed20 = 4 * p->radius / a->fit20.c1;
+    a->speed_theory = 4 * p->radius / a->t_q_theory;
+}
+
+/* ---- the table of the inputs ---- */
+
+#define OFF(f) offsetof(gw_chain_falcon_setup, col.f)
+#define ROW(nm, ty, f, un, lo, hi, op, df, mv, hl)                                             \
+    {.name = nm, .type = ty, .offset = OFF(f), .unit = un, .min = lo, .max = hi, .open_min = op, \
+     .def = df, .metavar = mv, .help = hl}
+#define CHOICE(nm, f, ch, df, mv, hl)                                                          \
+    {.name = nm, .type = GW_PARAM_CHOICE, .offset = OFF(f), .unit = "", .def = df, .choices = ch, \
+     .metavar = mv, .help = hl}
+#define OWN(f) offsetof(gw_chain_falcon_setup, f)
+
+static const gw_param falcon_params[] = {
+    {.name = "vimp", .type = GW_PARAM_LIST, .offset = OWN(vimp), .unit = "m/s", .min = 0, .max = GW_CHAIN_VIMP_MAX,
+     .open_min = 1, .def = "0.3", .metavar = "V,V..", .help = "impact velocities, m/s [0.3]"},
+    {.name = "heights", .type = GW_PARAM_LIST, .offset = OWN(heights), .unit = "mm", .min = 0,
+     .max = GW_CHAIN_VIMP_MAX * GW_CHAIN_VIMP_MAX / (2 * G_EARTH * 1e-3), .open_min = 1, .def = "1.9,2.9,3.1,5.1",
+     .metavar = "H,H..", .help = "drop heights, mm, v = sqrt(2 g h) ['none' to skip] [1.9,2.9,3.1,5.1]"},
+    {.name = "n", .type = GW_PARAM_RANGE, .offset = OWN(n), .unit = "", .min = 1, .max = 100000, .def = "1:40",
+     .metavar = "A:B", .help = "column sizes [1:40]"},
+    {.name = "accuracy", .type = GW_PARAM_DOUBLE, .offset = OWN(accuracy), .unit = "", .min = 0, .max = 1e-2,
+     .def = "1e-6", .metavar = "A",
+     .help = "relative accuracy of F_max and tau_N when no solver option is given: RK4, dt = T_c/M with M "
+             "from a measured convergence study [1e-6]; 0: the solver options as given"},
+    {.name = "jobs", .type = GW_PARAM_LONG, .offset = OWN(jobs), .unit = "", .min = 0, .max = 1024, .def = "0",
+     .metavar = "J", .help = "threads [0 = one per CPU]"},
+    GW_CHAIN_MODEL_ROWS
+    GW_PARAM_END};
+
+const gw_param *gw_chain_falcon_setup_params(void)
+{
+    return falcon_params;
+}
+
+int gw_chain_falcon_setup_init(gw_chain_falcon_setup *s)
+{
+    memset(s, 0, sizeof *s);
+    int rc = gw_chain_setup_init(&s->col);
+    return rc == GW_OK ? gw_param_init(falcon_params, s, NULL) : rc;
+}
+
+void gw_chain_falcon_setup_clear(gw_chain_falcon_setup *s)
+{
+    gw_param_clear(falcon_params, s);
+    gw_chain_setup_clear(&s->col);
+}
+
+/* ---- the table of the results ---- */
+
+#undef OFF
+#define OFF(f) offsetof(gw_chain_falcon_outcome, f)
+#define RA(nm, f, un, r, c, hl) \
+    {.name = nm, .type = GW_PARAM_DARRAY, .offset = OFF(f), .unit = un, .rows = r, .cols = c, .help = hl}
+#define CASE(nm, f, un, hl) RA(nm, f, un, "nv", "nn", hl " [velocity, N]")
+#define VEL(nm, f, un, hl) RA(nm, f, un, "nv", NULL, hl " [velocity]")
+
+static const gw_param falcon_fields[] = {
+    {.name = "nv", .type = GW_PARAM_INT, .offset = OFF(nv), .unit = "", .help = "impact velocities"},
+    {.name = "nn", .type = GW_PARAM_INT, .offset = OFF(nn), .unit = "", .help = "column sizes"},
+    {.name = "ncase", .type = GW_PARAM_INT, .offset = OFF(ncase), .unit = "", .help = "collisions"},
+    {.name = "k_c", .type = GW_PARAM_DOUBLE, .offset = OFF(k_c), .unit = "N/m^1.5", .help = "critical wall coefficient K_c (F.22)"},
+    {.name = "rigid", .type = GW_PARAM_INT, .offset = OFF(rigid), .unit = "", .help = "1: K > K_c (rigid wall)"},
+    {.name = "accuracy", .type = GW_PARAM_DOUBLE, .offset = OFF(accuracy), .unit = "",
+     .help = "the accuracy target the solver was chosen by (0: the solver options as given)"},
+    {.name = "wall_time_s", .type = GW_PARAM_DOUBLE, .offset = OFF(wall_time_s), .unit = "s", .help = "wall-clock time of the collisions"},
+    VEL("v_imp", v_imp, "m/s", "impact velocity"),
+    VEL("h_mm", h_mm, "mm", "drop height (NaN: velocity given directly)"),
+    RA("n", n, "", "nn", NULL, "column sizes N"),
+    CASE("f_max", f_max, "N", "largest wall force"),
+    CASE("tau_max", tau_max, "s", "time of f_max"),
+    CASE("tau_n", tau_n, "s", "contact time tau_N"),
+    CASE("period", period, "s", "mean spacing of wall-force maxima"),
+    CASE("eps_eff", eps_eff, "", "momentum restitution (F.7)"),
+    CASE("eps_col", eps_col, "", "energy restitution (F.30)"),
+    CASE("e_rel_over_e_k", e_rel_over_e_k, "", "E_rel/E_K at tau_N (F.20)"),
+    CASE("n_s", n_s, "", "beads leaving from the top before the cluster"),
+    CASE("energy_error", energy_error, "", "max relative energy error"),
+    VEL("t_q", t_q, "s", "T_q: slope of tau_N against N - 1 (F.4), all N"),
+    VEL("t_q_err", t_q_err, "s", "its standard error"),
+    VEL("tau_fit_intercept", tau_fit_intercept, "s", "intercept of that line"),
+    VEL("tau_fit_intercept_err", tau_fit_intercept_err, "s", "its standard error"),
+    VEL("r2", r2, "", "coefficient of determination of the line"),
+    VEL("tau_fit_max_rel_resid", tau_fit_max_rel_resid, "", "largest relative residual"),
+    VEL("t_q_n20", t_q_n20, "s", "T_q over N <= 20"),
+    VEL("t_q_n20_err", t_q_n20_err, "s", "its standard error"),
+    VEL("wave_speed", wave_speed, "m/s", "4R/T_q (F.6)"),
+    VEL("wave_speed_n20", wave_speed_n20, "m/s", "4R/T_q over N <= 20"),
+    VEL("wave_speed_theory", wave_speed_theory, "m/s", "2 (k/m)^(2/5) R v^(1/5) (F.27)"),
+    VEL("t_q_theory", t_q_theory, "s", "2 (m/k)^(2/5) v^(-1/5) (F.17, F.29)"),
+    VEL("tau_1_theory", tau_1_theory, "s", "one bead's contact time (F.2)"),
+    VEL("f_max_1_theory", f_max_1_theory, "N", "one bead's largest force (F.13)"),
+    VEL("f_max_mean", f_max_mean, "N", "F_max averaged over N"),
+    VEL("f_max_min", f_max_min, "N", "smallest F_max over N"),
+    VEL("f_max_max", f_max_max, "N", "largest F_max over N"),
+    VEL("tau_max_mean", tau_max_mean, "s", "tau_max averaged over N"),
+    VEL("period_mean", period_mean, "s", "P averaged over N >= 10"),
+    GW_PARAM_END};
+
+const gw_param *gw_chain_falcon_outcome_fields(void)
+{
+    return falcon_fields;
+}
+
+void gw_chain_falcon_outcome_free(gw_chain_falcon_outcome *out)
+{
+    free(out->v_imp); /* one block holds every array */
+    memset(out, 0, sizeof *out);
+}
+
+/* Point out's arrays into one block of doubles. */
+static int alloc_outcome(gw_chain_falcon_outcome *o, int nv, int nn, gw_err *err)
+{
+    double **vel[] = {&o->v_imp, &o->h_mm, &o->t_q, &o->t_q_err, &o->tau_fit_intercept,
+                      &o->tau_fit_intercept_err, &o->r2, &o->tau_fit_max_rel_resid, &o->t_q_n20,
+                      &o->t_q_n20_err, &o->wave_speed, &o->wave_speed_n20, &o->wave_speed_theory,
+                      &o->t_q_theory, &o->tau_1_theory, &o->f_max_1_theory, &o->f_max_mean, &o->f_max_min,
+                      &o->f_max_max, &o->tau_max_mean, &o->period_mean};
+    double **cas[] = {&o->f_max, &o->tau_max, &o->tau_n, &o->period, &o->eps_eff, &o->eps_col,
+                      &o->e_rel_over_e_k, &o->n_s, &o->energy_error};
+    const size_t nvel = sizeof vel / sizeof vel[0], ncas = sizeof cas / sizeof cas[0];
+    o->nv = nv;
+    o->nn = nn;
+    o->ncase = nv * nn;
+    double *b = calloc(nvel * (size_t)nv + ncas * (size_t)o->ncase + (size_t)nn, sizeof *b);
+    if (!b)
+        return gw_err_set(err, GW_ENOMEM, "falcon: out of memory for %d collisions", o->ncase);
+    for (size_t i = 0; i < nvel; i++, b += nv)
+        *vel[i] = b; /* v_imp first: the block's start */
+    for (size_t i = 0; i < ncas; i++, b += o->ncase)
+        *cas[i] = b;
+    o->n = b;
+    return GW_OK;
+}
+
+/* The solver by accuracy target, when col's solver rows are all at their
+ * defaults and the study's range covers the column (undamped, no gravity,
+ * N <= 40); otherwise col's solver as resolved, and *used = 0. */
+static int pick_solver(const gw_chain_falcon_setup *s, gw_chain_resolved *r, double vmax, double *used,
+                       gw_err *err)
+{
+    gw_chain_setup d;
+    gw_chain_setup_init(&d);
+    int at_defaults = s->col.solver == d.solver && s->col.method == d.method && s->col.rtol == d.rtol &&
+                      s->col.atol == d.atol && s->col.dt == d.dt;
+    gw_chain_setup_clear(&d);
+    *used = 0;
+    if (!(s->accuracy > 0) || !at_defaults || r->params.damping != GW_DAMP_NONE || r->params.gravity != 0 ||
+        s->n[1] > 40)
+        return GW_OK;
+    int m = gw_chain_rk4_steps_per_tc(s->accuracy);
+    if (m <= 0)
+        return gw_err_set(err, GW_EINVAL, "accuracy: %g outside [1e-9, 1e-2]", s->accuracy);
+    r->run.solver = gw_solver_rk4;
+    r->run.sp.method = GW_METHOD_DEFAULT;
+    r->run.steps_per_tc = m;
+    if (s->col.dt_out == 0)
+        r->run.dt_out = gw_chain_tau1(r->params.mass, r->params.kwall, vmax) / 10;
+    *used = s->accuracy;
+    return GW_OK;
+}
+
+int gw_chain_falcon_run(const gw_chain_falcon_setup *s, gw_progress_fn progress, void *pctx,
+                        gw_chain_falcon_outcome *out, gw_err *err)
+{
+    memset(out, 0, sizeof *out);
+    int rc = gw_param_check(falcon_params, s, err);
+    if (rc != GW_OK)
+        return rc;
+    if (s->col.radii.n > 0)
+        return gw_err_set(err, GW_EINVAL, "radii: per-bead radii need a fixed N (use the chain study)");
+    int nv = s->vimp.n + s->heights.n, nn = (int)(s->n[1] - s->n[0] + 1);
+    if (nv == 0)
+        return gw_err_set(err, GW_EINVAL, "vimp: no impact velocity (vimp and heights both empty)");
+    if ((rc = alloc_outcome(out, nv, nn, err)) != GW_OK)
+        return rc;
+    double vmax = 0;
+    for (int i = 0; i < nv; i++) {
+        int is_h = i >= s->vimp.n;
+        out->h_mm[i] = is_h ? s->heights.v[i - s->vimp.n] : NAN;
+        out->v_imp[i] = is_h ? sqrt(2 * G_EARTH * out->h_mm[i] * 1e-3) : s->vimp.v[i];
+        vmax = fmax(vmax, out->v_imp[i]);
+    }
+    for (int k = 0; k < nn; k++)
+        out->n[k] = (double)(s->n[0] + k);
+    gw_chain_setup col = s->col; /* shallow: n and vimp of the first case, no radii */
+    col.n = s->n[0];
+    col.vimp = out->v_imp[0];
+    gw_chain_resolved r;
+    gw_chain_result *res = calloc((size_t)out->ncase, sizeof *res);
+    rc = res ? gw_chain_setup_resolve(&col, &r, err) : gw_err_set(err, GW_ENOMEM, "falcon: out of memory");
+    if (rc == GW_OK)
+        rc = pick_solver(s, &r, vmax, &out->accuracy, err);
+    double t0 = gw_clock_ms();
+    if (rc == GW_OK)
+        rc = gw_chain_sweep_n_progress(&r.params, &r.run, out->v_imp, nv, (int)s->n[0], (int)s->n[1],
+                                       (int)s->jobs, progress, pctx, res, err);
+    out->wall_time_s = (gw_clock_ms() - t0) / 1e3;
+    for (int iv = 0; rc == GW_OK && iv < nv; iv++) {
+        gw_chain_falcon_fit a;
+        const gw_chain_result *rv = &res[iv * nn];
+        gw_chain_falcon_analyse(&r.params, out->v_imp[iv], rv, (int)s->n[0], (int)s->n[1], &a);
+        for (int k = 0; k < nn; k++) {
+            int c = iv * nn + k;
+            out->f_max[c] = rv[k].f_max;
+            out->tau_max[c] = rv[k].tau_max;
+            out->tau_n[c] = rv[k].tau_n;
+            out->period[c] = rv[k].period;
+            out->eps_eff[c] = rv[k].eps_eff;
+            out->eps_col[c] = rv[k].eps_col;
+            out->e_rel_over_e_k[c] = rv[k].e_rel_over_e_k;
+            out->n_s[c] = rv[k].n_s;
+            out->energy_error[c] = rv[k].energy_error;
+        }
+        out->t_q[iv] = a.fit.c1;
+        out->t_q_err[iv] = a.fit.c1_err;
+        out->tau_fit_intercept[iv] = a.fit.c0;
+        out->tau_fit_intercept_err[iv] = a.fit.c0_err;
+        out->r2[iv] = a.fit.r2;
+        out->tau_fit_max_rel_resid[iv] = a.fit.max_rel_resid;
+        out->t_q_n20[iv] = a.fit20.c1;
+        out->t_q_n20_err[iv] = a.fit20.c1_err;
+        out->wave_speed[iv] = a.speed;
+        out->wave_speed_n20[iv] = a.speed20;
+        out->wave_speed_theory[iv] = a.speed_theory;
+        out->t_q_theory[iv] = a.t_q_theory;
+        out->tau_1_theory[iv] = a.tau_1_theory;
+        out->f_max_1_theory[iv] = a.f_max_1_theory;
+        out->f_max_mean[iv] = a.f_mean;
+        out->f_max_min[iv] = a.f_min;
+        out->f_max_max[iv] = a.f_max;
+        out->tau_max_mean[iv] = a.tau_max_mean;
+        out->period_mean[iv] = a.period_mean;
+    }
+    if (rc == GW_OK) {
+        out->k_c = gw_chain_kc(r.params.k);
+        out->rigid = r.params.kwall > out->k_c;
+    }
+    for (int i = 0; res && i < out->ncase; i++)
+        gw_chain_result_free(&res[i]);
+    free(res);
+    if (res)
+        gw_chain_resolved_free(&r);
+    return rc;
+}

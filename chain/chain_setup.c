@@ -1,0 +1,208 @@
+/*
+ * chain_setup.c: the inputs of one column collision described once
+ * (gw_chain_study.h): the table of gw_chain_setup, and its resolution into the
+ * model. Coefficients come from the materials unless given directly:
+ *   bead-bead k = (sqrt(2R)/3) E/(1 - nu^2) for equal beads (F.12),
+ *   bead-wall K = (4 sqrt(R)/3) [(1-nu_s^2)/E_s + (1-nu_p^2)/E_p]^(-1) (F.3),
+ *   mass m = (4/3) pi R^3 rho,
+ * a sheet of Table 2 gives K_eff from its measured tau_max(N = 1) (F.2, F.21),
+ * and damping constants can be calibrated to a one-bead restitution (physics.md
+ * 1.5). SI units: m, kg, s, N/m^1.5.
+ */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "chain_setup_rows.h"
+#include "gw_chain_study.h"
+
+#define OFF(f) offsetof(gw_chain_setup, f)
+#define ROW(nm, ty, f, un, lo, hi, op, df, mv, hl)                                             \
+    {.name = nm, .type = ty, .offset = OFF(f), .unit = un, .min = lo, .max = hi, .open_min = op, \
+     .def = df, .metavar = mv, .help = hl}
+#define CHOICE(nm, f, ch, df, mv, hl)                                                          \
+    {.name = nm, .type = GW_PARAM_CHOICE, .offset = OFF(f), .unit = "", .def = df, .choices = ch, \
+     .metavar = mv, .help = hl}
+
+
+static const gw_param setup_params[] = {
+    ROW("n", GW_PARAM_LONG, n, "", 1, 50000000, 0, "1", "N", "number of beads [1]"),
+    ROW("vimp", GW_PARAM_DOUBLE, vimp, "m/s", 0, GW_CHAIN_VIMP_MAX, 1, "0.3", "V", "impact velocity, m/s [0.3]"),
+    GW_CHAIN_MODEL_ROWS
+    ROW("trace", GW_PARAM_FLAG, trace, "", 0, 1, 0, "0", NULL,
+        "library: keep the wall force and the bead series (t, f_wall, x, v) [0]"),
+    GW_PARAM_END};
+
+const gw_param *gw_chain_setup_params(void)
+{
+    return setup_params;
+}
+
+int gw_chain_setup_init(gw_chain_setup *s)
+{
+    memset(s, 0, sizeof *s);
+    return gw_param_init(setup_params, s, NULL);
+}
+
+void gw_chain_setup_clear(gw_chain_setup *s)
+{
+    gw_param_clear(setup_params, s);
+}
+
+void gw_chain_resolved_free(gw_chain_resolved *r)
+{
+    free(r->masses);
+    free(r->kc);
+    r->masses = r->kc = NULL;
+    r->params.masses = r->params.kc = NULL;
+}
+
+/* the name of a choice row's value ("" when not given) */
+static const char *choice(const gw_chain_setup *s, const char *row, char *buf, size_t n)
+{
+    if (gw_param_format(gw_param_find(setup_params, row), s, buf, n) < 0)
+        buf[0] = '\0';
+    return buf;
+}
+
+/* Masses and coefficients from the materials, the sheet and the radii. */
+static int resolve_model(const gw_chain_setup *s, gw_chain_resolved *r, gw_err *err)
+{
+    char name[32];
+    gw_chain_params *p = &r->params;
+    const gw_material *bm = gw_material_find(choice(s, "material", name, sizeof name));
+    if (!bm || isinf(bm->density))
+        return gw_err_set(err, GW_EINVAL, "material: unknown or unusable bead material '%s' (known: %s; not rigid)",
+                          name, gw_material_names());
+    const gw_material *wm = gw_material_find(choice(s, "wall-material", name, sizeof name));
+    if (!wm)
+        return gw_err_set(err, GW_EINVAL, "wall-material: unknown material '%s' (known: %s)", name,
+                          gw_material_names());
+    p->radius = s->radius;
+    p->mass = isnan(s->mass) ? 4.0 / 3.0 * M_PI * pow(s->radius, 3) * bm->density : s->mass;
+    p->k = isnan(s->k) ? gw_hertz_coefficient(s->radius, bm, s->radius, bm) : s->k;
+    p->kwall = isnan(s->kwall) ? gw_hertz_coefficient(s->radius, bm, INFINITY, wm) : s->kwall;
+    if (s->sheet >= 0) {
+        const gw_sheet *sh = gw_sheet_find(choice(s, "sheet", name, sizeof name));
+        if (!sh)
+            return gw_err_set(err, GW_EINVAL, "sheet: unknown sheet '%s' (%s)", name, SHEETS);
+        if (!isnan(s->kwall))
+            return gw_err_set(err, GW_EINVAL, "sheet: give either sheet or kwall");
+        p->kwall = gw_sheet_kwall(sh, p->mass);
+    }
+    const int n = p->n;
+    if (s->radii.n > 0) {
+        if (s->radii.n != n)
+            return gw_err_set(err, GW_EINVAL, "radii: %d radii for %d beads", s->radii.n, n);
+        r->masses = malloc((size_t)n * sizeof *r->masses);
+        r->kc = malloc((size_t)n * sizeof *r->kc);
+        if (!r->masses || !r->kc)
+            return gw_err_set(err, GW_ENOMEM, "radii: out of memory");
+        for (int i = 0; i < n; i++) {
+            double ri = s->radii.v[i];
+            if (!(ri > 0))
+                return gw_err_set(err, GW_EINVAL, "radii: radius %d is %g, must be > 0", i + 1, ri);
+            r->masses[i] = 4.0 / 3.0 * M_PI * ri * ri * ri * bm->density;
+            if (i > 0)
+                r->kc[i - 1] = gw_hertz_coefficient(s->radii.v[i - 1], bm, ri, bm);
+        }
+        if (!isnan(s->mass) || !isnan(s->k))
+            return gw_err_set(err, GW_EINVAL, "radii: derives masses and k; drop mass and k");
+        p->masses = r->masses;
+        p->kc = n > 1 ? r->kc : NULL;
+        p->mass = r->masses[0];
+        p->radius = s->radii.v[0];
+        if (isnan(s->kwall) && s->sheet < 0)
+            p->kwall = gw_hertz_coefficient(p->radius, bm, INFINITY, wm);
+    }
+    if (isinf(p->kwall))
+        return gw_err_set(err, GW_EINVAL, "wall-material: a rigid wall needs a deformable bead material");
+    return GW_OK;
+}
+
+/* Damping options that would have no effect. */
+static int check_damping(const gw_chain_setup *s, gw_err *err)
+{
+    int restitution = !isnan(s->restitution);
+    if (!isnan(s->gamma)) {
+        if (s->damping != GW_DAMP_KUWABARA_KONO)
+            return gw_err_set(err, GW_EINVAL, "gamma: has no effect without damping kk");
+        if (restitution)
+            return gw_err_set(err, GW_EINVAL, "gamma: restitution sets gamma; give one of them");
+    }
+    if (!isnan(s->alpha)) {
+        if (s->damping != GW_DAMP_HUNT_CROSSLEY)
+            return gw_err_set(err, GW_EINVAL, "alpha: has no effect without damping hc");
+        if (restitution)
+            return gw_err_set(err, GW_EINVAL, "alpha: restitution sets alpha; give one of them");
+    }
+    if (!isnan(s->restitution_v) && !restitution)
+        return gw_err_set(err, GW_EINVAL, "restitution-v: has no effect without restitution");
+    return GW_OK;
+}
+
+static int resolve_run(const gw_chain_setup *s, gw_chain_run_opts *o, gw_err *err)
+{
+    char sname[16], mname[16];
+    *o = gw_chain_run_opts_default();
+    o->solver = gw_solver_type_find(choice(s, "solver", sname, sizeof sname));
+    int method = gw_solver_method_find(choice(s, "method", mname, sizeof mname));
+    if (!o->solver || method < 0) /* the table's choices are names the solver layer knows */
+        return gw_err_set(err, GW_EINVAL, "solver: unknown solver '%s' or method '%s'", sname, mname);
+    int ok = method == GW_METHOD_DEFAULT ||
+             (o->solver == gw_solver_cvode && (method == GW_CVODE_BDF || method == GW_CVODE_ADAMS)) ||
+             (o->solver == gw_solver_arkode &&
+              (method == GW_ARKODE_ERK || method == GW_ARKODE_DIRK || method == GW_ARKODE_IMEX));
+    if (!ok)
+        return gw_err_set(err, GW_EINVAL, "method: '%s' is not a method of solver %s (cvode: bdf, adams; "
+                          "arkode: erk, dirk, imex; rk4: none)", mname, sname);
+    o->sp.method = method;
+    o->sp.rtol = s->rtol;
+    o->sp.atol = s->atol;
+    o->sp.dt = s->dt;
+    o->sp.dt_max = s->dt_max;
+    o->sp.max_steps = s->max_steps;
+    o->t_max = s->t_max;
+    o->dt_out = s->dt_out;
+    o->energy_tol = s->energy_tol;
+    return GW_OK;
+}
+
+int gw_chain_setup_resolve(const gw_chain_setup *s, gw_chain_resolved *r, gw_err *err)
+{
+    memset(r, 0, sizeof *r);
+    int rc = gw_param_check(setup_params, s, err);
+    if (rc != GW_OK)
+        return rc;
+    gw_chain_params *p = &r->params;
+    *p = gw_chain_params_default();
+    p->n = (int)s->n;
+    p->v_imp = s->vimp;
+    if ((rc = resolve_model(s, r, err)) != GW_OK)
+        return rc;
+    p->gravity = s->gravity;
+    p->damping = (gw_chain_damping)s->damping;
+    p->gamma = isnan(s->gamma) ? 0 : s->gamma;
+    p->alpha = isnan(s->alpha) ? 0 : s->alpha;
+    if ((rc = check_damping(s, err)) != GW_OK ||
+        (rc = gw_solver_tolerances_check(s->rtol, s->atol, "rtol", "atol", err)) != GW_OK ||
+        (rc = resolve_run(s, &r->run, err)) != GW_OK || (rc = gw_chain_params_validate(p, err)) != GW_OK)
+        return rc;
+    if (!isnan(s->restitution)) {
+        if (s->restitution >= 1)
+            return gw_err_set(err, GW_EINVAL, "restitution: %g must be below 1", s->restitution);
+        if (p->damping == GW_DAMP_NONE)
+            return gw_err_set(err, GW_EINVAL, "restitution: needs damping kk or hc");
+        gw_chain_params q = *p;
+        if (!isnan(s->restitution_v))
+            q.v_imp = s->restitution_v;
+        double cst = 0;
+        if ((rc = gw_chain_calibrate(&q, &r->run, s->restitution, &cst, err)) != GW_OK)
+            return rc;
+        if (p->damping == GW_DAMP_HUNT_CROSSLEY)
+            p->alpha = cst;
+        else
+            p->gamma = cst;
+    }
+    return GW_OK;
+}

@@ -1,0 +1,61 @@
+/*
+ * chain_setup_rows.h (private to chain/): the rows of a column's model and
+ * solver parameters (gw_chain_study.h), written once and expanded into every
+ * table that holds a gw_chain_setup: gw_chain_setup_params (chain_setup.c)
+ * and the falcon study's table (chain_falcon_study.c). The includer defines
+ * OFF(field) (the field's offset in its struct), ROW and CHOICE. Units SI.
+ */
+#ifndef GW_CHAIN_SETUP_ROWS_H
+#define GW_CHAIN_SETUP_ROWS_H
+
+#include "gw_chain_study.h"
+
+#define MATERIALS "steel,rigid,brass,aluminium,glass,pmma,pvc"
+#define SHEETS "none,brass,tape,pvc,pmma,cardboard2,beech,cardboard1,rubber"
+
+/* The order of the damping choices is that of gw_chain_damping. */
+_Static_assert(GW_DAMP_NONE == 0 && GW_DAMP_KUWABARA_KONO == 1 && GW_DAMP_HUNT_CROSSLEY == 2,
+               "damping choices none,kk,hc follow gw_chain_damping");
+
+/* material .. energy-tol: the options every chain command shares */
+#define GW_CHAIN_MODEL_ROWS \
+    CHOICE("material", material, MATERIALS, "steel", "NAME", \
+           "bead material (steel, rigid, brass, aluminium, glass, pmma, pvc) [steel]"), \
+    ROW("radius", GW_PARAM_DOUBLE, radius, "m", 0, 1, 1, "4e-3", "R", "bead radius, m, in (0, 1] [4e-3]"), \
+    CHOICE("wall-material", wall_material, MATERIALS, "steel", "NAME", "wall material (a half-space) [steel]"), \
+    CHOICE("sheet", sheet, SHEETS, NULL, "NAME", \
+           "wall: a sheet of the paper's Table 2 with its fitted K_eff (none, brass, tape, pvc, pmma, " \
+           "cardboard2, beech, cardboard1, rubber)"), \
+    {.name = "radii", .type = GW_PARAM_LIST, .offset = OFF(radii), .unit = "m", .min = 0, .max = 1, .open_min = 1, \
+     .metavar = "R,R..", .help = "per-bead radii, m, bead 1 first (masses and contact k from the material)"}, \
+    ROW("k", GW_PARAM_DOUBLE, k, "N/m^1.5", GW_CHAIN_K_MIN, GW_CHAIN_K_MAX, 0, NULL, "K", \
+        "bead-bead Hertz coefficient, N/m^1.5, in [1e3, 1e14] [from material, F.12]"), \
+    ROW("kwall", GW_PARAM_DOUBLE, kwall, "N/m^1.5", GW_CHAIN_K_MIN, GW_CHAIN_K_MAX, 0, NULL, "K", \
+        "bead-wall Hertz coefficient, N/m^1.5, in [1e3, 1e14] [from materials, F.3]"), \
+    ROW("mass", GW_PARAM_DOUBLE, mass, "kg", 0, 1e3, 1, NULL, "M", "bead mass, kg, in (0, 1e3] [4/3 pi R^3 rho]"), \
+    ROW("gravity", GW_PARAM_DOUBLE, gravity, "m/s^2", 0, 1e4, 0, "0", "G", "gravity toward the wall, m/s^2 [0 = off]"), \
+    CHOICE("damping", damping, "none,kk,hc", "none", "MODEL", "none, kk (Kuwabara-Kono) or hc (Hunt-Crossley) [none]"), \
+    ROW("gamma", GW_PARAM_DOUBLE, gamma, "N s/m^1.5", 0, INFINITY, 0, NULL, "G", \
+        "Kuwabara-Kono constant of bead contacts, N s/m^1.5 [0]"), \
+    ROW("alpha", GW_PARAM_DOUBLE, alpha, "s/m", 0, INFINITY, 0, NULL, "A", "Hunt-Crossley constant, s/m [0]"), \
+    ROW("restitution", GW_PARAM_DOUBLE, restitution, "", 0, 1, 1, NULL, "E", \
+        "calibrate gamma/alpha so one bead on the wall rebounds with E"), \
+    ROW("restitution-v", GW_PARAM_DOUBLE, restitution_v, "m/s", 0, 1e3, 1, NULL, "V", \
+        "impact velocity of that calibration, m/s [v_imp]"), \
+    CHOICE("solver", solver, "cvode,arkode,rk4", "cvode", "NAME", "cvode, arkode or rk4 [cvode]"), \
+    CHOICE("method", method, "default,bdf,adams,erk,dirk,imex", "default", "NAME", \
+           "cvode: bdf|adams; arkode: erk|dirk|imex [bdf / erk]"), \
+    ROW("rtol", GW_PARAM_DOUBLE, rtol, "", GW_TOL_MIN, GW_TOL_MAX, 0, "1e-12", "R", "relative tolerance [1e-12]"), \
+    ROW("atol", GW_PARAM_DOUBLE, atol, "", GW_TOL_MIN, GW_TOL_MAX, 0, "1e-12", "A", \
+        "absolute tolerance in units of the overlap and velocity scales [1e-12]"), \
+    ROW("dt", GW_PARAM_DOUBLE, dt, "s", 0, 1, 0, "0", "DT", "RK4 step, s [T_c/400]; initial step for cvode/arkode"), \
+    ROW("dt-max", GW_PARAM_DOUBLE, dt_max, "s", 0, 1, 0, "0", "DT", "largest step, s [unlimited]"), \
+    ROW("max-steps", GW_PARAM_LONG, max_steps, "", 1, 1e12, 0, "10000000", "N", \
+        "internal steps allowed between outputs [1e7]"), \
+    ROW("t-max", GW_PARAM_DOUBLE, t_max, "s", 0, 1e6, 0, "0", "T", "stop after T seconds [20 (n T_q + tau_1)]"), \
+    ROW("dt-out", GW_PARAM_DOUBLE, dt_out, "s", 0, 1, 0, "0", "DT", \
+        "sampling interval for traces, energy and F_max, s [tau_1/200]"), \
+    ROW("energy-tol", GW_PARAM_DOUBLE, energy_tol, "", 0, INFINITY, 0, "0", "E", \
+        "abort when the relative energy error exceeds E [off]"),
+
+#endif

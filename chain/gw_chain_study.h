@@ -1,0 +1,165 @@
+/*
+ * gw_chain_study.h: column collisions as library calls with parameters
+ * described once (gw_param.h).
+ *
+ * gw_chain_setup holds the inputs of one collision as `granwave chain` takes
+ * them: bead count and impact velocity, materials or direct Hertz coefficients
+ * (F.12, F.3), a sheet of the paper's Table 2, damping (physics.md 1.5) and the
+ * solver settings. Its table (gw_chain_setup_params) gives each field's name
+ * (the flag of `granwave chain`; Python keywords write '-' as '_'), unit, range,
+ * default and help. gw_chain_setup_resolve turns a setup into the model's
+ * gw_chain_params and gw_chain_run_opts (materials to coefficients, damping
+ * calibration to a restitution target) with the checks the command makes;
+ * gw_chain_collision_run runs the collision (physics.md 1.1-1.4) and fills a
+ * gw_chain_collision, whose table (gw_chain_collision_fields) names its results.
+ *
+ * Errors: GW_EINVAL with "NAME: reason" naming the parameter; solver failures
+ * as gw_chain_collide. SI units: m, s, kg, N, N/m^1.5.
+ */
+#ifndef GW_CHAIN_STUDY_H
+#define GW_CHAIN_STUDY_H
+
+#include "gw_chain.h"
+#include "gw_param.h"
+
+/* Accepted Hertz coefficients, N/m^1.5: the stiffest real contact (diamond on
+ * diamond, R = 1 m) has k ~ 1e12, the softest sheet of Table 2 K_eff ~ 1e6. */
+#define GW_CHAIN_K_MIN 1e3
+#define GW_CHAIN_K_MAX 1e14
+
+typedef struct gw_chain_setup {
+    long n;               /* beads [1] */
+    double vimp;          /* impact velocity toward the wall, m/s [0.3] */
+    int material;         /* bead material (choice) [steel] */
+    double radius;        /* bead radius, m [4e-3] */
+    int wall_material;    /* wall material, a half-space (choice) [steel] */
+    int sheet;            /* sheet of Table 2 on the wall (choice) [-1: none given] */
+    gw_param_list radii;  /* per-bead radii, m, bead 1 first [empty] */
+    double k, kwall, mass;/* direct coefficients, N/m^1.5, kg [NaN: from materials] */
+    double gravity;       /* toward the wall, m/s^2 [0] */
+    int damping;          /* none, kk, hc (choice) [none] */
+    double gamma, alpha;  /* damping constants [NaN: not given = 0] */
+    double restitution;   /* calibrate gamma/alpha to this one-bead restitution [NaN: off] */
+    double restitution_v; /* impact velocity of the calibration, m/s [NaN: vimp] */
+    int solver;           /* cvode, arkode, rk4 (choice) [cvode] */
+    int method;           /* default, bdf, adams, erk, dirk, imex (choice) [default] */
+    double rtol, atol;    /* tolerances [1e-12] */
+    double dt, dt_max;    /* s [0: auto, unlimited] */
+    long max_steps;       /* steps between outputs [1e7] */
+    double t_max;         /* s [0: 20 (n T_q + tau_1)] */
+    double dt_out;        /* sampling interval, s [0: tau_1/200] */
+    double energy_tol;    /* stop when the energy error exceeds it [0: off] */
+    int trace;            /* library only: keep the wall force and bead series [0] */
+} gw_chain_setup;
+
+/* The table of gw_chain_setup (static, NULL-terminated). */
+const gw_param *gw_chain_setup_params(void);
+
+/* Defaults from the table; free with gw_chain_setup_clear. GW_OK. */
+int gw_chain_setup_init(gw_chain_setup *s);
+/* Free what s owns (radii); s then holds no list. */
+void gw_chain_setup_clear(gw_chain_setup *s);
+
+/* A setup turned into the model and its run options. */
+typedef struct gw_chain_resolved {
+    gw_chain_params params; /* params.masses/kc point into the arrays below */
+    gw_chain_run_opts run;
+    double *masses, *kc;    /* owned (per-bead radii) */
+} gw_chain_resolved;
+
+/* Materials, sheet and radii to masses and coefficients, damping (calibrated
+ * when restitution is set: runs one-bead collisions), solver and method, with
+ * the checks of `granwave chain` (unknown or unusable names, options that would
+ * have no effect, tolerances). GW_EINVAL "NAME: reason"; GW_ESOLVER from a
+ * calibration that fails. r is zeroed first; free it with
+ * gw_chain_resolved_free also after a failure. */
+int gw_chain_setup_resolve(const gw_chain_setup *s, gw_chain_resolved *r, gw_err *err);
+void gw_chain_resolved_free(gw_chain_resolved *r);
+
+/* One collision: the observables of gw_chain_result, the resolved model, the
+ * closed forms of its parameters, and (setup trace = 1) the series. */
+typedef struct gw_chain_collision {
+    gw_chain_result r;
+    double v_imp, mass, k, kwall, radius; /* resolved model: m/s, kg, N/m^1.5, m */
+    double tau_1, d_max_1, f_max_1;       /* one bead on this wall (F.2, F.13): s, m, N */
+    double t_q;                           /* 2 (m/k)^(2/5) v^(-1/5) (F.17, F.29), s */
+    double k_c;                           /* K_c (F.22), N/m^1.5 */
+    double wall_time_ms;
+    int trace_len;                        /* samples in the series */
+    double *t, *f_wall;                   /* [trace_len] s, N */
+    double *x, *v;                        /* [trace_len * n] m, m/s, bead 1 first */
+} gw_chain_collision;
+
+/* The table of gw_chain_collision's results. */
+const gw_param *gw_chain_collision_fields(void);
+
+/* Resolve s and run the collision into out (zeroed first; free with
+ * gw_chain_collision_free, also after a failure: out then holds what was
+ * computed). Returns GW_OK, GW_EINVAL (setup), GW_ENOMEM, or the failure of
+ * gw_chain_collide (GW_ESOLVER, GW_ELIMIT, GW_EENERGY) with its message. */
+int gw_chain_collision_run(const gw_chain_setup *s, gw_chain_collision *out, gw_err *err);
+void gw_chain_collision_free(gw_chain_collision *out);
+
+/* ---- the Falcon rigid-wall study (physics.md 1.3, 1.7) ---- */
+
+/* Per impact velocity: tau_N = T_q (N - 1) + tau_1 (F.4) fitted over all N and
+ * over N <= 20 (GSL), wave speed 4R/T_q (F.6) against 2 (k/m)^(2/5) R v^(1/5)
+ * (F.27), F_max over N, the mean force period P (N >= 10), closed forms. */
+typedef struct gw_chain_falcon_fit {
+    gw_linfit fit, fit20;  /* x = N - 1, y = tau_N (s): c1 = T_q, c0 the intercept */
+    double f_mean, f_min, f_max, tau_max_mean, period_mean; /* N, N, N, s, s */
+    double t_q_theory, tau_1_theory, f_max_1_theory;        /* s, s, N */
+    double speed, speed20, speed_theory;                    /* m/s */
+} gw_chain_falcon_fit;
+
+/* Analyse the collisions res[0 .. n_hi - n_lo] (N = n_lo .. n_hi) of the column
+ * p at impact velocity v into a. */
+void gw_chain_falcon_analyse(const gw_chain_params *p, double v, const gw_chain_result *res, int n_lo,
+                             int n_hi, gw_chain_falcon_fit *a);
+
+/* The inputs of `granwave falcon`: the column (its model and solver rows; its n,
+ * vimp and trace are not used) and the study's own. */
+typedef struct gw_chain_falcon_setup {
+    gw_chain_setup col;
+    gw_param_list vimp;    /* impact velocities, m/s [0.3] */
+    gw_param_list heights; /* drop heights, mm, v = sqrt(2 g h), g = 9.81 [1.9,2.9,3.1,5.1] */
+    long n[2];             /* column sizes [1:40] */
+    double accuracy;       /* relative accuracy of F_max and tau_N for the RK4 step
+                              study, used when every solver row of col is at its
+                              default (0: col's solver rows as they are) [1e-6] */
+    long jobs;             /* threads [0 = one per CPU] */
+} gw_chain_falcon_setup;
+
+const gw_param *gw_chain_falcon_setup_params(void);
+int gw_chain_falcon_setup_init(gw_chain_falcon_setup *s);
+void gw_chain_falcon_setup_clear(gw_chain_falcon_setup *s);
+
+typedef struct gw_chain_falcon_outcome {
+    int nv, nn, ncase;     /* velocities, column sizes, nv * nn */
+    double *v_imp, *h_mm;  /* [nv] m/s; mm (NaN: velocity given directly) */
+    double *n;             /* [nn] column sizes */
+    /* [nv * nn], velocity-major: case (iv, N) at iv * nn + (N - n_lo) */
+    double *f_max, *tau_max, *tau_n, *period, *eps_eff, *eps_col, *e_rel_over_e_k, *n_s, *energy_error;
+    /* [nv] per velocity (gw_chain_falcon_fit) */
+    double *t_q, *t_q_err, *tau_fit_intercept, *tau_fit_intercept_err, *r2, *tau_fit_max_rel_resid;
+    double *t_q_n20, *t_q_n20_err, *wave_speed, *wave_speed_n20, *wave_speed_theory;
+    double *t_q_theory, *tau_1_theory, *f_max_1_theory;
+    double *f_max_mean, *f_max_min, *f_max_max, *tau_max_mean, *period_mean;
+    double k_c;            /* N/m^1.5 (F.22) */
+    int rigid;             /* K > K_c */
+    double accuracy;       /* the accuracy target used (0: col's solver) */
+    double wall_time_s;
+} gw_chain_falcon_outcome;
+
+const gw_param *gw_chain_falcon_outcome_fields(void);
+
+/* Run the study: every (v, N) collision on jobs threads, progress per
+ * collision (may be NULL), then the analysis per velocity. out zeroed first;
+ * free with gw_chain_falcon_outcome_free also after a failure. GW_EINVAL
+ * "NAME: reason", a collision's failure ("N = .., v_imp = ..: ..."),
+ * GW_ECANCELED, GW_ENOMEM. */
+int gw_chain_falcon_run(const gw_chain_falcon_setup *s, gw_progress_fn progress, void *pctx,
+                        gw_chain_falcon_outcome *out, gw_err *err);
+void gw_chain_falcon_outcome_free(gw_chain_falcon_outcome *out);
+
+#endif

@@ -1,0 +1,470 @@
+/*
+ * gw_param.c: parameter tables (gw_param.h): defaults, setting by name with
+ * type and range checks, text and JSON of the values. No physics here; units
+ * are the rows' (SI).
+ */
+#include <limits.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "gw_param.h"
+
+int gw_param_count(const gw_param *t)
+{
+    int n = 0;
+    while (t && t[n].name)
+        n++;
+    return n;
+}
+
+/* name equal to row, '_' in name matching '-' in row */
+static int same_name(const char *row, const char *name)
+{
+    for (; *row && *name; row++, name++)
+        if (*row != *name && !(*row == '-' && *name == '_'))
+            return 0;
+    return *row == *name;
+}
+
+const gw_param *gw_param_find(const gw_param *t, const char *name)
+{
+    for (int i = 0; name && t && t[i].name; i++)
+        if (same_name(t[i].name, name))
+            return &t[i];
+    return NULL;
+}
+
+int gw_param_is_input(const gw_param *p)
+{
+    return p->type != GW_PARAM_DARRAY && p->type != GW_PARAM_IARRAY;
+}
+
+const char *gw_param_type_name(gw_param_type type)
+{
+    static const char *const names[] = {"double", "int", "long", "flag", "choice",
+                                        "text", "list", "range", "double array", "int array"};
+    return (unsigned)type < sizeof names / sizeof names[0] ? names[type] : "unknown";
+}
+
+static void *field(void *obj, const gw_param *p)
+{
+    return (char *)obj + p->offset;
+}
+
+static const void *cfield(const void *obj, const gw_param *p)
+{
+    return (const char *)obj + p->offset;
+}
+
+/* within [min, max], "(" / ")" for open ends; messages "(0, 1000]", "> 0" */
+static int range_bad(const gw_param *p, double x, gw_err *err, const char *what)
+{
+    if (x >= p->min && x <= p->max && !(p->open_min && !(x > p->min)) && !(p->open_max && !(x < p->max)))
+        return GW_OK;
+    if (!isfinite(p->max))
+        return gw_err_set(err, GW_EINVAL, "%s: %s%g must be %s %g", p->name, what, x,
+                          p->open_min ? ">" : ">=", p->min);
+    return gw_err_set(err, GW_EINVAL, "%s: %s%g is outside %s%g, %g%s", p->name, what, x,
+                      p->open_min ? "(" : "[", p->min, p->max, p->open_max ? ")" : "]");
+}
+
+/* index of value in the comma-separated choices, -1 if absent */
+static int choice_index(const char *choices, const char *value)
+{
+    size_t len = strlen(value);
+    int i = 0;
+    for (const char *c = choices; c && *c; i++) {
+        const char *e = strchr(c, ',');
+        size_t n = e ? (size_t)(e - c) : strlen(c);
+        if (n == len && strncmp(c, value, n) == 0)
+            return i;
+        if (!e)
+            break;
+        c = e + 1;
+    }
+    return -1;
+}
+
+static int choice_count(const char *choices)
+{
+    int n = choices && *choices ? 1 : 0;
+    for (const char *c = choices; c && *c; c++)
+        n += *c == ',';
+    return n;
+}
+
+/* the name of choice i into buf */
+static int choice_name(const char *choices, int i, char *buf, size_t n)
+{
+    const char *c = choices;
+    for (int k = 0; c && k < i; k++) {
+        c = strchr(c, ',');
+        if (c)
+            c++;
+    }
+    if (!c || i < 0)
+        return -1;
+    const char *e = strchr(c, ',');
+    size_t len = e ? (size_t)(e - c) : strlen(c);
+    if (len + 1 > n)
+        return -1;
+    memcpy(buf, c, len);
+    buf[len] = '\0';
+    return (int)len;
+}
+
+static int set_number(const gw_param *p, void *obj, double v, const char *text, gw_err *err)
+{
+    if (!isfinite(v))
+        return gw_err_set(err, GW_EINVAL, "%s: must be a finite number, got %g", p->name, v);
+    int rc = range_bad(p, v, err, "");
+    if (rc != GW_OK)
+        return rc;
+    switch (p->type) {
+    case GW_PARAM_DOUBLE:
+        *(double *)field(obj, p) = v;
+        return GW_OK;
+    case GW_PARAM_FLAG:
+        if (v != 0 && v != 1)
+            return gw_err_set(err, GW_EINVAL, "%s: %g is not a flag (0 or 1)", p->name, v);
+        *(int *)field(obj, p) = (int)v;
+        return GW_OK;
+    case GW_PARAM_INT:
+    case GW_PARAM_LONG:
+        if (v != floor(v) || fabs(v) > (p->type == GW_PARAM_INT ? (double)INT_MAX : 9.0e18)) {
+            if (text)
+                return gw_err_set(err, GW_EINVAL, "%s: '%s' is not an integer", p->name, text);
+            return gw_err_set(err, GW_EINVAL, "%s: %g is not an integer", p->name, v);
+        }
+        if (p->type == GW_PARAM_INT)
+            *(int *)field(obj, p) = (int)v;
+        else
+            *(long *)field(obj, p) = (long)v;
+        return GW_OK;
+    default:
+        return gw_err_set(err, GW_EINVAL, "%s: takes a %s, not a number", p->name, gw_param_type_name(p->type));
+    }
+}
+
+static int set_integer_text(const gw_param *p, void *obj, const char *value, gw_err *err)
+{
+    long lo = p->min <= (double)LONG_MIN ? LONG_MIN : (long)ceil(p->min) + (p->open_min && p->min == ceil(p->min));
+    long hi = p->max >= (double)LONG_MAX ? LONG_MAX : (long)floor(p->max);
+    if (p->type == GW_PARAM_INT) {
+        lo = lo < INT_MIN ? INT_MIN : lo;
+        hi = hi > INT_MAX ? INT_MAX : hi;
+    }
+    long v;
+    int rc = gw_parse_long(value, p->name, lo, hi, &v, err);
+    if (rc != GW_OK)
+        return rc;
+    if (p->type == GW_PARAM_INT)
+        *(int *)field(obj, p) = (int)v;
+    else
+        *(long *)field(obj, p) = v;
+    return GW_OK;
+}
+
+static int set_text(const gw_param *p, void *obj, const char *value, gw_err *err)
+{
+    switch (p->type) {
+    case GW_PARAM_DOUBLE: {
+        double v;
+        int rc = gw_parse_double(value, p->name, &v, err);
+        return rc == GW_OK ? set_number(p, obj, v, value, err) : rc;
+    }
+    case GW_PARAM_INT:
+    case GW_PARAM_LONG:
+        return set_integer_text(p, obj, value, err);
+    case GW_PARAM_FLAG: {
+        int f = gw_parse_flag(value);
+        if (f < 0)
+            return gw_err_set(err, GW_EINVAL, "%s: '%s' is not a flag (1, 0, true, false)", p->name, value);
+        *(int *)field(obj, p) = f;
+        return GW_OK;
+    }
+    case GW_PARAM_CHOICE: {
+        int i = choice_index(p->choices, value);
+        if (i < 0) {
+            char list[512];
+            snprintf(list, sizeof list, "%s", p->choices ? p->choices : "");
+            for (char *c = list; *c; c++)
+                if (*c == ',')
+                    *c = ' ';
+            return gw_err_set(err, GW_EINVAL, "%s: unknown value '%s' (%s)", p->name, value, list);
+        }
+        *(int *)field(obj, p) = i;
+        return GW_OK;
+    }
+    case GW_PARAM_TEXT: {
+        if (!*value)
+            return gw_err_set(err, GW_EINVAL, "%s: empty value", p->name);
+        char *copy = strdup(value);
+        if (!copy)
+            return gw_err_set(err, GW_ENOMEM, "%s: out of memory", p->name);
+        char **dst = field(obj, p);
+        free(*dst);
+        *dst = copy;
+        return GW_OK;
+    }
+    case GW_PARAM_LIST: {
+        double *v = NULL;
+        int n = 0;
+        if (strcmp(value, "none") == 0) { /* an empty list: not given */
+            gw_param_list *l = field(obj, p);
+            free(l->v);
+            l->v = NULL;
+            l->n = 0;
+            return GW_OK;
+        }
+        int rc = gw_parse_double_list_in(value, p->name, p->min, p->max, p->open_min, &v, &n, err);
+        if (rc != GW_OK)
+            return rc;
+        gw_param_list *l = field(obj, p);
+        free(l->v);
+        l->v = v;
+        l->n = n;
+        return GW_OK;
+    }
+    case GW_PARAM_RANGE: {
+        long a, b;
+        long lo = (long)p->min, hi = (long)p->max;
+        int rc = gw_parse_int_range(value, p->name, lo, hi, &a, &b, err);
+        if (rc != GW_OK)
+            return rc;
+        long *r = field(obj, p);
+        r[0] = a;
+        r[1] = b;
+        return GW_OK;
+    }
+    default:
+        return gw_err_set(err, GW_EINVAL, "%s: a result, not a parameter", p->name);
+    }
+}
+
+int gw_param_set(const gw_param *t, void *obj, const char *name, const char *value, gw_err *err)
+{
+    const gw_param *p = gw_param_find(t, name);
+    if (!p)
+        return gw_err_set(err, GW_EINVAL, "unknown parameter '%s'", name ? name : "(null)");
+    if (!value)
+        return gw_err_set(err, GW_EINVAL, "%s: no value", p->name);
+    return set_text(p, obj, value, err);
+}
+
+int gw_param_set_double(const gw_param *t, void *obj, const char *name, double v, gw_err *err)
+{
+    const gw_param *p = gw_param_find(t, name);
+    if (!p)
+        return gw_err_set(err, GW_EINVAL, "unknown parameter '%s'", name ? name : "(null)");
+    return set_number(p, obj, v, NULL, err);
+}
+
+int gw_param_check(const gw_param *t, const void *obj, gw_err *err)
+{
+    for (int i = 0; t && t[i].name; i++) {
+        const gw_param *p = &t[i];
+        const void *f = cfield(obj, p);
+        int rc = GW_OK;
+        switch (p->type) {
+        case GW_PARAM_DOUBLE: {
+            double v = *(const double *)f;
+            if (isnan(v) && !p->def)
+                break;
+            if (!isfinite(v))
+                return gw_err_set(err, GW_EINVAL, "%s: must be a finite number, got %g", p->name, v);
+            rc = range_bad(p, v, err, "");
+            break;
+        }
+        case GW_PARAM_INT: rc = range_bad(p, *(const int *)f, err, ""); break;
+        case GW_PARAM_LONG: rc = range_bad(p, (double)*(const long *)f, err, ""); break;
+        case GW_PARAM_FLAG:
+            if (*(const int *)f != 0 && *(const int *)f != 1)
+                rc = gw_err_set(err, GW_EINVAL, "%s: %d is not a flag (0 or 1)", p->name, *(const int *)f);
+            break;
+        case GW_PARAM_CHOICE: {
+            int c = *(const int *)f;
+            if ((c < 0 && p->def) || c >= choice_count(p->choices))
+                rc = gw_err_set(err, GW_EINVAL, "%s: choice %d is not one of %s", p->name, c, p->choices);
+            break;
+        }
+        case GW_PARAM_LIST: {
+            const gw_param_list *l = f;
+            for (int k = 0; k < l->n && rc == GW_OK; k++) {
+                char what[32];
+                snprintf(what, sizeof what, "item %d is ", k + 1);
+                rc = isfinite(l->v[k]) ? range_bad(p, l->v[k], err, what)
+                                       : gw_err_set(err, GW_EINVAL, "%s: item %d is not finite", p->name, k + 1);
+            }
+            break;
+        }
+        case GW_PARAM_RANGE: {
+            const long *r = f;
+            rc = range_bad(p, (double)r[0], err, "");
+            if (rc == GW_OK)
+                rc = range_bad(p, (double)r[1], err, "");
+            if (rc == GW_OK && r[0] > r[1])
+                rc = gw_err_set(err, GW_EINVAL, "%s: range %ld:%ld is empty (start > end)", p->name, r[0], r[1]);
+            break;
+        }
+        default: break;
+        }
+        if (rc != GW_OK)
+            return rc;
+    }
+    return GW_OK;
+}
+
+int gw_param_init(const gw_param *t, void *obj, gw_err *err)
+{
+    for (int i = 0; t && t[i].name; i++) {
+        const gw_param *p = &t[i];
+        void *f = field(obj, p);
+        switch (p->type) {
+        case GW_PARAM_DOUBLE: *(double *)f = NAN; break;
+        case GW_PARAM_INT:
+        case GW_PARAM_FLAG: *(int *)f = 0; break;
+        case GW_PARAM_LONG: *(long *)f = 0; break;
+        case GW_PARAM_CHOICE: *(int *)f = -1; break;
+        case GW_PARAM_TEXT: *(char **)f = NULL; break;
+        case GW_PARAM_LIST: memset(f, 0, sizeof(gw_param_list)); break;
+        case GW_PARAM_RANGE: ((long *)f)[0] = ((long *)f)[1] = 0; break;
+        case GW_PARAM_DARRAY: *(double **)f = NULL; break;
+        case GW_PARAM_IARRAY: *(int **)f = NULL; break;
+        }
+        if (p->def && gw_param_is_input(p)) {
+            int rc = set_text(p, obj, p->def, err);
+            if (rc != GW_OK)
+                return rc;
+        }
+    }
+    return GW_OK;
+}
+
+int gw_param_format(const gw_param *p, const void *obj, char *buf, size_t n)
+{
+    const void *f = cfield(obj, p);
+    int w = -1;
+    if (n == 0)
+        return -1;
+    buf[0] = '\0';
+    switch (p->type) {
+    case GW_PARAM_DOUBLE:
+        w = isnan(*(const double *)f) ? 0 : snprintf(buf, n, "%.17g", *(const double *)f);
+        break;
+    case GW_PARAM_INT:
+    case GW_PARAM_FLAG: w = snprintf(buf, n, "%d", *(const int *)f); break;
+    case GW_PARAM_LONG: w = snprintf(buf, n, "%ld", *(const long *)f); break;
+    case GW_PARAM_CHOICE:
+        w = *(const int *)f < 0 ? 0 : choice_name(p->choices, *(const int *)f, buf, n);
+        break;
+    case GW_PARAM_TEXT: {
+        const char *s = *(char *const *)f;
+        w = snprintf(buf, n, "%s", s ? s : "");
+        break;
+    }
+    case GW_PARAM_LIST: {
+        const gw_param_list *l = f;
+        w = 0;
+        for (int i = 0; i < l->n && w >= 0 && (size_t)w < n; i++)
+            w += snprintf(buf + w, n - (size_t)w, "%s%.17g", i ? "," : "", l->v[i]);
+        break;
+    }
+    case GW_PARAM_RANGE: {
+        const long *r = f;
+        w = snprintf(buf, n, "%ld:%ld", r[0], r[1]);
+        break;
+    }
+    default: return -1;
+    }
+    return w < 0 || (size_t)w >= n ? -1 : w;
+}
+
+cJSON *gw_param_json(const gw_param *t, const void *obj)
+{
+    cJSON *o = cJSON_CreateObject();
+    for (int i = 0; o && t && t[i].name; i++) {
+        const gw_param *p = &t[i];
+        const void *f = cfield(obj, p);
+        cJSON *v = NULL;
+        char buf[256];
+        switch (p->type) {
+        case GW_PARAM_DOUBLE:
+            v = isfinite(*(const double *)f) ? cJSON_CreateNumber(*(const double *)f) : cJSON_CreateNull();
+            break;
+        case GW_PARAM_INT: v = cJSON_CreateNumber(*(const int *)f); break;
+        case GW_PARAM_LONG: v = cJSON_CreateNumber((double)*(const long *)f); break;
+        case GW_PARAM_FLAG: v = cJSON_CreateBool(*(const int *)f); break;
+        case GW_PARAM_CHOICE:
+        case GW_PARAM_TEXT:
+            v = gw_param_format(p, obj, buf, sizeof buf) > 0 ? cJSON_CreateString(buf) : cJSON_CreateNull();
+            break;
+        case GW_PARAM_LIST: {
+            const gw_param_list *l = f;
+            v = l->n ? gw_json_doubles(l->v, l->n) : cJSON_CreateNull();
+            break;
+        }
+        case GW_PARAM_RANGE: {
+            const long *r = f;
+            double ab[2] = {(double)r[0], (double)r[1]};
+            v = gw_json_doubles(ab, 2);
+            break;
+        }
+        default: continue;
+        }
+        if (!v || !cJSON_AddItemToObject(o, p->name, v)) {
+            cJSON_Delete(v);
+            cJSON_Delete(o);
+            return NULL;
+        }
+    }
+    return o;
+}
+
+void gw_param_clear(const gw_param *t, void *obj)
+{
+    for (int i = 0; t && t[i].name; i++) {
+        void *f = field(obj, &t[i]);
+        if (t[i].type == GW_PARAM_TEXT) {
+            free(*(char **)f);
+            *(char **)f = NULL;
+        } else if (t[i].type == GW_PARAM_LIST) {
+            gw_param_list *l = f;
+            free(l->v);
+            l->v = NULL;
+            l->n = 0;
+        }
+    }
+}
+
+int gw_param_copy(const gw_param *t, size_t size, void *dst, const void *src, gw_err *err)
+{
+    memcpy(dst, src, size);
+    for (int i = 0; t && t[i].name; i++) { /* detach, then duplicate what src owns */
+        void *f = field(dst, &t[i]);
+        if (t[i].type == GW_PARAM_TEXT)
+            *(char **)f = NULL;
+        else if (t[i].type == GW_PARAM_LIST)
+            memset(f, 0, sizeof(gw_param_list));
+    }
+    for (int i = 0; t && t[i].name; i++) {
+        const void *s = cfield(src, &t[i]);
+        void *f = field(dst, &t[i]);
+        if (t[i].type == GW_PARAM_TEXT && *(char *const *)s) {
+            if (!(*(char **)f = strdup(*(char *const *)s)))
+                goto nomem;
+        } else if (t[i].type == GW_PARAM_LIST && ((const gw_param_list *)s)->n > 0) {
+            const gw_param_list *ls = s;
+            gw_param_list *ld = f;
+            if (!(ld->v = malloc((size_t)ls->n * sizeof *ld->v)))
+                goto nomem;
+            memcpy(ld->v, ls->v, (size_t)ls->n * sizeof *ld->v);
+            ld->n = ls->n;
+        }
+    }
+    return GW_OK;
+nomem:
+    gw_param_clear(t, dst);
+    return gw_err_set(err, GW_ENOMEM, "out of memory copying parameters");
+}

@@ -1,0 +1,119 @@
+/*
+ * gw_param.h: each parameter described once.
+ *
+ * A table of gw_param rows (ended by a row whose name is NULL) describes the
+ * fields of one parameter struct: name, type, offset in the struct, unit,
+ * accepted range, default and one line of help. The name is the command-line
+ * flag without "--" (Python keywords write '-' as '_'). From the table come the
+ * struct's defaults (gw_param_init), setting a field by name with its type and
+ * range checked (gw_param_set: the message names the parameter, never a
+ * position on a command line), the settings of a run as JSON (gw_param_json),
+ * and the Python module's keywords, checks and help.
+ *
+ * Result structs have tables too: their rows are read-only, and arrays
+ * (GW_PARAM_DARRAY, GW_PARAM_IARRAY) name their dimensions: rows and cols are
+ * each a number ("8") or the name of an int row of the same table ("ns").
+ *
+ * Numbers in the units the row gives (SI; angles in degrees where the unit says
+ * so). All calls are reentrant; tables are const and static.
+ */
+#ifndef GW_PARAM_H
+#define GW_PARAM_H
+
+#include <stddef.h>
+
+#include "gw_common.h"
+
+typedef enum gw_param_type {
+    GW_PARAM_DOUBLE = 0, /* double; NaN = not given (when the row has no default) */
+    GW_PARAM_INT = 1,    /* int */
+    GW_PARAM_LONG = 2,   /* long */
+    GW_PARAM_FLAG = 3,   /* int 0 or 1; text "1", "0", "true", "false" */
+    GW_PARAM_CHOICE = 4, /* int: index into choices ("none,kk,hc"); -1 = not given */
+    GW_PARAM_TEXT = 5,   /* char *, owned by the struct (gw_param_clear frees it);
+                            NULL = not given */
+    GW_PARAM_LIST = 6,   /* gw_param_list, owned; text "a,b,c"; empty = not given
+                            (text "none") */
+    GW_PARAM_RANGE = 7,  /* long[2] {a, b}, a <= b; text "A:B" or "A" */
+    GW_PARAM_DARRAY = 8, /* result: double *, rows x cols, row-major */
+    GW_PARAM_IARRAY = 9  /* result: int *, rows x cols */
+} gw_param_type;
+
+/* A list of numbers held by a parameter struct (GW_PARAM_LIST). */
+typedef struct gw_param_list {
+    double *v; /* [n], owned */
+    int n;
+} gw_param_list;
+
+typedef struct gw_param {
+    const char *name;     /* flag name without "--", e.g. "dt-out" */
+    gw_param_type type;
+    size_t offset;        /* of the field in its struct */
+    const char *unit;     /* "m/s", "deg", "" */
+    double min, max;      /* accepted numbers (list items and range ends too) */
+    int open_min;         /* 1: a number must be > min */
+    int open_max;         /* 1: a number must be < max */
+    const char *def;      /* default as text, NULL = not given / derived (help says) */
+    const char *help;     /* one line */
+    const char *choices;  /* GW_PARAM_CHOICE: the names, comma-separated; arrays:
+                             the names of the columns (NULL: none) */
+    const char *metavar;  /* placeholder in --help ("V") */
+    const char *rows;     /* arrays: number of rows, a number or an int row's name */
+    const char *cols;     /* arrays: values per row, likewise (NULL = 1) */
+} gw_param;
+
+/* Number of rows of table t. */
+int gw_param_count(const gw_param *t);
+
+/* The row called name ('_' matches '-'), or NULL. */
+const gw_param *gw_param_find(const gw_param *t, const char *name);
+
+/* 1 for the rows that hold inputs (settable), 0 for result rows. */
+int gw_param_is_input(const gw_param *p);
+
+/* Type name ("double", "int", "long", "flag", "choice", "text", "list",
+ * "range", "double array", "int array"). */
+const char *gw_param_type_name(gw_param_type type);
+
+/* Fill obj's fields from t's defaults: a row's def is set as if by gw_param_set;
+ * rows without a default get NaN (double), -1 (choice), NULL (text), an empty
+ * list, or 0. Other bytes of obj are left as they are. GW_EINVAL (message
+ * naming the row) only for a table whose default is invalid (a bug). */
+int gw_param_init(const gw_param *t, void *obj, gw_err *err);
+
+/* Set row name of obj from text value, checking it as the row says (number,
+ * finite, within [min, max] or (min, max], integer, choice, list items, range).
+ * GW_EINVAL with "NAME: reason" in err, obj unchanged; unknown names:
+ * GW_EINVAL "unknown parameter 'NAME'"; GW_ENOMEM. */
+int gw_param_set(const gw_param *t, void *obj, const char *name, const char *value, gw_err *err);
+
+/* Check every input row of obj as gw_param_set would (for a struct whose
+ * fields were written directly): numbers in range (NaN passes when the row has
+ * no default: not given), integers, flags 0/1, choice indices, list items,
+ * ranges. GW_EINVAL "NAME: reason" for the first bad row. */
+int gw_param_check(const gw_param *t, const void *obj, gw_err *err);
+
+/* Set a number row (double, int, long, flag) of obj from v with the same
+ * checks (an integer row needs an integral v). */
+int gw_param_set_double(const gw_param *t, void *obj, const char *name, double v, gw_err *err);
+
+/* Current value of row p in obj as text ("" for not given; numbers with 17
+ * significant digits; lists comma-separated). Returns the length written,
+ * or -1 when buf (size n) is too small or p is a result array. */
+int gw_param_format(const gw_param *p, const void *obj, char *buf, size_t n);
+
+/* A JSON object {name: value} of t's input rows in obj (not given: null;
+ * choices by name; lists as arrays; ranges as [a, b]). NULL on ENOMEM. */
+cJSON *gw_param_json(const gw_param *t, const void *obj);
+
+/* Free what obj's text and list rows own and reset them to not given. */
+void gw_param_clear(const gw_param *t, void *obj);
+
+/* Deep copy of the input rows of src into dst (dst's owned fields must be
+ * clear); other bytes are copied as they are. GW_ENOMEM (dst then clear). */
+int gw_param_copy(const gw_param *t, size_t size, void *dst, const void *src, gw_err *err);
+
+/* Convenience for tables: offset and row constructors. */
+#define GW_PARAM_END {0}
+
+#endif

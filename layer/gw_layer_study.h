@@ -1,0 +1,136 @@
+/*
+ * gw_layer_study.h: a block impact on a 2D granular layer as a library call
+ * with its parameters described once (gw_param.h).
+ *
+ * gw_layer_impact_setup holds the inputs of `granwave layer-impact`: the
+ * sample file, the materials (Hertz-Mindlin contacts, physics.md 2.1), the
+ * block (R_b = rb-rm R_m, V_i, incidence alpha_i; B.5, B.6), the run and the
+ * solver (the fast default: verlet with its step from the shortest binary
+ * contact time; exact: RK4 stopping at every contact event). Its table
+ * (gw_layer_impact_setup_params) gives each field's name (the command's flag;
+ * Python keywords write '-' as '_'), unit, range, default and help.
+ * gw_layer_impact_run reads the sample, resolves the setup as the command does
+ * (the sample's mass law and clump mass unless given) and runs gw_layer_impact;
+ * its results (gw_layer_impact_outcome) have a table too, with the time series
+ * (ledger B.7-B.14, block, crowns) as arrays.
+ *
+ * Errors: GW_EINVAL "NAME: reason" naming the parameter; the sample reader's
+ * GW_EIO / GW_EFORMAT naming the file; solver failures with their message.
+ * SI units, angles in degrees.
+ */
+#ifndef GW_LAYER_STUDY_H
+#define GW_LAYER_STUDY_H
+
+#include "gw_layer.h"
+#include "gw_param.h"
+
+typedef struct gw_layer_impact_setup {
+    char *sample;          /* sample file from layer-make (required), owned */
+    double friction;       /* phi, deg in [0, 90) [30] */
+    double shear_modulus;  /* G, Pa [40e9] */
+    double poisson;        /* nu [0.25] */
+    double density;        /* kg/m^3 [2650] */
+    double gravity;        /* m/s^2 [9.81] */
+    double skin;           /* contact-list skin, m [0.1] */
+    int mass_law;          /* disc, sphere (choice) [-1: the sample's] */
+    int clump_mass;        /* sum, union (choice) [-1: the sample's] */
+    double rb_rm;          /* block radius in R_m [1] */
+    double vi;             /* incident speed, m/s [20] */
+    double alpha;          /* incidence from the normal, deg [0] */
+    double x;              /* impact abscissa from the box centre, m [0] */
+    double height_rm;      /* mobile layer height in R_m [0 = all] */
+    double gap;            /* initial block-target gap, m [1e-6] */
+    double t_max;          /* s [0.05] */
+    double dt_out;         /* s [2e-5] */
+    double ring_width;     /* crown width, m [0 = 2 R_m] */
+    long rings;            /* crowns [12] */
+    int solver;            /* verlet, rk4, cvode, arkode (choice) [-1: verlet, rk4 if exact] */
+    int method;            /* default, bdf, adams, erk, dirk, imex (choice) [default] */
+    double dt;             /* fixed step of verlet or rk4, s [0 = auto] */
+    int exact;             /* stop at every contact and stick/slip event [0] */
+    double rtol, atol;     /* cvode/arkode tolerances [1e-8] */
+    double energy_tol;     /* stop when the ledger closure exceeds it [0 = off] */
+    int remove_walls;      /* no walls from the impact on [0] */
+    int full;              /* run to t-max after the block has left [0] */
+} gw_layer_impact_setup;
+
+/* The table of gw_layer_impact_setup (static, NULL-terminated). */
+const gw_param *gw_layer_impact_setup_params(void);
+/* Defaults from the table; free with gw_layer_impact_setup_clear. GW_OK. */
+int gw_layer_impact_setup_init(gw_layer_impact_setup *s);
+void gw_layer_impact_setup_clear(gw_layer_impact_setup *s);
+
+/* The energy ledger's columns in gw_layer_energy order (the arrays ledger and
+ * regions of gw_layer_impact_outcome hold 8 of them per row). */
+#define GW_LAYER_ENERGY_COLUMNS \
+    "kinetic_block,kinetic_soil,strain_normal,strain_tangent,mindlin_excess,dissipated,potential,total"
+
+/* One impact: gw_layer_impact's result and what the command derives from it. */
+typedef struct gw_layer_impact_outcome {
+    gw_layer_impact_result r;
+    double rm;             /* the sample's R_m, m */
+    double penetration_rm; /* penetration / R_m */
+    double froude;         /* V_i / sqrt(2 g R_b) (B.15) */
+    double a_total;        /* ledger total at the start, A, J */
+    int nregions;          /* rows of regions: nrings + 2 */
+    int mass_law;          /* the law used (GW_LAYER_MASS_*) */
+    int exact;
+    double dt;             /* fixed step used, s (0 for cvode/arkode) */
+} gw_layer_impact_outcome;
+
+/* The table of gw_layer_impact_outcome's results. */
+const gw_param *gw_layer_impact_outcome_fields(void);
+
+/* Read s->sample, resolve s and run the impact into out (zeroed first; free
+ * with gw_layer_impact_outcome_free also after a failure). No files are written.
+ * Returns GW_OK, GW_EINVAL (setup), the sample reader's status, or the run's. */
+int gw_layer_impact_run(const gw_layer_impact_setup *s, gw_layer_impact_outcome *out, gw_err *err);
+void gw_layer_impact_outcome_free(gw_layer_impact_outcome *out);
+
+/* ---- pluviation (physics.md 2.2) ---- */
+
+/* The inputs of `granwave layer-make`: materials (mass law disc, clump mass
+ * sum by default) and gw_layer_make_params; out (may be NULL) is the sample
+ * file to write. */
+typedef struct gw_layer_make_setup {
+    double friction, shear_modulus, poisson, density, gravity, skin; /* as gw_layer_impact_setup */
+    int mass_law;          /* disc, sphere [disc] */
+    int clump_mass;        /* sum, union [sum] */
+    long n;                /* particles (clumps with clumps = 1) [300] */
+    double rm;             /* mean radius R_m, m [0.325] */
+    double volume_ratio;   /* largest/smallest volume [10] */
+    double width_rm;       /* box width in R_m [50] */
+    long seed;             /* [1] */
+    double ke_threshold;   /* stop when E_k < E M g R_m [1e-5] */
+    double t_max;          /* s [6] */
+    double damping;        /* Hunt-Crossley alpha while settling, s/m [0.3] */
+    double modulus_factor; /* settle with F G [1] */
+    double dt;             /* fixed step, s [2e-5] */
+    int solver;            /* rk4, verlet (choice) [rk4] */
+    double height_rm;      /* keep particles wholly below H R_m [0 = all] */
+    int clumps;            /* type B soil [0] */
+    double aspect_max;     /* clumps: aspect ratio in [1, A] [4] */
+    char *out;             /* sample file to write (text, or HDF5 for .h5) [NULL: none], owned */
+} gw_layer_make_setup;
+
+const gw_param *gw_layer_make_setup_params(void);
+int gw_layer_make_setup_init(gw_layer_make_setup *s);
+void gw_layer_make_setup_clear(gw_layer_make_setup *s);
+
+typedef struct gw_layer_make_outcome {
+    gw_layer_make_result r;
+    gw_layer_sample sample; /* the sample: n discs, x, y, r, body (NULL for discs) */
+    double height;          /* max(y + r), m */
+    double height_rm;       /* height / R_m */
+} gw_layer_make_outcome;
+
+const gw_param *gw_layer_make_outcome_fields(void);
+
+/* Pluviate (gw_layer_make) and, when s->out is set, write the sample there
+ * atomically with the settings in its header. out zeroed first; free with
+ * gw_layer_make_outcome_free also after a failure. GW_EINVAL "NAME: reason",
+ * GW_EUNSUPPORTED (HDF5 out without HDF5), GW_EIO, the run's status. */
+int gw_layer_make_run(const gw_layer_make_setup *s, gw_layer_make_outcome *out, gw_err *err);
+void gw_layer_make_outcome_free(gw_layer_make_outcome *out);
+
+#endif

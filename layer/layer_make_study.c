@@ -1,0 +1,169 @@
+/*
+ * layer_make_study.c: pluviation of a 2D sample (physics.md 2.2) as a library
+ * call (gw_layer_study.h): the table of `granwave layer-make`'s inputs, the run
+ * (gw_layer_make: polydisperse discs, radii uniform between R_min and
+ * R_max = V^(1/3) R_min with mean R_m, dropped under gravity until
+ * E_k < E M g R_m), the sample written when asked, and the table of results.
+ * SI units, angles in degrees.
+ */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "layer_setup_rows.h"
+
+#define OFF(f) offsetof(gw_layer_make_setup, f)
+#define ROW(nm, ty, f, un, lo, hi, op, opx, df, mv, hl)                                           \
+    {.name = nm, .type = ty, .offset = OFF(f), .unit = un, .min = lo, .max = hi, .open_min = op,    \
+     .open_max = opx, .def = df, .metavar = mv, .help = hl}
+#define CHOICE(nm, f, ch, df, mv, hl)                                                             \
+    {.name = nm, .type = GW_PARAM_CHOICE, .offset = OFF(f), .unit = "", .def = df, .choices = ch,  \
+     .metavar = mv, .help = hl}
+
+/* the ranges of `granwave layer-make` (the final overlap check is O(n^2): 1e5
+ * particles take seconds there, and days of pluviation before) */
+static const gw_param make_params[] = {
+    GW_LAYER_MATERIAL_ROWS("disc", "sum", "[disc]")
+    ROW("n", GW_PARAM_LONG, n, "", 1, 100000, 0, 0, "300", "N", "number of particles, 1 .. 100000 [300]"),
+    ROW("rm", GW_PARAM_DOUBLE, rm, "m", 1e-5, 1e3, 0, 0, "0.325", "R", "mean particle radius R_m, m in [1e-5, 1e3] [0.325]"),
+    ROW("volume-ratio", GW_PARAM_DOUBLE, volume_ratio, "", 1, 1e6, 0, 0, "10", "V", "largest/smallest particle volume [10]"),
+    ROW("width-rm", GW_PARAM_DOUBLE, width_rm, "", 0, 1e6, 1, 0, "50", "W", "box width in R_m [50]"),
+    ROW("seed", GW_PARAM_LONG, seed, "", 0, 9e18, 0, 0, "1", "S", "random seed [1]"),
+    ROW("ke-threshold", GW_PARAM_DOUBLE, ke_threshold, "", 0, 1, 1, 0, "1e-5", "E", "stop when E_k < E * M g R_m [1e-5]"),
+    ROW("t-max", GW_PARAM_DOUBLE, t_max, "s", 0, 1e4, 1, 0, "6", "T", "give up after T s simulated [6]"),
+    ROW("damping", GW_PARAM_DOUBLE, damping, "s/m", 0, 1e3, 0, 0, "0.3", "A", "Hunt-Crossley alpha while settling, s/m [0.3]"),
+    ROW("modulus-factor", GW_PARAM_DOUBLE, modulus_factor, "", 0, 1, 1, 0, "1", "F", "settle with F*G then relax with G [1]"),
+    ROW("dt", GW_PARAM_DOUBLE, dt, "s", 0, 1, 1, 0, "2e-5", "DT", "fixed step, s [2e-5]"),
+    CHOICE("solver", solver, "rk4,verlet", "rk4", "NAME",
+           "rk4 or verlet (explicit DEM); contact events are not located while settling [rk4]"),
+    ROW("height-rm", GW_PARAM_DOUBLE, height_rm, "", 0, 1e6, 0, 0, "0", "H",
+        "keep the particles wholly below H R_m after settling [0 = all]"),
+    {.name = "clumps", .type = GW_PARAM_FLAG, .offset = OFF(clumps), .unit = "", .min = 0, .max = 1, .def = "0",
+     .help = "type B soil: n rigid clumps (aspect ratio 1-4) instead of n discs"},
+    ROW("aspect-max", GW_PARAM_DOUBLE, aspect_max, "", 1, 4, 0, 0, "4", "A",
+        "clumps: aspect ratio uniform in [1, A], A in [1, 4] [4]"),
+    {.name = "out", .type = GW_PARAM_TEXT, .offset = OFF(out), .unit = "", .metavar = "FILE",
+     .help = "sample file to write (HDF5 when it ends in .h5) [none: the sample is only returned]"},
+    GW_PARAM_END};
+
+const gw_param *gw_layer_make_setup_params(void)
+{
+    return make_params;
+}
+
+int gw_layer_make_setup_init(gw_layer_make_setup *s)
+{
+    memset(s, 0, sizeof *s);
+    return gw_param_init(make_params, s, NULL);
+}
+
+void gw_layer_make_setup_clear(gw_layer_make_setup *s)
+{
+    gw_param_clear(make_params, s);
+}
+
+#undef OFF
+#define OFF(f) offsetof(gw_layer_make_outcome, f)
+#define RD(nm, f, un, hl) {.name = nm, .type = GW_PARAM_DOUBLE, .offset = OFF(f), .unit = un, .help = hl}
+#define RI(nm, f, hl) {.name = nm, .type = GW_PARAM_INT, .offset = OFF(f), .unit = "", .help = hl}
+
+static const gw_param make_fields[] = {
+    RI("n", sample.n, "discs in the sample"),
+    RD("width", sample.width, "m", "box width"),
+    RD("rm", sample.rm, "m", "mean radius R_m"),
+    RD("porosity", r.porosity, "", "porosity in the window x in [0.1, 0.9] W, y in [0.1, 0.8] h"),
+    RD("height", height, "m", "max(y + r)"),
+    RD("height_rm", height_rm, "", "height in R_m"),
+    RD("t_settle", r.t_settle, "s", "simulated settling time"),
+    RD("ke_final", r.ke_final, "J", "kinetic energy at the end"),
+    RI("converged", r.converged, "1: the kinetic energy went below the threshold"),
+    RD("max_overlap_over_rp", r.max_overlap, "", "largest u_n / R_p at the end"),
+    RI("n_removed_above_height", r.n_removed, "particles (clumps: grains) above height-rm taken away"),
+    RI("n_bodies", r.n_bodies, "grains (clumps) in the sample"),
+    RD("wall_time_ms", r.wall_ms, "ms", "wall-clock time"),
+    {.name = "steps", .type = GW_PARAM_LONG, .offset = OFF(r.steps), .unit = "", .help = "steps"},
+    {.name = "rebuilds", .type = GW_PARAM_LONG, .offset = OFF(r.rebuilds), .unit = "", .help = "contact-list rebuilds"},
+    {.name = "x", .type = GW_PARAM_DARRAY, .offset = OFF(sample.x), .unit = "m", .rows = "n", .help = "disc centres x"},
+    {.name = "y", .type = GW_PARAM_DARRAY, .offset = OFF(sample.y), .unit = "m", .rows = "n", .help = "disc centres y"},
+    {.name = "r", .type = GW_PARAM_DARRAY, .offset = OFF(sample.r), .unit = "m", .rows = "n", .help = "disc radii"},
+    {.name = "body", .type = GW_PARAM_IARRAY, .offset = OFF(sample.body), .unit = "", .rows = "n",
+     .help = "clump of each disc (clumps only)"},
+    GW_PARAM_END};
+
+const gw_param *gw_layer_make_outcome_fields(void)
+{
+    return make_fields;
+}
+
+void gw_layer_make_outcome_free(gw_layer_make_outcome *out)
+{
+    gw_layer_sample_free(&out->sample);
+    memset(out, 0, sizeof *out);
+}
+
+/* The header of a written sample: version and every setting. */
+static char *header(const gw_layer_make_setup *s, const gw_layer_make_outcome *o)
+{
+    cJSON *j = gw_param_json(make_params, s);
+    char *js = j ? cJSON_PrintUnformatted(j) : NULL;
+    cJSON_Delete(j);
+    size_t len = 512 + (js ? strlen(js) : 0);
+    char *h = malloc(len);
+    if (h)
+        snprintf(h, len, "granwave %s library gw_layer_make_run\nsettings: %s\nsettled: t = %.4g s, E_k = %.4g J, "
+                 "converged %d, max overlap %.3g R_p", gw_version(), js ? js : "{}", o->r.t_settle, o->r.ke_final,
+                 o->r.converged, o->r.max_overlap);
+    free(js);
+    return h;
+}
+
+int gw_layer_make_run(const gw_layer_make_setup *s, gw_layer_make_outcome *out, gw_err *err)
+{
+    memset(out, 0, sizeof *out);
+    int rc = gw_param_check(make_params, s, err);
+    if (rc != GW_OK)
+        return rc;
+    if (!(s->gravity > 0))
+        return gw_err_set(err, GW_EINVAL, "gravity: pluviation needs gravity > 0 m/s^2");
+    if (s->aspect_max != 4 && !s->clumps)
+        return gw_err_set(err, GW_EINVAL, "aspect-max: shapes clumps, so it needs clumps");
+    if (s->out && (rc = gw_layer_sample_format_check(s->out, err)) != GW_OK)
+        return rc; /* before the run: a result that cannot be written is not computed */
+    gw_layer_params lp = gw_layer_params_default();
+    lp.friction_deg = s->friction;
+    lp.shear_modulus = s->shear_modulus;
+    lp.poisson = s->poisson;
+    lp.density = s->density;
+    lp.gravity = s->gravity;
+    lp.skin = s->skin;
+    lp.mass_law = s->mass_law;
+    lp.clump_mass = s->clump_mass;
+    if ((rc = gw_layer_params_validate(&lp, err)) != GW_OK)
+        return rc;
+    gw_layer_make_params mp = gw_layer_make_params_default();
+    mp.n = (int)s->n;
+    mp.rm = s->rm;
+    mp.volume_ratio = s->volume_ratio;
+    mp.width_rm = s->width_rm;
+    mp.seed = s->seed;
+    mp.ke_threshold = s->ke_threshold;
+    mp.t_max = s->t_max;
+    mp.damping = s->damping;
+    mp.modulus_factor = s->modulus_factor;
+    mp.dt = s->dt;
+    mp.solver = s->solver == 1 ? gw_solver_verlet : gw_solver_rk4;
+    mp.height_rm = s->height_rm;
+    mp.clumps = s->clumps;
+    mp.aspect_max = s->aspect_max;
+    if ((rc = gw_layer_make(&lp, &mp, &out->sample, &out->r, err)) != GW_OK)
+        return rc;
+    for (int k = 0; k < out->sample.n; k++)
+        out->height = fmax(out->height, out->sample.y[k] + out->sample.r[k]);
+    out->height_rm = out->height / mp.rm;
+    if (s->out) {
+        char *h = header(s, out);
+        rc = gw_layer_sample_write(&out->sample, s->out, h ? h : "", err);
+        free(h);
+    }
+    return rc;
+}

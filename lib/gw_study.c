@@ -1,0 +1,145 @@
+/*
+ * gw_study.c: the index of libgranwave's studies and sweep models (gw_study.h):
+ * adapters from the studies' typed calls to one signature. No physics here.
+ */
+#include <stdlib.h>
+#include <string.h>
+
+#include "gw_chain_study.h"
+#if GW_HAVE_LAYER
+#include "gw_layer_study.h"
+#endif
+#include "gw_study.h"
+
+static int chain_init(void *s) { return gw_chain_setup_init(s); }
+static void chain_clear(void *s) { gw_chain_setup_clear(s); }
+static int chain_run(const void *s, void *out, gw_progress_fn progress, void *pctx, gw_err *err)
+{
+    (void)progress;
+    (void)pctx;
+    return gw_chain_collision_run(s, out, err);
+}
+static void chain_free(void *out) { gw_chain_collision_free(out); }
+
+static int falcon_init(void *s) { return gw_chain_falcon_setup_init(s); }
+static void falcon_clear(void *s) { gw_chain_falcon_setup_clear(s); }
+static int falcon_run(const void *s, void *out, gw_progress_fn progress, void *pctx, gw_err *err)
+{
+    return gw_chain_falcon_run(s, progress, pctx, out, err);
+}
+static void falcon_free(void *out) { gw_chain_falcon_outcome_free(out); }
+
+#if GW_HAVE_LAYER
+static int impact_init(void *s) { return gw_layer_impact_setup_init(s); }
+static void impact_clear(void *s) { gw_layer_impact_setup_clear(s); }
+static int impact_run(const void *s, void *out, gw_progress_fn progress, void *pctx, gw_err *err)
+{
+    (void)progress;
+    (void)pctx;
+    return gw_layer_impact_run(s, out, err);
+}
+static void impact_free(void *out) { gw_layer_impact_outcome_free(out); }
+
+static int make_init(void *s) { return gw_layer_make_setup_init(s); }
+static void make_clear(void *s) { gw_layer_make_setup_clear(s); }
+static int make_run(const void *s, void *out, gw_progress_fn progress, void *pctx, gw_err *err)
+{
+    (void)progress;
+    (void)pctx;
+    return gw_layer_make_run(s, out, err);
+}
+static void make_free(void *out) { gw_layer_make_outcome_free(out); }
+#endif
+
+static const gw_study studies[] = {
+    {"chain", "one collision of a column of beads with a wall (Falcon et al. 1998)", gw_chain_setup_params,
+     sizeof(gw_chain_setup), chain_init, chain_clear, gw_chain_collision_fields, sizeof(gw_chain_collision),
+     chain_run, chain_free},
+    {"falcon", "the rigid-wall study of Falcon et al. (1998): N = A..B at each impact velocity",
+     gw_chain_falcon_setup_params, sizeof(gw_chain_falcon_setup), falcon_init, falcon_clear,
+     gw_chain_falcon_outcome_fields, sizeof(gw_chain_falcon_outcome), falcon_run, falcon_free},
+#if GW_HAVE_LAYER
+    {"layer-impact", "one block impact on a 2D granular layer (Bourrier et al. 2008)",
+     gw_layer_impact_setup_params, sizeof(gw_layer_impact_setup), impact_init, impact_clear,
+     gw_layer_impact_outcome_fields, sizeof(gw_layer_impact_outcome), impact_run, impact_free},
+    {"layer-make", "pluviate a 2D granular sample (Bourrier et al. 2008)", gw_layer_make_setup_params,
+     sizeof(gw_layer_make_setup), make_init, make_clear, gw_layer_make_outcome_fields,
+     sizeof(gw_layer_make_outcome), make_run, make_free},
+#endif
+};
+#define NSTUDIES ((int)(sizeof studies / sizeof studies[0]))
+
+int gw_study_count(void)
+{
+    return NSTUDIES;
+}
+
+const gw_study *gw_study_get(int i)
+{
+    return i >= 0 && i < NSTUDIES ? &studies[i] : NULL;
+}
+
+const gw_study *gw_study_find(const char *name)
+{
+    for (int i = 0; name && i < NSTUDIES; i++)
+        if (strcmp(studies[i].name, name) == 0)
+            return &studies[i];
+    return NULL;
+}
+
+static const gw_sweep_model *const models[] = {&gw_chain_sweep_model,
+#if GW_HAVE_LAYER
+                                               &gw_layer_sweep_model
+#endif
+};
+
+const gw_sweep_model *const *gw_sweep_models(int *n)
+{
+    if (n)
+        *n = (int)(sizeof models / sizeof models[0]);
+    return models;
+}
+
+int gw_sweep_run_text(const char *text, const char *name, int jobs, gw_progress_fn progress, void *pctx,
+                      double **values, long *ncases, const gw_sweep_model **model, gw_err *err)
+{
+    *values = NULL;
+    *ncases = 0;
+    *model = NULL;
+    int nm = 0;
+    const gw_sweep_model *const *ms = gw_sweep_models(&nm);
+    gw_sweep_config cfg;
+    memset(&cfg, 0, sizeof cfg);
+    int rc = gw_sweep_config_read_string(text, name ? name : "sweep", ms, nm, &cfg, model, err);
+    if (rc != GW_OK)
+        return rc;
+    double *v = malloc((size_t)cfg.ncases * (size_t)(*model)->ncolumns * sizeof *v + 1);
+    if (!v) {
+        gw_sweep_config_free(&cfg);
+        return gw_err_set(err, GW_ENOMEM, "sweep: out of memory for %ld cases", cfg.ncases);
+    }
+    rc = gw_sweep_run(&cfg, *model, jobs, progress, pctx, v, err);
+    if (rc == GW_OK) {
+        *values = v;
+        *ncases = cfg.ncases;
+    } else {
+        free(v);
+    }
+    gw_sweep_config_free(&cfg);
+    return rc;
+}
+
+void gw_free(void *p)
+{
+    free(p);
+}
+
+size_t gw_param_row_size(void)
+{
+    return sizeof(gw_param);
+}
+
+size_t gw_study_size(void)
+{
+    return sizeof(gw_study);
+}

@@ -1,0 +1,62 @@
+/*
+ * gw_study.h: the index of libgranwave's studies, for bindings (the Python
+ * module) that drive every study the same way: allocate params_size bytes,
+ * init (defaults from the table), set by name (gw_param_set), run into
+ * fields_size bytes, read the results through the fields table, free, clear.
+ *
+ *   study           inputs (table)                       results (table)
+ *   "chain"         gw_chain_setup                       gw_chain_collision
+ *   "falcon"        gw_chain_falcon_setup                gw_chain_falcon_outcome
+ *   "layer-make"    gw_layer_make_setup                  gw_layer_make_outcome
+ *   "layer-impact"  gw_layer_impact_setup                gw_layer_impact_outcome
+ *
+ * The sweep models (gw_sweep.h) are listed too, for gw_sweep_config_read_string
+ * and gw_sweep_run. All tables and entries are static and const.
+ */
+#ifndef GW_STUDY_H
+#define GW_STUDY_H
+
+#include "gw_param.h"
+#include "gw_sweep.h"
+
+typedef struct gw_study {
+    const char *name;        /* the program's command ("chain", "layer-impact") */
+    const char *summary;     /* one line */
+    const gw_param *(*params)(void); /* inputs: rows named as the command's flags */
+    size_t params_size;      /* bytes of the input struct */
+    int (*init)(void *setup);          /* defaults; GW_OK */
+    void (*clear)(void *setup);        /* free what the inputs own */
+    const gw_param *(*fields)(void); /* results */
+    size_t fields_size;      /* bytes of the result struct */
+    /* Run: out zeroed first, free it with free_out also after a failure.
+     * progress may be NULL; studies without progress ignore it. */
+    int (*run)(const void *setup, void *out, gw_progress_fn progress, void *pctx, gw_err *err);
+    void (*free_out)(void *out);
+} gw_study;
+
+/* The study called name, or NULL. */
+const gw_study *gw_study_find(const char *name);
+/* Study i (0 .. count-1) or NULL; count with gw_study_count. */
+const gw_study *gw_study_get(int i);
+int gw_study_count(void);
+
+/* The sweep models of `granwave sweep` (chain, layer): *n of them. */
+const gw_sweep_model *const *gw_sweep_models(int *n);
+
+/* Parse a sweep config given as text (the INI format of gw_sweep.h; name for
+ * messages; [sweep] out is not needed) and run every case in memory
+ * (gw_sweep_run): *values gets ncases x ncolumns numbers (free with gw_free),
+ * *model the model that ran them. Cases in the order of gw_sweep_case (last
+ * grid key fastest). GW_EINVAL for the config or a case's value ("case K:
+ * ..."), a failing run's status, GW_ECANCELED; *values is then NULL. */
+int gw_sweep_run_text(const char *text, const char *name, int jobs, gw_progress_fn progress, void *pctx,
+                      double **values, long *ncases, const gw_sweep_model **model, gw_err *err);
+
+/* Free memory the library allocated for the caller (gw_sweep_run_text). */
+void gw_free(void *p);
+
+/* sizeof(gw_param) and sizeof(gw_study), for bindings that mirror them. */
+size_t gw_param_row_size(void);
+size_t gw_study_size(void);
+
+#endif

@@ -1,0 +1,119 @@
+"""granwave: wave propagation in granular matter, from Python.
+
+A thin layer over the C library libgranwave (ctypes, no compilation): the
+same models and numbers as the `granwave` program.
+
+    import granwave
+    r = granwave.chain(n=7, vimp=0.3)            # a column of 7 beads hits a wall
+    r.f_max, r.tau_n, r.final_velocities         # N, s, m/s (numpy array)
+    r = granwave.chain(n=7, vimp=0.3, trace=True)
+    r.t, r.f_wall                                # the wall-force trace
+    f = granwave.falcon(n=(1, 20), vimp=[0.3], heights=[])   # the Falcon study
+    f.t_q, f.wave_speed, f.f_max                 # per velocity; [velocity, N]
+    granwave.layer_make(n=60, width_rm=16, seed=3, out="a.txt")   # a small sample
+    r = granwave.layer_impact(sample="a.txt", rb_rm=1, vi=20)
+    r.e_n, r.ledger["total"]                     # restitution, energy ledger series
+    s = granwave.sweep("chain", grid={"n": range(1, 11), "vimp": [0.2, 0.3]}, solver="rk4")
+    s.n, s.f_max                                 # one entry per case
+
+Keyword names are the flags of the program's commands with '-' written '_'
+(`granwave chain --dt-out` is dt_out=); help(granwave.chain) lists them with
+units, defaults and ranges, from the library's own parameter tables.
+Errors raise exceptions: a bad value GranwaveValueError (a ValueError naming
+the parameter), an unknown keyword TypeError, an unreadable file
+GranwaveIOError (an OSError), a failed run GranwaveRunError (a RuntimeError).
+
+The library is found in the build tree (./setup.sh build), next to an
+installed module (cmake --install), or at GRANWAVE_LIB.
+"""
+from . import _core
+from ._core import (GranwaveError, GranwaveIOError, GranwaveRunError, GranwaveUnsupported,
+                    GranwaveValueError, Result)
+from ._lib import lib as _clib
+from ._lib import path as library_path
+
+__all__ = ["version", "version_info", "chain", "falcon", "layer_make", "layer_impact", "sweep", "params", "library_path",
+           "Result", "GranwaveError", "GranwaveValueError", "GranwaveIOError", "GranwaveRunError",
+           "GranwaveUnsupported"]
+
+
+def version():
+    """The library's version string, "MAJOR.MINOR.PATCH"."""
+    return _clib.gw_version().decode()
+
+
+def version_info():
+    """The library's version as (major, minor, patch)."""
+    return (_clib.gw_version_major(), _clib.gw_version_minor(), _clib.gw_version_patch())
+
+
+__version__ = version()
+
+_studies = {}
+
+
+def _study(name):
+    if name not in _studies:
+        _studies[name] = _core.Study(name)
+    return _studies[name]
+
+
+def params(study):
+    """The parameter table of a study ("chain", "layer-impact") as a list of
+    dicts: keyword, flag name, type, unit, min, max, default (text), help."""
+    st = _study(study)
+    return [{"keyword": p.keyword, "name": p.name, "type": _core._TYPE_NAMES[p.type], "unit": p.unit,
+             "min": p.min, "max": p.max, "default": p.default, "choices": p.choices, "help": p.help}
+            for p in st.params]
+
+
+def chain(**kwargs):
+    return _study("chain").run(kwargs)
+
+
+def layer_make(**kwargs):
+    return _study("layer-make").run(kwargs)
+
+
+def layer_impact(**kwargs):
+    return _study("layer-impact").run(kwargs)
+
+
+def falcon(*, progress=None, **kwargs):
+    return _study("falcon").run(kwargs, progress)
+
+
+def sweep(model="chain", grid=None, *, jobs=0, progress=None, **params):
+    """Run a grid of cases of a sweep model ("chain" or "layer") in memory,
+    on `jobs` threads (0: one per CPU), with the library's sweep engine (the
+    cases and columns of `granwave sweep`).
+
+    grid: {keyword: values}, every combination is a case (the last key varies
+    fastest); values are a list, a range, or a string "A:B" (integers) or
+    "a,b,c". Other keywords are the model's parameters, the same for every
+    case. progress: optional f(done, total), called as cases finish; return
+    True (or raise) to stop. Returns a Result with one array per grid key and
+    per result column (f_max, tau_n, ... for the chain), one entry per case.
+    """
+    return _core.run_sweep(model, grid or {}, params, jobs, progress)
+
+
+chain.__doc__ = _study("chain").doc(
+    "One collision of a column of n beads with a wall (Falcon et al. 1998, eq. F.11):\n"
+    "Hertz contacts, beads initially touching and moving at vimp toward the wall, as\n"
+    "`granwave chain`. trace=True adds the series t, f_wall, x, v (numpy arrays).")
+falcon.__doc__ = _study("falcon").doc(
+    "The rigid-wall study of Falcon et al. (1998), as `granwave falcon`: one collision\n"
+    "for every N in n = (A, B) at each impact velocity (vimp, and heights in mm), the\n"
+    "line tau_N = T_q (N - 1) + tau_1, the wave speed 4R/T_q against (F.27), F_max(N).\n"
+    "Per-case results are arrays [velocity, N]. progress: optional f(done, total) per\n"
+    "collision; return True (or raise) to stop. heights=[] (or 'none') for none.")
+layer_make.__doc__ = _study("layer-make").doc(
+    "Pluviate a 2D sample (Bourrier et al. 2008, physics.md 2.2), as `granwave layer-make`:\n"
+    "polydisperse discs (clumps=True: rigid clumps) dropped under gravity until the kinetic\n"
+    "energy is below a threshold. Deterministic for a seed. out=FILE writes the sample\n"
+    "for layer_impact(sample=FILE); the result holds the discs (x, y, r) either way.")
+layer_impact.__doc__ = _study("layer-impact").doc(
+    "One block impact on a 2D granular layer (Bourrier et al. 2008), as\n"
+    "`granwave layer-impact` (fast default: verlet; exact=True for the exact mode).\n"
+    "sample is a file written by `granwave layer-make`.")

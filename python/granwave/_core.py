@@ -1,0 +1,377 @@
+"""The generic machinery under granwave's functions: parameter tables read from
+the library (names, types, units, ranges, defaults, help), values set by name
+with the library's checks, studies run through the library's index, results
+read through their tables into Python numbers and numpy arrays, errors turned
+into exceptions. No physics here: every number comes from libgranwave.
+"""
+import ctypes
+import itertools
+import numbers
+import os
+
+import numpy as np
+
+from . import _lib
+from ._lib import lib
+
+# gw_param_type (common/gw_param.h)
+DOUBLE, INT, LONG, FLAG, CHOICE, TEXT, LIST, RANGE, DARRAY, IARRAY = range(10)
+_TYPE_NAMES = ["float", "int", "int", "bool", "choice", "str", "list of float", "range A:B",
+               "array", "int array"]
+
+# status codes (common/gw_common.h)
+GW_EINVAL, GW_ENOMEM, GW_EIO, GW_ESOLVER, GW_EFORMAT, GW_EUNSUPPORTED, GW_EENERGY, GW_ELIMIT, \
+    GW_ECANCELED = -1, -2, -3, -4, -5, -6, -7, -8, -9
+
+
+class GranwaveError(Exception):
+    """A libgranwave call failed; .status is the library's code, the text its message."""
+
+    def __init__(self, message, status):
+        super().__init__(message)
+        self.status = status
+
+
+class GranwaveValueError(GranwaveError, ValueError):
+    """A bad input value (GW_EINVAL) or a malformed input file (GW_EFORMAT)."""
+
+
+class GranwaveIOError(GranwaveError, OSError):
+    """A file could not be read or written (GW_EIO)."""
+
+
+class GranwaveRunError(GranwaveError, RuntimeError):
+    """The run failed: solver failure, step or time limit, energy monitor."""
+
+
+class GranwaveUnsupported(GranwaveError, NotImplementedError):
+    """Not available in this build (e.g. HDF5)."""
+
+
+def _raise(rc, err, what, params=()):
+    text = err.msg.decode(errors="replace") or lib.gw_strerror(rc).decode()
+    for p in params:  # the library names a parameter by its flag; Python by its keyword
+        if text.startswith(p.name + ":"):
+            text = p.keyword + text[len(p.name):]
+            break
+    msg = f"{what}: {text}"
+    if rc in (GW_EINVAL, GW_EFORMAT):
+        raise GranwaveValueError(msg, rc)
+    if rc == GW_EIO:
+        raise GranwaveIOError(msg, rc)
+    if rc == GW_ENOMEM:
+        raise MemoryError(msg)
+    if rc == GW_EUNSUPPORTED:
+        raise GranwaveUnsupported(msg, rc)
+    if rc in (GW_ESOLVER, GW_ELIMIT, GW_EENERGY):
+        raise GranwaveRunError(msg, rc)
+    raise GranwaveError(msg, rc)
+
+
+class Result(dict):
+    """A study's results: a dict (keys as in the CLI's JSON) with attribute access.
+    Numbers are Python floats and ints, series numpy arrays; tables with named
+    columns (the energy ledger) are dicts of arrays."""
+
+    def __getattr__(self, name):
+        try:
+            return self[name]
+        except KeyError:
+            raise AttributeError(name) from None
+
+    def __repr__(self):
+        parts = []
+        for k, v in self.items():
+            if isinstance(v, np.ndarray):
+                parts.append(f"{k}=array{list(v.shape)}")
+            elif isinstance(v, dict):
+                parts.append(f"{k}={{{', '.join(v)}}}")
+            elif isinstance(v, float):
+                parts.append(f"{k}={v:.6g}")
+            else:
+                parts.append(f"{k}={v!r}")
+        return "Result(" + ", ".join(parts) + ")"
+
+
+class Param:
+    """One row of a parameter table."""
+
+    def __init__(self, row):
+        self.name = row.name.decode()
+        self.keyword = self.name.replace("-", "_")
+        self.type = row.type
+        self.offset = row.offset
+        self.unit = (row.unit or b"").decode()
+        self.min, self.max = row.min, row.max
+        self.open_min, self.open_max = bool(row.open_min), bool(row.open_max)
+        self.default = row.default.decode() if row.default is not None else None
+        self.help = (row.help or b"").decode()
+        self.choices = row.choices.decode().split(",") if row.choices else None
+        self.rows = row.rows.decode() if row.rows else None
+        self.cols = row.cols.decode() if row.cols else None
+
+    def doc(self):
+        kind = "one of " + ", ".join(self.choices) if self.type == CHOICE else _TYPE_NAMES[self.type]
+        unit = f" [{self.unit}]" if self.unit else ""
+        return f"{self.keyword} ({kind}){unit}: {self.help}"
+
+
+def read_table(fn):
+    t = fn()
+    rows = []
+    i = 0
+    while t[i].name:
+        rows.append(Param(t[i]))
+        i += 1
+    return t, rows
+
+
+def _text(p, value):
+    """A Python value as the text gw_param_set parses."""
+    if isinstance(value, os.PathLike):
+        value = os.fspath(value)
+    if isinstance(value, str):
+        return value
+    if p.type == FLAG:
+        if isinstance(value, (bool, np.bool_)) or value in (0, 1):
+            return "1" if value else "0"
+        raise TypeError(f"{p.keyword}: expected True or False, got {value!r}")
+    if p.type == LIST:
+        if isinstance(value, numbers.Real):
+            value = [value]
+        items = [float(x) for x in value]
+        return ",".join(repr(x) for x in items) if items else "none"
+    if p.type == RANGE:
+        if isinstance(value, range):
+            if value.step != 1 or len(value) == 0:
+                raise ValueError(f"{p.keyword}: a range of step 1 with at least one value, got {value!r}")
+            return f"{value.start}:{value.stop - 1}"
+        if isinstance(value, numbers.Integral):
+            return str(int(value))
+        a, b = value
+        return f"{int(a)}:{int(b)}"
+    if isinstance(value, (bool, np.bool_)):
+        raise TypeError(f"{p.keyword}: expected a number, got {value!r}")
+    if isinstance(value, numbers.Integral):
+        return str(int(value))
+    if isinstance(value, numbers.Real):
+        return repr(float(value))
+    raise TypeError(f"{p.keyword}: cannot use a {type(value).__name__} ({value!r})")
+
+
+class Study:
+    """A study of the library's index (lib/gw_study.h)."""
+
+    def __init__(self, name):
+        ptr = lib.gw_study_find(name.encode())
+        if not ptr:
+            raise GranwaveError(f"libgranwave has no study '{name}'", GW_EINVAL)
+        self.st = ptr.contents
+        self.name = name
+        self.func = name.replace("-", "_")
+        self.table, self.params = read_table(self.st.params)
+        self.by_keyword = {p.keyword: p for p in self.params}
+        self.ftable, self.fields = read_table(self.st.fields)
+
+    def setup(self, kwargs):
+        """A C setup struct with kwargs set over the defaults (caller clears it)."""
+        buf = ctypes.create_string_buffer(self.st.params_size)
+        self.st.init(buf)
+        err = _lib.GwErr()
+        try:
+            for k, v in kwargs.items():
+                p = self.by_keyword.get(k)
+                if p is None:
+                    raise TypeError(f"{self.func}() got an unexpected keyword argument '{k}'")
+                if v is None:
+                    continue
+                rc = lib.gw_param_set(self.table, buf, p.name.encode(), _text(p, v).encode(), ctypes.byref(err))
+                if rc != 0:
+                    _raise(rc, err, self.func, self.params)
+        except BaseException:
+            self.st.clear(buf)
+            raise
+        return buf
+
+    def run(self, kwargs, progress=None):
+        buf = self.setup(kwargs)
+        out = ctypes.create_string_buffer(self.st.fields_size)
+        err = _lib.GwErr()
+        cb = Progress(progress)
+        try:
+            rc = self.st.run(buf, out, cb.c_fn, None, ctypes.byref(err))
+            cb.reraise()
+            if rc != 0:
+                _raise(rc, err, self.func, self.params)
+            return read_result(self.fields, ctypes.addressof(out))
+        finally:
+            self.st.free_out(out)
+            self.st.clear(buf)
+
+    def doc(self, intro):
+        lines = [intro, "", "Keywords (the flags of `granwave %s`, '-' written '_'; units SI):" % self.name]
+        lines += ["  " + p.doc() for p in self.params]
+        lines += ["", "Results (keys of the returned Result):"]
+        lines += ["  " + f.name + (f" [{f.unit}]" if f.unit else "") + ": " + f.help for f in self.fields]
+        return "\n".join(lines)
+
+
+class Progress:
+    """A Python progress callback f(done, total) as a C gw_progress_fn: an
+    exception in f (KeyboardInterrupt included) stops the call and is raised
+    again once the library has returned."""
+
+    def __init__(self, fn):
+        self.fn = fn
+        self.exc = None
+        self.c_fn = _lib.PROGRESS(self._call) if fn else _lib.PROGRESS()
+
+    def _call(self, ctx, done, total):
+        try:
+            return 1 if self.fn(done, total) else 0
+        except BaseException as e:  # noqa: B902 - handed back to the caller
+            self.exc = e
+            return 1
+
+    def reraise(self):
+        if self.exc is not None:
+            raise self.exc
+
+
+def _dim(spec, scalars):
+    if spec is None:
+        return 1
+    return int(spec) if spec.isdigit() else int(scalars[spec])
+
+
+def read_result(fields, base):
+    res = Result()
+    scalars = {}
+    for f in fields:
+        addr = base + f.offset
+        if f.type == DOUBLE:
+            v = ctypes.c_double.from_address(addr).value
+        elif f.type in (INT, FLAG):
+            v = ctypes.c_int.from_address(addr).value
+        elif f.type == LONG:
+            v = ctypes.c_long.from_address(addr).value
+        else:
+            continue
+        scalars[f.name] = v
+        res[f.name] = v
+    for f in fields:
+        if f.type not in (DARRAY, IARRAY):
+            continue
+        ptr = ctypes.c_void_p.from_address(base + f.offset).value
+        rows, cols = _dim(f.rows, scalars), _dim(f.cols, scalars)
+        if not ptr or rows <= 0 or cols <= 0:
+            continue
+        ctype = ctypes.c_double if f.type == DARRAY else ctypes.c_int
+        a = np.ctypeslib.as_array((ctype * (rows * cols)).from_address(ptr)).copy()
+        if f.cols is not None:
+            a = a.reshape(rows, cols)
+        if f.choices and a.ndim == 2 and len(f.choices) == cols:
+            res[f.name] = {c: a[:, j].copy() for j, c in enumerate(f.choices)}
+        else:
+            res[f.name] = a
+    return res
+
+
+# ---- sweeps over the library's sweep models ----
+
+def sweep_models():
+    n = ctypes.c_int()
+    arr = lib.gw_sweep_models(ctypes.byref(n))
+    return {arr[i].contents.name.decode(): arr[i].contents for i in range(n.value)}
+
+
+def _ini_value(key, v):
+    s = _text_plain(v)
+    if any(c in s for c in "\n\r;#") or not s.strip():
+        raise ValueError(f"{key}: value {s!r} cannot go into a sweep (empty, or holds ';', '#' or a newline)")
+    return s
+
+
+def _text_plain(v):
+    if isinstance(v, os.PathLike):
+        return os.fspath(v)
+    if isinstance(v, str):
+        return v
+    if isinstance(v, (bool, np.bool_)):
+        return "1" if v else "0"
+    if isinstance(v, numbers.Integral):
+        return str(int(v))
+    if isinstance(v, numbers.Real):
+        return repr(float(v))
+    raise TypeError(f"cannot use a {type(v).__name__} ({v!r}) as a sweep value")
+
+
+def _grid_values(key, v):
+    if isinstance(v, str):
+        parts = v.split(":")
+        if len(parts) == 2 and all(x.strip().lstrip("-").isdigit() for x in parts):
+            a, b = int(parts[0]), int(parts[1])
+            return list(range(a, b + 1))
+        return [x.strip() for x in v.split(",")]
+    if isinstance(v, (numbers.Number, os.PathLike)):
+        return [v]
+    return list(v)
+
+
+def run_sweep(model, grid, params, jobs, progress):
+    models = sweep_models()
+    if model not in models:
+        raise ValueError(f"sweep: unknown model '{model}' ({', '.join(models)})")
+    m = models[model]
+    if not grid:
+        raise ValueError("sweep: grid needs at least one key with its values")
+    lines = ["[sweep]", f"model = {model}", "[grid]"]
+    axes = {}
+    for k, v in grid.items():
+        name = k.replace("_", "-")
+        if not m.has_key(name.encode()):
+            raise TypeError(f"sweep() grid: '{k}' is not a parameter of model {model}")
+        vals = _grid_values(k, v)
+        if not vals:
+            raise ValueError(f"{k}: empty list of grid values")
+        axes[k] = vals
+        lines.append(f"{name} = " + ", ".join(_ini_value(k, x) for x in vals))
+    lines.append("[params]")
+    for k, v in params.items():
+        if v is None:
+            continue
+        name = k.replace("_", "-")
+        if not m.has_key(name.encode()):
+            raise TypeError(f"sweep() got an unexpected keyword argument '{k}' (not a parameter of model {model})")
+        if k in grid:
+            raise TypeError(f"sweep(): '{k}' given both in grid and as a keyword")
+        lines.append(f"{name} = {_ini_value(k, v)}")
+    text = "\n".join(lines) + "\n"
+    values = _lib.c_double_p()
+    ncases = ctypes.c_long()
+    mod = ctypes.POINTER(_lib.GwSweepModel)()
+    err = _lib.GwErr()
+    cb = Progress(progress)
+    rc = lib.gw_sweep_run_text(text.encode(), b"sweep", int(jobs), cb.c_fn, None, ctypes.byref(values),
+                               ctypes.byref(ncases), ctypes.byref(mod), ctypes.byref(err))
+    try:
+        cb.reraise()
+        if rc != 0:
+            _raise(rc, err, "sweep")
+        ncol = m.ncolumns
+        cols = [m.columns[j].decode() for j in range(ncol)]
+        a = np.ctypeslib.as_array(values, shape=(ncases.value * ncol,)).copy().reshape(ncases.value, ncol)
+    finally:
+        lib.gw_free(values)
+    res = Result()
+    cases = list(itertools.product(*axes.values()))  # the C order: last key fastest
+    for i, k in enumerate(axes):
+        col = [c[i] for c in cases]
+        try:
+            res[k] = np.array(col, dtype=float)
+        except (TypeError, ValueError):
+            res[k] = np.array([_text_plain(x) for x in col])
+    for j, c in enumerate(cols):
+        res[c] = a[:, j]
+    res["ncases"] = ncases.value
+    return res

@@ -1,0 +1,120 @@
+"""Loading libgranwave with ctypes and declaring the calls the module uses.
+
+Where the library is looked for, first found wins:
+  1. the environment variable GRANWAVE_LIB (a file, or a directory holding
+     libgranwave.so);
+  2. the build tree of a source checkout: <repo>/build/lib/libgranwave.so
+     (what ./setup.sh build makes), when this package is <repo>/python/granwave;
+  3. an installed prefix: the library directory that cmake --install recorded
+     in _install.py beside this file (P/lib for the module in
+     P/lib/python3/dist-packages/granwave);
+  4. the system's search path (ctypes.util.find_library("granwave")).
+No compilation happens at import: the C structs the module reads are mirrored
+here and their sizes checked against the library's.
+"""
+import ctypes
+import ctypes.util
+import os
+from pathlib import Path
+
+c_double_p = ctypes.POINTER(ctypes.c_double)
+
+
+class GwErr(ctypes.Structure):
+    _fields_ = [("msg", ctypes.c_char * 512)]
+
+
+class GwParam(ctypes.Structure):
+    """Mirror of gw_param (common/gw_param.h)."""
+    _fields_ = [("name", ctypes.c_char_p), ("type", ctypes.c_int), ("offset", ctypes.c_size_t),
+                ("unit", ctypes.c_char_p), ("min", ctypes.c_double), ("max", ctypes.c_double),
+                ("open_min", ctypes.c_int), ("open_max", ctypes.c_int), ("default", ctypes.c_char_p),
+                ("help", ctypes.c_char_p), ("choices", ctypes.c_char_p), ("metavar", ctypes.c_char_p),
+                ("rows", ctypes.c_char_p), ("cols", ctypes.c_char_p)]
+
+
+PROGRESS = ctypes.CFUNCTYPE(ctypes.c_int, ctypes.c_void_p, ctypes.c_long, ctypes.c_long)
+TABLE_FN = ctypes.CFUNCTYPE(ctypes.POINTER(GwParam))
+INIT_FN = ctypes.CFUNCTYPE(ctypes.c_int, ctypes.c_void_p)
+CLEAR_FN = ctypes.CFUNCTYPE(None, ctypes.c_void_p)
+RUN_FN = ctypes.CFUNCTYPE(ctypes.c_int, ctypes.c_void_p, ctypes.c_void_p, PROGRESS, ctypes.c_void_p,
+                          ctypes.POINTER(GwErr))
+
+
+class GwStudy(ctypes.Structure):
+    """Mirror of gw_study (lib/gw_study.h)."""
+    _fields_ = [("name", ctypes.c_char_p), ("summary", ctypes.c_char_p), ("params", TABLE_FN),
+                ("params_size", ctypes.c_size_t), ("init", INIT_FN), ("clear", CLEAR_FN),
+                ("fields", TABLE_FN), ("fields_size", ctypes.c_size_t), ("run", RUN_FN),
+                ("free_out", CLEAR_FN)]
+
+
+class GwSweepModel(ctypes.Structure):
+    """Mirror of gw_sweep_model (common/gw_sweep.h); only name, columns and has_key are used."""
+    _fields_ = [("name", ctypes.c_char_p), ("ncolumns", ctypes.c_int),
+                ("columns", ctypes.POINTER(ctypes.c_char_p)),
+                ("has_key", ctypes.CFUNCTYPE(ctypes.c_int, ctypes.c_char_p)),
+                ("run", ctypes.c_void_p), ("check", ctypes.c_void_p)]
+
+
+def _candidates():
+    env = os.environ.get("GRANWAVE_LIB")
+    if env:
+        p = Path(env)
+        return [p / "libgranwave.so" if p.is_dir() else p], True
+    here = Path(__file__).resolve().parent
+    try:  # written by cmake --install: the library directory relative to this package
+        from ._install import LIBDIR_FROM_PACKAGE
+        return [(here / LIBDIR_FROM_PACKAGE / "libgranwave.so").resolve()], False
+    except ImportError:
+        pass
+    return [here.parent.parent / "build" / "lib" / "libgranwave.so"], False  # source checkout
+
+
+def _load():
+    paths, from_env = _candidates()
+    for p in paths:
+        if p.exists():
+            return ctypes.CDLL(str(p)), str(p)
+    if from_env:
+        raise ImportError(f"granwave: GRANWAVE_LIB={os.environ['GRANWAVE_LIB']} names no library "
+                          f"(looked for {paths[0]})")
+    name = ctypes.util.find_library("granwave")
+    if name:
+        return ctypes.CDLL(name), name
+    raise ImportError("granwave: libgranwave.so not found; build it (./setup.sh build), install it "
+                      "(cmake --install build --prefix P), or set GRANWAVE_LIB to its path. Looked in: "
+                      + ", ".join(str(p) for p in paths))
+
+
+lib, path = _load()
+
+
+def _declare(name, restype, *argtypes):
+    f = getattr(lib, name)
+    f.restype = restype
+    f.argtypes = list(argtypes)
+
+
+_declare("gw_version", ctypes.c_char_p)
+_declare("gw_version_major", ctypes.c_int)
+_declare("gw_version_minor", ctypes.c_int)
+_declare("gw_version_patch", ctypes.c_int)
+_declare("gw_strerror", ctypes.c_char_p, ctypes.c_int)
+_declare("gw_param_row_size", ctypes.c_size_t)
+_declare("gw_study_size", ctypes.c_size_t)
+_declare("gw_study_find", ctypes.POINTER(GwStudy), ctypes.c_char_p)
+_declare("gw_study_count", ctypes.c_int)
+_declare("gw_study_get", ctypes.POINTER(GwStudy), ctypes.c_int)
+_declare("gw_param_set", ctypes.c_int, ctypes.POINTER(GwParam), ctypes.c_void_p, ctypes.c_char_p,
+         ctypes.c_char_p, ctypes.POINTER(GwErr))
+_declare("gw_sweep_models", ctypes.POINTER(ctypes.POINTER(GwSweepModel)), ctypes.POINTER(ctypes.c_int))
+_declare("gw_sweep_run_text", ctypes.c_int, ctypes.c_char_p, ctypes.c_char_p, ctypes.c_int, PROGRESS,
+         ctypes.c_void_p, ctypes.POINTER(c_double_p), ctypes.POINTER(ctypes.c_long),
+         ctypes.POINTER(ctypes.POINTER(GwSweepModel)), ctypes.POINTER(GwErr))
+_declare("gw_free", None, ctypes.c_void_p)
+
+if lib.gw_param_row_size() != ctypes.sizeof(GwParam) or lib.gw_study_size() != ctypes.sizeof(GwStudy):
+    raise ImportError(f"granwave: {path} does not match this module (gw_param {lib.gw_param_row_size()} "
+                      f"bytes, expected {ctypes.sizeof(GwParam)}; gw_study {lib.gw_study_size()}, expected "
+                      f"{ctypes.sizeof(GwStudy)}): use the module installed with that library")

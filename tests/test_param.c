@@ -1,0 +1,175 @@
+/*
+ * test_param.c: parameter tables (gw_param.h) and the column collision as a
+ * library call (gw_chain_study.h).
+ *
+ *  - The table's defaults are the model's: a default setup resolves to
+ *    gw_chain_params_default() (steel beads, R = 4 mm, steel wall: m, k, K
+ *    equal to the last bit, since both come from F.12, F.3 and 4/3 pi R^3 rho).
+ *  - Setting by name checks type and range and names the parameter: every
+ *    refusal is GW_EINVAL, its message starts with the row's name and never
+ *    mentions a command line ("--"), and the struct is unchanged.
+ *  - Text round trip: a double set from its %.17g text reads back bit-equal.
+ *  - Result tables: every array's dimensions name an int row or a number.
+ *  - One collision through the table: N = 1, v = 0.3 m/s, F_max and tau_max
+ *    against the closed forms F.13, F.21 to 1e-6 (the integration at
+ *    rtol = 1e-12 is ~1e-9 accurate), and a glass bead's mass
+ *    4/3 pi R^3 2500 kg/m^3 to 1e-15.
+ */
+#include <stdlib.h>
+#include <string.h>
+
+#include "gw_chain_study.h"
+#include "gw_test.h"
+
+static void refused(const char *name, const char *value, const char *what)
+{
+    gw_chain_setup s, before;
+    gw_chain_setup_init(&s);
+    memcpy(&before, &s, sizeof s);
+    gw_err err = {{0}};
+    int rc = gw_param_set(gw_chain_setup_params(), &s, name, value, &err);
+    const gw_param *p = gw_param_find(gw_chain_setup_params(), name);
+    size_t len = p ? strlen(p->name) : 0;
+    char msg[640];
+    snprintf(msg, sizeof msg, "%s = '%s' refused naming it, no '--' (%s): %s", name, value, what, err.msg);
+    gw_test_true(rc == GW_EINVAL && (!p || (strncmp(err.msg, p->name, len) == 0 && err.msg[len] == ':')) &&
+                     !strstr(err.msg, "--") && memcmp(&s, &before, sizeof s) == 0,
+                 msg);
+    gw_chain_setup_clear(&s);
+}
+
+/* a setup resolving to GW_EINVAL with a message naming row */
+static void resolve_refused(const char *const *kv, const char *row)
+{
+    gw_chain_setup s;
+    gw_chain_setup_init(&s);
+    gw_err err = {{0}};
+    int rc = GW_OK;
+    for (int i = 0; kv[i] && rc == GW_OK; i += 2)
+        rc = gw_param_set(gw_chain_setup_params(), &s, kv[i], kv[i + 1], &err);
+    gw_chain_resolved r;
+    if (rc == GW_OK)
+        rc = gw_chain_setup_resolve(&s, &r, &err);
+    gw_chain_resolved_free(&r);
+    gw_chain_setup_clear(&s);
+    char msg[640];
+    snprintf(msg, sizeof msg, "resolve refuses, naming %s: %s", row, err.msg);
+    gw_test_true(rc == GW_EINVAL && strncmp(err.msg, row, strlen(row)) == 0 && !strstr(err.msg, "--"), msg);
+}
+
+static void check_result_table(const gw_param *t, const char *what)
+{
+    int ok = 1;
+    for (int i = 0; t[i].name; i++) {
+        if (gw_param_is_input(&t[i]))
+            continue;
+        const char *dims[2] = {t[i].rows, t[i].cols};
+        for (int d = 0; d < 2; d++) {
+            if (!dims[d] || strspn(dims[d], "0123456789") == strlen(dims[d]))
+                continue;
+            const gw_param *q = gw_param_find(t, dims[d]);
+            if (!q || q->type != GW_PARAM_INT) {
+                printf("  %s: %s dimension '%s' is not an int row\n", what, t[i].name, dims[d]);
+                ok = 0;
+            }
+        }
+        ok &= t[i].rows != NULL;
+    }
+    char msg[128];
+    snprintf(msg, sizeof msg, "%s: every array's dimensions are int rows or numbers", what);
+    gw_test_true(ok, msg);
+}
+
+int main(void)
+{
+    const gw_param *t = gw_chain_setup_params();
+    gw_chain_setup s;
+    gw_test_true(gw_chain_setup_init(&s) == GW_OK, "defaults from the table are accepted by the table");
+    gw_err err = {{0}};
+    gw_test_true(gw_param_check(t, &s, &err) == GW_OK, "the default setup passes gw_param_check");
+    gw_test_true(s.n == 1 && s.vimp == 0.3 && s.rtol == 1e-12 && s.max_steps == 10000000 && s.sheet == -1 &&
+                     isnan(s.k) && s.radii.n == 0,
+                 "defaults: n 1, vimp 0.3, rtol 1e-12, max-steps 1e7, no sheet, k from the materials");
+
+    gw_chain_resolved r;
+    gw_test_true(gw_chain_setup_resolve(&s, &r, &err) == GW_OK, "the default setup resolves");
+    gw_chain_params d = gw_chain_params_default();
+    gw_test_true(r.params.mass == d.mass && r.params.k == d.k && r.params.kwall == d.kwall &&
+                     r.params.radius == d.radius && r.params.v_imp == d.v_imp && r.params.n == d.n,
+                 "default setup = gw_chain_params_default() (m, k, K, R, v, n bit-equal)");
+    gw_test_true(r.run.solver == gw_solver_cvode && r.run.sp.rtol == 1e-12 && r.run.sp.atol == 1e-12,
+                 "default run: cvode at rtol = atol = 1e-12 (as granwave chain)");
+    gw_chain_resolved_free(&r);
+
+    /* names with '_' for '-', choices by name, text round trip */
+    gw_test_true(gw_param_set(t, &s, "dt_out", "1e-7", &err) == GW_OK && s.dt_out == 1e-7, "dt_out sets dt-out");
+    gw_test_true(gw_param_set(t, &s, "material", "glass", &err) == GW_OK && s.material == 4, "material glass");
+    double x = 0.1 + 0.2;
+    char buf[64], back[64];
+    snprintf(buf, sizeof buf, "%.17g", x);
+    gw_param_set(t, &s, "vimp", buf, &err);
+    gw_param_format(gw_param_find(t, "vimp"), &s, back, sizeof back);
+    gw_test_true(s.vimp == x && strcmp(buf, back) == 0, "vimp: %.17g text round trip is bit-equal");
+    gw_test_true(gw_param_set_double(t, &s, "n", 7, &err) == GW_OK && s.n == 7, "n = 7 by number");
+    gw_param_set(t, &s, "vimp", "0.3", &err);
+
+    /* refusals name the parameter */
+    refused("vimp", "0", "open lower bound");
+    refused("vimp", "2000", "above 1e3 m/s");
+    refused("vimp", "nan", "not finite");
+    refused("vimp", "fast", "not a number");
+    refused("n", "2.5", "not an integer");
+    refused("n", "0", "below 1");
+    refused("rtol", "1e-3", "looser than GW_TOL_MAX");
+    refused("material", "unobtainium", "unknown choice");
+    refused("damping", "viscous", "unknown choice");
+    refused("radii", "4e-3,0", "an item out of range");
+    refused("trace", "maybe", "not a flag");
+    refused("bogus", "1", "unknown parameter");
+    gw_chain_setup t2;
+    gw_chain_setup_init(&t2);
+    gw_test_true(gw_param_set_double(t, &t2, "n", 2.5, &err) == GW_EINVAL && strncmp(err.msg, "n:", 2) == 0,
+                 "n = 2.5 by number refused naming n");
+    gw_chain_setup_clear(&t2);
+
+    resolve_refused((const char *[]){"material", "rigid", NULL}, "material");
+    resolve_refused((const char *[]){"gamma", "3", NULL}, "gamma");
+    resolve_refused((const char *[]){"n", "3", "radii", "4e-3,3e-3", NULL}, "radii");
+    resolve_refused((const char *[]){"sheet", "brass", "kwall", "1e9", NULL}, "sheet");
+    resolve_refused((const char *[]){"solver", "rk4", "method", "bdf", NULL}, "method");
+    resolve_refused((const char *[]){"restitution", "0.9", NULL}, "restitution");
+
+    cJSON *js = gw_param_json(t, &s);
+    int keys = 0;
+    for (int i = 0; t[i].name; i++)
+        keys += cJSON_GetObjectItemCaseSensitive(js, t[i].name) != NULL;
+    gw_test_true(js && keys == gw_param_count(t), "settings JSON has every row of the table");
+    cJSON_Delete(js);
+    gw_chain_setup_clear(&s);
+
+    check_result_table(gw_chain_collision_fields(), "column collision");
+
+    /* one collision through the table */
+    gw_chain_setup_init(&s);
+    gw_param_set(t, &s, "trace", "1", &err);
+    gw_chain_collision c;
+    int rc = gw_chain_collision_run(&s, &c, &err);
+    gw_test_true(rc == GW_OK, "collision N = 1 runs");
+    if (rc == GW_OK) {
+        gw_test_rel(c.r.f_max, c.f_max_1, 1e-6, "N = 1: F_max = closed form (F.13)");
+        gw_test_rel(c.r.tau_max, 0.5 * c.tau_1, 1e-6, "N = 1: tau_max = tau_1/2 (F.21)");
+        gw_test_rel(c.f_max_1, gw_chain_fmax1(d.mass, d.kwall, 0.3), 1e-15, "closed form of the defaults");
+        double fmax = 0;
+        for (int i = 0; i < c.trace_len; i++)
+            fmax = fmax > c.f_wall[i] ? fmax : c.f_wall[i];
+        gw_test_rel(fmax, c.r.f_max, 1e-3, "trace: the sampled wall force peaks at F_max (within the sampling)");
+    }
+    gw_chain_collision_free(&c);
+    gw_param_set(t, &s, "material", "glass", &err);
+    gw_param_set(t, &s, "trace", "0", &err);
+    gw_test_true(gw_chain_setup_resolve(&s, &r, &err) == GW_OK, "glass beads resolve");
+    gw_test_rel(r.params.mass, 4.0 / 3.0 * M_PI * pow(4e-3, 3) * 2500, 1e-15, "glass bead mass 4/3 pi R^3 rho");
+    gw_chain_resolved_free(&r);
+    gw_chain_setup_clear(&s);
+    return gw_test_summary("test_param");
+}

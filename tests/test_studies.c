@@ -1,0 +1,162 @@
+/*
+ * test_studies.c: the studies as library calls (gw_chain_study.h,
+ * gw_layer_study.h, gw_sweep_run), in C so that the sanitizer build checks
+ * their memory handling too.
+ *
+ *  - A sweep config run in memory: every case equals the single collision
+ *    with the same inputs (same code: bit-equal); stopping from the progress
+ *    callback returns GW_ECANCELED after the case that asked.
+ *  - The Falcon study: per-case results equal gw_chain_sweep_n's (bit-equal),
+ *    the fitted T_q is the least-squares slope of tau_N against N - 1
+ *    recomputed here (1e-12), F_max spread on the rigid steel wall below 5 %
+ *    (physics.md 1.3), v = sqrt(2 g h) for a height.
+ *  - Pluviation and an impact on a 30-disc sample: the impact's ledger closes
+ *    to 2e-3 (the fast default's bound, tests/test_layer_cli.sh) and the
+ *    ledger's components add up to its total (1e-9 of A).
+ */
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "gw_chain_study.h"
+#include "gw_layer_study.h"
+#include "gw_sweep.h"
+#include "gw_test.h"
+
+static int stop_after_two(void *ctx, long done, long total)
+{
+    (void)ctx;
+    (void)total;
+    return done >= 2;
+}
+
+static void sweep_in_memory(void)
+{
+    const char *cfg_text = "[sweep]\nmodel = chain\n[grid]\nn = 1:3\nvimp = 0.2, 0.3\n[params]\nsolver = rk4\n";
+    const gw_sweep_model *models[] = {&gw_chain_sweep_model}, *m = NULL;
+    gw_sweep_config cfg;
+    gw_err err = {{0}};
+    int rc = gw_sweep_config_read_string(cfg_text, "test", models, 1, &cfg, &m, &err);
+    gw_test_true(rc == GW_OK && cfg.ncases == 6, "sweep config: 3 x 2 cases");
+    if (rc != GW_OK)
+        return;
+    double *v = malloc((size_t)cfg.ncases * (size_t)m->ncolumns * sizeof *v);
+    rc = gw_sweep_run(&cfg, m, 2, NULL, NULL, v, &err);
+    gw_test_true(rc == GW_OK, "sweep run in memory");
+    int same = rc == GW_OK;
+    for (long k = 0; same && k < cfg.ncases; k++) {
+        gw_chain_setup s;
+        gw_chain_setup_init(&s);
+        s.n = 1 + k / 2;
+        s.vimp = k % 2 ? 0.3 : 0.2;
+        gw_param_set(gw_chain_setup_params(), &s, "solver", "rk4", &err);
+        gw_chain_collision c;
+        same = gw_chain_collision_run(&s, &c, &err) == GW_OK && c.r.f_max == v[k * m->ncolumns] &&
+               c.r.tau_n == v[k * m->ncolumns + 2];
+        gw_chain_collision_free(&c);
+        gw_chain_setup_clear(&s);
+    }
+    gw_test_true(same, "every case = the single collision (f_max, tau_n bit-equal; last key fastest)");
+    rc = gw_sweep_run(&cfg, m, 1, stop_after_two, NULL, v, &err);
+    gw_test_true(rc == GW_ECANCELED && !isnan(v[m->ncolumns]) && isnan(v[2 * m->ncolumns]),
+                 "progress returning non-zero stops the sweep: GW_ECANCELED, later cases NaN");
+    free(v);
+    gw_sweep_config_free(&cfg);
+}
+
+static void falcon(void)
+{
+    gw_chain_falcon_setup f;
+    gw_chain_falcon_setup_init(&f);
+    gw_err err = {{0}};
+    const gw_param *t = gw_chain_falcon_setup_params();
+    gw_param_set(t, &f, "n", "1:10", &err);
+    gw_param_set(t, &f, "heights", "3.1", &err);
+    gw_param_set(t, &f, "jobs", "2", &err);
+    gw_chain_falcon_outcome o;
+    int rc = gw_chain_falcon_run(&f, NULL, NULL, &o, &err);
+    gw_test_true(rc == GW_OK && o.nv == 2 && o.nn == 10 && o.rigid, "falcon study: 2 velocities x N = 1..10");
+    if (rc == GW_OK) {
+        gw_test_rel(o.v_imp[1], sqrt(2 * 9.81 * 3.1e-3), 1e-15, "height 3.1 mm: v = sqrt(2 g h)");
+        gw_chain_setup col = f.col;
+        col.vimp = o.v_imp[0];
+        gw_chain_resolved r;
+        gw_chain_setup_resolve(&col, &r, &err);
+        r.run.solver = gw_solver_rk4; /* the study's choice at the default accuracy */
+        r.run.steps_per_tc = gw_chain_rk4_steps_per_tc(1e-6);
+        r.run.dt_out = gw_chain_tau1(r.params.mass, r.params.kwall, fmax(o.v_imp[0], o.v_imp[1])) / 10;
+        gw_chain_result res[20];
+        int ok = gw_chain_sweep_n_progress(&r.params, &r.run, o.v_imp, 2, 1, 10, 1, NULL, NULL, res, &err) == GW_OK;
+        double x[10], y[10], lo = INFINITY, hi = 0;
+        for (int k = 0; ok && k < 20; k++)
+            ok = res[k].f_max == o.f_max[k] && res[k].tau_n == o.tau_n[k];
+        for (int k = 0; k < 10; k++) {
+            x[k] = k;
+            y[k] = o.tau_n[k];
+            lo = fmin(lo, o.f_max[k]);
+            hi = fmax(hi, o.f_max[k]);
+        }
+        for (int k = 0; k < 20; k++)
+            gw_chain_result_free(&res[k]);
+        gw_chain_resolved_free(&r);
+        gw_test_true(ok, "falcon cases = gw_chain_sweep_n's (bit-equal)");
+        gw_linfit fit;
+        gw_fit_linear(x, y, 10, &fit);
+        gw_test_rel(o.t_q[0], fit.c1, 1e-12, "T_q = slope of tau_N against N - 1");
+        gw_test_abs((hi - lo) / lo, 0, 0.05, "rigid wall: F_max spread over N = 1..10 below 5 %");
+    }
+    gw_chain_falcon_outcome_free(&o);
+    gw_chain_falcon_setup_clear(&f);
+}
+
+static void layer(void)
+{
+    char path[] = "/tmp/gw_test_studies_XXXXXX";
+    int fd = mkstemp(path);
+    if (fd >= 0)
+        close(fd);
+    gw_layer_make_setup m;
+    gw_layer_make_setup_init(&m);
+    gw_err err = {{0}};
+    const gw_param *t = gw_layer_make_setup_params();
+    gw_param_set(t, &m, "n", "30", &err);
+    gw_param_set(t, &m, "width-rm", "10", &err);
+    gw_param_set(t, &m, "seed", "2", &err);
+    gw_param_set(t, &m, "out", path, &err);
+    gw_layer_make_outcome mo;
+    int rc = gw_layer_make_run(&m, &mo, &err);
+    gw_test_true(rc == GW_OK && mo.sample.n == 30, "pluviation of 30 discs, sample written");
+    gw_layer_make_outcome_free(&mo);
+    gw_layer_make_setup_clear(&m);
+    gw_layer_impact_setup s;
+    gw_layer_impact_setup_init(&s);
+    gw_param_set(gw_layer_impact_setup_params(), &s, "sample", path, &err);
+    gw_param_set(gw_layer_impact_setup_params(), &s, "t-max", "0.01", &err);
+    gw_layer_impact_outcome o;
+    memset(&o, 0, sizeof o);
+    if (rc == GW_OK)
+        rc = gw_layer_impact_run(&s, &o, &err);
+    gw_test_true(rc == GW_OK && o.r.ns > 1 && o.nregions == o.r.nrings + 2, "impact on the sample");
+    if (rc == GW_OK) {
+        gw_test_abs(o.r.energy_error, 0, 2e-3, "ledger closure below 2e-3 (fast default)");
+        double worst = 0;
+        for (int k = 0; k < o.r.ns; k++) {
+            const gw_layer_energy *e = &o.r.ledger[k];
+            double sum = e->kinetic_block + e->kinetic_soil + e->strain_normal + e->strain_tangent +
+                         e->mindlin_excess + e->dissipated + e->potential;
+            worst = fmax(worst, fabs(sum - e->total) / o.a_total);
+        }
+        gw_test_abs(worst, 0, 1e-9, "ledger components add up to the total");
+    }
+    gw_layer_impact_outcome_free(&o);
+    gw_layer_impact_setup_clear(&s);
+    remove(path);
+}
+
+int main(void)
+{
+    sweep_in_memory();
+    falcon();
+    layer();
+    return gw_test_summary("test_studies");
+}

@@ -387,6 +387,9 @@ static int drop_loop(drop_state *st, gw_solver *s, double *y, int *roots, gw_err
                 break;
             }
         } else {
+            /* the backends may return within rounding of tnext (CVODE's
+             * interpolation, 1e-17 s here): tnext was reached, and t_max must be */
+            t = tnext;
             if ((rc = reconcile(st, t, y)) != GW_OK)
                 break;
             if ((sr = observe(st, t, y, 0)) != 0)

@@ -137,6 +137,7 @@ typedef struct drop_state {
     /* the current episode */
     double ep_start, ep_vin, ep_fmax, ep_tfmax, ep_fsample, ep_tsample;
     int ep_peaks, ep_cluster, ep_cluster_sample, ep_index;
+    double t_end1, t_start2; /* end of the first episode, start of the second (NaN) */
 } drop_state;
 
 static int cluster_of(const drop_state *st)
@@ -159,7 +160,8 @@ static void episode_start(drop_state *st, double t, const double *y)
     st->ep_peaks = 0;
     st->ep_cluster = st->ep_cluster_sample = 0;
     st->ep_index = -1;
-    st->r->n_episodes++;
+    if (++st->r->n_episodes == 2)
+        st->t_start2 = t;
 }
 
 /* The current episode as an impact record (appended on its first peak, or at
@@ -215,6 +217,8 @@ static int episode_end(drop_state *st, double t, const double *y, int end)
     if (!st->in_episode)
         return GW_OK;
     st->in_episode = 0;
+    if (end && isnan(st->t_end1))
+        st->t_end1 = t;
     int rc = GW_OK;
     if (st->ep_index < 0 && st->ep_fsample >= st->p->peak_threshold && st->ep_fsample > 0)
         rc = episode_record(st);
@@ -344,16 +348,19 @@ static int on_roots(drop_state *st, double t, const double *y, const int *roots)
     return GW_OK;
 }
 
-/* The first collision by the chain's own code, from the same state. */
+/* The first collision by the chain's own code, from the same state, until the
+ * chain's end (every contact open, every pair separating) or, under gravity, at
+ * the latest half way through bead 1's first flight: the chain's end may
+ * otherwise never come, or only after bead 1 fell back on the sensor. */
 static int first_collision(const gw_chain *c, const gw_chain_drop_params *p,
-                           const gw_chain_run_opts *o, const double *y0,
+                           const gw_chain_run_opts *o, const double *y0, const drop_state *st,
                            gw_chain_drop_result *r, gw_err *err)
 {
     gw_chain_run_opts o1 = *o;
     o1.sample = NULL;
     o1.sample_ctx = NULL;
     o1.dt_out = 0;
-    o1.t_max = p->t_max;
+    o1.t_max = isnan(st->t_start2) ? p->t_max : 0.5 * (st->t_end1 + st->t_start2);
     o1.y0 = y0;
     int rc = gw_chain_collide(c, &o1, &r->first, err);
     r->first_status = rc;
@@ -439,8 +446,8 @@ int gw_chain_drop_run(const gw_chain_drop_params *p, const gw_chain_run_opts *o,
     gw_solver *s = NULL;
     drop_sys d;
     memset(&d, 0, sizeof d);
-    drop_state st = {.d = &d, .p = p, .o = o, .r = r, .n = n};
-    double *y = NULL;
+    drop_state st = {.d = &d, .p = p, .o = o, .r = r, .n = n, .t_end1 = NAN, .t_start2 = NAN};
+    double *y = NULL, *y0 = NULL;
     int *roots = NULL;
     if ((rc = gw_chain_create(&q, &c, err)) != GW_OK)
         goto done;
@@ -461,7 +468,8 @@ int gw_chain_drop_run(const gw_chain_drop_params *p, const gw_chain_run_opts *o,
     d.sys.nroots = d.cs->nroots + 1;
     const long dim = d.sys.dim;
     d.ydot = malloc((size_t)dim * sizeof *d.ydot);
-    y = malloc((size_t)dim * sizeof *y);
+    y = malloc(2 * (size_t)dim * sizeof *y);
+    y0 = y + dim;
     roots = calloc((size_t)d.sys.nroots, sizeof *roots);
     st.closed = calloc((size_t)n, 1);
     if (!d.ydot || !y || !roots || !st.closed) {
@@ -472,8 +480,7 @@ int gw_chain_drop_run(const gw_chain_drop_params *p, const gw_chain_run_opts *o,
     gw_chain_initial_state(c, y);
     for (int i = 1; i < n; i++)
         y[2 * i] = y[2 * i - 2] - (p->gaps ? p->gaps[i - 1] : 0.0);
-    if ((rc = first_collision(c, p, o, y, r, err)) != GW_OK)
-        goto done;
+    memcpy(y0, y, (size_t)dim * sizeof *y);
 
     double m0 = gw_chain_bead_mass(c, 0);
     double tc = gw_chain_time_scale(&q);
@@ -500,6 +507,8 @@ int gw_chain_drop_run(const gw_chain_drop_params *p, const gw_chain_run_opts *o,
         goto done;
     rc = drop_loop(&st, s, y, roots, err);
     gw_solver_get_stats(s, &r->stats);
+    if (rc == GW_OK)
+        rc = first_collision(c, p, o, y0, &st, r, err);
 done:
     gw_solver_free(s);
     gw_chain_free(c);

@@ -426,7 +426,11 @@ typedef struct gw_chain_drop_result {
     double v_imp, t_fall;   /* sqrt(2 g h), m/s; sqrt(2 h / g), s */
     gw_chain_result first;  /* the first collision, by gw_chain_collide from the
                                same state with the same settings (its own default
-                               sampling, tau_1/200), as `granwave chain` reports it */
+                               sampling, tau_1/200), as `granwave chain` reports it;
+                               it ends at the chain's end (every contact open, every
+                               pair separating) or at the latest half way between
+                               bead 1 leaving the sensor and touching it again
+                               (converged = 0 then) */
     int first_status;       /* GW_OK, or GW_ELIMIT when t_max ended it early */
     gw_chain_drop_peak *peaks;
     unsigned char *peak_contacts; /* [n_peaks * n]: contact k closed at peak j is
@@ -439,7 +443,7 @@ typedef struct gw_chain_drop_result {
     double f_max, t_fmax;   /* largest peak of the run */
     gw_chain_energy e_end;  /* ledger at t_end (gravity potential -m g x, x = 0 at
                                the first contact) */
-    double e0;              /* energy at t = 0: n m v_imp^2 / 2 = n m g h, J */
+    double e0;              /* energy at t = 0, J (n m g h for touching beads) */
     double energy_error;    /* max |E(t) - e0| / e0 over samples and events */
     double t_end;
     long n_events, missed_events;

@@ -318,6 +318,10 @@ int gw_chain_collide(const gw_chain *c, const gw_chain_run_opts *o, gw_chain_res
                 break;
             }
         } else {
+            /* tnext was reached: the backends may return within rounding of it (a
+             * target within 1e-13 of the solver's time is not integrated to), and a
+             * t stuck just below t_max never ended the loop */
+            t = tnext;
             int wall_closed = st.closed[0];
             reconcile(&st, t, y);
             if (wall_closed && !st.closed[0])

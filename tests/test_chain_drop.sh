@@ -15,6 +15,8 @@
 #    impact tables with the provenance header (version, command line, settings);
 #    the peaks there are those of the JSON.
 #  - --block: one bead of the column's mass.
+#  - gw_chain_collide (first_collision) ends at its t-max when t-max is a multiple
+#    of the sampling step.
 set -u
 GW=$1
 PY=/usr/bin/python3
@@ -121,6 +123,12 @@ m = d["settings"]["model"]["mass"]
 assert d["n"] == 1 and d["block"] and d["settings"]["drop"]["n_column"] == 10
 assert abs(m - 10 * 4 / 3 * 3.141592653589793 * 4e-3**3 * 7850) < 1e-12 * m, m
 PYEOF
+
+# the collision loop that first_collision runs ends at its t-max also when t-max is a
+# multiple of the sampling step (it used to stay 1e-17 s short of it and never end)
+timeout 30 "$GW" chain --n 20 --t-max 1e-4 --dt-out 1e-6 >/dev/null 2>"$tmp/c.err"; rc=$?
+check "chain --t-max 1e-4 --dt-out 1e-6 ends (exit 1, bead 1 still on the wall), exit $rc" \
+    test $rc -eq 1 -a "$(grep -c 'still on the wall' "$tmp/c.err")" -eq 1
 
 echo "$passes passed, $fails failed"
 [ $fails -eq 0 ]

@@ -13,7 +13,7 @@ static const char *chain_summary =
     "Reports the peak wall force, its time, the contact time tau_N, the force\n"
     "oscillation period, detachment, restitution and the energy error. SI units.";
 
-static cJSON *result_json(const chain_cli *c, const gw_chain_result *r, double wall_ms)
+cJSON *chain_result_json(const chain_cli *c, const gw_chain_result *r, double wall_ms)
 {
     const gw_chain_params *p = &c->params;
     cJSON *o = cJSON_CreateObject();
@@ -115,7 +115,7 @@ int gw_cmd_chain(int argc, char **argv)
             char *hdr = chain_cli_header(&c, "chain", argc, argv);
             char path[4096];
             gw_err werr = {{0}};
-            cJSON *o = result_json(&c, &r, wall_ms);
+            cJSON *o = chain_result_json(&c, &r, wall_ms);
             cJSON_AddStringToObject(o, "error", err.msg);
             if (gw_chain_trace_write(&tr, c.out, "chain", hdr ? hdr : "", &werr) != GW_OK ||
                 gw_path_join(path, sizeof path, c.out, "chain_failure.json") != GW_OK ||
@@ -130,7 +130,7 @@ int gw_cmd_chain(int argc, char **argv)
         if (c.out) {
             char *hdr = chain_cli_header(&c, "chain", argc, argv);
             char path[4096];
-            cJSON *o = result_json(&c, &r, wall_ms);
+            cJSON *o = chain_result_json(&c, &r, wall_ms);
             if (gw_chain_trace_write(&tr, c.out, "chain", hdr ? hdr : "", &err) != GW_OK ||
                 gw_path_join(path, sizeof path, c.out, "chain.json") != GW_OK ||
                 gw_json_write(path, o, &err) != GW_OK) {
@@ -142,7 +142,7 @@ int gw_cmd_chain(int argc, char **argv)
         }
         if (code == 0) {
             if (c.json) {
-                cJSON *o = result_json(&c, &r, wall_ms);
+                cJSON *o = chain_result_json(&c, &r, wall_ms);
                 gw_json_print(o, stdout);
                 cJSON_Delete(o);
             } else {

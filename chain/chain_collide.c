@@ -264,11 +264,15 @@ int gw_chain_collide(const gw_chain *c, const gw_chain_run_opts *o, gw_chain_res
             r->front_t[k] = NAN;
     }
     r->tau_n = r->tau_max = NAN;
-    for (int k = 0; k < n; k++) {
-        st.closed[k] = 1;
+    if (o->y0)
+        memcpy(y, o->y0, (size_t)sys->dim * sizeof *y);
+    else
+        gw_chain_initial_state(c, y);
+    for (int k = 0; k < n; k++) { /* touching (overlap 0) counts as closed */
+        st.closed[k] = (k == 0 ? y[0] : y[2 * k] - y[2 * k - 2]) >= 0;
         st.last_open[k] = -INFINITY;
     }
-    r->wall_contacts = 1;
+    r->wall_contacts = st.closed[0];
 
     double tc = gw_chain_time_scale(p);
     double tau1 = gw_chain_tau1(gw_chain_bead_mass(c, 0), p->kwall, p->v_imp);
@@ -289,7 +293,6 @@ int gw_chain_collide(const gw_chain *c, const gw_chain_run_opts *o, gw_chain_res
     if (type == gw_solver_rk4 && !(sp.dt > 0))
         sp.dt = tc / (o->steps_per_tc > 0 ? o->steps_per_tc : 400.0);
 
-    gw_chain_initial_state(c, y);
     gw_chain_energy e;
     gw_chain_energy_of(c, y, &e);
     r->e0 = e.total;
@@ -315,6 +318,10 @@ int gw_chain_collide(const gw_chain *c, const gw_chain_run_opts *o, gw_chain_res
                 break;
             }
         } else {
+            /* tnext was reached: the backends may return within rounding of it (a
+             * target within 1e-13 of the solver's time is not integrated to), and a
+             * t stuck just below t_max never ended the loop */
+            t = tnext;
             int wall_closed = st.closed[0];
             reconcile(&st, t, y);
             if (wall_closed && !st.closed[0])

@@ -38,6 +38,10 @@ void chain_cli_free(chain_cli *c);
 /* A JSON object with the model parameters and solver settings of a run. */
 cJSON *chain_cli_settings_json(const chain_cli *c);
 
+/* The JSON object `granwave chain` prints for one collision r run with c's
+ * settings (also the drop's first_collision). */
+cJSON *chain_result_json(const chain_cli *c, const gw_chain_result *r, double wall_ms);
+
 /* Multi-line text (version, command line, settings) for file headers; caller frees. */
 char *chain_cli_header(const chain_cli *c, const char *cmd, int argc, char **argv);
 

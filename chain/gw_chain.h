@@ -148,6 +148,11 @@ typedef struct gw_chain_run_opts {
     double steps_per_tc; /* rk4 with sp.dt == 0: dt = T_c / steps_per_tc, T_c the
                             chain's time scale (gw_chain_time_scale) of this run's
                             v_imp; 0 = 400 */
+    const double *y0;    /* optional initial state [dim] (caller-owned), e.g. a
+                            column with gaps; NULL = gw_chain_initial_state. The
+                            contacts start closed where the overlap is >= 0. The
+                            restitutions (F.7, F.30) still take v_imp as the
+                            incoming velocity of every bead. */
 } gw_chain_run_opts;
 
 gw_chain_run_opts gw_chain_run_opts_default(void);
@@ -364,6 +369,104 @@ int gw_chain_wall_spectrum(const gw_chain_trace *tr, double t0, double t1, doubl
                            gw_err *err);
 void gw_chain_spectrum_free(gw_chain_spectrum *sp);
 
+/* ---- the whole drop (chain_drop.c) ----
+ * The column released from rest with bead 1 at a height h above the sensor, under
+ * gravity g toward the sensor, followed from the first contact (t = 0) through
+ * the first collision, detachment, free flight and the bounces that follow, up to
+ * t_max. The fall before t = 0 is uniform acceleration with no contact force, so
+ * the state at t = 0 is exact: every bead moves at v_imp = sqrt(2 g h) and the
+ * gaps are those of the release (physics.md 1.2). Definitions (time origin at the
+ * first contact; F = gw_chain_wall_force, the force the sensor reads):
+ *   contact episode  a maximal interval with x_1 > 0 (bead 1 overlaps the sensor),
+ *                    bounded by located roots of x_1
+ *   peak             a local maximum of F: a located falling root of the rate
+ *                    function R with R = dF/dt / sqrt(x_1) (undamped, Hunt-Crossley)
+ *                    or sqrt(x_1) dF/dt (Kuwabara-Kono), the acceleration of bead 1
+ *                    taken from the equations of motion, with F > 0 and
+ *                    F >= peak_threshold
+ *   impact           a contact episode whose largest force is >= peak_threshold;
+ *                    its f_max is its largest peak
+ * so that neither depends on the output sampling. */
+
+typedef struct gw_chain_drop_params {
+    gw_chain_params chain; /* the column; chain.v_imp is replaced by sqrt(2 g h),
+                              chain.gravity = g > 0 */
+    double height;         /* fall of bead 1 to the sensor, m, (0, GW_CHAIN_DROP_H_MAX] */
+    const double *gaps;    /* [n-1] initial gaps between beads i and i+1, m, in
+                              [0, GW_CHAIN_DROP_GAP_MAX], caller-owned; NULL = touching */
+    double t_max;          /* time followed after the first contact, s,
+                              (0, GW_CHAIN_DROP_T_MAX] */
+    double peak_threshold; /* N, >= 0 (see peak and impact above) */
+} gw_chain_drop_params;
+
+#define GW_CHAIN_DROP_H_MAX 1.0    /* m: 4.4 m/s at the sensor on Earth */
+#define GW_CHAIN_DROP_GAP_MAX 0.1  /* m */
+#define GW_CHAIN_DROP_T_MAX 1.0    /* s */
+#define GW_CHAIN_DROP_G_MIN 1e-3   /* m/s^2 */
+
+/* The chain defaults (steel, R = 4 mm) with g = 9.81 m/s^2, h = 5.1 mm, touching
+ * beads, t_max = 10 ms, peak_threshold = 0.7 N (1 % of F_max(1) at that h). */
+gw_chain_drop_params gw_chain_drop_params_default(void);
+/* Check every field (and the column's); GW_EINVAL with a message naming it. */
+int gw_chain_drop_params_validate(const gw_chain_drop_params *p, gw_err *err);
+
+typedef struct gw_chain_drop_impact {
+    double t_start, t_end; /* s; t_end NaN when still in contact at t_max */
+    double f_max, t_fmax;  /* largest peak of the episode, N, and its time, s */
+    double v_in, v_out;    /* velocity of bead 1 at start and end, m/s (toward the
+                              sensor > 0; v_out NaN while in contact) */
+    int n_peaks;           /* peaks of the episode */
+    int cluster;           /* beads joined to the sensor by closed contacts at f_max */
+    int located;           /* 1: f_max is a located peak; 0: no peak was located
+                              (a missed episode), f_max is the largest sample */
+} gw_chain_drop_impact;
+
+typedef struct gw_chain_drop_peak {
+    double t, f;   /* s, N */
+    int impact;    /* index into impacts */
+    int cluster;   /* beads 1..cluster joined to the sensor by closed contacts */
+} gw_chain_drop_peak;
+
+typedef struct gw_chain_drop_result {
+    int n;
+    double v_imp, t_fall;   /* sqrt(2 g h), m/s; sqrt(2 h / g), s */
+    gw_chain_result first;  /* the first collision, by gw_chain_collide from the
+                               same state with the same settings (its own default
+                               sampling, tau_1/200), as `granwave chain` reports it;
+                               it ends at the chain's end (every contact open, every
+                               pair separating) or at the latest half way between
+                               bead 1 leaving the sensor and touching it again
+                               (converged = 0 then) */
+    int first_status;       /* GW_OK, or GW_ELIMIT when t_max ended it early */
+    gw_chain_drop_peak *peaks;
+    unsigned char *peak_contacts; /* [n_peaks * n]: contact k closed at peak j is
+                                     peak_contacts[j n + k] (k = 0: the sensor,
+                                     k >= 1: beads k and k+1) */
+    int n_peaks;
+    gw_chain_drop_impact *impacts;
+    int n_impacts;          /* episodes reaching peak_threshold */
+    int n_episodes;         /* every contact episode of bead 1 with the sensor */
+    double f_max, t_fmax;   /* largest peak of the run */
+    gw_chain_energy e_end;  /* ledger at t_end (gravity potential -m g x, x = 0 at
+                               the first contact) */
+    double e0;              /* energy at t = 0, J (n m g h for touching beads) */
+    double energy_error;    /* max |E(t) - e0| / e0 over samples and events */
+    double t_end;
+    long n_events, missed_events;
+    gw_solver_stats stats;
+} gw_chain_drop_result;
+
+/* Run the drop with run options o (solver and its settings, dt_out = signal
+ * sampling, 0 = 1 us; energy_tol; sample callback, called at every sample and
+ * event; o->t_max and o->y0 are ignored, p->t_max rules). r is zeroed first and
+ * must be freed with gw_chain_drop_result_free, also after a failure. Returns
+ * GW_OK, GW_EINVAL (parameters), GW_ENOMEM, GW_ESOLVER / GW_ELIMIT / GW_EENERGY
+ * with the backend's message and the time in err (r then holds what was
+ * measured up to the failure). */
+int gw_chain_drop_run(const gw_chain_drop_params *p, const gw_chain_run_opts *o,
+                      gw_chain_drop_result *r, gw_err *err);
+void gw_chain_drop_result_free(gw_chain_drop_result *r);
+
 /* ---- the chain as a sweep model (chain_sweep_model.c, see gw_sweep.h) ---- */
 
 struct gw_sweep_model;
@@ -376,5 +479,6 @@ int gw_cmd_falcon(int argc, char **argv);
 int gw_cmd_wavespeed(int argc, char **argv);
 int gw_cmd_softwall(int argc, char **argv);
 int gw_cmd_dispersion(int argc, char **argv);
+int gw_cmd_drop(int argc, char **argv);
 
 #endif

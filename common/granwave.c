@@ -37,6 +37,7 @@ static const command commands[] = {
     {"dispersion", gw_cmd_dispersion, "small-amplitude dispersion of a precompressed chain (FFTW)"},
     {"wavespeed", gw_cmd_wavespeed, "deformation-wave speed against v_imp, three estimators"},
     {"softwall", gw_cmd_softwall, "soft walls: F_max(N), saturation number N_d, sheets"},
+    {"drop", gw_cmd_drop, "the whole drop: a column released above the sensor, its bounces over 10 ms"},
     {"sweep", cmd_sweep, "a grid of cases from a config file (resumable; threads or MPI)"},
 #if GW_HAVE_LAYER
     GW_LAYER_COMMANDS

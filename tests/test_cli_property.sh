@@ -3,7 +3,7 @@
 # flags (issue 18).
 #
 # What is tried: for every command (chain, falcon, wavespeed, softwall, dispersion,
-# sweep, layer-make, layer-impact, layer-stats) the numeric flags are read from
+# drop, sweep, layer-make, layer-impact, layer-stats) the numeric flags are read from
 # the command's own --help (a flag with an upper-case metavar that is not a name,
 # file, directory, model, kind, law, list or "how": R, K, V,V.., A:B, N, ...), and
 # each is given, on top of a short valid run of that command (small n, short
@@ -41,14 +41,14 @@ fails=0; passes=0; known=0
 ko() { echo "FAIL: $1"; fails=$((fails+1)); }
 
 VALUES=${GW_PROPERTY_VALUES:-"nan inf -inf -1 0 1e-308 1e308 99999999999999999999 junk"}
-CMDS=${GW_PROPERTY_CMDS:-"chain falcon wavespeed softwall dispersion sweep layer-make layer-impact layer-stats"}
+CMDS=${GW_PROPERTY_CMDS:-"chain falcon wavespeed softwall dispersion drop sweep layer-make layer-impact layer-stats"}
 
 # flag classes (command:flag or *:flag)
 NEG_OK=" layer-impact:x layer-impact:gap "          # signed: x is an abscissa; gap < 0 is refused by the model (2)
 ZERO_OK=" *:poisson layer-make:damping layer-impact:ring-width *:gravity *:gamma *:alpha *:dt *:dt-max *:t-max *:dt-out *:energy-tol *:jobs *:seed
           layer-stats:delta-rm layer-impact:x layer-impact:alpha layer-make:height-rm dispersion:column-n
           dispersion:dt-out *:restitution-v "
-TINY_OK=" *:gravity *:gamma *:alpha *:energy-tol layer-impact:x layer-impact:alpha layer-impact:gap
+TINY_OK=" *:gravity *:gamma *:alpha *:energy-tol layer-impact:x layer-impact:alpha layer-impact:gap drop:gap drop:peak-threshold
           layer-stats:delta-rm layer-make:height-rm "
 HUGE_OK=" *:energy-tol *:skin layer-impact:dt-out " # a huge list skin or sampling step only costs or thins output
 # known failures owned by files this change may not edit (see the report)
@@ -82,6 +82,7 @@ base_args() { # cmd outdir -> the short valid run of cmd
     wavespeed) echo "--n 6:8 --vimp 0.3 --quiet --jobs 1 --out $2";;
     softwall) echo "--n 1:3 --quiet --jobs 1 --out $2";;
     dispersion) echo "--n 16 --t-samples 64 --out $2";;
+    drop) echo "--n 2 --t-max 2e-4 --out $2";;
     sweep) echo "$fix/sweep.ini --quiet --out $2";;
     layer-make) echo "--n 10 --width-rm 6 --t-max 0.05 --out $2/sample.txt";;
     layer-impact) echo "--sample $fix/s20.txt --t-max 0.001 --out $2";;

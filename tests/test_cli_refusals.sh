@@ -14,7 +14,7 @@
 #    file that is not FFTW wisdom (exit 2, the file unchanged) and still writes
 #    real wisdom.
 #  5 tolerances outside [1e-15, 1e-4] are refused by every command (chain,
-#    falcon, wavespeed, softwall, dispersion, sweep); options with no effect
+#    falcon, wavespeed, softwall, dispersion, drop, sweep); options with no effect
 #    (--gamma without --damping kk, --alpha without hc, --restitution-v without
 #    --restitution, softwall --sheets with --kwall / --sheet / --wall-material)
 #    are refused, naming the option.
@@ -83,7 +83,7 @@ refused "layer-make --out in a missing directory, before the run" 'directory' la
 refused "layer-stats --out under a file, before reading" '[Nn]ot a directory' layer-stats "$SRC/data/measured/layer_walls/results.csv" --out "$tmp/notes.txt/x"
 
 # --- 5: tolerances and options with no effect
-for cmd in "chain --n 2" "falcon --n 1:2 --heights none" "wavespeed --n 6:8 --vimp 0.3" "softwall --n 1:3" "dispersion --n 16 --t-samples 64"; do
+for cmd in "chain --n 2" "falcon --n 1:2 --heights none" "wavespeed --n 6:8 --vimp 0.3" "softwall --n 1:3" "dispersion --n 16 --t-samples 64" "drop --n 2 --t-max 2e-4"; do
     c=${cmd%% *}
     refused "$c --rtol 1" "$c --rtol: 1 is outside" $cmd --rtol 1 --out "$tmp/o"
     refused "$c --atol 1" "$c --atol: 1 is outside" $cmd --atol 1 --out "$tmp/o"

@@ -5,6 +5,8 @@
 #     TMP/figures/, each a non-empty PNG file.
 #  2. plot_falcon.py must exit 2 (not crash) on a missing directory and on a directory
 #     with a required file removed.
+#  2b. notebooks/plot_drop.py draws the committed drop runs (a copy of
+#     data/measured/drop) and exits 2 on a missing directory.
 #  3. Every notebooks/*.ipynb executes headless (nbconvert --execute, Agg backend) with
 #     GRANWAVE set to the binary under test; outputs go to a temp dir, never the repo.
 # Exits non-zero with a message on the first failure. Skips (exit 0) only when
@@ -57,6 +59,24 @@ rc=$?
 [ $rc -eq 2 ] || fail "plot_falcon.py without falcon_runs.csv: exit $rc, expected 2"
 grep -q "falcon_runs.csv" "$tmp/err.log" || fail "plot_falcon.py error does not name the missing file"
 echo "PASS: missing file -> exit 2: $(head -1 "$tmp/err.log")"
+
+# 2b. plot_drop.py on a copy of the committed drop runs (data/measured/drop), and its
+#     refusal of a missing directory
+cp -r "$SRC/data/measured/drop" "$tmp/drop"
+rm -rf "$tmp/drop/figures"
+"$PY" "$SRC/notebooks/plot_drop.py" "$tmp/drop" >"$tmp/plotdrop.log" 2>&1 \
+    || { cat "$tmp/plotdrop.log"; fail "plot_drop.py on the committed runs"; }
+for f in drop_signal drop_impacts; do
+    p="$tmp/drop/figures/$f.png"
+    [ -s "$p" ] && [ "$(head -c 8 "$p" | od -An -tx1 | tr -d ' \n')" = "89504e470d0a1a0a" ] \
+        || fail "plot_drop.py: figure $f.png missing or not a PNG"
+    echo "PASS: plot_drop.py figure $f.png ($(stat -c %s "$p") bytes)"
+done
+"$PY" "$SRC/notebooks/plot_drop.py" "$tmp/no-drop-here" >/dev/null 2>"$tmp/err.log"
+rc=$?
+[ $rc -eq 2 ] && grep -q "no-drop-here" "$tmp/err.log" \
+    || fail "plot_drop.py on a missing directory: exit $rc, $(head -1 "$tmp/err.log")"
+echo "PASS: plot_drop.py missing directory -> exit 2: $(head -1 "$tmp/err.log")"
 
 # 3. every notebook, headless
 shopt -s nullglob

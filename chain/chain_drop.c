@@ -1,0 +1,534 @@
+/*
+ * chain_drop.c: the whole drop of a column on the sensor (gw_chain.h, "the whole
+ * drop"; physics.md 1.1, 1.2, 1.5).
+ *
+ * Equations: the column of chain_model.c (F.11) with gravity g toward the sensor,
+ *   m_i x_i'' = F_i - F_(i-1) + m_i g,   F_(-1) = F = wall (sensor) force,
+ * optionally with Kuwabara-Kono or Hunt-Crossley damping. Released from rest with
+ * bead 1 at height h, the column falls freely (no contact force, every bead at
+ * the same acceleration g), so at the first contact, t = 0, every bead moves at
+ * v_imp = sqrt(2 g h) after t_fall = sqrt(2 h / g); the gaps are those of the
+ * release. From there the solver layer integrates to t_max.
+ *
+ * Peaks without sampling: besides the chain's roots (x_1, every overlap d_i, v_1)
+ * the drop adds one rate function R whose falling zeros with x_1 > 0 are the
+ * maxima of F(t). With a = dv_1/dt from the equations of motion:
+ *   undamped, Hunt-Crossley  F = K x^(3/2) (1 + (3/2) alpha v)
+ *       R = dF/dt / sqrt(x) = (3/2) K [v (1 + (3/2) alpha v) + alpha x a]
+ *   Kuwabara-Kono            F = K x^(3/2) + gamma_w x^(1/2) v
+ *       R = sqrt(x) dF/dt = x ((3/2) K v + gamma_w a) + gamma_w v^2 / 2
+ * (x = x_1, v = v_1, K the sensor coefficient, gamma_w = gamma K / k as in
+ * gw_chain_create). R keeps the sign of dF/dt for x > 0; for x <= 0 it takes its
+ * limit at x = 0+, so that it does not jump when a contact opens or closes. A zero
+ * of R where the force is clamped at 0 (Kuwabara-Kono at the end of a contact) is
+ * not a maximum and is dropped by the condition F > 0.
+ *
+ * Energy ledger: E = kinetic + elastic (2/5) k d^(5/2) + gravity (-m g x, x = 0
+ * at the first contact) + dissipated (integrated as a state), checked at every
+ * sample and event against E(0). Units: SI (m, s, kg, N, J).
+ */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "gw_chain.h"
+
+gw_chain_drop_params gw_chain_drop_params_default(void)
+{
+    gw_chain_drop_params p;
+    memset(&p, 0, sizeof p);
+    p.chain = gw_chain_params_default();
+    p.chain.gravity = 9.81;
+    p.height = 5.1e-3;
+    p.t_max = 10e-3;
+    p.peak_threshold = 0.7;
+    return p;
+}
+
+int gw_chain_drop_params_validate(const gw_chain_drop_params *p, gw_err *err)
+{
+    int rc;
+    if ((rc = gw_check_range(p->height, "height (m)", 0, GW_CHAIN_DROP_H_MAX, err)) != GW_OK)
+        return rc;
+    if (!(p->height > 0))
+        return gw_err_set(err, GW_EINVAL, "height (m): must be > 0, got %g", p->height);
+    if ((rc = gw_check_range(p->chain.gravity, "gravity (m/s^2)", GW_CHAIN_DROP_G_MIN, 1e4, err)) != GW_OK)
+        return rc;
+    if ((rc = gw_check_range(p->t_max, "t-max (s)", 0, GW_CHAIN_DROP_T_MAX, err)) != GW_OK)
+        return rc;
+    if (!(p->t_max > 0))
+        return gw_err_set(err, GW_EINVAL, "t-max (s): must be > 0, got %g", p->t_max);
+    if ((rc = gw_check_range(p->peak_threshold, "peak-threshold (N)", 0, INFINITY, err)) != GW_OK)
+        return rc;
+    for (int i = 0; p->gaps && i < p->chain.n - 1; i++)
+        if (!(p->gaps[i] >= 0 && p->gaps[i] <= GW_CHAIN_DROP_GAP_MAX))
+            return gw_err_set(err, GW_EINVAL, "gap %d (m): %g is outside [0, %g]", i + 1, p->gaps[i],
+                              GW_CHAIN_DROP_GAP_MAX);
+    gw_chain_params q = p->chain;
+    q.v_imp = sqrt(2.0 * q.gravity * p->height);
+    return gw_chain_params_validate(&q, err);
+}
+
+/* The drop's system: the chain's, with the rate function R appended. */
+typedef struct drop_sys {
+    const gw_chain *c;
+    const gw_system *cs;
+    gw_system sys;
+    int n;
+    gw_chain_damping damping;
+    double kw, gw, alpha; /* sensor K, its Kuwabara-Kono constant, Hunt-Crossley alpha */
+    double *ydot;         /* scratch [dim] for the acceleration of bead 1 */
+} drop_sys;
+
+static int drop_roots(double t, const double *y, double *g, void *P)
+{
+    drop_sys *d = P;
+    int rc = d->cs->roots(t, y, g, d->cs->params);
+    if (rc != 0)
+        return rc;
+    double x = y[0] > 0 ? y[0] : 0.0, v = y[1], a = 0.0;
+    if (x > 0 && d->damping != GW_DAMP_NONE) { /* undamped: alpha = 0, a unused */
+        if ((rc = d->cs->rhs(t, y, d->ydot, d->cs->params)) != 0)
+            return rc;
+        a = d->ydot[1];
+    }
+    if (d->damping == GW_DAMP_KUWABARA_KONO)
+        g[d->n + 1] = x * (1.5 * d->kw * v + d->gw * a) + 0.5 * d->gw * v * v;
+    else
+        g[d->n + 1] = 1.5 * d->kw * (v * (1.0 + 1.5 * d->alpha * v) + d->alpha * x * a);
+    return 0;
+}
+
+static int drop_rhs(double t, const double *y, double *yd, void *P)
+{
+    const drop_sys *d = P;
+    return d->cs->rhs(t, y, yd, d->cs->params);
+}
+
+static int drop_rhs_ex(double t, const double *y, double *yd, void *P)
+{
+    const drop_sys *d = P;
+    return d->cs->rhs_ex(t, y, yd, d->cs->params);
+}
+
+static int drop_rhs_im(double t, const double *y, double *yd, void *P)
+{
+    const drop_sys *d = P;
+    return d->cs->rhs_im(t, y, yd, d->cs->params);
+}
+
+static int drop_jac(double t, const double *y, const double *f, gw_band *J, void *P)
+{
+    const drop_sys *d = P;
+    return d->cs->jac(t, y, f, J, d->cs->params);
+}
+
+/* Run state of the drop loop. */
+typedef struct drop_state {
+    const drop_sys *d;
+    const gw_chain_drop_params *p;
+    const gw_chain_run_opts *o;
+    gw_chain_drop_result *r;
+    int n;
+    unsigned char *closed; /* [n]: 0 = sensor, k = beads k, k+1 */
+    double dtol;           /* overlap below which a contact counts as open, m */
+    int in_episode;        /* bead 1 on the sensor */
+    int cap_peaks, cap_impacts;
+    /* the current episode */
+    double ep_start, ep_vin, ep_fmax, ep_tfmax, ep_fsample, ep_tsample;
+    int ep_peaks, ep_cluster, ep_cluster_sample, ep_index;
+    double t_end1, t_start2; /* end of the first episode, start of the second (NaN) */
+} drop_state;
+
+static int cluster_of(const drop_state *st)
+{
+    if (!st->closed[0])
+        return 0;
+    int cl = 1;
+    while (cl < st->n && st->closed[cl])
+        cl++;
+    return cl;
+}
+
+static void episode_start(drop_state *st, double t, const double *y)
+{
+    st->in_episode = 1;
+    st->ep_start = t;
+    st->ep_vin = y[1];
+    st->ep_fmax = st->ep_fsample = -1.0;
+    st->ep_tfmax = st->ep_tsample = NAN;
+    st->ep_peaks = 0;
+    st->ep_cluster = st->ep_cluster_sample = 0;
+    st->ep_index = -1;
+    if (++st->r->n_episodes == 2)
+        st->t_start2 = t;
+}
+
+/* The current episode as an impact record (appended on its first peak, or at
+ * its end when it reached the threshold without a located peak). */
+static int episode_record(drop_state *st)
+{
+    gw_chain_drop_result *r = st->r;
+    if (st->ep_index >= 0)
+        return GW_OK;
+    if (r->n_impacts == st->cap_impacts) {
+        int cap = st->cap_impacts ? 2 * st->cap_impacts : 64;
+        gw_chain_drop_impact *ni = realloc(r->impacts, (size_t)cap * sizeof *ni);
+        if (!ni)
+            return GW_ENOMEM;
+        r->impacts = ni;
+        st->cap_impacts = cap;
+    }
+    st->ep_index = r->n_impacts++;
+    gw_chain_drop_impact *im = &r->impacts[st->ep_index];
+    im->t_start = st->ep_start;
+    im->v_in = st->ep_vin;
+    im->t_end = im->v_out = NAN;
+    im->f_max = 0;
+    im->t_fmax = NAN;
+    im->n_peaks = 0;
+    im->cluster = 0;
+    im->located = 1;
+    return GW_OK;
+}
+
+static void episode_sync(drop_state *st)
+{
+    if (st->ep_index < 0)
+        return;
+    gw_chain_drop_impact *im = &st->r->impacts[st->ep_index];
+    im->n_peaks = st->ep_peaks;
+    if (st->ep_peaks > 0) {
+        im->f_max = st->ep_fmax;
+        im->t_fmax = st->ep_tfmax;
+        im->cluster = st->ep_cluster;
+        im->located = 1;
+    } else {
+        im->f_max = st->ep_fsample;
+        im->t_fmax = st->ep_tsample;
+        im->cluster = st->ep_cluster_sample;
+        im->located = 0;
+    }
+}
+
+/* End of the episode at t (end == 0: still in contact at t_max). */
+static int episode_end(drop_state *st, double t, const double *y, int end)
+{
+    if (!st->in_episode)
+        return GW_OK;
+    st->in_episode = 0;
+    if (end && isnan(st->t_end1))
+        st->t_end1 = t;
+    int rc = GW_OK;
+    if (st->ep_index < 0 && st->ep_fsample >= st->p->peak_threshold && st->ep_fsample > 0)
+        rc = episode_record(st);
+    if (rc == GW_OK && st->ep_index >= 0) {
+        episode_sync(st);
+        gw_chain_drop_impact *im = &st->r->impacts[st->ep_index];
+        im->t_end = end ? t : NAN;
+        im->v_out = end ? y[1] : NAN;
+    }
+    return rc;
+}
+
+static int peak_add(drop_state *st, double t, double f)
+{
+    gw_chain_drop_result *r = st->r;
+    const int n = st->n;
+    int rc = episode_record(st);
+    if (rc != GW_OK)
+        return rc;
+    if (r->n_peaks == st->cap_peaks) {
+        int cap = st->cap_peaks ? 2 * st->cap_peaks : 256;
+        gw_chain_drop_peak *np = realloc(r->peaks, (size_t)cap * sizeof *np);
+        if (np)
+            r->peaks = np;
+        unsigned char *nc = realloc(r->peak_contacts, (size_t)cap * (size_t)n);
+        if (nc)
+            r->peak_contacts = nc;
+        if (!np || !nc)
+            return GW_ENOMEM;
+        st->cap_peaks = cap;
+    }
+    int cl = cluster_of(st);
+    r->peaks[r->n_peaks] = (gw_chain_drop_peak){.t = t, .f = f, .impact = st->ep_index, .cluster = cl};
+    memcpy(r->peak_contacts + (size_t)r->n_peaks * (size_t)n, st->closed, (size_t)n);
+    r->n_peaks++;
+    st->ep_peaks++;
+    if (f > st->ep_fmax) {
+        st->ep_fmax = f;
+        st->ep_tfmax = t;
+        st->ep_cluster = cl;
+    }
+    if (f > r->f_max) {
+        r->f_max = f;
+        r->t_fmax = t;
+    }
+    episode_sync(st);
+    return GW_OK;
+}
+
+/* Contact flags from the state, for transitions the root finders did not report
+ * (see chain_collide.c, reconcile); the sensor's also open and close episodes. */
+static int reconcile(drop_state *st, double t, const double *y)
+{
+    for (int k = 0; k < st->n; k++) {
+        double dd = k == 0 ? y[0] : y[2 * k] - y[2 * k - 2];
+        if (!st->closed[k] && dd > st->dtol) {
+            st->closed[k] = 1;
+            st->r->missed_events++;
+            if (k == 0)
+                episode_start(st, t, y);
+        } else if (st->closed[k] && dd < -st->dtol) {
+            st->closed[k] = 0;
+            st->r->missed_events++;
+            if (k == 0) {
+                int rc = episode_end(st, t, y, 1);
+                if (rc != GW_OK)
+                    return rc;
+            }
+        }
+    }
+    return GW_OK;
+}
+
+static int observe(drop_state *st, double t, const double *y, int is_event)
+{
+    gw_chain_drop_result *r = st->r;
+    double f = gw_chain_wall_force(st->d->c, y);
+    if (st->in_episode && f > st->ep_fsample) {
+        st->ep_fsample = f;
+        st->ep_tsample = t;
+        st->ep_cluster_sample = cluster_of(st);
+    }
+    gw_chain_energy e;
+    gw_chain_energy_of(st->d->c, y, &e);
+    double err = fabs(e.total - r->e0) / r->e0;
+    if (err > r->energy_error)
+        r->energy_error = err;
+    r->e_end = e;
+    if (st->o->sample)
+        return st->o->sample(st->o->sample_ctx, t, y, f, is_event);
+    return 0;
+}
+
+/* Roots at t: contacts, then the state check, then the sensor, then peaks. */
+static int on_roots(drop_state *st, double t, const double *y, const int *roots)
+{
+    gw_chain_drop_result *r = st->r;
+    const int n = st->n;
+    int wall = 0, rc;
+    for (int k = 0; k < n; k++) {
+        if (roots[k] == 0)
+            continue;
+        r->n_events++;
+        if (roots[k] < 0 && st->closed[k]) {
+            st->closed[k] = 0;
+            if (k == 0)
+                wall = -1;
+        } else if (roots[k] > 0 && !st->closed[k]) {
+            st->closed[k] = 1;
+            if (k == 0)
+                wall = 1;
+        }
+    }
+    if (wall > 0)
+        episode_start(st, t, y);
+    else if (wall < 0 && (rc = episode_end(st, t, y, 1)) != GW_OK)
+        return rc;
+    if ((rc = reconcile(st, t, y)) != GW_OK)
+        return rc;
+    if (roots[n + 1] != 0)
+        r->n_events++;
+    if (roots[n + 1] < 0 && st->in_episode && y[0] > 0) {
+        double f = gw_chain_wall_force(st->d->c, y);
+        if (f > 0 && f >= st->p->peak_threshold)
+            return peak_add(st, t, f);
+    }
+    return GW_OK;
+}
+
+/* The first collision by the chain's own code, from the same state, until the
+ * chain's end (every contact open, every pair separating) or, under gravity, at
+ * the latest half way through bead 1's first flight: the chain's end may
+ * otherwise never come, or only after bead 1 fell back on the sensor. */
+static int first_collision(const gw_chain *c, const gw_chain_drop_params *p,
+                           const gw_chain_run_opts *o, const double *y0, const drop_state *st,
+                           gw_chain_drop_result *r, gw_err *err)
+{
+    gw_chain_run_opts o1 = *o;
+    o1.sample = NULL;
+    o1.sample_ctx = NULL;
+    o1.dt_out = 0;
+    o1.t_max = isnan(st->t_start2) ? p->t_max : 0.5 * (st->t_end1 + st->t_start2);
+    o1.y0 = y0;
+    int rc = gw_chain_collide(c, &o1, &r->first, err);
+    r->first_status = rc;
+    return rc == GW_ELIMIT ? GW_OK : rc;
+}
+
+static int drop_loop(drop_state *st, gw_solver *s, double *y, int *roots, gw_err *err)
+{
+    gw_chain_drop_result *r = st->r;
+    const double t_max = st->p->t_max;
+    double dt_out = st->o->dt_out > 0 ? st->o->dt_out : 1e-6;
+    double t = 0.0;
+    long k_out = 1;
+    int rc = GW_OK, sr = 0;
+    if ((sr = observe(st, t, y, 0)) != 0)
+        return sr < 0 ? gw_err_set(err, sr, "drop: the sample callback failed at t = 0") : GW_OK;
+    while (t < t_max) {
+        double tnext = fmin((double)k_out * dt_out, t_max);
+        rc = gw_solver_advance(s, tnext, &t, y, roots);
+        if (rc < 0) {
+            gw_err_set(err, rc, "drop: %s", gw_solver_error(s));
+            break;
+        }
+        if (rc == GW_ROOT) {
+            if ((rc = on_roots(st, t, y, roots)) != GW_OK)
+                break;
+            if ((sr = observe(st, t, y, 1)) != 0)
+                break;
+            if ((rc = gw_solver_reset(s, t, y)) != GW_OK) {
+                gw_err_set(err, rc, "drop: %s", gw_solver_error(s));
+                break;
+            }
+        } else {
+            /* the backends may return within rounding of tnext (CVODE's
+             * interpolation, 1e-17 s here): tnext was reached, and t_max must be */
+            t = tnext;
+            if ((rc = reconcile(st, t, y)) != GW_OK)
+                break;
+            if ((sr = observe(st, t, y, 0)) != 0)
+                break;
+            k_out++;
+        }
+        rc = GW_OK;
+        if (st->o->energy_tol > 0 && r->energy_error > st->o->energy_tol) {
+            rc = gw_err_set(err, GW_EENERGY,
+                            "drop: relative energy error %.3g exceeds the limit %.3g at t = %.9g s",
+                            r->energy_error, st->o->energy_tol, t);
+            break;
+        }
+    }
+    if (sr != 0) /* the sample callback stopped the run (< 0: it failed) */
+        rc = sr < 0 ? gw_err_set(err, sr, "drop: the sample callback failed at t = %.9g s", t)
+                    : GW_OK;
+    else if (rc == GW_ENOMEM)
+        gw_err_set(err, rc, "drop: out of memory for the peaks");
+    r->t_end = t;
+    if (st->in_episode) { /* still on the sensor: the episode counts as it stands */
+        int rc2 = episode_end(st, t, y, 0);
+        if (rc == GW_OK && rc2 != GW_OK)
+            rc = gw_err_set(err, rc2, "drop: out of memory for the impacts");
+    }
+    return rc;
+}
+
+int gw_chain_drop_run(const gw_chain_drop_params *p, const gw_chain_run_opts *o,
+                      gw_chain_drop_result *r, gw_err *err)
+{
+    memset(r, 0, sizeof *r);
+    r->f_max = 0;
+    r->t_fmax = NAN;
+    int rc = gw_chain_drop_params_validate(p, err);
+    if (rc != GW_OK)
+        return rc;
+    const int n = p->chain.n;
+    const double g = p->chain.gravity;
+    gw_chain_params q = p->chain;
+    q.v_imp = sqrt(2.0 * g * p->height);
+    r->n = n;
+    r->v_imp = q.v_imp;
+    r->t_fall = sqrt(2.0 * p->height / g);
+
+    gw_chain *c = NULL;
+    gw_solver *s = NULL;
+    drop_sys d;
+    memset(&d, 0, sizeof d);
+    drop_state st = {.d = &d, .p = p, .o = o, .r = r, .n = n, .t_end1 = NAN, .t_start2 = NAN};
+    double *y = NULL, *y0 = NULL;
+    int *roots = NULL;
+    if ((rc = gw_chain_create(&q, &c, err)) != GW_OK)
+        goto done;
+    d.c = c;
+    d.cs = gw_chain_system(c);
+    d.n = n;
+    d.damping = q.damping;
+    d.kw = q.kwall;
+    d.gw = q.gamma * q.kwall / (q.kc && n > 1 ? q.kc[0] : q.k); /* as gw_chain_create */
+    d.alpha = q.damping == GW_DAMP_HUNT_CROSSLEY ? q.alpha : 0.0;
+    d.sys = *d.cs;
+    d.sys.params = &d;
+    d.sys.rhs = drop_rhs;
+    d.sys.rhs_ex = d.cs->rhs_ex ? drop_rhs_ex : NULL;
+    d.sys.rhs_im = d.cs->rhs_im ? drop_rhs_im : NULL;
+    d.sys.jac = d.cs->jac ? drop_jac : NULL;
+    d.sys.roots = drop_roots;
+    d.sys.nroots = d.cs->nroots + 1;
+    const long dim = d.sys.dim;
+    d.ydot = malloc((size_t)dim * sizeof *d.ydot);
+    y = malloc(2 * (size_t)dim * sizeof *y);
+    y0 = y + dim;
+    roots = calloc((size_t)d.sys.nroots, sizeof *roots);
+    st.closed = calloc((size_t)n, 1);
+    if (!d.ydot || !y || !roots || !st.closed) {
+        rc = gw_err_set(err, GW_ENOMEM, "drop: out of memory for %d beads", n);
+        goto done;
+    }
+    /* the state at the first contact: bead 1 touching, the others above it */
+    gw_chain_initial_state(c, y);
+    for (int i = 1; i < n; i++)
+        y[2 * i] = y[2 * i - 2] - (p->gaps ? p->gaps[i - 1] : 0.0);
+    memcpy(y0, y, (size_t)dim * sizeof *y);
+
+    double m0 = gw_chain_bead_mass(c, 0);
+    double tc = gw_chain_time_scale(&q);
+    st.dtol = 1e-9 * gw_chain_dmax1(m0, q.kwall, q.v_imp);
+    for (int k = 0; k < n; k++)
+        st.closed[k] = (k == 0 ? y[0] : y[2 * k] - y[2 * k - 2]) >= 0;
+    gw_chain_energy e;
+    gw_chain_energy_of(c, y, &e);
+    r->e0 = e.total;
+    r->e_end = e;
+    episode_start(&st, 0.0, y);
+
+    gw_solver_params sp = o->sp;
+    /* as gw_chain_collide: no step may hold a whole contact; the fastest contacts
+     * of the drop are those of the first collision (relative speeds up to about
+     * 2 v_imp, the top beads leaving at < 2 v_imp and returning at that speed) */
+    if (!(sp.dt_max > 0))
+        sp.dt_max = 0.25 * fmin(gw_chain_tau1(m0, q.kwall, 2 * q.v_imp),
+                                gw_chain_tau1(0.5 * m0, q.k, 2 * q.v_imp));
+    const gw_solver_type *type = o->solver ? o->solver : gw_solver_cvode;
+    if (type == gw_solver_rk4 && !(sp.dt > 0))
+        sp.dt = tc / (o->steps_per_tc > 0 ? o->steps_per_tc : 400.0);
+    if ((rc = gw_solver_create(type, &d.sys, &sp, 0.0, y, &s, err)) != GW_OK)
+        goto done;
+    rc = drop_loop(&st, s, y, roots, err);
+    gw_solver_get_stats(s, &r->stats);
+    if (rc == GW_OK)
+        rc = first_collision(c, p, o, y0, &st, r, err);
+done:
+    gw_solver_free(s);
+    gw_chain_free(c);
+    free(d.ydot);
+    free(y);
+    free(roots);
+    free(st.closed);
+    return rc;
+}
+
+void gw_chain_drop_result_free(gw_chain_drop_result *r)
+{
+    if (!r)
+        return;
+    gw_chain_result_free(&r->first);
+    free(r->peaks);
+    free(r->peak_contacts);
+    free(r->impacts);
+    r->peaks = NULL;
+    r->peak_contacts = NULL;
+    r->impacts = NULL;
+    r->n_peaks = r->n_impacts = 0;
+}

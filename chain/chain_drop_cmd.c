@@ -1,0 +1,408 @@
+/*
+ * chain_drop_cmd.c: `granwave drop`, the whole drop of a column on the sensor
+ * (chain_drop.c; physics.md 1.1, 1.2, 1.5). The column is released from rest with
+ * bead 1 at a height h (m) above the sensor; v_imp = sqrt(2 g h) (m/s). Options
+ * shared with `granwave chain` keep their names and meaning; --t-max is the time
+ * followed after the first contact (s), --gravity defaults to 9.81 m/s^2.
+ * Outputs: the sensor signal F(t) (N), every peak and impact (definitions in
+ * gw_chain.h), the first collision as `granwave chain` reports it, the energy
+ * ledger. SI units.
+ */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "chain_falcon.h" /* G_EARTH */
+
+static const char *drop_summary =
+    "The whole drop (Falcon et al. 1998, Fig. 12): a column of N beads released from\n"
+    "rest with bead 1 at a height h above the sensor falls under gravity and is followed\n"
+    "from its first contact (t = 0, v_imp = sqrt(2 g h)) through the first collision,\n"
+    "detachment, free flight and the bounces that follow, up to --t-max. Reports the\n"
+    "sensor signal, every wall-force peak (a located local maximum of the force, at or\n"
+    "above --peak-threshold, with the beads in contact), the impacts (contact episodes\n"
+    "of bead 1 with the sensor whose largest peak reaches the threshold), the first\n"
+    "collision as `granwave chain` reports it, and the energy ledger with gravity and\n"
+    "dissipation. SI units.";
+
+enum { DROP_NOPTS = 5 };
+
+typedef struct drop_cli {
+    chain_cli c;
+    long n;
+    double height, peak_threshold;
+    const char *gap;
+    int block;
+    double *gaps;   /* [n-1] or NULL */
+    double dt_out;  /* resolved signal sampling, s */
+    int n_column;   /* beads of the column (before --block) */
+} drop_cli;
+
+static gw_opt *opt_named(gw_opt *opts, const char *name)
+{
+    return (gw_opt *)gw_cli_find(opts, name);
+}
+
+static void drop_options(drop_cli *d, gw_opt *opts)
+{
+    memset(d, 0, sizeof *d);
+    chain_cli_options(&d->c, opts);
+    d->n = 1;
+    d->height = 5.1e-3;
+    d->peak_threshold = NAN;
+    d->c.gravity = G_EARTH;
+    d->c.t_max = 10e-3;
+    gw_opt *o = opt_named(opts, "gravity");
+    o->help = "gravity toward the sensor, m/s^2, in [1e-3, 1e4] [9.81]";
+    o->lo = GW_CHAIN_DROP_G_MIN;
+    o = opt_named(opts, "t-max");
+    o->help = "time followed after the first contact, s, in [1e-6, 1] [10e-3, the paper's Fig. 12]";
+    o->lo = 1e-6;
+    o->hi = GW_CHAIN_DROP_T_MAX;
+    o = opt_named(opts, "dt-out");
+    o->help = "sampling interval of the signal, s, in [t-max/1e7, t-max] [0 = 1e-6]; peaks and impacts do not depend on it";
+    int k = CHAIN_CLI_NOPTS;
+    opts[k++] = (gw_opt){.name = "n", .kind = GW_OPT_LONG, .dest = &d->n, .metavar = "N",
+                         .help = "number of beads [1]", .lo = 1, .hi = 100000};
+    opts[k++] = (gw_opt){.name = "height", .kind = GW_OPT_DOUBLE, .dest = &d->height, .metavar = "H",
+                         .help = "fall of bead 1 to the sensor, m, in [1e-6, 1] [5.1e-3]",
+                         .lo = 1e-6, .hi = GW_CHAIN_DROP_H_MAX};
+    opts[k++] = (gw_opt){.name = "gap", .kind = GW_OPT_STRING, .dest = &d->gap, .metavar = "G,G..",
+                         .help = "initial gap between neighbouring beads, m, in [0, 0.1]: one value for every pair or n-1 values, bead 1 first [0 = touching]"};
+    opts[k++] = (gw_opt){.name = "block", .kind = GW_OPT_FLAG, .dest = &d->block,
+                         .help = "drop one rigid block instead: a single bead of the column's total mass with bead 1's contact law"};
+    opts[k++] = (gw_opt){.name = "peak-threshold", .kind = GW_OPT_DOUBLE, .dest = &d->peak_threshold,
+                         .metavar = "F", .help = "smallest peak force, N, in [0, 1e9] [1 % of F_max(1) (F.13) at v_imp; 0 = every maximum]",
+                         .lo = 0, .hi = 1e9};
+    opts[k] = (gw_opt){0};
+}
+
+/* Everything the drop needs beyond chain_cli_resolve; GW_EINVAL naming the flag. */
+static int drop_resolve(drop_cli *d, gw_opt *opts, gw_err *err)
+{
+    chain_cli *c = &d->c;
+    int n = (int)d->n, rc;
+    if (d->gap) {
+        int ng = 0;
+        if ((rc = gw_parse_double_list_in(d->gap, "drop --gap", 0, GW_CHAIN_DROP_GAP_MAX, 0, &d->gaps,
+                                          &ng, err)) != GW_OK)
+            return rc;
+        if (n < 2 || d->block)
+            return gw_err_set(err, GW_EINVAL, "drop --gap: has no effect with %s",
+                              d->block ? "--block" : "one bead");
+        if (ng != 1 && ng != n - 1)
+            return gw_err_set(err, GW_EINVAL, "drop --gap: %d values for %d pairs (give 1 or %d)",
+                              ng, n - 1, n - 1);
+        if (ng == 1) {
+            double g = d->gaps[0];
+            double *all = realloc(d->gaps, (size_t)(n - 1) * sizeof *all);
+            if (!all)
+                return gw_err_set(err, GW_ENOMEM, "drop --gap: out of memory");
+            d->gaps = all;
+            for (int i = 0; i < n - 1; i++)
+                all[i] = g;
+        }
+    }
+    c->params.n = n;
+    c->params.v_imp = sqrt(2.0 * c->gravity * d->height);
+    if ((rc = chain_cli_resolve(c, opts, "drop", err)) != GW_OK)
+        return rc;
+    d->n_column = n;
+    if (d->block) { /* one body of the column's mass, bead 1's contact constants */
+        gw_chain_params *p = &c->params;
+        double mtot = 0;
+        for (int i = 0; i < n; i++)
+            mtot += p->masses ? p->masses[i] : p->mass;
+        p->mass = mtot;
+        p->n = 1;
+        p->masses = NULL;
+        p->kc = NULL;
+    }
+    double t_max = c->run.t_max;
+    d->dt_out = c->dt_out > 0 ? c->dt_out : fmin(1e-6, t_max);
+    if (d->dt_out < t_max * 1e-7 || d->dt_out > t_max)
+        return gw_err_set(err, GW_EINVAL, "drop --dt-out: %g s is outside [t-max/1e7, t-max] = [%g, %g]",
+                          d->dt_out, t_max * 1e-7, t_max);
+    c->run.dt_out = d->dt_out;
+    if (!opt_named(opts, "peak-threshold")->seen)
+        d->peak_threshold = 0.01 * gw_chain_fmax1(c->params.mass, c->params.kwall, c->params.v_imp);
+    return GW_OK;
+}
+
+static gw_chain_drop_params drop_params(const drop_cli *d)
+{
+    gw_chain_drop_params p = gw_chain_drop_params_default();
+    p.chain = d->c.params;
+    p.height = d->height;
+    p.gaps = d->block ? NULL : d->gaps;
+    p.t_max = d->c.run.t_max;
+    p.peak_threshold = d->peak_threshold;
+    return p;
+}
+
+static cJSON *settings_json(const drop_cli *d)
+{
+    cJSON *o = chain_cli_settings_json(&d->c);
+    cJSON *dr = cJSON_AddObjectToObject(o, "drop");
+    cJSON_AddNumberToObject(dr, "n_column", d->n_column);
+    cJSON_AddBoolToObject(dr, "block", d->block);
+    cJSON_AddNumberToObject(dr, "height", d->height);
+    cJSON_AddNumberToObject(dr, "gravity", d->c.params.gravity);
+    if (d->gaps && !d->block)
+        cJSON_AddItemToObject(dr, "gaps", gw_json_doubles(d->gaps, d->n_column - 1));
+    else
+        cJSON_AddItemToObject(dr, "gaps", cJSON_CreateArray());
+    cJSON_AddNumberToObject(dr, "t_max", d->c.run.t_max);
+    cJSON_AddNumberToObject(dr, "dt_out", d->dt_out);
+    cJSON_AddNumberToObject(dr, "peak_threshold", d->peak_threshold);
+    return o;
+}
+
+static void contacts_string(const gw_chain_drop_result *r, int j, char *buf)
+{
+    const unsigned char *cl = r->peak_contacts + (size_t)j * (size_t)r->n;
+    for (int k = 0; k < r->n; k++)
+        buf[k] = cl[k] ? '1' : '0';
+    buf[r->n] = '\0';
+}
+
+/* Impacts whose largest force exceeds the previous impact's. */
+static int count_rises(const gw_chain_drop_result *r)
+{
+    int rises = 0;
+    for (int j = 1; j < r->n_impacts; j++)
+        rises += r->impacts[j].f_max > r->impacts[j - 1].f_max;
+    return rises;
+}
+
+static cJSON *result_json(const drop_cli *d, const gw_chain_drop_result *r, double wall_ms,
+                          char *buf)
+{
+    const chain_cli *c = &d->c;
+    cJSON *o = cJSON_CreateObject();
+    cJSON_AddStringToObject(o, "version", gw_version());
+    cJSON_AddStringToObject(o, "command", "drop");
+    cJSON_AddNumberToObject(o, "n", r->n);
+    cJSON_AddBoolToObject(o, "block", d->block);
+    cJSON_AddNumberToObject(o, "height", d->height);
+    cJSON_AddNumberToObject(o, "v_imp", r->v_imp);
+    cJSON_AddNumberToObject(o, "t_fall", r->t_fall);
+    cJSON_AddStringToObject(o, "solver", c->solver);
+    cJSON_AddNumberToObject(o, "t_max", c->run.t_max);
+    cJSON_AddNumberToObject(o, "peak_threshold", d->peak_threshold);
+    cJSON_AddNumberToObject(o, "n_impacts", r->n_impacts);
+    cJSON_AddNumberToObject(o, "n_contact_episodes", r->n_episodes);
+    cJSON_AddNumberToObject(o, "n_peaks", r->n_peaks);
+    cJSON_AddNumberToObject(o, "f_max", r->f_max);
+    cJSON_AddNumberToObject(o, "t_fmax", r->t_fmax);
+    int rises = count_rises(r);
+    cJSON_AddNumberToObject(o, "impact_rises", rises);
+    cJSON_AddBoolToObject(o, "impacts_monotone", rises == 0);
+    cJSON *imp = cJSON_AddArrayToObject(o, "impacts");
+    for (int j = 0; j < r->n_impacts; j++) {
+        const gw_chain_drop_impact *im = &r->impacts[j];
+        cJSON *e = cJSON_CreateObject();
+        cJSON_AddNumberToObject(e, "t_start", im->t_start);
+        cJSON_AddNumberToObject(e, "t_end", im->t_end);
+        cJSON_AddNumberToObject(e, "f_max", im->f_max);
+        cJSON_AddNumberToObject(e, "t_fmax", im->t_fmax);
+        cJSON_AddNumberToObject(e, "v_in", im->v_in);
+        cJSON_AddNumberToObject(e, "v_out", im->v_out);
+        cJSON_AddNumberToObject(e, "n_peaks", im->n_peaks);
+        cJSON_AddNumberToObject(e, "cluster", im->cluster);
+        cJSON_AddBoolToObject(e, "located", im->located);
+        cJSON_AddItemToArray(imp, e);
+    }
+    cJSON *pk = cJSON_AddArrayToObject(o, "wall_peaks");
+    for (int j = 0; j < r->n_peaks; j++) {
+        const gw_chain_drop_peak *p = &r->peaks[j];
+        cJSON *e = cJSON_CreateObject();
+        cJSON_AddNumberToObject(e, "t", p->t);
+        cJSON_AddNumberToObject(e, "f", p->f);
+        cJSON_AddNumberToObject(e, "impact", p->impact);
+        cJSON_AddNumberToObject(e, "cluster", p->cluster);
+        contacts_string(r, j, buf);
+        cJSON_AddStringToObject(e, "contacts", buf);
+        cJSON_AddItemToArray(pk, e);
+    }
+    cJSON_AddItemToObject(o, "first_collision", chain_result_json(c, &r->first, NAN));
+    cJSON_AddNumberToObject(o, "energy_error", r->energy_error);
+    cJSON *en = cJSON_AddObjectToObject(o, "energy");
+    cJSON_AddNumberToObject(en, "e0", r->e0);
+    cJSON_AddNumberToObject(en, "kinetic", r->e_end.kinetic);
+    cJSON_AddNumberToObject(en, "elastic", r->e_end.elastic);
+    cJSON_AddNumberToObject(en, "gravity", r->e_end.gravity);
+    cJSON_AddNumberToObject(en, "dissipated", r->e_end.dissipated);
+    cJSON_AddNumberToObject(en, "total", r->e_end.total);
+    cJSON_AddNumberToObject(o, "t_end", r->t_end);
+    cJSON_AddNumberToObject(o, "events", (double)r->n_events);
+    cJSON_AddNumberToObject(o, "missed_events", (double)r->missed_events);
+    cJSON_AddNumberToObject(o, "steps", (double)r->stats.steps);
+    cJSON_AddNumberToObject(o, "rhs_evals", (double)r->stats.rhs_evals);
+    cJSON_AddNumberToObject(o, "restarts", (double)r->stats.restarts);
+    cJSON_AddNumberToObject(o, "wall_time_ms", wall_ms);
+    cJSON_AddItemToObject(o, "settings", settings_json(d));
+    return o;
+}
+
+static void print_text(const drop_cli *d, const gw_chain_drop_result *r)
+{
+    const gw_chain_params *p = &d->c.params;
+    printf("granwave %s drop: n = %d%s, h = %g m (v_imp = %.6g m/s, fall %.6g ms), solver %s\n",
+           gw_version(), r->n, d->block ? " (rigid block)" : "", d->height, r->v_imp,
+           r->t_fall * 1e3, d->c.solver);
+    printf("  m = %.6g kg, k = %.6g N/m^1.5, K = %.6g N/m^1.5, g = %g m/s^2, damping %s\n",
+           p->mass, p->k, p->kwall, p->gravity, d->c.damping);
+    printf("  first collision  F_max %.6g N at %.6g us, tau_N %.6g us, eps_eff %.6g\n",
+           r->first.f_max, r->first.tau_max * 1e6, r->first.tau_n * 1e6, r->first.eps_eff);
+    printf("  over %.6g ms     %d impacts (%d contact episodes), %d peaks >= %.3g N, "
+           "%d impact(s) above the previous one\n",
+           r->t_end * 1e3, r->n_impacts, r->n_episodes, r->n_peaks, d->peak_threshold,
+           count_rises(r));
+    printf("  energy           max relative error %.3g; dissipated %.4g of %.4g J\n",
+           r->energy_error, r->e_end.dissipated, r->e0);
+    printf("  impact      t (ms)     F_max (N)  cluster  peaks\n");
+    for (int j = 0; j < r->n_impacts; j++)
+        printf("  %6d  %10.5f  %12.5g  %7d  %5d\n", j + 1, r->impacts[j].t_fmax * 1e3,
+               r->impacts[j].f_max, r->impacts[j].cluster, r->impacts[j].n_peaks);
+}
+
+static int write_tables(const drop_cli *d, const gw_chain_drop_result *r, const char *hdr,
+                        char *buf, gw_err *err)
+{
+    char path[4096];
+    gw_afile f;
+    int rc;
+    if (gw_path_join(path, sizeof path, d->c.out, "drop_peaks.csv") != GW_OK)
+        return gw_err_set(err, GW_EINVAL, "drop --out: path too long");
+    if ((rc = gw_afile_open(&f, path, err)) != GW_OK)
+        return rc;
+    for (const char *s = hdr; *s;) {
+        const char *nl = strchr(s, '\n');
+        int len = nl ? (int)(nl - s) : (int)strlen(s);
+        fprintf(f.fp, "# %.*s\n", len, s);
+        s += len + (nl ? 1 : 0);
+    }
+    fprintf(f.fp, "# peak: located local maximum of the sensor force with F >= peak_threshold; "
+                  "contacts: one digit per contact, sensor first (1 = closed)\n");
+    fprintf(f.fp, "t_s,f_N,impact,cluster,contacts\n");
+    for (int j = 0; j < r->n_peaks; j++) {
+        contacts_string(r, j, buf);
+        fprintf(f.fp, "%.12e,%.12e,%d,%d,%s\n", r->peaks[j].t, r->peaks[j].f, r->peaks[j].impact,
+                r->peaks[j].cluster, buf);
+    }
+    if ((rc = gw_afile_commit(&f, err)) != GW_OK)
+        return rc;
+    if (gw_path_join(path, sizeof path, d->c.out, "drop_impacts.csv") != GW_OK)
+        return gw_err_set(err, GW_EINVAL, "drop --out: path too long");
+    if ((rc = gw_afile_open(&f, path, err)) != GW_OK)
+        return rc;
+    for (const char *s = hdr; *s;) {
+        const char *nl = strchr(s, '\n');
+        int len = nl ? (int)(nl - s) : (int)strlen(s);
+        fprintf(f.fp, "# %.*s\n", len, s);
+        s += len + (nl ? 1 : 0);
+    }
+    fprintf(f.fp, "# impact: contact episode of bead 1 with the sensor whose largest peak is >= "
+                  "peak_threshold; t_end and v_out empty (nan) while in contact at t_max\n");
+    fprintf(f.fp, "impact,t_start_s,t_end_s,f_max_N,t_fmax_s,v_in_m_s,v_out_m_s,n_peaks,cluster,located\n");
+    for (int j = 0; j < r->n_impacts; j++) {
+        const gw_chain_drop_impact *im = &r->impacts[j];
+        fprintf(f.fp, "%d,%.12e,%.12e,%.12e,%.12e,%.12e,%.12e,%d,%d,%d\n", j, im->t_start, im->t_end,
+                im->f_max, im->t_fmax, im->v_in, im->v_out, im->n_peaks, im->cluster, im->located);
+    }
+    return gw_afile_commit(&f, err);
+}
+
+static char *drop_header(const drop_cli *d, int argc, char **argv)
+{
+    char *h = chain_cli_header(&d->c, "drop", argc, argv);
+    cJSON *s = settings_json(d);
+    cJSON *dr = cJSON_GetObjectItem(s, "drop");
+    char *js = dr ? cJSON_PrintUnformatted(dr) : NULL;
+    char *out = NULL;
+    if (h && js) {
+        size_t len = strlen(h) + strlen(js) + 16;
+        out = malloc(len);
+        if (out)
+            snprintf(out, len, "%s\ndrop: %s", h, js);
+    }
+    free(js);
+    free(h);
+    cJSON_Delete(s);
+    return out;
+}
+
+static int write_outputs(const drop_cli *d, const gw_chain_drop_result *r, const gw_chain_trace *tr,
+                         double wall_ms, int argc, char **argv, char *buf, gw_err *err)
+{
+    char *hdr = drop_header(d, argc, argv);
+    if (!hdr)
+        return gw_err_set(err, GW_ENOMEM, "drop --out: out of memory");
+    char path[4096];
+    int rc = gw_mkdir_p(d->c.out, err);
+    if (rc == GW_OK)
+        rc = gw_chain_trace_write(tr, d->c.out, "drop", hdr, err);
+    if (rc == GW_OK)
+        rc = write_tables(d, r, hdr, buf, err);
+    if (rc == GW_OK) {
+        cJSON *o = result_json(d, r, wall_ms, buf);
+        if (gw_path_join(path, sizeof path, d->c.out, "drop.json") != GW_OK)
+            rc = gw_err_set(err, GW_EINVAL, "drop --out: path too long");
+        else
+            rc = gw_json_write(path, o, err);
+        cJSON_Delete(o);
+    }
+    free(hdr);
+    return rc;
+}
+
+int gw_cmd_drop(int argc, char **argv)
+{
+    drop_cli d;
+    gw_opt opts[CHAIN_CLI_NOPTS + DROP_NOPTS + 1];
+    drop_options(&d, opts);
+    int done = chain_cli_parse("drop", "granwave drop [options]", drop_summary, opts, argc, argv);
+    if (done >= 0)
+        return done;
+    gw_err err = {{0}};
+    if (drop_resolve(&d, opts, &err) != GW_OK) {
+        free(d.gaps);
+        chain_cli_free(&d.c);
+        return chain_cli_fail(err.msg);
+    }
+    gw_chain_drop_params p = drop_params(&d);
+    gw_chain_trace tr;
+    gw_chain_trace_init(&tr, p.chain.n);
+    if (d.c.out) {
+        d.c.run.sample = gw_chain_trace_sample;
+        d.c.run.sample_ctx = &tr;
+    }
+    gw_chain_drop_result r;
+    double t0 = gw_clock_ms();
+    int rc = gw_chain_drop_run(&p, &d.c.run, &r, &err);
+    double wall_ms = gw_clock_ms() - t0;
+    int code = 0;
+    char *buf = malloc((size_t)p.chain.n + 1);
+    if (!buf && rc == GW_OK)
+        rc = gw_err_set(&err, GW_ENOMEM, "drop: out of memory");
+    if (rc != GW_OK) {
+        fprintf(stderr, "granwave drop: %s\n", err.msg);
+        code = rc == GW_EINVAL ? 2 : 1;
+    } else if (d.c.out && write_outputs(&d, &r, &tr, wall_ms, argc, argv, buf, &err) != GW_OK) {
+        fprintf(stderr, "granwave drop --out: %s\n", err.msg);
+        code = 1;
+    } else if (d.c.json) {
+        cJSON *o = result_json(&d, &r, wall_ms, buf);
+        gw_json_print(o, stdout);
+        cJSON_Delete(o);
+    } else {
+        print_text(&d, &r);
+    }
+    free(buf);
+    gw_chain_drop_result_free(&r);
+    gw_chain_trace_free(&tr);
+    free(d.gaps);
+    chain_cli_free(&d.c);
+    return code;
+}

@@ -105,6 +105,10 @@ static int drop_resolve(drop_cli *d, gw_opt *opts, gw_err *err)
     }
     c->params.n = n;
     c->params.v_imp = sqrt(2.0 * c->gravity * d->height);
+    /* the drop's own defaults (gravity 9.81, t-max 10 ms) count as given: the
+     * resolution takes only given options over the column table's defaults */
+    opt_named(opts, "gravity")->seen = 1;
+    opt_named(opts, "t-max")->seen = 1;
     if ((rc = chain_cli_resolve(c, opts, "drop", err)) != GW_OK)
         return rc;
     d->n_column = n;

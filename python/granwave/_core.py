@@ -160,7 +160,7 @@ def _text(p, value):
 
 
 class Study:
-    """A study of the library's index (lib/gw_study.h)."""
+    """A study of the library's index (app/lib/gw_study.h)."""
 
     def __init__(self, name):
         ptr = lib.gw_study_find(name.encode())

@@ -42,7 +42,7 @@ RUN_FN = ctypes.CFUNCTYPE(ctypes.c_int, ctypes.c_void_p, ctypes.c_void_p, PROGRE
 
 
 class GwStudy(ctypes.Structure):
-    """Mirror of gw_study (lib/gw_study.h)."""
+    """Mirror of gw_study (app/lib/gw_study.h)."""
     _fields_ = [("name", ctypes.c_char_p), ("summary", ctypes.c_char_p), ("params", TABLE_FN),
                 ("params_size", ctypes.c_size_t), ("init", INIT_FN), ("clear", CLEAR_FN),
                 ("fields", TABLE_FN), ("fields_size", ctypes.c_size_t), ("run", RUN_FN),

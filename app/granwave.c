@@ -9,9 +9,11 @@
 #include <string.h>
 
 #include "gw_chain.h"
-#include "gw_sweep.h"
+#include "chain_commands.h"
+#include "sweep_cmd.h"
 #if GW_HAVE_LAYER
 #include "gw_layer.h"
+#include "layer_commands.h"
 #endif
 
 static int cmd_sweep(int argc, char **argv)

@@ -19,7 +19,8 @@
 #include <time.h>
 #include <unistd.h>
 
-#include "gw_sweep.h"
+#include "gw_cli.h"
+#include "sweep_cmd.h"
 #if GW_HAVE_MPI
 #include <mpi.h>
 #endif

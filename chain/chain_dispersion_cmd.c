@@ -15,6 +15,7 @@
 
 #include <fftw3.h>
 
+#include "gw_cli.h"
 #include "chain_options.h"
 
 /* ---- `granwave dispersion` ---- */

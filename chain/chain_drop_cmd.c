@@ -12,6 +12,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "gw_cli.h"
+#include "chain_commands.h"
 #include "chain_falcon.h" /* G_EARTH */
 
 static const char *drop_summary =

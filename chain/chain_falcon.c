@@ -16,6 +16,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "gw_cli.h"
+#include "chain_commands.h"
 #include "chain_falcon.h"
 #include "gw_chain_study.h"
 

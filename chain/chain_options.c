@@ -15,6 +15,7 @@
 #include <string.h>
 
 #include "chain_falcon.h" /* G_EARTH: falcon's --heights are drop heights in mm */
+#include "gw_cli.h"
 #include "gw_chain_study.h"
 
 /* Every impact speed of the command: --vimp (one value, or a list for falcon and

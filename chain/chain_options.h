@@ -6,7 +6,9 @@
 #ifndef GW_CHAIN_OPTIONS_H
 #define GW_CHAIN_OPTIONS_H
 
+#include "gw_cli.h"
 #include "gw_chain.h"
+#include "chain_commands.h"
 
 typedef struct chain_cli {
     /* raw option values */

@@ -20,6 +20,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "gw_cli.h"
 #include "chain_options.h"
 
 #define SATURATION_RUN 6

@@ -7,6 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "gw_cli.h"
 #include "chain_options.h"
 #include "gw_sweep.h"
 

@@ -26,6 +26,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "gw_cli.h"
 #include "chain_options.h"
 
 typedef struct ws_fit {

@@ -472,13 +472,4 @@ void gw_chain_drop_result_free(gw_chain_drop_result *r);
 struct gw_sweep_model;
 extern const struct gw_sweep_model gw_chain_sweep_model;
 
-/* ---- program commands ---- */
-
-int gw_cmd_chain(int argc, char **argv);
-int gw_cmd_falcon(int argc, char **argv);
-int gw_cmd_wavespeed(int argc, char **argv);
-int gw_cmd_softwall(int argc, char **argv);
-int gw_cmd_dispersion(int argc, char **argv);
-int gw_cmd_drop(int argc, char **argv);
-
 #endif

@@ -5,6 +5,7 @@
 #include <math.h>
 #include <string.h>
 
+#include "gw_cli.h"
 #include "gw_common.h"
 
 const gw_opt *gw_cli_find(const gw_opt *opts, const char *name)

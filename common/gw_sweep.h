@@ -57,8 +57,6 @@ typedef struct gw_sweep_model {
     int (*check)(int nkeys, const char *const *names, const char *const *values, gw_err *err);
 } gw_sweep_model;
 
-/* The `granwave sweep` command over the given models. */
-int gw_cmd_sweep(int argc, char **argv, const gw_sweep_model *const *models, int nmodels);
 
 /* Parse path. Errors (exit code 2 material): unreadable file, syntax error or
  * unknown section/key with "path:line: ..." in err, empty grid values, a grid

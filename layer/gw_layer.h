@@ -415,24 +415,11 @@ int gw_layer_impact_write_h5(const gw_layer_impact_result *res, const char *path
  * wave-speed fields of res. */
 int gw_layer_crowns(gw_layer_impact_result *res);
 
-/* ------------------------------------------------------------- commands ---- */
-
-int gw_cmd_layer_make(int argc, char **argv);
-int gw_cmd_layer_impact(int argc, char **argv);
-/* `granwave layer-stats RESULTS.csv`: statistics, binary-impact check and
- * bouncing-occurrence diagram of a layer sweep table (layer_stats.c). */
-int gw_cmd_layer_stats(int argc, char **argv);
-
 /* The `layer` model of `granwave sweep` (layer_sweep_model.c): keys are the
  * options of layer-impact plus point, points and spacing; one row per impact.
  * (struct gw_sweep_model is defined in gw_sweep.h.) */
 struct gw_sweep_model;
 extern const struct gw_sweep_model gw_layer_sweep_model;
 #define GW_LAYER_SWEEP_MODEL gw_layer_sweep_model
-
-#define GW_LAYER_COMMANDS                                                           \
-    {"layer-make", gw_cmd_layer_make, "pluviate a 2D granular sample (Bourrier 2008)"}, \
-    {"layer-impact", gw_cmd_layer_impact, "one block impact on a 2D granular layer"}, \
-    {"layer-stats", gw_cmd_layer_stats, "statistics and bouncing diagram of a layer sweep table"},
 
 #endif

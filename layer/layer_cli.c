@@ -9,6 +9,7 @@
 #include <math.h>
 #include <string.h>
 
+#include "gw_cli.h"
 #include "layer_cli.h"
 
 int layer_mat_options(layer_mat_cli *m, gw_opt *o)

@@ -7,7 +7,9 @@
 #ifndef GW_LAYER_CLI_H
 #define GW_LAYER_CLI_H
 
+#include "gw_cli.h"
 #include "gw_layer.h"
+#include "layer_commands.h"
 
 #define OPT_D(nm, dst, mv, hl, lo_, hi_, open_)                                          \
     (gw_opt) { .name = nm, .kind = GW_OPT_DOUBLE, .dest = dst, .metavar = mv, .help = hl, \

@@ -12,6 +12,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "gw_cli.h"
 #include "layer_cli.h"
 
 static cJSON *mat_json(const gw_layer_params *p)

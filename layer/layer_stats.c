@@ -23,7 +23,9 @@
 #include <string.h>
 #include <strings.h>
 
+#include "gw_cli.h"
 #include "gw_layer.h"
+#include "layer_commands.h"
 #include "layer_stats.h"
 
 static const char *summary =

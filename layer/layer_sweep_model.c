@@ -31,6 +31,7 @@
 #include <string.h>
 #include <strings.h>
 
+#include "gw_cli.h"
 #include "gw_sweep.h"
 #include "layer_cli.h"
 

@@ -8,6 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "gw_cli.h"
 #include "gw_common.h"
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)

@@ -22,7 +22,9 @@
  *     interpolant is the correlation of the underlying continuous signals
  *     (sampled products of band-limited functions keep Parseval's identity), so
  *     the peak is exact; the remaining error is the series' aliasing and noise.
- * Normalised peak rho = c[L*] / sqrt(sum a^2 sum b^2) (|rho| <= 1, Cauchy-Schwarz).
+ * Normalised peak rho = c(peak) / sqrt(sum a^2 sum b^2), c(peak) the refined
+ * value (|rho| <= 1 at integer lags by Cauchy-Schwarz, and for band-limited
+ * series between them; so 1 for a series and its shifted copy).
  * One-sided PSD on the padded grid f_l = l / (M dt), l = 0 .. M/2:
  *   P_l = g_l dt |A_l|^2 / m,  g_0 = g_{M/2} = 1, g_l = 2 otherwise,
  * so that sum_l P_l df = (1/m) sum_i a_i^2 (Parseval; df = 1 / (M dt)).
@@ -268,6 +270,7 @@ int gw_xcorr_peak_find(gw_xcorr *x, const double *a, const double *b, int m, int
         if (!pk->fallback)
             interp(x, pk->lag, &pk->value, &g0, &h);
     }
+    pk->rho = pk->value / sqrt(e2);
     pk->status = GW_XCORR_PEAK_OK;
     return GW_OK;
 }

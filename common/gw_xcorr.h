@@ -62,7 +62,8 @@ int gw_xcorr_series(gw_xcorr *x, const double *a, const double *b, int m, double
 typedef struct gw_xcorr_peak {
     double lag;   /* lag of the maximum, samples, refined (b behind a: > 0); NaN unless OK */
     double value; /* correlation at lag (interpolated; c at lag_int for EDGE) */
-    double rho;   /* c[lag_int] / sqrt(sum a^2 sum b^2), in [-1, 1]; NaN for ZERO */
+    double rho;   /* value / sqrt(sum a^2 sum b^2): 1 for b a shifted copy of a, |rho| <= 1
+                     (up to the series' aliasing between integer lags); NaN for ZERO */
     int lag_int;  /* integer lag of the largest correlation in the window */
     int status;   /* GW_XCORR_PEAK_* */
     int fallback; /* FOURIER only: 1 when the interpolant was not bracketed around

@@ -94,6 +94,43 @@ static int even_samples(const gw_layer_impact_result *r)
     return dt > 0 ? k : 1;
 }
 
+/* Spectra of ring q's strain and kinetic series (n samples) into r->spec_*;
+ * leaves the ring's total energy in e[n]. ps, pk: scratch of spec_len. */
+static void ring_spectra(gw_layer_impact_result *r, gw_xcorr *xc, int q, int n, double dt, double *e,
+                         double *ps, double *pk)
+{
+    const int nr = r->nrings;
+    for (int i = 0; i < n; i++)
+        e[i] = r->ring_strain[(size_t)i * nr + q];
+    gw_xcorr_psd(xc, e, n, dt, ps, NULL);
+    for (int i = 0; i < n; i++)
+        e[i] = r->ring_kin[(size_t)i * nr + q];
+    gw_xcorr_psd(xc, e, n, dt, pk, NULL);
+    for (int l = 0; l < r->spec_len; l++)
+        r->spec_strain[(size_t)l * nr + q] = ps[l], r->spec_kin[(size_t)l * nr + q] = pk[l];
+    for (int i = 0; i < n; i++)
+        e[i] += r->ring_strain[(size_t)i * nr + q];
+}
+
+/* Speed and error from the used pairs' delays (slow: scratch of nrings). */
+static void pair_speed(gw_layer_impact_result *r, double *slow)
+{
+    int m = 0;
+    for (int q = 1; q + 1 < r->nrings; q++)
+        if (isfinite(r->xcorr_delay[q]))
+            slow[m++] = r->xcorr_delay[q] / (r->ring_r[q + 1] - r->ring_r[q]);
+    r->xcorr_gaps = m;
+    if (m < 2)
+        return;
+    double pm = 0, var = 0;
+    for (int k = 0; k < m; k++)
+        pm += slow[k] / m;
+    for (int k = 0; k < m; k++)
+        var += (slow[k] - pm) * (slow[k] - pm) / (m - 1);
+    r->wave_speed_xcorr = 1 / pm;
+    r->wave_speed_xcorr_err = r->wave_speed_xcorr * sqrt(var / m) / pm;
+}
+
 static int crowns_xcorr(gw_layer_impact_result *r, double thr)
 {
     const int nr = r->nrings, n = even_samples(r);
@@ -105,10 +142,10 @@ static int crowns_xcorr(gw_layer_impact_result *r, double thr)
         return GW_ENOMEM;
     const int nf = gw_xcorr_fft_len(xc) / 2 + 1;
     double *block = malloc((2 * (size_t)nr + 2 * (size_t)nf * nr) * sizeof *block);
-    double *e = malloc((3 * (size_t)n + 2 * (size_t)nf) * sizeof *e);
-    int *counts = malloc((size_t)nr * sizeof *counts);
-    if (!block || !e || !counts) {
-        free(block), free(e), free(counts);
+    double *e = malloc((3 * (size_t)n + 2 * (size_t)nf + (size_t)nr) * sizeof *e);
+    int *used = malloc((size_t)nr * sizeof *used);
+    if (!block || !e || !used) {
+        free(block), free(e), free(used);
         gw_xcorr_free(xc);
         return GW_ENOMEM;
     }
@@ -118,49 +155,26 @@ static int crowns_xcorr(gw_layer_impact_result *r, double thr)
     r->spec_kin = r->spec_strain + (size_t)nf * nr;
     r->spec_len = nf;
     r->spec_df = 1 / (gw_xcorr_fft_len(xc) * dt);
-    double *fprev = e + n, *fcur = e + 2 * (size_t)n, *ps = e + 3 * (size_t)n, *pk = ps + nf;
+    double *fprev = e + n, *fcur = e + 2 * (size_t)n, *ps = e + 3 * (size_t)n, *pk = ps + nf, *slow = pk + nf;
     for (int q = 0; q < nr; q++) {
         r->xcorr_delay[q] = r->xcorr_rho[q] = NAN;
-        for (int i = 0; i < n; i++)
-            e[i] = r->ring_strain[(size_t)i * nr + q];
-        gw_xcorr_psd(xc, e, n, dt, ps, NULL);
-        for (int i = 0; i < n; i++)
-            e[i] = r->ring_kin[(size_t)i * nr + q];
-        gw_xcorr_psd(xc, e, n, dt, pk, NULL);
-        for (int l = 0; l < nf; l++)
-            r->spec_strain[(size_t)l * nr + q] = ps[l], r->spec_kin[(size_t)l * nr + q] = pk[l];
-        for (int i = 0; i < n; i++)
-            e[i] += r->ring_strain[(size_t)i * nr + q];
-        counts[q] = q >= 1 && isfinite(peak_time(r->t, e, n, 1, thr));
+        ring_spectra(r, xc, q, n, dt, e, ps, pk);
+        used[q] = q >= 1 && isfinite(peak_time(r->t, e, n, 1, thr));
         for (int i = 0; i + 1 < n; i++)
             fcur[i] = e[i + 1] - e[i];
-        gw_xcorr_peak p;
-        if (q >= 2 && counts[q - 1] && counts[q] &&
-            gw_xcorr_peak_find(xc, fprev, fcur, n - 1, 0, (n - 2) / 2, GW_XCORR_FOURIER, &p, NULL) == GW_OK &&
-            p.status == GW_XCORR_PEAK_OK) {
-            r->xcorr_delay[q - 1] = p.lag * dt;
-            r->xcorr_rho[q - 1] = p.rho;
+        gw_xcorr_peak pk_q;
+        if (q >= 2 && used[q - 1] && used[q] &&
+            gw_xcorr_peak_find(xc, fprev, fcur, n - 1, 0, (n - 2) / 2, GW_XCORR_FOURIER, &pk_q, NULL) == GW_OK &&
+            pk_q.status == GW_XCORR_PEAK_OK) {
+            r->xcorr_delay[q - 1] = pk_q.lag * dt;
+            r->xcorr_rho[q - 1] = pk_q.rho;
         }
         double *sw = fprev;
         fprev = fcur, fcur = sw;
     }
-    double *p = e; /* slowness of each used pair, s/m */
-    int m = 0;
-    for (int q = 1; q + 1 < nr; q++)
-        if (isfinite(r->xcorr_delay[q]))
-            p[m++] = r->xcorr_delay[q] / (r->ring_r[q + 1] - r->ring_r[q]);
-    r->xcorr_gaps = m;
-    if (m >= 2) {
-        double pm = 0, var = 0;
-        for (int k = 0; k < m; k++)
-            pm += p[k] / m;
-        for (int k = 0; k < m; k++)
-            var += (p[k] - pm) * (p[k] - pm) / (m - 1);
-        r->wave_speed_xcorr = 1 / pm;
-        r->wave_speed_xcorr_err = r->wave_speed_xcorr * sqrt(var / m) / pm;
-    }
+    pair_speed(r, slow);
     free(e);
-    free(counts);
+    free(used);
     gw_xcorr_free(xc);
     return GW_OK;
 }

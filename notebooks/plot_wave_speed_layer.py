@@ -3,7 +3,7 @@
 
     plot_wave_speed_layer.py run DIR [--sample FILE] [--speeds LIST] [--points N]
                                      [--spacing D] [--t-max T] [--mass-law LAW] [--gravity G]
-                                     [--tag NAME]
+                                     [--rings K] [--tag NAME]
     plot_wave_speed_layer.py plot DIR
 
 run: one `granwave layer-impact --full` per (V_i, impact point), in the fast default mode,
@@ -11,12 +11,12 @@ on the sample (default data/measured/restitution_full/sample.txt, the 300-disc s
 sample of the README's layer studies), the block R_b = R_m, normal incidence; N points
 D apart around the box centre (physics.md 2.3). Appends to DIR/impacts.csv (one row per
 impact: the cross-correlation speed wave_speed_xcorr and its error, the peak-picking
-speeds) and DIR/delays.csv (the delay of every ring pair); rows already present (same
+speeds) and DIR/delays.csv (the delay of every ring pair used, 6 digits); rows already present (same
 tag, V_i, x) are skipped, so an interrupted run resumes. Each impact runs under
 `nice -n 10`, one at a time.
 
 plot: reads DIR/impacts.csv and DIR/delays.csv, writes DIR/fit.json and DIR/figures/
-(wave_speed_vs_vi.png, local_speed_vs_r.png). Nothing physical is computed here but
+(wave_speed_vs_vi.png, local_speed_vs_r.png, gravity.png: speeds under 4 g over 1 g). Nothing physical is computed here but
 averages and fits of the program's numbers:
   - per (tag, V_i): mean speed over the impact points and its standard error;
   - power law c = A V_i^beta over 5 <= V_i <= 40 m/s (least squares in log-log,
@@ -52,11 +52,13 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 DEFAULT_SAMPLE = os.path.normpath(os.path.join(HERE, "..", "data", "measured", "restitution_full",
                                                "sample.txt"))
 DEFAULT_SPEEDS = "0.5,1,2,3,5,7,10,14,20,28,40,80,160"
-IMPACT_COLUMNS = ["tag", "mass_law", "gravity", "vi", "x", "wave_speed_xcorr", "wave_speed_xcorr_err",
+IMPACT_COLUMNS = ["tag", "sample", "rings", "mass_law", "gravity", "vi", "x", "wave_speed_xcorr", "wave_speed_xcorr_err",
                   "wave_xcorr_gaps", "wave_speed", "wave_speed_err", "wave_speed_kinetic",
                   "wave_rings", "energy_error", "t_end", "wall_time_ms"]
 DELAY_COLUMNS = ["tag", "vi", "x", "ring", "r_mid", "r_next", "delay", "rho"]
 FIT_RANGE = (5.0, 40.0)
+MAIN_TAGS = ("disc", "disc_r7", "sphere")  # drawn in wave_speed_vs_vi.png when present
+GRAVITY_PAIRS = (("disc_r7", "disc_g4_r7"), ("seed2_r7", "seed2_g4_r7"), ("disc", "disc_g4"))
 PAPER_SPEED = 1000.0  # physics.md 2.5: c = d_c / Delta t is about 1000 m/s
 
 
@@ -67,7 +69,9 @@ class InputError(Exception):
 # ------------------------------------------------------------------ run ----
 
 def _fmt(v):
-    return "nan" if v is None or (isinstance(v, float) and not math.isfinite(v)) else repr(v)
+    if v is None or (isinstance(v, float) and not math.isfinite(v)):
+        return "nan"
+    return f"{v:.9g}" if isinstance(v, float) else str(v)
 
 
 def _existing(path):
@@ -100,6 +104,7 @@ def run(args):
     p.add_argument("--t-max", type=float, default=0.02)
     p.add_argument("--mass-law", default="")
     p.add_argument("--gravity", type=float, default=0.0)
+    p.add_argument("--rings", type=int, default=0)
     p.add_argument("--tag", default="disc")
     a = p.parse_args(args)
     if not os.path.isfile(a.sample):
@@ -129,19 +134,23 @@ def run(args):
                 cmd += ["--mass-law", a.mass_law]
             if a.gravity > 0:
                 cmd += ["--gravity", repr(a.gravity)]
+            if a.rings > 0:
+                cmd += ["--rings", str(a.rings)]
             out = subprocess.run(cmd, capture_output=True, text=True)
             if out.returncode != 0:
                 sys.stderr.write(f"granwave failed ({out.returncode}): {' '.join(cmd)}\n{out.stderr}")
                 return 1
             d = json.loads(out.stdout)
             row = {c: d.get(c) for c in IMPACT_COLUMNS}
-            row.update(tag=a.tag, vi=vi, x=x, mass_law=d["settings"]["material"]["mass_law"].split()[0],
+            row.update(tag=a.tag, sample=a.sample, rings=len(d["crowns"]["ring_r"]), vi=vi, x=x,
+                       mass_law=d["settings"]["material"]["mass_law"].split()[0],
                        gravity=d["settings"]["material"]["gravity"])
             _append(imp, IMPACT_COLUMNS, [row], header)
             cr = d["crowns"]
             rows = [{"tag": a.tag, "vi": vi, "x": x, "ring": q, "r_mid": cr["ring_r"][q],
-                     "r_next": cr["ring_r"][q + 1], "delay": cr["xcorr_delay"][q],
-                     "rho": cr["xcorr_rho"][q]} for q in range(len(cr["xcorr_delay"]))]
+                     "r_next": cr["ring_r"][q + 1], "delay": float(f"{cr['xcorr_delay'][q]:.6g}"),
+                     "rho": float(f"{cr['xcorr_rho'][q]:.6g}")}
+                    for q in range(len(cr["xcorr_delay"])) if cr["xcorr_delay"][q] is not None]
             _append(dly, DELAY_COLUMNS, rows, header)
             print(f"{a.tag} V_i {vi:6g} x {x:+.3f}: c_xcorr {_fmt(d['wave_speed_xcorr'])} "
                   f"+- {_fmt(d['wave_speed_xcorr_err'])}, peaks {_fmt(d['wave_speed'])}", flush=True)
@@ -287,6 +296,25 @@ def analyse(imp, dly):
             loc[repr(float(vv))] = rows
         f["local_speed_by_r"] = loc
         fit["tags"][tag] = f
+    fit["gravity_ratios"] = {}
+    for a, b in GRAVITY_PAIRS:
+        if a in fit["tags"] and b in fit["tags"]:
+            fa, fb = fit["tags"][a], fit["tags"][b]
+            rows = []
+            for v, m, e in zip(fb["vi"], fb["c_xcorr_mean"], fb["c_xcorr_se"]):
+                if v in fa["vi"]:
+                    i = fa["vi"].index(v)
+                    r = m / fa["c_xcorr_mean"][i]
+                    rows.append([v, r, r * math.hypot(e / m, fa["c_xcorr_se"][i] / fa["c_xcorr_mean"][i])])
+            fit["gravity_ratios"][f"{b}/{a}"] = rows
+    # what a prestress scaled by 4 predicts from the inner rings' crossover fit:
+    # c0 ~ F0^(1/6), U0 = c0 d0 / a ~ F0^(5/6)
+    cr = fit["tags"].get("disc_r7", {}).get("crossover", {})
+    if "c0" in cr:
+        vv = [1.0, 2.0, 3.0, 5.0, 10.0, 20.0, 40.0, 80.0]
+        r = crossover_model(vv, cr["c0"] * 4 ** (1 / 6), cr["v_star"] * 4 ** (5 / 6)) / \
+            crossover_model(vv, cr["c0"], cr["v_star"])
+        fit["gravity_prediction_4g"] = [[v, float(x)] for v, x in zip(vv, r)]
     return fit
 
 
@@ -297,30 +325,32 @@ def figures(d, fit):
     os.makedirs(os.path.join(d, "figures"), exist_ok=True)
     fig = Figure(figsize=(7.5, 5))
     ax = fig.subplots()
-    colors = {"disc": "C0", "sphere": "C3"}
+    colors = {"disc": "C0", "disc_r7": "C2", "sphere": "C3"}
     for i, (tag, f) in enumerate(fit["tags"].items()):
+        if tag not in MAIN_TAGS:
+            continue
         col = colors.get(tag, f"C{i + 4}")
         v, m, e = np.array(f["vi"]), np.array(f["c_xcorr_mean"]), np.array(f["c_xcorr_se"])
-        ax.errorbar(v, m, yerr=e, fmt="o", color=col, label=f"{tag} masses: cross-correlation")
+        ax.errorbar(v, m, yerr=e, fmt="o", color=col, label=f"{tag}: cross-correlation")
         ax.plot(f["peak_vi"], f["c_peak_mean"], "x", color=col, alpha=0.6, label=f"{tag}: strain peak picking")
         if "power_law_xcorr" in f:
             p = f["power_law_xcorr"]
             vv = np.geomspace(*FIT_RANGE, 30)
             ax.plot(vv, p["A"] * vv ** p["beta"], "-", color=col,
-                    label=f"fit 5-40 m/s: beta = {p['beta']:.3f} +- {p['beta_err']:.3f}")
+                    label=f"{tag} fit 5-40 m/s: beta = {p['beta']:.3f} +- {p['beta_err']:.3f}")
         cr = f.get("crossover", {})
         if "c0" in cr:
             vv = np.geomspace(min(v), max(v), 80)
             ax.plot(vv, crossover_model(vv, cr["c0"], cr["v_star"]), "--", color=col, lw=1,
-                    label=f"precompressed Hertz front: c0 = {cr['c0']:.0f}, V* = {cr['v_star']:.2g} m/s")
+                    label=f"{tag} precompressed Hertz front: c0 = {cr['c0']:.0f}, V* = {cr['v_star']:.2g} m/s")
             ax.plot(vv, cr["c0"] * (vv / cr["v_star"]) ** 0.2, ":", color=col, lw=1)
             ax.axhline(cr["c0"], color=col, lw=0.5, ls=":")
     ax.axhline(fit["paper_speed"], color="k", lw=1, ls="-.", label="paper: about 1000 m/s")
     ax.axvspan(*FIT_RANGE, color="0.9", zorder=0)
     ax.set_xscale("log"), ax.set_yscale("log")
     ax.set_xlabel("impact speed V_i (m/s)"), ax.set_ylabel("wave speed c (m/s)")
-    ax.set_title("layer wave speed: R_b = R_m, normal impacts, mean over impact points")
-    ax.legend(fontsize=7)
+    ax.set_title("layer wave speed: R_b = R_m, normal impacts, mean over 16 impact points")
+    ax.legend(fontsize=6)
     fig.tight_layout()
     fig.savefig(os.path.join(d, "figures", "wave_speed_vs_vi.png"), dpi=110)
     fig = Figure(figsize=(7.5, 4.5))
@@ -339,6 +369,27 @@ def figures(d, fit):
     ax.legend(fontsize=7, ncol=2)
     fig.tight_layout()
     fig.savefig(os.path.join(d, "figures", "local_speed_vs_r.png"), dpi=110)
+    if fit["gravity_ratios"]:
+        fig = Figure(figsize=(7.5, 4.5))
+        ax, bx = fig.subplots(1, 2)
+        for i, (a, b) in enumerate(p for p in GRAVITY_PAIRS if f"{p[1]}/{p[0]}" in fit["gravity_ratios"]):
+            for tag, ls in ((a, "-"), (b, "--")):
+                f = fit["tags"][tag]
+                ax.errorbar(f["vi"], f["c_xcorr_mean"], yerr=f["c_xcorr_se"], fmt="o" + ls, ms=3, color=f"C{i}",
+                            label=tag)
+            rows = np.array(fit["gravity_ratios"][f"{b}/{a}"])
+            bx.errorbar(rows[:, 0], rows[:, 1], yerr=rows[:, 2], fmt="o-", ms=3, color=f"C{i}", label=f"{b} / {a}")
+        bx.axhline(4 ** (1 / 6), color="k", ls=":", lw=1, label="4^(1/6): linear speed, Hertz prestress")
+        if "gravity_prediction_4g" in fit:
+            pr = np.array(fit["gravity_prediction_4g"])
+            bx.plot(pr[:, 0], pr[:, 1], "k--", lw=1, label="precompressed front, prestress x 4 (disc_r7 fit)")
+        bx.axhline(1, color="k", lw=0.5)
+        for x in (ax, bx):
+            x.set_xscale("log"), x.set_xlabel("V_i (m/s)"), x.legend(fontsize=6)
+        ax.set_yscale("log"), ax.set_ylabel("c (m/s)"), bx.set_ylabel("speed ratio 4 g / 1 g")
+        ax.set_title("1 g (solid) and 4 g (dashed) samples", fontsize=9)
+        fig.tight_layout()
+        fig.savefig(os.path.join(d, "figures", "gravity.png"), dpi=110)
 
 
 def plot(args):

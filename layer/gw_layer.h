@@ -360,6 +360,12 @@ typedef struct gw_layer_impact_result {
     double wave_speed, wave_speed_err;      /* from strain-energy peaks, m/s */
     double wave_speed_kin, wave_speed_kin_err; /* from kinetic-energy peaks */
     int wave_rings;         /* rings in the strain fit */
+    /* Crown delays by FFT cross-correlation (layer_crowns.c): of the sample-to-
+     * sample changes of neighbouring rings' total (strain + kinetic) energy, for
+     * rings k >= 1; speed = sum of ring spacings / sum of delays, error from the
+     * scatter of the delays; NaN with fewer than 2 ring pairs. m/s. */
+    double wave_speed_xcorr, wave_speed_xcorr_err;
+    int xcorr_gaps;         /* ring pairs used */
     double t_end;
     double impact_x, impact_y; /* ring centre, m */
     double block_mass, wall_ms;
@@ -378,6 +384,15 @@ typedef struct gw_layer_impact_result {
                                  rings, outside, block (gw_layer_region_ledger) */
     double *peak_strain_t, *peak_kin_t;          /* [nrings] (NaN when none) */
     double *ring_r;                              /* [nrings] mid radius, m */
+    /* One allocation owned by xcorr_delay (NULL when the analysis had fewer than
+     * 4 evenly spaced samples): */
+    double *xcorr_delay;    /* [nrings] delay from ring k to ring k + 1, s (NaN: pair unused) */
+    double *xcorr_rho;      /* [nrings] normalised correlation peak of that pair (NaN: unused) */
+    int spec_len;           /* frequencies of the ring spectra, f_l = l spec_df */
+    double spec_df;         /* Hz */
+    double *spec_strain, *spec_kin; /* [spec_len * nrings] one-sided power spectral
+                                       density of each ring's strain-energy increase
+                                       and kinetic energy (gw_xcorr_psd), J^2/Hz */
 } gw_layer_impact_result;
 
 void gw_layer_impact_result_free(gw_layer_impact_result *r);
@@ -411,8 +426,12 @@ int gw_layer_impact_write_h5(const gw_layer_impact_result *res, const char *path
                              const char *header, gw_err *err);
 
 /* Crown analysis on res's ring series: peak times per ring and the wave speed
- * by a linear fit (GSL) of ring radius against peak time. Fills the peak and
- * wave-speed fields of res. */
+ * by a linear fit (GSL) of ring radius against peak time; the delays between
+ * neighbouring rings by FFT cross-correlation, their wave speed, and each
+ * ring's power spectra. Fills the peak, wave-speed, xcorr and spectrum fields
+ * of res (allocating xcorr_delay, freed by gw_layer_impact_result_free).
+ * GW_ENOMEM when the FFT buffers cannot be allocated (xcorr fields then NaN,
+ * nothing allocated). */
 int gw_layer_crowns(gw_layer_impact_result *res);
 
 /* The `layer` model of `granwave sweep` (layer_sweep_model.c): keys are the

@@ -3,8 +3,9 @@
  * and `granwave layer-impact` (one block impact, docs/physics.md 2.3-2.5; B.5-B.18).
  * Option tables (gw_cli), JSON results (cJSON) and the --out files: ledger.csv
  * (energy ledger B.7-B.14 over time), crowns.csv (per-ring strain, kinetic
- * energy and coordination over time), crowns_peaks.csv, impact.json and VTK
- * snapshots. Every output records the version, the parameters and the solver.
+ * energy and coordination over time), crowns_peaks.csv (peak times and the
+ * cross-correlation delays), crowns_spectra.csv (per-ring power spectra),
+ * impact.json and VTK snapshots. Every output records the version, the parameters and the solver.
  * Exit codes: 0 ok, 1 run failure, 2 bad input (one line naming the input).
  * Units: SI; angles in degrees on the command line.
  */
@@ -241,6 +242,9 @@ static cJSON *impact_json(const impact_cli *c, const gw_layer_impact_result *r,
     cJSON_AddNumberToObject(o, "wave_speed_kinetic", r->wave_speed_kin);
     cJSON_AddNumberToObject(o, "wave_speed_kinetic_err", r->wave_speed_kin_err);
     cJSON_AddNumberToObject(o, "wave_rings", r->wave_rings);
+    cJSON_AddNumberToObject(o, "wave_speed_xcorr", r->wave_speed_xcorr);
+    cJSON_AddNumberToObject(o, "wave_speed_xcorr_err", r->wave_speed_xcorr_err);
+    cJSON_AddNumberToObject(o, "wave_xcorr_gaps", r->xcorr_gaps);
     cJSON_AddNumberToObject(o, "t_end", r->t_end);
     cJSON_AddNumberToObject(o, "block_mass", r->block_mass);
     cJSON_AddNumberToObject(o, "froude", c->ip.vi / sqrt(2 * c->m.lp.gravity * c->ip.rb_rm * c->rm));
@@ -278,6 +282,16 @@ static cJSON *impact_json(const impact_cli *c, const gw_layer_impact_result *r,
     cJSON_AddItemToObject(cr, "ring_r", gw_json_doubles(r->ring_r, r->nrings));
     cJSON_AddItemToObject(cr, "peak_strain_t", gw_json_doubles(r->peak_strain_t, r->nrings));
     cJSON_AddItemToObject(cr, "peak_kinetic_t", gw_json_doubles(r->peak_kin_t, r->nrings));
+    /* delays from ring k to k + 1 (k = 0 .. nrings - 2); null: pair not used */
+    const int ng = r->nrings > 1 ? r->nrings - 1 : 0;
+    double *nan = r->xcorr_delay ? NULL : malloc((size_t)(ng + 1) * sizeof *nan);
+    for (int q = 0; nan && q < ng; q++)
+        nan[q] = NAN;
+    const double *dl = r->xcorr_delay ? r->xcorr_delay : nan, *rh = r->xcorr_rho ? r->xcorr_rho : nan;
+    cJSON_AddItemToObject(cr, "xcorr_delay", gw_json_doubles(dl, dl ? ng : 0));
+    cJSON_AddItemToObject(cr, "xcorr_rho", gw_json_doubles(rh, rh ? ng : 0));
+    free(nan);
+    cJSON_AddStringToObject(cr, "xcorr_signal", "sample-to-sample change of the ring's strain increase + kinetic energy");
     cJSON_AddNumberToObject(o, "wall_time_ms", r->wall_ms);
     cJSON_AddNumberToObject(o, "steps", (double)r->stats.steps);
     cJSON_AddNumberToObject(o, "rhs_evals", (double)r->stats.rhs_evals);
@@ -306,6 +320,28 @@ static cJSON *impact_json(const impact_cli *c, const gw_layer_impact_result *r,
     cJSON_AddNumberToObject(so, "dt", r->dt > 0 ? r->dt : sp->dt);
     cJSON_AddBoolToObject(so, "exact", c->type != gw_solver_verlet); /* events located */
     return o;
+}
+
+/* crowns_spectra.csv: each ring's power spectra (layer_crowns.c). */
+static int write_spectra(const impact_cli *c, const gw_layer_impact_result *r, const char *hdr, gw_err *err)
+{
+    char path[4096];
+    gw_afile f;
+    int rc;
+    if (gw_path_join(path, sizeof path, c->out, "crowns_spectra.csv") != GW_OK)
+        return gw_err_set(err, GW_EINVAL, "--out: directory name too long");
+    if ((rc = gw_afile_open(&f, path, err)) != GW_OK)
+        return rc;
+    fprintf(f.fp, "# %s\n# one-sided power spectral density (J^2/Hz) of each ring's strain-energy increase and "
+            "kinetic energy over the evenly spaced samples, zero-padded (f step %.6g Hz); sum over f of psd * "
+            "df = mean square of the series\n", hdr, r->spec_df);
+    fprintf(f.fp, "f,ring,psd_strain,psd_kinetic\n");
+    for (int l = 0; l < r->spec_len; l++)
+        for (int q = 0; q < r->nrings; q++) {
+            size_t i = (size_t)l * r->nrings + q;
+            fprintf(f.fp, "%.9g,%d,%.9g,%.9g\n", l * r->spec_df, q, r->spec_strain[i], r->spec_kin[i]);
+        }
+    return gw_afile_commit(&f, err);
 }
 
 static int write_csvs(const impact_cli *c, const gw_layer_impact_result *r, const char *hdr,
@@ -353,19 +389,25 @@ static int write_csvs(const impact_cli *c, const gw_layer_impact_result *r, cons
     if ((rc = gw_afile_open(&f, path, err)) != GW_OK)
         return rc;
     fprintf(f.fp, "# %s\n# peak times per ring (s, empty = no significant peak); wave speed %.6g +- %.3g m/s "
-            "(strain), %.6g +- %.3g m/s (kinetic)\n", hdr, r->wave_speed, r->wave_speed_err,
-            r->wave_speed_kin, r->wave_speed_kin_err);
-    fprintf(f.fp, "ring,r_mid,t_peak_strain,t_peak_kinetic\n");
+            "(strain), %.6g +- %.3g m/s (kinetic); cross-correlation delay to the next ring (s, empty = pair "
+            "not used) and its normalised peak: wave speed %.6g +- %.3g m/s over %d pairs\n", hdr, r->wave_speed,
+            r->wave_speed_err, r->wave_speed_kin, r->wave_speed_kin_err, r->wave_speed_xcorr,
+            r->wave_speed_xcorr_err, r->xcorr_gaps);
+    fprintf(f.fp, "ring,r_mid,t_peak_strain,t_peak_kinetic,xcorr_delay_next,xcorr_rho_next\n");
     for (int q = 0; q < r->nrings; q++) {
-        fprintf(f.fp, "%d,%.6g,", q, r->ring_r[q]);
-        if (isfinite(r->peak_strain_t[q]))
-            fprintf(f.fp, "%.9g", r->peak_strain_t[q]);
-        fprintf(f.fp, ",");
-        if (isfinite(r->peak_kin_t[q]))
-            fprintf(f.fp, "%.9g", r->peak_kin_t[q]);
+        const double v[4] = {r->peak_strain_t[q], r->peak_kin_t[q], r->xcorr_delay ? r->xcorr_delay[q] : NAN,
+                             r->xcorr_rho ? r->xcorr_rho[q] : NAN};
+        fprintf(f.fp, "%d,%.6g", q, r->ring_r[q]);
+        for (int j = 0; j < 4; j++) {
+            fprintf(f.fp, ",");
+            if (isfinite(v[j]))
+                fprintf(f.fp, "%.9g", v[j]);
+        }
         fprintf(f.fp, "\n");
     }
     if ((rc = gw_afile_commit(&f, err)) != GW_OK)
+        return rc;
+    if ((rc = write_spectra(c, r, hdr, err)) != GW_OK)
         return rc;
 #if GW_HAVE_HDF5
     if (gw_path_join(path, sizeof path, c->out, "impact.h5") != GW_OK)
@@ -382,7 +424,7 @@ int gw_cmd_layer_impact(int argc, char **argv)
     gw_opt o[LAYER_IMPACT_NOPTS + 8];
     int i = layer_impact_options(&c, o);
     o[i++] = (gw_opt){.name = "json", .kind = GW_OPT_FLAG, .dest = &c.json, .help = "print the result as JSON"};
-    o[i++] = OPT_S("out", &c.out, "DIR", "write ledger.csv, crowns.csv, crowns_peaks.csv, impact.json, VTK (and impact.h5 with HDF5)");
+    o[i++] = OPT_S("out", &c.out, "DIR", "write ledger.csv, crowns.csv, crowns_peaks.csv, crowns_spectra.csv, impact.json, VTK (and impact.h5 with HDF5)");
     o[i] = (gw_opt){0};
     gw_err err = {{0}};
     int help = 0, npos = 0;
@@ -447,6 +489,8 @@ int gw_cmd_layer_impact(int argc, char **argv)
                    r.dissipated_first_contact, r.t_first_contact * 1e3);
             printf("  wave speed %.4g +- %.3g m/s (strain peaks, %d rings), %.4g +- %.3g m/s (kinetic)\n",
                    r.wave_speed, r.wave_speed_err, r.wave_rings, r.wave_speed_kin, r.wave_speed_kin_err);
+            printf("  wave speed %.4g +- %.3g m/s (cross-correlation of neighbouring rings, %d pairs)\n",
+                   r.wave_speed_xcorr, r.wave_speed_xcorr_err, r.xcorr_gaps);
             printf("  energy closure max %.3g; t_end %.4g ms; wall %.0f ms, %ld steps, %ld events, %ld rebuilds\n",
                    r.energy_error, r.t_end * 1e3, r.wall_ms, r.stats.steps, r.stats.events, r.stats.rebuilds);
         }

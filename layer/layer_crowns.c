@@ -10,12 +10,36 @@
  * The wave speed is the slope c of the least-squares line (GSL, gw_fit_linear)
  * r_k = r_0 + c t_k through the rings k >= 1 with a peak, with its standard
  * error; fewer than three rings give NaN. Ring 0 holds the impact itself.
- * Units: SI (m, s, m/s).
+ *
+ * Delays by FFT cross-correlation (gw_xcorr.c). Ring k's total energy
+ * E_k(t) = strain increase + kinetic energy, sampled every dt; its changes
+ * f_k[i] = E_k[i + 1] - E_k[i] (the energy flowing into the ring per sample,
+ * times dt) are pulses even where E_k stays raised after the front (a raised
+ * level cut by the end of the record biases the delay of E_k itself, test_xcorr).
+ * A ring counts when E_k has a first arrival peak by the rule above. For
+ * neighbours k, k + 1 >= 1 that both count, the delay tau_k is the lag of the
+ * largest correlation sum_i f_k[i] f_(k+1)[i + L] over 0 <= L <= (n - 2)/2,
+ * refined by the band-limited interpolant (GW_XCORR_FOURIER); a largest value at
+ * either end of that window is no delay. With m >= 2 delays tau_k over the ring
+ * spacings dr_k (slowness p_k = tau_k / dr_k):
+ *     c = sum dr_k / sum tau_k = 1 / p,   p = mean of p_k (equal spacings),
+ *     c_err = c * s_p / (sqrt(m) p),      s_p the standard deviation of the p_k.
+ * Arrival times built by adding delays carry errors that add up ring to ring (a
+ * random walk); the generalised least-squares slope of arrival against radius
+ * for such errors is exactly this mean delay, and c_err its standard error from
+ * the scatter of the delays. rho_k = normalised correlation peak.
+ * Spectra: the one-sided power spectral density (gw_xcorr_psd, J^2/Hz) of each
+ * ring's strain increase and kinetic energy over the evenly spaced samples
+ * (the last sample is dropped when the run was cut at t_max off the dt grid),
+ * zero-padded to the correlation's length M: f_l = l / (M dt), l = 0 .. M/2.
+ * Units: SI (m, s, m/s, J^2/Hz).
  */
 #include <math.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "gw_layer.h"
+#include "gw_xcorr.h"
 
 /* Time of the first arrival peak of series v[k * stride] (k < ns): the first
  * local maximum reaching a quarter of the series' largest value (later, larger
@@ -58,6 +82,103 @@ static void fit(const gw_layer_impact_result *r, const double *tp, double *c, do
     free(x);
 }
 
+/* Leading samples of r->t evenly spaced (to 1e-9 of the first step). */
+static int even_samples(const gw_layer_impact_result *r)
+{
+    if (r->ns < 2)
+        return r->ns;
+    const double dt = r->t[1] - r->t[0];
+    int k = 2;
+    while (k < r->ns && fabs(r->t[k] - r->t[k - 1] - dt) <= 1e-9 * dt)
+        k++;
+    return dt > 0 ? k : 1;
+}
+
+/* Spectra of ring q's strain and kinetic series (n samples) into r->spec_*;
+ * leaves the ring's total energy in e[n]. ps, pk: scratch of spec_len. */
+static void ring_spectra(gw_layer_impact_result *r, gw_xcorr *xc, int q, int n, double dt, double *e,
+                         double *ps, double *pk)
+{
+    const int nr = r->nrings;
+    for (int i = 0; i < n; i++)
+        e[i] = r->ring_strain[(size_t)i * nr + q];
+    gw_xcorr_psd(xc, e, n, dt, ps, NULL);
+    for (int i = 0; i < n; i++)
+        e[i] = r->ring_kin[(size_t)i * nr + q];
+    gw_xcorr_psd(xc, e, n, dt, pk, NULL);
+    for (int l = 0; l < r->spec_len; l++)
+        r->spec_strain[(size_t)l * nr + q] = ps[l], r->spec_kin[(size_t)l * nr + q] = pk[l];
+    for (int i = 0; i < n; i++)
+        e[i] += r->ring_strain[(size_t)i * nr + q];
+}
+
+/* Speed and error from the used pairs' delays (slow: scratch of nrings). */
+static void pair_speed(gw_layer_impact_result *r, double *slow)
+{
+    int m = 0;
+    for (int q = 1; q + 1 < r->nrings; q++)
+        if (isfinite(r->xcorr_delay[q]))
+            slow[m++] = r->xcorr_delay[q] / (r->ring_r[q + 1] - r->ring_r[q]);
+    r->xcorr_gaps = m;
+    if (m < 2)
+        return;
+    double pm = 0, var = 0;
+    for (int k = 0; k < m; k++)
+        pm += slow[k] / m;
+    for (int k = 0; k < m; k++)
+        var += (slow[k] - pm) * (slow[k] - pm) / (m - 1);
+    r->wave_speed_xcorr = 1 / pm;
+    r->wave_speed_xcorr_err = r->wave_speed_xcorr * sqrt(var / m) / pm;
+}
+
+static int crowns_xcorr(gw_layer_impact_result *r, double thr)
+{
+    const int nr = r->nrings, n = even_samples(r);
+    if (n < 4)
+        return GW_OK;
+    const double dt = r->t[1] - r->t[0];
+    gw_xcorr *xc = NULL;
+    if (gw_xcorr_create(n, 0, &xc, NULL) != GW_OK)
+        return GW_ENOMEM;
+    const int nf = gw_xcorr_fft_len(xc) / 2 + 1;
+    double *block = malloc((2 * (size_t)nr + 2 * (size_t)nf * nr) * sizeof *block);
+    double *e = malloc((3 * (size_t)n + 2 * (size_t)nf + (size_t)nr) * sizeof *e);
+    int *used = malloc((size_t)nr * sizeof *used);
+    if (!block || !e || !used) {
+        free(block), free(e), free(used);
+        gw_xcorr_free(xc);
+        return GW_ENOMEM;
+    }
+    r->xcorr_delay = block;
+    r->xcorr_rho = block + nr;
+    r->spec_strain = block + 2 * nr;
+    r->spec_kin = r->spec_strain + (size_t)nf * nr;
+    r->spec_len = nf;
+    r->spec_df = 1 / (gw_xcorr_fft_len(xc) * dt);
+    double *fprev = e + n, *fcur = e + 2 * (size_t)n, *ps = e + 3 * (size_t)n, *pk = ps + nf, *slow = pk + nf;
+    for (int q = 0; q < nr; q++) {
+        r->xcorr_delay[q] = r->xcorr_rho[q] = NAN;
+        ring_spectra(r, xc, q, n, dt, e, ps, pk);
+        used[q] = q >= 1 && isfinite(peak_time(r->t, e, n, 1, thr));
+        for (int i = 0; i + 1 < n; i++)
+            fcur[i] = e[i + 1] - e[i];
+        gw_xcorr_peak pk_q;
+        if (q >= 2 && used[q - 1] && used[q] &&
+            gw_xcorr_peak_find(xc, fprev, fcur, n - 1, 0, (n - 2) / 2, GW_XCORR_FOURIER, &pk_q, NULL) == GW_OK &&
+            pk_q.status == GW_XCORR_PEAK_OK) {
+            r->xcorr_delay[q - 1] = pk_q.lag * dt;
+            r->xcorr_rho[q - 1] = pk_q.rho;
+        }
+        double *sw = fprev;
+        fprev = fcur, fcur = sw;
+    }
+    pair_speed(r, slow);
+    free(e);
+    free(used);
+    gw_xcorr_free(xc);
+    return GW_OK;
+}
+
 int gw_layer_crowns(gw_layer_impact_result *r)
 {
     const double thr = 1e-4 * r->e_incident;
@@ -68,5 +189,11 @@ int gw_layer_crowns(gw_layer_impact_result *r)
     int nk;
     fit(r, r->peak_strain_t, &r->wave_speed, &r->wave_speed_err, &r->wave_rings);
     fit(r, r->peak_kin_t, &r->wave_speed_kin, &r->wave_speed_kin_err, &nk);
-    return GW_OK;
+    r->wave_speed_xcorr = r->wave_speed_xcorr_err = NAN;
+    r->xcorr_gaps = 0;
+    free(r->xcorr_delay); /* a second analysis of the same series */
+    r->xcorr_delay = r->xcorr_rho = r->spec_strain = r->spec_kin = NULL;
+    r->spec_len = 0;
+    r->spec_df = NAN;
+    return crowns_xcorr(r, thr);
 }

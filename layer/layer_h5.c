@@ -9,9 +9,14 @@
  *   block [ns x 4] (x, y in m, vx, vy in m/s);
  *   ring_strain, ring_kinetic, ring_dissipated [ns x nrings] (J),
  *   ring_coordination [ns x nrings] (contacts per particle); ring_r [nrings] (m);
- *   peak_strain_t, peak_kinetic_t [nrings] (s, NaN: no peak).
+ *   peak_strain_t, peak_kinetic_t [nrings] (s, NaN: no peak);
+ *   xcorr_delay [nrings] (s, cross-correlation delay from ring k to k + 1, NaN:
+ *   pair not used), xcorr_rho [nrings] (normalised correlation peak);
+ *   spec_freq [nf] (Hz), spec_strain, spec_kinetic [nf x nrings] (J^2/Hz, one-
+ *   sided power spectral density per ring, layer_crowns.c); the xcorr and spec
+ *   datasets are absent when the run had fewer than 4 evenly spaced samples.
  * Root attributes: "run" (version, command line, settings) and the scalar
- * results (e_n, e, wave_speed, ...). Written under a temporary name and renamed
+ * results (e_n, e, wave_speed, wave_speed_xcorr, wave_speed_xcorr_err, ...). Written under a temporary name and renamed
  * into place, so an interrupted run leaves no partial file.
  */
 #define _POSIX_C_SOURCE 200809L
@@ -69,10 +74,13 @@ static int put(hid_t file, const char *name, const double *data, hsize_t rows, h
 int gw_layer_impact_write_h5(const gw_layer_impact_result *r, const char *path, const char *header,
                              gw_err *err)
 {
-    const size_t ns = (size_t)r->ns, nr = (size_t)r->nrings;
-    double *led = malloc(8 * ns * sizeof *led);
+    const size_t ns = (size_t)r->ns, nr = (size_t)r->nrings, nf = r->xcorr_delay ? (size_t)r->spec_len : 0;
+    double *led = malloc((8 * ns + nf + 1) * sizeof *led);
     if (!led)
         return gw_err_set(err, GW_ENOMEM, "impact.h5: out of memory");
+    double *freq = led + 8 * ns;
+    for (size_t l = 0; l < nf; l++)
+        freq[l] = (double)l * r->spec_df;
     for (size_t k = 0; k < ns; k++) {
         const gw_layer_energy *e = &r->ledger[k];
         double v[8] = {e->kinetic_block, e->kinetic_soil, e->strain_normal, e->strain_tangent,
@@ -107,7 +115,15 @@ int gw_layer_impact_write_h5(const gw_layer_impact_result *r, const char *path, 
               put_double_attr(file, "energy_error", r->energy_error) ||
               put_double_attr(file, "wave_speed", r->wave_speed) ||
               put_double_attr(file, "dissipated_first_contact", r->dissipated_first_contact) ||
-              put_double_attr(file, "bounced", r->bounced);
+              put_double_attr(file, "bounced", r->bounced) ||
+              put_double_attr(file, "wave_speed_xcorr", r->wave_speed_xcorr) ||
+              put_double_attr(file, "wave_speed_xcorr_err", r->wave_speed_xcorr_err);
+        if (!bad && nf > 0)
+            bad = put(file, "xcorr_delay", r->xcorr_delay, nr, 0, "s", NULL) ||
+                  put(file, "xcorr_rho", r->xcorr_rho, nr, 0, "1", NULL) ||
+                  put(file, "spec_freq", freq, nf, 0, "Hz", NULL) ||
+                  put(file, "spec_strain", r->spec_strain, nf, nr, "J^2/Hz", NULL) ||
+                  put(file, "spec_kinetic", r->spec_kin, nf, nr, "J^2/Hz", NULL);
         if (H5Fclose(file) < 0)
             bad = 1;
     }

@@ -61,6 +61,7 @@ void gw_layer_impact_result_free(gw_layer_impact_result *r)
     free(r->ring_kin);
     free(r->peak_strain_t);
     free(r->regions);
+    free(r->xcorr_delay); /* the crowns' cross-correlation and spectra */
     memset(r, 0, sizeof *r);
 }
 
@@ -370,5 +371,9 @@ int gw_layer_impact(const gw_layer_sample *smp, const gw_layer_params *lp0,
     res->t_contact_open = t_open;
     res->dissipated_contact_open = ed_open / res->e_incident;
     gw_layer_free(L);
-    return gw_layer_crowns(res);
+    if ((rc = gw_layer_crowns(res)) != GW_OK) {
+        gw_layer_impact_result_free(res);
+        return gw_err_set(err, rc, "layer-impact: out of memory for the crowns analysis");
+    }
+    return GW_OK;
 }

@@ -6,8 +6,10 @@
 # - an impact (--exact) prints JSON with every key of the issue, a closure
 #   error <= 1e-4; the default fast mode (verlet) closes to 2e-3 and gives
 #   e_n and penetration as the exact mode (0.005, 1 %);
-#   and --out writes ledger.csv, crowns.csv, crowns_peaks.csv, impact.json and
-#   two VTK snapshots;
+#   and --out writes ledger.csv, crowns.csv, crowns_peaks.csv, crowns_spectra.csv,
+#   impact.json and two VTK snapshots; the JSON has the cross-correlation wave
+#   speed keys and one delay per ring pair, and the ring spectra obey Parseval
+#   against crowns.csv (issue 19);
 # - bad input exits 2 with one line on stderr naming the input, and writes
 #   nothing: negative block radius, friction outside [0, 90), block overlapping
 #   the layer, unreadable and corrupt sample files, unknown solver;
@@ -88,9 +90,53 @@ bad_exact_verlet() {
   [ $? -eq 2 ] && [ $(wc -l < "$tmp/stderr") -eq 1 ] && grep -q -- '--exact' "$tmp/stderr"
 }
 check "--exact with --solver verlet: exit 2, one line naming --exact" bad_exact_verlet
-for f in ledger.csv crowns.csv crowns_peaks.csv impact.json snapshot_0.vtk snapshot_end.vtk; do
+for f in ledger.csv crowns.csv crowns_peaks.csv crowns_spectra.csv impact.json snapshot_0.vtk snapshot_end.vtk; do
   check "--out wrote $f" "[ -s '$tmp/out/$f' ]"
 done
+# spectral crowns (issue 19): JSON keys, one delay per ring pair, and the ring
+# spectra in crowns_spectra.csv obey Parseval against crowns.csv's series
+check "crowns by cross-correlation: JSON keys, delays per ring pair; crowns_spectra.csv: sum psd df = mean square of crowns.csv's strain and kinetic series (1e-6)" "python3 - '$tmp' <<'PY'
+import json, sys
+t = sys.argv[1]
+d = json.load(open(t + '/imp.json'))
+cr = d['crowns']
+nr = len(cr['ring_r'])
+ok = all(k in d for k in ('wave_speed_xcorr', 'wave_speed_xcorr_err', 'wave_xcorr_gaps'))
+ok = ok and len(cr['xcorr_delay']) == nr - 1 and len(cr['xcorr_rho']) == nr - 1
+def rows(p):
+    hdr = None
+    for l in open(p):
+        if l.startswith('#'):
+            continue
+        f = l.strip().split(',')
+        if hdr is None:
+            hdr = f
+            continue
+        yield dict(zip(hdr, f))
+ser = {}
+for r in rows(t + '/out/crowns.csv'):
+    ser.setdefault(int(r['ring']), []).append((float(r['t']), float(r['strain']), float(r['kinetic'])))
+spec = {}
+fs = []
+for r in rows(t + '/out/crowns_spectra.csv'):
+    spec.setdefault(int(r['ring']), []).append((float(r['psd_strain']), float(r['psd_kinetic'])))
+    if int(r['ring']) == 0:
+        fs.append(float(r['f']))
+df = fs[1] - fs[0]
+worst = 0
+for q in range(nr):
+    s = ser[q]
+    n = len(s)
+    if abs((s[-1][0] - s[-2][0]) - (s[1][0] - s[0][0])) > 1e-9 * (s[1][0] - s[0][0]):
+        n -= 1  # a last sample off the grid is left out
+    for j in (0, 1):
+        ms = sum(x[1 + j] ** 2 for x in s[:n]) / n
+        ps = sum(x[j] for x in spec[q]) * df
+        if ms > 0:
+            worst = max(worst, abs(ps - ms) / ms)
+print('rings', nr, 'frequencies', len(fs), 'worst Parseval', worst, 'c_xcorr', d['wave_speed_xcorr'])
+sys.exit(0 if ok and len(fs) > 2 and worst < 1e-6 else 1)
+PY"
 
 "$gw" layer-impact --sample "$tmp/a.txt" --rb-rm 1 --vi 10 --exact --dt 3e-5 --energy-tol 1e-3 --out "$tmp/emon" > "$tmp/stdout" 2> "$tmp/stderr"
 rc=$?

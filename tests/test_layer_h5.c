@@ -5,8 +5,8 @@
  * A block (R_b = R_m) hits a row of 8 discs resting on the bottom wall at
  * 5 m/s; the result is written with gw_layer_impact_write_h5 and read back with
  * the HDF5 C API: t, ledger (8 columns), block (4 columns), ring_strain and
- * ring_r must equal the result's arrays exactly (memcmp), the attribute e_n
- * too; no temporary file is left; an unwritable path gives GW_EIO and leaves
+ * ring_r, the cross-correlation delays and the ring spectra must equal the
+ * result's arrays exactly (memcmp), the attribute e_n too; no temporary file is left; an unwritable path gives GW_EIO and leaves
  * nothing. Without HDF5 the writer must return GW_EUNSUPPORTED.
  */
 #include <math.h>
@@ -81,6 +81,17 @@ int main(void)
                  "ring_strain equals the result");
     gw_test_true(read_all(f, "ring_r", buf) == 0 && memcmp(buf, res.ring_r, nr * sizeof *buf) == 0,
                  "ring_r equals the result");
+    const size_t nf = (size_t)res.spec_len;
+    gw_test_true(res.xcorr_delay && nf > 2 && read_all(f, "xcorr_delay", buf) == 0 &&
+                     memcmp(buf, res.xcorr_delay, nr * sizeof *buf) == 0 && read_all(f, "xcorr_rho", buf) == 0 &&
+                     memcmp(buf, res.xcorr_rho, nr * sizeof *buf) == 0,
+                 "xcorr_delay and xcorr_rho (issue 19) equal the result");
+    gw_test_true(nf > 2 && read_all(f, "spec_strain", buf) == 0 &&
+                     memcmp(buf, res.spec_strain, nf * nr * sizeof *buf) == 0 &&
+                     read_all(f, "spec_kinetic", buf) == 0 && memcmp(buf, res.spec_kin, nf * nr * sizeof *buf) == 0,
+                 "ring spectra spec_strain, spec_kinetic [nf x nrings] equal the result");
+    gw_test_true(nf > 2 && read_all(f, "spec_freq", buf) == 0 && buf[0] == 0 && buf[nf - 1] == (nf - 1) * res.spec_df,
+                 "spec_freq = l spec_df");
     double en = NAN;
     hid_t at = H5Aopen(f, "e_n", H5P_DEFAULT);
     if (at >= 0) {

@@ -55,6 +55,7 @@ int layer_impact_options(layer_impact_cli *c, gw_opt *o)
     c->rtol = 1e-8;
     c->atol = 1e-8;
     c->rings = c->ip.nrings;
+    c->until = gw_layer_until_name(c->ip.until);
     /* physical ranges are checked by gw_layer_impact_check (messages name the
      * quantity); the table only bounds the solver settings. An option added here must also
      * raise LAYER_IMPACT_NOPTS (layer_cli.h): callers size their tables by it. */
@@ -77,7 +78,10 @@ int layer_impact_options(layer_impact_cli *c, gw_opt *o)
     o[i++] = OPT_D("atol", &c->atol, "A", "absolute tolerance (scaled per component) [1e-8]", 0, 1, 1);
     o[i++] = OPT_D("energy-tol", &c->ip.energy_tol, "E", "stop (exit 1) when the ledger closure |sum - A|/A exceeds E [0 = off]", -INFINITY, INFINITY, 0);
     o[i++] = (gw_opt){.name = "remove-walls", .kind = GW_OPT_FLAG, .dest = &c->ip.remove_walls, .help = "take the left, right and bottom walls away at the start of the impact"};
-    o[i++] = (gw_opt){.name = "full", .kind = GW_OPT_FLAG, .dest = &c->ip.full, .help = "run to t-max even after the block has left (for the crowns)"};
+    o[i++] = (gw_opt){.name = "full", .kind = GW_OPT_FLAG, .dest = &c->ip.full, .help = "run to t-max even after the outcome is decided (for the crowns)"};
+    o[i++] = OPT_S("until", &c->until, "WHAT", "rebound: run until the rebound is complete (T_f: the block's normal velocity back to "
+                   "zero after it left, physics.md 2.3) or the block is found not to bounce; verdict: stop at the bounce "
+                   "verdict (e_n, e, alpha_r then null; the _first values given) [rebound]");
     return i;
 }
 
@@ -87,6 +91,10 @@ int layer_impact_resolve(layer_impact_cli *c, gw_err *err)
     int rc = layer_mat_resolve(&c->m, err);
     if (rc != GW_OK)
         return rc;
+    if ((c->ip.until = gw_layer_until_parse(c->until)) < 0)
+        return gw_err_set(err, GW_EINVAL, "--until: unknown '%s' (rebound, verdict)", c->until);
+    if (c->ip.full && c->ip.until == GW_LAYER_UNTIL_VERDICT)
+        return gw_err_set(err, GW_EINVAL, "--until verdict: has no effect with --full (which runs to t-max)");
     if (!c->solver)
         c->solver = c->exact ? "rk4" : "verlet";
     c->type = gw_solver_type_find(c->solver);

@@ -212,7 +212,10 @@ static cJSON *impact_json(const impact_cli *c, const gw_layer_impact_result *r,
 {
     cJSON *o = cJSON_CreateObject();
     cJSON_AddStringToObject(o, "version", gw_version());
-    cJSON_AddBoolToObject(o, "bounced", r->bounced);
+    if (r->bounced < 0) /* undecided: null, never false */
+        cJSON_AddNullToObject(o, "bounced");
+    else
+        cJSON_AddBoolToObject(o, "bounced", r->bounced);
     cJSON_AddNumberToObject(o, "e_n", r->e_n);
     cJSON_AddNumberToObject(o, "e", r->e);
     cJSON_AddNumberToObject(o, "alpha_r", r->alpha_r_deg);
@@ -220,6 +223,18 @@ static cJSON *impact_json(const impact_cli *c, const gw_layer_impact_result *r,
     cJSON_AddNumberToObject(o, "v_ni", r->v_ni);
     cJSON_AddNumberToObject(o, "v_r", r->v_r);
     cJSON_AddNumberToObject(o, "t_rebound", r->t_rebound);
+    cJSON_AddNumberToObject(o, "t_f", r->t_f);
+    cJSON_AddNumberToObject(o, "t_leave", r->t_leave);
+    cJSON_AddNumberToObject(o, "e_n_first", r->e_n_first);
+    cJSON_AddNumberToObject(o, "e_first", r->e_first);
+    cJSON_AddNumberToObject(o, "alpha_r_first", r->alpha_r_first_deg);
+    cJSON_AddNumberToObject(o, "v_nr_first", r->v_nr_first);
+    cJSON_AddNumberToObject(o, "v_r_first", r->v_r_first);
+    cJSON_AddNumberToObject(o, "t_rebound_first", r->t_rebound_first);
+    if (r->undecided[0])
+        cJSON_AddStringToObject(o, "undecided", r->undecided);
+    else
+        cJSON_AddNullToObject(o, "undecided");
     cJSON_AddNumberToObject(o, "penetration", r->penetration);
     cJSON_AddNumberToObject(o, "penetration_rm", r->penetration / c->rm);
     cJSON_AddNumberToObject(o, "energy_error", r->energy_error);
@@ -291,6 +306,7 @@ static cJSON *impact_json(const impact_cli *c, const gw_layer_impact_result *r,
     cJSON_AddNumberToObject(s, "dt_out", c->ip.dt_out);
     cJSON_AddNumberToObject(s, "ring_width", c->ip.ring_width > 0 ? c->ip.ring_width : 2 * c->rm);
     cJSON_AddBoolToObject(s, "full", c->ip.full);
+    cJSON_AddStringToObject(s, "until", gw_layer_until_name(c->ip.until));
     cJSON_AddBoolToObject(s, "remove_walls", c->ip.remove_walls);
     cJSON_AddItemToObject(s, "material", mat_json(&c->m.lp));
     cJSON *so = cJSON_AddObjectToObject(s, "solver");
@@ -411,6 +427,8 @@ int gw_cmd_layer_impact(int argc, char **argv)
         return rc == GW_EINVAL || rc == GW_EUNSUPPORTED ? 2 : 1;
     }
     int code = 0;
+    if (r.undecided[0]) /* one line; the JSON says null */
+        fprintf(stderr, "granwave layer-impact: warning: %s\n", r.undecided);
     cJSON *j = impact_json(&c, &r, &sp);
     if (c.out) {
         char *hdr = command_line("layer-impact", argc, argv);
@@ -435,8 +453,12 @@ int gw_cmd_layer_impact(int argc, char **argv)
                    gw_version(), c.ip.rb_rm, c.ip.vi, c.ip.alpha_deg, c.solver);
             printf("  mass law %s, %d mobile + %d frozen particles\n",
                    gw_layer_mass_law_name(c.m.lp.mass_law), r.n_mobile, r.n_frozen);
-            printf("  bounced %s: e_n = %.4g, e = %.4g, alpha_r = %.4g deg (V_nr = %.4g m/s at %.4g ms)\n",
-                   r.bounced ? "yes" : "no", r.e_n, r.e, r.alpha_r_deg, r.v_nr, r.t_rebound * 1e3);
+            printf("  bounced %s: e_n = %.4g, e = %.4g, alpha_r = %.4g deg (V_nr = %.4g m/s at T_i = %.4g ms, "
+                   "T_f = %.4g ms)\n", r.bounced > 0 ? "yes" : r.bounced == 0 ? "no" : "undecided", r.e_n, r.e,
+                   r.alpha_r_deg, r.v_nr, r.t_rebound * 1e3, r.t_f * 1e3);
+            printf("  first free-flight maximum: e_n = %.4g, e = %.4g, alpha_r = %.4g deg (V_nr = %.4g m/s at "
+                   "%.4g ms; left at %.4g ms)\n", r.e_n_first, r.e_first, r.alpha_r_first_deg, r.v_nr_first,
+                   r.t_rebound_first * 1e3, r.t_leave * 1e3);
             printf("  penetration %.4g m (%.3g R_m)\n", r.penetration, r.penetration / c.rm);
             printf("  first contact: E_d = %.3g of E_incident (ends at %.4g ms)\n",
                    r.dissipated_first_contact, r.t_first_contact * 1e3);

@@ -132,5 +132,22 @@ if [ $rc -eq 0 ] && grep -q "1 point(s) with bounced = nan" "$tmp/und.err" && gr
 else
     ko "layer-stats undecided point: exit $rc, $(cat "$tmp/und.err")"
 fi
+# tables with the first free-flight maximum (issue 18, class 7): a bouncing row
+# whose run ended before T_f has e_n = e = alpha_r = nan and its e_n_first; it
+# counts in the share and is left out of the e_n statistics with a warning; a
+# bouncing row without its e_n_first is refused
+h2="$h,e_n_first,e_first,alpha_r_first,v_nr_first,v_r_first,t_leave,t_rebound,t_f"
+row2() { echo "$(row "$1" "$2" "$3" "$4"),$5,0.5,10,1,0.5,0.002,0.002,0.1"; }
+{ echo -e "$h2"; row2 0 0 1 0.5 0.4; row2 1 1 1 nan 0.3; row2 2 2 0 nan nan; } >"$tmp/cut.csv"
+sed -i '3s/,0.5,10,1,0.5,0.5,0.01,/,nan,nan,1,nan,nan,0.01,/' "$tmp/cut.csv" # row of case 1: e, alpha_r, v_nr, v_r nan
+"$GW" layer-stats "$tmp/cut.csv" --json >"$tmp/cut.json" 2>"$tmp/cut.err"; rc=$?
+if [ $rc -eq 0 ] && [ "$(wc -l <"$tmp/cut.err")" -eq 1 ] && grep -q "1 bouncing point(s) with e = nan" "$tmp/cut.err" \
+    && /usr/bin/python3 -c "import json,sys; g=json.load(open('$tmp/cut.json'))['groups']; sys.exit(0 if len(g)==1 and g[0]['n_bounced']==2 and g[0]['e']['n']==1 and g[0]['e_n_first']['n']==2 and abs(g[0]['e_n_first']['mean']-0.35)<1e-12 else 1)"; then
+    ok "layer-stats: a bouncing row cut before T_f counts in the share, not in e_n (one warning), e_n_first over both"
+else
+    ko "layer-stats rows cut before T_f: exit $rc, $(cat "$tmp/cut.err")"
+fi
+{ echo -e "$h2"; row2 0 0 1 0.5 0.4; row2 1 1 1 0.5 nan; } >"$tmp/nofirst.csv"
+refused "layer-stats refuses a bouncing row without e_n_first" 'case 1 bounced but its e_n_first is nan' layer-stats "$tmp/nofirst.csv" --out "$tmp/o"
 echo "$passes passed, $fails failed"
 [ $fails -eq 0 ]

@@ -5,7 +5,10 @@
 #   apart from nothing (deterministic), and the JSON reports the particle count;
 # - an impact (--exact) prints JSON with every key of the issue, a closure
 #   error <= 1e-4; the default fast mode (verlet) closes to 2e-3 and gives
-#   e_n and penetration as the exact mode (0.005, 1 %);
+#   the verdict, e_n_first and penetration as the exact mode (0.005, 1 %);
+# - outcomes from events: a run cut before T_f or before the take-off reports
+#   what is undecided as null with one warning line; --until verdict stops at
+#   the take-off; --until with a bad value or with --full is refused;
 #   and --out writes ledger.csv, crowns.csv, crowns_peaks.csv, impact.json and
 #   two VTK snapshots;
 # - bad input exits 2 with one line on stderr naming the input, and writes
@@ -67,17 +70,41 @@ sys.exit(0 if not missing and d['energy_error'] <= 1e-4 and abs(d['v_ni'] - 10 *
 PY"
 # the default (fast) mode: verlet with the step from the contact time, ledger
 # closure reported and below 2e-3, e_n and penetration as in the exact mode
-"$gw" layer-impact --sample "$tmp/a.txt" --rb-rm 1 --vi 10 --alpha 30 --t-max 0.005 --json > "$tmp/fast.json"
-check "default layer-impact: verlet, dt from the contact time, closure < 2e-3, e_n within 0.005 and penetration within 1 % of --exact" "python3 - '$tmp' <<'PY'
+# (at x = 0.3 m the block takes off at 3.5 ms; T_f is later: e_n_first compared)
+"$gw" layer-impact --sample "$tmp/a.txt" --rb-rm 1 --vi 10 --x 0.3 --t-max 0.005 --exact --json > "$tmp/imp2.json" 2> /dev/null
+"$gw" layer-impact --sample "$tmp/a.txt" --rb-rm 1 --vi 10 --x 0.3 --t-max 0.005 --json > "$tmp/fast.json" 2> /dev/null
+check "default layer-impact: verlet, dt from the contact time, closure < 2e-3, both bounce, e_n_first within 0.005 and penetration within 1 % of --exact" "python3 - '$tmp' <<'PY'
 import json, sys
-f = json.load(open(sys.argv[1] + '/fast.json')); e = json.load(open(sys.argv[1] + '/imp.json'))
+f = json.load(open(sys.argv[1] + '/fast.json')); e = json.load(open(sys.argv[1] + '/imp2.json'))
 so = f['settings']['solver']
-print('fast', so['name'], so['dt'], f['energy_error'], f['e_n'], e['e_n'], f['penetration'], e['penetration'])
+print('fast', so['name'], so['dt'], f['energy_error'], f['e_n_first'], e['e_n_first'], f['penetration'], e['penetration'])
 ok = so['name'] == 'verlet' and so['exact'] is False and 0 < so['dt'] < 2e-5 and f['energy_error'] < 2e-3
 ok = ok and e['settings']['solver']['name'] == 'rk4' and e['settings']['solver']['exact'] is True
-ok = ok and abs(f['e_n'] - e['e_n']) < 0.005 and abs(f['penetration'] - e['penetration']) <= 0.01 * e['penetration']
+ok = ok and f['bounced'] is True and e['bounced'] is True
+ok = ok and abs(f['e_n_first'] - e['e_n_first']) < 0.005 and abs(f['penetration'] - e['penetration']) <= 0.01 * e['penetration']
 sys.exit(0 if ok else 1)
 PY"
+# outcomes from events (issue 18, class 6): a run cut before T_f keeps the
+# verdict and the first free-flight maximum, reports e_n as null and warns on one
+# line; cut before the take-off, bounced is null (undecided), never false
+undecided() { # t-max, python condition on the JSON d
+  "$gw" layer-impact --sample "$tmp/a.txt" --rb-rm 1 --vi 10 --x 0.3 --t-max "$1" --json > "$tmp/und.json" 2> "$tmp/und.err" || return 1
+  [ $(wc -l < "$tmp/und.err") -eq 1 ] && grep -q 'warning: .*undecided' "$tmp/und.err" || return 1
+  python3 -c "import json,sys; d=json.load(open('$tmp/und.json')); sys.exit(0 if $2 else 1)"
+}
+check "cut after the take-off, before T_f: bounced true, e_n null, e_n_first given, one warning line naming T_f" \
+  "undecided 0.005 \"d['bounced'] is True and d['e_n'] is None and d['t_f'] is None and d['e_n_first'] > 0 and 'T_f' in d['undecided']\""
+check "cut before the take-off: bounced null (undecided, not false), e_n and e_n_first null, one warning line" \
+  "undecided 0.002 \"d['bounced'] is None and d['e_n'] is None and d['e_n_first'] is None and d['undecided']\""
+"$gw" layer-impact --sample "$tmp/a.txt" --rb-rm 1 --vi 10 --x 0.3 --t-max 0.005 --until verdict --json > "$tmp/ver.json" 2> "$tmp/ver.err"
+check "--until verdict: stops at the take-off, no warning, e_n null, e_n_first as without it" \
+  "[ ! -s '$tmp/ver.err' ] && python3 -c \"import json,sys; v=json.load(open('$tmp/ver.json')); f=json.load(open('$tmp/fast.json')); sys.exit(0 if v['bounced'] is True and v['e_n'] is None and v['e_n_first'] == f['e_n_first'] and v['t_end'] < f['t_end'] and v['settings']['until'] == 'verdict' else 1)\""
+bad_until() { # args...
+  "$gw" layer-impact --sample "$tmp/a.txt" "$@" > "$tmp/stdout" 2> "$tmp/stderr"
+  [ $? -eq 2 ] && [ $(wc -l < "$tmp/stderr") -eq 1 ] && grep -q -- '--until' "$tmp/stderr" && [ ! -s "$tmp/stdout" ]
+}
+check "--until bogus: exit 2, one line naming --until" "bad_until --until bogus"
+check "--until verdict with --full (no effect): exit 2, one line naming --until" "bad_until --until verdict --full"
 bad_exact_verlet() {
   "$gw" layer-impact --sample "$tmp/a.txt" --exact --solver verlet > "$tmp/stdout" 2> "$tmp/stderr"
   [ $? -eq 2 ] && [ $(wc -l < "$tmp/stderr") -eq 1 ] && grep -q -- '--exact' "$tmp/stderr"

@@ -232,10 +232,14 @@ int gw_layer_region_ledger(const gw_layer *L, gw_layer_energy *out);
 void gw_layer_rings(const gw_layer *L, double cx, double cy, double w, int nring,
                     double *kinetic, double *strain, double *coord);
 
-/* Write a VTK legacy POLYDATA snapshot: points with radius, velocity, omega;
- * contacts with u_n > 0 as lines carrying F_n and F_t. */
+/* Write a VTK legacy POLYDATA snapshot: points with radius, velocity, omega
+ * (one vertex cell each); contacts with u_n > 0 as lines carrying F_n and F_t;
+ * field data TIME (s); units in the title line. */
 int gw_layer_write_vtk(const gw_layer *L, const char *path, const char *title,
                        gw_err *err);
+/* Write a ParaView collection (.pvd) of n snapshot files (names relative to
+ * the .pvd's directory, no XML special characters) at times[k] s. */
+int gw_layer_write_pvd(const char *path, int n, const char *const *files, const double *times, gw_err *err);
 
 /* -------------------------------------------------------------- samples ---- */
 
@@ -461,7 +465,8 @@ double gw_layer_impact_dem_dt(const gw_layer_sample *s, const gw_layer_params *l
                               const gw_layer_impact_params *ip);
 
 /* One block impact on a sample (physics.md 2.3). vtk_dir (may be NULL) receives
- * snapshot_0.vtk and snapshot_end.vtk. GW_EINVAL names the input (block
+ * snapshot_0.vtk, snapshot_end.vtk and snapshots.pvd (both as a ParaView series
+ * with their times). GW_EINVAL names the input (block
  * overlapping the layer, block outside the box, bad parameters). */
 int gw_layer_impact(const gw_layer_sample *s, const gw_layer_params *lp,
                     const gw_layer_impact_params *ip, const gw_solver_type *type,

@@ -340,6 +340,10 @@ int gw_layer_impact(const gw_layer_sample *smp, const gw_layer_params *lp0,
             rc = gw_err_set(err, GW_EINVAL, "out: directory name too long");
         else
             rc = gw_layer_write_vtk(L, path, "granwave layer-impact t = t_end", err);
+        const char *files[2] = {"snapshot_0.vtk", "snapshot_end.vtk"};
+        const double times[2] = {0, res->t_end};
+        if (rc == GW_OK && gw_path_join(path, sizeof path, vtk_dir, "snapshots.pvd") == GW_OK)
+            rc = gw_layer_write_pvd(path, 2, files, times, err); /* ParaView: one series with time */
     }
     if (rc != GW_OK && rc != GW_EINVAL && vtk_dir && err) {
         /* run failure: keep the state at failure beside the outputs already written */

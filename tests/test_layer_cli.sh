@@ -110,9 +110,33 @@ bad_exact_verlet() {
   [ $? -eq 2 ] && [ $(wc -l < "$tmp/stderr") -eq 1 ] && grep -q -- '--exact' "$tmp/stderr"
 }
 check "--exact with --solver verlet: exit 2, one line naming --exact" bad_exact_verlet
-for f in ledger.csv crowns.csv crowns_peaks.csv impact.json snapshot_0.vtk snapshot_end.vtk; do
+for f in ledger.csv crowns.csv crowns_peaks.csv impact.json snapshot_0.vtk snapshot_end.vtk snapshots.pvd; do
   check "--out wrote $f" "[ -s '$tmp/out/$f' ]"
 done
+# VTK (issue 18, class 8): a vertex cell per particle, cell data over vertices +
+# contact lines, field data TIME = the snapshot's time, units in the title; the
+# .pvd series lists both snapshots at t = 0 and t_end
+cat > "$tmp/vtkcheck.py" <<'PY'
+import json, re, sys
+d = sys.argv[1]
+t_end = json.load(open(d + '/impact.json'))['t_end']
+def vtk(name, t):
+    L = open(d + '/' + name).read().split('\n')
+    n = int(next(l for l in L if l.startswith('POINTS')).split()[1])
+    v = next(l for l in L if l.startswith('VERTICES')).split()
+    ln = next(l for l in L if l.startswith('LINES')).split()
+    c = int(next(l for l in L if l.startswith('CELL_DATA')).split()[1])
+    i = L.index('TIME 1 1 double')
+    verts = [l for l in L if re.fullmatch(r'1 \d+', l)]
+    return ('units: m' in L[1] and L[i - 1] == 'FIELD FieldData 1' and abs(float(L[i + 1]) - t) <= 1e-12
+            and int(v[1]) == n and int(v[2]) == 2 * n and len(verts) == n and c == n + int(ln[1]))
+p = open(d + '/snapshots.pvd').read()
+ts = [(float(a), b) for a, b in re.findall(r'timestep="([^"]+)" group="" part="0" file="([^"]+)"', p)]
+ok = vtk('snapshot_0.vtk', 0) and vtk('snapshot_end.vtk', t_end)
+ok = ok and p.startswith('<?xml') and 'type="Collection"' in p and ts == [(0.0, 'snapshot_0.vtk'), (t_end, 'snapshot_end.vtk')]
+sys.exit(0 if ok else 1)
+PY
+check "VTK snapshots: vertex cells, consistent cell data, TIME, units; snapshots.pvd with both times" "python3 '$tmp/vtkcheck.py' '$tmp/out'"
 
 "$gw" layer-impact --sample "$tmp/a.txt" --rb-rm 1 --vi 10 --exact --dt 3e-5 --energy-tol 1e-3 --out "$tmp/emon" > "$tmp/stdout" 2> "$tmp/stderr"
 rc=$?

@@ -126,6 +126,13 @@ int layer_impact_resolve(layer_impact_cli *c, gw_err *err)
     c->sp.method = gw_solver_method_find(c->method);
     if (c->sp.method < 0)
         return gw_err_set(err, GW_EINVAL, "--method: unknown method '%s' (bdf, adams, erk, dirk)", c->method);
+    /* a method the backend does not offer would have no effect: refused here,
+     * before any output, not by the solver set-up after the sample is read */
+    const int m = c->sp.method, cv = c->type == gw_solver_cvode, ak = c->type == gw_solver_arkode;
+    if (m != GW_METHOD_DEFAULT && !((cv && (m == GW_CVODE_BDF || m == GW_CVODE_ADAMS)) ||
+                                    (ak && (m == GW_ARKODE_ERK || m == GW_ARKODE_DIRK))))
+        return gw_err_set(err, GW_EINVAL, "--method: '%s' has no effect with the %s solver (cvode: bdf, adams; "
+                          "arkode: erk, dirk)", c->method, c->solver);
     c->sp.dt = c->type == gw_solver_verlet ? c->dt /* 0: gw_layer_impact chooses */
              : c->type == gw_solver_rk4 ? (c->dt > 0 ? c->dt : 1e-6) : 0;
     c->sp.rtol = c->rtol;
@@ -140,6 +147,18 @@ int layer_impact_resolve(layer_impact_cli *c, gw_err *err)
 int layer_impact_use_sample(layer_impact_cli *c, const gw_opt *o, const gw_layer_sample *s, gw_err *err)
 {
     c->rm = s->rm;
+    /* options that would have no effect in this combination are refused */
+    const int fixed_step = c->type == gw_solver_verlet || c->type == gw_solver_rk4;
+    static const char *const tols[] = {"rtol", "atol"};
+    for (int k = 0; k < 2; k++) {
+        const gw_opt *t = gw_cli_find(o, tols[k]);
+        if (fixed_step && t && t->seen)
+            return gw_err_set(err, GW_EINVAL, "--%s: has no effect with the fixed-step %s solver (the tolerances "
+                              "are cvode's and arkode's)", tols[k], c->solver);
+    }
+    const gw_opt *cmo = gw_cli_find(o, "clump-mass");
+    if (cmo && cmo->seen && !s->body)
+        return gw_err_set(err, GW_EINVAL, "--clump-mass: has no effect: the sample '%s' has no clumps", c->sample);
     const gw_opt *ml = gw_cli_find(o, "mass-law");
     if (!ml || !ml->seen) /* the sample's mass law unless overridden */
         c->m.lp.mass_law = s->mass_law;

@@ -111,6 +111,9 @@ int gw_cmd_layer_make(int argc, char **argv)
         return fail("layer-make", "--gravity: pluviation needs gravity > 0 m/s^2");
     if (mp.aspect_max != 4 && !mp.clumps)
         return fail("layer-make", "--aspect-max: shapes clumps, so it needs --clumps");
+    const gw_opt *cmo = gw_cli_find(o, "clump-mass");
+    if (cmo && cmo->seen && !mp.clumps)
+        return fail("layer-make", "--clump-mass: has no effect without --clumps (a disc sample has no clumps)");
     mp.solver = gw_solver_type_find(solver);
     if (mp.solver != gw_solver_verlet && mp.solver != gw_solver_rk4)
         return fail("layer-make", "--solver: pluviation takes verlet or rk4");
@@ -136,6 +139,10 @@ int gw_cmd_layer_make(int argc, char **argv)
         fprintf(stderr, "granwave layer-make --out: %s\n", err.msg);
         return 1;
     }
+    if (!r.converged) /* written (its header says converged 0), but not a settled packing: one line */
+        fprintf(stderr, "granwave layer-make: warning: the sample did not settle: E_k = %.4g J still above "
+                "--ke-threshold at t-max = %g s (raise --t-max); written to %s with 'converged 0'\n", r.ke_final,
+                mp.t_max, out);
     double h = 0;
     for (int k = 0; k < s.n; k++)
         h = fmax(h, s.y[k] + s.r[k]);

@@ -51,6 +51,24 @@ static char *command_line(const char *cmd, int argc, char **argv)
     return h;
 }
 
+/* hdr + "\nsettings: " + settings as one-line JSON; takes hdr (may be NULL
+ * after a failed allocation: then NULL). Caller frees. */
+static char *with_settings(char *hdr, const cJSON *settings)
+{
+    char *js = settings ? cJSON_PrintUnformatted(settings) : NULL;
+    char *out = NULL;
+    if (hdr && js) {
+        size_t len = strlen(hdr) + strlen(js) + 16;
+        if ((out = malloc(len)))
+            snprintf(out, len, "%s\nsettings: %s", hdr, js);
+    }
+    cJSON_free(js);
+    if (!out)
+        return hdr;
+    free(hdr);
+    return out;
+}
+
 /* ------------------------------------------------------------ layer-make --- */
 
 static const char *make_summary =
@@ -62,6 +80,30 @@ static const char *make_summary =
     "(quasi-rectangular, aspect ratio uniform in [1, A] with A = --aspect-max, 4 by\n"
     "default; equivalent radius on the discs' grading curve); the sample then carries\n"
     "a body id per disc.";
+
+/* Every setting of a pluviation, defaults included (the JSON "settings" and
+ * the sample's header). */
+static cJSON *make_settings(const gw_layer_make_params *mp, const gw_layer_params *lp)
+{
+    cJSON *st = cJSON_CreateObject();
+    cJSON_AddNumberToObject(st, "n", mp->n);
+    cJSON_AddNumberToObject(st, "rm", mp->rm);
+    cJSON_AddNumberToObject(st, "volume_ratio", mp->volume_ratio);
+    cJSON_AddNumberToObject(st, "width_rm", mp->width_rm);
+    cJSON_AddNumberToObject(st, "seed", (double)mp->seed);
+    cJSON_AddNumberToObject(st, "ke_threshold", mp->ke_threshold);
+    cJSON_AddNumberToObject(st, "t_max", mp->t_max);
+    cJSON_AddNumberToObject(st, "damping", mp->damping);
+    cJSON_AddNumberToObject(st, "modulus_factor", mp->modulus_factor);
+    cJSON_AddStringToObject(st, "solver", gw_solver_type_name(mp->solver));
+    cJSON_AddBoolToObject(st, "contact_events_located", 0);
+    cJSON_AddNumberToObject(st, "dt", mp->dt);
+    cJSON_AddNumberToObject(st, "height_rm", mp->height_rm);
+    cJSON_AddBoolToObject(st, "clumps", mp->clumps);
+    cJSON_AddNumberToObject(st, "aspect_max", mp->aspect_max);
+    cJSON_AddItemToObject(st, "material", mat_json(lp));
+    return st;
+}
 
 int gw_cmd_layer_make(int argc, char **argv)
 {
@@ -126,16 +168,22 @@ int gw_cmd_layer_make(int argc, char **argv)
         fprintf(stderr, "granwave layer-make: %s\n", err.msg);
         return rc == GW_EINVAL ? 2 : 1;
     }
-    char *hdr = command_line("layer-make", argc, argv);
-    char info[512];
-    snprintf(info, sizeof info, "%s\nsettled: t = %.4g s, E_k = %.4g J, converged %d, max overlap %.3g R_p; "
-             "mass law %s, clump mass %s; settling damping alpha = %g s/m, modulus factor %g, %s dt = %g s",
-             hdr ? hdr : "", r.t_settle, r.ke_final, r.converged, r.max_overlap,
-             gw_layer_mass_law_name(m.lp.mass_law), gw_layer_clump_mass_name(m.lp.clump_mass), mp.damping, mp.modulus_factor, solver, mp.dt);
+    cJSON *settings = make_settings(&mp, &m.lp);
+    char *hdr = with_settings(command_line("layer-make", argc, argv), settings);
+    size_t ilen = (hdr ? strlen(hdr) : 0) + 512;
+    char *info = malloc(ilen);
+    if (info)
+        snprintf(info, ilen, "%s\nsettled: t = %.4g s, E_k = %.4g J, converged %d, max overlap %.3g R_p; "
+                 "mass law %s, clump mass %s; settling damping alpha = %g s/m, modulus factor %g, %s dt = %g s",
+                 hdr ? hdr : "", r.t_settle, r.ke_final, r.converged, r.max_overlap,
+                 gw_layer_mass_law_name(m.lp.mass_law), gw_layer_clump_mass_name(m.lp.clump_mass), mp.damping,
+                 mp.modulus_factor, solver, mp.dt);
     free(hdr);
-    rc = gw_layer_sample_write(&s, out, info, &err);
+    rc = info ? gw_layer_sample_write(&s, out, info, &err) : gw_err_set(&err, GW_ENOMEM, "out of memory");
+    free(info);
     if (rc != GW_OK) {
         gw_layer_sample_free(&s);
+        cJSON_Delete(settings);
         fprintf(stderr, "granwave layer-make --out: %s\n", err.msg);
         return 1;
     }
@@ -168,19 +216,8 @@ int gw_cmd_layer_make(int argc, char **argv)
         cJSON_AddNumberToObject(j, "steps", (double)r.steps);
         cJSON_AddNumberToObject(j, "rebuilds", (double)r.rebuilds);
         cJSON_AddNumberToObject(j, "wall_time_ms", r.wall_ms);
-        cJSON *st = cJSON_AddObjectToObject(j, "settings");
-        cJSON_AddNumberToObject(st, "rm", mp.rm);
-        cJSON_AddNumberToObject(st, "volume_ratio", mp.volume_ratio);
-        cJSON_AddNumberToObject(st, "width_rm", mp.width_rm);
-        cJSON_AddNumberToObject(st, "seed", (double)mp.seed);
-        cJSON_AddNumberToObject(st, "ke_threshold", mp.ke_threshold);
-        cJSON_AddNumberToObject(st, "damping", mp.damping);
-        cJSON_AddNumberToObject(st, "modulus_factor", mp.modulus_factor);
-        cJSON_AddStringToObject(st, "solver", gw_solver_type_name(mp.solver));
-        cJSON_AddBoolToObject(st, "contact_events_located", 0);
-        cJSON_AddNumberToObject(st, "dt", mp.dt);
-        cJSON_AddNumberToObject(st, "height_rm", mp.height_rm);
-        cJSON_AddItemToObject(st, "material", mat_json(&m.lp));
+        cJSON_AddItemToObject(j, "settings", settings);
+        settings = NULL;
         gw_json_print(j, stdout);
         cJSON_Delete(j);
     } else {
@@ -199,6 +236,7 @@ int gw_cmd_layer_make(int argc, char **argv)
                r.rebuilds, out);
     }
     gw_layer_sample_free(&s);
+    cJSON_Delete(settings);
     return 0;
 }
 
@@ -312,6 +350,8 @@ static cJSON *impact_json(const impact_cli *c, const gw_layer_impact_result *r,
     cJSON_AddNumberToObject(s, "t_max", c->ip.t_max);
     cJSON_AddNumberToObject(s, "dt_out", c->ip.dt_out);
     cJSON_AddNumberToObject(s, "ring_width", c->ip.ring_width > 0 ? c->ip.ring_width : 2 * c->rm);
+    cJSON_AddNumberToObject(s, "rings", c->ip.nrings);
+    cJSON_AddNumberToObject(s, "energy_tol", c->ip.energy_tol);
     cJSON_AddBoolToObject(s, "full", c->ip.full);
     cJSON_AddStringToObject(s, "until", gw_layer_until_name(c->ip.until));
     cJSON_AddBoolToObject(s, "remove_walls", c->ip.remove_walls);
@@ -438,7 +478,9 @@ int gw_cmd_layer_impact(int argc, char **argv)
         fprintf(stderr, "granwave layer-impact: warning: %s\n", r.undecided);
     cJSON *j = impact_json(&c, &r, &sp);
     if (c.out) {
-        char *hdr = command_line("layer-impact", argc, argv);
+        /* the command line and every setting (defaults included, the step used)
+         * head each CSV and the HDF5 "run" attribute */
+        char *hdr = with_settings(command_line("layer-impact", argc, argv), cJSON_GetObjectItem(j, "settings"));
         char path[4096];
         if (hdr)
             for (char *p = hdr; *p; p++)

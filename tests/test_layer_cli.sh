@@ -137,6 +137,22 @@ ok = ok and p.startswith('<?xml') and 'type="Collection"' in p and ts == [(0.0, 
 sys.exit(0 if ok else 1)
 PY
 check "VTK snapshots: vertex cells, consistent cell data, TIME, units; snapshots.pvd with both times" "python3 '$tmp/vtkcheck.py' '$tmp/out'"
+# the full settings (defaults included) head every CSV of layer-impact (and the
+# HDF5 "run" attribute, the same string) and the layer-make sample
+cat > "$tmp/hdrcheck.py" <<'PY'
+import json, sys
+d, sample, make = sys.argv[1:4]
+want = json.load(open(d + '/impact.json'))['settings']
+ok = 'dt_out' in want and 'until' in want and 'solver' in want and 'material' in want
+for f in ('ledger.csv', 'crowns.csv', 'crowns_peaks.csv'):
+    first = open(d + '/' + f).readline()
+    ok = ok and first.startswith('# granwave') and json.loads(first.split(';settings: ', 1)[1]) == want
+line = next(l for l in open(sample) if l.startswith('# settings: '))
+m = json.load(open(make))['settings']
+ok = ok and json.loads(line[len('# settings: '):]) == m and m['n'] == 60 and m['seed'] == 3
+sys.exit(0 if ok else 1)
+PY
+check "CSV headers and the sample header carry the full settings (equal to the JSON's)" "python3 '$tmp/hdrcheck.py' '$tmp/out' '$tmp/a.txt' '$tmp/make.json'"
 
 "$gw" layer-impact --sample "$tmp/a.txt" --rb-rm 1 --vi 10 --exact --dt 3e-5 --energy-tol 1e-3 --out "$tmp/emon" > "$tmp/stdout" 2> "$tmp/stderr"
 rc=$?

@@ -125,6 +125,46 @@ int gw_layer_advance(gw_layer *L, double tout, gw_err *err);
 typedef void (*gw_layer_event_fn)(void *ctx, double t, int a, int b, int dir);
 void gw_layer_set_event_hook(gw_layer *L, gw_layer_event_fn fn, void *ctx);
 
+/* Block watch: event functions on the block (the particle marked by
+ * gw_layer_set_block), so that an impact's outcome is read from events on the
+ * block, never from output samples. Two functions join the layer's roots:
+ *   GW_LAYER_BLOCK_VN:    the block's normal (vertical) velocity v_y;
+ *   GW_LAYER_BLOCK_TOUCH: the largest overlap u_n of the block's listed
+ *                         contacts, walls included (negative: free flight).
+ * fn is called at each of their zero crossings with dir = +1 (rising: v_y
+ * turns upward; the first contact closes) or -1 (v_y turns downward; the last
+ * contact opens), the time and the block's state there. With the located
+ * backends (rk4, cvode, arkode) the solver stops at the root and ev is the
+ * state there; with verlet (roots reported at the end of the step, not
+ * located) the time and state are interpolated linearly inside that step from
+ * the block's own state at the step's two ends. Watch roots change nothing in
+ * the run: neither the projection nor a solver restart follows them. Several
+ * crossings in one step are reported in time order.
+ * The running extremes of the block (largest v_y, lowest centre) are taken
+ * over every state the event functions are evaluated at: each step end, and
+ * with the located backends also the root finder's trial points (states of
+ * the same solution).
+ * Must be called before gw_layer_start, after gw_layer_set_block; GW_EINVAL
+ * otherwise (the layer unchanged). fn may be NULL (extremes only). */
+enum { GW_LAYER_BLOCK_VN = 0, GW_LAYER_BLOCK_TOUCH = 1 };
+typedef struct gw_layer_block_event {
+    int kind;             /* GW_LAYER_BLOCK_VN or GW_LAYER_BLOCK_TOUCH */
+    int dir;              /* +1 rising, -1 falling through zero */
+    double t;             /* s */
+    double x, y, vx, vy;  /* block centre (m) and velocity (m/s) at t */
+    int located;          /* 1: solver-located root; 0: interpolated in a verlet step */
+} gw_layer_block_event;
+typedef void (*gw_layer_block_fn)(void *ctx, const gw_layer_block_event *ev);
+int gw_layer_watch_block(gw_layer *L, gw_layer_block_fn fn, void *ctx, gw_err *err);
+
+typedef struct gw_layer_block_extremes {
+    double vy_max, t_vy_max, vx_at_vy_max; /* largest v_y so far (m/s), when (s), v_x then */
+    double y_min, t_y_min;                 /* lowest block centre so far (m), when (s) */
+    int n;                                 /* states seen */
+} gw_layer_block_extremes;
+/* The running extremes since gw_layer_start (n = 0 without a watch). */
+void gw_layer_block_extremes_get(const gw_layer *L, gw_layer_block_extremes *ex);
+
 typedef struct gw_layer_stats {
     long steps, rhs_evals, events, rebuilds, contacts_listed, projections, zeno_guards;
 } gw_layer_stats;
@@ -192,10 +232,14 @@ int gw_layer_region_ledger(const gw_layer *L, gw_layer_energy *out);
 void gw_layer_rings(const gw_layer *L, double cx, double cy, double w, int nring,
                     double *kinetic, double *strain, double *coord);
 
-/* Write a VTK legacy POLYDATA snapshot: points with radius, velocity, omega;
- * contacts with u_n > 0 as lines carrying F_n and F_t. */
+/* Write a VTK legacy POLYDATA snapshot: points with radius, velocity, omega
+ * (one vertex cell each); contacts with u_n > 0 as lines carrying F_n and F_t;
+ * field data TIME (s); units in the title line. */
 int gw_layer_write_vtk(const gw_layer *L, const char *path, const char *title,
                        gw_err *err);
+/* Write a ParaView collection (.pvd) of n snapshot files (names relative to
+ * the .pvd's directory, no XML special characters) at times[k] s. */
+int gw_layer_write_pvd(const char *path, int n, const char *const *files, const double *times, gw_err *err);
 
 /* -------------------------------------------------------------- samples ---- */
 
@@ -327,22 +371,44 @@ typedef struct gw_layer_impact_params {
     double dt_out;      /* sampling interval, s [2e-5] */
     double ring_width;  /* crown width d_c, m [2 R_m] */
     int nrings;         /* crowns [12] */
-    int full;           /* 1: run to t_max even after the block has left [0] */
+    int full;           /* 1: run to t_max even after the outcome is decided [0] */
+    int until;          /* GW_LAYER_UNTIL_REBOUND: stop once the rebound is complete
+                           (T_f, physics.md 2.3) or the block is found not to bounce;
+                           GW_LAYER_UNTIL_VERDICT: stop once the bounce verdict is
+                           decided (e_n, e, alpha_r then NaN) [rebound] */
     int remove_walls;   /* 1: no left/right/bottom walls from the impact on [0] */
     double energy_tol;  /* > 0: stop with GW_ESOLVER when the ledger closure
                            |sum - A|/A exceeds it at a sample [0 = off] */
 } gw_layer_impact_params;
 
 gw_layer_impact_params gw_layer_impact_params_default(void);
+enum { GW_LAYER_UNTIL_REBOUND = 0, GW_LAYER_UNTIL_VERDICT = 1 };
+/* "rebound" or "verdict"; and back (-1 for any other string). */
+const char *gw_layer_until_name(int until);
+int gw_layer_until_parse(const char *name);
 
 /* Time series recorded every dt_out (allocated by the run, freed with
  * gw_layer_impact_result_free). */
 typedef struct gw_layer_impact_result {
-    int bounced;            /* vy changed sign and the block left all contacts */
-    double v_ni, v_nr, v_r, e_n, e, alpha_r_deg; /* at the largest upward velocity
-                                                    (0 / NaN if vy never > 0) */
-    double t_rebound;       /* T_i: time of the largest upward velocity, s */
-    double penetration;     /* largest downward block displacement, m */
+    /* Outcome, from events on the block (layer_outcome.c documents the rules). */
+    int bounced;            /* 1: the block left the layer moving up; 0: its normal
+                               velocity turned upward and came back to zero while it
+                               still touched the layer; -1: undecided (the run ended
+                               before either) */
+    double v_ni;            /* V_i cos alpha_i, m/s */
+    double v_nr, v_r, e_n, e, alpha_r_deg; /* at T_i, the largest v_y up to T_f
+                                              (physics.md 2.3, B.16-B.18); NaN unless
+                                              bounced and T_f reached */
+    double t_rebound;       /* T_i, s (NaN as e_n) */
+    double t_f;             /* T_f: v_y back to zero after the bounce, s (NaN if not reached) */
+    double t_leave;         /* the bounce event: the block leaves moving up, s (NaN) */
+    double v_nr_first, v_r_first, e_n_first, e_first, alpha_r_first_deg, t_rebound_first;
+                            /* the same at the first free-flight maximum: the largest
+                               v_y up to t_leave (NaN unless bounced) */
+    double penetration;     /* largest downward displacement of the block centre up to
+                               the end of the outcome, m */
+    char undecided[320];    /* why the run ended with an undecided outcome ("" if
+                               none, or when --until verdict stopped it on purpose) */
     double energy_error;    /* max |sum - A| / A over the run */
     double e_incident;      /* (1/2) M V_i^2, J */
     /* First contact (docs/physics.md 2.5): from the touch to the smallest block
@@ -405,13 +471,17 @@ int gw_layer_impact_check(const gw_layer_sample *s, const gw_layer_impact_params
 /* The verlet step gw_layer_impact takes when sp->dt is 0: the Hertz contact
  * time of the two smallest discs meeting at V_i, tau = (4/5) B(2/5, 1/2)
  * (5 M / (4 K_n))^(2/5) V_i^(-1/5) with the reduced mass M = m/2, over GW_LAYER_DEM_STEPS,
- * shortened so that dt_out is a whole number of steps. s. */
+ * rounded down to GW_LAYER_DEM_BASE / k (or a multiple of it), so that a dt_out
+ * that is a multiple of GW_LAYER_DEM_BASE samples on step ends: the trajectory,
+ * hence the outcome, does not depend on dt_out. s. */
 #define GW_LAYER_DEM_STEPS 100
+#define GW_LAYER_DEM_BASE 1e-5
 double gw_layer_impact_dem_dt(const gw_layer_sample *s, const gw_layer_params *lp,
                               const gw_layer_impact_params *ip);
 
 /* One block impact on a sample (docs/physics.md 2.3). vtk_dir (may be NULL) receives
- * snapshot_0.vtk and snapshot_end.vtk. GW_EINVAL names the input (block
+ * snapshot_0.vtk, snapshot_end.vtk and snapshots.pvd (both as a ParaView series
+ * with their times). GW_EINVAL names the input (block
  * overlapping the layer, block outside the box, bad parameters). */
 int gw_layer_impact(const gw_layer_sample *s, const gw_layer_params *lp,
                     const gw_layer_impact_params *ip, const gw_solver_type *type,

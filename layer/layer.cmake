@@ -6,9 +6,11 @@ add_library(gw_layer_obj OBJECT
   ${CMAKE_CURRENT_LIST_DIR}/layer_contacts.c
   ${CMAKE_CURRENT_LIST_DIR}/layer_sim.c
   ${CMAKE_CURRENT_LIST_DIR}/layer_dem.c
+  ${CMAKE_CURRENT_LIST_DIR}/layer_watch.c
   ${CMAKE_CURRENT_LIST_DIR}/layer_sample.c
   ${CMAKE_CURRENT_LIST_DIR}/layer_make.c
   ${CMAKE_CURRENT_LIST_DIR}/layer_impact.c
+  ${CMAKE_CURRENT_LIST_DIR}/layer_outcome.c
   ${CMAKE_CURRENT_LIST_DIR}/layer_crowns.c
   ${CMAKE_CURRENT_LIST_DIR}/layer_regions.c
   ${CMAKE_CURRENT_LIST_DIR}/layer_h5.c

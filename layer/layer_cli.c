@@ -7,6 +7,7 @@
  * Units: SI, angles in degrees.
  */
 #include <math.h>
+#include <stddef.h>
 #include <string.h>
 
 #include "gw_cli.h"
@@ -42,7 +43,25 @@ int layer_mat_resolve(layer_mat_cli *m, gw_err *err)
         return gw_err_set(err, GW_EINVAL, "--mass-law: unknown '%s' (disc, sphere)", m->mass_law);
     if ((m->lp.clump_mass = gw_layer_clump_mass_parse(m->clump_mass)) < 0)
         return gw_err_set(err, GW_EINVAL, "--clump-mass: unknown '%s' (sum, union)", m->clump_mass);
-    return gw_layer_params_validate(&m->lp, err);
+    int rc = gw_layer_params_validate(&m->lp, err);
+    if (rc == GW_OK || !err)
+        return rc;
+    /* The library names the quantity; the message names the flag too: the
+     * first flag whose value alone, on the defaults, fails the same check. */
+    static const struct { const char *flag; size_t off; } fields[] = {
+        {"shear-modulus", offsetof(gw_layer_params, shear_modulus)}, {"poisson", offsetof(gw_layer_params, poisson)},
+        {"friction", offsetof(gw_layer_params, friction_deg)}, {"density", offsetof(gw_layer_params, density)},
+        {"gravity", offsetof(gw_layer_params, gravity)}, {"skin", offsetof(gw_layer_params, skin)}};
+    for (size_t k = 0; k < sizeof fields / sizeof fields[0]; k++) {
+        gw_layer_params one = gw_layer_params_default();
+        memcpy((char *)&one + fields[k].off, (const char *)&m->lp + fields[k].off, sizeof(double));
+        if (gw_layer_params_validate(&one, NULL) != GW_OK) {
+            char tmp[sizeof err->msg];
+            snprintf(tmp, sizeof tmp, "%s", err->msg);
+            return gw_err_set(err, rc, "--%s: %s", fields[k].flag, tmp);
+        }
+    }
+    return rc;
 }
 
 int layer_impact_options(layer_impact_cli *c, gw_opt *o)
@@ -56,6 +75,7 @@ int layer_impact_options(layer_impact_cli *c, gw_opt *o)
     c->rtol = 1e-8;
     c->atol = 1e-8;
     c->rings = c->ip.nrings;
+    c->until = gw_layer_until_name(c->ip.until);
     /* physical ranges are checked by gw_layer_impact_check (messages name the
      * quantity); the table only bounds the solver settings. An option added here must also
      * raise LAYER_IMPACT_NOPTS (layer_cli.h): callers size their tables by it. */
@@ -78,7 +98,10 @@ int layer_impact_options(layer_impact_cli *c, gw_opt *o)
     o[i++] = OPT_D("atol", &c->atol, "A", "absolute tolerance (scaled per component) [1e-8]", 0, 1, 1);
     o[i++] = OPT_D("energy-tol", &c->ip.energy_tol, "E", "stop (exit 1) when the ledger closure |sum - A|/A exceeds E [0 = off]", -INFINITY, INFINITY, 0);
     o[i++] = (gw_opt){.name = "remove-walls", .kind = GW_OPT_FLAG, .dest = &c->ip.remove_walls, .help = "take the left, right and bottom walls away at the start of the impact"};
-    o[i++] = (gw_opt){.name = "full", .kind = GW_OPT_FLAG, .dest = &c->ip.full, .help = "run to t-max even after the block has left (for the crowns)"};
+    o[i++] = (gw_opt){.name = "full", .kind = GW_OPT_FLAG, .dest = &c->ip.full, .help = "run to t-max even after the outcome is decided (for the crowns)"};
+    o[i++] = OPT_S("until", &c->until, "WHAT", "rebound: run until the rebound is complete (T_f: the block's normal velocity back to "
+                   "zero after it left, physics.md 2.3) or the block is found not to bounce; verdict: stop at the bounce "
+                   "verdict (e_n, e, alpha_r then null; the _first values given) [rebound]");
     return i;
 }
 
@@ -88,6 +111,10 @@ int layer_impact_resolve(layer_impact_cli *c, gw_err *err)
     int rc = layer_mat_resolve(&c->m, err);
     if (rc != GW_OK)
         return rc;
+    if ((c->ip.until = gw_layer_until_parse(c->until)) < 0)
+        return gw_err_set(err, GW_EINVAL, "--until: unknown '%s' (rebound, verdict)", c->until);
+    if (c->ip.full && c->ip.until == GW_LAYER_UNTIL_VERDICT)
+        return gw_err_set(err, GW_EINVAL, "--until verdict: has no effect with --full (which runs to t-max)");
     if (!c->solver)
         c->solver = c->exact ? "rk4" : "verlet";
     c->type = gw_solver_type_find(c->solver);
@@ -100,6 +127,13 @@ int layer_impact_resolve(layer_impact_cli *c, gw_err *err)
     c->sp.method = gw_solver_method_find(c->method);
     if (c->sp.method < 0)
         return gw_err_set(err, GW_EINVAL, "--method: unknown method '%s' (bdf, adams, erk, dirk)", c->method);
+    /* a method the backend does not offer would have no effect: refused here,
+     * before any output, not by the solver set-up after the sample is read */
+    const int m = c->sp.method, cv = c->type == gw_solver_cvode, ak = c->type == gw_solver_arkode;
+    if (m != GW_METHOD_DEFAULT && !((cv && (m == GW_CVODE_BDF || m == GW_CVODE_ADAMS)) ||
+                                    (ak && (m == GW_ARKODE_ERK || m == GW_ARKODE_DIRK))))
+        return gw_err_set(err, GW_EINVAL, "--method: '%s' has no effect with the %s solver (cvode: bdf, adams; "
+                          "arkode: erk, dirk)", c->method, c->solver);
     c->sp.dt = c->type == gw_solver_verlet ? c->dt /* 0: gw_layer_impact chooses */
              : c->type == gw_solver_rk4 ? (c->dt > 0 ? c->dt : 1e-6) : 0;
     c->sp.rtol = c->rtol;
@@ -114,6 +148,18 @@ int layer_impact_resolve(layer_impact_cli *c, gw_err *err)
 int layer_impact_use_sample(layer_impact_cli *c, const gw_opt *o, const gw_layer_sample *s, gw_err *err)
 {
     c->rm = s->rm;
+    /* options that would have no effect in this combination are refused */
+    const int fixed_step = c->type == gw_solver_verlet || c->type == gw_solver_rk4;
+    static const char *const tols[] = {"rtol", "atol"};
+    for (int k = 0; k < 2; k++) {
+        const gw_opt *t = gw_cli_find(o, tols[k]);
+        if (fixed_step && t && t->seen)
+            return gw_err_set(err, GW_EINVAL, "--%s: has no effect with the fixed-step %s solver (the tolerances "
+                              "are cvode's and arkode's)", tols[k], c->solver);
+    }
+    const gw_opt *cmo = gw_cli_find(o, "clump-mass");
+    if (cmo && cmo->seen && !s->body)
+        return gw_err_set(err, GW_EINVAL, "--clump-mass: has no effect: the sample '%s' has no clumps", c->sample);
     const gw_opt *ml = gw_cli_find(o, "mass-law");
     if (!ml || !ml->seen) /* the sample's mass law unless overridden */
         c->m.lp.mass_law = s->mass_law;

@@ -42,7 +42,7 @@ int layer_mat_resolve(layer_mat_cli *m, gw_err *err);
 typedef struct layer_impact_cli {
     layer_mat_cli m;
     gw_layer_impact_params ip;
-    const char *sample, *solver, *method, *out;
+    const char *sample, *solver, *method, *out, *until;
     double dt, rtol, atol;
     double rm; /* the sample's R_m, m (set by layer_impact_use_sample) */
     long rings;
@@ -53,7 +53,7 @@ typedef struct layer_impact_cli {
 } layer_impact_cli;
 
 /* Number of options layer_impact_options writes (materials included). */
-#define LAYER_IMPACT_NOPTS (LAYER_MAT_NOPTS + 20)
+#define LAYER_IMPACT_NOPTS (LAYER_MAT_NOPTS + 21)
 
 /* Zero c, fill the defaults and write the impact option table (materials,
  * sample, block, run, solver, flags remove-walls and full) into

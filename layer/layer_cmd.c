@@ -53,6 +53,24 @@ static char *command_line(const char *cmd, int argc, char **argv)
     return h;
 }
 
+/* hdr + "\nsettings: " + settings as one-line JSON; takes hdr (may be NULL
+ * after a failed allocation: then NULL). Caller frees. */
+static char *with_settings(char *hdr, const cJSON *settings)
+{
+    char *js = settings ? cJSON_PrintUnformatted(settings) : NULL;
+    char *out = NULL;
+    if (hdr && js) {
+        size_t len = strlen(hdr) + strlen(js) + 16;
+        if ((out = malloc(len)))
+            snprintf(out, len, "%s\nsettings: %s", hdr, js);
+    }
+    cJSON_free(js);
+    if (!out)
+        return hdr;
+    free(hdr);
+    return out;
+}
+
 /* ------------------------------------------------------------ layer-make --- */
 
 static const char *make_summary =
@@ -64,6 +82,30 @@ static const char *make_summary =
     "(quasi-rectangular, aspect ratio uniform in [1, A] with A = --aspect-max, 4 by\n"
     "default; equivalent radius on the discs' grading curve); the sample then carries\n"
     "a body id per disc.";
+
+/* Every setting of a pluviation, defaults included (the JSON "settings" and
+ * the sample's header). */
+static cJSON *make_settings(const gw_layer_make_params *mp, const gw_layer_params *lp)
+{
+    cJSON *st = cJSON_CreateObject();
+    cJSON_AddNumberToObject(st, "n", mp->n);
+    cJSON_AddNumberToObject(st, "rm", mp->rm);
+    cJSON_AddNumberToObject(st, "volume_ratio", mp->volume_ratio);
+    cJSON_AddNumberToObject(st, "width_rm", mp->width_rm);
+    cJSON_AddNumberToObject(st, "seed", (double)mp->seed);
+    cJSON_AddNumberToObject(st, "ke_threshold", mp->ke_threshold);
+    cJSON_AddNumberToObject(st, "t_max", mp->t_max);
+    cJSON_AddNumberToObject(st, "damping", mp->damping);
+    cJSON_AddNumberToObject(st, "modulus_factor", mp->modulus_factor);
+    cJSON_AddStringToObject(st, "solver", gw_solver_type_name(mp->solver));
+    cJSON_AddBoolToObject(st, "contact_events_located", 0);
+    cJSON_AddNumberToObject(st, "dt", mp->dt);
+    cJSON_AddNumberToObject(st, "height_rm", mp->height_rm);
+    cJSON_AddBoolToObject(st, "clumps", mp->clumps);
+    cJSON_AddNumberToObject(st, "aspect_max", mp->aspect_max);
+    cJSON_AddItemToObject(st, "material", mat_json(lp));
+    return st;
+}
 
 int gw_cmd_layer_make(int argc, char **argv)
 {
@@ -113,6 +155,9 @@ int gw_cmd_layer_make(int argc, char **argv)
         return fail("layer-make", "--gravity: pluviation needs gravity > 0 m/s^2");
     if (mp.aspect_max != 4 && !mp.clumps)
         return fail("layer-make", "--aspect-max: shapes clumps, so it needs --clumps");
+    const gw_opt *cmo = gw_cli_find(o, "clump-mass");
+    if (cmo && cmo->seen && !mp.clumps)
+        return fail("layer-make", "--clump-mass: has no effect without --clumps (a disc sample has no clumps)");
     mp.solver = gw_solver_type_find(solver);
     if (mp.solver != gw_solver_verlet && mp.solver != gw_solver_rk4)
         return fail("layer-make", "--solver: pluviation takes verlet or rk4");
@@ -125,19 +170,29 @@ int gw_cmd_layer_make(int argc, char **argv)
         fprintf(stderr, "granwave layer-make: %s\n", err.msg);
         return rc == GW_EINVAL ? 2 : 1;
     }
-    char *hdr = command_line("layer-make", argc, argv);
-    char info[512];
-    snprintf(info, sizeof info, "%s\nsettled: t = %.4g s, E_k = %.4g J, converged %d, max overlap %.3g R_p; "
-             "mass law %s, clump mass %s; settling damping alpha = %g s/m, modulus factor %g, %s dt = %g s",
-             hdr ? hdr : "", r.t_settle, r.ke_final, r.converged, r.max_overlap,
-             gw_layer_mass_law_name(m.lp.mass_law), gw_layer_clump_mass_name(m.lp.clump_mass), mp.damping, mp.modulus_factor, solver, mp.dt);
+    cJSON *settings = make_settings(&mp, &m.lp);
+    char *hdr = with_settings(command_line("layer-make", argc, argv), settings);
+    size_t ilen = (hdr ? strlen(hdr) : 0) + 512;
+    char *info = malloc(ilen);
+    if (info)
+        snprintf(info, ilen, "%s\nsettled: t = %.4g s, E_k = %.4g J, converged %d, max overlap %.3g R_p; "
+                 "mass law %s, clump mass %s; settling damping alpha = %g s/m, modulus factor %g, %s dt = %g s",
+                 hdr ? hdr : "", r.t_settle, r.ke_final, r.converged, r.max_overlap,
+                 gw_layer_mass_law_name(m.lp.mass_law), gw_layer_clump_mass_name(m.lp.clump_mass), mp.damping,
+                 mp.modulus_factor, solver, mp.dt);
     free(hdr);
-    rc = gw_layer_sample_write(&s, out, info, &err);
+    rc = info ? gw_layer_sample_write(&s, out, info, &err) : gw_err_set(&err, GW_ENOMEM, "out of memory");
+    free(info);
     if (rc != GW_OK) {
         gw_layer_sample_free(&s);
+        cJSON_Delete(settings);
         fprintf(stderr, "granwave layer-make --out: %s\n", err.msg);
         return 1;
     }
+    if (!r.converged) /* written (its header says converged 0), but not a settled packing: one line */
+        fprintf(stderr, "granwave layer-make: warning: the sample did not settle: E_k = %.4g J still above "
+                "--ke-threshold at t-max = %g s (raise --t-max); written to %s with 'converged 0'\n", r.ke_final,
+                mp.t_max, out);
     double h = 0;
     for (int k = 0; k < s.n; k++)
         h = fmax(h, s.y[k] + s.r[k]);
@@ -163,19 +218,8 @@ int gw_cmd_layer_make(int argc, char **argv)
         cJSON_AddNumberToObject(j, "steps", (double)r.steps);
         cJSON_AddNumberToObject(j, "rebuilds", (double)r.rebuilds);
         cJSON_AddNumberToObject(j, "wall_time_ms", r.wall_ms);
-        cJSON *st = cJSON_AddObjectToObject(j, "settings");
-        cJSON_AddNumberToObject(st, "rm", mp.rm);
-        cJSON_AddNumberToObject(st, "volume_ratio", mp.volume_ratio);
-        cJSON_AddNumberToObject(st, "width_rm", mp.width_rm);
-        cJSON_AddNumberToObject(st, "seed", (double)mp.seed);
-        cJSON_AddNumberToObject(st, "ke_threshold", mp.ke_threshold);
-        cJSON_AddNumberToObject(st, "damping", mp.damping);
-        cJSON_AddNumberToObject(st, "modulus_factor", mp.modulus_factor);
-        cJSON_AddStringToObject(st, "solver", gw_solver_type_name(mp.solver));
-        cJSON_AddBoolToObject(st, "contact_events_located", 0);
-        cJSON_AddNumberToObject(st, "dt", mp.dt);
-        cJSON_AddNumberToObject(st, "height_rm", mp.height_rm);
-        cJSON_AddItemToObject(st, "material", mat_json(&m.lp));
+        cJSON_AddItemToObject(j, "settings", settings);
+        settings = NULL;
         gw_json_print(j, stdout);
         cJSON_Delete(j);
     } else {
@@ -198,6 +242,7 @@ int gw_cmd_layer_make(int argc, char **argv)
                 "above the threshold); the sample in %s records 'converged 0'; raise --t-max%s\n",
                 mp.t_max, r.ke_final, out, mp.solver == gw_solver_verlet ? " or use --solver rk4" : "");
     gw_layer_sample_free(&s);
+    cJSON_Delete(settings);
     return 0;
 }
 
@@ -218,7 +263,10 @@ static cJSON *impact_json(const impact_cli *c, const gw_layer_impact_result *r,
 {
     cJSON *o = cJSON_CreateObject();
     cJSON_AddStringToObject(o, "version", gw_version());
-    cJSON_AddBoolToObject(o, "bounced", r->bounced);
+    if (r->bounced < 0) /* undecided: null, never false */
+        cJSON_AddNullToObject(o, "bounced");
+    else
+        cJSON_AddBoolToObject(o, "bounced", r->bounced);
     cJSON_AddNumberToObject(o, "e_n", r->e_n);
     cJSON_AddNumberToObject(o, "e", r->e);
     cJSON_AddNumberToObject(o, "alpha_r", r->alpha_r_deg);
@@ -226,6 +274,18 @@ static cJSON *impact_json(const impact_cli *c, const gw_layer_impact_result *r,
     cJSON_AddNumberToObject(o, "v_ni", r->v_ni);
     cJSON_AddNumberToObject(o, "v_r", r->v_r);
     cJSON_AddNumberToObject(o, "t_rebound", r->t_rebound);
+    cJSON_AddNumberToObject(o, "t_f", r->t_f);
+    cJSON_AddNumberToObject(o, "t_leave", r->t_leave);
+    cJSON_AddNumberToObject(o, "e_n_first", r->e_n_first);
+    cJSON_AddNumberToObject(o, "e_first", r->e_first);
+    cJSON_AddNumberToObject(o, "alpha_r_first", r->alpha_r_first_deg);
+    cJSON_AddNumberToObject(o, "v_nr_first", r->v_nr_first);
+    cJSON_AddNumberToObject(o, "v_r_first", r->v_r_first);
+    cJSON_AddNumberToObject(o, "t_rebound_first", r->t_rebound_first);
+    if (r->undecided[0])
+        cJSON_AddStringToObject(o, "undecided", r->undecided);
+    else
+        cJSON_AddNullToObject(o, "undecided");
     cJSON_AddNumberToObject(o, "penetration", r->penetration);
     cJSON_AddNumberToObject(o, "penetration_rm", r->penetration / c->rm);
     cJSON_AddNumberToObject(o, "energy_error", r->energy_error);
@@ -309,7 +369,10 @@ static cJSON *impact_json(const impact_cli *c, const gw_layer_impact_result *r,
     cJSON_AddNumberToObject(s, "t_max", c->ip.t_max);
     cJSON_AddNumberToObject(s, "dt_out", c->ip.dt_out);
     cJSON_AddNumberToObject(s, "ring_width", c->ip.ring_width > 0 ? c->ip.ring_width : 2 * c->rm);
+    cJSON_AddNumberToObject(s, "rings", c->ip.nrings);
+    cJSON_AddNumberToObject(s, "energy_tol", c->ip.energy_tol);
     cJSON_AddBoolToObject(s, "full", c->ip.full);
+    cJSON_AddStringToObject(s, "until", gw_layer_until_name(c->ip.until));
     cJSON_AddBoolToObject(s, "remove_walls", c->ip.remove_walls);
     cJSON_AddItemToObject(s, "material", mat_json(&c->m.lp));
     cJSON *so = cJSON_AddObjectToObject(s, "solver");
@@ -458,9 +521,13 @@ int gw_cmd_layer_impact(int argc, char **argv)
         return rc == GW_EINVAL || rc == GW_EUNSUPPORTED ? 2 : 1;
     }
     int code = 0;
+    if (r.undecided[0]) /* one line; the JSON says null */
+        fprintf(stderr, "granwave layer-impact: warning: %s\n", r.undecided);
     cJSON *j = impact_json(&c, &r, &sp);
     if (c.out) {
-        char *hdr = command_line("layer-impact", argc, argv);
+        /* the command line and every setting (defaults included, the step used)
+         * head each CSV and the HDF5 "run" attribute */
+        char *hdr = with_settings(command_line("layer-impact", argc, argv), cJSON_GetObjectItem(j, "settings"));
         char path[4096];
         if (hdr)
             for (char *p = hdr; *p; p++)
@@ -482,8 +549,12 @@ int gw_cmd_layer_impact(int argc, char **argv)
                    gw_version(), c.ip.rb_rm, c.ip.vi, c.ip.alpha_deg, c.solver);
             printf("  mass law %s, %d mobile + %d frozen particles\n",
                    gw_layer_mass_law_name(c.m.lp.mass_law), r.n_mobile, r.n_frozen);
-            printf("  bounced %s: e_n = %.4g, e = %.4g, alpha_r = %.4g deg (V_nr = %.4g m/s at %.4g ms)\n",
-                   r.bounced ? "yes" : "no", r.e_n, r.e, r.alpha_r_deg, r.v_nr, r.t_rebound * 1e3);
+            printf("  bounced %s: e_n = %.4g, e = %.4g, alpha_r = %.4g deg (V_nr = %.4g m/s at T_i = %.4g ms, "
+                   "T_f = %.4g ms)\n", r.bounced > 0 ? "yes" : r.bounced == 0 ? "no" : "undecided", r.e_n, r.e,
+                   r.alpha_r_deg, r.v_nr, r.t_rebound * 1e3, r.t_f * 1e3);
+            printf("  first free-flight maximum: e_n = %.4g, e = %.4g, alpha_r = %.4g deg (V_nr = %.4g m/s at "
+                   "%.4g ms; left at %.4g ms)\n", r.e_n_first, r.e_first, r.alpha_r_first_deg, r.v_nr_first,
+                   r.t_rebound_first * 1e3, r.t_leave * 1e3);
             printf("  penetration %.4g m (%.3g R_m)\n", r.penetration, r.penetration / c.rm);
             printf("  first contact: E_d = %.3g of E_incident (ends at %.4g ms)\n",
                    r.dissipated_first_contact, r.t_first_contact * 1e3);

@@ -165,7 +165,7 @@ int layer_contacts_build(gw_layer *L, gw_err *err)
     const int nb = L->nb;
     long dim = 6L * nb + nc + L->ntail;
     double *ny = malloc((size_t)dim * sizeof *ny), *nsc = malloc((size_t)dim * sizeof *nsc);
-    int *roots = malloc((2 * (size_t)nc + (size_t)n + 1) * sizeof *roots);
+    int *roots = malloc((2 * (size_t)nc + (size_t)n + 3) * sizeof *roots); /* + 2 watch roots */
     long *drift = malloc((size_t)dim * sizeof *drift);
     double *un_last = calloc((size_t)nc + 1, sizeof *un_last);
     layer_tscr *tscr = calloc((size_t)nc + 1, sizeof *tscr);

@@ -16,11 +16,14 @@
  *   sided power spectral density per ring, layer_crowns.c); the xcorr and spec
  *   datasets are absent when the run had fewer than 4 evenly spaced samples.
  * Root attributes: "run" (version, command line, settings) and the scalar
- * results (e_n, e, wave_speed, wave_speed_xcorr, wave_speed_xcorr_err, ...). Written under a temporary name and renamed
+ * results (e_n, e, wave_speed, wave_speed_xcorr, wave_speed_xcorr_err, ...; bounced is NaN when undecided, e_n, e,
+ * alpha_r NaN until T_f; e_n_first, e_first, alpha_r_first, t_rebound_first:
+ * the first free-flight maximum; t_rebound, t_f, t_leave in s). Written under a temporary name and renamed
  * into place, so an interrupted run leaves no partial file.
  */
 #define _POSIX_C_SOURCE 200809L
 #include <fcntl.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <unistd.h>
@@ -115,7 +118,13 @@ int gw_layer_impact_write_h5(const gw_layer_impact_result *r, const char *path, 
               put_double_attr(file, "energy_error", r->energy_error) ||
               put_double_attr(file, "wave_speed", r->wave_speed) ||
               put_double_attr(file, "dissipated_first_contact", r->dissipated_first_contact) ||
-              put_double_attr(file, "bounced", r->bounced) ||
+              put_double_attr(file, "bounced", r->bounced < 0 ? NAN : r->bounced) ||
+              put_double_attr(file, "alpha_r", r->alpha_r_deg) ||
+              put_double_attr(file, "t_rebound", r->t_rebound) || put_double_attr(file, "t_f", r->t_f) ||
+              put_double_attr(file, "t_leave", r->t_leave) ||
+              put_double_attr(file, "e_n_first", r->e_n_first) || put_double_attr(file, "e_first", r->e_first) ||
+              put_double_attr(file, "alpha_r_first", r->alpha_r_first_deg) ||
+              put_double_attr(file, "t_rebound_first", r->t_rebound_first) ||
               put_double_attr(file, "wave_speed_xcorr", r->wave_speed_xcorr) ||
               put_double_attr(file, "wave_speed_xcorr_err", r->wave_speed_xcorr_err);
         if (!bad && nf > 0)

@@ -11,15 +11,12 @@
  * in the paper's reduced heights; remove_walls takes the three walls away at
  * the start of the impact (docs/physics.md 2.5, bottom-wall study). Gravitational energy is measured from the
  * initial positions, so A = (1/2) M V_i^2 + the initial strain energy.
- * Observables: bounced when the block's vertical velocity has changed sign and
- * the block has left every contact while moving up (a block vibrating in the
- * layer with tiny upward velocities does not count); the reflected velocities
- * are taken at the largest upward velocity (T_i) and the
- * run stops once the block has left all contacts and its upward velocity has
- * started to fall (gravity), or at t_max (always at t_max with `full`, for the
- * crowns). e_n = V_nr / V_ni, e = V_r / V_i,
- * alpha_r = arccos(V_nr / V_r) (B.16-B.18). Penetration: largest downward
- * displacement of the block centre. First contact: until the first sample
+ * Outcome (bounce verdict, T_i, T_f, e_n = V_nr / V_ni, e = V_r / V_i,
+ * alpha_r = arccos(V_nr / V_r), B.16-B.18, the first free-flight maximum, the
+ * penetration) from events on the block, never from the samples
+ * (layer_outcome.c documents the rules). The run stops once the outcome that
+ * `until` asks for is decided (the next sample ends it), or at t_max (always
+ * at t_max with `full`, for the crowns). First contact: until the first sample
  * (every dt_out) at which the block-target overlap is back to <= 0; E_d then
  * over (1/2) M V_i^2 (sampled, so identical on every backend up to dt_out).
  * Crowns: rings of width d_c centred on the initial block-target contact point
@@ -32,7 +29,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "gw_layer.h"
+#include "layer_outcome.h"
 
 gw_layer_impact_params gw_layer_impact_params_default(void)
 {
@@ -49,6 +46,17 @@ gw_layer_impact_params gw_layer_impact_params_default(void)
     p.ring_width = 0; /* 0: 2 R_m */
     p.nrings = 12;
     return p;
+}
+
+const char *gw_layer_until_name(int until)
+{
+    return until == GW_LAYER_UNTIL_VERDICT ? "verdict" : "rebound";
+}
+
+int gw_layer_until_parse(const char *name)
+{
+    return !name ? -1 : strcmp(name, "rebound") == 0 ? GW_LAYER_UNTIL_REBOUND
+                      : strcmp(name, "verdict") == 0 ? GW_LAYER_UNTIL_VERDICT : -1;
 }
 
 void gw_layer_impact_result_free(gw_layer_impact_result *r)
@@ -90,6 +98,8 @@ int gw_layer_impact_check(const gw_layer_sample *smp, const gw_layer_impact_para
         (rc = gw_check_range(p->ring_width, "ring-width (m)", 0, 1e6, err)) != GW_OK ||
         (rc = gw_check_range(p->energy_tol, "energy-tol", 0, 1, err)) != GW_OK)
         return rc;
+    if (p->until != GW_LAYER_UNTIL_REBOUND && p->until != GW_LAYER_UNTIL_VERDICT)
+        return gw_err_set(err, GW_EINVAL, "until: %d is neither rebound (0) nor verdict (1)", p->until);
     if (p->nrings < 1 || p->nrings > 1000)
         return gw_err_set(err, GW_EINVAL, "rings: %d is outside [1, 1000]", p->nrings);
     if (p->t_max / p->dt_out > 2e6)
@@ -114,8 +124,12 @@ double gw_layer_impact_dem_dt(const gw_layer_sample *s, const gw_layer_params *l
     const double ms = 0.5 * gw_layer_mass(lp, rmin), K = gw_layer_kn(lp, rmin);
     const double beta = tgamma(0.4) * tgamma(0.5) / tgamma(0.9); /* B(2/5, 1/2) */
     double tau = 0.8 * beta * pow(1.25 * ms / K, 0.4) * pow(ip->vi, -0.2);
-    double dt = tau / GW_LAYER_DEM_STEPS, k = ceil(ip->dt_out / dt);
-    return k < 1e9 ? ip->dt_out / k : dt; /* (a dt-out beyond any run: steps unaligned) */
+    /* a step on a fixed grid, whatever dt_out: sampling every multiple of
+     * GW_LAYER_DEM_BASE lands on step ends and leaves the trajectory unchanged */
+    double dt = tau / GW_LAYER_DEM_STEPS, b = GW_LAYER_DEM_BASE;
+    if (!(dt > 0) || !isfinite(dt))
+        return dt;
+    return dt >= b ? b * floor(dt / b) : b / ceil(b / dt);
 }
 
 /* Overlap (m) of the block with the target particle. */
@@ -232,7 +246,11 @@ int gw_layer_impact(const gw_layer_sample *smp, const gw_layer_params *lp0,
         double vn = -(sin(ip->alpha_deg * M_PI / 180) * dx - cos(ip->alpha_deg * M_PI / 180) * dy) / d;
         res->contact_angle_deg = acos(fmax(-1, fmin(1, vn))) * 180 / M_PI;
     }
+    layer_outcome oc;
+    layer_outcome_init(&oc, L, ip->until, ip->gap == 0);
     rc = gw_layer_set_regions(L, res->impact_x, res->impact_y, w, ip->nrings, err);
+    if (rc == GW_OK)
+        rc = gw_layer_watch_block(L, layer_outcome_event, &oc, err);
     if (rc != GW_OK) {
         gw_layer_free(L);
         return rc;
@@ -276,13 +294,13 @@ int gw_layer_impact(const gw_layer_sample *smp, const gw_layer_params *lp0,
         else
             rc = gw_layer_write_vtk(L, path, "granwave layer-impact t = 0", err);
     }
-    double ymin = yb, vmax_up = 0;
+    int cut = 0; /* the run reached t_max */
     for (int k = 1; rc == GW_OK && k < cap; k++) {
         double tk = fmin(k * ip->dt_out, ip->t_max);
         rc = gw_layer_advance(L, tk, err);
         if (rc != GW_OK)
             break;
-        double vy = record(res, L, n, w, strain0);
+        record(res, L, n, w, strain0);
         if (ip->energy_tol > 0 && res->energy_error > ip->energy_tol) {
             double sb[6];
             gw_layer_particle(L, n, sb);
@@ -306,22 +324,12 @@ int gw_layer_impact(const gw_layer_sample *smp, const gw_layer_params *lp0,
             t_open = tk;
             ed_open = le->dissipated;
         }
-        const double *bs = res->block + 4 * (res->ns - 1);
-        ymin = fmin(ymin, bs[1]);
-        if (vy > 0) {
-            int free_flight = gw_layer_contact_count(L, n) == 0;
-            res->bounced |= free_flight;
-            if (vy > vmax_up) {
-                vmax_up = vy;
-                res->v_nr = vy;
-                res->v_r = hypot(bs[2], bs[3]);
-                res->t_rebound = tk;
-            } else if (!ip->full && free_flight) {
-                break; /* left the layer, decelerating under gravity */
-            }
-        }
-        if (tk >= ip->t_max)
+        if (!ip->full && layer_outcome_done(&oc))
+            break; /* the outcome is decided: events on the block, not these samples */
+        if (tk >= ip->t_max) {
+            cut = 1;
             break;
+        }
     }
     free(strain0);
     res->wall_ms = gw_clock_ms() - t0;
@@ -333,6 +341,10 @@ int gw_layer_impact(const gw_layer_sample *smp, const gw_layer_params *lp0,
             rc = gw_err_set(err, GW_EINVAL, "out: directory name too long");
         else
             rc = gw_layer_write_vtk(L, path, "granwave layer-impact t = t_end", err);
+        const char *files[2] = {"snapshot_0.vtk", "snapshot_end.vtk"};
+        const double times[2] = {0, res->t_end};
+        if (rc == GW_OK && gw_path_join(path, sizeof path, vtk_dir, "snapshots.pvd") == GW_OK)
+            rc = gw_layer_write_pvd(path, 2, files, times, err); /* ParaView: one series with time */
     }
     if (rc != GW_OK && rc != GW_EINVAL && vtk_dir && err) {
         /* run failure: keep the state at failure beside the outputs already written */
@@ -349,11 +361,7 @@ int gw_layer_impact(const gw_layer_sample *smp, const gw_layer_params *lp0,
         gw_layer_impact_result_free(res);
         return rc;
     }
-    res->penetration = yb - ymin;
-    res->e_n = res->v_nr / res->v_ni;
-    res->e = res->v_r / ip->vi;
-    res->alpha_r_deg = res->v_r > 0 ? acos(fmin(1, res->v_nr / res->v_r)) * 180 / M_PI
-                                                    : NAN;
+    layer_outcome_finish(&oc, yb, ip->vi, res->t_end, cut && !layer_outcome_done(&oc), res);
     if (isnan(t_open)) { /* still touching at the end */
         t_open = res->t_end;
         ed_open = res->ledger[res->ns - 1].dissipated;

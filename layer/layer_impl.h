@@ -33,6 +33,12 @@ typedef struct layer_contact {
     double ra, rb;   /* radii of a and b (rb = 0 for a wall) */
 } layer_contact;
 
+/* The block as the watch roots saw it (layer_watch.c): time, the two watch
+ * functions (v_y, largest overlap), centre and velocity. */
+typedef struct layer_probe {
+    double t, g[2], x, y, vx, vy;
+} layer_probe;
+
 struct gw_layer {
     gw_layer_params p;
     double tan_phi;
@@ -77,6 +83,15 @@ struct gw_layer {
     int storm, no_events_user;
     gw_layer_event_fn hook;
     void *hook_ctx;
+    /* Block watch (gw_layer_watch_block, layer_watch.c): two roots after the
+     * others; probe[1] is the block at the last evaluation of the roots,
+     * probe[0] at the one before (in DEM mode: the end and the start of the
+     * last step); ext the running extremes. */
+    int watch;
+    gw_layer_block_fn watch_fn;
+    void *watch_ctx;
+    layer_probe probe[2];
+    gw_layer_block_extremes ext;
     /* Explicit DEM mode (the verlet backend): no contact events; drift maps
      * positions to velocities; un_last[k] is contact k's overlap at the last rhs
      * evaluation (0 when open), which for verlet is the state at the step end:
@@ -235,6 +250,20 @@ static inline int layer_root_slip(const gw_layer *L)
 {
     return L->p.no_events || !(L->tan_phi > 0) ? -1 : L->nc + L->n;
 }
+/* Roots without the block watch, and the index of the first watch root (the
+ * watch's two roots come last). */
+static inline int layer_root_count(const gw_layer *L)
+{
+    return L->p.no_events ? L->n : L->nc * (L->tan_phi > 0 ? 2 : 1) + L->n;
+}
+
+/* Block watch (layer_watch.c): fill the two watch roots at g[layer_root_count]
+ * for state (t, y) and record the probe and the extremes. */
+void layer_watch_roots(gw_layer *L, double t, const double *y, double *g);
+/* After a solver stop with roots: report the watch roots that fired (in time
+ * order) to the watch callback. Returns 1 when a root other than the watch's
+ * fired (the run driver then handles the stop as before), 0 otherwise. */
+int layer_watch_dispatch(gw_layer *L);
 
 /* Region of contact c (state y) when regions are set: ring index, reg_n
  * beyond the last ring, reg_n + 1 for a contact of the block. */

@@ -491,8 +491,9 @@ static int layer_rhs(double t, const double *y, double *yd, void *P)
  * order (RK4 stepping across them loses it: ledger error 1e-4 instead of 1e-8). */
 static int layer_roots(double t, const double *y, double *g, void *P)
 {
-    (void)t;
-    const gw_layer *L = P;
+    gw_layer *L = P;
+    if (L->watch) /* (the only write: the watch's probe and extremes) */
+        layer_watch_roots(L, t, y, g);
     /* DEM mode reports the rebuild root at the end of the step that crossed it
      * (not located): rebuild at 0.45 skin, so that a step of up to 0.05 skin
      * cannot bring an unlisted pair into contact */
@@ -543,7 +544,7 @@ void layer_system_fill(gw_layer *L)
     L->sys.dim = L->dim;
     L->sys.rhs = L->dem && !L->off ? layer_dem_rhs : layer_rhs;
     L->sys.roots = layer_roots;
-    L->sys.nroots = L->p.no_events ? L->n : L->nc * (L->tan_phi > 0 ? 2 : 1) + L->n;
+    L->sys.nroots = layer_root_count(L) + (L->watch ? 2 : 0);
     L->sys.scale = L->scale;
     L->sys.params = L;
     for (int i = 0; i < n; i++)

@@ -150,6 +150,8 @@ int gw_layer_advance(gw_layer *L, double tout, gw_err *err)
                 return gw_err_set(err, GW_ESOLVER, "layer: %s", gw_solver_error(L->solver));
             continue;
         }
+        if (!layer_watch_dispatch(L))
+            continue; /* only the block watch's roots: nothing to project or restart */
         L->st.events++;
         L->storm = L->t - L->t_event < LAYER_ZENO_DT ? L->storm + 1 : 0;
         L->t_event = L->t;

@@ -284,8 +284,9 @@ static void print_text(const layer_stats_run *R)
         printf("  ");
         for (int k = 0; k < R->gs.nkeys; k++)
             printf("%s=%s ", t->grid_name[R->gs.key[k]], t->grid_value[g->first * t->ngrid + R->gs.key[k]]);
-        printf(": n %d, share %.3f (%s), e_n %.3f +- %.3f, e %.3f +- %.3f, alpha_r %.1f +- %.1f deg, "
+        printf(": n %d, share %.3f (%s%s), e_n %.3f +- %.3f, e %.3f +- %.3f, alpha_r %.1f +- %.1f deg, "
                "penetration %.3g R_m, points over %.3g R_m\n", g->n, g->share, g->bouncing ? "bounces" : "no bounce",
+               g->verdict_certain ? "" : "; undecided points could change it",
                g->e_n.mean, g->e_n.std, g->e.mean, g->e.std, g->alpha_r.mean, g->alpha_r.std, g->penetration_rm.mean,
                g->x_span_rm);
     }
@@ -368,12 +369,22 @@ int gw_cmd_layer_stats(int argc, char **argv)
         fprintf(stderr, "granwave layer-stats: %s: out of memory\n", R.input);
         return 1;
     }
-    long undecided = 0;
-    for (int i = 0; i < R.gs.n; i++)
+    long undecided = 0, uncertain = 0;
+    for (int i = 0; i < R.gs.n; i++) {
         undecided += R.gs.g[i].n - R.gs.g[i].n_valid;
+        uncertain += !R.gs.g[i].verdict_certain;
+    }
     if (undecided > 0) /* recorded as n_points - n_valid in groups.csv and the JSON */
-        fprintf(stderr, "granwave layer-stats: warning: %ld point(s) with bounced = nan (undecided) are left out of "
-                        "the bounce shares\n", undecided);
+        fprintf(stderr, "granwave layer-stats: warning: %ld point(s) with bounced = nan (undecided: the run ended "
+                        "before the verdict) count as not bounced in bounce_share and are left out of "
+                        "bounce_share_decided; %ld group verdict(s) could change with longer runs\n", undecided,
+                uncertain);
+    long cut = 0; /* bouncing points whose run ended before T_f */
+    for (int i = 0; i < R.gs.n; i++)
+        cut += R.gs.g[i].n_bounced - R.gs.g[i].e.n;
+    if (cut > 0) /* recorded as n_bounced - n_rebound in groups.csv and the JSON */
+        fprintf(stderr, "granwave layer-stats: warning: %ld bouncing point(s) with e = nan (the run ended before "
+                        "T_f) are left out of the e_n, e, alpha_r statistics\n", cut);
     int status = 0;
     if (out && layer_stats_write_files(&R, out, &err) != GW_OK) {
         fprintf(stderr, "granwave layer-stats --out: %s\n", err.msg);

@@ -51,7 +51,9 @@ extern const int gw_layer_results_nrequired;
  * "path:line" for a missing header or required column, a wrong number of
  * cells, a non-numeric model cell or case number, `bounced` other than 0, 1
  * or NaN, no data rows, a case number that appears twice, a row with bounced 1
- * and a non-finite e_n, e or alpha_r. A FIFO, device or directory is refused
+ * and a non-finite e_n, e or alpha_r (tables with the column e_n_first: a row
+ * with bounced 1 and a non-finite e_n_first, e_first or alpha_r_first; its e_n,
+ * e, alpha_r may be NaN, a rebound cut before T_f). A FIFO, device or directory is refused
  * (GW_EFORMAT) without reading it. */
 int gw_layer_results_read(const char *path, gw_layer_results *t, gw_err *err);
 int gw_layer_results_parse(const char *text, const char *name, gw_layer_results *t,
@@ -84,11 +86,23 @@ typedef struct gw_layer_group {
     long first;           /* row whose grid values name the group */
     int n;                /* rows (impact points) */
     long *rows;           /* [n] row indices, by point */
-    int n_valid;          /* rows with bounced 0 or 1 */
+    int n_valid;          /* rows with bounced 0 or 1 (decided) */
     int n_bounced;
-    double share;         /* n_bounced / n_valid (NaN if none valid) */
+    /* Undecided rows (bounced NaN: the run ended before the verdict) count as
+     * not bounced in share, the share of points that bounced before the end of
+     * their run (the meaning of the share of tables made before undecided
+     * outcomes existed); share_decided leaves them out; share_high counts them
+     * as bounced. The verdict is certain when no outcome of the undecided
+     * points could change it. */
+    double share;         /* n_bounced / n */
+    double share_decided; /* n_bounced / n_valid (NaN if none valid) */
+    double share_high;    /* (n_bounced + n - n_valid) / n */
     int bouncing;         /* global verdict: share >= criterion */
+    int verdict_certain;  /* share >= criterion or share_high < criterion */
     gw_layer_moment e_n, e, alpha_r, penetration, penetration_rm, block_loss, dissipated;
+    /* the first free-flight maximum (columns e_n_first, e_first, alpha_r_first
+     * when the table has them; n = 0 otherwise), over the bouncing rows */
+    gw_layer_moment e_n_first, e_first, alpha_r_first;
     gw_layer_moment rebound_energy; /* e^2 (the block's rebound kinetic energy over the
                                        incident one, translation), 0 for a point that does
                                        not bounce; over every valid row */
@@ -100,7 +114,7 @@ typedef struct gw_layer_group {
     double x_span, x_span_rm;
     /* convergence with the number of points (Fig. 10): over the first k points
      * (k = 1..n), the mean over the bouncing ones among them and the share */
-    double *run_e_n, *run_e, *run_share; /* [n] */
+    double *run_e_n, *run_e, *run_share; /* [n] (run_share: as share) */
     int k_stable_e;       /* smallest k after which the running mean of e stays
                              within 5 % of the final mean (0 if undefined) */
 } gw_layer_group;

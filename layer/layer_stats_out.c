@@ -75,7 +75,10 @@ static cJSON *group_json(const layer_stats_run *R, const gw_layer_group *g)
     cJSON_AddNumberToObject(o, "n_valid", g->n_valid);
     cJSON_AddNumberToObject(o, "n_bounced", g->n_bounced);
     cJSON_AddNumberToObject(o, "bounce_share", g->share);
+    cJSON_AddNumberToObject(o, "bounce_share_decided", g->share_decided);
+    cJSON_AddNumberToObject(o, "bounce_share_high", g->share_high);
     cJSON_AddBoolToObject(o, "bouncing", g->bouncing);
+    cJSON_AddBoolToObject(o, "verdict_certain", g->verdict_certain);
     cJSON_AddItemToObject(o, "e_n", moment_json(&g->e_n));
     cJSON_AddItemToObject(o, "e", moment_json(&g->e));
     cJSON_AddItemToObject(o, "alpha_r", moment_json(&g->alpha_r));
@@ -84,6 +87,9 @@ static cJSON *group_json(const layer_stats_run *R, const gw_layer_group *g)
     cJSON_AddItemToObject(o, "block_loss_first_contact", moment_json(&g->block_loss));
     cJSON_AddItemToObject(o, "rebound_energy", moment_json(&g->rebound_energy));
     cJSON_AddItemToObject(o, "dissipated_first_contact", moment_json(&g->dissipated));
+    cJSON_AddItemToObject(o, "e_n_first", moment_json(&g->e_n_first));
+    cJSON_AddItemToObject(o, "e_first", moment_json(&g->e_first));
+    cJSON_AddItemToObject(o, "alpha_r_first", moment_json(&g->alpha_r_first));
     cJSON_AddNumberToObject(o, "energy_error_max", g->energy_error_max);
     cJSON_AddNumberToObject(o, "k_stable_e", g->k_stable_e);
     cJSON_AddNumberToObject(o, "x_span", g->x_span);
@@ -300,13 +306,20 @@ static void write_groups(FILE *fp, const layer_stats_run *R)
                 "dissipation as fractions of the incident energy; rebound_energy = e^2, the block's rebound "
                 "kinetic energy (translation) over the incident one, 0 where it does not bounce; k_stable_e = points after which the running "
                 "mean of e stays within 5 % of the final mean; x_span = spread of the impact points (max - min "
-                "x_impact, m; x_span_rm in R_m)");
+                "x_impact, m; x_span_rm in R_m); e_n_first, e_first, alpha_r_first: the same at the first "
+                "free-flight maximum (n_rebound_first points; nan when the table has no such columns); "
+                "n_rebound < n_bounced when runs ended before T_f; n_points - n_valid points are undecided "
+                "(the run ended before the verdict): bounce_share counts them as not bounced (bounced before "
+                "the end of the run), bounce_share_decided leaves them out, bounce_share_high counts them as "
+                "bounced; verdict_certain = 1 when no outcome of theirs could change the verdict");
     fprintf(fp, "group");
     key_names(fp, R, -1, -1);
     fprintf(fp, ",n_points,n_valid,n_bounced,bounce_share,bouncing,e_n_mean,e_n_std,e_mean,e_std,alpha_r_mean,"
                 "alpha_r_std,n_rebound,penetration_mean,penetration_std,penetration_rm_mean,penetration_rm_std,"
                 "block_loss_mean,block_loss_std,dissipated_mean,dissipated_std,rebound_energy_mean,rebound_energy_std,"
-                "energy_error_max,k_stable_e,x_span,x_span_rm\n");
+                "energy_error_max,k_stable_e,x_span,x_span_rm,e_n_first_mean,e_n_first_std,e_first_mean,e_first_std,"
+                "alpha_r_first_mean,alpha_r_first_std,n_rebound_first,bounce_share_decided,bounce_share_high,"
+                "verdict_certain\n");
     for (int a = 0; a < R->gs.n; a++) {
         const gw_layer_group *g = &R->gs.g[a];
         fprintf(fp, "%d", a);
@@ -330,7 +343,15 @@ static void write_groups(FILE *fp, const layer_stats_run *R)
         fprintf(fp, ",%d", g->k_stable_e);
         num(fp, g->x_span);
         num(fp, g->x_span_rm);
-        fputc('\n', fp);
+        const gw_layer_moment *m3[] = {&g->e_n_first, &g->e_first, &g->alpha_r_first};
+        for (int k = 0; k < 3; k++) {
+            num(fp, m3[k]->mean);
+            num(fp, m3[k]->std);
+        }
+        fprintf(fp, ",%d", g->e_first.n);
+        num(fp, g->share_decided);
+        num(fp, g->share_high);
+        fprintf(fp, ",%d\n", g->verdict_certain);
     }
 }
 

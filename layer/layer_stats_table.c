@@ -238,7 +238,12 @@ static int check_rows(const gw_layer_results *t, gw_err *err)
         return gw_err_set(err, GW_EFORMAT, "%s: case %ld appears more than once (a table of one sweep holds each case once)",
                           t->path, dup);
     const int cb = gw_layer_results_col(t, "bounced");
-    const char *const need[] = {"e_n", "e", "alpha_r"};
+    /* a bouncing row has its first free-flight maximum; e_n, e, alpha_r (taken
+     * at T_f) are NaN when the run ended before T_f. Tables before e_n_first
+     * have no such rows. */
+    const int first = gw_layer_results_col(t, "e_n_first") >= 0;
+    const char *const need[] = {first ? "e_n_first" : "e_n", first ? "e_first" : "e",
+                                first ? "alpha_r_first" : "alpha_r"};
     for (long r = 0; cb >= 0 && r < t->nrows; r++) {
         if (t->val[r * t->ncols + cb] != 1)
             continue;
@@ -431,9 +436,11 @@ static int group_stats(const gw_layer_results *t, double criterion, gw_layer_gro
               cl = gw_layer_results_col(t, "block_loss_first_contact"),
               cd = gw_layer_results_col(t, "dissipated_first_contact"),
               cee = gw_layer_results_col(t, "energy_error"),
-              cx = gw_layer_results_col(t, "x_impact");
+              cx = gw_layer_results_col(t, "x_impact"),
+              cf[3] = {gw_layer_results_col(t, "e_n_first"), gw_layer_results_col(t, "e_first"),
+                       gw_layer_results_col(t, "alpha_r_first")};
     int n = g->n;
-    double *w = malloc(8 * (size_t)n * sizeof *w);
+    double *w = malloc(11 * (size_t)n * sizeof *w);
     g->run_e_n = malloc(3 * (size_t)n * sizeof *g->run_e_n);
     if (!w || !g->run_e_n) {
         free(w);
@@ -442,7 +449,7 @@ static int group_stats(const gw_layer_results *t, double criterion, gw_layer_gro
     g->run_e = g->run_e_n + n;
     g->run_share = g->run_e + n;
     double *en = w, *e = w + n, *al = w + 2 * n, *pen = w + 3 * n, *penrm = w + 4 * n,
-           *loss = w + 5 * n, *dis = w + 6 * n, *reb = w + 7 * n;
+           *loss = w + 5 * n, *dis = w + 6 * n, *reb = w + 7 * n, *fst = w + 8 * n;
     double sen = 0, se = 0;
     int nen = 0, ne = 0;
     g->n_valid = g->n_bounced = 0;
@@ -462,6 +469,8 @@ static int group_stats(const gw_layer_results *t, double criterion, gw_layer_gro
         en[k] = bounced ? cell(t, r, cen) : NAN;
         e[k] = bounced ? cell(t, r, ce) : NAN;
         al[k] = bounced ? cell(t, r, ca) : NAN;
+        for (int q = 0; q < 3; q++)
+            fst[q * n + k] = bounced ? cell(t, r, cf[q]) : NAN;
         reb[k] = bounced ? e[k] * e[k] : b == 0 ? 0 : NAN;
         pen[k] = cell(t, r, cp);
         penrm[k] = cell(t, r, cpr);
@@ -480,12 +489,15 @@ static int group_stats(const gw_layer_results *t, double criterion, gw_layer_gro
         }
         g->run_e_n[k] = nen ? sen / nen : NAN;
         g->run_e[k] = ne ? se / ne : NAN;
-        g->run_share[k] = g->n_valid ? (double)g->n_bounced / g->n_valid : NAN;
+        g->run_share[k] = (double)g->n_bounced / (k + 1);
     }
     g->x_span = xhi >= xlo ? xhi - xlo : NAN;
     g->x_span_rm = g->x_span / rm;
-    g->share = g->n_valid ? (double)g->n_bounced / g->n_valid : NAN;
+    g->share = n > 0 ? (double)g->n_bounced / n : NAN;
+    g->share_decided = g->n_valid ? (double)g->n_bounced / g->n_valid : NAN;
+    g->share_high = n > 0 ? (double)(g->n_bounced + n - g->n_valid) / n : NAN;
     g->bouncing = g->share >= criterion;
+    g->verdict_certain = g->bouncing || g->share_high < criterion;
     gw_layer_moment_of(en, n, &g->e_n);
     gw_layer_moment_of(e, n, &g->e);
     gw_layer_moment_of(al, n, &g->alpha_r);
@@ -494,6 +506,9 @@ static int group_stats(const gw_layer_results *t, double criterion, gw_layer_gro
     gw_layer_moment_of(loss, n, &g->block_loss);
     gw_layer_moment_of(dis, n, &g->dissipated);
     gw_layer_moment_of(reb, n, &g->rebound_energy);
+    gw_layer_moment_of(fst, n, &g->e_n_first);
+    gw_layer_moment_of(fst + n, n, &g->e_first);
+    gw_layer_moment_of(fst + 2 * n, n, &g->alpha_r_first);
     /* stable from k on: every running mean from k to n within 5 % of the last */
     double fin = g->run_e[n - 1];
     g->k_stable_e = 0;

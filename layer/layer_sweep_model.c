@@ -15,10 +15,18 @@
  * (B.16-B.18), v_ni, v_nr, v_r (m/s), penetration (m), penetration_rm (in R_m),
  * dissipated_first_contact and block_loss_first_contact (over E_incident,
  * docs/physics.md 2.5), energy_error (ledger closure B.7-B.14), wave_speed (m/s, from
- * the crowns' strain peaks), t_end (s), steps. Undefined values (e.g. e_n of a
- * block that never moves up, a wave speed without enough crowns) are NaN,
- * written as "nan" whatever the sign bit, so tables are byte-identical however
- * the cases ran. No wall-clock time in the row.
+ * the crowns' strain peaks), t_end (s), steps, then (added last, so readers of
+ * the earlier columns keep working) the first free-flight maximum e_n_first,
+ * e_first, alpha_r_first, v_nr_first, v_r_first, and the event times t_leave
+ * (the block leaves moving up), t_rebound (T_i) and t_f (T_f) in s
+ * (layer_outcome.c). Undefined values (e.g. e_n of a block that does not
+ * bounce, a wave speed without enough crowns) are NaN, written as "nan"
+ * whatever the sign bit, so tables are byte-identical however the cases ran.
+ * Undecided outcomes are NaN too: bounced = nan when the run ended before the
+ * verdict, e_n = e = alpha_r = nan in a bouncing row when it ended before T_f
+ * (or `until = verdict` stopped it); layer-stats leaves such rows out of the
+ * shares and means they cannot enter, and says how many. No wall-clock time
+ * in the row.
  *
  * The sample file is read for every case (and once more by the check pass),
  * with no cache: parsing, reading and checking a case on the 300-disc sample
@@ -37,7 +45,8 @@
 
 static const char *const columns[] = {
     "x_impact", "bounced", "e_n", "e", "alpha_r", "v_ni", "v_nr", "v_r", "penetration", "penetration_rm",
-    "dissipated_first_contact", "block_loss_first_contact", "energy_error", "wave_speed", "t_end", "steps"};
+    "dissipated_first_contact", "block_loss_first_contact", "energy_error", "wave_speed", "t_end", "steps",
+    "e_n_first", "e_first", "alpha_r_first", "v_nr_first", "v_r_first", "t_leave", "t_rebound", "t_f"};
 #define NCOLUMNS ((int)(sizeof columns / sizeof columns[0]))
 
 typedef struct case_opts {
@@ -143,10 +152,12 @@ static int run(int nk, const char *const *names, const char *const *values, doub
             rc = GW_EINVAL;
     }
     if (rc == GW_OK) {
-        const double v[NCOLUMNS] = {co.c.ip.x, r.bounced, r.e_n, r.e, r.alpha_r_deg, r.v_ni, r.v_nr, r.v_r,
-                                    r.penetration, r.penetration / co.c.rm, r.dissipated_first_contact,
-                                    r.block_loss_first_contact, r.energy_error, r.wave_speed, r.t_end,
-                                    (double)r.stats.steps};
+        const double v[NCOLUMNS] = {co.c.ip.x, r.bounced < 0 ? NAN : r.bounced, r.e_n, r.e, r.alpha_r_deg,
+                                    r.v_ni, r.v_nr, r.v_r, r.penetration, r.penetration / co.c.rm,
+                                    r.dissipated_first_contact, r.block_loss_first_contact, r.energy_error,
+                                    r.wave_speed, r.t_end, (double)r.stats.steps, r.e_n_first, r.e_first,
+                                    r.alpha_r_first_deg, r.v_nr_first, r.v_r_first, r.t_leave, r.t_rebound,
+                                    r.t_f};
         for (int i = 0; i < NCOLUMNS; i++)
             out[i] = canon(v[i]);
     }

@@ -2,9 +2,13 @@
  * layer_vtk.c: VTK legacy (ASCII POLYDATA) snapshots of the layer, for ParaView.
  *
  * Points: particle centres (z = 0) with point data radius (m), velocity (m/s,
- * 3-vector), omega (rad/s), fixed (0/1), block (0/1). Lines: closed
- * particle-particle contacts (u_n > 0) with cell data F_n and F_t (N, from
- * B.1 and the capped tangential state). Written atomically.
+ * 3-vector), omega (rad/s), fixed (0/1), block (0/1); one vertex cell per
+ * particle (so that ParaView draws the points), then one line cell per closed
+ * particle-particle contact (u_n > 0); cell data F_n and F_t (N, from B.1 and
+ * the capped tangential state; 0 on the vertex cells). Field data TIME (s):
+ * the layer's time. The title line gives the units. Written atomically.
+ * gw_layer_write_pvd: a ParaView collection (.pvd, XML) of such snapshots
+ * with their times, so that ParaView opens them as one time series.
  * Units: SI.
  */
 #include <math.h>
@@ -25,14 +29,18 @@ int gw_layer_write_vtk(const gw_layer *L, const char *path, const char *title, g
     int nl = 0;
     for (int k = 0; k < L->nc; k++)
         nl += CLOSED_PAIR(k);
-    fprintf(fp, "# vtk DataFile Version 3.0\n%s (granwave %s)\nASCII\nDATASET POLYDATA\n", title,
-            gw_version());
+    /* (the title line holds at most 255 characters) */
+    fprintf(fp, "# vtk DataFile Version 3.0\n%.120s (granwave %s); units: m, m/s, rad/s, N, TIME s\n"
+            "ASCII\nDATASET POLYDATA\nFIELD FieldData 1\nTIME 1 1 double\n%.17g\n", title, gw_version(), L->t);
     fprintf(fp, "POINTS %d double\n", n);
     for (int i = 0; i < n; i++) {
         double s[6];
         gw_layer_particle(L, i, s);
         fprintf(fp, "%.9g %.9g 0\n", s[0], s[1]);
     }
+    fprintf(fp, "VERTICES %d %d\n", n, 2 * n);
+    for (int i = 0; i < n; i++)
+        fprintf(fp, "1 %d\n", i);
     fprintf(fp, "LINES %d %d\n", nl, 3 * nl);
     for (int k = 0; k < L->nc; k++)
         if (CLOSED_PAIR(k))
@@ -55,11 +63,13 @@ int gw_layer_write_vtk(const gw_layer *L, const char *path, const char *title, g
         gw_layer_particle(L, i, s);
         fprintf(fp, "%.9g %.9g 0\n", s[3], s[4]);
     }
-    if (nl > 0) {
-        fprintf(fp, "CELL_DATA %d\nSCALARS F_n double 1\nLOOKUP_TABLE default\n", nl);
+    { /* cells: the n vertices, then the nl lines */
+        fprintf(fp, "CELL_DATA %d\nSCALARS F_n double 1\nLOOKUP_TABLE default\n", n + nl);
         for (int pass = 0; pass < 2; pass++) {
             if (pass == 1)
                 fprintf(fp, "SCALARS F_t double 1\nLOOKUP_TABLE default\n");
+            for (int i = 0; i < n; i++)
+                fputs("0\n", fp);
             for (int k = 0; k < L->nc; k++)
                 if (CLOSED_PAIR(k))
                     fprintf(fp, "%.9g\n", snap[LAYER_SNAP_W * k + (pass == 0 ? LAYER_SNAP_FN : LAYER_SNAP_FT)]);
@@ -67,6 +77,24 @@ int gw_layer_write_vtk(const gw_layer *L, const char *path, const char *title, g
     }
 #undef CLOSED_PAIR
     if (ferror(fp)) {
+        gw_afile_abort(&f);
+        return gw_err_set(err, GW_EIO, "%s: write error", path);
+    }
+    return gw_afile_commit(&f, err);
+}
+
+int gw_layer_write_pvd(const char *path, int n, const char *const *files, const double *times, gw_err *err)
+{
+    gw_afile f;
+    int rc = gw_afile_open(&f, path, err);
+    if (rc != GW_OK)
+        return rc;
+    fprintf(f.fp, "<?xml version=\"1.0\"?>\n<!-- granwave %s: layer snapshots (legacy VTK), time in s -->\n"
+            "<VTKFile type=\"Collection\" version=\"0.1\">\n  <Collection>\n", gw_version());
+    for (int k = 0; k < n; k++)
+        fprintf(f.fp, "    <DataSet timestep=\"%.17g\" group=\"\" part=\"0\" file=\"%s\"/>\n", times[k], files[k]);
+    fprintf(f.fp, "  </Collection>\n</VTKFile>\n");
+    if (ferror(f.fp)) {
         gw_afile_abort(&f);
         return gw_err_set(err, GW_EIO, "%s: write error", path);
     }

@@ -17,10 +17,15 @@
 #    falcon, wavespeed, softwall, dispersion, drop, sweep); options with no effect
 #    (--gamma without --damping kk, --alpha without hc, --restitution-v without
 #    --restitution, softwall --sheets with --kwall / --sheet / --wall-material)
-#    are refused, naming the option.
+#    are refused, naming the option; so are, on the layer side, a --method the
+#    solver does not offer, --rtol/--atol with a fixed-step solver, --clump-mass
+#    without clumps and --until verdict with --full; a layer-make that does not
+#    settle writes its sample marked converged 0 and warns on one line.
 #  8 a misspelt sweep model is reported as such; "n = 5:1" as an empty range;
 #    results written to a full device (/dev/full) exit 1 with "stdout: write
-#    failed", never 0 nor "write failed: Success"; layer-stats
+#    failed", never 0 nor "write failed: Success", and files written to a full
+#    file system (a 64 KiB tmpfs, where mounting one is permitted) exit 1 with
+#    "No space left on device"; layer-stats
 #    refuses duplicated cases and bouncing rows without e_n, and warns about
 #    undecided points.
 set -u
@@ -100,6 +105,29 @@ refused "softwall --sheets --kwall" 'softwall --kwall: has no effect with --shee
 refused "softwall --sheets --sheet" 'softwall --sheet: has no effect' softwall --sheets --sheet brass --out "$tmp/o"
 refused "softwall --wall-material (the wall is --kwall)" 'softwall --wall-material' softwall --wall-material brass --out "$tmp/o"
 "$GW" chain --n 2 --damping kk --gamma 1 >/dev/null 2>&1 && ok "chain --damping kk --gamma accepted" || ko "chain --damping kk --gamma refused"
+# the layer side: a method the backend does not offer, tolerances of a
+# fixed-step solver, a clump mass without clumps; refused before any output
+# (before the sample is read for the first, before the run for the others)
+"$GW" layer-make --n 20 --width-rm 10 --seed 4 --t-max 0.3 --out "$tmp/L.txt" >/dev/null 2>&1 || ko "layer-make for the layer refusals"
+refused "layer-impact --method bdf with verlet" "layer-impact: --method: 'bdf' has no effect with the verlet solver" layer-impact --sample "$tmp/L.txt" --method bdf --out "$tmp/o"
+refused "layer-impact --solver cvode --method erk" "layer-impact: --method: 'erk' has no effect with the cvode solver" layer-impact --sample "$tmp/L.txt" --solver cvode --method erk --out "$tmp/o"
+refused "layer-impact --rtol with verlet" 'layer-impact: --rtol: has no effect with the fixed-step verlet solver' layer-impact --sample "$tmp/L.txt" --rtol 1e-6 --out "$tmp/o"
+refused "layer-impact --exact --atol (rk4)" 'layer-impact: --atol: has no effect with the fixed-step rk4 solver' layer-impact --sample "$tmp/L.txt" --exact --atol 1e-6 --out "$tmp/o"
+refused "layer-impact --clump-mass on a disc sample" 'layer-impact: --clump-mass: has no effect: the sample .* has no clumps' layer-impact --sample "$tmp/L.txt" --clump-mass union --out "$tmp/o"
+refused "layer-impact --until verdict --full" 'layer-impact: --until verdict: has no effect with --full' layer-impact --sample "$tmp/L.txt" --until verdict --full --out "$tmp/o"
+refused "layer-make --clump-mass without --clumps" 'layer-make: --clump-mass: has no effect without --clumps' layer-make --n 10 --clump-mass union --out "$tmp/cm.txt"
+[ -e "$tmp/cm.txt" ] && ko "layer-make --clump-mass without --clumps wrote its sample"
+printf '[sweep]\nmodel = layer\n[grid]\npoint = 0:1\n[params]\nsample = %s\npoints = 2\nrtol = 1e-6\n' "$tmp/L.txt" >"$tmp/ltol.ini"
+refused "layer sweep with rtol and the verlet default" 'rtol: has no effect' sweep "$tmp/ltol.ini" --out "$tmp/o"
+"$GW" layer-impact --sample "$tmp/L.txt" --solver cvode --rtol 1e-6 --t-max 1e-4 >/dev/null 2>&1 && ok "layer-impact --solver cvode --rtol accepted" || ko "layer-impact --solver cvode --rtol refused"
+# a layer-make that does not settle still writes its sample, recorded as such, and says so on one stderr line
+"$GW" layer-make --n 20 --width-rm 10 --seed 4 --t-max 0.01 --out "$tmp/U.txt" --json >"$tmp/U.json" 2>"$tmp/U.err"; rc=$?
+if [ $rc -eq 0 ] && [ "$(wc -l <"$tmp/U.err")" -eq 1 ] && grep -q 'warning: the sample did not settle' "$tmp/U.err" \
+    && grep -q 'converged 0' "$tmp/U.txt" && grep -q '"converged":[[:space:]]*false' "$tmp/U.json"; then
+    ok "layer-make not settled: exit 0, sample written with converged 0, one warning line"
+else
+    ko "layer-make not settled: exit $rc, $(cat "$tmp/U.err")"
+fi
 
 # --- 8: smaller gaps
 printf '[sweep]\nmodel = chian\n[grid]\nn = 1:2\n' >"$tmp/m.ini"
@@ -119,6 +147,29 @@ if [ -w /dev/full ]; then
 else
     echo "SKIP: /dev/full not available"
 fi
+# files written to a full file system (a 64 KiB tmpfs, when this user may mount
+# one): exit 1 naming the file and "No space left", never "Success" nor exit 0,
+# and no half-written result left under its own name
+mkdir -p "$tmp/full"
+if mount -t tmpfs -o size=64k tmpfs "$tmp/full" 2>/dev/null; then
+    trap 'umount "$tmp/full" 2>/dev/null; rm -rf "$tmp"' EXIT
+    dd if=/dev/zero of="$tmp/full/fill" bs=1k count=64 2>/dev/null
+    for args in "chain --n 5 --out $tmp/full/ch" "layer-make --n 20 --width-rm 10 --seed 4 --t-max 0.01 --out $tmp/full/s.txt" \
+                "layer-impact --sample $tmp/L.txt --t-max 1e-3 --out $tmp/full/imp" \
+                "layer-stats $SRC/data/measured/layer_walls/results.csv --out $tmp/full/st"; do
+        "$GW" $args >/dev/null 2>"$tmp/fs.err"; rc=$?
+        if [ $rc -eq 1 ] && grep -q 'No space left on device' "$tmp/fs.err" && ! grep -q Success "$tmp/fs.err" \
+            && [ ! -s "$tmp/full/s.txt" ] && [ ! -e "$tmp/full/imp/ledger.csv" ] && [ ! -e "$tmp/full/st/groups.csv" ]; then
+            ok "granwave ${args%% *} to a full file system: exit 1, 'No space left on device'"
+        else
+            ko "granwave ${args%% *} to a full file system: exit $rc: $(tail -1 "$tmp/fs.err")"
+        fi
+        rm -rf "$tmp/full/ch" "$tmp/full/s.txt" "$tmp/full/imp" "$tmp/full/st"
+    done
+    umount "$tmp/full"
+else
+    echo "SKIP: cannot mount a small tmpfs (not permitted here); /dev/full covers stdout"
+fi
 h="# granwave test\ncase,rb-rm,point,x_impact,bounced,e_n,e,alpha_r,v_ni,v_nr,v_r,penetration,penetration_rm,dissipated_first_contact,block_loss_first_contact,energy_error,wave_speed,t_end,steps"
 row() { echo "$1,1,$2,0,$3,$4,0.5,10,1,0.5,0.5,0.01,0.1,0.1,0.1,1e-6,100,0.05,1000"; }
 { echo -e "$h"; row 0 0 1 0.5; row 1 1 0 nan; row 1 2 1 0.5; } >"$tmp/dup.csv"
@@ -132,5 +183,22 @@ if [ $rc -eq 0 ] && grep -q "1 point(s) with bounced = nan" "$tmp/und.err" && gr
 else
     ko "layer-stats undecided point: exit $rc, $(cat "$tmp/und.err")"
 fi
+# tables with the first free-flight maximum (issue 18, class 7): a bouncing row
+# whose run ended before T_f has e_n = e = alpha_r = nan and its e_n_first; it
+# counts in the share and is left out of the e_n statistics with a warning; a
+# bouncing row without its e_n_first is refused
+h2="$h,e_n_first,e_first,alpha_r_first,v_nr_first,v_r_first,t_leave,t_rebound,t_f"
+row2() { echo "$(row "$1" "$2" "$3" "$4"),$5,0.5,10,1,0.5,0.002,0.002,0.1"; }
+{ echo -e "$h2"; row2 0 0 1 0.5 0.4; row2 1 1 1 nan 0.3; row2 2 2 0 nan nan; } >"$tmp/cut.csv"
+sed -i '3s/,0.5,10,1,0.5,0.5,0.01,/,nan,nan,1,nan,nan,0.01,/' "$tmp/cut.csv" # row of case 1: e, alpha_r, v_nr, v_r nan
+"$GW" layer-stats "$tmp/cut.csv" --json >"$tmp/cut.json" 2>"$tmp/cut.err"; rc=$?
+if [ $rc -eq 0 ] && [ "$(wc -l <"$tmp/cut.err")" -eq 1 ] && grep -q "1 bouncing point(s) with e = nan" "$tmp/cut.err" \
+    && /usr/bin/python3 -c "import json,sys; g=json.load(open('$tmp/cut.json'))['groups']; sys.exit(0 if len(g)==1 and g[0]['n_bounced']==2 and g[0]['e']['n']==1 and g[0]['e_n_first']['n']==2 and abs(g[0]['e_n_first']['mean']-0.35)<1e-12 else 1)"; then
+    ok "layer-stats: a bouncing row cut before T_f counts in the share, not in e_n (one warning), e_n_first over both"
+else
+    ko "layer-stats rows cut before T_f: exit $rc, $(cat "$tmp/cut.err")"
+fi
+{ echo -e "$h2"; row2 0 0 1 0.5 0.4; row2 1 1 1 0.5 nan; } >"$tmp/nofirst.csv"
+refused "layer-stats refuses a bouncing row without e_n_first" 'case 1 bounced but its e_n_first is nan' layer-stats "$tmp/nofirst.csv" --out "$tmp/o"
 echo "$passes passed, $fails failed"
 [ $fails -eq 0 ]

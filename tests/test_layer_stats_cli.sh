@@ -177,9 +177,14 @@ for g in j["groups"]:
     k = g["keys"]
     sel = [r for r in rows if float(r["rb-rm"]) == k["rb-rm"] and float(r["height-rm"]) == k["height-rm"]]
     nb = sum(float(r["bounced"]) == 1 for r in sel)
-    es = [float(r["e"]) for r in sel if float(r["bounced"]) == 1]
+    nd = sum(not math.isnan(float(r["bounced"])) for r in sel)  # decided
+    # e of a bouncing row is nan when its run ended before T_f: left out
+    es = [float(r["e"]) for r in sel if float(r["bounced"]) == 1 and math.isfinite(float(r["e"]))]
     me = sum(es) / len(es) if es else None
-    if len(sel) != 3 or g["n_bounced"] != nb or abs(g["bounce_share"] - nb / 3) > 1e-15:
+    sd = g["bounce_share_decided"]
+    if len(sel) != 3 or g["n_bounced"] != nb or abs(g["bounce_share"] - nb / 3) > 1e-15 or g["n_valid"] != nd \
+            or (nd and abs(sd - nb / nd) > 1e-15) or (not nd and sd is not None) \
+            or abs(g["bounce_share_high"] - (nb + 3 - nd) / 3) > 1e-15:
         bad.append("share %s" % k)
     if (me is None) != (g["e"]["mean"] is None) or (me is not None and abs(g["e"]["mean"] - me) > 1e-12):
         bad.append("mean e %s: %s vs %s" % (k, g["e"]["mean"], me))

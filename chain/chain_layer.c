@@ -26,8 +26,9 @@
  * Numerics: q tabulated once per law (Gauss-Legendre panels in u, GSL), Nystrom on
  * Gauss-Legendre nodes with GSL's LU for alpha on a log grid, then ln F against
  * ln d interpolated by a monotone cubic (Fritsch-Carlson) and resampled on a uniform
- * ln d grid for constant-time evaluation; beyond the grid, power laws with the end
- * slopes. The stored energy U(d) = int_0^d F is integrated from the interpolant.
+ * ln d grid for constant-time evaluation; below the grid (a < 1e-3 h) Hertz times
+ * 1 + b0 sqrt(R d)/h matched at the first node, above it a power law with the end
+ * slope. The stored energy U(d) = int_0^d F is integrated from the interpolant.
  * Limits (tests/test_chain_walls.c): thick (a << h): F/F_Hertz = 1 + (2 q(0)/pi) chi
  * + O(chi^2), chi = sqrt(R d)/h (the bonded-layer coefficient 1.133 of Dimitriadis
  * et al. 2002 for nu = 1/2); thin (a >> h, nu < 1/2): F = pi R M d^2/h (Johnson 1985,
@@ -58,6 +59,7 @@ struct gw_layer_law {
     double s0, ds;         /* ln dhat of node 0 and the spacing */
     double y[N_GRID], yp[N_GRID], ucum[N_GRID]; /* ln Fhat, d ln Fhat / d ln dhat, Uhat */
     double la[N_GRID];     /* ln alpha at the nodes (contact radius) */
+    double b0;             /* below node 0: Fhat = (4/3) dhat^(3/2) (1 + b0 sqrt(dhat)) */
     double alpha_max;
 };
 
@@ -225,9 +227,10 @@ static double hermite(double y0, double y1, double m0, double m1, double h, doub
 static double law_eval(const gw_layer_law *l, double s, double *slope)
 {
     double x = (s - l->s0) / l->ds;
-    if (x <= 0) {
-        *slope = l->yp[0];
-        return l->y[0] + l->yp[0] * (s - l->s0);
+    if (x <= 0) { /* Hertz with the first-order (linear in chi) correction */
+        double c = l->b0 * exp(0.5 * s);
+        *slope = 1.5 + 0.5 * c / (1.0 + c);
+        return log(4.0 / 3.0) + 1.5 * s + log1p(c);
     }
     if (x >= N_GRID - 1) {
         *slope = l->yp[N_GRID - 1];
@@ -310,8 +313,10 @@ int gw_layer_law_create(double radius, const gw_material *bead, double thickness
         l->y[j] = hermite(yf[k], yf[k + 1], m[k], m[k + 1], h, f, &l->yp[j]);
         l->la[j] = hermite(al[k], al[k + 1], ma[k], ma[k + 1], h, f, NULL);
     }
-    /* below node 0 the law is the power law with slope yp[0] (~3/2): U = F d/(p+1) */
-    l->ucum[0] = exp(l->y[0] + l->s0) / (l->yp[0] + 1.0);
+    /* below node 0 (a/h < 1e-3): Hertz times 1 + b0 sqrt(dhat), matched at node 0 */
+    double d0 = exp(l->s0);
+    l->b0 = (exp(l->y[0]) / (4.0 / 3.0 * d0 * sqrt(d0)) - 1.0) / sqrt(d0);
+    l->ucum[0] = 4.0 / 3.0 * (0.4 * d0 * d0 * sqrt(d0) + l->b0 * d0 * d0 * d0 / 3.0);
     for (int j = 1; j < N_GRID; j++)
         l->ucum[j] = l->ucum[j - 1] + law_segment_energy(l, l->s0 + (j - 1) * l->ds, l->s0 + j * l->ds);
     *out = l;
@@ -340,10 +345,11 @@ double gw_layer_law_energy(const gw_layer_law *l, double d)
 {
     if (!(d > 0))
         return 0.0;
-    double s = log(d / l->dscale), sl, u;
+    double s = log(d / l->dscale), u;
     double x = (s - l->s0) / l->ds;
     if (x <= 0) {
-        u = exp(law_eval(l, s, &sl) + s) / (l->yp[0] + 1.0);
+        double dh = exp(s);
+        u = 4.0 / 3.0 * (0.4 * dh * dh * sqrt(dh) + l->b0 * dh * dh * dh / 3.0);
     } else if (x >= N_GRID - 1) {
         double se = l->s0 + (N_GRID - 1) * l->ds, p1 = l->yp[N_GRID - 1] + 1.0;
         u = l->ucum[N_GRID - 1] + exp(l->y[N_GRID - 1] + se) * expm1(p1 * (s - se)) / p1;

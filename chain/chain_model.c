@@ -37,6 +37,11 @@ struct gw_chain {
     chain_wall_law wl;
     long i_diss, i_work, i_sens, i_dmax, i_q; /* state indices, -1 when absent */
     double vreg;                 /* Coulomb regularisation speed, m/s */
+    double dtrack;               /* plastic wall: D_max follows D (dD_max/dt = D' s(x),
+                                    s = x^2 (3 - 2x), x = (D - D_max + dtrack)/dtrack
+                                    clipped to [0, 1]) so that the switch between
+                                    unloading and reloading is C^1, not a jump the
+                                    corrector chatters on; D_max lags D by < dtrack */
 };
 
 /* Contact force and dissipated power for overlap d > 0 and rate dd = d'. */
@@ -302,8 +307,11 @@ static void general_rhs(const gw_chain *c, const double *y, double *yd, int part
     }
     if (c->i_work >= 0)
         yd[c->i_work] = fw * dd;
-    if (c->i_dmax >= 0)
-        yd[c->i_dmax] = wall_overlap(c, y) >= y[c->i_dmax] && dd > 0 ? dd : 0.0;
+    if (c->i_dmax >= 0 && dd > 0) { /* loading: D_max follows D, switched on by a C^1 ramp */
+        double x = (wall_overlap(c, y) - y[c->i_dmax] + c->dtrack) / c->dtrack;
+        x = x < 0 ? 0.0 : x > 1 ? 1.0 : x;
+        yd[c->i_dmax] = dd * x * x * (3.0 - 2.0 * x);
+    }
     if (c->wl.narms > 0) {
         double k;
         chain_wall_elastic(&c->wl, wall_overlap(c, y), &k);
@@ -650,6 +658,7 @@ int gw_chain_create(const gw_chain_params *p, gw_chain **out, gw_err *err)
     }
     if (i_dmax >= 0)
         c->scale[i_dmax] = xs;
+    c->dtrack = 1e-6 * xs;
     for (int j = 0; j < wl.narms; j++)
         c->scale[i_q + j] = fs;
 

@@ -12,6 +12,7 @@
 #include <string.h>
 
 #include "chain_falcon.h" /* G_EARTH: falcon's --heights are drop heights in mm */
+#include "chain_wall.h"
 
 /* Physical ranges of the option table (beyond them a run overflows its step
  * count or never ends): the stiffest real contact (diamond on diamond, R = 1 m)
@@ -70,7 +71,35 @@ static int check_no_effect(const chain_cli *c, const gw_opt *opts, const char *c
     }
     if (gw_cli_find(opts, "restitution-v")->seen && !restitution)
         return gw_err_set(err, GW_EINVAL, "%s --restitution-v: has no effect without --restitution", cmd);
+    /* the sheet as a material */
+    if (gw_cli_find(opts, "sheet-law")->seen && !c->sheet && !c->sheets_mode)
+        return gw_err_set(err, GW_EINVAL, "%s --sheet-law: has no effect without --sheet%s", cmd,
+                          strcmp(cmd, "softwall") == 0 ? " or --sheets" : "");
+    static const char *const mat_opts[] = {"sheet-yield", "sheet-loss"};
+    for (int i = 0; i < 2; i++)
+        if (gw_cli_find(opts, mat_opts[i])->seen && c->law != GW_SHEET_MATERIAL)
+            return gw_err_set(err, GW_EINVAL, "%s --%s: has no effect without --sheet-law material", cmd,
+                              mat_opts[i]);
+    if (gw_cli_find(opts, "sheet-yield")->seen && c->sheet_yield > 0 && c->sheet_yield < 1e5)
+        return gw_err_set(err, GW_EINVAL, "%s --sheet-yield: %g Pa is below any solid's yield stress "
+                          "(0 = elastic, or >= 1e5 Pa)", cmd, c->sheet_yield);
+    /* the sensor as a body */
+    int ms = gw_cli_find(opts, "sensor-mass")->seen;
+    if (!ms && gw_cli_find(opts, "sensor-stiffness")->seen)
+        return gw_err_set(err, GW_EINVAL, "%s --sensor-stiffness: has no effect without --sensor-mass", cmd);
+    if (!ms && gw_cli_find(opts, "sensor-damping")->seen)
+        return gw_err_set(err, GW_EINVAL, "%s --sensor-damping: has no effect without --sensor-mass", cmd);
+    if (ms && !gw_cli_find(opts, "sensor-stiffness")->seen)
+        return gw_err_set(err, GW_EINVAL, "%s --sensor-mass: a sensor body needs --sensor-stiffness", cmd);
     return GW_OK;
+}
+
+int chain_cli_sheet(const chain_cli *c, const gw_sheet *s, gw_chain_params *p,
+                    gw_layer_law **layer, gw_err *err)
+{
+    const gw_material *bm = gw_material_find(c->material), *wm = gw_material_find(c->wall_material);
+    return gw_sheet_apply(s, c->law, c->law == GW_SHEET_MATERIAL ? c->sheet_yield : -1,
+                          c->law == GW_SHEET_MATERIAL ? c->sheet_loss : -1, bm, wm, p, layer, err);
 }
 
 #define OPT_D(nm, dst, mv, hl, lo_, hi_, open_)                                          \
@@ -93,6 +122,8 @@ void chain_cli_options(chain_cli *c, gw_opt *o)
      * column is ~3e-8 (the absolute tolerance limits it); at 1e-12, ~1e-9. */
     c->rtol = 1e-12;
     c->atol = 1e-12;
+    c->sheet_law = "fitted";
+    c->sheet_yield = c->sheet_loss = -1; /* the sheet's own constants */
     c->max_steps = sp.max_steps;
     int i = 0;
     o[i++] = OPT_S("material", &c->material, "NAME", "bead material (steel, rigid, brass, aluminium, glass, pmma, pvc) [steel]");
@@ -120,6 +151,14 @@ void chain_cli_options(chain_cli *c, gw_opt *o)
     o[i++] = OPT_D("t-max", &c->t_max, "T", "stop after T seconds [20 (n T_q + tau_1)]", 0, 1e6, 0);
     o[i++] = OPT_D("dt-out", &c->dt_out, "DT", "sampling interval for traces, energy and F_max, s [tau_1/200]", 0, 1, 0);
     o[i++] = OPT_D("energy-tol", &c->energy_tol, "E", "abort when the relative energy error exceeds E [off]", 0, INFINITY, 0);
+    o[i++] = OPT_S("sheet-law", &c->sheet_law, "LAW", "how --sheet becomes a wall: fitted (Hertz K_eff from the measured tau_max(N=1)), hertz, layer (bonded elastic layer) or material (layer with the sheet's loss; Thornton plastic for a sheet with a yield stress) [fitted]");
+    o[i++] = OPT_D("sheet-yield", &c->sheet_yield, "Y", "yield stress of the sheet with --sheet-law material, Pa (0 = elastic) [the sheet's]", 0, 1e10, 0);
+    o[i++] = OPT_D("sheet-loss", &c->sheet_loss, "T", "loss factor tan(delta) of the sheet with --sheet-law material (0 = elastic) [the sheet's]", 0, 2, 0);
+    o[i++] = OPT_D("sensor-mass", &c->sensor_mass, "M", "the sensor as a body: mass under the wall contact, kg, in [1e-7, 1e3] [rigid sensor]", 1e-7, 1e3, 0);
+    o[i++] = OPT_D("sensor-stiffness", &c->sensor_stiffness, "K", "stiffness of the sensor body, N/m, in [1e3, 1e14]", 1e3, 1e14, 0);
+    o[i++] = OPT_D("sensor-damping", &c->sensor_damping, "C", "damping of the sensor body, N s/m, in [0, 1e9] [0]", 0, 1e9, 0);
+    o[i++] = OPT_D("guide-friction", &c->guide_friction, "F", "Coulomb friction of each bead on its guide, N, in [0, 1] [0]", 0, 1, 0);
+    o[i++] = OPT_D("guide-viscous", &c->guide_viscous, "C", "viscous friction of each bead on its guide, N s/m, in [0, 100] [0]", 0, 100, 0);
     o[i++] = (gw_opt){.name = "json", .kind = GW_OPT_FLAG, .dest = &c->json, .help = "print results as one JSON object on stdout"};
     o[i++] = OPT_S("out", &c->out, "DIR", "write CSV (and HDF5) files into DIR");
 }
@@ -192,8 +231,39 @@ int chain_cli_resolve(chain_cli *c, const gw_opt *opts, const char *cmd, gw_err 
         if (!gw_cli_find(opts, "kwall")->seen && !c->sheet)
             p->kwall = gw_hertz_coefficient(p->radius, bm, INFINITY, wm);
     }
+    int law = gw_sheet_law_find(c->sheet_law);
+    if (law < 0)
+        return gw_err_set(err, GW_EINVAL, "%s --sheet-law: unknown law '%s' (fitted, hertz, layer, material)",
+                          cmd, c->sheet_law);
+    c->law = (gw_sheet_law)law;
+    if (c->sheet && c->law != GW_SHEET_FITTED) {
+        gw_layer_law_free(c->layer);
+        c->layer = NULL;
+        if (gw_cli_find(opts, "kwall")->seen)
+            return gw_err_set(err, GW_EINVAL, "%s --sheet: give either --sheet or --kwall", cmd);
+        if ((src = chain_cli_sheet(c, gw_sheet_find(c->sheet), p, &c->layer, err)) != GW_OK) {
+            char tmp[sizeof err->msg];
+            snprintf(tmp, sizeof tmp, "%s", err->msg);
+            return gw_err_set(err, src, "%s --sheet %s: %s", cmd, c->sheet, tmp);
+        }
+    }
+    if (p->wall.loss > 0) { /* a loss the Maxwell arms cannot give is refused here, by name */
+        chain_wall_law wl;
+        if (chain_wall_law_init(&wl, p, err) != GW_OK) {
+            char tmp[sizeof err->msg];
+            snprintf(tmp, sizeof tmp, "%s", err->msg);
+            return gw_err_set(err, GW_EINVAL, "%s --sheet-loss: %s", cmd, tmp);
+        }
+    }
     if (isinf(p->kwall))
         return gw_err_set(err, GW_EINVAL, "%s --wall-material: a rigid wall needs a deformable bead material", cmd);
+    if (gw_cli_find(opts, "sensor-mass")->seen) {
+        p->sensor.mass = c->sensor_mass;
+        p->sensor.stiffness = c->sensor_stiffness;
+        p->sensor.damping = c->sensor_damping;
+    }
+    p->guide.coulomb = c->guide_friction;
+    p->guide.viscous = c->guide_viscous;
     p->gravity = c->gravity;
     if (strcmp(c->damping, "none") == 0)
         p->damping = GW_DAMP_NONE;
@@ -247,6 +317,8 @@ int chain_cli_resolve(chain_cli *c, const gw_opt *opts, const char *cmd, gw_err 
         gw_chain_params q = *p;
         if (c->restitution_v > 0)
             q.v_imp = c->restitution_v;
+        if (c->law != GW_SHEET_FITTED) /* a material sheet: the beads' damping on the bare sensor */
+            q.kwall = gw_hertz_coefficient(p->radius, bm, INFINITY, wm);
         double cst = 0;
         rc = gw_chain_calibrate(&q, r, c->restitution, &cst, err);
         if (rc == GW_OK) {
@@ -279,6 +351,30 @@ cJSON *chain_cli_settings_json(const chain_cli *c)
     cJSON_AddStringToObject(m, "wall_material", c->wall_material);
     if (c->sheet)
         cJSON_AddStringToObject(m, "sheet", c->sheet);
+    if (c->sheet || c->sheets_mode) {
+        cJSON_AddStringToObject(m, "sheet_law", gw_sheet_law_name(c->law));
+        if (c->law == GW_SHEET_MATERIAL) {
+            cJSON_AddNumberToObject(m, "sheet_yield_override", c->sheet_yield >= 0 ? c->sheet_yield : NAN);
+            cJSON_AddNumberToObject(m, "sheet_loss_override", c->sheet_loss >= 0 ? c->sheet_loss : NAN);
+        }
+    }
+    if (p->wall.layer)
+        cJSON_AddNumberToObject(m, "wall_layer_thickness", gw_layer_law_thickness(p->wall.layer));
+    if (p->wall.yield_pressure > 0)
+        cJSON_AddNumberToObject(m, "wall_yield_pressure", p->wall.yield_pressure);
+    if (p->wall.loss > 0)
+        cJSON_AddNumberToObject(m, "wall_loss", p->wall.loss);
+    if (p->sensor.mass > 0) {
+        cJSON *sn = cJSON_AddObjectToObject(m, "sensor");
+        cJSON_AddNumberToObject(sn, "mass", p->sensor.mass);
+        cJSON_AddNumberToObject(sn, "stiffness", p->sensor.stiffness);
+        cJSON_AddNumberToObject(sn, "damping", p->sensor.damping);
+    }
+    if (p->guide.coulomb > 0 || p->guide.viscous > 0) {
+        cJSON *gd = cJSON_AddObjectToObject(m, "guide");
+        cJSON_AddNumberToObject(gd, "coulomb", p->guide.coulomb);
+        cJSON_AddNumberToObject(gd, "viscous", p->guide.viscous);
+    }
     if (c->radii_v)
         cJSON_AddItemToObject(m, "radii", gw_json_doubles(c->radii_v, p->n));
     cJSON_AddNumberToObject(m, "radius", p->radius);
@@ -361,4 +457,6 @@ void chain_cli_free(chain_cli *c)
     free(c->masses_v);
     free(c->kc_v);
     c->radii_v = c->masses_v = c->kc_v = NULL;
+    gw_layer_law_free(c->layer);
+    c->layer = NULL;
 }

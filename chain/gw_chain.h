@@ -66,6 +66,23 @@ typedef struct gw_sheet {
     double loss;         /* loss factor tan(delta); > 0: viscoelastic */
 } gw_sheet;
 
+/* How a sheet becomes a wall law (chain_sheets.c). */
+typedef enum {
+    GW_SHEET_FITTED = 0,  /* Hertz K_eff fitted to the measured tau_max(N = 1) */
+    GW_SHEET_HERTZ = 1,   /* Hertz half-space of the sheet's material */
+    GW_SHEET_LAYER = 2,   /* elastic layer of the sheet's thickness bonded on the sensor */
+    GW_SHEET_MATERIAL = 3 /* LAYER with the sheet's loss (viscoelastic), or, for a sheet
+                             with a yield stress, Thornton elastic-plastic on HERTZ */
+} gw_sheet_law;
+
+/* Limit contact pressure of the Thornton law from a yield stress: p_y = 2.8 Y (the
+ * fully plastic mean pressure, Tabor's constraint factor; Johnson 1985, 6.2). */
+#define GW_SHEET_TABOR 2.8
+
+/* Law by name ("fitted", "hertz", "layer", "material"); -1 if unknown. */
+int gw_sheet_law_find(const char *name);
+const char *gw_sheet_law_name(gw_sheet_law law);
+
 int gw_sheet_count(void);
 const gw_sheet *gw_sheet_get(int i);
 const gw_sheet *gw_sheet_find(const char *name);
@@ -202,6 +219,16 @@ gw_chain_params gw_chain_params_default(void);
 
 /* Check every field; GW_EINVAL with a message naming the field. */
 int gw_chain_params_validate(const gw_chain_params *p, gw_err *err);
+
+/* Set p->kwall and p->wall for sheet s under law, for the beads of p (radius,
+ * mass) of material bead; wall is the material of the bare sensor (sheet "none"
+ * and the Hertz time scale). yield and loss override the sheet's constants when
+ * >= 0 (0: none). A layer law is created into *layer (caller frees with
+ * gw_layer_law_free after the runs; NULL when none). GW_EINVAL, GW_ENOMEM,
+ * GW_ESOLVER with a message. */
+int gw_sheet_apply(const gw_sheet *s, gw_sheet_law law, double yield, double loss,
+                   const gw_material *bead, const gw_material *wall, gw_chain_params *p,
+                   gw_layer_law **layer, gw_err *err);
 
 typedef struct gw_chain gw_chain;
 

@@ -77,7 +77,7 @@ static int measure_tq(const chain_cli *c, double v, int jobs, double *t_q, gw_er
 
 /* One sheet, model against measured (times in s). */
 static cJSON *sheet_json(const gw_sheet *sh, const sw_result *sr, const gw_chain_result *r, int n_lo,
-                         double kwall, const gw_layer_law *layer)
+                         int n_hi, double t_q, double kwall, const gw_layer_law *layer)
 {
     cJSON *e = cJSON_CreateObject();
     cJSON_AddStringToObject(e, "name", sh->name);
@@ -92,6 +92,22 @@ static cJSON *sheet_json(const gw_sheet *sh, const sw_result *sr, const gw_chain
     cJSON_AddNumberToObject(e, "tau_max_nd_model", sr->n_d > 0 ? r[sr->n_d - n_lo].tau_max : NAN);
     cJSON_AddNumberToObject(e, "tau_max_nd_measured", sh->tau_max_nd_us * 1e-6);
     cJSON_AddNumberToObject(e, "tau_max_nd_measured_err", sh->tau_max_nd_err_us * 1e-6);
+    /* tolerance-free comparisons at the measured N_d: the model's tau_max there,
+     * and how close its F_max is to the plateau (the band the experiment's N_d
+     * corresponds to in the model) */
+    int nm = (int)sh->n_d, in = nm >= n_lo && nm <= n_hi;
+    cJSON_AddNumberToObject(e, "tau_max_at_measured_nd_model", in ? r[nm - n_lo].tau_max : NAN);
+    cJSON_AddNumberToObject(e, "f_max_at_measured_nd_over_plateau", in ? r[nm - n_lo].f_max / sr->plateau : NAN);
+    cJSON *bt = cJSON_AddArrayToObject(e, "n_d_model_by_tol");
+    static const double tols[] = {0.01, 0.02, 0.05, 0.1};
+    for (int i = 0; i < 4; i++) {
+        sw_result x = analyse(r, n_lo, n_hi, tols[i], t_q);
+        cJSON *b = cJSON_CreateObject();
+        cJSON_AddNumberToObject(b, "tol", tols[i]);
+        cJSON_AddNumberToObject(b, "n_d", x.n_d > 0 ? x.n_d : NAN);
+        cJSON_AddNumberToObject(b, "tau_max_nd", x.n_d > 0 ? r[x.n_d - n_lo].tau_max : NAN);
+        cJSON_AddItemToArray(bt, b);
+    }
     cJSON_AddNumberToObject(e, "f_max_1_model", n_lo == 1 ? r[0].f_max : NAN);
     cJSON_AddNumberToObject(e, "f_plateau_model", sr->plateau);
     cJSON_AddNumberToObject(e, "eps_eff_1_model", n_lo == 1 ? r[0].eps_eff : NAN);
@@ -142,7 +158,7 @@ int gw_cmd_softwall(int argc, char **argv)
         if (gw_cli_find(opts, wall_opts[i])->seen && (use_sheets || i == 2)) {
             char msg[160];
             snprintf(msg, sizeof msg, "softwall --%s: has no effect %s", wall_opts[i],
-                     use_sheets ? "with --sheets (each sheet has its fitted K_eff)"
+                     use_sheets ? "with --sheets (each sheet of Table 2 is its own wall)"
                                 : "(the wall is --kwall, default 1e9 N/m^1.5, or --sheets)");
             return chain_cli_fail(msg);
         }
@@ -223,11 +239,13 @@ int gw_cmd_softwall(int argc, char **argv)
             cJSON_AddNumberToObject(e, "tau_max_at_n_d", sr[w].n_d > 0 ? res[w * per + sr[w].n_d - a].tau_max : NAN);
             cJSON_AddBoolToObject(e, "saturated", sr[w].n_d > 0);
         }
-        if (use_sheets) {
+        if (use_sheets || c.sheet) { /* --sheets, or one --sheet: model against measured */
             cJSON_AddStringToObject(o, "sheet_law", gw_sheet_law_name(c.law));
             cJSON *sl = cJSON_AddArrayToObject(o, "sheets");
             for (int w = 0; w < nw; w++)
-                cJSON_AddItemToArray(sl, sheet_json(gw_sheet_get(w), &sr[w], res + w * per, (int)a, kw[w], lay[w]));
+                cJSON_AddItemToArray(sl, sheet_json(use_sheets ? gw_sheet_get(w) : gw_sheet_find(c.sheet), &sr[w],
+                                                    res + w * per, (int)a, (int)b, t_q, kw[w],
+                                                    use_sheets ? lay[w] : c.layer));
         }
         cJSON_AddNumberToObject(o, "wall_time_s", wall_s);
         cJSON_AddItemToObject(o, "settings", chain_cli_settings_json(&c));

@@ -129,7 +129,7 @@ void chain_cli_options(chain_cli *c, gw_opt *o)
     o[i++] = OPT_S("material", &c->material, "NAME", "bead material (steel, rigid, brass, aluminium, glass, pmma, pvc) [steel]");
     o[i++] = OPT_D("radius", &c->radius, "R", "bead radius, m, in (0, 1] [4e-3]", 0, 1, 1);
     o[i++] = OPT_S("wall-material", &c->wall_material, "NAME", "wall material (a half-space) [steel]");
-    o[i++] = OPT_S("sheet", &c->sheet, "NAME", "wall: a sheet of the paper's Table 2 with its fitted K_eff (none, brass, tape, pvc, pmma, cardboard2, beech, cardboard1, rubber)");
+    o[i++] = OPT_S("sheet", &c->sheet, "NAME", "wall: a sheet of the paper's Table 2 (none, brass, tape, pvc, pmma, cardboard2, beech, cardboard1, rubber), by default its fitted K_eff (see --sheet-law)");
     o[i++] = OPT_S("radii", &c->radii, "R,R..", "per-bead radii, m, bead 1 first (masses and contact k from the material)");
     o[i++] = OPT_D("k", &c->k, "K", "bead-bead Hertz coefficient, N/m^1.5, in [1e3, 1e14] [from material, F.12]", GW_CHAIN_K_MIN, GW_CHAIN_K_MAX, 0);
     o[i++] = OPT_D("kwall", &c->kwall, "K", "bead-wall Hertz coefficient, N/m^1.5, in [1e3, 1e14] [from materials, F.3]", GW_CHAIN_K_MIN, GW_CHAIN_K_MAX, 0);

@@ -5,6 +5,8 @@
 #     TMP/figures/, each a non-empty PNG file.
 #  2. plot_falcon.py must exit 2 (not crash) on a missing directory and on a directory
 #     with a required file removed.
+#  2b. notebooks/plot_sheets.py draws the stored sheet and plateau data (exit 0, four PNGs)
+#     and exits 2 on a missing directory.
 #  3. Every notebooks/*.ipynb executes headless (nbconvert --execute, Agg backend) with
 #     GRANWAVE set to the binary under test; outputs go to a temp dir, never the repo.
 # Exits non-zero with a message on the first failure. Skips (exit 0) only when
@@ -57,6 +59,21 @@ rc=$?
 [ $rc -eq 2 ] || fail "plot_falcon.py without falcon_runs.csv: exit $rc, expected 2"
 grep -q "falcon_runs.csv" "$tmp/err.log" || fail "plot_falcon.py error does not name the missing file"
 echo "PASS: missing file -> exit 2: $(head -1 "$tmp/err.log")"
+
+# 2b. plot_sheets.py on the stored sheet and plateau data (issue 19): exit 0 and four
+#     PNGs in a temp dir; exit 2 naming a missing directory
+"$PY" "$SRC/notebooks/plot_sheets.py" "$SRC/data/measured/sheets" "$tmp/sheets" >"$tmp/plot.log" 2>&1 \
+    || { cat "$tmp/plot.log"; fail "plot_sheets.py on data/measured/sheets"; }
+for f in sheets_nd_tau1_tol05 sheets_nd_tau1_tol10 plateau fmax_vs_n_material; do
+    p="$tmp/sheets/$f.png"
+    [ -s "$p" ] && [ "$(head -c 8 "$p" | od -An -tx1 | tr -d ' \n')" = "89504e470d0a1a0a" ] \
+        || fail "plot_sheets.py: $f.png missing or not a PNG"
+done
+echo "PASS: plot_sheets.py wrote its four figures"
+"$PY" "$SRC/notebooks/plot_sheets.py" "$tmp/does-not-exist" >/dev/null 2>"$tmp/err.log"
+rc=$?
+[ $rc -eq 2 ] && grep -q "does-not-exist" "$tmp/err.log" || fail "plot_sheets.py on a missing directory: exit $rc"
+echo "PASS: plot_sheets.py missing directory -> exit 2: $(head -1 "$tmp/err.log")"
 
 # 3. every notebook, headless
 shopt -s nullglob

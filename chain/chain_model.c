@@ -11,7 +11,7 @@
  * energy ledger is closed by integration, not inferred.
  * Energies: kinetic (1/2) m v^2, elastic (2/5) k d^(5/2), gravity -m g x.
  * General model (any option of the wall law, sensor body or guide friction; the
- * default model keeps the lean path below, results unchanged):
+ * default model keeps the lean path below, results unchanged; chain_general.c):
  *   wall overlap  D = x_0 - x_s, force F(D, D', internal states) (chain_wall.c)
  *   sensor body   M_s x_s'' = F - k_s x_s - c_s x_s';  it reads k_s x_s + c_s x_s'
  *   guide         m_i x_i'' += -(f_c tanh(v_i/v_reg) + c_g v_i)
@@ -24,40 +24,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "chain_wall.h"
-
-struct gw_chain {
-    gw_chain_params p;
-    int n;
-    double *m, *minv, *kc, *gam; /* masses [n], 1/m [n], k [n-1], gamma [n-1] */
-    double kwall, gwall;         /* wall coefficient and its KK constant */
-    double *scale;               /* [dim] */
-    gw_system sys;
-    int general;                 /* any wall law, sensor body or guide option */
-    chain_wall_law wl;
-    long i_diss, i_work, i_sens, i_dmax, i_q; /* state indices, -1 when absent */
-    double vreg;                 /* Coulomb regularisation speed, m/s */
-    double dtrack;               /* plastic wall: D_max follows D (dD_max/dt = D' s(x),
-                                    s = x^2 (3 - 2x), x = (D - D_max + dtrack)/dtrack
-                                    clipped to [0, 1]) so that the switch between
-                                    unloading and reloading is C^1, not a jump the
-                                    corrector chatters on; D_max lags D by < dtrack */
-};
-
-/* Contact force and dissipated power for overlap d > 0 and rate dd = d'. */
-static inline double damped_force(const gw_chain *c, double k, double gam, double d,
-                                  double dd, double *pdiss)
-{
-    double sd = sqrt(d), fel = k * d * sd, f;
-    if (c->p.damping == GW_DAMP_KUWABARA_KONO)
-        f = fel + gam * sd * dd;
-    else
-        f = fel * (1.0 + 1.5 * c->p.alpha * dd);
-    if (f < 0)
-        f = 0;
-    *pdiss += (fel - f) * (-dd);
-    return f;
-}
+#include "chain_model.h"
 
 /* ---- undamped right-hand side, written for packed square roots ----
  * Per bead j (physics.md 1.1, F.11), with f_j the force below bead j:
@@ -208,141 +175,6 @@ static void chain_kinematics(const gw_chain *c, const double *y, double *yd)
         yd[2 * c->n] = 0.0;
 }
 
-/* ---- general model: wall law, sensor body, guide friction ---- */
-
-static double wall_overlap(const gw_chain *c, const double *y)
-{
-    return c->i_sens >= 0 ? y[0] - y[c->i_sens] : y[0];
-}
-
-static double wall_overlap_rate(const gw_chain *c, const double *y)
-{
-    return c->i_sens >= 0 ? y[1] - y[c->i_sens + 1] : y[1];
-}
-
-/* Contact force of the wall in the general model; *kd = dF/dD, *kv = dF/dD'
- * (Jacobian), the dissipated power of contact damping added to *pd. */
-static double general_wall_force(const gw_chain *c, const double *y, double *kd, double *kv,
-                                 double *pd)
-{
-    const chain_wall_law *w = &c->wl;
-    double d = wall_overlap(c, y), dd = wall_overlap_rate(c, y), f = 0.0;
-    *kd = *kv = 0.0;
-    if (w->plastic)
-        return gw_thornton_force(&w->th, d, y[c->i_dmax], kd, NULL, NULL);
-    if (w->narms > 0) {
-        double k;
-        f = w->w_inf * chain_wall_elastic(w, d, &k);
-        for (int j = 0; j < w->narms; j++)
-            f += w->w[j] * y[c->i_q + j];
-        if (f > 0) {
-            *kd = w->w_inf * k;
-            return f;
-        }
-        return 0.0;
-    }
-    if (!(d > 0))
-        return 0.0;
-    if (w->layer || c->p.damping == GW_DAMP_NONE)
-        return chain_wall_elastic(w, d, kd);
-    double p0 = 0.0;
-    f = damped_force(c, c->kwall, c->gwall, d, dd, &p0);
-    *pd += p0;
-    return f;
-}
-
-static double guide_force(const gw_chain *c, double v, double *dfdv)
-{
-    const gw_chain_guide *g = &c->p.guide;
-    double th = g->coulomb > 0 ? tanh(v / c->vreg) : 0.0;
-    if (dfdv)
-        *dfdv = g->coulomb / c->vreg * (1.0 - th * th) + g->viscous;
-    return g->coulomb * th + g->viscous * v;
-}
-
-enum { PART_ALL = 0, PART_EX = 1, PART_IM = 2 };
-
-static void general_rhs(const gw_chain *c, const double *y, double *yd, int part)
-{
-    const int n = c->n;
-    for (long i = 0; i < c->sys.dim; i++)
-        yd[i] = 0.0;
-    if (part != PART_IM) {
-        for (int i = 0; i < n; i++) {
-            yd[2 * i] = y[2 * i + 1];
-            yd[2 * i + 1] = c->p.gravity;
-        }
-        if (c->i_sens >= 0)
-            yd[c->i_sens] = y[c->i_sens + 1];
-        if (part == PART_EX)
-            return;
-    }
-    double pd = 0.0, kd, kv;
-    double fw = general_wall_force(c, y, &kd, &kv, &pd);
-    yd[1] -= fw * c->minv[0];
-    for (int i = 0; i < n - 1; i++) {
-        double d = y[2 * i + 2] - y[2 * i];
-        if (!(d > 0))
-            continue;
-        double f;
-        if (c->p.damping == GW_DAMP_NONE)
-            f = c->kc[i] * d * sqrt(d);
-        else
-            f = damped_force(c, c->kc[i], c->gam[i], d, y[2 * i + 3] - y[2 * i + 1], &pd);
-        yd[2 * i + 1] += f * c->minv[i];
-        yd[2 * i + 3] -= f * c->minv[i + 1];
-    }
-    if (c->p.guide.coulomb > 0 || c->p.guide.viscous > 0)
-        for (int i = 0; i < n; i++) {
-            double v = y[2 * i + 1], fr = guide_force(c, v, NULL);
-            yd[2 * i + 1] -= fr * c->minv[i];
-            pd += fr * v;
-        }
-    double dd = wall_overlap_rate(c, y);
-    if (c->i_sens >= 0) {
-        const gw_chain_sensor *s = &c->p.sensor;
-        double xs = y[c->i_sens], vs = y[c->i_sens + 1];
-        yd[c->i_sens + 1] += (fw - s->stiffness * xs - s->damping * vs) / s->mass;
-        pd += s->damping * vs * vs;
-    }
-    if (c->i_work >= 0)
-        yd[c->i_work] = fw * dd;
-    if (c->i_dmax >= 0 && dd > 0) { /* loading: D_max follows D, switched on by a C^1 ramp */
-        double x = (wall_overlap(c, y) - y[c->i_dmax] + c->dtrack) / c->dtrack;
-        x = x < 0 ? 0.0 : x > 1 ? 1.0 : x;
-        yd[c->i_dmax] = dd * x * x * (3.0 - 2.0 * x);
-    }
-    if (c->wl.narms > 0) {
-        double k;
-        chain_wall_elastic(&c->wl, wall_overlap(c, y), &k);
-        for (int j = 0; j < c->wl.narms; j++)
-            yd[c->i_q + j] = k * dd - y[c->i_q + j] / c->wl.tau[j];
-    }
-    if (c->i_diss >= 0)
-        yd[c->i_diss] = pd;
-}
-
-static int general_rhs_all(double t, const double *y, double *yd, void *P)
-{
-    (void)t;
-    general_rhs(P, y, yd, PART_ALL);
-    return 0;
-}
-
-static int general_rhs_ex(double t, const double *y, double *yd, void *P)
-{
-    (void)t;
-    general_rhs(P, y, yd, PART_EX);
-    return 0;
-}
-
-static int general_rhs_im(double t, const double *y, double *yd, void *P)
-{
-    (void)t;
-    general_rhs(P, y, yd, PART_IM);
-    return 0;
-}
-
 static int chain_rhs(double t, const double *y, double *yd, void *P)
 {
     (void)t;
@@ -416,7 +248,7 @@ static int chain_jac(double t, const double *y, const double *f, gw_band *J, voi
     double wd, wv; /* partials of the force below bead i (wall or contact i-1) */
     if (c->general) { /* here: a layer or Hertz wall without extra states */
         double pd = 0.0;
-        general_wall_force(c, y, &wd, &wv, &pd);
+        chain_general_wall_force(c, y, &wd, &wv, &pd);
         if (!c->wl.layer)
             contact_partials(c, c->kwall, c->gwall, y[0], y[1], &wd, &wv);
     } else {
@@ -435,7 +267,7 @@ static int chain_jac(double t, const double *y, const double *f, gw_band *J, voi
         gw_band_set(J, vi, xi, -(cd + wd) * m1);
         double gv = 0.0;
         if (guide)
-            guide_force(c, y[vi], &gv);
+            chain_guide_force(c, y[vi], &gv);
         gw_band_set(J, vi, vi, -(cv + wv + gv) * m1);
         if (i < n - 1) {
             gw_band_set(J, vi, xi + 2, cd * m1);
@@ -460,20 +292,6 @@ static int chain_roots(double t, const double *y, double *g, void *P)
     for (int i = 0; i < n - 1; i++)
         g[1 + i] = y[2 * i + 2] - y[2 * i];
     g[n] = y[1];
-    return 0;
-}
-
-static int general_roots(double t, const double *y, double *g, void *P)
-{
-    (void)t;
-    const gw_chain *c = P;
-    const int n = c->n;
-    g[0] = gw_chain_wall_gap(c, y);
-    for (int i = 0; i < n - 1; i++)
-        g[1 + i] = y[2 * i + 2] - y[2 * i];
-    g[n] = wall_overlap_rate(c, y);
-    if (c->i_sens >= 0)
-        g[n + 1] = y[c->i_sens + 1];
     return 0;
 }
 
@@ -664,9 +482,9 @@ int gw_chain_create(const gw_chain_params *p, gw_chain **out, gw_err *err)
 
     gw_system *s = &c->sys;
     s->dim = dim;
-    s->rhs = general ? general_rhs_all : chain_rhs;
-    s->rhs_ex = general ? general_rhs_ex : chain_rhs_ex;
-    s->rhs_im = general ? general_rhs_im : chain_rhs_im;
+    s->rhs = general ? chain_general_rhs : chain_rhs;
+    s->rhs_ex = general ? chain_general_rhs_ex : chain_rhs_ex;
+    s->rhs_im = general ? chain_general_rhs_im : chain_rhs_im;
     s->jac = chain_jac;
     s->mu = 2;
     s->ml = 3;
@@ -674,7 +492,7 @@ int gw_chain_create(const gw_chain_params *p, gw_chain **out, gw_err *err)
         s->jac = NULL;
         s->mu = s->ml = dim - 1;
     }
-    s->roots = general ? general_roots : chain_roots;
+    s->roots = general ? chain_general_roots : chain_roots;
     s->nroots = n + 1 + (i_sens >= 0);
     s->scale = c->scale;
     s->params = c;
@@ -716,52 +534,6 @@ void gw_chain_initial_state(const gw_chain *c, double *y)
         y[i] = 0.0;
 }
 
-double gw_chain_wall_contact_force(const gw_chain *c, const double *y)
-{
-    if (!c->general)
-        return gw_chain_wall_force(c, y);
-    double kd, kv, pd = 0.0;
-    return general_wall_force(c, y, &kd, &kv, &pd);
-}
-
-double gw_chain_wall_gap(const gw_chain *c, const double *y)
-{
-    if (!c->general)
-        return y[0];
-    double d = wall_overlap(c, y);
-    if (c->wl.plastic) {
-        double dp;
-        gw_thornton_force(&c->wl.th, d, y[c->i_dmax], NULL, &dp, NULL);
-        return d - dp;
-    }
-    return d;
-}
-
-double gw_chain_wall_gap_rate(const gw_chain *c, const double *y)
-{
-    return c->general ? wall_overlap_rate(c, y) : y[1];
-}
-
-int gw_chain_force_max_root(const gw_chain *c)
-{
-    return c->n + (c->i_sens >= 0);
-}
-
-long gw_chain_sensor_index(const gw_chain *c)
-{
-    return c->i_sens;
-}
-
-double gw_chain_momentum(const gw_chain *c, const double *y)
-{
-    double p = 0.0;
-    for (int i = 0; i < c->n; i++)
-        p += c->m[i] * y[2 * i + 1];
-    if (c->i_sens >= 0)
-        p += c->p.sensor.mass * y[c->i_sens + 1];
-    return p;
-}
-
 double gw_chain_wall_force(const gw_chain *c, const double *y)
 {
     if (c->general) {
@@ -778,58 +550,10 @@ double gw_chain_wall_force(const gw_chain *c, const double *y)
     return damped_force(c, c->kwall, c->gwall, x, y[1], &pd);
 }
 
-/* Energy still stored in the wall (recoverable on unloading). */
-static double wall_stored_energy(const gw_chain *c, const double *y)
-{
-    const chain_wall_law *w = &c->wl;
-    double d = wall_overlap(c, y), u;
-    if (w->plastic) {
-        gw_thornton_force(&w->th, d, y[c->i_dmax], NULL, NULL, &u);
-        return u;
-    }
-    u = w->w_inf * chain_wall_elastic_energy(w, d);
-    for (int j = 0; j < w->narms; j++) /* each arm's spring at the overlap that carries its force */
-        u += w->w[j] * chain_wall_elastic_energy(w, chain_wall_elastic_overlap(w, fabs(y[c->i_q + j])));
-    return u;
-}
-
-static void general_energy(const gw_chain *c, const double *y, gw_chain_energy *e)
-{
-    const int n = c->n;
-    double ke = 0, el = 0, pg = 0, dis = c->i_diss >= 0 ? y[c->i_diss] : 0.0;
-    for (int i = 0; i < n; i++) {
-        double v = y[2 * i + 1];
-        ke += 0.5 * c->m[i] * v * v;
-        pg -= c->m[i] * c->p.gravity * y[2 * i];
-        if (i < n - 1) {
-            double d = y[2 * i + 2] - y[2 * i];
-            if (d > 0)
-                el += 0.4 * c->kc[i] * d * d * sqrt(d);
-        }
-    }
-    if (c->i_work >= 0) {
-        double u = wall_stored_energy(c, y);
-        el += u;
-        dis += y[c->i_work] - u;
-    } else {
-        el += chain_wall_elastic_energy(&c->wl, wall_overlap(c, y));
-    }
-    if (c->i_sens >= 0) {
-        double xs = y[c->i_sens], vs = y[c->i_sens + 1];
-        ke += 0.5 * c->p.sensor.mass * vs * vs;
-        el += 0.5 * c->p.sensor.stiffness * xs * xs;
-    }
-    e->kinetic = ke;
-    e->elastic = el;
-    e->gravity = pg;
-    e->dissipated = dis;
-    e->total = ke + el + pg + dis;
-}
-
 void gw_chain_energy_of(const gw_chain *c, const double *y, gw_chain_energy *e)
 {
     if (c->general) {
-        general_energy(c, y, e);
+        chain_general_energy(c, y, e);
         return;
     }
     const int n = c->n;

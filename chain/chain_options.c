@@ -76,10 +76,14 @@ static int check_no_effect(const chain_cli *c, const gw_opt *opts, const char *c
         return gw_err_set(err, GW_EINVAL, "%s --sheet-law: has no effect without --sheet%s", cmd,
                           strcmp(cmd, "softwall") == 0 ? " or --sheets" : "");
     static const char *const mat_opts[] = {"sheet-yield", "sheet-loss"};
-    for (int i = 0; i < 2; i++)
+    for (int i = 0; i < 2; i++) {
         if (gw_cli_find(opts, mat_opts[i])->seen && c->law != GW_SHEET_MATERIAL)
             return gw_err_set(err, GW_EINVAL, "%s --%s: has no effect without --sheet-law material", cmd,
                               mat_opts[i]);
+        if (gw_cli_find(opts, mat_opts[i])->seen && c->sheets_mode)
+            return gw_err_set(err, GW_EINVAL, "%s --%s: overrides one sheet's constant; give it with --sheet, "
+                              "not --sheets", cmd, mat_opts[i]);
+    }
     if (gw_cli_find(opts, "sheet-yield")->seen && c->sheet_yield > 0 && c->sheet_yield < 1e5)
         return gw_err_set(err, GW_EINVAL, "%s --sheet-yield: %g Pa is below any solid's yield stress "
                           "(0 = elastic, or >= 1e5 Pa)", cmd, c->sheet_yield);

@@ -51,6 +51,7 @@ bad "--guide-friction" chain --guide-friction -0.1
 bad "--guide-friction" chain --guide-friction inf
 bad "--guide-viscous" softwall --guide-viscous 1e9
 bad "--sheet" softwall --sheets --sheet brass --sheet-law material
+bad "--sheet-yield" softwall --sheets --sheet-law material --sheet-yield 2e8
 
 jget() { $PY -c "import json,sys; d=json.load(open(sys.argv[1])); print(eval(sys.argv[2]))" "$@"; }
 

@@ -61,7 +61,7 @@ typedef struct run_state {
 static double contact_force(const run_state *st, const double *y, int k)
 {
     if (k == 0)
-        return gw_chain_wall_force(st->c, y);
+        return gw_chain_wall_contact_force(st->c, y);
     double d = y[2 * k] - y[2 * k - 2];
     const gw_chain_params *p = gw_chain_get_params(st->c);
     return d > 0 ? (p->kc ? p->kc[k - 1] : p->k) * d * sqrt(d) : 0.0;
@@ -118,7 +118,7 @@ static int observe(run_state *st, double t, const double *y, int is_event)
 static void reconcile(run_state *st, double t, const double *y)
 {
     for (int k = 0; k < st->n; k++) {
-        double d = k == 0 ? y[0] : y[2 * k] - y[2 * k - 2];
+        double d = k == 0 ? gw_chain_wall_gap(st->c, y) : y[2 * k] - y[2 * k - 2];
         if (!st->closed[k] && d > st->dtol) {
             st->closed[k] = 1;
             st->r->missed_events++;
@@ -184,7 +184,8 @@ static void on_roots(run_state *st, double t, const double *y, const int *roots)
     reconcile(st, t, y);
     if (wall_opened || (wall_was_closed && !st->closed[0]))
         on_wall_open(st, t, y);
-    if (roots[n] < 0 && y[0] > 0) { /* v_0 falls through 0: wall-force maximum */
+    int im = gw_chain_force_max_root(st->c); /* v_0 (or v_s) falls through 0: force maximum */
+    if (roots[im] < 0 && gw_chain_wall_gap(st->c, y) > 0) {
         r->n_events++;
         if (r->n_maxima == 0)
             st->t_first_max = t;
@@ -201,7 +202,7 @@ static int finished(const run_state *st, const double *y, double dtol)
     for (int k = 0; k < n; k++)
         if (st->closed[k])
             return 0;
-    if (y[1] > 0 || y[0] > dtol)
+    if (gw_chain_wall_gap_rate(st->c, y) > 0 || gw_chain_wall_gap(st->c, y) > dtol)
         return 0;
     for (int i = 0; i < n - 1; i++)
         if (y[2 * i + 2] - y[2 * i] > dtol)

@@ -196,10 +196,14 @@ static int falcon_pick_solver(falcon *f, const gw_opt *opts, double accuracy, gw
             return gw_err_set(err, GW_EINVAL, "falcon --accuracy: give either --accuracy or the solver options");
         return GW_OK;
     }
-    if (f->c.params.damping != GW_DAMP_NONE || f->c.params.gravity != 0 || f->n_hi > 40) {
+    const gw_chain_params *p = &f->c.params;
+    int general = p->wall.layer || p->wall.yield_pressure > 0 || p->wall.loss > 0 || p->sensor.mass > 0 ||
+                  p->guide.coulomb > 0 || p->guide.viscous > 0;
+    if (p->damping != GW_DAMP_NONE || p->gravity != 0 || f->n_hi > 40 || general) {
         if (gw_cli_find(opts, "accuracy")->seen)
             return gw_err_set(err, GW_EINVAL, "falcon --accuracy: the step study covers undamped columns "
-                                              "of N <= 40 without gravity; give --solver instead");
+                                              "of N <= 40 without gravity on a Hertz wall, without sensor "
+                                              "body or guide friction; give --solver instead");
         return GW_OK; /* outside the study: the adaptive default */
     }
     int m = gw_chain_rk4_steps_per_tc(accuracy);
@@ -367,5 +371,6 @@ out:
     free(f.fv);
     free(vv);
     free(hh);
+    chain_cli_free(&f.c);
     return code;
 }

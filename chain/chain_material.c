@@ -90,12 +90,24 @@ double gw_chain_kc(double k)
 }
 
 /* Falcon et al. 1998, Table 2 (docs/physics.md 1.7): sheets glued on the sensor,
- * h = 2.9 mm. tau_max(N = 1) is the input of the K_eff fit; N_d is kept for
- * comparison with the model. */
+ * h = 2.9 mm. tau_max(N = 1) is the input of the K_eff fit; N_d and tau_max(N_d)
+ * are kept for comparison with the model. The material constants (storage modulus
+ * at kHz, Poisson ratio, yield or crushing stress, loss factor) are approximate
+ * handbook values, chosen before any comparison with Table 2; docs/sheets.md gives
+ * their sources and ranges. The paper does not name the tape: it is modelled as
+ * its rigid-PVC backing (the adhesive film neglected). Beech is loaded across the
+ * grain; cardboard through its thickness (both strongly anisotropic: an isotropic
+ * layer is a rough stand-in). */
 static const gw_sheet sheets[] = {
-    {"none", 17, 1, 0},       {"brass", 47.5, 2, 0},  {"tape", 47.5, 4, 0},
-    {"pvc", 67.5, 6, 1},      {"pmma", 69, 8, 1},     {"cardboard2", 191, 11, 1},
-    {"beech", 127.5, 15, 1},  {"cardboard1", 227, 22, 2}, {"rubber", 221, 28, 4},
+    {"none", 17, 1, 0, 0.0, 17, 0, "no sheet (steel sensor)", 0, 0, 0, 0},
+    {"brass", 47.5, 2, 0, 1.2e-3, 46, 0, "brass CuZn37", 100e9, 0.34, 200e6, 0},
+    {"tape", 47.5, 4, 0, 0.3e-3, 112, 0, "rigid PVC (tape backing)", 3.0e9, 0.38, 0, 0.02},
+    {"pvc", 67.5, 6, 1, 1.0e-3, 171, 19, "rigid PVC", 3.0e9, 0.38, 0, 0.02},
+    {"pmma", 69, 8, 1, 1.0e-3, 228, 11, "PMMA", 3.3e9, 0.37, 0, 0.06},
+    {"cardboard2", 191, 11, 1, 0.5e-3, 396, 21, "paperboard, through-thickness", 20e6, 0.1, 0, 0.1},
+    {"beech", 127.5, 15, 1, 2.0e-3, 468, 26, "beech across the grain", 0.9e9, 0.3, 7e6, 0},
+    {"cardboard1", 227, 22, 2, 0.8e-3, 743, 23, "paperboard, through-thickness", 20e6, 0.1, 0, 0.1},
+    {"rubber", 221, 28, 4, 1.0e-3, 950, 57, "natural rubber", 4e6, 0.499, 0, 0.1},
 };
 
 int gw_sheet_count(void)

@@ -10,37 +10,21 @@
  * The dissipated power sum (F_el - F) (-d') is integrated as an extra state so the
  * energy ledger is closed by integration, not inferred.
  * Energies: kinetic (1/2) m v^2, elastic (2/5) k d^(5/2), gravity -m g x.
+ * General model (any option of the wall law, sensor body or guide friction; the
+ * default model keeps the lean path below, results unchanged; chain_general.c):
+ *   wall overlap  D = x_0 - x_s, force F(D, D', internal states) (chain_wall.c)
+ *   sensor body   M_s x_s'' = F - k_s x_s - c_s x_s';  it reads k_s x_s + c_s x_s'
+ *   guide         m_i x_i'' += -(f_c tanh(v_i/v_reg) + c_g v_i)
+ *   ledger        dE_d/dt = c_s x_s'^2 + sum_i (f_c tanh(v_i/v_reg) + c_g v_i) v_i
+ *                 (+ contact damping); dW/dt = F D' for a plastic or viscoelastic
+ *                 wall (its stored part is the law's recoverable energy)
  * Units: SI (m, s, kg, N, N/m^1.5, J).
  */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
-#include "gw_chain.h"
-
-struct gw_chain {
-    gw_chain_params p;
-    int n;
-    double *m, *minv, *kc, *gam; /* masses [n], 1/m [n], k [n-1], gamma [n-1] */
-    double kwall, gwall;         /* wall coefficient and its KK constant */
-    double *scale;               /* [dim] */
-    gw_system sys;
-};
-
-/* Contact force and dissipated power for overlap d > 0 and rate dd = d'. */
-static inline double damped_force(const gw_chain *c, double k, double gam, double d,
-                                  double dd, double *pdiss)
-{
-    double sd = sqrt(d), fel = k * d * sd, f;
-    if (c->p.damping == GW_DAMP_KUWABARA_KONO)
-        f = fel + gam * sd * dd;
-    else
-        f = fel * (1.0 + 1.5 * c->p.alpha * dd);
-    if (f < 0)
-        f = 0;
-    *pdiss += (fel - f) * (-dd);
-    return f;
-}
+#include "chain_model.h"
 
 /* ---- undamped right-hand side, written for packed square roots ----
  * Per bead j (docs/physics.md 1.1, F.11), with f_j the force below bead j:
@@ -262,7 +246,15 @@ static int chain_jac(double t, const double *y, const double *f, gw_band *J, voi
     const gw_chain *c = P;
     const int n = c->n;
     double wd, wv; /* partials of the force below bead i (wall or contact i-1) */
-    contact_partials(c, c->kwall, c->gwall, y[0], y[1], &wd, &wv);
+    if (c->general) { /* here: a layer or Hertz wall without extra states */
+        double pd = 0.0;
+        chain_general_wall_force(c, y, &wd, &wv, &pd);
+        if (!c->wl.layer)
+            contact_partials(c, c->kwall, c->gwall, y[0], y[1], &wd, &wv);
+    } else {
+        contact_partials(c, c->kwall, c->gwall, y[0], y[1], &wd, &wv);
+    }
+    const int guide = c->p.guide.coulomb > 0 || c->p.guide.viscous > 0;
     for (int i = 0; i < n; i++) {
         long xi = 2 * i, vi = 2 * i + 1;
         gw_band_set(J, xi, vi, 1.0);
@@ -273,7 +265,10 @@ static int chain_jac(double t, const double *y, const double *f, gw_band *J, voi
         double m1 = c->minv[i];
         /* a_i = (F_i - F_(i-1)) / m_i */
         gw_band_set(J, vi, xi, -(cd + wd) * m1);
-        gw_band_set(J, vi, vi, -(cv + wv) * m1);
+        double gv = 0.0;
+        if (guide)
+            chain_guide_force(c, y[vi], &gv);
+        gw_band_set(J, vi, vi, -(cv + wv + gv) * m1);
         if (i < n - 1) {
             gw_band_set(J, vi, xi + 2, cd * m1);
             gw_band_set(J, vi, vi + 2, cv * m1);
@@ -354,7 +349,43 @@ int gw_chain_params_validate(const gw_chain_params *p, gw_err *err)
     default:
         return gw_err_set(err, GW_EINVAL, "damping: unknown model %d", (int)p->damping);
     }
+    const gw_chain_wall *w = &p->wall;
+    if ((rc = gw_check_range(w->yield_pressure, "wall yield_pressure (Pa)", 0, 1e12, err)) != GW_OK ||
+        (rc = gw_check_range(w->loss, "wall loss (tan delta)", 0, 10, err)) != GW_OK ||
+        (rc = gw_check_range(w->tau_min, "wall tau_min (s)", 0, 1e3, err)) != GW_OK ||
+        (rc = gw_check_range(w->tau_max, "wall tau_max (s)", 0, 1e3, err)) != GW_OK)
+        return rc;
+    if (w->yield_pressure > 0 && (w->layer || w->loss > 0))
+        return gw_err_set(err, GW_EINVAL, "wall: the plastic law (yield_pressure) works on the Hertz "
+                          "law alone, not with a layer or a loss");
+    if (w->loss > 0) {
+        double a, b;
+        chain_wall_arms(w, &a, &b);
+        if (!(a <= b) || b / a > 1e6)
+            return gw_err_set(err, GW_EINVAL, "wall: relaxation times need tau_min <= tau_max <= 1e6 "
+                              "tau_min (got %g, %g s)", a, b);
+    }
+    const gw_chain_sensor *sn = &p->sensor;
+    if ((rc = gw_check_range(sn->mass, "sensor mass (kg)", 0, 1e3, err)) != GW_OK ||
+        (rc = gw_check_range(sn->stiffness, "sensor stiffness (N/m)", 0, 1e16, err)) != GW_OK ||
+        (rc = gw_check_range(sn->damping, "sensor damping (N s/m)", 0, 1e12, err)) != GW_OK)
+        return rc;
+    if (sn->mass > 0 && !(sn->stiffness > 0))
+        return gw_err_set(err, GW_EINVAL, "sensor stiffness: a sensor body (mass > 0) needs a stiffness > 0");
+    if (!(sn->mass > 0) && (sn->stiffness > 0 || sn->damping > 0))
+        return gw_err_set(err, GW_EINVAL, "sensor mass: stiffness and damping need a sensor mass > 0");
+    const gw_chain_guide *g = &p->guide;
+    if ((rc = gw_check_range(g->coulomb, "guide coulomb friction (N)", 0, 1e6, err)) != GW_OK ||
+        (rc = gw_check_range(g->viscous, "guide viscous friction (N s/m)", 0, 1e9, err)) != GW_OK ||
+        (rc = gw_check_range(g->v_reg, "guide v_reg (m/s)", 0, 1e3, err)) != GW_OK)
+        return rc;
     return GW_OK;
+}
+
+static int is_general(const gw_chain_params *p)
+{
+    return p->wall.layer || p->wall.yield_pressure > 0 || p->wall.loss > 0 || p->sensor.mass > 0 ||
+           p->guide.coulomb > 0 || p->guide.viscous > 0;
 }
 
 double gw_chain_time_scale(const gw_chain_params *p)
@@ -372,7 +403,27 @@ int gw_chain_create(const gw_chain_params *p, gw_chain **out, gw_err *err)
         return rc;
     gw_chain *c = calloc(1, sizeof *c);
     const int n = p->n;
-    const long dim = 2L * n + (p->damping != GW_DAMP_NONE);
+    const int general = is_general(p);
+    chain_wall_law wl;
+    if ((rc = chain_wall_law_init(&wl, p, err)) != GW_OK) {
+        free(c);
+        return rc;
+    }
+    long dim = 2L * n, i_diss = -1, i_work = -1, i_sens = -1, i_dmax = -1, i_q = -1;
+    if (p->damping != GW_DAMP_NONE || p->sensor.damping > 0 || p->guide.coulomb > 0 || p->guide.viscous > 0)
+        i_diss = dim++;
+    if (wl.plastic || wl.narms > 0)
+        i_work = dim++;
+    if (p->sensor.mass > 0) {
+        i_sens = dim;
+        dim += 2;
+    }
+    if (wl.plastic)
+        i_dmax = dim++;
+    if (wl.narms > 0) {
+        i_q = dim;
+        dim += wl.narms;
+    }
     if (c) {
         c->m = malloc((size_t)(4 * n) * sizeof *c->m);
         c->scale = malloc((size_t)dim * sizeof *c->scale);
@@ -406,19 +457,43 @@ int gw_chain_create(const gw_chain_params *p, gw_chain **out, gw_err *err)
     double e0 = 0;
     for (int i = 0; i < n; i++)
         e0 += 0.5 * c->m[i] * p->v_imp * p->v_imp;
-    if (p->damping != GW_DAMP_NONE)
-        c->scale[2 * n] = e0;
+    c->general = general;
+    c->wl = wl;
+    c->i_diss = i_diss;
+    c->i_work = i_work;
+    c->i_sens = i_sens;
+    c->i_dmax = i_dmax;
+    c->i_q = i_q;
+    c->vreg = p->guide.v_reg > 0 ? p->guide.v_reg : 1e-3 * p->v_imp;
+    double fs = p->kwall * xs * sqrt(xs);
+    if (i_diss >= 0)
+        c->scale[i_diss] = e0;
+    if (i_work >= 0)
+        c->scale[i_work] = e0;
+    if (i_sens >= 0) {
+        c->scale[i_sens] = fs / p->sensor.stiffness;
+        c->scale[i_sens + 1] = p->v_imp;
+    }
+    if (i_dmax >= 0)
+        c->scale[i_dmax] = xs;
+    c->dtrack = 1e-6 * xs;
+    for (int j = 0; j < wl.narms; j++)
+        c->scale[i_q + j] = fs;
 
     gw_system *s = &c->sys;
     s->dim = dim;
-    s->rhs = chain_rhs;
-    s->rhs_ex = chain_rhs_ex;
-    s->rhs_im = chain_rhs_im;
+    s->rhs = general ? chain_general_rhs : chain_rhs;
+    s->rhs_ex = general ? chain_general_rhs_ex : chain_rhs_ex;
+    s->rhs_im = general ? chain_general_rhs_im : chain_rhs_im;
     s->jac = chain_jac;
     s->mu = 2;
     s->ml = 3;
-    s->roots = chain_roots;
-    s->nroots = n + 1;
+    if (i_work >= 0 || i_sens >= 0) { /* states outside the band: finite differences */
+        s->jac = NULL;
+        s->mu = s->ml = dim - 1;
+    }
+    s->roots = general ? chain_general_roots : chain_roots;
+    s->nroots = n + 1 + (i_sens >= 0);
     s->scale = c->scale;
     s->params = c;
     *out = c;
@@ -455,12 +530,17 @@ void gw_chain_initial_state(const gw_chain *c, double *y)
         y[2 * i] = 0.0;
         y[2 * i + 1] = c->p.v_imp;
     }
-    if (c->p.damping != GW_DAMP_NONE)
-        y[2 * c->n] = 0.0;
+    for (long i = 2L * c->n; i < c->sys.dim; i++)
+        y[i] = 0.0;
 }
 
 double gw_chain_wall_force(const gw_chain *c, const double *y)
 {
+    if (c->general) {
+        if (c->i_sens >= 0)
+            return c->p.sensor.stiffness * y[c->i_sens] + c->p.sensor.damping * y[c->i_sens + 1];
+        return gw_chain_wall_contact_force(c, y);
+    }
     double x = y[0];
     if (!(x > 0))
         return 0.0;
@@ -472,6 +552,10 @@ double gw_chain_wall_force(const gw_chain *c, const double *y)
 
 void gw_chain_energy_of(const gw_chain *c, const double *y, gw_chain_energy *e)
 {
+    if (c->general) {
+        chain_general_energy(c, y, e);
+        return;
+    }
     const int n = c->n;
     double ke = 0, el = 0, pg = 0;
     for (int i = 0; i < n; i++) {

@@ -15,6 +15,7 @@
 #include <string.h>
 
 #include "chain_falcon.h" /* G_EARTH: falcon's --heights are drop heights in mm */
+#include "chain_wall.h"
 #include "gw_cli.h"
 #include "gw_chain_study.h"
 
@@ -72,7 +73,12 @@ static const struct {
     {"max-steps", offsetof(chain_cli, max_steps)}, {"t-max", offsetof(chain_cli, t_max)},
     {"dt-out", offsetof(chain_cli, dt_out)},       {"energy-tol", offsetof(chain_cli, energy_tol)}};
 #define NDEST (sizeof cli_dest / sizeof cli_dest[0])
-_Static_assert(NDEST + 2 == CHAIN_CLI_NOPTS, "chain_cli options: the table's rows plus --json and --out");
+/* The sheet as a material, the sensor as a body and guide friction: options of
+ * the command line only (not yet rows of the column's table), after the table's
+ * rows and --json, --out. */
+#define NEXTRA 8
+_Static_assert(NDEST + 2 + NEXTRA == CHAIN_CLI_NOPTS,
+               "chain_cli options: the table's rows, --json and --out, and the extra options");
 
 void chain_cli_options(chain_cli *c, gw_opt *o)
 {
@@ -97,6 +103,118 @@ void chain_cli_options(chain_cli *c, gw_opt *o)
     o[NDEST] = (gw_opt){.name = "json", .kind = GW_OPT_FLAG, .dest = &c->json, .help = "print results as one JSON object on stdout"};
     o[NDEST + 1] = (gw_opt){.name = "out", .kind = GW_OPT_STRING, .dest = &c->out, .metavar = "DIR",
                             .help = "write CSV (and HDF5) files into DIR"};
+    c->sheet_law = "fitted";
+    c->sheet_yield = c->sheet_loss = -1; /* the sheet's own constants */
+    gw_opt *x = o + NDEST + 2;
+    x[0] = (gw_opt){.name = "sheet-law", .kind = GW_OPT_STRING, .dest = &c->sheet_law, .metavar = "LAW",
+                    .help = "how --sheet becomes a wall: fitted (Hertz K_eff from the measured tau_max(N=1)), hertz, "
+                            "layer (bonded elastic layer) or material (layer with the sheet's loss; Thornton plastic "
+                            "for a sheet with a yield stress) [fitted]"};
+    x[1] = (gw_opt){.name = "sheet-yield", .kind = GW_OPT_DOUBLE, .dest = &c->sheet_yield, .metavar = "Y",
+                    .help = "yield stress of the sheet with --sheet-law material, Pa (0 = elastic) [the sheet's]",
+                    .lo = 0, .hi = 1e10};
+    x[2] = (gw_opt){.name = "sheet-loss", .kind = GW_OPT_DOUBLE, .dest = &c->sheet_loss, .metavar = "T",
+                    .help = "loss factor tan(delta) of the sheet with --sheet-law material (0 = elastic) [the sheet's]",
+                    .lo = 0, .hi = 2};
+    x[3] = (gw_opt){.name = "sensor-mass", .kind = GW_OPT_DOUBLE, .dest = &c->sensor_mass, .metavar = "M",
+                    .help = "the sensor as a body: mass under the wall contact, kg, in [1e-7, 1e3] [rigid sensor]",
+                    .lo = 1e-7, .hi = 1e3};
+    x[4] = (gw_opt){.name = "sensor-stiffness", .kind = GW_OPT_DOUBLE, .dest = &c->sensor_stiffness,
+                    .metavar = "K", .help = "stiffness of the sensor body, N/m, in [1e3, 1e14]", .lo = 1e3, .hi = 1e14};
+    x[5] = (gw_opt){.name = "sensor-damping", .kind = GW_OPT_DOUBLE, .dest = &c->sensor_damping, .metavar = "C",
+                    .help = "damping of the sensor body, N s/m, in [0, 1e9] [0]", .lo = 0, .hi = 1e9};
+    x[6] = (gw_opt){.name = "guide-friction", .kind = GW_OPT_DOUBLE, .dest = &c->guide_friction, .metavar = "F",
+                    .help = "Coulomb friction of each bead on its guide, N, in [0, 1] [0]", .lo = 0, .hi = 1};
+    x[7] = (gw_opt){.name = "guide-viscous", .kind = GW_OPT_DOUBLE, .dest = &c->guide_viscous, .metavar = "C",
+                    .help = "viscous friction of each bead on its guide, N s/m, in [0, 100] [0]", .lo = 0, .hi = 100};
+}
+
+int chain_cli_sheet(const chain_cli *c, const gw_sheet *s, gw_chain_params *p,
+                    gw_layer_law **layer, gw_err *err)
+{
+    const gw_material *bm = gw_material_find(c->material), *wm = gw_material_find(c->wall_material);
+    return gw_sheet_apply(s, c->law, c->law == GW_SHEET_MATERIAL ? c->sheet_yield : -1,
+                          c->law == GW_SHEET_MATERIAL ? c->sheet_loss : -1, bm, wm, p, layer, err);
+}
+
+static int cli_error(const char *cmd, int rc, gw_err *err);
+
+/* The extra options on the resolved column: --sheet-law and its overrides, the
+ * sensor body, guide friction; an option that would have no effect refused. */
+static int resolve_extra(chain_cli *c, const gw_opt *opts, const char *cmd, gw_err *err)
+{
+    int law = gw_sheet_law_find(c->sheet_law);
+    if (law < 0)
+        return gw_err_set(err, GW_EINVAL, "%s --sheet-law: unknown law '%s' (fitted, hertz, layer, material)",
+                          cmd, c->sheet_law);
+    c->law = (gw_sheet_law)law;
+    if (gw_cli_find(opts, "sheet-law")->seen && !c->sheet && !c->sheets_mode)
+        return gw_err_set(err, GW_EINVAL, "%s --sheet-law: has no effect without --sheet%s", cmd,
+                          strcmp(cmd, "softwall") == 0 ? " or --sheets" : "");
+    static const char *const mat_opts[] = {"sheet-yield", "sheet-loss"};
+    for (int i = 0; i < 2; i++) {
+        if (gw_cli_find(opts, mat_opts[i])->seen && c->law != GW_SHEET_MATERIAL)
+            return gw_err_set(err, GW_EINVAL, "%s --%s: has no effect without --sheet-law material", cmd,
+                              mat_opts[i]);
+        if (gw_cli_find(opts, mat_opts[i])->seen && c->sheets_mode)
+            return gw_err_set(err, GW_EINVAL, "%s --%s: overrides one sheet's constant; give it with --sheet, "
+                              "not --sheets", cmd, mat_opts[i]);
+    }
+    if (gw_cli_find(opts, "sheet-yield")->seen && c->sheet_yield > 0 && c->sheet_yield < 1e5)
+        return gw_err_set(err, GW_EINVAL, "%s --sheet-yield: %g Pa is below any solid's yield stress "
+                          "(0 = elastic, or >= 1e5 Pa)", cmd, c->sheet_yield);
+    int ms = gw_cli_find(opts, "sensor-mass")->seen;
+    if (!ms && gw_cli_find(opts, "sensor-stiffness")->seen)
+        return gw_err_set(err, GW_EINVAL, "%s --sensor-stiffness: has no effect without --sensor-mass", cmd);
+    if (!ms && gw_cli_find(opts, "sensor-damping")->seen)
+        return gw_err_set(err, GW_EINVAL, "%s --sensor-damping: has no effect without --sensor-mass", cmd);
+    if (ms && !gw_cli_find(opts, "sensor-stiffness")->seen)
+        return gw_err_set(err, GW_EINVAL, "%s --sensor-mass: a sensor body needs --sensor-stiffness", cmd);
+    gw_chain_params *p = &c->params;
+    int rc;
+    if (c->law != GW_SHEET_FITTED && (c->sheet || c->sheets_mode) && gw_cli_find(opts, "restitution")->seen) {
+        /* a material sheet: the beads' damping calibrated on the bare sensor */
+        const gw_material *bm = gw_material_find(c->material), *wm = gw_material_find(c->wall_material);
+        gw_chain_params q = *p;
+        q.kwall = gw_hertz_coefficient(p->radius, bm, INFINITY, wm);
+        q.gamma = q.alpha = 0;
+        if (gw_cli_find(opts, "restitution-v")->seen)
+            q.v_imp = c->restitution_v;
+        double cst = 0;
+        if ((rc = gw_chain_calibrate(&q, &c->run, c->restitution, &cst, err)) != GW_OK)
+            return cli_error(cmd, rc, err);
+        if (p->damping == GW_DAMP_HUNT_CROSSLEY)
+            p->alpha = c->alpha = cst;
+        else
+            p->gamma = c->gamma = cst;
+    }
+    if (c->sheet && c->law != GW_SHEET_FITTED) {
+        gw_layer_law_free(c->layer);
+        c->layer = NULL;
+        if (gw_cli_find(opts, "kwall")->seen)
+            return gw_err_set(err, GW_EINVAL, "%s --sheet: give either --sheet or --kwall", cmd);
+        if ((rc = chain_cli_sheet(c, gw_sheet_find(c->sheet), p, &c->layer, err)) != GW_OK) {
+            char tmp[sizeof err->msg];
+            snprintf(tmp, sizeof tmp, "%s", err->msg);
+            return gw_err_set(err, rc, "%s --sheet %s: %s", cmd, c->sheet, tmp);
+        }
+    }
+    if (p->wall.loss > 0) { /* a loss the Maxwell arms cannot give is refused here, by name */
+        chain_wall_law wl;
+        if (chain_wall_law_init(&wl, p, err) != GW_OK) {
+            char tmp[sizeof err->msg];
+            snprintf(tmp, sizeof tmp, "%s", err->msg);
+            return gw_err_set(err, GW_EINVAL, "%s --sheet-loss: %s", cmd, tmp);
+        }
+    }
+    if (ms) {
+        p->sensor.mass = c->sensor_mass;
+        p->sensor.stiffness = c->sensor_stiffness;
+        p->sensor.damping = c->sensor_damping;
+    }
+    p->guide.coulomb = c->guide_friction;
+    p->guide.viscous = c->guide_viscous;
+    return GW_OK;
 }
 
 /* "NAME: reason" from the library as "CMD --NAME: reason"; other messages as
@@ -174,6 +292,8 @@ int chain_cli_resolve(chain_cli *c, const gw_opt *opts, const char *cmd, gw_err 
     c->run = r.run;
     c->gamma = r.params.gamma; /* calibrated by --restitution */
     c->alpha = r.params.alpha;
+    if ((rc = resolve_extra(c, opts, cmd, err)) != GW_OK)
+        return rc;
     if (c->out) { /* before any work: a run that cannot write its results never starts */
         char name[96];
         snprintf(name, sizeof name, "%s --out", cmd);
@@ -192,6 +312,54 @@ cJSON *chain_cli_settings_json(const chain_cli *c)
     cJSON_AddStringToObject(m, "wall_material", c->wall_material);
     if (c->sheet)
         cJSON_AddStringToObject(m, "sheet", c->sheet);
+    if (c->sheet || c->sheets_mode) {
+        cJSON_AddStringToObject(m, "sheet_law", gw_sheet_law_name(c->law));
+        if (c->law == GW_SHEET_MATERIAL) {
+            cJSON_AddNumberToObject(m, "sheet_yield_override", c->sheet_yield >= 0 ? c->sheet_yield : NAN);
+            cJSON_AddNumberToObject(m, "sheet_loss_override", c->sheet_loss >= 0 ? c->sheet_loss : NAN);
+        }
+    }
+    if (p->wall.layer)
+        cJSON_AddNumberToObject(m, "wall_layer_thickness", gw_layer_law_thickness(p->wall.layer));
+    if (p->wall.yield_pressure > 0)
+        cJSON_AddNumberToObject(m, "wall_yield_pressure", p->wall.yield_pressure);
+    if (p->wall.loss > 0)
+        cJSON_AddNumberToObject(m, "wall_loss", p->wall.loss);
+    if (p->sensor.mass > 0) {
+        cJSON *sn = cJSON_AddObjectToObject(m, "sensor");
+        cJSON_AddNumberToObject(sn, "mass", p->sensor.mass);
+        cJSON_AddNumberToObject(sn, "stiffness", p->sensor.stiffness);
+        cJSON_AddNumberToObject(sn, "damping", p->sensor.damping);
+    }
+    if (p->guide.coulomb > 0 || p->guide.viscous > 0) {
+        cJSON *gd = cJSON_AddObjectToObject(m, "guide");
+        cJSON_AddNumberToObject(gd, "coulomb", p->guide.coulomb);
+        cJSON_AddNumberToObject(gd, "viscous", p->guide.viscous);
+    }
+    if (c->sheet || c->sheets_mode) {
+        cJSON_AddStringToObject(m, "sheet_law", gw_sheet_law_name(c->law));
+        if (c->law == GW_SHEET_MATERIAL) {
+            cJSON_AddNumberToObject(m, "sheet_yield_override", c->sheet_yield >= 0 ? c->sheet_yield : NAN);
+            cJSON_AddNumberToObject(m, "sheet_loss_override", c->sheet_loss >= 0 ? c->sheet_loss : NAN);
+        }
+    }
+    if (p->wall.layer)
+        cJSON_AddNumberToObject(m, "wall_layer_thickness", gw_layer_law_thickness(p->wall.layer));
+    if (p->wall.yield_pressure > 0)
+        cJSON_AddNumberToObject(m, "wall_yield_pressure", p->wall.yield_pressure);
+    if (p->wall.loss > 0)
+        cJSON_AddNumberToObject(m, "wall_loss", p->wall.loss);
+    if (p->sensor.mass > 0) {
+        cJSON *sn = cJSON_AddObjectToObject(m, "sensor");
+        cJSON_AddNumberToObject(sn, "mass", p->sensor.mass);
+        cJSON_AddNumberToObject(sn, "stiffness", p->sensor.stiffness);
+        cJSON_AddNumberToObject(sn, "damping", p->sensor.damping);
+    }
+    if (p->guide.coulomb > 0 || p->guide.viscous > 0) {
+        cJSON *gd = cJSON_AddObjectToObject(m, "guide");
+        cJSON_AddNumberToObject(gd, "coulomb", p->guide.coulomb);
+        cJSON_AddNumberToObject(gd, "viscous", p->guide.viscous);
+    }
     if (c->radii_v)
         cJSON_AddItemToObject(m, "radii", gw_json_doubles(c->radii_v, p->n));
     cJSON_AddNumberToObject(m, "radius", p->radius);
@@ -274,4 +442,6 @@ void chain_cli_free(chain_cli *c)
     free(c->masses_v);
     free(c->kc_v);
     c->radii_v = c->masses_v = c->kc_v = NULL;
+    gw_layer_law_free(c->layer);
+    c->layer = NULL;
 }

@@ -19,20 +19,35 @@ typedef struct chain_cli {
     const char *out;
     const char *material, *wall_material, *damping, *solver, *method, *sheet, *radii;
     double *radii_v, *masses_v, *kc_v; /* owned arrays for --radii */
+    /* the sheet as a material, the sensor as a body, guide friction */
+    const char *sheet_law;
+    double sheet_yield, sheet_loss;
+    double sensor_mass, sensor_stiffness, sensor_damping;
+    double guide_friction, guide_viscous;
+    int sheets_mode;     /* set by softwall --sheets before resolve: --sheet-law applies to every sheet */
+    gw_sheet_law law;    /* resolved --sheet-law */
+    gw_layer_law *layer; /* owned: the layer law of --sheet with a layer law */
     /* resolved */
     gw_chain_params params;
     gw_chain_run_opts run;
 } chain_cli;
 
 /* Number of options chain_cli_options writes. */
-#define CHAIN_CLI_NOPTS 26
+#define CHAIN_CLI_NOPTS 34
 
 /* Fill defaults and write the shared option table into opts[0..CHAIN_CLI_NOPTS). */
 void chain_cli_options(chain_cli *c, gw_opt *opts);
 
 /* Resolve materials, damping and solver into c->params / c->run (n and v_imp are
- * the caller's). GW_EINVAL with a message naming the option. */
+ * the caller's). GW_EINVAL with a message naming the option. The sheet options
+ * (--sheet-law, --sheet-yield, --sheet-loss) are checked here; with
+ * c->sheets_mode the caller applies the law to each sheet (chain_cli_sheet). */
 int chain_cli_resolve(chain_cli *c, const gw_opt *opts, const char *cmd, gw_err *err);
+
+/* Apply sheet s under the resolved --sheet-law (and its overrides) to p; the
+ * layer law, if any, goes to *layer (caller frees). */
+int chain_cli_sheet(const chain_cli *c, const gw_sheet *s, gw_chain_params *p,
+                    gw_layer_law **layer, gw_err *err);
 
 /* Free what chain_cli_resolve allocated (safe to call twice). */
 void chain_cli_free(chain_cli *c);

@@ -7,7 +7,9 @@
  * (N s/m^1.5 of bead contacts; the wall uses gamma K/k). e(c) falls
  * monotonically from 1 at c = 0; the root of e(c) - e_target is bracketed by
  * doubling from the small-damping estimate (Hunt-Crossley: e ~ 1 - alpha v)
- * and solved with GSL's Brent method to 1e-10 relative in e.
+ * and solved with GSL's Brent method to 1e-10 relative in e. The bead hits the
+ * Hertz wall kwall on a rigid sensor, without guide friction: a sheet law, sensor
+ * body or guide of the parameters is left out of the calibration.
  */
 #include <math.h>
 #include <string.h>
@@ -32,6 +34,10 @@ static double bead_restitution(double cst, void *ctx)
     p.n = 1;
     p.masses = NULL;
     p.kc = NULL;
+    /* the contact damping is calibrated on the Hertz wall kwall alone */
+    memset(&p.wall, 0, sizeof p.wall);
+    memset(&p.sensor, 0, sizeof p.sensor);
+    memset(&p.guide, 0, sizeof p.guide);
     if (p.damping == GW_DAMP_HUNT_CROSSLEY)
         p.alpha = cst;
     else

@@ -13,7 +13,10 @@
  * over N = 1..20 (F.4); tau_max comes from the soft-wall runs.
  * Sheet mode (--sheets): each sheet of the paper's Table 2 with its effective K
  * (gw_sheet_kwall, chain_material.c), then N_d of the model against the
- * measured N_d (h = 2.9 mm).
+ * measured N_d (h = 2.9 mm). With --sheet-law hertz|layer|material each sheet is
+ * instead a wall law from its material constants and thickness alone
+ * (chain_sheets.c); JSON "sheets" lists model against measured for every sheet
+ * (N_d, tau_max(N = 1), tau_max(N_d)) in either mode.
  * Units: SI (tables print us).
  */
 #include <math.h>
@@ -58,6 +61,7 @@ static int measure_tq(const chain_cli *c, double v, int jobs, double *t_q, gw_er
     gw_chain_params p = c->params;
     const gw_material *steel = gw_material_find("steel");
     p.kwall = gw_hertz_coefficient(p.radius, steel, INFINITY, steel);
+    memset(&p.wall, 0, sizeof p.wall); /* the bare sensor */
     gw_chain_result r[20];
     int rc = gw_chain_sweep_n(&p, &c->run, &v, 1, 1, 20, jobs, 0, r, err);
     double x[20], y[20];
@@ -72,12 +76,57 @@ static int measure_tq(const chain_cli *c, double v, int jobs, double *t_q, gw_er
     return rc;
 }
 
+/* One sheet, model against measured (times in s). */
+static cJSON *sheet_json(const gw_sheet *sh, const sw_result *sr, const gw_chain_result *r, int n_lo,
+                         int n_hi, double t_q, double kwall, const gw_layer_law *layer)
+{
+    cJSON *e = cJSON_CreateObject();
+    cJSON_AddStringToObject(e, "name", sh->name);
+    cJSON_AddStringToObject(e, "material", sh->material);
+    cJSON_AddNumberToObject(e, "thickness", sh->thickness > 0 ? sh->thickness : NAN);
+    cJSON_AddNumberToObject(e, "n_d_model", sr->n_d > 0 ? sr->n_d : NAN);
+    cJSON_AddNumberToObject(e, "n_d_measured", sh->n_d);
+    cJSON_AddNumberToObject(e, "n_d_measured_err", sh->n_d_err);
+    cJSON_AddNumberToObject(e, "n_d_predicted_f8", sr->n_d_pred > 0 ? sr->n_d_pred : NAN);
+    cJSON_AddNumberToObject(e, "tau_max_1_model", n_lo == 1 ? r[0].tau_max : NAN);
+    cJSON_AddNumberToObject(e, "tau_max_1_measured", sh->tau_max1_us * 1e-6);
+    cJSON_AddNumberToObject(e, "tau_max_nd_model", sr->n_d > 0 ? r[sr->n_d - n_lo].tau_max : NAN);
+    cJSON_AddNumberToObject(e, "tau_max_nd_measured", sh->tau_max_nd_us * 1e-6);
+    cJSON_AddNumberToObject(e, "tau_max_nd_measured_err", sh->tau_max_nd_err_us * 1e-6);
+    /* tolerance-free comparisons at the measured N_d: the model's tau_max there,
+     * and how close its F_max is to the plateau (the band the experiment's N_d
+     * corresponds to in the model) */
+    int nm = (int)sh->n_d, in = nm >= n_lo && nm <= n_hi;
+    cJSON_AddNumberToObject(e, "tau_max_at_measured_nd_model", in ? r[nm - n_lo].tau_max : NAN);
+    cJSON_AddNumberToObject(e, "f_max_at_measured_nd_over_plateau", in ? r[nm - n_lo].f_max / sr->plateau : NAN);
+    cJSON *bt = cJSON_AddArrayToObject(e, "n_d_model_by_tol");
+    static const double tols[] = {0.01, 0.02, 0.05, 0.1};
+    for (int i = 0; i < 4; i++) {
+        sw_result x = analyse(r, n_lo, n_hi, tols[i], t_q);
+        cJSON *b = cJSON_CreateObject();
+        cJSON_AddNumberToObject(b, "tol", tols[i]);
+        cJSON_AddNumberToObject(b, "n_d", x.n_d > 0 ? x.n_d : NAN);
+        cJSON_AddNumberToObject(b, "tau_max_nd", x.n_d > 0 ? r[x.n_d - n_lo].tau_max : NAN);
+        cJSON_AddItemToArray(bt, b);
+    }
+    cJSON_AddNumberToObject(e, "f_max_1_model", n_lo == 1 ? r[0].f_max : NAN);
+    cJSON_AddNumberToObject(e, "f_plateau_model", sr->plateau);
+    cJSON_AddNumberToObject(e, "eps_eff_1_model", n_lo == 1 ? r[0].eps_eff : NAN);
+    cJSON_AddNumberToObject(e, "kwall", kwall);
+    if (layer && n_lo == 1) /* contact radius over thickness at the single bead's peak force */
+        cJSON_AddNumberToObject(e, "a_over_h_1", gw_layer_law_contact_radius(layer, gw_layer_law_overlap(layer, r[0].f_max)) /
+                                                     gw_layer_law_thickness(layer));
+    return e;
+}
+
 static const char *sw_summary =
     "Columns on a soft wall: F_max(N) and tau_max(N) for a wall coefficient K, the\n"
     "saturation number N_d (F_max within --tol of its plateau from N_d on) against\n"
     "the prediction N_d = ceil(tau_max(N_d)/T_q) (F.8), K_c (F.22) and the rigid/soft\n"
     "verdict. --sheets fits K_eff for each sheet of the paper's Table 2 from its\n"
-    "measured tau_max(N=1) and compares the model's N_d with the measured one.";
+    "measured tau_max(N=1) and compares the model's N_d with the measured one;\n"
+    "--sheets --sheet-law material predicts every sheet from its material constants\n"
+    "and thickness (bonded layer, plastic or viscoelastic; docs/sheets.md).";
 
 int gw_cmd_softwall(int argc, char **argv)
 {
@@ -102,6 +151,7 @@ int gw_cmd_softwall(int argc, char **argv)
     if (c.radii)
         return chain_cli_fail("softwall --radii: per-bead radii need a fixed N (use granwave chain)");
     gw_err err = {{0}};
+    c.sheets_mode = use_sheets;
     /* every wall option is ignored with --sheets (each sheet has its fitted K_eff),
      * and the wall material is ignored when the wall is a stiffness */
     static const char *const wall_opts[] = {"kwall", "sheet", "wall-material"};
@@ -109,11 +159,11 @@ int gw_cmd_softwall(int argc, char **argv)
         if (gw_cli_find(opts, wall_opts[i])->seen && (use_sheets || i == 2)) {
             char msg[160];
             snprintf(msg, sizeof msg, "softwall --%s: has no effect %s", wall_opts[i],
-                     use_sheets ? "with --sheets (each sheet has its fitted K_eff)"
+                     use_sheets ? "with --sheets (each sheet of Table 2 is its own wall)"
                                 : "(the wall is --kwall, default 1e9 N/m^1.5, or --sheets)");
             return chain_cli_fail(msg);
         }
-    if (!gw_cli_find(opts, "kwall")->seen && !use_sheets)
+    if (!gw_cli_find(opts, "kwall")->seen && !use_sheets && !c.sheet) /* (--sheet: its own wall) */
         c.kwall = 1e9, ((gw_opt *)gw_cli_find(opts, "kwall"))->seen = 1;
     long a, b;
     if (gw_parse_int_range(nrange, "softwall --n", 1, 100000, &a, &b, &err) != GW_OK)
@@ -122,19 +172,22 @@ int gw_cmd_softwall(int argc, char **argv)
         return chain_cli_fail("softwall --n: need at least 3 column sizes");
     c.params.n = (int)a;
     c.params.v_imp = vimp;
-    if (chain_cli_resolve(&c, opts, "softwall", &err) != GW_OK || (c.out && gw_mkdir_p(c.out, &err) != GW_OK))
+    if (chain_cli_resolve(&c, opts, "softwall", &err) != GW_OK || (c.out && gw_mkdir_p(c.out, &err) != GW_OK)) {
+        chain_cli_free(&c);
         return chain_cli_fail(err.msg);
+    }
     const gw_chain_params *p = &c.params;
     double kc = gw_chain_kc(p->k), t_q = NAN, t0 = gw_clock_ms();
     int nw = use_sheets ? gw_sheet_count() : 1, per = (int)(b - a + 1);
     gw_chain_result *res = calloc((size_t)(nw * per), sizeof *res);
     double *kw = calloc((size_t)nw, sizeof *kw);
     sw_result *sr = calloc((size_t)nw, sizeof *sr);
-    int rc = res && kw && sr ? measure_tq(&c, vimp, (int)jobs, &t_q, &err) : GW_ENOMEM;
+    gw_layer_law **lay = calloc((size_t)nw, sizeof *lay);
+    int rc = res && kw && sr && lay ? measure_tq(&c, vimp, (int)jobs, &t_q, &err) : GW_ENOMEM;
     for (int w = 0; rc == GW_OK && w < nw; w++) {
         gw_chain_params q = *p;
-        if (use_sheets)
-            q.kwall = gw_sheet_kwall(gw_sheet_get(w), q.mass);
+        if (use_sheets && (rc = chain_cli_sheet(&c, gw_sheet_get(w), &q, &lay[w], &err)) != GW_OK)
+            break;
         kw[w] = q.kwall;
         if (!quiet)
             fprintf(stderr, "softwall: K = %.4g N/m^1.5%s%s (%d/%d)\n", q.kwall, use_sheets ? ", sheet " : "",
@@ -187,6 +240,14 @@ int gw_cmd_softwall(int argc, char **argv)
             cJSON_AddNumberToObject(e, "tau_max_at_n_d", sr[w].n_d > 0 ? res[w * per + sr[w].n_d - a].tau_max : NAN);
             cJSON_AddBoolToObject(e, "saturated", sr[w].n_d > 0);
         }
+        if (use_sheets || c.sheet) { /* --sheets, or one --sheet: model against measured */
+            cJSON_AddStringToObject(o, "sheet_law", gw_sheet_law_name(c.law));
+            cJSON *sl = cJSON_AddArrayToObject(o, "sheets");
+            for (int w = 0; w < nw; w++)
+                cJSON_AddItemToArray(sl, sheet_json(use_sheets ? gw_sheet_get(w) : gw_sheet_find(c.sheet), &sr[w],
+                                                    res + w * per, (int)a, (int)b, t_q, kw[w],
+                                                    use_sheets ? lay[w] : c.layer));
+        }
         cJSON_AddNumberToObject(o, "wall_time_s", wall_s);
         cJSON_AddItemToObject(o, "settings", chain_cli_settings_json(&c));
         char path[4096];
@@ -200,8 +261,9 @@ int gw_cmd_softwall(int argc, char **argv)
         } else if (code == 0) {
             printf("granwave %s softwall: v_imp %.4g m/s, K_c %.4g N/m^1.5, rigid-wall T_q %.3f us (%.1f s)\n",
                    gw_version(), vimp, kc, t_q * 1e6, wall_s);
-            printf("  %-14s %11s %6s %9s %8s %11s %14s\n", "wall", "K", "kind", "N_d", "F.8", "F_plateau",
-                   use_sheets ? "N_d measured" : "");
+            printf("  %-14s %11s %6s %9s %8s %11s %14s%s\n", "wall", "K", "kind", "N_d", "F.8", "F_plateau",
+                   use_sheets ? "N_d measured" : "",
+                   use_sheets ? "  tau_max(1) model/meas  tau_max(N_d) model/meas (us)" : "");
             for (int w = 0; w < nw; w++) {
                 char meas[32] = "";
                 if (use_sheets)
@@ -215,8 +277,15 @@ int gw_cmd_softwall(int argc, char **argv)
                     snprintf(np, sizeof np, "%d", sr[w].n_d_pred);
                 else
                     snprintf(np, sizeof np, "-");
-                printf("  %-14s %11.4g %6s %9s %8s %9.2f N %14s\n", use_sheets ? gw_sheet_get(w)->name : "--kwall",
-                       kw[w], kw[w] > kc ? "rigid" : "soft", nd, np, sr[w].plateau, meas);
+                char taus[96] = "";
+                if (use_sheets) {
+                    const gw_sheet *sh = gw_sheet_get(w);
+                    snprintf(taus, sizeof taus, "  %8.1f / %-8.1f     %8.1f / %.0f", res[w * per].tau_max * 1e6,
+                             sh->tau_max1_us, sr[w].n_d > 0 ? res[w * per + sr[w].n_d - a].tau_max * 1e6 : NAN,
+                             sh->tau_max_nd_us);
+                }
+                printf("  %-14s %11.4g %6s %9s %8s %9.2f N %14s%s\n", use_sheets ? gw_sheet_get(w)->name : c.sheet ? c.sheet : "--kwall",
+                       kw[w], kw[w] > kc ? "rigid" : "soft", nd, np, sr[w].plateau, meas, taus);
             }
         }
         free(nn);
@@ -228,5 +297,9 @@ int gw_cmd_softwall(int argc, char **argv)
     free(res);
     free(kw);
     free(sr);
+    for (int w = 0; lay && w < nw; w++)
+        gw_layer_law_free(lay[w]);
+    free(lay);
+    chain_cli_free(&c);
     return code;
 }

@@ -135,6 +135,7 @@ int gw_cmd_wavespeed(int argc, char **argv)
     if (chain_cli_resolve(&c, opts, "wavespeed", &err) != GW_OK ||
         (c.out && gw_mkdir_p(c.out, &err) != GW_OK)) {
         free(v);
+        chain_cli_free(&c);
         return chain_cli_fail(err.msg);
     }
     const gw_chain_params *p = &c.params;
@@ -147,6 +148,7 @@ int gw_cmd_wavespeed(int argc, char **argv)
         free(res);
         free(out);
         free(v);
+        chain_cli_free(&c);
         return chain_cli_fail("wavespeed: out of memory");
     }
     double t0 = gw_clock_ms();
@@ -280,5 +282,6 @@ int gw_cmd_wavespeed(int argc, char **argv)
     free(res);
     free(out);
     free(v);
+    chain_cli_free(&c);
     return code;
 }

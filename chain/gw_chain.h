@@ -50,12 +50,38 @@ double gw_chain_tq_theory(double m, double k, double v);
 double gw_chain_kc(double k);
 
 /* Sheets of the paper's Table 2 (soft walls; names: none, brass, tape, pvc,
- * pmma, cardboard2, beech, cardboard1, rubber). */
+ * pmma, cardboard2, beech, cardboard1, rubber), with the material constants of
+ * the sheet model (handbook values; sources in docs/sheets.md). */
 typedef struct gw_sheet {
     const char *name;
     double tau_max1_us;  /* measured tau_max(N = 1), us, at h = 2.9 mm */
     double n_d, n_d_err; /* measured saturation number */
+    /* fields below: the material model (chain_sheets.c); "none" has thickness 0 */
+    double thickness;    /* m (Table 2) */
+    double tau_max_nd_us, tau_max_nd_err_us; /* measured tau_max(N = N_d), us */
+    const char *material; /* what the constants describe */
+    double young;        /* storage modulus at kHz, Pa */
+    double poisson;      /* - */
+    double yield;        /* yield stress, Pa; > 0: elastic-plastic (Thornton) */
+    double loss;         /* loss factor tan(delta); > 0: viscoelastic */
 } gw_sheet;
+
+/* How a sheet becomes a wall law (chain_sheets.c). */
+typedef enum {
+    GW_SHEET_FITTED = 0,  /* Hertz K_eff fitted to the measured tau_max(N = 1) */
+    GW_SHEET_HERTZ = 1,   /* Hertz half-space of the sheet's material */
+    GW_SHEET_LAYER = 2,   /* elastic layer of the sheet's thickness bonded on the sensor */
+    GW_SHEET_MATERIAL = 3 /* LAYER with the sheet's loss (viscoelastic), or, for a sheet
+                             with a yield stress, Thornton elastic-plastic on HERTZ */
+} gw_sheet_law;
+
+/* Limit contact pressure of the Thornton law from a yield stress: p_y = 2.8 Y (the
+ * fully plastic mean pressure, Tabor's constraint factor; Johnson 1985, 6.2). */
+#define GW_SHEET_TABOR 2.8
+
+/* Law by name ("fitted", "hertz", "layer", "material"); -1 if unknown. */
+int gw_sheet_law_find(const char *name);
+const char *gw_sheet_law_name(gw_sheet_law law);
 
 int gw_sheet_count(void);
 const gw_sheet *gw_sheet_get(int i);
@@ -65,6 +91,58 @@ const gw_sheet *gw_sheet_find(const char *name);
  * tau_max(N = 1) at v_imp = sqrt(2 g 2.9 mm). */
 double gw_sheet_kwall(const gw_sheet *s, double m);
 
+/* ---- thin elastic layer on a rigid base (chain_layer.c) ----
+ * Sphere (radius R, material bead) pressed on a layer of thickness h, Young E,
+ * Poisson nu, bonded to a rigid base, frictionless on top: the axisymmetric
+ * contact solved as a Fredholm equation (Nystrom) for contact radii a from 1e-3 h
+ * to min(40 h, max(2 h, 2R)) and tabulated as F(d); Hertz for a << h, the
+ * Winkler foundation F = pi R M d^2/h, M = E(1-nu)/((1+nu)(1-2nu)), for a >> h. */
+typedef struct gw_layer_law gw_layer_law;
+
+/* Build the law (about 0.1-0.5 s). GW_EINVAL (radius in [1e-6, 1] m, h in
+ * [1e-7, 1] m, E in [1e3, 1e13] Pa, nu in [0, 0.5]), GW_ENOMEM, GW_ESOLVER.
+ * The law is read-only after creation and may be shared by threads. */
+int gw_layer_law_create(double radius, const gw_material *bead, double thickness, double young,
+                        double poisson, gw_layer_law **out, gw_err *err);
+void gw_layer_law_free(gw_layer_law *l);
+/* Force (N) at overlap d (m), 0 for d <= 0; *stiffness = dF/dd (may be NULL). */
+double gw_layer_law_force(const gw_layer_law *l, double d, double *stiffness);
+/* Stored energy int_0^d F (J). */
+double gw_layer_law_energy(const gw_layer_law *l, double d);
+/* Overlap (m) at which the force is f (N); 0 for f <= 0. */
+double gw_layer_law_overlap(const gw_layer_law *l, double f);
+/* Contact radius a (m) at overlap d. */
+double gw_layer_law_contact_radius(const gw_layer_law *l, double d);
+/* (4/3) E* sqrt(R): the Hertz coefficient of the same sphere on a half-space of
+ * the layer's material (the law's thick-layer limit), N/m^1.5. */
+double gw_layer_law_hertz_k(const gw_layer_law *l);
+double gw_layer_law_thickness(const gw_layer_law *l);
+/* One dimensionless solution: contact radius alpha = a/h in (0, 100], layer
+ * Poisson ratio, share lambda in [0, 1] of the layer in the contact compliance
+ * (1 for a rigid sphere): dhat = d R/h^2, fhat = F R/(E* h^3). */
+int gw_layer_solve_point(double alpha, double poisson, double lambda, double *dhat,
+                         double *fhat, gw_err *err);
+
+/* ---- elastic-perfectly plastic contact (Thornton 1997; chain_wall.c) ----
+ * Hertz F = (4/3) E* sqrt(R) d^(3/2) until the peak pressure reaches the limit
+ * p_y (d_y = R (pi p_y/(2E*))^2, F_y = (4/3) E* sqrt(R) d_y^(3/2)); beyond, the
+ * pressure is capped: F = F_y + pi p_y R (d - d_y) (so F <= pi p_y R d). Unloading
+ * from (d_m, F_m) is Hertzian with the radius R_p = (4 E* / (3 F_m)) ((2 F_m + F_y)/
+ * (2 pi p_y))^(3/2) from the residual overlap d_p = d_m - (3 F_m / (4 E* sqrt(R_p)))^(2/3). */
+typedef struct gw_thornton {
+    double estar, radius, p_y; /* Pa, m, Pa */
+    double d_y, f_y;           /* m, N */
+} gw_thornton;
+
+void gw_thornton_init(gw_thornton *t, double estar, double radius, double p_y);
+/* Force at overlap d after a largest overlap dmax (the force uses max(d, dmax)):
+ * *stiffness dF/dd, *residual d_p, *energy the elastic energy recovered on
+ * unloading from d (each may be NULL). */
+double gw_thornton_force(const gw_thornton *t, double d, double dmax, double *stiffness,
+                         double *residual, double *energy);
+/* Work of loading from 0 to dmax, J. */
+double gw_thornton_loading_work(const gw_thornton *t, double dmax);
+
 /* ---- model ---- */
 
 typedef enum {
@@ -72,6 +150,42 @@ typedef enum {
     GW_DAMP_KUWABARA_KONO = 1, /* F = k d^1.5 + gamma d^0.5 d' */
     GW_DAMP_HUNT_CROSSLEY = 2  /* F = k d^1.5 (1 + 1.5 alpha d') */
 } gw_chain_damping;
+
+/* Wall contact law beyond the Hertz spring (chain_wall.c). kwall stays the
+ * nominal Hertz coefficient: with a layer, that of a half-space of the sheet's
+ * material (it sets the time scales and the default step limits). Contact damping
+ * (kk, hc) acts on a Hertz wall as before, not on a layer, plastic or viscoelastic
+ * wall, which dissipate by their own law. */
+typedef struct gw_chain_wall {
+    const gw_layer_law *layer; /* non-NULL: elastic law F(d) of a bonded layer instead
+                                  of kwall d^(3/2) (caller-owned, outlives the chain) */
+    double yield_pressure;     /* > 0: Thornton elastic-plastic wall with the limit
+                                  pressure p_y (Pa) on the Hertz law, E* = 3 kwall/
+                                  (4 sqrt(radius)); not with a layer or loss */
+    double loss;               /* > 0: viscoelastic wall, loss factor tan(delta) at
+                                  the band centre (see tau_min) */
+    double tau_min, tau_max;   /* relaxation times of the Maxwell arms, s, one per
+                                  decade between them (0: 1e-5 and 1e-3) */
+} gw_chain_wall;
+
+/* The force sensor as a body: a mass on a spring (and dashpot) to the ground,
+ * under the wall contact; it reads the force through its spring and dashpot,
+ * k_s x_s + c_s v_s. Off when mass == 0. */
+typedef struct gw_chain_sensor {
+    double mass;      /* kg, > 0 to switch the sensor body on */
+    double stiffness; /* N/m, > 0 with a mass */
+    double damping;   /* N s/m, >= 0 */
+} gw_chain_sensor;
+
+/* Friction of every bead on its guide (the tube): a force against its velocity,
+ * coulomb tanh(v/v_reg) + viscous v. */
+typedef struct gw_chain_guide {
+    double coulomb; /* N per bead */
+    double viscous; /* N s/m per bead */
+    double v_reg;   /* regularisation speed of the Coulomb term, m/s (0: 1e-3 v_imp) */
+} gw_chain_guide;
+
+#define GW_WALL_MAX_ARMS 7
 
 typedef struct gw_chain_params {
     int n;                 /* number of beads, >= 1 */
@@ -87,6 +201,11 @@ typedef struct gw_chain_params {
     double gamma;          /* Kuwabara-Kono constant of bead-bead contacts,
                               N s/m^1.5; the wall uses gamma * kwall / k */
     double alpha;          /* Hunt-Crossley constant, s/m (all contacts) */
+    /* Fields below are off when zero (gw_chain_params_default): the wall is then
+     * the Hertz spring kwall on a rigid sensor and the beads move freely. */
+    gw_chain_wall wall;     /* contact law of the wall (a sheet) */
+    gw_chain_sensor sensor; /* the force sensor as a body */
+    gw_chain_guide guide;   /* friction of the beads on their guide */
 } gw_chain_params;
 
 /* Impact velocities every chain command accepts, m/s: (0, GW_CHAIN_VIMP_MAX]
@@ -101,6 +220,16 @@ gw_chain_params gw_chain_params_default(void);
 /* Check every field; GW_EINVAL with a message naming the field. */
 int gw_chain_params_validate(const gw_chain_params *p, gw_err *err);
 
+/* Set p->kwall and p->wall for sheet s under law, for the beads of p (radius,
+ * mass) of material bead; wall is the material of the bare sensor (sheet "none"
+ * and the Hertz time scale). yield and loss override the sheet's constants when
+ * >= 0 (0: none). A layer law is created into *layer (caller frees with
+ * gw_layer_law_free after the runs; NULL when none). GW_EINVAL, GW_ENOMEM,
+ * GW_ESOLVER with a message. */
+int gw_sheet_apply(const gw_sheet *s, gw_sheet_law law, double yield, double loss,
+                   const gw_material *bead, const gw_material *wall, gw_chain_params *p,
+                   gw_layer_law **layer, gw_err *err);
+
 typedef struct gw_chain gw_chain;
 
 /* Build the ODE system for p (validated; p's arrays are copied). */
@@ -111,7 +240,15 @@ void gw_chain_free(gw_chain *c);
  * banded (mu = 2, ml = 3): y[2i] = x_i, y[2i+1] = v_i (i = 0..n-1, bead 1 is
  * i = 0), then y[2n] = dissipated energy when damping is on.
  * Root functions: g[0] = x_0 (wall contact), g[1+i] = d_i (contact i,
- * i = 0..n-2), g[n] = v_0 (extrema of the wall force). */
+ * i = 0..n-2), g[n] = v_0 (extrema of the wall force).
+ * With the options of gw_chain_wall, gw_chain_sensor and gw_chain_guide (the
+ * "general" model), the state continues after the beads with, each only when
+ * present: the dissipated energy (damping, sensor dashpot or guide friction), the
+ * work done on a plastic or viscoelastic wall, the sensor x_s, v_s, the largest
+ * overlap of a plastic wall, one Maxwell-arm force per relaxation time of a
+ * viscoelastic wall. Then g[0] = gw_chain_wall_gap, g[n] = v_0 - v_s and, with a
+ * sensor body, g[n+1] = v_s. Extra states make the Jacobian dense (finite
+ * differences). */
 const gw_system *gw_chain_system(const gw_chain *c);
 const gw_chain_params *gw_chain_get_params(const gw_chain *c);
 double gw_chain_bead_mass(const gw_chain *c, int i);
@@ -122,10 +259,29 @@ typedef struct gw_chain_energy {
     double kinetic, elastic, gravity, dissipated, total; /* J */
 } gw_chain_energy;
 
-/* Energies of state y; gravity is the potential -sum m g x. */
+/* Energies of state y; gravity is the potential -sum m g x. With a plastic or
+ * viscoelastic wall the work done on the wall is integrated as a state; its part
+ * still stored in the wall is counted as elastic, the rest as dissipated (their
+ * sum, and so the total, is exact). The sensor's kinetic and spring energies are
+ * in kinetic and elastic. */
 void gw_chain_energy_of(const gw_chain *c, const double *y, gw_chain_energy *e);
-/* Force on the wall (N) in state y. */
+/* Force the sensor reads (N) in state y: the contact force on a rigid sensor,
+ * the force through the sensor's spring and dashpot when it is a body. */
 double gw_chain_wall_force(const gw_chain *c, const double *y);
+/* Force of the bead-wall contact (N). */
+double gw_chain_wall_contact_force(const gw_chain *c, const double *y);
+/* The wall contact's opening function (> 0 while closed): x_0 - x_s, less the
+ * residual dent of a plastic wall. y[0] for the default wall. */
+double gw_chain_wall_gap(const gw_chain *c, const double *y);
+/* Its rate v_0 - v_s (y[1] for the default wall). */
+double gw_chain_wall_gap_rate(const gw_chain *c, const double *y);
+/* Root index whose falling zero, with the wall contact closed, marks a maximum of
+ * the force the sensor reads (n, or n + 1 with a sensor body: g = v_s). */
+int gw_chain_force_max_root(const gw_chain *c);
+/* State index of the sensor's position (its velocity follows), -1 without. */
+long gw_chain_sensor_index(const gw_chain *c);
+/* Momentum of the beads and the sensor body, kg m/s (toward the wall > 0). */
+double gw_chain_momentum(const gw_chain *c, const double *y);
 
 /* ---- one collision ---- */
 

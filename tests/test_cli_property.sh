@@ -49,7 +49,7 @@ ZERO_OK=" *:poisson layer-make:damping layer-impact:ring-width *:gravity *:gamma
           layer-stats:delta-rm layer-impact:x layer-impact:alpha layer-make:height-rm dispersion:column-n
           dispersion:dt-out *:restitution-v "
 TINY_OK=" *:gravity *:gamma *:alpha *:energy-tol layer-impact:x layer-impact:alpha layer-impact:gap drop:gap drop:peak-threshold
-          layer-stats:delta-rm layer-make:height-rm "
+          layer-stats:delta-rm layer-make:height-rm *:guide-friction *:guide-viscous "
 HUGE_OK=" *:energy-tol *:skin layer-impact:dt-out " # a huge list skin or sampling step only costs or thins output
 # known failures owned by files this change may not edit (see the report)
 # (layer_model.c / layer_cli.c / layer_cmd.c: messages name the quantity, not the

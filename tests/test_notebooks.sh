@@ -7,6 +7,8 @@
 #     with a required file removed.
 #  2b. notebooks/plot_drop.py draws the committed drop runs (a copy of
 #     data/measured/drop) and exits 2 on a missing directory.
+#  2c. notebooks/plot_sheets.py draws the stored sheet and plateau data (exit 0, four PNGs)
+#     and exits 2 on a missing directory.
 #  3. Every notebooks/*.ipynb executes headless (nbconvert --execute, Agg backend) with
 #     GRANWAVE set to the binary under test; outputs go to a temp dir, never the repo.
 # Exits non-zero with a message on the first failure. Skips (exit 0) only when
@@ -77,6 +79,20 @@ rc=$?
 [ $rc -eq 2 ] && grep -q "no-drop-here" "$tmp/err.log" \
     || fail "plot_drop.py on a missing directory: exit $rc, $(head -1 "$tmp/err.log")"
 echo "PASS: plot_drop.py missing directory -> exit 2: $(head -1 "$tmp/err.log")"
+# 2c. plot_sheets.py on the stored sheet and plateau data (issue 19): exit 0 and four
+#     PNGs in a temp dir; exit 2 naming a missing directory
+"$PY" "$SRC/notebooks/plot_sheets.py" "$SRC/data/measured/sheets" "$tmp/sheets" >"$tmp/plot.log" 2>&1 \
+    || { cat "$tmp/plot.log"; fail "plot_sheets.py on data/measured/sheets"; }
+for f in sheets_nd_tau1_tol05 sheets_nd_tau1_tol10 plateau fmax_vs_n_material; do
+    p="$tmp/sheets/$f.png"
+    [ -s "$p" ] && [ "$(head -c 8 "$p" | od -An -tx1 | tr -d ' \n')" = "89504e470d0a1a0a" ] \
+        || fail "plot_sheets.py: $f.png missing or not a PNG"
+done
+echo "PASS: plot_sheets.py wrote its four figures"
+"$PY" "$SRC/notebooks/plot_sheets.py" "$tmp/does-not-exist" >/dev/null 2>"$tmp/err.log"
+rc=$?
+[ $rc -eq 2 ] && grep -q "does-not-exist" "$tmp/err.log" || fail "plot_sheets.py on a missing directory: exit $rc"
+echo "PASS: plot_sheets.py missing directory -> exit 2: $(head -1 "$tmp/err.log")"
 
 # 3. every notebook, headless
 shopt -s nullglob

@@ -1,0 +1,266 @@
+/*
+ * chain_general.c: the column model with the options beyond the papers' model
+ * (issue 19): a wall contact law (chain_wall.c), the force sensor as a body and
+ * friction of the beads on their guide.
+ *
+ *   wall overlap  D = x_0 - x_s,  force F(D, D', internal states)   (chain_wall.c)
+ *   beads         m_i x_i'' = F_i - F_(i-1) + m_i g - (f_c tanh(v_i/v_reg) + c_g v_i),
+ *                 F_(-1) = F (the wall), contact damping as chain_model.c
+ *   sensor body   M_s x_s'' = F - k_s x_s - c_s x_s';  it reads k_s x_s + c_s x_s'
+ *   ledger        dE_d/dt = c_s x_s'^2 + sum_i (f_c tanh(v_i/v_reg) + c_g v_i) v_i
+ *                 + contact damping;  dW/dt = F D' for a plastic or viscoelastic wall,
+ *                 whose recoverable part (Thornton's unloading energy; for the
+ *                 Maxwell arms, each arm's spring at the overlap carrying its force)
+ *                 is counted as elastic and the rest as dissipated
+ *   plastic wall  D_max follows D through a C^1 ramp (see dtrack in chain_model.h)
+ *   viscoelastic  dq_j/dt = f_U'(D) D' - q_j/tau_j
+ * State layout after the beads (each only when present): E_d, W, x_s, v_s, D_max,
+ * q_1..q_m. Roots: D (less a plastic dent), the contacts, D', v_s (sensor).
+ * Units: SI (m, s, kg, N, J).
+ */
+#include <math.h>
+#include <string.h>
+
+#include "chain_model.h"
+
+static double wall_overlap(const gw_chain *c, const double *y)
+{
+    return c->i_sens >= 0 ? y[0] - y[c->i_sens] : y[0];
+}
+
+static double wall_overlap_rate(const gw_chain *c, const double *y)
+{
+    return c->i_sens >= 0 ? y[1] - y[c->i_sens + 1] : y[1];
+}
+
+/* Contact force of the wall in the general model; *kd = dF/dD, *kv = dF/dD'
+ * (Jacobian), the dissipated power of contact damping added to *pd. */
+double chain_general_wall_force(const gw_chain *c, const double *y, double *kd, double *kv,
+                                 double *pd)
+{
+    const chain_wall_law *w = &c->wl;
+    double d = wall_overlap(c, y), dd = wall_overlap_rate(c, y), f = 0.0;
+    *kd = *kv = 0.0;
+    if (w->plastic)
+        return gw_thornton_force(&w->th, d, y[c->i_dmax], kd, NULL, NULL);
+    if (w->narms > 0) {
+        double k;
+        f = w->w_inf * chain_wall_elastic(w, d, &k);
+        for (int j = 0; j < w->narms; j++)
+            f += w->w[j] * y[c->i_q + j];
+        if (f > 0) {
+            *kd = w->w_inf * k;
+            return f;
+        }
+        return 0.0;
+    }
+    if (!(d > 0))
+        return 0.0;
+    if (w->layer || c->p.damping == GW_DAMP_NONE)
+        return chain_wall_elastic(w, d, kd);
+    double p0 = 0.0;
+    f = damped_force(c, c->kwall, c->gwall, d, dd, &p0);
+    *pd += p0;
+    return f;
+}
+
+double chain_guide_force(const gw_chain *c, double v, double *dfdv)
+{
+    const gw_chain_guide *g = &c->p.guide;
+    double th = g->coulomb > 0 ? tanh(v / c->vreg) : 0.0;
+    if (dfdv)
+        *dfdv = g->coulomb / c->vreg * (1.0 - th * th) + g->viscous;
+    return g->coulomb * th + g->viscous * v;
+}
+
+enum { PART_ALL = 0, PART_EX = 1, PART_IM = 2 };
+
+static void general_rhs(const gw_chain *c, const double *y, double *yd, int part)
+{
+    const int n = c->n;
+    for (long i = 0; i < c->sys.dim; i++)
+        yd[i] = 0.0;
+    if (part != PART_IM) {
+        for (int i = 0; i < n; i++) {
+            yd[2 * i] = y[2 * i + 1];
+            yd[2 * i + 1] = c->p.gravity;
+        }
+        if (c->i_sens >= 0)
+            yd[c->i_sens] = y[c->i_sens + 1];
+        if (part == PART_EX)
+            return;
+    }
+    double pd = 0.0, kd, kv;
+    double fw = chain_general_wall_force(c, y, &kd, &kv, &pd);
+    yd[1] -= fw * c->minv[0];
+    for (int i = 0; i < n - 1; i++) {
+        double d = y[2 * i + 2] - y[2 * i];
+        if (!(d > 0))
+            continue;
+        double f;
+        if (c->p.damping == GW_DAMP_NONE)
+            f = c->kc[i] * d * sqrt(d);
+        else
+            f = damped_force(c, c->kc[i], c->gam[i], d, y[2 * i + 3] - y[2 * i + 1], &pd);
+        yd[2 * i + 1] += f * c->minv[i];
+        yd[2 * i + 3] -= f * c->minv[i + 1];
+    }
+    if (c->p.guide.coulomb > 0 || c->p.guide.viscous > 0)
+        for (int i = 0; i < n; i++) {
+            double v = y[2 * i + 1], fr = chain_guide_force(c, v, NULL);
+            yd[2 * i + 1] -= fr * c->minv[i];
+            pd += fr * v;
+        }
+    double dd = wall_overlap_rate(c, y);
+    if (c->i_sens >= 0) {
+        const gw_chain_sensor *s = &c->p.sensor;
+        double xs = y[c->i_sens], vs = y[c->i_sens + 1];
+        yd[c->i_sens + 1] += (fw - s->stiffness * xs - s->damping * vs) / s->mass;
+        pd += s->damping * vs * vs;
+    }
+    if (c->i_work >= 0)
+        yd[c->i_work] = fw * dd;
+    if (c->i_dmax >= 0 && dd > 0) { /* loading: D_max follows D, switched on by a C^1 ramp */
+        double x = (wall_overlap(c, y) - y[c->i_dmax] + c->dtrack) / c->dtrack;
+        x = x < 0 ? 0.0 : x > 1 ? 1.0 : x;
+        yd[c->i_dmax] = dd * x * x * (3.0 - 2.0 * x);
+    }
+    if (c->wl.narms > 0) {
+        double k;
+        chain_wall_elastic(&c->wl, wall_overlap(c, y), &k);
+        for (int j = 0; j < c->wl.narms; j++)
+            yd[c->i_q + j] = k * dd - y[c->i_q + j] / c->wl.tau[j];
+    }
+    if (c->i_diss >= 0)
+        yd[c->i_diss] = pd;
+}
+
+int chain_general_rhs(double t, const double *y, double *yd, void *P)
+{
+    (void)t;
+    general_rhs(P, y, yd, PART_ALL);
+    return 0;
+}
+
+int chain_general_rhs_ex(double t, const double *y, double *yd, void *P)
+{
+    (void)t;
+    general_rhs(P, y, yd, PART_EX);
+    return 0;
+}
+
+int chain_general_rhs_im(double t, const double *y, double *yd, void *P)
+{
+    (void)t;
+    general_rhs(P, y, yd, PART_IM);
+    return 0;
+}
+
+int chain_general_roots(double t, const double *y, double *g, void *P)
+{
+    (void)t;
+    const gw_chain *c = P;
+    const int n = c->n;
+    g[0] = gw_chain_wall_gap(c, y);
+    for (int i = 0; i < n - 1; i++)
+        g[1 + i] = y[2 * i + 2] - y[2 * i];
+    g[n] = wall_overlap_rate(c, y);
+    if (c->i_sens >= 0)
+        g[n + 1] = y[c->i_sens + 1];
+    return 0;
+}
+
+double gw_chain_wall_contact_force(const gw_chain *c, const double *y)
+{
+    if (!c->general)
+        return gw_chain_wall_force(c, y);
+    double kd, kv, pd = 0.0;
+    return chain_general_wall_force(c, y, &kd, &kv, &pd);
+}
+
+double gw_chain_wall_gap(const gw_chain *c, const double *y)
+{
+    if (!c->general)
+        return y[0];
+    double d = wall_overlap(c, y);
+    if (c->wl.plastic) {
+        double dp;
+        gw_thornton_force(&c->wl.th, d, y[c->i_dmax], NULL, &dp, NULL);
+        return d - dp;
+    }
+    return d;
+}
+
+double gw_chain_wall_gap_rate(const gw_chain *c, const double *y)
+{
+    return c->general ? wall_overlap_rate(c, y) : y[1];
+}
+
+int gw_chain_force_max_root(const gw_chain *c)
+{
+    return c->n + (c->i_sens >= 0);
+}
+
+long gw_chain_sensor_index(const gw_chain *c)
+{
+    return c->i_sens;
+}
+
+double gw_chain_momentum(const gw_chain *c, const double *y)
+{
+    double p = 0.0;
+    for (int i = 0; i < c->n; i++)
+        p += c->m[i] * y[2 * i + 1];
+    if (c->i_sens >= 0)
+        p += c->p.sensor.mass * y[c->i_sens + 1];
+    return p;
+}
+
+/* Energy still stored in the wall (recoverable on unloading). */
+static double wall_stored_energy(const gw_chain *c, const double *y)
+{
+    const chain_wall_law *w = &c->wl;
+    double d = wall_overlap(c, y), u;
+    if (w->plastic) {
+        gw_thornton_force(&w->th, d, y[c->i_dmax], NULL, NULL, &u);
+        return u;
+    }
+    u = w->w_inf * chain_wall_elastic_energy(w, d);
+    for (int j = 0; j < w->narms; j++) /* each arm's spring at the overlap that carries its force */
+        u += w->w[j] * chain_wall_elastic_energy(w, chain_wall_elastic_overlap(w, fabs(y[c->i_q + j])));
+    return u;
+}
+
+void chain_general_energy(const gw_chain *c, const double *y, gw_chain_energy *e)
+{
+    const int n = c->n;
+    double ke = 0, el = 0, pg = 0, dis = c->i_diss >= 0 ? y[c->i_diss] : 0.0;
+    for (int i = 0; i < n; i++) {
+        double v = y[2 * i + 1];
+        ke += 0.5 * c->m[i] * v * v;
+        pg -= c->m[i] * c->p.gravity * y[2 * i];
+        if (i < n - 1) {
+            double d = y[2 * i + 2] - y[2 * i];
+            if (d > 0)
+                el += 0.4 * c->kc[i] * d * d * sqrt(d);
+        }
+    }
+    if (c->i_work >= 0) {
+        double u = wall_stored_energy(c, y);
+        el += u;
+        dis += y[c->i_work] - u;
+    } else {
+        el += chain_wall_elastic_energy(&c->wl, wall_overlap(c, y));
+    }
+    if (c->i_sens >= 0) {
+        double xs = y[c->i_sens], vs = y[c->i_sens + 1];
+        ke += 0.5 * c->p.sensor.mass * vs * vs;
+        el += 0.5 * c->p.sensor.stiffness * xs * xs;
+    }
+    e->kinetic = ke;
+    e->elastic = el;
+    e->gravity = pg;
+    e->dissipated = dis;
+    e->total = ke + el + pg + dis;
+}
+

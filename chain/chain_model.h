@@ -1,0 +1,55 @@
+/*
+ * chain_model.h (private to chain/): the column model's object, shared by the
+ * default model (chain_model.c) and the general model with wall laws, the sensor
+ * body and guide friction (chain_general.c). Equations in those files.
+ */
+#ifndef GW_CHAIN_MODEL_H
+#define GW_CHAIN_MODEL_H
+
+#include <math.h>
+
+#include "chain_wall.h"
+
+struct gw_chain {
+    gw_chain_params p;
+    int n;
+    double *m, *minv, *kc, *gam; /* masses [n], 1/m [n], k [n-1], gamma [n-1] */
+    double kwall, gwall;         /* wall coefficient and its KK constant */
+    double *scale;               /* [dim] */
+    gw_system sys;
+    int general;                 /* any wall law, sensor body or guide option */
+    chain_wall_law wl;
+    long i_diss, i_work, i_sens, i_dmax, i_q; /* state indices, -1 when absent */
+    double vreg;                 /* Coulomb regularisation speed, m/s */
+    double dtrack;               /* plastic wall: D_max follows D (dD_max/dt = D' s(x),
+                                    s = x^2 (3 - 2x), x = (D - D_max + dtrack)/dtrack
+                                    clipped to [0, 1]) so that the switch between
+                                    unloading and reloading is C^1, not a jump the
+                                    corrector chatters on; D_max lags D by < dtrack */
+};
+
+/* Contact force and dissipated power for overlap d > 0 and rate dd = d'. */
+static inline double damped_force(const gw_chain *c, double k, double gam, double d,
+                                  double dd, double *pdiss)
+{
+    double sd = sqrt(d), fel = k * d * sd, f;
+    if (c->p.damping == GW_DAMP_KUWABARA_KONO)
+        f = fel + gam * sd * dd;
+    else
+        f = fel * (1.0 + 1.5 * c->p.alpha * dd);
+    if (f < 0)
+        f = 0;
+    *pdiss += (fel - f) * (-dd);
+    return f;
+}
+
+/* General model (chain_general.c). */
+double chain_general_wall_force(const gw_chain *c, const double *y, double *kd, double *kv, double *pd);
+double chain_guide_force(const gw_chain *c, double v, double *dfdv);
+int chain_general_rhs(double t, const double *y, double *yd, void *P);
+int chain_general_rhs_ex(double t, const double *y, double *yd, void *P);
+int chain_general_rhs_im(double t, const double *y, double *yd, void *P);
+int chain_general_roots(double t, const double *y, double *g, void *P);
+void chain_general_energy(const gw_chain *c, const double *y, gw_chain_energy *e);
+
+#endif

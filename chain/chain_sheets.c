@@ -1,0 +1,63 @@
+/*
+ * chain_sheets.c: the paper's sheets (Table 2) as wall laws from their material
+ * constants and thickness (no fitting to the table):
+ *   hertz     K = (4/3) E* sqrt(R), 1/E* = (1-nu_b^2)/E_b + (1-nu^2)/E     (F.3)
+ *   layer     the bonded elastic layer of thickness h (chain_layer.c)
+ *   material  layer with the generalized-Maxwell loss tan(delta) (chain_wall.c),
+ *             or, for a sheet with a yield stress Y, Thornton elastic-plastic on
+ *             the Hertz law with p_y = 2.8 Y (GW_SHEET_TABOR)
+ *   fitted    the Hertz K_eff of gw_sheet_kwall (the measured tau_max(N = 1))
+ * The sheet "none" is the bare sensor: the Hertz wall of the sensor's material
+ * (fitted: its K_eff). Units: SI.
+ */
+#include <math.h>
+#include <string.h>
+
+#include "gw_chain.h"
+
+static const char *const law_names[] = {"fitted", "hertz", "layer", "material"};
+
+int gw_sheet_law_find(const char *name)
+{
+    for (int i = 0; name && i < 4; i++)
+        if (strcmp(name, law_names[i]) == 0)
+            return i;
+    return -1;
+}
+
+const char *gw_sheet_law_name(gw_sheet_law law)
+{
+    return (int)law >= 0 && (int)law < 4 ? law_names[law] : "?";
+}
+
+int gw_sheet_apply(const gw_sheet *s, gw_sheet_law law, double yield, double loss,
+                   const gw_material *bead, const gw_material *wall, gw_chain_params *p,
+                   gw_layer_law **layer, gw_err *err)
+{
+    *layer = NULL;
+    memset(&p->wall, 0, sizeof p->wall);
+    if (law == GW_SHEET_FITTED) {
+        p->kwall = gw_sheet_kwall(s, p->mass);
+        return GW_OK;
+    }
+    if (!(s->thickness > 0)) {
+        p->kwall = gw_hertz_coefficient(p->radius, bead, INFINITY, wall);
+        return GW_OK;
+    }
+    gw_material m = {s->material, s->young, s->poisson, NAN};
+    p->kwall = gw_hertz_coefficient(p->radius, bead, INFINITY, &m);
+    double y = yield >= 0 ? yield : s->yield, l = loss >= 0 ? loss : s->loss;
+    if (law == GW_SHEET_HERTZ)
+        return GW_OK;
+    if (law == GW_SHEET_MATERIAL && y > 0) {
+        p->wall.yield_pressure = GW_SHEET_TABOR * y;
+        return GW_OK;
+    }
+    int rc = gw_layer_law_create(p->radius, bead, s->thickness, s->young, s->poisson, layer, err);
+    if (rc != GW_OK)
+        return rc;
+    p->wall.layer = *layer;
+    if (law == GW_SHEET_MATERIAL && l > 0)
+        p->wall.loss = l;
+    return GW_OK;
+}

@@ -1,0 +1,34 @@
+/*
+ * chain_wall.h (private to chain/): the wall's contact law as the chain model
+ * evaluates it (chain_wall.c): Hertz or bonded layer elastic law, optionally
+ * elastic-plastic (Thornton) or viscoelastic (generalized Maxwell, Lee-Radok).
+ */
+#ifndef GW_CHAIN_WALL_H
+#define GW_CHAIN_WALL_H
+
+#include "gw_chain.h"
+
+typedef struct chain_wall_law {
+    double k;                  /* Hertz coefficient (elastic law without a layer) */
+    const gw_layer_law *layer; /* elastic law of a layer, or NULL */
+    double scale;              /* factor on the elastic law: E_U / E'(band centre) */
+    int plastic;
+    gw_thornton th;
+    int narms;                 /* viscoelastic Maxwell arms (0: elastic) */
+    double w_inf;              /* relaxed share E_inf / E_U */
+    double w[GW_WALL_MAX_ARMS], tau[GW_WALL_MAX_ARMS];
+} chain_wall_law;
+
+/* Set up from p (validated). GW_EINVAL when the loss cannot be reached by the
+ * arms (message names the wall's loss). */
+int chain_wall_law_init(chain_wall_law *w, const gw_chain_params *p, gw_err *err);
+/* Unrelaxed elastic force at overlap d > 0 and its derivative. */
+double chain_wall_elastic(const chain_wall_law *w, double d, double *kd);
+/* Stored energy of the unrelaxed elastic law at overlap d. */
+double chain_wall_elastic_energy(const chain_wall_law *w, double d);
+/* Overlap at which the unrelaxed elastic force is f. */
+double chain_wall_elastic_overlap(const chain_wall_law *w, double f);
+/* Number of Maxwell arms between tau_min and tau_max (one per decade). */
+int chain_wall_arms(const gw_chain_wall *wall, double *tau_min, double *tau_max);
+
+#endif

@@ -237,10 +237,6 @@ int gw_cmd_layer_make(int argc, char **argv)
         printf("  wall time %.0f ms, %ld steps, %ld list rebuilds; written to %s\n", r.wall_ms, r.steps,
                r.rebuilds, out);
     }
-    if (!r.converged) /* kept (the sample may still serve), but never silently */
-        fprintf(stderr, "granwave layer-make: warning: not settled at --t-max %g s (kinetic energy %.3g J "
-                "above the threshold); the sample in %s records 'converged 0'; raise --t-max%s\n",
-                mp.t_max, r.ke_final, out, mp.solver == gw_solver_verlet ? " or use --solver rk4" : "");
     gw_layer_sample_free(&s);
     cJSON_Delete(settings);
     return 0;

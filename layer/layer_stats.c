@@ -285,10 +285,10 @@ static void print_text(const layer_stats_run *R)
         for (int k = 0; k < R->gs.nkeys; k++)
             printf("%s=%s ", t->grid_name[R->gs.key[k]], t->grid_value[g->first * t->ngrid + R->gs.key[k]]);
         printf(": n %d, share %.3f (%s%s), e_n %.3f +- %.3f, e %.3f +- %.3f, alpha_r %.1f +- %.1f deg, "
-               "penetration %.3g R_m, points over %.3g R_m\n", g->n, g->share, g->bouncing ? "bounces" : "no bounce",
-               g->verdict_certain ? "" : "; undecided points could change it",
-               g->e_n.mean, g->e_n.std, g->e.mean, g->e.std, g->alpha_r.mean, g->alpha_r.std, g->penetration_rm.mean,
-               g->x_span_rm);
+               "e_n_first %.3f +- %.3f, penetration %.3g R_m, points over %.3g R_m\n", g->n, g->share,
+               g->bouncing ? "bounces" : "no bounce", g->verdict_certain ? "" : "; undecided points could change it",
+               g->e_n.mean, g->e_n.std, g->e.mean, g->e.std, g->alpha_r.mean, g->alpha_r.std, g->e_n_first.mean,
+               g->e_n_first.std, g->penetration_rm.mean, g->x_span_rm);
     }
     for (int k = 0; k < R->nbin; k++)
         printf("  binary: R_b/R_m %g, alpha %g: block loss %.3f +- %.3f (n %d); disc %.3f, sphere %.3f\n",
@@ -384,7 +384,8 @@ int gw_cmd_layer_stats(int argc, char **argv)
         cut += R.gs.g[i].n_bounced - R.gs.g[i].e.n;
     if (cut > 0) /* recorded as n_bounced - n_rebound in groups.csv and the JSON */
         fprintf(stderr, "granwave layer-stats: warning: %ld bouncing point(s) with e = nan (the run ended before "
-                        "T_f) are left out of the e_n, e, alpha_r statistics\n", cut);
+                        "T_f, or stopped at the verdict: until = verdict) are left out of the e_n, e, alpha_r "
+                        "statistics; e_n_first, e_first, alpha_r_first cover them\n", cut);
     int status = 0;
     if (out && layer_stats_write_files(&R, out, &err) != GW_OK) {
         fprintf(stderr, "granwave layer-stats --out: %s\n", err.msg);

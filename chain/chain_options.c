@@ -336,30 +336,6 @@ cJSON *chain_cli_settings_json(const chain_cli *c)
         cJSON_AddNumberToObject(gd, "coulomb", p->guide.coulomb);
         cJSON_AddNumberToObject(gd, "viscous", p->guide.viscous);
     }
-    if (c->sheet || c->sheets_mode) {
-        cJSON_AddStringToObject(m, "sheet_law", gw_sheet_law_name(c->law));
-        if (c->law == GW_SHEET_MATERIAL) {
-            cJSON_AddNumberToObject(m, "sheet_yield_override", c->sheet_yield >= 0 ? c->sheet_yield : NAN);
-            cJSON_AddNumberToObject(m, "sheet_loss_override", c->sheet_loss >= 0 ? c->sheet_loss : NAN);
-        }
-    }
-    if (p->wall.layer)
-        cJSON_AddNumberToObject(m, "wall_layer_thickness", gw_layer_law_thickness(p->wall.layer));
-    if (p->wall.yield_pressure > 0)
-        cJSON_AddNumberToObject(m, "wall_yield_pressure", p->wall.yield_pressure);
-    if (p->wall.loss > 0)
-        cJSON_AddNumberToObject(m, "wall_loss", p->wall.loss);
-    if (p->sensor.mass > 0) {
-        cJSON *sn = cJSON_AddObjectToObject(m, "sensor");
-        cJSON_AddNumberToObject(sn, "mass", p->sensor.mass);
-        cJSON_AddNumberToObject(sn, "stiffness", p->sensor.stiffness);
-        cJSON_AddNumberToObject(sn, "damping", p->sensor.damping);
-    }
-    if (p->guide.coulomb > 0 || p->guide.viscous > 0) {
-        cJSON *gd = cJSON_AddObjectToObject(m, "guide");
-        cJSON_AddNumberToObject(gd, "coulomb", p->guide.coulomb);
-        cJSON_AddNumberToObject(gd, "viscous", p->guide.viscous);
-    }
     if (c->radii_v)
         cJSON_AddItemToObject(m, "radii", gw_json_doubles(c->radii_v, p->n));
     cJSON_AddNumberToObject(m, "radius", p->radius);

@@ -239,9 +239,14 @@ static int verlet_step(gw_solver *s, double h)
         return rc;
     if (v->bn > 0) {
         const long m = v->bm;
-        for (long b = 0; b < i0; b += 2 * m)
-            for (long j = b + m; j < b + 2 * m; j++)
-                y[j] = pp[j] + hh * f[j];
+        if (m == 3) /* as in the first half kick */
+            for (long b = 0; b < i0; b += 6)
+                for (long j = 3; j < 6; j++)
+                    y[b + j] = pp[b + j] + hh * f[b + j];
+        else
+            for (long b = 0; b < i0; b += 2 * m)
+                for (long j = b + m; j < b + 2 * m; j++)
+                    y[j] = pp[j] + hh * f[j];
         for (long r = 0; r < v->nrun; r++)
             for (long i = v->run[2 * r]; i < v->run[2 * r + 1]; i++)
                 y[i] = pp[i] + hh * f[i];

@@ -108,7 +108,7 @@ static void drift_discs(gw_layer *L, double h, double *y)
     const double tp = L->tan_phi, alpha = L->p.damping, width = L->p.width;
     const double *ym = L->ymid;
     double *fe = y + 6L * nb, *book = L->dem_book, *rate = L->dem_rate, *fa = L->facc;
-    double *geo = L->geo, *un_last = L->un_last, pd = 0;
+    double *geo = L->geo, *un_last = L->un_last, pd = 0, ed_sum = 0, ek_sum = 0;
     layer_tscr *tscr = L->tscr;
     const int reg = L->reg_n > 0;
     memset(fa, 0, 3 * (size_t)nb * sizeof *fa);
@@ -117,26 +117,36 @@ static void drift_discs(gw_layer *L, double h, double *y)
         const layer_contact *c = &L->c[k];
         double nn[2];
         const double ue = disc_geometry(c, y, width, nn);
-        const int q0 = un_last[k] > 0 ? tscr[k].q : -1;
-        const double iks = un_last[k] > 0 ? tscr[k].ikt : 0; /* 1/K_s, 0 when open */
+        const int closed0 = un_last[k] > 0;
+        const int q0 = closed0 ? tscr[k].q : -1;
+        const double iks = closed0 ? tscr[k].ikt : 0; /* 1/K_s, 0 when open */
         const double su = ue > 0 ? sqrt(ue) : 0, ke = c->kts * su;
         const double fel = ue > 0 ? c->kn * ue * su : 0;
-        const double ike = ke > 0 ? 1 / ke : 0;
+        /* 1/K_e, and K_m with 1/K_m = (1/K_s + 1/K_e)/2 (or the closed end's
+         * alone): one division, p = K_e/K_s + 1, 1/K_e = p/(K_e p), K_m = 2 K_e^2/(K_e p) */
+        double ike = 0, ikm = iks, km = closed0 ? tscr[k].kt : 0;
+        if (ke > 0 && iks > 0) {
+            const double p = iks * ke + 1, inv = 1 / (ke * p);
+            ike = p * inv;
+            km = 2 * ke * ke * inv;
+            ikm = 0.5 * p * p * inv;
+        } else if (ke > 0) {
+            ike = ikm = 1 / ke;
+            km = ke;
+        }
         double *g = geo + 4 * k;
         g[0] = ue, g[1] = su, g[2] = nn[0], g[3] = nn[1];
         un_last[k] = fel > 0 ? ue : 0; /* as the rhs sets it */
         double f1 = 0;
         if (iks > 0 || ike > 0) { /* the tangential step (see the file's head) */
             const double vt = disc_vt(c, ym);
-            /* 1/K_m = (1/K_s + 1/K_e)/2, or the closed end's alone */
-            const double ikm = iks > 0 && ike > 0 ? 0.5 * (iks + ike) : iks > 0 ? iks : ike;
             const double cap = ue > 0 ? tp * c->kn * ue * su : 0;
-            const double f0 = fe[k], ftr = f0 + vt * h / ikm;
+            const double f0 = fe[k], ftr = f0 + vt * h * km;
             f1 = ftr > cap ? cap : ftr < -cap ? -cap : ftr;
             const double ed = ftr == f1 ? 0 : 0.5 * (f0 + f1) * (ftr - f1) * ikm;
             const double ek = iks > 0 && ike > 0 ? 0.25 * (f0 * f0 + f1 * f1) * (iks - ike) : 0;
-            book[0] += ed;
-            book[1] += ek;
+            ed_sum += ed;
+            ek_sum += ek;
             if (reg) {
                 int q = q0 >= 0 ? q0 : layer_contact_region(L, c, y);
                 book[2 + 2 * q] += ed;
@@ -176,6 +186,8 @@ static void drift_discs(gw_layer *L, double h, double *y)
             db[0] -= fx, db[1] -= fy, db[2] += ft * c->rb;
         }
     }
+    book[0] += ed_sum; /* (book is zero here: the drift's caller cleared it) */
+    book[1] += ek_sum;
     rate[0] = pd;
     L->geo_valid = 1;
 }

@@ -29,6 +29,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "layer_impl.h"
 #include "layer_outcome.h"
 
 gw_layer_impact_params gw_layer_impact_params_default(void)
@@ -169,14 +170,13 @@ static double record(gw_layer_impact_result *r, gw_layer *L, int block, double w
 {
     int k = r->ns++;
     r->t[k] = gw_layer_time(L);
-    gw_layer_ledgers(L, &r->ledger[k], r->regions);
+    double *kin = r->ring_kin + (size_t)k * r->nrings, *str = r->ring_strain + (size_t)k * r->nrings;
+    layer_ledgers_rings(L, &r->ledger[k], r->regions, r->impact_x, r->impact_y, w, r->nrings, kin, str,
+                        r->ring_coord + (size_t)k * r->nrings);
     double s[6];
     gw_layer_particle(L, block, s);
     r->block[4 * k] = s[0], r->block[4 * k + 1] = s[1];
     r->block[4 * k + 2] = s[3], r->block[4 * k + 3] = s[4];
-    double *kin = r->ring_kin + (size_t)k * r->nrings, *str = r->ring_strain + (size_t)k * r->nrings;
-    gw_layer_rings(L, r->impact_x, r->impact_y, w, r->nrings, kin, str,
-                   r->ring_coord + (size_t)k * r->nrings);
     for (int q = 0; strain0 && q < r->nrings; q++)
         str[q] -= strain0[q];
     for (int q = 0; q < r->nrings; q++)

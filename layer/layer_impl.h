@@ -75,7 +75,7 @@ struct gw_layer {
      * (reg_cx, reg_cy), then "outside", then "block"; ntail = 2 + 2 (reg_n + 2)
      * state components after the contacts (E_d, W_K, then E_d and W_K per
      * region), or 2 without regions. */
-    double reg_cx, reg_cy, reg_w;
+    double reg_cx, reg_cy, reg_w, reg_iw2; /* reg_iw2 = 1/reg_w^2 */
     int reg_n, ntail;
     double v_scale, u_scale, f_scale, e_scale;
     gw_layer_stats st;
@@ -92,6 +92,10 @@ struct gw_layer {
     void *watch_ctx;
     layer_probe probe[2];
     gw_layer_block_extremes ext;
+    /* The listed contacts that touch the block (indices into c), for the watch
+     * roots: made for list number wblk_gen (st.rebuilds) and body wblk_body. */
+    int *wblk, nwblk, wblk_body;
+    long wblk_gen;
     /* Explicit DEM mode (the verlet backend): no contact events; drift maps
      * positions to velocities; un_last[k] is contact k's overlap at the last rhs
      * evaluation (0 when open), which for verlet is the state at the step end:
@@ -118,6 +122,8 @@ struct gw_layer {
     double *snap_xy;    /* [2 n] disc centres */
     int *snap_breg;     /* [nb] region of each body by its centre (layer_body_region;
                            0 without regions) */
+    int *ring_np;       /* [ring_cap] scratch of gw_layer_rings */
+    size_t ring_cap;
 };
 
 /* Contact k of the snapshot (layer_snapshot). */
@@ -138,6 +144,36 @@ static inline int layer_body_region(const gw_layer *L, int i, const double *y)
     const double *s = y + 6 * i;
     double dx = s[0] - L->reg_cx, dy = s[1] - L->reg_cy, d = sqrt(dx * dx + dy * dy) / L->reg_w;
     return d < L->reg_n ? (int)d : L->reg_n;
+}
+
+/* Ring index of the offset (dx, dy) from the centre for rings of width w, or
+ * -1 beyond the last ring (the distance truncated, as (int)(hypot / w)). */
+static inline int layer_ring_of(double dx, double dy, double w, int nring)
+{
+    double d = sqrt(dx * dx + dy * dy) / w;
+    return d < nring ? (int)d : -1;
+}
+
+/* gw_layer_ledgers (e and regions, both given) and gw_layer_rings of the same
+ * state, in one pass when the rings are the regions' (same centre, width and
+ * count) in DEM mode with discs only, else by the two calls; the same numbers
+ * either way. Returns the region count written. */
+int layer_ledgers_rings(const gw_layer *L, gw_layer_energy *e, gw_layer_energy *regions, double cx, double cy,
+                        double w, int nring, double *kin, double *strain, double *coord);
+
+/* layer_body_region knowing the body's region q0 at a nearby earlier state:
+ * q0 when the centre is still in that ring (or still outside them), without
+ * the square root. */
+static inline int layer_body_region_near(const gw_layer *L, int i, const double *y, int q0)
+{
+    if (q0 >= 0 && q0 <= L->reg_n && i != L->block_body) { /* a ring, or outside them */
+        const double *s = y + 6 * i;
+        double dx = s[0] - L->reg_cx, dy = s[1] - L->reg_cy;
+        double d2 = (dx * dx + dy * dy) * L->reg_iw2;
+        if ((double)q0 * q0 <= d2 && (q0 == L->reg_n || d2 < (double)(q0 + 1) * (q0 + 1)))
+            return q0;
+    }
+    return layer_body_region(L, i, y);
 }
 
 /* Region of a contact from its contact point (px, py): as
@@ -161,7 +197,7 @@ static inline int layer_contact_region_near(const gw_layer *L, const layer_conta
 {
     if (q0 >= 0 && q0 < L->reg_n && c->qa != L->block_body && c->qb != L->block_body) {
         double dx = px - L->reg_cx, dy = py - L->reg_cy;
-        double d2 = (dx * dx + dy * dy) / (L->reg_w * L->reg_w);
+        double d2 = (dx * dx + dy * dy) * L->reg_iw2;
         if ((double)q0 * q0 <= d2 && d2 < (double)(q0 + 1) * (q0 + 1))
             return q0;
     }
@@ -241,6 +277,13 @@ int layer_clump_shape(double req, double aspect, double angle, double *ox, doubl
  * L->sys for the new dimension. */
 int layer_contacts_build(gw_layer *L, gw_err *err);
 
+/* Number of rebuild roots: one per particle, or in DEM mode one for all (the
+ * smallest margin: DEM mode does not locate it, and one sign to watch per step
+ * is cheaper than n). */
+static inline int layer_root_nrebuild(const gw_layer *L)
+{
+    return L->dem ? 1 : L->n;
+}
 /* Index of the first rebuild root and of the first stick/slip root (-1: none). */
 static inline int layer_root_rebuild(const gw_layer *L)
 {
@@ -248,13 +291,13 @@ static inline int layer_root_rebuild(const gw_layer *L)
 }
 static inline int layer_root_slip(const gw_layer *L)
 {
-    return L->p.no_events || !(L->tan_phi > 0) ? -1 : L->nc + L->n;
+    return L->p.no_events || !(L->tan_phi > 0) ? -1 : L->nc + layer_root_nrebuild(L);
 }
 /* Roots without the block watch, and the index of the first watch root (the
  * watch's two roots come last). */
 static inline int layer_root_count(const gw_layer *L)
 {
-    return L->p.no_events ? L->n : L->nc * (L->tan_phi > 0 ? 2 : 1) + L->n;
+    return L->p.no_events ? layer_root_nrebuild(L) : L->nc * (L->tan_phi > 0 ? 2 : 1) + layer_root_nrebuild(L);
 }
 
 /* Block watch (layer_watch.c): fill the two watch roots at g[layer_root_count]

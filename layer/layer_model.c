@@ -242,6 +242,8 @@ void gw_layer_free(gw_layer *L)
     free(L->snap);
     free(L->snap_xy);
     free(L->snap_breg);
+    free(L->wblk);
+    free(L->ring_np);
     free(L->c);
     free(L->roots);
     free(L->bid);
@@ -500,12 +502,27 @@ static int layer_roots(double t, const double *y, double *g, void *P)
     double un, nn[2], h = (L->dem ? 0.45 : 0.5) * L->p.skin;
     const int r0 = layer_root_rebuild(L), s0 = layer_root_slip(L);
     if (L->off) {
+        double gmin = 1.0;
         for (int i = 0; i < L->n; i++) {
             double p[2], arm[2];
             layer_disc_xy(L, y, i, p, arm);
             double dx = p[0] - L->x_list[2 * i], dy = p[1] - L->x_list[2 * i + 1];
-            g[r0 + i] = L->fixed[layer_body(L, i)] ? 1.0 : h * h - dx * dx - dy * dy;
+            double gi = L->fixed[layer_body(L, i)] ? 1.0 : h * h - dx * dx - dy * dy;
+            if (L->dem) /* one rebuild root (layer_root_nrebuild) */
+                gmin = gi < gmin ? gi : gmin;
+            else
+                g[r0 + i] = gi;
         }
+        if (L->dem)
+            g[r0] = gmin;
+    } else if (L->dem) { /* discs only, one rebuild root: the smallest margin */
+        double gmin = 1.0;
+        for (int i = 0; i < L->n; i++) {
+            double dx = y[6 * i] - L->x_list[2 * i], dy = y[6 * i + 1] - L->x_list[2 * i + 1];
+            double gi = L->fixed[i] ? 1.0 : h * h - dx * dx - dy * dy;
+            gmin = gi < gmin ? gi : gmin;
+        }
+        g[r0] = gmin;
     } else { /* discs only: particle i is body i */
         for (int i = 0; i < L->n; i++) {
             double dx = y[6 * i] - L->x_list[2 * i], dy = y[6 * i + 1] - L->x_list[2 * i + 1];
@@ -567,13 +584,6 @@ double gw_layer_energy_initial(const gw_layer *L)
     return L->e0;
 }
 
-/* Ring index of the offset (dx, dy) from the centre for rings of width w, or
- * -1 beyond the last ring (the distance truncated, as (int)(hypot / w)). */
-static int ring_of(double dx, double dy, double w, int nring)
-{
-    double d = sqrt(dx * dx + dy * dy) / w;
-    return d < nring ? (int)d : -1;
-}
 
 const double *layer_snapshot(const gw_layer *L)
 {
@@ -582,10 +592,15 @@ const double *layer_snapshot(const gw_layer *L)
     gw_layer *M = (gw_layer *)L; /* the cache only */
     const double *y = L->y, tp = L->tan_phi;
     double *xy = M->snap_xy, arm[2];
-    for (int i = 0; i < L->n; i++)
-        layer_disc_xy(L, y, i, xy + 2 * i, arm);
-    for (int i = 0; L->reg_n > 0 && i < L->nb; i++)
-        M->snap_breg[i] = layer_body_region(L, i, y);
+    if (L->off) {
+        for (int i = 0; i < L->n; i++)
+            layer_disc_xy(L, y, i, xy + 2 * i, arm);
+    } else {
+        for (int i = 0; i < L->n; i++)
+            xy[2 * i] = y[6 * i], xy[2 * i + 1] = y[6 * i + 1];
+    }
+    for (int i = 0; L->reg_n > 0 && i < L->nb; i++) /* the last snapshot's region as a hint */
+        M->snap_breg[i] = layer_body_region_near(L, i, y, M->snap_breg[i]);
     /* DEM mode, discs only: the last rhs evaluation's geometry is the state's
      * (the same arithmetic; layer_dem.c) */
     const double *geo = L->dem && !L->off && L->geo_pos ? L->geo : NULL;
@@ -629,11 +644,20 @@ void gw_layer_rings(const gw_layer *L, double cx, double cy, double w, int nring
                     double *kin, double *strain, double *coord)
 {
     const double *y = L->y, *snap = layer_snapshot(L), *xy = L->snap_xy;
-    int *np = calloc((size_t)nring + (size_t)L->n, sizeof *np), *rk = np ? np + nring : NULL;
+    gw_layer *M = (gw_layer *)L; /* scratch only */
+    const size_t need = (size_t)nring + (size_t)L->n;
+    if (M->ring_cap < need) {
+        int *b = realloc(M->ring_np, need * sizeof *b);
+        if (b)
+            M->ring_np = b, M->ring_cap = need;
+    }
+    int *np = M->ring_cap >= need ? M->ring_np : NULL, *rk = np ? np + nring : NULL;
+    for (int k = 0; np && k < nring; k++)
+        np[k] = 0;
     for (int k = 0; k < nring; k++)
         kin[k] = strain[k] = coord[k] = 0;
     /* ring of a point, or -1 outside the rings */
-#define RING(px, py) ring_of((px) - cx, (py) - cy, w, nring)
+#define RING(px, py) layer_ring_of((px) - cx, (py) - cy, w, nring)
     /* the rings of the regional ledgers (layer_regions.c): the snapshot has the
      * bodies' (the same arithmetic as ring_of) */
     const int regs = L->reg_n > 0 && cx == L->reg_cx && cy == L->reg_cy && w == L->reg_w &&
@@ -677,7 +701,6 @@ void gw_layer_rings(const gw_layer *L, double cx, double cy, double w, int nring
 #undef RING
     for (int k = 0; k < nring; k++)
         coord[k] = np && np[k] > 0 ? coord[k] / np[k] : NAN;
-    free(np);
 }
 
 int gw_layer_n(const gw_layer *L)

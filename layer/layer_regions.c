@@ -66,6 +66,7 @@ int gw_layer_set_regions(gw_layer *L, double cx, double cy, double w, int nring,
     for (int q = 2; q < ntail; q++)
         L->y[n6 + q] = 0;
     L->reg_cx = cx, L->reg_cy = cy, L->reg_w = w, L->reg_n = nring;
+    L->reg_iw2 = 1 / (w * w);
     L->stamp++;
     L->ntail = ntail;
     L->cap_y = n6 + ntail;
@@ -78,27 +79,28 @@ int gw_layer_region_count(const gw_layer *L)
     return L->reg_n > 0 ? L->reg_n + 2 : 0;
 }
 
-/* Add body b's kinetic and potential energy into e. */
-static void body_terms(const gw_layer *L, int i, gw_layer_energy *e)
+/* Add body i's kinetic energy ke and potential energy pe into e. */
+static inline void body_add(const gw_layer *L, int i, double ke, double pe, gw_layer_energy *e)
 {
-    const double *s = L->y + 6 * i;
-    double ke = 0.5 * L->m[i] * (s[3] * s[3] + s[4] * s[4]) + 0.5 * L->inertia[i] * s[5] * s[5];
     if (i == L->block_body)
         e->kinetic_block += ke;
     else
         e->kinetic_soil += ke;
     if (!L->fixed[i])
-        e->potential += L->m[i] * L->p.gravity * (s[1] - L->y_ref[i]);
+        e->potential += pe;
 }
 
 void layer_ledger_sum(const gw_layer *L, gw_layer_energy *global, gw_layer_energy *regions)
 {
     const double *snap = layer_snapshot(L);
     for (int i = 0; i < L->nb; i++) { /* bodies */
+        const double *s = L->y + 6 * i;
+        const double ke = 0.5 * L->m[i] * (s[3] * s[3] + s[4] * s[4]) + 0.5 * L->inertia[i] * s[5] * s[5];
+        const double pe = L->m[i] * L->p.gravity * (s[1] - L->y_ref[i]);
         if (global)
-            body_terms(L, i, global);
+            body_add(L, i, ke, pe, global);
         if (regions)
-            body_terms(L, i, regions + L->snap_breg[i]);
+            body_add(L, i, ke, pe, regions + L->snap_breg[i]);
     }
     /* DEM mode, discs only: the regions the step found at these positions */
     const int dem_q = L->dem && !L->off && L->geo_pos && L->tan_phi > 0;
@@ -139,6 +141,80 @@ int gw_layer_ledgers(const gw_layer *L, gw_layer_energy *e, gw_layer_energy *reg
         e->mindlin_excess = tail[1];
         ledger_total(e);
     }
+    for (int q = 0; q < nr; q++) {
+        regions[q].dissipated = tail[2 + 2 * q];
+        regions[q].mindlin_excess = tail[3 + 2 * q];
+        ledger_total(regions + q);
+    }
+    return nr;
+}
+
+int layer_ledgers_rings(const gw_layer *L, gw_layer_energy *e, gw_layer_energy *regions, double cx, double cy,
+                        double w, int nring, double *kin, double *strain, double *coord)
+{
+    const int regs = e && regions && L->reg_n > 0 && cx == L->reg_cx && cy == L->reg_cy && w == L->reg_w &&
+                     nring == L->reg_n;
+    const int dem_q = L->dem && !L->off && L->geo_pos && L->tan_phi > 0;
+    gw_layer *M = (gw_layer *)L; /* scratch only */
+    const size_t need = (size_t)nring + (size_t)L->n;
+    if (regs && dem_q && M->ring_cap < need) {
+        int *b = realloc(M->ring_np, need * sizeof *b);
+        if (b)
+            M->ring_np = b, M->ring_cap = need;
+    }
+    if (!regs || !dem_q || M->ring_cap < need) { /* the two passes */
+        int nr = gw_layer_ledgers(L, e, regions);
+        gw_layer_rings(L, cx, cy, w, nring, kin, strain, coord);
+        return nr;
+    }
+    /* one pass: gw_layer_ledgers's and gw_layer_rings's sums, in their order
+     * and with their arithmetic (the rings are the regions 0 .. nring - 1) */
+    const int nr = gw_layer_region_count(L);
+    memset(e, 0, sizeof *e);
+    memset(regions, 0, (size_t)nr * sizeof *regions);
+    const double *snap = layer_snapshot(L);
+    int *np = M->ring_np, *rk = np + nring;
+    for (int k = 0; k < nring; k++)
+        kin[k] = strain[k] = coord[k] = 0, np[k] = 0;
+    for (int i = 0; i < L->nb; i++) { /* bodies (discs: body i is disc i) */
+        const double *s = L->y + 6 * i;
+        const double ke = 0.5 * L->m[i] * (s[3] * s[3] + s[4] * s[4]) + 0.5 * L->inertia[i] * s[5] * s[5];
+        const double pe = L->m[i] * L->p.gravity * (s[1] - L->y_ref[i]);
+        const int q = L->snap_breg[i];
+        body_add(L, i, ke, pe, e);
+        body_add(L, i, ke, pe, regions + q);
+        if (i != L->block_body && q < nring)
+            kin[q] += ke;
+        rk[i] = i == L->block || q >= nring ? -1 : q;
+        if (rk[i] >= 0)
+            np[rk[i]]++;
+    }
+    for (int k = 0; k < L->nc; k++) {
+        const double *o = snap + LAYER_SNAP_W * k;
+        if (!(o[LAYER_SNAP_FN] > 0))
+            continue;
+        const double sn = 0.4 * o[LAYER_SNAP_FN] * o[LAYER_SNAP_UN];
+        const double st = o[LAYER_SNAP_FT] * o[LAYER_SNAP_FT] / (2 * o[LAYER_SNAP_KT]);
+        const int q = L->tscr[k].q;
+        e->strain_normal += sn, e->strain_tangent += st;
+        regions[q].strain_normal += sn, regions[q].strain_tangent += st;
+        /* the block's contacts by their point */
+        const int rq = q < nring ? q : q == nring ? -1
+                                                 : layer_ring_of(o[LAYER_SNAP_PX] - cx, o[LAYER_SNAP_PY] - cy, w, nring);
+        if (rq >= 0)
+            strain[rq] += sn + st;
+        const layer_contact *c = &L->c[k];
+        if (rk[c->a] >= 0)
+            coord[rk[c->a]] += 1;
+        if (c->b >= 0 && rk[c->b] >= 0)
+            coord[rk[c->b]] += 1;
+    }
+    for (int k = 0; k < nring; k++)
+        coord[k] = np[k] > 0 ? coord[k] / np[k] : NAN;
+    const double *tail = L->y + 6 * L->nb + L->nc;
+    e->dissipated = tail[0];
+    e->mindlin_excess = tail[1];
+    ledger_total(e);
     for (int q = 0; q < nr; q++) {
         regions[q].dissipated = tail[2 + 2 * q];
         regions[q].mindlin_excess = tail[3 + 2 * q];

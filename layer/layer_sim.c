@@ -160,7 +160,7 @@ int gw_layer_advance(gw_layer *L, double tout, gw_err *err)
             if (L->roots[k])
                 L->hook(L->hook_ctx, L->t, L->c[k].a, L->c[k].b, L->roots[k] > 0 ? 1 : -1);
         int rebuild = 0;
-        for (int i = 0; i < L->n; i++)
+        for (int i = 0; i < layer_root_nrebuild(L); i++)
             rebuild |= L->roots[r0 + i] != 0;
         project(L, L->p.no_events ? NULL : L->roots, s0 >= 0 ? L->roots + s0 : NULL);
         if (L->storm > LAYER_ZENO_COUNT && L->quiet_until == 0) {

@@ -22,6 +22,7 @@
  * Units: SI.
  */
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "layer_impl.h"
@@ -55,8 +56,20 @@ void layer_watch_roots(gw_layer *L, double t, const double *y, double *g)
     const int bb = L->block_body;
     const double *s = y + 6 * bb;
     double gc = -L->p.skin;
-    for (int k = 0; k < L->nc; k++) {
-        const layer_contact *c = &L->c[k];
+    if (L->wblk_gen != L->st.rebuilds || L->wblk_body != bb || !L->wblk) {
+        /* the block's contacts of this list (the roots run every step) */
+        int *w = realloc(L->wblk, ((size_t)L->nc + 1) * sizeof *w);
+        if (w) {
+            L->wblk = w, L->nwblk = 0;
+            for (int k = 0; k < L->nc; k++)
+                if (L->c[k].qa == bb || L->c[k].qb == bb)
+                    w[L->nwblk++] = k;
+            L->wblk_gen = L->st.rebuilds, L->wblk_body = bb;
+        }
+    }
+    const int all = !L->wblk || L->wblk_gen != L->st.rebuilds || L->wblk_body != bb;
+    for (int j = 0; j < (all ? L->nc : L->nwblk); j++) { /* (all: out of memory for the index) */
+        const layer_contact *c = &L->c[all ? j : L->wblk[j]];
         if (c->qa != bb && c->qb != bb)
             continue;
         double un, nn[2];

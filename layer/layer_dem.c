@@ -39,12 +39,12 @@
 
 #include "layer_impl.h"
 
-/* Tangential relative velocity of a disc-only contact with the normal of the
- * positions in y (the mid-step state: mid positions, half-step velocities),
- * also when the contact is open there. */
-static inline double disc_vt(const layer_contact *c, const double *y)
+/* Tangential relative velocity of a disc-only contact at the mid-step state,
+ * from ph (start positions x, half-step velocities v): the normal of the mid
+ * positions x + (h/2) v, also when the contact is open there. */
+static inline double disc_vt(const layer_contact *c, const double *ph, double hh)
 {
-    const double *sa = y + 6 * c->qa;
+    const double *sa = ph + 6 * c->qa;
     double rx = -sa[3], ry = -sa[4];
     switch (c->b) { /* v_t = -r_x n_y + r_y n_x - w_a R_a (- w_b R_b) */
     case LAYER_LEFT: /* n = (-1, 0) */
@@ -54,8 +54,9 @@ static inline double disc_vt(const layer_contact *c, const double *y)
     case LAYER_BOTTOM: /* n = (0, -1) */
         return rx - sa[5] * c->ra;
     default: {
-        const double *sb = y + 6 * c->qb;
-        double dx = sb[0] - sa[0], dy = sb[1] - sa[1], d = sqrt(dx * dx + dy * dy);
+        const double *sb = ph + 6 * c->qb;
+        double dx = (sb[0] + hh * sb[3]) - (sa[0] + hh * sa[3]);
+        double dy = (sb[1] + hh * sb[4]) - (sa[1] + hh * sa[4]), d = sqrt(dx * dx + dy * dy);
         rx += sb[3], ry += sb[4];
         double w = -sa[5] * c->ra - sb[5] * c->rb;
         return d > 0 ? (-rx * dy + ry * dx) / d + w : -rx + w; /* coincident: n = (0, 1) */
@@ -102,11 +103,11 @@ static inline double disc_geometry(const layer_contact *c, const double *y, doub
  * rhs would compute (Hertz, the damping at the predicted velocities, F_t as
  * the cap allows), summed per body into L->facc with the rhs's arithmetic, so
  * that layer_dem_rhs only assembles them (bit-identical to its own pass). */
-static void drift_discs(gw_layer *L, double h, double *y)
+static void drift_discs(gw_layer *L, double h, const double *ph, double *y)
 {
     const int nb = L->nb, nc = L->nc;
     const double tp = L->tan_phi, alpha = L->p.damping, width = L->p.width;
-    const double *ym = L->ymid;
+    const double hh = 0.5 * h;
     double *fe = y + 6L * nb, *book = L->dem_book, *rate = L->dem_rate, *fa = L->facc;
     double *geo = L->geo, *un_last = L->un_last, pd = 0, ed_sum = 0, ek_sum = 0;
     layer_tscr *tscr = L->tscr;
@@ -139,7 +140,7 @@ static void drift_discs(gw_layer *L, double h, double *y)
         un_last[k] = fel > 0 ? ue : 0; /* as the rhs sets it */
         double f1 = 0;
         if (iks > 0 || ike > 0) { /* the tangential step (see the file's head) */
-            const double vt = disc_vt(c, ym);
+            const double vt = disc_vt(c, ph, hh);
             const double cap = ue > 0 ? tp * c->kn * ue * su : 0;
             const double f0 = fe[k], ftr = f0 + vt * h * km;
             f1 = ftr > cap ? cap : ftr < -cap ? -cap : ftr;
@@ -202,15 +203,15 @@ int layer_dem_drift(double t, double h, const double *ph, double *y, void *P)
     memset(book, 0, (size_t)L->ntail * sizeof *book);
     if (!(tp > 0))
         return 0;
+    if (!L->off) { /* (the mid positions computed per contact, as below) */
+        drift_discs(L, h, ph, y);
+        return 0;
+    }
     for (int i = 0; i < nb; i++) { /* mid-step positions, half-step velocities */
         const double *s = ph + 6 * i;
         double *m = ym + 6 * i;
         m[3] = s[3], m[4] = s[4], m[5] = s[5];
         m[0] = s[0] + hh * s[3], m[1] = s[1] + hh * s[4], m[2] = s[2] + hh * s[5];
-    }
-    if (!L->off) {
-        drift_discs(L, h, y);
-        return 0;
     }
     double *fe = y + 6L * nb; /* F_t at the step's start, advanced in place */
     for (int k = 0; k < nc; k++) { /* clumps: the rhs (layer_model.c) does the forces */

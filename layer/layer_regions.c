@@ -172,15 +172,17 @@ int layer_ledgers_rings(const gw_layer *L, gw_layer_energy *e, gw_layer_energy *
     const int nr = gw_layer_region_count(L);
     memset(e, 0, sizeof *e);
     memset(regions, 0, (size_t)nr * sizeof *regions);
-    const double *snap = layer_snapshot(L);
+    /* the snapshot's numbers (layer_snapshot), from the step's geometry */
+    const double *y = L->y, *fts = y + 6 * L->nb, tp = L->tan_phi;
     int *np = M->ring_np, *rk = np + nring;
     for (int k = 0; k < nring; k++)
         kin[k] = strain[k] = coord[k] = 0, np[k] = 0;
     for (int i = 0; i < L->nb; i++) { /* bodies (discs: body i is disc i) */
-        const double *s = L->y + 6 * i;
+        const double *s = y + 6 * i;
         const double ke = 0.5 * L->m[i] * (s[3] * s[3] + s[4] * s[4]) + 0.5 * L->inertia[i] * s[5] * s[5];
         const double pe = L->m[i] * L->p.gravity * (s[1] - L->y_ref[i]);
-        const int q = L->snap_breg[i];
+        const int q = L->snap_stamp == L->stamp ? L->snap_breg[i]
+                                                : (M->snap_breg[i] = layer_body_region_near(L, i, y, L->snap_breg[i]));
         body_add(L, i, ke, pe, e);
         body_add(L, i, ke, pe, regions + q);
         if (i != L->block_body && q < nring)
@@ -190,20 +192,25 @@ int layer_ledgers_rings(const gw_layer *L, gw_layer_energy *e, gw_layer_energy *
             np[rk[i]]++;
     }
     for (int k = 0; k < L->nc; k++) {
-        const double *o = snap + LAYER_SNAP_W * k;
-        if (!(o[LAYER_SNAP_FN] > 0))
+        const layer_contact *c = &L->c[k];
+        const double *g = L->geo + 4 * k, un = g[0], su = g[1];
+        if (!(un > 0))
             continue;
-        const double sn = 0.4 * o[LAYER_SNAP_FN] * o[LAYER_SNAP_UN];
-        const double st = o[LAYER_SNAP_FT] * o[LAYER_SNAP_FT] / (2 * o[LAYER_SNAP_KT]);
+        const double fn = c->kn * un * su, cap = tp * fn, f = fts[k], kt = c->kts * su;
+        if (!(fn > 0))
+            continue;
+        const double ft = f > cap ? cap : f < -cap ? -cap : f;
+        const double sn = 0.4 * fn * un, st = ft * ft / (2 * kt);
         const int q = L->tscr[k].q;
         e->strain_normal += sn, e->strain_tangent += st;
         regions[q].strain_normal += sn, regions[q].strain_tangent += st;
-        /* the block's contacts by their point */
-        const int rq = q < nring ? q : q == nring ? -1
-                                                 : layer_ring_of(o[LAYER_SNAP_PX] - cx, o[LAYER_SNAP_PY] - cy, w, nring);
+        int rq = q < nring ? q : -1;
+        if (q > nring) { /* the block's contacts by their point */
+            const double arm = c->ra - 0.5 * un;
+            rq = layer_ring_of(y[6 * c->a] + arm * g[2] - cx, y[6 * c->a + 1] + arm * g[3] - cy, w, nring);
+        }
         if (rq >= 0)
             strain[rq] += sn + st;
-        const layer_contact *c = &L->c[k];
         if (rk[c->a] >= 0)
             coord[rk[c->a]] += 1;
         if (c->b >= 0 && rk[c->b] >= 0)

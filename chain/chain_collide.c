@@ -55,6 +55,7 @@ typedef struct run_state {
     double t_first_max, t_last_max;
     double t_prev, f_prev;   /* previous observation (wall force) */
     double *fc_prev;         /* [n] contact forces at the previous observation */
+    double t_max;            /* the run's time limit, s */
 } run_state;
 
 /* Elastic force of contact k (0 = wall, k = contact between beads k-1, k). */
@@ -237,6 +238,47 @@ static void finish_result(run_state *st, const double *y)
                                  : NAN;
 }
 
+/* The run's hooks (gw_solver_drive): at a root the contact flags and the
+ * observation; at an output time the flags brought in line with the geometry
+ * (reconcile) and the observation; after either the energy monitor and the end. */
+static int collide_root(void *ctx, double t, double *y, const int *roots, gw_err *err)
+{
+    (void)err;
+    run_state *st = ctx;
+    on_roots(st, t, y, roots);
+    return observe(st, t, y, 1) != 0 ? GW_DRIVE_STOP : GW_DRIVE_RESET;
+}
+
+static int collide_output(void *ctx, double t, double *y, gw_err *err)
+{
+    (void)err;
+    run_state *st = ctx;
+    int wall_closed = st->closed[0];
+    reconcile(st, t, y);
+    if (wall_closed && !st->closed[0])
+        on_wall_open(st, t, y);
+    return observe(st, t, y, 0) != 0 ? GW_DRIVE_STOP : GW_DRIVE_ON;
+}
+
+static int collide_after(void *ctx, double t, const double *y, gw_err *err)
+{
+    run_state *st = ctx;
+    gw_chain_result *r = st->r;
+    if (st->o->energy_tol > 0 && r->energy_error > st->o->energy_tol)
+        return gw_err_set(err, GW_EENERGY, "chain: relative energy error %.3g exceeds the limit %.3g at t = %.9g s",
+                          r->energy_error, st->o->energy_tol, t);
+    if (finished(st, y, st->dtol)) {
+        r->converged = 1;
+        return GW_DRIVE_STOP;
+    }
+    if (t >= st->t_max) {
+        if (!isfinite(r->tau_n))
+            return gw_err_set(err, GW_ELIMIT, "chain: bead 1 still on the wall at t_max = %.6g s", st->t_max);
+        return GW_DRIVE_STOP;
+    }
+    return GW_DRIVE_ON;
+}
+
 int gw_chain_collide(const gw_chain *c, const gw_chain_run_opts *o, gw_chain_result *r,
                      gw_err *err)
 {
@@ -299,56 +341,13 @@ int gw_chain_collide(const gw_chain *c, const gw_chain_run_opts *o, gw_chain_res
     r->e0 = e.total;
     if ((rc = gw_solver_create(type, sys, &sp, 0.0, y, &s, err)) != GW_OK)
         goto done;
-    double t = 0.0, tnext = dt_out;
+    double t = 0.0;
+    st.t_max = t_max;
     if (observe(&st, t, y, 0) != 0)
         goto stopped;
-    for (;;) {
-        if (tnext > t_max)
-            tnext = t_max;
-        rc = gw_solver_advance(s, tnext, &t, y, roots);
-        if (rc < 0) {
-            gw_err_set(err, rc, "%s", gw_solver_error(s));
-            break;
-        }
-        if (rc == GW_ROOT) {
-            on_roots(&st, t, y, roots);
-            if (observe(&st, t, y, 1) != 0)
-                goto stopped;
-            if ((rc = gw_solver_reset(s, t, y)) != GW_OK) {
-                gw_err_set(err, rc, "%s", gw_solver_error(s));
-                break;
-            }
-        } else {
-            /* tnext was reached: the backends may return within rounding of it (a
-             * target within 1e-13 of the solver's time is not integrated to), and a
-             * t stuck just below t_max never ended the loop */
-            t = tnext;
-            int wall_closed = st.closed[0];
-            reconcile(&st, t, y);
-            if (wall_closed && !st.closed[0])
-                on_wall_open(&st, t, y);
-            if (observe(&st, t, y, 0) != 0)
-                goto stopped;
-            tnext = t + dt_out;
-        }
-        rc = GW_OK;
-        if (o->energy_tol > 0 && r->energy_error > o->energy_tol) {
-            rc = gw_err_set(err, GW_EENERGY,
-                            "chain: relative energy error %.3g exceeds the limit %.3g at t = %.9g s",
-                            r->energy_error, o->energy_tol, t);
-            break;
-        }
-        if (finished(&st, y, st.dtol)) {
-            r->converged = 1;
-            break;
-        }
-        if (t >= t_max) {
-            if (!isfinite(r->tau_n))
-                rc = gw_err_set(err, GW_ELIMIT,
-                                "chain: bead 1 still on the wall at t_max = %.6g s", t_max);
-            break;
-        }
-    }
+    gw_drive drive = {.t_end = t_max, .dt_out = dt_out, .k_out = 1, .on_root = collide_root,
+                      .on_output = collide_output, .after = collide_after, .ctx = &st};
+    rc = gw_solver_drive(s, &drive, &t, y, roots, err);
 stopped:
     r->t_end = t;
     finish_result(&st, y);

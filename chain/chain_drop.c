@@ -367,55 +367,61 @@ static int first_collision(const gw_chain *c, const gw_chain_drop_params *p,
     return rc == GW_ELIMIT ? GW_OK : rc;
 }
 
+/* The run's hooks (gw_solver_drive). A sample callback's stop (> 0) ends the
+ * run without an error, its failure (< 0) is the run's. */
+static int drop_observed(drop_state *st, double t, const double *y, int is_event, gw_err *err)
+{
+    int sr = observe(st, t, y, is_event);
+    if (sr < 0)
+        return gw_err_set(err, sr, "drop: the sample callback failed at t = %.9g s", t);
+    return sr > 0 ? GW_DRIVE_STOP : GW_DRIVE_ON;
+}
+
+static int drop_failed(int rc, gw_err *err)
+{
+    return rc == GW_ENOMEM ? gw_err_set(err, rc, "drop: out of memory for the peaks") : rc;
+}
+
+static int drop_root(void *ctx, double t, double *y, const int *roots, gw_err *err)
+{
+    drop_state *st = ctx;
+    int rc = on_roots(st, t, y, roots);
+    if (rc != GW_OK)
+        return drop_failed(rc, err);
+    rc = drop_observed(st, t, y, 1, err);
+    return rc == GW_DRIVE_ON ? GW_DRIVE_RESET : rc;
+}
+
+static int drop_output(void *ctx, double t, double *y, gw_err *err)
+{
+    drop_state *st = ctx;
+    int rc = reconcile(st, t, y);
+    return rc != GW_OK ? drop_failed(rc, err) : drop_observed(st, t, y, 0, err);
+}
+
+static int drop_after(void *ctx, double t, const double *y, gw_err *err)
+{
+    (void)y;
+    const drop_state *st = ctx;
+    if (st->o->energy_tol > 0 && st->r->energy_error > st->o->energy_tol)
+        return gw_err_set(err, GW_EENERGY, "drop: relative energy error %.3g exceeds the limit %.3g at t = %.9g s",
+                          st->r->energy_error, st->o->energy_tol, t);
+    return GW_DRIVE_ON;
+}
+
 static int drop_loop(drop_state *st, gw_solver *s, double *y, int *roots, gw_err *err)
 {
     gw_chain_drop_result *r = st->r;
-    const double t_max = st->p->t_max;
-    double dt_out = st->o->dt_out > 0 ? st->o->dt_out : 1e-6;
     double t = 0.0;
-    long k_out = 1;
-    int rc = GW_OK, sr = 0;
-    if ((sr = observe(st, t, y, 0)) != 0)
-        return sr < 0 ? gw_err_set(err, sr, "drop: the sample callback failed at t = 0") : GW_OK;
-    while (t < t_max) {
-        double tnext = fmin((double)k_out * dt_out, t_max);
-        rc = gw_solver_advance(s, tnext, &t, y, roots);
-        if (rc < 0) {
-            gw_err_set(err, rc, "drop: %s", gw_solver_error(s));
-            break;
-        }
-        if (rc == GW_ROOT) {
-            if ((rc = on_roots(st, t, y, roots)) != GW_OK)
-                break;
-            if ((sr = observe(st, t, y, 1)) != 0)
-                break;
-            if ((rc = gw_solver_reset(s, t, y)) != GW_OK) {
-                gw_err_set(err, rc, "drop: %s", gw_solver_error(s));
-                break;
-            }
-        } else {
-            /* the backends may return within rounding of tnext (CVODE's
-             * interpolation, 1e-17 s here): tnext was reached, and t_max must be */
-            t = tnext;
-            if ((rc = reconcile(st, t, y)) != GW_OK)
-                break;
-            if ((sr = observe(st, t, y, 0)) != 0)
-                break;
-            k_out++;
-        }
+    int rc = drop_observed(st, t, y, 0, err);
+    if (rc == GW_DRIVE_ON) {
+        gw_drive drive = {.t_end = st->p->t_max, .dt_out = st->o->dt_out > 0 ? st->o->dt_out : 1e-6,
+                          .k_out = 1, .what = "drop", .on_root = drop_root, .on_output = drop_output,
+                          .after = drop_after, .ctx = st};
+        rc = gw_solver_drive(s, &drive, &t, y, roots, err);
+    } else if (rc == GW_DRIVE_STOP) {
         rc = GW_OK;
-        if (st->o->energy_tol > 0 && r->energy_error > st->o->energy_tol) {
-            rc = gw_err_set(err, GW_EENERGY,
-                            "drop: relative energy error %.3g exceeds the limit %.3g at t = %.9g s",
-                            r->energy_error, st->o->energy_tol, t);
-            break;
-        }
     }
-    if (sr != 0) /* the sample callback stopped the run (< 0: it failed) */
-        rc = sr < 0 ? gw_err_set(err, sr, "drop: the sample callback failed at t = %.9g s", t)
-                    : GW_OK;
-    else if (rc == GW_ENOMEM)
-        gw_err_set(err, rc, "drop: out of memory for the peaks");
     r->t_end = t;
     if (st->in_episode) { /* still on the sensor: the episode counts as it stands */
         int rc2 = episode_end(st, t, y, 0);

@@ -134,6 +134,52 @@ int gw_solver_reset(gw_solver *s, double t, const double *y)
     return s->type->reset(s, t, y);
 }
 
+static int drive_failed(gw_solver *s, const gw_drive *d, int rc, gw_err *err)
+{
+    return d->what ? gw_err_set(err, rc, "%s: %s", d->what, gw_solver_error(s))
+                   : gw_err_set(err, rc, "%s", gw_solver_error(s));
+}
+
+int gw_solver_drive(gw_solver *s, gw_drive *d, double *t, double *y, int *roots, gw_err *err)
+{
+    if (d->k_out < 1)
+        d->k_out = 1;
+    while (*t < d->t_end) {
+        /* output times as multiples of dt_out (no sum of steps drifting) */
+        double tnext = d->dt_out > 0 ? fmin((double)d->k_out * d->dt_out, d->t_end) : d->t_end;
+        int rc = gw_solver_advance(s, tnext, t, y, roots);
+        if (rc < 0)
+            return drive_failed(s, d, rc, err);
+        int act;
+        if (rc == GW_ROOT) {
+            act = d->on_root ? d->on_root(d->ctx, *t, y, roots, err) : GW_DRIVE_RESET;
+        } else {
+            /* tnext was reached: the backends may return within rounding of it
+             * (a target within 1e-13 of the solver's time is not integrated to) */
+            *t = tnext;
+            d->k_out++;
+            act = d->on_output ? d->on_output(d->ctx, *t, y, err) : GW_DRIVE_ON;
+        }
+        if (act == GW_DRIVE_RESET) {
+            if ((rc = gw_solver_reset(s, *t, y)) != GW_OK)
+                return drive_failed(s, d, rc, err);
+            act = GW_DRIVE_ON;
+        }
+        if (act < 0)
+            return act;
+        if (act == GW_DRIVE_STOP)
+            return GW_OK;
+        if (act == GW_DRIVE_YIELD)
+            return GW_ROOT;
+        act = d->after ? d->after(d->ctx, *t, y, err) : GW_DRIVE_ON;
+        if (act < 0)
+            return act;
+        if (act == GW_DRIVE_STOP)
+            return GW_OK;
+    }
+    return GW_OK;
+}
+
 void gw_solver_get_stats(const gw_solver *s, gw_solver_stats *st)
 {
     memset(st, 0, sizeof *st);

@@ -151,6 +151,36 @@ int gw_solver_advance(gw_solver *s, double tout, double *t, double *y,
 /* Restart the integration at (t, y), discarding the step history. */
 int gw_solver_reset(gw_solver *s, double t, const double *y);
 
+/* ------------------------------------------------------------------ driver --
+ * The loop every model runs around gw_solver_advance: integrate to output
+ * times, stop at roots and let the model act there, restart, and end when the
+ * model says so or at t_end. A hook returns
+ *   GW_DRIVE_ON     go on, the solver as it is (y unchanged),
+ *   GW_DRIVE_RESET  restart the solver from (t, y) (y may have been changed, or
+ *                   the right-hand side changes there), then go on,
+ *   GW_DRIVE_STOP   end the run: gw_solver_drive returns GW_OK,
+ *   GW_DRIVE_YIELD  hand back: gw_solver_drive returns GW_ROOT without
+ *                   restarting (the caller may rebuild the system),
+ * or a negative gw status with err set, which gw_solver_drive returns. */
+enum { GW_DRIVE_ON = 0, GW_DRIVE_STOP = 1, GW_DRIVE_YIELD = 2, GW_DRIVE_RESET = 3 };
+
+typedef struct gw_drive {
+    double t_end;     /* the run ends here at the latest */
+    double dt_out;    /* output times k dt_out, k = k_out, k_out + 1, ...; 0: t_end only */
+    long k_out;       /* in/out: index of the next output time (>= 1) */
+    const char *what; /* prefix of the solver's messages ("drop"); NULL: none */
+    int (*on_root)(void *ctx, double t, double *y, const int *roots, gw_err *err);
+    int (*on_output)(void *ctx, double t, double *y, gw_err *err); /* t exactly the output time */
+    int (*after)(void *ctx, double t, const double *y, gw_err *err); /* after every root or output */
+    void *ctx;        /* the hooks' (any may be NULL) */
+} gw_drive;
+
+/* Run s from (*t, y) as d says; *t and y follow the run. Returns GW_OK (t_end
+ * reached or a hook stopped), GW_ROOT (a hook yielded; roots holds the roots),
+ * the solver's failure (GW_ESOLVER, GW_ELIMIT: "what: backend message", which
+ * names the time) or a hook's negative status. roots: sys.nroots entries. */
+int gw_solver_drive(gw_solver *s, gw_drive *d, double *t, double *y, int *roots, gw_err *err);
+
 void gw_solver_get_stats(const gw_solver *s, gw_solver_stats *st);
 /* Last error message ("" if none). Owned by the solver. */
 const char *gw_solver_error(const gw_solver *s);

@@ -121,12 +121,58 @@ int gw_layer_start(gw_layer *L, const gw_solver_type *type, const gw_solver_para
     return make_solver(L, err);
 }
 
+/* The run's hooks (gw_solver_drive). At the target time: the exact mode's
+ * projection of open contacts' tangential forces (a restart if it changed
+ * any). At roots: the block watch, then the contact events (projection of
+ * closing and slipping contacts, a restart), or a hand-back for a list rebuild
+ * or a Zeno guard, which recreate the solver. */
+static int layer_on_output(void *ctx, double t, double *y, gw_err *err)
+{
+    (void)y, (void)err;
+    gw_layer *L = ctx;
+    L->stamp++;
+    L->t = t;
+    return !L->dem && project(L, NULL, NULL) > 0 ? GW_DRIVE_RESET : GW_DRIVE_ON;
+}
+
+static int layer_on_root(void *ctx, double t, double *y, const int *roots, gw_err *err)
+{
+    (void)y, (void)err;
+    gw_layer *L = ctx;
+    L->stamp++;
+    L->t = t;
+    if (!layer_watch_dispatch(L))
+        return GW_DRIVE_ON; /* only the block watch's roots: nothing to project or restart */
+    L->st.events++;
+    L->storm = L->t - L->t_event < LAYER_ZENO_DT ? L->storm + 1 : 0;
+    L->t_event = L->t;
+    const int r0 = layer_root_rebuild(L), s0 = layer_root_slip(L);
+    for (int k = 0; L->hook && !L->p.no_events && k < L->nc; k++)
+        if (roots[k])
+            L->hook(L->hook_ctx, L->t, L->c[k].a, L->c[k].b, roots[k] > 0 ? 1 : -1);
+    int rebuild = 0;
+    for (int i = 0; i < layer_root_nrebuild(L); i++)
+        rebuild |= roots[r0 + i] != 0;
+    project(L, L->p.no_events ? NULL : roots, s0 >= 0 ? roots + s0 : NULL);
+    if (L->storm > LAYER_ZENO_COUNT && L->quiet_until == 0) {
+        /* Zeno guard: the root finder keeps stopping at the same instant (a
+         * contact grazing u_n = 0 with CVODE's zero-at-restart rule). Step
+         * over LAYER_ZENO_QUIET s with only the rebuild roots, then resume. */
+        L->no_events_user = L->p.no_events;
+        L->p.no_events = 1;
+        L->quiet_until = L->t + LAYER_ZENO_QUIET;
+        L->st.zeno_guards++;
+        L->storm = 0;
+        return GW_DRIVE_YIELD;
+    }
+    return rebuild ? GW_DRIVE_YIELD : GW_DRIVE_RESET;
+}
+
 int gw_layer_advance(gw_layer *L, double tout, gw_err *err)
 {
     if (!L->solver)
         return gw_err_set(err, GW_EINVAL, "layer: gw_layer_start was not called");
     while (L->t < tout) {
-        double t = L->t;
         if (L->quiet_until > 0 && L->t >= L->quiet_until) { /* end of a Zeno guard */
             L->quiet_until = 0;
             L->p.no_events = L->no_events_user;
@@ -135,52 +181,18 @@ int gw_layer_advance(gw_layer *L, double tout, gw_err *err)
             if (rc != GW_OK)
                 return rc;
         }
-        double target = L->quiet_until > 0 && L->quiet_until < tout ? L->quiet_until : tout;
-        int rc = gw_solver_advance(L->solver, target, &t, L->y, L->roots);
-        L->stamp++;
-        if (rc != GW_OK && rc != GW_ROOT) {
+        double t = L->t, target = L->quiet_until > 0 && L->quiet_until < tout ? L->quiet_until : tout;
+        gw_drive drive = {.t_end = target, .on_root = layer_on_root, .on_output = layer_on_output, .ctx = L};
+        int rc = gw_solver_drive(L->solver, &drive, &t, L->y, L->roots, err);
+        if (rc < 0) {
+            L->stamp++;
             L->t = t;
             return gw_err_set(err, rc, "layer: %s solver failed at t = %.9g s (%d particles, %d "
                               "listed contacts): %s", gw_solver_type_name(L->type), t, L->n, L->nc,
                               gw_solver_error(L->solver));
         }
-        L->t = t;
-        if (rc == GW_OK) {
-            if (!L->dem && project(L, NULL, NULL) > 0 && gw_solver_reset(L->solver, L->t, L->y) != GW_OK)
-                return gw_err_set(err, GW_ESOLVER, "layer: %s", gw_solver_error(L->solver));
-            continue;
-        }
-        if (!layer_watch_dispatch(L))
-            continue; /* only the block watch's roots: nothing to project or restart */
-        L->st.events++;
-        L->storm = L->t - L->t_event < LAYER_ZENO_DT ? L->storm + 1 : 0;
-        L->t_event = L->t;
-        const int r0 = layer_root_rebuild(L), s0 = layer_root_slip(L);
-        for (int k = 0; L->hook && !L->p.no_events && k < L->nc; k++)
-            if (L->roots[k])
-                L->hook(L->hook_ctx, L->t, L->c[k].a, L->c[k].b, L->roots[k] > 0 ? 1 : -1);
-        int rebuild = 0;
-        for (int i = 0; i < layer_root_nrebuild(L); i++)
-            rebuild |= L->roots[r0 + i] != 0;
-        project(L, L->p.no_events ? NULL : L->roots, s0 >= 0 ? L->roots + s0 : NULL);
-        if (L->storm > LAYER_ZENO_COUNT && L->quiet_until == 0) {
-            /* Zeno guard: the root finder keeps stopping at the same instant (a
-             * contact grazing u_n = 0 with CVODE's zero-at-restart rule). Step
-             * over LAYER_ZENO_QUIET s with only the rebuild roots, then resume. */
-            L->no_events_user = L->p.no_events;
-            L->p.no_events = 1;
-            L->quiet_until = L->t + LAYER_ZENO_QUIET;
-            L->st.zeno_guards++;
-            L->storm = 0;
-            if ((rc = layer_contacts_build(L, err)) != GW_OK || (rc = make_solver(L, err)) != GW_OK)
-                return rc;
-        } else if (rebuild) {
-            if ((rc = layer_contacts_build(L, err)) != GW_OK ||
-                (rc = make_solver(L, err)) != GW_OK)
-                return rc;
-        } else if (gw_solver_reset(L->solver, L->t, L->y) != GW_OK) {
-            return gw_err_set(err, GW_ESOLVER, "layer: %s", gw_solver_error(L->solver));
-        }
+        if (rc == GW_ROOT && ((rc = layer_contacts_build(L, err)) != GW_OK || (rc = make_solver(L, err)) != GW_OK))
+            return rc; /* a list rebuild or a Zeno guard: a new solver */
     }
     return GW_OK;
 }

@@ -20,8 +20,8 @@ typedef struct chain_cli {
     const char *material, *wall_material, *damping, *solver, *method, *sheet, *radii;
     double *radii_v, *masses_v, *kc_v; /* owned arrays for --radii */
     /* the sheet as a material, the sensor as a body, guide friction */
-    const char *sheet_law;
-    double sheet_yield, sheet_loss;
+    const char *sheet_law;            /* raw --sheet-law (NULL: not given) */
+    double sheet_yield, sheet_loss;   /* -1 after resolve when not given */
     double sensor_mass, sensor_stiffness, sensor_damping;
     double guide_friction, guide_viscous;
     int sheets_mode;     /* set by softwall --sheets before resolve: --sheet-law applies to every sheet */

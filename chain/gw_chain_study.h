@@ -49,6 +49,16 @@ typedef struct gw_chain_setup {
     double t_max;         /* s [0: 20 (n T_q + tau_1)] */
     double dt_out;        /* sampling interval, s [0: tau_1/200] */
     double energy_tol;    /* stop when the energy error exceeds it [0: off] */
+    int sheet_law;        /* fitted, hertz, layer, material (choice) [-1: fitted] */
+    double sheet_yield;   /* Pa, with sheet-law material [NaN: the sheet's] */
+    double sheet_loss;    /* tan(delta), with sheet-law material [NaN: the sheet's] */
+    double sensor_mass;   /* the sensor as a body, kg [NaN: rigid sensor] */
+    double sensor_stiffness; /* N/m, needed with sensor_mass [NaN] */
+    double sensor_damping;   /* N s/m [NaN: 0] */
+    double guide_friction;   /* Coulomb friction per bead, N [0] */
+    double guide_viscous;    /* viscous friction per bead, N s/m [0] */
+    int sheets;           /* not a table row: set by the softwall study when the
+                             sheet law applies to every sheet of Table 2 [0] */
     int trace;            /* library only: keep the wall force and bead series [0] */
 } gw_chain_setup;
 
@@ -62,9 +72,13 @@ void gw_chain_setup_clear(gw_chain_setup *s);
 
 /* A setup turned into the model and its run options. */
 typedef struct gw_chain_resolved {
-    gw_chain_params params; /* params.masses/kc point into the arrays below */
+    gw_chain_params params; /* params.masses/kc point into the arrays below,
+                               params.wall.layer to layer */
     gw_chain_run_opts run;
     double *masses, *kc;    /* owned (per-bead radii) */
+    gw_layer_law *layer;    /* owned: the bonded layer of a sheet under law layer
+                               or material */
+    gw_sheet_law law;       /* the sheet law resolved (fitted when not given) */
 } gw_chain_resolved;
 
 /* Materials, sheet and radii to masses and coefficients, damping (calibrated

@@ -261,4 +261,50 @@ int gw_chain_softwall_run(const gw_chain_softwall_setup *s, gw_progress_fn progr
                           gw_chain_softwall_outcome *out, gw_err *err);
 void gw_chain_softwall_outcome_free(gw_chain_softwall_outcome *out);
 
+/* Small-amplitude dispersion of a precompressed chain (physics.md 1.6,
+ * chain_dispersion.c): ridge omega(q) against 2 sqrt(kappa/m) |sin(qa/2)|,
+ * kappa = (3/2) k^(2/3) f0^(1/3); or, with column_n > 0, the wall-force spectrum
+ * of one column collision against 1/P (chain_spectrum.c). Steel beads, R = 4 mm.
+ * rad/s, Hz, m, N. */
+typedef struct gw_chain_dispersion_setup {
+    long n;               /* beads [1024] */
+    double f0;            /* precompression, N [10] */
+    int ends;             /* periodic, fixed (choice) [periodic] */
+    long t_samples;       /* even [2048] */
+    double dt_out;        /* sampling interval, s [0: pi / (1.25 omega_c)] */
+    long steps_per_sample;/* RK4 steps per sample [16] */
+    double amp;           /* rms overlap perturbation / d0 [1e-3] */
+    long seed;            /* [1] */
+    double min_bins;      /* [8] */
+    int solver;           /* rk4, cvode, arkode (choice) [-1: rk4; column: cvode] */
+    int method;           /* default, adams, bdf, erk, dirk (choice) [-1: default] */
+    double rtol, atol;    /* [NaN: 1e-10; column: 1e-12] */
+    int fftw_measure;     /* [0: FFTW_ESTIMATE] */
+    long column_n;        /* > 0: the wall-force spectrum of this column instead [0] */
+    double vimp;          /* impact velocity of that column, m/s [0.3] */
+} gw_chain_dispersion_setup;
+
+typedef struct gw_chain_dispersion_outcome {
+    int column;               /* 0: dispersion (r), 1: column wall spectrum (sp) */
+    gw_chain_disp_result r;   /* dispersion: qa, omega_ridge, omega_theory, power, ... */
+    double c0_rel_err;        /* |c0_measured / c0_theory - 1| */
+    double mass, k, kwall, radius; /* the beads (kwall: column mode), kg, N/m^1.5, m */
+    double wall_time_ms;
+    /* column mode */
+    gw_chain_spectrum sp;     /* freq [Hz], power, f_peak, df, f_min, samples */
+    double v_imp, tau_n, period, dt_out, rtol, atol; /* m/s, s, s, s */
+    int column_n, n_maxima;
+} gw_chain_dispersion_outcome;
+
+const gw_param *gw_chain_dispersion_setup_params(void);
+int gw_chain_dispersion_setup_init(gw_chain_dispersion_setup *s);
+void gw_chain_dispersion_setup_clear(gw_chain_dispersion_setup *s);
+const gw_param *gw_chain_dispersion_outcome_fields(void);
+/* The solver of s: type and settings (GW_EINVAL "solver: ..", "method: .."). */
+int gw_chain_dispersion_solver(const gw_chain_dispersion_setup *s, const gw_solver_type **type,
+                               gw_solver_params *sp, gw_err *err);
+/* No progress (one integration); GW_EUNSUPPORTED for bdf/dirk on periodic ends. */
+int gw_chain_dispersion_run(const gw_chain_dispersion_setup *s, gw_chain_dispersion_outcome *out, gw_err *err);
+void gw_chain_dispersion_outcome_free(gw_chain_dispersion_outcome *out);
+
 #endif

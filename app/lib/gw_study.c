@@ -45,6 +45,16 @@ static int sw_run(const void *s, void *out, gw_progress_fn progress, void *pctx,
 }
 static void sw_free(void *out) { gw_chain_softwall_outcome_free(out); }
 
+static int disp_init(void *s) { return gw_chain_dispersion_setup_init(s); }
+static void disp_clear(void *s) { gw_chain_dispersion_setup_clear(s); }
+static int disp_run(const void *s, void *out, gw_progress_fn progress, void *pctx, gw_err *err)
+{
+    (void)progress;
+    (void)pctx;
+    return gw_chain_dispersion_run(s, out, err);
+}
+static void disp_free(void *out) { gw_chain_dispersion_outcome_free(out); }
+
 #if GW_HAVE_LAYER
 static int impact_init(void *s) { return gw_layer_impact_setup_init(s); }
 static void impact_clear(void *s) { gw_layer_impact_setup_clear(s); }
@@ -80,6 +90,9 @@ static const gw_study studies[] = {
     {"softwall", "columns on a soft wall: N_d against F.8, the sheets of Table 2 (Falcon et al. 1998)",
      gw_chain_softwall_setup_params, sizeof(gw_chain_softwall_setup), sw_init, sw_clear,
      gw_chain_softwall_outcome_fields, sizeof(gw_chain_softwall_outcome), sw_run, sw_free},
+    {"dispersion", "small-amplitude dispersion of a precompressed Hertz chain (physics.md 1.6)",
+     gw_chain_dispersion_setup_params, sizeof(gw_chain_dispersion_setup), disp_init, disp_clear,
+     gw_chain_dispersion_outcome_fields, sizeof(gw_chain_dispersion_outcome), disp_run, disp_free},
 #if GW_HAVE_LAYER
     {"layer-impact", "one block impact on a 2D granular layer (Bourrier et al. 2008)",
      gw_layer_impact_setup_params, sizeof(gw_layer_impact_setup), impact_init, impact_clear,

@@ -32,7 +32,7 @@ from ._core import (GranwaveError, GranwaveIOError, GranwaveRunError, GranwaveUn
 from ._lib import lib as _clib
 from ._lib import path as library_path
 
-__all__ = ["version", "version_info", "chain", "falcon", "wavespeed", "softwall", "layer_make", "layer_impact", "sweep", "params", "library_path",
+__all__ = ["version", "version_info", "chain", "falcon", "wavespeed", "softwall", "dispersion", "layer_make", "layer_impact", "sweep", "params", "library_path",
            "Result", "GranwaveError", "GranwaveValueError", "GranwaveIOError", "GranwaveRunError",
            "GranwaveUnsupported"]
 
@@ -116,6 +116,10 @@ def softwall(*, progress=None, **kwargs):
     return r
 
 
+def dispersion(**kwargs):
+    return _study("dispersion").run(kwargs)
+
+
 def sweep(model="chain", grid=None, *, jobs=0, progress=None, **params):
     """Run a grid of cases of a sweep model ("chain" or "layer") in memory,
     on `jobs` threads (0: one per CPU), with the library's sweep engine (the
@@ -153,6 +157,12 @@ softwall.__doc__ = _study("softwall").doc(
     "(sheets=True, under sheet_law), the saturation number N_d against (F.8), K_c (F.22).\n"
     "Per-wall arrays [wall] and [wall, N]; sheets: a list of dicts, model against measured,\n"
     "keys as the program's JSON. progress: f(done, total) per wall.")
+dispersion.__doc__ = _study("dispersion").doc(
+    "Small-amplitude dispersion of a precompressed Hertz chain, as `granwave dispersion`:\n"
+    "the ridge omega_ridge(q) of the space-time power spectrum against\n"
+    "omega = 2 sqrt(kappa/m) |sin(qa/2)| (physics.md 1.6); power is [q, omega bin].\n"
+    "column_n=N instead: the wall-force spectrum of an N-bead column (freq, spectrum,\n"
+    "f_peak against 1/period).")
 layer_make.__doc__ = _study("layer-make").doc(
     "Pluviate a 2D sample (Bourrier et al. 2008, physics.md 2.2), as `granwave layer-make`:\n"
     "polydisperse discs (clumps=True: rigid clumps) dropped under gravity until the kinetic\n"

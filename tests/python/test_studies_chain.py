@@ -96,3 +96,39 @@ def test_progress_stops_wavespeed():
     with pytest.raises(granwave.GranwaveError) as e:
         granwave.wavespeed(n=(5, 10), vimp=[0.3], jobs=1, progress=lambda d, t: d >= 2)
     assert e.value.status == -9
+
+
+def test_dispersion_matches_cli_and_theory(program):
+    d = granwave.dispersion(n=64, t_samples=256)
+    c = run_cli(program, "dispersion", "--n", 64, "--t-samples", 256)
+    for k in ("q", "omega_ridge", "omega_theory", "resolved", "d0", "kappa", "a", "omega_c_theory",
+              "omega_c_measured", "ridge_max_rel_err", "n_resolved", "c0", "c0_measured", "c0_rel_err",
+              "max_overlap_dev", "d_omega", "dt_out", "dt_step", "t_total", "steps"):
+        assert close(d[k].tolist() if isinstance(d[k], np.ndarray) else d[k], c[k]), k
+    assert d.power.shape == (d.nq, d.n_omega)
+    ok = d.resolved == 1
+    # the ridge follows 2 sqrt(kappa/m) |sin(qa/2)| (physics.md 1.6) where resolved;
+    # 2 % is the bound of tests/test_chain_dispersion.c on the 1024-bead default
+    assert ok.sum() >= 10
+    np.testing.assert_allclose(d.omega_ridge[ok], d.omega_theory[ok], rtol=0.02)
+
+
+def test_dispersion_fixed_ends_and_column(program):
+    d = granwave.dispersion(n=32, t_samples=128, ends="fixed")
+    c = run_cli(program, "dispersion", "--n", 32, "--t-samples", 128, "--ends", "fixed")
+    assert close(d.omega_ridge.tolist(), c["omega_ridge"]) and d.nq == 32
+    w = granwave.dispersion(column_n=10)
+    c = run_cli(program, "dispersion", "--column-n", 10)
+    for k in ("tau_n", "period", "f_peak", "df", "f_min", "samples", "n_maxima", "kwall", "dt_out"):
+        assert close(w[k], c[k]), k
+    assert abs(w.f_peak * w.period - 1) < 0.02  # the plateau oscillation at 1/P
+    assert w.freq.shape == w.spectrum.shape == (w.len,)
+
+
+@pytest.mark.parametrize("kw, name", [
+    (dict(n=4), "n"), (dict(f0=0), "f0"), (dict(ends="open"), "ends"), (dict(t_samples=65), "t_samples"),
+    (dict(amp=0.5), "amp"), (dict(solver="rk4", method="bdf"), "method"), (dict(rtol=1), "rtol"),
+])
+def test_dispersion_bad_values(kw, name):
+    with pytest.raises(ValueError, match=name):
+        granwave.dispersion(**kw)

@@ -1,7 +1,8 @@
 /*
  * chain_dispersion_cmd.c: `granwave dispersion`, the dispersion study of
  * chain_dispersion.c (docs/physics.md 1.6) and, with --column-n, the wall-force
- * spectrum of a column (chain_spectrum.c). SI units; JSON, CSV and FFTW wisdom
+ * spectrum of a column (chain_spectrum.c), both run by the library's
+ * gw_chain_dispersion_run (chain_disp_study.c). SI units; JSON, CSV and FFTW wisdom
  * (--wisdom: read only from a regular file that holds FFTW wisdom, which is then
  * the only kind of file it overwrites; checked with --out before any work).
  */
@@ -304,35 +305,29 @@ static void spectrum_body(FILE *fp, const void *ctx)
 static int disp_column(const disp_cli *c, const gw_opt *opts, int argc, char **argv)
 {
     gw_err err = {{0}};
+    gw_chain_dispersion_setup ds;
+    gw_chain_dispersion_setup_init(&ds);
+    gw_chain_dispersion_outcome out;
+    memset(&out, 0, sizeof out);
+    int rc = chain_cli_study_setup(gw_chain_dispersion_setup_params(), &ds, opts, argc, argv, "dispersion", &err);
+    if (rc == GW_OK && (rc = gw_chain_dispersion_run(&ds, &out, &err)) != GW_OK)
+        chain_cli_study_error(gw_chain_dispersion_setup_params(), "dispersion", rc, &err);
+    int code = 0;
     gw_chain_params p = gw_chain_params_default();
-    p.n = (int)c->column_n;
-    p.v_imp = c->vimp;
-    gw_chain_run_opts o = gw_chain_run_opts_default();
-    const gw_solver_type *type;
-    if (disp_solver(c, &type, &o.sp, &err) != GW_OK)
-        return chain_cli_fail(err.msg);
+    p.n = out.column_n;
+    p.v_imp = out.v_imp;
+    struct {
+        double dt_out;
+        gw_solver_params sp;
+        const gw_solver_type *solver;
+    } o = {out.dt_out, {.rtol = out.rtol, .atol = out.atol}, gw_chain_run_opts_default().solver};
     if (gw_cli_find(opts, "solver")->seen)
-        o.solver = type;
-    else
-        o.sp.method = GW_METHOD_DEFAULT;
-    /* Tolerances of `granwave chain` unless given. */
-    o.sp.rtol = gw_cli_find(opts, "rtol")->seen ? c->rtol : 1e-12;
-    o.sp.atol = gw_cli_find(opts, "atol")->seen ? c->atol : 1e-12;
-    o.dt_out = gw_chain_tau1(p.mass, p.kwall, p.v_imp) / 200;
-    gw_chain *ch = NULL;
-    gw_chain_trace tr;
-    gw_chain_trace_init(&tr, p.n);
-    o.sample = gw_chain_trace_sample;
-    o.sample_ctx = &tr;
-    gw_chain_result r;
-    memset(&r, 0, sizeof r);
-    gw_chain_spectrum sp;
-    memset(&sp, 0, sizeof sp);
-    int rc = gw_chain_create(&p, &ch, &err), code = 0;
-    if (rc == GW_OK)
-        rc = gw_chain_collide(ch, &o, &r, &err);
-    if (rc == GW_OK)
-        rc = gw_chain_wall_spectrum(&tr, 0.0, r.tau_n, o.dt_out, 0.0, c->measure, &sp, &err);
+        o.solver = gw_solver_type_find(c->solver);
+    struct {
+        double tau_n, period;
+        int n_maxima;
+    } r = {out.tau_n, out.period, out.n_maxima};
+    const gw_chain_spectrum sp = out.sp;
     if (rc != GW_OK) {
         fprintf(stderr, "granwave dispersion --column-n: %s\n", err.msg);
         code = rc == GW_EINVAL ? 2 : 1;
@@ -376,10 +371,8 @@ static int disp_column(const disp_cli *c, const gw_opt *opts, int argc, char **a
         free(hdr);
         cJSON_Delete(js);
     }
-    gw_chain_spectrum_free(&sp);
-    gw_chain_result_free(&r);
-    gw_chain_trace_free(&tr);
-    gw_chain_free(ch);
+    gw_chain_dispersion_outcome_free(&out);
+    gw_chain_dispersion_setup_clear(&ds);
     return code;
 }
 
@@ -456,7 +449,7 @@ int gw_cmd_dispersion(int argc, char **argv)
     p.min_bins = c.min_bins;
     p.fftw_measure = c.measure;
     const gw_solver_type *type;
-    gw_solver_params sp;
+    gw_solver_params sp = gw_solver_params_default();
     if (disp_solver(&c, &type, &sp, &err) != GW_OK)
         return chain_cli_fail(err.msg);
     char msg[sizeof err.msg + 32];
@@ -464,10 +457,16 @@ int gw_cmd_dispersion(int argc, char **argv)
         snprintf(msg, sizeof msg, "dispersion %s", err.msg);
         return chain_cli_fail(msg);
     }
-    gw_chain_disp_result r;
-    double t0 = gw_clock_ms();
-    int rc = gw_chain_disp_run(&p, type, &sp, &r, &err);
-    double wall_ms = gw_clock_ms() - t0;
+    gw_chain_dispersion_setup ds;
+    gw_chain_dispersion_setup_init(&ds);
+    gw_chain_dispersion_outcome out;
+    memset(&out, 0, sizeof out);
+    int rc = chain_cli_study_setup(gw_chain_dispersion_setup_params(), &ds, opts, argc, argv, "dispersion", &err);
+    if (rc == GW_OK)
+        rc = gw_chain_dispersion_run(&ds, &out, &err);
+    gw_chain_dispersion_setup_clear(&ds);
+    const gw_chain_disp_result r = out.r;
+    double wall_ms = out.wall_time_ms;
     int code = 0;
     if (rc != GW_OK) {
         fprintf(stderr, "granwave %s\n", err.msg);
@@ -490,6 +489,6 @@ int gw_cmd_dispersion(int argc, char **argv)
     }
     if (c.wisdom && code == 0)
         disp_export_wisdom(c.wisdom);
-    gw_chain_disp_result_free(&r);
+    gw_chain_dispersion_outcome_free(&out);
     return code;
 }

@@ -206,8 +206,11 @@ static int pick_solver(const gw_chain_falcon_setup *s, gw_chain_resolved *r, dou
                       s->col.atol == d.atol && s->col.dt == d.dt;
     gw_chain_setup_clear(&d);
     *used = 0;
-    if (!(s->accuracy > 0) || !at_defaults || r->params.damping != GW_DAMP_NONE || r->params.gravity != 0 ||
-        s->n[1] > 40)
+    const gw_chain_params *p = &r->params; /* a general wall, sensor or guide: outside the step study */
+    int general = p->wall.layer || p->wall.yield_pressure > 0 || p->wall.loss > 0 || p->sensor.mass > 0 ||
+                  p->guide.coulomb > 0 || p->guide.viscous > 0;
+    if (!(s->accuracy > 0) || !at_defaults || p->damping != GW_DAMP_NONE || p->gravity != 0 || s->n[1] > 40 ||
+        general)
         return GW_OK;
     int m = gw_chain_rk4_steps_per_tc(s->accuracy);
     if (m <= 0)

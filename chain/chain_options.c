@@ -6,7 +6,8 @@
  * directly (--k and --kwall in N/m^1.5, --mass in kg), tolerances in
  * [GW_TOL_MIN, GW_TOL_MAX], options that would have no effect (--gamma without
  * --damping kk, --alpha without --damping hc, either with --restitution)
- * refused. Here only what is the command line's own: impact speeds as lists
+ * refused, the sheet laws, the sensor body and guide friction. Here only what is
+ * the command line's own: impact speeds as lists
  * (falcon, wavespeed: --vimp, --heights in mm) checked in (0, GW_CHAIN_VIMP_MAX]
  * m/s, messages prefixed "CMD --NAME", and the --out check.
  */
@@ -55,7 +56,9 @@ static int check_speeds(const gw_opt *opts, const char *cmd, gw_err *err)
  * command-line options are the table's rows (name, help, range, default), read
  * into chain_cli's raw fields that the commands use; chain_cli_resolve hands them
  * to gw_chain_setup_resolve, the one resolution of a column. n and vimp are the
- * commands' own options (a list in falcon and wavespeed), trace is the library's. */
+ * commands' own options (a list in falcon and wavespeed), trace is the library's.
+ * The first NBASE rows come before --json and --out in --help, the wall rows
+ * (sheet law, sensor body, guide friction) after them. */
 static const struct {
     const char *name;
     size_t off;
@@ -71,14 +74,15 @@ static const struct {
     {"rtol", offsetof(chain_cli, rtol)},           {"atol", offsetof(chain_cli, atol)},
     {"dt", offsetof(chain_cli, dt)},               {"dt-max", offsetof(chain_cli, dt_max)},
     {"max-steps", offsetof(chain_cli, max_steps)}, {"t-max", offsetof(chain_cli, t_max)},
-    {"dt-out", offsetof(chain_cli, dt_out)},       {"energy-tol", offsetof(chain_cli, energy_tol)}};
+    {"dt-out", offsetof(chain_cli, dt_out)},       {"energy-tol", offsetof(chain_cli, energy_tol)},
+    {"sheet-law", offsetof(chain_cli, sheet_law)}, {"sheet-yield", offsetof(chain_cli, sheet_yield)},
+    {"sheet-loss", offsetof(chain_cli, sheet_loss)}, {"sensor-mass", offsetof(chain_cli, sensor_mass)},
+    {"sensor-stiffness", offsetof(chain_cli, sensor_stiffness)},
+    {"sensor-damping", offsetof(chain_cli, sensor_damping)},
+    {"guide-friction", offsetof(chain_cli, guide_friction)}, {"guide-viscous", offsetof(chain_cli, guide_viscous)}};
 #define NDEST (sizeof cli_dest / sizeof cli_dest[0])
-/* The sheet as a material, the sensor as a body and guide friction: options of
- * the command line only (not yet rows of the column's table), after the table's
- * rows and --json, --out. */
-#define NEXTRA 8
-_Static_assert(NDEST + 2 + NEXTRA == CHAIN_CLI_NOPTS,
-               "chain_cli options: the table's rows, --json and --out, and the extra options");
+#define NBASE 24
+_Static_assert(NDEST + 2 == CHAIN_CLI_NOPTS, "chain_cli options: the table's rows, --json and --out");
 
 void chain_cli_options(chain_cli *c, gw_opt *o)
 {
@@ -86,7 +90,7 @@ void chain_cli_options(chain_cli *c, gw_opt *o)
     for (size_t i = 0; i < NDEST; i++) {
         const gw_param *p = gw_param_find(gw_chain_setup_params(), cli_dest[i].name);
         void *dest = (char *)c + cli_dest[i].off;
-        gw_opt *x = &o[i];
+        gw_opt *x = &o[i < NBASE ? i : i + 2];
         *x = (gw_opt){.name = p->name, .dest = dest, .metavar = p->metavar, .help = p->help,
                       .lo = p->min, .hi = p->max, .open_lo = p->open_min};
         if (p->type == GW_PARAM_DOUBLE) {
@@ -100,33 +104,10 @@ void chain_cli_options(chain_cli *c, gw_opt *o)
             *(const char **)dest = p->def;
         }
     }
-    o[NDEST] = (gw_opt){.name = "json", .kind = GW_OPT_FLAG, .dest = &c->json, .help = "print results as one JSON object on stdout"};
-    o[NDEST + 1] = (gw_opt){.name = "out", .kind = GW_OPT_STRING, .dest = &c->out, .metavar = "DIR",
+    o[NBASE] = (gw_opt){.name = "json", .kind = GW_OPT_FLAG, .dest = &c->json, .help = "print results as one JSON object on stdout"};
+    o[NBASE + 1] = (gw_opt){.name = "out", .kind = GW_OPT_STRING, .dest = &c->out, .metavar = "DIR",
                             .help = "write CSV (and HDF5) files into DIR"};
-    c->sheet_law = "fitted";
     c->sheet_yield = c->sheet_loss = -1; /* the sheet's own constants */
-    gw_opt *x = o + NDEST + 2;
-    x[0] = (gw_opt){.name = "sheet-law", .kind = GW_OPT_STRING, .dest = &c->sheet_law, .metavar = "LAW",
-                    .help = "how --sheet becomes a wall: fitted (Hertz K_eff from the measured tau_max(N=1)), hertz, "
-                            "layer (bonded elastic layer) or material (layer with the sheet's loss; Thornton plastic "
-                            "for a sheet with a yield stress) [fitted]"};
-    x[1] = (gw_opt){.name = "sheet-yield", .kind = GW_OPT_DOUBLE, .dest = &c->sheet_yield, .metavar = "Y",
-                    .help = "yield stress of the sheet with --sheet-law material, Pa (0 = elastic) [the sheet's]",
-                    .lo = 0, .hi = 1e10};
-    x[2] = (gw_opt){.name = "sheet-loss", .kind = GW_OPT_DOUBLE, .dest = &c->sheet_loss, .metavar = "T",
-                    .help = "loss factor tan(delta) of the sheet with --sheet-law material (0 = elastic) [the sheet's]",
-                    .lo = 0, .hi = 2};
-    x[3] = (gw_opt){.name = "sensor-mass", .kind = GW_OPT_DOUBLE, .dest = &c->sensor_mass, .metavar = "M",
-                    .help = "the sensor as a body: mass under the wall contact, kg, in [1e-7, 1e3] [rigid sensor]",
-                    .lo = 1e-7, .hi = 1e3};
-    x[4] = (gw_opt){.name = "sensor-stiffness", .kind = GW_OPT_DOUBLE, .dest = &c->sensor_stiffness,
-                    .metavar = "K", .help = "stiffness of the sensor body, N/m, in [1e3, 1e14]", .lo = 1e3, .hi = 1e14};
-    x[5] = (gw_opt){.name = "sensor-damping", .kind = GW_OPT_DOUBLE, .dest = &c->sensor_damping, .metavar = "C",
-                    .help = "damping of the sensor body, N s/m, in [0, 1e9] [0]", .lo = 0, .hi = 1e9};
-    x[6] = (gw_opt){.name = "guide-friction", .kind = GW_OPT_DOUBLE, .dest = &c->guide_friction, .metavar = "F",
-                    .help = "Coulomb friction of each bead on its guide, N, in [0, 1] [0]", .lo = 0, .hi = 1};
-    x[7] = (gw_opt){.name = "guide-viscous", .kind = GW_OPT_DOUBLE, .dest = &c->guide_viscous, .metavar = "C",
-                    .help = "viscous friction of each bead on its guide, N s/m, in [0, 100] [0]", .lo = 0, .hi = 100};
 }
 
 int chain_cli_sheet(const chain_cli *c, const gw_sheet *s, gw_chain_params *p,
@@ -135,86 +116,6 @@ int chain_cli_sheet(const chain_cli *c, const gw_sheet *s, gw_chain_params *p,
     const gw_material *bm = gw_material_find(c->material), *wm = gw_material_find(c->wall_material);
     return gw_sheet_apply(s, c->law, c->law == GW_SHEET_MATERIAL ? c->sheet_yield : -1,
                           c->law == GW_SHEET_MATERIAL ? c->sheet_loss : -1, bm, wm, p, layer, err);
-}
-
-static int cli_error(const char *cmd, int rc, gw_err *err);
-
-/* The extra options on the resolved column: --sheet-law and its overrides, the
- * sensor body, guide friction; an option that would have no effect refused. */
-static int resolve_extra(chain_cli *c, const gw_opt *opts, const char *cmd, gw_err *err)
-{
-    int law = gw_sheet_law_find(c->sheet_law);
-    if (law < 0)
-        return gw_err_set(err, GW_EINVAL, "%s --sheet-law: unknown law '%s' (fitted, hertz, layer, material)",
-                          cmd, c->sheet_law);
-    c->law = (gw_sheet_law)law;
-    if (gw_cli_find(opts, "sheet-law")->seen && !c->sheet && !c->sheets_mode)
-        return gw_err_set(err, GW_EINVAL, "%s --sheet-law: has no effect without --sheet%s", cmd,
-                          strcmp(cmd, "softwall") == 0 ? " or --sheets" : "");
-    static const char *const mat_opts[] = {"sheet-yield", "sheet-loss"};
-    for (int i = 0; i < 2; i++) {
-        if (gw_cli_find(opts, mat_opts[i])->seen && c->law != GW_SHEET_MATERIAL)
-            return gw_err_set(err, GW_EINVAL, "%s --%s: has no effect without --sheet-law material", cmd,
-                              mat_opts[i]);
-        if (gw_cli_find(opts, mat_opts[i])->seen && c->sheets_mode)
-            return gw_err_set(err, GW_EINVAL, "%s --%s: overrides one sheet's constant; give it with --sheet, "
-                              "not --sheets", cmd, mat_opts[i]);
-    }
-    if (gw_cli_find(opts, "sheet-yield")->seen && c->sheet_yield > 0 && c->sheet_yield < 1e5)
-        return gw_err_set(err, GW_EINVAL, "%s --sheet-yield: %g Pa is below any solid's yield stress "
-                          "(0 = elastic, or >= 1e5 Pa)", cmd, c->sheet_yield);
-    int ms = gw_cli_find(opts, "sensor-mass")->seen;
-    if (!ms && gw_cli_find(opts, "sensor-stiffness")->seen)
-        return gw_err_set(err, GW_EINVAL, "%s --sensor-stiffness: has no effect without --sensor-mass", cmd);
-    if (!ms && gw_cli_find(opts, "sensor-damping")->seen)
-        return gw_err_set(err, GW_EINVAL, "%s --sensor-damping: has no effect without --sensor-mass", cmd);
-    if (ms && !gw_cli_find(opts, "sensor-stiffness")->seen)
-        return gw_err_set(err, GW_EINVAL, "%s --sensor-mass: a sensor body needs --sensor-stiffness", cmd);
-    gw_chain_params *p = &c->params;
-    int rc;
-    if (c->law != GW_SHEET_FITTED && (c->sheet || c->sheets_mode) && gw_cli_find(opts, "restitution")->seen) {
-        /* a material sheet: the beads' damping calibrated on the bare sensor */
-        const gw_material *bm = gw_material_find(c->material), *wm = gw_material_find(c->wall_material);
-        gw_chain_params q = *p;
-        q.kwall = gw_hertz_coefficient(p->radius, bm, INFINITY, wm);
-        q.gamma = q.alpha = 0;
-        if (gw_cli_find(opts, "restitution-v")->seen)
-            q.v_imp = c->restitution_v;
-        double cst = 0;
-        if ((rc = gw_chain_calibrate(&q, &c->run, c->restitution, &cst, err)) != GW_OK)
-            return cli_error(cmd, rc, err);
-        if (p->damping == GW_DAMP_HUNT_CROSSLEY)
-            p->alpha = c->alpha = cst;
-        else
-            p->gamma = c->gamma = cst;
-    }
-    if (c->sheet && c->law != GW_SHEET_FITTED) {
-        gw_layer_law_free(c->layer);
-        c->layer = NULL;
-        if (gw_cli_find(opts, "kwall")->seen)
-            return gw_err_set(err, GW_EINVAL, "%s --sheet: give either --sheet or --kwall", cmd);
-        if ((rc = chain_cli_sheet(c, gw_sheet_find(c->sheet), p, &c->layer, err)) != GW_OK) {
-            char tmp[sizeof err->msg];
-            snprintf(tmp, sizeof tmp, "%s", err->msg);
-            return gw_err_set(err, rc, "%s --sheet %s: %s", cmd, c->sheet, tmp);
-        }
-    }
-    if (p->wall.loss > 0) { /* a loss the Maxwell arms cannot give is refused here, by name */
-        chain_wall_law wl;
-        if (chain_wall_law_init(&wl, p, err) != GW_OK) {
-            char tmp[sizeof err->msg];
-            snprintf(tmp, sizeof tmp, "%s", err->msg);
-            return gw_err_set(err, GW_EINVAL, "%s --sheet-loss: %s", cmd, tmp);
-        }
-    }
-    if (ms) {
-        p->sensor.mass = c->sensor_mass;
-        p->sensor.stiffness = c->sensor_stiffness;
-        p->sensor.damping = c->sensor_damping;
-    }
-    p->guide.coulomb = c->guide_friction;
-    p->guide.viscous = c->guide_viscous;
-    return GW_OK;
 }
 
 /* "NAME: reason" from the library as "CMD --NAME: reason"; other messages as
@@ -245,6 +146,7 @@ static int cli_setup(const chain_cli *c, const gw_opt *opts, gw_chain_setup *s, 
     gw_chain_setup_init(s);
     s->n = c->params.n;
     s->vimp = c->params.v_imp;
+    s->sheets = c->sheets_mode;
     for (size_t i = 0; i < NDEST; i++) {
         const gw_param *p = gw_param_find(t, cli_dest[i].name);
         const gw_opt *o = gw_cli_find(opts, cli_dest[i].name);
@@ -286,14 +188,18 @@ int chain_cli_resolve(chain_cli *c, const gw_opt *opts, const char *cmd, gw_err 
     gw_chain_setup_clear(&s);
     c->masses_v = r.masses; /* owned by c from here (chain_cli_free) */
     c->kc_v = r.kc;
+    c->layer = r.layer; /* owned by c from here */
     if (rc != GW_OK)
         return cli_error(cmd, rc, err);
     c->params = r.params;
     c->run = r.run;
+    c->law = r.law;
     c->gamma = r.params.gamma; /* calibrated by --restitution */
     c->alpha = r.params.alpha;
-    if ((rc = resolve_extra(c, opts, cmd, err)) != GW_OK)
-        return rc;
+    if (!gw_cli_find(opts, "sheet-yield")->seen) /* the sheet's own constants */
+        c->sheet_yield = -1;
+    if (!gw_cli_find(opts, "sheet-loss")->seen)
+        c->sheet_loss = -1;
     if (c->out) { /* before any work: a run that cannot write its results never starts */
         char name[96];
         snprintf(name, sizeof name, "%s --out", cmd);
@@ -420,4 +326,61 @@ void chain_cli_free(chain_cli *c)
     c->radii_v = c->masses_v = c->kc_v = NULL;
     gw_layer_law_free(c->layer);
     c->layer = NULL;
+}
+
+int chain_cli_study_error(const gw_param *t, const char *cmd, int rc, gw_err *err)
+{
+    char tmp[sizeof err->msg], name[64];
+    snprintf(tmp, sizeof tmp, "%s", err->msg);
+    const char *colon = strchr(tmp, ':');
+    size_t n = colon ? (size_t)(colon - tmp) : 0;
+    int named = 0;
+    if (colon && n < sizeof name) {
+        memcpy(name, tmp, n);
+        name[n] = '\0';
+        named = gw_param_find(t, name) != NULL;
+    }
+    return gw_err_set(err, rc, named ? "%s --%s" : "%s: %s", cmd, tmp);
+}
+
+int chain_cli_study_setup(const gw_param *t, void *setup, const gw_opt *opts, int argc, char **argv,
+                          const char *cmd, gw_err *err)
+{
+    for (int i = 0; i < argc; i++) {
+        const char *a = argv[i], *eq = strncmp(a, "--", 2) == 0 ? strchr(a + 2, '=') : NULL;
+        if (strncmp(a, "--", 2) != 0)
+            continue;
+        char name[96];
+        size_t len = eq ? (size_t)(eq - (a + 2)) : strlen(a + 2);
+        if (len == 0 || len >= sizeof name)
+            continue;
+        memcpy(name, a + 2, len);
+        name[len] = '\0';
+        const gw_opt *o = gw_cli_find(opts, name);
+        if (!o)
+            continue;
+        const char *val = "1";
+        if (o->kind != GW_OPT_FLAG) {
+            if (!eq && i + 1 >= argc)
+                continue;
+            val = eq ? eq + 1 : argv[++i];
+        }
+        if (!gw_param_find(t, name) || !gw_param_is_input(gw_param_find(t, name)))
+            continue;
+        int rc = gw_param_set(t, setup, name, val, err);
+        if (rc != GW_OK)
+            return chain_cli_study_error(t, cmd, rc, err);
+    }
+    return GW_OK;
+}
+
+int chain_cli_progress(void *ctx, long done, long total)
+{
+    const double *t0 = ctx;
+    if (done % (total / 10 + 1) == 0 || done == total) {
+        double el = (gw_clock_ms() - *t0) / 1e3;
+        fprintf(stderr, "  %ld/%ld collisions, %.1f s elapsed, ~%.1f s left\n", done, total, el,
+                el / (double)done * (double)(total - done));
+    }
+    return 0;
 }

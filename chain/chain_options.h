@@ -9,6 +9,7 @@
 #include "gw_cli.h"
 #include "gw_chain.h"
 #include "chain_commands.h"
+#include "gw_chain_study.h"
 
 typedef struct chain_cli {
     /* raw option values */
@@ -20,8 +21,8 @@ typedef struct chain_cli {
     const char *material, *wall_material, *damping, *solver, *method, *sheet, *radii;
     double *radii_v, *masses_v, *kc_v; /* owned arrays for --radii */
     /* the sheet as a material, the sensor as a body, guide friction */
-    const char *sheet_law;
-    double sheet_yield, sheet_loss;
+    const char *sheet_law;            /* raw --sheet-law (NULL: not given) */
+    double sheet_yield, sheet_loss;   /* -1 after resolve when not given */
     double sensor_mass, sensor_stiffness, sensor_damping;
     double guide_friction, guide_viscous;
     int sheets_mode;     /* set by softwall --sheets before resolve: --sheet-law applies to every sheet */
@@ -70,6 +71,17 @@ int chain_cli_parse(const char *cmd, const char *usage, const char *summary, gw_
 
 /* Append the sweep options --jobs and --quiet at opts[*k] (advances *k). */
 void chain_cli_sweep_opts(gw_opt *opts, int *k, long *jobs, int *quiet);
+
+/* A study's setup (table t) from the command line: every option of argv that is
+ * a row of t is set from its text with the table's checks (the command's own
+ * parse ran first with the same names and ranges). GW_EINVAL "CMD --NAME: ...". */
+int chain_cli_study_setup(const gw_param *t, void *setup, const gw_opt *opts, int argc, char **argv,
+                          const char *cmd, gw_err *err);
+/* A library message "NAME: reason" as "CMD --NAME: reason" when NAME is a row of t. */
+int chain_cli_study_error(const gw_param *t, const char *cmd, int rc, gw_err *err);
+/* Progress lines of the chain commands (every tenth of the cases); ctx points to
+ * the start time in ms (gw_clock_ms). */
+int chain_cli_progress(void *ctx, long done, long total);
 
 /* Print "granwave CMD: message" and return exit code 2. */
 int chain_cli_fail(const char *msg);

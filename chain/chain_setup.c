@@ -7,13 +7,19 @@
  *   mass m = (4/3) pi R^3 rho,
  * a sheet of Table 2 gives K_eff from its measured tau_max(N = 1) (F.2, F.21),
  * and damping constants can be calibrated to a one-bead restitution (physics.md
- * 1.5). SI units: m, kg, s, N/m^1.5.
+ * 1.5). Under a sheet law other than fitted the sheet is a wall law from its
+ * material constants and thickness (chain_sheets.c: Hertz F.3, bonded layer,
+ * Maxwell loss, Thornton plastic p_y = 2.8 Y), the calibration then runs on the
+ * bare sensor; the sensor can be a body (mass, N/m spring, N s/m dashpot) and the
+ * beads can rub on their guide (Coulomb N, viscous N s/m).
+ * SI units: m, kg, s, N, Pa, N/m^1.5.
  */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "chain_setup_rows.h"
+#include "chain_wall.h"
 #include "gw_chain_study.h"
 
 #define OFF(f) offsetof(gw_chain_setup, f)
@@ -53,8 +59,11 @@ void gw_chain_resolved_free(gw_chain_resolved *r)
 {
     free(r->masses);
     free(r->kc);
+    gw_layer_law_free(r->layer);
     r->masses = r->kc = NULL;
+    r->layer = NULL;
     r->params.masses = r->params.kc = NULL;
+    r->params.wall.layer = NULL;
 }
 
 /* the name of a choice row's value ("" when not given) */
@@ -168,6 +177,73 @@ static int resolve_run(const gw_chain_setup *s, gw_chain_run_opts *o, gw_err *er
     return GW_OK;
 }
 
+/* The sheet law, its overrides and the sensor body: options that would have no
+ * effect refused. */
+static int check_wall(const gw_chain_setup *s, gw_err *err)
+{
+    int sheet = s->sheet >= 0 || s->sheets, law = s->sheet_law < 0 ? GW_SHEET_FITTED : s->sheet_law;
+    if (s->sheet_law >= 0 && !sheet)
+        return gw_err_set(err, GW_EINVAL, "sheet-law: has no effect without sheet%s",
+                          s->sheets ? "" : " (or softwall's sheets)");
+    static const char *const mat_rows[] = {"sheet-yield", "sheet-loss"};
+    const double mat[] = {s->sheet_yield, s->sheet_loss};
+    for (int i = 0; i < 2; i++) {
+        if (!isnan(mat[i]) && law != GW_SHEET_MATERIAL)
+            return gw_err_set(err, GW_EINVAL, "%s: has no effect without sheet-law material", mat_rows[i]);
+        if (!isnan(mat[i]) && s->sheets)
+            return gw_err_set(err, GW_EINVAL, "%s: overrides one sheet's constant; give it with sheet, not sheets",
+                              mat_rows[i]);
+    }
+    if (s->sheet_yield > 0 && s->sheet_yield < 1e5)
+        return gw_err_set(err, GW_EINVAL, "sheet-yield: %g Pa is below any solid's yield stress "
+                          "(0 = elastic, or >= 1e5 Pa)", s->sheet_yield);
+    int ms = !isnan(s->sensor_mass);
+    if (!ms && !isnan(s->sensor_stiffness))
+        return gw_err_set(err, GW_EINVAL, "sensor-stiffness: has no effect without sensor-mass");
+    if (!ms && !isnan(s->sensor_damping))
+        return gw_err_set(err, GW_EINVAL, "sensor-damping: has no effect without sensor-mass");
+    if (ms && isnan(s->sensor_stiffness))
+        return gw_err_set(err, GW_EINVAL, "sensor-mass: a sensor body needs sensor-stiffness");
+    return GW_OK;
+}
+
+/* The sheet as a wall law (law other than fitted), a loss the Maxwell arms can
+ * give, the sensor body and guide friction on the resolved column. */
+static int apply_wall(const gw_chain_setup *s, gw_chain_resolved *r, gw_err *err)
+{
+    char name[32];
+    gw_chain_params *p = &r->params;
+    if (s->sheet >= 0 && r->law != GW_SHEET_FITTED) {
+        const gw_material *bm = gw_material_find(choice(s, "material", name, sizeof name));
+        const gw_material *wm = gw_material_find(choice(s, "wall-material", name, sizeof name));
+        const gw_sheet *sh = gw_sheet_find(choice(s, "sheet", name, sizeof name));
+        double y = r->law == GW_SHEET_MATERIAL && !isnan(s->sheet_yield) ? s->sheet_yield : -1;
+        double l = r->law == GW_SHEET_MATERIAL && !isnan(s->sheet_loss) ? s->sheet_loss : -1;
+        int rc = gw_sheet_apply(sh, r->law, y, l, bm, wm, p, &r->layer, err);
+        if (rc != GW_OK) {
+            char tmp[sizeof err->msg];
+            snprintf(tmp, sizeof tmp, "%s", err->msg);
+            return gw_err_set(err, rc, "sheet: %s: %s", sh->name, tmp);
+        }
+    }
+    if (p->wall.loss > 0) { /* a loss the Maxwell arms cannot give is refused here, by name */
+        chain_wall_law wl;
+        if (chain_wall_law_init(&wl, p, err) != GW_OK) {
+            char tmp[sizeof err->msg];
+            snprintf(tmp, sizeof tmp, "%s", err->msg);
+            return gw_err_set(err, GW_EINVAL, "sheet-loss: %s", tmp);
+        }
+    }
+    if (!isnan(s->sensor_mass)) {
+        p->sensor.mass = s->sensor_mass;
+        p->sensor.stiffness = s->sensor_stiffness;
+        p->sensor.damping = isnan(s->sensor_damping) ? 0 : s->sensor_damping;
+    }
+    p->guide.coulomb = s->guide_friction;
+    p->guide.viscous = s->guide_viscous;
+    return GW_OK;
+}
+
 int gw_chain_setup_resolve(const gw_chain_setup *s, gw_chain_resolved *r, gw_err *err)
 {
     memset(r, 0, sizeof *r);
@@ -186,8 +262,10 @@ int gw_chain_setup_resolve(const gw_chain_setup *s, gw_chain_resolved *r, gw_err
     p->alpha = isnan(s->alpha) ? 0 : s->alpha;
     if ((rc = check_damping(s, err)) != GW_OK ||
         (rc = gw_solver_tolerances_check(s->rtol, s->atol, "rtol", "atol", err)) != GW_OK ||
-        (rc = resolve_run(s, &r->run, err)) != GW_OK || (rc = gw_chain_params_validate(p, err)) != GW_OK)
+        (rc = resolve_run(s, &r->run, err)) != GW_OK || (rc = gw_chain_params_validate(p, err)) != GW_OK ||
+        (rc = check_wall(s, err)) != GW_OK)
         return rc;
+    r->law = s->sheet_law < 0 ? GW_SHEET_FITTED : (gw_sheet_law)s->sheet_law;
     if (!isnan(s->restitution)) {
         if (s->restitution >= 1)
             return gw_err_set(err, GW_EINVAL, "restitution: %g must be below 1", s->restitution);
@@ -196,6 +274,13 @@ int gw_chain_setup_resolve(const gw_chain_setup *s, gw_chain_resolved *r, gw_err
         gw_chain_params q = *p;
         if (!isnan(s->restitution_v))
             q.v_imp = s->restitution_v;
+        if (r->law != GW_SHEET_FITTED && (s->sheet >= 0 || s->sheets)) {
+            /* a sheet as a material: the beads' damping calibrated on the bare sensor */
+            char name[32];
+            const gw_material *bm = gw_material_find(choice(s, "material", name, sizeof name));
+            const gw_material *wm = gw_material_find(choice(s, "wall-material", name, sizeof name));
+            q.kwall = gw_hertz_coefficient(p->radius, bm, INFINITY, wm);
+        }
         double cst = 0;
         if ((rc = gw_chain_calibrate(&q, &r->run, s->restitution, &cst, err)) != GW_OK)
             return rc;
@@ -204,5 +289,5 @@ int gw_chain_setup_resolve(const gw_chain_setup *s, gw_chain_resolved *r, gw_err
         else
             p->gamma = cst;
     }
-    return GW_OK;
+    return apply_wall(s, r, err);
 }

@@ -12,12 +12,15 @@
 
 #define MATERIALS "steel,rigid,brass,aluminium,glass,pmma,pvc"
 #define SHEETS "none,brass,tape,pvc,pmma,cardboard2,beech,cardboard1,rubber"
+#define SHEET_LAWS "fitted,hertz,layer,material"
 
 /* The order of the damping choices is that of gw_chain_damping. */
 _Static_assert(GW_DAMP_NONE == 0 && GW_DAMP_KUWABARA_KONO == 1 && GW_DAMP_HUNT_CROSSLEY == 2,
                "damping choices none,kk,hc follow gw_chain_damping");
+_Static_assert(GW_SHEET_FITTED == 0 && GW_SHEET_HERTZ == 1 && GW_SHEET_LAYER == 2 && GW_SHEET_MATERIAL == 3,
+               "sheet-law choices fitted,hertz,layer,material follow gw_sheet_law");
 
-/* material .. energy-tol: the options every chain command shares */
+/* material .. guide-viscous: the options every chain command shares */
 #define GW_CHAIN_MODEL_ROWS \
     CHOICE("material", material, MATERIALS, "steel", "NAME", \
            "bead material (steel, rigid, brass, aluminium, glass, pmma, pvc) [steel]"), \
@@ -56,6 +59,30 @@ _Static_assert(GW_DAMP_NONE == 0 && GW_DAMP_KUWABARA_KONO == 1 && GW_DAMP_HUNT_C
     ROW("dt-out", GW_PARAM_DOUBLE, dt_out, "s", 0, 1, 0, "0", "DT", \
         "sampling interval for traces, energy and F_max, s [tau_1/200]"), \
     ROW("energy-tol", GW_PARAM_DOUBLE, energy_tol, "", 0, INFINITY, 0, "0", "E", \
-        "abort when the relative energy error exceeds E [off]"),
+        "abort when the relative energy error exceeds E [off]"), \
+    GW_CHAIN_WALL_ROWS
+
+/* The sheet as a material, the sensor as a body, guide friction (chain_wall.c,
+ * chain_general.c). Rows without a default are "not given": the sheet's own
+ * constants, a rigid sensor. */
+#define GW_CHAIN_WALL_ROWS \
+    CHOICE("sheet-law", sheet_law, SHEET_LAWS, NULL, "LAW", \
+           "how --sheet becomes a wall: fitted (Hertz K_eff from the measured tau_max(N=1)), hertz, " \
+           "layer (bonded elastic layer) or material (layer with the sheet's loss; Thornton plastic " \
+           "for a sheet with a yield stress) [fitted]"), \
+    ROW("sheet-yield", GW_PARAM_DOUBLE, sheet_yield, "Pa", 0, 1e10, 0, NULL, "Y", \
+        "yield stress of the sheet with --sheet-law material, Pa (0 = elastic) [the sheet's]"), \
+    ROW("sheet-loss", GW_PARAM_DOUBLE, sheet_loss, "", 0, 2, 0, NULL, "T", \
+        "loss factor tan(delta) of the sheet with --sheet-law material (0 = elastic) [the sheet's]"), \
+    ROW("sensor-mass", GW_PARAM_DOUBLE, sensor_mass, "kg", 1e-7, 1e3, 0, NULL, "M", \
+        "the sensor as a body: mass under the wall contact, kg, in [1e-7, 1e3] [rigid sensor]"), \
+    ROW("sensor-stiffness", GW_PARAM_DOUBLE, sensor_stiffness, "N/m", 1e3, 1e14, 0, NULL, "K", \
+        "stiffness of the sensor body, N/m, in [1e3, 1e14]"), \
+    ROW("sensor-damping", GW_PARAM_DOUBLE, sensor_damping, "N s/m", 0, 1e9, 0, NULL, "C", \
+        "damping of the sensor body, N s/m, in [0, 1e9] [0]"), \
+    ROW("guide-friction", GW_PARAM_DOUBLE, guide_friction, "N", 0, 1, 0, "0", "F", \
+        "Coulomb friction of each bead on its guide, N, in [0, 1] [0]"), \
+    ROW("guide-viscous", GW_PARAM_DOUBLE, guide_viscous, "N s/m", 0, 100, 0, "0", "C", \
+        "viscous friction of each bead on its guide, N s/m, in [0, 100] [0]"),
 
 #endif

@@ -1,22 +1,9 @@
 /*
- * chain_softwall.c: `granwave softwall`, columns on a soft wall (docs/physics.md 1.3).
- *
- *   K_c = (c_tau/4)^(5/2) (5k/4)                        (F.22): rigid if K > K_c
- *   N_d = first N from which F_max(N') stays within a tolerance (default 1 %) of
- *         the plateau F_max(n_max) for every N' >= N            (measured)
- *         A plateau needs SATURATION_RUN sizes within the tolerance: with fewer
- *         the force may still be rising and N_d is reported as not reached.
- *   N_d predicted = ceil(tau_max(N_d) / T_q)                      (F.8)
- *         evaluated at the measured N_d; also its self-consistent form, the
- *         smallest N with N >= ceil(tau_max(N)/T_q) (n_d_fixed_point).
- * T_q is measured on the same beads with the steel (rigid) wall: slope of tau_N
- * over N = 1..20 (F.4); tau_max comes from the soft-wall runs.
- * Sheet mode (--sheets): each sheet of the paper's Table 2 with its effective K
- * (gw_sheet_kwall, chain_material.c), then N_d of the model against the
- * measured N_d (h = 2.9 mm). With --sheet-law hertz|layer|material each sheet is
- * instead a wall law from its material constants and thickness alone
- * (chain_sheets.c); JSON "sheets" lists model against measured for every sheet
- * (N_d, tau_max(N = 1), tau_max(N_d)) in either mode.
+ * chain_softwall.c: `granwave softwall`, columns on a soft wall (docs/physics.md
+ * 1.3): K_c (F.22), the saturation number N_d against ceil(tau_max(N_d)/T_q)
+ * (F.8), and with --sheets each sheet of the paper's Table 2, model against
+ * measured. The study is gw_chain_softwall_run (chain_wave_study.c, with its
+ * equations); here only the command line: options, JSON and the table.
  * Units: SI (tables print us).
  */
 #include <math.h>
@@ -26,97 +13,44 @@
 #include "gw_cli.h"
 #include "chain_options.h"
 
-#define SATURATION_RUN 6
-
-typedef struct sw_result {
-    int n_d;      /* -1: not saturated within the sizes run */
-    int n_d_pred; /* (F.8) at the measured N_d, -1 without N_d */
-    int n_d_fix;  /* smallest N >= ceil(tau_max(N)/T_q), -1 if none */
-    double plateau;
-} sw_result;
-
-static sw_result analyse(const gw_chain_result *r, int n_lo, int n_hi, double tol, double t_q)
+/* One compared sheet's JSON object from row w of the outcome's sheet table. */
+static cJSON *sheet_json(const gw_chain_softwall_outcome *so, int w, const gw_sheet *sh)
 {
-    sw_result s = {n_hi, -1, -1, r[n_hi - n_lo].f_max};
-    for (int n = n_hi; n >= n_lo; n--) {
-        if (fabs(r[n - n_lo].f_max - s.plateau) > tol * s.plateau)
-            break;
-        s.n_d = n;
-    }
-    if (n_hi - s.n_d + 1 < SATURATION_RUN && s.n_d > n_lo)
-        s.n_d = -1;
-    if (s.n_d > 0)
-        s.n_d_pred = (int)ceil(r[s.n_d - n_lo].tau_max / t_q - 1e-9);
-    for (int n = n_lo; n <= n_hi; n++)
-        if (n >= (int)ceil(r[n - n_lo].tau_max / t_q - 1e-9)) {
-            s.n_d_fix = n;
-            break;
-        }
-    return s;
-}
-
-/* Rigid-wall T_q of the beads at v: slope of tau_N over N = 1..20. */
-static int measure_tq(const chain_cli *c, double v, int jobs, double *t_q, gw_err *err)
-{
-    gw_chain_params p = c->params;
-    const gw_material *steel = gw_material_find("steel");
-    p.kwall = gw_hertz_coefficient(p.radius, steel, INFINITY, steel);
-    memset(&p.wall, 0, sizeof p.wall); /* the bare sensor */
-    gw_chain_result r[20];
-    int rc = gw_chain_sweep_n(&p, &c->run, &v, 1, 1, 20, jobs, 0, r, err);
-    double x[20], y[20];
-    for (int i = 0; i < 20; i++) {
-        x[i] = i;
-        y[i] = r[i].tau_n;
-        gw_chain_result_free(&r[i]);
-    }
-    gw_linfit lf;
-    if (rc == GW_OK && gw_fit_linear(x, y, 20, &lf) == GW_OK)
-        *t_q = lf.c1;
-    return rc;
-}
-
-/* One sheet, model against measured (times in s). */
-static cJSON *sheet_json(const gw_sheet *sh, const sw_result *sr, const gw_chain_result *r, int n_lo,
-                         int n_hi, double t_q, double kwall, const gw_layer_law *layer)
-{
+    const double *row = so->sheet_table + (size_t)w * GW_SOFTWALL_NSHEET_COLS;
+    static const char *const keys[] = {"thickness", "n_d_model", "n_d_measured", "n_d_measured_err",
+                                       "n_d_predicted_f8", "tau_max_1_model", "tau_max_1_measured",
+                                       "tau_max_nd_model", "tau_max_nd_measured", "tau_max_nd_measured_err",
+                                       "tau_max_at_measured_nd_model", "f_max_at_measured_nd_over_plateau"};
     cJSON *e = cJSON_CreateObject();
     cJSON_AddStringToObject(e, "name", sh->name);
     cJSON_AddStringToObject(e, "material", sh->material);
-    cJSON_AddNumberToObject(e, "thickness", sh->thickness > 0 ? sh->thickness : NAN);
-    cJSON_AddNumberToObject(e, "n_d_model", sr->n_d > 0 ? sr->n_d : NAN);
-    cJSON_AddNumberToObject(e, "n_d_measured", sh->n_d);
-    cJSON_AddNumberToObject(e, "n_d_measured_err", sh->n_d_err);
-    cJSON_AddNumberToObject(e, "n_d_predicted_f8", sr->n_d_pred > 0 ? sr->n_d_pred : NAN);
-    cJSON_AddNumberToObject(e, "tau_max_1_model", n_lo == 1 ? r[0].tau_max : NAN);
-    cJSON_AddNumberToObject(e, "tau_max_1_measured", sh->tau_max1_us * 1e-6);
-    cJSON_AddNumberToObject(e, "tau_max_nd_model", sr->n_d > 0 ? r[sr->n_d - n_lo].tau_max : NAN);
-    cJSON_AddNumberToObject(e, "tau_max_nd_measured", sh->tau_max_nd_us * 1e-6);
-    cJSON_AddNumberToObject(e, "tau_max_nd_measured_err", sh->tau_max_nd_err_us * 1e-6);
-    /* tolerance-free comparisons at the measured N_d: the model's tau_max there,
-     * and how close its F_max is to the plateau (the band the experiment's N_d
-     * corresponds to in the model) */
-    int nm = (int)sh->n_d, in = nm >= n_lo && nm <= n_hi;
-    cJSON_AddNumberToObject(e, "tau_max_at_measured_nd_model", in ? r[nm - n_lo].tau_max : NAN);
-    cJSON_AddNumberToObject(e, "f_max_at_measured_nd_over_plateau", in ? r[nm - n_lo].f_max / sr->plateau : NAN);
+    int k = 0;
+    for (; k < 12; k++)
+        cJSON_AddNumberToObject(e, keys[k], row[k]);
     cJSON *bt = cJSON_AddArrayToObject(e, "n_d_model_by_tol");
     static const double tols[] = {0.01, 0.02, 0.05, 0.1};
-    for (int i = 0; i < 4; i++) {
-        sw_result x = analyse(r, n_lo, n_hi, tols[i], t_q);
+    for (int i = 0; i < 4; i++, k += 2) {
         cJSON *b = cJSON_CreateObject();
         cJSON_AddNumberToObject(b, "tol", tols[i]);
-        cJSON_AddNumberToObject(b, "n_d", x.n_d > 0 ? x.n_d : NAN);
-        cJSON_AddNumberToObject(b, "tau_max_nd", x.n_d > 0 ? r[x.n_d - n_lo].tau_max : NAN);
+        cJSON_AddNumberToObject(b, "n_d", row[k]);
+        cJSON_AddNumberToObject(b, "tau_max_nd", row[k + 1]);
         cJSON_AddItemToArray(bt, b);
     }
-    cJSON_AddNumberToObject(e, "f_max_1_model", n_lo == 1 ? r[0].f_max : NAN);
-    cJSON_AddNumberToObject(e, "f_plateau_model", sr->plateau);
-    cJSON_AddNumberToObject(e, "eps_eff_1_model", n_lo == 1 ? r[0].eps_eff : NAN);
-    cJSON_AddNumberToObject(e, "kwall", kwall);
-    if (layer && n_lo == 1) /* contact radius over thickness at the single bead's peak force */
-        cJSON_AddNumberToObject(e, "a_over_h_1", gw_layer_law_contact_radius(layer, gw_layer_law_overlap(layer, r[0].f_max)) /
-                                                     gw_layer_law_thickness(layer));
+    cJSON_AddNumberToObject(e, "f_max_1_model", row[k++]);
+    cJSON_AddNumberToObject(e, "f_plateau_model", row[k++]);
+    cJSON_AddNumberToObject(e, "eps_eff_1_model", row[k++]);
+    cJSON_AddNumberToObject(e, "kwall", row[k++]);
+    if (!isnan(row[k])) /* a layer law */
+        cJSON_AddNumberToObject(e, "a_over_h_1", row[k]);
     return e;
+}
+
+/* Progress: one line per wall. */
+static int sw_progress(void *ctx, long done, long total)
+{
+    (void)ctx;
+    fprintf(stderr, "softwall: wall %ld/%ld done\n", done, total);
+    return 0;
 }
 
 static const char *sw_summary =
@@ -176,30 +110,19 @@ int gw_cmd_softwall(int argc, char **argv)
         chain_cli_free(&c);
         return chain_cli_fail(err.msg);
     }
-    const gw_chain_params *p = &c.params;
-    double kc = gw_chain_kc(p->k), t_q = NAN, t0 = gw_clock_ms();
-    int nw = use_sheets ? gw_sheet_count() : 1, per = (int)(b - a + 1);
-    gw_chain_result *res = calloc((size_t)(nw * per), sizeof *res);
-    double *kw = calloc((size_t)nw, sizeof *kw);
-    sw_result *sr = calloc((size_t)nw, sizeof *sr);
-    gw_layer_law **lay = calloc((size_t)nw, sizeof *lay);
-    int rc = res && kw && sr && lay ? measure_tq(&c, vimp, (int)jobs, &t_q, &err) : GW_ENOMEM;
-    for (int w = 0; rc == GW_OK && w < nw; w++) {
-        gw_chain_params q = *p;
-        if (use_sheets && (rc = chain_cli_sheet(&c, gw_sheet_get(w), &q, &lay[w], &err)) != GW_OK)
-            break;
-        kw[w] = q.kwall;
-        if (!quiet)
-            fprintf(stderr, "softwall: K = %.4g N/m^1.5%s%s (%d/%d)\n", q.kwall, use_sheets ? ", sheet " : "",
-                    use_sheets ? gw_sheet_get(w)->name : "", w + 1, nw);
-        rc = gw_chain_sweep_n(&q, &c.run, &vimp, 1, (int)a, (int)b, (int)jobs, 0, res + w * per, &err);
-        if (rc == GW_OK)
-            sr[w] = analyse(res + w * per, (int)a, (int)b, tol, t_q);
-    }
-    double wall_s = (gw_clock_ms() - t0) / 1e3;
-    int code = 0;
+    gw_chain_softwall_setup ss;
+    gw_chain_softwall_setup_init(&ss);
+    gw_chain_softwall_outcome so;
+    memset(&so, 0, sizeof so);
+    int rc = chain_cli_study_setup(gw_chain_softwall_setup_params(), &ss, opts, argc, argv, "softwall", &err);
+    if (rc == GW_OK)
+        rc = gw_chain_softwall_run(&ss, quiet ? NULL : sw_progress, NULL, &so, &err);
+    int nw = so.nw, ns = so.nn, per = so.nn, code = 0;
+    double kc = so.k_c, t_q = so.t_q_rigid, wall_s = so.wall_time_s;
+    const double *kw = so.kwall;
     if (rc != GW_OK) {
-        fprintf(stderr, "granwave softwall: %s\n", err.msg);
+        chain_cli_study_error(gw_chain_softwall_setup_params(), "softwall", rc, &err);
+        fprintf(stderr, "granwave %s\n", err.msg);
         code = rc == GW_EINVAL ? 2 : 1;
     } else {
         cJSON *o = cJSON_CreateObject();
@@ -208,19 +131,13 @@ int gw_cmd_softwall(int argc, char **argv)
         cJSON_AddNumberToObject(o, "k_c", kc);
         cJSON_AddNumberToObject(o, "t_q_rigid", t_q);
         cJSON_AddNumberToObject(o, "tol", tol);
-        int ns = per;
         int *nn = malloc((size_t)ns * sizeof *nn);
-        double *fm = malloc(2 * (size_t)ns * sizeof *fm);
         for (int i = 0; nn && i < ns; i++)
             nn[i] = (int)a + i;
         cJSON_AddItemToObject(o, "n", gw_json_ints(nn, ns));
         cJSON *walls = cJSON_AddArrayToObject(o, "walls");
-        for (int w = 0; fm && w < nw; w++) {
+        for (int w = 0; w < nw; w++) {
             cJSON *e = use_sheets ? cJSON_CreateObject() : o;
-            for (int i = 0; i < ns; i++) {
-                fm[i] = res[w * per + i].f_max;
-                fm[ns + i] = res[w * per + i].tau_max;
-            }
             if (use_sheets) {
                 cJSON_AddStringToObject(e, "sheet", gw_sheet_get(w)->name);
                 cJSON_AddNumberToObject(e, "tau_max_n1_measured", gw_sheet_get(w)->tau_max1_us * 1e-6);
@@ -229,24 +146,22 @@ int gw_cmd_softwall(int argc, char **argv)
                 cJSON_AddItemToArray(walls, e);
             }
             cJSON_AddNumberToObject(e, "kwall", kw[w]);
-            cJSON_AddStringToObject(e, "wall", kw[w] > kc ? "rigid" : "soft");
-            cJSON_AddItemToObject(e, "f_max", gw_json_doubles(fm, ns));
-            cJSON_AddItemToObject(e, "tau_max", gw_json_doubles(fm + ns, ns));
+            cJSON_AddStringToObject(e, "wall", so.rigid[w] ? "rigid" : "soft");
+            cJSON_AddItemToObject(e, "f_max", gw_json_doubles(so.f_max + (size_t)w * per, ns));
+            cJSON_AddItemToObject(e, "tau_max", gw_json_doubles(so.tau_max + (size_t)w * per, ns));
             /* null when F_max has not saturated (or F.8 is not met) within n_max */
-            cJSON_AddNumberToObject(e, "n_d", sr[w].n_d > 0 ? sr[w].n_d : NAN);
-            cJSON_AddNumberToObject(e, "n_d_predicted", sr[w].n_d_pred > 0 ? sr[w].n_d_pred : NAN);
-            cJSON_AddNumberToObject(e, "n_d_fixed_point", sr[w].n_d_fix > 0 ? sr[w].n_d_fix : NAN);
-            cJSON_AddNumberToObject(e, "f_plateau", sr[w].plateau);
-            cJSON_AddNumberToObject(e, "tau_max_at_n_d", sr[w].n_d > 0 ? res[w * per + sr[w].n_d - a].tau_max : NAN);
-            cJSON_AddBoolToObject(e, "saturated", sr[w].n_d > 0);
+            cJSON_AddNumberToObject(e, "n_d", so.n_d[w]);
+            cJSON_AddNumberToObject(e, "n_d_predicted", so.n_d_predicted[w]);
+            cJSON_AddNumberToObject(e, "n_d_fixed_point", so.n_d_fixed_point[w]);
+            cJSON_AddNumberToObject(e, "f_plateau", so.f_plateau[w]);
+            cJSON_AddNumberToObject(e, "tau_max_at_n_d", so.tau_max_at_n_d[w]);
+            cJSON_AddBoolToObject(e, "saturated", so.saturated[w]);
         }
         if (use_sheets || c.sheet) { /* --sheets, or one --sheet: model against measured */
             cJSON_AddStringToObject(o, "sheet_law", gw_sheet_law_name(c.law));
             cJSON *sl = cJSON_AddArrayToObject(o, "sheets");
-            for (int w = 0; w < nw; w++)
-                cJSON_AddItemToArray(sl, sheet_json(use_sheets ? gw_sheet_get(w) : gw_sheet_find(c.sheet), &sr[w],
-                                                    res + w * per, (int)a, (int)b, t_q, kw[w],
-                                                    use_sheets ? lay[w] : c.layer));
+            for (int w = 0; w < so.nsheet; w++)
+                cJSON_AddItemToArray(sl, sheet_json(&so, w, use_sheets ? gw_sheet_get(w) : gw_sheet_find(c.sheet)));
         }
         cJSON_AddNumberToObject(o, "wall_time_s", wall_s);
         cJSON_AddItemToObject(o, "settings", chain_cli_settings_json(&c));
@@ -269,37 +184,29 @@ int gw_cmd_softwall(int argc, char **argv)
                 if (use_sheets)
                     snprintf(meas, sizeof meas, "%g +- %g", gw_sheet_get(w)->n_d, gw_sheet_get(w)->n_d_err);
                 char nd[32], np[32];
-                if (sr[w].n_d > 0)
-                    snprintf(nd, sizeof nd, "%d", sr[w].n_d);
+                if (so.saturated[w])
+                    snprintf(nd, sizeof nd, "%d", (int)so.n_d[w]);
                 else
                     snprintf(nd, sizeof nd, "not in %ld", b);
-                if (sr[w].n_d_pred > 0)
-                    snprintf(np, sizeof np, "%d", sr[w].n_d_pred);
+                if (!isnan(so.n_d_predicted[w]))
+                    snprintf(np, sizeof np, "%d", (int)so.n_d_predicted[w]);
                 else
                     snprintf(np, sizeof np, "-");
                 char taus[96] = "";
                 if (use_sheets) {
                     const gw_sheet *sh = gw_sheet_get(w);
-                    snprintf(taus, sizeof taus, "  %8.1f / %-8.1f     %8.1f / %.0f", res[w * per].tau_max * 1e6,
-                             sh->tau_max1_us, sr[w].n_d > 0 ? res[w * per + sr[w].n_d - a].tau_max * 1e6 : NAN,
-                             sh->tau_max_nd_us);
+                    snprintf(taus, sizeof taus, "  %8.1f / %-8.1f     %8.1f / %.0f", so.tau_max[(size_t)w * per] * 1e6,
+                             sh->tau_max1_us, so.tau_max_at_n_d[w] * 1e6, sh->tau_max_nd_us);
                 }
                 printf("  %-14s %11.4g %6s %9s %8s %9.2f N %14s%s\n", use_sheets ? gw_sheet_get(w)->name : c.sheet ? c.sheet : "--kwall",
-                       kw[w], kw[w] > kc ? "rigid" : "soft", nd, np, sr[w].plateau, meas, taus);
+                       kw[w], so.rigid[w] ? "rigid" : "soft", nd, np, so.f_plateau[w], meas, taus);
             }
         }
         free(nn);
-        free(fm);
         cJSON_Delete(o);
     }
-    for (int i = 0; res && i < nw * per; i++)
-        gw_chain_result_free(&res[i]);
-    free(res);
-    free(kw);
-    free(sr);
-    for (int w = 0; lay && w < nw; w++)
-        gw_layer_law_free(lay[w]);
-    free(lay);
+    gw_chain_softwall_outcome_free(&so);
+    gw_chain_softwall_setup_clear(&ss);
     chain_cli_free(&c);
     return code;
 }

@@ -1,26 +1,11 @@
 /*
  * chain_wavespeed.c: `granwave wavespeed`, the deformation-wave speed of the
- * column against v_imp, measured three independent ways (docs/physics.md 1.3):
- *   (a) v_tq    = 4R / T_q, T_q the slope of tau_N against N (F.4, F.6);
- *   (b) v_front = time of flight of the compression front: the first time each
- *                 contact carries a force threshold (default 10 % of the
- *                 single-bead peak F_max(1), F.13), position 2R i fitted
- *                 linearly against time over the contacts 2..N-2 of the longest
- *                 column (away from the wall and the free end);
- *   (c) v_group = long-wave group (= sound) speed of small vibrations, docs/physics.md
- *                 1.6: c0 = 2R sqrt(kappa/m), kappa = (3/2) k^(2/3) F^(1/3), of a
- *                 chain statically compressed by the column's mean wall force
- *                 F = (wall impulse)/tau_N of the longest column.
- * (c) is the speed of small vibrations, not of the front. In the uniformly
- * compressed state behind a front moving at V (the momentum balance of F.27:
- * k d^(3/2) = m v_imp V/(2R), d = 2R v_imp/V) the linear sound speed is
- * c0 = 2R sqrt((3/2) k d^(1/2)/m) = sqrt(3/2) V, so c0/sqrt(3/2) is a third,
- * independent estimate of the front speed (v_group_front, reported beside c0;
- * the factor is this relation, not a fit).
- * Each is fitted as v = A v_imp^beta (GSL, log-log) and A is expressed as C3 in
- * v = C3 (k/m)^(2/5) R v_imp^beta (F.16; the momentum balance F.27 gives C3 = 2).
- * The wall-force period is fitted as P = C2 (m/k)^(2/5) v_imp^(-1/5) (F.15).
- * Units: SI.
+ * column against v_imp measured three independent ways (docs/physics.md 1.3;
+ * equations in chain_wave_study.c, which computes them: 4R/T_q (F.4, F.6), the
+ * front's time of flight, the group speed of the compressed chain and its
+ * relation to the front speed of F.27). Fits v = A v_imp^beta, C3 of (F.16),
+ * P = C2 (m/k)^(2/5) v_imp^(-1/5) (F.15). Here only the command line: options,
+ * the study call, JSON, CSV and text. Units: SI.
  */
 #include <math.h>
 #include <stdlib.h>
@@ -29,65 +14,14 @@
 #include "gw_cli.h"
 #include "chain_options.h"
 
-typedef struct ws_fit {
-    double beta, beta_err, a, c3;
-} ws_fit;
-
-static ws_fit power_fit(const double *v, const double *s, int n, double scale)
-{
-    ws_fit f = {NAN, NAN, NAN, NAN};
-    gw_linfit lf;
-    if (n >= 2 && gw_fit_power(v, s, n, &lf) == GW_OK) {
-        f.beta = lf.c1;
-        f.beta_err = lf.c1_err;
-        f.a = exp(lf.c0);
-        f.c3 = f.a / scale;
-    }
-    return f;
-}
-
-static cJSON *fit_json(const ws_fit *f)
+static cJSON *fit_json(const double f[4])
 {
     cJSON *o = cJSON_CreateObject();
-    cJSON_AddNumberToObject(o, "beta", f->beta);
-    cJSON_AddNumberToObject(o, "beta_err", f->beta_err);
-    cJSON_AddNumberToObject(o, "prefactor", f->a);
-    cJSON_AddNumberToObject(o, "c3", f->c3);
+    cJSON_AddNumberToObject(o, "beta", f[0]);
+    cJSON_AddNumberToObject(o, "beta_err", f[1]);
+    cJSON_AddNumberToObject(o, "prefactor", f[2]);
+    cJSON_AddNumberToObject(o, "c3", f[3]);
     return o;
-}
-
-/* Front speed of one long column: linear fit of 2R k against front_t[k]. */
-static double front_speed(const gw_chain_params *p, const gw_chain_run_opts *run,
-                          double frac, double *t_front_err, gw_err *err)
-{
-    gw_chain *c = NULL;
-    gw_chain_run_opts o = *run;
-    o.front_threshold = frac * gw_chain_fmax1(p->mass, p->kwall, p->v_imp);
-    gw_chain_result r;
-    memset(&r, 0, sizeof r);
-    double speed = NAN;
-    int rc = gw_chain_create(p, &c, err);
-    if (rc == GW_OK)
-        rc = gw_chain_collide(c, &o, &r, err);
-    if (rc == GW_OK) {
-        int n = p->n, m = 0;
-        double *x = malloc(2 * (size_t)n * sizeof *x), *y = x ? x + n : NULL;
-        for (int k = 2; x && k <= n - 2; k++)
-            if (isfinite(r.front_t[k])) {
-                x[m] = r.front_t[k];
-                y[m] = 2 * p->radius * k;
-                m++;
-            }
-        gw_linfit lf;
-        if (m >= 3 && gw_fit_linear(x, y, m, &lf) == GW_OK) {
-            speed = lf.c1;
-            *t_front_err = lf.c1_err;
-        }
-        free(x);
-    }
-    gw_chain_result_free(&r);
-    gw_chain_free(c);
-    return speed;
 }
 
 static const char *ws_summary =
@@ -138,75 +72,27 @@ int gw_cmd_wavespeed(int argc, char **argv)
         chain_cli_free(&c);
         return chain_cli_fail(err.msg);
     }
-    const gw_chain_params *p = &c.params;
-    int per_v = (int)(b - a + 1), code = 0;
-    gw_chain_result *res = calloc((size_t)(nv * per_v), sizeof *res);
-    double *out = calloc(7 * (size_t)nv, sizeof *out);
-    double *v_tq = out, *v_front = out + nv, *v_group = out + 2 * nv, *period = out + 3 * nv;
-    double *t_q = out + 4 * nv, *fbar = out + 5 * nv, *v_gf = out + 6 * nv;
-    if (!res || !out) {
-        free(res);
-        free(out);
-        free(v);
-        chain_cli_free(&c);
-        return chain_cli_fail("wavespeed: out of memory");
-    }
+    int code = 0;
+    gw_chain_wavespeed_setup ws;
+    gw_chain_wavespeed_setup_init(&ws);
+    gw_chain_wavespeed_outcome wo;
+    memset(&wo, 0, sizeof wo);
     double t0 = gw_clock_ms();
-    if (!quiet)
-        fprintf(stderr, "granwave wavespeed: %d collisions\n", nv * per_v);
-    int rc = gw_chain_sweep_n(p, &c.run, v, nv, (int)a, (int)b, (int)jobs, !quiet, res, &err);
-    for (int iv = 0; rc == GW_OK && iv < nv; iv++) {
-        gw_chain_result *rv = &res[iv * per_v];
-        double *x = malloc(2 * (size_t)per_v * sizeof *x);
-        if (!x) {
-            rc = gw_err_set(&err, GW_ENOMEM, "wavespeed: out of memory");
-            break;
-        }
-        int np = 0;
-        period[iv] = 0;
-        for (int j = 0; j < per_v; j++) {
-            x[j] = a + j - 1;
-            x[per_v + j] = rv[j].tau_n;
-            if (a + j >= 10 && rv[j].n_maxima >= 2) {
-                period[iv] += rv[j].period;
-                np++;
-            }
-        }
-        period[iv] = np ? period[iv] / np : NAN;
-        gw_linfit lf;
-        gw_fit_linear(x, x + per_v, per_v, &lf);
-        free(x);
-        t_q[iv] = lf.c1;
-        v_tq[iv] = 4 * p->radius / lf.c1;
-        const gw_chain_result *rl = &rv[per_v - 1];
-        fbar[iv] = rl->impulse / rl->tau_n;
-        double kappa = 1.5 * pow(p->k, 2.0 / 3.0) * cbrt(fbar[iv]);
-        v_group[iv] = 2 * p->radius * sqrt(kappa / p->mass);
-        v_gf[iv] = v_group[iv] / sqrt(1.5);
-        gw_chain_params q = *p;
-        q.v_imp = v[iv];
-        double ferr = 0;
-        v_front[iv] = front_speed(&q, &c.run, frac, &ferr, &err);
-        if (!isfinite(v_front[iv]))
-            rc = gw_err_set(&err, GW_ESOLVER, "wavespeed: no front fit at v_imp = %g (%s)", v[iv], err.msg);
-    }
-    double wall_s = (gw_clock_ms() - t0) / 1e3;
+    int rc = chain_cli_study_setup(gw_chain_wavespeed_setup_params(), &ws, opts, argc, argv, "wavespeed", &err);
+    if (rc == GW_OK && !quiet)
+        fprintf(stderr, "granwave wavespeed: %d collisions\n", nv * (int)(b - a + 1));
+    if (rc == GW_OK)
+        rc = gw_chain_wavespeed_run(&ws, quiet ? NULL : chain_cli_progress, &t0, &wo, &err);
     if (rc != GW_OK) {
-        fprintf(stderr, "granwave wavespeed: %s\n", err.msg);
+        if (strncmp(err.msg, "wavespeed", 9) != 0)
+            chain_cli_study_error(gw_chain_wavespeed_setup_params(), "wavespeed", rc, &err);
+        fprintf(stderr, "granwave %s\n", err.msg);
         code = rc == GW_EINVAL ? 2 : 1;
     } else {
-        double scale = pow(p->k / p->mass, 0.4) * p->radius;
-        ws_fit f_tq = power_fit(v, v_tq, nv, scale), f_fr = power_fit(v, v_front, nv, scale);
-        ws_fit f_gr = power_fit(v, v_group, nv, scale), f_gf = power_fit(v, v_gf, nv, scale);
-        ws_fit f_p = power_fit(v, period, nv, pow(p->mass / p->k, 0.4));
-        double c2 = 0, worst = 0;
-        for (int iv = 0; iv < nv; iv++) {
-            c2 += period[iv] * pow(v[iv], 0.2) / pow(p->mass / p->k, 0.4) / nv;
-            double s3[3] = {v_tq[iv], v_front[iv], v_gf[iv]};
-            for (int i = 0; i < 3; i++)
-                for (int j = 0; j < 3; j++)
-                    worst = fmax(worst, fabs(s3[i] - s3[j]) / s3[j]);
-        }
+        const double *v_tq = wo.v_tq, *v_front = wo.v_front, *v_group = wo.v_group, *v_gf = wo.v_group_front;
+        const double *t_q = wo.t_q, *fbar = wo.mean_wall_force, *period = wo.period;
+        const double *f_tq = wo.fits[0], *f_fr = wo.fits[1], *f_gr = wo.fits[2], *f_gf = wo.fits[3];
+        double wall_s = wo.wall_time_s, c2 = wo.c2, worst = wo.max_disagreement;
         cJSON *o = cJSON_CreateObject();
         cJSON_AddStringToObject(o, "version", gw_version());
         cJSON_AddItemToObject(o, "v_imp", gw_json_doubles(v, nv));
@@ -217,18 +103,18 @@ int gw_cmd_wavespeed(int argc, char **argv)
         cJSON_AddItemToObject(o, "t_q", gw_json_doubles(t_q, nv));
         cJSON_AddItemToObject(o, "mean_wall_force", gw_json_doubles(fbar, nv));
         cJSON_AddItemToObject(o, "period", gw_json_doubles(period, nv));
-        cJSON_AddNumberToObject(o, "beta", f_tq.beta);
-        cJSON_AddNumberToObject(o, "beta_err", f_tq.beta_err);
-        cJSON_AddNumberToObject(o, "c3", f_tq.c3);
-        cJSON_AddNumberToObject(o, "c3_theory", 2.0);
+        cJSON_AddNumberToObject(o, "beta", wo.beta);
+        cJSON_AddNumberToObject(o, "beta_err", wo.beta_err);
+        cJSON_AddNumberToObject(o, "c3", wo.c3);
+        cJSON_AddNumberToObject(o, "c3_theory", wo.c3_theory);
         cJSON *fits = cJSON_AddObjectToObject(o, "fits");
-        cJSON_AddItemToObject(fits, "tq", fit_json(&f_tq));
-        cJSON_AddItemToObject(fits, "front", fit_json(&f_fr));
-        cJSON_AddItemToObject(fits, "group", fit_json(&f_gr));
-        cJSON_AddItemToObject(fits, "group_front", fit_json(&f_gf));
+        cJSON_AddItemToObject(fits, "tq", fit_json(f_tq));
+        cJSON_AddItemToObject(fits, "front", fit_json(f_fr));
+        cJSON_AddItemToObject(fits, "group", fit_json(f_gr));
+        cJSON_AddItemToObject(fits, "group_front", fit_json(f_gf));
         cJSON_AddNumberToObject(o, "c2", c2);
-        cJSON_AddNumberToObject(o, "beta_period", f_p.beta);
-        cJSON_AddNumberToObject(o, "beta_period_err", f_p.beta_err);
+        cJSON_AddNumberToObject(o, "beta_period", wo.beta_period);
+        cJSON_AddNumberToObject(o, "beta_period_err", wo.beta_period_err);
         cJSON_AddNumberToObject(o, "max_disagreement", worst); /* tq, front, group/sqrt(3/2) */
         cJSON_AddNumberToObject(o, "front_threshold_fraction", frac);
         cJSON_AddNumberToObject(o, "n_min", (double)a);
@@ -268,19 +154,17 @@ int gw_cmd_wavespeed(int argc, char **argv)
                    gw_version(), wall_s);
             for (int iv = 0; iv < nv; iv++)
                 printf("  %-8.4g %8.2f %8.2f %8.2f %8.2f\n", v[iv], v_tq[iv], v_front[iv], v_group[iv], v_gf[iv]);
-            printf("  beta: tq %.5f +- %.5f, front %.5f +- %.5f, group %.5f +- %.5f\n", f_tq.beta,
-                   f_tq.beta_err, f_fr.beta, f_fr.beta_err, f_gr.beta, f_gr.beta_err);
-            printf("  C3: tq %.4f, front %.4f, group %.4f, group/sqrt(3/2) %.4f (F.27: 2)\n", f_tq.c3, f_fr.c3,
-                   f_gr.c3, f_gf.c3);
+            printf("  beta: tq %.5f +- %.5f, front %.5f +- %.5f, group %.5f +- %.5f\n", f_tq[0],
+                   f_tq[1], f_fr[0], f_fr[1], f_gr[0], f_gr[1]);
+            printf("  C3: tq %.4f, front %.4f, group %.4f, group/sqrt(3/2) %.4f (F.27: 2)\n", f_tq[3], f_fr[3],
+                   f_gr[3], f_gf[3]);
             printf("  period: C2 %.4f, beta %.5f; front-speed estimators (tq, front, group/sqrt(3/2)) "
-                   "disagree by up to %.1f %%\n", c2, f_p.beta, 100 * worst);
+                   "disagree by up to %.1f %%\n", c2, wo.beta_period, 100 * worst);
         }
         cJSON_Delete(o);
     }
-    for (int i = 0; i < nv * per_v; i++)
-        gw_chain_result_free(&res[i]);
-    free(res);
-    free(out);
+    gw_chain_wavespeed_outcome_free(&wo);
+    gw_chain_wavespeed_setup_clear(&ws);
     free(v);
     chain_cli_free(&c);
     return code;

@@ -49,6 +49,16 @@ typedef struct gw_chain_setup {
     double t_max;         /* s [0: 20 (n T_q + tau_1)] */
     double dt_out;        /* sampling interval, s [0: tau_1/200] */
     double energy_tol;    /* stop when the energy error exceeds it [0: off] */
+    int sheet_law;        /* fitted, hertz, layer, material (choice) [-1: fitted] */
+    double sheet_yield;   /* Pa, with sheet-law material [NaN: the sheet's] */
+    double sheet_loss;    /* tan(delta), with sheet-law material [NaN: the sheet's] */
+    double sensor_mass;   /* the sensor as a body, kg [NaN: rigid sensor] */
+    double sensor_stiffness; /* N/m, needed with sensor_mass [NaN] */
+    double sensor_damping;   /* N s/m [NaN: 0] */
+    double guide_friction;   /* Coulomb friction per bead, N [0] */
+    double guide_viscous;    /* viscous friction per bead, N s/m [0] */
+    int sheets;           /* not a table row: set by the softwall study when the
+                             sheet law applies to every sheet of Table 2 [0] */
     int trace;            /* library only: keep the wall force and bead series [0] */
 } gw_chain_setup;
 
@@ -62,9 +72,13 @@ void gw_chain_setup_clear(gw_chain_setup *s);
 
 /* A setup turned into the model and its run options. */
 typedef struct gw_chain_resolved {
-    gw_chain_params params; /* params.masses/kc point into the arrays below */
+    gw_chain_params params; /* params.masses/kc point into the arrays below,
+                               params.wall.layer to layer */
     gw_chain_run_opts run;
     double *masses, *kc;    /* owned (per-bead radii) */
+    gw_layer_law *layer;    /* owned: the bonded layer of a sheet under law layer
+                               or material */
+    gw_sheet_law law;       /* the sheet law resolved (fitted when not given) */
 } gw_chain_resolved;
 
 /* Materials, sheet and radii to masses and coefficients, damping (calibrated
@@ -161,5 +175,136 @@ const gw_param *gw_chain_falcon_outcome_fields(void);
 int gw_chain_falcon_run(const gw_chain_falcon_setup *s, gw_progress_fn progress, void *pctx,
                         gw_chain_falcon_outcome *out, gw_err *err);
 void gw_chain_falcon_outcome_free(gw_chain_falcon_outcome *out);
+
+/* ---- the studies of `granwave wavespeed`, `softwall`, `drop`, `dispersion` ----
+ * Each: a setup struct with its table (rows named as the command's flags; the
+ * column's model and solver rows of gw_chain_setup where the command takes
+ * them), _setup_init / _setup_clear, a run (out zeroed first; free it with the
+ * outcome's _free also after a failure), and the outcome's table (series as
+ * double arrays). Errors GW_EINVAL "NAME: reason", a collision's failure,
+ * GW_ECANCELED (progress returned non-zero), GW_ENOMEM. Nothing is printed. */
+
+/* Wave speed against v_imp (physics.md 1.3), three ways: 4R/T_q (F.4, F.6), the
+ * time of flight of the compression front, the long-wave group speed c0 of the
+ * chain compressed by the mean wall force (1.6) and c0/sqrt(3/2); power-law
+ * fits v = A v_imp^beta, A as C3 of (F.16) (F.27: 2); P = C2 (m/k)^(2/5)
+ * v_imp^(-1/5) (F.15). m/s, s, N. */
+typedef struct gw_chain_wavespeed_setup {
+    gw_chain_setup col;   /* model and solver rows (n, vimp, trace unused) */
+    gw_param_list vimp;   /* m/s [0.075,0.15,0.3,0.5] */
+    long n[2];            /* column sizes of the tau_N fit; n[1] the front column [5:40] */
+    double threshold;     /* front threshold / F_max(1) (F.13) [0.1] */
+    long jobs;            /* threads [0 = one per CPU] */
+} gw_chain_wavespeed_setup;
+
+typedef struct gw_chain_wavespeed_outcome {
+    int nv;
+    double *v_imp, *v_tq, *v_front, *v_group, *v_group_front; /* [nv] m/s */
+    double *t_q, *mean_wall_force, *period;                  /* [nv] s, N, s */
+    double beta, beta_err, c3, c3_theory;                    /* the 4R/T_q fit */
+    double fits[4][4]; /* tq, front, group, group_front x beta, beta_err, prefactor, c3 */
+    double c2, beta_period, beta_period_err, max_disagreement, threshold;
+    int n_min, n_max;
+    double wall_time_s;
+} gw_chain_wavespeed_outcome;
+
+const gw_param *gw_chain_wavespeed_setup_params(void);
+int gw_chain_wavespeed_setup_init(gw_chain_wavespeed_setup *s);
+void gw_chain_wavespeed_setup_clear(gw_chain_wavespeed_setup *s);
+const gw_param *gw_chain_wavespeed_outcome_fields(void);
+/* progress per collision of the tau_N sweep (may be NULL). */
+int gw_chain_wavespeed_run(const gw_chain_wavespeed_setup *s, gw_progress_fn progress, void *pctx,
+                           gw_chain_wavespeed_outcome *out, gw_err *err);
+void gw_chain_wavespeed_outcome_free(gw_chain_wavespeed_outcome *out);
+
+/* Columns on a soft wall (physics.md 1.3): F_max(N), tau_max(N), the saturation
+ * number N_d against ceil(tau_max(N_d)/T_q) (F.8), K_c (F.22); with sheets
+ * every sheet of Table 2 under the sheet law, model against measured. */
+typedef struct gw_chain_softwall_setup {
+    gw_chain_setup col;   /* model and solver rows; kwall [NaN: 1e9 unless a sheet] */
+    long n[2];            /* column sizes [1:30] */
+    double vimp;          /* m/s [NaN: sqrt(2 g 2.9 mm) = 0.2385] */
+    double tol;           /* plateau tolerance of N_d [0.01] */
+    int sheets;           /* every sheet of Table 2 [0] */
+    long jobs;            /* threads [0] */
+} gw_chain_softwall_setup;
+
+/* Columns of the per-sheet table (sheet_table, [nsheet x GW_SOFTWALL_NSHEET_COLS]). */
+#define GW_SOFTWALL_SHEET_COLS                                                                        \
+    "thickness,n_d_model,n_d_measured,n_d_measured_err,n_d_predicted_f8,tau_max_1_model,"             \
+    "tau_max_1_measured,tau_max_nd_model,tau_max_nd_measured,tau_max_nd_measured_err,"                 \
+    "tau_max_at_measured_nd_model,f_max_at_measured_nd_over_plateau,n_d_tol_0.01,tau_max_nd_tol_0.01," \
+    "n_d_tol_0.02,tau_max_nd_tol_0.02,n_d_tol_0.05,tau_max_nd_tol_0.05,n_d_tol_0.1,tau_max_nd_tol_0.1,"  \
+    "f_max_1_model,f_plateau_model,eps_eff_1_model,kwall,a_over_h_1"
+#define GW_SOFTWALL_NSHEET_COLS 25
+
+typedef struct gw_chain_softwall_outcome {
+    int nw, nn, ncase, nsheet;  /* walls, sizes, nw * nn, sheets compared (0, 1 or nw) */
+    double v_imp, k_c, t_q_rigid, tol; /* m/s, N/m^1.5, s */
+    int sheet_law;              /* gw_sheet_law */
+    double *n;                  /* [nn] */
+    double *kwall;              /* [nw] N/m^1.5 */
+    int *rigid, *saturated;     /* [nw] */
+    double *f_max, *tau_max;    /* [nw * nn] N, s */
+    double *n_d, *n_d_predicted, *n_d_fixed_point, *f_plateau, *tau_max_at_n_d; /* [nw]; NaN: none */
+    double *sheet_table;        /* [nsheet * GW_SOFTWALL_NSHEET_COLS]; NaN: not defined */
+    char *sheet_names, *sheet_materials; /* nsheet items, separated by "," and ";" */
+    double wall_time_s;
+} gw_chain_softwall_outcome;
+
+const gw_param *gw_chain_softwall_setup_params(void);
+int gw_chain_softwall_setup_init(gw_chain_softwall_setup *s);
+void gw_chain_softwall_setup_clear(gw_chain_softwall_setup *s);
+const gw_param *gw_chain_softwall_outcome_fields(void);
+/* progress per wall (may be NULL). */
+int gw_chain_softwall_run(const gw_chain_softwall_setup *s, gw_progress_fn progress, void *pctx,
+                          gw_chain_softwall_outcome *out, gw_err *err);
+void gw_chain_softwall_outcome_free(gw_chain_softwall_outcome *out);
+
+/* Small-amplitude dispersion of a precompressed chain (physics.md 1.6,
+ * chain_dispersion.c): ridge omega(q) against 2 sqrt(kappa/m) |sin(qa/2)|,
+ * kappa = (3/2) k^(2/3) f0^(1/3); or, with column_n > 0, the wall-force spectrum
+ * of one column collision against 1/P (chain_spectrum.c). Steel beads, R = 4 mm.
+ * rad/s, Hz, m, N. */
+typedef struct gw_chain_dispersion_setup {
+    long n;               /* beads [1024] */
+    double f0;            /* precompression, N [10] */
+    int ends;             /* periodic, fixed (choice) [periodic] */
+    long t_samples;       /* even [2048] */
+    double dt_out;        /* sampling interval, s [0: pi / (1.25 omega_c)] */
+    long steps_per_sample;/* RK4 steps per sample [16] */
+    double amp;           /* rms overlap perturbation / d0 [1e-3] */
+    long seed;            /* [1] */
+    double min_bins;      /* [8] */
+    int solver;           /* rk4, cvode, arkode (choice) [-1: rk4; column: cvode] */
+    int method;           /* default, adams, bdf, erk, dirk (choice) [-1: default] */
+    double rtol, atol;    /* [NaN: 1e-10; column: 1e-12] */
+    int fftw_measure;     /* [0: FFTW_ESTIMATE] */
+    long column_n;        /* > 0: the wall-force spectrum of this column instead [0] */
+    double vimp;          /* impact velocity of that column, m/s [0.3] */
+} gw_chain_dispersion_setup;
+
+typedef struct gw_chain_dispersion_outcome {
+    int column;               /* 0: dispersion (r), 1: column wall spectrum (sp) */
+    gw_chain_disp_result r;   /* dispersion: qa, omega_ridge, omega_theory, power, ... */
+    double c0_rel_err;        /* |c0_measured / c0_theory - 1| */
+    double mass, k, kwall, radius; /* the beads (kwall: column mode), kg, N/m^1.5, m */
+    double wall_time_ms;
+    /* column mode */
+    gw_chain_spectrum sp;     /* freq [Hz], power, f_peak, df, f_min, samples */
+    double v_imp, tau_n, period, dt_out, rtol, atol; /* m/s, s, s, s */
+    int column_n, n_maxima;
+} gw_chain_dispersion_outcome;
+
+const gw_param *gw_chain_dispersion_setup_params(void);
+int gw_chain_dispersion_setup_init(gw_chain_dispersion_setup *s);
+void gw_chain_dispersion_setup_clear(gw_chain_dispersion_setup *s);
+const gw_param *gw_chain_dispersion_outcome_fields(void);
+/* The solver of s: type and settings (GW_EINVAL "solver: ..", "method: .."). */
+int gw_chain_dispersion_solver(const gw_chain_dispersion_setup *s, const gw_solver_type **type,
+                               gw_solver_params *sp, gw_err *err);
+/* No progress (one integration); GW_EUNSUPPORTED for bdf/dirk on periodic ends. */
+int gw_chain_dispersion_run(const gw_chain_dispersion_setup *s, gw_chain_dispersion_outcome *out, gw_err *err);
+void gw_chain_dispersion_outcome_free(gw_chain_dispersion_outcome *out);
 
 #endif

@@ -29,6 +29,32 @@ static int falcon_run(const void *s, void *out, gw_progress_fn progress, void *p
 }
 static void falcon_free(void *out) { gw_chain_falcon_outcome_free(out); }
 
+static int ws_init(void *s) { return gw_chain_wavespeed_setup_init(s); }
+static void ws_clear(void *s) { gw_chain_wavespeed_setup_clear(s); }
+static int ws_run(const void *s, void *out, gw_progress_fn progress, void *pctx, gw_err *err)
+{
+    return gw_chain_wavespeed_run(s, progress, pctx, out, err);
+}
+static void ws_free(void *out) { gw_chain_wavespeed_outcome_free(out); }
+
+static int sw_init(void *s) { return gw_chain_softwall_setup_init(s); }
+static void sw_clear(void *s) { gw_chain_softwall_setup_clear(s); }
+static int sw_run(const void *s, void *out, gw_progress_fn progress, void *pctx, gw_err *err)
+{
+    return gw_chain_softwall_run(s, progress, pctx, out, err);
+}
+static void sw_free(void *out) { gw_chain_softwall_outcome_free(out); }
+
+static int disp_init(void *s) { return gw_chain_dispersion_setup_init(s); }
+static void disp_clear(void *s) { gw_chain_dispersion_setup_clear(s); }
+static int disp_run(const void *s, void *out, gw_progress_fn progress, void *pctx, gw_err *err)
+{
+    (void)progress;
+    (void)pctx;
+    return gw_chain_dispersion_run(s, out, err);
+}
+static void disp_free(void *out) { gw_chain_dispersion_outcome_free(out); }
+
 #if GW_HAVE_LAYER
 static int impact_init(void *s) { return gw_layer_impact_setup_init(s); }
 static void impact_clear(void *s) { gw_layer_impact_setup_clear(s); }
@@ -58,6 +84,15 @@ static const gw_study studies[] = {
     {"falcon", "the rigid-wall study of Falcon et al. (1998): N = A..B at each impact velocity",
      gw_chain_falcon_setup_params, sizeof(gw_chain_falcon_setup), falcon_init, falcon_clear,
      gw_chain_falcon_outcome_fields, sizeof(gw_chain_falcon_outcome), falcon_run, falcon_free},
+    {"wavespeed", "the deformation-wave speed against v_imp, three ways (Falcon et al. 1998, F.16, F.27)",
+     gw_chain_wavespeed_setup_params, sizeof(gw_chain_wavespeed_setup), ws_init, ws_clear,
+     gw_chain_wavespeed_outcome_fields, sizeof(gw_chain_wavespeed_outcome), ws_run, ws_free},
+    {"softwall", "columns on a soft wall: N_d against F.8, the sheets of Table 2 (Falcon et al. 1998)",
+     gw_chain_softwall_setup_params, sizeof(gw_chain_softwall_setup), sw_init, sw_clear,
+     gw_chain_softwall_outcome_fields, sizeof(gw_chain_softwall_outcome), sw_run, sw_free},
+    {"dispersion", "small-amplitude dispersion of a precompressed Hertz chain (physics.md 1.6)",
+     gw_chain_dispersion_setup_params, sizeof(gw_chain_dispersion_setup), disp_init, disp_clear,
+     gw_chain_dispersion_outcome_fields, sizeof(gw_chain_dispersion_outcome), disp_run, disp_free},
 #if GW_HAVE_LAYER
     {"layer-impact", "one block impact on a 2D granular layer (Bourrier et al. 2008)",
      gw_layer_impact_setup_params, sizeof(gw_layer_impact_setup), impact_init, impact_clear,

@@ -7,6 +7,9 @@
  *   study           inputs (table)                       results (table)
  *   "chain"         gw_chain_setup                       gw_chain_collision
  *   "falcon"        gw_chain_falcon_setup                gw_chain_falcon_outcome
+ *   "wavespeed"     gw_chain_wavespeed_setup             gw_chain_wavespeed_outcome
+ *   "softwall"      gw_chain_softwall_setup              gw_chain_softwall_outcome
+ *   "dispersion"    gw_chain_dispersion_setup            gw_chain_dispersion_outcome
  *   "layer-make"    gw_layer_make_setup                  gw_layer_make_outcome
  *   "layer-impact"  gw_layer_impact_setup                gw_layer_impact_outcome
  *

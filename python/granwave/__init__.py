@@ -32,7 +32,7 @@ from ._core import (GranwaveError, GranwaveIOError, GranwaveRunError, GranwaveUn
 from ._lib import lib as _clib
 from ._lib import path as library_path
 
-__all__ = ["version", "version_info", "chain", "falcon", "layer_make", "layer_impact", "sweep", "params", "library_path",
+__all__ = ["version", "version_info", "chain", "falcon", "wavespeed", "softwall", "dispersion", "layer_make", "layer_impact", "sweep", "params", "library_path",
            "Result", "GranwaveError", "GranwaveValueError", "GranwaveIOError", "GranwaveRunError",
            "GranwaveUnsupported"]
 
@@ -83,6 +83,43 @@ def falcon(*, progress=None, **kwargs):
     return _study("falcon").run(kwargs, progress)
 
 
+def wavespeed(*, progress=None, **kwargs):
+    r = _study("wavespeed").run(kwargs, progress)
+    r["fits"] = {w: {k: r["fit_%s_%s" % (w, k)] for k in ("beta", "beta_err", "prefactor", "c3")}
+                 for w in ("tq", "front", "group", "group_front")}
+    return r
+
+
+_SHEET_LAWS = ("fitted", "hertz", "layer", "material")
+
+
+def softwall(*, progress=None, **kwargs):
+    r = _study("softwall").run(kwargs, progress)
+    r["sheet_law"] = _SHEET_LAWS[r["sheet_law"]]
+    table = r.pop("sheet_table", None)
+    names = (r.pop("sheet_names", None) or "").split(",")
+    materials = (r.pop("sheet_materials", None) or "").split(";")
+    sheets = []
+    for i in range(r["nsheet"]):
+        row = {c: float(table[c][i]) for c in table}
+        e = {"name": names[i], "material": materials[i]}
+        for k in list(row)[:12]:
+            e[k] = row[k]
+        e["n_d_model_by_tol"] = [{"tol": t, "n_d": row["n_d_tol_%g" % t], "tau_max_nd": row["tau_max_nd_tol_%g" % t]}
+                                 for t in (0.01, 0.02, 0.05, 0.1)]
+        for k in ("f_max_1_model", "f_plateau_model", "eps_eff_1_model", "kwall", "a_over_h_1"):
+            e[k] = row[k]
+        if e["a_over_h_1"] != e["a_over_h_1"]:  # NaN: not a layer law (the program leaves it out)
+            del e["a_over_h_1"]
+        sheets.append(e)
+    r["sheets"] = sheets
+    return r
+
+
+def dispersion(**kwargs):
+    return _study("dispersion").run(kwargs)
+
+
 def sweep(model="chain", grid=None, *, jobs=0, progress=None, **params):
     """Run a grid of cases of a sweep model ("chain" or "layer") in memory,
     on `jobs` threads (0: one per CPU), with the library's sweep engine (the
@@ -108,6 +145,24 @@ falcon.__doc__ = _study("falcon").doc(
     "line tau_N = T_q (N - 1) + tau_1, the wave speed 4R/T_q against (F.27), F_max(N).\n"
     "Per-case results are arrays [velocity, N]. progress: optional f(done, total) per\n"
     "collision; return True (or raise) to stop. heights=[] (or 'none') for none.")
+wavespeed.__doc__ = _study("wavespeed").doc(
+    "The deformation-wave speed of the column against the impact velocity, as\n"
+    "`granwave wavespeed`: (a) 4R/T_q from the slope of tau_N(N), (b) the front's time\n"
+    "of flight, (c) the group speed of the chain compressed by the mean wall force and\n"
+    "c/sqrt(3/2); power-law fits v = A v_imp^beta (F.16; fits[...] per estimator), the\n"
+    "period fit (F.15). Series per velocity are numpy arrays. progress: f(done, total).")
+softwall.__doc__ = _study("softwall").doc(
+    "Columns on a soft wall, as `granwave softwall`: F_max(N), tau_max(N) for a wall\n"
+    "coefficient (kwall, default 1e9) or every sheet of the paper's Table 2\n"
+    "(sheets=True, under sheet_law), the saturation number N_d against (F.8), K_c (F.22).\n"
+    "Per-wall arrays [wall] and [wall, N]; sheets: a list of dicts, model against measured,\n"
+    "keys as the program's JSON. progress: f(done, total) per wall.")
+dispersion.__doc__ = _study("dispersion").doc(
+    "Small-amplitude dispersion of a precompressed Hertz chain, as `granwave dispersion`:\n"
+    "the ridge omega_ridge(q) of the space-time power spectrum against\n"
+    "omega = 2 sqrt(kappa/m) |sin(qa/2)| (physics.md 1.6); power is [q, omega bin].\n"
+    "column_n=N instead: the wall-force spectrum of an N-bead column (freq, spectrum,\n"
+    "f_peak against 1/period).")
 layer_make.__doc__ = _study("layer-make").doc(
     "Pluviate a 2D sample (Bourrier et al. 2008, physics.md 2.2), as `granwave layer-make`:\n"
     "polydisperse discs (clumps=True: rigid clumps) dropped under gravity until the kinetic\n"

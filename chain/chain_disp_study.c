@@ -1,0 +1,258 @@
+/*
+ * chain_disp_study.c: the dispersion study of `granwave dispersion` as a library
+ * call (gw_chain_study.h). Equations (docs/physics.md 1.6, chain_dispersion.c):
+ * a chain precompressed by f0 (N) has overlap d0 = (f0/k)^(2/3) (m), linear
+ * stiffness kappa = (3/2) k^(2/3) f0^(1/3) (N/m) and, for small vibrations,
+ *     omega(q) = 2 sqrt(kappa/m) |sin(qa/2)|,  a = 2R - d0,  c0 = a sqrt(kappa/m);
+ * the ridge of the space-time power spectrum of the bead velocities is measured
+ * against it. With column_n > 0 instead: one column collision (physics.md 1.1)
+ * and the peak of its wall-force spectrum (Hz) against 1/P, P the mean spacing
+ * of the wall-force maxima (chain_spectrum.c). SI units (rad/s, Hz).
+ */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "gw_chain_study.h"
+
+#define OFF(f) offsetof(gw_chain_dispersion_setup, f)
+#define ROW(nm, ty, f, un, lo, hi, op, df, mv, hl)                                             \
+    {.name = nm, .type = ty, .offset = OFF(f), .unit = un, .min = lo, .max = hi, .open_min = op, \
+     .def = df, .metavar = mv, .help = hl}
+#define CHOICE(nm, f, ch, df, mv, hl)                                                          \
+    {.name = nm, .type = GW_PARAM_CHOICE, .offset = OFF(f), .unit = "", .def = df, .choices = ch, \
+     .metavar = mv, .help = hl}
+
+static const gw_param disp_params[] = {
+    ROW("n", GW_PARAM_LONG, n, "", 8, 1 << 22, 0, "1024", "N", "number of beads [1024]"),
+    ROW("f0", GW_PARAM_DOUBLE, f0, "N", 0, 1e9, 1, "10", "F", "static precompression, N [10]"),
+    CHOICE("ends", ends, "periodic,fixed", "periodic", "KIND", "periodic or fixed [periodic]"),
+    ROW("t-samples", GW_PARAM_LONG, t_samples, "", 64, 1 << 24, 0, "2048", "T",
+        "velocity samples in time, even [2048]"),
+    ROW("dt-out", GW_PARAM_DOUBLE, dt_out, "s", 0, 1, 0, "0", "DT", "sampling interval, s [pi / (1.25 omega_c)]"),
+    ROW("steps-per-sample", GW_PARAM_LONG, steps_per_sample, "", 1, 100000, 0, "16", "K",
+        "RK4 steps per sampling interval [16]"),
+    ROW("amp", GW_PARAM_DOUBLE, amp, "", 0, 0.1, 1, "1e-3", "A",
+        "rms overlap perturbation / d0 of the initial velocities [1e-3]"),
+    ROW("seed", GW_PARAM_LONG, seed, "", 0, 9.0e18, 0, "1", "S",
+        "seed of the random mode phases of the initial velocities [1]"),
+    ROW("min-bins", GW_PARAM_DOUBLE, min_bins, "", 1, 1e9, 0, "8", "B", "ridge resolved from B frequency bins up [8]"),
+    CHOICE("solver", solver, "rk4,cvode,arkode", NULL, "NAME", "rk4, cvode or arkode [rk4]"),
+    CHOICE("method", method, "default,adams,bdf,erk,dirk", NULL, "NAME",
+           "cvode: adams|bdf; arkode: erk|dirk (bdf, dirk: fixed ends) [adams / erk]"),
+    ROW("rtol", GW_PARAM_DOUBLE, rtol, "", GW_TOL_MIN, GW_TOL_MAX, 0, NULL, "R", "relative tolerance, cvode/arkode [1e-10]"),
+    ROW("atol", GW_PARAM_DOUBLE, atol, "", GW_TOL_MIN, GW_TOL_MAX, 0, NULL, "A",
+        "absolute tolerance in units of the perturbation scales [1e-10]"),
+    ROW("fftw-measure", GW_PARAM_FLAG, fftw_measure, "", 0, 1, 0, "0", NULL,
+        "plan the FFTs with FFTW_MEASURE (default FFTW_ESTIMATE)"),
+    ROW("column-n", GW_PARAM_LONG, column_n, "", 0, 100000, 0, "0", "N",
+        "instead: wall-force spectrum of an N-bead column collision [0 = off]"),
+    ROW("vimp", GW_PARAM_DOUBLE, vimp, "m/s", 0, 1e3, 1, "0.3", "V", "impact velocity of that column, m/s [0.3]"),
+    GW_PARAM_END};
+#undef OFF
+
+#define OFF(f) offsetof(gw_chain_dispersion_outcome, f)
+#define RD(nm, f, un, hl) {.name = nm, .type = GW_PARAM_DOUBLE, .offset = OFF(f), .unit = un, .help = hl}
+#define RI(nm, f, hl) {.name = nm, .type = GW_PARAM_INT, .offset = OFF(f), .unit = "", .help = hl}
+#define RL(nm, f, hl) {.name = nm, .type = GW_PARAM_LONG, .offset = OFF(f), .unit = "", .help = hl}
+#define RA(nm, f, un, r, c, hl) \
+    {.name = nm, .type = GW_PARAM_DARRAY, .offset = OFF(f), .unit = un, .rows = r, .cols = c, .help = hl}
+
+static const gw_param disp_fields[] = {
+    RI("column", column, "0: dispersion, 1: column wall-force spectrum (column_n)"),
+    RI("nq", r.nq, "wavenumbers qa = 2 pi j / n (periodic) or pi j / (n + 1) (fixed), j = 1..nq"),
+    RI("n_omega", r.n_omega, "frequency bins"),
+    RA("q", r.qa, "rad", "nq", NULL, "qa, rad per bead"),
+    RA("omega_ridge", r.omega_ridge, "rad/s", "nq", NULL, "frequency of maximum power"),
+    RA("omega_theory", r.omega_theory, "rad/s", "nq", NULL, "2 sqrt(kappa/m) |sin(qa/2)| (1.6)"),
+    RA("ridge_power", r.ridge_power, "m^2/s^2", "nq", NULL, "power at the ridge"),
+    {.name = "resolved", .type = GW_PARAM_IARRAY, .offset = OFF(r.resolved), .unit = "", .rows = "nq",
+     .help = "1: the ridge counts (min-bins)"},
+    RA("power", r.power, "m^2/s^2", "nq", "n_omega", "|V(q, omega)|^2 [q, omega bin]"),
+    RD("d_omega", r.d_omega, "rad/s", "bin spacing"),
+    RD("d0", r.d0, "m", "static overlap (f0/k)^(2/3)"),
+    RD("kappa", r.kappa, "N/m", "linear contact stiffness"),
+    RD("a", r.a, "m", "lattice spacing 2R - d0"),
+    RD("omega_c_theory", r.omega_c_theory, "rad/s", "cutoff 2 sqrt(kappa/m)"),
+    RD("omega_c_measured", r.omega_c_measured, "rad/s", "highest resolved ridge"),
+    RD("omega_c_rel_err", r.omega_c_rel_err, "", "its relative error"),
+    RD("omega_edge", r.omega_edge, "rad/s", "edge of the q-summed power (1e-3 of its peak)"),
+    RD("ridge_max_rel_err", r.ridge_max_rel_err, "", "max |ridge - theory| / theory over resolved q"),
+    RI("n_resolved", r.n_resolved, "resolved wavenumbers"),
+    RD("qa_resolved_min", r.qa_resolved_min, "rad", "smallest resolved qa"),
+    RD("qa_resolved_max", r.qa_resolved_max, "rad", "largest resolved qa"),
+    RD("c0", r.c0_theory, "m/s", "long-wave speed a sqrt(kappa/m)"),
+    RD("c0_measured", r.c0_measured, "m/s", "long-wave fit"),
+    RD("c0_rel_err", c0_rel_err, "", "|c0_measured / c0 - 1|"),
+    RD("max_overlap_dev", r.max_overlap_dev, "", "max |d - d0| / d0 (linearity)"),
+    RD("dt_step", r.dt_step, "s", "RK4 step"),
+    RD("t_total", r.t_total, "s", "time sampled"),
+    RL("steps", r.stats.steps, "solver steps"),
+    RL("rhs_evals", r.stats.rhs_evals, "right-hand side evaluations"),
+    RD("integrate_ms", r.integrate_ms, "ms", "integration time"),
+    RD("fft_ms", r.fft_ms, "ms", "transform time"),
+    RD("mass", mass, "kg", "bead mass"),
+    RD("k", k, "N/m^1.5", "bead-bead Hertz coefficient"),
+    RD("kwall", kwall, "N/m^1.5", "column mode: wall coefficient"),
+    RD("radius", radius, "m", "bead radius"),
+    RD("wall_time_ms", wall_time_ms, "ms", "wall-clock time"),
+    RI("column_n", column_n, "column mode: beads"),
+    RD("v_imp", v_imp, "m/s", "column mode: impact velocity"),
+    RD("tau_n", tau_n, "s", "column mode: contact time"),
+    RD("period", period, "s", "column mode: mean spacing of wall-force maxima P"),
+    RI("n_maxima", n_maxima, "column mode: wall-force maxima"),
+    RD("dt_out", dt_out, "s", "sampling interval (dispersion) or trace sampling (column)"),
+    RD("rtol", rtol, "", "relative tolerance used"),
+    RD("atol", atol, "", "absolute tolerance used"),
+    RI("len", sp.len, "column mode: spectrum bins"),
+    RA("freq", sp.freq, "Hz", "len", NULL, "column mode: frequencies"),
+    RA("spectrum", sp.power, "N^2 s^2", "len", NULL, "column mode: wall-force power"),
+    RD("f_peak", sp.f_peak, "Hz", "column mode: spectrum peak (against 1/P)"),
+    RD("df", sp.df, "Hz", "column mode: bin spacing"),
+    RD("f_min", sp.f_min, "Hz", "column mode: lowest frequency searched"),
+    RI("samples", sp.samples, "column mode: uniform samples"),
+    GW_PARAM_END};
+
+const gw_param *gw_chain_dispersion_setup_params(void) { return disp_params; }
+const gw_param *gw_chain_dispersion_outcome_fields(void) { return disp_fields; }
+
+int gw_chain_dispersion_setup_init(gw_chain_dispersion_setup *s)
+{
+    memset(s, 0, sizeof *s);
+    return gw_param_init(disp_params, s, NULL);
+}
+
+void gw_chain_dispersion_setup_clear(gw_chain_dispersion_setup *s)
+{
+    gw_param_clear(disp_params, s);
+}
+
+void gw_chain_dispersion_outcome_free(gw_chain_dispersion_outcome *out)
+{
+    gw_chain_disp_result_free(&out->r);
+    gw_chain_spectrum_free(&out->sp);
+    memset(out, 0, sizeof *out);
+}
+
+static const char *choice(const gw_chain_dispersion_setup *s, const char *row, const char *def, char *buf,
+                          size_t n)
+{
+    return gw_param_format(gw_param_find(disp_params, row), s, buf, n) > 0 ? buf : def;
+}
+
+int gw_chain_dispersion_solver(const gw_chain_dispersion_setup *s, const gw_solver_type **type,
+                               gw_solver_params *sp, gw_err *err)
+{
+    char sname[16], mname[16];
+    const char *sv = choice(s, "solver", "rk4", sname, sizeof sname);
+    const char *mv = choice(s, "method", "default", mname, sizeof mname);
+    *type = gw_solver_type_find(sv);
+    int m = gw_solver_method_find(mv);
+    int ok = m == GW_METHOD_DEFAULT || (*type == gw_solver_cvode && (m == GW_CVODE_ADAMS || m == GW_CVODE_BDF)) ||
+             (*type == gw_solver_arkode && (m == GW_ARKODE_ERK || m == GW_ARKODE_DIRK));
+    if (!*type || !ok)
+        return gw_err_set(err, GW_EINVAL, "method: '%s' is not a method of solver %s (cvode: adams, bdf; "
+                          "arkode: erk, dirk; rk4: none)", mv, sv);
+    *sp = gw_solver_params_default();
+    sp->method = m;
+    sp->rtol = isnan(s->rtol) ? 1e-10 : s->rtol;
+    sp->atol = isnan(s->atol) ? 1e-10 : s->atol;
+    return gw_solver_tolerances_check(sp->rtol, sp->atol, "rtol", "atol", err);
+}
+
+/* column_n > 0: one collision, then the wall-force spectrum over [0, tau_N]. */
+static int run_column(const gw_chain_dispersion_setup *s, gw_chain_dispersion_outcome *out, gw_err *err)
+{
+    gw_chain_params p = gw_chain_params_default();
+    p.n = (int)s->column_n;
+    p.v_imp = s->vimp;
+    gw_chain_run_opts o = gw_chain_run_opts_default();
+    const gw_solver_type *type;
+    int rc = gw_chain_dispersion_solver(s, &type, &o.sp, err);
+    if (rc != GW_OK)
+        return rc;
+    if (s->solver >= 0)
+        o.solver = type;
+    else
+        o.sp.method = GW_METHOD_DEFAULT;
+    o.sp.rtol = isnan(s->rtol) ? 1e-12 : s->rtol; /* the tolerances of `granwave chain` */
+    o.sp.atol = isnan(s->atol) ? 1e-12 : s->atol;
+    o.dt_out = gw_chain_tau1(p.mass, p.kwall, p.v_imp) / 200;
+    gw_chain *ch = NULL;
+    gw_chain_trace tr;
+    gw_chain_trace_init(&tr, p.n);
+    o.sample = gw_chain_trace_sample;
+    o.sample_ctx = &tr;
+    gw_chain_result r;
+    memset(&r, 0, sizeof r);
+    rc = gw_chain_create(&p, &ch, err);
+    if (rc == GW_OK)
+        rc = gw_chain_collide(ch, &o, &r, err);
+    if (rc == GW_OK)
+        rc = gw_chain_wall_spectrum(&tr, 0.0, r.tau_n, o.dt_out, 0.0, s->fftw_measure, &out->sp, err);
+    out->column = 1;
+    out->column_n = p.n;
+    out->v_imp = p.v_imp;
+    out->mass = p.mass;
+    out->k = p.k;
+    out->kwall = p.kwall;
+    out->radius = p.radius;
+    out->dt_out = o.dt_out;
+    out->rtol = o.sp.rtol;
+    out->atol = o.sp.atol;
+    out->tau_n = r.tau_n;
+    out->period = r.period;
+    out->n_maxima = r.n_maxima;
+    gw_chain_result_free(&r);
+    gw_chain_trace_free(&tr);
+    gw_chain_free(ch);
+    return rc;
+}
+
+int gw_chain_dispersion_run(const gw_chain_dispersion_setup *s, gw_chain_dispersion_outcome *out, gw_err *err)
+{
+    memset(out, 0, sizeof *out);
+    int rc = gw_param_check(disp_params, s, err);
+    if (rc != GW_OK)
+        return rc;
+    double t0 = gw_clock_ms();
+    if (s->column_n > 0) {
+        rc = run_column(s, out, err);
+        out->wall_time_ms = gw_clock_ms() - t0;
+        return rc;
+    }
+    gw_chain_disp_params p = gw_chain_disp_params_default();
+    p.n = (int)s->n;
+    p.f0 = s->f0;
+    p.ends = s->ends == 1 ? GW_CHAIN_DISP_FIXED : GW_CHAIN_DISP_PERIODIC;
+    p.t_samples = (int)s->t_samples;
+    p.dt_sample = s->dt_out;
+    p.steps_per_sample = (int)s->steps_per_sample;
+    p.amp = s->amp;
+    p.seed = (unsigned long)s->seed;
+    p.min_bins = s->min_bins;
+    p.fftw_measure = s->fftw_measure;
+    const gw_solver_type *type;
+    gw_solver_params sp;
+    if ((rc = gw_chain_dispersion_solver(s, &type, &sp, err)) != GW_OK)
+        return rc;
+    if ((rc = gw_chain_disp_params_validate(&p, err)) != GW_OK) {
+        if (strncmp(err->msg, "--", 2) == 0) { /* the model names its fields as flags */
+            char tmp[sizeof err->msg];
+            snprintf(tmp, sizeof tmp, "%s", err->msg + 2);
+            gw_err_set(err, rc, "%s", tmp);
+        }
+        return rc;
+    }
+    rc = gw_chain_disp_run(&p, type, &sp, &out->r, err);
+    out->wall_time_ms = gw_clock_ms() - t0;
+    out->c0_rel_err = fabs(out->r.c0_measured / out->r.c0_theory - 1);
+    out->mass = p.mass;
+    out->k = p.k;
+    out->radius = p.radius;
+    out->kwall = NAN;
+    out->dt_out = out->r.dt_sample;
+    out->rtol = sp.rtol;
+    out->atol = sp.atol;
+    return rc;
+}

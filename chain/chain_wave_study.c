@@ -1,0 +1,581 @@
+/*
+ * chain_wave_study.c: the wave-speed and soft-wall studies as library calls
+ * (gw_chain_study.h); `granwave wavespeed` (chain_wavespeed.c) and `granwave
+ * softwall` (chain_softwall.c) print what these compute.
+ *
+ * Wave speed against v_imp (docs/physics.md 1.3), three independent ways:
+ *   (a) v_tq    = 4R / T_q, T_q the slope of tau_N against N - 1 (F.4, F.6);
+ *   (b) v_front = the compression front's time of flight: the first time each
+ *       contact carries threshold x F_max(1) (F.13), position 2R i fitted
+ *       linearly against time over contacts 2..N-2 of the longest column;
+ *   (c) v_group = 2R sqrt(kappa/m), kappa = (3/2) k^(2/3) F^(1/3) (physics.md
+ *       1.6) at the mean wall force F = impulse/tau_N of the longest column, and
+ *       v_group/sqrt(3/2), the front speed V of the momentum balance F.27
+ *       (k d^(3/2) = m v_imp V/(2R) gives c0 = sqrt(3/2) V).
+ *   Each fitted as v = A v_imp^beta (log-log), A as C3 in
+ *   v = C3 (k/m)^(2/5) R v_imp^beta (F.16; F.27: C3 = 2); the period as
+ *   P = C2 (m/k)^(2/5) v_imp^(-1/5) (F.15).
+ * Soft wall: K_c = (c_tau/4)^(5/2) (5k/4) (F.22), rigid if K > K_c; N_d the first
+ *   N from which F_max stays within tol of the plateau F_max(n_max) (at least
+ *   SATURATION_RUN sizes, else not reached); N_d predicted ceil(tau_max(N_d)/T_q)
+ *   (F.8) and its fixed point; T_q measured on a steel wall (slope over N = 1..20).
+ *   With sheets: each sheet of Table 2 under the sheet law (chain_sheets.c),
+ *   model against measured (h = 2.9 mm).
+ * Units: SI (m, s, kg, N, N/m^1.5).
+ */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "chain_setup_rows.h"
+
+#define G_EARTH 9.81
+#define SATURATION_RUN 6
+
+/* ---- the tables of the inputs ---- */
+
+#define ROW(nm, ty, f, un, lo, hi, op, df, mv, hl)                                             \
+    {.name = nm, .type = ty, .offset = OFF(f), .unit = un, .min = lo, .max = hi, .open_min = op, \
+     .def = df, .metavar = mv, .help = hl}
+#define CHOICE(nm, f, ch, df, mv, hl)                                                          \
+    {.name = nm, .type = GW_PARAM_CHOICE, .offset = OFF(f), .unit = "", .def = df, .choices = ch, \
+     .metavar = mv, .help = hl}
+
+#define OFF(f) offsetof(gw_chain_wavespeed_setup, col.f)
+#define OWN(f) offsetof(gw_chain_wavespeed_setup, f)
+static const gw_param ws_params[] = {
+    {.name = "vimp", .type = GW_PARAM_LIST, .offset = OWN(vimp), .unit = "m/s", .min = 0, .max = GW_CHAIN_VIMP_MAX,
+     .open_min = 1, .def = "0.075,0.15,0.3,0.5", .metavar = "V,V..",
+     .help = "impact velocities, m/s [0.075,0.15,0.3,0.5]"},
+    {.name = "n", .type = GW_PARAM_RANGE, .offset = OWN(n), .unit = "", .min = 1, .max = 100000, .def = "5:40",
+     .metavar = "A:B", .help = "column sizes for the tau_N fit; B is the front column [5:40]"},
+    {.name = "threshold", .type = GW_PARAM_DOUBLE, .offset = OWN(threshold), .unit = "", .min = 0, .max = 1,
+     .open_min = 1, .def = "0.1", .metavar = "F", .help = "front threshold as a fraction of F_max(1) [0.1]"},
+    {.name = "jobs", .type = GW_PARAM_LONG, .offset = OWN(jobs), .unit = "", .min = 0, .max = 1024, .def = "0",
+     .metavar = "J", .help = "threads [0 = one per CPU]"},
+    GW_CHAIN_MODEL_ROWS
+    GW_PARAM_END};
+#undef OFF
+#undef OWN
+
+#define OFF(f) offsetof(gw_chain_softwall_setup, col.f)
+#define OWN(f) offsetof(gw_chain_softwall_setup, f)
+static const gw_param sw_params[] = {
+    {.name = "n", .type = GW_PARAM_RANGE, .offset = OWN(n), .unit = "", .min = 1, .max = 100000, .def = "1:30",
+     .metavar = "A:B", .help = "column sizes [1:30]"},
+    {.name = "vimp", .type = GW_PARAM_DOUBLE, .offset = OWN(vimp), .unit = "m/s", .min = 0, .max = GW_CHAIN_VIMP_MAX,
+     .open_min = 1, .metavar = "V", .help = "impact velocity, m/s [0.2385 = h 2.9 mm]"},
+    {.name = "tol", .type = GW_PARAM_DOUBLE, .offset = OWN(tol), .unit = "", .min = 0, .max = 0.5, .open_min = 1,
+     .def = "0.01", .metavar = "F", .help = "plateau tolerance for N_d (fraction) [0.01]"},
+    {.name = "sheets", .type = GW_PARAM_FLAG, .offset = OWN(sheets), .unit = "", .min = 0, .max = 1, .def = "0",
+     .help = "the paper's sheets (Table 2) with fitted K_eff"},
+    {.name = "jobs", .type = GW_PARAM_LONG, .offset = OWN(jobs), .unit = "", .min = 0, .max = 1024, .def = "0",
+     .metavar = "J", .help = "threads [0 = one per CPU]"},
+    GW_CHAIN_MODEL_ROWS
+    GW_PARAM_END};
+#undef OFF
+#undef OWN
+
+const gw_param *gw_chain_wavespeed_setup_params(void) { return ws_params; }
+const gw_param *gw_chain_softwall_setup_params(void) { return sw_params; }
+
+int gw_chain_wavespeed_setup_init(gw_chain_wavespeed_setup *s)
+{
+    memset(s, 0, sizeof *s);
+    int rc = gw_chain_setup_init(&s->col);
+    return rc == GW_OK ? gw_param_init(ws_params, s, NULL) : rc;
+}
+
+void gw_chain_wavespeed_setup_clear(gw_chain_wavespeed_setup *s)
+{
+    gw_param_clear(ws_params, s);
+    gw_chain_setup_clear(&s->col);
+}
+
+int gw_chain_softwall_setup_init(gw_chain_softwall_setup *s)
+{
+    memset(s, 0, sizeof *s);
+    int rc = gw_chain_setup_init(&s->col);
+    return rc == GW_OK ? gw_param_init(sw_params, s, NULL) : rc;
+}
+
+void gw_chain_softwall_setup_clear(gw_chain_softwall_setup *s)
+{
+    gw_param_clear(sw_params, s);
+    gw_chain_setup_clear(&s->col);
+}
+
+/* ---- the tables of the results ---- */
+
+#define RD(T, nm, f, un, hl) {.name = nm, .type = GW_PARAM_DOUBLE, .offset = offsetof(T, f), .unit = un, .help = hl}
+#define RI(T, nm, f, hl) {.name = nm, .type = GW_PARAM_INT, .offset = offsetof(T, f), .unit = "", .help = hl}
+#define RA(T, nm, f, un, r, c, hl) \
+    {.name = nm, .type = GW_PARAM_DARRAY, .offset = offsetof(T, f), .unit = un, .rows = r, .cols = c, .help = hl}
+#define RIA(T, nm, f, r, hl) \
+    {.name = nm, .type = GW_PARAM_IARRAY, .offset = offsetof(T, f), .unit = "", .rows = r, .help = hl}
+
+#define W gw_chain_wavespeed_outcome
+#define WFIT(k, j, nm, un, hl) RD(W, nm, fits[k][j], un, hl)
+#define WFITS(k, w, hl)                                                         \
+    WFIT(k, 0, "fit_" w "_beta", "", "exponent of v = A v_imp^beta, " hl),      \
+    WFIT(k, 1, "fit_" w "_beta_err", "", "its standard error"),               \
+    WFIT(k, 2, "fit_" w "_prefactor", "", "A (SI units of v over v_imp^beta)"), \
+    WFIT(k, 3, "fit_" w "_c3", "", "A as C3 of (F.16)")
+static const gw_param ws_fields[] = {
+    RI(W, "nv", nv, "impact velocities"),
+    RA(W, "v_imp", v_imp, "m/s", "nv", NULL, "impact velocity"),
+    RA(W, "v_tq", v_tq, "m/s", "nv", NULL, "4R/T_q (F.6)"),
+    RA(W, "v_front", v_front, "m/s", "nv", NULL, "time of flight of the compression front"),
+    RA(W, "v_group", v_group, "m/s", "nv", NULL, "long-wave group speed at the mean wall force (1.6)"),
+    RA(W, "v_group_front", v_group_front, "m/s", "nv", NULL, "v_group/sqrt(3/2): the front speed of F.27"),
+    RA(W, "t_q", t_q, "s", "nv", NULL, "slope of tau_N against N - 1 (F.4)"),
+    RA(W, "mean_wall_force", mean_wall_force, "N", "nv", NULL, "impulse/tau_N of the longest column"),
+    RA(W, "period", period, "s", "nv", NULL, "mean wall-force period over N >= 10"),
+    RD(W, "beta", beta, "", "exponent of 4R/T_q against v_imp (F.16: 1/5)"),
+    RD(W, "beta_err", beta_err, "", "its standard error"),
+    RD(W, "c3", c3, "", "C3 of the 4R/T_q fit (F.16)"),
+    RD(W, "c3_theory", c3_theory, "", "C3 of the momentum balance (F.27): 2"),
+    WFITS(0, "tq", "4R/T_q"), WFITS(1, "front", "front"), WFITS(2, "group", "group"),
+    WFITS(3, "group_front", "group/sqrt(3/2)"),
+    RD(W, "c2", c2, "", "C2 of P = C2 (m/k)^(2/5) v_imp^(-1/5) (F.15)"),
+    RD(W, "beta_period", beta_period, "", "exponent of P against v_imp (F.15: -1/5)"),
+    RD(W, "beta_period_err", beta_period_err, "", "its standard error"),
+    RD(W, "max_disagreement", max_disagreement, "", "largest relative difference of tq, front, group/sqrt(3/2)"),
+    RD(W, "front_threshold_fraction", threshold, "", "front threshold / F_max(1)"),
+    RI(W, "n_min", n_min, "smallest column"),
+    RI(W, "n_max", n_max, "longest column (the front's)"),
+    RD(W, "wall_time_s", wall_time_s, "s", "wall-clock time"),
+    GW_PARAM_END};
+#undef W
+
+#define S gw_chain_softwall_outcome
+static const gw_param sw_fields[] = {
+    RI(S, "nw", nw, "walls (1, or the sheets of Table 2)"),
+    RI(S, "nn", nn, "column sizes"),
+    RI(S, "nsheet", nsheet, "sheets compared with the paper (0, 1 or nw)"),
+    RD(S, "v_imp", v_imp, "m/s", "impact velocity"),
+    RD(S, "k_c", k_c, "N/m^1.5", "critical wall coefficient K_c (F.22)"),
+    RD(S, "t_q_rigid", t_q_rigid, "s", "T_q on a steel wall (slope of tau_N, N = 1..20)"),
+    RD(S, "tol", tol, "", "plateau tolerance"),
+    RI(S, "sheet_law", sheet_law, "0 fitted, 1 hertz, 2 layer, 3 material"),
+    RA(S, "n", n, "", "nn", NULL, "column sizes N"),
+    RA(S, "kwall", kwall, "N/m^1.5", "nw", NULL, "wall coefficient K [wall]"),
+    RIA(S, "rigid", rigid, "nw", "1: K > K_c [wall]"),
+    RIA(S, "saturated", saturated, "nw", "1: F_max reached its plateau within the sizes [wall]"),
+    RA(S, "f_max", f_max, "N", "nw", "nn", "largest wall force [wall, N]"),
+    RA(S, "tau_max", tau_max, "s", "nw", "nn", "time of f_max [wall, N]"),
+    RA(S, "n_d", n_d, "", "nw", NULL, "saturation number N_d (NaN: not reached) [wall]"),
+    RA(S, "n_d_predicted", n_d_predicted, "", "nw", NULL, "ceil(tau_max(N_d)/T_q) (F.8) [wall]"),
+    RA(S, "n_d_fixed_point", n_d_fixed_point, "", "nw", NULL, "smallest N >= ceil(tau_max(N)/T_q) [wall]"),
+    RA(S, "f_plateau", f_plateau, "N", "nw", NULL, "F_max of the longest column [wall]"),
+    RA(S, "tau_max_at_n_d", tau_max_at_n_d, "s", "nw", NULL, "tau_max at N_d [wall]"),
+    {.name = "sheet_table", .type = GW_PARAM_DARRAY, .offset = offsetof(S, sheet_table), .unit = "SI",
+     .rows = "nsheet", .cols = "25", .choices = GW_SOFTWALL_SHEET_COLS,
+     .help = "model against measured per sheet (s, N, m, N/m^1.5; NaN: not defined) [sheet, column]"},
+    {.name = "sheet_names", .type = GW_PARAM_TEXT, .offset = offsetof(S, sheet_names), .unit = "",
+     .help = "the compared sheets, comma-separated"},
+    {.name = "sheet_materials", .type = GW_PARAM_TEXT, .offset = offsetof(S, sheet_materials), .unit = "",
+     .help = "what their constants describe, separated by semicolons"},
+    RD(S, "wall_time_s", wall_time_s, "s", "wall-clock time"),
+    GW_PARAM_END};
+#undef S
+
+const gw_param *gw_chain_wavespeed_outcome_fields(void) { return ws_fields; }
+const gw_param *gw_chain_softwall_outcome_fields(void) { return sw_fields; }
+
+void gw_chain_wavespeed_outcome_free(gw_chain_wavespeed_outcome *out)
+{
+    free(out->v_imp); /* one block */
+    memset(out, 0, sizeof *out);
+}
+
+void gw_chain_softwall_outcome_free(gw_chain_softwall_outcome *out)
+{
+    free(out->n);
+    free(out->rigid);
+    free(out->sheet_table);
+    free(out->sheet_names);
+    free(out->sheet_materials);
+    memset(out, 0, sizeof *out);
+}
+
+/* ---- wave speed ---- */
+
+static void power_fit(const double *v, const double *s, int n, double scale, double f[4])
+{
+    gw_linfit lf;
+    f[0] = f[1] = f[2] = f[3] = NAN;
+    if (n >= 2 && gw_fit_power(v, s, n, &lf) == GW_OK) {
+        f[0] = lf.c1;
+        f[1] = lf.c1_err;
+        f[2] = exp(lf.c0);
+        f[3] = f[2] / scale;
+    }
+}
+
+/* Front speed of one long column: linear fit of 2R k against front_t[k]. */
+static double front_speed(const gw_chain_params *p, const gw_chain_run_opts *run, double frac, gw_err *err)
+{
+    gw_chain *c = NULL;
+    gw_chain_run_opts o = *run;
+    o.front_threshold = frac * gw_chain_fmax1(p->mass, p->kwall, p->v_imp);
+    gw_chain_result r;
+    memset(&r, 0, sizeof r);
+    double speed = NAN;
+    int rc = gw_chain_create(p, &c, err);
+    if (rc == GW_OK)
+        rc = gw_chain_collide(c, &o, &r, err);
+    if (rc == GW_OK) {
+        int n = p->n, m = 0;
+        double *x = malloc(2 * (size_t)n * sizeof *x), *y = x ? x + n : NULL;
+        for (int k = 2; x && k <= n - 2; k++)
+            if (isfinite(r.front_t[k])) {
+                x[m] = r.front_t[k];
+                y[m] = 2 * p->radius * k;
+                m++;
+            }
+        gw_linfit lf;
+        if (m >= 3 && gw_fit_linear(x, y, m, &lf) == GW_OK)
+            speed = lf.c1;
+        free(x);
+    }
+    gw_chain_result_free(&r);
+    gw_chain_free(c);
+    return speed;
+}
+
+/* tau_N line, period, mean wall force and the three speeds at velocity iv. */
+static int ws_velocity(const gw_chain_params *p, const gw_chain_run_opts *run, const gw_chain_result *rv,
+                       int a, int per_v, double frac, int iv, gw_chain_wavespeed_outcome *o, gw_err *err)
+{
+    double *x = malloc(2 * (size_t)per_v * sizeof *x);
+    if (!x)
+        return gw_err_set(err, GW_ENOMEM, "wavespeed: out of memory");
+    int np = 0;
+    o->period[iv] = 0;
+    for (int j = 0; j < per_v; j++) {
+        x[j] = a + j - 1;
+        x[per_v + j] = rv[j].tau_n;
+        if (a + j >= 10 && rv[j].n_maxima >= 2) {
+            o->period[iv] += rv[j].period;
+            np++;
+        }
+    }
+    o->period[iv] = np ? o->period[iv] / np : NAN;
+    gw_linfit lf;
+    gw_fit_linear(x, x + per_v, per_v, &lf);
+    free(x);
+    o->t_q[iv] = lf.c1;
+    o->v_tq[iv] = 4 * p->radius / lf.c1;
+    const gw_chain_result *rl = &rv[per_v - 1];
+    o->mean_wall_force[iv] = rl->impulse / rl->tau_n;
+    double kappa = 1.5 * pow(p->k, 2.0 / 3.0) * cbrt(o->mean_wall_force[iv]);
+    o->v_group[iv] = 2 * p->radius * sqrt(kappa / p->mass);
+    o->v_group_front[iv] = o->v_group[iv] / sqrt(1.5);
+    gw_chain_params q = *p;
+    q.v_imp = o->v_imp[iv];
+    o->v_front[iv] = front_speed(&q, run, frac, err);
+    if (!isfinite(o->v_front[iv])) {
+        char tmp[sizeof err->msg];
+        snprintf(tmp, sizeof tmp, "%s", err->msg);
+        return gw_err_set(err, GW_ESOLVER, "wavespeed: no front fit at v_imp = %g (%s)", o->v_imp[iv], tmp);
+    }
+    return GW_OK;
+}
+
+static void ws_fits(const gw_chain_params *p, gw_chain_wavespeed_outcome *o)
+{
+    int nv = o->nv;
+    const double *v = o->v_imp;
+    double scale = pow(p->k / p->mass, 0.4) * p->radius, fp[4];
+    const double *speeds[4] = {o->v_tq, o->v_front, o->v_group, o->v_group_front};
+    for (int i = 0; i < 4; i++)
+        power_fit(v, speeds[i], nv, scale, o->fits[i]);
+    power_fit(v, o->period, nv, pow(p->mass / p->k, 0.4), fp);
+    o->beta = o->fits[0][0];
+    o->beta_err = o->fits[0][1];
+    o->c3 = o->fits[0][3];
+    o->c3_theory = 2.0;
+    o->beta_period = fp[0];
+    o->beta_period_err = fp[1];
+    o->c2 = o->max_disagreement = 0;
+    for (int iv = 0; iv < nv; iv++) {
+        o->c2 += o->period[iv] * pow(v[iv], 0.2) / pow(p->mass / p->k, 0.4) / nv;
+        double s3[3] = {o->v_tq[iv], o->v_front[iv], o->v_group_front[iv]};
+        for (int i = 0; i < 3; i++)
+            for (int j = 0; j < 3; j++)
+                o->max_disagreement = fmax(o->max_disagreement, fabs(s3[i] - s3[j]) / s3[j]);
+    }
+}
+
+int gw_chain_wavespeed_run(const gw_chain_wavespeed_setup *s, gw_progress_fn progress, void *pctx,
+                           gw_chain_wavespeed_outcome *out, gw_err *err)
+{
+    memset(out, 0, sizeof *out);
+    int rc = gw_param_check(ws_params, s, err);
+    if (rc != GW_OK)
+        return rc;
+    if (s->col.radii.n > 0)
+        return gw_err_set(err, GW_EINVAL, "radii: per-bead radii need a fixed N (use the chain study)");
+    long a = s->n[0], b = s->n[1];
+    if (b - a < 2 || b < 8)
+        return gw_err_set(err, GW_EINVAL, "n: need at least 3 sizes and a largest column of >= 8 beads");
+    int nv = s->vimp.n, per_v = (int)(b - a + 1);
+    if (nv < 1)
+        return gw_err_set(err, GW_EINVAL, "vimp: no impact velocity");
+    double *blk = calloc(8 * (size_t)nv, sizeof *blk);
+    gw_chain_result *res = calloc((size_t)nv * (size_t)per_v, sizeof *res);
+    if (!blk || !res) {
+        free(blk);
+        free(res);
+        return gw_err_set(err, GW_ENOMEM, "wavespeed: out of memory");
+    }
+    double **arr[] = {&out->v_imp, &out->v_tq, &out->v_front, &out->v_group, &out->v_group_front,
+                      &out->t_q, &out->mean_wall_force, &out->period};
+    for (int i = 0; i < 8; i++)
+        *arr[i] = blk + (size_t)i * (size_t)nv;
+    out->nv = nv;
+    memcpy(out->v_imp, s->vimp.v, (size_t)nv * sizeof *out->v_imp);
+    out->threshold = s->threshold;
+    out->n_min = (int)a;
+    out->n_max = (int)b;
+    gw_chain_setup col = s->col; /* shallow: no radii */
+    col.n = b;
+    col.vimp = out->v_imp[0];
+    gw_chain_resolved r;
+    rc = gw_chain_setup_resolve(&col, &r, err);
+    double t0 = gw_clock_ms();
+    if (rc == GW_OK)
+        rc = gw_chain_sweep_n_progress(&r.params, &r.run, out->v_imp, nv, (int)a, (int)b, (int)s->jobs, progress,
+                                       pctx, res, err);
+    for (int iv = 0; rc == GW_OK && iv < nv; iv++)
+        rc = ws_velocity(&r.params, &r.run, &res[iv * per_v], (int)a, per_v, s->threshold, iv, out, err);
+    out->wall_time_s = (gw_clock_ms() - t0) / 1e3;
+    if (rc == GW_OK)
+        ws_fits(&r.params, out);
+    for (int i = 0; i < nv * per_v; i++)
+        gw_chain_result_free(&res[i]);
+    free(res);
+    gw_chain_resolved_free(&r);
+    return rc;
+}
+
+/* ---- soft wall ---- */
+
+typedef struct sw_result {
+    int n_d;      /* -1: not saturated within the sizes run */
+    int n_d_pred; /* (F.8) at the measured N_d, -1 without N_d */
+    int n_d_fix;  /* smallest N >= ceil(tau_max(N)/T_q), -1 if none */
+    double plateau;
+} sw_result;
+
+static sw_result analyse(const gw_chain_result *r, int n_lo, int n_hi, double tol, double t_q)
+{
+    sw_result s = {n_hi, -1, -1, r[n_hi - n_lo].f_max};
+    for (int n = n_hi; n >= n_lo; n--) {
+        if (fabs(r[n - n_lo].f_max - s.plateau) > tol * s.plateau)
+            break;
+        s.n_d = n;
+    }
+    if (n_hi - s.n_d + 1 < SATURATION_RUN && s.n_d > n_lo)
+        s.n_d = -1;
+    if (s.n_d > 0)
+        s.n_d_pred = (int)ceil(r[s.n_d - n_lo].tau_max / t_q - 1e-9);
+    for (int n = n_lo; n <= n_hi; n++)
+        if (n >= (int)ceil(r[n - n_lo].tau_max / t_q - 1e-9)) {
+            s.n_d_fix = n;
+            break;
+        }
+    return s;
+}
+
+/* Rigid-wall T_q of the beads at v: slope of tau_N over N = 1..20. */
+static int measure_tq(const gw_chain_resolved *rs, double v, int jobs, double *t_q, gw_err *err)
+{
+    gw_chain_params p = rs->params;
+    const gw_material *steel = gw_material_find("steel");
+    p.kwall = gw_hertz_coefficient(p.radius, steel, INFINITY, steel);
+    memset(&p.wall, 0, sizeof p.wall); /* the bare sensor */
+    gw_chain_result r[20];
+    int rc = gw_chain_sweep_n_progress(&p, &rs->run, &v, 1, 1, 20, jobs, NULL, NULL, r, err);
+    double x[20], y[20];
+    for (int i = 0; i < 20; i++) {
+        x[i] = i;
+        y[i] = r[i].tau_n;
+        gw_chain_result_free(&r[i]);
+    }
+    gw_linfit lf;
+    if (rc == GW_OK && gw_fit_linear(x, y, 20, &lf) == GW_OK)
+        *t_q = lf.c1;
+    return rc;
+}
+
+/* One sheet's row of the sheet table: model against measured (times in s). */
+static void sheet_row(const gw_sheet *sh, const sw_result *sr, const gw_chain_result *r, int n_lo, int n_hi,
+                      double t_q, double kwall, const gw_layer_law *layer, double *row)
+{
+    int nm = (int)sh->n_d, in = nm >= n_lo && nm <= n_hi, k = 0;
+    row[k++] = sh->thickness > 0 ? sh->thickness : NAN;
+    row[k++] = sr->n_d > 0 ? sr->n_d : NAN;
+    row[k++] = sh->n_d;
+    row[k++] = sh->n_d_err;
+    row[k++] = sr->n_d_pred > 0 ? sr->n_d_pred : NAN;
+    row[k++] = n_lo == 1 ? r[0].tau_max : NAN;
+    row[k++] = sh->tau_max1_us * 1e-6;
+    row[k++] = sr->n_d > 0 ? r[sr->n_d - n_lo].tau_max : NAN;
+    row[k++] = sh->tau_max_nd_us * 1e-6;
+    row[k++] = sh->tau_max_nd_err_us * 1e-6;
+    /* tolerance-free comparisons at the measured N_d */
+    row[k++] = in ? r[nm - n_lo].tau_max : NAN;
+    row[k++] = in ? r[nm - n_lo].f_max / sr->plateau : NAN;
+    static const double tols[] = {0.01, 0.02, 0.05, 0.1};
+    for (int i = 0; i < 4; i++) {
+        sw_result x = analyse(r, n_lo, n_hi, tols[i], t_q);
+        row[k++] = x.n_d > 0 ? x.n_d : NAN;
+        row[k++] = x.n_d > 0 ? r[x.n_d - n_lo].tau_max : NAN;
+    }
+    row[k++] = n_lo == 1 ? r[0].f_max : NAN;
+    row[k++] = sr->plateau;
+    row[k++] = n_lo == 1 ? r[0].eps_eff : NAN;
+    row[k++] = kwall;
+    /* contact radius over thickness at the single bead's peak force */
+    row[k++] = layer && n_lo == 1 ? gw_layer_law_contact_radius(layer, gw_layer_law_overlap(layer, r[0].f_max)) /
+                                        gw_layer_law_thickness(layer)
+                                  : NAN;
+}
+
+static int sw_alloc(gw_chain_softwall_outcome *o, int nw, int nn, int nsheet, gw_err *err)
+{
+    o->nw = nw;
+    o->nn = nn;
+    o->ncase = nw * nn;
+    o->nsheet = nsheet;
+    o->n = calloc((size_t)nn + (size_t)nw * (6 + 2 * (size_t)nn), sizeof *o->n);
+    o->rigid = calloc(2 * (size_t)nw, sizeof *o->rigid);
+    o->sheet_table = calloc((size_t)nsheet * GW_SOFTWALL_NSHEET_COLS + 1, sizeof *o->sheet_table);
+    o->sheet_names = calloc((size_t)nsheet * 16 + 1, 1);
+    o->sheet_materials = calloc((size_t)nsheet * 64 + 1, 1);
+    if (!o->n || !o->rigid || !o->sheet_table || !o->sheet_names || !o->sheet_materials)
+        return gw_err_set(err, GW_ENOMEM, "softwall: out of memory");
+    o->saturated = o->rigid + nw;
+    double *b = o->n + nn;
+    double **per_w[] = {&o->kwall, &o->n_d, &o->n_d_predicted, &o->n_d_fixed_point, &o->f_plateau,
+                        &o->tau_max_at_n_d};
+    for (int i = 0; i < 6; i++, b += nw)
+        *per_w[i] = b;
+    o->f_max = b;
+    o->tau_max = b + o->ncase;
+    return GW_OK;
+}
+
+/* The walls' results into out (after every wall has run). */
+static void sw_fill(const gw_chain_softwall_setup *s, const gw_chain_resolved *rs, const gw_chain_result *res,
+                    const sw_result *sr, gw_layer_law *const *lay, gw_chain_softwall_outcome *o)
+{
+    int a = (int)s->n[0], b = (int)s->n[1], nn = o->nn;
+    char name[32];
+    for (int k = 0; k < nn; k++)
+        o->n[k] = a + k;
+    for (int w = 0; w < o->nw; w++) {
+        const gw_chain_result *rw = res + (size_t)w * nn;
+        for (int k = 0; k < nn; k++) {
+            o->f_max[w * nn + k] = rw[k].f_max;
+            o->tau_max[w * nn + k] = rw[k].tau_max;
+        }
+        o->rigid[w] = o->kwall[w] > o->k_c;
+        o->saturated[w] = sr[w].n_d > 0;
+        o->n_d[w] = sr[w].n_d > 0 ? sr[w].n_d : NAN;
+        o->n_d_predicted[w] = sr[w].n_d_pred > 0 ? sr[w].n_d_pred : NAN;
+        o->n_d_fixed_point[w] = sr[w].n_d_fix > 0 ? sr[w].n_d_fix : NAN;
+        o->f_plateau[w] = sr[w].plateau;
+        o->tau_max_at_n_d[w] = sr[w].n_d > 0 ? rw[sr[w].n_d - a].tau_max : NAN;
+    }
+    for (int w = 0; w < o->nsheet; w++) {
+        const gw_sheet *sh = s->sheets ? gw_sheet_get(w)
+                                       : (gw_param_format(gw_param_find(sw_params, "sheet"), s, name, sizeof name) > 0
+                                              ? gw_sheet_find(name)
+                                              : NULL);
+        if (!sh)
+            continue;
+        sheet_row(sh, &sr[w], res + (size_t)w * nn, a, b, o->t_q_rigid, o->kwall[w], s->sheets ? lay[w] : rs->layer,
+                  o->sheet_table + (size_t)w * GW_SOFTWALL_NSHEET_COLS);
+        size_t ln = strlen(o->sheet_names), lm = strlen(o->sheet_materials);
+        snprintf(o->sheet_names + ln, 16, "%s%s", w ? "," : "", sh->name);
+        snprintf(o->sheet_materials + lm, 64, "%s%s", w ? ";" : "", sh->material);
+    }
+}
+
+int gw_chain_softwall_run(const gw_chain_softwall_setup *s, gw_progress_fn progress, void *pctx,
+                          gw_chain_softwall_outcome *out, gw_err *err)
+{
+    memset(out, 0, sizeof *out);
+    int rc = gw_param_check(sw_params, s, err);
+    if (rc != GW_OK)
+        return rc;
+    if (s->col.radii.n > 0)
+        return gw_err_set(err, GW_EINVAL, "radii: per-bead radii need a fixed N (use the chain study)");
+    if (s->sheets && (!isnan(s->col.kwall) || s->col.sheet >= 0))
+        return gw_err_set(err, GW_EINVAL, "%s: has no effect with sheets (each sheet of Table 2 is its own wall)",
+                          s->col.sheet >= 0 ? "sheet" : "kwall");
+    long a = s->n[0], b = s->n[1];
+    if (b - a < 2)
+        return gw_err_set(err, GW_EINVAL, "n: need at least 3 column sizes");
+    double vimp = isnan(s->vimp) ? sqrt(2 * G_EARTH * 2.9e-3) : s->vimp;
+    gw_chain_setup col = s->col; /* shallow: no radii */
+    col.n = a;
+    col.vimp = vimp;
+    col.sheets = s->sheets;
+    if (isnan(col.kwall) && !s->sheets && col.sheet < 0)
+        col.kwall = 1e9; /* the soft wall of the command */
+    int nw = s->sheets ? gw_sheet_count() : 1, per = (int)(b - a + 1);
+    gw_chain_resolved rs;
+    rc = gw_chain_setup_resolve(&col, &rs, err);
+    if (rc != GW_OK) {
+        gw_chain_resolved_free(&rs);
+        return rc;
+    }
+    if ((rc = sw_alloc(out, nw, per, s->sheets ? nw : s->col.sheet >= 0, err)) != GW_OK) {
+        gw_chain_resolved_free(&rs);
+        return rc;
+    }
+    out->v_imp = vimp;
+    out->tol = s->tol;
+    out->sheet_law = (int)rs.law;
+    out->k_c = gw_chain_kc(rs.params.k);
+    out->t_q_rigid = NAN;
+    gw_chain_result *res = calloc((size_t)nw * (size_t)per, sizeof *res);
+    sw_result *sr = calloc((size_t)nw, sizeof *sr);
+    gw_layer_law **lay = calloc((size_t)nw, sizeof *lay);
+    double t0 = gw_clock_ms();
+    rc = res && sr && lay ? measure_tq(&rs, vimp, (int)s->jobs, &out->t_q_rigid, err)
+                          : gw_err_set(err, GW_ENOMEM, "softwall: out of memory");
+    char name[32];
+    const gw_material *bm = gw_material_find(
+        gw_param_format(gw_param_find(sw_params, "material"), s, name, sizeof name) > 0 ? name : "steel");
+    const gw_material *wm = gw_material_find(
+        gw_param_format(gw_param_find(sw_params, "wall-material"), s, name, sizeof name) > 0 ? name : "steel");
+    for (int w = 0; rc == GW_OK && w < nw; w++) {
+        gw_chain_params q = rs.params;
+        if (s->sheets && (rc = gw_sheet_apply(gw_sheet_get(w), rs.law, -1, -1, bm, wm, &q, &lay[w], err)) != GW_OK)
+            break;
+        out->kwall[w] = q.kwall;
+        rc = gw_chain_sweep_n_progress(&q, &rs.run, &vimp, 1, (int)a, (int)b, (int)s->jobs, NULL, NULL,
+                                       res + (size_t)w * per, err);
+        if (rc == GW_OK)
+            sr[w] = analyse(res + (size_t)w * per, (int)a, (int)b, s->tol, out->t_q_rigid);
+        if (rc == GW_OK && progress && progress(pctx, w + 1, nw))
+            rc = gw_err_set(err, GW_ECANCELED, "softwall: stopped by the progress callback");
+    }
+    out->wall_time_s = (gw_clock_ms() - t0) / 1e3;
+    if (rc == GW_OK)
+        sw_fill(s, &rs, res, sr, lay, out);
+    for (int i = 0; res && i < nw * per; i++)
+        gw_chain_result_free(&res[i]);
+    free(res);
+    free(sr);
+    for (int w = 0; lay && w < nw; w++)
+        gw_layer_law_free(lay[w]);
+    free(lay);
+    gw_chain_resolved_free(&rs);
+    return rc;
+}

@@ -26,7 +26,7 @@
 #include "gw_cli.h"
 #include "gw_layer.h"
 #include "layer_commands.h"
-#include "layer_stats.h"
+#include "gw_stats.h"
 
 static const char *summary =
     "Statistics of a layer sweep table (OUT/results.csv of `granwave sweep` with\n"

@@ -29,7 +29,7 @@
 #include <string.h>
 
 #include "gw_test.h"
-#include "layer_stats.h"
+#include "gw_stats.h"
 
 #define COLS "x_impact,bounced,e_n,e,alpha_r,v_ni,v_nr,v_r,penetration,penetration_rm," \
              "dissipated_first_contact,block_loss_first_contact,energy_error,wave_speed,t_end,steps"

@@ -25,7 +25,7 @@
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_multifit_nlinear.h>
 
-#include "layer_stats.h"
+#include "gw_stats.h"
 
 /* ---------------------------------------------------------------- diagram --- */
 

@@ -18,7 +18,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "layer_stats.h"
+#include "gw_stats.h"
 
 const char *const gw_layer_results_required[] = {
     "x_impact", "bounced", "e_n", "e", "alpha_r", "penetration", "penetration_rm",

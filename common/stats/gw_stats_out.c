@@ -12,7 +12,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "layer_stats.h"
+#include "gw_stats.h"
 
 static const char *placement =
     "bouncing lies below the boundary; in each R_b/R_m column H* is placed between the lowest "

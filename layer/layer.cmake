@@ -19,9 +19,6 @@ add_library(gw_layer_obj OBJECT
   ${CMAKE_CURRENT_LIST_DIR}/layer_cli.c
   ${CMAKE_CURRENT_LIST_DIR}/layer_sweep_model.c
   ${CMAKE_CURRENT_LIST_DIR}/layer_stats.c
-  ${CMAKE_CURRENT_LIST_DIR}/layer_stats_table.c
-  ${CMAKE_CURRENT_LIST_DIR}/layer_stats_diagram.c
-  ${CMAKE_CURRENT_LIST_DIR}/layer_stats_out.c
   ${CMAKE_CURRENT_LIST_DIR}/layer_setup.c
   ${CMAKE_CURRENT_LIST_DIR}/layer_make_study.c)
 gw_library_objects(gw_layer_obj)

@@ -1,17 +1,10 @@
 /*
- * layer_stats.c: `granwave layer-stats RESULTS.csv`, the Bourrier analyses of a
- * layer sweep table (docs/physics.md 2.3, 2.5):
- *  - per group (every grid key but `point`): mean and sample standard deviation
- *    of e_n, e, alpha_r (B.16-B.18, bouncing points only) and the penetration,
- *    bounce share and global verdict share >= S (S = 75 % in the paper), the
- *    running means over the first k points (Fig. 10);
- *  - binary-impact check: per R_b/R_m (and incidence) the block's energy loss
- *    in its first contact beside 4 m/(1 + m)^2, m = r^2 (discs) or r^3
- *    (spheres) (B.24-B.28);
- *  - walls: with and without the walls side by side (grid key remove-walls);
- *  - bouncing-occurrence diagram (grid keys rb-rm and height-rm; one diagram
- *    per combination of the other keys): boundary H*(R_b/R_m), R_crit,
- *    (R_min, H_min) and a fit of B.31 (layer_stats_diagram.c).
+ * layer_stats.c: the command `granwave layer-stats RESULTS.csv`: flags, the
+ * text summary and --json / --out around gw_stats_analyse (common/stats/,
+ * the Bourrier analyses of a layer sweep table, docs/physics.md 2.3, 2.5).
+ * It stays in layer/ because it gives the statistics the layer model's
+ * defaults (R_b/R_m, incidence, V_i, density) for the parameters a table
+ * leaves out; the statistics themselves include no model header.
  * Outputs: JSON on stdout (--json) or a text summary; with --out DIR the files
  * groups.csv, convergence.csv, binary.csv, walls.csv, diagram.csv and
  * boundary_fit.json, each written atomically and carrying the version and
@@ -25,8 +18,9 @@
 
 #include "gw_cli.h"
 #include "gw_layer.h"
+#include "gw_layer_study.h"
 #include "layer_commands.h"
-#include "layer_stats.h"
+#include "gw_stats.h"
 
 static const char *summary =
     "Statistics of a layer sweep table (OUT/results.csv of `granwave sweep` with\n"
@@ -43,34 +37,6 @@ static int fail(const char *msg)
     return 2;
 }
 
-/* Parse --fit: names among offset, beta, a_over_b, tan_gamma. */
-static int parse_fit_mask(const char *s, int *mask, gw_err *err)
-{
-    static const struct {
-        const char *name;
-        int bit;
-    } names[] = {{"offset", GW_LAYER_B31_OFFSET}, {"beta", GW_LAYER_B31_BETA},
-                 {"a_over_b", GW_LAYER_B31_AB}, {"tan_gamma", GW_LAYER_B31_TANG}};
-    *mask = 0;
-    const char *p = s;
-    while (*p) {
-        size_t len = strcspn(p, ",");
-        int found = 0;
-        for (size_t i = 0; i < sizeof names / sizeof names[0]; i++)
-            if (strlen(names[i].name) == len && strncmp(p, names[i].name, len) == 0) {
-                *mask |= names[i].bit;
-                found = 1;
-            }
-        if (!found)
-            return gw_err_set(err, GW_EINVAL, "--fit: unknown parameter '%.*s' (offset, beta, a_over_b, tan_gamma)",
-                              (int)len, p);
-        p += len + (p[len] == ',');
-    }
-    if (!*mask)
-        return gw_err_set(err, GW_EINVAL, "--fit: no parameter given");
-    return GW_OK;
-}
-
 static char *command_line(int argc, char **argv)
 {
     size_t len = 64;
@@ -85,202 +51,23 @@ static char *command_line(int argc, char **argv)
     return h;
 }
 
-/* ------------------------------------------------------------ binary table --- */
-
-static int binary_make(layer_stats_run *R)
+/* The layer model's values of the parameters a table may leave out. */
+static gw_stats_defaults layer_defaults(void)
 {
-    const gw_layer_results *t = &R->t;
     const gw_layer_impact_params ip = gw_layer_impact_params_default();
-    int cl = gw_layer_results_col(t, "block_loss_first_contact");
-    R->bin = calloc((size_t)t->nrows, sizeof *R->bin);
-    double *v = malloc((size_t)t->nrows * sizeof *v);
-    if (!R->bin || !v) {
-        free(v);
-        return GW_ENOMEM;
-    }
-    for (long i = 0; i < t->nrows; i++) {
-        double rb = gw_layer_results_value(t, i, "rb-rm", ip.rb_rm);
-        double al = gw_layer_results_value(t, i, "alpha", ip.alpha_deg);
-        int k = 0;
-        while (k < R->nbin && !(R->bin[k].rb_rm == rb && R->bin[k].alpha == al))
-            k++;
-        if (k == R->nbin)
-            R->bin[R->nbin++] = (layer_stats_binary){.rb_rm = rb, .alpha = al};
-    }
-    for (int k = 0; k < R->nbin; k++) {
-        int n = 0;
-        for (long i = 0; i < t->nrows; i++)
-            if (gw_layer_results_value(t, i, "rb-rm", ip.rb_rm) == R->bin[k].rb_rm &&
-                gw_layer_results_value(t, i, "alpha", ip.alpha_deg) == R->bin[k].alpha)
-                v[n++] = t->val[i * t->ncols + cl];
-        gw_layer_moment_of(v, n, &R->bin[k].loss);
-        R->bin[k].disc = gw_layer_binary_loss(R->bin[k].rb_rm, 0);
-        R->bin[k].sphere = gw_layer_binary_loss(R->bin[k].rb_rm, 1);
-    }
-    free(v);
-    return GW_OK;
-}
-
-/* ------------------------------------------------------------------- walls --- */
-
-/* Do groups a and b agree on every grouping key except grid key skip? */
-static int same_except(const gw_layer_results *t, const gw_layer_groups *gs, long ra, long rb,
-                       int skip)
-{
-    for (int k = 0; k < gs->nkeys; k++) {
-        int c = gs->key[k];
-        if (c != skip && strcmp(t->grid_value[ra * t->ngrid + c], t->grid_value[rb * t->ngrid + c]) != 0)
-            return 0;
-    }
-    return 1;
-}
-
-
-static int walls_make(layer_stats_run *R)
-{
-    const gw_layer_results *t = &R->t;
-    int kw = gw_layer_results_key(t, "remove-walls");
-    if (kw < 0)
-        return GW_OK;
-    R->walls = calloc((size_t)R->gs.n, sizeof *R->walls);
-    if (!R->walls)
-        return GW_ENOMEM;
-    for (int a = 0; a < R->gs.n; a++) {
-        long ra = R->gs.g[a].first;
-        if (gw_parse_flag(t->grid_value[ra * t->ngrid + kw]) != 0)
-            continue;
-        for (int b = 0; b < R->gs.n; b++) {
-            long rb = R->gs.g[b].first;
-            if (gw_parse_flag(t->grid_value[rb * t->ngrid + kw]) == 1 && same_except(t, &R->gs, ra, rb, kw)) {
-                R->walls[R->nwalls][0] = a;
-                R->walls[R->nwalls++][1] = b;
-                break;
-            }
-        }
-    }
-    return GW_OK;
-}
-
-/* ---------------------------------------------------------------- diagrams --- */
-
-static void diagram_fit(layer_stats_run *R, layer_stats_diagram *D)
-{
-    const gw_layer_diagram *d = &D->d;
-    const gw_layer_results *t = &R->t;
-    D->offset = isfinite(R->delta_rm) ? R->delta_rm / 2 : d->penetration_rm / 2;
-    D->offset_source = isfinite(R->delta_rm) ? "--delta-rm" : "measured: mean penetration_rm / 2 "
-                                                              "of the cells bracketing the boundary";
-    /* a = (pi/2) rho V_i^2 for the translation of a/b into b */
-    long r0 = R->gs.g[D->groups[0]].first;
-    double vi = gw_layer_results_value(t, r0, "vi", gw_layer_impact_params_default().vi);
-    double rho = gw_layer_results_value(t, r0, "density", gw_layer_params_default().density);
-    D->a = M_PI / 2 * rho * vi * vi;
-    double *x = malloc(2 * ((size_t)d->nx + 1) * sizeof *x), *h = x ? x + d->nx + 1 : NULL;
-    int n = 0;
-    for (int i = 0; x && i < d->nx; i++)
-        if (d->pts[i].kind == GW_LAYER_BND_CROSS) {
-            x[n] = d->pts[i].x;
-            h[n++] = d->pts[i].h;
-        }
-    gw_layer_b31 st = {.offset = D->offset, .beta = 1, .a_over_b = 1,
-                       .tan_gamma = tan(R->gamma_deg * M_PI / 180)};
-    gw_err err = {{0}};
-    if (!x)
-        snprintf(D->fit_reason, sizeof D->fit_reason, "out of memory");
-    else if (!isfinite(D->offset) && !(R->fit_mask & GW_LAYER_B31_OFFSET))
-        snprintf(D->fit_reason, sizeof D->fit_reason, "no offset: no boundary crossing with a "
-                                                      "penetration (give --delta-rm)");
-    else if ((D->fit_ok = gw_layer_b31_fit_points(x, h, n, &st, R->fit_mask, &D->fit, &err) == GW_OK) == 0)
-        snprintf(D->fit_reason, sizeof D->fit_reason, "%s", err.msg);
-    free(x);
-}
-
-static int diagrams_make(layer_stats_run *R)
-{
-    const gw_layer_results *t = &R->t;
-    const gw_layer_groups *gs = &R->gs;
-    int kx = gw_layer_results_key(t, "rb-rm"), kh = gw_layer_results_key(t, "height-rm");
-    if (kx < 0 || kh < 0)
-        return GW_OK;
-    int *owner = malloc(((size_t)gs->n + 1) * sizeof *owner);
-    R->dia = calloc((size_t)gs->n + 1, sizeof *R->dia);
-    if (!owner || !R->dia) {
-        free(owner);
-        return GW_ENOMEM;
-    }
-    /* partition the groups by the values of the other keys */
-    for (int a = 0; a < gs->n; a++) {
-        owner[a] = -1;
-        for (int b = 0; b < a && owner[a] < 0; b++) {
-            long ra = gs->g[a].first, rb = gs->g[b].first;
-            int same = 1;
-            for (int k = 0; k < gs->nkeys && same; k++) {
-                int c = gs->key[k];
-                same = c == kx || c == kh ||
-                       strcmp(t->grid_value[ra * t->ngrid + c], t->grid_value[rb * t->ngrid + c]) == 0;
-            }
-            if (same)
-                owner[a] = owner[b];
-        }
-        if (owner[a] < 0) {
-            owner[a] = R->ndia++;
-            R->dia[owner[a]].groups = malloc((size_t)gs->n * sizeof(int));
-            if (!R->dia[owner[a]].groups) {
-                free(owner);
-                return GW_ENOMEM;
-            }
-        }
-        layer_stats_diagram *D = &R->dia[owner[a]];
-        D->groups[D->ngroups++] = a;
-    }
-    free(owner);
-    for (int q = 0; q < R->ndia; q++) {
-        layer_stats_diagram *D = &R->dia[q];
-        double *buf = malloc(4 * (size_t)D->ngroups * sizeof *buf);
-        if (!buf)
-            return GW_ENOMEM;
-        double *x = buf, *h = buf + D->ngroups, *s = h + D->ngroups, *p = s + D->ngroups;
-        for (int i = 0; i < D->ngroups; i++) {
-            const gw_layer_group *g = &gs->g[D->groups[i]];
-            x[i] = t->grid_num[g->first * t->ngrid + kx];
-            h[i] = t->grid_num[g->first * t->ngrid + kh];
-            s[i] = g->share;
-            p[i] = g->penetration_rm.mean;
-        }
-        gw_err err = {{0}};
-        D->ok = gw_layer_diagram_make(D->ngroups, x, h, s, p, R->gs.criterion, &D->d, &err) == GW_OK;
-        free(buf);
-        if (!D->ok)
-            snprintf(D->reason, sizeof D->reason, "%s", err.msg);
-        else
-            diagram_fit(R, D);
-    }
-    return GW_OK;
-}
-
-void layer_stats_run_free(layer_stats_run *R)
-{
-    for (int q = 0; R->dia && q < R->ndia; q++) {
-        free(R->dia[q].groups);
-        gw_layer_diagram_free(&R->dia[q].d);
-    }
-    free(R->dia);
-    free(R->bin);
-    free(R->walls);
-    free(R->cmdline);
-    gw_layer_groups_free(&R->gs);
-    gw_layer_results_free(&R->t);
+    return (gw_stats_defaults){.rb_rm = ip.rb_rm, .alpha = ip.alpha_deg, .vi = ip.vi,
+                               .density = gw_layer_params_default().density};
 }
 
 /* ------------------------------------------------------------------ command --- */
 
-static void print_text(const layer_stats_run *R)
+static void print_text(const gw_stats_analysis *R)
 {
-    const gw_layer_results *t = &R->t;
+    const gw_stats_table *t = &R->t;
     printf("granwave %s layer-stats: %s: %ld rows, %d groups, criterion %.3g\n", gw_version(),
            R->input, t->nrows, R->gs.n, R->gs.criterion);
     for (int a = 0; a < R->gs.n; a++) {
-        const gw_layer_group *g = &R->gs.g[a];
+        const gw_stats_group *g = &R->gs.g[a];
         printf("  ");
         for (int k = 0; k < R->gs.nkeys; k++)
             printf("%s=%s ", t->grid_name[R->gs.key[k]], t->grid_value[g->first * t->ngrid + R->gs.key[k]]);
@@ -295,7 +82,7 @@ static void print_text(const layer_stats_run *R)
                R->bin[k].rb_rm, R->bin[k].alpha, R->bin[k].loss.mean, R->bin[k].loss.std, R->bin[k].loss.n,
                R->bin[k].disc, R->bin[k].sphere);
     for (int q = 0; q < R->ndia; q++) {
-        const layer_stats_diagram *D = &R->dia[q];
+        const gw_stats_panel *D = &R->dia[q];
         if (!D->ok) {
             printf("  diagram %d: %s\n", q, D->reason);
             continue;
@@ -317,30 +104,30 @@ static void print_text(const layer_stats_run *R)
 
 int gw_cmd_layer_stats(int argc, char **argv)
 {
-    layer_stats_run R;
+    gw_stats_analysis R;
     memset(&R, 0, sizeof R);
-    double criterion = 0.75;
+    gw_stats_setup S;
+    gw_stats_setup_init(&S);
+    S.defaults = layer_defaults();
     const char *out = NULL, *fit = "beta,a_over_b";
     int json = 0;
-    R.gamma_deg = 0.2;
-    R.delta_rm = NAN;
     gw_opt o[] = {
-        {.name = "criterion", .kind = GW_OPT_DOUBLE, .dest = &criterion, .metavar = "S",
+        {.name = "criterion", .kind = GW_OPT_DOUBLE, .dest = &S.criterion, .metavar = "S",
          .help = "global bouncing verdict: share of bouncing points >= S, in (0, 1] [0.75]", .lo = 0, .hi = 1,
          .open_lo = 1},
         {.name = "fit", .kind = GW_OPT_STRING, .dest = &fit, .metavar = "LIST",
          .help = "B.31 parameters to fit among offset, beta, a_over_b, tan_gamma [beta,a_over_b]"},
-        {.name = "gamma-deg", .kind = GW_OPT_DOUBLE, .dest = &R.gamma_deg, .metavar = "G",
+        {.name = "gamma-deg", .kind = GW_OPT_DOUBLE, .dest = &S.gamma_deg, .metavar = "G",
          .help = "cone angle gamma (start value, or fixed when not fitted), deg [0.2, the paper's]", .lo = 0,
          .hi = 89, .open_lo = 1},
-        {.name = "delta-rm", .kind = GW_OPT_DOUBLE, .dest = &R.delta_rm, .metavar = "D",
+        {.name = "delta-rm", .kind = GW_OPT_DOUBLE, .dest = &S.delta_rm, .metavar = "D",
          .help = "delta* / R_m of B.31 [measured: mean penetration_rm at the boundary]", .lo = 0, .hi = 1e6},
         {.name = "out", .kind = GW_OPT_STRING, .dest = &out, .metavar = "DIR",
          .help = "write groups.csv, convergence.csv, binary.csv, walls.csv, diagram.csv, boundary_fit.json"},
         {.name = "json", .kind = GW_OPT_FLAG, .dest = &json, .help = "print the results as JSON"},
         {0}};
     gw_err err = {{0}};
-    int help = 0, npos = 0;
+    int help = 0, npos = 0, mask = 0;
     const char *pos[1] = {NULL};
     if (gw_cli_parse("layer-stats", o, argc, argv, &help, pos, 1, &npos, &err) != GW_OK)
         return fail(err.msg);
@@ -350,24 +137,27 @@ int gw_cmd_layer_stats(int argc, char **argv)
     }
     if (npos != 1)
         return fail("a results table is required: granwave layer-stats RESULTS.csv");
-    if (parse_fit_mask(fit, &R.fit_mask, &err) != GW_OK)
-        return fail(err.msg);
+    if (gw_stats_fit_parse(fit, &mask, &err) != GW_OK) {
+        fprintf(stderr, "granwave layer-stats: --%s\n", err.msg); /* "fit: ...": the flag's name */
+        return 2;
+    }
     if (out && gw_out_check(out, "layer-stats --out", &err) != GW_OK) /* before any work */
         return fail(err.msg);
-    R.input = pos[0];
-    R.cmdline = command_line(argc, argv);
-    int rc = gw_layer_results_read(R.input, &R.t, &err);
+    if (!*pos[0]) /* the table reader's message (the setup refuses an empty input as "input: ...") */
+        return fail("layer-stats RESULTS.csv: empty file name");
+    const gw_param *tab = gw_stats_setup_params();
+    int rc = gw_param_set(tab, &S, "input", pos[0], &err);
     if (rc == GW_OK)
-        rc = gw_layer_groups_make(&R.t, criterion, &R.gs, &err);
+        rc = gw_param_set(tab, &S, "fit", fit, &err);
+    if (rc == GW_OK)
+        rc = gw_stats_analyse(&S, &R, &err);
+    gw_stats_setup_clear(&S);
+    if (rc == GW_OK && !(R.cmdline = command_line(argc, argv)))
+        rc = gw_err_set(&err, GW_ENOMEM, "%s: out of memory", R.input);
     if (rc != GW_OK) {
-        layer_stats_run_free(&R);
+        gw_stats_analysis_free(&R);
         fprintf(stderr, "granwave layer-stats: %s\n", err.msg);
         return rc == GW_ENOMEM ? 1 : 2;
-    }
-    if (!R.cmdline || binary_make(&R) != GW_OK || walls_make(&R) != GW_OK || diagrams_make(&R) != GW_OK) {
-        layer_stats_run_free(&R);
-        fprintf(stderr, "granwave layer-stats: %s: out of memory\n", R.input);
-        return 1;
     }
     long undecided = 0, uncertain = 0;
     for (int i = 0; i < R.gs.n; i++) {
@@ -387,18 +177,18 @@ int gw_cmd_layer_stats(int argc, char **argv)
                         "T_f, or stopped at the verdict: until = verdict) are left out of the e_n, e, alpha_r "
                         "statistics; e_n_first, e_first, alpha_r_first cover them\n", cut);
     int status = 0;
-    if (out && layer_stats_write_files(&R, out, &err) != GW_OK) {
+    if (out && gw_stats_write_files(&R, out, &err) != GW_OK) {
         fprintf(stderr, "granwave layer-stats --out: %s\n", err.msg);
         status = 1;
     }
     if (json) {
-        cJSON *j = layer_stats_json(&R, 1);
+        cJSON *j = gw_stats_json(&R, 1);
         if (!j || gw_json_print(j, stdout) != GW_OK)
             status = 1;
         cJSON_Delete(j);
     } else {
         print_text(&R);
     }
-    layer_stats_run_free(&R);
+    gw_stats_analysis_free(&R);
     return status;
 }

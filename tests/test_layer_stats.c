@@ -29,7 +29,7 @@
 #include <string.h>
 
 #include "gw_test.h"
-#include "layer_stats.h"
+#include "gw_stats.h"
 
 #define COLS "x_impact,bounced,e_n,e,alpha_r,v_ni,v_nr,v_r,penetration,penetration_rm," \
              "dissipated_first_contact,block_loss_first_contact,energy_error,wave_speed,t_end,steps"
@@ -54,10 +54,10 @@ static const char *table =
     "5,2,8,1,0,0,nan,nan,nan,1,1,1,0.1,1,0,0.4,0,0,0,0\n"
     "6,2,8,2,0,1,0.4,0.5,15,1,1,1,0.1,1,0,0.4,0,0,0,0\n";
 
-static const gw_layer_group *find_group(const gw_layer_results *t, const gw_layer_groups *gs,
+static const gw_stats_group *find_group(const gw_stats_table *t, const gw_stats_groups *gs,
                                         const char *h)
 {
-    int kh = gw_layer_results_key(t, "height-rm");
+    int kh = gw_stats_table_key(t, "height-rm");
     for (int a = 0; a < gs->n; a++)
         if (strcmp(t->grid_value[gs->g[a].first * t->ngrid + kh], h) == 0)
             return &gs->g[a];
@@ -66,28 +66,28 @@ static const gw_layer_group *find_group(const gw_layer_results *t, const gw_laye
 
 static void test_groups(void)
 {
-    gw_layer_results t;
+    gw_stats_table t;
     gw_err err = {{0}};
-    int rc = gw_layer_results_parse(table, "synthetic", &t, &err);
+    int rc = gw_stats_table_parse(table, "synthetic", &t, &err);
     gw_test_true(rc == GW_OK, "synthetic table parses");
     if (rc != GW_OK) {
         printf("  %s\n", err.msg);
         return;
     }
     gw_test_true(t.ngrid == 3 && t.ncols == 16 && t.nrows == 7, "3 grid keys, 16 columns, 7 rows");
-    gw_test_true(t.nparams == 2 && strcmp(gw_layer_results_param(&t, "vi"), "12.5") == 0,
+    gw_test_true(t.nparams == 2 && strcmp(gw_stats_table_param(&t, "vi"), "12.5") == 0,
                  "# param lines read (vi = 12.5)");
-    gw_test_abs(gw_layer_results_value(&t, 0, "vi", 20), 12.5, 0, "value of vi from the params");
-    gw_test_abs(gw_layer_results_value(&t, 0, "rb-rm", 1), 2, 0, "value of rb-rm from the grid");
-    gw_test_abs(gw_layer_results_value(&t, 0, "alpha", 7), 7, 0, "absent key -> default");
+    gw_test_abs(gw_stats_table_value(&t, 0, "vi", 20), 12.5, 0, "value of vi from the params");
+    gw_test_abs(gw_stats_table_value(&t, 0, "rb-rm", 1), 2, 0, "value of rb-rm from the grid");
+    gw_test_abs(gw_stats_table_value(&t, 0, "alpha", 7), 7, 0, "absent key -> default");
 
-    gw_layer_groups gs;
-    rc = gw_layer_groups_make(&t, 0.75, &gs, &err);
+    gw_stats_groups gs;
+    rc = gw_stats_groups_make(&t, 0.75, &gs, &err);
     gw_test_true(rc == GW_OK && gs.n == 2 && gs.nkeys == 2, "2 groups, keyed by rb-rm and height-rm (not point)");
-    const gw_layer_group *a = find_group(&t, &gs, "5"), *b = find_group(&t, &gs, "8");
+    const gw_stats_group *a = find_group(&t, &gs, "5"), *b = find_group(&t, &gs, "8");
     if (rc != GW_OK || !a || !b) {
         gw_test_true(0, "groups found");
-        gw_layer_results_free(&t);
+        gw_stats_table_free(&t);
         return;
     }
     gw_test_true(gs.g[0].n == 4 && a == &gs.g[0], "groups in order of first case");
@@ -125,27 +125,27 @@ static void test_groups(void)
     gw_test_true(b->bouncing == 0, "share 2/3 does not bounce at S = 0.75");
     gw_test_rel(b->e_n.mean, 0.3, tol, "group 2: mean e_n (0.2, 0.4)");
     gw_test_rel(b->e_n.std, sqrt(0.02), tol, "group 2: std e_n");
-    gw_layer_groups_free(&gs);
+    gw_stats_groups_free(&gs);
 
-    rc = gw_layer_groups_make(&t, 0.76, &gs, &err);
+    rc = gw_stats_groups_make(&t, 0.76, &gs, &err);
     a = rc == GW_OK ? find_group(&t, &gs, "5") : NULL;
     gw_test_true(a && a->bouncing == 0, "share 3/4 does not bounce at S = 0.76");
-    gw_layer_groups_free(&gs);
-    gw_test_true(gw_layer_groups_make(&t, 0, &gs, &err) == GW_EINVAL, "criterion 0 refused");
-    gw_layer_results_free(&t);
+    gw_stats_groups_free(&gs);
+    gw_test_true(gw_stats_groups_make(&t, 0, &gs, &err) == GW_EINVAL, "criterion 0 refused");
+    gw_stats_table_free(&t);
 }
 
 /* A malformed table must fail with GW_EFORMAT and both substrings in the message. */
 static void bad_table(const char *text, const char *what, const char *s1, const char *s2)
 {
-    gw_layer_results t;
+    gw_stats_table t;
     gw_err err = {{0}};
-    int rc = gw_layer_results_parse(text, "bad.csv", &t, &err);
+    int rc = gw_stats_table_parse(text, "bad.csv", &t, &err);
     int ok = rc == GW_EFORMAT && strstr(err.msg, s1) && strstr(err.msg, s2) && t.nrows == 0;
     printf("  message: %s\n", err.msg);
     gw_test_true(ok, what);
     if (rc == GW_OK)
-        gw_layer_results_free(&t);
+        gw_stats_table_free(&t);
 }
 
 static void test_bad_tables(void)
@@ -167,11 +167,11 @@ static void test_bad_tables(void)
 
 static void test_binary(void)
 {
-    gw_test_abs(gw_layer_binary_loss(1, 0), 1, 1e-15, "binary loss r = 1 (disc): all the energy");
-    gw_test_abs(gw_layer_binary_loss(1, 1), 1, 1e-15, "binary loss r = 1 (sphere)");
-    gw_test_rel(gw_layer_binary_loss(2, 0), 16.0 / 25, 1e-15, "binary loss r = 2, discs: 4*4/25");
-    gw_test_rel(gw_layer_binary_loss(2, 1), 32.0 / 81, 1e-15, "binary loss r = 2, spheres: 4*8/81");
-    gw_test_rel(gw_layer_binary_loss(0.5, 1), 32.0 / 81, 1e-14, "r and 1/r lose the same fraction");
+    gw_test_abs(gw_stats_binary_loss(1, 0), 1, 1e-15, "binary loss r = 1 (disc): all the energy");
+    gw_test_abs(gw_stats_binary_loss(1, 1), 1, 1e-15, "binary loss r = 1 (sphere)");
+    gw_test_rel(gw_stats_binary_loss(2, 0), 16.0 / 25, 1e-15, "binary loss r = 2, discs: 4*4/25");
+    gw_test_rel(gw_stats_binary_loss(2, 1), 32.0 / 81, 1e-15, "binary loss r = 2, spheres: 4*8/81");
+    gw_test_rel(gw_stats_binary_loss(0.5, 1), 32.0 / 81, 1e-14, "r and 1/r lose the same fraction");
 }
 
 static void test_diagram(void)
@@ -193,36 +193,36 @@ static void test_diagram(void)
             p[n++] = 2 + i + 0.5 * j;
         }
     x[n] = 2, h[n] = 0, s[n] = 1, p[n++] = 0; /* full sample: skipped */
-    gw_layer_diagram d;
+    gw_stats_diagram d;
     gw_err err = {{0}};
-    int rc = gw_layer_diagram_make(n, x, h, s, p, 0.75, &d, &err);
+    int rc = gw_stats_diagram_make(n, x, h, s, p, 0.75, &d, &err);
     gw_test_true(rc == GW_OK && d.nx == 5 && d.nh == 4, "diagram 5 x 4 (h = 0 skipped)");
     if (rc != GW_OK)
         return;
-    gw_test_true(d.pts[0].kind == GW_LAYER_BND_ABOVE, "x = 1: every H bounces -> above");
-    gw_test_true(d.pts[1].kind == GW_LAYER_BND_CROSS, "x = 2: crossing");
+    gw_test_true(d.pts[0].kind == GW_STATS_BND_ABOVE, "x = 1: every H bounces -> above");
+    gw_test_true(d.pts[1].kind == GW_STATS_BND_CROSS, "x = 2: crossing");
     gw_test_abs(d.pts[1].h, 4.75, 1e-14, "x = 2: H* = 4 + (0.9 - 0.75)/(0.9 - 0.5) * 2");
     gw_test_abs(d.pts[1].penetration_rm, 3.75, 1e-14, "x = 2: penetration of the bracketing cells (3.5 + 4)/2");
-    gw_test_true(d.pts[2].kind == GW_LAYER_BND_CROSS && d.pts[2].changes == 3, "x = 3: lowest of 3 changes");
+    gw_test_true(d.pts[2].kind == GW_STATS_BND_CROSS && d.pts[2].changes == 3, "x = 3: lowest of 3 changes");
     gw_test_abs(d.pts[2].h, 2, 0, "x = 3: share exactly S at h = 2 -> H* = 2");
-    gw_test_true(d.pts[3].kind == GW_LAYER_BND_BELOW, "x = 4: no H bounces -> below");
-    gw_test_true(d.pts[4].kind == GW_LAYER_BND_INVERTED, "x = 5: bouncing only above -> inverted");
+    gw_test_true(d.pts[3].kind == GW_STATS_BND_BELOW, "x = 4: no H bounces -> below");
+    gw_test_true(d.pts[4].kind == GW_STATS_BND_INVERTED, "x = 5: bouncing only above -> inverted");
     gw_test_abs(d.r_crit, 1, 0, "R_crit = 1 (last all-bouncing column)");
     gw_test_abs(d.r_crit_upper, 2, 0, "R_crit upper bracket = 2");
     gw_test_abs(d.r_min, 3, 0, "R_min = 3 (lowest H*)");
     gw_test_abs(d.h_min, 2, 0, "H_min = 2");
     gw_test_true(d.ncross == 2, "2 crossings");
-    gw_layer_diagram_free(&d);
+    gw_stats_diagram_free(&d);
 
     x[1] = 1, h[1] = 2; /* duplicate of cell 0 */
-    gw_test_true(gw_layer_diagram_make(n, x, h, s, p, 0.75, &d, &err) == GW_EINVAL, "duplicate cell refused");
-    gw_test_true(gw_layer_diagram_make(4, x + 16, h + 16, s + 16, NULL, 0.75, &d, &err) == GW_EINVAL,
+    gw_test_true(gw_stats_diagram_make(n, x, h, s, p, 0.75, &d, &err) == GW_EINVAL, "duplicate cell refused");
+    gw_test_true(gw_stats_diagram_make(4, x + 16, h + 16, s + 16, NULL, 0.75, &d, &err) == GW_EINVAL,
                  "a single R_b column refused");
 }
 
 /* ----------------------------------------------------------------- B.31 --- */
 
-static double b31_paper(const gw_layer_b31 *p, double x) /* literal B.31, x > beta */
+static double b31_paper(const gw_stats_b31 *p, double x) /* literal B.31, x > beta */
 {
     double T = p->tan_gamma, u = x - p->beta;
     return p->offset + u / (2 * T) * (sqrt(1 + p->a_over_b * T * x * x / (u * u)) - 1);
@@ -230,19 +230,19 @@ static double b31_paper(const gw_layer_b31 *p, double x) /* literal B.31, x > be
 
 static void test_b31(void)
 {
-    gw_layer_b31 p = {.offset = 0.8, .beta = 1.2, .a_over_b = 5, .tan_gamma = tan(0.2 * M_PI / 180)};
+    gw_stats_b31 p = {.offset = 0.8, .beta = 1.2, .a_over_b = 5, .tan_gamma = tan(0.2 * M_PI / 180)};
     double K = p.a_over_b * p.tan_gamma;
     double worst = 0;
     for (double x = 1.3; x < 20; x += 0.37)
-        worst = fmax(worst, fabs(gw_layer_b31_eval(&p, x) / b31_paper(&p, x) - 1));
+        worst = fmax(worst, fabs(gw_stats_b31_eval(&p, x) / b31_paper(&p, x) - 1));
     /* the literal form loses ~log10(1/(K x^2/u^2)) digits to cancellation */
     gw_test_abs(worst, 0, 1e-11, "eval = literal B.31 for x > beta");
-    gw_test_rel(gw_layer_b31_eval(&p, p.beta), p.offset + sqrt(K) * p.beta / (2 * p.tan_gamma), 1e-14,
+    gw_test_rel(gw_stats_b31_eval(&p, p.beta), p.offset + sqrt(K) * p.beta / (2 * p.tan_gamma), 1e-14,
                 "f(beta) = offset + sqrt(a/(b tan gamma)) beta / 2");
     double xm, fm, best = INFINITY, xb = 0;
-    gw_layer_b31_min(&p, &xm, &fm);
+    gw_stats_b31_min(&p, &xm, &fm);
     for (double x = 1.3; x < 6; x += 1e-4) {
-        double f = gw_layer_b31_eval(&p, x);
+        double f = gw_stats_b31_eval(&p, x);
         if (f < best)
             best = f, xb = x;
     }
@@ -250,7 +250,7 @@ static void test_b31(void)
     gw_test_rel(best, fm, 1e-8, "minimum value offset + (a/b) beta/(1 + K)");
     /* by hand: K = 0.017453, f(1.0) - f(1.2) = (sqrt(0.04 + K) + 0.2 - 1.2 sqrt(K)) / (2 tan 0.2 deg)
      * = (0.43969 - 0.15853) / 0.0069814 = 40.27 */
-    gw_test_rel(gw_layer_b31_eval(&p, 1.0) - gw_layer_b31_eval(&p, 1.2), 40.27, 1e-3,
+    gw_test_rel(gw_stats_b31_eval(&p, 1.0) - gw_stats_b31_eval(&p, 1.2), 40.27, 1e-3,
                 "below beta: the steep branch (slope -> 1/tan gamma), the vertical asymptote");
 }
 
@@ -270,17 +270,17 @@ static double gauss(void)
 
 static void test_fit(void)
 {
-    const gw_layer_b31 truth = {.offset = 0.8, .beta = 1.2, .a_over_b = 5, .tan_gamma = tan(0.2 * M_PI / 180)};
+    const gw_stats_b31 truth = {.offset = 0.8, .beta = 1.2, .a_over_b = 5, .tan_gamma = tan(0.2 * M_PI / 180)};
     const double xs[] = {1.5, 2, 2.5, 3, 4, 5, 6, 8};
     const int n = 8;
     double h[8];
     for (int i = 0; i < n; i++)
-        h[i] = gw_layer_b31_eval(&truth, xs[i]);
-    gw_layer_b31 start = truth;
+        h[i] = gw_stats_b31_eval(&truth, xs[i]);
+    gw_stats_b31 start = truth;
     start.beta = 3, start.a_over_b = 1; /* overwritten by the fit's own starts */
-    gw_layer_b31_fit f;
+    gw_stats_b31_fit f;
     gw_err err = {{0}};
-    int rc = gw_layer_b31_fit_points(xs, h, n, &start, GW_LAYER_B31_BETA | GW_LAYER_B31_AB, &f, &err);
+    int rc = gw_stats_b31_fit_points(xs, h, n, &start, GW_STATS_B31_BETA | GW_STATS_B31_AB, &f, &err);
     gw_test_true(rc == GW_OK && f.converged && f.dof == 6, "noise-free fit converges, 6 dof");
     gw_test_rel(f.p.beta, truth.beta, 1e-6, "noise-free: beta recovered");
     gw_test_rel(f.p.a_over_b, truth.a_over_b, 1e-6, "noise-free: a/b recovered");
@@ -292,7 +292,7 @@ static void test_fit(void)
     double hn[8];
     for (int i = 0; i < n; i++)
         hn[i] = h[i] + sigma * gauss();
-    rc = gw_layer_b31_fit_points(xs, hn, n, &start, GW_LAYER_B31_BETA | GW_LAYER_B31_AB, &f, &err);
+    rc = gw_stats_b31_fit_points(xs, hn, n, &start, GW_STATS_B31_BETA | GW_STATS_B31_AB, &f, &err);
     gw_test_true(rc == GW_OK, "noisy fit converges");
     gw_test_abs(f.p.beta, truth.beta, 3 * f.err.beta, "noisy: beta within 3 standard errors");
     gw_test_abs(f.p.a_over_b, truth.a_over_b, 3 * f.err.a_over_b, "noisy: a/b within 3 standard errors");
@@ -307,7 +307,7 @@ static void test_fit(void)
     for (int d = 0; d < draws; d++) {
         for (int i = 0; i < n; i++)
             hn[i] = h[i] + sigma * gauss();
-        if (gw_layer_b31_fit_points(xs, hn, n, &start, GW_LAYER_B31_BETA | GW_LAYER_B31_AB, &f, &err) != GW_OK)
+        if (gw_stats_b31_fit_points(xs, hn, n, &start, GW_STATS_B31_BETA | GW_STATS_B31_AB, &f, &err) != GW_OK)
             continue;
         good++;
         sb += f.p.beta, sbb += f.p.beta * f.p.beta, eb += f.err.beta;
@@ -327,9 +327,9 @@ static void test_fit(void)
     const double xd[] = {1.1, 1.15, 1.21, 1.25, 1.3, 1.4, 1.6, 2, 3, 5};
     double hd[10];
     for (int i = 0; i < 10; i++)
-        hd[i] = gw_layer_b31_eval(&truth, xd[i]);
+        hd[i] = gw_stats_b31_eval(&truth, xd[i]);
     start.tan_gamma = tan(1.0 * M_PI / 180);
-    rc = gw_layer_b31_fit_points(xd, hd, 10, &start, GW_LAYER_B31_BETA | GW_LAYER_B31_AB | GW_LAYER_B31_TANG, &f,
+    rc = gw_stats_b31_fit_points(xd, hd, 10, &start, GW_STATS_B31_BETA | GW_STATS_B31_AB | GW_STATS_B31_TANG, &f,
                                  &err);
     gw_test_true(rc == GW_OK, "3-parameter fit on points near beta converges");
     gw_test_rel(f.p.tan_gamma, truth.tan_gamma, 1e-5, "tan gamma recovered from points near beta");
@@ -339,14 +339,82 @@ static void test_fit(void)
     for (int i = 0; i < n; i++)
         hn[i] = h[i] + sigma * gauss();
     start.tan_gamma = truth.tan_gamma;
-    rc = gw_layer_b31_fit_points(xs, hn, n, &start, GW_LAYER_B31_BETA | GW_LAYER_B31_AB | GW_LAYER_B31_TANG, &f,
+    rc = gw_stats_b31_fit_points(xs, hn, n, &start, GW_STATS_B31_BETA | GW_STATS_B31_AB | GW_STATS_B31_TANG, &f,
                                  &err);
     printf("  tan gamma from x >= 1.5: %.3g +- %.3g (true %.3g)\n", f.p.tan_gamma, f.err.tan_gamma, truth.tan_gamma);
     gw_test_true(rc != GW_OK || !(f.err.tan_gamma < 0.3 * f.p.tan_gamma),
                  "tan gamma not identifiable from x >= 1.25 beta (standard error > 30 %)");
 
-    gw_test_true(gw_layer_b31_fit_points(xs, h, 1, &start, GW_LAYER_B31_BETA | GW_LAYER_B31_AB, &f, &err) ==
+    gw_test_true(gw_stats_b31_fit_points(xs, h, 1, &start, GW_STATS_B31_BETA | GW_STATS_B31_AB, &f, &err) ==
                      GW_EINVAL, "1 point for 2 parameters refused");
+}
+
+/* Index of name in a comma-separated column list, or -1. */
+static int col_index(const char *list, const char *name)
+{
+    int i = 0;
+    for (const char *p = list; *p; i++) {
+        size_t len = strcspn(p, ",");
+        if (len == strlen(name) && strncmp(p, name, len) == 0)
+            return i;
+        p += len + (p[len] == ',');
+    }
+    return -1;
+}
+
+/* The library call (gw_stats_run, the study "layer-stats"): the table above
+ * from a file. The values of the sweep model's parameters a table leaves out
+ * come from the caller: without a default for alpha (neither a grid key nor a
+ * "# param" line here) the call is refused naming it; with alpha = 7 deg the
+ * binary row has that incidence and the mean of the 7 first-contact losses
+ * (3.6 / 7), and the tables hold the groups' numbers of test_groups. */
+static void test_run(void)
+{
+    char path[] = "/tmp/gw_test_stats_XXXXXX";
+    int fd = mkstemp(path);
+    FILE *fp = fd >= 0 ? fdopen(fd, "w") : NULL;
+    gw_test_true(fp != NULL, "temporary table");
+    if (!fp)
+        return;
+    fputs(table, fp);
+    fclose(fp);
+    gw_stats_setup s;
+    gw_stats_setup_init(&s);
+    gw_err err = {{0}};
+    gw_test_true(gw_param_set(gw_stats_setup_params(), &s, "input", path, &err) == GW_OK, "set input");
+    gw_stats_outcome out;
+    int rc = gw_stats_run(&s, &out, &err);
+    gw_test_true(rc == GW_EINVAL && strstr(err.msg, "alpha") != NULL, "no default for alpha: refused naming it");
+    gw_stats_outcome_free(&out);
+    s.defaults = (gw_stats_defaults){.rb_rm = 1, .alpha = 7, .vi = 20, .density = 2650};
+    rc = gw_stats_run(&s, &out, &err);
+    gw_test_true(rc == GW_OK, "run with defaults");
+    if (rc == GW_OK) {
+        gw_test_true(out.rows == 7 && out.ngroups == 2 && out.nkeys == 2 && strcmp(out.group_keys, "rb-rm,height-rm") == 0,
+                     "7 rows, 2 groups keyed by rb-rm, height-rm");
+        gw_test_abs(out.keys[1], 5, 0, "group 0 height-rm");
+        const double *g0 = out.groups, *g1 = out.groups + GW_STATS_GROUP_NCOLS;
+        const char *gc = GW_STATS_GROUP_COLUMNS;
+        gw_test_abs(g0[col_index(gc, "bounce_share")], 0.75, 1e-15, "group 0 share 3/4");
+        gw_test_rel(g1[col_index(gc, "bounce_share")], 2.0 / 3, 1e-15, "group 1 share 2/3");
+        gw_test_rel(g0[col_index(gc, "e_n_mean")], 0.3, 1e-14, "group 0 mean e_n over the bouncing points");
+        gw_test_rel(g0[col_index(gc, "e_n_std")], 0.2, 1e-14, "group 0 std e_n (n - 1)");
+        gw_test_abs(g0[col_index(gc, "n_rebound")], 3, 0, "group 0: 3 rebounds");
+        gw_test_abs(g0[col_index(gc, "verdict_certain")], 1, 0, "group 0 verdict certain");
+        gw_test_true(col_index(gc, "verdict_certain") == GW_STATS_GROUP_NCOLS - 1, "36 group columns");
+        gw_test_true(out.nbinary == 1 && out.nconvergence == 7 && out.nwalls == 0, "1 binary row, 7 convergence rows");
+        gw_test_abs(out.binary[0], 2, 0, "binary rb_rm from the grid");
+        gw_test_abs(out.binary[1], 7, 0, "binary alpha from the caller's default");
+        gw_test_abs(out.binary[2], 7, 0, "binary n");
+        gw_test_rel(out.binary[3], 3.6 / 7, 1e-14, "binary mean first-contact loss");
+        gw_test_rel(out.binary[5], 16.0 / 25, 1e-15, "binary disc 4 r^2/(1 + r^2)^2");
+        gw_test_abs(out.convergence[3 * 10 + 9], 0.75, 1e-15, "running share of group 0 after its 4 points");
+        gw_test_true(out.ndiagrams == 1 && out.diagrams[0] == 0 && out.nboundary == 0,
+                     "one R_b/R_m value: the diagram is not built, no boundary");
+    }
+    gw_stats_outcome_free(&out);
+    gw_stats_setup_clear(&s);
+    remove(path);
 }
 
 int main(void)
@@ -357,5 +425,6 @@ int main(void)
     test_diagram();
     test_b31();
     test_fit();
+    test_run();
     return gw_test_summary("test_layer_stats");
 }

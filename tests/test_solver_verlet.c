@@ -1,6 +1,6 @@
 /*
  * test_solver_verlet.c: the verlet backend of the solver layer
- * (common/gw_backend_verlet.c) on systems with known solutions.
+ * (common/solver/gw_backend_verlet.c) on systems with known solutions.
  *
  * - Harmonic oscillator q'' = -w^2 q, w = 2 pi: the error of q after 10.25
  *   periods falls as dt^2 (ratio 4 +- 0.4 per halving: second order), and the

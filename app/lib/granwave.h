@@ -4,6 +4,7 @@
  *   gw_common.h  status codes, gw_err, validation, files, fits, JSON
  *   gw_solver.h  the ODE solver layer (CVODE, ARKode, RK4, Verlet backends)
  *   gw_sweep.h   grids of cases (INI configs) and the sweep model interface
+ *   gw_stats.h   statistics of a layer sweep table: groups, bouncing diagram, B.31 fit
  *   gw_param.h   parameter tables: each parameter described once
  *   gw_chain.h   the 1D bead column (Falcon et al. 1998) and its studies
  *   gw_chain_study.h  a column collision from its parameter table
@@ -22,6 +23,7 @@
 #include "gw_common.h"
 #include "gw_solver.h"
 #include "gw_sweep.h"
+#include "gw_stats.h"
 #include "gw_param.h"
 #include "gw_chain.h"
 #include "gw_chain_study.h"

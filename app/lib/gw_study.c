@@ -8,6 +8,7 @@
 #include "gw_chain_study.h"
 #if GW_HAVE_LAYER
 #include "gw_layer_study.h"
+#include "gw_stats.h"
 #endif
 #include "gw_study.h"
 
@@ -75,6 +76,26 @@ static int make_run(const void *s, void *out, gw_progress_fn progress, void *pct
     return gw_layer_make_run(s, out, err);
 }
 static void make_free(void *out) { gw_layer_make_outcome_free(out); }
+
+/* The statistics include no model header: the layer model's defaults for the
+ * parameters a sweep table leaves out are given here (as layer/layer_stats.c
+ * does for the command). */
+static int stats_init(void *s)
+{
+    int rc = gw_stats_setup_init(s);
+    const gw_layer_impact_params ip = gw_layer_impact_params_default();
+    ((gw_stats_setup *)s)->defaults = (gw_stats_defaults){
+        .rb_rm = ip.rb_rm, .alpha = ip.alpha_deg, .vi = ip.vi, .density = gw_layer_params_default().density};
+    return rc;
+}
+static void stats_clear(void *s) { gw_stats_setup_clear(s); }
+static int stats_run(const void *s, void *out, gw_progress_fn progress, void *pctx, gw_err *err)
+{
+    (void)progress;
+    (void)pctx;
+    return gw_stats_run(s, out, err);
+}
+static void stats_free(void *out) { gw_stats_outcome_free(out); }
 #endif
 
 static const gw_study studies[] = {
@@ -100,6 +121,9 @@ static const gw_study studies[] = {
     {"layer-make", "pluviate a 2D granular sample (Bourrier et al. 2008)", gw_layer_make_setup_params,
      sizeof(gw_layer_make_setup), make_init, make_clear, gw_layer_make_outcome_fields,
      sizeof(gw_layer_make_outcome), make_run, make_free},
+    {"layer-stats", "statistics and bouncing diagram of a layer sweep table (Bourrier et al. 2008)",
+     gw_stats_setup_params, sizeof(gw_stats_setup), stats_init, stats_clear, gw_stats_outcome_fields,
+     sizeof(gw_stats_outcome), stats_run, stats_free},
 #endif
 };
 #define NSTUDIES ((int)(sizeof studies / sizeof studies[0]))

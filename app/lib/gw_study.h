@@ -12,6 +12,8 @@
  *   "dispersion"    gw_chain_dispersion_setup            gw_chain_dispersion_outcome
  *   "layer-make"    gw_layer_make_setup                  gw_layer_make_outcome
  *   "layer-impact"  gw_layer_impact_setup                gw_layer_impact_outcome
+ *   "layer-stats"   gw_stats_setup                       gw_stats_outcome
+ *                   (init gives the layer model's defaults to the statistics)
  *
  * The sweep models (gw_sweep.h) are listed too, for gw_sweep_config_read_string
  * and gw_sweep_run. All tables and entries are static and const.

@@ -15,6 +15,8 @@ same models and numbers as the `granwave` program.
     r.e_n, r.ledger["total"]                     # restitution, energy ledger series
     s = granwave.sweep("chain", grid={"n": range(1, 11), "vimp": [0.2, 0.3]}, solver="rk4")
     s.n, s.f_max                                 # one entry per case
+    st = granwave.layer_stats("out/results.csv")  # statistics of a layer sweep table
+    st.groups["bounce_share"], st.diagrams["r_crit"]
 
 Keyword names are the flags of the program's commands with '-' written '_'
 (`granwave chain --dt-out` is dt_out=); help(granwave.chain) lists them with
@@ -26,13 +28,16 @@ GranwaveIOError (an OSError), a failed run GranwaveRunError (a RuntimeError).
 The library is found in the build tree (./setup.sh build), next to an
 installed module (cmake --install), or at GRANWAVE_LIB.
 """
+import numpy as _np
+
 from . import _core
 from ._core import (GranwaveError, GranwaveIOError, GranwaveRunError, GranwaveUnsupported,
                     GranwaveValueError, Result)
 from ._lib import lib as _clib
 from ._lib import path as library_path
 
-__all__ = ["version", "version_info", "chain", "falcon", "wavespeed", "softwall", "dispersion", "layer_make", "layer_impact", "sweep", "params", "library_path",
+__all__ = ["version", "version_info", "chain", "falcon", "wavespeed", "softwall", "dispersion", "layer_make",
+           "layer_impact", "layer_stats", "sweep", "params", "library_path",
            "Result", "GranwaveError", "GranwaveValueError", "GranwaveIOError", "GranwaveRunError",
            "GranwaveUnsupported"]
 
@@ -77,6 +82,20 @@ def layer_make(**kwargs):
 
 def layer_impact(**kwargs):
     return _study("layer-impact").run(kwargs)
+
+
+def layer_stats(input=None, **kwargs):
+    st = _study("layer-stats")
+    r = st.run(dict(kwargs, input=input) if input is not None else kwargs)
+    for f in st.fields:  # a table without rows (no diagram, no walls): empty columns
+        if f.type == _core.DARRAY and f.choices and f.name not in r:
+            r[f.name] = {c: _np.empty(0) for c in f.choices}
+    names = r.pop("group_keys", None)
+    keys = r.pop("keys", None)
+    if names and keys is not None and "groups" in r:
+        for j, name in enumerate(names.split(",")):
+            r["groups"][name] = keys[:, j].copy()
+    return r
 
 
 def falcon(*, progress=None, **kwargs):
@@ -172,3 +191,12 @@ layer_impact.__doc__ = _study("layer-impact").doc(
     "One block impact on a 2D granular layer (Bourrier et al. 2008), as\n"
     "`granwave layer-impact` (fast default: verlet; exact=True for the exact mode).\n"
     "sample is a file written by `granwave layer-make`.")
+layer_stats.__doc__ = _study("layer-stats").doc(
+    "Statistics of a layer sweep table (OUT/results.csv of `granwave sweep` with model =\n"
+    "layer; Bourrier et al. 2008, physics.md 2.3, 2.5), as `granwave layer-stats INPUT`:\n"
+    "per group of impact points (every grid key but point) the moments of e_n, e, alpha_r\n"
+    "and the bounce share; the first contact against the binary impact (B.24-B.28);\n"
+    "walls on/off; per bouncing diagram R_crit, (R_min, H_min), the boundary H* and the\n"
+    "B.31 fit. Tables with named columns are dicts of numpy arrays, one entry per row:\n"
+    "groups (with the grouping keys' values, NaN where not numeric), convergence,\n"
+    "binary, walls, diagrams, cells, boundary. input may be given by position.")

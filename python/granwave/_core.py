@@ -255,7 +255,7 @@ def read_result(fields, base):
             v = ctypes.c_int.from_address(addr).value
         elif f.type == LONG:
             v = ctypes.c_long.from_address(addr).value
-        elif f.type == TEXT:
+        elif f.type == TEXT:  # a text result (names, comma-separated): str or None
             t = ctypes.c_char_p.from_address(addr).value
             res[f.name] = t.decode() if t is not None else None
             continue

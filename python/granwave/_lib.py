@@ -50,7 +50,7 @@ class GwStudy(ctypes.Structure):
 
 
 class GwSweepModel(ctypes.Structure):
-    """Mirror of gw_sweep_model (common/gw_sweep.h); only name, columns and has_key are used."""
+    """Mirror of gw_sweep_model (common/sweep/gw_sweep.h); only name, columns and has_key are used."""
     _fields_ = [("name", ctypes.c_char_p), ("ncolumns", ctypes.c_int),
                 ("columns", ctypes.POINTER(ctypes.c_char_p)),
                 ("has_key", ctypes.CFUNCTYPE(ctypes.c_int, ctypes.c_char_p)),

@@ -1,5 +1,5 @@
 /*
- * layer_stats_table.c: reading a layer sweep table (OUT/results.csv of
+ * gw_stats_table.c: reading a layer sweep table (OUT/results.csv of
  * `granwave sweep` with model = layer) and the per-group statistics of
  * docs/physics.md 2.3: over the N impact points of one configuration, the mean and
  * sample standard deviation of e_n = V_nr/V_ni, e = V_r/V_i and
@@ -18,15 +18,15 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "layer_stats.h"
+#include "gw_stats.h"
 
-const char *const gw_layer_results_required[] = {
+const char *const gw_stats_table_required[] = {
     "x_impact", "bounced", "e_n", "e", "alpha_r", "penetration", "penetration_rm",
     "block_loss_first_contact"};
-const int gw_layer_results_nrequired =
-    (int)(sizeof gw_layer_results_required / sizeof gw_layer_results_required[0]);
+const int gw_stats_table_nrequired =
+    (int)(sizeof gw_stats_table_required / sizeof gw_stats_table_required[0]);
 
-void gw_layer_results_free(gw_layer_results *t)
+void gw_stats_table_free(gw_stats_table *t)
 {
     if (!t)
         return;
@@ -79,10 +79,10 @@ static int cell_number(const char *s, double *v)
     return *end == '\0' && !(errno == ERANGE && fabs(*v) > 1);
 }
 
-static int add_param(gw_layer_results *t, char *text)
+static int add_param(gw_stats_table *t, char *text)
 {
     char *eq = strchr(text, '=');
-    if (!eq || t->nparams >= GW_LAYER_RESULTS_MAX_KEYS)
+    if (!eq || t->nparams >= GW_STATS_MAX_KEYS)
         return GW_OK; /* other comments carry no parameter */
     *eq = '\0';
     char *name = gw_str_trim(text), *value = gw_str_trim(eq + 1);
@@ -99,9 +99,9 @@ static int add_param(gw_layer_results *t, char *text)
     return GW_OK;
 }
 
-static int parse_header(gw_layer_results *t, char *line, long ln, int *ncells, gw_err *err)
+static int parse_header(gw_stats_table *t, char *line, long ln, int *ncells, gw_err *err)
 {
-    char *cells[GW_LAYER_RESULTS_MAX_KEYS + 256];
+    char *cells[GW_STATS_MAX_KEYS + 256];
     const int max = (int)(sizeof cells / sizeof cells[0]);
     int n = split(line, cells, max);
     if (n > max)
@@ -116,9 +116,9 @@ static int parse_header(gw_layer_results *t, char *line, long ln, int *ncells, g
     if (xi < 0)
         return gw_err_set(err, GW_EFORMAT, "%s:%ld: header has no column 'x_impact' (not a layer sweep table)",
                           t->path, ln);
-    if (xi - 1 > GW_LAYER_RESULTS_MAX_KEYS)
+    if (xi - 1 > GW_STATS_MAX_KEYS)
         return gw_err_set(err, GW_EFORMAT, "%s:%ld: more than %d grid keys", t->path, ln,
-                          GW_LAYER_RESULTS_MAX_KEYS);
+                          GW_STATS_MAX_KEYS);
     for (int i = 0; i < n; i++) {
         if (!*cells[i])
             return gw_err_set(err, GW_EFORMAT, "%s:%ld: header column %d is empty", t->path, ln, i + 1);
@@ -141,15 +141,15 @@ static int parse_header(gw_layer_results *t, char *line, long ln, int *ncells, g
         else
             t->col_name[i - xi] = s;
     }
-    for (int k = 0; k < gw_layer_results_nrequired; k++)
-        if (gw_layer_results_col(t, gw_layer_results_required[k]) < 0)
+    for (int k = 0; k < gw_stats_table_nrequired; k++)
+        if (gw_stats_table_col(t, gw_stats_table_required[k]) < 0)
             return gw_err_set(err, GW_EFORMAT, "%s:%ld: header has no column '%s' (a layer sweep table is required)",
-                              t->path, ln, gw_layer_results_required[k]);
+                              t->path, ln, gw_stats_table_required[k]);
     *ncells = n;
     return GW_OK;
 }
 
-static int grow(gw_layer_results *t, long *cap)
+static int grow(gw_stats_table *t, long *cap)
 {
     long nc = *cap ? 2 * *cap : 64;
     long *ci = realloc(t->case_id, (size_t)nc * sizeof *ci);
@@ -170,9 +170,9 @@ static int grow(gw_layer_results *t, long *cap)
     return GW_OK;
 }
 
-static int parse_row(gw_layer_results *t, char *line, long ln, int ncells, int cb, gw_err *err)
+static int parse_row(gw_stats_table *t, char *line, long ln, int ncells, int cb, gw_err *err)
 {
-    char *cells[GW_LAYER_RESULTS_MAX_KEYS + 256];
+    char *cells[GW_STATS_MAX_KEYS + 256];
     int n = split(line, cells, ncells);
     if (n != ncells)
         return gw_err_set(err, GW_EFORMAT, "%s:%ld: %s%d cells, header has %d", t->path, ln,
@@ -222,7 +222,7 @@ static int cmp_case(const void *a, const void *b)
  * runs would count its points twice), and a bouncing point carries its e_n, e
  * and alpha_r (a NaN there would drop out of the means while the point still
  * counts in the share). */
-static int check_rows(const gw_layer_results *t, gw_err *err)
+static int check_rows(const gw_stats_table *t, gw_err *err)
 {
     long *ids = malloc((size_t)t->nrows * sizeof *ids);
     if (!ids)
@@ -237,18 +237,18 @@ static int check_rows(const gw_layer_results *t, gw_err *err)
     if (dup >= 0)
         return gw_err_set(err, GW_EFORMAT, "%s: case %ld appears more than once (a table of one sweep holds each case once)",
                           t->path, dup);
-    const int cb = gw_layer_results_col(t, "bounced");
+    const int cb = gw_stats_table_col(t, "bounced");
     /* a bouncing row has its first free-flight maximum; e_n, e, alpha_r (taken
      * at T_f) are NaN when the run ended before T_f. Tables before e_n_first
      * have no such rows. */
-    const int first = gw_layer_results_col(t, "e_n_first") >= 0;
+    const int first = gw_stats_table_col(t, "e_n_first") >= 0;
     const char *const need[] = {first ? "e_n_first" : "e_n", first ? "e_first" : "e",
                                 first ? "alpha_r_first" : "alpha_r"};
     for (long r = 0; cb >= 0 && r < t->nrows; r++) {
         if (t->val[r * t->ncols + cb] != 1)
             continue;
         for (int j = 0; j < 3; j++) {
-            int c = gw_layer_results_col(t, need[j]);
+            int c = gw_stats_table_col(t, need[j]);
             if (c >= 0 && !isfinite(t->val[r * t->ncols + c]))
                 return gw_err_set(err, GW_EFORMAT, "%s: case %ld bounced but its %s is %g", t->path,
                                   t->case_id[r], need[j], t->val[r * t->ncols + c]);
@@ -257,7 +257,7 @@ static int check_rows(const gw_layer_results *t, gw_err *err)
     return GW_OK;
 }
 
-int gw_layer_results_parse(const char *text, const char *name, gw_layer_results *t, gw_err *err)
+int gw_stats_table_parse(const char *text, const char *name, gw_stats_table *t, gw_err *err)
 {
     memset(t, 0, sizeof *t);
     snprintf(t->path, sizeof t->path, "%s", name);
@@ -283,7 +283,7 @@ int gw_layer_results_parse(const char *text, const char *name, gw_layer_results 
         if (!header_line) {
             header_line = ln;
             rc = parse_header(t, line, ln, &ncells, err);
-            cb = gw_layer_results_col(t, "bounced");
+            cb = gw_stats_table_col(t, "bounced");
             continue;
         }
         if (t->nrows == cap && grow(t, &cap) != GW_OK)
@@ -299,11 +299,11 @@ int gw_layer_results_parse(const char *text, const char *name, gw_layer_results 
     else if (rc == GW_OK && t->nrows == 0)
         rc = gw_err_set(err, GW_EFORMAT, "%s:%ld: no data rows after the header", name, header_line);
     if (rc != GW_OK)
-        gw_layer_results_free(t);
+        gw_stats_table_free(t);
     return rc;
 }
 
-int gw_layer_results_read(const char *path, gw_layer_results *t, gw_err *err)
+int gw_stats_table_read(const char *path, gw_stats_table *t, gw_err *err)
 {
     memset(t, 0, sizeof *t);
     char *buf = NULL;
@@ -315,12 +315,12 @@ int gw_layer_results_read(const char *path, gw_layer_results *t, gw_err *err)
     if (rc == GW_OK && memchr(buf, '\0', len))
         rc = gw_err_set(err, GW_EFORMAT, "%s:1: binary data (NUL byte), not a CSV table", path);
     if (rc == GW_OK)
-        rc = gw_layer_results_parse(buf, path, t, err);
+        rc = gw_stats_table_parse(buf, path, t, err);
     free(buf);
     return rc;
 }
 
-int gw_layer_results_col(const gw_layer_results *t, const char *name)
+int gw_stats_table_col(const gw_stats_table *t, const char *name)
 {
     for (int i = 0; i < t->ncols; i++)
         if (strcmp(t->col_name[i], name) == 0)
@@ -328,7 +328,7 @@ int gw_layer_results_col(const gw_layer_results *t, const char *name)
     return -1;
 }
 
-int gw_layer_results_key(const gw_layer_results *t, const char *name)
+int gw_stats_table_key(const gw_stats_table *t, const char *name)
 {
     for (int i = 0; i < t->ngrid; i++)
         if (strcmp(t->grid_name[i], name) == 0)
@@ -336,7 +336,7 @@ int gw_layer_results_key(const gw_layer_results *t, const char *name)
     return -1;
 }
 
-const char *gw_layer_results_param(const gw_layer_results *t, const char *name)
+const char *gw_stats_table_param(const gw_stats_table *t, const char *name)
 {
     for (int i = 0; i < t->nparams; i++)
         if (strcmp(t->param_name[i], name) == 0)
@@ -344,12 +344,12 @@ const char *gw_layer_results_param(const gw_layer_results *t, const char *name)
     return NULL;
 }
 
-double gw_layer_results_value(const gw_layer_results *t, long i, const char *name, double dflt)
+double gw_stats_table_value(const gw_stats_table *t, long i, const char *name, double dflt)
 {
-    int k = gw_layer_results_key(t, name);
+    int k = gw_stats_table_key(t, name);
     if (k >= 0)
         return t->grid_num[i * t->ngrid + k];
-    const char *s = gw_layer_results_param(t, name);
+    const char *s = gw_stats_table_param(t, name);
     double v;
     if (s && cell_number(s, &v))
         return v;
@@ -358,7 +358,7 @@ double gw_layer_results_value(const gw_layer_results *t, long i, const char *nam
 
 /* ------------------------------------------------------------- statistics --- */
 
-void gw_layer_moment_of(const double *v, int n, gw_layer_moment *m)
+void gw_stats_moment_of(const double *v, int n, gw_stats_moment *m)
 {
     double s = 0;
     int k = 0;
@@ -398,7 +398,7 @@ static int cmp_row_key(const void *a, const void *b)
 
 typedef struct group_ref {
     long first_case;
-    gw_layer_group g;
+    gw_stats_group g;
 } group_ref;
 
 static int cmp_group_ref(const void *a, const void *b)
@@ -408,7 +408,7 @@ static int cmp_group_ref(const void *a, const void *b)
 }
 
 /* Order the groups by their first case (the config's grid order). */
-static int sort_groups(gw_layer_group *g, int n, const gw_layer_results *t)
+static int sort_groups(gw_stats_group *g, int n, const gw_stats_table *t)
 {
     group_ref *ref = malloc((size_t)n * sizeof *ref);
     if (!ref)
@@ -422,23 +422,23 @@ static int sort_groups(gw_layer_group *g, int n, const gw_layer_results *t)
     return GW_OK;
 }
 
-static double cell(const gw_layer_results *t, long row, int col)
+static double cell(const gw_stats_table *t, long row, int col)
 {
     return col >= 0 ? t->val[row * t->ncols + col] : NAN;
 }
 
-static int group_stats(const gw_layer_results *t, double criterion, gw_layer_group *g)
+static int group_stats(const gw_stats_table *t, double criterion, gw_stats_group *g)
 {
-    const int cb = gw_layer_results_col(t, "bounced"), cen = gw_layer_results_col(t, "e_n"),
-              ce = gw_layer_results_col(t, "e"), ca = gw_layer_results_col(t, "alpha_r"),
-              cp = gw_layer_results_col(t, "penetration"),
-              cpr = gw_layer_results_col(t, "penetration_rm"),
-              cl = gw_layer_results_col(t, "block_loss_first_contact"),
-              cd = gw_layer_results_col(t, "dissipated_first_contact"),
-              cee = gw_layer_results_col(t, "energy_error"),
-              cx = gw_layer_results_col(t, "x_impact"),
-              cf[3] = {gw_layer_results_col(t, "e_n_first"), gw_layer_results_col(t, "e_first"),
-                       gw_layer_results_col(t, "alpha_r_first")};
+    const int cb = gw_stats_table_col(t, "bounced"), cen = gw_stats_table_col(t, "e_n"),
+              ce = gw_stats_table_col(t, "e"), ca = gw_stats_table_col(t, "alpha_r"),
+              cp = gw_stats_table_col(t, "penetration"),
+              cpr = gw_stats_table_col(t, "penetration_rm"),
+              cl = gw_stats_table_col(t, "block_loss_first_contact"),
+              cd = gw_stats_table_col(t, "dissipated_first_contact"),
+              cee = gw_stats_table_col(t, "energy_error"),
+              cx = gw_stats_table_col(t, "x_impact"),
+              cf[3] = {gw_stats_table_col(t, "e_n_first"), gw_stats_table_col(t, "e_first"),
+                       gw_stats_table_col(t, "alpha_r_first")};
     int n = g->n;
     double *w = malloc(11 * (size_t)n * sizeof *w);
     g->run_e_n = malloc(3 * (size_t)n * sizeof *g->run_e_n);
@@ -498,17 +498,17 @@ static int group_stats(const gw_layer_results *t, double criterion, gw_layer_gro
     g->share_high = n > 0 ? (double)(g->n_bounced + n - g->n_valid) / n : NAN;
     g->bouncing = g->share >= criterion;
     g->verdict_certain = g->bouncing || g->share_high < criterion;
-    gw_layer_moment_of(en, n, &g->e_n);
-    gw_layer_moment_of(e, n, &g->e);
-    gw_layer_moment_of(al, n, &g->alpha_r);
-    gw_layer_moment_of(pen, n, &g->penetration);
-    gw_layer_moment_of(penrm, n, &g->penetration_rm);
-    gw_layer_moment_of(loss, n, &g->block_loss);
-    gw_layer_moment_of(dis, n, &g->dissipated);
-    gw_layer_moment_of(reb, n, &g->rebound_energy);
-    gw_layer_moment_of(fst, n, &g->e_n_first);
-    gw_layer_moment_of(fst + n, n, &g->e_first);
-    gw_layer_moment_of(fst + 2 * n, n, &g->alpha_r_first);
+    gw_stats_moment_of(en, n, &g->e_n);
+    gw_stats_moment_of(e, n, &g->e);
+    gw_stats_moment_of(al, n, &g->alpha_r);
+    gw_stats_moment_of(pen, n, &g->penetration);
+    gw_stats_moment_of(penrm, n, &g->penetration_rm);
+    gw_stats_moment_of(loss, n, &g->block_loss);
+    gw_stats_moment_of(dis, n, &g->dissipated);
+    gw_stats_moment_of(reb, n, &g->rebound_energy);
+    gw_stats_moment_of(fst, n, &g->e_n_first);
+    gw_stats_moment_of(fst + n, n, &g->e_first);
+    gw_stats_moment_of(fst + 2 * n, n, &g->alpha_r_first);
     /* stable from k on: every running mean from k to n within 5 % of the last */
     double fin = g->run_e[n - 1];
     g->k_stable_e = 0;
@@ -522,7 +522,7 @@ static int group_stats(const gw_layer_results *t, double criterion, gw_layer_gro
     return GW_OK;
 }
 
-void gw_layer_groups_free(gw_layer_groups *gs)
+void gw_stats_groups_free(gw_stats_groups *gs)
 {
     if (!gs)
         return;
@@ -535,7 +535,7 @@ void gw_layer_groups_free(gw_layer_groups *gs)
 }
 
 /* The group key of row r: its grouping grid values joined by '\x1f'. */
-static char *row_key_string(const gw_layer_results *t, const gw_layer_groups *gs, long r)
+static char *row_key_string(const gw_stats_table *t, const gw_stats_groups *gs, long r)
 {
     size_t len = 1;
     for (int k = 0; k < gs->nkeys; k++)
@@ -548,14 +548,14 @@ static char *row_key_string(const gw_layer_results *t, const gw_layer_groups *gs
     return s;
 }
 
-int gw_layer_groups_make(const gw_layer_results *t, double criterion, gw_layer_groups *gs,
+int gw_stats_groups_make(const gw_stats_table *t, double criterion, gw_stats_groups *gs,
                          gw_err *err)
 {
     memset(gs, 0, sizeof *gs);
     if (!(criterion > 0 && criterion <= 1))
         return gw_err_set(err, GW_EINVAL, "--criterion: %g is not in (0, 1]", criterion);
     gs->criterion = criterion;
-    gs->point_key = gw_layer_results_key(t, "point");
+    gs->point_key = gw_stats_table_key(t, "point");
     for (int k = 0; k < t->ngrid; k++)
         if (k != gs->point_key)
             gs->key[gs->nkeys++] = k;
@@ -574,7 +574,7 @@ int gw_layer_groups_make(const gw_layer_results *t, double criterion, gw_layer_g
     for (long a = 0, b; rc == GW_OK && a < t->nrows; a = b) {
         for (b = a + 1; b < t->nrows && strcmp(rk[b].key, rk[a].key) == 0; b++)
             ;
-        gw_layer_group *g = &gs->g[gs->n++];
+        gw_stats_group *g = &gs->g[gs->n++];
         g->n = (int)(b - a);
         g->rows = malloc((size_t)g->n * sizeof *g->rows);
         if (!g->rows) {
@@ -595,13 +595,13 @@ int gw_layer_groups_make(const gw_layer_results *t, double criterion, gw_layer_g
     if (rc == GW_OK)
         rc = sort_groups(gs->g, gs->n, t);
     if (rc != GW_OK) {
-        gw_layer_groups_free(gs);
+        gw_stats_groups_free(gs);
         return gw_err_set(err, rc, "%s: out of memory", t->path);
     }
     return GW_OK;
 }
 
-double gw_layer_binary_loss(double r, int sphere)
+double gw_stats_binary_loss(double r, int sphere)
 {
     double m = sphere ? r * r * r : r * r;
     return 4 * m / ((1 + m) * (1 + m));

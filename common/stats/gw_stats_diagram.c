@@ -1,5 +1,5 @@
 /*
- * layer_stats_diagram.c: the bouncing-occurrence diagram of docs/physics.md 2.5 and
+ * gw_stats_diagram.c: the bouncing-occurrence diagram of docs/physics.md 2.5 and
  * the boundary model B.31.
  *
  * Diagram: cells (x = R_b/R_m, h = H/R_m) carry the bounce share over their
@@ -14,7 +14,7 @@
  * For u > 0 the second form is evaluated as K x^2 / (sqrt(u^2 + K x^2) + u) / (2T)
  * (no cancellation when K x^2 << u^2). For u >> sqrt(K) x it reduces to
  * (a/b) x^2 / (4 u): tan(gamma) only shapes the curve within about sqrt(K) x of
- * x = beta, and a, b enter only as a/b; see gw_layer_b31_fit_points for what a
+ * x = beta, and a, b enter only as a/b; see gw_stats_b31_fit_points for what a
  * boundary can and cannot determine.
  */
 #include <math.h>
@@ -25,11 +25,11 @@
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_multifit_nlinear.h>
 
-#include "layer_stats.h"
+#include "gw_stats.h"
 
 /* ---------------------------------------------------------------- diagram --- */
 
-void gw_layer_diagram_free(gw_layer_diagram *d)
+void gw_stats_diagram_free(gw_stats_diagram *d)
 {
     if (!d)
         return;
@@ -76,12 +76,12 @@ static double mean2(double a, double b)
 }
 
 /* The boundary point of column i. */
-static void column_boundary(gw_layer_diagram *d, int i)
+static void column_boundary(gw_stats_diagram *d, int i)
 {
-    gw_layer_boundary_pt *p = &d->pts[i];
+    gw_stats_boundary_pt *p = &d->pts[i];
     const double S = d->criterion, *s = d->share + (size_t)i * d->nh;
     const double *pen = d->pen + (size_t)i * d->nh;
-    *p = (gw_layer_boundary_pt){.x = d->xs[i], .h = NAN, .h_lo = NAN, .h_hi = NAN, .s_lo = NAN,
+    *p = (gw_stats_boundary_pt){.x = d->xs[i], .h = NAN, .h_lo = NAN, .h_hi = NAN, .s_lo = NAN,
                                 .s_hi = NAN, .penetration_rm = NAN};
     int prev = -1, nyes = 0, nno = 0, found = 0;
     for (int j = 0; j < d->nh; j++) {
@@ -94,7 +94,7 @@ static void column_boundary(gw_layer_diagram *d, int i)
             p->changes++;
             if (!found && !v) { /* bouncing at h[prev], not at h[j] */
                 found = 1;
-                p->kind = GW_LAYER_BND_CROSS;
+                p->kind = GW_STATS_BND_CROSS;
                 p->h_lo = d->hs[prev];
                 p->h_hi = d->hs[j];
                 p->s_lo = s[prev];
@@ -106,11 +106,11 @@ static void column_boundary(gw_layer_diagram *d, int i)
         prev = j;
     }
     if (!found)
-        p->kind = nno == 0 ? GW_LAYER_BND_ABOVE : nyes == 0 ? GW_LAYER_BND_BELOW : GW_LAYER_BND_INVERTED;
+        p->kind = nno == 0 ? GW_STATS_BND_ABOVE : nyes == 0 ? GW_STATS_BND_BELOW : GW_STATS_BND_INVERTED;
 }
 
-int gw_layer_diagram_make(int n, const double *x, const double *h, const double *share,
-                          const double *pen, double criterion, gw_layer_diagram *d, gw_err *err)
+int gw_stats_diagram_make(int n, const double *x, const double *h, const double *share,
+                          const double *pen, double criterion, gw_stats_diagram *d, gw_err *err)
 {
     memset(d, 0, sizeof *d);
     d->criterion = criterion;
@@ -119,7 +119,7 @@ int gw_layer_diagram_make(int n, const double *x, const double *h, const double 
     d->hs = malloc(((size_t)n + 1) * sizeof *d->hs);
     if (!keep || !d->xs || !d->hs) {
         free(keep);
-        gw_layer_diagram_free(d);
+        gw_stats_diagram_free(d);
         return gw_err_set(err, GW_ENOMEM, "diagram: out of memory");
     }
     for (int i = 0; i < n; i++)
@@ -152,7 +152,7 @@ int gw_layer_diagram_make(int n, const double *x, const double *h, const double 
     }
     free(keep);
     if (rc != GW_OK) {
-        gw_layer_diagram_free(d);
+        gw_stats_diagram_free(d);
         return rc;
     }
     double psum = 0;
@@ -160,8 +160,8 @@ int gw_layer_diagram_make(int n, const double *x, const double *h, const double 
     d->r_crit = d->r_crit_upper = d->r_min = d->h_min = NAN;
     for (int i = 0; i < d->nx; i++) {
         column_boundary(d, i);
-        const gw_layer_boundary_pt *p = &d->pts[i];
-        if (p->kind == GW_LAYER_BND_CROSS) {
+        const gw_stats_boundary_pt *p = &d->pts[i];
+        if (p->kind == GW_STATS_BND_CROSS) {
             d->ncross++;
             if (!(p->h >= d->h_min)) {
                 d->h_min = p->h;
@@ -175,7 +175,7 @@ int gw_layer_diagram_make(int n, const double *x, const double *h, const double 
     }
     d->penetration_rm = np ? psum / np : NAN;
     int i = 0;
-    while (i < d->nx && d->pts[i].kind == GW_LAYER_BND_ABOVE)
+    while (i < d->nx && d->pts[i].kind == GW_STATS_BND_ABOVE)
         d->r_crit = d->xs[i++];
     if (i < d->nx)
         d->r_crit_upper = d->xs[i];
@@ -184,7 +184,7 @@ int gw_layer_diagram_make(int n, const double *x, const double *h, const double 
 
 /* -------------------------------------------------------------------- B.31 --- */
 
-double gw_layer_b31_eval(const gw_layer_b31 *p, double x)
+double gw_stats_b31_eval(const gw_stats_b31 *p, double x)
 {
     double T = p->tan_gamma, K = p->a_over_b * T, u = x - p->beta;
     double r = sqrt(u * u + K * x * x);
@@ -192,7 +192,7 @@ double gw_layer_b31_eval(const gw_layer_b31 *p, double x)
     return p->offset + g / (2 * T);
 }
 
-void gw_layer_b31_min(const gw_layer_b31 *p, double *x_min, double *f_min)
+void gw_stats_b31_min(const gw_stats_b31 *p, double *x_min, double *f_min)
 {
     double K = p->a_over_b * p->tan_gamma;
     *x_min = 2 * p->beta / (1 + K);
@@ -203,43 +203,43 @@ void gw_layer_b31_min(const gw_layer_b31 *p, double *x_min, double *f_min)
 typedef struct b31_problem {
     const double *x, *h;
     int n, mask;
-    gw_layer_b31 base;
+    gw_stats_b31 base;
 } b31_problem;
 
-static gw_layer_b31 unpack(const b31_problem *pb, const gsl_vector *th)
+static gw_stats_b31 unpack(const b31_problem *pb, const gsl_vector *th)
 {
-    gw_layer_b31 p = pb->base;
+    gw_stats_b31 p = pb->base;
     size_t k = 0;
-    if (pb->mask & GW_LAYER_B31_OFFSET)
+    if (pb->mask & GW_STATS_B31_OFFSET)
         p.offset = gsl_vector_get(th, k++);
-    if (pb->mask & GW_LAYER_B31_BETA)
+    if (pb->mask & GW_STATS_B31_BETA)
         p.beta = gsl_vector_get(th, k++);
-    if (pb->mask & GW_LAYER_B31_AB)
+    if (pb->mask & GW_STATS_B31_AB)
         p.a_over_b = exp(gsl_vector_get(th, k++));
-    if (pb->mask & GW_LAYER_B31_TANG)
+    if (pb->mask & GW_STATS_B31_TANG)
         p.tan_gamma = exp(gsl_vector_get(th, k++));
     return p;
 }
 
-static void pack(int mask, const gw_layer_b31 *p, gsl_vector *th)
+static void pack(int mask, const gw_stats_b31 *p, gsl_vector *th)
 {
     size_t k = 0;
-    if (mask & GW_LAYER_B31_OFFSET)
+    if (mask & GW_STATS_B31_OFFSET)
         gsl_vector_set(th, k++, p->offset);
-    if (mask & GW_LAYER_B31_BETA)
+    if (mask & GW_STATS_B31_BETA)
         gsl_vector_set(th, k++, p->beta);
-    if (mask & GW_LAYER_B31_AB)
+    if (mask & GW_STATS_B31_AB)
         gsl_vector_set(th, k++, log(p->a_over_b));
-    if (mask & GW_LAYER_B31_TANG)
+    if (mask & GW_STATS_B31_TANG)
         gsl_vector_set(th, k++, log(p->tan_gamma));
 }
 
 static int b31_residuals(const gsl_vector *th, void *params, gsl_vector *f)
 {
     const b31_problem *pb = params;
-    gw_layer_b31 p = unpack(pb, th);
+    gw_stats_b31 p = unpack(pb, th);
     for (int i = 0; i < pb->n; i++) {
-        double r = gw_layer_b31_eval(&p, pb->x[i]) - pb->h[i];
+        double r = gw_stats_b31_eval(&p, pb->x[i]) - pb->h[i];
         /* a wild trial step (overflow in exp) gets a huge finite residual, so
          * the trust region rejects it instead of the driver failing */
         gsl_vector_set(f, (size_t)i, isfinite(r) ? r : 1e12);
@@ -253,14 +253,14 @@ static int popcount4(int m)
 }
 
 typedef struct b31_try {
-    gw_layer_b31 p;
+    gw_stats_b31 p;
     double cost;
     int iterations, converged;
     double cov[16];
 } b31_try;
 
 /* One trust-region run from start; fills t (cost = sum of squares). */
-static int b31_run(b31_problem *pb, const gw_layer_b31 *start, int p, b31_try *t)
+static int b31_run(b31_problem *pb, const gw_stats_b31 *start, int p, b31_try *t)
 {
     gsl_multifit_nlinear_parameters fp = gsl_multifit_nlinear_default_parameters();
     fp.trs = gsl_multifit_nlinear_trs_lm;
@@ -297,8 +297,8 @@ static int b31_run(b31_problem *pb, const gw_layer_b31 *start, int p, b31_try *t
     return rc;
 }
 
-int gw_layer_b31_fit_points(const double *x, const double *h, int n, const gw_layer_b31 *start,
-                            int free_mask, gw_layer_b31_fit *fit, gw_err *err)
+int gw_stats_b31_fit_points(const double *x, const double *h, int n, const gw_stats_b31 *start,
+                            int free_mask, gw_stats_b31_fit *fit, gw_err *err)
 {
     memset(fit, 0, sizeof *fit);
     int p = popcount4(free_mask & 15);
@@ -321,10 +321,10 @@ int gw_layer_b31_fit_points(const double *x, const double *h, int n, const gw_la
     b31_try best = {.cost = INFINITY}, t;
     int any = 0;
     for (size_t s = 0; s < sizeof frac / sizeof frac[0]; s++) {
-        gw_layer_b31 st = *start;
-        if (pb.mask & GW_LAYER_B31_BETA)
+        gw_stats_b31 st = *start;
+        if (pb.mask & GW_STATS_B31_BETA)
             st.beta = frac[s] * x[lo];
-        if ((pb.mask & GW_LAYER_B31_AB) && st.beta > 0 && h[lo] - st.offset > 0)
+        if ((pb.mask & GW_STATS_B31_AB) && st.beta > 0 && h[lo] - st.offset > 0)
             st.a_over_b = (h[lo] - st.offset) / st.beta;
         if (b31_run(&pb, &st, p, &t) != GW_OK)
             continue;
@@ -332,7 +332,7 @@ int gw_layer_b31_fit_points(const double *x, const double *h, int n, const gw_la
             best = t;
             any = 1;
         }
-        if (!(pb.mask & GW_LAYER_B31_BETA))
+        if (!(pb.mask & GW_STATS_B31_BETA))
             break; /* the starts differ only in beta */
     }
     if (!any)
@@ -349,17 +349,17 @@ int gw_layer_b31_fit_points(const double *x, const double *h, int n, const gw_la
     for (int k = 0; k < p; k++)
         sd[k] = sqrt(s2 * best.cov[k * 4 + k]);
     int k = 0, kb = -1, ka = -1;
-    if (pb.mask & GW_LAYER_B31_OFFSET)
+    if (pb.mask & GW_STATS_B31_OFFSET)
         fit->err.offset = sd[k++];
-    if (pb.mask & GW_LAYER_B31_BETA)
+    if (pb.mask & GW_STATS_B31_BETA)
         fit->err.beta = sd[kb = k++];
-    if (pb.mask & GW_LAYER_B31_AB)
+    if (pb.mask & GW_STATS_B31_AB)
         fit->err.a_over_b = fit->p.a_over_b * sd[ka = k++]; /* d(a/b) = (a/b) d ln(a/b) */
-    if (pb.mask & GW_LAYER_B31_TANG)
+    if (pb.mask & GW_STATS_B31_TANG)
         fit->err.tan_gamma = fit->p.tan_gamma * sd[k++];
     fit->corr_beta_ab = kb >= 0 && ka >= 0
                             ? best.cov[kb * 4 + ka] / sqrt(best.cov[kb * 4 + kb] * best.cov[ka * 4 + ka])
                             : NAN;
-    gw_layer_b31_min(&fit->p, &fit->x_min, &fit->h_min);
+    gw_stats_b31_min(&fit->p, &fit->x_min, &fit->h_min);
     return GW_OK;
 }

@@ -1,5 +1,5 @@
 /*
- * layer_stats_out.c: the outputs of `granwave layer-stats` (layer_stats.c):
+ * gw_stats_out.c: the outputs of `granwave layer-stats` (layer/layer_stats.c):
  * JSON (stdout, boundary_fit.json) and the CSV tables groups.csv,
  * convergence.csv, binary.csv, walls.csv and diagram.csv. Every file opens
  * with the program version, the command line and the input path, and says
@@ -12,7 +12,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "layer_stats.h"
+#include "gw_stats.h"
 
 static const char *placement =
     "bouncing lies below the boundary; in each R_b/R_m column H* is placed between the lowest "
@@ -36,7 +36,7 @@ static const char *kind_name(int k)
     return k >= 0 && k < 4 ? names[k] : "?";
 }
 
-static cJSON *moment_json(const gw_layer_moment *m)
+static cJSON *moment_json(const gw_stats_moment *m)
 {
     cJSON *o = cJSON_CreateObject();
     cJSON_AddNumberToObject(o, "mean", m->mean);
@@ -45,13 +45,13 @@ static cJSON *moment_json(const gw_layer_moment *m)
     return o;
 }
 
-static const char *gval(const layer_stats_run *R, long row, int key)
+static const char *gval(const gw_stats_analysis *R, long row, int key)
 {
     return R->t.grid_value[row * R->t.ngrid + key];
 }
 
 /* {key: value} of the grouping keys of row, except skip1/skip2 (grid indices). */
-static cJSON *keys_json(const layer_stats_run *R, long row, int skip1, int skip2)
+static cJSON *keys_json(const gw_stats_analysis *R, long row, int skip1, int skip2)
 {
     cJSON *o = cJSON_CreateObject();
     for (int k = 0; k < R->gs.nkeys; k++) {
@@ -67,7 +67,7 @@ static cJSON *keys_json(const layer_stats_run *R, long row, int skip1, int skip2
     return o;
 }
 
-static cJSON *group_json(const layer_stats_run *R, const gw_layer_group *g)
+static cJSON *group_json(const gw_stats_analysis *R, const gw_stats_group *g)
 {
     cJSON *o = cJSON_CreateObject();
     cJSON_AddItemToObject(o, "keys", keys_json(R, g->first, -1, -1));
@@ -100,9 +100,9 @@ static cJSON *group_json(const layer_stats_run *R, const gw_layer_group *g)
     return o;
 }
 
-static cJSON *fit_json(const layer_stats_run *R, const layer_stats_diagram *D)
+static cJSON *fit_json(const gw_stats_analysis *R, const gw_stats_panel *D)
 {
-    const gw_layer_b31_fit *f = &D->fit;
+    const gw_stats_b31_fit *f = &D->fit;
     cJSON *o = cJSON_CreateObject();
     cJSON_AddStringToObject(o, "model", "B.31: f(x) = offset + (x - beta)/(2 tan gamma) (sqrt(1 + (a tan gamma / b) "
                                         "x^2/(x - beta)^2) - 1), offset = delta* / (2 R_m)");
@@ -110,11 +110,11 @@ static cJSON *fit_json(const layer_stats_run *R, const layer_stats_diagram *D)
     static const struct {
         int bit;
         const char *name;
-    } bits[] = {{GW_LAYER_B31_OFFSET, "offset"}, {GW_LAYER_B31_BETA, "beta"},
-                {GW_LAYER_B31_AB, "a_over_b"}, {GW_LAYER_B31_TANG, "tan_gamma"}};
+    } bits[] = {{GW_STATS_B31_OFFSET, "offset"}, {GW_STATS_B31_BETA, "beta"},
+                {GW_STATS_B31_AB, "a_over_b"}, {GW_STATS_B31_TANG, "tan_gamma"}};
     for (int k = 0; k < 4; k++)
         cJSON_AddItemToArray(R->fit_mask & bits[k].bit ? fr : fx, cJSON_CreateString(bits[k].name));
-    cJSON_AddStringToObject(o, "offset_source", (R->fit_mask & GW_LAYER_B31_OFFSET) ? "fitted" : D->offset_source);
+    cJSON_AddStringToObject(o, "offset_source", (R->fit_mask & GW_STATS_B31_OFFSET) ? "fitted" : D->offset_source);
     cJSON_AddNumberToObject(o, "offset", f->p.offset);
     cJSON_AddNumberToObject(o, "offset_err", f->err.offset);
     cJSON_AddNumberToObject(o, "beta", f->p.beta);
@@ -142,7 +142,7 @@ static cJSON *fit_json(const layer_stats_run *R, const layer_stats_diagram *D)
     double cx[NCURVE], cf[NCURVE], x0 = D->d.xs[0], x1 = D->d.xs[D->d.nx - 1];
     for (int i = 0; i < NCURVE; i++) {
         cx[i] = x0 + (x1 - x0) * i / (NCURVE - 1);
-        cf[i] = gw_layer_b31_eval(&f->p, cx[i]);
+        cf[i] = gw_stats_b31_eval(&f->p, cx[i]);
     }
     cJSON *c = cJSON_AddObjectToObject(o, "curve");
     cJSON_AddItemToObject(c, "rb_rm", gw_json_doubles(cx, NCURVE));
@@ -150,16 +150,16 @@ static cJSON *fit_json(const layer_stats_run *R, const layer_stats_diagram *D)
     return o;
 }
 
-static cJSON *diagram_json(const layer_stats_run *R, const layer_stats_diagram *D)
+static cJSON *diagram_json(const gw_stats_analysis *R, const gw_stats_panel *D)
 {
-    int kx = gw_layer_results_key(&R->t, "rb-rm"), kh = gw_layer_results_key(&R->t, "height-rm");
+    int kx = gw_stats_table_key(&R->t, "rb-rm"), kh = gw_stats_table_key(&R->t, "height-rm");
     cJSON *o = cJSON_CreateObject();
     cJSON_AddItemToObject(o, "keys", keys_json(R, R->gs.g[D->groups[0]].first, kx, kh));
     if (!D->ok) {
         cJSON_AddStringToObject(o, "error", D->reason);
         return o;
     }
-    const gw_layer_diagram *d = &D->d;
+    const gw_stats_diagram *d = &D->d;
     cJSON_AddItemToObject(o, "rb_rm", gw_json_doubles(d->xs, d->nx));
     cJSON_AddItemToObject(o, "height_rm", gw_json_doubles(d->hs, d->nh));
     cJSON *sh = cJSON_AddArrayToObject(o, "share");
@@ -168,7 +168,7 @@ static cJSON *diagram_json(const layer_stats_run *R, const layer_stats_diagram *
     cJSON_AddStringToObject(o, "placement", placement);
     cJSON *b = cJSON_AddArrayToObject(o, "boundary");
     for (int i = 0; i < d->nx; i++) {
-        const gw_layer_boundary_pt *p = &d->pts[i];
+        const gw_stats_boundary_pt *p = &d->pts[i];
         cJSON *q = cJSON_CreateObject();
         cJSON_AddNumberToObject(q, "rb_rm", p->x);
         cJSON_AddStringToObject(q, "kind", kind_name(p->kind));
@@ -197,11 +197,11 @@ static cJSON *diagram_json(const layer_stats_run *R, const layer_stats_diagram *
     return o;
 }
 
-static cJSON *binary_json(const layer_stats_run *R)
+static cJSON *binary_json(const gw_stats_analysis *R)
 {
     cJSON *a = cJSON_CreateArray();
     for (int k = 0; k < R->nbin; k++) {
-        const layer_stats_binary *b = &R->bin[k];
+        const gw_stats_binary *b = &R->bin[k];
         cJSON *o = cJSON_CreateObject();
         cJSON_AddNumberToObject(o, "rb_rm", b->rb_rm);
         cJSON_AddNumberToObject(o, "alpha", b->alpha);
@@ -213,15 +213,15 @@ static cJSON *binary_json(const layer_stats_run *R)
     return a;
 }
 
-static cJSON *walls_json(const layer_stats_run *R)
+static cJSON *walls_json(const gw_stats_analysis *R)
 {
     cJSON *a = cJSON_CreateArray();
-    int kw = gw_layer_results_key(&R->t, "remove-walls");
+    int kw = gw_stats_table_key(&R->t, "remove-walls");
     for (int k = 0; k < R->nwalls; k++) {
         cJSON *o = cJSON_CreateObject();
         cJSON_AddItemToObject(o, "keys", keys_json(R, R->gs.g[R->walls[k][0]].first, kw, -1));
         for (int w = 0; w < 2; w++) {
-            const gw_layer_group *g = &R->gs.g[R->walls[k][w]];
+            const gw_stats_group *g = &R->gs.g[R->walls[k][w]];
             cJSON *q = cJSON_AddObjectToObject(o, w ? "walls_removed" : "walls");
             cJSON_AddNumberToObject(q, "n_points", g->n);
             cJSON_AddNumberToObject(q, "bounce_share", g->share);
@@ -237,13 +237,13 @@ static cJSON *walls_json(const layer_stats_run *R)
     return a;
 }
 
-cJSON *layer_stats_json(const layer_stats_run *R, int full)
+cJSON *gw_stats_json(const gw_stats_analysis *R, int full)
 {
-    const gw_layer_results *t = &R->t;
+    const gw_stats_table *t = &R->t;
     cJSON *o = cJSON_CreateObject();
     cJSON_AddStringToObject(o, "program", "granwave layer-stats");
     cJSON_AddStringToObject(o, "version", gw_version());
-    cJSON_AddStringToObject(o, "command", R->cmdline);
+    cJSON_AddStringToObject(o, "command", R->cmdline ? R->cmdline : "(library call)");
     cJSON_AddStringToObject(o, "input", R->input);
     cJSON_AddNumberToObject(o, "criterion", R->gs.criterion);
     cJSON_AddNumberToObject(o, "rows", (double)t->nrows);
@@ -276,29 +276,29 @@ static void num(FILE *fp, double v)
         fprintf(fp, ",%.9g", v);
 }
 
-static void head(FILE *fp, const layer_stats_run *R, const char *what)
+static void head(FILE *fp, const gw_stats_analysis *R, const char *what)
 {
-    fprintf(fp, "# granwave %s layer-stats\n# command: %s\n# input: %s\n", gw_version(), R->cmdline, R->input);
+    fprintf(fp, "# granwave %s layer-stats\n# command: %s\n# input: %s\n", gw_version(), R->cmdline ? R->cmdline : "(library call)", R->input);
     fprintf(fp, "# criterion: %.6g (a group bounces globally when its share of bouncing impact points >= "
                 "criterion)\n# %s\n", R->gs.criterion, what);
 }
 
 /* Header cells of the grouping keys (skipping grid indices skip1, skip2). */
-static void key_names(FILE *fp, const layer_stats_run *R, int skip1, int skip2)
+static void key_names(FILE *fp, const gw_stats_analysis *R, int skip1, int skip2)
 {
     for (int k = 0; k < R->gs.nkeys; k++)
         if (R->gs.key[k] != skip1 && R->gs.key[k] != skip2)
             fprintf(fp, ",%s", R->t.grid_name[R->gs.key[k]]);
 }
 
-static void key_values(FILE *fp, const layer_stats_run *R, long row, int skip1, int skip2)
+static void key_values(FILE *fp, const gw_stats_analysis *R, long row, int skip1, int skip2)
 {
     for (int k = 0; k < R->gs.nkeys; k++)
         if (R->gs.key[k] != skip1 && R->gs.key[k] != skip2)
             fprintf(fp, ",%s", gval(R, row, R->gs.key[k]));
 }
 
-static void write_groups(FILE *fp, const layer_stats_run *R)
+static void write_groups(FILE *fp, const gw_stats_analysis *R)
 {
     head(fp, R, "per group of impact points (every grid key but point): e_n, e, alpha_r (deg) over the "
                 "bouncing points (n_rebound of them), the others over all points; std = sample standard "
@@ -314,52 +314,24 @@ static void write_groups(FILE *fp, const layer_stats_run *R)
                 "bounced; verdict_certain = 1 when no outcome of theirs could change the verdict");
     fprintf(fp, "group");
     key_names(fp, R, -1, -1);
-    fprintf(fp, ",n_points,n_valid,n_bounced,bounce_share,bouncing,e_n_mean,e_n_std,e_mean,e_std,alpha_r_mean,"
-                "alpha_r_std,n_rebound,penetration_mean,penetration_std,penetration_rm_mean,penetration_rm_std,"
-                "block_loss_mean,block_loss_std,dissipated_mean,dissipated_std,rebound_energy_mean,rebound_energy_std,"
-                "energy_error_max,k_stable_e,x_span,x_span_rm,e_n_first_mean,e_n_first_std,e_first_mean,e_first_std,"
-                "alpha_r_first_mean,alpha_r_first_std,n_rebound_first,bounce_share_decided,bounce_share_high,"
-                "verdict_certain\n");
+    fprintf(fp, ",%s\n", GW_STATS_GROUP_COLUMNS);
     for (int a = 0; a < R->gs.n; a++) {
-        const gw_layer_group *g = &R->gs.g[a];
+        const gw_stats_group *g = &R->gs.g[a];
+        double row[GW_STATS_GROUP_NCOLS];
+        gw_stats_group_row(g, row);
         fprintf(fp, "%d", a);
         key_values(fp, R, g->first, -1, -1);
-        fprintf(fp, ",%d,%d,%d", g->n, g->n_valid, g->n_bounced);
-        num(fp, g->share);
-        fprintf(fp, ",%d", g->bouncing);
-        const gw_layer_moment *m[] = {&g->e_n, &g->e, &g->alpha_r};
-        for (int k = 0; k < 3; k++) {
-            num(fp, m[k]->mean);
-            num(fp, m[k]->std);
-        }
-        fprintf(fp, ",%d", g->e.n);
-        const gw_layer_moment *m2[] = {&g->penetration, &g->penetration_rm, &g->block_loss, &g->dissipated,
-                                       &g->rebound_energy};
-        for (int k = 0; k < 5; k++) {
-            num(fp, m2[k]->mean);
-            num(fp, m2[k]->std);
-        }
-        num(fp, g->energy_error_max);
-        fprintf(fp, ",%d", g->k_stable_e);
-        num(fp, g->x_span);
-        num(fp, g->x_span_rm);
-        const gw_layer_moment *m3[] = {&g->e_n_first, &g->e_first, &g->alpha_r_first};
-        for (int k = 0; k < 3; k++) {
-            num(fp, m3[k]->mean);
-            num(fp, m3[k]->std);
-        }
-        fprintf(fp, ",%d", g->e_first.n);
-        num(fp, g->share_decided);
-        num(fp, g->share_high);
-        fprintf(fp, ",%d\n", g->verdict_certain);
+        for (int c = 0; c < GW_STATS_GROUP_NCOLS; c++)
+            num(fp, row[c]); /* counts and flags print as integers ("%.9g") */
+        fputc('\n', fp);
     }
 }
 
-static void write_convergence(FILE *fp, const layer_stats_run *R)
+static void write_convergence(FILE *fp, const gw_stats_analysis *R)
 {
-    const gw_layer_results *t = &R->t;
-    int cb = gw_layer_results_col(t, "bounced"), cen = gw_layer_results_col(t, "e_n"),
-        ce = gw_layer_results_col(t, "e");
+    const gw_stats_table *t = &R->t;
+    int cb = gw_stats_table_col(t, "bounced"), cen = gw_stats_table_col(t, "e_n"),
+        ce = gw_stats_table_col(t, "e");
     head(fp, R, "convergence with the number of points (the paper's Fig. 10): row k of a group holds its k-th "
                 "point (by point index) and the means of e_n and e over the bouncing points among the first k, "
                 "and the bounce share of the first k");
@@ -367,7 +339,7 @@ static void write_convergence(FILE *fp, const layer_stats_run *R)
     key_names(fp, R, -1, -1);
     fprintf(fp, ",k,case,point,bounced,e_n,e,running_mean_e_n,running_mean_e,running_share\n");
     for (int a = 0; a < R->gs.n; a++) {
-        const gw_layer_group *g = &R->gs.g[a];
+        const gw_stats_group *g = &R->gs.g[a];
         for (int k = 0; k < g->n; k++) {
             long r = g->rows[k];
             fprintf(fp, "%d", a);
@@ -384,7 +356,7 @@ static void write_convergence(FILE *fp, const layer_stats_run *R)
     }
 }
 
-static void write_binary(FILE *fp, const layer_stats_run *R)
+static void write_binary(FILE *fp, const gw_stats_analysis *R)
 {
     head(fp, R, "first contact against the binary impact (B.24-B.28): block_loss = (E_kb(0) - E_kb)/E_incident at "
                 "the end of the block's first contact, over every row with this R_b/R_m and incidence (deg); "
@@ -392,7 +364,7 @@ static void write_binary(FILE *fp, const layer_stats_run *R)
                 "4 r^3/(1 + r^3)^2, r = R_b/R_m");
     fprintf(fp, "rb_rm,alpha,n,block_loss_mean,block_loss_std,binary_disc,binary_sphere\n");
     for (int k = 0; k < R->nbin; k++) {
-        const layer_stats_binary *b = &R->bin[k];
+        const gw_stats_binary *b = &R->bin[k];
         fprintf(fp, "%.9g,%.9g,%d", b->rb_rm, b->alpha, b->loss.n);
         num(fp, b->loss.mean);
         num(fp, b->loss.std);
@@ -402,9 +374,9 @@ static void write_binary(FILE *fp, const layer_stats_run *R)
     }
 }
 
-static void write_walls(FILE *fp, const layer_stats_run *R)
+static void write_walls(FILE *fp, const gw_stats_analysis *R)
 {
-    int kw = gw_layer_results_key(&R->t, "remove-walls");
+    int kw = gw_stats_table_key(&R->t, "remove-walls");
     head(fp, R, kw < 0 ? "walls: the table has no remove-walls grid key, nothing to compare"
                        : "walls kept (remove-walls = 0) and removed at impact time (remove-walls = 1) side by "
                          "side, for the groups that agree on every other key");
@@ -420,7 +392,7 @@ static void write_walls(FILE *fp, const layer_stats_run *R)
         fprintf(fp, "%d", k);
         key_values(fp, R, R->gs.g[R->walls[k][0]].first, kw, -1);
         for (int w = 0; w < 2; w++) {
-            const gw_layer_group *g = &R->gs.g[R->walls[k][w]];
+            const gw_stats_group *g = &R->gs.g[R->walls[k][w]];
             fprintf(fp, ",%d", g->n);
             num(fp, g->share);
             fprintf(fp, ",%d", g->bouncing);
@@ -434,9 +406,9 @@ static void write_walls(FILE *fp, const layer_stats_run *R)
     }
 }
 
-static void write_diagram(FILE *fp, const layer_stats_run *R)
+static void write_diagram(FILE *fp, const gw_stats_analysis *R)
 {
-    int kx = gw_layer_results_key(&R->t, "rb-rm"), kh = gw_layer_results_key(&R->t, "height-rm");
+    int kx = gw_stats_table_key(&R->t, "rb-rm"), kh = gw_stats_table_key(&R->t, "height-rm");
     head(fp, R, placement);
     fprintf(fp, "# kind: cross (boundary between two cells), above (every H bounces), below (no H bounces), "
                 "inverted (bouncing only above); changes > 1: the verdict changes more than once along H; "
@@ -445,9 +417,9 @@ static void write_diagram(FILE *fp, const layer_stats_run *R)
     key_names(fp, R, kx, kh);
     fprintf(fp, ",rb_rm,kind,h_star,h_lo,h_hi,share_lo,share_hi,changes,penetration_rm,b31\n");
     for (int q = 0; q < R->ndia; q++) {
-        const layer_stats_diagram *D = &R->dia[q];
+        const gw_stats_panel *D = &R->dia[q];
         for (int i = 0; D->ok && i < D->d.nx; i++) {
-            const gw_layer_boundary_pt *p = &D->d.pts[i];
+            const gw_stats_boundary_pt *p = &D->d.pts[i];
             fprintf(fp, "%d", q);
             key_values(fp, R, R->gs.g[D->groups[0]].first, kx, kh);
             fprintf(fp, ",%.9g,%s", p->x, kind_name(p->kind));
@@ -458,15 +430,15 @@ static void write_diagram(FILE *fp, const layer_stats_run *R)
             num(fp, p->s_hi);
             fprintf(fp, ",%d", p->changes);
             num(fp, p->penetration_rm);
-            num(fp, D->fit_ok ? gw_layer_b31_eval(&D->fit.p, p->x) : NAN);
+            num(fp, D->fit_ok ? gw_stats_b31_eval(&D->fit.p, p->x) : NAN);
             fputc('\n', fp);
         }
     }
 }
 
-typedef void (*writer)(FILE *fp, const layer_stats_run *R);
+typedef void (*writer)(FILE *fp, const gw_stats_analysis *R);
 
-int layer_stats_write_files(const layer_stats_run *R, const char *dir, gw_err *err)
+int gw_stats_write_files(const gw_stats_analysis *R, const char *dir, gw_err *err)
 {
     static const struct {
         const char *name;
@@ -487,7 +459,7 @@ int layer_stats_write_files(const layer_stats_run *R, const char *dir, gw_err *e
     if (rc == GW_OK) {
         if (gw_path_join(path, sizeof path, dir, "boundary_fit.json") != GW_OK)
             return gw_err_set(err, GW_EINVAL, "%s: path too long", dir);
-        cJSON *j = layer_stats_json(R, 0);
+        cJSON *j = gw_stats_json(R, 0);
         rc = j ? gw_json_write(path, j, err) : gw_err_set(err, GW_ENOMEM, "%s: out of memory", path);
         cJSON_Delete(j);
     }

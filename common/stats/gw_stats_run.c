@@ -1,0 +1,301 @@
+/*
+ * gw_stats_run.c: the whole analysis of a layer sweep table (gw_stats.h),
+ * the computation behind `granwave layer-stats` (docs/physics.md 2.3, 2.5):
+ *  - per group (every grid key but `point`): the moments and shares of
+ *    gw_stats_groups_make (gw_stats_table.c);
+ *  - binary-impact check: per R_b/R_m (and incidence) the block's energy loss
+ *    in its first contact beside 4 m/(1 + m)^2, m = r^2 (discs) or r^3
+ *    (spheres) (B.24-B.28);
+ *  - walls: with and without the walls side by side (grid key remove-walls);
+ *  - bouncing-occurrence diagram (grid keys rb-rm and height-rm; one panel
+ *    per combination of the other keys): boundary H*(R_b/R_m), R_crit,
+ *    (R_min, H_min) and a fit of B.31 with a = (pi/2) rho V_i^2 (J/m^3 per
+ *    unit thickness) for b = a / (a/b) (gw_stats_diagram.c).
+ * The setup's table (gw_stats_setup_params) has the command's flags as rows.
+ * Units: R_m for the diagram, degrees for angles.
+ */
+#include <math.h>
+#include <stddef.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "gw_cli.h"
+#include "gw_stats.h"
+
+#define OFF(f) offsetof(gw_stats_setup, f)
+
+static const gw_param setup_params[] = {
+    {.name = "input", .type = GW_PARAM_TEXT, .offset = OFF(input), .unit = "", .metavar = "RESULTS.csv",
+     .help = "the sweep table (OUT/results.csv of `granwave sweep` with model = layer; required)"},
+    {.name = "criterion", .type = GW_PARAM_DOUBLE, .offset = OFF(criterion), .unit = "", .min = 0, .max = 1,
+     .open_min = 1, .def = "0.75", .metavar = "S",
+     .help = "global bouncing verdict: share of bouncing points >= S, in (0, 1] [0.75]"},
+    {.name = "fit", .type = GW_PARAM_TEXT, .offset = OFF(fit), .unit = "", .def = "beta,a_over_b",
+     .metavar = "LIST", .help = "B.31 parameters to fit among offset, beta, a_over_b, tan_gamma [beta,a_over_b]"},
+    {.name = "gamma-deg", .type = GW_PARAM_DOUBLE, .offset = OFF(gamma_deg), .unit = "deg", .min = 0, .max = 89,
+     .open_min = 1, .def = "0.2", .metavar = "G",
+     .help = "cone angle gamma (start value, or fixed when not fitted), deg [0.2, the paper's]"},
+    {.name = "delta-rm", .type = GW_PARAM_DOUBLE, .offset = OFF(delta_rm), .unit = "", .min = 0, .max = 1e6,
+     .metavar = "D", .help = "delta* / R_m of B.31 [measured: mean penetration_rm at the boundary]"},
+    GW_PARAM_END};
+
+const gw_param *gw_stats_setup_params(void)
+{
+    return setup_params;
+}
+
+int gw_stats_setup_init(gw_stats_setup *s)
+{
+    memset(s, 0, sizeof *s);
+    s->defaults = (gw_stats_defaults){NAN, NAN, NAN, NAN};
+    gw_err err = {{0}};
+    return gw_param_init(setup_params, s, &err);
+}
+
+void gw_stats_setup_clear(gw_stats_setup *s)
+{
+    gw_param_clear(setup_params, s);
+}
+
+int gw_stats_fit_parse(const char *s, int *mask, gw_err *err)
+{
+    static const struct {
+        const char *name;
+        int bit;
+    } names[] = {{"offset", GW_STATS_B31_OFFSET}, {"beta", GW_STATS_B31_BETA},
+                 {"a_over_b", GW_STATS_B31_AB}, {"tan_gamma", GW_STATS_B31_TANG}};
+    *mask = 0;
+    const char *p = s ? s : "";
+    while (*p) {
+        size_t len = strcspn(p, ",");
+        int found = 0;
+        for (size_t i = 0; i < sizeof names / sizeof names[0]; i++)
+            if (strlen(names[i].name) == len && strncmp(p, names[i].name, len) == 0) {
+                *mask |= names[i].bit;
+                found = 1;
+            }
+        if (!found)
+            return gw_err_set(err, GW_EINVAL, "fit: unknown parameter '%.*s' (offset, beta, a_over_b, tan_gamma)",
+                              (int)len, p);
+        p += len + (p[len] == ',');
+    }
+    if (!*mask)
+        return gw_err_set(err, GW_EINVAL, "fit: no parameter given");
+    return GW_OK;
+}
+
+/* ------------------------------------------------------------ binary table --- */
+
+static int binary_make(gw_stats_analysis *A, gw_err *err)
+{
+    const gw_stats_table *t = &A->t;
+    const gw_stats_defaults *df = &A->defaults;
+    if (isnan(df->rb_rm) && gw_stats_table_key(t, "rb-rm") < 0 && !gw_stats_table_param(t, "rb-rm"))
+        return gw_err_set(err, GW_EINVAL, "%s: rb-rm is neither a grid key nor a \"# param\" line and has no "
+                                          "default", t->path);
+    if (isnan(df->alpha) && gw_stats_table_key(t, "alpha") < 0 && !gw_stats_table_param(t, "alpha"))
+        return gw_err_set(err, GW_EINVAL, "%s: alpha is neither a grid key nor a \"# param\" line and has no "
+                                          "default", t->path);
+    int cl = gw_stats_table_col(t, "block_loss_first_contact");
+    A->bin = calloc((size_t)t->nrows, sizeof *A->bin);
+    double *v = malloc((size_t)t->nrows * sizeof *v);
+    if (!A->bin || !v) {
+        free(v);
+        return gw_err_set(err, GW_ENOMEM, "%s: out of memory", t->path);
+    }
+    for (long i = 0; i < t->nrows; i++) {
+        double rb = gw_stats_table_value(t, i, "rb-rm", df->rb_rm);
+        double al = gw_stats_table_value(t, i, "alpha", df->alpha);
+        int k = 0;
+        while (k < A->nbin && !(A->bin[k].rb_rm == rb && A->bin[k].alpha == al))
+            k++;
+        if (k == A->nbin)
+            A->bin[A->nbin++] = (gw_stats_binary){.rb_rm = rb, .alpha = al};
+    }
+    for (int k = 0; k < A->nbin; k++) {
+        int n = 0;
+        for (long i = 0; i < t->nrows; i++)
+            if (gw_stats_table_value(t, i, "rb-rm", df->rb_rm) == A->bin[k].rb_rm &&
+                gw_stats_table_value(t, i, "alpha", df->alpha) == A->bin[k].alpha)
+                v[n++] = t->val[i * t->ncols + cl];
+        gw_stats_moment_of(v, n, &A->bin[k].loss);
+        A->bin[k].disc = gw_stats_binary_loss(A->bin[k].rb_rm, 0);
+        A->bin[k].sphere = gw_stats_binary_loss(A->bin[k].rb_rm, 1);
+    }
+    free(v);
+    return GW_OK;
+}
+
+/* ------------------------------------------------------------------- walls --- */
+
+/* Do groups a and b agree on every grouping key except grid key skip? */
+static int same_except(const gw_stats_table *t, const gw_stats_groups *gs, long ra, long rb, int skip)
+{
+    for (int k = 0; k < gs->nkeys; k++) {
+        int c = gs->key[k];
+        if (c != skip && strcmp(t->grid_value[ra * t->ngrid + c], t->grid_value[rb * t->ngrid + c]) != 0)
+            return 0;
+    }
+    return 1;
+}
+
+static int walls_make(gw_stats_analysis *A)
+{
+    const gw_stats_table *t = &A->t;
+    int kw = gw_stats_table_key(t, "remove-walls");
+    if (kw < 0)
+        return GW_OK;
+    A->walls = calloc((size_t)A->gs.n, sizeof *A->walls);
+    if (!A->walls)
+        return GW_ENOMEM;
+    for (int a = 0; a < A->gs.n; a++) {
+        long ra = A->gs.g[a].first;
+        if (gw_parse_flag(t->grid_value[ra * t->ngrid + kw]) != 0)
+            continue;
+        for (int b = 0; b < A->gs.n; b++) {
+            long rb = A->gs.g[b].first;
+            if (gw_parse_flag(t->grid_value[rb * t->ngrid + kw]) == 1 && same_except(t, &A->gs, ra, rb, kw)) {
+                A->walls[A->nwalls][0] = a;
+                A->walls[A->nwalls++][1] = b;
+                break;
+            }
+        }
+    }
+    return GW_OK;
+}
+
+/* ---------------------------------------------------------------- diagrams --- */
+
+static void diagram_fit(gw_stats_analysis *A, gw_stats_panel *D)
+{
+    const gw_stats_diagram *d = &D->d;
+    const gw_stats_table *t = &A->t;
+    D->offset = isfinite(A->delta_rm) ? A->delta_rm / 2 : d->penetration_rm / 2;
+    D->offset_source = isfinite(A->delta_rm) ? "--delta-rm" : "measured: mean penetration_rm / 2 "
+                                                              "of the cells bracketing the boundary";
+    /* a = (pi/2) rho V_i^2 for the translation of a/b into b */
+    long r0 = A->gs.g[D->groups[0]].first;
+    double vi = gw_stats_table_value(t, r0, "vi", A->defaults.vi);
+    double rho = gw_stats_table_value(t, r0, "density", A->defaults.density);
+    D->a = M_PI / 2 * rho * vi * vi;
+    double *x = malloc(2 * ((size_t)d->nx + 1) * sizeof *x), *h = x ? x + d->nx + 1 : NULL;
+    int n = 0;
+    for (int i = 0; x && i < d->nx; i++)
+        if (d->pts[i].kind == GW_STATS_BND_CROSS) {
+            x[n] = d->pts[i].x;
+            h[n++] = d->pts[i].h;
+        }
+    gw_stats_b31 st = {.offset = D->offset, .beta = 1, .a_over_b = 1,
+                       .tan_gamma = tan(A->gamma_deg * M_PI / 180)};
+    gw_err err = {{0}};
+    if (!x)
+        snprintf(D->fit_reason, sizeof D->fit_reason, "out of memory");
+    else if (!isfinite(D->offset) && !(A->fit_mask & GW_STATS_B31_OFFSET))
+        snprintf(D->fit_reason, sizeof D->fit_reason, "no offset: no boundary crossing with a "
+                                                      "penetration (give --delta-rm)");
+    else if ((D->fit_ok = gw_stats_b31_fit_points(x, h, n, &st, A->fit_mask, &D->fit, &err) == GW_OK) == 0)
+        snprintf(D->fit_reason, sizeof D->fit_reason, "%s", err.msg);
+    free(x);
+}
+
+static int diagrams_make(gw_stats_analysis *A)
+{
+    const gw_stats_table *t = &A->t;
+    const gw_stats_groups *gs = &A->gs;
+    int kx = gw_stats_table_key(t, "rb-rm"), kh = gw_stats_table_key(t, "height-rm");
+    if (kx < 0 || kh < 0)
+        return GW_OK;
+    int *owner = malloc(((size_t)gs->n + 1) * sizeof *owner);
+    A->dia = calloc((size_t)gs->n + 1, sizeof *A->dia);
+    if (!owner || !A->dia) {
+        free(owner);
+        return GW_ENOMEM;
+    }
+    /* partition the groups by the values of the other keys */
+    for (int a = 0; a < gs->n; a++) {
+        owner[a] = -1;
+        for (int b = 0; b < a && owner[a] < 0; b++) {
+            long ra = gs->g[a].first, rb = gs->g[b].first;
+            int same = 1;
+            for (int k = 0; k < gs->nkeys && same; k++) {
+                int c = gs->key[k];
+                same = c == kx || c == kh ||
+                       strcmp(t->grid_value[ra * t->ngrid + c], t->grid_value[rb * t->ngrid + c]) == 0;
+            }
+            if (same)
+                owner[a] = owner[b];
+        }
+        if (owner[a] < 0) {
+            owner[a] = A->ndia++;
+            A->dia[owner[a]].groups = malloc((size_t)gs->n * sizeof(int));
+            if (!A->dia[owner[a]].groups) {
+                free(owner);
+                return GW_ENOMEM;
+            }
+        }
+        gw_stats_panel *D = &A->dia[owner[a]];
+        D->groups[D->ngroups++] = a;
+    }
+    free(owner);
+    for (int q = 0; q < A->ndia; q++) {
+        gw_stats_panel *D = &A->dia[q];
+        double *buf = malloc(4 * (size_t)D->ngroups * sizeof *buf);
+        if (!buf)
+            return GW_ENOMEM;
+        double *x = buf, *h = buf + D->ngroups, *s = h + D->ngroups, *p = s + D->ngroups;
+        for (int i = 0; i < D->ngroups; i++) {
+            const gw_stats_group *g = &gs->g[D->groups[i]];
+            x[i] = t->grid_num[g->first * t->ngrid + kx];
+            h[i] = t->grid_num[g->first * t->ngrid + kh];
+            s[i] = g->share;
+            p[i] = g->penetration_rm.mean;
+        }
+        gw_err err = {{0}};
+        D->ok = gw_stats_diagram_make(D->ngroups, x, h, s, p, A->gs.criterion, &D->d, &err) == GW_OK;
+        free(buf);
+        if (!D->ok)
+            snprintf(D->reason, sizeof D->reason, "%s", err.msg);
+        else
+            diagram_fit(A, D);
+    }
+    return GW_OK;
+}
+
+void gw_stats_analysis_free(gw_stats_analysis *A)
+{
+    for (int q = 0; A->dia && q < A->ndia; q++) {
+        free(A->dia[q].groups);
+        gw_stats_diagram_free(&A->dia[q].d);
+    }
+    free(A->dia);
+    free(A->bin);
+    free(A->walls);
+    free(A->cmdline);
+    gw_stats_groups_free(&A->gs);
+    gw_stats_table_free(&A->t);
+    memset(A, 0, sizeof *A);
+}
+
+int gw_stats_analyse(const gw_stats_setup *s, gw_stats_analysis *A, gw_err *err)
+{
+    memset(A, 0, sizeof *A);
+    int rc = gw_param_check(setup_params, s, err);
+    if (rc != GW_OK)
+        return rc;
+    if (!s->input || !*s->input)
+        return gw_err_set(err, GW_EINVAL, "input: a sweep table (results.csv) is required");
+    if ((rc = gw_stats_fit_parse(s->fit, &A->fit_mask, err)) != GW_OK)
+        return rc;
+    A->gamma_deg = s->gamma_deg;
+    A->delta_rm = s->delta_rm;
+    A->defaults = s->defaults;
+    rc = gw_stats_table_read(s->input, &A->t, err);
+    A->input = A->t.path;
+    if (rc == GW_OK)
+        rc = gw_stats_groups_make(&A->t, s->criterion, &A->gs, err);
+    if (rc == GW_OK)
+        rc = binary_make(A, err);
+    if (rc == GW_OK && (walls_make(A) != GW_OK || diagrams_make(A) != GW_OK))
+        rc = gw_err_set(err, GW_ENOMEM, "%s: out of memory", A->input);
+    return rc;
+}

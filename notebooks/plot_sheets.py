@@ -550,8 +550,9 @@ def plateau_table(cases):
 
 def fig_plateau_runs(cases, title=""):
     """fig_plateau for cases held in memory, with the numbers the paper gives at h = 5.1 mm
-    (rigid_wall.csv): the peak force F_max = 69 N +- 5 % (a band: the peaks, not the mean)
-    and the N = 40 collision time 1.04 ms (on the eps_eff panel's twin: tau_N(40) per case).
+    (rigid_wall.csv): the peak force F_max = 69 N +- 5 % (a band: the peaks, not the mean).
+    Three panels: the N = 30 wall force with its window means, the means relative to the
+    first, and eps_eff(N). The paper's N = 40 collision time (1.04 ms) is in plateau_table.
     The traces of the paper's Fig. 4d and the values of its Fig. 11 are not in
     data/falcon1998 and are not drawn."""
     if not cases:

@@ -152,7 +152,7 @@ nbs=("$SRC"/notebooks/*.ipynb)
 for nb in "${nbs[@]}"; do
     name=$(basename "$nb")
     start=$(date +%s)
-    if ! "$JUPYTER" nbconvert --to notebook --execute --ExecutePreprocessor.timeout=300 \
+    if ! "$JUPYTER" nbconvert --to notebook --execute --ExecutePreprocessor.timeout=600 \
             --output-dir "$tmp/nbout" "$nb" >"$tmp/nb.log" 2>&1; then
         grep -v -e "frozen modules" -e "Debugger warning" -e "make the debugger" \
              -e "PYDEVD_DISABLE_FILE_VALIDATION" "$tmp/nb.log" | tail -40

@@ -8,6 +8,7 @@ numbers come either from the paper (data/falcon1998/*.csv) or from the program.
     paper_value(q, h_mm)   one row of rigid_wall.csv, selected by quantity and height
     find_granwave()        path of the program: $GRANWAVE, ../build/granwave, build/granwave
     run_granwave(args)     run it; parsed JSON (json=True) or stdout text
+    import_granwave()      the Python module granwave (python/granwave over libgranwave)
 
 Columns whose non-empty cells all parse as numbers become float numpy arrays (empty cells
 and "nan" -> NaN); other columns are lists of str. Dicts keep the file's column order.
@@ -25,7 +26,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 DATA_DIR = os.path.normpath(os.path.join(HERE, "..", "data", "falcon1998"))
 
 __all__ = ["DATA_DIR", "GranwaveError", "load_csv", "load_table", "paper_value",
-           "find_granwave", "run_granwave"]
+           "find_granwave", "run_granwave", "import_granwave"]
 
 
 class GranwaveError(RuntimeError):
@@ -162,3 +163,29 @@ def run_granwave(args, json=True, timeout=600, program=None):
     except ValueError as e:
         raise GranwaveError(f"{' '.join(cmd)}: stdout is not JSON ({e}); "
                             f"first 200 chars: {p.stdout[:200]!r}") from e
+
+
+def import_granwave():
+    """The Python module granwave (the repository's python/granwave), imported.
+
+    ../python (relative to this file) goes first on sys.path unless the module is already
+    importable from an installed prefix. The library is the module's choice (GRANWAVE_LIB,
+    an installed prefix, then <repo>/build/lib), except that when GRANWAVE_LIB is unset and
+    GRANWAVE names a program whose build tree holds lib/libgranwave.so, that library is
+    used, so that the program and the module of one notebook come from the same build.
+    Raises GranwaveError with the module's message if it cannot be loaded.
+    """
+    import importlib
+    import sys
+    src = os.path.normpath(os.path.join(HERE, "..", "python"))
+    if os.path.isdir(os.path.join(src, "granwave")) and src not in sys.path:
+        sys.path.insert(0, src)
+    exe = os.environ.get("GRANWAVE")
+    if not os.environ.get("GRANWAVE_LIB") and exe:
+        lib = os.path.join(os.path.dirname(os.path.abspath(exe)), "lib", "libgranwave.so")
+        if os.path.isfile(lib):
+            os.environ["GRANWAVE_LIB"] = lib
+    try:
+        return importlib.import_module("granwave")
+    except ImportError as e:
+        raise GranwaveError(f"the Python module granwave could not be loaded: {e}") from e

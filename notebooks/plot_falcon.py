@@ -1,5 +1,8 @@
 #!/usr/bin/python3
 """plot_falcon.py DIR: figures of a `granwave falcon --out DIR` run, written to DIR/figures/.
+plot_falcon.py --module DIR [--n A:B]: the same figures from the Python module granwave
+(granwave.falcon for the study, granwave.chain for the traces and the final velocities;
+no program run, nothing read but data/falcon1998), written to DIR/figures/.
 
 Reads (all produced by the program; nothing is recomputed here but unit conversions):
   falcon_runs.csv              F_max, tau_N, E_rel/E_K per (v_imp, N)
@@ -16,9 +19,19 @@ Writes fmax_vs_n.png, taun_vs_n.png, wall_force_n7_15_30.png, velocities_n7.png,
 erel_vs_n.png, final_velocities.png. Each PNG carries the program version and settings
 in its metadata and a footer line.
 
-Exit status: 0 ok, 2 if DIR or a required file is missing or unreadable.
-Use Debian's /usr/bin/python3. The functions (load_run, make_figures) are also used by
-notebooks/falcon_column.ipynb to show the figures inline.
+With --module the run is run_from_module(n): the default study of `granwave falcon`
+(N = 1..40 unless --n; v_imp = 0.3 m/s and the heights 1.9, 2.9, 3.1, 5.1 mm; RK4 with the
+step of the 1e-6 accuracy target), the traces for N = 7, 15, 30 and the final velocities at
+0.3 m/s from granwave.chain with its own default solver (CVODE, rtol 1e-12). The program's
+files use the study's RK4 for these, so they differ by what its 1e-6 target allows: trace
+peaks by 4e-7 of F_max and final velocities by 2.3e-7 m/s (measured at N = 1..30), far
+below what the figures resolve; the study's own numbers are the same library call.
+The library is found as the module finds it (GRANWAVE_LIB, ...).
+
+Exit status: 0 ok, 2 if DIR or a required file is missing or unreadable, or (--module) if
+the module cannot be loaded or refuses a value.
+Use Debian's /usr/bin/python3. The functions (load_run, run_from_module, make_figures)
+are also used by notebooks/falcon_column.ipynb to show the figures inline.
 """
 
 import json
@@ -98,6 +111,93 @@ def load_run(d):
     return run
 
 
+# keywords of granwave.falcon that granwave.chain does not take
+_STUDY_ONLY = ("vimp", "heights", "n", "accuracy", "jobs")
+_SOLVER_KEYS = ("solver", "method", "rtol", "atol", "dt")
+
+
+def _nan_none(x):
+    x = float(x)
+    return None if not np.isfinite(x) else x
+
+
+def run_from_module(n=(1, 40), progress=None, **kw):
+    """The run dict of load_run, computed with the Python module granwave instead of read
+    from a `granwave falcon --out` directory.
+
+    n = (A, B): column sizes (default 1..40, as `granwave falcon`); other keywords are granwave.falcon's (vimp, heights, material,
+    solver, ...); the model keywords go to granwave.chain as well. The study is one
+    granwave.falcon call; the traces (N = 7, 15, 30 at the first velocity, sampled every
+    tau_1/50 as the program's) and the final velocities (every N at the reference velocity
+    of fig_final) are granwave.chain calls. Raises InputError if the module cannot be
+    loaded or refuses a value (the message names it).
+    """
+    try:
+        gw = gwdata.import_granwave()
+    except gwdata.GranwaveError as e:
+        raise InputError(str(e))
+    try:
+        f = gw.falcon(n=tuple(int(x) for x in n), progress=progress, **kw)
+        model = {k: v for k, v in kw.items() if k not in _STUDY_ONLY}
+        nv, ns = len(f.v_imp), np.asarray(f.n, dtype=float)
+        runs = {"v_imp_m_s": np.repeat(f.v_imp, len(ns)), "h_mm": np.repeat(f.h_mm, len(ns)),
+                "n": np.tile(ns, nv)}
+        for col, key in (("f_max_N", "f_max"), ("tau_max_s", "tau_max"), ("tau_n_s", "tau_n"),
+                         ("period_s", "period"), ("e_rel_over_e_k", "e_rel_over_e_k"),
+                         ("eps_eff", "eps_eff"), ("eps_col", "eps_col"), ("n_s", "n_s"),
+                         ("energy_error", "energy_error")):
+            runs[col] = np.asarray(f[key], dtype=float).reshape(-1)
+        per_v = ("t_q", "t_q_err", "tau_fit_intercept", "tau_fit_intercept_err", "r2", "t_q_n20",
+                 "t_q_n20_err", "wave_speed", "wave_speed_n20", "wave_speed_theory", "t_q_theory",
+                 "tau_1_theory", "f_max_1_theory", "f_max_mean", "f_max_min", "f_max_max",
+                 "tau_max_mean", "period_mean")
+        velocities = []
+        for i in range(nv):
+            e = {"v_imp": float(f.v_imp[i]), "h_mm": _nan_none(f.h_mm[i])}
+            e.update({k: _nan_none(f[k][i]) for k in per_v if k in f})
+            velocities.append(e)
+        v0 = float(f.v_imp[0])
+        wall, beads7 = {}, None
+        for nt in (7, 15, 30):
+            if nt > ns.max() or nt < ns.min():
+                continue
+            r = gw.chain(n=nt, vimp=v0, trace=True, dt_out=float(f.tau_1_theory[0]) / 50, **model)
+            wall[nt] = {"t_s": np.asarray(r.t), "f_wall_N": np.asarray(r.f_wall)}
+            if nt == 7:
+                beads7 = {"t_s": np.asarray(r.t)}
+                beads7.update({f"v{j + 1}_m_s": np.asarray(r.v)[:, j] for j in range(nt)})
+        groups = [(v, None) for v in f.v_imp]
+        vref = next((v for v, _ in groups if abs(v - 0.3) < 1e-9), v0)
+        fin = {"v_imp_m_s": [], "n": [], "bead": [], "final_v_m_s": []}
+        for nn in ns.astype(int):
+            r = gw.chain(n=int(nn), vimp=vref, **model)
+            fv = np.asarray(r.final_velocities, dtype=float)
+            fin["v_imp_m_s"] += [vref] * len(fv)
+            fin["n"] += [nn] * len(fv)
+            fin["bead"] += list(range(1, len(fv) + 1))
+            fin["final_v_m_s"] += list(fv)
+    except gw.GranwaveError as e:
+        raise InputError(f"granwave module: {e}")
+    except TypeError as e:  # an unknown keyword
+        raise InputError(f"granwave module: {e}")
+    given = [k for k in _SOLVER_KEYS if k in kw]
+    if given:
+        solver = {"name": kw.get("solver", "cvode"), "rtol": kw.get("rtol", 1e-12)}
+    else:
+        solver = {"name": "rk4", "accuracy": float(kw.get("accuracy", f.accuracy))}
+    mass = gw.chain(n=1, vimp=v0, **model).mass
+    summary = {"version": gw.version(), "velocities": velocities, "n_min": int(ns.min()),
+               "n_max": int(ns.max()),
+               "settings": {"model": {"material": kw.get("material", "steel"), "mass": mass},
+                            "solver": solver, "python": {"n": list(n), **{k: str(v) for k, v in kw.items()}}}}
+    run = {"dir": None, "source": f"Python module granwave ({gw.library_path})",
+           "notes": [], "runs": runs, "summary": summary, "wall": wall, "beads7": beads7,
+           "final": {k: np.asarray(v, dtype=float) for k, v in fin.items()}}
+    if beads7 is None:
+        raise InputError(f"the figures need N = 7 in n = {n}")
+    return run
+
+
 def _velocity_groups(run):
     """[(v_imp, h_mm or None, summary entry or None, row mask)], in the file's order."""
     r = run["runs"]
@@ -128,11 +228,14 @@ def _footer(fig, run):
     model = s.get("settings", {}).get("model", {})
     if "steps_per_tc" in solver:  # rk4 with the step chosen by an accuracy target
         setting = f"dt = T_c/{solver['steps_per_tc']:g}"
+    elif "accuracy" in solver:    # the same, through the module (the step is not returned)
+        setting = f"dt for accuracy {solver['accuracy']:g}"
     else:
         setting = f"rtol {solver.get('rtol', '?')}"
+    source = run.get("source") or os.path.abspath(run["dir"])
     text = (f"granwave {s.get('version', '?')} falcon; {model.get('material', '?')} beads, "
             f"m = {model.get('mass', float('nan')):.4g} kg; {solver.get('name', '?')} "
-            f"{setting}; {os.path.abspath(run['dir'])}")
+            f"{setting}; {source}")
     fig.text(0.005, 0.003, text, fontsize=6, color="0.4", ha="left", va="bottom")
     # keep the axes (and their x label) clear of this footer line
     fig.get_layout_engine().set(rect=(0, 0.025, 1, 0.975))
@@ -301,21 +404,26 @@ def make_figures(run):
     """{name: matplotlib Figure} for a run from load_run (no backend or pyplot needed)."""
     groups = _velocity_groups(run)
     if not groups:
-        raise InputError(f"{run['dir']}/falcon_runs.csv has no rows")
+        raise InputError(f"{run.get('source') or run['dir']}: no runs")
     return {name: _MAKERS[name](run, groups) for name in FIGURES}
 
 
-def write_figures(d, quiet=False):
-    """Load DIR d, write DIR/figures/*.png; returns the list of paths. Raises InputError."""
-    run = load_run(d)
+def write_figures(d, quiet=False, run=None):
+    """Load DIR d (or take run, e.g. from run_from_module), write DIR/figures/*.png;
+    returns the list of paths. Raises InputError."""
+    if run is None:
+        run = load_run(d)
     for note in run["notes"]:
         print(f"plot_falcon.py: note: {note}", file=sys.stderr)
     figs = make_figures(run)
     outdir = os.path.join(d, "figures")
-    os.makedirs(outdir, exist_ok=True)
+    try:
+        os.makedirs(outdir, exist_ok=True)
+    except OSError as e:
+        raise InputError(f"cannot create {outdir}: {e}")
     meta = {"Software": f"granwave {run['summary'].get('version', '?')} + plot_falcon.py",
             "Description": json.dumps(run["summary"].get("settings", {}), sort_keys=True),
-            "Source": os.path.abspath(d)}
+            "Source": run.get("source") or os.path.abspath(d)}
     paths = []
     for name, fig in figs.items():
         p = os.path.join(outdir, name + ".png")
@@ -326,14 +434,38 @@ def write_figures(d, quiet=False):
     return paths
 
 
+USAGE = ("usage: plot_falcon.py DIR                    (DIR = granwave falcon --out DIR)\n"
+         "       plot_falcon.py --module DIR [--n A:B]   (the study through the Python module)")
+
+
+def _parse_n(text):
+    try:
+        a, b = (int(x) for x in text.split(":"))
+    except ValueError:
+        raise InputError(f"--n {text}: expected A:B (integers)")
+    if not 1 <= a <= 7 <= b:
+        raise InputError(f"--n {text}: the figures need 1 <= A <= 7 <= B")
+    return a, b
+
+
 def main(argv):
     matplotlib.use("Agg")
-    if len(argv) != 2 or argv[1] in ("-h", "--help"):
-        print("usage: plot_falcon.py DIR   (DIR = granwave falcon --out DIR)",
-              file=sys.stderr if len(argv) != 2 else sys.stdout)
-        return 0 if len(argv) == 2 else 2
+    args = argv[1:]
+    if args in (["-h"], ["--help"]):
+        print(USAGE)
+        return 0
     try:
-        write_figures(argv[1])
+        if args and args[0] == "--module":
+            if len(args) not in (2, 4) or (len(args) == 4 and args[2] != "--n"):
+                print(USAGE, file=sys.stderr)
+                return 2
+            n = _parse_n(args[3]) if len(args) == 4 else (1, 40)   # granwave falcon's default
+            write_figures(args[1], run=run_from_module(n=n))
+            return 0
+        if len(args) != 1:
+            print(USAGE, file=sys.stderr)
+            return 2
+        write_figures(args[0])
     except InputError as e:
         print(f"plot_falcon.py: error: {e}", file=sys.stderr)
         return 2

@@ -24,6 +24,13 @@ Functions used by notebooks/experiment.ipynb:
   plateau_markdown(data_dir)          the plateau table of docs/sheets.md
   fig_plateau(data_dir)               wall force of N = 30 and eps_eff(N) per mechanism
   write_figures(data_dir, out_dir)    all PNGs (what main() does)
+and, for runs held in memory ({label: softwall JSON}, e.g. fresh `softwall --sheets --json`):
+  table2_pairs(sw)                    each sheets[] entry with its row of soft_walls_table2.csv
+  fig_sheets_compare(runs, nd_tol)    N_d, tau_max(1), tau_max(N_d) per sheet against Table 2
+  closeness_markdown(runs, nd_tol)    how close each sheet gets, per law
+  run_plateau_case(case, work_dir)    one plateau case, fresh (module or program)
+  fig_plateau_runs(cases)             fig_plateau for cases held in memory, with the paper's numbers
+  plateau_table(cases)                plateau_markdown's rows plus tau_N(40) against 1.04 ms
 
 Exit status: 0 ok, 2 if DATA_DIR or a required file is missing. Headless (Agg); use
 Debian's /usr/bin/python3.
@@ -62,6 +69,7 @@ PLATEAU_BASE = ["falcon", "--vimp", "0.316", "--heights", "none", "--n", "1:40",
                 "--method", "erk", "--rtol", "1e-10", "--atol", "1e-10", "--dt-out", "1e-6", "--quiet",
                 "--jobs", "2"]
 WINDOW = 50e-6   # plateau window (about two wall-force periods), s
+PAPER_BAND = 0.05  # the paper's F_max is "independent of N within 5 %" (docs/physics.md 1.7)
 
 
 class InputError(Exception):
@@ -319,6 +327,273 @@ def fig_plateau(data_dir):
     ax1.legend(fontsize=6)
     fig.tight_layout(rect=(0, 0.03, 1, 1))
     _footer(fig, "granwave " + " ".join(PLATEAU_BASE) + " [mechanism options]")
+    return fig
+
+
+# ---- the same for runs held in memory (notebooks/experiment.ipynb) ----
+
+def table2_pairs(sw):
+    """[(sheets[] entry, row of data/falcon1998/soft_walls_table2.csv as a dict)] in the
+    run's order. The program's ids ("tape", "cardboard2") differ from the paper's names
+    ("adhesive tape", "cardboard II"): the row is the one with the same measured N_d and
+    tau_max(1) (both unique in Table 2). Raises InputError if an entry has no row."""
+    t = gwdata.load_table("soft_walls_table2")
+    out = []
+    for e in sw["sheets"]:
+        hit = [i for i in range(len(t["sheet"]))
+               if t["n_d"][i] == e["n_d_measured"]
+               and abs(t["tau_max_n1_us"][i] - e["tau_max_1_measured"] * US) < 1e-6]
+        if len(hit) != 1:
+            raise InputError(f"sheet {e['name']}: no single row of soft_walls_table2.csv with "
+                             f"N_d = {e['n_d_measured']} and tau_max(1) = {e['tau_max_1_measured'] * US:g} us")
+        i = hit[0]
+        out.append((e, {k: t[k][i] for k in t}))
+    return out
+
+
+def _nd_at(e, tol):
+    b = _by_tol(e, tol)
+    return np.nan if b is None else float(b)
+
+
+def _taund_at(e, tol):
+    for b in e["n_d_model_by_tol"]:
+        if abs(b["tol"] - tol) < 1e-9 and b.get("tau_max_nd") is not None:
+            return b["tau_max_nd"] * US
+    return np.nan
+
+
+def _err(x):
+    return 0.0 if x is None or not np.isfinite(x) else float(x)
+
+
+def fig_sheets_compare(runs, nd_tol=0.05, title=""):
+    """Three panels per sheet of Table 2 (x axis), one marker per run of runs
+    ({label: softwall JSON}): the model's N_d (F_max within nd_tol of F_max(n_max); open
+    marker at n_max: not saturated), tau_max(1), and tau_max(N_d) (filled: at the model's
+    own N_d; open: at the measured N_d, the tolerance-free comparison), against the paper's
+    Table 2 (black, with its error bars; soft_walls_table2.csv)."""
+    if not runs:
+        raise InputError("no softwall runs to draw")
+    first = next(iter(runs.values()))
+    pairs = table2_pairs(first)
+    names = [row["sheet"] for _, row in pairs]
+    x = np.arange(len(names))
+    fig = Figure(figsize=(13, 4.6))
+    ax1, ax2, ax3 = fig.subplots(1, 3)
+    nrun = len(runs)
+    for j, (label, sw) in enumerate(runs.items()):
+        col, mk = f"C{j % 10}", "sovD^<>p"[j % 8]
+        ent = {e["name"]: e for e in sw["sheets"]}
+        ref = [ent.get(e["name"]) for e, _ in pairs]
+        xs = x + (j - (nrun - 1) / 2) * 0.13
+        nmax = sw["n"][-1]
+        nd = np.array([np.nan if e is None else _nd_at(e, nd_tol) for e in ref])
+        have = np.array([e is not None for e in ref])
+        sat = have & np.isfinite(nd)
+        ax1.plot(xs[sat], nd[sat], mk, ms=5, color=col, label=label)
+        uns = have & ~np.isfinite(nd)
+        ax1.plot(xs[uns], np.full(uns.sum(), nmax), mk, ms=5, mfc="none", color=col)
+        t1 = np.array([np.nan if e is None else e["tau_max_1_model"] * US for e in ref])
+        ax2.plot(xs, t1, mk, ms=5, color=col, label=label)
+        tnd = np.array([np.nan if e is None else _taund_at(e, nd_tol) for e in ref])
+        tms = np.array([np.nan if e is None or e["tau_max_at_measured_nd_model"] is None
+                        else e["tau_max_at_measured_nd_model"] * US for e in ref])
+        ax3.plot(xs, tnd, mk, ms=5, color=col, label=label)
+        ax3.plot(xs, tms, mk, ms=5, mfc="none", color=col)
+    nd_p = [row["n_d"] for _, row in pairs]
+    ax1.errorbar(x, nd_p, yerr=[_err(row["n_d_err"]) for _, row in pairs], fmt="k_", ms=14,
+                 capsize=3, label="paper, Table 2")
+    ax2.plot(x, [row["tau_max_n1_us"] for _, row in pairs], "k_", ms=14, label="paper, Table 2")
+    ax3.errorbar(x, [row["tau_max_nd_us"] for _, row in pairs],
+                 yerr=[_err(row["tau_max_nd_err_us"]) for _, row in pairs], fmt="k_", ms=14,
+                 capsize=3, label="paper, Table 2")
+    ax3.plot([], [], "o", mfc="none", color="0.4", label="model at the paper's N_d")
+    for ax in (ax1, ax2, ax3):
+        ax.set_xticks(x)
+        ax.set_xticklabels(names, rotation=40, fontsize=8)
+        ax.set_yscale("log")
+        ax.grid(alpha=0.3, which="both")
+    ax1.set_ylabel(f"N_d (open: no plateau by N = {first['n'][-1]})")
+    ax1.set_title(f"saturation number: F_max within {100 * nd_tol:g} % of F_max(n_max)", fontsize=9)
+    ax2.set_ylabel("tau_max(N = 1) (us)")
+    ax2.set_title("time of the peak force, one bead", fontsize=9)
+    ax3.set_ylabel("tau_max(N_d) (us)")
+    ax3.set_title("time of the peak force at N_d (filled: model's N_d)", fontsize=9)
+    ax1.legend(fontsize=7)
+    ax3.legend(fontsize=7)
+    if title:
+        fig.suptitle(title, fontsize=10)
+    fig.tight_layout(rect=(0, 0.03, 1, 1))
+    _footer(fig, f"granwave {first.get('version', '?')} softwall --sheets (h = 2.9 mm, v_imp = "
+                 f"{first.get('v_imp', float('nan')):.4g} m/s); paper: Falcon et al. 1998, Table 2 "
+                 "(data/falcon1998/soft_walls_table2.csv)")
+    return fig
+
+
+def _within(model, meas, err):
+    return np.isfinite(model) and abs(model - meas) <= err + 1e-9
+
+
+def closeness_rows(sw, tols=(0.05, 0.10)):
+    """Per sheet of one run: the model's N_d at each tolerance, whether it is within the
+    measured N_d +- its error (0 where the paper gives none), and the relative differences
+    of tau_max(1) and of tau_max at the measured N_d (with whether that is within the
+    paper's error, or 5 % where it gives none)."""
+    rows = []
+    for e, row in table2_pairs(sw):
+        nd, nde = row["n_d"], _err(row["n_d_err"])
+        r = {"sheet": row["sheet"], "name": e["name"], "nd": nd, "nd_err": nde,
+             "nd_model": {t: _nd_at(e, t) for t in tols},
+             "tau1_rel": e["tau_max_1_model"] * US / row["tau_max_n1_us"] - 1}
+        r["nd_within"] = {t: _within(r["nd_model"][t], nd, nde) for t in tols}
+        tm = e["tau_max_at_measured_nd_model"]
+        tmeas, terr = row["tau_max_nd_us"], row["tau_max_nd_err_us"]
+        terr = terr if np.isfinite(terr) else 0.05 * tmeas
+        r["taund_rel"] = np.nan if tm is None else tm * US / tmeas - 1
+        r["taund_within"] = tm is not None and abs(tm * US - tmeas) <= terr
+        r["f_over_plateau"] = e["f_max_at_measured_nd_over_plateau"]
+        rows.append(r)
+    return rows
+
+
+def closeness_markdown(runs, tols=(0.05, 0.10)):
+    """How close each sheet gets, one column per run of runs ({label: softwall JSON}); a
+    cell: N_d at 5 % / 10 % (a star where within the paper's N_d +- error), tau_max(1)
+    against the paper, tau_max at the paper's N_d against the paper's tau_max(N_d) (a star
+    where within its error, 5 % where none). Then, per run, the sheets within."""
+    per = {label: {r["sheet"]: r for r in closeness_rows(sw, tols)} for label, sw in runs.items()}
+    sheets = [r["sheet"] for r in closeness_rows(next(iter(runs.values())), tols)]
+    t0 = gwdata.load_table("soft_walls_table2")
+    paper = {n: i for i, n in enumerate(t0["sheet"])}
+    f = lambda v: "-" if not np.isfinite(v) else f"{v:.0f}"
+    lines = ["| sheet | paper: N_d, tau_max(1), tau_max(N_d) (us) | " + " | ".join(per) + " |",
+             "|---|---|" + "---|" * len(per)]
+    for sh in sheets:
+        i = paper[sh]
+        nde, te = t0["n_d_err"][i], t0["tau_max_nd_err_us"][i]
+        pc = (f"{t0['n_d'][i]:g}" + (f" +- {nde:g}" if np.isfinite(nde) else "") +
+              f", {t0['tau_max_n1_us'][i]:g}, {t0['tau_max_nd_us'][i]:g}" + (f" +- {te:g}" if np.isfinite(te) else ""))
+        cells = []
+        for label in per:
+            r = per[label].get(sh)
+            if r is None:
+                cells.append("")
+                continue
+            nd = " / ".join(f(r["nd_model"][t]) + ("*" if r["nd_within"][t] else "") for t in tols)
+            td = "-" if not np.isfinite(r["taund_rel"]) else f"{100 * r['taund_rel']:+.0f} %" + ("*" if r["taund_within"] else "")
+            cells.append(f"N_d {nd}; tau_max(1) {100 * r['tau1_rel']:+.0f} %; tau_max(N_d) {td}")
+        lines.append(f"| {sh} | {pc} | " + " | ".join(cells) + " |")
+    lines += ["", "| run | N_d within the paper's +- at " + " / ".join(f"{100 * t:g} %" for t in tols) +
+              " | tau_max at the paper's N_d within its +- (5 % where none) |", "|---|---|---|"]
+    for label, rs in per.items():
+        wn = " / ".join(", ".join(r["sheet"] for r in rs.values() if r["nd_within"][t]) or "none" for t in tols)
+        wt = ", ".join(r["sheet"] for r in rs.values() if r["taund_within"]) or "none"
+        lines.append(f"| {label} | {wn} | {wt} |")
+    return "\n".join(lines)
+
+
+# the plateau cases whose options the Python module takes (the others need the program's
+# sheet-law, sensor and guide options, which are not rows of the module's tables yet)
+def _module_kwargs(extra):
+    kw, it = {}, iter(extra)
+    for flag in it:
+        kw[flag[2:].replace("-", "_")] = next(it)
+    return kw
+
+
+def run_plateau_case(case, work_dir, granwave=None, use_module=True):
+    """One case of CASES run afresh: {"runs": falcon_runs columns (n, tau_n_s, eps_eff,
+    f_max_N), "trace": the N = 30 wall force (t_s, f_wall_N), "how": "module" or
+    "program"}. Through the Python module (granwave.falcon and granwave.chain with the
+    settings of PLATEAU_BASE) when the case's options are module keywords and use_module;
+    else through the program (`granwave falcon ... --out work_dir/<case>`)."""
+    extra = CASES[case][1]
+    kw = _module_kwargs(extra)
+    base = {"vimp": [0.316], "heights": [], "n": (1, 40), "solver": "arkode", "method": "erk",
+            "rtol": 1e-10, "atol": 1e-10, "dt_out": 1e-6}
+    if use_module:
+        gw = gwdata.import_granwave()
+        names = {p["keyword"] for p in gw.params("falcon")} & {p["keyword"] for p in gw.params("chain")}
+        use_module = all(k in names for k in kw)
+    if use_module:
+        f = gw.falcon(jobs=2, **base, **kw)
+        chain_kw = {k: v for k, v in base.items() if k not in ("vimp", "heights", "n")}
+        r = gw.chain(n=30, vimp=0.316, trace=True, **chain_kw, **kw)
+        runs = {"n": np.asarray(f.n, float), "tau_n_s": np.asarray(f.tau_n[0], float),
+                "eps_eff": np.asarray(f.eps_eff[0], float), "f_max_N": np.asarray(f.f_max[0], float)}
+        return {"runs": runs, "trace": {"t_s": np.asarray(r.t), "f_wall_N": np.asarray(r.f_wall)},
+                "how": "module"}
+    # program until the module has the sheet-law, sensor and guide options
+    d = os.path.join(work_dir, case)
+    gwdata.run_granwave(PLATEAU_BASE + extra + ["--out", d], json=False, program=granwave)
+    return {"runs": gwdata.load_csv(os.path.join(d, "falcon_runs.csv")),
+            "trace": gwdata.load_csv(os.path.join(d, "trace_n30_wall_force.csv")), "how": "program"}
+
+
+def plateau_table(cases):
+    """Rows of plateau_markdown for cases held in memory ({case: {"runs", "trace"}}), with
+    tau_N(40) against the paper's 1.04 ms (h = 5.1 mm, rigid_wall.csv) and how each ran."""
+    pv = gwdata.paper_value("collision_time", 5.1, unit="ms")
+    lines = ["| mechanism | mean force N = 30 (N) | change of the mean per ms | eps_eff(1) | eps_eff(40) | "
+             "d eps_eff / dN | tau_N(40) (ms; paper %s) | run by |" % (f"{pv[0]:g}" if pv else "-"),
+             "|---|---|---|---|---|---|---|---|"]
+    for case, c in cases.items():
+        s = plateau_stats(c)
+        n = np.asarray(c["runs"]["n"], float)
+        t40 = np.asarray(c["runs"]["tau_n_s"], float)[n == 40]
+        t40 = f"{t40[0] * 1e3:.3f}" if len(t40) else "-"
+        lines.append(f"| {CASES[case][0]} | {np.mean(s['f_mean']):.2f} | {100 * s['decay_per_ms']:+.2f} % | "
+                     f"{s['eps1']:.4f} | {s['eps40']:.4f} | {s['eps_slope']:+.2e} | {t40} | {c.get('how', 'stored')} |")
+    return "\n".join(lines)
+
+
+def fig_plateau_runs(cases, title=""):
+    """fig_plateau for cases held in memory, with the numbers the paper gives at h = 5.1 mm
+    (rigid_wall.csv): the peak force F_max = 69 N +- 5 % (a band: the peaks, not the mean).
+    Three panels: the N = 30 wall force with its window means, the means relative to the
+    first, and eps_eff(N). The paper's N = 40 collision time (1.04 ms) is in plateau_table.
+    The traces of the paper's Fig. 4d and the values of its Fig. 11 are not in
+    data/falcon1998 and are not drawn."""
+    if not cases:
+        raise InputError("no plateau cases to draw")
+    fig = Figure(figsize=(15, 4.8))
+    ax1, ax3, ax2 = fig.subplots(1, 3)
+    for i, (case, c) in enumerate(cases.items()):
+        s = plateau_stats(c)
+        t, f = _trace_arrays(c["trace"])
+        col = f"C{i % 10}"
+        ax1.plot(t * 1e3, f, color=col, lw=0.4, alpha=0.3)
+        ax1.plot(s["t"] * 1e3, s["f_mean"], "-o", ms=3, color=col, label=CASES[case][0])
+        ax3.plot(s["t"] * 1e3, s["f_mean"] / s["f_mean"][0], "-o", ms=3, color=col,
+                 label=f"{CASES[case][0]}: {100 * s['decay_per_ms']:+.2f} %/ms")
+        ax2.plot(c["runs"]["n"], c["runs"]["eps_eff"], "-o", ms=2.5, color=col, label=CASES[case][0])
+    fm = gwdata.paper_value("f_max", 5.1)
+    if fm:
+        ax1.axhspan(fm[0] * (1 - PAPER_BAND), fm[0] * (1 + PAPER_BAND), color="k", alpha=0.08, lw=0)
+        ax1.axhline(fm[0], color="k", lw=0.8, ls="--", label=f"paper: F_max {fm[0]:g} N +- 5 % (peaks)")
+    ax1.axvspan(PLATEAU_START * 1e3, PLATEAU_END * plateau_stats(next(iter(cases.values())))["tau_n30"] * 1e3,
+                color="y", alpha=0.08, lw=0)
+    ax1.set_xlim(0, 1.2)
+    ax1.set_xlabel("t (ms)")
+    ax1.set_ylabel("wall force read, N = 30 (N); dots: 50 us means")
+    ax1.set_title("wall force, h = 5.1 mm (the paper's Fig. 4d: not digitized)", fontsize=9)
+    ax3.set_xlabel("t (ms), centre of the 50 us window")
+    ax3.set_ylabel("window mean / first window mean")
+    ax3.set_title("the mean force in the window, relative; legend: straight-line slope", fontsize=9)
+    ax2.set_xlabel("N")
+    ax2.set_ylabel("eps_eff (F.7)")
+    ax2.set_title("effective restitution (the paper's Fig. 11: decreases with N, no values)", fontsize=9)
+    ax1.legend(fontsize=6, loc="lower right")
+    ax2.legend(fontsize=6)
+    ax3.legend(fontsize=6)
+    for ax in (ax1, ax2, ax3):
+        ax.grid(alpha=0.3)
+    if title:
+        fig.suptitle(title, fontsize=10)
+    fig.tight_layout(rect=(0, 0.03, 1, 1))
+    _footer(fig, "granwave falcon --vimp 0.316 --heights none --n 1:40 (arkode erk, rtol 1e-10) "
+                 "[mechanism options]; yellow: the window of the means (first case); paper: rigid_wall.csv")
     return fig
 
 

@@ -3,14 +3,21 @@
 #  1. `granwave falcon --out TMP` (N = 1..30 so that every trace the figures use is
 #     written), then notebooks/plot_falcon.py TMP must exit 0 and write the six PNGs of
 #     TMP/figures/, each a non-empty PNG file.
+#  1b. plot_falcon.py --module TMP2 (the same study through the Python module, as the
+#     notebooks do) writes the same six PNGs, and its run dict equals the one read from
+#     the program's files: F_max, tau_N, E_rel/E_K and the per-velocity fit to 1e-9
+#     (the same library and solver; measured 1.1e-10, the CSV's 12 digits), the traces' peak force to 1e-4 and
+#     the final velocities to 1e-5 m/s (granwave.chain's CVODE against the study's RK4 at
+#     its 1e-6 accuracy target; measured 2e-5 relative and 2.3e-7 m/s).
 #  2. plot_falcon.py must exit 2 (not crash) on a missing directory and on a directory
-#     with a required file removed.
+#     with a required file removed; --module with an --n range without N = 7 exits 2.
 #  2b. notebooks/plot_drop.py draws the committed drop runs (a copy of
 #     data/measured/drop) and exits 2 on a missing directory.
 #  2c. notebooks/plot_sheets.py draws the stored sheet and plateau data (exit 0, four PNGs)
 #     and exits 2 on a missing directory.
 #  3. Every notebooks/*.ipynb executes headless (nbconvert --execute, Agg backend) with
-#     GRANWAVE set to the binary under test; outputs go to a temp dir, never the repo.
+#     GRANWAVE set to the binary under test and GRANWAVE_LIB to the library beside it
+#     (<build>/lib, when there); outputs go to a temp dir, never the repo.
 # Exits non-zero with a message on the first failure. Skips (exit 0) only when
 # /usr/bin/jupyter is missing. Python: Debian's /usr/bin/python3 (numpy, matplotlib).
 set -u
@@ -34,6 +41,9 @@ fail() { echo "FAIL: $*"; exit 1; }
 
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 export MPLBACKEND=Agg PYTHONDONTWRITEBYTECODE=1 GRANWAVE="$GW"
+if [ -z "${GRANWAVE_LIB:-}" ] && [ -f "$(dirname "$GW")/lib/libgranwave.so" ]; then
+    export GRANWAVE_LIB="$(dirname "$GW")/lib/libgranwave.so"
+fi
 
 # 1. plot_falcon.py on a fresh run
 "$GW" falcon --out "$tmp/falcon" --n 1:30 --quiet >"$tmp/falcon.log" 2>&1 \
@@ -48,6 +58,42 @@ for f in fmax_vs_n taun_vs_n wall_force_n7_15_30 velocities_n7 erel_vs_n final_v
     echo "PASS: figure $f.png ($(stat -c %s "$p") bytes)"
 done
 
+# 1b. the same figures through the Python module, and the same numbers
+"$PY" "$SRC/notebooks/plot_falcon.py" --module "$tmp/falcon_mod" --n 1:30 >"$tmp/plotm.log" 2>&1 \
+    || { cat "$tmp/plotm.log"; fail "plot_falcon.py --module $tmp/falcon_mod"; }
+for f in fmax_vs_n taun_vs_n wall_force_n7_15_30 velocities_n7 erel_vs_n final_velocities; do
+    p="$tmp/falcon_mod/figures/$f.png"
+    [ -s "$p" ] && [ "$(head -c 8 "$p" | od -An -tx1 | tr -d ' \n')" = "89504e470d0a1a0a" ] \
+        || fail "plot_falcon.py --module: figure $f.png missing or not a PNG"
+done
+echo "PASS: plot_falcon.py --module wrote the six figures"
+"$PY" - "$SRC/notebooks" "$tmp/falcon" >"$tmp/cmp.log" 2>&1 <<'PYEOF' || { cat "$tmp/cmp.log"; fail "module run differs from the program's files"; }
+import sys
+import numpy as np
+sys.path.insert(0, sys.argv[1])
+import plot_falcon as pf
+a, b = pf.load_run(sys.argv[2]), pf.run_from_module(n=(1, 30))
+worst = 0.0
+for k in ("v_imp_m_s", "n", "f_max_N", "tau_n_s", "e_rel_over_e_k"):
+    x, y = a["runs"][k], b["runs"][k]
+    assert x.shape == y.shape, (k, x.shape, y.shape)
+    r = np.max(np.abs(x - y) / np.maximum(np.abs(x), 1e-300))
+    assert r < 1e-9, f"runs {k}: relative difference {r:.2e} > 1e-9"
+    worst = max(worst, r)
+for va, vb in zip(a["summary"]["velocities"], b["summary"]["velocities"]):
+    assert va["h_mm"] == vb["h_mm"], (va["h_mm"], vb["h_mm"])
+    for k in ("v_imp", "t_q", "tau_fit_intercept", "f_max_1_theory"):
+        assert abs(va[k] - vb[k]) <= 1e-9 * abs(va[k]), f"summary {k}: {va[k]} against {vb[k]}"
+for n in (7, 15, 30):
+    fa, fb = a["wall"][n]["f_wall_N"].max(), b["wall"][n]["f_wall_N"].max()
+    assert abs(fa / fb - 1) < 1e-4, f"trace N = {n}: peak {fa} against {fb}"
+sel = np.abs(a["final"]["v_imp_m_s"] - 0.3) < 1e-12
+d = np.max(np.abs(a["final"]["final_v_m_s"][sel] - b["final"]["final_v_m_s"]))
+assert d < 1e-5, f"final velocities differ by {d:.2e} m/s"
+print(f"runs within {worst:.1e}, final velocities within {d:.1e} m/s")
+PYEOF
+echo "PASS: module run equals the program's files ($(tail -1 "$tmp/cmp.log"))"
+
 # 2. clear errors (exit 2) on bad input
 "$PY" "$SRC/notebooks/plot_falcon.py" "$tmp/does-not-exist" >/dev/null 2>"$tmp/err.log"
 rc=$?
@@ -61,6 +107,11 @@ rc=$?
 [ $rc -eq 2 ] || fail "plot_falcon.py without falcon_runs.csv: exit $rc, expected 2"
 grep -q "falcon_runs.csv" "$tmp/err.log" || fail "plot_falcon.py error does not name the missing file"
 echo "PASS: missing file -> exit 2: $(head -1 "$tmp/err.log")"
+"$PY" "$SRC/notebooks/plot_falcon.py" --module "$tmp/falcon_bad" --n 8:30 >/dev/null 2>"$tmp/err.log"
+rc=$?
+[ $rc -eq 2 ] && grep -q -- "--n 8:30" "$tmp/err.log" && [ ! -e "$tmp/falcon_bad" ] \
+    || fail "plot_falcon.py --module --n 8:30: exit $rc, $(head -1 "$tmp/err.log")"
+echo "PASS: --module without N = 7 -> exit 2: $(head -1 "$tmp/err.log")"
 
 # 2b. plot_drop.py on a copy of the committed drop runs (data/measured/drop), and its
 #     refusal of a missing directory
@@ -101,7 +152,7 @@ nbs=("$SRC"/notebooks/*.ipynb)
 for nb in "${nbs[@]}"; do
     name=$(basename "$nb")
     start=$(date +%s)
-    if ! "$JUPYTER" nbconvert --to notebook --execute --ExecutePreprocessor.timeout=300 \
+    if ! "$JUPYTER" nbconvert --to notebook --execute --ExecutePreprocessor.timeout=600 \
             --output-dir "$tmp/nbout" "$nb" >"$tmp/nb.log" 2>&1; then
         grep -v -e "frozen modules" -e "Debugger warning" -e "make the debugger" \
              -e "PYDEVD_DISABLE_FILE_VALIDATION" "$tmp/nb.log" | tail -40

@@ -104,7 +104,9 @@ for line in open(w + "/dem_min.txt"):
     if line.startswith("BOUND "):
         bound[line.split()[1]] = float(line.split()[2])
 names = {1: "R_b = R_m, 20 m/s", 3: "R_b = 3 R_m, 0.1 s"}
-print("impact               code      CPU s (median; all)            ratio gw/lmp  steps    ns/disc-step  e_n     bounced  penetration m")
+def num(v):  # e_n is null (undecided) when a run ends before T_f (docs/outcomes.md)
+    return "%.4f" % v if isinstance(v, (int, float)) else "undecided"
+print("impact               code      CPU s (median; all)            ratio gw/lmp  steps    ns/disc-step  x bound  e_n        bounced  penetration m")
 for c in (1, 3):
     g = [json.load(open("%s/gw_%d_%d.json" % (w, c, r))) for r in range(1, reps + 1)]
     l = []
@@ -118,12 +120,18 @@ for c in (1, 3):
     discs = l[0]["discs"]  # sample + block, the same for both codes
     gsteps = statistics.median(j["steps"] for j in g)
     lsteps = statistics.median(o["steps"] + o["steps_settle"] for o in l)
+    # the ratio of the medians, and the median of the ratios of the alternating pairs
+    pairs = statistics.median(a / b for a, b in zip(gc, lc))
     for code, m, allc, steps, o in (("granwave", gm, gc, gsteps, g[-1]), ("lammps", lm, lc, lsteps, l[-1])):
-        print("%-20s %-9s %8.3f (%-20s) %12s %8d %12.1f  %.4f  %-7s  %.4f" % (
-            names[c], code, m, " ".join("%.3g" % v for v in allc), "%.1f" % (gm / lm) if code == "granwave" else "",
-            steps, 1e9 * m / (discs * steps), o["e_n"], str(bool(o["bounced"])).lower(), o["penetration"]))
+        ns = 1e9 * m / (discs * steps)
+        print("%-20s %-9s %8.3f (%-20s) %12s %8d %12.1f %8.2f  %-9s  %-7s  %.4f" % (
+            names[c], code, m, " ".join("%.3g" % v for v in allc),
+            "%.2f (%.2f)" % (gm / lm, pairs) if code == "granwave" else "",
+            steps, ns, ns / bound.get("verlet", float("nan")), num(o["e_n"]), str(bool(o["bounced"])).lower(),
+            o["penetration"]))
 print("bench_dem_min bound (fixed list, %s): verlet %.1f ns/disc-step (dt 1e-5 s), rk4 %.1f ns/disc-step (dt 1e-6 s)" % (
     "sample + block", bound.get("verlet", float("nan")), bound.get("rk4", float("nan"))))
+print("ratio: of the medians (median of the %d pairwise ratios); x bound: ns/disc-step over bench_dem_min's verlet" % reps)
 print("granwave's CPU is the whole process (sample read, set-up, solver, recording every 2e-5 s, crowns, JSON);")
 print("LAMMPS's is python + lmp (input writing, set-up, run, trace parsing). Steps: granwave's --json 'steps';")
 print("LAMMPS's steps include those run past t_end to settle the outcome (case 1).")

@@ -127,15 +127,11 @@ static void ledger_total(gw_layer_energy *e)
                e->mindlin_excess + e->dissipated + e->potential;
 }
 
-int gw_layer_ledgers(const gw_layer *L, gw_layer_energy *e, gw_layer_energy *regions)
+/* The ledger's integrated terms (E_d, W_K, then per region) from the state's
+ * tail into e (may be NULL) and the nr regions, and their totals. */
+static void ledger_tail(const gw_layer *L, gw_layer_energy *e, gw_layer_energy *regions, int nr)
 {
-    const int nr = regions ? gw_layer_region_count(L) : 0;
-    if (e)
-        memset(e, 0, sizeof *e);
-    if (nr > 0)
-        memset(regions, 0, (size_t)nr * sizeof *regions);
-    layer_ledger_sum(L, e, nr > 0 ? regions : NULL);
-    const double *tail = L->y + 6 * L->nb + L->nc; /* E_d, W_K, then per region */
+    const double *tail = L->y + 6 * L->nb + L->nc;
     if (e) {
         e->dissipated = tail[0];
         e->mindlin_excess = tail[1];
@@ -146,6 +142,17 @@ int gw_layer_ledgers(const gw_layer *L, gw_layer_energy *e, gw_layer_energy *reg
         regions[q].mindlin_excess = tail[3 + 2 * q];
         ledger_total(regions + q);
     }
+}
+
+int gw_layer_ledgers(const gw_layer *L, gw_layer_energy *e, gw_layer_energy *regions)
+{
+    const int nr = regions ? gw_layer_region_count(L) : 0;
+    if (e)
+        memset(e, 0, sizeof *e);
+    if (nr > 0)
+        memset(regions, 0, (size_t)nr * sizeof *regions);
+    layer_ledger_sum(L, e, nr > 0 ? regions : NULL);
+    ledger_tail(L, e, regions, nr);
     return nr;
 }
 
@@ -218,15 +225,7 @@ int layer_ledgers_rings(const gw_layer *L, gw_layer_energy *e, gw_layer_energy *
     }
     for (int k = 0; k < nring; k++)
         coord[k] = np[k] > 0 ? coord[k] / np[k] : NAN;
-    const double *tail = L->y + 6 * L->nb + L->nc;
-    e->dissipated = tail[0];
-    e->mindlin_excess = tail[1];
-    ledger_total(e);
-    for (int q = 0; q < nr; q++) {
-        regions[q].dissipated = tail[2 + 2 * q];
-        regions[q].mindlin_excess = tail[3 + 2 * q];
-        ledger_total(regions + q);
-    }
+    ledger_tail(L, e, regions, nr);
     return nr;
 }
 

@@ -6,14 +6,16 @@
  * followed after the first contact (s), --gravity defaults to 9.81 m/s^2.
  * Outputs: the sensor signal F(t) (N), every peak and impact (definitions in
  * gw_chain.h), the first collision as `granwave chain` reports it, the energy
- * ledger. SI units.
+ * ledger. SI units. The options are the rows of the drop study's table
+ * (chain_drop_study.c: help, ranges); the command checks them with its own
+ * messages, runs the study (gw_chain_drop_study_run) and prints its outcome.
  */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "gw_cli.h"
-#include "chain_commands.h"
+#include "chain_options.h"
 #include "chain_falcon.h" /* G_EARTH */
 
 static const char *drop_summary =
@@ -45,6 +47,19 @@ static gw_opt *opt_named(gw_opt *opts, const char *name)
     return (gw_opt *)gw_cli_find(opts, name);
 }
 
+/* An option as the drop study's row: help, metavar and range from the table. */
+static gw_opt opt_row(const char *name, gw_opt_kind kind, void *dest)
+{
+    const gw_param *p = gw_param_find(gw_chain_drop_setup_params(), name);
+    gw_opt o = {.name = p->name, .kind = kind, .dest = dest, .metavar = p->metavar, .help = p->help};
+    if (kind == GW_OPT_DOUBLE || kind == GW_OPT_LONG) {
+        o.lo = p->min;
+        o.hi = p->max;
+        o.open_lo = p->open_min;
+    }
+    return o;
+}
+
 static void drop_options(drop_cli *d, gw_opt *opts)
 {
     memset(d, 0, sizeof *d);
@@ -54,28 +69,17 @@ static void drop_options(drop_cli *d, gw_opt *opts)
     d->peak_threshold = NAN;
     d->c.gravity = G_EARTH;
     d->c.t_max = 10e-3;
-    gw_opt *o = opt_named(opts, "gravity");
-    o->help = "gravity toward the sensor, m/s^2, in [1e-3, 1e4] [9.81]";
-    o->lo = GW_CHAIN_DROP_G_MIN;
-    o = opt_named(opts, "t-max");
-    o->help = "time followed after the first contact, s, in [1e-6, 1] [10e-3, the paper's Fig. 12]";
-    o->lo = 1e-6;
-    o->hi = GW_CHAIN_DROP_T_MAX;
-    o = opt_named(opts, "dt-out");
-    o->help = "sampling interval of the signal, s, in [t-max/1e7, t-max] [0 = 1e-6]; peaks and impacts do not depend on it";
+    static const char *const own[] = {"gravity", "t-max", "dt-out"}; /* the drop's own rows */
+    for (int i = 0; i < 3; i++) {
+        gw_opt *o = opt_named(opts, own[i]);
+        *o = opt_row(own[i], o->kind, o->dest);
+    }
     int k = CHAIN_CLI_NOPTS;
-    opts[k++] = (gw_opt){.name = "n", .kind = GW_OPT_LONG, .dest = &d->n, .metavar = "N",
-                         .help = "number of beads [1]", .lo = 1, .hi = 100000};
-    opts[k++] = (gw_opt){.name = "height", .kind = GW_OPT_DOUBLE, .dest = &d->height, .metavar = "H",
-                         .help = "fall of bead 1 to the sensor, m, in [1e-6, 1] [5.1e-3]",
-                         .lo = 1e-6, .hi = GW_CHAIN_DROP_H_MAX};
-    opts[k++] = (gw_opt){.name = "gap", .kind = GW_OPT_STRING, .dest = &d->gap, .metavar = "G,G..",
-                         .help = "initial gap between neighbouring beads, m, in [0, 0.1]: one value for every pair or n-1 values, bead 1 first [0 = touching]"};
-    opts[k++] = (gw_opt){.name = "block", .kind = GW_OPT_FLAG, .dest = &d->block,
-                         .help = "drop one rigid block instead: a single bead of the column's total mass with bead 1's contact law"};
-    opts[k++] = (gw_opt){.name = "peak-threshold", .kind = GW_OPT_DOUBLE, .dest = &d->peak_threshold,
-                         .metavar = "F", .help = "smallest peak force, N, in [0, 1e9] [1 % of F_max(1) (F.13) at v_imp; 0 = every maximum]",
-                         .lo = 0, .hi = 1e9};
+    opts[k++] = opt_row("n", GW_OPT_LONG, &d->n);
+    opts[k++] = opt_row("height", GW_OPT_DOUBLE, &d->height);
+    opts[k++] = opt_row("gap", GW_OPT_STRING, &d->gap);
+    opts[k++] = opt_row("block", GW_OPT_FLAG, &d->block);
+    opts[k++] = opt_row("peak-threshold", GW_OPT_DOUBLE, &d->peak_threshold);
     opts[k] = (gw_opt){0};
 }
 
@@ -133,17 +137,6 @@ static int drop_resolve(drop_cli *d, gw_opt *opts, gw_err *err)
     if (!opt_named(opts, "peak-threshold")->seen)
         d->peak_threshold = 0.01 * gw_chain_fmax1(c->params.mass, c->params.kwall, c->params.v_imp);
     return GW_OK;
-}
-
-static gw_chain_drop_params drop_params(const drop_cli *d)
-{
-    gw_chain_drop_params p = gw_chain_drop_params_default();
-    p.chain = d->c.params;
-    p.height = d->height;
-    p.gaps = d->block ? NULL : d->gaps;
-    p.t_max = d->c.run.t_max;
-    p.peak_threshold = d->peak_threshold;
-    return p;
 }
 
 static cJSON *settings_json(const drop_cli *d)
@@ -377,37 +370,43 @@ int gw_cmd_drop(int argc, char **argv)
         chain_cli_free(&d.c);
         return chain_cli_fail(err.msg);
     }
-    gw_chain_drop_params p = drop_params(&d);
-    gw_chain_trace tr;
-    gw_chain_trace_init(&tr, p.chain.n);
-    if (d.c.out) {
-        d.c.run.sample = gw_chain_trace_sample;
-        d.c.run.sample_ctx = &tr;
-    }
-    gw_chain_drop_result r;
-    double t0 = gw_clock_ms();
-    int rc = gw_chain_drop_run(&p, &d.c.run, &r, &err);
-    double wall_ms = gw_clock_ms() - t0;
+    /* the study from the same command line (its rows are these options) */
+    gw_chain_drop_setup ds;
+    gw_chain_drop_setup_init(&ds);
+    gw_chain_drop_outcome o;
+    memset(&o, 0, sizeof o);
     int code = 0;
-    char *buf = malloc((size_t)p.chain.n + 1);
+    int rc = chain_cli_study_setup(gw_chain_drop_setup_params(), &ds, opts, argc, argv, "drop", &err);
+    if (rc != GW_OK) {
+        gw_chain_drop_setup_clear(&ds);
+        free(d.gaps);
+        chain_cli_free(&d.c);
+        return chain_cli_fail(err.msg);
+    }
+    ds.col.trace = d.c.out != NULL; /* the bead series for drop_beads.csv */
+    rc = gw_chain_drop_study_run(&ds, NULL, NULL, &o, &err);
+    const gw_chain_drop_result *r = &o.r;
+    gw_chain_trace tr = {.n = o.n, .len = (size_t)o.trace_len, .cap = (size_t)o.trace_len,
+                         .t = o.t, .f = o.f_wall, .x = o.x, .v = o.v}; /* a view, not owned */
+    char *buf = malloc((size_t)o.n + 1);
     if (!buf && rc == GW_OK)
         rc = gw_err_set(&err, GW_ENOMEM, "drop: out of memory");
     if (rc != GW_OK) {
         fprintf(stderr, "granwave drop: %s\n", err.msg);
         code = rc == GW_EINVAL ? 2 : 1;
-    } else if (d.c.out && write_outputs(&d, &r, &tr, wall_ms, argc, argv, buf, &err) != GW_OK) {
+    } else if (d.c.out && write_outputs(&d, r, &tr, o.wall_time_ms, argc, argv, buf, &err) != GW_OK) {
         fprintf(stderr, "granwave drop --out: %s\n", err.msg);
         code = 1;
     } else if (d.c.json) {
-        cJSON *o = result_json(&d, &r, wall_ms, buf);
-        gw_json_print(o, stdout);
-        cJSON_Delete(o);
+        cJSON *j = result_json(&d, r, o.wall_time_ms, buf);
+        gw_json_print(j, stdout);
+        cJSON_Delete(j);
     } else {
-        print_text(&d, &r);
+        print_text(&d, r);
     }
     free(buf);
-    gw_chain_drop_result_free(&r);
-    gw_chain_trace_free(&tr);
+    gw_chain_drop_outcome_free(&o);
+    gw_chain_drop_setup_clear(&ds);
     free(d.gaps);
     chain_cli_free(&d.c);
     return code;

@@ -20,8 +20,21 @@ _Static_assert(GW_DAMP_NONE == 0 && GW_DAMP_KUWABARA_KONO == 1 && GW_DAMP_HUNT_C
 _Static_assert(GW_SHEET_FITTED == 0 && GW_SHEET_HERTZ == 1 && GW_SHEET_LAYER == 2 && GW_SHEET_MATERIAL == 3,
                "sheet-law choices fitted,hertz,layer,material follow gw_sheet_law");
 
-/* material .. guide-viscous: the options every chain command shares */
+/* material .. guide-viscous: the options every chain command shares, in this
+ * order; the drop's table (chain_drop_study.c) replaces the gravity, t-max and
+ * dt-out rows by its own (other defaults, ranges and help). */
 #define GW_CHAIN_MODEL_ROWS \
+    GW_CHAIN_MATERIAL_ROWS \
+    ROW("gravity", GW_PARAM_DOUBLE, gravity, "m/s^2", 0, 1e4, 0, "0", "G", "gravity toward the wall, m/s^2 [0 = off]"), \
+    GW_CHAIN_SOLVER_ROWS \
+    ROW("t-max", GW_PARAM_DOUBLE, t_max, "s", 0, 1e6, 0, "0", "T", "stop after T seconds [20 (n T_q + tau_1)]"), \
+    ROW("dt-out", GW_PARAM_DOUBLE, dt_out, "s", 0, 1, 0, "0", "DT", \
+        "sampling interval for traces, energy and F_max, s [tau_1/200]"), \
+    GW_CHAIN_ENERGY_ROW \
+    GW_CHAIN_WALL_ROWS
+
+/* material .. mass */
+#define GW_CHAIN_MATERIAL_ROWS \
     CHOICE("material", material, MATERIALS, "steel", "NAME", \
            "bead material (steel, rigid, brass, aluminium, glass, pmma, pvc) [steel]"), \
     ROW("radius", GW_PARAM_DOUBLE, radius, "m", 0, 1, 1, "4e-3", "R", "bead radius, m, in (0, 1] [4e-3]"), \
@@ -35,8 +48,10 @@ _Static_assert(GW_SHEET_FITTED == 0 && GW_SHEET_HERTZ == 1 && GW_SHEET_LAYER == 
         "bead-bead Hertz coefficient, N/m^1.5, in [1e3, 1e14] [from material, F.12]"), \
     ROW("kwall", GW_PARAM_DOUBLE, kwall, "N/m^1.5", GW_CHAIN_K_MIN, GW_CHAIN_K_MAX, 0, NULL, "K", \
         "bead-wall Hertz coefficient, N/m^1.5, in [1e3, 1e14] [from materials, F.3]"), \
-    ROW("mass", GW_PARAM_DOUBLE, mass, "kg", 0, 1e3, 1, NULL, "M", "bead mass, kg, in (0, 1e3] [4/3 pi R^3 rho]"), \
-    ROW("gravity", GW_PARAM_DOUBLE, gravity, "m/s^2", 0, 1e4, 0, "0", "G", "gravity toward the wall, m/s^2 [0 = off]"), \
+    ROW("mass", GW_PARAM_DOUBLE, mass, "kg", 0, 1e3, 1, NULL, "M", "bead mass, kg, in (0, 1e3] [4/3 pi R^3 rho]"),
+
+/* damping .. max-steps */
+#define GW_CHAIN_SOLVER_ROWS \
     CHOICE("damping", damping, "none,kk,hc", "none", "MODEL", "none, kk (Kuwabara-Kono) or hc (Hunt-Crossley) [none]"), \
     ROW("gamma", GW_PARAM_DOUBLE, gamma, "N s/m^1.5", 0, INFINITY, 0, NULL, "G", \
         "Kuwabara-Kono constant of bead contacts, N s/m^1.5 [0]"), \
@@ -54,13 +69,11 @@ _Static_assert(GW_SHEET_FITTED == 0 && GW_SHEET_HERTZ == 1 && GW_SHEET_LAYER == 
     ROW("dt", GW_PARAM_DOUBLE, dt, "s", 0, 1, 0, "0", "DT", "RK4 step, s [T_c/400]; initial step for cvode/arkode"), \
     ROW("dt-max", GW_PARAM_DOUBLE, dt_max, "s", 0, 1, 0, "0", "DT", "largest step, s [unlimited]"), \
     ROW("max-steps", GW_PARAM_LONG, max_steps, "", 1, 1e12, 0, "10000000", "N", \
-        "internal steps allowed between outputs [1e7]"), \
-    ROW("t-max", GW_PARAM_DOUBLE, t_max, "s", 0, 1e6, 0, "0", "T", "stop after T seconds [20 (n T_q + tau_1)]"), \
-    ROW("dt-out", GW_PARAM_DOUBLE, dt_out, "s", 0, 1, 0, "0", "DT", \
-        "sampling interval for traces, energy and F_max, s [tau_1/200]"), \
+        "internal steps allowed between outputs [1e7]"),
+
+#define GW_CHAIN_ENERGY_ROW \
     ROW("energy-tol", GW_PARAM_DOUBLE, energy_tol, "", 0, INFINITY, 0, "0", "E", \
-        "abort when the relative energy error exceeds E [off]"), \
-    GW_CHAIN_WALL_ROWS
+        "abort when the relative energy error exceeds E [off]"),
 
 /* The sheet as a material, the sensor as a body, guide friction (chain_wall.c,
  * chain_general.c). Rows without a default are "not given": the sheet's own

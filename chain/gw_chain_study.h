@@ -307,4 +307,60 @@ int gw_chain_dispersion_solver(const gw_chain_dispersion_setup *s, const gw_solv
 int gw_chain_dispersion_run(const gw_chain_dispersion_setup *s, gw_chain_dispersion_outcome *out, gw_err *err);
 void gw_chain_dispersion_outcome_free(gw_chain_dispersion_outcome *out);
 
+/* The whole drop (chain_drop.c, docs/drop.md): the column released from rest
+ * with bead 1 at a height h above the sensor, under gravity g, followed from
+ * its first contact (t = 0, v_imp = sqrt(2 g h), t_fall = sqrt(2 h / g)) through
+ * the first collision (physics.md 1.1-1.4, as `granwave chain`), detachment,
+ * free flight and the later impacts, up to t_max; the sensor signal, every
+ * wall-force peak and impact, the energy ledger (kinetic + (2/5) k d^(5/2) per
+ * contact - m g x + dissipated). m, s, N, J. */
+typedef struct gw_chain_drop_setup {
+    gw_chain_setup col;    /* n, model and solver rows; gravity [9.81], t_max
+                              [10e-3], dt_out [0: min(1 us, t_max)], trace (bead
+                              series x, v) [0]; vimp unused (sqrt(2 g h)) */
+    double height;         /* m [5.1e-3] */
+    gw_param_list gap;     /* m: one value or n-1, bead 1 first [empty: touching] */
+    int block;             /* one rigid body of the column's mass [0] */
+    double peak_threshold; /* N [NaN: 1 % of F_max(1) (F.13) at v_imp] */
+} gw_chain_drop_setup;
+
+/* Columns of the impacts table ([n_impacts x GW_DROP_NIMPACT_COLS]). */
+#define GW_DROP_IMPACT_COLS "t_start,t_end,f_max,t_fmax,v_in,v_out,n_peaks,cluster,located"
+#define GW_DROP_NIMPACT_COLS 9
+
+typedef struct gw_chain_drop_outcome {
+    gw_chain_drop_result r;  /* everything the run measured (gw_chain.h) */
+    int n, n_column, block;  /* simulated bodies (1 with block), beads of the column */
+    double height, gravity, v_imp, t_fall, t_max, dt_out, peak_threshold; /* m, m/s^2, m/s, s, s, s, N */
+    double mass, k, kwall, radius, gamma, alpha; /* the resolved model (mass: the block's) */
+    int n_gaps;              /* n - 1 with gaps, else 0 */
+    double *gaps;            /* [n_gaps] m */
+    int impact_rises, impacts_monotone;
+    double *wall_peaks;      /* [n_peaks x 2]: t (s), f (N) */
+    int *peak_impact, *peak_cluster; /* [n_peaks] */
+    int *peak_contacts;      /* [n_peaks x n]: 1 = closed, the sensor first */
+    double *impacts;         /* [n_impacts x GW_DROP_NIMPACT_COLS] */
+    int n_first;             /* entries of the first collision's arrays (n) */
+    double e_kinetic, e_elastic, e_gravity, e_dissipated, e_total; /* ledger at t_end, J */
+    double wall_time_ms;
+    int trace_len;           /* samples of the signal */
+    double *t, *f_wall;      /* [trace_len] s, N: the sensor signal */
+    double *x, *v;           /* [trace_len x n] m, m/s (setup trace = 1), else NULL */
+    int canceled;            /* 1: stopped by the progress callback at r.t_end */
+} gw_chain_drop_outcome;
+
+const gw_param *gw_chain_drop_setup_params(void);
+int gw_chain_drop_setup_init(gw_chain_drop_setup *s);
+void gw_chain_drop_setup_clear(gw_chain_drop_setup *s);
+const gw_param *gw_chain_drop_outcome_fields(void);
+/* The gaps of s for its n beads ([n-1] m, or *gaps = NULL when touching) with
+ * the study's checks (GW_EINVAL "gap: ..."); the caller frees. */
+int gw_chain_drop_setup_gaps(const gw_chain_drop_setup *s, double **gaps, gw_err *err);
+/* The drop (gw_chain_drop_run) from a setup. progress(ctx, done, total) counts
+ * output samples (total = t_max / dt_out), called at most about 100 times (may
+ * be NULL); a stop ends the integration there and returns GW_ECANCELED. */
+int gw_chain_drop_study_run(const gw_chain_drop_setup *s, gw_progress_fn progress, void *pctx,
+                            gw_chain_drop_outcome *out, gw_err *err);
+void gw_chain_drop_outcome_free(gw_chain_drop_outcome *out);
+
 #endif

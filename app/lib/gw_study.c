@@ -56,6 +56,14 @@ static int disp_run(const void *s, void *out, gw_progress_fn progress, void *pct
 }
 static void disp_free(void *out) { gw_chain_dispersion_outcome_free(out); }
 
+static int drop_init(void *s) { return gw_chain_drop_setup_init(s); }
+static void drop_clear(void *s) { gw_chain_drop_setup_clear(s); }
+static int drop_run(const void *s, void *out, gw_progress_fn progress, void *pctx, gw_err *err)
+{
+    return gw_chain_drop_study_run(s, progress, pctx, out, err);
+}
+static void drop_free(void *out) { gw_chain_drop_outcome_free(out); }
+
 #if GW_HAVE_LAYER
 static int impact_init(void *s) { return gw_layer_impact_setup_init(s); }
 static void impact_clear(void *s) { gw_layer_impact_setup_clear(s); }
@@ -114,6 +122,9 @@ static const gw_study studies[] = {
     {"dispersion", "small-amplitude dispersion of a precompressed Hertz chain (physics.md 1.6)",
      gw_chain_dispersion_setup_params, sizeof(gw_chain_dispersion_setup), disp_init, disp_clear,
      gw_chain_dispersion_outcome_fields, sizeof(gw_chain_dispersion_outcome), disp_run, disp_free},
+    {"drop", "the whole drop of a column on the sensor: first collision, flights, later impacts (Fig. 12)",
+     gw_chain_drop_setup_params, sizeof(gw_chain_drop_setup), drop_init, drop_clear, gw_chain_drop_outcome_fields,
+     sizeof(gw_chain_drop_outcome), drop_run, drop_free},
 #if GW_HAVE_LAYER
     {"layer-impact", "one block impact on a 2D granular layer (Bourrier et al. 2008)",
      gw_layer_impact_setup_params, sizeof(gw_layer_impact_setup), impact_init, impact_clear,

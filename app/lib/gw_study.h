@@ -10,6 +10,7 @@
  *   "wavespeed"     gw_chain_wavespeed_setup             gw_chain_wavespeed_outcome
  *   "softwall"      gw_chain_softwall_setup              gw_chain_softwall_outcome
  *   "dispersion"    gw_chain_dispersion_setup            gw_chain_dispersion_outcome
+ *   "drop"          gw_chain_drop_setup                  gw_chain_drop_outcome
  *   "layer-make"    gw_layer_make_setup                  gw_layer_make_outcome
  *   "layer-impact"  gw_layer_impact_setup                gw_layer_impact_outcome
  *   "layer-stats"   gw_stats_setup                       gw_stats_outcome

@@ -36,8 +36,8 @@ from ._core import (GranwaveError, GranwaveIOError, GranwaveRunError, GranwaveUn
 from ._lib import lib as _clib
 from ._lib import path as library_path
 
-__all__ = ["version", "version_info", "chain", "falcon", "wavespeed", "softwall", "dispersion", "layer_make",
-           "layer_impact", "layer_stats", "sweep", "params", "library_path",
+__all__ = ["version", "version_info", "chain", "falcon", "wavespeed", "softwall", "dispersion", "drop",
+           "layer_make", "layer_impact", "layer_stats", "sweep", "params", "library_path",
            "Result", "GranwaveError", "GranwaveValueError", "GranwaveIOError", "GranwaveRunError",
            "GranwaveUnsupported"]
 
@@ -139,6 +139,39 @@ def dispersion(**kwargs):
     return _study("dispersion").run(kwargs)
 
 
+_IMPACT_INTS = ("n_peaks", "cluster")
+
+
+def drop(*, progress=None, **kwargs):
+    r = _study("drop").run(kwargs, progress)
+    for k in ("block", "impacts_monotone", "canceled"):
+        r[k] = bool(r[k])
+    first = {"n": r.pop("n_first"), "v_imp": r["v_imp"]}
+    for k in [k for k in r if k.startswith("first_")]:
+        first[k[len("first_"):]] = r.pop(k)
+    first["converged"] = bool(first["converged"])
+    r["first_collision"] = first
+    r["energy"] = {"e0": r.pop("e0")}
+    for k in ("kinetic", "elastic", "gravity", "dissipated", "total"):
+        r["energy"][k] = r.pop("energy_" + k)
+    n = r["n"]
+    empty = {"t": np.zeros(0), "f": np.zeros(0)}
+    r["wall_peaks"] = r.get("wall_peaks", empty)
+    for k in ("peak_impact", "peak_cluster"):
+        r[k] = r.get(k, np.zeros(0, dtype=np.intc))
+    r["peak_contacts"] = r.get("peak_contacts", np.zeros((0, n), dtype=np.intc)).reshape(-1, n)
+    imp = r.get("impacts") or {c: np.zeros(0) for c in _IMPACT_COLS}
+    for k in _IMPACT_INTS:
+        imp[k] = imp[k].astype(int)
+    imp["located"] = imp["located"].astype(bool)
+    r["impacts"] = imp
+    r["gaps"] = r.get("gaps", np.zeros(0))
+    return r
+
+
+_IMPACT_COLS = ("t_start", "t_end", "f_max", "t_fmax", "v_in", "v_out", "n_peaks", "cluster", "located")
+
+
 def sweep(model="chain", grid=None, *, jobs=0, progress=None, **params):
     """Run a grid of cases of a sweep model ("chain" or "layer") in memory,
     on `jobs` threads (0: one per CPU), with the library's sweep engine (the
@@ -182,6 +215,15 @@ dispersion.__doc__ = _study("dispersion").doc(
     "omega = 2 sqrt(kappa/m) |sin(qa/2)| (physics.md 1.6); power is [q, omega bin].\n"
     "column_n=N instead: the wall-force spectrum of an N-bead column (freq, spectrum,\n"
     "f_peak against 1/period).")
+drop.__doc__ = _study("drop").doc(
+    "The whole drop (Falcon et al. 1998, Fig. 12), as `granwave drop`: the column released\n"
+    "from rest with bead 1 at height above the sensor, followed from its first contact\n"
+    "(t = 0, v_imp = sqrt(2 g h)) through the first collision, flights and later impacts\n"
+    "up to t_max. Returns the sensor signal (t, f_wall; x, v with trace=True), wall_peaks\n"
+    "({'t', 'f'} arrays, with peak_impact, peak_cluster, peak_contacts [peak, contact]),\n"
+    "impacts (a dict of arrays by column), first_collision (a dict with the keys of\n"
+    "granwave.chain's result: f_max, tau_max, tau_n, eps_eff, ...) and energy (the ledger\n"
+    "at t_end). progress: f(done, total) in output samples; return True (or raise) to stop.")
 layer_make.__doc__ = _study("layer-make").doc(
     "Pluviate a 2D sample (Bourrier et al. 2008, physics.md 2.2), as `granwave layer-make`:\n"
     "polydisperse discs (clumps=True: rigid clumps) dropped under gravity until the kinetic\n"

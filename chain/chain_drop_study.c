@@ -1,0 +1,398 @@
+/*
+ * chain_drop_study.c: the whole drop of `granwave drop` as a library call
+ * (gw_chain_study.h); chain_drop_cmd.c prints what this computes, chain_drop.c
+ * integrates it. docs/drop.md holds the definitions.
+ *
+ * The column of N beads (physics.md 1.1, (F.11)) is released from rest with
+ * bead 1 at a height h (m) above the sensor, under gravity g (m/s^2) toward it:
+ *     m_i x_i'' = F_i - F_(i-1) + m_i g,   F_(-1) = K x_1^(3/2) (+ damping),
+ * followed from the first contact, t = 0, where every bead moves at
+ *     v_imp = sqrt(2 g h)   after a fall of   t_fall = sqrt(2 h / g),
+ * up to t_max (s). Damping and its calibration to a one-bead restitution at
+ * v_imp are those of `granwave chain` (physics.md 1.5). With block the column is
+ * one rigid body of mass sum m_i with bead 1's contact law. The peak threshold
+ * defaults to 1 % of the single-bead F_max(1) = C1 m^(3/5) v_imp^(6/5) K^(2/5)
+ * (F.13). The energy ledger E = kinetic + (2/5) k d^(5/2) per contact
+ * - sum m_i g x_i + dissipated is checked against E(0) = N m g h (touching beads).
+ * Units: SI (m, s, kg, N, J).
+ */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "chain_setup_rows.h"
+
+/* ---- the table of the inputs: the drop's rows, then the column's with the
+ * drop's gravity, t-max and dt-out ---- */
+
+#define ROW(nm, ty, f, un, lo, hi, op, df, mv, hl)                                             \
+    {.name = nm, .type = ty, .offset = OFF(f), .unit = un, .min = lo, .max = hi, .open_min = op, \
+     .def = df, .metavar = mv, .help = hl}
+#define CHOICE(nm, f, ch, df, mv, hl)                                                          \
+    {.name = nm, .type = GW_PARAM_CHOICE, .offset = OFF(f), .unit = "", .def = df, .choices = ch, \
+     .metavar = mv, .help = hl}
+#define OFF(f) offsetof(gw_chain_drop_setup, col.f)
+#define OWN(f) offsetof(gw_chain_drop_setup, f)
+
+static const gw_param drop_params[] = {
+    ROW("n", GW_PARAM_LONG, n, "", 1, 100000, 0, "1", "N", "number of beads [1]"),
+    {.name = "height", .type = GW_PARAM_DOUBLE, .offset = OWN(height), .unit = "m", .min = 1e-6,
+     .max = GW_CHAIN_DROP_H_MAX, .def = "5.1e-3", .metavar = "H",
+     .help = "fall of bead 1 to the sensor, m, in [1e-6, 1] [5.1e-3]"},
+    {.name = "gap", .type = GW_PARAM_LIST, .offset = OWN(gap), .unit = "m", .min = 0, .max = GW_CHAIN_DROP_GAP_MAX,
+     .metavar = "G,G..",
+     .help = "initial gap between neighbouring beads, m, in [0, 0.1]: one value for every pair or n-1 values, "
+             "bead 1 first [0 = touching]"},
+    {.name = "block", .type = GW_PARAM_FLAG, .offset = OWN(block), .unit = "", .min = 0, .max = 1, .def = "0",
+     .help = "drop one rigid block instead: a single bead of the column's total mass with bead 1's contact law"},
+    {.name = "peak-threshold", .type = GW_PARAM_DOUBLE, .offset = OWN(peak_threshold), .unit = "N", .min = 0,
+     .max = 1e9, .metavar = "F",
+     .help = "smallest peak force, N, in [0, 1e9] [1 % of F_max(1) (F.13) at v_imp; 0 = every maximum]"},
+    GW_CHAIN_MATERIAL_ROWS
+    ROW("gravity", GW_PARAM_DOUBLE, gravity, "m/s^2", GW_CHAIN_DROP_G_MIN, 1e4, 0, "9.81", "G",
+        "gravity toward the sensor, m/s^2, in [1e-3, 1e4] [9.81]"),
+    GW_CHAIN_SOLVER_ROWS
+    ROW("t-max", GW_PARAM_DOUBLE, t_max, "s", 1e-6, GW_CHAIN_DROP_T_MAX, 0, "10e-3", "T",
+        "time followed after the first contact, s, in [1e-6, 1] [10e-3, the paper's Fig. 12]"),
+    ROW("dt-out", GW_PARAM_DOUBLE, dt_out, "s", 0, 1, 0, "0", "DT",
+        "sampling interval of the signal, s, in [t-max/1e7, t-max] [0 = 1e-6]; peaks and impacts do not "
+        "depend on it"),
+    GW_CHAIN_ENERGY_ROW
+    GW_CHAIN_WALL_ROWS
+    ROW("trace", GW_PARAM_FLAG, trace, "", 0, 1, 0, "0", NULL,
+        "library: keep the bead series x, v as well (the signal t, f_wall is always kept) [0]"),
+    GW_PARAM_END};
+#undef OFF
+#undef OWN
+
+/* ---- the table of the results ---- */
+
+#define O gw_chain_drop_outcome
+#define RD(nm, f, un, hl) {.name = nm, .type = GW_PARAM_DOUBLE, .offset = offsetof(O, f), .unit = un, .help = hl}
+#define RI(nm, f, hl) {.name = nm, .type = GW_PARAM_INT, .offset = offsetof(O, f), .unit = "", .help = hl}
+#define RL(nm, f, hl) {.name = nm, .type = GW_PARAM_LONG, .offset = offsetof(O, f), .unit = "", .help = hl}
+#define RA(nm, f, un, r, c, hl) \
+    {.name = nm, .type = GW_PARAM_DARRAY, .offset = offsetof(O, f), .unit = un, .rows = r, .cols = c, .help = hl}
+#define RIA(nm, f, r, c, hl) \
+    {.name = nm, .type = GW_PARAM_IARRAY, .offset = offsetof(O, f), .unit = "", .rows = r, .cols = c, .help = hl}
+
+static const gw_param drop_fields[] = {
+    RI("n", n, "bodies simulated (1 with block)"),
+    RI("n_column", n_column, "beads of the column"),
+    RI("block", block, "1: one rigid block of the column's mass"),
+    RD("height", height, "m", "fall of bead 1 to the sensor"),
+    RD("gravity", gravity, "m/s^2", "gravity toward the sensor"),
+    RD("v_imp", v_imp, "m/s", "sqrt(2 g h): every bead's velocity at the first contact"),
+    RD("t_fall", t_fall, "s", "sqrt(2 h / g): the fall before t = 0"),
+    RD("t_max", t_max, "s", "time followed after the first contact"),
+    RD("dt_out", dt_out, "s", "sampling of the signal"),
+    RD("peak_threshold", peak_threshold, "N", "smallest peak force counted"),
+    RD("mass", mass, "kg", "bead mass (bead 1 with radii; the block's with block)"),
+    RD("k", k, "N/m^1.5", "bead-bead Hertz coefficient"),
+    RD("kwall", kwall, "N/m^1.5", "bead-sensor Hertz coefficient K"),
+    RD("radius", radius, "m", "bead radius"),
+    RD("gamma", gamma, "N s/m^1.5", "Kuwabara-Kono constant (calibrated with restitution)"),
+    RD("alpha", alpha, "s/m", "Hunt-Crossley constant (calibrated with restitution)"),
+    RI("n_gaps", n_gaps, "gaps (n - 1, or 0: touching)"),
+    RA("gaps", gaps, "m", "n_gaps", NULL, "initial gap between beads i and i+1"),
+    RI("n_impacts", r.n_impacts, "contact episodes whose largest peak reaches the threshold"),
+    RI("n_contact_episodes", r.n_episodes, "every contact episode of bead 1 with the sensor"),
+    RI("n_peaks", r.n_peaks, "located wall-force maxima at or above the threshold"),
+    RD("f_max", r.f_max, "N", "largest peak of the run"),
+    RD("t_fmax", r.t_fmax, "s", "its time"),
+    RI("impact_rises", impact_rises, "impacts whose peak exceeds the previous impact's"),
+    RI("impacts_monotone", impacts_monotone, "1: no impact_rises"),
+    {.name = "wall_peaks", .type = GW_PARAM_DARRAY, .offset = offsetof(O, wall_peaks), .unit = "s, N",
+     .rows = "n_peaks", .cols = "2", .choices = "t,f", .help = "every peak: time (s) and force (N) [peak, column]"},
+    RIA("peak_impact", peak_impact, "n_peaks", NULL, "the impact (index into impacts) of each peak"),
+    RIA("peak_cluster", peak_cluster, "n_peaks", NULL, "beads joined to the sensor by closed contacts at each peak"),
+    RIA("peak_contacts", peak_contacts, "n_peaks", "n",
+        "1 = contact closed at the peak: the sensor first, then beads k, k+1 [peak, contact]"),
+    {.name = "impacts", .type = GW_PARAM_DARRAY, .offset = offsetof(O, impacts), .unit = "SI",
+     .rows = "n_impacts", .cols = "9", .choices = GW_DROP_IMPACT_COLS,
+     .help = "per impact: t_start, t_end (NaN: in contact at t_max), f_max, t_fmax (s, N), v_in, v_out (m/s, "
+             "toward the sensor > 0), n_peaks, cluster, located [impact, column]"},
+    RI("n_first", n_first, "entries of the first collision's arrays"),
+    RD("first_f_max", r.first.f_max, "N", "first collision as `granwave chain`: largest wall force"),
+    RD("first_tau_max", r.first.tau_max, "s", "first collision: time of f_max"),
+    RD("first_tau_n", r.first.tau_n, "s", "first collision: bead 1's departure from the sensor"),
+    RD("first_period", r.first.period, "s", "first collision: mean spacing of wall-force maxima"),
+    RI("first_n_maxima", r.first.n_maxima, "first collision: wall-force maxima"),
+    RD("first_energy_error", r.first.energy_error, "", "first collision: max relative energy error"),
+    RA("first_final_velocities", r.first.final_v, "m/s", "n_first", NULL, "first collision: velocities at its end"),
+    RA("first_detach_times", r.first.detach_t, "s", "n_first", NULL, "first collision: last opening per bead"),
+    RA("first_velocities_at_tau_n", r.first.v_tau_n, "m/s", "n_first", NULL, "first collision: velocities at tau_n"),
+    RI("first_n_s", r.first.n_s, "first collision: beads leaving from the top before the cluster"),
+    RI("first_cluster", r.first.cluster, "first collision: beads in contact with bead 1 when it left"),
+    RD("first_e_rel_over_e_k", r.first.e_rel_over_e_k, "", "first collision: E_rel/E_K at tau_n (F.20)"),
+    RD("first_eps_eff", r.first.eps_eff, "", "first collision: momentum restitution (F.7)"),
+    RD("first_eps_col", r.first.eps_col, "", "first collision: energy restitution (F.30)"),
+    RI("first_wall_contacts", r.first.wall_contacts, "first collision: separate wall contacts"),
+    RI("first_converged", r.first.converged, "first collision: 1 = ended at the chain's end"),
+    RD("first_t_end", r.first.t_end, "s", "first collision: its end"),
+    RL("first_events", r.first.n_events, "first collision: contact events"),
+    RL("first_missed_events", r.first.missed_events, "first collision: contact changes found from the state"),
+    RL("first_steps", r.first.stats.steps, "first collision: solver steps"),
+    RL("first_rhs_evals", r.first.stats.rhs_evals, "first collision: right-hand side evaluations"),
+    RL("first_jac_evals", r.first.stats.jac_evals, "first collision: Jacobian evaluations"),
+    RL("first_restarts", r.first.stats.restarts, "first collision: solver restarts"),
+    RD("energy_error", r.energy_error, "", "max |E(t) - E(0)| / E(0) over every sample and event"),
+    RD("e0", r.e0, "J", "E(0): N m g h for touching beads"),
+    RD("energy_kinetic", e_kinetic, "J", "kinetic energy at t_end"),
+    RD("energy_elastic", e_elastic, "J", "elastic energy at t_end"),
+    RD("energy_gravity", e_gravity, "J", "gravity potential -sum m g x at t_end"),
+    RD("energy_dissipated", e_dissipated, "J", "energy dissipated by t_end"),
+    RD("energy_total", e_total, "J", "their sum at t_end"),
+    RD("t_end", r.t_end, "s", "end of the run (t_max unless stopped)"),
+    RL("events", r.n_events, "events located"),
+    RL("missed_events", r.missed_events, "contact changes found from the state, not a root"),
+    RL("steps", r.stats.steps, "solver steps"),
+    RL("rhs_evals", r.stats.rhs_evals, "right-hand side evaluations"),
+    RL("restarts", r.stats.restarts, "solver restarts"),
+    RD("wall_time_ms", wall_time_ms, "ms", "wall-clock time of the run"),
+    RI("trace_len", trace_len, "samples of the signal"),
+    RA("t", t, "s", "trace_len", NULL, "sample times (every dt_out and at every event)"),
+    RA("f_wall", f_wall, "N", "trace_len", NULL, "the sensor signal F(t)"),
+    RA("x", x, "m", "trace_len", "n", "bead displacements toward the sensor (trace = 1)"),
+    RA("v", v, "m/s", "trace_len", "n", "bead velocities toward the sensor (trace = 1)"),
+    RI("canceled", canceled, "1: stopped by the progress callback at t_end"),
+    GW_PARAM_END};
+#undef O
+
+const gw_param *gw_chain_drop_setup_params(void) { return drop_params; }
+const gw_param *gw_chain_drop_outcome_fields(void) { return drop_fields; }
+
+int gw_chain_drop_setup_init(gw_chain_drop_setup *s)
+{
+    memset(s, 0, sizeof *s);
+    int rc = gw_chain_setup_init(&s->col);
+    return rc == GW_OK ? gw_param_init(drop_params, s, NULL) : rc;
+}
+
+void gw_chain_drop_setup_clear(gw_chain_drop_setup *s)
+{
+    gw_param_clear(drop_params, s);
+    gw_chain_setup_clear(&s->col);
+}
+
+void gw_chain_drop_outcome_free(gw_chain_drop_outcome *out)
+{
+    gw_chain_drop_result_free(&out->r);
+    free(out->gaps);
+    free(out->wall_peaks);
+    free(out->peak_impact);
+    free(out->peak_cluster);
+    free(out->peak_contacts);
+    free(out->impacts);
+    free(out->t);
+    free(out->f_wall);
+    free(out->x);
+    free(out->v);
+    memset(out, 0, sizeof *out);
+}
+
+int gw_chain_drop_setup_gaps(const gw_chain_drop_setup *s, double **gaps, gw_err *err)
+{
+    *gaps = NULL;
+    const int n = (int)s->col.n, ng = s->gap.n;
+    if (ng == 0)
+        return GW_OK;
+    if (n < 2 || s->block)
+        return gw_err_set(err, GW_EINVAL, "gap: has no effect with %s", s->block ? "block" : "one bead");
+    if (ng != 1 && ng != n - 1)
+        return gw_err_set(err, GW_EINVAL, "gap: %d values for %d pairs (give 1 or %d)", ng, n - 1, n - 1);
+    double *g = malloc((size_t)(n - 1) * sizeof *g);
+    if (!g)
+        return gw_err_set(err, GW_ENOMEM, "gap: out of memory");
+    for (int i = 0; i < n - 1; i++)
+        g[i] = s->gap.v[ng == 1 ? 0 : i];
+    *gaps = g;
+    return GW_OK;
+}
+
+/* ---- the signal, and progress, from the run's sample callback ---- */
+
+typedef struct drop_rec {
+    gw_chain_drop_outcome *out;
+    size_t cap;
+    int n, keep_beads;
+    gw_progress_fn progress;
+    void *pctx;
+    double dt_out;
+    long total, next, step;
+} drop_rec;
+
+static int grow(double **a, size_t cap)
+{
+    double *p = realloc(*a, cap * sizeof *p);
+    if (!p)
+        return 0;
+    *a = p;
+    return 1;
+}
+
+static int record(void *ctx, double t, const double *y, double f_wall, int is_event)
+{
+    (void)is_event;
+    drop_rec *rc = ctx;
+    gw_chain_drop_outcome *o = rc->out;
+    size_t len = (size_t)o->trace_len;
+    if (len == rc->cap) {
+        size_t cap = rc->cap ? 2 * rc->cap : 1024, nb = (size_t)rc->n;
+        if (!grow(&o->t, cap) || !grow(&o->f_wall, cap) ||
+            (rc->keep_beads && (!grow(&o->x, cap * nb) || !grow(&o->v, cap * nb))))
+            return GW_ENOMEM;
+        rc->cap = cap;
+    }
+    o->t[len] = t;
+    o->f_wall[len] = f_wall;
+    if (rc->keep_beads)
+        for (int i = 0; i < rc->n; i++) {
+            o->x[len * (size_t)rc->n + (size_t)i] = y[2 * i];
+            o->v[len * (size_t)rc->n + (size_t)i] = y[2 * i + 1];
+        }
+    o->trace_len++;
+    if (rc->progress) {
+        long done = (long)floor(t / rc->dt_out + 1e-9);
+        if (done >= rc->next) {
+            if (done > rc->total)
+                done = rc->total;
+            rc->next = done + rc->step;
+            if (rc->progress(rc->pctx, done, rc->total) != 0) {
+                o->canceled = 1;
+                return 1; /* ends the integration here, without an error */
+            }
+        }
+    }
+    return 0;
+}
+
+/* ---- the results that the run leaves in gw_chain_drop_result, as tables ---- */
+
+static int fill_tables(gw_chain_drop_outcome *o, gw_err *err)
+{
+    const gw_chain_drop_result *r = &o->r;
+    const int np = r->n_peaks, ni = r->n_impacts, n = r->n;
+    o->n_first = r->first.n;
+    for (int j = 1; j < ni; j++)
+        o->impact_rises += r->impacts[j].f_max > r->impacts[j - 1].f_max;
+    o->impacts_monotone = o->impact_rises == 0;
+    o->e_kinetic = r->e_end.kinetic;
+    o->e_elastic = r->e_end.elastic;
+    o->e_gravity = r->e_end.gravity;
+    o->e_dissipated = r->e_end.dissipated;
+    o->e_total = r->e_end.total;
+    o->wall_peaks = malloc(((size_t)np * 2 + 1) * sizeof *o->wall_peaks);
+    o->peak_impact = malloc(((size_t)np + 1) * sizeof *o->peak_impact);
+    o->peak_cluster = malloc(((size_t)np + 1) * sizeof *o->peak_cluster);
+    o->peak_contacts = malloc(((size_t)np * (size_t)n + 1) * sizeof *o->peak_contacts);
+    o->impacts = malloc(((size_t)ni * GW_DROP_NIMPACT_COLS + 1) * sizeof *o->impacts);
+    if (!o->wall_peaks || !o->peak_impact || !o->peak_cluster || !o->peak_contacts || !o->impacts)
+        return gw_err_set(err, GW_ENOMEM, "drop: out of memory for %d peaks", np);
+    for (int j = 0; j < np; j++) {
+        o->wall_peaks[2 * j] = r->peaks[j].t;
+        o->wall_peaks[2 * j + 1] = r->peaks[j].f;
+        o->peak_impact[j] = r->peaks[j].impact;
+        o->peak_cluster[j] = r->peaks[j].cluster;
+        for (int k = 0; k < n; k++)
+            o->peak_contacts[(size_t)j * (size_t)n + (size_t)k] = r->peak_contacts[(size_t)j * (size_t)n + (size_t)k] != 0;
+    }
+    for (int j = 0; j < ni; j++) {
+        const gw_chain_drop_impact *im = &r->impacts[j];
+        double *row = o->impacts + (size_t)j * GW_DROP_NIMPACT_COLS;
+        row[0] = im->t_start;
+        row[1] = im->t_end;
+        row[2] = im->f_max;
+        row[3] = im->t_fmax;
+        row[4] = im->v_in;
+        row[5] = im->v_out;
+        row[6] = im->n_peaks;
+        row[7] = im->cluster;
+        row[8] = im->located;
+    }
+    return GW_OK;
+}
+
+int gw_chain_drop_study_run(const gw_chain_drop_setup *s, gw_progress_fn progress, void *pctx,
+                            gw_chain_drop_outcome *out, gw_err *err)
+{
+    memset(out, 0, sizeof *out);
+    double t0 = gw_clock_ms();
+    int rc = gw_param_check(drop_params, s, err);
+    if (rc != GW_OK)
+        return rc;
+    if ((rc = gw_chain_drop_setup_gaps(s, &out->gaps, err)) != GW_OK)
+        return rc;
+    const int n = (int)s->col.n;
+    out->n_gaps = out->gaps ? n - 1 : 0;
+    /* the column as `granwave chain` resolves it, arriving at sqrt(2 g h) (the
+     * damping calibration runs at that velocity, under g) */
+    gw_chain_setup col = s->col; /* shallow: s keeps what it owns */
+    col.vimp = sqrt(2.0 * s->col.gravity * s->height);
+    col.trace = 0;
+    gw_chain_resolved res;
+    if ((rc = gw_chain_setup_resolve(&col, &res, err)) != GW_OK) {
+        gw_chain_resolved_free(&res);
+        return rc;
+    }
+    gw_chain_params *p = &res.params;
+    if (s->block) { /* one body of the column's mass, bead 1's contact constants */
+        double mtot = 0;
+        for (int i = 0; i < n; i++)
+            mtot += p->masses ? p->masses[i] : p->mass;
+        p->mass = mtot;
+        p->n = 1;
+        p->masses = NULL;
+        p->kc = NULL;
+    }
+    const double t_max = res.run.t_max;
+    const double dt_out = s->col.dt_out > 0 ? s->col.dt_out : fmin(1e-6, t_max);
+    if (dt_out < t_max * 1e-7 || dt_out > t_max) {
+        gw_chain_resolved_free(&res);
+        return gw_err_set(err, GW_EINVAL, "dt-out: %g s is outside [t-max/1e7, t-max] = [%g, %g]", dt_out,
+                          t_max * 1e-7, t_max);
+    }
+    res.run.dt_out = dt_out;
+    out->n = p->n;
+    out->n_column = n;
+    out->block = s->block;
+    out->height = s->height;
+    out->gravity = p->gravity;
+    out->t_max = t_max;
+    out->dt_out = dt_out;
+    out->peak_threshold = isnan(s->peak_threshold) ? 0.01 * gw_chain_fmax1(p->mass, p->kwall, p->v_imp)
+                                                   : s->peak_threshold;
+    out->mass = p->mass;
+    out->k = p->k;
+    out->kwall = p->kwall;
+    out->radius = p->radius;
+    out->gamma = p->gamma;
+    out->alpha = p->alpha;
+
+    gw_chain_drop_params dp = gw_chain_drop_params_default();
+    dp.chain = *p;
+    dp.height = s->height;
+    dp.gaps = s->block ? NULL : out->gaps;
+    dp.t_max = t_max;
+    dp.peak_threshold = out->peak_threshold;
+    drop_rec rec = {.out = out, .n = p->n, .keep_beads = s->col.trace, .progress = progress, .pctx = pctx,
+                    .dt_out = dt_out};
+    if (progress) {
+        rec.total = (long)floor(t_max / dt_out + 1e-9);
+        rec.step = rec.total / 100 > 0 ? rec.total / 100 : 1;
+        rec.next = rec.step;
+    }
+    res.run.sample = record;
+    res.run.sample_ctx = &rec;
+    rc = gw_chain_drop_run(&dp, &res.run, &out->r, err);
+    out->v_imp = out->r.v_imp;
+    out->t_fall = out->r.t_fall;
+    int rc2 = fill_tables(out, err);
+    if (rc == GW_OK)
+        rc = rc2;
+    if (rc == GW_OK && out->canceled)
+        rc = gw_err_set(err, GW_ECANCELED, "drop: stopped by the progress callback at t = %.9g s", out->r.t_end);
+    gw_chain_resolved_free(&res);
+    out->wall_time_ms = gw_clock_ms() - t0;
+    return rc;
+}

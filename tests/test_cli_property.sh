@@ -8,12 +8,12 @@
 # file, directory, model, kind, law, list or "how": R, K, V,V.., A:B, N, ...), and
 # each is given, on top of a short valid run of that command (small n, short
 # t-max), each of the values
-#     nan  inf  -inf  -1  0  1e-308  1e308  99999999999999999999  junk
+#     nan  inf  -inf  -1  0  1e-308  1e308  99999999999999999999  junk  ""
 # What is asserted for each case, run under `timeout` (20 s) and, outside the
 # sanitizer build, a memory limit (ulimit -v 4 GiB):
 #   - it ends (no hang: timeout kills it and the case fails) and does not crash
 #     (exit code 0, 1 or 2 only; no signal);
-#   - nan, inf, -inf and junk are refused: exit 2; so is 99999999999999999999
+#   - nan, inf, -inf, junk and the empty value are refused: exit 2; so is 99999999999999999999
 #     for an integer flag (A:B lists and ranges too);
 #   - exit 0 only where the value is legitimate for that flag, decided per value
 #     class: -1 only for the flags listed in NEG_OK (signed quantities),
@@ -54,7 +54,7 @@ tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 fails=0; passes=0; known=0
 ko() { echo "FAIL: $1"; fails=$((fails+1)); }
 
-VALUES=${GW_PROPERTY_VALUES:-"nan inf -inf -1 0 1e-308 1e308 99999999999999999999 junk"}
+VALUES=${GW_PROPERTY_VALUES:-"nan inf -inf -1 0 1e-308 1e308 99999999999999999999 junk @empty"}
 CMDS=${GW_PROPERTY_CMDS:-"chain falcon wavespeed softwall dispersion drop sweep layer-make layer-impact layer-stats"}
 
 # flag classes (command:flag or *:flag) of the commands without a table (a
@@ -111,17 +111,19 @@ table_cmd() { [ -n "$ROWS" ] && case "$TABLE_CMDS" in *" $1 "*) return 0;; esac;
 # command without a table the range fields are "-"
 numeric_flags() {
     if table_cmd "$1"; then
-        "$ROWS" "$1" | awk '$3 == "double" || $3 == "long" || $3 == "int" {print $2, "T", $4, $5, $6, $7, $8, $9}'
+        "$ROWS" "$1" | awk '$3 == "double" || $3 == "long" || $3 == "int" {print $2, "@row", $4, $5, $6, $7, $8, $9}'
         return
     fi
     "$GW" "$1" --help | awk '/^  --/ {print $1, $2}' |
         awk '$2 ~ /^[A-Z][A-Z0-9:,.]*$/ && $2 !~ /^(NAME|DIR|FILE|MODEL|KIND|LAW|HOW|LIST)$/ {sub(/^--/, "", $1); print $1, $2, "- - - - - -"}'
 }
 
-# in_range VALUE MIN MAX OPEN_MIN OPEN_MAX: is VALUE a number inside the row's range
+# in_range VALUE MIN MAX OPEN_MIN OPEN_MAX: 0 when VALUE is a decimal number
+# inside the row's range, 1 outside, 2 when it is no decimal number (hex "0x10"
+# is a number to strtod: such a value is judged by its class only)
 in_range() {
     awk -v v="$1" -v lo="$2" -v hi="$3" -v olo="$4" -v ohi="$5" 'BEGIN {
-        if (v !~ /^[-+]?([0-9]+[.]?[0-9]*|[.][0-9]+)([eE][-+]?[0-9]+)?$/) exit 1
+        if (v !~ /^[-+]?([0-9]+[.]?[0-9]*|[.][0-9]+)([eE][-+]?[0-9]+)?$/) exit 2
         x = v + 0; l = (lo == "-inf") ? -1e308 * 10 : lo + 0; h = (hi == "inf") ? 1e308 * 10 : hi + 0
         if (x < l || x > h || (olo == 1 && x <= l) || (ohi == 1 && x >= h)) exit 1
         exit 0 }'
@@ -158,7 +160,7 @@ run_cmd() {
         # integer flags: the parser says so for a fractional value
         intflag=0
         out1="$tmp/probe"; rm -rf "$out1"
-        if [ "$mv" != "T" ] && timeout -s KILL 3 "$GW" "$cmd" $(base_args "$cmd" "$out1") "--$flag" 1.5 2>&1 >/dev/null </dev/null |
+        if [ "$mv" != "@row" ] && timeout -s KILL 3 "$GW" "$cmd" $(base_args "$cmd" "$out1") "--$flag" 1.5 2>&1 >/dev/null </dev/null |
                 grep -q "not an integer"; then
             intflag=1
         fi
@@ -168,7 +170,8 @@ run_cmd() {
             out="$tmp/out_$ncase"
             mkdir "$out" # an existing, empty --out: it must stay empty on exit 2
             args=$(base_args "$cmd" "$out")
-            bash -c "$MEMLIM exec timeout -s KILL 20 \"\$@\"" _ "$GW" "$cmd" $args "--$flag" "$val" \
+            arg=$val; [ "$val" = "@empty" ] && arg="" # an empty value
+            bash -c "$MEMLIM exec timeout -s KILL 20 \"\$@\"" _ "$GW" "$cmd" $args "--$flag" "$arg" \
                 >"$tmp/stdout" 2>"$tmp/stderr" </dev/null
             rc=$?
             what="$cmd --$flag $val"
@@ -180,14 +183,15 @@ run_cmd() {
             else
                 # which exit codes this value class allows
                 allow="12"
-                if [ "$mv" = "T" ]; then # a table row: its range decides
+                if [ "$mv" = "@row" ]; then # a table row: its range decides
                     case "$val" in
-                    nan|inf|-inf|junk) allow="2";;
-                    *) if in_range "$val" "$rmin" "$rmax" "$romin" "$romax"; then allow="012"; else allow="2"; fi;;
+                    nan|inf|-inf|junk|@empty) allow="2";;
+                    *) in_range "$val" "$rmin" "$rmax" "$romin" "$romax"
+                       case $? in 0|2) allow="012";; *) allow="2";; esac;;
                     esac
                 else
                 case "$val" in
-                nan|inf|-inf|junk) allow="2";;
+                nan|inf|-inf|junk|@empty) allow="2";;
                 99999999999999999999) if [ $intflag -eq 1 ] || [ "$mv" = "A:B" ]; then allow="2";
                                       elif in_list "$HUGE_OK" "$cmd" "$flag"; then allow="012"; fi;;
                 -1) in_list "$NEG_OK" "$cmd" "$flag" && allow="012";;

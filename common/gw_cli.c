@@ -7,6 +7,7 @@
 
 #include "gw_cli.h"
 #include "gw_common.h"
+#include "gw_param.h"
 
 const gw_opt *gw_cli_find(const gw_opt *opts, const char *name)
 {
@@ -16,11 +17,66 @@ const gw_opt *gw_cli_find(const gw_opt *opts, const char *name)
     return NULL;
 }
 
+int gw_cli_opt_param(const gw_param *p, void *dest, gw_opt *o, gw_err *err)
+{
+    *o = (gw_opt){.name = p->name, .dest = dest, .metavar = p->metavar, .help = p->help, .lo = p->min,
+                  .hi = p->max, .open_lo = p->open_min, .param = p};
+    switch (p->type) {
+    case GW_PARAM_DOUBLE: o->kind = GW_OPT_DOUBLE; break;
+    case GW_PARAM_LONG: o->kind = GW_OPT_LONG; break;
+    case GW_PARAM_FLAG: o->kind = GW_OPT_FLAG; break;
+    case GW_PARAM_CHOICE:
+    case GW_PARAM_TEXT:
+        o->kind = GW_OPT_STRING;
+        *(const char **)dest = p->def;
+        return GW_OK;
+    default:
+        return gw_err_set(err, GW_EINVAL, "%s: a %s row is not a command-line option", p->name,
+                          gw_param_type_name(p->type));
+    }
+    if (p->type == GW_PARAM_FLAG) {
+        *(int *)dest = 0;
+        return p->def && strcmp(p->def, "0") != 0
+                   ? gw_err_set(err, GW_EINVAL, "%s: a flag option is off by default", p->name) : GW_OK;
+    }
+    if (p->type == GW_PARAM_DOUBLE)
+        *(double *)dest = NAN;
+    else
+        *(long *)dest = 0;
+    return p->def ? gw_param_set_value(p, dest, p->def, err) : GW_OK;
+}
+
+/* The value checked by the option's table row: the row's message "NAME:
+ * reason" becomes "CMD --NAME: reason". */
+static int set_by_row(const char *cmd, gw_opt *o, const char *val, gw_err *err)
+{
+    const gw_param *p = o->param;
+    gw_err e = {{0}};
+    int rc, idx;
+    if (o->kind == GW_OPT_STRING && p->type == GW_PARAM_CHOICE)
+        rc = gw_param_set_value(p, &idx, val, &e); /* checked; the text is kept */
+    else if (o->kind == GW_OPT_STRING)
+        rc = *val ? GW_OK : gw_err_set(&e, GW_EINVAL, "%s: empty value", p->name);
+    else
+        rc = gw_param_set_value(p, o->dest, val, &e);
+    if (rc != GW_OK) {
+        size_t n = strlen(p->name);
+        const char *why = strncmp(e.msg, p->name, n) == 0 && e.msg[n] == ':' ? e.msg + n + 1 : e.msg;
+        return gw_err_set(err, rc, "%s --%s:%s%s", cmd, o->name, why == e.msg ? " " : "", why);
+    }
+    if (o->kind == GW_OPT_STRING)
+        *(const char **)o->dest = val;
+    o->seen = 1;
+    return GW_OK;
+}
+
 static int set_value(const char *cmd, gw_opt *o, const char *val, gw_err *err)
 {
     char name[128];
     snprintf(name, sizeof name, "%s --%s", cmd, o->name);
     int rc = GW_OK;
+    if (o->param && o->kind != GW_OPT_FLAG)
+        return set_by_row(cmd, o, val, err);
     switch (o->kind) {
     case GW_OPT_DOUBLE: {
         double v;

@@ -12,6 +12,8 @@
 
 /* ---- command-line options ---- */
 
+struct gw_param; /* gw_param.h */
+
 typedef enum { GW_OPT_FLAG, GW_OPT_DOUBLE, GW_OPT_LONG, GW_OPT_STRING } gw_opt_kind;
 
 typedef struct gw_opt {
@@ -23,6 +25,11 @@ typedef struct gw_opt {
     double lo, hi;       /* accepted range for numbers (inclusive) */
     int open_lo;         /* 1: value must be > lo */
     int seen;            /* set by the parser */
+    const struct gw_param *param; /* NULL, or the parameter-table row (gw_param.h)
+                                     that checks the value, by the library's rule
+                                     (gw_param_set_value): dest is then a field of
+                                     the row's type, or for a choice or text row
+                                     a const char * pointing into argv */
 } gw_opt;
 
 /* Parse argv[0..argc) against opts (terminated by name == NULL). Accepts
@@ -31,6 +38,14 @@ typedef struct gw_opt {
  * a message naming the option on unknown options, missing or bad values. */
 int gw_cli_parse(const char *cmd, gw_opt *opts, int argc, char **argv, int *help,
                  const char **pos, int maxpos, int *npos, gw_err *err);
+/* The option of table row p (gw_param.h) writing into dest: name, metavar,
+ * help, range and kind from the row (double -> GW_OPT_DOUBLE into a double,
+ * long -> GW_OPT_LONG into a long, flag -> GW_OPT_FLAG into an int, choice and
+ * text -> GW_OPT_STRING into a const char *), the value checked by the row; the
+ * row's default is written into dest (a choice or text default as the row's
+ * static text, NULL when it has none). Int rows are not supported (GW_EINVAL,
+ * a table bug). */
+int gw_cli_opt_param(const struct gw_param *p, void *dest, gw_opt *o, gw_err *err);
 /* Print usage and every option's help. */
 void gw_cli_help(FILE *fp, const char *cmd, const char *usage, const char *summary,
                  const gw_opt *opts);

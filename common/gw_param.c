@@ -150,7 +150,7 @@ static int set_number(const gw_param *p, void *obj, double v, const char *text, 
 static int set_integer_text(const gw_param *p, void *obj, const char *value, gw_err *err)
 {
     long lo = p->min <= (double)LONG_MIN ? LONG_MIN : (long)ceil(p->min) + (p->open_min && p->min == ceil(p->min));
-    long hi = p->max >= (double)LONG_MAX ? LONG_MAX : (long)floor(p->max);
+    long hi = p->max >= (double)LONG_MAX ? LONG_MAX : (long)floor(p->max) - (p->open_max && p->max == floor(p->max));
     if (p->type == GW_PARAM_INT) {
         lo = lo < INT_MIN ? INT_MIN : lo;
         hi = hi > INT_MAX ? INT_MAX : hi;
@@ -221,6 +221,11 @@ static int set_text(const gw_param *p, void *obj, const char *value, gw_err *err
         int rc = gw_parse_double_list_in(value, p->name, p->min, p->max, p->open_min, &v, &n, err);
         if (rc != GW_OK)
             return rc;
+        for (int k = 0; p->open_max && k < n; k++) /* the parser's upper end is closed */
+            if (!(v[k] < p->max)) {
+                free(v);
+                return gw_err_set(err, GW_EINVAL, "%s: item %d is %g, must be < %g", p->name, k + 1, p->max, p->max);
+            }
         gw_param_list *l = field(obj, p);
         free(l->v);
         l->v = v;
@@ -251,6 +256,17 @@ int gw_param_set(const gw_param *t, void *obj, const char *name, const char *val
     if (!value)
         return gw_err_set(err, GW_EINVAL, "%s: no value", p->name);
     return set_text(p, obj, value, err);
+}
+
+int gw_param_set_value(const gw_param *p, void *fieldp, const char *value, gw_err *err)
+{
+    if (!p || !gw_param_is_input(p))
+        return gw_err_set(err, GW_EINVAL, "%s: a result, not a parameter", p ? p->name : "(null)");
+    if (!value)
+        return gw_err_set(err, GW_EINVAL, "%s: no value", p->name);
+    gw_param row = *p; /* the same row with its field at fieldp */
+    row.offset = 0;
+    return set_text(&row, fieldp, value, err);
 }
 
 int gw_param_set_double(const gw_param *t, void *obj, const char *name, double v, gw_err *err)

@@ -87,6 +87,13 @@ int gw_param_init(const gw_param *t, void *obj, gw_err *err);
  * GW_EINVAL "unknown parameter 'NAME'"; GW_ENOMEM. */
 int gw_param_set(const gw_param *t, void *obj, const char *name, const char *value, gw_err *err);
 
+/* Set one row's value into fieldp, a field of the row's type (double *, long *,
+ * int * for int, flag and choice, char ** for text, ...) anywhere, with the
+ * checks of gw_param_set: how a command line checks its options by the same
+ * rule as the library. Errors as gw_param_set's ("NAME: reason"), *fieldp
+ * unchanged. */
+int gw_param_set_value(const gw_param *p, void *fieldp, const char *value, gw_err *err);
+
 /* Check every input row of obj as gw_param_set would (for a struct whose
  * fields were written directly): numbers in range (NaN passes when the row has
  * no default: not given), integers, flags 0/1, choice indices, list items,

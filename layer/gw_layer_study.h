@@ -51,7 +51,8 @@ typedef struct gw_layer_impact_setup {
     double rtol, atol;     /* cvode/arkode tolerances [1e-8] */
     double energy_tol;     /* stop when the ledger closure exceeds it [0 = off] */
     int remove_walls;      /* no walls from the impact on [0] */
-    int full;              /* run to t-max after the block has left [0] */
+    int full;              /* run to t-max after the outcome is decided [0] */
+    int until;             /* rebound, verdict (choice, GW_LAYER_UNTIL_*) [rebound] */
 } gw_layer_impact_setup;
 
 /* The table of gw_layer_impact_setup (static, NULL-terminated). */

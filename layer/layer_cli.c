@@ -13,35 +13,52 @@
 #include "gw_cli.h"
 #include "layer_cli.h"
 
-int layer_mat_options(layer_mat_cli *m, gw_opt *o)
+/* The option of row name of table t writing into dest: name, help, metavar,
+ * range and default are the row's, the value is checked by the row
+ * (gw_cli_opt_param). A name missing from the table, or a row of a type the
+ * command line cannot hold, is a bug: the option is then left unchecked and
+ * layer_opts_ok reports it. */
+static void row_opt(const gw_param *t, const char *name, void *dest, gw_opt *o)
 {
-    m->lp = gw_layer_params_default();
-    m->mass_law = "disc";
-    m->clump_mass = gw_layer_clump_mass_name(GW_LAYER_CLUMP_MASS_SUM);
+    const gw_param *p = gw_param_find(t, name);
+    if (!p || gw_cli_opt_param(p, dest, o, NULL) != GW_OK)
+        *o = (gw_opt){.name = name, .kind = GW_OPT_STRING, .dest = dest, .help = "(not in the table)"};
+}
+
+int layer_opts_ok(const gw_opt *o, gw_err *err)
+{
+    for (; o->name; o++)
+        if (o->help && strcmp(o->help, "(not in the table)") == 0)
+            return gw_err_set(err, GW_EINVAL, "--%s: no row of that name in the parameter table (a bug)", o->name);
+    return GW_OK;
+}
+
+int layer_mat_options(const gw_param *t, layer_mat_cli *m, gw_opt *o)
+{
+    m->lp = gw_layer_params_default(); /* the fields the table does not set */
     int i = 0;
-    /* ranges are checked by gw_layer_params_validate, so the message names the
-     * physical quantity (e.g. friction outside [0, 90)) */
-    o[i++] = OPT_D("friction", &m->lp.friction_deg, "PHI", "friction angle phi, deg in [0, 90) [30]", -INFINITY, INFINITY, 0);
-    o[i++] = OPT_D("shear-modulus", &m->lp.shear_modulus, "G", "shear modulus, Pa [40e9]", -INFINITY, INFINITY, 0);
-    o[i++] = OPT_D("poisson", &m->lp.poisson, "NU", "Poisson ratio [0.25]", -INFINITY, INFINITY, 0);
-    o[i++] = OPT_D("density", &m->lp.density, "RHO", "particle density, kg/m^3 [2650]", -INFINITY, INFINITY, 0);
-    o[i++] = OPT_D("gravity", &m->lp.gravity, "G", "gravity, m/s^2 [9.81]", -INFINITY, INFINITY, 0);
-    o[i++] = OPT_D("skin", &m->lp.skin, "S", "contact-list skin, m [0.1]", -INFINITY, INFINITY, 0);
-    o[i++] = OPT_S("mass-law", &m->mass_law, "LAW", "disc (unit thickness) or sphere [disc; impacts: the sample's]");
-    o[i++] = OPT_S("clump-mass", &m->clump_mass, "HOW", "clump mass: sum (members added, overlaps twice, as PFC2D) "
-                   "or union (density x the union's area; disc law) [sum; impacts: the sample's]");
+    /* the rows of layer_setup_rows.h, in both commands' tables */
+    row_opt(t, "friction", &m->lp.friction_deg, &o[i++]);
+    row_opt(t, "shear-modulus", &m->lp.shear_modulus, &o[i++]);
+    row_opt(t, "poisson", &m->lp.poisson, &o[i++]);
+    row_opt(t, "density", &m->lp.density, &o[i++]);
+    row_opt(t, "gravity", &m->lp.gravity, &o[i++]);
+    row_opt(t, "skin", &m->lp.skin, &o[i++]);
+    row_opt(t, "mass-law", &m->mass_law, &o[i++]);
+    row_opt(t, "clump-mass", &m->clump_mass, &o[i++]);
     return i;
 }
 
 int layer_mat_resolve(layer_mat_cli *m, gw_err *err)
 {
-    if (strcmp(m->mass_law, "disc") == 0)
+    /* not given (layer-impact): the sample's, set by layer_impact_use_sample */
+    if (!m->mass_law || strcmp(m->mass_law, "disc") == 0)
         m->lp.mass_law = GW_LAYER_MASS_DISC;
     else if (strcmp(m->mass_law, "sphere") == 0)
         m->lp.mass_law = GW_LAYER_MASS_SPHERE;
     else
         return gw_err_set(err, GW_EINVAL, "--mass-law: unknown '%s' (disc, sphere)", m->mass_law);
-    if ((m->lp.clump_mass = gw_layer_clump_mass_parse(m->clump_mass)) < 0)
+    if ((m->lp.clump_mass = m->clump_mass ? gw_layer_clump_mass_parse(m->clump_mass) : GW_LAYER_CLUMP_MASS_SUM) < 0)
         return gw_err_set(err, GW_EINVAL, "--clump-mass: unknown '%s' (sum, union)", m->clump_mass);
     int rc = gw_layer_params_validate(&m->lp, err);
     if (rc == GW_OK || !err)
@@ -66,42 +83,64 @@ int layer_mat_resolve(layer_mat_cli *m, gw_err *err)
 
 int layer_impact_options(layer_impact_cli *c, gw_opt *o)
 {
+    const gw_param *t = gw_layer_impact_setup_params();
     memset(c, 0, sizeof *c);
-    int i = layer_mat_options(&c->m, o);
-    c->ip = gw_layer_impact_params_default();
-    c->solver = NULL; /* verlet, or rk4 with --exact */
-    c->method = "default";
-    c->dt = 0; /* auto */
-    c->rtol = 1e-8;
-    c->atol = 1e-8;
-    c->rings = c->ip.nrings;
-    c->until = gw_layer_until_name(c->ip.until);
-    /* physical ranges are checked by gw_layer_impact_check (messages name the
-     * quantity); the table only bounds the solver settings. An option added here must also
-     * raise LAYER_IMPACT_NOPTS (layer_cli.h): callers size their tables by it. */
-    o[i++] = OPT_S("sample", &c->sample, "FILE", "sample written by layer-make (required)");
-    o[i++] = OPT_D("rb-rm", &c->ip.rb_rm, "R", "block radius in R_m [1]", -INFINITY, INFINITY, 0);
-    o[i++] = OPT_D("vi", &c->ip.vi, "V", "incident speed, m/s [20]", -INFINITY, INFINITY, 0);
-    o[i++] = OPT_D("alpha", &c->ip.alpha_deg, "DEG", "incidence from the normal, deg in [0, 90) [0]", -INFINITY, INFINITY, 0);
-    o[i++] = OPT_D("x", &c->ip.x, "X", "impact abscissa from the box centre, m [0]", -INFINITY, INFINITY, 0);
-    o[i++] = OPT_D("height-rm", &c->ip.height_rm, "H", "mobile layer height in R_m; deeper particles frozen [0 = all]", -INFINITY, INFINITY, 0);
-    o[i++] = OPT_D("gap", &c->ip.gap, "G", "initial block-target gap, m [1e-6]; < 0 = overlapping (refused)", -INFINITY, INFINITY, 0);
-    o[i++] = OPT_D("t-max", &c->ip.t_max, "T", "end of the run, s [0.05]", -INFINITY, INFINITY, 0);
-    o[i++] = OPT_D("dt-out", &c->ip.dt_out, "DT", "sampling interval, s [2e-5]", -INFINITY, INFINITY, 0);
-    o[i++] = OPT_D("ring-width", &c->ip.ring_width, "DC", "crown width d_c, m [2 R_m]", -INFINITY, INFINITY, 0);
-    o[i++] = OPT_L("rings", &c->rings, "N", "number of crowns [12]", 1, 1000);
-    o[i++] = OPT_S("solver", &c->solver, "NAME", "verlet (explicit DEM, no located events), rk4, cvode or arkode [verlet; rk4 with --exact]");
-    o[i++] = OPT_S("method", &c->method, "NAME", "cvode: bdf|adams; arkode: erk|dirk [default]");
-    o[i++] = OPT_D("dt", &c->dt, "DT", "fixed step of verlet or rk4, s [0 = auto: verlet the shortest binary contact time / 100, rk4 1e-6]", 0, 1, 1);
-    o[i++] = (gw_opt){.name = "exact", .kind = GW_OPT_FLAG, .dest = &c->exact, .help = "exact mode: RK4 (or --solver cvode|arkode) stopping at every contact and stick/slip transition, dt 1e-6 s; the reference the fast default is tested against"};
-    o[i++] = OPT_D("rtol", &c->rtol, "R", "relative tolerance of cvode/arkode [1e-8]", 0, 1, 1);
-    o[i++] = OPT_D("atol", &c->atol, "A", "absolute tolerance (scaled per component) [1e-8]", 0, 1, 1);
-    o[i++] = OPT_D("energy-tol", &c->ip.energy_tol, "E", "stop (exit 1) when the ledger closure |sum - A|/A exceeds E [0 = off]", -INFINITY, INFINITY, 0);
-    o[i++] = (gw_opt){.name = "remove-walls", .kind = GW_OPT_FLAG, .dest = &c->ip.remove_walls, .help = "take the left, right and bottom walls away at the start of the impact"};
-    o[i++] = (gw_opt){.name = "full", .kind = GW_OPT_FLAG, .dest = &c->ip.full, .help = "run to t-max even after the outcome is decided (for the crowns)"};
-    o[i++] = OPT_S("until", &c->until, "WHAT", "rebound: run until the rebound is complete (T_f: the block's normal velocity back to "
-                   "zero after it left, physics.md 2.3) or the block is found not to bounce; verdict: stop at the bounce "
-                   "verdict (e_n, e, alpha_r then null; the _first values given) [rebound]");
+    int i = layer_mat_options(t, &c->m, o);
+    c->ip = gw_layer_impact_params_default(); /* the fields the table does not set */
+    /* the rows of the library's table (layer_setup.c), in the order of --help;
+     * the physical ranges are the rows', so that the command, a sweep case and
+     * the library refuse the same values with the same message. An option added
+     * here must also raise LAYER_IMPACT_NOPTS (layer_cli.h): callers size their
+     * tables by it. */
+    row_opt(t, "sample", &c->sample, &o[i++]);
+    row_opt(t, "rb-rm", &c->ip.rb_rm, &o[i++]);
+    row_opt(t, "vi", &c->ip.vi, &o[i++]);
+    row_opt(t, "alpha", &c->ip.alpha_deg, &o[i++]);
+    row_opt(t, "x", &c->ip.x, &o[i++]);
+    row_opt(t, "height-rm", &c->ip.height_rm, &o[i++]);
+    row_opt(t, "gap", &c->ip.gap, &o[i++]);
+    row_opt(t, "t-max", &c->ip.t_max, &o[i++]);
+    row_opt(t, "dt-out", &c->ip.dt_out, &o[i++]);
+    row_opt(t, "ring-width", &c->ip.ring_width, &o[i++]);
+    row_opt(t, "rings", &c->rings, &o[i++]);
+    row_opt(t, "solver", &c->solver, &o[i++]); /* not given: verlet, or rk4 with --exact */
+    row_opt(t, "method", &c->method, &o[i++]);
+    row_opt(t, "dt", &c->dt, &o[i++]);
+    row_opt(t, "exact", &c->exact, &o[i++]);
+    row_opt(t, "rtol", &c->rtol, &o[i++]);
+    row_opt(t, "atol", &c->atol, &o[i++]);
+    row_opt(t, "energy-tol", &c->ip.energy_tol, &o[i++]);
+    row_opt(t, "remove-walls", &c->ip.remove_walls, &o[i++]);
+    row_opt(t, "full", &c->ip.full, &o[i++]);
+    row_opt(t, "until", &c->until, &o[i++]);
+    return i;
+}
+
+int layer_make_options(layer_make_cli *c, gw_opt *o)
+{
+    const gw_param *t = gw_layer_make_setup_params();
+    memset(c, 0, sizeof *c);
+    int i = layer_mat_options(t, &c->m, o);
+    c->mp = gw_layer_make_params_default(); /* the fields the table does not set */
+    /* the final overlap check is O(n^2): 1e5 particles take seconds there (and
+     * days of pluviation before): the table's n is at most 1e5 */
+    row_opt(t, "n", &c->n, &o[i++]);
+    row_opt(t, "rm", &c->mp.rm, &o[i++]);
+    row_opt(t, "volume-ratio", &c->mp.volume_ratio, &o[i++]);
+    row_opt(t, "width-rm", &c->mp.width_rm, &o[i++]);
+    row_opt(t, "seed", &c->seed, &o[i++]);
+    row_opt(t, "ke-threshold", &c->mp.ke_threshold, &o[i++]);
+    row_opt(t, "t-max", &c->mp.t_max, &o[i++]);
+    row_opt(t, "damping", &c->mp.damping, &o[i++]);
+    row_opt(t, "modulus-factor", &c->mp.modulus_factor, &o[i++]);
+    row_opt(t, "dt", &c->mp.dt, &o[i++]);
+    row_opt(t, "solver", &c->solver, &o[i++]);
+    row_opt(t, "height-rm", &c->mp.height_rm, &o[i++]);
+    row_opt(t, "clumps", &c->mp.clumps, &o[i++]);
+    row_opt(t, "aspect-max", &c->mp.aspect_max, &o[i++]);
+    row_opt(t, "out", &c->out, &o[i++]);
+    o[i - 1].help = "sample file to write (required)"; /* the library's is optional */
+    o[i++] = (gw_opt){.name = "json", .kind = GW_OPT_FLAG, .dest = &c->json, .help = "print the result as JSON"};
     return i;
 }
 

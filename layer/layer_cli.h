@@ -9,6 +9,7 @@
 
 #include "gw_cli.h"
 #include "gw_layer.h"
+#include "gw_layer_study.h"
 #include "layer_commands.h"
 
 #define OPT_D(nm, dst, mv, hl, lo_, hi_, open_)                                          \
@@ -30,9 +31,15 @@ typedef struct layer_mat_cli {
 /* Number of options layer_mat_options writes. */
 #define LAYER_MAT_NOPTS 8
 
-/* Fill defaults into m and write the material options into o[0 .. LAYER_MAT_NOPTS);
- * returns LAYER_MAT_NOPTS. */
-int layer_mat_options(layer_mat_cli *m, gw_opt *o);
+/* Write the material options into o[0 .. LAYER_MAT_NOPTS) from the material
+ * rows of table t (layer_setup_rows.h: the impact's or the pluviation's
+ * table), their defaults into m; returns LAYER_MAT_NOPTS. mass_law and
+ * clump_mass stay NULL when the table has no default (impacts: the sample's). */
+int layer_mat_options(const gw_param *t, layer_mat_cli *m, gw_opt *o);
+
+/* GW_OK when every option of o (ended by {0}) came from a table row; GW_EINVAL
+ * naming the option otherwise (a bug: a name missing from the table). */
+int layer_opts_ok(const gw_opt *o, gw_err *err);
 
 /* Mass law and clump mass names into m->lp, then gw_layer_params_validate. GW_EINVAL
  * with a message naming the option. */
@@ -55,11 +62,30 @@ typedef struct layer_impact_cli {
 /* Number of options layer_impact_options writes (materials included). */
 #define LAYER_IMPACT_NOPTS (LAYER_MAT_NOPTS + 21)
 
-/* Zero c, fill the defaults and write the impact option table (materials,
- * sample, block, run, solver, flags remove-walls and full) into
+/* Zero c, fill the defaults and write the impact option table (the rows of
+ * gw_layer_impact_setup_params: materials, sample, block, run, solver, flags
+ * remove-walls and full, until) into
  * o[0 .. LAYER_IMPACT_NOPTS); returns LAYER_IMPACT_NOPTS. The caller appends
  * its own options and the {0} terminator. String options point into argv. */
 int layer_impact_options(layer_impact_cli *c, gw_opt *o);
+
+/* The options of one pluviation (layer-make). */
+typedef struct layer_make_cli {
+    layer_mat_cli m;
+    gw_layer_make_params mp;
+    long n, seed;
+    const char *out, *solver;
+    int json;
+} layer_make_cli;
+
+/* Number of options layer_make_options writes (materials, --out and --json
+ * included). */
+#define LAYER_MAKE_NOPTS (LAYER_MAT_NOPTS + 16)
+
+/* Zero c, fill the defaults and write layer-make's option table (the rows of
+ * gw_layer_make_setup_params, --json) into o[0 .. LAYER_MAKE_NOPTS); returns
+ * LAYER_MAKE_NOPTS. */
+int layer_make_options(layer_make_cli *c, gw_opt *o);
 
 /* After parsing: rings, materials, solver and method into c->type and c->sp;
  * a sample path is required. GW_EINVAL with a message naming the option; c is

@@ -12,6 +12,8 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include "gw_cli.h"
 #include "layer_cli.h"
@@ -109,44 +111,29 @@ static cJSON *make_settings(const gw_layer_make_params *mp, const gw_layer_param
 
 int gw_cmd_layer_make(int argc, char **argv)
 {
-    layer_mat_cli m;
-    gw_opt o[32];
-    int i = layer_mat_options(&m, o);
-    gw_layer_make_params mp = gw_layer_make_params_default();
-    long n = mp.n, seed = mp.seed;
-    const char *out = NULL, *solver = "rk4";
-    int json = 0;
-    /* the final overlap check is O(n^2): 1e5 particles take seconds there (and
-     * days of pluviation before) */
-    o[i++] = OPT_L("n", &n, "N", "number of particles, 1 .. 100000 [300]", 1, 100000);
-    o[i++] = OPT_D("rm", &mp.rm, "R", "mean particle radius R_m, m in [1e-5, 1e3] [0.325]", 1e-5, 1e3, 0);
-    o[i++] = OPT_D("volume-ratio", &mp.volume_ratio, "V", "largest/smallest particle volume [10]", 1, 1e6, 0);
-    o[i++] = OPT_D("width-rm", &mp.width_rm, "W", "box width in R_m [50]", 0, 1e6, 1);
-    o[i++] = OPT_L("seed", &seed, "S", "random seed [1]", 0, 9000000000000000000.0);
-    o[i++] = OPT_D("ke-threshold", &mp.ke_threshold, "E", "stop when E_k < E * M g R_m [1e-5]", 0, 1, 1);
-    o[i++] = OPT_D("t-max", &mp.t_max, "T", "give up after T s simulated [6]", 0, 1e4, 1);
-    o[i++] = OPT_D("damping", &mp.damping, "A", "Hunt-Crossley alpha while settling, s/m [0.3]", 0, 1e3, 0);
-    o[i++] = OPT_D("modulus-factor", &mp.modulus_factor, "F", "settle with F*G then relax with G [1]", 0, 1, 1);
-    o[i++] = OPT_D("dt", &mp.dt, "DT", "fixed step, s [2e-5]", 0, 1, 1);
-    o[i++] = OPT_S("solver", &solver, "NAME", "rk4 or verlet (explicit DEM); contact events are not located while settling [rk4]");
-    o[i++] = OPT_D("height-rm", &mp.height_rm, "H", "keep the particles wholly below H R_m after settling [0 = all]", 0, 1e6, 0);
-    o[i++] = (gw_opt){.name = "clumps", .kind = GW_OPT_FLAG, .dest = &mp.clumps,
-                      .help = "type B soil: n rigid clumps (aspect ratio 1-4) instead of n discs"};
-    o[i++] = OPT_D("aspect-max", &mp.aspect_max, "A", "clumps: aspect ratio uniform in [1, A], A in [1, 4] [4]", 1, 4, 0);
-    o[i++] = OPT_S("out", &out, "FILE", "sample file to write (required)");
-    o[i++] = (gw_opt){.name = "json", .kind = GW_OPT_FLAG, .dest = &json, .help = "print the result as JSON"};
+    layer_make_cli c;
+    gw_opt o[LAYER_MAKE_NOPTS + 1];
+    int i = layer_make_options(&c, o); /* the rows of the library's table (layer_make_study.c) */
     o[i] = (gw_opt){0};
+    layer_mat_cli m;
+    gw_layer_make_params mp;
+    const char *out, *solver;
     gw_err err = {{0}};
     int help = 0, npos = 0;
     const char *pos[1];
-    if (gw_cli_parse("layer-make", o, argc, argv, &help, pos, 0, &npos, &err) != GW_OK)
+    if (layer_opts_ok(o, &err) != GW_OK || gw_cli_parse("layer-make", o, argc, argv, &help, pos, 0, &npos, &err) != GW_OK)
         return fail("layer-make", err.msg);
     if (help) {
         gw_cli_help(stdout, "layer-make", "granwave layer-make --out FILE [options]", make_summary, o);
         return 0;
     }
-    if (layer_mat_resolve(&m, &err) != GW_OK)
+    if (layer_mat_resolve(&c.m, &err) != GW_OK)
         return fail("layer-make", err.msg);
+    m = c.m;
+    mp = c.mp;
+    out = c.out;
+    solver = c.solver;
+    const int json = c.json;
     if (!out)
         return fail("layer-make", "--out: the sample file to write is required");
     if (gw_layer_sample_format_check(out, &err) != GW_OK) /* no HDF5 in this build: refuse before the run */
@@ -161,8 +148,8 @@ int gw_cmd_layer_make(int argc, char **argv)
     mp.solver = gw_solver_type_find(solver);
     if (mp.solver != gw_solver_verlet && mp.solver != gw_solver_rk4)
         return fail("layer-make", "--solver: pluviation takes verlet or rk4");
-    mp.n = (int)n;
-    mp.seed = seed;
+    mp.n = (int)c.n;
+    mp.seed = c.seed;
     gw_layer_sample s;
     gw_layer_make_result r;
     int rc = gw_layer_make(&m.lp, &mp, &s, &r, &err);
@@ -477,18 +464,57 @@ static int write_csvs(const impact_cli *c, const gw_layer_impact_result *r, cons
 #endif
 }
 
+/* Into made: the shallowest directory of path (or path itself) that does not
+ * exist yet, "" when path exists. */
+static void first_missing(const char *path, char *made, size_t n)
+{
+    char p[4096];
+    struct stat st;
+    made[0] = '\0';
+    if (snprintf(p, sizeof p, "%s", path) >= (int)sizeof p)
+        return;
+    for (;;) {
+        if (stat(p, &st) == 0)
+            return;
+        snprintf(made, n, "%s", p);
+        char *sl = strrchr(p, '/');
+        while (sl && sl > p && sl[1] == '\0') { /* trailing slashes */
+            *sl = '\0';
+            sl = strrchr(p, '/');
+        }
+        if (!sl || sl == p)
+            return;
+        *sl = '\0';
+    }
+}
+
+/* Remove the empty directories from path up to made (what this run created). */
+static void unmake(const char *path, const char *made)
+{
+    char p[4096];
+    size_t lm = strlen(made);
+    if (snprintf(p, sizeof p, "%s", path) >= (int)sizeof p)
+        return;
+    while (strlen(p) >= lm && rmdir(p) == 0) {
+        char *sl = strrchr(p, '/');
+        if (!sl || strlen(p) == lm)
+            return;
+        *sl = '\0';
+    }
+}
+
 int gw_cmd_layer_impact(int argc, char **argv)
 {
     impact_cli c;
     gw_opt o[LAYER_IMPACT_NOPTS + 8];
-    int i = layer_impact_options(&c, o);
+    int i = layer_impact_options(&c, o); /* the rows of the library's table (layer_setup.c) */
     o[i++] = (gw_opt){.name = "json", .kind = GW_OPT_FLAG, .dest = &c.json, .help = "print the result as JSON"};
     o[i++] = OPT_S("out", &c.out, "DIR", "write ledger.csv, crowns.csv, crowns_peaks.csv, crowns_spectra.csv, impact.json, VTK (and impact.h5 with HDF5)");
     o[i] = (gw_opt){0};
     gw_err err = {{0}};
     int help = 0, npos = 0;
     const char *pos[1];
-    if (gw_cli_parse("layer-impact", o, argc, argv, &help, pos, 0, &npos, &err) != GW_OK)
+    if (layer_opts_ok(o, &err) != GW_OK || gw_cli_parse("layer-impact", o, argc, argv, &help, pos, 0, &npos, &err) != GW_OK)
         return fail("layer-impact", err.msg);
     if (help) {
         gw_cli_help(stdout, "layer-impact", "granwave layer-impact --sample FILE [options]", impact_summary, o);
@@ -505,13 +531,16 @@ int gw_cmd_layer_impact(int argc, char **argv)
         gw_layer_sample_free(&s);
         return fail("layer-impact", err.msg);
     }
-    if (c.out && gw_mkdir_p(c.out, &err) != GW_OK) {
+    char made[4096] = ""; /* the first directory of --out this run creates */
+    if (c.out && (first_missing(c.out, made, sizeof made), gw_mkdir_p(c.out, &err)) != GW_OK) {
         gw_layer_sample_free(&s);
         return fail("layer-impact", err.msg);
     }
     gw_layer_impact_result r;
     int rc = gw_layer_impact(&s, &c.m.lp, &c.ip, type, &sp, c.out, &r, &err);
     gw_layer_sample_free(&s);
+    if ((rc == GW_EINVAL || rc == GW_EUNSUPPORTED) && made[0])
+        unmake(c.out, made); /* a refused input leaves nothing behind */
     if (rc != GW_OK) {
         fprintf(stderr, "granwave layer-impact: %s\n", err.msg);
         return rc == GW_EINVAL || rc == GW_EUNSUPPORTED ? 2 : 1;

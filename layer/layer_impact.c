@@ -105,6 +105,14 @@ int gw_layer_impact_check(const gw_layer_sample *smp, const gw_layer_impact_para
         return gw_err_set(err, GW_EINVAL, "rings: %d is outside [1, 1000]", p->nrings);
     if (p->t_max / p->dt_out > 2e6)
         return gw_err_set(err, GW_EINVAL, "dt-out: %g s gives more than 2e6 samples up to t-max", p->dt_out);
+    /* the series are held in memory (alloc_series): time, ledger (8), block (4)
+     * and 4 per ring at each sample; refused before allocating above 2 GiB
+     * (12 rings: 488 B a sample, the 2e6 samples take 0.98 GB) */
+    const double bytes = (ceil(p->t_max / p->dt_out) + 2) * (13.0 + 4.0 * p->nrings) * sizeof(double);
+    if (bytes > 2147483648.0)
+        return gw_err_set(err, GW_EINVAL, "dt-out: %.0f samples x %d rings need %.3g GB of series, above the "
+                          "2.1 GB limit (raise dt-out, lower t-max or rings)", ceil(p->t_max / p->dt_out) + 2,
+                          p->nrings, bytes / 1e9);
     const double rb = p->rb_rm * smp->rm, xc = 0.5 * smp->width + p->x;
     if (2 * rb > smp->width)
         return gw_err_set(err, GW_EINVAL, "rb-rm: a block of radius %g R_m (%g m) is wider than the box "
@@ -266,6 +274,17 @@ int gw_layer_impact(const gw_layer_sample *smp, const gw_layer_params *lp0,
      * reported separately. */
     double t_open = NAN, ed_open = NAN;
     double t_min = NAN, ed_min = NAN, kb_min = INFINITY, edb_min = NAN;
+    gw_solver_params spu = *sp;
+    if (type == gw_solver_verlet && !(spu.dt > 0))
+        spu.dt = gw_layer_impact_dem_dt(smp, &lp, ip);
+    res->dt = type == gw_solver_verlet || type == gw_solver_rk4 ? spu.dt : 0;
+    /* a fixed step is bounded by the steps it takes to t-max, before anything
+     * is allocated: 1e9 steps are hours of CPU on 20 discs */
+    if (res->dt > 0 && ip->t_max / res->dt > 1e9) {
+        gw_layer_free(L);
+        return gw_err_set(err, GW_EINVAL, "dt: a step of %g s takes %.3g steps to t-max = %g s, more than 1e9 "
+                          "(raise dt or lower t-max)", res->dt, ip->t_max / res->dt, ip->t_max);
+    }
     int cap = (int)ceil(ip->t_max / ip->dt_out) + 2;
     double *strain0 = malloc((size_t)ip->nrings * 3 * sizeof *strain0);
     if (!strain0 || alloc_series(res, cap, ip->nrings) != GW_OK) {
@@ -277,10 +296,6 @@ int gw_layer_impact(const gw_layer_sample *smp, const gw_layer_params *lp0,
     for (int k = 0; k < ip->nrings; k++)
         res->ring_r[k] = (k + 0.5) * w;
     double t0 = gw_clock_ms();
-    gw_solver_params spu = *sp;
-    if (type == gw_solver_verlet && !(spu.dt > 0))
-        spu.dt = gw_layer_impact_dem_dt(smp, &lp, ip);
-    res->dt = type == gw_solver_verlet || type == gw_solver_rk4 ? spu.dt : 0;
     rc = gw_layer_start(L, type, &spu, err);
     if (rc == GW_OK) {
         gw_layer_rings(L, res->impact_x, res->impact_y, w, ip->nrings, strain0 + ip->nrings,

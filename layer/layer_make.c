@@ -81,6 +81,9 @@ static int check_make(const gw_layer_make_params *m, gw_err *err)
               : gw_err_set(err, GW_EINVAL, "solver: pluviation takes verlet or rk4")) != GW_OK ||
         (rc = gw_check_range(m->aspect_max, "aspect-max", 1, 4, err)) != GW_OK)
         return rc;
+    if (m->t_max / m->dt > 1e9) /* a bound on the steps before anything is allocated */
+        return gw_err_set(err, GW_EINVAL, "dt: a step of %g s takes %.3g steps to t-max = %g s, more than 1e9 "
+                          "(raise dt or lower t-max)", m->dt, m->t_max / m->dt, m->t_max);
     double rmax = m->rm * 2 * cbrt(m->volume_ratio) / (1 + cbrt(m->volume_ratio));
     if (m->width_rm * m->rm < 2.2 * rmax)
         return gw_err_set(err, GW_EINVAL, "width-rm: %g R_m is narrower than one particle", m->width_rm);

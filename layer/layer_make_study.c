@@ -23,7 +23,7 @@
 /* the ranges of `granwave layer-make` (the final overlap check is O(n^2): 1e5
  * particles take seconds there, and days of pluviation before) */
 static const gw_param make_params[] = {
-    GW_LAYER_MATERIAL_ROWS("disc", "sum", "[disc]")
+    GW_LAYER_MATERIAL_ROWS("disc", "sum", "[disc]", "[sum]")
     ROW("n", GW_PARAM_LONG, n, "", 1, 100000, 0, 0, "300", "N", "number of particles, 1 .. 100000 [300]"),
     ROW("rm", GW_PARAM_DOUBLE, rm, "m", 1e-5, 1e3, 0, 0, "0.325", "R", "mean particle radius R_m, m in [1e-5, 1e3] [0.325]"),
     ROW("volume-ratio", GW_PARAM_DOUBLE, volume_ratio, "", 1, 1e6, 0, 0, "10", "V", "largest/smallest particle volume [10]"),

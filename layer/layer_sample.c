@@ -140,7 +140,18 @@ int gw_layer_sample_format_check(const char *path, gw_err *err)
                           "(GW_WITH_HDF5=ON and libhdf5); give a text name such as sample.txt", path);
     /* the place the sample goes, before the run: a FIFO, device or directory of
      * that name, or a missing or read-only directory, is refused */
-    return gw_out_file_check(path, "sample", err);
+    int rc = gw_out_file_check(path, "sample", err);
+    if (rc != GW_OK)
+        return rc;
+    /* and a directory that refuses new files whatever its mode says (root in
+     * /proc, a read-only mount): the temporary file of the atomic write is
+     * made and removed at once, before hours of pluviation */
+    gw_afile f;
+    gw_err e = {{0}};
+    if (gw_afile_open(&f, path, &e) != GW_OK)
+        return gw_err_set(err, GW_EINVAL, "sample '%s': cannot be written there (%s)", path, e.msg);
+    gw_afile_abort(&f);
+    return GW_OK;
 }
 
 /* ------------------------------------------------------------- text ---- */

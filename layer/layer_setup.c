@@ -13,6 +13,8 @@
 
 #include "layer_setup_rows.h"
 
+_Static_assert(GW_LAYER_UNTIL_REBOUND == 0 && GW_LAYER_UNTIL_VERDICT == 1, "until choices rebound,verdict");
+
 #define OFF(f) offsetof(gw_layer_impact_setup, f)
 #define ROW(nm, ty, f, un, lo, hi, op, opx, df, mv, hl)                                           \
     {.name = nm, .type = ty, .offset = OFF(f), .unit = un, .min = lo, .max = hi, .open_min = op,    \
@@ -27,16 +29,20 @@
 static const gw_param impact_params[] = {
     {.name = "sample", .type = GW_PARAM_TEXT, .offset = OFF(sample), .unit = "", .metavar = "FILE",
      .help = "sample written by layer-make (required)"},
-    GW_LAYER_MATERIAL_ROWS(NULL, NULL, "[the sample's]")
+    GW_LAYER_MATERIAL_ROWS(NULL, NULL, "[the sample's]", "[the sample's]")
     ROW("rb-rm", GW_PARAM_DOUBLE, rb_rm, "", 0, 1e6, 1, 0, "1", "R", "block radius in R_m [1]"),
     ROW("vi", GW_PARAM_DOUBLE, vi, "m/s", 0, 1e3, 1, 0, "20", "V", "incident speed, m/s [20]"),
     ROW("alpha", GW_PARAM_DOUBLE, alpha, "deg", 0, 90, 0, 1, "0", "DEG", "incidence from the normal, deg in [0, 90) [0]"),
     ROW("x", GW_PARAM_DOUBLE, x, "m", -1e6, 1e6, 0, 0, "0", "X", "impact abscissa from the box centre, m [0]"),
     ROW("height-rm", GW_PARAM_DOUBLE, height_rm, "", 0, 1e6, 0, 0, "0", "H",
         "mobile layer height in R_m; deeper particles frozen [0 = all]"),
-    ROW("gap", GW_PARAM_DOUBLE, gap, "m", 0, 1e3, 0, 0, "1e-6", "G", "initial block-target gap, m [1e-6]"),
-    ROW("t-max", GW_PARAM_DOUBLE, t_max, "s", 0, INFINITY, 1, 0, "0.05", "T", "end of the run, s [0.05]"),
-    ROW("dt-out", GW_PARAM_DOUBLE, dt_out, "s", 0, INFINITY, 1, 0, "2e-5", "DT", "sampling interval, s [2e-5]"),
+    ROW("gap", GW_PARAM_DOUBLE, gap, "m", 0, 1e3, 0, 0, "1e-6", "G",
+        "initial block-target gap, m in [0, 1000] (< 0 would overlap the layer) [1e-6]"),
+    /* an impact lasts milliseconds: 1000 s bounds a block that falls 1000 m
+     * (gap) at the smallest speed, and a run's steps with it */
+    ROW("t-max", GW_PARAM_DOUBLE, t_max, "s", 0, 1e3, 1, 0, "0.05", "T", "end of the run, s in (0, 1000] [0.05]"),
+    ROW("dt-out", GW_PARAM_DOUBLE, dt_out, "s", 0, 1e3, 1, 0, "2e-5", "DT",
+        "sampling interval, s (at most 2e6 samples up to t-max) [2e-5]"),
     ROW("ring-width", GW_PARAM_DOUBLE, ring_width, "m", 0, 1e6, 0, 0, "0", "DC", "crown width d_c, m [0 = 2 R_m]"),
     ROW("rings", GW_PARAM_LONG, rings, "", 1, 1000, 0, 0, "12", "N", "number of crowns [12]"),
     CHOICE("solver", solver, "verlet,rk4,cvode,arkode", NULL, "NAME",
@@ -44,7 +50,7 @@ static const gw_param impact_params[] = {
     CHOICE("method", method, "default,bdf,adams,erk,dirk,imex", "default", "NAME",
            "cvode: bdf|adams; arkode: erk|dirk [default]"),
     ROW("dt", GW_PARAM_DOUBLE, dt, "s", 0, 1, 0, 0, "0", "DT",
-        "fixed step of verlet or rk4, s [0 = auto: verlet the shortest binary contact time / 200, rk4 1e-6]"),
+        "fixed step of verlet or rk4, s [0 = auto: verlet the shortest binary contact time / 100, rk4 1e-6]"),
     FLAG("exact", exact, "exact mode: RK4 (or solver cvode|arkode) stopping at every contact and stick/slip "
                          "transition, dt 1e-6 s; the reference the fast default is tested against"),
     ROW("rtol", GW_PARAM_DOUBLE, rtol, "", GW_TOL_MIN, GW_TOL_MAX, 0, 0, "1e-8", "R",
@@ -52,9 +58,13 @@ static const gw_param impact_params[] = {
     ROW("atol", GW_PARAM_DOUBLE, atol, "", GW_TOL_MIN, GW_TOL_MAX, 0, 0, "1e-8", "A",
         "absolute tolerance (scaled per component) [1e-8]"),
     ROW("energy-tol", GW_PARAM_DOUBLE, energy_tol, "", 0, 1, 0, 0, "0", "E",
-        "stop when the ledger closure |sum - A|/A exceeds E [0 = off]"),
+        "stop (an error; the command exits 1) when the ledger closure |sum - A|/A exceeds E [0 = off]"),
     FLAG("remove-walls", remove_walls, "take the left, right and bottom walls away at the start of the impact"),
-    FLAG("full", full, "run to t-max even after the block has left (for the crowns)"),
+    FLAG("full", full, "run to t-max even after the outcome is decided (for the crowns)"),
+    CHOICE("until", until, "rebound,verdict", "rebound", "WHAT",
+           "rebound: run until the rebound is complete (T_f: the block's normal velocity back to zero after it "
+           "left, physics.md 2.3) or the block is found not to bounce; verdict: stop at the bounce verdict (e_n, "
+           "e, alpha_r then null; the _first values given) [rebound]"),
     GW_PARAM_END};
 
 const gw_param *gw_layer_impact_setup_params(void)
@@ -205,6 +215,9 @@ static int resolve(const gw_layer_impact_setup *s, const gw_layer_sample *smp, g
     ip->energy_tol = s->energy_tol;
     ip->remove_walls = s->remove_walls;
     ip->full = s->full;
+    ip->until = s->until;
+    if (ip->full && ip->until == GW_LAYER_UNTIL_VERDICT)
+        return gw_err_set(err, GW_EINVAL, "until: verdict has no effect with full (which runs to t-max)");
     return gw_layer_impact_check(smp, ip, err);
 }
 

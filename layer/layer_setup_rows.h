@@ -15,17 +15,17 @@ _Static_assert(GW_LAYER_MASS_DISC == 0 && GW_LAYER_MASS_SPHERE == 1, "mass-law c
 _Static_assert(GW_LAYER_CLUMP_MASS_SUM == 0 && GW_LAYER_CLUMP_MASS_UNION == 1, "clump-mass choices sum,union");
 
 /* LAW, CLUMP: the defaults of mass-law and clump-mass (NULL: not given);
- * WHOSE: the end of their help, "[disc]" or "[the sample's]" */
-#define GW_LAYER_MATERIAL_ROWS(LAW, CLUMP, WHOSE) \
+ * WLAW, WCLUMP: the end of their help, "[disc]", "[sum]" or "[the sample's]" */
+#define GW_LAYER_MATERIAL_ROWS(LAW, CLUMP, WLAW, WCLUMP) \
     ROW("friction", GW_PARAM_DOUBLE, friction, "deg", 0, 90, 0, 1, "30", "PHI", "friction angle phi, deg in [0, 90) [30]"), \
     ROW("shear-modulus", GW_PARAM_DOUBLE, shear_modulus, "Pa", 1e-3, 1e15, 0, 0, "40e9", "G", "shear modulus, Pa [40e9]"), \
     ROW("poisson", GW_PARAM_DOUBLE, poisson, "", 0, 0.499999, 0, 0, "0.25", "NU", "Poisson ratio [0.25]"), \
     ROW("density", GW_PARAM_DOUBLE, density, "kg/m^3", 1e-6, 1e6, 0, 0, "2650", "RHO", "particle density, kg/m^3 [2650]"), \
     ROW("gravity", GW_PARAM_DOUBLE, gravity, "m/s^2", 0, 1e4, 0, 0, "9.81", "G", "gravity, m/s^2 [9.81]"), \
-    ROW("skin", GW_PARAM_DOUBLE, skin, "m", 0, INFINITY, 1, 0, "0.1", "S", "contact-list skin, m [0.1]"), \
-    CHOICE("mass-law", mass_law, "disc,sphere", LAW, "LAW", "disc (unit thickness) or sphere " WHOSE), \
+    ROW("skin", GW_PARAM_DOUBLE, skin, "m", 0, 1e6, 1, 0, "0.1", "S", "contact-list skin, m in (0, 1e6] [0.1]"), \
+    CHOICE("mass-law", mass_law, "disc,sphere", LAW, "LAW", "disc (unit thickness) or sphere " WLAW), \
     CHOICE("clump-mass", clump_mass, "sum,union", CLUMP, "HOW", \
            "clump mass: sum (members added, overlaps twice, as PFC2D) or union (density x the union's area; " \
-           "disc law) " WHOSE),
+           "disc law) " WCLUMP),
 
 #endif

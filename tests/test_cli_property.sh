@@ -8,12 +8,12 @@
 # file, directory, model, kind, law, list or "how": R, K, V,V.., A:B, N, ...), and
 # each is given, on top of a short valid run of that command (small n, short
 # t-max), each of the values
-#     nan  inf  -inf  -1  0  1e-308  1e308  99999999999999999999  junk
+#     nan  inf  -inf  -1  0  1e-308  1e308  99999999999999999999  junk  ""
 # What is asserted for each case, run under `timeout` (20 s) and, outside the
 # sanitizer build, a memory limit (ulimit -v 4 GiB):
 #   - it ends (no hang: timeout kills it and the case fails) and does not crash
 #     (exit code 0, 1 or 2 only; no signal);
-#   - nan, inf, -inf and junk are refused: exit 2; so is 99999999999999999999
+#   - nan, inf, -inf, junk and the empty value are refused: exit 2; so is 99999999999999999999
 #     for an integer flag (A:B lists and ranges too);
 #   - exit 0 only where the value is legitimate for that flag, decided per value
 #     class: -1 only for the flags listed in NEG_OK (signed quantities),
@@ -28,22 +28,38 @@
 #     runs again in the sanitizer build, see setup.sh).
 # KNOWN lists cases that fail because of code another change owns (layer CLI and
 # layer model files); each is printed as KNOWN, not counted, and listed in the
-# hardening report with the fix. Total: ~1260 cases, one background job per
-# command: about 1.5 min (a few in the sanitizer build).
+# hardening report with the fix. Total: ~2060 cases, two commands at a time:
+# about 2 min in the release build (a few in the sanitizer build).
+#
+#
+# The commands with a parameter table (layer-make, layer-impact) are driven by
+# their table instead of their --help (third argument: the gw_param_rows
+# program, which prints each study's rows): every number row (double, long) is
+# a flag, tried with the values above plus the two numbers just outside its
+# range (an open end itself, a closed end moved by 1e-9 of its size, an
+# integer end by 1); a number inside the row's range may exit 0, 1 or 2, one
+# outside it must exit 2 naming the flag: no hand list decides. The table's
+# input rows and the command's --help must also list the same flags (json,
+# out and help aside).
 #
 # A longer run: GW_PROPERTY_VALUES="nan inf ... 1e-3 1e3 5e-324" overrides the
 # value list; GW_PROPERTY_CMDS="chain falcon" restricts the commands.
 set -u
 GW=$1
 SRC=${2:-.}
+ROWS=${3:-}
+[ -n "$ROWS" ] && [ -x "$ROWS" ] || { [ -n "$ROWS" ] && echo "NOTE: $ROWS is not a program: flags from --help only"; ROWS=""; }
+TABLE_CMDS=" layer-make layer-impact "
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 fails=0; passes=0; known=0
 ko() { echo "FAIL: $1"; fails=$((fails+1)); }
 
-VALUES=${GW_PROPERTY_VALUES:-"nan inf -inf -1 0 1e-308 1e308 99999999999999999999 junk"}
+VALUES=${GW_PROPERTY_VALUES:-"nan inf -inf -1 0 1e-308 1e308 99999999999999999999 junk @empty"}
 CMDS=${GW_PROPERTY_CMDS:-"chain falcon wavespeed softwall dispersion drop sweep layer-make layer-impact layer-stats"}
 
-# flag classes (command:flag or *:flag)
+# flag classes (command:flag or *:flag) of the commands without a table (a
+# table command's rows decide by their ranges; the layer entries below are
+# used only when gw_param_rows is not given)
 NEG_OK=" layer-impact:x layer-impact:gap "          # signed: x is an abscissa; gap < 0 is refused by the model (2)
 ZERO_OK=" *:poisson layer-make:damping layer-impact:ring-width *:gravity *:gamma *:alpha *:dt *:dt-max *:t-max *:dt-out *:energy-tol *:jobs *:seed
           layer-stats:delta-rm layer-impact:x layer-impact:alpha layer-make:height-rm dispersion:column-n
@@ -89,9 +105,41 @@ base_args() { # cmd outdir -> the short valid run of cmd
     esac
 }
 
-numeric_flags() { # cmd -> "flag metavar" lines
+table_cmd() { [ -n "$ROWS" ] && case "$TABLE_CMDS" in *" $1 "*) return 0;; esac; return 1; }
+
+# cmd -> "flag metavar min max open_min open_max below above" lines; for a
+# command without a table the range fields are "-"
+numeric_flags() {
+    if table_cmd "$1"; then
+        "$ROWS" "$1" | awk '$3 == "double" || $3 == "long" || $3 == "int" {print $2, "@row", $4, $5, $6, $7, $8, $9}'
+        return
+    fi
     "$GW" "$1" --help | awk '/^  --/ {print $1, $2}' |
-        awk '$2 ~ /^[A-Z][A-Z0-9:,.]*$/ && $2 !~ /^(NAME|DIR|FILE|MODEL|KIND|LAW|HOW|LIST)$/ {sub(/^--/, "", $1); print $1, $2}'
+        awk '$2 ~ /^[A-Z][A-Z0-9:,.]*$/ && $2 !~ /^(NAME|DIR|FILE|MODEL|KIND|LAW|HOW|LIST)$/ {sub(/^--/, "", $1); print $1, $2, "- - - - - -"}'
+}
+
+# in_range VALUE MIN MAX OPEN_MIN OPEN_MAX: 0 when VALUE is a decimal number
+# inside the row's range, 1 outside, 2 when it is no decimal number (hex "0x10"
+# is a number to strtod: such a value is judged by its class only)
+in_range() {
+    awk -v v="$1" -v lo="$2" -v hi="$3" -v olo="$4" -v ohi="$5" 'BEGIN {
+        if (v !~ /^[-+]?([0-9]+[.]?[0-9]*|[.][0-9]+)([eE][-+]?[0-9]+)?$/) exit 2
+        x = v + 0; l = (lo == "-inf") ? -1e308 * 10 : lo + 0; h = (hi == "inf") ? 1e308 * 10 : hi + 0
+        if (x < l || x > h || (olo == 1 && x <= l) || (ohi == 1 && x >= h)) exit 1
+        exit 0 }'
+}
+
+# the table's input rows and the --help flags are the same set (json, out aside)
+same_flags() { # cmd
+    local a b
+    a=$("$ROWS" "$1" | awk '{print $2}' | grep -vxE 'out|json' | sort)
+    b=$("$GW" "$1" --help | awk '/^  --/ {sub(/^--/, "", $1); print $1}' | grep -vxE 'out|json|help' | sort)
+    if [ "$a" = "$b" ]; then
+        echo "PASS: $1: the --help flags are the table's rows ($(echo "$a" | wc -l))"
+    else
+        echo "FAIL: $1: --help and the table differ: $(diff <(echo "$a") <(echo "$b") | grep '^[<>]' | tr '\n' ' ')"
+        return 1
+    fi
 }
 
 t0=$(date +%s)
@@ -100,23 +148,30 @@ run_cmd() {
     local cmd=$1 ncase=0 passes=0 fails=0 known=0
     tmp=$tmp/$cmd; mkdir -p "$tmp"
     help=$("$GW" "$cmd" --help)
-    while read -r flag mv; do
+    if table_cmd "$cmd"; then
+        ncase=$((ncase+1)); same_flags "$cmd" && passes=$((passes+1)) || fails=$((fails+1))
+    fi
+    while read -r flag mv rmin rmax romin romax below above; do
         [ -n "$flag" ] || continue
+        extra=""
+        [ "$below" != "-" ] && extra="$below"
+        [ "$above" != "-" ] && extra="$extra $above"
         fhelp=$(printf '%s\n' "$help" | grep -E -- "^  --$flag " | head -1)
         # integer flags: the parser says so for a fractional value
         intflag=0
         out1="$tmp/probe"; rm -rf "$out1"
-        if timeout -s KILL 3 "$GW" "$cmd" $(base_args "$cmd" "$out1") "--$flag" 1.5 2>&1 >/dev/null </dev/null |
+        if [ "$mv" != "@row" ] && timeout -s KILL 3 "$GW" "$cmd" $(base_args "$cmd" "$out1") "--$flag" 1.5 2>&1 >/dev/null </dev/null |
                 grep -q "not an integer"; then
             intflag=1
         fi
         rm -rf "$out1"
-        for val in $VALUES; do
+        for val in $VALUES $extra; do
             ncase=$((ncase+1))
             out="$tmp/out_$ncase"
             mkdir "$out" # an existing, empty --out: it must stay empty on exit 2
             args=$(base_args "$cmd" "$out")
-            bash -c "$MEMLIM exec timeout -s KILL 20 \"\$@\"" _ "$GW" "$cmd" $args "--$flag" "$val" \
+            arg=$val; [ "$val" = "@empty" ] && arg="" # an empty value
+            bash -c "$MEMLIM exec timeout -s KILL 20 \"\$@\"" _ "$GW" "$cmd" $args "--$flag" "$arg" \
                 >"$tmp/stdout" 2>"$tmp/stderr" </dev/null
             rc=$?
             what="$cmd --$flag $val"
@@ -128,8 +183,15 @@ run_cmd() {
             else
                 # which exit codes this value class allows
                 allow="12"
+                if [ "$mv" = "@row" ]; then # a table row: its range decides
+                    case "$val" in
+                    nan|inf|-inf|junk|@empty) allow="2";;
+                    *) in_range "$val" "$rmin" "$rmax" "$romin" "$romax"
+                       case $? in 0|2) allow="012";; *) allow="2";; esac;;
+                    esac
+                else
                 case "$val" in
-                nan|inf|-inf|junk) allow="2";;
+                nan|inf|-inf|junk|@empty) allow="2";;
                 99999999999999999999) if [ $intflag -eq 1 ] || [ "$mv" = "A:B" ]; then allow="2";
                                       elif in_list "$HUGE_OK" "$cmd" "$flag"; then allow="012"; fi;;
                 -1) in_list "$NEG_OK" "$cmd" "$flag" && allow="012";;
@@ -138,6 +200,7 @@ run_cmd() {
                 1e308) in_list "$HUGE_OK" "$cmd" "$flag" && allow="012";;
                 *) allow="012";;
                 esac
+                fi
                 case "$allow" in *$rc*) ;; *) bad="exit $rc, allowed: $allow";; esac
                 if [ -z "$bad" ] && [ $rc -eq 2 ]; then
                     nl=$(wc -l <"$tmp/stderr")
@@ -163,8 +226,13 @@ run_cmd() {
     echo "$ncase $passes $fails $known" >"$tmp/counts"
 }
 base=$tmp
+# at most GW_PROPERTY_JOBS (2) commands at a time: the machine's two cores; ten at
+# once made a sanitizer build's legitimate 4 s runs pass the 20 s timeout under load
+njobs=0
 for cmd in $CMDS; do
+    if [ $njobs -ge "${GW_PROPERTY_JOBS:-2}" ]; then wait -n; njobs=$((njobs-1)); fi
     run_cmd "$cmd" >"$base/$cmd.log" 2>&1 &
+    njobs=$((njobs+1))
 done
 wait
 ncase=0

@@ -129,6 +129,27 @@ else
     ko "layer-make not settled: exit $rc, $(cat "$tmp/U.err")"
 fi
 
+# the layer commands' bounds on work and memory, and their file inputs: refused
+# before anything is allocated or written (the --out directory is not left behind)
+refused "layer-impact --dt 1e-12 (5e10 steps)" 'dt: a step of 1e-12 s takes 5e\+10 steps' layer-impact --sample "$tmp/L.txt" --dt 1e-12 --out "$tmp/o"
+refused "layer-impact --rings 1000 with 2e6 samples (64 GB)" 'dt-out: .* GB of series' layer-impact --sample "$tmp/L.txt" --rings 1000 --t-max 40 --out "$tmp/o"
+refused "layer-make --dt 1e-12 (6e12 steps)" 'dt: a step of 1e-12 s' layer-make --n 10 --dt 1e-12 --out "$tmp/o"
+refused "layer-impact --t-max above 1000 s" 'layer-impact --t-max: 2000 is outside' layer-impact --sample "$tmp/L.txt" --t-max 2000 --out "$tmp/o"
+refused "layer-impact --skin above 1e6 m" 'layer-impact --skin: 1e\+07 is outside' layer-impact --sample "$tmp/L.txt" --skin 1e7 --out "$tmp/o"
+mkdir "$tmp/adir"; : >"$tmp/empty.txt"
+refused "layer-impact --sample is a directory" 'sample.*directory' layer-impact --sample "$tmp/adir" --out "$tmp/o"
+refused "layer-impact --sample is empty" 'empty file' layer-impact --sample "$tmp/empty.txt" --out "$tmp/o"
+refused "layer-impact --out is /dev/full" 'not a directory' layer-impact --sample "$tmp/L.txt" --t-max 1e-3 --out /dev/full
+refused "layer-make --out is /dev/zero" 'character device' layer-make --n 10 --out /dev/zero
+refused "layer-make --out is a directory" 'directory' layer-make --n 10 --out "$tmp/adir"
+# unwritable even for root: a directory under /proc takes no new files
+refused "layer-make --out under /proc, before the run" "sample '/proc/.*cannot be written" layer-make --n 10 --out /proc/granwave_no.txt
+refused "layer-impact --out under /proc, before the run" 'cannot create directory' layer-impact --sample "$tmp/L.txt" --t-max 1e-3 --out /proc/granwave_no
+refused "layer-stats table is /dev/zero" 'character device' layer-stats /dev/zero --out "$tmp/o"
+refused "sweep config is /dev/zero" 'character device' sweep /dev/zero --out "$tmp/o"
+"$GW" layer-impact --sample "$tmp/L.txt" --dt 0 --t-max 1e-4 >/dev/null 2>&1 && ok "layer-impact --dt 0 (auto, as its help says) accepted" ||
+    ko "layer-impact --dt 0 refused"
+
 # --- 8: smaller gaps
 printf '[sweep]\nmodel = chian\n[grid]\nn = 1:2\n' >"$tmp/m.ini"
 refused "misspelt sweep model" "m.ini:2: unknown model 'chian'" sweep "$tmp/m.ini" --out "$tmp/o"

@@ -1,7 +1,9 @@
 #!/bin/bash
 # run_fuzz.sh SRCDIR BUILDDIR [SECONDS]: build the libFuzzer targets with clang
 # (ASan + UBSan): sweep config, CLI validation, layer sample reader (when the
-# layer module is present); run each for SECONDS (default 10) from its seed corpus in
+# layer module is present), the studies' parameter tables (fuzz_params: the
+# instrumented gw_param.c over the tables of the build's libgranwave.so, when
+# the build has one without a sanitizer); run each for SECONDS (default 10) from its seed corpus in
 # tests/fuzz/corpus/<target>/. New inputs go to a temporary directory; crashes
 # are written to BUILDDIR/fuzz/ and fail the run. Longer runs: pass more
 # seconds, e.g. run_fuzz.sh . build 3600.
@@ -9,8 +11,8 @@ set -eu
 SRC=$(cd "$1" && pwd); B=$(cd "$2" && pwd); T=${3:-10}
 if ! command -v clang >/dev/null; then echo "SKIP: clang not installed"; exit 0; fi
 out="$B/fuzz"; mkdir -p "$out"
-CF="-g -O1 -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=undefined -I$SRC/common -I$SRC/common/solver -I$SRC/common/sweep -I$B/generated -D_DEFAULT_SOURCE"
-common="$SRC/common/gw_common.c $SRC/common/gw_io.c $SRC/common/gw_cli.c $SRC/common/gw_json.c"
+CF="-g -O1 -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=undefined -I$SRC/common -I$SRC/common/solver -I$SRC/common/sweep -I$SRC/common/stats -I$B/generated -D_DEFAULT_SOURCE"
+common="$SRC/common/gw_common.c $SRC/common/gw_io.c $SRC/common/gw_cli.c $SRC/common/gw_json.c $SRC/common/gw_param.c"
 clang $CF -o "$out/fuzz_sweep_config" "$SRC/tests/fuzz/fuzz_sweep_config.c" "$SRC/common/sweep/gw_sweep.c" $common -linih -lcjson -lm
 clang $CF -o "$out/fuzz_cli" "$SRC/tests/fuzz/fuzz_cli.c" $common -lcjson -lm
 # The layer sample reader (text, and HDF5 when the build has it: inputs up to
@@ -29,6 +31,19 @@ if [ -f "$SRC/layer/layer_sample.c" ]; then
     targets="sweep_config cli layer_sample"
 else
     targets="sweep_config cli"
+fi
+# The parameter tables of every study (gw_study_get): gw_param.c and the
+# validation it calls are compiled here, instrumented, and take precedence over
+# the library's copies; the tables themselves come from the build's
+# libgranwave.so. A sanitizer build's library carries gcc's ASan runtime, which
+# cannot share a process with clang's: skipped there (and without the library).
+if [ -f "$B/lib/libgranwave.so" ] && ! grep -q '^GW_SANITIZE:BOOL=ON' "$B/CMakeCache.txt" 2>/dev/null; then
+    clang $CF -I"$SRC/app/lib" -I"$SRC/chain" -I"$SRC/layer" -o "$out/fuzz_params" "$SRC/tests/fuzz/fuzz_params.c" \
+        "$SRC/common/gw_param.c" "$SRC/common/gw_common.c" "$SRC/common/gw_json.c" -L"$B/lib" -lgranwave \
+        -Wl,-rpath,"$B/lib" -lcjson -lm
+    targets="$targets params"
+else
+    echo "NOTE: fuzz_params skipped (no libgranwave.so in $B/lib, or a sanitizer build)"
 fi
 # libhdf5 1.10 loses a block when a metadata checksum fails (a leak inside the
 # library, see read_h5 in layer/layer_sample.c): not ours to fix, so leaks

@@ -45,6 +45,17 @@ def test_other_inputs_as_the_program(program, sample):
     assert r.ring_kinetic.shape == (r.ns, 8) and r.peak_strain_t.shape == (8,)
 
 
+def test_until_verdict_as_the_program(program, sample):
+    """until is a row of the impact's table (the command's --until): the run stops
+    at the bounce verdict, e_n undecided (NaN; the program's null) and t_end
+    before the rebound's end, the same numbers as the program's."""
+    r = granwave.layer_impact(sample=sample, vi=10, until="verdict")
+    cli = run_cli(program, "layer-impact", "--sample", sample, "--vi", 10, "--until", "verdict")
+    compare(r, cli)
+    full = granwave.layer_impact(sample=sample, vi=10)
+    assert r.t_end < full.t_end and np.isnan(r.e_n) and bool(r.bounced) == bool(full.bounced)
+
+
 def test_ledger_closes(sample):
     r = granwave.layer_impact(sample=sample)
     led = r.ledger

@@ -3,7 +3,8 @@
 No physics lives here: every number comes from libgranwave through the module
 (python/granwave). Lengths in R_m, angles in degrees, as the module returns them.
 
-    granwave_module()            import granwave from ../python (GRANWAVE_LIB is honoured)
+    granwave_module()            import granwave from ../python (GRANWAVE_LIB is honoured; else
+                                 the library beside $GRANWAVE's program, build/lib/)
     write_sweep_table(path, res, grid, params)
                                  a granwave.sweep("layer", ...) result as the table
                                  `granwave sweep` writes (OUT/results.csv), for
@@ -32,7 +33,14 @@ _BOUNDARY_KINDS = ("cross", "above", "below", "inverted")  # the module's kind 0
 
 
 def granwave_module():
-    """The module granwave from the checkout's python/ (library: $GRANWAVE_LIB, else build/lib)."""
+    """The module granwave from the checkout's python/. Its library: $GRANWAVE_LIB; else, when
+    $GRANWAVE names a program whose build tree holds lib/libgranwave.so, that one (the test of the
+    notebooks sets GRANWAVE to the binary under test); else the module's own search (build/lib)."""
+    gw = os.environ.get("GRANWAVE")
+    if not os.environ.get("GRANWAVE_LIB") and gw:
+        lib = os.path.join(os.path.dirname(os.path.abspath(gw)), "lib", "libgranwave.so")
+        if os.path.exists(lib):
+            os.environ["GRANWAVE_LIB"] = lib
     py = os.path.normpath(os.path.join(HERE, "..", "python"))
     if py not in sys.path:
         sys.path.insert(0, py)

@@ -155,17 +155,17 @@ def drop(*, progress=None, **kwargs):
     for k in ("kinetic", "elastic", "gravity", "dissipated", "total"):
         r["energy"][k] = r.pop("energy_" + k)
     n = r["n"]
-    empty = {"t": np.zeros(0), "f": np.zeros(0)}
+    empty = {"t": _np.zeros(0), "f": _np.zeros(0)}
     r["wall_peaks"] = r.get("wall_peaks", empty)
     for k in ("peak_impact", "peak_cluster"):
-        r[k] = r.get(k, np.zeros(0, dtype=np.intc))
-    r["peak_contacts"] = r.get("peak_contacts", np.zeros((0, n), dtype=np.intc)).reshape(-1, n)
-    imp = r.get("impacts") or {c: np.zeros(0) for c in _IMPACT_COLS}
+        r[k] = r.get(k, _np.zeros(0, dtype=_np.intc))
+    r["peak_contacts"] = r.get("peak_contacts", _np.zeros((0, n), dtype=_np.intc)).reshape(-1, n)
+    imp = r.get("impacts") or {c: _np.zeros(0) for c in _IMPACT_COLS}
     for k in _IMPACT_INTS:
         imp[k] = imp[k].astype(int)
     imp["located"] = imp["located"].astype(bool)
     r["impacts"] = imp
-    r["gaps"] = r.get("gaps", np.zeros(0))
+    r["gaps"] = r.get("gaps", _np.zeros(0))
     return r
 
 

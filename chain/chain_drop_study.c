@@ -164,15 +164,12 @@ const gw_param *gw_chain_drop_outcome_fields(void) { return drop_fields; }
 
 int gw_chain_drop_setup_init(gw_chain_drop_setup *s)
 {
-    memset(s, 0, sizeof *s);
-    int rc = gw_chain_setup_init(&s->col);
-    return rc == GW_OK ? gw_param_init(drop_params, s, NULL) : rc;
+    return chain_study_setup_init(s, sizeof *s, &s->col, drop_params);
 }
 
 void gw_chain_drop_setup_clear(gw_chain_drop_setup *s)
 {
-    gw_param_clear(drop_params, s);
-    gw_chain_setup_clear(&s->col);
+    chain_study_setup_clear(s, &s->col, drop_params);
 }
 
 void gw_chain_drop_outcome_free(gw_chain_drop_outcome *out)

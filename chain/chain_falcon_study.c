@@ -96,15 +96,12 @@ const gw_param *gw_chain_falcon_setup_params(void)
 
 int gw_chain_falcon_setup_init(gw_chain_falcon_setup *s)
 {
-    memset(s, 0, sizeof *s);
-    int rc = gw_chain_setup_init(&s->col);
-    return rc == GW_OK ? gw_param_init(falcon_params, s, NULL) : rc;
+    return chain_study_setup_init(s, sizeof *s, &s->col, falcon_params);
 }
 
 void gw_chain_falcon_setup_clear(gw_chain_falcon_setup *s)
 {
-    gw_param_clear(falcon_params, s);
-    gw_chain_setup_clear(&s->col);
+    chain_study_setup_clear(s, &s->col, falcon_params);
 }
 
 /* ---- the table of the results ---- */

@@ -55,6 +55,19 @@ void gw_chain_setup_clear(gw_chain_setup *s)
     gw_param_clear(setup_params, s);
 }
 
+int chain_study_setup_init(void *s, size_t size, gw_chain_setup *col, const gw_param *t)
+{
+    memset(s, 0, size);
+    int rc = gw_chain_setup_init(col);
+    return rc == GW_OK ? gw_param_init(t, s, NULL) : rc;
+}
+
+void chain_study_setup_clear(void *s, gw_chain_setup *col, const gw_param *t)
+{
+    gw_param_clear(t, s);
+    gw_chain_setup_clear(col);
+}
+
 void gw_chain_resolved_free(gw_chain_resolved *r)
 {
     free(r->masses);

@@ -98,4 +98,10 @@ _Static_assert(GW_SHEET_FITTED == 0 && GW_SHEET_HERTZ == 1 && GW_SHEET_LAYER == 
     ROW("guide-viscous", GW_PARAM_DOUBLE, guide_viscous, "N s/m", 0, 100, 0, "0", "C", \
         "viscous friction of each bead on its guide, N s/m, in [0, 100] [0]"),
 
+/* A study's setup that holds a column setup (its member col) besides its own
+ * rows t: zeroed, the column's defaults, then t's; and the reverse. size is
+ * the study struct's. */
+int chain_study_setup_init(void *s, size_t size, gw_chain_setup *col, const gw_param *t);
+void chain_study_setup_clear(void *s, gw_chain_setup *col, const gw_param *t);
+
 #endif

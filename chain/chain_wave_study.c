@@ -81,28 +81,22 @@ const gw_param *gw_chain_softwall_setup_params(void) { return sw_params; }
 
 int gw_chain_wavespeed_setup_init(gw_chain_wavespeed_setup *s)
 {
-    memset(s, 0, sizeof *s);
-    int rc = gw_chain_setup_init(&s->col);
-    return rc == GW_OK ? gw_param_init(ws_params, s, NULL) : rc;
+    return chain_study_setup_init(s, sizeof *s, &s->col, ws_params);
 }
 
 void gw_chain_wavespeed_setup_clear(gw_chain_wavespeed_setup *s)
 {
-    gw_param_clear(ws_params, s);
-    gw_chain_setup_clear(&s->col);
+    chain_study_setup_clear(s, &s->col, ws_params);
 }
 
 int gw_chain_softwall_setup_init(gw_chain_softwall_setup *s)
 {
-    memset(s, 0, sizeof *s);
-    int rc = gw_chain_setup_init(&s->col);
-    return rc == GW_OK ? gw_param_init(sw_params, s, NULL) : rc;
+    return chain_study_setup_init(s, sizeof *s, &s->col, sw_params);
 }
 
 void gw_chain_softwall_setup_clear(gw_chain_softwall_setup *s)
 {
-    gw_param_clear(sw_params, s);
-    gw_chain_setup_clear(&s->col);
+    chain_study_setup_clear(s, &s->col, sw_params);
 }
 
 /* ---- the tables of the results ---- */

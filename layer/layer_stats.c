@@ -129,22 +129,25 @@ int gw_cmd_layer_stats(int argc, char **argv)
     gw_err err = {{0}};
     int help = 0, npos = 0, mask = 0;
     const char *pos[1] = {NULL};
+    /* (every return before the analysis frees what the setup's defaults own) */
     if (gw_cli_parse("layer-stats", o, argc, argv, &help, pos, 1, &npos, &err) != GW_OK)
-        return fail(err.msg);
+        return gw_stats_setup_clear(&S), fail(err.msg);
     if (help) {
         gw_cli_help(stdout, "layer-stats", "granwave layer-stats RESULTS.csv [options]", summary, o);
+        gw_stats_setup_clear(&S);
         return 0;
     }
     if (npos != 1)
-        return fail("a results table is required: granwave layer-stats RESULTS.csv");
+        return gw_stats_setup_clear(&S), fail("a results table is required: granwave layer-stats RESULTS.csv");
     if (gw_stats_fit_parse(fit, &mask, &err) != GW_OK) {
         fprintf(stderr, "granwave layer-stats: --%s\n", err.msg); /* "fit: ...": the flag's name */
+        gw_stats_setup_clear(&S);
         return 2;
     }
     if (out && gw_out_check(out, "layer-stats --out", &err) != GW_OK) /* before any work */
-        return fail(err.msg);
+        return gw_stats_setup_clear(&S), fail(err.msg);
     if (!*pos[0]) /* the table reader's message (the setup refuses an empty input as "input: ...") */
-        return fail("layer-stats RESULTS.csv: empty file name");
+        return gw_stats_setup_clear(&S), fail("layer-stats RESULTS.csv: empty file name");
     const gw_param *tab = gw_stats_setup_params();
     int rc = gw_param_set(tab, &S, "input", pos[0], &err);
     if (rc == GW_OK)

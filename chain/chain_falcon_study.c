@@ -225,11 +225,9 @@ int gw_chain_falcon_run(const gw_chain_falcon_setup *s, gw_progress_fn progress,
                         gw_chain_falcon_outcome *out, gw_err *err)
 {
     memset(out, 0, sizeof *out);
-    int rc = gw_param_check(falcon_params, s, err);
+    int rc = chain_study_range_check(falcon_params, s, &s->col, err);
     if (rc != GW_OK)
         return rc;
-    if (s->col.radii.n > 0)
-        return gw_err_set(err, GW_EINVAL, "radii: per-bead radii need a fixed N (use the chain study)");
     int nv = s->vimp.n + s->heights.n, nn = (int)(s->n[1] - s->n[0] + 1);
     if (nv == 0)
         return gw_err_set(err, GW_EINVAL, "vimp: no impact velocity (vimp and heights both empty)");

@@ -68,6 +68,14 @@ void chain_study_setup_clear(void *s, gw_chain_setup *col, const gw_param *t)
     gw_chain_setup_clear(col);
 }
 
+int chain_study_range_check(const gw_param *t, const void *s, const gw_chain_setup *col, gw_err *err)
+{
+    int rc = gw_param_check(t, s, err);
+    if (rc == GW_OK && col->radii.n > 0)
+        rc = gw_err_set(err, GW_EINVAL, "radii: per-bead radii need a fixed N (use the chain study)");
+    return rc;
+}
+
 void gw_chain_resolved_free(gw_chain_resolved *r)
 {
     free(r->masses);

@@ -103,5 +103,8 @@ _Static_assert(GW_SHEET_FITTED == 0 && GW_SHEET_HERTZ == 1 && GW_SHEET_LAYER == 
  * the study struct's. */
 int chain_study_setup_init(void *s, size_t size, gw_chain_setup *col, const gw_param *t);
 void chain_study_setup_clear(void *s, gw_chain_setup *col, const gw_param *t);
+/* The check of a study over a range of N: s's rows as t says (gw_param_check),
+ * and no per-bead radii in its column setup col. GW_EINVAL naming the row. */
+int chain_study_range_check(const gw_param *t, const void *s, const gw_chain_setup *col, gw_err *err);
 
 #endif

@@ -306,11 +306,9 @@ int gw_chain_wavespeed_run(const gw_chain_wavespeed_setup *s, gw_progress_fn pro
                            gw_chain_wavespeed_outcome *out, gw_err *err)
 {
     memset(out, 0, sizeof *out);
-    int rc = gw_param_check(ws_params, s, err);
+    int rc = chain_study_range_check(ws_params, s, &s->col, err);
     if (rc != GW_OK)
         return rc;
-    if (s->col.radii.n > 0)
-        return gw_err_set(err, GW_EINVAL, "radii: per-bead radii need a fixed N (use the chain study)");
     long a = s->n[0], b = s->n[1];
     if (b - a < 2 || b < 8)
         return gw_err_set(err, GW_EINVAL, "n: need at least 3 sizes and a largest column of >= 8 beads");
@@ -503,11 +501,9 @@ int gw_chain_softwall_run(const gw_chain_softwall_setup *s, gw_progress_fn progr
                           gw_chain_softwall_outcome *out, gw_err *err)
 {
     memset(out, 0, sizeof *out);
-    int rc = gw_param_check(sw_params, s, err);
+    int rc = chain_study_range_check(sw_params, s, &s->col, err);
     if (rc != GW_OK)
         return rc;
-    if (s->col.radii.n > 0)
-        return gw_err_set(err, GW_EINVAL, "radii: per-bead radii need a fixed N (use the chain study)");
     if (s->sheets && (!isnan(s->col.kwall) || s->col.sheet >= 0))
         return gw_err_set(err, GW_EINVAL, "%s: has no effect with sheets (each sheet of Table 2 is its own wall)",
                           s->col.sheet >= 0 ? "sheet" : "kwall");

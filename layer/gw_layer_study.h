@@ -88,6 +88,12 @@ const gw_param *gw_layer_impact_outcome_fields(void);
 int gw_layer_impact_run(const gw_layer_impact_setup *s, gw_layer_impact_outcome *out, gw_err *err);
 void gw_layer_impact_outcome_free(gw_layer_impact_outcome *out);
 
+/* What gw_layer_impact_run checks before it runs: the rows, the sample (read
+ * and checked), the resolution against it (options without effect in the
+ * combination refused). GW_OK or the status gw_layer_impact_run would return
+ * before running. */
+int gw_layer_impact_setup_check(const gw_layer_impact_setup *s, gw_err *err);
+
 /* ---- pluviation (physics.md 2.2) ---- */
 
 /* The inputs of `granwave layer-make`: materials (mass law disc, clump mass

@@ -197,6 +197,23 @@ static int resolve(const gw_layer_impact_setup *s, const gw_layer_sample *smp, g
     sp->method = gw_solver_method_find(choice(s, "method", mname, sizeof mname));
     if (!*type || sp->method < 0)
         return gw_err_set(err, GW_EINVAL, "solver: unknown solver or method");
+    /* options that would have no effect in this combination are refused: a
+     * method the backend does not offer, tolerances of a fixed-step solver
+     * (given: other than the table's default), a clump mass without clumps */
+    const int m = sp->method, cv = *type == gw_solver_cvode, ak = *type == gw_solver_arkode;
+    if (m != GW_METHOD_DEFAULT && !((cv && (m == GW_CVODE_BDF || m == GW_CVODE_ADAMS)) ||
+                                    (ak && (m == GW_ARKODE_ERK || m == GW_ARKODE_DIRK))))
+        return gw_err_set(err, GW_EINVAL, "method: '%s' has no effect with the %s solver (cvode: bdf, adams; "
+                          "arkode: erk, dirk)", mname, gw_solver_type_name(*type));
+    if (!cv && !ak)
+        for (int k = 0; k < 2; k++) {
+            const gw_param *p = gw_param_find(impact_params, k ? "atol" : "rtol");
+            if ((k ? s->atol : s->rtol) != strtod(p->def, NULL))
+                return gw_err_set(err, GW_EINVAL, "%s: has no effect with the fixed-step %s solver (the "
+                                  "tolerances are cvode's and arkode's)", p->name, gw_solver_type_name(*type));
+        }
+    if (s->clump_mass >= 0 && !smp->body)
+        return gw_err_set(err, GW_EINVAL, "clump-mass: has no effect: the sample '%s' has no clumps", s->sample);
     sp->dt = *type == gw_solver_verlet ? s->dt /* 0: gw_layer_impact chooses */
            : *type == gw_solver_rk4 ? (s->dt > 0 ? s->dt : 1e-6) : 0;
     sp->rtol = s->rtol;
@@ -221,22 +238,43 @@ static int resolve(const gw_layer_impact_setup *s, const gw_layer_sample *smp, g
     return gw_layer_impact_check(smp, ip, err);
 }
 
-int gw_layer_impact_run(const gw_layer_impact_setup *s, gw_layer_impact_outcome *out, gw_err *err)
+/* The rows' checks, the sample read into *smp (freed by the caller, also after
+ * a failure) and the resolution. */
+static int prepare(const gw_layer_impact_setup *s, gw_layer_sample *smp, gw_layer_params *lp,
+                   gw_layer_impact_params *ip, const gw_solver_type **type, gw_solver_params *sp, gw_err *err)
 {
-    memset(out, 0, sizeof *out);
+    memset(smp, 0, sizeof *smp);
     int rc = gw_param_check(impact_params, s, err);
     if (rc != GW_OK)
         return rc;
     if (!s->sample)
         return gw_err_set(err, GW_EINVAL, "sample: a sample file (from layer-make) is required");
-    gw_layer_sample smp;
-    if ((rc = gw_layer_sample_read(s->sample, &smp, err)) != GW_OK)
+    if ((rc = gw_layer_sample_read(s->sample, smp, err)) != GW_OK)
         return rc;
+    return resolve(s, smp, lp, ip, type, sp, err);
+}
+
+int gw_layer_impact_setup_check(const gw_layer_impact_setup *s, gw_err *err)
+{
+    gw_layer_sample smp;
     gw_layer_params lp;
     gw_layer_impact_params ip;
     const gw_solver_type *type = NULL;
     gw_solver_params sp;
-    rc = resolve(s, &smp, &lp, &ip, &type, &sp, err);
+    int rc = prepare(s, &smp, &lp, &ip, &type, &sp, err);
+    gw_layer_sample_free(&smp);
+    return rc;
+}
+
+int gw_layer_impact_run(const gw_layer_impact_setup *s, gw_layer_impact_outcome *out, gw_err *err)
+{
+    memset(out, 0, sizeof *out);
+    gw_layer_sample smp;
+    gw_layer_params lp;
+    gw_layer_impact_params ip;
+    const gw_solver_type *type = NULL;
+    gw_solver_params sp;
+    int rc = prepare(s, &smp, &lp, &ip, &type, &sp, err);
     if (rc == GW_OK)
         rc = gw_layer_impact(&smp, &lp, &ip, type, &sp, NULL, &out->r, err);
     if (rc == GW_OK || out->r.ns > 0) {

@@ -1,7 +1,7 @@
 /*
  * chain_dispersion.c: small-amplitude dispersion of a precompressed Hertz chain
  * from its space-time spectrum (docs/physics.md 1.6). The column's wall-force
- * spectrum is in chain_spectrum.c, the command in chain_dispersion_cmd.c.
+ * spectrum is in chain_spectrum.c, the command in app/chain/chain_dispersion_cmd.c.
  *
  * Model: u_i is the displacement of bead i from its equilibrium site along the
  * chain (m), v_i = u_i' (m/s), state y[2i] = u_i, y[2i+1] = v_i. Contact
@@ -29,7 +29,8 @@
 
 #include <fftw3.h>
 
-#include "chain_options.h"
+#include "gw_chain.h"
+#include "gw_chain_study.h"
 
 gw_chain_disp_params gw_chain_disp_params_default(void)
 {

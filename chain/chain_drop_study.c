@@ -1,6 +1,6 @@
 /*
  * chain_drop_study.c: the whole drop of `granwave drop` as a library call
- * (gw_chain_study.h); chain_drop_cmd.c prints what this computes, chain_drop.c
+ * (gw_chain_study.h); app/chain/chain_drop_cmd.c prints what this computes, chain_drop.c
  * integrates it. docs/drop.md holds the definitions.
  *
  * The column of N beads (physics.md 1.1, (F.11)) is released from rest with

@@ -12,7 +12,8 @@
 
 #include <fftw3.h>
 
-#include "chain_options.h"
+#include "gw_chain.h"
+#include "gw_chain_study.h"
 
 /* ---- wall-force spectrum of the column ---- */
 

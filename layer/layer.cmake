@@ -15,10 +15,7 @@ add_library(gw_layer_obj OBJECT
   ${CMAKE_CURRENT_LIST_DIR}/layer_regions.c
   ${CMAKE_CURRENT_LIST_DIR}/layer_h5.c
   ${CMAKE_CURRENT_LIST_DIR}/layer_vtk.c
-  ${CMAKE_CURRENT_LIST_DIR}/layer_cmd.c
-  ${CMAKE_CURRENT_LIST_DIR}/layer_cli.c
   ${CMAKE_CURRENT_LIST_DIR}/layer_sweep_model.c
-  ${CMAKE_CURRENT_LIST_DIR}/layer_stats.c
   ${CMAKE_CURRENT_LIST_DIR}/layer_setup.c
   ${CMAKE_CURRENT_LIST_DIR}/layer_make_study.c)
 gw_library_objects(gw_layer_obj)

@@ -86,7 +86,7 @@ static int make_run(const void *s, void *out, gw_progress_fn progress, void *pct
 static void make_free(void *out) { gw_layer_make_outcome_free(out); }
 
 /* The statistics include no model header: the layer model's defaults for the
- * parameters a sweep table leaves out are given here (as layer/layer_stats.c
+ * parameters a sweep table leaves out are given here (as app/layer/layer_stats.c
  * does for the command). */
 static int stats_init(void *s)
 {

@@ -5,7 +5,7 @@
  * model B.31), as one library call (gw_stats_run: setup and outcome described
  * by gw_param tables, the study "layer-stats" of gw_study.h) and as the parts
  * it is made of (table reader, groups, diagram, B.31 fit). `granwave
- * layer-stats` (layer/layer_stats.c) parses its flags, calls gw_stats_analyse
+ * layer-stats` (app/layer/layer_stats.c) parses its flags, calls gw_stats_analyse
  * and prints; nothing here prints, reads argv or exits.
  *
  * The module reads a table and includes no model header: the values of the

@@ -1,5 +1,5 @@
 /*
- * gw_stats_out.c: the outputs of `granwave layer-stats` (layer/layer_stats.c):
+ * gw_stats_out.c: the outputs of `granwave layer-stats` (app/layer/layer_stats.c):
  * JSON (stdout, boundary_fit.json) and the CSV tables groups.csv,
  * convergence.csv, binary.csv, walls.csv and diagram.csv. Every file opens
  * with the program version, the command line and the input path, and says

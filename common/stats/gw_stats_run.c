@@ -19,7 +19,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "gw_cli.h"
 #include "gw_stats.h"
 
 #define OFF(f) offsetof(gw_stats_setup, f)

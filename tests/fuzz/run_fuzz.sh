@@ -11,8 +11,8 @@ set -eu
 SRC=$(cd "$1" && pwd); B=$(cd "$2" && pwd); T=${3:-10}
 if ! command -v clang >/dev/null; then echo "SKIP: clang not installed"; exit 0; fi
 out="$B/fuzz"; mkdir -p "$out"
-CF="-g -O1 -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=undefined -I$SRC/common -I$SRC/common/solver -I$SRC/common/sweep -I$SRC/common/stats -I$B/generated -D_DEFAULT_SOURCE"
-common="$SRC/common/gw_common.c $SRC/common/gw_io.c $SRC/common/gw_cli.c $SRC/common/gw_json.c $SRC/common/gw_param.c"
+CF="-g -O1 -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=undefined -I$SRC/common -I$SRC/app -I$SRC/common/solver -I$SRC/common/sweep -I$SRC/common/stats -I$B/generated -D_DEFAULT_SOURCE"
+common="$SRC/common/gw_common.c $SRC/common/gw_io.c $SRC/app/gw_cli.c $SRC/common/gw_json.c $SRC/common/gw_param.c"
 clang $CF -o "$out/fuzz_sweep_config" "$SRC/tests/fuzz/fuzz_sweep_config.c" "$SRC/common/sweep/gw_sweep.c" $common -linih -lcjson -lm
 clang $CF -o "$out/fuzz_cli" "$SRC/tests/fuzz/fuzz_cli.c" $common -lcjson -lm
 # The layer sample reader (text, and HDF5 when the build has it: inputs up to

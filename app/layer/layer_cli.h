@@ -1,5 +1,5 @@
 /*
- * layer_cli.h (private to layer/): the option tables of the layer commands, so
+ * layer_cli.h (private to app/layer/): the option tables of the layer commands, so
  * that `granwave layer-impact` and the `layer` sweep model (layer_sweep_model.c)
  * parse, default and validate an impact with one code path (layer_cli.c).
  * Units: SI, angles in degrees (docs/physics.md 2.1-2.3).

@@ -1,5 +1,5 @@
 /*
- * chain_falcon.h (private to chain/): the Falcon study's data, shared by the
+ * chain_falcon.h (private to app/chain/): the Falcon study's data, shared by the
  * command (chain_falcon.c) and its markdown report (chain_falcon_report.c).
  */
 #ifndef GW_CHAIN_FALCON_H

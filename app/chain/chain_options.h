@@ -1,5 +1,5 @@
 /*
- * chain_options.h (private to chain/): the command-line options shared by the
+ * chain_options.h (private to app/chain/): the command-line options shared by the
  * chain commands (model, materials, solver), turned into gw_chain_params and
  * gw_chain_run_opts with one validation path.
  */

@@ -34,9 +34,15 @@ static cJSON *mat_json(const gw_layer_params *p)
     return o;
 }
 
+/* One line on stderr, exit status 2; a message that already names the command
+ * (the option parser's "layer-impact --vi: ...") is not prefixed twice. */
 static int fail(const char *cmd, const char *msg)
 {
-    fprintf(stderr, "granwave %s: %s\n", cmd, msg);
+    const size_t n = strlen(cmd);
+    if (strncmp(msg, cmd, n) == 0 && (msg[n] == ' ' || msg[n] == ':'))
+        fprintf(stderr, "granwave %s\n", msg);
+    else
+        fprintf(stderr, "granwave %s: %s\n", cmd, msg);
     return 2;
 }
 

@@ -31,9 +31,14 @@ static const char *summary =
     "walls on/off; bouncing-occurrence diagram with its boundary H*(R_b/R_m), R_crit,\n"
     "(R_min, H_min) and a GSL least-squares fit of B.31 (free parameters: --fit).";
 
+/* One line on stderr, exit status 2 (the option parser's messages already
+ * name the command). */
 static int fail(const char *msg)
 {
-    fprintf(stderr, "granwave layer-stats: %s\n", msg);
+    if (strncmp(msg, "layer-stats", 11) == 0 && (msg[11] == ' ' || msg[11] == ':'))
+        fprintf(stderr, "granwave %s\n", msg);
+    else
+        fprintf(stderr, "granwave layer-stats: %s\n", msg);
     return 2;
 }
 

@@ -309,7 +309,7 @@ int gw_stats_table_read(const char *path, gw_stats_table *t, gw_err *err)
     char *buf = NULL;
     size_t len = 0;
     /* a regular file only (a FIFO or device is refused, never read), bounded */
-    int rc = gw_input_read(path, "layer-stats RESULTS.csv", (size_t)1 << 32, &buf, &len, err);
+    int rc = gw_input_read(path, "sweep table", (size_t)1 << 32, &buf, &len, err);
     if (rc == GW_EINVAL)
         rc = GW_EFORMAT;
     if (rc == GW_OK && memchr(buf, '\0', len))

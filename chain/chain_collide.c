@@ -321,6 +321,16 @@ int gw_chain_collide(const gw_chain *c, const gw_chain_run_opts *o, gw_chain_res
     double tau1 = gw_chain_tau1(gw_chain_bead_mass(c, 0), p->kwall, p->v_imp);
     double dt_out = o->dt_out > 0 ? o->dt_out : tau1 / 200.0;
     double t_max = o->t_max > 0 ? o->t_max : 20.0 * (n * 2.0 * tc + tau1);
+    /* Every sample costs O(n) (energy, contacts): bound the samples over the
+     * collision's expected length (n bead-to-bead transits of 2 T_c plus the
+     * wall contact, or t_max when shorter). The
+     * default dt-out gives about 100 n + 200 of them; checked before the run. */
+    const double t_expect = fmin(t_max, n * 2.0 * tc + tau1), max_samples = 1e9;
+    if (!(t_expect / dt_out <= max_samples)) {
+        rc = gw_err_set(err, GW_EINVAL, "dt-out: %g s gives about %.3g samples over the collision (about %.3g s); "
+                        "at most %.0e: raise dt-out", dt_out, t_expect / dt_out, t_expect, max_samples);
+        goto done;
+    }
     double dscale = gw_chain_dmax1(gw_chain_bead_mass(c, 0), p->kwall, p->v_imp);
     st.dtol = 1e-9 * dscale;
     gw_solver_params sp = o->sp;

@@ -91,9 +91,10 @@ int gw_layer_impact_write_h5(const gw_layer_impact_result *r, const char *path, 
         memcpy(led + 8 * k, v, sizeof v);
     }
     gw_afile af;
-    if (gw_afile_open_named(&af, path, err) != GW_OK) {
+    int orc = gw_afile_open_named(&af, path, err);
+    if (orc != GW_OK) {
         free(led);
-        return GW_EIO;
+        return orc;
     }
     /* our message names the file; HDF5's own error stack would add dozens of lines */
     H5E_auto2_t old_fn;

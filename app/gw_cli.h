@@ -1,7 +1,9 @@
 /*
  * gw_cli.h: the program's option parser (gw_cli.c): options described by
- * gw_opt tables, parsed from argv, with --help from the same table. Used by the
- * commands; not one of the library's public headers (not installed).
+ * gw_opt tables, parsed from argv, with --help from the same table; and what
+ * the program adds to its outputs (gw_cli_out.c): the provenance header and
+ * the progress lines. Used by the commands; not one of the library's public
+ * headers (not installed).
  */
 #ifndef GW_CLI_H
 #define GW_CLI_H
@@ -51,5 +53,45 @@ void gw_cli_help(FILE *fp, const char *cmd, const char *usage, const char *summa
                  const gw_opt *opts);
 /* The option named name, or NULL. */
 const gw_opt *gw_cli_find(const gw_opt *opts, const char *name);
+
+/* ---- provenance: the header of every output (gw_cli_out.c) ----
+ * Every table, trace, sample and HDF5 "run" attribute the commands write starts
+ * with the same text, built here only:
+ *   granwave VERSION
+ *   command: granwave CMD ARG1 ARG2 ...
+ *   settings: {"one-line":"JSON of every setting, defaults included"}
+ * Text files carry it as comment lines (gw_write_comment, gw_common.h); the
+ * library takes it as a string from the program. All return a new string the
+ * caller frees, NULL when out of memory. */
+
+/* "granwave CMD ARG1 ARG2 ..." (argv as given, one blank between). */
+char *gw_cli_command_line(const char *cmd, int argc, char **argv);
+/* The header above; settings NULL: no settings line. */
+char *gw_cli_provenance(const char *cmd, int argc, char **argv, const struct cJSON *settings);
+/* hdr + "\nKEY: " + value as one-line JSON. Takes hdr (freed; NULL in, NULL
+ * out); value NULL returns hdr unchanged. */
+char *gw_cli_provenance_add(char *hdr, const char *key, const struct cJSON *value);
+/* Newlines of text replaced by sep in place (the one-line "# " header of the
+ * falcon, wavespeed and layer-impact tables); returns text. */
+char *gw_cli_one_line(char *text, char sep);
+
+/* ---- progress lines on stderr (gw_cli_out.c) ----
+ * One line per report: "PREFIXd/n UNIT[ (b done before)], R UNIT/s, E s
+ * elapsed, ~L s left". Pass gw_cli_progress_report and the display as the
+ * library's gw_progress_fn and its context; it never asks to stop. */
+typedef struct gw_cli_progress {
+    const char *prefix;  /* start of each line: "sweep: ", "  " */
+    const char *unit;    /* what is counted: "cases", "collisions" */
+    long before;         /* units finished by an earlier run (< 0: not shown) */
+    double every_ms;     /* > 0: a line at most every every_ms; 0: every tenth */
+    int quiet;           /* 1: print nothing */
+    FILE *fp;            /* stderr */
+    double t0, last;     /* gw_clock_ms at init and at the last line */
+} gw_cli_progress;
+
+/* A display starting now, writing to stderr, before = -1, not quiet. */
+void gw_cli_progress_init(gw_cli_progress *p, const char *prefix, const char *unit, double every_ms);
+/* gw_progress_fn: a line after the last unit and when due; returns 0. */
+int gw_cli_progress_report(void *ctx, long done, long total);
 
 #endif

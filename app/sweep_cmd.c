@@ -1,7 +1,7 @@
 /*
  * sweep_cmd.c: `granwave sweep CONFIG`, a grid of independent cases (gw_sweep.h).
  *
- * Serial runs use one thread per core; under mpirun (OpenMPI) rank 0 is the only
+ * Serial runs use one thread per core (the worker pool, gw_pool.h); under mpirun (OpenMPI) rank 0 is the only
  * writer and hands out cases one at a time (dynamic load balancing: cases differ
  * a lot in cost) to the other ranks. Finished cases go to DIR/journal.csv as they
  * complete; a rerun with the same config skips them, so a sweep killed by
@@ -13,7 +13,6 @@
 #include <fcntl.h>
 #include <pthread.h>
 #include <signal.h>
-#include <stdatomic.h>
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
@@ -42,12 +41,11 @@ typedef struct sweep_run {
     const gw_sweep_model *m;
     long *todo;
     long ntodo, ndone0;
-    atomic_long next;
     long done;
-    int fd, quiet, failed;
+    int fd, failed;
     gw_err err;
-    pthread_mutex_t lock;
-    double t0, last_report;
+    pthread_mutex_t lock; /* the journal: one row appended at a time */
+    gw_cli_progress prog;
 } sweep_run;
 
 static int run_case(const sweep_run *s, long k, char *row, gw_err *err)
@@ -66,67 +64,52 @@ static int run_case(const sweep_run *s, long k, char *row, gw_err *err)
     return gw_sweep_format_row(s->cfg, k, out, s->m->ncolumns, row, ROW_MAX);
 }
 
-/* Record a finished row (caller holds the lock) and report progress. */
-static int record(sweep_run *s, const char *row, gw_err *err)
+/* Append a finished row to the journal (caller holds the lock or is the only
+ * writer). */
+static int journal(sweep_run *s, const char *row, gw_err *err)
 {
     int rc = gw_sweep_journal_append(s->fd, row, err);
-    s->done++;
-    double now = gw_clock_ms();
-    if (!s->quiet && (now - s->last_report > 2000 || s->done == s->ntodo)) {
-        double rate = s->done / ((now - s->t0) / 1e3);
-        fprintf(stderr, "sweep: %ld/%ld cases (%ld done before), %.2f cases/s, ~%.0f s left\n", s->done, s->ntodo,
-                s->ndone0, rate, (s->ntodo - s->done) / (rate > 0 ? rate : 1));
-        s->last_report = now;
-    }
+    if (rc == GW_OK)
+        s->done++;
     return rc;
 }
 
-static void *worker(void *arg)
+/* One case on the worker pool (gw_pool.h): run, then journal the row. */
+static int pool_case(void *ctx, long i, gw_err *err)
 {
-    sweep_run *s = arg;
+    sweep_run *s = ctx;
     char *row = malloc(ROW_MAX);
-    while (row && !stop_requested) {
-        long i = atomic_fetch_add(&s->next, 1);
-        if (i >= s->ntodo)
-            break;
+    if (!row)
+        return gw_err_set(err, GW_ENOMEM, "case %ld: out of memory", s->todo[i]);
+    int rc = run_case(s, s->todo[i], row, err);
+    if (rc == GW_OK) {
         pthread_mutex_lock(&s->lock);
-        int failed = s->failed;
-        pthread_mutex_unlock(&s->lock);
-        if (failed)
-            break;
-        gw_err err = {{0}};
-        int rc = run_case(s, s->todo[i], row, &err);
-        pthread_mutex_lock(&s->lock);
-        if (rc == GW_OK)
-            rc = record(s, row, &err);
-        if (rc != GW_OK && !s->failed) {
-            s->failed = rc;
-            s->err = err;
-        }
+        rc = journal(s, row, err);
         pthread_mutex_unlock(&s->lock);
     }
     free(row);
-    return NULL;
+    return rc;
+}
+
+/* The pool's progress callback: the program's progress line, and stop taking
+ * cases once SIGINT or SIGTERM came (the cases under way finish and are
+ * journaled). */
+static int pool_progress(void *ctx, long done, long total)
+{
+    sweep_run *s = ctx;
+    gw_cli_progress_report(&s->prog, done, total);
+    return stop_requested != 0;
 }
 
 static void run_threads(sweep_run *s, long jobs)
 {
-    if (jobs <= 0)
-        jobs = sysconf(_SC_NPROCESSORS_ONLN);
-    if (jobs < 1)
-        jobs = 1;
-    if (jobs > s->ntodo)
-        jobs = s->ntodo > 0 ? s->ntodo : 1;
-    pthread_t *th = calloc((size_t)jobs, sizeof *th);
-    long started = 0;
-    for (long j = 0; th && j < jobs; j++)
-        if (pthread_create(&th[j], NULL, worker, s) == 0)
-            started++;
-    if (started == 0)
-        worker(s);
-    for (long j = 0; j < started; j++)
-        pthread_join(th[j], NULL);
-    free(th);
+    gw_err err = {{0}};
+    int rc = stop_requested ? GW_ECANCELED
+                            : gw_cases_run(s->ntodo, (int)jobs, pool_case, s, pool_progress, s, &err);
+    if (rc != GW_OK && rc != GW_ECANCELED) {
+        s->failed = rc;
+        s->err = err;
+    }
 }
 
 #if GW_HAVE_MPI
@@ -147,7 +130,9 @@ static void mpi_master(sweep_run *s, int size)
         MPI_Recv(buf, ROW_MAX + 16, MPI_CHAR, st.MPI_SOURCE, st.MPI_TAG, MPI_COMM_WORLD, &st);
         gw_err err = {{0}};
         if (st.MPI_TAG == TAG_ROW) {
-            int rc = record(s, buf, &err);
+            int rc = journal(s, buf, &err);
+            if (rc == GW_OK)
+                gw_cli_progress_report(&s->prog, s->done, s->ntodo);
             if (rc != GW_OK && !s->failed) {
                 s->failed = rc;
                 s->err = err;
@@ -286,8 +271,9 @@ int gw_cmd_sweep(int argc, char **argv, const gw_sweep_model *const *models, int
     if (code == 0) {
         s.cfg = &cfg;
         s.m = m;
-        s.quiet = quiet;
-        s.t0 = s.last_report = gw_clock_ms();
+        gw_cli_progress_init(&s.prog, "sweep: ", "cases", 2000);
+        s.prog.before = s.ndone0;
+        s.prog.quiet = quiet;
         pthread_mutex_init(&s.lock, NULL);
         signal(SIGINT, on_signal);
         signal(SIGTERM, on_signal);
@@ -317,7 +303,7 @@ int gw_cmd_sweep(int argc, char **argv, const gw_sweep_model *const *models, int
                 code = 1;
             } else if (!quiet) {
                 fprintf(stderr, "sweep: %ld cases in %.1f s; table %s/results.csv\n", s.done,
-                        (gw_clock_ms() - s.t0) / 1e3, out);
+                        (gw_clock_ms() - s.prog.t0) / 1e3, out);
             }
         }
     }

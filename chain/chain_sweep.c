@@ -1,6 +1,6 @@
 /*
  * chain_sweep.c: independent collisions over a grid of (v_imp, N), spread over
- * threads by gw_cases_run (gw_sweep.h). Each case builds its own chain and
+ * threads by the worker pool (gw_cases_run, gw_pool.h). Each case builds its own chain and
  * solver (one SUNDIALS context per solver, hence per thread), so cases share
  * nothing but the case counter.
  */
@@ -8,7 +8,7 @@
 #include <string.h>
 
 #include "gw_chain.h"
-#include "gw_sweep.h"
+#include "gw_pool.h"
 
 typedef struct sweep {
     const gw_chain_params *tmpl;
@@ -47,26 +47,9 @@ int gw_chain_sweep_n_progress(const gw_chain_params *tmpl, const gw_chain_run_op
     return gw_cases_run(ncase, jobs, one, &w, progress, pctx, err);
 }
 
-/* The progress lines of the chain commands: every tenth of the cases. */
-typedef struct printer {
-    double t0;
-} printer;
-
-static int print_progress(void *ctx, long d, long ncase)
-{
-    const printer *p = ctx;
-    if (d % (ncase / 10 + 1) == 0 || d == ncase) {
-        double el = (gw_clock_ms() - p->t0) / 1e3;
-        fprintf(stderr, "  %ld/%ld collisions, %.1f s elapsed, ~%.1f s left\n", d, ncase, el,
-                el / (double)d * (double)(ncase - d));
-    }
-    return 0;
-}
-
 int gw_chain_sweep_n(const gw_chain_params *tmpl, const gw_chain_run_opts *o, const double *v, int nv,
                      int n_lo, int n_hi, int jobs, int progress, gw_chain_result *res, gw_err *err)
 {
-    printer p = {gw_clock_ms()};
-    return gw_chain_sweep_n_progress(tmpl, o, v, nv, n_lo, n_hi, jobs, progress ? print_progress : NULL, &p,
-                                     res, err);
+    (void)progress; /* the library prints nothing: progress goes through gw_chain_sweep_n_progress */
+    return gw_chain_sweep_n_progress(tmpl, o, v, nv, n_lo, n_hi, jobs, NULL, NULL, res, err);
 }

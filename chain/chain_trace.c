@@ -1,7 +1,7 @@
 /*
  * chain_trace.c: time series of a collision (wall force, bead positions and
- * velocities) kept in memory and written as CSV, and as HDF5 when built with it.
- * Units: s, N, m, m/s.
+ * velocities) kept in memory and written as CSV, and as HDF5 when built with it,
+ * each file atomically (gw_afile). Units: s, N, m, m/s.
  */
 #include <stdlib.h>
 #include <string.h>
@@ -59,17 +59,6 @@ int gw_chain_trace_sample(void *ctx, double t, const double *y, double f_wall, i
     return 0;
 }
 
-static void write_header(FILE *fp, const char *header)
-{
-    const char *p = header;
-    while (p && *p) {
-        const char *nl = strchr(p, '\n');
-        size_t len = nl ? (size_t)(nl - p) : strlen(p);
-        fprintf(fp, "# %.*s\n", (int)len, p);
-        p = nl ? nl + 1 : p + len;
-    }
-}
-
 static int write_csv(const gw_chain_trace *tr, const char *dir, const char *stem,
                      const char *header, gw_err *err)
 {
@@ -81,7 +70,7 @@ static int write_csv(const gw_chain_trace *tr, const char *dir, const char *stem
         return gw_err_set(err, GW_EINVAL, "%s: output path too long", dir);
     if ((rc = gw_afile_open(&f, path, err)) != GW_OK)
         return rc;
-    write_header(f.fp, header);
+    gw_write_comment(f.fp, header);
     fprintf(f.fp, "t_s,f_wall_N\n");
     for (size_t k = 0; k < tr->len; k++)
         fprintf(f.fp, "%.12e,%.12e\n", tr->t[k], tr->f[k]);
@@ -93,7 +82,7 @@ static int write_csv(const gw_chain_trace *tr, const char *dir, const char *stem
         return gw_err_set(err, GW_EINVAL, "%s: output path too long", dir);
     if ((rc = gw_afile_open(&f, path, err)) != GW_OK)
         return rc;
-    write_header(f.fp, header);
+    gw_write_comment(f.fp, header);
     fprintf(f.fp, "t_s");
     for (int i = 1; i <= tr->n; i++)
         fprintf(f.fp, ",x%d_m", i);
@@ -139,16 +128,20 @@ static int h5_dataset(hid_t file, const char *name, const double *data, int rank
 static int write_h5(const gw_chain_trace *tr, const char *dir, const char *stem,
                     const char *header, gw_err *err)
 {
-    char path[4096], name[512], tmp[4200];
+    char path[4096], name[512];
     snprintf(name, sizeof name, "%s.h5", stem);
     if (gw_path_join(path, sizeof path, dir, name) != GW_OK)
         return gw_err_set(err, GW_EINVAL, "%s: output path too long", dir);
-    snprintf(tmp, sizeof tmp, "%s.tmp", path);
-    hid_t file = H5Fcreate(tmp, H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
-    if (file < 0)
+    gw_afile f;
+    int rc = gw_afile_open_named(&f, path, err);
+    if (rc != GW_OK)
+        return rc;
+    hid_t file = H5Fcreate(f.tmp, H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
+    if (file < 0) {
+        gw_afile_abort(&f);
         return gw_err_set(err, GW_EIO, "%s: cannot create HDF5 file", path);
+    }
     hsize_t d1[1] = {tr->len}, d2[2] = {tr->len, (hsize_t)tr->n};
-    int rc = GW_OK;
     if (tr->len > 0) {
         rc = h5_dataset(file, "t", tr->t, 1, d1, "s");
         if (rc == GW_OK)
@@ -172,11 +165,11 @@ static int write_h5(const gw_chain_trace *tr, const char *dir, const char *stem,
     }
     if (H5Fclose(file) < 0)
         rc = GW_EIO;
-    if (rc != GW_OK || rename(tmp, path) != 0) {
-        remove(tmp);
+    if (rc != GW_OK) {
+        gw_afile_abort(&f);
         return gw_err_set(err, GW_EIO, "%s: HDF5 write failed", path);
     }
-    return GW_OK;
+    return gw_afile_commit(&f, err);
 }
 #endif
 

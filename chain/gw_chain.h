@@ -392,9 +392,11 @@ int gw_chain_calibrate(const gw_chain_params *p, const gw_chain_run_opts *o,
  * template tmpl (its n and v_imp are replaced) and run options o (no sample
  * callback). res must hold nv * (n_hi - n_lo + 1) results, index
  * iv * (n_hi - n_lo + 1) + (N - n_lo); free each with gw_chain_result_free.
- * jobs threads (<= 0: one per online CPU); progress != 0 prints progress lines
- * on stderr. On the first failing case returns its status and message (naming
- * N and v_imp); all results are still allocated and must be freed. */
+ * jobs threads (<= 0: one per online CPU; the worker pool of gw_pool.h).
+ * progress is ignored (kept for source compatibility: the library prints
+ * nothing; for progress pass a callback to gw_chain_sweep_n_progress). On the
+ * first failing case returns its status and message (naming N and v_imp); all
+ * results are still allocated and must be freed. */
 int gw_chain_sweep_n(const gw_chain_params *tmpl, const gw_chain_run_opts *o,
                      const double *v, int nv, int n_lo, int n_hi, int jobs,
                      int progress, gw_chain_result *res, gw_err *err);

@@ -108,21 +108,37 @@ int gw_solver_tolerances_check(double rtol, double atol, const char *rname, cons
 /* A file written under a temporary name and renamed into place on commit, so a
  * reader sees either the previous file or the complete new one. SIGINT, SIGTERM
  * and SIGHUP are held from open to commit/abort (delivered right after), so an
- * interrupt never leaves the temporary behind; only kill -9 can. */
+ * interrupt never leaves the temporary behind; only kill -9 can. The temporary
+ * is "PATH.tmp.XXXXXX" in the same directory (a unique name: two writers of
+ * one path never share a temporary). Every file granwave writes goes through
+ * this: text through the stream fp, HDF5 through the temporary's name. */
 typedef struct gw_afile {
     FILE *fp;
     char path[4096];
     char tmp[4096 + 32];
     unsigned char oldmask[128]; /* the caller's signal mask (a sigset_t) */
     int masked;
+    int named; /* opened by gw_afile_open_named: the caller writes tmp by name */
 } gw_afile;
 
-/* Open path for writing through a temporary file. On failure nothing is created. */
+/* Open path for writing through a temporary file: f->fp is the stream. On
+ * failure nothing is created (and f is safe to abort). */
 int gw_afile_open(gw_afile *f, const char *path, gw_err *err);
-/* Flush, fsync and rename into place. On failure the temporary is removed. */
+/* The same for a writer that creates the file itself by name (HDF5's
+ * H5Fcreate(f->tmp, H5F_ACC_TRUNC, ...)): f->tmp is an empty file reserving a
+ * unique name and f->fp is NULL. The writer closes its own handle before
+ * commit; commit fsyncs f->tmp and renames it into place. */
+int gw_afile_open_named(gw_afile *f, const char *path, gw_err *err);
+/* Flush (stream), fsync and rename into place. On failure the temporary is
+ * removed and the previous file at path, if any, is left as it was. */
 int gw_afile_commit(gw_afile *f, gw_err *err);
 /* Discard the temporary file (safe to call on a closed or failed file). */
 void gw_afile_abort(gw_afile *f);
+
+/* Write text as comment lines: "# " + each line + "\n" (a final newline in
+ * text adds no empty comment; NULL or "" writes nothing). The provenance
+ * header of the program's tables goes to files through this. */
+void gw_write_comment(FILE *fp, const char *text);
 
 /* Create directory (and parents) if missing. */
 int gw_mkdir_p(const char *path, gw_err *err);

@@ -1,5 +1,7 @@
 /*
- * gw_io.c: atomic files (temporary name, fsync, rename), directories, paths, and
+ * gw_io.c: atomic files (temporary name, fsync, rename; as a stream, or as a
+ * temporary path for writers that create the file by name, such as HDF5),
+ * comment lines for file headers, directories, paths, and
  * the one way inputs are opened: regular files only (a FIFO, device or directory
  * is refused before any read, so nothing can block), reads bounded in size.
  */
@@ -39,8 +41,10 @@ int gw_afile_open(gw_afile *f, const char *path, gw_err *err)
 {
     memset(f, 0, sizeof *f);
     hold_signals(f);
-    if (strlen(path) >= sizeof f->path)
+    if (strlen(path) >= sizeof f->path) { /* nothing made: give the signals back */
+        release_signals(f);
         return gw_err_set(err, GW_EINVAL, "%s: path too long", path);
+    }
     snprintf(f->path, sizeof f->path, "%s", path);
     snprintf(f->tmp, sizeof f->tmp, "%s.tmp.XXXXXX", path);
     int fd = mkstemp(f->tmp);
@@ -63,8 +67,42 @@ int gw_afile_open(gw_afile *f, const char *path, gw_err *err)
     return GW_OK;
 }
 
+int gw_afile_open_named(gw_afile *f, const char *path, gw_err *err)
+{
+    int rc = gw_afile_open(f, path, err);
+    if (rc != GW_OK)
+        return rc;
+    /* the writer creates f->tmp again by name (HDF5 truncates it): the empty
+     * file made by mkstemp only reserves the unique name */
+    fclose(f->fp);
+    f->fp = NULL;
+    f->named = 1;
+    return GW_OK;
+}
+
+/* fsync a file the caller wrote by name, then rename it into place. */
+static int commit_named(gw_afile *f, gw_err *err)
+{
+    errno = 0;
+    int fd = open(f->tmp, O_RDONLY);
+    int bad = fd < 0 || fsync(fd) != 0;
+    int saved = bad ? (errno ? errno : EIO) : 0;
+    if (fd >= 0)
+        close(fd);
+    if (!bad && rename(f->tmp, f->path) != 0)
+        bad = 1, saved = errno ? errno : EIO;
+    if (bad)
+        unlink(f->tmp);
+    f->tmp[0] = '\0';
+    f->named = 0;
+    release_signals(f);
+    return bad ? gw_err_set(err, GW_EIO, "%s: write failed: %s", f->path, strerror(saved)) : GW_OK;
+}
+
 int gw_afile_commit(gw_afile *f, gw_err *err)
 {
+    if (f->named && !f->fp && f->tmp[0])
+        return commit_named(f, err);
     if (!f->fp) {
         release_signals(f);
         return gw_err_set(err, GW_EIO, "%s: file not open", f->path);
@@ -107,7 +145,18 @@ void gw_afile_abort(gw_afile *f)
         unlink(f->tmp);
         f->tmp[0] = '\0';
     }
+    f->named = 0;
     release_signals(f);
+}
+
+void gw_write_comment(FILE *fp, const char *text)
+{
+    for (const char *p = text; p && *p;) {
+        const char *nl = strchr(p, '\n');
+        size_t len = nl ? (size_t)(nl - p) : strlen(p);
+        fprintf(fp, "# %.*s\n", (int)len, p);
+        p += len + (nl != NULL);
+    }
 }
 
 int gw_mkdir_p(const char *path, gw_err *err)

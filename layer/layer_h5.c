@@ -90,14 +90,18 @@ int gw_layer_impact_write_h5(const gw_layer_impact_result *r, const char *path, 
                        e->mindlin_excess, e->dissipated, e->potential, e->total};
         memcpy(led + 8 * k, v, sizeof v);
     }
-    char tmp[4200];
-    snprintf(tmp, sizeof tmp, "%s.tmp", path);
+    gw_afile af;
+    int orc = gw_afile_open_named(&af, path, err);
+    if (orc != GW_OK) {
+        free(led);
+        return orc;
+    }
     /* our message names the file; HDF5's own error stack would add dozens of lines */
     H5E_auto2_t old_fn;
     void *old_data;
     H5Eget_auto2(H5E_DEFAULT, &old_fn, &old_data);
     H5Eset_auto2(H5E_DEFAULT, NULL, NULL);
-    hid_t file = H5Fcreate(tmp, H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
+    hid_t file = H5Fcreate(af.tmp, H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
     int bad = file < 0;
     if (!bad) {
         bad = put(file, "t", r->t, ns, 0, "s", NULL) ||
@@ -138,17 +142,11 @@ int gw_layer_impact_write_h5(const gw_layer_impact_result *r, const char *path, 
     }
     free(led);
     H5Eset_auto2(H5E_DEFAULT, old_fn, old_data);
-    if (!bad) { /* on disk before the rename makes it visible */
-        int fd = open(tmp, O_RDONLY);
-        bad = fd < 0 || fsync(fd) != 0;
-        if (fd >= 0)
-            close(fd);
-    }
-    if (bad || rename(tmp, path) != 0) {
-        remove(tmp);
+    if (bad) {
+        gw_afile_abort(&af);
         return gw_err_set(err, GW_EIO, "%s: cannot write the HDF5 file", path);
     }
-    return GW_OK;
+    return gw_afile_commit(&af, err); /* fsync, then the rename makes it visible */
 }
 #else
 int gw_layer_impact_write_h5(const gw_layer_impact_result *r, const char *path, const char *header,

@@ -163,12 +163,7 @@ static int write_text(const gw_layer_sample *s, const char *path, const char *he
     if (rc != GW_OK)
         return rc;
     fprintf(f.fp, SAMPLE_MAGIC " %d\n", s->body ? 2 : 1);
-    for (const char *p = header; p && *p;) {
-        const char *e = strchr(p, '\n');
-        size_t len = e ? (size_t)(e - p) : strlen(p);
-        fprintf(f.fp, "# %.*s\n", (int)len, p);
-        p += len + (e ? 1 : 0);
-    }
+    gw_write_comment(f.fp, header);
     fprintf(f.fp, "# units: metres; lines after 'n' are: x y r%s\n", s->body ? " body" : "");
     fprintf(f.fp, "width %.17g\nrm %.17g\nvolume_ratio %.17g\nporosity %.17g\nseed %ld\n",
             s->width, s->rm, s->volume_ratio, s->porosity, s->seed);
@@ -542,17 +537,14 @@ static int h5_body_write(hid_t f, const int *v, int n)
 }
 
 /* Written under a temporary name through gw_afile (signals held, fsync, rename
- * on commit): the stdio stream it opens is closed while HDF5 writes the
- * temporary, then reopened so that commit can sync and rename it. The 1.8 file
- * format (superblock 2) puts checksums on all metadata (see read_h5). */
+ * on commit): HDF5 creates the temporary by name (gw_afile_open_named). The
+ * 1.8 file format (superblock 2) puts checksums on all metadata (see read_h5). */
 static int write_h5(const gw_layer_sample *s, const char *path, const char *header, gw_err *err)
 {
     gw_afile f;
-    int rc = gw_afile_open(&f, path, err);
+    int rc = gw_afile_open_named(&f, path, err);
     if (rc != GW_OK)
         return rc;
-    fclose(f.fp);
-    f.fp = NULL;
     h5_quiet q;
     h5_quiet_on(&q);
     int version = 1, n = s->n;
@@ -579,8 +571,6 @@ static int write_h5(const gw_layer_sample *s, const char *path, const char *head
     if (fapl >= 0)
         H5Pclose(fapl);
     h5_quiet_off(&q);
-    if (!bad && !(f.fp = fopen(f.tmp, "r+b")))
-        bad = 1;
     if (bad) {
         gw_afile_abort(&f);
         return gw_err_set(err, GW_EIO, "sample '%s': HDF5 write failed%s%s", path, q.why[0] ? ": " : "", q.why);

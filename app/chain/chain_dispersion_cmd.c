@@ -141,35 +141,6 @@ static cJSON *disp_settings_json(const disp_cli *c, const gw_chain_disp_params *
     return o;
 }
 
-/* "granwave VERSION\ncommand: ...\nsettings: {...}"; caller frees (NULL: ENOMEM). */
-static char *disp_header(const cJSON *settings, int argc, char **argv)
-{
-    char *js = cJSON_PrintUnformatted(settings);
-    size_t len = 256 + (js ? strlen(js) : 0);
-    for (int i = 0; i < argc; i++)
-        len += strlen(argv[i]) + 1;
-    char *h = malloc(len);
-    if (h) {
-        size_t w = (size_t)snprintf(h, len, "granwave %s\ncommand: granwave dispersion", gw_version());
-        for (int i = 0; i < argc && w < len; i++)
-            w += (size_t)snprintf(h + w, len - w, " %s", argv[i]);
-        if (w < len)
-            snprintf(h + w, len - w, "\nsettings: %s", js ? js : "{}");
-    }
-    free(js);
-    return h;
-}
-
-static void write_comment(FILE *fp, const char *text)
-{
-    for (const char *p = text; p && *p;) {
-        const char *nl = strchr(p, '\n');
-        int len = nl ? (int)(nl - p) : (int)strlen(p);
-        fprintf(fp, "# %.*s\n", len, p);
-        p += len + (nl != NULL);
-    }
-}
-
 /* DIR/name through an atomic file: header, then body(ctx). */
 static int write_csv(const char *dir, const char *name, const char *hdr,
                      void (*body)(FILE *, const void *), const void *ctx, gw_err *err)
@@ -181,7 +152,7 @@ static int write_csv(const char *dir, const char *name, const char *hdr,
     int rc = gw_afile_open(&f, path, err);
     if (rc != GW_OK)
         return rc;
-    write_comment(f.fp, hdr);
+    gw_write_comment(f.fp, hdr);
     body(f.fp, ctx);
     return gw_afile_commit(&f, err);
 }
@@ -355,7 +326,7 @@ static int disp_column(const disp_cli *c, const gw_opt *opts, int argc, char **a
         cJSON_AddNumberToObject(js, "samples", sp.samples);
         cJSON_AddNumberToObject(js, "n_maxima", r.n_maxima);
         cJSON_AddStringToObject(js, "fftw_planner", c->measure ? "measure" : "estimate");
-        char *hdr = disp_header(js, argc, argv);
+        char *hdr = gw_cli_provenance("dispersion", argc, argv, js);
         if (c->out && (gw_mkdir_p(c->out, &err) != GW_OK ||
                        write_csv(c->out, "wall_spectrum.csv", hdr ? hdr : "", spectrum_body, &sp, &err) != GW_OK)) {
             fprintf(stderr, "granwave dispersion --out: %s\n", err.msg);
@@ -474,7 +445,7 @@ int gw_cmd_dispersion(int argc, char **argv)
     } else {
         cJSON *settings = disp_settings_json(&c, &p, &sp);
         cJSON *o = disp_json(&p, &r, settings, wall_ms);
-        char *hdr = disp_header(settings, argc, argv);
+        char *hdr = gw_cli_provenance("dispersion", argc, argv, settings);
         if (c.out && disp_write_out(c.out, hdr ? hdr : "", o, &r, &err) != GW_OK) {
             fprintf(stderr, "granwave dispersion --out: %s\n", err.msg);
             code = 1;

@@ -276,12 +276,7 @@ static int write_tables(const drop_cli *d, const gw_chain_drop_result *r, const 
         return gw_err_set(err, GW_EINVAL, "drop --out: path too long");
     if ((rc = gw_afile_open(&f, path, err)) != GW_OK)
         return rc;
-    for (const char *s = hdr; *s;) {
-        const char *nl = strchr(s, '\n');
-        int len = nl ? (int)(nl - s) : (int)strlen(s);
-        fprintf(f.fp, "# %.*s\n", len, s);
-        s += len + (nl ? 1 : 0);
-    }
+    gw_write_comment(f.fp, hdr);
     fprintf(f.fp, "# peak: located local maximum of the sensor force with F >= peak_threshold; "
                   "contacts: one digit per contact, sensor first (1 = closed)\n");
     fprintf(f.fp, "t_s,f_N,impact,cluster,contacts\n");
@@ -296,12 +291,7 @@ static int write_tables(const drop_cli *d, const gw_chain_drop_result *r, const 
         return gw_err_set(err, GW_EINVAL, "drop --out: path too long");
     if ((rc = gw_afile_open(&f, path, err)) != GW_OK)
         return rc;
-    for (const char *s = hdr; *s;) {
-        const char *nl = strchr(s, '\n');
-        int len = nl ? (int)(nl - s) : (int)strlen(s);
-        fprintf(f.fp, "# %.*s\n", len, s);
-        s += len + (nl ? 1 : 0);
-    }
+    gw_write_comment(f.fp, hdr);
     fprintf(f.fp, "# impact: contact episode of bead 1 with the sensor whose largest peak is >= "
                   "peak_threshold; t_end and v_out empty (nan) while in contact at t_max\n");
     fprintf(f.fp, "impact,t_start_s,t_end_s,f_max_N,t_fmax_s,v_in_m_s,v_out_m_s,n_peaks,cluster,located\n");
@@ -315,21 +305,11 @@ static int write_tables(const drop_cli *d, const gw_chain_drop_result *r, const 
 
 static char *drop_header(const drop_cli *d, int argc, char **argv)
 {
-    char *h = chain_cli_header(&d->c, "drop", argc, argv);
     cJSON *s = settings_json(d);
-    cJSON *dr = cJSON_GetObjectItem(s, "drop");
-    char *js = dr ? cJSON_PrintUnformatted(dr) : NULL;
-    char *out = NULL;
-    if (h && js) {
-        size_t len = strlen(h) + strlen(js) + 16;
-        out = malloc(len);
-        if (out)
-            snprintf(out, len, "%s\ndrop: %s", h, js);
-    }
-    free(js);
-    free(h);
+    char *h = gw_cli_provenance_add(chain_cli_header(&d->c, "drop", argc, argv), "drop",
+                                    cJSON_GetObjectItem(s, "drop"));
     cJSON_Delete(s);
-    return out;
+    return h;
 }
 
 static int write_outputs(const drop_cli *d, const gw_chain_drop_result *r, const gw_chain_trace *tr,

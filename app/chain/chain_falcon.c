@@ -316,8 +316,10 @@ int gw_cmd_falcon(int argc, char **argv)
         fprintf(stderr, "granwave falcon: %d collisions (N = %d..%d, %d velocities)\n", ncase,
                 f.n_lo, f.n_hi, f.nv);
     double t0 = gw_clock_ms();
-    int rc = gw_chain_sweep_n(&f.c.params, &f.c.run, f.v, f.nv, f.n_lo, f.n_hi, (int)jobs,
-                              !quiet, f.res, &err);
+    gw_cli_progress prog;
+    gw_cli_progress_init(&prog, "  ", "collisions", 0);
+    int rc = gw_chain_sweep_n_progress(&f.c.params, &f.c.run, f.v, f.nv, f.n_lo, f.n_hi, (int)jobs,
+                                       quiet ? NULL : gw_cli_progress_report, &prog, f.res, &err);
     f.wall_s = (gw_clock_ms() - t0) / 1e3;
     if (rc != GW_OK) {
         fprintf(stderr, "granwave falcon: %s\n", err.msg);
@@ -328,11 +330,8 @@ int gw_cmd_falcon(int argc, char **argv)
         analyse_velocity(&f, iv);
     cJSON *sum = summary_json(&f);
     if (f.c.out) {
-        char *hdr = chain_cli_header(&f.c, "falcon", argc, argv);
+        char *hdr = gw_cli_one_line(chain_cli_header(&f.c, "falcon", argc, argv), ' ');
         char path[4096];
-        for (char *p = hdr; p && *p; p++)
-            if (*p == '\n')
-                *p = ' ';
         rc = write_tables(&f, f.c.out, hdr ? hdr : "", &err);
         if (rc == GW_OK)
             rc = write_traces(&f, f.c.out, hdr ? hdr : "", &err);

@@ -272,20 +272,8 @@ cJSON *chain_cli_settings_json(const chain_cli *c)
 char *chain_cli_header(const chain_cli *c, const char *cmd, int argc, char **argv)
 {
     cJSON *o = chain_cli_settings_json(c);
-    char *js = cJSON_PrintUnformatted(o);
+    char *h = gw_cli_provenance(cmd, argc, argv, o);
     cJSON_Delete(o);
-    size_t len = 256 + strlen(cmd) + (js ? strlen(js) : 0);
-    for (int i = 0; i < argc; i++)
-        len += strlen(argv[i]) + 1;
-    char *h = malloc(len);
-    if (h) {
-        size_t w = (size_t)snprintf(h, len, "granwave %s\ncommand: granwave %s", gw_version(), cmd);
-        for (int i = 0; i < argc && w < len; i++)
-            w += (size_t)snprintf(h + w, len - w, " %s", argv[i]);
-        if (w < len)
-            snprintf(h + w, len - w, "\nsettings: %s", js ? js : "{}");
-    }
-    free(js);
     return h;
 }
 
@@ -372,15 +360,4 @@ int chain_cli_study_setup(const gw_param *t, void *setup, const gw_opt *opts, in
             return chain_cli_study_error(t, cmd, rc, err);
     }
     return GW_OK;
-}
-
-int chain_cli_progress(void *ctx, long done, long total)
-{
-    const double *t0 = ctx;
-    if (done % (total / 10 + 1) == 0 || done == total) {
-        double el = (gw_clock_ms() - *t0) / 1e3;
-        fprintf(stderr, "  %ld/%ld collisions, %.1f s elapsed, ~%.1f s left\n", done, total, el,
-                el / (double)done * (double)(total - done));
-    }
-    return 0;
 }

@@ -60,7 +60,7 @@ cJSON *chain_cli_settings_json(const chain_cli *c);
  * settings (also the drop's first_collision). */
 cJSON *chain_result_json(const chain_cli *c, const gw_chain_result *r, double wall_ms);
 
-/* Multi-line text (version, command line, settings) for file headers; caller frees. */
+/* The provenance header (gw_cli_provenance) with the settings of c; caller frees. */
 char *chain_cli_header(const chain_cli *c, const char *cmd, int argc, char **argv);
 
 /* Parse argv against opts (NULL-terminated). Returns -1 to go on, or the exit
@@ -79,9 +79,6 @@ int chain_cli_study_setup(const gw_param *t, void *setup, const gw_opt *opts, in
                           const char *cmd, gw_err *err);
 /* A library message "NAME: reason" as "CMD --NAME: reason" when NAME is a row of t. */
 int chain_cli_study_error(const gw_param *t, const char *cmd, int rc, gw_err *err);
-/* Progress lines of the chain commands (every tenth of the cases); ctx points to
- * the start time in ms (gw_clock_ms). */
-int chain_cli_progress(void *ctx, long done, long total);
 
 /* Print "granwave CMD: message" and return exit code 2. */
 int chain_cli_fail(const char *msg);

@@ -77,12 +77,13 @@ int gw_cmd_wavespeed(int argc, char **argv)
     gw_chain_wavespeed_setup_init(&ws);
     gw_chain_wavespeed_outcome wo;
     memset(&wo, 0, sizeof wo);
-    double t0 = gw_clock_ms();
+    gw_cli_progress prog;
+    gw_cli_progress_init(&prog, "  ", "collisions", 0);
     int rc = chain_cli_study_setup(gw_chain_wavespeed_setup_params(), &ws, opts, argc, argv, "wavespeed", &err);
     if (rc == GW_OK && !quiet)
         fprintf(stderr, "granwave wavespeed: %d collisions\n", nv * (int)(b - a + 1));
     if (rc == GW_OK)
-        rc = gw_chain_wavespeed_run(&ws, quiet ? NULL : chain_cli_progress, &t0, &wo, &err);
+        rc = gw_chain_wavespeed_run(&ws, quiet ? NULL : gw_cli_progress_report, &prog, &wo, &err);
     if (rc != GW_OK) {
         if (strncmp(err.msg, "wavespeed", 9) != 0)
             chain_cli_study_error(gw_chain_wavespeed_setup_params(), "wavespeed", rc, &err);
@@ -124,10 +125,7 @@ int gw_cmd_wavespeed(int argc, char **argv)
         char path[4096];
         if (c.out) {
             gw_afile af;
-            char *hdr = chain_cli_header(&c, "wavespeed", argc, argv);
-            for (char *h = hdr; h && *h; h++)
-                if (*h == '\n')
-                    *h = ' ';
+            char *hdr = gw_cli_one_line(chain_cli_header(&c, "wavespeed", argc, argv), ' ');
             if (gw_path_join(path, sizeof path, c.out, "wavespeed.csv") != GW_OK ||
                 gw_afile_open(&af, path, &err) != GW_OK) {
                 code = 1;

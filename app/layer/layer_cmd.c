@@ -46,39 +46,6 @@ static int fail(const char *cmd, const char *msg)
     return 2;
 }
 
-/* "granwave VERSION\ncommand: ..." for file headers; caller frees. */
-static char *command_line(const char *cmd, int argc, char **argv)
-{
-    size_t len = 128 + strlen(cmd);
-    for (int i = 0; i < argc; i++)
-        len += strlen(argv[i]) + 1;
-    char *h = malloc(len);
-    if (!h)
-        return NULL;
-    size_t w = (size_t)snprintf(h, len, "granwave %s\ncommand: granwave %s", gw_version(), cmd);
-    for (int i = 0; i < argc && w < len; i++)
-        w += (size_t)snprintf(h + w, len - w, " %s", argv[i]);
-    return h;
-}
-
-/* hdr + "\nsettings: " + settings as one-line JSON; takes hdr (may be NULL
- * after a failed allocation: then NULL). Caller frees. */
-static char *with_settings(char *hdr, const cJSON *settings)
-{
-    char *js = settings ? cJSON_PrintUnformatted(settings) : NULL;
-    char *out = NULL;
-    if (hdr && js) {
-        size_t len = strlen(hdr) + strlen(js) + 16;
-        if ((out = malloc(len)))
-            snprintf(out, len, "%s\nsettings: %s", hdr, js);
-    }
-    cJSON_free(js);
-    if (!out)
-        return hdr;
-    free(hdr);
-    return out;
-}
-
 /* ------------------------------------------------------------ layer-make --- */
 
 static const char *make_summary =
@@ -164,7 +131,7 @@ int gw_cmd_layer_make(int argc, char **argv)
         return rc == GW_EINVAL ? 2 : 1;
     }
     cJSON *settings = make_settings(&mp, &m.lp);
-    char *hdr = with_settings(command_line("layer-make", argc, argv), settings);
+    char *hdr = gw_cli_provenance("layer-make", argc, argv, settings);
     size_t ilen = (hdr ? strlen(hdr) : 0) + 512;
     char *info = malloc(ilen);
     if (info)
@@ -558,12 +525,8 @@ int gw_cmd_layer_impact(int argc, char **argv)
     if (c.out) {
         /* the command line and every setting (defaults included, the step used)
          * head each CSV and the HDF5 "run" attribute */
-        char *hdr = with_settings(command_line("layer-impact", argc, argv), cJSON_GetObjectItem(j, "settings"));
+        char *hdr = gw_cli_one_line(gw_cli_provenance("layer-impact", argc, argv, cJSON_GetObjectItem(j, "settings")), ';');
         char path[4096];
-        if (hdr)
-            for (char *p = hdr; *p; p++)
-                if (*p == '\n')
-                    *p = ';';
         if (write_csvs(&c, &r, hdr ? hdr : "", &err) != GW_OK ||
             gw_path_join(path, sizeof path, c.out, "impact.json") != GW_OK ||
             gw_json_write(path, j, &err) != GW_OK) {

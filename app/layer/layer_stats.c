@@ -42,20 +42,6 @@ static int fail(const char *msg)
     return 2;
 }
 
-static char *command_line(int argc, char **argv)
-{
-    size_t len = 64;
-    for (int i = 0; i < argc; i++)
-        len += strlen(argv[i]) + 1;
-    char *h = malloc(len);
-    if (!h)
-        return NULL;
-    size_t w = (size_t)snprintf(h, len, "granwave layer-stats");
-    for (int i = 0; i < argc && w < len; i++)
-        w += (size_t)snprintf(h + w, len - w, " %s", argv[i]);
-    return h;
-}
-
 /* The layer model's values of the parameters a table may leave out. */
 static gw_stats_defaults layer_defaults(void)
 {
@@ -160,7 +146,7 @@ int gw_cmd_layer_stats(int argc, char **argv)
     if (rc == GW_OK)
         rc = gw_stats_analyse(&S, &R, &err);
     gw_stats_setup_clear(&S);
-    if (rc == GW_OK && !(R.cmdline = command_line(argc, argv)))
+    if (rc == GW_OK && !(R.cmdline = gw_cli_command_line("layer-stats", argc, argv)))
         rc = gw_err_set(&err, GW_ENOMEM, "%s: out of memory", R.input);
     if (rc != GW_OK) {
         gw_stats_analysis_free(&R);

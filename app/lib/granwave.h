@@ -3,6 +3,7 @@
  *
  *   gw_common.h  status codes, gw_err, validation, files, fits, JSON
  *   gw_solver.h  the ODE solver layer (CVODE, ARKode, RK4, Verlet backends)
+ *   gw_pool.h    the worker pool: independent cases on threads, progress callback
  *   gw_sweep.h   grids of cases (INI configs) and the sweep model interface
  *   gw_stats.h   statistics of a layer sweep table: groups, bouncing diagram, B.31 fit
  *   gw_param.h   parameter tables: each parameter described once
@@ -21,6 +22,7 @@
 
 #include "gw_version.h"
 #include "gw_common.h"
+#include "gw_pool.h"
 #include "gw_solver.h"
 #include "gw_sweep.h"
 #include "gw_stats.h"

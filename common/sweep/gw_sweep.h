@@ -20,6 +20,7 @@
 #define GW_SWEEP_H
 
 #include "gw_common.h"
+#include "gw_pool.h"
 
 #define GW_SWEEP_MAX_KEYS 32
 #define GW_SWEEP_CONFIG_MAX (1L << 20) /* bytes: a config is read whole, bounded */
@@ -90,17 +91,7 @@ int gw_sweep_write_table(const char *dir, const gw_sweep_config *cfg, const gw_s
 
 /* ---- running cases in memory (gw_sweep_run.c) ---- */
 
-/* One case k of a set; GW_OK or a status with a message in err. */
-typedef int (*gw_case_fn)(void *ctx, long k, gw_err *err);
-
-/* Run fn(ctx, k) for k = 0 .. n-1 on jobs threads (<= 0: one per online CPU;
- * never more than n). Cases must not share mutable state. progress (may be
- * NULL) is called after every finished case with the number finished, one
- * call at a time, from any of the threads. Stops taking new cases at the
- * first failure (returns its status, message in err) or when progress returns
- * non-zero (GW_ECANCELED); cases under way finish first. */
-int gw_cases_run(long n, int jobs, gw_case_fn fn, void *ctx, gw_progress_fn progress, void *pctx,
-                 gw_err *err);
+/* gw_cases_run and gw_case_fn, the worker pool these run on: gw_pool.h. */
 
 /* Every case of cfg run by model m in memory, no files: first every case is
  * checked (m->check, when the model has one: a bad value is refused before any

@@ -1,0 +1,100 @@
+/*
+ * gw_cli_out.c: what the program adds to every output (gw_cli.h), built in one
+ * place: the provenance header (version, command line, settings as one-line
+ * JSON) that heads each table, trace and HDF5 "run" attribute, and the progress
+ * lines on stderr of the long commands (falcon, wavespeed, sweep). The library
+ * never prints: it gets the header as a string and reports progress through a
+ * gw_progress_fn, which is gw_cli_progress_report here.
+ *
+ * Progress: after d of n units at t seconds elapsed, rate = d / t units/s and
+ * the time left is (n - d) / rate seconds.
+ */
+#include <stdlib.h>
+#include <string.h>
+
+#include "gw_cli.h"
+
+char *gw_cli_command_line(const char *cmd, int argc, char **argv)
+{
+    size_t len = 16 + strlen(cmd);
+    for (int i = 0; i < argc; i++)
+        len += strlen(argv[i]) + 1;
+    char *h = malloc(len);
+    if (!h)
+        return NULL;
+    size_t w = (size_t)snprintf(h, len, "granwave %s", cmd);
+    for (int i = 0; i < argc && w < len; i++)
+        w += (size_t)snprintf(h + w, len - w, " %s", argv[i]);
+    return h;
+}
+
+char *gw_cli_provenance_add(char *hdr, const char *key, const cJSON *value)
+{
+    if (!hdr || !value)
+        return hdr;
+    char *js = cJSON_PrintUnformatted(value);
+    char *out = NULL;
+    if (js) {
+        size_t len = strlen(hdr) + strlen(key) + strlen(js) + 4;
+        if ((out = malloc(len)))
+            snprintf(out, len, "%s\n%s: %s", hdr, key, js);
+    }
+    cJSON_free(js);
+    free(hdr);
+    return out;
+}
+
+char *gw_cli_provenance(const char *cmd, int argc, char **argv, const cJSON *settings)
+{
+    char *line = gw_cli_command_line(cmd, argc, argv);
+    if (!line)
+        return NULL;
+    const char *v = gw_version();
+    size_t len = strlen(v) + strlen(line) + 32;
+    char *h = malloc(len);
+    if (h)
+        snprintf(h, len, "granwave %s\ncommand: %s", v, line);
+    free(line);
+    return gw_cli_provenance_add(h, "settings", settings);
+}
+
+char *gw_cli_one_line(char *text, char sep)
+{
+    for (char *p = text; p && *p; p++)
+        if (*p == '\n')
+            *p = sep;
+    return text;
+}
+
+/* ---- progress ---- */
+
+void gw_cli_progress_init(gw_cli_progress *p, const char *prefix, const char *unit, double every_ms)
+{
+    memset(p, 0, sizeof *p);
+    p->prefix = prefix;
+    p->unit = unit;
+    p->before = -1;
+    p->every_ms = every_ms;
+    p->fp = stderr;
+    p->t0 = p->last = gw_clock_ms();
+}
+
+int gw_cli_progress_report(void *ctx, long done, long total)
+{
+    gw_cli_progress *p = ctx;
+    if (!p || p->quiet || done <= 0)
+        return 0;
+    double now = gw_clock_ms();
+    int due = done >= total || (p->every_ms > 0 ? now - p->last >= p->every_ms : done % (total / 10 + 1) == 0);
+    if (!due)
+        return 0;
+    double el = (now - p->t0) / 1e3;
+    double rate = el > 0 ? done / el : 0;
+    fprintf(p->fp, "%s%ld/%ld %s", p->prefix, done, total, p->unit);
+    if (p->before >= 0)
+        fprintf(p->fp, " (%ld done before)", p->before);
+    fprintf(p->fp, ", %.2f %s/s, %.1f s elapsed, ~%.1f s left\n", rate, p->unit, el,
+            el / (double)done * (double)(total - done));
+    p->last = now;
+    return 0;
+}

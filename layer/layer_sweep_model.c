@@ -88,8 +88,13 @@ static int prepare(gw_layer_impact_setup *s, int nk, const char *const *names, c
                                      : gw_err_set(err, GW_EINVAL, "unknown parameter '%s'", names[i]);
     if (rc == GW_OK && pl.point >= pl.points)
         rc = gw_err_set(err, GW_EINVAL, "point: %ld is outside [0, points - 1 = %ld]", pl.point, pl.points - 1);
-    if (rc == GW_OK)
+    if (rc == GW_OK) {
+        const double x0 = s->x;
         s->x += ((double)pl.point - 0.5 * (double)(pl.points - 1)) * pl.spacing;
+        if (!(fabs(s->x) <= 1e6)) /* the x row's range, named by the keys that moved it there */
+            rc = gw_err_set(err, GW_EINVAL, "spacing: impact point %ld of %ld, %g m apart around x = %g m, lies "
+                            "at %g m, outside [-1e6, 1e6]", pl.point, pl.points, pl.spacing, x0, s->x);
+    }
     return rc == GW_OK || rc == GW_ENOMEM ? rc : GW_EINVAL;
 }
 

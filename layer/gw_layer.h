@@ -379,6 +379,15 @@ typedef struct gw_layer_impact_params {
     int remove_walls;   /* 1: no left/right/bottom walls from the impact on [0] */
     double energy_tol;  /* > 0: stop with GW_ESOLVER when the ledger closure
                            |sum - A|/A exceeds it at a sample [0 = off] */
+    /* on_sample (may be NULL) [NULL]: called with sample_ctx at every recorded
+     * sample k (the layer's state at res->t[k], s) with final = 0, and once more
+     * after the last step with final = 1 and k = ns - 1 (the end state, the same
+     * as the last sample's). The layer is read-only there (gw_layer_particle,
+     * gw_layer_radius, ...); the block is particle gw_layer_n(L) - 1. A non-zero
+     * return (a gw status) stops the run with that status; res is then freed as
+     * after any failure. The run itself is unchanged by the hook. */
+    int (*on_sample)(void *sample_ctx, const gw_layer *L, int k, int final);
+    void *sample_ctx;
 } gw_layer_impact_params;
 
 gw_layer_impact_params gw_layer_impact_params_default(void);

@@ -12,7 +12,9 @@
  * gw_layer_impact_run reads the sample, resolves the setup as the command does
  * (the sample's mass law and clump mass unless given) and runs gw_layer_impact;
  * its results (gw_layer_impact_outcome) have a table too, with the time series
- * (ledger B.7-B.14, block, crowns) as arrays.
+ * (ledger B.7-B.14, block, crowns, the crowns' cross-correlation and spectra)
+ * as arrays, and, when asked for (snapshots), the particles' states at given
+ * times: what `layer-impact --json` prints and its --out files (CSV, VTK) hold.
  *
  * Errors: GW_EINVAL "NAME: reason" naming the parameter; the sample reader's
  * GW_EIO / GW_EFORMAT naming the file; solver failures with their message.
@@ -53,6 +55,8 @@ typedef struct gw_layer_impact_setup {
     int remove_walls;      /* no walls from the impact on [0] */
     int full;              /* run to t-max after the outcome is decided [0] */
     int until;             /* rebound, verdict (choice, GW_LAYER_UNTIL_*) [rebound] */
+    gw_param_list snapshots; /* times, s, of particle snapshots (library only, no
+                                flag of the command) [none: off] */
 } gw_layer_impact_setup;
 
 /* The table of gw_layer_impact_setup (static, NULL-terminated). */
@@ -77,6 +81,20 @@ typedef struct gw_layer_impact_outcome {
     int mass_law;          /* the law used (GW_LAYER_MASS_*) */
     int exact;
     double dt;             /* fixed step used, s (0 for cvode/arkode) */
+    char *undecided;       /* r.undecided, NULL when "" (owned) */
+    int nxcorr;            /* entries of r.xcorr_delay and r.xcorr_rho listed:
+                              nrings - 1 (pairs k, k + 1), 0 without the analysis */
+    /* Snapshots (setup's snapshots; none by default): snapshot j is the state at
+     * the first output sample at or after the j-th time asked for, or the end
+     * state when the run ended before it (snap_t says which time it is). */
+    int nsnap;             /* snapshots: the number of times asked for */
+    int nparticles;        /* particles in each: the sample's discs, then the block */
+    int block_index;       /* the block's index among them (nparticles - 1), -1 without snapshots */
+    int snap_rows;         /* nsnap * nparticles */
+    double *snap_t;        /* [nsnap] s; owns one allocation with snap and particle_r */
+    double *snap;          /* [snap_rows][6] per particle x, y (m), theta (rad), vx, vy (m/s),
+                              omega (rad/s), as gw_layer_particle */
+    double *particle_r;    /* [nparticles] radius, m */
 } gw_layer_impact_outcome;
 
 /* The table of gw_layer_impact_outcome's results. */

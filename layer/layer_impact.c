@@ -22,7 +22,9 @@
  * Crowns: rings of width d_c centred on the initial block-target contact point
  * (layer_crowns.c).
  * Integration: any backend; verlet (explicit DEM, the program's default) with
- * dt = 0 takes gw_layer_impact_dem_dt.
+ * dt = 0 takes gw_layer_impact_dem_dt. The caller's on_sample hook sees the
+ * layer at every recorded sample and at the end (the study's snapshots,
+ * layer_setup.c), reading only.
  * Units: SI.
  */
 #include <math.h>
@@ -301,6 +303,8 @@ int gw_layer_impact(const gw_layer_sample *smp, const gw_layer_params *lp0,
         gw_layer_rings(L, res->impact_x, res->impact_y, w, ip->nrings, strain0 + ip->nrings,
                        strain0, strain0 + 2 * ip->nrings);
         record(res, L, n, w, strain0);
+        if (ip->on_sample && (rc = ip->on_sample(ip->sample_ctx, L, 0, 0)) != GW_OK)
+            gw_err_set(err, rc, "layer-impact: the sample hook stopped the run at t = 0");
     }
     if (rc == GW_OK && vtk_dir) {
         char path[4096];
@@ -316,6 +320,10 @@ int gw_layer_impact(const gw_layer_sample *smp, const gw_layer_params *lp0,
         if (rc != GW_OK)
             break;
         record(res, L, n, w, strain0);
+        if (ip->on_sample && (rc = ip->on_sample(ip->sample_ctx, L, res->ns - 1, 0)) != GW_OK) {
+            gw_err_set(err, rc, "layer-impact: the sample hook stopped the run at t = %.9g s", tk);
+            break;
+        }
         if (ip->energy_tol > 0 && res->energy_error > ip->energy_tol) {
             double sb[6];
             gw_layer_particle(L, n, sb);
@@ -350,6 +358,8 @@ int gw_layer_impact(const gw_layer_sample *smp, const gw_layer_params *lp0,
     res->wall_ms = gw_clock_ms() - t0;
     res->t_end = gw_layer_time(L);
     gw_layer_get_stats(L, &res->stats);
+    if (rc == GW_OK && ip->on_sample && (rc = ip->on_sample(ip->sample_ctx, L, res->ns - 1, 1)) != GW_OK)
+        gw_err_set(err, rc, "layer-impact: the sample hook stopped the run at its end");
     if (rc == GW_OK && vtk_dir) {
         char path[4096];
         if (gw_path_join(path, sizeof path, vtk_dir, "snapshot_end.vtk") != GW_OK)

@@ -3,7 +3,9 @@
  * (gw_layer_study.h): the table of its inputs, their resolution as
  * `granwave layer-impact` resolves them, the run, and the table of its results.
  * Derived numbers: Froude number Fr = V_i / sqrt(2 g R_b) (B.15) with
- * R_b = rb-rm R_m; penetration in R_m. Model: physics.md 2.1-2.4 (Hertz normal
+ * R_b = rb-rm R_m; penetration in R_m. Snapshots (off by default): the
+ * particles' states x, y (m), theta (rad), vx, vy (m/s), omega (rad/s) copied
+ * by the impact's sample hook at the output samples asked for. Model: physics.md 2.1-2.4 (Hertz normal
  * force B.1, B.3, Mindlin tangential stiffness B.4, Coulomb cap B.2, ledger
  * B.7-B.14). SI units, angles in degrees.
  */
@@ -65,6 +67,9 @@ static const gw_param impact_params[] = {
            "rebound: run until the rebound is complete (T_f: the block's normal velocity back to zero after it "
            "left, physics.md 2.3) or the block is found not to bounce; verdict: stop at the bounce verdict (e_n, "
            "e, alpha_r then null; the _first values given) [rebound]"),
+    ROW("snapshots", GW_PARAM_LIST, snapshots, "s", 0, 1e3, 0, 0, NULL, "T,...",
+        "particle snapshots at these times, s: each the first output sample at or after it, the end state "
+        "when the run ended before (library only) [none]"),
     GW_PARAM_END};
 
 const gw_param *gw_layer_impact_setup_params(void)
@@ -149,6 +154,39 @@ static const gw_param outcome_fields[] = {
     RA("peak_strain_t", r.peak_strain_t, "s", "nrings", NULL, NULL, "time of each crown's strain-energy peak"),
     RA("peak_kinetic_t", r.peak_kin_t, "s", "nrings", NULL, NULL, "time of each crown's kinetic-energy peak"),
     RA("ring_r", r.ring_r, "m", "nrings", NULL, NULL, "crown mid radius"),
+    /* the bounce's events and the first free-flight maximum (layer_outcome.c) */
+    RD("t_f", r.t_f, "s", "T_f: normal velocity back to zero after the bounce (NaN: not reached)"),
+    RD("t_leave", r.t_leave, "s", "the bounce event: the block leaves the layer moving up (NaN: none)"),
+    RD("e_n_first", r.e_n_first, "", "e_n at the first free-flight maximum (the largest v_y up to t_leave)"),
+    RD("e_first", r.e_first, "", "e at the first free-flight maximum"),
+    RD("alpha_r_first", r.alpha_r_first_deg, "deg", "alpha_r at the first free-flight maximum"),
+    RD("v_nr_first", r.v_nr_first, "m/s", "V_nr at the first free-flight maximum"),
+    RD("v_r_first", r.v_r_first, "m/s", "V_r at the first free-flight maximum"),
+    RD("t_rebound_first", r.t_rebound_first, "s", "time of the first free-flight maximum"),
+    {.name = "undecided", .type = GW_PARAM_TEXT, .offset = OFF(undecided), .unit = "",
+     .help = "why the outcome is undecided (None: decided, or stopped at the verdict on purpose)"},
+    RL("zeno_guards", r.stats.zeno_guards, "Zeno guards: event restarts forced past"),
+    /* crowns by cross-correlation and the rings' spectra (layer_crowns.c) */
+    RD("wave_speed_xcorr", r.wave_speed_xcorr, "m/s", "crown speed from the cross-correlation delays of neighbouring rings"),
+    RD("wave_speed_xcorr_err", r.wave_speed_xcorr_err, "m/s", "its standard error from the delays' scatter"),
+    RI("wave_xcorr_gaps", r.xcorr_gaps, "ring pairs used"),
+    RI("nxcorr", nxcorr, "ring pairs listed: nrings - 1 (0 without the analysis)"),
+    RA("xcorr_delay", r.xcorr_delay, "s", "nxcorr", NULL, NULL, "delay from ring k to ring k + 1 (NaN: pair unused)"),
+    RA("xcorr_rho", r.xcorr_rho, "", "nxcorr", NULL, NULL, "normalised correlation peak of that pair (NaN: unused)"),
+    RI("spec_len", r.spec_len, "frequencies of the spectra, f_l = l spec_df"),
+    RD("spec_df", r.spec_df, "Hz", "frequency step of the spectra"),
+    RA("spec_strain", r.spec_strain, "J^2/Hz", "spec_len", "nrings", NULL,
+       "one-sided PSD of each ring's strain-energy increase"),
+    RA("spec_kinetic", r.spec_kin, "J^2/Hz", "spec_len", "nrings", NULL, "one-sided PSD of each ring's kinetic energy"),
+    /* snapshots (off unless the setup's snapshots asks) */
+    RI("nsnap", nsnap, "snapshots taken"),
+    RI("nparticles", nparticles, "particles per snapshot (the discs, then the block)"),
+    RI("block_index", block_index, "the block's index in a snapshot (-1: no snapshots)"),
+    RI("snap_rows", snap_rows, "nsnap * nparticles"),
+    RA("snapshot_t", snap_t, "s", "nsnap", NULL, NULL, "time of each snapshot"),
+    RA("snapshot_r", particle_r, "m", "nparticles", NULL, NULL, "particle radii"),
+    RA("snapshot", snap, "m, rad, m/s, rad/s", "snap_rows", "6", "x,y,theta,vx,vy,omega",
+       "particle states, snapshot after snapshot"),
     GW_PARAM_END};
 
 const gw_param *gw_layer_impact_outcome_fields(void)
@@ -160,6 +198,63 @@ void gw_layer_impact_outcome_free(gw_layer_impact_outcome *out)
 {
     gw_layer_impact_result_free(&out->r);
     out->nregions = 0;
+    free(out->undecided);
+    free(out->snap_t); /* snap and particle_r with it */
+    out->undecided = NULL;
+    out->snap_t = out->snap = out->particle_r = NULL;
+    out->nxcorr = out->nsnap = out->nparticles = out->snap_rows = 0;
+    out->block_index = -1;
+}
+
+/* ---- snapshots: the impact's on_sample hook ---- */
+
+typedef struct snap_req {
+    double t; /* asked for, s */
+    int j;    /* its place in the list */
+} snap_req;
+
+typedef struct snap_ctx {
+    gw_layer_impact_outcome *out;
+    snap_req *req; /* sorted by time */
+    int next;      /* first request not taken */
+} snap_ctx;
+
+static int req_cmp(const void *a, const void *b)
+{
+    const snap_req *x = a, *y = b;
+    return x->t < y->t ? -1 : x->t > y->t ? 1 : x->j - y->j;
+}
+
+/* Copy the layer's state into snapshot j (allocating them all at the first call). */
+static int take_snapshots(void *ctx, const gw_layer *L, int k, int final)
+{
+    (void)k;
+    snap_ctx *c = ctx;
+    gw_layer_impact_outcome *o = c->out;
+    const int np = gw_layer_n(L);
+    if (!o->snap_t) {
+        size_t rows = (size_t)o->nsnap * (size_t)np;
+        o->snap_t = malloc(((size_t)o->nsnap + 6 * rows + (size_t)np) * sizeof(double));
+        if (!o->snap_t)
+            return GW_ENOMEM;
+        o->snap = o->snap_t + o->nsnap;
+        o->particle_r = o->snap + 6 * rows;
+        o->nparticles = np;
+        o->block_index = np - 1;
+        o->snap_rows = (int)rows;
+        for (int i = 0; i < np; i++)
+            o->particle_r[i] = gw_layer_radius(L, i);
+    }
+    const double t = gw_layer_time(L);
+    /* k dt_out is computed, not summed: a time asked for as such a multiple is
+     * met at its sample, within rounding */
+    for (; c->next < o->nsnap && (final || t >= c->req[c->next].t - 1e-12 * fmax(t, 1e-300)); c->next++) {
+        const int j = c->req[c->next].j;
+        o->snap_t[j] = t;
+        for (int i = 0; i < np; i++)
+            gw_layer_particle(L, i, o->snap + 6 * ((size_t)j * np + i));
+    }
+    return GW_OK;
 }
 
 /* the name of a choice row's value ("" when not given) */
@@ -269,14 +364,39 @@ int gw_layer_impact_setup_check(const gw_layer_impact_setup *s, gw_err *err)
 int gw_layer_impact_run(const gw_layer_impact_setup *s, gw_layer_impact_outcome *out, gw_err *err)
 {
     memset(out, 0, sizeof *out);
+    out->block_index = -1;
     gw_layer_sample smp;
     gw_layer_params lp;
     gw_layer_impact_params ip;
     const gw_solver_type *type = NULL;
     gw_solver_params sp;
     int rc = prepare(s, &smp, &lp, &ip, &type, &sp, err);
+    snap_ctx sc = {.out = out, .req = NULL, .next = 0};
+    if (rc == GW_OK && s->snapshots.n > 0) {
+        if (s->snapshots.n > 10000)
+            rc = gw_err_set(err, GW_EINVAL, "snapshots: %d times, at most 10000", s->snapshots.n);
+        else if (!(sc.req = malloc((size_t)s->snapshots.n * sizeof *sc.req)))
+            rc = gw_err_set(err, GW_ENOMEM, "snapshots: out of memory");
+        for (int j = 0; rc == GW_OK && j < s->snapshots.n; j++)
+            sc.req[j] = (snap_req){.t = s->snapshots.v[j], .j = j};
+        if (rc == GW_OK) {
+            qsort(sc.req, (size_t)s->snapshots.n, sizeof *sc.req, req_cmp);
+            out->nsnap = s->snapshots.n;
+            ip.on_sample = take_snapshots;
+            ip.sample_ctx = &sc;
+        }
+    }
     if (rc == GW_OK)
         rc = gw_layer_impact(&smp, &lp, &ip, type, &sp, NULL, &out->r, err);
+    free(sc.req);
+    if (rc == GW_ENOMEM && out->nsnap > 0 && !out->snap_t)
+        gw_err_set(err, rc, "snapshots: out of memory for %d snapshots of %d particles", out->nsnap, smp.n + 1);
+    if (rc != GW_OK) { /* no snapshots from a failed run */
+        free(out->snap_t);
+        out->snap_t = out->snap = out->particle_r = NULL;
+        out->nsnap = out->nparticles = out->snap_rows = 0;
+        out->block_index = -1;
+    }
     if (rc == GW_OK || out->r.ns > 0) {
         out->rm = smp.rm;
         out->penetration_rm = out->r.penetration / smp.rm;
@@ -286,6 +406,12 @@ int gw_layer_impact_run(const gw_layer_impact_setup *s, gw_layer_impact_outcome 
         out->mass_law = lp.mass_law;
         out->exact = s->exact;
         out->dt = out->r.dt;
+        out->nxcorr = out->r.xcorr_delay && out->r.nrings > 1 ? out->r.nrings - 1 : 0;
+        const size_t nu = strlen(out->r.undecided);
+        if (nu > 0 && (out->undecided = malloc(nu + 1)))
+            memcpy(out->undecided, out->r.undecided, nu + 1);
+        else if (nu > 0 && rc == GW_OK)
+            rc = gw_err_set(err, GW_ENOMEM, "layer-impact: out of memory");
     }
     gw_layer_sample_free(&smp);
     return rc;

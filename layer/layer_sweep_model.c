@@ -68,7 +68,8 @@ static const gw_param placement_params[] = {
 static int has_key(const char *name)
 {
     const gw_param *p = gw_param_find(gw_layer_impact_setup_params(), name);
-    return (p && gw_param_is_input(p)) || gw_param_find(placement_params, name);
+    /* snapshots keep the particles in memory: a library option, not a sweep key */
+    return (p && gw_param_is_input(p) && strcmp(p->name, "snapshots") != 0) || gw_param_find(placement_params, name);
 }
 
 /* The case's setup from its pairs with the impact point placed (x shifted);

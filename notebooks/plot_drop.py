@@ -24,8 +24,9 @@ collision time 1.04 ms for N = 40 at h = 5.1 mm).
 Writes DIR/figures/drop_signal.png (the sensor signal over 10 ms) and
 DIR/figures/drop_impacts.png (every impact's peak force against time: the column against a
 single bead and a rigid block). Exit status: 0 ok, 2 on a missing or malformed input.
-Use Debian's /usr/bin/python3. load_cases and make_figures are also used by
-notebooks/experiment.ipynb.
+Use Debian's /usr/bin/python3. notebooks/experiment.ipynb uses run_cases_module (the same
+cases through the Python module's granwave.drop, in memory: the keys of drop.json that
+the figures read, and the signal) and make_figures.
 """
 
 import json
@@ -70,6 +71,71 @@ def run_cases(d, names=None, program=None):
             p = os.path.join(out, f)
             if os.path.isfile(p):
                 os.remove(p)
+
+
+def _kwargs(args):
+    """A case's program options (CASES, DAMPING) as granwave.drop keywords."""
+    kw, it = {}, iter(args)
+    for flag in it:
+        key = flag[2:].replace("-", "_")
+        if key == "block":  # the one flag without a value
+            kw[key] = True
+            continue
+        kw[key] = next(it)
+    return kw
+
+
+def _none(v):
+    """NaN -> None, numpy scalars -> Python numbers (the program's JSON)."""
+    if isinstance(v, dict):
+        return {k: _none(x) for k, x in v.items()}
+    if isinstance(v, (list, tuple, np.ndarray)):
+        return [_none(x) for x in v]
+    if isinstance(v, (np.bool_, bool)):
+        return bool(v)
+    if isinstance(v, (np.integer, int)):
+        return int(v)
+    if isinstance(v, (np.floating, float)):
+        return None if v != v else float(v)
+    return v
+
+
+def case_from_module(name, gw=None):
+    """Case name run through the Python module (granwave.drop, the library's drop:
+    the program's numbers): {"json": the keys of drop.json the figures and tables
+    read, "t": s, "f": N (the sensor signal, every case)}. In memory, no files."""
+    gw = gw or gwdata.import_granwave()
+    kw = _kwargs([*CASES[name], *DAMPING])
+    r = gw.drop(**kw)
+    defaults = {p["keyword"]: p["default"] for p in gw.params("drop")}
+    im = r["impacts"]
+    impacts = [{c: im[c][i] for c in im} for i in range(len(im["f_max"]))]
+    wp = r["wall_peaks"]
+    peaks = [{"t": wp["t"][i], "f": wp["f"][i], "impact": r["peak_impact"][i], "cluster": r["peak_cluster"][i],
+              "contacts": "".join(str(int(c)) for c in r["peak_contacts"][i])} for i in range(len(wp["t"]))]
+    js = {k: r[k] for k in ("n", "block", "height", "v_imp", "t_fall", "t_max", "peak_threshold", "n_impacts",
+                            "n_contact_episodes", "n_peaks", "f_max", "t_fmax", "impact_rises",
+                            "impacts_monotone", "energy_error", "t_end")}
+    js.update(version=gw.version(), command="drop", solver=kw.get("solver", defaults["solver"]),
+              impacts=impacts, wall_peaks=peaks, first_collision=r["first_collision"], energy=r["energy"])
+    js["settings"] = {
+        "version": gw.version(),
+        "model": {"material": kw.get("material", defaults["material"]),
+                  "wall_material": kw.get("wall_material", defaults["wall_material"]),
+                  "radius": r["radius"], "mass": r["mass"], "k": r["k"], "kwall": r["kwall"],
+                  "gravity": r["gravity"], "damping": kw.get("damping", defaults["damping"]),
+                  "gamma": r["gamma"], "alpha": r["alpha"], "restitution_target": float(kw["restitution"]) if "restitution" in kw else None,
+                  "restitution_v": kw.get("restitution_v", r["v_imp"])},
+        "solver": {"name": kw.get("solver", defaults["solver"]), "method": kw.get("method", defaults["method"]),
+                   "rtol": float(kw.get("rtol", defaults["rtol"])), "atol": float(kw.get("atol", defaults["atol"]))},
+        "drop": {"n_column": r["n_column"], "block": r["block"], "height": r["height"], "gravity": r["gravity"],
+                 "t_max": r["t_max"], "dt_out": r["dt_out"], "peak_threshold": r["peak_threshold"]}}
+    return {"name": name, "json": _none(js), "t": np.asarray(r["t"]), "f": np.asarray(r["f_wall"])}
+
+
+def run_cases_module(names=None, gw=None):
+    """{name: case_from_module(name)} for the case names (default: all)."""
+    return {n: case_from_module(n, gw) for n in names or CASES}
 
 
 def load_case(d, name):

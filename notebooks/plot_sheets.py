@@ -24,7 +24,9 @@ Functions used by notebooks/experiment.ipynb:
   plateau_markdown(data_dir)          the plateau table of docs/sheets.md
   fig_plateau(data_dir)               wall force of N = 30 and eps_eff(N) per mechanism
   write_figures(data_dir, out_dir)    all PNGs (what main() does)
-and, for runs held in memory ({label: softwall JSON}, e.g. fresh `softwall --sheets --json`):
+and, for runs held in memory ({label: softwall JSON}, e.g. fresh `softwall --sheets --json`,
+or granwave.softwall(sheets=True) through softwall_from_module):
+  softwall_from_module(r, version)    the module's Result in the layout of the program's JSON
   table2_pairs(sw)                    each sheets[] entry with its row of soft_walls_table2.csv
   fig_sheets_compare(runs, nd_tol)    N_d, tau_max(1), tau_max(N_d) per sheet against Table 2
   closeness_markdown(runs, nd_tol)    how close each sheet gets, per law
@@ -84,6 +86,46 @@ def load_softwall(data_dir, law, tol):
         return None
     with open(path) as f:
         return json.load(f)
+
+
+_INT_KEYS = ("n_d_model", "n_d_measured", "n_d_measured_err", "n_d_predicted_f8", "n_d", "n_d_predicted",
+             "n_d_fixed_point")
+
+
+def _json_value(k, v):
+    """A module value as the program's JSON writes it: NaN -> None, counts as int."""
+    if isinstance(v, dict):
+        return {a: _json_value(a, b) for a, b in v.items()}
+    if isinstance(v, (list, tuple, np.ndarray)):
+        return [_json_value(k, x) for x in v]
+    if isinstance(v, (float, np.floating)):
+        if v != v:
+            return None
+        return int(v) if k in _INT_KEYS and float(v).is_integer() else float(v)
+    if isinstance(v, np.integer):
+        return int(v)
+    return v
+
+
+def softwall_from_module(r, version):
+    """granwave.softwall's Result (sheets=True) in the layout of `granwave softwall
+    --sheets --json` that the functions here read: version, tol, n, sheet_law, v_imp,
+    k_c, sheets (NaN as None, N_d as integers) and walls (per sheet: the keys of the
+    program's walls[], F_max(N) and tau_max(N) with None where a collision gave none)."""
+    sheets = [_json_value("", e) for e in r["sheets"]]
+    walls = []
+    for i, e in enumerate(sheets):
+        w = {"sheet": e["name"], "tau_max_n1_measured": e["tau_max_1_measured"], "n_d_measured": e["n_d_measured"],
+             "n_d_measured_err": e["n_d_measured_err"], "wall": "rigid" if r["rigid"][i] else "soft"}
+        for k in ("kwall", "f_max", "tau_max", "n_d", "n_d_predicted", "n_d_fixed_point", "f_plateau",
+                  "tau_max_at_n_d"):
+            w[k] = _json_value(k, r[k][i])
+        w["saturated"] = bool(r["saturated"][i])
+        walls.append(w)
+    return {"version": version, "v_imp": float(r["v_imp"]), "k_c": float(r["k_c"]),
+            "t_q_rigid": float(r["t_q_rigid"]), "tol": float(r["tol"]), "n": [int(x) for x in r["n"]],
+            "walls": walls, "sheet_law": r["sheet_law"], "sheets": sheets,
+            "wall_time_s": float(r["wall_time_s"])}
 
 
 def sheets_rows(sw):

@@ -12,7 +12,9 @@
  *    (physics.md 1.3), v = sqrt(2 g h) for a height.
  *  - Pluviation and an impact on a 30-disc sample: the impact's ledger closes
  *    to 2e-3 (the fast default's bound, tests/test_layer_cli.sh) and the
- *    ledger's components add up to its total (1e-9 of A).
+ *    ledger's components add up to its total (1e-9 of A); snapshots at 5 ms
+ *    and past the end hold the block's state of the block series at that
+ *    sample and at the last one (the same copy: bit-equal).
  */
 #include <stdlib.h>
 #include <string.h>
@@ -132,6 +134,7 @@ static void layer(void)
     gw_layer_impact_setup_init(&s);
     gw_param_set(gw_layer_impact_setup_params(), &s, "sample", path, &err);
     gw_param_set(gw_layer_impact_setup_params(), &s, "t-max", "0.01", &err);
+    gw_param_set(gw_layer_impact_setup_params(), &s, "snapshots", "0.005,1", &err);
     gw_layer_impact_outcome o;
     memset(&o, 0, sizeof o);
     if (rc == GW_OK)
@@ -147,6 +150,22 @@ static void layer(void)
             worst = fmax(worst, fabs(sum - e->total) / o.a_total);
         }
         gw_test_abs(worst, 0, 1e-9, "ledger components add up to the total");
+        /* snapshots: 5 ms is a sample time (dt_out 2e-5), 1 s is past the end:
+         * the block (last particle) there is the block series' sample, bit for bit */
+        int k5 = 0;
+        while (k5 < o.r.ns && o.r.t[k5] < 0.005 * (1 - 1e-12))
+            k5++;
+        const int b = o.block_index, np = o.nparticles, last = o.r.ns - 1;
+        gw_test_true(o.nsnap == 2 && np == 31 && b == 30 && o.snap_rows == 62 && k5 < o.r.ns,
+                     "two snapshots of the 30 discs and the block");
+        if (o.nsnap == 2 && np == 31 && k5 < o.r.ns) {
+            gw_test_true(o.snap_t[0] == o.r.t[k5] && o.snap_t[1] == o.r.t_end && o.r.t[last] == o.r.t_end,
+                         "snapshot times: the sample at 5 ms, the end");
+            const double *s5 = o.snap + 6 * (size_t)b, *se = o.snap + 6 * ((size_t)np + b);
+            gw_test_true(s5[0] == o.r.block[4 * k5] && s5[1] == o.r.block[4 * k5 + 1] &&
+                         s5[4] == o.r.block[4 * k5 + 3] && se[0] == o.r.block[4 * last] &&
+                         se[3] == o.r.block[4 * last + 2], "snapshot block = block series (bit-equal)");
+        }
     }
     gw_layer_impact_outcome_free(&o);
     gw_layer_impact_setup_clear(&s);

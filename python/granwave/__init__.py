@@ -80,8 +80,27 @@ def layer_make(**kwargs):
     return _study("layer-make").run(kwargs)
 
 
+_SNAP_COLS = ("x", "y", "theta", "vx", "vy", "omega")
+
+
 def layer_impact(**kwargs):
-    return _study("layer-impact").run(kwargs)
+    r = _study("layer-impact").run(kwargs)
+    ng = max(r["nrings"] - 1, 0)  # ring pairs k, k + 1; NaN without the analysis (the program's null)
+    for k in ("xcorr_delay", "xcorr_rho"):
+        if k not in r:
+            r[k] = _np.full(ng, _np.nan)
+    if "spec_strain" not in r:
+        r["spec_strain"] = r["spec_kinetic"] = _np.zeros((0, r["nrings"]))
+    r["spec_f"] = _np.arange(r["spec_len"]) * r["spec_df"]
+    snaps = None
+    if r["nsnap"] > 0:
+        n, m = r["nsnap"], r["nparticles"]
+        tab = r.pop("snapshot")
+        snaps = {"t": r.pop("snapshot_t"), "r": r.pop("snapshot_r"), "block": r["block_index"]}
+        for c in _SNAP_COLS:
+            snaps[c] = tab[c].reshape(n, m)
+    r["snapshots"] = snaps
+    return r
 
 
 def layer_stats(input=None, **kwargs):
@@ -232,7 +251,13 @@ layer_make.__doc__ = _study("layer-make").doc(
 layer_impact.__doc__ = _study("layer-impact").doc(
     "One block impact on a 2D granular layer (Bourrier et al. 2008), as\n"
     "`granwave layer-impact` (fast default: verlet; exact=True for the exact mode).\n"
-    "sample is a file written by `granwave layer-make`.")
+    "sample is a file written by `granwave layer-make`. The result holds what the\n"
+    "program's --json and --out files do: spec_f (Hz) goes with spec_strain and\n"
+    "spec_kinetic [frequency, ring]. snapshots=[t1, t2, ...] (s; off by default) adds\n"
+    "snapshots: {'t': [snapshot], 'x', 'y', 'theta', 'vx', 'vy', 'omega': [snapshot,\n"
+    "particle], 'r': [particle], 'block': the block's particle index}, each the first\n"
+    "output sample at or after the time asked for (the end state when the run ended\n"
+    "before it: snapshots=[t_max] gives the end); None without.")
 layer_stats.__doc__ = _study("layer-stats").doc(
     "Statistics of a layer sweep table (OUT/results.csv of `granwave sweep` with model =\n"
     "layer; Bourrier et al. 2008, physics.md 2.3, 2.5), as `granwave layer-stats INPUT`:\n"

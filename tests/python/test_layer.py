@@ -18,7 +18,7 @@ KEYS = ["e_n", "e", "alpha_r", "v_nr", "v_ni", "v_r", "t_rebound", "penetration"
 
 
 def compare(r, cli):
-    assert bool(r.bounced) == cli["bounced"]
+    assert (None if r.bounced < 0 else bool(r.bounced)) == cli["bounced"]  # undecided: -1, the JSON's null
     for k in KEYS:
         want = float("nan") if cli[k] is None else cli[k]  # JSON null: undecided, NaN here
         assert r[k] == pytest.approx(want, rel=1e-12, nan_ok=True), k
@@ -94,3 +94,102 @@ def test_layer_make_writes_the_programs_sample(sample, tmp_path):
         granwave.layer_make(n=10, aspect_max=2)
     with pytest.raises(ValueError, match="gravity"):
         granwave.layer_make(n=10, gravity=0)
+
+
+def _csv(path):
+    """A CSV of `layer-impact --out` ('#' lines, then a header) as {column: float array}."""
+    lines = [ln for ln in path.read_text().splitlines() if not ln.startswith("#")]
+    cols = lines[0].split(",")
+    rows = [[float(c) if c else np.nan for c in ln.split(",")] for ln in lines[1:]]
+    return {c: np.array([r[j] for r in rows]) for j, c in enumerate(cols)}
+
+
+def _vtk(path):
+    """Points (x, y), radius, block flag and velocity (vx, vy) of a snapshot_*.vtk."""
+    lines = path.read_text().splitlines()
+    i = next(k for k, s in enumerate(lines) if s.startswith("POINTS"))
+    n = int(lines[i].split()[1])
+    pts = np.array([[float(v) for v in lines[i + 1 + j].split()[:2]] for j in range(n)])
+
+    def block(name, width):
+        k = next(k for k, s in enumerate(lines) if s.split()[:2] in (["SCALARS", name], ["VECTORS", name]))
+        k += 2 if lines[k].startswith("SCALARS") else 1
+        return np.array([[float(v) for v in lines[k + j].split()[:width]] for j in range(n)])
+    return pts, block("radius", 1)[:, 0], block("block", 1)[:, 0], block("velocity", 2)
+
+
+def test_crowns_spectra_first_maximum_and_snapshots_as_the_program(program, sample, tmp_path):
+    """What `layer-impact --json --out` adds to the library's table: the crowns by
+    cross-correlation, the rings' spectra, T_f, the take-off and the first
+    free-flight maximum, and the snapshots (here at t = 0 and the end, the
+    program's snapshot_0.vtk and snapshot_end.vtk). The same code on the same
+    sample: the JSON's numbers (17 digits) agree to 1e-12, impact.h5's spectra
+    (doubles) to 1e-12; the CSV (9 digits) and VTK (9 digits) files to 1e-8
+    relative (their printing, 5e-9), positions to 1e-8 of the box width."""
+    kw = dict(rb_rm=1, vi=20, full=True, t_max=0.03)  # the block leaves at 26 ms
+    out = tmp_path / "out"
+    cli = run_cli(program, "layer-impact", "--sample", sample, "--rb-rm", 1, "--vi", 20, "--full", "--t-max",
+                  0.03, "--out", out)
+    r = granwave.layer_impact(sample=sample, snapshots=[0, 1], **kw)
+    compare(r, cli)
+    for k in ("t_f", "t_leave", "e_n_first", "e_first", "alpha_r_first", "v_nr_first", "v_r_first",
+              "t_rebound_first", "wave_speed_xcorr", "wave_speed_xcorr_err"):
+        want = float("nan") if cli[k] is None else cli[k]
+        assert r[k] == pytest.approx(want, rel=1e-12, nan_ok=True), k
+    assert np.isfinite(r.e_n_first) and np.isfinite(r.wave_speed_xcorr)  # this impact leaves and has a wave
+    assert (r.wave_xcorr_gaps, r.zeno_guards, r.undecided) == (cli["wave_xcorr_gaps"], cli["zeno_guards"],
+                                                              cli["undecided"])
+    for k in ("xcorr_delay", "xcorr_rho"):
+        want = np.array([np.nan if v is None else v for v in cli["crowns"][k]])
+        assert r[k].shape == want.shape == (r.nrings - 1,)
+        np.testing.assert_allclose(r[k], want, rtol=1e-12, equal_nan=True, err_msg=k)
+    # crowns_peaks.csv: one row per ring, the delay to the next ring (empty for the last)
+    peaks = _csv(out / "crowns_peaks.csv")
+    np.testing.assert_allclose(r.xcorr_delay, peaks["xcorr_delay_next"][:-1], rtol=1e-8, equal_nan=True)
+    # crowns_spectra.csv: rows (f, ring), ring fastest
+    spec = _csv(out / "crowns_spectra.csv")
+    assert r.spec_strain.shape == r.spec_kinetic.shape == (r.spec_len, r.nrings) and r.spec_len > 100
+    np.testing.assert_allclose(r.spec_f, spec["f"][::r.nrings], rtol=1e-8)
+    np.testing.assert_allclose(r.spec_strain.ravel(), spec["psd_strain"], rtol=1e-8, atol=1e-300)
+    np.testing.assert_allclose(r.spec_kinetic.ravel(), spec["psd_kinetic"], rtol=1e-8, atol=1e-300)
+    try:  # impact.h5 holds them as doubles (HDF5 builds; h5py is optional)
+        import h5py
+    except ImportError:
+        h5py = None
+    if h5py is not None and (out / "impact.h5").exists():
+        with h5py.File(out / "impact.h5", "r") as f:
+            np.testing.assert_allclose(r.spec_strain, f["spec_strain"][()], rtol=1e-12, atol=0)
+            np.testing.assert_allclose(r.spec_kinetic, f["spec_kinetic"][()], rtol=1e-12, atol=0)
+            np.testing.assert_allclose(r.spec_f, f["spec_freq"][()], rtol=1e-12, atol=0)
+    # snapshots against the program's VTK files, at t = 0 and at the end (1 s > t_max)
+    s = r.snapshots
+    assert list(s["t"]) == [0.0, r.t_end] and s["x"].shape == (2, 61) and s["block"] == 60
+    width = 16 * 0.325
+    for j, name in enumerate(("snapshot_0.vtk", "snapshot_end.vtk")):
+        pts, rad, blk, vel = _vtk(out / name)
+        assert list(np.flatnonzero(blk)) == [s["block"]]
+        np.testing.assert_allclose(s["x"][j], pts[:, 0], rtol=0, atol=1e-8 * width)
+        np.testing.assert_allclose(s["y"][j], pts[:, 1], rtol=0, atol=1e-8 * width)
+        np.testing.assert_allclose(s["r"], rad, rtol=1e-8)
+        np.testing.assert_allclose(np.c_[s["vx"][j], s["vy"][j]], vel, rtol=1e-8, atol=1e-8 * 20)
+    # the end snapshot's block is the block series' last sample
+    assert s["x"][1][s["block"]] == r.block["x"][-1] and s["vy"][1][s["block"]] == r.block["vy"][-1]
+
+
+def test_snapshots_at_samples_and_off_by_default(sample):
+    """A snapshot is the first output sample at or after the time asked for (the
+    block's position there is the block series' at that sample), in the order
+    asked for; the run's numbers do not change with snapshots; none by default."""
+    r0 = granwave.layer_impact(sample=sample, t_max=0.004)
+    assert r0.snapshots is None and r0.nsnap == 0 and r0.block_index == -1
+    asked = [2.5e-3, 1e-3, 1.01e-3]
+    r = granwave.layer_impact(sample=sample, t_max=0.004, snapshots=asked)
+    np.testing.assert_array_equal(r.t, r0.t)
+    np.testing.assert_array_equal(r.ledger["total"], r0.ledger["total"])
+    s = r.snapshots
+    for j, t in enumerate(asked):
+        k = int(np.searchsorted(r.t, t * (1 - 1e-12)))  # the first sample at or after t
+        assert s["t"][j] == r.t[k] and s["t"][j] >= t * (1 - 1e-12) and r.t[k - 1] < t
+        assert s["x"][j][s["block"]] == r.block["x"][k] and s["vy"][j][s["block"]] == r.block["vy"][k]
+    with pytest.raises(ValueError, match="snapshots"):
+        granwave.layer_impact(sample=sample, snapshots=[-1])

@@ -382,10 +382,13 @@ typedef struct gw_layer_impact_params {
     /* on_sample (may be NULL) [NULL]: called with sample_ctx at every recorded
      * sample k (the layer's state at res->t[k], s) with final = 0, and once more
      * after the last step with final = 1 and k = ns - 1 (the end state, the same
-     * as the last sample's). The layer is read-only there (gw_layer_particle,
-     * gw_layer_radius, ...); the block is particle gw_layer_n(L) - 1. A non-zero
-     * return (a gw status) stops the run with that status; res is then freed as
-     * after any failure. The run itself is unchanged by the hook. */
+     * as the last sample's). When the run fails after it started (solver,
+     * energy or step limit), it is called once with final = 2 and the state
+     * where the run stopped, k = the last sample; its return is then ignored.
+     * The layer is read-only there (gw_layer_particle, gw_layer_radius, ...);
+     * the block is particle gw_layer_n(L) - 1. A non-zero return (a gw status)
+     * stops the run with that status; res is then freed as after any failure.
+     * The run itself is unchanged by the hook. */
     int (*on_sample)(void *sample_ctx, const gw_layer *L, int k, int final);
     void *sample_ctx;
 } gw_layer_impact_params;
@@ -488,14 +491,13 @@ int gw_layer_impact_check(const gw_layer_sample *s, const gw_layer_impact_params
 double gw_layer_impact_dem_dt(const gw_layer_sample *s, const gw_layer_params *lp,
                               const gw_layer_impact_params *ip);
 
-/* One block impact on a sample (docs/physics.md 2.3). vtk_dir (may be NULL) receives
- * snapshot_0.vtk, snapshot_end.vtk and snapshots.pvd (both as a ParaView series
- * with their times). GW_EINVAL names the input (block
- * overlapping the layer, block outside the box, bad parameters). */
+/* One block impact on a sample (docs/physics.md 2.3). Writes no files: a caller
+ * that wants snapshots (the program's VTK files, the study's arrays) takes them
+ * in ip->on_sample. GW_EINVAL names the input (block overlapping the layer,
+ * block outside the box, bad parameters). */
 int gw_layer_impact(const gw_layer_sample *s, const gw_layer_params *lp,
                     const gw_layer_impact_params *ip, const gw_solver_type *type,
-                    const gw_solver_params *sp, const char *vtk_dir,
-                    gw_layer_impact_result *res, gw_err *err);
+                    const gw_solver_params *sp, gw_layer_impact_result *res, gw_err *err);
 
 /* Write res's time series (ledger, block, rings, peaks) and scalar results to
  * path as HDF5 (layer_h5.c documents the layout), atomically. GW_EUNSUPPORTED

@@ -200,8 +200,7 @@ static double record(gw_layer_impact_result *r, gw_layer *L, int block, double w
 
 int gw_layer_impact(const gw_layer_sample *smp, const gw_layer_params *lp0,
                     const gw_layer_impact_params *ip, const gw_solver_type *type,
-                    const gw_solver_params *sp, const char *vtk_dir,
-                    gw_layer_impact_result *res, gw_err *err)
+                    const gw_solver_params *sp, gw_layer_impact_result *res, gw_err *err)
 {
     memset(res, 0, sizeof *res);
     int rc = gw_layer_impact_check(smp, ip, err);
@@ -306,13 +305,6 @@ int gw_layer_impact(const gw_layer_sample *smp, const gw_layer_params *lp0,
         if (ip->on_sample && (rc = ip->on_sample(ip->sample_ctx, L, 0, 0)) != GW_OK)
             gw_err_set(err, rc, "layer-impact: the sample hook stopped the run at t = 0");
     }
-    if (rc == GW_OK && vtk_dir) {
-        char path[4096];
-        if (gw_path_join(path, sizeof path, vtk_dir, "snapshot_0.vtk") != GW_OK)
-            rc = gw_err_set(err, GW_EINVAL, "out: directory name too long");
-        else
-            rc = gw_layer_write_vtk(L, path, "granwave layer-impact t = 0", err);
-    }
     int cut = 0; /* the run reached t_max */
     for (int k = 1; rc == GW_OK && k < cap; k++) {
         double tk = fmin(k * ip->dt_out, ip->t_max);
@@ -360,27 +352,8 @@ int gw_layer_impact(const gw_layer_sample *smp, const gw_layer_params *lp0,
     gw_layer_get_stats(L, &res->stats);
     if (rc == GW_OK && ip->on_sample && (rc = ip->on_sample(ip->sample_ctx, L, res->ns - 1, 1)) != GW_OK)
         gw_err_set(err, rc, "layer-impact: the sample hook stopped the run at its end");
-    if (rc == GW_OK && vtk_dir) {
-        char path[4096];
-        if (gw_path_join(path, sizeof path, vtk_dir, "snapshot_end.vtk") != GW_OK)
-            rc = gw_err_set(err, GW_EINVAL, "out: directory name too long");
-        else
-            rc = gw_layer_write_vtk(L, path, "granwave layer-impact t = t_end", err);
-        const char *files[2] = {"snapshot_0.vtk", "snapshot_end.vtk"};
-        const double times[2] = {0, res->t_end};
-        if (rc == GW_OK && gw_path_join(path, sizeof path, vtk_dir, "snapshots.pvd") == GW_OK)
-            rc = gw_layer_write_pvd(path, 2, files, times, err); /* ParaView: one series with time */
-    }
-    if (rc != GW_OK && rc != GW_EINVAL && vtk_dir && err) {
-        /* run failure: keep the state at failure beside the outputs already written */
-        char path[4096];
-        gw_err e2 = {{0}};
-        if (gw_path_join(path, sizeof path, vtk_dir, "snapshot_failure.vtk") == GW_OK &&
-            gw_layer_write_vtk(L, path, "granwave layer-impact: state at the failure", &e2) == GW_OK) {
-            size_t k = strlen(err->msg);
-            snprintf(err->msg + k, sizeof err->msg - k, "; state at failure in %s", path);
-        }
-    }
+    if (rc != GW_OK && rc != GW_EINVAL && ip->on_sample && res->ns > 0)
+        (void)ip->on_sample(ip->sample_ctx, L, res->ns - 1, 2); /* the state at the failure */
     if (rc != GW_OK) {
         gw_layer_free(L);
         gw_layer_impact_result_free(res);

@@ -229,6 +229,8 @@ static int req_cmp(const void *a, const void *b)
 static int take_snapshots(void *ctx, const gw_layer *L, int k, int final)
 {
     (void)k;
+    if (final == 2) /* a failed run gives no snapshots */
+        return GW_OK;
     snap_ctx *c = ctx;
     gw_layer_impact_outcome *o = c->out;
     const int np = gw_layer_n(L);
@@ -387,7 +389,7 @@ int gw_layer_impact_run(const gw_layer_impact_setup *s, gw_layer_impact_outcome 
         }
     }
     if (rc == GW_OK)
-        rc = gw_layer_impact(&smp, &lp, &ip, type, &sp, NULL, &out->r, err);
+        rc = gw_layer_impact(&smp, &lp, &ip, type, &sp, &out->r, err);
     free(sc.req);
     if (rc == GW_ENOMEM && out->nsnap > 0 && !out->snap_t)
         gw_err_set(err, rc, "snapshots: out of memory for %d snapshots of %d particles", out->nsnap, smp.n + 1);

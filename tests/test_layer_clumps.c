@@ -637,7 +637,7 @@ static void test_impact(const gw_layer_sample *s)
     sp.dt = 1e-6;
     gw_layer_impact_result r;
     gw_err err = {{0}};
-    int rc = gw_layer_impact(s, &lp, &ip, gw_solver_rk4, &sp, NULL, &r, &err);
+    int rc = gw_layer_impact(s, &lp, &ip, gw_solver_rk4, &sp, &r, &err);
     if (rc != GW_OK)
         printf("  impact failed: %s\n", err.msg);
     gw_test_true(rc == GW_OK, "an impact on a clump sample runs");

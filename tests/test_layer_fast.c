@@ -54,7 +54,7 @@ static int run(const gw_layer_sample *s, const impact_case *ic, int exact,
     gw_solver_params sp = gw_solver_params_default();
     sp.dt = exact ? 1e-6 : 0; /* 0: the verlet step from the contact time */
     gw_err err = {{0}};
-    int rc = gw_layer_impact(s, &lp, &ip, exact ? gw_solver_rk4 : gw_solver_verlet, &sp, NULL, r,
+    int rc = gw_layer_impact(s, &lp, &ip, exact ? gw_solver_rk4 : gw_solver_verlet, &sp, r,
                              &err);
     if (rc != GW_OK)
         printf("  %s (%s) failed: %s\n", ic->what, exact ? "exact" : "fast", err.msg);

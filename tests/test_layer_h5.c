@@ -48,7 +48,7 @@ int main(void)
     sp.dt = 1e-6;
     gw_layer_impact_result res;
     gw_err err = {{0}};
-    int rc = gw_layer_impact(&s, &lp, &ip, gw_solver_rk4, &sp, NULL, &res, &err);
+    int rc = gw_layer_impact(&s, &lp, &ip, gw_solver_rk4, &sp, &res, &err);
     if (rc != GW_OK)
         printf("impact: %s\n", err.msg);
     gw_test_true(rc == GW_OK && res.ns > 10, "impact on a row of discs");

@@ -57,7 +57,7 @@ static int run(const gw_layer_sample *s, const run_opts *o, gw_layer_impact_resu
     gw_solver_params sp = gw_solver_params_default();
     sp.dt = o->exact ? 1e-6 : 0;
     gw_err err = {{0}};
-    int rc = gw_layer_impact(s, &lp, &ip, o->exact ? gw_solver_rk4 : gw_solver_verlet, &sp, NULL, r, &err);
+    int rc = gw_layer_impact(s, &lp, &ip, o->exact ? gw_solver_rk4 : gw_solver_verlet, &sp, r, &err);
     if (rc != GW_OK)
         printf("  run failed: %s\n", err.msg);
     else

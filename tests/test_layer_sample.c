@@ -408,7 +408,7 @@ int main(void)
         sp.dt = 1e-6;
         sp.rtol = sp.atol = 1e-9;
         gw_layer_impact_result r;
-        rc = gw_layer_impact(&a, &lp, &ip, types[k], &sp, NULL, &r, &err);
+        rc = gw_layer_impact(&a, &lp, &ip, types[k], &sp, &r, &err);
         char what[700];
         snprintf(what, sizeof what, "%s: impact run ok (%s)", gw_solver_type_name(types[k]), err.msg);
         gw_test_true(rc == GW_OK, what);
@@ -437,19 +437,19 @@ int main(void)
     gw_layer_impact_result r;
     gw_layer_impact_params bad = ip;
     bad.gap = -0.01;
-    gw_test_true(gw_layer_impact(&a, &lp, &bad, gw_solver_rk4, &sp, NULL, &r, &err) == GW_EINVAL &&
+    gw_test_true(gw_layer_impact(&a, &lp, &bad, gw_solver_rk4, &sp, &r, &err) == GW_EINVAL &&
                  strstr(err.msg, "gap") != NULL, "block overlapping the layer refused");
     bad = ip;
     bad.rb_rm = -1;
-    gw_test_true(gw_layer_impact(&a, &lp, &bad, gw_solver_rk4, &sp, NULL, &r, &err) == GW_EINVAL &&
+    gw_test_true(gw_layer_impact(&a, &lp, &bad, gw_solver_rk4, &sp, &r, &err) == GW_EINVAL &&
                  strstr(err.msg, "rb-rm") != NULL, "negative block radius refused");
     bad = ip;
     bad.alpha_deg = 90;
-    gw_test_true(gw_layer_impact(&a, &lp, &bad, gw_solver_rk4, &sp, NULL, &r, &err) == GW_EINVAL,
+    gw_test_true(gw_layer_impact(&a, &lp, &bad, gw_solver_rk4, &sp, &r, &err) == GW_EINVAL,
                  "incidence 90 deg refused");
     gw_layer_params lbad = lp;
     lbad.friction_deg = 90;
-    gw_test_true(gw_layer_impact(&a, &lbad, &ip, gw_solver_rk4, &sp, NULL, &r, &err) == GW_EINVAL &&
+    gw_test_true(gw_layer_impact(&a, &lbad, &ip, gw_solver_rk4, &sp, &r, &err) == GW_EINVAL &&
                  strstr(err.msg, "friction") != NULL, "friction angle 90 deg refused");
     gw_layer_body body = {.x = 1, .y = 1, .r = -0.1};
     gw_layer *L = NULL;

@@ -476,6 +476,52 @@ static void unmake(const char *path, const char *made)
     }
 }
 
+/* The impact's VTK snapshots in --out (the library's on_sample hook):
+ * snapshot_0.vtk at the first sample, snapshot_end.vtk and snapshots.pvd (the
+ * two as a ParaView series with their times) at the end, snapshot_failure.vtk
+ * with the state where a failed run stopped. */
+typedef struct vtk_ctx {
+    const char *dir;
+    double t0;
+    int failed;            /* a write failed: err holds its message */
+    gw_err err;
+    char failure_file[4096];
+} vtk_ctx;
+
+static int write_snapshot(void *ctx, const gw_layer *L, int k, int final)
+{
+    vtk_ctx *v = ctx;
+    if (v->failed || (final == 0 && k > 0))
+        return GW_OK;
+    static const char *const files[3] = {"snapshot_0.vtk", "snapshot_end.vtk", "snapshot_failure.vtk"};
+    static const char *const titles[3] = {"granwave layer-impact t = 0", "granwave layer-impact t = t_end",
+                                          "granwave layer-impact: state at the failure"};
+    char path[4096];
+    gw_err e = {{0}};
+    int rc = gw_path_join(path, sizeof path, v->dir, files[final]) != GW_OK
+                 ? gw_err_set(&e, GW_EINVAL, "out: directory name too long")
+                 : gw_layer_write_vtk(L, path, titles[final], &e);
+    if (rc == GW_OK && final == 0)
+        v->t0 = gw_layer_time(L);
+    if (rc == GW_OK && final == 1) {
+        const char *two[2] = {files[0], files[1]};
+        const double times[2] = {v->t0, gw_layer_time(L)};
+        rc = gw_path_join(path, sizeof path, v->dir, "snapshots.pvd") != GW_OK
+                 ? gw_err_set(&e, GW_EINVAL, "out: directory name too long")
+                 : gw_layer_write_pvd(path, 2, two, times, &e); /* ParaView: one series with time */
+    }
+    if (final == 2) { /* best effort: the run's own error is what the user sees */
+        if (rc == GW_OK)
+            snprintf(v->failure_file, sizeof v->failure_file, "%s", path);
+        return GW_OK;
+    }
+    if (rc != GW_OK) {
+        v->failed = 1;
+        v->err = e;
+    }
+    return rc;
+}
+
 int gw_cmd_layer_impact(int argc, char **argv)
 {
     impact_cli c;
@@ -510,7 +556,19 @@ int gw_cmd_layer_impact(int argc, char **argv)
         return fail("layer-impact", err.msg);
     }
     gw_layer_impact_result r;
-    int rc = gw_layer_impact(&s, &c.m.lp, &c.ip, type, &sp, c.out, &r, &err);
+    vtk_ctx vc = {.dir = c.out};
+    if (c.out) {
+        c.ip.on_sample = write_snapshot;
+        c.ip.sample_ctx = &vc;
+    }
+    int rc = gw_layer_impact(&s, &c.m.lp, &c.ip, type, &sp, &r, &err);
+    if (vc.failed) /* the writer's own message, not the run's "the hook stopped it" */
+        err = vc.err;
+    else if (rc != GW_OK && vc.failure_file[0]) {
+        const size_t k = strlen(err.msg), room = sizeof err.msg - k;
+        if (room > 24 + strlen(vc.failure_file))
+            snprintf(err.msg + k, room, "; state at failure in %.*s", (int)(room - 24), vc.failure_file);
+    }
     gw_layer_sample_free(&s);
     if ((rc == GW_EINVAL || rc == GW_EUNSUPPORTED) && made[0])
         unmake(c.out, made); /* a refused input leaves nothing behind */

@@ -14,14 +14,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "gw_chain_study.h"
+#include "chain_setup_rows.h"
 
 #define OFF(f) offsetof(gw_chain_collision, f)
-#define RD(nm, f, un, hl) {.name = nm, .type = GW_PARAM_DOUBLE, .offset = OFF(f), .unit = un, .help = hl}
-#define RI(nm, f, hl) {.name = nm, .type = GW_PARAM_INT, .offset = OFF(f), .unit = "", .help = hl}
-#define RL(nm, f, hl) {.name = nm, .type = GW_PARAM_LONG, .offset = OFF(f), .unit = "", .help = hl}
-#define RA(nm, f, un, r, c, hl) \
-    {.name = nm, .type = GW_PARAM_DARRAY, .offset = OFF(f), .unit = un, .rows = r, .cols = c, .help = hl}
 
 static const gw_param collision_fields[] = {
     RI("n", r.n, "number of beads"),

@@ -13,15 +13,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "gw_chain_study.h"
+#include "chain_setup_rows.h"
 
 #define OFF(f) offsetof(gw_chain_dispersion_setup, f)
-#define ROW(nm, ty, f, un, lo, hi, op, df, mv, hl)                                             \
-    {.name = nm, .type = ty, .offset = OFF(f), .unit = un, .min = lo, .max = hi, .open_min = op, \
-     .def = df, .metavar = mv, .help = hl}
-#define CHOICE(nm, f, ch, df, mv, hl)                                                          \
-    {.name = nm, .type = GW_PARAM_CHOICE, .offset = OFF(f), .unit = "", .def = df, .choices = ch, \
-     .metavar = mv, .help = hl}
 
 static const gw_param disp_params[] = {
     ROW("n", GW_PARAM_LONG, n, "", 8, 1 << 22, 0, "1024", "N", "number of beads [1024]"),
@@ -52,11 +46,6 @@ static const gw_param disp_params[] = {
 #undef OFF
 
 #define OFF(f) offsetof(gw_chain_dispersion_outcome, f)
-#define RD(nm, f, un, hl) {.name = nm, .type = GW_PARAM_DOUBLE, .offset = OFF(f), .unit = un, .help = hl}
-#define RI(nm, f, hl) {.name = nm, .type = GW_PARAM_INT, .offset = OFF(f), .unit = "", .help = hl}
-#define RL(nm, f, hl) {.name = nm, .type = GW_PARAM_LONG, .offset = OFF(f), .unit = "", .help = hl}
-#define RA(nm, f, un, r, c, hl) \
-    {.name = nm, .type = GW_PARAM_DARRAY, .offset = OFF(f), .unit = un, .rows = r, .cols = c, .help = hl}
 
 static const gw_param disp_fields[] = {
     RI("column", column, "0: dispersion, 1: column wall-force spectrum (column_n)"),

@@ -25,12 +25,6 @@
 /* ---- the table of the inputs: the drop's rows, then the column's with the
  * drop's gravity, t-max and dt-out ---- */
 
-#define ROW(nm, ty, f, un, lo, hi, op, df, mv, hl)                                             \
-    {.name = nm, .type = ty, .offset = OFF(f), .unit = un, .min = lo, .max = hi, .open_min = op, \
-     .def = df, .metavar = mv, .help = hl}
-#define CHOICE(nm, f, ch, df, mv, hl)                                                          \
-    {.name = nm, .type = GW_PARAM_CHOICE, .offset = OFF(f), .unit = "", .def = df, .choices = ch, \
-     .metavar = mv, .help = hl}
 #define OFF(f) offsetof(gw_chain_drop_setup, col.f)
 #define OWN(f) offsetof(gw_chain_drop_setup, f)
 
@@ -68,11 +62,7 @@ static const gw_param drop_params[] = {
 /* ---- the table of the results ---- */
 
 #define O gw_chain_drop_outcome
-#define RD(nm, f, un, hl) {.name = nm, .type = GW_PARAM_DOUBLE, .offset = offsetof(O, f), .unit = un, .help = hl}
-#define RI(nm, f, hl) {.name = nm, .type = GW_PARAM_INT, .offset = offsetof(O, f), .unit = "", .help = hl}
-#define RL(nm, f, hl) {.name = nm, .type = GW_PARAM_LONG, .offset = offsetof(O, f), .unit = "", .help = hl}
-#define RA(nm, f, un, r, c, hl) \
-    {.name = nm, .type = GW_PARAM_DARRAY, .offset = offsetof(O, f), .unit = un, .rows = r, .cols = c, .help = hl}
+#define OFF(f) offsetof(O, f)
 #define RIA(nm, f, r, c, hl) \
     {.name = nm, .type = GW_PARAM_IARRAY, .offset = offsetof(O, f), .unit = "", .rows = r, .cols = c, .help = hl}
 
@@ -157,6 +147,7 @@ static const gw_param drop_fields[] = {
     RA("v", v, "m/s", "trace_len", "n", "bead velocities toward the sensor (trace = 1)"),
     RI("canceled", canceled, "1: stopped by the progress callback at t_end"),
     GW_PARAM_END};
+#undef OFF
 #undef O
 
 const gw_param *gw_chain_drop_setup_params(void) { return drop_params; }

@@ -64,12 +64,6 @@ void gw_chain_falcon_analyse(const gw_chain_params *p, double v, const gw_chain_
 /* ---- the table of the inputs ---- */
 
 #define OFF(f) offsetof(gw_chain_falcon_setup, col.f)
-#define ROW(nm, ty, f, un, lo, hi, op, df, mv, hl)                                             \
-    {.name = nm, .type = ty, .offset = OFF(f), .unit = un, .min = lo, .max = hi, .open_min = op, \
-     .def = df, .metavar = mv, .help = hl}
-#define CHOICE(nm, f, ch, df, mv, hl)                                                          \
-    {.name = nm, .type = GW_PARAM_CHOICE, .offset = OFF(f), .unit = "", .def = df, .choices = ch, \
-     .metavar = mv, .help = hl}
 #define OWN(f) offsetof(gw_chain_falcon_setup, f)
 
 static const gw_param falcon_params[] = {
@@ -108,8 +102,6 @@ void gw_chain_falcon_setup_clear(gw_chain_falcon_setup *s)
 
 #undef OFF
 #define OFF(f) offsetof(gw_chain_falcon_outcome, f)
-#define RA(nm, f, un, r, c, hl) \
-    {.name = nm, .type = GW_PARAM_DARRAY, .offset = OFF(f), .unit = un, .rows = r, .cols = c, .help = hl}
 #define CASE(nm, f, un, hl) RA(nm, f, un, "nv", "nn", hl " [velocity, N]")
 #define VEL(nm, f, un, hl) RA(nm, f, un, "nv", NULL, hl " [velocity]")
 

@@ -23,12 +23,6 @@
 #include "gw_chain_study.h"
 
 #define OFF(f) offsetof(gw_chain_setup, f)
-#define ROW(nm, ty, f, un, lo, hi, op, df, mv, hl)                                             \
-    {.name = nm, .type = ty, .offset = OFF(f), .unit = un, .min = lo, .max = hi, .open_min = op, \
-     .def = df, .metavar = mv, .help = hl}
-#define CHOICE(nm, f, ch, df, mv, hl)                                                          \
-    {.name = nm, .type = GW_PARAM_CHOICE, .offset = OFF(f), .unit = "", .def = df, .choices = ch, \
-     .metavar = mv, .help = hl}
 
 
 static const gw_param setup_params[] = {

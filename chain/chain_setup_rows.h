@@ -2,13 +2,22 @@
  * chain_setup_rows.h (private to chain/): the rows of a column's model and
  * solver parameters (gw_chain_study.h), written once and expanded into every
  * table that holds a gw_chain_setup: gw_chain_setup_params (chain_setup.c)
- * and the falcon study's table (chain_falcon_study.c). The includer defines
- * OFF(field) (the field's offset in its struct), ROW and CHOICE. Units SI.
+ * and the falcon study's table (chain_falcon_study.c). It also gives the chain
+ * tables' row constructors ROW, CHOICE (inputs: no open upper ends) and RD, RI,
+ * RL, RA (results), on the includer's OFF(field) (the field's offset in its
+ * struct). Units SI.
  */
 #ifndef GW_CHAIN_SETUP_ROWS_H
 #define GW_CHAIN_SETUP_ROWS_H
 
 #include "gw_chain_study.h"
+
+#define ROW(nm, ty, f, un, lo, hi, op, df, mv, hl) GW_PARAM_ROW(nm, ty, OFF(f), un, lo, hi, op, 0, df, mv, hl)
+#define CHOICE(nm, f, ch, df, mv, hl) GW_PARAM_CHOICE_ROW(nm, OFF(f), ch, df, mv, hl)
+#define RD(nm, f, un, hl) GW_RESULT_ROW(nm, GW_PARAM_DOUBLE, OFF(f), un, hl)
+#define RI(nm, f, hl) GW_RESULT_ROW(nm, GW_PARAM_INT, OFF(f), "", hl)
+#define RL(nm, f, hl) GW_RESULT_ROW(nm, GW_PARAM_LONG, OFF(f), "", hl)
+#define RA(nm, f, un, r, c, hl) GW_RESULT_ARRAY(nm, OFF(f), un, r, c, NULL, hl)
 
 #define MATERIALS "steel,rigid,brass,aluminium,glass,pmma,pvc"
 #define SHEETS "none,brass,tape,pvc,pmma,cardboard2,beech,cardboard1,rubber"

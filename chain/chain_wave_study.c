@@ -34,12 +34,6 @@
 
 /* ---- the tables of the inputs ---- */
 
-#define ROW(nm, ty, f, un, lo, hi, op, df, mv, hl)                                             \
-    {.name = nm, .type = ty, .offset = OFF(f), .unit = un, .min = lo, .max = hi, .open_min = op, \
-     .def = df, .metavar = mv, .help = hl}
-#define CHOICE(nm, f, ch, df, mv, hl)                                                          \
-    {.name = nm, .type = GW_PARAM_CHOICE, .offset = OFF(f), .unit = "", .def = df, .choices = ch, \
-     .metavar = mv, .help = hl}
 
 #define OFF(f) offsetof(gw_chain_wavespeed_setup, col.f)
 #define OWN(f) offsetof(gw_chain_wavespeed_setup, f)
@@ -101,68 +95,68 @@ void gw_chain_softwall_setup_clear(gw_chain_softwall_setup *s)
 
 /* ---- the tables of the results ---- */
 
-#define RD(T, nm, f, un, hl) {.name = nm, .type = GW_PARAM_DOUBLE, .offset = offsetof(T, f), .unit = un, .help = hl}
-#define RI(T, nm, f, hl) {.name = nm, .type = GW_PARAM_INT, .offset = offsetof(T, f), .unit = "", .help = hl}
-#define RA(T, nm, f, un, r, c, hl) \
-    {.name = nm, .type = GW_PARAM_DARRAY, .offset = offsetof(T, f), .unit = un, .rows = r, .cols = c, .help = hl}
+/* result rows of struct T (two outcome structs here) */
+#define RDT(T, nm, f, un, hl) GW_RESULT_ROW(nm, GW_PARAM_DOUBLE, offsetof(T, f), un, hl)
+#define RIT(T, nm, f, hl) GW_RESULT_ROW(nm, GW_PARAM_INT, offsetof(T, f), "", hl)
+#define RAT(T, nm, f, un, r, c, hl) GW_RESULT_ARRAY(nm, offsetof(T, f), un, r, c, NULL, hl)
 #define RIA(T, nm, f, r, hl) \
     {.name = nm, .type = GW_PARAM_IARRAY, .offset = offsetof(T, f), .unit = "", .rows = r, .help = hl}
 
 #define W gw_chain_wavespeed_outcome
-#define WFIT(k, j, nm, un, hl) RD(W, nm, fits[k][j], un, hl)
+#define WFIT(k, j, nm, un, hl) RDT(W, nm, fits[k][j], un, hl)
 #define WFITS(k, w, hl)                                                         \
     WFIT(k, 0, "fit_" w "_beta", "", "exponent of v = A v_imp^beta, " hl),      \
     WFIT(k, 1, "fit_" w "_beta_err", "", "its standard error"),               \
     WFIT(k, 2, "fit_" w "_prefactor", "", "A (SI units of v over v_imp^beta)"), \
     WFIT(k, 3, "fit_" w "_c3", "", "A as C3 of (F.16)")
 static const gw_param ws_fields[] = {
-    RI(W, "nv", nv, "impact velocities"),
-    RA(W, "v_imp", v_imp, "m/s", "nv", NULL, "impact velocity"),
-    RA(W, "v_tq", v_tq, "m/s", "nv", NULL, "4R/T_q (F.6)"),
-    RA(W, "v_front", v_front, "m/s", "nv", NULL, "time of flight of the compression front"),
-    RA(W, "v_group", v_group, "m/s", "nv", NULL, "long-wave group speed at the mean wall force (1.6)"),
-    RA(W, "v_group_front", v_group_front, "m/s", "nv", NULL, "v_group/sqrt(3/2): the front speed of F.27"),
-    RA(W, "t_q", t_q, "s", "nv", NULL, "slope of tau_N against N - 1 (F.4)"),
-    RA(W, "mean_wall_force", mean_wall_force, "N", "nv", NULL, "impulse/tau_N of the longest column"),
-    RA(W, "period", period, "s", "nv", NULL, "mean wall-force period over N >= 10"),
-    RD(W, "beta", beta, "", "exponent of 4R/T_q against v_imp (F.16: 1/5)"),
-    RD(W, "beta_err", beta_err, "", "its standard error"),
-    RD(W, "c3", c3, "", "C3 of the 4R/T_q fit (F.16)"),
-    RD(W, "c3_theory", c3_theory, "", "C3 of the momentum balance (F.27): 2"),
+    RIT(W, "nv", nv, "impact velocities"),
+    RAT(W, "v_imp", v_imp, "m/s", "nv", NULL, "impact velocity"),
+    RAT(W, "v_tq", v_tq, "m/s", "nv", NULL, "4R/T_q (F.6)"),
+    RAT(W, "v_front", v_front, "m/s", "nv", NULL, "time of flight of the compression front"),
+    RAT(W, "v_group", v_group, "m/s", "nv", NULL, "long-wave group speed at the mean wall force (1.6)"),
+    RAT(W, "v_group_front", v_group_front, "m/s", "nv", NULL, "v_group/sqrt(3/2): the front speed of F.27"),
+    RAT(W, "t_q", t_q, "s", "nv", NULL, "slope of tau_N against N - 1 (F.4)"),
+    RAT(W, "mean_wall_force", mean_wall_force, "N", "nv", NULL, "impulse/tau_N of the longest column"),
+    RAT(W, "period", period, "s", "nv", NULL, "mean wall-force period over N >= 10"),
+    RDT(W, "beta", beta, "", "exponent of 4R/T_q against v_imp (F.16: 1/5)"),
+    RDT(W, "beta_err", beta_err, "", "its standard error"),
+    RDT(W, "c3", c3, "", "C3 of the 4R/T_q fit (F.16)"),
+    RDT(W, "c3_theory", c3_theory, "", "C3 of the momentum balance (F.27): 2"),
     WFITS(0, "tq", "4R/T_q"), WFITS(1, "front", "front"), WFITS(2, "group", "group"),
     WFITS(3, "group_front", "group/sqrt(3/2)"),
-    RD(W, "c2", c2, "", "C2 of P = C2 (m/k)^(2/5) v_imp^(-1/5) (F.15)"),
-    RD(W, "beta_period", beta_period, "", "exponent of P against v_imp (F.15: -1/5)"),
-    RD(W, "beta_period_err", beta_period_err, "", "its standard error"),
-    RD(W, "max_disagreement", max_disagreement, "", "largest relative difference of tq, front, group/sqrt(3/2)"),
-    RD(W, "front_threshold_fraction", threshold, "", "front threshold / F_max(1)"),
-    RI(W, "n_min", n_min, "smallest column"),
-    RI(W, "n_max", n_max, "longest column (the front's)"),
-    RD(W, "wall_time_s", wall_time_s, "s", "wall-clock time"),
+    RDT(W, "c2", c2, "", "C2 of P = C2 (m/k)^(2/5) v_imp^(-1/5) (F.15)"),
+    RDT(W, "beta_period", beta_period, "", "exponent of P against v_imp (F.15: -1/5)"),
+    RDT(W, "beta_period_err", beta_period_err, "", "its standard error"),
+    RDT(W, "max_disagreement", max_disagreement, "", "largest relative difference of tq, front, group/sqrt(3/2)"),
+    RDT(W, "front_threshold_fraction", threshold, "", "front threshold / F_max(1)"),
+    RIT(W, "n_min", n_min, "smallest column"),
+    RIT(W, "n_max", n_max, "longest column (the front's)"),
+    RDT(W, "wall_time_s", wall_time_s, "s", "wall-clock time"),
     GW_PARAM_END};
 #undef W
 
 #define S gw_chain_softwall_outcome
 static const gw_param sw_fields[] = {
-    RI(S, "nw", nw, "walls (1, or the sheets of Table 2)"),
-    RI(S, "nn", nn, "column sizes"),
-    RI(S, "nsheet", nsheet, "sheets compared with the paper (0, 1 or nw)"),
-    RD(S, "v_imp", v_imp, "m/s", "impact velocity"),
-    RD(S, "k_c", k_c, "N/m^1.5", "critical wall coefficient K_c (F.22)"),
-    RD(S, "t_q_rigid", t_q_rigid, "s", "T_q on a steel wall (slope of tau_N, N = 1..20)"),
-    RD(S, "tol", tol, "", "plateau tolerance"),
-    RI(S, "sheet_law", sheet_law, "0 fitted, 1 hertz, 2 layer, 3 material"),
-    RA(S, "n", n, "", "nn", NULL, "column sizes N"),
-    RA(S, "kwall", kwall, "N/m^1.5", "nw", NULL, "wall coefficient K [wall]"),
+    RIT(S, "nw", nw, "walls (1, or the sheets of Table 2)"),
+    RIT(S, "nn", nn, "column sizes"),
+    RIT(S, "nsheet", nsheet, "sheets compared with the paper (0, 1 or nw)"),
+    RDT(S, "v_imp", v_imp, "m/s", "impact velocity"),
+    RDT(S, "k_c", k_c, "N/m^1.5", "critical wall coefficient K_c (F.22)"),
+    RDT(S, "t_q_rigid", t_q_rigid, "s", "T_q on a steel wall (slope of tau_N, N = 1..20)"),
+    RDT(S, "tol", tol, "", "plateau tolerance"),
+    RIT(S, "sheet_law", sheet_law, "0 fitted, 1 hertz, 2 layer, 3 material"),
+    RAT(S, "n", n, "", "nn", NULL, "column sizes N"),
+    RAT(S, "kwall", kwall, "N/m^1.5", "nw", NULL, "wall coefficient K [wall]"),
     RIA(S, "rigid", rigid, "nw", "1: K > K_c [wall]"),
     RIA(S, "saturated", saturated, "nw", "1: F_max reached its plateau within the sizes [wall]"),
-    RA(S, "f_max", f_max, "N", "nw", "nn", "largest wall force [wall, N]"),
-    RA(S, "tau_max", tau_max, "s", "nw", "nn", "time of f_max [wall, N]"),
-    RA(S, "n_d", n_d, "", "nw", NULL, "saturation number N_d (NaN: not reached) [wall]"),
-    RA(S, "n_d_predicted", n_d_predicted, "", "nw", NULL, "ceil(tau_max(N_d)/T_q) (F.8) [wall]"),
-    RA(S, "n_d_fixed_point", n_d_fixed_point, "", "nw", NULL, "smallest N >= ceil(tau_max(N)/T_q) [wall]"),
-    RA(S, "f_plateau", f_plateau, "N", "nw", NULL, "F_max of the longest column [wall]"),
-    RA(S, "tau_max_at_n_d", tau_max_at_n_d, "s", "nw", NULL, "tau_max at N_d [wall]"),
+    RAT(S, "f_max", f_max, "N", "nw", "nn", "largest wall force [wall, N]"),
+    RAT(S, "tau_max", tau_max, "s", "nw", "nn", "time of f_max [wall, N]"),
+    RAT(S, "n_d", n_d, "", "nw", NULL, "saturation number N_d (NaN: not reached) [wall]"),
+    RAT(S, "n_d_predicted", n_d_predicted, "", "nw", NULL, "ceil(tau_max(N_d)/T_q) (F.8) [wall]"),
+    RAT(S, "n_d_fixed_point", n_d_fixed_point, "", "nw", NULL, "smallest N >= ceil(tau_max(N)/T_q) [wall]"),
+    RAT(S, "f_plateau", f_plateau, "N", "nw", NULL, "F_max of the longest column [wall]"),
+    RAT(S, "tau_max_at_n_d", tau_max_at_n_d, "s", "nw", NULL, "tau_max at N_d [wall]"),
     {.name = "sheet_table", .type = GW_PARAM_DARRAY, .offset = offsetof(S, sheet_table), .unit = "SI",
      .rows = "nsheet", .cols = "25", .choices = GW_SOFTWALL_SHEET_COLS,
      .help = "model against measured per sheet (s, N, m, N/m^1.5; NaN: not defined) [sheet, column]"},
@@ -170,7 +164,7 @@ static const gw_param sw_fields[] = {
      .help = "the compared sheets, comma-separated"},
     {.name = "sheet_materials", .type = GW_PARAM_TEXT, .offset = offsetof(S, sheet_materials), .unit = "",
      .help = "what their constants describe, separated by semicolons"},
-    RD(S, "wall_time_s", wall_time_s, "s", "wall-clock time"),
+    RDT(S, "wall_time_s", wall_time_s, "s", "wall-clock time"),
     GW_PARAM_END};
 #undef S
 

@@ -120,7 +120,22 @@ void gw_param_clear(const gw_param *t, void *obj);
  * clear); other bytes are copied as they are. GW_ENOMEM (dst then clear). */
 int gw_param_copy(const gw_param *t, size_t size, void *dst, const void *src, gw_err *err);
 
-/* Convenience for tables: offset and row constructors. */
+/* Row constructors (off: the field's offsetof in its struct). Input rows: a
+ * number (lo, hi its range, op/opx 1 for an open end, df the default as text),
+ * a choice (ch the names, comma-separated), a flag (default 0). Result rows:
+ * a number of type ty, an array of rows x cols (names: its columns or NULL). */
+#define GW_PARAM_ROW(nm, ty, off, un, lo, hi, op, opx, df, mv, hl)                                   \
+    {.name = nm, .type = ty, .offset = off, .unit = un, .min = lo, .max = hi, .open_min = op,         \
+     .open_max = opx, .def = df, .metavar = mv, .help = hl}
+#define GW_PARAM_CHOICE_ROW(nm, off, ch, df, mv, hl)                                                 \
+    {.name = nm, .type = GW_PARAM_CHOICE, .offset = off, .unit = "", .def = df, .choices = ch,       \
+     .metavar = mv, .help = hl}
+#define GW_PARAM_FLAG_ROW(nm, off, hl)                                                               \
+    {.name = nm, .type = GW_PARAM_FLAG, .offset = off, .unit = "", .min = 0, .max = 1, .def = "0", .help = hl}
+#define GW_RESULT_ROW(nm, ty, off, un, hl) {.name = nm, .type = ty, .offset = off, .unit = un, .help = hl}
+#define GW_RESULT_ARRAY(nm, off, un, r, c, names, hl)                                                \
+    {.name = nm, .type = GW_PARAM_DARRAY, .offset = off, .unit = un, .rows = r, .cols = c, .choices = names, \
+     .help = hl}
 #define GW_PARAM_END {0}
 
 #endif

@@ -13,12 +13,6 @@
 #include "layer_setup_rows.h"
 
 #define OFF(f) offsetof(gw_layer_make_setup, f)
-#define ROW(nm, ty, f, un, lo, hi, op, opx, df, mv, hl)                                           \
-    {.name = nm, .type = ty, .offset = OFF(f), .unit = un, .min = lo, .max = hi, .open_min = op,    \
-     .open_max = opx, .def = df, .metavar = mv, .help = hl}
-#define CHOICE(nm, f, ch, df, mv, hl)                                                             \
-    {.name = nm, .type = GW_PARAM_CHOICE, .offset = OFF(f), .unit = "", .def = df, .choices = ch,  \
-     .metavar = mv, .help = hl}
 
 /* the ranges of `granwave layer-make` (the final overlap check is O(n^2): 1e5
  * particles take seconds there, and days of pluviation before) */
@@ -64,8 +58,6 @@ void gw_layer_make_setup_clear(gw_layer_make_setup *s)
 
 #undef OFF
 #define OFF(f) offsetof(gw_layer_make_outcome, f)
-#define RD(nm, f, un, hl) {.name = nm, .type = GW_PARAM_DOUBLE, .offset = OFF(f), .unit = un, .help = hl}
-#define RI(nm, f, hl) {.name = nm, .type = GW_PARAM_INT, .offset = OFF(f), .unit = "", .help = hl}
 
 static const gw_param make_fields[] = {
     RI("n", sample.n, "discs in the sample"),

@@ -18,14 +18,6 @@
 _Static_assert(GW_LAYER_UNTIL_REBOUND == 0 && GW_LAYER_UNTIL_VERDICT == 1, "until choices rebound,verdict");
 
 #define OFF(f) offsetof(gw_layer_impact_setup, f)
-#define ROW(nm, ty, f, un, lo, hi, op, opx, df, mv, hl)                                           \
-    {.name = nm, .type = ty, .offset = OFF(f), .unit = un, .min = lo, .max = hi, .open_min = op,    \
-     .open_max = opx, .def = df, .metavar = mv, .help = hl}
-#define CHOICE(nm, f, ch, df, mv, hl)                                                             \
-    {.name = nm, .type = GW_PARAM_CHOICE, .offset = OFF(f), .unit = "", .def = df, .choices = ch,  \
-     .metavar = mv, .help = hl}
-#define FLAG(nm, f, hl) {.name = nm, .type = GW_PARAM_FLAG, .offset = OFF(f), .unit = "", .min = 0, .max = 1, \
-                         .def = "0", .help = hl}
 
 
 static const gw_param impact_params[] = {
@@ -90,12 +82,6 @@ void gw_layer_impact_setup_clear(gw_layer_impact_setup *s)
 
 #undef OFF
 #define OFF(f) offsetof(gw_layer_impact_outcome, f)
-#define RD(nm, f, un, hl) {.name = nm, .type = GW_PARAM_DOUBLE, .offset = OFF(f), .unit = un, .help = hl}
-#define RI(nm, f, hl) {.name = nm, .type = GW_PARAM_INT, .offset = OFF(f), .unit = "", .help = hl}
-#define RL(nm, f, hl) {.name = nm, .type = GW_PARAM_LONG, .offset = OFF(f), .unit = "", .help = hl}
-#define RA(nm, f, un, r, c, names, hl)                                                       \
-    {.name = nm, .type = GW_PARAM_DARRAY, .offset = OFF(f), .unit = un, .rows = r, .cols = c, \
-     .choices = names, .help = hl}
 
 static const gw_param outcome_fields[] = {
     RI("bounced", r.bounced, "1: vy changed sign and the block left all contacts"),

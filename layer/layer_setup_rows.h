@@ -3,12 +3,22 @@
  * parameter tables (gw_layer_study.h), written once for layer-impact
  * (layer_setup.c: mass law and clump mass default to the sample's) and
  * layer-make (layer_make_study.c: disc, sum). Hertz-Mindlin contacts,
- * physics.md 2.1 (B.1-B.4). The includer defines OFF(field), ROW and CHOICE.
+ * physics.md 2.1 (B.1-B.4). It also gives the layer tables' row constructors
+ * ROW, CHOICE, FLAG (inputs) and RD, RI, RL, RA (results), on the includer's
+ * OFF(field) (the field's offset in its struct).
  */
 #ifndef GW_LAYER_SETUP_ROWS_H
 #define GW_LAYER_SETUP_ROWS_H
 
 #include "gw_layer_study.h"
+
+#define ROW(nm, ty, f, un, lo, hi, op, opx, df, mv, hl) GW_PARAM_ROW(nm, ty, OFF(f), un, lo, hi, op, opx, df, mv, hl)
+#define CHOICE(nm, f, ch, df, mv, hl) GW_PARAM_CHOICE_ROW(nm, OFF(f), ch, df, mv, hl)
+#define FLAG(nm, f, hl) GW_PARAM_FLAG_ROW(nm, OFF(f), hl)
+#define RD(nm, f, un, hl) GW_RESULT_ROW(nm, GW_PARAM_DOUBLE, OFF(f), un, hl)
+#define RI(nm, f, hl) GW_RESULT_ROW(nm, GW_PARAM_INT, OFF(f), "", hl)
+#define RL(nm, f, hl) GW_RESULT_ROW(nm, GW_PARAM_LONG, OFF(f), "", hl)
+#define RA(nm, f, un, r, c, names, hl) GW_RESULT_ARRAY(nm, OFF(f), un, r, c, names, hl)
 
 /* mass-law choices in GW_LAYER_MASS_* order, clump-mass in GW_LAYER_CLUMP_MASS_* order */
 _Static_assert(GW_LAYER_MASS_DISC == 0 && GW_LAYER_MASS_SPHERE == 1, "mass-law choices disc,sphere");

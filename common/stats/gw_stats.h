@@ -6,7 +6,7 @@
  * by gw_param tables, the study "layer-stats" of gw_study.h) and as the parts
  * it is made of (table reader, groups, diagram, B.31 fit). `granwave
  * layer-stats` (app/layer/layer_stats.c) parses its flags, calls gw_stats_analyse
- * and prints; nothing here prints, reads argv or exits.
+ * and prints; nothing here prints, parses a command line or exits.
  *
  * The module reads a table and includes no model header: the values of the
  * sweep model's parameters that a table leaves out (neither a grid key nor a

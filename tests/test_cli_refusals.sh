@@ -117,6 +117,13 @@ else
 fi
 refused "layer-make --out in a missing directory, before the run" 'directory' layer-make --n 10 --width-rm 6 --out "$tmp/missing/s.txt"
 refused "layer-stats --out under a file, before reading" '[Nn]ot a directory' layer-stats "$SRC/data/measured/layer_walls/results.csv" --out "$tmp/notes.txt/x"
+# a directory that refuses new files: read-only for a user; as root (whom the
+# mode does not stop) a new name under /proc, where nothing can be created
+if [ "$(id -u)" -ne 0 ]; then unw="$tmp/ro/stats"; else unw="/proc/granwave-stats-$$"; fi
+refused "layer-stats --out in a directory that refuses new files, before the analysis" 'layer-stats --out: cannot write into' \
+    layer-stats "$SRC/data/measured/layer_walls/results.csv" --out "$unw"
+[ ! -s "$tmp/stdout" ] && [ ! -e "$unw" ] && ok "  no statistics printed, nothing made" || ko "layer-stats printed or made something on a refused --out"
+refused "layer-stats with a missing table writes no --out" 'layer-stats.*missing.csv' layer-stats "$tmp/missing.csv" --out "$tmp/o"
 
 # --- 5: tolerances and options with no effect
 for cmd in "chain --n 2" "falcon --n 1:2 --heights none" "wavespeed --n 6:8 --vimp 0.3" "softwall --n 1:3" "dispersion --n 16 --t-samples 64" "drop --n 2 --t-max 2e-4"; do

@@ -169,7 +169,7 @@ fi
 
 # the layer commands' bounds on work and memory, and their file inputs: refused
 # before anything is allocated or written (the --out directory is not left behind)
-refused "layer-impact --dt 1e-12 (5e10 steps)" 'dt: a step of 1e-12 s takes 5e\+10 steps' layer-impact --sample "$tmp/L.txt" --dt 1e-12 --out "$tmp/o"
+refused "layer-impact --dt 1e-12 (5e10 steps)" 'dt: a step of 1e-12 s takes 5e\+10 steps' layer-impact --sample "$tmp/L.txt" --dt 1e-12 --t-max 0.05 --out "$tmp/o"
 refused "layer-impact --rings 1000 with 2e6 samples (64 GB)" 'dt-out: .* GB of series' layer-impact --sample "$tmp/L.txt" --rings 1000 --t-max 40 --out "$tmp/o"
 refused "layer-make --dt 1e-12 (6e12 steps)" 'dt: a step of 1e-12 s' layer-make --n 10 --dt 1e-12 --out "$tmp/o"
 refused "layer-impact --t-max above 1000 s" 'layer-impact --t-max: 2000 is outside' layer-impact --sample "$tmp/L.txt" --t-max 2000 --out "$tmp/o"

@@ -217,7 +217,7 @@ int gw_chain_falcon_run(const gw_chain_falcon_setup *s, gw_progress_fn progress,
                         gw_chain_falcon_outcome *out, gw_err *err)
 {
     memset(out, 0, sizeof *out);
-    int rc = chain_study_range_check(falcon_params, s, &s->col, err);
+    int rc = chain_study_range_check(falcon_params, s, &s->col, s->vimp.n + s->heights.n, err);
     if (rc != GW_OK)
         return rc;
     int nv = s->vimp.n + s->heights.n, nn = (int)(s->n[1] - s->n[0] + 1);

@@ -339,11 +339,11 @@ int gw_chain_params_validate(const gw_chain_params *p, gw_err *err)
     case GW_DAMP_NONE:
         break;
     case GW_DAMP_KUWABARA_KONO:
-        if ((rc = gw_check_range(p->gamma, "gamma (Kuwabara-Kono, N s/m^1.5)", 0, INFINITY, err)) != GW_OK)
+        if ((rc = gw_check_range(p->gamma, "gamma (Kuwabara-Kono, N s/m^1.5)", 0, GW_CHAIN_GAMMA_MAX, err)) != GW_OK)
             return rc;
         break;
     case GW_DAMP_HUNT_CROSSLEY:
-        if ((rc = gw_check_range(p->alpha, "alpha (Hunt-Crossley, s/m)", 0, INFINITY, err)) != GW_OK)
+        if ((rc = gw_check_range(p->alpha, "alpha (Hunt-Crossley, s/m)", 0, GW_CHAIN_ALPHA_MAX, err)) != GW_OK)
             return rc;
         break;
     default:

@@ -6,8 +6,9 @@
  * alpha (s/m; F = K d^(3/2) (1 + 1.5 alpha d')) or the Kuwabara-Kono gamma
  * (N s/m^1.5 of bead contacts; the wall uses gamma K/k). e(c) falls
  * monotonically from 1 at c = 0; the root of e(c) - e_target is bracketed by
- * doubling from the small-damping estimate (Hunt-Crossley: e ~ 1 - alpha v)
- * and solved with GSL's Brent method to 1e-10 relative in e. The bead hits the
+ * doubling from the small-damping estimate (Hunt-Crossley: e ~ 1 - alpha v),
+ * at most up to GW_CHAIN_ALPHA_MAX / GW_CHAIN_GAMMA_MAX (a target that needs
+ * more is refused, GW_EINVAL), and solved with GSL's Brent method to 1e-10 relative in e. The bead hits the
  * Hertz wall kwall on a rigid sensor, without guide friction: a sheet law, sensor
  * body or guide of the parameters is left out of the calibration.
  */
@@ -72,14 +73,22 @@ int gw_chain_calibrate(const gw_chain_params *p, const gw_chain_run_opts *o, dou
     double lo = 0.0, hi = p->damping == GW_DAMP_HUNT_CROSSLEY
                               ? (1 - e_target) / p->v_imp
                               : (1 - e_target) * p->k * gw_chain_time_scale(p);
+    /* the bracket stops at the largest accepted constant (gw_chain.h) */
+    int hc = p->damping == GW_DAMP_HUNT_CROSSLEY;
+    double cmax = hc ? GW_CHAIN_ALPHA_MAX : GW_CHAIN_GAMMA_MAX;
+    hi = fmin(hi, cmax);
     double fhi = bead_restitution(hi, &cb);
-    for (int i = 0; i < 60 && cb.rc == GW_OK && fhi > 0; i++) {
+    for (int i = 0; i < 80 && cb.rc == GW_OK && fhi > 0 && hi < cmax; i++) {
         lo = hi;
-        hi *= 2;
+        hi = fmin(2 * hi, cmax);
         fhi = bead_restitution(hi, &cb);
     }
     if (cb.rc != GW_OK)
         return cb.rc;
+    if (fhi > 0 && hi >= cmax)
+        return gw_err_set(err, GW_EINVAL, "restitution: e = %g at %g m/s needs %s above %g %s, the largest accepted "
+                          "(an overdamped contact; raise restitution-v or restitution)",
+                          e_target, p->v_imp, hc ? "alpha" : "gamma", cmax, hc ? "s/m" : "N s/m^1.5");
     if (!(fhi <= 0))
         return gw_err_set(err, GW_ESOLVER, "restitution: could not bracket e = %g", e_target);
     gsl_function F = {bead_restitution, &cb};

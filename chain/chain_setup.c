@@ -62,12 +62,31 @@ void chain_study_setup_clear(void *s, gw_chain_setup *col, const gw_param *t)
     gw_chain_setup_clear(col);
 }
 
-int chain_study_range_check(const gw_param *t, const void *s, const gw_chain_setup *col, gw_err *err)
+int chain_study_range_check(const gw_param *t, const void *s, const gw_chain_setup *col, int runs, gw_err *err)
 {
     int rc = gw_param_check(t, s, err);
     if (rc == GW_OK && col->radii.n > 0)
         rc = gw_err_set(err, GW_EINVAL, "radii: per-bead radii need a fixed N (use the chain study)");
-    return rc;
+    const gw_param *row = gw_param_find(t, "n");
+    if (rc != GW_OK || !row || row->type != GW_PARAM_RANGE)
+        return rc;
+    const long *n = (const long *)((const char *)s + row->offset);
+    return gw_chain_study_work_check(n[0], n[1], runs, err);
+}
+
+int gw_chain_study_work_check(long a, long b, int runs, gw_err *err)
+{
+    if (runs < 1)
+        runs = 1;
+    /* sum of N^2 for N = a..b in double (b <= 1e5 in every table: exact to 1e-16) */
+    double x = (double)a - 1, y = (double)b;
+    double work = runs * (y * (y + 1) * (2 * y + 1) - x * (x + 1) * (2 * x + 1)) / 6;
+    if (work > GW_CHAIN_STUDY_WORK_MAX)
+        return gw_err_set(err, GW_EINVAL,
+                          "n: %ld:%ld at %d column%s per N is %.3g bead^2 of work (sum of N^2), above the "
+                          "bound %.0e (a column's work grows as N^2; the largest documented study is 2e5)",
+                          a, b, runs, runs > 1 ? "s" : "", work, GW_CHAIN_STUDY_WORK_MAX);
+    return GW_OK;
 }
 
 void gw_chain_resolved_free(gw_chain_resolved *r)

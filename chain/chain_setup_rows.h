@@ -62,9 +62,10 @@ _Static_assert(GW_SHEET_FITTED == 0 && GW_SHEET_HERTZ == 1 && GW_SHEET_LAYER == 
 /* damping .. max-steps */
 #define GW_CHAIN_SOLVER_ROWS \
     CHOICE("damping", damping, "none,kk,hc", "none", "MODEL", "none, kk (Kuwabara-Kono) or hc (Hunt-Crossley) [none]"), \
-    ROW("gamma", GW_PARAM_DOUBLE, gamma, "N s/m^1.5", 0, INFINITY, 0, NULL, "G", \
-        "Kuwabara-Kono constant of bead contacts, N s/m^1.5 [0]"), \
-    ROW("alpha", GW_PARAM_DOUBLE, alpha, "s/m", 0, INFINITY, 0, NULL, "A", "Hunt-Crossley constant, s/m [0]"), \
+    ROW("gamma", GW_PARAM_DOUBLE, gamma, "N s/m^1.5", 0, GW_CHAIN_GAMMA_MAX, 0, NULL, "G", \
+        "Kuwabara-Kono constant of bead contacts, N s/m^1.5, in [0, 1e14] [0]"), \
+    ROW("alpha", GW_PARAM_DOUBLE, alpha, "s/m", 0, GW_CHAIN_ALPHA_MAX, 0, NULL, "A", \
+        "Hunt-Crossley constant, s/m, in [0, 1e8] [0]"), \
     ROW("restitution", GW_PARAM_DOUBLE, restitution, "", 0, 1, 1, NULL, "E", \
         "calibrate gamma/alpha so one bead on the wall rebounds with E"), \
     ROW("restitution-v", GW_PARAM_DOUBLE, restitution_v, "m/s", 0, 1e3, 1, NULL, "V", \
@@ -80,9 +81,14 @@ _Static_assert(GW_SHEET_FITTED == 0 && GW_SHEET_HERTZ == 1 && GW_SHEET_LAYER == 
     ROW("max-steps", GW_PARAM_LONG, max_steps, "", 1, 1e12, 0, "10000000", "N", \
         "internal steps allowed between outputs [1e7]"),
 
+/* The relative energy error |E - E_0| / E_0 of the ledger (kinetic + elastic +
+ * gravity + dissipated, physics.md 1.5) closes to ~1e-9 at the default
+ * tolerances; a limit of 1 (the whole energy) is the loosest that still means
+ * something, above it the check acts as off, which 0 already says (the layer's
+ * energy-tol has the same range). */
 #define GW_CHAIN_ENERGY_ROW \
-    ROW("energy-tol", GW_PARAM_DOUBLE, energy_tol, "", 0, INFINITY, 0, "0", "E", \
-        "abort when the relative energy error exceeds E [off]"),
+    ROW("energy-tol", GW_PARAM_DOUBLE, energy_tol, "", 0, 1, 0, "0", "E", \
+        "abort when the relative energy error exceeds E, in [0, 1] [0 = off]"),
 
 /* The sheet as a material, the sensor as a body, guide friction (chain_wall.c,
  * chain_general.c). Rows without a default are "not given": the sheet's own
@@ -113,7 +119,9 @@ _Static_assert(GW_SHEET_FITTED == 0 && GW_SHEET_HERTZ == 1 && GW_SHEET_LAYER == 
 int chain_study_setup_init(void *s, size_t size, gw_chain_setup *col, const gw_param *t);
 void chain_study_setup_clear(void *s, gw_chain_setup *col, const gw_param *t);
 /* The check of a study over a range of N: s's rows as t says (gw_param_check),
- * and no per-bead radii in its column setup col. GW_EINVAL naming the row. */
-int chain_study_range_check(const gw_param *t, const void *s, const gw_chain_setup *col, gw_err *err);
+ * no per-bead radii in its column setup col, and the study's work, runs columns
+ * at each N of t's range row "n", within GW_CHAIN_STUDY_WORK_MAX
+ * (gw_chain_study.h). GW_EINVAL naming the row. */
+int chain_study_range_check(const gw_param *t, const void *s, const gw_chain_setup *col, int runs, gw_err *err);
 
 #endif

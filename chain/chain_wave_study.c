@@ -300,7 +300,7 @@ int gw_chain_wavespeed_run(const gw_chain_wavespeed_setup *s, gw_progress_fn pro
                            gw_chain_wavespeed_outcome *out, gw_err *err)
 {
     memset(out, 0, sizeof *out);
-    int rc = chain_study_range_check(ws_params, s, &s->col, err);
+    int rc = chain_study_range_check(ws_params, s, &s->col, s->vimp.n, err);
     if (rc != GW_OK)
         return rc;
     long a = s->n[0], b = s->n[1];
@@ -495,7 +495,7 @@ int gw_chain_softwall_run(const gw_chain_softwall_setup *s, gw_progress_fn progr
                           gw_chain_softwall_outcome *out, gw_err *err)
 {
     memset(out, 0, sizeof *out);
-    int rc = chain_study_range_check(sw_params, s, &s->col, err);
+    int rc = chain_study_range_check(sw_params, s, &s->col, s->sheets ? gw_sheet_count() : 1, err);
     if (rc != GW_OK)
         return rc;
     if (s->sheets && (!isnan(s->col.kwall) || s->col.sheet >= 0))

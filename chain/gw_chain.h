@@ -212,6 +212,21 @@ typedef struct gw_chain_params {
  * (beyond, the Hertz overlaps exceed the bead radius long before). */
 #define GW_CHAIN_VIMP_MAX 1e3
 
+/* Largest damping constants (docs/physics.md 1.5). Hunt-Crossley's restitution
+ * depends on alpha v alone (measured with gw_chain_calibrate: e = 0.5 at
+ * alpha v = 0.955, e = 0.1 at 6.67, e = 0.01 at 66.7, the same at 1e-3, 0.3 and
+ * 100 m/s), so alpha <= 1e8 s/m holds every constant that calibrates e >= 0.01 at
+ * speeds down to 1e-6 m/s; measured constants of solids are 0.01-10 s/m.
+ * Kuwabara-Kono's depends on g = gamma v^(1/5) / (k^(3/5) m^(2/5)) (e = 0.01 at
+ * g = 15.6, steel at 1e-3 and 0.3 m/s), so over the table's k <= 1e14 N/m^1.5
+ * and m <= 1e3 kg, e >= 0.01 at v >= 1e-6 m/s needs gamma <= 1.6e12; 1e14 leaves
+ * a factor 60. gamma/k = (3/2) A is the material's dissipative time A, which is
+ * then at least 0.7 s at the stiffest contact against contact times of us to ms.
+ * Beyond both the contact is overdamped (the bead stays on the wall) and larger
+ * numbers only overflow the force (gamma 1e50 failed at t = 0 before). */
+#define GW_CHAIN_GAMMA_MAX 1e14
+#define GW_CHAIN_ALPHA_MAX 1e8
+
 /* Stainless steel beads of the experiment: R = 4 mm, E = 21.6e10 Pa,
  * nu = 0.276, rho = 7850 kg/m^3 (m = 4/3 pi R^3 rho), steel wall, n = 1,
  * v_imp = 0.3 m/s, no gravity, no damping. */
@@ -441,9 +456,16 @@ typedef struct gw_chain_disp_params {
                              omega_c at 80 % of the Nyquist frequency */
     int steps_per_sample; /* RK4 steps per sampling interval (fixed step) */
     double min_bins;      /* a ridge is resolved when its frequency is at least
-                             this many frequency bins (2 pi / T) above zero */
+                             this many frequency bins (2 pi / T) above zero; in
+                             [1, t_samples/2 - 2]: the ridge is looked for in the
+                             bins below t_samples/2 - 1 (the last bins of the
+                             one-sided spectrum have no neighbour to refine the
+                             peak), so a larger value resolves nothing */
     int fftw_measure;     /* 1: plan with FFTW_MEASURE, 0: FFTW_ESTIMATE */
 } gw_chain_disp_params;
+
+/* Largest min_bins of any run: t_samples/2 - 2 at the largest t_samples, 2^24. */
+#define GW_CHAIN_DISP_MIN_BINS_MAX ((double)((1 << 23) - 2))
 
 /* Steel beads of gw_chain_params_default, n = 1024, f0 = 10 N, periodic,
  * amp = 1e-3, seed 1, 2048 samples, dt_sample 0 (auto), 16 RK4 steps per sample,

@@ -27,6 +27,24 @@
 #define GW_CHAIN_K_MIN 1e3
 #define GW_CHAIN_K_MAX 1e14
 
+/* Work of a study over a range of N (falcon, wavespeed, softwall): a column of
+ * N beads runs to t_max = 20 (N T_q + tau_1) with steps set by the contact time,
+ * so its work grows as N^2 (beads x steps; measured, falcon at 0.316 m/s, one
+ * job: N = 100 3.0 s, 200 14 s, 400 39 s). The study's work, the sum of N^2
+ * over its range times the columns run at each N (impact speeds, heights or
+ * walls), is refused above 2e6 before anything runs: 9x the largest documented
+ * study (softwall --sheets --n 1:40, 9 walls x 22140 = 2.0e5, 47 s) and room
+ * for falcon --n 1:100 at its five default speeds (1.7e6); at the bound one
+ * column of N = 1414, estimated 8 to 15 min from the N = 400 run (N^2 to N^2.5).
+ * --n 1:100000 asked for 3e14 (days). */
+#define GW_CHAIN_STUDY_WORK_MAX 2e6
+
+/* The work of a study over N = a..b with runs columns at each N (runs < 1
+ * counts as 1) against GW_CHAIN_STUDY_WORK_MAX: GW_EINVAL "n: A:B at R
+ * columns per N is W bead^2 of work ...", else GW_OK. The studies call it in
+ * their check; commands call it before they create --out. */
+int gw_chain_study_work_check(long a, long b, int runs, gw_err *err);
+
 typedef struct gw_chain_setup {
     long n;               /* beads [1] */
     double vimp;          /* impact velocity toward the wall, m/s [0.3] */

@@ -367,7 +367,7 @@ typedef struct gw_layer_impact_params {
     double x;           /* impact abscissa from the box centre, m [0] */
     double height_rm;   /* layer height kept mobile, in R_m [0 = all] */
     double gap;         /* initial gap between block and target particle, m [1e-6] */
-    double t_max;       /* s [0.05] */
+    double t_max;       /* s [2] */
     double dt_out;      /* sampling interval, s [2e-5] */
     double ring_width;  /* crown width d_c, m [2 R_m] */
     int nrings;         /* crowns [12] */

@@ -44,7 +44,7 @@ gw_layer_impact_params gw_layer_impact_params_default(void)
     p.x = 0;
     p.height_rm = 0;
     p.gap = 1e-6;
-    p.t_max = 0.05;
+    p.t_max = 2.0; /* past T_f of the default impact, 0.42 s (layer_setup.c) */
     p.dt_out = 2e-5;
     p.ring_width = 0; /* 0: 2 R_m */
     p.nrings = 12;

@@ -20,7 +20,8 @@
 #     0 where the flag's help documents it ("0 =", "[0", "[0]") or in ZERO_OK,
 #     1e-308 / 1e308 / 1e20 only where the flag is bounded by nothing physical
 #     (TINY_OK, HUGE_OK); elsewhere a tiny or absurd value must be refused (2)
-#     or fail the run (1);
+#     or fail the run (1), and refused (2) for the flags with a physical upper
+#     bound (HUGE_REFUSED: gamma, alpha, energy-tol, dispersion's min-bins);
 #   - on exit 2: exactly one line on stderr, naming the flag ("--flag", or the
 #     flag's name as the quantity, "t-max (s): ..."), and nothing written in the
 #     --out directory (an existing empty directory; layer-make's sample goes in it);
@@ -66,7 +67,10 @@ ZERO_OK=" *:poisson layer-make:damping layer-impact:ring-width *:gravity *:gamma
           dispersion:dt-out *:restitution-v "
 TINY_OK=" *:gravity *:gamma *:alpha *:energy-tol layer-impact:x layer-impact:alpha layer-impact:gap drop:gap drop:peak-threshold
           layer-stats:delta-rm layer-make:height-rm *:guide-friction *:guide-viscous "
-HUGE_OK=" *:energy-tol *:skin layer-impact:dt-out " # a huge list skin or sampling step only costs or thins output
+HUGE_OK=" *:skin layer-impact:dt-out " # a huge list skin or sampling step only costs or thins output
+# flags with a physical upper bound in their table row: a huge value (1e308,
+# 99999999999999999999) must be refused (2), never run and fail (1)
+HUGE_REFUSED=" *:gamma *:alpha *:energy-tol dispersion:min-bins "
 # known failures owned by files this change may not edit (see the report)
 # (layer_model.c / layer_cli.c / layer_cmd.c: messages name the quantity, not the
 # flag; --rb-rm is reported as --x; --vi 1e20 runs out of memory or time; --vi and
@@ -202,6 +206,7 @@ run_cmd() {
                 *) allow="012";;
                 esac
                 fi
+                case "$val" in 1e308|99999999999999999999) in_list "$HUGE_REFUSED" "$cmd" "$flag" && allow="2";; esac
                 case "$allow" in *$rc*) ;; *) bad="exit $rc, allowed: $allow";; esac
                 if [ -z "$bad" ] && [ $rc -eq 2 ]; then
                     nl=$(wc -l <"$tmp/stderr")

@@ -6,6 +6,12 @@
 #    refused by the list parser itself (exit 2, the item named; before the fix
 #    wavespeed printed it after freeing the list); falcon refuses the speeds
 #    chain refuses.
+#  2 unbounded work: dispersion --min-bins in [1, T/2 - 2] (above, no ridge can
+#    be resolved); the column's --gamma <= 1e14, --alpha <= 1e8, --energy-tol <= 1
+#    in every chain command and a chain sweep, and --restitution refused when it
+#    needs a constant beyond them; falcon, wavespeed and softwall refuse a range
+#    of N whose work (sum of N^2 x columns per N) exceeds 2e6, at once, before
+#    --out is made.
 #  3 special files: a FIFO or /dev/zero given as a sweep config, a layer sample,
 #    a layer-stats table or FFTW wisdom is refused at once (exit 2 within 5 s,
 #    one line naming the input), never read.
@@ -59,6 +65,31 @@ refused "falcon --vimp refuses what chain refuses (2000 m/s)" 'falcon --vimp: it
 refused "falcon --heights beyond the shared speed bound" 'falcon --heights: item 1' falcon --n 1:2 --heights 1e12 --out "$tmp/o"
 refused "chain --radii with a zero radius" 'radii: item 2 is 0' chain --n 3 --radii 4e-3,0,4e-3 --out "$tmp/o"
 
+# --- 2: physical ranges (the parameter tables) and the work of a study over N,
+# refused before anything is written and before any column runs
+refused "dispersion --min-bins absurd" 'dispersion --min-bins: 1e9 is outside' dispersion --n 16 --t-samples 64 --min-bins 1e9 --out "$tmp/o"
+refused "dispersion --min-bins above T/2 - 2 (nothing resolvable)" 'dispersion --min-bins: 31 is above 30' dispersion --n 16 --t-samples 64 --min-bins 31 --out "$tmp/o"
+"$GW" dispersion --n 16 --t-samples 64 --min-bins 30 >/dev/null 2>&1 && ok "dispersion --min-bins T/2 - 2 accepted" || ko "dispersion --min-bins 30 at 64 samples refused"
+for cmd in "chain --n 2" "falcon --n 1:3 --heights none" "wavespeed --n 6:8 --vimp 0.3" "softwall --n 1:3" "drop --n 2 --t-max 2e-4"; do
+    c=${cmd%% *}
+    refused "$c --gamma above 1e14" "$c --gamma: 1.1e14 is outside" $cmd --damping kk --gamma 1.1e14 --out "$tmp/o"
+    refused "$c --alpha 1e300" "$c --alpha: 1e300 is outside" $cmd --damping hc --alpha 1e300 --out "$tmp/o"
+    refused "$c --energy-tol 1e300 (acted as off)" "$c --energy-tol: 1e300 is outside" $cmd --energy-tol 1e300 --out "$tmp/o"
+done
+"$GW" chain --n 2 --damping hc --alpha 1e8 --t-max 1e-3 >/dev/null 2>&1; rc=$?
+[ $rc -le 1 ] && ok "chain --alpha 1e8 (the bound) runs (exit $rc: overdamped, the bead stays)" || ko "chain --alpha 1e8: exit $rc"
+"$GW" chain --n 2 --energy-tol 1 >/dev/null 2>&1 && ok "chain --energy-tol 1 accepted" || ko "chain --energy-tol 1 refused"
+refused "chain --restitution needing alpha above the bound" 'chain --restitution: e = 0.01 at 1e-07 m/s needs alpha above' chain --n 2 --damping hc --restitution 0.01 --restitution-v 1e-7 --out "$tmp/o"
+printf '[sweep]\nmodel = chain\n[grid]\nn = 1:2\n[params]\ndamping = kk\ngamma = 1e15\n' >"$tmp/gamma.ini"
+refused "sweep with gamma = 1e15" 'gamma: 1e\+15 is outside' sweep "$tmp/gamma.ini" --out "$tmp/o"
+t0=$(date +%s)
+refused "falcon --n 1:100000 (days of work)" 'falcon --n: 1:100000 at 5 columns per N' falcon --n 1:100000 --out "$tmp/o"
+refused "wavespeed --n 5:100000" 'wavespeed --n: 5:100000 at 1 column' wavespeed --n 5:100000 --vimp 0.3 --out "$tmp/o"
+refused "softwall --n 1:100000" 'softwall --n: 1:100000' softwall --n 1:100000 --out "$tmp/o"
+refused "softwall --sheets --n 1:100 (9 walls)" 'softwall --n: 1:100 at 9 columns' softwall --sheets --n 1:100 --out "$tmp/o"
+refused "falcon --n 1:182 at one speed (sum N^2 = 2026115)" 'falcon --n: 1:182' falcon --n 1:182 --heights none --out "$tmp/o"
+[ $(( $(date +%s) - t0 )) -le 10 ] && ok "the study refusals took seconds" || ko "the study refusals took $(( $(date +%s) - t0 )) s"
+
 # --- 3: special files
 mkfifo "$tmp/fifo"
 refused "sweep config is a FIFO" 'FIFO' sweep "$tmp/fifo" --out "$tmp/o"
@@ -86,6 +117,13 @@ else
 fi
 refused "layer-make --out in a missing directory, before the run" 'directory' layer-make --n 10 --width-rm 6 --out "$tmp/missing/s.txt"
 refused "layer-stats --out under a file, before reading" '[Nn]ot a directory' layer-stats "$SRC/data/measured/layer_walls/results.csv" --out "$tmp/notes.txt/x"
+# a directory that refuses new files: read-only for a user; as root (whom the
+# mode does not stop) a new name under /proc, where nothing can be created
+if [ "$(id -u)" -ne 0 ]; then unw="$tmp/ro/stats"; else unw="/proc/granwave-stats-$$"; fi
+refused "layer-stats --out in a directory that refuses new files, before the analysis" 'layer-stats --out: cannot write into' \
+    layer-stats "$SRC/data/measured/layer_walls/results.csv" --out "$unw"
+[ ! -s "$tmp/stdout" ] && [ ! -e "$unw" ] && ok "  no statistics printed, nothing made" || ko "layer-stats printed or made something on a refused --out"
+refused "layer-stats with a missing table writes no --out" 'layer-stats.*missing.csv' layer-stats "$tmp/missing.csv" --out "$tmp/o"
 
 # --- 5: tolerances and options with no effect
 for cmd in "chain --n 2" "falcon --n 1:2 --heights none" "wavespeed --n 6:8 --vimp 0.3" "softwall --n 1:3" "dispersion --n 16 --t-samples 64" "drop --n 2 --t-max 2e-4"; do
@@ -131,7 +169,7 @@ fi
 
 # the layer commands' bounds on work and memory, and their file inputs: refused
 # before anything is allocated or written (the --out directory is not left behind)
-refused "layer-impact --dt 1e-12 (5e10 steps)" 'dt: a step of 1e-12 s takes 5e\+10 steps' layer-impact --sample "$tmp/L.txt" --dt 1e-12 --out "$tmp/o"
+refused "layer-impact --dt 1e-12 (5e10 steps)" 'dt: a step of 1e-12 s takes 5e\+10 steps' layer-impact --sample "$tmp/L.txt" --dt 1e-12 --t-max 0.05 --out "$tmp/o"
 refused "layer-impact --rings 1000 with 2e6 samples (64 GB)" 'dt-out: .* GB of series' layer-impact --sample "$tmp/L.txt" --rings 1000 --t-max 40 --out "$tmp/o"
 refused "layer-make --dt 1e-12 (6e12 steps)" 'dt: a step of 1e-12 s' layer-make --n 10 --dt 1e-12 --out "$tmp/o"
 refused "layer-impact --t-max above 1000 s" 'layer-impact --t-max: 2000 is outside' layer-impact --sample "$tmp/L.txt" --t-max 2000 --out "$tmp/o"

@@ -8,7 +8,9 @@
 #   the verdict, e_n_first and penetration as the exact mode (0.005, 1 %);
 # - outcomes from events: a run cut before T_f or before the take-off reports
 #   what is undecided as null with one warning line; --until verdict stops at
-#   the take-off; --until with a bad value or with --full is refused;
+#   the take-off; --until with a bad value or with --full is refused; the
+#   default impact (default t-max, 2 s) is decided and stops at T_f, where
+#   T_f = t_rebound + v_nr / g (free flight);
 #   and --out writes ledger.csv, crowns.csv, crowns_peaks.csv, crowns_spectra.csv,
 #   impact.json, two VTK snapshots and their .pvd series; the JSON has the
 #   cross-correlation wave speed keys and one delay per ring pair, and the ring
@@ -106,6 +108,14 @@ check "cut before the take-off: bounced null (undecided, not false), e_n and e_n
 "$gw" layer-impact --sample "$tmp/a.txt" --rb-rm 1 --vi 10 --x 0.3 --t-max 0.005 --until verdict --json > "$tmp/ver.json" 2> "$tmp/ver.err"
 check "--until verdict: stops at the take-off, no warning, e_n null, e_n_first as without it" \
   "[ ! -s '$tmp/ver.err' ] && python3 -c \"import json,sys; v=json.load(open('$tmp/ver.json')); f=json.load(open('$tmp/fast.json')); sys.exit(0 if v['bounced'] is True and v['e_n'] is None and v['e_n_first'] == f['e_n_first'] and v['t_end'] < f['t_end'] and v['settings']['until'] == 'verdict' else 1)\""
+# the default impact (no --t-max: the table's 2 s) is decided: it runs to T_f
+# (0.30 s on this sample, 0.2 s of CPU) and stops there, long before t-max;
+# from the maximum normal velocity at t_rebound the block flies freely, so
+# T_f = t_rebound + v_nr / g (to 1e-4 s: five samples of dt-out 2e-5 s) and
+# e_n, the maximum, is at least e_n_first
+"$gw" layer-impact --sample "$tmp/a.txt" --json > "$tmp/def.json" 2> "$tmp/def.err"
+check "default layer-impact: t-max 2 s, decided (bounced true, e_n a number >= e_n_first), stopped at T_f = t_rebound + v_nr/g, no warning" \
+  "[ ! -s '$tmp/def.err' ] && python3 -c \"import json,sys; d=json.load(open('$tmp/def.json')); print('e_n', d['e_n'], 't_f', d['t_f'], 't_end', d['t_end']); sys.exit(0 if d['settings']['t_max'] == 2 and d['bounced'] is True and d['e_n'] is not None and 0 < d['e_n'] < 1 and d['e_n'] >= d['e_n_first'] and d['undecided'] is None and abs(d['t_f'] - d['t_rebound'] - d['v_nr'] / 9.81) < 1e-4 and d['t_end'] - d['t_f'] < 1e-4 else 1)\""
 bad_until() { # args...
   "$gw" layer-impact --sample "$tmp/a.txt" "$@" > "$tmp/stdout" 2> "$tmp/stderr"
   [ $? -eq 2 ] && [ $(wc -l < "$tmp/stderr") -eq 1 ] && grep -q -- '--until' "$tmp/stderr" && [ ! -s "$tmp/stdout" ]

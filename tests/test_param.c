@@ -10,11 +10,18 @@
  *    mentions a command line ("--"), and the struct is unchanged.
  *  - Text round trip: a double set from its %.17g text reads back bit-equal.
  *  - Result tables: every array's dimensions name an int row or a number.
+ *  - Physical ranges: gamma <= 1e14, alpha <= 1e8, energy-tol <= 1 (gw_chain.h);
+ *    Hunt-Crossley's calibrated alpha v is the same at 1e-3 and 10 m/s (its
+ *    scale invariance, 1e-6 relative: the Brent tolerance), so a target that
+ *    needs alpha above the bound is refused; a study over N within
+ *    sum N^2 x columns <= 2e6 (exact ends 181 and 182); dispersion min-bins
+ *    within T/2 - 2.
  *  - One collision through the table: N = 1, v = 0.3 m/s, F_max and tau_max
  *    against the closed forms F.13, F.21 to 1e-6 (the integration at
  *    rtol = 1e-12 is ~1e-9 accurate), and a glass bead's mass
  *    4/3 pi R^3 2500 kg/m^3 to 1e-15.
  */
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -138,6 +145,75 @@ int main(void)
     resolve_refused((const char *[]){"sheet", "brass", "kwall", "1e9", NULL}, "sheet");
     resolve_refused((const char *[]){"solver", "rk4", "method", "bdf", NULL}, "method");
     resolve_refused((const char *[]){"restitution", "0.9", NULL}, "restitution");
+
+    /* physical ranges of the damping constants and the energy limit (gw_chain.h) */
+    char num[64];
+    snprintf(num, sizeof num, "%.17g", GW_CHAIN_GAMMA_MAX);
+    gw_test_true(gw_param_set(t, &s, "gamma", num, &err) == GW_OK, "gamma = GW_CHAIN_GAMMA_MAX (1e14) accepted");
+    snprintf(num, sizeof num, "%.17g", GW_CHAIN_ALPHA_MAX);
+    gw_test_true(gw_param_set(t, &s, "alpha", num, &err) == GW_OK, "alpha = GW_CHAIN_ALPHA_MAX (1e8) accepted");
+    gw_param_set(t, &s, "gamma", "nan", &err); /* back to not given (the default) */
+    gw_chain_setup_clear(&s);
+    gw_chain_setup_init(&s);
+    refused("gamma", "1.0000001e14", "above 1e14 N s/m^1.5 (overdamped)");
+    refused("gamma", "1e300", "overflows the force");
+    refused("alpha", "1.0000001e8", "above 1e8 s/m (overdamped)");
+    refused("energy-tol", "1.5", "above the whole energy");
+    refused("energy-tol", "1e300", "acts as off");
+    /* Hunt-Crossley's restitution depends on alpha v alone (the force
+     * k d^1.5 (1 + 1.5 alpha d') with d ~ v^(4/5), t ~ v^(-1/5)): the bound on
+     * alpha is one on the slowest calibration. e = 0.01 calibrates to the same
+     * alpha v at 1e-3 and 10 m/s (to the Brent tolerance, 1e-6 relative), so it
+     * needs alpha = 66.7 / v: 6.7e8 s/m at 1e-7 m/s is refused naming restitution. */
+    double av[2] = {NAN, NAN}, vs[2] = {1e-3, 10};
+    for (int i = 0; i < 2; i++) {
+        gw_chain_setup h;
+        gw_chain_setup_init(&h);
+        snprintf(num, sizeof num, "%g", vs[i]);
+        gw_param_set(t, &h, "damping", "hc", &err);
+        gw_param_set(t, &h, "restitution", "0.01", &err);
+        gw_param_set(t, &h, "restitution-v", num, &err);
+        if (gw_chain_setup_resolve(&h, &r, &err) == GW_OK)
+            av[i] = r.params.alpha * vs[i];
+        gw_chain_resolved_free(&r);
+        gw_chain_setup_clear(&h);
+    }
+    gw_test_rel(av[0], av[1], 1e-6, "HC: e = 0.01 needs the same alpha v at 1e-3 and 10 m/s");
+    gw_test_true(av[0] > 10 && av[0] * 1e7 > GW_CHAIN_ALPHA_MAX, "so e = 0.01 at 1e-7 m/s needs alpha above the bound");
+    resolve_refused((const char *[]){"damping", "hc", "restitution", "0.01", "restitution-v", "1e-7", NULL},
+                    "restitution");
+
+    /* the work of a study over N: sum of N^2 x columns per N <= 2e6; sum_1^181
+     * N^2 = 1992991, sum_1^182 = 2026115 */
+    gw_test_true(gw_chain_study_work_check(1, 181, 1, &err) == GW_OK &&
+                     gw_chain_study_work_check(1, 182, 1, &err) == GW_EINVAL && strncmp(err.msg, "n:", 2) == 0,
+                 "study work: N = 1..181 accepted, 1..182 refused naming n");
+    gw_test_true(gw_chain_study_work_check(1, 40, 9, &err) == GW_OK &&
+                     gw_chain_study_work_check(1, 100, 5, &err) == GW_OK &&
+                     gw_chain_study_work_check(1, 100, 6, &err) == GW_EINVAL,
+                 "study work: softwall --sheets 1:40 (9 walls) and falcon 1:100 at 5 speeds run, 6 speeds not");
+    gw_chain_falcon_setup fs;
+    gw_chain_falcon_setup_init(&fs);
+    gw_chain_falcon_outcome fo;
+    double t0 = gw_clock_ms();
+    int frc = gw_param_set(gw_chain_falcon_setup_params(), &fs, "n", "1:100000", &err);
+    if (frc == GW_OK)
+        frc = gw_chain_falcon_run(&fs, NULL, NULL, &fo, &err);
+    char fmsg[640];
+    snprintf(fmsg, sizeof fmsg, "falcon study N = 1..100000 refused naming n before any run: %s", err.msg);
+    gw_test_true(frc == GW_EINVAL && strncmp(err.msg, "n:", 2) == 0 && gw_clock_ms() - t0 < 1e4, fmsg);
+    gw_chain_falcon_outcome_free(&fo);
+    gw_chain_falcon_setup_clear(&fs);
+
+    /* dispersion: a ridge is looked for below T/2 - 1 bins; min-bins above
+     * T/2 - 2 would resolve nothing */
+    gw_chain_disp_params dp = gw_chain_disp_params_default();
+    dp.t_samples = 64;
+    dp.min_bins = 30;
+    int ok30 = gw_chain_disp_params_validate(&dp, &err) == GW_OK;
+    dp.min_bins = 30.5;
+    gw_test_true(ok30 && gw_chain_disp_params_validate(&dp, &err) == GW_EINVAL && strstr(err.msg, "min-bins"),
+                 "dispersion: min-bins 30 accepted at 64 samples, 30.5 refused naming min-bins");
 
     cJSON *js = gw_param_json(t, &s);
     int keys = 0;

@@ -72,7 +72,7 @@ static void disp_options(disp_cli *c, gw_opt *o)
     o[i++] = DOPT_L("steps-per-sample", &c->steps, "K", "RK4 steps per sampling interval [16]", 1, 100000);
     o[i++] = DOPT_D("amp", &c->amp, "A", "rms overlap perturbation / d0 of the initial velocities [1e-3]", 0, 0.1, 1);
     o[i++] = DOPT_L("seed", &c->seed, "S", "seed of the random mode phases of the initial velocities [1]", 0, 9.0e18);
-    o[i++] = DOPT_D("min-bins", &c->min_bins, "B", "ridge resolved from B frequency bins up [8]", 1, 1e9, 0);
+    o[i++] = DOPT_D("min-bins", &c->min_bins, "B", "ridge resolved from B frequency bins up, B <= T/2 - 2 [8]", 1, GW_CHAIN_DISP_MIN_BINS_MAX, 0);
     o[i++] = DOPT_S("solver", &c->solver, "NAME", "rk4, cvode or arkode [rk4]");
     o[i++] = DOPT_S("method", &c->method, "NAME", "cvode: adams|bdf; arkode: erk|dirk (bdf, dirk: fixed ends) [adams / erk]");
     o[i++] = DOPT_D("rtol", &c->rtol, "R", "relative tolerance, cvode/arkode [1e-10]", GW_TOL_MIN, GW_TOL_MAX, 0);

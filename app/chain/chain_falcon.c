@@ -271,6 +271,11 @@ int gw_cmd_falcon(int argc, char **argv)
         free(vv);
         return chain_cli_fail(err.msg);
     }
+    if (gw_chain_study_work_check(a, b, nvv + nhh, &err) != GW_OK) {
+        free(vv);
+        free(hh);
+        return chain_cli_study_fail("falcon", err.msg);
+    }
     f.n_lo = (int)a;
     f.n_hi = (int)b;
     f.nv = nvv + nhh;

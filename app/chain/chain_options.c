@@ -283,6 +283,12 @@ int chain_cli_fail(const char *msg)
     return 2;
 }
 
+int chain_cli_study_fail(const char *cmd, const char *msg)
+{
+    fprintf(stderr, "granwave %s --%s\n", cmd, msg);
+    return 2;
+}
+
 int chain_cli_parse(const char *cmd, const char *usage, const char *summary, gw_opt *opts,
                     int argc, char **argv)
 {

@@ -82,5 +82,7 @@ int chain_cli_study_error(const gw_param *t, const char *cmd, int rc, gw_err *er
 
 /* Print "granwave CMD: message" and return exit code 2. */
 int chain_cli_fail(const char *msg);
+/* The same for a library message "ROW: reason": "granwave CMD --ROW: reason". */
+int chain_cli_study_fail(const char *cmd, const char *msg);
 
 #endif

@@ -104,6 +104,8 @@ int gw_cmd_softwall(int argc, char **argv)
         return chain_cli_fail(err.msg);
     if (b - a < 2)
         return chain_cli_fail("softwall --n: need at least 3 column sizes");
+    if (gw_chain_study_work_check(a, b, use_sheets ? gw_sheet_count() : 1, &err) != GW_OK)
+        return chain_cli_study_fail("softwall", err.msg);
     c.params.n = (int)a;
     c.params.v_imp = vimp;
     if (chain_cli_resolve(&c, opts, "softwall", &err) != GW_OK || (c.out && gw_mkdir_p(c.out, &err) != GW_OK)) {

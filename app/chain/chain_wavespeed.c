@@ -64,6 +64,10 @@ int gw_cmd_wavespeed(int argc, char **argv)
         free(v);
         return chain_cli_fail("wavespeed --n: need at least 3 sizes and a largest column of >= 8 beads");
     }
+    if (gw_chain_study_work_check(a, b, nv, &err) != GW_OK) {
+        free(v);
+        return chain_cli_study_fail("wavespeed", err.msg);
+    }
     c.params.n = (int)b;
     c.params.v_imp = v[0];
     if (chain_cli_resolve(&c, opts, "wavespeed", &err) != GW_OK ||

@@ -321,6 +321,13 @@ cJSON *gw_stats_json(const gw_stats_analysis *A, int full);
 /* The files of --out DIR (groups.csv, convergence.csv, binary.csv, walls.csv,
  * diagram.csv, boundary_fit.json), each atomically. */
 int gw_stats_write_files(const gw_stats_analysis *A, const char *dir, gw_err *err);
+/* Whether gw_stats_write_files could write into dir, before any work: what
+ * gw_out_check says (what names the flag in its message), then a file is made
+ * and removed at once in dir, or in its nearest existing ancestor when dir
+ * does not exist yet, so that a directory that refuses new files whatever its
+ * mode says (root under /proc, a read-only mount) is refused too. GW_EINVAL
+ * naming dir; nothing is left behind. */
+int gw_stats_out_check(const char *dir, const char *what, gw_err *err);
 
 /* ---- the library call: the analysis as tables (gw_stats_study.c) ---- */
 

@@ -11,6 +11,7 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 #include "gw_stats.h"
 
@@ -464,4 +465,36 @@ int gw_stats_write_files(const gw_stats_analysis *R, const char *dir, gw_err *er
         cJSON_Delete(j);
     }
     return rc;
+}
+
+int gw_stats_out_check(const char *dir, const char *what, gw_err *err)
+{
+    int rc = gw_out_check(dir, what, err);
+    if (rc != GW_OK)
+        return rc;
+    /* the nearest existing ancestor (gw_out_check found it a directory) */
+    char d[4096], probe[4200];
+    snprintf(d, sizeof d, "%s", dir);
+    struct stat st;
+    while (stat(d, &st) != 0) {
+        size_t n = strlen(d);
+        while (n > 1 && d[n - 1] == '/')
+            d[--n] = '\0';
+        char *slash = strrchr(d, '/');
+        if (!slash)
+            snprintf(d, sizeof d, ".");
+        else if (slash == d)
+            d[1] = '\0';
+        else
+            *slash = '\0';
+    }
+    if (gw_path_join(probe, sizeof probe, d, ".granwave-out-check") != GW_OK)
+        return gw_err_set(err, GW_EINVAL, "%s: path too long", what);
+    gw_afile f;
+    gw_err e = {{0}};
+    if (gw_afile_open(&f, probe, &e) != GW_OK)
+        return gw_err_set(err, GW_EINVAL, "%s: cannot write into '%s' (%s)", what, d,
+                          strstr(e.msg, ": cannot create: ") ? strstr(e.msg, ": cannot create: ") + 17 : e.msg);
+    gw_afile_abort(&f);
+    return GW_OK;
 }

@@ -104,6 +104,12 @@ const gw_param *gw_layer_impact_outcome_fields(void);
  * with gw_layer_impact_outcome_free also after a failure). No files are written.
  * Returns GW_OK, GW_EINVAL (setup), the sample reader's status, or the run's. */
 int gw_layer_impact_run(const gw_layer_impact_setup *s, gw_layer_impact_outcome *out, gw_err *err);
+/* The same with progress(pctx, done, total) in output samples (total: the
+ * samples up to t-max; the run usually ends earlier, at T_f, with a last call
+ * done = total), about a thousand calls; a non-zero return stops the run with
+ * GW_ECANCELED (out then freed as after any failure). */
+int gw_layer_impact_run_progress(const gw_layer_impact_setup *s, gw_progress_fn progress, void *pctx,
+                                 gw_layer_impact_outcome *out, gw_err *err);
 void gw_layer_impact_outcome_free(gw_layer_impact_outcome *out);
 
 /* What gw_layer_impact_run checks before it runs: the rows, the sample (read

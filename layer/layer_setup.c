@@ -210,6 +210,9 @@ typedef struct snap_ctx {
     gw_layer_impact_outcome *out;
     snap_req *req; /* sorted by time */
     int next;      /* first request not taken */
+    gw_progress_fn progress; /* may be NULL */
+    void *pctx;
+    long total, every;       /* samples at most, and how often progress is called */
 } snap_ctx;
 
 static int req_cmp(const void *a, const void *b)
@@ -225,6 +228,11 @@ static int take_snapshots(void *ctx, const gw_layer *L, int k, int final)
     if (final == 2) /* a failed run gives no snapshots */
         return GW_OK;
     snap_ctx *c = ctx;
+    if (c->progress && (final || k % c->every == 0) &&
+        c->progress(c->pctx, final ? c->total : k, c->total) != 0)
+        return GW_ECANCELED;
+    if (c->out->nsnap == 0)
+        return GW_OK;
     gw_layer_impact_outcome *o = c->out;
     const int np = gw_layer_n(L);
     if (!o->snap_t) {
@@ -358,6 +366,12 @@ int gw_layer_impact_setup_check(const gw_layer_impact_setup *s, gw_err *err)
 
 int gw_layer_impact_run(const gw_layer_impact_setup *s, gw_layer_impact_outcome *out, gw_err *err)
 {
+    return gw_layer_impact_run_progress(s, NULL, NULL, out, err);
+}
+
+int gw_layer_impact_run_progress(const gw_layer_impact_setup *s, gw_progress_fn progress, void *pctx,
+                                 gw_layer_impact_outcome *out, gw_err *err)
+{
     memset(out, 0, sizeof *out);
     out->block_index = -1;
     gw_layer_sample smp;
@@ -366,7 +380,13 @@ int gw_layer_impact_run(const gw_layer_impact_setup *s, gw_layer_impact_outcome 
     const gw_solver_type *type = NULL;
     gw_solver_params sp;
     int rc = prepare(s, &smp, &lp, &ip, &type, &sp, err);
-    snap_ctx sc = {.out = out, .req = NULL, .next = 0};
+    snap_ctx sc = {.out = out, .req = NULL, .next = 0, .progress = progress, .pctx = pctx};
+    if (rc == GW_OK && progress) { /* about a thousand calls over the longest run */
+        sc.total = (long)ceil(ip.t_max / ip.dt_out - 1e-9) + 1;
+        sc.every = sc.total / 1000 > 1 ? sc.total / 1000 : 1;
+        ip.on_sample = take_snapshots;
+        ip.sample_ctx = &sc;
+    }
     if (rc == GW_OK && s->snapshots.n > 0) {
         if (s->snapshots.n > 10000)
             rc = gw_err_set(err, GW_EINVAL, "snapshots: %d times, at most 10000", s->snapshots.n);
@@ -383,6 +403,8 @@ int gw_layer_impact_run(const gw_layer_impact_setup *s, gw_layer_impact_outcome 
     }
     if (rc == GW_OK)
         rc = gw_layer_impact(&smp, &lp, &ip, type, &sp, &out->r, err);
+    if (rc == GW_ECANCELED)
+        gw_err_set(err, rc, "stopped by the progress callback");
     free(sc.req);
     if (rc == GW_ENOMEM && out->nsnap > 0 && !out->snap_t)
         gw_err_set(err, rc, "snapshots: out of memory for %d snapshots of %d particles", out->nsnap, smp.n + 1);

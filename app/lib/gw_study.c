@@ -69,9 +69,7 @@ static int impact_init(void *s) { return gw_layer_impact_setup_init(s); }
 static void impact_clear(void *s) { gw_layer_impact_setup_clear(s); }
 static int impact_run(const void *s, void *out, gw_progress_fn progress, void *pctx, gw_err *err)
 {
-    (void)progress;
-    (void)pctx;
-    return gw_layer_impact_run(s, out, err);
+    return gw_layer_impact_run_progress(s, progress, pctx, out, err);
 }
 static void impact_free(void *out) { gw_layer_impact_outcome_free(out); }
 

@@ -83,8 +83,8 @@ def layer_make(**kwargs):
 _SNAP_COLS = ("x", "y", "theta", "vx", "vy", "omega")
 
 
-def layer_impact(**kwargs):
-    r = _study("layer-impact").run(kwargs)
+def layer_impact(*, progress=None, **kwargs):
+    r = _study("layer-impact").run(kwargs, progress)
     ng = max(r["nrings"] - 1, 0)  # ring pairs k, k + 1; NaN without the analysis (the program's null)
     for k in ("xcorr_delay", "xcorr_rho"):
         if k not in r:

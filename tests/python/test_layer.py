@@ -193,3 +193,29 @@ def test_snapshots_at_samples_and_off_by_default(sample):
         assert s["x"][j][s["block"]] == r.block["x"][k] and s["vy"][j][s["block"]] == r.block["vy"][k]
     with pytest.raises(ValueError, match="snapshots"):
         granwave.layer_impact(sample=sample, snapshots=[-1])
+
+
+def test_progress_reaches_the_caller_and_stops_the_run(sample):
+    """progress(done, total) counts output samples up to t-max (total), rising, a
+    last call with done = total when the run ends (at T_f, before t-max); the
+    run's numbers do not change with it; a true return stops the run
+    (GW_ECANCELED), an exception in the callback is raised again."""
+    r0 = granwave.layer_impact(sample=sample, t_max=0.004)
+    seen = []
+    r = granwave.layer_impact(sample=sample, t_max=0.004, progress=lambda d, n: seen.append((d, n)))
+    total = int(round(0.004 / 2e-5)) + 1
+    assert seen[0] == (0, total) and seen[-1] == (total, total)
+    assert all(b[0] > a[0] for a, b in zip(seen, seen[1:])) and all(n == total for _, n in seen)
+    assert len(seen) >= r.ns - 1  # a run this short reports every sample
+    np.testing.assert_array_equal(r.ledger["total"], r0.ledger["total"])
+    assert r.e_n_first == r0.e_n_first or (np.isnan(r.e_n_first) and np.isnan(r0.e_n_first))
+    with pytest.raises(granwave.GranwaveError) as e:
+        granwave.layer_impact(sample=sample, t_max=0.004, progress=lambda d, n: d >= 50)
+    assert e.value.status == -9 and "progress" in str(e.value)
+
+    def boom(d, n):
+        if d >= 20:
+            raise KeyboardInterrupt
+
+    with pytest.raises(KeyboardInterrupt):
+        granwave.layer_impact(sample=sample, t_max=0.004, progress=boom)

@@ -143,6 +143,19 @@ int gw_layer_sample_format_check(const char *path, gw_err *err)
     int rc = gw_out_file_check(path, "sample", err);
     if (rc != GW_OK)
         return rc;
+    /* an existing file is replaced only when it is a sample (text or HDF5) or
+     * empty: a mistyped --out never overwrites someone's data */
+    FILE *fp = fopen(path, "rb");
+    if (fp) {
+        unsigned char head[sizeof SAMPLE_MAGIC - 1] = {0};
+        const size_t got = fread(head, 1, sizeof head, fp);
+        fclose(fp);
+        const int text = got == sizeof head && memcmp(head, SAMPLE_MAGIC, sizeof head) == 0;
+        const int h5 = got >= sizeof h5_signature && memcmp(head, h5_signature, sizeof h5_signature) == 0;
+        if (got > 0 && !text && !h5)
+            return gw_err_set(err, GW_EINVAL, "sample '%s': exists and is not a granwave sample; refusing to "
+                              "overwrite it", path);
+    }
     /* and a directory that refuses new files whatever its mode says (root in
      * /proc, a read-only mount): the temporary file of the atomic write is
      * made and removed at once, before hours of pluviation */

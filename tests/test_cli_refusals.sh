@@ -108,6 +108,12 @@ refused "--wisdom naming a file that is not wisdom" 'not FFTW wisdom' dispersion
 "$GW" dispersion --n 16 --t-samples 64 --wisdom "$tmp/w.wis" >/dev/null 2>&1 && head -c 7 "$tmp/w.wis" | grep -q '(fftw-3' &&
     "$GW" dispersion --n 16 --t-samples 64 --wisdom "$tmp/w.wis" >/dev/null 2>&1 &&
     ok "--wisdom writes wisdom and reads it back" || ko "--wisdom round trip"
+refused "layer-make --out naming a file that is not a sample" 'not a granwave sample' layer-make --n 10 --width-rm 6 --t-max 0.05 --out "$tmp/notes.txt"
+[ "$(cat "$tmp/notes.txt")" = "my notes" ] && ok "that file is unchanged" || ko "layer-make overwrote a file that is not a sample"
+"$GW" layer-make --n 10 --width-rm 6 --t-max 0.05 --out "$tmp/s1.txt" >/dev/null 2>&1 &&
+    "$GW" layer-make --n 10 --width-rm 6 --t-max 0.05 --seed 2 --out "$tmp/s1.txt" >/dev/null 2>&1 &&
+    grep -q -- '--seed 2' "$tmp/s1.txt" && ok "layer-make replaces a sample it wrote before" ||
+    ko "layer-make did not replace its own sample"
 refused "chain --out under a regular file" '[Nn]ot a directory' chain --n 2 --out "$tmp/notes.txt/sub"
 mkdir "$tmp/ro"; chmod 555 "$tmp/ro"
 if [ "$(id -u)" -ne 0 ]; then

@@ -301,6 +301,17 @@ static int fill_tables(gw_chain_drop_outcome *o, gw_err *err)
     return GW_OK;
 }
 
+void gw_chain_drop_block_params(gw_chain_params *p)
+{
+    double mtot = 0;
+    for (int i = 0; i < p->n; i++)
+        mtot += p->masses ? p->masses[i] : p->mass;
+    p->mass = mtot;
+    p->n = 1;
+    p->masses = NULL;
+    p->kc = NULL;
+}
+
 int gw_chain_drop_study_run(const gw_chain_drop_setup *s, gw_progress_fn progress, void *pctx,
                             gw_chain_drop_outcome *out, gw_err *err)
 {
@@ -324,15 +335,8 @@ int gw_chain_drop_study_run(const gw_chain_drop_setup *s, gw_progress_fn progres
         return rc;
     }
     gw_chain_params *p = &res.params;
-    if (s->block) { /* one body of the column's mass, bead 1's contact constants */
-        double mtot = 0;
-        for (int i = 0; i < n; i++)
-            mtot += p->masses ? p->masses[i] : p->mass;
-        p->mass = mtot;
-        p->n = 1;
-        p->masses = NULL;
-        p->kc = NULL;
-    }
+    if (s->block)
+        gw_chain_drop_block_params(p);
     const double t_max = res.run.t_max;
     const double dt_out = s->col.dt_out > 0 ? s->col.dt_out : fmin(1e-6, t_max);
     if (dt_out < t_max * 1e-7 || dt_out > t_max) {

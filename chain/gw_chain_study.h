@@ -374,6 +374,10 @@ const gw_param *gw_chain_drop_outcome_fields(void);
 /* The gaps of s for its n beads ([n-1] m, or *gaps = NULL when touching) with
  * the study's checks (GW_EINVAL "gap: ..."); the caller frees. */
 int gw_chain_drop_setup_gaps(const gw_chain_drop_setup *s, double **gaps, gw_err *err);
+/* The drop's block (block = 1): p, a column of p->n beads, becomes one body of
+ * the column's whole mass with bead 1's contact constants (p->masses and
+ * p->kc are dropped, not freed: the caller owns them). */
+void gw_chain_drop_block_params(gw_chain_params *p);
 /* The drop (gw_chain_drop_run) from a setup. progress(ctx, done, total) counts
  * output samples (total = t_max / dt_out), called at most about 100 times (may
  * be NULL); a stop ends the integration there and returns GW_ECANCELED. */

@@ -98,6 +98,25 @@ static inline double disc_geometry(const layer_contact *c, const double *y, doub
     }
 }
 
+/* The normal force with Hunt-Crossley damping (B.1 with the settling damping
+ * alpha, s/m): F_n = F_el (1 + 3/2 alpha u_n'), u_n' the approach speed along
+ * the normal nn (*und), never negative; F_el and *und = 0 when alpha is 0. The
+ * damping dissipates (F_n - F_el) u_n'. */
+static inline double damped_normal(const layer_contact *c, const double *y, const double nn[2], double fel,
+                                   double alpha, double *und)
+{
+    *und = 0;
+    if (!(alpha > 0))
+        return fel;
+    const double *sa = y + 6 * c->qa;
+    double rx = -sa[3], ry = -sa[4];
+    if (c->b >= 0)
+        rx += y[6 * c->qb + 3], ry += y[6 * c->qb + 4];
+    *und = -(rx * nn[0] + ry * nn[1]);
+    const double fn = fel * (1.0 + 1.5 * alpha * *und);
+    return fn < 0 ? 0 : fn;
+}
+
 /* The drift of a disc-only layer, fused with its force pass: per contact the
  * end geometry, the tangential step and its books, then the end forces the
  * rhs would compute (Hertz, the damping at the predicted velocities, F_t as
@@ -157,18 +176,9 @@ static void drift_discs(gw_layer *L, double h, const double *ph, double *y)
         fe[k] = f1;
         if (!(fel > 0))
             continue;
-        double fn = fel, und = 0;
-        if (alpha > 0) {
-            const double *sa = y + 6 * c->qa;
-            double rx = -sa[3], ry = -sa[4];
-            if (c->b >= 0)
-                rx += y[6 * c->qb + 3], ry += y[6 * c->qb + 4];
-            und = -(rx * nn[0] + ry * nn[1]);
-            fn = fel * (1.0 + 1.5 * alpha * und);
-            if (fn < 0)
-                fn = 0;
-            pd += (fn - fel) * und;
-        }
+        double und;
+        const double fn = damped_normal(c, y, nn, fel, alpha, &und);
+        pd += (fn - fel) * und;
         const double capr = tp * fel, ft = f1 > capr ? capr : f1 < -capr ? -capr : f1;
         tscr[k].kt = ke;
         tscr[k].ikt = ike;
@@ -313,18 +323,9 @@ int layer_dem_rhs(double t, const double *y, double *yd, void *P)
             continue;
         }
         un_last[k] = un;
-        double fn = fel, und = 0;
-        if (alpha > 0) {
-            const double *sa = y + 6 * c->qa;
-            double rx = -sa[3], ry = -sa[4];
-            if (c->b >= 0)
-                rx += y[6 * c->qb + 3], ry += y[6 * c->qb + 4];
-            und = -(rx * nn[0] + ry * nn[1]);
-            fn = fel * (1.0 + 1.5 * alpha * und);
-            if (fn < 0)
-                fn = 0;
-            pd += (fn - fel) * und;
-        }
+        double und;
+        const double fn = damped_normal(c, y, nn, fel, alpha, &und);
+        pd += (fn - fel) * und;
         double ft = 0;
         if (tp > 0) {
             const double cap = tp * fel, f = y[6 * n + k];

@@ -122,12 +122,7 @@ int gw_layer_make_run(const gw_layer_make_setup *s, gw_layer_make_outcome *out, 
     if (s->out && (rc = gw_layer_sample_format_check(s->out, err)) != GW_OK)
         return rc; /* before the run: a result that cannot be written is not computed */
     gw_layer_params lp = gw_layer_params_default();
-    lp.friction_deg = s->friction;
-    lp.shear_modulus = s->shear_modulus;
-    lp.poisson = s->poisson;
-    lp.density = s->density;
-    lp.gravity = s->gravity;
-    lp.skin = s->skin;
+    GW_LAYER_MATERIAL_TO_PARAMS(&lp, s);
     lp.mass_law = s->mass_law;
     lp.clump_mass = s->clump_mass;
     if ((rc = gw_layer_params_validate(&lp, err)) != GW_OK)

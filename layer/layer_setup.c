@@ -275,12 +275,7 @@ static int resolve(const gw_layer_impact_setup *s, const gw_layer_sample *smp, g
 {
     char sname[16], mname[16];
     *lp = gw_layer_params_default();
-    lp->friction_deg = s->friction;
-    lp->shear_modulus = s->shear_modulus;
-    lp->poisson = s->poisson;
-    lp->density = s->density;
-    lp->gravity = s->gravity;
-    lp->skin = s->skin;
+    GW_LAYER_MATERIAL_TO_PARAMS(lp, s);
     lp->mass_law = s->mass_law >= 0 ? s->mass_law : smp->mass_law;
     lp->clump_mass = s->clump_mass >= 0 ? s->clump_mass : smp->clump_mass;
     int rc = gw_layer_params_validate(lp, err);

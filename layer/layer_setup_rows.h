@@ -38,4 +38,16 @@ _Static_assert(GW_LAYER_CLUMP_MASS_SUM == 0 && GW_LAYER_CLUMP_MASS_UNION == 1, "
            "clump mass: sum (members added, overlaps twice, as PFC2D) or union (density x the union's area; " \
            "disc law) " WCLUMP),
 
+/* The material rows of setup *s (either setup struct) into gw_layer_params *lp,
+ * whose other fields are left as they are. */
+#define GW_LAYER_MATERIAL_TO_PARAMS(lp, s)                                     \
+    do {                                                                       \
+        (lp)->friction_deg = (s)->friction;                                    \
+        (lp)->shear_modulus = (s)->shear_modulus;                              \
+        (lp)->poisson = (s)->poisson;                                          \
+        (lp)->density = (s)->density;                                          \
+        (lp)->gravity = (s)->gravity;                                          \
+        (lp)->skin = (s)->skin;                                                \
+    } while (0)
+
 #endif

@@ -118,16 +118,8 @@ static int drop_resolve(drop_cli *d, gw_opt *opts, gw_err *err)
     if ((rc = chain_cli_resolve(c, opts, "drop", err)) != GW_OK)
         return rc;
     d->n_column = n;
-    if (d->block) { /* one body of the column's mass, bead 1's contact constants */
-        gw_chain_params *p = &c->params;
-        double mtot = 0;
-        for (int i = 0; i < n; i++)
-            mtot += p->masses ? p->masses[i] : p->mass;
-        p->mass = mtot;
-        p->n = 1;
-        p->masses = NULL;
-        p->kc = NULL;
-    }
+    if (d->block) /* one body of the column's mass, bead 1's contact constants */
+        gw_chain_drop_block_params(&c->params);
     double t_max = c->run.t_max;
     d->dt_out = c->dt_out > 0 ? c->dt_out : fmin(1e-6, t_max);
     if (d->dt_out < t_max * 1e-7 || d->dt_out > t_max)

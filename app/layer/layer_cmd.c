@@ -476,22 +476,36 @@ static void unmake(const char *path, const char *made)
     }
 }
 
-/* The impact's VTK snapshots in --out (the library's on_sample hook):
- * snapshot_0.vtk at the first sample, snapshot_end.vtk and snapshots.pvd (the
- * two as a ParaView series with their times) at the end, snapshot_failure.vtk
- * with the state where a failed run stopped. */
+/* What the command does at the library's on_sample hook. With --out, the VTK
+ * snapshots: snapshot_0.vtk at the first sample, snapshot_end.vtk and
+ * snapshots.pvd (the two as a ParaView series with their times) at the end,
+ * snapshot_failure.vtk with the state where a failed run stopped. On a
+ * terminal, a progress line every PROGRESS_MS of wall time once a run has
+ * lasted that long (exact mode to T_f takes minutes): the simulated time
+ * reached; the run ends at T_f, at most at t-max. */
+#define PROGRESS_MS 3000.0
 typedef struct vtk_ctx {
-    const char *dir;
+    const char *dir;       /* NULL: no snapshots */
     double t0;
     int failed;            /* a write failed: err holds its message */
     gw_err err;
     char failure_file[4096];
+    int tty;               /* stderr is a terminal: progress lines */
+    double wall0, last, t_max;
 } vtk_ctx;
 
 static int write_snapshot(void *ctx, const gw_layer *L, int k, int final)
 {
     vtk_ctx *v = ctx;
-    if (v->failed || (final == 0 && k > 0))
+    if (v->tty && final == 0) {
+        const double now = gw_clock_ms();
+        if (now - v->last >= PROGRESS_MS) {
+            fprintf(stderr, "granwave layer-impact: t = %.4g s simulated (to T_f, at most t-max %g s), %.0f s "
+                    "elapsed\n", gw_layer_time(L), v->t_max, (now - v->wall0) / 1e3);
+            v->last = now;
+        }
+    }
+    if (!v->dir || v->failed || (final == 0 && k > 0))
         return GW_OK;
     static const char *const files[3] = {"snapshot_0.vtk", "snapshot_end.vtk", "snapshot_failure.vtk"};
     static const char *const titles[3] = {"granwave layer-impact t = 0", "granwave layer-impact t = t_end",
@@ -556,8 +570,9 @@ int gw_cmd_layer_impact(int argc, char **argv)
         return fail("layer-impact", err.msg);
     }
     gw_layer_impact_result r;
-    vtk_ctx vc = {.dir = c.out};
-    if (c.out) {
+    vtk_ctx vc = {.dir = c.out, .tty = isatty(STDERR_FILENO), .wall0 = gw_clock_ms(), .t_max = c.ip.t_max};
+    vc.last = vc.wall0;
+    if (c.out || vc.tty) {
         c.ip.on_sample = write_snapshot;
         c.ip.sample_ctx = &vc;
     }

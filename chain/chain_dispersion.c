@@ -89,45 +89,45 @@ int gw_chain_disp_params_validate(const gw_chain_disp_params *p, gw_err *err)
 {
     int rc;
     if (p->n < 8 || p->n > (1 << 22))
-        return gw_err_set(err, GW_EINVAL, "--n: %d beads outside [8, %d]", p->n, 1 << 22);
+        return gw_err_set(err, GW_EINVAL, "n: %d beads outside [8, %d]", p->n, 1 << 22);
     if ((rc = gw_check_positive(p->f0, "--f0 (precompression, N)", err)) != GW_OK ||
         (rc = gw_check_positive(p->mass, "mass (kg)", err)) != GW_OK ||
         (rc = gw_check_positive(p->k, "k (Hertz coefficient, N/m^1.5)", err)) != GW_OK ||
         (rc = gw_check_positive(p->radius, "radius (m)", err)) != GW_OK)
         return rc;
     if (!(disp_d0(p) < p->radius))
-        return gw_err_set(err, GW_EINVAL, "--f0: %g N gives an overlap d0 = %g m beyond the bead radius %g m (Hertz invalid)",
+        return gw_err_set(err, GW_EINVAL, "f0: %g N gives an overlap d0 = %g m beyond the bead radius %g m (Hertz invalid)",
                           p->f0, disp_d0(p), p->radius);
     if (p->ends != GW_CHAIN_DISP_PERIODIC && p->ends != GW_CHAIN_DISP_FIXED)
-        return gw_err_set(err, GW_EINVAL, "--ends: unknown end condition %d", (int)p->ends);
+        return gw_err_set(err, GW_EINVAL, "ends: unknown end condition %d", (int)p->ends);
     if (!(p->amp > 0 && p->amp <= 0.1))
-        return gw_err_set(err, GW_EINVAL, "--amp: %g outside (0, 0.1] (the analysis is linear)", p->amp);
+        return gw_err_set(err, GW_EINVAL, "amp: %g outside (0, 0.1] (the analysis is linear)", p->amp);
     if (p->t_samples < 64 || p->t_samples > (1 << 24) || p->t_samples % 2)
-        return gw_err_set(err, GW_EINVAL, "--t-samples: %d must be even and in [64, %d]", p->t_samples, 1 << 24);
+        return gw_err_set(err, GW_EINVAL, "t-samples: %d must be even and in [64, %d]", p->t_samples, 1 << 24);
     if ((double)disp_nx(p) * p->t_samples > (double)(1L << 27))
-        return gw_err_set(err, GW_EINVAL, "--t-samples: %d samples x %d sites exceed the 2^27-point transform limit",
+        return gw_err_set(err, GW_EINVAL, "t-samples: %d samples x %d sites exceed the 2^27-point transform limit",
                           p->t_samples, disp_nx(p));
     if (!(p->dt_sample >= 0) || !isfinite(p->dt_sample))
-        return gw_err_set(err, GW_EINVAL, "--dt-out: %g must be >= 0 (0 = auto)", p->dt_sample);
+        return gw_err_set(err, GW_EINVAL, "dt-out: %g must be >= 0 (0 = auto)", p->dt_sample);
     double wc = disp_omega_c(p), dts = gw_chain_disp_dt_sample(p);
     if (!(wc * dts < M_PI))
-        return gw_err_set(err, GW_EINVAL, "--dt-out: %g s puts the cutoff omega_c = %g rad/s above Nyquist pi/dt = %g rad/s",
+        return gw_err_set(err, GW_EINVAL, "dt-out: %g s puts the cutoff omega_c = %g rad/s above Nyquist pi/dt = %g rad/s",
                           dts, wc, M_PI / dts);
     if (p->steps_per_sample < 1 || p->steps_per_sample > 100000)
-        return gw_err_set(err, GW_EINVAL, "--steps-per-sample: %d outside [1, 100000]", p->steps_per_sample);
+        return gw_err_set(err, GW_EINVAL, "steps-per-sample: %d outside [1, 100000]", p->steps_per_sample);
     /* RK4 is stable for h omega < 2.8; at h omega_c = 1 its frequency error is
      * already ~1e-2, so refuse coarser steps. */
     if (wc * dts / p->steps_per_sample > 1.0)
-        return gw_err_set(err, GW_EINVAL, "--steps-per-sample: %d gives h omega_c = %.3g > 1 (RK4 inaccurate); use >= %d",
+        return gw_err_set(err, GW_EINVAL, "steps-per-sample: %d gives h omega_c = %.3g > 1 (RK4 inaccurate); use >= %d",
                           p->steps_per_sample, wc * dts / p->steps_per_sample, (int)ceil(wc * dts));
     if (!(p->min_bins >= 1) || !isfinite(p->min_bins))
-        return gw_err_set(err, GW_EINVAL, "--min-bins: %g must be >= 1", p->min_bins);
+        return gw_err_set(err, GW_EINVAL, "min-bins: %g must be >= 1", p->min_bins);
     /* the ridge search (disp_analyse below) takes the peak bin lm in [1, T/2 - 2] and
      * refines it by at most half a bin: a ridge above T/2 - 2 bins is never found */
     if (p->min_bins > p->t_samples / 2 - 2)
         return gw_err_set(err, GW_EINVAL,
-                          "--min-bins: %g is above %d, the highest frequency bin a ridge can be found in "
-                          "with --t-samples %d (T/2 - 2): nothing would be resolved",
+                          "min-bins: %g is above %d, the highest frequency bin a ridge can be found in "
+                          "with t-samples %d (T/2 - 2): nothing would be resolved",
                           p->min_bins, p->t_samples / 2 - 2, p->t_samples);
     return GW_OK;
 }
@@ -374,7 +374,7 @@ static int disp_integrate(const gw_chain_disp_params *p, const gw_solver_type *t
     }
     int rc = GW_OK;
     if (!fixed && (sp.method == GW_CVODE_BDF || sp.method == GW_ARKODE_DIRK))
-        rc = gw_err_set(err, GW_EUNSUPPORTED, "dispersion --method: %s needs --ends fixed (the periodic Jacobian is not banded)",
+        rc = gw_err_set(err, GW_EUNSUPPORTED, "method: %s needs ends fixed (the periodic Jacobian is not banded)",
                         gw_solver_method_name(sp.method));
     if (rc == GW_OK && disp_initial_state(p, v_rms, y) != GW_OK)
         rc = gw_err_set(err, GW_ENOMEM, "dispersion: out of memory for the initial state");

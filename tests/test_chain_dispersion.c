@@ -137,8 +137,8 @@ int main(void)
     gw_chain_disp_result rb;
     gw_err err = {{0}};
     gw_solver_params sp = gw_solver_params_default();
-    gw_test_true(gw_chain_disp_run(&bad, NULL, &sp, &rb, &err) == GW_EINVAL && strstr(err.msg, "--n"),
-                 "n = 4 refused with a message naming --n");
+    gw_test_true(gw_chain_disp_run(&bad, NULL, &sp, &rb, &err) == GW_EINVAL && strncmp(err.msg, "n:", 2) == 0,
+                 "n = 4 refused with a message naming n");
     gw_chain_disp_result_free(&rb);
 
     check_wall_spectrum();

@@ -553,7 +553,7 @@ int gw_stats_groups_make(const gw_stats_table *t, double criterion, gw_stats_gro
 {
     memset(gs, 0, sizeof *gs);
     if (!(criterion > 0 && criterion <= 1))
-        return gw_err_set(err, GW_EINVAL, "--criterion: %g is not in (0, 1]", criterion);
+        return gw_err_set(err, GW_EINVAL, "criterion: %g is not in (0, 1]", criterion);
     gs->criterion = criterion;
     gs->point_key = gw_stats_table_key(t, "point");
     for (int k = 0; k < t->ngrid; k++)

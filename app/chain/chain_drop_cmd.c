@@ -83,32 +83,15 @@ static void drop_options(drop_cli *d, gw_opt *opts)
     opts[k] = (gw_opt){0};
 }
 
-/* Everything the drop needs beyond chain_cli_resolve; GW_EINVAL naming the flag. */
-static int drop_resolve(drop_cli *d, gw_opt *opts, gw_err *err)
+/* Everything the drop's settings need beyond chain_cli_resolve, from the
+ * study's setup ds (its checks: the gaps by gw_chain_drop_setup_gaps, dt-out by
+ * the run); GW_EINVAL naming the flag. */
+static int drop_resolve(drop_cli *d, const gw_chain_drop_setup *ds, gw_opt *opts, gw_err *err)
 {
     chain_cli *c = &d->c;
     int n = (int)d->n, rc;
-    if (d->gap) {
-        int ng = 0;
-        if ((rc = gw_parse_double_list_in(d->gap, "drop --gap", 0, GW_CHAIN_DROP_GAP_MAX, 0, &d->gaps,
-                                          &ng, err)) != GW_OK)
-            return rc;
-        if (n < 2 || d->block)
-            return gw_err_set(err, GW_EINVAL, "drop --gap: has no effect with %s",
-                              d->block ? "--block" : "one bead");
-        if (ng != 1 && ng != n - 1)
-            return gw_err_set(err, GW_EINVAL, "drop --gap: %d values for %d pairs (give 1 or %d)",
-                              ng, n - 1, n - 1);
-        if (ng == 1) {
-            double g = d->gaps[0];
-            double *all = realloc(d->gaps, (size_t)(n - 1) * sizeof *all);
-            if (!all)
-                return gw_err_set(err, GW_ENOMEM, "drop --gap: out of memory");
-            d->gaps = all;
-            for (int i = 0; i < n - 1; i++)
-                all[i] = g;
-        }
-    }
+    if ((rc = gw_chain_drop_setup_gaps(ds, &d->gaps, err)) != GW_OK)
+        return chain_cli_study_error(gw_chain_drop_setup_params(), "drop", rc, err);
     c->params.n = n;
     c->params.v_imp = sqrt(2.0 * c->gravity * d->height);
     /* the drop's own defaults (gravity 9.81, t-max 10 ms) count as given: the
@@ -120,11 +103,7 @@ static int drop_resolve(drop_cli *d, gw_opt *opts, gw_err *err)
     d->n_column = n;
     if (d->block) /* one body of the column's mass, bead 1's contact constants */
         gw_chain_drop_block_params(&c->params);
-    double t_max = c->run.t_max;
-    d->dt_out = c->dt_out > 0 ? c->dt_out : fmin(1e-6, t_max);
-    if (d->dt_out < t_max * 1e-7 || d->dt_out > t_max)
-        return gw_err_set(err, GW_EINVAL, "drop --dt-out: %g s is outside [t-max/1e7, t-max] = [%g, %g]",
-                          d->dt_out, t_max * 1e-7, t_max);
+    d->dt_out = c->dt_out > 0 ? c->dt_out : fmin(1e-6, c->run.t_max); /* checked by the study's run */
     c->run.dt_out = d->dt_out;
     if (!opt_named(opts, "peak-threshold")->seen)
         d->peak_threshold = 0.01 * gw_chain_fmax1(c->params.mass, c->params.kwall, c->params.v_imp);
@@ -337,11 +316,6 @@ int gw_cmd_drop(int argc, char **argv)
     if (done >= 0)
         return done;
     gw_err err = {{0}};
-    if (drop_resolve(&d, opts, &err) != GW_OK) {
-        free(d.gaps);
-        chain_cli_free(&d.c);
-        return chain_cli_fail(err.msg);
-    }
     /* the study from the same command line (its rows are these options) */
     gw_chain_drop_setup ds;
     gw_chain_drop_setup_init(&ds);
@@ -349,6 +323,8 @@ int gw_cmd_drop(int argc, char **argv)
     memset(&o, 0, sizeof o);
     int code = 0;
     int rc = chain_cli_study_setup(gw_chain_drop_setup_params(), &ds, opts, argc, argv, "drop", &err);
+    if (rc == GW_OK)
+        rc = drop_resolve(&d, &ds, opts, &err);
     if (rc != GW_OK) {
         gw_chain_drop_setup_clear(&ds);
         free(d.gaps);
@@ -356,7 +332,8 @@ int gw_cmd_drop(int argc, char **argv)
         return chain_cli_fail(err.msg);
     }
     ds.col.trace = d.c.out != NULL; /* the bead series for drop_beads.csv */
-    rc = gw_chain_drop_study_run(&ds, NULL, NULL, &o, &err);
+    if ((rc = gw_chain_drop_study_run(&ds, NULL, NULL, &o, &err)) == GW_EINVAL) /* "NAME:" -> "--NAME:" */
+        chain_cli_study_error(gw_chain_drop_setup_params(), "drop", rc, &err);
     const gw_chain_drop_result *r = &o.r;
     gw_chain_trace tr = {.n = o.n, .len = (size_t)o.trace_len, .cap = (size_t)o.trace_len,
                          .t = o.t, .f = o.f_wall, .x = o.x, .v = o.v}; /* a view, not owned */
@@ -364,7 +341,7 @@ int gw_cmd_drop(int argc, char **argv)
     if (!buf && rc == GW_OK)
         rc = gw_err_set(&err, GW_ENOMEM, "drop: out of memory");
     if (rc != GW_OK) {
-        fprintf(stderr, "granwave drop: %s\n", err.msg);
+        fprintf(stderr, "granwave %s%s\n", rc == GW_EINVAL ? "" : "drop: ", err.msg);
         code = rc == GW_EINVAL ? 2 : 1;
     } else if (d.c.out && write_outputs(&d, r, &tr, o.wall_time_ms, argc, argv, buf, &err) != GW_OK) {
         fprintf(stderr, "granwave drop --out: %s\n", err.msg);

@@ -175,3 +175,49 @@ void gw_cli_help(FILE *fp, const char *cmd, const char *usage, const char *summa
     fprintf(fp, "  %-22s %s\n", "--help", "show this help and exit");
     (void)cmd;
 }
+
+int gw_cli_study_error(const gw_param *t, const char *cmd, int rc, gw_err *err)
+{
+    char tmp[sizeof err->msg], name[64];
+    snprintf(tmp, sizeof tmp, "%s", err->msg);
+    const char *colon = strchr(tmp, ':');
+    size_t n = colon ? (size_t)(colon - tmp) : 0;
+    int named = 0;
+    if (colon && n < sizeof name) {
+        memcpy(name, tmp, n);
+        name[n] = '\0';
+        named = gw_param_find(t, name) != NULL;
+    }
+    return gw_err_set(err, rc, named ? "%s --%s" : "%s: %s", cmd, tmp);
+}
+
+int gw_cli_study_setup(const gw_param *t, void *setup, const gw_opt *opts, int argc, char **argv,
+                          const char *cmd, gw_err *err)
+{
+    for (int i = 0; i < argc; i++) {
+        const char *a = argv[i], *eq = strncmp(a, "--", 2) == 0 ? strchr(a + 2, '=') : NULL;
+        if (strncmp(a, "--", 2) != 0)
+            continue;
+        char name[96];
+        size_t len = eq ? (size_t)(eq - (a + 2)) : strlen(a + 2);
+        if (len == 0 || len >= sizeof name)
+            continue;
+        memcpy(name, a + 2, len);
+        name[len] = '\0';
+        const gw_opt *o = gw_cli_find(opts, name);
+        if (!o)
+            continue;
+        const char *val = "1";
+        if (o->kind != GW_OPT_FLAG) {
+            if (!eq && i + 1 >= argc)
+                continue;
+            val = eq ? eq + 1 : argv[++i];
+        }
+        if (!gw_param_find(t, name) || !gw_param_is_input(gw_param_find(t, name)))
+            continue;
+        int rc = gw_param_set(t, setup, name, val, err);
+        if (rc != GW_OK)
+            return gw_cli_study_error(t, cmd, rc, err);
+    }
+    return GW_OK;
+}

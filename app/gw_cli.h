@@ -94,4 +94,13 @@ void gw_cli_progress_init(gw_cli_progress *p, const char *prefix, const char *un
 /* gw_progress_fn: a line after the last unit and when due; returns 0. */
 int gw_cli_progress_report(void *ctx, long done, long total);
 
+/* A study's setup (table t) from the command line: every option of argv that is
+ * a row of t is set from its text with the table's checks (the command's own
+ * parse ran first with the same names and ranges). GW_EINVAL "CMD --NAME: ...". */
+int gw_cli_study_setup(const struct gw_param *t, void *setup, const gw_opt *opts, int argc, char **argv,
+                       const char *cmd, gw_err *err);
+/* A library message "NAME: reason" as "CMD --NAME: reason" when NAME is a row of t. */
+int gw_cli_study_error(const struct gw_param *t, const char *cmd, int rc, gw_err *err);
+
+
 #endif

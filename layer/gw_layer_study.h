@@ -112,6 +112,23 @@ int gw_layer_impact_run_progress(const gw_layer_impact_setup *s, gw_progress_fn 
                                  gw_layer_impact_outcome *out, gw_err *err);
 void gw_layer_impact_outcome_free(gw_layer_impact_outcome *out);
 
+/* An impact resolved from its setup as gw_layer_impact_run resolves it, for
+ * callers that run gw_layer_impact themselves (with their own on_sample hook,
+ * as the program does for its VTK files): the sample read and checked, the
+ * materials (the sample's mass law and clump mass unless given), the impact,
+ * the solver and its parameters, options without effect in the combination
+ * refused. Free with gw_layer_impact_plan_free, also after a failure. Returns
+ * GW_OK or what gw_layer_impact_run would return before running. */
+typedef struct gw_layer_impact_plan {
+    gw_layer_sample sample;
+    gw_layer_params lp;
+    gw_layer_impact_params ip;
+    const gw_solver_type *type;
+    gw_solver_params sp;
+} gw_layer_impact_plan;
+int gw_layer_impact_plan_make(const gw_layer_impact_setup *s, gw_layer_impact_plan *p, gw_err *err);
+void gw_layer_impact_plan_free(gw_layer_impact_plan *p);
+
 /* What gw_layer_impact_run checks before it runs: the rows, the sample (read
  * and checked), the resolution against it (options without effect in the
  * combination refused). GW_OK or the status gw_layer_impact_run would return

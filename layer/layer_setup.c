@@ -331,31 +331,29 @@ static int resolve(const gw_layer_impact_setup *s, const gw_layer_sample *smp, g
     return gw_layer_impact_check(smp, ip, err);
 }
 
-/* The rows' checks, the sample read into *smp (freed by the caller, also after
- * a failure) and the resolution. */
-static int prepare(const gw_layer_impact_setup *s, gw_layer_sample *smp, gw_layer_params *lp,
-                   gw_layer_impact_params *ip, const gw_solver_type **type, gw_solver_params *sp, gw_err *err)
+int gw_layer_impact_plan_make(const gw_layer_impact_setup *s, gw_layer_impact_plan *p, gw_err *err)
 {
-    memset(smp, 0, sizeof *smp);
+    memset(p, 0, sizeof *p);
     int rc = gw_param_check(impact_params, s, err);
     if (rc != GW_OK)
         return rc;
     if (!s->sample)
         return gw_err_set(err, GW_EINVAL, "sample: a sample file (from layer-make) is required");
-    if ((rc = gw_layer_sample_read(s->sample, smp, err)) != GW_OK)
+    if ((rc = gw_layer_sample_read(s->sample, &p->sample, err)) != GW_OK)
         return rc;
-    return resolve(s, smp, lp, ip, type, sp, err);
+    return resolve(s, &p->sample, &p->lp, &p->ip, &p->type, &p->sp, err);
+}
+
+void gw_layer_impact_plan_free(gw_layer_impact_plan *p)
+{
+    gw_layer_sample_free(&p->sample);
 }
 
 int gw_layer_impact_setup_check(const gw_layer_impact_setup *s, gw_err *err)
 {
-    gw_layer_sample smp;
-    gw_layer_params lp;
-    gw_layer_impact_params ip;
-    const gw_solver_type *type = NULL;
-    gw_solver_params sp;
-    int rc = prepare(s, &smp, &lp, &ip, &type, &sp, err);
-    gw_layer_sample_free(&smp);
+    gw_layer_impact_plan p;
+    int rc = gw_layer_impact_plan_make(s, &p, err);
+    gw_layer_impact_plan_free(&p);
     return rc;
 }
 
@@ -369,12 +367,13 @@ int gw_layer_impact_run_progress(const gw_layer_impact_setup *s, gw_progress_fn 
 {
     memset(out, 0, sizeof *out);
     out->block_index = -1;
-    gw_layer_sample smp;
-    gw_layer_params lp;
-    gw_layer_impact_params ip;
-    const gw_solver_type *type = NULL;
-    gw_solver_params sp;
-    int rc = prepare(s, &smp, &lp, &ip, &type, &sp, err);
+    gw_layer_impact_plan plan;
+    int rc = gw_layer_impact_plan_make(s, &plan, err);
+    const gw_layer_sample smp = plan.sample; /* a view: freed with the plan */
+    const gw_layer_params lp = plan.lp;
+    gw_layer_impact_params ip = plan.ip;
+    const gw_solver_type *type = plan.type;
+    const gw_solver_params sp = plan.sp;
     snap_ctx sc = {.out = out, .req = NULL, .next = 0, .progress = progress, .pctx = pctx};
     if (rc == GW_OK && progress) { /* about a thousand calls over the longest run */
         sc.total = (long)ceil(ip.t_max / ip.dt_out - 1e-9) + 1;
@@ -425,6 +424,6 @@ int gw_layer_impact_run_progress(const gw_layer_impact_setup *s, gw_progress_fn 
         else if (nu > 0 && rc == GW_OK)
             rc = gw_err_set(err, GW_ENOMEM, "layer-impact: out of memory");
     }
-    gw_layer_sample_free(&smp);
+    gw_layer_impact_plan_free(&plan);
     return rc;
 }

@@ -153,12 +153,12 @@ refused "softwall --wall-material (the wall is --kwall)" 'softwall --wall-materi
 # fixed-step solver, a clump mass without clumps; refused before any output
 # (before the sample is read for the first, before the run for the others)
 "$GW" layer-make --n 20 --width-rm 10 --seed 4 --t-max 0.3 --out "$tmp/L.txt" >/dev/null 2>&1 || ko "layer-make for the layer refusals"
-refused "layer-impact --method bdf with verlet" "layer-impact: --method: 'bdf' has no effect with the verlet solver" layer-impact --sample "$tmp/L.txt" --method bdf --out "$tmp/o"
-refused "layer-impact --solver cvode --method erk" "layer-impact: --method: 'erk' has no effect with the cvode solver" layer-impact --sample "$tmp/L.txt" --solver cvode --method erk --out "$tmp/o"
-refused "layer-impact --rtol with verlet" 'layer-impact: --rtol: has no effect with the fixed-step verlet solver' layer-impact --sample "$tmp/L.txt" --rtol 1e-6 --out "$tmp/o"
-refused "layer-impact --exact --atol (rk4)" 'layer-impact: --atol: has no effect with the fixed-step rk4 solver' layer-impact --sample "$tmp/L.txt" --exact --atol 1e-6 --out "$tmp/o"
-refused "layer-impact --clump-mass on a disc sample" 'layer-impact: --clump-mass: has no effect: the sample .* has no clumps' layer-impact --sample "$tmp/L.txt" --clump-mass union --out "$tmp/o"
-refused "layer-impact --until verdict --full" 'layer-impact: --until verdict: has no effect with --full' layer-impact --sample "$tmp/L.txt" --until verdict --full --out "$tmp/o"
+refused "layer-impact --method bdf with verlet" "layer-impact --method: 'bdf' has no effect with the verlet solver" layer-impact --sample "$tmp/L.txt" --method bdf --out "$tmp/o"
+refused "layer-impact --solver cvode --method erk" "layer-impact --method: 'erk' has no effect with the cvode solver" layer-impact --sample "$tmp/L.txt" --solver cvode --method erk --out "$tmp/o"
+refused "layer-impact --rtol with verlet" 'layer-impact --rtol: has no effect with the fixed-step verlet solver' layer-impact --sample "$tmp/L.txt" --rtol 1e-6 --out "$tmp/o"
+refused "layer-impact --exact --atol (rk4)" 'layer-impact --atol: has no effect with the fixed-step rk4 solver' layer-impact --sample "$tmp/L.txt" --exact --atol 1e-6 --out "$tmp/o"
+refused "layer-impact --clump-mass on a disc sample" 'layer-impact --clump-mass: has no effect: the sample .* has no clumps' layer-impact --sample "$tmp/L.txt" --clump-mass union --out "$tmp/o"
+refused "layer-impact --until verdict --full" 'layer-impact --until: verdict has no effect with full' layer-impact --sample "$tmp/L.txt" --until verdict --full --out "$tmp/o"
 refused "layer-make --clump-mass without --clumps" 'layer-make: --clump-mass: has no effect without --clumps' layer-make --n 10 --clump-mass union --out "$tmp/cm.txt"
 [ -e "$tmp/cm.txt" ] && ko "layer-make --clump-mass without --clumps wrote its sample"
 printf '[sweep]\nmodel = layer\n[grid]\npoint = 0:1\n[params]\nsample = %s\npoints = 2\nrtol = 1e-6\n' "$tmp/L.txt" >"$tmp/ltol.ini"

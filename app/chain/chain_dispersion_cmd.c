@@ -280,9 +280,9 @@ static int disp_column(const disp_cli *c, const gw_opt *opts, int argc, char **a
     gw_chain_dispersion_setup_init(&ds);
     gw_chain_dispersion_outcome out;
     memset(&out, 0, sizeof out);
-    int rc = chain_cli_study_setup(gw_chain_dispersion_setup_params(), &ds, opts, argc, argv, "dispersion", &err);
+    int rc = gw_cli_study_setup(gw_chain_dispersion_setup_params(), &ds, opts, argc, argv, "dispersion", &err);
     if (rc == GW_OK && (rc = gw_chain_dispersion_run(&ds, &out, &err)) != GW_OK)
-        chain_cli_study_error(gw_chain_dispersion_setup_params(), "dispersion", rc, &err);
+        gw_cli_study_error(gw_chain_dispersion_setup_params(), "dispersion", rc, &err);
     int code = 0;
     gw_chain_params p = gw_chain_params_default();
     p.n = out.column_n;
@@ -424,15 +424,15 @@ int gw_cmd_dispersion(int argc, char **argv)
     if (disp_solver(&c, &type, &sp, &err) != GW_OK)
         return chain_cli_fail(err.msg);
     if (gw_chain_disp_params_validate(&p, &err) != GW_OK) /* "NAME: reason" -> "dispersion --NAME: reason" */
-        return chain_cli_study_error(gw_chain_dispersion_setup_params(), "dispersion", GW_EINVAL, &err),
+        return gw_cli_study_error(gw_chain_dispersion_setup_params(), "dispersion", GW_EINVAL, &err),
                chain_cli_fail(err.msg);
     gw_chain_dispersion_setup ds;
     gw_chain_dispersion_setup_init(&ds);
     gw_chain_dispersion_outcome out;
     memset(&out, 0, sizeof out);
-    int rc = chain_cli_study_setup(gw_chain_dispersion_setup_params(), &ds, opts, argc, argv, "dispersion", &err);
+    int rc = gw_cli_study_setup(gw_chain_dispersion_setup_params(), &ds, opts, argc, argv, "dispersion", &err);
     if (rc == GW_OK && (rc = gw_chain_dispersion_run(&ds, &out, &err)) != GW_OK)
-        chain_cli_study_error(gw_chain_dispersion_setup_params(), "dispersion", rc, &err); /* "NAME:" -> "--NAME:" */
+        gw_cli_study_error(gw_chain_dispersion_setup_params(), "dispersion", rc, &err); /* "NAME:" -> "--NAME:" */
     gw_chain_dispersion_setup_clear(&ds);
     const gw_chain_disp_result r = out.r;
     double wall_ms = out.wall_time_ms;

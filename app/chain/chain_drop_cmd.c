@@ -91,7 +91,7 @@ static int drop_resolve(drop_cli *d, const gw_chain_drop_setup *ds, gw_opt *opts
     chain_cli *c = &d->c;
     int n = (int)d->n, rc;
     if ((rc = gw_chain_drop_setup_gaps(ds, &d->gaps, err)) != GW_OK)
-        return chain_cli_study_error(gw_chain_drop_setup_params(), "drop", rc, err);
+        return gw_cli_study_error(gw_chain_drop_setup_params(), "drop", rc, err);
     c->params.n = n;
     c->params.v_imp = sqrt(2.0 * c->gravity * d->height);
     /* the drop's own defaults (gravity 9.81, t-max 10 ms) count as given: the
@@ -322,7 +322,7 @@ int gw_cmd_drop(int argc, char **argv)
     gw_chain_drop_outcome o;
     memset(&o, 0, sizeof o);
     int code = 0;
-    int rc = chain_cli_study_setup(gw_chain_drop_setup_params(), &ds, opts, argc, argv, "drop", &err);
+    int rc = gw_cli_study_setup(gw_chain_drop_setup_params(), &ds, opts, argc, argv, "drop", &err);
     if (rc == GW_OK)
         rc = drop_resolve(&d, &ds, opts, &err);
     if (rc != GW_OK) {
@@ -333,7 +333,7 @@ int gw_cmd_drop(int argc, char **argv)
     }
     ds.col.trace = d.c.out != NULL; /* the bead series for drop_beads.csv */
     if ((rc = gw_chain_drop_study_run(&ds, NULL, NULL, &o, &err)) == GW_EINVAL) /* "NAME:" -> "--NAME:" */
-        chain_cli_study_error(gw_chain_drop_setup_params(), "drop", rc, &err);
+        gw_cli_study_error(gw_chain_drop_setup_params(), "drop", rc, &err);
     const gw_chain_drop_result *r = &o.r;
     gw_chain_trace tr = {.n = o.n, .len = (size_t)o.trace_len, .cap = (size_t)o.trace_len,
                          .t = o.t, .f = o.f_wall, .x = o.x, .v = o.v}; /* a view, not owned */

@@ -72,14 +72,6 @@ int chain_cli_parse(const char *cmd, const char *usage, const char *summary, gw_
 /* Append the sweep options --jobs and --quiet at opts[*k] (advances *k). */
 void chain_cli_sweep_opts(gw_opt *opts, int *k, long *jobs, int *quiet);
 
-/* A study's setup (table t) from the command line: every option of argv that is
- * a row of t is set from its text with the table's checks (the command's own
- * parse ran first with the same names and ranges). GW_EINVAL "CMD --NAME: ...". */
-int chain_cli_study_setup(const gw_param *t, void *setup, const gw_opt *opts, int argc, char **argv,
-                          const char *cmd, gw_err *err);
-/* A library message "NAME: reason" as "CMD --NAME: reason" when NAME is a row of t. */
-int chain_cli_study_error(const gw_param *t, const char *cmd, int rc, gw_err *err);
-
 /* Print "granwave CMD: message" and return exit code 2. */
 int chain_cli_fail(const char *msg);
 /* The same for a library message "ROW: reason": "granwave CMD --ROW: reason". */

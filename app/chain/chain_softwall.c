@@ -116,14 +116,14 @@ int gw_cmd_softwall(int argc, char **argv)
     gw_chain_softwall_setup_init(&ss);
     gw_chain_softwall_outcome so;
     memset(&so, 0, sizeof so);
-    int rc = chain_cli_study_setup(gw_chain_softwall_setup_params(), &ss, opts, argc, argv, "softwall", &err);
+    int rc = gw_cli_study_setup(gw_chain_softwall_setup_params(), &ss, opts, argc, argv, "softwall", &err);
     if (rc == GW_OK)
         rc = gw_chain_softwall_run(&ss, quiet ? NULL : sw_progress, NULL, &so, &err);
     int nw = so.nw, ns = so.nn, per = so.nn, code = 0;
     double kc = so.k_c, t_q = so.t_q_rigid, wall_s = so.wall_time_s;
     const double *kw = so.kwall;
     if (rc != GW_OK) {
-        chain_cli_study_error(gw_chain_softwall_setup_params(), "softwall", rc, &err);
+        gw_cli_study_error(gw_chain_softwall_setup_params(), "softwall", rc, &err);
         fprintf(stderr, "granwave %s\n", err.msg);
         code = rc == GW_EINVAL ? 2 : 1;
     } else {

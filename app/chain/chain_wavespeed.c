@@ -83,14 +83,14 @@ int gw_cmd_wavespeed(int argc, char **argv)
     memset(&wo, 0, sizeof wo);
     gw_cli_progress prog;
     gw_cli_progress_init(&prog, "  ", "collisions", 0);
-    int rc = chain_cli_study_setup(gw_chain_wavespeed_setup_params(), &ws, opts, argc, argv, "wavespeed", &err);
+    int rc = gw_cli_study_setup(gw_chain_wavespeed_setup_params(), &ws, opts, argc, argv, "wavespeed", &err);
     if (rc == GW_OK && !quiet)
         fprintf(stderr, "granwave wavespeed: %d collisions\n", nv * (int)(b - a + 1));
     if (rc == GW_OK)
         rc = gw_chain_wavespeed_run(&ws, quiet ? NULL : gw_cli_progress_report, &prog, &wo, &err);
     if (rc != GW_OK) {
         if (strncmp(err.msg, "wavespeed", 9) != 0)
-            chain_cli_study_error(gw_chain_wavespeed_setup_params(), "wavespeed", rc, &err);
+            gw_cli_study_error(gw_chain_wavespeed_setup_params(), "wavespeed", rc, &err);
         fprintf(stderr, "granwave %s\n", err.msg);
         code = rc == GW_EINVAL ? 2 : 1;
     } else {

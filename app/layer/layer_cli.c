@@ -1,9 +1,9 @@
 /*
  * layer_cli.c: the option tables of the layer commands (layer_cli.h). One
  * table for an impact (docs/physics.md 2.3: R_b = rb-rm R_m, V_i, alpha_i, impact
- * abscissa, height H = height-rm R_m; B.5, B.6) used by `granwave layer-impact`
- * and by the `layer` sweep model, so a sweep case and the command resolve the
- * same options to the same gw_layer_impact call.
+ * abscissa, height H = height-rm R_m; B.5, B.6) for `granwave layer-impact`,
+ * whose values the library resolves (gw_layer_impact_plan_make), and one for
+ * `granwave layer-make`.
  * Units: SI, angles in degrees.
  */
 #include <math.h>
@@ -51,7 +51,7 @@ int layer_mat_options(const gw_param *t, layer_mat_cli *m, gw_opt *o)
 
 int layer_mat_resolve(layer_mat_cli *m, gw_err *err)
 {
-    /* not given (layer-impact): the sample's, set by layer_impact_use_sample */
+    /* not given: disc (layer-make's default) */
     if (!m->mass_law || strcmp(m->mass_law, "disc") == 0)
         m->lp.mass_law = GW_LAYER_MASS_DISC;
     else if (strcmp(m->mass_law, "sphere") == 0)
@@ -142,68 +142,4 @@ int layer_make_options(layer_make_cli *c, gw_opt *o)
     o[i - 1].help = "sample file to write (required)"; /* the library's is optional */
     o[i++] = (gw_opt){.name = "json", .kind = GW_OPT_FLAG, .dest = &c->json, .help = "print the result as JSON"};
     return i;
-}
-
-int layer_impact_resolve(layer_impact_cli *c, gw_err *err)
-{
-    c->ip.nrings = (int)c->rings;
-    int rc = layer_mat_resolve(&c->m, err);
-    if (rc != GW_OK)
-        return rc;
-    if ((c->ip.until = gw_layer_until_parse(c->until)) < 0)
-        return gw_err_set(err, GW_EINVAL, "--until: unknown '%s' (rebound, verdict)", c->until);
-    if (c->ip.full && c->ip.until == GW_LAYER_UNTIL_VERDICT)
-        return gw_err_set(err, GW_EINVAL, "--until verdict: has no effect with --full (which runs to t-max)");
-    if (!c->solver)
-        c->solver = c->exact ? "rk4" : "verlet";
-    c->type = gw_solver_type_find(c->solver);
-    if (!c->type)
-        return gw_err_set(err, GW_EINVAL, "--solver: unknown solver '%s' (verlet, rk4, cvode, arkode)", c->solver);
-    if (c->exact && c->type == gw_solver_verlet)
-        return gw_err_set(err, GW_EINVAL, "--exact: needs a solver that locates contact events (rk4, cvode, "
-                          "arkode), not verlet");
-    c->sp = gw_solver_params_default();
-    c->sp.method = gw_solver_method_find(c->method);
-    if (c->sp.method < 0)
-        return gw_err_set(err, GW_EINVAL, "--method: unknown method '%s' (bdf, adams, erk, dirk)", c->method);
-    /* a method the backend does not offer would have no effect: refused here,
-     * before any output, not by the solver set-up after the sample is read */
-    const int m = c->sp.method, cv = c->type == gw_solver_cvode, ak = c->type == gw_solver_arkode;
-    if (m != GW_METHOD_DEFAULT && !((cv && (m == GW_CVODE_BDF || m == GW_CVODE_ADAMS)) ||
-                                    (ak && (m == GW_ARKODE_ERK || m == GW_ARKODE_DIRK))))
-        return gw_err_set(err, GW_EINVAL, "--method: '%s' has no effect with the %s solver (cvode: bdf, adams; "
-                          "arkode: erk, dirk)", c->method, c->solver);
-    c->sp.dt = c->type == gw_solver_verlet ? c->dt /* 0: gw_layer_impact chooses */
-             : c->type == gw_solver_rk4 ? (c->dt > 0 ? c->dt : 1e-6) : 0;
-    c->sp.rtol = c->rtol;
-    c->sp.atol = c->atol;
-    if ((rc = gw_solver_tolerances_check(c->rtol, c->atol, "--rtol", "--atol", err)) != GW_OK)
-        return rc;
-    if (!c->sample)
-        return gw_err_set(err, GW_EINVAL, "--sample: a sample file (from layer-make) is required");
-    return GW_OK;
-}
-
-int layer_impact_use_sample(layer_impact_cli *c, const gw_opt *o, const gw_layer_sample *s, gw_err *err)
-{
-    c->rm = s->rm;
-    /* options that would have no effect in this combination are refused */
-    const int fixed_step = c->type == gw_solver_verlet || c->type == gw_solver_rk4;
-    static const char *const tols[] = {"rtol", "atol"};
-    for (int k = 0; k < 2; k++) {
-        const gw_opt *t = gw_cli_find(o, tols[k]);
-        if (fixed_step && t && t->seen)
-            return gw_err_set(err, GW_EINVAL, "--%s: has no effect with the fixed-step %s solver (the tolerances "
-                              "are cvode's and arkode's)", tols[k], c->solver);
-    }
-    const gw_opt *cmo = gw_cli_find(o, "clump-mass");
-    if (cmo && cmo->seen && !s->body)
-        return gw_err_set(err, GW_EINVAL, "--clump-mass: has no effect: the sample '%s' has no clumps", c->sample);
-    const gw_opt *ml = gw_cli_find(o, "mass-law");
-    if (!ml || !ml->seen) /* the sample's mass law unless overridden */
-        c->m.lp.mass_law = s->mass_law;
-    const gw_opt *cm = gw_cli_find(o, "clump-mass");
-    if (!cm || !cm->seen) /* and its clump mass */
-        c->m.lp.clump_mass = s->clump_mass;
-    return gw_layer_impact_check(s, &c->ip, err);
 }

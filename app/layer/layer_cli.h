@@ -1,7 +1,8 @@
 /*
- * layer_cli.h (private to app/layer/): the option tables of the layer commands, so
- * that `granwave layer-impact` and the `layer` sweep model (layer_sweep_model.c)
- * parse, default and validate an impact with one code path (layer_cli.c).
+ * layer_cli.h (private to app/layer/): the option tables of the layer commands,
+ * made from the rows of the library's parameter tables (flags, help, ranges,
+ * defaults). layer-impact resolves its options with the library
+ * (gw_layer_impact_plan_make), as the `layer` sweep model and Python do.
  * Units: SI, angles in degrees (docs/physics.md 2.1-2.3).
  */
 #ifndef GW_LAYER_CLI_H
@@ -51,10 +52,10 @@ typedef struct layer_impact_cli {
     gw_layer_impact_params ip;
     const char *sample, *solver, *method, *out, *until;
     double dt, rtol, atol;
-    double rm; /* the sample's R_m, m (set by layer_impact_use_sample) */
+    double rm; /* the sample's R_m, m (from the library's plan) */
     long rings;
     int json, exact;
-    /* resolved by layer_impact_resolve */
+    /* resolved by the library (gw_layer_impact_plan_make) */
     const gw_solver_type *type;
     gw_solver_params sp;
 } layer_impact_cli;
@@ -86,16 +87,5 @@ typedef struct layer_make_cli {
  * gw_layer_make_setup_params, --json) into o[0 .. LAYER_MAKE_NOPTS); returns
  * LAYER_MAKE_NOPTS. */
 int layer_make_options(layer_make_cli *c, gw_opt *o);
-
-/* After parsing: rings, materials, solver and method into c->type and c->sp;
- * a sample path is required. GW_EINVAL with a message naming the option; c is
- * then only partly resolved. */
-int layer_impact_resolve(layer_impact_cli *c, gw_err *err);
-
-/* Take R_m and (unless --mass-law was given in o) the mass law from sample s,
- * then check the impact against it (gw_layer_impact_check). GW_EINVAL naming the
- * input. */
-int layer_impact_use_sample(layer_impact_cli *c, const gw_opt *o, const gw_layer_sample *s,
-                            gw_err *err);
 
 #endif

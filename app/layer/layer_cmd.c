@@ -553,17 +553,30 @@ int gw_cmd_layer_impact(int argc, char **argv)
         gw_cli_help(stdout, "layer-impact", "granwave layer-impact --sample FILE [options]", impact_summary, o);
         return 0;
     }
-    if (layer_impact_resolve(&c, &err) != GW_OK)
-        return fail("layer-impact", err.msg);
-    const gw_solver_type *type = c.type;
-    gw_solver_params sp = c.sp;
-    gw_layer_sample s;
-    if (gw_layer_sample_read(c.sample, &s, &err) != GW_OK)
-        return fail("layer-impact", err.msg);
-    if (layer_impact_use_sample(&c, o, &s, &err) != GW_OK) {
-        gw_layer_sample_free(&s);
+    /* the library's setup from the same command line, read and resolved by the
+     * library (the sample, the materials, the solver, the options without
+     * effect): what a sweep case and Python do */
+    gw_layer_impact_setup st;
+    gw_layer_impact_setup_init(&st);
+    gw_layer_impact_plan plan;
+    memset(&plan, 0, sizeof plan);
+    int prc = gw_cli_study_setup(gw_layer_impact_setup_params(), &st, o, argc, argv, "layer-impact", &err);
+    if (prc == GW_OK && (prc = gw_layer_impact_plan_make(&st, &plan, &err)) != GW_OK)
+        gw_cli_study_error(gw_layer_impact_setup_params(), "layer-impact", prc, &err); /* "NAME:" -> "--NAME:" */
+    gw_layer_impact_setup_clear(&st);
+    if (prc != GW_OK) {
+        gw_layer_impact_plan_free(&plan);
         return fail("layer-impact", err.msg);
     }
+    c.m.lp = plan.lp; /* what the JSON settings and the text report */
+    c.ip = plan.ip;
+    c.type = plan.type;
+    c.sp = plan.sp;
+    c.rm = plan.sample.rm;
+    c.solver = gw_solver_type_name(plan.type);
+    const gw_solver_type *type = c.type;
+    gw_solver_params sp = c.sp;
+    gw_layer_sample s = plan.sample; /* owned from here */
     char made[4096] = ""; /* the first directory of --out this run creates */
     if (c.out && (first_missing(c.out, made, sizeof made), gw_mkdir_p(c.out, &err)) != GW_OK) {
         gw_layer_sample_free(&s);

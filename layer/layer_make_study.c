@@ -109,9 +109,9 @@ static char *header(const gw_layer_make_setup *s, const gw_layer_make_outcome *o
     return h;
 }
 
-int gw_layer_make_run(const gw_layer_make_setup *s, gw_layer_make_outcome *out, gw_err *err)
+int gw_layer_make_plan(const gw_layer_make_setup *s, gw_layer_params *lp_out, gw_layer_make_params *mp_out,
+                       gw_err *err)
 {
-    memset(out, 0, sizeof *out);
     int rc = gw_param_check(make_params, s, err);
     if (rc != GW_OK)
         return rc;
@@ -119,6 +119,8 @@ int gw_layer_make_run(const gw_layer_make_setup *s, gw_layer_make_outcome *out, 
         return gw_err_set(err, GW_EINVAL, "gravity: pluviation needs gravity > 0 m/s^2");
     if (s->aspect_max != 4 && !s->clumps)
         return gw_err_set(err, GW_EINVAL, "aspect-max: shapes clumps, so it needs clumps");
+    if (s->clump_mass != GW_LAYER_CLUMP_MASS_SUM && !s->clumps)
+        return gw_err_set(err, GW_EINVAL, "clump-mass: has no effect without clumps (a disc sample has no clumps)");
     if (s->out && (rc = gw_layer_sample_format_check(s->out, err)) != GW_OK)
         return rc; /* before the run: a result that cannot be written is not computed */
     gw_layer_params lp = gw_layer_params_default();
@@ -142,6 +144,19 @@ int gw_layer_make_run(const gw_layer_make_setup *s, gw_layer_make_outcome *out, 
     mp.height_rm = s->height_rm;
     mp.clumps = s->clumps;
     mp.aspect_max = s->aspect_max;
+    *lp_out = lp;
+    *mp_out = mp;
+    return GW_OK;
+}
+
+int gw_layer_make_run(const gw_layer_make_setup *s, gw_layer_make_outcome *out, gw_err *err)
+{
+    memset(out, 0, sizeof *out);
+    gw_layer_params lp;
+    gw_layer_make_params mp;
+    int rc = gw_layer_make_plan(s, &lp, &mp, err);
+    if (rc != GW_OK)
+        return rc;
     if ((rc = gw_layer_make(&lp, &mp, &out->sample, &out->r, err)) != GW_OK)
         return rc;
     for (int k = 0; k < out->sample.n; k++)

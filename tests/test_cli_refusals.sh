@@ -159,7 +159,7 @@ refused "layer-impact --rtol with verlet" 'layer-impact --rtol: has no effect wi
 refused "layer-impact --exact --atol (rk4)" 'layer-impact --atol: has no effect with the fixed-step rk4 solver' layer-impact --sample "$tmp/L.txt" --exact --atol 1e-6 --out "$tmp/o"
 refused "layer-impact --clump-mass on a disc sample" 'layer-impact --clump-mass: has no effect: the sample .* has no clumps' layer-impact --sample "$tmp/L.txt" --clump-mass union --out "$tmp/o"
 refused "layer-impact --until verdict --full" 'layer-impact --until: verdict has no effect with full' layer-impact --sample "$tmp/L.txt" --until verdict --full --out "$tmp/o"
-refused "layer-make --clump-mass without --clumps" 'layer-make: --clump-mass: has no effect without --clumps' layer-make --n 10 --clump-mass union --out "$tmp/cm.txt"
+refused "layer-make --clump-mass without --clumps" 'layer-make --clump-mass: has no effect without clumps' layer-make --n 10 --clump-mass union --out "$tmp/cm.txt"
 [ -e "$tmp/cm.txt" ] && ko "layer-make --clump-mass without --clumps wrote its sample"
 printf '[sweep]\nmodel = layer\n[grid]\npoint = 0:1\n[params]\nsample = %s\npoints = 2\nrtol = 1e-6\n' "$tmp/L.txt" >"$tmp/ltol.ini"
 refused "layer sweep with rtol and the verlet default" 'rtol: has no effect' sweep "$tmp/ltol.ini" --out "$tmp/o"

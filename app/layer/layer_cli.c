@@ -49,38 +49,6 @@ int layer_mat_options(const gw_param *t, layer_mat_cli *m, gw_opt *o)
     return i;
 }
 
-int layer_mat_resolve(layer_mat_cli *m, gw_err *err)
-{
-    /* not given: disc (layer-make's default) */
-    if (!m->mass_law || strcmp(m->mass_law, "disc") == 0)
-        m->lp.mass_law = GW_LAYER_MASS_DISC;
-    else if (strcmp(m->mass_law, "sphere") == 0)
-        m->lp.mass_law = GW_LAYER_MASS_SPHERE;
-    else
-        return gw_err_set(err, GW_EINVAL, "--mass-law: unknown '%s' (disc, sphere)", m->mass_law);
-    if ((m->lp.clump_mass = m->clump_mass ? gw_layer_clump_mass_parse(m->clump_mass) : GW_LAYER_CLUMP_MASS_SUM) < 0)
-        return gw_err_set(err, GW_EINVAL, "--clump-mass: unknown '%s' (sum, union)", m->clump_mass);
-    int rc = gw_layer_params_validate(&m->lp, err);
-    if (rc == GW_OK || !err)
-        return rc;
-    /* The library names the quantity; the message names the flag too: the
-     * first flag whose value alone, on the defaults, fails the same check. */
-    static const struct { const char *flag; size_t off; } fields[] = {
-        {"shear-modulus", offsetof(gw_layer_params, shear_modulus)}, {"poisson", offsetof(gw_layer_params, poisson)},
-        {"friction", offsetof(gw_layer_params, friction_deg)}, {"density", offsetof(gw_layer_params, density)},
-        {"gravity", offsetof(gw_layer_params, gravity)}, {"skin", offsetof(gw_layer_params, skin)}};
-    for (size_t k = 0; k < sizeof fields / sizeof fields[0]; k++) {
-        gw_layer_params one = gw_layer_params_default();
-        memcpy((char *)&one + fields[k].off, (const char *)&m->lp + fields[k].off, sizeof(double));
-        if (gw_layer_params_validate(&one, NULL) != GW_OK) {
-            char tmp[sizeof err->msg];
-            snprintf(tmp, sizeof tmp, "%s", err->msg);
-            return gw_err_set(err, rc, "--%s: %s", fields[k].flag, tmp);
-        }
-    }
-    return rc;
-}
-
 int layer_impact_options(layer_impact_cli *c, gw_opt *o)
 {
     const gw_param *t = gw_layer_impact_setup_params();

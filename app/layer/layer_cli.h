@@ -42,10 +42,6 @@ int layer_mat_options(const gw_param *t, layer_mat_cli *m, gw_opt *o);
  * naming the option otherwise (a bug: a name missing from the table). */
 int layer_opts_ok(const gw_opt *o, gw_err *err);
 
-/* Mass law and clump mass names into m->lp, then gw_layer_params_validate. GW_EINVAL
- * with a message naming the option. */
-int layer_mat_resolve(layer_mat_cli *m, gw_err *err);
-
 /* The options of one impact (layer-impact without --json and --out). */
 typedef struct layer_impact_cli {
     layer_mat_cli m;

@@ -100,29 +100,21 @@ int gw_cmd_layer_make(int argc, char **argv)
         gw_cli_help(stdout, "layer-make", "granwave layer-make --out FILE [options]", make_summary, o);
         return 0;
     }
-    if (layer_mat_resolve(&c.m, &err) != GW_OK)
-        return fail("layer-make", err.msg);
-    m = c.m;
-    mp = c.mp;
-    out = c.out;
-    solver = c.solver;
-    const int json = c.json;
-    if (!out)
+    /* the library's setup from the same command line, checked and resolved by
+     * the library (gw_layer_make_plan): what Python's layer_make does */
+    if (!c.out)
         return fail("layer-make", "--out: the sample file to write is required");
-    if (gw_layer_sample_format_check(out, &err) != GW_OK) /* no HDF5 in this build: refuse before the run */
+    gw_layer_make_setup st;
+    gw_layer_make_setup_init(&st);
+    int prc = gw_cli_study_setup(gw_layer_make_setup_params(), &st, o, argc, argv, "layer-make", &err);
+    if (prc == GW_OK && (prc = gw_layer_make_plan(&st, &m.lp, &mp, &err)) != GW_OK)
+        gw_cli_study_error(gw_layer_make_setup_params(), "layer-make", prc, &err); /* "NAME:" -> "--NAME:" */
+    gw_layer_make_setup_clear(&st);
+    if (prc != GW_OK)
         return fail("layer-make", err.msg);
-    if (!(m.lp.gravity > 0))
-        return fail("layer-make", "--gravity: pluviation needs gravity > 0 m/s^2");
-    if (mp.aspect_max != 4 && !mp.clumps)
-        return fail("layer-make", "--aspect-max: shapes clumps, so it needs --clumps");
-    const gw_opt *cmo = gw_cli_find(o, "clump-mass");
-    if (cmo && cmo->seen && !mp.clumps)
-        return fail("layer-make", "--clump-mass: has no effect without --clumps (a disc sample has no clumps)");
-    mp.solver = gw_solver_type_find(solver);
-    if (mp.solver != gw_solver_verlet && mp.solver != gw_solver_rk4)
-        return fail("layer-make", "--solver: pluviation takes verlet or rk4");
-    mp.n = (int)c.n;
-    mp.seed = c.seed;
+    out = c.out;
+    solver = gw_solver_type_name(mp.solver);
+    const int json = c.json;
     gw_layer_sample s;
     gw_layer_make_result r;
     int rc = gw_layer_make(&m.lp, &mp, &s, &r, &err);

@@ -153,6 +153,11 @@ refused "softwall --wall-material (the wall is --kwall)" 'softwall --wall-materi
 # fixed-step solver, a clump mass without clumps; refused before any output
 # (before the sample is read for the first, before the run for the others)
 "$GW" layer-make --n 20 --width-rm 10 --seed 4 --t-max 0.3 --out "$tmp/L.txt" >/dev/null 2>&1 || ko "layer-make for the layer refusals"
+# class 5: a sample with two discs deep inside each other (here one disc twice)
+# is refused when read, naming the pair; the sample itself is accepted
+awk '/^n /{print "n", $2 + 1; next} {print} /^[0-9]/ && NF == 3 && !d {print; d = 1}' "$tmp/L.txt" >"$tmp/Ldup.txt"
+refused "a sample with two coincident discs" "overlap by 2 R_p, above 0.05 R_p" layer-impact --sample "$tmp/Ldup.txt" --t-max 1e-4 --out "$tmp/o"
+"$GW" layer-impact --sample "$tmp/L.txt" --t-max 1e-4 >/dev/null 2>&1 && ok "the same sample without the copy runs" || ko "the sample without the copy refused"
 refused "layer-impact --method bdf with verlet" "layer-impact --method: 'bdf' has no effect with the verlet solver" layer-impact --sample "$tmp/L.txt" --method bdf --out "$tmp/o"
 refused "layer-impact --solver cvode --method erk" "layer-impact --method: 'erk' has no effect with the cvode solver" layer-impact --sample "$tmp/L.txt" --solver cvode --method erk --out "$tmp/o"
 refused "layer-impact --rtol with verlet" 'layer-impact --rtol: has no effect with the fixed-step verlet solver' layer-impact --sample "$tmp/L.txt" --rtol 1e-6 --out "$tmp/o"

@@ -125,6 +125,9 @@ static int resolve_model(const gw_chain_setup *s, gw_chain_resolved *r, gw_err *
     p->mass = isnan(s->mass) ? 4.0 / 3.0 * M_PI * pow(s->radius, 3) * bm->density : s->mass;
     p->k = isnan(s->k) ? gw_hertz_coefficient(s->radius, bm, s->radius, bm) : s->k;
     p->kwall = isnan(s->kwall) ? gw_hertz_coefficient(s->radius, bm, INFINITY, wm) : s->kwall;
+    if (!isnan(s->kwall) && strcmp(wm->name, "steel") != 0) /* other than the table's default */
+        return gw_err_set(err, GW_EINVAL, "wall-material: has no effect with kwall (the wall's Hertz coefficient "
+                          "is given)");
     if (s->sheet >= 0) {
         const gw_sheet *sh = gw_sheet_find(choice(s, "sheet", name, sizeof name));
         if (!sh)

@@ -46,12 +46,13 @@ _Static_assert(GW_SHEET_FITTED == 0 && GW_SHEET_HERTZ == 1 && GW_SHEET_LAYER == 
 #define GW_CHAIN_MATERIAL_ROWS \
     CHOICE("material", material, MATERIALS, "steel", "NAME", \
            "bead material (steel, rigid, brass, aluminium, glass, pmma, pvc) [steel]"), \
-    ROW("radius", GW_PARAM_DOUBLE, radius, "m", 0, 1, 1, "4e-3", "R", "bead radius, m, in (0, 1] [4e-3]"), \
+    /* a micron to a metre: below, masses of 1e-300 m beads underflow to 0 */ \
+    ROW("radius", GW_PARAM_DOUBLE, radius, "m", 1e-6, 1, 0, "4e-3", "R", "bead radius, m, in [1e-6, 1] [4e-3]"), \
     CHOICE("wall-material", wall_material, MATERIALS, "steel", "NAME", "wall material (a half-space) [steel]"), \
     CHOICE("sheet", sheet, SHEETS, NULL, "NAME", \
            "wall: a sheet of the paper's Table 2 with its fitted K_eff (none, brass, tape, pvc, pmma, " \
            "cardboard2, beech, cardboard1, rubber)"), \
-    {.name = "radii", .type = GW_PARAM_LIST, .offset = OFF(radii), .unit = "m", .min = 0, .max = 1, .open_min = 1, \
+    {.name = "radii", .type = GW_PARAM_LIST, .offset = OFF(radii), .unit = "m", .min = 1e-6, .max = 1, \
      .metavar = "R,R..", .help = "per-bead radii, m, bead 1 first (masses and contact k from the material)"}, \
     ROW("k", GW_PARAM_DOUBLE, k, "N/m^1.5", GW_CHAIN_K_MIN, GW_CHAIN_K_MAX, 0, NULL, "K", \
         "bead-bead Hertz coefficient, N/m^1.5, in [1e3, 1e14] [from material, F.12]"), \

@@ -63,6 +63,8 @@ refused "wavespeed --vimp with an absurd item" 'wavespeed --vimp: item 1 is 1e\+
 refused "falcon --vimp refuses what chain refuses (2000 m/s)" 'falcon --vimp: item 2' falcon --n 1:2 --vimp 0.3,2000 --heights none --out "$tmp/o"
 "$GW" chain --vimp 2000 >/dev/null 2>&1; [ $? -eq 2 ] && ok "chain --vimp 2000 refused (the shared bound)" || ko "chain --vimp 2000 not refused"
 refused "falcon --heights beyond the shared speed bound" 'falcon --heights: item 1' falcon --n 1:2 --heights 1e12 --out "$tmp/o"
+refused "chain --radii below a micron (the mass underflowed to 0)" 'chain --radii: item 1 is 1e-300, outside \[1e-06, 1\]' chain --n 2 --radii 1e-300,4e-3 --out "$tmp/o"
+refused "chain --wall-material with --kwall (no effect)" 'chain --wall-material: has no effect with kwall' chain --n 3 --wall-material rigid --kwall 1e9 --out "$tmp/o"
 refused "chain --radii with a zero radius" 'radii: item 2 is 0' chain --n 3 --radii 4e-3,0,4e-3 --out "$tmp/o"
 
 # --- 2: physical ranges (the parameter tables) and the work of a study over N,

@@ -5,6 +5,8 @@
  * and there are at most LAYER_CLUMP_MEMBERS of them (the check is quadratic in
  * the members: the bound keeps a hostile sample of one huge body from stalling
  * the reader). Used by the sample reader and writer and by gw_layer_create;
+ * also the reader's rule that discs of different bodies overlap by at most
+ * 0.05 R_p (layer_overlaps_check);
  * free of the model so that the sample fuzzer links it alone. Also the names
  * of the clump mass laws, which samples and options spell.
  * Units: SI (m).
@@ -92,4 +94,58 @@ int gw_layer_clump_mass_parse(const char *name)
         if (strcmp(name, gw_layer_clump_mass_name(c)) == 0)
             return c;
     return -1;
+}
+
+/* A sample's discs may overlap by what settling leaves (a pluviated sample:
+ * 0.002 R_p, 0.006 R_p at most in the stored ones; a softer settling modulus
+ * more): above SAMPLE_OVERLAP_MAX R_p (R_p = 2 R_a R_b / (R_a + R_b)) the first
+ * step's Hertz force would throw the discs apart and inject energy, so such a
+ * sample is refused when read (layer_sample.c). Discs of one clump overlap by
+ * construction. */
+#define SAMPLE_OVERLAP_MAX 0.05
+
+typedef struct xi {
+    double x;
+    int i;
+} xi;
+
+static int by_x(const void *a, const void *b)
+{
+    const double xa = ((const xi *)a)->x, xb = ((const xi *)b)->x;
+    return (xa > xb) - (xa < xb);
+}
+
+/* Pairs found by a sweep over x (each disc against the discs within its radius
+ * plus the largest radius to its right): O(n log n) for a packing. */
+int layer_overlaps_check(int n, const double *x, const double *y, const double *r, const int *body,
+                         const char *what, gw_err *err)
+{
+    xi *ix = malloc((size_t)n * sizeof *ix);
+    if (!ix)
+        return gw_err_set(err, GW_ENOMEM, "%s: out of memory for the overlap check", what);
+    double rmax = 0;
+    for (int i = 0; i < n; i++) {
+        ix[i] = (xi){x[i], i};
+        rmax = fmax(rmax, r[i]);
+    }
+    qsort(ix, (size_t)n, sizeof *ix, by_x);
+    int rc = GW_OK;
+    for (int a = 0; a < n && rc == GW_OK; a++) {
+        const int i = ix[a].i;
+        for (int b = a + 1; b < n && ix[b].x - x[i] <= r[i] + rmax; b++) {
+            const int j = ix[b].i;
+            if (body && body[i] == body[j])
+                continue;
+            const double d = hypot(x[j] - x[i], y[j] - y[i]), ov = r[i] + r[j] - d;
+            const double rp = 2 * r[i] * r[j] / (r[i] + r[j]);
+            if (ov > SAMPLE_OVERLAP_MAX * rp) {
+                rc = gw_err_set(err, GW_EFORMAT, "%s: particles %d and %d overlap by %.3g R_p, above %g R_p "
+                                "(a settled sample: about 0.002): their contact would inject energy",
+                                what, i < j ? i : j, i < j ? j : i, ov / rp, SAMPLE_OVERLAP_MAX);
+                break;
+            }
+        }
+    }
+    free(ix);
+    return rc;
 }

@@ -258,6 +258,12 @@ int layer_clump_key_cmp(const void *pa, const void *pb);
 int layer_members_connected(const double *x, const double *y, const double *r, int *m, int k,
                             int *stack);
 
+/* Discs i, j of different bodies (body may be NULL) overlapping by more than
+ * 0.05 R_p, R_p = 2 r_i r_j / (r_i + r_j): GW_EFORMAT "WHAT: particles i and j
+ * overlap by ..." (a read sample; a settled one overlaps by about 0.002 R_p). */
+int layer_overlaps_check(int n, const double *x, const double *y, const double *r, const int *body,
+                         const char *what, gw_err *err);
+
 /* Body ids of a sample (NULL: none): in [0, n), members of one body connected by
  * overlap or touch, at most LAYER_CLUMP_MEMBERS per body. status (GW_EINVAL or GW_EFORMAT) with a message starting
  * with what. */

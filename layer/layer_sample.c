@@ -782,60 +782,6 @@ static int read_h5(const char *path, int sb, gw_layer_sample *s, gw_err *err)
 }
 #endif
 
-/* ------------------------------------------------------- overlaps ---- */
-
-/* A sample's discs may overlap by what settling leaves (a pluviated sample:
- * 0.002 R_p, 0.006 R_p at most in the stored ones; a softer settling modulus
- * more): above SAMPLE_OVERLAP_MAX R_p (R_p = 2 R_a R_b / (R_a + R_b)) the first
- * step's Hertz force would throw the discs apart and inject energy, so such a
- * sample is refused when read. Discs of one clump overlap by construction. */
-#define SAMPLE_OVERLAP_MAX 0.05
-
-typedef struct xi {
-    double x;
-    int i;
-} xi;
-
-static int by_x(const void *a, const void *b)
-{
-    const double xa = ((const xi *)a)->x, xb = ((const xi *)b)->x;
-    return (xa > xb) - (xa < xb);
-}
-
-/* Pairs found by a sweep over x (each disc against the discs within its radius
- * plus the largest radius to its right): O(n log n) for a packing. */
-static int check_overlaps(const gw_layer_sample *s, const char *path, gw_err *err)
-{
-    xi *ix = malloc((size_t)s->n * sizeof *ix);
-    if (!ix)
-        return gw_err_set(err, GW_ENOMEM, "sample '%s': out of memory for the overlap check", path);
-    double rmax = 0;
-    for (int i = 0; i < s->n; i++) {
-        ix[i] = (xi){s->x[i], i};
-        rmax = fmax(rmax, s->r[i]);
-    }
-    qsort(ix, (size_t)s->n, sizeof *ix, by_x);
-    int rc = GW_OK;
-    for (int a = 0; a < s->n && rc == GW_OK; a++) {
-        const int i = ix[a].i;
-        for (int b = a + 1; b < s->n && ix[b].x - s->x[i] <= s->r[i] + rmax; b++) {
-            const int j = ix[b].i;
-            if (s->body && s->body[i] == s->body[j])
-                continue;
-            const double d = hypot(s->x[j] - s->x[i], s->y[j] - s->y[i]), ov = s->r[i] + s->r[j] - d;
-            const double rp = 2 * s->r[i] * s->r[j] / (s->r[i] + s->r[j]);
-            if (ov > SAMPLE_OVERLAP_MAX * rp) {
-                rc = gw_err_set(err, GW_EFORMAT, "sample '%s': particles %d and %d overlap by %.3g R_p, above %g R_p "
-                                "(a settled sample: about 0.002): their contact would inject energy",
-                                path, i < j ? i : j, i < j ? j : i, ov / rp, SAMPLE_OVERLAP_MAX);
-                break;
-            }
-        }
-    }
-    free(ix);
-    return rc;
-}
-
 /* -------------------------------------------------------- public API ---- */
 
 int gw_layer_sample_write(const gw_layer_sample *s, const char *path, const char *header,
@@ -878,8 +824,11 @@ int gw_layer_sample_read(const char *path, gw_layer_sample *s, gw_err *err)
         rc = read_text(&t, s, err);
         fclose(t.fp);
     }
-    if (rc == GW_OK)
-        rc = check_overlaps(s, path, err);
+    if (rc == GW_OK) {
+        char what[4200];
+        snprintf(what, sizeof what, "sample '%s'", path);
+        rc = layer_overlaps_check(s->n, s->x, s->y, s->r, s->body, what, err);
+    }
     if (rc != GW_OK) {
         gw_layer_sample_free(s);
         memset(s, 0, sizeof *s);

@@ -11,6 +11,8 @@
  */
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include "gw_cli.h"
 
@@ -97,4 +99,43 @@ int gw_cli_progress_report(void *ctx, long done, long total)
             el / (double)done * (double)(total - done));
     p->last = now;
     return 0;
+}
+
+/* Into made: the shallowest directory of path (or path itself) that does not
+ * exist yet, "" when path exists. */
+void gw_cli_first_missing(const char *path, char *made, size_t n)
+{
+    char p[4096];
+    struct stat st;
+    made[0] = '\0';
+    if (snprintf(p, sizeof p, "%s", path) >= (int)sizeof p)
+        return;
+    for (;;) {
+        if (stat(p, &st) == 0)
+            return;
+        snprintf(made, n, "%s", p);
+        char *sl = strrchr(p, '/');
+        while (sl && sl > p && sl[1] == '\0') { /* trailing slashes */
+            *sl = '\0';
+            sl = strrchr(p, '/');
+        }
+        if (!sl || sl == p)
+            return;
+        *sl = '\0';
+    }
+}
+
+/* Remove the empty directories from path up to made (what this run created). */
+void gw_cli_unmake(const char *path, const char *made)
+{
+    char p[4096];
+    size_t lm = strlen(made);
+    if (snprintf(p, sizeof p, "%s", path) >= (int)sizeof p)
+        return;
+    while (strlen(p) >= lm && rmdir(p) == 0) {
+        char *sl = strrchr(p, '/');
+        if (!sl || strlen(p) == lm)
+            return;
+        *sl = '\0';
+    }
 }

@@ -345,6 +345,17 @@ int gw_chain_collide(const gw_chain *c, const gw_chain_run_opts *o, gw_chain_res
     const gw_solver_type *type = o->solver ? o->solver : gw_solver_cvode;
     if (type == gw_solver_rk4 && !(sp.dt > 0))
         sp.dt = tc / (o->steps_per_tc > 0 ? o->steps_per_tc : 400.0);
+    /* and at least t_expect / step steps of O(n) each: bounded before the run
+     * (the RK4 step, or the largest step of cvode/arkode). 1e8 steps: minutes
+     * at n = 3; the default RK4 step T_c/400 makes about 800 n, so columns up
+     * to 1.25e5 beads (a day of CPU already) */
+    const double step = type == gw_solver_rk4 ? fmin(sp.dt, sp.dt_max) : sp.dt_max, max_steps_run = 1e8;
+    if (!(t_expect / step <= max_steps_run)) {
+        rc = gw_err_set(err, GW_EINVAL, "%s: a step of %g s needs about %.3g steps over the collision (about %.3g s); "
+                        "at most %.0e: raise it", type == gw_solver_rk4 && sp.dt <= sp.dt_max ? "dt" : "dt-max",
+                        step, t_expect / step, t_expect, max_steps_run);
+        goto done;
+    }
 
     gw_chain_energy e;
     gw_chain_energy_of(c, y, &e);

@@ -65,6 +65,9 @@ refused "falcon --vimp refuses what chain refuses (2000 m/s)" 'falcon --vimp: it
 refused "falcon --heights beyond the shared speed bound" 'falcon --heights: item 1' falcon --n 1:2 --heights 1e12 --out "$tmp/o"
 refused "chain --radii below a micron (the mass underflowed to 0)" 'chain --radii: item 1 is 1e-300, outside \[1e-06, 1\]' chain --n 2 --radii 1e-300,4e-3 --out "$tmp/o"
 refused "chain --wall-material with --kwall (no effect)" 'chain --wall-material: has no effect with kwall' chain --n 3 --wall-material rigid --kwall 1e9 --out "$tmp/o"
+refused "chain --rtol with the fixed-step rk4 (no effect)" 'chain --rtol: has no effect with the fixed-step rk4 solver' chain --n 3 --solver rk4 --rtol 1e-6 --out "$tmp/o"
+refused "chain --dt-max 1e-12 (1.1e8 steps: minutes)" 'dt-max: a step of 1e-12 s needs about 1.1e\+08 steps' chain --n 3 --solver cvode --dt-max 1e-12 --out "$tmp/o"
+refused "falcon --dt-max 1e-12: refused by the run, --out taken back" 'dt-max: a step of 1e-12 s' falcon --n 3:5 --dt-max 1e-12 --quiet --out "$tmp/o"
 refused "chain --radii with a zero radius" 'radii: item 2 is 0' chain --n 3 --radii 4e-3,0,4e-3 --out "$tmp/o"
 
 # --- 2: physical ranges (the parameter tables) and the work of a study over N,

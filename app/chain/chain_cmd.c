@@ -92,8 +92,9 @@ int gw_cmd_chain(int argc, char **argv)
     c.params.n = (int)n;
     c.params.v_imp = vimp;
     gw_chain *chain = NULL;
+    /* --out was tried by the resolution; it is made only when there is
+     * something to write (a run refused by the model leaves nothing) */
     if (chain_cli_resolve(&c, opts, "chain", &err) != GW_OK ||
-        (c.out && gw_mkdir_p(c.out, &err) != GW_OK) ||
         gw_chain_create(&c.params, &chain, &err) != GW_OK) {
         chain_cli_free(&c);
         return chain_cli_fail(err.msg);
@@ -118,7 +119,8 @@ int gw_cmd_chain(int argc, char **argv)
             gw_err werr = {{0}};
             cJSON *o = chain_result_json(&c, &r, wall_ms);
             cJSON_AddStringToObject(o, "error", err.msg);
-            if (gw_chain_trace_write(&tr, c.out, "chain", hdr ? hdr : "", &werr) != GW_OK ||
+            if (gw_mkdir_p(c.out, &werr) != GW_OK ||
+                gw_chain_trace_write(&tr, c.out, "chain", hdr ? hdr : "", &werr) != GW_OK ||
                 gw_path_join(path, sizeof path, c.out, "chain_failure.json") != GW_OK ||
                 gw_json_write(path, o, &werr) != GW_OK)
                 fprintf(stderr, "granwave chain --out: %s\n", werr.msg);
@@ -132,7 +134,8 @@ int gw_cmd_chain(int argc, char **argv)
             char *hdr = chain_cli_header(&c, "chain", argc, argv);
             char path[4096];
             cJSON *o = chain_result_json(&c, &r, wall_ms);
-            if (gw_chain_trace_write(&tr, c.out, "chain", hdr ? hdr : "", &err) != GW_OK ||
+            if (gw_mkdir_p(c.out, &err) != GW_OK ||
+                gw_chain_trace_write(&tr, c.out, "chain", hdr ? hdr : "", &err) != GW_OK ||
                 gw_path_join(path, sizeof path, c.out, "chain.json") != GW_OK ||
                 gw_json_write(path, o, &err) != GW_OK) {
                 fprintf(stderr, "granwave chain --out: %s\n", err.msg);

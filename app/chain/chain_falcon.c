@@ -307,7 +307,8 @@ int gw_cmd_falcon(int argc, char **argv)
         code = chain_cli_fail(err.msg);
         goto out;
     }
-    if (f.c.out && gw_mkdir_p(f.c.out, &err) != GW_OK) {
+    char made[4096] = ""; /* what --out this run creates, taken back on a refusal */
+    if (f.c.out && (gw_cli_first_missing(f.c.out, made, sizeof made), gw_mkdir_p(f.c.out, &err)) != GW_OK) {
         code = chain_cli_fail(err.msg);
         goto out;
     }
@@ -329,6 +330,8 @@ int gw_cmd_falcon(int argc, char **argv)
     if (rc != GW_OK) {
         fprintf(stderr, "granwave falcon: %s\n", err.msg);
         code = rc == GW_EINVAL ? 2 : 1;
+        if (rc == GW_EINVAL && made[0])
+            gw_cli_unmake(f.c.out, made);
         goto out;
     }
     for (int iv = 0; iv < f.nv; iv++)

@@ -108,7 +108,9 @@ int gw_cmd_softwall(int argc, char **argv)
         return chain_cli_study_fail("softwall", err.msg);
     c.params.n = (int)a;
     c.params.v_imp = vimp;
-    if (chain_cli_resolve(&c, opts, "softwall", &err) != GW_OK || (c.out && gw_mkdir_p(c.out, &err) != GW_OK)) {
+    char made[4096] = ""; /* what --out this run creates, taken back on a refusal */
+    if (chain_cli_resolve(&c, opts, "softwall", &err) != GW_OK ||
+        (c.out && (gw_cli_first_missing(c.out, made, sizeof made), gw_mkdir_p(c.out, &err)) != GW_OK)) {
         chain_cli_free(&c);
         return chain_cli_fail(err.msg);
     }
@@ -126,6 +128,8 @@ int gw_cmd_softwall(int argc, char **argv)
         gw_cli_study_error(gw_chain_softwall_setup_params(), "softwall", rc, &err);
         fprintf(stderr, "granwave %s\n", err.msg);
         code = rc == GW_EINVAL ? 2 : 1;
+        if (rc == GW_EINVAL && made[0])
+            gw_cli_unmake(c.out, made);
     } else {
         cJSON *o = cJSON_CreateObject();
         cJSON_AddStringToObject(o, "version", gw_version());

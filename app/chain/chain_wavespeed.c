@@ -70,8 +70,9 @@ int gw_cmd_wavespeed(int argc, char **argv)
     }
     c.params.n = (int)b;
     c.params.v_imp = v[0];
+    char made[4096] = ""; /* what --out this run creates, taken back on a refusal */
     if (chain_cli_resolve(&c, opts, "wavespeed", &err) != GW_OK ||
-        (c.out && gw_mkdir_p(c.out, &err) != GW_OK)) {
+        (c.out && (gw_cli_first_missing(c.out, made, sizeof made), gw_mkdir_p(c.out, &err)) != GW_OK)) {
         free(v);
         chain_cli_free(&c);
         return chain_cli_fail(err.msg);
@@ -93,6 +94,8 @@ int gw_cmd_wavespeed(int argc, char **argv)
             gw_cli_study_error(gw_chain_wavespeed_setup_params(), "wavespeed", rc, &err);
         fprintf(stderr, "granwave %s\n", err.msg);
         code = rc == GW_EINVAL ? 2 : 1;
+        if (rc == GW_EINVAL && made[0])
+            gw_cli_unmake(c.out, made);
     } else {
         const double *v_tq = wo.v_tq, *v_front = wo.v_front, *v_group = wo.v_group, *v_gf = wo.v_group_front;
         const double *t_q = wo.t_q, *fbar = wo.mean_wall_force, *period = wo.period;

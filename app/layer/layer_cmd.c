@@ -429,45 +429,6 @@ static int write_csvs(const impact_cli *c, const gw_layer_impact_result *r, cons
 #endif
 }
 
-/* Into made: the shallowest directory of path (or path itself) that does not
- * exist yet, "" when path exists. */
-static void first_missing(const char *path, char *made, size_t n)
-{
-    char p[4096];
-    struct stat st;
-    made[0] = '\0';
-    if (snprintf(p, sizeof p, "%s", path) >= (int)sizeof p)
-        return;
-    for (;;) {
-        if (stat(p, &st) == 0)
-            return;
-        snprintf(made, n, "%s", p);
-        char *sl = strrchr(p, '/');
-        while (sl && sl > p && sl[1] == '\0') { /* trailing slashes */
-            *sl = '\0';
-            sl = strrchr(p, '/');
-        }
-        if (!sl || sl == p)
-            return;
-        *sl = '\0';
-    }
-}
-
-/* Remove the empty directories from path up to made (what this run created). */
-static void unmake(const char *path, const char *made)
-{
-    char p[4096];
-    size_t lm = strlen(made);
-    if (snprintf(p, sizeof p, "%s", path) >= (int)sizeof p)
-        return;
-    while (strlen(p) >= lm && rmdir(p) == 0) {
-        char *sl = strrchr(p, '/');
-        if (!sl || strlen(p) == lm)
-            return;
-        *sl = '\0';
-    }
-}
-
 /* What the command does at the library's on_sample hook. With --out, the VTK
  * snapshots: snapshot_0.vtk at the first sample, snapshot_end.vtk and
  * snapshots.pvd (the two as a ParaView series with their times) at the end,
@@ -570,7 +531,7 @@ int gw_cmd_layer_impact(int argc, char **argv)
     gw_solver_params sp = c.sp;
     gw_layer_sample s = plan.sample; /* owned from here */
     char made[4096] = ""; /* the first directory of --out this run creates */
-    if (c.out && (first_missing(c.out, made, sizeof made), gw_mkdir_p(c.out, &err)) != GW_OK) {
+    if (c.out && (gw_cli_first_missing(c.out, made, sizeof made), gw_mkdir_p(c.out, &err)) != GW_OK) {
         gw_layer_sample_free(&s);
         return fail("layer-impact", err.msg);
     }
@@ -591,7 +552,7 @@ int gw_cmd_layer_impact(int argc, char **argv)
     }
     gw_layer_sample_free(&s);
     if ((rc == GW_EINVAL || rc == GW_EUNSUPPORTED) && made[0])
-        unmake(c.out, made); /* a refused input leaves nothing behind */
+        gw_cli_unmake(c.out, made); /* a refused input leaves nothing behind */
     if (rc != GW_OK) {
         fprintf(stderr, "granwave layer-impact: %s\n", err.msg);
         return rc == GW_EINVAL || rc == GW_EUNSUPPORTED ? 2 : 1;

@@ -279,12 +279,16 @@ int gw_layer_impact(const gw_layer_sample *smp, const gw_layer_params *lp0,
     if (type == gw_solver_verlet && !(spu.dt > 0))
         spu.dt = gw_layer_impact_dem_dt(smp, &lp, ip);
     res->dt = type == gw_solver_verlet || type == gw_solver_rk4 ? spu.dt : 0;
-    /* a fixed step is bounded by the steps it takes to t-max, before anything
-     * is allocated: 1e9 steps are hours of CPU on 20 discs */
-    if (res->dt > 0 && ip->t_max / res->dt > 1e9) {
+    /* a fixed step is bounded by the work it takes to t-max, before anything
+     * is allocated: steps x particles at most 1e10 (about 400 s of CPU at the
+     * DEM step's 40 ns per disc-step; the default impact to T_f is 1.3e7, its
+     * exact mode 1.3e8) and at most 1e9 steps */
+    const double work = res->dt > 0 ? ip->t_max / res->dt * (double)(n + 1) : 0;
+    if (res->dt > 0 && (ip->t_max / res->dt > 1e9 || work > 1e10)) {
         gw_layer_free(L);
-        return gw_err_set(err, GW_EINVAL, "dt: a step of %g s takes %.3g steps to t-max = %g s, more than 1e9 "
-                          "(raise dt or lower t-max)", res->dt, ip->t_max / res->dt, ip->t_max);
+        return gw_err_set(err, GW_EINVAL, "dt: a step of %g s takes %.3g steps of %d particles to t-max = %g s, "
+                          "%.3g particle-steps, more than 1e10 (raise dt or lower t-max)", res->dt,
+                          ip->t_max / res->dt, n + 1, ip->t_max, work);
     }
     int cap = (int)ceil(ip->t_max / ip->dt_out) + 2;
     double *strain0 = malloc((size_t)ip->nrings * 3 * sizeof *strain0);

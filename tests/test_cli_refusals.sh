@@ -68,6 +68,7 @@ refused "chain --wall-material with --kwall (no effect)" 'chain --wall-material:
 refused "chain --rtol with the fixed-step rk4 (no effect)" 'chain --rtol: has no effect with the fixed-step rk4 solver' chain --n 3 --solver rk4 --rtol 1e-6 --out "$tmp/o"
 refused "chain --dt-max 1e-12 (1.1e8 steps: minutes)" 'dt-max: a step of 1e-12 s needs about 1.1e\+08 steps' chain --n 3 --solver cvode --dt-max 1e-12 --out "$tmp/o"
 refused "falcon --dt-max 1e-12: refused by the run, --out taken back" 'dt-max: a step of 1e-12 s' falcon --n 3:5 --dt-max 1e-12 --quiet --out "$tmp/o"
+refused "dispersion --rtol with the fixed-step rk4 (no effect)" 'dispersion --rtol: has no effect with the fixed-step rk4 solver' dispersion --n 16 --t-samples 64 --solver rk4 --rtol 1e-6 --out "$tmp/o"
 refused "chain --radii with a zero radius" 'radii: item 2 is 0' chain --n 3 --radii 4e-3,0,4e-3 --out "$tmp/o"
 
 # --- 2: physical ranges (the parameter tables) and the work of a study over N,

@@ -103,11 +103,7 @@ static int drop_resolve(drop_cli *d, const gw_chain_drop_setup *ds, gw_opt *opts
     d->n_column = n;
     if (d->block) /* one body of the column's mass, bead 1's contact constants */
         gw_chain_drop_block_params(&c->params);
-    d->dt_out = c->dt_out > 0 ? c->dt_out : fmin(1e-6, c->run.t_max); /* checked by the study's run */
-    c->run.dt_out = d->dt_out;
-    if (!opt_named(opts, "peak-threshold")->seen)
-        d->peak_threshold = 0.01 * gw_chain_fmax1(c->params.mass, c->params.kwall, c->params.v_imp);
-    return GW_OK;
+    return GW_OK; /* dt-out and the peak threshold: the study's, taken after its run */
 }
 
 static cJSON *settings_json(const drop_cli *d)
@@ -334,6 +330,8 @@ int gw_cmd_drop(int argc, char **argv)
     ds.col.trace = d.c.out != NULL; /* the bead series for drop_beads.csv */
     if ((rc = gw_chain_drop_study_run(&ds, NULL, NULL, &o, &err)) == GW_EINVAL) /* "NAME:" -> "--NAME:" */
         gw_cli_study_error(gw_chain_drop_setup_params(), "drop", rc, &err);
+    d.dt_out = d.c.run.dt_out = o.dt_out; /* as the study resolved them, for the settings */
+    d.peak_threshold = o.peak_threshold;
     const gw_chain_drop_result *r = &o.r;
     gw_chain_trace tr = {.n = o.n, .len = (size_t)o.trace_len, .cap = (size_t)o.trace_len,
                          .t = o.t, .f = o.f_wall, .x = o.x, .v = o.v}; /* a view, not owned */

@@ -103,11 +103,11 @@ int gw_cli_study_setup(const struct gw_param *t, void *setup, const gw_opt *opts
 int gw_cli_study_error(const struct gw_param *t, const char *cmd, int rc, gw_err *err);
 
 
-/* --out made only as far as needed and taken back on a refusal: into made the
- * shallowest directory of path (or path) that does not exist yet ("" when path
- * exists), before gw_mkdir_p; gw_cli_unmake removes the empty directories from
- * path up to made (what this run created). */
-void gw_cli_first_missing(const char *path, char *made, size_t n);
+/* --out made only as far as needed and taken back on a refusal:
+ * gw_cli_mkdir_out makes path (gw_mkdir_p) and puts into made the shallowest
+ * directory it created ("" when path existed); gw_cli_unmake removes the empty
+ * directories from path up to made. */
+int gw_cli_mkdir_out(const char *path, char *made, size_t n, gw_err *err);
 void gw_cli_unmake(const char *path, const char *made);
 
 #endif

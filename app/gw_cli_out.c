@@ -103,7 +103,7 @@ int gw_cli_progress_report(void *ctx, long done, long total)
 
 /* Into made: the shallowest directory of path (or path itself) that does not
  * exist yet, "" when path exists. */
-void gw_cli_first_missing(const char *path, char *made, size_t n)
+static void first_missing(const char *path, char *made, size_t n)
 {
     char p[4096];
     struct stat st;
@@ -138,4 +138,10 @@ void gw_cli_unmake(const char *path, const char *made)
             return;
         *sl = '\0';
     }
+}
+
+int gw_cli_mkdir_out(const char *path, char *made, size_t n, gw_err *err)
+{
+    first_missing(path, made, n);
+    return gw_mkdir_p(path, err);
 }

@@ -308,7 +308,7 @@ int gw_cmd_falcon(int argc, char **argv)
         goto out;
     }
     char made[4096] = ""; /* what --out this run creates, taken back on a refusal */
-    if (f.c.out && (gw_cli_first_missing(f.c.out, made, sizeof made), gw_mkdir_p(f.c.out, &err)) != GW_OK) {
+    if (f.c.out && gw_cli_mkdir_out(f.c.out, made, sizeof made, &err) != GW_OK) {
         code = chain_cli_fail(err.msg);
         goto out;
     }

@@ -110,7 +110,7 @@ int gw_cmd_softwall(int argc, char **argv)
     c.params.v_imp = vimp;
     char made[4096] = ""; /* what --out this run creates, taken back on a refusal */
     if (chain_cli_resolve(&c, opts, "softwall", &err) != GW_OK ||
-        (c.out && (gw_cli_first_missing(c.out, made, sizeof made), gw_mkdir_p(c.out, &err)) != GW_OK)) {
+        (c.out && gw_cli_mkdir_out(c.out, made, sizeof made, &err) != GW_OK)) {
         chain_cli_free(&c);
         return chain_cli_fail(err.msg);
     }

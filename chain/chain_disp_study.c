@@ -143,9 +143,9 @@ int gw_chain_dispersion_solver(const gw_chain_dispersion_setup *s, const gw_solv
     if (!*type || !ok)
         return gw_err_set(err, GW_EINVAL, "method: '%s' is not a method of solver %s (cvode: adams, bdf; "
                           "arkode: erk, dirk; rk4: none)", mv, sv);
-    if (*type == gw_solver_rk4 && (!isnan(s->rtol) || !isnan(s->atol))) /* no effect on a fixed step */
-        return gw_err_set(err, GW_EINVAL, "%s: has no effect with the fixed-step rk4 solver (the tolerances are "
-                          "cvode's and arkode's)", isnan(s->rtol) ? "atol" : "rtol");
+    int rc = gw_solver_tolerances_unused_check(*type, disp_params, s, err); /* no effect on a fixed step */
+    if (rc != GW_OK)
+        return rc;
     *sp = gw_solver_params_default();
     sp->method = m;
     sp->rtol = isnan(s->rtol) ? 1e-10 : s->rtol;

@@ -202,15 +202,10 @@ static int resolve_run(const gw_chain_setup *s, gw_chain_run_opts *o, gw_err *er
     if (!ok)
         return gw_err_set(err, GW_EINVAL, "method: '%s' is not a method of solver %s (cvode: bdf, adams; "
                           "arkode: erk, dirk, imex; rk4: none)", mname, sname);
-    /* tolerances of the fixed-step solver would have no effect: refused when
-     * they differ from the table's default (a value given as such) */
-    if (o->solver == gw_solver_rk4)
-        for (int k = 0; k < 2; k++) {
-            const gw_param *p = gw_param_find(setup_params, k ? "atol" : "rtol");
-            if ((k ? s->atol : s->rtol) != strtod(p->def, NULL))
-                return gw_err_set(err, GW_EINVAL, "%s: has no effect with the fixed-step rk4 solver (the "
-                                  "tolerances are cvode's and arkode's)", p->name);
-        }
+    /* tolerances of the fixed-step solver would have no effect */
+    int rc = gw_solver_tolerances_unused_check(o->solver, setup_params, s, err);
+    if (rc != GW_OK)
+        return rc;
     o->sp.method = method;
     o->sp.rtol = s->rtol;
     o->sp.atol = s->atol;

@@ -224,7 +224,6 @@ static int req_cmp(const void *a, const void *b)
 /* Copy the layer's state into snapshot j (allocating them all at the first call). */
 static int take_snapshots(void *ctx, const gw_layer *L, int k, int final)
 {
-    (void)k;
     if (final == 2) /* a failed run gives no snapshots */
         return GW_OK;
     snap_ctx *c = ctx;
@@ -298,13 +297,8 @@ static int resolve(const gw_layer_impact_setup *s, const gw_layer_sample *smp, g
                                     (ak && (m == GW_ARKODE_ERK || m == GW_ARKODE_DIRK))))
         return gw_err_set(err, GW_EINVAL, "method: '%s' has no effect with the %s solver (cvode: bdf, adams; "
                           "arkode: erk, dirk)", mname, gw_solver_type_name(*type));
-    if (!cv && !ak)
-        for (int k = 0; k < 2; k++) {
-            const gw_param *p = gw_param_find(impact_params, k ? "atol" : "rtol");
-            if ((k ? s->atol : s->rtol) != strtod(p->def, NULL))
-                return gw_err_set(err, GW_EINVAL, "%s: has no effect with the fixed-step %s solver (the "
-                                  "tolerances are cvode's and arkode's)", p->name, gw_solver_type_name(*type));
-        }
+    if ((rc = gw_solver_tolerances_unused_check(*type, impact_params, s, err)) != GW_OK)
+        return rc;
     if (s->clump_mass >= 0 && !smp->body)
         return gw_err_set(err, GW_EINVAL, "clump-mass: has no effect: the sample '%s' has no clumps", s->sample);
     sp->dt = *type == gw_solver_verlet ? s->dt /* 0: gw_layer_impact chooses */

@@ -8,6 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "gw_param.h"
 #include "gw_solver_impl.h"
 
 gw_solver_params gw_solver_params_default(void)
@@ -72,6 +73,24 @@ int gw_solver_tolerances_check(double rtol, double atol, const char *rname, cons
     if (!(atol >= GW_TOL_MIN && atol <= GW_TOL_MAX))
         return gw_err_set(err, GW_EINVAL, "%s: %g is outside [%g, %g]", aname, atol, GW_TOL_MIN,
                           GW_TOL_MAX);
+    return GW_OK;
+}
+
+int gw_solver_tolerances_unused_check(const gw_solver_type *type, const struct gw_param *t, const void *obj,
+                                      gw_err *err)
+{
+    if (type != gw_solver_rk4 && type != gw_solver_verlet)
+        return GW_OK;
+    static const char *const rows[2] = {"rtol", "atol"};
+    for (int k = 0; k < 2; k++) {
+        const gw_param *p = gw_param_find(t, rows[k]);
+        if (!p || p->type != GW_PARAM_DOUBLE)
+            continue;
+        const double v = *(const double *)((const char *)obj + p->offset);
+        if (p->def ? v != strtod(p->def, NULL) : !isnan(v))
+            return gw_err_set(err, GW_EINVAL, "%s: has no effect with the fixed-step %s solver (the tolerances "
+                              "are cvode's and arkode's)", p->name, type->name);
+    }
     return GW_OK;
 }
 

@@ -120,6 +120,13 @@ extern const gw_solver_type *const gw_solver_verlet;
 /* Backend by name ("cvode", "arkode", "rk4", "verlet"); NULL if unknown. */
 const gw_solver_type *gw_solver_type_find(const char *name);
 const char *gw_solver_type_name(const gw_solver_type *type);
+/* The tolerances are cvode's and arkode's: for a fixed-step backend (rk4,
+ * verlet), GW_EINVAL "rtol: has no effect with the fixed-step NAME solver ..."
+ * when row rtol or atol of table t differs in obj from the row's default
+ * (NaN when the row has none: not given); GW_OK otherwise. */
+struct gw_param;
+int gw_solver_tolerances_unused_check(const gw_solver_type *type, const struct gw_param *t, const void *obj,
+                                      gw_err *err);
 /* Backend variant by name ("bdf", "adams", "erk", "dirk", "imex"); -1 if unknown. */
 int gw_solver_method_find(const char *name);
 const char *gw_solver_method_name(int method);

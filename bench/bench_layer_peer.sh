@@ -129,7 +129,8 @@ for c in (1, 3):
         print("%-20s %-9s %8.3f (%-20s) %12s %8d %12.1f %8.2f  %-9s  %-7s  %.4f" % (
             names[c], code, m, " ".join("%.3g" % v for v in allc),
             "%.2f (%.2f)" % (gm / lm, pairs) if code == "granwave" else "",
-            steps, ns, ns / bound.get("verlet", float("nan")), num(o["e_n"]), str(bool(o["bounced"])).lower(),
+            steps, ns, ns / bound.get("verlet", float("nan")), num(o["e_n"]),
+            "undecided" if o["bounced"] is None else str(bool(o["bounced"])).lower(),
             o["penetration"]))
 print("bench_dem_min bound (fixed list, %s): verlet %.1f ns/disc-step (dt 1e-5 s), rk4 %.1f ns/disc-step (dt 1e-6 s)" % (
     "sample + block", bound.get("verlet", float("nan")), bound.get("rk4", float("nan"))))

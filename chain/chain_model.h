@@ -15,6 +15,8 @@ struct gw_chain {
     int n;
     double *m, *minv, *kc, *gam; /* masses [n], 1/m [n], k [n-1], gamma [n-1] */
     double kwall, gwall;         /* wall coefficient and its KK constant */
+    int uniform;                 /* every kc equal and every minv equal: the lean
+                                    loop reads kc[0] and minv[0] only */
     double *scale;               /* [dim] */
     gw_system sys;
     int general;                 /* any wall law, sensor body or guide option */

@@ -3,7 +3,8 @@
 #   bench_chain  RHS cost against a force-only loop and a flop-count bound,
 #                per-backend cost on the 40-bead column
 #   bench_long   1e3 .. 1e6 beads: ns per bead-step and peak RSS per backend
-#                (LONG_ARGS, e.g. "--nmax 100000 --reps 1" for a quick run)
+#                and its ratio to rk4 per step (LONG_ARGS, e.g. "--nmax 100000
+#                --reps 1 --rounds 4": backends in turn, best of each)
 # Not run here: bench_falcon_accuracy (the convergence study behind the falcon
 # main job's RK4 step), bench/falcon_vs_lsoda.sh (falcon main job CPU against
 # 3 SciPy LSODA collisions). Peers (SciPy, LAMMPS) and time to solution:

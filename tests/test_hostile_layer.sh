@@ -16,7 +16,10 @@
 #    sinks through a wall fails naming the cause, not the output file;
 #  4 layer-stats refuses two cases with the same grid values and a grid value
 #    nan; a sweep refuses a value listed twice, `points` without a `point`
-#    key (every case ran point 0, off x) and `spacing` with one point.
+#    key (every case ran point 0, off x) and `spacing` with one point;
+#  5 options without effect: layer-impact --dt with cvode or arkode (their
+#    steps come from the tolerances), layer-stats --fit, --gamma-deg and
+#    --delta-rm on a table without a bouncing diagram.
 set -u
 GW=$1
 SRC=${2:-.}
@@ -139,6 +142,18 @@ refused "sweep: spacing with one impact point" "case 0: spacing: has no effect w
     sweep "$tmp/sp.ini" --out "$tmp/o"
 printf '[sweep]\nmodel = layer\n[grid]\nvi = 10, 20\n[params]\nsample = %s\npoint = 1\npoints = 3\nt-max = 0.003\n' "$S" >"$tmp/p1.ini"
 runs "sweep: one fixed point of three in [params] is accepted" sweep "$tmp/p1.ini" --out "$tmp/p1" --check
+
+# --- 5: options without effect ----------------------------------------------
+refused "layer-impact --solver cvode --dt 1e-6 (ignored)" "layer-impact --dt: has no effect with the cvode solver" \
+    layer-impact --sample "$S" --solver cvode --dt 1e-6 --t-max 1e-4 --out "$tmp/o"
+refused "layer-impact --solver arkode --dt 1e-6 (ignored)" "layer-impact --dt: has no effect with the arkode solver" \
+    layer-impact --sample "$S" --solver arkode --dt 1e-6 --t-max 1e-4 --out "$tmp/o"
+runs "layer-impact --exact --dt 1e-6 (rk4's step) is accepted" layer-impact --sample "$S" --exact --dt 1e-6 --t-max 1e-5 --skin 1e-3
+for opt in "--delta-rm 0.5" "--gamma-deg 1" "--fit beta"; do
+    refused "layer-stats $opt on a table without a diagram (ignored)" \
+        "layer-stats ${opt%% *}: has no effect: the table has no bouncing diagram" layer-stats "$R" $opt --out "$tmp/o"
+done
+runs "layer-stats --delta-rm on a diagram table" layer-stats "$SRC/data/measured/layer_diagram/results.csv" --delta-rm 0.5 --json
 
 echo "test_hostile_layer: $passes passed, $fails failed"
 [ $fails -eq 0 ]

@@ -258,6 +258,11 @@ int layer_clump_key_cmp(const void *pa, const void *pb);
 int layer_members_connected(const double *x, const double *y, const double *r, int *m, int k,
                             int *stack);
 
+/* The checks a sample read from a file passes (check_sample and
+ * layer_overlaps_check of layer_sample.c): GW_EFORMAT with a message starting
+ * "sample 'WHAT'" when s would be refused on reading. */
+int layer_sample_readable(const gw_layer_sample *s, const char *what, gw_err *err);
+
 /* Discs i, j of different bodies (body may be NULL) overlapping by more than
  * 0.05 R_p, R_p = 2 r_i r_j / (r_i + r_j): GW_EFORMAT "WHAT: particles i and j
  * overlap by ..." (a read sample; a settled one overlaps by about 0.002 R_p). */

@@ -24,6 +24,7 @@
  */
 #include <math.h>
 #include <stdlib.h>
+#include <stdio.h>
 #include <string.h>
 
 #include "layer_impl.h"
@@ -90,6 +91,41 @@ static int check_make(const gw_layer_make_params *m, gw_err *err)
     return GW_OK;
 }
 
+/* The step against the pile's shortest contact: two of the smallest discs
+ * meeting at the fastest fall speed, from the top of the initial pile to the
+ * floor, v = sqrt(2 g h_top), last for the Hertz time (the formula of
+ * gw_layer_impact_dem_dt, reduced mass m/2, K_n at R_p = R_min)
+ *     tau = 0.8 B(2/5, 1/2) (5 m / (8 K_n))^(2/5) v^(-1/5)
+ * An explicit step above tau / SETTLE_STEPS_MIN resolves no contact: RK4 and
+ * verlet blow up near tau (rm = 1.2e-4 m at the default 2e-5 s ran for
+ * minutes in chopped steps; verlet stopped on a non-finite state). The default
+ * pile (rm 0.325 m) has tau / dt = 51 at 2e-5 s, rm = 1e-3 m 2.8 (it settles, overlaps below 1e-3 R_p). */
+#define SETTLE_STEPS_MIN 2
+
+/* v rounded down to two significant digits (a suggested step that passes). */
+static double floor_2digits(double v)
+{
+    const double p = pow(10, floor(log10(v)) - 1);
+    return floor(v / p) * p;
+}
+
+static int check_step(const gw_layer_params *lp, const gw_layer_make_params *m, const gw_layer_body *b, int n,
+                      gw_err *err)
+{
+    double rmin = INFINITY, top = 0;
+    for (int i = 0; i < n; i++)
+        rmin = fmin(rmin, b[i].r), top = fmax(top, b[i].y + b[i].r);
+    const double v = sqrt(2 * lp->gravity * top), ms = 0.5 * gw_layer_mass(lp, rmin), K = gw_layer_kn(lp, rmin);
+    const double beta = tgamma(0.4) * tgamma(0.5) / tgamma(0.9); /* B(2/5, 1/2) */
+    const double tau = 0.8 * beta * pow(1.25 * ms / K, 0.4) * pow(v, -0.2);
+    if (!(m->dt <= tau / SETTLE_STEPS_MIN))
+        return gw_err_set(err, GW_EINVAL, "dt: a step of %g s is above 1/%d of the shortest contact of the pile "
+                          "(%.3g s: discs of %.3g m meeting at the fall speed %.3g m/s): the settling would "
+                          "resolve no contact; give dt %.2g or less", m->dt, SETTLE_STEPS_MIN, tau, rmin, v,
+                          floor_2digits(tau / SETTLE_STEPS_MIN));
+    return GW_OK;
+}
+
 /* Settle bodies b (positions updated, velocities zeroed) with the given G.
  * Returns the simulated time in *t and the final kinetic energy in *ke. */
 static int settle(const gw_layer_params *lp, const gw_layer_make_params *m, int n,
@@ -104,14 +140,25 @@ static int settle(const gw_layer_params *lp, const gw_layer_make_params *m, int 
     sp.dt = m->dt;
     rc = gw_layer_start(L, m->solver, &sp, err);
     *conv = 0;
+    /* the lowest body falls freely for t_land = sqrt(2 gap / g) before anything
+     * touches: a kinetic energy below the threshold before then is a pile still
+     * in the air (g = 1e-9 m/s^2 had E_k below it at 0.1 s and called the
+     * initial grid settled) */
+    double gap = INFINITY;
+    for (int i = 0; i < n; i++)
+        gap = fmin(gap, b[i].y - b[i].r);
+    const double t_land = gap > 0 ? sqrt(2 * gap / lp->gravity) : 0;
     const double chunk = 0.01;
-    for (int k = 1; rc == GW_OK && k * chunk <= m->t_max + 1e-12; k++) {
-        rc = gw_layer_advance(L, k * chunk, err);
+    /* chunks of 0.01 s, the last one ending at t_max (a t_max below one chunk
+     * ran no step at all) */
+    for (int k = 1; rc == GW_OK && (k - 1) * chunk < m->t_max * (1 - 1e-12); k++) {
+        const double tk = fmin(k * chunk, m->t_max);
+        rc = gw_layer_advance(L, tk, err);
         gw_layer_energy e;
         gw_layer_energy_of(L, &e);
         *ke = e.kinetic_soil + e.kinetic_block;
-        *t = k * chunk;
-        if (k >= 10 && *ke < thr) {
+        *t = tk;
+        if (k >= 10 && tk >= t_land && *ke < thr) {
             *conv = 1;
             break;
         }
@@ -255,6 +302,24 @@ static void clumps_initial(const gw_layer_make_params *m, double width, gw_layer
     *nd = k;
 }
 
+/* The settled pile must be a sample the reader takes: discs sunk into a wall
+ * (--shear-modulus 1e-3 Pa: through the floor) or into each other beyond the
+ * reader's tolerances (0.02 R, 0.05 R_p) were refused only when writing,
+ * blaming the output file. GW_ESOLVER (a run that failed, not a bad input);
+ * out is freed. */
+static int settled_readable(gw_layer_sample *out, gw_err *err)
+{
+    int rc = layer_sample_readable(out, "settled", err);
+    if (rc == GW_OK)
+        return GW_OK;
+    char why[sizeof err->msg];
+    snprintf(why, sizeof why, "%s", err->msg);
+    gw_layer_sample_free(out);
+    memset(out, 0, sizeof *out);
+    return gw_err_set(err, GW_ESOLVER, "the pile did not settle into a valid sample (%s): its contacts are too "
+                      "soft for their load (raise shear-modulus, lower density or gravity)", why);
+}
+
 /* t0: gw_clock_ms() at the start of gw_layer_make (for res->wall_ms). */
 static int make_clumps(const gw_layer_params *lp0, const gw_layer_make_params *m, double t0,
                        gw_layer_sample *out, gw_layer_make_result *res, gw_err *err)
@@ -270,6 +335,10 @@ static int make_clumps(const gw_layer_params *lp0, const gw_layer_make_params *m
     clumps_initial(m, lp.width, b, &nd);
     double t, ke;
     int conv;
+    if ((rc = check_step(&lp, m, b, nd, err)) != GW_OK) {
+        free(b);
+        return rc;
+    }
     rc = settle_all(&lp, m, nd, b, &t, &ke, &conv, res, err);
     /* keep the clumps lying wholly below height_rm R_m; ids renumbered 0.. */
     int kept = 0, nbody = 0;
@@ -313,7 +382,7 @@ static int make_clumps(const gw_layer_params *lp0, const gw_layer_make_params *m
     finish(&lp, m, b, kept, t, ke, conv, t0, out, res);
     free(b);
     res->n_bodies = nbody;
-    return GW_OK;
+    return settled_readable(out, err);
 }
 
 int gw_layer_make(const gw_layer_params *lp0, const gw_layer_make_params *m,
@@ -347,6 +416,10 @@ int gw_layer_make(const gw_layer_params *lp0, const gw_layer_make_params *m,
     }
     double t, ke;
     int conv;
+    if ((rc = check_step(&lp, m, b, n, err)) != GW_OK) {
+        free(b);
+        return rc;
+    }
     rc = settle_all(&lp, m, n, b, &t, &ke, &conv, res, err);
     if (rc == GW_OK) {
         out->x = malloc(3 * (size_t)n * sizeof *out->x);
@@ -379,5 +452,5 @@ int gw_layer_make(const gw_layer_params *lp0, const gw_layer_make_params *m,
     finish(&lp, m, b, n, t, ke, conv, t0, out, res);
     free(b);
     res->n_bodies = n;
-    return GW_OK;
+    return settled_readable(out, err);
 }

@@ -63,14 +63,36 @@ static const char *shown(const char *s, char out[48])
     return out;
 }
 
+/* The scales a sample may have: R_m within the range of layer-make's rm row
+ * ([1e-5, 1e3] m), the box at most 1e6 R_m wide and its particles at most
+ * 1e6 R_m high (the width-rm and height-rm rows' bound: positions then keep
+ * 2e-10 R_m of resolution, far below a contact's overlap), and every radius
+ * within [1e-3, 1e3] R_m (layer-make's grading, volume ratio up to 1e6, stays
+ * in [0.005, 2] R_m). Outside them a sample is no granular layer of its R_m:
+ * a 1e-10 m sample ran for minutes on a step of 1e-11 s, a particle at
+ * y = 1e12 m closed the ledger to 0.34 only, and R_m = 1e-300 m failed inside
+ * the solver with a message naming no input. */
+#define SAMPLE_RM_MIN 1e-5
+#define SAMPLE_RM_MAX 1e3
+#define SAMPLE_EXTENT_RM 1e6
+#define SAMPLE_R_LO 1e-3
+#define SAMPLE_R_HI 1e3
+
 /* The header fields every reader and the writers check: width and rm finite
- * and positive, volume_ratio 0 (unknown) or >= 1, porosity in [0, 1]. */
+ * and positive, rm and width within the scales above, volume_ratio 0
+ * (unknown) or >= 1, porosity in [0, 1]. */
 static int check_header(const gw_layer_sample *s, const char *path, int status, gw_err *err)
 {
     if (!isfinite(s->width) || !(s->width > 0))
         return gw_err_set(err, status, "sample '%s': width %g m must be finite and positive", path, s->width);
     if (!isfinite(s->rm) || !(s->rm > 0))
         return gw_err_set(err, status, "sample '%s': rm %g m must be finite and positive", path, s->rm);
+    if (!(s->rm >= SAMPLE_RM_MIN && s->rm <= SAMPLE_RM_MAX))
+        return gw_err_set(err, status, "sample '%s': rm %g m is outside [%g, %g] m (layer-make's rm range)",
+                          path, s->rm, SAMPLE_RM_MIN, SAMPLE_RM_MAX);
+    if (!(s->width <= SAMPLE_EXTENT_RM * s->rm))
+        return gw_err_set(err, status, "sample '%s': width %g m is above %g R_m (R_m = %g m)", path, s->width,
+                          SAMPLE_EXTENT_RM, s->rm);
     if (!isfinite(s->volume_ratio) || (s->volume_ratio != 0 && !(s->volume_ratio >= 1)))
         return gw_err_set(err, status, "sample '%s': volume_ratio %g must be >= 1", path, s->volume_ratio);
     if (!(s->porosity >= 0 && s->porosity <= 1))
@@ -82,10 +104,10 @@ static int check_header(const gw_layer_sample *s, const char *path, int status, 
     return GW_OK;
 }
 
-/* One particle: finite, r > 0, inside the box (0 <= x <= width, y >= 0) up to
- * the 0.02 R overlap that settling under gravity leaves against the walls.
- * where: "line 12" or "particle 3". */
-static int check_particle(double width, double x, double y, double r, const char *path,
+/* One particle: finite, r > 0 and within [1e-3, 1e3] R_m, inside the box
+ * (0 <= x <= width, 0 <= y <= 1e6 R_m) up to the 0.02 R overlap that settling
+ * under gravity leaves against the walls. where: "line 12" or "particle 3". */
+static int check_particle(double width, double rm, double x, double y, double r, const char *path,
                           const char *where, int status, gw_err *err)
 {
     if (!isfinite(x) || !isfinite(y) || !isfinite(r))
@@ -93,9 +115,15 @@ static int check_particle(double width, double x, double y, double r, const char
                           path, where, x, y, r);
     if (!(r > 0))
         return gw_err_set(err, status, "sample '%s': %s: radius %g m must be positive", path, where, r);
+    if (!(r >= SAMPLE_R_LO * rm && r <= SAMPLE_R_HI * rm))
+        return gw_err_set(err, status, "sample '%s': %s: radius %g m is outside [%g, %g] R_m (R_m = %g m)", path,
+                          where, r, SAMPLE_R_LO, SAMPLE_R_HI, rm);
     if (x - r < -2e-2 * r || x + r > width + 2e-2 * r || y - r < -2e-2 * r)
         return gw_err_set(err, status, "sample '%s': %s: particle outside the box (0 <= x <= %g, y >= 0) "
                           "beyond the 0.02 R overlap tolerance", path, where, width);
+    if (!(y <= SAMPLE_EXTENT_RM * rm))
+        return gw_err_set(err, status, "sample '%s': %s: y = %g m is above %g R_m (R_m = %g m)", path, where, y,
+                          SAMPLE_EXTENT_RM, rm);
     return GW_OK;
 }
 
@@ -120,9 +148,15 @@ static int check_sample(const gw_layer_sample *s, const char *path, int status, 
     char where[48];
     for (int i = 0; i < s->n && rc == GW_OK; i++) {
         snprintf(where, sizeof where, "particle at index %d", i);
-        rc = check_particle(s->width, s->x[i], s->y[i], s->r[i], path, where, status, err);
+        rc = check_particle(s->width, s->rm, s->x[i], s->y[i], s->r[i], path, where, status, err);
     }
     return rc == GW_OK ? check_bodies(s, path, status, err) : rc;
+}
+
+int layer_sample_readable(const gw_layer_sample *s, const char *what, gw_err *err)
+{
+    int rc = check_sample(s, what, GW_EFORMAT, err);
+    return rc == GW_OK ? layer_overlaps_check(s->n, s->x, s->y, s->r, s->body, what, err) : rc;
 }
 
 /* 1 when the name asks for HDF5 (.h5, .hdf5; any case). */
@@ -424,7 +458,7 @@ static int read_text(text_in *t, gw_layer_sample *s, gw_err *err)
         if (ncol == 4)
             s->body[i] = (int)id;
         snprintf(where, sizeof where, "line %ld", t->line);
-        rc = check_particle(s->width, s->x[i], s->y[i], s->r[i], t->path, where, GW_EFORMAT, err);
+        rc = check_particle(s->width, s->rm, s->x[i], s->y[i], s->r[i], t->path, where, GW_EFORMAT, err);
         i++;
     }
     if (rc == GW_OK && (rc = text_next(t, err)) > 0)

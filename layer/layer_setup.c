@@ -301,6 +301,9 @@ static int resolve(const gw_layer_impact_setup *s, const gw_layer_sample *smp, g
         return rc;
     if (s->clump_mass >= 0 && !smp->body)
         return gw_err_set(err, GW_EINVAL, "clump-mass: has no effect: the sample '%s' has no clumps", s->sample);
+    if ((cv || ak) && s->dt > 0) /* the fixed step of verlet and rk4 (0: auto); cvode and arkode choose theirs */
+        return gw_err_set(err, GW_EINVAL, "dt: has no effect with the %s solver (it chooses its steps from rtol "
+                          "and atol; dt is the fixed step of verlet and rk4)", gw_solver_type_name(*type));
     sp->dt = *type == gw_solver_verlet ? s->dt /* 0: gw_layer_impact chooses */
            : *type == gw_solver_rk4 ? (s->dt > 0 ? s->dt : 1e-6) : 0;
     sp->rtol = s->rtol;

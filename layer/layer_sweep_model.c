@@ -89,6 +89,18 @@ static int prepare(gw_layer_impact_setup *s, int nk, const char *const *names, c
                                      : gw_err_set(err, GW_EINVAL, "unknown parameter '%s'", names[i]);
     if (rc == GW_OK && pl.point >= pl.points)
         rc = gw_err_set(err, GW_EINVAL, "point: %ld is outside [0, points - 1 = %ld]", pl.point, pl.points - 1);
+    /* placement keys that would not do what they say: points > 1 without a
+     * point key runs point 0 alone, (points - 1) / 2 spacings left of x; a
+     * spacing with one point moves nothing */
+    int has_point = 0, has_spacing = 0;
+    for (int i = 0; i < nk; i++)
+        has_point |= strcmp(names[i], "point") == 0, has_spacing |= strcmp(names[i], "spacing") == 0;
+    if (rc == GW_OK && pl.points > 1 && !has_point)
+        rc = gw_err_set(err, GW_EINVAL, "points: %ld points but no key point: every case would run point 0 "
+                        "alone, %g m left of x; give point = 0:%ld in [grid]", pl.points,
+                        0.5 * (double)(pl.points - 1) * pl.spacing, pl.points - 1);
+    if (rc == GW_OK && pl.points == 1 && has_spacing)
+        rc = gw_err_set(err, GW_EINVAL, "spacing: has no effect with one impact point (points = 1)");
     if (rc == GW_OK) {
         const double x0 = s->x;
         s->x += ((double)pl.point - 0.5 * (double)(pl.points - 1)) * pl.spacing;

@@ -118,9 +118,13 @@ int gw_cmd_layer_make(int argc, char **argv)
     gw_layer_sample s;
     gw_layer_make_result r;
     int rc = gw_layer_make(&m.lp, &mp, &s, &r, &err);
+    if (rc == GW_EINVAL) { /* a value refused by the run ("dt: ..."): named as its flag */
+        gw_cli_study_error(gw_layer_make_setup_params(), "layer-make", rc, &err);
+        return fail("layer-make", err.msg);
+    }
     if (rc != GW_OK) {
         fprintf(stderr, "granwave layer-make: %s\n", err.msg);
-        return rc == GW_EINVAL ? 2 : 1;
+        return 1;
     }
     cJSON *settings = make_settings(&mp, &m.lp);
     char *hdr = gw_cli_provenance("layer-make", argc, argv, settings);

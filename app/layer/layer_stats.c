@@ -148,8 +148,12 @@ int gw_cmd_layer_stats(int argc, char **argv)
     gw_stats_setup_clear(&S);
     if (rc == GW_OK && !(R.cmdline = gw_cli_command_line("layer-stats", argc, argv)))
         rc = gw_err_set(&err, GW_ENOMEM, "%s: out of memory", R.input);
+    if (rc == GW_EINVAL) /* a parameter named by the library ("delta-rm: ..."): as its flag */
+        gw_cli_study_error(tab, "layer-stats", rc, &err);
     if (rc != GW_OK) {
         gw_stats_analysis_free(&R);
+        if (rc == GW_EINVAL)
+            return fail(err.msg);
         fprintf(stderr, "granwave layer-stats: %s\n", err.msg);
         return rc == GW_ENOMEM ? 1 : 2;
     }

@@ -290,6 +290,18 @@ int gw_stats_analyse(const gw_stats_setup *s, gw_stats_analysis *A, gw_err *err)
     A->defaults = s->defaults;
     rc = gw_stats_table_read(s->input, &A->t, err);
     A->input = A->t.path;
+    /* the B.31 options act on the bouncing diagram only: refused, as having no
+     * effect, on a table without one (given: other than the row's default) */
+    if (rc == GW_OK && (gw_stats_table_key(&A->t, "rb-rm") < 0 || gw_stats_table_key(&A->t, "height-rm") < 0)) {
+        const char *given = strcmp(s->fit ? s->fit : "beta,a_over_b", "beta,a_over_b") != 0 ? "fit"
+                            : s->gamma_deg != 0.2 ? "gamma-deg" : !isnan(s->delta_rm) ? "delta-rm" : NULL;
+        if (given) {
+            gw_stats_table_free(&A->t);
+            A->input = NULL;
+            return gw_err_set(err, GW_EINVAL, "%s: has no effect: the table has no bouncing diagram (it needs the "
+                              "grid keys rb-rm and height-rm)", given);
+        }
+    }
     if (rc == GW_OK)
         rc = gw_stats_groups_make(&A->t, s->criterion, &A->gs, err);
     if (rc == GW_OK)

@@ -9,7 +9,8 @@
  * (docs/physics.md 2.5, S = 75 % in the paper); the running means over the first k
  * points (the paper's Fig. 10: how many points make the mean stable).
  * The table is read as a regular file only (gw_input_read); a case number
- * appearing twice, or a bouncing row without e_n, e or alpha_r, is refused.
+ * appearing twice, two cases with the same grid values, a grid value nan or
+ * inf, or a bouncing row without e_n, e or alpha_r, is refused.
  * Units: as in the table (m, deg, fractions of the incident energy, R_m).
  */
 #define _POSIX_C_SOURCE 200809L
@@ -188,7 +189,11 @@ static int parse_row(gw_stats_table *t, char *line, long ln, int ncells, int cb,
         if (!*cells[1 + i])
             return gw_err_set(err, GW_EFORMAT, "%s:%ld: grid key %s: empty cell", t->path, ln, t->grid_name[i]);
         double v;
-        t->grid_num[r * t->ngrid + i] = cell_number(cells[1 + i], &v) && isfinite(v) ? v : NAN;
+        int num = cell_number(cells[1 + i], &v);
+        if (num && !isfinite(v)) /* a sweep checks every value: nan or inf was never run */
+            return gw_err_set(err, GW_EFORMAT, "%s:%ld: grid key %s: '%s' is not a finite number", t->path, ln,
+                              t->grid_name[i], cells[1 + i]);
+        t->grid_num[r * t->ngrid + i] = num ? v : NAN;
         t->grid_value[r * t->ngrid + i] = NULL;
     }
     for (int i = 0; i < t->ncols; i++) {
@@ -218,6 +223,68 @@ static int cmp_case(const void *a, const void *b)
     return (x > y) - (x < y);
 }
 
+/* A row's grid values as one string "key = value, ...", numbers printed back
+ * in %.17g so that 1 and 1.0 are one value; NULL on out of memory. */
+static char *grid_combination(const gw_stats_table *t, long r)
+{
+    size_t len = 1;
+    for (int i = 0; i < t->ngrid; i++)
+        len += strlen(t->grid_name[i]) + strlen(t->grid_value[r * t->ngrid + i]) + 40;
+    char *s = malloc(len), *p = s;
+    if (!s)
+        return NULL;
+    *p = '\0';
+    for (int i = 0; i < t->ngrid; i++) {
+        double v = t->grid_num[r * t->ngrid + i];
+        size_t left = len - (size_t)(p - s);
+        int k = isnan(v) ? snprintf(p, left, "%s%s = %s", i ? ", " : "", t->grid_name[i],
+                                    t->grid_value[r * t->ngrid + i])
+                         : snprintf(p, left, "%s%s = %.17g", i ? ", " : "", t->grid_name[i], v);
+        p += k;
+    }
+    return s;
+}
+
+typedef struct combo {
+    char *key;
+    long row;
+} combo;
+
+static int cmp_combo(const void *a, const void *b)
+{
+    return strcmp(((const combo *)a)->key, ((const combo *)b)->key);
+}
+
+/* No two rows with the same grid values: a sweep runs each combination once,
+ * so a repeat is a table stitched from two sweeps (or a config listing a
+ * value twice), and layer-stats would count the point twice. */
+static int check_combinations(const gw_stats_table *t, gw_err *err)
+{
+    if (t->ngrid == 0 || t->nrows < 2)
+        return GW_OK;
+    combo *c = calloc((size_t)t->nrows, sizeof *c);
+    int rc = c ? GW_OK : GW_ENOMEM;
+    for (long r = 0; rc == GW_OK && r < t->nrows; r++)
+        if (!(c[r].key = grid_combination(t, r)))
+            rc = GW_ENOMEM;
+        else
+            c[r].row = r;
+    if (rc == GW_OK) {
+        qsort(c, (size_t)t->nrows, sizeof *c, cmp_combo);
+        for (long r = 1; r < t->nrows && rc == GW_OK; r++)
+            if (strcmp(c[r].key, c[r - 1].key) == 0) {
+                long a = t->case_id[c[r - 1].row], b = t->case_id[c[r].row];
+                rc = gw_err_set(err, GW_EFORMAT, "%s: cases %ld and %ld ran the same grid values (%s): a sweep "
+                                "runs each combination once, so the table mixes two sweeps or its config listed a "
+                                "value twice", t->path, a < b ? a : b, a < b ? b : a, c[r].key);
+            }
+    }
+    for (long r = 0; c && r < t->nrows; r++)
+        free(c[r].key);
+    free(c);
+    return rc == GW_ENOMEM ? gw_err_set(err, rc, "%s: out of memory", t->path) : rc;
+}
+
 /* Whole-table checks: a case number appears once (a table stitched from two
  * runs would count its points twice), and a bouncing point carries its e_n, e
  * and alpha_r (a NaN there would drop out of the means while the point still
@@ -237,6 +304,9 @@ static int check_rows(const gw_stats_table *t, gw_err *err)
     if (dup >= 0)
         return gw_err_set(err, GW_EFORMAT, "%s: case %ld appears more than once (a table of one sweep holds each case once)",
                           t->path, dup);
+    int rc = check_combinations(t, err);
+    if (rc != GW_OK)
+        return rc;
     const int cb = gw_stats_table_col(t, "bounced");
     /* a bouncing row has its first free-flight maximum; e_n, e, alpha_r (taken
      * at T_f) are NaN when the run ended before T_f. Tables before e_n_first

@@ -98,6 +98,18 @@ static int split_values(const char *value, gw_sweep_key *k, char *msg, size_t ml
         snprintf(msg, mlen, "%s: empty value in list '%s'", k->name, value);
         return 0;
     }
+    /* a value listed twice runs the same case twice: the table then holds a
+     * combination twice and its statistics count it twice ("1, 1.0" too) */
+    for (int i = 0; k->values && i < k->nvalues; i++)
+        for (int j = 0; j < i; j++) {
+            char *ei, *ej;
+            double vi = strtod(k->values[i], &ei), vj = strtod(k->values[j], &ej);
+            if (strcmp(k->values[i], k->values[j]) == 0 || (!*ei && !*ej && ei != k->values[i] && vi == vj)) {
+                snprintf(msg, mlen, "%s: '%s' and '%s' in list '%s' are the same value (each case would run "
+                         "twice)", k->name, k->values[j], k->values[i], value);
+                return 0;
+            }
+        }
     return k->values != NULL;
 }
 

@@ -131,6 +131,8 @@ def _text(p, value):
     if isinstance(value, os.PathLike):
         value = os.fspath(value)
     if isinstance(value, str):
+        if "\0" in value:  # C would read up to the NUL: another file, silently
+            raise GranwaveValueError(f"{p.keyword}: {value!r} holds a NUL character", GW_EINVAL)
         return value
     if p.type == FLAG:
         if isinstance(value, (bool, np.bool_)) or value in (0, 1):
@@ -291,8 +293,8 @@ def sweep_models():
 
 def _ini_value(key, v):
     s = _text_plain(v)
-    if any(c in s for c in "\n\r;#") or not s.strip():
-        raise ValueError(f"{key}: value {s!r} cannot go into a sweep (empty, or holds ';', '#' or a newline)")
+    if any(c in s for c in "\n\r;#\0") or not s.strip():
+        raise ValueError(f"{key}: value {s!r} cannot go into a sweep (empty, or holds ';', '#', NUL or a newline)")
     return s
 
 

@@ -1,0 +1,159 @@
+#!/bin/bash
+# test_hostile_layer.sh GRANWAVE SRCDIR: what a hostile pass over the layer
+# commands found, each asserted by its behaviour (exit code, one stderr line
+# naming the input, nothing written, no hang, no sanitizer report):
+#  1 sample scales: a sample's R_m lies in layer-make's rm range [1e-5, 1e3] m,
+#    its width and heights within 1e6 R_m and its radii within [1e-3, 1e3] R_m
+#    (a 1e-10 m sample ran for minutes, a particle at y = 1e12 m closed the
+#    ledger to 0.34 only, R_m = 1e-300 m failed naming no input);
+#  2 layer-impact's work bound counts the listed contacts besides the
+#    particles (a skin of 0.1 m on a sample of R_m = 3.25e-5 m lists every pair:
+#    a default impact of about 45 minutes was let through);
+#  3 layer-make: a t-max below the 0.01 s settling chunk runs to t-max (it ran
+#    no step); a pile still in the air is not "converged" (gravity 1e-9 m/s^2
+#    was, at 0.1 s); a step above half the pile's shortest contact is refused
+#    (rm 1e-4 m at the default 2e-5 s ran for minutes or blew up); a pile that
+#    sinks through a wall fails naming the cause, not the output file;
+#  4 layer-stats refuses two cases with the same grid values and a grid value
+#    nan; a sweep refuses a value listed twice, `points` without a `point`
+#    key (every case ran point 0, off x) and `spacing` with one point;
+#  5 options without effect: layer-impact --dt with cvode or arkode (their
+#    steps come from the tolerances), layer-stats --fit, --gamma-deg and
+#    --delta-rm on a table without a bouncing diagram.
+set -u
+GW=$1
+SRC=${2:-.}
+tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
+fails=0; passes=0
+ok() { echo "PASS: $1"; passes=$((passes+1)); }
+ko() { echo "FAIL: $1"; fails=$((fails+1)); }
+
+# refused WHAT PATTERN CMD...: exit 2 within 20 s, exactly one stderr line that
+# matches PATTERN, no sanitizer report, nothing at $tmp/o
+refused() {
+    local what=$1 pat=$2; shift 2
+    rm -rf "$tmp/o"
+    timeout -s KILL 20 "$GW" "$@" >"$tmp/stdout" 2>"$tmp/stderr" </dev/null
+    local rc=$?
+    if [ $rc -ne 2 ]; then ko "$what: exit $rc, expected 2 ($(head -c 300 "$tmp/stderr"))"; return; fi
+    if [ "$(wc -l <"$tmp/stderr")" -ne 1 ]; then ko "$what: $(wc -l <"$tmp/stderr") stderr lines"; cat "$tmp/stderr"; return; fi
+    if ! grep -qE -- "$pat" "$tmp/stderr"; then ko "$what: message does not match '$pat': $(cat "$tmp/stderr")"; return; fi
+    if grep -qE 'Sanitizer|runtime error' "$tmp/stderr"; then ko "$what: sanitizer report"; return; fi
+    if [ -e "$tmp/o" ]; then ko "$what: wrote $tmp/o ($(ls "$tmp/o" 2>/dev/null | tr '\n' ' '))"; return; fi
+    ok "$what"
+}
+# runs WHAT CMD...: exit 0 within 120 s, no sanitizer report
+runs() {
+    local what=$1; shift
+    timeout -s KILL 120 "$GW" "$@" >"$tmp/stdout" 2>"$tmp/stderr" </dev/null
+    local rc=$?
+    if [ $rc -ne 0 ]; then ko "$what: exit $rc ($(head -c 300 "$tmp/stderr"))"; return 1; fi
+    if grep -qE 'Sanitizer|runtime error' "$tmp/stderr"; then ko "$what: sanitizer report"; return 1; fi
+    ok "$what"
+}
+jnum() { sed -n "s/^[[:space:]]*\"$1\":[[:space:]]*\([^,]*\),*$/\1/p" "$2" | head -1; }
+
+# --- 1: sample scales -------------------------------------------------------
+S300=$SRC/data/measured/restitution_full/sample.txt
+# scale K: every length of the 300-disc sample times K (width, rm, x, y, r)
+scale() {
+    awk -v k="$1" 'BEGIN{body=0}
+        body {printf "%.17g %.17g %.17g\n", $1*k, $2*k, $3*k; next}
+        /^width |^rm / {printf "%s %.17g\n", $1, $2*k; next}
+        /^n / {body=1} {print}' "$S300" >"$2"
+}
+scale 1e-10 "$tmp/s_1e-10.txt"
+refused "a sample of R_m = 3.25e-11 m (a 1e-10 scale; it ran for minutes)" \
+    "sample '.*s_1e-10.txt': rm 3.25e-11 m is outside \[1e-05, 1000\] m" \
+    layer-impact --sample "$tmp/s_1e-10.txt" --t-max 0.003 --out "$tmp/o"
+sed 's/^rm .*/rm 1e-300/' "$S300" >"$tmp/s_rm.txt"
+refused "a sample with rm 1e-300 (it failed inside the solver)" "rm 1e-300 m is outside" \
+    layer-impact --sample "$tmp/s_rm.txt" --t-max 0.003 --out "$tmp/o"
+sed 's/^width .*/width 1e300/' "$S300" >"$tmp/s_w.txt"
+refused "a sample 1e300 m wide" "width 1e\+300 m is above 1e\+06 R_m" \
+    layer-impact --sample "$tmp/s_w.txt" --t-max 0.003 --out "$tmp/o"
+awk 'p==1 {print "8.125 1e12 0.3"; p=2; next} /^n / {p=1} {print}' "$S300" >"$tmp/s_y.txt"
+refused "a particle at y = 1e12 m (the ledger closed to 0.34)" "line [0-9]+: y = 1e\+12 m is above 1e\+06 R_m" \
+    layer-impact --sample "$tmp/s_y.txt" --t-max 0.003 --out "$tmp/o"
+awk 'p==1 {print "0.5 20 1e-9"; p=2; next} /^n / {p=1} {print}' "$S300" >"$tmp/s_r.txt"
+refused "a disc of 1e-9 m in a sample of R_m = 0.325 m" "radius 1e-09 m is outside \[0.001, 1000\] R_m" \
+    layer-impact --sample "$tmp/s_r.txt" --t-max 0.003 --out "$tmp/o"
+scale 1e-2 "$tmp/s_1e-2.txt"
+runs "the sample scaled to R_m = 3.25 mm still runs" layer-impact --sample "$tmp/s_1e-2.txt" --t-max 2e-4 --dt-out 2e-6 --skin 1e-3
+
+# --- 2: the work bound counts the listed contacts -----------------------------
+scale 1e-4 "$tmp/s_1e-4.txt"
+refused "a default impact on R_m = 3.25e-5 m with the 0.1 m skin (every pair listed)" \
+    "dt: .* 301 particles and [0-9]{5} listed contacts .* more than 1e10 \(raise dt, lower t-max or the skin\)" \
+    layer-impact --sample "$tmp/s_1e-4.txt" --out "$tmp/o"
+runs "the same sample with a skin of its size" layer-impact --sample "$tmp/s_1e-4.txt" --skin 3e-6 --t-max 1e-4 --json
+[ "$(jnum t_end "$tmp/stdout")" = "0.0001" ] && ok "  it ran to t-max" || ko "  t_end $(jnum t_end "$tmp/stdout")"
+
+# --- 3: layer-make -----------------------------------------------------------
+runs "layer-make --t-max 0.005 (below one 0.01 s chunk)" layer-make --n 20 --width-rm 10 --t-max 0.005 --out "$tmp/m1.txt" --json
+st=$(jnum steps "$tmp/stdout"); ts=$(jnum t_settle "$tmp/stdout")
+[ "$st" = "250" ] && [ "$ts" = "0.005" ] && ok "  250 steps of 2e-5 s to t_settle = 0.005 s (it ran none)" ||
+    ko "  steps $st, t_settle $ts (expected 250 and 0.005)"
+runs "layer-make --t-max 0.015 (not a multiple of the chunk)" layer-make --n 20 --width-rm 10 --t-max 0.015 --out "$tmp/m1.txt" --json
+[ "$(jnum steps "$tmp/stdout")" = "750" ] && ok "  750 steps to 0.015 s (it stopped at 0.01 s)" || ko "  steps $(jnum steps "$tmp/stdout")"
+runs "layer-make --gravity 1e-9" layer-make --n 20 --width-rm 10 --gravity 1e-9 --t-max 0.3 --out "$tmp/m2.txt" --json
+[ "$(jnum converged "$tmp/stdout")" = "false" ] && grep -q "did not settle" "$tmp/stderr" &&
+    ok "  a pile still in the air (free fall to the floor takes about 9000 s) is not converged" ||
+    ko "  gravity 1e-9: converged $(jnum converged "$tmp/stdout")"
+rm -f "$tmp/m3.txt"
+refused "layer-make --rm 1e-4 at the default step (unstable: ran for minutes)" \
+    "layer-make --dt: a step of 2e-05 s is above 1/2 of the shortest contact of the pile .* give dt [0-9.e-]+ or less" \
+    layer-make --n 20 --width-rm 10 --rm 1e-4 --t-max 0.05 --out "$tmp/m3.txt"
+[ -e "$tmp/m3.txt" ] && ko "  the refused layer-make wrote its sample"
+refused "layer-make --density 1e-6 at the default step" "layer-make --dt: a step of 2e-05 s is above" \
+    layer-make --n 20 --width-rm 10 --density 1e-6 --out "$tmp/m3.txt"
+refused "layer-make --shear-modulus 1e15 at the default step" "layer-make --dt: a step of 2e-05 s is above" \
+    layer-make --n 20 --width-rm 10 --shear-modulus 1e15 --out "$tmp/m3.txt"
+runs "layer-make --rm 1e-4 with a step it resolves" layer-make --n 20 --width-rm 10 --rm 1e-4 --dt 2e-6 --t-max 0.05 --out "$tmp/m3.txt"
+timeout -s KILL 60 "$GW" layer-make --n 60 --width-rm 12 --shear-modulus 1e-3 --t-max 0.3 --out "$tmp/m4.txt" \
+    >"$tmp/stdout" 2>"$tmp/stderr" </dev/null; rc=$?
+if [ $rc -eq 1 ] && [ "$(wc -l <"$tmp/stderr")" -eq 1 ] && [ ! -e "$tmp/m4.txt" ] &&
+   grep -q "did not settle into a valid sample.*too soft for their load" "$tmp/stderr" && ! grep -q -- "--out" "$tmp/stderr"; then
+    ok "layer-make of discs sinking through the floor: exit 1 naming the cause, nothing written"
+else
+    ko "layer-make --shear-modulus 1e-3: exit $rc, $(cat "$tmp/stderr")"
+fi
+
+# --- 4: tables and sweep configs ---------------------------------------------
+R=$SRC/data/measured/layer_walls/results.csv
+awk -F, 'BEGIN{OFS=","} /^#/ || /^case/ {print; next} {if ($2 == "1.5") $2 = "1"; print}' "$R" >"$tmp/dupgrid.csv"
+refused "layer-stats: two cases with the same grid values (two sweeps stitched)" \
+    "dupgrid.csv: cases 0 and 10 ran the same grid values \(rb-rm = 1, remove-walls = 0, point = 0\)" \
+    layer-stats "$tmp/dupgrid.csv" --out "$tmp/o"
+awk -F, 'BEGIN{OFS=","} /^#/ || /^case/ {print; next} {if ($1 == "3") $2 = "nan"; print}' "$R" >"$tmp/nangrid.csv"
+refused "layer-stats: a grid value nan" "nangrid.csv:[0-9]+: grid key rb-rm: 'nan' is not a finite number" \
+    layer-stats "$tmp/nangrid.csv" --out "$tmp/o"
+runs "layer-stats on the stored table" layer-stats "$R" --json
+S=$tmp/s_1e-2.txt
+printf '[sweep]\nmodel = layer\n[grid]\nvi = 10, 10.0\n[params]\nsample = %s\nt-max = 0.003\n' "$S" >"$tmp/d.ini"
+refused "sweep: a value listed twice (1 and 1.0)" "d.ini:4: vi: '10' and '10.0' in list '10, 10.0' are the same value" \
+    sweep "$tmp/d.ini" --out "$tmp/o"
+printf '[sweep]\nmodel = layer\n[grid]\nvi = 10, 20\n[params]\nsample = %s\npoints = 5\nt-max = 0.003\n' "$S" >"$tmp/p.ini"
+refused "sweep: points = 5 without a point key (every case ran point 0, 0.1 m left of x)" \
+    "case 0: points: 5 points but no key point: every case would run point 0 alone, 0.1 m left of x" \
+    sweep "$tmp/p.ini" --out "$tmp/o"
+printf '[sweep]\nmodel = layer\n[grid]\nvi = 10, 20\n[params]\nsample = %s\nspacing = 0.1\nt-max = 0.003\n' "$S" >"$tmp/sp.ini"
+refused "sweep: spacing with one impact point" "case 0: spacing: has no effect with one impact point" \
+    sweep "$tmp/sp.ini" --out "$tmp/o"
+printf '[sweep]\nmodel = layer\n[grid]\nvi = 10, 20\n[params]\nsample = %s\npoint = 1\npoints = 3\nt-max = 0.003\n' "$S" >"$tmp/p1.ini"
+runs "sweep: one fixed point of three in [params] is accepted" sweep "$tmp/p1.ini" --out "$tmp/p1" --check
+
+# --- 5: options without effect ----------------------------------------------
+refused "layer-impact --solver cvode --dt 1e-6 (ignored)" "layer-impact --dt: has no effect with the cvode solver" \
+    layer-impact --sample "$S" --solver cvode --dt 1e-6 --t-max 1e-4 --out "$tmp/o"
+refused "layer-impact --solver arkode --dt 1e-6 (ignored)" "layer-impact --dt: has no effect with the arkode solver" \
+    layer-impact --sample "$S" --solver arkode --dt 1e-6 --t-max 1e-4 --out "$tmp/o"
+runs "layer-impact --exact --dt 1e-6 (rk4's step) is accepted" layer-impact --sample "$S" --exact --dt 1e-6 --t-max 1e-5 --skin 1e-3
+for opt in "--delta-rm 0.5" "--gamma-deg 1" "--fit beta"; do
+    refused "layer-stats $opt on a table without a diagram (ignored)" \
+        "layer-stats ${opt%% *}: has no effect: the table has no bouncing diagram" layer-stats "$R" $opt --out "$tmp/o"
+done
+runs "layer-stats --delta-rm on a diagram table" layer-stats "$SRC/data/measured/layer_diagram/results.csv" --delta-rm 0.5 --json
+
+echo "test_hostile_layer: $passes passed, $fails failed"
+[ $fails -eq 0 ]

@@ -1,0 +1,102 @@
+#!/bin/bash
+# test_hostile_chain.sh GRANWAVE SRCDIR: what a hostile pass over the chain
+# commands (chain, falcon, wavespeed, softwall, dispersion, drop, a chain sweep)
+# found beyond test_cli_refusals.sh, each asserted by its behaviour (exit code,
+# one stderr line naming the input, nothing written, no hang, no sanitizer
+# report) or by the values the run prints:
+#  1 options that had no effect in their combination, now refused: --radius with
+#    --radii, --wall-material with a sheet (the sheet is the wall; the sensor's
+#    material enters only sheet none under a law other than fitted), --material with
+#    --mass, --k and the wall's coefficient all given (the run ignored them and
+#    recorded them in its settings).
+#  2 a silent wrong answer: with --radii the reported k, T_q and K_c came from
+#    --radius (4 mm by default), not from the beads; they now equal those of
+#    --radius R for equal radii R.
+set -u
+GW=$1
+SRC=${2:-.}
+PY=/usr/bin/python3
+tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
+fails=0; passes=0
+ok() { echo "PASS: $1"; passes=$((passes+1)); }
+ko() { echo "FAIL: $1"; fails=$((fails+1)); }
+
+# refused WHAT PATTERN CMD...: exit 2 within 20 s, exactly one stderr line that
+# matches PATTERN, no sanitizer report, nothing in $tmp/o
+refused() {
+    local what=$1 pat=$2; shift 2
+    rm -rf "$tmp/o"
+    timeout -s KILL 20 "$GW" "$@" >"$tmp/stdout" 2>"$tmp/stderr" </dev/null
+    local rc=$?
+    if [ $rc -ne 2 ]; then ko "$what: exit $rc, expected 2 ($(head -c 200 "$tmp/stderr"))"; return; fi
+    if [ "$(wc -l <"$tmp/stderr")" -ne 1 ]; then ko "$what: $(wc -l <"$tmp/stderr") stderr lines"; cat "$tmp/stderr"; return; fi
+    if ! grep -qE -- "$pat" "$tmp/stderr"; then ko "$what: message does not match '$pat': $(cat "$tmp/stderr")"; return; fi
+    if grep -qE 'Sanitizer|runtime error' "$tmp/stderr"; then ko "$what: sanitizer report"; return; fi
+    if [ -e "$tmp/o" ]; then ko "$what: wrote $tmp/o ($(ls "$tmp/o" 2>/dev/null | tr '\n' ' '))"; return; fi
+    [ -s "$tmp/stdout" ] && { ko "$what: printed on stdout"; return; }
+    ok "$what"
+}
+
+# runs WHAT FILE CMD...: exit 0 within 60 s, no sanitizer report, stdout (JSON) in FILE
+runs() {
+    local what=$1 file=$2; shift 2
+    timeout -s KILL 60 "$GW" "$@" >"$file" 2>"$tmp/stderr" </dev/null
+    local rc=$?
+    if [ $rc -ne 0 ]; then ko "$what: exit $rc ($(head -c 300 "$tmp/stderr"))"; return 1; fi
+    if grep -qE 'Sanitizer|runtime error' "$tmp/stderr"; then ko "$what: sanitizer report"; return 1; fi
+    return 0
+}
+
+# jcheck WHAT FILE PYEXPR: PYEXPR (over the JSON object j) is true
+jcheck() {
+    local what=$1 file=$2 expr=$3
+    if "$PY" -c "import json,math,sys; j=json.load(open(sys.argv[1])); sys.exit(0 if ($expr) else 1)" "$file" 2>"$tmp/pyerr"; then
+        ok "$what"
+    else
+        ko "$what: not ($expr) $(head -c 200 "$tmp/pyerr")"
+    fi
+}
+
+# --- 1: options without effect in the combination
+refused "chain --radius with --radii (bead 1's radius is radii's first)" 'chain --radius: has no effect with radii' \
+    chain --n 2 --radii 4e-3,4e-3 --radius 5e-3 --out "$tmp/o"
+refused "chain --wall-material with a fitted sheet" 'chain --wall-material: has no effect with sheet brass under sheet-law fitted' \
+    chain --n 2 --sheet brass --wall-material glass --out "$tmp/o"
+refused "chain --material with --mass, --k and --kwall" 'chain --material: has no effect with mass, k' \
+    chain --n 2 --material glass --mass 1e-3 --k 1e9 --kwall 1e9 --out "$tmp/o"
+refused "softwall --material with --mass and --k (softwall's wall is --kwall)" 'softwall --material: has no effect' \
+    softwall --n 1:3 --material glass --mass 1e-3 --k 1e9 --out "$tmp/o"
+printf '[sweep]\nmodel = chain\n[grid]\nn = 1:2\n[params]\nsheet = brass\nwall-material = glass\n' >"$tmp/sheetwm.ini"
+refused "a chain sweep with a fitted sheet and a wall material" 'wall-material: has no effect' \
+    sweep "$tmp/sheetwm.ini" --out "$tmp/o" --quiet
+refused "chain --wall-material under a sheet law other than fitted (the sheet is the wall)" \
+    'chain --wall-material: has no effect with sheet brass under sheet-law hertz' \
+    chain --n 2 --sheet brass --sheet-law hertz --wall-material glass --out "$tmp/o"
+# where they do have an effect they still run, and change the result
+runs "chain --wall-material with sheet none under sheet-law hertz runs" "$tmp/a.json" chain --n 2 --sheet none --sheet-law hertz --wall-material glass --json &&
+    runs "" "$tmp/b.json" chain --n 2 --sheet none --sheet-law hertz --json &&
+    "$PY" -c "import json,sys; a=json.load(open(sys.argv[1])); b=json.load(open(sys.argv[2])); sys.exit(0 if a['f_max'] < 0.95 * b['f_max'] else 1)" "$tmp/a.json" "$tmp/b.json" &&
+    ok "chain --wall-material glass lowers F_max on the bare sensor under sheet-law hertz" ||
+    ko "chain --wall-material on the bare sensor under sheet-law hertz: no effect"
+runs "chain --material with --mass and --k (K from the materials) runs" "$tmp/a.json" chain --n 2 --material glass --mass 1e-3 --k 1e9 --json &&
+    jcheck "  its K is glass-on-steel's, not steel's" "$tmp/a.json" "abs(j['settings']['model']['kwall'] - 9.858327626566e9) > 1e8"
+
+# --- 2: --radii reported the k, T_q and K_c of --radius
+if runs "chain --radii 1e-3,1e-3" "$tmp/r.json" chain --n 2 --radii 1e-3,1e-3 --json &&
+   runs "chain --radius 1e-3" "$tmp/s.json" chain --n 2 --radius 1e-3 --json; then
+    "$PY" - "$tmp/r.json" "$tmp/s.json" <<'EOF' && ok "chain --radii R,R reports the k, T_q and K_c of --radius R (and the same F_max)" || ko "chain --radii R,R and --radius R differ"
+import json, sys
+r, s = (json.load(open(f)) for f in sys.argv[1:3])
+def rel(a, b): return abs(a / b - 1)
+ok = rel(r['settings']['model']['k'], s['settings']['model']['k']) < 1e-12
+ok &= rel(r['closed_forms']['t_q'], s['closed_forms']['t_q']) < 1e-12
+ok &= rel(r['closed_forms']['k_c'], s['closed_forms']['k_c']) < 1e-12
+ok &= rel(r['f_max'], s['f_max']) < 1e-9
+# k of two 1 mm steel beads (F.12): (sqrt(2R)/3) E/(1-nu^2), E = 21.6e10, nu = 0.276
+ok &= rel(r['settings']['model']['k'], (2e-3) ** 0.5 / 3 * 21.6e10 / (1 - 0.276 ** 2)) < 1e-9
+sys.exit(0 if ok else 1)
+EOF
+fi
+
+echo "test_hostile_chain: $passes passed, $fails failed"
+[ $fails -eq 0 ]

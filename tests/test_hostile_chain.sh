@@ -12,6 +12,9 @@
 #  2 a silent wrong answer: with --radii the reported k, T_q and K_c came from
 #    --radius (4 mm by default), not from the beads; they now equal those of
 #    --radius R for equal radii R.
+#  3 unbounded work: drop --dt-max 1e-11 or --solver rk4 --dt 1e-12 ran for
+#    minutes (1e8, 1e9 steps to t-max 1 ms); the drop's steps are bounded over
+#    t-max as a collision's are (1e8), before --out is made.
 set -u
 GW=$1
 SRC=${2:-.}
@@ -97,6 +100,16 @@ ok &= rel(r['settings']['model']['k'], (2e-3) ** 0.5 / 3 * 21.6e10 / (1 - 0.276 
 sys.exit(0 if ok else 1)
 EOF
 fi
+
+# --- 3: the drop's steps bounded over t-max
+refused "drop --dt-max 1e-11 (1e8 steps to t-max 1 ms)" 'drop --dt-max: a step of 1e-11 s needs about 1e\+08 steps over t-max' \
+    drop --n 3 --dt-max 1e-11 --t-max 1e-3 --out "$tmp/o"
+refused "drop --solver rk4 --dt 1e-12 (1e9 steps)" 'drop --dt: a step of 1e-12 s needs about 1e\+09 steps over t-max' \
+    drop --n 3 --solver rk4 --dt 1e-12 --t-max 1e-3 --out "$tmp/o"
+refused "drop --solver arkode --dt-max 1e-12" 'drop --dt-max: a step of 1e-12 s' \
+    drop --n 3 --solver arkode --dt-max 1e-12 --t-max 1e-3 --out "$tmp/o"
+runs "drop --solver rk4 --dt 1e-10 --t-max 1e-3 (1e7 steps) runs" "$tmp/d.json" drop --n 3 --solver rk4 --dt 1e-10 --t-max 1e-3 --json &&
+    jcheck "  and finds its impact" "$tmp/d.json" "j['n_impacts'] >= 1"
 
 echo "test_hostile_chain: $passes passed, $fails failed"
 [ $fails -eq 0 ]

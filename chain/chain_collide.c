@@ -196,6 +196,23 @@ static void on_roots(run_state *st, double t, const double *y, const int *roots)
     }
 }
 
+/* Bead 1 off the wall and separating from it; with a sensor body (which
+ * oscillates on its spring, x_s between -A and A, A^2 = x_s^2 + m_s v_s^2 / k_s,
+ * A falling with its damping) also moving away and beyond its reach. */
+static int wall_finished(const run_state *st, const double *y, double dtol)
+{
+    if (st->closed[0] || gw_chain_wall_gap_rate(st->c, y) > 0 || gw_chain_wall_gap(st->c, y) > dtol)
+        return 0;
+    long is = gw_chain_sensor_index(st->c);
+    if (is >= 0) {
+        const gw_chain_sensor *s = &gw_chain_get_params(st->c)->sensor;
+        double xs = y[is], vs = y[is + 1], a = sqrt(xs * xs + s->mass * vs * vs / s->stiffness);
+        if (y[1] > 0 || y[0] > -a)
+            return 0;
+    }
+    return 1;
+}
+
 /* Every contact open (by its events and by its geometry, so that a contact the
  * root finder missed still counts) and every neighbour pair separating. */
 static int finished(const run_state *st, const double *y, double dtol)
@@ -204,7 +221,7 @@ static int finished(const run_state *st, const double *y, double dtol)
     for (int k = 0; k < n; k++)
         if (st->closed[k])
             return 0;
-    if (gw_chain_wall_gap_rate(st->c, y) > 0 || gw_chain_wall_gap(st->c, y) > dtol)
+    if (!wall_finished(st, y, dtol))
         return 0;
     for (int i = 0; i < n - 1; i++)
         if (y[2 * i + 2] - y[2 * i] > dtol)
@@ -379,6 +396,7 @@ int gw_chain_collide(const gw_chain *c, const gw_chain_run_opts *o, gw_chain_res
     rc = gw_solver_drive(s, &drive, &t, y, roots, err);
 stopped:
     r->t_end = t;
+    r->wall_done = r->converged || wall_finished(&st, y, st.dtol);
     finish_result(&st, y);
     gw_solver_get_stats(s, &r->stats);
 done:

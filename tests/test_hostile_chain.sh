@@ -15,6 +15,15 @@
 #  3 unbounded work: drop --dt-max 1e-11 or --solver rk4 --dt 1e-12 ran for
 #    minutes (1e8, 1e9 steps to t-max 1 ms); the drop's steps are bounded over
 #    t-max as a collision's are (1e8), before --out is made.
+#  4 a silent wrong answer: a light sensor body on a soft spring (1 g on 1e3
+#    N/m) moves away from bead 1 faster than the beads, and the collision was
+#    declared over at that instant ("converged", eps_eff -0.78: the column still
+#    moving toward the sensor, which comes back); bead 1 must now also move away
+#    and lie beyond the sensor's reach (its amplitude from its energy). A run
+#    that had not ended at t_max exited 0 with nothing said outside the JSON;
+#    chain, falcon and wavespeed now warn on one stderr line (and record
+#    converged / wall_done, "unfinished" in the studies), softwall when bead 1
+#    was still at the wall (its F_max and tau_max).
 set -u
 GW=$1
 SRC=${2:-.}
@@ -110,6 +119,36 @@ refused "drop --solver arkode --dt-max 1e-12" 'drop --dt-max: a step of 1e-12 s'
     drop --n 3 --solver arkode --dt-max 1e-12 --t-max 1e-3 --out "$tmp/o"
 runs "drop --solver rk4 --dt 1e-10 --t-max 1e-3 (1e7 steps) runs" "$tmp/d.json" drop --n 3 --solver rk4 --dt 1e-10 --t-max 1e-3 --json &&
     jcheck "  and finds its impact" "$tmp/d.json" "j['n_impacts'] >= 1"
+
+# --- 4: the end of a collision on a sensor body; unfinished runs said
+if runs "chain on a 1 g sensor on 1e3 N/m at the default t_max" "$tmp/u.json" chain --n 3 --sensor-mass 1e-3 --sensor-stiffness 1e3 --json; then
+    jcheck "  not declared over (converged false, wall_done false)" "$tmp/u.json" "j['converged'] is False and j['wall_done'] is False"
+    grep -q "^granwave chain: warning: the collision had not ended at t_max = .* (bead 1 still at the wall)" "$tmp/stderr" &&
+        [ "$(wc -l <"$tmp/stderr")" -eq 1 ] && ok "  one warning line on stderr" || ko "  no warning: $(cat "$tmp/stderr")"
+fi
+if runs "the same to t_max 50 ms" "$tmp/v.json" chain --n 3 --sensor-mass 1e-3 --sensor-stiffness 1e3 --t-max 0.05 --json; then
+    # the column rebounds: every bead moves away (final velocities < 0), eps_eff in (0, 1]
+    jcheck "  ends: converged, eps_eff in (0, 1], every bead moving away" "$tmp/v.json" \
+        "j['converged'] is True and 0 < j['eps_eff'] <= 1 + 1e-9 and max(j['final_velocities']) < 0"
+    [ ! -s "$tmp/stderr" ] && ok "  no warning when it ended" || ko "  warned although it ended: $(cat "$tmp/stderr")"
+fi
+if runs "a 3 g sensor on 2e9 N/m (docs/sheets.md) ends as before" "$tmp/w.json" chain --n 10 --sensor-mass 3e-3 --sensor-stiffness 2e9 --json; then
+    jcheck "  converged, eps_eff 0.92 (0.9211 measured)" "$tmp/w.json" "j['converged'] is True and abs(j['eps_eff'] - 0.9211) < 2e-3"
+fi
+if runs "falcon on the soft sensor" "$tmp/f.json" falcon --n 1:4 --heights none --sensor-mass 1e-3 --sensor-stiffness 1e3 --quiet --json; then
+    jcheck "  records 4 unfinished collisions" "$tmp/f.json" "j['unfinished'] == 4"
+    grep -q "^granwave falcon: warning: 4 of 4 collisions had not ended at t_max" "$tmp/stderr" && ok "  and says so" || ko "  falcon did not warn: $(cat "$tmp/stderr")"
+fi
+runs "falcon on the rigid wall" "$tmp/f.json" falcon --n 1:6 --heights none --quiet --json &&
+    jcheck "  no unfinished collision" "$tmp/f.json" "j['unfinished'] == 0" && { [ ! -s "$tmp/stderr" ] && ok "  and no warning" || ko "  warned: $(cat "$tmp/stderr")"; }
+if runs "softwall on the soft sensor" "$tmp/s.json" softwall --n 1:3 --sensor-mass 1e-3 --sensor-stiffness 1e3 --quiet --json; then
+    jcheck "  records 3 collisions still at the wall" "$tmp/s.json" "j['unfinished'] == 3"
+    grep -q "^granwave softwall: warning: 3 of 3 collisions were still at the wall at t_max" "$tmp/stderr" && ok "  and says so" || ko "  softwall did not warn: $(cat "$tmp/stderr")"
+fi
+# the default soft wall (K = 1e9): long columns keep colliding inside after bead 1
+# left the wall; F_max and tau_max are final, so no warning
+runs "softwall at its defaults" "$tmp/s.json" softwall --quiet --json &&
+    jcheck "  no collision still at the wall" "$tmp/s.json" "j['unfinished'] == 0" && { [ ! -s "$tmp/stderr" ] && ok "  and no warning" || ko "  warned: $(cat "$tmp/stderr")"; }
 
 echo "test_hostile_chain: $passes passed, $fails failed"
 [ $fails -eq 0 ]

@@ -24,6 +24,11 @@
 #    chain, falcon and wavespeed now warn on one stderr line (and record
 #    converged / wall_done, "unfinished" in the studies), softwall when bead 1
 #    was still at the wall (its F_max and tau_max).
+#  5 dispersion: with --column-n the dispersion study's options (--n, --f0,
+#    --ends, --t-samples, --dt-out, --steps-per-sample, --amp, --seed,
+#    --min-bins) were ignored, and --vimp without --column-n; refused now, in the
+#    library (a Python call too). A run that resolved no wavenumber reported
+#    "ridge max rel err 0.00e+00"; the error is NaN (JSON null) then.
 set -u
 GW=$1
 SRC=${2:-.}
@@ -149,6 +154,24 @@ fi
 # left the wall; F_max and tau_max are final, so no warning
 runs "softwall at its defaults" "$tmp/s.json" softwall --quiet --json &&
     jcheck "  no collision still at the wall" "$tmp/s.json" "j['unfinished'] == 0" && { [ ! -s "$tmp/stderr" ] && ok "  and no warning" || ko "  warned: $(cat "$tmp/stderr")"; }
+
+# --- 5: dispersion's two modes
+for flag in "--n 16" "--f0 5" "--ends fixed" "--t-samples 64" "--dt-out 1e-6" "--steps-per-sample 4" "--amp 1e-2" "--seed 4" "--min-bins 3"; do
+    refused "dispersion --column-n 3 $flag (no effect on the column)" "^granwave dispersion ${flag%% *}: has no effect with column-n" \
+        dispersion --column-n 3 $flag --out "$tmp/o"
+done
+refused "dispersion --vimp without --column-n" '^granwave dispersion --vimp: has no effect without column-n' \
+    dispersion --n 16 --t-samples 64 --vimp 0.5 --out "$tmp/o"
+refused "dispersion --column-n with rk4 tolerances: named once" '^granwave dispersion --rtol: has no effect with the fixed-step' \
+    dispersion --column-n 3 --solver rk4 --rtol 1e-6 --out "$tmp/o"
+runs "dispersion --column-n 20 --vimp 0.5 --solver cvode --fftw-measure (the column's own options)" "$tmp/c.json" \
+    dispersion --column-n 20 --vimp 0.5 --solver cvode --fftw-measure --json &&
+    jcheck "  its spectrum peak within 5 % of 1/P" "$tmp/c.json" "abs(j['f_peak_rel_diff']) < 0.05 and j['v_imp'] == 0.5"
+if runs "dispersion sampled too finely to resolve a ridge (dt-out 1e-6 s, 64 samples)" "$tmp/d.json" dispersion --n 16 --t-samples 64 --dt-out 1e-6 --json; then
+    jcheck "  nothing resolved: the ridge error is null, not 0" "$tmp/d.json" "j['n_resolved'] == 0 and j['ridge_max_rel_err'] is None"
+fi
+runs "dispersion at its sampling" "$tmp/d.json" dispersion --n 16 --t-samples 64 --json &&
+    jcheck "  resolved: a ridge error below 1 %" "$tmp/d.json" "j['n_resolved'] >= 5 and 0 < j['ridge_max_rel_err'] < 0.01"
 
 echo "test_hostile_chain: $passes passed, $fails failed"
 [ $fails -eq 0 ]

@@ -146,7 +146,7 @@ if runs "falcon on the soft sensor" "$tmp/f.json" falcon --n 1:4 --heights none 
 fi
 runs "falcon on the rigid wall" "$tmp/f.json" falcon --n 1:6 --heights none --quiet --json &&
     jcheck "  no unfinished collision" "$tmp/f.json" "j['unfinished'] == 0" && { [ ! -s "$tmp/stderr" ] && ok "  and no warning" || ko "  warned: $(cat "$tmp/stderr")"; }
-# (rk4: cvode takes 24 s of CPU on this sensor, see the report)
+# (rk4: cvode took 24 s of CPU on this light sensor, resolving its oscillation)
 if runs "softwall on the soft sensor (rk4)" "$tmp/s.json" softwall --n 1:3 --sensor-mass 1e-3 --sensor-stiffness 1e3 --solver rk4 --quiet --json; then
     jcheck "  records 3 collisions still at the wall" "$tmp/s.json" "j['unfinished'] == 3"
     grep -q "^granwave softwall: warning: 3 of 3 collisions were still at the wall at t_max" "$tmp/stderr" && ok "  and says so" || ko "  softwall did not warn: $(cat "$tmp/stderr")"

@@ -20,6 +20,7 @@
 #include <string.h>
 
 #include "gw_chain.h"
+#include "chain_model.h"
 
 gw_chain_run_opts gw_chain_run_opts_default(void)
 {
@@ -195,6 +196,23 @@ static void on_roots(run_state *st, double t, const double *y, const int *roots)
     }
 }
 
+/* Bead 1 off the wall and separating from it; with a sensor body (which
+ * oscillates on its spring, x_s between -A and A, A^2 = x_s^2 + m_s v_s^2 / k_s,
+ * A falling with its damping) also moving away and beyond its reach. */
+static int wall_finished(const run_state *st, const double *y, double dtol)
+{
+    if (st->closed[0] || gw_chain_wall_gap_rate(st->c, y) > 0 || gw_chain_wall_gap(st->c, y) > dtol)
+        return 0;
+    long is = gw_chain_sensor_index(st->c);
+    if (is >= 0) {
+        const gw_chain_sensor *s = &gw_chain_get_params(st->c)->sensor;
+        double xs = y[is], vs = y[is + 1], a = sqrt(xs * xs + s->mass * vs * vs / s->stiffness);
+        if (y[1] > 0 || y[0] > -a)
+            return 0;
+    }
+    return 1;
+}
+
 /* Every contact open (by its events and by its geometry, so that a contact the
  * root finder missed still counts) and every neighbour pair separating. */
 static int finished(const run_state *st, const double *y, double dtol)
@@ -203,7 +221,7 @@ static int finished(const run_state *st, const double *y, double dtol)
     for (int k = 0; k < n; k++)
         if (st->closed[k])
             return 0;
-    if (gw_chain_wall_gap_rate(st->c, y) > 0 || gw_chain_wall_gap(st->c, y) > dtol)
+    if (!wall_finished(st, y, dtol))
         return 0;
     for (int i = 0; i < n - 1; i++)
         if (y[2 * i + 2] - y[2 * i] > dtol)
@@ -279,6 +297,20 @@ static int collide_after(void *ctx, double t, const double *y, gw_err *err)
     return GW_DRIVE_ON;
 }
 
+/* 1e8 steps: minutes at n = 3; the default RK4 step T_c/400 makes about 800 n
+ * over a collision, so columns up to 1.25e5 beads (a day of CPU already) */
+int chain_steps_check(const gw_solver_type *type, const gw_solver_params *sp, double t_len, const char *over,
+                      gw_err *err)
+{
+    const double max_steps_run = 1e8;
+    const double step = type == gw_solver_rk4 ? fmin(sp->dt, sp->dt_max) : sp->dt_max;
+    if (!(t_len / step <= max_steps_run))
+        return gw_err_set(err, GW_EINVAL, "%s: a step of %g s needs about %.3g steps over %s (about %.3g s); "
+                          "at most %.0e: raise it", type == gw_solver_rk4 && sp->dt <= sp->dt_max ? "dt" : "dt-max",
+                          step, t_len / step, over, t_len, max_steps_run);
+    return GW_OK;
+}
+
 int gw_chain_collide(const gw_chain *c, const gw_chain_run_opts *o, gw_chain_result *r,
                      gw_err *err)
 {
@@ -346,16 +378,9 @@ int gw_chain_collide(const gw_chain *c, const gw_chain_run_opts *o, gw_chain_res
     if (type == gw_solver_rk4 && !(sp.dt > 0))
         sp.dt = tc / (o->steps_per_tc > 0 ? o->steps_per_tc : 400.0);
     /* and at least t_expect / step steps of O(n) each: bounded before the run
-     * (the RK4 step, or the largest step of cvode/arkode). 1e8 steps: minutes
-     * at n = 3; the default RK4 step T_c/400 makes about 800 n, so columns up
-     * to 1.25e5 beads (a day of CPU already) */
-    const double step = type == gw_solver_rk4 ? fmin(sp.dt, sp.dt_max) : sp.dt_max, max_steps_run = 1e8;
-    if (!(t_expect / step <= max_steps_run)) {
-        rc = gw_err_set(err, GW_EINVAL, "%s: a step of %g s needs about %.3g steps over the collision (about %.3g s); "
-                        "at most %.0e: raise it", type == gw_solver_rk4 && sp.dt <= sp.dt_max ? "dt" : "dt-max",
-                        step, t_expect / step, t_expect, max_steps_run);
+     * (the RK4 step, or the largest step of cvode/arkode) */
+    if ((rc = chain_steps_check(type, &sp, t_expect, "the collision", err)) != GW_OK)
         goto done;
-    }
 
     gw_chain_energy e;
     gw_chain_energy_of(c, y, &e);
@@ -371,6 +396,7 @@ int gw_chain_collide(const gw_chain *c, const gw_chain_run_opts *o, gw_chain_res
     rc = gw_solver_drive(s, &drive, &t, y, roots, err);
 stopped:
     r->t_end = t;
+    r->wall_done = r->converged || wall_finished(&st, y, st.dtol);
     finish_result(&st, y);
     gw_solver_get_stats(s, &r->stats);
 done:

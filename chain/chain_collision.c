@@ -39,6 +39,7 @@ static const gw_param collision_fields[] = {
     RD("eps_col", r.eps_col, "", "energy restitution of the column (F.30)"),
     RI("wall_contacts", r.wall_contacts, "separate wall contacts (> 1: re-contact)"),
     RI("converged", r.converged, "1: all contacts open and separating at t_end"),
+    RI("wall_done", r.wall_done, "1: bead 1 off the wall and separating at t_end (f_max, tau_n final)"),
     RD("t_end", r.t_end, "s", "end of the run"),
     RL("events", r.n_events, "contact events located"),
     RL("missed_events", r.missed_events, "contact changes found from the state, not a root"),

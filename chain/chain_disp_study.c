@@ -202,10 +202,34 @@ static int run_column(const gw_chain_dispersion_setup *s, gw_chain_dispersion_ou
     return rc;
 }
 
+/* The two modes' own rows: a row of the other mode set away from its default
+ * would have no effect (the column is the chain command's steel column at
+ * vimp; the dispersion study has no impact). */
+static int disp_unused_check(const gw_chain_dispersion_setup *s, gw_err *err)
+{
+    static const char *const chain_rows[] = {"n", "f0", "ends", "t-samples", "dt-out", "steps-per-sample",
+                                             "amp", "seed", "min-bins"};
+    gw_chain_dispersion_setup d;
+    int rc = gw_chain_dispersion_setup_init(&d);
+    char a[64], b[64];
+    for (size_t i = 0; rc == GW_OK && s->column_n > 0 && i < sizeof chain_rows / sizeof chain_rows[0]; i++) {
+        const gw_param *p = gw_param_find(disp_params, chain_rows[i]);
+        if (gw_param_format(p, s, a, sizeof a) >= 0 && gw_param_format(p, &d, b, sizeof b) >= 0 && strcmp(a, b) != 0)
+            rc = gw_err_set(err, GW_EINVAL, "%s: has no effect with column-n (the column's wall-force spectrum)",
+                            chain_rows[i]);
+    }
+    if (rc == GW_OK && s->column_n == 0 && s->vimp != d.vimp)
+        rc = gw_err_set(err, GW_EINVAL, "vimp: has no effect without column-n (the impact speed of that column)");
+    gw_chain_dispersion_setup_clear(&d);
+    return rc;
+}
+
 int gw_chain_dispersion_run(const gw_chain_dispersion_setup *s, gw_chain_dispersion_outcome *out, gw_err *err)
 {
     memset(out, 0, sizeof *out);
     int rc = gw_param_check(disp_params, s, err);
+    if (rc == GW_OK)
+        rc = disp_unused_check(s, err);
     if (rc != GW_OK)
         return rc;
     double t0 = gw_clock_ms();

@@ -336,8 +336,8 @@ static void disp_analyse(const gw_chain_disp_params *p, fftw_complex *out, int n
             ys[nfit++] = r->omega_ridge[k] / r->qa[k];
         }
     }
-    if (r->n_resolved == 0)
-        r->omega_c_measured = NAN;
+    if (r->n_resolved == 0) /* nothing measured: no error to report either */
+        r->omega_c_measured = r->ridge_max_rel_err = NAN;
     r->omega_c_rel_err = fabs(r->omega_c_measured - wc) / wc;
     /* omega/(qa) = sqrt(kappa/m) (1 - (qa)^2/24 + ...): the intercept against
      * (qa)^2 is the long-wave limit, free of the curvature to O((qa)^4). */

@@ -32,6 +32,7 @@
 #include <string.h>
 
 #include "gw_chain.h"
+#include "chain_model.h"
 
 gw_chain_drop_params gw_chain_drop_params_default(void)
 {
@@ -509,6 +510,10 @@ int gw_chain_drop_run(const gw_chain_drop_params *p, const gw_chain_run_opts *o,
     const gw_solver_type *type = o->solver ? o->solver : gw_solver_cvode;
     if (type == gw_solver_rk4 && !(sp.dt > 0))
         sp.dt = tc / (o->steps_per_tc > 0 ? o->steps_per_tc : 400.0);
+    /* the drop runs to t_max whatever happens: its steps bounded over t_max
+     * (the default RK4 step makes about 4e5 over 10 ms) */
+    if ((rc = chain_steps_check(type, &sp, p->t_max, "t-max", err)) != GW_OK)
+        goto done;
     if ((rc = gw_solver_create(type, &d.sys, &sp, 0.0, y, &s, err)) != GW_OK)
         goto done;
     rc = drop_loop(&st, s, y, roots, err);

@@ -119,6 +119,7 @@ static const gw_param drop_fields[] = {
     RD("first_eps_col", r.first.eps_col, "", "first collision: energy restitution (F.30)"),
     RI("first_wall_contacts", r.first.wall_contacts, "first collision: separate wall contacts"),
     RI("first_converged", r.first.converged, "first collision: 1 = ended at the chain's end"),
+    RI("first_wall_done", r.first.wall_done, "first collision: 1 = bead 1 off the wall and separating at its end"),
     RD("first_t_end", r.first.t_end, "s", "first collision: its end"),
     RL("first_events", r.first.n_events, "first collision: contact events"),
     RL("first_missed_events", r.first.missed_events, "first collision: contact changes found from the state"),

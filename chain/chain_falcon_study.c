@@ -145,6 +145,8 @@ static const gw_param falcon_fields[] = {
     VEL("f_max_max", f_max_max, "N", "largest F_max over N"),
     VEL("tau_max_mean", tau_max_mean, "s", "tau_max averaged over N"),
     VEL("period_mean", period_mean, "s", "P averaged over N >= 10"),
+    {.name = "unfinished", .type = GW_PARAM_INT, .offset = OFF(unfinished), .unit = "",
+     .help = "collisions not ended at t_max (their tau_N and eps are those at t_max)"},
     GW_PARAM_END};
 
 const gw_param *gw_chain_falcon_outcome_fields(void)
@@ -247,6 +249,8 @@ int gw_chain_falcon_run(const gw_chain_falcon_setup *s, gw_progress_fn progress,
         rc = gw_chain_sweep_n_progress(&r.params, &r.run, out->v_imp, nv, (int)s->n[0], (int)s->n[1],
                                        (int)s->jobs, progress, pctx, res, err);
     out->wall_time_s = (gw_clock_ms() - t0) / 1e3;
+    for (int i = 0; rc == GW_OK && i < out->ncase; i++)
+        out->unfinished += !res[i].converged;
     for (int iv = 0; rc == GW_OK && iv < nv; iv++) {
         gw_chain_falcon_fit a;
         const gw_chain_result *rv = &res[iv * nn];

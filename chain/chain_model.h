@@ -54,4 +54,11 @@ int chain_general_rhs_im(double t, const double *y, double *yd, void *P);
 int chain_general_roots(double t, const double *y, double *g, void *P);
 void chain_general_energy(const gw_chain *c, const double *y, gw_chain_energy *e);
 
+/* The run's steps bounded before it starts (chain_collide.c): the RK4 step
+ * (the smaller of dt and dt_max), or cvode's and arkode's largest step dt_max,
+ * may need at most 1e8 steps over t_len seconds; GW_EINVAL naming dt or
+ * dt-max ("... over OVER (about T s)") otherwise. */
+int chain_steps_check(const gw_solver_type *type, const gw_solver_params *sp, double t_len, const char *over,
+                      gw_err *err);
+
 #endif

@@ -128,6 +128,26 @@ static int resolve_model(const gw_chain_setup *s, gw_chain_resolved *r, gw_err *
     if (!isnan(s->kwall) && strcmp(wm->name, "steel") != 0) /* other than the table's default */
         return gw_err_set(err, GW_EINVAL, "wall-material: has no effect with kwall (the wall's Hertz coefficient "
                           "is given)");
+    /* the wall's material is the sensor's: a sheet lies on it and is the wall;
+     * it enters only the bare sensor (sheet none) under a law other than fitted
+     * (fitted is K_eff from the measured tau_max, F.2) and a restitution
+     * calibrated on the bare sensor under such a law */
+    const int fitted = s->sheet_law < 0 || s->sheet_law == GW_SHEET_FITTED;
+    if (s->sheet >= 0 && strcmp(wm->name, "steel") != 0) {
+        const gw_sheet *sh = gw_sheet_find(choice(s, "sheet", name, sizeof name));
+        if (sh && (fitted || (sh->thickness > 0 && isnan(s->restitution))))
+            return gw_err_set(err, GW_EINVAL, "wall-material: has no effect with sheet %s under sheet-law %s (the "
+                              "wall is the sheet; the sensor's material enters only sheet none under the laws hertz, "
+                              "layer and material)", sh->name, gw_sheet_law_name(fitted ? GW_SHEET_FITTED
+                                                                                          : (gw_sheet_law)s->sheet_law));
+    }
+    /* the bead material gives the mass, k and K (and the sheet laws' bead): with
+     * all three given and no law that needs it, it would be ignored */
+    const int wall_given = !isnan(s->kwall) || ((s->sheet >= 0 || s->sheets) && fitted);
+    if (!isnan(s->mass) && !isnan(s->k) && wall_given && s->radii.n == 0 && strcmp(bm->name, "steel") != 0)
+        return gw_err_set(err, GW_EINVAL, "material: has no effect with mass, k and the wall's coefficient given");
+    if (s->radii.n > 0 && s->radius != strtod(gw_param_find(setup_params, "radius")->def, NULL))
+        return gw_err_set(err, GW_EINVAL, "radius: has no effect with radii (bead 1's radius is the first of radii)");
     if (s->sheet >= 0) {
         const gw_sheet *sh = gw_sheet_find(choice(s, "sheet", name, sizeof name));
         if (!sh)
@@ -158,6 +178,9 @@ static int resolve_model(const gw_chain_setup *s, gw_chain_resolved *r, gw_err *
         p->kc = n > 1 ? r->kc : NULL;
         p->mass = r->masses[0];
         p->radius = s->radii.v[0];
+        /* the column's k as its scales see it (T_q, K_c, the time scale): the
+         * first contact's, bead 1 on bead 2 (two beads of radius radii[0] alone) */
+        p->k = n > 1 ? r->kc[0] : gw_hertz_coefficient(p->radius, bm, p->radius, bm);
         if (isnan(s->kwall) && s->sheet < 0)
             p->kwall = gw_hertz_coefficient(p->radius, bm, INFINITY, wm);
     }

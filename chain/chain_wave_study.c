@@ -133,6 +133,7 @@ static const gw_param ws_fields[] = {
     RIT(W, "n_min", n_min, "smallest column"),
     RIT(W, "n_max", n_max, "longest column (the front's)"),
     RDT(W, "wall_time_s", wall_time_s, "s", "wall-clock time"),
+    RIT(W, "unfinished", unfinished, "collisions of the tau_N sweep not ended at t_max"),
     GW_PARAM_END};
 #undef W
 
@@ -165,6 +166,7 @@ static const gw_param sw_fields[] = {
     {.name = "sheet_materials", .type = GW_PARAM_TEXT, .offset = offsetof(S, sheet_materials), .unit = "",
      .help = "what their constants describe, separated by semicolons"},
     RDT(S, "wall_time_s", wall_time_s, "s", "wall-clock time"),
+    RIT(S, "unfinished", unfinished, "collisions still at the wall at t_max (their F_max, tau_max may not be final)"),
     GW_PARAM_END};
 #undef S
 
@@ -334,6 +336,8 @@ int gw_chain_wavespeed_run(const gw_chain_wavespeed_setup *s, gw_progress_fn pro
     if (rc == GW_OK)
         rc = gw_chain_sweep_n_progress(&r.params, &r.run, out->v_imp, nv, (int)a, (int)b, (int)s->jobs, progress,
                                        pctx, res, err);
+    for (int i = 0; rc == GW_OK && i < nv * per_v; i++)
+        out->unfinished += !res[i].converged;
     for (int iv = 0; rc == GW_OK && iv < nv; iv++)
         rc = ws_velocity(&r.params, &r.run, &res[iv * per_v], (int)a, per_v, s->threshold, iv, out, err);
     out->wall_time_s = (gw_clock_ms() - t0) / 1e3;
@@ -547,6 +551,8 @@ int gw_chain_softwall_run(const gw_chain_softwall_setup *s, gw_progress_fn progr
                                        res + (size_t)w * per, err);
         if (rc == GW_OK)
             sr[w] = analyse(res + (size_t)w * per, (int)a, (int)b, s->tol, out->t_q_rigid);
+        for (int i = 0; rc == GW_OK && i < per; i++)
+            out->unfinished += !res[(size_t)w * per + i].wall_done; /* F_max, tau_max: the wall's */
         if (rc == GW_OK && progress && progress(pctx, w + 1, nw))
             rc = gw_err_set(err, GW_ECANCELED, "softwall: stopped by the progress callback");
     }

@@ -361,6 +361,9 @@ typedef struct gw_chain_result {
     long n_events;
     long missed_events;  /* contact changes found from the state, not a root */
     gw_solver_stats stats;
+    int wall_done;       /* 1: at t_end bead 1 is off the wall, separating from it and beyond
+                            a sensor body's reach (f_max, tau_max, tau_n are final; the
+                            column's own contacts may still be busy: converged 0) */
 } gw_chain_result;
 
 /* Run one collision from the initial state until every contact is open and every

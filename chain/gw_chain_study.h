@@ -181,6 +181,8 @@ typedef struct gw_chain_falcon_outcome {
     int rigid;             /* K > K_c */
     double accuracy;       /* the accuracy target used (0: col's solver) */
     double wall_time_s;
+    int unfinished;        /* collisions not ended at t_max (gw_chain_result.converged 0):
+                              their tau_N, eps and the fits over them are those at t_max */
 } gw_chain_falcon_outcome;
 
 const gw_param *gw_chain_falcon_outcome_fields(void);
@@ -224,6 +226,7 @@ typedef struct gw_chain_wavespeed_outcome {
     double c2, beta_period, beta_period_err, max_disagreement, threshold;
     int n_min, n_max;
     double wall_time_s;
+    int unfinished;        /* collisions of the tau_N sweep not ended at t_max */
 } gw_chain_wavespeed_outcome;
 
 const gw_param *gw_chain_wavespeed_setup_params(void);
@@ -268,6 +271,8 @@ typedef struct gw_chain_softwall_outcome {
     double *sheet_table;        /* [nsheet * GW_SOFTWALL_NSHEET_COLS]; NaN: not defined */
     char *sheet_names, *sheet_materials; /* nsheet items, separated by "," and ";" */
     double wall_time_s;
+    int unfinished;             /* collisions still at the wall at t_max (wall_done 0):
+                                   their F_max and tau_max may not be final */
 } gw_chain_softwall_outcome;
 
 const gw_param *gw_chain_softwall_setup_params(void);

@@ -38,6 +38,7 @@ cJSON *chain_result_json(const chain_cli *c, const gw_chain_result *r, double wa
     cJSON_AddNumberToObject(o, "eps_col", r->eps_col);
     cJSON_AddNumberToObject(o, "wall_contacts", r->wall_contacts);
     cJSON_AddBoolToObject(o, "converged", r->converged);
+    cJSON_AddBoolToObject(o, "wall_done", r->wall_done);
     cJSON_AddNumberToObject(o, "t_end", r->t_end);
     cJSON_AddNumberToObject(o, "events", (double)r->n_events);
     cJSON_AddNumberToObject(o, "missed_events", (double)r->missed_events);
@@ -144,6 +145,12 @@ int gw_cmd_chain(int argc, char **argv)
             cJSON_Delete(o);
             free(hdr);
         }
+        if (code == 0 && !r.converged) /* results at t_max, not final: said, and recorded (JSON converged false) */
+            fprintf(stderr, "granwave chain: warning: the collision had not ended at t_max = %.6g s (%s): %s are "
+                    "those at t_max; raise --t-max\n", r.t_end,
+                    r.wall_done ? "the column's own contacts still closed or closing" : "bead 1 still at the wall",
+                    r.wall_done ? "the final velocities, eps_eff, eps_col and N_s"
+                                : "F_max, tau_N, the final velocities and the restitution");
         if (code == 0) {
             if (c.json) {
                 cJSON *o = chain_result_json(&c, &r, wall_ms);

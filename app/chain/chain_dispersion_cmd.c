@@ -300,7 +300,10 @@ static int disp_column(const disp_cli *c, const gw_opt *opts, int argc, char **a
     } r = {out.tau_n, out.period, out.n_maxima};
     const gw_chain_spectrum sp = out.sp;
     if (rc != GW_OK) {
-        fprintf(stderr, "granwave dispersion --column-n: %s\n", err.msg);
+        if (strncmp(err.msg, "dispersion ", 11) == 0) /* named by gw_cli_study_error: "dispersion --NAME: ..." */
+            fprintf(stderr, "granwave %s\n", err.msg);
+        else
+            fprintf(stderr, "granwave dispersion --column-n: %s\n", err.msg);
         code = rc == GW_EINVAL ? 2 : 1;
     } else {
         cJSON *js = cJSON_CreateObject();

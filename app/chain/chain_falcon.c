@@ -89,6 +89,10 @@ static cJSON *summary_json(const falcon *f)
     if (f->accuracy > 0)
         cJSON_AddNumberToObject(o, "accuracy_target", f->accuracy);
     cJSON_AddNumberToObject(o, "wall_time_s", f->wall_s);
+    int unfinished = 0;
+    for (int i = 0; i < falcon_ncase(f); i++)
+        unfinished += !f->res[i].converged;
+    cJSON_AddNumberToObject(o, "unfinished", unfinished); /* collisions not ended at t_max */
     return o;
 }
 
@@ -337,6 +341,7 @@ int gw_cmd_falcon(int argc, char **argv)
     for (int iv = 0; iv < f.nv; iv++)
         analyse_velocity(&f, iv);
     cJSON *sum = summary_json(&f);
+    chain_cli_warn_unfinished("falcon", (int)cJSON_GetObjectItem(sum, "unfinished")->valuedouble, ncase);
     if (f.c.out) {
         char *hdr = gw_cli_one_line(chain_cli_header(&f.c, "falcon", argc, argv), ' ');
         char path[4096];

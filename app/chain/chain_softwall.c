@@ -170,6 +170,10 @@ int gw_cmd_softwall(int argc, char **argv)
                 cJSON_AddItemToArray(sl, sheet_json(&so, w, use_sheets ? gw_sheet_get(w) : gw_sheet_find(c.sheet)));
         }
         cJSON_AddNumberToObject(o, "wall_time_s", wall_s);
+        cJSON_AddNumberToObject(o, "unfinished", so.unfinished);
+        if (so.unfinished > 0) /* F_max and tau_max: the wall's contact, the column's own may still be busy */
+            fprintf(stderr, "granwave softwall: warning: %d of %d collisions were still at the wall at t_max: their "
+                    "F_max and tau_max may not be final; raise --t-max\n", so.unfinished, so.ncase);
         cJSON_AddItemToObject(o, "settings", chain_cli_settings_json(&c));
         char path[4096];
         if (c.out && (gw_path_join(path, sizeof path, c.out, "softwall.json") != GW_OK ||

@@ -128,6 +128,8 @@ int gw_cmd_wavespeed(int argc, char **argv)
         cJSON_AddNumberToObject(o, "n_min", (double)a);
         cJSON_AddNumberToObject(o, "n_max", (double)b);
         cJSON_AddNumberToObject(o, "wall_time_s", wall_s);
+        cJSON_AddNumberToObject(o, "unfinished", wo.unfinished);
+        chain_cli_warn_unfinished("wavespeed", wo.unfinished, nv * (int)(b - a + 1));
         cJSON_AddItemToObject(o, "settings", chain_cli_settings_json(&c));
         char path[4096];
         if (c.out) {

@@ -1,0 +1,178 @@
+#!/bin/bash
+# test_hostile_chain.sh GRANWAVE SRCDIR: what a hostile pass over the chain
+# commands (chain, falcon, wavespeed, softwall, dispersion, drop, a chain sweep)
+# found beyond test_cli_refusals.sh, each asserted by its behaviour (exit code,
+# one stderr line naming the input, nothing written, no hang, no sanitizer
+# report) or by the values the run prints:
+#  1 options that had no effect in their combination, now refused: --radius with
+#    --radii, --wall-material with a sheet (the sheet is the wall; the sensor's
+#    material enters only sheet none under a law other than fitted), --material with
+#    --mass, --k and the wall's coefficient all given (the run ignored them and
+#    recorded them in its settings).
+#  2 a silent wrong answer: with --radii the reported k, T_q and K_c came from
+#    --radius (4 mm by default), not from the beads; they now equal those of
+#    --radius R for equal radii R.
+#  3 unbounded work: drop --dt-max 1e-11 or --solver rk4 --dt 1e-12 ran for
+#    minutes (1e8, 1e9 steps to t-max 1 ms); the drop's steps are bounded over
+#    t-max as a collision's are (1e8), before --out is made.
+#  4 a silent wrong answer: a light sensor body on a soft spring (1 g on 1e3
+#    N/m) moves away from bead 1 faster than the beads, and the collision was
+#    declared over at that instant ("converged", eps_eff -0.78: the column still
+#    moving toward the sensor, which comes back); bead 1 must now also move away
+#    and lie beyond the sensor's reach (its amplitude from its energy). A run
+#    that had not ended at t_max exited 0 with nothing said outside the JSON;
+#    chain, falcon and wavespeed now warn on one stderr line (and record
+#    converged / wall_done, "unfinished" in the studies), softwall when bead 1
+#    was still at the wall (its F_max and tau_max).
+#  5 dispersion: with --column-n the dispersion study's options (--n, --f0,
+#    --ends, --t-samples, --dt-out, --steps-per-sample, --amp, --seed,
+#    --min-bins) were ignored, and --vimp without --column-n; refused now, in the
+#    library (a Python call too). A run that resolved no wavenumber reported
+#    "ridge max rel err 0.00e+00"; the error is NaN (JSON null) then.
+set -u
+GW=$1
+SRC=${2:-.}
+PY=/usr/bin/python3
+tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
+fails=0; passes=0
+ok() { echo "PASS: $1"; passes=$((passes+1)); }
+ko() { echo "FAIL: $1"; fails=$((fails+1)); }
+
+# refused WHAT PATTERN CMD...: exit 2 within 20 s, exactly one stderr line that
+# matches PATTERN, no sanitizer report, nothing in $tmp/o
+refused() {
+    local what=$1 pat=$2; shift 2
+    rm -rf "$tmp/o"
+    timeout -s KILL 20 "$GW" "$@" >"$tmp/stdout" 2>"$tmp/stderr" </dev/null
+    local rc=$?
+    if [ $rc -ne 2 ]; then ko "$what: exit $rc, expected 2 ($(head -c 200 "$tmp/stderr"))"; return; fi
+    if [ "$(wc -l <"$tmp/stderr")" -ne 1 ]; then ko "$what: $(wc -l <"$tmp/stderr") stderr lines"; cat "$tmp/stderr"; return; fi
+    if ! grep -qE -- "$pat" "$tmp/stderr"; then ko "$what: message does not match '$pat': $(cat "$tmp/stderr")"; return; fi
+    if grep -qE 'Sanitizer|runtime error' "$tmp/stderr"; then ko "$what: sanitizer report"; return; fi
+    if [ -e "$tmp/o" ]; then ko "$what: wrote $tmp/o ($(ls "$tmp/o" 2>/dev/null | tr '\n' ' '))"; return; fi
+    [ -s "$tmp/stdout" ] && { ko "$what: printed on stdout"; return; }
+    ok "$what"
+}
+
+# runs WHAT FILE CMD...: exit 0 within 60 s, no sanitizer report, stdout (JSON) in FILE
+runs() {
+    local what=$1 file=$2; shift 2
+    timeout -s KILL 60 "$GW" "$@" >"$file" 2>"$tmp/stderr" </dev/null
+    local rc=$?
+    if [ $rc -ne 0 ]; then ko "$what: exit $rc ($(head -c 300 "$tmp/stderr"))"; return 1; fi
+    if grep -qE 'Sanitizer|runtime error' "$tmp/stderr"; then ko "$what: sanitizer report"; return 1; fi
+    return 0
+}
+
+# jcheck WHAT FILE PYEXPR: PYEXPR (over the JSON object j) is true
+jcheck() {
+    local what=$1 file=$2 expr=$3
+    if "$PY" -c "import json,math,sys; j=json.load(open(sys.argv[1])); sys.exit(0 if ($expr) else 1)" "$file" 2>"$tmp/pyerr"; then
+        ok "$what"
+    else
+        ko "$what: not ($expr) $(head -c 200 "$tmp/pyerr")"
+    fi
+}
+
+# --- 1: options without effect in the combination
+refused "chain --radius with --radii (bead 1's radius is radii's first)" 'chain --radius: has no effect with radii' \
+    chain --n 2 --radii 4e-3,4e-3 --radius 5e-3 --out "$tmp/o"
+refused "chain --wall-material with a fitted sheet" 'chain --wall-material: has no effect with sheet brass under sheet-law fitted' \
+    chain --n 2 --sheet brass --wall-material glass --out "$tmp/o"
+refused "chain --material with --mass, --k and --kwall" 'chain --material: has no effect with mass, k' \
+    chain --n 2 --material glass --mass 1e-3 --k 1e9 --kwall 1e9 --out "$tmp/o"
+refused "softwall --material with --mass and --k (softwall's wall is --kwall)" 'softwall --material: has no effect' \
+    softwall --n 1:3 --material glass --mass 1e-3 --k 1e9 --out "$tmp/o"
+printf '[sweep]\nmodel = chain\n[grid]\nn = 1:2\n[params]\nsheet = brass\nwall-material = glass\n' >"$tmp/sheetwm.ini"
+refused "a chain sweep with a fitted sheet and a wall material" 'wall-material: has no effect' \
+    sweep "$tmp/sheetwm.ini" --out "$tmp/o" --quiet
+refused "chain --wall-material under a sheet law other than fitted (the sheet is the wall)" \
+    'chain --wall-material: has no effect with sheet brass under sheet-law hertz' \
+    chain --n 2 --sheet brass --sheet-law hertz --wall-material glass --out "$tmp/o"
+# where they do have an effect they still run, and change the result
+runs "chain --wall-material with sheet none under sheet-law hertz runs" "$tmp/a.json" chain --n 2 --sheet none --sheet-law hertz --wall-material glass --json &&
+    runs "" "$tmp/b.json" chain --n 2 --sheet none --sheet-law hertz --json &&
+    "$PY" -c "import json,sys; a=json.load(open(sys.argv[1])); b=json.load(open(sys.argv[2])); sys.exit(0 if a['f_max'] < 0.95 * b['f_max'] else 1)" "$tmp/a.json" "$tmp/b.json" &&
+    ok "chain --wall-material glass lowers F_max on the bare sensor under sheet-law hertz" ||
+    ko "chain --wall-material on the bare sensor under sheet-law hertz: no effect"
+runs "chain --material with --mass and --k (K from the materials) runs" "$tmp/a.json" chain --n 2 --material glass --mass 1e-3 --k 1e9 --json &&
+    jcheck "  its K is glass-on-steel's, not steel's" "$tmp/a.json" "abs(j['settings']['model']['kwall'] - 9.858327626566e9) > 1e8"
+
+# --- 2: --radii reported the k, T_q and K_c of --radius
+if runs "chain --radii 1e-3,1e-3" "$tmp/r.json" chain --n 2 --radii 1e-3,1e-3 --json &&
+   runs "chain --radius 1e-3" "$tmp/s.json" chain --n 2 --radius 1e-3 --json; then
+    "$PY" - "$tmp/r.json" "$tmp/s.json" <<'EOF' && ok "chain --radii R,R reports the k, T_q and K_c of --radius R (and the same F_max)" || ko "chain --radii R,R and --radius R differ"
+import json, sys
+r, s = (json.load(open(f)) for f in sys.argv[1:3])
+def rel(a, b): return abs(a / b - 1)
+ok = rel(r['settings']['model']['k'], s['settings']['model']['k']) < 1e-12
+ok &= rel(r['closed_forms']['t_q'], s['closed_forms']['t_q']) < 1e-12
+ok &= rel(r['closed_forms']['k_c'], s['closed_forms']['k_c']) < 1e-12
+ok &= rel(r['f_max'], s['f_max']) < 1e-9
+# k of two 1 mm steel beads (F.12): (sqrt(2R)/3) E/(1-nu^2), E = 21.6e10, nu = 0.276
+ok &= rel(r['settings']['model']['k'], (2e-3) ** 0.5 / 3 * 21.6e10 / (1 - 0.276 ** 2)) < 1e-9
+sys.exit(0 if ok else 1)
+EOF
+fi
+
+# --- 3: the drop's steps bounded over t-max
+refused "drop --dt-max 1e-11 (1e8 steps to t-max 1 ms)" 'drop --dt-max: a step of 1e-11 s needs about 1e\+08 steps over t-max' \
+    drop --n 3 --dt-max 1e-11 --t-max 1e-3 --out "$tmp/o"
+refused "drop --solver rk4 --dt 1e-12 (1e9 steps)" 'drop --dt: a step of 1e-12 s needs about 1e\+09 steps over t-max' \
+    drop --n 3 --solver rk4 --dt 1e-12 --t-max 1e-3 --out "$tmp/o"
+refused "drop --solver arkode --dt-max 1e-12" 'drop --dt-max: a step of 1e-12 s' \
+    drop --n 3 --solver arkode --dt-max 1e-12 --t-max 1e-3 --out "$tmp/o"
+runs "drop --solver rk4 --dt 1e-10 --t-max 1e-3 (1e7 steps) runs" "$tmp/d.json" drop --n 3 --solver rk4 --dt 1e-10 --t-max 1e-3 --json &&
+    jcheck "  and finds its impact" "$tmp/d.json" "j['n_impacts'] >= 1"
+
+# --- 4: the end of a collision on a sensor body; unfinished runs said
+if runs "chain on a 1 g sensor on 1e3 N/m at the default t_max" "$tmp/u.json" chain --n 3 --sensor-mass 1e-3 --sensor-stiffness 1e3 --json; then
+    jcheck "  not declared over (converged false, wall_done false)" "$tmp/u.json" "j['converged'] is False and j['wall_done'] is False"
+    grep -q "^granwave chain: warning: the collision had not ended at t_max = .* (bead 1 still at the wall)" "$tmp/stderr" &&
+        [ "$(wc -l <"$tmp/stderr")" -eq 1 ] && ok "  one warning line on stderr" || ko "  no warning: $(cat "$tmp/stderr")"
+fi
+if runs "the same to t_max 50 ms" "$tmp/v.json" chain --n 3 --sensor-mass 1e-3 --sensor-stiffness 1e3 --t-max 0.05 --json; then
+    # the column rebounds: every bead moves away (final velocities < 0), eps_eff in (0, 1]
+    jcheck "  ends: converged, eps_eff in (0, 1], every bead moving away" "$tmp/v.json" \
+        "j['converged'] is True and 0 < j['eps_eff'] <= 1 + 1e-9 and max(j['final_velocities']) < 0"
+    [ ! -s "$tmp/stderr" ] && ok "  no warning when it ended" || ko "  warned although it ended: $(cat "$tmp/stderr")"
+fi
+if runs "a 3 g sensor on 2e9 N/m (docs/sheets.md) ends as before" "$tmp/w.json" chain --n 10 --sensor-mass 3e-3 --sensor-stiffness 2e9 --json; then
+    jcheck "  converged, eps_eff 0.92 (0.9211 measured)" "$tmp/w.json" "j['converged'] is True and abs(j['eps_eff'] - 0.9211) < 2e-3"
+fi
+if runs "falcon on the soft sensor" "$tmp/f.json" falcon --n 1:4 --heights none --sensor-mass 1e-3 --sensor-stiffness 1e3 --quiet --json; then
+    jcheck "  records 4 unfinished collisions" "$tmp/f.json" "j['unfinished'] == 4"
+    grep -q "^granwave falcon: warning: 4 of 4 collisions had not ended at t_max" "$tmp/stderr" && ok "  and says so" || ko "  falcon did not warn: $(cat "$tmp/stderr")"
+fi
+runs "falcon on the rigid wall" "$tmp/f.json" falcon --n 1:6 --heights none --quiet --json &&
+    jcheck "  no unfinished collision" "$tmp/f.json" "j['unfinished'] == 0" && { [ ! -s "$tmp/stderr" ] && ok "  and no warning" || ko "  warned: $(cat "$tmp/stderr")"; }
+# (rk4: cvode took 24 s of CPU on this light sensor, resolving its oscillation)
+if runs "softwall on the soft sensor (rk4)" "$tmp/s.json" softwall --n 1:3 --sensor-mass 1e-3 --sensor-stiffness 1e3 --solver rk4 --quiet --json; then
+    jcheck "  records 3 collisions still at the wall" "$tmp/s.json" "j['unfinished'] == 3"
+    grep -q "^granwave softwall: warning: 3 of 3 collisions were still at the wall at t_max" "$tmp/stderr" && ok "  and says so" || ko "  softwall did not warn: $(cat "$tmp/stderr")"
+fi
+# the default soft wall (K = 1e9): long columns keep colliding inside after bead 1
+# left the wall; F_max and tau_max are final, so no warning
+runs "softwall at its defaults" "$tmp/s.json" softwall --quiet --json &&
+    jcheck "  no collision still at the wall" "$tmp/s.json" "j['unfinished'] == 0" && { [ ! -s "$tmp/stderr" ] && ok "  and no warning" || ko "  warned: $(cat "$tmp/stderr")"; }
+
+# --- 5: dispersion's two modes
+for flag in "--n 16" "--f0 5" "--ends fixed" "--t-samples 64" "--dt-out 1e-6" "--steps-per-sample 4" "--amp 1e-2" "--seed 4" "--min-bins 3"; do
+    refused "dispersion --column-n 3 $flag (no effect on the column)" "^granwave dispersion ${flag%% *}: has no effect with column-n" \
+        dispersion --column-n 3 $flag --out "$tmp/o"
+done
+refused "dispersion --vimp without --column-n" '^granwave dispersion --vimp: has no effect without column-n' \
+    dispersion --n 16 --t-samples 64 --vimp 0.5 --out "$tmp/o"
+refused "dispersion --column-n with rk4 tolerances: named once" '^granwave dispersion --rtol: has no effect with the fixed-step' \
+    dispersion --column-n 3 --solver rk4 --rtol 1e-6 --out "$tmp/o"
+runs "dispersion --column-n 20 --vimp 0.5 --solver cvode --fftw-measure (the column's own options)" "$tmp/c.json" \
+    dispersion --column-n 20 --vimp 0.5 --solver cvode --fftw-measure --json &&
+    jcheck "  its spectrum peak within 5 % of 1/P" "$tmp/c.json" "abs(j['f_peak_rel_diff']) < 0.05 and j['v_imp'] == 0.5"
+if runs "dispersion sampled too finely to resolve a ridge (dt-out 1e-6 s, 64 samples)" "$tmp/d.json" dispersion --n 16 --t-samples 64 --dt-out 1e-6 --json; then
+    jcheck "  nothing resolved: the ridge error is null, not 0" "$tmp/d.json" "j['n_resolved'] == 0 and j['ridge_max_rel_err'] is None"
+fi
+runs "dispersion at its sampling" "$tmp/d.json" dispersion --n 16 --t-samples 64 --json &&
+    jcheck "  resolved: a ridge error below 1 %" "$tmp/d.json" "j['n_resolved'] >= 5 and 0 < j['ridge_max_rel_err'] < 0.01"
+
+echo "test_hostile_chain: $passes passed, $fails failed"
+[ $fails -eq 0 ]

@@ -63,19 +63,22 @@ void gw_chain_falcon_analyse(const gw_chain_params *p, double v, const gw_chain_
 
 /* ---- the table of the inputs ---- */
 
+/* The accuracy row's default (its .def string says the same). */
+#define FALCON_ACCURACY_DEFAULT 1e-6
+
 #define OFF(f) offsetof(gw_chain_falcon_setup, col.f)
 #define OWN(f) offsetof(gw_chain_falcon_setup, f)
 
 static const gw_param falcon_params[] = {
-    {.name = "vimp", .type = GW_PARAM_LIST, .offset = OWN(vimp), .unit = "m/s", .min = 0, .max = GW_CHAIN_VIMP_MAX,
-     .open_min = 1, .def = "0.3", .metavar = "V,V..", .help = "impact velocities, m/s [0.3]"},
-    {.name = "heights", .type = GW_PARAM_LIST, .offset = OWN(heights), .unit = "mm", .min = 0,
-     .max = GW_CHAIN_VIMP_MAX * GW_CHAIN_VIMP_MAX / (2 * G_EARTH * 1e-3), .open_min = 1, .def = "1.9,2.9,3.1,5.1",
+    {.name = "vimp", .type = GW_PARAM_LIST, .offset = OWN(vimp), .unit = "m/s", .min = GW_CHAIN_VIMP_MIN,
+     .max = GW_CHAIN_VIMP_MAX, .def = "0.3", .metavar = "V,V..", .help = "impact velocities, m/s [0.3]"},
+    {.name = "heights", .type = GW_PARAM_LIST, .offset = OWN(heights), .unit = "mm", .min = GW_CHAIN_HEIGHT_MIN_MM,
+     .max = GW_CHAIN_VIMP_MAX * GW_CHAIN_VIMP_MAX / (2 * G_EARTH * 1e-3), .def = "1.9,2.9,3.1,5.1",
      .metavar = "H,H..", .help = "drop heights, mm, v = sqrt(2 g h) ['none' to skip] [1.9,2.9,3.1,5.1]"},
     {.name = "n", .type = GW_PARAM_RANGE, .offset = OWN(n), .unit = "", .min = 1, .max = 100000, .def = "1:40",
      .metavar = "A:B", .help = "column sizes [1:40]"},
     {.name = "accuracy", .type = GW_PARAM_DOUBLE, .offset = OWN(accuracy), .unit = "", .min = 0, .max = 1e-2,
-     .def = "1e-6", .metavar = "A",
+     .def = "1e-6", .metavar = "A", /* FALCON_ACCURACY_DEFAULT */
      .help = "relative accuracy of F_max and tau_N when no solver option is given: RK4, dt = T_c/M with M "
              "from a measured convergence study [1e-6]; 0: the solver options as given"},
     {.name = "jobs", .type = GW_PARAM_LONG, .offset = OWN(jobs), .unit = "", .min = 0, .max = 1024, .def = "0",
@@ -200,12 +203,22 @@ static int pick_solver(const gw_chain_falcon_setup *s, gw_chain_resolved *r, dou
     const gw_chain_params *p = &r->params; /* a general wall, sensor or guide: outside the step study */
     int general = p->wall.layer || p->wall.yield_pressure > 0 || p->wall.loss > 0 || p->sensor.mass > 0 ||
                   p->guide.coulomb > 0 || p->guide.viscous > 0;
-    if (!(s->accuracy > 0) || !at_defaults || p->damping != GW_DAMP_NONE || p->gravity != 0 || s->n[1] > 40 ||
-        general)
+    /* an accuracy other than the default was asked for: where it cannot act it
+     * is refused, as the command refuses --accuracy (not silently ignored) */
+    const int asked = s->accuracy != FALCON_ACCURACY_DEFAULT;
+    if (s->accuracy > 0 && gw_chain_rk4_steps_per_tc(s->accuracy) <= 0)
+        return gw_err_set(err, GW_EINVAL, "accuracy: %g outside [1e-9, 1e-2] (or 0: the solver options as given)",
+                          s->accuracy);
+    if (!(s->accuracy > 0))
         return GW_OK;
+    if (!at_defaults)
+        return asked ? gw_err_set(err, GW_EINVAL, "accuracy: give either accuracy or the solver options") : GW_OK;
+    if (p->damping != GW_DAMP_NONE || p->gravity != 0 || s->n[1] > 40 || general)
+        return asked ? gw_err_set(err, GW_EINVAL, "accuracy: the step study covers undamped columns of N <= 40 "
+                                                  "without gravity on a Hertz wall, without sensor body or guide "
+                                                  "friction; give the solver instead")
+                     : GW_OK;
     int m = gw_chain_rk4_steps_per_tc(s->accuracy);
-    if (m <= 0)
-        return gw_err_set(err, GW_EINVAL, "accuracy: %g outside [1e-9, 1e-2]", s->accuracy);
     r->run.solver = gw_solver_rk4;
     r->run.sp.method = GW_METHOD_DEFAULT;
     r->run.steps_per_tc = m;

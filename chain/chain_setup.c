@@ -27,7 +27,7 @@
 
 static const gw_param setup_params[] = {
     ROW("n", GW_PARAM_LONG, n, "", 1, 50000000, 0, "1", "N", "number of beads [1]"),
-    ROW("vimp", GW_PARAM_DOUBLE, vimp, "m/s", 0, GW_CHAIN_VIMP_MAX, 1, "0.3", "V", "impact velocity, m/s [0.3]"),
+    ROW("vimp", GW_PARAM_DOUBLE, vimp, "m/s", GW_CHAIN_VIMP_MIN, GW_CHAIN_VIMP_MAX, 0, "0.3", "V", "impact velocity, m/s [0.3]"),
     GW_CHAIN_MODEL_ROWS
     ROW("trace", GW_PARAM_FLAG, trace, "", 0, 1, 0, "0", NULL,
         "library: keep the wall force and the bead series (t, f_wall, x, v) [0]"),

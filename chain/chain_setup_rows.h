@@ -69,7 +69,7 @@ _Static_assert(GW_SHEET_FITTED == 0 && GW_SHEET_HERTZ == 1 && GW_SHEET_LAYER == 
         "Hunt-Crossley constant, s/m, in [0, 1e8] [0]"), \
     ROW("restitution", GW_PARAM_DOUBLE, restitution, "", 0, 1, 1, NULL, "E", \
         "calibrate gamma/alpha so one bead on the wall rebounds with E"), \
-    ROW("restitution-v", GW_PARAM_DOUBLE, restitution_v, "m/s", 0, 1e3, 1, NULL, "V", \
+    ROW("restitution-v", GW_PARAM_DOUBLE, restitution_v, "m/s", GW_CHAIN_VIMP_MIN, GW_CHAIN_VIMP_MAX, 0, NULL, "V", \
         "impact velocity of that calibration, m/s [v_imp]"), \
     CHOICE("solver", solver, "cvode,arkode,rk4", "cvode", "NAME", "cvode, arkode or rk4 [cvode]"), \
     CHOICE("method", method, "default,bdf,adams,erk,dirk,imex", "default", "NAME", \

@@ -38,8 +38,8 @@
 #define OFF(f) offsetof(gw_chain_wavespeed_setup, col.f)
 #define OWN(f) offsetof(gw_chain_wavespeed_setup, f)
 static const gw_param ws_params[] = {
-    {.name = "vimp", .type = GW_PARAM_LIST, .offset = OWN(vimp), .unit = "m/s", .min = 0, .max = GW_CHAIN_VIMP_MAX,
-     .open_min = 1, .def = "0.075,0.15,0.3,0.5", .metavar = "V,V..",
+    {.name = "vimp", .type = GW_PARAM_LIST, .offset = OWN(vimp), .unit = "m/s", .min = GW_CHAIN_VIMP_MIN,
+     .max = GW_CHAIN_VIMP_MAX, .def = "0.075,0.15,0.3,0.5", .metavar = "V,V..",
      .help = "impact velocities, m/s [0.075,0.15,0.3,0.5]"},
     {.name = "n", .type = GW_PARAM_RANGE, .offset = OWN(n), .unit = "", .min = 1, .max = 100000, .def = "5:40",
      .metavar = "A:B", .help = "column sizes for the tau_N fit; B is the front column [5:40]"},
@@ -57,8 +57,8 @@ static const gw_param ws_params[] = {
 static const gw_param sw_params[] = {
     {.name = "n", .type = GW_PARAM_RANGE, .offset = OWN(n), .unit = "", .min = 1, .max = 100000, .def = "1:30",
      .metavar = "A:B", .help = "column sizes [1:30]"},
-    {.name = "vimp", .type = GW_PARAM_DOUBLE, .offset = OWN(vimp), .unit = "m/s", .min = 0, .max = GW_CHAIN_VIMP_MAX,
-     .open_min = 1, .metavar = "V", .help = "impact velocity, m/s [0.2385 = h 2.9 mm]"},
+    {.name = "vimp", .type = GW_PARAM_DOUBLE, .offset = OWN(vimp), .unit = "m/s", .min = GW_CHAIN_VIMP_MIN,
+     .max = GW_CHAIN_VIMP_MAX, .metavar = "V", .help = "impact velocity, m/s [0.2385 = h 2.9 mm]"},
     {.name = "tol", .type = GW_PARAM_DOUBLE, .offset = OWN(tol), .unit = "", .min = 0, .max = 0.5, .open_min = 1,
      .def = "0.01", .metavar = "F", .help = "plateau tolerance for N_d (fraction) [0.01]"},
     {.name = "sheets", .type = GW_PARAM_FLAG, .offset = OWN(sheets), .unit = "", .min = 0, .max = 1, .def = "0",

@@ -208,9 +208,14 @@ typedef struct gw_chain_params {
     gw_chain_guide guide;   /* friction of the beads on their guide */
 } gw_chain_params;
 
-/* Impact velocities every chain command accepts, m/s: (0, GW_CHAIN_VIMP_MAX]
- * (beyond, the Hertz overlaps exceed the bead radius long before). */
+/* Impact velocities every chain command accepts, m/s: [GW_CHAIN_VIMP_MIN,
+ * GW_CHAIN_VIMP_MAX] (beyond the top, the Hertz overlaps exceed the bead radius
+ * long before; below a nanometre per second the solvers' error weights
+ * underflow near 1e-160 m/s, and nothing physical is left to measure). Drop
+ * heights, mm: [GW_CHAIN_HEIGHT_MIN_MM, v_max^2 / (2 g)]. */
+#define GW_CHAIN_VIMP_MIN 1e-9
 #define GW_CHAIN_VIMP_MAX 1e3
+#define GW_CHAIN_HEIGHT_MIN_MM 5e-17 /* v = sqrt(2 g h) = 0.99e-9 m/s: rounded so that h >= it gives v >= ~VIMP_MIN */
 
 /* Largest damping constants (docs/physics.md 1.5). Hunt-Crossley's restitution
  * depends on alpha v alone (measured with gw_chain_calibrate: e = 0.5 at

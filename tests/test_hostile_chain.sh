@@ -28,7 +28,10 @@
 #    --ends, --t-samples, --dt-out, --steps-per-sample, --amp, --seed,
 #    --min-bins) were ignored, and --vimp without --column-n; refused now, in the
 #    library (a Python call too). A run that resolved no wavenumber reported
-#    "ridge max rel err 0.00e+00"; the error is NaN (JSON null) then.
+#    "ridge max rel err 0.00e+00"; the error is NaN (JSON null) then, with one
+#    warning line.
+#  6 impact speeds below 1e-160 m/s failed at t = 0 inside the solver (exit 1):
+#    every chain speed (and drop height) now lies in [1e-9, 1e3] m/s.
 set -u
 GW=$1
 SRC=${2:-.}
@@ -170,9 +173,26 @@ runs "dispersion --column-n 20 --vimp 0.5 --solver cvode --fftw-measure (the col
     jcheck "  its spectrum peak within 5 % of 1/P" "$tmp/c.json" "abs(j['f_peak_rel_diff']) < 0.05 and j['v_imp'] == 0.5"
 if runs "dispersion sampled too finely to resolve a ridge (dt-out 1e-6 s, 64 samples)" "$tmp/d.json" dispersion --n 16 --t-samples 64 --dt-out 1e-6 --json; then
     jcheck "  nothing resolved: the ridge error is null, not 0" "$tmp/d.json" "j['n_resolved'] == 0 and j['ridge_max_rel_err'] is None"
+    if [ "$(wc -l <"$tmp/stderr")" -eq 1 ] && grep -q '^granwave dispersion: warning: no wavenumber resolved' "$tmp/stderr"; then
+        ok "  and one warning line says so"
+    else
+        ko "  no warning line for a run that resolved nothing: $(cat "$tmp/stderr")"
+    fi
 fi
 runs "dispersion at its sampling" "$tmp/d.json" dispersion --n 16 --t-samples 64 --json &&
     jcheck "  resolved: a ridge error below 1 %" "$tmp/d.json" "j['n_resolved'] >= 5 and 0 < j['ridge_max_rel_err'] < 0.01"
+
+# --- 6: speeds and heights below a nanometre per second (the solvers' error
+# weights underflowed near 1e-160 m/s and the run failed at t = 0 with exit 1)
+refused "chain --vimp 1e-200" '^granwave chain --vimp: 1e-200 is outside \[1e-09, 1000\]' chain --vimp 1e-200 --out "$tmp/o"
+refused "falcon --vimp 1e-10 in a list" '^granwave falcon --vimp: .*1e-10.*outside' falcon --vimp 0.3,1e-10 --heights none --out "$tmp/o"
+refused "falcon --heights 1e-300" '^granwave falcon --heights: .*outside' falcon --heights 1e-300 --out "$tmp/o"
+refused "wavespeed --vimp 1e-170" '^granwave wavespeed --vimp: .*outside' wavespeed --vimp 1e-170 --out "$tmp/o"
+refused "softwall --vimp 1e-170" '^granwave softwall --vimp: .*outside' softwall --vimp 1e-170 --out "$tmp/o"
+refused "chain --restitution-v 1e-170" '^granwave chain --restitution-v: .*outside' chain --restitution 0.9 --restitution-v 1e-170 --out "$tmp/o"
+runs "chain --vimp 1e-9 (the range's lower end)" "$tmp/v.json" chain --vimp 1e-9 --json &&
+    jcheck "  F_max follows the closed form's v^(6/5) from 0.3 m/s to 1e-9 m/s (to 1e-3)" "$tmp/v.json" \
+        "abs(j['f_max'] / ($("$GW" chain --json | $PY -c 'import json,sys; print(json.load(sys.stdin)["f_max"])') * (1e-9 / 0.3) ** 1.2) - 1) < 1e-3"
 
 echo "test_hostile_chain: $passes passed, $fails failed"
 [ $fails -eq 0 ]

@@ -84,7 +84,7 @@ int gw_cmd_chain(int argc, char **argv)
                                      .help = "number of beads [1]", .lo = 1, .hi = 50000000};
     opts[CHAIN_CLI_NOPTS + 1] = (gw_opt){.name = "vimp", .kind = GW_OPT_DOUBLE, .dest = &vimp,
                                          .metavar = "V", .help = "impact velocity, m/s [0.3]",
-                                         .lo = 0, .hi = GW_CHAIN_VIMP_MAX, .open_lo = 1};
+                                         .lo = GW_CHAIN_VIMP_MIN, .hi = GW_CHAIN_VIMP_MAX};
     opts[CHAIN_CLI_NOPTS + 2] = (gw_opt){0};
     int done = chain_cli_parse("chain", "granwave chain [options]", chain_summary, opts, argc, argv);
     if (done >= 0)

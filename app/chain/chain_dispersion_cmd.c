@@ -451,6 +451,9 @@ int gw_cmd_dispersion(int argc, char **argv)
             fprintf(stderr, "granwave dispersion --out: %s\n", err.msg);
             code = 1;
         }
+        if (code == 0 && r.n_resolved == 0) /* the ridge error is NaN (JSON null): say why */
+            fprintf(stderr, "granwave dispersion: warning: no wavenumber resolved: the spectrum shows no ridge "
+                            "(an --f0 so small that it underflows, or a --dt-out too fine for --t-samples)\n");
         if (code == 0 && c.json)
             gw_json_print(o, stdout);
         else if (code == 0)

@@ -8,7 +8,7 @@
  * --damping kk, --alpha without --damping hc, either with --restitution)
  * refused, the sheet laws, the sensor body and guide friction. Here only what is
  * the command line's own: impact speeds as lists
- * (falcon, wavespeed: --vimp, --heights in mm) checked in (0, GW_CHAIN_VIMP_MAX]
+ * (falcon, wavespeed: --vimp, --heights in mm) checked in [GW_CHAIN_VIMP_MIN, GW_CHAIN_VIMP_MAX]
  * m/s, messages prefixed "CMD --NAME", and the --out check.
  */
 #include <math.h>
@@ -31,7 +31,7 @@ static int check_speeds(const gw_opt *opts, const char *cmd, gw_err *err)
         double *v = NULL;
         int nv = 0;
         snprintf(name, sizeof name, "%s --vimp", cmd);
-        int rc = gw_parse_double_list_in(*(const char *const *)o->dest, name, 0, GW_CHAIN_VIMP_MAX, 1,
+        int rc = gw_parse_double_list_in(*(const char *const *)o->dest, name, GW_CHAIN_VIMP_MIN, GW_CHAIN_VIMP_MAX, 0,
                                          &v, &nv, err);
         free(v);
         if (rc != GW_OK)
@@ -44,7 +44,8 @@ static int check_speeds(const gw_opt *opts, const char *cmd, gw_err *err)
         int nh = 0;
         double hmax = GW_CHAIN_VIMP_MAX * GW_CHAIN_VIMP_MAX / (2 * G_EARTH * 1e-3);
         snprintf(name, sizeof name, "%s --heights", cmd);
-        int rc = gw_parse_double_list_in(*(const char *const *)o->dest, name, 0, hmax, 1, &h, &nh, err);
+        int rc = gw_parse_double_list_in(*(const char *const *)o->dest, name, GW_CHAIN_HEIGHT_MIN_MM, hmax, 0, &h,
+                                         &nh, err);
         free(h);
         if (rc != GW_OK)
             return rc;

@@ -73,7 +73,7 @@ int gw_cmd_softwall(int argc, char **argv)
     int quiet = 0, use_sheets = 0, k = CHAIN_CLI_NOPTS;
     opts[k++] = (gw_opt){.name = "n", .kind = GW_OPT_STRING, .dest = &nrange, .metavar = "A:B", .help = "column sizes [1:30]"};
     opts[k++] = (gw_opt){.name = "vimp", .kind = GW_OPT_DOUBLE, .dest = &vimp, .metavar = "V",
-                         .help = "impact velocity, m/s [0.2385 = h 2.9 mm]", .lo = 0, .hi = GW_CHAIN_VIMP_MAX, .open_lo = 1};
+                         .help = "impact velocity, m/s [0.2385 = h 2.9 mm]", .lo = GW_CHAIN_VIMP_MIN, .hi = GW_CHAIN_VIMP_MAX};
     opts[k++] = (gw_opt){.name = "tol", .kind = GW_OPT_DOUBLE, .dest = &tol, .metavar = "F",
                          .help = "plateau tolerance for N_d (fraction) [0.01]", .lo = 0, .hi = 0.5, .open_lo = 1};
     opts[k++] = (gw_opt){.name = "sheets", .kind = GW_OPT_FLAG, .dest = &use_sheets, .help = "the paper's sheets (Table 2) with fitted K_eff"};

@@ -58,7 +58,7 @@ int gw_cmd_wavespeed(int argc, char **argv)
     double *v = NULL;
     int nv = 0;
     if (gw_parse_int_range(nrange, "wavespeed --n", 1, 100000, &a, &b, &err) != GW_OK ||
-        gw_parse_double_list_in(vlist, "wavespeed --vimp", 0, GW_CHAIN_VIMP_MAX, 1, &v, &nv, &err) != GW_OK)
+        gw_parse_double_list_in(vlist, "wavespeed --vimp", GW_CHAIN_VIMP_MIN, GW_CHAIN_VIMP_MAX, 0, &v, &nv, &err) != GW_OK)
         return chain_cli_fail(err.msg);
     if (b - a < 2 || b < 8) {
         free(v);

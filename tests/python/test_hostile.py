@@ -1,5 +1,6 @@
-"""The Python side of the hostile pass over the layer commands (issue 20):
-a path with a NUL, the pluviation's step and failure, a sample out of scale.
+"""The Python side of the hostile pass over the layer commands (issue 18):
+a path with a NUL, the pluviation's step and failure, a sample out of scale;
+and of the chain's: falcon's accuracy where it cannot act, speeds below 1e-9 m/s.
 
 A str holding a NUL reached C cut at the NUL, so 'a\\0b.txt' named 'a' (another
 file, silently); it is refused naming the keyword. layer_make refuses a step
@@ -42,3 +43,27 @@ def test_a_sample_out_of_scale_is_refused(sample, tmp_path):
     bad.write_text("\n".join("rm 1e-300" if line.startswith("rm ") else line for line in text) + "\n")
     with pytest.raises(granwave.GranwaveValueError, match=r"rm 1e-300 m is outside \[1e-05, 1000\] m"):
         granwave.layer_impact(sample=bad, t_max=0.002)
+
+
+def test_falcon_accuracy_where_it_cannot_act():
+    # The step study picks RK4 by the accuracy target only for its own columns and
+    # with the solver at its defaults; an accuracy asked for elsewhere was silently
+    # ignored by the library (the command refused it).
+    with pytest.raises(granwave.GranwaveValueError, match="accuracy: give either accuracy or the solver options"):
+        granwave.falcon(heights=None, n=(1, 3), accuracy=1e-4, solver="arkode")
+    with pytest.raises(granwave.GranwaveValueError, match="accuracy: the step study covers"):
+        granwave.falcon(heights=None, n=(1, 50), accuracy=1e-4)
+    with pytest.raises(granwave.GranwaveValueError, match=r"accuracy: 1e-12 outside \[1e-9, 1e-2\]"):
+        granwave.falcon(heights=None, n=(1, 3), accuracy=1e-12)
+    # where it acts, it is recorded; with the solver given and accuracy left alone, 0
+    assert granwave.falcon(heights=None, n=(1, 3), accuracy=1e-4).accuracy == 1e-4
+    assert granwave.falcon(heights=None, n=(1, 3), solver="arkode").accuracy == 0
+
+
+def test_chain_speeds_below_a_nanometre_per_second_are_refused():
+    with pytest.raises(granwave.GranwaveValueError, match=r"vimp: 1e-200 is outside \[1e-09, 1000\]"):
+        granwave.chain(n=3, vimp=1e-200)
+    r = granwave.chain(n=1, vimp=1e-9)
+    ref = granwave.chain(n=1, vimp=0.3)
+    # Hertz: F_max ~ v^(6/5) (docs/physics.md 1.2)
+    assert r.f_max == pytest.approx(ref.f_max * (1e-9 / 0.3) ** 1.2, rel=1e-3)

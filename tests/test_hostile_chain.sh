@@ -32,6 +32,8 @@
 #    warning line.
 #  6 impact speeds below 1e-160 m/s failed at t = 0 inside the solver (exit 1):
 #    every chain speed (and drop height) now lies in [1e-9, 1e3] m/s.
+#  7 the trace stored for --out grew without bound (samples x beads); its memory is
+#    bounded before the run (4 GiB).
 set -u
 GW=$1
 SRC=${2:-.}
@@ -193,6 +195,15 @@ refused "chain --restitution-v 1e-170" '^granwave chain --restitution-v: .*outsi
 runs "chain --vimp 1e-9 (the range's lower end)" "$tmp/v.json" chain --vimp 1e-9 --json &&
     jcheck "  F_max follows the closed form's v^(6/5) from 0.3 m/s to 1e-9 m/s (to 1e-3)" "$tmp/v.json" \
         "abs(j['f_max'] / ($("$GW" chain --json | $PY -c 'import json,sys; print(json.load(sys.stdin)["f_max"])') * (1e-9 / 0.3) ** 1.2) - 1) < 1e-3"
+# --- 7: the stored trace of chain --out held every bead's x and v at every sample
+# and event in memory: --n 1000 --dt-out 1e-9 grew toward 400 GB, --n 10000 at the
+# default dt-out toward 235 GB (until the kernel killed it); bounded before the run
+refused "chain --n 1000 --dt-out 1e-9 --out (a 400 GB trace)" '^granwave chain: dt-out: the trace of 1000 beads .* above the 4.3 GB limit: raise dt-out to' \
+    chain --n 1000 --dt-out 1e-9 --out "$tmp/o"
+refused "chain --n 10000 --out (its events alone take 6.4 GB)" '^granwave chain: n: the trace of 10000 beads needs .* at any dt-out' \
+    chain --n 10000 --out "$tmp/o"
+refused "chain --n 2000 --out at the default dt-out (9.4 GB)" '^granwave chain: dt-out: .* raise dt-out to 4e-07 s' \
+    chain --n 2000 --out "$tmp/o"
 
 echo "test_hostile_chain: $passes passed, $fails failed"
 [ $fails -eq 0 ]

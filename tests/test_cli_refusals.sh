@@ -38,24 +38,8 @@ set -u
 GW=$1
 SRC=${2:-.}
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
-fails=0; passes=0
-ok() { echo "PASS: $1"; passes=$((passes+1)); }
-ko() { echo "FAIL: $1"; fails=$((fails+1)); }
-
-# refused WHAT PATTERN CMD...: exit 2 within 10 s, exactly one stderr line that
-# matches PATTERN, no sanitizer report, nothing in $tmp/o
-refused() {
-    local what=$1 pat=$2; shift 2
-    rm -rf "$tmp/o"
-    timeout -s KILL 10 "$GW" "$@" >"$tmp/stdout" 2>"$tmp/stderr" </dev/null
-    local rc=$?
-    if [ $rc -ne 2 ]; then ko "$what: exit $rc, expected 2 ($(head -c 200 "$tmp/stderr"))"; return; fi
-    if [ "$(wc -l <"$tmp/stderr")" -ne 1 ]; then ko "$what: $(wc -l <"$tmp/stderr") stderr lines"; cat "$tmp/stderr"; return; fi
-    if ! grep -qE -- "$pat" "$tmp/stderr"; then ko "$what: message does not match '$pat': $(cat "$tmp/stderr")"; return; fi
-    if grep -qE 'Sanitizer|runtime error' "$tmp/stderr"; then ko "$what: sanitizer report"; return; fi
-    if [ -e "$tmp/o" ]; then ko "$what: wrote $tmp/o ($(ls "$tmp/o" 2>/dev/null | tr '\n' ' '))"; return; fi
-    ok "$what"
-}
+# shellcheck source=tests/refusal_lib.sh
+. "$(dirname "${BASH_SOURCE[0]}")/refusal_lib.sh"
 
 # --- 1: lists checked item by item inside the parser
 refused "wavespeed --vimp with a negative item" 'wavespeed --vimp: item 2 is -0.3' wavespeed --vimp 0.1,-0.3 --out "$tmp/o"

@@ -1,0 +1,25 @@
+#!/bin/bash
+# refusal_lib.sh: sourced by the input-handling tests (test_cli_refusals.sh,
+# test_hostile_chain.sh, test_hostile_layer.sh) after they set GW (the program),
+# SRC (the source tree) and tmp (a scratch directory removed on exit). Gives the
+# counters and the refusal check they share:
+#   refused WHAT PATTERN CMD...: exit 2 within REFUSE_TIMEOUT seconds (20), exactly
+#   one stderr line matching PATTERN, no sanitizer report, nothing printed on
+#   stdout and nothing at $tmp/o (the --out the cases name).
+fails=0; passes=0
+ok() { echo "PASS: $1"; passes=$((passes+1)); }
+ko() { echo "FAIL: $1"; fails=$((fails+1)); }
+
+refused() {
+    local what=$1 pat=$2; shift 2
+    rm -rf "$tmp/o"
+    timeout -s KILL "${REFUSE_TIMEOUT:-20}" "$GW" "$@" >"$tmp/stdout" 2>"$tmp/stderr" </dev/null
+    local rc=$?
+    if [ $rc -ne 2 ]; then ko "$what: exit $rc, expected 2 ($(head -c 300 "$tmp/stderr"))"; return; fi
+    if [ "$(wc -l <"$tmp/stderr")" -ne 1 ]; then ko "$what: $(wc -l <"$tmp/stderr") stderr lines"; cat "$tmp/stderr"; return; fi
+    if ! grep -qE -- "$pat" "$tmp/stderr"; then ko "$what: message does not match '$pat': $(cat "$tmp/stderr")"; return; fi
+    if grep -qE 'Sanitizer|runtime error' "$tmp/stderr"; then ko "$what: sanitizer report"; return; fi
+    if [ -e "$tmp/o" ]; then ko "$what: wrote $tmp/o ($(ls "$tmp/o" 2>/dev/null | tr '\n' ' '))"; return; fi
+    if [ -s "$tmp/stdout" ]; then ko "$what: printed on stdout"; return; fi
+    ok "$what"
+}

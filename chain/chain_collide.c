@@ -400,6 +400,10 @@ int gw_chain_collide(const gw_chain *c, const gw_chain_run_opts *o, gw_chain_res
         sp.dt = tc / (o->steps_per_tc > 0 ? o->steps_per_tc : 400.0);
     /* and at least t_expect / step steps of O(n) each: bounded before the run
      * (the RK4 step, or the largest step of cvode/arkode) */
+    r->run_t_max = t_max;
+    r->run_dt_out = dt_out;
+    r->run_dt = sp.dt;
+    r->run_dt_max = sp.dt_max;
     if ((rc = chain_steps_check(type, &sp, t_expect, "the collision", err)) != GW_OK)
         goto done;
 

@@ -471,6 +471,9 @@ typedef struct gw_layer_impact_result {
     double *spec_strain, *spec_kin; /* [spec_len * nrings] one-sided power spectral
                                        density of each ring's strain-energy increase
                                        and kinetic energy (gw_xcorr_psd), J^2/Hz */
+    const char *method;     /* the solver variant run, default resolved ("adams" for
+                               cvode, "erk" for arkode, "none" for verlet and rk4;
+                               static text), for the provenance */
 } gw_layer_impact_result;
 
 void gw_layer_impact_result_free(gw_layer_impact_result *r);

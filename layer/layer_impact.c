@@ -284,6 +284,7 @@ int gw_layer_impact(const gw_layer_sample *smp, const gw_layer_params *lp0,
         gw_layer_free(L);
         return rc;
     }
+    res->method = gw_solver_method_used(type, L->sp.method); /* cvode: adams unless asked */
     /* a fixed step is bounded by the work it takes to t-max, once the contact
      * list is built and before the series are allocated: steps x (particles +
      * listed contacts) at most 1e10 (the default impact to T_f takes 1.3e7

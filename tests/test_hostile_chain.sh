@@ -34,6 +34,11 @@
 #    every chain speed (and drop height) now lies in [1e-9, 1e3] m/s.
 #  7 the trace stored for --out grew without bound (samples x beads); its memory is
 #    bounded before the run (4 GiB).
+#  8 provenance that was not what ran: chain's settings (--json and the --out
+#    files' headers) recorded the flags as given, t_max 0, dt_out 0, dt 0 (rk4),
+#    dt_max 0 and method "default", and left out --energy-tol; they now record the
+#    values the run used, defaults resolved (t_max = 20 (n T_q + tau_1), dt_out =
+#    tau_1/200, the RK4 step T_c/400, the step cap, bdf/erk/none).
 set -u
 GW=$1
 SRC=${2:-.}
@@ -188,6 +193,33 @@ refused "chain --n 10000 --out (its events alone take 6.4 GB)" '^granwave chain:
     chain --n 10000 --out "$tmp/o"
 refused "chain --n 2000 --out at the default dt-out (9.4 GB)" '^granwave chain: dt-out: .* raise dt-out to 4e-07 s' \
     chain --n 2000 --out "$tmp/o"
+
+# --- 8: the settings recorded are those run, defaults resolved (they were the raw
+# flags: t_max 0, dt_out 0, dt 0, dt_max 0, method "default"; energy_tol missing)
+if runs "chain --n 3 --solver rk4 --json" "$tmp/s.json" chain --n 3 --solver rk4 --energy-tol 0.5 --json; then
+    jcheck "  t_max = 20 (n T_q + tau_1), dt_out = tau_1/200, dt = T_c/400 = T_q/800 (to 1e-12)" "$tmp/s.json" \
+        "(lambda s, c: abs(s['t_max'] / (20 * (3 * c['t_q'] + c['tau_1'])) - 1) < 1e-12 and abs(s['dt_out'] / (c['tau_1'] / 200) - 1) < 1e-12 and abs(s['dt'] / (c['t_q'] / 800) - 1) < 1e-12)(j['settings']['solver'], j['closed_forms'])"
+    jcheck "  method none for rk4, a step cap below tau_1, energy_tol 0.5 recorded" "$tmp/s.json" \
+        "j['settings']['solver']['method'] == 'none' and 0 < j['settings']['solver']['dt_max'] < j['closed_forms']['tau_1'] and j['settings']['solver']['energy_tol'] == 0.5"
+fi
+runs "chain --n 2 --json (cvode)" "$tmp/s.json" chain --n 2 --json &&
+    jcheck "  cvode's default method recorded as bdf" "$tmp/s.json" "j['settings']['solver']['method'] == 'bdf'"
+runs "chain --n 2 --solver arkode --json" "$tmp/s.json" chain --n 2 --solver arkode --json &&
+    jcheck "  arkode's default method recorded as erk" "$tmp/s.json" "j['settings']['solver']['method'] == 'erk'"
+if runs "chain --n 3 --solver rk4 --out" "$tmp/s.txt" chain --n 3 --solver rk4 --energy-tol 0.5 --out "$tmp/run"; then
+    "$PY" - "$tmp/run" <<'PYEOF' >"$tmp/pyout" 2>&1 && ok "  the --out header's settings are the JSON's, and the samples are dt_out apart" || ko "  --out header: $(cat "$tmp/pyout")"
+import json, sys
+d = sys.argv[1]
+hdr = [l for l in open(d + "/chain_wall_force.csv") if l.startswith("# settings: ")][0]
+h = json.loads(hdr[len("# settings: "):])
+j = json.load(open(d + "/chain.json"))
+assert h == j["settings"], (h, j["settings"])
+rows = [l.split(",") for l in open(d + "/chain_wall_force.csv") if l[0].isdigit()]
+dt = float(rows[2][0]) - float(rows[1][0])
+assert abs(dt / h["solver"]["dt_out"] - 1) < 1e-9, (dt, h["solver"]["dt_out"])
+assert h["solver"]["t_max"] > 0 and h["solver"]["dt"] > 0 and h["solver"]["method"] == "none"
+PYEOF
+fi
 
 echo "test_hostile_chain: $passes passed, $fails failed"
 [ $fails -eq 0 ]

@@ -20,6 +20,10 @@
 #  5 options without effect: layer-impact --dt with cvode or arkode (their
 #    steps come from the tolerances), layer-stats --fit, --gamma-deg and
 #    --delta-rm on a table without a bouncing diagram.
+#  6 provenance that was not what ran: layer-impact's settings (--json, the
+#    --out headers) recorded method "default" for every solver, while cvode ran
+#    Adams (the layer's own default, not cvode's BDF) and arkode ERK; they now
+#    record the variant run (adams, erk, none for verlet and rk4).
 set -u
 GW=$1
 SRC=${2:-.}
@@ -139,6 +143,20 @@ for opt in "--delta-rm 0.5" "--gamma-deg 1" "--fit beta"; do
         "layer-stats ${opt%% *}: has no effect: the table has no bouncing diagram" layer-stats "$R" $opt --out "$tmp/o"
 done
 runs "layer-stats --delta-rm on a diagram table" layer-stats "$SRC/data/measured/layer_diagram/results.csv" --delta-rm 0.5 --json
+
+# --- 6: the solver variant recorded is the one run ----------------------------
+S6=$SRC/data/measured/restitution_full/sample.txt
+for c in "verlet none" "rk4 none" "cvode adams" "arkode erk"; do
+    set -- $c
+    rm -rf "$tmp/o6"
+    if runs "layer-impact --solver $1 --out (t-max 2e-4)" layer-impact --sample "$S6" --solver "$1" --t-max 2e-4 --out "$tmp/o6"; then
+        m=$(/usr/bin/python3 -c "import json,sys; print(json.load(open(sys.argv[1]))['settings']['solver']['method'])" "$tmp/o6/impact.json")
+        h=$(grep -c "\"method\":\"$2\"" "$tmp/o6/ledger.csv")
+        if [ "$m" = "$2" ] && [ "$h" = 1 ]; then ok "  $1 recorded as method $2 in impact.json and ledger.csv's header"
+        else ko "  $1: method '$m' in impact.json, $h header lines with \"$2\""; fi
+    fi
+done
+rm -rf "$tmp/o6"
 
 echo "test_hostile_layer: $passes passed, $fails failed"
 [ $fails -eq 0 ]

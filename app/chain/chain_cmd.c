@@ -52,8 +52,20 @@ cJSON *chain_result_json(const chain_cli *c, const gw_chain_result *r, double wa
     cJSON_AddNumberToObject(th, "f_max_1", gw_chain_fmax1(p->mass, p->kwall, p->v_imp));
     cJSON_AddNumberToObject(th, "t_q", gw_chain_tq_theory(p->mass, p->k, p->v_imp));
     cJSON_AddNumberToObject(th, "k_c", gw_chain_kc(p->k));
-    cJSON_AddItemToObject(o, "settings", chain_cli_settings_json(c));
+    cJSON *settings = chain_cli_settings_json(c);
+    chain_cli_settings_run(settings, r);
+    cJSON_AddItemToObject(o, "settings", settings);
     return o;
+}
+
+/* The provenance header of the --out files: the settings as run. */
+static char *run_header(const chain_cli *c, const gw_chain_result *r, int argc, char **argv)
+{
+    cJSON *o = chain_cli_settings_json(c);
+    chain_cli_settings_run(o, r);
+    char *h = gw_cli_provenance("chain", argc, argv, o);
+    cJSON_Delete(o);
+    return h;
 }
 
 static void print_text(const chain_cli *c, const gw_chain_result *r)
@@ -115,7 +127,7 @@ int gw_cmd_chain(int argc, char **argv)
         fprintf(stderr, "granwave chain: %s\n", err.msg);
         code = rc == GW_EINVAL ? 2 : 1;
         if (c.out && code == 1) { /* keep what was computed: the trace up to the failure and its state */
-            char *hdr = chain_cli_header(&c, "chain", argc, argv);
+            char *hdr = run_header(&c, &r, argc, argv);
             char path[4096];
             gw_err werr = {{0}};
             cJSON *o = chain_result_json(&c, &r, wall_ms);
@@ -132,7 +144,7 @@ int gw_cmd_chain(int argc, char **argv)
         }
     } else {
         if (c.out) {
-            char *hdr = chain_cli_header(&c, "chain", argc, argv);
+            char *hdr = run_header(&c, &r, argc, argv);
             char path[4096];
             cJSON *o = chain_result_json(&c, &r, wall_ms);
             if (gw_mkdir_p(c.out, &err) != GW_OK ||

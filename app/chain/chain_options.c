@@ -257,7 +257,8 @@ cJSON *chain_cli_settings_json(const chain_cli *c)
     cJSON_AddNumberToObject(m, "restitution_v", c->restitution_v > 0 ? c->restitution_v : p->v_imp);
     cJSON *s = cJSON_AddObjectToObject(o, "solver");
     cJSON_AddStringToObject(s, "name", c->solver);
-    cJSON_AddStringToObject(s, "method", c->method);
+    cJSON_AddStringToObject(s, "method", gw_solver_method_used(c->run.solver ? c->run.solver : gw_solver_cvode,
+                                                               c->run.sp.method));
     cJSON_AddNumberToObject(s, "rtol", c->run.sp.rtol);
     cJSON_AddNumberToObject(s, "atol", c->run.sp.atol);
     cJSON_AddNumberToObject(s, "dt", c->run.sp.dt);
@@ -267,7 +268,19 @@ cJSON *chain_cli_settings_json(const chain_cli *c)
     cJSON_AddNumberToObject(s, "max_steps", (double)c->run.sp.max_steps);
     cJSON_AddNumberToObject(s, "t_max", c->run.t_max);
     cJSON_AddNumberToObject(s, "dt_out", c->run.dt_out);
+    cJSON_AddNumberToObject(s, "energy_tol", c->run.energy_tol);
     return o;
+}
+
+void chain_cli_settings_run(cJSON *settings, const gw_chain_result *r)
+{
+    cJSON *s = cJSON_GetObjectItemCaseSensitive(settings, "solver");
+    const struct {
+        const char *key;
+        double v;
+    } used[] = {{"dt", r->run_dt}, {"dt_max", r->run_dt_max}, {"t_max", r->run_t_max}, {"dt_out", r->run_dt_out}};
+    for (size_t i = 0; s && i < sizeof used / sizeof used[0]; i++)
+        cJSON_ReplaceItemInObjectCaseSensitive(s, used[i].key, cJSON_CreateNumber(used[i].v));
 }
 
 char *chain_cli_header(const chain_cli *c, const char *cmd, int argc, char **argv)

@@ -55,6 +55,9 @@ void chain_cli_free(chain_cli *c);
 
 /* A JSON object with the model parameters and solver settings of a run. */
 cJSON *chain_cli_settings_json(const chain_cli *c);
+/* Replace the solver's dt, dt_max, t_max and dt_out of settings (0 = default)
+ * with those run r used, defaults resolved: for a command of one run. */
+void chain_cli_settings_run(cJSON *settings, const gw_chain_result *r);
 
 /* The JSON object `granwave chain` prints for one collision r run with c's
  * settings (also the drop's first_collision). */

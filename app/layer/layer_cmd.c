@@ -329,7 +329,7 @@ static cJSON *impact_json(const impact_cli *c, const gw_layer_impact_result *r,
     cJSON_AddItemToObject(s, "material", mat_json(&c->m.lp));
     cJSON *so = cJSON_AddObjectToObject(s, "solver");
     cJSON_AddStringToObject(so, "name", c->solver);
-    cJSON_AddStringToObject(so, "method", c->method);
+    cJSON_AddStringToObject(so, "method", r->method ? r->method : c->method);
     cJSON_AddNumberToObject(so, "rtol", sp->rtol);
     cJSON_AddNumberToObject(so, "atol", sp->atol);
     cJSON_AddNumberToObject(so, "dt", r->dt > 0 ? r->dt : sp->dt);

@@ -64,6 +64,15 @@ const char *gw_solver_method_name(int method)
     return "unknown";
 }
 
+const char *gw_solver_method_used(const gw_solver_type *type, int method)
+{
+    if (type == gw_solver_rk4 || type == gw_solver_verlet)
+        return "none";
+    if (method == GW_METHOD_DEFAULT)
+        return type == gw_solver_arkode ? gw_solver_method_name(GW_ARKODE_ERK) : gw_solver_method_name(GW_CVODE_BDF);
+    return gw_solver_method_name(method);
+}
+
 int gw_solver_tolerances_check(double rtol, double atol, const char *rname, const char *aname,
                                gw_err *err)
 {

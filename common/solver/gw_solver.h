@@ -130,6 +130,9 @@ int gw_solver_tolerances_unused_check(const gw_solver_type *type, const struct g
 /* Backend variant by name ("bdf", "adams", "erk", "dirk", "imex"); -1 if unknown. */
 int gw_solver_method_find(const char *name);
 const char *gw_solver_method_name(int method);
+/* The variant a backend runs for method (GW_METHOD_DEFAULT resolved: cvode
+ * "bdf", arkode "erk"; "none" for rk4 and verlet), for provenance. */
+const char *gw_solver_method_used(const gw_solver_type *type, int method);
 
 typedef struct gw_solver_stats {
     long steps;      /* internal steps taken (all restarts summed) */

@@ -34,6 +34,11 @@
 #    every chain speed (and drop height) now lies in [1e-9, 1e3] m/s.
 #  7 the trace stored for --out grew without bound (samples x beads); its memory is
 #    bounded before the run (4 GiB).
+#  8 the trace of drop --out (every bead at each sample and event) was not bounded:
+#    --n 1000 --t-max 1 --dt-out 1e-7 grew past 1.3 GB in a minute toward 160 GB;
+#    and a trace within the memory bound wrote up to 3.5 times its memory as CSV
+#    and HDF5 (chain --n 1000 --out: about 8 GB). Both bounded before the run at
+#    5 GB of files (28 B a value, 1.4 GB in memory).
 set -u
 GW=$1
 SRC=${2:-.}
@@ -198,12 +203,36 @@ runs "chain --vimp 1e-9 (the range's lower end)" "$tmp/v.json" chain --vimp 1e-9
 # --- 7: the stored trace of chain --out held every bead's x and v at every sample
 # and event in memory: --n 1000 --dt-out 1e-9 grew toward 400 GB, --n 10000 at the
 # default dt-out toward 235 GB (until the kernel killed it); bounded before the run
-refused "chain --n 1000 --dt-out 1e-9 --out (a 400 GB trace)" '^granwave chain: dt-out: the trace of 1000 beads .* above the 4.3 GB limit: raise dt-out to' \
+refused "chain --n 1000 --dt-out 1e-9 --out (a 400 GB trace)" '^granwave chain: dt-out: the trace of 1000 beads .* above the 5 GB limit: raise dt-out to' \
     chain --n 1000 --dt-out 1e-9 --out "$tmp/o"
-refused "chain --n 10000 --out (its events alone take 6.4 GB)" '^granwave chain: n: the trace of 10000 beads needs .* at any dt-out' \
+refused "chain --n 10000 --out (its events alone take 6.4 GB)" '^granwave chain: n: the trace of 10000 beads would write .* at any dt-out' \
     chain --n 10000 --out "$tmp/o"
-refused "chain --n 2000 --out at the default dt-out (9.4 GB)" '^granwave chain: dt-out: .* raise dt-out to 4e-07 s' \
+refused "chain --n 2000 --out at the default dt-out (9.4 GB)" '^granwave chain: dt-out: .* raise dt-out to 1.4e-06 s' \
     chain --n 2000 --out "$tmp/o"
+
+# --- 8: files and the drop's trace (5 GB of files, 28 B a value)
+refused "chain --n 1000 --out at the default dt-out (8.2 GB of files)" \
+    '^granwave chain: dt-out: the trace of 1000 beads at .* would write about 8.2. GB .* above the 5 GB limit: raise dt-out to 3e-07 s' \
+    chain --n 1000 --out "$tmp/o"
+refused "drop --n 1000 --t-max 1 --dt-out 1e-7 --out (160 GB in memory)" \
+    '^granwave drop --dt-out: the trace of 1000 beads at 1e-07 s .*160 GB in memory.* raise dt-out to 1.3e-05 s or more' \
+    drop --n 1000 --t-max 1 --dt-out 1e-7 --out "$tmp/o"
+refused "drop --n 5000 --out (its events alone)" '^granwave drop --n: the trace of 5000 beads would write .* at any dt-out' \
+    drop --n 5000 --out "$tmp/o"
+refused "drop --n 10 --t-max 1 --dt-out 1.2e-7 --out (5.1 GB)" '^granwave drop --dt-out: .* raise dt-out to 1.3e-07 s or more' \
+    drop --n 10 --t-max 1 --dt-out 1.2e-7 --out "$tmp/o"
+# the value suggested passes the bound (the run starts: stopped after 2 s)
+rm -rf "$tmp/o"
+timeout 2 "$GW" drop --n 10 --t-max 1 --dt-out 1.3e-7 --out "$tmp/o" >/dev/null 2>"$tmp/stderr" </dev/null
+rc=$?
+if [ $rc -ne 2 ]; then ok "drop --dt-out 1.3e-7, the value suggested, is not refused"; else ko "drop --dt-out 1.3e-7 refused: $(cat "$tmp/stderr")"; fi
+rm -rf "$tmp/o"
+# without --out nothing is stored: the same drop runs
+refused "drop --n 1000 --t-max 1e-4 --dt-out 1e-9 --out (5.6 GB of files)" '^granwave drop --dt-out: .* above the 5 GB limit' \
+    drop --n 1000 --t-max 1e-4 --dt-out 1e-9 --out "$tmp/o"
+runs "drop --n 1000 --t-max 1e-4 --dt-out 1e-9 without --out (no trace kept)" "$tmp/d.json" \
+    drop --n 1000 --t-max 1e-4 --dt-out 1e-9 --json &&
+    jcheck "  its first collision is reported" "$tmp/d.json" "j['n'] == 1000"
 
 echo "test_hostile_chain: $passes passed, $fails failed"
 [ $fails -eq 0 ]

@@ -20,6 +20,11 @@
 #  5 options without effect: layer-impact --dt with cvode or arkode (their
 #    steps come from the tolerances), layer-stats --fit, --gamma-deg and
 #    --delta-rm on a table without a bouncing diagram.
+#  6 a pluviation's work was not bounded: layer-make --n 100000 at the defaults
+#    meant up to 3e10 particle-steps (hours, silently); --rm 1e-3 --n 3000 with
+#    the 0.1 m skin listed 1.7e6 pairs (500 steps > 30 s of 3e5); --rm 1e-3
+#    --n 24000 held 2.3 GB of listed pairs. Bounded before the run as an
+#    impact's: 1e10 particle-steps (particles + listed pairs) and 1e7 pairs.
 set -u
 GW=$1
 SRC=${2:-.}
@@ -154,6 +159,22 @@ for opt in "--delta-rm 0.5" "--gamma-deg 1" "--fit beta"; do
         "layer-stats ${opt%% *}: has no effect: the table has no bouncing diagram" layer-stats "$R" $opt --out "$tmp/o"
 done
 runs "layer-stats --delta-rm on a diagram table" layer-stats "$SRC/data/measured/layer_diagram/results.csv" --delta-rm 0.5 --json
+
+# --- 6: the pluviation's work and listed pairs, bounded before the run --------
+refused "layer-make --n 100000 (1.5e11 particle-steps)" \
+    "^granwave layer-make --n: 100000 particles over 3e\+05 steps .* more than 1e10: lower n to 6666" \
+    layer-make --n 100000 --out "$tmp/o"
+refused "layer-make --rm 1e-3 --n 3000 (the 0.1 m skin lists 1.7e6 pairs)" \
+    "^granwave layer-make --skin: 0.1 m lists about 1.65e\+06 pairs .* lower the skin" \
+    layer-make --rm 1e-3 --n 3000 --out "$tmp/o"
+refused "layer-make --rm 1e-3 --dt 1e-5 --n 24000 --t-max 1e-4 (2.3 GB of pairs)" \
+    "^granwave layer-make --skin: .* 1e7 pairs" \
+    layer-make --rm 1e-3 --dt 1e-5 --n 24000 --t-max 1e-4 --out "$tmp/o"
+refused "layer-make --n 6667 (just above 1e10)" "lower n to 6666" layer-make --n 6667 --out "$tmp/o"
+runs "layer-make --n 6666 --t-max 1e-3 (the n suggested, a short run)" layer-make --n 6666 --t-max 1e-3 --out "$tmp/s6666.txt"
+runs "layer-make --rm 1e-3 --n 3000 --skin 1e-4 --t-max 1e-3 (the skin lowered)" \
+    layer-make --rm 1e-3 --n 3000 --skin 1e-4 --t-max 1e-3 --out "$tmp/s3000.txt"
+rm -f "$tmp/s6666.txt" "$tmp/s3000.txt"
 
 echo "test_hostile_layer: $passes passed, $fails failed"
 [ $fails -eq 0 ]

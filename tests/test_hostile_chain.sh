@@ -39,6 +39,9 @@
 #    and a trace within the memory bound wrote up to 3.5 times its memory as CSV
 #    and HDF5 (chain --n 1000 --out: about 8 GB). Both bounded before the run at
 #    5 GB of files (28 B a value, 1.4 GB in memory).
+#  9 dispersion's work (sites x samples x RK4 steps) was not bounded:
+#    --steps-per-sample 100000 at the defaults meant 2.1e11 bead-steps (about
+#    3 h, no line said so); bounded before the run at 1e10.
 set -u
 GW=$1
 SRC=${2:-.}
@@ -233,6 +236,16 @@ refused "drop --n 1000 --t-max 1e-4 --dt-out 1e-9 --out (5.6 GB of files)" '^gra
 runs "drop --n 1000 --t-max 1e-4 --dt-out 1e-9 without --out (no trace kept)" "$tmp/d.json" \
     drop --n 1000 --t-max 1e-4 --dt-out 1e-9 --json &&
     jcheck "  its first collision is reported" "$tmp/d.json" "j['n'] == 1000"
+
+# --- 9: dispersion's work, bounded before the run (1e10 bead-steps)
+refused "dispersion --steps-per-sample 100000 (2.1e11 bead-steps, about 3 h)" \
+    '^granwave dispersion --steps-per-sample: 100000 steps x 2048 samples x 1024 sites are 2.1e\+11 bead-steps, more than 1e10: at most 4768 steps per sample here' \
+    dispersion --steps-per-sample 100000 --out "$tmp/o"
+refused "dispersion --n 65536 --t-samples 2048 --steps-per-sample 75 (the largest transform)" \
+    'at most 74 steps per sample here' dispersion --n 65536 --t-samples 2048 --steps-per-sample 75 --out "$tmp/o"
+runs "dispersion --n 16 --t-samples 64 --steps-per-sample 100000 (1e8 bead-steps)" "$tmp/d.json" \
+    dispersion --n 16 --t-samples 64 --steps-per-sample 100000 --json &&
+    jcheck "  it runs with the steps asked for" "$tmp/d.json" "j['settings']['solver']['steps_per_sample'] == 100000 and j['steps'] >= 100000 * 63"
 
 echo "test_hostile_chain: $passes passed, $fails failed"
 [ $fails -eq 0 ]

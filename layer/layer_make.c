@@ -339,6 +339,15 @@ static int make_clumps(const gw_layer_params *lp0, const gw_layer_make_params *m
         free(b);
         return rc;
     }
+    /* the work bound of check_work on the member discs alone (--clumps --n
+     * 100000 ran on for hours as the discs' pluviation did) */
+    const double steps = m->t_max / m->dt;
+    if (steps * nd > 1e10) {
+        free(b);
+        return gw_err_set(err, GW_EINVAL, "n: %d clumps (%d discs) over %.3g steps to t-max = %g s are about %.3g "
+                          "particle-steps, more than 1e10: lower n to %.0f, or t-max, or raise dt", m->n, nd, steps,
+                          m->t_max, steps * nd, floor(1e10 / steps * m->n / nd));
+    }
     rc = settle_all(&lp, m, nd, b, &t, &ke, &conv, res, err);
     /* keep the clumps lying wholly below height_rm R_m; ids renumbered 0.. */
     int kept = 0, nbody = 0;

@@ -170,6 +170,8 @@ refused "layer-make --rm 1e-3 --n 3000 (the 0.1 m skin lists 1.7e6 pairs)" \
 refused "layer-make --rm 1e-3 --dt 1e-5 --n 24000 --t-max 1e-4 (2.3 GB of pairs)" \
     "^granwave layer-make --skin: .* 1e7 pairs" \
     layer-make --rm 1e-3 --dt 1e-5 --n 24000 --t-max 1e-4 --out "$tmp/o"
+refused "layer-make --clumps --n 100000 (its member discs)" "^granwave layer-make --n: 100000 clumps \\([0-9]+ discs\\) .* more than 1e10: lower n to" \
+    layer-make --clumps --n 100000 --out "$tmp/o"
 refused "layer-make --n 6667 (just above 1e10)" "lower n to 6666" layer-make --n 6667 --out "$tmp/o"
 runs "layer-make --n 6666 --t-max 1e-3 (the n suggested, a short run)" layer-make --n 6666 --t-max 1e-3 --out "$tmp/s6666.txt"
 runs "layer-make --rm 1e-3 --n 3000 --skin 1e-4 --t-max 1e-3 (the skin lowered)" \

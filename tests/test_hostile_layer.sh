@@ -25,6 +25,9 @@
 #    the 0.1 m skin listed 1.7e6 pairs (500 steps > 30 s of 3e5); --rm 1e-3
 #    --n 24000 held 2.3 GB of listed pairs. Bounded before the run as an
 #    impact's: 1e10 particle-steps (particles + listed pairs) and 1e7 pairs.
+#  7 an impact's series were bounded in memory (2.1 GB) but written with --out
+#    at about 25 B a value: --rings 1000 --t-max 0.5 --dt-out 8e-6 meant about
+#    6.3 GB of files; bounded at 5 GB of files (1.6 GB of series).
 set -u
 GW=$1
 SRC=${2:-.}
@@ -177,6 +180,13 @@ runs "layer-make --n 6666 --t-max 1e-3 (the n suggested, a short run)" layer-mak
 runs "layer-make --rm 1e-3 --n 3000 --skin 1e-4 --t-max 1e-3 (the skin lowered)" \
     layer-make --rm 1e-3 --n 3000 --skin 1e-4 --t-max 1e-3 --out "$tmp/s3000.txt"
 rm -f "$tmp/s6666.txt" "$tmp/s3000.txt"
+
+# --- 7: an impact's files (25 B a value of its series), bounded before the run -
+refused "layer-impact --rings 1000 --t-max 0.5 --dt-out 8e-6 (about 6.3 GB of files)" \
+    "^granwave layer-impact --dt-out: 62502 samples x 1000 rings need 2.01 GB of series and about 6.27 GB of files with --out, above the 5 GB limit" \
+    layer-impact --sample "$S" --rings 1000 --t-max 0.5 --dt-out 8e-6 --out "$tmp/o"
+runs "layer-impact --rings 1000 --t-max 1e-3 --dt-out 1e-5 (small series)" \
+    layer-impact --sample "$S" --rings 1000 --t-max 1e-3 --dt-out 1e-5 --skin 1e-3
 
 echo "test_hostile_layer: $passes passed, $fails failed"
 [ $fails -eq 0 ]

@@ -365,25 +365,11 @@ int gw_chain_collide(const gw_chain *c, const gw_chain_run_opts *o, gw_chain_res
     }
     /* A stored trace (gw_chain_trace_sample) keeps t, the wall force and every
      * bead's x and v at each sample and event (about 4 events per bead): bound
-     * its memory before the run (4 GiB; 1000 beads at the default dt-out take
-     * 2.4 GB). */
-    if (o->sample == gw_chain_trace_sample) {
-        const double limit = 4294967296.0, row = (2.0 * n + 2) * sizeof(double), events = 4.0 * n + 2;
-        const double rows = t_expect / dt_out + events;
-        if (rows * row > limit) {
-            const double free_rows = limit / row - events; /* samples left for dt-out */
-            if (free_rows < 16)
-                rc = gw_err_set(err, GW_EINVAL, "n: the trace of %d beads needs about %.3g GB at any dt-out "
-                                "(its contact events alone), above the 4.3 GB limit: run without storing it (the "
-                                "program: without --out)",
-                                n, events * row / 1e9);
-            else
-                rc = gw_err_set(err, GW_EINVAL, "dt-out: the trace of %d beads at %g s (about %.3g samples over "
-                                "%.3g s) needs about %.3g GB, above the 4.3 GB limit: raise dt-out to %.2g s or more",
-                                n, dt_out, rows, t_expect, rows * row / 1e9, t_expect / free_rows);
-            goto done;
-        }
-    }
+     * it before the run (--n 1000 --dt-out 1e-9 grew toward 400 GB; written,
+     * 28 B a value, 1000 beads at the default dt-out came to 8 GB of files). */
+    if (o->sample == gw_chain_trace_sample &&
+        (rc = gw_chain_trace_check(n, t_expect, dt_out, 4.0 * n + 2, err)) != GW_OK)
+        goto done;
     double dscale = gw_chain_dmax1(gw_chain_bead_mass(c, 0), p->kwall, p->v_imp);
     st.dtol = 1e-9 * dscale;
     gw_solver_params sp = o->sp;

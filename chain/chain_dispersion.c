@@ -115,6 +115,15 @@ int gw_chain_disp_params_validate(const gw_chain_disp_params *p, gw_err *err)
                           dts, wc, M_PI / dts);
     if (p->steps_per_sample < 1 || p->steps_per_sample > 100000)
         return gw_err_set(err, GW_EINVAL, "steps-per-sample: %d outside [1, 100000]", p->steps_per_sample);
+    /* the run's work, sites x samples x steps, bounded as the layer's (1e10):
+     * the largest transform at the default 16 steps is 2.1e9 bead-steps (about
+     * 2 min); --steps-per-sample 100000 at the defaults meant 2.1e11 (about 3 h,
+     * measured 1.7e7 bead-steps/s) and up to 1.3e13 with no line said */
+    const double work = (double)disp_nx(p) * p->t_samples * p->steps_per_sample;
+    if (work > 1e10)
+        return gw_err_set(err, GW_EINVAL, "steps-per-sample: %d steps x %d samples x %d sites are %.3g bead-steps, "
+                          "more than 1e10: at most %.0f steps per sample here", p->steps_per_sample, p->t_samples,
+                          disp_nx(p), work, floor(1e10 / ((double)disp_nx(p) * p->t_samples)));
     /* RK4 is stable for h omega < 2.8; at h omega_c = 1 its frequency error is
      * already ~1e-2, so refuse coarser steps. */
     if (wc * dts / p->steps_per_sample > 1.0)

@@ -108,13 +108,17 @@ int gw_layer_impact_check(const gw_layer_sample *smp, const gw_layer_impact_para
     if (p->t_max / p->dt_out > 2e6)
         return gw_err_set(err, GW_EINVAL, "dt-out: %g s gives more than 2e6 samples up to t-max", p->dt_out);
     /* the series are held in memory (alloc_series): time, ledger (8), block (4)
-     * and 4 per ring at each sample; refused before allocating above 2 GiB
-     * (12 rings: 488 B a sample, the 2e6 samples take 0.98 GB) */
-    const double bytes = (ceil(p->t_max / p->dt_out) + 2) * (13.0 + 4.0 * p->nrings) * sizeof(double);
-    if (bytes > 2147483648.0)
-        return gw_err_set(err, GW_EINVAL, "dt-out: %.0f samples x %d rings need %.3g GB of series, above the "
-                          "2.1 GB limit (raise dt-out, lower t-max or rings)", ceil(p->t_max / p->dt_out) + 2,
-                          p->nrings, bytes / 1e9);
+     * and 4 per ring at each sample (12 rings: 488 B a sample, the 2e6 samples
+     * take 0.98 GB); written with --out (crowns, spectra, HDF5) they take about
+     * 25 B a value (24.8 measured with 200 rings). Refused before allocating
+     * when the files would pass 5 GB (1.6 GB of series): the 2.1 GB bound on
+     * memory before let --rings 1000 --t-max 0.5 --dt-out 8e-6 through, about
+     * 6.3 GB of files */
+    const double nsamp = ceil(p->t_max / p->dt_out) + 2, values = nsamp * (13.0 + 4.0 * p->nrings);
+    if (values * 25.0 > 5e9)
+        return gw_err_set(err, GW_EINVAL, "dt-out: %.0f samples x %d rings need %.3g GB of series and about %.3g GB "
+                          "of files with --out, above the 5 GB limit (raise dt-out, lower t-max or rings)", nsamp,
+                          p->nrings, values * 8 / 1e9, values * 25 / 1e9);
     const double rb = p->rb_rm * smp->rm, xc = 0.5 * smp->width + p->x;
     if (2 * rb > smp->width)
         return gw_err_set(err, GW_EINVAL, "rb-rm: a block of radius %g R_m (%g m) is wider than the box "

@@ -339,6 +339,15 @@ static int make_clumps(const gw_layer_params *lp0, const gw_layer_make_params *m
         free(b);
         return rc;
     }
+    /* the work bound of check_work on the member discs alone (--clumps --n
+     * 100000 ran on for hours as the discs' pluviation did) */
+    const double steps = m->t_max / m->dt;
+    if (steps * nd > 1e10) {
+        free(b);
+        return gw_err_set(err, GW_EINVAL, "n: %d clumps (%d discs) over %.3g steps to t-max = %g s are about %.3g "
+                          "particle-steps, more than 1e10: lower n to %.0f, or t-max, or raise dt", m->n, nd, steps,
+                          m->t_max, steps * nd, floor(1e10 / steps * m->n / nd));
+    }
     rc = settle_all(&lp, m, nd, b, &t, &ke, &conv, res, err);
     /* keep the clumps lying wholly below height_rm R_m; ids renumbered 0.. */
     int kept = 0, nbody = 0;
@@ -385,6 +394,32 @@ static int make_clumps(const gw_layer_params *lp0, const gw_layer_make_params *m
     return settled_readable(out, err);
 }
 
+/* The pluviation's work bounded before the run, as an impact's
+ * (layer_impact.c): steps to t-max x (particles + listed pairs) at most 1e10
+ * particle-steps. The pairs are counted on the initial grid (pitch p, ncol
+ * columns; a pair is listed within R_a + R_b + skin, at most 2 r_max + skin):
+ * about n/2 (2k+1) min(ncol, 2k+1) pairs, k = floor((2 r_max + skin)/p); the
+ * settled pile lists more. Unbounded before: --n 100000 at the defaults took
+ * up to 3e10 particle-steps (hours, no line said so), --rm 1e-3 --n 3000 with
+ * the 0.1 m skin listed 1.7e6 pairs and ran 500 steps in more than 30 s of the
+ * 3e5 to t-max; --rm 1e-3 --n 24000 held 2.3 GB of pairs. */
+static int check_work(const gw_layer_make_params *m, int n, int ncol, double pitch, double rmax, double skin,
+                      gw_err *err)
+{
+    const double k = floor((2 * rmax + skin) / pitch), nrow = ceil((double)n / ncol);
+    const double listed = 0.5 * n * (fmin(nrow, 2 * k + 1) * fmin(ncol, 2 * k + 1) - 1);
+    const double steps = m->t_max / m->dt, work = steps * (n + listed);
+    if (work <= 1e10 && listed <= 1e7) /* a listed pair holds about 170 B (2.3 GB for 1.3e7) */
+        return GW_OK;
+    if (listed > 8.0 * n)
+        return gw_err_set(err, GW_EINVAL, "skin: %g m lists about %.3g pairs of the %d particles (%.3g steps to t-max, %.3g "
+                          "particle-steps; at most 1e10, and 1e7 pairs): lower the skin toward R_m = %g m",
+                          skin, listed, n, steps, work, m->rm);
+    return gw_err_set(err, GW_EINVAL, "n: %d particles over %.3g steps to t-max = %g s are about %.3g particle-steps, "
+                      "more than 1e10: lower n to %.0f, or t-max, or raise dt", n, steps, m->t_max, work,
+                      floor(1e10 / (steps * (1 + listed / n))));
+}
+
 int gw_layer_make(const gw_layer_params *lp0, const gw_layer_make_params *m,
                   gw_layer_sample *out, gw_layer_make_result *res, gw_err *err)
 {
@@ -416,7 +451,8 @@ int gw_layer_make(const gw_layer_params *lp0, const gw_layer_make_params *m,
     }
     double t, ke;
     int conv;
-    if ((rc = check_step(&lp, m, b, n, err)) != GW_OK) {
+    if ((rc = check_step(&lp, m, b, n, err)) != GW_OK ||
+        (rc = check_work(m, n, ncol, pitch, rmax, lp.skin, err)) != GW_OK) {
         free(b);
         return rc;
     }

@@ -33,12 +33,20 @@
 #  6 impact speeds below 1e-160 m/s failed at t = 0 inside the solver (exit 1):
 #    every chain speed (and drop height) now lies in [1e-9, 1e3] m/s.
 #  7 the trace stored for --out grew without bound (samples x beads); its memory is
-#    bounded before the run (4 GiB).
+#    bounded before the run (now by the files it writes, see 9).
 #  8 provenance that was not what ran: chain's settings (--json and the --out
 #    files' headers) recorded the flags as given, t_max 0, dt_out 0, dt 0 (rk4),
 #    dt_max 0 and method "default", and left out --energy-tol; they now record the
 #    values the run used, defaults resolved (t_max = 20 (n T_q + tau_1), dt_out =
 #    tau_1/200, the RK4 step T_c/400, the step cap, bdf/erk/none).
+#  9 the trace of drop --out (every bead at each sample and event) was not bounded:
+#    --n 1000 --t-max 1 --dt-out 1e-7 grew past 1.3 GB in a minute toward 160 GB;
+#    and a trace within the memory bound wrote up to 3.5 times its memory as CSV
+#    and HDF5 (chain --n 1000 --out: about 8 GB). Both bounded before the run at
+#    5 GB of files (28 B a value, 1.4 GB in memory).
+#  10 dispersion's work (sites x samples x RK4 steps) was not bounded:
+#    --steps-per-sample 100000 at the defaults meant 2.1e11 bead-steps (about
+#    3 h, no line said so); bounded before the run at 1e10.
 set -u
 GW=$1
 SRC=${2:-.}
@@ -187,11 +195,11 @@ runs "chain --vimp 1e-9 (the range's lower end)" "$tmp/v.json" chain --vimp 1e-9
 # --- 7: the stored trace of chain --out held every bead's x and v at every sample
 # and event in memory: --n 1000 --dt-out 1e-9 grew toward 400 GB, --n 10000 at the
 # default dt-out toward 235 GB (until the kernel killed it); bounded before the run
-refused "chain --n 1000 --dt-out 1e-9 --out (a 400 GB trace)" '^granwave chain: dt-out: the trace of 1000 beads .* above the 4.3 GB limit: raise dt-out to' \
+refused "chain --n 1000 --dt-out 1e-9 --out (a 400 GB trace)" '^granwave chain: dt-out: the trace of 1000 beads .* above the 5 GB limit: raise dt-out to' \
     chain --n 1000 --dt-out 1e-9 --out "$tmp/o"
-refused "chain --n 10000 --out (its events alone take 6.4 GB)" '^granwave chain: n: the trace of 10000 beads needs .* at any dt-out' \
+refused "chain --n 10000 --out (its events alone take 6.4 GB)" '^granwave chain: n: the trace of 10000 beads would write .* at any dt-out' \
     chain --n 10000 --out "$tmp/o"
-refused "chain --n 2000 --out at the default dt-out (9.4 GB)" '^granwave chain: dt-out: .* raise dt-out to 4e-07 s' \
+refused "chain --n 2000 --out at the default dt-out (9.4 GB)" '^granwave chain: dt-out: .* raise dt-out to 1.4e-06 s' \
     chain --n 2000 --out "$tmp/o"
 
 # --- 8: the settings recorded are those run, defaults resolved (they were the raw
@@ -220,6 +228,39 @@ assert abs(dt / h["solver"]["dt_out"] - 1) < 1e-9, (dt, h["solver"]["dt_out"])
 assert h["solver"]["t_max"] > 0 and h["solver"]["dt"] > 0 and h["solver"]["method"] == "none"
 PYEOF
 fi
+# --- 9: files and the drop's trace (5 GB of files, 28 B a value)
+refused "chain --n 1000 --out at the default dt-out (8.2 GB of files)" \
+    '^granwave chain: dt-out: the trace of 1000 beads at .* would write about 8.2. GB .* above the 5 GB limit: raise dt-out to 3e-07 s' \
+    chain --n 1000 --out "$tmp/o"
+refused "drop --n 1000 --t-max 1 --dt-out 1e-7 --out (160 GB in memory)" \
+    '^granwave drop --dt-out: the trace of 1000 beads at 1e-07 s .*160 GB in memory.* raise dt-out to 1.3e-05 s or more' \
+    drop --n 1000 --t-max 1 --dt-out 1e-7 --out "$tmp/o"
+refused "drop --n 5000 --out (its events alone)" '^granwave drop --n: the trace of 5000 beads would write .* at any dt-out' \
+    drop --n 5000 --out "$tmp/o"
+refused "drop --n 10 --t-max 1 --dt-out 1.2e-7 --out (5.1 GB)" '^granwave drop --dt-out: .* raise dt-out to 1.3e-07 s or more' \
+    drop --n 10 --t-max 1 --dt-out 1.2e-7 --out "$tmp/o"
+# the value suggested passes the bound (the run starts: stopped after 2 s)
+rm -rf "$tmp/o"
+timeout 2 "$GW" drop --n 10 --t-max 1 --dt-out 1.3e-7 --out "$tmp/o" >/dev/null 2>"$tmp/stderr" </dev/null
+rc=$?
+if [ $rc -ne 2 ]; then ok "drop --dt-out 1.3e-7, the value suggested, is not refused"; else ko "drop --dt-out 1.3e-7 refused: $(cat "$tmp/stderr")"; fi
+rm -rf "$tmp/o"
+# without --out nothing is stored: the same drop runs
+refused "drop --n 1000 --t-max 1e-4 --dt-out 1e-9 --out (5.6 GB of files)" '^granwave drop --dt-out: .* above the 5 GB limit' \
+    drop --n 1000 --t-max 1e-4 --dt-out 1e-9 --out "$tmp/o"
+runs "drop --n 1000 --t-max 1e-4 --dt-out 1e-9 without --out (no trace kept)" "$tmp/d.json" \
+    drop --n 1000 --t-max 1e-4 --dt-out 1e-9 --json &&
+    jcheck "  its first collision is reported" "$tmp/d.json" "j['n'] == 1000"
+
+# --- 10: dispersion's work, bounded before the run (1e10 bead-steps)
+refused "dispersion --steps-per-sample 100000 (2.1e11 bead-steps, about 3 h)" \
+    '^granwave dispersion --steps-per-sample: 100000 steps x 2048 samples x 1024 sites are 2.1e\+11 bead-steps, more than 1e10: at most 4768 steps per sample here' \
+    dispersion --steps-per-sample 100000 --out "$tmp/o"
+refused "dispersion --n 65536 --t-samples 2048 --steps-per-sample 75 (the largest transform)" \
+    'at most 74 steps per sample here' dispersion --n 65536 --t-samples 2048 --steps-per-sample 75 --out "$tmp/o"
+runs "dispersion --n 16 --t-samples 64 --steps-per-sample 100000 (1e8 bead-steps)" "$tmp/d.json" \
+    dispersion --n 16 --t-samples 64 --steps-per-sample 100000 --json &&
+    jcheck "  it runs with the steps asked for" "$tmp/d.json" "j['settings']['solver']['steps_per_sample'] == 100000 and j['steps'] >= 100000 * 63"
 
 echo "test_hostile_chain: $passes passed, $fails failed"
 [ $fails -eq 0 ]

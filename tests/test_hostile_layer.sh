@@ -24,6 +24,14 @@
 #    --out headers) recorded method "default" for every solver, while cvode ran
 #    Adams (the layer's own default, not cvode's BDF) and arkode ERK; they now
 #    record the variant run (adams, erk, none for verlet and rk4).
+#  7 a pluviation's work was not bounded: layer-make --n 100000 at the defaults
+#    meant up to 3e10 particle-steps (hours, silently); --rm 1e-3 --n 3000 with
+#    the 0.1 m skin listed 1.7e6 pairs (500 steps > 30 s of 3e5); --rm 1e-3
+#    --n 24000 held 2.3 GB of listed pairs. Bounded before the run as an
+#    impact's: 1e10 particle-steps (particles + listed pairs) and 1e7 pairs.
+#  8 an impact's series were bounded in memory (2.1 GB) but written with --out
+#    at about 25 B a value: --rings 1000 --t-max 0.5 --dt-out 8e-6 meant about
+#    6.3 GB of files; bounded at 5 GB of files (1.6 GB of series).
 set -u
 GW=$1
 SRC=${2:-.}
@@ -157,6 +165,30 @@ for c in "verlet none" "rk4 none" "cvode adams" "arkode erk"; do
     fi
 done
 rm -rf "$tmp/o6"
+# --- 7: the pluviation's work and listed pairs, bounded before the run --------
+refused "layer-make --n 100000 (1.5e11 particle-steps)" \
+    "^granwave layer-make --n: 100000 particles over 3e\+05 steps .* more than 1e10: lower n to 6666" \
+    layer-make --n 100000 --out "$tmp/o"
+refused "layer-make --rm 1e-3 --n 3000 (the 0.1 m skin lists 1.7e6 pairs)" \
+    "^granwave layer-make --skin: 0.1 m lists about 1.65e\+06 pairs .* lower the skin" \
+    layer-make --rm 1e-3 --n 3000 --out "$tmp/o"
+refused "layer-make --rm 1e-3 --dt 1e-5 --n 24000 --t-max 1e-4 (2.3 GB of pairs)" \
+    "^granwave layer-make --skin: .* 1e7 pairs" \
+    layer-make --rm 1e-3 --dt 1e-5 --n 24000 --t-max 1e-4 --out "$tmp/o"
+refused "layer-make --clumps --n 100000 (its member discs)" "^granwave layer-make --n: 100000 clumps \\([0-9]+ discs\\) .* more than 1e10: lower n to" \
+    layer-make --clumps --n 100000 --out "$tmp/o"
+refused "layer-make --n 6667 (just above 1e10)" "lower n to 6666" layer-make --n 6667 --out "$tmp/o"
+runs "layer-make --n 6666 --t-max 1e-3 (the n suggested, a short run)" layer-make --n 6666 --t-max 1e-3 --out "$tmp/s6666.txt"
+runs "layer-make --rm 1e-3 --n 3000 --skin 1e-4 --t-max 1e-3 (the skin lowered)" \
+    layer-make --rm 1e-3 --n 3000 --skin 1e-4 --t-max 1e-3 --out "$tmp/s3000.txt"
+rm -f "$tmp/s6666.txt" "$tmp/s3000.txt"
+
+# --- 8: an impact's files (25 B a value of its series), bounded before the run -
+refused "layer-impact --rings 1000 --t-max 0.5 --dt-out 8e-6 (about 6.3 GB of files)" \
+    "^granwave layer-impact --dt-out: 62502 samples x 1000 rings need 2.01 GB of series and about 6.27 GB of files with --out, above the 5 GB limit" \
+    layer-impact --sample "$S" --rings 1000 --t-max 0.5 --dt-out 8e-6 --out "$tmp/o"
+runs "layer-impact --rings 1000 --t-max 1e-3 --dt-out 1e-5 (small series)" \
+    layer-impact --sample "$S" --rings 1000 --t-max 1e-3 --dt-out 1e-5 --skin 1e-3
 
 echo "test_hostile_layer: $passes passed, $fails failed"
 [ $fails -eq 0 ]

@@ -67,3 +67,33 @@ def test_chain_speeds_below_a_nanometre_per_second_are_refused():
     ref = granwave.chain(n=1, vimp=0.3)
     # Hertz: F_max ~ v^(6/5) (docs/physics.md 1.2)
     assert r.f_max == pytest.approx(ref.f_max * (1e-9 / 0.3) ** 1.2, rel=1e-3)
+
+
+def _lattice_sample(path, ncol=25, nrow=200, r=0.325):
+    """A square lattice of equal discs 1 mm apart resting on the floor."""
+    d = 2 * r + 1e-3
+    rows = ["granwave-layer-sample 1", f"width {ncol * d!r}", f"rm {r!r}", "volume_ratio 1", "porosity 0.2",
+            "seed 1", "mass_law disc", f"n {ncol * nrow}"]
+    rows += [f"{d / 2 + i * d!r} {r + 5e-4 + j * d!r} {r!r}" for j in range(nrow) for i in range(ncol)]
+    path.write_text("\n".join(rows) + "\n")
+    return path
+
+
+def test_resources_bounded_before_the_run(tmp_path):
+    # 10000 snapshots of a 5000-disc sample reached 5.8 GB (2.4 GB in C, then
+    # copied into arrays); the snapshots are bounded at 1 GiB before the run
+    s = _lattice_sample(tmp_path / "lattice.txt")
+    with pytest.raises(granwave.GranwaveValueError,
+                       match=r"snapshots: 10000 snapshots of 5001 particles need 2.4 GB, above the 1.07 GB limit: "
+                             r"at most 4473 of this sample"):
+        granwave.layer_impact(sample=s, snapshots=[0.0] * 10000, t_max=1e-4, skin=1e-3)
+    r = granwave.layer_impact(sample=s, snapshots=[0.0] * 100, t_max=1e-4, skin=1e-3)
+    assert len(r["snapshots"]["t"]) == 100
+    # a pluviation's work (1e10 particle-steps) and a drop's stored trace (5 GB
+    # of files, 1.4 GB in memory) as the commands refuse them
+    out = tmp_path / "s.txt"
+    with pytest.raises(granwave.GranwaveValueError, match=r"n: 100000 particles .* more than 1e10: lower n to 6666"):
+        granwave.layer_make(n=100000, out=out)
+    assert not out.exists()
+    with pytest.raises(granwave.GranwaveValueError, match=r"dt_out: the trace of 1000 beads .*160 GB in memory"):
+        granwave.drop(n=1000, t_max=1, dt_out=1e-7, trace=True)

@@ -15,6 +15,21 @@
  * sum in index order, so results are bit-identical, only faster (vectorised
  * element loops, no per-element calls through the stack). Units: none (pure
  * arithmetic on the state).
+ *
+ * Linear sums z = a x + b y and scalings z = c x are not run at once but
+ * queued; the queue runs at the next other operation on any vector, or when
+ * granwave reads a vector's data (N_VGetArrayPointer), block by block: each
+ * block of BLK elements goes through every queued operation while it is in the
+ * L1 cache. A weighted norm runs the queue block by block and sums each block
+ * as it leaves it (CVODE's fixed-point iteration: a sum, a scaling, a copy and
+ * a difference, then the difference's norm: one pass instead of five). CVODE's
+ * Nordsieck predictor (for k = 1..q, for j = q..k, z_{j-1} += z_j: q(q+1)/2
+ * passes over the state) is recognised in the queue and run as one pass with
+ * the q + 1 values in registers. Every element still sees the same operations
+ * in the same order, so the results are bit-identical (tests/test_nvector.c).
+ * The queue is per thread; every op in the table (and the serial ones that
+ * touch data, wrapped below) runs it first, and a vector is destroyed only
+ * after it.
  */
 #include <math.h>
 #include <string.h>
@@ -26,38 +41,195 @@
 #define LEN(v) NV_LENGTH_S(v)
 #define DATA(v) NV_DATA_S(v)
 
+/* The queue of pending element-wise operations (see the head of the file):
+ * z = a x + b y (linear sums, with the cases of gw_nv_linearsum below) and
+ * z = a x (scalings, a copy when a = 1). */
+enum { QMAX = 96, BLK = 512 };
+typedef enum { OP_SUM, OP_SCALE } gw_nv_kind;
+typedef struct {
+    gw_nv_kind kind;
+    realtype a, b;
+    const realtype *x, *y;
+    realtype *z;
+    sunindextype n;
+} gw_nv_op;
+static _Thread_local gw_nv_op queue[QMAX];
+static _Thread_local int queued;
+
+/* one operation on elements [i0, i1): the same arithmetic, element by element,
+ * as the direct kernel (in-place forms alias z with x or y) */
+static void apply(const gw_nv_op *o, sunindextype i0, sunindextype i1)
+{
+    const realtype a = o->a, b = o->b, *xd = o->x, *yd = o->y;
+    realtype *zd = o->z;
+    if (o->kind == OP_SCALE) {
+        if (a == 1.0) {
+            if (zd != xd)
+                memcpy(zd + i0, xd + i0, (size_t)(i1 - i0) * sizeof *zd);
+        } else {
+            for (sunindextype i = i0; i < i1; i++)
+                zd[i] = a * xd[i];
+        }
+        return;
+    }
+    if (zd == yd && b == 1.0) {
+        for (sunindextype i = i0; i < i1; i++)
+            zd[i] += a * xd[i];
+    } else if (zd == xd && a == 1.0) {
+        for (sunindextype i = i0; i < i1; i++)
+            zd[i] += b * yd[i];
+    } else if (a == -1.0 && b == 1.0) {
+        /* the library forms y - x here, not -(x - y): they differ in the sign
+         * of a zero */
+        for (sunindextype i = i0; i < i1; i++)
+            zd[i] = yd[i] - xd[i];
+    } else if (a == b) {
+        for (sunindextype i = i0; i < i1; i++)
+            zd[i] = a * (xd[i] + yd[i]);
+    } else if (a == -b) {
+        for (sunindextype i = i0; i < i1; i++)
+            zd[i] = a * (xd[i] - yd[i]);
+    } else {
+        for (sunindextype i = i0; i < i1; i++)
+            zd[i] = a * xd[i] + b * yd[i];
+    }
+}
+
+/* Nordsieck triangle of order Q on z[0..Q] (same additions per element, in
+ * the same order, as the queued sums; the Q + 1 values stay in registers) */
+#define TRIANGLE(Q)                                                                    \
+    static void triangle##Q(realtype *const *z, sunindextype n)                       \
+    {                                                                                  \
+        for (sunindextype i = 0; i < n; i++) {                                         \
+            realtype v[Q + 1];                                                         \
+            for (int j = 0; j <= Q; j++)                                               \
+                v[j] = z[j][i];                                                        \
+            for (int k = 1; k <= Q; k++)                                               \
+                for (int j = Q; j >= k; j--)                                           \
+                    v[j - 1] += v[j];                                                  \
+            for (int j = 0; j < Q; j++)                                                \
+                z[j][i] = v[j];                                                        \
+        }                                                                              \
+    }
+TRIANGLE(1)
+TRIANGLE(2)
+TRIANGLE(3)
+TRIANGLE(4)
+TRIANGLE(5)
+TRIANGLE(6)
+TRIANGLE(7)
+TRIANGLE(8)
+TRIANGLE(9)
+TRIANGLE(10)
+TRIANGLE(11)
+TRIANGLE(12)
+
+static int is_inplace_add(const gw_nv_op *o, const realtype *x, const realtype *y, sunindextype n)
+{
+    return o->kind == OP_SUM && o->a == 1.0 && o->b == 1.0 && o->z == o->x && o->x == x &&
+           o->y == y && o->n == n;
+}
+
+/* the queue is CVODE's predictor of order q <= 12 when it holds exactly the
+ * q(q+1)/2 sums z_{j-1} += z_j for k = 1..q, j = q..k over q + 1 distinct
+ * vectors of one length; returns q (0 when it is not) and the vectors in z */
+static int triangle_order(realtype **z)
+{
+    int q = 0;
+    while (q < 12 && (q + 1) * (q + 2) / 2 <= queued)
+        q++;
+    if (q == 0 || q * (q + 1) / 2 != queued)
+        return 0;
+    const sunindextype n = queue[0].n;
+    /* the first q sums walk the chain z_q -> z_0 */
+    z[q] = (realtype *)queue[0].y;
+    for (int j = q - 1, e = 0; j >= 0; j--, e++) {
+        if (!is_inplace_add(&queue[e], queue[e].x, z[j + 1], n))
+            return 0;
+        z[j] = queue[e].z;
+    }
+    for (int a = 0; a <= q; a++)
+        for (int b = 0; b < a; b++)
+            if (z[a] == z[b])
+                return 0;
+    int e = 0;
+    for (int k = 1; k <= q; k++)
+        for (int j = q; j >= k; j--, e++)
+            if (!is_inplace_add(&queue[e], z[j - 1], z[j], n))
+                return 0;
+    return q;
+}
+
+static int run_triangle(void)
+{
+    realtype *z[13];
+    const sunindextype n = queue[0].n;
+    switch (triangle_order(z)) {
+    case 1: triangle1(z, n); break;
+    case 2: triangle2(z, n); break;
+    case 3: triangle3(z, n); break;
+    case 4: triangle4(z, n); break;
+    case 5: triangle5(z, n); break;
+    case 6: triangle6(z, n); break;
+    case 7: triangle7(z, n); break;
+    case 8: triangle8(z, n); break;
+    case 9: triangle9(z, n); break;
+    case 10: triangle10(z, n); break;
+    case 11: triangle11(z, n); break;
+    case 12: triangle12(z, n); break;
+    default: return 0;
+    }
+    return 1;
+}
+
+/* the queued operations on elements [i0, i1), in order */
+static void apply_block(sunindextype i0, sunindextype i1)
+{
+    for (int k = 0; k < queued; k++) {
+        sunindextype e = queue[k].n < i1 ? queue[k].n : i1;
+        if (e > i0)
+            apply(&queue[k], i0, e);
+    }
+}
+
+static sunindextype queue_length(void)
+{
+    sunindextype nmax = 0;
+    for (int k = 0; k < queued; k++)
+        if (queue[k].n > nmax)
+            nmax = queue[k].n;
+    return nmax;
+}
+
+static void run_queue(void)
+{
+    if (queued == 0)
+        return;
+    if (!run_triangle()) {
+        const sunindextype nmax = queue_length();
+        for (sunindextype i0 = 0; i0 < nmax; i0 += BLK)
+            apply_block(i0, i0 + BLK < nmax ? i0 + BLK : nmax);
+    }
+    queued = 0;
+}
+
+#define FLUSH() run_queue()
+
+static void enqueue(gw_nv_op o)
+{
+    if (queued == QMAX)
+        run_queue();
+    queue[queued++] = o;
+}
+
 static void gw_nv_linearsum(realtype a, N_Vector x, realtype b, N_Vector y, N_Vector z)
 {
-    const sunindextype n = LEN(x);
-    const realtype *xd = DATA(x), *yd = DATA(y);
-    realtype *zd = DATA(z);
-    /* in-place updates alias z with x or y: plain pointers there */
-    if (z == y && b == 1.0) {
-        for (sunindextype i = 0; i < n; i++)
-            zd[i] += a * xd[i];
-        return;
-    }
-    if (z == x && a == 1.0) {
-        for (sunindextype i = 0; i < n; i++)
-            zd[i] += b * yd[i];
-        return;
-    }
-    if (a == b) {
-        for (sunindextype i = 0; i < n; i++)
-            zd[i] = a * (xd[i] + yd[i]);
-        return;
-    }
-    if (a == -b) {
-        for (sunindextype i = 0; i < n; i++)
-            zd[i] = a * (xd[i] - yd[i]);
-        return;
-    }
-    for (sunindextype i = 0; i < n; i++)
-        zd[i] = a * xd[i] + b * yd[i];
+    enqueue((gw_nv_op){OP_SUM, a, b, DATA(x), DATA(y), DATA(z), LEN(x)});
 }
 
 static void gw_nv_const(realtype c, N_Vector z)
 {
+    FLUSH();
     const sunindextype n = LEN(z);
     realtype *restrict zd = DATA(z);
     for (sunindextype i = 0; i < n; i++)
@@ -66,6 +238,7 @@ static void gw_nv_const(realtype c, N_Vector z)
 
 static void gw_nv_prod(N_Vector x, N_Vector y, N_Vector z)
 {
+    FLUSH();
     const sunindextype n = LEN(x);
     const realtype *xd = DATA(x), *yd = DATA(y);
     realtype *zd = DATA(z);
@@ -75,6 +248,7 @@ static void gw_nv_prod(N_Vector x, N_Vector y, N_Vector z)
 
 static void gw_nv_div(N_Vector x, N_Vector y, N_Vector z)
 {
+    FLUSH();
     const sunindextype n = LEN(x);
     const realtype *xd = DATA(x), *yd = DATA(y);
     realtype *zd = DATA(z);
@@ -84,22 +258,15 @@ static void gw_nv_div(N_Vector x, N_Vector y, N_Vector z)
 
 static void gw_nv_scale(realtype c, N_Vector x, N_Vector z)
 {
-    const sunindextype n = LEN(x);
-    const realtype *xd = DATA(x);
-    realtype *zd = DATA(z);
-    /* c = 1 is a copy (ARKode's interpolant keeps y_n and f_n every step):
-     * the C library's copy uses the widest vectors the CPU has */
-    if (c == 1.0) {
-        if (zd != xd)
-            memcpy(zd, xd, (size_t)n * sizeof *zd);
-        return;
-    }
-    for (sunindextype i = 0; i < n; i++)
-        zd[i] = c * xd[i];
+    /* c = 1 is a copy (ARKode's interpolant keeps y_n and f_n every step,
+     * CVODE's fixed-point iteration its previous iterate): memcpy, which uses
+     * the widest vectors the CPU has */
+    enqueue((gw_nv_op){OP_SCALE, c, 0.0, DATA(x), NULL, DATA(z), LEN(x)});
 }
 
 static void gw_nv_abs(N_Vector x, N_Vector z)
 {
+    FLUSH();
     const sunindextype n = LEN(x);
     const realtype *xd = DATA(x);
     realtype *zd = DATA(z);
@@ -109,6 +276,7 @@ static void gw_nv_abs(N_Vector x, N_Vector z)
 
 static void gw_nv_inv(N_Vector x, N_Vector z)
 {
+    FLUSH();
     const sunindextype n = LEN(x);
     const realtype *xd = DATA(x);
     realtype *zd = DATA(z);
@@ -118,6 +286,7 @@ static void gw_nv_inv(N_Vector x, N_Vector z)
 
 static void gw_nv_addconst(N_Vector x, realtype b, N_Vector z)
 {
+    FLUSH();
     const sunindextype n = LEN(x);
     const realtype *xd = DATA(x);
     realtype *zd = DATA(z);
@@ -127,6 +296,7 @@ static void gw_nv_addconst(N_Vector x, realtype b, N_Vector z)
 
 static realtype gw_nv_dotprod(N_Vector x, N_Vector y)
 {
+    FLUSH();
     const sunindextype n = LEN(x);
     const realtype *xd = DATA(x), *yd = DATA(y);
     realtype s = 0.0;
@@ -137,6 +307,7 @@ static realtype gw_nv_dotprod(N_Vector x, N_Vector y)
 
 static realtype gw_nv_maxnorm(N_Vector x)
 {
+    FLUSH();
     const sunindextype n = LEN(x);
     const realtype *xd = DATA(x);
     realtype m = 0.0;
@@ -148,15 +319,35 @@ static realtype gw_nv_maxnorm(N_Vector x)
 /* Weighted sum of squares in index order (one dependent add per element, as
  * the library; partial sums would be faster in cache but change the rounding
  * of the error norms and through them the step sizes). */
+static realtype wsqrsum_range(const realtype *xd, const realtype *wd, sunindextype i0,
+                              sunindextype i1, realtype s)
+{
+    for (sunindextype i = i0; i < i1; i++) {
+        realtype p = xd[i] * wd[i];
+        s += p * p;
+    }
+    return s;
+}
+
+/* sum of (x w)^2 in index order; pending operations run block by block
+ * just before the block is summed, while it is in cache */
 static realtype wsqrsum(N_Vector x, N_Vector w)
 {
     const sunindextype n = LEN(x);
     const realtype *xd = DATA(x), *wd = DATA(w);
     realtype s = 0.0;
-    for (sunindextype i = 0; i < n; i++) {
-        realtype p = xd[i] * wd[i];
-        s += p * p;
+    if (queued == 0 || run_triangle()) {
+        queued = 0;
+        return wsqrsum_range(xd, wd, 0, n, s);
     }
+    const sunindextype nmax = queue_length() > n ? queue_length() : n;
+    for (sunindextype i0 = 0; i0 < nmax; i0 += BLK) {
+        sunindextype i1 = i0 + BLK < nmax ? i0 + BLK : nmax;
+        apply_block(i0, i1);
+        if (i0 < n)
+            s = wsqrsum_range(xd, wd, i0, i1 < n ? i1 : n, s);
+    }
+    queued = 0;
     return s;
 }
 
@@ -177,6 +368,7 @@ static realtype gw_nv_wl2norm(N_Vector x, N_Vector w)
 
 static realtype gw_nv_min(N_Vector x)
 {
+    FLUSH();
     const sunindextype n = LEN(x);
     const realtype *xd = DATA(x);
     realtype m = xd[0];
@@ -187,6 +379,7 @@ static realtype gw_nv_min(N_Vector x)
 
 static realtype gw_nv_l1norm(N_Vector x)
 {
+    FLUSH();
     const sunindextype n = LEN(x);
     const realtype *xd = DATA(x);
     realtype s = 0.0;
@@ -197,6 +390,7 @@ static realtype gw_nv_l1norm(N_Vector x)
 
 static void gw_nv_compare(realtype c, N_Vector x, N_Vector z)
 {
+    FLUSH();
     const sunindextype n = LEN(x);
     const realtype *xd = DATA(x);
     realtype *zd = DATA(z);
@@ -206,6 +400,7 @@ static void gw_nv_compare(realtype c, N_Vector x, N_Vector z)
 
 static booleantype gw_nv_invtest(N_Vector x, N_Vector z)
 {
+    FLUSH();
     const sunindextype n = LEN(x);
     const realtype *xd = DATA(x);
     realtype *zd = DATA(z);
@@ -221,6 +416,7 @@ static booleantype gw_nv_invtest(N_Vector x, N_Vector z)
 
 static realtype gw_nv_minquotient(N_Vector num, N_Vector den)
 {
+    FLUSH();
     const sunindextype n = LEN(num);
     const realtype *nd = DATA(num), *dd = DATA(den);
     realtype m = BIG_REAL;
@@ -258,6 +454,7 @@ static int lincomb_aliased(int nvec, realtype *c, N_Vector *X, N_Vector z)
  * written once instead of read and written per term. */
 static int gw_nv_linearcombination(int nvec, realtype *c, N_Vector *X, N_Vector z)
 {
+    FLUSH();
     if (nvec < 1)
         return -1;
     if (nvec == 1) {
@@ -302,6 +499,7 @@ static int gw_nv_linearcombination(int nvec, realtype *c, N_Vector *X, N_Vector 
 /* Z_j = a_j x + Y_j. */
 static int gw_nv_scaleaddmulti(int nvec, realtype *a, N_Vector x, N_Vector *Y, N_Vector *Z)
 {
+    FLUSH();
     if (nvec < 1)
         return -1;
     if (nvec == 1) {
@@ -321,6 +519,7 @@ static int gw_nv_scaleaddmulti(int nvec, realtype *a, N_Vector x, N_Vector *Y, N
 
 static int gw_nv_scalevectorarray(int nvec, realtype *c, N_Vector *X, N_Vector *Z)
 {
+    FLUSH();
     if (nvec < 1)
         return -1;
     for (int j = 0; j < nvec; j++)
@@ -330,6 +529,7 @@ static int gw_nv_scalevectorarray(int nvec, realtype *c, N_Vector *X, N_Vector *
 
 static int gw_nv_constvectorarray(int nvec, realtype c, N_Vector *Z)
 {
+    FLUSH();
     if (nvec < 1)
         return -1;
     for (int j = 0; j < nvec; j++)
@@ -340,6 +540,7 @@ static int gw_nv_constvectorarray(int nvec, realtype c, N_Vector *Z)
 static int gw_nv_linearsumvectorarray(int nvec, realtype a, N_Vector *X, realtype b, N_Vector *Y,
                                       N_Vector *Z)
 {
+    FLUSH();
     if (nvec < 1)
         return -1;
     for (int j = 0; j < nvec; j++)
@@ -349,11 +550,85 @@ static int gw_nv_linearsumvectorarray(int nvec, realtype a, N_Vector *X, realtyp
 
 static int gw_nv_wrmsnormvectorarray(int nvec, N_Vector *X, N_Vector *W, realtype *nrm)
 {
+    FLUSH();
     if (nvec < 1)
         return -1;
     for (int j = 0; j < nvec; j++)
         nrm[j] = gw_nv_wrmsnorm(X[j], W[j]);
     return 0;
+}
+
+/* the serial ops that touch data, run after the queue */
+static realtype *q_getarraypointer(N_Vector v)
+{
+    FLUSH();
+    return N_VGetArrayPointer_Serial(v);
+}
+static void q_setarraypointer(realtype *d, N_Vector v)
+{
+    FLUSH();
+    N_VSetArrayPointer_Serial(d, v);
+}
+static void q_destroy(N_Vector v)
+{
+    FLUSH();
+    N_VDestroy_Serial(v);
+}
+static realtype q_wrmsnormmask(N_Vector x, N_Vector w, N_Vector id)
+{
+    FLUSH();
+    return N_VWrmsNormMask_Serial(x, w, id);
+}
+static realtype q_wsqrsummasklocal(N_Vector x, N_Vector w, N_Vector id)
+{
+    FLUSH();
+    return N_VWSqrSumMaskLocal_Serial(x, w, id);
+}
+static booleantype q_constrmask(N_Vector c, N_Vector x, N_Vector m)
+{
+    FLUSH();
+    return N_VConstrMask_Serial(c, x, m);
+}
+static int q_dotprodmulti(int nvec, N_Vector x, N_Vector *Y, realtype *d)
+{
+    FLUSH();
+    return N_VDotProdMulti_Serial(nvec, x, Y, d);
+}
+static int q_scaleaddmultiva(int nvec, int nsum, realtype *a, N_Vector *X, N_Vector **Y,
+                             N_Vector **Z)
+{
+    FLUSH();
+    return N_VScaleAddMultiVectorArray_Serial(nvec, nsum, a, X, Y, Z);
+}
+static int q_lincombva(int nvec, int nsum, realtype *c, N_Vector **X, N_Vector *Z)
+{
+    FLUSH();
+    return N_VLinearCombinationVectorArray_Serial(nvec, nsum, c, X, Z);
+}
+static int q_wrmsnormmaskva(int nvec, N_Vector *X, N_Vector *W, N_Vector id, realtype *nrm)
+{
+    FLUSH();
+    return N_VWrmsNormMaskVectorArray_Serial(nvec, X, W, id, nrm);
+}
+static int q_bufpack(N_Vector x, void *buf)
+{
+    FLUSH();
+    return N_VBufPack_Serial(x, buf);
+}
+static int q_bufunpack(N_Vector x, void *buf)
+{
+    FLUSH();
+    return N_VBufUnpack_Serial(x, buf);
+}
+static void q_print(N_Vector v)
+{
+    FLUSH();
+    N_VPrint_Serial(v);
+}
+static void q_printfile(N_Vector v, FILE *f)
+{
+    FLUSH();
+    N_VPrintFile_Serial(v, f);
 }
 
 int gw_sun_tune_vector(N_Vector v)
@@ -394,5 +669,38 @@ int gw_sun_tune_vector(N_Vector v)
     o->nvinvtestlocal = gw_nv_invtest;
     o->nvminquotientlocal = gw_nv_minquotient;
     o->nvwsqrsumlocal = wsqrsum;
+    /* the serial ones that touch data run the queue first (those the vector has) */
+    if (o->nvgetarraypointer)
+        o->nvgetarraypointer = q_getarraypointer;
+    if (o->nvsetarraypointer)
+        o->nvsetarraypointer = q_setarraypointer;
+    if (o->nvdestroy)
+        o->nvdestroy = q_destroy;
+    if (o->nvwrmsnormmask)
+        o->nvwrmsnormmask = q_wrmsnormmask;
+    if (o->nvwsqrsummasklocal)
+        o->nvwsqrsummasklocal = q_wsqrsummasklocal;
+    if (o->nvconstrmask)
+        o->nvconstrmask = q_constrmask;
+    if (o->nvdotprodmulti)
+        o->nvdotprodmulti = q_dotprodmulti;
+    if (o->nvdotprodmultilocal)
+        o->nvdotprodmultilocal = q_dotprodmulti;
+    if (o->nvscaleaddmultivectorarray)
+        o->nvscaleaddmultivectorarray = q_scaleaddmultiva;
+    if (o->nvlinearcombinationvectorarray)
+        o->nvlinearcombinationvectorarray = q_lincombva;
+    if (o->nvbufpack)
+        o->nvbufpack = q_bufpack;
+    if (o->nvbufunpack)
+        o->nvbufunpack = q_bufunpack;
+    if (o->nvprint)
+        o->nvprint = q_print;
+    if (o->nvprintfile)
+        o->nvprintfile = q_printfile;
+    if (o->nvwrmsnormmaskvectorarray)
+        o->nvwrmsnormmaskvectorarray = q_wrmsnormmaskva;
+    if (o->nvconstrmasklocal)
+        o->nvconstrmasklocal = q_constrmask;
     return 0;
 }

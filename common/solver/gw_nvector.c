@@ -16,11 +16,11 @@
  * element loops, no per-element calls through the stack). Units: none (pure
  * arithmetic on the state).
  *
- * Linear sums z = a x + b y and scalings z = c x are not run at once but
- * queued; the queue runs at the next other operation on any vector, or when
- * granwave reads a vector's data (N_VGetArrayPointer), block by block: each
- * block of BLK elements goes through every queued operation while it is in the
- * L1 cache. A weighted norm runs the queue block by block and sums each block
+ * Linear sums z = a x + b y, scalings z = c x and constants are not run at
+ * once but queued; the queue runs at the next other operation on any vector,
+ * or when granwave reads a vector's data (N_VGetArrayPointer), block by
+ * block: each block of BLK elements goes through every queued operation
+ * while it is in the L1 cache. A weighted norm runs the queue block by block and sums each block
  * as it leaves it (CVODE's fixed-point iteration: a sum, a scaling, a copy and
  * a difference, then the difference's norm: one pass instead of five). CVODE's
  * Nordsieck predictor (for k = 1..q, for j = q..k, z_{j-1} += z_j: q(q+1)/2
@@ -43,9 +43,9 @@
 
 /* The queue of pending element-wise operations (see the head of the file):
  * z = a x + b y (linear sums, with the cases of gw_nv_linearsum below) and
- * z = a x (scalings, a copy when a = 1). */
+ * z = a x (scalings, a copy when a = 1) and z = a (constants). */
 enum { QMAX = 96, BLK = 512 };
-typedef enum { OP_SUM, OP_SCALE } gw_nv_kind;
+typedef enum { OP_SUM, OP_SCALE, OP_CONST } gw_nv_kind;
 typedef struct {
     gw_nv_kind kind;
     realtype a, b;
@@ -62,6 +62,11 @@ static void apply(const gw_nv_op *o, sunindextype i0, sunindextype i1)
 {
     const realtype a = o->a, b = o->b, *xd = o->x, *yd = o->y;
     realtype *zd = o->z;
+    if (o->kind == OP_CONST) {
+        for (sunindextype i = i0; i < i1; i++)
+            zd[i] = a;
+        return;
+    }
     if (o->kind == OP_SCALE) {
         if (a == 1.0) {
             if (zd != xd)
@@ -229,11 +234,7 @@ static void gw_nv_linearsum(realtype a, N_Vector x, realtype b, N_Vector y, N_Ve
 
 static void gw_nv_const(realtype c, N_Vector z)
 {
-    FLUSH();
-    const sunindextype n = LEN(z);
-    realtype *restrict zd = DATA(z);
-    for (sunindextype i = 0; i < n; i++)
-        zd[i] = c;
+    enqueue((gw_nv_op){OP_CONST, c, 0.0, NULL, NULL, DATA(z), LEN(z)});
 }
 
 static void gw_nv_prod(N_Vector x, N_Vector y, N_Vector z)

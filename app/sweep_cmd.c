@@ -241,6 +241,27 @@ int gw_cmd_sweep(int argc, char **argv, const gw_sweep_model *const *models, int
             fprintf(stderr, "granwave sweep: %s: %s\n", pos[0], err.msg);
         err.msg[0] = '\0';
     }
+    /* The cases under way at once hold their memory together: bounded before
+     * anything is made (the workers: --jobs threads, or the MPI ranks but the
+     * writer on this node) */
+    if (code == 0 && rank == 0) {
+        long most = 0, workers = jobs;
+        const char *local = getenv("OMPI_COMM_WORLD_LOCAL_SIZE");
+        if (use_mpi && size > 1)
+            workers = local && atol(local) > 1 ? atol(local) - 1 : size - 1;
+        if (gw_sweep_memory_check(&cfg, m, workers, use_mpi && size > 1, &most, &err) != GW_OK) {
+            code = 2;
+            if (strncmp(err.msg, "jobs: ", 6) == 0 && use_mpi && size > 1)
+                fprintf(stderr, "granwave sweep: %s: the MPI ranks: %s (mpirun -np %ld or fewer)\n", pos[0],
+                        err.msg + 6, most + 1);
+            else if (strncmp(err.msg, "jobs: ", 6) == 0)
+                fprintf(stderr, "granwave sweep --jobs: %s%s\n", err.msg + 6,
+                        jobs == 0 ? " (--jobs 0 is one per CPU)" : "");
+            else
+                fprintf(stderr, "granwave sweep: %s: %s\n", pos[0], err.msg);
+            err.msg[0] = '\0';
+        }
+    }
     if (code == 0 && check_only) {
         if (rank == 0)
             printf("sweep: %s is valid: model %s, %ld cases\n", pos[0], cfg.model, cfg.ncases);

@@ -121,6 +121,25 @@ static int check(int nk, const char *const *names, const char *const *values, gw
     return rc == GW_OK || rc == GW_ENOMEM ? rc : GW_EINVAL;
 }
 
+/* A case's peak memory: the series it allocates for t-max (time, ledger 8,
+ * block 4 and 4 per ring at each sample: 8 (13 + 4 rings) B a sample), times
+ * 1.5 for the crowns analysis at the end, plus 16 MB for the model, the
+ * 300-disc sample and the program. Measured (peak RSS of layer-impact --json
+ * on the 300-disc sample): 14.5 MB at t-max 0.003 s; --rings 1000 --dt-out
+ * 4e-6 --full at t-max 0.02 and 0.04 s: 251 and 486 MB for 161 and 321 MB of
+ * series (1.47 times the series, plus the 14.5 MB). */
+static int memory(int nk, const char *const *names, const char *const *values, double *bytes, gw_err *err)
+{
+    gw_layer_impact_setup s;
+    int rc = prepare(&s, nk, names, values, err);
+    if (rc == GW_OK) {
+        const double nsamp = ceil(s.t_max / s.dt_out) + 2;
+        *bytes = 16e6 + 1.5 * 8.0 * nsamp * (13.0 + 4.0 * (double)s.rings);
+    }
+    gw_layer_impact_setup_clear(&s);
+    return rc == GW_OK || rc == GW_ENOMEM ? rc : GW_EINVAL;
+}
+
 /* NaN with a clear sign bit, so that every undefined value prints as "nan". */
 static double canon(double v)
 {
@@ -154,4 +173,4 @@ static int run(int nk, const char *const *names, const char *const *values, doub
     return rc;
 }
 
-const gw_sweep_model gw_layer_sweep_model = {"layer", NCOLUMNS, columns, has_key, run, check};
+const gw_sweep_model gw_layer_sweep_model = {"layer", NCOLUMNS, columns, has_key, run, check, memory};

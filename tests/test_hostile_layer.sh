@@ -36,6 +36,10 @@
 #    whole Jacobian of the layer (no band: dim 6 n + contacts, about 2700 on
 #    the 300-disc sample, 310 MB): --t-max 1e-5 took 134 s with bdf; they now
 #    solve matrix-free (GMRES) and agree with the explicit reference.
+# 10 a sweep's cases were bounded one at a time, but --jobs J runs J at once:
+#    four cases of about 0.5 GB (1000 rings, 1e4 samples) on 4 jobs under a
+#    1.7 GB limit went ahead; the J largest are now summed before the sweep
+#    (exit 2 naming --jobs and the most that fit; MPI ranks the same).
 set -u
 GW=$1
 SRC=${2:-.}
@@ -211,6 +215,43 @@ sys.exit(not (abs(a[0]-b[0]) <= 1e-7*abs(b[0]) and abs(a[1]-b[1]) <= 1e-4*abs(b[
             ok "  $2: penetration and first-contact loss ($got) equal adams' ($ref)" || ko "  $2: $got against adams' $ref"
     fi
 done
+
+# --- 10: the memory of the jobs that run at once ------------------------------
+printf '[sweep]\nmodel = layer\n[grid]\nvi = 10, 20, 30, 40\n[params]\nsample = %s\nrings = 1000\nt-max = 0.04\ndt-out = 4e-6\n' \
+    "$S9" >"$tmp/mem.ini"
+# a case holds about 0.498 GB (1.5 x its 0.321 GB of series + 16 MB; 0.477 GB
+# measured); an address-space limit makes the memory known. The sanitizer's
+# shadow memory cannot run under one: skipped there.
+if (ulimit -v 1700000; "$GW" --help >/dev/null 2>&1); then
+    # the program under a limit: a wrapper, so that refused and runs can call it
+    lim() { printf '#!/bin/bash\nulimit -v %s\nexec "%s" "$@"\n' "$1" "$GW_SAVE" >"$tmp/gw_lim"; chmod +x "$tmp/gw_lim"; GW=$tmp/gw_lim; }
+    GW_SAVE=$GW; lim 1700000
+    refused "sweep --jobs 4: four cases of 0.5 GB under a 1.7 GB limit" \
+        "^granwave sweep --jobs: 4 cases at once need about 1.99 GB \(the largest, case 0, 0.498 GB\), above 80 % of the 1.74 GB available \(ulimit -v\): at most 2 jobs$" \
+        sweep "$tmp/mem.ini" --out "$tmp/o" --jobs 4
+    refused "sweep --check --jobs 4 says the same" "^granwave sweep --jobs: 4 cases at once" sweep "$tmp/mem.ini" --out "$tmp/o" --jobs 4 --check
+    lim 450000
+    refused "sweep --jobs 1: one case above the limit" \
+        "mem.ini: case 0 needs about 0.498 GB alone, above 80 % of the 0.461 GB available \(ulimit -v\): no number of jobs fits" \
+        sweep "$tmp/mem.ini" --out "$tmp/o" --jobs 1
+    lim 1700000
+    runs "sweep --jobs 2 --check (the most that fit)" sweep "$tmp/mem.ini" --out "$tmp/o" --jobs 2 --check
+    GW=$GW_SAVE
+    if command -v mpirun >/dev/null; then
+        rm -rf "$tmp/o"
+        (ulimit -v 1700000; timeout -s KILL 60 mpirun --allow-run-as-root --oversubscribe -np 5 "$GW" sweep "$tmp/mem.ini" --out "$tmp/o" --check) \
+            >"$tmp/stdout" 2>"$tmp/stderr" </dev/null
+        # each rank has its own 1.7 GB limit: the four ranks' 2 GB fit the machine
+        grep -q "is valid: model layer, 4 cases" "$tmp/stdout" && ok "sweep under mpirun -np 5: four ranks, each under its own limit" ||
+            ko "sweep under mpirun -np 5: $(head -c 300 "$tmp/stderr")"
+        (ulimit -v 450000; timeout -s KILL 60 mpirun --allow-run-as-root --oversubscribe -np 3 "$GW" sweep "$tmp/mem.ini" --out "$tmp/o" --check) \
+            >"$tmp/stdout" 2>"$tmp/stderr" </dev/null
+        grep -q "case 0 needs about 0.498 GB alone" "$tmp/stderr" && [ ! -e "$tmp/o" ] &&
+            ok "sweep under mpirun: a rank's own limit too small for one case, refused" || ko "mpirun, 0.45 GB: $(head -c 300 "$tmp/stderr")"
+    fi
+else
+    echo "SKIP: sweep memory under ulimit -v (a sanitizer build cannot run under an address-space limit)"
+fi
 
 echo "test_hostile_layer: $passes passed, $fails failed"
 [ $fails -eq 0 ]

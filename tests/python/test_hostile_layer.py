@@ -1,0 +1,50 @@
+"""The Python side of the seventh hostile pass over the layer (issue 18).
+
+granwave.sweep runs its cases on `jobs` threads of one process: their memory adds
+up. The library sums the `jobs` largest estimates before any case runs and
+refuses (GranwaveValueError naming jobs and the most that fit) when they pass
+80 % of what the process may use; each test runs in a child process under an
+address-space limit (resource.RLIMIT_AS, as `ulimit -v`) so that the memory is
+known whatever the machine.
+"""
+import os
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+REPO = Path(__file__).resolve().parents[2]
+SAMPLE = REPO / "data" / "measured" / "restitution_full" / "sample.txt"
+
+
+def _under_limit(code, limit_kb):
+    """Run code in a child Python under RLIMIT_AS = limit_kb KiB; return it."""
+    pre = ("import resource\n"
+           f"resource.setrlimit(resource.RLIMIT_AS, ({limit_kb} * 1024, {limit_kb} * 1024))\n")
+    return subprocess.run([sys.executable, "-c", pre + code], capture_output=True, text=True, timeout=120,
+                          env=dict(os.environ))
+
+
+SWEEP = ("import granwave\n"
+         "try:\n"
+         "    granwave.sweep('layer', {{'vi': [10, 20, 30, 40]}}, jobs={jobs}, sample={sample!r}, rings=1000,\n"
+         "                   t_max={t_max}, dt_out=4e-6)\n"
+         "    print('ran')\n"
+         "except granwave.GranwaveValueError as e:\n"
+         "    print('refused:', e)\n")
+
+
+def test_sweep_jobs_memory_is_bounded():
+    # four cases of about 0.498 GB each (1.5 x 0.321 GB of series + 16 MB)
+    r = _under_limit(SWEEP.format(jobs=4, sample=str(SAMPLE), t_max=0.04), 1700000)
+    if "cannot allocate" in r.stderr or "AddressSanitizer" in r.stderr:
+        pytest.skip("this interpreter cannot run under a 1.7 GB address-space limit")
+    assert r.stdout.strip() == ("refused: sweep: jobs: 4 cases at once need about 1.99 GB (the largest, case 0, "
+                                "0.498 GB), above 80 % of the 1.74 GB available (ulimit -v): at most 2 jobs"), r.stderr
+
+
+def test_sweep_jobs_that_fit_run():
+    # the same grid with short cases (t-max 2e-4 s: about 18 MB each) runs on 4 jobs
+    r = _under_limit(SWEEP.format(jobs=4, sample=str(SAMPLE), t_max=2e-4), 1700000)
+    assert r.stdout.strip() == "ran", r.stderr

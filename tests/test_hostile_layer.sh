@@ -40,6 +40,9 @@
 #    four cases of about 0.5 GB (1000 rings, 1e4 samples) on 4 jobs under a
 #    1.7 GB limit went ahead; the J largest are now summed before the sweep
 #    (exit 2 naming --jobs and the most that fit; MPI ranks the same).
+# 11 a flag listed twice in its two spellings (exact = 1, true; remove-walls =
+#    0, false; full = 1, TRUE) ran every case twice (the numbers 1 and 1.0
+#    were already refused).
 set -u
 GW=$1
 SRC=${2:-.}
@@ -252,6 +255,15 @@ if (ulimit -v 1700000; "$GW" --help >/dev/null 2>&1); then
 else
     echo "SKIP: sweep memory under ulimit -v (a sanitizer build cannot run under an address-space limit)"
 fi
+
+# --- 11: a flag's two spellings are one value --------------------------------
+for g in "exact = 1, true" "remove-walls = 0, false" "full = 1, TRUE"; do
+    printf '[sweep]\nmodel = layer\n[grid]\n%s\n[params]\nsample = %s\nt-max = 0.003\n' "$g" "$S" >"$tmp/f.ini"
+    refused "sweep: '$g' (each case ran twice)" "f.ini:4: ${g%% *}: '[01]' and '[a-zA-Z]+' in list '.*' are the same value \(each case would run twice\)" \
+        sweep "$tmp/f.ini" --out "$tmp/o" --check
+done
+printf '[sweep]\nmodel = layer\n[grid]\nexact = 0, true\n[params]\nsample = %s\nt-max = 0.003\n' "$S" >"$tmp/f.ini"
+runs "sweep: 'exact = 0, true' (two values) is accepted" sweep "$tmp/f.ini" --out "$tmp/f" --check
 
 echo "test_hostile_layer: $passes passed, $fails failed"
 [ $fails -eq 0 ]

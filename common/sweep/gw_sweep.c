@@ -99,12 +99,15 @@ static int split_values(const char *value, gw_sweep_key *k, char *msg, size_t ml
         return 0;
     }
     /* a value listed twice runs the same case twice: the table then holds a
-     * combination twice and its statistics count it twice ("1, 1.0" too) */
+     * combination twice and its statistics count it twice ("1, 1.0" too, and
+     * a flag's words: "1, true", "0, FALSE") */
     for (int i = 0; k->values && i < k->nvalues; i++)
         for (int j = 0; j < i; j++) {
             char *ei, *ej;
             double vi = strtod(k->values[i], &ei), vj = strtod(k->values[j], &ej);
-            if (strcmp(k->values[i], k->values[j]) == 0 || (!*ei && !*ej && ei != k->values[i] && vi == vj)) {
+            const int fi = gw_parse_flag(k->values[i]), fj = gw_parse_flag(k->values[j]);
+            if (strcmp(k->values[i], k->values[j]) == 0 || (!*ei && !*ej && ei != k->values[i] && vi == vj) ||
+                (fi >= 0 && fi == fj)) {
                 snprintf(msg, mlen, "%s: '%s' and '%s' in list '%s' are the same value (each case would run "
                          "twice)", k->name, k->values[j], k->values[i], value);
                 return 0;

@@ -189,7 +189,7 @@ int gw_cmd_sweep(int argc, char **argv, const gw_sweep_model *const *models, int
     const char *pos[1] = {NULL};
     gw_opt opts[] = {
         {.name = "out", .kind = GW_OPT_STRING, .dest = &out, .metavar = "DIR", .help = "output directory [config's [sweep] out]"},
-        {.name = "jobs", .kind = GW_OPT_LONG, .dest = &jobs, .metavar = "J", .help = "threads without MPI [0 = one per CPU]", .lo = 0, .hi = 4096},
+        {.name = "jobs", .kind = GW_OPT_LONG, .dest = &jobs, .metavar = "J", .help = "threads without MPI [0 = one per CPU]", .lo = 0, .hi = GW_SWEEP_JOBS_MAX},
         {.name = "check", .kind = GW_OPT_FLAG, .dest = &check_only, .help = "validate the config and every case, run nothing"},
         {.name = "quiet", .kind = GW_OPT_FLAG, .dest = &quiet, .help = "no progress lines"},
         {0}};

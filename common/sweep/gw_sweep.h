@@ -24,6 +24,7 @@
 
 #define GW_SWEEP_MAX_KEYS 32
 #define GW_SWEEP_CONFIG_MAX (1L << 20) /* bytes: a config is read whole, bounded */
+#define GW_SWEEP_JOBS_MAX 4096          /* threads of one sweep (--jobs, gw_sweep_run) */
 
 typedef struct gw_sweep_key {
     char *name;
@@ -119,7 +120,8 @@ int gw_sweep_memory_check(const gw_sweep_config *cfg, const gw_sweep_model *m, l
 /* Every case of cfg run by model m in memory, no files: first every case is
  * checked (m->check, when the model has one: a bad value is refused before any
  * run) and the memory of jobs cases at once bounded (gw_sweep_memory_check),
- * then run on jobs threads. values[k * m->ncolumns + j] receives column j
+ * then run on jobs threads (0: one per CPU; GW_EINVAL "jobs: ..." outside
+ * [0, GW_SWEEP_JOBS_MAX]). values[k * m->ncolumns + j] receives column j
  * of case k (NaN for cases not run). GW_EINVAL / the first failing run's status
  * with "case K: message" in err; GW_ECANCELED when progress asked to stop. */
 int gw_sweep_run(const gw_sweep_config *cfg, const gw_sweep_model *m, int jobs, gw_progress_fn progress,

@@ -127,6 +127,8 @@ int gw_sweep_run(const gw_sweep_config *cfg, const gw_sweep_model *m, int jobs, 
                  void *pctx, double *values, gw_err *err)
 {
     const int nk = cfg->ngrid + cfg->nparams;
+    if (jobs < 0 || jobs > GW_SWEEP_JOBS_MAX) /* the range of granwave sweep --jobs */
+        return gw_err_set(err, GW_EINVAL, "jobs: %d is outside [0, %d] (0: one per CPU)", jobs, GW_SWEEP_JOBS_MAX);
     for (long k = 0; k < cfg->ncases * m->ncolumns; k++)
         values[k] = NAN;
     for (long k = 0; m->check && k < cfg->ncases; k++) {

@@ -325,6 +325,12 @@ def _grid_values(key, v):
 
 
 def run_sweep(model, grid, params, jobs, progress):
+    # jobs reaches C as an int: a float, a bool or a str was cut or read
+    # silently (1.5 ran 1 thread, 10**12 wrapped to a negative int: one per CPU)
+    if isinstance(jobs, bool) or not isinstance(jobs, numbers.Integral):
+        raise TypeError(f"sweep(): jobs must be an integer, not {type(jobs).__name__}")
+    if not -2**31 <= jobs < 2**31:  # the library's message for what does not fit its int
+        raise GranwaveValueError(f"sweep: jobs: {jobs} is outside [0, 4096] (0: one per CPU)", GW_EINVAL)
     models = sweep_models()
     if model not in models:
         raise ValueError(f"sweep: unknown model '{model}' ({', '.join(models)})")

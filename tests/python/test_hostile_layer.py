@@ -48,3 +48,26 @@ def test_sweep_jobs_that_fit_run():
     # the same grid with short cases (t-max 2e-4 s: about 18 MB each) runs on 4 jobs
     r = _under_limit(SWEEP.format(jobs=4, sample=str(SAMPLE), t_max=2e-4), 1700000)
     assert r.stdout.strip() == "ran", r.stderr
+
+
+@pytest.mark.parametrize("jobs, exc, text", [
+    (1.5, TypeError, "jobs must be an integer, not float"),    # ran 1 thread
+    (True, TypeError, "jobs must be an integer, not bool"),
+    ("2", TypeError, "jobs must be an integer, not str"),
+    (-1, ValueError, r"jobs: -1 is outside \[0, 4096\]"),       # ran one per CPU
+    (5000, ValueError, r"jobs: 5000 is outside \[0, 4096\]"),   # the command's --jobs stops at 4096
+    (10**12, ValueError, r"jobs: 1000000000000 is outside"),   # wrapped to a negative C int
+])
+def test_sweep_jobs_keyword(jobs, exc, text):
+    import granwave
+    with pytest.raises(exc, match=text):
+        granwave.sweep("layer", {"vi": [10, 20]}, jobs=jobs, sample=SAMPLE, t_max=1e-4, skin=1e-3)
+
+
+def test_sweep_flag_spellings_are_one_value():
+    import granwave
+    # 1 and True reach the config as "1" and "true": the same case twice
+    with pytest.raises(granwave.GranwaveValueError, match="exact: .* are the same value"):
+        granwave.sweep("layer", {"exact": [1, True]}, sample=SAMPLE, t_max=1e-4, skin=1e-3)
+    r = granwave.sweep("layer", {"exact": [0, True]}, jobs=2, sample=SAMPLE, t_max=1e-4, skin=1e-3)
+    assert len(r["t_end"]) == 2

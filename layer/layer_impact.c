@@ -271,7 +271,7 @@ int gw_layer_impact(const gw_layer_sample *smp, const gw_layer_params *lp0,
     res->block_mass = gw_layer_particle_mass(L, n);
     res->e_incident = 0.5 * res->block_mass * ip->vi * ip->vi;
     res->v_ni = ip->vi * cos(al);
-    int touched = 0;
+    int touched = 0, ntouch = 0; /* samples of the first contact (overlap > 0 before it opened) */
     /* First contact (docs/physics.md 2.5): from the touch to the block's smallest
      * kinetic energy while it still touches the target particle, the phase in
      * which the block hands its energy over. The contact itself may last longer
@@ -350,6 +350,7 @@ int gw_layer_impact(const gw_layer_sample *smp, const gw_layer_params *lp0,
         const gw_layer_energy *le = &res->ledger[res->ns - 1];
         if (ov > 0) {
             touched = 1;
+            ntouch += isnan(t_open);
             if (isnan(t_open) && le->kinetic_block < kb_min) {
                 kb_min = le->kinetic_block;
                 t_min = tk;
@@ -381,16 +382,17 @@ int gw_layer_impact(const gw_layer_sample *smp, const gw_layer_params *lp0,
         return rc;
     }
     layer_outcome_finish(&oc, yb, ip->vi, res->t_end, cut && !layer_outcome_done(&oc), res);
-    if (isnan(t_open)) { /* still touching at the end */
+    if (isnan(t_open) && touched) { /* still touching at the end */
         t_open = res->t_end;
         ed_open = res->ledger[res->ns - 1].dissipated;
     }
-    if (isnan(t_min)) { /* the target was never touched (sampling too coarse) */
-        t_min = t_open;
-        kb_min = res->ledger[res->ns - 1].kinetic_block;
-        ed_min = ed_open;
-        edb_min = res->regions[ip->nrings + 1].dissipated;
-    }
+    /* The first contact's values are sampled: undecided (NaN) when fewer than
+     * three samples fall in it, so that its smallest block energy is not
+     * bracketed. A contact no sample saw (dt-out 1e-2 s against the default
+     * impact's 1.7 ms) took the whole run's dissipation instead: 0.94 of
+     * E_incident at t_first_contact = t_end, against 0.054 at 2e-5 s. */
+    if (ntouch < 3)
+        t_min = kb_min = ed_min = edb_min = NAN;
     res->t_first_contact = t_min;
     res->dissipated_first_contact = ed_min / res->e_incident;
     res->dissipated_first_contact_block = edb_min / res->e_incident;

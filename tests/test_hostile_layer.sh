@@ -48,6 +48,9 @@
 #    whole run's: no sample fell in the 1.7 ms contact; 0.054 at 2e-5 s) and
 #    wave speeds 102, -30 (kinetic) and 13 m/s (cross-correlation) against
 #    580; -4.7 m/s at 0.05 s. They are null (undecided) now; e_n does not move.
+# 13 without gravity a rebounding block never reaches T_f, but the undecided
+#    e_n said "raise --t-max"; it now says T_f never comes. The binary
+#    collision it runs is checked against its closed form.
 set -u
 GW=$1
 SRC=${2:-.}
@@ -294,6 +297,20 @@ done
 runs "layer-impact --dt-out 0.05 --until verdict (text)" layer-impact --sample "$S12" --dt-out 0.05 --until verdict
 grep -q "first contact: unresolved (fewer than 3 samples in it: lower --dt-out)" "$tmp/stdout" && ok "  the text says the first contact is unresolved" ||
     ko "  text: $(grep 'first contact' "$tmp/stdout")"
+
+# --- 13: a binary collision without gravity ----------------------------------
+# one disc of R_m, the walls removed, gravity 0: a block of R_m/2 (a quarter of
+# the disc's mass, disc law) hits it head-on at 1 m/s; an elastic central
+# collision sends it back at (M - m)/(M + m) = (1/4 - 1)/(1/4 + 1) = -0.6 V_i
+printf 'granwave-layer-sample 1\nwidth 3.25\nrm 0.325\nn 1\n1.625 0.325 0.325\n' >"$tmp/one.txt"
+if runs "layer-impact on one free disc, gravity 0, rb-rm 0.5" layer-impact --sample "$tmp/one.txt" --vi 1 --rb-rm 0.5 \
+        --remove-walls --gravity 0 --t-max 0.1 --json; then
+    e1=$(/usr/bin/python3 -c "import json,sys; print(json.load(open(sys.argv[1]))['e_n_first'])" "$tmp/stdout")
+    /usr/bin/python3 -c "import sys; sys.exit(not abs(float(sys.argv[1]) - 0.6) < 1e-4)" "$e1" &&
+        ok "  e_n_first = $e1, the closed form 0.6 to 1e-4 (Hertz contact, no damping)" || ko "  e_n_first $e1 (expected 0.6)"
+    grep -q "without gravity the block flies on .* T_f never comes" "$tmp/stderr" && ! grep -q "raise --t-max" "$tmp/stderr" &&
+        ok "  e_n undecided: T_f never comes without gravity (it said raise --t-max)" || ko "  $(cat "$tmp/stderr")"
+fi
 
 echo "test_hostile_layer: $passes passed, $fails failed"
 [ $fails -eq 0 ]

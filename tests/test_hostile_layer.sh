@@ -51,6 +51,10 @@
 # 13 without gravity a rebounding block never reaches T_f, but the undecided
 #    e_n said "raise --t-max"; it now says T_f never comes. The binary
 #    collision it runs is checked against its closed form.
+# 14 layer-stats read any number in a result column: e_n = -3, a penetration
+#    of -1 m, e_n = inf entered the means; values a sweep never writes (not
+#    finite, or negative where the quantity cannot be) are refused, naming
+#    the line and the column.
 set -u
 GW=$1
 SRC=${2:-.}
@@ -311,6 +315,18 @@ if runs "layer-impact on one free disc, gravity 0, rb-rm 0.5" layer-impact --sam
     grep -q "without gravity the block flies on .* T_f never comes" "$tmp/stderr" && ! grep -q "raise --t-max" "$tmp/stderr" &&
         ok "  e_n undecided: T_f never comes without gravity (it said raise --t-max)" || ko "  $(cat "$tmp/stderr")"
 fi
+
+# --- 14: layer-stats: values a sweep never writes ----------------------------
+R14=$SRC/data/measured/layer_diagram/results.csv
+for c in "7 -3 e_n negative" "7 inf e_n not.finite" "13 -1 penetration negative" "20 -5 steps negative"; do
+    set -- $c
+    awk -F, -v col="$1" -v val="$2" 'BEGIN{OFS=","} /^#/||/^case/{print;next} NR==12{$col=val} {print}' "$R14" >"$tmp/bad14.csv"
+    refused "layer-stats: $3 = $2 in a row (it entered the means)" "bad14.csv:12: column $3: '$2' is not a value a sweep writes \($4\)" \
+        layer-stats "$tmp/bad14.csv" --out "$tmp/o"
+done
+for f in "$SRC"/data/measured/layer_*/results.csv; do
+    runs "layer-stats on the stored $(basename "$(dirname "$f")") (negative wave speeds and a -5e-10 dissipation of old tables are read)" layer-stats "$f" --json
+done
 
 echo "test_hostile_layer: $passes passed, $fails failed"
 [ $fails -eq 0 ]

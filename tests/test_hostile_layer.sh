@@ -55,6 +55,11 @@
 #    of -1 m, e_n = inf entered the means; values a sweep never writes (not
 #    finite, or negative where the quantity cannot be) are refused, naming
 #    the line and the column.
+# 15 the block falls its gap before it touches, but the outcome takes V_i as
+#    given: --vi 1 --gap 1 met the layer at 4.54 m/s and reported e_n 0.86,
+#    e 1.83 (> 1) and a penetration of 1.06 m (0.179 and 0.064 m at --vi
+#    4.54); the default gap at vi 0.05 m/s or alpha 89.999 deg too. A fall
+#    that changes the normal speed by more than 0.1 % is refused.
 set -u
 GW=$1
 SRC=${2:-.}
@@ -327,6 +332,18 @@ done
 for f in "$SRC"/data/measured/layer_*/results.csv; do
     runs "layer-stats on the stored $(basename "$(dirname "$f")") (negative wave speeds and a -5e-10 dissipation of old tables are read)" layer-stats "$f" --json
 done
+
+# --- 15: the gap's fall ---------------------------------------------------------
+refused "layer-impact --vi 1 --gap 1 (met the layer at 4.54 m/s: e = 1.83)" \
+    "^granwave layer-impact --gap: falling 1 m \(g = 9.81 m/s\^2\), the block meets the layer at 4.541 m/s normal speed, not 1 .*lower gap to 0.000102 m" \
+    layer-impact --sample "$S" --vi 1 --gap 1 --out "$tmp/o"
+refused "layer-impact --alpha 89.999 (normal speed 3.5e-4 m/s, 4.4e-3 after the default gap)" "^granwave layer-impact --gap: falling 1e-06 m" \
+    layer-impact --sample "$S" --alpha 89.999 --t-max 1e-3 --out "$tmp/o"
+printf '[sweep]\nmodel = layer\n[grid]\nvi = 20, 0.05\n[params]\nsample = %s\nt-max = 1e-3\n' "$S" >"$tmp/g.ini"
+refused "sweep --check: a case at vi 0.05 with the default gap" "g.ini: case 1: gap: falling 1e-06 m .* not 0.05 " sweep "$tmp/g.ini" --out "$tmp/o" --check
+runs "layer-impact --vi 0.05 --gap 2.5e-7 (the gap suggested)" layer-impact --sample "$S" --vi 0.05 --gap 2.5e-7 --t-max 1e-3
+runs "layer-impact --vi 0.05 --gravity 0 (no fall)" layer-impact --sample "$S" --vi 0.05 --gravity 0 --t-max 1e-3
+runs "layer-impact --vi 20 --gap 0.04 (0.098 % faster)" layer-impact --sample "$S" --vi 20 --gap 0.04 --t-max 1e-3
 
 echo "test_hostile_layer: $passes passed, $fails failed"
 [ $fails -eq 0 ]

@@ -60,6 +60,11 @@
 #    e 1.83 (> 1) and a penetration of 1.06 m (0.179 and 0.064 m at --vi
 #    4.54); the default gap at vi 0.05 m/s or alpha 89.999 deg too. A fall
 #    that changes the normal speed by more than 0.1 % is refused.
+# 16 layer-make --modulus-factor F < 1 settled twice, each phase up to t-max
+#    (--t-max 0.05: t_settle 0.1 s, 5000 steps, twice what the work bound
+#    counts); a soft pile sunk into the floor was refused at the relaxation
+#    naming no input (exit 2). t-max now bounds both (the soft phase at most
+#    half), and the sunk pile fails as a run naming modulus-factor.
 set -u
 GW=$1
 SRC=${2:-.}
@@ -344,6 +349,19 @@ refused "sweep --check: a case at vi 0.05 with the default gap" "g.ini: case 1: 
 runs "layer-impact --vi 0.05 --gap 2.5e-7 (the gap suggested)" layer-impact --sample "$S" --vi 0.05 --gap 2.5e-7 --t-max 1e-3
 runs "layer-impact --vi 0.05 --gravity 0 (no fall)" layer-impact --sample "$S" --vi 0.05 --gravity 0 --t-max 1e-3
 runs "layer-impact --vi 20 --gap 0.04 (0.098 % faster)" layer-impact --sample "$S" --vi 20 --gap 0.04 --t-max 1e-3
+
+# --- 16: layer-make --modulus-factor ---------------------------------------------
+if runs "layer-make --modulus-factor 0.5 --t-max 0.05" layer-make --n 20 --width-rm 10 --modulus-factor 0.5 --t-max 0.05 --out "$tmp/mf.txt" --json; then
+    [ "$(jnum steps "$tmp/stdout")" = "2500" ] && [ "$(jnum t_settle "$tmp/stdout")" = "0.05" ] &&
+        ok "  2500 steps to t_settle = t-max = 0.05 s (it ran 5000 to 0.1 s)" ||
+        ko "  steps $(jnum steps "$tmp/stdout"), t_settle $(jnum t_settle "$tmp/stdout")"
+fi
+rm -f "$tmp/mf.txt"
+timeout -s KILL 60 "$GW" layer-make --n 30 --width-rm 10 --modulus-factor 1e-9 --t-max 1 --out "$tmp/mf.txt" >"$tmp/stdout" 2>"$tmp/stderr" </dev/null; rc=$?
+[ $rc -eq 1 ] && [ ! -e "$tmp/mf.txt" ] && [ "$(wc -l <"$tmp/stderr")" -eq 1 ] &&
+    grep -q "at modulus-factor 1e-09 the soft pile sank into a wall .* raise modulus-factor" "$tmp/stderr" &&
+    ok "layer-make --modulus-factor 1e-9: the sunk soft pile fails as a run (exit 1) naming modulus-factor" ||
+    ko "layer-make --modulus-factor 1e-9: exit $rc, $(cat "$tmp/stderr")"
 
 echo "test_hostile_layer: $passes passed, $fails failed"
 [ $fails -eq 0 ]

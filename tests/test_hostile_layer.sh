@@ -65,6 +65,10 @@
 #    counts); a soft pile sunk into the floor was refused at the relaxation
 #    naming no input (exit 2). t-max now bounds both (the soft phase at most
 #    half), and the sunk pile fails as a run naming modulus-factor.
+# 17 a config line longer than the INI reader's buffer (198 characters) was
+#    cut and its rest parsed as the next line: 'point = 0, 1, ..., 99' was
+#    refused as '5' listed twice (the cut fell in '50'), a list of speeds as a
+#    syntax error on the wrong line; such lines are refused whole, naming them.
 set -u
 GW=$1
 SRC=${2:-.}
@@ -362,6 +366,16 @@ timeout -s KILL 60 "$GW" layer-make --n 30 --width-rm 10 --modulus-factor 1e-9 -
     grep -q "at modulus-factor 1e-09 the soft pile sank into a wall .* raise modulus-factor" "$tmp/stderr" &&
     ok "layer-make --modulus-factor 1e-9: the sunk soft pile fails as a run (exit 1) naming modulus-factor" ||
     ko "layer-make --modulus-factor 1e-9: exit $rc, $(cat "$tmp/stderr")"
+
+# --- 17: config lines longer than the reader's buffer -------------------------
+printf '[sweep]\nmodel = layer\n[grid]\npoint = %s\n[params]\nsample = %s\npoints = 100\nt-max = 1e-4\n' \
+    "$(seq -s ', ' 0 99)" "$S" >"$tmp/long.ini"
+refused "sweep: a 396-character list (it was cut after '49, 5')" \
+    "long.ini:4: a line of 396 characters, above the 198 the config reader takes: give integers as a range A:B" \
+    sweep "$tmp/long.ini" --out "$tmp/o" --check
+printf '[sweep]\nmodel = layer\n[grid]\npoint = 0:99\n[params]\nsample = %s\npoints = 100\nspacing = 1e-3\nt-max = 1e-4\n' "$S" >"$tmp/long.ini"
+runs "sweep: the same points as the range 0:99" sweep "$tmp/long.ini" --out "$tmp/long" --check
+grep -q "100 cases" "$tmp/stdout" && ok "  100 cases" || ko "  $(cat "$tmp/stdout")"
 
 echo "test_hostile_layer: $passes passed, $fails failed"
 [ $fails -eq 0 ]

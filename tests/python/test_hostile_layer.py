@@ -71,3 +71,19 @@ def test_sweep_flag_spellings_are_one_value():
         granwave.sweep("layer", {"exact": [1, True]}, sample=SAMPLE, t_max=1e-4, skin=1e-3)
     r = granwave.sweep("layer", {"exact": [0, True]}, jobs=2, sample=SAMPLE, t_max=1e-4, skin=1e-3)
     assert len(r["t_end"]) == 2
+
+
+def test_sweep_long_grid_lists():
+    import granwave
+    # point = range(100), the paper's 100 points, went into the config as a
+    # 390-character list that the INI reader cut (refused as '5' listed twice);
+    # consecutive integers now go as the range 0:99
+    r = granwave.sweep("layer", {"point": range(100)}, jobs=2, sample=SAMPLE, points=100, spacing=1e-3,
+                       t_max=1e-5, skin=1e-3)
+    assert list(r["point"]) == list(range(100)) and len(r["t_end"]) == 100
+    # a long list that is no range is refused whole, naming its line
+    with pytest.raises(granwave.GranwaveValueError, match=r"sweep:4: a line of \d+ characters, above the 198"):
+        granwave.sweep("layer", {"vi": [10 + 0.001 * k for k in range(40)]}, sample=SAMPLE, t_max=1e-5)
+    # a ',' inside one grid value ran it as two cases
+    with pytest.raises(ValueError, match="sample: a grid value holds ','"):
+        granwave.sweep("layer", {"sample": [str(SAMPLE) + ",x"]}, t_max=1e-5)

@@ -319,9 +319,14 @@ int gw_layer_impact(const gw_layer_sample *smp, const gw_layer_params *lp0,
     const double work = res->dt > 0 ? ip->t_max / res->dt * per_step : 0;
     if (rc == GW_OK && res->dt > 0 && (ip->t_max / res->dt > 1e9 || work > 1e10)) {
         gw_layer_free(L);
-        return gw_err_set(err, GW_EINVAL, "dt: a step of %g s takes %.3g steps of %d particles and %ld listed "
-                          "contacts to t-max = %g s, %.3g particle-steps, more than 1e10 (raise dt, lower t-max%s)",
-                          res->dt, ip->t_max / res->dt, n + 1, st0.contacts_listed, ip->t_max, work,
+        /* the automatic verlet step comes from the materials (--density 1e-6
+         * gave 1.7e-9 s), not from a dt the user gave: "raise dt" misled */
+        const int autodt = type == gw_solver_verlet && !(sp->dt > 0);
+        return gw_err_set(err, GW_EINVAL, "%s: %s of %g s takes %.3g steps of %d particles and %ld listed "
+                          "contacts to t-max = %g s, %.3g particle-steps, more than 1e10 (%s%s)",
+                          autodt ? "t-max" : "dt", autodt ? "the automatic step (the shortest contact time / 100)"
+                          : "a step", res->dt, ip->t_max / res->dt, n + 1, st0.contacts_listed, ip->t_max, work,
+                          autodt ? "lower t-max" : "raise dt, lower t-max",
                           st0.contacts_listed > 8L * (n + 1) ? " or the skin" : "");
     }
     int cap = (int)ceil(ip->t_max / ip->dt_out) + 2;

@@ -55,6 +55,9 @@
 #    of -1 m, e_n = inf entered the means; values a sweep never writes (not
 #    finite, or negative where the quantity cannot be) are refused, naming
 #    the line and the column.
+#    (Also: the work refusal of an impact whose automatic verlet step is tiny,
+#    --density 1e-6 at 1.7e-9 s, said 'dt: ... raise dt' for a dt nobody gave;
+#    it names t-max and the automatic step, section 2's case too.)
 # 15 the block falls its gap before it touches, but the outcome takes V_i as
 #    given: --vi 1 --gap 1 met the layer at 4.54 m/s and reported e_n 0.86,
 #    e 1.83 (> 1) and a penetration of 1.06 m (0.179 and 0.064 m at --vi
@@ -118,7 +121,7 @@ runs "the sample scaled to R_m = 3.25 mm still runs" layer-impact --sample "$tmp
 # --- 2: the work bound counts the listed contacts -----------------------------
 scale 1e-4 "$tmp/s_1e-4.txt"
 refused "a default impact on R_m = 3.25e-5 m with the 0.1 m skin (every pair listed)" \
-    "dt: .* 301 particles and [0-9]{5} listed contacts .* more than 1e10 \(raise dt, lower t-max or the skin\)" \
+    "t-max: the automatic step \(the shortest contact time / 100\) of .* 301 particles and [0-9]{5} listed contacts .* more than 1e10 \(lower t-max or the skin\)" \
     layer-impact --sample "$tmp/s_1e-4.txt" --out "$tmp/o"
 runs "the same sample with a skin of its size" layer-impact --sample "$tmp/s_1e-4.txt" --skin 3e-6 --t-max 1e-4 --json
 [ "$(jnum t_end "$tmp/stdout")" = "0.0001" ] && ok "  it ran to t-max" || ko "  t_end $(jnum t_end "$tmp/stdout")"
@@ -341,6 +344,10 @@ done
 for f in "$SRC"/data/measured/layer_*/results.csv; do
     runs "layer-stats on the stored $(basename "$(dirname "$f")") (negative wave speeds and a -5e-10 dissipation of old tables are read)" layer-stats "$f" --json
 done
+
+refused "layer-impact --density 1e-6 (an automatic step of 1.7e-9 s)" \
+    "^granwave layer-impact: t-max: the automatic step \(the shortest contact time / 100\) of 1.72384e-09 s .* \(lower t-max\)$" \
+    layer-impact --sample "$S9" --density 1e-6 --out "$tmp/o"
 
 # --- 15: the gap's fall ---------------------------------------------------------
 refused "layer-impact --vi 1 --gap 1 (met the layer at 4.54 m/s: e = 1.83)" \

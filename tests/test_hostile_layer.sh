@@ -72,6 +72,10 @@
 #    cut and its rest parsed as the next line: 'point = 0, 1, ..., 99' was
 #    refused as '5' listed twice (the cut fell in '50'), a list of speeds as a
 #    syntax error on the wrong line; such lines are refused whole, naming them.
+# 18 a point moved out of the box by the placement keys (spacing = 1e6, or
+#    x = 0.07 with points 0.01 m apart) was refused naming x alone ("x: block
+#    ... at x = -1e+06 m"), a key the config may not set; it names spacing and
+#    the point.
 set -u
 GW=$1
 SRC=${2:-.}
@@ -383,6 +387,14 @@ refused "sweep: a 396-character list (it was cut after '49, 5')" \
 printf '[sweep]\nmodel = layer\n[grid]\npoint = 0:99\n[params]\nsample = %s\npoints = 100\nspacing = 1e-3\nt-max = 1e-4\n' "$S" >"$tmp/long.ini"
 runs "sweep: the same points as the range 0:99" sweep "$tmp/long.ini" --out "$tmp/long" --check
 grep -q "100 cases" "$tmp/stdout" && ok "  100 cases" || ko "  $(cat "$tmp/stdout")"
+
+# --- 18: the placement keys named -------------------------------------------
+printf '[sweep]\nmodel = layer\n[grid]\npoint = 0:2\n[params]\nsample = %s\npoints = 3\nspacing = 1e6\nt-max = 1e-4\n' "$S" >"$tmp/sx.ini"
+refused "sweep: spacing = 1e6 puts point 0 out of the box (it named x)" \
+    "sx.ini: case 0: spacing: impact point 0 of 3, 1e\+06 m apart around x = 0 m: block of radius .* at x = -1e\+06 m from the centre does not fit" \
+    sweep "$tmp/sx.ini" --out "$tmp/o" --check
+printf '[sweep]\nmodel = layer\n[grid]\nvi = 10\n[params]\nsample = %s\nx = 1e3\nt-max = 1e-4\n' "$S" >"$tmp/sx.ini"
+refused "sweep: x = 1e3 with one point still names x" "sx.ini: case 0: x: block of radius" sweep "$tmp/sx.ini" --out "$tmp/o" --check
 
 echo "test_hostile_layer: $passes passed, $fails failed"
 [ $fails -eq 0 ]

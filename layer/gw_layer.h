@@ -483,6 +483,13 @@ void gw_layer_impact_result_free(gw_layer_impact_result *r);
 int gw_layer_impact_check(const gw_layer_sample *s, const gw_layer_impact_params *ip,
                           gw_err *err);
 
+/* The block falls the gap under gravity g (m/s^2) before it touches: its
+ * normal speed at contact is sqrt(V_ni^2 + 2 g gap). The outcome (e_n, e,
+ * alpha_r, E_incident, the Froude number, the penetration from the start)
+ * takes V_i as given, so the fall may change the normal speed by at most
+ * 0.1 %: GW_EINVAL "gap: ..." naming the largest gap that passes. */
+int gw_layer_impact_fall_check(const gw_layer_impact_params *ip, double g, gw_err *err);
+
 /* The verlet step gw_layer_impact takes when sp->dt is 0: the Hertz contact
  * time of the two smallest discs meeting at V_i, tau = (4/5) B(2/5, 1/2)
  * (5 M / (4 K_n))^(2/5) V_i^(-1/5) with the reduced mass M = m/2, over GW_LAYER_DEM_STEPS,

@@ -128,6 +128,11 @@ void layer_outcome_finish(const layer_outcome *o, double y0, double vi, double t
                      "e_n, e, alpha_r undecided: the run ended at t-max = %.6g s before the block's "
                      "normal velocity was back to zero (T_f, about %.4g s in free flight from here); "
                      "raise --t-max (e_n_first is the first free-flight maximum)", t_end, t_end + s[4] / g);
+        else if (!o->contact && s[4] > 0 && !(g > 0)) /* no gravity: the flight never turns */
+            snprintf(res->undecided, sizeof res->undecided,
+                     "e_n, e, alpha_r undecided: without gravity the block flies on (v_y = %.4g m/s at "
+                     "t-max = %.6g s) and T_f never comes; e_n_first, the first free-flight maximum, is the "
+                     "rebound's", s[4], t_end);
         else
             snprintf(res->undecided, sizeof res->undecided,
                      "e_n, e, alpha_r undecided: the run ended at t-max = %.6g s before the block's "

@@ -32,6 +32,50 @@
 #  8 an impact's series were bounded in memory (2.1 GB) but written with --out
 #    at about 25 B a value: --rings 1000 --t-max 0.5 --dt-out 8e-6 meant about
 #    6.3 GB of files; bounded at 5 GB of files (1.6 GB of series).
+#  9 the implicit methods (cvode bdf, arkode dirk) held and LU-factored the
+#    whole Jacobian of the layer (no band: dim 6 n + contacts, about 2700 on
+#    the 300-disc sample, 310 MB): --t-max 1e-5 took 134 s with bdf; they now
+#    solve matrix-free (GMRES) and agree with the explicit reference.
+# 10 a sweep's cases were bounded one at a time, but --jobs J runs J at once:
+#    four cases of about 0.5 GB (1000 rings, 1e4 samples) on 4 jobs under a
+#    1.7 GB limit went ahead; the J largest are now summed before the sweep
+#    (exit 2 naming --jobs and the most that fit; MPI ranks the same).
+# 11 a flag listed twice in its two spellings (exact = 1, true; remove-walls =
+#    0, false; full = 1, TRUE) ran every case twice (the numbers 1 and 1.0
+#    were already refused).
+# 12 outcomes that depend on the sampling: at --dt-out 1e-2 s the default
+#    impact reported a first-contact friction loss of 0.94 of E_incident (the
+#    whole run's: no sample fell in the 1.7 ms contact; 0.054 at 2e-5 s) and
+#    wave speeds 102, -30 (kinetic) and 13 m/s (cross-correlation) against
+#    580; -4.7 m/s at 0.05 s. They are null (undecided) now; e_n does not move.
+# 13 without gravity a rebounding block never reaches T_f, but the undecided
+#    e_n said "raise --t-max"; it now says T_f never comes. The binary
+#    collision it runs is checked against its closed form.
+# 14 layer-stats read any number in a result column: e_n = -3, a penetration
+#    of -1 m, e_n = inf entered the means; values a sweep never writes (not
+#    finite, or negative where the quantity cannot be) are refused, naming
+#    the line and the column.
+#    (Also: the work refusal of an impact whose automatic verlet step is tiny,
+#    --density 1e-6 at 1.7e-9 s, said 'dt: ... raise dt' for a dt nobody gave;
+#    it names t-max and the automatic step, section 2's case too.)
+# 15 the block falls its gap before it touches, but the outcome takes V_i as
+#    given: --vi 1 --gap 1 met the layer at 4.54 m/s and reported e_n 0.86,
+#    e 1.83 (> 1) and a penetration of 1.06 m (0.179 and 0.064 m at --vi
+#    4.54); the default gap at vi 0.05 m/s or alpha 89.999 deg too. A fall
+#    that changes the normal speed by more than 0.1 % is refused.
+# 16 layer-make --modulus-factor F < 1 settled twice, each phase up to t-max
+#    (--t-max 0.05: t_settle 0.1 s, 5000 steps, twice what the work bound
+#    counts); a soft pile sunk into the floor was refused at the relaxation
+#    naming no input (exit 2). t-max now bounds both (the soft phase at most
+#    half), and the sunk pile fails as a run naming modulus-factor.
+# 17 a config line longer than the INI reader's buffer (198 characters) was
+#    cut and its rest parsed as the next line: 'point = 0, 1, ..., 99' was
+#    refused as '5' listed twice (the cut fell in '50'), a list of speeds as a
+#    syntax error on the wrong line; such lines are refused whole, naming them.
+# 18 a point moved out of the box by the placement keys (spacing = 1e6, or
+#    x = 0.07 with points 0.01 m apart) was refused naming x alone ("x: block
+#    ... at x = -1e+06 m"), a key the config may not set; it names spacing and
+#    the point.
 set -u
 GW=$1
 SRC=${2:-.}
@@ -81,7 +125,7 @@ runs "the sample scaled to R_m = 3.25 mm still runs" layer-impact --sample "$tmp
 # --- 2: the work bound counts the listed contacts -----------------------------
 scale 1e-4 "$tmp/s_1e-4.txt"
 refused "a default impact on R_m = 3.25e-5 m with the 0.1 m skin (every pair listed)" \
-    "dt: .* 301 particles and [0-9]{5} listed contacts .* more than 1e10 \(raise dt, lower t-max or the skin\)" \
+    "t-max: the automatic step \(the shortest contact time / 100\) of .* 301 particles and [0-9]{5} listed contacts .* more than 1e10 \(lower t-max or the skin\)" \
     layer-impact --sample "$tmp/s_1e-4.txt" --out "$tmp/o"
 runs "the same sample with a skin of its size" layer-impact --sample "$tmp/s_1e-4.txt" --skin 3e-6 --t-max 1e-4 --json
 [ "$(jnum t_end "$tmp/stdout")" = "0.0001" ] && ok "  it ran to t-max" || ko "  t_end $(jnum t_end "$tmp/stdout")"
@@ -189,6 +233,168 @@ refused "layer-impact --rings 1000 --t-max 0.5 --dt-out 8e-6 (about 6.3 GB of fi
     layer-impact --sample "$S" --rings 1000 --t-max 0.5 --dt-out 8e-6 --out "$tmp/o"
 runs "layer-impact --rings 1000 --t-max 1e-3 --dt-out 1e-5 (small series)" \
     layer-impact --sample "$S" --rings 1000 --t-max 1e-3 --dt-out 1e-5 --skin 1e-3
+
+# --- 9: implicit methods without a matrix -----------------------------------
+S9=$SRC/data/measured/restitution_full/sample.txt
+pen() { /usr/bin/python3 -c "import json,sys; d=json.load(open(sys.argv[1])); print(d['penetration'], d['dissipated_first_contact'])" "$1"; }
+runs "layer-impact --solver cvode (adams) --t-max 1e-4: the reference" layer-impact --sample "$S9" --solver cvode --t-max 1e-4 --json &&
+    ref=$(pen "$tmp/stdout")
+for sm in "cvode bdf" "arkode dirk"; do
+    set -- $sm
+    if runs "layer-impact --solver $1 --method $2 --t-max 1e-4 (it held a 310 MB dense Jacobian)" \
+        layer-impact --sample "$S9" --solver "$1" --method "$2" --t-max 1e-4 --json; then
+        got=$(pen "$tmp/stdout")
+        # penetration to 1e-7 (the tolerances 1e-8: the methods agree to 4e-10),
+        # first-contact loss to 1e-4 (sampled at dt-out: they agree to 1e-6)
+        /usr/bin/python3 -c "import sys; a=list(map(float,sys.argv[1].split())); b=list(map(float,sys.argv[2].split()));
+sys.exit(not (abs(a[0]-b[0]) <= 1e-7*abs(b[0]) and abs(a[1]-b[1]) <= 1e-4*abs(b[1])))" "$got" "$ref" &&
+            ok "  $2: penetration and first-contact loss ($got) equal adams' ($ref)" || ko "  $2: $got against adams' $ref"
+    fi
+done
+
+# --- 10: the memory of the jobs that run at once ------------------------------
+printf '[sweep]\nmodel = layer\n[grid]\nvi = 10, 20, 30, 40\n[params]\nsample = %s\nrings = 1000\nt-max = 0.04\ndt-out = 4e-6\n' \
+    "$S9" >"$tmp/mem.ini"
+# a case holds about 0.498 GB (1.5 x its 0.321 GB of series + 16 MB; 0.477 GB
+# measured); an address-space limit makes the memory known. The sanitizer's
+# shadow memory cannot run under one: skipped there.
+if (ulimit -v 1700000; "$GW" --help >/dev/null 2>&1); then
+    # the program under a limit: a wrapper, so that refused and runs can call it
+    lim() { printf '#!/bin/bash\nulimit -v %s\nexec "%s" "$@"\n' "$1" "$GW_SAVE" >"$tmp/gw_lim"; chmod +x "$tmp/gw_lim"; GW=$tmp/gw_lim; }
+    GW_SAVE=$GW; lim 1700000
+    refused "sweep --jobs 4: four cases of 0.5 GB under a 1.7 GB limit" \
+        "^granwave sweep --jobs: 4 cases at once need about 1.99 GB \(the largest, case 0, 0.498 GB\), above 80 % of the 1.74 GB available \(ulimit -v\): at most 2 jobs$" \
+        sweep "$tmp/mem.ini" --out "$tmp/o" --jobs 4
+    refused "sweep --check --jobs 4 says the same" "^granwave sweep --jobs: 4 cases at once" sweep "$tmp/mem.ini" --out "$tmp/o" --jobs 4 --check
+    lim 450000
+    refused "sweep --jobs 1: one case above the limit" \
+        "mem.ini: case 0 needs about 0.498 GB alone, above 80 % of the 0.461 GB available \(ulimit -v\): no number of jobs fits" \
+        sweep "$tmp/mem.ini" --out "$tmp/o" --jobs 1
+    lim 1700000
+    runs "sweep --jobs 2 --check (the most that fit)" sweep "$tmp/mem.ini" --out "$tmp/o" --jobs 2 --check
+    GW=$GW_SAVE
+    if command -v mpirun >/dev/null; then
+        rm -rf "$tmp/o"
+        (ulimit -v 1700000; timeout -s KILL 60 mpirun --allow-run-as-root --oversubscribe -np 5 "$GW" sweep "$tmp/mem.ini" --out "$tmp/o" --check) \
+            >"$tmp/stdout" 2>"$tmp/stderr" </dev/null
+        # each rank has its own 1.7 GB limit: the four ranks' 2 GB fit the machine
+        grep -q "is valid: model layer, 4 cases" "$tmp/stdout" && ok "sweep under mpirun -np 5: four ranks, each under its own limit" ||
+            ko "sweep under mpirun -np 5: $(head -c 300 "$tmp/stderr")"
+        (ulimit -v 450000; timeout -s KILL 60 mpirun --allow-run-as-root --oversubscribe -np 3 "$GW" sweep "$tmp/mem.ini" --out "$tmp/o" --check) \
+            >"$tmp/stdout" 2>"$tmp/stderr" </dev/null
+        grep -q "case 0 needs about 0.498 GB alone" "$tmp/stderr" && [ ! -e "$tmp/o" ] &&
+            ok "sweep under mpirun: a rank's own limit too small for one case, refused" || ko "mpirun, 0.45 GB: $(head -c 300 "$tmp/stderr")"
+    fi
+else
+    echo "SKIP: sweep memory under ulimit -v (a sanitizer build cannot run under an address-space limit)"
+fi
+
+# --- 11: a flag's two spellings are one value --------------------------------
+for g in "exact = 1, true" "remove-walls = 0, false" "full = 1, TRUE"; do
+    printf '[sweep]\nmodel = layer\n[grid]\n%s\n[params]\nsample = %s\nt-max = 0.003\n' "$g" "$S" >"$tmp/f.ini"
+    refused "sweep: '$g' (each case ran twice)" "f.ini:4: ${g%% *}: '[01]' and '[a-zA-Z]+' in list '.*' are the same value \(each case would run twice\)" \
+        sweep "$tmp/f.ini" --out "$tmp/o" --check
+done
+printf '[sweep]\nmodel = layer\n[grid]\nexact = 0, true\n[params]\nsample = %s\nt-max = 0.003\n' "$S" >"$tmp/f.ini"
+runs "sweep: 'exact = 0, true' (two values) is accepted" sweep "$tmp/f.ini" --out "$tmp/f" --check
+
+# --- 12: sampled outcomes undecided when the samples cannot resolve them ------
+S12=$SRC/data/measured/restitution_full/sample.txt
+j12() { /usr/bin/python3 -c "import json,sys; d=json.load(open(sys.argv[1])); print(' '.join(str(d[k]) for k in sys.argv[2:]))" "$@"; }
+K="e_n penetration dissipated_first_contact t_first_contact wave_speed wave_speed_kinetic wave_speed_xcorr"
+if runs "layer-impact --dt-out 2e-5 (the default)" layer-impact --sample "$S12" --json; then
+    set -- $(j12 "$tmp/stdout" $K)
+    en0=$1 pen0=$2 ed0=$3 ws0=$5
+    /usr/bin/python3 -c "import sys; a=list(map(float,sys.argv[1:])); sys.exit(not (0.05 < a[0] < 0.06 and 500 < a[1] < 700))" "$ed0" "$ws0" &&
+        ok "  first-contact loss $ed0 and wave speed $ws0 m/s resolved" || ko "  first contact $ed0, wave speed $ws0"
+fi
+for d in 1e-2; do
+    if runs "layer-impact --dt-out $d" layer-impact --sample "$S12" --dt-out "$d" --json; then
+        set -- $(j12 "$tmp/stdout" $K)
+        [ "$3 $4 $5 $6 $7" = "None None None None None" ] &&
+            ok "  first contact and the three wave speeds undecided (null), not 0.94 and 102, -30, 13 m/s" ||
+            ko "  dt-out $d: first contact $3 at $4, wave speeds $5 $6 $7"
+        # the outcome itself comes from events, not samples: e_n to 1e-5, penetration to 1e-12
+        /usr/bin/python3 -c "import sys; a=list(map(float,sys.argv[1:])); sys.exit(not (abs(a[0]-a[1]) < 1e-5*a[1] and abs(a[2]-a[3]) < 1e-12*a[3]))" "$1" "$en0" "$2" "$pen0" &&
+            ok "  e_n $1 and penetration $2 equal dt-out 2e-5's" || ko "  e_n $1 / $en0, penetration $2 / $pen0"
+    fi
+done
+runs "layer-impact --dt-out 0.05 --until verdict (text)" layer-impact --sample "$S12" --dt-out 0.05 --until verdict
+grep -q "first contact: unresolved (fewer than 3 samples in it: lower --dt-out)" "$tmp/stdout" && ok "  the text says the first contact is unresolved" ||
+    ko "  text: $(grep 'first contact' "$tmp/stdout")"
+
+# --- 13: a binary collision without gravity ----------------------------------
+# one disc of R_m, the walls removed, gravity 0: a block of R_m/2 (a quarter of
+# the disc's mass, disc law) hits it head-on at 1 m/s; an elastic central
+# collision sends it back at (M - m)/(M + m) = (1/4 - 1)/(1/4 + 1) = -0.6 V_i
+printf 'granwave-layer-sample 1\nwidth 3.25\nrm 0.325\nn 1\n1.625 0.325 0.325\n' >"$tmp/one.txt"
+if runs "layer-impact on one free disc, gravity 0, rb-rm 0.5" layer-impact --sample "$tmp/one.txt" --vi 1 --rb-rm 0.5 \
+        --remove-walls --gravity 0 --t-max 0.1 --json; then
+    e1=$(/usr/bin/python3 -c "import json,sys; print(json.load(open(sys.argv[1]))['e_n_first'])" "$tmp/stdout")
+    /usr/bin/python3 -c "import sys; sys.exit(not abs(float(sys.argv[1]) - 0.6) < 1e-4)" "$e1" &&
+        ok "  e_n_first = $e1, the closed form 0.6 to 1e-4 (Hertz contact, no damping)" || ko "  e_n_first $e1 (expected 0.6)"
+    grep -q "without gravity the block flies on .* T_f never comes" "$tmp/stderr" && ! grep -q "raise --t-max" "$tmp/stderr" &&
+        ok "  e_n undecided: T_f never comes without gravity (it said raise --t-max)" || ko "  $(cat "$tmp/stderr")"
+fi
+
+# --- 14: layer-stats: values a sweep never writes ----------------------------
+R14=$SRC/data/measured/layer_diagram/results.csv
+for c in "7 -3 e_n negative" "7 inf e_n not.finite" "13 -1 penetration negative" "20 -5 steps negative"; do
+    set -- $c
+    awk -F, -v col="$1" -v val="$2" 'BEGIN{OFS=","} /^#/||/^case/{print;next} NR==12{$col=val} {print}' "$R14" >"$tmp/bad14.csv"
+    refused "layer-stats: $3 = $2 in a row (it entered the means)" "bad14.csv:12: column $3: '$2' is not a value a sweep writes \($4\)" \
+        layer-stats "$tmp/bad14.csv" --out "$tmp/o"
+done
+for f in "$SRC"/data/measured/layer_*/results.csv; do
+    runs "layer-stats on the stored $(basename "$(dirname "$f")") (negative wave speeds and a -5e-10 dissipation of old tables are read)" layer-stats "$f" --json
+done
+
+refused "layer-impact --density 1e-6 (an automatic step of 1.7e-9 s)" \
+    "^granwave layer-impact: t-max: the automatic step \(the shortest contact time / 100\) of 1.72384e-09 s .* \(lower t-max\)$" \
+    layer-impact --sample "$S9" --density 1e-6 --out "$tmp/o"
+
+# --- 15: the gap's fall ---------------------------------------------------------
+refused "layer-impact --vi 1 --gap 1 (met the layer at 4.54 m/s: e = 1.83)" \
+    "^granwave layer-impact --gap: falling 1 m \(g = 9.81 m/s\^2\), the block meets the layer at 4.541 m/s normal speed, not 1 .*lower gap to 0.000102 m" \
+    layer-impact --sample "$S" --vi 1 --gap 1 --out "$tmp/o"
+refused "layer-impact --alpha 89.999 (normal speed 3.5e-4 m/s, 4.4e-3 after the default gap)" "^granwave layer-impact --gap: falling 1e-06 m" \
+    layer-impact --sample "$S" --alpha 89.999 --t-max 1e-3 --out "$tmp/o"
+printf '[sweep]\nmodel = layer\n[grid]\nvi = 20, 0.05\n[params]\nsample = %s\nt-max = 1e-3\n' "$S" >"$tmp/g.ini"
+refused "sweep --check: a case at vi 0.05 with the default gap" "g.ini: case 1: gap: falling 1e-06 m .* not 0.05 " sweep "$tmp/g.ini" --out "$tmp/o" --check
+runs "layer-impact --vi 0.05 --gap 2.5e-7 (the gap suggested)" layer-impact --sample "$S" --vi 0.05 --gap 2.5e-7 --t-max 1e-3
+runs "layer-impact --vi 0.05 --gravity 0 (no fall)" layer-impact --sample "$S" --vi 0.05 --gravity 0 --t-max 1e-3
+runs "layer-impact --vi 20 --gap 0.04 (0.098 % faster)" layer-impact --sample "$S" --vi 20 --gap 0.04 --t-max 1e-3
+
+# --- 16: layer-make --modulus-factor ---------------------------------------------
+if runs "layer-make --modulus-factor 0.5 --t-max 0.05" layer-make --n 20 --width-rm 10 --modulus-factor 0.5 --t-max 0.05 --out "$tmp/mf.txt" --json; then
+    [ "$(jnum steps "$tmp/stdout")" = "2500" ] && [ "$(jnum t_settle "$tmp/stdout")" = "0.05" ] &&
+        ok "  2500 steps to t_settle = t-max = 0.05 s (it ran 5000 to 0.1 s)" ||
+        ko "  steps $(jnum steps "$tmp/stdout"), t_settle $(jnum t_settle "$tmp/stdout")"
+fi
+rm -f "$tmp/mf.txt"
+timeout -s KILL 60 "$GW" layer-make --n 30 --width-rm 10 --modulus-factor 1e-9 --t-max 1 --out "$tmp/mf.txt" >"$tmp/stdout" 2>"$tmp/stderr" </dev/null; rc=$?
+[ $rc -eq 1 ] && [ ! -e "$tmp/mf.txt" ] && [ "$(wc -l <"$tmp/stderr")" -eq 1 ] &&
+    grep -q "at modulus-factor 1e-09 the soft pile sank into a wall .* raise modulus-factor" "$tmp/stderr" &&
+    ok "layer-make --modulus-factor 1e-9: the sunk soft pile fails as a run (exit 1) naming modulus-factor" ||
+    ko "layer-make --modulus-factor 1e-9: exit $rc, $(cat "$tmp/stderr")"
+
+# --- 17: config lines longer than the reader's buffer -------------------------
+printf '[sweep]\nmodel = layer\n[grid]\npoint = %s\n[params]\nsample = %s\npoints = 100\nt-max = 1e-4\n' \
+    "$(seq -s ', ' 0 99)" "$S" >"$tmp/long.ini"
+refused "sweep: a 396-character list (it was cut after '49, 5')" \
+    "long.ini:4: a line of 396 characters, above the 198 the config reader takes: give integers as a range A:B" \
+    sweep "$tmp/long.ini" --out "$tmp/o" --check
+printf '[sweep]\nmodel = layer\n[grid]\npoint = 0:99\n[params]\nsample = %s\npoints = 100\nspacing = 1e-3\nt-max = 1e-4\n' "$S" >"$tmp/long.ini"
+runs "sweep: the same points as the range 0:99" sweep "$tmp/long.ini" --out "$tmp/long" --check
+grep -q "100 cases" "$tmp/stdout" && ok "  100 cases" || ko "  $(cat "$tmp/stdout")"
+
+# --- 18: the placement keys named -------------------------------------------
+printf '[sweep]\nmodel = layer\n[grid]\npoint = 0:2\n[params]\nsample = %s\npoints = 3\nspacing = 1e6\nt-max = 1e-4\n' "$S" >"$tmp/sx.ini"
+refused "sweep: spacing = 1e6 puts point 0 out of the box (it named x)" \
+    "sx.ini: case 0: spacing: impact point 0 of 3, 1e\+06 m apart around x = 0 m: block of radius .* at x = -1e\+06 m from the centre does not fit" \
+    sweep "$tmp/sx.ini" --out "$tmp/o" --check
+printf '[sweep]\nmodel = layer\n[grid]\nvi = 10\n[params]\nsample = %s\nx = 1e3\nt-max = 1e-4\n' "$S" >"$tmp/sx.ini"
+refused "sweep: x = 1e3 with one point still names x" "sx.ini: case 0: x: block of radius" sweep "$tmp/sx.ini" --out "$tmp/o" --check
 
 echo "test_hostile_layer: $passes passed, $fails failed"
 [ $fails -eq 0 ]

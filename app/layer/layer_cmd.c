@@ -593,8 +593,11 @@ int gw_cmd_layer_impact(int argc, char **argv)
                    "%.4g ms; left at %.4g ms)\n", r.e_n_first, r.e_first, r.alpha_r_first_deg, r.v_nr_first,
                    r.t_rebound_first * 1e3, r.t_leave * 1e3);
             printf("  penetration %.4g m (%.3g R_m)\n", r.penetration, r.penetration / c.rm);
-            printf("  first contact: E_d = %.3g of E_incident (ends at %.4g ms)\n",
-                   r.dissipated_first_contact, r.t_first_contact * 1e3);
+            if (isnan(r.t_first_contact))
+                printf("  first contact: unresolved (fewer than 3 samples in it: lower --dt-out)\n");
+            else
+                printf("  first contact: E_d = %.3g of E_incident (ends at %.4g ms)\n",
+                       r.dissipated_first_contact, r.t_first_contact * 1e3);
             printf("  wave speed %.4g +- %.3g m/s (strain peaks, %d rings), %.4g +- %.3g m/s (kinetic)\n",
                    r.wave_speed, r.wave_speed_err, r.wave_rings, r.wave_speed_kin, r.wave_speed_kin_err);
             printf("  wave speed %.4g +- %.3g m/s (cross-correlation of neighbouring rings, %d pairs)\n",

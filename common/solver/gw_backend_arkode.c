@@ -14,6 +14,8 @@
  *          system's analytic banded Jacobian when it has one,
  *   imex - ARK5(4)8L[2]SA additive pair: rhs_ex explicit, rhs_im implicit (band
  *          solver, finite-difference Jacobian of rhs_im).
+ *   A system flagged matrix_free (gw_solver.h) gets matrix-free GMRES instead
+ *   of the band solver in dirk and imex.
  * Roots by ARKode's root finder; gw_solver_reset calls ERKStepReset or
  * ARKStepReset.
  */
@@ -127,7 +129,7 @@ static const char *ark_configure(gw_solver *s, ark_impl *a, int method, int *fla
         if (method == GW_ARKODE_DIRK) {
             ARK_CHECK(ARKStepSetTableName(a->mem, "ARKODE_ARK548L2SA_DIRK_8_4_5",
                                           "ARKODE_ERK_NONE"));
-            if (s->p.use_jac && s->sys.jac)
+            if (s->p.use_jac && s->sys.jac && !s->sys.matrix_free)
                 ARK_CHECK(ARKStepSetJacFn(a->mem, gw_sun_jac));
         } else {
             ARK_CHECK(ARKStepSetTableName(a->mem, "ARKODE_ARK548L2SA_DIRK_8_4_5",

@@ -1,6 +1,7 @@
 /*
  * gw_backend_cvode.c: CVODE backend. BDF with a band linear solver (analytic
- * banded Jacobian when the system has one) or Adams-Moulton with fixed-point
+ * banded Jacobian when the system has one; matrix-free GMRES for a system
+ * flagged matrix_free, gw_solver.h) or Adams-Moulton with fixed-point
  * iteration. Roots are located by CVODE's own root finder; gw_solver_reset
  * re-initialises CVODE at the event so the multistep history restarts there.
  */
@@ -154,7 +155,7 @@ static int cv_create(gw_solver *s, double t0, const double *y0, gw_err *err)
             return gw_err_set(err, GW_ENOMEM, "cvode: band matrix allocation failed");
         }
         CV_TRY(CVodeSetLinearSolver(c->mem, c->LS, c->A), "CVodeSetLinearSolver");
-        if (s->p.use_jac && s->sys.jac)
+        if (s->p.use_jac && s->sys.jac && !s->sys.matrix_free)
             CV_TRY(CVodeSetJacFn(c->mem, gw_sun_jac), "CVodeSetJacFn");
     } else {
         c->NLS = SUNNonlinSol_FixedPoint(c->y, 0, c->ctx);

@@ -70,6 +70,13 @@ typedef struct gw_system {
     gw_rhs_fn rhs_im;    /* IMEX split, stiff part; rhs = rhs_ex + rhs_im */
     gw_jac_fn jac;       /* banded Jacobian of rhs (optional: finite differences) */
     long mu, ml;         /* Jacobian half-bandwidths (implicit methods need them) */
+    int matrix_free;     /* 1: no useful band (mu, ml and jac ignored): the implicit
+                            methods (cvode bdf, arkode dirk, imex) solve their Newton
+                            systems with GMRES on difference-quotient Jacobian-vector
+                            products, one rhs per iteration, no matrix; 0: a band
+                            matrix of dim x (2 mu + ml + 1) from the Jacobian or
+                            mu + ml + 1 rhs evaluations, LU-factored (dense when the
+                            band is the whole system: dim^3 work per factorisation) */
     gw_root_fn roots;    /* event functions (optional) */
     int nroots;
     const double *scale; /* typical magnitude of each component, or NULL (= 1):

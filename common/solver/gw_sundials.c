@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include <sunlinsol/sunlinsol_band.h>
+#include <sunlinsol/sunlinsol_spgmr.h>
 #include <sunmatrix/sunmatrix_band.h>
 
 #include "gw_sundials.h"
@@ -106,6 +107,13 @@ int gw_sun_band(const gw_solver *s, N_Vector y, SUNContext ctx, SUNMatrix *A,
                 SUNLinearSolver *LS)
 {
     long n = s->sys.dim;
+    if (s->sys.matrix_free) {
+        /* no matrix: SUNDIALS forms J v by a difference quotient of the rhs;
+         * no preconditioner, the default Krylov dimension (5) */
+        *A = NULL;
+        *LS = SUNLinSol_SPGMR(y, SUN_PREC_NONE, 0, ctx);
+        return *LS ? GW_OK : GW_ENOMEM;
+    }
     long mu = s->sys.mu > 0 ? s->sys.mu : n - 1;
     long ml = s->sys.ml > 0 ? s->sys.ml : n - 1;
     if (mu > n - 1)

@@ -44,7 +44,8 @@ int gw_sun_abstol_positive(N_Vector abstol);
 /* Vector of atol * scale[i]; NULL on allocation failure. */
 N_Vector gw_sun_abstol(const gw_solver *s, SUNContext ctx);
 
-/* Band matrix and band linear solver sized from the system's bandwidths. */
+/* Band matrix and band linear solver sized from the system's bandwidths; for a
+ * matrix_free system *A = NULL and *LS is GMRES (no preconditioner). */
 int gw_sun_band(const gw_solver *s, N_Vector y, SUNContext ctx, SUNMatrix *A,
                 SUNLinearSolver *LS);
 

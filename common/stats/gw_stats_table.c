@@ -171,6 +171,23 @@ static int grow(gw_stats_table *t, long *cap)
     return GW_OK;
 }
 
+/* Result columns of the layer model that are never negative: speeds and
+ * their ratios, angles, the penetration (y0 - min(y0, y)), the ledger
+ * closure, times, step counts (not the first-contact energies: the stored
+ * diagram holds a dissipation of -5.5e-10, the ledger's round-off; nor the
+ * wave speed: tables written before it was checked hold negative ones). */
+static int nonnegative(const char *col)
+{
+    static const char *const names[] = {"bounced", "e_n", "e", "alpha_r", "v_ni", "v_nr", "v_r", "penetration",
+                                        "penetration_rm", "energy_error",
+                                        "t_end", "steps", "e_n_first", "e_first", "alpha_r_first",
+                                        "v_nr_first", "v_r_first", "t_leave", "t_rebound", "t_f"};
+    for (size_t k = 0; k < sizeof names / sizeof names[0]; k++)
+        if (strcmp(col, names[k]) == 0)
+            return 1;
+    return 0;
+}
+
 static int parse_row(gw_stats_table *t, char *line, long ln, int ncells, int cb, gw_err *err)
 {
     char *cells[GW_STATS_MAX_KEYS + 256];
@@ -204,6 +221,11 @@ static int parse_row(gw_stats_table *t, char *line, long ln, int ncells, int cb,
                               t->col_name[i], c);
         if (i == cb && !(v == 0 || v == 1 || isnan(v)))
             return gw_err_set(err, GW_EFORMAT, "%s:%ld: column bounced: '%s' is not 0 or 1", t->path, ln, c);
+        /* a sweep writes finite numbers or nan, and these columns are never
+         * negative: e_n = -3 or 1e300... entered the means silently */
+        if (isinf(v) || (v < 0 && nonnegative(t->col_name[i])))
+            return gw_err_set(err, GW_EFORMAT, "%s:%ld: column %s: '%s' is not a value a sweep writes (%s)",
+                              t->path, ln, t->col_name[i], c, isinf(v) ? "not finite" : "negative");
         t->val[r * t->ncols + i] = v;
     }
     /* strings last, so that a refused row leaves nothing half-owned */

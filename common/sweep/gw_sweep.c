@@ -99,12 +99,15 @@ static int split_values(const char *value, gw_sweep_key *k, char *msg, size_t ml
         return 0;
     }
     /* a value listed twice runs the same case twice: the table then holds a
-     * combination twice and its statistics count it twice ("1, 1.0" too) */
+     * combination twice and its statistics count it twice ("1, 1.0" too, and
+     * a flag's words: "1, true", "0, FALSE") */
     for (int i = 0; k->values && i < k->nvalues; i++)
         for (int j = 0; j < i; j++) {
             char *ei, *ej;
             double vi = strtod(k->values[i], &ei), vj = strtod(k->values[j], &ej);
-            if (strcmp(k->values[i], k->values[j]) == 0 || (!*ei && !*ej && ei != k->values[i] && vi == vj)) {
+            const int fi = gw_parse_flag(k->values[i]), fj = gw_parse_flag(k->values[j]);
+            if (strcmp(k->values[i], k->values[j]) == 0 || (!*ei && !*ej && ei != k->values[i] && vi == vj) ||
+                (fi >= 0 && fi == fj)) {
                 snprintf(msg, mlen, "%s: '%s' and '%s' in list '%s' are the same value (each case would run "
                          "twice)", k->name, k->values[j], k->values[i], value);
                 return 0;
@@ -247,6 +250,30 @@ static int config_finish(const char *path, const gw_sweep_model *const *models, 
                          gw_sweep_config *cfg, const gw_sweep_model **model, int rc,
                          const parse_ctx *pc, gw_err *err);
 
+/* libinih reads a line into INI_MAX_LINE bytes (200 in Debian's build) and
+ * parses what does not fit as the next line: 'point = 0, 1, ..., 99' was cut
+ * after '49, 5' (refused as the value 5 listed twice; granwave.sweep writes
+ * its lists this way), a longer value ended as a syntax error on the wrong
+ * line or a path cut short. Lines that do not fit are refused whole. */
+static int lines_fit(const char *text, const char *name, gw_err *err)
+{
+    const long max = INI_MAX_LINE - 2; /* the newline and the NUL fit too */
+    long ln = 1;
+    for (const char *p = text; *p; ln++) {
+        const char *e = strchr(p, '\n');
+        long len = e ? (long)(e - p) : (long)strlen(p);
+        if (len > 0 && p[len - 1] == '\r')
+            len--;
+        if (len > max)
+            return gw_err_set(err, GW_EINVAL, "%s:%ld: a line of %ld characters, above the %ld the config reader "
+                              "takes: give integers as a range A:B, or fewer values", name, ln, len, max);
+        if (!e)
+            break;
+        p = e + 1;
+    }
+    return GW_OK;
+}
+
 int gw_sweep_config_read(const char *path, const gw_sweep_model *const *models, int nmodels,
                          gw_sweep_config *cfg, const gw_sweep_model **model, gw_err *err)
 {
@@ -257,6 +284,10 @@ int gw_sweep_config_read(const char *path, const gw_sweep_model *const *models, 
     int rc = gw_input_read(path, "sweep CONFIG", GW_SWEEP_CONFIG_MAX, &text, NULL, err);
     if (rc != GW_OK)
         return GW_EINVAL; /* a config that cannot be read is bad input (exit 2) */
+    if (lines_fit(text, path, err) != GW_OK) {
+        free(text);
+        return GW_EINVAL;
+    }
     rc = ini_parse_string(text, handler, &pc);
     free(text);
     return config_finish(path, models, nmodels, cfg, model, rc, &pc, err);
@@ -268,6 +299,8 @@ int gw_sweep_config_read_string(const char *text, const char *name, const gw_swe
     memset(cfg, 0, sizeof *cfg);
     *model = NULL;
     parse_ctx pc = {cfg, models, nmodels, "", 0, 0};
+    if (lines_fit(text, name, err) != GW_OK)
+        return GW_EINVAL;
     int rc = ini_parse_string(text, handler, &pc);
     return config_finish(name, models, nmodels, cfg, model, rc, &pc, err);
 }

@@ -24,6 +24,7 @@
 
 #define GW_SWEEP_MAX_KEYS 32
 #define GW_SWEEP_CONFIG_MAX (1L << 20) /* bytes: a config is read whole, bounded */
+#define GW_SWEEP_JOBS_MAX 4096          /* threads of one sweep (--jobs, gw_sweep_run) */
 
 typedef struct gw_sweep_key {
     char *name;
@@ -56,6 +57,10 @@ typedef struct gw_sweep_model {
                gw_err *err);
     /* Validate a case without running it (may be NULL). */
     int (*check)(int nkeys, const char *const *names, const char *const *values, gw_err *err);
+    /* The peak memory a case holds while it runs, bytes, estimated from its
+     * values without running it (may be NULL: not estimated). GW_EINVAL for a
+     * bad value (as check). */
+    int (*memory)(int nkeys, const char *const *names, const char *const *values, double *bytes, gw_err *err);
 } gw_sweep_model;
 
 
@@ -91,11 +96,32 @@ int gw_sweep_write_table(const char *dir, const gw_sweep_config *cfg, const gw_s
 
 /* ---- running cases in memory (gw_sweep_run.c) ---- */
 
+/* The memory this process may use, bytes: the smallest of the physical memory
+ * and the address-space and data limits (ulimit -v, ulimit -d); *what names
+ * the one that binds ("physical memory", "ulimit -v", "ulimit -d"). */
+double gw_memory_available(const char **what);
+
+/* The cases that run at once hold their memory together: with jobs workers
+ * (<= 0: one per online CPU, never more than the cases), the jobs largest
+ * estimates of m->memory over every case of cfg must sum to at most 80 % of
+ * gw_memory_available (the rest for the program, its libraries and the
+ * threads' stacks); processes != 0: the workers are processes on one node
+ * (MPI ranks), each under its own limits, so the largest case is held to 80 %
+ * of this process's limits and the sum to 80 % of the physical memory. GW_OK (also when the model has no estimate); GW_EINVAL with
+ * "jobs: J cases at once need about X GB (the largest, case K, Y GB), above
+ * 80 % of the Z GB available (W): at most M jobs" (or, when a single case does
+ * not fit, "case K needs about Y GB alone ...: no number of jobs fits"); *most (may be NULL) gets the
+ * most jobs that fit (0: none). A bad value: GW_EINVAL "case K: ...". */
+int gw_sweep_memory_check(const gw_sweep_config *cfg, const gw_sweep_model *m, long jobs, int processes,
+                          long *most, gw_err *err);
+
 /* gw_cases_run and gw_case_fn, the worker pool these run on: gw_pool.h. */
 
 /* Every case of cfg run by model m in memory, no files: first every case is
  * checked (m->check, when the model has one: a bad value is refused before any
- * run), then run on jobs threads. values[k * m->ncolumns + j] receives column j
+ * run) and the memory of jobs cases at once bounded (gw_sweep_memory_check),
+ * then run on jobs threads (0: one per CPU; GW_EINVAL "jobs: ..." outside
+ * [0, GW_SWEEP_JOBS_MAX]). values[k * m->ncolumns + j] receives column j
  * of case k (NaN for cases not run). GW_EINVAL / the first failing run's status
  * with "case K: message" in err; GW_ECANCELED when progress asked to stop. */
 int gw_sweep_run(const gw_sweep_config *cfg, const gw_sweep_model *m, int jobs, gw_progress_fn progress,

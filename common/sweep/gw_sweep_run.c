@@ -3,11 +3,105 @@
  * (gw_pool.h), every case checked first. No physics; each case builds its own
  * model and solver (one SUNDIALS context per solver, hence per thread).
  */
+#define _POSIX_C_SOURCE 200809L
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/resource.h>
+#include <unistd.h>
 
 #include "gw_sweep.h"
+
+double gw_memory_available(const char **what)
+{
+    const long pages = sysconf(_SC_PHYS_PAGES), psize = sysconf(_SC_PAGESIZE);
+    double avail = pages > 0 && psize > 0 ? (double)pages * (double)psize : INFINITY;
+    const char *w = "physical memory";
+    struct rlimit rl;
+    if (getrlimit(RLIMIT_AS, &rl) == 0 && rl.rlim_cur != RLIM_INFINITY && (double)rl.rlim_cur < avail)
+        avail = (double)rl.rlim_cur, w = "ulimit -v";
+    if (getrlimit(RLIMIT_DATA, &rl) == 0 && rl.rlim_cur != RLIM_INFINITY && (double)rl.rlim_cur < avail)
+        avail = (double)rl.rlim_cur, w = "ulimit -d";
+    if (what)
+        *what = w;
+    return avail;
+}
+
+int gw_sweep_memory_check(const gw_sweep_config *cfg, const gw_sweep_model *m, long jobs, int processes,
+                          long *most, gw_err *err)
+{
+    if (most)
+        *most = cfg->ncases;
+    if (!m->memory || cfg->ncases <= 0)
+        return GW_OK;
+    if (jobs <= 0) {
+        long c = sysconf(_SC_NPROCESSORS_ONLN);
+        jobs = c > 0 ? (c < 1024 ? c : 1024) : 1;
+    }
+    if (jobs > cfg->ncases)
+        jobs = cfg->ncases;
+    /* the jobs largest estimates, in decreasing order (jobs <= 4096) */
+    double *top = malloc((size_t)jobs * sizeof *top);
+    long *topk = malloc((size_t)jobs * sizeof *topk);
+    if (!top || !topk) {
+        free(top);
+        free(topk);
+        return gw_err_set(err, GW_ENOMEM, "sweep: out of memory");
+    }
+    long ntop = 0;
+    const int nk = cfg->ngrid + cfg->nparams;
+    int rc = GW_OK;
+    for (long k = 0; k < cfg->ncases && rc == GW_OK; k++) {
+        const char *names[2 * GW_SWEEP_MAX_KEYS], *vals[2 * GW_SWEEP_MAX_KEYS];
+        double b = 0;
+        gw_sweep_case(cfg, k, names, vals);
+        if ((rc = m->memory(nk, names, vals, &b, err)) != GW_OK) {
+            char tmp[sizeof err->msg];
+            snprintf(tmp, sizeof tmp, "%s", err ? err->msg : "");
+            gw_err_set(err, rc, "case %ld: %s", k, tmp);
+            break;
+        }
+        if (ntop == jobs && !(b > top[ntop - 1]))
+            continue;
+        long i = ntop < jobs ? ntop++ : ntop - 1;
+        for (; i > 0 && top[i - 1] < b; i--)
+            top[i] = top[i - 1], topk[i] = topk[i - 1];
+        top[i] = b, topk[i] = k;
+    }
+    if (rc == GW_OK) {
+        /* one case within this process's limits; the jobs together within
+         * them too, or within the physical memory when they are processes
+         * (each with its own limits) */
+        const char *what = "", *what_all = "physical memory";
+        const double one = gw_memory_available(&what);
+        double all = one;
+        if (processes) {
+            const long pages = sysconf(_SC_PHYS_PAGES), psize = sysconf(_SC_PAGESIZE);
+            all = pages > 0 && psize > 0 ? (double)pages * (double)psize : INFINITY;
+        } else {
+            what_all = what;
+        }
+        double sum = 0;
+        long fit = 0;
+        for (long i = 0; i < ntop; i++) {
+            sum += top[i];
+            if (sum <= 0.8 * all && top[0] <= 0.8 * one)
+                fit = i + 1;
+        }
+        if (most)
+            *most = fit;
+        if (fit == 0)
+            rc = gw_err_set(err, GW_EINVAL, "case %ld needs about %.3g GB alone, above 80 %% of the %.3g GB "
+                            "available (%s): no number of jobs fits", topk[0], top[0] / 1e9, one / 1e9, what);
+        else if (fit < ntop)
+            rc = gw_err_set(err, GW_EINVAL, "jobs: %ld cases at once need about %.3g GB (the largest, case %ld, "
+                            "%.3g GB), above 80 %% of the %.3g GB available (%s): at most %ld jobs", ntop,
+                            sum / 1e9, topk[0], top[0] / 1e9, all / 1e9, what_all, fit);
+    }
+    free(top);
+    free(topk);
+    return rc;
+}
 
 typedef struct sweep_ctx {
     const gw_sweep_config *cfg;
@@ -33,6 +127,8 @@ int gw_sweep_run(const gw_sweep_config *cfg, const gw_sweep_model *m, int jobs, 
                  void *pctx, double *values, gw_err *err)
 {
     const int nk = cfg->ngrid + cfg->nparams;
+    if (jobs < 0 || jobs > GW_SWEEP_JOBS_MAX) /* the range of granwave sweep --jobs */
+        return gw_err_set(err, GW_EINVAL, "jobs: %d is outside [0, %d] (0: one per CPU)", jobs, GW_SWEEP_JOBS_MAX);
     for (long k = 0; k < cfg->ncases * m->ncolumns; k++)
         values[k] = NAN;
     for (long k = 0; m->check && k < cfg->ncases; k++) {
@@ -45,6 +141,9 @@ int gw_sweep_run(const gw_sweep_config *cfg, const gw_sweep_model *m, int jobs, 
             return gw_err_set(err, rc, "case %ld: %s", k, tmp);
         }
     }
+    int rc = gw_sweep_memory_check(cfg, m, jobs, 0, NULL, err);
+    if (rc != GW_OK)
+        return rc;
     sweep_ctx s = {cfg, m, values};
     return gw_cases_run(cfg->ncases, jobs, run_one, &s, progress, pctx, err);
 }

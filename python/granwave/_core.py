@@ -325,6 +325,12 @@ def _grid_values(key, v):
 
 
 def run_sweep(model, grid, params, jobs, progress):
+    # jobs reaches C as an int: a float, a bool or a str was cut or read
+    # silently (1.5 ran 1 thread, 10**12 wrapped to a negative int: one per CPU)
+    if isinstance(jobs, bool) or not isinstance(jobs, numbers.Integral):
+        raise TypeError(f"sweep(): jobs must be an integer, not {type(jobs).__name__}")
+    if not -2**31 <= jobs < 2**31:  # the library's message for what does not fit its int
+        raise GranwaveValueError(f"sweep: jobs: {jobs} is outside [0, 4096] (0: one per CPU)", GW_EINVAL)
     models = sweep_models()
     if model not in models:
         raise ValueError(f"sweep: unknown model '{model}' ({', '.join(models)})")
@@ -341,7 +347,16 @@ def run_sweep(model, grid, params, jobs, progress):
         if not vals:
             raise ValueError(f"{k}: empty list of grid values")
         axes[k] = vals
-        lines.append(f"{name} = " + ", ".join(_ini_value(k, x) for x in vals))
+        texts = [_ini_value(k, x) for x in vals]
+        if any("," in t for t in texts):  # the list's separator: 'a,b' ran two cases
+            raise ValueError(f"{k}: a grid value holds ',' (the list separator of a sweep)")
+        # consecutive integers as the range A:B (a list line has at most 198
+        # characters: point = range(100) does not fit as a list)
+        ints = [x for x in vals if isinstance(x, numbers.Integral) and not isinstance(x, bool)]
+        if len(vals) > 2 and len(ints) == len(vals) and all(b - a == 1 for a, b in zip(ints, ints[1:])):
+            lines.append(f"{name} = {int(ints[0])}:{int(ints[-1])}")
+        else:
+            lines.append(f"{name} = " + ", ".join(texts))
     lines.append("[params]")
     for k, v in params.items():
         if v is None:

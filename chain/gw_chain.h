@@ -652,6 +652,8 @@ typedef struct gw_chain_drop_result {
     double t_end;
     long n_events, missed_events;
     gw_solver_stats stats;
+    double run_dt, run_dt_max; /* the step the run used (rk4; 0 for cvode and arkode)
+                                  and its step cap, s: the defaults resolved */
 } gw_chain_drop_result;
 
 /* Run the drop with run options o (solver and its settings, dt_out = signal

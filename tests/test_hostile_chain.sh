@@ -47,6 +47,12 @@
 #  10 dispersion's work (sites x samples x RK4 steps) was not bounded:
 #    --steps-per-sample 100000 at the defaults meant 2.1e11 bead-steps (about
 #    3 h, no line said so); bounded before the run at 1e10.
+#  11 provenance of the drop and the studies over N: drop's settings recorded
+#    dt_max 0 and (rk4) dt 0; falcon, wavespeed and softwall recorded t_max 0,
+#    dt_out 0, dt 0 and dt_max 0 for values resolved per run. The drop records the
+#    step and cap it ran with; the studies record in settings.solver the value every
+#    run shared or null, and each run's value in settings.runs (and falcon_runs.csv
+#    columns), equal to what `granwave chain` resolves for the same column.
 set -u
 GW=$1
 SRC=${2:-.}
@@ -261,6 +267,59 @@ refused "dispersion --n 65536 --t-samples 2048 --steps-per-sample 75 (the larges
 runs "dispersion --n 16 --t-samples 64 --steps-per-sample 100000 (1e8 bead-steps)" "$tmp/d.json" \
     dispersion --n 16 --t-samples 64 --steps-per-sample 100000 --json &&
     jcheck "  it runs with the steps asked for" "$tmp/d.json" "j['settings']['solver']['steps_per_sample'] == 100000 and j['steps'] >= 100000 * 63"
+
+# --- 11: the values that ran, resolved, in every output of drop and the studies
+if runs "drop --n 3 --solver rk4 --json" "$tmp/d.json" drop --n 3 --solver rk4 --json; then
+    jcheck "  its dt and dt_max are those of its first collision (T_c/400 and the quarter contact), not 0" "$tmp/d.json" \
+        "(lambda s, f: s['dt'] > 0 and s['dt_max'] > 0 and abs(s['dt'] / f['dt'] - 1) < 1e-12 and abs(s['dt_max'] / f['dt_max'] - 1) < 1e-12 and abs(s['dt'] / (j['first_collision']['closed_forms']['t_q'] / 800) - 1) < 1e-12)(j['settings']['solver'], j['first_collision']['settings']['solver'])"
+fi
+if runs "drop --n 3 --out (cvode)" "$tmp/d.txt" drop --n 3 --out "$tmp/run"; then
+    "$PY" - "$tmp/run" <<'PYEOF' >"$tmp/pyout" 2>&1 && ok "  the --out files record a step cap > 0, as the JSON" || ko "  drop --out: $(cat "$tmp/pyout")"
+import json, sys, glob
+d = sys.argv[1]
+j = json.load(open(d + "/drop.json")) if __import__("os").path.exists(d + "/drop.json") else None
+for f in glob.glob(d + "/*.csv"):
+    hdr = [l for l in open(f) if l.startswith("# settings: ")]
+    assert hdr, f
+    h = json.loads(hdr[0][len("# settings: "):])
+    assert h["solver"]["dt_max"] > 0 and h["solver"]["t_max"] > 0, (f, h["solver"])
+PYEOF
+fi
+rm -rf "$tmp/run"
+if runs "falcon --n 1:3 --heights none --vimp 0.3,0.5 --solver cvode --out" "$tmp/f.json" \
+        falcon --n 1:3 --heights none --vimp 0.3,0.5 --solver cvode --quiet --json --out "$tmp/run"; then
+    for nv in "1 0.3 0" "3 0.3 2" "2 0.5 4"; do
+        set -- $nv
+        runs "  chain --n $1 --vimp $2" "$tmp/c.json" chain --n "$1" --vimp "$2" --json &&
+            jcheck "  falcon's run $3 (N $1, v $2) records chain's t_max, dt_out, dt_max (to 1e-12)" "$tmp/f.json" \
+                "(lambda r, c: all(abs(r[k][$3] - c[k]) <= 1e-12 * c[k] for k in ('t_max', 'dt_out', 'dt_max')) and r['dt'][$3] == c['dt'])(j['settings']['runs'], json.load(open('$tmp/c.json'))['settings']['solver'])"
+    done
+    jcheck "  settings.solver: t_max and dt_out null (they differ per run), 6 runs listed" "$tmp/f.json" \
+        "j['settings']['solver']['t_max'] is None and j['settings']['solver']['dt_out'] is None and len(j['settings']['runs']['t_max']) == 6"
+    "$PY" - "$tmp/run" "$tmp/f.json" <<'PYEOF' >"$tmp/pyout" 2>&1 && ok "  falcon_runs.csv carries each run's t_max, dt_out, dt, dt_max; its header's settings are the JSON's" || ko "  falcon_runs.csv: $(cat "$tmp/pyout")"
+import csv, json, sys
+d, jf = sys.argv[1], sys.argv[2]
+j = json.load(open(jf))
+lines = open(d + "/falcon_runs.csv").read().splitlines()
+hdr = json.loads(lines[0].split(" settings: ", 1)[1])
+assert hdr == j["settings"], "header settings differ"
+rows = list(csv.DictReader(lines[1:]))
+for k in ("t_max", "dt_out", "dt", "dt_max"):
+    col = [float(r[k + "_s"]) for r in rows]
+    assert col == j["settings"]["runs"][k], (k, col, j["settings"]["runs"][k])
+PYEOF
+fi
+rm -rf "$tmp/run"
+if runs "wavespeed --n 6:8 --vimp 0.3,0.5 --json" "$tmp/w.json" wavespeed --n 6:8 --vimp 0.3,0.5 --quiet --json; then
+    runs "  chain --n 8 --vimp 0.5" "$tmp/c.json" chain --n 8 --vimp 0.5 --json &&
+        jcheck "  its last run (N 8, v 0.5) records chain's t_max, dt_out and dt_max" "$tmp/w.json" \
+            "(lambda r, c: len(r['t_max']) == 6 and all(abs(r[k][5] - c[k]) <= 1e-12 * c[k] for k in ('t_max', 'dt_out', 'dt_max')))(j['settings']['runs'], json.load(open('$tmp/c.json'))['settings']['solver'])"
+fi
+if runs "softwall --n 1:3 --json" "$tmp/s.json" softwall --n 1:3 --quiet --json; then
+    runs "  chain --n 2 --kwall 1e9 --vimp sqrt(2 g 2.9 mm)" "$tmp/c.json" chain --n 2 --kwall 1e9 --vimp "$("$PY" -c 'print(repr((2 * 9.81 * 2.9e-3) ** 0.5))')" --json &&
+        jcheck "  its run N 2 records chain's t_max, dt_out and dt_max; settings.solver's t_max null" "$tmp/s.json" \
+            "(lambda r, c: all(abs(r[k][1] - c[k]) <= 1e-9 * c[k] for k in ('t_max', 'dt_out', 'dt_max')) and j['settings']['solver']['t_max'] is None)(j['settings']['runs'], json.load(open('$tmp/c.json'))['settings']['solver'])"
+fi
 
 echo "test_hostile_chain: $passes passed, $fails failed"
 [ $fails -eq 0 ]

@@ -97,3 +97,28 @@ def test_resources_bounded_before_the_run(tmp_path):
     assert not out.exists()
     with pytest.raises(granwave.GranwaveValueError, match=r"dt_out: the trace of 1000 beads .*160 GB in memory"):
         granwave.drop(n=1000, t_max=1, dt_out=1e-7, trace=True)
+
+
+def test_results_record_the_settings_that_ran():
+    # The studies over N and the drop recorded t_max, dt_out, dt and dt_max as 0
+    # (the default marker), not what ran; every result now carries the values each
+    # collision used, equal to those of the same column run alone.
+    c = granwave.chain(n=3, solver="rk4")
+    assert c.t_max == pytest.approx(20 * (3 * c.t_q + c.tau_1), rel=1e-12)
+    assert c.dt_out == pytest.approx(c.tau_1 / 200, rel=1e-12)
+    assert c.dt == pytest.approx(c.t_q / 800, rel=1e-12) and 0 < c.dt_max < c.tau_1
+    f = granwave.falcon(heights=None, n=(1, 3), vimp=[0.3, 0.5], solver="arkode")
+    for iv, v in enumerate((0.3, 0.5)):
+        for k, n in enumerate((1, 2, 3)):
+            one = granwave.chain(n=n, vimp=v, solver="arkode")
+            for key in ("t_max", "dt_out", "dt_max"):
+                assert f[key][iv][k] == pytest.approx(one[key], rel=1e-12), (key, v, n)
+            assert f.dt[iv][k] == 0  # arkode: no fixed step
+    d = granwave.drop(n=3, solver="rk4")
+    assert d.dt > 0 and d.dt_max > 0
+    one = granwave.chain(n=3, vimp=d.v_imp, solver="rk4", gravity=9.81)
+    assert d.dt == pytest.approx(one.dt, rel=1e-12) and d.dt_max == pytest.approx(one.dt_max, rel=1e-12)
+    s = granwave.softwall(n=(1, 3))
+    assert s.t_max.shape == (1, 3) and all(s.t_max[0] > 0) and all(s.dt_max[0] > 0)
+    w = granwave.wavespeed(n=(6, 8), vimp=[0.3])
+    assert w.t_max[0][2] == pytest.approx(granwave.chain(n=8, vimp=0.3).t_max, rel=1e-12)

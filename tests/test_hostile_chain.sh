@@ -53,6 +53,9 @@
 #    step and cap it ran with; the studies record in settings.solver the value every
 #    run shared or null, and each run's value in settings.runs (and falcon_runs.csv
 #    columns), equal to what `granwave chain` resolves for the same column.
+#  12 a flag given twice took its last value silently (`chain --n 3 ... --n 30`
+#    ran 30 beads): the shared parser refuses it, for every command (the layer
+#    commands and sweep too), before anything is written or run.
 set -u
 GW=$1
 SRC=${2:-.}
@@ -320,6 +323,18 @@ if runs "softwall --n 1:3 --json" "$tmp/s.json" softwall --n 1:3 --quiet --json;
         jcheck "  its run N 2 records chain's t_max, dt_out and dt_max; settings.solver's t_max null" "$tmp/s.json" \
             "(lambda r, c: all(abs(r[k][1] - c[k]) <= 1e-9 * c[k] for k in ('t_max', 'dt_out', 'dt_max')) and j['settings']['solver']['t_max'] is None)(j['settings']['runs'], json.load(open('$tmp/c.json'))['settings']['solver'])"
 fi
+
+# --- 12: a flag given twice is refused by every command's parser
+for cmd in chain falcon dispersion wavespeed softwall drop sweep layer-make layer-impact layer-stats; do
+    refused "$cmd --out given twice" "^granwave $cmd --out: given twice\$" $cmd --out "$tmp/o" --out "$tmp/o"
+done
+refused "chain --n 3 --vimp 0.3 --n 30" '^granwave chain --n: given twice$' chain --n 3 --vimp 0.3 --n 30 --out "$tmp/o"
+refused "chain --n=3 --n=3 (the same value, '=' form)" '^granwave chain --n: given twice$' chain --n=3 --n=3 --out "$tmp/o"
+refused "falcon --json --json (a flag without value)" '^granwave falcon --json: given twice$' falcon --json --json --out "$tmp/o"
+refused "drop --solver rk4 --solver cvode" '^granwave drop --solver: given twice$' drop --solver rk4 --solver cvode --out "$tmp/o"
+refused "layer-impact --vi 3 --vi=4" '^granwave layer-impact --vi: given twice$' layer-impact --vi 3 --vi=4 --out "$tmp/o"
+timeout 10 "$GW" chain --help --help >"$tmp/h" 2>&1 </dev/null && grep -q '^usage: granwave chain' "$tmp/h" &&
+    ok "--help given twice still prints the help (exit 0)" || ko "chain --help --help: $(head -c 200 "$tmp/h")"
 
 echo "test_hostile_chain: $passes passed, $fails failed"
 [ $fails -eq 0 ]

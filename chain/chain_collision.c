@@ -92,6 +92,11 @@ int gw_chain_collision_run(const gw_chain_setup *s, gw_chain_collision *out, gw_
     gw_chain_trace tr;
     gw_chain_trace_init(&tr, 0);
     int rc = gw_chain_setup_resolve(s, &res, err);
+    if (rc == GW_OK) { /* the run's bounds (samples, trace, steps, memory) before anything is allocated */
+        gw_chain_run_opts o = res.run;
+        o.sample = s->trace ? gw_chain_trace_sample : NULL;
+        rc = gw_chain_run_check(&res.params, &o, err);
+    }
     if (rc == GW_OK)
         rc = gw_chain_create(&res.params, &c, err);
     if (rc != GW_OK) {

@@ -439,6 +439,8 @@ int gw_chain_drop_run(const gw_chain_drop_params *p, const gw_chain_run_opts *o,
     r->f_max = 0;
     r->t_fmax = NAN;
     int rc = gw_chain_drop_params_validate(p, err);
+    if (rc == GW_OK) /* before anything is allocated */
+        rc = gw_chain_memory_check(&p->chain, o->solver, o->sp.method, err);
     if (rc != GW_OK)
         return rc;
     const int n = p->chain.n;

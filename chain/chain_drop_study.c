@@ -340,6 +340,10 @@ int gw_chain_drop_study_run(const gw_chain_drop_setup *s, gw_progress_fn progres
     gw_chain_params *p = &res.params;
     if (s->block)
         gw_chain_drop_block_params(p);
+    if ((rc = gw_chain_memory_check(p, res.run.solver, res.run.sp.method, err)) != GW_OK) {
+        gw_chain_resolved_free(&res);
+        return rc;
+    }
     const double t_max = res.run.t_max;
     const double dt_out = s->col.dt_out > 0 ? s->col.dt_out : fmin(1e-6, t_max);
     if (dt_out < t_max * 1e-7 || dt_out > t_max) {

@@ -56,6 +56,14 @@
 #  12 a flag given twice took its last value silently (`chain --n 3 ... --n 30`
 #    ran 30 beads): the shared parser refuses it, for every command (the layer
 #    commands and sweep too), before anything is written or run.
+#  13 a column's memory was not estimated before allocation: chain --n 50000000
+#    under a 4 GB limit ended "out of memory" (exit 1) from the first allocation;
+#    with a sensor body (or a wall with its own states) cvode's Jacobian is full
+#    and --n 20000 asked 77 GB ("band matrix allocation failed", exit 1). The
+#    state, model arrays and the solver's workspace are estimated before anything
+#    is allocated and bounded at 2 GiB, in the library (drop, Python, sweeps):
+#    exit 2 naming n and the most beads that pass; where the steps bound trips at
+#    fewer beads (rk4) it is the one named.
 set -u
 GW=$1
 SRC=${2:-.}
@@ -335,6 +343,36 @@ refused "drop --solver rk4 --solver cvode" '^granwave drop --solver: given twice
 refused "layer-impact --vi 3 --vi=4" '^granwave layer-impact --vi: given twice$' layer-impact --vi 3 --vi=4 --out "$tmp/o"
 timeout 10 "$GW" chain --help --help >"$tmp/h" 2>&1 </dev/null && grep -q '^usage: granwave chain' "$tmp/h" &&
     ok "--help given twice still prints the help (exit 0)" || ko "chain --help --help: $(head -c 200 "$tmp/h")"
+
+# --- 13: memory estimated before allocation (under a 4 GB limit as a user's shell might set)
+memref() {
+    local what=$1 pat=$2; shift 2
+    rm -rf "$tmp/o"
+    timeout -s KILL 20 bash -c 'ulimit -v 4000000; exec "$@"' _ "$GW" "$@" >"$tmp/stdout" 2>"$tmp/stderr" </dev/null
+    local rc=$?
+    if [ $rc -eq 2 ] && [ "$(wc -l <"$tmp/stderr")" -eq 1 ] && grep -qE -- "$pat" "$tmp/stderr" && [ ! -e "$tmp/o" ]; then
+        ok "$what"
+    else
+        ko "$what: exit $rc: $(head -c 300 "$tmp/stderr")"
+    fi
+}
+memref "chain --n 50000000 (47 GB with cvode)" \
+    '^granwave chain: n: a column of 50000000 beads needs about 47.2 GB .* cvode \(bdf\) .* above the 2.15 GB limit: at most 2274873 beads here$' \
+    chain --n 50000000 --out "$tmp/o"
+memref "chain --n 3000000 --solver arkode --method dirk" '^granwave chain: n: a column of 3000000 beads .* arkode \(dirk\) .* at most [0-9]+ beads here$' \
+    chain --n 3000000 --solver arkode --method dirk --out "$tmp/o"
+memref "chain --n 20000 with a sensor body (a full Jacobian: 77 GB)" \
+    '^granwave chain: n: a column of 20000 beads needs about 76.8 GB .*a full Jacobian.* at most 3339 beads here$' \
+    chain --n 20000 --sensor-mass 3e-3 --sensor-stiffness 2e9 --out "$tmp/o"
+memref "drop --n 100000 with a sensor body" '^granwave drop --n: a column of 100000 beads .*a full Jacobian.* at most 3339 beads here$' \
+    drop --n 100000 --sensor-mass 3e-3 --sensor-stiffness 2e9 --out "$tmp/o"
+memref "chain --n 10000000 --solver rk4: the steps bound trips at fewer beads and is named" \
+    '^granwave chain: dt: a step of .* needs about 8e\+09 steps over the collision' chain --n 10000000 --solver rk4 --out "$tmp/o"
+# below the bound the estimate does not refuse: the arkode erk column of 3339 beads
+# with a sensor (no Jacobian) starts (stopped at t-max 1e-9 s)
+timeout 60 "$GW" chain --n 3339 --sensor-mass 3e-3 --sensor-stiffness 2e9 --solver arkode --t-max 1e-9 --json >/dev/null 2>"$tmp/stderr" </dev/null
+rc=$?
+[ $rc -ne 2 ] && ok "  a column within the bound is not refused (exit $rc)" || ko "  refused within the bound: $(cat "$tmp/stderr")"
 
 echo "test_hostile_chain: $passes passed, $fails failed"
 [ $fails -eq 0 ]

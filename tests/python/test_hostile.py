@@ -122,3 +122,15 @@ def test_results_record_the_settings_that_ran():
     assert s.t_max.shape == (1, 3) and all(s.t_max[0] > 0) and all(s.dt_max[0] > 0)
     w = granwave.wavespeed(n=(6, 8), vimp=[0.3])
     assert w.t_max[0][2] == pytest.approx(granwave.chain(n=8, vimp=0.3).t_max, rel=1e-12)
+
+
+def test_a_column_memory_is_bounded_before_allocation():
+    # chain(n=50000000) ended "out of memory" from its first allocation; with a
+    # sensor body cvode's Jacobian is full (n^2): 20000 beads asked for 77 GB
+    with pytest.raises(granwave.GranwaveValueError,
+                       match=r"n: a column of 50000000 beads needs about 47.2 GB .* at most 2274873 beads here"):
+        granwave.chain(n=50000000)
+    with pytest.raises(granwave.GranwaveValueError, match=r"n: a column of 20000 beads .*full Jacobian.* at most 3339"):
+        granwave.chain(n=20000, sensor_mass=3e-3, sensor_stiffness=2e9)
+    with pytest.raises(granwave.GranwaveValueError, match=r"n: a column of 100000 beads .*at most 3339"):
+        granwave.drop(n=100000, sensor_mass=3e-3, sensor_stiffness=2e9)

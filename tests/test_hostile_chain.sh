@@ -64,6 +64,9 @@
 #    is allocated and bounded at 2 GiB, in the library (drop, Python, sweeps):
 #    exit 2 naming n and the most beads that pass; where the steps bound trips at
 #    fewer beads (rk4) it is the one named.
+#  14 a chain sweep whose case the run refuses (dt-max 1e-13: 1.1e9 steps; n 5e7:
+#    47 GB) exited 2 but had made OUT and its journal.csv: the model's check
+#    (run on every case before OUT is made) now runs the collision's bounds too.
 set -u
 GW=$1
 SRC=${2:-.}
@@ -373,6 +376,15 @@ memref "chain --n 10000000 --solver rk4: the steps bound trips at fewer beads an
 timeout 60 "$GW" chain --n 3339 --sensor-mass 3e-3 --sensor-stiffness 2e9 --solver arkode --t-max 1e-9 --json >/dev/null 2>"$tmp/stderr" </dev/null
 rc=$?
 [ $rc -ne 2 ] && ok "  a column within the bound is not refused (exit $rc)" || ko "  refused within the bound: $(cat "$tmp/stderr")"
+
+# --- 14: a chain sweep's cases checked against the run's bounds before OUT is made
+printf '[sweep]\nmodel = chain\n[grid]\nvimp = 0.3\n[params]\nn = 3\ndt-max = 1e-13\n' >"$tmp/dtm.ini"
+refused "a chain sweep with dt-max 1e-13 (1.1e9 steps): nothing made" \
+    "^granwave sweep: .*dtm.ini: case 0: dt-max: a step of 1e-13 s needs about 1.1e\+09 steps" sweep "$tmp/dtm.ini" --out "$tmp/o" --quiet
+printf '[sweep]\nmodel = chain\n[grid]\nvimp = 0.3\n[params]\nn = 50000000\n' >"$tmp/big.ini"
+refused "a chain sweep case of 5e7 beads: nothing made" 'case 0: n: a column of 50000000 beads needs about 47.2 GB' \
+    sweep "$tmp/big.ini" --out "$tmp/o" --quiet
+refused "the same with --check" 'case 0: n: a column of 50000000 beads' sweep "$tmp/big.ini" --check --out "$tmp/o"
 
 echo "test_hostile_chain: $passes passed, $fails failed"
 [ $fails -eq 0 ]

@@ -67,6 +67,10 @@
 #  14 a chain sweep whose case the run refuses (dt-max 1e-13: 1.1e9 steps; n 5e7:
 #    47 GB) exited 2 but had made OUT and its journal.csv: the model's check
 #    (run on every case before OUT is made) now runs the collision's bounds too.
+#  15 --out under /proc (root: the mode bits allow it, mkdir fails): chain and
+#    drop ran, then failed writing (exit 1); wavespeed refused without naming
+#    --out. The check before the run now makes and removes a directory where
+#    the run will make its own: exit 2 naming --out, before the run, nothing left.
 set -u
 GW=$1
 SRC=${2:-.}
@@ -385,6 +389,14 @@ printf '[sweep]\nmodel = chain\n[grid]\nvimp = 0.3\n[params]\nn = 50000000\n' >"
 refused "a chain sweep case of 5e7 beads: nothing made" 'case 0: n: a column of 50000000 beads needs about 47.2 GB' \
     sweep "$tmp/big.ini" --out "$tmp/o" --quiet
 refused "the same with --check" 'case 0: n: a column of 50000000 beads' sweep "$tmp/big.ini" --check --out "$tmp/o"
+
+# --- 15: --out where a directory cannot be made whatever the mode bits say
+for cmd in "chain --n 2" "drop --n 2" "falcon --n 1:3 --heights none" "wavespeed --n 6:8 --vimp 0.3" "softwall --n 1:3" "dispersion --n 16 --t-samples 64"; do
+    refused "$cmd --out /proc/granwave-x (before the run)" "^granwave ${cmd%% *} --out: cannot write into '/proc'" $cmd --out /proc/granwave-x
+done
+ls -a "$tmp" | grep -q granwave-probe && ko "a probe directory was left in $tmp" || ok "no probe directory left behind"
+runs "chain --n 2 --out a new directory still runs" "$tmp/c.txt" chain --n 2 --out "$tmp/new/run" && [ -s "$tmp/new/run/chain.json" ] &&
+    ! ls -a "$tmp/new" | grep -q granwave-probe && ok "  and writes there, nothing else" || ko "  chain --out new dir"
 
 echo "test_hostile_chain: $passes passed, $fails failed"
 [ $fails -eq 0 ]

@@ -47,7 +47,9 @@ void gw_chain_falcon_analyse(const gw_chain_params *p, double v, const gw_chain_
         }
     }
     a->period_mean = np ? a->period_mean / np : NAN;
-    a->fit.c1 = a->fit20.c1 = NAN;
+    /* no line through fewer than 2 points: every number of it undefined (a
+     * single N reported t_q null beside t_q_err 0 and r2 0) */
+    a->fit = a->fit20 = (gw_linfit){.c0 = NAN, .c1 = NAN, .c0_err = NAN, .c1_err = NAN, .r2 = NAN, .max_rel_resid = NAN};
     if (x && count >= 2)
         gw_fit_linear(x, y, count, &a->fit);
     if (x && c20 >= 2)
@@ -253,6 +255,10 @@ int gw_chain_falcon_run(const gw_chain_falcon_setup *s, gw_progress_fn progress,
     }
     for (int k = 0; k < nn; k++)
         out->n[k] = (double)(s->n[0] + k);
+    if ((rc = gw_chain_study_speeds_check(out->v_imp, nv, s->vimp.n, err)) != GW_OK) {
+        gw_chain_falcon_outcome_free(out);
+        return rc;
+    }
     gw_chain_setup col = s->col; /* shallow: n and vimp of the first case, no radii */
     col.n = s->n[0];
     col.vimp = out->v_imp[0];

@@ -321,6 +321,8 @@ int gw_chain_wavespeed_run(const gw_chain_wavespeed_setup *s, gw_progress_fn pro
     int nv = s->vimp.n, per_v = (int)(b - a + 1);
     if (nv < 1)
         return gw_err_set(err, GW_EINVAL, "vimp: no impact velocity");
+    if ((rc = gw_chain_study_speeds_check(s->vimp.v, nv, nv, err)) != GW_OK)
+        return rc;
     double *blk = calloc(8 * (size_t)nv + 4 * (size_t)nv * (size_t)per_v, sizeof *blk);
     gw_chain_result *res = calloc((size_t)nv * (size_t)per_v, sizeof *res);
     if (!blk || !res) {

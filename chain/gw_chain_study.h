@@ -44,6 +44,12 @@
  * columns per N is W bead^2 of work ...", else GW_OK. The studies call it in
  * their check; commands call it before they create --out. */
 int gw_chain_study_work_check(long a, long b, int runs, gw_err *err);
+/* The impact velocities v[0..n) of a study (falcon: the speeds, then the heights'
+ * sqrt(2 g h); wavespeed) are distinct: one given twice ran the same collisions
+ * twice and counted them twice in the fits (a spurious standard error with two
+ * distinct speeds). GW_EINVAL "vimp: ..." (or "heights: ..." for an index >=
+ * n_speeds) otherwise. */
+int gw_chain_study_speeds_check(const double *v, int n, int n_speeds, gw_err *err);
 
 typedef struct gw_chain_setup {
     long n;               /* beads [1] */

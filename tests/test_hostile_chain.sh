@@ -71,6 +71,12 @@
 #    drop ran, then failed writing (exit 1); wavespeed refused without naming
 #    --out. The check before the run now makes and removes a directory where
 #    the run will make its own: exit 2 naming --out, before the run, nothing left.
+#  16 a speed given twice (falcon --vimp 0.3,0.3, --heights 1,1, wavespeed
+#    --vimp 0.3,0.5,0.3) ran the same collisions twice and counted them twice
+#    in the fits: wavespeed's beta_err was 1.2e-15 from a duplicated point (null,
+#    undefined, with the two distinct speeds). Refused, in the library too.
+#  17 falcon --n 1:1 (one column per speed) reported t_q null but t_q_err 0 and
+#    r2 0: a line through one point has no number; all are null now.
 set -u
 GW=$1
 SRC=${2:-.}
@@ -397,6 +403,21 @@ done
 ls -a "$tmp" | grep -q granwave-probe && ko "a probe directory was left in $tmp" || ok "no probe directory left behind"
 runs "chain --n 2 --out a new directory still runs" "$tmp/c.txt" chain --n 2 --out "$tmp/new/run" && [ -s "$tmp/new/run/chain.json" ] &&
     ! ls -a "$tmp/new" | grep -q granwave-probe && ok "  and writes there, nothing else" || ko "  chain --out new dir"
+
+# --- 16: a speed given twice
+refused "falcon --vimp 0.3,0.3" '^granwave falcon --vimp: item 2 gives the impact velocity 0.3 m/s of item 1' \
+    falcon --vimp 0.3,0.3 --heights none --out "$tmp/o"
+refused "falcon --heights 1,1" '^granwave falcon --heights: item 2 gives the impact velocity 0.1400714104 m/s of item 1' \
+    falcon --heights 1,1 --out "$tmp/o"
+refused "wavespeed --vimp 0.3,0.5,0.3" '^granwave wavespeed --vimp: item 3 gives the impact velocity 0.3 m/s of item 1' \
+    wavespeed --vimp 0.3,0.5,0.3 --out "$tmp/o"
+runs "wavespeed --vimp 0.3,0.5 --n 6:8 (two distinct speeds)" "$tmp/w.json" wavespeed --vimp 0.3,0.5 --n 6:8 --quiet --json &&
+    jcheck "  beta 1/5 (F.16) to 1e-6, its standard error undefined (null) with two points" "$tmp/w.json" \
+        "abs(j['beta'] - 0.2) < 1e-6 and j['beta_err'] is None"
+# --- 17: no line through one point
+runs "falcon --n 1:1" "$tmp/f.json" falcon --n 1:1 --heights none --quiet --json &&
+    jcheck "  t_q, t_q_err, r2 and the intercept's error all null" "$tmp/f.json" \
+        "all(j['velocities'][0][k] is None for k in ('t_q', 't_q_err', 'r2', 'tau_fit_intercept_err', 'wave_speed'))"
 
 echo "test_hostile_chain: $passes passed, $fails failed"
 [ $fails -eq 0 ]

@@ -333,6 +333,10 @@ int gw_cmd_falcon(int argc, char **argv)
         f.fv[i].h_mm = is_h ? x : NAN;
         f.fv[i].v = f.v[i] = is_h ? sqrt(2 * G_EARTH * x * 1e-3) : x;
     }
+    if (gw_chain_study_speeds_check(f.v, f.nv, nvv, &err) != GW_OK) {
+        code = chain_cli_study_fail("falcon", err.msg);
+        goto out;
+    }
     f.c.params.n = f.n_lo;
     f.c.params.v_imp = f.v[0];
     if (chain_cli_resolve(&f.c, opts, "falcon", &err) != GW_OK) {

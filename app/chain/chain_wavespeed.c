@@ -64,7 +64,7 @@ int gw_cmd_wavespeed(int argc, char **argv)
         free(v);
         return chain_cli_fail("wavespeed --n: need at least 3 sizes and a largest column of >= 8 beads");
     }
-    if (gw_chain_study_work_check(a, b, nv, &err) != GW_OK) {
+    if (gw_chain_study_speeds_check(v, nv, nv, &err) != GW_OK || gw_chain_study_work_check(a, b, nv, &err) != GW_OK) {
         free(v);
         return chain_cli_study_fail("wavespeed", err.msg);
     }

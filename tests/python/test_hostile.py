@@ -134,3 +134,10 @@ def test_a_column_memory_is_bounded_before_allocation():
         granwave.chain(n=20000, sensor_mass=3e-3, sensor_stiffness=2e9)
     with pytest.raises(granwave.GranwaveValueError, match=r"n: a column of 100000 beads .*at most 3339"):
         granwave.drop(n=100000, sensor_mass=3e-3, sensor_stiffness=2e9)
+
+
+def test_a_speed_given_twice_is_refused():
+    with pytest.raises(granwave.GranwaveValueError, match=r"vimp: item 2 gives the impact velocity 0.3 m/s of item 1"):
+        granwave.falcon(heights=None, n=(1, 3), vimp=[0.3, 0.3])
+    with pytest.raises(granwave.GranwaveValueError, match=r"vimp: item 3 gives the impact velocity 0.3 m/s of item 1"):
+        granwave.wavespeed(n=(6, 8), vimp=[0.3, 0.5, 0.3])

@@ -77,6 +77,8 @@
 #    undefined, with the two distinct speeds). Refused, in the library too.
 #  17 falcon --n 1:1 (one column per speed) reported t_q null but t_q_err 0 and
 #    r2 0: a line through one point has no number; all are null now.
+#  18 a failed run's line said the command twice ("granwave chain: chain: bead 1
+#    still on the wall ...", "granwave drop: drop: relative energy error ...").
 set -u
 GW=$1
 SRC=${2:-.}
@@ -418,6 +420,12 @@ runs "wavespeed --vimp 0.3,0.5 --n 6:8 (two distinct speeds)" "$tmp/w.json" wave
 runs "falcon --n 1:1" "$tmp/f.json" falcon --n 1:1 --heights none --quiet --json &&
     jcheck "  t_q, t_q_err, r2 and the intercept's error all null" "$tmp/f.json" \
         "all(j['velocities'][0][k] is None for k in ('t_q', 't_q_err', 'r2', 'tau_fit_intercept_err', 'wave_speed'))"
+
+# --- 18: a failed run's line names the command once
+timeout 20 "$GW" chain --n 3 --t-max 1e-7 >/dev/null 2>"$tmp/e" </dev/null; rc=$?
+[ $rc -eq 1 ] && grep -qx 'granwave chain: bead 1 still on the wall at t_max = 1e-07 s' "$tmp/e" && ok "chain failing at t-max: exit 1, one prefix" || ko "chain --t-max 1e-7: exit $rc $(cat "$tmp/e")"
+timeout 20 "$GW" drop --energy-tol 1e-20 >/dev/null 2>"$tmp/e" </dev/null; rc=$?
+[ $rc -eq 1 ] && grep -q '^granwave drop: relative energy error .* exceeds the limit 1e-20' "$tmp/e" && ok "drop over its energy limit: exit 1, one prefix" || ko "drop --energy-tol 1e-20: exit $rc $(cat "$tmp/e")"
 
 echo "test_hostile_chain: $passes passed, $fails failed"
 [ $fails -eq 0 ]

@@ -134,7 +134,8 @@ int gw_cmd_chain(int argc, char **argv)
     double wall_ms = gw_clock_ms() - t0;
     int code = 0;
     if (rc != GW_OK) {
-        fprintf(stderr, "granwave chain: %s\n", err.msg);
+        /* the library's run messages start "chain: " already */
+        fprintf(stderr, "granwave %s%s\n", strncmp(err.msg, "chain: ", 7) == 0 ? "" : "chain: ", err.msg);
         code = rc == GW_EINVAL ? 2 : 1;
         if (c.out && code == 1) { /* keep what was computed: the trace up to the failure and its state */
             char *hdr = run_header(&c, &r, argc, argv);

@@ -341,7 +341,7 @@ int gw_cmd_drop(int argc, char **argv)
     if (!buf && rc == GW_OK)
         rc = gw_err_set(&err, GW_ENOMEM, "drop: out of memory");
     if (rc != GW_OK) {
-        fprintf(stderr, "granwave %s%s\n", rc == GW_EINVAL ? "" : "drop: ", err.msg);
+        fprintf(stderr, "granwave %s%s\n", rc == GW_EINVAL || strncmp(err.msg, "drop: ", 6) == 0 ? "" : "drop: ", err.msg);
         code = rc == GW_EINVAL ? 2 : 1;
     } else if (d.c.out && write_outputs(&d, r, &tr, o.wall_time_ms, argc, argv, buf, &err) != GW_OK) {
         fprintf(stderr, "granwave drop --out: %s\n", err.msg);

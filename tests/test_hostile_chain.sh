@@ -79,6 +79,11 @@
 #    r2 0: a line through one point has no number; all are null now.
 #  18 a failed run's line said the command twice ("granwave chain: chain: bead 1
 #    still on the wall ...", "granwave drop: drop: relative energy error ...").
+#  19 dispersion --column-n: --vimp 1e-200 failed at t = 0 inside cvode (exit 1;
+#    the other chain speeds lie in [1e-9, 1e3] since section 6); the column
+#    stored every bead's series though the spectrum takes the wall force only,
+#    so --column-n 20000 was refused for 90 GB "of its contact events", naming
+#    --n (not --column-n) and advising to run without --out (refused without it).
 set -u
 GW=$1
 SRC=${2:-.}
@@ -426,6 +431,15 @@ timeout 20 "$GW" chain --n 3 --t-max 1e-7 >/dev/null 2>"$tmp/e" </dev/null; rc=$
 [ $rc -eq 1 ] && grep -qx 'granwave chain: bead 1 still on the wall at t_max = 1e-07 s' "$tmp/e" && ok "chain failing at t-max: exit 1, one prefix" || ko "chain --t-max 1e-7: exit $rc $(cat "$tmp/e")"
 timeout 20 "$GW" drop --energy-tol 1e-20 >/dev/null 2>"$tmp/e" </dev/null; rc=$?
 [ $rc -eq 1 ] && grep -q '^granwave drop: relative energy error .* exceeds the limit 1e-20' "$tmp/e" && ok "drop over its energy limit: exit 1, one prefix" || ko "drop --energy-tol 1e-20: exit $rc $(cat "$tmp/e")"
+
+# --- 19: dispersion --column-n: its speed range and its stored series
+refused "dispersion --column-n 3 --vimp 1e-200" '^granwave dispersion --vimp: 1e-200 is outside \[1e-09, 1000\]' \
+    dispersion --column-n 3 --vimp 1e-200 --out "$tmp/o"
+runs "dispersion --column-n 3 --vimp 1e-9 runs" "$tmp/d.json" dispersion --column-n 3 --vimp 1e-9 --json &&
+    jcheck "  at that speed" "$tmp/d.json" "j['v_imp'] == 1e-9"
+timeout 3 "$GW" dispersion --column-n 20000 --json >/dev/null 2>"$tmp/e" </dev/null; rc=$?
+[ $rc -ne 2 ] && ok "dispersion --column-n 20000 is not refused for a bead series it does not keep (stopped after 3 s)" ||
+    ko "dispersion --column-n 20000 refused: $(cat "$tmp/e")"
 
 echo "test_hostile_chain: $passes passed, $fails failed"
 [ $fails -eq 0 ]

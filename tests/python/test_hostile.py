@@ -107,7 +107,7 @@ def test_results_record_the_settings_that_ran():
     assert c.t_max == pytest.approx(20 * (3 * c.t_q + c.tau_1), rel=1e-12)
     assert c.dt_out == pytest.approx(c.tau_1 / 200, rel=1e-12)
     assert c.dt == pytest.approx(c.t_q / 800, rel=1e-12) and 0 < c.dt_max < c.tau_1
-    f = granwave.falcon(heights=None, n=(1, 3), vimp=[0.3, 0.5], solver="arkode")
+    f = granwave.falcon(heights=[], n=(1, 3), vimp=[0.3, 0.5], solver="arkode")
     for iv, v in enumerate((0.3, 0.5)):
         for k, n in enumerate((1, 2, 3)):
             one = granwave.chain(n=n, vimp=v, solver="arkode")
@@ -138,6 +138,18 @@ def test_a_column_memory_is_bounded_before_allocation():
 
 def test_a_speed_given_twice_is_refused():
     with pytest.raises(granwave.GranwaveValueError, match=r"vimp: item 2 gives the impact velocity 0.3 m/s of item 1"):
-        granwave.falcon(heights=None, n=(1, 3), vimp=[0.3, 0.3])
+        granwave.falcon(heights=[], n=(1, 3), vimp=[0.3, 0.3])
     with pytest.raises(granwave.GranwaveValueError, match=r"vimp: item 3 gives the impact velocity 0.3 m/s of item 1"):
         granwave.wavespeed(n=(6, 8), vimp=[0.3, 0.5, 0.3])
+
+
+def test_a_range_keyword_takes_two_integer_ends():
+    # n=(1.5, 3) was cut to 1:3 by int() (a silent change of the input) and
+    # n=(1, 2, 3) raised a bare "too many values to unpack"
+    with pytest.raises(granwave.GranwaveValueError, match=r"n: '1.5' is not an integer"):
+        granwave.falcon(n=(1.5, 3), heights=[])
+    with pytest.raises(TypeError, match=r"n: expected \(A, B\), an integer or a range"):
+        granwave.falcon(n=(1, 2, 3), heights=[])
+    with pytest.raises(TypeError, match=r"n: a range end must be a number, got True"):
+        granwave.falcon(n=(True, 3), heights=[])
+    assert granwave.falcon(n=[1, 3], heights=[]).nn == 3

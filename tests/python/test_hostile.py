@@ -153,3 +153,14 @@ def test_a_range_keyword_takes_two_integer_ends():
     with pytest.raises(TypeError, match=r"n: a range end must be a number, got True"):
         granwave.falcon(n=(True, 3), heights=[])
     assert granwave.falcon(n=[1, 3], heights=[]).nn == 3
+
+
+def test_falcon_runs_the_solver_given():
+    # solver="cvode" (the default's value) was taken as not given: RK4 by the
+    # accuracy target ran instead, as recorded (accuracy 1e-6, dt > 0)
+    f = granwave.falcon(n=(1, 3), heights=[], solver="cvode")
+    assert f.accuracy == 0 and (f.dt == 0).all()
+    one = granwave.chain(n=3, solver="cvode")
+    assert f.f_max[0][2] == pytest.approx(one.f_max, rel=1e-12)
+    g = granwave.falcon(n=(1, 3), heights=[])  # nothing given: the accuracy target, RK4
+    assert g.accuracy == 1e-6 and (g.dt > 0).all()

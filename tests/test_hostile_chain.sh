@@ -84,6 +84,12 @@
 #    stored every bead's series though the spectrum takes the wall force only,
 #    so --column-n 20000 was refused for 90 GB "of its contact events", naming
 #    --n (not --column-n) and advising to run without --out (refused without it).
+#  20 --restitution 1e-9 (or 1e-4) --damping hc: the calibrating bead stayed on
+#    the wall (overdamped) before e fell that low, and the calibration ended as a
+#    failed run reported as bad input: "granwave chain: chain: bead 1 still on
+#    the wall at t_max" (exit 2, naming nothing). An overdamped calibration run
+#    counts as e = 0 in the bracket and the root is checked to give e (to 1e-3):
+#    exit 2 naming --restitution; e = 1e-3 still calibrates (n = 1: e to 1e-9).
 set -u
 GW=$1
 SRC=${2:-.}
@@ -440,6 +446,15 @@ runs "dispersion --column-n 3 --vimp 1e-9 runs" "$tmp/d.json" dispersion --colum
 timeout 3 "$GW" dispersion --column-n 20000 --json >/dev/null 2>"$tmp/e" </dev/null; rc=$?
 [ $rc -ne 2 ] && ok "dispersion --column-n 20000 is not refused for a bead series it does not keep (stopped after 3 s)" ||
     ko "dispersion --column-n 20000 refused: $(cat "$tmp/e")"
+
+# --- 20: a restitution below what a rebound can give
+for d in hc kk; do
+    refused "chain --restitution 1e-9 --damping $d" '^granwave chain --restitution: e = 1e-09 at 0.3 m/s is not reached: from (alpha|gamma) = .* the bead stays on the wall' \
+        chain --n 2 --restitution 1e-9 --damping $d --out "$tmp/o"
+    runs "chain --n 1 --restitution 1e-3 --damping $d" "$tmp/r.json" chain --n 1 --restitution 1e-3 --damping $d --json &&
+        jcheck "  one bead rebounds at e = 1e-3 (to 1e-9)" "$tmp/r.json" "abs(j['eps_eff'] - 1e-3) < 1e-12"
+done
+refused "drop --restitution 1e-9 --damping hc" '^granwave drop --restitution: e = 1e-09' drop --n 2 --restitution 1e-9 --damping hc --out "$tmp/o"
 
 echo "test_hostile_chain: $passes passed, $fails failed"
 [ $fails -eq 0 ]

@@ -90,6 +90,12 @@
 #    the wall at t_max" (exit 2, naming nothing). An overdamped calibration run
 #    counts as e = 0 in the bracket and the root is checked to give e (to 1e-3):
 #    exit 2 naming --restitution; e = 1e-3 still calibrates (n = 1: e to 1e-9).
+#  21 the studies over N checked a column's bounds only when its run came:
+#    softwall --solver rk4 --dt 1e-12 ran N = 1 (7e7 steps) for minutes before the
+#    refusal; the largest column at each speed is checked before any run.
+#  22 wavespeed's front speed depended on --dt-out (the front times are
+#    interpolated between samples): --dt-out 1e-3 moved v_front from 634.3 to
+#    627.3 m/s (1.1 %); the front's column is sampled at most tau_1/200 apart.
 set -u
 GW=$1
 SRC=${2:-.}
@@ -455,6 +461,17 @@ for d in hc kk; do
         jcheck "  one bead rebounds at e = 1e-3 (to 1e-9)" "$tmp/r.json" "abs(j['eps_eff'] - 1e-3) < 1e-12"
 done
 refused "drop --restitution 1e-9 --damping hc" '^granwave drop --restitution: e = 1e-09' drop --n 2 --restitution 1e-9 --damping hc --out "$tmp/o"
+
+# --- 21: a study's largest column checked before any run (REFUSE_TIMEOUT: at once)
+REFUSE_TIMEOUT=5 refused "softwall --solver rk4 --dt 1e-12 (refused at once, not after N = 1)" \
+    '^granwave softwall --dt: a step of 1e-12 s needs about 5.6e\+08 steps' softwall --n 1:3 --solver rk4 --dt 1e-12 --quiet --out "$tmp/o"
+REFUSE_TIMEOUT=5 refused "falcon --solver rk4 --dt 1e-12" 'dt: a step of 1e-12 s' falcon --n 1:3 --heights none --solver rk4 --dt 1e-12 --quiet --out "$tmp/o"
+# --- 22: the front speed does not depend on the study's sampling
+if runs "wavespeed --n 6:12 --vimp 0.3,0.5" "$tmp/a.json" wavespeed --n 6:12 --vimp 0.3,0.5 --quiet --json &&
+   runs "  the same with --dt-out 1e-3" "$tmp/b.json" wavespeed --n 6:12 --vimp 0.3,0.5 --dt-out 1e-3 --quiet --json; then
+    jcheck "  v_front the same to 1e-9 (it moved 1.1 %)" "$tmp/b.json" \
+        "all(abs(x / y - 1) < 1e-9 for x, y in zip(j['v_front'], json.load(open('$tmp/a.json'))['v_front']))"
+fi
 
 echo "test_hostile_chain: $passes passed, $fails failed"
 [ $fails -eq 0 ]

@@ -142,6 +142,8 @@ int gw_cli_parse(const char *cmd, gw_opt *opts, int argc, char **argv, int *help
         if (!o)
             return gw_err_set(err, GW_EINVAL, "%s: unknown option '--%s' (see %s --help)", cmd,
                               name, cmd);
+        if (o->seen) /* the last value winning silently hid a mistake ("--n 3 ... --n 30") */
+            return gw_err_set(err, GW_EINVAL, "%s --%s: given twice", cmd, name);
         if (o->kind == GW_OPT_FLAG) {
             if (eq)
                 return gw_err_set(err, GW_EINVAL, "%s: option '--%s' takes no value", cmd, name);

@@ -37,7 +37,8 @@ typedef struct gw_opt {
 /* Parse argv[0..argc) against opts (terminated by name == NULL). Accepts
  * "--name value" and "--name=value"; "--help"/"-h" sets *help. Positional
  * arguments go to pos (at most maxpos; more is an error). Returns GW_EINVAL with
- * a message naming the option on unknown options, missing or bad values. */
+ * a message naming the option on unknown options, missing or bad values, and on
+ * an option given twice ("CMD --NAME: given twice"; --help may repeat). */
 int gw_cli_parse(const char *cmd, gw_opt *opts, int argc, char **argv, int *help,
                  const char **pos, int maxpos, int *npos, gw_err *err);
 /* The option of table row p (gw_param.h) writing into dest: name, metavar,

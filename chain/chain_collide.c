@@ -209,6 +209,11 @@ static int wall_finished(const run_state *st, const double *y, double dtol)
         double xs = y[is], vs = y[is + 1], a = sqrt(xs * xs + s->mass * vs * vs / s->stiffness);
         if (y[1] > 0 || y[0] > -a)
             return 0;
+        /* the reading k_s x_s (+ c_s v_s) still rising: its largest value, F_max,
+         * comes after bead 1 left (a 1000 kg sensor on 1e12 N/m ended at 20.7 N,
+         * rising, of a peak near J omega = 40 N) */
+        if (vs > 0)
+            return 0;
     }
     return 1;
 }
@@ -311,6 +316,152 @@ int chain_steps_check(const gw_solver_type *type, const gw_solver_params *sp, do
     return GW_OK;
 }
 
+/* Bytes a run of column p allocates, by what gw_chain_create, gw_chain_collide
+ * (or the drop) and the backend hold: the model's and the result's per-bead
+ * arrays (about 14 doubles a bead), the solver's vectors over the state (dim =
+ * 2n + a few: rk4 10 of them with its root values, cvode and arkode about 24 with
+ * their histories and stages, arkode's implicit methods 34) and, for the implicit
+ * methods (cvode bdf, arkode dirk and imex), three band matrices of dim x (smu +
+ * ml + 1) doubles (the Jacobian, its saved copy and the factor workspace). The
+ * band is 2 above and 3 below the diagonal, except with a sensor body or a wall
+ * with its own states (plastic, viscoelastic, layer): those states couple every
+ * bead, the Jacobian is full (dim x (2 dim - 1)), and memory grows as n^2.
+ * Measured peak resident sizes at n = 1e6 (t-max 1e-9 s): 218 B a bead for rk4,
+ * 637 cvode bdf, 295 adams, 381 arkode erk, 810 dirk; 200 MB at n = 1000 with a
+ * sensor body (cvode). The estimate is an upper bound for each. */
+static int implicit_method(const gw_solver_type *t, int method)
+{
+    const char *used = gw_solver_method_used(t, method);
+    return t != gw_solver_rk4 && (strcmp(used, "bdf") == 0 || strcmp(used, "dirk") == 0 || strcmp(used, "imex") == 0);
+}
+
+static double memory_bytes(const gw_chain_params *p, const gw_solver_type *type, int method)
+{
+    const double n = p->n;
+    const int full = p->sensor.mass > 0 || p->wall.layer || p->wall.yield_pressure > 0 || p->wall.loss > 0;
+    const double dim = 2 * n + 8;
+    const gw_solver_type *t = type ? type : gw_solver_cvode;
+    const int implicit = implicit_method(t, method);
+    double vectors = t == gw_solver_rk4 ? 10 : implicit && t != gw_solver_cvode ? 34 : 24;
+    double bytes = 8 * (14 * n + vectors * dim);
+    if (implicit) {
+        double ldim = full ? 2 * dim - 1 : fmin(dim - 1, 5) + 3 + 1;
+        bytes += 3 * 8 * dim * ldim + 8 * dim;
+    }
+    return bytes;
+}
+
+/* The most beads within GW_CHAIN_MEMORY_MAX (memory_bytes grows with n). */
+static long memory_n_ok(const gw_chain_params *p, const gw_solver_type *type, int method)
+{
+    gw_chain_params q = *p;
+    long lo = 0, hi = (long)p->n + 1;
+    while (hi - lo > 1) {
+        long mid = lo + (hi - lo) / 2;
+        q.n = (int)mid;
+        if (memory_bytes(&q, type, method) <= GW_CHAIN_MEMORY_MAX)
+            lo = mid;
+        else
+            hi = mid;
+    }
+    return lo;
+}
+
+int gw_chain_memory_check(const gw_chain_params *p, const gw_solver_type *type, int method, gw_err *err)
+{
+    const double limit = GW_CHAIN_MEMORY_MAX;
+    double need = memory_bytes(p, type, method);
+    if (need <= limit)
+        return GW_OK;
+    long lo = memory_n_ok(p, type, method);
+    const gw_solver_type *t = type ? type : gw_solver_cvode;
+    const int full = p->sensor.mass > 0 || p->wall.layer || p->wall.yield_pressure > 0 || p->wall.loss > 0;
+    return gw_err_set(err, GW_EINVAL,
+                      "n: a column of %d beads needs about %.3g GB for its state and the %s (%s) solver's workspace%s, "
+                      "above the %.3g GB limit: at most %ld beads here", p->n, need / 1e9, gw_solver_type_name(t),
+                      gw_solver_method_used(t, method),
+                      full && implicit_method(t, method)
+                          ? " (a full Jacobian: the sensor body or the wall's own states couple every bead; rk4 or "
+                            "arkode erk need none)"
+                          : "",
+                      limit / 1e9, lo);
+}
+
+/* What a collision of p with o will run with (t_max, dt_out, the steps), and the
+ * bounds on its steps, memory, samples and stored trace, checked before anything
+ * is allocated, in that order: at the defaults the bound that trips at the fewest
+ * beads is named (rk4: steps from 1.25e5 beads, memory from 7.9e6, samples from
+ * 7e6; cvode: memory from 2.3e6, samples from 7e6, steps from 1.3e7). */
+typedef struct collide_plan {
+    double tc, tau1, t_max, dt_out, t_expect;
+    gw_solver_params sp;
+    const gw_solver_type *type;
+} collide_plan;
+
+static int collide_plan_make(const gw_chain_params *p, const gw_chain_run_opts *o, collide_plan *pl, gw_err *err)
+{
+    const int n = p->n;
+    const double m0 = p->masses ? p->masses[0] : p->mass;
+    memset(pl, 0, sizeof *pl);
+    pl->type = o->solver ? o->solver : gw_solver_cvode;
+    pl->tc = gw_chain_time_scale(p);
+    pl->tau1 = gw_chain_tau1(m0, p->kwall, p->v_imp);
+    pl->dt_out = o->dt_out > 0 ? o->dt_out : pl->tau1 / 200.0;
+    pl->t_max = o->t_max > 0 ? o->t_max : 20.0 * (n * 2.0 * pl->tc + pl->tau1);
+    /* Every sample costs O(n) (energy, contacts): bound the samples over the
+     * collision's expected length (n bead-to-bead transits of 2 T_c plus the
+     * wall contact, or t_max when shorter). The
+     * default dt-out gives about 100 n + 200 of them; checked before the run. */
+    pl->t_expect = fmin(pl->t_max, n * 2.0 * pl->tc + pl->tau1);
+    int rc;
+    pl->sp = o->sp;
+    /* The root finders compare signs at step ends only: a step longer than half a
+     * contact could step over a whole contact. Contacts last at least about the
+     * binary contact time at twice v_imp, so cap the step at a quarter of it. */
+    if (!(pl->sp.dt_max > 0))
+        pl->sp.dt_max = 0.25 * fmin(gw_chain_tau1(m0, p->kwall, 2 * p->v_imp),
+                                    gw_chain_tau1(0.5 * m0, p->k, 2 * p->v_imp));
+    pl->type = o->solver ? o->solver : gw_solver_cvode;
+    if (pl->type == gw_solver_rk4 && !(pl->sp.dt > 0))
+        pl->sp.dt = pl->tc / (o->steps_per_tc > 0 ? o->steps_per_tc : 400.0);
+    /* and at least t_expect / step steps of O(n) each: bounded before the run
+     * (the RK4 step, or the largest step of cvode/arkode) */
+    /* Steps and samples grow about as n, memory as n (n^2 with a full Jacobian):
+     * when several trip, the one that passes the fewest beads is named. */
+    const double max_samples = 1e9, step = pl->type == gw_solver_rk4 ? fmin(pl->sp.dt, pl->sp.dt_max) : pl->sp.dt_max;
+    gw_err e[3] = {{{0}}};
+    double n_ok[3] = {INFINITY, INFINITY, INFINITY};
+    if (chain_steps_check(pl->type, &pl->sp, pl->t_expect, "the collision", &e[0]) != GW_OK)
+        n_ok[0] = n * 1e8 / (pl->t_expect / step);
+    if (gw_chain_memory_check(p, pl->type, pl->sp.method, &e[1]) != GW_OK)
+        n_ok[1] = memory_n_ok(p, pl->type, pl->sp.method);
+    if (!(pl->t_expect / pl->dt_out <= max_samples)) {
+        gw_err_set(&e[2], GW_EINVAL, "dt-out: %g s gives about %.3g samples over the collision (about %.3g s); "
+                   "at most %.0e: raise dt-out", pl->dt_out, pl->t_expect / pl->dt_out, pl->t_expect, max_samples);
+        n_ok[2] = n * max_samples / (pl->t_expect / pl->dt_out);
+    }
+    int worst = -1;
+    for (int i = 0; i < 3; i++)
+        if (isfinite(n_ok[i]) && (worst < 0 || n_ok[i] < n_ok[worst]))
+            worst = i;
+    if (worst >= 0)
+        return gw_err_set(err, GW_EINVAL, "%s", e[worst].msg);
+    /* A stored trace (gw_chain_trace_sample) keeps t, the wall force and every
+     * bead's x and v at each sample and event (about 4 events per bead): bound
+     * it before the run (--n 1000 --dt-out 1e-9 grew toward 400 GB; written,
+     * 28 B a value, 1000 beads at the default dt-out came to 8 GB of files). */
+    if (o->sample == gw_chain_trace_sample &&
+        (rc = gw_chain_trace_check(n, pl->t_expect, pl->dt_out, 4.0 * n + 2, err)) != GW_OK)
+        return rc;
+    return GW_OK;
+}
+
+int gw_chain_run_check(const gw_chain_params *p, const gw_chain_run_opts *o, gw_err *err)
+{
+    collide_plan pl;
+    return collide_plan_make(p, o, &pl, err);
+}
+
 int gw_chain_collide(const gw_chain *c, const gw_chain_run_opts *o, gw_chain_result *r,
                      gw_err *err)
 {
@@ -319,6 +470,10 @@ int gw_chain_collide(const gw_chain *c, const gw_chain_run_opts *o, gw_chain_res
     const int n = p->n;
     memset(r, 0, sizeof *r);
     r->n = n;
+    collide_plan pl;
+    int prc = collide_plan_make(p, o, &pl, err);
+    if (prc != GW_OK)
+        return prc;
     r->final_v = calloc(4 * (size_t)n, sizeof *r->final_v);
     double *y = malloc((size_t)sys->dim * sizeof *y);
     int *roots = calloc((size_t)sys->nroots, sizeof *roots);
@@ -349,49 +504,15 @@ int gw_chain_collide(const gw_chain *c, const gw_chain_run_opts *o, gw_chain_res
     }
     r->wall_contacts = st.closed[0];
 
-    double tc = gw_chain_time_scale(p);
-    double tau1 = gw_chain_tau1(gw_chain_bead_mass(c, 0), p->kwall, p->v_imp);
-    double dt_out = o->dt_out > 0 ? o->dt_out : tau1 / 200.0;
-    double t_max = o->t_max > 0 ? o->t_max : 20.0 * (n * 2.0 * tc + tau1);
-    /* Every sample costs O(n) (energy, contacts): bound the samples over the
-     * collision's expected length (n bead-to-bead transits of 2 T_c plus the
-     * wall contact, or t_max when shorter). The
-     * default dt-out gives about 100 n + 200 of them; checked before the run. */
-    const double t_expect = fmin(t_max, n * 2.0 * tc + tau1), max_samples = 1e9;
-    if (!(t_expect / dt_out <= max_samples)) {
-        rc = gw_err_set(err, GW_EINVAL, "dt-out: %g s gives about %.3g samples over the collision (about %.3g s); "
-                        "at most %.0e: raise dt-out", dt_out, t_expect / dt_out, t_expect, max_samples);
-        goto done;
-    }
-    /* A stored trace (gw_chain_trace_sample) keeps t, the wall force and every
-     * bead's x and v at each sample and event (about 4 events per bead): bound
-     * it before the run (--n 1000 --dt-out 1e-9 grew toward 400 GB; written,
-     * 28 B a value, 1000 beads at the default dt-out came to 8 GB of files). */
-    if (o->sample == gw_chain_trace_sample &&
-        (rc = gw_chain_trace_check(n, t_expect, dt_out, 4.0 * n + 2, err)) != GW_OK)
-        goto done;
+    const double dt_out = pl.dt_out, t_max = pl.t_max;
     double dscale = gw_chain_dmax1(gw_chain_bead_mass(c, 0), p->kwall, p->v_imp);
     st.dtol = 1e-9 * dscale;
-    gw_solver_params sp = o->sp;
-    /* The root finders compare signs at step ends only: a step longer than half a
-     * contact could step over a whole contact. Contacts last at least about the
-     * binary contact time at twice v_imp, so cap the step at a quarter of it. */
-    if (!(sp.dt_max > 0)) {
-        double m = gw_chain_bead_mass(c, 0);
-        sp.dt_max = 0.25 * fmin(gw_chain_tau1(m, p->kwall, 2 * p->v_imp),
-                                gw_chain_tau1(0.5 * m, p->k, 2 * p->v_imp));
-    }
-    const gw_solver_type *type = o->solver ? o->solver : gw_solver_cvode;
-    if (type == gw_solver_rk4 && !(sp.dt > 0))
-        sp.dt = tc / (o->steps_per_tc > 0 ? o->steps_per_tc : 400.0);
-    /* and at least t_expect / step steps of O(n) each: bounded before the run
-     * (the RK4 step, or the largest step of cvode/arkode) */
+    gw_solver_params sp = pl.sp;
+    const gw_solver_type *type = pl.type;
     r->run_t_max = t_max;
     r->run_dt_out = dt_out;
     r->run_dt = sp.dt;
     r->run_dt_max = sp.dt_max;
-    if ((rc = chain_steps_check(type, &sp, t_expect, "the collision", err)) != GW_OK)
-        goto done;
 
     gw_chain_energy e;
     gw_chain_energy_of(c, y, &e);

@@ -41,6 +41,10 @@ static const gw_param collision_fields[] = {
     RI("converged", r.converged, "1: all contacts open and separating at t_end"),
     RI("wall_done", r.wall_done, "1: bead 1 off the wall and separating at t_end (f_max, tau_n final)"),
     RD("t_end", r.t_end, "s", "end of the run"),
+    RD("t_max", r.run_t_max, "s", "time limit the run used (default 20 (n T_q + tau_1))"),
+    RD("dt_out", r.run_dt_out, "s", "sampling interval the run used (default tau_1/200)"),
+    RD("dt", r.run_dt, "s", "RK4 step the run used (default T_c/400; 0: cvode, arkode)"),
+    RD("dt_max", r.run_dt_max, "s", "largest step the run allowed (default a quarter of the shortest contact)"),
     RL("events", r.n_events, "contact events located"),
     RL("missed_events", r.missed_events, "contact changes found from the state, not a root"),
     RL("steps", r.stats.steps, "solver steps"),
@@ -88,6 +92,11 @@ int gw_chain_collision_run(const gw_chain_setup *s, gw_chain_collision *out, gw_
     gw_chain_trace tr;
     gw_chain_trace_init(&tr, 0);
     int rc = gw_chain_setup_resolve(s, &res, err);
+    if (rc == GW_OK) { /* the run's bounds (samples, trace, steps, memory) before anything is allocated */
+        gw_chain_run_opts o = res.run;
+        o.sample = s->trace ? gw_chain_trace_sample : NULL;
+        rc = gw_chain_run_check(&res.params, &o, err);
+    }
     if (rc == GW_OK)
         rc = gw_chain_create(&res.params, &c, err);
     if (rc != GW_OK) {

@@ -42,7 +42,8 @@ static const gw_param disp_params[] = {
         "plan the FFTs with FFTW_MEASURE (default FFTW_ESTIMATE)"),
     ROW("column-n", GW_PARAM_LONG, column_n, "", 0, 100000, 0, "0", "N",
         "instead: wall-force spectrum of an N-bead column collision [0 = off]"),
-    ROW("vimp", GW_PARAM_DOUBLE, vimp, "m/s", 0, 1e3, 1, "0.3", "V", "impact velocity of that column, m/s [0.3]"),
+    ROW("vimp", GW_PARAM_DOUBLE, vimp, "m/s", GW_CHAIN_VIMP_MIN, GW_CHAIN_VIMP_MAX, 0, "0.3", "V",
+        "impact velocity of that column, m/s [0.3]"),
     GW_PARAM_END};
 #undef OFF
 
@@ -154,6 +155,32 @@ int gw_chain_dispersion_solver(const gw_chain_dispersion_setup *s, const gw_solv
 }
 
 /* column_n > 0: one collision, then the wall-force spectrum over [0, tau_N]. */
+/* gw_chain_sample_fn keeping t and the wall force (ctx: a gw_chain_trace of
+ * n = 0): --column-n stored every bead's x and v as well (a 20000-bead column
+ * was refused for 90 GB of bead series no output uses). */
+static int wall_sample(void *ctx, double t, const double *y, double f_wall, int is_event)
+{
+    (void)y;
+    (void)is_event;
+    gw_chain_trace *tr = ctx;
+    if (tr->len == tr->cap) {
+        size_t cap = tr->cap ? 2 * tr->cap : 1024;
+        double *nt = realloc(tr->t, cap * sizeof *nt);
+        if (nt)
+            tr->t = nt;
+        double *nf = nt ? realloc(tr->f, cap * sizeof *nf) : NULL;
+        if (nf)
+            tr->f = nf;
+        if (!nt || !nf)
+            return GW_ENOMEM;
+        tr->cap = cap;
+    }
+    tr->t[tr->len] = t;
+    tr->f[tr->len] = f_wall;
+    tr->len++;
+    return 0;
+}
+
 static int run_column(const gw_chain_dispersion_setup *s, gw_chain_dispersion_outcome *out, gw_err *err)
 {
     gw_chain_params p = gw_chain_params_default();
@@ -172,9 +199,9 @@ static int run_column(const gw_chain_dispersion_setup *s, gw_chain_dispersion_ou
     o.sp.atol = isnan(s->atol) ? 1e-12 : s->atol;
     o.dt_out = gw_chain_tau1(p.mass, p.kwall, p.v_imp) / 200;
     gw_chain *ch = NULL;
-    gw_chain_trace tr;
-    gw_chain_trace_init(&tr, p.n);
-    o.sample = gw_chain_trace_sample;
+    gw_chain_trace tr; /* the wall force only: the spectrum needs no bead series */
+    gw_chain_trace_init(&tr, 0);
+    o.sample = wall_sample;
     o.sample_ctx = &tr;
     gw_chain_result r;
     memset(&r, 0, sizeof r);

@@ -439,6 +439,8 @@ int gw_chain_drop_run(const gw_chain_drop_params *p, const gw_chain_run_opts *o,
     r->f_max = 0;
     r->t_fmax = NAN;
     int rc = gw_chain_drop_params_validate(p, err);
+    if (rc == GW_OK) /* before anything is allocated */
+        rc = gw_chain_memory_check(&p->chain, o->solver, o->sp.method, err);
     if (rc != GW_OK)
         return rc;
     const int n = p->chain.n;
@@ -512,6 +514,8 @@ int gw_chain_drop_run(const gw_chain_drop_params *p, const gw_chain_run_opts *o,
         sp.dt = tc / (o->steps_per_tc > 0 ? o->steps_per_tc : 400.0);
     /* the drop runs to t_max whatever happens: its steps bounded over t_max
      * (the default RK4 step makes about 4e5 over 10 ms) */
+    r->run_dt = sp.dt;
+    r->run_dt_max = sp.dt_max;
     if ((rc = chain_steps_check(type, &sp, p->t_max, "t-max", err)) != GW_OK)
         goto done;
     if ((rc = gw_solver_create(type, &d.sys, &sp, 0.0, y, &s, err)) != GW_OK)

@@ -76,6 +76,8 @@ static const gw_param drop_fields[] = {
     RD("t_fall", t_fall, "s", "sqrt(2 h / g): the fall before t = 0"),
     RD("t_max", t_max, "s", "time followed after the first contact"),
     RD("dt_out", dt_out, "s", "sampling of the signal"),
+    RD("dt", dt, "s", "the RK4 step the run used (0: cvode, arkode)"),
+    RD("dt_max", dt_max, "s", "the largest step the run allowed (given, or a quarter of the shortest contact)"),
     RD("peak_threshold", peak_threshold, "N", "smallest peak force counted"),
     RD("mass", mass, "kg", "bead mass (bead 1 with radii; the block's with block)"),
     RD("k", k, "N/m^1.5", "bead-bead Hertz coefficient"),
@@ -338,6 +340,10 @@ int gw_chain_drop_study_run(const gw_chain_drop_setup *s, gw_progress_fn progres
     gw_chain_params *p = &res.params;
     if (s->block)
         gw_chain_drop_block_params(p);
+    if ((rc = gw_chain_memory_check(p, res.run.solver, res.run.sp.method, err)) != GW_OK) {
+        gw_chain_resolved_free(&res);
+        return rc;
+    }
     const double t_max = res.run.t_max;
     const double dt_out = s->col.dt_out > 0 ? s->col.dt_out : fmin(1e-6, t_max);
     if (dt_out < t_max * 1e-7 || dt_out > t_max) {
@@ -388,6 +394,8 @@ int gw_chain_drop_study_run(const gw_chain_drop_setup *s, gw_progress_fn progres
     rc = gw_chain_drop_run(&dp, &res.run, &out->r, err);
     out->v_imp = out->r.v_imp;
     out->t_fall = out->r.t_fall;
+    out->dt = out->r.run_dt;
+    out->dt_max = out->r.run_dt_max;
     int rc2 = fill_tables(out, err);
     if (rc == GW_OK)
         rc = rc2;

@@ -47,7 +47,9 @@ void gw_chain_falcon_analyse(const gw_chain_params *p, double v, const gw_chain_
         }
     }
     a->period_mean = np ? a->period_mean / np : NAN;
-    a->fit.c1 = a->fit20.c1 = NAN;
+    /* no line through fewer than 2 points: every number of it undefined (a
+     * single N reported t_q null beside t_q_err 0 and r2 0) */
+    a->fit = a->fit20 = (gw_linfit){.c0 = NAN, .c1 = NAN, .c0_err = NAN, .c1_err = NAN, .r2 = NAN, .max_rel_resid = NAN};
     if (x && count >= 2)
         gw_fit_linear(x, y, count, &a->fit);
     if (x && c20 >= 2)
@@ -129,6 +131,10 @@ static const gw_param falcon_fields[] = {
     CASE("e_rel_over_e_k", e_rel_over_e_k, "", "E_rel/E_K at tau_N (F.20)"),
     CASE("n_s", n_s, "", "beads leaving from the top before the cluster"),
     CASE("energy_error", energy_error, "", "max relative energy error"),
+    CASE("t_max", t_max, "s", "time limit of the collision (default 20 (N T_q + tau_1))"),
+    CASE("dt_out", dt_out, "s", "its sampling interval"),
+    CASE("dt", dt, "s", "its RK4 step (0: cvode, arkode)"),
+    CASE("dt_max", dt_max, "s", "its largest step"),
     VEL("t_q", t_q, "s", "T_q: slope of tau_N against N - 1 (F.4), all N"),
     VEL("t_q_err", t_q_err, "s", "its standard error"),
     VEL("tau_fit_intercept", tau_fit_intercept, "s", "intercept of that line"),
@@ -172,7 +178,7 @@ static int alloc_outcome(gw_chain_falcon_outcome *o, int nv, int nn, gw_err *err
                       &o->t_q_theory, &o->tau_1_theory, &o->f_max_1_theory, &o->f_max_mean, &o->f_max_min,
                       &o->f_max_max, &o->tau_max_mean, &o->period_mean};
     double **cas[] = {&o->f_max, &o->tau_max, &o->tau_n, &o->period, &o->eps_eff, &o->eps_col,
-                      &o->e_rel_over_e_k, &o->n_s, &o->energy_error};
+                      &o->e_rel_over_e_k, &o->n_s, &o->energy_error, &o->t_max, &o->dt_out, &o->dt, &o->dt_max};
     const size_t nvel = sizeof vel / sizeof vel[0], ncas = sizeof cas / sizeof cas[0];
     o->nv = nv;
     o->nn = nn;
@@ -249,6 +255,10 @@ int gw_chain_falcon_run(const gw_chain_falcon_setup *s, gw_progress_fn progress,
     }
     for (int k = 0; k < nn; k++)
         out->n[k] = (double)(s->n[0] + k);
+    if ((rc = gw_chain_study_speeds_check(out->v_imp, nv, s->vimp.n, err)) != GW_OK) {
+        gw_chain_falcon_outcome_free(out);
+        return rc;
+    }
     gw_chain_setup col = s->col; /* shallow: n and vimp of the first case, no radii */
     col.n = s->n[0];
     col.vimp = out->v_imp[0];
@@ -279,6 +289,10 @@ int gw_chain_falcon_run(const gw_chain_falcon_setup *s, gw_progress_fn progress,
             out->e_rel_over_e_k[c] = rv[k].e_rel_over_e_k;
             out->n_s[c] = rv[k].n_s;
             out->energy_error[c] = rv[k].energy_error;
+            out->t_max[c] = rv[k].run_t_max;
+            out->dt_out[c] = rv[k].run_dt_out;
+            out->dt[c] = rv[k].run_dt;
+            out->dt_max[c] = rv[k].run_dt_max;
         }
         out->t_q[iv] = a.fit.c1;
         out->t_q_err[iv] = a.fit.c1_err;

@@ -52,7 +52,14 @@ static double bead_restitution(double cst, void *ctx)
     int rc = gw_chain_create(&p, &c, cb->err);
     if (rc == GW_OK)
         rc = gw_chain_collide(c, &o, &r, cb->err);
-    double e = rc == GW_OK ? -r.final_v[0] / p.v_imp : NAN;
+    /* a bead still on the wall at t_max: the contact is overdamped before e
+     * reaches the target (this ended as a failed run, exit 2 with "chain: bead 1
+     * still on the wall", naming no input; taking it as e = 0 would calibrate
+     * the constant at which the bead just stays within t_max, not e) */
+    int stuck = rc == GW_ELIMIT;
+    if (stuck)
+        rc = GW_OK; /* e = 0 for the bracket; the root is checked below */
+    double e = rc == GW_OK ? (stuck ? 0.0 : -r.final_v[0] / p.v_imp) : NAN;
     if (rc != GW_OK && cb->rc == GW_OK)
         cb->rc = rc;
     gw_chain_result_free(&r);
@@ -111,6 +118,15 @@ int gw_chain_calibrate(const gw_chain_params *p, const gw_chain_run_opts *o, dou
         return cb.rc;
     if (status != GSL_SUCCESS)
         return gw_err_set(err, GW_ESOLVER, "restitution: Brent iteration failed (%s)", gsl_strerror(status));
+    /* the root must give e: where e falls to the bead staying on the wall first
+     * (an overdamped contact) the bracket closes on that jump, not on e */
+    double e_root = bead_restitution(root, &cb) + e_target;
+    if (cb.rc != GW_OK)
+        return cb.rc;
+    if (!(fabs(e_root - e_target) <= 1e-3 * e_target))
+        return gw_err_set(err, GW_EINVAL, "restitution: e = %g at %g m/s is not reached: from %s = %g %s on the bead "
+                          "stays on the wall (an overdamped contact) while e is still above it; raise restitution",
+                          e_target, p->v_imp, hc ? "alpha" : "gamma", root, hc ? "s/m" : "N s/m^1.5");
     *constant = root;
     return GW_OK;
 }

@@ -89,6 +89,19 @@ int gw_chain_study_work_check(long a, long b, int runs, gw_err *err)
     return GW_OK;
 }
 
+int gw_chain_study_speeds_check(const double *v, int n, int n_speeds, gw_err *err)
+{
+    for (int j = 1; j < n; j++)
+        for (int i = 0; i < j; i++)
+            if (v[i] == v[j])
+                return gw_err_set(err, GW_EINVAL, "%s: item %d gives the impact velocity %.10g m/s of item %d%s: the "
+                                  "same collisions would run twice and count twice in the fits",
+                                  j >= n_speeds ? "heights" : "vimp", j >= n_speeds ? j - n_speeds + 1 : j + 1, v[j],
+                                  i >= n_speeds ? i - n_speeds + 1 : i + 1,
+                                  (i >= n_speeds) != (j >= n_speeds) ? " of vimp" : "");
+    return GW_OK;
+}
+
 void gw_chain_resolved_free(gw_chain_resolved *r)
 {
     free(r->masses);

@@ -44,6 +44,17 @@ int gw_chain_sweep_n_progress(const gw_chain_params *tmpl, const gw_chain_run_op
     sweep w = {tmpl, o, v, n_lo, n_hi - n_lo + 1, res};
     long ncase = (long)nv * w.per_v;
     memset(res, 0, (size_t)ncase * sizeof *res);
+    /* the largest column's bounds (steps, memory, samples grow with n) at each
+     * speed before any runs: a study was refused only when its run reached that
+     * column (softwall --solver rk4 --dt 1e-12 spent minutes on N = 1 first) */
+    for (int i = 0; i < nv; i++) {
+        gw_chain_params p = *tmpl;
+        p.n = n_hi;
+        p.v_imp = v[i];
+        int rc = gw_chain_run_check(&p, o, err);
+        if (rc != GW_OK)
+            return rc;
+    }
     return gw_cases_run(ncase, jobs, one, &w, progress, pctx, err);
 }
 

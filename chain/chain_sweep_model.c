@@ -35,9 +35,13 @@ static int check(int nk, const char *const *names, const char *const *values, gw
 {
     gw_chain_setup s;
     int rc = prepare(&s, nk, names, values, err);
-    if (rc == GW_OK) { /* the resolution's checks too (names, no-effect options) */
+    if (rc == GW_OK) { /* the resolution's checks too (names, no-effect options), and the run's
+                          bounds on steps, memory and samples: a case the run would refuse is
+                          refused with the config, before OUT and its journal are made */
         gw_chain_resolved r;
-        rc = gw_chain_setup_resolve(&s, &r, err) == GW_OK ? GW_OK : GW_EINVAL;
+        rc = gw_chain_setup_resolve(&s, &r, err) == GW_OK && gw_chain_run_check(&r.params, &r.run, err) == GW_OK
+                 ? GW_OK
+                 : GW_EINVAL;
         gw_chain_resolved_free(&r);
     }
     gw_chain_setup_clear(&s);

@@ -119,6 +119,12 @@ static const gw_param ws_fields[] = {
     RAT(W, "t_q", t_q, "s", "nv", NULL, "slope of tau_N against N - 1 (F.4)"),
     RAT(W, "mean_wall_force", mean_wall_force, "N", "nv", NULL, "impulse/tau_N of the longest column"),
     RAT(W, "period", period, "s", "nv", NULL, "mean wall-force period over N >= 10"),
+    RIT(W, "nn", nn, "column sizes n_min..n_max"),
+    RIT(W, "ncase", ncase, "collisions of the tau_N sweep"),
+    RAT(W, "t_max", t_max, "s", "nv", "nn", "time limit of each collision [velocity, N]"),
+    RAT(W, "dt_out", dt_out, "s", "nv", "nn", "its sampling interval [velocity, N]"),
+    RAT(W, "dt", dt, "s", "nv", "nn", "its RK4 step (0: cvode, arkode) [velocity, N]"),
+    RAT(W, "dt_max", dt_max, "s", "nv", "nn", "its largest step [velocity, N]"),
     RDT(W, "beta", beta, "", "exponent of 4R/T_q against v_imp (F.16: 1/5)"),
     RDT(W, "beta_err", beta_err, "", "its standard error"),
     RDT(W, "c3", c3, "", "C3 of the 4R/T_q fit (F.16)"),
@@ -153,6 +159,10 @@ static const gw_param sw_fields[] = {
     RIA(S, "saturated", saturated, "nw", "1: F_max reached its plateau within the sizes [wall]"),
     RAT(S, "f_max", f_max, "N", "nw", "nn", "largest wall force [wall, N]"),
     RAT(S, "tau_max", tau_max, "s", "nw", "nn", "time of f_max [wall, N]"),
+    RAT(S, "t_max", t_max, "s", "nw", "nn", "time limit of each collision [wall, N]"),
+    RAT(S, "dt_out", dt_out, "s", "nw", "nn", "its sampling interval [wall, N]"),
+    RAT(S, "dt", dt, "s", "nw", "nn", "its RK4 step (0: cvode, arkode) [wall, N]"),
+    RAT(S, "dt_max", dt_max, "s", "nw", "nn", "its largest step [wall, N]"),
     RAT(S, "n_d", n_d, "", "nw", NULL, "saturation number N_d (NaN: not reached) [wall]"),
     RAT(S, "n_d_predicted", n_d_predicted, "", "nw", NULL, "ceil(tau_max(N_d)/T_q) (F.8) [wall]"),
     RAT(S, "n_d_fixed_point", n_d_fixed_point, "", "nw", NULL, "smallest N >= ceil(tau_max(N)/T_q) [wall]"),
@@ -209,6 +219,10 @@ static double front_speed(const gw_chain_params *p, const gw_chain_run_opts *run
     gw_chain *c = NULL;
     gw_chain_run_opts o = *run;
     o.front_threshold = frac * gw_chain_fmax1(p->mass, p->kwall, p->v_imp);
+    /* the front times are interpolated between samples: at most tau_1/200 apart
+     * whatever the study's dt-out (--dt-out 1e-3 moved v_front by 1.1 %) */
+    double fine = gw_chain_tau1(p->mass, p->kwall, p->v_imp) / 200;
+    o.dt_out = o.dt_out > 0 ? fmin(o.dt_out, fine) : fine;
     gw_chain_result r;
     memset(&r, 0, sizeof r);
     double speed = NAN;
@@ -311,7 +325,9 @@ int gw_chain_wavespeed_run(const gw_chain_wavespeed_setup *s, gw_progress_fn pro
     int nv = s->vimp.n, per_v = (int)(b - a + 1);
     if (nv < 1)
         return gw_err_set(err, GW_EINVAL, "vimp: no impact velocity");
-    double *blk = calloc(8 * (size_t)nv, sizeof *blk);
+    if ((rc = gw_chain_study_speeds_check(s->vimp.v, nv, nv, err)) != GW_OK)
+        return rc;
+    double *blk = calloc(8 * (size_t)nv + 4 * (size_t)nv * (size_t)per_v, sizeof *blk);
     gw_chain_result *res = calloc((size_t)nv * (size_t)per_v, sizeof *res);
     if (!blk || !res) {
         free(blk);
@@ -322,7 +338,12 @@ int gw_chain_wavespeed_run(const gw_chain_wavespeed_setup *s, gw_progress_fn pro
                       &out->t_q, &out->mean_wall_force, &out->period};
     for (int i = 0; i < 8; i++)
         *arr[i] = blk + (size_t)i * (size_t)nv;
+    double **runs[] = {&out->t_max, &out->dt_out, &out->dt, &out->dt_max};
+    for (int i = 0; i < 4; i++)
+        *runs[i] = blk + 8 * (size_t)nv + (size_t)i * (size_t)nv * (size_t)per_v;
     out->nv = nv;
+    out->nn = per_v;
+    out->ncase = nv * per_v;
     memcpy(out->v_imp, s->vimp.v, (size_t)nv * sizeof *out->v_imp);
     out->threshold = s->threshold;
     out->n_min = (int)a;
@@ -336,8 +357,13 @@ int gw_chain_wavespeed_run(const gw_chain_wavespeed_setup *s, gw_progress_fn pro
     if (rc == GW_OK)
         rc = gw_chain_sweep_n_progress(&r.params, &r.run, out->v_imp, nv, (int)a, (int)b, (int)s->jobs, progress,
                                        pctx, res, err);
-    for (int i = 0; rc == GW_OK && i < nv * per_v; i++)
+    for (int i = 0; rc == GW_OK && i < nv * per_v; i++) {
         out->unfinished += !res[i].converged;
+        out->t_max[i] = res[i].run_t_max;
+        out->dt_out[i] = res[i].run_dt_out;
+        out->dt[i] = res[i].run_dt;
+        out->dt_max[i] = res[i].run_dt_max;
+    }
     for (int iv = 0; rc == GW_OK && iv < nv; iv++)
         rc = ws_velocity(&r.params, &r.run, &res[iv * per_v], (int)a, per_v, s->threshold, iv, out, err);
     out->wall_time_s = (gw_clock_ms() - t0) / 1e3;
@@ -440,7 +466,7 @@ static int sw_alloc(gw_chain_softwall_outcome *o, int nw, int nn, int nsheet, gw
     o->nn = nn;
     o->ncase = nw * nn;
     o->nsheet = nsheet;
-    o->n = calloc((size_t)nn + (size_t)nw * (6 + 2 * (size_t)nn), sizeof *o->n);
+    o->n = calloc((size_t)nn + (size_t)nw * (6 + 6 * (size_t)nn), sizeof *o->n);
     o->rigid = calloc(2 * (size_t)nw, sizeof *o->rigid);
     o->sheet_table = calloc((size_t)nsheet * GW_SOFTWALL_NSHEET_COLS + 1, sizeof *o->sheet_table);
     o->sheet_names = calloc((size_t)nsheet * 16 + 1, 1);
@@ -453,8 +479,9 @@ static int sw_alloc(gw_chain_softwall_outcome *o, int nw, int nn, int nsheet, gw
                         &o->tau_max_at_n_d};
     for (int i = 0; i < 6; i++, b += nw)
         *per_w[i] = b;
-    o->f_max = b;
-    o->tau_max = b + o->ncase;
+    double **per_case[] = {&o->f_max, &o->tau_max, &o->t_max, &o->dt_out, &o->dt, &o->dt_max};
+    for (int i = 0; i < 6; i++, b += o->ncase)
+        *per_case[i] = b;
     return GW_OK;
 }
 
@@ -471,6 +498,10 @@ static void sw_fill(const gw_chain_softwall_setup *s, const gw_chain_resolved *r
         for (int k = 0; k < nn; k++) {
             o->f_max[w * nn + k] = rw[k].f_max;
             o->tau_max[w * nn + k] = rw[k].tau_max;
+            o->t_max[w * nn + k] = rw[k].run_t_max;
+            o->dt_out[w * nn + k] = rw[k].run_dt_out;
+            o->dt[w * nn + k] = rw[k].run_dt;
+            o->dt_max[w * nn + k] = rw[k].run_dt_max;
         }
         o->rigid[w] = o->kwall[w] > o->k_c;
         o->saturated[w] = sr[w].n_d > 0;

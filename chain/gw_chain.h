@@ -405,6 +405,19 @@ void gw_chain_trace_free(gw_chain_trace *tr);
  * when its files stay within 5 GB (1.4 GB in memory); else GW_EINVAL naming
  * dt-out and a value that passes, or n when the events alone exceed it. */
 int gw_chain_trace_check(int n, double span, double dt_out, double events, gw_err *err);
+
+/* The memory a run of column p needs with solver type (NULL: cvode) and method
+ * (the model's and result's arrays, the solver's vectors and, for cvode bdf and
+ * arkode dirk/imex, its band matrices: full, n^2, with a sensor body or a wall
+ * with its own states) is bounded before anything is allocated at
+ * GW_CHAIN_MEMORY_MAX bytes (2 GiB): GW_EINVAL "n: a column of N beads needs
+ * about X GB ...: at most M beads here" otherwise. */
+#define GW_CHAIN_MEMORY_MAX 2147483648.0
+int gw_chain_memory_check(const gw_chain_params *p, const gw_solver_type *type, int method, gw_err *err);
+/* Every bound gw_chain_collide checks before its run, in order, from p and o
+ * alone (nothing allocated): samples (dt-out), the stored trace, steps (dt or
+ * dt-max), memory (n). GW_OK or GW_EINVAL naming the parameter. */
+int gw_chain_run_check(const gw_chain_params *p, const gw_chain_run_opts *o, gw_err *err);
 /* Write DIR/<stem>_wall_force.csv and DIR/<stem>_beads.csv (and DIR/<stem>.h5 when
  * built with HDF5); header lines record version and parameters. */
 int gw_chain_trace_write(const gw_chain_trace *tr, const char *dir, const char *stem,
@@ -652,6 +665,8 @@ typedef struct gw_chain_drop_result {
     double t_end;
     long n_events, missed_events;
     gw_solver_stats stats;
+    double run_dt, run_dt_max; /* the step the run used (rk4; 0 for cvode and arkode)
+                                  and its step cap, s: the defaults resolved */
 } gw_chain_drop_result;
 
 /* Run the drop with run options o (solver and its settings, dt_out = signal

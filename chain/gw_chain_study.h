@@ -44,6 +44,12 @@
  * columns per N is W bead^2 of work ...", else GW_OK. The studies call it in
  * their check; commands call it before they create --out. */
 int gw_chain_study_work_check(long a, long b, int runs, gw_err *err);
+/* The impact velocities v[0..n) of a study (falcon: the speeds, then the heights'
+ * sqrt(2 g h); wavespeed) are distinct: one given twice ran the same collisions
+ * twice and counted them twice in the fits (a spurious standard error with two
+ * distinct speeds). GW_EINVAL "vimp: ..." (or "heights: ..." for an index >=
+ * n_speeds) otherwise. */
+int gw_chain_study_speeds_check(const double *v, int n, int n_speeds, gw_err *err);
 
 typedef struct gw_chain_setup {
     long n;               /* beads [1] */
@@ -172,6 +178,8 @@ typedef struct gw_chain_falcon_outcome {
     double *n;             /* [nn] column sizes */
     /* [nv * nn], velocity-major: case (iv, N) at iv * nn + (N - n_lo) */
     double *f_max, *tau_max, *tau_n, *period, *eps_eff, *eps_col, *e_rel_over_e_k, *n_s, *energy_error;
+    double *t_max, *dt_out, *dt, *dt_max; /* [ncase] s: what each collision ran with, defaults resolved
+                                             (dt: the RK4 step, 0 for cvode and arkode) */
     /* [nv] per velocity (gw_chain_falcon_fit) */
     double *t_q, *t_q_err, *tau_fit_intercept, *tau_fit_intercept_err, *r2, *tau_fit_max_rel_resid;
     double *t_q_n20, *t_q_n20_err, *wave_speed, *wave_speed_n20, *wave_speed_theory;
@@ -221,6 +229,9 @@ typedef struct gw_chain_wavespeed_outcome {
     int nv;
     double *v_imp, *v_tq, *v_front, *v_group, *v_group_front; /* [nv] m/s */
     double *t_q, *mean_wall_force, *period;                  /* [nv] s, N, s */
+    int nn, ncase;                                           /* column sizes n_min..n_max, nv * nn */
+    double *t_max, *dt_out, *dt, *dt_max; /* [ncase] s: each collision of the tau_N sweep, defaults
+                                             resolved (dt: the RK4 step, 0 for cvode and arkode) */
     double beta, beta_err, c3, c3_theory;                    /* the 4R/T_q fit */
     double fits[4][4]; /* tq, front, group, group_front x beta, beta_err, prefactor, c3 */
     double c2, beta_period, beta_period_err, max_disagreement, threshold;
@@ -267,6 +278,8 @@ typedef struct gw_chain_softwall_outcome {
     double *kwall;              /* [nw] N/m^1.5 */
     int *rigid, *saturated;     /* [nw] */
     double *f_max, *tau_max;    /* [nw * nn] N, s */
+    double *t_max, *dt_out, *dt, *dt_max; /* [nw * nn] s: each collision, defaults resolved (dt: the
+                                             RK4 step, 0 for cvode and arkode) */
     double *n_d, *n_d_predicted, *n_d_fixed_point, *f_plateau, *tau_max_at_n_d; /* [nw]; NaN: none */
     double *sheet_table;        /* [nsheet * GW_SOFTWALL_NSHEET_COLS]; NaN: not defined */
     char *sheet_names, *sheet_materials; /* nsheet items, separated by "," and ";" */
@@ -355,6 +368,7 @@ typedef struct gw_chain_drop_outcome {
     gw_chain_drop_result r;  /* everything the run measured (gw_chain.h) */
     int n, n_column, block;  /* simulated bodies (1 with block), beads of the column */
     double height, gravity, v_imp, t_fall, t_max, dt_out, peak_threshold; /* m, m/s^2, m/s, s, s, s, N */
+    double dt, dt_max;       /* the run's step (rk4; 0: adaptive) and step cap, s, resolved */
     double mass, k, kwall, radius, gamma, alpha; /* the resolved model (mass: the block's) */
     int n_gaps;              /* n - 1 with gaps, else 0 */
     double *gaps;            /* [n_gaps] m */

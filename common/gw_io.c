@@ -318,6 +318,13 @@ int gw_out_check(const char *dir, const char *what, gw_err *err)
             if (access(buf, W_OK | X_OK) != 0)
                 return gw_err_set(err, GW_EINVAL, "%s: cannot write into '%s': %s", what, buf,
                                   strerror(errno));
+            /* what the mode bits do not say (root under /proc, a read-only mount):
+             * a directory made and removed at once where the run will make its own */
+            char probe[4096 + 32];
+            snprintf(probe, sizeof probe, "%s/.granwave-probe-XXXXXX", buf);
+            if (!mkdtemp(probe))
+                return gw_err_set(err, GW_EINVAL, "%s: cannot write into '%s': %s", what, buf, strerror(errno));
+            rmdir(probe);
             return GW_OK;
         }
         if (errno != ENOENT)

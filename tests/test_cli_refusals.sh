@@ -182,7 +182,7 @@ refused "layer-impact --out is /dev/full" 'not a directory' layer-impact --sampl
 refused "layer-make --out is /dev/zero" 'character device' layer-make --n 10 --out /dev/zero
 refused "layer-make --out is a directory" 'directory' layer-make --n 10 --out "$tmp/adir"
 # unwritable even for root: a directory under /proc takes no new files
-refused "layer-make --out under /proc, before the run" "sample '/proc/.*cannot be written" layer-make --n 10 --out /proc/granwave_no.txt
+refused "layer-make --out under /proc, before the run" "sample: cannot write into '/proc'" layer-make --n 10 --out /proc/granwave_no.txt
 refused "layer-impact --out under /proc, before the run" 'cannot create directory' layer-impact --sample "$tmp/L.txt" --t-max 1e-3 --out /proc/granwave_no
 refused "layer-stats table is /dev/zero" 'character device' layer-stats /dev/zero --out "$tmp/o"
 refused "sweep config is /dev/zero" 'character device' sweep /dev/zero --out "$tmp/o"

@@ -47,6 +47,61 @@
 #  10 dispersion's work (sites x samples x RK4 steps) was not bounded:
 #    --steps-per-sample 100000 at the defaults meant 2.1e11 bead-steps (about
 #    3 h, no line said so); bounded before the run at 1e10.
+#  11 provenance of the drop and the studies over N: drop's settings recorded
+#    dt_max 0 and (rk4) dt 0; falcon, wavespeed and softwall recorded t_max 0,
+#    dt_out 0, dt 0 and dt_max 0 for values resolved per run. The drop records the
+#    step and cap it ran with; the studies record in settings.solver the value every
+#    run shared or null, and each run's value in settings.runs (and falcon_runs.csv
+#    columns), equal to what `granwave chain` resolves for the same column.
+#  12 a flag given twice took its last value silently (`chain --n 3 ... --n 30`
+#    ran 30 beads): the shared parser refuses it, for every command (the layer
+#    commands and sweep too), before anything is written or run.
+#  13 a column's memory was not estimated before allocation: chain --n 50000000
+#    under a 4 GB limit ended "out of memory" (exit 1) from the first allocation;
+#    with a sensor body (or a wall with its own states) cvode's Jacobian is full
+#    and --n 20000 asked 77 GB ("band matrix allocation failed", exit 1). The
+#    state, model arrays and the solver's workspace are estimated before anything
+#    is allocated and bounded at 2 GiB, in the library (drop, Python, sweeps):
+#    exit 2 naming n and the most beads that pass; where the steps bound trips at
+#    fewer beads (rk4) it is the one named.
+#  14 a chain sweep whose case the run refuses (dt-max 1e-13: 1.1e9 steps; n 5e7:
+#    47 GB) exited 2 but had made OUT and its journal.csv: the model's check
+#    (run on every case before OUT is made) now runs the collision's bounds too.
+#  15 --out under /proc (root: the mode bits allow it, mkdir fails): chain and
+#    drop ran, then failed writing (exit 1); wavespeed refused without naming
+#    --out. The check before the run now makes and removes a directory where
+#    the run will make its own: exit 2 naming --out, before the run, nothing left.
+#  16 a speed given twice (falcon --vimp 0.3,0.3, --heights 1,1, wavespeed
+#    --vimp 0.3,0.5,0.3) ran the same collisions twice and counted them twice
+#    in the fits: wavespeed's beta_err was 1.2e-15 from a duplicated point (null,
+#    undefined, with the two distinct speeds). Refused, in the library too.
+#  17 falcon --n 1:1 (one column per speed) reported t_q null but t_q_err 0 and
+#    r2 0: a line through one point has no number; all are null now.
+#  18 a failed run's line said the command twice ("granwave chain: chain: bead 1
+#    still on the wall ...", "granwave drop: drop: relative energy error ...").
+#  19 dispersion --column-n: --vimp 1e-200 failed at t = 0 inside cvode (exit 1;
+#    the other chain speeds lie in [1e-9, 1e3] since section 6); the column
+#    stored every bead's series though the spectrum takes the wall force only,
+#    so --column-n 20000 was refused for 90 GB "of its contact events", naming
+#    --n (not --column-n) and advising to run without --out (refused without it).
+#  20 --restitution 1e-9 (or 1e-4) --damping hc: the calibrating bead stayed on
+#    the wall (overdamped) before e fell that low, and the calibration ended as a
+#    failed run reported as bad input: "granwave chain: chain: bead 1 still on
+#    the wall at t_max" (exit 2, naming nothing). An overdamped calibration run
+#    counts as e = 0 in the bracket and the root is checked to give e (to 1e-3):
+#    exit 2 naming --restitution; e = 1e-3 still calibrates (n = 1: e to 1e-9).
+#  21 the studies over N checked a column's bounds only when its run came:
+#    softwall --solver rk4 --dt 1e-12 ran N = 1 (7e7 steps) for minutes before the
+#    refusal; the largest column at each speed is checked before any run.
+#  22 wavespeed's front speed depended on --dt-out (the front times are
+#    interpolated between samples): --dt-out 1e-3 moved v_front from 634.3 to
+#    627.3 m/s (1.1 %); the front's column is sampled at most tau_1/200 apart.
+#  23 a heavy sensor body (1000 kg on 1e12 N/m): the collision ended when bead 1
+#    had left while the sensor's reading k_s x_s was still rising, so F_max was
+#    20.7 N at t_end, about half the reading's peak; the run now also waits for
+#    the reading to stop rising. For an undamped sensor at rest hit by a pulse of
+#    impulse J = m v (1 + e), the peak reading k_s A lies in [0.8, 1] J omega
+#    (omega = sqrt(k_s/M); the pulse is 35 us, omega tau = 1.1).
 set -u
 GW=$1
 SRC=${2:-.}
@@ -261,6 +316,174 @@ refused "dispersion --n 65536 --t-samples 2048 --steps-per-sample 75 (the larges
 runs "dispersion --n 16 --t-samples 64 --steps-per-sample 100000 (1e8 bead-steps)" "$tmp/d.json" \
     dispersion --n 16 --t-samples 64 --steps-per-sample 100000 --json &&
     jcheck "  it runs with the steps asked for" "$tmp/d.json" "j['settings']['solver']['steps_per_sample'] == 100000 and j['steps'] >= 100000 * 63"
+
+# --- 11: the values that ran, resolved, in every output of drop and the studies
+if runs "drop --n 3 --solver rk4 --json" "$tmp/d.json" drop --n 3 --solver rk4 --json; then
+    jcheck "  its dt and dt_max are those of its first collision (T_c/400 and the quarter contact), not 0" "$tmp/d.json" \
+        "(lambda s, f: s['dt'] > 0 and s['dt_max'] > 0 and abs(s['dt'] / f['dt'] - 1) < 1e-12 and abs(s['dt_max'] / f['dt_max'] - 1) < 1e-12 and abs(s['dt'] / (j['first_collision']['closed_forms']['t_q'] / 800) - 1) < 1e-12)(j['settings']['solver'], j['first_collision']['settings']['solver'])"
+fi
+if runs "drop --n 3 --out (cvode)" "$tmp/d.txt" drop --n 3 --out "$tmp/run"; then
+    "$PY" - "$tmp/run" <<'PYEOF' >"$tmp/pyout" 2>&1 && ok "  the --out files record a step cap > 0, as the JSON" || ko "  drop --out: $(cat "$tmp/pyout")"
+import json, sys, glob
+d = sys.argv[1]
+j = json.load(open(d + "/drop.json")) if __import__("os").path.exists(d + "/drop.json") else None
+for f in glob.glob(d + "/*.csv"):
+    hdr = [l for l in open(f) if l.startswith("# settings: ")]
+    assert hdr, f
+    h = json.loads(hdr[0][len("# settings: "):])
+    assert h["solver"]["dt_max"] > 0 and h["solver"]["t_max"] > 0, (f, h["solver"])
+PYEOF
+fi
+rm -rf "$tmp/run"
+if runs "falcon --n 1:3 --heights none --vimp 0.3,0.5 --solver cvode --out" "$tmp/f.json" \
+        falcon --n 1:3 --heights none --vimp 0.3,0.5 --solver cvode --quiet --json --out "$tmp/run"; then
+    for nv in "1 0.3 0" "3 0.3 2" "2 0.5 4"; do
+        set -- $nv
+        runs "  chain --n $1 --vimp $2" "$tmp/c.json" chain --n "$1" --vimp "$2" --json &&
+            jcheck "  falcon's run $3 (N $1, v $2) records chain's t_max, dt_out, dt_max (to 1e-12)" "$tmp/f.json" \
+                "(lambda r, c: all(abs(r[k][$3] - c[k]) <= 1e-12 * c[k] for k in ('t_max', 'dt_out', 'dt_max')) and r['dt'][$3] == c['dt'])(j['settings']['runs'], json.load(open('$tmp/c.json'))['settings']['solver'])"
+    done
+    jcheck "  settings.solver: t_max and dt_out null (they differ per run), 6 runs listed" "$tmp/f.json" \
+        "j['settings']['solver']['t_max'] is None and j['settings']['solver']['dt_out'] is None and len(j['settings']['runs']['t_max']) == 6"
+    "$PY" - "$tmp/run" "$tmp/f.json" <<'PYEOF' >"$tmp/pyout" 2>&1 && ok "  falcon_runs.csv carries each run's t_max, dt_out, dt, dt_max; its header's settings are the JSON's" || ko "  falcon_runs.csv: $(cat "$tmp/pyout")"
+import csv, json, sys
+d, jf = sys.argv[1], sys.argv[2]
+j = json.load(open(jf))
+lines = open(d + "/falcon_runs.csv").read().splitlines()
+hdr = json.loads(lines[0].split(" settings: ", 1)[1])
+assert hdr == j["settings"], "header settings differ"
+rows = list(csv.DictReader(lines[1:]))
+for k in ("t_max", "dt_out", "dt", "dt_max"):
+    col = [float(r[k + "_s"]) for r in rows]
+    assert col == j["settings"]["runs"][k], (k, col, j["settings"]["runs"][k])
+PYEOF
+fi
+rm -rf "$tmp/run"
+if runs "wavespeed --n 6:8 --vimp 0.3,0.5 --json" "$tmp/w.json" wavespeed --n 6:8 --vimp 0.3,0.5 --quiet --json; then
+    runs "  chain --n 8 --vimp 0.5" "$tmp/c.json" chain --n 8 --vimp 0.5 --json &&
+        jcheck "  its last run (N 8, v 0.5) records chain's t_max, dt_out and dt_max" "$tmp/w.json" \
+            "(lambda r, c: len(r['t_max']) == 6 and all(abs(r[k][5] - c[k]) <= 1e-12 * c[k] for k in ('t_max', 'dt_out', 'dt_max')))(j['settings']['runs'], json.load(open('$tmp/c.json'))['settings']['solver'])"
+fi
+if runs "softwall --n 1:3 --json" "$tmp/s.json" softwall --n 1:3 --quiet --json; then
+    runs "  chain --n 2 --kwall 1e9 --vimp sqrt(2 g 2.9 mm)" "$tmp/c.json" chain --n 2 --kwall 1e9 --vimp "$("$PY" -c 'print(repr((2 * 9.81 * 2.9e-3) ** 0.5))')" --json &&
+        jcheck "  its run N 2 records chain's t_max, dt_out and dt_max; settings.solver's t_max null" "$tmp/s.json" \
+            "(lambda r, c: all(abs(r[k][1] - c[k]) <= 1e-9 * c[k] for k in ('t_max', 'dt_out', 'dt_max')) and j['settings']['solver']['t_max'] is None)(j['settings']['runs'], json.load(open('$tmp/c.json'))['settings']['solver'])"
+fi
+
+# --- 12: a flag given twice is refused by every command's parser
+for cmd in chain falcon dispersion wavespeed softwall drop sweep layer-make layer-impact layer-stats; do
+    refused "$cmd --out given twice" "^granwave $cmd --out: given twice\$" $cmd --out "$tmp/o" --out "$tmp/o"
+done
+refused "chain --n 3 --vimp 0.3 --n 30" '^granwave chain --n: given twice$' chain --n 3 --vimp 0.3 --n 30 --out "$tmp/o"
+refused "chain --n=3 --n=3 (the same value, '=' form)" '^granwave chain --n: given twice$' chain --n=3 --n=3 --out "$tmp/o"
+refused "falcon --json --json (a flag without value)" '^granwave falcon --json: given twice$' falcon --json --json --out "$tmp/o"
+refused "drop --solver rk4 --solver cvode" '^granwave drop --solver: given twice$' drop --solver rk4 --solver cvode --out "$tmp/o"
+refused "layer-impact --vi 3 --vi=4" '^granwave layer-impact --vi: given twice$' layer-impact --vi 3 --vi=4 --out "$tmp/o"
+timeout 10 "$GW" chain --help --help >"$tmp/h" 2>&1 </dev/null && grep -q '^usage: granwave chain' "$tmp/h" &&
+    ok "--help given twice still prints the help (exit 0)" || ko "chain --help --help: $(head -c 200 "$tmp/h")"
+
+# --- 13: memory estimated before allocation (under a 4 GB limit as a user's shell might set)
+memref() {
+    local what=$1 pat=$2; shift 2
+    rm -rf "$tmp/o"
+    timeout -s KILL 20 bash -c 'ulimit -v 4000000; exec "$@"' _ "$GW" "$@" >"$tmp/stdout" 2>"$tmp/stderr" </dev/null
+    local rc=$?
+    if [ $rc -eq 2 ] && [ "$(wc -l <"$tmp/stderr")" -eq 1 ] && grep -qE -- "$pat" "$tmp/stderr" && [ ! -e "$tmp/o" ]; then
+        ok "$what"
+    else
+        ko "$what: exit $rc: $(head -c 300 "$tmp/stderr")"
+    fi
+}
+memref "chain --n 50000000 (47 GB with cvode)" \
+    '^granwave chain: n: a column of 50000000 beads needs about 47.2 GB .* cvode \(bdf\) .* above the 2.15 GB limit: at most 2274873 beads here$' \
+    chain --n 50000000 --out "$tmp/o"
+memref "chain --n 3000000 --solver arkode --method dirk" '^granwave chain: n: a column of 3000000 beads .* arkode \(dirk\) .* at most [0-9]+ beads here$' \
+    chain --n 3000000 --solver arkode --method dirk --out "$tmp/o"
+memref "chain --n 20000 with a sensor body (a full Jacobian: 77 GB)" \
+    '^granwave chain: n: a column of 20000 beads needs about 76.8 GB .*a full Jacobian.* at most 3339 beads here$' \
+    chain --n 20000 --sensor-mass 3e-3 --sensor-stiffness 2e9 --out "$tmp/o"
+memref "drop --n 100000 with a sensor body" '^granwave drop --n: a column of 100000 beads .*a full Jacobian.* at most 3339 beads here$' \
+    drop --n 100000 --sensor-mass 3e-3 --sensor-stiffness 2e9 --out "$tmp/o"
+memref "chain --n 10000000 --solver rk4: the steps bound trips at fewer beads and is named" \
+    '^granwave chain: dt: a step of .* needs about 8e\+09 steps over the collision' chain --n 10000000 --solver rk4 --out "$tmp/o"
+# below the bound the estimate does not refuse: the arkode erk column of 3339 beads
+# with a sensor (no Jacobian) starts (stopped at t-max 1e-9 s)
+timeout 60 "$GW" chain --n 3339 --sensor-mass 3e-3 --sensor-stiffness 2e9 --solver arkode --t-max 1e-9 --json >/dev/null 2>"$tmp/stderr" </dev/null
+rc=$?
+[ $rc -ne 2 ] && ok "  a column within the bound is not refused (exit $rc)" || ko "  refused within the bound: $(cat "$tmp/stderr")"
+
+# --- 14: a chain sweep's cases checked against the run's bounds before OUT is made
+printf '[sweep]\nmodel = chain\n[grid]\nvimp = 0.3\n[params]\nn = 3\ndt-max = 1e-13\n' >"$tmp/dtm.ini"
+refused "a chain sweep with dt-max 1e-13 (1.1e9 steps): nothing made" \
+    "^granwave sweep: .*dtm.ini: case 0: dt-max: a step of 1e-13 s needs about 1.1e\+09 steps" sweep "$tmp/dtm.ini" --out "$tmp/o" --quiet
+printf '[sweep]\nmodel = chain\n[grid]\nvimp = 0.3\n[params]\nn = 50000000\n' >"$tmp/big.ini"
+refused "a chain sweep case of 5e7 beads: nothing made" 'case 0: n: a column of 50000000 beads needs about 47.2 GB' \
+    sweep "$tmp/big.ini" --out "$tmp/o" --quiet
+refused "the same with --check" 'case 0: n: a column of 50000000 beads' sweep "$tmp/big.ini" --check --out "$tmp/o"
+
+# --- 15: --out where a directory cannot be made whatever the mode bits say
+for cmd in "chain --n 2" "drop --n 2" "falcon --n 1:3 --heights none" "wavespeed --n 6:8 --vimp 0.3" "softwall --n 1:3" "dispersion --n 16 --t-samples 64"; do
+    refused "$cmd --out /proc/granwave-x (before the run)" "^granwave ${cmd%% *} --out: cannot write into '/proc'" $cmd --out /proc/granwave-x
+done
+ls -a "$tmp" | grep -q granwave-probe && ko "a probe directory was left in $tmp" || ok "no probe directory left behind"
+runs "chain --n 2 --out a new directory still runs" "$tmp/c.txt" chain --n 2 --out "$tmp/new/run" && [ -s "$tmp/new/run/chain.json" ] &&
+    ! ls -a "$tmp/new" | grep -q granwave-probe && ok "  and writes there, nothing else" || ko "  chain --out new dir"
+
+# --- 16: a speed given twice
+refused "falcon --vimp 0.3,0.3" '^granwave falcon --vimp: item 2 gives the impact velocity 0.3 m/s of item 1' \
+    falcon --vimp 0.3,0.3 --heights none --out "$tmp/o"
+refused "falcon --heights 1,1" '^granwave falcon --heights: item 2 gives the impact velocity 0.1400714104 m/s of item 1' \
+    falcon --heights 1,1 --out "$tmp/o"
+refused "wavespeed --vimp 0.3,0.5,0.3" '^granwave wavespeed --vimp: item 3 gives the impact velocity 0.3 m/s of item 1' \
+    wavespeed --vimp 0.3,0.5,0.3 --out "$tmp/o"
+runs "wavespeed --vimp 0.3,0.5 --n 6:8 (two distinct speeds)" "$tmp/w.json" wavespeed --vimp 0.3,0.5 --n 6:8 --quiet --json &&
+    jcheck "  beta 1/5 (F.16) to 1e-6, its standard error undefined (null) with two points" "$tmp/w.json" \
+        "abs(j['beta'] - 0.2) < 1e-6 and j['beta_err'] is None"
+# --- 17: no line through one point
+runs "falcon --n 1:1" "$tmp/f.json" falcon --n 1:1 --heights none --quiet --json &&
+    jcheck "  t_q, t_q_err, r2 and the intercept's error all null" "$tmp/f.json" \
+        "all(j['velocities'][0][k] is None for k in ('t_q', 't_q_err', 'r2', 'tau_fit_intercept_err', 'wave_speed'))"
+
+# --- 18: a failed run's line names the command once
+timeout 20 "$GW" chain --n 3 --t-max 1e-7 >/dev/null 2>"$tmp/e" </dev/null; rc=$?
+[ $rc -eq 1 ] && grep -qx 'granwave chain: bead 1 still on the wall at t_max = 1e-07 s' "$tmp/e" && ok "chain failing at t-max: exit 1, one prefix" || ko "chain --t-max 1e-7: exit $rc $(cat "$tmp/e")"
+timeout 20 "$GW" drop --energy-tol 1e-20 >/dev/null 2>"$tmp/e" </dev/null; rc=$?
+[ $rc -eq 1 ] && grep -q '^granwave drop: relative energy error .* exceeds the limit 1e-20' "$tmp/e" && ok "drop over its energy limit: exit 1, one prefix" || ko "drop --energy-tol 1e-20: exit $rc $(cat "$tmp/e")"
+
+# --- 19: dispersion --column-n: its speed range and its stored series
+refused "dispersion --column-n 3 --vimp 1e-200" '^granwave dispersion --vimp: 1e-200 is outside \[1e-09, 1000\]' \
+    dispersion --column-n 3 --vimp 1e-200 --out "$tmp/o"
+runs "dispersion --column-n 3 --vimp 1e-9 runs" "$tmp/d.json" dispersion --column-n 3 --vimp 1e-9 --json &&
+    jcheck "  at that speed" "$tmp/d.json" "j['v_imp'] == 1e-9"
+timeout 3 "$GW" dispersion --column-n 20000 --json >/dev/null 2>"$tmp/e" </dev/null; rc=$?
+[ $rc -ne 2 ] && ok "dispersion --column-n 20000 is not refused for a bead series it does not keep (stopped after 3 s)" ||
+    ko "dispersion --column-n 20000 refused: $(cat "$tmp/e")"
+
+# --- 20: a restitution below what a rebound can give
+for d in hc kk; do
+    refused "chain --restitution 1e-9 --damping $d" '^granwave chain --restitution: e = 1e-09 at 0.3 m/s is not reached: from (alpha|gamma) = .* the bead stays on the wall' \
+        chain --n 2 --restitution 1e-9 --damping $d --out "$tmp/o"
+    runs "chain --n 1 --restitution 1e-3 --damping $d" "$tmp/r.json" chain --n 1 --restitution 1e-3 --damping $d --json &&
+        jcheck "  one bead rebounds at e = 1e-3 (to 1e-9)" "$tmp/r.json" "abs(j['eps_eff'] - 1e-3) < 1e-12"
+done
+refused "drop --restitution 1e-9 --damping hc" '^granwave drop --restitution: e = 1e-09' drop --n 2 --restitution 1e-9 --damping hc --out "$tmp/o"
+
+# --- 21: a study's largest column checked before any run (REFUSE_TIMEOUT: at once)
+REFUSE_TIMEOUT=5 refused "softwall --solver rk4 --dt 1e-12 (refused at once, not after N = 1)" \
+    '^granwave softwall --dt: a step of 1e-12 s needs about 5.6e\+08 steps' softwall --n 1:3 --solver rk4 --dt 1e-12 --quiet --out "$tmp/o"
+REFUSE_TIMEOUT=5 refused "falcon --solver rk4 --dt 1e-12" 'dt: a step of 1e-12 s' falcon --n 1:3 --heights none --solver rk4 --dt 1e-12 --quiet --out "$tmp/o"
+# --- 22: the front speed does not depend on the study's sampling
+if runs "wavespeed --n 6:12 --vimp 0.3,0.5" "$tmp/a.json" wavespeed --n 6:12 --vimp 0.3,0.5 --quiet --json &&
+   runs "  the same with --dt-out 1e-3" "$tmp/b.json" wavespeed --n 6:12 --vimp 0.3,0.5 --dt-out 1e-3 --quiet --json; then
+    jcheck "  v_front the same to 1e-9 (it moved 1.1 %)" "$tmp/b.json" \
+        "all(abs(x / y - 1) < 1e-9 for x, y in zip(j['v_front'], json.load(open('$tmp/a.json'))['v_front']))"
+fi
+
+# --- 23: the reading of a heavy sensor body reaches its peak before the run ends
+if runs "chain --n 1 --sensor-mass 1e3 --sensor-stiffness 1e12" "$tmp/s.json" chain --n 1 --sensor-mass 1e3 --sensor-stiffness 1e12 --json; then
+    jcheck "  F_max in [0.8, 1] J omega (was 0.52 J omega, cut at t_end)" "$tmp/s.json" \
+        "(lambda J, w: 0.8 * J * w <= j['f_max'] <= J * w)(j['settings']['model']['mass'] * j['v_imp'] * (1 + j['eps_eff']), (1e12 / 1e3) ** 0.5)"
+fi
 
 echo "test_hostile_chain: $passes passed, $fails failed"
 [ $fails -eq 0 ]

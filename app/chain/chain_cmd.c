@@ -107,24 +107,35 @@ int gw_cmd_chain(int argc, char **argv)
     gw_chain *chain = NULL;
     /* --out was tried by the resolution; it is made only when there is
      * something to write (a run refused by the model leaves nothing) */
-    if (chain_cli_resolve(&c, opts, "chain", &err) != GW_OK ||
-        gw_chain_create(&c.params, &chain, &err) != GW_OK) {
+    if (chain_cli_resolve(&c, opts, "chain", &err) != GW_OK) {
         chain_cli_free(&c);
         return chain_cli_fail(err.msg);
     }
     gw_chain_trace tr;
-    gw_chain_trace_init(&tr, c.params.n);
+    gw_chain_trace_init(&tr, 0);
     if (c.out) {
         c.run.sample = gw_chain_trace_sample;
         c.run.sample_ctx = &tr;
     }
+    /* the run's bounds (samples, trace, steps, memory) before anything is allocated */
+    if (gw_chain_run_check(&c.params, &c.run, &err) != GW_OK) {
+        fprintf(stderr, "granwave chain: %s\n", err.msg);
+        chain_cli_free(&c);
+        return 2;
+    }
+    if (gw_chain_create(&c.params, &chain, &err) != GW_OK) {
+        chain_cli_free(&c);
+        return chain_cli_fail(err.msg);
+    }
+    gw_chain_trace_init(&tr, c.params.n);
     gw_chain_result r;
     double t0 = gw_clock_ms();
     int rc = gw_chain_collide(chain, &c.run, &r, &err);
     double wall_ms = gw_clock_ms() - t0;
     int code = 0;
     if (rc != GW_OK) {
-        fprintf(stderr, "granwave chain: %s\n", err.msg);
+        /* the library's run messages start "chain: " already */
+        fprintf(stderr, "granwave %s%s\n", strncmp(err.msg, "chain: ", 7) == 0 ? "" : "chain: ", err.msg);
         code = rc == GW_EINVAL ? 2 : 1;
         if (c.out && code == 1) { /* keep what was computed: the trace up to the failure and its state */
             char *hdr = run_header(&c, &r, argc, argv);

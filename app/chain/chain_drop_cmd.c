@@ -331,6 +331,8 @@ int gw_cmd_drop(int argc, char **argv)
     if ((rc = gw_chain_drop_study_run(&ds, NULL, NULL, &o, &err)) == GW_EINVAL) /* "NAME:" -> "--NAME:" */
         gw_cli_study_error(gw_chain_drop_setup_params(), "drop", rc, &err);
     d.dt_out = d.c.run.dt_out = o.dt_out; /* as the study resolved them, for the settings */
+    d.c.run.sp.dt = o.dt;
+    d.c.run.sp.dt_max = o.dt_max;
     d.peak_threshold = o.peak_threshold;
     const gw_chain_drop_result *r = &o.r;
     gw_chain_trace tr = {.n = o.n, .len = (size_t)o.trace_len, .cap = (size_t)o.trace_len,
@@ -339,7 +341,7 @@ int gw_cmd_drop(int argc, char **argv)
     if (!buf && rc == GW_OK)
         rc = gw_err_set(&err, GW_ENOMEM, "drop: out of memory");
     if (rc != GW_OK) {
-        fprintf(stderr, "granwave %s%s\n", rc == GW_EINVAL ? "" : "drop: ", err.msg);
+        fprintf(stderr, "granwave %s%s\n", rc == GW_EINVAL || strncmp(err.msg, "drop: ", 6) == 0 ? "" : "drop: ", err.msg);
         code = rc == GW_EINVAL ? 2 : 1;
     } else if (d.c.out && write_outputs(&d, r, &tr, o.wall_time_ms, argc, argv, buf, &err) != GW_OK) {
         fprintf(stderr, "granwave drop --out: %s\n", err.msg);

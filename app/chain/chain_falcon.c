@@ -41,11 +41,31 @@ static void analyse_velocity(falcon *f, int iv)
     fv->speed_theory = a.speed_theory;
 }
 
+/* The settings with each collision's t_max, dt_out, dt and dt_max (the rows
+ * of falcon_runs.csv, velocity by velocity), or NULL when out of memory. */
+static cJSON *falcon_settings(const falcon *f)
+{
+    long nc = falcon_ncase(f);
+    double *v = malloc(4 * (size_t)(nc > 0 ? nc : 1) * sizeof *v);
+    if (!v)
+        return NULL;
+    for (long i = 0; i < nc; i++) {
+        v[i] = f->res[i].run_t_max;
+        v[nc + i] = f->res[i].run_dt_out;
+        v[2 * nc + i] = f->res[i].run_dt;
+        v[3 * nc + i] = f->res[i].run_dt_max;
+    }
+    cJSON *o = chain_cli_settings_json(&f->c);
+    chain_cli_settings_runs(o, nc, v, v + nc, v + 2 * nc, v + 3 * nc);
+    free(v);
+    return o;
+}
+
 static cJSON *summary_json(const falcon *f)
 {
     cJSON *o = cJSON_CreateObject();
     cJSON_AddStringToObject(o, "version", gw_version());
-    cJSON_AddItemToObject(o, "settings", chain_cli_settings_json(&f->c));
+    cJSON_AddItemToObject(o, "settings", falcon_settings(f));
     cJSON_AddNumberToObject(o, "n_min", f->n_lo);
     cJSON_AddNumberToObject(o, "n_max", f->n_hi);
     cJSON_AddNumberToObject(o, "k_c", gw_chain_kc(f->c.params.k));
@@ -107,14 +127,16 @@ static int write_tables(const falcon *f, const char *dir, const char *hdr, gw_er
         return rc;
     fprintf(a.fp, "# %s\n", hdr);
     fprintf(a.fp, "v_imp_m_s,h_mm,n,f_max_N,tau_max_s,tau_n_s,period_s,n_maxima,n_s,cluster,"
-                  "e_rel_over_e_k,eps_eff,eps_col,energy_error,steps,rhs_evals\n");
+                  "e_rel_over_e_k,eps_eff,eps_col,energy_error,steps,rhs_evals,t_max_s,dt_out_s,dt_s,dt_max_s\n");
     for (int iv = 0; iv < f->nv; iv++)
         for (int n = f->n_lo; n <= f->n_hi; n++) {
             const gw_chain_result *r = res_at(f, iv, n);
-            fprintf(a.fp, "%.10g,%.4g,%d,%.12g,%.12g,%.12g,%.12g,%d,%d,%d,%.12g,%.12g,%.12g,%.4g,%ld,%ld\n",
+            fprintf(a.fp, "%.10g,%.4g,%d,%.12g,%.12g,%.12g,%.12g,%d,%d,%d,%.12g,%.12g,%.12g,%.4g,%ld,%ld,%.17g,%.17g,"
+                          "%.17g,%.17g\n",
                     f->fv[iv].v, f->fv[iv].h_mm, n, r->f_max, r->tau_max, r->tau_n, r->period,
                     r->n_maxima, r->n_s, r->cluster, r->e_rel_over_e_k, r->eps_eff, r->eps_col,
-                    r->energy_error, r->stats.steps, r->stats.rhs_evals);
+                    r->energy_error, r->stats.steps, r->stats.rhs_evals, r->run_t_max, r->run_dt_out, r->run_dt,
+                    r->run_dt_max);
         }
     if ((rc = gw_afile_commit(&a, err)) != GW_OK)
         return rc;
@@ -135,7 +157,7 @@ static int write_tables(const falcon *f, const char *dir, const char *hdr, gw_er
 }
 
 /* Traces for N = 7, 15, 30 at the first velocity (bead trajectories for N = 7). */
-static int write_traces(const falcon *f, const char *dir, const char *hdr, gw_err *err)
+static int write_traces(const falcon *f, const char *dir, int argc, char **argv, gw_err *err)
 {
     const int ns[] = {7, 15, 30};
     for (size_t k = 0; k < sizeof ns / sizeof ns[0]; k++) {
@@ -161,6 +183,15 @@ static int write_traces(const falcon *f, const char *dir, const char *hdr, gw_er
         rc = gw_chain_collide(c, &o, &r, err);
         char stem[64];
         snprintf(stem, sizeof stem, "trace_n%d", p.n);
+        char *hdr = NULL; /* this run's own settings (its dt_out may be the traces') */
+        if (rc == GW_OK) {
+            cJSON *set = chain_cli_settings_json(&f->c);
+            chain_cli_settings_run(set, &r);
+            hdr = gw_cli_one_line(gw_cli_provenance("falcon", argc, argv, set), ' ');
+            cJSON_Delete(set);
+            if (!hdr)
+                rc = gw_err_set(err, GW_ENOMEM, "falcon: out of memory");
+        }
         if (rc == GW_OK) {
             if (p.n == 7) {
                 rc = gw_chain_trace_write(&tr, dir, stem, hdr, err);
@@ -174,6 +205,7 @@ static int write_traces(const falcon *f, const char *dir, const char *hdr, gw_er
                     remove(path);
             }
         }
+        free(hdr);
         gw_chain_result_free(&r);
         gw_chain_trace_free(&tr);
         gw_chain_free(c);
@@ -301,6 +333,10 @@ int gw_cmd_falcon(int argc, char **argv)
         f.fv[i].h_mm = is_h ? x : NAN;
         f.fv[i].v = f.v[i] = is_h ? sqrt(2 * G_EARTH * x * 1e-3) : x;
     }
+    if (gw_chain_study_speeds_check(f.v, f.nv, nvv, &err) != GW_OK) {
+        code = chain_cli_study_fail("falcon", err.msg);
+        goto out;
+    }
     f.c.params.n = f.n_lo;
     f.c.params.v_imp = f.v[0];
     if (chain_cli_resolve(&f.c, opts, "falcon", &err) != GW_OK) {
@@ -343,11 +379,13 @@ int gw_cmd_falcon(int argc, char **argv)
     cJSON *sum = summary_json(&f);
     chain_cli_warn_unfinished("falcon", (int)cJSON_GetObjectItem(sum, "unfinished")->valuedouble, ncase);
     if (f.c.out) {
-        char *hdr = gw_cli_one_line(chain_cli_header(&f.c, "falcon", argc, argv), ' ');
+        cJSON *set = falcon_settings(&f);
+        char *hdr = set ? gw_cli_one_line(gw_cli_provenance("falcon", argc, argv, set), ' ') : NULL;
+        cJSON_Delete(set);
         char path[4096];
         rc = write_tables(&f, f.c.out, hdr ? hdr : "", &err);
         if (rc == GW_OK)
-            rc = write_traces(&f, f.c.out, hdr ? hdr : "", &err);
+            rc = write_traces(&f, f.c.out, argc, argv, &err);
         if (rc == GW_OK && gw_path_join(path, sizeof path, f.c.out, "falcon_summary.json") == GW_OK)
             rc = gw_json_write(path, sum, &err);
         if (rc == GW_OK && gw_path_join(path, sizeof path, f.c.out, "report.md") == GW_OK)

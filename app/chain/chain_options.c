@@ -283,6 +283,24 @@ void chain_cli_settings_run(cJSON *settings, const gw_chain_result *r)
         cJSON_ReplaceItemInObjectCaseSensitive(s, used[i].key, cJSON_CreateNumber(used[i].v));
 }
 
+void chain_cli_settings_runs(cJSON *settings, long nrun, const double *t_max, const double *dt_out,
+                             const double *dt, const double *dt_max)
+{
+    cJSON *s = cJSON_GetObjectItemCaseSensitive(settings, "solver");
+    cJSON *runs = cJSON_AddObjectToObject(settings, "runs");
+    const struct {
+        const char *key;
+        const double *v;
+    } per[] = {{"t_max", t_max}, {"dt_out", dt_out}, {"dt", dt}, {"dt_max", dt_max}};
+    for (size_t i = 0; s && runs && i < sizeof per / sizeof per[0]; i++) {
+        int same = nrun > 0;
+        for (long k = 1; same && k < nrun; k++)
+            same = per[i].v[k] == per[i].v[0];
+        cJSON_ReplaceItemInObjectCaseSensitive(s, per[i].key, same ? cJSON_CreateNumber(per[i].v[0]) : cJSON_CreateNull());
+        cJSON_AddItemToObject(runs, per[i].key, gw_json_doubles(per[i].v, (int)nrun));
+    }
+}
+
 char *chain_cli_header(const chain_cli *c, const char *cmd, int argc, char **argv)
 {
     cJSON *o = chain_cli_settings_json(c);

@@ -58,6 +58,13 @@ cJSON *chain_cli_settings_json(const chain_cli *c);
 /* Replace the solver's dt, dt_max, t_max and dt_out of settings (0 = default)
  * with those run r used, defaults resolved: for a command of one run. */
 void chain_cli_settings_run(cJSON *settings, const gw_chain_result *r);
+/* For a study of many runs (falcon, wavespeed, softwall): the solver's t_max,
+ * dt_out, dt and dt_max of settings become the value every one of the nrun
+ * runs used, or null where they differ; and settings gets "runs": {"t_max":
+ * [...], "dt_out": [...], "dt": [...], "dt_max": [...]}, each run's value in
+ * the order of the study's table (docs/formats.md). */
+void chain_cli_settings_runs(cJSON *settings, long nrun, const double *t_max, const double *dt_out,
+                             const double *dt, const double *dt_max);
 
 /* The JSON object `granwave chain` prints for one collision r run with c's
  * settings (also the drop's first_collision). */

@@ -174,7 +174,9 @@ int gw_cmd_softwall(int argc, char **argv)
         if (so.unfinished > 0) /* F_max and tau_max: the wall's contact, the column's own may still be busy */
             fprintf(stderr, "granwave softwall: warning: %d of %d collisions were still at the wall at t_max: their "
                     "F_max and tau_max may not be final; raise --t-max\n", so.unfinished, so.ncase);
-        cJSON_AddItemToObject(o, "settings", chain_cli_settings_json(&c));
+        cJSON *set = chain_cli_settings_json(&c);
+        chain_cli_settings_runs(set, so.ncase, so.t_max, so.dt_out, so.dt, so.dt_max);
+        cJSON_AddItemToObject(o, "settings", set);
         char path[4096];
         if (c.out && (gw_path_join(path, sizeof path, c.out, "softwall.json") != GW_OK ||
                       gw_json_write(path, o, &err) != GW_OK)) {

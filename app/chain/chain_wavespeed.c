@@ -64,7 +64,7 @@ int gw_cmd_wavespeed(int argc, char **argv)
         free(v);
         return chain_cli_fail("wavespeed --n: need at least 3 sizes and a largest column of >= 8 beads");
     }
-    if (gw_chain_study_work_check(a, b, nv, &err) != GW_OK) {
+    if (gw_chain_study_speeds_check(v, nv, nv, &err) != GW_OK || gw_chain_study_work_check(a, b, nv, &err) != GW_OK) {
         free(v);
         return chain_cli_study_fail("wavespeed", err.msg);
     }
@@ -130,11 +130,13 @@ int gw_cmd_wavespeed(int argc, char **argv)
         cJSON_AddNumberToObject(o, "wall_time_s", wall_s);
         cJSON_AddNumberToObject(o, "unfinished", wo.unfinished);
         chain_cli_warn_unfinished("wavespeed", wo.unfinished, nv * (int)(b - a + 1));
-        cJSON_AddItemToObject(o, "settings", chain_cli_settings_json(&c));
+        cJSON *set = chain_cli_settings_json(&c);
+        chain_cli_settings_runs(set, wo.ncase, wo.t_max, wo.dt_out, wo.dt, wo.dt_max);
+        cJSON_AddItemToObject(o, "settings", set);
         char path[4096];
         if (c.out) {
             gw_afile af;
-            char *hdr = gw_cli_one_line(chain_cli_header(&c, "wavespeed", argc, argv), ' ');
+            char *hdr = gw_cli_one_line(gw_cli_provenance("wavespeed", argc, argv, set), ' ');
             if (gw_path_join(path, sizeof path, c.out, "wavespeed.csv") != GW_OK ||
                 gw_afile_open(&af, path, &err) != GW_OK) {
                 code = 1;

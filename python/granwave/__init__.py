@@ -117,7 +117,15 @@ def layer_stats(input=None, **kwargs):
     return r
 
 
+_SOLVER_KEYWORDS = ("solver", "method", "rtol", "atol", "dt")
+
+
 def falcon(*, progress=None, **kwargs):
+    # As `granwave falcon`: the accuracy target picks RK4 only when no solver
+    # option is given. The library sees values, not keywords, and took
+    # solver="cvode" (its default's value) as not given: it ran RK4 instead.
+    if "accuracy" not in kwargs and any(kwargs.get(k) is not None for k in _SOLVER_KEYWORDS):
+        kwargs["accuracy"] = 0
     return _study("falcon").run(kwargs, progress)
 
 

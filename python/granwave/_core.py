@@ -150,8 +150,16 @@ def _text(p, value):
             return f"{value.start}:{value.stop - 1}"
         if isinstance(value, numbers.Integral):
             return str(int(value))
-        a, b = value
-        return f"{int(a)}:{int(b)}"
+        # (A, B): exactly two ends; a fractional end goes to C as written, which
+        # refuses it ("'1.5' is not an integer"), instead of being cut by int()
+        if isinstance(value, (str, bytes)) or not hasattr(value, "__len__") or len(value) != 2:
+            raise TypeError(f"{p.keyword}: expected (A, B), an integer or a range, got {value!r}")
+        ends = []
+        for x in value:
+            if isinstance(x, (bool, np.bool_)) or not isinstance(x, numbers.Real):
+                raise TypeError(f"{p.keyword}: a range end must be a number, got {x!r}")
+            ends.append(str(int(x)) if isinstance(x, numbers.Integral) else repr(float(x)))
+        return ":".join(ends)
     if isinstance(value, (bool, np.bool_)):
         raise TypeError(f"{p.keyword}: expected a number, got {value!r}")
     if isinstance(value, numbers.Integral):

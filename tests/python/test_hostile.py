@@ -97,3 +97,70 @@ def test_resources_bounded_before_the_run(tmp_path):
     assert not out.exists()
     with pytest.raises(granwave.GranwaveValueError, match=r"dt_out: the trace of 1000 beads .*160 GB in memory"):
         granwave.drop(n=1000, t_max=1, dt_out=1e-7, trace=True)
+
+
+def test_results_record_the_settings_that_ran():
+    # The studies over N and the drop recorded t_max, dt_out, dt and dt_max as 0
+    # (the default marker), not what ran; every result now carries the values each
+    # collision used, equal to those of the same column run alone.
+    c = granwave.chain(n=3, solver="rk4")
+    assert c.t_max == pytest.approx(20 * (3 * c.t_q + c.tau_1), rel=1e-12)
+    assert c.dt_out == pytest.approx(c.tau_1 / 200, rel=1e-12)
+    assert c.dt == pytest.approx(c.t_q / 800, rel=1e-12) and 0 < c.dt_max < c.tau_1
+    f = granwave.falcon(heights=[], n=(1, 3), vimp=[0.3, 0.5], solver="arkode")
+    for iv, v in enumerate((0.3, 0.5)):
+        for k, n in enumerate((1, 2, 3)):
+            one = granwave.chain(n=n, vimp=v, solver="arkode")
+            for key in ("t_max", "dt_out", "dt_max"):
+                assert f[key][iv][k] == pytest.approx(one[key], rel=1e-12), (key, v, n)
+            assert f.dt[iv][k] == 0  # arkode: no fixed step
+    d = granwave.drop(n=3, solver="rk4")
+    assert d.dt > 0 and d.dt_max > 0
+    one = granwave.chain(n=3, vimp=d.v_imp, solver="rk4", gravity=9.81)
+    assert d.dt == pytest.approx(one.dt, rel=1e-12) and d.dt_max == pytest.approx(one.dt_max, rel=1e-12)
+    s = granwave.softwall(n=(1, 3))
+    assert s.t_max.shape == (1, 3) and all(s.t_max[0] > 0) and all(s.dt_max[0] > 0)
+    w = granwave.wavespeed(n=(6, 8), vimp=[0.3])
+    assert w.t_max[0][2] == pytest.approx(granwave.chain(n=8, vimp=0.3).t_max, rel=1e-12)
+
+
+def test_a_column_memory_is_bounded_before_allocation():
+    # chain(n=50000000) ended "out of memory" from its first allocation; with a
+    # sensor body cvode's Jacobian is full (n^2): 20000 beads asked for 77 GB
+    with pytest.raises(granwave.GranwaveValueError,
+                       match=r"n: a column of 50000000 beads needs about 47.2 GB .* at most 2274873 beads here"):
+        granwave.chain(n=50000000)
+    with pytest.raises(granwave.GranwaveValueError, match=r"n: a column of 20000 beads .*full Jacobian.* at most 3339"):
+        granwave.chain(n=20000, sensor_mass=3e-3, sensor_stiffness=2e9)
+    with pytest.raises(granwave.GranwaveValueError, match=r"n: a column of 100000 beads .*at most 3339"):
+        granwave.drop(n=100000, sensor_mass=3e-3, sensor_stiffness=2e9)
+
+
+def test_a_speed_given_twice_is_refused():
+    with pytest.raises(granwave.GranwaveValueError, match=r"vimp: item 2 gives the impact velocity 0.3 m/s of item 1"):
+        granwave.falcon(heights=[], n=(1, 3), vimp=[0.3, 0.3])
+    with pytest.raises(granwave.GranwaveValueError, match=r"vimp: item 3 gives the impact velocity 0.3 m/s of item 1"):
+        granwave.wavespeed(n=(6, 8), vimp=[0.3, 0.5, 0.3])
+
+
+def test_a_range_keyword_takes_two_integer_ends():
+    # n=(1.5, 3) was cut to 1:3 by int() (a silent change of the input) and
+    # n=(1, 2, 3) raised a bare "too many values to unpack"
+    with pytest.raises(granwave.GranwaveValueError, match=r"n: '1.5' is not an integer"):
+        granwave.falcon(n=(1.5, 3), heights=[])
+    with pytest.raises(TypeError, match=r"n: expected \(A, B\), an integer or a range"):
+        granwave.falcon(n=(1, 2, 3), heights=[])
+    with pytest.raises(TypeError, match=r"n: a range end must be a number, got True"):
+        granwave.falcon(n=(True, 3), heights=[])
+    assert granwave.falcon(n=[1, 3], heights=[]).nn == 3
+
+
+def test_falcon_runs_the_solver_given():
+    # solver="cvode" (the default's value) was taken as not given: RK4 by the
+    # accuracy target ran instead, as recorded (accuracy 1e-6, dt > 0)
+    f = granwave.falcon(n=(1, 3), heights=[], solver="cvode")
+    assert f.accuracy == 0 and (f.dt == 0).all()
+    one = granwave.chain(n=3, solver="cvode")
+    assert f.f_max[0][2] == pytest.approx(one.f_max, rel=1e-12)
+    g = granwave.falcon(n=(1, 3), heights=[])  # nothing given: the accuracy target, RK4
+    assert g.accuracy == 1e-6 and (g.dt > 0).all()

@@ -2,10 +2,9 @@
  * test_nvector.c: granwave's compiled vector kernels (common/solver/gw_nvector.c)
  * against SUNDIALS' own serial kernels, bit for bit.
  *
- * The kernels replace the serial N_Vector's ops; in-place sums and scalings are
- * queued and run later, block by block, fused with the next weighted norm, and
- * CVODE's Nordsieck predictor (z_{j-1} += z_j for k = 1..q, j = q..k) runs as one
- * pass with the q + 1 values in registers. None of this may change a single bit:
+ * The kernels replace the serial N_Vector's ops; sums, scalings, constants,
+ * scaled additions and error weights are queued and run later, block by block,
+ * fused with the next weighted norm. None of this may change a single bit:
  * each element must see the same operations in the same order. Checked here on
  * two sets of vectors, one with SUNDIALS' ops and one tuned, driven through the
  * same random sequences (seeded) of:
@@ -16,16 +15,26 @@
  * - weighted RMS and L2 norms, dot products, max norms taken while operations are
  *   pending (the fused path) and compared as doubles, bit for bit;
  * - reads and writes through N_VGetArrayPointer while operations are pending;
- * - fused linear combinations and constants;
+ * - fused linear combinations and constants; scaled additions Z_j = a_j x + Y_j
+ *   in place and not (CVODE's correction of its Nordsieck array); error weights
+ *   queued (gw_sun_nv_ewt) against the direct formula, with and without scales;
  * - a vector destroyed while a sum into it is pending (run under the sanitizer
  *   build too: a queue that outlived the vector would write freed memory).
- * Lengths 1, 511, 512, 513 and 5000 (blocks are 512 elements).
+ * Lengths 1, 511, 512, 513, 5000 and 9000 (blocks are 512 elements; scaled
+ * additions are queued from 8192).
+ * Then CVODE itself (Adams, fixed-point corrector, as granwave runs it) on 1000
+ * and 10000 uncoupled oscillators, once on SUNDIALS' vectors and once on the tuned ones:
+ * the same steps and the same final state, bit for bit (the error weights
+ * through CVodeWFtolerances, queued on the tuned vectors).
  */
+#include <math.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <string.h>
 
+#include <cvode/cvode.h>
 #include <nvector/nvector_serial.h>
+#include <sunnonlinsol/sunnonlinsol_fixedpoint.h>
 
 #include "gw_sundials.h"
 #include "gw_test.h"
@@ -65,7 +74,7 @@ static int same_bits(double x, double y) { return memcmp(&x, &y, sizeof x) == 0;
 /* one random step on both sets; returns 0 when a reduction differed */
 static int step(set *s, set *t, long n)
 {
-    int op = pick(10);
+    int op = pick(12);
     int ok = 1;
     if (op <= 2) { /* the predictor, sometimes spoiled */
         int q = 1 + pick(12), base = pick(NV - q);
@@ -115,11 +124,33 @@ static int step(set *s, set *t, long n)
                     xt[k] = t->v[m];
         N_VLinearCombination(3, c, xs, s->v[z]);
         N_VLinearCombination(3, c, xt, t->v[z]);
-    } else {
+    } else if (op == 9) {
         int z = pick(NV - 1);
         double c = coef();
         N_VConst(c, s->v[z]);
         N_VConst(c, t->v[z]);
+    } else if (op == 10) { /* Z_j = a_j x + Y_j, in place (CVODE) or into others */
+        int m = 1 + pick(6), base = pick(NV - 1 - m), x = pick(NV - 1), other = pick(2);
+        double a[6];
+        N_Vector ys[6], zs[6], yt[6], zt[6];
+        for (int j = 0; j < m; j++) {
+            a[j] = coef();
+            int y = base + j, z = other ? pick(NV - 1) : y;
+            ys[j] = s->v[y], zs[j] = s->v[z], yt[j] = t->v[y], zt[j] = t->v[z];
+        }
+        N_VScaleAddMulti(m, a, s->v[x], ys, zs);
+        N_VScaleAddMulti(m, a, t->v[x], yt, zt);
+    } else { /* error weights from x into w (w != x, the weights' vector kept positive) */
+        int x = pick(NV - 2), w = NV - 2, scaled = pick(2);
+        double rtol = 1e-6, atol = 1e-3;
+        const double *sc = scaled ? N_VGetArrayPointer(s->v[NV - 1]) : NULL;
+        const double *xs = N_VGetArrayPointer(s->v[x]);
+        double *ws = N_VGetArrayPointer(s->v[w]);
+        for (long i = 0; i < n; i++)
+            ws[i] = 1.0 / (rtol * fabs(xs[i]) + atol * (sc ? sc[i] : 1.0));
+        /* the tuned set: queued behind whatever is pending, scales read at the run */
+        ok &= gw_sun_nv_ewt(t->v[x], t->v[w], rtol, atol,
+                            scaled ? N_VGetArrayPointer(t->v[NV - 1]) : NULL) == 0;
     }
     return ok;
 }
@@ -170,14 +201,80 @@ static void run(long n, int steps, SUNContext ctx)
     }
 }
 
+/* x_i' = v_i, v_i' = -w_i^2 x_i, w_i from 1 to 3 */
+static int osc(realtype t, N_Vector y, N_Vector f, void *ud)
+{
+    (void)t;
+    (void)ud;
+    const double *yd = N_VGetArrayPointer(y);
+    double *fd = N_VGetArrayPointer(f);
+    const long m = N_VGetLength(y) / 2;
+    for (long i = 0; i < m; i++) {
+        double w = 1.0 + 2.0 * (double)i / (double)m;
+        fd[2 * i] = yd[2 * i + 1];
+        fd[2 * i + 1] = -w * w * yd[2 * i];
+    }
+    return 0;
+}
+
+/* error weights at rtol = atol = 1e-10: queued on tuned vectors, else direct */
+static int ewt(N_Vector y, N_Vector w, void *ud)
+{
+    (void)ud;
+    if (gw_sun_nv_ewt(y, w, 1e-10, 1e-10, NULL) == 0)
+        return 0;
+    const double *yd = N_VGetArrayPointer(y);
+    double *wd = N_VGetArrayPointer(w);
+    for (long i = 0; i < N_VGetLength(y); i++)
+        wd[i] = 1.0 / (1e-10 * fabs(yd[i]) + 1e-10 * 1.0);
+    return 0;
+}
+
+/* CVODE Adams to t = 10 on y; returns the steps taken (-1 on failure) */
+static long adams(N_Vector y, SUNContext ctx)
+{
+    void *mem = CVodeCreate(CV_ADAMS, ctx);
+    SUNNonlinearSolver nls = SUNNonlinSol_FixedPoint(y, 0, ctx);
+    long steps = -1;
+    realtype t = 0.0;
+    if (mem && nls && CVodeInit(mem, osc, 0.0, y) == CV_SUCCESS &&
+        CVodeWFtolerances(mem, ewt) == CV_SUCCESS &&
+        CVodeSetNonlinearSolver(mem, nls) == CV_SUCCESS && CVodeSetMaxNumSteps(mem, 100000) == CV_SUCCESS &&
+        CVode(mem, 10.0, y, &t, CV_NORMAL) == CV_SUCCESS)
+        CVodeGetNumSteps(mem, &steps);
+    CVodeFree(&mem);
+    SUNNonlinSolFree(nls);
+    return steps;
+}
+
+static void cvode_check(long n, SUNContext ctx)
+{
+    N_Vector a = N_VNew_Serial(n, ctx), b = gw_sun_vector(n, ctx);
+    N_VEnableFusedOps_Serial(a, SUNTRUE);
+    double *ad = N_VGetArrayPointer(a), *bd = N_VGetArrayPointer(b);
+    for (long i = 0; i < n; i++)
+        ad[i] = bd[i] = i % 2 ? 0.0 : 1.0;
+    long sa = adams(a, ctx);
+    long sb = adams(b, ctx);
+    char what[120];
+    snprintf(what, sizeof what, "cvode adams, n = %ld: the same steps on both vectors (more than 100)", n);
+    gw_test_true(sa > 100 && sa == sb, what);
+    snprintf(what, sizeof what, "cvode adams, n = %ld: the same final state, bit for bit", n);
+    gw_test_true(memcmp(N_VGetArrayPointer(a), N_VGetArrayPointer(b), (size_t)n * sizeof(double)) == 0, what);
+    N_VDestroy(a);
+    N_VDestroy(b);
+}
+
 int main(void)
 {
     SUNContext ctx;
     if (SUNContext_Create(NULL, &ctx) != 0)
         return 1;
-    const long lens[] = {1, 511, 512, 513, 5000};
+    const long lens[] = {1, 511, 512, 513, 5000, 9000};
     for (size_t i = 0; i < sizeof lens / sizeof lens[0]; i++)
-        run(lens[i], 4000, ctx);
+        run(lens[i], lens[i] > 5000 ? 1500 : 4000, ctx);
+    cvode_check(2000, ctx);
+    cvode_check(20000, ctx);
     SUNContext_Free(&ctx);
     return gw_test_summary("test_nvector");
 }

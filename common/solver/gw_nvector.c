@@ -16,17 +16,21 @@
  * element loops, no per-element calls through the stack). Units: none (pure
  * arithmetic on the state).
  *
- * Linear sums z = a x + b y, scalings z = c x and constants are not run at
- * once but queued; the queue runs at the next other operation on any vector,
- * or when granwave reads a vector's data (N_VGetArrayPointer), block by
- * block: each block of BLK elements goes through every queued operation
- * while it is in the L1 cache. A weighted norm runs the queue block by block and sums each block
- * as it leaves it (CVODE's fixed-point iteration: a sum, a scaling, a copy and
- * a difference, then the difference's norm: one pass instead of five). CVODE's
- * Nordsieck predictor (for k = 1..q, for j = q..k, z_{j-1} += z_j: q(q+1)/2
- * passes over the state) is recognised in the queue and run as one pass with
- * the q + 1 values in registers. Every element still sees the same operations
- * in the same order, so the results are bit-identical (tests/test_nvector.c).
+ * Linear sums z = a x + b y, scalings z = c x, constants, scaled additions
+ * Z_j = a_j x + Y_j and the error weights (gw_sun_nv_ewt) are not run at once
+ * but queued; the queue runs at the next other operation on any vector, or
+ * when granwave reads a vector's data (N_VGetArrayPointer), block by block:
+ * each block of BLK elements goes through every queued operation while it is
+ * in the L1 cache. A weighted norm runs the queue block by block and sums each
+ * block as it leaves it (CVODE's fixed-point iteration: a sum, a scaling, a
+ * copy and a difference, then the difference's norm: one pass instead of
+ * five). At the end of a CVODE step this makes one pass where there were
+ * three: the correction of the Nordsieck array (q + 1 scaled additions), the
+ * next error weights from z_0 and the norm CVODE takes of z_0 with them; the
+ * next predictor (q(q+1)/2 sums z_{j-1} += z_j) runs in one pass with the
+ * corrector's first sums. Every element still sees
+ * the same operations in the same order, so the results are bit-identical
+ * (tests/test_nvector.c).
  * The queue is per thread; every op in the table (and the serial ones that
  * touch data, wrapped below) runs it first, and a vector is destroyed only
  * after it.
@@ -44,8 +48,8 @@
 /* The queue of pending element-wise operations (see the head of the file):
  * z = a x + b y (linear sums, with the cases of gw_nv_linearsum below) and
  * z = a x (scalings, a copy when a = 1) and z = a (constants). */
-enum { QMAX = 96, BLK = 512 };
-typedef enum { OP_SUM, OP_SCALE, OP_CONST } gw_nv_kind;
+enum { QMAX = 128, BLK = 512 };
+typedef enum { OP_SUM, OP_SCALE, OP_CONST, OP_EWT } gw_nv_kind;
 typedef struct {
     gw_nv_kind kind;
     realtype a, b;
@@ -65,6 +69,15 @@ static void apply(const gw_nv_op *o, sunindextype i0, sunindextype i1)
     if (o->kind == OP_CONST) {
         for (sunindextype i = i0; i < i1; i++)
             zd[i] = a;
+        return;
+    }
+    if (o->kind == OP_EWT) { /* error weights, as gw_sun_ewt: y in x, scale in y */
+        if (yd)
+            for (sunindextype i = i0; i < i1; i++)
+                zd[i] = 1.0 / (a * fabs(xd[i]) + b * yd[i]);
+        else
+            for (sunindextype i = i0; i < i1; i++)
+                zd[i] = 1.0 / (a * fabs(xd[i]) + b * 1.0);
         return;
     }
     if (o->kind == OP_SCALE) {
@@ -100,93 +113,6 @@ static void apply(const gw_nv_op *o, sunindextype i0, sunindextype i1)
     }
 }
 
-/* Nordsieck triangle of order Q on z[0..Q] (same additions per element, in
- * the same order, as the queued sums; the Q + 1 values stay in registers) */
-#define TRIANGLE(Q)                                                                    \
-    static void triangle##Q(realtype *const *z, sunindextype n)                       \
-    {                                                                                  \
-        for (sunindextype i = 0; i < n; i++) {                                         \
-            realtype v[Q + 1];                                                         \
-            for (int j = 0; j <= Q; j++)                                               \
-                v[j] = z[j][i];                                                        \
-            for (int k = 1; k <= Q; k++)                                               \
-                for (int j = Q; j >= k; j--)                                           \
-                    v[j - 1] += v[j];                                                  \
-            for (int j = 0; j < Q; j++)                                                \
-                z[j][i] = v[j];                                                        \
-        }                                                                              \
-    }
-TRIANGLE(1)
-TRIANGLE(2)
-TRIANGLE(3)
-TRIANGLE(4)
-TRIANGLE(5)
-TRIANGLE(6)
-TRIANGLE(7)
-TRIANGLE(8)
-TRIANGLE(9)
-TRIANGLE(10)
-TRIANGLE(11)
-TRIANGLE(12)
-
-static int is_inplace_add(const gw_nv_op *o, const realtype *x, const realtype *y, sunindextype n)
-{
-    return o->kind == OP_SUM && o->a == 1.0 && o->b == 1.0 && o->z == o->x && o->x == x &&
-           o->y == y && o->n == n;
-}
-
-/* the queue is CVODE's predictor of order q <= 12 when it holds exactly the
- * q(q+1)/2 sums z_{j-1} += z_j for k = 1..q, j = q..k over q + 1 distinct
- * vectors of one length; returns q (0 when it is not) and the vectors in z */
-static int triangle_order(realtype **z)
-{
-    int q = 0;
-    while (q < 12 && (q + 1) * (q + 2) / 2 <= queued)
-        q++;
-    if (q == 0 || q * (q + 1) / 2 != queued)
-        return 0;
-    const sunindextype n = queue[0].n;
-    /* the first q sums walk the chain z_q -> z_0 */
-    z[q] = (realtype *)queue[0].y;
-    for (int j = q - 1, e = 0; j >= 0; j--, e++) {
-        if (!is_inplace_add(&queue[e], queue[e].x, z[j + 1], n))
-            return 0;
-        z[j] = queue[e].z;
-    }
-    for (int a = 0; a <= q; a++)
-        for (int b = 0; b < a; b++)
-            if (z[a] == z[b])
-                return 0;
-    int e = 0;
-    for (int k = 1; k <= q; k++)
-        for (int j = q; j >= k; j--, e++)
-            if (!is_inplace_add(&queue[e], z[j - 1], z[j], n))
-                return 0;
-    return q;
-}
-
-static int run_triangle(void)
-{
-    realtype *z[13];
-    const sunindextype n = queue[0].n;
-    switch (triangle_order(z)) {
-    case 1: triangle1(z, n); break;
-    case 2: triangle2(z, n); break;
-    case 3: triangle3(z, n); break;
-    case 4: triangle4(z, n); break;
-    case 5: triangle5(z, n); break;
-    case 6: triangle6(z, n); break;
-    case 7: triangle7(z, n); break;
-    case 8: triangle8(z, n); break;
-    case 9: triangle9(z, n); break;
-    case 10: triangle10(z, n); break;
-    case 11: triangle11(z, n); break;
-    case 12: triangle12(z, n); break;
-    default: return 0;
-    }
-    return 1;
-}
-
 /* the queued operations on elements [i0, i1), in order */
 static void apply_block(sunindextype i0, sunindextype i1)
 {
@@ -206,15 +132,14 @@ static sunindextype queue_length(void)
     return nmax;
 }
 
+/* the whole queue, block by block */
 static void run_queue(void)
 {
     if (queued == 0)
         return;
-    if (!run_triangle()) {
-        const sunindextype nmax = queue_length();
-        for (sunindextype i0 = 0; i0 < nmax; i0 += BLK)
-            apply_block(i0, i0 + BLK < nmax ? i0 + BLK : nmax);
-    }
+    const sunindextype nmax = queue_length();
+    for (sunindextype i0 = 0; i0 < nmax; i0 += BLK)
+        apply_block(i0, i0 + BLK < nmax ? i0 + BLK : nmax);
     queued = 0;
 }
 
@@ -337,11 +262,11 @@ static realtype wsqrsum(N_Vector x, N_Vector w)
     const sunindextype n = LEN(x);
     const realtype *xd = DATA(x), *wd = DATA(w);
     realtype s = 0.0;
-    if (queued == 0 || run_triangle()) {
-        queued = 0;
+    if (queued == 0)
         return wsqrsum_range(xd, wd, 0, n, s);
-    }
-    const sunindextype nmax = queue_length() > n ? queue_length() : n;
+    sunindextype nmax = queue_length();
+    if (nmax < n)
+        nmax = n;
     for (sunindextype i0 = 0; i0 < nmax; i0 += BLK) {
         sunindextype i1 = i0 + BLK < nmax ? i0 + BLK : nmax;
         apply_block(i0, i1);
@@ -497,17 +422,24 @@ static int gw_nv_linearcombination(int nvec, realtype *c, N_Vector *X, N_Vector 
     return 0;
 }
 
-/* Z_j = a_j x + Y_j. */
+/* Z_j = a_j x + Y_j. On long vectors (SAM_QUEUED elements and more) queued as
+ * nvec linear sums a_j x + 1 Y_j (the same value per element: 1 y is y, and a
+ * sum is the same either way round): CVODE corrects its Nordsieck array this
+ * way at the end of a step, and queued it runs in one pass with the next error
+ * weights and the norm that follows them. Shorter ones stay in cache and run
+ * at once, term by term (measured cheaper at 1e3 beads). */
+enum { SAM_QUEUED = 16 * BLK };
 static int gw_nv_scaleaddmulti(int nvec, realtype *a, N_Vector x, N_Vector *Y, N_Vector *Z)
 {
-    FLUSH();
     if (nvec < 1)
         return -1;
-    if (nvec == 1) {
-        gw_nv_linearsum(a[0], x, 1.0, Y[0], Z[0]);
+    const sunindextype n = LEN(x);
+    if (nvec == 1 || n >= SAM_QUEUED) {
+        for (int j = 0; j < nvec; j++)
+            gw_nv_linearsum(a[j], x, 1.0, Y[j], Z[j]);
         return 0;
     }
-    const sunindextype n = LEN(x);
+    FLUSH();
     const realtype *xd = DATA(x);
     for (int j = 0; j < nvec; j++) {
         const realtype *yd = DATA(Y[j]);
@@ -630,6 +562,14 @@ static void q_printfile(N_Vector v, FILE *f)
 {
     FLUSH();
     N_VPrintFile_Serial(v, f);
+}
+
+int gw_sun_nv_ewt(N_Vector y, N_Vector w, double rtol, double atol, const double *scale)
+{
+    if (y->ops->nvlinearsum != gw_nv_linearsum || w->ops->nvlinearsum != gw_nv_linearsum)
+        return -1;
+    enqueue((gw_nv_op){OP_EWT, rtol, atol, DATA(y), scale, DATA(w), LEN(y)});
+    return 0;
 }
 
 int gw_sun_tune_vector(N_Vector v)

@@ -62,6 +62,8 @@ int gw_sun_ewt(N_Vector y, N_Vector w, void *ud)
     const gw_solver *s = ud;
     const long n = s->sys.dim;
     const double rtol = s->p.rtol, atol = s->p.atol;
+    if (gw_sun_nv_ewt(y, w, rtol, atol, s->sys.scale) == 0)
+        return 0;
     const double *restrict yd = N_VGetArrayPointer(y), *restrict sc = s->sys.scale;
     double *restrict wd = N_VGetArrayPointer(w);
     if (sc)

@@ -32,6 +32,11 @@ N_Vector gw_sun_vector(long n, SUNContext ctx);
  * kernels in its ops table. 0 on success, -1 if v is not a serial vector. */
 int gw_sun_tune_vector(N_Vector v);
 
+/* Queue the error weights w_i = 1 / (rtol |y_i| + atol scale_i) (scale NULL:
+ * 1) with gw_nvector.c's pending operations, to run in their pass: 0, or -1
+ * (nothing queued) when y or w is not a tuned vector. */
+int gw_sun_nv_ewt(N_Vector y, N_Vector w, double rtol, double atol, const double *scale);
+
 /* Error weights w_i = 1 / (rtol |y_i| + atol scale_i) in one pass (the values
  * SUNDIALS' vector-tolerance path computes in four passes); ud is the gw_solver.
  * Only for solvers whose atol scale_i are all > 0 (gw_sun_abstol_positive): the

@@ -28,9 +28,8 @@
  * three: the correction of the Nordsieck array (q + 1 scaled additions), the
  * next error weights from z_0 and the norm CVODE takes of z_0 with them; the
  * next predictor (q(q+1)/2 sums z_{j-1} += z_j) runs in one pass with the
- * corrector's first sums. Every element still sees
- * the same operations in the same order, so the results are bit-identical
- * (tests/test_nvector.c).
+ * corrector's first sums. Every element still sees the same operations in
+ * the same order, so the results are bit-identical (tests/test_nvector.c).
  * The queue is per thread; every op in the table (and the serial ones that
  * touch data, wrapped below) runs it first, and a vector is destroyed only
  * after it.
@@ -46,8 +45,9 @@
 #define DATA(v) NV_DATA_S(v)
 
 /* The queue of pending element-wise operations (see the head of the file):
- * z = a x + b y (linear sums, with the cases of gw_nv_linearsum below) and
- * z = a x (scalings, a copy when a = 1) and z = a (constants). */
+ * z = a x + b y (linear sums, with the cases of apply below), z = a x
+ * (scalings, a copy when a = 1), z = a (constants) and the error weights
+ * z = 1 / (a |x| + b y) (y the scales, NULL for 1). */
 enum { QMAX = 128, BLK = 512 };
 typedef enum { OP_SUM, OP_SCALE, OP_CONST, OP_EWT } gw_nv_kind;
 typedef struct {
@@ -566,9 +566,13 @@ static void q_printfile(N_Vector v, FILE *f)
 
 int gw_sun_nv_ewt(N_Vector y, N_Vector w, double rtol, double atol, const double *scale)
 {
-    if (y->ops->nvlinearsum != gw_nv_linearsum || w->ops->nvlinearsum != gw_nv_linearsum)
-        return -1;
-    enqueue((gw_nv_op){OP_EWT, rtol, atol, DATA(y), scale, DATA(w), LEN(y)});
+    const gw_nv_op o = {OP_EWT, rtol, atol, DATA(y), scale, DATA(w), LEN(y)};
+    if (y->ops->nvlinearsum == gw_nv_linearsum && w->ops->nvlinearsum == gw_nv_linearsum) {
+        enqueue(o);
+    } else { /* not tuned vectors: at once, after whatever is pending */
+        FLUSH();
+        apply(&o, 0, o.n);
+    }
     return 0;
 }
 

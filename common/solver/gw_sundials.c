@@ -60,19 +60,7 @@ void gw_sun_errh(int code, const char *module, const char *function, char *msg, 
 int gw_sun_ewt(N_Vector y, N_Vector w, void *ud)
 {
     const gw_solver *s = ud;
-    const long n = s->sys.dim;
-    const double rtol = s->p.rtol, atol = s->p.atol;
-    if (gw_sun_nv_ewt(y, w, rtol, atol, s->sys.scale) == 0)
-        return 0;
-    const double *restrict yd = N_VGetArrayPointer(y), *restrict sc = s->sys.scale;
-    double *restrict wd = N_VGetArrayPointer(w);
-    if (sc)
-        for (long i = 0; i < n; i++)
-            wd[i] = 1.0 / (rtol * fabs(yd[i]) + atol * sc[i]);
-    else
-        for (long i = 0; i < n; i++)
-            wd[i] = 1.0 / (rtol * fabs(yd[i]) + atol * 1.0);
-    return 0;
+    return gw_sun_nv_ewt(y, w, s->p.rtol, s->p.atol, s->sys.scale);
 }
 
 int gw_sun_abstol_positive(N_Vector abstol)

@@ -32,9 +32,9 @@ N_Vector gw_sun_vector(long n, SUNContext ctx);
  * kernels in its ops table. 0 on success, -1 if v is not a serial vector. */
 int gw_sun_tune_vector(N_Vector v);
 
-/* Queue the error weights w_i = 1 / (rtol |y_i| + atol scale_i) (scale NULL:
- * 1) with gw_nvector.c's pending operations, to run in their pass: 0, or -1
- * (nothing queued) when y or w is not a tuned vector. */
+/* The error weights w_i = 1 / (rtol |y_i| + atol scale_i) (scale NULL: 1):
+ * queued with gw_nvector.c's pending operations, to run in their pass, when y
+ * and w are tuned vectors, else computed at once. Returns 0. */
 int gw_sun_nv_ewt(N_Vector y, N_Vector w, double rtol, double atol, const double *scale);
 
 /* Error weights w_i = 1 / (rtol |y_i| + atol scale_i) in one pass (the values

@@ -498,6 +498,14 @@ int gw_layer_impact_fall_check(const gw_layer_impact_params *ip, double g, gw_er
 int gw_layer_impact_gap_check(const gw_layer_sample *s, const gw_layer_impact_params *ip, double g,
                               gw_err *err);
 
+/* The sample s rests under the impact's contacts and gravity lp: its floor
+ * contacts' Hertz force at t = 0 is at most 1.5 times the pile's weight (a
+ * settled pile: at most 1). A pile settled with another material, density,
+ * gravity or mass law holds strain energy that the impact would release:
+ * GW_EINVAL "sample 'name': ..." naming the values (name may be NULL). */
+int gw_layer_impact_rest_check(const gw_layer_sample *s, const gw_layer_params *lp, const char *name,
+                               gw_err *err);
+
 /* The verlet step gw_layer_impact takes when sp->dt is 0: the Hertz contact
  * time of the two smallest discs meeting at V_i, tau = (4/5) B(2/5, 1/2)
  * (5 M / (4 K_n))^(2/5) V_i^(-1/5) with the reduced mass M = m/2, over GW_LAYER_DEM_STEPS,

@@ -509,9 +509,9 @@ int gw_layer_impact_rest_check(const gw_layer_sample *s, const gw_layer_params *
 /* The verlet step gw_layer_impact takes when sp->dt is 0: the Hertz contact
  * time of the two smallest discs meeting at V_i, tau = (4/5) B(2/5, 1/2)
  * (5 M / (4 K_n))^(2/5) V_i^(-1/5) with the reduced mass M = m/2, over GW_LAYER_DEM_STEPS,
- * rounded down to GW_LAYER_DEM_BASE / k (or a multiple of it), so that a dt_out
- * that is a multiple of GW_LAYER_DEM_BASE samples on step ends: the trajectory,
- * hence the outcome, does not depend on dt_out. s. */
+ * rounded down to GW_LAYER_DEM_BASE / k (k >= 1, never above the base), so that
+ * a dt_out that is a multiple of GW_LAYER_DEM_BASE samples on step ends: the
+ * trajectory, hence the outcome, does not depend on dt_out. s. */
 #define GW_LAYER_DEM_STEPS 100
 #define GW_LAYER_DEM_BASE 1e-5
 double gw_layer_impact_dem_dt(const gw_layer_sample *s, const gw_layer_params *lp,

@@ -212,12 +212,16 @@ double gw_layer_impact_dem_dt(const gw_layer_sample *s, const gw_layer_params *l
     const double ms = 0.5 * gw_layer_mass(lp, rmin), K = gw_layer_kn(lp, rmin);
     const double beta = tgamma(0.4) * tgamma(0.5) / tgamma(0.9); /* B(2/5, 1/2) */
     double tau = 0.8 * beta * pow(1.25 * ms / K, 0.4) * pow(ip->vi, -0.2);
-    /* a step on a fixed grid, whatever dt_out: sampling every multiple of
-     * GW_LAYER_DEM_BASE lands on step ends and leaves the trajectory unchanged */
+    /* a divisor of GW_LAYER_DEM_BASE, whatever dt_out: sampling every multiple
+     * of it lands on step ends and leaves the trajectory unchanged. A step
+     * above the base was rounded to a multiple of it, which the default dt_out
+     * (2e-5 s) need not be: a slow impact on a soft pile (vi 0.3 m/s, G 4e9 Pa)
+     * took 6e-5 s steps, cut in three at every sample, and its e_n was 0.92397
+     * at dt-out 2e-5 against 0.92362 at 6e-5 */
     double dt = tau / GW_LAYER_DEM_STEPS, b = GW_LAYER_DEM_BASE;
     if (!(dt > 0) || !isfinite(dt))
         return dt;
-    return dt >= b ? b * floor(dt / b) : b / ceil(b / dt);
+    return b / ceil(b / dt);
 }
 
 /* Overlap (m) of the block with the target particle. */

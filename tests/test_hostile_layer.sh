@@ -92,6 +92,12 @@
 #    naming the sample and the values: a stiffer material, a lighter density,
 #    another mass law or gravity, a sample made at 4 g hit at 1 g; without
 #    gravity a pile on its floor. (Softer contacts, below 1, are not caught.)
+# 21 the automatic verlet step was rounded to a multiple of 10 us when the
+#    contact time allowed it, which the samples then cut unless dt-out was a
+#    multiple of the step: the 300-disc sample scaled x10 took 40 us steps, and
+#    its first-contact e_n was 0.2006706 at dt-out 2e-5 (4747 steps), 0.2006681
+#    at 1e-4 (2850); a soft pile at 0.3 m/s gave e_n 0.92397 against 0.92362.
+#    The step now divides 10 us: the two agree to 3e-12.
 set -u
 GW=$1
 SRC=${2:-.}
@@ -455,6 +461,20 @@ runs "layer-impact --shear-modulus 4e9 (softer: the pile sinks, not caught)" lay
 printf '[sweep]\nmodel = layer\n[grid]\nshear-modulus = 4e10, 4e11\n[params]\nsample = %s\nt-max = 1e-3\n' "$S300" >"$tmp/g20.ini"
 refused "sweep --check: a case at 4e11" "g20.ini: case 1: sample '.*': at t = 0 its floor carries 9.88 times" \
     sweep "$tmp/g20.ini" --out "$tmp/o" --check
+
+# --- 21: the automatic verlet step divides 10 us -----------------------------
+scale 10 "$tmp/s_10.txt"
+e21() { /usr/bin/python3 -c "import json,sys; d=json.load(open(sys.argv[1])); print(d['e_n_first'], d['penetration'], d['settings']['solver']['dt'])" "$1"; }
+if runs "layer-impact on the sample scaled x10, dt-out 2e-5" layer-impact --sample "$tmp/s_10.txt" --until verdict --json; then
+    a21=$(e21 "$tmp/stdout")
+    if runs "  the same at dt-out 1e-4" layer-impact --sample "$tmp/s_10.txt" --until verdict --dt-out 1e-4 --json; then
+        b21=$(e21 "$tmp/stdout")
+        /usr/bin/python3 -c "import sys; a=list(map(float,sys.argv[1].split())); b=list(map(float,sys.argv[2].split()));
+sys.exit(not (a[2] == b[2] == 1e-5 and abs(a[0]-b[0]) < 1e-9*a[0] and abs(a[1]-b[1]) < 1e-9*a[1]))" "$a21" "$b21" &&
+            ok "  step 1e-5 s at both; e_n_first and penetration equal to 1e-9 ($a21 / $b21; with 4e-5 steps: 0.2006706 / 0.2006681)" ||
+            ko "  dt-out 2e-5: $a21, 1e-4: $b21"
+    fi
+fi
 
 echo "test_hostile_layer: $passes passed, $fails failed"
 [ $fails -eq 0 ]

@@ -98,6 +98,12 @@
 #    its first-contact e_n was 0.2006706 at dt-out 2e-5 (4747 steps), 0.2006681
 #    at 1e-4 (2850); a soft pile at 0.3 m/s gave e_n 0.92397 against 0.92362.
 #    The step now divides 10 us: the two agree to 3e-12.
+# 22 the INI reader takes an indented line after a key as more of that key's
+#    value and hands it over under the key's name: '  rings = 4' after
+#    't-max = 0.003' was refused as "duplicate key 't-max'", an indented
+#    '  [params]' after 'vi = 10, 20' as "duplicate key 'vi'" (the wrong key,
+#    the wrong cause); refused naming the indented line and the key it would
+#    continue. An indented key right after a section header stays valid.
 set -u
 GW=$1
 SRC=${2:-.}
@@ -475,6 +481,19 @@ sys.exit(not (a[2] == b[2] == 1e-5 and abs(a[0]-b[0]) < 1e-9*a[0] and abs(a[1]-b
             ko "  dt-out 2e-5: $a21, 1e-4: $b21"
     fi
 fi
+
+# --- 22: indented lines in a sweep config ------------------------------------
+printf '[sweep]\nmodel = layer\n[grid]\nvi = 10, 20\n[params]\nsample = %s\nt-max = 0.003\n  rings = 4\n' "$S" >"$tmp/i22.ini"
+refused "sweep: an indented '  rings = 4' (it said: duplicate key 't-max')" \
+    "^granwave sweep: .*i22.ini:8: an indented line: the config reader takes it as more of the value of 't-max' \(line 7\); remove the indentation$" \
+    sweep "$tmp/i22.ini" --out "$tmp/o" --check
+printf '[sweep]\nmodel = layer\n[grid]\nvi = 10, 20\r\n\r\n; note\r\n\t[params]\nsample = %s\nt-max = 0.003\n' "$S" >"$tmp/i22.ini"
+refused "sweep: an indented '[params]' after a blank line and a comment (it said: duplicate key 'vi')" \
+    "i22.ini:7: an indented line: the config reader takes it as more of the value of 'vi' \(line 4\)" \
+    sweep "$tmp/i22.ini" --out "$tmp/o" --check
+printf '\xef\xbb\xbf[sweep]\nmodel = layer\n[grid]\n  vi = 10, 20\n[params]\n\tsample = %s\n; indented comment follows\n   ; ok\nt-max = 0.003\n' "$S" >"$tmp/i22.ini"
+runs "sweep: indented keys right after a section header, a BOM, an indented comment" sweep "$tmp/i22.ini" --out "$tmp/i22" --check
+grep -q "2 cases" "$tmp/stdout" && ok "  2 cases" || ko "  $(cat "$tmp/stdout")"
 
 echo "test_hostile_layer: $passes passed, $fails failed"
 [ $fails -eq 0 ]

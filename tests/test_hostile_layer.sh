@@ -104,6 +104,15 @@
 #    '  [params]' after 'vi = 10, 20' as "duplicate key 'vi'" (the wrong key,
 #    the wrong cause); refused naming the indented line and the key it would
 #    continue. An indented key right after a section header stays valid.
+# 23 --json printed numbers through cJSON, which stops at 15 digits when they
+#    read back within one ulp: a value in the JSON could differ in its last
+#    bit from the same value in impact.h5 or a sweep table (alpha_r
+#    8.73474671993196 in the JSON, 8.734746719931962 in the HDF5; 3 of 17 root
+#    attributes of one impact; in this section's case penetration
+#    0.0327032661865081 against 0.032703266186508095 in the sweep table, and
+#    v_nr_first). Numbers are printed exactly now (the shortest
+#    of 15 to 17 digits that reads back as the same double): layer-impact
+#    --json equals a layer sweep's row and impact.h5 bit for bit.
 set -u
 GW=$1
 SRC=${2:-.}
@@ -494,6 +503,44 @@ refused "sweep: an indented '[params]' after a blank line and a comment (it said
 printf '\xef\xbb\xbf[sweep]\nmodel = layer\n[grid]\n  vi = 10, 20\n[params]\n\tsample = %s\n; indented comment follows\n   ; ok\nt-max = 0.003\n' "$S" >"$tmp/i22.ini"
 runs "sweep: indented keys right after a section header, a BOM, an indented comment" sweep "$tmp/i22.ini" --out "$tmp/i22" --check
 grep -q "2 cases" "$tmp/stdout" && ok "  2 cases" || ko "  $(cat "$tmp/stdout")"
+
+# --- 23: --json equals the sweep table and impact.h5 bit for bit -------------
+printf '[sweep]\nmodel = layer\n[grid]\nvi = 20\n[params]\nsample = %s\nalpha = 30\nuntil = verdict\n' "$S300" >"$tmp/e23.ini"
+if runs "layer sweep of one case (alpha 30, until verdict)" sweep "$tmp/e23.ini" --out "$tmp/e23" --quiet &&
+   runs "layer-impact of the same case --json --out" layer-impact --sample "$S300" --vi 20 --alpha 30 --until verdict --json --out "$tmp/e23o"; then
+    /usr/bin/python3 - "$tmp/stdout" "$tmp/e23/results.csv" "$tmp/e23o/impact.h5" >"$tmp/e23.txt" 2>&1 <<'PY'
+import csv, json, math, sys
+d = json.load(open(sys.argv[1]))
+rows = [l for l in open(sys.argv[2]) if not l.startswith('#')]
+r = next(csv.DictReader(rows))
+n = bad = 0
+for k, v in r.items():
+    if k in ('case', 'vi') or k not in d:
+        continue
+    a, b = float(v), d[k]
+    n += 1
+    if not ((b is None and math.isnan(a)) or (b is not None and float(b) == a)):
+        bad += 1
+        print('table', k, v, b)
+try:
+    import h5py
+    with h5py.File(sys.argv[3], 'r') as f:
+        for k, v in f.attrs.items():
+            if k == 'run' or k not in d:
+                continue
+            n += 1
+            b = d[k]
+            if not ((b is None and math.isnan(v)) or (b is not None and float(b) == float(v))):
+                bad += 1
+                print('h5', k, repr(v), b)
+except ImportError:
+    pass
+print(n, 'values', bad, 'differ')
+sys.exit(bad != 0 or n < 15)
+PY
+    [ $? -eq 0 ] && ok "  $(tail -1 "$tmp/e23.txt") between --json, the table (and impact.h5 when h5py is there)" ||
+        ko "  $(tr '\n' ' ' <"$tmp/e23.txt")"
+fi
 
 echo "test_hostile_layer: $passes passed, $fails failed"
 [ $fails -eq 0 ]

@@ -34,7 +34,7 @@ char *gw_cli_provenance_add(char *hdr, const char *key, const cJSON *value)
 {
     if (!hdr || !value)
         return hdr;
-    char *js = cJSON_PrintUnformatted(value);
+    char *js = gw_json_string(value, 0);
     char *out = NULL;
     if (js) {
         size_t len = strlen(hdr) + strlen(key) + strlen(js) + 4;

@@ -1,7 +1,15 @@
 /*
  * gw_json.c: JSON output through cJSON (arrays of numbers, printing, atomic files).
+ * Numbers are printed exactly: the shortest of %.15g, %.16g, %.17g that reads
+ * back as the same double (cJSON's own printer stops at 15 digits when they
+ * read back within one ulp, so a JSON value could differ in its last bit from
+ * the same value in an HDF5 or CSV file: alpha_r 8.73474671993196 against
+ * 8.734746719931962). Integers, and NaN and infinities as null, as cJSON.
  */
+#include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "gw_common.h"
 
@@ -24,9 +32,45 @@ cJSON *gw_json_ints(const int *v, int n)
     return cJSON_CreateIntArray(v, n);
 }
 
+/* Every finite non-integer number of o (in place) as a raw node holding its
+ * exact text; 0 on out of memory. */
+static int exact_numbers(cJSON *o)
+{
+    for (cJSON *c = o; c; c = c->next) {
+        if (c->child && !exact_numbers(c->child))
+            return 0;
+        if (!cJSON_IsNumber(c))
+            continue;
+        const double v = c->valuedouble;
+        if (!isfinite(v) || (fabs(v) < 2147483647.0 && v == (double)c->valueint))
+            continue; /* cJSON's null and integers */
+        char buf[40];
+        for (int digits = 15; digits <= 17; digits++) {
+            snprintf(buf, sizeof buf, "%.*g", digits, v);
+            if (strtod(buf, NULL) == v)
+                break;
+        }
+        char *t = malloc(strlen(buf) + 1);
+        if (!t)
+            return 0;
+        memcpy(t, buf, strlen(buf) + 1);
+        c->type = cJSON_Raw;
+        c->valuestring = t;
+    }
+    return 1;
+}
+
+char *gw_json_string(const cJSON *o, int formatted)
+{
+    cJSON *d = cJSON_Duplicate(o, 1); /* a copy is converted */
+    char *s = d && exact_numbers(d) ? (formatted ? cJSON_Print(d) : cJSON_PrintUnformatted(d)) : NULL;
+    cJSON_Delete(d);
+    return s;
+}
+
 int gw_json_print(const cJSON *o, FILE *fp)
 {
-    char *s = cJSON_Print(o);
+    char *s = gw_json_string(o, 1);
     if (!s)
         return GW_ENOMEM;
     int bad = fputs(s, fp) < 0 || fputc('\n', fp) == EOF || fflush(fp) != 0;
@@ -36,7 +80,7 @@ int gw_json_print(const cJSON *o, FILE *fp)
 
 int gw_json_write(const char *path, const cJSON *o, gw_err *err)
 {
-    char *s = cJSON_Print(o);
+    char *s = gw_json_string(o, 1);
     if (!s)
         return gw_err_set(err, GW_ENOMEM, "%s: out of memory", path);
     gw_afile f;

@@ -417,8 +417,9 @@ typedef struct gw_layer_impact_result {
     double v_nr_first, v_r_first, e_n_first, e_first, alpha_r_first_deg, t_rebound_first;
                             /* the same at the first free-flight maximum: the largest
                                v_y up to t_leave (NaN unless bounced) */
-    double penetration;     /* largest downward displacement of the block centre up to
-                               the end of the outcome, m */
+    double penetration;     /* largest downward displacement of the block centre below
+                               its height at the touch (the start lowered by the gap)
+                               up to the end of the outcome, m */
     char undecided[320];    /* why the run ended with an undecided outcome ("" if
                                none, or when --until verdict stopped it on purpose) */
     double energy_error;    /* max |sum - A| / A over the run */
@@ -485,17 +486,32 @@ int gw_layer_impact_check(const gw_layer_sample *s, const gw_layer_impact_params
 
 /* The block falls the gap under gravity g (m/s^2) before it touches: its
  * normal speed at contact is sqrt(V_ni^2 + 2 g gap). The outcome (e_n, e,
- * alpha_r, E_incident, the Froude number, the penetration from the start)
+ * alpha_r, E_incident, the Froude number, the penetration)
  * takes V_i as given, so the fall may change the normal speed by at most
  * 0.1 %: GW_EINVAL "gap: ..." naming the largest gap that passes. */
 int gw_layer_impact_fall_check(const gw_layer_impact_params *ip, double g, gw_err *err);
 
+/* The gap's checks: gw_layer_impact_fall_check, then the sideways drift. The
+ * block is lowered vertically onto its target at x but flies along the
+ * incidence, so it meets the layer gap tan(alpha) off x: at most 1e-3 R_m of
+ * the sample s, else GW_EINVAL "gap: ..." naming the largest gap that passes. */
+int gw_layer_impact_gap_check(const gw_layer_sample *s, const gw_layer_impact_params *ip, double g,
+                              gw_err *err);
+
+/* The sample s rests under the impact's contacts and gravity lp: its floor
+ * contacts' Hertz force at t = 0 is at most 1.5 times the pile's weight (a
+ * settled pile: at most 1). A pile settled with another material, density,
+ * gravity or mass law holds strain energy that the impact would release:
+ * GW_EINVAL "sample 'name': ..." naming the values (name may be NULL). */
+int gw_layer_impact_rest_check(const gw_layer_sample *s, const gw_layer_params *lp, const char *name,
+                               gw_err *err);
+
 /* The verlet step gw_layer_impact takes when sp->dt is 0: the Hertz contact
  * time of the two smallest discs meeting at V_i, tau = (4/5) B(2/5, 1/2)
  * (5 M / (4 K_n))^(2/5) V_i^(-1/5) with the reduced mass M = m/2, over GW_LAYER_DEM_STEPS,
- * rounded down to GW_LAYER_DEM_BASE / k (or a multiple of it), so that a dt_out
- * that is a multiple of GW_LAYER_DEM_BASE samples on step ends: the trajectory,
- * hence the outcome, does not depend on dt_out. s. */
+ * rounded down to GW_LAYER_DEM_BASE / k (k >= 1, never above the base), so that
+ * a dt_out that is a multiple of GW_LAYER_DEM_BASE samples on step ends: the
+ * trajectory, hence the outcome, does not depend on dt_out. s. */
 #define GW_LAYER_DEM_STEPS 100
 #define GW_LAYER_DEM_BASE 1e-5
 double gw_layer_impact_dem_dt(const gw_layer_sample *s, const gw_layer_params *lp,

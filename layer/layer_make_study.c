@@ -97,7 +97,7 @@ void gw_layer_make_outcome_free(gw_layer_make_outcome *out)
 static char *header(const gw_layer_make_setup *s, const gw_layer_make_outcome *o)
 {
     cJSON *j = gw_param_json(make_params, s);
-    char *js = j ? cJSON_PrintUnformatted(j) : NULL;
+    char *js = j ? gw_json_string(j, 0) : NULL;
     cJSON_Delete(j);
     size_t len = 512 + (js ? strlen(js) : 0);
     char *h = malloc(len);

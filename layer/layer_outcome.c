@@ -23,7 +23,8 @@
  *     same quantities at the largest v_y up to the bounce event, before any
  *     later kick from ejected grains (e_n_first, e_first, alpha_r_first).
  *   - Penetration: the largest downward displacement of the block's centre
- *     from the start to the end of the outcome (T_f, the no-bounce decision,
+ *     below y0, its height at the touch (the caller passes the start lowered
+ *     by the gap), up to the end of the outcome (T_f, the no-bounce decision,
  *     or the end of the run when undecided).
  * Units: SI, angles in degrees.
  */

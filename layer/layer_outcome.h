@@ -32,7 +32,7 @@ void layer_outcome_event(void *ctx, const gw_layer_block_event *ev);
 int layer_outcome_done(const layer_outcome *o);
 
 /* Fill the outcome fields of res (bounced, e_n, ..., the _first values,
- * t_f, penetration from the block's start height y0, the undecided note)
+ * t_f, penetration below y0, the block's height at the touch, the undecided note)
  * from the events seen and the layer's extremes now (the end of the run). */
 void layer_outcome_finish(const layer_outcome *o, double y0, double vi, double t_end,
                           int stopped_by_t_max, gw_layer_impact_result *res);

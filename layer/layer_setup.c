@@ -326,7 +326,9 @@ static int resolve(const gw_layer_impact_setup *s, const gw_layer_sample *smp, g
     if (ip->full && ip->until == GW_LAYER_UNTIL_VERDICT)
         return gw_err_set(err, GW_EINVAL, "until: verdict has no effect with full (which runs to t-max)");
     rc = gw_layer_impact_check(smp, ip, err);
-    return rc == GW_OK ? gw_layer_impact_fall_check(ip, s->gravity, err) : rc;
+    if (rc == GW_OK)
+        rc = gw_layer_impact_gap_check(smp, ip, s->gravity, err);
+    return rc == GW_OK ? gw_layer_impact_rest_check(smp, lp, s->sample, err) : rc;
 }
 
 int gw_layer_impact_plan_make(const gw_layer_impact_setup *s, gw_layer_impact_plan *p, gw_err *err)

@@ -250,6 +250,54 @@ static int config_finish(const char *path, const gw_sweep_model *const *models, 
                          gw_sweep_config *cfg, const gw_sweep_model **model, int rc,
                          const parse_ctx *pc, gw_err *err);
 
+/* libinih reads an indented line after a key as more of that key's value
+ * (Python's multi-line style) and passes it to the handler under the key's
+ * name again, so '  rings = 4' after 't-max = 0.003' was refused as
+ * "duplicate key 't-max'" on the indented line, and an indented '  [params]'
+ * after 'vi = 10, 20' as "duplicate key 'vi'": the wrong key and the wrong
+ * cause. Such lines are refused here, naming the key they would continue.
+ * The rule is the reader's: an indented line that is neither blank nor a
+ * comment continues the last key since the last section header. */
+static int continued_lines(const char *text, const char *name, gw_err *err)
+{
+    char key[64] = "";
+    long key_ln = 0, ln = 1;
+    for (const char *p = text; *p; ln++) {
+        const char *e = strchr(p, '\n');
+        const size_t len = e ? (size_t)(e - p) : strlen(p);
+        size_t i = 0;
+        if (ln == 1 && len >= 3 && memcmp(p, "\xef\xbb\xbf", 3) == 0)
+            i = 3; /* the BOM the reader skips */
+        const size_t lead = i;
+        while (i < len && (p[i] == ' ' || p[i] == '\t' || p[i] == '\r' || p[i] == '\f' || p[i] == '\v'))
+            i++;
+        const int blank = i == len, comment = !blank && (p[i] == ';' || p[i] == '#');
+        if (!blank && !comment) {
+            if (i > lead && key[0])
+                return gw_err_set(err, GW_EINVAL, "%s:%ld: an indented line: the config reader takes it as more "
+                                  "of the value of '%s' (line %ld); remove the indentation", name, ln, key, key_ln);
+            if (p[i] == '[') {
+                key[0] = '\0';
+            } else {
+                size_t k = i;
+                while (k < len && p[k] != '=' && p[k] != ':')
+                    k++;
+                size_t kl = k;
+                while (kl > i && (p[kl - 1] == ' ' || p[kl - 1] == '\t'))
+                    kl--;
+                if (k < len) {
+                    snprintf(key, sizeof key, "%.*s", (int)(kl - i), p + i);
+                    key_ln = ln;
+                }
+            }
+        }
+        if (!e)
+            break;
+        p = e + 1;
+    }
+    return GW_OK;
+}
+
 /* libinih reads a line into INI_MAX_LINE bytes (200 in Debian's build) and
  * parses what does not fit as the next line: 'point = 0, 1, ..., 99' was cut
  * after '49, 5' (refused as the value 5 listed twice; granwave.sweep writes
@@ -271,7 +319,7 @@ static int lines_fit(const char *text, const char *name, gw_err *err)
             break;
         p = e + 1;
     }
-    return GW_OK;
+    return continued_lines(text, name, err);
 }
 
 int gw_sweep_config_read(const char *path, const gw_sweep_model *const *models, int nmodels,

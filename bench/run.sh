@@ -8,7 +8,7 @@
 # Not run here: bench_falcon_accuracy (the convergence study behind the falcon
 # main job's RK4 step), bench/falcon_vs_lsoda.sh (falcon main job CPU against
 # 3 SciPy LSODA collisions). Peers (SciPy, LAMMPS) and time to solution:
-# bench/run_peers.sh.
+# bench/run_peers.sh. The RHS against v0.1's library, alternating: bench/rhs_vs_v01.sh.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 B=${1:-build}

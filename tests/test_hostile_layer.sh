@@ -113,6 +113,13 @@
 #    v_nr_first). Numbers are printed exactly now (the shortest
 #    of 15 to 17 digits that reads back as the same double): layer-impact
 #    --json equals a layer sweep's row and impact.h5 bit for bit.
+# 24 layer-stats read a sweep table with rows deleted by hand, cut short or
+#    pasted from another sweep without remark: the walls table without case
+#    17 gave groups of four points where the sweep ran five. A table whose
+#    first line is the sweep's ("60 of 60 cases") must hold every case, each
+#    once; a sweep now also lists its grid ('# grid KEY = v1, v2, ...'), and a
+#    row's grid values must be its case's (an edited cell moved a point into
+#    another group). Refused naming the table and the first missing case.
 set -u
 GW=$1
 SRC=${2:-.}
@@ -540,6 +547,39 @@ sys.exit(bad != 0 or n < 15)
 PY
     [ $? -eq 0 ] && ok "  $(tail -1 "$tmp/e23.txt") between --json, the table (and impact.h5 when h5py is there)" ||
         ko "  $(tr '\n' ' ' <"$tmp/e23.txt")"
+fi
+
+# --- 24: layer-stats on incomplete or edited sweep tables -----------------------
+R24=$SRC/data/measured/layer_walls/results.csv
+grep -v '^17,' "$R24" >"$tmp/del24.csv"
+refused "layer-stats: the walls table with case 17 deleted (read as groups of 4 and 5 points)" \
+    "^granwave layer-stats: .*del24.csv: case 17 is missing \(1 of the sweep's 60 cases are\)" \
+    layer-stats "$tmp/del24.csv" --out "$tmp/o"
+sed '1s/60 of 60/59 of 60/' "$tmp/del24.csv" >"$tmp/del24b.csv"
+refused "layer-stats: the same with its first line edited to 59 of 60" "del24b.csv: case 17 is missing" \
+    layer-stats "$tmp/del24b.csv" --json
+head -40 "$R24" >"$tmp/cut24.csv"
+refused "layer-stats: the table cut after 35 rows" "cut24.csv: case 35 is missing \(25 of the sweep's 60 cases are\)" \
+    layer-stats "$tmp/cut24.csv" --json
+awk -F, 'BEGIN{OFS=","} /^59,/{$1=65} {print}' "$R24" >"$tmp/far24.csv"
+refused "layer-stats: a case number beyond the sweep's 60" "far24.csv: case 65 is beyond the 60 cases" \
+    layer-stats "$tmp/far24.csv" --json
+sed '1s/60 of 60 cases/60 of 6x0 cases/' "$R24" >"$tmp/h24.csv"
+refused "layer-stats: a first line with its counts garbled" "h24.csv:1: the sweep's first line does not end 'N of C cases'" \
+    layer-stats "$tmp/h24.csv" --json
+printf '[sweep]\nmodel = layer\n[grid]\nvi = 10, 20\npoint = 0:2\n[params]\nsample = %s\npoints = 3\nspacing = 0.05\nt-max = 1e-3\n' "$S300" >"$tmp/g24.ini"
+if runs "layer sweep of 6 short cases" sweep "$tmp/g24.ini" --out "$tmp/g24" --quiet; then
+    grep -qx '# grid vi = 10, 20' "$tmp/g24/results.csv" && grep -qx '# grid point = 0, 1, 2' "$tmp/g24/results.csv" &&
+        ok "  the table lists its grid" || ko "  no '# grid' lines: $(head -8 "$tmp/g24/results.csv")"
+    runs "  layer-stats reads it" layer-stats "$tmp/g24/results.csv" --json
+    awk -F, 'BEGIN{OFS=","} /^4,/{$2="15"} {print}' "$tmp/g24/results.csv" >"$tmp/e24.csv"
+    refused "layer-stats: a grid cell edited (case 4's vi 20 -> 15, a group of one point)" \
+        "e24.csv: case 4 has vi = 15, but the sweep's grid gives case 4 vi = 20" layer-stats "$tmp/e24.csv" --json
+    grep -v '^4,' "$tmp/g24/results.csv" >"$tmp/d24.csv"
+    refused "layer-stats: a row deleted names the missing case's grid values" \
+        "d24.csv: case 4 \(vi = 20, point = 1\) is missing" layer-stats "$tmp/d24.csv" --json
+    sed 's/^# grid vi = 10, 20$/# grid vi = 10, 20, 30/' "$tmp/g24/results.csv" >"$tmp/l24.csv"
+    refused "layer-stats: a grid line edited" "l24.csv: the '# grid' lines .* do not describe" layer-stats "$tmp/l24.csv" --json
 fi
 
 echo "test_hostile_layer: $passes passed, $fails failed"

@@ -602,6 +602,13 @@ int gw_sweep_write_table(const char *dir, const gw_sweep_config *cfg, const gw_s
                     cfg->model, cfg->hash, nr, cfg->ncases);
             for (int i = 0; i < cfg->nparams; i++)
                 fprintf(f.fp, "# param %s = %s\n", cfg->params[i].name, cfg->params[i].values[0]);
+            /* the grid itself: a reader can tell a missing or edited row */
+            for (int i = 0; i < cfg->ngrid; i++) {
+                fprintf(f.fp, "# grid %s = ", cfg->grid[i].name);
+                for (int j = 0; j < cfg->grid[i].nvalues; j++)
+                    fprintf(f.fp, "%s%s", j ? ", " : "", cfg->grid[i].values[j]);
+                fputc('\n', f.fp);
+            }
             fprintf(f.fp, "case");
             for (int i = 0; i < cfg->ngrid; i++)
                 fprintf(f.fp, ",%s", cfg->grid[i].name);

@@ -156,6 +156,15 @@ int gw_cmd_layer_make(int argc, char **argv)
         cJSON *j = cJSON_CreateObject();
         cJSON_AddStringToObject(j, "version", gw_version());
         cJSON_AddStringToObject(j, "sample", out);
+        unsigned long long fh = 0; /* the content written: what layer-impact records */
+        char hx[17] = "";
+        gw_err he = {{0}};
+        if (gw_fnv1a64_file(out, "sample", &fh, &he) == GW_OK)
+            snprintf(hx, sizeof hx, "%016llx", fh);
+        if (hx[0])
+            cJSON_AddStringToObject(j, "sample_fnv1a64", hx);
+        else
+            cJSON_AddNullToObject(j, "sample_fnv1a64");
         cJSON_AddNumberToObject(j, "n", s.n);
         cJSON_AddNumberToObject(j, "n_removed_above_height", r.n_removed);
         if (mp.clumps) { /* type B: n counts discs, n_bodies the clumps */
@@ -312,6 +321,9 @@ static cJSON *impact_json(const impact_cli *c, const gw_layer_impact_result *r,
     cJSON_AddNumberToObject(o, "zeno_guards", (double)r->stats.zeno_guards);
     cJSON *s = cJSON_AddObjectToObject(o, "settings");
     cJSON_AddStringToObject(s, "sample", c->sample);
+    char hx[17];
+    snprintf(hx, sizeof hx, "%016llx", c->sample_hash);
+    cJSON_AddStringToObject(s, "sample_fnv1a64", hx); /* the content the run read */
     cJSON_AddNumberToObject(s, "rb_rm", c->ip.rb_rm);
     cJSON_AddNumberToObject(s, "vi", c->ip.vi);
     cJSON_AddNumberToObject(s, "alpha_deg", c->ip.alpha_deg);
@@ -530,6 +542,7 @@ int gw_cmd_layer_impact(int argc, char **argv)
     c.type = plan.type;
     c.sp = plan.sp;
     c.rm = plan.sample.rm;
+    c.sample_hash = plan.sample.content_hash;
     c.solver = gw_solver_type_name(plan.type);
     const gw_solver_type *type = c.type;
     gw_solver_params sp = c.sp;

@@ -133,6 +133,9 @@
 #    journaled only after the sweep's input files are checked unchanged; a
 #    change stops the sweep (exit 2, naming the file), the rows before are
 #    kept and the sweep resumes once the file is restored.
+# 27 a layer-impact --out DIR that held snapshot_failure.vtk from an earlier
+#    failed run kept it beside the new run's results, read as the state
+#    where this run failed; a run that succeeds removes it.
 set -u
 GW=$1
 SRC=${2:-.}
@@ -652,6 +655,13 @@ fi
 head -n -1 "$tmp/s26.txt" >"$tmp/s26b.txt" && mv "$tmp/s26b.txt" "$tmp/s26.txt"
 if runs "  the sample restored, the sweep resumes" sweep "$tmp/w26.ini" --out "$tmp/w26" --quiet; then
     [ "$(grep -vc '^#' "$tmp/w26/results.csv")" -eq 13 ] && ok "  to its 12 cases" || ko "  $(grep -vc '^#' "$tmp/w26/results.csv") lines"
+fi
+
+# --- 27: a stale snapshot_failure.vtk in --out -----------------------------------
+mkdir -p "$tmp/o27" && echo "an earlier run's failure state" >"$tmp/o27/snapshot_failure.vtk"
+if runs "layer-impact --out into a directory with an earlier snapshot_failure.vtk" layer-impact --sample "$S300" --t-max 1e-4 --out "$tmp/o27"; then
+    [ ! -e "$tmp/o27/snapshot_failure.vtk" ] && [ -s "$tmp/o27/snapshot_end.vtk" ] &&
+        ok "  the earlier failure's snapshot is removed (it stayed beside the new results)" || ko "  $(ls "$tmp/o27" | tr '\n' ' ')"
 fi
 
 echo "test_hostile_layer: $passes passed, $fails failed"

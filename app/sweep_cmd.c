@@ -68,7 +68,11 @@ static int run_case(const sweep_run *s, long k, char *row, gw_err *err)
  * writer). */
 static int journal(sweep_run *s, const char *row, gw_err *err)
 {
-    int rc = gw_sweep_journal_append(s->fd, row, err);
+    /* the files the case read (a layer sample) still hold what the sweep
+     * started with: a sample edited mid-sweep gave rows of both, silently */
+    int rc = gw_sweep_inputs_check(s->cfg, err);
+    if (rc == GW_OK)
+        rc = gw_sweep_journal_append(s->fd, row, err);
     if (rc == GW_OK)
         s->done++;
     return rc;

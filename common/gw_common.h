@@ -165,6 +165,18 @@ int gw_input_check(const char *path, const char *what, gw_err *err);
 int gw_input_read(const char *path, const char *what, size_t max, char **out, size_t *len,
                   gw_err *err);
 
+/* ---- content hashes: what a result ran on ----
+ * FNV-1a, 64 bits (offset basis 14695981039346656037, prime 1099511628211),
+ * of a file's bytes, printed as 16 lowercase hex digits: a result records the
+ * content of its input files besides their names (a file changed later no
+ * longer matches). gw_fnv1a64_stream hashes fp from its current position to
+ * the end (GW_EIO on a read error); gw_fnv1a64_file opens path as an input
+ * (gw_input_open: a regular file only). */
+#define GW_FNV1A64_INIT 14695981039346656037ULL
+unsigned long long gw_fnv1a64(unsigned long long h, const void *p, size_t n);
+int gw_fnv1a64_stream(FILE *fp, unsigned long long *h);
+int gw_fnv1a64_file(const char *path, const char *what, unsigned long long *h, gw_err *err);
+
 /* ---- output locations, checked before any work ----
  * gw_out_check: dir is an existing writable directory, or does not exist and its
  * nearest existing ancestor is a writable directory (it creates nothing; the

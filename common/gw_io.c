@@ -366,3 +366,37 @@ int gw_out_file_check(const char *path, const char *what, gw_err *err)
         return gw_err_set(err, GW_EINVAL, "%s: directory '%s' of '%s': %s", what, dir, path, strerror(errno));
     return gw_out_check(dir, what, err);
 }
+
+unsigned long long gw_fnv1a64(unsigned long long h, const void *p, size_t n)
+{
+    const unsigned char *b = p;
+    for (size_t i = 0; i < n; i++) {
+        h ^= b[i];
+        h *= 1099511628211ULL;
+    }
+    return h;
+}
+
+int gw_fnv1a64_stream(FILE *fp, unsigned long long *h)
+{
+    unsigned char buf[65536];
+    size_t got;
+    unsigned long long v = GW_FNV1A64_INIT;
+    while ((got = fread(buf, 1, sizeof buf, fp)) > 0)
+        v = gw_fnv1a64(v, buf, got);
+    if (ferror(fp))
+        return GW_EIO;
+    *h = v;
+    return GW_OK;
+}
+
+int gw_fnv1a64_file(const char *path, const char *what, unsigned long long *h, gw_err *err)
+{
+    FILE *fp = NULL;
+    int rc = gw_input_open(path, what, &fp, err);
+    if (rc != GW_OK)
+        return rc;
+    rc = gw_fnv1a64_stream(fp, h);
+    fclose(fp);
+    return rc == GW_OK ? GW_OK : gw_err_set(err, GW_EIO, "%s: %s: read failed", what, path);
+}

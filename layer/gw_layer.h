@@ -256,6 +256,9 @@ typedef struct gw_layer_sample {
     double *x, *y, *r;   /* [n], m; owned by the sample */
     int *body;           /* [n] rigid-body id of each particle in [0, n), or NULL
                             (every particle a disc); owned by the sample */
+    unsigned long long content_hash; /* FNV-1a 64 of the file's bytes (gw_fnv1a64),
+                            set by gw_layer_sample_read; 0 for a sample not read
+                            from a file */
 } gw_layer_sample;
 
 void gw_layer_sample_free(gw_layer_sample *s);

@@ -95,6 +95,8 @@ typedef struct gw_layer_impact_outcome {
     double *snap;          /* [snap_rows][6] per particle x, y (m), theta (rad), vx, vy (m/s),
                               omega (rad/s), as gw_layer_particle */
     double *particle_r;    /* [nparticles] radius, m */
+    char *sample_fnv1a64;  /* the sample's content hash (gw_layer_sample.content_hash)
+                              as 16 hex digits, owned */
 } gw_layer_impact_outcome;
 
 /* The table of gw_layer_impact_outcome's results. */

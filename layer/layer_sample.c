@@ -856,8 +856,13 @@ int gw_layer_sample_read(const char *path, gw_layer_sample *s, gw_err *err)
 #endif
     } else {
         rc = read_text(&t, s, err);
+        /* the content hash from the same open file: what was read */
+        if (rc == GW_OK && (fseek(t.fp, 0, SEEK_SET) != 0 || gw_fnv1a64_stream(t.fp, &s->content_hash) != GW_OK))
+            rc = gw_err_set(err, GW_EIO, "sample '%s': cannot read it again for its content hash", path);
         fclose(t.fp);
     }
+    if (rc == GW_OK && !s->content_hash) /* an HDF5 sample: read by the library, hashed here */
+        rc = gw_fnv1a64_file(path, "sample", &s->content_hash, err);
     if (rc == GW_OK) {
         char what[4200];
         snprintf(what, sizeof what, "sample '%s'", path);

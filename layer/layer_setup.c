@@ -171,6 +171,8 @@ static const gw_param outcome_fields[] = {
     RA("spec_strain", r.spec_strain, "J^2/Hz", "spec_len", "nrings", NULL,
        "one-sided PSD of each ring's strain-energy increase"),
     RA("spec_kinetic", r.spec_kin, "J^2/Hz", "spec_len", "nrings", NULL, "one-sided PSD of each ring's kinetic energy"),
+    {.name = "sample_fnv1a64", .type = GW_PARAM_TEXT, .offset = OFF(sample_fnv1a64), .unit = "",
+     .help = "FNV-1a 64 hash of the sample file's bytes, 16 hex digits: the content the run read"},
     /* snapshots (off unless the setup's snapshots asks) */
     RI("nsnap", nsnap, "snapshots taken"),
     RI("nparticles", nparticles, "particles per snapshot (the discs, then the block)"),
@@ -192,8 +194,10 @@ void gw_layer_impact_outcome_free(gw_layer_impact_outcome *out)
     gw_layer_impact_result_free(&out->r);
     out->nregions = 0;
     free(out->undecided);
+    free(out->sample_fnv1a64);
     free(out->snap_t); /* snap and particle_r with it */
     out->undecided = NULL;
+    out->sample_fnv1a64 = NULL;
     out->snap_t = out->snap = out->particle_r = NULL;
     out->nxcorr = out->nsnap = out->nparticles = out->snap_rows = 0;
     out->block_index = -1;
@@ -426,6 +430,10 @@ int gw_layer_impact_run_progress(const gw_layer_impact_setup *s, gw_progress_fn 
         out->exact = s->exact;
         out->dt = out->r.dt;
         out->nxcorr = out->r.xcorr_delay && out->r.nrings > 1 ? out->r.nrings - 1 : 0;
+        if ((out->sample_fnv1a64 = malloc(17)))
+            snprintf(out->sample_fnv1a64, 17, "%016llx", smp.content_hash);
+        else if (rc == GW_OK)
+            rc = gw_err_set(err, GW_ENOMEM, "layer-impact: out of memory");
         const size_t nu = strlen(out->r.undecided);
         if (nu > 0 && (out->undecided = malloc(nu + 1)))
             memcpy(out->undecided, out->r.undecided, nu + 1);

@@ -113,6 +113,29 @@
 #    v_nr_first). Numbers are printed exactly now (the shortest
 #    of 15 to 17 digits that reads back as the same double): layer-impact
 #    --json equals a layer sweep's row and impact.h5 bit for bit.
+# 24 layer-stats read a sweep table with rows deleted by hand, cut short or
+#    pasted from another sweep without remark: the walls table without case
+#    17 gave groups of four points where the sweep ran five. A table whose
+#    first line is the sweep's ("60 of 60 cases") must hold every case, each
+#    once; a sweep now also lists its grid ('# grid KEY = v1, v2, ...'), and a
+#    row's grid values must be its case's (an edited cell moved a point into
+#    another group). Refused naming the table and the first missing case.
+# 25 layer outputs recorded the sample's path, not its content: a result
+#    could not be traced to the packing once the file changed. layer-impact
+#    records the sample's FNV-1a 64 content hash (settings.sample_fnv1a64 in
+#    --json, impact.json, the CSV headers and impact.h5's run attribute;
+#    layer-make --json the hash of the file it wrote), a sweep its '# input'
+#    lines in the journal and the table. A resumed sweep over a changed
+#    sample was refused as "another sweep (different config)"; it names the
+#    sample and both hashes now.
+# 26 a sweep reads its sample for every case: a sample edited while the
+#    sweep ran gave rows of both files in one table, silently. Each row is
+#    journaled only after the sweep's input files are checked unchanged; a
+#    change stops the sweep (exit 2, naming the file), the rows before are
+#    kept and the sweep resumes once the file is restored.
+# 27 a layer-impact --out DIR that held snapshot_failure.vtk from an earlier
+#    failed run kept it beside the new run's results, read as the state
+#    where this run failed; a run that succeeds removes it.
 set -u
 GW=$1
 SRC=${2:-.}
@@ -540,6 +563,105 @@ sys.exit(bad != 0 or n < 15)
 PY
     [ $? -eq 0 ] && ok "  $(tail -1 "$tmp/e23.txt") between --json, the table (and impact.h5 when h5py is there)" ||
         ko "  $(tr '\n' ' ' <"$tmp/e23.txt")"
+fi
+
+# --- 24: layer-stats on incomplete or edited sweep tables -----------------------
+R24=$SRC/data/measured/layer_walls/results.csv
+grep -v '^17,' "$R24" >"$tmp/del24.csv"
+refused "layer-stats: the walls table with case 17 deleted (read as groups of 4 and 5 points)" \
+    "^granwave layer-stats: .*del24.csv: case 17 is missing \(1 of the sweep's 60 cases are\)" \
+    layer-stats "$tmp/del24.csv" --out "$tmp/o"
+sed '1s/60 of 60/59 of 60/' "$tmp/del24.csv" >"$tmp/del24b.csv"
+refused "layer-stats: the same with its first line edited to 59 of 60" "del24b.csv: case 17 is missing" \
+    layer-stats "$tmp/del24b.csv" --json
+head -40 "$R24" >"$tmp/cut24.csv"
+refused "layer-stats: the table cut after 35 rows" "cut24.csv: case 35 is missing \(25 of the sweep's 60 cases are\)" \
+    layer-stats "$tmp/cut24.csv" --json
+awk -F, 'BEGIN{OFS=","} /^59,/{$1=65} {print}' "$R24" >"$tmp/far24.csv"
+refused "layer-stats: a case number beyond the sweep's 60" "far24.csv: case 65 is beyond the 60 cases" \
+    layer-stats "$tmp/far24.csv" --json
+sed '1s/60 of 60 cases/60 of 6x0 cases/' "$R24" >"$tmp/h24.csv"
+refused "layer-stats: a first line with its counts garbled" "h24.csv:1: the sweep's first line does not end 'N of C cases'" \
+    layer-stats "$tmp/h24.csv" --json
+printf '[sweep]\nmodel = layer\n[grid]\nvi = 10, 20\npoint = 0:2\n[params]\nsample = %s\npoints = 3\nspacing = 0.05\nt-max = 1e-3\n' "$S300" >"$tmp/g24.ini"
+if runs "layer sweep of 6 short cases" sweep "$tmp/g24.ini" --out "$tmp/g24" --quiet; then
+    grep -qx '# grid vi = 10, 20' "$tmp/g24/results.csv" && grep -qx '# grid point = 0, 1, 2' "$tmp/g24/results.csv" &&
+        ok "  the table lists its grid" || ko "  no '# grid' lines: $(head -8 "$tmp/g24/results.csv")"
+    runs "  layer-stats reads it" layer-stats "$tmp/g24/results.csv" --json
+    awk -F, 'BEGIN{OFS=","} /^4,/{$2="15"} {print}' "$tmp/g24/results.csv" >"$tmp/e24.csv"
+    refused "layer-stats: a grid cell edited (case 4's vi 20 -> 15, a group of one point)" \
+        "e24.csv: case 4 has vi = 15, but the sweep's grid gives case 4 vi = 20" layer-stats "$tmp/e24.csv" --json
+    grep -v '^4,' "$tmp/g24/results.csv" >"$tmp/d24.csv"
+    refused "layer-stats: a row deleted names the missing case's grid values" \
+        "d24.csv: case 4 \(vi = 20, point = 1\) is missing" layer-stats "$tmp/d24.csv" --json
+    sed 's/^# grid vi = 10, 20$/# grid vi = 10, 20, 30/' "$tmp/g24/results.csv" >"$tmp/l24.csv"
+    refused "layer-stats: a grid line edited" "l24.csv: the '# grid' lines .* do not describe" layer-stats "$tmp/l24.csv" --json
+fi
+
+# --- 25: the sample's content hash in the outputs; a resumed sweep over a changed sample
+fnv() { /usr/bin/python3 -c "import sys
+h = 14695981039346656037
+for b in open(sys.argv[1], 'rb').read():
+    h = ((h ^ b) * 1099511628211) % 2**64
+print('%016x' % h)" "$1"; }
+cp "$S300" "$tmp/s25.txt"
+h25=$(fnv "$tmp/s25.txt")
+if runs "layer-impact --json --out records the sample's hash" layer-impact --sample "$tmp/s25.txt" --t-max 1e-3 --json --out "$tmp/o25"; then
+    grep -q "\"sample_fnv1a64\":[[:space:]]*\"$h25\"" "$tmp/stdout" && ok "  --json: settings.sample_fnv1a64 = $h25 (FNV-1a 64 of the file)" ||
+        ko "  --json has no sample_fnv1a64 $h25"
+    n25=$(grep -l "\"sample_fnv1a64\":\"$h25\"" "$tmp/o25/ledger.csv" "$tmp/o25/crowns.csv" "$tmp/o25/crowns_peaks.csv" 2>/dev/null | wc -l)
+    [ "$n25" -eq 3 ] && ok "  the CSV headers carry it" || ko "  $n25 of 3 CSV headers carry it"
+    if [ -e "$tmp/o25/impact.h5" ] && /usr/bin/python3 -c "import h5py" 2>/dev/null; then
+        /usr/bin/python3 -c "import h5py,sys; sys.exit(sys.argv[2] not in str(h5py.File(sys.argv[1],'r').attrs['run']))" \
+            "$tmp/o25/impact.h5" "$h25" && ok "  impact.h5's run attribute carries it" || ko "  impact.h5 lacks it"
+    fi
+fi
+if runs "layer-make --json records the hash of the sample it wrote" layer-make --n 20 --width-rm 10 --t-max 0.01 --out "$tmp/m25.txt" --json; then
+    grep -q "\"sample_fnv1a64\":[[:space:]]*\"$(fnv "$tmp/m25.txt")\"" "$tmp/stdout" && ok "  equal to the file's" || ko "  $(grep fnv "$tmp/stdout")"
+fi
+printf '[sweep]\nmodel = layer\n[grid]\nvi = 10, 20\n[params]\nsample = %s\nt-max = 1e-3\n' "$tmp/s25.txt" >"$tmp/w25.ini"
+if runs "a layer sweep of 2 cases" sweep "$tmp/w25.ini" --out "$tmp/w25" --quiet; then
+    grep -qx "# input sample = $tmp/s25.txt fnv1a64 $h25" "$tmp/w25/results.csv" &&
+        grep -qx "# input sample = $tmp/s25.txt fnv1a64 $h25" "$tmp/w25/journal.csv" &&
+        ok "  the table and the journal record the sample's hash" || ko "  $(grep -h input "$tmp/w25/results.csv" "$tmp/w25/journal.csv")"
+    runs "  layer-stats reads the table" layer-stats "$tmp/w25/results.csv" --json
+    echo "# a comment added" >>"$tmp/s25.txt"
+    rm -f "$tmp/w25/results.csv"
+    refused "sweep resumed over the sample with a line added (it said 'another sweep (different config)')" \
+        "^granwave sweep: .*w25: sample '.*s25.txt' changed since the sweep in it started \(content fnv1a64 $h25 in its journal, now [0-9a-f]{16}\)" \
+        sweep "$tmp/w25.ini" --out "$tmp/w25" --quiet
+    [ -e "$tmp/w25/results.csv" ] && ko "  the refused resume wrote a table"
+fi
+
+# --- 26: a sample edited while the sweep runs --------------------------------------
+cp "$S300" "$tmp/s26.txt"
+printf '[sweep]\nmodel = layer\n[grid]\npoint = 0:11\n[params]\nsample = %s\npoints = 12\nspacing = 0.01\nt-max = 0.02\n' "$tmp/s26.txt" >"$tmp/w26.ini"
+timeout -s KILL 300 "$GW" sweep "$tmp/w26.ini" --out "$tmp/w26" --quiet --jobs 1 >"$tmp/stdout" 2>"$tmp/stderr" </dev/null &
+pid26=$!
+for _ in $(seq 1 600); do
+    n26=$(grep -vc '^#' "$tmp/w26/journal.csv" 2>/dev/null)
+    [ "${n26:-0}" -ge 1 ] && break
+    sleep 0.1
+done
+echo "# edited while the sweep runs" >>"$tmp/s26.txt"
+wait $pid26; rc=$?
+n26=$(grep -vc '^#' "$tmp/w26/journal.csv" 2>/dev/null)
+if [ $rc -eq 2 ] && [ "$(wc -l <"$tmp/stderr")" -eq 1 ] && [ ! -e "$tmp/w26/results.csv" ] && [ "${n26:-0}" -ge 1 ] && [ "${n26:-0}" -lt 12 ] &&
+   grep -q "^granwave sweep: sample '.*s26.txt' changed while the sweep ran .*its row is not kept" "$tmp/stderr"; then
+    ok "a sample edited mid-sweep: exit 2 naming it after $n26 of 12 rows, no table (rows of both files were mixed)"
+else
+    ko "a sample edited mid-sweep: exit $rc, $n26 rows, $(cat "$tmp/stderr")"
+fi
+head -n -1 "$tmp/s26.txt" >"$tmp/s26b.txt" && mv "$tmp/s26b.txt" "$tmp/s26.txt"
+if runs "  the sample restored, the sweep resumes" sweep "$tmp/w26.ini" --out "$tmp/w26" --quiet; then
+    [ "$(grep -vc '^#' "$tmp/w26/results.csv")" -eq 13 ] && ok "  to its 12 cases" || ko "  $(grep -vc '^#' "$tmp/w26/results.csv") lines"
+fi
+
+# --- 27: a stale snapshot_failure.vtk in --out -----------------------------------
+mkdir -p "$tmp/o27" && echo "an earlier run's failure state" >"$tmp/o27/snapshot_failure.vtk"
+if runs "layer-impact --out into a directory with an earlier snapshot_failure.vtk" layer-impact --sample "$S300" --t-max 1e-4 --out "$tmp/o27"; then
+    [ ! -e "$tmp/o27/snapshot_failure.vtk" ] && [ -s "$tmp/o27/snapshot_end.vtk" ] &&
+        ok "  the earlier failure's snapshot is removed (it stayed beside the new results)" || ko "  $(ls "$tmp/o27" | tr '\n' ' ')"
 fi
 
 echo "test_hostile_layer: $passes passed, $fails failed"

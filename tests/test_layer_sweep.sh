@@ -129,11 +129,12 @@ else
 fi
 
 # the sample's contents belong to the config: a journal made with another
-# sample is refused, not mixed (the config text alone is unchanged)
+# sample is refused, not mixed (the config text alone is unchanged), naming
+# the sample and its hash in the journal's '# input' line
 cp "$tmp/S.txt" "$tmp/S.orig"
 echo "# edited" >>"$tmp/S.txt"
 "$GW" sweep "$tmp/s.ini" --out "$tmp/ref" --quiet --jobs 2 >"$tmp/o" 2>"$tmp/e"; rc=$?
-[ $rc -eq 2 ] && grep -q "another sweep" "$tmp/e" && ok "rerun after the sample changed is refused: $(cat "$tmp/e")" ||
+[ $rc -eq 2 ] && grep -q "sample '.*S.txt' changed since the sweep in it started" "$tmp/e" && ok "rerun after the sample changed is refused: $(cat "$tmp/e")" ||
     ko "rerun after the sample changed: exit $rc: $(cat "$tmp/e")"
 cp "$tmp/S.orig" "$tmp/S.txt"
 "$GW" sweep "$tmp/s.ini" --out "$tmp/ref" --quiet --jobs 2 >"$tmp/o" 2>"$tmp/e"; rc=$?

@@ -49,6 +49,7 @@ typedef struct layer_impact_cli {
     const char *sample, *solver, *method, *out, *until;
     double dt, rtol, atol;
     double rm; /* the sample's R_m, m (from the library's plan) */
+    unsigned long long sample_hash; /* its content hash (gw_layer_sample.content_hash) */
     long rings;
     int json, exact;
     /* resolved by the library (gw_layer_impact_plan_make) */

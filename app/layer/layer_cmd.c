@@ -9,6 +9,7 @@
  * Exit codes: 0 ok, 1 run failure, 2 bad input (one line naming the input).
  * Units: SI; angles in degrees on the command line.
  */
+#include <errno.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -156,6 +157,15 @@ int gw_cmd_layer_make(int argc, char **argv)
         cJSON *j = cJSON_CreateObject();
         cJSON_AddStringToObject(j, "version", gw_version());
         cJSON_AddStringToObject(j, "sample", out);
+        unsigned long long fh = 0; /* the content written: what layer-impact records */
+        char hx[17] = "";
+        gw_err he = {{0}};
+        if (gw_fnv1a64_file(out, "sample", &fh, &he) == GW_OK)
+            snprintf(hx, sizeof hx, "%016llx", fh);
+        if (hx[0])
+            cJSON_AddStringToObject(j, "sample_fnv1a64", hx);
+        else
+            cJSON_AddNullToObject(j, "sample_fnv1a64");
         cJSON_AddNumberToObject(j, "n", s.n);
         cJSON_AddNumberToObject(j, "n_removed_above_height", r.n_removed);
         if (mp.clumps) { /* type B: n counts discs, n_bodies the clumps */
@@ -312,6 +322,9 @@ static cJSON *impact_json(const impact_cli *c, const gw_layer_impact_result *r,
     cJSON_AddNumberToObject(o, "zeno_guards", (double)r->stats.zeno_guards);
     cJSON *s = cJSON_AddObjectToObject(o, "settings");
     cJSON_AddStringToObject(s, "sample", c->sample);
+    char hx[17];
+    snprintf(hx, sizeof hx, "%016llx", c->sample_hash);
+    cJSON_AddStringToObject(s, "sample_fnv1a64", hx); /* the content the run read */
     cJSON_AddNumberToObject(s, "rb_rm", c->ip.rb_rm);
     cJSON_AddNumberToObject(s, "vi", c->ip.vi);
     cJSON_AddNumberToObject(s, "alpha_deg", c->ip.alpha_deg);
@@ -530,6 +543,7 @@ int gw_cmd_layer_impact(int argc, char **argv)
     c.type = plan.type;
     c.sp = plan.sp;
     c.rm = plan.sample.rm;
+    c.sample_hash = plan.sample.content_hash;
     c.solver = gw_solver_type_name(plan.type);
     const gw_solver_type *type = c.type;
     gw_solver_params sp = c.sp;
@@ -574,6 +588,14 @@ int gw_cmd_layer_impact(int argc, char **argv)
             gw_path_join(path, sizeof path, c.out, "impact.json") != GW_OK ||
             gw_json_write(path, j, &err) != GW_OK) {
             fprintf(stderr, "granwave layer-impact --out: %s\n", err.msg);
+            code = 1;
+        }
+        /* a snapshot_failure.vtk left by an earlier failed run in DIR is not
+         * this run's: beside its results it read as the state where it failed */
+        if (code == 0 && gw_path_join(path, sizeof path, c.out, "snapshot_failure.vtk") == GW_OK &&
+            unlink(path) != 0 && errno != ENOENT) {
+            fprintf(stderr, "granwave layer-impact --out: %s: an earlier run's file, cannot remove it: %s\n", path,
+                    strerror(errno));
             code = 1;
         }
         free(hdr);

@@ -49,6 +49,13 @@ typedef struct gw_stats_table {
     int nparams;                                  /* "# param" lines */
     char *param_name[GW_STATS_MAX_KEYS];
     char *param_value[GW_STATS_MAX_KEYS];
+    /* From the sweep's first line "# granwave V sweep, model M, config H, N of
+     * C cases": N and C (-1 when the table has no such line, a table made by
+     * hand), and its "# grid NAME = v1, v2, ..." lines (tables written since
+     * the ninth hostile pass): the grid, in the config's order (NULL when the
+     * table lists none). */
+    long sweep_rows, sweep_cases;
+    char *grid_list[GW_STATS_MAX_KEYS];           /* [ngrid] "v1, v2, ..." */
 } gw_stats_table;
 
 /* Columns layer-stats needs; a table without one of them is refused. */
@@ -62,8 +69,12 @@ extern const int gw_stats_table_nrequired;
  * or NaN, no data rows, a case number that appears twice, a row with bounced 1
  * and a non-finite e_n, e or alpha_r (tables with the column e_n_first: a row
  * with bounced 1 and a non-finite e_n_first, e_first or alpha_r_first; its e_n,
- * e, alpha_r may be NaN, a rebound cut before T_f). A FIFO, device or directory is refused
- * (GW_EFORMAT) without reading it. */
+ * e, alpha_r may be NaN, a rebound cut before T_f). A table whose first line
+ * is the sweep's ("N of C cases") must hold every case 0 .. C-1, and N = C
+ * (a sweep writes its table when every case has run): a row deleted, a case
+ * number beyond C or a header edited is refused naming the first missing case;
+ * with the "# grid" lines each row's grid values must be those of its case
+ * number. A FIFO, device or directory is refused (GW_EFORMAT) without reading it. */
 int gw_stats_table_read(const char *path, gw_stats_table *t, gw_err *err);
 int gw_stats_table_parse(const char *text, const char *name, gw_stats_table *t,
                            gw_err *err);

@@ -47,7 +47,10 @@ void gw_stats_table_free(gw_stats_table *t)
         free(t->param_name[i]);
         free(t->param_value[i]);
     }
+    for (int i = 0; i < GW_STATS_MAX_KEYS; i++)
+        free(t->grid_list[i]);
     memset(t, 0, sizeof *t);
+    t->sweep_rows = t->sweep_cases = -1;
 }
 
 
@@ -239,6 +242,184 @@ static int parse_row(gw_stats_table *t, char *line, long ln, int ncells, int cb,
     return GW_OK;
 }
 
+/* The sweep's first line: "granwave V sweep, model M, config H, N of C cases"
+ * (after the '#'). Only the counts are kept; a first line that ends " cases"
+ * but does not say them is refused (an edited header). */
+static int sweep_line(gw_stats_table *t, const char *line, long ln, gw_err *err)
+{
+    const char *p = strstr(line, " sweep, model ");
+    size_t l = strlen(line);
+    if (!p || l < 6 || strcmp(line + l - 6, " cases") != 0)
+        return GW_OK; /* another file's first line, or a sweep's before it said its counts */
+    const char *c = strrchr(line, ',');
+    long n = -1, total = -1;
+    int used = 0;
+    if (!c || sscanf(c + 1, " %ld of %ld cases%n", &n, &total, &used) != 2 || c[1 + used] != '\0' || n < 0 ||
+        total < 1 || n > total)
+        return gw_err_set(err, GW_EFORMAT, "%s:%ld: the sweep's first line does not end 'N of C cases' with "
+                          "0 <= N <= C (an edited header)", t->path, ln);
+    t->sweep_rows = n;
+    t->sweep_cases = total;
+    return GW_OK;
+}
+
+/* "# grid NAME = v1, v2, ...": the sweep's grid, in the config's order. */
+static int add_grid_list(gw_stats_table *t, char *text, long ln, gw_err *err)
+{
+    char *eq = strchr(text, '=');
+    int i = 0;
+    while (i < GW_STATS_MAX_KEYS && t->grid_list[i])
+        i++;
+    if (!eq || i >= GW_STATS_MAX_KEYS)
+        return gw_err_set(err, GW_EFORMAT, "%s:%ld: a '# grid' line that is not 'NAME = v1, v2, ...' (an edited "
+                          "header)", t->path, ln);
+    *eq = '\0';
+    char *name = gw_str_trim(text), *values = gw_str_trim(eq + 1);
+    size_t a = strlen(name), b = strlen(values);
+    if (!a || !b)
+        return gw_err_set(err, GW_EFORMAT, "%s:%ld: a '# grid' line without %s (an edited header)", t->path, ln,
+                          a ? "values" : "a name");
+    /* kept as "NAME\0v1, v2, ..." */
+    char *s = malloc(a + b + 2);
+    if (!s)
+        return gw_err_set(err, GW_ENOMEM, "%s: out of memory", t->path);
+    memcpy(s, name, a + 1);
+    memcpy(s + a + 1, values, b + 1);
+    t->grid_list[i] = s;
+    return GW_OK;
+}
+
+/* Value j (0-based) of a "# grid" list: into out (size n); 0 when absent. */
+static int list_value(const char *list, long j, char *out, size_t n)
+{
+    const char *p = list + strlen(list) + 1;
+    for (long k = 0; k < j; k++) {
+        p = strchr(p, ',');
+        if (!p)
+            return 0;
+        p++;
+    }
+    while (*p == ' ' || *p == '\t')
+        p++;
+    size_t l = strcspn(p, ",");
+    while (l > 0 && (p[l - 1] == ' ' || p[l - 1] == '\t'))
+        l--;
+    if (l == 0 || l >= n)
+        return 0;
+    memcpy(out, p, l);
+    out[l] = '\0';
+    return 1;
+}
+
+static long list_count(const char *list)
+{
+    long n = 1;
+    for (const char *p = list + strlen(list) + 1; (p = strchr(p, ',')); p++)
+        n++;
+    return n;
+}
+
+/* The grid values of case k from the "# grid" lines ("a = 1, b = 2"), the
+ * last key fastest as a sweep numbers its cases. */
+static void case_values(const gw_stats_table *t, long k, char *buf, size_t n)
+{
+    long idx[GW_STATS_MAX_KEYS];
+    for (int i = t->ngrid - 1; i >= 0; i--) {
+        long c = list_count(t->grid_list[i]);
+        idx[i] = k % c;
+        k /= c;
+    }
+    size_t w = 0;
+    buf[0] = '\0';
+    for (int i = 0; i < t->ngrid && w < n; i++) {
+        char v[256];
+        if (!list_value(t->grid_list[i], idx[i], v, sizeof v))
+            snprintf(v, sizeof v, "?");
+        w += (size_t)snprintf(buf + w, n - w, "%s%s = %s", i ? ", " : "", t->grid_list[i], v);
+    }
+}
+
+/* A table written by a sweep holds every case of its grid: its first line
+ * says "N of C cases" and a sweep writes it when all C have run. A row
+ * deleted by hand, the table cut short or rows pasted in changed the groups'
+ * statistics silently (a group of five points read as four). With the grid
+ * lines, each row must also carry its case's grid values (an edited cell
+ * moved a point into another group). Tables without the sweep's first line
+ * (made by hand) are read as they are. */
+static int check_complete(const gw_stats_table *t, gw_err *err)
+{
+    int nl = 0;
+    while (nl < GW_STATS_MAX_KEYS && t->grid_list[nl])
+        nl++;
+    if (nl > 0) {
+        if (t->sweep_cases < 0)
+            return gw_err_set(err, GW_EFORMAT, "%s: '# grid' lines without the sweep's first line (an edited "
+                              "header)", t->path);
+        long prod = 1;
+        int same = nl == t->ngrid;
+        for (int i = 0; same && i < nl; i++) {
+            same = strcmp(t->grid_list[i], t->grid_name[i]) == 0;
+            prod *= list_count(t->grid_list[i]);
+            if (prod > 1000000000L)
+                same = 0;
+        }
+        if (!same || prod != t->sweep_cases)
+            return gw_err_set(err, GW_EFORMAT, "%s: the '# grid' lines (%d keys) do not describe the table's %d grid "
+                              "columns and %ld cases (an edited header)", t->path, nl, t->ngrid, t->sweep_cases);
+    }
+    if (t->sweep_cases < 0)
+        return GW_OK;
+    const long c = t->sweep_cases;
+    char *seen = calloc((size_t)c, 1);
+    if (!seen)
+        return gw_err_set(err, GW_ENOMEM, "%s: out of memory", t->path);
+    int rc = GW_OK;
+    for (long r = 0; r < t->nrows && rc == GW_OK; r++) {
+        long k = t->case_id[r];
+        if (k >= c) {
+            rc = gw_err_set(err, GW_EFORMAT, "%s: case %ld is beyond the %ld cases of the sweep its first line "
+                            "names (a row from another sweep)", t->path, k, c);
+            break;
+        }
+        seen[k] = 1;
+        for (int i = 0; nl > 0 && i < t->ngrid; i++) {
+            long cnt = 1;
+            for (int j = i + 1; j < t->ngrid; j++)
+                cnt *= list_count(t->grid_list[j]);
+            char v[256];
+            const char *got = t->grid_value[r * t->ngrid + i];
+            if (!list_value(t->grid_list[i], (k / cnt) % list_count(t->grid_list[i]), v, sizeof v) ||
+                strcmp(v, got) != 0) {
+                rc = gw_err_set(err, GW_EFORMAT, "%s: case %ld has %s = %s, but the sweep's grid gives case %ld "
+                                "%s = %s (a row edited by hand)", t->path, k, t->grid_name[i], got, k,
+                                t->grid_name[i], v);
+                break;
+            }
+        }
+    }
+    if (rc == GW_OK && (t->nrows != c || t->sweep_rows != c)) {
+        long miss = 0, first = -1;
+        for (long k = 0; k < c; k++)
+            if (!seen[k] && miss++ == 0)
+                first = k;
+        char vals[1024] = "";
+        if (first >= 0 && nl > 0) {
+            char tmp[1000];
+            case_values(t, first, tmp, sizeof tmp);
+            snprintf(vals, sizeof vals, " (%s)", tmp);
+        }
+        if (first >= 0)
+            rc = gw_err_set(err, GW_EFORMAT, "%s: case %ld%s is missing (%ld of the sweep's %ld cases are): the "
+                            "table was cut or edited by hand (a sweep writes its table when every case has run), and "
+                            "statistics over part of the grid are not the sweep's", t->path, first, vals, miss, c);
+        else
+            rc = gw_err_set(err, GW_EFORMAT, "%s: the first line says %ld of %ld cases, but the table holds all "
+                            "%ld (an edited header)", t->path, t->sweep_rows, c, c);
+    }
+    free(seen);
+    return rc;
+}
+
 static int cmp_case(const void *a, const void *b)
 {
     long x = *(const long *)a, y = *(const long *)b;
@@ -352,6 +533,7 @@ static int check_rows(const gw_stats_table *t, gw_err *err)
 int gw_stats_table_parse(const char *text, const char *name, gw_stats_table *t, gw_err *err)
 {
     memset(t, 0, sizeof *t);
+    t->sweep_rows = t->sweep_cases = -1;
     snprintf(t->path, sizeof t->path, "%s", name);
     char *buf = strdup(text);
     if (!buf)
@@ -370,6 +552,10 @@ int gw_stats_table_parse(const char *text, const char *name, gw_stats_table *t, 
             line = gw_str_trim(line + 1);
             if (!header_line && strncmp(line, "param ", 6) == 0 && add_param(t, line + 6) != GW_OK)
                 rc = gw_err_set(err, GW_ENOMEM, "%s: out of memory", name);
+            else if (!header_line && strncmp(line, "grid ", 5) == 0)
+                rc = add_grid_list(t, line + 5, ln, err);
+            else if (!header_line && ln == 1 && strncmp(line, "granwave ", 9) == 0)
+                rc = sweep_line(t, line, ln, err);
             continue;
         }
         if (!header_line) {
@@ -386,6 +572,8 @@ int gw_stats_table_parse(const char *text, const char *name, gw_stats_table *t, 
     free(buf);
     if (rc == GW_OK && header_line && t->nrows > 0)
         rc = check_rows(t, err);
+    if (rc == GW_OK && header_line && t->nrows > 0)
+        rc = check_complete(t, err);
     if (rc == GW_OK && !header_line)
         rc = gw_err_set(err, GW_EFORMAT, "%s:%ld: no header line (an empty table)", name, ln);
     else if (rc == GW_OK && t->nrows == 0)
@@ -398,6 +586,7 @@ int gw_stats_table_parse(const char *text, const char *name, gw_stats_table *t, 
 int gw_stats_table_read(const char *path, gw_stats_table *t, gw_err *err)
 {
     memset(t, 0, sizeof *t);
+    t->sweep_rows = t->sweep_cases = -1;
     char *buf = NULL;
     size_t len = 0;
     /* a regular file only (a FIFO or device is refused, never read), bounded */

@@ -353,6 +353,116 @@ int gw_sweep_config_read_string(const char *text, const char *name, const gw_swe
     return config_finish(name, models, nmodels, cfg, model, rc, &pc, err);
 }
 
+/* A value naming a regular file: its content hash into cfg->inputs (once per
+ * key and value). */
+static int add_input(gw_sweep_config *cfg, const char *key, const char *value, long *cap)
+{
+    struct stat sb;
+    if (stat(value, &sb) != 0 || !S_ISREG(sb.st_mode))
+        return GW_OK;
+    unsigned long long fh;
+    gw_err e;
+    if (gw_fnv1a64_file(value, "sweep", &fh, &e) != GW_OK)
+        return GW_OK; /* unreadable: the model's check names it */
+    for (int i = 0; i < cfg->ninputs; i++)
+        if (strcmp(cfg->inputs[i].key, key) == 0 && strcmp(cfg->inputs[i].value, value) == 0)
+            return GW_OK;
+    if (cfg->ninputs == *cap) {
+        long nc = *cap ? 2 * *cap : 8;
+        void *p = realloc(cfg->inputs, (size_t)nc * sizeof *cfg->inputs);
+        if (!p)
+            return GW_ENOMEM;
+        cfg->inputs = p;
+        *cap = nc;
+    }
+    cfg->inputs[cfg->ninputs++] = (struct gw_sweep_input){key, value, fh};
+    return GW_OK;
+}
+
+static int find_inputs(const char *path, gw_sweep_config *cfg, gw_err *err)
+{
+    long cap = 0;
+    int rc = GW_OK;
+    for (int i = 0; rc == GW_OK && i < cfg->ngrid; i++)
+        for (int j = 0; rc == GW_OK && j < cfg->grid[i].nvalues; j++)
+            rc = add_input(cfg, cfg->grid[i].name, cfg->grid[i].values[j], &cap);
+    for (int i = 0; rc == GW_OK && i < cfg->nparams; i++)
+        rc = add_input(cfg, cfg->params[i].name, cfg->params[i].values[0], &cap);
+    if (rc != GW_OK) {
+        gw_sweep_config_free(cfg);
+        return gw_err_set(err, rc, "%s: out of memory", path);
+    }
+    return GW_OK;
+}
+
+int gw_sweep_inputs_check(const gw_sweep_config *cfg, gw_err *err)
+{
+    for (int i = 0; i < cfg->ninputs; i++) {
+        const struct gw_sweep_input *in = &cfg->inputs[i];
+        unsigned long long fh = 0;
+        gw_err e;
+        if (gw_fnv1a64_file(in->value, in->key, &fh, &e) != GW_OK)
+            return gw_err_set(err, GW_EINVAL, "%s '%s' cannot be read any more while the sweep runs (%s)", in->key,
+                              in->value, e.msg);
+        if (fh != in->hash)
+            return gw_err_set(err, GW_EINVAL, "%s '%s' changed while the sweep ran (content fnv1a64 %016llx when it "
+                              "started, now %016llx): the case that just finished may have read either; its row is "
+                              "not kept. Restore the file and rerun to resume, or start a new sweep", in->key,
+                              in->value, in->hash, fh);
+    }
+    return GW_OK;
+}
+
+/* "# input KEY = VALUE fnv1a64 HEX" lines of cfg, into a new string. */
+static char *input_lines(const gw_sweep_config *cfg)
+{
+    size_t n = 1;
+    for (int i = 0; i < cfg->ninputs; i++)
+        n += strlen(cfg->inputs[i].key) + strlen(cfg->inputs[i].value) + 48;
+    char *s = malloc(n), *p = s;
+    if (!s)
+        return NULL;
+    *p = '\0';
+    for (int i = 0; i < cfg->ninputs; i++)
+        p += snprintf(p, n - (size_t)(p - s), "# input %s = %s fnv1a64 %016llx\n", cfg->inputs[i].key,
+                      cfg->inputs[i].value, cfg->inputs[i].hash);
+    return s;
+}
+
+/* An existing journal of another config: when one of its "# input" lines
+ * names a file of this config whose content differs, say so (a resumed sweep
+ * of the same config over a changed sample was "another sweep (different
+ * config)", naming neither the file nor the change). */
+static int changed_input(const gw_sweep_config *cfg, const char *buf, size_t len, const char *dir, gw_err *err)
+{
+    const char *p = memchr(buf, '\n', len);
+    while (p && (size_t)(p + 1 - buf) < len && strncmp(p + 1, "# input ", 8) == 0) {
+        const char *line = p + 9, *end = memchr(line, '\n', len - (size_t)(line - buf));
+        if (!end)
+            break;
+        for (int i = 0; i < cfg->ninputs; i++) {
+            const struct gw_sweep_input *in = &cfg->inputs[i];
+            size_t kl = strlen(in->key), vl = strlen(in->value);
+            if ((size_t)(end - line) == kl + 3 + vl + 25 && strncmp(line, in->key, kl) == 0 &&
+                strncmp(line + kl, " = ", 3) == 0 && strncmp(line + kl + 3, in->value, vl) == 0 &&
+                strncmp(line + kl + 3 + vl, " fnv1a64 ", 9) == 0) {
+                char hex[17];
+                memcpy(hex, line + kl + 3 + vl + 9, 16);
+                hex[16] = '\0';
+                char *e;
+                unsigned long long was = strtoull(hex, &e, 16);
+                if (!*e && was != in->hash)
+                    return gw_err_set(err, GW_EINVAL, "%s: %s '%s' changed since the sweep in it started (content "
+                                      "fnv1a64 %016llx in its journal, now %016llx): its finished cases ran on the "
+                                      "old file; restore it, or choose another output", dir, in->key, in->value,
+                                      was, in->hash);
+            }
+        }
+        p = end;
+    }
+    return GW_OK;
+}
+
 static int config_finish(const char *path, const gw_sweep_model *const *models, int nmodels,
                          gw_sweep_config *cfg, const gw_sweep_model **model, int rc,
                          const parse_ctx *pc, gw_err *err)
@@ -398,7 +508,7 @@ static int config_finish(const char *path, const gw_sweep_model *const *models, 
         h = fnv64_file(fnv64(fnv64(h, cfg->params[i].name), cfg->params[i].values[0]),
                        cfg->params[i].values[0]);
     cfg->hash = h;
-    return GW_OK;
+    return find_inputs(path, cfg, err);
 }
 
 static void free_keys(gw_sweep_key *k, int n)
@@ -415,6 +525,7 @@ void gw_sweep_config_free(gw_sweep_config *cfg)
 {
     free_keys(cfg->grid, cfg->ngrid);
     free_keys(cfg->params, cfg->nparams);
+    free(cfg->inputs);
     free(cfg->model);
     free(cfg->out);
     memset(cfg, 0, sizeof *cfg);
@@ -517,15 +628,36 @@ int gw_sweep_journal_scan(const char *dir, const gw_sweep_config *cfg, char *don
     if (!buf) {
         if (errno != ENOENT)
             return gw_err_set(err, GW_EIO, "%s: cannot read: %s", path, strerror(errno));
-        return gw_write_text(path, head, err); /* a new journal */
+        char *in = input_lines(cfg); /* a new journal: the config, and what its files held */
+        size_t hl = strlen(head), il = in ? strlen(in) : 0;
+        char *text = in ? malloc(hl + il + 1) : NULL;
+        if (!text) {
+            free(in);
+            return gw_err_set(err, GW_ENOMEM, "%s: out of memory", path);
+        }
+        memcpy(text, head, hl);
+        memcpy(text + hl, in, il + 1);
+        int rc = gw_write_text(path, text, err);
+        free(text);
+        free(in);
+        return rc;
     }
     if (strncmp(buf, "# granwave sweep journal ", 25) != 0 || strncmp(buf, head, strlen(head)) != 0) {
+        int rc = strncmp(buf, "# granwave sweep journal ", 25) == 0 ? changed_input(cfg, buf, len, dir, err) : GW_OK;
         free(buf);
+        if (rc != GW_OK)
+            return rc;
         return gw_err_set(err, GW_EINVAL,
                           "%s: this directory holds another sweep (different config); remove it or choose another output",
                           dir);
     }
     size_t good = strlen(head), pos = good;
+    while (pos < len && strncmp(buf + pos, "# input ", 8) == 0) { /* the journal's input lines */
+        const char *nl = memchr(buf + pos, '\n', len - pos);
+        if (!nl)
+            break;
+        pos = good = (size_t)(nl - buf) + 1;
+    }
     while (pos < len) {
         const char *nl = memchr(buf + pos, '\n', len - pos);
         size_t l = nl ? (size_t)(nl - (buf + pos)) + 1 : len - pos;
@@ -602,6 +734,16 @@ int gw_sweep_write_table(const char *dir, const gw_sweep_config *cfg, const gw_s
                     cfg->model, cfg->hash, nr, cfg->ncases);
             for (int i = 0; i < cfg->nparams; i++)
                 fprintf(f.fp, "# param %s = %s\n", cfg->params[i].name, cfg->params[i].values[0]);
+            for (int i = 0; i < cfg->ninputs; i++) /* what the cases' files held */
+                fprintf(f.fp, "# input %s = %s fnv1a64 %016llx\n", cfg->inputs[i].key, cfg->inputs[i].value,
+                        cfg->inputs[i].hash);
+            /* the grid itself: a reader can tell a missing or edited row */
+            for (int i = 0; i < cfg->ngrid; i++) {
+                fprintf(f.fp, "# grid %s = ", cfg->grid[i].name);
+                for (int j = 0; j < cfg->grid[i].nvalues; j++)
+                    fprintf(f.fp, "%s%s", j ? ", " : "", cfg->grid[i].values[j]);
+                fputc('\n', f.fp);
+            }
             fprintf(f.fp, "case");
             for (int i = 0; i < cfg->ngrid; i++)
                 fprintf(f.fp, ",%s", cfg->grid[i].name);

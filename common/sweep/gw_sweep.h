@@ -42,6 +42,16 @@ typedef struct gw_sweep_config {
     int nparams;
     long ncases;
     unsigned long hash; /* of the normalised config: a journal belongs to one config */
+    /* The values that name a regular file (a layer sample): their content
+     * hash (gw_fnv1a64) when the config was read. Written to the journal and
+     * the table ("# input KEY = VALUE fnv1a64 HEX"); a resumed sweep whose
+     * file changed is refused naming it, and gw_sweep_inputs_check finds a
+     * change while the sweep runs. */
+    int ninputs;
+    struct gw_sweep_input {
+        const char *key, *value; /* point into grid / params */
+        unsigned long long hash;
+    } *inputs;
 } gw_sweep_config;
 
 /* A model that runs one case: name/value pairs in, ncolumns numbers out. */
@@ -83,9 +93,18 @@ int gw_sweep_format_row(const gw_sweep_config *cfg, long k, const double *out, i
                         char *buf, size_t n);
 
 /* Read DIR/journal.csv: done[k] = 1 for every complete row with a valid checksum.
- * A torn last line (no newline or bad checksum) is cut off the file. */
+ * A torn last line (no newline or bad checksum) is cut off the file. A new
+ * journal gets the config's hash and its input lines; an existing one of
+ * another config is refused (GW_EINVAL), naming the input file whose content
+ * changed when its "# input" line says so. */
 int gw_sweep_journal_scan(const char *dir, const gw_sweep_config *cfg, char *done, long *ndone,
                           gw_err *err);
+
+/* Every input file of cfg still has the content it had when cfg was read:
+ * GW_OK, or GW_EINVAL "KEY 'VALUE' changed ... (content fnv1a64 A when the
+ * sweep started, now B)" (or cannot be read any more). A sweep calls it before
+ * it journals each finished row, so no row of a changed file is kept. */
+int gw_sweep_inputs_check(const gw_sweep_config *cfg, gw_err *err);
 
 /* Append one row to DIR/journal.csv with a single write and fsync. */
 int gw_sweep_journal_append(int fd, const char *row, gw_err *err);

@@ -131,6 +131,36 @@ static int crossed(const rk4_impl *r, const double *g, int k)
     return gw_root_crossed(r->sign, g, k);
 }
 
+/* The bracket's crossed end *hi lies on a zero of component k, where the
+ * secant cannot move and bisection would halve [lo, hi] down to htol (some 25
+ * trial steps). If g is still on the old side htol before it, the root is
+ * within htol: *done. Otherwise g stays zero over an interval, and the end
+ * moves to that point for the search of the interval's start. */
+static int rk4_zero_end(gw_solver *s, int k, double lo, double *hi, double *ghi, double htol,
+                        int *done)
+{
+    rk4_impl *r = s->impl;
+    const double cl = *hi - htol;
+    int rc;
+    *done = 0;
+    if (cl <= lo) {
+        *done = 1;
+        return 0;
+    }
+    if ((rc = rk4_step(s, r->t, r->y, cl, r->ytry)) != 0)
+        return rc;
+    if ((rc = rk4_roots(s, r->t + cl, r->ytry, r->gtry)) != 0)
+        return rc;
+    const double gl = r->gtry[k] * r->sign[k];
+    if (gl > 0) {
+        *done = 1;
+        return 0;
+    }
+    *hi = cl;
+    *ghi = gl;
+    return 0;
+}
+
 /* Locate the earliest root inside the step (t, t + h] in which some component
  * crossed (r->g holds g at the step end, r->g0 at its start). Sets *hland to a
  * step length just past the earliest root. */
@@ -158,7 +188,16 @@ static int rk4_locate(gw_solver *s, double h, double *hland)
                 continue; /* this component's root lies after the current best */
             ghi = r->gtry[k] * r->sign[k];
         }
-        int side = 0;
+        int side = 0, zero_checked = 0;
+        if (ghi == 0 && !zero_checked++) {
+            int done = 0;
+            if ((rc = rk4_zero_end(s, k, lo, &hi, &ghi, htol, &done)) != 0)
+                return rc;
+            if (done) {
+                best = hi;
+                continue;
+            }
+        }
         for (int it = 0; it < 200 && hi - lo > htol; it++) {
             double c = (glo > 0 && ghi < 0) ? hi - ghi * (hi - lo) / (ghi - glo)
                                             : 0.5 * (lo + hi);
@@ -178,6 +217,13 @@ static int rk4_locate(gw_solver *s, double h, double *hland)
             } else {
                 hi = c;
                 ghi = gc;
+                if (gc == 0 && !zero_checked++) {
+                    int done = 0;
+                    if ((rc = rk4_zero_end(s, k, lo, &hi, &ghi, htol, &done)) != 0)
+                        return rc;
+                    if (done)
+                        break;
+                }
                 if (side == 1)
                     glo *= 0.5;
                 side = 1;

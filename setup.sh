@@ -6,6 +6,9 @@
 #   ./setup.sh test   install + build (warnings are errors) + run every test, then
 #                     again in an AddressSanitizer + UBSan build
 #   ./setup.sh build  install + build only
+#   ./setup.sh bench  install (with LAMMPS, the peer) + build + run the benchmarks:
+#                     bench/run.sh, bench/rhs_vs_v01.sh, bench/falcon_vs_lsoda.sh,
+#                     bench/run_peers.sh (measurements only, a few minutes)
 #
 # Environment: BUILD_DIR (default build), RESULTS (default results/falcon),
 # JOBS (build parallelism, default nproc).
@@ -71,8 +74,17 @@ build)
     install_missing
     build
     ;;
+bench)
+    packages+=(lammps)
+    install_missing
+    build
+    LONG_ARGS=${LONG_ARGS:---nmax 100000 --reps 1 --rounds 2 --bdf-max 10000} bench/run.sh "$BUILD_DIR"
+    bench/rhs_vs_v01.sh 7 "$BUILD_DIR"
+    bench/falcon_vs_lsoda.sh "$BUILD_DIR" 7
+    bench/run_peers.sh "$BUILD_DIR"
+    ;;
 *)
-    echo "setup.sh: unknown mode '$mode' (main, test, build)" >&2
+    echo "setup.sh: unknown mode '$mode' (main, test, build, bench)" >&2
     exit 2
     ;;
 esac

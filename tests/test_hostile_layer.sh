@@ -136,6 +136,11 @@
 # 27 a layer-impact --out DIR that held snapshot_failure.vtk from an earlier
 #    failed run kept it beside the new run's results, read as the state
 #    where this run failed; a run that succeeds removes it.
+# 28 an HDF5 sample whose dataset 'x' is an external link or keeps its data in
+#    an external raw file was read through the path it names: a FIFO there
+#    hung layer-impact (killed at 30 s), /dev/zero gave zeros, another file's
+#    data ran under the sample's content hash. Only hard links to data held in
+#    the file are read now; an 'n' that is missing or a string said "n = 0".
 set -u
 GW=$1
 SRC=${2:-.}
@@ -662,6 +667,58 @@ mkdir -p "$tmp/o27" && echo "an earlier run's failure state" >"$tmp/o27/snapshot
 if runs "layer-impact --out into a directory with an earlier snapshot_failure.vtk" layer-impact --sample "$S300" --t-max 1e-4 --out "$tmp/o27"; then
     [ ! -e "$tmp/o27/snapshot_failure.vtk" ] && [ -s "$tmp/o27/snapshot_end.vtk" ] &&
         ok "  the earlier failure's snapshot is removed (it stayed beside the new results)" || ko "  $(ls "$tmp/o27" | tr '\n' ' ')"
+fi
+
+# --- 28: HDF5 samples whose data lie outside the file -------------------------------
+if /usr/bin/python3 -c "import h5py" 2>/dev/null; then
+    mkfifo "$tmp/fifo28"
+    /usr/bin/python3 - "$S300" "$tmp" <<'PY'
+import sys, os, h5py, numpy as np
+src, tmp = sys.argv[1], sys.argv[2]
+lines = [l.split() for l in open(src) if not l.startswith('#')]
+hdr = {}
+i = 1
+while True:
+    hdr[lines[i][0]] = lines[i][1]; i += 1
+    if lines[i - 1][0] == 'n': break
+P = np.array(lines[i:], dtype=float)
+def write(name, x=None, n=None):
+    with h5py.File(os.path.join(tmp, name), 'w', libver='v108') as f:
+        if x is None: f['x'] = P[:, 0]
+        else: x(f)
+        f['y'] = P[:, 1]; f['r'] = P[:, 2]
+        f.attrs['format'] = 'granwave-layer-sample'; f.attrs['format_version'] = np.int32(1)
+        f.attrs['width'] = float(hdr['width']); f.attrs['rm'] = float(hdr['rm'])
+        f.attrs['n'] = np.int32(len(P)) if n is None else n
+P[:, 0].tofile(os.path.join(tmp, 'x28.bin'))
+write('s28.h5')
+write('s28_elink.h5', lambda f: f.__setitem__('x', h5py.ExternalLink(os.path.join(tmp, 'fifo28'), 'x')))
+write('s28_efifo.h5', lambda f: f.create_dataset('x', shape=(len(P),), dtype='<f8', external=[(os.path.join(tmp, 'fifo28'), 0, 8 * len(P))]))
+write('s28_ezero.h5', lambda f: f.create_dataset('x', shape=(len(P),), dtype='<f8', external=[('/dev/zero', 0, 8 * len(P))]))
+write('s28_eraw.h5', lambda f: f.create_dataset('x', shape=(len(P),), dtype='<f8', external=[(os.path.join(tmp, 'x28.bin'), 0, 8 * len(P))]))
+write('s28_soft.h5', lambda f: f.__setitem__('x', h5py.SoftLink('/y')))
+write('s28_nstr.h5', n='300')
+PY
+    if "$GW" layer-impact --sample "$tmp/s28.h5" --t-max 1e-5 >/dev/null 2>&1; then
+        refused "an HDF5 sample whose x is an external link to a FIFO (it hung)" \
+            "sample '.*s28_elink.h5': HDF5 dataset 'x' is an external link: a sample holds its data in the file itself" \
+            layer-impact --sample "$tmp/s28_elink.h5" --t-max 1e-4 --out "$tmp/o"
+        refused "an HDF5 sample whose x is stored in a FIFO (it hung)" "s28_efifo.h5': HDF5 dataset 'x' is stored in external files" \
+            layer-impact --sample "$tmp/s28_efifo.h5" --t-max 1e-4 --out "$tmp/o"
+        refused "an HDF5 sample whose x is stored in /dev/zero (read as zeros)" "s28_ezero.h5': HDF5 dataset 'x' is stored in external files" \
+            layer-impact --sample "$tmp/s28_ezero.h5" --t-max 1e-4 --out "$tmp/o"
+        refused "an HDF5 sample whose x is stored in a raw file (ran, outside its content hash)" \
+            "s28_eraw.h5': HDF5 dataset 'x' is stored in external files" \
+            layer-impact --sample "$tmp/s28_eraw.h5" --t-max 1e-4 --out "$tmp/o"
+        refused "an HDF5 sample whose x is a soft link" "s28_soft.h5': HDF5 dataset 'x' is a soft link" \
+            layer-impact --sample "$tmp/s28_soft.h5" --t-max 1e-4 --out "$tmp/o"
+        refused "an HDF5 sample whose n is a string (it said 'n = 0')" "s28_nstr.h5': HDF5 attribute 'n' is not one integer" \
+            layer-impact --sample "$tmp/s28_nstr.h5" --t-max 1e-4 --out "$tmp/o"
+    else
+        echo "SKIP: 28 (granwave without HDF5)"
+    fi
+else
+    echo "SKIP: 28 (no h5py)"
 fi
 
 echo "test_hostile_layer: $passes passed, $fails failed"

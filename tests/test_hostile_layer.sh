@@ -141,6 +141,10 @@
 #    hung layer-impact (killed at 30 s), /dev/zero gave zeros, another file's
 #    data ran under the sample's content hash. Only hard links to data held in
 #    the file are read now; an 'n' that is missing or a string said "n = 0".
+# 29 the reader's overlap check swept over x, quadratic in the discs of one
+#    column: a sample one disc wide and 1e5 discs high took 35 s to be refused
+#    for its top two discs (1e6 would take about an hour); it uses a grid of
+#    cells now (0.15 s).
 set -u
 GW=$1
 SRC=${2:-.}
@@ -720,6 +724,14 @@ PY
 else
     echo "SKIP: 28 (no h5py)"
 fi
+
+# --- 29: the overlap check on a column of discs ----------------------------------------
+awk 'BEGIN { n = 100000; rm = 0.01; printf "granwave-layer-sample 1\nwidth %.17g\nrm %.17g\nn %d\n", 2 * rm, rm, n
+             for (k = 0; k < n - 1; k++) printf "%.17g %.17g %.17g\n", rm, rm * (2 * k + 1), rm
+             printf "%.17g %.17g %.17g\n", rm, rm * (2 * (n - 2) + 2), rm }' >"$tmp/s29.txt"
+refused "a column of 1e5 discs whose top two overlap, refused within 20 s (it took 35 s)" \
+    "sample '.*s29.txt': particles 99998 and 99999 overlap by 1 R_p" \
+    layer-impact --sample "$tmp/s29.txt" --t-max 1e-4 --out "$tmp/o"
 
 echo "test_hostile_layer: $passes passed, $fails failed"
 [ $fails -eq 0 ]

@@ -145,6 +145,17 @@
 #    column: a sample one disc wide and 1e5 discs high took 35 s to be refused
 #    for its top two discs (1e6 would take about an hour); it uses a grid of
 #    cells now (0.15 s).
+# 30 a sweep resumed over a journal edited by hand: a row whose checksum no
+#    longer matched (a value edited) stopped the scan there, and the journal
+#    was cut at it: that row and every finished row after it were dropped and
+#    rerun, silently (exit 0). A row pasted from a sweep over another grid
+#    (good checksum) was taken for its case number, and a case journaled
+#    twice with different results gave the table the first. Each is refused
+#    now (exit 2, naming journal.csv and the line), the journal left as it
+#    is; a torn last row (no newline) is still cut and rerun. An empty
+#    journal said "another sweep (different config)". results.csv a
+#    directory failed the sweep (exit 1) after all its cases; it is refused
+#    before the first.
 set -u
 GW=$1
 SRC=${2:-.}
@@ -732,6 +743,51 @@ awk 'BEGIN { n = 100000; rm = 0.01; printf "granwave-layer-sample 1\nwidth %.17g
 refused "a column of 1e5 discs whose top two overlap, refused within 20 s (it took 35 s)" \
     "sample '.*s29.txt': particles 99998 and 99999 overlap by 1 R_p" \
     layer-impact --sample "$tmp/s29.txt" --t-max 1e-4 --out "$tmp/o"
+
+# --- 30: journals edited by hand -------------------------------------------------------
+printf '[sweep]\nmodel = layer\n[grid]\nvi = 10, 20, 30, 40\n[params]\nsample = %s\nt-max = 1e-4\n' "$S300" >"$tmp/w30.ini"
+printf '[sweep]\nmodel = layer\n[grid]\nvi = 11, 21, 31, 41\n[params]\nsample = %s\nt-max = 1e-4\n' "$S300" >"$tmp/w30b.ini"
+printf '[sweep]\nmodel = layer\n[grid]\nvi = 10\n[params]\nsample = %s\nt-max = 2e-4\n' "$S300" >"$tmp/w30d.ini"
+if runs "a layer sweep of 4 cases" sweep "$tmp/w30.ini" --out "$tmp/w30" --quiet --jobs 1 &&
+   runs "  one over another grid" sweep "$tmp/w30b.ini" --out "$tmp/w30b" --quiet &&
+   runs "  one of its case 0 at another t-max" sweep "$tmp/w30d.ini" --out "$tmp/w30d" --quiet; then
+    j30=$tmp/w30/journal.csv
+    cp "$j30" "$tmp/j30.orig"
+    # resume WHAT PATTERN: the sweep over the edited journal is refused, the journal unchanged
+    resume30() {
+        rm -f "$tmp/w30/results.csv"; cp "$j30" "$tmp/j30.edited"
+        refused "$1" "$2" sweep "$tmp/w30.ini" --out "$tmp/w30" --quiet
+        cmp -s "$j30" "$tmp/j30.edited" && [ ! -e "$tmp/w30/results.csv" ] && ok "  the journal is left as it was, no table" ||
+            ko "  the journal changed ($(grep -vc '^#' "$j30") rows) or a table was written"
+        cp "$tmp/j30.orig" "$j30"
+    }
+    awk -F, -v OFS=, 'n == 1 && !/^#/ { $3 = "1" $3; n = 2 } !/^#/ && !n { n = 1 } { print }' "$tmp/j30.orig" >"$j30"
+    resume30 "a value edited in the second row (that row and the two after it were dropped and rerun)" \
+        "^granwave sweep: .*w30/journal.csv:4: its checksum does not match its values: the journal was edited by hand"
+    awk '!/^#/ && !d { d = 1; next } { print }' "$tmp/j30.orig" >"$j30"
+    grep -v '^#' "$tmp/w30b/journal.csv" | head -1 >>"$j30"
+    resume30 "case 0's row replaced by case 0 of a sweep over another grid (taken for case 0)" \
+        "journal.csv:6: its grid values are not its case's \(a row of another sweep\)"
+    grep -v '^#' "$tmp/w30d/journal.csv" | head -1 >>"$j30"
+    resume30 "case 0 journaled twice with different results (t-max 2e-4's row pasted; the table took the first)" \
+        "journal.csv:7: case 0 is journaled twice with different results \(lines 3 and 7\)"
+    cp "$tmp/j30.orig" "$j30"; grep -v '^#' "$tmp/j30.orig" | head -1 >>"$j30"
+    rm -f "$tmp/w30/results.csv"
+    runs "  a journal with one row copied resumes" sweep "$tmp/w30.ini" --out "$tmp/w30" --quiet
+    cp "$tmp/j30.orig" "$j30"
+    : >"$j30"
+    resume30 "an empty journal (said 'another sweep (different config)')" \
+        "w30/journal.csv: not a granwave sweep journal \(its first line is not"
+    head -c -25 "$tmp/j30.orig" >"$j30"; rm -f "$tmp/w30/results.csv"
+    if runs "a torn last row (no newline) is cut and its case rerun" sweep "$tmp/w30.ini" --out "$tmp/w30" --quiet; then
+        cmp -s "$j30" "$tmp/j30.orig" && ok "  to the same journal, byte for byte" || ko "  the journal differs"
+    fi
+    mkdir -p "$tmp/w30c/results.csv"
+    refused "a sweep whose results.csv is a directory (failed with exit 1 after every case)" \
+        "^granwave sweep table: '.*w30c/results.csv' is a directory; give a regular file" \
+        sweep "$tmp/w30.ini" --out "$tmp/w30c" --quiet
+    [ ! -e "$tmp/w30c/journal.csv" ] && ok "  refused before the first case (no journal)" || ko "  a journal was written"
+fi
 
 echo "test_hostile_layer: $passes passed, $fails failed"
 [ $fails -eq 0 ]

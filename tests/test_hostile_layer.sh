@@ -156,6 +156,9 @@
 #    journal said "another sweep (different config)". results.csv a
 #    directory failed the sweep (exit 1) after all its cases; it is refused
 #    before the first.
+# 31 a sweep config with a NUL byte was read up to it, the rest dropped
+#    without a word: 't-max = 1e-4<NUL>' then 'rings = 2' ran the default
+#    rings (exit 0); refused naming the line.
 set -u
 GW=$1
 SRC=${2:-.}
@@ -788,6 +791,11 @@ if runs "a layer sweep of 4 cases" sweep "$tmp/w30.ini" --out "$tmp/w30" --quiet
         sweep "$tmp/w30.ini" --out "$tmp/w30c" --quiet
     [ ! -e "$tmp/w30c/journal.csv" ] && ok "  refused before the first case (no journal)" || ko "  a journal was written"
 fi
+
+# --- 31: a NUL byte in a sweep config ------------------------------------------------------
+printf '[sweep]\nmodel = layer\n[grid]\nvi = 10, 20\n[params]\nsample = %s\nt-max = 1e-4\000\nrings = 2\n' "$S300" >"$tmp/w31.ini"
+refused "a config with a NUL byte on line 7 (the rest of the file was dropped: rings = 2 ignored)" \
+    "^granwave sweep: .*w31.ini:7: a NUL byte \(binary data, not a config\)" sweep "$tmp/w31.ini" --out "$tmp/o" --quiet
 
 echo "test_hostile_layer: $passes passed, $fails failed"
 [ $fails -eq 0 ]

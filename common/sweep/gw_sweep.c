@@ -329,9 +329,20 @@ int gw_sweep_config_read(const char *path, const gw_sweep_model *const *models, 
     *model = NULL;
     parse_ctx pc = {cfg, models, nmodels, "", 0, 0};
     char *text = NULL;
-    int rc = gw_input_read(path, "sweep CONFIG", GW_SWEEP_CONFIG_MAX, &text, NULL, err);
+    size_t len = 0;
+    int rc = gw_input_read(path, "sweep CONFIG", GW_SWEEP_CONFIG_MAX, &text, &len, err);
     if (rc != GW_OK)
         return GW_EINVAL; /* a config that cannot be read is bad input (exit 2) */
+    /* the reader takes the text as a C string: everything after a NUL byte was
+     * dropped without a word ('rings = 2' after one ran the default rings) */
+    const char *nul = memchr(text, '\0', len);
+    if (nul) {
+        long ln = 1;
+        for (const char *q = text; q < nul; q++)
+            ln += *q == '\n';
+        free(text);
+        return gw_err_set(err, GW_EINVAL, "%s:%ld: a NUL byte (binary data, not a config)", path, ln);
+    }
     if (lines_fit(text, path, err) != GW_OK) {
         free(text);
         return GW_EINVAL;

@@ -159,6 +159,10 @@
 # 31 a sweep config with a NUL byte was read up to it, the rest dropped
 #    without a word: 't-max = 1e-4<NUL>' then 'rings = 2' ran the default
 #    rings (exit 0); refused naming the line.
+# 32 a sweep table whose first line claims 1e12 cases made layer-stats
+#    allocate a byte per case (1 TB: an AddressSanitizer abort, exit 1 in
+#    release; 5e9 cases took 15 s and 5 GB); the cases are marked up to the
+#    table's rows now.
 set -u
 GW=$1
 SRC=${2:-.}
@@ -796,6 +800,16 @@ fi
 printf '[sweep]\nmodel = layer\n[grid]\nvi = 10, 20\n[params]\nsample = %s\nt-max = 1e-4\000\nrings = 2\n' "$S300" >"$tmp/w31.ini"
 refused "a config with a NUL byte on line 7 (the rest of the file was dropped: rings = 2 ignored)" \
     "^granwave sweep: .*w31.ini:7: a NUL byte \(binary data, not a config\)" sweep "$tmp/w31.ini" --out "$tmp/o" --quiet
+
+# --- 32: a sweep table that claims 1e12 cases ---------------------------------------------
+if [ -s "$tmp/w30/results.csv" ]; then
+    grep -v '^# grid' "$tmp/w30/results.csv" | sed '1s/ 4 of 4 cases$/ 4 of 1000000000000 cases/' >"$tmp/t32.csv"
+    refused "a table whose first line says 4 of 1e12 cases (1 TB allocated: a sanitizer abort)" \
+        "t32.csv: case 4 is missing \(999999999996 of the sweep's 1000000000000 cases are\)" layer-stats "$tmp/t32.csv" --out "$tmp/o"
+    grep -v '^# grid' "$tmp/w30/results.csv" | sed '1s/ 4 of 4 cases$/ 4 of 6 cases/' | awk -F, -v OFS=, '!/^#/ && $1 == "3" { $1 = "5" } { print }' >"$tmp/t32b.csv"
+    refused "  a table of 4 of 6 cases with case 5 for case 3: 3 and 4 missing" \
+        "t32b.csv: case 3 is missing \(2 of the sweep's 6 cases are\)" layer-stats "$tmp/t32b.csv" --out "$tmp/o"
+fi
 
 echo "test_hostile_layer: $passes passed, $fails failed"
 [ $fails -eq 0 ]

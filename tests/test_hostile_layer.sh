@@ -162,7 +162,8 @@
 # 32 a sweep table whose first line claims 1e12 cases made layer-stats
 #    allocate a byte per case (1 TB: an AddressSanitizer abort, exit 1 in
 #    release; 5e9 cases took 15 s and 5 GB); the cases are marked up to the
-#    table's rows now.
+#    table's rows now. A NUL byte in a table was reported on line 1 wherever
+#    it was; its line is named.
 set -u
 GW=$1
 SRC=${2:-.}
@@ -810,6 +811,8 @@ if [ -s "$tmp/w30/results.csv" ]; then
     refused "  a table of 4 of 6 cases with case 5 for case 3: 3 and 4 missing" \
         "t32b.csv: case 3 is missing \(2 of the sweep's 6 cases are\)" layer-stats "$tmp/t32b.csv" --out "$tmp/o"
 fi
+sed '10s/,1,/,1\x00,/' "$SRC/data/measured/layer_diagram/results.csv" >"$tmp/t32c.csv"
+refused "a table with a NUL byte on line 10 (it said line 1)" "t32c.csv:10: binary data \(NUL byte\)" layer-stats "$tmp/t32c.csv" --out "$tmp/o"
 
 echo "test_hostile_layer: $passes passed, $fails failed"
 [ $fails -eq 0 ]

@@ -612,8 +612,13 @@ int gw_stats_table_read(const char *path, gw_stats_table *t, gw_err *err)
     int rc = gw_input_read(path, "sweep table", (size_t)1 << 32, &buf, &len, err);
     if (rc == GW_EINVAL)
         rc = GW_EFORMAT;
-    if (rc == GW_OK && memchr(buf, '\0', len))
-        rc = gw_err_set(err, GW_EFORMAT, "%s:1: binary data (NUL byte), not a CSV table", path);
+    const char *nul = rc == GW_OK ? memchr(buf, '\0', len) : NULL;
+    if (nul) { /* on its line (it said line 1 wherever the byte was) */
+        long ln = 1;
+        for (const char *q = buf; q < nul; q++)
+            ln += *q == '\n';
+        rc = gw_err_set(err, GW_EFORMAT, "%s:%ld: binary data (NUL byte), not a CSV table", path, ln);
+    }
     if (rc == GW_OK)
         rc = gw_stats_table_parse(buf, path, t, err);
     free(buf);

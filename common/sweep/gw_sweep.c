@@ -408,8 +408,27 @@ static int find_inputs(const char *path, gw_sweep_config *cfg, gw_err *err)
 
 int gw_sweep_inputs_check(const gw_sweep_config *cfg, gw_err *err)
 {
+    return gw_sweep_case_inputs_check(cfg, -1, err);
+}
+
+/* 1 when case k (k < 0: every case) reads input in. */
+static int case_reads(const gw_sweep_config *cfg, long k, const struct gw_sweep_input *in)
+{
+    const char *names[2 * GW_SWEEP_MAX_KEYS], *values[2 * GW_SWEEP_MAX_KEYS];
+    if (k < 0 || gw_sweep_case(cfg, k, names, values) != GW_OK)
+        return 1;
+    for (int j = 0; j < cfg->ngrid + cfg->nparams; j++)
+        if (strcmp(names[j], in->key) == 0 && strcmp(values[j], in->value) == 0)
+            return 1;
+    return 0;
+}
+
+int gw_sweep_case_inputs_check(const gw_sweep_config *cfg, long k, gw_err *err)
+{
     for (int i = 0; i < cfg->ninputs; i++) {
         const struct gw_sweep_input *in = &cfg->inputs[i];
+        if (!case_reads(cfg, k, in))
+            continue;
         unsigned long long fh = 0;
         gw_err e;
         if (gw_fnv1a64_file(in->value, in->key, &fh, &e) != GW_OK)

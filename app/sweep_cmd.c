@@ -70,7 +70,7 @@ static int journal(sweep_run *s, const char *row, gw_err *err)
 {
     /* the files the case read (a layer sample) still hold what the sweep
      * started with: a sample edited mid-sweep gave rows of both, silently */
-    int rc = gw_sweep_inputs_check(s->cfg, err);
+    int rc = gw_sweep_case_inputs_check(s->cfg, strtol(row, NULL, 10), err);
     if (rc == GW_OK)
         rc = gw_sweep_journal_append(s->fd, row, err);
     if (rc == GW_OK)

@@ -104,48 +104,78 @@ int gw_layer_clump_mass_parse(const char *name)
  * construction. */
 #define SAMPLE_OVERLAP_MAX 0.05
 
-typedef struct xi {
-    double x;
-    int i;
-} xi;
-
-static int by_x(const void *a, const void *b)
-{
-    const double xa = ((const xi *)a)->x, xb = ((const xi *)b)->x;
-    return (xa > xb) - (xa < xb);
-}
-
-/* Pairs found by a sweep over x (each disc against the discs within its radius
- * plus the largest radius to its right): O(n log n) for a packing. */
+/* Pairs found on a grid of square cells of side 2 R_max (an overlapping pair
+ * lies in neighbouring cells), coarsened until the cells are at most 16 n + 64,
+ * each disc against the discs of the 3 x 3 cells around its own: O(n) for a
+ * packing of like discs whatever its shape. (A sweep over x was quadratic in
+ * the discs of one column: a sample one disc wide and 1e5 high took 23 s, 1e6
+ * would take about 40 min.) Reports the first pair (i, j), i < j, in index
+ * order, so the message does not depend on the grid. */
 int layer_overlaps_check(int n, const double *x, const double *y, const double *r, const int *body,
                          const char *what, gw_err *err)
 {
-    xi *ix = malloc((size_t)n * sizeof *ix);
-    if (!ix)
-        return gw_err_set(err, GW_ENOMEM, "%s: out of memory for the overlap check", what);
-    double rmax = 0;
+    double rmax = 0, x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
     for (int i = 0; i < n; i++) {
-        ix[i] = (xi){x[i], i};
         rmax = fmax(rmax, r[i]);
+        x0 = fmin(x0, x[i]), x1 = fmax(x1, x[i]);
+        y0 = fmin(y0, y[i]), y1 = fmax(y1, y[i]);
     }
-    qsort(ix, (size_t)n, sizeof *ix, by_x);
+    if (n < 2)
+        return GW_OK;
+    const double ex = x1 - x0, ey = y1 - y0; /* finite: the readers check every position first */
+    double h = 2 * rmax;
+    if (!(h > 0) || !isfinite(ex) || !isfinite(ey))
+        return gw_err_set(err, GW_EFORMAT, "%s: positions or radii not finite and positive", what);
+    const double maxc = 16.0 * n + 64;
+    while ((ex / h + 1) * (ey / h + 1) > maxc)
+        h *= 2;
+    const long nx = (long)(ex / h) + 1, ny = (long)(ey / h) + 1, ncell = nx * ny;
+    int *start = calloc((size_t)ncell + 1, sizeof *start), *idx = malloc((size_t)n * sizeof *idx);
+    int *cell = malloc((size_t)n * sizeof *cell);
+    if (!start || !idx || !cell) {
+        free(start), free(idx), free(cell);
+        return gw_err_set(err, GW_ENOMEM, "%s: out of memory for the overlap check", what);
+    }
+    for (int i = 0; i < n; i++) {
+        long cx = (long)((x[i] - x0) / h), cy = (long)((y[i] - y0) / h);
+        cx = cx < 0 ? 0 : cx >= nx ? nx - 1 : cx;
+        cy = cy < 0 ? 0 : cy >= ny ? ny - 1 : cy;
+        cell[i] = (int)(cy * nx + cx);
+        start[cell[i] + 1]++;
+    }
+    for (long k = 0; k < ncell; k++)
+        start[k + 1] += start[k];
+    for (int i = 0; i < n; i++) /* each cell filled from its end */
+        idx[--start[cell[i] + 1]] = i;
+    /* start[k + 1] now points at cell k's first entry; shift back */
+    for (long k = 0; k < ncell; k++)
+        start[k] = start[k + 1];
+    start[ncell] = n;
     int rc = GW_OK;
-    for (int a = 0; a < n && rc == GW_OK; a++) {
-        const int i = ix[a].i;
-        for (int b = a + 1; b < n && ix[b].x - x[i] <= r[i] + rmax; b++) {
-            const int j = ix[b].i;
-            if (body && body[i] == body[j])
-                continue;
-            const double d = hypot(x[j] - x[i], y[j] - y[i]), ov = r[i] + r[j] - d;
-            const double rp = 2 * r[i] * r[j] / (r[i] + r[j]);
-            if (ov > SAMPLE_OVERLAP_MAX * rp) {
-                rc = gw_err_set(err, GW_EFORMAT, "%s: particles %d and %d overlap by %.3g R_p, above %g R_p "
-                                "(a settled sample: about 0.002): their contact would inject energy",
-                                what, i < j ? i : j, i < j ? j : i, ov / rp, SAMPLE_OVERLAP_MAX);
-                break;
+    for (int i = 0; i < n && rc == GW_OK; i++) {
+        const long cx = cell[i] % nx, cy = cell[i] / nx;
+        int first = -1;
+        double worst = 0, rpw = 0;
+        for (long ky = cy - 1; ky <= cy + 1; ky++)
+            for (long kx = cx - 1; kx <= cx + 1; kx++) {
+                if (ky < 0 || ky >= ny || kx < 0 || kx >= nx)
+                    continue;
+                const long kc = ky * nx + kx;
+                for (int q = start[kc]; q < start[kc + 1]; q++) {
+                    const int j = idx[q];
+                    if (j <= i || (first >= 0 && j > first) || (body && body[i] == body[j]))
+                        continue;
+                    const double d = hypot(x[j] - x[i], y[j] - y[i]), ov = r[i] + r[j] - d;
+                    const double rp = 2 * r[i] * r[j] / (r[i] + r[j]);
+                    if (ov > SAMPLE_OVERLAP_MAX * rp)
+                        first = j, worst = ov, rpw = rp;
+                }
             }
-        }
+        if (first >= 0)
+            rc = gw_err_set(err, GW_EFORMAT, "%s: particles %d and %d overlap by %.3g R_p, above %g R_p "
+                            "(a settled sample: about 0.002): their contact would inject energy",
+                            what, i, first, worst / rpw, SAMPLE_OVERLAP_MAX);
     }
-    free(ix);
+    free(start), free(idx), free(cell);
     return rc;
 }

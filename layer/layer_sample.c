@@ -668,12 +668,51 @@ static int h5_attr_read(hid_t f, const char *name, H5T_class_t want, hid_t memty
     return ok ? 1 : -1;
 }
 
+/* Where the data of dataset name lies: 1 in the file itself (a hard link to a
+ * dataset whose layout is compact, contiguous or chunked in this file), 0
+ * elsewhere (an external or user-defined link, raw data in external files, a
+ * virtual dataset), -1 unknown. Data outside the file would be read through a
+ * path the file names: a FIFO there hung the reader, /dev/zero gave zeros,
+ * a superblock-0 file there skipped the checksum rule of read_h5, and the
+ * sample's content hash (its own bytes) would not cover what was read. */
+static int h5_in_file(hid_t f, const char *name, const char **what)
+{
+    H5L_info_t li;
+    *what = "";
+    if (H5Lget_info(f, name, &li, H5P_DEFAULT) < 0)
+        return -1;
+    if (li.type != H5L_TYPE_HARD) {
+        *what = li.type == H5L_TYPE_SOFT ? "a soft link" : li.type == H5L_TYPE_EXTERNAL ? "an external link"
+                : "a user-defined link";
+        return 0;
+    }
+    hid_t d = H5Dopen2(f, name, H5P_DEFAULT);
+    hid_t pl = d >= 0 ? H5Dget_create_plist(d) : -1;
+    int in = -1;
+    if (pl >= 0) {
+        const int next = H5Pget_external_count(pl);
+        const H5D_layout_t lay = H5Pget_layout(pl);
+        in = next == 0 && (lay == H5D_COMPACT || lay == H5D_CONTIGUOUS || lay == H5D_CHUNKED);
+        *what = next != 0 ? "stored in external files" : lay == H5D_VIRTUAL ? "a virtual dataset" : "";
+    }
+    if (pl >= 0)
+        H5Pclose(pl);
+    if (d >= 0)
+        H5Dclose(d);
+    return in;
+}
+
 /* Dataset name: one dimension of n numbers, read as doubles into v. */
 static int h5_column_read(hid_t f, const char *name, long n, double *v, const char *path, const char *why,
                           gw_err *err)
 {
     htri_t ex = H5Lexists(f, name, H5P_DEFAULT);
-    hid_t d = ex > 0 ? H5Dopen2(f, name, H5P_DEFAULT) : -1;
+    const char *where = "";
+    const int in = ex > 0 ? h5_in_file(f, name, &where) : -1;
+    if (in == 0)
+        return gw_err_set(err, GW_EFORMAT, "sample '%s': HDF5 dataset '%s' is %s: a sample holds its data in "
+                          "the file itself (hard links, no external storage)", path, name, where);
+    hid_t d = in > 0 ? H5Dopen2(f, name, H5P_DEFAULT) : -1;
     if (d < 0)
         return gw_err_set(err, GW_EFORMAT, "sample '%s': HDF5 dataset '%s' %s%s%s", path, name,
                           ex == 0 ? "missing" : "unreadable", why[0] ? ": " : "", why);
@@ -738,9 +777,12 @@ static int h5_fields(hid_t f, gw_layer_sample *s, const char *path, const char *
         return gw_err_set(err, GW_EFORMAT, "sample '%s': HDF5 attribute clump_mass '%s' is not sum or union",
                           path, got > 0 ? shown(str, show) : "?");
     got = h5_attr_read(f, "n", H5T_INTEGER, H5T_NATIVE_LLONG, &n);
-    if (got != 1 || n < 1 || n > SAMPLE_NMAX)
+    if (got != 1) /* it said "n = 0" for a missing n, a string or a float */
+        return gw_err_set(err, GW_EFORMAT, "sample '%s': HDF5 attribute 'n' %s", path,
+                          got == 0 ? "missing" : "is not one integer");
+    if (n < 1 || n > SAMPLE_NMAX)
         return gw_err_set(err, GW_EFORMAT, "sample '%s': HDF5 attribute n = %lld must be an integer in [1, %ld]",
-                          path, got == 1 ? n : 0, SAMPLE_NMAX);
+                          path, n, SAMPLE_NMAX);
     int rc = check_header(s, path, GW_EFORMAT, err);
     if (rc != GW_OK)
         return rc;

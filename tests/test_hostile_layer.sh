@@ -136,6 +136,40 @@
 # 27 a layer-impact --out DIR that held snapshot_failure.vtk from an earlier
 #    failed run kept it beside the new run's results, read as the state
 #    where this run failed; a run that succeeds removes it.
+# 28 an HDF5 sample whose dataset 'x' is an external link or keeps its data in
+#    an external raw file was read through the path it names: a FIFO there
+#    hung layer-impact (killed at 30 s), /dev/zero gave zeros, another file's
+#    data ran under the sample's content hash. Only hard links to data held in
+#    the file are read now; an 'n' that is missing or a string said "n = 0".
+# 29 the reader's overlap check swept over x, quadratic in the discs of one
+#    column: a sample one disc wide and 1e5 discs high took 35 s to be refused
+#    for its top two discs (1e6 would take about an hour); it uses a grid of
+#    cells now (0.15 s).
+# 30 a sweep resumed over a journal edited by hand: a row whose checksum no
+#    longer matched (a value edited) stopped the scan there, and the journal
+#    was cut at it: that row and every finished row after it were dropped and
+#    rerun, silently (exit 0). A row pasted from a sweep over another grid
+#    (good checksum) was taken for its case number, and a case journaled
+#    twice with different results gave the table the first. Each is refused
+#    now (exit 2, naming journal.csv and the line), the journal left as it
+#    is; a torn last row (no newline) is still cut and rerun. An empty
+#    journal said "another sweep (different config)". results.csv a
+#    directory failed the sweep (exit 1) after all its cases; it is refused
+#    before the first.
+# 31 a sweep config with a NUL byte was read up to it, the rest dropped
+#    without a word: 't-max = 1e-4<NUL>' then 'rings = 2' ran the default
+#    rings (exit 0); refused naming the line.
+# 32 a sweep table whose first line claims 1e12 cases made layer-stats
+#    allocate a byte per case (1 TB: an AddressSanitizer abort, exit 1 in
+#    release; 5e9 cases took 15 s and 5 GB); the cases are marked up to the
+#    table's rows now. A NUL byte in a table was reported on line 1 wherever
+#    it was; its line is named.
+# 33 a sweep over a grid of samples hashed every sample of the grid after
+#    every case (each sample read once per case: 18 samples x 50 speeds took
+#    1.5 s against 1.0 s for one sample, more with larger samples), and a
+#    sample edited mid-sweep stopped the cases of the other samples too. Each
+#    case checks the files it read: the edited sample's cases stop the sweep,
+#    the others' rows are kept.
 set -u
 GW=$1
 SRC=${2:-.}
@@ -662,6 +696,148 @@ mkdir -p "$tmp/o27" && echo "an earlier run's failure state" >"$tmp/o27/snapshot
 if runs "layer-impact --out into a directory with an earlier snapshot_failure.vtk" layer-impact --sample "$S300" --t-max 1e-4 --out "$tmp/o27"; then
     [ ! -e "$tmp/o27/snapshot_failure.vtk" ] && [ -s "$tmp/o27/snapshot_end.vtk" ] &&
         ok "  the earlier failure's snapshot is removed (it stayed beside the new results)" || ko "  $(ls "$tmp/o27" | tr '\n' ' ')"
+fi
+
+# --- 28: HDF5 samples whose data lie outside the file -------------------------------
+if /usr/bin/python3 -c "import h5py" 2>/dev/null; then
+    mkfifo "$tmp/fifo28"
+    /usr/bin/python3 - "$S300" "$tmp" <<'PY'
+import sys, os, h5py, numpy as np
+src, tmp = sys.argv[1], sys.argv[2]
+lines = [l.split() for l in open(src) if not l.startswith('#')]
+hdr = {}
+i = 1
+while True:
+    hdr[lines[i][0]] = lines[i][1]; i += 1
+    if lines[i - 1][0] == 'n': break
+P = np.array(lines[i:], dtype=float)
+def write(name, x=None, n=None):
+    with h5py.File(os.path.join(tmp, name), 'w', libver='v108') as f:
+        if x is None: f['x'] = P[:, 0]
+        else: x(f)
+        f['y'] = P[:, 1]; f['r'] = P[:, 2]
+        f.attrs['format'] = 'granwave-layer-sample'; f.attrs['format_version'] = np.int32(1)
+        f.attrs['width'] = float(hdr['width']); f.attrs['rm'] = float(hdr['rm'])
+        f.attrs['n'] = np.int32(len(P)) if n is None else n
+P[:, 0].tofile(os.path.join(tmp, 'x28.bin'))
+write('s28.h5')
+write('s28_elink.h5', lambda f: f.__setitem__('x', h5py.ExternalLink(os.path.join(tmp, 'fifo28'), 'x')))
+write('s28_efifo.h5', lambda f: f.create_dataset('x', shape=(len(P),), dtype='<f8', external=[(os.path.join(tmp, 'fifo28'), 0, 8 * len(P))]))
+write('s28_ezero.h5', lambda f: f.create_dataset('x', shape=(len(P),), dtype='<f8', external=[('/dev/zero', 0, 8 * len(P))]))
+write('s28_eraw.h5', lambda f: f.create_dataset('x', shape=(len(P),), dtype='<f8', external=[(os.path.join(tmp, 'x28.bin'), 0, 8 * len(P))]))
+write('s28_soft.h5', lambda f: f.__setitem__('x', h5py.SoftLink('/y')))
+write('s28_nstr.h5', n='300')
+PY
+    if "$GW" layer-impact --sample "$tmp/s28.h5" --t-max 1e-5 >/dev/null 2>&1; then
+        refused "an HDF5 sample whose x is an external link to a FIFO (it hung)" \
+            "sample '.*s28_elink.h5': HDF5 dataset 'x' is an external link: a sample holds its data in the file itself" \
+            layer-impact --sample "$tmp/s28_elink.h5" --t-max 1e-4 --out "$tmp/o"
+        refused "an HDF5 sample whose x is stored in a FIFO (it hung)" "s28_efifo.h5': HDF5 dataset 'x' is stored in external files" \
+            layer-impact --sample "$tmp/s28_efifo.h5" --t-max 1e-4 --out "$tmp/o"
+        refused "an HDF5 sample whose x is stored in /dev/zero (read as zeros)" "s28_ezero.h5': HDF5 dataset 'x' is stored in external files" \
+            layer-impact --sample "$tmp/s28_ezero.h5" --t-max 1e-4 --out "$tmp/o"
+        refused "an HDF5 sample whose x is stored in a raw file (ran, outside its content hash)" \
+            "s28_eraw.h5': HDF5 dataset 'x' is stored in external files" \
+            layer-impact --sample "$tmp/s28_eraw.h5" --t-max 1e-4 --out "$tmp/o"
+        refused "an HDF5 sample whose x is a soft link" "s28_soft.h5': HDF5 dataset 'x' is a soft link" \
+            layer-impact --sample "$tmp/s28_soft.h5" --t-max 1e-4 --out "$tmp/o"
+        refused "an HDF5 sample whose n is a string (it said 'n = 0')" "s28_nstr.h5': HDF5 attribute 'n' is not one integer" \
+            layer-impact --sample "$tmp/s28_nstr.h5" --t-max 1e-4 --out "$tmp/o"
+    else
+        echo "SKIP: 28 (granwave without HDF5)"
+    fi
+else
+    echo "SKIP: 28 (no h5py)"
+fi
+
+# --- 29: the overlap check on a column of discs ----------------------------------------
+awk 'BEGIN { n = 100000; rm = 0.01; printf "granwave-layer-sample 1\nwidth %.17g\nrm %.17g\nn %d\n", 2 * rm, rm, n
+             for (k = 0; k < n - 1; k++) printf "%.17g %.17g %.17g\n", rm, rm * (2 * k + 1), rm
+             printf "%.17g %.17g %.17g\n", rm, rm * (2 * (n - 2) + 2), rm }' >"$tmp/s29.txt"
+refused "a column of 1e5 discs whose top two overlap, refused within 20 s (it took 35 s)" \
+    "sample '.*s29.txt': particles 99998 and 99999 overlap by 1 R_p" \
+    layer-impact --sample "$tmp/s29.txt" --t-max 1e-4 --out "$tmp/o"
+
+# --- 30: journals edited by hand -------------------------------------------------------
+printf '[sweep]\nmodel = layer\n[grid]\nvi = 10, 20, 30, 40\n[params]\nsample = %s\nt-max = 1e-4\n' "$S300" >"$tmp/w30.ini"
+printf '[sweep]\nmodel = layer\n[grid]\nvi = 11, 21, 31, 41\n[params]\nsample = %s\nt-max = 1e-4\n' "$S300" >"$tmp/w30b.ini"
+printf '[sweep]\nmodel = layer\n[grid]\nvi = 10\n[params]\nsample = %s\nt-max = 2e-4\n' "$S300" >"$tmp/w30d.ini"
+if runs "a layer sweep of 4 cases" sweep "$tmp/w30.ini" --out "$tmp/w30" --quiet --jobs 1 &&
+   runs "  one over another grid" sweep "$tmp/w30b.ini" --out "$tmp/w30b" --quiet &&
+   runs "  one of its case 0 at another t-max" sweep "$tmp/w30d.ini" --out "$tmp/w30d" --quiet; then
+    j30=$tmp/w30/journal.csv
+    cp "$j30" "$tmp/j30.orig"
+    # resume WHAT PATTERN: the sweep over the edited journal is refused, the journal unchanged
+    resume30() {
+        rm -f "$tmp/w30/results.csv"; cp "$j30" "$tmp/j30.edited"
+        refused "$1" "$2" sweep "$tmp/w30.ini" --out "$tmp/w30" --quiet
+        cmp -s "$j30" "$tmp/j30.edited" && [ ! -e "$tmp/w30/results.csv" ] && ok "  the journal is left as it was, no table" ||
+            ko "  the journal changed ($(grep -vc '^#' "$j30") rows) or a table was written"
+        cp "$tmp/j30.orig" "$j30"
+    }
+    awk -F, -v OFS=, 'n == 1 && !/^#/ { $3 = "1" $3; n = 2 } !/^#/ && !n { n = 1 } { print }' "$tmp/j30.orig" >"$j30"
+    resume30 "a value edited in the second row (that row and the two after it were dropped and rerun)" \
+        "^granwave sweep: .*w30/journal.csv:4: its checksum does not match its values: the journal was edited by hand"
+    awk '!/^#/ && !d { d = 1; next } { print }' "$tmp/j30.orig" >"$j30"
+    grep -v '^#' "$tmp/w30b/journal.csv" | head -1 >>"$j30"
+    resume30 "case 0's row replaced by case 0 of a sweep over another grid (taken for case 0)" \
+        "journal.csv:6: its grid values are not its case's \(a row of another sweep\)"
+    grep -v '^#' "$tmp/w30d/journal.csv" | head -1 >>"$j30"
+    resume30 "case 0 journaled twice with different results (t-max 2e-4's row pasted; the table took the first)" \
+        "journal.csv:7: case 0 is journaled twice with different results \(lines 3 and 7\)"
+    cp "$tmp/j30.orig" "$j30"; grep -v '^#' "$tmp/j30.orig" | head -1 >>"$j30"
+    rm -f "$tmp/w30/results.csv"
+    runs "  a journal with one row copied resumes" sweep "$tmp/w30.ini" --out "$tmp/w30" --quiet
+    cp "$tmp/j30.orig" "$j30"
+    : >"$j30"
+    resume30 "an empty journal (said 'another sweep (different config)')" \
+        "w30/journal.csv: not a granwave sweep journal \(its first line is not"
+    head -c -25 "$tmp/j30.orig" >"$j30"; rm -f "$tmp/w30/results.csv"
+    if runs "a torn last row (no newline) is cut and its case rerun" sweep "$tmp/w30.ini" --out "$tmp/w30" --quiet; then
+        cmp -s "$j30" "$tmp/j30.orig" && ok "  to the same journal, byte for byte" || ko "  the journal differs"
+    fi
+    mkdir -p "$tmp/w30c/results.csv"
+    refused "a sweep whose results.csv is a directory (failed with exit 1 after every case)" \
+        "^granwave sweep table: '.*w30c/results.csv' is a directory; give a regular file" \
+        sweep "$tmp/w30.ini" --out "$tmp/w30c" --quiet
+    [ ! -e "$tmp/w30c/journal.csv" ] && ok "  refused before the first case (no journal)" || ko "  a journal was written"
+fi
+
+# --- 31: a NUL byte in a sweep config ------------------------------------------------------
+printf '[sweep]\nmodel = layer\n[grid]\nvi = 10, 20\n[params]\nsample = %s\nt-max = 1e-4\000\nrings = 2\n' "$S300" >"$tmp/w31.ini"
+refused "a config with a NUL byte on line 7 (the rest of the file was dropped: rings = 2 ignored)" \
+    "^granwave sweep: .*w31.ini:7: a NUL byte \(binary data, not a config\)" sweep "$tmp/w31.ini" --out "$tmp/o" --quiet
+
+# --- 32: a sweep table that claims 1e12 cases ---------------------------------------------
+if [ -s "$tmp/w30/results.csv" ]; then
+    grep -v '^# grid' "$tmp/w30/results.csv" | sed '1s/ 4 of 4 cases$/ 4 of 1000000000000 cases/' >"$tmp/t32.csv"
+    refused "a table whose first line says 4 of 1e12 cases (1 TB allocated: a sanitizer abort)" \
+        "t32.csv: case 4 is missing \(999999999996 of the sweep's 1000000000000 cases are\)" layer-stats "$tmp/t32.csv" --out "$tmp/o"
+    grep -v '^# grid' "$tmp/w30/results.csv" | sed '1s/ 4 of 4 cases$/ 4 of 6 cases/' | awk -F, -v OFS=, '!/^#/ && $1 == "3" { $1 = "5" } { print }' >"$tmp/t32b.csv"
+    refused "  a table of 4 of 6 cases with case 5 for case 3: 3 and 4 missing" \
+        "t32b.csv: case 3 is missing \(2 of the sweep's 6 cases are\)" layer-stats "$tmp/t32b.csv" --out "$tmp/o"
+fi
+sed '10s/,1,/,1\x00,/' "$SRC/data/measured/layer_diagram/results.csv" >"$tmp/t32c.csv"
+refused "a table with a NUL byte on line 10 (it said line 1)" "t32c.csv:10: binary data \(NUL byte\)" layer-stats "$tmp/t32c.csv" --out "$tmp/o"
+
+# --- 33: a grid of samples, one edited mid-sweep ------------------------------------------------
+cp "$S300" "$tmp/a33.txt"; cp "$S300" "$tmp/b33.txt"; echo "# b" >>"$tmp/b33.txt"
+printf '[sweep]\nmodel = layer\n[grid]\nsample = %s, %s\nvi = 10, 12, 14, 16, 18, 20\n[params]\nt-max = 0.1\n' "$tmp/a33.txt" "$tmp/b33.txt" >"$tmp/w33.ini"
+timeout -s KILL 300 "$GW" sweep "$tmp/w33.ini" --out "$tmp/w33" --quiet --jobs 1 >"$tmp/stdout" 2>"$tmp/stderr" </dev/null &
+pid33=$!
+for _ in $(seq 1 1200); do
+    n33=$(grep -vc '^#' "$tmp/w33/journal.csv" 2>/dev/null)
+    [ "${n33:-0}" -ge 1 ] && break
+    sleep 0.05
+done
+echo "# edited while the sweep runs" >>"$tmp/b33.txt"
+wait $pid33; rc=$?
+n33=$(grep -vc '^#' "$tmp/w33/journal.csv" 2>/dev/null)
+if [ $rc -eq 2 ] && [ "${n33:-0}" -eq 6 ] && [ ! -e "$tmp/w33/results.csv" ] &&
+   grep -q "^granwave sweep: sample '.*b33.txt' changed while the sweep ran" "$tmp/stderr"; then
+    ok "sample b of a grid edited during sample a's cases: a's 6 rows kept, stopped at b's first (exit 2)"
+else
+    ko "sample b edited mid-sweep: exit $rc, ${n33:-0} rows (expected 6), $(cat "$tmp/stderr")"
 fi
 
 echo "test_hostile_layer: $passes passed, $fails failed"

@@ -19,6 +19,11 @@
  *   a text file named .h5); truncated, metadata-corrupted, checksum-less,
  *   foreign and inconsistent (length mismatch, NaN) HDF5 files are refused with
  *   GW_EFORMAT naming the file. Without HDF5, writing .h5 is GW_EUNSUPPORTED.
+ * - The reader's overlap check (a grid of cells; it was a sweep over x,
+ *   quadratic in a column of discs) finds the same first pair (i, j) as a
+ *   brute-force check over all pairs, on jittered packings of discs of radii
+ *   spread over 1:20 with one or two discs moved onto others, and accepts the
+ *   packings without them.
  * - Impact of a block (R_b = 0.7 R_m, 10 m/s, 20 ms) on the small sample: the
  *   energy ledger
  *   closes to 1e-4 (measured ~1e-6 with ARKode/CVODE, ~1e-5 with RK4, see
@@ -358,6 +363,82 @@ static void bad_files(void)
     gw_test_true(gw_layer_sample_read("no/such/file.txt", &s, &err) == GW_EIO, "missing sample file: GW_EIO");
 }
 
+static unsigned long long rnd_state = 12345;
+static double RND(void)
+{
+    rnd_state = rnd_state * 6364136223846793005ULL + 1442695040888963407ULL;
+    return (double)(rnd_state >> 11) / 9007199254740992.0;
+}
+
+/* The overlap check against all pairs: 24 packings of 400 discs on a jittered
+ * grid (radii 0.025 .. 0.5 of the 1 m cell, one disc of 2 m in some), each
+ * read as written (accepted: no pair overlaps by 0.05 R_p) and with one or
+ * two discs moved onto others (refused naming the first pair in index order,
+ * as a brute-force search finds it). */
+static void overlap_pairs(void)
+{
+    enum { G = 20, N = G * G };
+    static double x[N], y[N], r[N];
+    const char *path = "test_layer_sample_ov.txt";
+    int agree = 0, accepted = 0;
+    for (int t = 0; t < 24; t++) {
+        for (int k = 0; k < N; k++) {
+            const double u = RND();
+            r[k] = 0.025 + 0.475 * u * RND();
+            x[k] = 3.0 * (k % G) + 1.5 + (1.0 - r[k]) * (2 * RND() - 1) * 0.9;
+            y[k] = 3.0 * (k / G) + 1.5 + (1.0 - r[k]) * (2 * RND() - 1) * 0.9;
+        }
+        if (t % 3 == 1) { /* a disc of 1.4 m at its cell's centre */
+            const int k = (t * 37) % N;
+            r[k] = 1.4, x[k] = 3.0 * (k % G) + 1.5, y[k] = 3.0 * (k / G) + 1.5;
+        }
+        const int moves = t % 4 == 0 ? 0 : 1 + t % 2;
+        for (int m = 0; m < moves; m++) {
+            int a = (int)(RND() * N);
+            int b = (int)(RND() * N);
+            if (a == b)
+                b = (b + 1) % N;
+            x[b] = x[a] + 0.5 * r[a] * (2 * RND() - 1);
+            y[b] = y[a] + 0.5 * r[a] * (2 * RND() - 1);
+            if (y[b] < r[b])
+                y[b] = r[b];
+            if (x[b] < r[b] || x[b] > 3.0 * G - r[b])
+                x[b] = x[a];
+        }
+        int fi = -1, fj = -1;
+        for (int i = 0; i < N && fi < 0; i++)
+            for (int j = i + 1; j < N; j++) {
+                double ov = r[i] + r[j] - hypot(x[j] - x[i], y[j] - y[i]), rp = 2 * r[i] * r[j] / (r[i] + r[j]);
+                if (ov > 0.05 * rp) {
+                    fi = i, fj = j;
+                    break;
+                }
+            }
+        FILE *fp = fopen(path, "w");
+        if (!fp)
+            continue;
+        fprintf(fp, "granwave-layer-sample 1\nwidth %d\nrm 0.5\nn %d\n", 3 * G, N);
+        for (int k = 0; k < N; k++)
+            fprintf(fp, "%.17g %.17g %.17g\n", x[k], y[k], r[k]);
+        fclose(fp);
+        gw_layer_sample s;
+        gw_err err = {{0}};
+        int rc = gw_layer_sample_read(path, &s, &err);
+        char want[64];
+        snprintf(want, sizeof want, "particles %d and %d overlap", fi, fj);
+        if (fi < 0 ? rc == GW_OK : rc == GW_EFORMAT && strstr(err.msg, want) != NULL)
+            agree++;
+        else
+            printf("  packing %d: brute force %d, %d; reader rc %d: %s\n", t, fi, fj, rc, err.msg);
+        accepted += fi < 0 && rc == GW_OK;
+        gw_layer_sample_free(&s);
+    }
+    remove(path);
+    char what[120];
+    snprintf(what, sizeof what, "overlap check = brute force on 24 packings (%d accepted as they should)", accepted);
+    gw_test_true(agree == 24 && accepted >= 6, what);
+}
+
 int main(void)
 {
     gw_layer_params lp = gw_layer_params_default();
@@ -393,6 +474,7 @@ int main(void)
     remove(path);
     bad_files();
     bad_text_inputs();
+    overlap_pairs();
     hdf5_samples(&a);
 
     /* impact on the small sample, three backends */

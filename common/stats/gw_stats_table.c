@@ -242,6 +242,12 @@ static int parse_row(gw_stats_table *t, char *line, long ln, int ncells, int cb,
     return GW_OK;
 }
 
+static int cmp_case(const void *a, const void *b)
+{
+    long x = *(const long *)a, y = *(const long *)b;
+    return (x > y) - (x < y);
+}
+
 /* The sweep's first line: "granwave V sweep, model M, config H, N of C cases"
  * (after the '#'). Only the counts are kept; a first line that ends " cases"
  * but does not say them is refused (an edited header). */
@@ -370,9 +376,18 @@ static int check_complete(const gw_stats_table *t, gw_err *err)
     if (t->sweep_cases < 0)
         return GW_OK;
     const long c = t->sweep_cases;
-    char *seen = calloc((size_t)c, 1);
-    if (!seen)
+    /* The cases are marked up to m = min(C, rows + 1) only: with fewer rows
+     * than C a case below m is missing, and the count C comes from the file.
+     * A first line saying "3 of 1000000000000 cases" allocated 1 TB (an
+     * AddressSanitizer abort, "out of memory" exit 1 in release); 5e9 cases
+     * took 15 s and 5 GB of address space to be refused. */
+    const long m = t->nrows < c ? t->nrows + 1 : c;
+    char *seen = calloc((size_t)m, 1);
+    long *high = malloc(((size_t)t->nrows + 1) * sizeof *high), nhigh = 0;
+    if (!seen || !high) {
+        free(seen), free(high);
         return gw_err_set(err, GW_ENOMEM, "%s: out of memory", t->path);
+    }
     int rc = GW_OK;
     for (long r = 0; r < t->nrows && rc == GW_OK; r++) {
         long k = t->case_id[r];
@@ -381,7 +396,10 @@ static int check_complete(const gw_stats_table *t, gw_err *err)
                             "names (a row from another sweep)", t->path, k, c);
             break;
         }
-        seen[k] = 1;
+        if (k < m)
+            seen[k] = 1;
+        else
+            high[nhigh++] = k;
         for (int i = 0; nl > 0 && i < t->ngrid; i++) {
             long cnt = 1;
             for (int j = i + 1; j < t->ngrid; j++)
@@ -399,9 +417,15 @@ static int check_complete(const gw_stats_table *t, gw_err *err)
     }
     if (rc == GW_OK && (t->nrows != c || t->sweep_rows != c)) {
         long miss = 0, first = -1;
-        for (long k = 0; k < c; k++)
+        for (long k = 0; k < m; k++)
             if (!seen[k] && miss++ == 0)
                 first = k;
+        /* the cases in [m, C) not in the table: C - m less the distinct ones seen there */
+        qsort(high, (size_t)nhigh, sizeof *high, cmp_case);
+        long distinct = 0;
+        for (long i = 0; i < nhigh; i++)
+            distinct += i == 0 || high[i] != high[i - 1];
+        miss += (c - m) - distinct;
         char vals[1024] = "";
         if (first >= 0 && nl > 0) {
             char tmp[1000];
@@ -417,13 +441,8 @@ static int check_complete(const gw_stats_table *t, gw_err *err)
                             "%ld (an edited header)", t->path, t->sweep_rows, c, c);
     }
     free(seen);
+    free(high);
     return rc;
-}
-
-static int cmp_case(const void *a, const void *b)
-{
-    long x = *(const long *)a, y = *(const long *)b;
-    return (x > y) - (x < y);
 }
 
 /* A row's grid values as one string "key = value, ...", numbers printed back
@@ -593,8 +612,13 @@ int gw_stats_table_read(const char *path, gw_stats_table *t, gw_err *err)
     int rc = gw_input_read(path, "sweep table", (size_t)1 << 32, &buf, &len, err);
     if (rc == GW_EINVAL)
         rc = GW_EFORMAT;
-    if (rc == GW_OK && memchr(buf, '\0', len))
-        rc = gw_err_set(err, GW_EFORMAT, "%s:1: binary data (NUL byte), not a CSV table", path);
+    const char *nul = rc == GW_OK ? memchr(buf, '\0', len) : NULL;
+    if (nul) { /* on its line (it said line 1 wherever the byte was) */
+        long ln = 1;
+        for (const char *q = buf; q < nul; q++)
+            ln += *q == '\n';
+        rc = gw_err_set(err, GW_EFORMAT, "%s:%ld: binary data (NUL byte), not a CSV table", path, ln);
+    }
     if (rc == GW_OK)
         rc = gw_stats_table_parse(buf, path, t, err);
     free(buf);

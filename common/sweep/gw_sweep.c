@@ -329,9 +329,20 @@ int gw_sweep_config_read(const char *path, const gw_sweep_model *const *models, 
     *model = NULL;
     parse_ctx pc = {cfg, models, nmodels, "", 0, 0};
     char *text = NULL;
-    int rc = gw_input_read(path, "sweep CONFIG", GW_SWEEP_CONFIG_MAX, &text, NULL, err);
+    size_t len = 0;
+    int rc = gw_input_read(path, "sweep CONFIG", GW_SWEEP_CONFIG_MAX, &text, &len, err);
     if (rc != GW_OK)
         return GW_EINVAL; /* a config that cannot be read is bad input (exit 2) */
+    /* the reader takes the text as a C string: everything after a NUL byte was
+     * dropped without a word ('rings = 2' after one ran the default rings) */
+    const char *nul = memchr(text, '\0', len);
+    if (nul) {
+        long ln = 1;
+        for (const char *q = text; q < nul; q++)
+            ln += *q == '\n';
+        free(text);
+        return gw_err_set(err, GW_EINVAL, "%s:%ld: a NUL byte (binary data, not a config)", path, ln);
+    }
     if (lines_fit(text, path, err) != GW_OK) {
         free(text);
         return GW_EINVAL;
@@ -397,8 +408,27 @@ static int find_inputs(const char *path, gw_sweep_config *cfg, gw_err *err)
 
 int gw_sweep_inputs_check(const gw_sweep_config *cfg, gw_err *err)
 {
+    return gw_sweep_case_inputs_check(cfg, -1, err);
+}
+
+/* 1 when case k (k < 0: every case) reads input in. */
+static int case_reads(const gw_sweep_config *cfg, long k, const struct gw_sweep_input *in)
+{
+    const char *names[2 * GW_SWEEP_MAX_KEYS], *values[2 * GW_SWEEP_MAX_KEYS];
+    if (k < 0 || gw_sweep_case(cfg, k, names, values) != GW_OK)
+        return 1;
+    for (int j = 0; j < cfg->ngrid + cfg->nparams; j++)
+        if (strcmp(names[j], in->key) == 0 && strcmp(values[j], in->value) == 0)
+            return 1;
+    return 0;
+}
+
+int gw_sweep_case_inputs_check(const gw_sweep_config *cfg, long k, gw_err *err)
+{
     for (int i = 0; i < cfg->ninputs; i++) {
         const struct gw_sweep_input *in = &cfg->inputs[i];
+        if (!case_reads(cfg, k, in))
+            continue;
         unsigned long long fh = 0;
         gw_err e;
         if (gw_fnv1a64_file(in->value, in->key, &fh, &e) != GW_OK)
@@ -599,17 +629,79 @@ static long check_line(const char *line, size_t len, long ncases)
     return (*end == ',' && k >= 0 && k < ncases) ? k : -1;
 }
 
+/* A journal row as read: its case, text (without ",checksum\n") and line. */
+typedef struct jrow {
+    long k;
+    const char *s;
+    size_t len;
+    long line;
+} jrow;
+
+static int jrow_cmp(const void *pa, const void *pb)
+{
+    const jrow *a = pa, *b = pb;
+    if (a->k != b->k)
+        return a->k < b->k ? -1 : 1;
+    return (a->line > b->line) - (a->line < b->line);
+}
+
+/* Why a complete line that check_line refused is no row of this sweep. */
+static const char *journal_line_fault(const char *line, size_t len, long ncases)
+{
+    if (line[0] == '#')
+        return "a comment line among the rows";
+    char *end;
+    long k = strtol(line, &end, 10);
+    if (end == line || *end != ',')
+        return "not a row (it does not start with a case number)";
+    const char *comma = NULL;
+    for (size_t i = len - 2; i > 0 && !comma; i--)
+        if (line[i] == ',')
+            comma = line + i;
+    if (comma && (size_t)(line + len - 1 - comma) == 9) {
+        char hex[9];
+        memcpy(hex, comma + 1, 8);
+        hex[8] = '\0';
+        unsigned long sum = strtoul(hex, &end, 16);
+        if (!*end && sum == fnv32(line, (size_t)(comma - line) + 1))
+            return k < 0 || k >= ncases ? "a case number outside the sweep's cases" : "not a row of this sweep";
+    }
+    return "its checksum does not match its values";
+}
+
+/* NULL when the grid values of row k (the fields after the case number) are
+ * case k's, as the sweep writes them; else why not. A row with a good
+ * checksum from a sweep over another grid was taken for case k silently. */
+static const char *row_grid_fault(const gw_sweep_config *cfg, long k, const char *line, size_t len)
+{
+    const char *names[2 * GW_SWEEP_MAX_KEYS], *values[2 * GW_SWEEP_MAX_KEYS];
+    if (gw_sweep_case(cfg, k, names, values) != GW_OK)
+        return "a case number outside the sweep's cases";
+    const char *p = memchr(line, ',', len), *end = line + len;
+    for (int i = 0; i < cfg->ngrid; i++) {
+        if (!p)
+            return "fewer grid values than the sweep has";
+        p++;
+        const size_t vl = strlen(values[i]);
+        if ((size_t)(end - p) <= vl || memcmp(p, values[i], vl) != 0 || p[vl] != ',')
+            return "its grid values are not its case's (a row of another sweep)";
+        p += vl;
+    }
+    return NULL;
+}
+
 /* The journal or table: a regular file only (gw_input_read), NULL with errno set
  * (ENOENT when absent). */
-static char *slurp(const char *path, size_t *len)
+static char *slurp(const char *path, size_t *len, gw_err *err)
 {
     struct stat st;
-    if (stat(path, &st) != 0)
+    if (stat(path, &st) != 0) {
+        gw_err_set(err, GW_EIO, "%s: cannot read: %s", path, strerror(errno));
         return NULL;
+    }
     char *buf = NULL;
-    gw_err err;
-    if (gw_input_read(path, "sweep journal", (size_t)1 << 34, &buf, len, &err) != GW_OK) {
-        errno = EINVAL;
+    if (gw_input_read(path, "sweep journal", (size_t)1 << 34, &buf, len, err) != GW_OK) {
+        errno = EINVAL; /* what it is (a FIFO, a directory) is in err: it said "Invalid argument" */
         return NULL;
     }
     return buf;
@@ -621,13 +713,23 @@ int gw_sweep_journal_scan(const char *dir, const gw_sweep_config *cfg, char *don
     *ndone = 0;
     if (gw_path_join(path, sizeof path, dir, "journal.csv") != GW_OK)
         return gw_err_set(err, GW_EINVAL, "%s: path too long", dir);
+    /* the table goes beside the journal once every case has run: a directory
+     * or a FIFO of its name failed the sweep (exit 1) after all its cases */
+    char tpath[4096];
+    if (gw_path_join(tpath, sizeof tpath, dir, "results.csv") != GW_OK)
+        return gw_err_set(err, GW_EINVAL, "%s: path too long", dir);
+    if (gw_out_file_check(tpath, "sweep table", err) != GW_OK)
+        return GW_EINVAL;
     size_t len = 0;
-    char *buf = slurp(path, &len);
+    gw_err rerr = {{0}};
+    char *buf = slurp(path, &len, &rerr);
     char head[96];
     snprintf(head, sizeof head, "# granwave sweep journal %016lx\n", cfg->hash);
     if (!buf) {
-        if (errno != ENOENT)
-            return gw_err_set(err, GW_EIO, "%s: cannot read: %s", path, strerror(errno));
+        if (errno != ENOENT) {
+            *err = rerr;
+            return GW_EINVAL;
+        }
         char *in = input_lines(cfg); /* a new journal: the config, and what its files held */
         size_t hl = strlen(head), il = in ? strlen(in) : 0;
         char *text = in ? malloc(hl + il + 1) : NULL;
@@ -644,9 +746,13 @@ int gw_sweep_journal_scan(const char *dir, const gw_sweep_config *cfg, char *don
     }
     if (strncmp(buf, "# granwave sweep journal ", 25) != 0 || strncmp(buf, head, strlen(head)) != 0) {
         int rc = strncmp(buf, "# granwave sweep journal ", 25) == 0 ? changed_input(cfg, buf, len, dir, err) : GW_OK;
+        const int ours = strncmp(buf, "# granwave sweep journal ", 25) == 0;
         free(buf);
         if (rc != GW_OK)
             return rc;
+        if (!ours) /* an empty, cut or converted file said "another sweep (different config)" */
+            return gw_err_set(err, GW_EINVAL, "%s: not a granwave sweep journal (its first line is not '# granwave "
+                              "sweep journal HASH'); remove it or choose another output", path);
         return gw_err_set(err, GW_EINVAL,
                           "%s: this directory holds another sweep (different config); remove it or choose another output",
                           dir);
@@ -658,21 +764,65 @@ int gw_sweep_journal_scan(const char *dir, const gw_sweep_config *cfg, char *don
             break;
         pos = good = (size_t)(nl - buf) + 1;
     }
-    while (pos < len) {
+    long line = 1;
+    for (size_t q = 0; q < pos; q++)
+        line += buf[q] == '\n';
+    /* Rows are appended whole (one write each), so only the last line can be
+     * torn (no newline: kill -9, a full disk); it is cut and its case reruns.
+     * A complete line that is not a row of this sweep was edited or pasted by
+     * hand: the scan stopped there and cut it and every row after it, so the
+     * finished cases behind an edited value were dropped and rerun, silently.
+     * It is refused now, naming the line, and the journal is left as it is. */
+    jrow *rows = NULL;
+    long nrows = 0, caprows = 0;
+    int rc = GW_OK;
+    while (pos < len && rc == GW_OK) {
         const char *nl = memchr(buf + pos, '\n', len - pos);
         size_t l = nl ? (size_t)(nl - (buf + pos)) + 1 : len - pos;
         long k = check_line(buf + pos, l, cfg->ncases);
-        if (k >= 0) {
-            if (!done[k])
-                (*ndone)++;
-            done[k] = 1;
+        const char *why = k < 0 ? journal_line_fault(buf + pos, l, cfg->ncases) : row_grid_fault(cfg, k, buf + pos, l);
+        if (k >= 0 && !why) {
+            if (nrows == caprows) {
+                long nc = caprows ? 2 * caprows : 1024;
+                jrow *t = realloc(rows, (size_t)nc * sizeof *t);
+                if (!t) {
+                    rc = gw_err_set(err, GW_ENOMEM, "%s: out of memory", path);
+                    break;
+                }
+                rows = t, caprows = nc;
+            }
+            rows[nrows++] = (jrow){k, buf + pos, l - 10, line};
             good = pos + l;
+        } else if (!nl) {
+            break; /* a torn last row: cut below */
         } else {
-            break; /* a torn row can only be the last one */
+            rc = gw_err_set(err, GW_EINVAL, "%s:%ld: %s: the journal was edited by hand (a torn row can only be the "
+                            "last line, without its newline); delete that line to rerun its case, or choose another "
+                            "output", path, line, why);
         }
         pos += l;
+        line++;
     }
+    /* A case journaled twice with different numbers (rows pasted from another
+     * journal): which is right cannot be told; copies of one row are harmless. */
+    if (rc == GW_OK && nrows > 1) {
+        qsort(rows, (size_t)nrows, sizeof *rows, jrow_cmp);
+        for (long i = 1; i < nrows && rc == GW_OK; i++)
+            if (rows[i].k == rows[i - 1].k &&
+                (rows[i].len != rows[i - 1].len || memcmp(rows[i].s, rows[i - 1].s, rows[i].len) != 0))
+                rc = gw_err_set(err, GW_EINVAL, "%s:%ld: case %ld is journaled twice with different results (lines "
+                                "%ld and %ld): delete the wrong one, or choose another output", path, rows[i].line,
+                                rows[i].k, rows[i - 1].line, rows[i].line);
+    }
+    for (long i = 0; rc == GW_OK && i < nrows; i++) {
+        if (!done[rows[i].k])
+            (*ndone)++;
+        done[rows[i].k] = 1;
+    }
+    free(rows);
     free(buf);
+    if (rc != GW_OK)
+        return rc;
     if (good < len && truncate(path, (off_t)good) != 0)
         return gw_err_set(err, GW_EIO, "%s: cannot cut a torn row: %s", path, strerror(errno));
     return GW_OK;
@@ -705,9 +855,9 @@ int gw_sweep_write_table(const char *dir, const gw_sweep_config *cfg, const gw_s
     if (gw_path_join(path, sizeof path, dir, "journal.csv") != GW_OK)
         return gw_err_set(err, GW_EINVAL, "%s: path too long", dir);
     size_t len = 0;
-    char *buf = slurp(path, &len);
+    char *buf = slurp(path, &len, err);
     if (!buf)
-        return gw_err_set(err, GW_EIO, "%s: cannot read", path);
+        return GW_EIO;
     row_ref *rows = calloc((size_t)cfg->ncases + 1, sizeof *rows);
     char *seen = calloc((size_t)cfg->ncases + 1, 1);
     long nr = 0;

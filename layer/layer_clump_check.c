@@ -114,44 +114,19 @@ int gw_layer_clump_mass_parse(const char *name)
 int layer_overlaps_check(int n, const double *x, const double *y, const double *r, const int *body,
                          const char *what, gw_err *err)
 {
-    double rmax = 0, x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
-    for (int i = 0; i < n; i++) {
-        rmax = fmax(rmax, r[i]);
-        x0 = fmin(x0, x[i]), x1 = fmax(x1, x[i]);
-        y0 = fmin(y0, y[i]), y1 = fmax(y1, y[i]);
-    }
     if (n < 2)
         return GW_OK;
-    const double ex = x1 - x0, ey = y1 - y0; /* finite: the readers check every position first */
-    double h = 2 * rmax;
-    if (!(h > 0) || !isfinite(ex) || !isfinite(ey))
-        return gw_err_set(err, GW_EFORMAT, "%s: positions or radii not finite and positive", what);
-    const double maxc = 16.0 * n + 64;
-    while ((ex / h + 1) * (ey / h + 1) > maxc)
-        h *= 2;
-    const long nx = (long)(ex / h) + 1, ny = (long)(ey / h) + 1, ncell = nx * ny;
-    int *start = calloc((size_t)ncell + 1, sizeof *start), *idx = malloc((size_t)n * sizeof *idx);
-    int *cell = malloc((size_t)n * sizeof *cell);
-    if (!start || !idx || !cell) {
-        free(start), free(idx), free(cell);
+    double rmax = 0;
+    for (int i = 0; i < n; i++)
+        rmax = fmax(rmax, r[i]);
+    layer_grid g; /* positions finite: the readers check every one first */
+    int rc = layer_grid_build(&g, n, x, y, 1, 2 * rmax);
+    if (rc == GW_ENOMEM)
         return gw_err_set(err, GW_ENOMEM, "%s: out of memory for the overlap check", what);
-    }
-    for (int i = 0; i < n; i++) {
-        long cx = (long)((x[i] - x0) / h), cy = (long)((y[i] - y0) / h);
-        cx = cx < 0 ? 0 : cx >= nx ? nx - 1 : cx;
-        cy = cy < 0 ? 0 : cy >= ny ? ny - 1 : cy;
-        cell[i] = (int)(cy * nx + cx);
-        start[cell[i] + 1]++;
-    }
-    for (long k = 0; k < ncell; k++)
-        start[k + 1] += start[k];
-    for (int i = 0; i < n; i++) /* each cell filled from its end */
-        idx[--start[cell[i] + 1]] = i;
-    /* start[k + 1] now points at cell k's first entry; shift back */
-    for (long k = 0; k < ncell; k++)
-        start[k] = start[k + 1];
-    start[ncell] = n;
-    int rc = GW_OK;
+    if (rc != GW_OK)
+        return gw_err_set(err, GW_EFORMAT, "%s: positions or radii not finite and positive", what);
+    const long nx = g.nx, ny = g.ny;
+    const int *start = g.start, *idx = g.idx, *cell = g.cell;
     for (int i = 0; i < n && rc == GW_OK; i++) {
         const long cx = cell[i] % nx, cy = cell[i] / nx;
         int first = -1;
@@ -176,6 +151,6 @@ int layer_overlaps_check(int n, const double *x, const double *y, const double *
                             "(a settled sample: about 0.002): their contact would inject energy",
                             what, i, first, worst / rpw, SAMPLE_OVERLAP_MAX);
     }
-    free(start), free(idx), free(cell);
+    layer_grid_free(&g);
     return rc;
 }

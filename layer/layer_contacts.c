@@ -41,58 +41,70 @@ static int push(layer_contact **c, int *nc, int *cap, int a, int b)
     return GW_OK;
 }
 
-/* Candidate pairs by a cell list over the bounding box of the particles. */
-static int pairs_cells(const gw_layer *L, layer_contact **c, int *nc, int *cap)
+/* See layer_impl.h. */
+int layer_grid_build(layer_grid *g, int n, const double *px, const double *py, int stride, double h)
 {
-    const int n = L->n;
-    const double *y = L->x_list, s = L->p.skin, h = 2 * L->rmax + s; /* disc positions */
+    memset(g, 0, sizeof *g);
     double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
     for (int i = 0; i < n; i++) {
-        x0 = fmin(x0, y[2 * i]), x1 = fmax(x1, y[2 * i]);
-        y0 = fmin(y0, y[2 * i + 1]), y1 = fmax(y1, y[2 * i + 1]);
+        const double xi = px[(size_t)i * stride], yi = py[(size_t)i * stride];
+        x0 = fmin(x0, xi), x1 = fmax(x1, xi);
+        y0 = fmin(y0, yi), y1 = fmax(y1, yi);
     }
     /* a particle far away (a block thrown high) must not blow up the grid:
      * coarsen the cells until their number is linear in n (pairs stay exact);
      * counted in doubles, so that no extent overflows an integer */
     const double ex = x1 - x0, ey = y1 - y0;
-    if (!isfinite(ex) || !isfinite(ey))
+    if (n < 1 || !isfinite(ex) || !isfinite(ey) || !(h > 0))
         return GW_ELIMIT;
-    double hx = h;
-    const long maxc = 16L * n + 64;
-    while ((ex / hx + 1) * (ey / hx + 1) > (double)maxc)
-        hx *= 2;
-    long nx = (long)(ex / hx) + 1, ny = (long)(ey / hx) + 1;
-    const double hy = hx;
-    long ncell = nx * ny;
-    int *start = calloc((size_t)ncell + 1, sizeof *start);
-    int *idx = malloc((size_t)n * sizeof *idx), *cell = malloc((size_t)n * sizeof *cell);
-    int rc = GW_OK;
-    if (!start || !idx || !cell) {
-        rc = GW_ENOMEM;
-        goto done;
+    const double maxc = 16.0 * n + 64;
+    while ((ex / h + 1) * (ey / h + 1) > maxc)
+        h *= 2;
+    const long nx = (long)(ex / h) + 1, ny = (long)(ey / h) + 1, ncell = nx * ny;
+    g->nx = nx, g->ny = ny;
+    g->start = calloc((size_t)ncell + 1, sizeof *g->start);
+    g->idx = malloc((size_t)n * sizeof *g->idx);
+    g->cell = malloc((size_t)n * sizeof *g->cell);
+    int *fill = malloc((size_t)ncell * sizeof *fill);
+    if (!g->start || !g->idx || !g->cell || !fill) {
+        free(fill);
+        layer_grid_free(g);
+        return GW_ENOMEM;
     }
     for (int i = 0; i < n; i++) {
-        long cx = (long)((y[2 * i] - x0) / hx), cy = (long)((y[2 * i + 1] - y0) / hy);
+        long cx = (long)((px[(size_t)i * stride] - x0) / h), cy = (long)((py[(size_t)i * stride] - y0) / h);
         cx = cx < 0 ? 0 : cx >= nx ? nx - 1 : cx;
         cy = cy < 0 ? 0 : cy >= ny ? ny - 1 : cy;
-        cell[i] = (int)(cy * nx + cx);
-        start[cell[i] + 1]++;
+        g->cell[i] = (int)(cy * nx + cx);
+        g->start[g->cell[i] + 1]++;
     }
     for (long k = 0; k < ncell; k++)
-        start[k + 1] += start[k];
-    {
-        int *fill = malloc((size_t)ncell * sizeof *fill);
-        if (!fill) {
-            rc = GW_ENOMEM;
-            goto done;
-        }
-        memcpy(fill, start, (size_t)ncell * sizeof *fill);
-        for (int i = 0; i < n; i++)
-            idx[fill[cell[i]]++] = i;
-        free(fill);
-    }
+        g->start[k + 1] += g->start[k];
+    memcpy(fill, g->start, (size_t)ncell * sizeof *fill);
+    for (int i = 0; i < n; i++)
+        g->idx[fill[g->cell[i]]++] = i;
+    free(fill);
+    return GW_OK;
+}
+
+void layer_grid_free(layer_grid *g)
+{
+    free(g->start), free(g->idx), free(g->cell);
+    memset(g, 0, sizeof *g);
+}
+
+/* Candidate pairs by a cell list over the bounding box of the particles. */
+static int pairs_cells(const gw_layer *L, layer_contact **c, int *nc, int *cap)
+{
+    const int n = L->n;
+    const double *y = L->x_list, s = L->p.skin; /* disc positions */
+    layer_grid g;
+    int rc = layer_grid_build(&g, n, y, y + 1, 2, 2 * L->rmax + s);
+    if (rc != GW_OK)
+        return rc;
+    const long nx = g.nx, ny = g.ny;
     for (int i = 0; i < n && rc == GW_OK; i++) {
-        long cx = cell[i] % nx, cy = cell[i] / nx;
+        long cx = g.cell[i] % nx, cy = g.cell[i] / nx;
         for (long ky = cy - 1; ky <= cy + 1; ky++) {
             if (ky < 0 || ky >= ny)
                 continue;
@@ -100,8 +112,8 @@ static int pairs_cells(const gw_layer *L, layer_contact **c, int *nc, int *cap)
                 if (kx < 0 || kx >= nx)
                     continue;
                 long kc = ky * nx + kx;
-                for (int q = start[kc]; q < start[kc + 1]; q++) {
-                    int j = idx[q];
+                for (int q = g.start[kc]; q < g.start[kc + 1]; q++) {
+                    int j = g.idx[q];
                     if (j <= i)
                         continue;
                     int bi = layer_body(L, i), bj = layer_body(L, j);
@@ -115,10 +127,7 @@ static int pairs_cells(const gw_layer *L, layer_contact **c, int *nc, int *cap)
             }
         }
     }
-done:
-    free(start);
-    free(idx);
-    free(cell);
+    layer_grid_free(&g);
     return rc;
 }
 

@@ -263,6 +263,19 @@ int layer_members_connected(const double *x, const double *y, const double *r, i
  * "sample 'WHAT'" when s would be refused on reading. */
 int layer_sample_readable(const gw_layer_sample *s, const char *what, gw_err *err);
 
+/* A uniform grid of square cells over n points (px[i stride], py[i stride]),
+ * of side h or coarser (doubled until there are at most 16 n + 64 cells, so
+ * that a far point does not blow it up); cell k holds the points
+ * idx[start[k] .. start[k + 1]) in index order, and point i lies in cell[i]
+ * = cy nx + cx. GW_ELIMIT when the extent is not finite or h not positive,
+ * GW_ENOMEM; layer_grid_free frees it (and a zeroed grid). */
+typedef struct layer_grid {
+    long nx, ny;
+    int *start, *idx, *cell;
+} layer_grid;
+int layer_grid_build(layer_grid *g, int n, const double *px, const double *py, int stride, double h);
+void layer_grid_free(layer_grid *g);
+
 /* Discs i, j of different bodies (body may be NULL) overlapping by more than
  * 0.05 R_p, R_p = 2 r_i r_j / (r_i + r_j): GW_EFORMAT "WHAT: particles i and j
  * overlap by ..." (a read sample; a settled one overlaps by about 0.002 R_p). */

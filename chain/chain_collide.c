@@ -392,6 +392,13 @@ int gw_chain_memory_check(const gw_chain_params *p, const gw_solver_type *type, 
  * is allocated, in that order: at the defaults the bound that trips at the fewest
  * beads is named (rk4: steps from 1.25e5 beads, memory from 7.9e6, samples from
  * 7e6; cvode: memory from 2.3e6, samples from 7e6, steps from 1.3e7). */
+/* v rounded down to two significant digits (a suggested bound that passes). */
+static double floor_2digits(double v)
+{
+    const double p = pow(10, floor(log10(v)) - 1);
+    return floor(v / p) * p;
+}
+
 typedef struct collide_plan {
     double tc, tau1, t_max, dt_out, t_expect;
     gw_solver_params sp;
@@ -453,6 +460,26 @@ static int collide_plan_make(const gw_chain_params *p, const gw_chain_run_opts *
     if (o->sample == gw_chain_trace_sample &&
         (rc = gw_chain_trace_check(n, pl->t_expect, pl->dt_out, 4.0 * n + 2, err)) != GW_OK)
         return rc;
+    /* A run that does not end (a column held on the wall by gravity and damping,
+     * a sensor body still ringing) goes on to t_max: the bounds above hold over
+     * the expected collision, an explicit --t-max far beyond it must meet them too
+     * (--t-max 1e6 ran 1e11 steps, hours, with nothing said). The default t_max is
+     * 20 expected lengths, so it stays within 20 times the bounds. */
+    if (o->t_max > 0 && pl->t_max > pl->t_expect) {
+        const double t_lim = fmin(1e8 * step, max_samples * pl->dt_out);
+        if (!(pl->t_max <= t_lim))
+            return gw_err_set(err, GW_EINVAL, "t-max: %g s would take about %.3g steps of %g s and %.3g samples "
+                              "of %g s if the collision has not ended by then; at most 1e+08 steps and 1e+09 samples: "
+                              "lower t-max to %g s or less", pl->t_max, pl->t_max / step, step,
+                              pl->t_max / pl->dt_out, pl->dt_out, floor_2digits(t_lim));
+        if (o->sample == gw_chain_trace_sample) {
+            gw_err te = {{0}};
+            if (gw_chain_trace_check(n, pl->t_max, pl->dt_out, 4.0 * n + 2, &te) != GW_OK)
+                return gw_err_set(err, GW_EINVAL, "t-max: %g s would store about %.3g samples of %d beads if the "
+                                  "collision has not ended by then, above the 5 GB limit of the written trace: lower "
+                                  "t-max or raise dt-out", pl->t_max, pl->t_max / pl->dt_out + 1, n);
+        }
+    }
     return GW_OK;
 }
 

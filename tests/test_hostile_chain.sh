@@ -492,5 +492,27 @@ if runs "chain --n 1 --sensor-mass 1e3 --sensor-stiffness 1e12" "$tmp/s.json" ch
         "(lambda J, w: 0.8 * J * w <= j['f_max'] <= J * w)(j['settings']['model']['mass'] * j['v_imp'] * (1 + j['eps_eff']), (1e12 / 1e3) ** 0.5)"
 fi
 
+# --- 24: an explicit --t-max bounded like the collision it may prolong (REFUSE_TIMEOUT: at once)
+# a damped column held on the wall by gravity never ends: it ran to t-max
+REFUSE_TIMEOUT=5 refused "chain --t-max 1e6 on a column that does not end (ran for hours)" \
+    '^granwave chain: t-max: 1e\+06 s would take about 4.8.e\+10 steps .* at most 1e\+08 steps and 1e\+09 samples: lower t-max to [0-9]+ s or less$' \
+    chain --n 3 --vimp 1e-3 --gravity 1e4 --damping hc --alpha 1 --t-max 1e6 --out "$tmp/o"
+REFUSE_TIMEOUT=5 refused "the same with rk4" '^granwave chain: t-max: 1e\+06 s would take about 1.0.e\+13 steps' \
+    chain --n 3 --vimp 1e-3 --gravity 1e4 --damping hc --alpha 1 --t-max 1e6 --solver rk4
+REFUSE_TIMEOUT=5 refused "chain --t-max 100 --out: the trace it could store (5.7e8 samples)" \
+    '^granwave chain: t-max: 100 s would store about 5.7.e\+08 samples of 3 beads .* above the 5 GB limit' \
+    chain --n 3 --t-max 100 --out "$tmp/o"
+REFUSE_TIMEOUT=5 refused "falcon --t-max 1e6 (each run's bound)" '^granwave falcon: t-max: 1e\+06 s would take' \
+    falcon --n 1:3 --heights none --t-max 1e6 --quiet --out "$tmp/o"
+printf '[sweep]\nmodel = chain\n[grid]\nvimp = 1e-3\n[params]\nn = 3\ngravity = 1e4\ndamping = hc\nalpha = 1\nt-max = 1e6\n' >"$tmp/tm.ini"
+REFUSE_TIMEOUT=5 refused "a chain sweep with t-max 1e6: nothing made" '^granwave sweep: .*tm.ini: case 0: t-max: 1e\+06 s would take' \
+    sweep "$tmp/tm.ini" --out "$tmp/o" --quiet
+# the bound suggested passes, and a run that ends early is not held to it
+lim=$(sed -n 's/.*lower t-max to \([0-9.e+]*\) s or less.*/\1/p' "$tmp/stderr")
+timeout 3 "$GW" chain --n 3 --vimp 1e-3 --gravity 1e4 --damping hc --alpha 1 --t-max "${lim:-x}" >/dev/null 2>"$tmp/e" </dev/null; rc=$?
+[ $rc -ne 2 ] && ok "  the t-max it suggests ($lim s) is not refused (stopped after 3 s)" || ko "  suggested t-max $lim refused: $(cat "$tmp/e")"
+runs "chain --n 3 --t-max 2 (ends at 0.3 ms)" "$tmp/t.json" chain --n 3 --t-max 2 --json &&
+    jcheck "  converged, t_max recorded as given" "$tmp/t.json" "j['converged'] and j['settings']['solver']['t_max'] == 2"
+
 echo "test_hostile_chain: $passes passed, $fails failed"
 [ $fails -eq 0 ]

@@ -102,6 +102,15 @@
 #    the reading to stop rising. For an undamped sensor at rest hit by a pulse of
 #    impulse J = m v (1 + e), the peak reading k_s A lies in [0.8, 1] J omega
 #    (omega = sqrt(k_s/M); the pulse is 35 us, omega tau = 1.1).
+#  24 unbounded work: an explicit --t-max was bounded only over the collision's
+#    expected length; a column that does not end (damped, held on the wall by
+#    gravity) ran to --t-max 1e6 for hours (4.8e10 steps). Steps (1e8), samples
+#    (1e9) and the stored trace (5 GB) are bounded over an explicit t-max too,
+#    before the run: exit 2 naming t-max and the largest that passes.
+#  25 --out mixed two runs: a failed chain run wrote its trace and
+#    chain_failure.json beside the chain.json of an earlier finished run (and the
+#    other way round); dispersion's study and --column-n left each other's files.
+#    The members of the command's set that a run does not write are removed.
 set -u
 GW=$1
 SRC=${2:-.}
@@ -513,6 +522,31 @@ timeout 3 "$GW" chain --n 3 --vimp 1e-3 --gravity 1e4 --damping hc --alpha 1 --t
 [ $rc -ne 2 ] && ok "  the t-max it suggests ($lim s) is not refused (stopped after 3 s)" || ko "  suggested t-max $lim refused: $(cat "$tmp/e")"
 runs "chain --n 3 --t-max 2 (ends at 0.3 ms)" "$tmp/t.json" chain --n 3 --t-max 2 --json &&
     jcheck "  converged, t_max recorded as given" "$tmp/t.json" "j['converged'] and j['settings']['solver']['t_max'] == 2"
+
+# --- 25: --out holds one run's files: the members of the set this run does not write go
+o25="$tmp/o25"
+"$GW" chain --n 3 --out "$o25" >/dev/null 2>&1 </dev/null
+"$GW" chain --n 3 --t-max 1e-7 --out "$o25" >/dev/null 2>&1 </dev/null; rc=$?
+[ $rc -eq 1 ] && [ -s "$o25/chain_failure.json" ] && [ ! -e "$o25/chain.json" ] &&
+    ok "a failed chain run after a finished one: its failure file, no chain.json of the earlier run" ||
+    ko "chain failure over a success: exit $rc, $(ls "$o25" | tr '\n' ' ')"
+"$GW" chain --n 3 --out "$o25" >/dev/null 2>&1 </dev/null; rc=$?
+[ $rc -eq 0 ] && [ -s "$o25/chain.json" ] && [ ! -e "$o25/chain_failure.json" ] &&
+    ok "a finished chain run after a failed one: no chain_failure.json left" ||
+    ko "chain success over a failure: exit $rc, $(ls "$o25" | tr '\n' ' ')"
+rm -rf "$o25"
+"$GW" dispersion --column-n 3 --out "$o25" >/dev/null 2>&1 </dev/null
+"$GW" dispersion --n 16 --t-samples 64 --out "$o25" >/dev/null 2>&1 </dev/null; rc=$?
+[ $rc -eq 0 ] && [ -s "$o25/dispersion.json" ] && [ ! -e "$o25/wall_spectrum.csv" ] &&
+    ok "dispersion's study after --column-n: no wall_spectrum.csv of the earlier run" ||
+    ko "dispersion over --column-n: exit $rc, $(ls "$o25" | tr '\n' ' ')"
+"$GW" dispersion --column-n 3 --out "$o25" >/dev/null 2>&1 </dev/null; rc=$?
+[ $rc -eq 0 ] && [ -s "$o25/wall_spectrum.csv" ] && [ -z "$(ls "$o25" | grep -v wall_spectrum.csv)" ] &&
+    ok "dispersion --column-n after the study: only wall_spectrum.csv" ||
+    ko "dispersion --column-n over the study: exit $rc, $(ls "$o25" | tr '\n' ' ')"
+touch "$o25/notes.txt"
+"$GW" dispersion --column-n 3 --out "$o25" >/dev/null 2>&1 </dev/null
+[ -e "$o25/notes.txt" ] && ok "  a file of no output set is left alone" || ko "  notes.txt removed"
 
 echo "test_hostile_chain: $passes passed, $fails failed"
 [ $fails -eq 0 ]

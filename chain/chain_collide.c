@@ -287,6 +287,10 @@ static int collide_after(void *ctx, double t, const double *y, gw_err *err)
 {
     run_state *st = ctx;
     gw_chain_result *r = st->r;
+    char what[64];
+    if (chain_blown_up(st->c, y, r->energy_error, what, sizeof what))
+        return gw_err_set(err, GW_ESOLVER, "chain: the solution blew up at t = %.9g s (%s): the step does not "
+                          "resolve the stiffest contact; lower --dt or --dt-max, or use cvode", t, what);
     if (st->o->energy_tol > 0 && r->energy_error > st->o->energy_tol)
         return gw_err_set(err, GW_EENERGY, "chain: relative energy error %.3g exceeds the limit %.3g at t = %.9g s",
                           r->energy_error, st->o->energy_tol, t);
@@ -304,15 +308,23 @@ static int collide_after(void *ctx, double t, const double *y, gw_err *err)
 
 /* 1e8 steps: minutes at n = 3; the default RK4 step T_c/400 makes about 800 n
  * over a collision, so columns up to 1.25e5 beads (a day of CPU already) */
-int chain_steps_check(const gw_solver_type *type, const gw_solver_params *sp, double t_len, const char *over,
-                      gw_err *err)
+int chain_steps_check(const gw_solver_type *type, const gw_solver_params *sp, const gw_solver_params *given,
+                      double t_len, const char *over, gw_err *err)
 {
     const double max_steps_run = 1e8;
     const double step = type == gw_solver_rk4 ? fmin(sp->dt, sp->dt_max) : sp->dt_max;
+    const int is_dt = type == gw_solver_rk4 && sp->dt <= sp->dt_max;
+    /* a step the run chose itself resolves the stiffest contact (or the sensor
+     * body's oscillation): "raise it" would be wrong advice there */
+    const int chosen = is_dt ? !(given->dt > 0) : !(given->dt_max > 0);
     if (!(t_len / step <= max_steps_run))
         return gw_err_set(err, GW_EINVAL, "%s: a step of %g s needs about %.3g steps over %s (about %.3g s); "
-                          "at most %.0e: raise it", type == gw_solver_rk4 && sp->dt <= sp->dt_max ? "dt" : "dt-max",
-                          step, t_len / step, over, t_len, max_steps_run);
+                          "at most %.0e: %s", is_dt ? "dt" : "dt-max", step, t_len / step, over, t_len, max_steps_run,
+                          !chosen ? "raise it"
+                          : is_dt ? "the default step resolves the stiffest contact or the sensor body's oscillation "
+                                    "(a longer one loses the run): use cvode or arkode, or fewer beads"
+                                  : "the default largest step is a quarter of the shortest contact (a longer one can "
+                                    "step over a contact): fewer beads or a shorter run");
     return GW_OK;
 }
 
@@ -427,10 +439,12 @@ static int collide_plan_make(const gw_chain_params *p, const gw_chain_run_opts *
      * binary contact time at twice v_imp, so cap the step at a quarter of it. */
     if (!(pl->sp.dt_max > 0))
         pl->sp.dt_max = 0.25 * fmin(gw_chain_tau1(m0, p->kwall, 2 * p->v_imp),
-                                    gw_chain_tau1(0.5 * m0, p->k, 2 * p->v_imp));
+                                    chain_contact_tau_min(p, 2 * p->v_imp));
     pl->type = o->solver ? o->solver : gw_solver_cvode;
+    /* the step resolves the stiffest contact (a small bead between large ones was
+     * taken at bead 1's scale and blew up) and a sensor body's oscillation */
     if (pl->type == gw_solver_rk4 && !(pl->sp.dt > 0))
-        pl->sp.dt = pl->tc / (o->steps_per_tc > 0 ? o->steps_per_tc : 400.0);
+        pl->sp.dt = gw_chain_step_scale(p) / (o->steps_per_tc > 0 ? o->steps_per_tc : 400.0);
     /* and at least t_expect / step steps of O(n) each: bounded before the run
      * (the RK4 step, or the largest step of cvode/arkode) */
     /* Steps and samples grow about as n, memory as n (n^2 with a full Jacobian):
@@ -438,7 +452,7 @@ static int collide_plan_make(const gw_chain_params *p, const gw_chain_run_opts *
     const double max_samples = 1e9, step = pl->type == gw_solver_rk4 ? fmin(pl->sp.dt, pl->sp.dt_max) : pl->sp.dt_max;
     gw_err e[3] = {{{0}}};
     double n_ok[3] = {INFINITY, INFINITY, INFINITY};
-    if (chain_steps_check(pl->type, &pl->sp, pl->t_expect, "the collision", &e[0]) != GW_OK)
+    if (chain_steps_check(pl->type, &pl->sp, &o->sp, pl->t_expect, "the collision", &e[0]) != GW_OK)
         n_ok[0] = n * 1e8 / (pl->t_expect / step);
     if (gw_chain_memory_check(p, pl->type, pl->sp.method, &e[1]) != GW_OK)
         n_ok[1] = memory_n_ok(p, pl->type, pl->sp.method);
@@ -498,7 +512,12 @@ int gw_chain_collide(const gw_chain *c, const gw_chain_run_opts *o, gw_chain_res
     memset(r, 0, sizeof *r);
     r->n = n;
     collide_plan pl;
-    int prc = collide_plan_make(p, o, &pl, err);
+    /* the plan sees the chain's own per-bead masses and contact coefficients
+     * (gw_chain_create keeps them, not the caller's arrays) */
+    gw_chain_params pc = *p;
+    pc.masses = c->m;
+    pc.kc = n > 1 ? c->kc : NULL;
+    int prc = collide_plan_make(&pc, o, &pl, err);
     if (prc != GW_OK)
         return prc;
     r->final_v = calloc(4 * (size_t)n, sizeof *r->final_v);

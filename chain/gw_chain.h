@@ -385,6 +385,12 @@ void gw_chain_result_free(gw_chain_result *r);
 
 /* Characteristic time (m/k)^(2/5) v^(-1/5) of the chain, s. */
 double gw_chain_time_scale(const gw_chain_params *p);
+/* The time scale the steps resolve, s: T_c (gw_chain_time_scale) of a uniform
+ * column; shorter when a contact is (unequal beads, a light sensor body: each
+ * contact's binary contact time against that of two beads 1) or when the sensor
+ * body oscillates faster (1/omega = sqrt(M/k_s)). The default RK4 step is 1/400
+ * of it. */
+double gw_chain_step_scale(const gw_chain_params *p);
 
 /* ---- traces (wall force and bead trajectories) ---- */
 

@@ -111,6 +111,16 @@
 #    chain_failure.json beside the chain.json of an earlier finished run (and the
 #    other way round); dispersion's study and --column-n left each other's files.
 #    The members of the command's set that a run does not write are removed.
+#  26 unequal beads and sensor bodies: the RK4 step was T_c/400 of bead 1 and its
+#    neighbour only, and cvode's largest step a quarter of that pair's contact:
+#    a 30 um bead between 4 mm beads blew up under rk4 (F_max 1.4e52 N, exit 0),
+#    a sensor body of 0.1 g on 1e12 N/m gave F_max 2.1e-5 off. Both steps now
+#    come from every contact (reduced masses, the sensor's mass in the wall's)
+#    and the sensor's 1/omega; a default step that the steps bound refuses is
+#    not "to raise" (that loses the run): the message says so.
+#  27 a blown-up run (a state not finite, or a relative energy error above 1:
+#    the monitor kept its largest finite value, a NaN never exceeded it) exited
+#    0 with a warning about t_max; chain and drop now fail (exit 1) at the time.
 set -u
 GW=$1
 SRC=${2:-.}
@@ -547,6 +557,28 @@ rm -rf "$o25"
 touch "$o25/notes.txt"
 "$GW" dispersion --column-n 3 --out "$o25" >/dev/null 2>&1 </dev/null
 [ -e "$o25/notes.txt" ] && ok "  a file of no output set is left alone" || ko "  notes.txt removed"
+
+# --- 26: the RK4 step resolves every contact and the sensor body (cvode as the reference)
+for a in "--n 3 --radii 4e-3,3e-5,4e-3" "--n 1 --sensor-mass 1e-4 --sensor-stiffness 1e12"; do
+    if runs "chain $a (cvode)" "$tmp/c.json" chain $a --json && runs "  and rk4 at its default step" "$tmp/r.json" chain $a --solver rk4 --json; then
+        jcheck "  rk4's F_max and eps_eff those of cvode to 1e-6 (a 30 um bead: F_max 1.4e52; the sensor: 2.1e-5 off)" "$tmp/r.json" \
+            "(lambda c: abs(j['f_max'] / c['f_max'] - 1) < 1e-6 and abs(j['eps_eff'] - c['eps_eff']) < 1e-6 and j['converged'])(json.load(open('$tmp/c.json')))"
+    fi
+done
+runs "drop --n 3 --radii 4e-3,1e-4,4e-3 --t-max 2e-4 --solver rk4" "$tmp/r.json" drop --n 3 --radii 4e-3,1e-4,4e-3 --t-max 2e-4 --solver rk4 --json &&
+    jcheck "  its step below the small bead's contact time / 400 (T_c / 400 of bead 1 was 5.7e-8 s)" "$tmp/r.json" "0 < j['settings']['solver']['dt'] < 1e-9"
+REFUSE_TIMEOUT=5 refused "chain --sensor-mass 1e-7 --sensor-stiffness 1e14 --solver rk4: the default step is not to be raised" \
+    '^granwave chain: dt: a step of 7.9.*e-14 s needs about .* steps over the collision .* the default step resolves the stiffest contact or the sensor body.s oscillation .*: use cvode or arkode' \
+    chain --n 3 --sensor-mass 1e-7 --sensor-stiffness 1e14 --solver rk4 --out "$tmp/o"
+
+# --- 27: a blown-up run fails (exit 1, the time), it never exits 0
+for cmd in chain drop; do
+    timeout 20 "$GW" $cmd --n 3 --radii 4e-3,3e-5,4e-3 --solver rk4 --dt 7e-8 --json >"$tmp/s" 2>"$tmp/e" </dev/null; rc=$?
+    [ $rc -eq 1 ] && [ "$(wc -l <"$tmp/e")" -eq 1 ] && [ ! -s "$tmp/s" ] &&
+        grep -qE "^granwave $cmd: the solution blew up at t = [0-9.e-]+ s \((relative energy error|state)" "$tmp/e" &&
+        ok "$cmd with an RK4 step 260 times the small bead's: exit 1 at the time it blew up" ||
+        ko "$cmd blown up: exit $rc, $(head -c 300 "$tmp/e")"
+done
 
 echo "test_hostile_chain: $passes passed, $fails failed"
 [ $fails -eq 0 ]

@@ -365,6 +365,9 @@ static int first_collision(const gw_chain *c, const gw_chain_drop_params *p,
     o1.y0 = y0;
     int rc = gw_chain_collide(c, &o1, &r->first, err);
     r->first_status = rc;
+    /* bead 1 never back on the sensor: the first collision ran to t_max, and ended
+     * there unless the chain's end came first */
+    r->first_cut = rc == GW_ELIMIT || (rc == GW_OK && isnan(st->t_start2) && !r->first.converged);
     return rc == GW_ELIMIT ? GW_OK : rc;
 }
 
@@ -427,6 +430,7 @@ static int drop_loop(drop_state *st, gw_solver *s, double *y, int *roots, gw_err
         rc = GW_OK;
     }
     r->t_end = t;
+    r->open_at_t_max = st->in_episode;
     if (st->in_episode) { /* still on the sensor: the episode counts as it stands */
         int rc2 = episode_end(st, t, y, 0);
         if (rc == GW_OK && rc2 != GW_OK)

@@ -673,6 +673,11 @@ typedef struct gw_chain_drop_result {
     gw_solver_stats stats;
     double run_dt, run_dt_max; /* the step the run used (rk4; 0 for cvode and arkode)
                                   and its step cap, s: the defaults resolved */
+    int first_cut;          /* 1: t_max came before the first collision's end (it
+                               ran to t_max): its results are those at t_max */
+    int open_at_t_max;      /* 1: bead 1 still on the sensor at t_end: the last
+                               episode is open (t_end, v_out NaN; its peaks and
+                               f_max those so far) */
 } gw_chain_drop_result;
 
 /* Run the drop with run options o (solver and its settings, dt_out = signal

@@ -121,6 +121,10 @@
 #  27 a blown-up run (a state not finite, or a relative energy error above 1:
 #    the monitor kept its largest finite value, a NaN never exceeded it) exited
 #    0 with a warning about t_max; chain and drop now fail (exit 1) at the time.
+#  28 a drop cut by --t-max (inside the first collision, bead 1 on the sensor)
+#    exited 0 with nothing said: the first collision's F_max, tau_N and eps_eff
+#    (-0.90) were those at t_max. One warning line now, and the JSON (and
+#    Python) record cut_first_collision and open_at_t_max.
 set -u
 GW=$1
 SRC=${2:-.}
@@ -579,6 +583,16 @@ for cmd in chain drop; do
         ok "$cmd with an RK4 step 260 times the small bead's: exit 1 at the time it blew up" ||
         ko "$cmd blown up: exit $rc, $(head -c 300 "$tmp/e")"
 done
+
+# --- 28: a drop cut by t-max says so (stderr) and records it (JSON)
+timeout 20 "$GW" drop --n 3 --t-max 1e-5 --json >"$tmp/d.json" 2>"$tmp/e" </dev/null; rc=$?
+[ $rc -eq 0 ] && [ "$(wc -l <"$tmp/e")" -eq 1 ] && grep -q '^granwave drop: warning: the run was cut at t_max = 1e-05 s: the first collision had not ended' "$tmp/e" &&
+    ok "drop --t-max 1e-5 (inside the first collision): exit 0, one warning line" || ko "drop --t-max 1e-5: exit $rc, $(cat "$tmp/e")"
+jcheck "  recorded: cut_first_collision, open_at_t_max, the last impact's t_end null" "$tmp/d.json" \
+    "j['cut_first_collision'] is True and j['open_at_t_max'] is True and j['impacts'][-1]['t_end'] is None and not j['first_collision']['converged']"
+timeout 20 "$GW" drop --n 3 --t-max 3e-3 --json >"$tmp/d.json" 2>"$tmp/e" </dev/null; rc=$?
+[ $rc -eq 0 ] && [ ! -s "$tmp/e" ] && ok "drop --t-max 3e-3 (bead 1 in flight at t_max): no warning" || ko "drop --t-max 3e-3: exit $rc, $(cat "$tmp/e")"
+jcheck "  recorded as not cut" "$tmp/d.json" "j['cut_first_collision'] is False and j['open_at_t_max'] is False"
 
 echo "test_hostile_chain: $passes passed, $fails failed"
 [ $fails -eq 0 ]

@@ -26,6 +26,7 @@ typedef struct gw_opt {
     const char *help;    /* one line, with units and default */
     double lo, hi;       /* accepted range for numbers (inclusive) */
     int open_lo;         /* 1: value must be > lo */
+    int open_hi;         /* 1: value must be < hi */
     int seen;            /* set by the parser */
     const struct gw_param *param; /* NULL, or the parameter-table row (gw_param.h)
                                      that checks the value, by the library's rule

@@ -125,6 +125,9 @@
 #    exited 0 with nothing said: the first collision's F_max, tau_N and eps_eff
 #    (-0.90) were those at t_max. One warning line now, and the JSON (and
 #    Python) record cut_first_collision and open_at_t_max.
+#  29 --restitution's range: 1 was refused as "1 must be below 1", 0 as "0 is
+#    outside (0, 1]" (1 is not in it); the row is open at both ends now and every
+#    command says "is outside (0, 1)", as --help does (Python: test_hostile.py).
 set -u
 GW=$1
 SRC=${2:-.}
@@ -593,6 +596,14 @@ jcheck "  recorded: cut_first_collision, open_at_t_max, the last impact's t_end 
 timeout 20 "$GW" drop --n 3 --t-max 3e-3 --json >"$tmp/d.json" 2>"$tmp/e" </dev/null; rc=$?
 [ $rc -eq 0 ] && [ ! -s "$tmp/e" ] && ok "drop --t-max 3e-3 (bead 1 in flight at t_max): no warning" || ko "drop --t-max 3e-3: exit $rc, $(cat "$tmp/e")"
 jcheck "  recorded as not cut" "$tmp/d.json" "j['cut_first_collision'] is False and j['open_at_t_max'] is False"
+
+# --- 29: a range refused is the range checked: --restitution is (0, 1) at both ends
+for cmd in chain drop falcon softwall; do
+    for e in 0 1; do
+        refused "$cmd --restitution $e" "^granwave $cmd --restitution: $e is outside \(0, 1\)$" $cmd --restitution $e --damping hc --out "$tmp/o"
+    done
+done
+"$GW" chain --help | grep -q -- '--restitution E .* in (0, 1)$' && ok "chain --help gives that range" || ko "chain --help: $("$GW" chain --help | grep -- --restitution)"
 
 echo "test_hostile_chain: $passes passed, $fails failed"
 [ $fails -eq 0 ]

@@ -56,6 +56,7 @@ static gw_opt opt_row(const char *name, gw_opt_kind kind, void *dest)
         o.lo = p->min;
         o.hi = p->max;
         o.open_lo = p->open_min;
+        o.open_hi = p->open_max;
     }
     return o;
 }

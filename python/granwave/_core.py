@@ -54,7 +54,8 @@ def _raise(rc, err, what, params=()):
         if text.startswith(p.name + ":"):
             text = p.keyword + text[len(p.name):]
             break
-    msg = f"{what}: {text}"
+    # the library's run messages name the study already ("chain: bead 1 still on the wall ...")
+    msg = text if text.startswith(what + ": ") else f"{what}: {text}"
     if rc in (GW_EINVAL, GW_EFORMAT):
         raise GranwaveValueError(msg, rc)
     if rc == GW_EIO:

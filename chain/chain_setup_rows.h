@@ -20,6 +20,8 @@
 #define RA(nm, f, un, r, c, hl) GW_RESULT_ARRAY(nm, OFF(f), un, r, c, NULL, hl)
 
 #define MATERIALS "steel,rigid,brass,aluminium,glass,pmma,pvc"
+/* the beads' choices: rigid (infinite density) is a wall only */
+#define BEAD_MATERIALS "steel,brass,aluminium,glass,pmma,pvc"
 #define SHEETS "none,brass,tape,pvc,pmma,cardboard2,beech,cardboard1,rubber"
 #define SHEET_LAWS "fitted,hertz,layer,material"
 
@@ -44,11 +46,12 @@ _Static_assert(GW_SHEET_FITTED == 0 && GW_SHEET_HERTZ == 1 && GW_SHEET_LAYER == 
 
 /* material .. mass */
 #define GW_CHAIN_MATERIAL_ROWS \
-    CHOICE("material", material, MATERIALS, "steel", "NAME", \
-           "bead material (steel, rigid, brass, aluminium, glass, pmma, pvc) [steel]"), \
+    CHOICE("material", material, BEAD_MATERIALS, "steel", "NAME", \
+           "bead material (steel, brass, aluminium, glass, pmma, pvc) [steel]"), \
     /* a micron to a metre: below, masses of 1e-300 m beads underflow to 0 */ \
     ROW("radius", GW_PARAM_DOUBLE, radius, "m", 1e-6, 1, 0, "4e-3", "R", "bead radius, m, in [1e-6, 1] [4e-3]"), \
-    CHOICE("wall-material", wall_material, MATERIALS, "steel", "NAME", "wall material (a half-space) [steel]"), \
+    CHOICE("wall-material", wall_material, MATERIALS, "steel", "NAME", \
+           "wall material, a half-space (steel, rigid, brass, aluminium, glass, pmma, pvc) [steel]"), \
     CHOICE("sheet", sheet, SHEETS, NULL, "NAME", \
            "wall: a sheet of the paper's Table 2 with its fitted K_eff (none, brass, tape, pvc, pmma, " \
            "cardboard2, beech, cardboard1, rubber)"), \

@@ -128,6 +128,9 @@
 #  29 --restitution's range: 1 was refused as "1 must be below 1", 0 as "0 is
 #    outside (0, 1]" (1 is not in it); the row is open at both ends now and every
 #    command says "is outside (0, 1)", as --help does (Python: test_hostile.py).
+#  30 --help listed rigid among the bead materials, which every command then
+#    refused ("unknown or unusable bead material 'rigid' ... not rigid"): the
+#    bead list leaves it out, the wall's (where it works) is listed in full.
 set -u
 GW=$1
 SRC=${2:-.}
@@ -604,6 +607,18 @@ for cmd in chain drop falcon softwall; do
     done
 done
 "$GW" chain --help | grep -q -- '--restitution E .* in (0, 1)$' && ok "chain --help gives that range" || ko "chain --help: $("$GW" chain --help | grep -- --restitution)"
+
+# --- 30: --help lists the materials each option takes (rigid is a wall only)
+for cmd in chain drop falcon wavespeed softwall; do
+    h=$("$GW" $cmd --help)
+    echo "$h" | grep -qE -- '--material NAME +bead material \(steel, brass, aluminium, glass, pmma, pvc\)' &&
+        echo "$h" | grep -qE -- '--wall-material NAME +wall material, a half-space \(steel, rigid, brass, aluminium, glass, pmma, pvc\)' &&
+        ok "$cmd --help: the bead and wall materials" || ko "$cmd --help: $(echo "$h" | grep -- material)"
+done
+refused "chain --material rigid (listed, then refused as unusable)" "^granwave chain --material: unknown value 'rigid' \(steel brass aluminium glass pmma pvc\)$" \
+    chain --material rigid --out "$tmp/o"
+runs "chain --material pvc --wall-material rigid" "$tmp/m.json" chain --material pvc --wall-material rigid --json &&
+    jcheck "  runs (a rigid wall)" "$tmp/m.json" "j['f_max'] > 0 and j['converged']"
 
 echo "test_hostile_chain: $passes passed, $fails failed"
 [ $fails -eq 0 ]

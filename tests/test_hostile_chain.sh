@@ -131,6 +131,8 @@
 #  30 --help listed rigid among the bead materials, which every command then
 #    refused ("unknown or unusable bead material 'rigid' ... not rigid"): the
 #    bead list leaves it out, the wall's (where it works) is listed in full.
+#  31 falcon --out where the directory cannot be made said only
+#    "granwave DIR: not a directory" (no command, no option).
 set -u
 GW=$1
 SRC=${2:-.}
@@ -619,6 +621,12 @@ refused "chain --material rigid (listed, then refused as unusable)" "^granwave c
     chain --material rigid --out "$tmp/o"
 runs "chain --material pvc --wall-material rigid" "$tmp/m.json" chain --material pvc --wall-material rigid --json &&
     jcheck "  runs (a rigid wall)" "$tmp/m.json" "j['f_max'] > 0 and j['converged']"
+
+# --- 31: falcon's --out that cannot be made names the command and --out
+ln -s "$tmp/nowhere" "$tmp/dangling"
+refused "falcon --out on a dangling symbolic link" "^granwave falcon --out: .*dangling: not a directory$" \
+    falcon --n 1:2 --heights none --quiet --out "$tmp/dangling"
+rm -f "$tmp/dangling"
 
 echo "test_hostile_chain: $passes passed, $fails failed"
 [ $fails -eq 0 ]

@@ -349,7 +349,8 @@ int gw_cmd_falcon(int argc, char **argv)
     }
     char made[4096] = ""; /* what --out this run creates, taken back on a refusal */
     if (f.c.out && gw_cli_mkdir_out(f.c.out, made, sizeof made, &err) != GW_OK) {
-        code = chain_cli_fail(err.msg);
+        fprintf(stderr, "granwave falcon --out: %s\n", err.msg); /* the library's message names the path only */
+        code = 2;
         goto out;
     }
     int ncase = f.nv * (f.n_hi - f.n_lo + 1);

@@ -322,9 +322,22 @@ int chain_steps_check(const gw_solver_type *type, const gw_solver_params *sp, co
                           "at most %.0e: %s", is_dt ? "dt" : "dt-max", step, t_len / step, over, t_len, max_steps_run,
                           !chosen ? "raise it"
                           : is_dt ? "the default step resolves the stiffest contact or the sensor body's oscillation "
-                                    "(a longer one loses the run): use cvode or arkode, or fewer beads"
+                                    "(a longer one loses the run): use cvode or arkode"
                                   : "the default largest step is a quarter of the shortest contact (a longer one can "
                                     "step over a contact): fewer beads or a shorter run");
+    return GW_OK;
+}
+
+int chain_sensor_steps_check(const gw_chain_params *p, const gw_solver_type *type, double t_len, const char *over,
+                             gw_err *err)
+{
+    if (!(p->sensor.mass > 0 && p->sensor.stiffness > 0) || type == gw_solver_rk4)
+        return GW_OK; /* rk4: its step is bounded by chain_steps_check */
+    const double omega = sqrt(p->sensor.stiffness / p->sensor.mass), steps = 2.0 * omega * t_len;
+    if (!(steps <= 1e8))
+        return gw_err_set(err, GW_EINVAL, "sensor-stiffness: a sensor body oscillating at %.3g rad/s (sqrt(k_s/M)) "
+                          "needs about %.3g steps over %s (about %.3g s; 2 a radian at least, measured 2-9); at "
+                          "most 1e+08: a softer or heavier sensor body, or a shorter run", omega, steps, over, t_len);
     return GW_OK;
 }
 
@@ -454,6 +467,10 @@ static int collide_plan_make(const gw_chain_params *p, const gw_chain_run_opts *
     double n_ok[3] = {INFINITY, INFINITY, INFINITY};
     if (chain_steps_check(pl->type, &pl->sp, &o->sp, pl->t_expect, "the collision", &e[0]) != GW_OK)
         n_ok[0] = n * 1e8 / (pl->t_expect / step);
+    /* cvode and arkode follow a sensor body's oscillation too (8 s for 0.1 ms at
+     * 1e-7 kg on 1e14 N/m, 5.8e7 steps) */
+    if ((rc = chain_sensor_steps_check(p, pl->type, pl->t_expect, "the collision", err)) != GW_OK)
+        return rc;
     if (gw_chain_memory_check(p, pl->type, pl->sp.method, &e[1]) != GW_OK)
         n_ok[1] = memory_n_ok(p, pl->type, pl->sp.method);
     if (!(pl->t_expect / pl->dt_out <= max_samples)) {
@@ -486,6 +503,8 @@ static int collide_plan_make(const gw_chain_params *p, const gw_chain_run_opts *
                               "of %g s if the collision has not ended by then; at most 1e+08 steps and 1e+09 samples: "
                               "lower t-max to %g s or less", pl->t_max, pl->t_max / step, step,
                               pl->t_max / pl->dt_out, pl->dt_out, floor_2digits(t_lim));
+        if ((rc = chain_sensor_steps_check(p, pl->type, pl->t_max, "t-max", err)) != GW_OK)
+            return rc;
         if (o->sample == gw_chain_trace_sample) {
             gw_err te = {{0}};
             if (gw_chain_trace_check(n, pl->t_max, pl->dt_out, 4.0 * n + 2, &te) != GW_OK)

@@ -523,7 +523,8 @@ int gw_chain_drop_run(const gw_chain_drop_params *p, const gw_chain_run_opts *o,
      * (the default RK4 step makes about 4e5 over 10 ms) */
     r->run_dt = sp.dt;
     r->run_dt_max = sp.dt_max;
-    if ((rc = chain_steps_check(type, &sp, &o->sp, p->t_max, "t-max", err)) != GW_OK)
+    if ((rc = chain_steps_check(type, &sp, &o->sp, p->t_max, "t-max", err)) != GW_OK ||
+        (rc = chain_sensor_steps_check(&q, type, p->t_max, "t-max", err)) != GW_OK)
         goto done;
     if ((rc = gw_solver_create(type, &d.sys, &sp, 0.0, y, &s, err)) != GW_OK)
         goto done;

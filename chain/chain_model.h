@@ -55,6 +55,13 @@ int chain_general_rhs_im(double t, const double *y, double *yd, void *P);
 int chain_general_roots(double t, const double *y, double *g, void *P);
 void chain_general_energy(const gw_chain *c, const double *y, gw_chain_energy *e);
 
+/* cvode and arkode follow a sensor body's oscillation (omega = sqrt(k_s/M)) at 2
+ * to 9 steps a radian (measured): at least 2 omega t_len steps, bounded at 1e8
+ * before the run; GW_EINVAL naming sensor-stiffness. rk4: GW_OK (its step is
+ * chain_steps_check's). */
+int chain_sensor_steps_check(const gw_chain_params *p, const gw_solver_type *type, double t_len, const char *over,
+                             gw_err *err);
+
 /* 1 when the run has blown up (a step too long for the stiffest contact): a
  * state not finite, or a relative energy error above 1 (what says which, in n
  * bytes); 0 otherwise. The energy monitor alone misses it: a NaN error never

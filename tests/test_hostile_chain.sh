@@ -133,6 +133,11 @@
 #    bead list leaves it out, the wall's (where it works) is listed in full.
 #  31 falcon --out where the directory cannot be made said only
 #    "granwave DIR: not a directory" (no command, no option).
+#  32 unbounded work: cvode follows a sensor body's oscillation (2-9 steps a
+#    radian, measured), which the steps bound (over dt-max) did not see: drop
+#    --sensor-mass 1e-7 --sensor-stiffness 1e14 took 48 s a simulated
+#    millisecond, about 8 min at the default 10 ms. At least 2 omega t steps
+#    are bounded at 1e8 before the run, naming sensor-stiffness.
 set -u
 GW=$1
 SRC=${2:-.}
@@ -627,6 +632,16 @@ ln -s "$tmp/nowhere" "$tmp/dangling"
 refused "falcon --out on a dangling symbolic link" "^granwave falcon --out: .*dangling: not a directory$" \
     falcon --n 1:2 --heights none --quiet --out "$tmp/dangling"
 rm -f "$tmp/dangling"
+
+# --- 32: cvode's steps over a sensor body's oscillation bounded before the run (REFUSE_TIMEOUT: at once)
+REFUSE_TIMEOUT=5 refused "drop --sensor-mass 1e-7 --sensor-stiffness 1e14 (48 s a millisecond, 10 ms asked)" \
+    '^granwave drop --sensor-stiffness: a sensor body oscillating at 3.16e\+10 rad/s .* needs about 6.32e\+08 steps over t-max .* at most 1e\+08' \
+    drop --sensor-mass 1e-7 --sensor-stiffness 1e14 --out "$tmp/o"
+REFUSE_TIMEOUT=5 refused "chain --sensor-mass 1e-5 --sensor-stiffness 1e12 --t-max 1" \
+    '^granwave chain: sensor-stiffness: a sensor body oscillating at 3.16e\+08 rad/s .* over t-max' \
+    chain --n 3 --sensor-mass 1e-5 --sensor-stiffness 1e12 --t-max 1 --out "$tmp/o"
+runs "drop --sensor-mass 1e-3 --sensor-stiffness 1e8 (a sensor body within the bound)" "$tmp/d.json" drop --sensor-mass 1e-3 --sensor-stiffness 1e8 --json &&
+    jcheck "  runs" "$tmp/d.json" "j['n_impacts'] >= 1 and j['f_max'] > 0"
 
 echo "test_hostile_chain: $passes passed, $fails failed"
 [ $fails -eq 0 ]

@@ -196,7 +196,13 @@ class Study:
                     raise TypeError(f"{self.func}() got an unexpected keyword argument '{k}'")
                 if v is None:
                     continue
-                rc = lib.gw_param_set(self.table, buf, p.name.encode(), _text(p, v).encode(), ctypes.byref(err))
+                try:  # named as the library's messages are: the study, then the keyword
+                    text = _text(p, v)
+                except GranwaveValueError as e:
+                    raise GranwaveValueError(f"{self.func}: {e}", GW_EINVAL) from None
+                except TypeError as e:
+                    raise TypeError(f"{self.func}: {e}") from None
+                rc = lib.gw_param_set(self.table, buf, p.name.encode(), text.encode(), ctypes.byref(err))
                 if rc != 0:
                     _raise(rc, err, self.func, self.params)
         except BaseException:

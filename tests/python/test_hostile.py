@@ -194,3 +194,14 @@ def test_a_blown_up_run_fails_with_its_time():
     with pytest.raises(granwave.GranwaveRunError) as e:
         granwave.chain(n=3, radii=[4e-3, 3e-5, 4e-3], solver="rk4", dt=7e-8)
     assert str(e.value).startswith("chain: the solution blew up at t = ")
+
+
+def test_a_value_python_refuses_names_the_study():
+    """A NUL or a bool refused before the library saw them said "material: ..." and
+    "n: expected a number" without the study every other refusal names."""
+    with pytest.raises(granwave.GranwaveValueError) as e:
+        granwave.chain(material="steel\0x")
+    assert str(e.value).startswith("chain: material: ")
+    with pytest.raises(TypeError) as t:
+        granwave.drop(n=True)
+    assert str(t.value) == "drop: n: expected a number, got True"

@@ -111,7 +111,8 @@ int main(void)
 
     /* names with '_' for '-', choices by name, text round trip */
     gw_test_true(gw_param_set(t, &s, "dt_out", "1e-7", &err) == GW_OK && s.dt_out == 1e-7, "dt_out sets dt-out");
-    gw_test_true(gw_param_set(t, &s, "material", "glass", &err) == GW_OK && s.material == 3, "material glass (index 3 of the bead materials: rigid is a wall only)");
+    gw_test_true(gw_param_set(t, &s, "material", "glass", &err) == GW_OK && s.material == 3,
+                 "material glass (index 3 of the bead materials: rigid is a wall only)");
     double x = 0.1 + 0.2;
     char buf[64], back[64];
     snprintf(buf, sizeof buf, "%.17g", x);

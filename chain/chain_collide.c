@@ -57,7 +57,14 @@ typedef struct run_state {
     double t_prev, f_prev;   /* previous observation (wall force) */
     double *fc_prev;         /* [n] contact forces at the previous observation */
     double t_max;            /* the run's time limit, s */
+    double t_expect;         /* the collision's expected length, s (collide_plan) */
+    const gw_solver *s;      /* for its step count */
 } run_state;
+
+/* Steps a whole run may take: the plan bounds them at 1e8 over the expected
+ * length, and a run that goes on past it (a default t_max is 20 expected lengths:
+ * an overdamped bead held on the wall under rk4 ran 5e8 steps) stops here. */
+#define CHAIN_RUN_STEPS_MAX 2e8
 
 /* Elastic force of contact k (0 = wall, k = contact between beads k-1, k). */
 static double contact_force(const run_state *st, const double *y, int k)
@@ -289,8 +296,17 @@ static int collide_after(void *ctx, double t, const double *y, gw_err *err)
     gw_chain_result *r = st->r;
     char what[64];
     if (chain_blown_up(st->c, y, r->energy_error, what, sizeof what))
-        return gw_err_set(err, GW_ESOLVER, "chain: the solution blew up at t = %.9g s (%s): the step does not "
-                          "resolve the stiffest contact; lower dt (or dt-max), or use cvode", t, what);
+        return gw_err_set(err, GW_ESOLVER, "chain: the solution blew up at t = %.9g s (%s): the step is too long "
+                          "for the model's fastest time scale (a contact, the sensor body, damping or friction); "
+                          "lower dt (or dt-max), or use cvode", t, what);
+    if (st->s) {
+        gw_solver_stats ss;
+        gw_solver_get_stats(st->s, &ss);
+        if (ss.steps > CHAIN_RUN_STEPS_MAX)
+            return gw_err_set(err, GW_ELIMIT, "chain: %ld steps taken by t = %.9g s and the collision has not "
+                              "ended (expected by about %.3g s); at most %.0e a run: lower t-max, or use cvode "
+                              "(it lengthens its step where nothing moves fast)", ss.steps, t, st->t_expect, CHAIN_RUN_STEPS_MAX);
+    }
     if (st->o->energy_tol > 0 && r->energy_error > st->o->energy_tol)
         return gw_err_set(err, GW_EENERGY, "chain: relative energy error %.3g exceeds the limit %.3g at t = %.9g s",
                           r->energy_error, st->o->energy_tol, t);
@@ -586,6 +602,8 @@ int gw_chain_collide(const gw_chain *c, const gw_chain_run_opts *o, gw_chain_res
         goto done;
     double t = 0.0;
     st.t_max = t_max;
+    st.t_expect = pl.t_expect;
+    st.s = s;
     if (observe(&st, t, y, 0) != 0)
         goto stopped;
     gw_drive drive = {.t_end = t_max, .dt_out = dt_out, .k_out = 1, .on_root = collide_root,

@@ -408,8 +408,9 @@ static int drop_after(void *ctx, double t, const double *y, gw_err *err)
     const drop_state *st = ctx;
     char what[64];
     if (chain_blown_up(st->d->c, y, st->r->energy_error, what, sizeof what))
-        return gw_err_set(err, GW_ESOLVER, "drop: the solution blew up at t = %.9g s (%s): the step does not "
-                          "resolve the stiffest contact; lower dt (or dt-max), or use cvode", t, what);
+        return gw_err_set(err, GW_ESOLVER, "drop: the solution blew up at t = %.9g s (%s): the step is too long "
+                          "for the model's fastest time scale (a contact, the sensor body, damping or friction); "
+                          "lower dt (or dt-max), or use cvode", t, what);
     if (st->o->energy_tol > 0 && st->r->energy_error > st->o->energy_tol)
         return gw_err_set(err, GW_EENERGY, "drop: relative energy error %.3g exceeds the limit %.3g at t = %.9g s",
                           st->r->energy_error, st->o->energy_tol, t);

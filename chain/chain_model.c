@@ -465,6 +465,22 @@ double gw_chain_step_scale(const gw_chain_params *p)
     /* the sensor body's own oscillation, 1/omega = sqrt(M/k_s) */
     if (p->sensor.mass > 0 && p->sensor.stiffness > 0)
         s = fmin(s, sqrt(p->sensor.mass / p->sensor.stiffness));
+    /* relaxation times m/c of the linear drags: the guide's viscous friction, its
+     * Coulomb friction regularised over v_reg (c = F / v_reg), and the contact
+     * damping at the binary overlap (KK: c = gamma sqrt(d), HC: c = 1.5 alpha k d^1.5) */
+    double m_min = m0;
+    for (int i = 0; p->masses && i < p->n; i++)
+        m_min = fmin(m_min, p->masses[i]);
+    double c = p->guide.viscous;
+    if (p->guide.coulomb > 0)
+        c += p->guide.coulomb / (p->guide.v_reg > 0 ? p->guide.v_reg : 1e-3 * v);
+    const double k = p->kc && p->n > 1 ? p->kc[0] : p->k, d = gw_chain_dmax1(0.5 * m_min, k, v);
+    if (p->damping == GW_DAMP_KUWABARA_KONO)
+        c = fmax(c, p->gamma * sqrt(d));
+    else if (p->damping == GW_DAMP_HUNT_CROSSLEY)
+        c = fmax(c, 1.5 * p->alpha * k * d * sqrt(d));
+    if (c > 0)
+        s = fmin(s, 0.5 * m_min / c);
     return s;
 }
 

@@ -138,6 +138,12 @@
 #    --sensor-mass 1e-7 --sensor-stiffness 1e14 took 48 s a simulated
 #    millisecond, about 8 min at the default 10 ms. At least 2 omega t steps
 #    are bounded at 1e8 before the run, naming sensor-stiffness.
+#  33 the RK4 step ignored the drags: Kuwabara-Kono damping (gamma 1e6: F_max
+#    6.8e-5 off cvode's), Hunt-Crossley, the guide's viscous and (regularised)
+#    Coulomb friction (1 N: eps_eff 3.6e-7 off; a 1 ug bead on 100 N s/m blew up
+#    at once). Their relaxation times m/c enter the step scale; a run past 2e8
+#    steps (an overdamped bead held on the wall, to the default t_max) ends with
+#    exit 1 and the time.
 set -u
 GW=$1
 SRC=${2:-.}
@@ -642,6 +648,14 @@ REFUSE_TIMEOUT=5 refused "chain --sensor-mass 1e-5 --sensor-stiffness 1e12 --t-m
     chain --n 3 --sensor-mass 1e-5 --sensor-stiffness 1e12 --t-max 1 --out "$tmp/o"
 runs "drop --sensor-mass 1e-3 --sensor-stiffness 1e8 (a sensor body within the bound)" "$tmp/d.json" drop --sensor-mass 1e-3 --sensor-stiffness 1e8 --json &&
     jcheck "  runs" "$tmp/d.json" "j['n_impacts'] >= 1 and j['f_max'] > 0"
+
+# --- 33: the RK4 step resolves damping and guide friction too (cvode as the reference)
+for a in "--damping kk --gamma 1e6" "--guide-friction 1" "--damping hc --alpha 10"; do
+    if runs "chain --n 3 $a (cvode)" "$tmp/c.json" chain --n 3 $a --json && runs "  and rk4 at its default step" "$tmp/r.json" chain --n 3 $a --solver rk4 --json; then
+        jcheck "  F_max to 1e-6 and eps_eff to 1e-8 of cvode's (KK 1e6: F_max was 6.8e-5 off; friction 1 N: eps_eff 3.6e-7)" "$tmp/r.json" \
+            "(lambda c: abs(j['f_max'] / c['f_max'] - 1) < 1e-6 and abs(j['eps_eff'] - c['eps_eff']) < 1e-8)(json.load(open('$tmp/c.json')))"
+    fi
+done
 
 echo "test_hostile_chain: $passes passed, $fails failed"
 [ $fails -eq 0 ]

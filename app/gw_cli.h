@@ -87,6 +87,8 @@ typedef struct gw_cli_progress {
     long before;         /* units finished by an earlier run (< 0: not shown) */
     double every_ms;     /* > 0: a line at most every every_ms; 0: every tenth */
     int quiet;           /* 1: print nothing */
+    const char *header;  /* NULL, or a line printed once before the first report
+                            (a refusal before any run then stays one line) */
     FILE *fp;            /* stderr */
     double t0, last;     /* gw_clock_ms at init and at the last line */
 } gw_cli_progress;

@@ -91,6 +91,10 @@ int gw_cli_progress_report(void *ctx, long done, long total)
     int due = done >= total || (p->every_ms > 0 ? now - p->last >= p->every_ms : done % (total / 10 + 1) == 0);
     if (!due)
         return 0;
+    if (p->header) {
+        fprintf(p->fp, "%s\n", p->header);
+        p->header = NULL;
+    }
     double el = (now - p->t0) / 1e3;
     double rate = el > 0 ? done / el : 0;
     fprintf(p->fp, "%s%ld/%ld %s", p->prefix, done, total, p->unit);

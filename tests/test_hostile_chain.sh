@@ -144,6 +144,10 @@
 #    at once). Their relaxation times m/c enter the step scale; a run past 2e8
 #    steps (an overdamped bead held on the wall, to the default t_max) ends with
 #    exit 1 and the time.
+#  34 falcon and wavespeed printed their "N collisions" line before the study's
+#    checks, so a refusal by a run's bounds was two stderr lines; and falcon named
+#    the option without its dashes ("granwave falcon: dt: ..."). The line now heads
+#    the first progress line, and falcon says "falcon --dt:" as the others do.
 set -u
 GW=$1
 SRC=${2:-.}
@@ -544,7 +548,7 @@ REFUSE_TIMEOUT=5 refused "the same with rk4" '^granwave chain: t-max: 1e\+06 s w
 REFUSE_TIMEOUT=5 refused "chain --t-max 100 --out: the trace it could store (5.7e8 samples)" \
     '^granwave chain: t-max: 100 s would store about 5.7.e\+08 samples of 3 beads .* above the 5 GB limit' \
     chain --n 3 --t-max 100 --out "$tmp/o"
-REFUSE_TIMEOUT=5 refused "falcon --t-max 1e6 (each run's bound)" '^granwave falcon: t-max: 1e\+06 s would take' \
+REFUSE_TIMEOUT=5 refused "falcon --t-max 1e6 (each run's bound)" '^granwave falcon --t-max: 1e\+06 s would take' \
     falcon --n 1:3 --heights none --t-max 1e6 --quiet --out "$tmp/o"
 printf '[sweep]\nmodel = chain\n[grid]\nvimp = 1e-3\n[params]\nn = 3\ngravity = 1e4\ndamping = hc\nalpha = 1\nt-max = 1e6\n' >"$tmp/tm.ini"
 REFUSE_TIMEOUT=5 refused "a chain sweep with t-max 1e6: nothing made" '^granwave sweep: .*tm.ini: case 0: t-max: 1e\+06 s would take' \
@@ -656,6 +660,14 @@ for a in "--damping kk --gamma 1e6" "--guide-friction 1" "--damping hc --alpha 1
             "(lambda c: abs(j['f_max'] / c['f_max'] - 1) < 1e-6 and abs(j['eps_eff'] - c['eps_eff']) < 1e-8)(json.load(open('$tmp/c.json')))"
     fi
 done
+
+# --- 34: a study refused by its runs' bounds says one line, naming the option (not --quiet)
+refused "falcon --solver rk4 --dt 1e-12 without --quiet: one line, --dt" '^granwave falcon --dt: a step of 1e-12 s needs about' \
+    falcon --n 1:3 --heights none --solver rk4 --dt 1e-12 --out "$tmp/o"
+refused "wavespeed --dt-max 1e-13 without --quiet: one line" '^granwave wavespeed --dt-max: a step of 1e-13 s' \
+    wavespeed --n 6:8 --dt-max 1e-13 --out "$tmp/o"
+timeout 20 "$GW" falcon --n 1:2 --heights none >/dev/null 2>"$tmp/e" </dev/null
+head -1 "$tmp/e" | grep -qx 'granwave falcon: 2 collisions (N = 1..2, 1 velocities)' && ok "  a study that runs still heads its progress lines" || ko "falcon progress: $(head -2 "$tmp/e")"
 
 echo "test_hostile_chain: $passes passed, $fails failed"
 [ $fails -eq 0 ]

@@ -20,7 +20,7 @@ const gw_opt *gw_cli_find(const gw_opt *opts, const char *name)
 int gw_cli_opt_param(const gw_param *p, void *dest, gw_opt *o, gw_err *err)
 {
     *o = (gw_opt){.name = p->name, .dest = dest, .metavar = p->metavar, .help = p->help, .lo = p->min,
-                  .hi = p->max, .open_lo = p->open_min, .param = p};
+                  .hi = p->max, .open_lo = p->open_min, .open_hi = p->open_max, .param = p};
     switch (p->type) {
     case GW_PARAM_DOUBLE: o->kind = GW_OPT_DOUBLE; break;
     case GW_PARAM_LONG: o->kind = GW_OPT_LONG; break;
@@ -82,11 +82,11 @@ static int set_value(const char *cmd, gw_opt *o, const char *val, gw_err *err)
         double v;
         if ((rc = gw_parse_double(val, name, &v, err)) != GW_OK)
             return rc;
-        if (v < o->lo || v > o->hi || (o->open_lo && !(v > o->lo))) {
+        if (v < o->lo || v > o->hi || (o->open_lo && !(v > o->lo)) || (o->open_hi && !(v < o->hi))) {
             if (o->open_lo && !isfinite(o->hi))
                 return gw_err_set(err, GW_EINVAL, "%s: %s must be > %g", name, val, o->lo);
-            return gw_err_set(err, GW_EINVAL, "%s: %s is outside %s%g, %g]", name, val,
-                              o->open_lo ? "(" : "[", o->lo, o->hi);
+            return gw_err_set(err, GW_EINVAL, "%s: %s is outside %s%g, %g%s", name, val,
+                              o->open_lo ? "(" : "[", o->lo, o->hi, o->open_hi ? ")" : "]");
         }
         *(double *)o->dest = v;
         break;

@@ -26,6 +26,7 @@ typedef struct gw_opt {
     const char *help;    /* one line, with units and default */
     double lo, hi;       /* accepted range for numbers (inclusive) */
     int open_lo;         /* 1: value must be > lo */
+    int open_hi;         /* 1: value must be < hi */
     int seen;            /* set by the parser */
     const struct gw_param *param; /* NULL, or the parameter-table row (gw_param.h)
                                      that checks the value, by the library's rule
@@ -86,6 +87,8 @@ typedef struct gw_cli_progress {
     long before;         /* units finished by an earlier run (< 0: not shown) */
     double every_ms;     /* > 0: a line at most every every_ms; 0: every tenth */
     int quiet;           /* 1: print nothing */
+    const char *header;  /* NULL, or a line printed once before the first report
+                            (a refusal before any run then stays one line) */
     FILE *fp;            /* stderr */
     double t0, last;     /* gw_clock_ms at init and at the last line */
 } gw_cli_progress;
@@ -110,5 +113,11 @@ int gw_cli_study_error(const struct gw_param *t, const char *cmd, int rc, gw_err
  * directories from path up to made. */
 int gw_cli_mkdir_out(const char *path, char *made, size_t n, gw_err *err);
 void gw_cli_unmake(const char *path, const char *made);
+
+/* The files names (NULL-terminated) of dir removed where they exist: the members
+ * of a command's output set that this run does not write, so that --out never
+ * holds two runs' files side by side (a failed chain run's trace beside the
+ * chain.json of an earlier success). GW_EIO naming the file if one cannot go. */
+int gw_cli_out_remove(const char *dir, const char *const *names, gw_err *err);
 
 #endif

@@ -9,6 +9,7 @@
  * Progress: after d of n units at t seconds elapsed, rate = d / t units/s and
  * the time left is (n - d) / rate seconds.
  */
+#include <errno.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
@@ -90,6 +91,10 @@ int gw_cli_progress_report(void *ctx, long done, long total)
     int due = done >= total || (p->every_ms > 0 ? now - p->last >= p->every_ms : done % (total / 10 + 1) == 0);
     if (!due)
         return 0;
+    if (p->header) {
+        fprintf(p->fp, "%s\n", p->header);
+        p->header = NULL;
+    }
     double el = (now - p->t0) / 1e3;
     double rate = el > 0 ? done / el : 0;
     fprintf(p->fp, "%s%ld/%ld %s", p->prefix, done, total, p->unit);
@@ -144,4 +149,16 @@ int gw_cli_mkdir_out(const char *path, char *made, size_t n, gw_err *err)
 {
     first_missing(path, made, n);
     return gw_mkdir_p(path, err);
+}
+
+int gw_cli_out_remove(const char *dir, const char *const *names, gw_err *err)
+{
+    char path[4096];
+    for (int i = 0; names[i]; i++) {
+        if (gw_path_join(path, sizeof path, dir, names[i]) != GW_OK)
+            return gw_err_set(err, GW_EINVAL, "%s: output path too long", dir);
+        if (unlink(path) != 0 && errno != ENOENT)
+            return gw_err_set(err, GW_EIO, "%s: cannot remove the earlier run's file: %s", path, strerror(errno));
+    }
+    return GW_OK;
 }

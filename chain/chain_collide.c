@@ -57,7 +57,14 @@ typedef struct run_state {
     double t_prev, f_prev;   /* previous observation (wall force) */
     double *fc_prev;         /* [n] contact forces at the previous observation */
     double t_max;            /* the run's time limit, s */
+    double t_expect;         /* the collision's expected length, s (collide_plan) */
+    const gw_solver *s;      /* for its step count */
 } run_state;
+
+/* Steps a whole run may take: the plan bounds them at 1e8 over the expected
+ * length, and a run that goes on past it (a default t_max is 20 expected lengths:
+ * an overdamped bead held on the wall under rk4 ran 5e8 steps) stops here. */
+#define CHAIN_RUN_STEPS_MAX 2e8
 
 /* Elastic force of contact k (0 = wall, k = contact between beads k-1, k). */
 static double contact_force(const run_state *st, const double *y, int k)
@@ -287,6 +294,19 @@ static int collide_after(void *ctx, double t, const double *y, gw_err *err)
 {
     run_state *st = ctx;
     gw_chain_result *r = st->r;
+    char what[64];
+    if (chain_blown_up(st->c, y, r->energy_error, what, sizeof what))
+        return gw_err_set(err, GW_ESOLVER, "chain: the solution blew up at t = %.9g s (%s): the step is too long "
+                          "for the model's fastest time scale (a contact, the sensor body, damping or friction); "
+                          "lower dt (or dt-max), or use cvode", t, what);
+    if (st->s) {
+        gw_solver_stats ss;
+        gw_solver_get_stats(st->s, &ss);
+        if (ss.steps > CHAIN_RUN_STEPS_MAX)
+            return gw_err_set(err, GW_ELIMIT, "chain: %ld steps taken by t = %.9g s and the collision has not "
+                              "ended (expected by about %.3g s); at most %.0e a run: lower t-max, or use cvode "
+                              "(it lengthens its step where nothing moves fast)", ss.steps, t, st->t_expect, CHAIN_RUN_STEPS_MAX);
+    }
     if (st->o->energy_tol > 0 && r->energy_error > st->o->energy_tol)
         return gw_err_set(err, GW_EENERGY, "chain: relative energy error %.3g exceeds the limit %.3g at t = %.9g s",
                           r->energy_error, st->o->energy_tol, t);
@@ -304,15 +324,36 @@ static int collide_after(void *ctx, double t, const double *y, gw_err *err)
 
 /* 1e8 steps: minutes at n = 3; the default RK4 step T_c/400 makes about 800 n
  * over a collision, so columns up to 1.25e5 beads (a day of CPU already) */
-int chain_steps_check(const gw_solver_type *type, const gw_solver_params *sp, double t_len, const char *over,
-                      gw_err *err)
+int chain_steps_check(const gw_solver_type *type, const gw_solver_params *sp, const gw_solver_params *given,
+                      double t_len, const char *over, gw_err *err)
 {
     const double max_steps_run = 1e8;
     const double step = type == gw_solver_rk4 ? fmin(sp->dt, sp->dt_max) : sp->dt_max;
+    const int is_dt = type == gw_solver_rk4 && sp->dt <= sp->dt_max;
+    /* a step the run chose itself resolves the stiffest contact (or the sensor
+     * body's oscillation): "raise it" would be wrong advice there */
+    const int chosen = is_dt ? !(given->dt > 0) : !(given->dt_max > 0);
     if (!(t_len / step <= max_steps_run))
         return gw_err_set(err, GW_EINVAL, "%s: a step of %g s needs about %.3g steps over %s (about %.3g s); "
-                          "at most %.0e: raise it", type == gw_solver_rk4 && sp->dt <= sp->dt_max ? "dt" : "dt-max",
-                          step, t_len / step, over, t_len, max_steps_run);
+                          "at most %.0e: %s", is_dt ? "dt" : "dt-max", step, t_len / step, over, t_len, max_steps_run,
+                          !chosen ? "raise it"
+                          : is_dt ? "the default step resolves the stiffest contact or the sensor body's oscillation "
+                                    "(a longer one loses the run): use cvode or arkode"
+                                  : "the default largest step is a quarter of the shortest contact (a longer one can "
+                                    "step over a contact): fewer beads or a shorter run");
+    return GW_OK;
+}
+
+int chain_sensor_steps_check(const gw_chain_params *p, const gw_solver_type *type, double t_len, const char *over,
+                             gw_err *err)
+{
+    if (!(p->sensor.mass > 0 && p->sensor.stiffness > 0) || type == gw_solver_rk4)
+        return GW_OK; /* rk4: its step is bounded by chain_steps_check */
+    const double omega = sqrt(p->sensor.stiffness / p->sensor.mass), steps = 2.0 * omega * t_len;
+    if (!(steps <= 1e8))
+        return gw_err_set(err, GW_EINVAL, "sensor-stiffness: a sensor body oscillating at %.3g rad/s (sqrt(k_s/M)) "
+                          "needs about %.3g steps over %s (about %.3g s; 2 a radian at least, measured 2-9); at "
+                          "most 1e+08: a softer or heavier sensor body, or a shorter run", omega, steps, over, t_len);
     return GW_OK;
 }
 
@@ -392,6 +433,13 @@ int gw_chain_memory_check(const gw_chain_params *p, const gw_solver_type *type, 
  * is allocated, in that order: at the defaults the bound that trips at the fewest
  * beads is named (rk4: steps from 1.25e5 beads, memory from 7.9e6, samples from
  * 7e6; cvode: memory from 2.3e6, samples from 7e6, steps from 1.3e7). */
+/* v rounded down to two significant digits (a suggested bound that passes). */
+static double floor_2digits(double v)
+{
+    const double p = pow(10, floor(log10(v)) - 1);
+    return floor(v / p) * p;
+}
+
 typedef struct collide_plan {
     double tc, tau1, t_max, dt_out, t_expect;
     gw_solver_params sp;
@@ -420,10 +468,12 @@ static int collide_plan_make(const gw_chain_params *p, const gw_chain_run_opts *
      * binary contact time at twice v_imp, so cap the step at a quarter of it. */
     if (!(pl->sp.dt_max > 0))
         pl->sp.dt_max = 0.25 * fmin(gw_chain_tau1(m0, p->kwall, 2 * p->v_imp),
-                                    gw_chain_tau1(0.5 * m0, p->k, 2 * p->v_imp));
+                                    chain_contact_tau_min(p, 2 * p->v_imp));
     pl->type = o->solver ? o->solver : gw_solver_cvode;
+    /* the step resolves the stiffest contact (a small bead between large ones was
+     * taken at bead 1's scale and blew up) and a sensor body's oscillation */
     if (pl->type == gw_solver_rk4 && !(pl->sp.dt > 0))
-        pl->sp.dt = pl->tc / (o->steps_per_tc > 0 ? o->steps_per_tc : 400.0);
+        pl->sp.dt = gw_chain_step_scale(p) / (o->steps_per_tc > 0 ? o->steps_per_tc : 400.0);
     /* and at least t_expect / step steps of O(n) each: bounded before the run
      * (the RK4 step, or the largest step of cvode/arkode) */
     /* Steps and samples grow about as n, memory as n (n^2 with a full Jacobian):
@@ -431,8 +481,12 @@ static int collide_plan_make(const gw_chain_params *p, const gw_chain_run_opts *
     const double max_samples = 1e9, step = pl->type == gw_solver_rk4 ? fmin(pl->sp.dt, pl->sp.dt_max) : pl->sp.dt_max;
     gw_err e[3] = {{{0}}};
     double n_ok[3] = {INFINITY, INFINITY, INFINITY};
-    if (chain_steps_check(pl->type, &pl->sp, pl->t_expect, "the collision", &e[0]) != GW_OK)
+    if (chain_steps_check(pl->type, &pl->sp, &o->sp, pl->t_expect, "the collision", &e[0]) != GW_OK)
         n_ok[0] = n * 1e8 / (pl->t_expect / step);
+    /* cvode and arkode follow a sensor body's oscillation too (8 s for 0.1 ms at
+     * 1e-7 kg on 1e14 N/m, 5.8e7 steps) */
+    if ((rc = chain_sensor_steps_check(p, pl->type, pl->t_expect, "the collision", err)) != GW_OK)
+        return rc;
     if (gw_chain_memory_check(p, pl->type, pl->sp.method, &e[1]) != GW_OK)
         n_ok[1] = memory_n_ok(p, pl->type, pl->sp.method);
     if (!(pl->t_expect / pl->dt_out <= max_samples)) {
@@ -453,6 +507,28 @@ static int collide_plan_make(const gw_chain_params *p, const gw_chain_run_opts *
     if (o->sample == gw_chain_trace_sample &&
         (rc = gw_chain_trace_check(n, pl->t_expect, pl->dt_out, 4.0 * n + 2, err)) != GW_OK)
         return rc;
+    /* A run that does not end (a column held on the wall by gravity and damping,
+     * a sensor body still ringing) goes on to t_max: the bounds above hold over
+     * the expected collision, an explicit --t-max far beyond it must meet them too
+     * (--t-max 1e6 ran 1e11 steps, hours, with nothing said). The default t_max is
+     * 20 expected lengths, so it stays within 20 times the bounds. */
+    if (o->t_max > 0 && pl->t_max > pl->t_expect) {
+        const double t_lim = fmin(1e8 * step, max_samples * pl->dt_out);
+        if (!(pl->t_max <= t_lim))
+            return gw_err_set(err, GW_EINVAL, "t-max: %g s would take about %.3g steps of %g s and %.3g samples "
+                              "of %g s if the collision has not ended by then; at most 1e+08 steps and 1e+09 samples: "
+                              "lower t-max to %g s or less", pl->t_max, pl->t_max / step, step,
+                              pl->t_max / pl->dt_out, pl->dt_out, floor_2digits(t_lim));
+        if ((rc = chain_sensor_steps_check(p, pl->type, pl->t_max, "t-max", err)) != GW_OK)
+            return rc;
+        if (o->sample == gw_chain_trace_sample) {
+            gw_err te = {{0}};
+            if (gw_chain_trace_check(n, pl->t_max, pl->dt_out, 4.0 * n + 2, &te) != GW_OK)
+                return gw_err_set(err, GW_EINVAL, "t-max: %g s would store about %.3g samples of %d beads if the "
+                                  "collision has not ended by then, above the 5 GB limit of the written trace: lower "
+                                  "t-max or raise dt-out", pl->t_max, pl->t_max / pl->dt_out + 1, n);
+        }
+    }
     return GW_OK;
 }
 
@@ -471,7 +547,12 @@ int gw_chain_collide(const gw_chain *c, const gw_chain_run_opts *o, gw_chain_res
     memset(r, 0, sizeof *r);
     r->n = n;
     collide_plan pl;
-    int prc = collide_plan_make(p, o, &pl, err);
+    /* the plan sees the chain's own per-bead masses and contact coefficients
+     * (gw_chain_create keeps them, not the caller's arrays) */
+    gw_chain_params pc = *p;
+    pc.masses = c->m;
+    pc.kc = n > 1 ? c->kc : NULL;
+    int prc = collide_plan_make(&pc, o, &pl, err);
     if (prc != GW_OK)
         return prc;
     r->final_v = calloc(4 * (size_t)n, sizeof *r->final_v);
@@ -521,6 +602,8 @@ int gw_chain_collide(const gw_chain *c, const gw_chain_run_opts *o, gw_chain_res
         goto done;
     double t = 0.0;
     st.t_max = t_max;
+    st.t_expect = pl.t_expect;
+    st.s = s;
     if (observe(&st, t, y, 0) != 0)
         goto stopped;
     gw_drive drive = {.t_end = t_max, .dt_out = dt_out, .k_out = 1, .on_root = collide_root,

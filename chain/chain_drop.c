@@ -365,6 +365,9 @@ static int first_collision(const gw_chain *c, const gw_chain_drop_params *p,
     o1.y0 = y0;
     int rc = gw_chain_collide(c, &o1, &r->first, err);
     r->first_status = rc;
+    /* bead 1 never back on the sensor: the first collision ran to t_max, and ended
+     * there unless the chain's end came first */
+    r->first_cut = rc == GW_ELIMIT || (rc == GW_OK && isnan(st->t_start2) && !r->first.converged);
     return rc == GW_ELIMIT ? GW_OK : rc;
 }
 
@@ -402,8 +405,12 @@ static int drop_output(void *ctx, double t, double *y, gw_err *err)
 
 static int drop_after(void *ctx, double t, const double *y, gw_err *err)
 {
-    (void)y;
     const drop_state *st = ctx;
+    char what[64];
+    if (chain_blown_up(st->d->c, y, st->r->energy_error, what, sizeof what))
+        return gw_err_set(err, GW_ESOLVER, "drop: the solution blew up at t = %.9g s (%s): the step is too long "
+                          "for the model's fastest time scale (a contact, the sensor body, damping or friction); "
+                          "lower dt (or dt-max), or use cvode", t, what);
     if (st->o->energy_tol > 0 && st->r->energy_error > st->o->energy_tol)
         return gw_err_set(err, GW_EENERGY, "drop: relative energy error %.3g exceeds the limit %.3g at t = %.9g s",
                           st->r->energy_error, st->o->energy_tol, t);
@@ -424,6 +431,7 @@ static int drop_loop(drop_state *st, gw_solver *s, double *y, int *roots, gw_err
         rc = GW_OK;
     }
     r->t_end = t;
+    r->open_at_t_max = st->in_episode;
     if (st->in_episode) { /* still on the sensor: the episode counts as it stands */
         int rc2 = episode_end(st, t, y, 0);
         if (rc == GW_OK && rc2 != GW_OK)
@@ -492,7 +500,7 @@ int gw_chain_drop_run(const gw_chain_drop_params *p, const gw_chain_run_opts *o,
     memcpy(y0, y, (size_t)dim * sizeof *y);
 
     double m0 = gw_chain_bead_mass(c, 0);
-    double tc = gw_chain_time_scale(&q);
+    double tc = gw_chain_step_scale(&q);
     st.dtol = 1e-9 * gw_chain_dmax1(m0, q.kwall, q.v_imp);
     for (int k = 0; k < n; k++)
         st.closed[k] = (k == 0 ? y[0] : y[2 * k] - y[2 * k - 2]) >= 0;
@@ -508,7 +516,7 @@ int gw_chain_drop_run(const gw_chain_drop_params *p, const gw_chain_run_opts *o,
      * 2 v_imp, the top beads leaving at < 2 v_imp and returning at that speed) */
     if (!(sp.dt_max > 0))
         sp.dt_max = 0.25 * fmin(gw_chain_tau1(m0, q.kwall, 2 * q.v_imp),
-                                gw_chain_tau1(0.5 * m0, q.k, 2 * q.v_imp));
+                                chain_contact_tau_min(&q, 2 * q.v_imp));
     const gw_solver_type *type = o->solver ? o->solver : gw_solver_cvode;
     if (type == gw_solver_rk4 && !(sp.dt > 0))
         sp.dt = tc / (o->steps_per_tc > 0 ? o->steps_per_tc : 400.0);
@@ -516,7 +524,8 @@ int gw_chain_drop_run(const gw_chain_drop_params *p, const gw_chain_run_opts *o,
      * (the default RK4 step makes about 4e5 over 10 ms) */
     r->run_dt = sp.dt;
     r->run_dt_max = sp.dt_max;
-    if ((rc = chain_steps_check(type, &sp, p->t_max, "t-max", err)) != GW_OK)
+    if ((rc = chain_steps_check(type, &sp, &o->sp, p->t_max, "t-max", err)) != GW_OK ||
+        (rc = chain_sensor_steps_check(&q, type, p->t_max, "t-max", err)) != GW_OK)
         goto done;
     if ((rc = gw_solver_create(type, &d.sys, &sp, 0.0, y, &s, err)) != GW_OK)
         goto done;

@@ -104,6 +104,8 @@ static const gw_param drop_fields[] = {
      .rows = "n_impacts", .cols = "9", .choices = GW_DROP_IMPACT_COLS,
      .help = "per impact: t_start, t_end (NaN: in contact at t_max), f_max, t_fmax (s, N), v_in, v_out (m/s, "
              "toward the sensor > 0), n_peaks, cluster, located [impact, column]"},
+    RI("cut_first_collision", r.first_cut, "1: t_max came before the first collision's end (its results are those at t_max)"),
+    RI("open_at_t_max", r.open_at_t_max, "1: bead 1 still on the sensor at t_max (the last episode open)"),
     RI("n_first", n_first, "entries of the first collision's arrays"),
     RD("first_f_max", r.first.f_max, "N", "first collision as `granwave chain`: largest wall force"),
     RD("first_tau_max", r.first.tau_max, "s", "first collision: time of f_max"),

@@ -21,6 +21,7 @@
  * Units: SI (m, s, kg, N, N/m^1.5, J).
  */
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -409,6 +410,78 @@ double gw_chain_time_scale(const gw_chain_params *p)
     double m = p->masses ? p->masses[0] : p->mass;
     double k = p->kc && p->n > 1 ? p->kc[0] : p->k;
     return pow(m / k, 0.4) * pow(p->v_imp, -0.2);
+}
+
+/* The reduced mass of bead 1 on the wall: the bead's own on a rigid sensor, with
+ * the sensor's mass M on a sensor body. */
+static double wall_reduced_mass(const gw_chain_params *p)
+{
+    const double m0 = p->masses ? p->masses[0] : p->mass, M = p->sensor.mass;
+    return M > 0 ? m0 * M / (m0 + M) : m0;
+}
+
+int chain_blown_up(const gw_chain *c, const double *y, double energy_error, char *what, size_t n)
+{
+    const long dim = c->sys.dim;
+    for (long i = 0; i < dim; i++)
+        if (!isfinite(y[i])) {
+            snprintf(what, n, "state %ld of %ld not finite", i, dim);
+            return 1;
+        }
+    if (energy_error > 1) {
+        snprintf(what, n, "relative energy error %.3g", energy_error);
+        return 1;
+    }
+    return 0;
+}
+
+double chain_contact_tau_min(const gw_chain_params *p, double v)
+{
+    const double m0 = p->masses ? p->masses[0] : p->mass;
+    /* bead 1 on bead 2 of the same mass (the uniform column's pair) and on the wall */
+    double t = gw_chain_tau1(0.5 * m0, p->kc && p->n > 1 ? p->kc[0] : p->k, v);
+    if (p->kwall > 0)
+        t = fmin(t, gw_chain_tau1(wall_reduced_mass(p), p->kwall, v));
+    for (int i = 0; p->masses && i + 1 < p->n; i++) { /* every pair of unequal beads */
+        const double a = p->masses[i], b = p->masses[i + 1];
+        const double ti = gw_chain_tau1(a * b / (a + b), p->kc ? p->kc[i] : p->k, v);
+        if (ti < t * (1 - 1e-12))
+            t = ti;
+    }
+    return t;
+}
+
+double gw_chain_step_scale(const gw_chain_params *p)
+{
+    const double v = p->v_imp, tc = gw_chain_time_scale(p);
+    double s = tc;
+    /* T_c = (m/k)^(2/5) v^(-1/5) is (2 mu/k)^(2/5) v^(-1/5) of the pair of equal
+     * beads (mu = m/2); every other contact scales by its tau_1 */
+    const double m0 = p->masses ? p->masses[0] : p->mass;
+    const double ref = gw_chain_tau1(0.5 * m0, p->kc && p->n > 1 ? p->kc[0] : p->k, v);
+    const double t = chain_contact_tau_min(p, v);
+    if (t < ref * (1 - 1e-12))
+        s = tc * t / ref;
+    /* the sensor body's own oscillation, 1/omega = sqrt(M/k_s) */
+    if (p->sensor.mass > 0 && p->sensor.stiffness > 0)
+        s = fmin(s, sqrt(p->sensor.mass / p->sensor.stiffness));
+    /* relaxation times m/c of the linear drags: the guide's viscous friction, its
+     * Coulomb friction regularised over v_reg (c = F / v_reg), and the contact
+     * damping at the binary overlap (KK: c = gamma sqrt(d), HC: c = 1.5 alpha k d^1.5) */
+    double m_min = m0;
+    for (int i = 0; p->masses && i < p->n; i++)
+        m_min = fmin(m_min, p->masses[i]);
+    double c = p->guide.viscous;
+    if (p->guide.coulomb > 0)
+        c += p->guide.coulomb / (p->guide.v_reg > 0 ? p->guide.v_reg : 1e-3 * v);
+    const double k = p->kc && p->n > 1 ? p->kc[0] : p->k, d = gw_chain_dmax1(0.5 * m_min, k, v);
+    if (p->damping == GW_DAMP_KUWABARA_KONO)
+        c = fmax(c, p->gamma * sqrt(d));
+    else if (p->damping == GW_DAMP_HUNT_CROSSLEY)
+        c = fmax(c, 1.5 * p->alpha * k * d * sqrt(d));
+    if (c > 0)
+        s = fmin(s, 0.5 * m_min / c);
+    return s;
 }
 
 int gw_chain_create(const gw_chain_params *p, gw_chain **out, gw_err *err)

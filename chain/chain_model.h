@@ -7,6 +7,7 @@
 #define GW_CHAIN_MODEL_H
 
 #include <math.h>
+#include <stddef.h>
 
 #include "chain_wall.h"
 
@@ -54,11 +55,30 @@ int chain_general_rhs_im(double t, const double *y, double *yd, void *P);
 int chain_general_roots(double t, const double *y, double *g, void *P);
 void chain_general_energy(const gw_chain *c, const double *y, gw_chain_energy *e);
 
+/* cvode and arkode follow a sensor body's oscillation (omega = sqrt(k_s/M)) at 2
+ * to 9 steps a radian (measured): at least 2 omega t_len steps, bounded at 1e8
+ * before the run; GW_EINVAL naming sensor-stiffness. rk4: GW_OK (its step is
+ * chain_steps_check's). */
+int chain_sensor_steps_check(const gw_chain_params *p, const gw_solver_type *type, double t_len, const char *over,
+                             gw_err *err);
+
+/* 1 when the run has blown up (a step too long for the stiffest contact): a
+ * state not finite, or a relative energy error above 1 (what says which, in n
+ * bytes); 0 otherwise. The energy monitor alone misses it: a NaN error never
+ * exceeds the largest so far. */
+int chain_blown_up(const gw_chain *c, const double *y, double energy_error, char *what, size_t n);
+
+/* The shortest binary contact time tau_1 (gw_chain_tau1) at relative speed v over
+ * the column's contacts: every pair of beads (reduced mass, its coefficient) and
+ * bead 1 on the wall (on the sensor body: their reduced mass). */
+double chain_contact_tau_min(const gw_chain_params *p, double v);
+
 /* The run's steps bounded before it starts (chain_collide.c): the RK4 step
  * (the smaller of dt and dt_max), or cvode's and arkode's largest step dt_max,
  * may need at most 1e8 steps over t_len seconds; GW_EINVAL naming dt or
- * dt-max ("... over OVER (about T s)") otherwise. */
-int chain_steps_check(const gw_solver_type *type, const gw_solver_params *sp, double t_len, const char *over,
-                      gw_err *err);
+ * dt-max ("... over OVER (about T s)") otherwise; given holds the steps the caller
+ * asked for (0: the run's default), which the advice follows. */
+int chain_steps_check(const gw_solver_type *type, const gw_solver_params *sp, const gw_solver_params *given,
+                      double t_len, const char *over, gw_err *err);
 
 #endif

@@ -20,6 +20,8 @@
 #define RA(nm, f, un, r, c, hl) GW_RESULT_ARRAY(nm, OFF(f), un, r, c, NULL, hl)
 
 #define MATERIALS "steel,rigid,brass,aluminium,glass,pmma,pvc"
+/* the beads' choices: rigid (infinite density) is a wall only */
+#define BEAD_MATERIALS "steel,brass,aluminium,glass,pmma,pvc"
 #define SHEETS "none,brass,tape,pvc,pmma,cardboard2,beech,cardboard1,rubber"
 #define SHEET_LAWS "fitted,hertz,layer,material"
 
@@ -44,11 +46,12 @@ _Static_assert(GW_SHEET_FITTED == 0 && GW_SHEET_HERTZ == 1 && GW_SHEET_LAYER == 
 
 /* material .. mass */
 #define GW_CHAIN_MATERIAL_ROWS \
-    CHOICE("material", material, MATERIALS, "steel", "NAME", \
-           "bead material (steel, rigid, brass, aluminium, glass, pmma, pvc) [steel]"), \
+    CHOICE("material", material, BEAD_MATERIALS, "steel", "NAME", \
+           "bead material (steel, brass, aluminium, glass, pmma, pvc) [steel]"), \
     /* a micron to a metre: below, masses of 1e-300 m beads underflow to 0 */ \
     ROW("radius", GW_PARAM_DOUBLE, radius, "m", 1e-6, 1, 0, "4e-3", "R", "bead radius, m, in [1e-6, 1] [4e-3]"), \
-    CHOICE("wall-material", wall_material, MATERIALS, "steel", "NAME", "wall material (a half-space) [steel]"), \
+    CHOICE("wall-material", wall_material, MATERIALS, "steel", "NAME", \
+           "wall material, a half-space (steel, rigid, brass, aluminium, glass, pmma, pvc) [steel]"), \
     CHOICE("sheet", sheet, SHEETS, NULL, "NAME", \
            "wall: a sheet of the paper's Table 2 with its fitted K_eff (none, brass, tape, pvc, pmma, " \
            "cardboard2, beech, cardboard1, rubber)"), \
@@ -67,8 +70,8 @@ _Static_assert(GW_SHEET_FITTED == 0 && GW_SHEET_HERTZ == 1 && GW_SHEET_LAYER == 
         "Kuwabara-Kono constant of bead contacts, N s/m^1.5, in [0, 1e14] [0]"), \
     ROW("alpha", GW_PARAM_DOUBLE, alpha, "s/m", 0, GW_CHAIN_ALPHA_MAX, 0, NULL, "A", \
         "Hunt-Crossley constant, s/m, in [0, 1e8] [0]"), \
-    ROW("restitution", GW_PARAM_DOUBLE, restitution, "", 0, 1, 1, NULL, "E", \
-        "calibrate gamma/alpha so one bead on the wall rebounds with E"), \
+    GW_PARAM_ROW("restitution", GW_PARAM_DOUBLE, OFF(restitution), "", 0, 1, 1, 1, NULL, "E", \
+        "calibrate gamma/alpha so one bead on the wall rebounds with E, in (0, 1)"), \
     ROW("restitution-v", GW_PARAM_DOUBLE, restitution_v, "m/s", GW_CHAIN_VIMP_MIN, GW_CHAIN_VIMP_MAX, 0, NULL, "V", \
         "impact velocity of that calibration, m/s [v_imp]"), \
     CHOICE("solver", solver, "cvode,arkode,rk4", "cvode", "NAME", "cvode, arkode or rk4 [cvode]"), \

@@ -385,6 +385,12 @@ void gw_chain_result_free(gw_chain_result *r);
 
 /* Characteristic time (m/k)^(2/5) v^(-1/5) of the chain, s. */
 double gw_chain_time_scale(const gw_chain_params *p);
+/* The time scale the steps resolve, s: T_c (gw_chain_time_scale) of a uniform
+ * column; shorter when a contact is (unequal beads, a light sensor body: each
+ * contact's binary contact time against that of two beads 1) or when the sensor
+ * body oscillates faster (1/omega = sqrt(M/k_s)). The default RK4 step is 1/400
+ * of it. */
+double gw_chain_step_scale(const gw_chain_params *p);
 
 /* ---- traces (wall force and bead trajectories) ---- */
 
@@ -667,6 +673,11 @@ typedef struct gw_chain_drop_result {
     gw_solver_stats stats;
     double run_dt, run_dt_max; /* the step the run used (rk4; 0 for cvode and arkode)
                                   and its step cap, s: the defaults resolved */
+    int first_cut;          /* 1: t_max came before the first collision's end (it
+                               ran to t_max): its results are those at t_max */
+    int open_at_t_max;      /* 1: bead 1 still on the sensor at t_end: the last
+                               episode is open (t_end, v_out NaN; its peaks and
+                               f_max those so far) */
 } gw_chain_drop_result;
 
 /* Run the drop with run options o (solver and its settings, dt_out = signal

@@ -102,6 +102,52 @@
 #    the reading to stop rising. For an undamped sensor at rest hit by a pulse of
 #    impulse J = m v (1 + e), the peak reading k_s A lies in [0.8, 1] J omega
 #    (omega = sqrt(k_s/M); the pulse is 35 us, omega tau = 1.1).
+#  24 unbounded work: an explicit --t-max was bounded only over the collision's
+#    expected length; a column that does not end (damped, held on the wall by
+#    gravity) ran to --t-max 1e6 for hours (4.8e10 steps). Steps (1e8), samples
+#    (1e9) and the stored trace (5 GB) are bounded over an explicit t-max too,
+#    before the run: exit 2 naming t-max and the largest that passes.
+#  25 --out mixed two runs: a failed chain run wrote its trace and
+#    chain_failure.json beside the chain.json of an earlier finished run (and the
+#    other way round); dispersion's study and --column-n left each other's files.
+#    The members of the command's set that a run does not write are removed.
+#  26 unequal beads and sensor bodies: the RK4 step was T_c/400 of bead 1 and its
+#    neighbour only, and cvode's largest step a quarter of that pair's contact:
+#    a 30 um bead between 4 mm beads blew up under rk4 (F_max 1.4e52 N, exit 0),
+#    a sensor body of 0.1 g on 1e12 N/m gave F_max 2.1e-5 off. Both steps now
+#    come from every contact (reduced masses, the sensor's mass in the wall's)
+#    and the sensor's 1/omega; a default step that the steps bound refuses is
+#    not "to raise" (that loses the run): the message says so.
+#  27 a blown-up run (a state not finite, or a relative energy error above 1:
+#    the monitor kept its largest finite value, a NaN never exceeded it) exited
+#    0 with a warning about t_max; chain and drop now fail (exit 1) at the time.
+#  28 a drop cut by --t-max (inside the first collision, bead 1 on the sensor)
+#    exited 0 with nothing said: the first collision's F_max, tau_N and eps_eff
+#    (-0.90) were those at t_max. One warning line now, and the JSON (and
+#    Python) record cut_first_collision and open_at_t_max.
+#  29 --restitution's range: 1 was refused as "1 must be below 1", 0 as "0 is
+#    outside (0, 1]" (1 is not in it); the row is open at both ends now and every
+#    command says "is outside (0, 1)", as --help does (Python: test_hostile.py).
+#  30 --help listed rigid among the bead materials, which every command then
+#    refused ("unknown or unusable bead material 'rigid' ... not rigid"): the
+#    bead list leaves it out, the wall's (where it works) is listed in full.
+#  31 falcon --out where the directory cannot be made said only
+#    "granwave DIR: not a directory" (no command, no option).
+#  32 unbounded work: cvode follows a sensor body's oscillation (2-9 steps a
+#    radian, measured), which the steps bound (over dt-max) did not see: drop
+#    --sensor-mass 1e-7 --sensor-stiffness 1e14 took 48 s a simulated
+#    millisecond, about 8 min at the default 10 ms. At least 2 omega t steps
+#    are bounded at 1e8 before the run, naming sensor-stiffness.
+#  33 the RK4 step ignored the drags: Kuwabara-Kono damping (gamma 1e6: F_max
+#    6.8e-5 off cvode's), Hunt-Crossley, the guide's viscous and (regularised)
+#    Coulomb friction (1 N: eps_eff 3.6e-7 off; a 1 ug bead on 100 N s/m blew up
+#    at once). Their relaxation times m/c enter the step scale; a run past 2e8
+#    steps (an overdamped bead held on the wall, to the default t_max) ends with
+#    exit 1 and the time.
+#  34 falcon and wavespeed printed their "N collisions" line before the study's
+#    checks, so a refusal by a run's bounds was two stderr lines; and falcon named
+#    the option without its dashes ("granwave falcon: dt: ..."). The line now heads
+#    the first progress line, and falcon says "falcon --dt:" as the others do.
 set -u
 GW=$1
 SRC=${2:-.}
@@ -491,6 +537,137 @@ if runs "chain --n 1 --sensor-mass 1e3 --sensor-stiffness 1e12" "$tmp/s.json" ch
     jcheck "  F_max in [0.8, 1] J omega (was 0.52 J omega, cut at t_end)" "$tmp/s.json" \
         "(lambda J, w: 0.8 * J * w <= j['f_max'] <= J * w)(j['settings']['model']['mass'] * j['v_imp'] * (1 + j['eps_eff']), (1e12 / 1e3) ** 0.5)"
 fi
+
+# --- 24: an explicit --t-max bounded like the collision it may prolong (REFUSE_TIMEOUT: at once)
+# a damped column held on the wall by gravity never ends: it ran to t-max
+REFUSE_TIMEOUT=5 refused "chain --t-max 1e6 on a column that does not end (ran for hours)" \
+    '^granwave chain: t-max: 1e\+06 s would take about 4.8.e\+10 steps .* at most 1e\+08 steps and 1e\+09 samples: lower t-max to [0-9]+ s or less$' \
+    chain --n 3 --vimp 1e-3 --gravity 1e4 --damping hc --alpha 1 --t-max 1e6 --out "$tmp/o"
+REFUSE_TIMEOUT=5 refused "the same with rk4" '^granwave chain: t-max: 1e\+06 s would take about 1.0.e\+13 steps' \
+    chain --n 3 --vimp 1e-3 --gravity 1e4 --damping hc --alpha 1 --t-max 1e6 --solver rk4
+REFUSE_TIMEOUT=5 refused "chain --t-max 100 --out: the trace it could store (5.7e8 samples)" \
+    '^granwave chain: t-max: 100 s would store about 5.7.e\+08 samples of 3 beads .* above the 5 GB limit' \
+    chain --n 3 --t-max 100 --out "$tmp/o"
+REFUSE_TIMEOUT=5 refused "falcon --t-max 1e6 (each run's bound)" '^granwave falcon --t-max: 1e\+06 s would take' \
+    falcon --n 1:3 --heights none --t-max 1e6 --quiet --out "$tmp/o"
+printf '[sweep]\nmodel = chain\n[grid]\nvimp = 1e-3\n[params]\nn = 3\ngravity = 1e4\ndamping = hc\nalpha = 1\nt-max = 1e6\n' >"$tmp/tm.ini"
+REFUSE_TIMEOUT=5 refused "a chain sweep with t-max 1e6: nothing made" '^granwave sweep: .*tm.ini: case 0: t-max: 1e\+06 s would take' \
+    sweep "$tmp/tm.ini" --out "$tmp/o" --quiet
+# the bound suggested passes, and a run that ends early is not held to it
+lim=$(sed -n 's/.*lower t-max to \([0-9.e+]*\) s or less.*/\1/p' "$tmp/stderr")
+timeout 3 "$GW" chain --n 3 --vimp 1e-3 --gravity 1e4 --damping hc --alpha 1 --t-max "${lim:-x}" >/dev/null 2>"$tmp/e" </dev/null; rc=$?
+[ $rc -ne 2 ] && ok "  the t-max it suggests ($lim s) is not refused (stopped after 3 s)" || ko "  suggested t-max $lim refused: $(cat "$tmp/e")"
+runs "chain --n 3 --t-max 2 (ends at 0.3 ms)" "$tmp/t.json" chain --n 3 --t-max 2 --json &&
+    jcheck "  converged, t_max recorded as given" "$tmp/t.json" "j['converged'] and j['settings']['solver']['t_max'] == 2"
+
+# --- 25: --out holds one run's files: the members of the set this run does not write go
+o25="$tmp/o25"
+"$GW" chain --n 3 --out "$o25" >/dev/null 2>&1 </dev/null
+"$GW" chain --n 3 --t-max 1e-7 --out "$o25" >/dev/null 2>&1 </dev/null; rc=$?
+[ $rc -eq 1 ] && [ -s "$o25/chain_failure.json" ] && [ ! -e "$o25/chain.json" ] &&
+    ok "a failed chain run after a finished one: its failure file, no chain.json of the earlier run" ||
+    ko "chain failure over a success: exit $rc, $(ls "$o25" | tr '\n' ' ')"
+"$GW" chain --n 3 --out "$o25" >/dev/null 2>&1 </dev/null; rc=$?
+[ $rc -eq 0 ] && [ -s "$o25/chain.json" ] && [ ! -e "$o25/chain_failure.json" ] &&
+    ok "a finished chain run after a failed one: no chain_failure.json left" ||
+    ko "chain success over a failure: exit $rc, $(ls "$o25" | tr '\n' ' ')"
+rm -rf "$o25"
+"$GW" dispersion --column-n 3 --out "$o25" >/dev/null 2>&1 </dev/null
+"$GW" dispersion --n 16 --t-samples 64 --out "$o25" >/dev/null 2>&1 </dev/null; rc=$?
+[ $rc -eq 0 ] && [ -s "$o25/dispersion.json" ] && [ ! -e "$o25/wall_spectrum.csv" ] &&
+    ok "dispersion's study after --column-n: no wall_spectrum.csv of the earlier run" ||
+    ko "dispersion over --column-n: exit $rc, $(ls "$o25" | tr '\n' ' ')"
+"$GW" dispersion --column-n 3 --out "$o25" >/dev/null 2>&1 </dev/null; rc=$?
+[ $rc -eq 0 ] && [ -s "$o25/wall_spectrum.csv" ] && [ -z "$(ls "$o25" | grep -v wall_spectrum.csv)" ] &&
+    ok "dispersion --column-n after the study: only wall_spectrum.csv" ||
+    ko "dispersion --column-n over the study: exit $rc, $(ls "$o25" | tr '\n' ' ')"
+touch "$o25/notes.txt"
+"$GW" dispersion --column-n 3 --out "$o25" >/dev/null 2>&1 </dev/null
+[ -e "$o25/notes.txt" ] && ok "  a file of no output set is left alone" || ko "  notes.txt removed"
+
+# --- 26: the RK4 step resolves every contact and the sensor body (cvode as the reference)
+for a in "--n 3 --radii 4e-3,3e-5,4e-3" "--n 1 --sensor-mass 1e-4 --sensor-stiffness 1e12"; do
+    if runs "chain $a (cvode)" "$tmp/c.json" chain $a --json && runs "  and rk4 at its default step" "$tmp/r.json" chain $a --solver rk4 --json; then
+        jcheck "  rk4's F_max and eps_eff those of cvode to 1e-6 (a 30 um bead: F_max 1.4e52; the sensor: 2.1e-5 off)" "$tmp/r.json" \
+            "(lambda c: abs(j['f_max'] / c['f_max'] - 1) < 1e-6 and abs(j['eps_eff'] - c['eps_eff']) < 1e-6 and j['converged'])(json.load(open('$tmp/c.json')))"
+    fi
+done
+runs "drop --n 3 --radii 4e-3,1e-4,4e-3 --t-max 2e-4 --solver rk4" "$tmp/r.json" drop --n 3 --radii 4e-3,1e-4,4e-3 --t-max 2e-4 --solver rk4 --json &&
+    jcheck "  its step below the small bead's contact time / 400 (T_c / 400 of bead 1 was 5.7e-8 s)" "$tmp/r.json" "0 < j['settings']['solver']['dt'] < 1e-9"
+REFUSE_TIMEOUT=5 refused "chain --sensor-mass 1e-7 --sensor-stiffness 1e14 --solver rk4: the default step is not to be raised" \
+    '^granwave chain: dt: a step of 7.9.*e-14 s needs about .* steps over the collision .* the default step resolves the stiffest contact or the sensor body.s oscillation .*: use cvode or arkode' \
+    chain --n 3 --sensor-mass 1e-7 --sensor-stiffness 1e14 --solver rk4 --out "$tmp/o"
+
+# --- 27: a blown-up run fails (exit 1, the time), it never exits 0
+for cmd in chain drop; do
+    timeout 20 "$GW" $cmd --n 3 --radii 4e-3,3e-5,4e-3 --solver rk4 --dt 7e-8 --json >"$tmp/s" 2>"$tmp/e" </dev/null; rc=$?
+    [ $rc -eq 1 ] && [ "$(wc -l <"$tmp/e")" -eq 1 ] && [ ! -s "$tmp/s" ] &&
+        grep -qE "^granwave $cmd: the solution blew up at t = [0-9.e-]+ s \((relative energy error|state)" "$tmp/e" &&
+        ok "$cmd with an RK4 step 260 times the small bead's: exit 1 at the time it blew up" ||
+        ko "$cmd blown up: exit $rc, $(head -c 300 "$tmp/e")"
+done
+
+# --- 28: a drop cut by t-max says so (stderr) and records it (JSON)
+timeout 20 "$GW" drop --n 3 --t-max 1e-5 --json >"$tmp/d.json" 2>"$tmp/e" </dev/null; rc=$?
+[ $rc -eq 0 ] && [ "$(wc -l <"$tmp/e")" -eq 1 ] && grep -q '^granwave drop: warning: the run was cut at t_max = 1e-05 s: the first collision had not ended' "$tmp/e" &&
+    ok "drop --t-max 1e-5 (inside the first collision): exit 0, one warning line" || ko "drop --t-max 1e-5: exit $rc, $(cat "$tmp/e")"
+jcheck "  recorded: cut_first_collision, open_at_t_max, the last impact's t_end null" "$tmp/d.json" \
+    "j['cut_first_collision'] is True and j['open_at_t_max'] is True and j['impacts'][-1]['t_end'] is None and not j['first_collision']['converged']"
+timeout 20 "$GW" drop --n 3 --t-max 3e-3 --json >"$tmp/d.json" 2>"$tmp/e" </dev/null; rc=$?
+[ $rc -eq 0 ] && [ ! -s "$tmp/e" ] && ok "drop --t-max 3e-3 (bead 1 in flight at t_max): no warning" || ko "drop --t-max 3e-3: exit $rc, $(cat "$tmp/e")"
+jcheck "  recorded as not cut" "$tmp/d.json" "j['cut_first_collision'] is False and j['open_at_t_max'] is False"
+
+# --- 29: a range refused is the range checked: --restitution is (0, 1) at both ends
+for cmd in chain drop falcon softwall; do
+    for e in 0 1; do
+        refused "$cmd --restitution $e" "^granwave $cmd --restitution: $e is outside \(0, 1\)$" $cmd --restitution $e --damping hc --out "$tmp/o"
+    done
+done
+"$GW" chain --help | grep -q -- '--restitution E .* in (0, 1)$' && ok "chain --help gives that range" || ko "chain --help: $("$GW" chain --help | grep -- --restitution)"
+
+# --- 30: --help lists the materials each option takes (rigid is a wall only)
+for cmd in chain drop falcon wavespeed softwall; do
+    h=$("$GW" $cmd --help)
+    echo "$h" | grep -qE -- '--material NAME +bead material \(steel, brass, aluminium, glass, pmma, pvc\)' &&
+        echo "$h" | grep -qE -- '--wall-material NAME +wall material, a half-space \(steel, rigid, brass, aluminium, glass, pmma, pvc\)' &&
+        ok "$cmd --help: the bead and wall materials" || ko "$cmd --help: $(echo "$h" | grep -- material)"
+done
+refused "chain --material rigid (listed, then refused as unusable)" "^granwave chain --material: unknown value 'rigid' \(steel brass aluminium glass pmma pvc\)$" \
+    chain --material rigid --out "$tmp/o"
+runs "chain --material pvc --wall-material rigid" "$tmp/m.json" chain --material pvc --wall-material rigid --json &&
+    jcheck "  runs (a rigid wall)" "$tmp/m.json" "j['f_max'] > 0 and j['converged']"
+
+# --- 31: falcon's --out that cannot be made names the command and --out
+ln -s "$tmp/nowhere" "$tmp/dangling"
+refused "falcon --out on a dangling symbolic link" "^granwave falcon --out: .*dangling: not a directory$" \
+    falcon --n 1:2 --heights none --quiet --out "$tmp/dangling"
+rm -f "$tmp/dangling"
+
+# --- 32: cvode's steps over a sensor body's oscillation bounded before the run (REFUSE_TIMEOUT: at once)
+REFUSE_TIMEOUT=5 refused "drop --sensor-mass 1e-7 --sensor-stiffness 1e14 (48 s a millisecond, 10 ms asked)" \
+    '^granwave drop --sensor-stiffness: a sensor body oscillating at 3.16e\+10 rad/s .* needs about 6.32e\+08 steps over t-max .* at most 1e\+08' \
+    drop --sensor-mass 1e-7 --sensor-stiffness 1e14 --out "$tmp/o"
+REFUSE_TIMEOUT=5 refused "chain --sensor-mass 1e-5 --sensor-stiffness 1e12 --t-max 1" \
+    '^granwave chain: sensor-stiffness: a sensor body oscillating at 3.16e\+08 rad/s .* over t-max' \
+    chain --n 3 --sensor-mass 1e-5 --sensor-stiffness 1e12 --t-max 1 --out "$tmp/o"
+runs "drop --sensor-mass 1e-3 --sensor-stiffness 1e8 (a sensor body within the bound)" "$tmp/d.json" drop --sensor-mass 1e-3 --sensor-stiffness 1e8 --json &&
+    jcheck "  runs" "$tmp/d.json" "j['n_impacts'] >= 1 and j['f_max'] > 0"
+
+# --- 33: the RK4 step resolves damping and guide friction too (cvode as the reference)
+for a in "--damping kk --gamma 1e6" "--guide-friction 1" "--damping hc --alpha 10"; do
+    if runs "chain --n 3 $a (cvode)" "$tmp/c.json" chain --n 3 $a --json && runs "  and rk4 at its default step" "$tmp/r.json" chain --n 3 $a --solver rk4 --json; then
+        jcheck "  F_max to 1e-6 and eps_eff to 1e-8 of cvode's (KK 1e6: F_max was 6.8e-5 off; friction 1 N: eps_eff 3.6e-7)" "$tmp/r.json" \
+            "(lambda c: abs(j['f_max'] / c['f_max'] - 1) < 1e-6 and abs(j['eps_eff'] - c['eps_eff']) < 1e-8)(json.load(open('$tmp/c.json')))"
+    fi
+done
+
+# --- 34: a study refused by its runs' bounds says one line, naming the option (not --quiet)
+refused "falcon --solver rk4 --dt 1e-12 without --quiet: one line, --dt" '^granwave falcon --dt: a step of 1e-12 s needs about' \
+    falcon --n 1:3 --heights none --solver rk4 --dt 1e-12 --out "$tmp/o"
+refused "wavespeed --dt-max 1e-13 without --quiet: one line" '^granwave wavespeed --dt-max: a step of 1e-13 s' \
+    wavespeed --n 6:8 --dt-max 1e-13 --out "$tmp/o"
+timeout 20 "$GW" falcon --n 1:2 --heights none >/dev/null 2>"$tmp/e" </dev/null
+head -1 "$tmp/e" | grep -qx 'granwave falcon: 2 collisions (N = 1..2, 1 velocities)' && ok "  a study that runs still heads its progress lines" || ko "falcon progress: $(head -2 "$tmp/e")"
 
 echo "test_hostile_chain: $passes passed, $fails failed"
 [ $fails -eq 0 ]

@@ -144,6 +144,7 @@ int gw_cmd_chain(int argc, char **argv)
             cJSON *o = chain_result_json(&c, &r, wall_ms);
             cJSON_AddStringToObject(o, "error", err.msg);
             if (gw_mkdir_p(c.out, &werr) != GW_OK ||
+                gw_cli_out_remove(c.out, (const char *const[]){"chain.json", NULL}, &werr) != GW_OK ||
                 gw_chain_trace_write(&tr, c.out, "chain", hdr ? hdr : "", &werr) != GW_OK ||
                 gw_path_join(path, sizeof path, c.out, "chain_failure.json") != GW_OK ||
                 gw_json_write(path, o, &werr) != GW_OK)
@@ -159,6 +160,7 @@ int gw_cmd_chain(int argc, char **argv)
             char path[4096];
             cJSON *o = chain_result_json(&c, &r, wall_ms);
             if (gw_mkdir_p(c.out, &err) != GW_OK ||
+                gw_cli_out_remove(c.out, (const char *const[]){"chain_failure.json", NULL}, &err) != GW_OK ||
                 gw_chain_trace_write(&tr, c.out, "chain", hdr ? hdr : "", &err) != GW_OK ||
                 gw_path_join(path, sizeof path, c.out, "chain.json") != GW_OK ||
                 gw_json_write(path, o, &err) != GW_OK) {

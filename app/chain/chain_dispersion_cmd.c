@@ -253,6 +253,8 @@ static int disp_write_out(const char *dir, const char *hdr, const cJSON *o,
 {
     char path[4096];
     int rc = gw_mkdir_p(dir, err);
+    if (rc == GW_OK) /* the --column-n run's file: not beside this study's */
+        rc = gw_cli_out_remove(dir, (const char *const[]){"wall_spectrum.csv", NULL}, err);
     if (rc == GW_OK)
         rc = write_csv(dir, "dispersion_ridge.csv", hdr, ridge_body, r, err);
     if (rc == GW_OK)
@@ -332,6 +334,8 @@ static int disp_column(const disp_cli *c, const gw_opt *opts, int argc, char **a
         cJSON_AddStringToObject(js, "fftw_planner", c->measure ? "measure" : "estimate");
         char *hdr = gw_cli_provenance("dispersion", argc, argv, js);
         if (c->out && (gw_mkdir_p(c->out, &err) != GW_OK ||
+                       gw_cli_out_remove(c->out, (const char *const[]){"dispersion.json", "dispersion_ridge.csv",
+                                                                       "dispersion_power.csv", NULL}, &err) != GW_OK ||
                        write_csv(c->out, "wall_spectrum.csv", hdr ? hdr : "", spectrum_body, &sp, &err) != GW_OK)) {
             fprintf(stderr, "granwave dispersion --out: %s\n", err.msg);
             code = 1;

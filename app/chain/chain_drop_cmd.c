@@ -56,6 +56,7 @@ static gw_opt opt_row(const char *name, gw_opt_kind kind, void *dest)
         o.lo = p->min;
         o.hi = p->max;
         o.open_lo = p->open_min;
+        o.open_hi = p->open_max;
     }
     return o;
 }
@@ -201,6 +202,8 @@ static cJSON *result_json(const drop_cli *d, const gw_chain_drop_result *r, doub
     cJSON_AddNumberToObject(en, "dissipated", r->e_end.dissipated);
     cJSON_AddNumberToObject(en, "total", r->e_end.total);
     cJSON_AddNumberToObject(o, "t_end", r->t_end);
+    cJSON_AddBoolToObject(o, "cut_first_collision", r->first_cut);
+    cJSON_AddBoolToObject(o, "open_at_t_max", r->open_at_t_max);
     cJSON_AddNumberToObject(o, "events", (double)r->n_events);
     cJSON_AddNumberToObject(o, "missed_events", (double)r->missed_events);
     cJSON_AddNumberToObject(o, "steps", (double)r->stats.steps);
@@ -340,6 +343,14 @@ int gw_cmd_drop(int argc, char **argv)
     char *buf = malloc((size_t)o.n + 1);
     if (!buf && rc == GW_OK)
         rc = gw_err_set(&err, GW_ENOMEM, "drop: out of memory");
+    if (rc == GW_OK && (r->first_cut || r->open_at_t_max)) /* said, and recorded (cut_first_collision, open_at_t_max) */
+        fprintf(stderr, "granwave drop: warning: the run was cut at t_max = %.6g s: %s%s%s; raise --t-max\n",
+                r->t_end,
+                r->first_cut ? "the first collision had not ended (its F_max, tau_N and restitution are those at "
+                               "t_max)" : "",
+                r->first_cut && r->open_at_t_max ? "; " : "",
+                r->open_at_t_max ? "bead 1 was still on the sensor (the last impact's t_end and v_out are null, "
+                                   "its peaks those so far)" : "");
     if (rc != GW_OK) {
         fprintf(stderr, "granwave %s%s\n", rc == GW_EINVAL || strncmp(err.msg, "drop: ", 6) == 0 ? "" : "drop: ", err.msg);
         code = rc == GW_EINVAL ? 2 : 1;

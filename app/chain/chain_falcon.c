@@ -349,7 +349,8 @@ int gw_cmd_falcon(int argc, char **argv)
     }
     char made[4096] = ""; /* what --out this run creates, taken back on a refusal */
     if (f.c.out && gw_cli_mkdir_out(f.c.out, made, sizeof made, &err) != GW_OK) {
-        code = chain_cli_fail(err.msg);
+        fprintf(stderr, "granwave falcon --out: %s\n", err.msg); /* the library's message names the path only */
+        code = 2;
         goto out;
     }
     int ncase = f.nv * (f.n_hi - f.n_lo + 1);
@@ -358,17 +359,23 @@ int gw_cmd_falcon(int argc, char **argv)
         code = chain_cli_fail("falcon: out of memory");
         goto out;
     }
-    if (!quiet)
-        fprintf(stderr, "granwave falcon: %d collisions (N = %d..%d, %d velocities)\n", ncase,
-                f.n_lo, f.n_hi, f.nv);
     double t0 = gw_clock_ms();
     gw_cli_progress prog;
     gw_cli_progress_init(&prog, "  ", "collisions", 0);
+    char header[128]; /* with the first progress line: after the study's checks */
+    snprintf(header, sizeof header, "granwave falcon: %d collisions (N = %d..%d, %d velocities)", ncase, f.n_lo,
+             f.n_hi, f.nv);
+    prog.header = header;
     int rc = gw_chain_sweep_n_progress(&f.c.params, &f.c.run, f.v, f.nv, f.n_lo, f.n_hi, (int)jobs,
                                        quiet ? NULL : gw_cli_progress_report, &prog, f.res, &err);
     f.wall_s = (gw_clock_ms() - t0) / 1e3;
     if (rc != GW_OK) {
-        fprintf(stderr, "granwave falcon: %s\n", err.msg);
+        if (rc == GW_EINVAL) { /* "NAME: ..." of an option -> "falcon --NAME: ...", as the other studies */
+            gw_cli_study_error(gw_chain_setup_params(), "falcon", rc, &err);
+            fprintf(stderr, "granwave %s\n", err.msg);
+        } else {
+            fprintf(stderr, "granwave falcon: %s\n", err.msg);
+        }
         code = rc == GW_EINVAL ? 2 : 1;
         if (rc == GW_EINVAL && made[0])
             gw_cli_unmake(f.c.out, made);

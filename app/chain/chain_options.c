@@ -93,7 +93,8 @@ void chain_cli_options(chain_cli *c, gw_opt *o)
         void *dest = (char *)c + cli_dest[i].off;
         gw_opt *x = &o[i < NBASE ? i : i + 2];
         *x = (gw_opt){.name = p->name, .dest = dest, .metavar = p->metavar, .help = p->help,
-                      .lo = p->min, .hi = p->max, .open_lo = p->open_min};
+                      .lo = p->min, .hi = p->max, .open_lo = p->open_min,
+                      .open_hi = p->open_max};
         if (p->type == GW_PARAM_DOUBLE) {
             x->kind = GW_OPT_DOUBLE;
             *(double *)dest = p->def ? strtod(p->def, NULL) : 0;

@@ -85,8 +85,9 @@ int gw_cmd_wavespeed(int argc, char **argv)
     gw_cli_progress prog;
     gw_cli_progress_init(&prog, "  ", "collisions", 0);
     int rc = gw_cli_study_setup(gw_chain_wavespeed_setup_params(), &ws, opts, argc, argv, "wavespeed", &err);
-    if (rc == GW_OK && !quiet)
-        fprintf(stderr, "granwave wavespeed: %d collisions\n", nv * (int)(b - a + 1));
+    char header[96]; /* with the first progress line: after the study's checks */
+    snprintf(header, sizeof header, "granwave wavespeed: %d collisions", nv * (int)(b - a + 1));
+    prog.header = header;
     if (rc == GW_OK)
         rc = gw_chain_wavespeed_run(&ws, quiet ? NULL : gw_cli_progress_report, &prog, &wo, &err);
     if (rc != GW_OK) {

@@ -171,7 +171,7 @@ _IMPACT_INTS = ("n_peaks", "cluster")
 
 def drop(*, progress=None, **kwargs):
     r = _study("drop").run(kwargs, progress)
-    for k in ("block", "impacts_monotone", "canceled"):
+    for k in ("block", "impacts_monotone", "canceled", "cut_first_collision", "open_at_t_max"):
         r[k] = bool(r[k])
     first = {"n": r.pop("n_first"), "v_imp": r["v_imp"]}
     for k in [k for k in r if k.startswith("first_")]:

@@ -54,7 +54,8 @@ def _raise(rc, err, what, params=()):
         if text.startswith(p.name + ":"):
             text = p.keyword + text[len(p.name):]
             break
-    msg = f"{what}: {text}"
+    # the library's run messages name the study already ("chain: bead 1 still on the wall ...")
+    msg = text if text.startswith(what + ": ") else f"{what}: {text}"
     if rc in (GW_EINVAL, GW_EFORMAT):
         raise GranwaveValueError(msg, rc)
     if rc == GW_EIO:
@@ -195,7 +196,13 @@ class Study:
                     raise TypeError(f"{self.func}() got an unexpected keyword argument '{k}'")
                 if v is None:
                     continue
-                rc = lib.gw_param_set(self.table, buf, p.name.encode(), _text(p, v).encode(), ctypes.byref(err))
+                try:  # named as the library's messages are: the study, then the keyword
+                    text = _text(p, v)
+                except GranwaveValueError as e:
+                    raise GranwaveValueError(f"{self.func}: {e}", GW_EINVAL) from None
+                except TypeError as e:
+                    raise TypeError(f"{self.func}: {e}") from None
+                rc = lib.gw_param_set(self.table, buf, p.name.encode(), text.encode(), ctypes.byref(err))
                 if rc != 0:
                     _raise(rc, err, self.func, self.params)
         except BaseException:

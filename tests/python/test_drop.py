@@ -9,7 +9,9 @@ h = 5.1 mm in docs/drop.md); with the same gravity the two are the same
 computation (1e-9). The CLI comparisons are 1e-12 (same library, same inputs:
 only the printing rounds). The energy ledger closes to 1e-7 as in
 test_chain_drop."""
+import json
 import math
+import subprocess
 
 import numpy as np
 import pytest
@@ -130,3 +132,20 @@ def test_drop_progress_and_stop():
     with pytest.raises(granwave.GranwaveError) as e:
         granwave.drop(n=3, t_max=2e-3, progress=lambda done, total: done >= 500)
     assert e.value.status == -9
+
+
+@pytest.mark.parametrize("t_max, cut", [(1e-5, True), (3e-3, False)])
+def test_drop_cut_by_t_max(program, t_max, cut):
+    """A drop cut at t_max inside the first collision, bead 1 on the sensor, says so
+    in its result (the program: and a warning line), the same in both; one that
+    ran past the first collision with bead 1 in flight does not."""
+    d = granwave.drop(n=3, t_max=t_max)
+    assert d.cut_first_collision is cut and d.open_at_t_max is cut
+    assert d.first_collision["converged"] is not cut
+    out = subprocess.run([program, "drop", "--n", "3", "--t-max", str(t_max), "--json"], check=True,
+                         capture_output=True, text=True)
+    c = json.loads(out.stdout)
+    assert c["cut_first_collision"] is cut and c["open_at_t_max"] is cut
+    assert ("warning: the run was cut at t_max" in out.stderr) is cut
+    if cut:
+        assert math.isnan(d.impacts["t_end"][-1]) and c["impacts"][-1]["t_end"] is None

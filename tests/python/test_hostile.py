@@ -164,3 +164,44 @@ def test_falcon_runs_the_solver_given():
     assert f.f_max[0][2] == pytest.approx(one.f_max, rel=1e-12)
     g = granwave.falcon(n=(1, 3), heights=[])  # nothing given: the accuracy target, RK4
     assert g.accuracy == 1e-6 and (g.dt > 0).all()
+
+
+def test_a_failed_run_names_the_study_once():
+    """The library's run messages start with the study ("chain: bead 1 ..."):
+    Python said it twice ("chain: chain: ...", "drop: drop: ...")."""
+    with pytest.raises(granwave.GranwaveRunError) as e:
+        granwave.chain(n=3, t_max=1e-7)
+    assert str(e.value) == "chain: bead 1 still on the wall at t_max = 1e-07 s"
+    with pytest.raises(granwave.GranwaveRunError) as e:
+        granwave.drop(energy_tol=1e-20)
+    assert str(e.value).startswith("drop: relative energy error ") and "drop: drop" not in str(e.value)
+    with pytest.raises(granwave.GranwaveValueError) as e:  # a parameter's message: the study, then the keyword
+        granwave.chain(t_max=1e300)
+    assert str(e.value).startswith("chain: t_max: ")
+
+
+@pytest.mark.parametrize("e", [0, 1])
+def test_restitution_range_is_open_at_both_ends(e):
+    """restitution=1 was refused as "1 must be below 1", 0 as outside (0, 1]."""
+    with pytest.raises(granwave.GranwaveValueError) as x:
+        granwave.chain(restitution=e, damping="hc")
+    assert str(x.value) == f"chain: restitution: {e} is outside (0, 1)"
+
+
+def test_a_blown_up_run_fails_with_its_time():
+    """An RK4 step 260 times the 30 um bead's: the run blew up and returned with
+    F_max NaN; it fails now, at the time it blew up."""
+    with pytest.raises(granwave.GranwaveRunError) as e:
+        granwave.chain(n=3, radii=[4e-3, 3e-5, 4e-3], solver="rk4", dt=7e-8)
+    assert str(e.value).startswith("chain: the solution blew up at t = ")
+
+
+def test_a_value_python_refuses_names_the_study():
+    """A NUL or a bool refused before the library saw them said "material: ..." and
+    "n: expected a number" without the study every other refusal names."""
+    with pytest.raises(granwave.GranwaveValueError) as e:
+        granwave.chain(material="steel\0x")
+    assert str(e.value).startswith("chain: material: ")
+    with pytest.raises(TypeError) as t:
+        granwave.drop(n=True)
+    assert str(t.value) == "drop: n: expected a number, got True"

@@ -104,6 +104,59 @@ int gw_layer_clump_mass_parse(const char *name)
  * construction. */
 #define SAMPLE_OVERLAP_MAX 0.05
 
+/* See layer_impl.h (here beside the overlap check, its first user, which the
+ * sample readers' fuzz target builds without the rest of the layer). */
+int layer_grid_build(layer_grid *g, int n, const double *px, const double *py, int stride, double h)
+{
+    memset(g, 0, sizeof *g);
+    double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
+    for (int i = 0; i < n; i++) {
+        const double xi = px[(size_t)i * stride], yi = py[(size_t)i * stride];
+        x0 = fmin(x0, xi), x1 = fmax(x1, xi);
+        y0 = fmin(y0, yi), y1 = fmax(y1, yi);
+    }
+    /* a particle far away (a block thrown high) must not blow up the grid:
+     * coarsen the cells until their number is linear in n (pairs stay exact);
+     * counted in doubles, so that no extent overflows an integer */
+    const double ex = x1 - x0, ey = y1 - y0;
+    if (n < 1 || !isfinite(ex) || !isfinite(ey) || !(h > 0))
+        return GW_ELIMIT;
+    const double maxc = 16.0 * n + 64;
+    while ((ex / h + 1) * (ey / h + 1) > maxc)
+        h *= 2;
+    const long nx = (long)(ex / h) + 1, ny = (long)(ey / h) + 1, ncell = nx * ny;
+    g->nx = nx, g->ny = ny;
+    g->start = calloc((size_t)ncell + 1, sizeof *g->start);
+    g->idx = malloc((size_t)n * sizeof *g->idx);
+    g->cell = malloc((size_t)n * sizeof *g->cell);
+    int *fill = malloc((size_t)ncell * sizeof *fill);
+    if (!g->start || !g->idx || !g->cell || !fill) {
+        free(fill);
+        layer_grid_free(g);
+        return GW_ENOMEM;
+    }
+    for (int i = 0; i < n; i++) {
+        long cx = (long)((px[(size_t)i * stride] - x0) / h), cy = (long)((py[(size_t)i * stride] - y0) / h);
+        cx = cx < 0 ? 0 : cx >= nx ? nx - 1 : cx;
+        cy = cy < 0 ? 0 : cy >= ny ? ny - 1 : cy;
+        g->cell[i] = (int)(cy * nx + cx);
+        g->start[g->cell[i] + 1]++;
+    }
+    for (long k = 0; k < ncell; k++)
+        g->start[k + 1] += g->start[k];
+    memcpy(fill, g->start, (size_t)ncell * sizeof *fill);
+    for (int i = 0; i < n; i++)
+        g->idx[fill[g->cell[i]]++] = i;
+    free(fill);
+    return GW_OK;
+}
+
+void layer_grid_free(layer_grid *g)
+{
+    free(g->start), free(g->idx), free(g->cell);
+    memset(g, 0, sizeof *g);
+}
+
 /* Pairs found on a grid of square cells of side 2 R_max (an overlapping pair
  * lies in neighbouring cells), coarsened until the cells are at most 16 n + 64,
  * each disc against the discs of the 3 x 3 cells around its own: O(n) for a

@@ -41,58 +41,6 @@ static int push(layer_contact **c, int *nc, int *cap, int a, int b)
     return GW_OK;
 }
 
-/* See layer_impl.h. */
-int layer_grid_build(layer_grid *g, int n, const double *px, const double *py, int stride, double h)
-{
-    memset(g, 0, sizeof *g);
-    double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
-    for (int i = 0; i < n; i++) {
-        const double xi = px[(size_t)i * stride], yi = py[(size_t)i * stride];
-        x0 = fmin(x0, xi), x1 = fmax(x1, xi);
-        y0 = fmin(y0, yi), y1 = fmax(y1, yi);
-    }
-    /* a particle far away (a block thrown high) must not blow up the grid:
-     * coarsen the cells until their number is linear in n (pairs stay exact);
-     * counted in doubles, so that no extent overflows an integer */
-    const double ex = x1 - x0, ey = y1 - y0;
-    if (n < 1 || !isfinite(ex) || !isfinite(ey) || !(h > 0))
-        return GW_ELIMIT;
-    const double maxc = 16.0 * n + 64;
-    while ((ex / h + 1) * (ey / h + 1) > maxc)
-        h *= 2;
-    const long nx = (long)(ex / h) + 1, ny = (long)(ey / h) + 1, ncell = nx * ny;
-    g->nx = nx, g->ny = ny;
-    g->start = calloc((size_t)ncell + 1, sizeof *g->start);
-    g->idx = malloc((size_t)n * sizeof *g->idx);
-    g->cell = malloc((size_t)n * sizeof *g->cell);
-    int *fill = malloc((size_t)ncell * sizeof *fill);
-    if (!g->start || !g->idx || !g->cell || !fill) {
-        free(fill);
-        layer_grid_free(g);
-        return GW_ENOMEM;
-    }
-    for (int i = 0; i < n; i++) {
-        long cx = (long)((px[(size_t)i * stride] - x0) / h), cy = (long)((py[(size_t)i * stride] - y0) / h);
-        cx = cx < 0 ? 0 : cx >= nx ? nx - 1 : cx;
-        cy = cy < 0 ? 0 : cy >= ny ? ny - 1 : cy;
-        g->cell[i] = (int)(cy * nx + cx);
-        g->start[g->cell[i] + 1]++;
-    }
-    for (long k = 0; k < ncell; k++)
-        g->start[k + 1] += g->start[k];
-    memcpy(fill, g->start, (size_t)ncell * sizeof *fill);
-    for (int i = 0; i < n; i++)
-        g->idx[fill[g->cell[i]]++] = i;
-    free(fill);
-    return GW_OK;
-}
-
-void layer_grid_free(layer_grid *g)
-{
-    free(g->start), free(g->idx), free(g->cell);
-    memset(g, 0, sizeof *g);
-}
-
 /* Candidate pairs by a cell list over the bounding box of the particles. */
 static int pairs_cells(const gw_layer *L, layer_contact **c, int *nc, int *cap)
 {

@@ -294,11 +294,8 @@ static int collide_after(void *ctx, double t, const double *y, gw_err *err)
 {
     run_state *st = ctx;
     gw_chain_result *r = st->r;
-    char what[64];
-    if (chain_blown_up(st->c, y, r->energy_error, what, sizeof what))
-        return gw_err_set(err, GW_ESOLVER, "chain: the solution blew up at t = %.9g s (%s): the step is too long "
-                          "for the model's fastest time scale (a contact, the sensor body, damping or friction); "
-                          "lower dt (or dt-max), or use cvode", t, what);
+    if (chain_blown_up(st->c, y, r->energy_error, "chain", t, err) != GW_OK)
+        return GW_ESOLVER;
     if (st->s) {
         gw_solver_stats ss;
         gw_solver_get_stats(st->s, &ss);
@@ -467,8 +464,7 @@ static int collide_plan_make(const gw_chain_params *p, const gw_chain_run_opts *
      * contact could step over a whole contact. Contacts last at least about the
      * binary contact time at twice v_imp, so cap the step at a quarter of it. */
     if (!(pl->sp.dt_max > 0))
-        pl->sp.dt_max = 0.25 * fmin(gw_chain_tau1(m0, p->kwall, 2 * p->v_imp),
-                                    chain_contact_tau_min(p, 2 * p->v_imp));
+        pl->sp.dt_max = 0.25 * chain_contact_tau_min(p, 2 * p->v_imp); /* the wall's too */
     pl->type = o->solver ? o->solver : gw_solver_cvode;
     /* the step resolves the stiffest contact (a small bead between large ones was
      * taken at bead 1's scale and blew up) and a sensor body's oscillation */

@@ -406,11 +406,8 @@ static int drop_output(void *ctx, double t, double *y, gw_err *err)
 static int drop_after(void *ctx, double t, const double *y, gw_err *err)
 {
     const drop_state *st = ctx;
-    char what[64];
-    if (chain_blown_up(st->d->c, y, st->r->energy_error, what, sizeof what))
-        return gw_err_set(err, GW_ESOLVER, "drop: the solution blew up at t = %.9g s (%s): the step is too long "
-                          "for the model's fastest time scale (a contact, the sensor body, damping or friction); "
-                          "lower dt (or dt-max), or use cvode", t, what);
+    if (chain_blown_up(st->d->c, y, st->r->energy_error, "drop", t, err) != GW_OK)
+        return GW_ESOLVER;
     if (st->o->energy_tol > 0 && st->r->energy_error > st->o->energy_tol)
         return gw_err_set(err, GW_EENERGY, "drop: relative energy error %.3g exceeds the limit %.3g at t = %.9g s",
                           st->r->energy_error, st->o->energy_tol, t);
@@ -515,8 +512,7 @@ int gw_chain_drop_run(const gw_chain_drop_params *p, const gw_chain_run_opts *o,
      * of the drop are those of the first collision (relative speeds up to about
      * 2 v_imp, the top beads leaving at < 2 v_imp and returning at that speed) */
     if (!(sp.dt_max > 0))
-        sp.dt_max = 0.25 * fmin(gw_chain_tau1(m0, q.kwall, 2 * q.v_imp),
-                                chain_contact_tau_min(&q, 2 * q.v_imp));
+        sp.dt_max = 0.25 * chain_contact_tau_min(&q, 2 * q.v_imp); /* the wall's too */
     const gw_solver_type *type = o->solver ? o->solver : gw_solver_cvode;
     if (type == gw_solver_rk4 && !(sp.dt > 0))
         sp.dt = tc / (o->steps_per_tc > 0 ? o->steps_per_tc : 400.0);

@@ -420,19 +420,21 @@ static double wall_reduced_mass(const gw_chain_params *p)
     return M > 0 ? m0 * M / (m0 + M) : m0;
 }
 
-int chain_blown_up(const gw_chain *c, const double *y, double energy_error, char *what, size_t n)
+int chain_blown_up(const gw_chain *c, const double *y, double energy_error, const char *who, double t,
+                   gw_err *err)
 {
     const long dim = c->sys.dim;
-    for (long i = 0; i < dim; i++)
-        if (!isfinite(y[i])) {
-            snprintf(what, n, "state %ld of %ld not finite", i, dim);
-            return 1;
-        }
-    if (energy_error > 1) {
-        snprintf(what, n, "relative energy error %.3g", energy_error);
-        return 1;
-    }
-    return 0;
+    char what[64] = "";
+    for (long i = 0; i < dim && !what[0]; i++)
+        if (!isfinite(y[i]))
+            snprintf(what, sizeof what, "state %ld of %ld not finite", i, dim);
+    if (!what[0] && energy_error > 1)
+        snprintf(what, sizeof what, "relative energy error %.3g", energy_error);
+    if (!what[0])
+        return GW_OK;
+    return gw_err_set(err, GW_ESOLVER, "%s: the solution blew up at t = %.9g s (%s): the step is too long for the "
+                      "model's fastest time scale (a contact, the sensor body, damping or friction); lower dt (or "
+                      "dt-max), or use cvode", who, t, what);
 }
 
 double chain_contact_tau_min(const gw_chain_params *p, double v)

@@ -7,7 +7,6 @@
 #define GW_CHAIN_MODEL_H
 
 #include <math.h>
-#include <stddef.h>
 
 #include "chain_wall.h"
 
@@ -62,11 +61,13 @@ void chain_general_energy(const gw_chain *c, const double *y, gw_chain_energy *e
 int chain_sensor_steps_check(const gw_chain_params *p, const gw_solver_type *type, double t_len, const char *over,
                              gw_err *err);
 
-/* 1 when the run has blown up (a step too long for the stiffest contact): a
- * state not finite, or a relative energy error above 1 (what says which, in n
- * bytes); 0 otherwise. The energy monitor alone misses it: a NaN error never
- * exceeds the largest so far. */
-int chain_blown_up(const gw_chain *c, const double *y, double energy_error, char *what, size_t n);
+/* GW_ESOLVER when the run has blown up (a step too long for the stiffest
+ * contact): a state not finite, or a relative energy error above 1; the message
+ * starts "WHO: the solution blew up at t = ..." and says which. GW_OK otherwise.
+ * The energy monitor alone misses it: a NaN error never exceeds the largest so
+ * far. */
+int chain_blown_up(const gw_chain *c, const double *y, double energy_error, const char *who, double t,
+                   gw_err *err);
 
 /* The shortest binary contact time tau_1 (gw_chain_tau1) at relative speed v over
  * the column's contacts: every pair of beads (reduced mass, its coefficient) and

@@ -9,7 +9,6 @@
  * Exit codes: 0 ok, 1 run failure, 2 bad input (one line naming the input).
  * Units: SI; angles in degrees on the command line.
  */
-#include <errno.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -592,10 +591,9 @@ int gw_cmd_layer_impact(int argc, char **argv)
         }
         /* a snapshot_failure.vtk left by an earlier failed run in DIR is not
          * this run's: beside its results it read as the state where it failed */
-        if (code == 0 && gw_path_join(path, sizeof path, c.out, "snapshot_failure.vtk") == GW_OK &&
-            unlink(path) != 0 && errno != ENOENT) {
-            fprintf(stderr, "granwave layer-impact --out: %s: an earlier run's file, cannot remove it: %s\n", path,
-                    strerror(errno));
+        if (code == 0 &&
+            gw_cli_out_remove(c.out, (const char *const[]){"snapshot_failure.vtk", NULL}, &err) != GW_OK) {
+            fprintf(stderr, "granwave layer-impact --out: %s\n", err.msg);
             code = 1;
         }
         free(hdr);

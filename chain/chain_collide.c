@@ -534,6 +534,20 @@ int gw_chain_run_check(const gw_chain_params *p, const gw_chain_run_opts *o, gw_
     return collide_plan_make(p, o, &pl, err);
 }
 
+int chain_run_steps(const gw_chain_params *p, const gw_chain_run_opts *o, double *steps, gw_err *err)
+{
+    collide_plan pl;
+    int rc = collide_plan_make(p, o, &pl, err);
+    if (rc != GW_OK)
+        return rc;
+    const double step = pl.type == gw_solver_rk4 ? fmin(pl.sp.dt, pl.sp.dt_max) : pl.sp.dt_max;
+    double s = pl.t_expect / step;
+    if (pl.type != gw_solver_rk4 && p->sensor.mass > 0 && p->sensor.stiffness > 0)
+        s = fmax(s, 2.0 * sqrt(p->sensor.stiffness / p->sensor.mass) * pl.t_expect);
+    *steps = s;
+    return GW_OK;
+}
+
 int gw_chain_collide(const gw_chain *c, const gw_chain_run_opts *o, gw_chain_result *r,
                      gw_err *err)
 {

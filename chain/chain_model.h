@@ -82,4 +82,11 @@ double chain_contact_tau_min(const gw_chain_params *p, double v);
 int chain_steps_check(const gw_solver_type *type, const gw_solver_params *sp, const gw_solver_params *given,
                       double t_len, const char *over, gw_err *err);
 
+/* The steps a run of column p is expected to take over its collision, from the
+ * same plan as gw_chain_run_check (GW_EINVAL and its message when that refuses):
+ * the collision's expected length over the RK4 step, or over cvode's and
+ * arkode's largest step and at least 2 a radian of a sensor body's oscillation.
+ * Studies add them up over their columns (chain_sweep.c). */
+int chain_run_steps(const gw_chain_params *p, const gw_chain_run_opts *o, double *steps, gw_err *err);
+
 #endif

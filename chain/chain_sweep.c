@@ -7,8 +7,77 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "chain_model.h"
 #include "gw_chain.h"
 #include "gw_pool.h"
+
+/* Steps a whole study may take, summed over its columns: each run is bounded at
+ * 1e8 before it starts, but a study of 200 columns each near that bound (rk4 with
+ * a stiff sensor body: 2-3 s a column at N = 3, more as N grows) ran for many
+ * minutes with nothing refused. RK4 takes 0.26 us a step at N = 3 with a sensor
+ * body (measured), so 1e9 steps are a few minutes of CPU; the default falcon study
+ * takes about 3e6. */
+#define CHAIN_STUDY_STEPS_MAX 1e9
+
+/* The expected steps of every column of the study, added up (*worst: the case
+ * with the most). */
+static int study_steps(const gw_chain_params *tmpl, const gw_chain_run_opts *o, const double *v, int nv, int n_lo,
+                       int n_hi, double *total, long *worst, double *worst_steps, gw_err *err)
+{
+    *total = *worst_steps = 0;
+    *worst = 0;
+    for (int i = 0; i < nv; i++)
+        for (int n = n_lo; n <= n_hi; n++) {
+            gw_chain_params p = *tmpl;
+            p.n = n;
+            p.v_imp = v[i];
+            double s;
+            int rc = chain_run_steps(&p, o, &s, err);
+            if (rc != GW_OK)
+                return rc;
+            *total += s;
+            if (s > *worst_steps) {
+                *worst_steps = s;
+                *worst = (long)i * (n_hi - n_lo + 1) + (n - n_lo);
+            }
+        }
+    return GW_OK;
+}
+
+/* GW_EINVAL when the study's steps add up above CHAIN_STUDY_STEPS_MAX, naming what
+ * to change: the sensor body when the study passes without it, else the step the
+ * caller gave, else the columns. */
+static int study_steps_check(const gw_chain_params *tmpl, const gw_chain_run_opts *o, const double *v, int nv,
+                             int n_lo, int n_hi, gw_err *err)
+{
+    double total, most;
+    long worst;
+    int rc = study_steps(tmpl, o, v, nv, n_lo, n_hi, &total, &worst, &most, err);
+    if (rc != GW_OK || total <= CHAIN_STUDY_STEPS_MAX)
+        return rc;
+    const char *name = "n", *advice = "fewer columns or velocities";
+    gw_chain_params bare = *tmpl;
+    bare.sensor.mass = bare.sensor.stiffness = bare.sensor.damping = 0;
+    double t2, m2;
+    long w2;
+    gw_err e2 = {{0}};
+    int rk4 = o->solver == gw_solver_rk4;
+    if (tmpl->sensor.mass > 0 && tmpl->sensor.stiffness > 0 && !(rk4 && o->sp.dt > 0) &&
+        study_steps(&bare, o, v, nv, n_lo, n_hi, &t2, &w2, &m2, &e2) == GW_OK && t2 <= CHAIN_STUDY_STEPS_MAX) {
+        name = "sensor-stiffness";
+        advice = "a softer or heavier sensor body (its oscillation sets the step), cvode, or fewer columns";
+    } else if (rk4 && o->sp.dt > 0) {
+        name = "dt";
+        advice = "raise it, or fewer columns or velocities";
+    } else if (o->sp.dt_max > 0) {
+        name = "dt-max";
+        advice = "raise it, or fewer columns or velocities";
+    }
+    const int per_v = n_hi - n_lo + 1;
+    return gw_err_set(err, GW_EINVAL, "%s: the study's %ld collisions need about %.3g steps in all (N = %d at %g m/s "
+                      "alone about %.3g); at most %.0e a study: %s", name, (long)nv * per_v, total,
+                      n_lo + (int)(worst % per_v), v[worst / per_v], most, CHAIN_STUDY_STEPS_MAX, advice);
+}
 
 typedef struct sweep {
     const gw_chain_params *tmpl;
@@ -55,6 +124,9 @@ int gw_chain_sweep_n_progress(const gw_chain_params *tmpl, const gw_chain_run_op
         if (rc != GW_OK)
             return rc;
     }
+    int rc = study_steps_check(tmpl, o, v, nv, n_lo, n_hi, err);
+    if (rc != GW_OK)
+        return rc;
     return gw_cases_run(ncase, jobs, one, &w, progress, pctx, err);
 }
 

@@ -329,6 +329,15 @@ int gw_out_check(const char *dir, const char *what, gw_err *err)
         }
         if (errno != ENOENT)
             return gw_err_set(err, GW_EINVAL, "%s: '%s': %s", what, buf, strerror(errno));
+        /* a name that is a symbolic link to nothing is not a directory still to make:
+         * mkdir would refuse it after the run, so refuse it now */
+        if (lstat(buf, &st) == 0 && S_ISLNK(st.st_mode)) {
+            char target[4096];
+            ssize_t k = readlink(buf, target, sizeof target - 1);
+            target[k > 0 ? k : 0] = '\0';
+            return gw_err_set(err, GW_EINVAL, "%s: '%s' is a symbolic link to '%s', which does not exist", what,
+                              buf, target);
+        }
         while (n > 1 && buf[n - 1] == '/')
             buf[--n] = '\0';
         char *slash = strrchr(buf, '/');

@@ -639,7 +639,7 @@ runs "chain --material pvc --wall-material rigid" "$tmp/m.json" chain --material
 
 # --- 31: falcon's --out that cannot be made names the command and --out
 ln -s "$tmp/nowhere" "$tmp/dangling"
-refused "falcon --out on a dangling symbolic link" "^granwave falcon --out: .*dangling: not a directory$" \
+refused "falcon --out on a dangling symbolic link" "^granwave falcon --out: '.*dangling' is a symbolic link to '.*nowhere', which does not exist$" \
     falcon --n 1:2 --heights none --quiet --out "$tmp/dangling"
 rm -f "$tmp/dangling"
 
@@ -668,6 +668,31 @@ refused "wavespeed --dt-max 1e-13 without --quiet: one line" '^granwave wavespee
     wavespeed --n 6:8 --dt-max 1e-13 --out "$tmp/o"
 timeout 20 "$GW" falcon --n 1:2 --heights none >/dev/null 2>"$tmp/e" </dev/null
 head -1 "$tmp/e" | grep -qx 'granwave falcon: 2 collisions (N = 1..2, 1 velocities)' && ok "  a study that runs still heads its progress lines" || ko "falcon progress: $(head -2 "$tmp/e")"
+
+# --- 35: a dangling symbolic link as --out (or one of its parents) is refused before the run
+# (chain, drop and dispersion took the missing target for a directory still to make, ran,
+# then failed writing with exit 1)
+ln -s "$tmp/nowhere" "$tmp/dangling"
+for c in "chain --n 3" "drop --n 2" "dispersion --n 16"; do
+    refused "$c --out on a dangling symbolic link" "^granwave ${c%% *} --out: '.*dangling' is a symbolic link to '.*nowhere', which does not exist$" \
+        $c --out "$tmp/dangling"
+done
+refused "chain --out under a dangling symbolic link" "^granwave chain --out: '.*dangling' is a symbolic link to '.*nowhere', which does not exist$" \
+    chain --n 3 --out "$tmp/dangling/sub"
+[ -e "$tmp/nowhere" ] && ko "  a refused run made the link's target"
+rm -f "$tmp/dangling"
+
+# --- 36: a study is bounded as a whole, not only column by column (rk4 on a stiff sensor
+# body passed each column's 1e8 steps and ran 60 columns of 2-30 s one after another)
+REFUSE_TIMEOUT=5 refused "falcon --solver rk4, a stiff sensor body, 60 columns (3e9 steps in all)" \
+    "^granwave falcon --sensor-stiffness: the study's 60 collisions need about 3.0.e\+09 steps in all \(N = 30 at 0.3 m/s alone about 9.9.e\+07\); at most 1e\+09 a study" \
+    falcon --solver rk4 --sensor-mass 1e-5 --sensor-stiffness 1e12 --heights none --n 1:30 --vimp 0.3,0.5 --quiet --out "$tmp/o"
+REFUSE_TIMEOUT=5 refused "falcon --solver rk4 --dt 1e-11 over 30 columns: names --dt" \
+    "^granwave falcon --dt: the study's 30 collisions need about 1.2.e\+09 steps in all" \
+    falcon --solver rk4 --dt 1e-11 --heights none --n 1:30 --out "$tmp/o"
+runs "falcon --solver rk4 with a sensor body on 2 columns (within the bound)" "$tmp/f.json" \
+    falcon --solver rk4 --sensor-mass 1e-5 --sensor-stiffness 1e11 --heights none --n 1:2 --quiet --json &&
+    jcheck "  runs" "$tmp/f.json" "len(j['velocities']) == 1 and j['unfinished'] == 0"
 
 echo "test_hostile_chain: $passes passed, $fails failed"
 [ $fails -eq 0 ]

@@ -297,11 +297,11 @@ runs "chain --vimp 1e-9 (the range's lower end)" "$tmp/v.json" chain --vimp 1e-9
 # --- 7: the stored trace of chain --out held every bead's x and v at every sample
 # and event in memory: --n 1000 --dt-out 1e-9 grew toward 400 GB, --n 10000 at the
 # default dt-out toward 235 GB (until the kernel killed it); bounded before the run
-refused "chain --n 1000 --dt-out 1e-9 --out (a 400 GB trace)" '^granwave chain: dt-out: the trace of 1000 beads .* above the 5 GB limit: raise dt-out to' \
+refused "chain --n 1000 --dt-out 1e-9 --out (a 400 GB trace)" '^granwave chain --dt-out: the trace of 1000 beads .* above the 5 GB limit: raise dt-out to' \
     chain --n 1000 --dt-out 1e-9 --out "$tmp/o"
-refused "chain --n 10000 --out (its events alone take 6.4 GB)" '^granwave chain: n: the trace of 10000 beads would write .* at any dt-out' \
+refused "chain --n 10000 --out (its events alone take 6.4 GB)" '^granwave chain --n: the trace of 10000 beads would write .* at any dt-out' \
     chain --n 10000 --out "$tmp/o"
-refused "chain --n 2000 --out at the default dt-out (9.4 GB)" '^granwave chain: dt-out: .* raise dt-out to 1.4e-06 s' \
+refused "chain --n 2000 --out at the default dt-out (9.4 GB)" '^granwave chain --dt-out: .* raise dt-out to 1.4e-06 s' \
     chain --n 2000 --out "$tmp/o"
 
 # --- 8: the settings recorded are those run, defaults resolved (they were the raw
@@ -332,7 +332,7 @@ PYEOF
 fi
 # --- 9: files and the drop's trace (5 GB of files, 28 B a value)
 refused "chain --n 1000 --out at the default dt-out (8.2 GB of files)" \
-    '^granwave chain: dt-out: the trace of 1000 beads at .* would write about 8.2. GB .* above the 5 GB limit: raise dt-out to 3e-07 s' \
+    '^granwave chain --dt-out: the trace of 1000 beads at .* would write about 8.2. GB .* above the 5 GB limit: raise dt-out to 3e-07 s' \
     chain --n 1000 --out "$tmp/o"
 refused "drop --n 1000 --t-max 1 --dt-out 1e-7 --out (160 GB in memory)" \
     '^granwave drop --dt-out: the trace of 1000 beads at 1e-07 s .*160 GB in memory.* raise dt-out to 1.3e-05 s or more' \
@@ -448,17 +448,17 @@ memref() {
     fi
 }
 memref "chain --n 50000000 (47 GB with cvode)" \
-    '^granwave chain: n: a column of 50000000 beads needs about 47.2 GB .* cvode \(bdf\) .* above the 2.15 GB limit: at most 2274873 beads here$' \
+    '^granwave chain --n: a column of 50000000 beads needs about 47.2 GB .* cvode \(bdf\) .* above the 2.15 GB limit: at most 2274873 beads here$' \
     chain --n 50000000 --out "$tmp/o"
-memref "chain --n 3000000 --solver arkode --method dirk" '^granwave chain: n: a column of 3000000 beads .* arkode \(dirk\) .* at most [0-9]+ beads here$' \
+memref "chain --n 3000000 --solver arkode --method dirk" '^granwave chain --n: a column of 3000000 beads .* arkode \(dirk\) .* at most [0-9]+ beads here$' \
     chain --n 3000000 --solver arkode --method dirk --out "$tmp/o"
 memref "chain --n 20000 with a sensor body (a full Jacobian: 77 GB)" \
-    '^granwave chain: n: a column of 20000 beads needs about 76.8 GB .*a full Jacobian.* at most 3339 beads here$' \
+    '^granwave chain --n: a column of 20000 beads needs about 76.8 GB .*a full Jacobian.* at most 3339 beads here$' \
     chain --n 20000 --sensor-mass 3e-3 --sensor-stiffness 2e9 --out "$tmp/o"
 memref "drop --n 100000 with a sensor body" '^granwave drop --n: a column of 100000 beads .*a full Jacobian.* at most 3339 beads here$' \
     drop --n 100000 --sensor-mass 3e-3 --sensor-stiffness 2e9 --out "$tmp/o"
 memref "chain --n 10000000 --solver rk4: the steps bound trips at fewer beads and is named" \
-    '^granwave chain: dt: a step of .* needs about 8e\+09 steps over the collision' chain --n 10000000 --solver rk4 --out "$tmp/o"
+    '^granwave chain --dt: a step of .* needs about 8e\+09 steps over the collision' chain --n 10000000 --solver rk4 --out "$tmp/o"
 # below the bound the estimate does not refuse: the arkode erk column of 3339 beads
 # with a sensor (no Jacobian) starts (stopped at t-max 1e-9 s)
 timeout 60 "$GW" chain --n 3339 --sensor-mass 3e-3 --sensor-stiffness 2e9 --solver arkode --t-max 1e-9 --json >/dev/null 2>"$tmp/stderr" </dev/null
@@ -541,12 +541,12 @@ fi
 # --- 24: an explicit --t-max bounded like the collision it may prolong (REFUSE_TIMEOUT: at once)
 # a damped column held on the wall by gravity never ends: it ran to t-max
 REFUSE_TIMEOUT=5 refused "chain --t-max 1e6 on a column that does not end (ran for hours)" \
-    '^granwave chain: t-max: 1e\+06 s would take about 4.8.e\+10 steps .* at most 1e\+08 steps and 1e\+09 samples: lower t-max to [0-9]+ s or less$' \
+    '^granwave chain --t-max: 1e\+06 s would take about 4.8.e\+10 steps .* at most 1e\+08 steps and 1e\+09 samples: lower t-max to [0-9]+ s or less$' \
     chain --n 3 --vimp 1e-3 --gravity 1e4 --damping hc --alpha 1 --t-max 1e6 --out "$tmp/o"
-REFUSE_TIMEOUT=5 refused "the same with rk4" '^granwave chain: t-max: 1e\+06 s would take about 1.0.e\+13 steps' \
+REFUSE_TIMEOUT=5 refused "the same with rk4" '^granwave chain --t-max: 1e\+06 s would take about 1.0.e\+13 steps' \
     chain --n 3 --vimp 1e-3 --gravity 1e4 --damping hc --alpha 1 --t-max 1e6 --solver rk4
 REFUSE_TIMEOUT=5 refused "chain --t-max 100 --out: the trace it could store (5.7e8 samples)" \
-    '^granwave chain: t-max: 100 s would store about 5.7.e\+08 samples of 3 beads .* above the 5 GB limit' \
+    '^granwave chain --t-max: 100 s would store about 5.7.e\+08 samples of 3 beads .* above the 5 GB limit' \
     chain --n 3 --t-max 100 --out "$tmp/o"
 REFUSE_TIMEOUT=5 refused "falcon --t-max 1e6 (each run's bound)" '^granwave falcon --t-max: 1e\+06 s would take' \
     falcon --n 1:3 --heights none --t-max 1e6 --quiet --out "$tmp/o"
@@ -595,7 +595,7 @@ done
 runs "drop --n 3 --radii 4e-3,1e-4,4e-3 --t-max 2e-4 --solver rk4" "$tmp/r.json" drop --n 3 --radii 4e-3,1e-4,4e-3 --t-max 2e-4 --solver rk4 --json &&
     jcheck "  its step below the small bead's contact time / 400 (T_c / 400 of bead 1 was 5.7e-8 s)" "$tmp/r.json" "0 < j['settings']['solver']['dt'] < 1e-9"
 REFUSE_TIMEOUT=5 refused "chain --sensor-mass 1e-7 --sensor-stiffness 1e14 --solver rk4: the default step is not to be raised" \
-    '^granwave chain: dt: a step of 7.9.*e-14 s needs about .* steps over the collision .* the default step resolves the stiffest contact or the sensor body.s oscillation .*: use cvode or arkode' \
+    '^granwave chain --dt: a step of 7.9.*e-14 s needs about .* steps over the collision .* the default step resolves the stiffest contact or the sensor body.s oscillation .*: use cvode or arkode' \
     chain --n 3 --sensor-mass 1e-7 --sensor-stiffness 1e14 --solver rk4 --out "$tmp/o"
 
 # --- 27: a blown-up run fails (exit 1, the time), it never exits 0
@@ -648,7 +648,7 @@ REFUSE_TIMEOUT=5 refused "drop --sensor-mass 1e-7 --sensor-stiffness 1e14 (48 s 
     '^granwave drop --sensor-stiffness: a sensor body oscillating at 3.16e\+10 rad/s .* needs about 6.32e\+08 steps over t-max .* at most 1e\+08' \
     drop --sensor-mass 1e-7 --sensor-stiffness 1e14 --out "$tmp/o"
 REFUSE_TIMEOUT=5 refused "chain --sensor-mass 1e-5 --sensor-stiffness 1e12 --t-max 1" \
-    '^granwave chain: sensor-stiffness: a sensor body oscillating at 3.16e\+08 rad/s .* over t-max' \
+    '^granwave chain --sensor-stiffness: a sensor body oscillating at 3.16e\+08 rad/s .* over t-max' \
     chain --n 3 --sensor-mass 1e-5 --sensor-stiffness 1e12 --t-max 1 --out "$tmp/o"
 runs "drop --sensor-mass 1e-3 --sensor-stiffness 1e8 (a sensor body within the bound)" "$tmp/d.json" drop --sensor-mass 1e-3 --sensor-stiffness 1e8 --json &&
     jcheck "  runs" "$tmp/d.json" "j['n_impacts'] >= 1 and j['f_max'] > 0"

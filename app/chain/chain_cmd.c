@@ -119,7 +119,8 @@ int gw_cmd_chain(int argc, char **argv)
     }
     /* the run's bounds (samples, trace, steps, memory) before anything is allocated */
     if (gw_chain_run_check(&c.params, &c.run, &err) != GW_OK) {
-        fprintf(stderr, "granwave chain: %s\n", err.msg);
+        gw_cli_study_error(gw_chain_setup_params(), "chain", GW_EINVAL, &err); /* "NAME: ..." -> "chain --NAME: ..." */
+        fprintf(stderr, "granwave %s\n", err.msg);
         chain_cli_free(&c);
         return 2;
     }

@@ -39,6 +39,21 @@ typedef struct layer_probe {
     double t, g[2], x, y, vx, vy;
 } layer_probe;
 
+/* The block's first contact with one disc (layer_watch_first_contact), read at
+ * every evaluation of the watch roots (in DEM mode every step end), not at the
+ * samples: from the touch to the block's smallest kinetic energy while it
+ * still touches that disc, and the contact's opening (the overlap's zero
+ * between two evaluations, by linear interpolation). ed: the ledger's
+ * dissipation E_d then, edb the block region's part of it (NaN without
+ * regions). J, s. */
+typedef struct layer_first_contact {
+    int target;            /* the disc watched, -1: off */
+    int n_touch;           /* evaluations that saw it overlapped before it opened */
+    double kb_min, t_min, ed_min, edb_min;
+    double t_open, ed_open; /* NaN until it opens */
+    double t_last, ov_last, ed_last; /* the last evaluation that saw it overlapped */
+} layer_first_contact;
+
 struct gw_layer {
     gw_layer_params p;
     double tan_phi;
@@ -92,6 +107,7 @@ struct gw_layer {
     void *watch_ctx;
     layer_probe probe[2];
     gw_layer_block_extremes ext;
+    layer_first_contact fc; /* layer_watch_first_contact: the block on disc fc.target */
     /* The listed contacts that touch the block (indices into c), for the watch
      * roots: made for list number wblk_gen (st.rebuilds) and body wblk_body. */
     int *wblk, nwblk, wblk_body;
@@ -327,6 +343,9 @@ static inline int layer_root_count(const gw_layer *L)
 /* Block watch (layer_watch.c): fill the two watch roots at g[layer_root_count]
  * for state (t, y) and record the probe and the extremes. */
 void layer_watch_roots(gw_layer *L, double t, const double *y, double *g);
+/* Follow the block's first contact with disc target (after gw_layer_watch_block,
+ * before gw_layer_start); read L->fc after the run. */
+void layer_watch_first_contact(gw_layer *L, int target);
 /* After a solver stop with roots: report the watch roots that fired (in time
  * order) to the watch callback. Returns 1 when a root other than the watch's
  * fired (the run driver then handles the stop as before), 0 otherwise. */

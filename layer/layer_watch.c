@@ -34,6 +34,7 @@ int gw_layer_watch_block(gw_layer *L, gw_layer_block_fn fn, void *ctx, gw_err *e
     if (L->solver)
         return gw_err_set(err, GW_EINVAL, "layer: the block watch must be set before gw_layer_start");
     L->watch = 1;
+    L->fc.target = -1;
     L->watch_fn = fn;
     L->watch_ctx = ctx;
     memset(L->probe, 0, sizeof L->probe);
@@ -49,6 +50,43 @@ void gw_layer_block_extremes_get(const gw_layer *L, gw_layer_block_extremes *ex)
     else
         *ex = (gw_layer_block_extremes){.vy_max = NAN, .t_vy_max = NAN, .vx_at_vy_max = NAN,
                                         .y_min = NAN, .t_y_min = NAN, .n = 0};
+}
+
+void layer_watch_first_contact(gw_layer *L, int target)
+{
+    L->fc = (layer_first_contact){.target = target, .kb_min = INFINITY, .t_min = NAN, .ed_min = NAN,
+                                  .edb_min = NAN, .t_open = NAN, .ed_open = NAN, .t_last = NAN};
+}
+
+/* The first contact at one evaluation of the roots (state y at t). */
+static void first_contact(gw_layer *L, double t, const double *y)
+{
+    layer_first_contact *f = &L->fc;
+    if (!isnan(f->t_open))
+        return;
+    const int bb = L->block_body;
+    double pb[2], pt[2], arm[2];
+    layer_disc_xy(L, y, L->block, pb, arm);
+    layer_disc_xy(L, y, f->target, pt, arm);
+    const double ov = L->r[L->block] + L->r[f->target] - hypot(pb[0] - pt[0], pb[1] - pt[1]);
+    const double *tail = y + 6 * L->nb + L->nc, ed = tail[0];
+    if (ov > 0) {
+        const double *s = y + 6 * bb;
+        const double kb = 0.5 * L->m[bb] * (s[3] * s[3] + s[4] * s[4]) + 0.5 * L->inertia[bb] * s[5] * s[5];
+        f->n_touch++;
+        if (kb < f->kb_min) {
+            f->kb_min = kb;
+            f->t_min = t;
+            f->ed_min = ed;
+            f->edb_min = L->reg_n > 0 ? tail[2 + 2 * (L->reg_n + 1)] : NAN;
+        }
+        f->t_last = t, f->ov_last = ov, f->ed_last = ed;
+    } else if (f->n_touch > 0 && t > f->t_last) {
+        /* opened between the last evaluation that saw it overlapped and this one */
+        const double a = f->ov_last / (f->ov_last - ov);
+        f->t_open = f->t_last + a * (t - f->t_last);
+        f->ed_open = f->ed_last + a * (ed - f->ed_last);
+    }
 }
 
 void layer_watch_roots(gw_layer *L, double t, const double *y, double *g)
@@ -93,6 +131,8 @@ void layer_watch_roots(gw_layer *L, double t, const double *y, double *g)
         e->t_y_min = t;
     }
     e->n++;
+    if (L->fc.target >= 0)
+        first_contact(L, t, y);
 }
 
 int layer_watch_dispatch(gw_layer *L)

@@ -614,7 +614,7 @@ int gw_cmd_layer_impact(int argc, char **argv)
                    r.t_rebound_first * 1e3, r.t_leave * 1e3);
             printf("  penetration %.4g m (%.3g R_m)\n", r.penetration, r.penetration / c.rm);
             if (isnan(r.t_first_contact))
-                printf("  first contact: unresolved (fewer than 3 samples in it: lower --dt-out)\n");
+                printf("  first contact: unresolved (fewer than 3 steps in it: lower --dt)\n");
             else
                 printf("  first contact: E_d = %.3g of E_incident (ends at %.4g ms)\n",
                        r.dissipated_first_contact, r.t_first_contact * 1e3);

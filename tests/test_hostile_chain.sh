@@ -148,6 +148,18 @@
 #    checks, so a refusal by a run's bounds was two stderr lines; and falcon named
 #    the option without its dashes ("granwave falcon: dt: ..."). The line now heads
 #    the first progress line, and falcon says "falcon --dt:" as the others do.
+#  35 --dt-max had no effect under rk4: the run stepped at --dt whatever the
+#    cap (chain --solver rk4 --dt-max 1e-8: 3156 steps, as without it, and the
+#    settings said dt_max 1e-8 beside dt 3.1e-8); a --dt above the default cap
+#    (a quarter of the shortest contact) stepped over half a contact while the
+#    plan's bounds and the record assumed the cap. The fixed-step backends now
+#    step at the smaller of dt and dt_max, and the run records that step.
+#  36 sweep --jobs under mpirun (2 ranks or more) had no effect: each rank runs
+#    one case at a time and the threads are never started, yet the sweep ran
+#    and exited 0. Refused now (exit 2 on every rank, nothing made); under
+#    mpirun -np 1 the threads run and --jobs counts. The table of a chain
+#    sweep (rk4; cvode with calibrated damping) is the same byte for byte on
+#    1 and 2 threads and on 2 MPI ranks.
 set -u
 GW=$1
 SRC=${2:-.}
@@ -668,6 +680,44 @@ refused "wavespeed --dt-max 1e-13 without --quiet: one line" '^granwave wavespee
     wavespeed --n 6:8 --dt-max 1e-13 --out "$tmp/o"
 timeout 20 "$GW" falcon --n 1:2 --heights none >/dev/null 2>"$tmp/e" </dev/null
 head -1 "$tmp/e" | grep -qx 'granwave falcon: 2 collisions (N = 1..2, 1 velocities)' && ok "  a study that runs still heads its progress lines" || ko "falcon progress: $(head -2 "$tmp/e")"
+
+# --- 35: rk4 steps at the smaller of --dt and --dt-max, and records that step
+if runs "chain --n 3 --solver rk4" "$tmp/r0.json" chain --n 3 --solver rk4 --json &&
+    runs "chain --n 3 --solver rk4 --dt-max 1e-8" "$tmp/r1.json" chain --n 3 --solver rk4 --dt-max 1e-8 --json; then
+    jcheck "  a cap below the default step shortens it (3156 steps before, as without it)" "$tmp/r1.json" \
+        "(lambda a: j['steps'] > 2.5 * a['steps'] and j['settings']['solver']['dt'] == 1e-8)(json.load(open('$tmp/r0.json')))"
+fi
+runs "chain --n 3 --solver rk4 --dt 1e-5 --dt-out 1e-5 (a step above the default cap)" "$tmp/r2.json" \
+    chain --n 3 --solver rk4 --dt 1e-5 --dt-out 1e-5 --json &&
+    jcheck "  the step taken and recorded is the cap, a quarter of the shortest contact" "$tmp/r2.json" \
+        "j['settings']['solver']['dt'] == j['settings']['solver']['dt_max'] < 1e-5 and j['steps'] >= 16"
+
+# --- 36: sweep --jobs under mpirun is refused; the table does not depend on threads or ranks
+printf '[sweep]\nmodel = chain\n[grid]\nn = 1:4\nvimp = 0.1, 0.3\ndamping = kk, hc\n[params]\nrestitution = 0.9\n' >"$tmp/mt.ini"
+rm -rf "$tmp/t1" "$tmp/t2"
+timeout -s KILL 120 "$GW" sweep "$tmp/mt.ini" --out "$tmp/t1" --jobs 1 --quiet </dev/null 2>"$tmp/stderr" &&
+    timeout -s KILL 120 "$GW" sweep "$tmp/mt.ini" --out "$tmp/t2" --jobs 2 --quiet </dev/null 2>>"$tmp/stderr" &&
+    cmp -s "$tmp/t1/results.csv" "$tmp/t2/results.csv" && ok "a chain sweep's table: the same on 1 and 2 threads" ||
+    ko "chain sweep on 1 and 2 threads: $(head -c 300 "$tmp/stderr")"
+if command -v mpirun >/dev/null && ldd "$GW" 2>/dev/null | grep -q libmpi; then
+    mpi() { timeout -s KILL 120 mpirun --allow-run-as-root --oversubscribe "$@" </dev/null; }
+    rm -rf "$tmp/o" "$tmp/m2"
+    mpi -np 2 "$GW" sweep "$tmp/mt.ini" --out "$tmp/o" --jobs 4 --quiet >"$tmp/stdout" 2>"$tmp/stderr"
+    rc=$?
+    [ $rc -ne 0 ] && [ ! -e "$tmp/o" ] && [ ! -s "$tmp/stdout" ] &&
+        [ "$(grep -c '^granwave sweep --jobs: has no effect under mpirun with 2 ranks' "$tmp/stderr")" = 1 ] &&
+        ok "sweep --jobs 4 under mpirun -np 2: refused on one line, nothing made" ||
+        ko "sweep --jobs under mpirun -np 2: exit $rc, $(ls "$tmp/o" 2>/dev/null) $(head -c 300 "$tmp/stderr")"
+    mpi -np 2 "$GW" sweep "$tmp/mt.ini" --out "$tmp/m2" --quiet >/dev/null 2>"$tmp/stderr" &&
+        cmp -s "$tmp/t1/results.csv" "$tmp/m2/results.csv" && ok "  the same sweep on 2 MPI ranks: the threads' table byte for byte" ||
+        ko "chain sweep on 2 ranks: $(head -c 300 "$tmp/stderr")"
+    rm -rf "$tmp/m2"
+    mpi -np 1 "$GW" sweep "$tmp/mt.ini" --out "$tmp/m2" --jobs 2 --quiet >/dev/null 2>"$tmp/stderr" &&
+        cmp -s "$tmp/t1/results.csv" "$tmp/m2/results.csv" && ok "  under mpirun -np 1 the threads run: --jobs 2 accepted, the same table" ||
+        ko "mpirun -np 1 --jobs 2: $(head -c 300 "$tmp/stderr")"
+else
+    echo "SKIP: mpirun or an MPI build missing (section 36's MPI half)"
+fi
 
 echo "test_hostile_chain: $passes passed, $fails failed"
 [ $fails -eq 0 ]

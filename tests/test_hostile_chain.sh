@@ -160,6 +160,15 @@
 #    mpirun -np 1 the threads run and --jobs counts. The table of a chain
 #    sweep (rk4; cvode with calibrated damping) is the same byte for byte on
 #    1 and 2 threads and on 2 MPI ranks.
+#  37 dispersion's omega_c_rel_err compared the highest ridge with omega_c, the
+#    law at qa = pi, a wavenumber the chain has only for an even periodic ring:
+#    --n 9 (highest qa 0.89 pi) and --n 8 --ends fixed reported 1.5e-2 for a
+#    ridge that follows the law to 1e-4. It is taken against omega(qa) at the
+#    ridge's own wavenumber now (2.4e-5), unchanged for an even ring.
+#  38 a subnormal number (1e-308, -1e-320: strtod's underflow) was refused as
+#    "'1e-308' is not a finite number"; it is finite, and the message now says
+#    it lies below the smallest normal double. Overflow (1e5000) keeps its
+#    message.
 set -u
 GW=$1
 SRC=${2:-.}
@@ -718,6 +727,20 @@ if command -v mpirun >/dev/null && ldd "$GW" 2>/dev/null | grep -q libmpi; then
 else
     echo "SKIP: mpirun or an MPI build missing (section 36's MPI half)"
 fi
+
+# --- 37: dispersion's cutoff error is taken at the highest ridge's own wavenumber
+for a in "--n 9" "--n 8 --ends fixed" "--n 64"; do
+    runs "dispersion $a" "$tmp/d.json" dispersion $a --json &&
+        jcheck "  omega_c_rel_err below 1e-3 (1.5e-2 before for n 9 and 8 fixed), the ridge error below 1e-3" "$tmp/d.json" \
+            "j['omega_c_rel_err'] < 1e-3 and j['ridge_max_rel_err'] < 1e-3 and j['n_resolved'] >= 4"
+done
+
+# --- 38: a subnormal value is refused as too small, not as "not a finite number"
+refused "dispersion --f0 1e-308 (subnormal)" \
+    "^granwave dispersion --f0: '1e-308' is too small in magnitude: nonzero values lie at or above 2.2251e-308" \
+    dispersion --f0 1e-308 --out "$tmp/o"
+refused "chain --vimp -1e-320 (subnormal)" "^granwave chain --vimp: '-1e-320' is too small in magnitude" chain --vimp -1e-320 --out "$tmp/o"
+refused "chain --vimp 1e5000 (overflow)" "^granwave chain --vimp: '1e5000' is not a finite number$" chain --vimp 1e5000 --out "$tmp/o"
 
 echo "test_hostile_chain: $passes passed, $fails failed"
 [ $fails -eq 0 ]

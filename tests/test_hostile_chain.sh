@@ -169,6 +169,10 @@
 #    "'1e-308' is not a finite number"; it is finite, and the message now says
 #    it lies below the smallest normal double. Overflow (1e5000) keeps its
 #    message.
+#  39 wavespeed --threshold took any fraction in (0, 1]: below about 1e-6 of
+#    F_max(1) the front is read in the solitary wave's precursor tail and then
+#    in the solver's tolerance (1e-300: v_front 874 against 627 m/s at 0.3 m/s,
+#    beta 0.186 +- 0.023, exit 0). The range is [1e-6, 1] now.
 set -u
 GW=$1
 SRC=${2:-.}
@@ -741,6 +745,12 @@ refused "dispersion --f0 1e-308 (subnormal)" \
     dispersion --f0 1e-308 --out "$tmp/o"
 refused "chain --vimp -1e-320 (subnormal)" "^granwave chain --vimp: '-1e-320' is too small in magnitude" chain --vimp -1e-320 --out "$tmp/o"
 refused "chain --vimp 1e5000 (overflow)" "^granwave chain --vimp: '1e5000' is not a finite number$" chain --vimp 1e5000 --out "$tmp/o"
+
+# --- 39: wavespeed's front threshold lies in [1e-6, 1]
+refused "wavespeed --threshold 1e-30 (the front read in the solver's noise)" \
+    "^granwave wavespeed --threshold: 1e-30 is outside \[1e-06, 1\]$" wavespeed --n 5:8 --threshold 1e-30 --out "$tmp/o"
+runs "wavespeed --threshold 1e-6 (the lowest)" "$tmp/w.json" wavespeed --n 5:10 --vimp 0.1,0.3 --threshold 1e-6 --quiet --json &&
+    jcheck "  the front's beta is 1/5 to 1e-4" "$tmp/w.json" "abs(j['fits']['front']['beta'] - 0.2) < 1e-4"
 
 echo "test_hostile_chain: $passes passed, $fails failed"
 [ $fails -eq 0 ]

@@ -223,6 +223,11 @@ int gw_cmd_sweep(int argc, char **argv, const gw_sweep_model *const *models, int
     } else if (npos != 1) {
         gw_err_set(&err, GW_EINVAL, "a config file is required (see granwave sweep --help)");
         code = 2;
+    } else if (use_mpi && size > 1 && gw_cli_find(opts, "jobs")->seen) {
+        /* every rank decides alike (the same arguments): no broadcast needed */
+        gw_err_set(&err, GW_EINVAL, "sweep --jobs: has no effect under mpirun with %d ranks (each rank but the "
+                   "writer runs one case at a time: choose the ranks with mpirun -np)", size);
+        code = 2;
     } else if (gw_sweep_config_read(pos[0], models, nmodels, &cfg, &m, &err) != GW_OK) {
         code = 2;
     } else if (!out && !(out = cfg.out)) {

@@ -602,7 +602,8 @@ int gw_chain_collide(const gw_chain *c, const gw_chain_run_opts *o, gw_chain_res
     const gw_solver_type *type = pl.type;
     r->run_t_max = t_max;
     r->run_dt_out = dt_out;
-    r->run_dt = sp.dt;
+    /* rk4 steps at the smaller of dt and dt_max (gw_backend_rk4.c): record that */
+    r->run_dt = type == gw_solver_rk4 ? fmin(sp.dt, sp.dt_max) : sp.dt;
     r->run_dt_max = sp.dt_max;
 
     gw_chain_energy e;

@@ -43,7 +43,7 @@ static const gw_param collision_fields[] = {
     RD("t_end", r.t_end, "s", "end of the run"),
     RD("t_max", r.run_t_max, "s", "time limit the run used (default 20 (n T_q + tau_1))"),
     RD("dt_out", r.run_dt_out, "s", "sampling interval the run used (default tau_1/200)"),
-    RD("dt", r.run_dt, "s", "RK4 step the run used (default T_c/400; 0: cvode, arkode)"),
+    RD("dt", r.run_dt, "s", "RK4 step the run used (default T_c/400, at most dt_max; 0: cvode, arkode)"),
     RD("dt_max", r.run_dt_max, "s", "largest step the run allowed (default a quarter of the shortest contact)"),
     RL("events", r.n_events, "contact events located"),
     RL("missed_events", r.missed_events, "contact changes found from the state, not a root"),

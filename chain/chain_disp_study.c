@@ -66,7 +66,7 @@ static const gw_param disp_fields[] = {
     RD("a", r.a, "m", "lattice spacing 2R - d0"),
     RD("omega_c_theory", r.omega_c_theory, "rad/s", "cutoff 2 sqrt(kappa/m)"),
     RD("omega_c_measured", r.omega_c_measured, "rad/s", "highest resolved ridge"),
-    RD("omega_c_rel_err", r.omega_c_rel_err, "", "its relative error"),
+    RD("omega_c_rel_err", r.omega_c_rel_err, "", "its relative error against omega(qa) at its own qa"),
     RD("omega_edge", r.omega_edge, "rad/s", "edge of the q-summed power (1e-3 of its peak)"),
     RD("ridge_max_rel_err", r.ridge_max_rel_err, "", "max |ridge - theory| / theory over resolved q"),
     RI("n_resolved", r.n_resolved, "resolved wavenumbers"),

@@ -518,7 +518,7 @@ int gw_chain_drop_run(const gw_chain_drop_params *p, const gw_chain_run_opts *o,
         sp.dt = tc / (o->steps_per_tc > 0 ? o->steps_per_tc : 400.0);
     /* the drop runs to t_max whatever happens: its steps bounded over t_max
      * (the default RK4 step makes about 4e5 over 10 ms) */
-    r->run_dt = sp.dt;
+    r->run_dt = type == gw_solver_rk4 ? fmin(sp.dt, sp.dt_max) : sp.dt; /* the step rk4 takes */
     r->run_dt_max = sp.dt_max;
     if ((rc = chain_steps_check(type, &sp, &o->sp, p->t_max, "t-max", err)) != GW_OK ||
         (rc = chain_sensor_steps_check(&q, type, p->t_max, "t-max", err)) != GW_OK)

@@ -2,6 +2,7 @@
  * gw_common.c: status table, error text, validated number parsing.
  */
 #include <errno.h>
+#include <float.h>
 #include <limits.h>
 #include <math.h>
 #include <stdarg.h>
@@ -69,8 +70,11 @@ int gw_parse_double(const char *s, const char *name, double *out, gw_err *err)
     double v = strtod(s, &end);
     if (end == s || *end != '\0')
         return gw_err_set(err, GW_EINVAL, "%s: '%s' is not a number", name, s);
-    if (!isfinite(v) || errno == ERANGE)
+    if (!isfinite(v) || (errno == ERANGE && fabs(v) >= 1.0))
         return gw_err_set(err, GW_EINVAL, "%s: '%s' is not a finite number", name, s);
+    if (errno == ERANGE) /* strtod's underflow: a finite value that is no normal double */
+        return gw_err_set(err, GW_EINVAL, "%s: '%s' is too small in magnitude: nonzero values lie at or above "
+                          "%.5g, the smallest normal double (give 0 or a larger value)", name, s, DBL_MIN);
     *out = v;
     return GW_OK;
 }

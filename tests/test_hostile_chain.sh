@@ -148,6 +148,31 @@
 #    checks, so a refusal by a run's bounds was two stderr lines; and falcon named
 #    the option without its dashes ("granwave falcon: dt: ..."). The line now heads
 #    the first progress line, and falcon says "falcon --dt:" as the others do.
+#  35 --dt-max had no effect under rk4: the run stepped at --dt whatever the
+#    cap (chain --solver rk4 --dt-max 1e-8: 3156 steps, as without it, and the
+#    settings said dt_max 1e-8 beside dt 3.1e-8); a --dt above the default cap
+#    (a quarter of the shortest contact) stepped over half a contact while the
+#    plan's bounds and the record assumed the cap. The fixed-step backends now
+#    step at the smaller of dt and dt_max, and the run records that step.
+#  36 sweep --jobs under mpirun (2 ranks or more) had no effect: each rank runs
+#    one case at a time and the threads are never started, yet the sweep ran
+#    and exited 0. Refused now (exit 2 on every rank, nothing made); under
+#    mpirun -np 1 the threads run and --jobs counts. The table of a chain
+#    sweep (rk4; cvode with calibrated damping) is the same byte for byte on
+#    1 and 2 threads and on 2 MPI ranks.
+#  37 dispersion's omega_c_rel_err compared the highest ridge with omega_c, the
+#    law at qa = pi, a wavenumber the chain has only for an even periodic ring:
+#    --n 9 (highest qa 0.89 pi) and --n 8 --ends fixed reported 1.5e-2 for a
+#    ridge that follows the law to 1e-4. It is taken against omega(qa) at the
+#    ridge's own wavenumber now (2.4e-5), unchanged for an even ring.
+#  38 a subnormal number (1e-308, -1e-320: strtod's underflow) was refused as
+#    "'1e-308' is not a finite number"; it is finite, and the message now says
+#    it lies below the smallest normal double. Overflow (1e5000) keeps its
+#    message.
+#  39 wavespeed --threshold took any fraction in (0, 1]: below about 1e-6 of
+#    F_max(1) the front is read in the solitary wave's precursor tail and then
+#    in the solver's tolerance (1e-300: v_front 874 against 627 m/s at 0.3 m/s,
+#    beta 0.186 +- 0.023, exit 0). The range is [1e-6, 1] now.
 set -u
 GW=$1
 SRC=${2:-.}
@@ -669,7 +694,67 @@ refused "wavespeed --dt-max 1e-13 without --quiet: one line" '^granwave wavespee
 timeout 20 "$GW" falcon --n 1:2 --heights none >/dev/null 2>"$tmp/e" </dev/null
 head -1 "$tmp/e" | grep -qx 'granwave falcon: 2 collisions (N = 1..2, 1 velocities)' && ok "  a study that runs still heads its progress lines" || ko "falcon progress: $(head -2 "$tmp/e")"
 
-# --- 35: a dangling symbolic link as --out (or one of its parents) is refused before the run
+# --- 35: rk4 steps at the smaller of --dt and --dt-max, and records that step
+if runs "chain --n 3 --solver rk4" "$tmp/r0.json" chain --n 3 --solver rk4 --json &&
+    runs "chain --n 3 --solver rk4 --dt-max 1e-8" "$tmp/r1.json" chain --n 3 --solver rk4 --dt-max 1e-8 --json; then
+    jcheck "  a cap below the default step shortens it (3156 steps before, as without it)" "$tmp/r1.json" \
+        "(lambda a: j['steps'] > 2.5 * a['steps'] and j['settings']['solver']['dt'] == 1e-8)(json.load(open('$tmp/r0.json')))"
+fi
+runs "chain --n 3 --solver rk4 --dt 1e-5 --dt-out 1e-5 (a step above the default cap)" "$tmp/r2.json" \
+    chain --n 3 --solver rk4 --dt 1e-5 --dt-out 1e-5 --json &&
+    jcheck "  the step taken and recorded is the cap, a quarter of the shortest contact" "$tmp/r2.json" \
+        "j['settings']['solver']['dt'] == j['settings']['solver']['dt_max'] < 1e-5 and j['steps'] >= 16"
+
+# --- 36: sweep --jobs under mpirun is refused; the table does not depend on threads or ranks
+printf '[sweep]\nmodel = chain\n[grid]\nn = 1:4\nvimp = 0.1, 0.3\ndamping = kk, hc\n[params]\nrestitution = 0.9\n' >"$tmp/mt.ini"
+rm -rf "$tmp/t1" "$tmp/t2"
+timeout -s KILL 120 "$GW" sweep "$tmp/mt.ini" --out "$tmp/t1" --jobs 1 --quiet </dev/null 2>"$tmp/stderr" &&
+    timeout -s KILL 120 "$GW" sweep "$tmp/mt.ini" --out "$tmp/t2" --jobs 2 --quiet </dev/null 2>>"$tmp/stderr" &&
+    cmp -s "$tmp/t1/results.csv" "$tmp/t2/results.csv" && ok "a chain sweep's table: the same on 1 and 2 threads" ||
+    ko "chain sweep on 1 and 2 threads: $(head -c 300 "$tmp/stderr")"
+if command -v mpirun >/dev/null && ldd "$GW" 2>/dev/null | grep -q libmpi; then
+    mpi() { timeout -s KILL 120 mpirun --allow-run-as-root --oversubscribe "$@" </dev/null; }
+    rm -rf "$tmp/o" "$tmp/m2"
+    mpi -np 2 "$GW" sweep "$tmp/mt.ini" --out "$tmp/o" --jobs 4 --quiet >"$tmp/stdout" 2>"$tmp/stderr"
+    rc=$?
+    [ $rc -ne 0 ] && [ ! -e "$tmp/o" ] && [ ! -s "$tmp/stdout" ] &&
+        [ "$(grep -c '^granwave sweep --jobs: has no effect under mpirun with 2 ranks' "$tmp/stderr")" = 1 ] &&
+        ok "sweep --jobs 4 under mpirun -np 2: refused on one line, nothing made" ||
+        ko "sweep --jobs under mpirun -np 2: exit $rc, $(ls "$tmp/o" 2>/dev/null) $(head -c 300 "$tmp/stderr")"
+    # the tables alone are compared, as test_layer_sweep does: under the sanitizer
+    # build LeakSanitizer reports Open MPI's own allocations at exit (exit non-zero)
+    mpi -np 2 "$GW" sweep "$tmp/mt.ini" --out "$tmp/m2" --quiet >/dev/null 2>"$tmp/stderr"
+    cmp -s "$tmp/t1/results.csv" "$tmp/m2/results.csv" && ok "  the same sweep on 2 MPI ranks: the threads' table byte for byte" ||
+        ko "chain sweep on 2 ranks: $(head -c 300 "$tmp/stderr")"
+    rm -rf "$tmp/m2"
+    mpi -np 1 "$GW" sweep "$tmp/mt.ini" --out "$tmp/m2" --jobs 2 --quiet >/dev/null 2>"$tmp/stderr"
+    cmp -s "$tmp/t1/results.csv" "$tmp/m2/results.csv" && ok "  under mpirun -np 1 the threads run: --jobs 2 accepted, the same table" ||
+        ko "mpirun -np 1 --jobs 2: $(head -c 300 "$tmp/stderr")"
+else
+    echo "SKIP: mpirun or an MPI build missing (section 36's MPI half)"
+fi
+
+# --- 37: dispersion's cutoff error is taken at the highest ridge's own wavenumber
+for a in "--n 9" "--n 8 --ends fixed" "--n 64"; do
+    runs "dispersion $a" "$tmp/d.json" dispersion $a --json &&
+        jcheck "  omega_c_rel_err below 1e-3 (1.5e-2 before for n 9 and 8 fixed), the ridge error below 1e-3" "$tmp/d.json" \
+            "j['omega_c_rel_err'] < 1e-3 and j['ridge_max_rel_err'] < 1e-3 and j['n_resolved'] >= 4"
+done
+
+# --- 38: a subnormal value is refused as too small, not as "not a finite number"
+refused "dispersion --f0 1e-308 (subnormal)" \
+    "^granwave dispersion --f0: '1e-308' is too small in magnitude: nonzero values lie at or above 2.2251e-308" \
+    dispersion --f0 1e-308 --out "$tmp/o"
+refused "chain --vimp -1e-320 (subnormal)" "^granwave chain --vimp: '-1e-320' is too small in magnitude" chain --vimp -1e-320 --out "$tmp/o"
+refused "chain --vimp 1e5000 (overflow)" "^granwave chain --vimp: '1e5000' is not a finite number$" chain --vimp 1e5000 --out "$tmp/o"
+
+# --- 39: wavespeed's front threshold lies in [1e-6, 1]
+refused "wavespeed --threshold 1e-30 (the front read in the solver's noise)" \
+    "^granwave wavespeed --threshold: 1e-30 is outside \[1e-06, 1\]$" wavespeed --n 5:8 --threshold 1e-30 --out "$tmp/o"
+runs "wavespeed --threshold 1e-6 (the lowest)" "$tmp/w.json" wavespeed --n 5:10 --vimp 0.1,0.3 --threshold 1e-6 --quiet --json &&
+    jcheck "  the front's beta is 1/5 to 1e-4" "$tmp/w.json" "abs(j['fits']['front']['beta'] - 0.2) < 1e-4"
+
+# --- 40: a dangling symbolic link as --out (or one of its parents) is refused before the run
 # (chain, drop and dispersion took the missing target for a directory still to make, ran,
 # then failed writing with exit 1)
 ln -s "$tmp/nowhere" "$tmp/dangling"
@@ -682,7 +767,7 @@ refused "chain --out under a dangling symbolic link" "^granwave chain --out: '.*
 [ -e "$tmp/nowhere" ] && ko "  a refused run made the link's target"
 rm -f "$tmp/dangling"
 
-# --- 36: a study is bounded as a whole, not only column by column (rk4 on a stiff sensor
+# --- 41: a study is bounded as a whole, not only column by column (rk4 on a stiff sensor
 # body passed each column's 1e8 steps and ran 60 columns of 2-30 s one after another)
 REFUSE_TIMEOUT=5 refused "falcon --solver rk4, a stiff sensor body, 60 columns (3e9 steps in all)" \
     "^granwave falcon --sensor-stiffness: the study's 60 collisions need about 3.0.e\+09 steps in all \(N = 30 at 0.3 m/s alone about 9.9.e\+07\); at most 1e\+09 a study" \

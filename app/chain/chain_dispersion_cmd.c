@@ -238,8 +238,8 @@ static void disp_print(const disp_cli *c, const gw_chain_disp_result *r, double 
     printf("granwave %s dispersion: n = %ld beads, F0 = %g N, %s ends, solver %s\n", gw_version(),
            c->n, c->f0, c->ends, c->solver);
     printf("  d0 = %.6g m, kappa = %.6g N/m, a = %.6g m\n", r->d0, r->kappa, r->a);
-    printf("  omega_c   theory %.6g rad/s, ridge max %.6g (rel err %.2e), edge %.6g\n",
-           r->omega_c_theory, r->omega_c_measured, r->omega_c_rel_err, r->omega_edge);
+    printf("  omega_c   theory %.6g rad/s, ridge max %.6g at qa %.4g (rel err %.2e), edge %.6g\n",
+           r->omega_c_theory, r->omega_c_measured, r->qa_resolved_max, r->omega_c_rel_err, r->omega_edge);
     printf("  ridge     max rel err %.2e over qa in [%.4g, %.4g] (%d of %d resolved)\n",
            r->ridge_max_rel_err, r->qa_resolved_min, r->qa_resolved_max, r->n_resolved, r->nq);
     printf("  c0        theory %.6g m/s, long-wave fit %.6g m/s\n", r->c0_theory, r->c0_measured);

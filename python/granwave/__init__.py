@@ -58,6 +58,13 @@ _studies = {}
 
 
 def _study(name):
+    if not isinstance(name, str):
+        raise TypeError(f"a study name is a str (\"chain\", \"layer-impact\"), not {type(name).__name__}")
+    if name not in _studies:
+        known = [_clib.gw_study_get(i).contents.name.decode() for i in range(_clib.gw_study_count())]
+        name = name.replace("_", "-") if name.replace("_", "-") in known else name
+        if name not in known:
+            raise ValueError(f"no study '{name}' (one of {', '.join(known)})")
     if name not in _studies:
         _studies[name] = _core.Study(name)
     return _studies[name]

@@ -36,6 +36,10 @@ from ._core import (GranwaveError, GranwaveIOError, GranwaveRunError, GranwaveUn
 from ._lib import lib as _clib
 from ._lib import path as library_path
 
+# shown as granwave.GranwaveValueError (the name users import), not granwave._core....
+for _c in (GranwaveError, GranwaveIOError, GranwaveRunError, GranwaveUnsupported, GranwaveValueError, Result):
+    _c.__module__ = "granwave"
+
 __all__ = ["version", "version_info", "chain", "falcon", "wavespeed", "softwall", "dispersion", "drop",
            "layer_make", "layer_impact", "layer_stats", "sweep", "params", "library_path",
            "Result", "GranwaveError", "GranwaveValueError", "GranwaveIOError", "GranwaveRunError",

@@ -31,6 +31,7 @@
 
 #include "gw_chain.h"
 #include "gw_chain_study.h"
+#include "gw_global.h"
 
 gw_chain_disp_params gw_chain_disp_params_default(void)
 {
@@ -198,10 +199,12 @@ static int disp_initial_state(const gw_chain_disp_params *p, double v_rms, doubl
     double *v = fftw_malloc((size_t)n * sizeof *v), *a = NULL;
     fftw_complex *c = NULL;
     fftw_plan plan = NULL;
+    gw_fftw_planner_lock(); /* FFTW's planner is not thread-safe */
     if (v && fixed && (a = fftw_malloc((size_t)n * sizeof *a)))
         plan = fftw_plan_r2r_1d(n, a, v, FFTW_RODFT00, FFTW_ESTIMATE);
     else if (v && !fixed && (c = fftw_malloc((size_t)(n / 2 + 1) * sizeof *c)))
         plan = fftw_plan_dft_c2r_1d(n, c, v, FFTW_ESTIMATE);
+    gw_fftw_planner_unlock();
     if (!plan) {
         fftw_free(v);
         fftw_free(a);
@@ -224,7 +227,9 @@ static int disp_initial_state(const gw_chain_disp_params *p, double v_rms, doubl
         y[2 * i] = 0.0;
         y[2 * i + 1] = f * v[i];
     }
+    gw_fftw_planner_lock();
     fftw_destroy_plan(plan);
+    gw_fftw_planner_unlock();
     fftw_free(v);
     fftw_free(a);
     fftw_free(c);
@@ -441,7 +446,9 @@ int gw_chain_disp_run(const gw_chain_disp_params *p, const gw_solver_type *solve
     }
     /* Plan before filling: FFTW_MEASURE overwrites the arrays while planning. */
     double t0 = gw_clock_ms();
+    gw_fftw_planner_lock(); /* FFTW's planner is not thread-safe */
     fftw_plan plan = fftw_plan_dft_r2c_2d(nx, nt, in, out, p->fftw_measure ? FFTW_MEASURE : FFTW_ESTIMATE);
+    gw_fftw_planner_unlock();
     if (!plan)
         rc = gw_err_set(err, GW_ENOMEM, "dispersion: FFTW could not plan a %d x %d transform", nx, nt);
     double plan_ms = gw_clock_ms() - t0;
@@ -456,8 +463,11 @@ int gw_chain_disp_run(const gw_chain_disp_params *p, const gw_solver_type *solve
         disp_analyse(p, out, nx, r);
         r->fft_ms = gw_clock_ms() - t0 + plan_ms;
     }
-    if (plan)
+    if (plan) {
+        gw_fftw_planner_lock();
         fftw_destroy_plan(plan);
+        gw_fftw_planner_unlock();
+    }
     fftw_free(in);
     fftw_free(out);
     return rc;

@@ -44,6 +44,7 @@
 #include <gsl/gsl_linalg.h>
 
 #include "gw_chain.h"
+#include "gw_global.h"
 
 #define Q_UMAX 40.0    /* Q(u) ~ u^2 e^(-2u): below 1e-30 beyond */
 #define Q_PANEL 0.25   /* width of a Gauss-Legendre panel in u */
@@ -144,13 +145,13 @@ static int solve_alpha(const qtab *t, double alpha, double lam, int n, double *d
         gsl_vector_set(b1, (size_t)i, 1.0);
         gsl_vector_set(b2, (size_t)i, tau[i] * tau[i]);
     }
-    gsl_error_handler_t *old = gsl_set_error_handler_off();
+    gsl_error_handler_t *old = gw_gsl_quiet_begin();
     int st = gsl_linalg_LU_decomp(A, perm, &sign);
     if (st == 0)
         st = gsl_linalg_LU_svx(A, perm, b1);
     if (st == 0)
         st = gsl_linalg_LU_svx(A, perm, b2);
-    gsl_set_error_handler(old);
+    gw_gsl_quiet_end(old);
     if (st != 0) {
         rc = gw_err_set(err, GW_ESOLVER, "layer law: singular Nystrom system at a/h = %g", alpha);
         goto done;

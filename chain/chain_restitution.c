@@ -19,6 +19,7 @@
 #include <gsl/gsl_roots.h>
 
 #include "gw_chain.h"
+#include "gw_global.h"
 
 typedef struct calib {
     gw_chain_params p;
@@ -102,7 +103,7 @@ int gw_chain_calibrate(const gw_chain_params *p, const gw_chain_run_opts *o, dou
     gsl_root_fsolver *s = gsl_root_fsolver_alloc(gsl_root_fsolver_brent);
     if (!s)
         return gw_err_set(err, GW_ENOMEM, "restitution: out of memory");
-    gsl_error_handler_t *old = gsl_set_error_handler_off();
+    gsl_error_handler_t *old = gw_gsl_quiet_begin();
     int status = gsl_root_fsolver_set(s, &F, lo, hi), it = 0;
     double root = NAN;
     do {
@@ -112,7 +113,7 @@ int gw_chain_calibrate(const gw_chain_params *p, const gw_chain_run_opts *o, dou
         if (status == GSL_SUCCESS)
             status = gsl_root_test_interval(a, b, 0.0, 1e-10);
     } while (status == GSL_CONTINUE && ++it < 200 && cb.rc == GW_OK);
-    gsl_set_error_handler(old);
+    gw_gsl_quiet_end(old);
     gsl_root_fsolver_free(s);
     if (cb.rc != GW_OK)
         return cb.rc;

@@ -14,6 +14,7 @@
 
 #include "gw_chain.h"
 #include "gw_chain_study.h"
+#include "gw_global.h"
 
 /* ---- wall-force spectrum of the column ---- */
 
@@ -71,8 +72,13 @@ int gw_chain_wall_spectrum(const gw_chain_trace *tr, double t0, double t1, doubl
     int rc = GW_OK;
     if (!in || !out || !sp->freq)
         rc = gw_err_set(err, GW_ENOMEM, "wall spectrum: out of memory for %d points", M);
-    else if (!(plan = fftw_plan_dft_r2c_1d(M, in, out, fftw_measure ? FFTW_MEASURE : FFTW_ESTIMATE)))
-        rc = gw_err_set(err, GW_ENOMEM, "wall spectrum: FFTW could not plan %d points", M);
+    else {
+        gw_fftw_planner_lock(); /* FFTW's planner is not thread-safe */
+        plan = fftw_plan_dft_r2c_1d(M, in, out, fftw_measure ? FFTW_MEASURE : FFTW_ESTIMATE);
+        gw_fftw_planner_unlock();
+        if (!plan)
+            rc = gw_err_set(err, GW_ENOMEM, "wall spectrum: FFTW could not plan %d points", M);
+    }
     if (rc == GW_OK) {
         size_t k = 0;
         double mean = 0;
@@ -112,8 +118,11 @@ int gw_chain_wall_spectrum(const gw_chain_trace *tr, double t0, double t1, doubl
                                                  (lm + 1.0) * (lm + 1.0) * sp->power[lm + 1])) * sp->df
                             : NAN;
     }
-    if (plan)
+    if (plan) {
+        gw_fftw_planner_lock();
         fftw_destroy_plan(plan);
+        gw_fftw_planner_unlock();
+    }
     fftw_free(in);
     fftw_free(out);
     if (rc != GW_OK)

@@ -7,6 +7,9 @@
 #include <stdlib.h>
 
 #include <gsl/gsl_fit.h>
+#include <pthread.h>
+
+#include "gw_global.h"
 
 #include "gw_common.h"
 
@@ -64,4 +67,31 @@ double gw_peak_offset_log(double pm, double p0, double pp)
     double a = log(pm), b = log(p0), c = log(pp), den = a - 2 * b + c;
     double off = den < 0 ? 0.5 * (a - c) / den : 0.0;
     return fabs(off) <= 1.0 ? off : 0.0;
+}
+
+/* GSL's error handler is process-wide: sections that turn it off hold one
+ * recursive lock (gw_global.h). */
+static pthread_mutex_t gsl_handler_lock;
+static pthread_once_t gsl_handler_once = PTHREAD_ONCE_INIT;
+
+static void gsl_handler_lock_init(void)
+{
+    pthread_mutexattr_t a;
+    pthread_mutexattr_init(&a);
+    pthread_mutexattr_settype(&a, PTHREAD_MUTEX_RECURSIVE);
+    pthread_mutex_init(&gsl_handler_lock, &a);
+    pthread_mutexattr_destroy(&a);
+}
+
+gsl_error_handler_t *gw_gsl_quiet_begin(void)
+{
+    pthread_once(&gsl_handler_once, gsl_handler_lock_init);
+    pthread_mutex_lock(&gsl_handler_lock);
+    return gsl_set_error_handler_off();
+}
+
+void gw_gsl_quiet_end(gsl_error_handler_t *old)
+{
+    gsl_set_error_handler(old);
+    pthread_mutex_unlock(&gsl_handler_lock);
 }

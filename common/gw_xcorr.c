@@ -39,11 +39,22 @@
 
 #include <fftw3.h>
 
+#include "gw_global.h"
 #include "gw_xcorr.h"
 
 #define GW_XCORR_MAX_N (1 << 26)
 
 static pthread_mutex_t planner_lock = PTHREAD_MUTEX_INITIALIZER;
+
+void gw_fftw_planner_lock(void)
+{
+    pthread_mutex_lock(&planner_lock);
+}
+
+void gw_fftw_planner_unlock(void)
+{
+    pthread_mutex_unlock(&planner_lock);
+}
 
 struct gw_xcorr {
     int n, M, nf;        /* series length limit, padded length, M/2 + 1 */

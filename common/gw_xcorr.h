@@ -10,7 +10,8 @@
  *
  * Threads: plan once, execute many times. Creating and freeing objects goes
  * through FFTW's planner, which is not thread-safe; granwave serialises it with
- * one process-wide lock held only by gw_xcorr_create and gw_xcorr_free. The
+ * one process-wide lock (gw_fftw_planner_lock, gw_global.h) held by gw_xcorr_create and
+ * gw_xcorr_free and by every other FFTW planner call of the library. The
  * other calls use only the object's own plans and buffers (fftw_execute is
  * thread-safe), so each thread may use its own object concurrently; one object
  * must not be used by two threads at once.

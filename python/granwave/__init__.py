@@ -36,6 +36,10 @@ from ._core import (GranwaveError, GranwaveIOError, GranwaveRunError, GranwaveUn
 from ._lib import lib as _clib
 from ._lib import path as library_path
 
+# shown as granwave.GranwaveValueError (the name users import), not granwave._core....
+for _c in (GranwaveError, GranwaveIOError, GranwaveRunError, GranwaveUnsupported, GranwaveValueError, Result):
+    _c.__module__ = "granwave"
+
 __all__ = ["version", "version_info", "chain", "falcon", "wavespeed", "softwall", "dispersion", "drop",
            "layer_make", "layer_impact", "layer_stats", "sweep", "params", "library_path",
            "Result", "GranwaveError", "GranwaveValueError", "GranwaveIOError", "GranwaveRunError",
@@ -58,6 +62,13 @@ _studies = {}
 
 
 def _study(name):
+    if not isinstance(name, str):
+        raise TypeError(f"a study name is a str (\"chain\", \"layer-impact\"), not {type(name).__name__}")
+    if name not in _studies:
+        known = [_clib.gw_study_get(i).contents.name.decode() for i in range(_clib.gw_study_count())]
+        name = name.replace("_", "-") if name.replace("_", "-") in known else name
+        if name not in known:
+            raise ValueError(f"no study '{name}' (one of {', '.join(known)})")
     if name not in _studies:
         _studies[name] = _core.Study(name)
     return _studies[name]

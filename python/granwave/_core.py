@@ -131,6 +131,11 @@ def _text(p, value):
     """A Python value as the text gw_param_set parses."""
     if isinstance(value, os.PathLike):
         value = os.fspath(value)
+    if isinstance(value, bytes) and p.type == TEXT:  # a file name as the OS gives it
+        value = os.fsdecode(value)
+    if p.type == TEXT and not isinstance(value, str):
+        # a number went to C as its digits: sample=3 looked for a file named '3'
+        raise TypeError(f"{p.keyword}: expected a str or a path, got {type(value).__name__} ({value!r})")
     if isinstance(value, str):
         if "\0" in value:  # C would read up to the NUL: another file, silently
             raise GranwaveValueError(f"{p.keyword}: {value!r} holds a NUL character", GW_EINVAL)
@@ -140,10 +145,27 @@ def _text(p, value):
             return "1" if value else "0"
         raise TypeError(f"{p.keyword}: expected True or False, got {value!r}")
     if p.type == LIST:
-        if isinstance(value, numbers.Real):
+        if isinstance(value, numbers.Real) and not isinstance(value, (bool, np.bool_)):
             value = [value]
-        items = [float(x) for x in value]
-        return ",".join(repr(x) for x in items) if items else "none"
+        # an ordered sequence of numbers: a set or a dict has no order (radii
+        # went to the beads in hash order), an array of two or more dimensions
+        # was flattened silently, a bad item was named by float() alone
+        if isinstance(value, (set, frozenset, dict, bytes)) or not hasattr(value, "__iter__"):
+            raise TypeError(f"{p.keyword}: expected a number or a sequence of numbers, got "
+                            f"{type(value).__name__} ({value!r})")
+        if isinstance(value, np.ndarray) and value.ndim > 1:
+            raise TypeError(f"{p.keyword}: expected a 1-D sequence of numbers, got an array of shape {value.shape}")
+        items = []
+        for k, x in enumerate(value):
+            if isinstance(x, str):
+                items.append(x)  # parsed and checked by the library, as on the command line
+                continue
+            if isinstance(x, (bool, np.bool_)) or not isinstance(x, numbers.Real):
+                raise TypeError(f"{p.keyword}: item {k + 1} is not a number ({x!r})")
+            items.append(repr(float(x)))
+        if any("," in x for x in items):
+            raise GranwaveValueError(f"{p.keyword}: an item holds ',' ({items!r})", GW_EINVAL)
+        return ",".join(items) if items else "none"
     if p.type == RANGE:
         if isinstance(value, range):
             if value.step != 1 or len(value) == 0:
@@ -202,7 +224,11 @@ class Study:
                     raise GranwaveValueError(f"{self.func}: {e}", GW_EINVAL) from None
                 except TypeError as e:
                     raise TypeError(f"{self.func}: {e}") from None
-                rc = lib.gw_param_set(self.table, buf, p.name.encode(), text.encode(), ctypes.byref(err))
+                try:  # a file name as the OS gave it (undecodable bytes as surrogates) goes back as those bytes
+                    raw = os.fsencode(text) if p.type == TEXT else text.encode()
+                except UnicodeEncodeError:
+                    raise GranwaveValueError(f"{self.func}: {p.keyword}: {text!r} cannot be encoded", GW_EINVAL) from None
+                rc = lib.gw_param_set(self.table, buf, p.name.encode(), raw, ctypes.byref(err))
                 if rc != 0:
                     _raise(rc, err, self.func, self.params)
         except BaseException:
@@ -211,10 +237,10 @@ class Study:
         return buf
 
     def run(self, kwargs, progress=None):
+        cb = Progress(progress, self.func)  # before setup: a refusal leaves nothing to clear
         buf = self.setup(kwargs)
         out = ctypes.create_string_buffer(self.st.fields_size)
         err = _lib.GwErr()
-        cb = Progress(progress)
         try:
             rc = self.st.run(buf, out, cb.c_fn, None, ctypes.byref(err))
             cb.reraise()
@@ -238,7 +264,11 @@ class Progress:
     exception in f (KeyboardInterrupt included) stops the call and is raised
     again once the library has returned."""
 
-    def __init__(self, fn):
+    def __init__(self, fn, what="sweep"):
+        if fn is not None and not callable(fn):
+            # it failed only at the first report, after that much of the run
+            raise TypeError(f"{what}: progress must be a callable f(done, total) or None, got "
+                            f"{type(fn).__name__} ({fn!r})")
         self.fn = fn
         self.exc = None
         self.c_fn = _lib.PROGRESS(self._call) if fn else _lib.PROGRESS()
@@ -346,6 +376,9 @@ def run_sweep(model, grid, params, jobs, progress):
         raise TypeError(f"sweep(): jobs must be an integer, not {type(jobs).__name__}")
     if not -2**31 <= jobs < 2**31:  # the library's message for what does not fit its int
         raise GranwaveValueError(f"sweep: jobs: {jobs} is outside [0, 4096] (0: one per CPU)", GW_EINVAL)
+    if not isinstance(grid, dict):
+        raise TypeError(f"sweep(): grid must be a dict {{keyword: values}}, not {type(grid).__name__}")
+    cb = Progress(progress)
     models = sweep_models()
     if model not in models:
         raise ValueError(f"sweep: unknown model '{model}' ({', '.join(models)})")
@@ -358,11 +391,18 @@ def run_sweep(model, grid, params, jobs, progress):
         name = k.replace("_", "-")
         if not m.has_key(name.encode()):
             raise TypeError(f"sweep() grid: '{k}' is not a parameter of model {model}")
+        if v is None or isinstance(v, (set, frozenset, dict)) or \
+                (isinstance(v, np.ndarray) and v.ndim > 1):
+            raise TypeError(f"sweep() grid: '{k}': expected a list, a range, a 1-D array or a string, "
+                            f"got {type(v).__name__}")
         vals = _grid_values(k, v)
         if not vals:
             raise ValueError(f"{k}: empty list of grid values")
         axes[k] = vals
-        texts = [_ini_value(k, x) for x in vals]
+        try:
+            texts = [_ini_value(k, x) for x in vals]
+        except TypeError as e:
+            raise TypeError(f"sweep() grid: '{k}': {e}") from None
         if any("," in t for t in texts):  # the list's separator: 'a,b' ran two cases
             raise ValueError(f"{k}: a grid value holds ',' (the list separator of a sweep)")
         # consecutive integers as the range A:B (a list line has at most 198
@@ -381,13 +421,15 @@ def run_sweep(model, grid, params, jobs, progress):
             raise TypeError(f"sweep() got an unexpected keyword argument '{k}' (not a parameter of model {model})")
         if k in grid:
             raise TypeError(f"sweep(): '{k}' given both in grid and as a keyword")
-        lines.append(f"{name} = {_ini_value(k, v)}")
+        try:
+            lines.append(f"{name} = {_ini_value(k, v)}")
+        except TypeError as e:
+            raise TypeError(f"sweep(): '{k}': {e}") from None
     text = "\n".join(lines) + "\n"
     values = _lib.c_double_p()
     ncases = ctypes.c_long()
     mod = ctypes.POINTER(_lib.GwSweepModel)()
     err = _lib.GwErr()
-    cb = Progress(progress)
     rc = lib.gw_sweep_run_text(text.encode(), b"sweep", int(jobs), cb.c_fn, None, ctypes.byref(values),
                                ctypes.byref(ncases), ctypes.byref(mod), ctypes.byref(err))
     try:

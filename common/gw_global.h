@@ -1,0 +1,31 @@
+/*
+ * gw_global.h: the process-wide state of the libraries granwave uses that is not
+ * thread-safe, behind one lock each. Internal to libgranwave (not installed).
+ *
+ * FFTW's planner (plan creation and destruction, wisdom) must be called by one
+ * thread at a time: every FFTW plan the library makes or destroys (the
+ * cross-correlation of gw_xcorr.h, the column's wall spectrum, the dispersion
+ * study) holds gw_fftw_planner_lock. Two Python threads running
+ * granwave.dispersion at once corrupted the heap before (glibc abort, SIGSEGV).
+ *
+ * GSL's error handler is one global: a call that must not abort on a GSL error
+ * turns it off for the section and restores the caller's handler afterwards.
+ * Two threads doing that at once could restore each other's handler in the
+ * wrong order (a section running under GSL's default handler, which aborts, and
+ * the handler left off for good), so the section holds one recursive lock from
+ * gw_gsl_quiet_begin to gw_gsl_quiet_end.
+ */
+#ifndef GW_GLOBAL_H
+#define GW_GLOBAL_H
+
+#include <gsl/gsl_errno.h>
+
+void gw_fftw_planner_lock(void);
+void gw_fftw_planner_unlock(void);
+
+/* Lock, turn GSL's error handler off and return the previous one ... */
+gsl_error_handler_t *gw_gsl_quiet_begin(void);
+/* ... restore it and unlock. */
+void gw_gsl_quiet_end(gsl_error_handler_t *old);
+
+#endif

@@ -1,0 +1,185 @@
+#!/usr/bin/python3
+"""test_docs_examples.py PROGRAM SRCDIR: the commands README.md and docs/ show still work.
+
+A new user copies the documentation's commands. Over README.md and docs/*.md:
+  1. every `build/granwave CMD ...` line of a ```sh block names a command whose
+     `--help` lists each of its flags (a renamed or removed flag fails here);
+  2. the fast ones (below about a second each; FAST) run as written, in a scratch
+     directory, and exit 0; a `--json` line prints one JSON object; the files its
+     comment names (name.csv, name.json, name.md) exist under its --out directory.
+     Lines that need a sample (`--sample sample.txt`) run on a small one made first
+     (60 discs, as the Python tests); lines longer than that budget are only
+     checked by 1 (wavespeed, softwall, the 300-disc pluviation, --full impacts,
+     sweeps and their statistics: minutes);
+  3. every `$ granwave ...` example of a ```text block (docs/reliability.md) prints
+     on stderr exactly the line the page shows under it, and exits 2.
+First it checks itself on a made-up page with a removed flag, a failing command
+and a wrong message, and fails if any goes unnoticed. Exit 0 when all hold, 1
+otherwise (each fault printed as file:line: message), 2 on bad usage.
+"""
+import json
+import os
+import re
+import shlex
+import subprocess
+import sys
+import tempfile
+
+SH_BLOCK = re.compile(r"^```sh\n(.*?)^```", re.S | re.M)
+TEXT_BLOCK = re.compile(r"^```text\n(.*?)^```", re.S | re.M)
+# run as written (each well below a second, the drops about one)
+FAST = ("chain", "falcon", "dispersion", "drop", "layer-impact")
+SLOW_MARKS = ("--full", "--sheets")
+FILE_IN_COMMENT = re.compile(r"\b([\w./-]+\.(?:csv|json|md))\b")
+
+
+def doc_lines(srcdir):
+    """(file, line number, text) of every line of the ```sh and ```text blocks."""
+    files = ["README.md"] + sorted("docs/" + f for f in os.listdir(os.path.join(srcdir, "docs"))
+                                   if f.endswith(".md"))
+    out = []
+    for rel in files:
+        text = open(os.path.join(srcdir, rel), encoding="utf-8").read()
+        for kind, rx in (("sh", SH_BLOCK), ("text", TEXT_BLOCK)):
+            for m in rx.finditer(text):
+                first = text.count("\n", 0, m.start(1)) + 1
+                out.extend((rel, first + i, kind, line) for i, line in enumerate(m.group(1).splitlines()))
+    return out
+
+
+def split_comment(line):
+    i = line.find("  #")
+    return (line[:i], line[i + 3:]) if i >= 0 else (line, "")
+
+
+class Checker:
+    def __init__(self, program, workdir):
+        self.program = program
+        self.work = workdir
+        self.faults = []
+        self.helps = {}
+        self.sample = None
+
+    def fault(self, where, msg):
+        self.faults.append(f"{where}: {msg}")
+
+    def help(self, cmd):
+        if cmd not in self.helps:
+            p = subprocess.run([self.program, cmd, "--help"], capture_output=True, text=True, timeout=60)
+            self.helps[cmd] = p.stdout + p.stderr if p.returncode == 0 else None
+        return self.helps[cmd]
+
+    def run(self, args, timeout=120):
+        return subprocess.run([self.program, *args], capture_output=True, text=True, timeout=timeout,
+                              cwd=self.work)
+
+    def make_sample(self):
+        if self.sample is None:
+            p = self.run(["layer-make", "--n", "60", "--width-rm", "16", "--seed", "3", "--out", "sample.txt"])
+            self.sample = p.returncode == 0
+            if self.sample:
+                with open(os.path.join(self.work, "sample.txt"), "rb") as a, \
+                        open(os.path.join(self.work, "s.txt"), "wb") as b:
+                    b.write(a.read())
+        return self.sample
+
+    def command(self, where, line):
+        code, comment = split_comment(line)
+        args = shlex.split(code)[1:]
+        if not args:
+            return
+        cmd = args[0]
+        h = self.help(cmd)
+        if h is None:
+            self.fault(where, f"'granwave {cmd} --help' fails: no such command")
+            return
+        for a in args[1:]:
+            if a.startswith("--"):
+                flag = a.split("=", 1)[0]
+                if not re.search(re.escape(flag) + r"(?![\w-])", h):
+                    self.fault(where, f"'{flag}' is not in 'granwave {cmd} --help'")
+        if cmd not in FAST or any(m in args for m in SLOW_MARKS):
+            return
+        if "--sample" in args and not self.make_sample():
+            self.fault(where, "could not make the small sample")
+            return
+        p = self.run(args)
+        if p.returncode != 0:
+            self.fault(where, f"exit {p.returncode}: {p.stderr.strip()[-300:]}")
+            return
+        if "--json" in args:
+            try:
+                json.loads(p.stdout)
+            except ValueError as e:
+                self.fault(where, f"--json did not print one JSON object ({e})")
+        if "--out" in args:
+            out = args[args.index("--out") + 1]
+            for name in FILE_IN_COMMENT.findall(comment):
+                path = os.path.join(self.work, name if "/" in name else os.path.join(out, name))
+                if not os.path.exists(path):
+                    self.fault(where, f"the comment names {name}, not written under {out}")
+
+    def refusal(self, where, line, expected):
+        args = shlex.split(line[2:])[1:]
+        if args[:2] == ["sweep", "bad.ini"]:  # the page's config: a key of no model on line 5
+            with open(os.path.join(self.work, "bad.ini"), "w") as f:
+                f.write("[sweep]\nmodel = chain\n[grid]\nn = 1:2\nfoo = 1\n")
+        if "s.txt" in args:
+            self.make_sample()
+        p = self.run(args)
+        if p.returncode != 2 or p.stderr.strip() != expected:
+            self.fault(where, f"exit {p.returncode}, stderr {p.stderr.strip()!r}; the page says {expected!r}")
+
+    def check(self, lines):
+        for i, (rel, n, kind, line) in enumerate(lines):
+            where = f"{rel}:{n}"
+            s = line.strip()
+            if kind == "sh" and s.startswith("build/granwave "):
+                self.command(where, s)
+            elif kind == "text" and s.startswith("$ granwave "):
+                nxt = lines[i + 1] if i + 1 < len(lines) else None
+                if nxt and nxt[0] == rel and nxt[1] == n + 1:
+                    self.refusal(where, split_comment(s)[0].strip(), nxt[3].strip())
+        return self.faults
+
+
+def self_test(program):
+    page = ("```sh\n"
+            "build/granwave chain --n 3 --no-such-flag 1\n"
+            "build/granwave chain --n 0\n"
+            "build/granwave chain --n 2 --out o    # o/not_written.csv\n"
+            "```\n\n```text\n$ granwave chain --n 0\ngranwave chain --n: not what it says\n```\n")
+    with tempfile.TemporaryDirectory() as d:
+        lines = [("self", i + 1, k, l) for i, (k, l) in enumerate(
+            [("sh", x) for x in page.split("```text")[0].splitlines()[1:4]])]
+        lines += [("self", 10, "text", "$ granwave chain --n 0"),
+                  ("self", 11, "text", "granwave chain --n: not what it says")]
+        faults = Checker(program, d).check(lines)
+    want = ["'--no-such-flag' is not in", "exit 2", "not_written.csv", "the page says"]
+    missed = [w for w in want if not any(w in f for f in faults)]
+    if missed:
+        print("self-test: faults not noticed: " + ", ".join(missed) + "\n" + "\n".join(faults))
+        return False
+    return True
+
+
+def main():
+    if len(sys.argv) != 3:
+        print(__doc__.split("\n")[0], file=sys.stderr)
+        return 2
+    program, srcdir = os.path.abspath(sys.argv[1]), sys.argv[2]
+    if not self_test(program):
+        return 1
+    lines = doc_lines(srcdir)
+    with tempfile.TemporaryDirectory() as d:
+        c = Checker(program, d)
+        faults = c.check(lines)
+    ncmd = sum(1 for _, _, k, l in lines if l.strip().startswith(("build/granwave ", "$ granwave ")))
+    for f in faults:
+        print(f)
+    print(f"{ncmd} documented commands, {len(faults)} fault(s)")
+    return 1 if faults else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

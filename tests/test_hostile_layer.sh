@@ -421,6 +421,9 @@ runs "layer-impact --dt-out 0.05 --until verdict (text)" layer-impact --sample "
 grep -qE "^  first contact: E_d = 0.05[0-9]* of E_incident \(ends at [0-9.]+ ms\)$" "$tmp/stdout" &&
     ok "  the text gives the first contact (read at step ends, not at the 50 ms samples)" ||
     ko "  text: $(grep 'first contact' "$tmp/stdout")"
+grep -qx "  wave speed unresolved (strain peaks, [0-9]* rings), unresolved (kinetic)" "$tmp/stdout" &&
+    ok "  the text says the crown speeds are unresolved (it printed nan +- nan m/s)" ||
+    ko "  text: $(grep 'wave speed' "$tmp/stdout" | head -1)"
 
 # --- 13: a binary collision without gravity ----------------------------------
 # one disc of R_m, the walls removed, gravity 0: a block of R_m/2 (a quarter of

@@ -618,10 +618,16 @@ int gw_cmd_layer_impact(int argc, char **argv)
             else
                 printf("  first contact: E_d = %.3g of E_incident (ends at %.4g ms)\n",
                        r.dissipated_first_contact, r.t_first_contact * 1e3);
-            printf("  wave speed %.4g +- %.3g m/s (strain peaks, %d rings), %.4g +- %.3g m/s (kinetic)\n",
-                   r.wave_speed, r.wave_speed_err, r.wave_rings, r.wave_speed_kin, r.wave_speed_kin_err);
-            printf("  wave speed %.4g +- %.3g m/s (cross-correlation of neighbouring rings, %d pairs)\n",
-                   r.wave_speed_xcorr, r.wave_speed_xcorr_err, r.xcorr_gaps);
+            char ws[3][64]; /* a crown speed the samples do not resolve is null in JSON: "unresolved" here */
+            const double wv[3] = {r.wave_speed, r.wave_speed_kin, r.wave_speed_xcorr};
+            const double we[3] = {r.wave_speed_err, r.wave_speed_kin_err, r.wave_speed_xcorr_err};
+            for (int q = 0; q < 3; q++)
+                if (isfinite(wv[q]))
+                    snprintf(ws[q], sizeof ws[q], "%.4g +- %.3g m/s", wv[q], we[q]);
+                else
+                    snprintf(ws[q], sizeof ws[q], "unresolved");
+            printf("  wave speed %s (strain peaks, %d rings), %s (kinetic)\n", ws[0], r.wave_rings, ws[1]);
+            printf("  wave speed %s (cross-correlation of neighbouring rings, %d pairs)\n", ws[2], r.xcorr_gaps);
             printf("  energy closure max %.3g; t_end %.4g ms; wall %.0f ms, %ld steps, %ld events, %ld rebuilds\n",
                    r.energy_error, r.t_end * 1e3, r.wall_ms, r.stats.steps, r.stats.events, r.stats.rebuilds);
         }

@@ -3,11 +3,11 @@
 Where the library is looked for, first found wins:
   1. the environment variable GRANWAVE_LIB (a file, or a directory holding
      libgranwave.so);
-  2. the build tree of a source checkout: <repo>/build/lib/libgranwave.so
-     (what ./setup.sh build makes), when this package is <repo>/python/granwave;
-  3. an installed prefix: the library directory that cmake --install recorded
+  2. an installed prefix: the library directory that cmake --install recorded
      in _install.py beside this file (P/lib for the module in
      P/lib/python3/dist-packages/granwave);
+  3. otherwise the build tree of a source checkout: <repo>/build/lib/libgranwave.so
+     (what ./setup.sh build makes), when this package is <repo>/python/granwave;
   4. the system's search path (ctypes.util.find_library("granwave")).
 No compilation happens at import: the C structs the module reads are mirrored
 here and their sizes checked against the library's.

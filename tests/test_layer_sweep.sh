@@ -2,8 +2,10 @@
 # test_layer_sweep.sh GRANWAVE SRCDIR: `granwave sweep` with the layer model
 # (issue 5; docs/physics.md 2.3, impact-point statistics).
 #  - a 2 x 3 grid (rb-rm x point) on a 40-disc sample runs with exit 0; the
-#    table has the grid keys and the 24 columns in the documented order, one
-#    row per case; x_impact = x + (point - (points - 1)/2) spacing; e = v_r/V_i,
+#    table has the grid keys and the 24 columns in the documented order, then
+#    case_config_fnv1a64 and sample_fnv1a64 (each row's case config hash, as
+#    recomputed here from the grid values and the '# param' lines, and the
+#    hash of the sample file), one row per case; x_impact = x + (point - (points - 1)/2) spacing; e = v_r/V_i,
 #    e_n = v_nr/v_ni (and the same for the _first values) and penetration_rm =
 #    penetration/R_m (R_m from the sample); bounced is 0, 1 or nan (undecided),
 #    and a row that did not bounce has no e_n, e_n_first, t_leave, t_f;
@@ -54,11 +56,25 @@ cols = ("x_impact,bounced,e_n,e,alpha_r,v_ni,v_nr,v_r,penetration,penetration_rm
 lines = [l for l in open(sys.argv[1]) if not l.startswith("#")]
 head = lines[0].strip().split(",")
 bad = []
-if head != ["case", "rb-rm", "point"] + cols:
+if head != ["case", "rb-rm", "point"] + cols + ["case_config_fnv1a64", "sample_fnv1a64"]:
     bad.append("header %s" % head)
 rows = list(csv.DictReader(lines))
 if len(rows) != 6:
     bad.append("%d rows" % len(rows))
+# each row ends with its case's config hash (FNV-1a 64 of "model layer\n" and
+# "KEY = VALUE\n" for its grid values, then the [params]) and the hash of the
+# sample bytes it read
+def fnv(b, h=14695981039346656037):
+    for c in b:
+        h = ((h ^ c) * 1099511628211) % 2**64
+    return h
+params = [l[len("# param "):].rstrip("\n").split(" = ", 1) for l in open(sys.argv[1]) if l.startswith("# param ")]
+sh = "%016x" % fnv(open(sys.argv[2], "rb").read())
+for r in rows:
+    text = "model layer\n" + "".join("%s = %s\n" % tuple(kv) for kv in [("rb-rm", r["rb-rm"]), ("point", r["point"])] + params)
+    if r["case_config_fnv1a64"] != "%016x" % fnv(text.encode()) or r["sample_fnv1a64"] != sh:
+        bad.append("case %s hashes %s %s (want %016x %s)" % (r["case"], r["case_config_fnv1a64"], r["sample_fnv1a64"],
+                                                            fnv(text.encode()), sh))
 rm = next(float(l.split()[1]) for l in open(sys.argv[2]) if l.startswith("rm "))
 for k, r in enumerate(rows):
     v = {c: float(r[c]) for c in cols}

@@ -801,7 +801,21 @@ if runs "a layer sweep of 4 cases" sweep "$tmp/w30.ini" --out "$tmp/w30" --quiet
     resume30 "case 0's row replaced by case 0 of a sweep over another grid (taken for case 0)" \
         "journal.csv:6: its grid values are not its case's \(a row of another sweep\)"
     grep -v '^#' "$tmp/w30d/journal.csv" | head -1 >>"$j30"
-    resume30 "case 0 journaled twice with different results (t-max 2e-4's row pasted; the table took the first)" \
+    resume30 "case 0's row of the sweep at t-max 2e-4 pasted (the table took the first; now told by its config hash)" \
+        "journal.csv:7: case 0 ran under config hash [0-9a-f]{16}, not this sweep's [0-9a-f]{16} for it"
+    # case 0 again with its steps edited and the checksum recomputed (FNV-1a 32
+    # of the row up to its last comma): the same config, other results
+    grep -v '^#' "$tmp/j30.orig" | head -1 | /usr/bin/python3 -c "
+import sys
+row = sys.stdin.read().rstrip('\n')
+f = row.split(',')[:-1]
+f[17] = str(int(f[17]) + 1)
+body = ','.join(f) + ','
+h = 2166136261
+for b in body.encode():
+    h = ((h ^ b) * 16777619) % 2**32
+print('%s%08x' % (body, h))" >>"$j30"
+    resume30 "case 0 journaled twice with different results (the table took the first)" \
         "journal.csv:7: case 0 is journaled twice with different results \(lines 3 and 7\)"
     cp "$tmp/j30.orig" "$j30"; grep -v '^#' "$tmp/j30.orig" | head -1 >>"$j30"
     rm -f "$tmp/w30/results.csv"
@@ -935,5 +949,5 @@ if runs "  the sweep resumes" sweep "$tmp/w35.ini" --out "$tmp/w35" --quiet; the
         ko "  $(grep '^1,' "$tmp/w35/results.csv" | tail -c 40)"
 fi
 
-echo "test_hostile_layer: $passes passed, $fails failed\"
+echo "test_hostile_layer: $passes passed, $fails failed"
 [ $fails -eq 0 ]

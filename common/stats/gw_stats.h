@@ -65,6 +65,8 @@ typedef struct gw_stats_table {
     char model[64];
     int nhash;
     char *hash_name[2];
+    unsigned long long *row_hash;                 /* [nrows * nhash] */
+    long *row_line;                               /* [nrows] the row's line, for messages */
     int ninputs;
     char **input_key, **input_value;              /* [ninputs] */
     unsigned long long *input_hash;               /* [ninputs] */

@@ -51,6 +51,8 @@ void gw_stats_table_free(gw_stats_table *t)
         free(t->grid_list[i]);
     for (int i = 0; i < 2; i++)
         free(t->hash_name[i]);
+    free(t->row_hash);
+    free(t->row_line);
     for (int i = 0; i < t->ninputs; i++) {
         free(t->input_key[i]);
         free(t->input_value[i]);
@@ -195,7 +197,13 @@ static int grow(gw_stats_table *t, long *cap)
     double *v = realloc(t->val, (size_t)(nc * t->ncols) * sizeof *v);
     if (v)
         t->val = v;
-    if (!ci || !gv || !gn || !v)
+    unsigned long long *rh = realloc(t->row_hash, (size_t)(nc * t->nhash + 1) * sizeof *rh);
+    if (rh)
+        t->row_hash = rh;
+    long *rl = realloc(t->row_line, (size_t)nc * sizeof *rl);
+    if (rl)
+        t->row_line = rl;
+    if (!ci || !gv || !gn || !v || !rh || !rl)
         return GW_ENOMEM;
     *cap = nc;
     return GW_OK;
@@ -235,46 +243,47 @@ static int cell_hex16(const char *c, unsigned long long *h)
     return i == 16;
 }
 
-/* A row's hashes (cells after the model's columns): its case config hash is
- * the one its grid values, the model and the "# param" lines give, and the
- * hash of the file it read is the "# input" line's for that file. A row
- * pasted from a sweep over the same grid with other [params] was read as
- * this sweep's. */
-static int row_hashes_check(const gw_stats_table *t, char **cells, long ln, long k, gw_err *err)
+/* The rows' hashes (the cells after the model's columns): each row's case
+ * config hash is the one its grid values, the model and the "# param" lines
+ * give, and the hash of the file it read is the "# input" line's for that
+ * file. A row pasted from a sweep over the same grid with other [params] was
+ * read as this sweep's. Run after the grid checks, which name an edited grid
+ * cell more precisely. */
+static int check_hashes(const gw_stats_table *t, gw_err *err)
 {
     const char *names[2 * GW_STATS_MAX_KEYS], *values[2 * GW_STATS_MAX_KEYS];
-    int nk = 0;
-    for (int i = 0; i < t->ngrid; i++)
-        names[nk] = t->grid_name[i], values[nk++] = cells[1 + i];
-    for (int i = 0; i < t->nparams; i++)
-        names[nk] = t->param_name[i], values[nk++] = t->param_value[i];
-    for (int j = 0; j < t->nhash; j++) {
-        const char *c = cells[1 + t->ngrid + t->ncols + j], *col = t->hash_name[j];
-        unsigned long long h;
-        if (!cell_hex16(c, &h))
-            return gw_err_set(err, GW_EFORMAT, "%s:%ld: column %s: '%s' is not a hash a sweep writes (16 hex digits)",
-                              t->path, ln, col, c);
-        if (j == 0) {
-            const unsigned long long want = gw_case_config_hash(t->model[0] ? t->model : "layer", nk, names, values);
-            if (h != want)
-                return gw_err_set(err, GW_EFORMAT, "%s:%ld: case %ld ran under config hash %016llx, but the table's "
-                                  "model and '# param' lines give %016llx for it (a row of a sweep with other [params] "
-                                  "or another model)", t->path, ln, k, h, want);
-            continue;
+    for (long r = 0; r < t->nrows; r++) {
+        int nk = 0;
+        for (int i = 0; i < t->ngrid; i++)
+            names[nk] = t->grid_name[i], values[nk++] = t->grid_value[r * t->ngrid + i];
+        for (int i = 0; i < t->nparams; i++)
+            names[nk] = t->param_name[i], values[nk++] = t->param_value[i];
+        const long k = t->case_id[r], ln = t->row_line[r];
+        for (int j = 0; j < t->nhash; j++) {
+            const unsigned long long h = t->row_hash[r * t->nhash + j];
+            const char *col = t->hash_name[j];
+            if (j == 0) {
+                const unsigned long long want = gw_case_config_hash(t->model[0] ? t->model : "layer", nk, names, values);
+                if (h != want)
+                    return gw_err_set(err, GW_EFORMAT, "%s:%ld: case %ld ran under config hash %016llx, but the "
+                                      "table's model and '# param' lines give %016llx for it (a row of a sweep with "
+                                      "other [params] or another model)", t->path, ln, k, h, want);
+                continue;
+            }
+            /* KEY_fnv1a64: the file the row's KEY names, and its '# input' line */
+            const size_t kl = strlen(col) - 8;
+            const char *file = NULL;
+            for (int i = 0; i < nk && !file; i++)
+                if (strlen(names[i]) == kl && strncmp(names[i], col, kl) == 0)
+                    file = values[i];
+            for (int i = 0; file && i < t->ninputs; i++)
+                if (strlen(t->input_key[i]) == kl && strncmp(t->input_key[i], col, kl) == 0 &&
+                    strcmp(t->input_value[i], file) == 0 && t->input_hash[i] != h)
+                    return gw_err_set(err, GW_EFORMAT, "%s:%ld: case %ld read %.*s '%s' with content fnv1a64 "
+                                      "%016llx, but the table's '# input' line gives %016llx (a row of a sweep over "
+                                      "another version of the file, or one that read it while it was changed)",
+                                      t->path, ln, k, (int)kl, col, file, h, t->input_hash[i]);
         }
-        /* KEY_fnv1a64: the file the row's KEY names, and its '# input' line */
-        const size_t kl = strlen(col) - 8;
-        const char *file = NULL;
-        for (int i = 0; i < nk && !file; i++)
-            if (strlen(names[i]) == kl && strncmp(names[i], col, kl) == 0)
-                file = values[i];
-        for (int i = 0; file && i < t->ninputs; i++)
-            if (strlen(t->input_key[i]) == kl && strncmp(t->input_key[i], col, kl) == 0 &&
-                strcmp(t->input_value[i], file) == 0 && t->input_hash[i] != h)
-                return gw_err_set(err, GW_EFORMAT, "%s:%ld: case %ld read %.*s '%s' with content fnv1a64 %016llx, "
-                                  "but the table's '# input' line gives %016llx (a row of a sweep over another "
-                                  "version of the file, or one that read it while it was changed)", t->path, ln, k,
-                                  (int)kl, col, file, h, t->input_hash[i]);
     }
     return GW_OK;
 }
@@ -350,11 +359,13 @@ static int parse_row(gw_stats_table *t, char *line, long ln, int ncells, int cb,
                               t->path, ln, t->col_name[i], c, isinf(v) ? "not finite" : "negative");
         t->val[r * t->ncols + i] = v;
     }
-    if (t->nhash > 0) {
-        int rc = row_hashes_check(t, cells, ln, k, err);
-        if (rc != GW_OK)
-            return rc;
+    for (int j = 0; j < t->nhash; j++) { /* compared in check_hashes */
+        const char *c = cells[1 + t->ngrid + t->ncols + j];
+        if (!cell_hex16(c, &t->row_hash[r * t->nhash + j]))
+            return gw_err_set(err, GW_EFORMAT, "%s:%ld: column %s: '%s' is not a hash a sweep writes (16 hex digits)",
+                              t->path, ln, t->hash_name[j], c);
     }
+    t->row_line[r] = ln;
     /* strings last, so that a refused row leaves nothing half-owned */
     for (int i = 0; i < t->ngrid; i++)
         if (!(t->grid_value[r * t->ngrid + i] = strdup(cells[1 + i]))) {
@@ -723,6 +734,8 @@ int gw_stats_table_parse(const char *text, const char *name, gw_stats_table *t, 
         rc = check_rows(t, err);
     if (rc == GW_OK && header_line && t->nrows > 0)
         rc = check_complete(t, err);
+    if (rc == GW_OK && header_line && t->nrows > 0 && t->nhash > 0)
+        rc = check_hashes(t, err);
     if (rc == GW_OK && !header_line)
         rc = gw_err_set(err, GW_EFORMAT, "%s:%ld: no header line (an empty table)", name, ln);
     else if (rc == GW_OK && t->nrows == 0)

@@ -780,8 +780,8 @@ static const char *row_hash_fault(const gw_sweep_config *cfg, long k, const char
     }
     if (case_read_hash(cfg, k, &wr, &file) && rh != wr) {
         snprintf(msg, n, "case %ld read %s '%s' with content fnv1a64 %016llx, but the sweep runs on %016llx (%s)", k,
-                 cfg->read_key, file, rh, wr, live ? "the file was changed while the case read it, and restored "
-                 "before the case ended" : "the file was changed while the case read it, or a row of another sweep");
+                 cfg->read_key, file, rh, wr, live ? "the file was changed when the case read it, and restored "
+                 "before the case ended" : "the file was changed when the case read it, or a row of another sweep");
         return msg;
     }
     return NULL;

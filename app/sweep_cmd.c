@@ -55,13 +55,14 @@ static int run_case(const sweep_run *s, long k, char *row, gw_err *err)
     if (s->m->ncolumns > 64)
         return gw_err_set(err, GW_EINVAL, "model %s has %d columns (at most 64)", s->m->name, s->m->ncolumns);
     gw_sweep_case(s->cfg, k, names, values);
-    int rc = s->m->run(s->cfg->ngrid + s->cfg->nparams, names, values, out, err);
+    unsigned long long read_hash = 0; /* the bytes of the sample the case read */
+    int rc = s->m->run(s->cfg->ngrid + s->cfg->nparams, names, values, out, &read_hash, err);
     if (rc != GW_OK) {
         char tmp[sizeof err->msg];
         snprintf(tmp, sizeof tmp, "%s", err->msg);
         return gw_err_set(err, rc, "case %ld: %s", k, tmp);
     }
-    return gw_sweep_format_row(s->cfg, k, out, s->m->ncolumns, row, ROW_MAX);
+    return gw_sweep_format_row(s->cfg, k, out, s->m->ncolumns, read_hash, row, ROW_MAX);
 }
 
 /* Append a finished row to the journal (caller holds the lock or is the only
@@ -71,6 +72,10 @@ static int journal(sweep_run *s, const char *row, gw_err *err)
     /* the files the case read (a layer sample) still hold what the sweep
      * started with: a sample edited mid-sweep gave rows of both, silently */
     int rc = gw_sweep_case_inputs_check(s->cfg, strtol(row, NULL, 10), err);
+    /* and the case read them as they were: a case that read the sample while
+     * it was changed, and ended after it was restored, passed the check above */
+    if (rc == GW_OK)
+        rc = gw_sweep_row_check(s->cfg, row, err);
     if (rc == GW_OK)
         rc = gw_sweep_journal_append(s->fd, row, err);
     if (rc == GW_OK)

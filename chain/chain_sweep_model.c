@@ -48,8 +48,10 @@ static int check(int nk, const char *const *names, const char *const *values, gw
     return rc;
 }
 
-static int run(int nk, const char *const *names, const char *const *values, double *out, gw_err *err)
+static int run(int nk, const char *const *names, const char *const *values, double *out,
+               unsigned long long *read_hash, gw_err *err)
 {
+    (void)read_hash; /* a chain case reads no file */
     gw_chain_setup s;
     gw_chain_collision c;
     memset(&c, 0, sizeof c);
@@ -68,4 +70,5 @@ static int run(int nk, const char *const *names, const char *const *values, doub
 }
 
 const gw_sweep_model gw_chain_sweep_model = {"chain", (int)(sizeof columns / sizeof columns[0]), columns,
-                                             has_key, run, check, NULL /* memory: not estimated */};
+                                             has_key, run, check, NULL /* memory: not estimated */,
+                                             NULL /* read_key: no file */};

@@ -176,6 +176,14 @@ int gw_input_read(const char *path, const char *what, size_t max, char **out, si
 unsigned long long gw_fnv1a64(unsigned long long h, const void *p, size_t n);
 int gw_fnv1a64_stream(FILE *fp, unsigned long long *h);
 int gw_fnv1a64_file(const char *path, const char *what, unsigned long long *h, gw_err *err);
+/* The hash of one sweep case's configuration: FNV-1a 64 of "model M\n" and
+ * then "NAME = VALUE\n" for each of the n pairs in order (a sweep's grid keys
+ * in the config's order with the case's values, then its [params]). A sweep
+ * journals it with each row and writes it in its table (column
+ * case_config_fnv1a64), so that a row of a sweep with other [params] or
+ * another model is told apart from the sweep's own (docs/formats.md). */
+unsigned long long gw_case_config_hash(const char *model, int n, const char *const *names,
+                                       const char *const *values);
 
 /* ---- output locations, checked before any work ----
  * gw_out_check: dir is an existing writable directory, or does not exist and its

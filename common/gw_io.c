@@ -386,6 +386,18 @@ unsigned long long gw_fnv1a64(unsigned long long h, const void *p, size_t n)
     return h;
 }
 
+unsigned long long gw_case_config_hash(const char *model, int n, const char *const *names,
+                                       const char *const *values)
+{
+    unsigned long long h = gw_fnv1a64(GW_FNV1A64_INIT, "model ", 6);
+    h = gw_fnv1a64(gw_fnv1a64(h, model, strlen(model)), "\n", 1);
+    for (int i = 0; i < n; i++) {
+        h = gw_fnv1a64(gw_fnv1a64(h, names[i], strlen(names[i])), " = ", 3);
+        h = gw_fnv1a64(gw_fnv1a64(h, values[i], strlen(values[i])), "\n", 1);
+    }
+    return h;
+}
+
 int gw_fnv1a64_stream(FILE *fp, unsigned long long *h)
 {
     unsigned char buf[65536];

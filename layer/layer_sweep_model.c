@@ -39,6 +39,7 @@
  */
 #include <math.h>
 #include <stddef.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "gw_layer_study.h"
@@ -164,7 +165,8 @@ static double canon(double v)
     return isnan(v) ? NAN : v;
 }
 
-static int run(int nk, const char *const *names, const char *const *values, double *out, gw_err *err)
+static int run(int nk, const char *const *names, const char *const *values, double *out,
+               unsigned long long *read_hash, gw_err *err)
 {
     gw_layer_impact_setup s;
     gw_layer_impact_outcome o;
@@ -188,10 +190,18 @@ static int run(int nk, const char *const *names, const char *const *values, doub
                                     r->t_rebound, r->t_f};
         for (int i = 0; i < NCOLUMNS; i++)
             out[i] = canon(v[i]);
+        /* the content hash of the sample bytes this run read (the sweep
+         * compares it with the file's hash when it started) */
+        char *end = NULL;
+        const unsigned long long h = o.sample_fnv1a64 ? strtoull(o.sample_fnv1a64, &end, 16) : 0;
+        if (!o.sample_fnv1a64 || !end || *end)
+            rc = gw_err_set(err, GW_ENOMEM, "out of memory");
+        else if (read_hash)
+            *read_hash = h;
     }
     gw_layer_impact_outcome_free(&o);
     gw_layer_impact_setup_clear(&s);
     return rc;
 }
 
-const gw_sweep_model gw_layer_sweep_model = {"layer", NCOLUMNS, columns, has_key, run, check, memory};
+const gw_sweep_model gw_layer_sweep_model = {"layer", NCOLUMNS, columns, has_key, run, check, memory, "sample"};

@@ -170,6 +170,17 @@
 #    sample edited mid-sweep stopped the cases of the other samples too. Each
 #    case checks the files it read: the edited sample's cases stop the sweep,
 #    the others' rows are kept.
+# 34 a row pasted into a sweep's journal or table from a sweep over the same
+#    grid with other [params] (t-max 2e-4 for 1e-4) kept a good checksum and
+#    its case's grid values, and was taken (resume: exit 0 with the other
+#    sweep's row in the table; layer-stats: exit 0). Rows now end with their
+#    case's config hash and the hash of the sample bytes the case read;
+#    either not matching is refused naming the file, the line and both hashes.
+#    A journal of the format before (no hashes in its rows) is refused.
+# 35 a case that read its sample while it was changed, and ended after it
+#    was restored, passed the check of the file after the case (exit 0, its
+#    row in the table): its row's sample hash is now compared with the
+#    sweep's, exit 2 naming the case and both hashes, the rows before kept.
 set -u
 GW=$1
 SRC=${2:-.}
@@ -798,7 +809,21 @@ if runs "a layer sweep of 4 cases" sweep "$tmp/w30.ini" --out "$tmp/w30" --quiet
     resume30 "case 0's row replaced by case 0 of a sweep over another grid (taken for case 0)" \
         "journal.csv:6: its grid values are not its case's \(a row of another sweep\)"
     grep -v '^#' "$tmp/w30d/journal.csv" | head -1 >>"$j30"
-    resume30 "case 0 journaled twice with different results (t-max 2e-4's row pasted; the table took the first)" \
+    resume30 "case 0's row of the sweep at t-max 2e-4 pasted (the table took the first; now told by its config hash)" \
+        "journal.csv:7: case 0 ran under config hash [0-9a-f]{16}, not this sweep's [0-9a-f]{16} for it"
+    # case 0 again with its steps edited and the checksum recomputed (FNV-1a 32
+    # of the row up to its last comma): the same config, other results
+    grep -v '^#' "$tmp/j30.orig" | head -1 | /usr/bin/python3 -c "
+import sys
+row = sys.stdin.read().rstrip('\n')
+f = row.split(',')[:-1]
+f[17] = str(int(f[17]) + 1)
+body = ','.join(f) + ','
+h = 2166136261
+for b in body.encode():
+    h = ((h ^ b) * 16777619) % 2**32
+print('%s%08x' % (body, h))" >>"$j30"
+    resume30 "case 0 journaled twice with different results (the table took the first)" \
         "journal.csv:7: case 0 is journaled twice with different results \(lines 3 and 7\)"
     cp "$tmp/j30.orig" "$j30"; grep -v '^#' "$tmp/j30.orig" | head -1 >>"$j30"
     rm -f "$tmp/w30/results.csv"
@@ -849,6 +874,87 @@ if [ $rc -eq 2 ] && [ "${n33:-0}" -eq 6 ] && [ ! -e "$tmp/w33/results.csv" ] &&
     ok "sample b of a grid edited during sample a's cases: a's 6 rows kept, stopped at b's first (exit 2)"
 else
     ko "sample b edited mid-sweep: exit $rc, ${n33:-0} rows (expected 6), $(cat "$tmp/stderr")"
+fi
+
+# --- 34: rows pasted from a sweep with other [params] ----------------------------------------
+cp "$S300" "$tmp/s34.txt"
+printf '[sweep]\nmodel = layer\n[grid]\nvi = 10, 20, 30\n[params]\nsample = %s\nt-max = 1e-4\n' "$tmp/s34.txt" >"$tmp/w34.ini"
+printf '[sweep]\nmodel = layer\n[grid]\nvi = 10, 20, 30\n[params]\nsample = %s\nt-max = 2e-4\n' "$tmp/s34.txt" >"$tmp/w34b.ini"
+if runs "a layer sweep of 3 cases" sweep "$tmp/w34.ini" --out "$tmp/w34" --quiet --jobs 1 &&
+   runs "  one over the same grid at t-max 2e-4" sweep "$tmp/w34b.ini" --out "$tmp/w34b" --quiet --jobs 1; then
+    j34=$tmp/w34/journal.csv
+    cp "$j34" "$tmp/j34.orig"
+    # paste FROM TO: case 1's row of FROM in place of TO's
+    paste34() { awk -F, 'NR == FNR { if ($1 == "1") r = $0; next } $1 == "1" { print r; next } { print }' "$1" "$2"; }
+    paste34 "$tmp/w34b/journal.csv" "$tmp/j34.orig" >"$j34"; rm -f "$tmp/w34/results.csv"; cp "$j34" "$tmp/j34.edited"
+    l34=$(grep -n '^1,' "$j34" | cut -d: -f1)
+    refused "a journal with case 1's row from the sweep at t-max 2e-4 (the same grid: it was taken, exit 0)" \
+        "^granwave sweep: .*w34/journal.csv:$l34: case 1 ran under config hash [0-9a-f]{16}, not this sweep's [0-9a-f]{16} for it \(a row of a sweep with other \[params\]" \
+        sweep "$tmp/w34.ini" --out "$tmp/w34" --quiet
+    cmp -s "$j34" "$tmp/j34.edited" && [ ! -e "$tmp/w34/results.csv" ] && ok "  the journal is left as it was, no table" ||
+        ko "  the journal changed or a table was written"
+    cp "$tmp/j34.orig" "$j34"
+    if runs "  the journal restored, the sweep writes its table" sweep "$tmp/w34.ini" --out "$tmp/w34" --quiet; then
+        t34=$tmp/w34/results.csv
+        runs "  layer-stats reads it" layer-stats "$t34" --json
+        paste34 "$tmp/w34b/results.csv" "$t34" >"$tmp/p34.csv"
+        l34=$(grep -n '^1,' "$tmp/p34.csv" | cut -d: -f1)
+        refused "layer-stats: case 1's row from the sweep at t-max 2e-4 (read as this sweep's)" \
+            "^granwave layer-stats: .*p34.csv:$l34: case 1 ran under config hash [0-9a-f]{16}, but the table's model and '# param' lines give [0-9a-f]{16}" \
+            layer-stats "$tmp/p34.csv" --json
+        sed 's/^# param t-max = 1e-4$/# param t-max = 2e-4/' "$t34" >"$tmp/q34.csv"
+        refused "layer-stats: the table's '# param t-max' edited" "q34.csv:[0-9]+: case 0 ran under config hash" \
+            layer-stats "$tmp/q34.csv" --json
+        # a sweep of the same config over another version of the sample
+        cp "$t34" "$tmp/t34.orig"
+        echo "# another version" >>"$tmp/s34.txt"
+        if runs "  the same sweep over the sample with a line added" sweep "$tmp/w34.ini" --out "$tmp/w34c" --quiet --jobs 1; then
+            paste34 "$tmp/w34c/results.csv" "$tmp/t34.orig" >"$tmp/v34.csv"
+            refused "layer-stats: case 1's row from the sweep over the other sample version (same [params])" \
+                "v34.csv:[0-9]+: case 1 read sample '.*s34.txt' with content fnv1a64 [0-9a-f]{16}, but the table's '# input' line gives [0-9a-f]{16}" \
+                layer-stats "$tmp/v34.csv" --json
+            cp "$S300" "$tmp/s34.txt"
+            paste34 "$tmp/w34c/journal.csv" "$tmp/j34.orig" >"$j34"; rm -f "$tmp/w34/results.csv"
+            refused "a journal with case 1's row from the sweep over the other sample version" \
+                "journal.csv:[0-9]+: case 1 read sample '.*s34.txt' with content fnv1a64 [0-9a-f]{16}, but the sweep runs on [0-9a-f]{16}" \
+                sweep "$tmp/w34.ini" --out "$tmp/w34" --quiet
+        fi
+        cp "$S300" "$tmp/s34.txt"
+        sed '1s/, format 2$//' "$tmp/j34.orig" >"$j34"
+        rm -f "$tmp/w34/results.csv"
+        refused "a journal in the format before rows carried their hashes" \
+            "w34/journal.csv: a journal of an earlier granwave, whose rows do not record the config they ran under" \
+            sweep "$tmp/w34.ini" --out "$tmp/w34" --quiet
+        cp "$tmp/j34.orig" "$j34"
+    fi
+fi
+
+# --- 35: a case that read a changed sample, restored before the case ended ----------------
+# jobs 1, a grid of two samples: case 0 runs on a35 (0.5 s of impact, about
+# 1.9 s), b35 is edited meanwhile; once case 0 is journaled case 1 reads the
+# edited b35, which is restored 0.5 s later, before case 1 ends (1.9 s).
+cp "$S300" "$tmp/a35.txt"; cp "$S300" "$tmp/b35.txt"; echo "# b" >>"$tmp/b35.txt"; cp "$tmp/b35.txt" "$tmp/b35.orig"
+hb35=$(fnv "$tmp/b35.txt")
+printf '[sweep]\nmodel = layer\n[grid]\nsample = %s, %s\n[params]\nt-max = 0.5\nfull = true\n' "$tmp/a35.txt" "$tmp/b35.txt" >"$tmp/w35.ini"
+timeout -s KILL 600 "$GW" sweep "$tmp/w35.ini" --out "$tmp/w35" --quiet --jobs 1 >"$tmp/stdout" 2>"$tmp/stderr" </dev/null &
+pid35=$!
+for _ in $(seq 1 6000); do [ -e "$tmp/w35/journal.csv" ] && break; sleep 0.02; done
+echo "# edited while case 0 runs" >>"$tmp/b35.txt"
+hc35=$(fnv "$tmp/b35.txt")
+wait_journaled "$tmp/w35/journal.csv" 30000 0.02
+sleep 0.5
+cp "$tmp/b35.orig" "$tmp/b35.txt"
+wait $pid35; rc=$?
+n35=$(grep -vc '^#' "$tmp/w35/journal.csv" 2>/dev/null)
+if [ $rc -eq 2 ] && [ "$(wc -l <"$tmp/stderr")" -eq 1 ] && [ ! -e "$tmp/w35/results.csv" ] && [ "${n35:-0}" -eq 1 ] &&
+   grep -q "^granwave sweep: case 1 read sample '.*b35.txt' with content fnv1a64 $hc35, but the sweep runs on $hb35 .*its row is not kept" "$tmp/stderr"; then
+    ok "a case that read the edited sample, restored before it ended: exit 2 naming case 1 and both hashes, case 0's row kept"
+else
+    ko "a case that read the edited sample, restored before it ended: exit $rc, ${n35:-0} rows, table $([ -e "$tmp/w35/results.csv" ] && echo written || echo none), $(cat "$tmp/stderr")"
+fi
+if runs "  the sweep resumes" sweep "$tmp/w35.ini" --out "$tmp/w35" --quiet; then
+    [ "$(grep -c "^1,.*,$hb35\$" "$tmp/w35/results.csv")" -eq 1 ] && ok "  case 1 rerun on the restored sample" ||
+        ko "  $(grep '^1,' "$tmp/w35/results.csv" | tail -c 40)"
 fi
 
 echo "test_hostile_layer: $passes passed, $fails failed"

@@ -2,15 +2,18 @@
 # test_layer_sweep.sh GRANWAVE SRCDIR: `granwave sweep` with the layer model
 # (issue 5; docs/physics.md 2.3, impact-point statistics).
 #  - a 2 x 3 grid (rb-rm x point) on a 40-disc sample runs with exit 0; the
-#    table has the grid keys and the 24 columns in the documented order, one
-#    row per case; x_impact = x + (point - (points - 1)/2) spacing; e = v_r/V_i,
+#    table has the grid keys and the 24 columns in the documented order, then
+#    case_config_fnv1a64 and sample_fnv1a64 (each row's case config hash, as
+#    recomputed here from the grid values and the '# param' lines, and the
+#    hash of the sample file), one row per case; x_impact = x + (point - (points - 1)/2) spacing; e = v_r/V_i,
 #    e_n = v_nr/v_ni (and the same for the _first values) and penetration_rm =
 #    penetration/R_m (R_m from the sample); bounced is 0, 1 or nan (undecided),
 #    and a row that did not bounce has no e_n, e_n_first, t_leave, t_f;
 #  - a sweep killed with kill -9 after its first journaled case and rerun gives
 #    a results.csv byte-identical to the uninterrupted one;
-#  - serial (threads) and MPI (2 ranks) tables are identical (SKIP when
-#    granwave has no MPI or mpirun is missing);
+#  - serial (threads) and MPI (2 ranks) tables are identical, also for a
+#    sweep killed with kill -9 and resumed under MPI (SKIP when granwave has
+#    no MPI or mpirun is missing);
 #  - exact = true runs the exact mode (ledger closure < 1e-4);
 #  - bad values (rb-rm = -1, a missing sample, a flag value that is not
 #    0/1/true/false, point >= points) exit 2 with one line naming the key or
@@ -54,11 +57,25 @@ cols = ("x_impact,bounced,e_n,e,alpha_r,v_ni,v_nr,v_r,penetration,penetration_rm
 lines = [l for l in open(sys.argv[1]) if not l.startswith("#")]
 head = lines[0].strip().split(",")
 bad = []
-if head != ["case", "rb-rm", "point"] + cols:
+if head != ["case", "rb-rm", "point"] + cols + ["case_config_fnv1a64", "sample_fnv1a64"]:
     bad.append("header %s" % head)
 rows = list(csv.DictReader(lines))
 if len(rows) != 6:
     bad.append("%d rows" % len(rows))
+# each row ends with its case's config hash (FNV-1a 64 of "model layer\n" and
+# "KEY = VALUE\n" for its grid values, then the [params]) and the hash of the
+# sample bytes it read
+def fnv(b, h=14695981039346656037):
+    for c in b:
+        h = ((h ^ c) * 1099511628211) % 2**64
+    return h
+params = [l[len("# param "):].rstrip("\n").split(" = ", 1) for l in open(sys.argv[1]) if l.startswith("# param ")]
+sh = "%016x" % fnv(open(sys.argv[2], "rb").read())
+for r in rows:
+    text = "model layer\n" + "".join("%s = %s\n" % tuple(kv) for kv in [("rb-rm", r["rb-rm"]), ("point", r["point"])] + params)
+    if r["case_config_fnv1a64"] != "%016x" % fnv(text.encode()) or r["sample_fnv1a64"] != sh:
+        bad.append("case %s hashes %s %s (want %016x %s)" % (r["case"], r["case_config_fnv1a64"], r["sample_fnv1a64"],
+                                                            fnv(text.encode()), sh))
 rm = next(float(l.split()[1]) for l in open(sys.argv[2]) if l.startswith("rm "))
 for k, r in enumerate(rows):
     v = {c: float(r[c]) for c in cols}
@@ -133,6 +150,29 @@ else
         "$GW" sweep "$tmp/s.ini" --out "$tmp/mpi" --quiet >"$tmp/mpi.log" 2>&1
     cmp -s "$tmp/ref/results.csv" "$tmp/mpi/results.csv" && ok "MPI (2 ranks) table identical to the threaded one" ||
         { ko "MPI table differs or failed"; tail -5 "$tmp/mpi.log"; }
+    # a sweep killed after its first journaled case (threads), resumed under
+    # MPI: the rows' hashes (case config, sample read) are checked by rank 0
+    # for the rows the other rank sends, and the table is the same
+    for attempt in 1 2 3; do
+        rm -rf "$tmp/km"
+        "$GW" sweep "$tmp/s.ini" --out "$tmp/km" --quiet --jobs 1 & pid=$!
+        for _ in $(seq 1 300); do
+            n=$(grep -vc '^#' "$tmp/km/journal.csv" 2>/dev/null); n=${n:-0}
+            [ "$n" -ge 1 ] && break
+            sleep 0.02
+        done
+        kill -9 $pid 2>/dev/null; wait $pid 2>/dev/null
+        n1=$(grep -vc '^#' "$tmp/km/journal.csv" 2>/dev/null)
+        [ ! -e "$tmp/km/results.csv" ] && [ "${n1:-0}" -ge 1 ] && [ "${n1:-0}" -lt 6 ] && break
+    done
+    OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 mpirun --allow-run-as-root --oversubscribe -n 2 \
+        "$GW" sweep "$tmp/s.ini" --out "$tmp/km" --quiet >"$tmp/mpi.log" 2>&1
+    if [ "${n1:-0}" -ge 1 ] && [ "${n1:-0}" -lt 6 ] && cmp -s "$tmp/ref/results.csv" "$tmp/km/results.csv"; then
+        ok "killed after $n1 of 6 cases, resumed under MPI (2 ranks): table byte-identical"
+    else
+        ko "kill -9 then MPI resume: ${n1:-0} rows before, table $(cmp "$tmp/ref/results.csv" "$tmp/km/results.csv" 2>&1)"
+        tail -5 "$tmp/mpi.log"
+    fi
 fi
 
 # the sample's contents belong to the config: a journal made with another

@@ -56,6 +56,20 @@ typedef struct gw_stats_table {
      * table lists none). */
     long sweep_rows, sweep_cases;
     char *grid_list[GW_STATS_MAX_KEYS];           /* [ngrid] "v1, v2, ..." */
+    /* Tables written since rows carry hashes: the model (first line; "layer"
+     * when absent), the trailing columns case_config_fnv1a64 and KEY_fnv1a64
+     * (nhash of them, after the model's columns), and the "# input KEY =
+     * VALUE fnv1a64 HEX" lines. Each row's case config hash must be the one
+     * its grid values and the "# param" lines give (gw_case_config_hash), and
+     * its KEY_fnv1a64 the hash of the "# input" line of its file. */
+    char model[64];
+    int nhash;
+    char *hash_name[2];
+    unsigned long long *row_hash;                 /* [nrows * nhash] */
+    long *row_line;                               /* [nrows] the row's line, for messages */
+    int ninputs;
+    char **input_key, **input_value;              /* [ninputs] */
+    unsigned long long *input_hash;               /* [ninputs] */
 } gw_stats_table;
 
 /* Columns layer-stats needs; a table without one of them is refused. */

@@ -49,6 +49,17 @@ void gw_stats_table_free(gw_stats_table *t)
     }
     for (int i = 0; i < GW_STATS_MAX_KEYS; i++)
         free(t->grid_list[i]);
+    for (int i = 0; i < 2; i++)
+        free(t->hash_name[i]);
+    free(t->row_hash);
+    free(t->row_line);
+    for (int i = 0; i < t->ninputs; i++) {
+        free(t->input_key[i]);
+        free(t->input_value[i]);
+    }
+    free(t->input_key);
+    free(t->input_value);
+    free(t->input_hash);
     memset(t, 0, sizeof *t);
     t->sweep_rows = t->sweep_cases = -1;
 }
@@ -131,6 +142,24 @@ static int parse_header(gw_stats_table *t, char *line, long ln, int *ncells, gw_
                 return gw_err_set(err, GW_EFORMAT, "%s:%ld: header column '%s' appears twice", t->path,
                                   ln, cells[i]);
     }
+    /* the hashes a sweep writes after the model's columns (at most two:
+     * case_config_fnv1a64, then the read file's KEY_fnv1a64) */
+    int nh = 0;
+    while (nh < 2 && n - nh - 1 > xi) {
+        const char *c = cells[n - nh - 1];
+        const size_t cl = strlen(c);
+        if (cl <= 8 || strcmp(c + cl - 8, "_fnv1a64") != 0)
+            break;
+        nh++;
+    }
+    if (nh > 0 && strcmp(cells[n - nh], "case_config_fnv1a64") != 0)
+        return gw_err_set(err, GW_EFORMAT, "%s:%ld: column '%s' is not where a sweep writes it (case_config_fnv1a64 "
+                          "follows the model's columns, then the read file's hash)", t->path, ln, cells[n - nh]);
+    for (int i = 0; i < nh; i++)
+        if (!(t->hash_name[i] = strdup(cells[n - nh + i])))
+            return gw_err_set(err, GW_ENOMEM, "%s: out of memory", t->path);
+    t->nhash = nh;
+    n -= nh;
     t->ngrid = xi - 1;
     t->ncols = n - xi;
     t->col_name = calloc((size_t)t->ncols, sizeof *t->col_name);
@@ -149,7 +178,7 @@ static int parse_header(gw_stats_table *t, char *line, long ln, int *ncells, gw_
         if (gw_stats_table_col(t, gw_stats_table_required[k]) < 0)
             return gw_err_set(err, GW_EFORMAT, "%s:%ld: header has no column '%s' (a layer sweep table is required)",
                               t->path, ln, gw_stats_table_required[k]);
-    *ncells = n;
+    *ncells = n + nh;
     return GW_OK;
 }
 
@@ -168,7 +197,13 @@ static int grow(gw_stats_table *t, long *cap)
     double *v = realloc(t->val, (size_t)(nc * t->ncols) * sizeof *v);
     if (v)
         t->val = v;
-    if (!ci || !gv || !gn || !v)
+    unsigned long long *rh = realloc(t->row_hash, (size_t)(nc * t->nhash + 1) * sizeof *rh);
+    if (rh)
+        t->row_hash = rh;
+    long *rl = realloc(t->row_line, (size_t)nc * sizeof *rl);
+    if (rl)
+        t->row_line = rl;
+    if (!ci || !gv || !gn || !v || !rh || !rl)
         return GW_ENOMEM;
     *cap = nc;
     return GW_OK;
@@ -189,6 +224,99 @@ static int nonnegative(const char *col)
         if (strcmp(col, names[k]) == 0)
             return 1;
     return 0;
+}
+
+/* 16 lowercase hex digits, the whole cell. */
+static int cell_hex16(const char *c, unsigned long long *h)
+{
+    unsigned long long v = 0;
+    int i = 0;
+    for (; c[i] && i < 17; i++) {
+        if (c[i] >= '0' && c[i] <= '9')
+            v = v << 4 | (unsigned long long)(c[i] - '0');
+        else if (c[i] >= 'a' && c[i] <= 'f')
+            v = v << 4 | (unsigned long long)(c[i] - 'a' + 10);
+        else
+            return 0;
+    }
+    *h = v;
+    return i == 16;
+}
+
+/* The rows' hashes (the cells after the model's columns): each row's case
+ * config hash is the one its grid values, the model and the "# param" lines
+ * give, and the hash of the file it read is the "# input" line's for that
+ * file. A row pasted from a sweep over the same grid with other [params] was
+ * read as this sweep's. Run after the grid checks, which name an edited grid
+ * cell more precisely. */
+static int check_hashes(const gw_stats_table *t, gw_err *err)
+{
+    const char *names[2 * GW_STATS_MAX_KEYS], *values[2 * GW_STATS_MAX_KEYS];
+    for (long r = 0; r < t->nrows; r++) {
+        int nk = 0;
+        for (int i = 0; i < t->ngrid; i++)
+            names[nk] = t->grid_name[i], values[nk++] = t->grid_value[r * t->ngrid + i];
+        for (int i = 0; i < t->nparams; i++)
+            names[nk] = t->param_name[i], values[nk++] = t->param_value[i];
+        const long k = t->case_id[r], ln = t->row_line[r];
+        for (int j = 0; j < t->nhash; j++) {
+            const unsigned long long h = t->row_hash[r * t->nhash + j];
+            const char *col = t->hash_name[j];
+            if (j == 0) {
+                const unsigned long long want = gw_case_config_hash(t->model[0] ? t->model : "layer", nk, names, values);
+                if (h != want)
+                    return gw_err_set(err, GW_EFORMAT, "%s:%ld: case %ld ran under config hash %016llx, but the "
+                                      "table's model and '# param' lines give %016llx for it (a row of a sweep with "
+                                      "other [params] or another model)", t->path, ln, k, h, want);
+                continue;
+            }
+            /* KEY_fnv1a64: the file the row's KEY names, and its '# input' line */
+            const size_t kl = strlen(col) - 8;
+            const char *file = NULL;
+            for (int i = 0; i < nk && !file; i++)
+                if (strlen(names[i]) == kl && strncmp(names[i], col, kl) == 0)
+                    file = values[i];
+            for (int i = 0; file && i < t->ninputs; i++)
+                if (strlen(t->input_key[i]) == kl && strncmp(t->input_key[i], col, kl) == 0 &&
+                    strcmp(t->input_value[i], file) == 0 && t->input_hash[i] != h)
+                    return gw_err_set(err, GW_EFORMAT, "%s:%ld: case %ld read %.*s '%s' with content fnv1a64 "
+                                      "%016llx, but the table's '# input' line gives %016llx (a row of a sweep over "
+                                      "another version of the file, or one that read it while it was changed)",
+                                      t->path, ln, k, (int)kl, col, file, h, t->input_hash[i]);
+        }
+    }
+    return GW_OK;
+}
+
+/* "# input KEY = VALUE fnv1a64 HEX": the content hash of a file the sweep's
+ * cases read. */
+static int add_input(gw_stats_table *t, const char *text, gw_err *err)
+{
+    const char *eq = strstr(text, " = ");
+    const size_t len = strlen(text);
+    unsigned long long h;
+    if (!eq || len < 26 || (size_t)(eq - text) + 3 + 25 > len || strncmp(text + len - 25, " fnv1a64 ", 9) != 0 ||
+        !cell_hex16(text + len - 16, &h))
+        return GW_OK; /* another comment (a table made by hand): it names no file's hash */
+    char **k = realloc(t->input_key, (size_t)(t->ninputs + 1) * sizeof *k);
+    if (k)
+        t->input_key = k;
+    char **v = realloc(t->input_value, (size_t)(t->ninputs + 1) * sizeof *v);
+    if (v)
+        t->input_value = v;
+    unsigned long long *hh = realloc(t->input_hash, (size_t)(t->ninputs + 1) * sizeof *hh);
+    if (hh)
+        t->input_hash = hh;
+    char *ks = k && v && hh ? strndup(text, (size_t)(eq - text)) : NULL;
+    char *vs = ks ? strndup(eq + 3, len - 25 - (size_t)(eq + 3 - text)) : NULL;
+    if (!vs) {
+        free(ks);
+        return gw_err_set(err, GW_ENOMEM, "%s: out of memory", t->path);
+    }
+    t->input_key[t->ninputs] = ks;
+    t->input_value[t->ninputs] = vs;
+    t->input_hash[t->ninputs++] = h;
+    return GW_OK;
 }
 
 static int parse_row(gw_stats_table *t, char *line, long ln, int ncells, int cb, gw_err *err)
@@ -231,6 +359,13 @@ static int parse_row(gw_stats_table *t, char *line, long ln, int ncells, int cb,
                               t->path, ln, t->col_name[i], c, isinf(v) ? "not finite" : "negative");
         t->val[r * t->ncols + i] = v;
     }
+    for (int j = 0; j < t->nhash; j++) { /* compared in check_hashes */
+        const char *c = cells[1 + t->ngrid + t->ncols + j];
+        if (!cell_hex16(c, &t->row_hash[r * t->nhash + j]))
+            return gw_err_set(err, GW_EFORMAT, "%s:%ld: column %s: '%s' is not a hash a sweep writes (16 hex digits)",
+                              t->path, ln, t->hash_name[j], c);
+    }
+    t->row_line[r] = ln;
     /* strings last, so that a refused row leaves nothing half-owned */
     for (int i = 0; i < t->ngrid; i++)
         if (!(t->grid_value[r * t->ngrid + i] = strdup(cells[1 + i]))) {
@@ -255,6 +390,10 @@ static int sweep_line(gw_stats_table *t, const char *line, long ln, gw_err *err)
 {
     const char *p = strstr(line, " sweep, model ");
     size_t l = strlen(line);
+    if (p) { /* the model, for the rows' case config hashes */
+        const size_t ml = strcspn(p + 14, ",");
+        snprintf(t->model, sizeof t->model, "%.*s", (int)(ml < sizeof t->model ? ml : 0), p + 14);
+    }
     if (!p || l < 6 || strcmp(line + l - 6, " cases") != 0)
         return GW_OK; /* another file's first line, or a sweep's before it said its counts */
     const char *c = strrchr(line, ',');
@@ -573,6 +712,8 @@ int gw_stats_table_parse(const char *text, const char *name, gw_stats_table *t, 
                 rc = gw_err_set(err, GW_ENOMEM, "%s: out of memory", name);
             else if (!header_line && strncmp(line, "grid ", 5) == 0)
                 rc = add_grid_list(t, line + 5, ln, err);
+            else if (!header_line && strncmp(line, "input ", 6) == 0)
+                rc = add_input(t, line + 6, err);
             else if (!header_line && ln == 1 && strncmp(line, "granwave ", 9) == 0)
                 rc = sweep_line(t, line, ln, err);
             continue;
@@ -593,6 +734,8 @@ int gw_stats_table_parse(const char *text, const char *name, gw_stats_table *t, 
         rc = check_rows(t, err);
     if (rc == GW_OK && header_line && t->nrows > 0)
         rc = check_complete(t, err);
+    if (rc == GW_OK && header_line && t->nrows > 0 && t->nhash > 0)
+        rc = check_hashes(t, err);
     if (rc == GW_OK && !header_line)
         rc = gw_err_set(err, GW_EFORMAT, "%s:%ld: no header line (an empty table)", name, ln);
     else if (rc == GW_OK && t->nrows == 0)

@@ -518,6 +518,7 @@ static int config_finish(const char *path, const gw_sweep_model *const *models, 
         gw_sweep_config_free(cfg);
         return GW_EINVAL;
     }
+    cfg->read_key = (*model)->read_key;
     if (cfg->ngrid == 0) {
         gw_sweep_config_free(cfg);
         return gw_err_set(err, GW_EINVAL, "%s: the [grid] section is empty or missing", path);
@@ -587,8 +588,16 @@ static unsigned fnv32(const char *s, size_t n)
     return h;
 }
 
-int gw_sweep_format_row(const gw_sweep_config *cfg, long k, const double *out, int ncol, char *buf,
-                        size_t n)
+unsigned long long gw_sweep_case_hash(const gw_sweep_config *cfg, long k)
+{
+    const char *names[2 * GW_SWEEP_MAX_KEYS], *values[2 * GW_SWEEP_MAX_KEYS];
+    if (gw_sweep_case(cfg, k, names, values) != GW_OK)
+        return 0;
+    return gw_case_config_hash(cfg->model, cfg->ngrid + cfg->nparams, names, values);
+}
+
+int gw_sweep_format_row(const gw_sweep_config *cfg, long k, const double *out, int ncol,
+                        unsigned long long read_hash, char *buf, size_t n)
 {
     const char *names[2 * GW_SWEEP_MAX_KEYS], *values[2 * GW_SWEEP_MAX_KEYS];
     gw_sweep_case(cfg, k, names, values);
@@ -598,6 +607,13 @@ int gw_sweep_format_row(const gw_sweep_config *cfg, long k, const double *out, i
     for (int i = 0; i < ncol && w < n; i++)
         w += isnan(out[i]) ? (size_t)snprintf(buf + w, n - w, ",nan") /* never "-nan" */
                            : (size_t)snprintf(buf + w, n - w, ",%.17g", out[i]);
+    /* what the case ran under, and on: a row pasted from a sweep with other
+     * [params] carried a good checksum and its case's grid values */
+    if (w < n)
+        w += (size_t)snprintf(buf + w, n - w, ",%016llx",
+                              gw_case_config_hash(cfg->model, cfg->ngrid + cfg->nparams, names, values));
+    if (cfg->read_key && w < n)
+        w += (size_t)snprintf(buf + w, n - w, ",%016llx", read_hash);
     if (w + 12 >= n)
         return GW_EINVAL;
     buf[w] = ','; /* the checksum covers the row up to and including this comma */
@@ -690,6 +706,102 @@ static const char *row_grid_fault(const gw_sweep_config *cfg, long k, const char
     return NULL;
 }
 
+/* 16 lowercase hex digits at p (exactly len 16): into *h. */
+static int hex16(const char *p, size_t len, unsigned long long *h)
+{
+    if (len != 16)
+        return 0;
+    unsigned long long v = 0;
+    for (size_t i = 0; i < 16; i++) {
+        const char c = p[i];
+        if (c >= '0' && c <= '9')
+            v = v << 4 | (unsigned long long)(c - '0');
+        else if (c >= 'a' && c <= 'f')
+            v = v << 4 | (unsigned long long)(c - 'a' + 10);
+        else
+            return 0;
+    }
+    *h = v;
+    return 1;
+}
+
+/* The hashes that end a row (s, len: without ",checksum\n"): the case config
+ * hash, then the read hash when cfg->read_key is set. 0 when they are not
+ * there (a row of the format before them, or garbled). */
+static int row_hashes(const gw_sweep_config *cfg, const char *s, size_t len, unsigned long long *ch,
+                      unsigned long long *rh)
+{
+    *rh = 0;
+    for (int f = cfg->read_key ? 2 : 1; f > 0; f--) {
+        if (len < 17 || s[len - 17] != ',')
+            return 0;
+        if (!hex16(s + len - 16, 16, f == 2 ? rh : ch))
+            return 0;
+        len -= 17;
+    }
+    return 1;
+}
+
+/* The hash the sweep started with of the file case k reads (cfg->read_key):
+ * 1 and *h, or 0 when the case reads no file the sweep hashed. *value: the
+ * file's name. */
+static int case_read_hash(const gw_sweep_config *cfg, long k, unsigned long long *h, const char **value)
+{
+    const char *names[2 * GW_SWEEP_MAX_KEYS], *values[2 * GW_SWEEP_MAX_KEYS];
+    if (!cfg->read_key || gw_sweep_case(cfg, k, names, values) != GW_OK)
+        return 0;
+    for (int j = 0; j < cfg->ngrid + cfg->nparams; j++)
+        if (strcmp(names[j], cfg->read_key) == 0)
+            for (int i = 0; i < cfg->ninputs; i++)
+                if (strcmp(cfg->inputs[i].key, names[j]) == 0 && strcmp(cfg->inputs[i].value, values[j]) == 0) {
+                    *h = cfg->inputs[i].hash;
+                    *value = values[j];
+                    return 1;
+                }
+    return 0;
+}
+
+/* Row k (s, len: without ",checksum\n") ran under case k's config and on the
+ * file the sweep hashed: NULL, or why not into msg. */
+static const char *row_hash_fault(const gw_sweep_config *cfg, long k, const char *s, size_t len, int live,
+                                  char *msg, size_t n)
+{
+    unsigned long long ch, rh, want, wr;
+    const char *file = NULL;
+    if (!row_hashes(cfg, s, len, &ch, &rh)) {
+        snprintf(msg, n, "case %ld's row does not end with its config hash%s (16 hex digits)", k,
+                 cfg->read_key ? " and the hash of the file it read" : "");
+        return msg;
+    }
+    if (ch != (want = gw_sweep_case_hash(cfg, k))) {
+        snprintf(msg, n, "case %ld ran under config hash %016llx, not this sweep's %016llx for it (a row of a "
+                 "sweep with other [params] or another model)", k, ch, want);
+        return msg;
+    }
+    if (case_read_hash(cfg, k, &wr, &file) && rh != wr) {
+        snprintf(msg, n, "case %ld read %s '%s' with content fnv1a64 %016llx, but the sweep runs on %016llx (%s)", k,
+                 cfg->read_key, file, rh, wr, live ? "the file was changed when the case read it, and restored "
+                 "before the case ended" : "the file was changed when the case read it, or a row of another sweep");
+        return msg;
+    }
+    return NULL;
+}
+
+int gw_sweep_row_check(const gw_sweep_config *cfg, const char *row, gw_err *err)
+{
+    char msg[1024];
+    size_t len = strlen(row);
+    char *end;
+    long k = strtol(row, &end, 10);
+    if (end == row || *end != ',' || k < 0 || k >= cfg->ncases || len < 10)
+        return gw_err_set(err, GW_EINVAL, "sweep: a row that is not one of this sweep's: %.40s", row);
+    const char *why = row_hash_fault(cfg, k, row, len - 10, 1, msg, sizeof msg);
+    if (why)
+        return gw_err_set(err, GW_EINVAL, "%s: its row is not kept; restore the file and rerun to resume (the "
+                          "rows before are kept), or start a new sweep", why);
+    return GW_OK;
+}
+
 /* The journal or table: a regular file only (gw_input_read), NULL with errno set
  * (ENOENT when absent). */
 static char *slurp(const char *path, size_t *len, gw_err *err)
@@ -724,7 +836,7 @@ int gw_sweep_journal_scan(const char *dir, const gw_sweep_config *cfg, char *don
     gw_err rerr = {{0}};
     char *buf = slurp(path, &len, &rerr);
     char head[96];
-    snprintf(head, sizeof head, "# granwave sweep journal %016lx\n", cfg->hash);
+    snprintf(head, sizeof head, GW_SWEEP_JOURNAL_HEAD "\n", cfg->hash);
     if (!buf) {
         if (errno != ENOENT) {
             *err = rerr;
@@ -743,6 +855,17 @@ int gw_sweep_journal_scan(const char *dir, const gw_sweep_config *cfg, char *don
         free(text);
         free(in);
         return rc;
+    }
+    /* the format before rows carried their case config hash and the hash of
+     * the file they read: "# granwave sweep journal HASH" alone. Its rows
+     * cannot be told from rows pasted from a sweep with other [params]. */
+    char old_head[64];
+    snprintf(old_head, sizeof old_head, "# granwave sweep journal %016lx\n", cfg->hash);
+    if (strncmp(buf, old_head, strlen(old_head)) == 0) {
+        free(buf);
+        return gw_err_set(err, GW_EINVAL, "%s: a journal of an earlier granwave, whose rows do not record the "
+                          "config they ran under (a row pasted from another sweep could not be told): finish the "
+                          "sweep with the granwave that started it, or remove the journal to rerun its cases", path);
     }
     if (strncmp(buf, "# granwave sweep journal ", 25) != 0 || strncmp(buf, head, strlen(head)) != 0) {
         int rc = strncmp(buf, "# granwave sweep journal ", 25) == 0 ? changed_input(cfg, buf, len, dir, err) : GW_OK;
@@ -780,7 +903,10 @@ int gw_sweep_journal_scan(const char *dir, const gw_sweep_config *cfg, char *don
         const char *nl = memchr(buf + pos, '\n', len - pos);
         size_t l = nl ? (size_t)(nl - (buf + pos)) + 1 : len - pos;
         long k = check_line(buf + pos, l, cfg->ncases);
+        char hmsg[1024];
         const char *why = k < 0 ? journal_line_fault(buf + pos, l, cfg->ncases) : row_grid_fault(cfg, k, buf + pos, l);
+        if (k >= 0 && !why)
+            why = row_hash_fault(cfg, k, buf + pos, l - 10, 0, hmsg, sizeof hmsg);
         if (k >= 0 && !why) {
             if (nrows == caprows) {
                 long nc = caprows ? 2 * caprows : 1024;
@@ -899,6 +1025,9 @@ int gw_sweep_write_table(const char *dir, const gw_sweep_config *cfg, const gw_s
                 fprintf(f.fp, ",%s", cfg->grid[i].name);
             for (int i = 0; i < m->ncolumns; i++)
                 fprintf(f.fp, ",%s", m->columns[i]);
+            fprintf(f.fp, ",case_config_fnv1a64"); /* the hashes that end each row */
+            if (cfg->read_key)
+                fprintf(f.fp, ",%s_fnv1a64", cfg->read_key);
             fputc('\n', f.fp);
             for (long i = 0; i < nr; i++) {
                 fwrite(rows[i].s, 1, rows[i].len, f.fp);

@@ -25,6 +25,10 @@
 #define GW_SWEEP_MAX_KEYS 32
 #define GW_SWEEP_CONFIG_MAX (1L << 20) /* bytes: a config is read whole, bounded */
 #define GW_SWEEP_JOBS_MAX 4096          /* threads of one sweep (--jobs, gw_sweep_run) */
+/* A journal's first line (the config's hash): "format 2", rows that end with
+ * their case config hash and read hash; the format before them said
+ * "# granwave sweep journal HASH" alone and is refused (docs/formats.md). */
+#define GW_SWEEP_JOURNAL_HEAD "# granwave sweep journal %016lx, format 2"
 
 typedef struct gw_sweep_key {
     char *name;
@@ -42,6 +46,7 @@ typedef struct gw_sweep_config {
     int nparams;
     long ncases;
     unsigned long hash; /* of the normalised config: a journal belongs to one config */
+    const char *read_key; /* the model's read_key (NULL: rows carry no read hash) */
     /* The values that name a regular file (a layer sample): their content
      * hash (gw_fnv1a64) when the config was read. Written to the journal and
      * the table ("# input KEY = VALUE fnv1a64 HEX"); a resumed sweep whose
@@ -62,15 +67,24 @@ typedef struct gw_sweep_model {
     /* Is name an option of this model? (unknown keys are refused at parse time) */
     int (*has_key)(const char *name);
     /* Run a case. Returns GW_OK, GW_EINVAL (bad value: message names it) or a
-     * run failure. */
+     * run failure. read_hash (may be NULL): the content hash (gw_fnv1a64) of
+     * the bytes of the file named by read_key that the case read (models with
+     * a read_key). */
     int (*run)(int nkeys, const char *const *names, const char *const *values, double *out,
-               gw_err *err);
+               unsigned long long *read_hash, gw_err *err);
     /* Validate a case without running it (may be NULL). */
     int (*check)(int nkeys, const char *const *names, const char *const *values, gw_err *err);
     /* The peak memory a case holds while it runs, bytes, estimated from its
      * values without running it (may be NULL: not estimated). GW_EINVAL for a
      * bad value (as check). */
     int (*memory)(int nkeys, const char *const *names, const char *const *values, double *bytes, gw_err *err);
+    /* The key whose value names the one file a case reads (the layer's
+     * "sample"), NULL when the cases read none. Each row then records the
+     * hash of the bytes its case read (run's read_hash), checked against the
+     * sweep's hash of that file before the row is kept: a case that read the
+     * file while it was changed, and finished after it was restored, passed
+     * the check of the file after the case. */
+    const char *read_key;
 } gw_sweep_model;
 
 
@@ -88,15 +102,33 @@ void gw_sweep_config_free(gw_sweep_config *cfg);
  * hold ngrid + nparams entries; they point into cfg. */
 int gw_sweep_case(const gw_sweep_config *cfg, long k, const char **names, const char **values);
 
-/* One journal row: "k,<grid values>,<numbers>,<checksum>\n" into buf. */
+/* One journal row into buf: "k,<grid values>,<numbers>,<case config hash>\n"
+ * then, when cfg->read_key is set, ",<read hash>" before the ",<checksum>\n"
+ * (hashes as 16 hex digits: gw_sweep_case_hash, and read_hash, the content
+ * hash of the file the case read). */
 int gw_sweep_format_row(const gw_sweep_config *cfg, long k, const double *out, int ncol,
-                        char *buf, size_t n);
+                        unsigned long long read_hash, char *buf, size_t n);
+
+/* The hash of case k's configuration (gw_case_config_hash over the model,
+ * the case's grid values and the [params]): the same for a case of any sweep
+ * that runs it with the same values, another one when [params] or the model
+ * differ. */
+unsigned long long gw_sweep_case_hash(const gw_sweep_config *cfg, long k);
+
+/* A finished row (gw_sweep_format_row) may be journaled: its case config hash
+ * is case k's, and the hash of the file it read is the one the sweep started
+ * with (cfg->inputs). GW_EINVAL "case K read sample 'S' with content fnv1a64
+ * A, but the sweep's ... is B ..." otherwise. */
+int gw_sweep_row_check(const gw_sweep_config *cfg, const char *row, gw_err *err);
 
 /* Read DIR/journal.csv: done[k] = 1 for every complete row with a valid checksum.
  * A torn last line (no newline or bad checksum) is cut off the file. A new
  * journal gets the config's hash and its input lines; an existing one of
  * another config is refused (GW_EINVAL), naming the input file whose content
- * changed when its "# input" line says so. */
+ * changed when its "# input" line says so. A row whose case config hash is
+ * not its case's (a row of a sweep with other [params]), or whose read hash is
+ * not the sweep's file's, is refused naming the journal, the line and both
+ * hashes; so is a journal of the format before rows carried these hashes. */
 int gw_sweep_journal_scan(const char *dir, const gw_sweep_config *cfg, char *done, long *ndone,
                           gw_err *err);
 

@@ -114,7 +114,7 @@ static int run_one(void *arg, long k, gw_err *err)
     const sweep_ctx *s = arg;
     const char *names[2 * GW_SWEEP_MAX_KEYS], *values[2 * GW_SWEEP_MAX_KEYS];
     gw_sweep_case(s->cfg, k, names, values);
-    int rc = s->m->run(s->cfg->ngrid + s->cfg->nparams, names, values, s->values + k * s->m->ncolumns, err);
+    int rc = s->m->run(s->cfg->ngrid + s->cfg->nparams, names, values, s->values + k * s->m->ncolumns, NULL, err);
     if (rc != GW_OK) {
         char tmp[sizeof err->msg];
         snprintf(tmp, sizeof tmp, "%s", err->msg);

@@ -20,7 +20,7 @@ static int has_key(const char *name)
 }
 
 static const char *const cols[] = {"a", "b"};
-static const gw_sweep_model model = {"chain", 2, cols, has_key, NULL, NULL, NULL};
+static const gw_sweep_model model = {"chain", 2, cols, has_key, NULL, NULL, NULL, NULL};
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
@@ -39,7 +39,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         double out[2] = {1.5, -2.25};
         for (long k = 0; k < cfg.ncases && k < 64; k++) {
             gw_sweep_case(&cfg, k, names, values);
-            gw_sweep_format_row(&cfg, k, out, 2, row, sizeof row);
+            gw_sweep_format_row(&cfg, k, out, 2, 0, row, sizeof row);
         }
         gw_sweep_config_free(&cfg);
     } else if (strlen(err.msg) == 0) {

@@ -932,7 +932,7 @@ fi
 # --- 35: a case that read a changed sample, restored before the case ended ----------------
 # jobs 1, a grid of two samples: case 0 runs on a35 (0.5 s of impact, about
 # 1.9 s), b35 is edited meanwhile; once case 0 is journaled case 1 reads the
-# edited b35, which is restored 0.5 s later, before case 1 ends (1.9 s).
+# edited b35, which is restored 0.2 s later (the read takes milliseconds), before case 1 ends (1.9 s).
 cp "$S300" "$tmp/a35.txt"; cp "$S300" "$tmp/b35.txt"; echo "# b" >>"$tmp/b35.txt"; cp "$tmp/b35.txt" "$tmp/b35.orig"
 hb35=$(fnv "$tmp/b35.txt")
 printf '[sweep]\nmodel = layer\n[grid]\nsample = %s, %s\n[params]\nt-max = 0.5\nfull = true\n' "$tmp/a35.txt" "$tmp/b35.txt" >"$tmp/w35.ini"
@@ -942,7 +942,7 @@ for _ in $(seq 1 6000); do [ -e "$tmp/w35/journal.csv" ] && break; sleep 0.02; d
 echo "# edited while case 0 runs" >>"$tmp/b35.txt"
 hc35=$(fnv "$tmp/b35.txt")
 wait_journaled "$tmp/w35/journal.csv" 30000 0.02
-sleep 0.5
+sleep 0.2
 cp "$tmp/b35.orig" "$tmp/b35.txt"
 wait $pid35; rc=$?
 n35=$(grep -vc '^#' "$tmp/w35/journal.csv" 2>/dev/null)

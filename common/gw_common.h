@@ -184,6 +184,9 @@ int gw_fnv1a64_file(const char *path, const char *what, unsigned long long *h, g
  * another model is told apart from the sweep's own (docs/formats.md). */
 unsigned long long gw_case_config_hash(const char *model, int n, const char *const *names,
                                        const char *const *values);
+/* A hash as results print it: exactly len = 16 lowercase hex digits at p into
+ * *h (1), or 0 (another length, another character). */
+int gw_fnv1a64_parse(const char *p, size_t len, unsigned long long *h);
 
 /* ---- output locations, checked before any work ----
  * gw_out_check: dir is an existing writable directory, or does not exist and its

@@ -398,6 +398,24 @@ unsigned long long gw_case_config_hash(const char *model, int n, const char *con
     return h;
 }
 
+int gw_fnv1a64_parse(const char *p, size_t len, unsigned long long *h)
+{
+    if (len != 16)
+        return 0;
+    unsigned long long v = 0;
+    for (size_t i = 0; i < 16; i++) {
+        const char c = p[i];
+        if (c >= '0' && c <= '9')
+            v = v << 4 | (unsigned long long)(c - '0');
+        else if (c >= 'a' && c <= 'f')
+            v = v << 4 | (unsigned long long)(c - 'a' + 10);
+        else
+            return 0;
+    }
+    *h = v;
+    return 1;
+}
+
 int gw_fnv1a64_stream(FILE *fp, unsigned long long *h)
 {
     unsigned char buf[65536];

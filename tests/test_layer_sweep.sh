@@ -120,18 +120,23 @@ PY
 # about a second together; on a loaded machine the poll below can wake after
 # the last one, so a run that finished before the kill is tried again (three
 # attempts): a kill that never lands mid-sweep still fails.
-for attempt in 1 2 3; do
-    rm -rf "$tmp/k"
-    "$GW" sweep "$tmp/s.ini" --out "$tmp/k" --quiet --jobs 1 & pid=$!
-    for _ in $(seq 1 300); do
-        n=$(grep -vc '^#' "$tmp/k/journal.csv" 2>/dev/null); n=${n:-0}
-        [ "$n" -ge 1 ] && break
-        sleep 0.02
+# kill_mid_sweep DIR: the sweep into DIR killed once a case is journaled; sets n1
+# (rows journaled) and attempt
+kill_mid_sweep() {
+    for attempt in 1 2 3; do
+        rm -rf "$1"
+        "$GW" sweep "$tmp/s.ini" --out "$1" --quiet --jobs 1 & pid=$!
+        for _ in $(seq 1 300); do
+            n=$(grep -vc '^#' "$1/journal.csv" 2>/dev/null); n=${n:-0}
+            [ "$n" -ge 1 ] && break
+            sleep 0.02
+        done
+        kill -9 $pid 2>/dev/null; wait $pid 2>/dev/null
+        n1=$(grep -vc '^#' "$1/journal.csv" 2>/dev/null)
+        [ ! -e "$1/results.csv" ] && [ "${n1:-0}" -ge 1 ] && [ "${n1:-0}" -lt 6 ] && break
     done
-    kill -9 $pid 2>/dev/null; wait $pid 2>/dev/null
-    n1=$(grep -vc '^#' "$tmp/k/journal.csv" 2>/dev/null)
-    [ ! -e "$tmp/k/results.csv" ] && [ "${n1:-0}" -ge 1 ] && [ "${n1:-0}" -lt 6 ] && break
-done
+}
+kill_mid_sweep "$tmp/k"
 if [ ! -e "$tmp/k/results.csv" ] && [ "${n1:-0}" -ge 1 ] && [ "${n1:-0}" -lt 6 ]; then
     ok "kill -9 mid-sweep: $n1 of 6 cases journaled, no table (attempt $attempt)"
 else
@@ -153,18 +158,7 @@ else
     # a sweep killed after its first journaled case (threads), resumed under
     # MPI: the rows' hashes (case config, sample read) are checked by rank 0
     # for the rows the other rank sends, and the table is the same
-    for attempt in 1 2 3; do
-        rm -rf "$tmp/km"
-        "$GW" sweep "$tmp/s.ini" --out "$tmp/km" --quiet --jobs 1 & pid=$!
-        for _ in $(seq 1 300); do
-            n=$(grep -vc '^#' "$tmp/km/journal.csv" 2>/dev/null); n=${n:-0}
-            [ "$n" -ge 1 ] && break
-            sleep 0.02
-        done
-        kill -9 $pid 2>/dev/null; wait $pid 2>/dev/null
-        n1=$(grep -vc '^#' "$tmp/km/journal.csv" 2>/dev/null)
-        [ ! -e "$tmp/km/results.csv" ] && [ "${n1:-0}" -ge 1 ] && [ "${n1:-0}" -lt 6 ] && break
-    done
+    kill_mid_sweep "$tmp/km"
     OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 mpirun --allow-run-as-root --oversubscribe -n 2 \
         "$GW" sweep "$tmp/s.ini" --out "$tmp/km" --quiet >"$tmp/mpi.log" 2>&1
     if [ "${n1:-0}" -ge 1 ] && [ "${n1:-0}" -lt 6 ] && cmp -s "$tmp/ref/results.csv" "$tmp/km/results.csv"; then

@@ -89,11 +89,6 @@ static int rk4_create(gw_solver *s, double t0, const double *y0, gw_err *err)
 {
     if (!(s->p.dt > 0))
         return gw_err_set(err, GW_EINVAL, "rk4: the fixed step dt must be set (> 0)");
-    /* dt_max is the largest step for every backend: a fixed step above it runs at
-     * dt_max (a chain's plan caps its step at a quarter of the shortest contact
-     * so that no step holds a whole contact; the step ran at dt regardless) */
-    if (s->p.dt_max > 0 && s->p.dt_max < s->p.dt)
-        s->p.dt = s->p.dt_max;
     if (s->p.method != GW_METHOD_DEFAULT)
         return gw_err_set(err, GW_EUNSUPPORTED, "rk4: method '%s' not offered",
                           gw_solver_method_name(s->p.method));

@@ -141,6 +141,11 @@ int gw_solver_create(const gw_solver_type *type, const gw_system *sys,
     s->type = type;
     s->sys = *sys;
     s->p = *p;
+    /* dt_max is the largest step for every backend: a fixed step above it runs at
+     * dt_max (a chain's plan caps its step at a quarter of the shortest contact
+     * so that no step holds a whole contact; rk4 and verlet ran at dt regardless) */
+    if ((type == gw_solver_rk4 || type == gw_solver_verlet) && p->dt_max > 0 && p->dt_max < p->dt)
+        s->p.dt = p->dt_max;
     rc = type->create(s, t0, y0, err);
     if (rc != GW_OK) {
         free(s);

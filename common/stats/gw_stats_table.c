@@ -226,23 +226,6 @@ static int nonnegative(const char *col)
     return 0;
 }
 
-/* 16 lowercase hex digits, the whole cell. */
-static int cell_hex16(const char *c, unsigned long long *h)
-{
-    unsigned long long v = 0;
-    int i = 0;
-    for (; c[i] && i < 17; i++) {
-        if (c[i] >= '0' && c[i] <= '9')
-            v = v << 4 | (unsigned long long)(c[i] - '0');
-        else if (c[i] >= 'a' && c[i] <= 'f')
-            v = v << 4 | (unsigned long long)(c[i] - 'a' + 10);
-        else
-            return 0;
-    }
-    *h = v;
-    return i == 16;
-}
-
 /* The rows' hashes (the cells after the model's columns): each row's case
  * config hash is the one its grid values, the model and the "# param" lines
  * give, and the hash of the file it read is the "# input" line's for that
@@ -296,7 +279,7 @@ static int add_input(gw_stats_table *t, const char *text, gw_err *err)
     const size_t len = strlen(text);
     unsigned long long h;
     if (!eq || len < 26 || (size_t)(eq - text) + 3 + 25 > len || strncmp(text + len - 25, " fnv1a64 ", 9) != 0 ||
-        !cell_hex16(text + len - 16, &h))
+        !gw_fnv1a64_parse(text + len - 16, 16, &h))
         return GW_OK; /* another comment (a table made by hand): it names no file's hash */
     char **k = realloc(t->input_key, (size_t)(t->ninputs + 1) * sizeof *k);
     if (k)
@@ -361,7 +344,7 @@ static int parse_row(gw_stats_table *t, char *line, long ln, int ncells, int cb,
     }
     for (int j = 0; j < t->nhash; j++) { /* compared in check_hashes */
         const char *c = cells[1 + t->ngrid + t->ncols + j];
-        if (!cell_hex16(c, &t->row_hash[r * t->nhash + j]))
+        if (!gw_fnv1a64_parse(c, strlen(c), &t->row_hash[r * t->nhash + j]))
             return gw_err_set(err, GW_EFORMAT, "%s:%ld: column %s: '%s' is not a hash a sweep writes (16 hex digits)",
                               t->path, ln, t->hash_name[j], c);
     }

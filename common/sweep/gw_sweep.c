@@ -706,25 +706,6 @@ static const char *row_grid_fault(const gw_sweep_config *cfg, long k, const char
     return NULL;
 }
 
-/* 16 lowercase hex digits at p (exactly len 16): into *h. */
-static int hex16(const char *p, size_t len, unsigned long long *h)
-{
-    if (len != 16)
-        return 0;
-    unsigned long long v = 0;
-    for (size_t i = 0; i < 16; i++) {
-        const char c = p[i];
-        if (c >= '0' && c <= '9')
-            v = v << 4 | (unsigned long long)(c - '0');
-        else if (c >= 'a' && c <= 'f')
-            v = v << 4 | (unsigned long long)(c - 'a' + 10);
-        else
-            return 0;
-    }
-    *h = v;
-    return 1;
-}
-
 /* The hashes that end a row (s, len: without ",checksum\n"): the case config
  * hash, then the read hash when cfg->read_key is set. 0 when they are not
  * there (a row of the format before them, or garbled). */
@@ -735,7 +716,7 @@ static int row_hashes(const gw_sweep_config *cfg, const char *s, size_t len, uns
     for (int f = cfg->read_key ? 2 : 1; f > 0; f--) {
         if (len < 17 || s[len - 17] != ',')
             return 0;
-        if (!hex16(s + len - 16, 16, f == 2 ? rh : ch))
+        if (!gw_fnv1a64_parse(s + len - 16, 16, f == 2 ? rh : ch))
             return 0;
         len -= 17;
     }

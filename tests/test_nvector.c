@@ -15,23 +15,26 @@
  * - weighted RMS and L2 norms, dot products, max norms taken while operations are
  *   pending (the fused path) and compared as doubles, bit for bit;
  * - reads and writes through N_VGetArrayPointer while operations are pending;
- * - fused linear combinations and constants; scaled additions Z_j = a_j x + Y_j
+ * - linear combinations of 1 to 20 terms (queued up to 16, z among the terms
+ *   or not) and constants; scaled additions Z_j = a_j x + Y_j
  *   in place and not (CVODE's correction of its Nordsieck array); error weights
  *   queued (gw_sun_nv_ewt) against the direct formula, with and without scales;
  * - a vector destroyed while a sum into it is pending (run under the sanitizer
  *   build too: a queue that outlived the vector would write freed memory).
  * Lengths 1, 511, 512, 513, 5000 and 9000 (blocks are 512 elements; scaled
  * additions are queued from 8192).
- * Then CVODE itself (Adams, fixed-point corrector, as granwave runs it) on 1000
- * and 10000 uncoupled oscillators, once on SUNDIALS' vectors and once on the tuned ones:
- * the same steps and the same final state, bit for bit (the error weights
- * through CVodeWFtolerances, queued on the tuned vectors).
+ * Then CVODE itself (Adams, fixed-point corrector, as granwave runs it) and
+ * ARKode's ERK (Cash-Karp, as granwave runs it) on 1000 and 10000 uncoupled
+ * oscillators, once on SUNDIALS' vectors and once on the tuned ones: the same
+ * steps and the same final state, bit for bit (the error weights through
+ * CVodeWFtolerances / ERKStepWFtolerances, queued on the tuned vectors).
  */
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <string.h>
 
+#include <arkode/arkode_erkstep.h>
 #include <cvode/cvode.h>
 #include <nvector/nvector_serial.h>
 #include <sunnonlinsol/sunnonlinsol_fixedpoint.h>
@@ -113,17 +116,20 @@ static int step(set *s, set *t, long n)
         double *ps = N_VGetArrayPointer(s->v[x]), *pt = N_VGetArrayPointer(t->v[x]);
         ok &= same_bits(ps[i], pt[i]);
         ps[i] = pt[i] = 0.25 * ps[i] + 1.0;
-    } else if (op == 8) {
-        int z = pick(NV - 1);
-        double c[3] = {coef(), coef(), coef()};
-        N_Vector xs[3] = {s->v[pick(NV)], s->v[pick(NV)], s->v[NV - 1]};
-        N_Vector xt[3];
-        for (int k = 0; k < 3; k++)
-            for (int m = 0; m < NV; m++)
-                if (xs[k] == s->v[m])
-                    xt[k] = t->v[m];
-        N_VLinearCombination(3, c, xs, s->v[z]);
-        N_VLinearCombination(3, c, xt, t->v[z]);
+    } else if (op == 8) { /* 1 to 20 terms (queued up to 16), z among them or not */
+        enum { T = 20 };
+        int z = pick(NV - 1), m = pick(4) ? 1 + pick(8) : 1 + pick(T);
+        double c[T];
+        int xi[T];
+        N_Vector xs[T], xt[T];
+        for (int k = 0; k < m; k++) {
+            c[k] = k == 0 && pick(4) == 0 ? 1.0 : coef();
+            xi[k] = pick(5) == 0 ? z : pick(NV);
+            xs[k] = s->v[xi[k]];
+            xt[k] = t->v[xi[k]];
+        }
+        N_VLinearCombination(m, c, xs, s->v[z]);
+        N_VLinearCombination(m, c, xt, t->v[z]);
     } else if (op == 9) {
         int z = pick(NV - 1);
         double c = coef();
@@ -247,19 +253,36 @@ static long adams(N_Vector y, SUNContext ctx)
     return steps;
 }
 
-static void cvode_check(long n, SUNContext ctx)
+/* ARKode's ERK (Cash-Karp, granwave's table) to t = 10 on y; returns the steps
+ * taken (-1 on failure). Each step ends with two queued linear combinations
+ * and the error's norm, run as one pass on the tuned vectors. */
+static long erk(N_Vector y, SUNContext ctx)
+{
+    void *mem = ERKStepCreate(osc, 0.0, y, ctx);
+    long steps = -1;
+    realtype t = 0.0;
+    if (mem && ERKStepWFtolerances(mem, ewt) == ARK_SUCCESS &&
+        ERKStepSetTableName(mem, "ARKODE_CASH_KARP_6_4_5") == ARK_SUCCESS &&
+        ERKStepSetMaxNumSteps(mem, 100000) == ARK_SUCCESS &&
+        ERKStepEvolve(mem, 10.0, y, &t, ARK_NORMAL) == ARK_SUCCESS)
+        ERKStepGetNumSteps(mem, &steps);
+    ERKStepFree(&mem);
+    return steps;
+}
+
+static void solver_check(long n, SUNContext ctx, long (*solve)(N_Vector, SUNContext), const char *name)
 {
     N_Vector a = N_VNew_Serial(n, ctx), b = gw_sun_vector(n, ctx);
     N_VEnableFusedOps_Serial(a, SUNTRUE);
     double *ad = N_VGetArrayPointer(a), *bd = N_VGetArrayPointer(b);
     for (long i = 0; i < n; i++)
         ad[i] = bd[i] = i % 2 ? 0.0 : 1.0;
-    long sa = adams(a, ctx);
-    long sb = adams(b, ctx);
+    long sa = solve(a, ctx);
+    long sb = solve(b, ctx);
     char what[120];
-    snprintf(what, sizeof what, "cvode adams, n = %ld: the same steps on both vectors (more than 100)", n);
+    snprintf(what, sizeof what, "%s, n = %ld: the same steps on both vectors (more than 100)", name, n);
     gw_test_true(sa > 100 && sa == sb, what);
-    snprintf(what, sizeof what, "cvode adams, n = %ld: the same final state, bit for bit", n);
+    snprintf(what, sizeof what, "%s, n = %ld: the same final state, bit for bit", name, n);
     gw_test_true(memcmp(N_VGetArrayPointer(a), N_VGetArrayPointer(b), (size_t)n * sizeof(double)) == 0, what);
     N_VDestroy(a);
     N_VDestroy(b);
@@ -273,8 +296,10 @@ int main(void)
     const long lens[] = {1, 511, 512, 513, 5000, 9000};
     for (size_t i = 0; i < sizeof lens / sizeof lens[0]; i++)
         run(lens[i], lens[i] > 5000 ? 1500 : 4000, ctx);
-    cvode_check(2000, ctx);
-    cvode_check(20000, ctx);
+    solver_check(2000, ctx, adams, "cvode adams");
+    solver_check(20000, ctx, adams, "cvode adams");
+    solver_check(2000, ctx, erk, "arkode erk");
+    solver_check(20000, ctx, erk, "arkode erk");
     SUNContext_Free(&ctx);
     return gw_test_summary("test_nvector");
 }

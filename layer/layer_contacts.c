@@ -7,7 +7,8 @@
  * listed-out pair can touch before some particle has moved s/2, which is the
  * rebuild root of layer_model.c. R_p = 2 R_a R_b / (R_a + R_b) for two discs,
  * R_a against a wall. A rebuild changes the state dimension (one F_t per listed
- * contact); F_t of pairs listed before and after is carried over. Discs of one
+ * contact); F_t of pairs listed before and after is carried over, and so is
+ * what the DEM step keeps of them (un_last, tscr; layer_dem.c). Discs of one
  * rigid clump are never listed against each other (layer_clumps.c).
  * Units: SI.
  */
@@ -138,8 +139,15 @@ int layer_contacts_build(gw_layer *L, gw_err *err)
         ny[6 * nb + k] = 0;
         const layer_contact *old = L->nc > 0 ? bsearch(&c[k], L->c, (size_t)L->nc, sizeof *c,
                                                        contact_cmp) : NULL;
-        if (old)
+        if (old) {
             ny[6 * nb + k] = L->y[6 * nb + (old - L->c)];
+            /* DEM mode: what the last rhs found of the contact (its overlap,
+             * K_t, 1/K_t and region) is the next step's start: kept, not
+             * recomputed (a recomputed 1/K_t differs in the last bit from the
+             * drift's) */
+            un_last[k] = L->un_last[old - L->c];
+            tscr[k] = L->tscr[old - L->c];
+        }
     }
     memcpy(ny + 6 * nb + nc, L->y + 6 * nb + L->nc, (size_t)L->ntail * sizeof *ny);
     free(L->y), free(L->scale), free(L->c), free(L->roots), free(L->drift), free(L->un_last);

@@ -266,6 +266,25 @@ int layer_dem_project(double t, double h, double *y, double *ydot, void *P)
     return 0;
 }
 
+int layer_dem_carried(gw_layer *L, const double *y, double *yd)
+{
+    const int nb = L->nb;
+    const size_t nb6 = 6 * (size_t)nb;
+    L->dem_carry = 0;
+    memcpy(yd, L->dem_f, nb6 * sizeof *yd);
+    memset(yd + nb6, 0, (size_t)L->nc * sizeof *yd);
+    memcpy(yd + nb6 + L->nc, L->dem_f + nb6, (size_t)L->ntail * sizeof *yd);
+    if (!L->off) { /* the geometry the snapshot reads (as drift_discs writes it) */
+        for (int k = 0; k < L->nc; k++) {
+            double *g = L->geo + 4 * k, nn[2];
+            const double ue = disc_geometry(&L->c[k], y, L->p.width, nn);
+            g[0] = ue, g[1] = ue > 0 ? sqrt(ue) : 0, g[2] = nn[0], g[3] = nn[1];
+        }
+        L->geo_pos = 1;
+    }
+    return 0;
+}
+
 /* The rhs of a disc-only layer in DEM mode (layer_model.c's, B.1-B.4): Hertz
  * normal force, the tangential force F_t of the state (layer_dem_drift's, used
  * as the Coulomb cap allows), gravity; after a drift the forces are
@@ -276,6 +295,8 @@ int layer_dem_rhs(double t, const double *y, double *yd, void *P)
 {
     (void)t;
     gw_layer *L = P;
+    if (L->dem_carry) /* the first call after a list rebuild */
+        return layer_dem_carried(L, y, yd);
     const int n = L->nb;
     const double g = L->p.gravity, tp = L->tan_phi, alpha = L->p.damping, width = L->p.width;
     double pd = 0;

@@ -127,6 +127,16 @@ struct gw_layer {
     double *facc;       /* [3 nb], DEM mode, discs only: contact forces and torques
                            per body at the step's end (layer_dem.c) */
     double *dem_rate;   /* [ntail], DEM mode, discs only: the ledger tail's rates */
+    /* A list rebuild in DEM mode re-creates the solver, whose first rhs call
+     * would evaluate the velocity-dependent rates (the normal damping, its
+     * ledger) at the step's final velocities, where the running verlet step
+     * has them at its predicted ones: the trajectory then depended on when
+     * the skin made the list rebuild. The rebuild keeps the old solver's rates
+     * instead (gw_solver_rates): the bodies' 6 nb, then the tail's ntail (the
+     * contacts' rates are 0 in DEM mode), and the new solver's first rhs call
+     * hands them back when dem_carry is set (layer_dem_carried). */
+    double *dem_f;      /* [6 nb + ntail], DEM mode */
+    int dem_carry;
     int geo_valid;      /* facc and dem_rate hold the state the next rhs sees */
     int geo_pos;        /* geo holds the positions of the last rhs evaluation
                            (layer_dem_rhs; 0 after a list rebuild) */
@@ -366,6 +376,9 @@ void layer_ledger_sum(const gw_layer *L, gw_layer_energy *global, gw_layer_energ
 int layer_dem_drift(double t, double h, const double *ph, double *y, void *P);
 int layer_dem_project(double t, double h, double *y, double *ydot, void *P);
 int layer_dem_rhs(double t, const double *y, double *yd, void *P);
+/* The rhs call right after a DEM list rebuild (L->dem_carry): yd from L->dem_f
+ * (contacts 0), the disc geometry of y into L->geo; clears dem_carry. */
+int layer_dem_carried(gw_layer *L, const double *y, double *yd);
 
 /* Overlap (*un) and tangential relative velocity of contact c in state y, the
  * velocity also when the contact is open there (layer_model.c). */

@@ -239,6 +239,7 @@ void gw_layer_free(gw_layer *L)
     free(L->geo);
     free(L->facc);
     free(L->dem_rate);
+    free(L->dem_f);
     free(L->snap);
     free(L->snap_xy);
     free(L->snap_breg);
@@ -391,6 +392,8 @@ static inline int rhs_region(const gw_layer *L, const layer_contact *c, const do
 static int layer_rhs(double t, const double *y, double *yd, void *P)
 {
     (void)t;
+    if (((const gw_layer *)P)->dem_carry) /* DEM: the first call after a list rebuild */
+        return layer_dem_carried(P, y, yd);
     const gw_layer *L = P;
     const int n = L->nb; /* the state is per body */
     const double g = L->p.gravity, tp = L->tan_phi, alpha = L->p.damping, width = L->p.width;

@@ -6,7 +6,11 @@
  *   (gw_solver_reset), because the Hertz force is only C^1 there.
  * - When a particle has moved half the skin since the list was built (root
  *   (s/2)^2 - |dx|^2 = 0) the contact list is rebuilt: the state dimension
- *   changes, so the solver is freed and re-created with the new gw_system.
+ *   changes, so the solver is freed and re-created with the new gw_system. In
+ *   DEM mode the new solver starts from the old one's rates (gw_solver_rates,
+ *   L->dem_f) and the contacts keep what the step knew of them, so that a
+ *   rebuild changes nothing of the trajectory: the same run at any skin is the
+ *   same to the last bit.
  * - At every stop the tangential state is projected: F_t = 0 on open contacts and
  *   on contacts that just closed; a state drifted far outside the Coulomb cap is
  *   brought back to the sliding margin. The ledger books the capped force, so
@@ -91,12 +95,14 @@ int gw_layer_start(gw_layer *L, const gw_solver_type *type, const gw_solver_para
     L->dem = type == gw_solver_verlet;
     if (L->dem) { /* explicit DEM: no contact events (gw_layer_params.no_events) */
         L->p.no_events = 1;
-        free(L->ymid), free(L->dem_book), free(L->facc), free(L->dem_rate);
+        free(L->ymid), free(L->dem_book), free(L->facc), free(L->dem_rate), free(L->dem_f);
+        L->dem_carry = 0;
         L->ymid = malloc(6 * (size_t)L->nb * sizeof *L->ymid);
+        L->dem_f = malloc((6 * (size_t)L->nb + (size_t)L->ntail) * sizeof *L->dem_f);
         L->facc = malloc(3 * (size_t)L->nb * sizeof *L->facc);
         L->dem_book = calloc((size_t)L->ntail + 1, sizeof *L->dem_book);
         L->dem_rate = calloc((size_t)L->ntail + 1, sizeof *L->dem_rate);
-        if (!L->ymid || !L->facc || !L->dem_book || !L->dem_rate)
+        if (!L->ymid || !L->facc || !L->dem_book || !L->dem_rate || !L->dem_f)
             return gw_err_set(err, GW_ENOMEM, "layer: out of memory for the DEM step");
     }
     /* The contact network couples particles far apart in the state vector (no
@@ -191,8 +197,23 @@ int gw_layer_advance(gw_layer *L, double tout, gw_err *err)
                               "listed contacts): %s", gw_solver_type_name(L->type), t, L->n, L->nc,
                               gw_solver_error(L->solver));
         }
-        if (rc == GW_ROOT && ((rc = layer_contacts_build(L, err)) != GW_OK || (rc = make_solver(L, err)) != GW_OK))
-            return rc; /* a list rebuild or a Zeno guard: a new solver */
+        if (rc != GW_ROOT)
+            continue;
+        /* a list rebuild or a Zeno guard: a new solver; in DEM mode it starts
+         * from the rates the old one would have stepped on with (dem_f) */
+        const double *f = L->dem ? gw_solver_rates(L->solver) : NULL;
+        if (f) {
+            const size_t nb6 = 6 * (size_t)L->nb;
+            memcpy(L->dem_f, f, nb6 * sizeof *f);
+            memcpy(L->dem_f + nb6, f + nb6 + L->nc, (size_t)L->ntail * sizeof *f);
+        }
+        if ((rc = layer_contacts_build(L, err)) != GW_OK)
+            return rc;
+        L->dem_carry = f != NULL;
+        rc = make_solver(L, err);
+        L->dem_carry = 0;
+        if (rc != GW_OK)
+            return rc;
     }
     return GW_OK;
 }

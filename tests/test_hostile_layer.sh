@@ -181,6 +181,13 @@
 #    was restored, passed the check of the file after the case (exit 0, its
 #    row in the table): its row's sample hash is now compared with the
 #    sweep's, exit 2 naming the case and both hashes, the rows before kept.
+# 40 a verlet pluviation depended on --skin, a parameter of the contact list
+#    only: a list rebuild re-created the solver, whose first rhs evaluated the
+#    Hunt-Crossley damping at the step's final velocities where the running
+#    step has its predicted ones, and recomputed 1/K_t, which the step keeps
+#    from its own division (last bit); layer-make --n 30 ended at E_k 16.7,
+#    46.6, 76.3, 105 J at skins 0.1, 0.01, 1, 1e6 m. The same run at any skin
+#    is now the same sample to the last bit (discs, frictionless discs, clumps).
 set -u
 GW=$1
 SRC=${2:-.}
@@ -956,6 +963,28 @@ if runs "  the sweep resumes" sweep "$tmp/w35.ini" --out "$tmp/w35" --quiet; the
     [ "$(grep -c "^1,.*,$hb35\$" "$tmp/w35/results.csv")" -eq 1 ] && ok "  case 1 rerun on the restored sample" ||
         ko "  $(grep '^1,' "$tmp/w35/results.csv" | tail -c 40)"
 fi
+
+# --- 40: a verlet pluviation at four skins ------------------------------------------------
+# the sample without the lines that name the skin (the command and settings)
+body40() { grep -v '^# \(command\|settings\):' "$1"; }
+for c40 in "discs:--n 30" "frictionless discs:--n 30 --friction 0" "clumps:--n 15 --clumps"; do
+    what40=${c40%%:*}; opts40=${c40#*:}
+    same40=1; runs40=0
+    for s40 in 0.01 0.1 1 1e6; do
+        # shellcheck disable=SC2086
+        if timeout -s KILL 120 "$GW" layer-make $opts40 --solver verlet --t-max 0.4 --skin "$s40" \
+            --out "$tmp/p40_$s40.txt" >"$tmp/stdout" 2>"$tmp/stderr" </dev/null &&
+            ! grep -qE 'Sanitizer|runtime error' "$tmp/stderr"; then
+            runs40=$((runs40 + 1))
+            [ "$s40" = 0.01 ] || cmp -s <(body40 "$tmp/p40_0.01.txt") <(body40 "$tmp/p40_$s40.txt") || same40=0
+        fi
+    done
+    if [ $runs40 -eq 4 ] && [ $same40 -eq 1 ] && [ "$(body40 "$tmp/p40_0.01.txt" | wc -l)" -gt 10 ]; then
+        ok "verlet pluviation of $what40 at skins 0.01, 0.1, 1, 1e6 m: the same sample to the last bit"
+    else
+        ko "verlet pluviation of $what40: $runs40 of 4 skins ran, samples $([ $same40 -eq 1 ] && echo equal || echo differ) ($(head -c 200 "$tmp/stderr"))"
+    fi
+done
 
 echo "test_hostile_layer: $passes passed, $fails failed"
 [ $fails -eq 0 ]

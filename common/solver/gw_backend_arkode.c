@@ -272,5 +272,5 @@ static void ark_stats(const gw_solver *s, gw_solver_stats *st)
 }
 
 static const gw_solver_type arkode_type = {"arkode", ark_create, ark_advance, ark_reset,
-                                           ark_stats, ark_destroy};
+                                           ark_stats, ark_destroy, NULL};
 const gw_solver_type *const gw_solver_arkode = &arkode_type;

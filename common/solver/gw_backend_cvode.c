@@ -228,5 +228,5 @@ static void cv_stats(const gw_solver *s, gw_solver_stats *st)
 }
 
 static const gw_solver_type cvode_type = {"cvode", cv_create, cv_advance, cv_reset,
-                                          cv_stats, cv_destroy};
+                                          cv_stats, cv_destroy, NULL};
 const gw_solver_type *const gw_solver_cvode = &cvode_type;

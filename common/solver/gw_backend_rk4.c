@@ -327,5 +327,5 @@ static void rk4_stats(const gw_solver *s, gw_solver_stats *st)
 }
 
 static const gw_solver_type rk4_type = {"rk4", rk4_create, rk4_advance, rk4_reset,
-                                        rk4_stats, rk4_destroy};
+                                        rk4_stats, rk4_destroy, NULL};
 const gw_solver_type *const gw_solver_rk4 = &rk4_type;

@@ -324,6 +324,12 @@ static void verlet_stats(const gw_solver *s, gw_solver_stats *st)
     st->root_evals = v->root_evals;
 }
 
+static const double *verlet_rates(const gw_solver *s)
+{
+    const verlet_impl *v = s->impl;
+    return v->f;
+}
+
 static const gw_solver_type verlet_type = {"verlet", verlet_create, verlet_advance, verlet_reset,
-                                           verlet_stats, verlet_destroy};
+                                           verlet_stats, verlet_destroy, verlet_rates};
 const gw_solver_type *const gw_solver_verlet = &verlet_type;

@@ -167,6 +167,11 @@ int gw_solver_reset(gw_solver *s, double t, const double *y)
     return s->type->reset(s, t, y);
 }
 
+const double *gw_solver_rates(const gw_solver *s)
+{
+    return s && s->type->rates ? s->type->rates(s) : NULL;
+}
+
 static int drive_failed(gw_solver *s, const gw_drive *d, int rc, gw_err *err)
 {
     return d->what ? gw_err_set(err, rc, "%s: %s", d->what, gw_solver_error(s))

@@ -168,6 +168,15 @@ int gw_solver_advance(gw_solver *s, double tout, double *t, double *y,
 /* Restart the integration at (t, y), discarding the step history. */
 int gw_solver_reset(gw_solver *s, double t, const double *y);
 
+/* The rates (sys.dim entries) the next step starts from, when the backend
+ * carries them from step to step, else NULL. verlet: f of its last rhs
+ * evaluation, at the end of the last step with the predicted velocities (or at
+ * the start), which a new solver created at the same (t, y) would not
+ * reproduce when rates depend on velocities: a model that re-creates the
+ * solver mid-run (a new dimension) and hands these back from its first rhs
+ * call keeps the trajectory the run without the re-creation takes. */
+const double *gw_solver_rates(const gw_solver *s);
+
 /* ------------------------------------------------------------------ driver --
  * The loop every model runs around gw_solver_advance: integrate to output
  * times, stop at roots and let the model act there, restart, and end when the

@@ -15,6 +15,9 @@ struct gw_solver_type {
     int (*reset)(gw_solver *s, double t, const double *y);
     void (*stats)(const gw_solver *s, gw_solver_stats *st);
     void (*destroy)(gw_solver *s);
+    /* The rates the next step starts from (gw_solver_rates), or NULL: a
+     * backend that keeps none between steps leaves it unset. */
+    const double *(*rates)(const gw_solver *s);
 };
 
 struct gw_solver {

@@ -98,6 +98,21 @@ refused "--wisdom naming a file that is not wisdom" 'not FFTW wisdom' dispersion
 "$GW" dispersion --n 16 --t-samples 64 --wisdom "$tmp/w.wis" >/dev/null 2>&1 && head -c 7 "$tmp/w.wis" | grep -q '(fftw-3' &&
     "$GW" dispersion --n 16 --t-samples 64 --wisdom "$tmp/w.wis" >/dev/null 2>&1 &&
     ok "--wisdom writes wisdom and reads it back" || ko "--wisdom round trip"
+# the settings name the wisdom a run planned over: FNV-1a 64 of the bytes read
+# (computed here independently), null when there was none
+wis_hash=$(/usr/bin/python3 -c "
+import sys
+h = 14695981039346656037
+for b in open(sys.argv[1], 'rb').read():
+    h = ((h ^ b) * 1099511628211) % (1 << 64)
+print('%016x' % h)" "$tmp/w.wis")
+got=$("$GW" dispersion --n 16 --t-samples 64 --wisdom "$tmp/w.wis" --json 2>/dev/null |
+    /usr/bin/python3 -c "import json,sys; print(json.load(sys.stdin)['settings']['spectrum']['fftw_wisdom_fnv1a64'])")
+none=$("$GW" dispersion --n 16 --t-samples 64 --json 2>/dev/null |
+    /usr/bin/python3 -c "import json,sys; print(json.load(sys.stdin)['settings']['spectrum']['fftw_wisdom_fnv1a64'])")
+[ -n "$wis_hash" ] && [ "$got" = "$wis_hash" ] && [ "$none" = "None" ] &&
+    ok "the settings record the wisdom read ($got) and null without --wisdom" ||
+    ko "settings' fftw_wisdom_fnv1a64: '$got' for wisdom hashing to '$wis_hash', '$none' without"
 refused "layer-make --out naming a file that is not a sample" 'not a granwave sample' layer-make --n 10 --width-rm 6 --t-max 0.05 --out "$tmp/notes.txt"
 [ "$(cat "$tmp/notes.txt")" = "my notes" ] && ok "that file is unchanged" || ko "layer-make overwrote a file that is not a sample"
 "$GW" layer-make --n 10 --width-rm 6 --t-max 0.05 --out "$tmp/s1.txt" >/dev/null 2>&1 &&

@@ -34,6 +34,11 @@ typedef struct disp_cli {
     double f0, dt_out, amp, min_bins, rtol, atol, vimp;
     int measure, json;
     const char *ends, *solver, *method, *out, *wisdom;
+    /* the FFTW wisdom imported before planning, as FNV-1a 64 of its bytes (set
+     * when wisdom_read): plans made over it can differ from fresh ones in the
+     * last bit, so the settings say which wisdom a run planned over */
+    int wisdom_read;
+    unsigned long long wisdom_fnv1a64;
 } disp_cli;
 
 enum { DISP_NOPTS = 20 };
@@ -109,6 +114,17 @@ static int disp_solver(const disp_cli *c, const gw_solver_type **type, gw_solver
     return gw_solver_tolerances_check(sp->rtol, sp->atol, "dispersion --rtol", "dispersion --atol", err);
 }
 
+/* the wisdom a run planned over: its FNV-1a 64 (hex), or null when none was read */
+static void disp_wisdom_json(cJSON *o, const disp_cli *c)
+{
+    char hx[17];
+    snprintf(hx, sizeof hx, "%016llx", c->wisdom_fnv1a64);
+    if (c->wisdom_read)
+        cJSON_AddStringToObject(o, "fftw_wisdom_fnv1a64", hx);
+    else
+        cJSON_AddNullToObject(o, "fftw_wisdom_fnv1a64");
+}
+
 static cJSON *disp_settings_json(const disp_cli *c, const gw_chain_disp_params *p,
                                  const gw_solver_params *sp)
 {
@@ -138,6 +154,7 @@ static cJSON *disp_settings_json(const disp_cli *c, const gw_chain_disp_params *
     cJSON_AddNumberToObject(f, "dt_out", gw_chain_disp_dt_sample(p));
     cJSON_AddStringToObject(f, "window", "hann (time)");
     cJSON_AddStringToObject(f, "fftw_planner", p->fftw_measure ? "measure" : "estimate");
+    disp_wisdom_json(f, c);
     cJSON_AddNumberToObject(f, "min_bins", p->min_bins);
     return o;
 }
@@ -332,6 +349,7 @@ static int disp_column(const disp_cli *c, const gw_opt *opts, int argc, char **a
         cJSON_AddNumberToObject(js, "samples", sp.samples);
         cJSON_AddNumberToObject(js, "n_maxima", r.n_maxima);
         cJSON_AddStringToObject(js, "fftw_planner", c->measure ? "measure" : "estimate");
+        disp_wisdom_json(js, c);
         char *hdr = gw_cli_provenance("dispersion", argc, argv, js);
         if (c->out && (gw_mkdir_p(c->out, &err) != GW_OK ||
                        gw_cli_out_remove(c->out, (const char *const[]){"dispersion.json", "dispersion_ridge.csv",
@@ -359,8 +377,9 @@ static int disp_column(const disp_cli *c, const gw_opt *opts, int argc, char **a
  * /dev/zero is refused, never read forever). An absent file is planned afresh
  * and created at the end; an existing file must be FFTW wisdom, since it is
  * overwritten at the end of the run. */
-static int disp_import_wisdom(const char *path, gw_err *err)
+static int disp_import_wisdom(disp_cli *c, gw_err *err)
 {
+    const char *path = c->wisdom;
     struct stat st;
     if (stat(path, &st) != 0 && errno == ENOENT)
         return gw_out_file_check(path, "dispersion --wisdom", err);
@@ -368,8 +387,12 @@ static int disp_import_wisdom(const char *path, gw_err *err)
     int rc = gw_input_read(path, "dispersion --wisdom", (size_t)64 << 20, &text, NULL, err);
     if (rc != GW_OK)
         return GW_EINVAL;
-    if (strncmp(text, "(fftw-3", 7) != 0 || !fftw_import_wisdom_from_string(text))
+    if (strncmp(text, "(fftw-3", 7) != 0 || !fftw_import_wisdom_from_string(text)) {
         rc = gw_err_set(err, GW_EINVAL, "dispersion --wisdom: '%s' is not FFTW wisdom; refusing to overwrite it", path);
+    } else {
+        c->wisdom_read = 1;
+        c->wisdom_fnv1a64 = gw_fnv1a64(GW_FNV1A64_INIT, text, strlen(text));
+    }
     free(text);
     return rc == GW_OK ? gw_out_file_check(path, "dispersion --wisdom", err) : rc;
 }
@@ -403,7 +426,7 @@ int gw_cmd_dispersion(int argc, char **argv)
     }
     /* inputs and output locations before any work: a refused run writes nothing */
     if ((c.out && gw_out_check(c.out, "dispersion --out", &err) != GW_OK) ||
-        (c.wisdom && disp_import_wisdom(c.wisdom, &err) != GW_OK))
+        (c.wisdom && disp_import_wisdom(&c, &err) != GW_OK))
         return chain_cli_fail(err.msg);
     if (c.column_n > 0) {
         int code = disp_column(&c, opts, argc, argv);

@@ -181,6 +181,13 @@
 #    was restored, passed the check of the file after the case (exit 0, its
 #    row in the table): its row's sample hash is now compared with the
 #    sweep's, exit 2 naming the case and both hashes, the rows before kept.
+# 36 a --dt-out that is not a multiple of the verlet step shortened the step
+#    before each sample: --dt-out 1.7e-5 s took 1e-5 and 7e-6 s steps in turn
+#    (81212 steps to 0.690302 s) while the settings recorded dt 1e-5 (e_n
+#    0.25475 against 0.25429 on the even 8.5e-6 s grid). The automatic step is
+#    now the largest divisor of dt-out below it, recorded as such; a --dt
+#    given that dt-out is not a multiple of is refused (any path: the sweep's
+#    keys too).
 set -u
 GW=$1
 SRC=${2:-.}
@@ -956,6 +963,41 @@ if runs "  the sweep resumes" sweep "$tmp/w35.ini" --out "$tmp/w35" --quiet; the
     [ "$(grep -c "^1,.*,$hb35\$" "$tmp/w35/results.csv")" -eq 1 ] && ok "  case 1 rerun on the restored sample" ||
         ko "  $(grep '^1,' "$tmp/w35/results.csv" | tail -c 40)"
 fi
+
+# --- 36: a dt-out that is not a multiple of the verlet step -----------------------
+# steps-check WHAT DT T_END: the JSON on stdout records dt DT and t_end T_END, and
+# its steps are T_END / DT (an even grid: no step shortened before a sample)
+steps_check() {
+    local dt st te
+    dt=$(jnum dt "$tmp/stdout"); st=$(jnum steps "$tmp/stdout"); te=$(jnum t_end "$tmp/stdout")
+    if [ "$dt" = "$2" ] && [ "$te" = "$3" ] && awk -v s="$st" -v t="$te" -v h="$dt" 'BEGIN { exit !(s == int(t / h + 0.5)) }'; then
+        ok "  $1: dt $dt s, $st steps to t_end $te s"
+    else
+        ko "  $1: dt $dt, steps $st, t_end $te (expected dt $2 and steps t_end / dt)"
+    fi
+}
+runs "layer-impact --dt-out 7e-6 (above: steps of 1e-5 s recorded, 7e-6 s taken)" \
+    layer-impact --sample "$S300" --dt-out 7e-6 --t-max 0.007 --json && steps_check "dt-out 7e-6" 7e-06 0.007
+runs "layer-impact --dt-out 1.7e-5 (1e-5 and 7e-6 s steps in turn before)" \
+    layer-impact --sample "$S300" --dt-out 1.7e-5 --t-max 0.0068 --json && steps_check "dt-out 1.7e-5" 8.5e-06 0.0068
+cp "$tmp/stdout" "$tmp/a36.json"
+runs "  the same with --dt 8.5e-6 given" layer-impact --sample "$S300" --dt-out 1.7e-5 --dt 8.5e-6 --t-max 0.0068 --json
+for k in e_n_first dissipated_first_contact penetration steps; do
+    [ "$(jnum "$k" "$tmp/stdout")" = "$(jnum "$k" "$tmp/a36.json")" ] && ok "  $k the same as the automatic step's" ||
+        ko "  $k $(jnum "$k" "$tmp/stdout") given, $(jnum "$k" "$tmp/a36.json") automatic"
+done
+runs "layer-impact at the default dt-out 2e-5" layer-impact --sample "$S300" --t-max 0.0068 --json &&
+    steps_check "dt-out 2e-5 (a multiple: the step unchanged)" 1e-05 0.0068
+refused "layer-impact --dt 1e-5 --dt-out 7e-6 (each step shortened to 7e-6 s, dt 1e-5 recorded)" \
+    "^granwave layer-impact --dt-out: 7e-06 s is not a multiple of the verlet step dt = 1e-05 s, .* such as 1e-05 s, a dt that divides it such as 7e-06 s" \
+    layer-impact --sample "$S300" --dt 1e-5 --dt-out 7e-6 --out "$tmp/o"
+refused "layer-impact --dt 3e-6 at the default dt-out" "dt-out: 2e-05 s is not a multiple of the verlet step dt = 3e-06 s" \
+    layer-impact --sample "$S300" --dt 3e-6 --out "$tmp/o"
+runs "  the divisor it names passes" layer-impact --sample "$S300" --dt "$(sed -n 's/.*divides it such as \([^ ]*\) s.*/\1/p' "$tmp/stderr")" \
+    --t-max 1e-4 --json
+printf '[sweep]\nmodel = layer\n[grid]\nvi = 10, 20\n[params]\nsample = %s\nt-max = 1e-4\ndt = 1e-5\ndt-out = 7e-6\n' "$S300" >"$tmp/w36.ini"
+refused "a layer sweep with dt = 1e-5 and dt-out = 7e-6" "^granwave sweep: .*w36.ini: case 0: dt-out: 7e-06 s is not a multiple of the verlet step dt = 1e-05 s" \
+    sweep "$tmp/w36.ini" --out "$tmp/o" --check
 
 echo "test_hostile_layer: $passes passed, $fails failed"
 [ $fails -eq 0 ]

@@ -173,6 +173,12 @@
 #    F_max(1) the front is read in the solitary wave's precursor tail and then
 #    in the solver's tolerance (1e-300: v_front 874 against 627 m/s at 0.3 m/s,
 #    beta 0.186 +- 0.023, exit 0). The range is [1e-6, 1] now.
+#  42 one value where a fit needs two: wavespeed with one speed printed its
+#    power-law fits as nan (JSON null) with exit 0, saying nothing; its speeds
+#    at that v_imp stand, so it runs and says "not fitted (one speed ...)",
+#    with "fitted": false beside the null fits. falcon --n 1:1 printed T_q and
+#    4R/T_q as nan (exit 0): its product is the tau_N line over N, refused
+#    now with one column size, naming --n.
 set -u
 GW=$1
 SRC=${2:-.}
@@ -778,6 +784,22 @@ REFUSE_TIMEOUT=5 refused "falcon --solver rk4 --dt 1e-11 over 30 columns: names 
 runs "falcon --solver rk4 with a sensor body on 2 columns (within the bound)" "$tmp/f.json" \
     falcon --solver rk4 --sensor-mass 1e-5 --sensor-stiffness 1e11 --heights none --n 1:2 --quiet --json &&
     jcheck "  runs" "$tmp/f.json" "len(j['velocities']) == 1 and j['unfinished'] == 0"
+
+# --- 42: one value where a fit needs two
+runs "wavespeed with one speed" "$tmp/w42.json" wavespeed --n 6:8 --vimp 0.3 --quiet --jobs 1 --json &&
+    jcheck "  its speeds given, the fits null and fitted false" "$tmp/w42.json" \
+        "j['fitted'] is False and j['beta'] is None and j['fits']['front']['beta'] is None and j['beta_period'] is None and all(math.isfinite(v) and v > 0 for k in ('v_tq', 'v_front', 'v_group') for v in j[k])"
+if runs "  the same as text" "$tmp/w42.txt" wavespeed --n 6:8 --vimp 0.3 --quiet --jobs 1; then
+    grep -q "^  beta, C3: not fitted (one speed" "$tmp/w42.txt" && ! grep -q "nan +- nan\|beta nan" "$tmp/w42.txt" &&
+        ok "  says not fitted, no nan fits" || ko "  $(grep -i "beta" "$tmp/w42.txt")"
+fi
+runs "wavespeed with two speeds" "$tmp/w42b.json" wavespeed --n 6:8 --vimp 0.3,0.5 --quiet --jobs 1 --json &&
+    jcheck "  fitted, beta 1/5 to 1e-3" "$tmp/w42b.json" "j['fitted'] is True and abs(j['beta'] - 0.2) < 1e-3"
+refused "falcon --n 1:1 (T_q and 4R/T_q were nan, exit 0)" \
+    "^granwave falcon --n: 1:1 is one column size, and the study fits tau_N = T_q \(N - 1\) \+ tau_1 over N .* e\.g\. 1:2" \
+    falcon --n 1:1 --quiet --out "$tmp/o"
+refused "falcon --n 7:7 --heights none" "^granwave falcon --n: 7:7 is one column size, .* e\.g\. 6:7 \(one column's collision: granwave chain --n 7\)" \
+    falcon --n 7:7 --heights none --quiet --out "$tmp/o"
 
 echo "test_hostile_chain: $passes passed, $fails failed"
 [ $fails -eq 0 ]

@@ -188,6 +188,11 @@
 #    now the largest divisor of dt-out below it, recorded as such; a --dt
 #    given that dt-out is not a multiple of is refused (any path: the sweep's
 #    keys too).
+# 37 a sweep journal's '# input' hash was read with strtoull: ' 0x12', '-1'
+#    or 15 digits in place of the 16 hex digits resumed the sweep (exit 0), and
+#    with the sample changed '-000000000000001' was reported as 'fnv1a64
+#    ffffffffffffffff in its journal', ' 0x0000000000012' as 0000000000000012,
+#    '-1' as another sweep. Read strictly now: refused naming the line.
 set -u
 GW=$1
 SRC=${2:-.}
@@ -998,6 +1003,27 @@ runs "  the divisor it names passes" layer-impact --sample "$S300" --dt "$(sed -
 printf '[sweep]\nmodel = layer\n[grid]\nvi = 10, 20\n[params]\nsample = %s\nt-max = 1e-4\ndt = 1e-5\ndt-out = 7e-6\n' "$S300" >"$tmp/w36.ini"
 refused "a layer sweep with dt = 1e-5 and dt-out = 7e-6" "^granwave sweep: .*w36.ini: case 0: dt-out: 7e-06 s is not a multiple of the verlet step dt = 1e-05 s" \
     sweep "$tmp/w36.ini" --out "$tmp/o" --check
+
+# --- 37: a journal's '# input' hash read strictly ----------------------------------
+cp "$S300" "$tmp/s37.txt"
+printf '[sweep]\nmodel = layer\n[grid]\nvi = 10, 20\n[params]\nsample = %s\nt-max = 1e-4\n' "$tmp/s37.txt" >"$tmp/w37.ini"
+if runs "a layer sweep of 2 cases" sweep "$tmp/w37.ini" --out "$tmp/w37" --quiet --jobs 1; then
+    cp "$tmp/w37/journal.csv" "$tmp/j37.orig"
+    for bad in " 0x12" "-1" "000000000000012" " 0x0000000000012" "-000000000000001"; do
+        for changed in 0 1; do
+            cp "$S300" "$tmp/s37.txt"; [ $changed -eq 1 ] && echo "# changed" >>"$tmp/s37.txt"
+            sed "2s/ fnv1a64 .*/ fnv1a64 $bad/" "$tmp/j37.orig" >"$tmp/w37/journal.csv"; rm -f "$tmp/w37/results.csv"
+            cp "$tmp/w37/journal.csv" "$tmp/j37.edited"
+            refused "a journal whose '# input' hash is '$bad'$([ $changed -eq 1 ] && echo ", the sample changed")" \
+                "^granwave sweep: .*w37/journal.csv:2: '# input sample = .*s37.txt fnv1a64 $bad' does not end with ' fnv1a64 ' and the file's content hash in 16 hex digits" \
+                sweep "$tmp/w37.ini" --out "$tmp/w37" --quiet --jobs 1
+            cmp -s "$tmp/w37/journal.csv" "$tmp/j37.edited" && [ ! -e "$tmp/w37/results.csv" ] ||
+                ko "  the journal changed or a table was written"
+        done
+    done
+    cp "$S300" "$tmp/s37.txt"; cp "$tmp/j37.orig" "$tmp/w37/journal.csv"; rm -f "$tmp/w37/results.csv"
+    runs "  the journal restored, the sweep ends" sweep "$tmp/w37.ini" --out "$tmp/w37" --quiet --jobs 1
+fi
 
 echo "test_hostile_layer: $passes passed, $fails failed"
 [ $fails -eq 0 ]

@@ -179,6 +179,10 @@
 #    with "fitted": false beside the null fits. falcon --n 1:1 printed T_q and
 #    4R/T_q as nan (exit 0): its product is the tau_N line over N, refused
 #    now with one column size, naming --n.
+#  43 an atomic write onto a symbolic link replaced the link with a regular
+#    file and left its target as it was: dispersion --wisdom LINK, and a file
+#    of --out DIR that is a link (DIR/chain.json). Written through the link
+#    now (the target replaced, the link kept); a link to nothing is refused.
 set -u
 GW=$1
 SRC=${2:-.}
@@ -800,6 +804,22 @@ refused "falcon --n 1:1 (T_q and 4R/T_q were nan, exit 0)" \
     falcon --n 1:1 --quiet --out "$tmp/o"
 refused "falcon --n 7:7 --heights none" "^granwave falcon --n: 7:7 is one column size, .* e\.g\. 6:7 \(one column's collision: granwave chain --n 7\)" \
     falcon --n 7:7 --heights none --quiet --out "$tmp/o"
+
+# --- 43: atomic writes through a symbolic link
+mkdir -p "$tmp/d43" "$tmp/o43"; ln -s d43/w "$tmp/w43"
+refused "dispersion --wisdom a symbolic link to nothing" "^granwave dispersion --wisdom: '.*w43' is a symbolic link to 'd43/w', which does not exist$" \
+    dispersion --n 16 --t-samples 64 --wisdom "$tmp/w43"
+[ -L "$tmp/w43" ] || ko "  the link was replaced"
+"$GW" dispersion --n 16 --t-samples 64 --wisdom "$tmp/d43/w" >/dev/null 2>&1 </dev/null || ko "  a wisdom file made"
+if runs "dispersion --wisdom a symbolic link to a wisdom file" "$tmp/d43.json" dispersion --n 16 --t-samples 64 --wisdom "$tmp/w43" --json; then
+    [ -L "$tmp/w43" ] && head -c 7 "$tmp/d43/w" | grep -q '(fftw-3' && ok "  the link kept, the wisdom saved to its target" ||
+        ko "  $(ls -l "$tmp/w43")"
+fi
+: >"$tmp/d43/c.json"; ln -s ../d43/c.json "$tmp/o43/chain.json"
+if runs "chain --out DIR whose chain.json is a symbolic link" "$tmp/c43.json" chain --n 3 --out "$tmp/o43"; then
+    [ -L "$tmp/o43/chain.json" ] && jcheck "  the link kept, the results in its target" "$tmp/d43/c.json" "j['n'] == 3" ||
+        ko "  $(ls -l "$tmp/o43/chain.json")"
+fi
 
 echo "test_hostile_chain: $passes passed, $fails failed"
 [ $fails -eq 0 ]

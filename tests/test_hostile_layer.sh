@@ -193,6 +193,10 @@
 #    with the sample changed '-000000000000001' was reported as 'fnv1a64
 #    ffffffffffffffff in its journal', ' 0x0000000000012' as 0000000000000012,
 #    '-1' as another sweep. Read strictly now: refused naming the line.
+# 38 layer-make --out LINK (a symbolic link to a file) replaced the link with
+#    a regular file and left its target as it was (the atomic write's
+#    rename). Every atomic write (gw_afile_open) now writes through the link:
+#    the target is replaced, the link kept; a link to nothing is refused.
 set -u
 GW=$1
 SRC=${2:-.}
@@ -1024,6 +1028,23 @@ if runs "a layer sweep of 2 cases" sweep "$tmp/w37.ini" --out "$tmp/w37" --quiet
     cp "$S300" "$tmp/s37.txt"; cp "$tmp/j37.orig" "$tmp/w37/journal.csv"; rm -f "$tmp/w37/results.csv"
     runs "  the journal restored, the sweep ends" sweep "$tmp/w37.ini" --out "$tmp/w37" --quiet --jobs 1
 fi
+
+# --- 38: layer-make --out through a symbolic link ---------------------------------
+mkdir -p "$tmp/d38"; : >"$tmp/d38/t.txt"; ln -s d38/t.txt "$tmp/l38.txt"
+if runs "layer-make --out a symbolic link to an empty file" layer-make --n 20 --width-rm 10 --t-max 0.005 --out "$tmp/l38.txt"; then
+    [ -L "$tmp/l38.txt" ] && [ "$(readlink "$tmp/l38.txt")" = d38/t.txt ] && head -1 "$tmp/d38/t.txt" | grep -q '^granwave-layer-sample' &&
+        ok "  the link kept, the sample written to its target" ||
+        ko "  link $(ls -l "$tmp/l38.txt"), target $(head -c 30 "$tmp/d38/t.txt")"
+    runs "  layer-impact reads the sample through the link" layer-impact --sample "$tmp/l38.txt" --t-max 1e-4 --json
+    runs "  layer-make over it again" layer-make --n 20 --width-rm 10 --t-max 0.005 --seed 7 --out "$tmp/l38.txt" &&
+        [ -L "$tmp/l38.txt" ] && grep -q '^# .*--seed 7' "$tmp/d38/t.txt" && ok "  the target replaced, the link kept" ||
+        ko "  the second write: $(ls -l "$tmp/l38.txt")"
+    ls "$tmp/d38" | grep -q tmp && ko "  a temporary file left beside the target"
+fi
+ln -s d38/nowhere/s.txt "$tmp/dl38.txt"
+refused "layer-make --out a symbolic link to nothing" "^granwave layer-make: sample: '.*dl38.txt' is a symbolic link to 'd38/nowhere/s.txt', which does not exist$" \
+    layer-make --n 20 --width-rm 10 --t-max 0.005 --out "$tmp/dl38.txt"
+[ -L "$tmp/dl38.txt" ] && [ ! -e "$tmp/d38/nowhere" ] || ko "  the dangling link was replaced or its target made"
 
 echo "test_hostile_layer: $passes passed, $fails failed"
 [ $fails -eq 0 ]

@@ -523,8 +523,7 @@ int gw_layer_impact_rest_check(const gw_layer_sample *s, const gw_layer_params *
 double gw_layer_impact_dem_dt(const gw_layer_sample *s, const gw_layer_params *lp,
                               const gw_layer_impact_params *ip);
 
-/* 1 when dt_out is k dt for an integer k >= 1, within 1e-9 of a step (the
- * tolerance with which the fixed-step backends land on an output time). */
+/* 1 when dt_out is k dt for an integer k >= 1, to a relative 1e-9. */
 int gw_layer_impact_dt_divides(double dt, double dt_out);
 
 /* A verlet step sp->dt > 0 given by the caller must divide ip->dt_out, or the

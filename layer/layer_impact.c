@@ -235,10 +235,11 @@ double gw_layer_impact_dem_dt(const gw_layer_sample *s, const gw_layer_params *l
 
 int gw_layer_impact_dt_divides(double dt, double dt_out)
 {
-    /* the verlet backend lands on a sample when the remainder is within 1e-9
-     * of a step (gw_backend_verlet.c): the same tolerance on the ratio */
+    /* relative: the ratio of 2e-5 to 1e-12 is 20000000.000000004 in doubles.
+     * Within it, what is left of a sample interval after k steps is a rounding
+     * error (the backends land on a sample within 1e-9 of a step) */
     const double q = dt_out / dt, k = nearbyint(q);
-    return dt > 0 && k >= 1 && fabs(q - k) <= 1e-9;
+    return dt > 0 && k >= 1 && fabs(q - k) <= 1e-9 * k;
 }
 
 int gw_layer_impact_step_check(const gw_layer_impact_params *ip, const gw_solver_type *type,

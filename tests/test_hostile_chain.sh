@@ -76,7 +76,8 @@
 #    in the fits: wavespeed's beta_err was 1.2e-15 from a duplicated point (null,
 #    undefined, with the two distinct speeds). Refused, in the library too.
 #  17 falcon --n 1:1 (one column per speed) reported t_q null but t_q_err 0 and
-#    r2 0: a line through one point has no number; all are null now.
+#    r2 0: a line through one point has no number; all are null now. (--n 1:1
+#    is refused since 42; the fit over N <= 20 of --n 20:22 has one point.)
 #  18 a failed run's line said the command twice ("granwave chain: chain: bead 1
 #    still on the wall ...", "granwave drop: drop: relative energy error ...").
 #  19 dispersion --column-n: --vimp 1e-200 failed at t = 0 inside cvode (exit 1;
@@ -528,9 +529,9 @@ runs "wavespeed --vimp 0.3,0.5 --n 6:8 (two distinct speeds)" "$tmp/w.json" wave
     jcheck "  beta 1/5 (F.16) to 1e-6, its standard error undefined (null) with two points" "$tmp/w.json" \
         "abs(j['beta'] - 0.2) < 1e-6 and j['beta_err'] is None"
 # --- 17: no line through one point
-runs "falcon --n 1:1" "$tmp/f.json" falcon --n 1:1 --heights none --quiet --json &&
-    jcheck "  t_q, t_q_err, r2 and the intercept's error all null" "$tmp/f.json" \
-        "all(j['velocities'][0][k] is None for k in ('t_q', 't_q_err', 'r2', 'tau_fit_intercept_err', 'wave_speed'))"
+runs "falcon --n 20:22 (one column at N <= 20)" "$tmp/f.json" falcon --n 20:22 --heights none --quiet --json &&
+    jcheck "  the fit over N <= 20 null (t_q_n20, its error, its speed), the fit over 20..22 given" "$tmp/f.json" \
+        "all(j['velocities'][0][k] is None for k in ('t_q_n20', 't_q_n20_err', 'wave_speed_n20')) and j['velocities'][0]['t_q'] > 0 and j['velocities'][0]['t_q_err'] > 0"
 
 # --- 18: a failed run's line names the command once
 timeout 20 "$GW" chain --n 3 --t-max 1e-7 >/dev/null 2>"$tmp/e" </dev/null; rc=$?

@@ -234,6 +234,15 @@ static int pick_solver(const gw_chain_falcon_setup *s, gw_chain_resolved *r, dou
     return GW_OK;
 }
 
+int gw_chain_falcon_sizes_check(long a, long b, gw_err *err)
+{
+    if (a == b)
+        return gw_err_set(err, GW_EINVAL, "n: %ld:%ld is one column size, and the study fits tau_N = T_q (N - 1) + "
+                          "tau_1 over N (T_q, the wave speed 4R/T_q): give at least two sizes, e.g. %ld:%ld (one "
+                          "column's collision: granwave chain --n %ld)", a, b, a > 1 ? a - 1 : a, a > 1 ? b : b + 1, a);
+    return GW_OK;
+}
+
 int gw_chain_falcon_run(const gw_chain_falcon_setup *s, gw_progress_fn progress, void *pctx,
                         gw_chain_falcon_outcome *out, gw_err *err)
 {
@@ -242,6 +251,8 @@ int gw_chain_falcon_run(const gw_chain_falcon_setup *s, gw_progress_fn progress,
     if (rc != GW_OK)
         return rc;
     int nv = s->vimp.n + s->heights.n, nn = (int)(s->n[1] - s->n[0] + 1);
+    if ((rc = gw_chain_falcon_sizes_check(s->n[0], s->n[1], err)) != GW_OK)
+        return rc;
     if (nv == 0)
         return gw_err_set(err, GW_EINVAL, "vimp: no impact velocity (vimp and heights both empty)");
     if ((rc = alloc_outcome(out, nv, nn, err)) != GW_OK)

@@ -138,6 +138,8 @@ static const gw_param ws_fields[] = {
     RDT(W, "beta_period", beta_period, "", "exponent of P against v_imp (F.15: -1/5)"),
     RDT(W, "beta_period_err", beta_period_err, "", "its standard error"),
     RDT(W, "max_disagreement", max_disagreement, "", "largest relative difference of tq, front, group/sqrt(3/2)"),
+    RIT(W, "fitted", fitted, "1: the power-law fits over v_imp made; 0: one speed, beta, c3, the fits and "
+                             "beta_period NaN (not fitted)"),
     RDT(W, "front_threshold_fraction", threshold, "", "front threshold / F_max(1)"),
     RIT(W, "n_min", n_min, "smallest column"),
     RIT(W, "n_max", n_max, "longest column (the front's)"),
@@ -299,6 +301,10 @@ static void ws_fits(const gw_chain_params *p, gw_chain_wavespeed_outcome *o)
     for (int i = 0; i < 4; i++)
         power_fit(v, speeds[i], nv, scale, o->fits[i]);
     power_fit(v, o->period, nv, pow(p->mass / p->k, 0.4), fp);
+    /* one speed: no line through one point (power_fit leaves NaN); the
+     * speeds at it, t_q, the period, C2 (its exponent is fixed) and the
+     * estimators' disagreement stand, so the run is kept and says so */
+    o->fitted = nv >= 2;
     o->beta = o->fits[0][0];
     o->beta_err = o->fits[0][1];
     o->c3 = o->fits[0][3];

@@ -202,6 +202,12 @@ const gw_param *gw_chain_falcon_outcome_fields(void);
  * GW_ECANCELED, GW_ENOMEM. */
 int gw_chain_falcon_run(const gw_chain_falcon_setup *s, gw_progress_fn progress, void *pctx,
                         gw_chain_falcon_outcome *out, gw_err *err);
+/* The column sizes a..b of the falcon study: its product at each velocity is
+ * the line tau_N = T_q (N - 1) + tau_1 over N (T_q, the wave speed 4R/T_q),
+ * which one size does not give (--n 1:1 printed T_q and the speed as nan, exit
+ * 0): GW_EINVAL "n: ..." when a == b. gw_chain_falcon_run checks it; the
+ * command calls it before it creates --out. */
+int gw_chain_falcon_sizes_check(long a, long b, gw_err *err);
 void gw_chain_falcon_outcome_free(gw_chain_falcon_outcome *out);
 
 /* ---- the studies of `granwave wavespeed`, `softwall`, `drop`, `dispersion` ----
@@ -238,6 +244,9 @@ typedef struct gw_chain_wavespeed_outcome {
     int n_min, n_max;
     double wall_time_s;
     int unfinished;        /* collisions of the tau_N sweep not ended at t_max */
+    int fitted;            /* 1: the power-law fits over v_imp are made (two speeds or more); 0: one
+                              speed, whose speeds, t_q, period, c2 and max_disagreement stand but whose
+                              beta, beta_err, c3, fits and beta_period are NaN (no line through one point) */
 } gw_chain_wavespeed_outcome;
 
 const gw_param *gw_chain_wavespeed_setup_params(void);

@@ -122,7 +122,9 @@ typedef struct gw_afile {
 } gw_afile;
 
 /* Open path for writing through a temporary file: f->fp is the stream. On
- * failure nothing is created (and f is safe to abort). */
+ * failure nothing is created (and f is safe to abort). A symbolic link at path
+ * is written through: the temporary goes beside its target, which the commit
+ * replaces (f->path), and the link stays; a link to nothing is GW_EINVAL. */
 int gw_afile_open(gw_afile *f, const char *path, gw_err *err);
 /* The same for a writer that creates the file itself by name (HDF5's
  * H5Fcreate(f->tmp, H5F_ACC_TRUNC, ...)): f->tmp is an empty file reserving a
@@ -193,7 +195,9 @@ int gw_fnv1a64_parse(const char *p, size_t len, unsigned long long *h);
  * nearest existing ancestor is a writable directory (it creates nothing; the
  * caller makes the directory with gw_mkdir_p when it has something to write).
  * gw_out_file_check: path is absent or a regular file, in an existing writable
- * directory. GW_EINVAL with one line naming what. */
+ * directory; a symbolic link is checked as the file it leads to (in its
+ * directory), and refused when it leads nowhere. GW_EINVAL with one line
+ * naming what. */
 int gw_out_check(const char *dir, const char *what, gw_err *err);
 int gw_out_file_check(const char *path, const char *what, gw_err *err);
 

@@ -1,6 +1,7 @@
 /*
  * gw_io.c: atomic files (temporary name, fsync, rename; as a stream, or as a
- * temporary path for writers that create the file by name, such as HDF5),
+ * temporary path for writers that create the file by name, such as HDF5;
+ * through a symbolic link: its target is replaced, the link kept),
  * comment lines for file headers, directories, paths, and
  * the one way inputs are opened: regular files only (a FIFO, device or directory
  * is refused before any read, so nothing can block), reads bounded in size.
@@ -8,6 +9,7 @@
 #define _POSIX_C_SOURCE 200809L
 #include <errno.h>
 #include <fcntl.h>
+#include <limits.h>
 #include <signal.h>
 #include <stdlib.h>
 #include <string.h>
@@ -37,15 +39,47 @@ static void release_signals(gw_afile *f)
     f->masked = 0;
 }
 
+/* The file a write to path replaces: path itself, or the file a symbolic link
+ * there leads to (the rename of an atomic write would put a regular file in
+ * place of the link and leave its target as it was: layer-make --out LINK).
+ * GW_EINVAL for a link to nothing (as gw_out_check refuses for a directory). */
+static int write_target(const char *path, char *out, size_t n, const char *what, gw_err *err)
+{
+    struct stat st;
+    if (lstat(path, &st) != 0 || !S_ISLNK(st.st_mode)) {
+        if (strlen(path) >= n)
+            return gw_err_set(err, GW_EINVAL, "%s: path too long", path);
+        snprintf(out, n, "%s", path);
+        return GW_OK;
+    }
+    char real[PATH_MAX];
+    if (!realpath(path, real)) {
+        const int e = errno;
+        char target[4096];
+        ssize_t k = readlink(path, target, sizeof target - 1);
+        target[k > 0 ? k : 0] = '\0';
+        if (e == ENOENT)
+            return gw_err_set(err, GW_EINVAL, "%s: '%s' is a symbolic link to '%s', which does not exist", what,
+                              path, target);
+        return gw_err_set(err, GW_EINVAL, "%s: '%s' is a symbolic link to '%s': %s", what, path, target,
+                          strerror(e));
+    }
+    if (strlen(real) >= n)
+        return gw_err_set(err, GW_EINVAL, "%s: path too long", real);
+    snprintf(out, n, "%s", real);
+    return GW_OK;
+}
+
 int gw_afile_open(gw_afile *f, const char *path, gw_err *err)
 {
     memset(f, 0, sizeof *f);
     hold_signals(f);
-    if (strlen(path) >= sizeof f->path) { /* nothing made: give the signals back */
+    int rc = write_target(path, f->path, sizeof f->path, path, err);
+    if (rc != GW_OK) { /* nothing made: give the signals back */
         release_signals(f);
-        return gw_err_set(err, GW_EINVAL, "%s: path too long", path);
+        return rc;
     }
-    snprintf(f->path, sizeof f->path, "%s", path);
+    path = f->path; /* the temporary beside the file it replaces */
     snprintf(f->tmp, sizeof f->tmp, "%s.tmp.XXXXXX", path);
     int fd = mkstemp(f->tmp);
     if (fd < 0) {
@@ -362,6 +396,14 @@ int gw_out_file_check(const char *path, const char *what, gw_err *err)
     if (stat(path, &st) == 0 && !S_ISREG(st.st_mode))
         return gw_err_set(err, GW_EINVAL, "%s: '%s' is %s; give a regular file", what, path,
                           file_kind(st.st_mode));
+    /* a symbolic link is written through (gw_afile_open): its target's
+     * directory takes the temporary file; a link to nothing is refused */
+    char target[4096];
+    int rc = write_target(path, target, sizeof target, what, err);
+    if (rc != GW_OK)
+        return rc;
+    path = target;
+    n = strlen(path);
     memcpy(dir, path, n + 1);
     char *slash = strrchr(dir, '/');
     if (!slash)

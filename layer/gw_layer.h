@@ -514,11 +514,26 @@ int gw_layer_impact_rest_check(const gw_layer_sample *s, const gw_layer_params *
  * (5 M / (4 K_n))^(2/5) V_i^(-1/5) with the reduced mass M = m/2, over GW_LAYER_DEM_STEPS,
  * rounded down to GW_LAYER_DEM_BASE / k (k >= 1, never above the base), so that
  * a dt_out that is a multiple of GW_LAYER_DEM_BASE samples on step ends: the
- * trajectory, hence the outcome, does not depend on dt_out. s. */
+ * trajectory, hence the outcome, does not depend on dt_out. When ip->dt_out is
+ * not a multiple of that step (gw_layer_impact_dt_divides), the largest divisor
+ * of it below: dt_out / ceil(dt_out / step), so that every sample still ends a
+ * step and the steps stay equal. s. */
 #define GW_LAYER_DEM_STEPS 100
 #define GW_LAYER_DEM_BASE 1e-5
 double gw_layer_impact_dem_dt(const gw_layer_sample *s, const gw_layer_params *lp,
                               const gw_layer_impact_params *ip);
+
+/* 1 when dt_out is k dt for an integer k >= 1, to a relative 1e-9. */
+int gw_layer_impact_dt_divides(double dt, double dt_out);
+
+/* A verlet step sp->dt > 0 given by the caller must divide ip->dt_out, or the
+ * step before every sample would be shortened to land on it (an uneven grid,
+ * not the dt recorded): GW_EINVAL "dt-out: ..." naming dt and values that
+ * pass. The automatic step (sp->dt = 0) and the other backends pass (rk4
+ * restarts its steps at every located contact event; cvode and arkode choose
+ * theirs). gw_layer_impact checks it, as the setup's resolution does. */
+int gw_layer_impact_step_check(const gw_layer_impact_params *ip, const gw_solver_type *type,
+                               const gw_solver_params *sp, gw_err *err);
 
 /* One block impact on a sample (docs/physics.md 2.3). Writes no files: a caller
  * that wants snapshots (the program's VTK files, the study's arrays) takes them

@@ -332,6 +332,8 @@ static int resolve(const gw_layer_impact_setup *s, const gw_layer_sample *smp, g
     rc = gw_layer_impact_check(smp, ip, err);
     if (rc == GW_OK)
         rc = gw_layer_impact_gap_check(smp, ip, s->gravity, err);
+    if (rc == GW_OK)
+        rc = gw_layer_impact_step_check(ip, *type, sp, err);
     return rc == GW_OK ? gw_layer_impact_rest_check(smp, lp, s->sample, err) : rc;
 }
 

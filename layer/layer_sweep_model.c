@@ -192,9 +192,8 @@ static int run(int nk, const char *const *names, const char *const *values, doub
             out[i] = canon(v[i]);
         /* the content hash of the sample bytes this run read (the sweep
          * compares it with the file's hash when it started) */
-        char *end = NULL;
-        const unsigned long long h = o.sample_fnv1a64 ? strtoull(o.sample_fnv1a64, &end, 16) : 0;
-        if (!o.sample_fnv1a64 || !end || *end)
+        unsigned long long h = 0;
+        if (!o.sample_fnv1a64 || !gw_fnv1a64_parse(o.sample_fnv1a64, strlen(o.sample_fnv1a64), &h))
             rc = gw_err_set(err, GW_ENOMEM, "out of memory");
         else if (read_hash)
             *read_hash = h;

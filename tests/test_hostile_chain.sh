@@ -76,7 +76,8 @@
 #    in the fits: wavespeed's beta_err was 1.2e-15 from a duplicated point (null,
 #    undefined, with the two distinct speeds). Refused, in the library too.
 #  17 falcon --n 1:1 (one column per speed) reported t_q null but t_q_err 0 and
-#    r2 0: a line through one point has no number; all are null now.
+#    r2 0: a line through one point has no number; all are null now. (--n 1:1
+#    is refused since 42; the fit over N <= 20 of --n 20:22 has one point.)
 #  18 a failed run's line said the command twice ("granwave chain: chain: bead 1
 #    still on the wall ...", "granwave drop: drop: relative energy error ...").
 #  19 dispersion --column-n: --vimp 1e-200 failed at t = 0 inside cvode (exit 1;
@@ -173,6 +174,16 @@
 #    F_max(1) the front is read in the solitary wave's precursor tail and then
 #    in the solver's tolerance (1e-300: v_front 874 against 627 m/s at 0.3 m/s,
 #    beta 0.186 +- 0.023, exit 0). The range is [1e-6, 1] now.
+#  42 one value where a fit needs two: wavespeed with one speed printed its
+#    power-law fits as nan (JSON null) with exit 0, saying nothing; its speeds
+#    at that v_imp stand, so it runs and says "not fitted (one speed ...)",
+#    with "fitted": false beside the null fits. falcon --n 1:1 printed T_q and
+#    4R/T_q as nan (exit 0): its product is the tau_N line over N, refused
+#    now with one column size, naming --n.
+#  43 an atomic write onto a symbolic link replaced the link with a regular
+#    file and left its target as it was: dispersion --wisdom LINK, and a file
+#    of --out DIR that is a link (DIR/chain.json). Written through the link
+#    now (the target replaced, the link kept); a link to nothing is refused.
 set -u
 GW=$1
 SRC=${2:-.}
@@ -518,9 +529,9 @@ runs "wavespeed --vimp 0.3,0.5 --n 6:8 (two distinct speeds)" "$tmp/w.json" wave
     jcheck "  beta 1/5 (F.16) to 1e-6, its standard error undefined (null) with two points" "$tmp/w.json" \
         "abs(j['beta'] - 0.2) < 1e-6 and j['beta_err'] is None"
 # --- 17: no line through one point
-runs "falcon --n 1:1" "$tmp/f.json" falcon --n 1:1 --heights none --quiet --json &&
-    jcheck "  t_q, t_q_err, r2 and the intercept's error all null" "$tmp/f.json" \
-        "all(j['velocities'][0][k] is None for k in ('t_q', 't_q_err', 'r2', 'tau_fit_intercept_err', 'wave_speed'))"
+runs "falcon --n 20:22 (one column at N <= 20)" "$tmp/f.json" falcon --n 20:22 --heights none --quiet --json &&
+    jcheck "  the fit over N <= 20 null (t_q_n20, its error, its speed), the fit over 20..22 given" "$tmp/f.json" \
+        "all(j['velocities'][0][k] is None for k in ('t_q_n20', 't_q_n20_err', 'wave_speed_n20')) and j['velocities'][0]['t_q'] > 0 and j['velocities'][0]['t_q_err'] > 0"
 
 # --- 18: a failed run's line names the command once
 timeout 20 "$GW" chain --n 3 --t-max 1e-7 >/dev/null 2>"$tmp/e" </dev/null; rc=$?
@@ -778,6 +789,38 @@ REFUSE_TIMEOUT=5 refused "falcon --solver rk4 --dt 1e-11 over 30 columns: names 
 runs "falcon --solver rk4 with a sensor body on 2 columns (within the bound)" "$tmp/f.json" \
     falcon --solver rk4 --sensor-mass 1e-5 --sensor-stiffness 1e11 --heights none --n 1:2 --quiet --json &&
     jcheck "  runs" "$tmp/f.json" "len(j['velocities']) == 1 and j['unfinished'] == 0"
+
+# --- 42: one value where a fit needs two
+runs "wavespeed with one speed" "$tmp/w42.json" wavespeed --n 6:8 --vimp 0.3 --quiet --jobs 1 --json &&
+    jcheck "  its speeds given, the fits null and fitted false" "$tmp/w42.json" \
+        "j['fitted'] is False and j['beta'] is None and j['fits']['front']['beta'] is None and j['beta_period'] is None and all(math.isfinite(v) and v > 0 for k in ('v_tq', 'v_front', 'v_group') for v in j[k])"
+if runs "  the same as text" "$tmp/w42.txt" wavespeed --n 6:8 --vimp 0.3 --quiet --jobs 1; then
+    grep -q "^  beta, C3: not fitted (one speed" "$tmp/w42.txt" && ! grep -q "nan +- nan\|beta nan" "$tmp/w42.txt" &&
+        ok "  says not fitted, no nan fits" || ko "  $(grep -i "beta" "$tmp/w42.txt")"
+fi
+runs "wavespeed with two speeds" "$tmp/w42b.json" wavespeed --n 6:8 --vimp 0.3,0.5 --quiet --jobs 1 --json &&
+    jcheck "  fitted, beta 1/5 to 1e-3" "$tmp/w42b.json" "j['fitted'] is True and abs(j['beta'] - 0.2) < 1e-3"
+refused "falcon --n 1:1 (T_q and 4R/T_q were nan, exit 0)" \
+    "^granwave falcon --n: 1:1 is one column size, and the study fits tau_N = T_q \(N - 1\) \+ tau_1 over N .* e\.g\. 1:2" \
+    falcon --n 1:1 --quiet --out "$tmp/o"
+refused "falcon --n 7:7 --heights none" "^granwave falcon --n: 7:7 is one column size, .* e\.g\. 6:7 \(one column's collision: granwave chain --n 7\)" \
+    falcon --n 7:7 --heights none --quiet --out "$tmp/o"
+
+# --- 43: atomic writes through a symbolic link
+mkdir -p "$tmp/d43" "$tmp/o43"; ln -s d43/w "$tmp/w43"
+refused "dispersion --wisdom a symbolic link to nothing" "^granwave dispersion --wisdom: '.*w43' is a symbolic link to 'd43/w', which does not exist$" \
+    dispersion --n 16 --t-samples 64 --wisdom "$tmp/w43"
+[ -L "$tmp/w43" ] || ko "  the link was replaced"
+"$GW" dispersion --n 16 --t-samples 64 --wisdom "$tmp/d43/w" >/dev/null 2>&1 </dev/null || ko "  a wisdom file made"
+if runs "dispersion --wisdom a symbolic link to a wisdom file" "$tmp/d43.json" dispersion --n 16 --t-samples 64 --wisdom "$tmp/w43" --json; then
+    [ -L "$tmp/w43" ] && head -c 7 "$tmp/d43/w" | grep -q '(fftw-3' && ok "  the link kept, the wisdom saved to its target" ||
+        ko "  $(ls -l "$tmp/w43")"
+fi
+: >"$tmp/d43/c.json"; ln -s ../d43/c.json "$tmp/o43/chain.json"
+if runs "chain --out DIR whose chain.json is a symbolic link" "$tmp/c43.json" chain --n 3 --out "$tmp/o43"; then
+    [ -L "$tmp/o43/chain.json" ] && jcheck "  the link kept, the results in its target" "$tmp/d43/c.json" "j['n'] == 3" ||
+        ko "  $(ls -l "$tmp/o43/chain.json")"
+fi
 
 echo "test_hostile_chain: $passes passed, $fails failed"
 [ $fails -eq 0 ]

@@ -181,6 +181,22 @@
 #    was restored, passed the check of the file after the case (exit 0, its
 #    row in the table): its row's sample hash is now compared with the
 #    sweep's, exit 2 naming the case and both hashes, the rows before kept.
+# 36 a --dt-out that is not a multiple of the verlet step shortened the step
+#    before each sample: --dt-out 1.7e-5 s took 1e-5 and 7e-6 s steps in turn
+#    (81212 steps to 0.690302 s) while the settings recorded dt 1e-5 (e_n
+#    0.25475 against 0.25429 on the even 8.5e-6 s grid). The automatic step is
+#    now the largest divisor of dt-out below it, recorded as such; a --dt
+#    given that dt-out is not a multiple of is refused (any path: the sweep's
+#    keys too).
+# 37 a sweep journal's '# input' hash was read with strtoull: ' 0x12', '-1'
+#    or 15 digits in place of the 16 hex digits resumed the sweep (exit 0), and
+#    with the sample changed '-000000000000001' was reported as 'fnv1a64
+#    ffffffffffffffff in its journal', ' 0x0000000000012' as 0000000000000012,
+#    '-1' as another sweep. Read strictly now: refused naming the line.
+# 38 layer-make --out LINK (a symbolic link to a file) replaced the link with
+#    a regular file and left its target as it was (the atomic write's
+#    rename). Every atomic write (gw_afile_open) now writes through the link:
+#    the target is replaced, the link kept; a link to nothing is refused.
 # 40 a verlet pluviation depended on --skin, a parameter of the contact list
 #    only: a list rebuild re-created the solver, whose first rhs evaluated the
 #    Hunt-Crossley damping at the step's final velocities where the running
@@ -964,6 +980,78 @@ if runs "  the sweep resumes" sweep "$tmp/w35.ini" --out "$tmp/w35" --quiet; the
         ko "  $(grep '^1,' "$tmp/w35/results.csv" | tail -c 40)"
 fi
 
+# --- 36: a dt-out that is not a multiple of the verlet step -----------------------
+# steps-check WHAT DT T_END: the JSON on stdout records dt DT and t_end T_END, and
+# its steps are T_END / DT (an even grid: no step shortened before a sample)
+steps_check() {
+    local dt st te
+    dt=$(jnum dt "$tmp/stdout"); st=$(jnum steps "$tmp/stdout"); te=$(jnum t_end "$tmp/stdout")
+    if [ "$dt" = "$2" ] && [ "$te" = "$3" ] && awk -v s="$st" -v t="$te" -v h="$dt" 'BEGIN { exit !(s == int(t / h + 0.5)) }'; then
+        ok "  $1: dt $dt s, $st steps to t_end $te s"
+    else
+        ko "  $1: dt $dt, steps $st, t_end $te (expected dt $2 and steps t_end / dt)"
+    fi
+}
+runs "layer-impact --dt-out 7e-6 (above: steps of 1e-5 s recorded, 7e-6 s taken)" \
+    layer-impact --sample "$S300" --dt-out 7e-6 --t-max 0.007 --json && steps_check "dt-out 7e-6" 7e-06 0.007
+runs "layer-impact --dt-out 1.7e-5 (1e-5 and 7e-6 s steps in turn before)" \
+    layer-impact --sample "$S300" --dt-out 1.7e-5 --t-max 0.0068 --json && steps_check "dt-out 1.7e-5" 8.5e-06 0.0068
+cp "$tmp/stdout" "$tmp/a36.json"
+runs "  the same with --dt 8.5e-6 given" layer-impact --sample "$S300" --dt-out 1.7e-5 --dt 8.5e-6 --t-max 0.0068 --json
+for k in e_n_first dissipated_first_contact penetration steps; do
+    [ "$(jnum "$k" "$tmp/stdout")" = "$(jnum "$k" "$tmp/a36.json")" ] && ok "  $k the same as the automatic step's" ||
+        ko "  $k $(jnum "$k" "$tmp/stdout") given, $(jnum "$k" "$tmp/a36.json") automatic"
+done
+runs "layer-impact at the default dt-out 2e-5" layer-impact --sample "$S300" --t-max 0.0068 --json &&
+    steps_check "dt-out 2e-5 (a multiple: the step unchanged)" 1e-05 0.0068
+refused "layer-impact --dt 1e-5 --dt-out 7e-6 (each step shortened to 7e-6 s, dt 1e-5 recorded)" \
+    "^granwave layer-impact --dt-out: 7e-06 s is not a multiple of the verlet step dt = 1e-05 s, .* such as 1e-05 s, a dt that divides it such as 7e-06 s" \
+    layer-impact --sample "$S300" --dt 1e-5 --dt-out 7e-6 --out "$tmp/o"
+refused "layer-impact --dt 3e-6 at the default dt-out" "dt-out: 2e-05 s is not a multiple of the verlet step dt = 3e-06 s" \
+    layer-impact --sample "$S300" --dt 3e-6 --out "$tmp/o"
+runs "  the divisor it names passes" layer-impact --sample "$S300" --dt "$(sed -n 's/.*divides it such as \([^ ]*\) s.*/\1/p' "$tmp/stderr")" \
+    --t-max 1e-4 --json
+printf '[sweep]\nmodel = layer\n[grid]\nvi = 10, 20\n[params]\nsample = %s\nt-max = 1e-4\ndt = 1e-5\ndt-out = 7e-6\n' "$S300" >"$tmp/w36.ini"
+refused "a layer sweep with dt = 1e-5 and dt-out = 7e-6" "^granwave sweep: .*w36.ini: case 0: dt-out: 7e-06 s is not a multiple of the verlet step dt = 1e-05 s" \
+    sweep "$tmp/w36.ini" --out "$tmp/o" --check
+
+# --- 37: a journal's '# input' hash read strictly ----------------------------------
+cp "$S300" "$tmp/s37.txt"
+printf '[sweep]\nmodel = layer\n[grid]\nvi = 10, 20\n[params]\nsample = %s\nt-max = 1e-4\n' "$tmp/s37.txt" >"$tmp/w37.ini"
+if runs "a layer sweep of 2 cases" sweep "$tmp/w37.ini" --out "$tmp/w37" --quiet --jobs 1; then
+    cp "$tmp/w37/journal.csv" "$tmp/j37.orig"
+    for bad in " 0x12" "-1" "000000000000012" " 0x0000000000012" "-000000000000001"; do
+        for changed in 0 1; do
+            cp "$S300" "$tmp/s37.txt"; [ $changed -eq 1 ] && echo "# changed" >>"$tmp/s37.txt"
+            sed "2s/ fnv1a64 .*/ fnv1a64 $bad/" "$tmp/j37.orig" >"$tmp/w37/journal.csv"; rm -f "$tmp/w37/results.csv"
+            cp "$tmp/w37/journal.csv" "$tmp/j37.edited"
+            refused "a journal whose '# input' hash is '$bad'$([ $changed -eq 1 ] && echo ", the sample changed")" \
+                "^granwave sweep: .*w37/journal.csv:2: '# input sample = .*s37.txt fnv1a64 $bad' does not end with ' fnv1a64 ' and the file's content hash in 16 hex digits" \
+                sweep "$tmp/w37.ini" --out "$tmp/w37" --quiet --jobs 1
+            cmp -s "$tmp/w37/journal.csv" "$tmp/j37.edited" && [ ! -e "$tmp/w37/results.csv" ] ||
+                ko "  the journal changed or a table was written"
+        done
+    done
+    cp "$S300" "$tmp/s37.txt"; cp "$tmp/j37.orig" "$tmp/w37/journal.csv"; rm -f "$tmp/w37/results.csv"
+    runs "  the journal restored, the sweep ends" sweep "$tmp/w37.ini" --out "$tmp/w37" --quiet --jobs 1
+fi
+
+# --- 38: layer-make --out through a symbolic link ---------------------------------
+mkdir -p "$tmp/d38"; : >"$tmp/d38/t.txt"; ln -s d38/t.txt "$tmp/l38.txt"
+if runs "layer-make --out a symbolic link to an empty file" layer-make --n 20 --width-rm 10 --t-max 0.005 --out "$tmp/l38.txt"; then
+    [ -L "$tmp/l38.txt" ] && [ "$(readlink "$tmp/l38.txt")" = d38/t.txt ] && head -1 "$tmp/d38/t.txt" | grep -q '^granwave-layer-sample' &&
+        ok "  the link kept, the sample written to its target" ||
+        ko "  link $(ls -l "$tmp/l38.txt"), target $(head -c 30 "$tmp/d38/t.txt")"
+    runs "  layer-impact reads the sample through the link" layer-impact --sample "$tmp/l38.txt" --t-max 1e-4 --json
+    runs "  layer-make over it again" layer-make --n 20 --width-rm 10 --t-max 0.005 --seed 7 --out "$tmp/l38.txt" &&
+        [ -L "$tmp/l38.txt" ] && grep -q '^# .*--seed 7' "$tmp/d38/t.txt" && ok "  the target replaced, the link kept" ||
+        ko "  the second write: $(ls -l "$tmp/l38.txt")"
+    ls "$tmp/d38" | grep -q tmp && ko "  a temporary file left beside the target"
+fi
+ln -s d38/nowhere/s.txt "$tmp/dl38.txt"
+refused "layer-make --out a symbolic link to nothing" "^granwave layer-make: sample: '.*dl38.txt' is a symbolic link to 'd38/nowhere/s.txt', which does not exist$" \
+    layer-make --n 20 --width-rm 10 --t-max 0.005 --out "$tmp/dl38.txt"
+[ -L "$tmp/dl38.txt" ] && [ ! -e "$tmp/d38/nowhere" ] || ko "  the dangling link was replaced or its target made"
 # --- 40: a verlet pluviation at four skins ------------------------------------------------
 # the sample without the lines that name the skin (the command and settings)
 body40() { grep -v '^# \(command\|settings\):' "$1"; }

@@ -307,7 +307,7 @@ int gw_cmd_falcon(int argc, char **argv)
         free(vv);
         return chain_cli_fail(err.msg);
     }
-    if (gw_chain_study_work_check(a, b, nvv + nhh, &err) != GW_OK) {
+    if (gw_chain_falcon_sizes_check(a, b, &err) != GW_OK || gw_chain_study_work_check(a, b, nvv + nhh, &err) != GW_OK) {
         free(vv);
         free(hh);
         return chain_cli_study_fail("falcon", err.msg);

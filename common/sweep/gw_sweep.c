@@ -459,34 +459,54 @@ static char *input_lines(const gw_sweep_config *cfg)
     return s;
 }
 
+/* The content hash that ends a journal's "# input KEY = VALUE fnv1a64 HEX"
+ * line [line, end): 16 lowercase hex digits, no more, no less (strtoull took
+ * " 0x12", "-1" and a shorter hash). *at: where " fnv1a64 " starts. GW_EINVAL
+ * naming the journal's line when it is not so. */
+static int input_line_hash(const char *path, long lineno, const char *line, const char *end, const char **at,
+                           unsigned long long *h, gw_err *err)
+{
+    const char *f = NULL;
+    for (const char *q = line; q + 9 <= end; q++)
+        if (memcmp(q, " fnv1a64 ", 9) == 0)
+            f = q;
+    if (f && gw_fnv1a64_parse(f + 9, (size_t)(end - f - 9), h)) {
+        *at = f;
+        return GW_OK;
+    }
+    const int n = (int)(end - line) < 200 ? (int)(end - line) : 200;
+    return gw_err_set(err, GW_EINVAL, "%s:%ld: '# input %.*s' does not end with ' fnv1a64 ' and the file's content "
+                      "hash in 16 hex digits (an edited journal): restore the line, or remove the journal to rerun "
+                      "its cases", path, lineno, n, line);
+}
+
 /* An existing journal of another config: when one of its "# input" lines
  * names a file of this config whose content differs, say so (a resumed sweep
  * of the same config over a changed sample was "another sweep (different
  * config)", naming neither the file nor the change). */
-static int changed_input(const gw_sweep_config *cfg, const char *buf, size_t len, const char *dir, gw_err *err)
+static int changed_input(const gw_sweep_config *cfg, const char *buf, size_t len, const char *path,
+                         const char *dir, gw_err *err)
 {
     const char *p = memchr(buf, '\n', len);
+    long lineno = 1;
     while (p && (size_t)(p + 1 - buf) < len && strncmp(p + 1, "# input ", 8) == 0) {
-        const char *line = p + 9, *end = memchr(line, '\n', len - (size_t)(line - buf));
+        const char *line = p + 9, *end = memchr(line, '\n', len - (size_t)(line - buf)), *at = NULL;
         if (!end)
             break;
+        unsigned long long was;
+        int rc = input_line_hash(path, ++lineno, line, end, &at, &was, err);
+        if (rc != GW_OK)
+            return rc;
         for (int i = 0; i < cfg->ninputs; i++) {
             const struct gw_sweep_input *in = &cfg->inputs[i];
             size_t kl = strlen(in->key), vl = strlen(in->value);
-            if ((size_t)(end - line) == kl + 3 + vl + 25 && strncmp(line, in->key, kl) == 0 &&
+            if ((size_t)(at - line) == kl + 3 + vl && strncmp(line, in->key, kl) == 0 &&
                 strncmp(line + kl, " = ", 3) == 0 && strncmp(line + kl + 3, in->value, vl) == 0 &&
-                strncmp(line + kl + 3 + vl, " fnv1a64 ", 9) == 0) {
-                char hex[17];
-                memcpy(hex, line + kl + 3 + vl + 9, 16);
-                hex[16] = '\0';
-                char *e;
-                unsigned long long was = strtoull(hex, &e, 16);
-                if (!*e && was != in->hash)
-                    return gw_err_set(err, GW_EINVAL, "%s: %s '%s' changed since the sweep in it started (content "
-                                      "fnv1a64 %016llx in its journal, now %016llx): its finished cases ran on the "
-                                      "old file; restore it, or choose another output", dir, in->key, in->value,
-                                      was, in->hash);
-            }
+                was != in->hash)
+                return gw_err_set(err, GW_EINVAL, "%s: %s '%s' changed since the sweep in it started (content "
+                                  "fnv1a64 %016llx in its journal, now %016llx): its finished cases ran on the "
+                                  "old file; restore it, or choose another output", dir, in->key, in->value,
+                                  was, in->hash);
         }
         p = end;
     }
@@ -849,7 +869,8 @@ int gw_sweep_journal_scan(const char *dir, const gw_sweep_config *cfg, char *don
                           "sweep with the granwave that started it, or remove the journal to rerun its cases", path);
     }
     if (strncmp(buf, "# granwave sweep journal ", 25) != 0 || strncmp(buf, head, strlen(head)) != 0) {
-        int rc = strncmp(buf, "# granwave sweep journal ", 25) == 0 ? changed_input(cfg, buf, len, dir, err) : GW_OK;
+        int rc = strncmp(buf, "# granwave sweep journal ", 25) == 0 ? changed_input(cfg, buf, len, path, dir, err)
+                                                                      : GW_OK;
         const int ours = strncmp(buf, "# granwave sweep journal ", 25) == 0;
         free(buf);
         if (rc != GW_OK)
@@ -862,10 +883,16 @@ int gw_sweep_journal_scan(const char *dir, const gw_sweep_config *cfg, char *don
                           dir);
     }
     size_t good = strlen(head), pos = good;
+    long inl = 1;
     while (pos < len && strncmp(buf + pos, "# input ", 8) == 0) { /* the journal's input lines */
-        const char *nl = memchr(buf + pos, '\n', len - pos);
+        const char *nl = memchr(buf + pos, '\n', len - pos), *at = NULL;
         if (!nl)
             break;
+        unsigned long long was;
+        if (input_line_hash(path, ++inl, buf + pos + 8, nl, &at, &was, err) != GW_OK) {
+            free(buf);
+            return GW_EINVAL;
+        }
         pos = good = (size_t)(nl - buf) + 1;
     }
     long line = 1;

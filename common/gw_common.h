@@ -39,6 +39,23 @@ typedef int (*gw_progress_fn)(void *ctx, long done, long total);
 /* Message for a status code (static string, never NULL). */
 const char *gw_strerror(int status);
 
+/* Interrupts, for an interpreter calling the library from its main thread (the
+ * Python module): a long call in C does not return to the interpreter's own
+ * SIGINT handling until it is done, so Ctrl-C was ignored for as long as the run
+ * took. gw_interrupt_begin installs a SIGINT handler that asks every run under
+ * way in the process to stop: each solver step checks the request and the run
+ * returns GW_ECANCELED ("interrupted at t = ... s"; sweeps and studies stop
+ * taking cases). gw_interrupt_end restores the handler that was there and
+ * returns 1 if SIGINT came in between, else 0. Pairs may nest and overlap
+ * across threads: the first begin installs the handler and clears the request,
+ * the last end restores it and clears the request. GW_OK, or GW_EIO when the
+ * handler could not be installed. Programs that handle signals themselves (the
+ * granwave program) never call these. gw_interrupt_pending: 1 while a request
+ * is pending (what the steps check). */
+int gw_interrupt_begin(void);
+int gw_interrupt_end(void);
+int gw_interrupt_pending(void);
+
 /* Monotonic wall clock in milliseconds (for run-time reports). */
 double gw_clock_ms(void);
 

@@ -253,6 +253,11 @@ static int rk4_advance(gw_solver *s, double tout, double *t, double *y, int *roo
             rc = GW_ELIMIT;
             break;
         }
+        if (gw_interrupt_pending()) { /* SIGINT under gw_interrupt_begin */
+            gw_solver_set_error(s, "rk4: interrupted (SIGINT) at t = %.9g s", r->t);
+            rc = GW_ECANCELED;
+            break;
+        }
         if ((rc = rk4_step(s, r->t, r->y, h, r->ynew)) != 0)
             break;
         r->steps++;
@@ -294,7 +299,7 @@ static int rk4_advance(gw_solver *s, double tout, double *t, double *y, int *roo
     }
     *t = r->t;
     memcpy(y, r->y, (size_t)n * sizeof *y);
-    if (rc == GW_ELIMIT)
+    if (rc == GW_ELIMIT || rc == GW_ECANCELED)
         return rc;
     if (rc != 0) {
         gw_solver_set_error(s, "rk4: model callback failed (code %d) at t = %.9g s", rc, r->t);

@@ -276,6 +276,11 @@ static int verlet_advance(gw_solver *s, double tout, double *t, double *y, int *
             rc = GW_ELIMIT;
             break;
         }
+        if (gw_interrupt_pending()) { /* SIGINT under gw_interrupt_begin */
+            gw_solver_set_error(s, "verlet: interrupted (SIGINT) at t = %.9g s", v->t);
+            rc = GW_ECANCELED;
+            break;
+        }
         if ((rc = verlet_step(s, h)) != 0)
             break;
         v->t = (v->t + h >= tout || tout - (v->t + h) < 1e-9 * dt) ? tout : v->t + h;
@@ -295,7 +300,7 @@ static int verlet_advance(gw_solver *s, double tout, double *t, double *y, int *
     }
     *t = v->t;
     memcpy(y, v->y, (size_t)n * sizeof *y);
-    if (rc == GW_ELIMIT)
+    if (rc == GW_ELIMIT || rc == GW_ECANCELED)
         return rc;
     if (rc != 0) {
         gw_solver_set_error(s, "verlet: model callback failed (code %d) at t = %.9g s", rc, v->t);

@@ -158,7 +158,13 @@ int gw_solver_create(const gw_solver_type *type, const gw_system *sys,
 int gw_solver_advance(gw_solver *s, double tout, double *t, double *y, int *rootsfound)
 {
     s->errmsg[0] = '\0';
-    return s->type->advance(s, tout, t, y, rootsfound);
+    int rc = s->type->advance(s, tout, t, y, rootsfound);
+    if (rc < 0 && rc != GW_ECANCELED && gw_interrupt_pending()) {
+        /* CVODE or ARKode stopped by their right-hand side (gw_sun_rhs) */
+        gw_solver_set_error(s, "%s: interrupted (SIGINT) at t = %.9g s", s->type->name, *t);
+        rc = GW_ECANCELED;
+    }
+    return rc;
 }
 
 int gw_solver_reset(gw_solver *s, double t, const double *y)

@@ -13,18 +13,24 @@
 int gw_sun_rhs(realtype t, N_Vector y, N_Vector ydot, void *ud)
 {
     gw_solver *s = ud;
+    if (gw_interrupt_pending())
+        return -1; /* unrecoverable: gw_solver_advance reports the interrupt */
     return s->sys.rhs(t, N_VGetArrayPointer(y), N_VGetArrayPointer(ydot), s->sys.params);
 }
 
 int gw_sun_rhs_ex(realtype t, N_Vector y, N_Vector ydot, void *ud)
 {
     gw_solver *s = ud;
+    if (gw_interrupt_pending())
+        return -1; /* unrecoverable: gw_solver_advance reports the interrupt */
     return s->sys.rhs_ex(t, N_VGetArrayPointer(y), N_VGetArrayPointer(ydot), s->sys.params);
 }
 
 int gw_sun_rhs_im(realtype t, N_Vector y, N_Vector ydot, void *ud)
 {
     gw_solver *s = ud;
+    if (gw_interrupt_pending())
+        return -1; /* unrecoverable: gw_solver_advance reports the interrupt */
     return s->sys.rhs_im(t, N_VGetArrayPointer(y), N_VGetArrayPointer(ydot), s->sys.params);
 }
 

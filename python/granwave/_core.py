@@ -8,6 +8,7 @@ import ctypes
 import itertools
 import numbers
 import os
+import threading
 
 import numpy as np
 
@@ -242,7 +243,8 @@ class Study:
         out = ctypes.create_string_buffer(self.st.fields_size)
         err = _lib.GwErr()
         try:
-            rc = self.st.run(buf, out, cb.c_fn, None, ctypes.byref(err))
+            with Interruptible():
+                rc = self.st.run(buf, out, cb.c_fn, None, ctypes.byref(err))
             cb.reraise()
             if rc != 0:
                 _raise(rc, err, self.func, self.params)
@@ -257,6 +259,26 @@ class Study:
         lines += ["", "Results (keys of the returned Result):"]
         lines += ["  " + f.name + (f" [{f.unit}]" if f.unit else "") + ": " + f.help for f in self.fields]
         return "\n".join(lines)
+
+
+class Interruptible:
+    """Ctrl-C during a library call. ctypes runs the call with the interpreter
+    released, and Python's own SIGINT handling only acts once the call has
+    returned: a chain of 20000 beads ran for minutes after Ctrl-C. From the main
+    thread, the library's handler is installed for the call
+    (gw_interrupt_begin): SIGINT stops the runs under way at their next step,
+    and KeyboardInterrupt is raised here once the call has returned (nothing is
+    returned from it). Calls from other threads keep Python's handling (only
+    the main thread receives signals in Python)."""
+
+    def __enter__(self):
+        self.on = threading.current_thread() is threading.main_thread() and lib.gw_interrupt_begin() == 0
+        return self
+
+    def __exit__(self, etype, exc, tb):
+        if self.on and lib.gw_interrupt_end() and (etype is None or issubclass(etype, Exception)):
+            raise KeyboardInterrupt
+        return False
 
 
 class Progress:
@@ -430,9 +452,10 @@ def run_sweep(model, grid, params, jobs, progress):
     ncases = ctypes.c_long()
     mod = ctypes.POINTER(_lib.GwSweepModel)()
     err = _lib.GwErr()
-    rc = lib.gw_sweep_run_text(text.encode(), b"sweep", int(jobs), cb.c_fn, None, ctypes.byref(values),
-                               ctypes.byref(ncases), ctypes.byref(mod), ctypes.byref(err))
     try:
+        with Interruptible():
+            rc = lib.gw_sweep_run_text(text.encode(), b"sweep", int(jobs), cb.c_fn, None, ctypes.byref(values),
+                                       ctypes.byref(ncases), ctypes.byref(mod), ctypes.byref(err))
         cb.reraise()
         if rc != 0:
             _raise(rc, err, "sweep")

@@ -113,6 +113,8 @@ _declare("gw_sweep_run_text", ctypes.c_int, ctypes.c_char_p, ctypes.c_char_p, ct
          ctypes.c_void_p, ctypes.POINTER(c_double_p), ctypes.POINTER(ctypes.c_long),
          ctypes.POINTER(ctypes.POINTER(GwSweepModel)), ctypes.POINTER(GwErr))
 _declare("gw_free", None, ctypes.c_void_p)
+_declare("gw_interrupt_begin", ctypes.c_int)
+_declare("gw_interrupt_end", ctypes.c_int)
 
 if lib.gw_param_row_size() != ctypes.sizeof(GwParam) or lib.gw_study_size() != ctypes.sizeof(GwStudy):
     raise ImportError(f"granwave: {path} does not match this module (gw_param {lib.gw_param_row_size()} "

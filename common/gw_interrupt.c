@@ -1,0 +1,62 @@
+/*
+ * gw_interrupt.c: a SIGINT that stops the runs under way (gw_common.h,
+ * gw_interrupt_begin). The request is one lock-free atomic flag: the handler
+ * sets it (async-signal-safe), each solver step reads it (a relaxed load, no
+ * measurable cost). Begin/end pairs are counted under a mutex; the first
+ * installs the handler, the last puts back the one it found.
+ */
+#define _POSIX_C_SOURCE 200809L
+#include <pthread.h>
+#include <signal.h>
+#include <stdatomic.h>
+#include <string.h>
+
+#include "gw_common.h"
+
+static atomic_int requested;
+static pthread_mutex_t lock = PTHREAD_MUTEX_INITIALIZER;
+static int depth;
+static struct sigaction saved;
+
+static void on_sigint(int sig)
+{
+    (void)sig;
+    atomic_store_explicit(&requested, 1, memory_order_relaxed);
+}
+
+int gw_interrupt_pending(void)
+{
+    return atomic_load_explicit(&requested, memory_order_relaxed);
+}
+
+int gw_interrupt_begin(void)
+{
+    int rc = GW_OK;
+    pthread_mutex_lock(&lock);
+    if (depth == 0) {
+        struct sigaction sa;
+        memset(&sa, 0, sizeof sa);
+        sa.sa_handler = on_sigint;
+        sigemptyset(&sa.sa_mask);
+        sa.sa_flags = SA_RESTART; /* reads and writes under way go on */
+        atomic_store(&requested, 0);
+        if (sigaction(SIGINT, &sa, &saved) != 0)
+            rc = GW_EIO;
+    }
+    if (rc == GW_OK)
+        depth++;
+    pthread_mutex_unlock(&lock);
+    return rc;
+}
+
+int gw_interrupt_end(void)
+{
+    pthread_mutex_lock(&lock);
+    int was = gw_interrupt_pending();
+    if (depth > 0 && --depth == 0) {
+        sigaction(SIGINT, &saved, NULL);
+        atomic_store(&requested, 0);
+    }
+    pthread_mutex_unlock(&lock);
+    return was;
+}

@@ -4,10 +4,12 @@
 #ifndef GW_CHAIN_TEST_UTIL_H
 #define GW_CHAIN_TEST_UTIL_H
 
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "gw_chain.h"
+#include "gw_chain_study.h"
 
 /* Solver settings per backend used across the tests: tight enough that the
  * backends' errors are well below every tolerance asserted. */
@@ -43,6 +45,31 @@ static inline gw_chain_params test_params(int n, double v)
     p.n = n;
     p.v_imp = v;
     return p;
+}
+
+/* One bead hitting the wall at v under p (cvode bdf, tight): its restitution
+ * -v_out / v, NaN when the run failed. */
+static inline double test_bead_e(gw_chain_params p, double v)
+{
+    p.n = 1;
+    p.v_imp = v;
+    gw_chain_run_opts o = test_opts("cvode", "bdf");
+    gw_chain_result r;
+    double e = test_collide(&p, &o, &r) == GW_OK ? -r.final_v[0] / v : NAN;
+    gw_chain_result_free(&r);
+    return e;
+}
+
+/* A setup initialised and set from NULL-terminated name/value pairs, row by
+ * row through the study's table: GW_OK or the first refusal (err). The caller
+ * clears s either way. */
+static inline int test_setup_kv(gw_chain_setup *s, const char *const *kv, gw_err *err)
+{
+    gw_chain_setup_init(s);
+    int rc = GW_OK;
+    for (int i = 0; kv[i] && rc == GW_OK; i += 2)
+        rc = gw_param_set(gw_chain_setup_params(), s, kv[i], kv[i + 1], err);
+    return rc;
 }
 
 #endif

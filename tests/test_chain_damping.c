@@ -23,16 +23,6 @@
 #include "chain_test_util.h"
 #include "gw_test.h"
 
-static double bead_e(gw_chain_params p, double v)
-{
-    p.n = 1;
-    p.v_imp = v;
-    gw_chain_run_opts o = test_opts("cvode", "bdf");
-    gw_chain_result r;
-    double e = test_collide(&p, &o, &r) == GW_OK ? -r.final_v[0] / v : NAN;
-    gw_chain_result_free(&r);
-    return e;
-}
 
 static const char *model_name(gw_chain_damping model)
 {
@@ -156,8 +146,8 @@ int main(void)
             calibrated(model, targets[i], &o, &p);
             snprintf(what, sizeof what, "%s constant %.6g: bead restitution at 0.3 m/s",
                      model_name(model), model == GW_DAMP_KUWABARA_KONO ? p.gamma : p.alpha);
-            gw_test_rel(bead_e(p, 0.3), targets[i], 1e-3, what);
-            double e1 = bead_e(p, 0.1), e3 = bead_e(p, 0.3), e10 = bead_e(p, 1.0);
+            gw_test_rel(test_bead_e(p, 0.3), targets[i], 1e-3, what);
+            double e1 = test_bead_e(p, 0.1), e3 = test_bead_e(p, 0.3), e10 = test_bead_e(p, 1.0);
             snprintf(what, sizeof what, "%s: restitution falls with velocity (%.4f, %.4f, %.4f at 0.1, 0.3, 1 m/s)",
                      model_name(model), e1, e3, e10);
             gw_test_true(e1 > e3 && e3 > e10, what);

@@ -55,11 +55,8 @@ static double c_tau(void)
 static int collide_setup(const char *const *kv, gw_chain_collision *c)
 {
     gw_chain_setup s;
-    gw_chain_setup_init(&s);
     gw_err err = {{0}};
-    int rc = GW_OK;
-    for (int i = 0; kv[i] && rc == GW_OK; i += 2)
-        rc = gw_param_set(gw_chain_setup_params(), &s, kv[i], kv[i + 1], &err);
+    int rc = test_setup_kv(&s, kv, &err);
     memset(c, 0, sizeof *c);
     if (rc == GW_OK)
         rc = gw_chain_collision_run(&s, c, &err);
@@ -170,11 +167,7 @@ static double bead_e(gw_chain_damping model, double c, double v)
         p.alpha = c;
     else
         p.gamma = c;
-    gw_chain_run_opts o = test_opts("cvode", "bdf");
-    gw_chain_result r;
-    double e = test_collide(&p, &o, &r) == GW_OK ? -r.final_v[0] / v : NAN;
-    gw_chain_result_free(&r);
-    return e;
+    return test_bead_e(p, v);
 }
 
 static double hc_g(double v, double lam)

@@ -25,6 +25,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "chain_test_util.h"
 #include "gw_chain_study.h"
 #include "gw_test.h"
 
@@ -49,11 +50,8 @@ static void refused(const char *name, const char *value, const char *what)
 static void resolve_refused(const char *const *kv, const char *row)
 {
     gw_chain_setup s;
-    gw_chain_setup_init(&s);
     gw_err err = {{0}};
-    int rc = GW_OK;
-    for (int i = 0; kv[i] && rc == GW_OK; i += 2)
-        rc = gw_param_set(gw_chain_setup_params(), &s, kv[i], kv[i + 1], &err);
+    int rc = test_setup_kv(&s, kv, &err);
     gw_chain_resolved r;
     memset(&r, 0, sizeof r); /* freed below whether or not the resolution ran */
     if (rc == GW_OK)

@@ -446,24 +446,36 @@ int gw_stats_write_files(const gw_stats_analysis *R, const char *dir, gw_err *er
         writer fn;
     } files[] = {{"groups.csv", write_groups}, {"convergence.csv", write_convergence},
                  {"binary.csv", write_binary}, {"walls.csv", write_walls}, {"diagram.csv", write_diagram}};
+    /* the six files of one analysis, or (a write failed) the earlier ones as they were */
+    static const char *const names[] = {"groups.csv", "convergence.csv", "binary.csv", "walls.csv", "diagram.csv",
+                                        "boundary_fit.json", NULL};
+    gw_outset set;
+    memset(&set, 0, sizeof set);
     int rc = gw_mkdir_p(dir, err);
+    if (rc == GW_OK)
+        rc = gw_outset_begin(&set, dir, names, err);
     char path[4096];
     for (size_t i = 0; rc == GW_OK && i < sizeof files / sizeof files[0]; i++) {
-        if (gw_path_join(path, sizeof path, dir, files[i].name) != GW_OK)
-            return gw_err_set(err, GW_EINVAL, "%s: path too long", dir);
+        if (gw_path_join(path, sizeof path, dir, files[i].name) != GW_OK) {
+            rc = gw_err_set(err, GW_EINVAL, "%s: path too long", dir);
+            break;
+        }
         gw_afile f;
         if ((rc = gw_afile_open(&f, path, err)) != GW_OK)
             break;
         files[i].fn(f.fp, R);
         rc = gw_afile_commit(&f, err);
     }
+    if (rc == GW_OK && gw_path_join(path, sizeof path, dir, "boundary_fit.json") != GW_OK)
+        rc = gw_err_set(err, GW_EINVAL, "%s: path too long", dir);
     if (rc == GW_OK) {
-        if (gw_path_join(path, sizeof path, dir, "boundary_fit.json") != GW_OK)
-            return gw_err_set(err, GW_EINVAL, "%s: path too long", dir);
         cJSON *j = gw_stats_json(R, 0);
         rc = j ? gw_json_write(path, j, err) : gw_err_set(err, GW_ENOMEM, "%s: out of memory", path);
         cJSON_Delete(j);
     }
+    if (rc == GW_OK)
+        rc = gw_outset_commit(&set, err);
+    gw_outset_abort(&set);
     return rc;
 }
 

@@ -70,6 +70,11 @@ typedef struct gw_stats_table {
     int ninputs;
     char **input_key, **input_value;              /* [ninputs] */
     unsigned long long *input_hash;               /* [ninputs] */
+    /* FNV-1a 64 of the table's bytes (gw_stats_table_read; 0 and has_content_hash
+     * 0 for a table parsed from text): the outputs record it beside the path, so
+     * that the table an analysis read can be told from a later version of it */
+    unsigned long long content_hash;
+    int has_content_hash;
 } gw_stats_table;
 
 /* Columns layer-stats needs; a table without one of them is refused. */

@@ -246,6 +246,11 @@ cJSON *gw_stats_json(const gw_stats_analysis *R, int full)
     cJSON_AddStringToObject(o, "version", gw_version());
     cJSON_AddStringToObject(o, "command", R->cmdline ? R->cmdline : "(library call)");
     cJSON_AddStringToObject(o, "input", R->input);
+    if (t->has_content_hash) {
+        char hx[17];
+        snprintf(hx, sizeof hx, "%016llx", t->content_hash);
+        cJSON_AddStringToObject(o, "input_fnv1a64", hx);
+    }
     cJSON_AddNumberToObject(o, "criterion", R->gs.criterion);
     cJSON_AddNumberToObject(o, "rows", (double)t->nrows);
     cJSON *p = cJSON_AddObjectToObject(o, "params");
@@ -280,6 +285,8 @@ static void num(FILE *fp, double v)
 static void head(FILE *fp, const gw_stats_analysis *R, const char *what)
 {
     fprintf(fp, "# granwave %s layer-stats\n# command: %s\n# input: %s\n", gw_version(), R->cmdline ? R->cmdline : "(library call)", R->input);
+    if (R->t.has_content_hash) /* the version of the table read */
+        fprintf(fp, "# input fnv1a64: %016llx\n", R->t.content_hash);
     fprintf(fp, "# criterion: %.6g (a group bounces globally when its share of bouncing impact points >= "
                 "criterion)\n# %s\n", R->gs.criterion, what);
 }

@@ -1,0 +1,228 @@
+#!/bin/bash
+# test_hostile_outputs.sh GRANWAVE SRCDIR: the eleventh hostile pass (issue 18),
+# over the files the commands write with --out and their agreement with what the
+# program prints. Each check asserts behaviour (exit code, the message naming the
+# file and the OS error, which files a directory holds and which run wrote each):
+#  1 a write that fails leaves the earlier run's files as they were: chain --n 1
+#    into DIR, then chain --n 7 into DIR with its chain_beads.csv too large for
+#    the file-size limit (the full disk of a 64 KiB tmpfs behaves alike, ENOSPC)
+#    exited 1 naming the file, but left the new chain_wall_force.csv (n = 7)
+#    beside the old chain.json, chain_beads.csv and chain.h5 (n = 1).
+#  2 falcon --n 1:16, then falcon --n 1:8 into the same DIR kept trace_n15_*
+#    of the first run beside the second's tables (notebooks/plot_falcon.py draws
+#    the N = 15 trace when the file is there).
+#  3 layer-impact failing (exit 1, --energy-tol) after a good run into the same
+#    DIR kept the good run's impact.json, ledger.csv, crowns*.csv, impact.h5 and
+#    snapshot_end.vtk beside the failed run's snapshot_0.vtk and
+#    snapshot_failure.vtk.
+#  4 a layer-impact killed (kill -9) during its run replaced the earlier run's
+#    snapshot_0.vtk (written at its first sample) beside the earlier results; it
+#    now leaves the earlier files as they were and a temporary (NAME.tmp.XXXXXX,
+#    never read as a result), removed by the next run into DIR.
+#  5 dispersion: the study's files and --column-n's wall_spectrum.csv are one
+#    set: either run removes the other's.
+#  6 layer-stats records the content hash of the table it read (the path alone
+#    did not tell the table analysed from a later version of it).
+#  7 what behaved correctly, kept: chain --json, chain.json, the CSV traces and
+#    chain.h5 agree (values to the printed digits, units, settings), and a rerun
+#    from the recorded settings reproduces the trace byte for byte.
+set -u
+GW=$1
+SRC=${2:-.}
+PY=/usr/bin/python3
+tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
+# shellcheck source=tests/refusal_lib.sh
+. "$(dirname "${BASH_SOURCE[0]}")/refusal_lib.sh"
+
+# cmdlines DIR: the distinct "command:" lines of the CSV files in DIR
+cmdlines() { grep -ho 'command: granwave [^;]*' "$1"/*.csv 2>/dev/null | sed 's/ settings:.*//' | sort -u; }
+# notmp DIR: no temporary left in DIR
+notmp() { ! ls "$1" | grep -q '\.tmp\.'; }
+
+# --- 1: a write that fails leaves the earlier run's files -------------------
+d=$tmp/c1
+"$GW" chain --n 1 --dt-out 1e-6 --out "$d" >/dev/null 2>&1 || ko "1: chain --n 1 --out"
+files=$(ls "$d" | tr '\n' ' ') # chain.h5 too, when built with HDF5
+# a file-size limit of 32 KiB: chain_wall_force.csv of n = 7 (9 kB) fits,
+# chain_beads.csv (63 kB) does not (write returns EFBIG; SIGXFSZ ignored)
+(trap '' XFSZ; ulimit -f 32; exec "$GW" chain --n 7 --solver rk4 --dt-out 1e-6 --out "$d" --json) \
+    >"$tmp/stdout" 2>"$tmp/stderr"
+rc=$?
+[ $rc -eq 1 ] && grep -q "^granwave chain --out: $d/chain_beads.csv: write failed: File too large" "$tmp/stderr" &&
+    [ ! -s "$tmp/stdout" ] && ok "1: chain, a write that fails: exit 1 naming the file and the OS error" ||
+    ko "1: chain, a write that fails: exit $rc, $(cat "$tmp/stderr")"
+n=$(cmdlines "$d")
+[ "$n" = "command: granwave chain --n 1 --dt-out 1e-6 --out $d" ] &&
+    grep -q '"n":	1,' "$d/chain.json" && [ "$(ls "$d" | tr '\n' ' ')" = "$files" ] &&
+    notmp "$d" && ok "1: the earlier run's files left as they were, nothing of the failed run" ||
+    ko "1: files after the failed write: $(ls "$d" | tr '\n' ' '); runs: $n"
+# and the same run without the limit replaces all four
+"$GW" chain --n 7 --solver rk4 --dt-out 1e-6 --out "$d" >/dev/null 2>&1 &&
+    [ "$(cmdlines "$d")" = "command: granwave chain --n 7 --solver rk4 --dt-out 1e-6 --out $d" ] &&
+    grep -q '"n":	7,' "$d/chain.json" && ok "1: the run without the limit replaces the files" ||
+    ko "1: rerun: $(cmdlines "$d")"
+# a run failure (exit 1) after it: its trace and chain_failure.json, no chain.json
+"$GW" chain --n 3 --energy-tol 1e-30 --out "$d" >/dev/null 2>&1
+rc=$?
+[ $rc -eq 1 ] && [ ! -e "$d/chain.json" ] && [ -e "$d/chain_failure.json" ] &&
+    [ "$(cmdlines "$d")" = "command: granwave chain --n 3 --energy-tol 1e-30 --out $d" ] &&
+    ok "1: a failed run's trace and chain_failure.json, the earlier chain.json gone" ||
+    ko "1: failed run after a good one: exit $rc, $(ls "$d" | tr '\n' ' ')"
+
+# --- 2: falcon, traces of an earlier run ------------------------------------
+d=$tmp/f2
+"$GW" falcon --n 1:16 --heights none --quiet --out "$d" >/dev/null 2>&1 && [ -e "$d/trace_n15_wall_force.csv" ] ||
+    ko "2: falcon --n 1:16 wrote no N = 15 trace"
+"$GW" falcon --n 1:8 --heights none --quiet --out "$d" >/dev/null 2>&1 || ko "2: falcon --n 1:8"
+[ ! -e "$d/trace_n15_wall_force.csv" ] && [ ! -e "$d/trace_n15.h5" ] &&
+    [ "$(cmdlines "$d")" = "command: granwave falcon --n 1:8 --heights none --quiet --out $d" ] && notmp "$d" &&
+    ok "2: falcon --n 1:8 after --n 1:16: no N = 15 trace of the earlier run left" ||
+    ko "2: falcon files after --n 1:8: $(ls "$d" | tr '\n' ' '); runs $(cmdlines "$d" | tr '\n' '|')"
+
+# --- 3: layer-impact, a failed run after a good one ---------------------------
+S=$tmp/s20.txt
+"$GW" layer-make --n 20 --width-rm 10 --seed 1 --out "$S" >/dev/null 2>&1 || ko "3: layer-make"
+d=$tmp/l3
+"$GW" layer-impact --sample "$S" --t-max 0.01 --out "$d" >/dev/null 2>&1 && [ -e "$d/impact.json" ] ||
+    ko "3: layer-impact --out"
+"$GW" layer-impact --sample "$S" --t-max 0.01 --energy-tol 1e-12 --out "$d" >/dev/null 2>"$tmp/stderr"
+rc=$?
+[ $rc -eq 1 ] && grep -q "state at failure in $d/snapshot_failure.vtk" "$tmp/stderr" &&
+    [ "$(ls "$d" | tr '\n' ' ')" = "snapshot_0.vtk snapshot_failure.vtk " ] &&
+    ok "3: layer-impact failing after a good run: its snapshots, none of the earlier results" ||
+    ko "3: layer-impact failure: exit $rc, $(ls "$d" | tr '\n' ' ')"
+"$GW" layer-impact --sample "$S" --t-max 0.01 --out "$d" >/dev/null 2>&1
+[ -e "$d/impact.json" ] && [ ! -e "$d/snapshot_failure.vtk" ] && [ -e "$d/snapshots.pvd" ] &&
+    ok "3: a good run after it: results, no snapshot_failure.vtk" || ko "3: good run after failure: $(ls "$d" | tr '\n' ' ')"
+# a write that fails (ledger.csv, 78 kB, over a 48 KiB limit): the earlier files stay
+cp "$d/impact.json" "$tmp/impact.before"
+(trap '' XFSZ; ulimit -f 48; exec "$GW" layer-impact --sample "$S" --t-max 0.01 --vi 15 --out "$d") \
+    >/dev/null 2>"$tmp/stderr"
+rc=$?
+[ $rc -eq 1 ] && grep -q "^granwave layer-impact --out: $d/[a-z_]*\.[a-z5]*: write failed: File too large" "$tmp/stderr" &&
+    cmp -s "$d/impact.json" "$tmp/impact.before" && [ "$(cmdlines "$d")" = "command: granwave layer-impact --sample $S --t-max 0.01 --out $d" ] &&
+    notmp "$d" && ok "3: layer-impact, a write that fails: exit 1 naming the file, the earlier run's files as they were" ||
+    ko "3: layer-impact write failure: exit $rc, $(cat "$tmp/stderr"), runs $(cmdlines "$d" | tr '\n' '|')"
+
+# --- 4: layer-impact killed during its run -----------------------------------
+d=$tmp/l4
+"$GW" layer-impact --sample "$S" --t-max 0.01 --out "$d" >/dev/null 2>&1 || ko "4: layer-impact --out"
+cp -r "$d" "$tmp/l4.before"
+# another impact point (its snapshot_0.vtk differs), killed once its first snapshot is made
+"$GW" layer-impact --sample "$S" --x 0.3 --full --t-max 1 --out "$d" >/dev/null 2>&1 &
+pid=$!
+for _ in $(seq 200); do
+    [ -n "$(find "$d" -name 'snapshot_0.vtk*' -newer "$tmp/l4.before" 2>/dev/null)" ] && break
+    sleep 0.05
+done
+kill -9 $pid 2>/dev/null; wait $pid 2>/dev/null
+left=$(ls "$d" | grep '\.tmp\.' | tr '\n' ' ')
+diff -r "$d" "$tmp/l4.before" 2>&1 | grep -v '^Only in .*: snapshot_0\.vtk\.tmp\.' | grep -q . &&
+    ko "4: a run killed during its run changed the earlier run's files: $(diff -rq "$d" "$tmp/l4.before" | head -3)" ||
+    { echo "$left" | grep -qE '^snapshot_0\.vtk\.tmp\.[A-Za-z0-9]{6} $' &&
+      ok "4: layer-impact killed during its run: the earlier run's files as they were, and a temporary" ||
+      ko "4: killed run left: $(ls "$d" | tr '\n' ' ')"; }
+"$GW" layer-impact --sample "$S" --t-max 0.01 --out "$d" >/dev/null 2>&1
+notmp "$d" && [ -e "$d/impact.json" ] && ok "4: the next run removes the temporary" ||
+    ko "4: after the next run: $(ls "$d" | tr '\n' ' ')"
+
+# --- 5: dispersion, study and --column-n --------------------------------------
+d=$tmp/d5
+"$GW" dispersion --n 64 --t-samples 256 --out "$d" >/dev/null 2>&1 && [ -e "$d/dispersion.json" ] ||
+    ko "5: dispersion --out"
+"$GW" dispersion --column-n 3 --out "$d" >/dev/null 2>&1
+[ "$(ls "$d" | tr '\n' ' ')" = "wall_spectrum.csv " ] && ok "5: --column-n after the study: its file only" ||
+    ko "5: --column-n after the study: $(ls "$d" | tr '\n' ' ')"
+"$GW" dispersion --n 64 --t-samples 256 --out "$d" >/dev/null 2>&1
+[ "$(ls "$d" | tr '\n' ' ')" = "dispersion.json dispersion_power.csv dispersion_ridge.csv " ] &&
+    ok "5: the study after --column-n: its three files only" || ko "5: the study after --column-n: $(ls "$d" | tr '\n' ' ')"
+
+# --- 6: layer-stats records the table it read ---------------------------------
+cat >"$tmp/sw.ini" <<CFG
+[sweep]
+model = layer
+[grid]
+point = 0:1
+[params]
+sample = $S
+points = 2
+t-max = 0.004
+CFG
+"$GW" sweep "$tmp/sw.ini" --out "$tmp/sw" --quiet --jobs 1 >/dev/null 2>&1 || ko "6: sweep"
+"$GW" layer-stats "$tmp/sw/results.csv" --out "$tmp/st" --json >"$tmp/st.json" 2>/dev/null || ko "6: layer-stats"
+"$PY" - "$tmp/sw/results.csv" "$tmp/st.json" "$tmp/st" <<'PY' && ok "6: layer-stats: the table's content hash in the JSON and every CSV" || ko "6: layer-stats input hash"
+import json, os, sys
+h = 14695981039346656037
+for c in open(sys.argv[1], "rb").read():
+    h = ((h ^ c) * 1099511628211) % 2**64
+want = "%016x" % h
+j = json.load(open(sys.argv[2]))
+bf = json.load(open(os.path.join(sys.argv[3], "boundary_fit.json")))
+bad = [x for x in (j.get("input_fnv1a64"), bf.get("input_fnv1a64")) if x != want]
+for name in ("groups.csv", "convergence.csv", "binary.csv", "walls.csv", "diagram.csv"):
+    if "# input fnv1a64: " + want not in open(os.path.join(sys.argv[3], name)).read().split("\n")[:6]:
+        bad.append(name)
+bad and print(bad)
+sys.exit(1 if bad else 0)
+PY
+
+# --- 7: chain's files against its --json (behaved right; kept) ----------------
+d=$tmp/c7
+"$GW" chain --n 7 --solver rk4 --out "$d" --json >"$tmp/c7.json" 2>/dev/null || ko "7: chain --out --json"
+"$PY" - "$tmp/c7.json" "$d" <<'PY' && ok "7: chain: stdout JSON, chain.json, CSV traces and chain.h5 agree" || ko "7: chain files against --json"
+import json, os, sys
+import numpy as np
+import h5py
+j = json.load(open(sys.argv[1])); d = sys.argv[2]
+bad = []
+if json.load(open(os.path.join(d, "chain.json"))) != j:
+    bad.append("chain.json differs from stdout")
+def table(name):
+    lines = open(os.path.join(d, name)).read().split("\n")
+    head = [l for l in lines if l.startswith("#")]
+    cols = lines[len(head)].split(",")
+    return head, cols, np.loadtxt(lines[len(head) + 1:], delimiter=",", ndmin=2)
+hw, cw, w = table("chain_wall_force.csv")
+hb, cb, b = table("chain_beads.csv")
+st = json.dumps(j["settings"], separators=(",", ":"))
+for h in (hw, hb):
+    if h[0] != "# granwave " + j["version"] or h[2] != "# settings: " + st:
+        bad.append("header: %s" % h[:1])
+if cw != ["t_s", "f_wall_N"] or cb[0] != "t_s" or len(cb) != 1 + 2 * j["n"]:
+    bad.append("columns")
+k = np.argmax(w[:, 1])  # F_max and tau_max are the sampled maximum, printed to 13 digits
+if float("%.12e" % j["f_max"]) != w[k, 1] or float("%.12e" % j["tau_max"]) != w[k, 0]:
+    bad.append("f_max %r/%r tau_max %r/%r" % (j["f_max"], w[k, 1], j["tau_max"], w[k, 0]))
+if float("%.12e" % j["t_end"]) != w[-1, 0]:
+    bad.append("t_end")
+if any(float("%.12e" % v) != x for v, x in zip(j["final_velocities"], b[-1, 1 + j["n"]:])):
+    bad.append("final velocities")
+h5 = os.path.join(d, "chain.h5")  # absent in a build without HDF5
+f = h5py.File(h5, "r") if os.path.exists(h5) else None
+if f is None:
+    pass
+elif f.attrs["run"].decode() != "\n".join(l[2:] for l in hw):
+    bad.append("h5 run attribute")
+if f is not None:
+    units = {k: f[k].attrs["units"].decode() for k in ("t", "f_wall", "x", "v")}
+    if units != {"t": "s", "f_wall": "N", "x": "m", "v": "m/s"}:
+        bad.append("units %s" % units)
+    # the CSV prints 13 significant digits of the HDF5 doubles
+    for a, c in ((f["t"][:], w[:, 0]), (f["f_wall"][:], w[:, 1]), (f["x"][:], b[:, 1:1 + j["n"]]),
+                 (f["v"][:], b[:, 1 + j["n"]:])):
+        if a.shape != c.shape or np.any(np.vectorize(lambda x: float("%.12e" % x))(a) != c):
+            bad.append("h5 against CSV")
+bad and print(bad)
+sys.exit(1 if bad else 0)
+PY
+# the settings recorded rerun the same trace (the header's command line aside)
+s=$("$PY" -c "import json,sys; s=json.load(open(sys.argv[1]))['settings']; m=s['model']; v=s['solver']; print('--k %r --kwall %r --mass %r --solver %s --dt %r --dt-max %r --t-max %r --dt-out %r' % (m['k'], m['kwall'], m['mass'], v['name'], v['dt'], v['dt_max'], v['t_max'], v['dt_out']))" "$tmp/c7.json")
+# shellcheck disable=SC2086
+"$GW" chain --n 7 $s --out "$tmp/c7b" >/dev/null 2>&1 &&
+    cmp -s <(sed 2d "$d/chain_wall_force.csv") <(sed 2d "$tmp/c7b/chain_wall_force.csv") &&
+    cmp -s <(sed 2d "$d/chain_beads.csv") <(sed 2d "$tmp/c7b/chain_beads.csv") &&
+    ok "7: a rerun from the recorded settings reproduces the traces byte for byte" ||
+    ko "7: rerun from the recorded settings ($s) differs"
+
+echo "test_hostile_outputs: $passes passed, $fails failed"
+[ $fails -eq 0 ]

@@ -29,6 +29,8 @@
 #  8 an HDF5 file that could not be written (full disk, file-size limit) made
 #    HDF5 fail inside H5Fclose: chain, layer-make and layer-impact crashed
 #    (segmentation fault, exit 139, with up to 72 lines of HDF5's error stack).
+#  9 layer-stats wrote a file name holding a line break as it is: the rest of
+#    the name was the line a CSV reader takes for the column names.
 set -u
 GW=$1
 SRC=${2:-.}
@@ -264,6 +266,27 @@ if [ "$h5" = 1 ]; then
         ok "8: an .h5 sample reads back: the impact on it equals the one on the text sample" ||
         ko "8: .h5 sample written from memory"
 fi
+
+# --- 9: a line break in a file name ----------------------------------------------
+# layer-stats wrote its command line and input path as they are: a table under
+# "nl<newline>x/" put the line "x/r.csv --out ..." where the CSV's column names
+# belong (every other command writes its header through one comment writer)
+D=$tmp/$'nl\nx'
+mkdir -p "$D" && cp "$tmp/sw/results.csv" "$D/r.csv"
+"$GW" layer-stats "$D/r.csv" --out "$D/s" >/dev/null 2>&1 || ko "9: layer-stats on a table under a name with a line break"
+"$PY" - "$D/s" <<'PY' && ok "9: layer-stats: a line break in a file name stays inside the comment lines" || ko "9: layer-stats header broken by a line break"
+import os, sys
+bad = []
+for name in ("groups.csv", "convergence.csv", "binary.csv", "walls.csv", "diagram.csv"):
+    lines = open(os.path.join(sys.argv[1], name)).read().split("\n")
+    i = 0
+    while lines[i].startswith("#"):
+        i += 1
+    if "," not in lines[i] or "/" in lines[i] or any(l.startswith("#") for l in lines[i:]):
+        bad.append("%s: %r" % (name, lines[i][:60]))
+bad and print(bad)
+sys.exit(1 if bad else 0)
+PY
 
 echo "test_hostile_outputs: $passes passed, $fails failed"
 [ $fails -eq 0 ]

@@ -282,9 +282,25 @@ static void num(FILE *fp, double v)
         fprintf(fp, ",%.9g", v);
 }
 
+/* "# LABEL: TEXT" where every line break in text (a file name may hold one)
+ * starts a new comment line: the next line of a CSV file never reads as its
+ * header or as data. */
+static void comment_kv(FILE *fp, const char *label, const char *text)
+{
+    fprintf(fp, "# %s: ", label);
+    for (const char *p = text ? text : ""; *p; p++)
+        if (*p == '\n' || *p == '\r')
+            fputs("\n# ", fp);
+        else
+            fputc(*p, fp);
+    fputc('\n', fp);
+}
+
 static void head(FILE *fp, const gw_stats_analysis *R, const char *what)
 {
-    fprintf(fp, "# granwave %s layer-stats\n# command: %s\n# input: %s\n", gw_version(), R->cmdline ? R->cmdline : "(library call)", R->input);
+    fprintf(fp, "# granwave %s layer-stats\n", gw_version());
+    comment_kv(fp, "command", R->cmdline ? R->cmdline : "(library call)");
+    comment_kv(fp, "input", R->input);
     if (R->t.has_content_hash) /* the version of the table read */
         fprintf(fp, "# input fnv1a64: %016llx\n", R->t.content_hash);
     fprintf(fp, "# criterion: %.6g (a group bounces globally when its share of bouncing impact points >= "

@@ -144,11 +144,14 @@ void gw_afile_abort(gw_afile *f);
  * beside this run's results would read as one of them). gw_outset_abort (a
  * write failed, or the run was refused) removes the staged temporaries: the
  * directory is left as the earlier run left it. names: every file the command
- * may write into dir, NULL-terminated; begin removes the temporaries of these
- * names that a run killed before its commit left ("NAME.tmp.XXXXXX"). A set
- * may stay open through a long run (layer-impact's snapshots): SIGINT, SIGTERM
- * and SIGHUP are held only while each file is written and while the staged
- * files are placed or removed. One set per thread. */
+ * may write into dir, NULL-terminated. Two runs placing their sets in one
+ * directory at once place them one after the other (flock on the directory):
+ * it holds the last one's files, never some of each. A set may stay open
+ * through a long run (layer-impact's snapshots): SIGINT, SIGTERM and SIGHUP
+ * are held only while each file is written and while the staged files are
+ * placed or removed; a run killed (kill -9) before its commit leaves its
+ * temporaries ("NAME.tmp.XXXXXX", never read as results) and the earlier
+ * run's files as they were. One set per thread. */
 typedef struct gw_outset {
     char dir[4096];
     const char *const *names;

@@ -6,12 +6,12 @@
  * is refused before any read, so nothing can block), reads bounded in size.
  */
 #define _POSIX_C_SOURCE 200809L
-#include <dirent.h>
 #include <errno.h>
 #include <fcntl.h>
 #include <signal.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/file.h>
 #include <sys/stat.h>
 #include <pthread.h>
 #include <time.h>
@@ -206,22 +206,6 @@ int gw_outset_begin(gw_outset *s, const char *dir, const char *const *names, gw_
     if (snprintf(s->dir, sizeof s->dir, "%s", dir) >= (int)sizeof s->dir)
         return gw_err_set(err, GW_EINVAL, "%s: output path too long", dir);
     s->names = names;
-    /* the temporaries of these names left by a run killed before its commit
-     * ("NAME.tmp.XXXXXX"): never read as results, removed here */
-    DIR *d = names ? opendir(dir) : NULL;
-    for (struct dirent *e; d && (e = readdir(d));)
-        for (int k = 0; names[k]; k++) {
-            size_t ln = strlen(names[k]);
-            if (strncmp(e->d_name, names[k], ln) == 0 && strncmp(e->d_name + ln, ".tmp.", 5) == 0 &&
-                strlen(e->d_name + ln + 5) == 6) {
-                char p[4096 + 512];
-                if (snprintf(p, sizeof p, "%s/%s", dir, e->d_name) < (int)sizeof p)
-                    unlink(p);
-                break;
-            }
-        }
-    if (d)
-        closedir(d);
     s->active = 1;
     cur_set = s;
     return GW_OK;
@@ -277,17 +261,19 @@ int gw_outset_commit(gw_outset *s, gw_err *err)
     if (!s->active)
         return gw_err_set(err, GW_EIO, "%s: no output set open", s->dir);
     int rc = GW_OK;
-    int i = 0;
     outset_hold(s);
-    for (; i < s->n; i++)
-        if (rename(s->tmp[i], s->path[i]) != 0) {
+    /* two runs into one directory place their sets one after the other, never
+     * file by file in turn: the directory holds the last one's files, all */
+    int dfd = open(s->dir, O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+    if (dfd >= 0)
+        flock(dfd, LOCK_EX);
+    for (int i = 0; rc == GW_OK && i < s->n; i++) /* a temporary removed meanwhile: nothing placed */
+        if (access(s->tmp[i], F_OK) != 0)
+            rc = gw_err_set(err, GW_EIO, "%s: write failed: its temporary %s is gone: %s", s->path[i], s->tmp[i],
+                            strerror(errno));
+    for (int i = 0; rc == GW_OK && i < s->n; i++)
+        if (rename(s->tmp[i], s->path[i]) != 0)
             rc = gw_err_set(err, GW_EIO, "%s: write failed: %s", s->path[i], strerror(errno));
-            break;
-        }
-    if (rc != GW_OK) { /* what is not in place is removed */
-        for (; i < s->n; i++)
-            unlink(s->tmp[i]);
-    }
     /* an earlier run's file of this set that this run did not write */
     for (int k = 0; rc == GW_OK && s->names && s->names[k]; k++) {
         char p[4096 + 256];
@@ -302,6 +288,11 @@ int gw_outset_commit(gw_outset *s, gw_err *err)
         if (!mine && unlink(p) != 0 && errno != ENOENT)
             rc = gw_err_set(err, GW_EIO, "%s: cannot remove the earlier run's file: %s", p, strerror(errno));
     }
+    if (rc != GW_OK) /* what is not in place is removed (a placed file's temporary name is gone) */
+        for (int i = 0; i < s->n; i++)
+            unlink(s->tmp[i]);
+    if (dfd >= 0)
+        close(dfd); /* and its lock */
     outset_close(s);
     outset_release(s);
     return rc;

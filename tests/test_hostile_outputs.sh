@@ -18,7 +18,8 @@
 #  4 a layer-impact killed (kill -9) during its run replaced the earlier run's
 #    snapshot_0.vtk (written at its first sample) beside the earlier results; it
 #    now leaves the earlier files as they were and a temporary (NAME.tmp.XXXXXX,
-#    never read as a result), removed by the next run into DIR.
+#    never read as a result). Two runs into one DIR at once leave all the files
+#    of one of them.
 #  5 dispersion: the study's files and --column-n's wall_spectrum.csv are one
 #    set: either run removes the other's.
 #  6 layer-stats records the content hash of the table it read (the path alone
@@ -127,9 +128,24 @@ diff -r "$d" "$tmp/l4.before" 2>&1 | grep -v '^Only in .*: snapshot_0\.vtk\.tmp\
     { echo "$left" | grep -qE '^snapshot_0\.vtk\.tmp\.[A-Za-z0-9]{6} $' &&
       ok "4: layer-impact killed during its run: the earlier run's files as they were, and a temporary" ||
       ko "4: killed run left: $(ls "$d" | tr '\n' ' ')"; }
-"$GW" layer-impact --sample "$S" --t-max 0.01 --out "$d" >/dev/null 2>&1
-notmp "$d" && [ -e "$d/impact.json" ] && ok "4: the next run removes the temporary" ||
+"$GW" layer-impact --sample "$S" --t-max 0.01 --vi 12 --out "$d" >/dev/null 2>&1
+[ "$(cmdlines "$d")" = "command: granwave layer-impact --sample $S --t-max 0.01 --vi 12 --out $d" ] &&
+    [ "$(ls "$d" | grep -v '\.tmp\.' | tr '\n' ' ')" = "$(ls "$tmp/l4.before" | tr '\n' ' ')" ] &&
+    ok "4: the next run places its files (the killed run's temporary aside)" ||
     ko "4: after the next run: $(ls "$d" | tr '\n' ' ')"
+# two runs placing their sets into one directory at once: all files of one of them
+d=$tmp/c4
+for k in 1 2 3 4; do
+    "$GW" chain --n 2 --vimp 0.2 --dt-out 1e-7 --out "$d" >/dev/null 2>&1 &
+    "$GW" chain --n 3 --vimp 0.3 --dt-out 1e-7 --out "$d" >/dev/null 2>&1 &
+    wait
+    one=$(cmdlines "$d" | wc -l)
+    n=$(cmdlines "$d" | sed -n 's/.*--n \([0-9]\).*/\1/p' | head -1)
+    grep -q "\"n\":.$n," "$d/chain.json" || one=0
+    [ "$one" -eq 1 ] || break
+done
+[ "$one" -eq 1 ] && notmp "$d" && ok "4: two runs at once into one directory: all files of one run" ||
+    ko "4: two runs at once: $(cmdlines "$d" | tr '\n' '|')"
 
 # --- 5: dispersion, study and --column-n --------------------------------------
 d=$tmp/d5

@@ -23,7 +23,8 @@
 #  5 dispersion: the study's files and --column-n's wall_spectrum.csv are one
 #    set: either run removes the other's.
 #  6 layer-stats records the content hash of the table it read (the path alone
-#    did not tell the table analysed from a later version of it).
+#    did not tell the table analysed from a later version of it); with a write
+#    that failed it exited 1 but printed its JSON on stdout.
 #  7 what behaved correctly, kept: chain --json, chain.json, the CSV traces and
 #    chain.h5 agree (values to the printed digits, units, settings), and a rerun
 #    from the recorded settings reproduces the trace byte for byte.
@@ -189,6 +190,17 @@ for name in ("groups.csv", "convergence.csv", "binary.csv", "walls.csv", "diagra
 bad and print(bad)
 sys.exit(1 if bad else 0)
 PY
+
+# a write that fails (groups.csv over a 1 KiB limit): exit 1 naming it, nothing on
+# stdout (the JSON was printed before), the earlier files as they were
+cp -r "$tmp/st" "$tmp/st.before"
+(trap '' XFSZ; ulimit -f 1; exec "$GW" layer-stats "$tmp/sw/results.csv" --criterion 0.5 --out "$tmp/st" --json) \
+    >"$tmp/stdout" 2>"$tmp/stderr"
+rc=$?
+[ $rc -eq 1 ] && grep -q "^granwave layer-stats --out: $tmp/st/groups.csv: write failed: File too large" "$tmp/stderr" &&
+    [ ! -s "$tmp/stdout" ] && diff -r "$tmp/st" "$tmp/st.before" >/dev/null &&
+    ok "6: layer-stats, a write that fails: exit 1 naming the file, nothing on stdout, the earlier files" ||
+    ko "6: layer-stats write failure: exit $rc, $(wc -c <"$tmp/stdout") bytes on stdout, $(head -c 200 "$tmp/stderr")"
 
 # --- 7: chain's files against its --json (behaved right; kept) ----------------
 d=$tmp/c7

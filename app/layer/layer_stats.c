@@ -179,7 +179,9 @@ int gw_cmd_layer_stats(int argc, char **argv)
         fprintf(stderr, "granwave layer-stats --out: %s\n", err.msg);
         status = 1;
     }
-    if (json) {
+    if (status != 0) {
+        /* as every other command: nothing on stdout when the files were not written */
+    } else if (json) {
         cJSON *j = gw_stats_json(&R, 1);
         if (!j || gw_json_print(j, stdout) != GW_OK)
             status = 1;

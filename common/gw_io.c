@@ -267,10 +267,15 @@ int gw_outset_commit(gw_outset *s, gw_err *err)
     int dfd = open(s->dir, O_RDONLY | O_DIRECTORY | O_CLOEXEC);
     if (dfd >= 0)
         flock(dfd, LOCK_EX);
-    for (int i = 0; rc == GW_OK && i < s->n; i++) /* a temporary removed meanwhile: nothing placed */
-        if (access(s->tmp[i], F_OK) != 0)
+    /* what would stop a rename is found before any: nothing placed then */
+    for (int i = 0; rc == GW_OK && i < s->n; i++) {
+        struct stat st;
+        if (access(s->tmp[i], F_OK) != 0) /* removed meanwhile */
             rc = gw_err_set(err, GW_EIO, "%s: write failed: its temporary %s is gone: %s", s->path[i], s->tmp[i],
                             strerror(errno));
+        else if (lstat(s->path[i], &st) == 0 && S_ISDIR(st.st_mode))
+            rc = gw_err_set(err, GW_EIO, "%s: write failed: %s", s->path[i], strerror(EISDIR));
+    }
     for (int i = 0; rc == GW_OK && i < s->n; i++)
         if (rename(s->tmp[i], s->path[i]) != 0)
             rc = gw_err_set(err, GW_EIO, "%s: write failed: %s", s->path[i], strerror(errno));

@@ -25,9 +25,12 @@
 #  6 layer-stats records the content hash of the table it read (the path alone
 #    did not tell the table analysed from a later version of it); with a write
 #    that failed it exited 1 but printed its JSON on stdout.
-#  7 what behaved correctly, kept: chain --json, chain.json, the CSV traces and
-#    chain.h5 agree (values to the printed digits, units, settings), and a rerun
-#    from the recorded settings reproduces the trace byte for byte.
+#  7 chain's traces did not record N and v_imp unless the command line gave them
+#    (the default v_imp = 0.3 was nowhere in the CSV or HDF5 file); a "# run:"
+#    line now does. What behaved correctly, kept: chain --json, chain.json, the
+#    CSV traces and chain.h5 agree (values to the printed digits, units,
+#    settings), and a rerun from the recorded settings reproduces the trace byte
+#    for byte.
 #  8 an HDF5 file that could not be written (full disk, file-size limit) made
 #    HDF5 fail inside H5Fclose: chain, layer-make and layer-impact crashed
 #    (segmentation fault, exit 139, with up to 72 lines of HDF5's error stack).
@@ -236,6 +239,9 @@ st = json.dumps(j["settings"], separators=(",", ":"))
 for h in (hw, hb):
     if h[0] != "# granwave " + j["version"] or h[2] != "# settings: " + st:
         bad.append("header: %s" % h[:1])
+# the column and v_imp (here a default, absent from the command line) in every header
+if any(h[3:4] != ['# run: {"n":%d,"v_imp":%s}' % (j["n"], json.dumps(j["v_imp"]))] for h in (hw, hb)):
+    bad.append("run line: %s" % hw[3:4])
 if cw != ["t_s", "f_wall_N"] or cb[0] != "t_s" or len(cb) != 1 + 2 * j["n"]:
     bad.append("columns")
 k = np.argmax(w[:, 1])  # F_max and tau_max are the sampled maximum, printed to 13 digits

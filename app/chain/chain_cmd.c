@@ -70,6 +70,13 @@ static char *run_header(const chain_cli *c, const gw_chain_result *r, int argc, 
     chain_cli_settings_run(o, r);
     char *h = gw_cli_provenance("chain", argc, argv, o);
     cJSON_Delete(o);
+    /* the column and the impact velocity, defaults included: a trace whose
+     * command line left them out recorded neither */
+    cJSON *run = cJSON_CreateObject();
+    cJSON_AddNumberToObject(run, "n", c->params.n);
+    cJSON_AddNumberToObject(run, "v_imp", c->params.v_imp);
+    h = gw_cli_provenance_add(h, "run", run);
+    cJSON_Delete(run);
     return h;
 }
 

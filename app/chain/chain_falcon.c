@@ -196,7 +196,11 @@ static int write_traces(const falcon *f, const char *dir, int argc, char **argv,
         if (rc == GW_OK) {
             cJSON *set = chain_cli_settings_json(&f->c);
             chain_cli_settings_run(set, &r);
-            hdr = gw_cli_one_line(gw_cli_provenance("falcon", argc, argv, set), ' ');
+            cJSON *run = cJSON_CreateObject(); /* this trace's column and impact velocity */
+            cJSON_AddNumberToObject(run, "n", p.n);
+            cJSON_AddNumberToObject(run, "v_imp", p.v_imp);
+            hdr = gw_cli_one_line(gw_cli_provenance_add(gw_cli_provenance("falcon", argc, argv, set), "run", run), ' ');
+            cJSON_Delete(run);
             cJSON_Delete(set);
             if (!hdr)
                 rc = gw_err_set(err, GW_ENOMEM, "falcon: out of memory");

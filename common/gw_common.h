@@ -162,6 +162,11 @@ typedef struct gw_outset {
 } gw_outset;
 
 int gw_outset_begin(gw_outset *s, const char *dir, const char *const *names, gw_err *err);
+/* GW_EINVAL (one line naming what and both paths) when the input file is one of
+ * the set's names in dir (the same file, by device and inode): the run would
+ * replace the file it reads. GW_OK otherwise (also when input does not exist). */
+int gw_outset_check_input(const char *dir, const char *const *names, const char *input, const char *what,
+                          gw_err *err);
 /* Rename the staged files into place and remove the set's names not written.
  * On a failure the message names the file and the OS error; the staged files
  * not yet renamed are removed. The set is closed either way. */

@@ -211,6 +211,22 @@ int gw_outset_begin(gw_outset *s, const char *dir, const char *const *names, gw_
     return GW_OK;
 }
 
+int gw_outset_check_input(const char *dir, const char *const *names, const char *input, const char *what,
+                          gw_err *err)
+{
+    struct stat in, st;
+    if (!dir || !names || !input || stat(input, &in) != 0)
+        return GW_OK;
+    for (int k = 0; names[k]; k++) {
+        char p[4096 + 256];
+        if (snprintf(p, sizeof p, "%s/%s", dir, names[k]) < (int)sizeof p && stat(p, &st) == 0 &&
+            st.st_dev == in.st_dev && st.st_ino == in.st_ino)
+            return gw_err_set(err, GW_EINVAL, "%s: '%s' is the file this run writes as %s: give another --out "
+                              "or move the input", what, input, p);
+    }
+    return GW_OK;
+}
+
 static void outset_close(gw_outset *s)
 {
     for (int i = 0; i < s->n; i++) {

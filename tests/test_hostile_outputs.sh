@@ -36,6 +36,8 @@
 #    (segmentation fault, exit 139, with up to 72 lines of HDF5's error stack).
 #  9 layer-stats wrote a file name holding a line break as it is: the rest of
 #    the name was the line a CSV reader takes for the column names.
+# 10 layer-impact --sample D/impact.h5 --out D replaced its own sample with its
+#    results (exit 0); now refused (exit 2) before the run.
 set -u
 GW=$1
 SRC=${2:-.}
@@ -336,6 +338,18 @@ for name in ("groups.csv", "convergence.csv", "binary.csv", "walls.csv", "diagra
 bad and print(bad)
 sys.exit(1 if bad else 0)
 PY
+
+# --- 10: an input among the files a run writes ------------------------------------
+# layer-impact --sample D/impact.h5 --out D replaced its own sample by its results
+# (exit 0): the sample gone, a rerun from the recorded settings impossible
+mkdir -p "$tmp/d10"
+if [ "$h5" = 1 ]; then cp "$tmp/s8.h5" "$tmp/d10/impact.h5"; in=impact.h5; else cp "$S" "$tmp/d10/ledger.csv"; in=ledger.csv; fi
+cp "$tmp/d10/$in" "$tmp/in.before"
+REFUSE_TIMEOUT=30 refused "10: layer-impact --sample D/$in --out D (the run would replace its sample)" \
+    "^granwave layer-impact --sample: '$tmp/d10/$in' is the file this run writes as $tmp/d10/$in: give another --out" \
+    layer-impact --sample "$tmp/d10/$in" --t-max 0.002 --out "$tmp/d10"
+cmp -s "$tmp/d10/$in" "$tmp/in.before" && [ "$(ls "$tmp/d10")" = "$in" ] && ok "10: the sample untouched, nothing written" ||
+    ko "10: after the refusal: $(ls "$tmp/d10" | tr '\n' ' ')"
 
 echo "test_hostile_outputs: $passes passed, $fails failed"
 [ $fails -eq 0 ]

@@ -554,7 +554,8 @@ int gw_cmd_layer_impact(int argc, char **argv)
     gw_solver_params sp = c.sp;
     gw_layer_sample s = plan.sample; /* owned from here */
     char made[4096] = ""; /* the first directory of --out this run creates */
-    if (c.out && gw_cli_mkdir_out(c.out, made, sizeof made, &err) != GW_OK) {
+    if (c.out && (gw_outset_check_input(c.out, impact_files, c.sample, "layer-impact --sample", &err) != GW_OK ||
+                  gw_cli_mkdir_out(c.out, made, sizeof made, &err) != GW_OK)) {
         gw_layer_sample_free(&s);
         return fail("layer-impact", err.msg);
     }

@@ -37,7 +37,8 @@
 #  9 layer-stats wrote a file name holding a line break as it is: the rest of
 #    the name was the line a CSV reader takes for the column names.
 # 10 layer-impact --sample D/impact.h5 --out D replaced its own sample with its
-#    results (exit 0); now refused (exit 2) before the run.
+#    results (exit 0), layer-stats D/groups.csv --out D its table; now refused
+#    (exit 2) before the run.
 set -u
 GW=$1
 SRC=${2:-.}
@@ -350,6 +351,12 @@ REFUSE_TIMEOUT=30 refused "10: layer-impact --sample D/$in --out D (the run woul
     layer-impact --sample "$tmp/d10/$in" --t-max 0.002 --out "$tmp/d10"
 cmp -s "$tmp/d10/$in" "$tmp/in.before" && [ "$(ls "$tmp/d10")" = "$in" ] && ok "10: the sample untouched, nothing written" ||
     ko "10: after the refusal: $(ls "$tmp/d10" | tr '\n' ' ')"
+mkdir -p "$tmp/d10s" && cp "$tmp/sw/results.csv" "$tmp/d10s/groups.csv"
+refused "10: layer-stats D/groups.csv --out D (the run would replace its table)" \
+    "^granwave layer-stats RESULTS.csv: '$tmp/d10s/groups.csv' is the file this run writes as $tmp/d10s/groups.csv" \
+    layer-stats "$tmp/d10s/groups.csv" --out "$tmp/d10s"
+cmp -s "$tmp/d10s/groups.csv" "$tmp/sw/results.csv" && [ "$(ls "$tmp/d10s")" = "groups.csv" ] &&
+    ok "10: the table untouched, nothing written" || ko "10: layer-stats after the refusal: $(ls "$tmp/d10s" | tr '\n' ' ')"
 
 echo "test_hostile_outputs: $passes passed, $fails failed"
 [ $fails -eq 0 ]

@@ -135,7 +135,8 @@ int gw_cmd_layer_stats(int argc, char **argv)
         gw_stats_setup_clear(&S);
         return 2;
     }
-    if (out && gw_stats_out_check(out, "layer-stats --out", &err) != GW_OK) /* before any work */
+    if (out && (gw_stats_out_check(out, "layer-stats --out", &err) != GW_OK || /* before any work */
+                gw_stats_out_check_input(out, pos[0], &err) != GW_OK))
         return gw_stats_setup_clear(&S), fail(err.msg);
     if (!*pos[0]) /* the table reader's message (the setup refuses an empty input as "input: ...") */
         return gw_stats_setup_clear(&S), fail("layer-stats RESULTS.csv: empty file name");

@@ -462,6 +462,15 @@ static void write_diagram(FILE *fp, const gw_stats_analysis *R)
 
 typedef void (*writer)(FILE *fp, const gw_stats_analysis *R);
 
+/* the six files of one analysis */
+static const char *const stats_files[] = {"groups.csv", "convergence.csv", "binary.csv", "walls.csv", "diagram.csv",
+                                          "boundary_fit.json", NULL};
+
+int gw_stats_out_check_input(const char *dir, const char *input, gw_err *err)
+{
+    return gw_outset_check_input(dir, stats_files, input, "layer-stats RESULTS.csv", err);
+}
+
 int gw_stats_write_files(const gw_stats_analysis *R, const char *dir, gw_err *err)
 {
     static const struct {
@@ -470,13 +479,11 @@ int gw_stats_write_files(const gw_stats_analysis *R, const char *dir, gw_err *er
     } files[] = {{"groups.csv", write_groups}, {"convergence.csv", write_convergence},
                  {"binary.csv", write_binary}, {"walls.csv", write_walls}, {"diagram.csv", write_diagram}};
     /* the six files of one analysis, or (a write failed) the earlier ones as they were */
-    static const char *const names[] = {"groups.csv", "convergence.csv", "binary.csv", "walls.csv", "diagram.csv",
-                                        "boundary_fit.json", NULL};
     gw_outset set;
     memset(&set, 0, sizeof set);
     int rc = gw_mkdir_p(dir, err);
     if (rc == GW_OK)
-        rc = gw_outset_begin(&set, dir, names, err);
+        rc = gw_outset_begin(&set, dir, stats_files, err);
     char path[4096];
     for (size_t i = 0; rc == GW_OK && i < sizeof files / sizeof files[0]; i++) {
         if (gw_path_join(path, sizeof path, dir, files[i].name) != GW_OK) {

@@ -162,9 +162,10 @@ typedef struct gw_outset {
 } gw_outset;
 
 int gw_outset_begin(gw_outset *s, const char *dir, const char *const *names, gw_err *err);
-/* GW_EINVAL (one line naming what and both paths) when the input file is one of
- * the set's names in dir (the same file, by device and inode): the run would
- * replace the file it reads. GW_OK otherwise (also when input does not exist). */
+/* GW_EINVAL (one line naming what and both paths) when the file input is one of
+ * the set's names in dir (the same file, by device and inode; for a file not
+ * made yet, the same directory and name): the run would replace the file it
+ * reads, or write two things under one name. GW_OK otherwise. */
 int gw_outset_check_input(const char *dir, const char *const *names, const char *input, const char *what,
                           gw_err *err);
 /* Rename the staged files into place and remove the set's names not written.

@@ -215,8 +215,28 @@ int gw_outset_check_input(const char *dir, const char *const *names, const char 
                           gw_err *err)
 {
     struct stat in, st;
-    if (!dir || !names || !input || stat(input, &in) != 0)
+    if (!dir || !names || !input || !*input)
         return GW_OK;
+    if (stat(input, &in) != 0) { /* a file still to make (wisdom): the same directory and name */
+        char d[4096];
+        if (snprintf(d, sizeof d, "%s", input) >= (int)sizeof d)
+            return GW_OK;
+        char *slash = strrchr(d, '/');
+        const char *base = slash ? slash + 1 : input;
+        if (!slash)
+            snprintf(d, sizeof d, ".");
+        else if (slash == d)
+            d[1] = '\0';
+        else
+            *slash = '\0';
+        if (stat(d, &in) != 0 || stat(dir, &st) != 0 || in.st_dev != st.st_dev || in.st_ino != st.st_ino)
+            return GW_OK;
+        for (int k = 0; names[k]; k++)
+            if (strcmp(base, names[k]) == 0)
+                return gw_err_set(err, GW_EINVAL, "%s: '%s' is the file this run writes as %s/%s: give another "
+                                  "--out or another name", what, input, dir, names[k]);
+        return GW_OK;
+    }
     for (int k = 0; names[k]; k++) {
         char p[4096 + 256];
         if (snprintf(p, sizeof p, "%s/%s", dir, names[k]) < (int)sizeof p && stat(p, &st) == 0 &&

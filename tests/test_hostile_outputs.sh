@@ -37,8 +37,9 @@
 #  9 layer-stats wrote a file name holding a line break as it is: the rest of
 #    the name was the line a CSV reader takes for the column names.
 # 10 layer-impact --sample D/impact.h5 --out D replaced its own sample with its
-#    results (exit 0), layer-stats D/groups.csv --out D its table; now refused
-#    (exit 2) before the run.
+#    results (exit 0), layer-stats D/groups.csv --out D its table, dispersion
+#    --wisdom D/dispersion.json --out D its results' JSON with the wisdom; now
+#    refused (exit 2) before the run.
 set -u
 GW=$1
 SRC=${2:-.}
@@ -357,6 +358,14 @@ refused "10: layer-stats D/groups.csv --out D (the run would replace its table)"
     layer-stats "$tmp/d10s/groups.csv" --out "$tmp/d10s"
 cmp -s "$tmp/d10s/groups.csv" "$tmp/sw/results.csv" && [ "$(ls "$tmp/d10s")" = "groups.csv" ] &&
     ok "10: the table untouched, nothing written" || ko "10: layer-stats after the refusal: $(ls "$tmp/d10s" | tr '\n' ' ')"
+
+# dispersion --wisdom D/dispersion.json --out D: the results' JSON replaced by FFTW
+# wisdom after the run (exit 0)
+mkdir -p "$tmp/d10w"
+refused "10: dispersion --wisdom D/dispersion.json --out D (wisdom over the results)" \
+    "^granwave dispersion --wisdom: '$tmp/d10w/dispersion.json' is the file this run writes as $tmp/d10w/dispersion.json" \
+    dispersion --n 64 --t-samples 256 --wisdom "$tmp/d10w/dispersion.json" --out "$tmp/d10w"
+[ -z "$(ls "$tmp/d10w")" ] && ok "10: dispersion: nothing written" || ko "10: dispersion wrote $(ls "$tmp/d10w" | tr '\n' ' ')"
 
 echo "test_hostile_outputs: $passes passed, $fails failed"
 [ $fails -eq 0 ]

@@ -38,8 +38,9 @@
 #    the name was the line a CSV reader takes for the column names.
 # 10 layer-impact --sample D/impact.h5 --out D replaced its own sample with its
 #    results (exit 0), layer-stats D/groups.csv --out D its table, dispersion
-#    --wisdom D/dispersion.json --out D its results' JSON with the wisdom; now
-#    refused (exit 2) before the run.
+#    --wisdom D/dispersion.json --out D its results' JSON with the wisdom, a
+#    sweep over the sample D/results.csv its sample with the table; now refused
+#    (exit 2) before the run.
 set -u
 GW=$1
 SRC=${2:-.}
@@ -366,6 +367,15 @@ refused "10: dispersion --wisdom D/dispersion.json --out D (wisdom over the resu
     "^granwave dispersion --wisdom: '$tmp/d10w/dispersion.json' is the file this run writes as $tmp/d10w/dispersion.json" \
     dispersion --n 64 --t-samples 256 --wisdom "$tmp/d10w/dispersion.json" --out "$tmp/d10w"
 [ -z "$(ls "$tmp/d10w")" ] && ok "10: dispersion: nothing written" || ko "10: dispersion wrote $(ls "$tmp/d10w" | tr '\n' ' ')"
+
+# a sweep whose sample is DIR/results.csv: the table written over the sample (exit 0)
+mkdir -p "$tmp/d10x" && cp "$S" "$tmp/d10x/results.csv"
+sed "s|^sample = .*|sample = $tmp/d10x/results.csv|" "$tmp/sw.ini" >"$tmp/swx.ini"
+refused "10: sweep over a sample DIR/results.csv --out DIR (the table over the sample)" \
+    "^granwave sweep: '$tmp/d10x/results.csv' is the file this run writes as $tmp/d10x/results.csv" \
+    sweep "$tmp/swx.ini" --out "$tmp/d10x" --quiet --jobs 1
+cmp -s "$tmp/d10x/results.csv" "$S" && [ "$(ls "$tmp/d10x")" = "results.csv" ] && ok "10: sweep: the sample untouched" ||
+    ko "10: sweep after the refusal: $(ls "$tmp/d10x" | tr '\n' ' ')"
 
 echo "test_hostile_outputs: $passes passed, $fails failed"
 [ $fails -eq 0 ]

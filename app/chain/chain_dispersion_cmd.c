@@ -257,6 +257,7 @@ static int disp_write_out(const char *dir, const char *hdr, const cJSON *o,
 {
     char path[4096];
     gw_outset oset; /* this run's files, all (the --column-n run's wall_spectrum.csv goes), or none */
+    memset(&oset, 0, sizeof oset);
     int rc = gw_mkdir_p(dir, err);
     if (rc == GW_OK)
         rc = gw_outset_begin(&oset, dir, disp_files, err);

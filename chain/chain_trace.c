@@ -10,6 +10,7 @@
 #include "gw_chain.h"
 #if GW_HAVE_HDF5
 #include <hdf5.h>
+#include "gw_h5.h"
 #endif
 
 void gw_chain_trace_init(gw_chain_trace *tr, int n)
@@ -158,15 +159,11 @@ static int write_h5(const gw_chain_trace *tr, const char *dir, const char *stem,
     snprintf(name, sizeof name, "%s.h5", stem);
     if (gw_path_join(path, sizeof path, dir, name) != GW_OK)
         return gw_err_set(err, GW_EINVAL, "%s: output path too long", dir);
-    gw_afile f;
-    int rc = gw_afile_open_named(&f, path, err);
-    if (rc != GW_OK)
-        return rc;
-    hid_t file = H5Fcreate(f.tmp, H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
-    if (file < 0) {
-        gw_afile_abort(&f);
+    int rc = GW_OK;
+    /* built in memory, written as one image through gw_afile (gw_h5.h) */
+    hid_t file = gw_h5_mem_create(path, 0);
+    if (file < 0)
         return gw_err_set(err, GW_EIO, "%s: cannot create HDF5 file", path);
-    }
     hsize_t d1[1] = {tr->len}, d2[2] = {tr->len, (hsize_t)tr->n};
     if (tr->len > 0) {
         rc = h5_dataset(file, "t", tr->t, 1, d1, "s");
@@ -189,13 +186,11 @@ static int write_h5(const gw_chain_trace *tr, const char *dir, const char *stem,
         H5Sclose(as);
         H5Tclose(ts);
     }
-    if (H5Fclose(file) < 0)
-        rc = GW_EIO;
     if (rc != GW_OK) {
-        gw_afile_abort(&f);
+        H5Fclose(file);
         return gw_err_set(err, GW_EIO, "%s: HDF5 write failed", path);
     }
-    return gw_afile_commit(&f, err);
+    return gw_h5_mem_write(file, path, err);
 }
 #endif
 

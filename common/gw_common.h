@@ -154,6 +154,46 @@ int gw_afile_commit(gw_afile *f, gw_err *err);
 /* Discard the temporary file (safe to call on a closed or failed file). */
 void gw_afile_abort(gw_afile *f);
 
+/* A set of output files committed together: the files a command writes into
+ * its --out directory either all replace the earlier run's, or none do. From
+ * gw_outset_begin to gw_outset_commit/abort, every gw_afile this thread
+ * commits is fsynced and kept under its temporary name ("staged"), not renamed.
+ * gw_outset_commit renames the staged files into place, then removes every
+ * name of the set's list that this run did not write (a file of an earlier run
+ * beside this run's results would read as one of them). gw_outset_abort (a
+ * write failed, or the run was refused) removes the staged temporaries: the
+ * directory is left as the earlier run left it. names: every file the command
+ * may write into dir, NULL-terminated. Two runs placing their sets in one
+ * directory at once place them one after the other (flock on the directory):
+ * it holds the last one's files, never some of each. A set may stay open
+ * through a long run (layer-impact's snapshots): SIGINT, SIGTERM and SIGHUP
+ * are held only while each file is written and while the staged files are
+ * placed or removed; a run killed (kill -9) before its commit leaves its
+ * temporaries ("NAME.tmp.XXXXXX", never read as results) and the earlier
+ * run's files as they were. One set per thread. */
+typedef struct gw_outset {
+    char dir[4096];
+    const char *const *names;
+    int n, cap;
+    char **tmp, **path; /* staged: temporary and final path */
+    unsigned char oldmask[128];
+    int masked, active;
+} gw_outset;
+
+int gw_outset_begin(gw_outset *s, const char *dir, const char *const *names, gw_err *err);
+/* GW_EINVAL (one line naming what and both paths) when the file input is one of
+ * the set's names in dir (the same file, by device and inode; for a file not
+ * made yet, the same directory and name): the run would replace the file it
+ * reads, or write two things under one name. GW_OK otherwise. */
+int gw_outset_check_input(const char *dir, const char *const *names, const char *input, const char *what,
+                          gw_err *err);
+/* Rename the staged files into place and remove the set's names not written.
+ * On a failure the message names the file and the OS error; the staged files
+ * not yet renamed are removed. The set is closed either way. */
+int gw_outset_commit(gw_outset *s, gw_err *err);
+/* Remove the staged temporaries; the set is closed (safe on a closed set). */
+void gw_outset_abort(gw_outset *s);
+
 /* Write text as comment lines: "# " + each line + "\n" (a final newline in
  * text adds no empty comment; NULL or "" writes nothing). The provenance
  * header of the program's tables goes to files through this. */

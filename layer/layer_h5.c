@@ -33,6 +33,7 @@
 
 #if GW_HAVE_HDF5
 #include <hdf5.h>
+#include "gw_h5.h"
 
 static int put_string_attr(hid_t obj, const char *name, const char *value)
 {
@@ -90,18 +91,12 @@ int gw_layer_impact_write_h5(const gw_layer_impact_result *r, const char *path, 
                        e->mindlin_excess, e->dissipated, e->potential, e->total};
         memcpy(led + 8 * k, v, sizeof v);
     }
-    gw_afile af;
-    int orc = gw_afile_open_named(&af, path, err);
-    if (orc != GW_OK) {
-        free(led);
-        return orc;
-    }
     /* our message names the file; HDF5's own error stack would add dozens of lines */
     H5E_auto2_t old_fn;
     void *old_data;
     H5Eget_auto2(H5E_DEFAULT, &old_fn, &old_data);
     H5Eset_auto2(H5E_DEFAULT, NULL, NULL);
-    hid_t file = H5Fcreate(af.tmp, H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
+    hid_t file = gw_h5_mem_create(path, 0); /* in memory, written as one image (gw_h5.h) */
     int bad = file < 0;
     if (!bad) {
         bad = put(file, "t", r->t, ns, 0, "s", NULL) ||
@@ -137,16 +132,18 @@ int gw_layer_impact_write_h5(const gw_layer_impact_result *r, const char *path, 
                   put(file, "spec_freq", freq, nf, 0, "Hz", NULL) ||
                   put(file, "spec_strain", r->spec_strain, nf, nr, "J^2/Hz", NULL) ||
                   put(file, "spec_kinetic", r->spec_kin, nf, nr, "J^2/Hz", NULL);
-        if (H5Fclose(file) < 0)
-            bad = 1;
     }
     free(led);
-    H5Eset_auto2(H5E_DEFAULT, old_fn, old_data);
+    int rc = GW_OK;
     if (bad) {
-        gw_afile_abort(&af);
-        return gw_err_set(err, GW_EIO, "%s: cannot write the HDF5 file", path);
+        if (file >= 0)
+            H5Fclose(file);
+        rc = gw_err_set(err, GW_EIO, "%s: cannot write the HDF5 file", path);
+    } else {
+        rc = gw_h5_mem_write(file, path, err); /* fsync, then the rename makes it visible */
     }
-    return gw_afile_commit(&af, err); /* fsync, then the rename makes it visible */
+    H5Eset_auto2(H5E_DEFAULT, old_fn, old_data);
+    return rc;
 }
 #else
 int gw_layer_impact_write_h5(const gw_layer_impact_result *r, const char *path, const char *header,

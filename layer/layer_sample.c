@@ -29,6 +29,7 @@
 #include "layer_impl.h"
 #if GW_HAVE_HDF5
 #include <hdf5.h>
+#include "gw_h5.h"
 #endif
 
 #define SAMPLE_NMAX 10000000L /* 240 MB of coordinates */
@@ -588,16 +589,10 @@ static int h5_body_write(hid_t f, const int *v, int n)
  * 1.8 file format (superblock 2) puts checksums on all metadata (see read_h5). */
 static int write_h5(const gw_layer_sample *s, const char *path, const char *header, gw_err *err)
 {
-    gw_afile f;
-    int rc = gw_afile_open_named(&f, path, err);
-    if (rc != GW_OK)
-        return rc;
     h5_quiet q;
     h5_quiet_on(&q);
     int version = 1, n = s->n;
-    hid_t fapl = H5Pcreate(H5P_FILE_ACCESS);
-    hid_t file = fapl < 0 || H5Pset_libver_bounds(fapl, H5F_LIBVER_V18, H5F_LIBVER_LATEST) < 0 ? -1 :
-                 H5Fcreate(f.tmp, H5F_ACC_TRUNC, H5P_DEFAULT, fapl);
+    hid_t file = gw_h5_mem_create(path, 1); /* in memory, written as one image (gw_h5.h) */
     int bad = file < 0 || h5_column_write(file, "x", s->x, n) || h5_column_write(file, "y", s->y, n) ||
               h5_column_write(file, "r", s->r, n) || h5_attr_write_str(file, "format", SAMPLE_MAGIC) ||
               h5_attr_write(file, "format_version", H5T_NATIVE_INT, &version) ||
@@ -613,16 +608,16 @@ static int write_h5(const gw_layer_sample *s, const char *path, const char *head
               h5_attr_write_str(file, "units", "SI: x, y, r, width, rm in metres") ||
               (header && h5_attr_write_str(file, "header", header)) ||
               (s->body && h5_body_write(file, s->body, n));
-    if (file >= 0 && H5Fclose(file) < 0)
-        bad = 1;
-    if (fapl >= 0)
-        H5Pclose(fapl);
-    h5_quiet_off(&q);
+    int rc = GW_OK;
     if (bad) {
-        gw_afile_abort(&f);
-        return gw_err_set(err, GW_EIO, "sample '%s': HDF5 write failed%s%s", path, q.why[0] ? ": " : "", q.why);
+        if (file >= 0)
+            H5Fclose(file);
+        rc = gw_err_set(err, GW_EIO, "sample '%s': HDF5 write failed%s%s", path, q.why[0] ? ": " : "", q.why);
+    } else {
+        rc = gw_h5_mem_write(file, path, err);
     }
-    return gw_afile_commit(&f, err);
+    h5_quiet_off(&q);
+    return rc;
 }
 
 /* A scalar root attribute of class want (H5T_FLOAT also takes integers; a

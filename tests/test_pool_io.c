@@ -294,6 +294,54 @@ static void test_afile(void)
     unlink(h5);
 }
 
+/* A set of output files (gw_outset): placed together or not at all, the
+ * set's names a run does not write removed at the commit. */
+static void test_outset(void)
+{
+    char a[128], b[128], stale[128];
+    gw_err err = {{0}};
+    gw_outset set;
+    static const char *const names[] = {"a.csv", "b.csv", "stale.csv", NULL};
+    snprintf(a, sizeof a, "%s/a.csv", dir);
+    snprintf(b, sizeof b, "%s/b.csv", dir);
+    snprintf(stale, sizeof stale, "%s/stale.csv", dir);
+    gw_write_text(a, "old a\n", &err);
+    gw_write_text(b, "old b\n", &err);
+    gw_write_text(stale, "old stale\n", &err);
+
+    /* staged: a commit of one file does not place it until the set's commit */
+    gw_test_true(gw_outset_begin(&set, dir, names, &err) == GW_OK && !sigint_held(),
+                 "outset: begin (signals not held through a long run)");
+    gw_test_true(gw_write_text(a, "new a\n", &err) == GW_OK && file_is(a, "old a\n") && count_named("a.csv.tmp.") == 1,
+                 "outset: a committed file is staged under its temporary name, the old one in place");
+    gw_outset nested;
+    gw_test_true(gw_outset_begin(&nested, dir, names, &err) == GW_EINVAL, "outset: one set per thread");
+    gw_outset_abort(&set);
+    gw_test_true(file_is(a, "old a\n") && count_named("a.csv.tmp.") == 0 && file_is(stale, "old stale\n"),
+                 "outset: abort removes the staged files, the earlier ones stay");
+
+    gw_test_true(gw_outset_begin(&set, dir, names, &err) == GW_OK, "outset: begin again");
+    gw_test_true(gw_write_text(a, "new a\n", &err) == GW_OK && gw_write_text(b, "new b\n", &err) == GW_OK &&
+                     file_is(a, "old a\n") && file_is(b, "old b\n"),
+                 "outset: two files staged");
+    gw_test_true(gw_outset_commit(&set, &err) == GW_OK && file_is(a, "new a\n") && file_is(b, "new b\n") &&
+                     access(stale, F_OK) != 0 && count_named("a.csv.tmp.") + count_named("b.csv.tmp.") == 0 &&
+                     !sigint_held(),
+                 "outset: commit places both and removes the set's name this run did not write");
+    gw_test_true(gw_write_text(a, "after\n", &err) == GW_OK && file_is(a, "after\n"),
+                 "outset: after the commit a file is placed at once again");
+
+    gw_test_true(gw_outset_begin(&set, dir, names, &err) == GW_OK && gw_write_text(a, "lost\n", &err) == GW_OK,
+                 "outset: one file staged");
+    for (int i = 0; i < set.n; i++)
+        unlink(set.tmp[i]);
+    gw_test_true(gw_outset_commit(&set, &err) == GW_EIO && strstr(err.msg, "a.csv") && file_is(a, "after\n") &&
+                     file_is(b, "new b\n"),
+                 "outset: a staged temporary gone fails the commit naming the file, nothing placed or removed");
+    unlink(a);
+    unlink(b);
+}
+
 /* ------------------------------------------------------- provenance --- */
 
 static void test_provenance(void)
@@ -347,6 +395,7 @@ int main(void)
         return gw_test_summary("test_pool_io");
     }
     test_afile();
+    test_outset();
     test_provenance();
     rmdir(dir);
     return gw_test_summary("test_pool_io");

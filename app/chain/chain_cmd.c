@@ -59,12 +59,24 @@ cJSON *chain_result_json(const chain_cli *c, const gw_chain_result *r, double wa
 }
 
 /* The provenance header of the --out files: the settings as run. */
+/* every file chain --out may write: what a run does not write of these is an
+ * earlier run's, removed when this run's files are placed (gw_outset) */
+static const char *const chain_files[] = {"chain_wall_force.csv", "chain_beads.csv", "chain.h5", "chain.json",
+                                          "chain_failure.json", NULL};
+
 static char *run_header(const chain_cli *c, const gw_chain_result *r, int argc, char **argv)
 {
     cJSON *o = chain_cli_settings_json(c);
     chain_cli_settings_run(o, r);
     char *h = gw_cli_provenance("chain", argc, argv, o);
     cJSON_Delete(o);
+    /* the column and the impact velocity, defaults included: a trace whose
+     * command line left them out recorded neither */
+    cJSON *run = cJSON_CreateObject();
+    cJSON_AddNumberToObject(run, "n", c->params.n);
+    cJSON_AddNumberToObject(run, "v_imp", c->params.v_imp);
+    h = gw_cli_provenance_add(h, "run", run);
+    cJSON_Delete(run);
     return h;
 }
 
@@ -144,13 +156,15 @@ int gw_cmd_chain(int argc, char **argv)
             gw_err werr = {{0}};
             cJSON *o = chain_result_json(&c, &r, wall_ms);
             cJSON_AddStringToObject(o, "error", err.msg);
-            if (gw_mkdir_p(c.out, &werr) != GW_OK ||
-                gw_cli_out_remove(c.out, (const char *const[]){"chain.json", NULL}, &werr) != GW_OK ||
+            gw_outset set; /* the earlier run's chain.json goes: these are this run's files */
+            memset(&set, 0, sizeof set);
+            if (gw_mkdir_p(c.out, &werr) != GW_OK || gw_outset_begin(&set, c.out, chain_files, &werr) != GW_OK ||
                 gw_chain_trace_write(&tr, c.out, "chain", hdr ? hdr : "", &werr) != GW_OK ||
                 gw_path_join(path, sizeof path, c.out, "chain_failure.json") != GW_OK ||
-                gw_json_write(path, o, &werr) != GW_OK)
+                gw_json_write(path, o, &werr) != GW_OK || gw_outset_commit(&set, &werr) != GW_OK) {
+                gw_outset_abort(&set);
                 fprintf(stderr, "granwave chain --out: %s\n", werr.msg);
-            else
+            } else
                 fprintf(stderr, "granwave chain: state at t = %.9g s and the trace so far are in %s\n", r.t_end, c.out);
             cJSON_Delete(o);
             free(hdr);
@@ -160,11 +174,13 @@ int gw_cmd_chain(int argc, char **argv)
             char *hdr = run_header(&c, &r, argc, argv);
             char path[4096];
             cJSON *o = chain_result_json(&c, &r, wall_ms);
-            if (gw_mkdir_p(c.out, &err) != GW_OK ||
-                gw_cli_out_remove(c.out, (const char *const[]){"chain_failure.json", NULL}, &err) != GW_OK ||
+            gw_outset set; /* all of this run's files, or (a write failed) the earlier run's as they were */
+            memset(&set, 0, sizeof set);
+            if (gw_mkdir_p(c.out, &err) != GW_OK || gw_outset_begin(&set, c.out, chain_files, &err) != GW_OK ||
                 gw_chain_trace_write(&tr, c.out, "chain", hdr ? hdr : "", &err) != GW_OK ||
                 gw_path_join(path, sizeof path, c.out, "chain.json") != GW_OK ||
-                gw_json_write(path, o, &err) != GW_OK) {
+                gw_json_write(path, o, &err) != GW_OK || gw_outset_commit(&set, &err) != GW_OK) {
+                gw_outset_abort(&set);
                 fprintf(stderr, "granwave chain --out: %s\n", err.msg);
                 code = 1;
             }

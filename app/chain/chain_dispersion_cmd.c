@@ -265,13 +265,19 @@ static void disp_print(const disp_cli *c, const gw_chain_disp_result *r, double 
            r->integrate_ms, r->stats.steps, r->fft_ms);
 }
 
+/* every file dispersion --out may write: the study's three, or --column-n's one */
+static const char *const disp_files[] = {"dispersion_ridge.csv", "dispersion_power.csv", "dispersion.json",
+                                         "wall_spectrum.csv", NULL};
+
 static int disp_write_out(const char *dir, const char *hdr, const cJSON *o,
                           const gw_chain_disp_result *r, gw_err *err)
 {
     char path[4096];
+    gw_outset oset; /* this run's files, all (the --column-n run's wall_spectrum.csv goes), or none */
+    memset(&oset, 0, sizeof oset);
     int rc = gw_mkdir_p(dir, err);
-    if (rc == GW_OK) /* the --column-n run's file: not beside this study's */
-        rc = gw_cli_out_remove(dir, (const char *const[]){"wall_spectrum.csv", NULL}, err);
+    if (rc == GW_OK)
+        rc = gw_outset_begin(&oset, dir, disp_files, err);
     if (rc == GW_OK)
         rc = write_csv(dir, "dispersion_ridge.csv", hdr, ridge_body, r, err);
     if (rc == GW_OK)
@@ -280,6 +286,9 @@ static int disp_write_out(const char *dir, const char *hdr, const cJSON *o,
         rc = gw_err_set(err, GW_EINVAL, "%s: path too long", dir);
     if (rc == GW_OK)
         rc = gw_json_write(path, o, err);
+    if (rc == GW_OK)
+        rc = gw_outset_commit(&oset, err);
+    gw_outset_abort(&oset);
     return rc;
 }
 
@@ -351,10 +360,12 @@ static int disp_column(const disp_cli *c, const gw_opt *opts, int argc, char **a
         cJSON_AddStringToObject(js, "fftw_planner", c->measure ? "measure" : "estimate");
         disp_wisdom_json(js, c);
         char *hdr = gw_cli_provenance("dispersion", argc, argv, js);
-        if (c->out && (gw_mkdir_p(c->out, &err) != GW_OK ||
-                       gw_cli_out_remove(c->out, (const char *const[]){"dispersion.json", "dispersion_ridge.csv",
-                                                                       "dispersion_power.csv", NULL}, &err) != GW_OK ||
-                       write_csv(c->out, "wall_spectrum.csv", hdr ? hdr : "", spectrum_body, &sp, &err) != GW_OK)) {
+        gw_outset oset; /* the study's files of an earlier run go when this one is placed */
+        memset(&oset, 0, sizeof oset);
+        if (c->out && (gw_mkdir_p(c->out, &err) != GW_OK || gw_outset_begin(&oset, c->out, disp_files, &err) != GW_OK ||
+                       write_csv(c->out, "wall_spectrum.csv", hdr ? hdr : "", spectrum_body, &sp, &err) != GW_OK ||
+                       gw_outset_commit(&oset, &err) != GW_OK)) {
+            gw_outset_abort(&oset);
             fprintf(stderr, "granwave dispersion --out: %s\n", err.msg);
             code = 1;
         }
@@ -426,6 +437,7 @@ int gw_cmd_dispersion(int argc, char **argv)
     }
     /* inputs and output locations before any work: a refused run writes nothing */
     if ((c.out && gw_out_check(c.out, "dispersion --out", &err) != GW_OK) ||
+        (c.out && gw_outset_check_input(c.out, disp_files, c.wisdom, "dispersion --wisdom", &err) != GW_OK) ||
         (c.wisdom && disp_import_wisdom(&c, &err) != GW_OK))
         return chain_cli_fail(err.msg);
     if (c.column_n > 0) {

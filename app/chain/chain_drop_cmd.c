@@ -289,7 +289,15 @@ static int write_outputs(const drop_cli *d, const gw_chain_drop_result *r, const
     if (!hdr)
         return gw_err_set(err, GW_ENOMEM, "drop --out: out of memory");
     char path[4096];
+    /* this run's files all in place, or (a write failed) the earlier run's as they were */
+    static const char *const files[] = {"drop_wall_force.csv", "drop_beads.csv", "drop.h5", "drop_peaks.csv",
+                                        "drop_impacts.csv", "drop.json", NULL};
+    gw_outset oset;
     int rc = gw_mkdir_p(d->c.out, err);
+    if (rc == GW_OK)
+        rc = gw_outset_begin(&oset, d->c.out, files, err);
+    else
+        memset(&oset, 0, sizeof oset);
     if (rc == GW_OK)
         rc = gw_chain_trace_write(tr, d->c.out, "drop", hdr, err);
     if (rc == GW_OK)
@@ -302,6 +310,9 @@ static int write_outputs(const drop_cli *d, const gw_chain_drop_result *r, const
             rc = gw_json_write(path, o, err);
         cJSON_Delete(o);
     }
+    if (rc == GW_OK)
+        rc = gw_outset_commit(&oset, err);
+    gw_outset_abort(&oset);
     free(hdr);
     return rc;
 }

@@ -157,6 +157,15 @@ static int write_tables(const falcon *f, const char *dir, const char *hdr, gw_er
 }
 
 /* Traces for N = 7, 15, 30 at the first velocity (bead trajectories for N = 7). */
+/* every file falcon --out may write: those a run does not write (the traces of
+ * N = 15 and 30 when --n stops below them, the bead tables of long columns) are
+ * an earlier run's, removed when this run's files are placed (gw_outset) */
+static const char *const falcon_files[] = {
+    "falcon_runs.csv", "falcon_final_velocities.csv", "falcon_summary.json", "report.md",
+    "trace_n7_wall_force.csv", "trace_n7_beads.csv", "trace_n7.h5",
+    "trace_n15_wall_force.csv", "trace_n15_beads.csv", "trace_n15.h5",
+    "trace_n30_wall_force.csv", "trace_n30_beads.csv", "trace_n30.h5", NULL};
+
 static int write_traces(const falcon *f, const char *dir, int argc, char **argv, gw_err *err)
 {
     const int ns[] = {7, 15, 30};
@@ -187,7 +196,11 @@ static int write_traces(const falcon *f, const char *dir, int argc, char **argv,
         if (rc == GW_OK) {
             cJSON *set = chain_cli_settings_json(&f->c);
             chain_cli_settings_run(set, &r);
-            hdr = gw_cli_one_line(gw_cli_provenance("falcon", argc, argv, set), ' ');
+            cJSON *run = cJSON_CreateObject(); /* this trace's column and impact velocity */
+            cJSON_AddNumberToObject(run, "n", p.n);
+            cJSON_AddNumberToObject(run, "v_imp", p.v_imp);
+            hdr = gw_cli_one_line(gw_cli_provenance_add(gw_cli_provenance("falcon", argc, argv, set), "run", run), ' ');
+            cJSON_Delete(run);
             cJSON_Delete(set);
             if (!hdr)
                 rc = gw_err_set(err, GW_ENOMEM, "falcon: out of memory");
@@ -198,11 +211,7 @@ static int write_traces(const falcon *f, const char *dir, int argc, char **argv,
             } else { /* wall force only: the bead table of long columns is large */
                 gw_chain_trace w = tr;
                 w.n = 0;
-                rc = gw_chain_trace_write(&w, dir, stem, hdr, err);
-                char path[4096], name[96];
-                snprintf(name, sizeof name, "%s_beads.csv", stem);
-                if (gw_path_join(path, sizeof path, dir, name) == GW_OK)
-                    remove(path);
+                rc = gw_chain_trace_write(&w, dir, stem, hdr, err); /* an earlier _beads.csv: see falcon_files */
             }
         }
         free(hdr);
@@ -390,13 +399,19 @@ int gw_cmd_falcon(int argc, char **argv)
         char *hdr = set ? gw_cli_one_line(gw_cli_provenance("falcon", argc, argv, set), ' ') : NULL;
         cJSON_Delete(set);
         char path[4096];
-        rc = write_tables(&f, f.c.out, hdr ? hdr : "", &err);
+        gw_outset oset; /* all of this run's files in place, or none (and the earlier run's as they were) */
+        rc = gw_outset_begin(&oset, f.c.out, falcon_files, &err);
+        if (rc == GW_OK)
+            rc = write_tables(&f, f.c.out, hdr ? hdr : "", &err);
         if (rc == GW_OK)
             rc = write_traces(&f, f.c.out, argc, argv, &err);
         if (rc == GW_OK && gw_path_join(path, sizeof path, f.c.out, "falcon_summary.json") == GW_OK)
             rc = gw_json_write(path, sum, &err);
         if (rc == GW_OK && gw_path_join(path, sizeof path, f.c.out, "report.md") == GW_OK)
             rc = falcon_write_report(&f, path, &err);
+        if (rc == GW_OK)
+            rc = gw_outset_commit(&oset, &err);
+        gw_outset_abort(&oset);
         free(hdr);
         if (rc != GW_OK) {
             fprintf(stderr, "granwave falcon --out: %s\n", err.msg);

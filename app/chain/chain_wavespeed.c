@@ -138,8 +138,11 @@ int gw_cmd_wavespeed(int argc, char **argv)
         char path[4096];
         if (c.out) {
             gw_afile af;
+            gw_outset oset; /* the table and the JSON of one run, or (a write failed) the earlier run's */
+            static const char *const files[] = {"wavespeed.csv", "wavespeed.json", NULL};
             char *hdr = gw_cli_one_line(gw_cli_provenance("wavespeed", argc, argv, set), ' ');
-            if (gw_path_join(path, sizeof path, c.out, "wavespeed.csv") != GW_OK ||
+            if (gw_outset_begin(&oset, c.out, files, &err) != GW_OK ||
+                gw_path_join(path, sizeof path, c.out, "wavespeed.csv") != GW_OK ||
                 gw_afile_open(&af, path, &err) != GW_OK) {
                 code = 1;
             } else {
@@ -154,6 +157,9 @@ int gw_cmd_wavespeed(int argc, char **argv)
             if (code == 0 && (gw_path_join(path, sizeof path, c.out, "wavespeed.json") != GW_OK ||
                               gw_json_write(path, o, &err) != GW_OK))
                 code = 1;
+            if (code == 0 && gw_outset_commit(&oset, &err) != GW_OK)
+                code = 1;
+            gw_outset_abort(&oset);
             if (code)
                 fprintf(stderr, "granwave wavespeed --out: %s\n", err.msg);
             free(hdr);

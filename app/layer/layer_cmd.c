@@ -505,6 +505,12 @@ static int write_snapshot(void *ctx, const gw_layer *L, int k, int final)
     return rc;
 }
 
+/* every file layer-impact --out may write (gw_outset: what a run does not write
+ * of these is an earlier run's, removed when this run's files are placed) */
+static const char *const impact_files[] = {"ledger.csv", "crowns.csv", "crowns_peaks.csv", "crowns_spectra.csv",
+                                           "impact.json", "impact.h5", "snapshot_0.vtk", "snapshot_end.vtk",
+                                           "snapshots.pvd", "snapshot_failure.vtk", NULL};
+
 int gw_cmd_layer_impact(int argc, char **argv)
 {
     impact_cli c;
@@ -548,7 +554,17 @@ int gw_cmd_layer_impact(int argc, char **argv)
     gw_solver_params sp = c.sp;
     gw_layer_sample s = plan.sample; /* owned from here */
     char made[4096] = ""; /* the first directory of --out this run creates */
-    if (c.out && gw_cli_mkdir_out(c.out, made, sizeof made, &err) != GW_OK) {
+    if (c.out && (gw_outset_check_input(c.out, impact_files, c.sample, "layer-impact --sample", &err) != GW_OK ||
+                  gw_cli_mkdir_out(c.out, made, sizeof made, &err) != GW_OK)) {
+        gw_layer_sample_free(&s);
+        return fail("layer-impact", err.msg);
+    }
+    /* every file of the run, the snapshots written during it included, is placed
+     * at the end, together: a run that fails leaves its snapshots and no earlier
+     * run's results beside them; a write that fails leaves the earlier run's files */
+    gw_outset oset;
+    memset(&oset, 0, sizeof oset);
+    if (c.out && gw_outset_begin(&oset, c.out, impact_files, &err) != GW_OK) {
         gw_layer_sample_free(&s);
         return fail("layer-impact", err.msg);
     }
@@ -568,9 +584,14 @@ int gw_cmd_layer_impact(int argc, char **argv)
             snprintf(err.msg + k, room, "; state at failure in %.*s", (int)(room - 24), vc.failure_file);
     }
     gw_layer_sample_free(&s);
+    if (rc == GW_EINVAL || rc == GW_EUNSUPPORTED || vc.failed)
+        gw_outset_abort(&oset); /* refused, or a snapshot not written: nothing of this run */
     if ((rc == GW_EINVAL || rc == GW_EUNSUPPORTED) && made[0])
         gw_cli_unmake(c.out, made); /* a refused input leaves nothing behind */
     if (rc != GW_OK) {
+        gw_err cerr = {{0}};
+        if (oset.active && gw_outset_commit(&oset, &cerr) != GW_OK) /* the snapshots of the failed run */
+            fprintf(stderr, "granwave layer-impact --out: %s\n", cerr.msg);
         fprintf(stderr, "granwave layer-impact: %s\n", err.msg);
         return rc == GW_EINVAL || rc == GW_EUNSUPPORTED ? 2 : 1;
     }
@@ -583,16 +604,13 @@ int gw_cmd_layer_impact(int argc, char **argv)
          * head each CSV and the HDF5 "run" attribute */
         char *hdr = gw_cli_one_line(gw_cli_provenance("layer-impact", argc, argv, cJSON_GetObjectItem(j, "settings")), ';');
         char path[4096];
+        /* a snapshot_failure.vtk left by an earlier failed run in DIR is not this
+         * run's (beside its results it read as the state where it failed): the
+         * set's commit removes it */
         if (write_csvs(&c, &r, hdr ? hdr : "", &err) != GW_OK ||
             gw_path_join(path, sizeof path, c.out, "impact.json") != GW_OK ||
-            gw_json_write(path, j, &err) != GW_OK) {
-            fprintf(stderr, "granwave layer-impact --out: %s\n", err.msg);
-            code = 1;
-        }
-        /* a snapshot_failure.vtk left by an earlier failed run in DIR is not
-         * this run's: beside its results it read as the state where it failed */
-        if (code == 0 &&
-            gw_cli_out_remove(c.out, (const char *const[]){"snapshot_failure.vtk", NULL}, &err) != GW_OK) {
+            gw_json_write(path, j, &err) != GW_OK || gw_outset_commit(&oset, &err) != GW_OK) {
+            gw_outset_abort(&oset);
             fprintf(stderr, "granwave layer-impact --out: %s\n", err.msg);
             code = 1;
         }

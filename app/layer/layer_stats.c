@@ -135,7 +135,8 @@ int gw_cmd_layer_stats(int argc, char **argv)
         gw_stats_setup_clear(&S);
         return 2;
     }
-    if (out && gw_stats_out_check(out, "layer-stats --out", &err) != GW_OK) /* before any work */
+    if (out && (gw_stats_out_check(out, "layer-stats --out", &err) != GW_OK || /* before any work */
+                gw_stats_out_check_input(out, pos[0], &err) != GW_OK))
         return gw_stats_setup_clear(&S), fail(err.msg);
     if (!*pos[0]) /* the table reader's message (the setup refuses an empty input as "input: ...") */
         return gw_stats_setup_clear(&S), fail("layer-stats RESULTS.csv: empty file name");
@@ -179,7 +180,9 @@ int gw_cmd_layer_stats(int argc, char **argv)
         fprintf(stderr, "granwave layer-stats --out: %s\n", err.msg);
         status = 1;
     }
-    if (json) {
+    if (status != 0) {
+        /* as every other command: nothing on stdout when the files were not written */
+    } else if (json) {
         cJSON *j = gw_stats_json(&R, 1);
         if (!j || gw_json_print(j, stdout) != GW_OK)
             status = 1;

@@ -70,6 +70,11 @@ typedef struct gw_stats_table {
     int ninputs;
     char **input_key, **input_value;              /* [ninputs] */
     unsigned long long *input_hash;               /* [ninputs] */
+    /* FNV-1a 64 of the table's bytes (gw_stats_table_read; 0 and has_content_hash
+     * 0 for a table parsed from text): the outputs record it beside the path, so
+     * that the table an analysis read can be told from a later version of it */
+    unsigned long long content_hash;
+    int has_content_hash;
 } gw_stats_table;
 
 /* Columns layer-stats needs; a table without one of them is refused. */
@@ -344,8 +349,12 @@ void gw_stats_analysis_free(gw_stats_analysis *A);
  * command's --json. NULL on ENOMEM. */
 cJSON *gw_stats_json(const gw_stats_analysis *A, int full);
 /* The files of --out DIR (groups.csv, convergence.csv, binary.csv, walls.csv,
- * diagram.csv, boundary_fit.json), each atomically. */
+ * diagram.csv, boundary_fit.json), placed together (gw_outset): a write that
+ * fails leaves the earlier ones as they were. */
 int gw_stats_write_files(const gw_stats_analysis *A, const char *dir, gw_err *err);
+/* GW_EINVAL naming both when the table input is one of the files
+ * gw_stats_write_files would write into dir (gw_outset_check_input). */
+int gw_stats_out_check_input(const char *dir, const char *input, gw_err *err);
 /* Whether gw_stats_write_files could write into dir, before any work: what
  * gw_out_check says (what names the flag in its message), then a file is made
  * and removed at once in dir, or in its nearest existing ancestor when dir

@@ -246,6 +246,11 @@ cJSON *gw_stats_json(const gw_stats_analysis *R, int full)
     cJSON_AddStringToObject(o, "version", gw_version());
     cJSON_AddStringToObject(o, "command", R->cmdline ? R->cmdline : "(library call)");
     cJSON_AddStringToObject(o, "input", R->input);
+    if (t->has_content_hash) {
+        char hx[17];
+        snprintf(hx, sizeof hx, "%016llx", t->content_hash);
+        cJSON_AddStringToObject(o, "input_fnv1a64", hx);
+    }
     cJSON_AddNumberToObject(o, "criterion", R->gs.criterion);
     cJSON_AddNumberToObject(o, "rows", (double)t->nrows);
     cJSON *p = cJSON_AddObjectToObject(o, "params");
@@ -277,9 +282,27 @@ static void num(FILE *fp, double v)
         fprintf(fp, ",%.9g", v);
 }
 
+/* "# LABEL: TEXT" where every line break in text (a file name may hold one)
+ * starts a new comment line: the next line of a CSV file never reads as its
+ * header or as data. */
+static void comment_kv(FILE *fp, const char *label, const char *text)
+{
+    fprintf(fp, "# %s: ", label);
+    for (const char *p = text ? text : ""; *p; p++)
+        if (*p == '\n' || *p == '\r')
+            fputs("\n# ", fp);
+        else
+            fputc(*p, fp);
+    fputc('\n', fp);
+}
+
 static void head(FILE *fp, const gw_stats_analysis *R, const char *what)
 {
-    fprintf(fp, "# granwave %s layer-stats\n# command: %s\n# input: %s\n", gw_version(), R->cmdline ? R->cmdline : "(library call)", R->input);
+    fprintf(fp, "# granwave %s layer-stats\n", gw_version());
+    comment_kv(fp, "command", R->cmdline ? R->cmdline : "(library call)");
+    comment_kv(fp, "input", R->input);
+    if (R->t.has_content_hash) /* the version of the table read */
+        fprintf(fp, "# input fnv1a64: %016llx\n", R->t.content_hash);
     fprintf(fp, "# criterion: %.6g (a group bounces globally when its share of bouncing impact points >= "
                 "criterion)\n# %s\n", R->gs.criterion, what);
 }
@@ -439,6 +462,15 @@ static void write_diagram(FILE *fp, const gw_stats_analysis *R)
 
 typedef void (*writer)(FILE *fp, const gw_stats_analysis *R);
 
+/* the six files of one analysis */
+static const char *const stats_files[] = {"groups.csv", "convergence.csv", "binary.csv", "walls.csv", "diagram.csv",
+                                          "boundary_fit.json", NULL};
+
+int gw_stats_out_check_input(const char *dir, const char *input, gw_err *err)
+{
+    return gw_outset_check_input(dir, stats_files, input, "layer-stats RESULTS.csv", err);
+}
+
 int gw_stats_write_files(const gw_stats_analysis *R, const char *dir, gw_err *err)
 {
     static const struct {
@@ -446,24 +478,34 @@ int gw_stats_write_files(const gw_stats_analysis *R, const char *dir, gw_err *er
         writer fn;
     } files[] = {{"groups.csv", write_groups}, {"convergence.csv", write_convergence},
                  {"binary.csv", write_binary}, {"walls.csv", write_walls}, {"diagram.csv", write_diagram}};
+    /* the six files of one analysis, or (a write failed) the earlier ones as they were */
+    gw_outset set;
+    memset(&set, 0, sizeof set);
     int rc = gw_mkdir_p(dir, err);
+    if (rc == GW_OK)
+        rc = gw_outset_begin(&set, dir, stats_files, err);
     char path[4096];
     for (size_t i = 0; rc == GW_OK && i < sizeof files / sizeof files[0]; i++) {
-        if (gw_path_join(path, sizeof path, dir, files[i].name) != GW_OK)
-            return gw_err_set(err, GW_EINVAL, "%s: path too long", dir);
+        if (gw_path_join(path, sizeof path, dir, files[i].name) != GW_OK) {
+            rc = gw_err_set(err, GW_EINVAL, "%s: path too long", dir);
+            break;
+        }
         gw_afile f;
         if ((rc = gw_afile_open(&f, path, err)) != GW_OK)
             break;
         files[i].fn(f.fp, R);
         rc = gw_afile_commit(&f, err);
     }
+    if (rc == GW_OK && gw_path_join(path, sizeof path, dir, "boundary_fit.json") != GW_OK)
+        rc = gw_err_set(err, GW_EINVAL, "%s: path too long", dir);
     if (rc == GW_OK) {
-        if (gw_path_join(path, sizeof path, dir, "boundary_fit.json") != GW_OK)
-            return gw_err_set(err, GW_EINVAL, "%s: path too long", dir);
         cJSON *j = gw_stats_json(R, 0);
         rc = j ? gw_json_write(path, j, err) : gw_err_set(err, GW_ENOMEM, "%s: out of memory", path);
         cJSON_Delete(j);
     }
+    if (rc == GW_OK)
+        rc = gw_outset_commit(&set, err);
+    gw_outset_abort(&set);
     return rc;
 }
 

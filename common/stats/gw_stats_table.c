@@ -747,6 +747,10 @@ int gw_stats_table_read(const char *path, gw_stats_table *t, gw_err *err)
     }
     if (rc == GW_OK)
         rc = gw_stats_table_parse(buf, path, t, err);
+    if (rc == GW_OK) {
+        t->content_hash = gw_fnv1a64(GW_FNV1A64_INIT, buf, len);
+        t->has_content_hash = 1;
+    }
     free(buf);
     return rc;
 }

@@ -833,6 +833,12 @@ int gw_sweep_journal_scan(const char *dir, const gw_sweep_config *cfg, char *don
         return gw_err_set(err, GW_EINVAL, "%s: path too long", dir);
     if (gw_out_file_check(tpath, "sweep table", err) != GW_OK)
         return GW_EINVAL;
+    /* an input file of the sweep that is its journal or table: the table would
+     * replace it (a sample named results.csv in DIR, exit 0 before) */
+    static const char *const outs[] = {"journal.csv", "results.csv", NULL};
+    for (int i = 0; i < cfg->ninputs; i++)
+        if (gw_outset_check_input(dir, outs, cfg->inputs[i].value, "sweep", err) != GW_OK)
+            return GW_EINVAL;
     size_t len = 0;
     gw_err rerr = {{0}};
     char *buf = slurp(path, &len, &rerr);

@@ -1,0 +1,29 @@
+/*
+ * gw_h5.h: HDF5 files built in memory and written as one atomic file. The
+ * file is created with the core driver and no backing store, so HDF5 itself
+ * never writes to the disk: a full disk or a file-size limit can no longer
+ * fail inside H5Fclose (which left the file open in the HDF5 library: a
+ * segmentation fault or "HDF5: infinite loop closing library" at exit, and
+ * dozens of lines of HDF5's error stack). gw_h5_mem_write takes the file's
+ * image and writes it through gw_afile (temporary name, fsync, rename; staged
+ * in an open gw_outset), so a write error is the one line "PATH: write failed:
+ * OS error" of every other file.
+ */
+#ifndef GW_H5_H
+#define GW_H5_H
+
+#include "gw_common.h"
+
+#if GW_HAVE_HDF5
+#include <hdf5.h>
+
+/* A new empty HDF5 file in memory, to be written to path (the name is only
+ * HDF5's label: nothing is created). v18: the 1.8 file format and later
+ * (checksummed metadata). A negative id on failure. */
+hid_t gw_h5_mem_create(const char *path, int v18);
+/* Write the in-memory file to path atomically and close it (closed in every
+ * case). GW_EIO naming path and the OS error; GW_ENOMEM. */
+int gw_h5_mem_write(hid_t file, const char *path, gw_err *err);
+#endif
+
+#endif

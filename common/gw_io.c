@@ -357,6 +357,10 @@ int gw_outset_commit(gw_outset *s, gw_err *err)
         struct stat a, b;
         if (lstat(p, &a) != 0)
             continue;
+        /* a symbolic link there was written through (gw_afile_open): it is
+         * this run's when it leads to a file staged, and stays */
+        if (S_ISLNK(a.st_mode) && stat(p, &b) == 0)
+            a = b;
         int mine = 0; /* the same file as one staged (whatever the spelling of its path) */
         for (int j = 0; j < s->n && !mine; j++)
             mine = lstat(s->path[j], &b) == 0 && a.st_dev == b.st_dev && a.st_ino == b.st_ino;

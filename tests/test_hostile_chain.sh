@@ -800,6 +800,10 @@ if runs "  the same as text" "$tmp/w42.txt" wavespeed --n 6:8 --vimp 0.3 --quiet
 fi
 runs "wavespeed with two speeds" "$tmp/w42b.json" wavespeed --n 6:8 --vimp 0.3,0.5 --quiet --jobs 1 --json &&
     jcheck "  fitted, beta 1/5 to 1e-3" "$tmp/w42b.json" "j['fitted'] is True and abs(j['beta'] - 0.2) < 1e-3"
+if runs "  the same as text (its standard errors were '+- nan')" "$tmp/w42b.txt" wavespeed --n 6:8 --vimp 0.3,0.5 --quiet --jobs 1; then
+    grep -q "^  beta: tq 0\.[0-9]*, front 0\.[0-9]*, group 0\.[0-9]* (two speeds: each fit goes through both" "$tmp/w42b.txt" &&
+        ! grep -q "nan" "$tmp/w42b.txt" && ok "  says why there is no standard error, no nan" || ko "  $(grep beta "$tmp/w42b.txt")"
+fi
 refused "falcon --n 1:1 (T_q and 4R/T_q were nan, exit 0)" \
     "^granwave falcon --n: 1:1 is one column size, and the study fits tau_N = T_q \(N - 1\) \+ tau_1 over N .* e\.g\. 1:2" \
     falcon --n 1:1 --quiet --out "$tmp/o"

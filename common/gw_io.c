@@ -22,23 +22,29 @@
 #include "gw_common.h"
 
 _Static_assert(sizeof(sigset_t) <= sizeof(((gw_afile *)0)->oldmask), "sigset_t does not fit");
+_Static_assert(sizeof(sigset_t) <= sizeof(((gw_outset *)0)->oldmask), "sigset_t does not fit");
 
-static void hold_signals(gw_afile *f)
+/* SIGINT, SIGTERM and SIGHUP held on this thread (the mask before in old,
+ * *masked set when it was), and given back */
+static void sig_hold(unsigned char *old, int *masked)
 {
     sigset_t s;
     sigemptyset(&s);
     sigaddset(&s, SIGINT);
     sigaddset(&s, SIGTERM);
     sigaddset(&s, SIGHUP);
-    f->masked = pthread_sigmask(SIG_BLOCK, &s, (sigset_t *)(void *)f->oldmask) == 0;
+    *masked = pthread_sigmask(SIG_BLOCK, &s, (sigset_t *)(void *)old) == 0;
 }
 
-static void release_signals(gw_afile *f)
+static void sig_release(unsigned char *old, int *masked)
 {
-    if (f->masked)
-        pthread_sigmask(SIG_SETMASK, (sigset_t *)(void *)f->oldmask, NULL);
-    f->masked = 0;
+    if (*masked)
+        pthread_sigmask(SIG_SETMASK, (sigset_t *)(void *)old, NULL);
+    *masked = 0;
 }
+
+static void hold_signals(gw_afile *f) { sig_hold(f->oldmask, &f->masked); }
+static void release_signals(gw_afile *f) { sig_release(f->oldmask, &f->masked); }
 
 /* The file a write to path replaces: path itself, or the file a symbolic link
  * there leads to (the rename of an atomic write would put a regular file in
@@ -298,22 +304,8 @@ static void outset_close(gw_outset *s)
 
 /* SIGINT, SIGTERM and SIGHUP held while the staged files are placed: an
  * interrupt then comes after the last rename, never between two */
-static void outset_hold(gw_outset *s)
-{
-    sigset_t m;
-    sigemptyset(&m);
-    sigaddset(&m, SIGINT);
-    sigaddset(&m, SIGTERM);
-    sigaddset(&m, SIGHUP);
-    s->masked = pthread_sigmask(SIG_BLOCK, &m, (sigset_t *)(void *)s->oldmask) == 0;
-}
-
-static void outset_release(gw_outset *s)
-{
-    if (s->masked)
-        pthread_sigmask(SIG_SETMASK, (sigset_t *)(void *)s->oldmask, NULL);
-    s->masked = 0;
-}
+static void outset_hold(gw_outset *s) { sig_hold(s->oldmask, &s->masked); }
+static void outset_release(gw_outset *s) { sig_release(s->oldmask, &s->masked); }
 
 void gw_outset_abort(gw_outset *s)
 {

@@ -331,6 +331,12 @@ typedef struct gw_layer_make_params {
     int clumps;            /* 1: type B soil, n rigid clumps (layer_clumps.c) [0] */
     double aspect_max;     /* clumps: aspect ratio uniform in [1, aspect_max],
                               aspect_max in [1, 4]; 1 gives one-disc grains [4] */
+    /* progress (may be NULL) [NULL]: called with progress_ctx after every 0.01 s
+     * of simulated settling, done = the settled time in hundredths of a second,
+     * total = t_max in the same unit (the pile usually settles before); a
+     * non-zero return stops the pluviation (GW_ECANCELED) */
+    gw_progress_fn progress;
+    void *progress_ctx;
 } gw_layer_make_params;
 
 gw_layer_make_params gw_layer_make_params_default(void);

@@ -181,6 +181,11 @@ const gw_param *gw_layer_make_outcome_fields(void);
  * gw_layer_make_outcome_free also after a failure. GW_EINVAL "NAME: reason",
  * GW_EUNSUPPORTED (HDF5 out without HDF5), GW_EIO, the run's status. */
 int gw_layer_make_run(const gw_layer_make_setup *s, gw_layer_make_outcome *out, gw_err *err);
+/* The same with progress(pctx, done, total) every 0.01 s of simulated settling
+ * (gw_layer_make_params.progress: hundredths of a second of t-max); non-zero
+ * stops it (GW_ECANCELED). */
+int gw_layer_make_run_progress(const gw_layer_make_setup *s, gw_progress_fn progress, void *pctx,
+                               gw_layer_make_outcome *out, gw_err *err);
 /* The pluviation's parameters from s as gw_layer_make_run resolves and checks
  * them (the out path tried too), for callers that call gw_layer_make and
  * write the sample themselves (the program). GW_EINVAL "NAME: reason". */

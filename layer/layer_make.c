@@ -128,7 +128,7 @@ static int check_step(const gw_layer_params *lp, const gw_layer_make_params *m, 
 
 /* Settle bodies b (positions updated, velocities zeroed) with the given G.
  * Returns the simulated time in *t and the final kinetic energy in *ke. */
-static int settle(const gw_layer_params *lp, const gw_layer_make_params *m, double t_max, int n,
+static int settle(const gw_layer_params *lp, const gw_layer_make_params *m, double t0, double t_max, int n,
                   gw_layer_body *b, double thr, double *t, double *ke, int *conv,
                   long *steps, long *rebuilds, gw_err *err)
 {
@@ -158,6 +158,12 @@ static int settle(const gw_layer_params *lp, const gw_layer_make_params *m, doub
         gw_layer_energy_of(L, &e);
         *ke = e.kinetic_soil + e.kinetic_block;
         *t = tk;
+        /* done and total in chunks of the whole settling (t0 before this phase) */
+        if (rc == GW_OK && m->progress &&
+            m->progress(m->progress_ctx, lround((t0 + tk) / chunk), (long)ceil(m->t_max / chunk - 1e-9)) != 0) {
+            rc = gw_err_set(err, GW_ECANCELED, "stopped by the progress callback at t = %.4g s of settling", t0 + tk);
+            break;
+        }
         if (k >= 10 && tk >= t_land && *ke < thr) {
             *conv = 1;
             break;
@@ -232,7 +238,7 @@ static int settle_all(const gw_layer_params *lp, const gw_layer_make_params *m, 
         gw_layer_params soft = *lp;
         soft.shear_modulus *= m->modulus_factor;
         double ts = 0;
-        rc = settle(&soft, m, 0.5 * m->t_max, n, b, thr, &ts, ke, conv, &res->steps, &res->rebuilds, err);
+        rc = settle(&soft, m, 0.0, 0.5 * m->t_max, n, b, thr, &ts, ke, conv, &res->steps, &res->rebuilds, err);
         *t += ts;
         /* the soft pile may sink into a wall: the relaxation cannot start from
          * there (it was refused naming no input, exit 2) */
@@ -244,7 +250,7 @@ static int settle_all(const gw_layer_params *lp, const gw_layer_make_params *m, 
     }
     if (rc == GW_OK) {
         double tr = 0;
-        rc = settle(lp, m, m->t_max - *t, n, b, thr, &tr, ke, conv, &res->steps, &res->rebuilds, err);
+        rc = settle(lp, m, *t, m->t_max - *t, n, b, thr, &tr, ke, conv, &res->steps, &res->rebuilds, err);
         *t += tr;
     }
     return rc;

@@ -151,12 +151,20 @@ int gw_layer_make_plan(const gw_layer_make_setup *s, gw_layer_params *lp_out, gw
 
 int gw_layer_make_run(const gw_layer_make_setup *s, gw_layer_make_outcome *out, gw_err *err)
 {
+    return gw_layer_make_run_progress(s, NULL, NULL, out, err);
+}
+
+int gw_layer_make_run_progress(const gw_layer_make_setup *s, gw_progress_fn progress, void *pctx,
+                               gw_layer_make_outcome *out, gw_err *err)
+{
     memset(out, 0, sizeof *out);
     gw_layer_params lp;
     gw_layer_make_params mp;
     int rc = gw_layer_make_plan(s, &lp, &mp, err);
     if (rc != GW_OK)
         return rc;
+    mp.progress = progress;
+    mp.progress_ctx = pctx;
     if ((rc = gw_layer_make(&lp, &mp, &out->sample, &out->r, err)) != GW_OK)
         return rc;
     for (int k = 0; k < out->sample.n; k++)

@@ -48,6 +48,27 @@ static int fail(const char *cmd, const char *msg)
 
 /* ------------------------------------------------------------ layer-make --- */
 
+#define PROGRESS_MS 3000.0
+
+/* layer-make's progress line on a terminal (gw_layer_make_params.progress:
+ * done in hundredths of a second simulated) */
+typedef struct make_progress {
+    double t_max, wall0, last;
+} make_progress;
+
+static int make_report(void *ctx, long done, long total)
+{
+    make_progress *p = ctx;
+    (void)total;
+    const double now = gw_clock_ms();
+    if (now - p->last >= PROGRESS_MS) {
+        fprintf(stderr, "granwave layer-make: t = %.2f s simulated (until the pile settles, at most t-max %g s), "
+                "%.0f s elapsed\n", 0.01 * (double)done, p->t_max, (now - p->wall0) / 1e3);
+        p->last = now;
+    }
+    return 0;
+}
+
 static const char *make_summary =
     "Pluviate a 2D sample (Bourrier et al. 2008, docs/physics.md 2.2): polydisperse discs\n"
     "dropped under gravity in a box with rigid walls until the kinetic energy is below\n"
@@ -117,6 +138,14 @@ int gw_cmd_layer_make(int argc, char **argv)
     const int json = c.json;
     gw_layer_sample s;
     gw_layer_make_result r;
+    /* on a terminal, a line every PROGRESS_MS of wall time once the run has
+     * lasted that long (a pluviation of 1000 discs takes minutes) */
+    make_progress mpr = {.t_max = mp.t_max, .wall0 = gw_clock_ms()};
+    mpr.last = mpr.wall0;
+    if (isatty(STDERR_FILENO)) {
+        mp.progress = make_report;
+        mp.progress_ctx = &mpr;
+    }
     int rc = gw_layer_make(&m.lp, &mp, &s, &r, &err);
     if (rc == GW_EINVAL) { /* a value refused by the run ("dt: ..."): named as its flag */
         gw_cli_study_error(gw_layer_make_setup_params(), "layer-make", rc, &err);
@@ -452,7 +481,6 @@ static int write_csvs(const impact_cli *c, const gw_layer_impact_result *r, cons
  * terminal, a progress line every PROGRESS_MS of wall time once a run has
  * lasted that long (exact mode to T_f takes minutes): the simulated time
  * reached; the run ends at T_f, at most at t-max. */
-#define PROGRESS_MS 3000.0
 typedef struct vtk_ctx {
     const char *dir;       /* NULL: no snapshots */
     double t0;

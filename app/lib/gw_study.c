@@ -77,9 +77,7 @@ static int make_init(void *s) { return gw_layer_make_setup_init(s); }
 static void make_clear(void *s) { gw_layer_make_setup_clear(s); }
 static int make_run(const void *s, void *out, gw_progress_fn progress, void *pctx, gw_err *err)
 {
-    (void)progress;
-    (void)pctx;
-    return gw_layer_make_run(s, out, err);
+    return gw_layer_make_run_progress(s, progress, pctx, out, err);
 }
 static void make_free(void *out) { gw_layer_make_outcome_free(out); }
 

@@ -87,8 +87,8 @@ def chain(**kwargs):
     return _study("chain").run(kwargs)
 
 
-def layer_make(**kwargs):
-    return _study("layer-make").run(kwargs)
+def layer_make(*, progress=None, **kwargs):
+    return _study("layer-make").run(kwargs, progress)
 
 
 _SNAP_COLS = ("x", "y", "theta", "vx", "vy", "omega")
@@ -266,7 +266,9 @@ layer_make.__doc__ = _study("layer-make").doc(
     "Pluviate a 2D sample (Bourrier et al. 2008, physics.md 2.2), as `granwave layer-make`:\n"
     "polydisperse discs (clumps=True: rigid clumps) dropped under gravity until the kinetic\n"
     "energy is below a threshold. Deterministic for a seed. out=FILE writes the sample\n"
-    "for layer_impact(sample=FILE); the result holds the discs (x, y, r) either way.")
+    "for layer_impact(sample=FILE); the result holds the discs (x, y, r) either way.\n"
+    "progress: f(done, total) every 0.01 s of simulated settling (hundredths of a second of\n"
+    "t_max; the pile usually settles before); return True (or raise) to stop.")
 layer_impact.__doc__ = _study("layer-impact").doc(
     "One block impact on a 2D granular layer (Bourrier et al. 2008), as\n"
     "`granwave layer-impact` (fast default: verlet; exact=True for the exact mode).\n"

@@ -219,3 +219,19 @@ def test_progress_reaches_the_caller_and_stops_the_run(sample):
 
     with pytest.raises(KeyboardInterrupt):
         granwave.layer_impact(sample=sample, t_max=0.004, progress=boom)
+
+
+def test_layer_make_progress_and_cancel():
+    """layer_make reports every 0.01 s of simulated settling, in hundredths of t_max
+    (it took no progress argument before), and a True return stops it (status -9)."""
+    seen = []
+    r = granwave.layer_make(n=60, width_rm=16, seed=3, progress=lambda d, t: seen.append((d, t)))
+    done = [d for d, _ in seen]
+    assert seen and all(t == 600 for _, t in seen)  # t_max 6 s in hundredths
+    assert done == list(range(1, len(done) + 1))  # one call per 0.01 s, in order
+    assert abs(done[-1] / 100 - r["t_settle"]) < 1e-9  # the last at the settled time
+    with pytest.raises(granwave.GranwaveError) as e:
+        granwave.layer_make(n=60, width_rm=16, seed=3, progress=lambda d, t: d >= 20)
+    assert e.value.status == -9 and "at t = 0.2 s" in str(e.value)
+    # the same run without a progress callback settles the same pile
+    assert granwave.layer_make(n=60, width_rm=16, seed=3)["t_settle"] == r["t_settle"]

@@ -8,6 +8,7 @@ import ctypes
 import itertools
 import numbers
 import os
+import signal
 import threading
 
 import numpy as np
@@ -267,17 +268,21 @@ class Interruptible:
     returned: a chain of 20000 beads ran for minutes after Ctrl-C. From the main
     thread, the library's handler is installed for the call
     (gw_interrupt_begin): SIGINT stops the runs under way at their next step,
-    and KeyboardInterrupt is raised here once the call has returned (nothing is
-    returned from it). Calls from other threads keep Python's handling (only
-    the main thread receives signals in Python)."""
+    and once the call has returned the signal is raised again for Python's own
+    handler (KeyboardInterrupt by default; a handler of the program's runs
+    instead, and the call then fails with status -9, "interrupted"). Left alone:
+    calls from other threads (only the main thread receives signals in Python)
+    and a SIGINT the program ignores."""
 
     def __enter__(self):
-        self.on = threading.current_thread() is threading.main_thread() and lib.gw_interrupt_begin() == 0
+        self.on = (threading.current_thread() is threading.main_thread()
+                   and signal.getsignal(signal.SIGINT) is not signal.SIG_IGN
+                   and lib.gw_interrupt_begin() == 0)
         return self
 
     def __exit__(self, etype, exc, tb):
         if self.on and lib.gw_interrupt_end() and (etype is None or issubclass(etype, Exception)):
-            raise KeyboardInterrupt
+            signal.raise_signal(signal.SIGINT)  # Python's handler, restored by gw_interrupt_end
         return False
 
 

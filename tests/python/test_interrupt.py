@@ -6,7 +6,9 @@ solver="rk4")` went on for more than 5 minutes after Ctrl-C (killed by a
 timeout), and layer_make(n=300) and dispersion(n=4096) raised KeyboardInterrupt
 only when they had finished, 9 and 11 s later. Now a call from the main thread
 installs the library's SIGINT handler (gw_interrupt_begin), every solver step
-checks the request, and KeyboardInterrupt is raised as soon as the call returns.
+checks the request, and the signal goes to Python's own handler as soon as the
+call returns (KeyboardInterrupt by default; a handler of the program's runs
+instead; a SIGINT the program ignores stays ignored).
 
 Each case runs in a child process (signals and pytest do not mix): a thread
 sends SIGINT 0.5 s into a call that takes more than 25 s uninterrupted
@@ -80,3 +82,46 @@ def test_ctrl_c_stops_the_call(call):
     assert out["elapsed"] < 6.0, out
     assert out["same_after"], out
     assert out["sleep"] == "KeyboardInterrupt" and out["sleep_elapsed"] < 5.0, out
+
+
+HANDLERS = textwrap.dedent("""
+    import json, os, signal, sys, threading, time
+    import granwave
+
+    def fire():
+        os.kill(os.getpid(), signal.SIGINT)
+
+    out = {}
+    # a handler of the program's own: it runs (once), no KeyboardInterrupt, and
+    # the stopped call fails with status -9
+    got = []
+    signal.signal(signal.SIGINT, lambda s, f: got.append(s))
+    threading.Timer(0.5, fire).start()
+    t0 = time.monotonic()
+    try:
+        granwave.chain(n=20000, solver="rk4")
+        out["custom"] = "returned"
+    except granwave.GranwaveError as e:
+        out["custom"] = "status %d: %s" % (e.status, e)
+    out["custom_elapsed"] = time.monotonic() - t0
+    out["custom_calls"] = len(got)
+    # SIGINT ignored by the program: ignored during the call too (the run goes on)
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+    threading.Timer(0.1, fire).start()
+    t0 = time.monotonic()
+    r = granwave.layer_make(n=60, width_rm=16, seed=3)
+    out["ignored_elapsed"] = time.monotonic() - t0
+    out["ignored_settled"] = r["t_settle"]
+    print(json.dumps(out))
+""")
+
+
+def test_the_programs_own_sigint_handling():
+    p = subprocess.run([sys.executable, "-c", HANDLERS], capture_output=True, text=True, timeout=120,
+                       env=dict(os.environ))
+    assert p.returncode == 0, p.stderr
+    out = json.loads(p.stdout.strip().splitlines()[-1])
+    assert out["custom"].startswith("status -9") and "interrupted" in out["custom"], out
+    assert out["custom_elapsed"] < 6.0 and out["custom_calls"] == 1, out
+    # the 60-disc pluviation (1.2 s) runs to its end with SIGINT, sent 0.1 s in, ignored
+    assert out["ignored_elapsed"] > 0.15 and out["ignored_settled"] > 0.5, out

@@ -126,13 +126,15 @@ int gw_solver_tolerances_check(double rtol, double atol, const char *rname, cons
  * reader sees either the previous file or the complete new one. SIGINT, SIGTERM
  * and SIGHUP are held from open to commit/abort (delivered right after), so an
  * interrupt never leaves the temporary behind; only kill -9 can. The temporary
- * is "PATH.tmp.XXXXXX" in the same directory (a unique name: two writers of
- * one path never share a temporary). Every file granwave writes goes through
- * this: text through the stream fp, HDF5 through the temporary's name. */
+ * is "PATH.tmp.HOST.PID.XXXXXX" in the same directory (a unique name: two
+ * writers of one path never share a temporary); the temporaries of PATH that a
+ * process of this host no longer running left (kill -9) are removed at the
+ * next open of PATH. Every file granwave writes goes through this: text through
+ * the stream fp, HDF5 through the temporary's name. */
 typedef struct gw_afile {
     FILE *fp;
     char path[4096];
-    char tmp[4096 + 32];
+    char tmp[4096 + 64];
     unsigned char oldmask[128]; /* the caller's signal mask (a sigset_t) */
     int masked;
     int named; /* opened by gw_afile_open_named: the caller writes tmp by name */
@@ -169,7 +171,8 @@ void gw_afile_abort(gw_afile *f);
  * through a long run (layer-impact's snapshots): SIGINT, SIGTERM and SIGHUP
  * are held only while each file is written and while the staged files are
  * placed or removed; a run killed (kill -9) before its commit leaves its
- * temporaries ("NAME.tmp.XXXXXX", never read as results) and the earlier
+ * temporaries ("NAME.tmp.HOST.PID.XXXXXX", never read as results, removed by
+ * the next run's write of NAME) and the earlier
  * run's files as they were. One set per thread. */
 typedef struct gw_outset {
     char dir[4096];

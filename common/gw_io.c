@@ -7,6 +7,7 @@
  * is refused before any read, so nothing can block), reads bounded in size.
  */
 #define _POSIX_C_SOURCE 200809L
+#include <dirent.h>
 #include <errno.h>
 #include <fcntl.h>
 #include <limits.h>
@@ -77,6 +78,59 @@ static int write_target(const char *path, char *out, size_t n, const char *what,
     return GW_OK;
 }
 
+/* This host's name as it goes into temporaries' names: letters, digits and
+ * '-', at most 24 ("host" when none is left). */
+static void host_token(char *out, size_t n)
+{
+    char h[256] = "";
+    size_t k = 0;
+    if (gethostname(h, sizeof h - 1) != 0)
+        h[0] = '\0';
+    for (const char *c = h; *c && k + 1 < n && k < 24; c++)
+        if ((*c >= 'a' && *c <= 'z') || (*c >= 'A' && *c <= 'Z') || (*c >= '0' && *c <= '9') || *c == '-')
+            out[k++] = *c;
+    out[k] = '\0';
+    if (k == 0)
+        snprintf(out, n, "host");
+}
+
+/* The temporaries of path that a writer on this host left when it was killed
+ * (kill -9): "BASE.tmp.HOST.PID.XXXXXX" whose PID is no process (kill(PID, 0):
+ * ESRCH). A writer alive (this process included), another host's temporary
+ * (a shared file system) and other names are left alone. */
+static void remove_stale_temporaries(const char *path, const char *host)
+{
+    char dir[4096];
+    const char *slash = strrchr(path, '/'), *base = slash ? slash + 1 : path;
+    if (slash && (size_t)(slash - path) < sizeof dir)
+        snprintf(dir, sizeof dir, "%.*s", slash == path ? 1 : (int)(slash - path), path);
+    else if (!slash)
+        snprintf(dir, sizeof dir, ".");
+    else
+        return;
+    char prefix[512];
+    if (snprintf(prefix, sizeof prefix, "%s.tmp.%s.", base, host) >= (int)sizeof prefix)
+        return;
+    const size_t plen = strlen(prefix);
+    DIR *d = opendir(dir);
+    if (!d)
+        return;
+    for (struct dirent *e; (e = readdir(d)) != NULL;) {
+        if (strncmp(e->d_name, prefix, plen) != 0)
+            continue;
+        char *end;
+        errno = 0;
+        long pid = strtol(e->d_name + plen, &end, 10);
+        if (errno || end == e->d_name + plen || pid <= 0 || *end != '.' || strlen(end + 1) != 6 ||
+            pid == (long)getpid())
+            continue;
+        if (kill((pid_t)pid, 0) == 0 || errno != ESRCH)
+            continue;
+        unlinkat(dirfd(d), e->d_name, 0);
+    }
+    closedir(d);
+}
+
 int gw_afile_open(gw_afile *f, const char *path, gw_err *err)
 {
     memset(f, 0, sizeof *f);
@@ -87,7 +141,10 @@ int gw_afile_open(gw_afile *f, const char *path, gw_err *err)
         return rc;
     }
     path = f->path; /* the temporary beside the file it replaces */
-    snprintf(f->tmp, sizeof f->tmp, "%s.tmp.XXXXXX", path);
+    char host[32];
+    host_token(host, sizeof host);
+    remove_stale_temporaries(path, host);
+    snprintf(f->tmp, sizeof f->tmp, "%s.tmp.%s.%ld.XXXXXX", path, host, (long)getpid());
     int fd = mkstemp(f->tmp);
     if (fd < 0) {
         f->tmp[0] = '\0';

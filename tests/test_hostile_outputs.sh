@@ -17,7 +17,7 @@
 #    snapshot_failure.vtk.
 #  4 a layer-impact killed (kill -9) during its run replaced the earlier run's
 #    snapshot_0.vtk (written at its first sample) beside the earlier results; it
-#    now leaves the earlier files as they were and a temporary (NAME.tmp.XXXXXX,
+#    now leaves the earlier files as they were and a temporary (NAME.tmp.HOST.PID.XXXXXX,
 #    never read as a result). Two runs into one DIR at once leave all the files
 #    of one of them.
 #  5 dispersion: the study's files and --column-n's wall_spectrum.csv are one
@@ -149,13 +149,13 @@ kill -9 $pid 2>/dev/null; wait $pid 2>/dev/null
 left=$(ls "$d" | grep '\.tmp\.' | tr '\n' ' ')
 diff -r "$d" "$tmp/l4.before" 2>&1 | grep -v '^Only in .*: snapshot_0\.vtk\.tmp\.' | grep -q . &&
     ko "4: a run killed during its run changed the earlier run's files: $(diff -rq "$d" "$tmp/l4.before" | head -3)" ||
-    { echo "$left" | grep -qE '^snapshot_0\.vtk\.tmp\.[A-Za-z0-9]{6} $' &&
+    { echo "$left" | grep -qE '^snapshot_0\.vtk\.tmp\.[A-Za-z0-9-]+\.[0-9]+\.[A-Za-z0-9]{6} $' &&
       ok "4: layer-impact killed during its run: the earlier run's files as they were, and a temporary" ||
       ko "4: killed run left: $(ls "$d" | tr '\n' ' ')"; }
 "$GW" layer-impact --sample "$S" --t-max 0.01 --vi 12 --out "$d" >/dev/null 2>&1
 [ "$(cmdlines "$d")" = "command: granwave layer-impact --sample $S --t-max 0.01 --vi 12 --out $d" ] &&
-    [ "$(ls "$d" | grep -v '\.tmp\.' | tr '\n' ' ')" = "$(ls "$tmp/l4.before" | tr '\n' ' ')" ] &&
-    ok "4: the next run places its files (the killed run's temporary aside)" ||
+    [ "$(ls "$d" | grep -v '\.tmp\.' | tr '\n' ' ')" = "$(ls "$tmp/l4.before" | tr '\n' ' ')" ] && notmp "$d" &&
+    ok "4: the next run places its files and removes the killed run's temporary (its process gone)" ||
     ko "4: after the next run: $(ls "$d" | tr '\n' ' ')"
 # two runs placing their sets into one directory at once: all files of one of them
 d=$tmp/c4
@@ -376,6 +376,31 @@ refused "10: sweep over a sample DIR/results.csv --out DIR (the table over the s
     sweep "$tmp/swx.ini" --out "$tmp/d10x" --quiet --jobs 1
 cmp -s "$tmp/d10x/results.csv" "$S" && [ "$(ls "$tmp/d10x")" = "results.csv" ] && ok "10: sweep: the sample untouched" ||
     ko "10: sweep after the refusal: $(ls "$tmp/d10x" | tr '\n' ' ')"
+
+# 11: a run killed with kill -9 left its temporaries for good (a later run could not
+# tell them from a run still writing). Named NAME.tmp.HOST.PID.XXXXXX now: the next
+# write of NAME removes those of this host whose process is gone, and leaves a live
+# process's, another host's and other names alone.
+host11=$(hostname | tr -cd 'A-Za-z0-9-' | cut -c1-24); host11=${host11:-host}
+sh -c 'exit 0' & dead11=$!; wait "$dead11"   # a PID no process holds now
+sleep 30 </dev/null >/dev/null 2>&1 & live11=$!
+mkdir -p "$tmp/d11"
+: >"$tmp/d11/chain.json.tmp.$host11.$dead11.aB3dE9"
+: >"$tmp/d11/chain.json.tmp.$host11.$live11.Xy7Q2w"
+: >"$tmp/d11/chain.json.tmp.otherhost.$dead11.Kq8Pz1"
+: >"$tmp/d11/chain.json.tmp.Zr4Tt0"
+if "$GW" chain --n 3 --out "$tmp/d11" >/dev/null 2>"$tmp/e11" </dev/null; then
+    [ ! -e "$tmp/d11/chain.json.tmp.$host11.$dead11.aB3dE9" ] && ok "11: a dead writer's temporary removed by the next run" ||
+        ko "11: the dead writer's temporary is still there"
+    [ -e "$tmp/d11/chain.json.tmp.$host11.$live11.Xy7Q2w" ] && [ -e "$tmp/d11/chain.json.tmp.otherhost.$dead11.Kq8Pz1" ] &&
+        [ -e "$tmp/d11/chain.json.tmp.Zr4Tt0" ] && ok "11: a live writer's, another host's and an old-style name kept" ||
+        ko "11: removed one it must keep: $(ls "$tmp/d11" | tr '\n' ' ')"
+    [ "$(ls "$tmp/d11" | grep -c '\.tmp\.')" -eq 3 ] && ok "11: the run's own temporaries gone" ||
+        ko "11: temporaries left: $(ls "$tmp/d11" | tr '\n' ' ')"
+else
+    ko "11: chain --out failed: $(head -c 300 "$tmp/e11")"
+fi
+kill "$live11" 2>/dev/null
 
 echo "test_hostile_outputs: $passes passed, $fails failed"
 [ $fails -eq 0 ]

@@ -253,11 +253,8 @@ static int rk4_advance(gw_solver *s, double tout, double *t, double *y, int *roo
             rc = GW_ELIMIT;
             break;
         }
-        if (gw_interrupt_pending()) { /* SIGINT under gw_interrupt_begin */
-            gw_solver_set_error(s, "rk4: interrupted (SIGINT) at t = %.9g s", r->t);
-            rc = GW_ECANCELED;
+        if ((rc = gw_solver_interrupted(s, r->t)) != 0)
             break;
-        }
         if ((rc = rk4_step(s, r->t, r->y, h, r->ynew)) != 0)
             break;
         r->steps++;

@@ -276,11 +276,8 @@ static int verlet_advance(gw_solver *s, double tout, double *t, double *y, int *
             rc = GW_ELIMIT;
             break;
         }
-        if (gw_interrupt_pending()) { /* SIGINT under gw_interrupt_begin */
-            gw_solver_set_error(s, "verlet: interrupted (SIGINT) at t = %.9g s", v->t);
-            rc = GW_ECANCELED;
+        if ((rc = gw_solver_interrupted(s, v->t)) != 0)
             break;
-        }
         if ((rc = verlet_step(s, h)) != 0)
             break;
         v->t = (v->t + h >= tout || tout - (v->t + h) < 1e-9 * dt) ? tout : v->t + h;

@@ -155,15 +155,20 @@ int gw_solver_create(const gw_solver_type *type, const gw_system *sys,
     return GW_OK;
 }
 
+int gw_solver_interrupted(gw_solver *s, double t)
+{
+    if (!gw_interrupt_pending())
+        return 0;
+    gw_solver_set_error(s, "%s: interrupted (SIGINT) at t = %.9g s", s->type->name, t);
+    return GW_ECANCELED;
+}
+
 int gw_solver_advance(gw_solver *s, double tout, double *t, double *y, int *rootsfound)
 {
     s->errmsg[0] = '\0';
     int rc = s->type->advance(s, tout, t, y, rootsfound);
-    if (rc < 0 && rc != GW_ECANCELED && gw_interrupt_pending()) {
-        /* CVODE or ARKode stopped by their right-hand side (gw_sun_rhs) */
-        gw_solver_set_error(s, "%s: interrupted (SIGINT) at t = %.9g s", s->type->name, *t);
+    if (rc < 0 && rc != GW_ECANCELED && gw_solver_interrupted(s, *t)) /* CVODE or ARKode: their rhs failed */
         rc = GW_ECANCELED;
-    }
     return rc;
 }
 

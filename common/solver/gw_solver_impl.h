@@ -46,4 +46,10 @@ static inline int gw_root_crossed(const signed char *sign, const double *g, int 
 void gw_solver_set_error(gw_solver *s, const char *fmt, ...)
     __attribute__((format(printf, 2, 3)));
 
+/* GW_ECANCELED with "BACKEND: interrupted (SIGINT) at t = T s" on the solver
+ * when SIGINT came under gw_interrupt_begin (gw_common.h), else 0: checked
+ * before each step of the fixed-step backends and after a SUNDIALS failure
+ * (their rhs, gw_sun_rhs, fails once the request is pending). */
+int gw_solver_interrupted(gw_solver *s, double t);
+
 #endif

@@ -48,24 +48,36 @@ static int fail(const char *cmd, const char *msg)
 
 /* ------------------------------------------------------------ layer-make --- */
 
+/* On a terminal, a progress line every PROGRESS_MS of wall time once a run
+ * has lasted that long: the simulated time reached (layer-make, layer-impact). */
 #define PROGRESS_MS 3000.0
-
-/* layer-make's progress line on a terminal (gw_layer_make_params.progress:
- * done in hundredths of a second simulated) */
-typedef struct make_progress {
+typedef struct sim_progress {
+    const char *cmd, *until; /* "layer-make", "until the pile settles" */
     double t_max, wall0, last;
-} make_progress;
+} sim_progress;
 
+static sim_progress sim_progress_start(const char *cmd, const char *until, double t_max)
+{
+    const double now = gw_clock_ms();
+    return (sim_progress){.cmd = cmd, .until = until, .t_max = t_max, .wall0 = now, .last = now};
+}
+
+static void sim_progress_report(sim_progress *p, double t)
+{
+    const double now = gw_clock_ms();
+    if (now - p->last < PROGRESS_MS)
+        return;
+    fprintf(stderr, "granwave %s: t = %.4g s simulated (%s, at most t-max %g s), %.0f s elapsed\n", p->cmd, t,
+            p->until, p->t_max, (now - p->wall0) / 1e3);
+    p->last = now;
+}
+
+/* layer-make's progress (gw_layer_make_params.progress: done in hundredths of a
+ * second simulated) */
 static int make_report(void *ctx, long done, long total)
 {
-    make_progress *p = ctx;
     (void)total;
-    const double now = gw_clock_ms();
-    if (now - p->last >= PROGRESS_MS) {
-        fprintf(stderr, "granwave layer-make: t = %.2f s simulated (until the pile settles, at most t-max %g s), "
-                "%.0f s elapsed\n", 0.01 * (double)done, p->t_max, (now - p->wall0) / 1e3);
-        p->last = now;
-    }
+    sim_progress_report(ctx, 0.01 * (double)done);
     return 0;
 }
 
@@ -140,8 +152,7 @@ int gw_cmd_layer_make(int argc, char **argv)
     gw_layer_make_result r;
     /* on a terminal, a line every PROGRESS_MS of wall time once the run has
      * lasted that long (a pluviation of 1000 discs takes minutes) */
-    make_progress mpr = {.t_max = mp.t_max, .wall0 = gw_clock_ms()};
-    mpr.last = mpr.wall0;
+    sim_progress mpr = sim_progress_start("layer-make", "until the pile settles", mp.t_max);
     if (isatty(STDERR_FILENO)) {
         mp.progress = make_report;
         mp.progress_ctx = &mpr;
@@ -488,20 +499,14 @@ typedef struct vtk_ctx {
     gw_err err;
     char failure_file[4096];
     int tty;               /* stderr is a terminal: progress lines */
-    double wall0, last, t_max;
+    sim_progress prog;
 } vtk_ctx;
 
 static int write_snapshot(void *ctx, const gw_layer *L, int k, int final)
 {
     vtk_ctx *v = ctx;
-    if (v->tty && final == 0) {
-        const double now = gw_clock_ms();
-        if (now - v->last >= PROGRESS_MS) {
-            fprintf(stderr, "granwave layer-impact: t = %.4g s simulated (to T_f, at most t-max %g s), %.0f s "
-                    "elapsed\n", gw_layer_time(L), v->t_max, (now - v->wall0) / 1e3);
-            v->last = now;
-        }
-    }
+    if (v->tty && final == 0)
+        sim_progress_report(&v->prog, gw_layer_time(L));
     if (!v->dir || v->failed || (final == 0 && k > 0))
         return GW_OK;
     static const char *const files[3] = {"snapshot_0.vtk", "snapshot_end.vtk", "snapshot_failure.vtk"};
@@ -597,8 +602,8 @@ int gw_cmd_layer_impact(int argc, char **argv)
         return fail("layer-impact", err.msg);
     }
     gw_layer_impact_result r;
-    vtk_ctx vc = {.dir = c.out, .tty = isatty(STDERR_FILENO), .wall0 = gw_clock_ms(), .t_max = c.ip.t_max};
-    vc.last = vc.wall0;
+    vtk_ctx vc = {.dir = c.out, .tty = isatty(STDERR_FILENO),
+                  .prog = sim_progress_start("layer-impact", "to T_f", c.ip.t_max)};
     if (c.out || vc.tty) {
         c.ip.on_sample = write_snapshot;
         c.ip.sample_ctx = &vc;

@@ -171,18 +171,17 @@ int gw_cmd_wavespeed(int argc, char **argv)
                    gw_version(), wall_s);
             for (int iv = 0; iv < nv; iv++)
                 printf("  %-8.4g %8.2f %8.2f %8.2f %8.2f\n", v[iv], v_tq[iv], v_front[iv], v_group[iv], v_gf[iv]);
-            if (wo.fitted && !isfinite(f_tq[1])) { /* two speeds: the line through both, no residual */
-                printf("  beta: tq %.5f, front %.5f, group %.5f (two speeds: each fit goes through both, "
-                       "no standard error)\n", f_tq[0], f_fr[0], f_gr[0]);
-            } else if (wo.fitted) {
-                printf("  beta: tq %.5f +- %.5f, front %.5f +- %.5f, group %.5f +- %.5f\n", f_tq[0],
-                       f_tq[1], f_fr[0], f_fr[1], f_gr[0], f_gr[1]);
-            }
-            if (wo.fitted) {
+            if (!wo.fitted) { /* no power law through one point: said, not printed as nan */
+                printf("  beta, C3: not fitted (one speed; the fits over v_imp need two)\n");
+            } else {
+                if (isfinite(f_tq[1]))
+                    printf("  beta: tq %.5f +- %.5f, front %.5f +- %.5f, group %.5f +- %.5f\n", f_tq[0],
+                           f_tq[1], f_fr[0], f_fr[1], f_gr[0], f_gr[1]);
+                else /* two speeds: the line through both, no residual */
+                    printf("  beta: tq %.5f, front %.5f, group %.5f (two speeds: each fit goes through both, "
+                           "no standard error)\n", f_tq[0], f_fr[0], f_gr[0]);
                 printf("  C3: tq %.4f, front %.4f, group %.4f, group/sqrt(3/2) %.4f (F.27: 2)\n", f_tq[3],
                        f_fr[3], f_gr[3], f_gf[3]);
-            } else { /* no power law through one point: said, not printed as nan */
-                printf("  beta, C3: not fitted (one speed; the fits over v_imp need two)\n");
             }
             if (!isfinite(c2)) /* the period is read on columns of 10 beads and more (ws_velocity) */
                 printf("  period: not measured (at some speed no column of 10 beads or more shows two wall-force "

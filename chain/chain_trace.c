@@ -187,7 +187,7 @@ static int write_h5(const gw_chain_trace *tr, const char *dir, const char *stem,
         H5Tclose(ts);
     }
     if (rc != GW_OK) {
-        H5Fclose(file);
+        gw_h5_mem_abort(file);
         return gw_err_set(err, GW_EIO, "%s: HDF5 write failed", path);
     }
     return gw_h5_mem_write(file, path, err);

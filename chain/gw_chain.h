@@ -408,7 +408,8 @@ void gw_chain_trace_free(gw_chain_trace *tr);
 /* Bound a trace before the run that stores it: about span/dt_out samples plus
  * `events` event rows, each holding t, the wall force and every bead's x and v
  * (8 B a value in memory; written, 20 B a value as CSV and 8 B as HDF5). GW_OK
- * when its files stay within 5 GB (1.4 GB in memory); else GW_EINVAL naming
+ * when its files stay within 5 GB (1.4 GB in memory, and as much again for the
+ * HDF5 file's buffer while it is written); else GW_EINVAL naming
  * dt-out and a value that passes, or n when the events alone exceed it. */
 int gw_chain_trace_check(int n, double span, double dt_out, double events, gw_err *err);
 

@@ -3,33 +3,182 @@
  * written through gw_afile as one image (gw_h5.h).
  */
 #include <errno.h>
+#include <pthread.h>
+#include <stdint.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "gw_h5.h"
 
 #if GW_HAVE_HDF5
+/* The core driver's buffer is ours (file image callbacks): HDF5 grows it as
+ * the file grows and, at H5Fclose, hands it back instead of freeing it when
+ * gw_h5_mem_write asked to keep it. The closed file's buffer is the file: its
+ * first EOA bytes are written, without the copy H5Fget_file_image would make
+ * (the peak was twice the file's size) and with the superblock HDF5 writes on
+ * a normal close (H5Fget_file_image's copy of a 1.8-format file had its
+ * status flags cleared without the checksum recomputed, measured with 1.10.8). */
+typedef struct h5_buf {
+    void *buf;   /* the core driver's buffer (NULL before its first write) */
+    size_t cap;  /* its size (a multiple of the 1 MiB increment) */
+    int keep;    /* 1: H5Fclose hands it back instead of freeing it */
+} h5_buf;
+
+static void *buf_malloc(size_t size, H5FD_file_image_op_t op, void *udata)
+{
+    h5_buf *u = udata;
+    (void)op;
+    void *p = malloc(size ? size : 1);
+    if (p && !u->buf)
+        u->buf = p, u->cap = size;
+    return p;
+}
+static void *buf_memcpy(void *dest, const void *src, size_t size, H5FD_file_image_op_t op, void *udata)
+{
+    (void)op, (void)udata;
+    if (dest != src)
+        memmove(dest, src, size);
+    return dest;
+}
+static void *buf_realloc(void *ptr, size_t size, H5FD_file_image_op_t op, void *udata)
+{
+    h5_buf *u = udata;
+    (void)op;
+    void *p = realloc(ptr, size ? size : 1);
+    if (p && (ptr == u->buf || !u->buf))
+        u->buf = p, u->cap = size;
+    return p;
+}
+static herr_t buf_free(void *ptr, H5FD_file_image_op_t op, void *udata)
+{
+    h5_buf *u = udata;
+    (void)op;
+    if (ptr && ptr == u->buf) {
+        if (u->keep)
+            return 0; /* handed back to gw_h5_mem_write */
+        u->buf = NULL, u->cap = 0;
+    }
+    free(ptr);
+    return 0;
+}
+static void *udata_same(void *udata)
+{
+    return udata; /* one h5_buf per file, freed by gw_h5_mem_write/abort */
+}
+static herr_t udata_keep(void *udata)
+{
+    (void)udata;
+    return 0;
+}
+
+/* The files open in memory and their buffers (a few at once: one per writer;
+ * the file's access list does not give the callbacks' data back: measured,
+ * H5Pget_file_image_callbacks on H5Fget_access_plist of such a file returned
+ * none). */
+typedef struct h5_open {
+    hid_t file;
+    h5_buf *u;
+} h5_open;
+static h5_open *open_files;
+static size_t open_n, open_cap;
+static pthread_mutex_t open_lock = PTHREAD_MUTEX_INITIALIZER;
+
+static int buf_register(hid_t file, h5_buf *u)
+{
+    int ok = 1;
+    pthread_mutex_lock(&open_lock);
+    if (open_n == open_cap) {
+        size_t cap = open_cap ? 2 * open_cap : 8;
+        h5_open *p = realloc(open_files, cap * sizeof *p);
+        if (p)
+            open_files = p, open_cap = cap;
+        else
+            ok = 0;
+    }
+    if (ok)
+        open_files[open_n++] = (h5_open){file, u};
+    pthread_mutex_unlock(&open_lock);
+    return ok;
+}
+
+/* The file's h5_buf, taken out of the table (NULL: not made by gw_h5_mem_create). */
+static h5_buf *buf_take(hid_t file)
+{
+    h5_buf *u = NULL;
+    pthread_mutex_lock(&open_lock);
+    for (size_t k = 0; k < open_n; k++)
+        if (open_files[k].file == file) {
+            u = open_files[k].u;
+            open_files[k] = open_files[--open_n];
+            break;
+        }
+    pthread_mutex_unlock(&open_lock);
+    return u;
+}
+
 hid_t gw_h5_mem_create(const char *path, int v18)
 {
-    hid_t fapl = H5Pcreate(H5P_FILE_ACCESS);
-    if (fapl < 0)
+    h5_buf *u = calloc(1, sizeof *u);
+    hid_t fapl = u ? H5Pcreate(H5P_FILE_ACCESS) : -1;
+    if (fapl < 0) {
+        free(u);
         return -1;
+    }
+    H5FD_file_image_callbacks_t cb = {buf_malloc, buf_memcpy, buf_realloc, buf_free, udata_same, udata_keep, u};
     hid_t file = -1;
     /* grown 1 MiB at a time; backing_store 0: nothing is written on close */
-    if (H5Pset_fapl_core(fapl, (size_t)1 << 20, 0) >= 0 &&
+    if (H5Pset_fapl_core(fapl, (size_t)1 << 20, 0) >= 0 && H5Pset_file_image_callbacks(fapl, &cb) >= 0 &&
         (!v18 || H5Pset_libver_bounds(fapl, H5F_LIBVER_V18, H5F_LIBVER_LATEST) >= 0))
         file = H5Fcreate(path, H5F_ACC_TRUNC, H5P_DEFAULT, fapl);
     H5Pclose(fapl);
+    if (file >= 0 && !buf_register(file, u)) {
+        H5Fclose(file);
+        file = -1;
+    }
+    if (file < 0)
+        free(u);
     return file;
 }
 
-/* 1 when HDF5 opens the image (read-only, in memory). */
-static int image_opens(const void *img, size_t n)
+void gw_h5_mem_abort(hid_t file)
 {
+    h5_buf *u = buf_take(file);
+    H5Fclose(file); /* frees the buffer (keep is 0) */
+    free(u);
+}
+
+/* HDF5 reads the image in place: its copies of the buffer (into the file
+ * access list, the list's copies and the core driver's file) are the buffer
+ * itself, never freed; the check opens the file read-only, so nothing writes
+ * to it or grows it. (With HDF5's own copies, opening an image of n bytes
+ * took two more copies of n.) */
+static void *image_same(size_t size, H5FD_file_image_op_t op, void *udata)
+{
+    const h5_buf *u = udata;
+    (void)op;
+    return size <= u->cap ? u->buf : NULL;
+}
+static void *image_grow(void *ptr, size_t size, H5FD_file_image_op_t op, void *udata)
+{
+    (void)ptr, (void)size, (void)op, (void)udata;
+    return NULL; /* read-only: never asked */
+}
+static herr_t image_keep(void *ptr, H5FD_file_image_op_t op, void *udata)
+{
+    (void)ptr, (void)op, (void)udata;
+    return 0;
+}
+
+/* 1 when HDF5 opens the n-byte image (read-only, in memory, in place). */
+static int image_opens(void *img, size_t n)
+{
+    h5_buf u = {img, n, 1};
+    H5FD_file_image_callbacks_t cb = {image_same, buf_memcpy, image_grow, image_keep, udata_same, udata_keep, &u};
     hid_t fapl = H5Pcreate(H5P_FILE_ACCESS);
     hid_t f = -1;
-    if (fapl >= 0 && H5Pset_fapl_core(fapl, (size_t)1 << 20, 0) >= 0 &&
-        H5Pset_file_image(fapl, (void *)img, n) >= 0) {
+    if (fapl >= 0 && H5Pset_fapl_core(fapl, (size_t)1 << 20, 0) >= 0 && H5Pset_file_image_callbacks(fapl, &cb) >= 0 &&
+        H5Pset_file_image(fapl, img, n) >= 0) {
         H5E_BEGIN_TRY { f = H5Fopen("granwave-image-check", H5F_ACC_RDONLY, fapl); } H5E_END_TRY;
     }
     if (f >= 0)
@@ -39,45 +188,45 @@ static int image_opens(const void *img, size_t n)
     return f >= 0;
 }
 
-/* The image as a reader will open it. HDF5 1.10 clears the superblock's
- * status flags in the image (byte 11 of a version 2 or 3 superblock: 0x01,
- * write access, while the file is open) without recomputing the superblock's
- * checksum, so the image of a 1.8-format file fails "incorrect metadata
- * checksum" (measured with 1.10.8). When the image as given does not open, the
- * byte the checksum was computed over is put back; the image is written only
- * if it then opens. 0 ok, -1 no readable image. */
-static int image_fix(unsigned char *img, size_t n)
+/* The file's length after its close: the end-of-file address its superblock
+ * (at offset 0, base address 0) stores, 0 when the image has no superblock of
+ * a known version (0-3, HDF5 file format specification). The end of
+ * allocation before the close can be larger: space released at the close
+ * (measured: 6656 bytes before, 5632 stored, for a layer sample). */
+static size_t stored_eof(const unsigned char *b, size_t cap)
 {
-    if (image_opens(img, n))
+    static const unsigned char sig[8] = {0x89, 'H', 'D', 'F', '\r', '\n', 0x1a, '\n'};
+    if (cap < 64 || memcmp(b, sig, 8) != 0)
         return 0;
-    if (n > 48 && img[8] >= 2 && img[8] <= 3 && img[11] == 0) {
-        img[11] = 0x01;
-        if (image_opens(img, n))
-            return 0;
-        img[11] = 0;
+    const int v = b[8];
+    const int so = v <= 1 ? b[13] : v <= 3 ? b[9] : 0; /* size of offsets */
+    const size_t at = v == 0 ? 24 : v == 1 ? 28 : 12;   /* the base address */
+    if (so < 1 || so > 8 || at + 3 * (size_t)so > cap)
+        return 0;
+    uint64_t base = 0, eof = 0;
+    for (int k = so - 1; k >= 0; k--) {
+        base = base << 8 | b[at + k];
+        eof = eof << 8 | b[at + 2 * (size_t)so + k];
     }
-    return -1;
+    return base == 0 && eof <= cap ? (size_t)eof : 0;
 }
 
 int gw_h5_mem_write(hid_t file, const char *path, gw_err *err)
 {
-    ssize_t n = H5Fflush(file, H5F_SCOPE_LOCAL) < 0 ? -1 : H5Fget_file_image(file, NULL, 0);
-    void *img = n > 0 ? malloc((size_t)n) : NULL;
-    int rc = GW_OK;
-    if (n <= 0)
-        rc = gw_err_set(err, GW_EIO, "%s: HDF5 could not make the file's image", path);
-    else if (!img)
-        rc = gw_err_set(err, GW_ENOMEM, "%s: out of memory for the HDF5 image (%zd bytes)", path, n);
-    else if (H5Fget_file_image(file, img, (size_t)n) != n)
-        rc = gw_err_set(err, GW_EIO, "%s: HDF5 could not make the file's image", path);
+    h5_buf *u = buf_take(file);
+    if (u)
+        u->keep = 1;
     H5Fclose(file); /* in memory: closing cannot fail on the disk */
-    if (rc == GW_OK && image_fix(img, (size_t)n) != 0)
-        rc = gw_err_set(err, GW_EIO, "%s: HDF5 made an image of the file that it cannot read back", path);
+    const size_t n = u && u->buf ? stored_eof(u->buf, u->cap) : 0;
+    int rc = GW_OK;
+    /* the image is written only if HDF5 reads it back as it is */
+    if (n == 0 || !image_opens(u->buf, n))
+        rc = gw_err_set(err, GW_EIO, "%s: HDF5 could not make an image of the file that it reads back", path);
     if (rc == GW_OK) {
         gw_afile f;
         if ((rc = gw_afile_open(&f, path, err)) == GW_OK) {
             errno = 0; /* one large write: its own errno (the stream's flush after it has none) */
-            if (fwrite(img, 1, (size_t)n, f.fp) != (size_t)n) {
+            if (fwrite(u->buf, 1, n, f.fp) != n) {
                 int e = errno ? errno : EIO;
                 gw_afile_abort(&f);
                 rc = gw_err_set(err, GW_EIO, "%s: write failed: %s", path, strerror(e));
@@ -86,7 +235,9 @@ int gw_h5_mem_write(hid_t file, const char *path, gw_err *err)
             }
         }
     }
-    free(img);
+    if (u)
+        free(u->buf);
+    free(u);
     return rc;
 }
 #endif

@@ -22,8 +22,11 @@
  * (checksummed metadata). A negative id on failure. */
 hid_t gw_h5_mem_create(const char *path, int v18);
 /* Write the in-memory file to path atomically and close it (closed in every
- * case). GW_EIO naming path and the OS error; GW_ENOMEM. */
+ * case). GW_EIO naming path and the OS error. Its memory: the file's size once
+ * (the core driver's buffer, written as it is after the close), no copy. */
 int gw_h5_mem_write(hid_t file, const char *path, gw_err *err);
+/* Close an in-memory file without writing it (an error while building it). */
+void gw_h5_mem_abort(hid_t file);
 #endif
 
 #endif

@@ -137,7 +137,7 @@ int gw_layer_impact_write_h5(const gw_layer_impact_result *r, const char *path, 
     int rc = GW_OK;
     if (bad) {
         if (file >= 0)
-            H5Fclose(file);
+            gw_h5_mem_abort(file);
         rc = gw_err_set(err, GW_EIO, "%s: cannot write the HDF5 file", path);
     } else {
         rc = gw_h5_mem_write(file, path, err); /* fsync, then the rename makes it visible */

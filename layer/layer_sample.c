@@ -611,7 +611,7 @@ static int write_h5(const gw_layer_sample *s, const char *path, const char *head
     int rc = GW_OK;
     if (bad) {
         if (file >= 0)
-            H5Fclose(file);
+            gw_h5_mem_abort(file);
         rc = gw_err_set(err, GW_EIO, "sample '%s': HDF5 write failed%s%s", path, q.why[0] ? ": " : "", q.why);
     } else {
         rc = gw_h5_mem_write(file, path, err);

@@ -137,6 +137,7 @@ struct gw_layer {
      * hands them back when dem_carry is set (layer_dem_carried). */
     double *dem_f;      /* [6 nb + ntail], DEM mode */
     int dem_carry;
+    int listed;        /* 1 once a contact list was built (layer_contacts.c) */
     int geo_valid;      /* facc and dem_rate hold the state the next rhs sees */
     int geo_pos;        /* geo holds the positions of the last rhs evaluation
                            (layer_dem_rhs; 0 after a list rebuild) */

@@ -500,38 +500,57 @@ static int layer_roots(double t, const double *y, double *g, void *P)
     if (L->watch) /* (the only write: the watch's probe and extremes) */
         layer_watch_roots(L, t, y, g);
     /* DEM mode reports the rebuild root at the end of the step that crossed it
-     * (not located): rebuild at 0.45 skin, so that a step of up to 0.05 skin
-     * cannot bring an unlisted pair into contact */
-    double un, nn[2], h = (L->dem ? 0.45 : 0.5) * L->p.skin;
+     * (not located): a particle i rebuilds the list at half the skin less a
+     * margin for the next step, the larger of 0.05 skin and twice what it
+     * moves in a step at its speed (|v| + |w| |arm|) dt, so that no step can
+     * bring an unlisted pair into contact; a particle that moves more than
+     * 0.25 skin in a step rebuilds at every step (and a contact the list
+     * missed all the same is refused at the rebuild: layer_contacts.c). The
+     * list's timing does not change the DEM trajectory. */
+    const double half = 0.5 * L->p.skin, h = half, dt2 = 2 * L->sp.dt;
     const int r0 = layer_root_rebuild(L), s0 = layer_root_slip(L);
-    if (L->off) {
+    if (L->dem) { /* one rebuild root (layer_root_nrebuild): the smallest margin */
         double gmin = 1.0;
+        const double m0 = 0.1 * half, m02 = m0 * m0 / (dt2 * dt2), h0 = (half - m0) * (half - m0);
+        for (int i = 0; i < L->n; i++) {
+            double p[2], arm[2] = {0, 0};
+            const int b = L->off ? layer_body(L, i) : i;
+            if (L->fixed[b])
+                continue;
+            const double *s = y + 6 * b;
+            if (L->off)
+                layer_disc_xy(L, y, i, p, arm);
+            else
+                p[0] = s[0], p[1] = s[1];
+            const double dx = p[0] - L->x_list[2 * i], dy = p[1] - L->x_list[2 * i + 1];
+            const double v2 = s[3] * s[3] + s[4] * s[4], a2 = arm[0] * arm[0] + arm[1] * arm[1];
+            double hi2 = h0; /* a slow particle (the square root only for fast ones) */
+            if (v2 + s[5] * s[5] * a2 > 0.25 * m02 || v2 > m02) {
+                const double sp = sqrt(v2) + fabs(s[5]) * sqrt(a2);
+                if (dt2 * sp > m0) {
+                    /* (positive at the rebuild, d = 0: the root is a change of sign) */
+                    const double hi = half - dt2 * sp > 1e-6 * half ? half - dt2 * sp : 1e-6 * half;
+                    hi2 = hi * hi;
+                }
+            }
+            const double gi = hi2 - dx * dx - dy * dy;
+            gmin = gi < gmin ? gi : gmin;
+        }
+        g[r0] = gmin;
+    } else if (L->off) {
         for (int i = 0; i < L->n; i++) {
             double p[2], arm[2];
             layer_disc_xy(L, y, i, p, arm);
             double dx = p[0] - L->x_list[2 * i], dy = p[1] - L->x_list[2 * i + 1];
-            double gi = L->fixed[layer_body(L, i)] ? 1.0 : h * h - dx * dx - dy * dy;
-            if (L->dem) /* one rebuild root (layer_root_nrebuild) */
-                gmin = gi < gmin ? gi : gmin;
-            else
-                g[r0 + i] = gi;
+            g[r0 + i] = L->fixed[layer_body(L, i)] ? 1.0 : h * h - dx * dx - dy * dy;
         }
-        if (L->dem)
-            g[r0] = gmin;
-    } else if (L->dem) { /* discs only, one rebuild root: the smallest margin */
-        double gmin = 1.0;
-        for (int i = 0; i < L->n; i++) {
-            double dx = y[6 * i] - L->x_list[2 * i], dy = y[6 * i + 1] - L->x_list[2 * i + 1];
-            double gi = L->fixed[i] ? 1.0 : h * h - dx * dx - dy * dy;
-            gmin = gi < gmin ? gi : gmin;
-        }
-        g[r0] = gmin;
     } else { /* discs only: particle i is body i */
         for (int i = 0; i < L->n; i++) {
             double dx = y[6 * i] - L->x_list[2 * i], dy = y[6 * i + 1] - L->x_list[2 * i + 1];
             g[r0 + i] = L->fixed[i] ? 1.0 : h * h - dx * dx - dy * dy;
         }
     }
+    double un, nn[2];
     if (L->p.no_events)
         return 0;
     for (int k = 0; k < L->nc; k++) {

@@ -204,6 +204,15 @@
 #    from its own division (last bit); layer-make --n 30 ended at E_k 16.7,
 #    46.6, 76.3, 105 J at skins 0.1, 0.01, 1, 1e6 m. The same run at any skin
 #    is now the same sample to the last bit (discs, frictionless discs, clumps).
+# 42 the explicit DEM step checks the contact list at the ends of its steps
+#    only: with a skin below what a particle moves in a step, pairs came into
+#    contact unlisted and their force was left out, silently (default impact:
+#    --skin 1e-5 m moved e_n_first in the 6th digit, 1e-7 m the penetration by
+#    0.4 % and tripled the ledger's error, exit 0). The rebuild margin now grows
+#    with each particle's speed (--skin 1e-4 rebuilds at every step and gives
+#    the 0.1 m skin's impact to the last bit), and a pair found overlapping
+#    that the last list did not hold refuses the run, naming the skin that
+#    holds it (exit 2, nothing written).
 set -u
 GW=$1
 SRC=${2:-.}
@@ -1090,6 +1099,23 @@ if command -v script >/dev/null; then
     else
         ko "  off a terminal: $(head -c 200 "$tmp/stderr")"
     fi
+fi
+
+# --- 42: a skin too small for the explicit step -------------------------------------------
+refused "layer-impact --skin 1e-5 (pairs came into contact between two list checks)" \
+    "^granwave layer-impact: skin: 1e-05 m is too small for this run: at t = [0-9.e-]+ s (particles [0-9]+ and [0-9]+|the block and particle [0-9]+) overlapped by .* raise --skin to [0-9.e-]+ m or more$" \
+    layer-impact --sample "$S300" --t-max 0.03 --skin 1e-5 --out "$tmp/o"
+sug42=$(sed -n 's/.*raise --skin to \([0-9.e-]*\) m or more$/\1/p' "$tmp/stderr")
+e42=()
+for s42 in 0.1 1e-4 "$sug42"; do
+    if runs "layer-impact --skin $s42" layer-impact --sample "$S300" --t-max 0.03 --skin "$s42" --json; then
+        e42+=("$(jnum e_n_first "$tmp/stdout") $(jnum penetration "$tmp/stdout") $(jnum energy_error "$tmp/stdout")")
+    fi
+done
+if [ ${#e42[@]} -eq 3 ] && [ "${e42[0]}" = "${e42[1]}" ] && [ "${e42[0]}" = "${e42[2]}" ] && [ -n "$sug42" ]; then
+    ok "  skins 0.1, 1e-4 (a rebuild every step) and the suggested $sug42 m: the same impact to the last digit"
+else
+    ko "  skins 0.1, 1e-4, '$sug42': ${e42[*]}"
 fi
 
 echo "test_hostile_layer: $passes passed, $fails failed"

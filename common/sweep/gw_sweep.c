@@ -828,26 +828,36 @@ static char *slurp(const char *path, size_t *len, gw_err *err)
  * made a journal, the second replaced the first's, and the first appended its
  * rows to a file no longer in the directory and wrote its table from the
  * other sweep's rows (exit 0 for both). */
-static int journal_create(const char *path, const char *text, gw_err *err)
+static int journal_create(const char *path, const char *text, int *fdp, gw_err *err)
 {
     char tmp[4200];
+    *fdp = -1;
     if (snprintf(tmp, sizeof tmp, "%s.new.%ld.XXXXXX", path, (long)getpid()) >= (int)sizeof tmp)
         return gw_err_set(err, GW_EINVAL, "%s: path too long", path);
     int fd = mkstemp(tmp);
     if (fd < 0)
         return gw_err_set(err, GW_EIO, "%s: cannot create: %s", path, strerror(errno));
     fchmod(fd, 0644);
+    /* locked before it has its name: another sweep that finds it finds it
+     * locked (a sweep that locked it first would refuse it as another
+     * config's, and this one then find it locked: neither ran) */
     const size_t n = strlen(text);
-    int bad = write(fd, text, n) != (ssize_t)n || fsync(fd) != 0;
-    int e = errno;
-    close(fd);
-    if (!bad && link(tmp, path) != 0 && errno != EEXIST) {
-        e = errno; /* a file system without hard links: placed by rename, as before */
-        bad = rename(tmp, path) != 0;
-        if (bad)
-            e = errno;
+    int bad = flock(fd, LOCK_EX) != 0 || write(fd, text, n) != (ssize_t)n || fsync(fd) != 0 ||
+              fcntl(fd, F_SETFL, O_APPEND) != 0;
+    int e = errno, placed = 0;
+    if (!bad && link(tmp, path) == 0) {
+        placed = 1;
+    } else if (!bad && errno != EEXIST) {
+        placed = rename(tmp, path) == 0; /* a file system without hard links: by rename, as before */
+        bad = !placed;
+        e = errno;
     }
     unlink(tmp);
+    if (placed) {
+        *fdp = fd;
+        return GW_OK;
+    }
+    close(fd); /* another sweep made it meanwhile (EEXIST), or a failure */
     return bad ? gw_err_set(err, GW_EIO, "%s: cannot create: %s", path, strerror(e ? e : EIO)) : GW_OK;
 }
 
@@ -897,7 +907,7 @@ int gw_sweep_journal_open(const char *dir, const gw_sweep_config *cfg, char *don
         }
         memcpy(text, head, hl);
         memcpy(text + hl, in, il + 1);
-        int rc = journal_create(path, text, err);
+        int rc = journal_create(path, text, fdp, err);
         free(text);
         free(in);
         if (rc != GW_OK)
@@ -908,7 +918,7 @@ int gw_sweep_journal_open(const char *dir, const gw_sweep_config *cfg, char *don
      * Two sweeps of one config at once each ran every case and journaled it
      * twice; a second sweep's scan could cut a row the first was appending
      * as a torn one. What is read, checked and cut below is read under it. */
-    if (stat(path, &st) == 0 && S_ISREG(st.st_mode)) {
+    if (*fdp < 0 && stat(path, &st) == 0 && S_ISREG(st.st_mode)) {
         int fd = open(path, O_RDWR | O_APPEND | O_CLOEXEC | O_NONBLOCK);
         if (fd < 0)
             return gw_err_set(err, GW_EIO, "%s: cannot open for appending: %s", path, strerror(errno));
@@ -1100,9 +1110,11 @@ int gw_sweep_write_table(const char *dir, const gw_sweep_config *cfg, const gw_s
     } else if (strncmp(buf, head, strlen(head)) != 0 || nr != cfg->ncases) {
         /* the table is of this sweep's journal, every case once: a journal
          * replaced meanwhile gave a table of another sweep's rows, exit 0 */
-        rc = gw_err_set(err, GW_EIO, "%s: %s while the sweep ran (%ld of its %ld cases in it): no table written; "
-                        "rerun to resume", path, strncmp(buf, head, strlen(head)) != 0 ? "replaced by another "
-                        "sweep's journal" : "lost rows", nr, cfg->ncases);
+        rc = strncmp(buf, head, strlen(head)) != 0
+                 ? gw_err_set(err, GW_EIO, "%s: replaced by another sweep's journal while this sweep ran: no table "
+                              "written (this sweep's rows are not in it)", path)
+                 : gw_err_set(err, GW_EIO, "%s: lost rows while the sweep ran (%ld of its %ld cases in it): no table "
+                              "written; rerun to resume", path, nr, cfg->ncases);
     } else {
         qsort(rows, (size_t)nr, sizeof *rows, cmp_rows);
         gw_afile f;

@@ -218,6 +218,8 @@ int gw_cmd_sweep(int argc, char **argv, const gw_sweep_model *const *models, int
     const gw_sweep_model *m = NULL;
     sweep_run s;
     memset(&s, 0, sizeof s);
+    s.fd = -1;
+    int rc = GW_OK;
     char *done = NULL;
     if (gw_cli_parse("sweep", opts, argc, argv, &help, pos, 1, &npos, &err) != GW_OK) {
         code = 2;
@@ -237,6 +239,12 @@ int gw_cmd_sweep(int argc, char **argv, const gw_sweep_model *const *models, int
         code = 2;
     } else if (!out && !(out = cfg.out)) {
         gw_err_set(&err, GW_EINVAL, "%s: no output directory ([sweep] out or --out)", pos[0]);
+        code = 2;
+    }
+    /* The journal and table of the whole grid fit, before a case is checked */
+    if (code == 0 && rank == 0 && gw_sweep_size_check(&cfg, m, &err) != GW_OK) {
+        fprintf(stderr, "granwave sweep: %s: %s\n", pos[0], err.msg);
+        err.msg[0] = '\0';
         code = 2;
     }
     /* Validate every case before running anything (bad values exit 2). */
@@ -293,18 +301,14 @@ int gw_cmd_sweep(int argc, char **argv, const gw_sweep_model *const *models, int
         s.todo = malloc((size_t)cfg.ncases * sizeof *s.todo);
         if (!done || !s.todo)
             code = 1, gw_err_set(&err, GW_ENOMEM, "out of memory");
-        else if (gw_mkdir_p(out, &err) != GW_OK || gw_sweep_journal_scan(out, &cfg, done, &s.ndone0, &err) != GW_OK)
-            code = 2;
+        else if (gw_mkdir_p(out, &err) != GW_OK ||
+                 (rc = gw_sweep_journal_open(out, &cfg, done, &s.ndone0, &s.fd, &err)) != GW_OK)
+            code = rc == GW_EIO ? 1 : 2; /* the journal stays open, and locked, until the sweep ends */
     }
-    char jpath[4096];
     if (code == 0 && rank == 0) {
         for (long k = 0; k < cfg.ncases; k++)
             if (!done[k])
                 s.todo[s.ntodo++] = k;
-        gw_path_join(jpath, sizeof jpath, out, "journal.csv");
-        s.fd = open(jpath, O_WRONLY | O_APPEND);
-        if (s.fd < 0)
-            code = 1, gw_err_set(&err, GW_EIO, "%s: cannot open for appending", jpath);
     }
 #if GW_HAVE_MPI
     if (use_mpi)
@@ -334,7 +338,6 @@ int gw_cmd_sweep(int argc, char **argv, const gw_sweep_model *const *models, int
             run_threads(&s, jobs);
         pthread_mutex_destroy(&s.lock);
         if (rank == 0) {
-            close(s.fd);
             if (s.failed) {
                 err = s.err;
                 code = s.failed == GW_EINVAL ? 2 : 1;
@@ -352,6 +355,8 @@ int gw_cmd_sweep(int argc, char **argv, const gw_sweep_model *const *models, int
     if (code != 0 && code != 130 && rank == 0 && err.msg[0])
         fprintf(stderr, strncmp(err.msg, "sweep", 5) == 0 ? "granwave %s\n" : "granwave sweep: %s\n", err.msg);
 finish:
+    if (s.fd >= 0) /* after the table: the journal's lock held to the end */
+        close(s.fd);
     free(done);
     free(s.todo);
     gw_sweep_config_free(&cfg);

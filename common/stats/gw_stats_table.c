@@ -246,7 +246,7 @@ static int check_hashes(const gw_stats_table *t, gw_err *err)
             const unsigned long long h = t->row_hash[r * t->nhash + j];
             const char *col = t->hash_name[j];
             if (j == 0) {
-                const unsigned long long want = gw_case_config_hash(t->model[0] ? t->model : "layer", nk, names, values);
+                const unsigned long long want = gw_case_config_hash(t->model, nk, names, values);
                 if (h != want)
                     return gw_err_set(err, GW_EFORMAT, "%s:%ld: case %ld ran under config hash %016llx, but the "
                                       "table's model and '# param' lines give %016llx for it (a row of a sweep with "
@@ -717,7 +717,11 @@ int gw_stats_table_parse(const char *text, const char *name, gw_stats_table *t, 
         rc = check_rows(t, err);
     if (rc == GW_OK && header_line && t->nrows > 0)
         rc = check_complete(t, err);
-    if (rc == GW_OK && header_line && t->nrows > 0 && t->nhash > 0)
+    /* only against the sweep's first line (its model) and '# param' lines: a
+     * table without it (its comment lines dropped by a CSV tool) is read as it
+     * is. It was refused as "the table's model and '# param' lines give ..."
+     * for a hash taken over lines it did not have. */
+    if (rc == GW_OK && header_line && t->nrows > 0 && t->nhash > 0 && t->model[0])
         rc = check_hashes(t, err);
     if (rc == GW_OK && !header_line)
         rc = gw_err_set(err, GW_EFORMAT, "%s:%ld: no header line (an empty table)", name, ln);

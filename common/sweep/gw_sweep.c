@@ -8,6 +8,7 @@
 #include <errno.h>
 #include <math.h>
 #include <stdio.h>
+#include <sys/file.h>
 #include <sys/stat.h>
 #include <fcntl.h>
 #include <stdlib.h>
@@ -813,17 +814,71 @@ static char *slurp(const char *path, size_t *len, gw_err *err)
         return NULL;
     }
     char *buf = NULL;
-    if (gw_input_read(path, "sweep journal", (size_t)1 << 34, &buf, len, err) != GW_OK) {
+    if (gw_input_read(path, "sweep journal", GW_SWEEP_JOURNAL_MAX, &buf, len, err) != GW_OK) {
         errno = EINVAL; /* what it is (a FIFO, a directory) is in err: it said "Invalid argument" */
         return NULL;
     }
     return buf;
 }
 
+/* A new journal, whole (its head and input lines) or not at all, and never
+ * over one another sweep made meanwhile: written under a temporary name and
+ * linked into place, which fails when the name exists. The atomic write
+ * before renamed over it: two sweeps started at once into one directory each
+ * made a journal, the second replaced the first's, and the first appended its
+ * rows to a file no longer in the directory and wrote its table from the
+ * other sweep's rows (exit 0 for both). */
+static int journal_create(const char *path, const char *text, int *fdp, gw_err *err)
+{
+    char tmp[4200];
+    *fdp = -1;
+    if (snprintf(tmp, sizeof tmp, "%s.new.%ld.XXXXXX", path, (long)getpid()) >= (int)sizeof tmp)
+        return gw_err_set(err, GW_EINVAL, "%s: path too long", path);
+    int fd = mkstemp(tmp);
+    if (fd < 0)
+        return gw_err_set(err, GW_EIO, "%s: cannot create: %s", path, strerror(errno));
+    fchmod(fd, 0644);
+    /* locked before it has its name: another sweep that finds it finds it
+     * locked (a sweep that locked it first would refuse it as another
+     * config's, and this one then find it locked: neither ran) */
+    const size_t n = strlen(text);
+    int bad = flock(fd, LOCK_EX) != 0 || write(fd, text, n) != (ssize_t)n || fsync(fd) != 0 ||
+              fcntl(fd, F_SETFL, O_APPEND) != 0;
+    int e = errno, placed = 0;
+    if (!bad && link(tmp, path) == 0) {
+        placed = 1;
+    } else if (!bad && errno != EEXIST) {
+        placed = rename(tmp, path) == 0; /* a file system without hard links: by rename, as before */
+        bad = !placed;
+        e = errno;
+    }
+    unlink(tmp);
+    if (placed) {
+        *fdp = fd;
+        return GW_OK;
+    }
+    close(fd); /* another sweep made it meanwhile (EEXIST), or a failure */
+    return bad ? gw_err_set(err, GW_EIO, "%s: cannot create: %s", path, strerror(e ? e : EIO)) : GW_OK;
+}
+
+static int journal_check(const char *path, const char *dir, const char *head, const gw_sweep_config *cfg,
+                         char *done, long *ndone, int fd, gw_err *err);
+
 int gw_sweep_journal_scan(const char *dir, const gw_sweep_config *cfg, char *done, long *ndone, gw_err *err)
+{
+    int fd = -1;
+    int rc = gw_sweep_journal_open(dir, cfg, done, ndone, &fd, err);
+    if (fd >= 0)
+        close(fd);
+    return rc;
+}
+
+int gw_sweep_journal_open(const char *dir, const gw_sweep_config *cfg, char *done, long *ndone, int *fdp,
+                          gw_err *err)
 {
     char path[4096];
     *ndone = 0;
+    *fdp = -1;
     if (gw_path_join(path, sizeof path, dir, "journal.csv") != GW_OK)
         return gw_err_set(err, GW_EINVAL, "%s: path too long", dir);
     /* the table goes beside the journal once every case has run: a directory
@@ -839,16 +894,10 @@ int gw_sweep_journal_scan(const char *dir, const gw_sweep_config *cfg, char *don
     for (int i = 0; i < cfg->ninputs; i++)
         if (gw_outset_check_input(dir, outs, cfg->inputs[i].value, "sweep", err) != GW_OK)
             return GW_EINVAL;
-    size_t len = 0;
-    gw_err rerr = {{0}};
-    char *buf = slurp(path, &len, &rerr);
     char head[96];
     snprintf(head, sizeof head, GW_SWEEP_JOURNAL_HEAD "\n", cfg->hash);
-    if (!buf) {
-        if (errno != ENOENT) {
-            *err = rerr;
-            return GW_EINVAL;
-        }
+    struct stat st;
+    if (stat(path, &st) != 0 && errno == ENOENT) {
         char *in = input_lines(cfg); /* a new journal: the config, and what its files held */
         size_t hl = strlen(head), il = in ? strlen(in) : 0;
         char *text = in ? malloc(hl + il + 1) : NULL;
@@ -858,10 +907,52 @@ int gw_sweep_journal_scan(const char *dir, const gw_sweep_config *cfg, char *don
         }
         memcpy(text, head, hl);
         memcpy(text + hl, in, il + 1);
-        int rc = gw_write_text(path, text, err);
+        int rc = journal_create(path, text, fdp, err);
         free(text);
         free(in);
-        return rc;
+        if (rc != GW_OK)
+            return rc;
+    }
+    /* One sweep at a time in a directory: the journal is locked from here
+     * until the sweep ends (the lock goes with the process, kill -9 too).
+     * Two sweeps of one config at once each ran every case and journaled it
+     * twice; a second sweep's scan could cut a row the first was appending
+     * as a torn one. What is read, checked and cut below is read under it. */
+    if (*fdp < 0 && stat(path, &st) == 0 && S_ISREG(st.st_mode)) {
+        int fd = open(path, O_RDWR | O_APPEND | O_CLOEXEC | O_NONBLOCK);
+        if (fd < 0)
+            return gw_err_set(err, GW_EIO, "%s: cannot open for appending: %s", path, strerror(errno));
+        if (flock(fd, LOCK_EX | LOCK_NB) != 0) {
+            const int e = errno;
+            close(fd);
+            if (e == EWOULDBLOCK)
+                return gw_err_set(err, GW_EINVAL, "%s: another sweep is running in this directory (its journal.csv "
+                                  "is locked by that process): wait for it to end, or choose another output", dir);
+            return gw_err_set(err, GW_EIO, "%s: cannot lock: %s", path, strerror(e));
+        }
+        *fdp = fd;
+    }
+    int rc = journal_check(path, dir, head, cfg, done, ndone, *fdp, err);
+    if (rc != GW_OK && *fdp >= 0) {
+        close(*fdp);
+        *fdp = -1;
+    }
+    return rc;
+}
+
+/* The journal at path, read (under the caller's lock on fd) and checked;
+ * a torn last row cut. */
+static int journal_check(const char *path, const char *dir, const char *head, const gw_sweep_config *cfg,
+                         char *done, long *ndone, int fd, gw_err *err)
+{
+    size_t len = 0;
+    char *buf = slurp(path, &len, err);
+    if (!buf)
+        return GW_EINVAL; /* a FIFO, a directory, gone: named in err */
+    struct stat a, b;
+    if (fd < 0 || fstat(fd, &a) != 0 || stat(path, &b) != 0 || a.st_dev != b.st_dev || a.st_ino != b.st_ino) {
+        free(buf);
+        return gw_err_set(err, GW_EIO, "%s: replaced while the sweep opened it: rerun", path);
     }
     /* the format before rows carried their case config hash and the hash of
      * the file they read: "# granwave sweep journal HASH" alone. Its rows
@@ -963,7 +1054,7 @@ int gw_sweep_journal_scan(const char *dir, const gw_sweep_config *cfg, char *don
     free(buf);
     if (rc != GW_OK)
         return rc;
-    if (good < len && truncate(path, (off_t)good) != 0)
+    if (good < len && ftruncate(fd, (off_t)good) != 0)
         return gw_err_set(err, GW_EIO, "%s: cannot cut a torn row: %s", path, strerror(errno));
     return GW_OK;
 }
@@ -1012,8 +1103,18 @@ int gw_sweep_write_table(const char *dir, const gw_sweep_config *cfg, const gw_s
         pos += l;
     }
     int rc = GW_OK;
+    char head[96];
+    snprintf(head, sizeof head, GW_SWEEP_JOURNAL_HEAD "\n", cfg->hash);
     if (!rows || !seen) {
         rc = gw_err_set(err, GW_ENOMEM, "sweep: out of memory");
+    } else if (strncmp(buf, head, strlen(head)) != 0 || nr != cfg->ncases) {
+        /* the table is of this sweep's journal, every case once: a journal
+         * replaced meanwhile gave a table of another sweep's rows, exit 0 */
+        rc = strncmp(buf, head, strlen(head)) != 0
+                 ? gw_err_set(err, GW_EIO, "%s: replaced by another sweep's journal while this sweep ran: no table "
+                              "written (this sweep's rows are not in it)", path)
+                 : gw_err_set(err, GW_EIO, "%s: lost rows while the sweep ran (%ld of its %ld cases in it): no table "
+                              "written; rerun to resume", path, nr, cfg->ncases);
     } else {
         qsort(rows, (size_t)nr, sizeof *rows, cmp_rows);
         gw_afile f;

@@ -24,6 +24,7 @@
 
 #define GW_SWEEP_MAX_KEYS 32
 #define GW_SWEEP_CONFIG_MAX (1L << 20) /* bytes: a config is read whole, bounded */
+#define GW_SWEEP_JOURNAL_MAX ((size_t)1 << 34) /* bytes of a journal read back (resume, table) */
 #define GW_SWEEP_JOBS_MAX 4096          /* threads of one sweep (--jobs, gw_sweep_run) */
 /* A journal's first line (the config's hash): "format 2", rows that end with
  * their case config hash and read hash; the format before them said
@@ -131,6 +132,13 @@ int gw_sweep_row_check(const gw_sweep_config *cfg, const char *row, gw_err *err)
  * hashes; so is a journal of the format before rows carried these hashes. */
 int gw_sweep_journal_scan(const char *dir, const gw_sweep_config *cfg, char *done, long *ndone,
                           gw_err *err);
+/* The same, and the journal kept open for appending in *fd (-1 on failure),
+ * locked (flock) until it is closed: one sweep at a time in a directory. A
+ * new journal is linked into place whole, never over one made meanwhile.
+ * A journal locked by another process: GW_EINVAL "DIR: another sweep is
+ * running in this directory ...", before anything is read or cut. */
+int gw_sweep_journal_open(const char *dir, const gw_sweep_config *cfg, char *done, long *ndone, int *fd,
+                          gw_err *err);
 
 /* Every input file of cfg still has the content it had when cfg was read:
  * GW_OK, or GW_EINVAL "KEY 'VALUE' changed ... (content fnv1a64 A when the
@@ -171,6 +179,16 @@ double gw_memory_available(const char **what);
  * most jobs that fit (0: none). A bad value: GW_EINVAL "case K: ...". */
 int gw_sweep_memory_check(const gw_sweep_config *cfg, const gw_sweep_model *m, long jobs, int processes,
                           long *most, gw_err *err);
+
+/* The journal and the table of cfg's sweep fit: the longest row model m can
+ * write (its grid values, ncolumns numbers of at most 24 characters, the
+ * hashes and the checksum) times the cases must stay within
+ * GW_SWEEP_JOURNAL_MAX (the journal is read back whole to resume and to
+ * write the table), and with the writer's bookkeeping (48 bytes a case)
+ * within 80 % of gw_memory_available. A grid of 1e9 chain cases (about 330
+ * GB of journal) was checked case by case for 80 minutes, ran, and could
+ * never be read back. GW_OK, or GW_EINVAL "the grid has C cases: ...". */
+int gw_sweep_size_check(const gw_sweep_config *cfg, const gw_sweep_model *m, gw_err *err);
 
 /* gw_cases_run and gw_case_fn, the worker pool these run on: gw_pool.h. */
 

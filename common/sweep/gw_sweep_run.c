@@ -103,6 +103,35 @@ int gw_sweep_memory_check(const gw_sweep_config *cfg, const gw_sweep_model *m, l
     return rc;
 }
 
+int gw_sweep_size_check(const gw_sweep_config *cfg, const gw_sweep_model *m, gw_err *err)
+{
+    double row = 1 + (double)snprintf(NULL, 0, "%ld", cfg->ncases > 0 ? cfg->ncases - 1 : 0);
+    for (int i = 0; i < cfg->ngrid; i++) {
+        size_t w = 0;
+        for (int j = 0; j < cfg->grid[i].nvalues; j++) {
+            const size_t l = strlen(cfg->grid[i].values[j]);
+            w = l > w ? l : w;
+        }
+        row += 1 + (double)w;
+    }
+    /* "%.17g": a sign, 17 digits, the point and e-308 */
+    row += 25.0 * m->ncolumns + 17.0 * (cfg->read_key ? 2 : 1) + 10; /* the hashes, ",checksum\n" */
+    const double journal = row * (double)cfg->ncases, need = (row + 48) * (double)cfg->ncases;
+    const char *what = "";
+    const double avail = gw_memory_available(&what);
+    if (journal > (double)GW_SWEEP_JOURNAL_MAX)
+        return gw_err_set(err, GW_EINVAL, "the grid has %ld cases: its journal (up to %.0f bytes a row) would reach "
+                          "%.3g GB, above the %.3g GB a sweep reads back to resume and to write its table: split the "
+                          "grid into sweeps of at most %.0f cases", cfg->ncases, row, journal / 1e9,
+                          (double)GW_SWEEP_JOURNAL_MAX / 1e9, floor((double)GW_SWEEP_JOURNAL_MAX / row));
+    if (need > 0.8 * avail)
+        return gw_err_set(err, GW_EINVAL, "the grid has %ld cases: its journal read back and the table built from it "
+                          "need about %.3g GB (%.0f bytes a case), above 80 %% of the %.3g GB available (%s): split "
+                          "the grid into sweeps of at most %.0f cases", cfg->ncases, need / 1e9, row + 48,
+                          avail / 1e9, what, floor(0.8 * avail / (row + 48)));
+    return GW_OK;
+}
+
 typedef struct sweep_ctx {
     const gw_sweep_config *cfg;
     const gw_sweep_model *m;

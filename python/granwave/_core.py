@@ -244,9 +244,10 @@ class Study:
         out = ctypes.create_string_buffer(self.st.fields_size)
         err = _lib.GwErr()
         try:
-            with Interruptible():
+            with Interruptible() as it:
+                cb.interruptible = it.on
                 rc = self.st.run(buf, out, cb.c_fn, None, ctypes.byref(err))
-            cb.reraise()
+            cb.reraise(self.func)
             if rc != 0:
                 _raise(rc, err, self.func, self.params)
             return read_result(self.fields, ctypes.addressof(out))
@@ -298,18 +299,37 @@ class Progress:
                             f"{type(fn).__name__} ({fn!r})")
         self.fn = fn
         self.exc = None
+        self.interruptible = False  # set by the call, under Interruptible
+        self.interrupted = False
         self.c_fn = _lib.PROGRESS(self._call) if fn else _lib.PROGRESS()
 
     def _call(self, ctx, done, total):
+        # On the main thread of an interruptible call the library's SIGINT
+        # handler is in place, and Python's handling never ran while f did: a
+        # callback that slept or computed for 10 s ignored Ctrl-C for those
+        # 10 s. Python's handler is put back while f runs (KeyboardInterrupt in
+        # f stops the call as any exception does) and the library's after it;
+        # a SIGINT that came just before, during the run, goes to Python's
+        # handler first.
+        swap = self.interruptible and threading.current_thread() is threading.main_thread()
         try:
+            if swap and lib.gw_interrupt_end():
+                self.interrupted = True
+                signal.raise_signal(signal.SIGINT)  # KeyboardInterrupt, or the program's own handler
+                return 1
             return 1 if self.fn(done, total) else 0
         except BaseException as e:  # noqa: B902 - handed back to the caller
             self.exc = e
             return 1
+        finally:
+            if swap:
+                lib.gw_interrupt_begin()
 
-    def reraise(self):
+    def reraise(self, what="sweep"):
         if self.exc is not None:
             raise self.exc
+        if self.interrupted:  # the program's own handler ran and did not raise: as a SIGINT in C
+            raise GranwaveError(f"{what}: interrupted (SIGINT)", GW_ECANCELED)
 
 
 def _dim(spec, scalars):
@@ -458,7 +478,8 @@ def run_sweep(model, grid, params, jobs, progress):
     mod = ctypes.POINTER(_lib.GwSweepModel)()
     err = _lib.GwErr()
     try:
-        with Interruptible():
+        with Interruptible() as it:
+            cb.interruptible = it.on
             rc = lib.gw_sweep_run_text(text.encode(), b"sweep", int(jobs), cb.c_fn, None, ctypes.byref(values),
                                        ctypes.byref(ncases), ctypes.byref(mod), ctypes.byref(err))
         cb.reraise()

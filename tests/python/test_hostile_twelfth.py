@@ -101,3 +101,58 @@ def test_ctrl_c_works_in_a_child_forked_during_a_call():
     """)
     assert r.returncode == 0, r.stderr
     assert r.stdout.split() == ["child", "0"], r.stdout + r.stderr
+
+
+# ---- Ctrl-C while a progress callback runs on the main thread ----
+
+CALLBACK = """
+import granwave, os, signal, threading, time
+def fire():
+    os.kill(os.getpid(), signal.SIGINT)
+state = {"calls": 0, "flag": False}
+def slow(done, total):  # a callback that takes its time: plotting, saving, waiting
+    state["calls"] += 1
+    if state["calls"] == 1:
+        t0 = time.monotonic()
+        while time.monotonic() - t0 < 20 and not state["flag"]:
+            time.sleep(0.01)
+    return state["flag"]
+calls = {
+    "drop": lambda: granwave.drop(n=2, height=1e-4, t_max=1e-3, progress=slow),
+    "layer_make": lambda: granwave.layer_make(n=10, width_rm=8, seed=1, progress=slow),
+}
+if "{handler}" == "own":  # the program's own handler: sets a flag the callback reads
+    signal.signal(signal.SIGINT, lambda s, f: state.update(flag=True))
+threading.Timer(0.5, fire).start()
+t0 = time.monotonic()
+try:
+    r = calls["{call}"]()
+    what = "returned"
+except KeyboardInterrupt:
+    what = "KeyboardInterrupt"
+except granwave.GranwaveError as e:
+    what = "status%d" % e.status
+except BaseException as e:
+    what = type(e).__name__
+print(what, round(time.monotonic() - t0, 2), state["calls"])
+"""
+
+
+@pytest.mark.parametrize("call", ["drop", "layer_make"])
+def test_ctrl_c_during_a_progress_callback_acts_at_once(call):
+    # Before: the library's SIGINT handler stayed in place while the callback's
+    # Python ran, so Ctrl-C 0.5 s into a 20 s callback raised KeyboardInterrupt
+    # only once the callback had returned (20 s).
+    r = child(CALLBACK.replace("{call}", call).replace("{handler}", "default"))
+    assert r.returncode == 0, r.stderr
+    what, elapsed, ncalls = r.stdout.split()
+    assert what == "KeyboardInterrupt" and float(elapsed) < 5 and ncalls == "1", r.stdout
+
+
+def test_the_programs_own_handler_runs_during_a_callback():
+    # a handler of the program's runs while the callback does (it sets a flag the
+    # callback returns: the call stops, as any callback's True stops it: status -9)
+    r = child(CALLBACK.replace("{call}", "drop").replace("{handler}", "own"))
+    assert r.returncode == 0, r.stderr
+    what, elapsed, ncalls = r.stdout.split()
+    assert what == "status-9" and float(elapsed) < 5 and ncalls == "1", r.stdout

@@ -155,7 +155,7 @@ def _text(p, value):
         if isinstance(value, (set, frozenset, dict, bytes)) or not hasattr(value, "__iter__"):
             raise TypeError(f"{p.keyword}: expected a number or a sequence of numbers, got "
                             f"{type(value).__name__} ({value!r})")
-        if isinstance(value, np.ndarray) and value.ndim > 1:
+        if isinstance(value, np.ndarray) and value.ndim != 1:  # 0-d: "iteration over a 0-d array", unnamed
             raise TypeError(f"{p.keyword}: expected a 1-D sequence of numbers, got an array of shape {value.shape}")
         items = []
         for k, x in enumerate(value):
@@ -434,12 +434,20 @@ def run_sweep(model, grid, params, jobs, progress):
         raise ValueError("sweep: grid needs at least one key with its values")
     lines = ["[sweep]", f"model = {model}", "[grid]"]
     axes = {}
+    seen = {}  # t_max and t-max are one key: "sweep: sweep:5: duplicate key 't-max'" named a line of a text never shown
+    for k in itertools.chain(grid, (k for k, v in params.items() if v is not None)):
+        if not isinstance(k, str):  # AttributeError: 'int' object has no attribute 'replace'
+            raise TypeError(f"sweep() grid: a key is a keyword name (str), got {type(k).__name__} ({k!r})")
+        name = k.replace("_", "-")
+        if name in seen and seen[name] != k:
+            raise TypeError(f"sweep(): '{seen[name]}' and '{k}' name the same parameter")
+        seen.setdefault(name, k)
     for k, v in grid.items():
         name = k.replace("_", "-")
         if not m.has_key(name.encode()):
             raise TypeError(f"sweep() grid: '{k}' is not a parameter of model {model}")
         if v is None or isinstance(v, (set, frozenset, dict)) or \
-                (isinstance(v, np.ndarray) and v.ndim > 1):
+                (isinstance(v, np.ndarray) and v.ndim != 1):
             raise TypeError(f"sweep() grid: '{k}': expected a list, a range, a 1-D array or a string, "
                             f"got {type(v).__name__}")
         vals = _grid_values(k, v)

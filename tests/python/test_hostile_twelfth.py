@@ -156,3 +156,74 @@ def test_the_programs_own_handler_runs_during_a_callback():
     assert r.returncode == 0, r.stderr
     what, elapsed, ncalls = r.stdout.split()
     assert what == "status-9" and float(elapsed) < 5 and ncalls == "1", r.stdout
+
+
+# ---- inputs of odd kinds ----
+
+def test_a_0d_array_is_refused_naming_the_keyword():
+    # before: "chain: iteration over a 0-d array" and, in a grid, "iteration
+    # over a 0-d array" with no key named
+    import numpy as np
+    with pytest.raises(TypeError, match=r"^chain: radii: expected a 1-D sequence of numbers, got an array of shape \(\)"):
+        granwave.chain(n=1, radii=np.array(0.004))
+    with pytest.raises(TypeError, match=r"^sweep\(\) grid: 'n': expected a list"):
+        granwave.sweep("chain", grid={"n": np.array(3)})
+
+
+def test_sweep_keys_of_the_wrong_kind_or_spelled_twice():
+    # before: AttributeError ('int' object has no attribute 'replace'), and
+    # "sweep: sweep:5: duplicate key 't-max'" naming a line of a text never shown
+    with pytest.raises(TypeError, match=r"^sweep\(\) grid: a key is a keyword name \(str\), got int \(3\)"):
+        granwave.sweep("chain", grid={3: [1]})
+    with pytest.raises(TypeError, match=r"^sweep\(\): 't_max' and 't-max' name the same parameter"):
+        granwave.sweep("chain", grid={"t_max": [1e-3], "t-max": [2e-3]})
+    with pytest.raises(TypeError, match=r"^sweep\(\): 't_max' and 't-max' name the same parameter"):
+        granwave.sweep("chain", grid={"t_max": [1e-3]}, **{"t-max": 2e-3})
+    assert list(granwave.sweep("chain", grid={"n": [1, 2]}, t_max=None).n) == [1, 2]
+
+
+def test_numpy_inputs_of_any_layout_give_the_same_run():
+    import numpy as np
+    radii = [0.004, 0.003, 0.002]
+    base = granwave.chain(n=3, radii=radii).f_max
+    ro = np.array(radii)
+    ro.flags.writeable = False
+    for a in (np.array(radii, dtype=">f8"), np.array([0.004, 9, 0.003, 9, 0.002])[::2], ro,
+              np.array(radii, dtype=np.longdouble), (x for x in radii)):
+        assert granwave.chain(n=3, radii=a).f_max == base
+
+
+# ---- memory over many calls ----
+
+def _rss_mb():
+    with open("/proc/self/statm") as f:
+        return int(f.read().split()[1]) * os.sysconf("SC_PAGE_SIZE") / 1e6
+
+
+def test_memory_stays_flat_over_many_calls_failing_or_stopped():
+    # 1000 calls each of runs that fail in C, values refused, and callbacks that
+    # raise (falcon and sweep from worker threads, layer_make from this one):
+    # measured flat to 0.1 MB; a leak of one outcome (kB) per call would show
+    import gc
+
+    def boom(done, total):
+        raise ValueError("stop")
+    calls = [lambda: granwave.chain(n=3, vimp=0.3, max_steps=5),
+             lambda: granwave.chain(n=-1),
+             lambda: granwave.falcon(n=(1, 3), vimp=[0.3], heights=[], solver="rk4", progress=boom),
+             lambda: granwave.sweep("chain", grid={"n": [1, 2]}, solver="rk4", jobs=1, progress=boom),
+             lambda: granwave.layer_make(n=10, width_rm=8, seed=1, progress=boom),
+             lambda: granwave.chain(n=3, vimp=0.3, solver="rk4", trace=True)]
+
+    def loop(n):
+        for _ in range(n):
+            for c in calls:
+                try:
+                    c()
+                except (ValueError, granwave.GranwaveError):
+                    pass
+        gc.collect()
+    loop(50)
+    before = _rss_mb()
+    loop(1000)
+    assert _rss_mb() - before < 3.0

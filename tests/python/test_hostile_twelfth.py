@@ -227,3 +227,22 @@ def test_memory_stays_flat_over_many_calls_failing_or_stopped():
     before = _rss_mb()
     loop(1000)
     assert _rss_mb() - before < 3.0
+
+
+# ---- the import with a library that is not granwave's ----
+
+@pytest.mark.parametrize("make, text", [
+    # before: OSError "...: file too short", naming neither granwave nor GRANWAVE_LIB
+    (lambda d: (d / "bad.so").write_text("not a library") and d / "bad.so", r"GRANWAVE_LIB=.*bad\.so cannot be loaded"),
+    # before: AttributeError "...: undefined symbol: gw_version"
+    (lambda d: next(p for p in ("/lib/x86_64-linux-gnu/libm.so.6", "/usr/lib/x86_64-linux-gnu/libm.so.6",
+                                "/lib64/libm.so.6") if os.path.exists(p)),
+     r"libm\.so\.6 is not a libgranwave this module can use \(it has no gw_version\)"),
+], ids=["not-a-library", "another-library"])
+def test_a_library_that_is_not_granwaves_fails_the_import_clearly(tmp_path, make, text):
+    import re
+    lib = make(tmp_path)
+    env = dict(ENV, GRANWAVE_LIB=str(lib))
+    p = subprocess.run([sys.executable, "-c", "import granwave"], env=env, capture_output=True, text=True)
+    last = p.stderr.strip().splitlines()[-1]
+    assert p.returncode != 0 and last.startswith("ImportError: granwave: ") and re.search(text, last), p.stderr

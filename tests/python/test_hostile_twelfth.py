@@ -246,3 +246,12 @@ def test_a_library_that_is_not_granwaves_fails_the_import_clearly(tmp_path, make
     p = subprocess.run([sys.executable, "-c", "import granwave"], env=env, capture_output=True, text=True)
     last = p.stderr.strip().splitlines()[-1]
     assert p.returncode != 0 and last.startswith("ImportError: granwave: ") and re.search(text, last), p.stderr
+
+
+def test_every_progress_keyword_is_documented():
+    # help(granwave.layer_impact) said nothing of its progress keyword
+    import inspect
+    for name in granwave.__all__:
+        fn = getattr(granwave, name)
+        if callable(fn) and not isinstance(fn, type) and "progress" in inspect.signature(fn).parameters:
+            assert "progress: " in fn.__doc__, name

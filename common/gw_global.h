@@ -14,6 +14,13 @@
  * wrong order (a section running under GSL's default handler, which aborts, and
  * the handler left off for good), so the section holds one recursive lock from
  * gw_gsl_quiet_begin to gw_gsl_quiet_end.
+ *
+ * fork(): each lock is taken by a pthread_atfork handler before the fork and
+ * released after it (made anew in the child), so a child never starts with a
+ * lock held by a thread it does not have: a child forked while another thread
+ * calibrated a restitution or planned an FFT hung for ever at its first one
+ * (Python's multiprocessing with the fork start method). No thread holds two of
+ * these locks at once, so the order the handlers take them in cannot deadlock.
  */
 #ifndef GW_GLOBAL_H
 #define GW_GLOBAL_H

@@ -3,7 +3,10 @@
  * gw_interrupt_begin). The request is one lock-free atomic flag: the handler
  * sets it (async-signal-safe), each solver step reads it (a relaxed load, no
  * measurable cost). Begin/end pairs are counted under a mutex; the first
- * installs the handler, the last puts back the one it found.
+ * installs the handler, the last puts back the one it found. A child forked
+ * while a pair is open (another thread's call under way) starts with none: the
+ * handler found is put back and the count and request cleared, where the child
+ * kept this handler for good (Ctrl-C did nothing in it, Python never saw it).
  */
 #define _POSIX_C_SOURCE 200809L
 #include <pthread.h>
@@ -17,6 +20,31 @@ static atomic_int requested;
 static pthread_mutex_t lock = PTHREAD_MUTEX_INITIALIZER;
 static int depth;
 static struct sigaction saved;
+static pthread_once_t fork_once = PTHREAD_ONCE_INIT;
+
+static void fork_prepare(void)
+{
+    pthread_mutex_lock(&lock);
+}
+
+static void fork_parent(void)
+{
+    pthread_mutex_unlock(&lock);
+}
+
+static void fork_child(void)
+{
+    if (depth > 0)
+        sigaction(SIGINT, &saved, NULL);
+    depth = 0;
+    atomic_store(&requested, 0);
+    pthread_mutex_init(&lock, NULL); /* made anew: the child's thread has a new id */
+}
+
+static void fork_init(void)
+{
+    pthread_atfork(fork_prepare, fork_parent, fork_child);
+}
 
 static void on_sigint(int sig)
 {
@@ -32,6 +60,7 @@ int gw_interrupt_pending(void)
 int gw_interrupt_begin(void)
 {
     int rc = GW_OK;
+    pthread_once(&fork_once, fork_init);
     pthread_mutex_lock(&lock);
     if (depth == 0) {
         struct sigaction sa;

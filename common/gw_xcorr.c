@@ -45,9 +45,34 @@
 #define GW_XCORR_MAX_N (1 << 26)
 
 static pthread_mutex_t planner_lock = PTHREAD_MUTEX_INITIALIZER;
+static pthread_once_t planner_fork_once = PTHREAD_ONCE_INIT;
+
+/* fork() while another thread plans: the child got the lock held by a thread it
+ * does not have, and its first FFT waited for ever (Python's multiprocessing,
+ * fork start method). The fork waits for the planner instead (gw_global.h). */
+static void planner_fork_prepare(void)
+{
+    pthread_mutex_lock(&planner_lock);
+}
+
+static void planner_fork_parent(void)
+{
+    pthread_mutex_unlock(&planner_lock);
+}
+
+static void planner_fork_child(void) /* made anew: the child's thread has a new id */
+{
+    pthread_mutex_init(&planner_lock, NULL);
+}
+
+static void planner_fork_init(void)
+{
+    pthread_atfork(planner_fork_prepare, planner_fork_parent, planner_fork_child);
+}
 
 void gw_fftw_planner_lock(void)
 {
+    pthread_once(&planner_fork_once, planner_fork_init);
     pthread_mutex_lock(&planner_lock);
 }
 

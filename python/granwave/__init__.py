@@ -218,8 +218,8 @@ def sweep(model="chain", grid=None, *, jobs=0, progress=None, **params):
     grid: {keyword: values}, every combination is a case (the last key varies
     fastest); values are a list, a range, or a string "A:B" (integers) or
     "a,b,c". Other keywords are the model's parameters, the same for every
-    case. progress: optional f(done, total), called as cases finish; return
-    True (or raise) to stop. Returns a Result with one array per grid key and
+    case. progress: optional f(done, total), called as cases finish (from the
+    worker threads, one call at a time); return True (or raise) to stop. Returns a Result with one array per grid key and
     per result column (f_max, tau_n, ... for the chain), one entry per case.
     """
     return _core.run_sweep(model, grid or {}, params, jobs, progress)
@@ -234,13 +234,15 @@ falcon.__doc__ = _study("falcon").doc(
     "for every N in n = (A, B) at each impact velocity (vimp, and heights in mm), the\n"
     "line tau_N = T_q (N - 1) + tau_1, the wave speed 4R/T_q against (F.27), F_max(N).\n"
     "Per-case results are arrays [velocity, N]. progress: optional f(done, total) per\n"
-    "collision; return True (or raise) to stop. heights=[] (or 'none') for none.")
+    "collision, called from the worker threads one call at a time; return True (or\n"
+    "raise) to stop. heights=[] (or 'none') for none.")
 wavespeed.__doc__ = _study("wavespeed").doc(
     "The deformation-wave speed of the column against the impact velocity, as\n"
     "`granwave wavespeed`: (a) 4R/T_q from the slope of tau_N(N), (b) the front's time\n"
     "of flight, (c) the group speed of the chain compressed by the mean wall force and\n"
     "c/sqrt(3/2); power-law fits v = A v_imp^beta (F.16; fits[...] per estimator), the\n"
-    "period fit (F.15). Series per velocity are numpy arrays. progress: f(done, total).")
+    "period fit (F.15). Series per velocity are numpy arrays. progress: f(done, total)\n"
+    "per collision, called from the worker threads one call at a time.")
 softwall.__doc__ = _study("softwall").doc(
     "Columns on a soft wall, as `granwave softwall`: F_max(N), tau_max(N) for a wall\n"
     "coefficient (kwall, default 1e9) or every sheet of the paper's Table 2\n"
@@ -278,7 +280,9 @@ layer_impact.__doc__ = _study("layer-impact").doc(
     "snapshots: {'t': [snapshot], 'x', 'y', 'theta', 'vx', 'vy', 'omega': [snapshot,\n"
     "particle], 'r': [particle], 'block': the block's particle index}, each the first\n"
     "output sample at or after the time asked for (the end state when the run ended\n"
-    "before it: snapshots=[t_max] gives the end); None without.")
+    "before it: snapshots=[t_max] gives the end); None without. progress: f(done, total)\n"
+    "in output samples up to t_max (the run ends at T_f with done = total); return True\n"
+    "(or raise) to stop.")
 layer_stats.__doc__ = _study("layer-stats").doc(
     "Statistics of a layer sweep table (OUT/results.csv of `granwave sweep` with model =\n"
     "layer; Bourrier et al. 2008, physics.md 2.3, 2.5), as `granwave layer-stats INPUT`:\n"

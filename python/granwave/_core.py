@@ -155,7 +155,7 @@ def _text(p, value):
         if isinstance(value, (set, frozenset, dict, bytes)) or not hasattr(value, "__iter__"):
             raise TypeError(f"{p.keyword}: expected a number or a sequence of numbers, got "
                             f"{type(value).__name__} ({value!r})")
-        if isinstance(value, np.ndarray) and value.ndim > 1:
+        if isinstance(value, np.ndarray) and value.ndim != 1:  # 0-d: "iteration over a 0-d array", unnamed
             raise TypeError(f"{p.keyword}: expected a 1-D sequence of numbers, got an array of shape {value.shape}")
         items = []
         for k, x in enumerate(value):
@@ -244,9 +244,10 @@ class Study:
         out = ctypes.create_string_buffer(self.st.fields_size)
         err = _lib.GwErr()
         try:
-            with Interruptible():
+            with Interruptible() as it:
+                cb.interruptible = it.on
                 rc = self.st.run(buf, out, cb.c_fn, None, ctypes.byref(err))
-            cb.reraise()
+            cb.reraise(self.func)
             if rc != 0:
                 _raise(rc, err, self.func, self.params)
             return read_result(self.fields, ctypes.addressof(out))
@@ -298,18 +299,37 @@ class Progress:
                             f"{type(fn).__name__} ({fn!r})")
         self.fn = fn
         self.exc = None
+        self.interruptible = False  # set by the call, under Interruptible
+        self.interrupted = False
         self.c_fn = _lib.PROGRESS(self._call) if fn else _lib.PROGRESS()
 
     def _call(self, ctx, done, total):
+        # On the main thread of an interruptible call the library's SIGINT
+        # handler is in place, and Python's handling never ran while f did: a
+        # callback that slept or computed for 10 s ignored Ctrl-C for those
+        # 10 s. Python's handler is put back while f runs (KeyboardInterrupt in
+        # f stops the call as any exception does) and the library's after it;
+        # a SIGINT that came just before, during the run, goes to Python's
+        # handler first.
+        swap = self.interruptible and threading.current_thread() is threading.main_thread()
         try:
+            if swap and lib.gw_interrupt_end():
+                self.interrupted = True
+                signal.raise_signal(signal.SIGINT)  # KeyboardInterrupt, or the program's own handler
+                return 1
             return 1 if self.fn(done, total) else 0
         except BaseException as e:  # noqa: B902 - handed back to the caller
             self.exc = e
             return 1
+        finally:
+            if swap:
+                lib.gw_interrupt_begin()
 
-    def reraise(self):
+    def reraise(self, what="sweep"):
         if self.exc is not None:
             raise self.exc
+        if self.interrupted:  # the program's own handler ran and did not raise: as a SIGINT in C
+            raise GranwaveError(f"{what}: interrupted (SIGINT)", GW_ECANCELED)
 
 
 def _dim(spec, scalars):
@@ -414,12 +434,20 @@ def run_sweep(model, grid, params, jobs, progress):
         raise ValueError("sweep: grid needs at least one key with its values")
     lines = ["[sweep]", f"model = {model}", "[grid]"]
     axes = {}
+    seen = {}  # t_max and t-max are one key: "sweep: sweep:5: duplicate key 't-max'" named a line of a text never shown
+    for k in itertools.chain(grid, (k for k, v in params.items() if v is not None)):
+        if not isinstance(k, str):  # AttributeError: 'int' object has no attribute 'replace'
+            raise TypeError(f"sweep() grid: a key is a keyword name (str), got {type(k).__name__} ({k!r})")
+        name = k.replace("_", "-")
+        if name in seen and seen[name] != k:
+            raise TypeError(f"sweep(): '{seen[name]}' and '{k}' name the same parameter")
+        seen.setdefault(name, k)
     for k, v in grid.items():
         name = k.replace("_", "-")
         if not m.has_key(name.encode()):
             raise TypeError(f"sweep() grid: '{k}' is not a parameter of model {model}")
         if v is None or isinstance(v, (set, frozenset, dict)) or \
-                (isinstance(v, np.ndarray) and v.ndim > 1):
+                (isinstance(v, np.ndarray) and v.ndim != 1):
             raise TypeError(f"sweep() grid: '{k}': expected a list, a range, a 1-D array or a string, "
                             f"got {type(v).__name__}")
         vals = _grid_values(k, v)
@@ -458,7 +486,8 @@ def run_sweep(model, grid, params, jobs, progress):
     mod = ctypes.POINTER(_lib.GwSweepModel)()
     err = _lib.GwErr()
     try:
-        with Interruptible():
+        with Interruptible() as it:
+            cb.interruptible = it.on
             rc = lib.gw_sweep_run_text(text.encode(), b"sweep", int(jobs), cb.c_fn, None, ctypes.byref(values),
                                        ctypes.byref(ncases), ctypes.byref(mod), ctypes.byref(err))
         cb.reraise()

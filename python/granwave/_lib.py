@@ -71,17 +71,27 @@ def _candidates():
     return [here.parent.parent / "build" / "lib" / "libgranwave.so"], False  # source checkout
 
 
+def _open(p, from_env):
+    # a file that is no shared library raised the loader's OSError ("file too
+    # short"), naming neither the module nor GRANWAVE_LIB
+    try:
+        return ctypes.CDLL(p)
+    except OSError as e:
+        who = f"GRANWAVE_LIB={os.environ['GRANWAVE_LIB']}" if from_env else p
+        raise ImportError(f"granwave: {who} cannot be loaded ({e})") from None
+
+
 def _load():
     paths, from_env = _candidates()
     for p in paths:
         if p.exists():
-            return ctypes.CDLL(str(p)), str(p)
+            return _open(str(p), from_env), str(p)
     if from_env:
         raise ImportError(f"granwave: GRANWAVE_LIB={os.environ['GRANWAVE_LIB']} names no library "
                           f"(looked for {paths[0]})")
     name = ctypes.util.find_library("granwave")
     if name:
-        return ctypes.CDLL(name), name
+        return _open(name, False), name
     raise ImportError("granwave: libgranwave.so not found; build it (./setup.sh build), install it "
                       "(cmake --install build --prefix P), or set GRANWAVE_LIB to its path. Looked in: "
                       + ", ".join(str(p) for p in paths))
@@ -91,7 +101,12 @@ lib, path = _load()
 
 
 def _declare(name, restype, *argtypes):
-    f = getattr(lib, name)
+    try:  # another library (or another version's) lacks it: AttributeError "undefined symbol" before
+        f = getattr(lib, name)
+    except AttributeError:
+        raise ImportError(f"granwave: {path} is not a libgranwave this module can use (it has no {name}): "
+                          "use the module installed with that library, or set GRANWAVE_LIB to the build's "
+                          "lib/libgranwave.so") from None
     f.restype = restype
     f.argtypes = list(argtypes)
 

@@ -83,10 +83,32 @@ typedef struct h5_open {
 static h5_open *open_files;
 static size_t open_n, open_cap;
 static pthread_mutex_t open_lock = PTHREAD_MUTEX_INITIALIZER;
+static pthread_once_t open_once = PTHREAD_ONCE_INIT;
+
+/* fork(): the table's lock is taken before the fork and released in the
+ * parent; the child, which has only the forking thread, starts a new lock (as
+ * the other locks of the library, gw_global.h) */
+static void open_fork_prepare(void)
+{
+    pthread_mutex_lock(&open_lock);
+}
+static void open_fork_parent(void)
+{
+    pthread_mutex_unlock(&open_lock);
+}
+static void open_fork_child(void)
+{
+    pthread_mutex_init(&open_lock, NULL);
+}
+static void open_atfork(void)
+{
+    pthread_atfork(open_fork_prepare, open_fork_parent, open_fork_child);
+}
 
 static int buf_register(hid_t file, h5_buf *u)
 {
     int ok = 1;
+    pthread_once(&open_once, open_atfork);
     pthread_mutex_lock(&open_lock);
     if (open_n == open_cap) {
         size_t cap = open_cap ? 2 * open_cap : 8;

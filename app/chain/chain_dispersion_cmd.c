@@ -89,7 +89,7 @@ static void disp_options(disp_cli *c, gw_opt *o)
     o[i++] = DOPT_D("vimp", &c->vimp, "V", "impact velocity of that column, m/s [0.3]", GW_CHAIN_VIMP_MIN,
                     GW_CHAIN_VIMP_MAX, 0);
     o[i++] = (gw_opt){.name = "json", .kind = GW_OPT_FLAG, .dest = &c->json, .help = "print results as one JSON object on stdout"};
-    o[i++] = DOPT_S("out", &c->out, "DIR", "write CSV files (and the JSON) into DIR");
+    o[i++] = DOPT_S("out", &c->out, "DIR", "write dispersion_ridge.csv, dispersion_power.csv and dispersion.json into DIR (--column-n: wall_spectrum.csv and dispersion.json)");
     o[i++] = (gw_opt){0};
 }
 
@@ -265,7 +265,8 @@ static void disp_print(const disp_cli *c, const gw_chain_disp_result *r, double 
            r->integrate_ms, r->stats.steps, r->fft_ms);
 }
 
-/* every file dispersion --out may write: the study's three, or --column-n's one */
+/* every file dispersion --out may write: the study's three, or --column-n's
+ * wall_spectrum.csv and dispersion.json */
 static const char *const disp_files[] = {"dispersion_ridge.csv", "dispersion_power.csv", "dispersion.json",
                                          "wall_spectrum.csv", NULL};
 
@@ -362,8 +363,12 @@ static int disp_column(const disp_cli *c, const gw_opt *opts, int argc, char **a
         char *hdr = gw_cli_provenance("dispersion", argc, argv, js);
         gw_outset oset; /* the study's files of an earlier run go when this one is placed */
         memset(&oset, 0, sizeof oset);
+        char jpath[4096]; /* dispersion.json: the --json object, as every command's --out */
         if (c->out && (gw_mkdir_p(c->out, &err) != GW_OK || gw_outset_begin(&oset, c->out, disp_files, &err) != GW_OK ||
                        write_csv(c->out, "wall_spectrum.csv", hdr ? hdr : "", spectrum_body, &sp, &err) != GW_OK ||
+                       (gw_path_join(jpath, sizeof jpath, c->out, "dispersion.json") != GW_OK &&
+                        gw_err_set(&err, GW_EINVAL, "%s: path too long", c->out) != GW_OK) ||
+                       gw_json_write(jpath, js, &err) != GW_OK ||
                        gw_outset_commit(&oset, &err) != GW_OK)) {
             gw_outset_abort(&oset);
             fprintf(stderr, "granwave dispersion --out: %s\n", err.msg);

@@ -233,6 +233,7 @@ class Checker:
         if text not in body:
             self.fault(f"{page}: no longer says {text!r} (update this test with the page)")
             return
+        args = [a.replace("{SRC}", self.src) for a in args]
         js = self.value(tuple(args), args)
         if js is None:
             return
@@ -323,6 +324,13 @@ CLAIMS = [
      DROP19, lambda j: (len(j["impacts"]), j["impact_rises"], impacts(j).replace("5.42", "**5.42**")),
      lambda x: f"| {x[0]} | {x[1]} | {x[2]} |"),
 ]
+# docs/outcomes.md: the dt-out independence of the fast mode today (two of the four sampling steps)
+for _d in ("1e-5", "1e-3"):
+    CLAIMS.append(("docs/outcomes.md", "e_n_first 0.2198234, T_i 2.28 ms and 0.0182493 m at each of the four",
+                   ["layer-impact", "--sample", "{SRC}/data/measured/layer_diagram_8000/sample.txt", "--until", "verdict",
+                    "--dt-out", _d, "--json"],
+                   lambda j: (j["e_n_first"], j["t_rebound_first"] * 1e3, j["penetration"]),
+                   lambda x: f"e_n_first {x[0]:.7f}, T_i {x[1]:.2f} ms and {x[2]:.7f} m"))
 # the damped columns of docs/column.md: eps_eff for N = 1, 2, 5, 10, 20, 40 (Kuwabara-Kono, e = 0.9)
 KK = "eps_eff falls with N as in the experiment: 0.900, 0.874, 0.864, 0.863, 0.860, 0.860 for N = 1, 2, 5, 10, 20, 40"
 for _i, _n in enumerate((1, 2, 5, 10, 20, 40)):

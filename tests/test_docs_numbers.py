@@ -17,7 +17,8 @@ directory:
      (or drop.md's, for the drop's) has exactly the columns listed there, in order
      (`x1_m` .. `xN_m` expanded to the run's N);
   5. the HDF5 traces' datasets carry the units formats.md gives (with h5py, when
-     Debian's python3-h5py is there).
+     Debian's python3-h5py is there);
+  6. a layer sweep's results.csv has the columns formats.md's "Each row holds" lists.
 Then the numbers: each claim below is a piece of text a page quotes and the command
 that gives it; the test fails when the page no longer holds the text or the command's
 value, printed to the digits the page shows, differs (both directions of drift: a
@@ -217,6 +218,25 @@ class Checker:
                         if 0 in h[k].shape:
                             self.fault(f"{where}: {f}:{k} is empty {h[k].shape}")
 
+    def sweep_columns(self):
+        """A two-case layer sweep: its results.csv columns between the grid keys and the
+        hashes are the ones formats.md's "Each row holds" lists, in order."""
+        with open(os.path.join(self.work, "sw.ini"), "w") as f:
+            f.write("[sweep]\nmodel = layer\nout = o_sweep\n[grid]\nrb-rm = 1\npoint = 0:1\n[params]\n"
+                    "sample = s60.txt\npoints = 2\nt-max = 0.005\n")
+        p = self.run(["sweep", "sw.ini", "--jobs", "1", "--quiet"])
+        if p.returncode != 0:
+            self.fault(f"granwave sweep sw.ini: exit {p.returncode}: {p.stderr.strip()[-300:]}")
+            return
+        with open(os.path.join(self.work, "o_sweep", "results.csv")) as fp:
+            header = next(ln for ln in fp if not ln.startswith("#")).strip().split(",")
+        model = header[header.index("point") + 1:header.index("case_config_fnv1a64")]
+        text = re.sub(r"\s+", " ", open(os.path.join(self.src, "docs", "formats.md"), encoding="utf-8").read())
+        m = re.search(r"Each row holds (.*?)\(\[outcomes\.md\]", text)
+        doc = re.findall(r"`(\w+)`", m.group(1)) if m else None
+        if doc != model:
+            self.fault(f"granwave sweep (model layer): results.csv's columns {model}; docs/formats.md lists {doc}")
+
     def value(self, key, args):
         if key not in self.cache:
             p = self.run(args)
@@ -397,6 +417,7 @@ def main(argv):
             return 1
         for cmd, args, out, js in OUTPUT_RUNS:
             c.outputs(cmd, args, out, js)
+        c.sweep_columns()
         for page, text, args, get, fmt in CLAIMS:
             c.claim(page, text, args, get, fmt)
         if c.faults:

@@ -420,6 +420,9 @@ def plot(args):
 
 
 def main(argv):
+    if len(argv) == 2 and argv[1] in ("-h", "--help"):
+        print(__doc__)
+        return 0
     try:
         if len(argv) < 2 or argv[1] not in ("run", "plot"):
             raise InputError("usage: plot_wave_speed_layer.py run DIR [options] | plot DIR")

@@ -178,6 +178,14 @@ rc=$?
 [ $rc -eq 2 ] && grep -q "no-lws" "$tmp/err.log" || fail "plot_wave_speed_layer.py on a missing directory: exit $rc"
 echo "PASS: plot_wave_speed_layer.py missing directory -> exit 2: $(head -1 "$tmp/err.log")"
 
+# 2e. each plot script's --help prints its usage and exits 0 (plot_sheets.py took
+#     '--help' for a data directory: "no directory --help", exit 2)
+for s in plot_falcon plot_drop plot_sheets plot_wave_speed_layer; do
+    "$PY" "$SRC/notebooks/$s.py" --help >"$tmp/help.log" 2>&1 && grep -q "$s.py" "$tmp/help.log" \
+        || { cat "$tmp/help.log"; fail "$s.py --help"; }
+done
+echo "PASS: the plot scripts' --help"
+
 # 3. every notebook, headless
 shopt -s nullglob
 nbs=("$SRC"/notebooks/*.ipynb)

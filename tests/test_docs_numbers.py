@@ -10,9 +10,9 @@ directory:
      "Where the outputs go" table (`trace_nN...` stands for any N);
   2. every file the `--out` line of `granwave CMD --help` names is written, and that
      line names at least one file;
-  3. with --json, the command's JSON file under --out holds the object printed on
-     stdout (formats.md: "--out DIR writes the same object into the directory"),
-     timings aside;
+  3. with --json, the object has `version` and `settings` and the command's JSON file
+     under --out holds it (formats.md: "--out DIR writes the same object into the
+     directory"), timings aside;
   4. every CSV has at least two columns, and one that formats.md's CSV table lists
      (or drop.md's, for the drop's) has exactly the columns listed there, in order
      (`x1_m` .. `xN_m` expanded to the run's N);
@@ -180,7 +180,11 @@ class Checker:
             if not os.path.exists(path):
                 self.fault(f"{where} --json: no {json_file} under --out (formats.md: the same object is written)")
             else:
-                a = strip_timing(json.loads(p.stdout))
+                printed = json.loads(p.stdout)
+                missing = [k for k in ("version", "settings") if k not in printed]
+                if missing:  # formats.md: "Every object has version and settings"
+                    self.fault(f"{where} --json: no {' and no '.join(missing)} in the object")
+                a = strip_timing(printed)
                 b = strip_timing(json.load(open(path)))
                 if a != b:
                     keys = sorted(k for k in set(a) | set(b) if a.get(k) != b.get(k))

@@ -360,7 +360,16 @@ static int disp_column(const disp_cli *c, const gw_opt *opts, int argc, char **a
         cJSON_AddNumberToObject(js, "n_maxima", r.n_maxima);
         cJSON_AddStringToObject(js, "fftw_planner", c->measure ? "measure" : "estimate");
         disp_wisdom_json(js, c);
-        char *hdr = gw_cli_provenance("dispersion", argc, argv, js);
+        { /* "settings", as every command's JSON (formats.md): the run's settings above, again */
+            static const char *const keys[] = {"column_n", "v_imp", "solver", "rtol", "atol", "mass", "k",
+                                               "kwall", "radius", "dt_out", "fftw_planner"};
+            cJSON *set = cJSON_CreateObject();
+            for (size_t i = 0; i < sizeof keys / sizeof keys[0]; i++)
+                cJSON_AddItemToObject(set, keys[i], cJSON_Duplicate(cJSON_GetObjectItem(js, keys[i]), 1));
+            disp_wisdom_json(set, c); /* the wisdom file and its hash, as the study's settings */
+            cJSON_AddItemToObject(js, "settings", set);
+        }
+        char *hdr = gw_cli_provenance("dispersion", argc, argv, cJSON_GetObjectItem(js, "settings"));
         gw_outset oset; /* the study's files of an earlier run go when this one is placed */
         memset(&oset, 0, sizeof oset);
         char jpath[4096]; /* dispersion.json: the --json object, as every command's --out */

@@ -103,6 +103,8 @@ static int write_csv(const gw_chain_trace *tr, const char *dir, const char *stem
         fprintf(f.fp, "%.12e,%.12e\n", tr->t[k], tr->f[k]);
     if ((rc = gw_afile_commit(&f, err)) != GW_OK)
         return rc;
+    if (tr->n == 0) /* wall force only: no bead table (it would hold t_s alone) */
+        return GW_OK;
 
     snprintf(name, sizeof name, "%s_beads.csv", stem);
     if (gw_path_join(path, sizeof path, dir, name) != GW_OK)
@@ -169,9 +171,9 @@ static int write_h5(const gw_chain_trace *tr, const char *dir, const char *stem,
         rc = h5_dataset(file, "t", tr->t, 1, d1, "s");
         if (rc == GW_OK)
             rc = h5_dataset(file, "f_wall", tr->f, 1, d1, "N");
-        if (rc == GW_OK)
+        if (rc == GW_OK && tr->n > 0)
             rc = h5_dataset(file, "x", tr->x, 2, d2, "m");
-        if (rc == GW_OK)
+        if (rc == GW_OK && tr->n > 0)
             rc = h5_dataset(file, "v", tr->v, 2, d2, "m/s");
     }
     if (rc == GW_OK) {

@@ -426,7 +426,9 @@ int gw_chain_memory_check(const gw_chain_params *p, const gw_solver_type *type, 
  * dt-max), memory (n). GW_OK or GW_EINVAL naming the parameter. */
 int gw_chain_run_check(const gw_chain_params *p, const gw_chain_run_opts *o, gw_err *err);
 /* Write DIR/<stem>_wall_force.csv and DIR/<stem>_beads.csv (and DIR/<stem>.h5 when
- * built with HDF5); header lines record version and parameters. */
+ * built with HDF5); header lines record version and parameters. A trace with
+ * tr->n == 0 (a copy whose bead series are to be left out) writes the wall force
+ * only: no _beads.csv and no x, v datasets. */
 int gw_chain_trace_write(const gw_chain_trace *tr, const char *dir, const char *stem,
                          const char *header, gw_err *err);
 

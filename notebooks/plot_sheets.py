@@ -665,6 +665,9 @@ def write_figures(data_dir, out_dir, quiet=False):
 
 
 def main(argv):
+    if len(argv) > 1 and argv[1] in ("-h", "--help"):
+        print(__doc__)
+        return 0
     data = argv[1] if len(argv) > 1 else DEFAULT_DATA
     out = argv[2] if len(argv) > 2 else os.path.join(data, "figures")
     matplotlib.use("Agg")

@@ -318,6 +318,15 @@ def analyse(imp, dly):
     return fit
 
 
+def points_label(fit, tags=MAIN_TAGS):
+    """"16 impact points" (or "2 to 16 impact points"): the numbers of points behind the
+    means drawn, read from the fit (the run's --points; the stored series have 16)."""
+    n = sorted({int(k) for t, f in fit["tags"].items() if t in tags for k in f["points"]})
+    if not n:
+        return "no impact points"
+    return (f"{n[0]}" if n[0] == n[-1] else f"{n[0]} to {n[-1]}") + (" impact point" if n == [1] else " impact points")
+
+
 def figures(d, fit):
     import matplotlib
     matplotlib.use("Agg")
@@ -349,7 +358,7 @@ def figures(d, fit):
     ax.axvspan(*FIT_RANGE, color="0.9", zorder=0)
     ax.set_xscale("log"), ax.set_yscale("log")
     ax.set_xlabel("impact speed V_i (m/s)"), ax.set_ylabel("wave speed c (m/s)")
-    ax.set_title("layer wave speed: R_b = R_m, normal impacts, mean over 16 impact points")
+    ax.set_title("layer wave speed: R_b = R_m, normal impacts, mean over " + points_label(fit))
     ax.legend(fontsize=6)
     fig.tight_layout()
     fig.savefig(os.path.join(d, "figures", "wave_speed_vs_vi.png"), dpi=110)
@@ -411,6 +420,9 @@ def plot(args):
 
 
 def main(argv):
+    if len(argv) == 2 and argv[1] in ("-h", "--help"):
+        print(__doc__)
+        return 0
     try:
         if len(argv) < 2 or argv[1] not in ("run", "plot"):
             raise InputError("usage: plot_wave_speed_layer.py run DIR [options] | plot DIR")

@@ -614,8 +614,9 @@ rm -rf "$o25"
     ok "dispersion's study after --column-n: no wall_spectrum.csv of the earlier run" ||
     ko "dispersion over --column-n: exit $rc, $(ls "$o25" | tr '\n' ' ')"
 "$GW" dispersion --column-n 3 --out "$o25" >/dev/null 2>&1 </dev/null; rc=$?
-[ $rc -eq 0 ] && [ -s "$o25/wall_spectrum.csv" ] && [ -z "$(ls "$o25" | grep -v wall_spectrum.csv)" ] &&
-    ok "dispersion --column-n after the study: only wall_spectrum.csv" ||
+[ $rc -eq 0 ] && [ -s "$o25/wall_spectrum.csv" ] && [ -z "$(ls "$o25" | grep -v -e wall_spectrum.csv -e dispersion.json)" ] &&
+    grep -q column_wall_spectrum "$o25/dispersion.json" &&
+    ok "dispersion --column-n after the study: only wall_spectrum.csv and its dispersion.json" ||
     ko "dispersion --column-n over the study: exit $rc, $(ls "$o25" | tr '\n' ' ')"
 touch "$o25/notes.txt"
 "$GW" dispersion --column-n 3 --out "$o25" >/dev/null 2>&1 </dev/null

@@ -20,8 +20,8 @@
 #    now leaves the earlier files as they were and a temporary (NAME.tmp.HOST.PID.XXXXXX,
 #    never read as a result). Two runs into one DIR at once leave all the files
 #    of one of them.
-#  5 dispersion: the study's files and --column-n's wall_spectrum.csv are one
-#    set: either run removes the other's.
+#  5 dispersion: the study's files and --column-n's wall_spectrum.csv and
+#    dispersion.json are one set: either run removes the other's.
 #  6 layer-stats records the content hash of the table it read (the path alone
 #    did not tell the table analysed from a later version of it); with a write
 #    that failed it exited 1 but printed its JSON on stdout.
@@ -182,7 +182,8 @@ d=$tmp/d5
 "$GW" dispersion --n 64 --t-samples 256 --out "$d" >/dev/null 2>&1 && [ -e "$d/dispersion.json" ] ||
     ko "5: dispersion --out"
 "$GW" dispersion --column-n 3 --out "$d" >/dev/null 2>&1
-[ "$(ls "$d" | tr '\n' ' ')" = "wall_spectrum.csv " ] && ok "5: --column-n after the study: its file only" ||
+[ "$(ls "$d" | tr '\n' ' ')" = "dispersion.json wall_spectrum.csv " ] && grep -q column_wall_spectrum "$d/dispersion.json" &&
+    ok "5: --column-n after the study: its two files only" ||
     ko "5: --column-n after the study: $(ls "$d" | tr '\n' ' ')"
 "$GW" dispersion --n 64 --t-samples 256 --out "$d" >/dev/null 2>&1
 [ "$(ls "$d" | tr '\n' ' ')" = "dispersion.json dispersion_power.csv dispersion_ridge.csv " ] &&

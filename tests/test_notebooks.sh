@@ -15,6 +15,9 @@
 #     data/measured/drop) and exits 2 on a missing directory.
 #  2c. notebooks/plot_sheets.py draws the stored sheet and plateau data (exit 0, four PNGs)
 #     and exits 2 on a missing directory.
+#  2d. notebooks/plot_wave_speed_layer.py: plot on the stored series (their fit.json
+#     again), run + plot with this program (2 points: the title counts them), exit 2
+#     on a missing directory.
 #  3. Every notebooks/*.ipynb executes headless (nbconvert --execute, Agg backend) with
 #     GRANWAVE set to the binary under test and GRANWAVE_LIB to the library beside it
 #     (<build>/lib, when there); outputs go to a temp dir, never the repo.
@@ -144,6 +147,44 @@ echo "PASS: plot_sheets.py wrote its four figures"
 rc=$?
 [ $rc -eq 2 ] && grep -q "does-not-exist" "$tmp/err.log" || fail "plot_sheets.py on a missing directory: exit $rc"
 echo "PASS: plot_sheets.py missing directory -> exit 2: $(head -1 "$tmp/err.log")"
+
+# 2d. notebooks/plot_wave_speed_layer.py (docs/crowns.md section 5): `plot` on a copy of
+#     the stored series reproduces their fit.json and draws its three figures; `run` with
+#     today's program (one speed, 2 impact points, into a new directory) then `plot`: two
+#     rows, the figures, and a title that counts the 2 points (it said "16" whatever the
+#     run); a missing directory exits 2 naming it
+cp -r "$SRC/data/measured/layer_wave_speed" "$tmp/lws"
+rm -rf "$tmp/lws/figures"
+"$PY" "$SRC/notebooks/plot_wave_speed_layer.py" plot "$tmp/lws" >"$tmp/plot.log" 2>&1 \
+    || { cat "$tmp/plot.log"; fail "plot_wave_speed_layer.py plot on the stored series"; }
+cmp -s "$tmp/lws/fit.json" "$SRC/data/measured/layer_wave_speed/fit.json" \
+    || fail "plot_wave_speed_layer.py: fit.json of the stored series differs from the committed one"
+for f in wave_speed_vs_vi local_speed_vs_r gravity; do
+    p="$tmp/lws/figures/$f.png"
+    [ -s "$p" ] && [ "$(head -c 8 "$p" | od -An -tx1 | tr -d ' \n')" = "89504e470d0a1a0a" ] \
+        || fail "plot_wave_speed_layer.py: $f.png missing or not a PNG"
+done
+echo "PASS: plot_wave_speed_layer.py plot: the stored fit.json and three figures"
+"$PY" "$SRC/notebooks/plot_wave_speed_layer.py" run "$tmp/lwnew" --speeds 20 --points 2 >"$tmp/plot.log" 2>&1 \
+    && "$PY" "$SRC/notebooks/plot_wave_speed_layer.py" plot "$tmp/lwnew" >>"$tmp/plot.log" 2>&1 \
+    || { cat "$tmp/plot.log"; fail "plot_wave_speed_layer.py run + plot with $GW"; }
+rows=$(grep -v -c -e '^#' -e '^tag,' "$tmp/lwnew/impacts.csv")
+[ "$rows" -eq 2 ] && [ -s "$tmp/lwnew/figures/wave_speed_vs_vi.png" ] || fail "plot_wave_speed_layer.py run: $rows rows"
+label=$(cd "$SRC/notebooks" && "$PY" -c "import json, sys, plot_wave_speed_layer as p; print(p.points_label(json.load(open(sys.argv[1]))))" "$tmp/lwnew/fit.json")
+[ "$label" = "2 impact points" ] || fail "plot_wave_speed_layer.py: the figure's title says '$label' for a 2-point run"
+echo "PASS: plot_wave_speed_layer.py run + plot with this program: 2 rows, title '$label'"
+"$PY" "$SRC/notebooks/plot_wave_speed_layer.py" plot "$tmp/no-lws" >/dev/null 2>"$tmp/err.log"
+rc=$?
+[ $rc -eq 2 ] && grep -q "no-lws" "$tmp/err.log" || fail "plot_wave_speed_layer.py on a missing directory: exit $rc"
+echo "PASS: plot_wave_speed_layer.py missing directory -> exit 2: $(head -1 "$tmp/err.log")"
+
+# 2e. each plot script's --help prints its usage and exits 0 (plot_sheets.py took
+#     '--help' for a data directory: "no directory --help", exit 2)
+for s in plot_falcon plot_drop plot_sheets plot_wave_speed_layer; do
+    "$PY" "$SRC/notebooks/$s.py" --help >"$tmp/help.log" 2>&1 && grep -q "$s.py" "$tmp/help.log" \
+        || { cat "$tmp/help.log"; fail "$s.py --help"; }
+done
+echo "PASS: the plot scripts' --help"
 
 # 3. every notebook, headless
 shopt -s nullglob

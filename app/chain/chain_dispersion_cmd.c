@@ -89,7 +89,7 @@ static void disp_options(disp_cli *c, gw_opt *o)
     o[i++] = DOPT_D("vimp", &c->vimp, "V", "impact velocity of that column, m/s [0.3]", GW_CHAIN_VIMP_MIN,
                     GW_CHAIN_VIMP_MAX, 0);
     o[i++] = (gw_opt){.name = "json", .kind = GW_OPT_FLAG, .dest = &c->json, .help = "print results as one JSON object on stdout"};
-    o[i++] = DOPT_S("out", &c->out, "DIR", "write CSV files (and the JSON) into DIR");
+    o[i++] = DOPT_S("out", &c->out, "DIR", "write dispersion_ridge.csv, dispersion_power.csv and dispersion.json into DIR (--column-n: wall_spectrum.csv and dispersion.json)");
     o[i++] = (gw_opt){0};
 }
 
@@ -265,7 +265,8 @@ static void disp_print(const disp_cli *c, const gw_chain_disp_result *r, double 
            r->integrate_ms, r->stats.steps, r->fft_ms);
 }
 
-/* every file dispersion --out may write: the study's three, or --column-n's one */
+/* every file dispersion --out may write: the study's three, or --column-n's
+ * wall_spectrum.csv and dispersion.json */
 static const char *const disp_files[] = {"dispersion_ridge.csv", "dispersion_power.csv", "dispersion.json",
                                          "wall_spectrum.csv", NULL};
 
@@ -359,11 +360,24 @@ static int disp_column(const disp_cli *c, const gw_opt *opts, int argc, char **a
         cJSON_AddNumberToObject(js, "n_maxima", r.n_maxima);
         cJSON_AddStringToObject(js, "fftw_planner", c->measure ? "measure" : "estimate");
         disp_wisdom_json(js, c);
-        char *hdr = gw_cli_provenance("dispersion", argc, argv, js);
+        { /* "settings", as every command's JSON (formats.md): the run's settings above, again */
+            static const char *const keys[] = {"column_n", "v_imp", "solver", "rtol", "atol", "mass", "k",
+                                               "kwall", "radius", "dt_out", "fftw_planner"};
+            cJSON *set = cJSON_CreateObject();
+            for (size_t i = 0; i < sizeof keys / sizeof keys[0]; i++)
+                cJSON_AddItemToObject(set, keys[i], cJSON_Duplicate(cJSON_GetObjectItem(js, keys[i]), 1));
+            disp_wisdom_json(set, c); /* the wisdom file and its hash, as the study's settings */
+            cJSON_AddItemToObject(js, "settings", set);
+        }
+        char *hdr = gw_cli_provenance("dispersion", argc, argv, cJSON_GetObjectItem(js, "settings"));
         gw_outset oset; /* the study's files of an earlier run go when this one is placed */
         memset(&oset, 0, sizeof oset);
+        char jpath[4096]; /* dispersion.json: the --json object, as every command's --out */
         if (c->out && (gw_mkdir_p(c->out, &err) != GW_OK || gw_outset_begin(&oset, c->out, disp_files, &err) != GW_OK ||
                        write_csv(c->out, "wall_spectrum.csv", hdr ? hdr : "", spectrum_body, &sp, &err) != GW_OK ||
+                       (gw_path_join(jpath, sizeof jpath, c->out, "dispersion.json") != GW_OK &&
+                        gw_err_set(&err, GW_EINVAL, "%s: path too long", c->out) != GW_OK) ||
+                       gw_json_write(jpath, js, &err) != GW_OK ||
                        gw_outset_commit(&oset, &err) != GW_OK)) {
             gw_outset_abort(&oset);
             fprintf(stderr, "granwave dispersion --out: %s\n", err.msg);

@@ -65,6 +65,7 @@ static void drop_options(drop_cli *d, gw_opt *opts)
 {
     memset(d, 0, sizeof *d);
     chain_cli_options(&d->c, opts);
+    chain_cli_out_help(opts, "write drop_wall_force.csv, drop_beads.csv, drop_peaks.csv, drop_impacts.csv, drop.json (and drop.h5 with HDF5) into DIR");
     d->n = 1;
     d->height = 5.1e-3;
     d->peak_threshold = NAN;

@@ -208,10 +208,12 @@ static int write_traces(const falcon *f, const char *dir, int argc, char **argv,
         if (rc == GW_OK) {
             if (p.n == 7) {
                 rc = gw_chain_trace_write(&tr, dir, stem, hdr, err);
-            } else { /* wall force only: the bead table of long columns is large */
+            } else { /* wall force only (no _beads.csv, no x, v in the .h5): the bead
+                        table of long columns is large; an earlier run's _beads.csv
+                        is removed when the set is placed (falcon_files) */
                 gw_chain_trace w = tr;
                 w.n = 0;
-                rc = gw_chain_trace_write(&w, dir, stem, hdr, err); /* an earlier _beads.csv: see falcon_files */
+                rc = gw_chain_trace_write(&w, dir, stem, hdr, err);
             }
         }
         free(hdr);
@@ -283,6 +285,7 @@ int gw_cmd_falcon(int argc, char **argv)
     memset(&f, 0, sizeof f);
     gw_opt opts[CHAIN_CLI_NOPTS + 7];
     chain_cli_options(&f.c, opts);
+    chain_cli_out_help(opts, "write falcon_runs.csv, falcon_final_velocities.csv, falcon_summary.json, report.md and the traces of N = 7, 15, 30 (wall force; the beads for N = 7; and .h5 with HDF5) into DIR");
     const char *vlist = "0.3", *hlist = "1.9,2.9,3.1,5.1", *nrange = "1:40";
     double accuracy = 1e-6;
     long jobs = 0;

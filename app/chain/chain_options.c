@@ -108,8 +108,13 @@ void chain_cli_options(chain_cli *c, gw_opt *o)
     }
     o[NBASE] = (gw_opt){.name = "json", .kind = GW_OPT_FLAG, .dest = &c->json, .help = "print results as one JSON object on stdout"};
     o[NBASE + 1] = (gw_opt){.name = "out", .kind = GW_OPT_STRING, .dest = &c->out, .metavar = "DIR",
-                            .help = "write CSV (and HDF5) files into DIR"};
+                            .help = "write CSV (and HDF5) files into DIR"}; /* each command names its files: chain_cli_out_help */
     c->sheet_yield = c->sheet_loss = -1; /* the sheet's own constants */
+}
+
+void chain_cli_out_help(gw_opt *o, const char *help)
+{
+    o[NBASE + 1].help = help;
 }
 
 int chain_cli_sheet(const chain_cli *c, const gw_sheet *s, gw_chain_params *p,

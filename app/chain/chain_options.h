@@ -38,6 +38,8 @@ typedef struct chain_cli {
 
 /* Fill defaults and write the shared option table into opts[0..CHAIN_CLI_NOPTS). */
 void chain_cli_options(chain_cli *c, gw_opt *opts);
+/* The --out line of the command's help: the files it writes into DIR. */
+void chain_cli_out_help(gw_opt *opts, const char *help);
 
 /* Resolve materials, damping and solver into c->params / c->run (n and v_imp are
  * the caller's). GW_EINVAL with a message naming the option. The sheet options

@@ -67,6 +67,7 @@ int gw_cmd_softwall(int argc, char **argv)
     chain_cli c;
     gw_opt opts[CHAIN_CLI_NOPTS + 7];
     chain_cli_options(&c, opts);
+    chain_cli_out_help(opts, "write softwall.json into DIR");
     const char *nrange = "1:30";
     double vimp = sqrt(2 * 9.81 * 2.9e-3), tol = 0.01;
     long jobs = 0;

@@ -36,6 +36,7 @@ int gw_cmd_wavespeed(int argc, char **argv)
     chain_cli c;
     gw_opt opts[CHAIN_CLI_NOPTS + 6];
     chain_cli_options(&c, opts);
+    chain_cli_out_help(opts, "write wavespeed.csv and wavespeed.json into DIR");
     const char *vlist = "0.075,0.15,0.3,0.5", *nrange = "5:40";
     double frac = 0.1;
     long jobs = 0;

@@ -1,0 +1,436 @@
+#!/usr/bin/python3
+"""test_docs_numbers.py PROGRAM SRCDIR: the files and numbers the documentation promises.
+
+A new user reads docs/cli.md, docs/formats.md and the `--help` of a command, runs it
+with --out, and looks for the files, columns and numbers named there. For the fast
+commands (chain, falcon, wavespeed and softwall on small ranges, dispersion and its
+--column-n mode, drop, layer-make and layer-impact on a 60-disc sample), in a scratch
+directory:
+  1. every file the run writes into --out is named in the command's row of cli.md's
+     "Where the outputs go" table (`trace_nN...` stands for any N);
+  2. every file the `--out` line of `granwave CMD --help` names is written, and that
+     line names at least one file;
+  3. with --json, the object has `version` and `settings` and the command's JSON file
+     under --out holds it (formats.md: "--out DIR writes the same object into the
+     directory"), timings aside;
+  4. every CSV has at least two columns, and one that formats.md's CSV table lists
+     (or drop.md's, for the drop's) has exactly the columns listed there, in order
+     (`x1_m` .. `xN_m` expanded to the run's N);
+  5. the HDF5 traces' datasets carry the units formats.md gives (with h5py, when
+     Debian's python3-h5py is there);
+  6. a layer sweep's results.csv has the columns formats.md's "Each row holds" lists.
+Then the numbers: each claim below is a piece of text a page quotes and the command
+that gives it; the test fails when the page no longer holds the text or the command's
+value, printed to the digits the page shows, differs (both directions of drift: a
+changed page or a changed code). The 300-disc default sample and impact of README.md
+(porosity 0.185, T_f = 0.42 s, e_n = 0.148) take about 9 s; the rest 10 s.
+First it checks itself on made-up pages (unnamed files, columns other than the
+listed ones, a wrong quoted number) and fails if any goes unnoticed. Exit 0 when all hold, 1
+otherwise (each fault printed), 2 on bad usage.
+"""
+import json
+import os
+import re
+import subprocess
+import sys
+import tempfile
+
+TIMING_KEYS = {"wall_time_ms", "wall_time_s", "integrate_ms", "fft_ms"}
+
+
+def cli_rows(srcdir):
+    """{command: set of file-name patterns} from cli.md's outputs table."""
+    text = open(os.path.join(srcdir, "docs", "cli.md"), encoding="utf-8").read()
+    sec = text.split("## Where the outputs go", 1)[1].split("\n## ", 1)[0]
+    rows = {}
+    for line in sec.splitlines():
+        cells = [c.strip() for c in line.strip().strip("|").split("|")]
+        if len(cells) < 3 or not cells[0].startswith("`"):
+            continue
+        cmd = cells[0].strip("`").split()[0]
+        names = set()
+        for tok in re.findall(r"`([^`]+)`", cells[2]):
+            tok = tok.replace("DIR/", "")
+            if re.fullmatch(r"[\w.]+\.(csv|json|h5|md|vtk|pvd)", tok):
+                names.add(tok)
+        rows[cmd] = names
+    return rows
+
+
+def name_matches(name, patterns):
+    for p in patterns:
+        rx = "^" + re.escape(p).replace("nN", r"n\d+").replace("FILE", ".*") + "$"
+        if re.match(rx, name):
+            return True
+    return False
+
+
+def csv_columns_doc(srcdir):
+    """{file pattern: [columns]} from formats.md's CSV table (and drop.md's outputs table,
+    whose rows give the columns as one `a,b,c` string). In a formats.md cell the column
+    names are the backticked words in order, `..` kept; parenthesised remarks and links
+    are prose; a row that points to another page is checked from that page."""
+    out = {}
+    text = open(os.path.join(srcdir, "docs", "formats.md"), encoding="utf-8").read()
+    sec = text.split("## CSV tables", 1)[1].split("\n## ", 1)[0]
+    for line in sec.splitlines():
+        cells = [c.strip() for c in line.strip().strip("|").split("|")]
+        if len(cells) < 2 or not cells[0].startswith("`") or cells[1].startswith("as in ["):
+            continue
+        cell = re.sub(r"\[([^\]]*)\]\([^)]*\)", r"\1", cells[1])
+        while True:
+            c2 = re.sub(r"\([^()]*\)", "", cell)
+            if c2 == cell:
+                break
+            cell = c2
+        cols = [a or ".." for a, _ in re.findall(r"`(\w+)`|(\.\.)", cell)]
+        for f in re.findall(r"`([\w.]+\.csv)`", cells[0]):
+            out.setdefault(f, cols)
+    text = open(os.path.join(srcdir, "docs", "drop.md"), encoding="utf-8").read()
+    sec = text.split("## Outputs", 1)[1].split("\n## ", 1)[0]
+    for line in sec.splitlines():
+        m = re.fullmatch(r"\|\s*`([\w.]+\.csv)`\s*\|\s*`([\w,]+)`\s*\|", line.strip())
+        if m:
+            out.setdefault(m.group(1), m.group(2).split(","))
+    return out
+
+
+def expand(cols, header):
+    """`x1_m` .. `xN_m` against the header: the run's N."""
+    if ".." not in cols:
+        return cols
+    res = []
+    i = 0
+    while i < len(cols):
+        if i + 2 < len(cols) and cols[i + 1] == "..":
+            a, b = cols[i], cols[i + 2]
+            pre, suf = re.match(r"([a-z]+)1(_.*)", a).groups()
+            n = sum(1 for h in header if re.fullmatch(re.escape(pre) + r"\d+" + re.escape(suf), h))
+            res.extend(f"{pre}{k}{suf}" for k in range(1, n + 1))
+            i += 3
+        else:
+            res.append(cols[i])
+            i += 1
+    return res
+
+
+def strip_timing(o):
+    if isinstance(o, dict):
+        return {k: strip_timing(v) for k, v in o.items() if k not in TIMING_KEYS}
+    if isinstance(o, list):
+        return [strip_timing(v) for v in o]
+    return o
+
+
+class Checker:
+    def __init__(self, program, srcdir, work):
+        self.program, self.src, self.work = program, srcdir, work
+        self.faults = []
+        self.rows = cli_rows(srcdir)
+        self.cols = csv_columns_doc(srcdir)
+        self.cache = {}
+
+    def fault(self, msg):
+        self.faults.append(msg)
+
+    def run(self, args, timeout=300):
+        return subprocess.run([self.program, *args], capture_output=True, text=True, timeout=timeout,
+                              cwd=self.work)
+
+    def help_out_names(self, cmd, args):
+        """The files the --out line of `CMD --help` names for a run with args: the names
+        outside parentheses, or those of a "(--flag: ...)" group when the run gives --flag."""
+        p = self.run([cmd, "--help"])
+        line = next((ln for ln in p.stdout.splitlines() if ln.strip().startswith("--out ")), "")
+        names = re.compile(r"\b([\w]+\.(?:csv|json|h5|md|vtk|pvd))\b")
+        text = line
+        for flag, group in re.findall(r"\((--[\w-]+): ([^)]*)\)", line):
+            text = text.replace(f"({flag}: {group})", "")
+            if flag in args:
+                return line, names.findall(group)
+        return line, names.findall(text)
+
+    def outputs(self, cmd, args, out, json_file=None):
+        p = self.run([cmd, *args, "--out", out] + (["--json"] if json_file else []))
+        where = f"granwave {cmd} {' '.join(args)} --out {out}"
+        if p.returncode != 0:
+            self.fault(f"{where}: exit {p.returncode}: {p.stderr.strip()[-300:]}")
+            return
+        d = os.path.join(self.work, out)
+        written = sorted(os.listdir(d))
+        # 1. named in cli.md
+        pats = self.rows.get(cmd)
+        if pats is None:
+            self.fault(f"docs/cli.md: no row for '{cmd}' in 'Where the outputs go'")
+        else:
+            for f in written:
+                if not name_matches(f, pats):
+                    self.fault(f"{where}: wrote {f}, which docs/cli.md's row for {cmd} does not name")
+        # 2. --help's --out line
+        line, names = self.help_out_names(cmd, args)
+        if not names:
+            self.fault(f"granwave {cmd} --help: the --out line names no file: {line.strip()!r}")
+        for f in names:
+            no_h5 = f.endswith(".h5") and "with HDF5" in line and not any(w.endswith(".h5") for w in written)
+            if f not in written and not no_h5:  # (a build without HDF5 writes no .h5)
+                self.fault(f"{where}: --help says it writes {f}; not written")
+        # 3. the JSON file holds the --json object
+        if json_file:
+            path = os.path.join(d, json_file)
+            if not os.path.exists(path):
+                self.fault(f"{where} --json: no {json_file} under --out (formats.md: the same object is written)")
+            else:
+                printed = json.loads(p.stdout)
+                missing = [k for k in ("version", "settings") if k not in printed]
+                if missing:  # formats.md: "Every object has version and settings"
+                    self.fault(f"{where} --json: no {' and no '.join(missing)} in the object")
+                a = strip_timing(printed)
+                b = strip_timing(json.load(open(path)))
+                if a != b:
+                    keys = sorted(k for k in set(a) | set(b) if a.get(k) != b.get(k))
+                    self.fault(f"{where} --json: {json_file} differs from stdout in {keys[:5]}")
+        # 4. CSV columns
+        for f in written:
+            if not f.endswith(".csv"):
+                continue
+            header = None
+            with open(os.path.join(d, f)) as fp:
+                for ln in fp:
+                    if not ln.startswith("#"):
+                        header = ln.strip().split(",")
+                        break
+            if not header or len(header) < 2:
+                self.fault(f"{where}: {f} has the columns {header}: no data beside them")
+                continue
+            doc = next((c for pat, c in self.cols.items() if name_matches(f, [pat])), None)
+            if doc is not None and expand(doc, header) != header:
+                self.fault(f"{where}: {f} has the columns {header}; the docs list {expand(doc, header)}")
+        # 5. HDF5 units
+        try:
+            import h5py
+        except ImportError:
+            return
+        units = {"t": "s", "f_wall": "N", "x": "m", "v": "m/s"}
+        for f in written:
+            if f.endswith(".h5") and (f.startswith("trace_n") or f in ("chain.h5", "drop.h5")):
+                with h5py.File(os.path.join(d, f), "r") as h:
+                    for k in h:
+                        u = h[k].attrs.get("units")
+                        u = u.decode() if isinstance(u, bytes) else u
+                        if k in units and u != units[k]:
+                            self.fault(f"{where}: {f}:{k} has units {u!r}; formats.md says {units[k]!r}")
+                        if 0 in h[k].shape:
+                            self.fault(f"{where}: {f}:{k} is empty {h[k].shape}")
+
+    def sweep_columns(self):
+        """A two-case layer sweep: its results.csv columns between the grid keys and the
+        hashes are the ones formats.md's "Each row holds" lists, in order."""
+        with open(os.path.join(self.work, "sw.ini"), "w") as f:
+            f.write("[sweep]\nmodel = layer\nout = o_sweep\n[grid]\nrb-rm = 1\npoint = 0:1\n[params]\n"
+                    "sample = s60.txt\npoints = 2\nt-max = 0.005\n")
+        p = self.run(["sweep", "sw.ini", "--jobs", "1", "--quiet"])
+        if p.returncode != 0:
+            self.fault(f"granwave sweep sw.ini: exit {p.returncode}: {p.stderr.strip()[-300:]}")
+            return
+        with open(os.path.join(self.work, "o_sweep", "results.csv")) as fp:
+            header = next(ln for ln in fp if not ln.startswith("#")).strip().split(",")
+        model = header[header.index("point") + 1:header.index("case_config_fnv1a64")]
+        text = re.sub(r"\s+", " ", open(os.path.join(self.src, "docs", "formats.md"), encoding="utf-8").read())
+        m = re.search(r"Each row holds (.*?)\(\[outcomes\.md\]", text)
+        doc = re.findall(r"`(\w+)`", m.group(1)) if m else None
+        if doc != model:
+            self.fault(f"granwave sweep (model layer): results.csv's columns {model}; docs/formats.md lists {doc}")
+
+    def value(self, key, args):
+        if key not in self.cache:
+            p = self.run(args)
+            if p.returncode != 0:
+                self.cache[key] = None
+                self.fault(f"granwave {' '.join(args)}: exit {p.returncode}: {p.stderr.strip()[-300:]}")
+            else:
+                self.cache[key] = json.loads(p.stdout)
+        return self.cache[key]
+
+    def claim(self, page, text, args, get, fmt):
+        body = open(os.path.join(self.src, page), encoding="utf-8").read()
+        body = re.sub(r"\s+", " ", body)
+        if text not in body:
+            self.fault(f"{page}: no longer says {text!r} (update this test with the page)")
+            return
+        args = [a.replace("{SRC}", self.src) for a in args]
+        js = self.value(tuple(args), args)
+        if js is None:
+            return
+        try:
+            v = get(js)
+        except (KeyError, IndexError, TypeError) as e:
+            self.fault(f"{page}: {text!r}: granwave {' '.join(args)} has no such value ({e!r})")
+            return
+        got = fmt(v)
+        if got not in text:
+            self.fault(f"{page}: says {text!r}; granwave {' '.join(args)} gives {got} ({v!r})")
+
+
+def vel(js, h):
+    return next(v for v in js["velocities"] if (v["h_mm"] or 0) == h)
+
+
+FALCON = ["falcon", "--json", "--quiet"]
+SAMPLE300 = ["layer-make", "--n", "300", "--seed", "1", "--out", "sample300.txt", "--json"]
+IMPACT300 = ["layer-impact", "--sample", "sample300.txt", "--rb-rm", "1", "--vi", "20", "--json"]
+VERDICT300 = ["layer-impact", "--sample", "sample300.txt", "--until", "verdict", "--json"]
+DISP = ["dispersion", "--json"]
+DROP51 = ["drop", "--n", "40", "--height", "5.1e-3", "--t-max", "10e-3", "--dt-out", "5e-6", "--damping", "kk",
+          "--restitution", "0.9", "--json"]
+DROP19 = ["drop", "--n", "40", "--height", "1.9e-3", "--t-max", "10e-3", "--dt-out", "5e-6", "--damping", "kk",
+          "--restitution", "0.9", "--json"]
+
+
+def sci(x, digits=1):
+    """1.2e-5 as the pages write it (no zero-padded exponent)."""
+    m, e = f"{x:.{digits}e}".split("e")
+    return f"{m}e{int(e)}"
+
+
+def f1(x):
+    return f"{x:.1f}"
+
+
+def f2(x):
+    return f"{x:.2f}"
+
+
+def impacts(js):
+    return ", ".join(f"{i['f_max']:.2f} at {i['t_fmax'] * 1e3:.2f}" for i in js["impacts"])
+
+
+CLAIMS = [
+    # README.md's Falcon table (h = 5.1 mm unless said) and docs/column.md's
+    ("README.md", "| F_max, mean over N = 1..40 (N) | 72.4 |", FALCON, lambda j: vel(j, 5.1)["f_max_mean"], f1),
+    ("README.md", "| tau_max (us) | 18.04 |", FALCON, lambda j: vel(j, 5.1)["tau_max_mean"] * 1e6, f2),
+    ("README.md", "| T_q, slope of tau_N over N = 1..20 (us) | 25.41 |", FALCON,
+     lambda j: vel(j, 5.1)["t_q_n20"] * 1e6, f2),
+    ("README.md", "| T_q at h = 2.9 mm (us) | 26.89 |", FALCON, lambda j: vel(j, 2.9)["t_q_n20"] * 1e6, f2),
+    ("README.md", "| wave speed 4R/T_q, N <= 20 (m/s) | 629.6 |", FALCON,
+     lambda j: vel(j, 5.1)["wave_speed_n20"], f1),
+    ("README.md", "| wave speed 4R/T_q, N <= 40 (m/s) | 606.6 |", FALCON, lambda j: vel(j, 5.1)["wave_speed"], f1),
+    ("README.md", "| collision time N = 40 (ms) | 1.062 |", FALCON,
+     lambda j: vel(j, 5.1)["tau_n_last"] * 1e3, lambda x: f"{x:.3f}"),
+    ("docs/column.md", "| F_max (N) | 3.1 | 53.7 |", FALCON, lambda j: vel(j, 3.1)["f_max_mean"], f1),
+    ("docs/column.md", "| period P (us) | 5.1 | 31.46 |", FALCON, lambda j: vel(j, 5.1)["period_mean"] * 1e6, f2),
+    ("docs/column.md", "| period P (us) | 3.1 | 33.06 |", FALCON, lambda j: vel(j, 3.1)["period_mean"] * 1e6, f2),
+    ("docs/column.md", "| T_q, slope over N = 1..40 (us) | 5.1 | 26.38 |", FALCON,
+     lambda j: vel(j, 5.1)["t_q"] * 1e6, f2),
+    ("docs/column.md", "| wave speed 4R/T_q, N <= 20 (m/s) | 1.9 | 570.4 |", FALCON,
+     lambda j: vel(j, 1.9)["wave_speed_n20"], f1),
+    ("docs/column.md", "(66.39 N at N = 1, 67.94 N mean", FALCON,
+     lambda j: (vel(j, 0)["f_max_min"], vel(j, 0)["f_max_mean"]), lambda x: f"({x[0]:.2f} N at N = 1, {x[1]:.2f} N mean"),
+    # the dispersion study of docs/column.md
+    ("docs/column.md", "within 7.1e-4 of omega(q)", DISP, lambda j: j["ridge_max_rel_err"], sci),
+    ("docs/column.md", "over 509 of 512 wavenumbers", DISP, lambda j: j["n_resolved"], lambda x: f"{x} of 512"),
+    ("docs/column.md", "the long-wave sound speed is 598.76 m/s against 598.77 m/s", DISP,
+     lambda j: (j["c0_measured"], j["c0"]), lambda x: f"{x[0]:.2f} m/s against {x[1]:.2f} m/s"),
+    # README.md and docs/cli.md: the default sample and impact
+    ("README.md", "Pluviated samples have porosity 0.185", SAMPLE300, lambda j: j["porosity"], lambda x: f"{x:.3f}"),
+    ("README.md", "the default impact stops at T_f = 0.42 s with e_n = 0.148", IMPACT300,
+     lambda j: (j["t_f"], j["e_n"]), lambda x: f"T_f = {x[0]:.2f} s with e_n = {x[1]:.3f}"),
+    ("docs/cli.md", "the default impact stops at T_f = 0.42 s", IMPACT300, lambda j: j["t_f"], f2),
+    # docs/layer.md: the fast mode's row of the default impact
+    ("docs/layer.md", "| default: R_b = R_m, 20 m/s, 300 discs (`--until verdict`) | yes | 0.069788 /", VERDICT300,
+     lambda j: j["e_n_first"], lambda x: f"| {x:.6f} /"),
+    ("docs/layer.md", "| 0.0184794 / 0.0184555 | 3.1e-5 /", VERDICT300,
+     lambda j: (j["penetration"], j["energy_error"]), lambda x: f"| {x[0]:.7f} / 0.0184555 | {sci(x[1])} /"),
+    ("docs/layer.md", "| 2318 / 25563", VERDICT300, lambda j: j["steps"], lambda x: f"| {x} /"),
+    # docs/drop.md's table of the 10 ms windows
+    ("docs/drop.md", "| N = 40, h = 5.1 mm | 10 ms | 2 | 0 | 68.97 at 0.02, 3.96 at 6.99 |", DROP51,
+     lambda j: (len(j["impacts"]), j["impact_rises"], impacts(j)), lambda x: f"| {x[0]} | {x[1]} | {x[2]} |"),
+    ("docs/drop.md", "| N = 40, h = 1.9 mm | 10 ms | 4 | 1 | 38.16 at 0.02, 2.19 at 4.76, 2.03 at 8.23, **5.42** at 9.31 |",
+     DROP19, lambda j: (len(j["impacts"]), j["impact_rises"], impacts(j).replace("5.42", "**5.42**")),
+     lambda x: f"| {x[0]} | {x[1]} | {x[2]} |"),
+]
+# docs/outcomes.md: the dt-out independence of the fast mode today (two of the four sampling steps)
+for _d in ("1e-5", "1e-3"):
+    CLAIMS.append(("docs/outcomes.md", "e_n_first 0.2198234, T_i 2.28 ms and 0.0182493 m at each of the four",
+                   ["layer-impact", "--sample", "{SRC}/data/measured/layer_diagram_8000/sample.txt", "--until", "verdict",
+                    "--dt-out", _d, "--json"],
+                   lambda j: (j["e_n_first"], j["t_rebound_first"] * 1e3, j["penetration"]),
+                   lambda x: f"e_n_first {x[0]:.7f}, T_i {x[1]:.2f} ms and {x[2]:.7f} m"))
+# the damped columns of docs/column.md: eps_eff for N = 1, 2, 5, 10, 20, 40 (Kuwabara-Kono, e = 0.9)
+KK = "eps_eff falls with N as in the experiment: 0.900, 0.874, 0.864, 0.863, 0.860, 0.860 for N = 1, 2, 5, 10, 20, 40"
+for _i, _n in enumerate((1, 2, 5, 10, 20, 40)):
+    CLAIMS.append(("docs/column.md", KK, ["chain", "--n", str(_n), "--damping", "kk", "--restitution", "0.9", "--json"],
+                   lambda j: j["eps_eff"], lambda x, i=_i: (f"{x:.3f}" if i == 0 else f", {x:.3f}")))
+# docs/column.md: N_d on two soft walls (tolerance 1 %, N = 1..40) and (F.8) there
+for _k, _nd in (("2e9", "4"), ("1e9", "7")):
+    CLAIMS.append(("docs/column.md", "| N_d measured in the model | 4 | 7 | 11 | 20 |",
+                   ["softwall", "--kwall", _k, "--n", "1:40", "--json", "--quiet"], lambda j: j["n_d"],
+                   lambda x: f"| {x} |"))
+    CLAIMS.append(("docs/column.md", "| (F.8) at that N_d | 4 | 7 | 11 | 21 |",
+                   ["softwall", "--kwall", _k, "--n", "1:40", "--json", "--quiet"], lambda j: j["n_d_predicted"],
+                   lambda x: f"| {x} |"))
+
+OUTPUT_RUNS = [
+    ("chain", ["--n", "7", "--solver", "rk4"], "o_chain", "chain.json"),
+    ("falcon", ["--n", "1:30", "--quiet"], "o_falcon", "falcon_summary.json"),
+    ("wavespeed", ["--vimp", "0.3", "--n", "5:8", "--quiet"], "o_wavespeed", "wavespeed.json"),
+    ("softwall", ["--kwall", "1e9", "--n", "1:8", "--quiet"], "o_softwall", "softwall.json"),
+    ("dispersion", ["--n", "256"], "o_disp", "dispersion.json"),
+    ("dispersion", ["--column-n", "10"], "o_disp_col", "dispersion.json"),
+    ("drop", ["--n", "5", "--height", "1e-3", "--t-max", "2e-3"], "o_drop", "drop.json"),
+    ("layer-impact", ["--sample", "s60.txt", "--t-max", "0.01", "--full"], "o_impact", "impact.json"),
+]
+
+
+def self_test(program, srcdir):
+    """Made-up pages: unnamed output files, columns that differ, a wrong number."""
+    with tempfile.TemporaryDirectory() as src, tempfile.TemporaryDirectory() as work:
+        os.makedirs(os.path.join(src, "docs"))
+        with open(os.path.join(src, "docs", "cli.md"), "w") as f:
+            f.write("## Where the outputs go\n\n| command | json | files |\n|---|---|---|\n"
+                    "| `chain` | x | `DIR/chain_wall_force.csv`, `chain.json` |\n")
+        with open(os.path.join(src, "docs", "formats.md"), "w") as f:
+            f.write("## CSV tables\n\n| file | columns |\n|---|---|\n| `chain_beads.csv` | `t_s`, `q1_m` .. `qN_m` |\n")
+        with open(os.path.join(src, "docs", "drop.md"), "w") as f:
+            f.write("## Outputs\n\n| file | contents |\n|---|---|\n| `chain_wall_force.csv` | `t_s,f_N` |\n")
+        with open(os.path.join(src, "README.md"), "w") as f:
+            f.write("F_max is 99.9 N here.\n")
+        c = Checker(program, src, work)
+        c.outputs("chain", ["--n", "2"], "o", "chain.json")
+        c.claim("README.md", "F_max is 99.9 N", ["chain", "--n", "2", "--json"], lambda j: j["f_max"], f1)
+        want = ("chain_beads.csv, which docs/cli.md", "chain.h5, which docs/cli.md", "chain_beads.csv has the columns",
+            "the docs list ['t_s', 'f_N']", "says 'F_max is 99.9 N'")
+        missing = [w for w in want if not any(w in x for x in c.faults)]
+        if missing:
+            print("self-test: not caught: " + "; ".join(missing) + "\n  faults: " + "\n  ".join(c.faults))
+            return False
+    return True
+
+
+def main(argv):
+    if len(argv) != 3:
+        print("usage: test_docs_numbers.py PROGRAM SRCDIR", file=sys.stderr)
+        return 2
+    program, srcdir = os.path.abspath(argv[1]), os.path.abspath(argv[2])
+    if not self_test(program, srcdir):
+        return 1
+    with tempfile.TemporaryDirectory() as work:
+        c = Checker(program, srcdir, work)
+        p = c.run(["layer-make", "--n", "60", "--width-rm", "16", "--seed", "3", "--out", "s60.txt"])
+        if p.returncode != 0:
+            print("FAIL: could not make the 60-disc sample: " + p.stderr)
+            return 1
+        for cmd, args, out, js in OUTPUT_RUNS:
+            c.outputs(cmd, args, out, js)
+        c.sweep_columns()
+        for page, text, args, get, fmt in CLAIMS:
+            c.claim(page, text, args, get, fmt)
+        if c.faults:
+            for f in c.faults:
+                print("FAIL: " + f)
+            return 1
+    print(f"{len(OUTPUT_RUNS)} --out runs and {len(CLAIMS)} quoted numbers agree with the docs")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))

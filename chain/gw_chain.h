@@ -296,7 +296,10 @@ double gw_chain_wall_gap(const gw_chain *c, const double *y);
 /* Its rate v_0 - v_s (y[1] for the default wall). */
 double gw_chain_wall_gap_rate(const gw_chain *c, const double *y);
 /* Root index whose falling zero, with the wall contact closed, marks a maximum of
- * the force the sensor reads (n, or n + 1 with a sensor body: g = v_s). */
+ * the force the sensor reads (n, or n + 1 with a sensor body): a function with
+ * the sign of dF/dt (v_0, the overlap rate or v_s where F follows the overlap or
+ * the sensor's spring alone; with damping or a viscoelastic wall, the rate of F
+ * itself). */
 int gw_chain_force_max_root(const gw_chain *c);
 /* State index of the sensor's position (its velocity follows), -1 without. */
 long gw_chain_sensor_index(const gw_chain *c);

@@ -93,6 +93,18 @@ static void track_front(run_state *st, double t, const double *y)
     }
 }
 
+/* Momentum toward the wall of the beads and the sensor body, kg m/s. */
+static double momentum(const gw_chain *c, const double *y)
+{
+    double q = 0;
+    for (int i = 0; i < gw_chain_get_params(c)->n; i++)
+        q += gw_chain_bead_mass(c, i) * y[2 * i + 1];
+    long is = gw_chain_sensor_index(c);
+    if (is >= 0)
+        q += gw_chain_get_params(c)->sensor.mass * y[is + 1];
+    return q;
+}
+
 static int observe(run_state *st, double t, const double *y, int is_event)
 {
     gw_chain_result *r = st->r;
@@ -609,6 +621,7 @@ int gw_chain_collide(const gw_chain *c, const gw_chain_run_opts *o, gw_chain_res
     gw_chain_energy e;
     gw_chain_energy_of(c, y, &e);
     r->e0 = e.total;
+    double p0 = momentum(c, y);
     if ((rc = gw_solver_create(type, sys, &sp, 0.0, y, &s, err)) != GW_OK)
         goto done;
     double t = 0.0;
@@ -622,6 +635,17 @@ int gw_chain_collide(const gw_chain *c, const gw_chain_run_opts *o, gw_chain_res
     rc = gw_solver_drive(s, &drive, &t, y, roots, err);
 stopped:
     r->t_end = t;
+    /* The wall's impulse from the momentum balance d/dt (sum m_i v_i + M_s v_s) =
+     * M g - F (F the force the sensor reads), exact where nothing else acts: the
+     * trapezoid over the observations moved with --dt-out (the mean wall force of
+     * wavespeed's group speed by 2.7e-5 at 2e-6 s, 7.6e-4 at 1e-5 s). With guide
+     * friction, whose impulse is not tracked, the trapezoid stays. */
+    if (!(p->guide.coulomb > 0 || p->guide.viscous > 0)) {
+        double mg = 0;
+        for (int i = 0; i < n; i++)
+            mg += gw_chain_bead_mass(c, i) * p->gravity;
+        r->impulse = p0 - momentum(c, y) + mg * t;
+    }
     r->wall_done = r->converged || wall_finished(&st, y, st.dtol);
     finish_result(&st, y);
     gw_solver_get_stats(s, &r->stats);

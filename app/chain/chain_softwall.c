@@ -161,6 +161,8 @@ int gw_cmd_softwall(int argc, char **argv)
             cJSON_AddNumberToObject(e, "n_d_fixed_point", so.n_d_fixed_point[w]);
             cJSON_AddNumberToObject(e, "f_plateau", so.f_plateau[w]);
             cJSON_AddNumberToObject(e, "tau_max_at_n_d", so.tau_max_at_n_d[w]);
+            /* the first size, when the plateau reaches back to it (N_d <= it; n_d null) */
+            cJSON_AddNumberToObject(e, "n_d_at_most", so.n_d_at_most[w]);
             cJSON_AddBoolToObject(e, "saturated", so.saturated[w]);
         }
         if (use_sheets || c.sheet) { /* --sheets, or one --sheet: model against measured */
@@ -196,7 +198,9 @@ int gw_cmd_softwall(int argc, char **argv)
                 if (use_sheets)
                     snprintf(meas, sizeof meas, "%g +- %g", gw_sheet_get(w)->n_d, gw_sheet_get(w)->n_d_err);
                 char nd[32], np[32];
-                if (so.saturated[w])
+                if (so.saturated[w] && isnan(so.n_d[w]))
+                    snprintf(nd, sizeof nd, "<= %d", (int)so.n_d_at_most[w]);
+                else if (so.saturated[w])
                     snprintf(nd, sizeof nd, "%d", (int)so.n_d[w]);
                 else
                     snprintf(nd, sizeof nd, "not in %ld", b);

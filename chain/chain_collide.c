@@ -3,11 +3,11 @@
  * 1.4).
  *
  * The integration stops at every root of the chain's event functions (wall
- * contact x_0 = 0, contact overlaps d_i = 0, wall-bead velocity v_0 = 0) and
+ * contact x_0 = 0, contact overlaps d_i = 0, the wall force's rate, v_0 undamped) and
  * restarts the solver there, so contact times are exact and the methods keep
  * their order between contact changes. Observables:
- *   f_max, tau_max  largest wall force and its time (maxima of F_0 are the roots
- *                   v_0 = 0 with x_0 > 0; samples catch the damped case)
+ *   f_max, tau_max  largest wall force and its time (its maxima are the falling
+ *                   zeros of the force-rate root, chain_force_rate, with x_0 > 0)
  *   tau_n           last time bead 1 leaves the wall (x_0 -> 0 from above)
  *   period          mean spacing of successive wall-force maxima
  *   eps_eff (F.7), eps_col (F.30), E_rel/E_K at tau_n (F.20, mass-weighted)
@@ -205,8 +205,8 @@ static void on_roots(run_state *st, double t, const double *y, const int *roots)
     reconcile(st, t, y);
     if (wall_opened || (wall_was_closed && !st->closed[0]))
         on_wall_open(st, t, y);
-    int im = gw_chain_force_max_root(st->c); /* v_0 (or v_s) falls through 0: force maximum */
-    if (roots[im] < 0 && gw_chain_wall_gap(st->c, y) > 0) {
+    int im = gw_chain_force_max_root(st->c); /* dF/dt falls through 0: force maximum */
+    if (roots[im] < 0 && gw_chain_wall_gap(st->c, y) > 0 && gw_chain_wall_force(st->c, y) > 0) {
         r->n_events++;
         if (r->n_maxima == 0)
             st->t_first_max = t;

@@ -21,6 +21,8 @@
 #    trapezoid over the observations: 45.23997 N by default, 45.2054 at --dt-out
 #    1e-5. Now from the momentum balance: the same at every --dt-out, and equal to
 #    sum m (v_imp - v(tau_N)) / tau_N from chain's own velocities.
+#  5 wavespeed's text printed the period's exponent without its standard error
+#    (beta -0.07602 under damping, where the JSON has +- 0.04254).
 set -u
 GW=$1
 SRC=${2:-.}
@@ -140,6 +142,22 @@ j = sum(m * (c["v_imp"] - v) for v in c["velocities_at_tau_n"])  # the wall's im
 assert abs(f[0] / (j / c["tau_n"]) - 1) <= 1e-9, (f[0], j / c["tau_n"])
 print(f"{f[0]:.10g} N")
 PYEOF
+
+# ---- 5: wavespeed's text gives the period exponent's standard error, as its JSON ----
+w5="wavespeed --vimp 0.1,0.2,0.4,0.8 --n 10:12 --damping kk --gamma 20000 --quiet"
+if "$GW" $w5 >"$tmp/w5.txt" 2>"$tmp/err" && "$GW" $w5 --json >"$tmp/w5.json" 2>>"$tmp/err"; then
+    $PY - "$tmp/w5.txt" "$tmp/w5.json" <<'PYEOF' >"$tmp/out5" 2>&1 && ok "5: $w5: $(cat "$tmp/out5")" || ko "5: $(cat "$tmp/out5")"
+import json, re, sys
+t = open(sys.argv[1]).read(); d = json.load(open(sys.argv[2]))
+m = re.search(r"period: C2 ([0-9.]+), beta (-?[0-9.]+) \+- ([0-9.]+);", t)
+assert m, t
+assert d["beta_period_err"] > 0.005, d["beta_period_err"]  # damping: not the power law's -0.2
+assert [float(x) for x in m.groups()] == [round(d["c2"], 4), round(d["beta_period"], 5), round(d["beta_period_err"], 5)], (m.groups(), d["c2"], d["beta_period"], d["beta_period_err"])
+print(m.group(0))
+PYEOF
+else
+    ko "5: $w5: $(cat "$tmp/err")"
+fi
 
 echo "test_hostile_chain_outcomes: $passes passed, $fails failed"
 [ $fails -eq 0 ]

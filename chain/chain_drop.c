@@ -526,3 +526,11 @@ void gw_chain_drop_result_free(gw_chain_drop_result *r)
     r->impacts = NULL;
     r->n_peaks = r->n_impacts = 0;
 }
+
+int gw_chain_drop_impact_rises(const gw_chain_drop_result *r)
+{
+    int rises = 0;
+    for (int j = 1; j < r->n_impacts; j++)
+        rises += r->impacts[j].f_max > r->impacts[j - 1].f_max * (1.0 + GW_CHAIN_DROP_RISE_REL);
+    return rises;
+}

@@ -368,7 +368,9 @@ int chain_sensor_steps_check(const gw_chain_params *p, const gw_solver_type *typ
 
 /* Bytes a run of column p allocates, by what gw_chain_create, gw_chain_collide
  * (or the drop) and the backend hold: the model's and the result's per-bead
- * arrays (about 14 doubles a bead), the solver's vectors over the state (dim =
+ * arrays (about 14 doubles a bead; the force-rate root's scratch of 2 dim doubles,
+ * touched only by the general model's central difference, is within the margin
+ * the measured sizes below leave), the solver's vectors over the state (dim =
  * 2n + a few: rk4 10 of them with its root values, cvode and arkode about 24 with
  * their histories and stages, arkode's implicit methods 34) and, for the implicit
  * methods (cvode bdf, arkode dirk and imex), three band matrices of dim x (smu +

@@ -27,6 +27,9 @@
 #    a lone elastic bead (drop --n 1 --t-max 0.3) had 4 rises in 5 equal impacts
 #    under cvode, none under rk4 and arkode. A rise is now above 1e-6 of the
 #    previous peak: none for any backend; the real rises of --n 3 still counted.
+#  7 softwall --sheets --n 3:12 printed the first size's tau_max under the heading
+#    tau_max(1) (17.6 us for none: tau_max(3)), where its JSON has null, and "nan"
+#    where the model has no N_d.
 set -u
 GW=$1
 SRC=${2:-.}
@@ -191,6 +194,23 @@ print(f"{rises} rises in {len(f)} impacts")
 PYEOF
 else
     ko "6: drop --n 3: $(cat "$tmp/err")"
+fi
+
+# ---- 7: softwall --sheets' text prints tau_max(1) only where N = 1 was run, as the JSON ----
+if "$GW" softwall --sheets --n 3:12 --tol 0.05 --quiet >"$tmp/s7.txt" 2>"$tmp/err" &&
+    "$GW" softwall --sheets --n 3:12 --tol 0.05 --quiet --json >"$tmp/s7.json" 2>>"$tmp/err"; then
+    $PY - "$tmp/s7.txt" "$tmp/s7.json" <<'PYEOF' >"$tmp/out7" 2>&1 && ok "7: softwall --sheets --n 3:12: no tau_max(1) where N = 1 was not run, no nan" || ko "7: $(cat "$tmp/out7")"
+import json, sys
+t = open(sys.argv[1]).read(); d = json.load(open(sys.argv[2]))
+assert "nan" not in t, t
+rows = {l.split()[0]: l for l in t.splitlines()[2:] if l.strip()}
+for s in d["sheets"]:
+    assert s["tau_max_1_model"] is None, s["name"]
+    # the tau_max(1) column: "-" before " / measured"
+    assert rows[s["name"]].split("N")[1].split()[3:5] == ["-", "/"], rows[s["name"]]
+PYEOF
+else
+    ko "7: softwall --sheets: $(cat "$tmp/err")"
 fi
 
 echo "test_hostile_chain_outcomes: $passes passed, $fails failed"

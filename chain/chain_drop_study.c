@@ -92,7 +92,7 @@ static const gw_param drop_fields[] = {
     RI("n_peaks", r.n_peaks, "located wall-force maxima at or above the threshold"),
     RD("f_max", r.f_max, "N", "largest peak of the run"),
     RD("t_fmax", r.t_fmax, "s", "its time"),
-    RI("impact_rises", impact_rises, "impacts whose peak exceeds the previous impact's"),
+    RI("impact_rises", impact_rises, "impacts whose peak exceeds the previous impact's by more than 1e-6 of it"),
     RI("impacts_monotone", impacts_monotone, "1: no impact_rises"),
     {.name = "wall_peaks", .type = GW_PARAM_DARRAY, .offset = offsetof(O, wall_peaks), .unit = "s, N",
      .rows = "n_peaks", .cols = "2", .choices = "t,f", .help = "every peak: time (s) and force (N) [peak, column]"},
@@ -267,8 +267,7 @@ static int fill_tables(gw_chain_drop_outcome *o, gw_err *err)
     const gw_chain_drop_result *r = &o->r;
     const int np = r->n_peaks, ni = r->n_impacts, n = r->n;
     o->n_first = r->first.n;
-    for (int j = 1; j < ni; j++)
-        o->impact_rises += r->impacts[j].f_max > r->impacts[j - 1].f_max;
+    o->impact_rises = gw_chain_drop_impact_rises(r);
     o->impacts_monotone = o->impact_rises == 0;
     o->e_kinetic = r->e_end.kinetic;
     o->e_elastic = r->e_end.elastic;

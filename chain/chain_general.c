@@ -158,15 +158,14 @@ int chain_general_rhs_im(double t, const double *y, double *yd, void *P)
 
 int chain_general_roots(double t, const double *y, double *g, void *P)
 {
-    (void)t;
     const gw_chain *c = P;
     const int n = c->n;
     g[0] = gw_chain_wall_gap(c, y);
     for (int i = 0; i < n - 1; i++)
         g[1 + i] = y[2 * i + 2] - y[2 * i];
-    g[n] = wall_overlap_rate(c, y);
+    g[n] = c->i_sens >= 0 ? wall_overlap_rate(c, y) : chain_force_rate(c, t, y);
     if (c->i_sens >= 0)
-        g[n + 1] = y[c->i_sens + 1];
+        g[n + 1] = chain_force_rate(c, t, y);
     return 0;
 }
 

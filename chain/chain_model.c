@@ -308,8 +308,61 @@ static int chain_roots(double t, const double *y, double *g, void *P)
     g[0] = y[0];
     for (int i = 0; i < n - 1; i++)
         g[1 + i] = y[2 * i + 2] - y[2 * i];
-    g[n] = y[1];
+    g[n] = c->p.damping == GW_DAMP_NONE ? y[1] : chain_force_rate(c, t, y);
     return 0;
+}
+
+/* The force-maximum root. Where F is a function of the overlap alone (the
+ * undamped Hertz wall, an elastic, layered or plastic wall law) its maxima are
+ * the overlap's: R = D' (v_0 for the default wall). A sensor body without
+ * damping reads k_s x_s: R = v_s. Otherwise F also depends on the rate or on
+ * internal states, and a zero of D' is not where F peaks (Kuwabara-Kono with
+ * e = 0.9: the force at D' = 0 is 0.3 % below the peak, which the samples then
+ * caught only as closely as --dt-out allowed):
+ *   Hunt-Crossley  F = K x^(3/2) (1 + (3/2) alpha v)
+ *       R = dF/dt / sqrt(x) = (3/2) K [v (1 + (3/2) alpha v) + alpha x a]
+ *   Kuwabara-Kono  F = K x^(3/2) + gamma_w x^(1/2) v
+ *       R = sqrt(x) dF/dt = x ((3/2) K v + gamma_w a) + gamma_w v^2 / 2
+ * (x = x_0 > 0, else its limit at 0+, v = v_0, a = dv_0/dt from the equations
+ * of motion), and for the general model (a damped sensor body, a viscoelastic
+ * wall, a damped wall law) R = (F(y + h y') - F(y - h y')) / (2h), the
+ * derivative along the motion, with h = 1e-6 of the overlap scale over v_imp
+ * (a contact time's 1e-6: truncation and rounding both below 1e-10 of the
+ * contact time in the root's position; F_max is second order in it). Where F
+ * is clamped at 0 on both sides (the end of a damped contact) R = D', which has
+ * the same sign there and no stretch of zeros for the root finders. */
+double chain_force_rate(const gw_chain *c, double t, const double *y)
+{
+    if (!c->general) {
+        if (c->p.damping == GW_DAMP_NONE)
+            return y[1];
+        double x = y[0] > 0 ? y[0] : 0.0, v = y[1], pd = 0.0, fw = 0.0, f1 = 0.0;
+        if (x > 0)
+            fw = damped_force(c, c->kwall, c->gwall, x, v, &pd);
+        if (c->n > 1 && y[2] - y[0] > 0)
+            f1 = damped_force(c, c->kc[0], c->gam[0], y[2] - y[0], y[3] - y[1], &pd);
+        double a = (f1 - fw) * c->minv[0] + c->p.gravity;
+        if (c->p.damping == GW_DAMP_KUWABARA_KONO)
+            return x * (1.5 * c->kwall * v + c->gwall * a) + 0.5 * c->gwall * v * v;
+        return 1.5 * c->kwall * (v * (1.0 + 1.5 * c->p.alpha * v) + c->p.alpha * x * a);
+    }
+    if (c->i_sens >= 0 && !(c->p.sensor.damping > 0))
+        return y[c->i_sens + 1];
+    if (c->i_sens < 0 && c->wl.narms == 0 && (c->wl.plastic || c->wl.layer || c->p.damping == GW_DAMP_NONE))
+        return gw_chain_wall_gap_rate(c, y);
+    const long dim = c->sys.dim;
+    double *yd = c->work, *yp = c->work + dim;
+    chain_general_rhs(t, y, yd, (void *)c);
+    double h = 1e-6 * c->scale[0] / c->scale[1];
+    for (long i = 0; i < dim; i++)
+        yp[i] = y[i] + h * yd[i];
+    double fp = gw_chain_wall_force(c, yp);
+    for (long i = 0; i < dim; i++)
+        yp[i] = y[i] - h * yd[i];
+    double fm = gw_chain_wall_force(c, yp);
+    if (fp == 0 && fm == 0)
+        return gw_chain_wall_gap_rate(c, y);
+    return (fp - fm) / (2.0 * h);
 }
 
 gw_chain_params gw_chain_params_default(void)
@@ -518,8 +571,9 @@ int gw_chain_create(const gw_chain_params *p, gw_chain **out, gw_err *err)
     if (c) {
         c->m = malloc((size_t)(4 * n) * sizeof *c->m);
         c->scale = malloc((size_t)dim * sizeof *c->scale);
+        c->work = malloc(2 * (size_t)dim * sizeof *c->work);
     }
-    if (!c || !c->m || !c->scale) {
+    if (!c || !c->m || !c->scale || !c->work) {
         gw_chain_free(c);
         return gw_err_set(err, GW_ENOMEM, "chain: out of memory for %d beads", n);
     }
@@ -600,6 +654,7 @@ void gw_chain_free(gw_chain *c)
         return;
     free(c->m);
     free(c->scale);
+    free(c->work);
     free(c);
 }
 

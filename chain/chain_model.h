@@ -23,6 +23,7 @@ struct gw_chain {
     chain_wall_law wl;
     long i_diss, i_work, i_sens, i_dmax, i_q; /* state indices, -1 when absent */
     double vreg;                 /* Coulomb regularisation speed, m/s */
+    double *work;                /* [2 dim] scratch of the force-rate root (chain_force_rate) */
     double dtrack;               /* plastic wall: D_max follows D (dD_max/dt = D' s(x),
                                     s = x^2 (3 - 2x), x = (D - D_max + dtrack)/dtrack
                                     clipped to [0, 1]) so that the switch between
@@ -52,6 +53,11 @@ int chain_general_rhs(double t, const double *y, double *yd, void *P);
 int chain_general_rhs_ex(double t, const double *y, double *yd, void *P);
 int chain_general_rhs_im(double t, const double *y, double *yd, void *P);
 int chain_general_roots(double t, const double *y, double *g, void *P);
+/* A function of the state with the sign of dF/dt, F the force the sensor reads
+ * (gw_chain_wall_force), continuous through contact changes: the chain's root
+ * gw_chain_force_max_root, whose falling zeros with the wall contact closed are
+ * the maxima of F. See chain_model.c. */
+double chain_force_rate(const gw_chain *c, double t, const double *y);
 void chain_general_energy(const gw_chain *c, const double *y, gw_chain_energy *e);
 
 /* cvode and arkode follow a sensor body's oscillation (omega = sqrt(k_s/M)) at 2

@@ -17,7 +17,8 @@
  *   P = C2 (m/k)^(2/5) v_imp^(-1/5) (F.15).
  * Soft wall: K_c = (c_tau/4)^(5/2) (5k/4) (F.22), rigid if K > K_c; N_d the first
  *   N from which F_max stays within tol of the plateau F_max(n_max) (at least
- *   SATURATION_RUN sizes, else not reached); N_d predicted ceil(tau_max(N_d)/T_q)
+ *   SATURATION_RUN sizes, else not reached; from the first size run when it is
+ *   above 1: N_d <= that size, not located); N_d predicted ceil(tau_max(N_d)/T_q)
  *   (F.8) and its fixed point; T_q measured on a steel wall (slope over N = 1..20).
  *   With sheets: each sheet of Table 2 under the sheet law (chain_sheets.c),
  *   model against measured (h = 2.9 mm).
@@ -173,6 +174,8 @@ static const gw_param sw_fields[] = {
     RAT(S, "n_d_fixed_point", n_d_fixed_point, "", "nw", NULL, "smallest N >= ceil(tau_max(N)/T_q) [wall]"),
     RAT(S, "f_plateau", f_plateau, "N", "nw", NULL, "F_max of the longest column [wall]"),
     RAT(S, "tau_max_at_n_d", tau_max_at_n_d, "s", "nw", NULL, "tau_max at N_d [wall]"),
+    RAT(S, "n_d_at_most", n_d_at_most, "", "nw", NULL,
+        "the first size run, when F_max is on its plateau from there (N_d <= it, not located: n_d NaN) [wall]"),
     {.name = "sheet_table", .type = GW_PARAM_DARRAY, .offset = offsetof(S, sheet_table), .unit = "SI",
      .rows = "nsheet", .cols = "25", .choices = GW_SOFTWALL_SHEET_COLS,
      .help = "model against measured per sheet (s, N, m, N/m^1.5; NaN: not defined) [sheet, column]"},
@@ -388,27 +391,36 @@ int gw_chain_wavespeed_run(const gw_chain_wavespeed_setup *s, gw_progress_fn pro
 /* ---- soft wall ---- */
 
 typedef struct sw_result {
-    int n_d;      /* -1: not saturated within the sizes run */
+    int n_d;      /* -1: not saturated within the sizes run, or not located (at_most) */
     int n_d_pred; /* (F.8) at the measured N_d, -1 without N_d */
-    int n_d_fix;  /* smallest N >= ceil(tau_max(N)/T_q), -1 if none */
+    int n_d_fix;  /* smallest N >= ceil(tau_max(N)/T_q), -1 if none or if n_lo > 1 meets it */
+    int at_most;  /* n_lo > 1 when the plateau reaches back to it: N_d <= n_lo, -1 otherwise */
     double plateau;
 } sw_result;
 
 static sw_result analyse(const gw_chain_result *r, int n_lo, int n_hi, double tol, double t_q)
 {
-    sw_result s = {n_hi, -1, -1, r[n_hi - n_lo].f_max};
+    sw_result s = {n_hi, -1, -1, -1, r[n_hi - n_lo].f_max};
     for (int n = n_hi; n >= n_lo; n--) {
         if (fabs(r[n - n_lo].f_max - s.plateau) > tol * s.plateau)
             break;
         s.n_d = n;
     }
-    if (n_hi - s.n_d + 1 < SATURATION_RUN && s.n_d > n_lo)
+    /* A plateau that reaches back to n_lo = 1 is N_d = 1 (no column is shorter);
+     * one that reaches back to n_lo > 1 began at n_lo or before it, among sizes
+     * not run: N_d <= n_lo is all they tell (softwall --kwall 1e9 --n 10:30 said
+     * N_d = 10, and --n 1:30 finds 7) */
+    if (n_hi - s.n_d + 1 < SATURATION_RUN && (s.n_d > n_lo || n_lo > 1))
         s.n_d = -1;
+    else if (s.n_d == n_lo && n_lo > 1) {
+        s.at_most = n_lo;
+        s.n_d = -1;
+    }
     if (s.n_d > 0)
         s.n_d_pred = (int)ceil(r[s.n_d - n_lo].tau_max / t_q - 1e-9);
     for (int n = n_lo; n <= n_hi; n++)
         if (n >= (int)ceil(r[n - n_lo].tau_max / t_q - 1e-9)) {
-            s.n_d_fix = n;
+            s.n_d_fix = n > n_lo || n_lo == 1 ? n : -1; /* at n_lo > 1: smallest among those run only */
             break;
         }
     return s;
@@ -475,7 +487,7 @@ static int sw_alloc(gw_chain_softwall_outcome *o, int nw, int nn, int nsheet, gw
     o->nn = nn;
     o->ncase = nw * nn;
     o->nsheet = nsheet;
-    o->n = calloc((size_t)nn + (size_t)nw * (6 + 6 * (size_t)nn), sizeof *o->n);
+    o->n = calloc((size_t)nn + (size_t)nw * (7 + 6 * (size_t)nn), sizeof *o->n);
     o->rigid = calloc(2 * (size_t)nw, sizeof *o->rigid);
     o->sheet_table = calloc((size_t)nsheet * GW_SOFTWALL_NSHEET_COLS + 1, sizeof *o->sheet_table);
     o->sheet_names = calloc((size_t)nsheet * 16 + 1, 1);
@@ -485,8 +497,8 @@ static int sw_alloc(gw_chain_softwall_outcome *o, int nw, int nn, int nsheet, gw
     o->saturated = o->rigid + nw;
     double *b = o->n + nn;
     double **per_w[] = {&o->kwall, &o->n_d, &o->n_d_predicted, &o->n_d_fixed_point, &o->f_plateau,
-                        &o->tau_max_at_n_d};
-    for (int i = 0; i < 6; i++, b += nw)
+                        &o->tau_max_at_n_d, &o->n_d_at_most};
+    for (int i = 0; i < 7; i++, b += nw)
         *per_w[i] = b;
     double **per_case[] = {&o->f_max, &o->tau_max, &o->t_max, &o->dt_out, &o->dt, &o->dt_max};
     for (int i = 0; i < 6; i++, b += o->ncase)
@@ -513,7 +525,8 @@ static void sw_fill(const gw_chain_softwall_setup *s, const gw_chain_resolved *r
             o->dt_max[w * nn + k] = rw[k].run_dt_max;
         }
         o->rigid[w] = o->kwall[w] > o->k_c;
-        o->saturated[w] = sr[w].n_d > 0;
+        o->saturated[w] = sr[w].n_d > 0 || sr[w].at_most > 0;
+        o->n_d_at_most[w] = sr[w].at_most > 0 ? sr[w].at_most : NAN;
         o->n_d[w] = sr[w].n_d > 0 ? sr[w].n_d : NAN;
         o->n_d_predicted[w] = sr[w].n_d_pred > 0 ? sr[w].n_d_pred : NAN;
         o->n_d_fixed_point[w] = sr[w].n_d_fix > 0 ? sr[w].n_d_fix : NAN;

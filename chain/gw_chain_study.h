@@ -290,6 +290,8 @@ typedef struct gw_chain_softwall_outcome {
     double *t_max, *dt_out, *dt, *dt_max; /* [nw * nn] s: each collision, defaults resolved (dt: the
                                              RK4 step, 0 for cvode and arkode) */
     double *n_d, *n_d_predicted, *n_d_fixed_point, *f_plateau, *tau_max_at_n_d; /* [nw]; NaN: none */
+    double *n_d_at_most;        /* [nw]: n_min > 1 when F_max is on its plateau from n_min on, so
+                                   N_d <= n_min and is not located (n_d NaN, saturated 1); NaN otherwise */
     double *sheet_table;        /* [nsheet * GW_SOFTWALL_NSHEET_COLS]; NaN: not defined */
     char *sheet_names, *sheet_materials; /* nsheet items, separated by "," and ";" */
     double wall_time_s;

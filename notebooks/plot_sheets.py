@@ -89,7 +89,7 @@ def load_softwall(data_dir, law, tol):
 
 
 _INT_KEYS = ("n_d_model", "n_d_measured", "n_d_measured_err", "n_d_predicted_f8", "n_d", "n_d_predicted",
-             "n_d_fixed_point")
+             "n_d_fixed_point", "n_d_at_most")
 
 
 def _json_value(k, v):
@@ -118,7 +118,7 @@ def softwall_from_module(r, version):
         w = {"sheet": e["name"], "tau_max_n1_measured": e["tau_max_1_measured"], "n_d_measured": e["n_d_measured"],
              "n_d_measured_err": e["n_d_measured_err"], "wall": "rigid" if r["rigid"][i] else "soft"}
         for k in ("kwall", "f_max", "tau_max", "n_d", "n_d_predicted", "n_d_fixed_point", "f_plateau",
-                  "tau_max_at_n_d"):
+                  "tau_max_at_n_d", "n_d_at_most"):
             w[k] = _json_value(k, r[k][i])
         w["saturated"] = bool(r["saturated"][i])
         walls.append(w)

@@ -90,7 +90,10 @@
 #    failed run reported as bad input: "granwave chain: chain: bead 1 still on
 #    the wall at t_max" (exit 2, naming nothing). An overdamped calibration run
 #    counts as e = 0 in the bracket and the root is checked to give e (to 1e-3):
-#    exit 2 naming --restitution; e = 1e-3 still calibrates (n = 1: e to 1e-9).
+#    exit 2 naming --restitution; e = 1e-3 still calibrates (n = 1: e to 1e-7;
+#    e(gamma) itself scatters by 3e-8 of e there at cvode's 1e-12 tolerances, so
+#    the 1e-9 asserted until the twelfth pass, which moved the run's restarts
+#    (the force maximum is now a root), held by chance: 4.7e-10, now 1.7e-8).
 #  21 the studies over N checked a column's bounds only when its run came:
 #    softwall --solver rk4 --dt 1e-12 ran N = 1 (7e7 steps) for minutes before the
 #    refusal; the largest column at each speed is checked before any run.
@@ -553,7 +556,7 @@ for d in hc kk; do
     refused "chain --restitution 1e-9 --damping $d" '^granwave chain --restitution: e = 1e-09 at 0.3 m/s is not reached: from (alpha|gamma) = .* the bead stays on the wall' \
         chain --n 2 --restitution 1e-9 --damping $d --out "$tmp/o"
     runs "chain --n 1 --restitution 1e-3 --damping $d" "$tmp/r.json" chain --n 1 --restitution 1e-3 --damping $d --json &&
-        jcheck "  one bead rebounds at e = 1e-3 (to 1e-9)" "$tmp/r.json" "abs(j['eps_eff'] - 1e-3) < 1e-12"
+        jcheck "  one bead rebounds at e = 1e-3 (to 1e-7)" "$tmp/r.json" "abs(j['eps_eff'] - 1e-3) < 1e-10"
 done
 refused "drop --restitution 1e-9 --damping hc" '^granwave drop --restitution: e = 1e-09' drop --n 2 --restitution 1e-9 --damping hc --out "$tmp/o"
 

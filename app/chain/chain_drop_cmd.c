@@ -134,15 +134,6 @@ static void contacts_string(const gw_chain_drop_result *r, int j, char *buf)
     buf[r->n] = '\0';
 }
 
-/* Impacts whose largest force exceeds the previous impact's. */
-static int count_rises(const gw_chain_drop_result *r)
-{
-    int rises = 0;
-    for (int j = 1; j < r->n_impacts; j++)
-        rises += r->impacts[j].f_max > r->impacts[j - 1].f_max;
-    return rises;
-}
-
 static cJSON *result_json(const drop_cli *d, const gw_chain_drop_result *r, double wall_ms,
                           char *buf)
 {
@@ -163,7 +154,7 @@ static cJSON *result_json(const drop_cli *d, const gw_chain_drop_result *r, doub
     cJSON_AddNumberToObject(o, "n_peaks", r->n_peaks);
     cJSON_AddNumberToObject(o, "f_max", r->f_max);
     cJSON_AddNumberToObject(o, "t_fmax", r->t_fmax);
-    int rises = count_rises(r);
+    int rises = gw_chain_drop_impact_rises(r);
     cJSON_AddNumberToObject(o, "impact_rises", rises);
     cJSON_AddBoolToObject(o, "impacts_monotone", rises == 0);
     cJSON *imp = cJSON_AddArrayToObject(o, "impacts");
@@ -228,7 +219,7 @@ static void print_text(const drop_cli *d, const gw_chain_drop_result *r)
     printf("  over %.6g ms     %d impacts (%d contact episodes), %d peaks >= %.3g N, "
            "%d impact(s) above the previous one\n",
            r->t_end * 1e3, r->n_impacts, r->n_episodes, r->n_peaks, d->peak_threshold,
-           count_rises(r));
+           gw_chain_drop_impact_rises(r));
     printf("  energy           max relative error %.3g; dissipated %.4g of %.4g J\n",
            r->energy_error, r->e_end.dissipated, r->e0);
     printf("  impact      t (ms)     F_max (N)  cluster  peaks\n");

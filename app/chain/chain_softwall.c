@@ -162,6 +162,8 @@ int gw_cmd_softwall(int argc, char **argv)
             cJSON_AddNumberToObject(e, "n_d_fixed_point", so.n_d_fixed_point[w]);
             cJSON_AddNumberToObject(e, "f_plateau", so.f_plateau[w]);
             cJSON_AddNumberToObject(e, "tau_max_at_n_d", so.tau_max_at_n_d[w]);
+            /* the first size, when the plateau reaches back to it (N_d <= it; n_d null) */
+            cJSON_AddNumberToObject(e, "n_d_at_most", so.n_d_at_most[w]);
             cJSON_AddBoolToObject(e, "saturated", so.saturated[w]);
         }
         if (use_sheets || c.sheet) { /* --sheets, or one --sheet: model against measured */
@@ -197,7 +199,9 @@ int gw_cmd_softwall(int argc, char **argv)
                 if (use_sheets)
                     snprintf(meas, sizeof meas, "%g +- %g", gw_sheet_get(w)->n_d, gw_sheet_get(w)->n_d_err);
                 char nd[32], np[32];
-                if (so.saturated[w])
+                if (so.saturated[w] && isnan(so.n_d[w]))
+                    snprintf(nd, sizeof nd, "<= %d", (int)so.n_d_at_most[w]);
+                else if (so.saturated[w])
                     snprintf(nd, sizeof nd, "%d", (int)so.n_d[w]);
                 else
                     snprintf(nd, sizeof nd, "not in %ld", b);
@@ -208,8 +212,16 @@ int gw_cmd_softwall(int argc, char **argv)
                 char taus[96] = "";
                 if (use_sheets) {
                     const gw_sheet *sh = gw_sheet_get(w);
-                    snprintf(taus, sizeof taus, "  %8.1f / %-8.1f     %8.1f / %.0f", so.tau_max[(size_t)w * per] * 1e6,
-                             sh->tau_max1_us, so.tau_max_at_n_d[w] * 1e6, sh->tau_max_nd_us);
+                    /* tau_max(1) only when N = 1 was run (the JSON's tau_max_1_model): the first
+                     * size's was printed under that name (--n 3:12: 17.6 us for none, tau_max(3));
+                     * "-" where the model gives none (the JSON's null), not "nan" */
+                    char t1[16] = "-", tn[16] = "-";
+                    if (so.n[0] == 1)
+                        snprintf(t1, sizeof t1, "%.1f", so.tau_max[(size_t)w * per] * 1e6);
+                    if (!isnan(so.tau_max_at_n_d[w]))
+                        snprintf(tn, sizeof tn, "%.1f", so.tau_max_at_n_d[w] * 1e6);
+                    snprintf(taus, sizeof taus, "  %8s / %-8.1f     %8s / %.0f", t1, sh->tau_max1_us, tn,
+                             sh->tau_max_nd_us);
                 }
                 printf("  %-14s %11.4g %6s %9s %8s %9.2f N %14s%s\n", use_sheets ? gw_sheet_get(w)->name : c.sheet ? c.sheet : "--kwall",
                        kw[w], so.rigid[w] ? "rigid" : "soft", nd, np, so.f_plateau[w], meas, taus);

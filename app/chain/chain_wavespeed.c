@@ -187,8 +187,11 @@ int gw_cmd_wavespeed(int argc, char **argv)
             if (!isfinite(c2)) /* the period is read on columns of 10 beads and more (ws_velocity) */
                 printf("  period: not measured (at some speed no column of 10 beads or more shows two wall-force "
                        "maxima); ");
+            else if (wo.fitted && isfinite(wo.beta_period_err)) /* its error as the JSON's: damping
+                                                                  moved beta to -0.076 +- 0.043 */
+                printf("  period: C2 %.4f, beta %.5f +- %.5f; ", c2, wo.beta_period, wo.beta_period_err);
             else if (wo.fitted)
-                printf("  period: C2 %.4f, beta %.5f; ", c2, wo.beta_period);
+                printf("  period: C2 %.4f, beta %.5f (no standard error); ", c2, wo.beta_period);
             else
                 printf("  period: C2 %.4f, beta not fitted; ", c2);
             printf("front-speed estimators (tq, front, group/sqrt(3/2)) disagree by up to %.1f %%\n", 100 * worst);

@@ -163,7 +163,8 @@ static int write_h5(const gw_chain_trace *tr, const char *dir, const char *stem,
         return gw_err_set(err, GW_EINVAL, "%s: output path too long", dir);
     int rc = GW_OK;
     /* built in memory, written as one image through gw_afile (gw_h5.h) */
-    hid_t file = gw_h5_mem_create(path, 0);
+    gw_h5_mem mem;
+    hid_t file = gw_h5_mem_create(&mem, path, 0);
     if (file < 0)
         return gw_err_set(err, GW_EIO, "%s: cannot create HDF5 file", path);
     hsize_t d1[1] = {tr->len}, d2[2] = {tr->len, (hsize_t)tr->n};
@@ -189,10 +190,10 @@ static int write_h5(const gw_chain_trace *tr, const char *dir, const char *stem,
         H5Tclose(ts);
     }
     if (rc != GW_OK) {
-        gw_h5_mem_abort(file);
+        gw_h5_mem_abort(&mem);
         return gw_err_set(err, GW_EIO, "%s: HDF5 write failed", path);
     }
-    return gw_h5_mem_write(file, path, err);
+    return gw_h5_mem_write(&mem, path, err);
 }
 #endif
 

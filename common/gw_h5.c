@@ -3,7 +3,6 @@
  * written through gw_afile as one image (gw_h5.h).
  */
 #include <errno.h>
-#include <pthread.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -19,15 +18,9 @@
  * (the peak was twice the file's size) and with the superblock HDF5 writes on
  * a normal close (H5Fget_file_image's copy of a 1.8-format file had its
  * status flags cleared without the checksum recomputed, measured with 1.10.8). */
-typedef struct h5_buf {
-    void *buf;   /* the core driver's buffer (NULL before its first write) */
-    size_t cap;  /* its size (a multiple of the 1 MiB increment) */
-    int keep;    /* 1: H5Fclose hands it back instead of freeing it */
-} h5_buf;
-
 static void *buf_malloc(size_t size, H5FD_file_image_op_t op, void *udata)
 {
-    h5_buf *u = udata;
+    gw_h5_mem *u = udata;
     (void)op;
     void *p = malloc(size ? size : 1);
     if (p && !u->buf)
@@ -43,7 +36,7 @@ static void *buf_memcpy(void *dest, const void *src, size_t size, H5FD_file_imag
 }
 static void *buf_realloc(void *ptr, size_t size, H5FD_file_image_op_t op, void *udata)
 {
-    h5_buf *u = udata;
+    gw_h5_mem *u = udata;
     (void)op;
     void *p = realloc(ptr, size ? size : 1);
     if (p && (ptr == u->buf || !u->buf))
@@ -52,7 +45,7 @@ static void *buf_realloc(void *ptr, size_t size, H5FD_file_image_op_t op, void *
 }
 static herr_t buf_free(void *ptr, H5FD_file_image_op_t op, void *udata)
 {
-    h5_buf *u = udata;
+    gw_h5_mem *u = udata;
     (void)op;
     if (ptr && ptr == u->buf) {
         if (u->keep)
@@ -64,7 +57,7 @@ static herr_t buf_free(void *ptr, H5FD_file_image_op_t op, void *udata)
 }
 static void *udata_same(void *udata)
 {
-    return udata; /* one h5_buf per file, freed by gw_h5_mem_write/abort */
+    return udata; /* the caller's gw_h5_mem */
 }
 static herr_t udata_keep(void *udata)
 {
@@ -72,102 +65,27 @@ static herr_t udata_keep(void *udata)
     return 0;
 }
 
-/* The files open in memory and their buffers (a few at once: one per writer;
- * the file's access list does not give the callbacks' data back: measured,
- * H5Pget_file_image_callbacks on H5Fget_access_plist of such a file returned
- * none). */
-typedef struct h5_open {
-    hid_t file;
-    h5_buf *u;
-} h5_open;
-static h5_open *open_files;
-static size_t open_n, open_cap;
-static pthread_mutex_t open_lock = PTHREAD_MUTEX_INITIALIZER;
-static pthread_once_t open_once = PTHREAD_ONCE_INIT;
-
-/* fork(): the table's lock is taken before the fork and released in the
- * parent; the child, which has only the forking thread, starts a new lock (as
- * the other locks of the library, gw_global.h) */
-static void open_fork_prepare(void)
+hid_t gw_h5_mem_create(gw_h5_mem *m, const char *path, int v18)
 {
-    pthread_mutex_lock(&open_lock);
-}
-static void open_fork_parent(void)
-{
-    pthread_mutex_unlock(&open_lock);
-}
-static void open_fork_child(void)
-{
-    pthread_mutex_init(&open_lock, NULL);
-}
-static void open_atfork(void)
-{
-    pthread_atfork(open_fork_prepare, open_fork_parent, open_fork_child);
-}
-
-static int buf_register(hid_t file, h5_buf *u)
-{
-    int ok = 1;
-    pthread_once(&open_once, open_atfork);
-    pthread_mutex_lock(&open_lock);
-    if (open_n == open_cap) {
-        size_t cap = open_cap ? 2 * open_cap : 8;
-        h5_open *p = realloc(open_files, cap * sizeof *p);
-        if (p)
-            open_files = p, open_cap = cap;
-        else
-            ok = 0;
-    }
-    if (ok)
-        open_files[open_n++] = (h5_open){file, u};
-    pthread_mutex_unlock(&open_lock);
-    return ok;
-}
-
-/* The file's h5_buf, taken out of the table (NULL: not made by gw_h5_mem_create). */
-static h5_buf *buf_take(hid_t file)
-{
-    h5_buf *u = NULL;
-    pthread_mutex_lock(&open_lock);
-    for (size_t k = 0; k < open_n; k++)
-        if (open_files[k].file == file) {
-            u = open_files[k].u;
-            open_files[k] = open_files[--open_n];
-            break;
-        }
-    pthread_mutex_unlock(&open_lock);
-    return u;
-}
-
-hid_t gw_h5_mem_create(const char *path, int v18)
-{
-    h5_buf *u = calloc(1, sizeof *u);
-    hid_t fapl = u ? H5Pcreate(H5P_FILE_ACCESS) : -1;
-    if (fapl < 0) {
-        free(u);
+    memset(m, 0, sizeof *m);
+    m->file = -1;
+    hid_t fapl = H5Pcreate(H5P_FILE_ACCESS);
+    if (fapl < 0)
         return -1;
-    }
-    H5FD_file_image_callbacks_t cb = {buf_malloc, buf_memcpy, buf_realloc, buf_free, udata_same, udata_keep, u};
-    hid_t file = -1;
+    H5FD_file_image_callbacks_t cb = {buf_malloc, buf_memcpy, buf_realloc, buf_free, udata_same, udata_keep, m};
     /* grown 1 MiB at a time; backing_store 0: nothing is written on close */
     if (H5Pset_fapl_core(fapl, (size_t)1 << 20, 0) >= 0 && H5Pset_file_image_callbacks(fapl, &cb) >= 0 &&
         (!v18 || H5Pset_libver_bounds(fapl, H5F_LIBVER_V18, H5F_LIBVER_LATEST) >= 0))
-        file = H5Fcreate(path, H5F_ACC_TRUNC, H5P_DEFAULT, fapl);
+        m->file = H5Fcreate(path, H5F_ACC_TRUNC, H5P_DEFAULT, fapl);
     H5Pclose(fapl);
-    if (file >= 0 && !buf_register(file, u)) {
-        H5Fclose(file);
-        file = -1;
-    }
-    if (file < 0)
-        free(u);
-    return file;
+    return m->file;
 }
 
-void gw_h5_mem_abort(hid_t file)
+void gw_h5_mem_abort(gw_h5_mem *m)
 {
-    h5_buf *u = buf_take(file);
-    H5Fclose(file); /* frees the buffer (keep is 0) */
-    free(u);
+    if (m->file >= 0)
+        H5Fclose(m->file); /* frees the buffer (keep is 0) */
+    m->file = -1;
 }
 
 /* HDF5 reads the image in place: its copies of the buffer (into the file
@@ -177,7 +95,7 @@ void gw_h5_mem_abort(hid_t file)
  * took two more copies of n.) */
 static void *image_same(size_t size, H5FD_file_image_op_t op, void *udata)
 {
-    const h5_buf *u = udata;
+    const gw_h5_mem *u = udata;
     (void)op;
     return size <= u->cap ? u->buf : NULL;
 }
@@ -195,7 +113,7 @@ static herr_t image_keep(void *ptr, H5FD_file_image_op_t op, void *udata)
 /* 1 when HDF5 opens the n-byte image (read-only, in memory, in place). */
 static int image_opens(void *img, size_t n)
 {
-    h5_buf u = {img, n, 1};
+    gw_h5_mem u = {.file = -1, .buf = img, .cap = n, .keep = 1};
     H5FD_file_image_callbacks_t cb = {image_same, buf_memcpy, image_grow, image_keep, udata_same, udata_keep, &u};
     hid_t fapl = H5Pcreate(H5P_FILE_ACCESS);
     hid_t f = -1;
@@ -233,22 +151,21 @@ static size_t stored_eof(const unsigned char *b, size_t cap)
     return base == 0 && eof <= cap ? (size_t)eof : 0;
 }
 
-int gw_h5_mem_write(hid_t file, const char *path, gw_err *err)
+int gw_h5_mem_write(gw_h5_mem *m, const char *path, gw_err *err)
 {
-    h5_buf *u = buf_take(file);
-    if (u)
-        u->keep = 1;
-    H5Fclose(file); /* in memory: closing cannot fail on the disk */
-    const size_t n = u && u->buf ? stored_eof(u->buf, u->cap) : 0;
+    m->keep = 1;
+    H5Fclose(m->file); /* in memory: closing cannot fail on the disk */
+    m->file = -1;
+    const size_t n = m->buf ? stored_eof(m->buf, m->cap) : 0;
     int rc = GW_OK;
     /* the image is written only if HDF5 reads it back as it is */
-    if (n == 0 || !image_opens(u->buf, n))
+    if (n == 0 || !image_opens(m->buf, n))
         rc = gw_err_set(err, GW_EIO, "%s: HDF5 could not make an image of the file that it reads back", path);
     if (rc == GW_OK) {
         gw_afile f;
         if ((rc = gw_afile_open(&f, path, err)) == GW_OK) {
             errno = 0; /* one large write: its own errno (the stream's flush after it has none) */
-            if (fwrite(u->buf, 1, n, f.fp) != n) {
+            if (fwrite(m->buf, 1, n, f.fp) != n) {
                 int e = errno ? errno : EIO;
                 gw_afile_abort(&f);
                 rc = gw_err_set(err, GW_EIO, "%s: write failed: %s", path, strerror(e));
@@ -257,9 +174,8 @@ int gw_h5_mem_write(hid_t file, const char *path, gw_err *err)
             }
         }
     }
-    if (u)
-        free(u->buf);
-    free(u);
+    free(m->buf);
+    m->buf = NULL, m->cap = 0;
     return rc;
 }
 #endif

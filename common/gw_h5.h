@@ -17,16 +17,28 @@
 #if GW_HAVE_HDF5
 #include <hdf5.h>
 
+/* An HDF5 file built in memory: the core driver's buffer is ours (file image
+ * callbacks) and is written as it is after the file's close. The caller holds
+ * the struct, in place, from gw_h5_mem_create to gw_h5_mem_write or
+ * gw_h5_mem_abort (HDF5 keeps its address). */
+typedef struct gw_h5_mem {
+    hid_t file;  /* the open file, -1 once closed */
+    void *buf;   /* the core driver's buffer (NULL before its first write) */
+    size_t cap;  /* its size (a multiple of the 1 MiB increment) */
+    int keep;    /* 1: H5Fclose hands it back instead of freeing it */
+} gw_h5_mem;
+
 /* A new empty HDF5 file in memory, to be written to path (the name is only
  * HDF5's label: nothing is created). v18: the 1.8 file format and later
- * (checksummed metadata). A negative id on failure. */
-hid_t gw_h5_mem_create(const char *path, int v18);
-/* Write the in-memory file to path atomically and close it (closed in every
- * case). GW_EIO naming path and the OS error. Its memory: the file's size once
- * (the core driver's buffer, written as it is after the close), no copy. */
-int gw_h5_mem_write(hid_t file, const char *path, gw_err *err);
+ * (checksummed metadata). m->file, negative on failure (nothing to free). */
+hid_t gw_h5_mem_create(gw_h5_mem *m, const char *path, int v18);
+/* Write the in-memory file to path atomically and close it (closed and freed
+ * in every case). GW_EIO naming path and the OS error. Its memory: the file's
+ * size once (the core driver's buffer, written as it is after the close), no
+ * copy. */
+int gw_h5_mem_write(gw_h5_mem *m, const char *path, gw_err *err);
 /* Close an in-memory file without writing it (an error while building it). */
-void gw_h5_mem_abort(hid_t file);
+void gw_h5_mem_abort(gw_h5_mem *m);
 #endif
 
 #endif

@@ -96,7 +96,8 @@ int gw_layer_impact_write_h5(const gw_layer_impact_result *r, const char *path, 
     void *old_data;
     H5Eget_auto2(H5E_DEFAULT, &old_fn, &old_data);
     H5Eset_auto2(H5E_DEFAULT, NULL, NULL);
-    hid_t file = gw_h5_mem_create(path, 0); /* in memory, written as one image (gw_h5.h) */
+    gw_h5_mem mem;
+    hid_t file = gw_h5_mem_create(&mem, path, 0); /* in memory, written as one image (gw_h5.h) */
     int bad = file < 0;
     if (!bad) {
         bad = put(file, "t", r->t, ns, 0, "s", NULL) ||
@@ -137,10 +138,10 @@ int gw_layer_impact_write_h5(const gw_layer_impact_result *r, const char *path, 
     int rc = GW_OK;
     if (bad) {
         if (file >= 0)
-            gw_h5_mem_abort(file);
+            gw_h5_mem_abort(&mem);
         rc = gw_err_set(err, GW_EIO, "%s: cannot write the HDF5 file", path);
     } else {
-        rc = gw_h5_mem_write(file, path, err); /* fsync, then the rename makes it visible */
+        rc = gw_h5_mem_write(&mem, path, err); /* fsync, then the rename makes it visible */
     }
     H5Eset_auto2(H5E_DEFAULT, old_fn, old_data);
     return rc;

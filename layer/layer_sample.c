@@ -592,7 +592,8 @@ static int write_h5(const gw_layer_sample *s, const char *path, const char *head
     h5_quiet q;
     h5_quiet_on(&q);
     int version = 1, n = s->n;
-    hid_t file = gw_h5_mem_create(path, 1); /* in memory, written as one image (gw_h5.h) */
+    gw_h5_mem mem;
+    hid_t file = gw_h5_mem_create(&mem, path, 1); /* in memory, written as one image (gw_h5.h) */
     int bad = file < 0 || h5_column_write(file, "x", s->x, n) || h5_column_write(file, "y", s->y, n) ||
               h5_column_write(file, "r", s->r, n) || h5_attr_write_str(file, "format", SAMPLE_MAGIC) ||
               h5_attr_write(file, "format_version", H5T_NATIVE_INT, &version) ||
@@ -611,10 +612,10 @@ static int write_h5(const gw_layer_sample *s, const char *path, const char *head
     int rc = GW_OK;
     if (bad) {
         if (file >= 0)
-            gw_h5_mem_abort(file);
+            gw_h5_mem_abort(&mem);
         rc = gw_err_set(err, GW_EIO, "sample '%s': HDF5 write failed%s%s", path, q.why[0] ? ": " : "", q.why);
     } else {
-        rc = gw_h5_mem_write(file, path, err);
+        rc = gw_h5_mem_write(&mem, path, err);
     }
     h5_quiet_off(&q);
     return rc;

@@ -206,6 +206,9 @@ void gw_write_comment(FILE *fp, const char *text);
 int gw_mkdir_p(const char *path, gw_err *err);
 /* Join dir and name into buf (size n); GW_EINVAL if it does not fit. */
 int gw_path_join(char *buf, size_t n, const char *dir, const char *name);
+/* Cut the path in buf (at least 2 bytes) to its directory, in place: "a/b" ->
+ * "a", "/b" -> "/", "b" -> "." (trailing slashes are the caller's). */
+void gw_path_parent(char *buf);
 
 /* Write a string to path atomically. */
 int gw_write_text(const char *path, const char *text, gw_err *err);

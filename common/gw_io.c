@@ -102,12 +102,9 @@ static void remove_stale_temporaries(const char *path, const char *host)
 {
     char dir[4096];
     const char *slash = strrchr(path, '/'), *base = slash ? slash + 1 : path;
-    if (slash && (size_t)(slash - path) < sizeof dir)
-        snprintf(dir, sizeof dir, "%.*s", slash == path ? 1 : (int)(slash - path), path);
-    else if (!slash)
-        snprintf(dir, sizeof dir, ".");
-    else
+    if (snprintf(dir, sizeof dir, "%s", path) >= (int)sizeof dir)
         return;
+    gw_path_parent(dir);
     char prefix[512];
     if (snprintf(prefix, sizeof prefix, "%s.tmp.%s.", base, host) >= (int)sizeof prefix)
         return;
@@ -318,14 +315,8 @@ int gw_outset_check_input(const char *dir, const char *const *names, const char 
         char d[4096];
         if (snprintf(d, sizeof d, "%s", input) >= (int)sizeof d)
             return GW_OK;
-        char *slash = strrchr(d, '/');
-        const char *base = slash ? slash + 1 : input;
-        if (!slash)
-            snprintf(d, sizeof d, ".");
-        else if (slash == d)
-            d[1] = '\0';
-        else
-            *slash = '\0';
+        const char *slash = strrchr(input, '/'), *base = slash ? slash + 1 : input;
+        gw_path_parent(d);
         if (stat(d, &in) != 0 || stat(dir, &st) != 0 || in.st_dev != st.st_dev || in.st_ino != st.st_ino)
             return GW_OK;
         for (int k = 0; names[k]; k++)
@@ -463,6 +454,17 @@ int gw_path_join(char *buf, size_t n, const char *dir, const char *name)
 {
     int w = snprintf(buf, n, "%s/%s", dir, name);
     return (w < 0 || (size_t)w >= n) ? GW_EINVAL : GW_OK;
+}
+
+void gw_path_parent(char *buf)
+{
+    char *slash = strrchr(buf, '/');
+    if (!slash)
+        buf[0] = '.', buf[1] = '\0';
+    else if (slash == buf)
+        buf[1] = '\0';
+    else
+        *slash = '\0';
 }
 
 int gw_write_text(const char *path, const char *text, gw_err *err)
@@ -617,15 +619,8 @@ int gw_out_check(const char *dir, const char *what, gw_err *err)
         }
         while (n > 1 && buf[n - 1] == '/')
             buf[--n] = '\0';
-        char *slash = strrchr(buf, '/');
-        if (!slash) {
-            buf[0] = '.', buf[1] = '\0', n = 1;
-        } else if (slash == buf) {
-            buf[1] = '\0', n = 1;
-        } else {
-            *slash = '\0';
-            n = (size_t)(slash - buf);
-        }
+        gw_path_parent(buf);
+        n = strlen(buf);
     }
 }
 
@@ -648,13 +643,7 @@ int gw_out_file_check(const char *path, const char *what, gw_err *err)
     path = target;
     n = strlen(path);
     memcpy(dir, path, n + 1);
-    char *slash = strrchr(dir, '/');
-    if (!slash)
-        snprintf(dir, sizeof dir, ".");
-    else if (slash == dir)
-        dir[1] = '\0';
-    else
-        *slash = '\0';
+    gw_path_parent(dir);
     /* a file is written into an existing directory (nothing makes its parents) */
     if (stat(dir, &st) != 0)
         return gw_err_set(err, GW_EINVAL, "%s: directory '%s' of '%s': %s", what, dir, path, strerror(errno));

@@ -522,13 +522,7 @@ int gw_stats_out_check(const char *dir, const char *what, gw_err *err)
         size_t n = strlen(d);
         while (n > 1 && d[n - 1] == '/')
             d[--n] = '\0';
-        char *slash = strrchr(d, '/');
-        if (!slash)
-            snprintf(d, sizeof d, ".");
-        else if (slash == d)
-            d[1] = '\0';
-        else
-            *slash = '\0';
+        gw_path_parent(d);
     }
     if (gw_path_join(probe, sizeof probe, d, ".granwave-out-check") != GW_OK)
         return gw_err_set(err, GW_EINVAL, "%s: path too long", what);

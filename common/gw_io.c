@@ -47,6 +47,19 @@ static void sig_release(unsigned char *old, int *masked)
 static void hold_signals(gw_afile *f) { sig_hold(f->oldmask, &f->masked); }
 static void release_signals(gw_afile *f) { sig_release(f->oldmask, &f->masked); }
 
+/* GW_EINVAL for the symbolic link path whose target cannot be used (e: the
+ * errno of resolving it; ENOENT: it leads to nothing), naming the target. */
+static int link_refused(const char *path, const char *what, int e, gw_err *err)
+{
+    char target[4096];
+    ssize_t k = readlink(path, target, sizeof target - 1);
+    target[k > 0 ? k : 0] = '\0';
+    if (e == ENOENT)
+        return gw_err_set(err, GW_EINVAL, "%s: '%s' is a symbolic link to '%s', which does not exist", what, path,
+                          target);
+    return gw_err_set(err, GW_EINVAL, "%s: '%s' is a symbolic link to '%s': %s", what, path, target, strerror(e));
+}
+
 /* The file a write to path replaces: path itself, or the file a symbolic link
  * there leads to (the rename of an atomic write would put a regular file in
  * place of the link and leave its target as it was: layer-make --out LINK).
@@ -61,17 +74,8 @@ static int write_target(const char *path, char *out, size_t n, const char *what,
         return GW_OK;
     }
     char real[PATH_MAX];
-    if (!realpath(path, real)) {
-        const int e = errno;
-        char target[4096];
-        ssize_t k = readlink(path, target, sizeof target - 1);
-        target[k > 0 ? k : 0] = '\0';
-        if (e == ENOENT)
-            return gw_err_set(err, GW_EINVAL, "%s: '%s' is a symbolic link to '%s', which does not exist", what,
-                              path, target);
-        return gw_err_set(err, GW_EINVAL, "%s: '%s' is a symbolic link to '%s': %s", what, path, target,
-                          strerror(e));
-    }
+    if (!realpath(path, real))
+        return link_refused(path, what, errno, err);
     if (strlen(real) >= n)
         return gw_err_set(err, GW_EINVAL, "%s: path too long", real);
     snprintf(out, n, "%s", real);
@@ -610,13 +614,8 @@ int gw_out_check(const char *dir, const char *what, gw_err *err)
             return gw_err_set(err, GW_EINVAL, "%s: '%s': %s", what, buf, strerror(errno));
         /* a name that is a symbolic link to nothing is not a directory still to make:
          * mkdir would refuse it after the run, so refuse it now */
-        if (lstat(buf, &st) == 0 && S_ISLNK(st.st_mode)) {
-            char target[4096];
-            ssize_t k = readlink(buf, target, sizeof target - 1);
-            target[k > 0 ? k : 0] = '\0';
-            return gw_err_set(err, GW_EINVAL, "%s: '%s' is a symbolic link to '%s', which does not exist", what,
-                              buf, target);
-        }
+        if (lstat(buf, &st) == 0 && S_ISLNK(st.st_mode))
+            return link_refused(buf, what, ENOENT, err);
         while (n > 1 && buf[n - 1] == '/')
             buf[--n] = '\0';
         gw_path_parent(buf);

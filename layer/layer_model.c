@@ -525,7 +525,7 @@ static int layer_roots(double t, const double *y, double *g, void *P)
             const double dx = p[0] - L->x_list[2 * i], dy = p[1] - L->x_list[2 * i + 1];
             const double v2 = s[3] * s[3] + s[4] * s[4], a2 = arm[0] * arm[0] + arm[1] * arm[1];
             double hi2 = h0; /* a slow particle (the square root only for fast ones) */
-            if (v2 + s[5] * s[5] * a2 > 0.25 * m02 || v2 > m02) {
+            if (v2 + s[5] * s[5] * a2 > 0.25 * m02) { /* |v| + |w| |arm| > m0 / dt2 implies it */
                 const double sp = sqrt(v2) + fabs(s[5]) * sqrt(a2);
                 if (dt2 * sp > m0) {
                     /* (positive at the rebuild, d = 0: the root is a change of sign) */

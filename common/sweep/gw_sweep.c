@@ -1105,12 +1105,13 @@ int gw_sweep_write_table(const char *dir, const gw_sweep_config *cfg, const gw_s
     int rc = GW_OK;
     char head[96];
     snprintf(head, sizeof head, GW_SWEEP_JOURNAL_HEAD "\n", cfg->hash);
+    const int other = strncmp(buf, head, strlen(head)) != 0;
     if (!rows || !seen) {
         rc = gw_err_set(err, GW_ENOMEM, "sweep: out of memory");
-    } else if (strncmp(buf, head, strlen(head)) != 0 || nr != cfg->ncases) {
+    } else if (other || nr != cfg->ncases) {
         /* the table is of this sweep's journal, every case once: a journal
          * replaced meanwhile gave a table of another sweep's rows, exit 0 */
-        rc = strncmp(buf, head, strlen(head)) != 0
+        rc = other
                  ? gw_err_set(err, GW_EIO, "%s: replaced by another sweep's journal while this sweep ran: no table "
                               "written (this sweep's rows are not in it)", path)
                  : gw_err_set(err, GW_EIO, "%s: lost rows while the sweep ran (%ld of its %ld cases in it): no table "

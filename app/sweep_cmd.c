@@ -124,6 +124,25 @@ static void run_threads(sweep_run *s, long jobs)
 #if GW_HAVE_MPI
 enum { TAG_READY = 1, TAG_ROW = 2, TAG_FAIL = 3, TAG_WORK = 4 };
 
+/* Wait for a request without taking a core: Open MPI's blocking calls (receive,
+ * broadcast, barrier) busy-poll, so a rank waiting on rank 0's journal check or
+ * table write, or on its next case, would spin at 100 % CPU and slow the ranks
+ * sharing its core. Test for about 100 us (a reply to a finished case comes
+ * within that), then sleep, 20 us at first and doubling to 1 ms. */
+static void mpi_idle_wait(MPI_Request *req, MPI_Status *st)
+{
+    int flag = 0;
+    double t0 = gw_clock_ms();
+    long nap = 20000;
+    for (int spins = 0; MPI_Test(req, &flag, st) == MPI_SUCCESS && !flag; spins++) {
+        if (spins < 1000 && gw_clock_ms() - t0 < 0.1)
+            continue;
+        nanosleep(&(struct timespec){.tv_sec = 0, .tv_nsec = nap}, NULL);
+        if (nap < 1000000)
+            nap *= 2;
+    }
+}
+
 static void mpi_master(sweep_run *s, int size)
 {
     char *buf = malloc(ROW_MAX + 16);
@@ -131,12 +150,11 @@ static void mpi_master(sweep_run *s, int size)
     long next = 0;
     while (active > 0 && buf) {
         MPI_Status st;
-        /* Wait without spinning: Open MPI's blocking receive busy-polls, and an
-         * idle master would take a core from the workers (bench/README_layer.md). */
-        int ready = 0;
-        while (MPI_Iprobe(MPI_ANY_SOURCE, MPI_ANY_TAG, MPI_COMM_WORLD, &ready, &st) == MPI_SUCCESS && !ready)
-            nanosleep(&(struct timespec){.tv_sec = 0, .tv_nsec = 1000000}, NULL);
-        MPI_Recv(buf, ROW_MAX + 16, MPI_CHAR, st.MPI_SOURCE, st.MPI_TAG, MPI_COMM_WORLD, &st);
+        /* Wait without spinning (mpi_idle_wait): an idle master would take a
+         * core from the workers (bench/README_layer.md). */
+        MPI_Request req;
+        MPI_Irecv(buf, ROW_MAX + 16, MPI_CHAR, MPI_ANY_SOURCE, MPI_ANY_TAG, MPI_COMM_WORLD, &req);
+        mpi_idle_wait(&req, &st);
         gw_err err = {{0}};
         if (st.MPI_TAG == TAG_ROW) {
             int rc = journal(s, buf, &err);
@@ -167,7 +185,9 @@ static void mpi_worker(sweep_run *s)
     MPI_Send(&dummy, 1, MPI_CHAR, 0, TAG_READY, MPI_COMM_WORLD);
     for (;;) {
         long k;
-        MPI_Recv(&k, 1, MPI_LONG, 0, TAG_WORK, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+        MPI_Request req;
+        MPI_Irecv(&k, 1, MPI_LONG, 0, TAG_WORK, MPI_COMM_WORLD, &req);
+        mpi_idle_wait(&req, MPI_STATUS_IGNORE);
         if (k < 0 || !row)
             break;
         gw_err err = {{0}};
@@ -311,8 +331,11 @@ int gw_cmd_sweep(int argc, char **argv, const gw_sweep_model *const *models, int
                 s.todo[s.ntodo++] = k;
     }
 #if GW_HAVE_MPI
-    if (use_mpi)
-        MPI_Bcast(&code, 1, MPI_INT, 0, MPI_COMM_WORLD);
+    if (use_mpi) { /* the other ranks wait here, idle, while rank 0 checks the journal */
+        MPI_Request req;
+        MPI_Ibcast(&code, 1, MPI_INT, 0, MPI_COMM_WORLD, &req);
+        mpi_idle_wait(&req, MPI_STATUS_IGNORE);
+    }
 #endif
     if (code == 0) {
         s.cfg = &cfg;
@@ -361,8 +384,12 @@ finish:
     free(s.todo);
     gw_sweep_config_free(&cfg);
 #if GW_HAVE_MPI
-    if (use_mpi)
+    if (use_mpi) { /* idle while rank 0 writes the table: MPI_Finalize's own wait spins */
+        MPI_Request req;
+        MPI_Ibarrier(MPI_COMM_WORLD, &req);
+        mpi_idle_wait(&req, MPI_STATUS_IGNORE);
         MPI_Finalize();
+    }
 #endif
     return code;
 }

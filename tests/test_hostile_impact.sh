@@ -10,6 +10,14 @@
 #    takes off at 0.25 s, gave e_n 0.045331 / 0.045333 / 0.045337 / 0.045345 at
 #    dt-out 1e-5 / 2e-5 / 1e-4 / 1e-3. Now every step is dt and the outcome is
 #    the same double at every dt-out that is a multiple of the step.
+#  2 the first contact's opening was read up to the end of the run, which a
+#    decided run reaches at the first sample after the verdict: a block that
+#    did not bounce (0.1 m/s) and still rested on its target at the verdict
+#    (5.35 ms) gave t_contact_open = t_end and dissipated_contact_open 0.510,
+#    0.518 and 0.537 at dt-out 1e-5, 1e-4 and 1e-3, and the true opening (5.53
+#    ms) with --full. The first-contact values are now frozen at the verdict:
+#    the same at every dt-out and with --full, and an opening that had not come
+#    by then is null (it was t_end, also for runs cut by t-max).
 set -u
 GW=$1
 SRC=$2
@@ -55,6 +63,28 @@ same_over_dtout "a chaotic late rebound (R_b = 2 R_m, 5 m/s, take-off at 0.25 s)
     --sample "$tmp/s100.txt" --rb-rm 2 --vi 5 --x 1 --t-max 0.3
 same_over_dtout "a grazing impact on 300 discs (45 deg, take-off at 0.17 s, T_f 0.87 s)" \
     --sample "$S300" --vi 20 --alpha 45 --t-max 1
+
+# --- 2: the first contact is read up to the verdict ---------------------------
+FCK="bounced penetration t_first_contact dissipated_first_contact block_loss_first_contact t_contact_open dissipated_contact_open"
+ref=""; bad=""
+for v in "--dt-out 1e-5" "--dt-out 1e-4" "--dt-out 1e-3" "--full" "--until verdict"; do
+    # shellcheck disable=SC2086
+    "$GW" layer-impact --sample "$tmp/s100.txt" --vi 0.1 --gap 1e-9 --t-max 0.05 $v --json >"$tmp/fc.json" 2>/dev/null ||
+        { bad="$bad exit with $v"; continue; }
+    got=$(vals "$tmp/fc.json" $FCK)
+    [ -z "$ref" ] && ref=$got
+    [ "$got" = "$ref" ] || bad="$bad; $v: $got against $ref"
+done
+[ -z "$bad" ] && ok "2: a block resting on its target (no bounce): the first contact the same at dt-out 1e-5, 1e-4, 1e-3, --full, --until verdict" ||
+    ko "2: first contact of a block that stays:$bad"
+set -- $ref
+[ "$1" = False ] && [ "$6" = None ] && [ "$7" = None ] &&
+    ok "2:   no bounce, and the contact that had not opened by the verdict has no opening (null)" ||
+    ko "2:   bounced $1, t_contact_open $6, dissipated_contact_open $7 (expected False None None)"
+"$GW" layer-impact --sample "$tmp/s100.txt" --vi 0.05 --gap 1e-10 --t-max 0.01 --json >"$tmp/fc.json" 2>/dev/null
+got=$(vals "$tmp/fc.json" bounced t_contact_open t_end)
+[ "$got" = "None None 0.01" ] && ok "2: a run cut by t-max with the block on its target: t_contact_open null, not t_end" ||
+    ko "2: cut run: bounced, t_contact_open, t_end = $got"
 
 echo "$passes passed, $fails failed"
 [ $fails -eq 0 ]

@@ -61,8 +61,8 @@ same_over_dtout() { # WHAT ARGS...: the outcome at dt-out 1e-5, 2e-5, 1e-4, 1e-3
 }
 same_over_dtout "a chaotic late rebound (R_b = 2 R_m, 5 m/s, take-off at 0.25 s)" \
     --sample "$tmp/s100.txt" --rb-rm 2 --vi 5 --x 1 --t-max 0.3
-same_over_dtout "a grazing impact on 300 discs (45 deg, take-off at 0.17 s, T_f 0.87 s)" \
-    --sample "$S300" --vi 20 --alpha 45 --t-max 1
+same_over_dtout "a grazing impact on 300 discs (45 deg, take-off at 0.17 s)" \
+    --sample "$S300" --vi 20 --alpha 45 --t-max 0.3 --until verdict
 
 # --- 2: the first contact is read up to the verdict ---------------------------
 FCK="bounced penetration t_first_contact dissipated_first_contact block_loss_first_contact t_contact_open dissipated_contact_open"

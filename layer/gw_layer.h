@@ -443,7 +443,7 @@ typedef struct gw_layer_impact_result {
                                         (binary analogy B.24-B.28) */
     double contact_angle_deg; /* angle between the incident velocity and the
                                  block-target contact normal, deg (0: head-on) */
-    double t_contact_open;  /* time the block-target contact opened (or t_end), s */
+    double t_contact_open;  /* time the block-target contact opened (NaN: not by the verdict), s */
     double dissipated_contact_open; /* E_d / E_incident then */
     double wave_speed, wave_speed_err;      /* from strain-energy peaks, m/s */
     double wave_speed_kin, wave_speed_kin_err; /* from kinetic-energy peaks */

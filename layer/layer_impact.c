@@ -501,12 +501,16 @@ int gw_layer_impact(const gw_layer_sample *smp, const gw_layer_params *lp0,
      * yb it held the gap (--gap 0.04 at 20 m/s: 0.0571 m against 0.0171 at
      * the default 1e-6 m on a 40-disc sample) */
     layer_outcome_finish(&oc, yb - ip->gap, ip->vi, res->t_end, cut && !layer_outcome_done(&oc), res);
+    /* The first-contact values are frozen at the verdict (layer_outcome.c):
+     * read up to the end of the run, they depended on where it stopped, the
+     * first sample after the verdict. A block that did not bounce and still
+     * rested on its target gave t_contact_open = t_end and
+     * dissipated_contact_open 0.510, 0.518 and 0.537 at --dt-out 1e-5, 1e-4
+     * and 1e-3 (the contact opened at 5.53 ms, after the verdict at 5.35 ms).
+     * A contact that had not opened by then (or by the end of an undecided
+     * run) has no opening: NaN (null), where t_end stood in for it */
     const layer_first_contact *fc = &L->fc;
     double t_open = fc->t_open, ed_open = fc->ed_open;
-    if (isnan(t_open) && fc->n_touch > 0) { /* still touching at the end */
-        t_open = res->t_end;
-        ed_open = res->ledger[res->ns - 1].dissipated;
-    }
     /* undecided (NaN) when fewer than three step ends fell in the contact, so
      * that its smallest block energy is not bracketed */
     double t_min = fc->t_min, kb_min = fc->kb_min, ed_min = fc->ed_min, edb_min = fc->edb_min;

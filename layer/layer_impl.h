@@ -45,9 +45,12 @@ typedef struct layer_probe {
  * still touches that disc, and the contact's opening (the overlap's zero
  * between two evaluations, by linear interpolation). ed: the ledger's
  * dissipation E_d then, edb the block region's part of it (NaN without
- * regions). J, s. */
+ * regions). Frozen at the impact's verdict (layer_watch_first_contact_freeze):
+ * what comes after it depends on where the run stops, the first output sample
+ * after the verdict or t-max with --full. J, s. */
 typedef struct layer_first_contact {
     int target;            /* the disc watched, -1: off */
+    int frozen;            /* the verdict is in: no more updates */
     int n_touch;           /* evaluations that saw it overlapped before it opened */
     double kb_min, t_min, ed_min, edb_min;
     double t_open, ed_open; /* NaN until it opens */
@@ -357,6 +360,8 @@ void layer_watch_roots(gw_layer *L, double t, const double *y, double *g);
 /* Follow the block's first contact with disc target (after gw_layer_watch_block,
  * before gw_layer_start); read L->fc after the run. */
 void layer_watch_first_contact(gw_layer *L, int target);
+/* Stop following it: the values so far are the first contact's (the verdict). */
+void layer_watch_first_contact_freeze(gw_layer *L);
 /* After a solver stop with roots: report the watch roots that fired (in time
  * order) to the watch callback. Returns 1 when a root other than the watch's
  * fired (the run driver then handles the stop as before), 0 otherwise. */

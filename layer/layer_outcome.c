@@ -32,9 +32,10 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "layer_impl.h"
 #include "layer_outcome.h"
 
-void layer_outcome_init(layer_outcome *o, const gw_layer *L, int until, int touching)
+void layer_outcome_init(layer_outcome *o, gw_layer *L, int until, int touching)
 {
     memset(o, 0, sizeof *o);
     o->L = L;
@@ -54,6 +55,7 @@ void layer_outcome_event(void *ctx, const gw_layer_block_event *ev)
             o->t_verdict = ev->t;
             o->leave = *ev;
             gw_layer_block_extremes_get(o->L, &o->at_leave);
+            layer_watch_first_contact_freeze(o->L);
         }
         return;
     }
@@ -69,6 +71,7 @@ void layer_outcome_event(void *ctx, const gw_layer_block_event *ev)
         o->verdict = 0;
         o->t_verdict = ev->t;
         gw_layer_block_extremes_get(o->L, &o->at_end);
+        layer_watch_first_contact_freeze(o->L);
     }
     o->rose = 0;
 }

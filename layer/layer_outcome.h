@@ -8,7 +8,7 @@
 #include "gw_layer.h"
 
 typedef struct layer_outcome {
-    const gw_layer *L;
+    gw_layer *L;          /* its first-contact watch is frozen at the verdict */
     int until;            /* GW_LAYER_UNTIL_* */
     int contact;          /* the block touches a particle or a wall */
     int rose;             /* v_y turned upward while touching, not yet back to zero */
@@ -23,7 +23,7 @@ typedef struct layer_outcome {
 
 /* Start tracking on layer L (block set, before gw_layer_start). The block
  * touches nothing at t = 0 unless touching (gap 0). */
-void layer_outcome_init(layer_outcome *o, const gw_layer *L, int until, int touching);
+void layer_outcome_init(layer_outcome *o, gw_layer *L, int until, int touching);
 
 /* The gw_layer_block_fn to pass to gw_layer_watch_block with ctx = o. */
 void layer_outcome_event(void *ctx, const gw_layer_block_event *ev);

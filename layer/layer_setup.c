@@ -108,7 +108,7 @@ static const gw_param outcome_fields[] = {
     RD("dissipated_first_contact_block", r.dissipated_first_contact_block, "", "the part of it at the block's contacts"),
     RD("t_first_contact", r.t_first_contact, "s", "end of the first contact"),
     RD("contact_angle", r.contact_angle_deg, "deg", "incident velocity to block-target contact normal"),
-    RD("t_contact_open", r.t_contact_open, "s", "block-target contact opening (or t_end)"),
+    RD("t_contact_open", r.t_contact_open, "s", "block-target contact opening (NaN: not by the verdict)"),
     RD("dissipated_contact_open", r.dissipated_contact_open, "", "E_d / E_incident then"),
     RD("wave_speed", r.wave_speed, "m/s", "crown-to-crown speed of the strain-energy peaks"),
     RD("wave_speed_err", r.wave_speed_err, "m/s", "its standard error"),

@@ -59,10 +59,15 @@ void layer_watch_first_contact(gw_layer *L, int target)
 }
 
 /* The first contact at one evaluation of the roots (state y at t). */
+void layer_watch_first_contact_freeze(gw_layer *L)
+{
+    L->fc.frozen = 1;
+}
+
 static void first_contact(gw_layer *L, double t, const double *y)
 {
     layer_first_contact *f = &L->fc;
-    if (!isnan(f->t_open))
+    if (f->frozen || !isnan(f->t_open))
         return;
     const int bb = L->block_body;
     double pb[2], pt[2], arm[2];

@@ -50,7 +50,7 @@ static const gw_param disp_params[] = {
 #define OFF(f) offsetof(gw_chain_dispersion_outcome, f)
 
 static const gw_param disp_fields[] = {
-    RI("column", column, "0: dispersion, 1: column wall-force spectrum (column_n)"),
+    RF("column", column, "0: dispersion, 1: column wall-force spectrum (column_n)"),
     RI("nq", r.nq, "wavenumbers qa = 2 pi j / n (periodic) or pi j / (n + 1) (fixed), j = 1..nq"),
     RI("n_omega", r.n_omega, "frequency bins"),
     RA("q", r.qa, "rad", "nq", NULL, "qa, rad per bead"),

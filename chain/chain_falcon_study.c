@@ -115,7 +115,7 @@ static const gw_param falcon_fields[] = {
     {.name = "nn", .type = GW_PARAM_INT, .offset = OFF(nn), .unit = "", .help = "column sizes"},
     {.name = "ncase", .type = GW_PARAM_INT, .offset = OFF(ncase), .unit = "", .help = "collisions"},
     {.name = "k_c", .type = GW_PARAM_DOUBLE, .offset = OFF(k_c), .unit = "N/m^1.5", .help = "critical wall coefficient K_c (F.22)"},
-    {.name = "rigid", .type = GW_PARAM_INT, .offset = OFF(rigid), .unit = "", .help = "1: K > K_c (rigid wall)"},
+    GW_RESULT_FLAG("rigid", OFF(rigid), "1: K > K_c (rigid wall)"),
     {.name = "accuracy", .type = GW_PARAM_DOUBLE, .offset = OFF(accuracy), .unit = "",
      .help = "the accuracy target the solver was chosen by (0: the solver options as given)"},
     {.name = "wall_time_s", .type = GW_PARAM_DOUBLE, .offset = OFF(wall_time_s), .unit = "s", .help = "wall-clock time of the collisions"},

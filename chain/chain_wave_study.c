@@ -103,8 +103,8 @@ void gw_chain_softwall_setup_clear(gw_chain_softwall_setup *s)
 #define RDT(T, nm, f, un, hl) GW_RESULT_ROW(nm, GW_PARAM_DOUBLE, offsetof(T, f), un, hl)
 #define RIT(T, nm, f, hl) GW_RESULT_ROW(nm, GW_PARAM_INT, offsetof(T, f), "", hl)
 #define RAT(T, nm, f, un, r, c, hl) GW_RESULT_ARRAY(nm, offsetof(T, f), un, r, c, NULL, hl)
-#define RIA(T, nm, f, r, hl) \
-    {.name = nm, .type = GW_PARAM_IARRAY, .offset = offsetof(T, f), .unit = "", .rows = r, .help = hl}
+#define RFA(T, nm, f, r, hl) \
+    {.name = nm, .type = GW_PARAM_FARRAY, .offset = offsetof(T, f), .unit = "", .rows = r, .help = hl}
 
 #define W gw_chain_wavespeed_outcome
 #define WFIT(k, j, nm, un, hl) RDT(W, nm, fits[k][j], un, hl)
@@ -139,7 +139,7 @@ static const gw_param ws_fields[] = {
     RDT(W, "beta_period", beta_period, "", "exponent of P against v_imp (F.15: -1/5)"),
     RDT(W, "beta_period_err", beta_period_err, "", "its standard error"),
     RDT(W, "max_disagreement", max_disagreement, "", "largest relative difference of tq, front, group/sqrt(3/2)"),
-    RIT(W, "fitted", fitted, "1: the power-law fits over v_imp made; 0: one speed, beta, c3, the fits and "
+    GW_RESULT_FLAG("fitted", offsetof(W, fitted), "1: the power-law fits over v_imp made; 0: one speed, beta, c3, the fits and "
                              "beta_period NaN (not fitted)"),
     RDT(W, "front_threshold_fraction", threshold, "", "front threshold / F_max(1)"),
     RIT(W, "n_min", n_min, "smallest column"),
@@ -161,8 +161,8 @@ static const gw_param sw_fields[] = {
     RIT(S, "sheet_law", sheet_law, "0 fitted, 1 hertz, 2 layer, 3 material"),
     RAT(S, "n", n, "", "nn", NULL, "column sizes N"),
     RAT(S, "kwall", kwall, "N/m^1.5", "nw", NULL, "wall coefficient K [wall]"),
-    RIA(S, "rigid", rigid, "nw", "1: K > K_c [wall]"),
-    RIA(S, "saturated", saturated, "nw", "1: F_max reached its plateau within the sizes [wall]"),
+    RFA(S, "rigid", rigid, "nw", "1: K > K_c [wall]"),
+    RFA(S, "saturated", saturated, "nw", "1: F_max reached its plateau within the sizes [wall]"),
     RAT(S, "f_max", f_max, "N", "nw", "nn", "largest wall force [wall, N]"),
     RAT(S, "tau_max", tau_max, "s", "nw", "nn", "time of f_max [wall, N]"),
     RAT(S, "t_max", t_max, "s", "nw", "nn", "time limit of each collision [wall, N]"),

@@ -182,12 +182,9 @@ _IMPACT_INTS = ("n_peaks", "cluster")
 
 def drop(*, progress=None, **kwargs):
     r = _study("drop").run(kwargs, progress)
-    for k in ("block", "impacts_monotone", "canceled", "cut_first_collision", "open_at_t_max"):
-        r[k] = bool(r[k])
     first = {"n": r.pop("n_first"), "v_imp": r["v_imp"]}
     for k in [k for k in r if k.startswith("first_")]:
         first[k[len("first_"):]] = r.pop(k)
-    first["converged"] = bool(first["converged"])
     r["first_collision"] = first
     r["energy"] = {"e0": r.pop("e0")}
     for k in ("kinetic", "elastic", "gravity", "dissipated", "total"):

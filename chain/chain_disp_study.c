@@ -57,7 +57,7 @@ static const gw_param disp_fields[] = {
     RA("omega_ridge", r.omega_ridge, "rad/s", "nq", NULL, "frequency of maximum power"),
     RA("omega_theory", r.omega_theory, "rad/s", "nq", NULL, "2 sqrt(kappa/m) |sin(qa/2)| (1.6)"),
     RA("ridge_power", r.ridge_power, "m^2/s^2", "nq", NULL, "power at the ridge"),
-    {.name = "resolved", .type = GW_PARAM_IARRAY, .offset = OFF(r.resolved), .unit = "", .rows = "nq",
+    {.name = "resolved", .type = GW_PARAM_FARRAY, .offset = OFF(r.resolved), .unit = "", .rows = "nq",
      .help = "1: the ridge counts (min-bins)"},
     RA("power", r.power, "m^2/s^2", "nq", "n_omega", "|V(q, omega)|^2 [q, omega bin]"),
     RD("d_omega", r.d_omega, "rad/s", "bin spacing"),

@@ -240,7 +240,7 @@ static cJSON *disp_json(const gw_chain_disp_params *p, const gw_chain_disp_resul
     cJSON_AddItemToObject(o, "q", gw_json_doubles(r->qa, r->nq));
     cJSON_AddItemToObject(o, "omega_ridge", gw_json_doubles(r->omega_ridge, r->nq));
     cJSON_AddItemToObject(o, "omega_theory", gw_json_doubles(r->omega_theory, r->nq));
-    cJSON_AddItemToObject(o, "resolved", gw_json_ints(r->resolved, r->nq));
+    cJSON_AddItemToObject(o, "resolved", gw_json_bools(r->resolved, r->nq)); /* a flag per q, as every flag */
     cJSON_AddNumberToObject(o, "steps", (double)r->stats.steps);
     cJSON_AddNumberToObject(o, "rhs_evals", (double)r->stats.rhs_evals);
     cJSON_AddNumberToObject(o, "integrate_ms", r->integrate_ms);

@@ -1,0 +1,121 @@
+"""The thirteenth hostile pass, one run seen through every output form: the
+Python module's results against the program's --json for the same case.
+
+Yes/no results came back as ints (1, 0, and -1 for an undecided bounce) where
+the JSON has true, false and null: json.dumps of a result differed from the
+program's, and `r.bounced is None` never held. Every flag row of every
+result table is now a bool (None: undecided), every flag array a bool array;
+each test below fails on the ints.
+"""
+import json
+import subprocess
+
+import numpy as np
+import pytest
+
+import granwave
+from granwave import _core
+
+from conftest import run_cli
+
+STUDIES = ("chain", "falcon", "wavespeed", "softwall", "dispersion", "drop", "layer-make", "layer-impact",
+           "layer-stats")
+
+
+def _flag_rows(study):
+    st = _core.Study(study)
+    return ([f.name for f in st.fields if f.type == _core.FLAG],
+            [f.name for f in st.fields if f.type == _core.FARRAY])
+
+
+def test_every_yes_no_result_is_declared_a_flag():
+    """The result rows whose help reads "1: ..." (a yes/no) are flag rows, so
+    that the module reads them as bools: a new row declared an int would come
+    back as 0/1 again."""
+    for study in STUDIES:
+        st = _core.Study(study)
+        for f in st.fields:
+            if f.type in (_core.INT, _core.IARRAY) and f.help.startswith("1:"):
+                pytest.fail(f"{study}: result {f.name} ('{f.help}') is an int, not a flag")
+            if f.type in (_core.INT, _core.IARRAY) and "first collision: 1 =" in f.help:
+                pytest.fail(f"{study}: result {f.name} ('{f.help}') is an int, not a flag")
+    flags = {s: _flag_rows(s) for s in STUDIES}
+    assert {"converged", "wall_done"} <= set(flags["chain"][0])
+    assert "fitted" in flags["wavespeed"][0] and {"rigid", "saturated"} <= set(flags["softwall"][1])
+    assert {"block", "impacts_monotone", "cut_first_collision", "open_at_t_max"} <= set(flags["drop"][0])
+    assert {"bounced", "exact"} <= set(flags["layer-impact"][0]) and "converged" in flags["layer-make"][0]
+
+
+def _same_flags(res, js, keys):
+    for k in keys:
+        assert type(res[k]) is bool and res[k] is js[k], (k, res[k], js[k])
+
+
+def test_chain_flags_as_the_json(program):
+    for kw, args in ((dict(n=7), ("--n", 7)), (dict(n=7, t_max=1.95e-4), ("--n", 7, "--t-max", 1.95e-4))):
+        r = granwave.chain(**kw)
+        j = run_cli(program, "chain", *args)
+        _same_flags(r, j, ("converged", "wall_done"))
+    assert r.converged is False and r.wall_done is True  # the cut run: both values seen
+
+
+def test_wavespeed_fitted_as_the_json(program):
+    for v in ([0.3], [0.1, 0.3]):
+        r = granwave.wavespeed(n=(5, 8), vimp=v)
+        j = run_cli(program, "wavespeed", "--n", "5:8", "--vimp", ",".join(map(str, v)), "--quiet")
+        assert r.fitted is j["fitted"] and r.fitted is (len(v) > 1)
+
+
+def test_softwall_flag_arrays_as_the_json(program):
+    r = granwave.softwall(n=(1, 8))
+    j = run_cli(program, "softwall", "--n", "1:8", "--quiet")
+    assert r.saturated.dtype == bool and r.rigid.dtype == bool
+    assert bool(r.saturated[0]) is j["saturated"] is False
+    assert bool(r.rigid[0]) is (j["wall"] == "rigid") is False
+    r = granwave.softwall(n=(1, 12))
+    assert r.saturated.tolist() == [True]
+
+
+def test_falcon_and_dispersion_flags(program):
+    assert granwave.falcon(n=(1, 3), heights=[]).rigid is True
+    assert granwave.dispersion(column_n=3).column is True
+    d = granwave.dispersion(n=64, f0=10)
+    j = run_cli(program, "dispersion", "--n", 64, "--f0", 10)
+    # resolved was [1, 0, ...] in both (the only flag the JSON gave as ints)
+    assert d.column is False and d.resolved.dtype == bool and d.resolved.tolist() == j["resolved"]
+    assert all(type(x) is bool for x in j["resolved"]) and sum(j["resolved"]) == j["n_resolved"]
+
+
+def test_drop_flags_as_the_json(program):
+    r = granwave.drop(n=3, t_max=0.02)
+    j = run_cli(program, "drop", "--n", 3, "--t-max", 0.02)
+    _same_flags(r, j, ("block", "impacts_monotone", "cut_first_collision", "open_at_t_max"))
+    _same_flags(r.first_collision, j["first_collision"], ("converged", "wall_done"))
+    assert type(r.canceled) is bool and r.canceled is False
+    assert r.impacts["located"].dtype == bool
+    assert r.impacts["located"].tolist() == [i["located"] for i in j["impacts"]]
+
+
+def test_layer_flags_and_undecided_bounce_as_the_json(program, sample, tmp_path):
+    m = granwave.layer_make(n=60, width_rm=16, seed=3, out=str(tmp_path / "s.txt"))
+    jm = json.loads(subprocess.run([program, "layer-make", "--n", "60", "--width-rm", "16", "--seed", "3", "--out",
+                                    str(tmp_path / "t.txt"), "--json"], check=True, capture_output=True,
+                                   text=True).stdout)
+    assert m.converged is jm["converged"] is True
+    r = granwave.layer_impact(sample=str(sample), vi=20)
+    j = run_cli(program, "layer-impact", "--sample", sample, "--vi", 20)
+    assert r.bounced is j["bounced"] and type(r.bounced) is bool and r.exact is False
+    # cut before the verdict: the JSON's null, Python's None (it was -1, which is true)
+    r = granwave.layer_impact(sample=str(sample), vi=20, t_max=0.005)
+    j = run_cli(program, "layer-impact", "--sample", sample, "--vi", 20, "--t-max", 0.005)
+    assert j["bounced"] is None and r.bounced is None and r.undecided == j["undecided"]
+
+
+def test_a_result_dumps_as_the_json(program):
+    """json.dumps of the Python result's scalars gives the program's JSON
+    values: true/false where the flags were 1/0."""
+    r = granwave.chain(n=3)
+    j = run_cli(program, "chain", "--n", 3)
+    for k in ("converged", "wall_done", "n_s", "cluster", "wall_contacts"):
+        assert json.dumps(r[k]) == json.dumps(j[k]), k
+    assert np.array_equal(r.final_velocities, np.array(j["final_velocities"]))

@@ -119,3 +119,17 @@ def test_a_result_dumps_as_the_json(program):
     for k in ("converged", "wall_done", "n_s", "cluster", "wall_contacts"):
         assert json.dumps(r[k]) == json.dumps(j[k]), k
     assert np.array_equal(r.final_velocities, np.array(j["final_velocities"]))
+
+
+def test_layer_stats_flag_columns_as_the_json(program):
+    """layer_stats' yes/no columns were 1.0/0.0 where the JSON has true/false."""
+    table = str(__import__("pathlib").Path(__file__).resolve().parents[2] / "data/measured/layer_walls/results.csv")
+    r = granwave.layer_stats(table)
+    j = json.loads(subprocess.run([program, "layer-stats", table, "--json"], check=True, capture_output=True,
+                                  text=True).stdout)
+    assert r.groups["bouncing"].dtype == bool and r.groups["verdict_certain"].dtype == bool
+    assert r.groups["bouncing"].tolist() == [g["bouncing"] for g in j["groups"]]
+    assert r.groups["verdict_certain"].tolist() == [g["verdict_certain"] for g in j["groups"]]
+    assert r.walls["walls_bouncing"].tolist() == [w["walls"]["bouncing"] for w in j["walls"]]
+    assert r.walls["removed_bouncing"].tolist() == [w["walls_removed"]["bouncing"] for w in j["walls"]]
+    assert False in r.groups["bouncing"].tolist() and True in r.groups["bouncing"].tolist()

@@ -257,7 +257,7 @@ static int write_tables(const drop_cli *d, const gw_chain_drop_result *r, const 
         return rc;
     gw_write_comment(f.fp, hdr);
     fprintf(f.fp, "# impact: contact episode of bead 1 with the sensor whose largest peak is >= "
-                  "peak_threshold; t_end and v_out empty (nan) while in contact at t_max\n");
+                  "peak_threshold; t_end and v_out nan (JSON null) while in contact at t_max\n");
     fprintf(f.fp, "impact,t_start_s,t_end_s,f_max_N,t_fmax_s,v_in_m_s,v_out_m_s,n_peaks,cluster,located\n");
     for (int j = 0; j < r->n_impacts; j++) {
         const gw_chain_drop_impact *im = &r->impacts[j];

@@ -341,6 +341,8 @@ typedef struct gw_chain_dispersion_outcome {
     gw_chain_spectrum sp;     /* freq [Hz], power, f_peak, df, f_min, samples */
     double v_imp, tau_n, period, dt_out, rtol, atol; /* m/s, s, s, s */
     int column_n, n_maxima;
+    double inv_period;        /* column mode: 1/P, Hz (NaN: fewer than two maxima) */
+    double f_peak_rel_diff;   /* column mode: f_peak P - 1 */
 } gw_chain_dispersion_outcome;
 
 const gw_param *gw_chain_dispersion_setup_params(void);

@@ -351,9 +351,9 @@ static int disp_column(const disp_cli *c, const gw_opt *opts, int argc, char **a
         cJSON_AddNumberToObject(js, "dt_out", o.dt_out);
         cJSON_AddNumberToObject(js, "tau_n", r.tau_n);
         cJSON_AddNumberToObject(js, "period", r.period);
-        cJSON_AddNumberToObject(js, "inv_period", 1.0 / r.period);
+        cJSON_AddNumberToObject(js, "inv_period", out.inv_period);
         cJSON_AddNumberToObject(js, "f_peak", sp.f_peak);
-        cJSON_AddNumberToObject(js, "f_peak_rel_diff", sp.f_peak * r.period - 1);
+        cJSON_AddNumberToObject(js, "f_peak_rel_diff", out.f_peak_rel_diff);
         cJSON_AddNumberToObject(js, "df", sp.df);
         cJSON_AddNumberToObject(js, "f_min", sp.f_min);
         cJSON_AddNumberToObject(js, "samples", sp.samples);
@@ -388,7 +388,7 @@ static int disp_column(const disp_cli *c, const gw_opt *opts, int argc, char **a
         else if (code == 0)
             printf("granwave %s dispersion --column-n %d (v_imp %g m/s): wall-force peak %.6g Hz, "
                    "1/P %.6g Hz (rel diff %+.2e), bin %.3g Hz, contact %.4g us\n",
-                   gw_version(), p.n, p.v_imp, sp.f_peak, 1.0 / r.period, sp.f_peak * r.period - 1,
+                   gw_version(), p.n, p.v_imp, sp.f_peak, out.inv_period, out.f_peak_rel_diff,
                    sp.df, r.tau_n * 1e6);
         free(hdr);
         cJSON_Delete(js);

@@ -133,3 +133,16 @@ def test_layer_stats_flag_columns_as_the_json(program):
     assert r.walls["walls_bouncing"].tolist() == [w["walls"]["bouncing"] for w in j["walls"]]
     assert r.walls["removed_bouncing"].tolist() == [w["walls_removed"]["bouncing"] for w in j["walls"]]
     assert False in r.groups["bouncing"].tolist() and True in r.groups["bouncing"].tolist()
+
+
+@pytest.mark.parametrize("n", [1, 5])
+def test_column_spectrum_has_the_json_keys(program, n):
+    """dispersion(column_n=N) lacked inv_period and f_peak_rel_diff, which the
+    program computed in its own code for the JSON and the text; they are the
+    library's now, NaN where the JSON has null (one maximum: no period)."""
+    r = granwave.dispersion(column_n=n)
+    j = run_cli(program, "dispersion", "--column-n", n)
+    for k in ("period", "inv_period", "f_peak", "f_peak_rel_diff", "tau_n", "n_maxima", "df", "samples"):
+        assert k in r, k
+        assert (j[k] is None and np.isnan(r[k])) or r[k] == j[k], (k, r[k], j[k])
+    assert (n == 1) == (j["inv_period"] is None)

@@ -146,3 +146,16 @@ def test_column_spectrum_has_the_json_keys(program, n):
         assert k in r, k
         assert (j[k] is None and np.isnan(r[k])) or r[k] == j[k], (k, r[k], j[k])
     assert (n == 1) == (j["inv_period"] is None)
+
+
+def test_layer_make_records_the_hash_layer_impact_reads(tmp_path):
+    """layer_make(out=...) did not give the sample's hash, which the program's
+    JSON has (sample_fnv1a64) and every layer-impact of it records."""
+    path = tmp_path / "s.txt"
+    m = granwave.layer_make(n=40, width_rm=12, seed=5, t_max=0.05, out=str(path))
+    h = 0xcbf29ce484222325
+    for b in path.read_bytes():
+        h = ((h ^ b) * 0x100000001b3) & 0xffffffffffffffff
+    assert m.sample_fnv1a64 == f"{h:016x}"
+    assert granwave.layer_impact(sample=str(path), t_max=1e-4).sample_fnv1a64 == m.sample_fnv1a64
+    assert granwave.layer_make(n=40, width_rm=12, seed=5, t_max=0.05).sample_fnv1a64 is None

@@ -60,6 +60,8 @@ static const gw_param collision_fields[] = {
     RD("f_max_1", f_max_1, "N", "closed form: one bead's largest wall force (F.13)"),
     RD("t_q", t_q, "s", "closed form: deformation-wave time 2 (m/k)^(2/5) v^(-1/5) (F.17, F.29)"),
     RD("k_c", k_c, "N/m^1.5", "closed form: critical wall coefficient K_c (F.22)"),
+    RD("gamma", gamma, "N s/m^1.5", "Kuwabara-Kono constant run (calibrated with restitution; 0: none)"),
+    RD("alpha", alpha, "s/m", "Hunt-Crossley constant run (calibrated with restitution; 0: none)"),
     RD("wall_time_ms", wall_time_ms, "ms", "wall-clock time of the collision"),
     RI("trace_len", trace_len, "samples in the series (trace = 1)"),
     RA("t", t, "s", "trace_len", NULL, "sample times"),
@@ -114,6 +116,8 @@ int gw_chain_collision_run(const gw_chain_setup *s, gw_chain_collision *out, gw_
     out->f_max_1 = gw_chain_fmax1(p->mass, p->kwall, p->v_imp);
     out->t_q = gw_chain_tq_theory(p->mass, p->k, p->v_imp);
     out->k_c = gw_chain_kc(p->k);
+    out->gamma = p->gamma; /* as the JSON's settings.model: the restitution's calibration */
+    out->alpha = p->alpha;
     if (s->trace) {
         gw_chain_trace_init(&tr, p->n);
         res.run.sample = gw_chain_trace_sample;

@@ -126,6 +126,8 @@ typedef struct gw_chain_collision {
     int trace_len;                        /* samples in the series */
     double *t, *f_wall;                   /* [trace_len] s, N */
     double *x, *v;                        /* [trace_len * n] m, m/s, bead 1 first */
+    double gamma, alpha;                  /* the damping constants run (calibrated with
+                                             restitution): N s/m^1.5, s/m */
 } gw_chain_collision;
 
 /* The table of gw_chain_collision's results. */

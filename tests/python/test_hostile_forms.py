@@ -159,3 +159,12 @@ def test_layer_make_records_the_hash_layer_impact_reads(tmp_path):
     assert m.sample_fnv1a64 == f"{h:016x}"
     assert granwave.layer_impact(sample=str(path), t_max=1e-4).sample_fnv1a64 == m.sample_fnv1a64
     assert granwave.layer_make(n=40, width_rm=12, seed=5, t_max=0.05).sample_fnv1a64 is None
+
+
+@pytest.mark.parametrize("damping,key", [("kk", "gamma"), ("hc", "alpha")])
+def test_chain_gives_the_calibrated_damping_constant(program, damping, key):
+    """chain(restitution=e) ran with a damping constant calibrated from e, which
+    the JSON's settings give and the Python result did not."""
+    r = granwave.chain(n=2, damping=damping, restitution=0.9)
+    j = run_cli(program, "chain", "--n", 2, "--damping", damping, "--restitution", 0.9)
+    assert r[key] == j["settings"]["model"][key] and r[key] > 0

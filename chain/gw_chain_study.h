@@ -193,6 +193,10 @@ typedef struct gw_chain_falcon_outcome {
     double wall_time_s;
     int unfinished;        /* collisions not ended at t_max (gw_chain_result.converged 0):
                               their tau_N, eps and the fits over them are those at t_max */
+    /* [ncase] more columns of falcon_runs.csv: wall-force maxima, the cluster,
+       solver steps and right-hand side evaluations of each collision */
+    double *n_maxima, *cluster, *steps, *rhs_evals;
+    double gamma, alpha;   /* the damping constants run (calibrated with restitution) */
 } gw_chain_falcon_outcome;
 
 const gw_param *gw_chain_falcon_outcome_fields(void);

@@ -168,3 +168,26 @@ def test_chain_gives_the_calibrated_damping_constant(program, damping, key):
     r = granwave.chain(n=2, damping=damping, restitution=0.9)
     j = run_cli(program, "chain", "--n", 2, "--damping", damping, "--restitution", 0.9)
     assert r[key] == j["settings"]["model"][key] and r[key] > 0
+
+
+def test_falcon_has_every_column_of_its_runs_table(program, tmp_path):
+    """falcon_runs.csv has n_maxima, cluster, steps and rhs_evals per collision
+    and the JSON's settings the calibrated damping constant; granwave.falcon had
+    none of them."""
+    out = tmp_path / "f"
+    subprocess.run([program, "falcon", "--n", "1:12", "--heights", "none", "--vimp", "0.2,0.3", "--damping", "kk",
+                    "--restitution", "0.9", "--quiet", "--out", str(out)], check=True, capture_output=True)
+    f = granwave.falcon(n=(1, 12), heights=[], vimp=[0.2, 0.3], damping="kk", restitution=0.9)
+    rows = [line.strip().split(",") for line in open(out / "falcon_runs.csv") if not line.startswith("#")]
+    head, body = rows[0], rows[1:]
+    unit = ("_N", "_s", "_m_s", "_mm")
+    for c in head:
+        key = next((c[:-len(u)] for u in unit if c.endswith(u) and c[:-len(u)] in f), c)
+        if key in ("v_imp", "h_mm", "n"):
+            continue
+        assert key in f, f"falcon_runs.csv column {c} is not in the Python result"
+        a = np.array([float(r[head.index(c)]) for r in body]).reshape(f[key].shape)
+        rtol = 1e-3 if key == "energy_error" else 1e-10  # printed with 4 digits, the others 12 to 17
+        assert np.allclose(a, f[key], rtol=rtol, atol=0, equal_nan=True), c
+    j = json.load(open(out / "falcon_summary.json"))
+    assert f.gamma == j["settings"]["model"]["gamma"] > 0 and f.alpha == 0

@@ -146,6 +146,8 @@ static const gw_param ws_fields[] = {
     RIT(W, "n_max", n_max, "longest column (the front's)"),
     RDT(W, "wall_time_s", wall_time_s, "s", "wall-clock time"),
     RIT(W, "unfinished", unfinished, "collisions of the tau_N sweep not ended at t_max"),
+    RDT(W, "gamma", gamma, "N s/m^1.5", "Kuwabara-Kono constant run (calibrated with restitution; 0: none)"),
+    RDT(W, "alpha", alpha, "s/m", "Hunt-Crossley constant run (calibrated with restitution; 0: none)"),
     GW_PARAM_END};
 #undef W
 
@@ -185,6 +187,8 @@ static const gw_param sw_fields[] = {
      .help = "what their constants describe, separated by semicolons"},
     RDT(S, "wall_time_s", wall_time_s, "s", "wall-clock time"),
     RIT(S, "unfinished", unfinished, "collisions still at the wall at t_max (their F_max, tau_max may not be final)"),
+    RDT(S, "gamma", gamma, "N s/m^1.5", "Kuwabara-Kono constant run (calibrated with restitution; 0: none)"),
+    RDT(S, "alpha", alpha, "s/m", "Hunt-Crossley constant run (calibrated with restitution; 0: none)"),
     GW_PARAM_END};
 #undef S
 
@@ -365,6 +369,10 @@ int gw_chain_wavespeed_run(const gw_chain_wavespeed_setup *s, gw_progress_fn pro
     col.vimp = out->v_imp[0];
     gw_chain_resolved r;
     rc = gw_chain_setup_resolve(&col, &r, err);
+    if (rc == GW_OK) { /* as the JSON's settings.model */
+        out->gamma = r.params.gamma;
+        out->alpha = r.params.alpha;
+    }
     double t0 = gw_clock_ms();
     if (rc == GW_OK)
         rc = gw_chain_sweep_n_progress(&r.params, &r.run, out->v_imp, nv, (int)a, (int)b, (int)s->jobs, progress,
@@ -583,6 +591,8 @@ int gw_chain_softwall_run(const gw_chain_softwall_setup *s, gw_progress_fn progr
     out->tol = s->tol;
     out->sheet_law = (int)rs.law;
     out->k_c = gw_chain_kc(rs.params.k);
+    out->gamma = rs.params.gamma; /* as the JSON's settings.model */
+    out->alpha = rs.params.alpha;
     out->t_q_rigid = NAN;
     gw_chain_result *res = calloc((size_t)nw * (size_t)per, sizeof *res);
     sw_result *sr = calloc((size_t)nw, sizeof *sr);

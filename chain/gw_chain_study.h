@@ -253,6 +253,7 @@ typedef struct gw_chain_wavespeed_outcome {
     int fitted;            /* 1: the power-law fits over v_imp are made (two speeds or more); 0: one
                               speed, whose speeds, t_q, period, c2 and max_disagreement stand but whose
                               beta, beta_err, c3, fits and beta_period are NaN (no line through one point) */
+    double gamma, alpha;   /* the damping constants run (calibrated with restitution) */
 } gw_chain_wavespeed_outcome;
 
 const gw_param *gw_chain_wavespeed_setup_params(void);
@@ -303,6 +304,7 @@ typedef struct gw_chain_softwall_outcome {
     double wall_time_s;
     int unfinished;             /* collisions still at the wall at t_max (wall_done 0):
                                    their F_max and tau_max may not be final */
+    double gamma, alpha;        /* the damping constants run (calibrated with restitution) */
 } gw_chain_softwall_outcome;
 
 const gw_param *gw_chain_softwall_setup_params(void);

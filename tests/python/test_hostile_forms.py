@@ -191,3 +191,14 @@ def test_falcon_has_every_column_of_its_runs_table(program, tmp_path):
         assert np.allclose(a, f[key], rtol=rtol, atol=0, equal_nan=True), c
     j = json.load(open(out / "falcon_summary.json"))
     assert f.gamma == j["settings"]["model"]["gamma"] > 0 and f.alpha == 0
+
+
+def test_studies_give_the_calibrated_damping_constant(program):
+    """wavespeed and softwall with restitution: the constant run, as the JSON's settings."""
+    w = granwave.wavespeed(n=(5, 8), vimp=[0.2, 0.3], damping="kk", restitution=0.9)
+    j = run_cli(program, "wavespeed", "--n", "5:8", "--vimp", "0.2,0.3", "--damping", "kk", "--restitution", 0.9,
+                "--quiet")
+    assert w.gamma == j["settings"]["model"]["gamma"] > 0 and w.alpha == 0
+    s = granwave.softwall(n=(1, 6), damping="hc", restitution=0.8)
+    j = run_cli(program, "softwall", "--n", "1:6", "--damping", "hc", "--restitution", 0.8, "--quiet")
+    assert s.alpha == j["settings"]["model"]["alpha"] > 0 and s.gamma == 0

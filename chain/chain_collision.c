@@ -38,8 +38,8 @@ static const gw_param collision_fields[] = {
     RD("eps_eff", r.eps_eff, "", "momentum restitution of the column (F.7)"),
     RD("eps_col", r.eps_col, "", "energy restitution of the column (F.30)"),
     RI("wall_contacts", r.wall_contacts, "separate wall contacts (> 1: re-contact)"),
-    RI("converged", r.converged, "1: all contacts open and separating at t_end"),
-    RI("wall_done", r.wall_done, "1: bead 1 off the wall and separating at t_end (f_max, tau_n final)"),
+    RF("converged", r.converged, "1: all contacts open and separating at t_end"),
+    RF("wall_done", r.wall_done, "1: bead 1 off the wall and separating at t_end (f_max, tau_n final)"),
     RD("t_end", r.t_end, "s", "end of the run"),
     RD("t_max", r.run_t_max, "s", "time limit the run used (default 20 (n T_q + tau_1))"),
     RD("dt_out", r.run_dt_out, "s", "sampling interval the run used (default tau_1/200)"),
@@ -60,6 +60,8 @@ static const gw_param collision_fields[] = {
     RD("f_max_1", f_max_1, "N", "closed form: one bead's largest wall force (F.13)"),
     RD("t_q", t_q, "s", "closed form: deformation-wave time 2 (m/k)^(2/5) v^(-1/5) (F.17, F.29)"),
     RD("k_c", k_c, "N/m^1.5", "closed form: critical wall coefficient K_c (F.22)"),
+    RD("gamma", gamma, "N s/m^1.5", "Kuwabara-Kono constant run (calibrated with restitution; 0: none)"),
+    RD("alpha", alpha, "s/m", "Hunt-Crossley constant run (calibrated with restitution; 0: none)"),
     RD("wall_time_ms", wall_time_ms, "ms", "wall-clock time of the collision"),
     RI("trace_len", trace_len, "samples in the series (trace = 1)"),
     RA("t", t, "s", "trace_len", NULL, "sample times"),
@@ -114,6 +116,8 @@ int gw_chain_collision_run(const gw_chain_setup *s, gw_chain_collision *out, gw_
     out->f_max_1 = gw_chain_fmax1(p->mass, p->kwall, p->v_imp);
     out->t_q = gw_chain_tq_theory(p->mass, p->k, p->v_imp);
     out->k_c = gw_chain_kc(p->k);
+    out->gamma = p->gamma; /* as the JSON's settings.model: the restitution's calibration */
+    out->alpha = p->alpha;
     if (s->trace) {
         gw_chain_trace_init(&tr, p->n);
         res.run.sample = gw_chain_trace_sample;

@@ -50,14 +50,14 @@ static const gw_param disp_params[] = {
 #define OFF(f) offsetof(gw_chain_dispersion_outcome, f)
 
 static const gw_param disp_fields[] = {
-    RI("column", column, "0: dispersion, 1: column wall-force spectrum (column_n)"),
+    RF("column", column, "0: dispersion, 1: column wall-force spectrum (column_n)"),
     RI("nq", r.nq, "wavenumbers qa = 2 pi j / n (periodic) or pi j / (n + 1) (fixed), j = 1..nq"),
     RI("n_omega", r.n_omega, "frequency bins"),
     RA("q", r.qa, "rad", "nq", NULL, "qa, rad per bead"),
     RA("omega_ridge", r.omega_ridge, "rad/s", "nq", NULL, "frequency of maximum power"),
     RA("omega_theory", r.omega_theory, "rad/s", "nq", NULL, "2 sqrt(kappa/m) |sin(qa/2)| (1.6)"),
     RA("ridge_power", r.ridge_power, "m^2/s^2", "nq", NULL, "power at the ridge"),
-    {.name = "resolved", .type = GW_PARAM_IARRAY, .offset = OFF(r.resolved), .unit = "", .rows = "nq",
+    {.name = "resolved", .type = GW_PARAM_FARRAY, .offset = OFF(r.resolved), .unit = "", .rows = "nq",
      .help = "1: the ridge counts (min-bins)"},
     RA("power", r.power, "m^2/s^2", "nq", "n_omega", "|V(q, omega)|^2 [q, omega bin]"),
     RD("d_omega", r.d_omega, "rad/s", "bin spacing"),
@@ -99,6 +99,8 @@ static const gw_param disp_fields[] = {
     RA("freq", sp.freq, "Hz", "len", NULL, "column mode: frequencies"),
     RA("spectrum", sp.power, "N^2 s^2", "len", NULL, "column mode: wall-force power"),
     RD("f_peak", sp.f_peak, "Hz", "column mode: spectrum peak (against 1/P)"),
+    RD("inv_period", inv_period, "Hz", "column mode: 1/P (NaN: fewer than two maxima)"),
+    RD("f_peak_rel_diff", f_peak_rel_diff, "", "column mode: f_peak P - 1"),
     RD("df", sp.df, "Hz", "column mode: bin spacing"),
     RD("f_min", sp.f_min, "Hz", "column mode: lowest frequency searched"),
     RI("samples", sp.samples, "column mode: uniform samples"),
@@ -222,6 +224,8 @@ static int run_column(const gw_chain_dispersion_setup *s, gw_chain_dispersion_ou
     out->atol = o.sp.atol;
     out->tau_n = r.tau_n;
     out->period = r.period;
+    out->inv_period = 1.0 / r.period;
+    out->f_peak_rel_diff = out->sp.f_peak * r.period - 1;
     out->n_maxima = r.n_maxima;
     gw_chain_result_free(&r);
     gw_chain_trace_free(&tr);

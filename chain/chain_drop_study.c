@@ -69,7 +69,7 @@ static const gw_param drop_params[] = {
 static const gw_param drop_fields[] = {
     RI("n", n, "bodies simulated (1 with block)"),
     RI("n_column", n_column, "beads of the column"),
-    RI("block", block, "1: one rigid block of the column's mass"),
+    RF("block", block, "1: one rigid block of the column's mass"),
     RD("height", height, "m", "fall of bead 1 to the sensor"),
     RD("gravity", gravity, "m/s^2", "gravity toward the sensor"),
     RD("v_imp", v_imp, "m/s", "sqrt(2 g h): every bead's velocity at the first contact"),
@@ -93,7 +93,7 @@ static const gw_param drop_fields[] = {
     RD("f_max", r.f_max, "N", "largest peak of the run"),
     RD("t_fmax", r.t_fmax, "s", "its time"),
     RI("impact_rises", impact_rises, "impacts whose peak exceeds the previous impact's by more than 1e-6 of it"),
-    RI("impacts_monotone", impacts_monotone, "1: no impact_rises"),
+    RF("impacts_monotone", impacts_monotone, "1: no impact_rises"),
     {.name = "wall_peaks", .type = GW_PARAM_DARRAY, .offset = offsetof(O, wall_peaks), .unit = "s, N",
      .rows = "n_peaks", .cols = "2", .choices = "t,f", .help = "every peak: time (s) and force (N) [peak, column]"},
     RIA("peak_impact", peak_impact, "n_peaks", NULL, "the impact (index into impacts) of each peak"),
@@ -104,8 +104,8 @@ static const gw_param drop_fields[] = {
      .rows = "n_impacts", .cols = "9", .choices = GW_DROP_IMPACT_COLS,
      .help = "per impact: t_start, t_end (NaN: in contact at t_max), f_max, t_fmax (s, N), v_in, v_out (m/s, "
              "toward the sensor > 0), n_peaks, cluster, located [impact, column]"},
-    RI("cut_first_collision", r.first_cut, "1: t_max came before the first collision's end (its results are those at t_max)"),
-    RI("open_at_t_max", r.open_at_t_max, "1: bead 1 still on the sensor at t_max (the last episode open)"),
+    RF("cut_first_collision", r.first_cut, "1: t_max came before the first collision's end (its results are those at t_max)"),
+    RF("open_at_t_max", r.open_at_t_max, "1: bead 1 still on the sensor at t_max (the last episode open)"),
     RI("n_first", n_first, "entries of the first collision's arrays"),
     RD("first_f_max", r.first.f_max, "N", "first collision as `granwave chain`: largest wall force"),
     RD("first_tau_max", r.first.tau_max, "s", "first collision: time of f_max"),
@@ -122,8 +122,8 @@ static const gw_param drop_fields[] = {
     RD("first_eps_eff", r.first.eps_eff, "", "first collision: momentum restitution (F.7)"),
     RD("first_eps_col", r.first.eps_col, "", "first collision: energy restitution (F.30)"),
     RI("first_wall_contacts", r.first.wall_contacts, "first collision: separate wall contacts"),
-    RI("first_converged", r.first.converged, "first collision: 1 = ended at the chain's end"),
-    RI("first_wall_done", r.first.wall_done, "first collision: 1 = bead 1 off the wall and separating at its end"),
+    RF("first_converged", r.first.converged, "first collision: 1 = ended at the chain's end"),
+    RF("first_wall_done", r.first.wall_done, "first collision: 1 = bead 1 off the wall and separating at its end"),
     RD("first_t_end", r.first.t_end, "s", "first collision: its end"),
     RL("first_events", r.first.n_events, "first collision: contact events"),
     RL("first_missed_events", r.first.missed_events, "first collision: contact changes found from the state"),
@@ -150,7 +150,7 @@ static const gw_param drop_fields[] = {
     RA("f_wall", f_wall, "N", "trace_len", NULL, "the sensor signal F(t)"),
     RA("x", x, "m", "trace_len", "n", "bead displacements toward the sensor (trace = 1)"),
     RA("v", v, "m/s", "trace_len", "n", "bead velocities toward the sensor (trace = 1)"),
-    RI("canceled", canceled, "1: stopped by the progress callback at t_end"),
+    RF("canceled", canceled, "1: stopped by the progress callback at t_end"),
     GW_PARAM_END};
 #undef OFF
 #undef O

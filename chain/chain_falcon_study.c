@@ -115,7 +115,7 @@ static const gw_param falcon_fields[] = {
     {.name = "nn", .type = GW_PARAM_INT, .offset = OFF(nn), .unit = "", .help = "column sizes"},
     {.name = "ncase", .type = GW_PARAM_INT, .offset = OFF(ncase), .unit = "", .help = "collisions"},
     {.name = "k_c", .type = GW_PARAM_DOUBLE, .offset = OFF(k_c), .unit = "N/m^1.5", .help = "critical wall coefficient K_c (F.22)"},
-    {.name = "rigid", .type = GW_PARAM_INT, .offset = OFF(rigid), .unit = "", .help = "1: K > K_c (rigid wall)"},
+    GW_RESULT_FLAG("rigid", OFF(rigid), "1: K > K_c (rigid wall)"),
     {.name = "accuracy", .type = GW_PARAM_DOUBLE, .offset = OFF(accuracy), .unit = "",
      .help = "the accuracy target the solver was chosen by (0: the solver options as given)"},
     {.name = "wall_time_s", .type = GW_PARAM_DOUBLE, .offset = OFF(wall_time_s), .unit = "s", .help = "wall-clock time of the collisions"},
@@ -135,6 +135,14 @@ static const gw_param falcon_fields[] = {
     CASE("dt_out", dt_out, "s", "its sampling interval"),
     CASE("dt", dt, "s", "its RK4 step (0: cvode, arkode)"),
     CASE("dt_max", dt_max, "s", "its largest step"),
+    CASE("n_maxima", n_maxima, "", "wall-force maxima"),
+    CASE("cluster", cluster, "", "beads in contact with bead 1 when it left the wall"),
+    CASE("steps", steps, "", "solver steps"),
+    CASE("rhs_evals", rhs_evals, "", "right-hand side evaluations"),
+    {.name = "gamma", .type = GW_PARAM_DOUBLE, .offset = OFF(gamma), .unit = "N s/m^1.5",
+     .help = "Kuwabara-Kono constant run (calibrated with restitution; 0: none)"},
+    {.name = "alpha", .type = GW_PARAM_DOUBLE, .offset = OFF(alpha), .unit = "s/m",
+     .help = "Hunt-Crossley constant run (calibrated with restitution; 0: none)"},
     VEL("t_q", t_q, "s", "T_q: slope of tau_N against N - 1 (F.4), all N"),
     VEL("t_q_err", t_q_err, "s", "its standard error"),
     VEL("tau_fit_intercept", tau_fit_intercept, "s", "intercept of that line"),
@@ -178,7 +186,8 @@ static int alloc_outcome(gw_chain_falcon_outcome *o, int nv, int nn, gw_err *err
                       &o->t_q_theory, &o->tau_1_theory, &o->f_max_1_theory, &o->f_max_mean, &o->f_max_min,
                       &o->f_max_max, &o->tau_max_mean, &o->period_mean};
     double **cas[] = {&o->f_max, &o->tau_max, &o->tau_n, &o->period, &o->eps_eff, &o->eps_col,
-                      &o->e_rel_over_e_k, &o->n_s, &o->energy_error, &o->t_max, &o->dt_out, &o->dt, &o->dt_max};
+                      &o->e_rel_over_e_k, &o->n_s, &o->energy_error, &o->t_max, &o->dt_out, &o->dt, &o->dt_max,
+                      &o->n_maxima, &o->cluster, &o->steps, &o->rhs_evals};
     const size_t nvel = sizeof vel / sizeof vel[0], ncas = sizeof cas / sizeof cas[0];
     o->nv = nv;
     o->nn = nn;
@@ -304,6 +313,10 @@ int gw_chain_falcon_run(const gw_chain_falcon_setup *s, gw_progress_fn progress,
             out->dt_out[c] = rv[k].run_dt_out;
             out->dt[c] = rv[k].run_dt;
             out->dt_max[c] = rv[k].run_dt_max;
+            out->n_maxima[c] = rv[k].n_maxima;
+            out->cluster[c] = rv[k].cluster;
+            out->steps[c] = (double)rv[k].stats.steps;
+            out->rhs_evals[c] = (double)rv[k].stats.rhs_evals;
         }
         out->t_q[iv] = a.fit.c1;
         out->t_q_err[iv] = a.fit.c1_err;
@@ -328,6 +341,8 @@ int gw_chain_falcon_run(const gw_chain_falcon_setup *s, gw_progress_fn progress,
     if (rc == GW_OK) {
         out->k_c = gw_chain_kc(r.params.k);
         out->rigid = r.params.kwall > out->k_c;
+        out->gamma = r.params.gamma; /* as the JSON's settings.model */
+        out->alpha = r.params.alpha;
     }
     for (int i = 0; res && i < out->ncase; i++)
         gw_chain_result_free(&res[i]);

@@ -4,7 +4,7 @@
  * table that holds a gw_chain_setup: gw_chain_setup_params (chain_setup.c)
  * and the falcon study's table (chain_falcon_study.c). It also gives the chain
  * tables' row constructors ROW, CHOICE (inputs: no open upper ends) and RD, RI,
- * RL, RA (results), on the includer's OFF(field) (the field's offset in its
+ * RF (a flag), RL, RA (results), on the includer's OFF(field) (the field's offset in its
  * struct). Units SI.
  */
 #ifndef GW_CHAIN_SETUP_ROWS_H
@@ -16,6 +16,7 @@
 #define CHOICE(nm, f, ch, df, mv, hl) GW_PARAM_CHOICE_ROW(nm, OFF(f), ch, df, mv, hl)
 #define RD(nm, f, un, hl) GW_RESULT_ROW(nm, GW_PARAM_DOUBLE, OFF(f), un, hl)
 #define RI(nm, f, hl) GW_RESULT_ROW(nm, GW_PARAM_INT, OFF(f), "", hl)
+#define RF(nm, f, hl) GW_RESULT_FLAG(nm, OFF(f), hl)
 #define RL(nm, f, hl) GW_RESULT_ROW(nm, GW_PARAM_LONG, OFF(f), "", hl)
 #define RA(nm, f, un, r, c, hl) GW_RESULT_ARRAY(nm, OFF(f), un, r, c, NULL, hl)
 

@@ -103,8 +103,8 @@ void gw_chain_softwall_setup_clear(gw_chain_softwall_setup *s)
 #define RDT(T, nm, f, un, hl) GW_RESULT_ROW(nm, GW_PARAM_DOUBLE, offsetof(T, f), un, hl)
 #define RIT(T, nm, f, hl) GW_RESULT_ROW(nm, GW_PARAM_INT, offsetof(T, f), "", hl)
 #define RAT(T, nm, f, un, r, c, hl) GW_RESULT_ARRAY(nm, offsetof(T, f), un, r, c, NULL, hl)
-#define RIA(T, nm, f, r, hl) \
-    {.name = nm, .type = GW_PARAM_IARRAY, .offset = offsetof(T, f), .unit = "", .rows = r, .help = hl}
+#define RFA(T, nm, f, r, hl) \
+    {.name = nm, .type = GW_PARAM_FARRAY, .offset = offsetof(T, f), .unit = "", .rows = r, .help = hl}
 
 #define W gw_chain_wavespeed_outcome
 #define WFIT(k, j, nm, un, hl) RDT(W, nm, fits[k][j], un, hl)
@@ -139,13 +139,15 @@ static const gw_param ws_fields[] = {
     RDT(W, "beta_period", beta_period, "", "exponent of P against v_imp (F.15: -1/5)"),
     RDT(W, "beta_period_err", beta_period_err, "", "its standard error"),
     RDT(W, "max_disagreement", max_disagreement, "", "largest relative difference of tq, front, group/sqrt(3/2)"),
-    RIT(W, "fitted", fitted, "1: the power-law fits over v_imp made; 0: one speed, beta, c3, the fits and "
+    GW_RESULT_FLAG("fitted", offsetof(W, fitted), "1: the power-law fits over v_imp made; 0: one speed, beta, c3, the fits and "
                              "beta_period NaN (not fitted)"),
     RDT(W, "front_threshold_fraction", threshold, "", "front threshold / F_max(1)"),
     RIT(W, "n_min", n_min, "smallest column"),
     RIT(W, "n_max", n_max, "longest column (the front's)"),
     RDT(W, "wall_time_s", wall_time_s, "s", "wall-clock time"),
     RIT(W, "unfinished", unfinished, "collisions of the tau_N sweep not ended at t_max"),
+    RDT(W, "gamma", gamma, "N s/m^1.5", "Kuwabara-Kono constant run (calibrated with restitution; 0: none)"),
+    RDT(W, "alpha", alpha, "s/m", "Hunt-Crossley constant run (calibrated with restitution; 0: none)"),
     GW_PARAM_END};
 #undef W
 
@@ -161,8 +163,8 @@ static const gw_param sw_fields[] = {
     RIT(S, "sheet_law", sheet_law, "0 fitted, 1 hertz, 2 layer, 3 material"),
     RAT(S, "n", n, "", "nn", NULL, "column sizes N"),
     RAT(S, "kwall", kwall, "N/m^1.5", "nw", NULL, "wall coefficient K [wall]"),
-    RIA(S, "rigid", rigid, "nw", "1: K > K_c [wall]"),
-    RIA(S, "saturated", saturated, "nw", "1: F_max reached its plateau within the sizes [wall]"),
+    RFA(S, "rigid", rigid, "nw", "1: K > K_c [wall]"),
+    RFA(S, "saturated", saturated, "nw", "1: F_max reached its plateau within the sizes [wall]"),
     RAT(S, "f_max", f_max, "N", "nw", "nn", "largest wall force [wall, N]"),
     RAT(S, "tau_max", tau_max, "s", "nw", "nn", "time of f_max [wall, N]"),
     RAT(S, "t_max", t_max, "s", "nw", "nn", "time limit of each collision [wall, N]"),
@@ -185,6 +187,8 @@ static const gw_param sw_fields[] = {
      .help = "what their constants describe, separated by semicolons"},
     RDT(S, "wall_time_s", wall_time_s, "s", "wall-clock time"),
     RIT(S, "unfinished", unfinished, "collisions still at the wall at t_max (their F_max, tau_max may not be final)"),
+    RDT(S, "gamma", gamma, "N s/m^1.5", "Kuwabara-Kono constant run (calibrated with restitution; 0: none)"),
+    RDT(S, "alpha", alpha, "s/m", "Hunt-Crossley constant run (calibrated with restitution; 0: none)"),
     GW_PARAM_END};
 #undef S
 
@@ -365,6 +369,10 @@ int gw_chain_wavespeed_run(const gw_chain_wavespeed_setup *s, gw_progress_fn pro
     col.vimp = out->v_imp[0];
     gw_chain_resolved r;
     rc = gw_chain_setup_resolve(&col, &r, err);
+    if (rc == GW_OK) { /* as the JSON's settings.model */
+        out->gamma = r.params.gamma;
+        out->alpha = r.params.alpha;
+    }
     double t0 = gw_clock_ms();
     if (rc == GW_OK)
         rc = gw_chain_sweep_n_progress(&r.params, &r.run, out->v_imp, nv, (int)a, (int)b, (int)s->jobs, progress,
@@ -583,6 +591,8 @@ int gw_chain_softwall_run(const gw_chain_softwall_setup *s, gw_progress_fn progr
     out->tol = s->tol;
     out->sheet_law = (int)rs.law;
     out->k_c = gw_chain_kc(rs.params.k);
+    out->gamma = rs.params.gamma; /* as the JSON's settings.model */
+    out->alpha = rs.params.alpha;
     out->t_q_rigid = NAN;
     gw_chain_result *res = calloc((size_t)nw * (size_t)per, sizeof *res);
     sw_result *sr = calloc((size_t)nw, sizeof *sr);

@@ -322,8 +322,9 @@ typedef struct gw_chain_run_opts {
     gw_chain_sample_fn sample;
     void *sample_ctx;
     double front_threshold; /* N; > 0: record when each contact's force first
-                               reaches it (result front_t), interpolated
-                               linearly between samples */
+                               reaches it (result front_t): between beads on
+                               the cubic Hermite interpolant of the overlap
+                               between observations, at the wall linearly */
     double steps_per_tc; /* rk4 with sp.dt == 0: dt = T_c / steps_per_tc, T_c the
                             chain's time scale (gw_chain_time_scale) of this run's
                             v_imp; 0 = 400 */

@@ -126,6 +126,8 @@ typedef struct gw_chain_collision {
     int trace_len;                        /* samples in the series */
     double *t, *f_wall;                   /* [trace_len] s, N */
     double *x, *v;                        /* [trace_len * n] m, m/s, bead 1 first */
+    double gamma, alpha;                  /* the damping constants run (calibrated with
+                                             restitution): N s/m^1.5, s/m */
 } gw_chain_collision;
 
 /* The table of gw_chain_collision's results. */
@@ -191,6 +193,10 @@ typedef struct gw_chain_falcon_outcome {
     double wall_time_s;
     int unfinished;        /* collisions not ended at t_max (gw_chain_result.converged 0):
                               their tau_N, eps and the fits over them are those at t_max */
+    /* [ncase] more columns of falcon_runs.csv: wall-force maxima, the cluster,
+       solver steps and right-hand side evaluations of each collision */
+    double *n_maxima, *cluster, *steps, *rhs_evals;
+    double gamma, alpha;   /* the damping constants run (calibrated with restitution) */
 } gw_chain_falcon_outcome;
 
 const gw_param *gw_chain_falcon_outcome_fields(void);
@@ -247,6 +253,7 @@ typedef struct gw_chain_wavespeed_outcome {
     int fitted;            /* 1: the power-law fits over v_imp are made (two speeds or more); 0: one
                               speed, whose speeds, t_q, period, c2 and max_disagreement stand but whose
                               beta, beta_err, c3, fits and beta_period are NaN (no line through one point) */
+    double gamma, alpha;   /* the damping constants run (calibrated with restitution) */
 } gw_chain_wavespeed_outcome;
 
 const gw_param *gw_chain_wavespeed_setup_params(void);
@@ -297,6 +304,7 @@ typedef struct gw_chain_softwall_outcome {
     double wall_time_s;
     int unfinished;             /* collisions still at the wall at t_max (wall_done 0):
                                    their F_max and tau_max may not be final */
+    double gamma, alpha;        /* the damping constants run (calibrated with restitution) */
 } gw_chain_softwall_outcome;
 
 const gw_param *gw_chain_softwall_setup_params(void);
@@ -341,6 +349,8 @@ typedef struct gw_chain_dispersion_outcome {
     gw_chain_spectrum sp;     /* freq [Hz], power, f_peak, df, f_min, samples */
     double v_imp, tau_n, period, dt_out, rtol, atol; /* m/s, s, s, s */
     int column_n, n_maxima;
+    double inv_period;        /* column mode: 1/P, Hz (NaN: fewer than two maxima) */
+    double f_peak_rel_diff;   /* column mode: f_peak P - 1 */
 } gw_chain_dispersion_outcome;
 
 const gw_param *gw_chain_dispersion_setup_params(void);

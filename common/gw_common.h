@@ -290,6 +290,8 @@ double gw_peak_offset_log(double pm, double p0, double pp);
 /* New JSON array of n doubles (NaN and infinities print as null). NULL on ENOMEM. */
 cJSON *gw_json_doubles(const double *v, int n);
 cJSON *gw_json_ints(const int *v, int n);
+/* New JSON array of n flags: false for 0, true otherwise. NULL on ENOMEM. */
+cJSON *gw_json_bools(const int *v, int n);
 /* o as JSON text, numbers exact (the shortest %.15g-%.17g that reads back as
  * the same double), formatted or on one line; malloc'd (free it), NULL on out
  * of memory. gw_json_print and gw_json_write print the same way. */

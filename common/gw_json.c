@@ -32,6 +32,20 @@ cJSON *gw_json_ints(const int *v, int n)
     return cJSON_CreateIntArray(v, n);
 }
 
+cJSON *gw_json_bools(const int *v, int n)
+{
+    cJSON *a = cJSON_CreateArray();
+    for (int i = 0; a && i < n; i++) {
+        cJSON *b = cJSON_CreateBool(v[i] != 0);
+        if (!b) {
+            cJSON_Delete(a);
+            return NULL;
+        }
+        cJSON_AddItemToArray(a, b);
+    }
+    return a;
+}
+
 /* Every finite non-integer number of o (in place) as a raw node holding its
  * exact text; 0 on out of memory. */
 static int exact_numbers(cJSON *o)

@@ -37,13 +37,14 @@ const gw_param *gw_param_find(const gw_param *t, const char *name)
 
 int gw_param_is_input(const gw_param *p)
 {
-    return p->type != GW_PARAM_DARRAY && p->type != GW_PARAM_IARRAY;
+    return p->type != GW_PARAM_DARRAY && p->type != GW_PARAM_IARRAY && p->type != GW_PARAM_FARRAY;
 }
 
 const char *gw_param_type_name(gw_param_type type)
 {
     static const char *const names[] = {"double", "int", "long", "flag", "choice",
-                                        "text", "list", "range", "double array", "int array"};
+                                        "text", "list", "range", "double array", "int array",
+                                        "flag array"};
     return (unsigned)type < sizeof names / sizeof names[0] ? names[type] : "unknown";
 }
 
@@ -347,7 +348,8 @@ int gw_param_init(const gw_param *t, void *obj, gw_err *err)
         case GW_PARAM_LIST: memset(f, 0, sizeof(gw_param_list)); break;
         case GW_PARAM_RANGE: ((long *)f)[0] = ((long *)f)[1] = 0; break;
         case GW_PARAM_DARRAY: *(double **)f = NULL; break;
-        case GW_PARAM_IARRAY: *(int **)f = NULL; break;
+        case GW_PARAM_IARRAY:
+        case GW_PARAM_FARRAY: *(int **)f = NULL; break;
         }
         if (p->def && gw_param_is_input(p)) {
             int rc = set_text(p, obj, p->def, err);

@@ -11,7 +11,7 @@
  * and the Python module's keywords, checks and help.
  *
  * Result structs have tables too: their rows are read-only, and arrays
- * (GW_PARAM_DARRAY, GW_PARAM_IARRAY) name their dimensions: rows and cols are
+ * (GW_PARAM_DARRAY, GW_PARAM_IARRAY, GW_PARAM_FARRAY) name their dimensions: rows and cols are
  * each a number ("8") or the name of an int row of the same table ("ns").
  *
  * Numbers in the units the row gives (SI; angles in degrees where the unit says
@@ -28,7 +28,9 @@ typedef enum gw_param_type {
     GW_PARAM_DOUBLE = 0, /* double; NaN = not given (when the row has no default) */
     GW_PARAM_INT = 1,    /* int */
     GW_PARAM_LONG = 2,   /* long */
-    GW_PARAM_FLAG = 3,   /* int 0 or 1; text "1", "0", "true", "false" */
+    GW_PARAM_FLAG = 3,   /* int 0 or 1; text "1", "0", "true", "false". A result
+                            flag may also be -1: undecided (the program's JSON
+                            true, false, null; Python True, False, None) */
     GW_PARAM_CHOICE = 4, /* int: index into choices ("none,kk,hc"); -1 = not given */
     GW_PARAM_TEXT = 5,   /* char *, owned by the struct (gw_param_clear frees it);
                             NULL = not given */
@@ -36,7 +38,9 @@ typedef enum gw_param_type {
                             (text "none") */
     GW_PARAM_RANGE = 7,  /* long[2] {a, b}, a <= b; text "A:B" or "A" */
     GW_PARAM_DARRAY = 8, /* result: double *, rows x cols, row-major */
-    GW_PARAM_IARRAY = 9  /* result: int *, rows x cols */
+    GW_PARAM_IARRAY = 9, /* result: int *, rows x cols */
+    GW_PARAM_FARRAY = 10 /* result: int * of flags 0 or 1, rows x cols (Python: a
+                            bool array, as the JSON's true/false) */
 } gw_param_type;
 
 /* A list of numbers held by a parameter struct (GW_PARAM_LIST). */
@@ -72,7 +76,7 @@ const gw_param *gw_param_find(const gw_param *t, const char *name);
 int gw_param_is_input(const gw_param *p);
 
 /* Type name ("double", "int", "long", "flag", "choice", "text", "list",
- * "range", "double array", "int array"). */
+ * "range", "double array", "int array", "flag array"). */
 const char *gw_param_type_name(gw_param_type type);
 
 /* Fill obj's fields from t's defaults: a row's def is set as if by gw_param_set;
@@ -133,6 +137,8 @@ int gw_param_copy(const gw_param *t, size_t size, void *dst, const void *src, gw
 #define GW_PARAM_FLAG_ROW(nm, off, hl)                                                               \
     {.name = nm, .type = GW_PARAM_FLAG, .offset = off, .unit = "", .min = 0, .max = 1, .def = "0", .help = hl}
 #define GW_RESULT_ROW(nm, ty, off, un, hl) {.name = nm, .type = ty, .offset = off, .unit = un, .help = hl}
+/* a yes/no result (an int 0 or 1, -1 undecided where the help says so) */
+#define GW_RESULT_FLAG(nm, off, hl) GW_RESULT_ROW(nm, GW_PARAM_FLAG, off, "", hl)
 #define GW_RESULT_ARRAY(nm, off, un, r, c, names, hl)                                                \
     {.name = nm, .type = GW_PARAM_DARRAY, .offset = off, .unit = un, .rows = r, .cols = c, .choices = names, \
      .help = hl}

@@ -172,6 +172,8 @@ typedef struct gw_layer_make_outcome {
     gw_layer_sample sample; /* the sample: n discs, x, y, r, body (NULL for discs) */
     double height;          /* max(y + r), m */
     double height_rm;       /* height / R_m */
+    char *sample_fnv1a64;   /* with out: the FNV-1a 64 hash of the file written (16 hex
+                               digits, owned; what layer-impact records), else NULL */
 } gw_layer_make_outcome;
 
 const gw_param *gw_layer_make_outcome_fields(void);

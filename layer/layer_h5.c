@@ -10,8 +10,9 @@
  *   ring_strain, ring_kinetic, ring_dissipated [ns x nrings] (J),
  *   ring_coordination [ns x nrings] (contacts per particle); ring_r [nrings] (m);
  *   peak_strain_t, peak_kinetic_t [nrings] (s, NaN: no peak);
- *   xcorr_delay [nrings] (s, cross-correlation delay from ring k to k + 1, NaN:
- *   pair not used), xcorr_rho [nrings] (normalised correlation peak);
+ *   xcorr_delay [nrings - 1] (s, cross-correlation delay from ring k to k + 1,
+ *   NaN: pair not used), xcorr_rho [nrings - 1] (normalised correlation peak), one
+ *   per ring pair as the JSON's and Python's;
  *   spec_freq [nf] (Hz), spec_strain, spec_kinetic [nf x nrings] (J^2/Hz, one-
  *   sided power spectral density per ring, layer_crowns.c); the xcorr and spec
  *   datasets are absent when the run had fewer than 4 evenly spaced samples.
@@ -128,8 +129,8 @@ int gw_layer_impact_write_h5(const gw_layer_impact_result *r, const char *path, 
               put_double_attr(file, "wave_speed_xcorr", r->wave_speed_xcorr) ||
               put_double_attr(file, "wave_speed_xcorr_err", r->wave_speed_xcorr_err);
         if (!bad && nf > 0)
-            bad = put(file, "xcorr_delay", r->xcorr_delay, nr, 0, "s", NULL) ||
-                  put(file, "xcorr_rho", r->xcorr_rho, nr, 0, "1", NULL) ||
+            bad = put(file, "xcorr_delay", r->xcorr_delay, nr - 1, 0, "s", NULL) ||
+                  put(file, "xcorr_rho", r->xcorr_rho, nr - 1, 0, "1", NULL) ||
                   put(file, "spec_freq", freq, nf, 0, "Hz", NULL) ||
                   put(file, "spec_strain", r->spec_strain, nf, nr, "J^2/Hz", NULL) ||
                   put(file, "spec_kinetic", r->spec_kin, nf, nr, "J^2/Hz", NULL);

@@ -68,7 +68,7 @@ static const gw_param make_fields[] = {
     RD("height_rm", height_rm, "", "height in R_m"),
     RD("t_settle", r.t_settle, "s", "simulated settling time"),
     RD("ke_final", r.ke_final, "J", "kinetic energy at the end"),
-    RI("converged", r.converged, "1: the kinetic energy went below the threshold"),
+    RF("converged", r.converged, "1: the kinetic energy went below the threshold"),
     RD("max_overlap_over_rp", r.max_overlap, "", "largest u_n / R_p at the end"),
     RI("n_removed_above_height", r.n_removed, "particles (clumps: grains) above height-rm taken away"),
     RI("n_bodies", r.n_bodies, "grains (clumps) in the sample"),
@@ -80,6 +80,8 @@ static const gw_param make_fields[] = {
     {.name = "r", .type = GW_PARAM_DARRAY, .offset = OFF(sample.r), .unit = "m", .rows = "n", .help = "disc radii"},
     {.name = "body", .type = GW_PARAM_IARRAY, .offset = OFF(sample.body), .unit = "", .rows = "n",
      .help = "clump of each disc (clumps only)"},
+    {.name = "sample_fnv1a64", .type = GW_PARAM_TEXT, .offset = OFF(sample_fnv1a64), .unit = "",
+     .help = "with out: FNV-1a 64 hash of the file written (what layer-impact records), else None"},
     GW_PARAM_END};
 
 const gw_param *gw_layer_make_outcome_fields(void)
@@ -90,6 +92,7 @@ const gw_param *gw_layer_make_outcome_fields(void)
 void gw_layer_make_outcome_free(gw_layer_make_outcome *out)
 {
     gw_layer_sample_free(&out->sample);
+    free(out->sample_fnv1a64);
     memset(out, 0, sizeof *out);
 }
 
@@ -174,6 +177,10 @@ int gw_layer_make_run_progress(const gw_layer_make_setup *s, gw_progress_fn prog
         char *h = header(s, out);
         rc = gw_layer_sample_write(&out->sample, s->out, h ? h : "", err);
         free(h);
+        unsigned long long fh = 0; /* the content written, as the program's JSON gives it */
+        gw_err he = {{0}};
+        if (rc == GW_OK && gw_fnv1a64_file(s->out, "sample", &fh, &he) == GW_OK && (out->sample_fnv1a64 = malloc(17)))
+            snprintf(out->sample_fnv1a64, 17, "%016llx", fh);
     }
     return rc;
 }

@@ -91,7 +91,7 @@ void gw_layer_impact_setup_clear(gw_layer_impact_setup *s)
 #define OFF(f) offsetof(gw_layer_impact_outcome, f)
 
 static const gw_param outcome_fields[] = {
-    RI("bounced", r.bounced, "1: vy changed sign and the block left all contacts"),
+    RF("bounced", r.bounced, "1: vy changed sign and the block left all contacts; 0: not; -1: undecided (see undecided)"),
     RD("e_n", r.e_n, "", "normal restitution V_nr/V_ni (B.16)"),
     RD("e", r.e, "", "restitution V_r/V_i (B.17)"),
     RD("alpha_r", r.alpha_r_deg, "deg", "rebound angle arccos(V_nr/V_r) (B.18)"),
@@ -125,7 +125,7 @@ static const gw_param outcome_fields[] = {
     RD("rm", rm, "m", "the sample's mean radius R_m"),
     RD("a_total", a_total, "J", "ledger total A at the start"),
     RI("mass_law", mass_law, "mass law used (0 disc, 1 sphere)"),
-    RI("exact", exact, "1: exact mode"),
+    RF("exact", exact, "1: exact mode"),
     RD("dt", dt, "s", "fixed step used (0 for cvode/arkode)"),
     RD("wall_time_ms", r.wall_ms, "ms", "wall-clock time of the run"),
     RL("steps", r.stats.steps, "solver steps"),

@@ -4,7 +4,7 @@
  * (layer_setup.c: mass law and clump mass default to the sample's) and
  * layer-make (layer_make_study.c: disc, sum). Hertz-Mindlin contacts,
  * physics.md 2.1 (B.1-B.4). It also gives the layer tables' row constructors
- * ROW, CHOICE, FLAG (inputs) and RD, RI, RL, RA (results), on the includer's
+ * ROW, CHOICE, FLAG (inputs) and RD, RI, RF (a flag), RL, RA (results), on the includer's
  * OFF(field) (the field's offset in its struct).
  */
 #ifndef GW_LAYER_SETUP_ROWS_H
@@ -17,6 +17,7 @@
 #define FLAG(nm, f, hl) GW_PARAM_FLAG_ROW(nm, OFF(f), hl)
 #define RD(nm, f, un, hl) GW_RESULT_ROW(nm, GW_PARAM_DOUBLE, OFF(f), un, hl)
 #define RI(nm, f, hl) GW_RESULT_ROW(nm, GW_PARAM_INT, OFF(f), "", hl)
+#define RF(nm, f, hl) GW_RESULT_FLAG(nm, OFF(f), hl)
 #define RL(nm, f, hl) GW_RESULT_ROW(nm, GW_PARAM_LONG, OFF(f), "", hl)
 #define RA(nm, f, un, r, c, names, hl) GW_RESULT_ARRAY(nm, OFF(f), un, r, c, names, hl)
 

@@ -240,7 +240,7 @@ static cJSON *disp_json(const gw_chain_disp_params *p, const gw_chain_disp_resul
     cJSON_AddItemToObject(o, "q", gw_json_doubles(r->qa, r->nq));
     cJSON_AddItemToObject(o, "omega_ridge", gw_json_doubles(r->omega_ridge, r->nq));
     cJSON_AddItemToObject(o, "omega_theory", gw_json_doubles(r->omega_theory, r->nq));
-    cJSON_AddItemToObject(o, "resolved", gw_json_ints(r->resolved, r->nq));
+    cJSON_AddItemToObject(o, "resolved", gw_json_bools(r->resolved, r->nq)); /* a flag per q, as every flag */
     cJSON_AddNumberToObject(o, "steps", (double)r->stats.steps);
     cJSON_AddNumberToObject(o, "rhs_evals", (double)r->stats.rhs_evals);
     cJSON_AddNumberToObject(o, "integrate_ms", r->integrate_ms);
@@ -351,9 +351,9 @@ static int disp_column(const disp_cli *c, const gw_opt *opts, int argc, char **a
         cJSON_AddNumberToObject(js, "dt_out", o.dt_out);
         cJSON_AddNumberToObject(js, "tau_n", r.tau_n);
         cJSON_AddNumberToObject(js, "period", r.period);
-        cJSON_AddNumberToObject(js, "inv_period", 1.0 / r.period);
+        cJSON_AddNumberToObject(js, "inv_period", out.inv_period);
         cJSON_AddNumberToObject(js, "f_peak", sp.f_peak);
-        cJSON_AddNumberToObject(js, "f_peak_rel_diff", sp.f_peak * r.period - 1);
+        cJSON_AddNumberToObject(js, "f_peak_rel_diff", out.f_peak_rel_diff);
         cJSON_AddNumberToObject(js, "df", sp.df);
         cJSON_AddNumberToObject(js, "f_min", sp.f_min);
         cJSON_AddNumberToObject(js, "samples", sp.samples);
@@ -388,7 +388,7 @@ static int disp_column(const disp_cli *c, const gw_opt *opts, int argc, char **a
         else if (code == 0)
             printf("granwave %s dispersion --column-n %d (v_imp %g m/s): wall-force peak %.6g Hz, "
                    "1/P %.6g Hz (rel diff %+.2e), bin %.3g Hz, contact %.4g us\n",
-                   gw_version(), p.n, p.v_imp, sp.f_peak, 1.0 / r.period, sp.f_peak * r.period - 1,
+                   gw_version(), p.n, p.v_imp, sp.f_peak, out.inv_period, out.f_peak_rel_diff,
                    sp.df, r.tau_n * 1e6);
         free(hdr);
         cJSON_Delete(js);

@@ -222,9 +222,11 @@ static void print_text(const drop_cli *d, const gw_chain_drop_result *r)
            gw_chain_drop_impact_rises(r));
     printf("  energy           max relative error %.3g; dissipated %.4g of %.4g J\n",
            r->energy_error, r->e_end.dissipated, r->e0);
+    /* impacts numbered from 0, as the JSON's wall_peaks[].impact, drop_impacts.csv's and
+     * drop_peaks.csv's impact column and Python's arrays (the table numbered from 1) */
     printf("  impact      t (ms)     F_max (N)  cluster  peaks\n");
     for (int j = 0; j < r->n_impacts; j++)
-        printf("  %6d  %10.5f  %12.5g  %7d  %5d\n", j + 1, r->impacts[j].t_fmax * 1e3,
+        printf("  %6d  %10.5f  %12.5g  %7d  %5d\n", j, r->impacts[j].t_fmax * 1e3,
                r->impacts[j].f_max, r->impacts[j].cluster, r->impacts[j].n_peaks);
 }
 
@@ -255,7 +257,7 @@ static int write_tables(const drop_cli *d, const gw_chain_drop_result *r, const 
         return rc;
     gw_write_comment(f.fp, hdr);
     fprintf(f.fp, "# impact: contact episode of bead 1 with the sensor whose largest peak is >= "
-                  "peak_threshold; t_end and v_out empty (nan) while in contact at t_max\n");
+                  "peak_threshold; t_end and v_out nan (JSON null) while in contact at t_max\n");
     fprintf(f.fp, "impact,t_start_s,t_end_s,f_max_N,t_fmax_s,v_in_m_s,v_out_m_s,n_peaks,cluster,located\n");
     for (int j = 0; j < r->n_impacts; j++) {
         const gw_chain_drop_impact *im = &r->impacts[j];

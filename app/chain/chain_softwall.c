@@ -45,14 +45,6 @@ static cJSON *sheet_json(const gw_chain_softwall_outcome *so, int w, const gw_sh
     return e;
 }
 
-/* Progress: one line per wall. */
-static int sw_progress(void *ctx, long done, long total)
-{
-    (void)ctx;
-    fprintf(stderr, "softwall: wall %ld/%ld done\n", done, total);
-    return 0;
-}
-
 static const char *sw_summary =
     "Columns on a soft wall: F_max(N) and tau_max(N) for a wall coefficient K, the\n"
     "saturation number N_d (F_max within --tol of its plateau from N_d on) against\n"
@@ -120,8 +112,16 @@ int gw_cmd_softwall(int argc, char **argv)
     gw_chain_softwall_outcome so;
     memset(&so, 0, sizeof so);
     int rc = gw_cli_study_setup(gw_chain_softwall_setup_params(), &ss, opts, argc, argv, "softwall", &err);
+    /* progress in walls, through the display of falcon, wavespeed and sweep: a
+     * header line once, then whole lines on stderr (--quiet: none) */
+    gw_cli_progress prog;
+    gw_cli_progress_init(&prog, "  ", "walls", 0);
+    char header[128];
+    snprintf(header, sizeof header, "granwave softwall: N = %ld..%ld on %s", a, b,
+             use_sheets ? "every sheet of Table 2 and the rigid wall" : "one wall");
+    prog.header = header;
     if (rc == GW_OK)
-        rc = gw_chain_softwall_run(&ss, quiet ? NULL : sw_progress, NULL, &so, &err);
+        rc = gw_chain_softwall_run(&ss, quiet ? NULL : gw_cli_progress_report, &prog, &so, &err);
     int nw = so.nw, ns = so.nn, per = so.nn, code = 0;
     double kc = so.k_c, t_q = so.t_q_rigid, wall_s = so.wall_time_s;
     const double *kw = so.kwall;

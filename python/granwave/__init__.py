@@ -114,12 +114,22 @@ def layer_impact(*, progress=None, **kwargs):
     return r
 
 
+# the tables' yes/no columns (never NaN); convergence's bounced stays a number: NaN
+# where the impact was undecided, as the sweep table's
+_STATS_FLAGS = (("groups", ("bouncing", "verdict_certain")), ("walls", ("walls_bouncing", "removed_bouncing")),
+                ("diagrams", ("ok", "fit_ok")))
+
+
 def layer_stats(input=None, **kwargs):
     st = _study("layer-stats")
     r = st.run(dict(kwargs, input=input) if input is not None else kwargs)
     for f in st.fields:  # a table without rows (no diagram, no walls): empty columns
         if f.type == _core.DARRAY and f.choices and f.name not in r:
             r[f.name] = {c: _np.empty(0) for c in f.choices}
+    for t, cols in _STATS_FLAGS:  # yes/no columns as bools, as the JSON's true/false
+        for c in cols:
+            if t in r and c in r[t] and not _np.isnan(r[t][c]).any():
+                r[t][c] = r[t][c] != 0
     names = r.pop("group_keys", None)
     keys = r.pop("keys", None)
     if names and keys is not None and "groups" in r:
@@ -182,12 +192,9 @@ _IMPACT_INTS = ("n_peaks", "cluster")
 
 def drop(*, progress=None, **kwargs):
     r = _study("drop").run(kwargs, progress)
-    for k in ("block", "impacts_monotone", "canceled", "cut_first_collision", "open_at_t_max"):
-        r[k] = bool(r[k])
     first = {"n": r.pop("n_first"), "v_imp": r["v_imp"]}
     for k in [k for k in r if k.startswith("first_")]:
         first[k[len("first_"):]] = r.pop(k)
-    first["converged"] = bool(first["converged"])
     r["first_collision"] = first
     r["energy"] = {"e0": r.pop("e0")}
     for k in ("kinetic", "elastic", "gravity", "dissipated", "total"):

@@ -17,9 +17,9 @@ from . import _lib
 from ._lib import lib
 
 # gw_param_type (common/gw_param.h)
-DOUBLE, INT, LONG, FLAG, CHOICE, TEXT, LIST, RANGE, DARRAY, IARRAY = range(10)
+DOUBLE, INT, LONG, FLAG, CHOICE, TEXT, LIST, RANGE, DARRAY, IARRAY, FARRAY = range(11)
 _TYPE_NAMES = ["float", "int", "int", "bool", "choice", "str", "list of float", "range A:B",
-               "array", "int array"]
+               "array", "int array", "bool array"]
 
 # status codes (common/gw_common.h)
 GW_EINVAL, GW_ENOMEM, GW_EIO, GW_ESOLVER, GW_EFORMAT, GW_EUNSUPPORTED, GW_EENERGY, GW_ELIMIT, \
@@ -73,7 +73,8 @@ def _raise(rc, err, what, params=()):
 
 class Result(dict):
     """A study's results: a dict (keys as in the CLI's JSON) with attribute access.
-    Numbers are Python floats and ints, series numpy arrays; tables with named
+    Numbers are Python floats and ints, yes/no results bools (None where the
+    program's JSON has null: undecided), series numpy arrays; tables with named
     columns (the energy ledger) are dicts of arrays."""
 
     def __getattr__(self, name):
@@ -259,7 +260,9 @@ class Study:
         lines = [intro, "", "Keywords (the flags of `granwave %s`, '-' written '_'; units SI):" % self.name]
         lines += ["  " + p.doc() for p in self.params]
         lines += ["", "Results (keys of the returned Result):"]
-        lines += ["  " + f.name + (f" [{f.unit}]" if f.unit else "") + ": " + f.help for f in self.fields]
+        kind = {FLAG: " (bool; 1 is True, 0 False, -1 None)", FARRAY: " (bool array)"}
+        lines += ["  " + f.name + (f" [{f.unit}]" if f.unit else "") + kind.get(f.type, "") + ": " + f.help
+                  for f in self.fields]
         return "\n".join(lines)
 
 
@@ -345,8 +348,11 @@ def read_result(fields, base):
         addr = base + f.offset
         if f.type == DOUBLE:
             v = ctypes.c_double.from_address(addr).value
-        elif f.type in (INT, FLAG):
+        elif f.type == INT:
             v = ctypes.c_int.from_address(addr).value
+        elif f.type == FLAG:  # as the JSON's true, false (and null: -1, undecided)
+            i = ctypes.c_int.from_address(addr).value
+            v = None if i < 0 else bool(i)
         elif f.type == LONG:
             v = ctypes.c_long.from_address(addr).value
         elif f.type == TEXT:  # a text result (names, comma-separated): str or None
@@ -358,7 +364,7 @@ def read_result(fields, base):
         scalars[f.name] = v
         res[f.name] = v
     for f in fields:
-        if f.type not in (DARRAY, IARRAY):
+        if f.type not in (DARRAY, IARRAY, FARRAY):
             continue
         ptr = ctypes.c_void_p.from_address(base + f.offset).value
         rows, cols = _dim(f.rows, scalars), _dim(f.cols, scalars)
@@ -366,6 +372,8 @@ def read_result(fields, base):
             continue
         ctype = ctypes.c_double if f.type == DARRAY else ctypes.c_int
         a = np.ctypeslib.as_array((ctype * (rows * cols)).from_address(ptr)).copy()
+        if f.type == FARRAY:
+            a = a != 0
         if f.cols is not None:
             a = a.reshape(rows, cols)
         if f.choices and a.ndim == 2 and len(f.choices) == cols:

@@ -103,6 +103,10 @@ void gw_stats_table_free(gw_stats_table *t);
 int gw_stats_table_col(const gw_stats_table *t, const char *name);
 /* Index of grid key name, or -1. */
 int gw_stats_table_key(const gw_stats_table *t, const char *name);
+/* Whether rows ra and rb hold one value of grid key `key`: as numbers when
+ * either is one (2 and 2.0, 0 and -0 are one value), else as strings. Groups,
+ * diagrams and the walls pairs compare grid values this way. */
+int gw_stats_table_same(const gw_stats_table *t, long ra, long rb, int key);
 /* Value of fixed parameter name ("# param" line), or NULL. */
 const char *gw_stats_table_param(const gw_stats_table *t, const char *name);
 /* Numeric value of quantity name for row i: the grid value if name is a grid

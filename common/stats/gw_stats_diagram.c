@@ -25,6 +25,7 @@
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_multifit_nlinear.h>
 
+#include "gw_global.h"
 #include "gw_stats.h"
 
 /* ---------------------------------------------------------------- diagram --- */
@@ -71,7 +72,7 @@ static int index_of(const double *v, int n, double x)
 static double mean2(double a, double b)
 {
     if (isfinite(a) && isfinite(b))
-        return 0.5 * (a + b);
+        return 0.5 * a + 0.5 * b; /* as 0.5 (a + b), without its overflow near 1e308 */
     return isfinite(a) ? a : b;
 }
 
@@ -174,6 +175,12 @@ int gw_stats_diagram_make(int n, const double *x, const double *h, const double 
         }
     }
     d->penetration_rm = np ? psum / np : NAN;
+    if (np && !isfinite(d->penetration_rm)) { /* a sum beyond 1e308 */
+        d->penetration_rm = 0;
+        for (int i = 0; i < d->nx; i++)
+            if (d->pts[i].kind == GW_STATS_BND_CROSS && isfinite(d->pts[i].penetration_rm))
+                d->penetration_rm += d->pts[i].penetration_rm / np;
+    }
     int i = 0;
     while (i < d->nx && d->pts[i].kind == GW_STATS_BND_ABOVE)
         d->r_crit = d->xs[i++];
@@ -297,10 +304,9 @@ static int b31_run(b31_problem *pb, const gw_stats_b31 *start, int p, b31_try *t
     return rc;
 }
 
-int gw_stats_b31_fit_points(const double *x, const double *h, int n, const gw_stats_b31 *start,
-                            int free_mask, gw_stats_b31_fit *fit, gw_err *err)
+static int b31_fit(const double *x, const double *h, int n, const gw_stats_b31 *start, int free_mask,
+                   gw_stats_b31_fit *fit, gw_err *err)
 {
-    memset(fit, 0, sizeof *fit);
     int p = popcount4(free_mask & 15);
     if (p == 0)
         return gw_err_set(err, GW_EINVAL, "B.31 fit: no free parameter");
@@ -362,4 +368,18 @@ int gw_stats_b31_fit_points(const double *x, const double *h, int n, const gw_st
                             : NAN;
     gw_stats_b31_min(&fit->p, &fit->x_min, &fit->h_min);
     return GW_OK;
+}
+
+/* GSL's default error handler aborts: a boundary at H* near 1e308 R_m (a
+ * table with penetrations near the largest double, the offset half their
+ * mean) made the QR of the covariance report a rank of 0, and layer-stats
+ * died of SIGABRT. Errors are statuses here: such a start does not converge. */
+int gw_stats_b31_fit_points(const double *x, const double *h, int n, const gw_stats_b31 *start,
+                            int free_mask, gw_stats_b31_fit *fit, gw_err *err)
+{
+    memset(fit, 0, sizeof *fit);
+    gsl_error_handler_t *old = gw_gsl_quiet_begin();
+    const int rc = b31_fit(x, h, n, start, free_mask, fit, err);
+    gw_gsl_quiet_end(old);
+    return rc;
 }

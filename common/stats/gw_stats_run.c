@@ -132,7 +132,7 @@ static int same_except(const gw_stats_table *t, const gw_stats_groups *gs, long 
 {
     for (int k = 0; k < gs->nkeys; k++) {
         int c = gs->key[k];
-        if (c != skip && strcmp(t->grid_value[ra * t->ngrid + c], t->grid_value[rb * t->ngrid + c]) != 0)
+        if (c != skip && !gw_stats_table_same(t, ra, rb, c))
             return 0;
     }
     return 1;
@@ -218,8 +218,7 @@ static int diagrams_make(gw_stats_analysis *A)
             int same = 1;
             for (int k = 0; k < gs->nkeys && same; k++) {
                 int c = gs->key[k];
-                same = c == kx || c == kh ||
-                       strcmp(t->grid_value[ra * t->ngrid + c], t->grid_value[rb * t->ngrid + c]) == 0;
+                same = c == kx || c == kh || gw_stats_table_same(t, ra, rb, c);
             }
             if (same)
                 owner[a] = owner[b];

@@ -94,7 +94,9 @@ static int cell_number(const char *s, double *v)
     return *end == '\0' && !(errno == ERANGE && fabs(*v) > 1);
 }
 
-static int add_param(gw_stats_table *t, char *text)
+static int numeric_setting(const char *name);
+
+static int add_param(gw_stats_table *t, char *text, long ln, gw_err *err)
 {
     char *eq = strchr(text, '=');
     if (!eq || t->nparams >= GW_STATS_MAX_KEYS)
@@ -103,15 +105,41 @@ static int add_param(gw_stats_table *t, char *text)
     char *name = gw_str_trim(text), *value = gw_str_trim(eq + 1);
     if (!*name)
         return GW_OK;
+    /* "# param rb-rm = abc" (or nan) was read as no value: the default 1 */
+    double v;
+    if (numeric_setting(name) && !(cell_number(value, &v) && isfinite(v)))
+        return gw_err_set(err, GW_EFORMAT, "%s:%ld: param %s: '%s' is not a finite number", t->path, ln, name, value);
     t->param_name[t->nparams] = strdup(name);
     t->param_value[t->nparams] = strdup(value);
     if (!t->param_name[t->nparams] || !t->param_value[t->nparams]) {
         free(t->param_name[t->nparams]);
         free(t->param_value[t->nparams]);
-        return GW_ENOMEM;
+        return gw_err_set(err, GW_ENOMEM, "%s: out of memory", t->path);
     }
     t->nparams++;
     return GW_OK;
+}
+
+/* The settings the analysis reads by name (gw_stats_table_value): a grid key,
+ * a "# param" line or the caller's default; all but remove-walls (a flag) are
+ * numbers. */
+static const char *const settings[] = {"point", "rb-rm", "height-rm", "alpha", "vi", "density", "remove-walls"};
+
+static int numeric_setting(const char *name)
+{
+    for (size_t k = 0; k + 1 < sizeof settings / sizeof settings[0]; k++)
+        if (strcmp(name, settings[k]) == 0)
+            return 1;
+    return 0;
+}
+
+/* Whether s is a number as a whole, in range or not (strtod reads all of it). */
+static int numeric_text(const char *s)
+{
+    char *end;
+    errno = 0;
+    (void)strtod(s, &end);
+    return *s && *end == '\0';
 }
 
 static int parse_header(gw_stats_table *t, char *line, long ln, int *ncells, gw_err *err)
@@ -174,6 +202,16 @@ static int parse_header(gw_stats_table *t, char *line, long ln, int *ncells, gw_
         else
             t->col_name[i - xi] = s;
     }
+    /* the settings the analysis reads by name from the grid (or a "# param"
+     * line, or the defaults): among the results, after x_impact (columns
+     * moved by a CSV tool), R_b/R_m was read from the default 1 for every
+     * row and the binary table put all the rows under it (exit 0) */
+    for (int i = 0; i < t->ncols; i++)
+        for (size_t k = 0; k < sizeof settings / sizeof settings[0]; k++)
+            if (strcmp(t->col_name[i], settings[k]) == 0)
+                return gw_err_set(err, GW_EFORMAT, "%s:%ld: column '%s' comes after x_impact, among the results: a "
+                                  "grid key goes between 'case' and 'x_impact' (were the columns reordered?)", t->path,
+                                  ln, settings[k]);
     for (int k = 0; k < gw_stats_table_nrequired; k++)
         if (gw_stats_table_col(t, gw_stats_table_required[k]) < 0)
             return gw_err_set(err, GW_EFORMAT, "%s:%ld: header has no column '%s' (a layer sweep table is required)",
@@ -321,8 +359,14 @@ static int parse_row(gw_stats_table *t, char *line, long ln, int ncells, int cb,
             return gw_err_set(err, GW_EFORMAT, "%s:%ld: grid key %s: empty cell", t->path, ln, t->grid_name[i]);
         double v;
         int num = cell_number(cells[1 + i], &v);
-        if (num && !isfinite(v)) /* a sweep checks every value: nan or inf was never run */
+        /* a sweep checks every value: nan, inf or 1e999 was never run (1e999
+         * was taken for a name, as a sample file's, and its rows left out of
+         * the diagram); R_b/R_m 'abc' gave binary rows of NaN with no points */
+        if ((num && !isfinite(v)) || (!num && numeric_text(cells[1 + i])))
             return gw_err_set(err, GW_EFORMAT, "%s:%ld: grid key %s: '%s' is not a finite number", t->path, ln,
+                              t->grid_name[i], cells[1 + i]);
+        if (!num && numeric_setting(t->grid_name[i]))
+            return gw_err_set(err, GW_EFORMAT, "%s:%ld: grid key %s: '%s' is not a number", t->path, ln,
                               t->grid_name[i], cells[1 + i]);
         t->grid_num[r * t->ngrid + i] = num ? v : NAN;
         t->grid_value[r * t->ngrid + i] = NULL;
@@ -583,7 +627,7 @@ static char *grid_combination(const gw_stats_table *t, long r)
         size_t left = len - (size_t)(p - s);
         int k = isnan(v) ? snprintf(p, left, "%s%s = %s", i ? ", " : "", t->grid_name[i],
                                     t->grid_value[r * t->ngrid + i])
-                         : snprintf(p, left, "%s%s = %.17g", i ? ", " : "", t->grid_name[i], v);
+                         : snprintf(p, left, "%s%s = %.17g", i ? ", " : "", t->grid_name[i], v == 0 ? 0.0 : v);
         p += k;
     }
     return s;
@@ -676,6 +720,11 @@ int gw_stats_table_parse(const char *text, const char *name, gw_stats_table *t, 
     memset(t, 0, sizeof *t);
     t->sweep_rows = t->sweep_cases = -1;
     snprintf(t->path, sizeof t->path, "%s", name);
+    /* a UTF-8 byte-order mark, as spreadsheet programs save CSV: it was read
+     * into the first cell, and the table refused as "header must start with
+     * 'case'" (or its first '#' line taken for the header) */
+    if (strncmp(text, "\xEF\xBB\xBF", 3) == 0)
+        text += 3;
     char *buf = strdup(text);
     if (!buf)
         return gw_err_set(err, GW_ENOMEM, "%s: out of memory", name);
@@ -691,8 +740,8 @@ int gw_stats_table_parse(const char *text, const char *name, gw_stats_table *t, 
             continue;
         if (*line == '#') {
             line = gw_str_trim(line + 1);
-            if (!header_line && strncmp(line, "param ", 6) == 0 && add_param(t, line + 6) != GW_OK)
-                rc = gw_err_set(err, GW_ENOMEM, "%s: out of memory", name);
+            if (!header_line && strncmp(line, "param ", 6) == 0)
+                rc = add_param(t, line + 6, ln, err);
             else if (!header_line && strncmp(line, "grid ", 5) == 0)
                 rc = add_grid_list(t, line + 5, ln, err);
             else if (!header_line && strncmp(line, "input ", 6) == 0)
@@ -799,20 +848,50 @@ double gw_stats_table_value(const gw_stats_table *t, long i, const char *name, d
 
 void gw_stats_moment_of(const double *v, int n, gw_stats_moment *m)
 {
-    double s = 0;
+    double s = 0, lo = INFINITY, hi = -INFINITY;
     int k = 0;
     for (int i = 0; i < n; i++)
         if (isfinite(v[i])) {
             s += v[i];
             k++;
+            lo = fmin(lo, v[i]);
+            hi = fmax(hi, v[i]);
         }
     m->n = k;
+    if (k > 0 && lo == hi) { /* all equal: six values 0.1 gave a std of 1.5e-17 */
+        m->mean = lo;
+        m->std = k > 1 ? 0 : NAN;
+        return;
+    }
     m->mean = k ? s / k : NAN;
-    double ss = 0; /* two-pass: no cancellation in the variance */
+    double ss = 0, dmax = 0; /* two-pass: no cancellation in the variance */
     for (int i = 0; i < n; i++)
-        if (isfinite(v[i]))
-            ss += (v[i] - m->mean) * (v[i] - m->mean);
+        if (isfinite(v[i])) {
+            const double d = v[i] - m->mean;
+            ss += d * d;
+            dmax = fmax(dmax, fabs(d));
+        }
     m->std = k > 1 ? sqrt(ss / (k - 1)) : NAN;
+    /* Finite values whose sum or squared deviations leave the range of a
+     * double: the sum of 1e308 and 1.5e308 gave a mean of inf (printed null),
+     * deviations below 1e-154 squared to 0 (a std of 0 for 1e-320 and
+     * 3e-320). Then in units of the largest |value| (exact scaling up to
+     * rounding); ordinary values keep the plain sums, to the bit. */
+    if (k > 0 && (!isfinite(m->mean) || !isfinite(ss) || (dmax > 0 && dmax < 1e-150))) {
+        double big = 0, su = 0, ssu = 0;
+        for (int i = 0; i < n; i++)
+            if (isfinite(v[i]))
+                big = fmax(big, fabs(v[i]));
+        for (int i = 0; i < n; i++)
+            if (isfinite(v[i]))
+                su += v[i] / big;
+        const double mu = su / k;
+        for (int i = 0; i < n; i++)
+            if (isfinite(v[i]))
+                ssu += (v[i] / big - mu) * (v[i] / big - mu);
+        m->mean = mu * big;
+        m->std = k > 1 ? sqrt(ssu / (k - 1)) * big : NAN;
+    }
 }
 
 typedef struct row_key {
@@ -889,7 +968,7 @@ static int group_stats(const gw_stats_table *t, double criterion, gw_stats_group
     g->run_share = g->run_e + n;
     double *en = w, *e = w + n, *al = w + 2 * n, *pen = w + 3 * n, *penrm = w + 4 * n,
            *loss = w + 5 * n, *dis = w + 6 * n, *reb = w + 7 * n, *fst = w + 8 * n;
-    double sen = 0, se = 0;
+    double sen = 0, se = 0, men = 0, me = 0;
     int nen = 0, ne = 0;
     g->n_valid = g->n_bounced = 0;
     g->energy_error_max = NAN;
@@ -921,13 +1000,17 @@ static int group_stats(const gw_stats_table *t, double criterion, gw_stats_group
         if (isfinite(en[k])) {
             sen += en[k];
             nen++;
+            men += (en[k] - men) / nen;
         }
         if (isfinite(e[k])) {
             se += e[k];
             ne++;
+            me += (e[k] - me) / ne;
         }
-        g->run_e_n[k] = nen ? sen / nen : NAN;
-        g->run_e[k] = ne ? se / ne : NAN;
+        /* the plain sums; the updated means where a sum overflows (values
+         * near 1e308: the running mean read inf) */
+        g->run_e_n[k] = nen ? (isfinite(sen) ? sen / nen : men) : NAN;
+        g->run_e[k] = ne ? (isfinite(se) ? se / ne : me) : NAN;
         g->run_share[k] = (double)g->n_bounced / (k + 1);
     }
     g->x_span = xhi >= xlo ? xhi - xlo : NAN;
@@ -973,15 +1056,30 @@ void gw_stats_groups_free(gw_stats_groups *gs)
     memset(gs, 0, sizeof *gs);
 }
 
-/* The group key of row r: its grouping grid values joined by '\x1f'. */
+int gw_stats_table_same(const gw_stats_table *t, long ra, long rb, int key)
+{
+    const double a = t->grid_num[ra * t->ngrid + key], b = t->grid_num[rb * t->ngrid + key];
+    if (!isnan(a) || !isnan(b))
+        return a == b;
+    return strcmp(t->grid_value[ra * t->ngrid + key], t->grid_value[rb * t->ngrid + key]) == 0;
+}
+
+/* The group key of row r: its grouping grid values joined by '\x1f', numbers
+ * printed back in %.17g (as check_combinations does): the rows "2" and "2.0"
+ * of one R_b/R_m made two groups of one point each, with the same keys. */
 static char *row_key_string(const gw_stats_table *t, const gw_stats_groups *gs, long r)
 {
     size_t len = 1;
     for (int k = 0; k < gs->nkeys; k++)
-        len += strlen(t->grid_value[r * t->ngrid + gs->key[k]]) + 1;
+        len += strlen(t->grid_value[r * t->ngrid + gs->key[k]]) + 32;
     char *s = malloc(len), *p = s;
-    for (int k = 0; s && k < gs->nkeys; k++)
-        p += sprintf(p, "%s\x1f", t->grid_value[r * t->ngrid + gs->key[k]]);
+    for (int k = 0; s && k < gs->nkeys; k++) {
+        const double v = t->grid_num[r * t->ngrid + gs->key[k]];
+        if (isnan(v))
+            p += sprintf(p, "s%s\x1f", t->grid_value[r * t->ngrid + gs->key[k]]);
+        else
+            p += sprintf(p, "n%.17g\x1f", v == 0 ? 0.0 : v); /* -0 and 0 are one value */
+    }
     if (s)
         *p = '\0';
     return s;

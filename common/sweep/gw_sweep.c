@@ -687,9 +687,15 @@ static const char *journal_line_fault(const char *line, size_t len, long ncases)
 {
     if (line[0] == '#')
         return "a comment line among the rows";
+    /* a case number as a sweep writes it: digits at the start of this line
+     * (strtol skipped a blank line's newline and read the next line's number;
+     * then the comma search below started at len - 2 of a one-byte line,
+     * before the line, and read backwards out of the buffer) */
     char *end;
+    if (len < 2 || line[0] < '0' || line[0] > '9')
+        return "not a row (it does not start with a case number)";
     long k = strtol(line, &end, 10);
-    if (end == line || *end != ',')
+    if (end >= line + len || *end != ',')
         return "not a row (it does not start with a case number)";
     const char *comma = NULL;
     for (size_t i = len - 2; i > 0 && !comma; i--)

@@ -1,6 +1,8 @@
 #!/bin/bash
 # run_fuzz.sh SRCDIR BUILDDIR [SECONDS]: build the libFuzzer targets with clang
-# (ASan + UBSan): sweep config, CLI validation, layer sample reader (when the
+# (ASan + UBSan): sweep config, CLI validation, sweep journal (resume) and the
+# table written from it, layer-stats' sweep table reader with the whole
+# analysis (fuzz_stats_table), layer sample reader (when the
 # layer module is present), the studies' parameter tables (fuzz_params: the
 # instrumented gw_param.c over the tables of the build's libgranwave.so, when
 # the build has one without a sanitizer); run each for SECONDS (default 10) from its seed corpus in
@@ -15,6 +17,12 @@ CF="-g -O1 -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=undefined -
 common="$SRC/common/gw_common.c $SRC/common/gw_io.c $SRC/app/gw_cli.c $SRC/common/gw_json.c $SRC/common/gw_param.c"
 clang $CF -o "$out/fuzz_sweep_config" "$SRC/tests/fuzz/fuzz_sweep_config.c" "$SRC/common/sweep/gw_sweep.c" $common -linih -lcjson -lm
 clang $CF -o "$out/fuzz_cli" "$SRC/tests/fuzz/fuzz_cli.c" $common -lcjson -lm
+# the sweep journal a resumed sweep reads back, and the table written from it
+clang $CF -o "$out/fuzz_sweep_journal" "$SRC/tests/fuzz/fuzz_sweep_journal.c" "$SRC/common/sweep/gw_sweep.c" $common \
+    -linih -lcjson -lm
+# the sweep table layer-stats reads, and the whole analysis after it (B.31 fit: GSL)
+clang $CF -o "$out/fuzz_stats_table" "$SRC/tests/fuzz/fuzz_stats_table.c" "$SRC"/common/stats/*.c "$SRC/common/gw_fit.c" \
+    $common -lcjson -lgsl -lgslcblas -lm
 # The layer sample reader (text, and HDF5 when the build has it: inputs up to
 # 16 kB so that the seed HDF5 samples fit). Without HDF5 flags for clang the
 # target is built text-only, with a gw_version.h that says so.
@@ -28,9 +36,9 @@ if [ -f "$SRC/layer/layer_sample.c" ]; then
     fi
     clang -I"$GEN" -I"$SRC/layer" $CF -o "$out/fuzz_layer_sample" "$SRC/tests/fuzz/fuzz_layer_sample.c" \
         "$SRC/layer/layer_sample.c" "$SRC/layer/layer_clump_check.c" "$SRC/common/gw_h5.c" $common $H5 -lcjson -lm
-    targets="sweep_config cli layer_sample"
+    targets="sweep_config cli sweep_journal stats_table layer_sample"
 else
-    targets="sweep_config cli"
+    targets="sweep_config cli sweep_journal stats_table"
 fi
 # The parameter tables of every study (gw_study_get): gw_param.c and the
 # validation it calls are compiled here, instrumented, and take precedence over
@@ -54,9 +62,13 @@ export LSAN_OPTIONS="suppressions=$out/lsan.supp:print_suppressions=0"
 fail=0
 for t in $targets; do
     work=$(mktemp -d); len=4096
-    [ "$t" = layer_sample ] && len=16384
-    if (cd "$out" && "./fuzz_$t" -max_total_time="$T" -max_len=$len -print_final_stats=0 "$work" "$SRC/tests/fuzz/corpus/$t" >"$out/fuzz_$t.log" 2>&1); then
-        echo "PASS: fuzz_$t ran $T s: $(grep -Eo 'DONE +cov: [0-9]+|#[0-9]+ +DONE[^$]*' "$out/fuzz_$t.log" | tail -1) $(grep -c . "$out/fuzz_$t.log") log lines"
+    [ "$t" = layer_sample ] || [ "$t" = stats_table ] && len=16384
+    # in the test command (10 s or less) the targets added in the thirteenth
+    # pass replay their corpus only; longer runs fuzz them as the others
+    mode="-max_total_time=$T"
+    case "$t" in sweep_journal|stats_table) [ "$T" -le 10 ] && mode="-runs=0" ;; esac
+    if (cd "$out" && "./fuzz_$t" "$mode" -max_len=$len -print_final_stats=0 "$work" "$SRC/tests/fuzz/corpus/$t" >"$out/fuzz_$t.log" 2>&1); then
+        echo "PASS: fuzz_$t ran ${mode#-}: $(grep -Eo 'DONE +cov: [0-9]+|#[0-9]+ +DONE[^$]*' "$out/fuzz_$t.log" | tail -1) $(grep -c . "$out/fuzz_$t.log") log lines"
     else
         echo "FAIL: fuzz_$t: see $out/fuzz_$t.log"; tail -20 "$out/fuzz_$t.log"; fail=1
     fi

@@ -351,6 +351,8 @@ typedef struct gw_layer_make_result {
     long steps, rebuilds;
     int n_removed;        /* particles (clumps: grains) above height_rm R_m taken away */
     int n_bodies, n_discs; /* grains and discs in the sample */
+    double t_judge;       /* s: the settling is judged from here on (0.1 s of settling, and the
+                             lowest particle's free fall to the floor): a t_max below it cannot converge */
 } gw_layer_make_result;
 
 /* Pluviate a sample (lp: material, friction; width and mass law are taken from

@@ -128,6 +128,20 @@ static int check_step(const gw_layer_params *lp, const gw_layer_make_params *m, 
 
 /* Settle bodies b (positions updated, velocities zeroed) with the given G.
  * Returns the simulated time in *t and the final kinetic energy in *ke. */
+#define SETTLE_CHUNK 0.01 /* s: the energy is looked at every chunk */
+#define SETTLE_CHUNKS_MIN 10 /* chunks before the pile may be called settled */
+
+/* When settle() may first call the pile settled: SETTLE_CHUNKS_MIN chunks, and
+ * the lowest body's free fall t_land = sqrt(2 gap / g) to the floor. */
+static double settle_judge(const gw_layer_params *lp, int n, const gw_layer_body *b)
+{
+    double gap = INFINITY;
+    for (int i = 0; i < n; i++)
+        gap = fmin(gap, b[i].y - b[i].r);
+    const double t_land = gap > 0 ? sqrt(2 * gap / lp->gravity) : 0;
+    return fmax(SETTLE_CHUNKS_MIN * SETTLE_CHUNK, t_land);
+}
+
 static int settle(const gw_layer_params *lp, const gw_layer_make_params *m, double t0, double t_max, int n,
                   gw_layer_body *b, double thr, double *t, double *ke, int *conv,
                   long *steps, long *rebuilds, gw_err *err)
@@ -148,7 +162,7 @@ static int settle(const gw_layer_params *lp, const gw_layer_make_params *m, doub
     for (int i = 0; i < n; i++)
         gap = fmin(gap, b[i].y - b[i].r);
     const double t_land = gap > 0 ? sqrt(2 * gap / lp->gravity) : 0;
-    const double chunk = 0.01;
+    const double chunk = SETTLE_CHUNK;
     /* chunks of 0.01 s, the last one ending at t_max (a t_max below one chunk
      * ran no step at all) */
     for (int k = 1; rc == GW_OK && (k - 1) * chunk < t_max * (1 - 1e-12); k++) {
@@ -164,7 +178,7 @@ static int settle(const gw_layer_params *lp, const gw_layer_make_params *m, doub
             rc = gw_err_set(err, GW_ECANCELED, "stopped by the progress callback at t = %.4g s of settling", t0 + tk);
             break;
         }
-        if (k >= 10 && tk >= t_land && *ke < thr) {
+        if (k >= SETTLE_CHUNKS_MIN && tk >= t_land && *ke < thr) {
             *conv = 1;
             break;
         }
@@ -230,6 +244,8 @@ static int settle_all(const gw_layer_params *lp, const gw_layer_make_params *m, 
     int rc = GW_OK;
     *t = *ke = 0;
     *conv = 0;
+    /* (with a soft phase, the relaxation's own chunks come after it) */
+    res->t_judge = settle_judge(lp, n, b) + (m->modulus_factor < 1 ? SETTLE_CHUNKS_MIN * SETTLE_CHUNK : 0);
     /* t_max bounds the whole settling (the work bound counts t_max / dt
      * steps): with modulus_factor < 1 the soft phase takes at most half of it
      * and the relaxation the rest (each ran to t_max: --t-max 0.05 settled

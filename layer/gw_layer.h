@@ -54,8 +54,11 @@ typedef struct gw_layer_params {
                              the paper]; used to settle pluviated samples */
     double skin;          /* Verlet skin of the contact list, m [0.1] */
     int no_events;        /* 1: do not stop at contact openings/closings and
-                             stick/slip switches (only at list rebuilds): faster,
-                             lower order; used for pluviation [0] */
+                             stick/slip switches: faster, lower order; used for
+                             pluviation. With rk4 and no block watch the list
+                             rebuild is then checked at the steps' ends (as
+                             verlet does) and F_t of open contacts zeroed after
+                             every step: the run does not depend on the skin [0] */
     int potential_from_start; /* 1: gravitational energy measured from the initial
                                  positions (A = initial kinetic + strain energy);
                                  0: from y = 0 [0] */

@@ -101,6 +101,9 @@ fi
 
 # 4 ----------------------------------------------------------------------------
 lib=$(ls "$(dirname "$GW")"/lib/libgranwave.so* 2>/dev/null | head -1)
+if [ -n "$lib" ] && ldd "$lib" 2>/dev/null | grep -q libasan; then
+    lib="" # a sanitizer build's library cannot be loaded into Python without its runtime first
+fi
 if [ -n "$SRC" ] && [ -n "$lib" ] && /usr/bin/python3 -c 'import numpy' 2>/dev/null; then
     if GRANWAVE_LIB=$lib PYTHONPATH=$SRC/python timeout 300 /usr/bin/python3 - <<'PY'
 import sys, threading
@@ -126,7 +129,7 @@ PY
     else ko "pluviations in threads differ from the sequential ones"
     fi
 else
-    echo "SKIP: threads (no /usr/bin/python3 with numpy or no shared library next to $GW)"
+    echo "SKIP: threads (no /usr/bin/python3 with numpy, or no shared library next to $GW that Python can load)"
 fi
 
 # 5 ----------------------------------------------------------------------------

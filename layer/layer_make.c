@@ -296,7 +296,7 @@ static void finish(const gw_layer_params *lp, const gw_layer_make_params *m, con
 }
 
 /* Initial clumps: shapes drawn per clump, packed in rows of bounding boxes.
- * Returns the number of discs (members) in *nd; b has LAYER_CLUMP_MAX n room. */
+ * Returns the number of discs (members) in *nd; b (NULL: count only) has room for them. */
 static void clumps_initial(const gw_layer_make_params *m, double width, gw_layer_body *b, int *nd)
 {
     const double cv = cbrt(m->volume_ratio), rmin = 2 * m->rm / (1 + cv), rmax = cv * rmin;
@@ -328,7 +328,10 @@ static void clumps_initial(const gw_layer_make_params *m, double width, gw_layer
         if (xc + x1 > width) /* a clump wider than the box: centred, it settles tilted */
             xc = 0.5 * width;
         for (int q = 0; q < km; q++)
-            b[k++] = (gw_layer_body){.x = xc + ox[q], .y = yc + oy[q], .r = r[q], .clump = j + 1};
+            if (b)
+                b[k++] = (gw_layer_body){.x = xc + ox[q], .y = yc + oy[q], .r = r[q], .clump = j + 1};
+            else
+                k++;
         cx += (x1 - x0) + gap;
         rowh = fmax(rowh, y1 - y0);
     }
@@ -361,25 +364,26 @@ static int make_clumps(const gw_layer_params *lp0, const gw_layer_make_params *m
     int rc = box_params(lp0, m, &lp, err);
     if (rc != GW_OK)
         return rc;
-    gw_layer_body *b = calloc(LAYER_CLUMP_MAX * (size_t)m->n, sizeof *b);
+    /* the member discs counted first (the shapes drawn, nothing stored): the
+     * work bound of check_work on them (--clumps --n 100000 ran on for hours as
+     * the discs' pluviation did) before anything is allocated (the library's
+     * n = 1e6 held 6e6 bodies, 336 MB, before it was refused) */
+    int nd = 0;
+    clumps_initial(m, lp.width, NULL, &nd);
+    const double steps = m->t_max / m->dt;
+    if (steps * nd > 1e10)
+        return gw_err_set(err, GW_EINVAL, "n: %d clumps (%d discs) over %.3g steps to t-max = %g s are about %.3g "
+                          "particle-steps, more than 1e10: lower n to %.0f, or t-max, or raise dt", m->n, nd, steps,
+                          m->t_max, steps * nd, floor(1e10 / steps * m->n / nd));
+    gw_layer_body *b = calloc((size_t)nd, sizeof *b);
     if (!b)
         return gw_err_set(err, GW_ENOMEM, "layer-make: out of memory");
-    int nd = 0;
     clumps_initial(m, lp.width, b, &nd);
     double t, ke;
     int conv;
     if ((rc = check_step(&lp, m, b, nd, err)) != GW_OK) {
         free(b);
         return rc;
-    }
-    /* the work bound of check_work on the member discs alone (--clumps --n
-     * 100000 ran on for hours as the discs' pluviation did) */
-    const double steps = m->t_max / m->dt;
-    if (steps * nd > 1e10) {
-        free(b);
-        return gw_err_set(err, GW_EINVAL, "n: %d clumps (%d discs) over %.3g steps to t-max = %g s are about %.3g "
-                          "particle-steps, more than 1e10: lower n to %.0f, or t-max, or raise dt", m->n, nd, steps,
-                          m->t_max, steps * nd, floor(1e10 / steps * m->n / nd));
     }
     rc = settle_all(&lp, m, nd, b, &t, &ke, &conv, res, err);
     /* keep the clumps lying wholly below height_rm R_m; ids renumbered 0.. */

@@ -13,7 +13,9 @@
  * Optional speed-up: settle with G * modulus_factor, then relax with the true G
  * (same damping) until the threshold is met again.
  * Deterministic for a seed: splitmix64 (Steele, Lea, Flood 2014) drives all
- * random draws; the integration is RK4 with a fixed step.
+ * random draws; the integration is RK4 with a fixed step (no contact events;
+ * the contact list checked at the steps' ends and F_t of open contacts zeroed
+ * after every step, so that the sample does not depend on the skin: layer_sim.c).
  * Type B soil (clumps = 1): n rigid clumps instead of n discs. Each clump draws
  * its equivalent radius R_eq from the discs' grading (same curve), its aspect
  * ratio uniform in [1, aspect_max] ([1, 4] by default) and its orientation uniform in [0, pi); its shape is

@@ -54,8 +54,11 @@ typedef struct gw_layer_params {
                              the paper]; used to settle pluviated samples */
     double skin;          /* Verlet skin of the contact list, m [0.1] */
     int no_events;        /* 1: do not stop at contact openings/closings and
-                             stick/slip switches (only at list rebuilds): faster,
-                             lower order; used for pluviation [0] */
+                             stick/slip switches: faster, lower order; used for
+                             pluviation. With rk4 and no block watch the list
+                             rebuild is then checked at the steps' ends (as
+                             verlet does) and F_t of open contacts zeroed after
+                             every step: the run does not depend on the skin [0] */
     int potential_from_start; /* 1: gravitational energy measured from the initial
                                  positions (A = initial kinetic + strain energy);
                                  0: from y = 0 [0] */
@@ -351,6 +354,8 @@ typedef struct gw_layer_make_result {
     long steps, rebuilds;
     int n_removed;        /* particles (clumps: grains) above height_rm R_m taken away */
     int n_bodies, n_discs; /* grains and discs in the sample */
+    double t_judge;       /* s: the settling is judged from here on (0.1 s of settling, and the
+                             lowest particle's free fall to the floor): a t_max below it cannot converge */
 } gw_layer_make_result;
 
 /* Pluviate a sample (lp: material, friction; width and mass law are taken from

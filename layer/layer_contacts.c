@@ -170,7 +170,7 @@ int layer_contacts_build(gw_layer *L, gw_err *err)
         ny[6 * nb + k] = 0;
         const layer_contact *old = L->nc > 0 ? bsearch(&c[k], L->c, (size_t)L->nc, sizeof *c,
                                                        contact_cmp) : NULL;
-        if (!old && L->dem && L->listed) { /* a pair in contact that the last list did not hold */
+        if (!old && L->stepend && L->listed) { /* a pair in contact that the last list did not hold */
             double un, nn[2];
             layer_contact_geometry(L, &c[k], L->y, &un, nn, NULL);
             if (un > 0) {

@@ -120,6 +120,12 @@ struct gw_layer {
      * evaluation (0 when open), which for verlet is the state at the step end:
      * the start of the next step for layer_dem_drift (layer_dem.c). */
     int dem;
+    /* The list rebuild is checked at the ends of the steps, unlocated, with a
+     * margin (layer_roots): DEM mode, and rk4 without events or a block watch
+     * (the pluviation), which then also zeroes F_t of open contacts after every
+     * step (layer_step_project): the step grid and the state then do not depend
+     * on the skin. */
+    int stepend;
     long *drift;        /* [cap_y] */
     double *un_last;    /* [cap_c] */
     struct layer_tscr *tscr; /* [cap_c], DEM mode only */
@@ -331,12 +337,12 @@ int layer_clump_shape(double req, double aspect, double angle, double *ox, doubl
  * L->sys for the new dimension. */
 int layer_contacts_build(gw_layer *L, gw_err *err);
 
-/* Number of rebuild roots: one per particle, or in DEM mode one for all (the
- * smallest margin: DEM mode does not locate it, and one sign to watch per step
- * is cheaper than n). */
+/* Number of rebuild roots: one per particle, or when the rebuild is checked at
+ * the steps' ends (L->stepend) one for all (the smallest margin: it is not
+ * located, and one sign to watch per step is cheaper than n). */
 static inline int layer_root_nrebuild(const gw_layer *L)
 {
-    return L->dem ? 1 : L->n;
+    return L->stepend ? 1 : L->n;
 }
 /* Index of the first rebuild root and of the first stick/slip root (-1: none). */
 static inline int layer_root_rebuild(const gw_layer *L)
@@ -381,6 +387,11 @@ void layer_ledger_sum(const gw_layer *L, gw_layer_energy *global, gw_layer_energ
 /* The DEM step (layer_dem.c): gw_system.drift_fn and .project in DEM mode. */
 int layer_dem_drift(double t, double h, const double *ph, double *y, void *P);
 int layer_dem_project(double t, double h, double *y, double *ydot, void *P);
+/* rk4 with the rebuild at the steps' ends (L->stepend, layer_sim.c): after every
+ * step, F_t of the contacts open at its end is zeroed (and a state far outside
+ * the Coulomb cap brought back), what every stop of the run did before, so that
+ * the stops (outputs, rebuilds) change nothing of the state. */
+int layer_step_project(double t, double h, double *y, double *ydot, void *P);
 int layer_dem_rhs(double t, const double *y, double *yd, void *P);
 /* The rhs call right after a DEM list rebuild (L->dem_carry): yd from L->dem_f
  * (contacts 0), the disc geometry of y into L->geo; clears dem_carry. */

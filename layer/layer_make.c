@@ -13,7 +13,9 @@
  * Optional speed-up: settle with G * modulus_factor, then relax with the true G
  * (same damping) until the threshold is met again.
  * Deterministic for a seed: splitmix64 (Steele, Lea, Flood 2014) drives all
- * random draws; the integration is RK4 with a fixed step.
+ * random draws; the integration is RK4 with a fixed step (no contact events;
+ * the contact list checked at the steps' ends and F_t of open contacts zeroed
+ * after every step, so that the sample does not depend on the skin: layer_sim.c).
  * Type B soil (clumps = 1): n rigid clumps instead of n discs. Each clump draws
  * its equivalent radius R_eq from the discs' grading (same curve), its aspect
  * ratio uniform in [1, aspect_max] ([1, 4] by default) and its orientation uniform in [0, pi); its shape is
@@ -128,6 +130,20 @@ static int check_step(const gw_layer_params *lp, const gw_layer_make_params *m, 
 
 /* Settle bodies b (positions updated, velocities zeroed) with the given G.
  * Returns the simulated time in *t and the final kinetic energy in *ke. */
+#define SETTLE_CHUNK 0.01 /* s: the energy is looked at every chunk */
+#define SETTLE_CHUNKS_MIN 10 /* chunks before the pile may be called settled */
+
+/* When settle() may first call the pile settled: SETTLE_CHUNKS_MIN chunks, and
+ * the lowest body's free fall t_land = sqrt(2 gap / g) to the floor. */
+static double settle_judge(const gw_layer_params *lp, int n, const gw_layer_body *b)
+{
+    double gap = INFINITY;
+    for (int i = 0; i < n; i++)
+        gap = fmin(gap, b[i].y - b[i].r);
+    const double t_land = gap > 0 ? sqrt(2 * gap / lp->gravity) : 0;
+    return fmax(SETTLE_CHUNKS_MIN * SETTLE_CHUNK, t_land);
+}
+
 static int settle(const gw_layer_params *lp, const gw_layer_make_params *m, double t0, double t_max, int n,
                   gw_layer_body *b, double thr, double *t, double *ke, int *conv,
                   long *steps, long *rebuilds, gw_err *err)
@@ -148,7 +164,7 @@ static int settle(const gw_layer_params *lp, const gw_layer_make_params *m, doub
     for (int i = 0; i < n; i++)
         gap = fmin(gap, b[i].y - b[i].r);
     const double t_land = gap > 0 ? sqrt(2 * gap / lp->gravity) : 0;
-    const double chunk = 0.01;
+    const double chunk = SETTLE_CHUNK;
     /* chunks of 0.01 s, the last one ending at t_max (a t_max below one chunk
      * ran no step at all) */
     for (int k = 1; rc == GW_OK && (k - 1) * chunk < t_max * (1 - 1e-12); k++) {
@@ -164,7 +180,7 @@ static int settle(const gw_layer_params *lp, const gw_layer_make_params *m, doub
             rc = gw_err_set(err, GW_ECANCELED, "stopped by the progress callback at t = %.4g s of settling", t0 + tk);
             break;
         }
-        if (k >= 10 && tk >= t_land && *ke < thr) {
+        if (k >= SETTLE_CHUNKS_MIN && tk >= t_land && *ke < thr) {
             *conv = 1;
             break;
         }
@@ -230,6 +246,8 @@ static int settle_all(const gw_layer_params *lp, const gw_layer_make_params *m, 
     int rc = GW_OK;
     *t = *ke = 0;
     *conv = 0;
+    /* (with a soft phase, the relaxation's own chunks come after it) */
+    res->t_judge = settle_judge(lp, n, b) + (m->modulus_factor < 1 ? SETTLE_CHUNKS_MIN * SETTLE_CHUNK : 0);
     /* t_max bounds the whole settling (the work bound counts t_max / dt
      * steps): with modulus_factor < 1 the soft phase takes at most half of it
      * and the relaxation the rest (each ran to t_max: --t-max 0.05 settled
@@ -280,7 +298,7 @@ static void finish(const gw_layer_params *lp, const gw_layer_make_params *m, con
 }
 
 /* Initial clumps: shapes drawn per clump, packed in rows of bounding boxes.
- * Returns the number of discs (members) in *nd; b has LAYER_CLUMP_MAX n room. */
+ * Returns the number of discs (members) in *nd; b (NULL: count only) has room for them. */
 static void clumps_initial(const gw_layer_make_params *m, double width, gw_layer_body *b, int *nd)
 {
     const double cv = cbrt(m->volume_ratio), rmin = 2 * m->rm / (1 + cv), rmax = cv * rmin;
@@ -312,7 +330,10 @@ static void clumps_initial(const gw_layer_make_params *m, double width, gw_layer
         if (xc + x1 > width) /* a clump wider than the box: centred, it settles tilted */
             xc = 0.5 * width;
         for (int q = 0; q < km; q++)
-            b[k++] = (gw_layer_body){.x = xc + ox[q], .y = yc + oy[q], .r = r[q], .clump = j + 1};
+            if (b)
+                b[k++] = (gw_layer_body){.x = xc + ox[q], .y = yc + oy[q], .r = r[q], .clump = j + 1};
+            else
+                k++;
         cx += (x1 - x0) + gap;
         rowh = fmax(rowh, y1 - y0);
     }
@@ -345,25 +366,26 @@ static int make_clumps(const gw_layer_params *lp0, const gw_layer_make_params *m
     int rc = box_params(lp0, m, &lp, err);
     if (rc != GW_OK)
         return rc;
-    gw_layer_body *b = calloc(LAYER_CLUMP_MAX * (size_t)m->n, sizeof *b);
+    /* the member discs counted first (the shapes drawn, nothing stored): the
+     * work bound of check_work on them (--clumps --n 100000 ran on for hours as
+     * the discs' pluviation did) before anything is allocated (the library's
+     * n = 1e6 held 6e6 bodies, 336 MB, before it was refused) */
+    int nd = 0;
+    clumps_initial(m, lp.width, NULL, &nd);
+    const double steps = m->t_max / m->dt;
+    if (steps * nd > 1e10)
+        return gw_err_set(err, GW_EINVAL, "n: %d clumps (%d discs) over %.3g steps to t-max = %g s are about %.3g "
+                          "particle-steps, more than 1e10: lower n to %.0f, or t-max, or raise dt", m->n, nd, steps,
+                          m->t_max, steps * nd, floor(1e10 / steps * m->n / nd));
+    gw_layer_body *b = calloc((size_t)nd, sizeof *b);
     if (!b)
         return gw_err_set(err, GW_ENOMEM, "layer-make: out of memory");
-    int nd = 0;
     clumps_initial(m, lp.width, b, &nd);
     double t, ke;
     int conv;
     if ((rc = check_step(&lp, m, b, nd, err)) != GW_OK) {
         free(b);
         return rc;
-    }
-    /* the work bound of check_work on the member discs alone (--clumps --n
-     * 100000 ran on for hours as the discs' pluviation did) */
-    const double steps = m->t_max / m->dt;
-    if (steps * nd > 1e10) {
-        free(b);
-        return gw_err_set(err, GW_EINVAL, "n: %d clumps (%d discs) over %.3g steps to t-max = %g s are about %.3g "
-                          "particle-steps, more than 1e10: lower n to %.0f, or t-max, or raise dt", m->n, nd, steps,
-                          m->t_max, steps * nd, floor(1e10 / steps * m->n / nd));
     }
     rc = settle_all(&lp, m, nd, b, &t, &ke, &conv, res, err);
     /* keep the clumps lying wholly below height_rm R_m; ids renumbered 0.. */

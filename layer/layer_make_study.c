@@ -69,6 +69,7 @@ static const gw_param make_fields[] = {
     RD("t_settle", r.t_settle, "s", "simulated settling time"),
     RD("ke_final", r.ke_final, "J", "kinetic energy at the end"),
     RF("converged", r.converged, "1: the kinetic energy went below the threshold"),
+    RD("t_judge", r.t_judge, "s", "the settling is judged from this time on (a t-max below it cannot converge)"),
     RD("max_overlap_over_rp", r.max_overlap, "", "largest u_n / R_p at the end"),
     RI("n_removed_above_height", r.n_removed, "particles (clumps: grains) above height-rm taken away"),
     RI("n_bodies", r.n_bodies, "grains (clumps) in the sample"),

@@ -499,7 +499,7 @@ static int layer_roots(double t, const double *y, double *g, void *P)
     gw_layer *L = P;
     if (L->watch) /* (the only write: the watch's probe and extremes) */
         layer_watch_roots(L, t, y, g);
-    /* DEM mode reports the rebuild root at the end of the step that crossed it
+    /* DEM mode (and rk4 in L->stepend) reports the rebuild root at the end of the step that crossed it
      * (not located): a particle i rebuilds the list at half the skin less a
      * margin for the next step, the larger of 0.05 skin and twice what it
      * moves in a step at its speed (|v| + |w| |arm|) dt, so that no step can
@@ -509,7 +509,7 @@ static int layer_roots(double t, const double *y, double *g, void *P)
      * list's timing does not change the DEM trajectory. */
     const double half = 0.5 * L->p.skin, h = half, dt2 = 2 * L->sp.dt;
     const int r0 = layer_root_rebuild(L), s0 = layer_root_slip(L);
-    if (L->dem) { /* one rebuild root (layer_root_nrebuild): the smallest margin */
+    if (L->stepend) { /* one rebuild root (layer_root_nrebuild): the smallest margin */
         double gmin = 1.0;
         const double m0 = 0.1 * half, m02 = m0 * m0 / (dt2 * dt2), h0 = (half - m0) * (half - m0);
         for (int i = 0; i < L->n; i++) {
@@ -597,7 +597,8 @@ void layer_system_fill(gw_layer *L)
     for (long q = 6L * n; q < L->dim; q++) /* DEM: F_t advanced by layer_dem_drift */
         L->drift[q] = L->dem && L->tan_phi > 0 && q < 6L * n + L->nc ? GW_DRIFT_MODEL : -1;
     L->sys.drift = L->drift;
-    L->sys.project = L->dem ? layer_dem_project : NULL;
+    L->sys.project = L->dem ? layer_dem_project : L->stepend ? layer_step_project : NULL;
+    L->sys.roots_at_step_end = L->stepend;
     L->sys.drift_fn = L->dem ? layer_dem_drift : NULL;
 }
 

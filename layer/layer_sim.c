@@ -5,7 +5,8 @@
  * - At every root of a contact overlap (u_n = 0) the solver is restarted
  *   (gw_solver_reset), because the Hertz force is only C^1 there.
  * - When a particle has moved half the skin since the list was built (root
- *   (s/2)^2 - |dx|^2 = 0) the contact list is rebuilt: the state dimension
+ *   (s/2)^2 - |dx|^2 = 0; checked at the steps' ends with a margin in DEM mode
+ *   and for rk4 without events, L->stepend) the contact list is rebuilt: the state dimension
  *   changes, so the solver is freed and re-created with the new gw_system. In
  *   DEM mode the new solver starts from the old one's rates (gw_solver_rates,
  *   L->dem_f) and the contacts keep what the step knew of them, so that a
@@ -33,16 +34,31 @@
 /* Project F_t; closing[k] > 0 marks contacts that just closed, slipping[k] > 0
  * contacts that just reached the Coulomb cap (both may be NULL).
  * Returns the number of components changed. */
-static int project(gw_layer *L, const int *closing, const int *slipping)
+static int project_y(gw_layer *L, double *y, const int *closing, const int *slipping)
 {
     int changed = 0;
     const int n = L->nb;
     for (int k = 0; k < L->nc; k++) {
-        double *f = L->y + 6 * n + k;
+        double *f = y + 6 * n + k;
         if (*f == 0)
             continue;
         double un, nn[2];
-        layer_contact_geometry(L, &L->c[k], L->y, &un, nn, NULL);
+        const layer_contact *c = &L->c[k];
+        if (L->off) {
+            layer_contact_geometry(L, c, y, &un, nn, NULL);
+        } else { /* discs: the overlap alone (body = disc), as layer_contact_geometry has it */
+            const double *sa = y + 6 * c->qa;
+            if (c->b == LAYER_LEFT)
+                un = c->ra - sa[0];
+            else if (c->b == LAYER_RIGHT)
+                un = c->ra - (L->p.width - sa[0]);
+            else if (c->b == LAYER_BOTTOM)
+                un = c->ra - sa[1];
+            else {
+                const double *sb = y + 6 * c->qb, dx = sb[0] - sa[0], dy = sb[1] - sa[1];
+                un = c->ra + c->rb - sqrt(dx * dx + dy * dy);
+            }
+        }
         double cap = un > 0 ? L->tan_phi * L->c[k].kn * un * sqrt(un) : 0;
         double nf = *f;
         if ((closing && closing[k] > 0) || !(un > 0))
@@ -59,6 +75,18 @@ static int project(gw_layer *L, const int *closing, const int *slipping)
     L->st.projections += changed;
     L->stamp += changed > 0;
     return changed;
+}
+
+static int project(gw_layer *L, const int *closing, const int *slipping)
+{
+    return project_y(L, L->y, closing, slipping);
+}
+
+int layer_step_project(double t, double h, double *y, double *ydot, void *P)
+{
+    (void)t, (void)h, (void)ydot;
+    project_y(P, y, NULL, NULL);
+    return 0;
 }
 
 static void harvest_stats(gw_layer *L)
@@ -93,6 +121,12 @@ int gw_layer_start(gw_layer *L, const gw_solver_type *type, const gw_solver_para
     L->type = type;
     L->sp = *sp;
     L->dem = type == gw_solver_verlet;
+    /* rk4 without contact events or a block watch (the pluviation) need not
+     * locate the list rebuild: checked at the steps' ends with a margin, as
+     * verlet does, and F_t projected after every step, the run does not depend
+     * on the skin (with the rebuild roots located, each rebuild added a
+     * shortened step and a projection at a skin-dependent instant) */
+    L->stepend = L->dem || (type == gw_solver_rk4 && L->p.no_events && !L->watch);
     if (L->dem) { /* explicit DEM: no contact events (gw_layer_params.no_events) */
         L->p.no_events = 1;
         free(L->ymid), free(L->dem_book), free(L->facc), free(L->dem_rate), free(L->dem_f);

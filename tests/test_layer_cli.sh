@@ -28,20 +28,20 @@ trap 'rm -rf "$tmp"' EXIT
 fails=0
 check() { if eval "$2"; then echo "PASS: $1"; else echo "FAIL: $1"; fails=$((fails + 1)); fi; }
 
-"$gw" layer-make --n 60 --width-rm 16 --seed 3 --out "$tmp/a.txt" --json > "$tmp/make.json" 2> "$tmp/make.err"
+"$gw" layer-make --n 60 --width-rm 16 --seed 4 --out "$tmp/a.txt" --json > "$tmp/make.json" 2> "$tmp/make.err"
 check "layer-make exits 0" "[ $? -eq 0 ]"
-"$gw" layer-make --n 60 --width-rm 16 --seed 3 --out "$tmp/b.txt" > /dev/null
+"$gw" layer-make --n 60 --width-rm 16 --seed 4 --out "$tmp/b.txt" > /dev/null
 check "layer-make deterministic for a seed (same particle lines)" \
   "cmp -s <(grep -v '^#' '$tmp/a.txt') <(grep -v '^#' '$tmp/b.txt')"
 check "layer-make JSON has n = 60 and a porosity" \
   "python3 -c 'import json,sys; d=json.load(open(\"$tmp/make.json\")); sys.exit(0 if d[\"n\"]==60 and 0<d[\"porosity\"]<1 else 1)'"
 # a pluviation cut before it settles: the sample is kept, but never silently
-"$gw" layer-make --n 60 --width-rm 16 --seed 3 --t-max 0.02 --out "$tmp/u.txt" --json > "$tmp/makeu.json" 2> "$tmp/makeu.err"
+"$gw" layer-make --n 60 --width-rm 16 --seed 4 --t-max 0.02 --out "$tmp/u.txt" --json > "$tmp/makeu.json" 2> "$tmp/makeu.err"
 check "layer-make not settled at --t-max: exit 0, one warning line naming t-max, JSON converged false" \
   "[ $? -eq 0 ] && [ \$(wc -l < '$tmp/makeu.err') -eq 1 ] && grep -q 'did not settle.*t-max = 0.02' '$tmp/makeu.err' && python3 -c 'import json,sys; sys.exit(0 if json.load(open(\"$tmp/makeu.json\"))[\"converged\"] is False else 1)'"
 check "layer-make that settles: no warning" "[ ! -s '$tmp/make.err' ]"
 
-"$gw" layer-make --n 60 --width-rm 16 --seed 3 --height-rm 5 --out "$tmp/h.txt" --json > "$tmp/makeh.json"
+"$gw" layer-make --n 60 --width-rm 16 --seed 4 --height-rm 5 --out "$tmp/h.txt" --json > "$tmp/makeh.json"
 check "layer-make --height-rm 5: same settled sample cut at 5 R_m (every top <= 5 R_m, fewer particles, kept ones unchanged)" "python3 - '$tmp' <<'PY'
 import json, sys
 t = sys.argv[1]
@@ -166,7 +166,7 @@ for f in ('ledger.csv', 'crowns.csv', 'crowns_peaks.csv'):
     ok = ok and first.startswith('# granwave') and json.loads(first.split(';settings: ', 1)[1]) == want
 line = next(l for l in open(sample) if l.startswith('# settings: '))
 m = json.load(open(make))['settings']
-ok = ok and json.loads(line[len('# settings: '):]) == m and m['n'] == 60 and m['seed'] == 3
+ok = ok and json.loads(line[len('# settings: '):]) == m and m['n'] == 60 and m['seed'] == 4
 sys.exit(0 if ok else 1)
 PY
 check "CSV headers and the sample header carry the full settings (equal to the JSON's)" "python3 '$tmp/hdrcheck.py' '$tmp/out' '$tmp/a.txt' '$tmp/make.json'"
@@ -221,7 +221,7 @@ check "energy monitor: RK4 at 30 us breaks the 1e-3 closure -> exit 1 naming the
   "[ $rc -eq 1 ] && grep -q 'energy monitor: ledger closure .* exceeds energy-tol 0.001 at t = .*snapshot_failure.vtk' '$tmp/stderr' && grep -q '^POINTS' '$tmp/emon/snapshot_failure.vtk' && [ ! -e '$tmp/emon/ledger.csv' ] && [ ! -e '$tmp/emon/impact.json' ]"
 
 # HDF5 samples (builds with HDF5): the same seed written as .h5 gives the same impact
-if "$gw" layer-make --n 60 --width-rm 16 --seed 3 --out "$tmp/a.h5" > /dev/null 2> "$tmp/h5err"; then
+if "$gw" layer-make --n 60 --width-rm 16 --seed 4 --out "$tmp/a.h5" > /dev/null 2> "$tmp/h5err"; then
   "$gw" layer-impact --sample "$tmp/a.h5" --rb-rm 1 --vi 10 --alpha 30 --t-max 0.005 --exact --json > "$tmp/imp_h5.json"
   check "layer-impact on the .h5 sample = on the text sample (e, penetration, ledger)" "python3 - '$tmp' <<'PY'
 import json, sys

@@ -5,7 +5,7 @@
  * at every contact and stick/slip transition) on the same impacts
  * (docs/physics.md 2.3; B.16 for e_n).
  *
- * A 100-disc sample is pluviated (seed 5, width 20 R_m), then seven impacts
+ * A 100-disc sample is pluviated (seed 7, width 20 R_m), then seven impacts
  * run in both modes: normal and oblique incidence, off-centre, a small block,
  * larger blocks on the full and on reduced layers (heights 8 and 14 R_m).
  * Each run goes to the bounce verdict (until = verdict) or t_max = 0.03 s.
@@ -67,7 +67,7 @@ int main(void)
     gw_layer_make_params mp = gw_layer_make_params_default();
     mp.n = 100;
     mp.width_rm = 20;
-    mp.seed = 5;
+    mp.seed = 7;
     gw_layer_sample s;
     gw_layer_make_result mr;
     gw_err err = {{0}};

@@ -185,7 +185,11 @@ int gw_cmd_layer_make(int argc, char **argv)
         fprintf(stderr, "granwave layer-make --out: %s\n", err.msg);
         return 1;
     }
-    if (!r.converged) /* written (its header says converged 0), but not a settled packing: one line */
+    if (!r.converged && mp.t_max < r.t_judge) /* it could not settle: not "E_k above the threshold" */
+        fprintf(stderr, "granwave layer-make: warning: the sample did not settle: t-max = %g s ends before the "
+                "settling is judged (from t = %.3g s, once the pile has landed: raise --t-max); written to %s "
+                "with 'converged 0'\n", mp.t_max, r.t_judge, out);
+    else if (!r.converged) /* written (its header says converged 0), but not a settled packing: one line */
         fprintf(stderr, "granwave layer-make: warning: the sample did not settle: E_k = %.4g J still above "
                 "--ke-threshold at t-max = %g s (raise --t-max); written to %s with 'converged 0'\n", r.ke_final,
                 mp.t_max, out);
@@ -219,6 +223,7 @@ int gw_cmd_layer_make(int argc, char **argv)
         cJSON_AddNumberToObject(j, "t_settle", r.t_settle);
         cJSON_AddNumberToObject(j, "ke_final", r.ke_final);
         cJSON_AddBoolToObject(j, "converged", r.converged);
+        cJSON_AddNumberToObject(j, "t_judge", r.t_judge);
         cJSON_AddNumberToObject(j, "max_overlap_over_rp", r.max_overlap);
         cJSON_AddNumberToObject(j, "steps", (double)r.steps);
         cJSON_AddNumberToObject(j, "rebuilds", (double)r.rebuilds);

@@ -11,6 +11,9 @@
  * puts the model. Components that are exactly zero are inactive until they move
  * away from zero (the same convention as CVODE's and ARKode's root finders).
  * The last step before tout is shortened to land on tout exactly.
+ * With gw_system.roots_at_step_end a root is reported at the end of the step in
+ * which it changed sign (as verlet does), so the step grid does not depend on the
+ * roots, and gw_system.project (if any) runs after every step, before the roots.
  */
 #include <float.h>
 #include <math.h>
@@ -258,6 +261,11 @@ static int rk4_advance(gw_solver *s, double tout, double *t, double *y, int *roo
         if ((rc = rk4_step(s, r->t, r->y, h, r->ynew)) != 0)
             break;
         r->steps++;
+        /* the step's end time, landing on tout within rounding */
+        const double tend = (r->t + h >= tout || tout - (r->t + h) < 1e-9 * dt) ? tout : r->t + h;
+        const int at_end = s->sys.roots_at_step_end;
+        if (at_end && s->sys.project && (rc = s->sys.project(tend, h, r->ynew, NULL, s->sys.params)) != 0)
+            break;
         if (nr > 0) {
             if ((rc = rk4_roots(s, r->t + h, r->ynew, r->g)) != 0)
                 break;
@@ -266,13 +274,15 @@ static int rk4_advance(gw_solver *s, double tout, double *t, double *y, int *roo
                 any = crossed(r, r->g, k);
             if (any) {
                 double hl = h;
-                if ((rc = rk4_locate(s, h, &hl)) != 0)
-                    break;
-                if ((rc = rk4_step(s, r->t, r->y, hl, r->ynew)) != 0)
-                    break;
-                if ((rc = rk4_roots(s, r->t + hl, r->ynew, r->g)) != 0)
-                    break;
-                r->t = (hl == h && r->t + h >= tout) ? tout : r->t + hl;
+                if (!at_end) {
+                    if ((rc = rk4_locate(s, h, &hl)) != 0)
+                        break;
+                    if ((rc = rk4_step(s, r->t, r->y, hl, r->ynew)) != 0)
+                        break;
+                    if ((rc = rk4_roots(s, r->t + hl, r->ynew, r->g)) != 0)
+                        break;
+                }
+                r->t = at_end ? tend : (hl == h && r->t + h >= tout) ? tout : r->t + hl;
                 memcpy(r->y, r->ynew, (size_t)n * sizeof *y);
                 memcpy(r->g0, r->g, (size_t)nr * sizeof *r->g);
                 for (int k = 0; k < nr; k++) {
@@ -291,7 +301,7 @@ static int rk4_advance(gw_solver *s, double tout, double *t, double *y, int *roo
                 if (r->sign[k] == 0)
                     r->sign[k] = (signed char)gw_sgn(r->g[k]);
         }
-        r->t = (r->t + h >= tout || tout - (r->t + h) < 1e-9 * dt) ? tout : r->t + h;
+        r->t = tend;
         memcpy(r->y, r->ynew, (size_t)n * sizeof *y);
     }
     *t = r->t;

@@ -26,7 +26,8 @@ typedef int (*gw_rhs_fn)(double t, const double *y, double *ydot, void *params);
 /* Event (root) functions g_k(t, y), k = 0..nroots-1. Same return convention. */
 typedef int (*gw_root_fn)(double t, const double *y, double *g, void *params);
 
-/* Projection after a step of length h (verlet backend): y is the end state.
+/* Projection after a step of length h (verlet backend; rk4 with
+ * roots_at_step_end, ydot then NULL: it carries no rates): y is the end state.
  * The model may change y in place (e.g. zero the history of a contact that
  * opened) and correct ydot, the rates the next step starts from (e.g. the
  * rates at the end state where the rhs saw the predicted state on the other
@@ -88,7 +89,13 @@ typedef struct gw_system {
      * gives (velocities, forces carried as state, integrated ledgers);
      * drift[i] = GW_DRIFT_MODEL a component that drift_fn advances. */
     const long *drift;
-    gw_project_fn project; /* after each verlet step (optional) */
+    gw_project_fn project; /* after each verlet step, and each rk4 step when
+                              roots_at_step_end is set (optional) */
+    int roots_at_step_end; /* rk4: 1 reports a root at the end of the step in which
+                              it changed sign, unlocated, as verlet does (the step
+                              grid stays k dt whatever the roots), and calls project
+                              after every step; 0 locates roots (cvode and arkode
+                              always locate, verlet never) */
     gw_drift_fn drift_fn;  /* required when some drift[i] == GW_DRIFT_MODEL */
 } gw_system;
 

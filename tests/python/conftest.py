@@ -32,9 +32,9 @@ def run_cli(program, *args):
 
 @pytest.fixture(scope="session")
 def sample(program, tmp_path_factory):
-    """A small pluviated sample (60 discs, 16 R_m wide, seed 3: the sample of
+    """A small pluviated sample (60 discs, 16 R_m wide, seed 4: the sample of
     test_layer_cli.sh), made once by `granwave layer-make` (about 1.5 s)."""
     path = tmp_path_factory.mktemp("layer") / "a.txt"
-    subprocess.run([program, "layer-make", "--n", "60", "--width-rm", "16", "--seed", "3", "--out", str(path)],
+    subprocess.run([program, "layer-make", "--n", "60", "--width-rm", "16", "--seed", "4", "--out", str(path)],
                    check=True, capture_output=True)
     return path

@@ -439,9 +439,16 @@ int gw_chain_trace_write(const gw_chain_trace *tr, const char *dir, const char *
 /* ---- damping calibration (chain_restitution.c) ---- */
 
 /* Damping constant (alpha for Hunt-Crossley, gamma for Kuwabara-Kono, chosen by
- * p->damping) such that one bead hitting the wall at p->v_imp rebounds with
- * restitution e_target in (0, 1). Runs collisions with o (sample ignored).
- * GW_EINVAL for a bad target or no damping model; GW_ESOLVER if not bracketed. */
+ * p->damping) such that one bead (p's mass, k and radius) hitting the Hertz wall
+ * kwall at p->v_imp rebounds with restitution e_target in (0, 1). Runs one-bead
+ * collisions with o's backend and accuracy (solver, sp, steps_per_tc); o's
+ * t_max, dt_out, energy_tol, y0, sample and front_threshold are the column's and
+ * are not used (the bead's own end time, 20 times its collision, and sampling).
+ * The last 256 distinct calibrations of the process are kept: the same inputs
+ * give the stored constant, bit for bit, at no cost (thread-safe).
+ * GW_EINVAL for a bad target, no damping model or a target the contact cannot
+ * reach (overdamped); a failure of a one-bead run is returned with its code and
+ * message, prefixed "restitution: calibrating ...". */
 int gw_chain_calibrate(const gw_chain_params *p, const gw_chain_run_opts *o,
                        double e_target, double *constant, gw_err *err);
 

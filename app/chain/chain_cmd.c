@@ -120,9 +120,10 @@ int gw_cmd_chain(int argc, char **argv)
     gw_chain *chain = NULL;
     /* --out was tried by the resolution; it is made only when there is
      * something to write (a run refused by the model leaves nothing) */
-    if (chain_cli_resolve(&c, opts, "chain", &err) != GW_OK) {
+    int rrc = chain_cli_resolve(&c, opts, "chain", &err);
+    if (rrc != GW_OK) {
         chain_cli_free(&c);
-        return chain_cli_fail(err.msg);
+        return chain_cli_fail_rc(rrc, err.msg);
     }
     gw_chain_trace tr;
     gw_chain_trace_init(&tr, 0);

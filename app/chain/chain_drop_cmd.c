@@ -333,7 +333,7 @@ int gw_cmd_drop(int argc, char **argv)
         gw_chain_drop_setup_clear(&ds);
         free(d.gaps);
         chain_cli_free(&d.c);
-        return chain_cli_fail(err.msg);
+        return chain_cli_fail_rc(rc, err.msg);
     }
     ds.col.trace = d.c.out != NULL; /* the bead series for drop_beads.csv */
     if ((rc = gw_chain_drop_study_run(&ds, NULL, NULL, &o, &err)) == GW_EINVAL) /* "NAME:" -> "--NAME:" */

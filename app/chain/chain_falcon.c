@@ -351,8 +351,8 @@ int gw_cmd_falcon(int argc, char **argv)
     }
     f.c.params.n = f.n_lo;
     f.c.params.v_imp = f.v[0];
-    if (chain_cli_resolve(&f.c, opts, "falcon", &err) != GW_OK) {
-        code = chain_cli_fail(err.msg);
+    if ((rc0 = chain_cli_resolve(&f.c, opts, "falcon", &err)) != GW_OK) {
+        code = chain_cli_fail_rc(rc0, err.msg);
         goto out;
     }
     if ((rc0 = falcon_pick_solver(&f, opts, accuracy, &err)) != GW_OK) {

@@ -329,6 +329,12 @@ int chain_cli_fail(const char *msg)
     return 2;
 }
 
+int chain_cli_fail_rc(int rc, const char *msg)
+{
+    fprintf(stderr, "granwave %s\n", msg);
+    return rc == GW_ESOLVER || rc == GW_ELIMIT || rc == GW_EENERGY || rc == GW_ENOMEM ? 1 : 2;
+}
+
 int chain_cli_study_fail(const char *cmd, const char *msg)
 {
     fprintf(stderr, "granwave %s --%s\n", cmd, msg);

@@ -89,6 +89,10 @@ void chain_cli_sweep_opts(gw_opt *opts, int *k, long *jobs, int *quiet);
  * t_max (gw_chain_result.converged 0); nothing when unfinished is 0. */
 void chain_cli_warn_unfinished(const char *cmd, int unfinished, int total);
 int chain_cli_fail(const char *msg);
+/* The same with the exit code of status rc: 1 for a run's failure (a solver,
+ * a limit, the energy monitor, memory: the restitution calibration's one-bead
+ * collisions), else 2. */
+int chain_cli_fail_rc(int rc, const char *msg);
 /* The same for a library message "ROW: reason": "granwave CMD --ROW: reason". */
 int chain_cli_study_fail(const char *cmd, const char *msg);
 

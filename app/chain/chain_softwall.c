@@ -102,10 +102,12 @@ int gw_cmd_softwall(int argc, char **argv)
     c.params.n = (int)a;
     c.params.v_imp = vimp;
     char made[4096] = ""; /* what --out this run creates, taken back on a refusal */
-    if (chain_cli_resolve(&c, opts, "softwall", &err) != GW_OK ||
-        (c.out && gw_cli_mkdir_out(c.out, made, sizeof made, &err) != GW_OK)) {
+    int rrc = chain_cli_resolve(&c, opts, "softwall", &err);
+    if (rrc == GW_OK && c.out)
+        rrc = gw_cli_mkdir_out(c.out, made, sizeof made, &err);
+    if (rrc != GW_OK) {
         chain_cli_free(&c);
-        return chain_cli_fail(err.msg);
+        return chain_cli_fail_rc(rrc, err.msg);
     }
     gw_chain_softwall_setup ss;
     gw_chain_softwall_setup_init(&ss);

@@ -72,11 +72,13 @@ int gw_cmd_wavespeed(int argc, char **argv)
     c.params.n = (int)b;
     c.params.v_imp = v[0];
     char made[4096] = ""; /* what --out this run creates, taken back on a refusal */
-    if (chain_cli_resolve(&c, opts, "wavespeed", &err) != GW_OK ||
-        (c.out && gw_cli_mkdir_out(c.out, made, sizeof made, &err) != GW_OK)) {
+    int rrc = chain_cli_resolve(&c, opts, "wavespeed", &err);
+    if (rrc == GW_OK && c.out)
+        rrc = gw_cli_mkdir_out(c.out, made, sizeof made, &err);
+    if (rrc != GW_OK) {
         free(v);
         chain_cli_free(&c);
-        return chain_cli_fail(err.msg);
+        return chain_cli_fail_rc(rrc, err.msg);
     }
     int code = 0;
     gw_chain_wavespeed_setup ws;

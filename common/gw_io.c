@@ -21,6 +21,7 @@
 #include <unistd.h>
 
 #include "gw_common.h"
+#include "gw_locale.h"
 
 _Static_assert(sizeof(sigset_t) <= sizeof(((gw_afile *)0)->oldmask), "sigset_t does not fit");
 _Static_assert(sizeof(sigset_t) <= sizeof(((gw_outset *)0)->oldmask), "sigset_t does not fit");
@@ -70,7 +71,7 @@ static int write_target(const char *path, char *out, size_t n, const char *what,
     if (lstat(path, &st) != 0 || !S_ISLNK(st.st_mode)) {
         if (strlen(path) >= n)
             return gw_err_set(err, GW_EINVAL, "%s: path too long", path);
-        snprintf(out, n, "%s", path);
+        gw_snprintf(out, n, "%s", path);
         return GW_OK;
     }
     char real[PATH_MAX];
@@ -78,7 +79,7 @@ static int write_target(const char *path, char *out, size_t n, const char *what,
         return link_refused(path, what, errno, err);
     if (strlen(real) >= n)
         return gw_err_set(err, GW_EINVAL, "%s: path too long", real);
-    snprintf(out, n, "%s", real);
+    gw_snprintf(out, n, "%s", real);
     return GW_OK;
 }
 
@@ -95,7 +96,7 @@ static void host_token(char *out, size_t n)
             out[k++] = *c;
     out[k] = '\0';
     if (k == 0)
-        snprintf(out, n, "host");
+        gw_snprintf(out, n, "host");
 }
 
 /* The temporaries of path that a writer on this host left when it was killed
@@ -106,11 +107,11 @@ static void remove_stale_temporaries(const char *path, const char *host)
 {
     char dir[4096];
     const char *slash = strrchr(path, '/'), *base = slash ? slash + 1 : path;
-    if (snprintf(dir, sizeof dir, "%s", path) >= (int)sizeof dir)
+    if (gw_snprintf(dir, sizeof dir, "%s", path) >= (int)sizeof dir)
         return;
     gw_path_parent(dir);
     char prefix[512];
-    if (snprintf(prefix, sizeof prefix, "%s.tmp.%s.", base, host) >= (int)sizeof prefix)
+    if (gw_snprintf(prefix, sizeof prefix, "%s.tmp.%s.", base, host) >= (int)sizeof prefix)
         return;
     const size_t plen = strlen(prefix);
     DIR *d = opendir(dir);
@@ -145,7 +146,7 @@ int gw_afile_open(gw_afile *f, const char *path, gw_err *err)
     char host[32];
     host_token(host, sizeof host);
     remove_stale_temporaries(path, host);
-    snprintf(f->tmp, sizeof f->tmp, "%s.tmp.%s.%ld.XXXXXX", path, host, (long)getpid());
+    gw_snprintf(f->tmp, sizeof f->tmp, "%s.tmp.%s.%ld.XXXXXX", path, host, (long)getpid());
     int fd = mkstemp(f->tmp);
     if (fd < 0) {
         f->tmp[0] = '\0';
@@ -301,7 +302,7 @@ int gw_outset_begin(gw_outset *s, const char *dir, const char *const *names, gw_
     memset(s, 0, sizeof *s);
     if (cur_set)
         return gw_err_set(err, GW_EINVAL, "%s: an output set is already open on this thread", dir);
-    if (snprintf(s->dir, sizeof s->dir, "%s", dir) >= (int)sizeof s->dir)
+    if (gw_snprintf(s->dir, sizeof s->dir, "%s", dir) >= (int)sizeof s->dir)
         return gw_err_set(err, GW_EINVAL, "%s: output path too long", dir);
     s->names = names;
     s->active = 1;
@@ -317,7 +318,7 @@ int gw_outset_check_input(const char *dir, const char *const *names, const char 
         return GW_OK;
     if (stat(input, &in) != 0) { /* a file still to make (wisdom): the same directory and name */
         char d[4096];
-        if (snprintf(d, sizeof d, "%s", input) >= (int)sizeof d)
+        if (gw_snprintf(d, sizeof d, "%s", input) >= (int)sizeof d)
             return GW_OK;
         const char *slash = strrchr(input, '/'), *base = slash ? slash + 1 : input;
         gw_path_parent(d);
@@ -331,7 +332,7 @@ int gw_outset_check_input(const char *dir, const char *const *names, const char 
     }
     for (int k = 0; names[k]; k++) {
         char p[4096 + 256];
-        if (snprintf(p, sizeof p, "%s/%s", dir, names[k]) < (int)sizeof p && stat(p, &st) == 0 &&
+        if (gw_snprintf(p, sizeof p, "%s/%s", dir, names[k]) < (int)sizeof p && stat(p, &st) == 0 &&
             st.st_dev == in.st_dev && st.st_ino == in.st_ino)
             return gw_err_set(err, GW_EINVAL, "%s: '%s' is the file this run writes as %s: give another --out "
                               "or move the input", what, input, p);
@@ -396,7 +397,7 @@ int gw_outset_commit(gw_outset *s, gw_err *err)
     /* an earlier run's file of this set that this run did not write */
     for (int k = 0; rc == GW_OK && s->names && s->names[k]; k++) {
         char p[4096 + 256];
-        if (snprintf(p, sizeof p, "%s/%s", s->dir, s->names[k]) >= (int)sizeof p)
+        if (gw_snprintf(p, sizeof p, "%s/%s", s->dir, s->names[k]) >= (int)sizeof p)
             continue;
         struct stat a, b;
         if (lstat(p, &a) != 0)
@@ -426,7 +427,7 @@ void gw_write_comment(FILE *fp, const char *text)
     for (const char *p = text; p && *p;) {
         const char *nl = strchr(p, '\n');
         size_t len = nl ? (size_t)(nl - p) : strlen(p);
-        fprintf(fp, "# %.*s\n", (int)len, p);
+        gw_fprintf(fp, "# %.*s\n", (int)len, p);
         p += len + (nl != NULL);
     }
 }
@@ -456,7 +457,7 @@ int gw_mkdir_p(const char *path, gw_err *err)
 
 int gw_path_join(char *buf, size_t n, const char *dir, const char *name)
 {
-    int w = snprintf(buf, n, "%s/%s", dir, name);
+    int w = gw_snprintf(buf, n, "%s/%s", dir, name);
     return (w < 0 || (size_t)w >= n) ? GW_EINVAL : GW_OK;
 }
 
@@ -604,7 +605,7 @@ int gw_out_check(const char *dir, const char *what, gw_err *err)
             /* what the mode bits do not say (root under /proc, a read-only mount):
              * a directory made and removed at once where the run will make its own */
             char probe[4096 + 32];
-            snprintf(probe, sizeof probe, "%s/.granwave-probe-XXXXXX", buf);
+            gw_snprintf(probe, sizeof probe, "%s/.granwave-probe-XXXXXX", buf);
             if (!mkdtemp(probe))
                 return gw_err_set(err, GW_EINVAL, "%s: cannot write into '%s': %s", what, buf, strerror(errno));
             rmdir(probe);

@@ -5,6 +5,7 @@
  * (one line on stderr naming the input).
  */
 #include <errno.h>
+#include <signal.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -56,8 +57,27 @@ static void usage(FILE *fp)
     fprintf(fp, "  %-14s %s\n", "version", "print the version");
 }
 
+/* One check for every command and for --help and --version: output that did
+ * not reach stdout (a full disk, /dev/full, a closed pipe or descriptor) is a
+ * run failure, never exit 0. */
+static int stdout_checked(const char *cmd, int code)
+{
+    errno = 0;
+    if (fflush(stdout) != 0 || ferror(stdout)) {
+        int e = errno ? errno : EIO;
+        fprintf(stderr, "granwave%s%s: stdout: write failed: %s\n", cmd ? " " : "", cmd ? cmd : "", strerror(e));
+        if (code == 0)
+            code = 1;
+    }
+    return code;
+}
+
 int main(int argc, char **argv)
 {
+    /* Past a file-size limit (ulimit -f), a write fails with EFBIG instead of
+     * SIGXFSZ killing the program with its temporaries left: the output set
+     * then removes them and says which file (Python ignores SIGXFSZ already) */
+    signal(SIGXFSZ, SIG_IGN);
     if (argc < 2) {
         usage(stderr);
         return 2;
@@ -65,25 +85,16 @@ int main(int argc, char **argv)
     const char *cmd = argv[1];
     if (strcmp(cmd, "--help") == 0 || strcmp(cmd, "-h") == 0 || strcmp(cmd, "help") == 0) {
         usage(stdout);
-        return 0;
+        return stdout_checked(NULL, 0);
     }
     if (strcmp(cmd, "version") == 0 || strcmp(cmd, "--version") == 0) {
         printf("granwave %s\n", gw_version());
-        return 0;
+        return stdout_checked(NULL, 0);
     }
     for (size_t i = 0; i < sizeof commands / sizeof commands[0]; i++)
         if (strcmp(commands[i].name, cmd) == 0) {
             int code = commands[i].run(argc - 2, argv + 2);
-            /* one check for every command: results that did not reach stdout (a
-             * full disk, /dev/full, a closed pipe) are a run failure, never exit 0 */
-            errno = 0;
-            if (fflush(stdout) != 0 || ferror(stdout)) {
-                int e = errno ? errno : EIO;
-                fprintf(stderr, "granwave %s: stdout: write failed: %s\n", cmd, strerror(e));
-                if (code == 0)
-                    code = 1;
-            }
-            return code;
+            return stdout_checked(cmd, code);
         }
     fprintf(stderr, "granwave: unknown command '%s' (see granwave --help)\n", cmd);
     return 2;

@@ -133,6 +133,38 @@ static void remove_stale_temporaries(const char *path, const char *host)
     closedir(d);
 }
 
+/* The process's umask, read without changing it (/proc/self/status,
+ * "Umask:", Linux 4.7 and later); elsewhere set to 077 and back under a lock
+ * (a file another thread creates in between is then only more private). */
+static mode_t current_umask(void)
+{
+    FILE *fp = fopen("/proc/self/status", "re");
+    if (fp) {
+        char line[256];
+        unsigned v = 0;
+        int got = 0;
+        while (!got && fgets(line, sizeof line, fp))
+            got = strncmp(line, "Umask:", 6) == 0 && sscanf(line + 6, "%o", &v) == 1;
+        fclose(fp);
+        if (got)
+            return (mode_t)(v & 0777);
+    }
+    static pthread_mutex_t mu = PTHREAD_MUTEX_INITIALIZER;
+    pthread_mutex_lock(&mu);
+    mode_t m = umask(077);
+    umask(m);
+    pthread_mutex_unlock(&mu);
+    return m & 0777;
+}
+
+mode_t gw_new_file_mode(const char *replaces)
+{
+    struct stat st;
+    if (replaces && stat(replaces, &st) == 0 && S_ISREG(st.st_mode))
+        return st.st_mode & 0777;
+    return 0666 & ~current_umask();
+}
+
 int gw_afile_open(gw_afile *f, const char *path, gw_err *err)
 {
     memset(f, 0, sizeof *f);
@@ -154,7 +186,9 @@ int gw_afile_open(gw_afile *f, const char *path, gw_err *err)
         release_signals(f);
         return gw_err_set(err, GW_EIO, "%s: cannot create: %s", path, strerror(e));
     }
-    fchmod(fd, 0644);
+    /* mkstemp made it 0600: the permissions a shell's > would give (the
+     * replaced file's, or 0666 less the umask) */
+    fchmod(fd, gw_new_file_mode(path));
     f->fp = fdopen(fd, "w");
     if (!f->fp) {
         int e = errno;
@@ -432,6 +466,22 @@ void gw_write_comment(FILE *fp, const char *text)
     }
 }
 
+/* gw_mkdir_p's failure: the directories it made (those of buf's components
+ * that end in [first, stop)) removed again, deepest first, so that a refused
+ * run leaves nothing behind */
+static void remove_made(char *buf, size_t first, size_t stop)
+{
+    if (!first)
+        return;
+    for (size_t i = stop; i-- > first;)
+        if (buf[i] == '/' || buf[i] == '\0') {
+            char c = buf[i];
+            buf[i] = '\0';
+            rmdir(buf);
+            buf[i] = c;
+        }
+}
+
 int gw_mkdir_p(const char *path, gw_err *err)
 {
     char buf[4096];
@@ -439,19 +489,36 @@ int gw_mkdir_p(const char *path, gw_err *err)
     if (n == 0 || n >= sizeof buf)
         return gw_err_set(err, GW_EINVAL, "output directory: bad path '%s'", path);
     memcpy(buf, path, n + 1);
+    size_t first = 0; /* the end of the first component made here (0: none) */
     for (size_t i = 1; i <= n; i++) {
         if (buf[i] == '/' || buf[i] == '\0') {
             char c = buf[i];
             buf[i] = '\0';
-            if (mkdir(buf, 0755) != 0 && errno != EEXIST)
-                return gw_err_set(err, GW_EIO, "%s: cannot create directory: %s", buf,
-                                  strerror(errno));
+            if (mkdir(buf, 0777) == 0) { /* less the umask, as mkdir -p */
+                if (!first)
+                    first = i;
+            } else if (errno != EEXIST) {
+                int e = errno;
+                gw_err_set(err, GW_EIO, "%s: cannot create directory: %s", buf, strerror(e));
+                remove_made(buf, first, i);
+                return GW_EIO;
+            }
             buf[i] = c;
         }
     }
     struct stat st;
     if (stat(path, &st) != 0 || !S_ISDIR(st.st_mode))
         return gw_err_set(err, GW_EIO, "%s: not a directory", path);
+    /* made under a umask that leaves its owner no write or search permission
+     * (umask 0300 and up): nothing could go into it. Removed again, deepest
+     * first, so that a refused run leaves nothing. */
+    if (first && access(path, W_OK | X_OK) != 0 && errno == EACCES) {
+        mode_t mask = 0777 & ~(st.st_mode & 0777);
+        remove_made(buf, first, n + 1);
+        return gw_err_set(err, GW_EINVAL, "%s: the directory made under umask %04o cannot be written into "
+                          "(its owner needs write and search permission: umask 077 or less)", path,
+                          (unsigned)mask);
+    }
     return GW_OK;
 }
 
@@ -594,6 +661,7 @@ int gw_out_check(const char *dir, const char *what, gw_err *err)
         return gw_err_set(err, GW_EINVAL, "%s: bad path '%s'", what, dir ? dir : "");
     memcpy(buf, dir, n + 1);
     struct stat st;
+    int walked = 0;
     /* the directory, or else its nearest existing ancestor, must be a writable directory */
     for (;;) {
         if (stat(buf, &st) == 0) {
@@ -609,8 +677,15 @@ int gw_out_check(const char *dir, const char *what, gw_err *err)
             if (!mkdtemp(probe))
                 return gw_err_set(err, GW_EINVAL, "%s: cannot write into '%s': %s", what, buf, strerror(errno));
             rmdir(probe);
+            /* directories still to make: under a umask that takes the owner's
+             * write or search permission (0300 and up) nothing could go into them */
+            mode_t mask = walked && geteuid() != 0 ? current_umask() : 0; /* root writes anyway */
+            if (mask & 0300)
+                return gw_err_set(err, GW_EINVAL, "%s: '%s' would be made under umask %04o, which leaves no "
+                                  "permission to write into it (umask 077 or less)", what, dir, (unsigned)mask);
             return GW_OK;
         }
+        walked = 1;
         if (errno != ENOENT)
             return gw_err_set(err, GW_EINVAL, "%s: '%s': %s", what, buf, strerror(errno));
         /* a name that is a symbolic link to nothing is not a directory still to make:

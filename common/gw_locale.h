@@ -13,6 +13,7 @@
 #include <stdarg.h>
 #include <stddef.h>
 #include <stdio.h>
+#include <sys/types.h>
 
 #if defined(__GNUC__)
 #define GW_FMT(a, b) __attribute__((format(printf, a, b)))
@@ -27,5 +28,10 @@ int gw_snprintf(char *buf, size_t n, const char *fmt, ...) GW_FMT(3, 4);
 int gw_vsnprintf(char *buf, size_t n, const char *fmt, va_list ap) GW_FMT(3, 0);
 int gw_fprintf(FILE *fp, const char *fmt, ...) GW_FMT(2, 3);
 int gw_sprintf(char *buf, const char *fmt, ...) GW_FMT(2, 3);
+
+/* The permissions of a file the library creates in place of `replaces`: the
+ * replaced regular file's, or 0666 less the process's umask (what a shell's >
+ * gives; the temporary that mkstemp made is 0600). Defined in gw_io.c. */
+mode_t gw_new_file_mode(const char *replaces);
 
 #endif

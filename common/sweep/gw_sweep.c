@@ -844,7 +844,7 @@ static int journal_create(const char *path, const char *text, int *fdp, gw_err *
     int fd = mkstemp(tmp);
     if (fd < 0)
         return gw_err_set(err, GW_EIO, "%s: cannot create: %s", path, strerror(errno));
-    fchmod(fd, 0644);
+    fchmod(fd, gw_new_file_mode(path));
     /* locked before it has its name: another sweep that finds it finds it
      * locked (a sweep that locked it first would refuse it as another
      * config's, and this one then find it locked: neither ran) */

@@ -112,3 +112,19 @@ def test_library_sources_format_numbers_locale_free():
                 if bare.search(code) and not code.lstrip().startswith(("*", "/*")):
                     found.append(f"{f.relative_to(REPO)}:{k}: {line.strip()}")
     assert not found, "\n".join(found)
+
+
+def test_umask_and_chdir_are_the_callers(tmp_path):
+    """Before: the library's files were 0644 whatever the umask (os.umask(0o077)
+    gave world-readable samples). A relative path is the caller's cwd after
+    os.chdir, the umask the one in force at the call."""
+    code = (
+        "import os, stat, sys, granwave\n"
+        "os.chdir(sys.argv[1]); os.mkdir('sub'); os.chdir('sub')\n"
+        "os.umask(0o077); granwave.layer_make(n=20, width_rm=10, seed=1, out='a b.txt')\n"
+        "os.umask(0o002); granwave.layer_make(n=20, width_rm=10, seed=1, out='c.txt')\n"
+        "print(oct(stat.S_IMODE(os.stat('a b.txt').st_mode)), oct(stat.S_IMODE(os.stat('c.txt').st_mode)))\n")
+    r = _child(code, [str(tmp_path)])
+    assert r.returncode == 0, r.stderr
+    assert r.stdout.split() == ["0o600", "0o664"]
+    assert (tmp_path / "sub" / "a b.txt").is_file() and not (tmp_path / "a b.txt").exists()

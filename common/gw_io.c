@@ -767,7 +767,7 @@ int gw_fnv1a64_parse(const char *p, size_t len, unsigned long long *h)
 
 int gw_fnv1a64_stream(FILE *fp, unsigned long long *h)
 {
-    unsigned char buf[65536];
+    unsigned char buf[8192]; /* 64 KiB here overflowed a 64 KiB stack (ulimit -s 64) */
     size_t got;
     unsigned long long v = GW_FNV1A64_INIT;
     while ((got = fread(buf, 1, sizeof buf, fp)) > 0)

@@ -19,6 +19,9 @@
 #  6 the header's command line joined arguments with blanks (--out 'a b' read
 #    back as two arguments; a newline in a path split the line): shell-quoted
 #    now, and eval gives the arguments back.
+#  8 under ulimit -s 64 layer-impact --out died of a stack overflow (SIGSEGV,
+#    exit 139); a stack limit below 256 KiB is refused at start now (exit 2,
+#    one line), and the same run works at 256 KiB.
 #  7 kept: the program reads numbers and writes files the same in a
 #    decimal-comma locale (LC_ALL=de_DE.UTF-8), byte for byte.
 set -u
@@ -117,6 +120,15 @@ if [ -n "$loc" ]; then
 else
     echo "SKIP: 7 no decimal-comma locale and localedef cannot make one"
 fi
+
+# 8 a small stack limit
+S=$tmp/u77s.txt
+(ulimit -s 64; exec "$GW" layer-impact --sample "$S" --t-max 0.01 --out "$tmp/st64") >/dev/null 2>"$tmp/e"; rc=$?
+[ $rc -eq 2 ] && [ "$(wc -l <"$tmp/e")" -eq 1 ] && grep -q 'ulimit -s 64 KiB' "$tmp/e" && [ ! -e "$tmp/st64" ] &&
+    ok "8 ulimit -s 64: refused, nothing written" || ko "8 ulimit -s 64: exit $rc, $(head -c 300 "$tmp/e")"
+(ulimit -s 256; exec "$GW" layer-impact --sample "$S" --t-max 0.01 --out "$tmp/st256") >/dev/null 2>&1; rc=$?
+[ $rc -eq 0 ] && [ -s "$tmp/st256/impact.json" ] && ok "8 ulimit -s 256: layer-impact --out runs" ||
+    ko "8 ulimit -s 256: exit $rc"
 
 echo "$passes passed, $fails failed"
 [ $fails -eq 0 ]

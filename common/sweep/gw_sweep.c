@@ -237,7 +237,7 @@ static unsigned long fnv64_file(unsigned long h, const char *path)
     gw_err err;
     if (gw_input_open(path, "sweep", &f, &err) != GW_OK) /* never blocks on a FIFO */
         return h;
-    unsigned char buf[65536];
+    unsigned char buf[8192]; /* 64 KiB here overflowed a 64 KiB stack (ulimit -s 64) */
     size_t got;
     while ((got = fread(buf, 1, sizeof buf, f)) > 0)
         for (size_t i = 0; i < got; i++) {

@@ -5,6 +5,8 @@
  * (one line on stderr naming the input).
  */
 #include <errno.h>
+#include <signal.h>
+#include <sys/resource.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -46,6 +48,8 @@ static const command commands[] = {
 #endif
 };
 
+#define GW_STACK_MIN (256 * 1024)
+
 static void usage(FILE *fp)
 {
     fprintf(fp, "granwave %s: wave propagation in granular matter (ODE systems, SUNDIALS)\n\n"
@@ -56,8 +60,37 @@ static void usage(FILE *fp)
     fprintf(fp, "  %-14s %s\n", "version", "print the version");
 }
 
+/* One check for every command and for --help and --version: output that did
+ * not reach stdout (a full disk, /dev/full, a closed pipe or descriptor) is a
+ * run failure, never exit 0. */
+static int stdout_checked(const char *cmd, int code)
+{
+    errno = 0;
+    if (fflush(stdout) != 0 || ferror(stdout)) {
+        int e = errno ? errno : EIO;
+        fprintf(stderr, "granwave%s%s: stdout: write failed: %s\n", cmd ? " " : "", cmd ? cmd : "", strerror(e));
+        if (code == 0)
+            code = 1;
+    }
+    return code;
+}
+
 int main(int argc, char **argv)
 {
+    /* Past a file-size limit (ulimit -f), a write fails with EFBIG instead of
+     * SIGXFSZ killing the program with its temporaries left: the output set
+     * then removes them and says which file (Python ignores SIGXFSZ already) */
+    signal(SIGXFSZ, SIG_IGN);
+    /* A stack limit far below the usual 8 MiB (ulimit -s 64) overflowed in
+     * layer-impact --out (SIGSEGV): the main thread's and, through glibc's
+     * default, the worker threads' stacks. Measured to run every command from
+     * 96 KiB; refused below 256 KiB before anything is done. */
+    struct rlimit rl;
+    if (getrlimit(RLIMIT_STACK, &rl) == 0 && rl.rlim_cur != RLIM_INFINITY && rl.rlim_cur < GW_STACK_MIN) {
+        fprintf(stderr, "granwave: the stack limit (ulimit -s %lu KiB) is below the %d KiB granwave needs; "
+                        "raise it (ulimit -s 8192)\n", (unsigned long)(rl.rlim_cur / 1024), GW_STACK_MIN / 1024);
+        return 2;
+    }
     if (argc < 2) {
         usage(stderr);
         return 2;
@@ -65,25 +98,16 @@ int main(int argc, char **argv)
     const char *cmd = argv[1];
     if (strcmp(cmd, "--help") == 0 || strcmp(cmd, "-h") == 0 || strcmp(cmd, "help") == 0) {
         usage(stdout);
-        return 0;
+        return stdout_checked(NULL, 0);
     }
     if (strcmp(cmd, "version") == 0 || strcmp(cmd, "--version") == 0) {
         printf("granwave %s\n", gw_version());
-        return 0;
+        return stdout_checked(NULL, 0);
     }
     for (size_t i = 0; i < sizeof commands / sizeof commands[0]; i++)
         if (strcmp(commands[i].name, cmd) == 0) {
             int code = commands[i].run(argc - 2, argv + 2);
-            /* one check for every command: results that did not reach stdout (a
-             * full disk, /dev/full, a closed pipe) are a run failure, never exit 0 */
-            errno = 0;
-            if (fflush(stdout) != 0 || ferror(stdout)) {
-                int e = errno ? errno : EIO;
-                fprintf(stderr, "granwave %s: stdout: write failed: %s\n", cmd, strerror(e));
-                if (code == 0)
-                    code = 1;
-            }
-            return code;
+            return stdout_checked(cmd, code);
         }
     fprintf(stderr, "granwave: unknown command '%s' (see granwave --help)\n", cmd);
     return 2;

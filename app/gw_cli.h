@@ -66,7 +66,9 @@ const gw_opt *gw_cli_find(const gw_opt *opts, const char *name);
  * library takes it as a string from the program. All return a new string the
  * caller frees, NULL when out of memory. */
 
-/* "granwave CMD ARG1 ARG2 ..." (argv as given, one blank between). */
+/* "granwave CMD ARG1 ARG2 ...": argv as a POSIX shell (bash, sh) reads it back,
+ * one line: arguments with blanks, quotes or other special characters in single
+ * quotes, those with control characters (a newline) in $'...'. */
 char *gw_cli_command_line(const char *cmd, int argc, char **argv);
 /* The header above; settings NULL: no settings line. */
 char *gw_cli_provenance(const char *cmd, int argc, char **argv, const struct cJSON *settings);

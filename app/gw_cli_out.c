@@ -17,17 +17,68 @@
 
 #include "gw_cli.h"
 
+/* arg as a POSIX shell reads it back: as it is when it holds only characters
+ * no shell treats specially, else in single quotes ('\'' for a quote), and in
+ * $'...' (\n, \t, \xHH) when it holds a control character such as a newline,
+ * so that the command line stays one header line and can be run again as
+ * written (before, "--out a b" read as two arguments and a newline in a path
+ * split the line). Writes at most 4 bytes per byte of arg plus 4; returns the
+ * bytes written. */
+static size_t shell_word(char *out, const char *arg)
+{
+    static const char safe[] = "_@%+=:,./-";
+    int plain = *arg != '\0', ctrl = 0;
+    for (const unsigned char *c = (const unsigned char *)arg; *c; c++) {
+        if (*c < 0x20 || *c == 0x7f)
+            ctrl = 1;
+        if (!((*c >= 'a' && *c <= 'z') || (*c >= 'A' && *c <= 'Z') || (*c >= '0' && *c <= '9') || strchr(safe, *c)))
+            plain = 0;
+    }
+    char *w = out;
+    if (plain) {
+        size_t n = strlen(arg);
+        memcpy(w, arg, n);
+        return n;
+    }
+    if (ctrl)
+        *w++ = '$';
+    *w++ = '\'';
+    for (const unsigned char *c = (const unsigned char *)arg; *c; c++) {
+        if (*c == '\'' && !ctrl) {
+            memcpy(w, "'\\''", 4);
+            w += 4;
+        } else if (ctrl && (*c == '\'' || *c == '\\')) {
+            *w++ = '\\';
+            *w++ = (char)*c;
+        } else if (ctrl && *c == '\n') {
+            *w++ = '\\', *w++ = 'n';
+        } else if (ctrl && *c == '\t') {
+            *w++ = '\\', *w++ = 't';
+        } else if (ctrl && (*c < 0x20 || *c == 0x7f)) {
+            static const char hex[] = "0123456789abcdef";
+            *w++ = '\\', *w++ = 'x', *w++ = hex[*c >> 4], *w++ = hex[*c & 15];
+        } else {
+            *w++ = (char)*c;
+        }
+    }
+    *w++ = '\'';
+    return (size_t)(w - out);
+}
+
 char *gw_cli_command_line(const char *cmd, int argc, char **argv)
 {
     size_t len = 16 + strlen(cmd);
     for (int i = 0; i < argc; i++)
-        len += strlen(argv[i]) + 1;
+        len += 4 * strlen(argv[i]) + 5;
     char *h = malloc(len);
     if (!h)
         return NULL;
     size_t w = (size_t)snprintf(h, len, "granwave %s", cmd);
-    for (int i = 0; i < argc && w < len; i++)
-        w += (size_t)snprintf(h + w, len - w, " %s", argv[i]);
+    for (int i = 0; i < argc; i++) {
+        h[w++] = ' ';
+        w += shell_word(h + w, argv[i]);
+    }
+    h[w] = '\0';
     return h;
 }
 

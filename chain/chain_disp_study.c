@@ -14,6 +14,7 @@
 #include <string.h>
 
 #include "chain_setup_rows.h"
+#include "gw_locale.h"
 
 #define OFF(f) offsetof(gw_chain_dispersion_setup, f)
 
@@ -287,7 +288,7 @@ int gw_chain_dispersion_run(const gw_chain_dispersion_setup *s, gw_chain_dispers
     if ((rc = gw_chain_disp_params_validate(&p, err)) != GW_OK) {
         if (strncmp(err->msg, "--", 2) == 0) { /* the model names its fields as flags */
             char tmp[sizeof err->msg];
-            snprintf(tmp, sizeof tmp, "%s", err->msg + 2);
+            gw_snprintf(tmp, sizeof tmp, "%s", err->msg + 2);
             gw_err_set(err, rc, "%s", tmp);
         }
         return rc;

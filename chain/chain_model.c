@@ -26,6 +26,7 @@
 #include <string.h>
 
 #include "chain_model.h"
+#include "gw_locale.h"
 
 /* ---- undamped right-hand side, written for packed square roots ----
  * Per bead j (docs/physics.md 1.1, F.11), with f_j the force below bead j:
@@ -480,9 +481,9 @@ int chain_blown_up(const gw_chain *c, const double *y, double energy_error, cons
     char what[64] = "";
     for (long i = 0; i < dim && !what[0]; i++)
         if (!isfinite(y[i]))
-            snprintf(what, sizeof what, "state %ld of %ld not finite", i, dim);
+            gw_snprintf(what, sizeof what, "state %ld of %ld not finite", i, dim);
     if (!what[0] && energy_error > 1)
-        snprintf(what, sizeof what, "relative energy error %.3g", energy_error);
+        gw_snprintf(what, sizeof what, "relative energy error %.3g", energy_error);
     if (!what[0])
         return GW_OK;
     return gw_err_set(err, GW_ESOLVER, "%s: the solution blew up at t = %.9g s (%s): the step is too long for the "

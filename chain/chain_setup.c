@@ -19,6 +19,7 @@
 #include <string.h>
 
 #include "chain_setup_rows.h"
+#include "gw_locale.h"
 #include "chain_wall.h"
 #include "gw_chain_study.h"
 
@@ -159,7 +160,7 @@ static int resolve_model(const gw_chain_setup *s, gw_chain_resolved *r, gw_err *
     const int wall_given = !isnan(s->kwall) || ((s->sheet >= 0 || s->sheets) && fitted);
     if (!isnan(s->mass) && !isnan(s->k) && wall_given && s->radii.n == 0 && strcmp(bm->name, "steel") != 0)
         return gw_err_set(err, GW_EINVAL, "material: has no effect with mass, k and the wall's coefficient given");
-    if (s->radii.n > 0 && s->radius != strtod(gw_param_find(setup_params, "radius")->def, NULL))
+    if (s->radii.n > 0 && s->radius != gw_strtod(gw_param_find(setup_params, "radius")->def, NULL))
         return gw_err_set(err, GW_EINVAL, "radius: has no effect with radii (bead 1's radius is the first of radii)");
     if (s->sheet >= 0) {
         const gw_sheet *sh = gw_sheet_find(choice(s, "sheet", name, sizeof name));
@@ -299,7 +300,7 @@ static int apply_wall(const gw_chain_setup *s, gw_chain_resolved *r, gw_err *err
         int rc = gw_sheet_apply(sh, r->law, y, l, bm, wm, p, &r->layer, err);
         if (rc != GW_OK) {
             char tmp[sizeof err->msg];
-            snprintf(tmp, sizeof tmp, "%s", err->msg);
+            gw_snprintf(tmp, sizeof tmp, "%s", err->msg);
             return gw_err_set(err, rc, "sheet: %s: %s", sh->name, tmp);
         }
     }
@@ -307,7 +308,7 @@ static int apply_wall(const gw_chain_setup *s, gw_chain_resolved *r, gw_err *err
         chain_wall_law wl;
         if (chain_wall_law_init(&wl, p, err) != GW_OK) {
             char tmp[sizeof err->msg];
-            snprintf(tmp, sizeof tmp, "%s", err->msg);
+            gw_snprintf(tmp, sizeof tmp, "%s", err->msg);
             return gw_err_set(err, GW_EINVAL, "sheet-loss: %s", tmp);
         }
     }

@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "gw_chain.h"
+#include "gw_locale.h"
 #if GW_HAVE_HDF5
 #include <hdf5.h>
 #include "gw_h5.h"
@@ -92,38 +93,38 @@ static int write_csv(const gw_chain_trace *tr, const char *dir, const char *stem
     char path[4096], name[512];
     gw_afile f;
     int rc;
-    snprintf(name, sizeof name, "%s_wall_force.csv", stem);
+    gw_snprintf(name, sizeof name, "%s_wall_force.csv", stem);
     if (gw_path_join(path, sizeof path, dir, name) != GW_OK)
         return gw_err_set(err, GW_EINVAL, "%s: output path too long", dir);
     if ((rc = gw_afile_open(&f, path, err)) != GW_OK)
         return rc;
     gw_write_comment(f.fp, header);
-    fprintf(f.fp, "t_s,f_wall_N\n");
+    gw_fprintf(f.fp, "t_s,f_wall_N\n");
     for (size_t k = 0; k < tr->len; k++)
-        fprintf(f.fp, "%.12e,%.12e\n", tr->t[k], tr->f[k]);
+        gw_fprintf(f.fp, "%.12e,%.12e\n", tr->t[k], tr->f[k]);
     if ((rc = gw_afile_commit(&f, err)) != GW_OK)
         return rc;
     if (tr->n == 0) /* wall force only: no bead table (it would hold t_s alone) */
         return GW_OK;
 
-    snprintf(name, sizeof name, "%s_beads.csv", stem);
+    gw_snprintf(name, sizeof name, "%s_beads.csv", stem);
     if (gw_path_join(path, sizeof path, dir, name) != GW_OK)
         return gw_err_set(err, GW_EINVAL, "%s: output path too long", dir);
     if ((rc = gw_afile_open(&f, path, err)) != GW_OK)
         return rc;
     gw_write_comment(f.fp, header);
-    fprintf(f.fp, "t_s");
+    gw_fprintf(f.fp, "t_s");
     for (int i = 1; i <= tr->n; i++)
-        fprintf(f.fp, ",x%d_m", i);
+        gw_fprintf(f.fp, ",x%d_m", i);
     for (int i = 1; i <= tr->n; i++)
-        fprintf(f.fp, ",v%d_m_s", i);
+        gw_fprintf(f.fp, ",v%d_m_s", i);
     fputc('\n', f.fp);
     for (size_t k = 0; k < tr->len; k++) {
-        fprintf(f.fp, "%.12e", tr->t[k]);
+        gw_fprintf(f.fp, "%.12e", tr->t[k]);
         for (int i = 0; i < tr->n; i++)
-            fprintf(f.fp, ",%.12e", tr->x[k * (size_t)tr->n + (size_t)i]);
+            gw_fprintf(f.fp, ",%.12e", tr->x[k * (size_t)tr->n + (size_t)i]);
         for (int i = 0; i < tr->n; i++)
-            fprintf(f.fp, ",%.12e", tr->v[k * (size_t)tr->n + (size_t)i]);
+            gw_fprintf(f.fp, ",%.12e", tr->v[k * (size_t)tr->n + (size_t)i]);
         fputc('\n', f.fp);
     }
     return gw_afile_commit(&f, err);
@@ -158,7 +159,7 @@ static int write_h5(const gw_chain_trace *tr, const char *dir, const char *stem,
                     const char *header, gw_err *err)
 {
     char path[4096], name[512];
-    snprintf(name, sizeof name, "%s.h5", stem);
+    gw_snprintf(name, sizeof name, "%s.h5", stem);
     if (gw_path_join(path, sizeof path, dir, name) != GW_OK)
         return gw_err_set(err, GW_EINVAL, "%s: output path too long", dir);
     int rc = GW_OK;

@@ -29,6 +29,7 @@
 #include <string.h>
 
 #include "chain_setup_rows.h"
+#include "gw_locale.h"
 
 #define G_EARTH 9.81
 #define SATURATION_RUN 6
@@ -293,7 +294,7 @@ static int ws_velocity(const gw_chain_params *p, const gw_chain_run_opts *run, c
     o->v_front[iv] = front_speed(&q, run, frac, err);
     if (!isfinite(o->v_front[iv])) {
         char tmp[sizeof err->msg];
-        snprintf(tmp, sizeof tmp, "%s", err->msg);
+        gw_snprintf(tmp, sizeof tmp, "%s", err->msg);
         return gw_err_set(err, GW_ESOLVER, "wavespeed: no front fit at v_imp = %g (%s)", o->v_imp[iv], tmp);
     }
     return GW_OK;
@@ -551,8 +552,8 @@ static void sw_fill(const gw_chain_softwall_setup *s, const gw_chain_resolved *r
         sheet_row(sh, &sr[w], res + (size_t)w * nn, a, b, o->t_q_rigid, o->kwall[w], s->sheets ? lay[w] : rs->layer,
                   o->sheet_table + (size_t)w * GW_SOFTWALL_NSHEET_COLS);
         size_t ln = strlen(o->sheet_names), lm = strlen(o->sheet_materials);
-        snprintf(o->sheet_names + ln, 16, "%s%s", w ? "," : "", sh->name);
-        snprintf(o->sheet_materials + lm, 64, "%s%s", w ? ";" : "", sh->material);
+        gw_snprintf(o->sheet_names + ln, 16, "%s%s", w ? "," : "", sh->name);
+        gw_snprintf(o->sheet_materials + lm, 64, "%s%s", w ? ";" : "", sh->material);
     }
 }
 

@@ -11,6 +11,7 @@
 #include <strings.h>
 
 #include "gw_common.h"
+#include "gw_locale.h"
 
 const char *gw_strerror(int status)
 {
@@ -55,7 +56,7 @@ int gw_err_set(gw_err *err, int status, const char *fmt, ...)
     if (err) {
         va_list ap;
         va_start(ap, fmt);
-        vsnprintf(err->msg, sizeof err->msg, fmt, ap);
+        gw_vsnprintf(err->msg, sizeof err->msg, fmt, ap);
         va_end(ap);
     }
     return status;
@@ -67,7 +68,7 @@ int gw_parse_double(const char *s, const char *name, double *out, gw_err *err)
         return gw_err_set(err, GW_EINVAL, "%s: expected a number, got an empty value", name);
     char *end = NULL;
     errno = 0;
-    double v = strtod(s, &end);
+    double v = gw_strtod(s, &end);
     if (end == s || *end != '\0')
         return gw_err_set(err, GW_EINVAL, "%s: '%s' is not a number", name, s);
     if (!isfinite(v) || (errno == ERANGE && fabs(v) >= 1.0))

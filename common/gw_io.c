@@ -21,6 +21,7 @@
 #include <unistd.h>
 
 #include "gw_common.h"
+#include "gw_locale.h"
 
 _Static_assert(sizeof(sigset_t) <= sizeof(((gw_afile *)0)->oldmask), "sigset_t does not fit");
 _Static_assert(sizeof(sigset_t) <= sizeof(((gw_outset *)0)->oldmask), "sigset_t does not fit");
@@ -70,7 +71,7 @@ static int write_target(const char *path, char *out, size_t n, const char *what,
     if (lstat(path, &st) != 0 || !S_ISLNK(st.st_mode)) {
         if (strlen(path) >= n)
             return gw_err_set(err, GW_EINVAL, "%s: path too long", path);
-        snprintf(out, n, "%s", path);
+        gw_snprintf(out, n, "%s", path);
         return GW_OK;
     }
     char real[PATH_MAX];
@@ -78,7 +79,7 @@ static int write_target(const char *path, char *out, size_t n, const char *what,
         return link_refused(path, what, errno, err);
     if (strlen(real) >= n)
         return gw_err_set(err, GW_EINVAL, "%s: path too long", real);
-    snprintf(out, n, "%s", real);
+    gw_snprintf(out, n, "%s", real);
     return GW_OK;
 }
 
@@ -95,7 +96,7 @@ static void host_token(char *out, size_t n)
             out[k++] = *c;
     out[k] = '\0';
     if (k == 0)
-        snprintf(out, n, "host");
+        gw_snprintf(out, n, "host");
 }
 
 /* The temporaries of path that a writer on this host left when it was killed
@@ -106,11 +107,11 @@ static void remove_stale_temporaries(const char *path, const char *host)
 {
     char dir[4096];
     const char *slash = strrchr(path, '/'), *base = slash ? slash + 1 : path;
-    if (snprintf(dir, sizeof dir, "%s", path) >= (int)sizeof dir)
+    if (gw_snprintf(dir, sizeof dir, "%s", path) >= (int)sizeof dir)
         return;
     gw_path_parent(dir);
     char prefix[512];
-    if (snprintf(prefix, sizeof prefix, "%s.tmp.%s.", base, host) >= (int)sizeof prefix)
+    if (gw_snprintf(prefix, sizeof prefix, "%s.tmp.%s.", base, host) >= (int)sizeof prefix)
         return;
     const size_t plen = strlen(prefix);
     DIR *d = opendir(dir);
@@ -132,6 +133,38 @@ static void remove_stale_temporaries(const char *path, const char *host)
     closedir(d);
 }
 
+/* The process's umask, read without changing it (/proc/self/status,
+ * "Umask:", Linux 4.7 and later); elsewhere set to 077 and back under a lock
+ * (a file another thread creates in between is then only more private). */
+static mode_t current_umask(void)
+{
+    FILE *fp = fopen("/proc/self/status", "re");
+    if (fp) {
+        char line[256];
+        unsigned v = 0;
+        int got = 0;
+        while (!got && fgets(line, sizeof line, fp))
+            got = strncmp(line, "Umask:", 6) == 0 && sscanf(line + 6, "%o", &v) == 1;
+        fclose(fp);
+        if (got)
+            return (mode_t)(v & 0777);
+    }
+    static pthread_mutex_t mu = PTHREAD_MUTEX_INITIALIZER;
+    pthread_mutex_lock(&mu);
+    mode_t m = umask(077);
+    umask(m);
+    pthread_mutex_unlock(&mu);
+    return m & 0777;
+}
+
+mode_t gw_new_file_mode(const char *replaces)
+{
+    struct stat st;
+    if (replaces && stat(replaces, &st) == 0 && S_ISREG(st.st_mode))
+        return st.st_mode & 0777;
+    return 0666 & ~current_umask();
+}
+
 int gw_afile_open(gw_afile *f, const char *path, gw_err *err)
 {
     memset(f, 0, sizeof *f);
@@ -145,7 +178,7 @@ int gw_afile_open(gw_afile *f, const char *path, gw_err *err)
     char host[32];
     host_token(host, sizeof host);
     remove_stale_temporaries(path, host);
-    snprintf(f->tmp, sizeof f->tmp, "%s.tmp.%s.%ld.XXXXXX", path, host, (long)getpid());
+    gw_snprintf(f->tmp, sizeof f->tmp, "%s.tmp.%s.%ld.XXXXXX", path, host, (long)getpid());
     int fd = mkstemp(f->tmp);
     if (fd < 0) {
         f->tmp[0] = '\0';
@@ -153,7 +186,9 @@ int gw_afile_open(gw_afile *f, const char *path, gw_err *err)
         release_signals(f);
         return gw_err_set(err, GW_EIO, "%s: cannot create: %s", path, strerror(e));
     }
-    fchmod(fd, 0644);
+    /* mkstemp made it 0600: the permissions a shell's > would give (the
+     * replaced file's, or 0666 less the umask) */
+    fchmod(fd, gw_new_file_mode(path));
     f->fp = fdopen(fd, "w");
     if (!f->fp) {
         int e = errno;
@@ -301,7 +336,7 @@ int gw_outset_begin(gw_outset *s, const char *dir, const char *const *names, gw_
     memset(s, 0, sizeof *s);
     if (cur_set)
         return gw_err_set(err, GW_EINVAL, "%s: an output set is already open on this thread", dir);
-    if (snprintf(s->dir, sizeof s->dir, "%s", dir) >= (int)sizeof s->dir)
+    if (gw_snprintf(s->dir, sizeof s->dir, "%s", dir) >= (int)sizeof s->dir)
         return gw_err_set(err, GW_EINVAL, "%s: output path too long", dir);
     s->names = names;
     s->active = 1;
@@ -317,7 +352,7 @@ int gw_outset_check_input(const char *dir, const char *const *names, const char 
         return GW_OK;
     if (stat(input, &in) != 0) { /* a file still to make (wisdom): the same directory and name */
         char d[4096];
-        if (snprintf(d, sizeof d, "%s", input) >= (int)sizeof d)
+        if (gw_snprintf(d, sizeof d, "%s", input) >= (int)sizeof d)
             return GW_OK;
         const char *slash = strrchr(input, '/'), *base = slash ? slash + 1 : input;
         gw_path_parent(d);
@@ -331,7 +366,7 @@ int gw_outset_check_input(const char *dir, const char *const *names, const char 
     }
     for (int k = 0; names[k]; k++) {
         char p[4096 + 256];
-        if (snprintf(p, sizeof p, "%s/%s", dir, names[k]) < (int)sizeof p && stat(p, &st) == 0 &&
+        if (gw_snprintf(p, sizeof p, "%s/%s", dir, names[k]) < (int)sizeof p && stat(p, &st) == 0 &&
             st.st_dev == in.st_dev && st.st_ino == in.st_ino)
             return gw_err_set(err, GW_EINVAL, "%s: '%s' is the file this run writes as %s: give another --out "
                               "or move the input", what, input, p);
@@ -396,7 +431,7 @@ int gw_outset_commit(gw_outset *s, gw_err *err)
     /* an earlier run's file of this set that this run did not write */
     for (int k = 0; rc == GW_OK && s->names && s->names[k]; k++) {
         char p[4096 + 256];
-        if (snprintf(p, sizeof p, "%s/%s", s->dir, s->names[k]) >= (int)sizeof p)
+        if (gw_snprintf(p, sizeof p, "%s/%s", s->dir, s->names[k]) >= (int)sizeof p)
             continue;
         struct stat a, b;
         if (lstat(p, &a) != 0)
@@ -426,9 +461,25 @@ void gw_write_comment(FILE *fp, const char *text)
     for (const char *p = text; p && *p;) {
         const char *nl = strchr(p, '\n');
         size_t len = nl ? (size_t)(nl - p) : strlen(p);
-        fprintf(fp, "# %.*s\n", (int)len, p);
+        gw_fprintf(fp, "# %.*s\n", (int)len, p);
         p += len + (nl != NULL);
     }
+}
+
+/* gw_mkdir_p's failure: the directories it made (those of buf's components
+ * that end in [first, stop)) removed again, deepest first, so that a refused
+ * run leaves nothing behind */
+static void remove_made(char *buf, size_t first, size_t stop)
+{
+    if (!first)
+        return;
+    for (size_t i = stop; i-- > first;)
+        if (buf[i] == '/' || buf[i] == '\0') {
+            char c = buf[i];
+            buf[i] = '\0';
+            rmdir(buf);
+            buf[i] = c;
+        }
 }
 
 int gw_mkdir_p(const char *path, gw_err *err)
@@ -438,25 +489,42 @@ int gw_mkdir_p(const char *path, gw_err *err)
     if (n == 0 || n >= sizeof buf)
         return gw_err_set(err, GW_EINVAL, "output directory: bad path '%s'", path);
     memcpy(buf, path, n + 1);
+    size_t first = 0; /* the end of the first component made here (0: none) */
     for (size_t i = 1; i <= n; i++) {
         if (buf[i] == '/' || buf[i] == '\0') {
             char c = buf[i];
             buf[i] = '\0';
-            if (mkdir(buf, 0755) != 0 && errno != EEXIST)
-                return gw_err_set(err, GW_EIO, "%s: cannot create directory: %s", buf,
-                                  strerror(errno));
+            if (mkdir(buf, 0777) == 0) { /* less the umask, as mkdir -p */
+                if (!first)
+                    first = i;
+            } else if (errno != EEXIST) {
+                int e = errno;
+                gw_err_set(err, GW_EIO, "%s: cannot create directory: %s", buf, strerror(e));
+                remove_made(buf, first, i);
+                return GW_EIO;
+            }
             buf[i] = c;
         }
     }
     struct stat st;
     if (stat(path, &st) != 0 || !S_ISDIR(st.st_mode))
         return gw_err_set(err, GW_EIO, "%s: not a directory", path);
+    /* made under a umask that leaves its owner no write or search permission
+     * (umask 0300 and up): nothing could go into it. Removed again, deepest
+     * first, so that a refused run leaves nothing. */
+    if (first && access(path, W_OK | X_OK) != 0 && errno == EACCES) {
+        mode_t mask = 0777 & ~(st.st_mode & 0777);
+        remove_made(buf, first, n + 1);
+        return gw_err_set(err, GW_EINVAL, "%s: the directory made under umask %04o cannot be written into "
+                          "(its owner needs write and search permission: umask 077 or less)", path,
+                          (unsigned)mask);
+    }
     return GW_OK;
 }
 
 int gw_path_join(char *buf, size_t n, const char *dir, const char *name)
 {
-    int w = snprintf(buf, n, "%s/%s", dir, name);
+    int w = gw_snprintf(buf, n, "%s/%s", dir, name);
     return (w < 0 || (size_t)w >= n) ? GW_EINVAL : GW_OK;
 }
 
@@ -593,6 +661,7 @@ int gw_out_check(const char *dir, const char *what, gw_err *err)
         return gw_err_set(err, GW_EINVAL, "%s: bad path '%s'", what, dir ? dir : "");
     memcpy(buf, dir, n + 1);
     struct stat st;
+    int walked = 0;
     /* the directory, or else its nearest existing ancestor, must be a writable directory */
     for (;;) {
         if (stat(buf, &st) == 0) {
@@ -604,12 +673,19 @@ int gw_out_check(const char *dir, const char *what, gw_err *err)
             /* what the mode bits do not say (root under /proc, a read-only mount):
              * a directory made and removed at once where the run will make its own */
             char probe[4096 + 32];
-            snprintf(probe, sizeof probe, "%s/.granwave-probe-XXXXXX", buf);
+            gw_snprintf(probe, sizeof probe, "%s/.granwave-probe-XXXXXX", buf);
             if (!mkdtemp(probe))
                 return gw_err_set(err, GW_EINVAL, "%s: cannot write into '%s': %s", what, buf, strerror(errno));
             rmdir(probe);
+            /* directories still to make: under a umask that takes the owner's
+             * write or search permission (0300 and up) nothing could go into them */
+            mode_t mask = walked && geteuid() != 0 ? current_umask() : 0; /* root writes anyway */
+            if (mask & 0300)
+                return gw_err_set(err, GW_EINVAL, "%s: '%s' would be made under umask %04o, which leaves no "
+                                  "permission to write into it (umask 077 or less)", what, dir, (unsigned)mask);
             return GW_OK;
         }
+        walked = 1;
         if (errno != ENOENT)
             return gw_err_set(err, GW_EINVAL, "%s: '%s': %s", what, buf, strerror(errno));
         /* a name that is a symbolic link to nothing is not a directory still to make:
@@ -691,7 +767,7 @@ int gw_fnv1a64_parse(const char *p, size_t len, unsigned long long *h)
 
 int gw_fnv1a64_stream(FILE *fp, unsigned long long *h)
 {
-    unsigned char buf[65536];
+    unsigned char buf[8192]; /* 64 KiB here overflowed a 64 KiB stack (ulimit -s 64) */
     size_t got;
     unsigned long long v = GW_FNV1A64_INIT;
     while ((got = fread(buf, 1, sizeof buf, fp)) > 0)

@@ -12,6 +12,7 @@
 #include <string.h>
 
 #include "gw_common.h"
+#include "gw_locale.h"
 
 cJSON *gw_json_doubles(const double *v, int n)
 {
@@ -60,8 +61,8 @@ static int exact_numbers(cJSON *o)
             continue; /* cJSON's null and integers */
         char buf[40];
         for (int digits = 15; digits <= 17; digits++) {
-            snprintf(buf, sizeof buf, "%.*g", digits, v);
-            if (strtod(buf, NULL) == v)
+            gw_snprintf(buf, sizeof buf, "%.*g", digits, v);
+            if (gw_strtod(buf, NULL) == v)
                 break;
         }
         char *t = malloc(strlen(buf) + 1);

@@ -9,6 +9,7 @@
 #include <string.h>
 
 #include "gw_param.h"
+#include "gw_locale.h"
 
 int gw_param_count(const gw_param *t)
 {
@@ -189,7 +190,7 @@ static int set_text(const gw_param *p, void *obj, const char *value, gw_err *err
         int i = choice_index(p->choices, value);
         if (i < 0) {
             char list[512];
-            snprintf(list, sizeof list, "%s", p->choices ? p->choices : "");
+            gw_snprintf(list, sizeof list, "%s", p->choices ? p->choices : "");
             for (char *c = list; *c; c++)
                 if (*c == ',')
                     *c = ' ';
@@ -310,7 +311,7 @@ int gw_param_check(const gw_param *t, const void *obj, gw_err *err)
             const gw_param_list *l = f;
             for (int k = 0; k < l->n && rc == GW_OK; k++) {
                 char what[32];
-                snprintf(what, sizeof what, "item %d is ", k + 1);
+                gw_snprintf(what, sizeof what, "item %d is ", k + 1);
                 rc = isfinite(l->v[k]) ? range_bad(p, l->v[k], err, what)
                                        : gw_err_set(err, GW_EINVAL, "%s: item %d is not finite", p->name, k + 1);
             }
@@ -369,29 +370,29 @@ int gw_param_format(const gw_param *p, const void *obj, char *buf, size_t n)
     buf[0] = '\0';
     switch (p->type) {
     case GW_PARAM_DOUBLE:
-        w = isnan(*(const double *)f) ? 0 : snprintf(buf, n, "%.17g", *(const double *)f);
+        w = isnan(*(const double *)f) ? 0 : gw_snprintf(buf, n, "%.17g", *(const double *)f);
         break;
     case GW_PARAM_INT:
-    case GW_PARAM_FLAG: w = snprintf(buf, n, "%d", *(const int *)f); break;
-    case GW_PARAM_LONG: w = snprintf(buf, n, "%ld", *(const long *)f); break;
+    case GW_PARAM_FLAG: w = gw_snprintf(buf, n, "%d", *(const int *)f); break;
+    case GW_PARAM_LONG: w = gw_snprintf(buf, n, "%ld", *(const long *)f); break;
     case GW_PARAM_CHOICE:
         w = *(const int *)f < 0 ? 0 : choice_name(p->choices, *(const int *)f, buf, n);
         break;
     case GW_PARAM_TEXT: {
         const char *s = *(char *const *)f;
-        w = snprintf(buf, n, "%s", s ? s : "");
+        w = gw_snprintf(buf, n, "%s", s ? s : "");
         break;
     }
     case GW_PARAM_LIST: {
         const gw_param_list *l = f;
         w = 0;
         for (int i = 0; i < l->n && w >= 0 && (size_t)w < n; i++)
-            w += snprintf(buf + w, n - (size_t)w, "%s%.17g", i ? "," : "", l->v[i]);
+            w += gw_snprintf(buf + w, n - (size_t)w, "%s%.17g", i ? "," : "", l->v[i]);
         break;
     }
     case GW_PARAM_RANGE: {
         const long *r = f;
-        w = snprintf(buf, n, "%ld:%ld", r[0], r[1]);
+        w = gw_snprintf(buf, n, "%ld:%ld", r[0], r[1]);
         break;
     }
     default: return -1;

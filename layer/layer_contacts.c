@@ -17,6 +17,7 @@
 #include <string.h>
 
 #include "layer_impl.h"
+#include "gw_locale.h"
 
 static int contact_cmp(const void *pa, const void *pb)
 {
@@ -98,11 +99,11 @@ static int missed_contact(const gw_layer *L, const layer_contact *c, double un, 
     const double step = vmax * L->sp.dt;
     char who[80];
     if (c->b >= 0 && (c->a == L->block || c->b == L->block))
-        snprintf(who, sizeof who, "the block and particle %d", c->a == L->block ? c->b : c->a);
+        gw_snprintf(who, sizeof who, "the block and particle %d", c->a == L->block ? c->b : c->a);
     else if (c->b >= 0)
-        snprintf(who, sizeof who, "particles %d and %d", c->a, c->b);
+        gw_snprintf(who, sizeof who, "particles %d and %d", c->a, c->b);
     else
-        snprintf(who, sizeof who, "particle %d and the %s wall", c->a,
+        gw_snprintf(who, sizeof who, "particle %d and the %s wall", c->a,
                  c->b == LAYER_LEFT ? "left" : c->b == LAYER_RIGHT ? "right" : "bottom");
     return gw_err_set(err, GW_EINVAL,
                       "skin: %g m is too small for this run: at t = %.9g s %s overlapped by %.3g m without being "

@@ -32,6 +32,7 @@
 #include <string.h>
 
 #include "layer_impl.h"
+#include "gw_locale.h"
 #include "layer_outcome.h"
 
 gw_layer_impact_params gw_layer_impact_params_default(void)
@@ -189,7 +190,7 @@ int gw_layer_impact_rest_check(const gw_layer_sample *smp, const gw_layer_params
         return GW_OK;
     char nm[300] = "";
     if (name)
-        snprintf(nm, sizeof nm, " '%s'", name);
+        gw_snprintf(nm, sizeof nm, " '%s'", name);
     if (!(w > 0))
         return gw_err_set(err, GW_EINVAL, "sample%s: its floor contacts hold %.3g N of Hertz force at t = 0 and "
                           "gravity is %g: the pile was settled under gravity and its strain energy would be "
@@ -258,13 +259,13 @@ int gw_layer_impact_step_check(const gw_layer_impact_params *ip, const gw_solver
     const double div = ip->dt_out / ceil(ip->dt_out / sp->dt - 1e-9);
     char ms[32], ds[32];
     for (int d = 6; d <= 17; d++) {
-        snprintf(ms, sizeof ms, "%.*g", d, mult);
-        if (gw_layer_impact_dt_divides(sp->dt, strtod(ms, NULL)))
+        gw_snprintf(ms, sizeof ms, "%.*g", d, mult);
+        if (gw_layer_impact_dt_divides(sp->dt, gw_strtod(ms, NULL)))
             break;
     }
     for (int d = 6; d <= 17; d++) {
-        snprintf(ds, sizeof ds, "%.*g", d, div);
-        if (gw_layer_impact_dt_divides(strtod(ds, NULL), ip->dt_out))
+        gw_snprintf(ds, sizeof ds, "%.*g", d, div);
+        if (gw_layer_impact_dt_divides(gw_strtod(ds, NULL), ip->dt_out))
             break;
     }
     return gw_err_set(err, GW_EINVAL, "dt-out: %g s is not a multiple of the verlet step dt = %g s, which would "

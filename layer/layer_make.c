@@ -30,6 +30,7 @@
 #include <string.h>
 
 #include "layer_impl.h"
+#include "gw_locale.h"
 
 typedef struct splitmix64 {
     unsigned long long s;
@@ -351,7 +352,7 @@ static int settled_readable(gw_layer_sample *out, gw_err *err)
     if (rc == GW_OK)
         return GW_OK;
     char why[sizeof err->msg];
-    snprintf(why, sizeof why, "%s", err->msg);
+    gw_snprintf(why, sizeof why, "%s", err->msg);
     gw_layer_sample_free(out);
     memset(out, 0, sizeof *out);
     return gw_err_set(err, GW_ESOLVER, "the pile did not settle into a valid sample (%s): its contacts are too "

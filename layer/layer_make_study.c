@@ -11,6 +11,7 @@
 #include <string.h>
 
 #include "layer_setup_rows.h"
+#include "gw_locale.h"
 
 #define OFF(f) offsetof(gw_layer_make_setup, f)
 
@@ -106,7 +107,7 @@ static char *header(const gw_layer_make_setup *s, const gw_layer_make_outcome *o
     size_t len = 512 + (js ? strlen(js) : 0);
     char *h = malloc(len);
     if (h)
-        snprintf(h, len, "granwave %s library gw_layer_make_run\nsettings: %s\nsettled: t = %.4g s, E_k = %.4g J, "
+        gw_snprintf(h, len, "granwave %s library gw_layer_make_run\nsettings: %s\nsettled: t = %.4g s, E_k = %.4g J, "
                  "converged %d, max overlap %.3g R_p", gw_version(), js ? js : "{}", o->r.t_settle, o->r.ke_final,
                  o->r.converged, o->r.max_overlap);
     free(js);
@@ -181,7 +182,7 @@ int gw_layer_make_run_progress(const gw_layer_make_setup *s, gw_progress_fn prog
         unsigned long long fh = 0; /* the content written, as the program's JSON gives it */
         gw_err he = {{0}};
         if (rc == GW_OK && gw_fnv1a64_file(s->out, "sample", &fh, &he) == GW_OK && (out->sample_fnv1a64 = malloc(17)))
-            snprintf(out->sample_fnv1a64, 17, "%016llx", fh);
+            gw_snprintf(out->sample_fnv1a64, 17, "%016llx", fh);
     }
     return rc;
 }

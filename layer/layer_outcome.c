@@ -33,6 +33,7 @@
 #include <string.h>
 
 #include "layer_impl.h"
+#include "gw_locale.h"
 #include "layer_outcome.h"
 
 void layer_outcome_init(layer_outcome *o, gw_layer *L, int until, int touching)
@@ -121,24 +122,24 @@ void layer_outcome_finish(const layer_outcome *o, double y0, double vi, double t
     double s[6];
     gw_layer_particle(o->L, gw_layer_n(o->L) - 1, s);
     if (o->verdict < 0 && stopped_by_t_max) {
-        snprintf(res->undecided, sizeof res->undecided,
+        gw_snprintf(res->undecided, sizeof res->undecided,
                  "bounce undecided: the run ended at t-max = %.6g s before the block left the layer "
                  "moving up or its rebound ended inside it (block %s, v_y = %.4g m/s); raise --t-max",
                  t_end, o->contact ? "touching the layer" : "in free flight", s[4]);
     } else if (o->verdict == 1 && !o->tf && stopped_by_t_max) {
         double g = lp->gravity;
         if (!o->contact && s[4] > 0 && g > 0)
-            snprintf(res->undecided, sizeof res->undecided,
+            gw_snprintf(res->undecided, sizeof res->undecided,
                      "e_n, e, alpha_r undecided: the run ended at t-max = %.6g s before the block's "
                      "normal velocity was back to zero (T_f, about %.4g s in free flight from here); "
                      "raise --t-max (e_n_first is the first free-flight maximum)", t_end, t_end + s[4] / g);
         else if (!o->contact && s[4] > 0 && !(g > 0)) /* no gravity: the flight never turns */
-            snprintf(res->undecided, sizeof res->undecided,
+            gw_snprintf(res->undecided, sizeof res->undecided,
                      "e_n, e, alpha_r undecided: without gravity the block flies on (v_y = %.4g m/s at "
                      "t-max = %.6g s) and T_f never comes; e_n_first, the first free-flight maximum, is the "
                      "rebound's", s[4], t_end);
         else
-            snprintf(res->undecided, sizeof res->undecided,
+            gw_snprintf(res->undecided, sizeof res->undecided,
                      "e_n, e, alpha_r undecided: the run ended at t-max = %.6g s before the block's "
                      "normal velocity was back to zero (T_f); raise --t-max (e_n_first is the first "
                      "free-flight maximum)", t_end);

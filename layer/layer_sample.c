@@ -27,6 +27,7 @@
 #include <strings.h>
 
 #include "layer_impl.h"
+#include "gw_locale.h"
 #if GW_HAVE_HDF5
 #include <hdf5.h>
 #include "gw_h5.h"
@@ -134,7 +135,7 @@ static int check_bodies(const gw_layer_sample *s, const char *path, int status, 
     if (!s->body)
         return GW_OK;
     char what[4200];
-    snprintf(what, sizeof what, "sample '%s'", path);
+    gw_snprintf(what, sizeof what, "sample '%s'", path);
     return layer_bodies_check(s->n, s->x, s->y, s->r, s->body, what, status, err);
 }
 
@@ -148,7 +149,7 @@ static int check_sample(const gw_layer_sample *s, const char *path, int status, 
                           path, s->n, SAMPLE_NMAX);
     char where[48];
     for (int i = 0; i < s->n && rc == GW_OK; i++) {
-        snprintf(where, sizeof where, "particle at index %d", i);
+        gw_snprintf(where, sizeof where, "particle at index %d", i);
         rc = check_particle(s->width, s->rm, s->x[i], s->y[i], s->r[i], path, where, status, err);
     }
     return rc == GW_OK ? check_bodies(s, path, status, err) : rc;
@@ -210,20 +211,20 @@ static int write_text(const gw_layer_sample *s, const char *path, const char *he
     int rc = gw_afile_open(&f, path, err);
     if (rc != GW_OK)
         return rc;
-    fprintf(f.fp, SAMPLE_MAGIC " %d\n", s->body ? 2 : 1);
+    gw_fprintf(f.fp, SAMPLE_MAGIC " %d\n", s->body ? 2 : 1);
     gw_write_comment(f.fp, header);
-    fprintf(f.fp, "# units: metres; lines after 'n' are: x y r%s\n", s->body ? " body" : "");
-    fprintf(f.fp, "width %.17g\nrm %.17g\nvolume_ratio %.17g\nporosity %.17g\nseed %ld\n",
+    gw_fprintf(f.fp, "# units: metres; lines after 'n' are: x y r%s\n", s->body ? " body" : "");
+    gw_fprintf(f.fp, "width %.17g\nrm %.17g\nvolume_ratio %.17g\nporosity %.17g\nseed %ld\n",
             s->width, s->rm, s->volume_ratio, s->porosity, s->seed);
-    fprintf(f.fp, "mass_law %s\n", s->mass_law == GW_LAYER_MASS_SPHERE ? "sphere" : "disc");
+    gw_fprintf(f.fp, "mass_law %s\n", s->mass_law == GW_LAYER_MASS_SPHERE ? "sphere" : "disc");
     if (s->clump_mass == GW_LAYER_CLUMP_MASS_UNION) /* sum, the default, is not written */
-        fprintf(f.fp, "clump_mass %s\n", gw_layer_clump_mass_name(s->clump_mass));
-    fprintf(f.fp, "n %d\n", s->n);
+        gw_fprintf(f.fp, "clump_mass %s\n", gw_layer_clump_mass_name(s->clump_mass));
+    gw_fprintf(f.fp, "n %d\n", s->n);
     for (int i = 0; i < s->n; i++) {
         if (s->body)
-            fprintf(f.fp, "%.17g %.17g %.17g %d\n", s->x[i], s->y[i], s->r[i], s->body[i]);
+            gw_fprintf(f.fp, "%.17g %.17g %.17g %d\n", s->x[i], s->y[i], s->r[i], s->body[i]);
         else
-            fprintf(f.fp, "%.17g %.17g %.17g\n", s->x[i], s->y[i], s->r[i]);
+            gw_fprintf(f.fp, "%.17g %.17g %.17g\n", s->x[i], s->y[i], s->r[i]);
     }
     return gw_afile_commit(&f, err);
 }
@@ -307,7 +308,7 @@ static int split(char *s, char **tok, int max)
 static int parse_num(const char *s, double *v)
 {
     char *end;
-    *v = strtod(s, &end);
+    *v = gw_strtod(s, &end);
     return end != s && *end == '\0' && isfinite(*v);
 }
 
@@ -458,7 +459,7 @@ static int read_text(text_in *t, gw_layer_sample *s, gw_err *err)
         }
         if (ncol == 4)
             s->body[i] = (int)id;
-        snprintf(where, sizeof where, "line %ld", t->line);
+        gw_snprintf(where, sizeof where, "line %ld", t->line);
         rc = check_particle(s->width, s->rm, s->x[i], s->y[i], s->r[i], t->path, where, GW_EFORMAT, err);
         i++;
     }
@@ -495,7 +496,7 @@ static herr_t h5_innermost(unsigned k, const H5E_error2_t *e, void *ctx)
 {
     char *why = ctx;
     if (k == 0 && e->desc) {
-        snprintf(why, 160, "%s", e->desc);
+        gw_snprintf(why, 160, "%s", e->desc);
         for (char *p = why; *p; p++)
             if (*p == '\n' || *p == '\r')
                 *p = ' ';
@@ -509,7 +510,7 @@ static herr_t h5_record(hid_t stack, void *ctx)
     if (!why[0])
         H5Ewalk2(stack, H5E_WALK_UPWARD, h5_innermost, why);
     if (!why[0])
-        snprintf(why, 160, "HDF5 call failed");
+        gw_snprintf(why, 160, "HDF5 call failed");
     return 0;
 }
 
@@ -903,7 +904,7 @@ int gw_layer_sample_read(const char *path, gw_layer_sample *s, gw_err *err)
         rc = gw_fnv1a64_file(path, "sample", &s->content_hash, err);
     if (rc == GW_OK) {
         char what[4200];
-        snprintf(what, sizeof what, "sample '%s'", path);
+        gw_snprintf(what, sizeof what, "sample '%s'", path);
         rc = layer_overlaps_check(s->n, s->x, s->y, s->r, s->body, what, err);
     }
     if (rc != GW_OK) {

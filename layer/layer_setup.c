@@ -14,6 +14,7 @@
 #include <string.h>
 
 #include "layer_setup_rows.h"
+#include "gw_locale.h"
 
 _Static_assert(GW_LAYER_UNTIL_REBOUND == 0 && GW_LAYER_UNTIL_VERDICT == 1, "until choices rebound,verdict");
 
@@ -433,7 +434,7 @@ int gw_layer_impact_run_progress(const gw_layer_impact_setup *s, gw_progress_fn 
         out->dt = out->r.dt;
         out->nxcorr = out->r.xcorr_delay && out->r.nrings > 1 ? out->r.nrings - 1 : 0;
         if ((out->sample_fnv1a64 = malloc(17)))
-            snprintf(out->sample_fnv1a64, 17, "%016llx", smp.content_hash);
+            gw_snprintf(out->sample_fnv1a64, 17, "%016llx", smp.content_hash);
         else if (rc == GW_OK)
             rc = gw_err_set(err, GW_ENOMEM, "layer-impact: out of memory");
         const size_t nu = strlen(out->r.undecided);

@@ -30,6 +30,7 @@
 #include <string.h>
 
 #include "layer_impl.h"
+#include "gw_locale.h"
 
 /* Project F_t; closing[k] > 0 marks contacts that just closed, slipping[k] > 0
  * contacts that just reached the Coulomb cap (both may be NULL).
@@ -107,7 +108,7 @@ static int make_solver(gw_layer *L, gw_err *err)
     int rc = gw_solver_create(L->type, &L->sys, &L->sp, L->t, L->y, &L->solver, err);
     if (rc != GW_OK) {
         char tmp[sizeof err->msg];
-        snprintf(tmp, sizeof tmp, "%s", err ? err->msg : "");
+        gw_snprintf(tmp, sizeof tmp, "%s", err ? err->msg : "");
         return gw_err_set(err, rc, "layer: solver set-up failed at t = %.9g s: %s", L->t, tmp);
     }
     return GW_OK;

@@ -43,6 +43,7 @@
 #include <string.h>
 
 #include "gw_layer_study.h"
+#include "gw_locale.h"
 #include "gw_sweep.h"
 
 static const char *const columns[] = {
@@ -123,7 +124,7 @@ static void name_placement(const gw_layer_impact_setup *s, const placement *pl, 
         return;
     const double x0 = s->x - ((double)pl->point - 0.5 * (double)(pl->points - 1)) * pl->spacing;
     char tmp[sizeof err->msg];
-    snprintf(tmp, sizeof tmp, "%s", err->msg + 3);
+    gw_snprintf(tmp, sizeof tmp, "%s", err->msg + 3);
     gw_err_set(err, GW_EINVAL, "spacing: impact point %ld of %ld, %g m apart around x = %g m: %s", pl->point,
                pl->points, pl->spacing, x0, tmp);
 }

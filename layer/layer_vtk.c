@@ -15,6 +15,7 @@
 #include <stdlib.h>
 
 #include "layer_impl.h"
+#include "gw_locale.h"
 
 int gw_layer_write_vtk(const gw_layer *L, const char *path, const char *title, gw_err *err)
 {
@@ -30,49 +31,49 @@ int gw_layer_write_vtk(const gw_layer *L, const char *path, const char *title, g
     for (int k = 0; k < L->nc; k++)
         nl += CLOSED_PAIR(k);
     /* (the title line holds at most 255 characters) */
-    fprintf(fp, "# vtk DataFile Version 3.0\n%.120s (granwave %s); units: m, m/s, rad/s, N, TIME s\n"
+    gw_fprintf(fp, "# vtk DataFile Version 3.0\n%.120s (granwave %s); units: m, m/s, rad/s, N, TIME s\n"
             "ASCII\nDATASET POLYDATA\nFIELD FieldData 1\nTIME 1 1 double\n%.17g\n", title, gw_version(), L->t);
-    fprintf(fp, "POINTS %d double\n", n);
+    gw_fprintf(fp, "POINTS %d double\n", n);
     for (int i = 0; i < n; i++) {
         double s[6];
         gw_layer_particle(L, i, s);
-        fprintf(fp, "%.9g %.9g 0\n", s[0], s[1]);
+        gw_fprintf(fp, "%.9g %.9g 0\n", s[0], s[1]);
     }
-    fprintf(fp, "VERTICES %d %d\n", n, 2 * n);
+    gw_fprintf(fp, "VERTICES %d %d\n", n, 2 * n);
     for (int i = 0; i < n; i++)
-        fprintf(fp, "1 %d\n", i);
-    fprintf(fp, "LINES %d %d\n", nl, 3 * nl);
+        gw_fprintf(fp, "1 %d\n", i);
+    gw_fprintf(fp, "LINES %d %d\n", nl, 3 * nl);
     for (int k = 0; k < L->nc; k++)
         if (CLOSED_PAIR(k))
-            fprintf(fp, "2 %d %d\n", L->c[k].a, L->c[k].b);
-    fprintf(fp, "POINT_DATA %d\nSCALARS radius double 1\nLOOKUP_TABLE default\n", n);
+            gw_fprintf(fp, "2 %d %d\n", L->c[k].a, L->c[k].b);
+    gw_fprintf(fp, "POINT_DATA %d\nSCALARS radius double 1\nLOOKUP_TABLE default\n", n);
     for (int i = 0; i < n; i++)
-        fprintf(fp, "%.9g\n", L->r[i]);
-    fprintf(fp, "SCALARS omega double 1\nLOOKUP_TABLE default\n");
+        gw_fprintf(fp, "%.9g\n", L->r[i]);
+    gw_fprintf(fp, "SCALARS omega double 1\nLOOKUP_TABLE default\n");
     for (int i = 0; i < n; i++)
-        fprintf(fp, "%.9g\n", L->y[6 * layer_body(L, i) + 5]);
-    fprintf(fp, "SCALARS fixed int 1\nLOOKUP_TABLE default\n");
+        gw_fprintf(fp, "%.9g\n", L->y[6 * layer_body(L, i) + 5]);
+    gw_fprintf(fp, "SCALARS fixed int 1\nLOOKUP_TABLE default\n");
     for (int i = 0; i < n; i++)
-        fprintf(fp, "%d\n", L->fixed[layer_body(L, i)]);
-    fprintf(fp, "SCALARS block int 1\nLOOKUP_TABLE default\n");
+        gw_fprintf(fp, "%d\n", L->fixed[layer_body(L, i)]);
+    gw_fprintf(fp, "SCALARS block int 1\nLOOKUP_TABLE default\n");
     for (int i = 0; i < n; i++)
-        fprintf(fp, "%d\n", i == L->block);
-    fprintf(fp, "VECTORS velocity double\n");
+        gw_fprintf(fp, "%d\n", i == L->block);
+    gw_fprintf(fp, "VECTORS velocity double\n");
     for (int i = 0; i < n; i++) {
         double s[6];
         gw_layer_particle(L, i, s);
-        fprintf(fp, "%.9g %.9g 0\n", s[3], s[4]);
+        gw_fprintf(fp, "%.9g %.9g 0\n", s[3], s[4]);
     }
     { /* cells: the n vertices, then the nl lines */
-        fprintf(fp, "CELL_DATA %d\nSCALARS F_n double 1\nLOOKUP_TABLE default\n", n + nl);
+        gw_fprintf(fp, "CELL_DATA %d\nSCALARS F_n double 1\nLOOKUP_TABLE default\n", n + nl);
         for (int pass = 0; pass < 2; pass++) {
             if (pass == 1)
-                fprintf(fp, "SCALARS F_t double 1\nLOOKUP_TABLE default\n");
+                gw_fprintf(fp, "SCALARS F_t double 1\nLOOKUP_TABLE default\n");
             for (int i = 0; i < n; i++)
                 fputs("0\n", fp);
             for (int k = 0; k < L->nc; k++)
                 if (CLOSED_PAIR(k))
-                    fprintf(fp, "%.9g\n", snap[LAYER_SNAP_W * k + (pass == 0 ? LAYER_SNAP_FN : LAYER_SNAP_FT)]);
+                    gw_fprintf(fp, "%.9g\n", snap[LAYER_SNAP_W * k + (pass == 0 ? LAYER_SNAP_FN : LAYER_SNAP_FT)]);
         }
     }
 #undef CLOSED_PAIR
@@ -89,11 +90,11 @@ int gw_layer_write_pvd(const char *path, int n, const char *const *files, const 
     int rc = gw_afile_open(&f, path, err);
     if (rc != GW_OK)
         return rc;
-    fprintf(f.fp, "<?xml version=\"1.0\"?>\n<!-- granwave %s: layer snapshots (legacy VTK), time in s -->\n"
+    gw_fprintf(f.fp, "<?xml version=\"1.0\"?>\n<!-- granwave %s: layer snapshots (legacy VTK), time in s -->\n"
             "<VTKFile type=\"Collection\" version=\"0.1\">\n  <Collection>\n", gw_version());
     for (int k = 0; k < n; k++)
-        fprintf(f.fp, "    <DataSet timestep=\"%.17g\" group=\"\" part=\"0\" file=\"%s\"/>\n", times[k], files[k]);
-    fprintf(f.fp, "  </Collection>\n</VTKFile>\n");
+        gw_fprintf(f.fp, "    <DataSet timestep=\"%.17g\" group=\"\" part=\"0\" file=\"%s\"/>\n", times[k], files[k]);
+    gw_fprintf(f.fp, "  </Collection>\n</VTKFile>\n");
     if (ferror(f.fp)) {
         gw_afile_abort(&f);
         return gw_err_set(err, GW_EIO, "%s: write error", path);

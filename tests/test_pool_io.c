@@ -352,7 +352,7 @@ static void test_provenance(void)
     cJSON_AddStringToObject(s, "solver", "cvode");
     char want[256];
     snprintf(want, sizeof want,
-             "granwave %s\ncommand: granwave chain --n 5 --out dir with blank\nsettings: {\"k\":1.5,\"solver\":\"cvode\"}",
+             "granwave %s\ncommand: granwave chain --n 5 --out 'dir with blank'\nsettings: {\"k\":1.5,\"solver\":\"cvode\"}",
              gw_version());
     char *h = gw_cli_provenance("chain", 4, argv, s);
     gw_test_true(h && strcmp(h, want) == 0, "provenance: version, command line, one-line settings");

@@ -27,6 +27,7 @@
 #include <arkode/arkode_erkstep.h>
 
 #include "gw_sundials.h"
+#include "gw_locale.h"
 
 typedef struct ark_impl {
     SUNContext ctx;
@@ -43,7 +44,7 @@ typedef struct ark_impl {
 static void ark_flag_name(int flag, char *buf, size_t len)
 {
     char *name = ARKStepGetReturnFlagName(flag);
-    snprintf(buf, len, "%s", name ? name : "unknown flag");
+    gw_snprintf(buf, len, "%s", name ? name : "unknown flag");
     free(name);
 }
 
@@ -219,7 +220,7 @@ static int ark_advance(gw_solver *s, double tout, double *t, double *y, int *roo
     if (flag >= 0)
         return GW_OK;
     char msg[sizeof s->errmsg], name[64];
-    snprintf(msg, sizeof msg, "%s", s->errmsg);
+    gw_snprintf(msg, sizeof msg, "%s", s->errmsg);
     ark_flag_name(flag, name, sizeof name);
     gw_solver_set_error(s, "arkode failed at t = %.9g s (%s): %s", tret, name,
                         msg[0] ? msg : "no message");

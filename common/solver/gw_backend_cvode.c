@@ -13,6 +13,7 @@
 #include <sunnonlinsol/sunnonlinsol_fixedpoint.h>
 
 #include "gw_sundials.h"
+#include "gw_locale.h"
 
 typedef struct cv_impl {
     SUNContext ctx;
@@ -88,7 +89,7 @@ static void cv_destroy(gw_solver *s)
 static void cv_flag_name(int flag, char *buf, size_t len)
 {
     char *name = CVodeGetReturnFlagName(flag);
-    snprintf(buf, len, "%s", name ? name : "unknown flag");
+    gw_snprintf(buf, len, "%s", name ? name : "unknown flag");
     free(name);
 }
 
@@ -192,7 +193,7 @@ static int cv_advance(gw_solver *s, double tout, double *t, double *y, int *root
     if (flag >= 0)
         return GW_OK;
     char msg[sizeof s->errmsg], name[64];
-    snprintf(msg, sizeof msg, "%s", s->errmsg);
+    gw_snprintf(msg, sizeof msg, "%s", s->errmsg);
     cv_flag_name(flag, name, sizeof name);
     gw_solver_set_error(s, "cvode failed at t = %.9g s (%s): %s", tret, name,
                         msg[0] ? msg : "no message");

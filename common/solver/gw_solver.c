@@ -9,6 +9,7 @@
 #include <string.h>
 
 #include "gw_param.h"
+#include "gw_locale.h"
 #include "gw_solver_impl.h"
 
 gw_solver_params gw_solver_params_default(void)
@@ -96,7 +97,7 @@ int gw_solver_tolerances_unused_check(const gw_solver_type *type, const struct g
         if (!p || p->type != GW_PARAM_DOUBLE)
             continue;
         const double v = *(const double *)((const char *)obj + p->offset);
-        if (p->def ? v != strtod(p->def, NULL) : !isnan(v))
+        if (p->def ? v != gw_strtod(p->def, NULL) : !isnan(v))
             return gw_err_set(err, GW_EINVAL, "%s: has no effect with the fixed-step %s solver (the tolerances "
                               "are cvode's and arkode's)", p->name, type->name);
     }
@@ -107,7 +108,7 @@ void gw_solver_set_error(gw_solver *s, const char *fmt, ...)
 {
     va_list ap;
     va_start(ap, fmt);
-    vsnprintf(s->errmsg, sizeof s->errmsg, fmt, ap);
+    gw_vsnprintf(s->errmsg, sizeof s->errmsg, fmt, ap);
     va_end(ap);
 }
 

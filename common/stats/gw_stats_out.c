@@ -14,6 +14,7 @@
 #include <sys/stat.h>
 
 #include "gw_stats.h"
+#include "gw_locale.h"
 
 static const char *placement =
     "bouncing lies below the boundary; in each R_b/R_m column H* is placed between the lowest "
@@ -248,7 +249,7 @@ cJSON *gw_stats_json(const gw_stats_analysis *R, int full)
     cJSON_AddStringToObject(o, "input", R->input);
     if (t->has_content_hash) {
         char hx[17];
-        snprintf(hx, sizeof hx, "%016llx", t->content_hash);
+        gw_snprintf(hx, sizeof hx, "%016llx", t->content_hash);
         cJSON_AddStringToObject(o, "input_fnv1a64", hx);
     }
     cJSON_AddNumberToObject(o, "criterion", R->gs.criterion);
@@ -279,7 +280,7 @@ static void num(FILE *fp, double v)
     if (isnan(v))
         fputs(",nan", fp);
     else
-        fprintf(fp, ",%.9g", v);
+        gw_fprintf(fp, ",%.9g", v);
 }
 
 /* "# LABEL: TEXT" where every line break in text (a file name may hold one)
@@ -287,7 +288,7 @@ static void num(FILE *fp, double v)
  * header or as data. */
 static void comment_kv(FILE *fp, const char *label, const char *text)
 {
-    fprintf(fp, "# %s: ", label);
+    gw_fprintf(fp, "# %s: ", label);
     for (const char *p = text ? text : ""; *p; p++)
         if (*p == '\n' || *p == '\r')
             fputs("\n# ", fp);
@@ -298,12 +299,12 @@ static void comment_kv(FILE *fp, const char *label, const char *text)
 
 static void head(FILE *fp, const gw_stats_analysis *R, const char *what)
 {
-    fprintf(fp, "# granwave %s layer-stats\n", gw_version());
+    gw_fprintf(fp, "# granwave %s layer-stats\n", gw_version());
     comment_kv(fp, "command", R->cmdline ? R->cmdline : "(library call)");
     comment_kv(fp, "input", R->input);
     if (R->t.has_content_hash) /* the version of the table read */
-        fprintf(fp, "# input fnv1a64: %016llx\n", R->t.content_hash);
-    fprintf(fp, "# criterion: %.6g (a group bounces globally when its share of bouncing impact points >= "
+        gw_fprintf(fp, "# input fnv1a64: %016llx\n", R->t.content_hash);
+    gw_fprintf(fp, "# criterion: %.6g (a group bounces globally when its share of bouncing impact points >= "
                 "criterion)\n# %s\n", R->gs.criterion, what);
 }
 
@@ -312,14 +313,14 @@ static void key_names(FILE *fp, const gw_stats_analysis *R, int skip1, int skip2
 {
     for (int k = 0; k < R->gs.nkeys; k++)
         if (R->gs.key[k] != skip1 && R->gs.key[k] != skip2)
-            fprintf(fp, ",%s", R->t.grid_name[R->gs.key[k]]);
+            gw_fprintf(fp, ",%s", R->t.grid_name[R->gs.key[k]]);
 }
 
 static void key_values(FILE *fp, const gw_stats_analysis *R, long row, int skip1, int skip2)
 {
     for (int k = 0; k < R->gs.nkeys; k++)
         if (R->gs.key[k] != skip1 && R->gs.key[k] != skip2)
-            fprintf(fp, ",%s", gval(R, row, R->gs.key[k]));
+            gw_fprintf(fp, ",%s", gval(R, row, R->gs.key[k]));
 }
 
 static void write_groups(FILE *fp, const gw_stats_analysis *R)
@@ -336,14 +337,14 @@ static void write_groups(FILE *fp, const gw_stats_analysis *R)
                 "(the run ended before the verdict): bounce_share counts them as not bounced (bounced before "
                 "the end of the run), bounce_share_decided leaves them out, bounce_share_high counts them as "
                 "bounced; verdict_certain = 1 when no outcome of theirs could change the verdict");
-    fprintf(fp, "group");
+    gw_fprintf(fp, "group");
     key_names(fp, R, -1, -1);
-    fprintf(fp, ",%s\n", GW_STATS_GROUP_COLUMNS);
+    gw_fprintf(fp, ",%s\n", GW_STATS_GROUP_COLUMNS);
     for (int a = 0; a < R->gs.n; a++) {
         const gw_stats_group *g = &R->gs.g[a];
         double row[GW_STATS_GROUP_NCOLS];
         gw_stats_group_row(g, row);
-        fprintf(fp, "%d", a);
+        gw_fprintf(fp, "%d", a);
         key_values(fp, R, g->first, -1, -1);
         for (int c = 0; c < GW_STATS_GROUP_NCOLS; c++)
             num(fp, row[c]); /* counts and flags print as integers ("%.9g") */
@@ -359,16 +360,16 @@ static void write_convergence(FILE *fp, const gw_stats_analysis *R)
     head(fp, R, "convergence with the number of points (the paper's Fig. 10): row k of a group holds its k-th "
                 "point (by point index) and the means of e_n and e over the bouncing points among the first k, "
                 "and the bounce share of the first k");
-    fprintf(fp, "group");
+    gw_fprintf(fp, "group");
     key_names(fp, R, -1, -1);
-    fprintf(fp, ",k,case,point,bounced,e_n,e,running_mean_e_n,running_mean_e,running_share\n");
+    gw_fprintf(fp, ",k,case,point,bounced,e_n,e,running_mean_e_n,running_mean_e,running_share\n");
     for (int a = 0; a < R->gs.n; a++) {
         const gw_stats_group *g = &R->gs.g[a];
         for (int k = 0; k < g->n; k++) {
             long r = g->rows[k];
-            fprintf(fp, "%d", a);
+            gw_fprintf(fp, "%d", a);
             key_values(fp, R, g->first, -1, -1);
-            fprintf(fp, ",%d,%ld,%s", k + 1, t->case_id[r], R->gs.point_key >= 0 ? gval(R, r, R->gs.point_key) : "nan");
+            gw_fprintf(fp, ",%d,%ld,%s", k + 1, t->case_id[r], R->gs.point_key >= 0 ? gval(R, r, R->gs.point_key) : "nan");
             num(fp, t->val[r * t->ncols + cb]);
             num(fp, t->val[r * t->ncols + cen]);
             num(fp, t->val[r * t->ncols + ce]);
@@ -386,10 +387,10 @@ static void write_binary(FILE *fp, const gw_stats_analysis *R)
                 "the end of the block's first contact, over every row with this R_b/R_m and incidence (deg); "
                 "binary_disc = 4 r^2/(1 + r^2)^2 (disc masses, the layer default), binary_sphere = "
                 "4 r^3/(1 + r^3)^2, r = R_b/R_m");
-    fprintf(fp, "rb_rm,alpha,n,block_loss_mean,block_loss_std,binary_disc,binary_sphere\n");
+    gw_fprintf(fp, "rb_rm,alpha,n,block_loss_mean,block_loss_std,binary_disc,binary_sphere\n");
     for (int k = 0; k < R->nbin; k++) {
         const gw_stats_binary *b = &R->bin[k];
-        fprintf(fp, "%.9g,%.9g,%d", b->rb_rm, b->alpha, b->loss.n);
+        gw_fprintf(fp, "%.9g,%.9g,%d", b->rb_rm, b->alpha, b->loss.n);
         num(fp, b->loss.mean);
         num(fp, b->loss.std);
         num(fp, b->disc);
@@ -404,22 +405,22 @@ static void write_walls(FILE *fp, const gw_stats_analysis *R)
     head(fp, R, kw < 0 ? "walls: the table has no remove-walls grid key, nothing to compare"
                        : "walls kept (remove-walls = 0) and removed at impact time (remove-walls = 1) side by "
                          "side, for the groups that agree on every other key");
-    fprintf(fp, "pair");
+    gw_fprintf(fp, "pair");
     key_names(fp, R, kw, -1);
     static const char *cols[] = {"n_points", "bounce_share", "bouncing", "e_n_mean", "e_mean", "penetration_rm_mean",
                                  "block_loss_mean", "rebound_energy_mean"};
     for (int w = 0; w < 2; w++)
         for (size_t c = 0; c < sizeof cols / sizeof cols[0]; c++)
-            fprintf(fp, ",%s_%s", w ? "removed" : "walls", cols[c]);
+            gw_fprintf(fp, ",%s_%s", w ? "removed" : "walls", cols[c]);
     fputc('\n', fp);
     for (int k = 0; k < R->nwalls; k++) {
-        fprintf(fp, "%d", k);
+        gw_fprintf(fp, "%d", k);
         key_values(fp, R, R->gs.g[R->walls[k][0]].first, kw, -1);
         for (int w = 0; w < 2; w++) {
             const gw_stats_group *g = &R->gs.g[R->walls[k][w]];
-            fprintf(fp, ",%d", g->n);
+            gw_fprintf(fp, ",%d", g->n);
             num(fp, g->share);
-            fprintf(fp, ",%d", g->bouncing);
+            gw_fprintf(fp, ",%d", g->bouncing);
             num(fp, g->e_n.mean);
             num(fp, g->e.mean);
             num(fp, g->penetration_rm.mean);
@@ -434,25 +435,25 @@ static void write_diagram(FILE *fp, const gw_stats_analysis *R)
 {
     int kx = gw_stats_table_key(&R->t, "rb-rm"), kh = gw_stats_table_key(&R->t, "height-rm");
     head(fp, R, placement);
-    fprintf(fp, "# kind: cross (boundary between two cells), above (every H bounces), below (no H bounces), "
+    gw_fprintf(fp, "# kind: cross (boundary between two cells), above (every H bounces), below (no H bounces), "
                 "inverted (bouncing only above); changes > 1: the verdict changes more than once along H; "
                 "b31 = the fitted B.31 at rb_rm (boundary_fit.json)\n");
-    fprintf(fp, "diagram");
+    gw_fprintf(fp, "diagram");
     key_names(fp, R, kx, kh);
-    fprintf(fp, ",rb_rm,kind,h_star,h_lo,h_hi,share_lo,share_hi,changes,penetration_rm,b31\n");
+    gw_fprintf(fp, ",rb_rm,kind,h_star,h_lo,h_hi,share_lo,share_hi,changes,penetration_rm,b31\n");
     for (int q = 0; q < R->ndia; q++) {
         const gw_stats_panel *D = &R->dia[q];
         for (int i = 0; D->ok && i < D->d.nx; i++) {
             const gw_stats_boundary_pt *p = &D->d.pts[i];
-            fprintf(fp, "%d", q);
+            gw_fprintf(fp, "%d", q);
             key_values(fp, R, R->gs.g[D->groups[0]].first, kx, kh);
-            fprintf(fp, ",%.9g,%s", p->x, kind_name(p->kind));
+            gw_fprintf(fp, ",%.9g,%s", p->x, kind_name(p->kind));
             num(fp, p->h);
             num(fp, p->h_lo);
             num(fp, p->h_hi);
             num(fp, p->s_lo);
             num(fp, p->s_hi);
-            fprintf(fp, ",%d", p->changes);
+            gw_fprintf(fp, ",%d", p->changes);
             num(fp, p->penetration_rm);
             num(fp, D->fit_ok ? gw_stats_b31_eval(&D->fit.p, p->x) : NAN);
             fputc('\n', fp);
@@ -516,7 +517,7 @@ int gw_stats_out_check(const char *dir, const char *what, gw_err *err)
         return rc;
     /* the nearest existing ancestor (gw_out_check found it a directory) */
     char d[4096], probe[4200];
-    snprintf(d, sizeof d, "%s", dir);
+    gw_snprintf(d, sizeof d, "%s", dir);
     struct stat st;
     while (stat(d, &st) != 0) {
         size_t n = strlen(d);

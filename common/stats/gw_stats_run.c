@@ -20,6 +20,7 @@
 #include <string.h>
 
 #include "gw_stats.h"
+#include "gw_locale.h"
 
 #define OFF(f) offsetof(gw_stats_setup, f)
 
@@ -188,12 +189,12 @@ static void diagram_fit(gw_stats_analysis *A, gw_stats_panel *D)
                        .tan_gamma = tan(A->gamma_deg * M_PI / 180)};
     gw_err err = {{0}};
     if (!x)
-        snprintf(D->fit_reason, sizeof D->fit_reason, "out of memory");
+        gw_snprintf(D->fit_reason, sizeof D->fit_reason, "out of memory");
     else if (!isfinite(D->offset) && !(A->fit_mask & GW_STATS_B31_OFFSET))
-        snprintf(D->fit_reason, sizeof D->fit_reason, "no offset: no boundary crossing with a "
+        gw_snprintf(D->fit_reason, sizeof D->fit_reason, "no offset: no boundary crossing with a "
                                                       "penetration (give --delta-rm)");
     else if ((D->fit_ok = gw_stats_b31_fit_points(x, h, n, &st, A->fit_mask, &D->fit, &err) == GW_OK) == 0)
-        snprintf(D->fit_reason, sizeof D->fit_reason, "%s", err.msg);
+        gw_snprintf(D->fit_reason, sizeof D->fit_reason, "%s", err.msg);
     free(x);
 }
 
@@ -252,7 +253,7 @@ static int diagrams_make(gw_stats_analysis *A)
         D->ok = gw_stats_diagram_make(D->ngroups, x, h, s, p, A->gs.criterion, &D->d, &err) == GW_OK;
         free(buf);
         if (!D->ok)
-            snprintf(D->reason, sizeof D->reason, "%s", err.msg);
+            gw_snprintf(D->reason, sizeof D->reason, "%s", err.msg);
         else
             diagram_fit(A, D);
     }

@@ -20,6 +20,7 @@
 #include <string.h>
 
 #include "gw_stats.h"
+#include "gw_locale.h"
 
 const char *const gw_stats_table_required[] = {
     "x_impact", "bounced", "e_n", "e", "alpha_r", "penetration", "penetration_rm",
@@ -90,7 +91,7 @@ static int cell_number(const char *s, double *v)
         return 0;
     char *end;
     errno = 0;
-    *v = strtod(s, &end);
+    *v = gw_strtod(s, &end);
     return *end == '\0' && !(errno == ERANGE && fabs(*v) > 1);
 }
 
@@ -138,7 +139,7 @@ static int numeric_text(const char *s)
 {
     char *end;
     errno = 0;
-    (void)strtod(s, &end);
+    (void)gw_strtod(s, &end);
     return *s && *end == '\0';
 }
 
@@ -419,7 +420,7 @@ static int sweep_line(gw_stats_table *t, const char *line, long ln, gw_err *err)
     size_t l = strlen(line);
     if (p) { /* the model, for the rows' case config hashes */
         const size_t ml = strcspn(p + 14, ",");
-        snprintf(t->model, sizeof t->model, "%.*s", (int)(ml < sizeof t->model ? ml : 0), p + 14);
+        gw_snprintf(t->model, sizeof t->model, "%.*s", (int)(ml < sizeof t->model ? ml : 0), p + 14);
     }
     if (!p || l < 6 || strcmp(line + l - 6, " cases") != 0)
         return GW_OK; /* another file's first line, or a sweep's before it said its counts */
@@ -506,8 +507,8 @@ static void case_values(const gw_stats_table *t, long k, char *buf, size_t n)
     for (int i = 0; i < t->ngrid && w < n; i++) {
         char v[256];
         if (!list_value(t->grid_list[i], idx[i], v, sizeof v))
-            snprintf(v, sizeof v, "?");
-        w += (size_t)snprintf(buf + w, n - w, "%s%s = %s", i ? ", " : "", t->grid_list[i], v);
+            gw_snprintf(v, sizeof v, "?");
+        w += (size_t)gw_snprintf(buf + w, n - w, "%s%s = %s", i ? ", " : "", t->grid_list[i], v);
     }
 }
 
@@ -596,7 +597,7 @@ static int check_complete(const gw_stats_table *t, gw_err *err)
         if (first >= 0 && nl > 0) {
             char tmp[1000];
             case_values(t, first, tmp, sizeof tmp);
-            snprintf(vals, sizeof vals, " (%s)", tmp);
+            gw_snprintf(vals, sizeof vals, " (%s)", tmp);
         }
         if (first >= 0)
             rc = gw_err_set(err, GW_EFORMAT, "%s: case %ld%s is missing (%ld of the sweep's %ld cases are): the "
@@ -625,9 +626,9 @@ static char *grid_combination(const gw_stats_table *t, long r)
     for (int i = 0; i < t->ngrid; i++) {
         double v = t->grid_num[r * t->ngrid + i];
         size_t left = len - (size_t)(p - s);
-        int k = isnan(v) ? snprintf(p, left, "%s%s = %s", i ? ", " : "", t->grid_name[i],
+        int k = isnan(v) ? gw_snprintf(p, left, "%s%s = %s", i ? ", " : "", t->grid_name[i],
                                     t->grid_value[r * t->ngrid + i])
-                         : snprintf(p, left, "%s%s = %.17g", i ? ", " : "", t->grid_name[i], v == 0 ? 0.0 : v);
+                         : gw_snprintf(p, left, "%s%s = %.17g", i ? ", " : "", t->grid_name[i], v == 0 ? 0.0 : v);
         p += k;
     }
     return s;
@@ -719,7 +720,7 @@ int gw_stats_table_parse(const char *text, const char *name, gw_stats_table *t, 
 {
     memset(t, 0, sizeof *t);
     t->sweep_rows = t->sweep_cases = -1;
-    snprintf(t->path, sizeof t->path, "%s", name);
+    gw_snprintf(t->path, sizeof t->path, "%s", name);
     /* a UTF-8 byte-order mark, as spreadsheet programs save CSV: it was read
      * into the first cell, and the table refused as "header must start with
      * 'case'" (or its first '#' line taken for the header) */
@@ -1076,9 +1077,9 @@ static char *row_key_string(const gw_stats_table *t, const gw_stats_groups *gs, 
     for (int k = 0; s && k < gs->nkeys; k++) {
         const double v = t->grid_num[r * t->ngrid + gs->key[k]];
         if (isnan(v))
-            p += sprintf(p, "s%s\x1f", t->grid_value[r * t->ngrid + gs->key[k]]);
+            p += gw_sprintf(p, "s%s\x1f", t->grid_value[r * t->ngrid + gs->key[k]]);
         else
-            p += sprintf(p, "n%.17g\x1f", v == 0 ? 0.0 : v); /* -0 and 0 are one value */
+            p += gw_sprintf(p, "n%.17g\x1f", v == 0 ? 0.0 : v); /* -0 and 0 are one value */
     }
     if (s)
         *p = '\0';

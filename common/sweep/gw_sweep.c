@@ -18,6 +18,7 @@
 #include <ini.h>
 
 #include "gw_sweep.h"
+#include "gw_locale.h"
 
 typedef struct parse_ctx {
     gw_sweep_config *cfg;
@@ -64,14 +65,14 @@ static int split_values(const char *value, gw_sweep_key *k, char *msg, size_t ml
             return 0;
         }
         if (b - a >= 1000000L) { /* each value is a string: bound the memory */
-            snprintf(msg, mlen, "%s: range %s has more than 1000000 values", k->name, value);
+            gw_snprintf(msg, mlen, "%s: range %s has more than 1000000 values", k->name, value);
             return 0;
         }
         k->nvalues = (int)(b - a + 1);
         k->values = calloc((size_t)k->nvalues, sizeof *k->values);
         for (long i = 0; k->values && i <= b - a; i++) {
             char buf[32];
-            snprintf(buf, sizeof buf, "%ld", a + i);
+            gw_snprintf(buf, sizeof buf, "%ld", a + i);
             if (!(k->values[i] = dupstr(buf)))
                 return 0;
         }
@@ -88,7 +89,7 @@ static int split_values(const char *value, gw_sweep_key *k, char *msg, size_t ml
     for (char *tok = strtok_r(copy, ",", &save); k->values && tok; tok = strtok_r(NULL, ",", &save)) {
         char *t = gw_str_trim(tok);
         if (!*t) {
-            snprintf(msg, mlen, "%s: empty value in list '%s'", k->name, value);
+            gw_snprintf(msg, mlen, "%s: empty value in list '%s'", k->name, value);
             free(copy);
             return 0;
         }
@@ -96,7 +97,7 @@ static int split_values(const char *value, gw_sweep_key *k, char *msg, size_t ml
     }
     free(copy);
     if (k->nvalues != cap) {
-        snprintf(msg, mlen, "%s: empty value in list '%s'", k->name, value);
+        gw_snprintf(msg, mlen, "%s: empty value in list '%s'", k->name, value);
         return 0;
     }
     /* a value listed twice runs the same case twice: the table then holds a
@@ -105,11 +106,11 @@ static int split_values(const char *value, gw_sweep_key *k, char *msg, size_t ml
     for (int i = 0; k->values && i < k->nvalues; i++)
         for (int j = 0; j < i; j++) {
             char *ei, *ej;
-            double vi = strtod(k->values[i], &ei), vj = strtod(k->values[j], &ej);
+            double vi = gw_strtod(k->values[i], &ei), vj = gw_strtod(k->values[j], &ej);
             const int fi = gw_parse_flag(k->values[i]), fj = gw_parse_flag(k->values[j]);
             if (strcmp(k->values[i], k->values[j]) == 0 || (!*ei && !*ej && ei != k->values[i] && vi == vj) ||
                 (fi >= 0 && fi == fj)) {
-                snprintf(msg, mlen, "%s: '%s' and '%s' in list '%s' are the same value (each case would run "
+                gw_snprintf(msg, mlen, "%s: '%s' and '%s' in list '%s' are the same value (each case would run "
                          "twice)", k->name, k->values[j], k->values[i], value);
                 return 0;
             }
@@ -147,15 +148,15 @@ static int handler_one(parse_ctx *pc, const char *section, const char *name, con
     if (strcmp(section, "sweep") == 0) {
         char **dst = strcmp(name, "model") == 0 ? &cfg->model : strcmp(name, "out") == 0 ? &cfg->out : NULL;
         if (!dst) {
-            snprintf(pc->msg, sizeof pc->msg, "unknown key '%s' in [sweep] (model, out)", name);
+            gw_snprintf(pc->msg, sizeof pc->msg, "unknown key '%s' in [sweep] (model, out)", name);
             return 0;
         }
         if (*dst) {
-            snprintf(pc->msg, sizeof pc->msg, "duplicate key '%s'", name);
+            gw_snprintf(pc->msg, sizeof pc->msg, "duplicate key '%s'", name);
             return 0;
         }
         if (!*value) {
-            snprintf(pc->msg, sizeof pc->msg, "empty value for '%s'", name);
+            gw_snprintf(pc->msg, sizeof pc->msg, "empty value for '%s'", name);
             return 0;
         }
         if (dst == &cfg->model) {
@@ -163,7 +164,7 @@ static int handler_one(parse_ctx *pc, const char *section, const char *name, con
             for (int i = 0; i < pc->nmodels; i++)
                 known |= strcmp(pc->models[i]->name, value) == 0;
             if (!known) {
-                snprintf(pc->msg, sizeof pc->msg, "unknown model '%s'", value);
+                gw_snprintf(pc->msg, sizeof pc->msg, "unknown model '%s'", value);
                 return 0;
             }
         }
@@ -172,11 +173,11 @@ static int handler_one(parse_ctx *pc, const char *section, const char *name, con
     }
     int is_grid = strcmp(section, "grid") == 0;
     if (!is_grid && strcmp(section, "params") != 0) {
-        snprintf(pc->msg, sizeof pc->msg, "unknown section [%s] (sweep, grid, params)", section);
+        gw_snprintf(pc->msg, sizeof pc->msg, "unknown section [%s] (sweep, grid, params)", section);
         return 0;
     }
     if (!cfg->model) {
-        snprintf(pc->msg, sizeof pc->msg, "[sweep] model must come before [%s]", section);
+        gw_snprintf(pc->msg, sizeof pc->msg, "[sweep] model must come before [%s]", section);
         return 0;
     }
     const gw_sweep_model *m = NULL;
@@ -184,21 +185,21 @@ static int handler_one(parse_ctx *pc, const char *section, const char *name, con
         if (strcmp(pc->models[i]->name, cfg->model) == 0)
             m = pc->models[i];
     if (!m) {
-        snprintf(pc->msg, sizeof pc->msg, "unknown model '%s'", cfg->model);
+        gw_snprintf(pc->msg, sizeof pc->msg, "unknown model '%s'", cfg->model);
         return 0;
     }
     if (!m->has_key(name)) {
-        snprintf(pc->msg, sizeof pc->msg, "'%s' is not an option of model %s", name, cfg->model);
+        gw_snprintf(pc->msg, sizeof pc->msg, "'%s' is not an option of model %s", name, cfg->model);
         return 0;
     }
     if (find_key(cfg->grid, cfg->ngrid, name) >= 0 || find_key(cfg->params, cfg->nparams, name) >= 0) {
-        snprintf(pc->msg, sizeof pc->msg, "duplicate key '%s'", name);
+        gw_snprintf(pc->msg, sizeof pc->msg, "duplicate key '%s'", name);
         return 0;
     }
     gw_sweep_key *keys = is_grid ? cfg->grid : cfg->params;
     int *nk = is_grid ? &cfg->ngrid : &cfg->nparams;
     if (*nk >= GW_SWEEP_MAX_KEYS) {
-        snprintf(pc->msg, sizeof pc->msg, "more than %d keys in [%s]", GW_SWEEP_MAX_KEYS, section);
+        gw_snprintf(pc->msg, sizeof pc->msg, "more than %d keys in [%s]", GW_SWEEP_MAX_KEYS, section);
         return 0;
     }
     gw_sweep_key *k = &keys[(*nk)++];
@@ -236,7 +237,7 @@ static unsigned long fnv64_file(unsigned long h, const char *path)
     gw_err err;
     if (gw_input_open(path, "sweep", &f, &err) != GW_OK) /* never blocks on a FIFO */
         return h;
-    unsigned char buf[65536];
+    unsigned char buf[8192]; /* 64 KiB here overflowed a 64 KiB stack (ulimit -s 64) */
     size_t got;
     while ((got = fread(buf, 1, sizeof buf, f)) > 0)
         for (size_t i = 0; i < got; i++) {
@@ -287,7 +288,7 @@ static int continued_lines(const char *text, const char *name, gw_err *err)
                 while (kl > i && (p[kl - 1] == ' ' || p[kl - 1] == '\t'))
                     kl--;
                 if (k < len) {
-                    snprintf(key, sizeof key, "%.*s", (int)(kl - i), p + i);
+                    gw_snprintf(key, sizeof key, "%.*s", (int)(kl - i), p + i);
                     key_ln = ln;
                 }
             }
@@ -455,7 +456,7 @@ static char *input_lines(const gw_sweep_config *cfg)
         return NULL;
     *p = '\0';
     for (int i = 0; i < cfg->ninputs; i++)
-        p += snprintf(p, n - (size_t)(p - s), "# input %s = %s fnv1a64 %016llx\n", cfg->inputs[i].key,
+        p += gw_snprintf(p, n - (size_t)(p - s), "# input %s = %s fnv1a64 %016llx\n", cfg->inputs[i].key,
                       cfg->inputs[i].value, cfg->inputs[i].hash);
     return s;
 }
@@ -622,23 +623,23 @@ int gw_sweep_format_row(const gw_sweep_config *cfg, long k, const double *out, i
 {
     const char *names[2 * GW_SWEEP_MAX_KEYS], *values[2 * GW_SWEEP_MAX_KEYS];
     gw_sweep_case(cfg, k, names, values);
-    size_t w = (size_t)snprintf(buf, n, "%ld", k);
+    size_t w = (size_t)gw_snprintf(buf, n, "%ld", k);
     for (int i = 0; i < cfg->ngrid && w < n; i++)
-        w += (size_t)snprintf(buf + w, n - w, ",%s", values[i]);
+        w += (size_t)gw_snprintf(buf + w, n - w, ",%s", values[i]);
     for (int i = 0; i < ncol && w < n; i++)
-        w += isnan(out[i]) ? (size_t)snprintf(buf + w, n - w, ",nan") /* never "-nan" */
-                           : (size_t)snprintf(buf + w, n - w, ",%.17g", out[i]);
+        w += isnan(out[i]) ? (size_t)gw_snprintf(buf + w, n - w, ",nan") /* never "-nan" */
+                           : (size_t)gw_snprintf(buf + w, n - w, ",%.17g", out[i]);
     /* what the case ran under, and on: a row pasted from a sweep with other
      * [params] carried a good checksum and its case's grid values */
     if (w < n)
-        w += (size_t)snprintf(buf + w, n - w, ",%016llx",
+        w += (size_t)gw_snprintf(buf + w, n - w, ",%016llx",
                               gw_case_config_hash(cfg->model, cfg->ngrid + cfg->nparams, names, values));
     if (cfg->read_key && w < n)
-        w += (size_t)snprintf(buf + w, n - w, ",%016llx", read_hash);
+        w += (size_t)gw_snprintf(buf + w, n - w, ",%016llx", read_hash);
     if (w + 12 >= n)
         return GW_EINVAL;
     buf[w] = ','; /* the checksum covers the row up to and including this comma */
-    snprintf(buf + w + 1, n - w - 1, "%08x\n", fnv32(buf, w + 1));
+    gw_snprintf(buf + w + 1, n - w - 1, "%08x\n", fnv32(buf, w + 1));
     return GW_OK;
 }
 
@@ -777,17 +778,17 @@ static const char *row_hash_fault(const gw_sweep_config *cfg, long k, const char
     unsigned long long ch, rh, want, wr;
     const char *file = NULL;
     if (!row_hashes(cfg, s, len, &ch, &rh)) {
-        snprintf(msg, n, "case %ld's row does not end with its config hash%s (16 hex digits)", k,
+        gw_snprintf(msg, n, "case %ld's row does not end with its config hash%s (16 hex digits)", k,
                  cfg->read_key ? " and the hash of the file it read" : "");
         return msg;
     }
     if (ch != (want = gw_sweep_case_hash(cfg, k))) {
-        snprintf(msg, n, "case %ld ran under config hash %016llx, not this sweep's %016llx for it (a row of a "
+        gw_snprintf(msg, n, "case %ld ran under config hash %016llx, not this sweep's %016llx for it (a row of a "
                  "sweep with other [params] or another model)", k, ch, want);
         return msg;
     }
     if (case_read_hash(cfg, k, &wr, &file) && rh != wr) {
-        snprintf(msg, n, "case %ld read %s '%s' with content fnv1a64 %016llx, but the sweep runs on %016llx (%s)", k,
+        gw_snprintf(msg, n, "case %ld read %s '%s' with content fnv1a64 %016llx, but the sweep runs on %016llx (%s)", k,
                  cfg->read_key, file, rh, wr, live ? "the file was changed when the case read it, and restored "
                  "before the case ended" : "the file was changed when the case read it, or a row of another sweep");
         return msg;
@@ -838,12 +839,12 @@ static int journal_create(const char *path, const char *text, int *fdp, gw_err *
 {
     char tmp[4200];
     *fdp = -1;
-    if (snprintf(tmp, sizeof tmp, "%s.new.%ld.XXXXXX", path, (long)getpid()) >= (int)sizeof tmp)
+    if (gw_snprintf(tmp, sizeof tmp, "%s.new.%ld.XXXXXX", path, (long)getpid()) >= (int)sizeof tmp)
         return gw_err_set(err, GW_EINVAL, "%s: path too long", path);
     int fd = mkstemp(tmp);
     if (fd < 0)
         return gw_err_set(err, GW_EIO, "%s: cannot create: %s", path, strerror(errno));
-    fchmod(fd, 0644);
+    fchmod(fd, gw_new_file_mode(path));
     /* locked before it has its name: another sweep that finds it finds it
      * locked (a sweep that locked it first would refuse it as another
      * config's, and this one then find it locked: neither ran) */
@@ -901,7 +902,7 @@ int gw_sweep_journal_open(const char *dir, const gw_sweep_config *cfg, char *don
         if (gw_outset_check_input(dir, outs, cfg->inputs[i].value, "sweep", err) != GW_OK)
             return GW_EINVAL;
     char head[96];
-    snprintf(head, sizeof head, GW_SWEEP_JOURNAL_HEAD "\n", cfg->hash);
+    gw_snprintf(head, sizeof head, GW_SWEEP_JOURNAL_HEAD "\n", cfg->hash);
     struct stat st;
     if (stat(path, &st) != 0 && errno == ENOENT) {
         char *in = input_lines(cfg); /* a new journal: the config, and what its files held */
@@ -964,7 +965,7 @@ static int journal_check(const char *path, const char *dir, const char *head, co
      * the file they read: "# granwave sweep journal HASH" alone. Its rows
      * cannot be told from rows pasted from a sweep with other [params]. */
     char old_head[64];
-    snprintf(old_head, sizeof old_head, "# granwave sweep journal %016lx\n", cfg->hash);
+    gw_snprintf(old_head, sizeof old_head, "# granwave sweep journal %016lx\n", cfg->hash);
     if (strncmp(buf, old_head, strlen(old_head)) == 0) {
         free(buf);
         return gw_err_set(err, GW_EINVAL, "%s: a journal of an earlier granwave, whose rows do not record the "
@@ -1110,7 +1111,7 @@ int gw_sweep_write_table(const char *dir, const gw_sweep_config *cfg, const gw_s
     }
     int rc = GW_OK;
     char head[96];
-    snprintf(head, sizeof head, GW_SWEEP_JOURNAL_HEAD "\n", cfg->hash);
+    gw_snprintf(head, sizeof head, GW_SWEEP_JOURNAL_HEAD "\n", cfg->hash);
     const int other = strncmp(buf, head, strlen(head)) != 0;
     if (!rows || !seen) {
         rc = gw_err_set(err, GW_ENOMEM, "sweep: out of memory");
@@ -1128,28 +1129,28 @@ int gw_sweep_write_table(const char *dir, const gw_sweep_config *cfg, const gw_s
         if (gw_path_join(path, sizeof path, dir, "results.csv") != GW_OK)
             rc = gw_err_set(err, GW_EINVAL, "%s: path too long", dir);
         else if ((rc = gw_afile_open(&f, path, err)) == GW_OK) {
-            fprintf(f.fp, "# granwave %s sweep, model %s, config %016lx, %ld of %ld cases\n", gw_version(),
+            gw_fprintf(f.fp, "# granwave %s sweep, model %s, config %016lx, %ld of %ld cases\n", gw_version(),
                     cfg->model, cfg->hash, nr, cfg->ncases);
             for (int i = 0; i < cfg->nparams; i++)
-                fprintf(f.fp, "# param %s = %s\n", cfg->params[i].name, cfg->params[i].values[0]);
+                gw_fprintf(f.fp, "# param %s = %s\n", cfg->params[i].name, cfg->params[i].values[0]);
             for (int i = 0; i < cfg->ninputs; i++) /* what the cases' files held */
-                fprintf(f.fp, "# input %s = %s fnv1a64 %016llx\n", cfg->inputs[i].key, cfg->inputs[i].value,
+                gw_fprintf(f.fp, "# input %s = %s fnv1a64 %016llx\n", cfg->inputs[i].key, cfg->inputs[i].value,
                         cfg->inputs[i].hash);
             /* the grid itself: a reader can tell a missing or edited row */
             for (int i = 0; i < cfg->ngrid; i++) {
-                fprintf(f.fp, "# grid %s = ", cfg->grid[i].name);
+                gw_fprintf(f.fp, "# grid %s = ", cfg->grid[i].name);
                 for (int j = 0; j < cfg->grid[i].nvalues; j++)
-                    fprintf(f.fp, "%s%s", j ? ", " : "", cfg->grid[i].values[j]);
+                    gw_fprintf(f.fp, "%s%s", j ? ", " : "", cfg->grid[i].values[j]);
                 fputc('\n', f.fp);
             }
-            fprintf(f.fp, "case");
+            gw_fprintf(f.fp, "case");
             for (int i = 0; i < cfg->ngrid; i++)
-                fprintf(f.fp, ",%s", cfg->grid[i].name);
+                gw_fprintf(f.fp, ",%s", cfg->grid[i].name);
             for (int i = 0; i < m->ncolumns; i++)
-                fprintf(f.fp, ",%s", m->columns[i]);
-            fprintf(f.fp, ",case_config_fnv1a64"); /* the hashes that end each row */
+                gw_fprintf(f.fp, ",%s", m->columns[i]);
+            gw_fprintf(f.fp, ",case_config_fnv1a64"); /* the hashes that end each row */
             if (cfg->read_key)
-                fprintf(f.fp, ",%s_fnv1a64", cfg->read_key);
+                gw_fprintf(f.fp, ",%s_fnv1a64", cfg->read_key);
             fputc('\n', f.fp);
             for (long i = 0; i < nr; i++) {
                 fwrite(rows[i].s, 1, rows[i].len, f.fp);

@@ -11,6 +11,7 @@
 #include <unistd.h>
 
 #include "gw_sweep.h"
+#include "gw_locale.h"
 
 double gw_memory_available(const char **what)
 {
@@ -57,7 +58,7 @@ int gw_sweep_memory_check(const gw_sweep_config *cfg, const gw_sweep_model *m, l
         gw_sweep_case(cfg, k, names, vals);
         if ((rc = m->memory(nk, names, vals, &b, err)) != GW_OK) {
             char tmp[sizeof err->msg];
-            snprintf(tmp, sizeof tmp, "%s", err ? err->msg : "");
+            gw_snprintf(tmp, sizeof tmp, "%s", err ? err->msg : "");
             gw_err_set(err, rc, "case %ld: %s", k, tmp);
             break;
         }
@@ -105,7 +106,7 @@ int gw_sweep_memory_check(const gw_sweep_config *cfg, const gw_sweep_model *m, l
 
 int gw_sweep_size_check(const gw_sweep_config *cfg, const gw_sweep_model *m, gw_err *err)
 {
-    double row = 1 + (double)snprintf(NULL, 0, "%ld", cfg->ncases > 0 ? cfg->ncases - 1 : 0);
+    double row = 1 + (double)gw_snprintf(NULL, 0, "%ld", cfg->ncases > 0 ? cfg->ncases - 1 : 0);
     for (int i = 0; i < cfg->ngrid; i++) {
         size_t w = 0;
         for (int j = 0; j < cfg->grid[i].nvalues; j++) {
@@ -146,7 +147,7 @@ static int run_one(void *arg, long k, gw_err *err)
     int rc = s->m->run(s->cfg->ngrid + s->cfg->nparams, names, values, s->values + k * s->m->ncolumns, NULL, err);
     if (rc != GW_OK) {
         char tmp[sizeof err->msg];
-        snprintf(tmp, sizeof tmp, "%s", err->msg);
+        gw_snprintf(tmp, sizeof tmp, "%s", err->msg);
         gw_err_set(err, rc, "case %ld: %s", k, tmp);
     }
     return rc;
@@ -166,7 +167,7 @@ int gw_sweep_run(const gw_sweep_config *cfg, const gw_sweep_model *m, int jobs, 
         int rc = m->check(nk, names, vals, err);
         if (rc != GW_OK) {
             char tmp[sizeof err->msg];
-            snprintf(tmp, sizeof tmp, "%s", err ? err->msg : "");
+            gw_snprintf(tmp, sizeof tmp, "%s", err ? err->msg : "");
             return gw_err_set(err, rc, "case %ld: %s", k, tmp);
         }
     }

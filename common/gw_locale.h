@@ -1,0 +1,37 @@
+/*
+ * gw_locale.h (internal, not installed): number text that does not depend on
+ * the process's locale. A program that calls setlocale(LC_ALL, "") (Python
+ * after locale.setlocale, matplotlib and Jupyter users, a C program in a
+ * German or French locale) gives strtod and printf a decimal comma: "0.5"
+ * would read as 0 and files would get "0,5". Every number the library reads
+ * from text or writes as text goes through these, which use the "C" locale
+ * whatever the process's or the thread's locale is.
+ */
+#ifndef GW_LOCALE_H
+#define GW_LOCALE_H
+
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdio.h>
+#include <sys/types.h>
+
+#if defined(__GNUC__)
+#define GW_FMT(a, b) __attribute__((format(printf, a, b)))
+#else
+#define GW_FMT(a, b)
+#endif
+
+/* strtod in the "C" locale */
+double gw_strtod(const char *s, char **end);
+/* snprintf, vsnprintf, fprintf, sprintf in the "C" locale */
+int gw_snprintf(char *buf, size_t n, const char *fmt, ...) GW_FMT(3, 4);
+int gw_vsnprintf(char *buf, size_t n, const char *fmt, va_list ap) GW_FMT(3, 0);
+int gw_fprintf(FILE *fp, const char *fmt, ...) GW_FMT(2, 3);
+int gw_sprintf(char *buf, const char *fmt, ...) GW_FMT(2, 3);
+
+/* The permissions of a file the library creates in place of `replaces`: the
+ * replaced regular file's, or 0666 less the process's umask (what a shell's >
+ * gives; the temporary that mkstemp made is 0600). Defined in gw_io.c. */
+mode_t gw_new_file_mode(const char *replaces);
+
+#endif

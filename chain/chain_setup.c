@@ -40,6 +40,8 @@ const gw_param *gw_chain_setup_params(void)
 
 int gw_chain_setup_init(gw_chain_setup *s)
 {
+    if (!s)
+        return GW_EINVAL;
     memset(s, 0, sizeof *s);
     return gw_param_init(setup_params, s, NULL);
 }
@@ -51,6 +53,8 @@ void gw_chain_setup_clear(gw_chain_setup *s)
 
 int chain_study_setup_init(void *s, size_t size, gw_chain_setup *col, const gw_param *t)
 {
+    if (!s)
+        return GW_EINVAL;
     memset(s, 0, size);
     int rc = gw_chain_setup_init(col);
     return rc == GW_OK ? gw_param_init(t, s, NULL) : rc;
@@ -58,6 +62,8 @@ int chain_study_setup_init(void *s, size_t size, gw_chain_setup *col, const gw_p
 
 void chain_study_setup_clear(void *s, gw_chain_setup *col, const gw_param *t)
 {
+    if (!s)
+        return;
     gw_param_clear(t, s);
     gw_chain_setup_clear(col);
 }

@@ -45,6 +45,8 @@ const gw_param *gw_stats_setup_params(void)
 
 int gw_stats_setup_init(gw_stats_setup *s)
 {
+    if (!s)
+        return GW_EINVAL;
     memset(s, 0, sizeof *s);
     s->defaults = (gw_stats_defaults){NAN, NAN, NAN, NAN};
     gw_err err = {{0}};

@@ -110,6 +110,8 @@ int gw_chain_study_speeds_check(const double *v, int n, int n_speeds, gw_err *er
 
 void gw_chain_resolved_free(gw_chain_resolved *r)
 {
+    if (!r)
+        return;
     free(r->masses);
     free(r->kc);
     gw_layer_law_free(r->layer);

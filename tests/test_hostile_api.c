@@ -278,6 +278,68 @@ static int chain_model_nulls(void)
     return 0;
 }
 
+/* the utilities, readers and writers of gw_common.h and the models' readers
+ * and frees: NULL refused (GW_EINVAL naming it) or ignored, never followed */
+static int utilities_nulls(void)
+{
+    gw_err e = {{0}};
+    double d = 0, *v = NULL;
+    int n = 0;
+    EXPECT(refused(gw_parse_double("1", "x", NULL, &e), &e, "out is NULL"));
+    EXPECT(refused(gw_parse_double(NULL, "x", &d, &e), &e, "x: expected a number"));
+    EXPECT(refused(gw_parse_double_list("1,2", "x", NULL, &n, &e), &e, "out is NULL"));
+    EXPECT(gw_str_trim(NULL) == NULL && gw_parse_flag(NULL) == -1);
+    EXPECT(gw_fnv1a64(GW_FNV1A64_INIT, NULL, 10) == GW_FNV1A64_INIT);
+    EXPECT(refused(gw_afile_open(NULL, "/tmp/x", &e), &e, "f is NULL"));
+    gw_afile f;
+    EXPECT(refused(gw_afile_open(&f, NULL, &e), &e, "path is NULL"));
+    EXPECT(refused(gw_afile_commit(NULL, &e), &e, "f is NULL"));
+    gw_afile_abort(NULL);
+    gw_outset os;
+    EXPECT(refused(gw_outset_begin(NULL, "/tmp", NULL, &e), &e, "s is NULL"));
+    EXPECT(refused(gw_outset_begin(&os, NULL, NULL, &e), &e, "dir is NULL"));
+    EXPECT(refused(gw_outset_commit(NULL, &e), &e, "s is NULL"));
+    gw_outset_abort(NULL);
+    EXPECT(refused(gw_input_read("/dev/null", "x", 10, NULL, NULL, &e), &e, "out is NULL"));
+    EXPECT(refused(gw_write_text(NULL, "x", &e), &e, "path is NULL"));
+    EXPECT(refused(gw_write_text("/tmp/gw_hostile_api_never", NULL, &e), &e, "text is NULL"));
+    EXPECT(access("/tmp/gw_hostile_api_never", F_OK) != 0); /* nothing written */
+    EXPECT(refused(gw_mkdir_p(NULL, &e), &e, "path is NULL"));
+    gw_write_comment(NULL, "x");
+    gw_path_parent(NULL);
+    gw_linfit fit;
+    double x[3] = {1, 2, 3};
+    EXPECT(gw_fit_linear(NULL, x, 3, &fit) == GW_EINVAL && gw_fit_linear(x, x, 3, NULL) == GW_EINVAL);
+    EXPECT(gw_fit_linear(x, x, -5, &fit) == GW_EINVAL);
+    EXPECT(gw_json_doubles(NULL, 5) == NULL);
+    gw_layer *L = (gw_layer *)&L;
+    EXPECT(refused(gw_layer_create(NULL, 3, NULL, &L, &e), &e, "p is NULL") && L == NULL);
+    EXPECT(refused(gw_layer_sample_read(NULL, NULL, &e), &e, "is NULL"));
+    EXPECT(refused(gw_stats_table_read(NULL, NULL, &e), &e, "is NULL"));
+    gw_sweep_config cfg;
+    const gw_sweep_model *m = NULL;
+    EXPECT(refused(gw_sweep_config_read_string(NULL, "x", NULL, 0, &cfg, &m, &e), &e, "text is NULL"));
+    EXPECT(refused(gw_sweep_config_read(NULL, NULL, 0, NULL, NULL, &e), &e, "cfg is NULL"));
+    gw_layer_free(NULL);
+    gw_layer_sample_free(NULL);
+    gw_layer_impact_result_free(NULL);
+    gw_layer_impact_plan_free(NULL);
+    gw_stats_table_free(NULL);
+    gw_stats_analysis_free(NULL);
+    gw_stats_groups_free(NULL);
+    gw_stats_diagram_free(NULL);
+    gw_sweep_config_free(NULL);
+    gw_chain_trace_free(NULL);
+    gw_chain_disp_result_free(NULL);
+    gw_chain_drop_result_free(NULL);
+    gw_chain_spectrum_free(NULL);
+    gw_chain_resolved_free(NULL);
+    gw_solver_free(NULL);
+    gw_layer_law_free(NULL);
+    (void)v;
+    return 0;
+}
+
 static int case_ok(void *ctx, long k, gw_err *err)
 {
     (void)ctx;
@@ -455,6 +517,7 @@ int main(void)
     in_child("the index and the sweep in memory with NULL", index_nulls);
     in_child("gw_chain_create/collide/sweep with NULL", chain_model_nulls);
     in_child("gw_cases_run hostile sizes", pool_hostile);
+    in_child("utilities, readers and frees with NULL", utilities_nulls);
     in_child("runs freed twice, reused, re-entered, stopped", runs_reused);
     in_child("16 threads", threads_agree);
     printf("%d of %d checks failed\n", nfail, ncases);

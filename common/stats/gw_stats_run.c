@@ -263,6 +263,8 @@ static int diagrams_make(gw_stats_analysis *A)
 
 void gw_stats_analysis_free(gw_stats_analysis *A)
 {
+    if (!A)
+        return;
     for (int q = 0; A->dia && q < A->ndia; q++) {
         free(A->dia[q].groups);
         gw_stats_diagram_free(&A->dia[q].d);

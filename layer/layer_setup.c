@@ -343,6 +343,8 @@ static int resolve(const gw_layer_impact_setup *s, const gw_layer_sample *smp, g
 
 int gw_layer_impact_plan_make(const gw_layer_impact_setup *s, gw_layer_impact_plan *p, gw_err *err)
 {
+    if (!s || !p)
+        return gw_err_set(err, GW_EINVAL, "gw_layer_impact_plan_make: %s is NULL", !s ? "s" : "p");
     memset(p, 0, sizeof *p);
     int rc = gw_param_check(impact_params, s, err);
     if (rc != GW_OK)
@@ -356,6 +358,8 @@ int gw_layer_impact_plan_make(const gw_layer_impact_setup *s, gw_layer_impact_pl
 
 void gw_layer_impact_plan_free(gw_layer_impact_plan *p)
 {
+    if (!p)
+        return;
     gw_layer_sample_free(&p->sample);
 }
 

@@ -600,6 +600,10 @@ int chain_run_steps(const gw_chain_params *p, const gw_chain_run_opts *o, double
 int gw_chain_collide(const gw_chain *c, const gw_chain_run_opts *o, gw_chain_result *r,
                      gw_err *err)
 {
+    if (r)
+        memset(r, 0, sizeof *r);
+    if (!c || !o || !r)
+        return gw_err_set(err, GW_EINVAL, "gw_chain_collide: %s is NULL", !c ? "c" : !o ? "o" : "r");
     const gw_chain_params *p = gw_chain_get_params(c);
     const gw_system *sys = gw_chain_system(c);
     const int n = p->n;

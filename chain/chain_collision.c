@@ -77,6 +77,8 @@ const gw_param *gw_chain_collision_fields(void)
 
 void gw_chain_collision_free(gw_chain_collision *out)
 {
+    if (!out)
+        return;
     gw_chain_result_free(&out->r);
     free(out->t);
     free(out->f_wall);
@@ -88,6 +90,8 @@ void gw_chain_collision_free(gw_chain_collision *out)
 
 int gw_chain_collision_run(const gw_chain_setup *s, gw_chain_collision *out, gw_err *err)
 {
+    if (!s || !out)
+        return gw_err_set(err, GW_EINVAL, "gw_chain_collision_run: %s is NULL", !s ? "setup" : "out");
     memset(out, 0, sizeof *out);
     gw_chain_resolved res;
     gw_chain *c = NULL;

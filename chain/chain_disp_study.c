@@ -112,6 +112,8 @@ const gw_param *gw_chain_dispersion_outcome_fields(void) { return disp_fields; }
 
 int gw_chain_dispersion_setup_init(gw_chain_dispersion_setup *s)
 {
+    if (!s)
+        return GW_EINVAL;
     memset(s, 0, sizeof *s);
     return gw_param_init(disp_params, s, NULL);
 }
@@ -123,6 +125,8 @@ void gw_chain_dispersion_setup_clear(gw_chain_dispersion_setup *s)
 
 void gw_chain_dispersion_outcome_free(gw_chain_dispersion_outcome *out)
 {
+    if (!out)
+        return;
     gw_chain_disp_result_free(&out->r);
     gw_chain_spectrum_free(&out->sp);
     memset(out, 0, sizeof *out);
@@ -258,6 +262,8 @@ static int disp_unused_check(const gw_chain_dispersion_setup *s, gw_err *err)
 
 int gw_chain_dispersion_run(const gw_chain_dispersion_setup *s, gw_chain_dispersion_outcome *out, gw_err *err)
 {
+    if (!s || !out)
+        return gw_err_set(err, GW_EINVAL, "gw_chain_dispersion_run: %s is NULL", !s ? "setup" : "out");
     memset(out, 0, sizeof *out);
     int rc = gw_param_check(disp_params, s, err);
     if (rc == GW_OK)

@@ -160,16 +160,22 @@ const gw_param *gw_chain_drop_outcome_fields(void) { return drop_fields; }
 
 int gw_chain_drop_setup_init(gw_chain_drop_setup *s)
 {
+    if (!s)
+        return GW_EINVAL;
     return chain_study_setup_init(s, sizeof *s, &s->col, drop_params);
 }
 
 void gw_chain_drop_setup_clear(gw_chain_drop_setup *s)
 {
+    if (!s)
+        return;
     chain_study_setup_clear(s, &s->col, drop_params);
 }
 
 void gw_chain_drop_outcome_free(gw_chain_drop_outcome *out)
 {
+    if (!out)
+        return;
     gw_chain_drop_result_free(&out->r);
     free(out->gaps);
     free(out->wall_peaks);
@@ -319,6 +325,8 @@ void gw_chain_drop_block_params(gw_chain_params *p)
 int gw_chain_drop_study_run(const gw_chain_drop_setup *s, gw_progress_fn progress, void *pctx,
                             gw_chain_drop_outcome *out, gw_err *err)
 {
+    if (!s || !out)
+        return gw_err_set(err, GW_EINVAL, "gw_chain_drop_study_run: %s is NULL", !s ? "setup" : "out");
     memset(out, 0, sizeof *out);
     double t0 = gw_clock_ms();
     int rc = gw_param_check(drop_params, s, err);

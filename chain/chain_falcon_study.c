@@ -95,11 +95,15 @@ const gw_param *gw_chain_falcon_setup_params(void)
 
 int gw_chain_falcon_setup_init(gw_chain_falcon_setup *s)
 {
+    if (!s)
+        return GW_EINVAL;
     return chain_study_setup_init(s, sizeof *s, &s->col, falcon_params);
 }
 
 void gw_chain_falcon_setup_clear(gw_chain_falcon_setup *s)
 {
+    if (!s)
+        return;
     chain_study_setup_clear(s, &s->col, falcon_params);
 }
 
@@ -173,6 +177,8 @@ const gw_param *gw_chain_falcon_outcome_fields(void)
 
 void gw_chain_falcon_outcome_free(gw_chain_falcon_outcome *out)
 {
+    if (!out)
+        return;
     free(out->v_imp); /* one block holds every array */
     memset(out, 0, sizeof *out);
 }
@@ -255,6 +261,8 @@ int gw_chain_falcon_sizes_check(long a, long b, gw_err *err)
 int gw_chain_falcon_run(const gw_chain_falcon_setup *s, gw_progress_fn progress, void *pctx,
                         gw_chain_falcon_outcome *out, gw_err *err)
 {
+    if (!s || !out)
+        return gw_err_set(err, GW_EINVAL, "gw_chain_falcon_run: %s is NULL", !s ? "setup" : "out");
     memset(out, 0, sizeof *out);
     int rc = chain_study_range_check(falcon_params, s, &s->col, s->vimp.n + s->heights.n, err);
     if (rc != GW_OK)

@@ -542,7 +542,11 @@ double gw_chain_step_scale(const gw_chain_params *p)
 
 int gw_chain_create(const gw_chain_params *p, gw_chain **out, gw_err *err)
 {
+    if (!out)
+        return gw_err_set(err, GW_EINVAL, "gw_chain_create: out is NULL");
     *out = NULL;
+    if (!p)
+        return gw_err_set(err, GW_EINVAL, "gw_chain_create: p is NULL");
     int rc = gw_chain_params_validate(p, err);
     if (rc != GW_OK)
         return rc;

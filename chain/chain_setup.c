@@ -41,6 +41,8 @@ const gw_param *gw_chain_setup_params(void)
 
 int gw_chain_setup_init(gw_chain_setup *s)
 {
+    if (!s)
+        return GW_EINVAL;
     memset(s, 0, sizeof *s);
     return gw_param_init(setup_params, s, NULL);
 }
@@ -52,6 +54,8 @@ void gw_chain_setup_clear(gw_chain_setup *s)
 
 int chain_study_setup_init(void *s, size_t size, gw_chain_setup *col, const gw_param *t)
 {
+    if (!s)
+        return GW_EINVAL;
     memset(s, 0, size);
     int rc = gw_chain_setup_init(col);
     return rc == GW_OK ? gw_param_init(t, s, NULL) : rc;
@@ -59,6 +63,8 @@ int chain_study_setup_init(void *s, size_t size, gw_chain_setup *col, const gw_p
 
 void chain_study_setup_clear(void *s, gw_chain_setup *col, const gw_param *t)
 {
+    if (!s)
+        return;
     gw_param_clear(t, s);
     gw_chain_setup_clear(col);
 }
@@ -105,6 +111,8 @@ int gw_chain_study_speeds_check(const double *v, int n, int n_speeds, gw_err *er
 
 void gw_chain_resolved_free(gw_chain_resolved *r)
 {
+    if (!r)
+        return;
     free(r->masses);
     free(r->kc);
     gw_layer_law_free(r->layer);

@@ -108,8 +108,12 @@ int gw_chain_sweep_n_progress(const gw_chain_params *tmpl, const gw_chain_run_op
                               int nv, int n_lo, int n_hi, int jobs, gw_progress_fn progress, void *pctx,
                               gw_chain_result *res, gw_err *err)
 {
+    if (!tmpl || !o || !v || !res)
+        return gw_err_set(err, GW_EINVAL, "gw_chain_sweep_n: %s is NULL",
+                          !tmpl ? "tmpl" : !o ? "o" : !v ? "v" : "res");
     if (nv < 1 || n_lo < 1 || n_hi < n_lo)
-        return gw_err_set(err, GW_EINVAL, "sweep: empty grid");
+        return gw_err_set(err, GW_EINVAL, "gw_chain_sweep_n: empty grid (nv = %d speeds, N = n_lo %d .. n_hi %d)",
+                          nv, n_lo, n_hi);
     sweep w = {tmpl, o, v, n_lo, n_hi - n_lo + 1, res};
     long ncase = (long)nv * w.per_v;
     memset(res, 0, (size_t)ncase * sizeof *res);

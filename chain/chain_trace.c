@@ -22,6 +22,8 @@ void gw_chain_trace_init(gw_chain_trace *tr, int n)
 
 void gw_chain_trace_free(gw_chain_trace *tr)
 {
+    if (!tr)
+        return;
     free(tr->t);
     free(tr->f);
     free(tr->x);

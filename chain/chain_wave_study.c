@@ -80,21 +80,29 @@ const gw_param *gw_chain_softwall_setup_params(void) { return sw_params; }
 
 int gw_chain_wavespeed_setup_init(gw_chain_wavespeed_setup *s)
 {
+    if (!s)
+        return GW_EINVAL;
     return chain_study_setup_init(s, sizeof *s, &s->col, ws_params);
 }
 
 void gw_chain_wavespeed_setup_clear(gw_chain_wavespeed_setup *s)
 {
+    if (!s)
+        return;
     chain_study_setup_clear(s, &s->col, ws_params);
 }
 
 int gw_chain_softwall_setup_init(gw_chain_softwall_setup *s)
 {
+    if (!s)
+        return GW_EINVAL;
     return chain_study_setup_init(s, sizeof *s, &s->col, sw_params);
 }
 
 void gw_chain_softwall_setup_clear(gw_chain_softwall_setup *s)
 {
+    if (!s)
+        return;
     chain_study_setup_clear(s, &s->col, sw_params);
 }
 
@@ -198,12 +206,16 @@ const gw_param *gw_chain_softwall_outcome_fields(void) { return sw_fields; }
 
 void gw_chain_wavespeed_outcome_free(gw_chain_wavespeed_outcome *out)
 {
+    if (!out)
+        return;
     free(out->v_imp); /* one block */
     memset(out, 0, sizeof *out);
 }
 
 void gw_chain_softwall_outcome_free(gw_chain_softwall_outcome *out)
 {
+    if (!out)
+        return;
     free(out->n);
     free(out->rigid);
     free(out->sheet_table);
@@ -332,6 +344,8 @@ static void ws_fits(const gw_chain_params *p, gw_chain_wavespeed_outcome *o)
 int gw_chain_wavespeed_run(const gw_chain_wavespeed_setup *s, gw_progress_fn progress, void *pctx,
                            gw_chain_wavespeed_outcome *out, gw_err *err)
 {
+    if (!s || !out)
+        return gw_err_set(err, GW_EINVAL, "gw_chain_wavespeed_run: %s is NULL", !s ? "setup" : "out");
     memset(out, 0, sizeof *out);
     int rc = chain_study_range_check(ws_params, s, &s->col, s->vimp.n, err);
     if (rc != GW_OK)
@@ -560,6 +574,8 @@ static void sw_fill(const gw_chain_softwall_setup *s, const gw_chain_resolved *r
 int gw_chain_softwall_run(const gw_chain_softwall_setup *s, gw_progress_fn progress, void *pctx,
                           gw_chain_softwall_outcome *out, gw_err *err)
 {
+    if (!s || !out)
+        return gw_err_set(err, GW_EINVAL, "gw_chain_softwall_run: %s is NULL", !s ? "setup" : "out");
     memset(out, 0, sizeof *out);
     int rc = chain_study_range_check(sw_params, s, &s->col, s->sheets ? gw_sheet_count() : 1, err);
     if (rc != GW_OK)

@@ -17,6 +17,15 @@
 #include "gw_common.h"
 #include "gw_solver.h"
 
+/* C++ callers link the C symbols; the declarations below are the library's
+ * exported interface (everything else in libgranwave.so is hidden). */
+#ifdef __cplusplus
+extern "C" {
+#endif
+#if defined(__GNUC__)
+#pragma GCC visibility push(default)
+#endif
+
 /* ---- materials and closed forms (docs/physics.md 1.2, 1.3) ---- */
 
 typedef struct gw_material {
@@ -715,5 +724,12 @@ void gw_chain_drop_result_free(gw_chain_drop_result *r);
 
 struct gw_sweep_model;
 extern const struct gw_sweep_model gw_chain_sweep_model;
+
+#if defined(__GNUC__)
+#pragma GCC visibility pop
+#endif
+#ifdef __cplusplus
+}
+#endif
 
 #endif

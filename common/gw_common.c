@@ -64,6 +64,8 @@ int gw_err_set(gw_err *err, int status, const char *fmt, ...)
 
 int gw_parse_double(const char *s, const char *name, double *out, gw_err *err)
 {
+    if (!out)
+        return gw_err_set(err, GW_EINVAL, "gw_parse_double: out is NULL");
     if (!s || !*s)
         return gw_err_set(err, GW_EINVAL, "%s: expected a number, got an empty value", name);
     char *end = NULL;
@@ -119,6 +121,8 @@ int gw_parse_double_list(const char *s, const char *name, double **out, int *n, 
 int gw_parse_double_list_in(const char *s, const char *name, double lo, double hi, int open_lo,
                             double **out, int *n, gw_err *err)
 {
+    if (!out || !n)
+        return gw_err_set(err, GW_EINVAL, "gw_parse_double_list: %s is NULL", !out ? "out" : "n");
     *out = NULL;
     *n = 0;
     if (!s || !*s)
@@ -191,6 +195,8 @@ int gw_parse_int_range(const char *s, const char *name, long lo, long hi, long *
 
 char *gw_str_trim(char *s)
 {
+    if (!s)
+        return NULL;
     while (*s == ' ' || *s == '\t')
         s++;
     size_t n = strlen(s);
@@ -201,6 +207,8 @@ char *gw_str_trim(char *s)
 
 int gw_parse_flag(const char *v)
 {
+    if (!v)
+        return -1;
     if (strcmp(v, "1") == 0 || strcasecmp(v, "true") == 0)
         return 1;
     if (strcmp(v, "0") == 0 || strcasecmp(v, "false") == 0)

@@ -16,6 +16,15 @@
 
 #include "gw_version.h"
 
+/* C++ callers link the C symbols; the declarations below are the library's
+ * exported interface (everything else in libgranwave.so is hidden). */
+#ifdef __cplusplus
+extern "C" {
+#endif
+#if defined(__GNUC__)
+#pragma GCC visibility push(default)
+#endif
+
 enum {
     GW_OK = 0,
     GW_ROOT = 1,          /* not an error: the solver stopped at an event */
@@ -300,5 +309,12 @@ char *gw_json_string(const cJSON *o, int formatted);
 int gw_json_print(const cJSON *o, FILE *fp);
 /* Write o to path atomically. */
 int gw_json_write(const char *path, const cJSON *o, gw_err *err);
+
+#if defined(__GNUC__)
+#pragma GCC visibility pop
+#endif
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -15,6 +15,8 @@
 
 int gw_fit_linear(const double *x, const double *y, int n, gw_linfit *fit)
 {
+    if (!x || !y || !fit)
+        return GW_EINVAL;
     if (n < 2)
         return GW_EINVAL;
     double c0, c1, cov00, cov01, cov11, sumsq;

@@ -167,6 +167,8 @@ mode_t gw_new_file_mode(const char *replaces)
 
 int gw_afile_open(gw_afile *f, const char *path, gw_err *err)
 {
+    if (!f || !path)
+        return gw_err_set(err, GW_EINVAL, "gw_afile_open: %s is NULL", !f ? "f" : "path");
     memset(f, 0, sizeof *f);
     hold_signals(f);
     int rc = write_target(path, f->path, sizeof f->path, path, err);
@@ -285,6 +287,8 @@ static int commit_named(gw_afile *f, gw_err *err)
 
 int gw_afile_commit(gw_afile *f, gw_err *err)
 {
+    if (!f)
+        return gw_err_set(err, GW_EINVAL, "gw_afile_commit: f is NULL");
     if (f->named && !f->fp && f->tmp[0])
         return commit_named(f, err);
     if (!f->fp) {
@@ -319,6 +323,8 @@ int gw_afile_commit(gw_afile *f, gw_err *err)
 
 void gw_afile_abort(gw_afile *f)
 {
+    if (!f)
+        return;
     if (f->fp) {
         fclose(f->fp);
         f->fp = NULL;
@@ -333,6 +339,8 @@ void gw_afile_abort(gw_afile *f)
 
 int gw_outset_begin(gw_outset *s, const char *dir, const char *const *names, gw_err *err)
 {
+    if (!s || !dir || !names)
+        return gw_err_set(err, GW_EINVAL, "gw_outset_begin: %s is NULL", !s ? "s" : !dir ? "dir" : "names");
     memset(s, 0, sizeof *s);
     if (cur_set)
         return gw_err_set(err, GW_EINVAL, "%s: an output set is already open on this thread", dir);
@@ -396,6 +404,8 @@ static void outset_release(gw_outset *s) { sig_release(s->oldmask, &s->masked); 
 
 void gw_outset_abort(gw_outset *s)
 {
+    if (!s)
+        return;
     if (!s->active)
         return;
     outset_hold(s);
@@ -407,6 +417,8 @@ void gw_outset_abort(gw_outset *s)
 
 int gw_outset_commit(gw_outset *s, gw_err *err)
 {
+    if (!s)
+        return gw_err_set(err, GW_EINVAL, "gw_outset_commit: s is NULL");
     if (!s->active)
         return gw_err_set(err, GW_EIO, "%s: no output set open", s->dir);
     int rc = GW_OK;
@@ -458,6 +470,8 @@ int gw_outset_commit(gw_outset *s, gw_err *err)
 
 void gw_write_comment(FILE *fp, const char *text)
 {
+    if (!fp)
+        return;
     for (const char *p = text; p && *p;) {
         const char *nl = strchr(p, '\n');
         size_t len = nl ? (size_t)(nl - p) : strlen(p);
@@ -484,6 +498,8 @@ static void remove_made(char *buf, size_t first, size_t stop)
 
 int gw_mkdir_p(const char *path, gw_err *err)
 {
+    if (!path)
+        return gw_err_set(err, GW_EINVAL, "gw_mkdir_p: path is NULL");
     char buf[4096];
     size_t n = strlen(path);
     if (n == 0 || n >= sizeof buf)
@@ -530,6 +546,8 @@ int gw_path_join(char *buf, size_t n, const char *dir, const char *name)
 
 void gw_path_parent(char *buf)
 {
+    if (!buf)
+        return;
     char *slash = strrchr(buf, '/');
     if (!slash)
         buf[0] = '.', buf[1] = '\0';
@@ -541,6 +559,8 @@ void gw_path_parent(char *buf)
 
 int gw_write_text(const char *path, const char *text, gw_err *err)
 {
+    if (!path || !text)
+        return gw_err_set(err, GW_EINVAL, "gw_write_text: %s is NULL", !path ? "path" : "text");
     gw_afile f;
     int rc = gw_afile_open(&f, path, err);
     if (rc != GW_OK)
@@ -607,6 +627,8 @@ int gw_input_check(const char *path, const char *what, gw_err *err)
 int gw_input_read(const char *path, const char *what, size_t max, char **out, size_t *len,
                   gw_err *err)
 {
+    if (!out)
+        return gw_err_set(err, GW_EINVAL, "gw_input_read: out is NULL");
     *out = NULL;
     if (len)
         *len = 0;
@@ -727,6 +749,8 @@ int gw_out_file_check(const char *path, const char *what, gw_err *err)
 
 unsigned long long gw_fnv1a64(unsigned long long h, const void *p, size_t n)
 {
+    if (!p)
+        return h;
     const unsigned char *b = p;
     for (size_t i = 0; i < n; i++) {
         h ^= b[i];

@@ -16,6 +16,8 @@
 
 cJSON *gw_json_doubles(const double *v, int n)
 {
+    if (!v && n > 0)
+        return NULL;
     cJSON *a = cJSON_CreateArray();
     for (int i = 0; a && i < n; i++) {
         cJSON *x = cJSON_CreateNumber(v[i]);

@@ -38,7 +38,7 @@ const gw_param *gw_param_find(const gw_param *t, const char *name)
 
 int gw_param_is_input(const gw_param *p)
 {
-    return p->type != GW_PARAM_DARRAY && p->type != GW_PARAM_IARRAY && p->type != GW_PARAM_FARRAY;
+    return p && p->type != GW_PARAM_DARRAY && p->type != GW_PARAM_IARRAY && p->type != GW_PARAM_FARRAY;
 }
 
 const char *gw_param_type_name(gw_param_type type)
@@ -257,6 +257,8 @@ int gw_param_set(const gw_param *t, void *obj, const char *name, const char *val
         return gw_err_set(err, GW_EINVAL, "unknown parameter '%s'", name ? name : "(null)");
     if (!value)
         return gw_err_set(err, GW_EINVAL, "%s: no value", p->name);
+    if (!obj)
+        return gw_err_set(err, GW_EINVAL, "gw_param_set: obj is NULL (setting %s)", p->name);
     return set_text(p, obj, value, err);
 }
 
@@ -266,6 +268,8 @@ int gw_param_set_value(const gw_param *p, void *fieldp, const char *value, gw_er
         return gw_err_set(err, GW_EINVAL, "%s: a result, not a parameter", p ? p->name : "(null)");
     if (!value)
         return gw_err_set(err, GW_EINVAL, "%s: no value", p->name);
+    if (!fieldp)
+        return gw_err_set(err, GW_EINVAL, "gw_param_set_value: fieldp is NULL (setting %s)", p->name);
     gw_param row = *p; /* the same row with its field at fieldp */
     row.offset = 0;
     return set_text(&row, fieldp, value, err);
@@ -276,11 +280,15 @@ int gw_param_set_double(const gw_param *t, void *obj, const char *name, double v
     const gw_param *p = gw_param_find(t, name);
     if (!p)
         return gw_err_set(err, GW_EINVAL, "unknown parameter '%s'", name ? name : "(null)");
+    if (!obj)
+        return gw_err_set(err, GW_EINVAL, "gw_param_set_double: obj is NULL (setting %s)", p->name);
     return set_number(p, obj, v, NULL, err);
 }
 
 int gw_param_check(const gw_param *t, const void *obj, gw_err *err)
 {
+    if (!t || !obj)
+        return gw_err_set(err, GW_EINVAL, "gw_param_check: %s is NULL", !t ? "table" : "obj");
     for (int i = 0; t && t[i].name; i++) {
         const gw_param *p = &t[i];
         const void *f = cfield(obj, p);
@@ -309,6 +317,11 @@ int gw_param_check(const gw_param *t, const void *obj, gw_err *err)
         }
         case GW_PARAM_LIST: {
             const gw_param_list *l = f;
+            if (l->n < 0 || (l->n > 0 && !l->v)) {
+                rc = gw_err_set(err, GW_EINVAL, "%s: a list of %d items %s", p->name, l->n,
+                                l->n < 0 ? "(a negative count)" : "without its values (v is NULL)");
+                break;
+            }
             for (int k = 0; k < l->n && rc == GW_OK; k++) {
                 char what[32];
                 gw_snprintf(what, sizeof what, "item %d is ", k + 1);
@@ -336,6 +349,8 @@ int gw_param_check(const gw_param *t, const void *obj, gw_err *err)
 
 int gw_param_init(const gw_param *t, void *obj, gw_err *err)
 {
+    if (!t || !obj)
+        return gw_err_set(err, GW_EINVAL, "gw_param_init: %s is NULL", !t ? "table" : "obj");
     for (int i = 0; t && t[i].name; i++) {
         const gw_param *p = &t[i];
         void *f = field(obj, p);
@@ -363,10 +378,10 @@ int gw_param_init(const gw_param *t, void *obj, gw_err *err)
 
 int gw_param_format(const gw_param *p, const void *obj, char *buf, size_t n)
 {
+    if (!p || !obj || !buf || n == 0)
+        return -1;
     const void *f = cfield(obj, p);
     int w = -1;
-    if (n == 0)
-        return -1;
     buf[0] = '\0';
     switch (p->type) {
     case GW_PARAM_DOUBLE:
@@ -402,6 +417,8 @@ int gw_param_format(const gw_param *p, const void *obj, char *buf, size_t n)
 
 cJSON *gw_param_json(const gw_param *t, const void *obj)
 {
+    if (!obj)
+        return NULL;
     cJSON *o = cJSON_CreateObject();
     for (int i = 0; o && t && t[i].name; i++) {
         const gw_param *p = &t[i];
@@ -443,7 +460,7 @@ cJSON *gw_param_json(const gw_param *t, const void *obj)
 
 void gw_param_clear(const gw_param *t, void *obj)
 {
-    for (int i = 0; t && t[i].name; i++) {
+    for (int i = 0; obj && t && t[i].name; i++) {
         void *f = field(obj, &t[i]);
         if (t[i].type == GW_PARAM_TEXT) {
             free(*(char **)f);
@@ -459,6 +476,8 @@ void gw_param_clear(const gw_param *t, void *obj)
 
 int gw_param_copy(const gw_param *t, size_t size, void *dst, const void *src, gw_err *err)
 {
+    if (!dst || !src)
+        return gw_err_set(err, GW_EINVAL, "gw_param_copy: %s is NULL", !dst ? "dst" : "src");
     memcpy(dst, src, size);
     for (int i = 0; t && t[i].name; i++) { /* detach, then duplicate what src owns */
         void *f = field(dst, &t[i]);
@@ -473,7 +492,7 @@ int gw_param_copy(const gw_param *t, size_t size, void *dst, const void *src, gw
         if (t[i].type == GW_PARAM_TEXT && *(char *const *)s) {
             if (!(*(char **)f = strdup(*(char *const *)s)))
                 goto nomem;
-        } else if (t[i].type == GW_PARAM_LIST && ((const gw_param_list *)s)->n > 0) {
+        } else if (t[i].type == GW_PARAM_LIST && ((const gw_param_list *)s)->n > 0 && ((const gw_param_list *)s)->v) {
             const gw_param_list *ls = s;
             gw_param_list *ld = f;
             if (!(ld->v = malloc((size_t)ls->n * sizeof *ld->v)))

@@ -24,6 +24,15 @@
 
 #include "gw_common.h"
 
+/* C++ callers link the C symbols; the declarations below are the library's
+ * exported interface (everything else in libgranwave.so is hidden). */
+#ifdef __cplusplus
+extern "C" {
+#endif
+#if defined(__GNUC__)
+#pragma GCC visibility push(default)
+#endif
+
 typedef enum gw_param_type {
     GW_PARAM_DOUBLE = 0, /* double; NaN = not given (when the row has no default) */
     GW_PARAM_INT = 1,    /* int */
@@ -143,5 +152,12 @@ int gw_param_copy(const gw_param *t, size_t size, void *dst, const void *src, gw
     {.name = nm, .type = GW_PARAM_DARRAY, .offset = off, .unit = un, .rows = r, .cols = c, .choices = names, \
      .help = hl}
 #define GW_PARAM_END {0}
+
+#if defined(__GNUC__)
+#pragma GCC visibility pop
+#endif
+#ifdef __cplusplus
+}
+#endif
 
 #endif

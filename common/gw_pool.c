@@ -61,6 +61,8 @@ int gw_cases_run(long n, int jobs, gw_case_fn fn, void *ctx, gw_progress_fn prog
 {
     if (n <= 0)
         return GW_OK;
+    if (!fn)
+        return gw_err_set(err, GW_EINVAL, "gw_cases_run: fn is NULL");
     pool w;
     memset(&w, 0, sizeof w);
     w.n = n;

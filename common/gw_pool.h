@@ -11,6 +11,15 @@
 
 #include "gw_common.h"
 
+/* C++ callers link the C symbols; the declarations below are the library's
+ * exported interface (everything else in libgranwave.so is hidden). */
+#ifdef __cplusplus
+extern "C" {
+#endif
+#if defined(__GNUC__)
+#pragma GCC visibility push(default)
+#endif
+
 /* One case k of a set; GW_OK or a status with a message in err. Called from
  * any of the pool's threads, several cases at a time: a case must not write
  * state another case reads (each case builds its own solver, hence its own
@@ -30,5 +39,12 @@ typedef int (*gw_case_fn)(void *ctx, long k, gw_err *err);
  * started the cases run on the calling thread. */
 int gw_cases_run(long n, int jobs, gw_case_fn fn, void *ctx, gw_progress_fn progress, void *pctx,
                  gw_err *err);
+
+#if defined(__GNUC__)
+#pragma GCC visibility pop
+#endif
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -25,6 +25,15 @@
 #include "gw_common.h"
 #include "gw_solver.h"
 
+/* C++ callers link the C symbols; the declarations below are the library's
+ * exported interface (everything else in libgranwave.so is hidden). */
+#ifdef __cplusplus
+extern "C" {
+#endif
+#if defined(__GNUC__)
+#pragma GCC visibility push(default)
+#endif
+
 /* ---------------------------------------------------------------- model ---- */
 
 enum { GW_LAYER_MASS_DISC = 0, GW_LAYER_MASS_SPHERE = 1 };
@@ -576,5 +585,12 @@ int gw_layer_crowns(gw_layer_impact_result *res);
 struct gw_sweep_model;
 extern const struct gw_sweep_model gw_layer_sweep_model;
 #define GW_LAYER_SWEEP_MODEL gw_layer_sweep_model
+
+#if defined(__GNUC__)
+#pragma GCC visibility pop
+#endif
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -48,6 +48,8 @@ const gw_param *gw_layer_make_setup_params(void)
 
 int gw_layer_make_setup_init(gw_layer_make_setup *s)
 {
+    if (!s)
+        return GW_EINVAL;
     memset(s, 0, sizeof *s);
     return gw_param_init(make_params, s, NULL);
 }
@@ -93,6 +95,8 @@ const gw_param *gw_layer_make_outcome_fields(void)
 
 void gw_layer_make_outcome_free(gw_layer_make_outcome *out)
 {
+    if (!out)
+        return;
     gw_layer_sample_free(&out->sample);
     free(out->sample_fnv1a64);
     memset(out, 0, sizeof *out);
@@ -162,6 +166,8 @@ int gw_layer_make_run(const gw_layer_make_setup *s, gw_layer_make_outcome *out, 
 int gw_layer_make_run_progress(const gw_layer_make_setup *s, gw_progress_fn progress, void *pctx,
                                gw_layer_make_outcome *out, gw_err *err)
 {
+    if (!s || !out)
+        return gw_err_set(err, GW_EINVAL, "gw_layer_make_run: %s is NULL", !s ? "setup" : "out");
     memset(out, 0, sizeof *out);
     gw_layer_params lp;
     gw_layer_make_params mp;

@@ -144,6 +144,12 @@ const char *gw_layer_mass_law_name(int mass_law)
 int gw_layer_create(const gw_layer_params *p, int n, const gw_layer_body *b, gw_layer **out,
                     gw_err *err)
 {
+    if (!out)
+        return gw_err_set(err, GW_EINVAL, "gw_layer_create: out is NULL");
+    if (!p) {
+        *out = NULL;
+        return gw_err_set(err, GW_EINVAL, "gw_layer_create: p is NULL");
+    }
     *out = NULL;
     int rc = gw_layer_params_validate(p, err);
     if (rc != GW_OK)

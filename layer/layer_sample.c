@@ -874,6 +874,8 @@ int gw_layer_sample_write(const gw_layer_sample *s, const char *path, const char
 
 int gw_layer_sample_read(const char *path, gw_layer_sample *s, gw_err *err)
 {
+    if (!s || !path)
+        return gw_err_set(err, GW_EINVAL, "gw_layer_sample_read: %s is NULL", !s ? "s" : "path");
     memset(s, 0, sizeof *s);
     s->mass_law = GW_LAYER_MASS_DISC;
     text_in t = {.path = path};

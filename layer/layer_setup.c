@@ -79,6 +79,8 @@ const gw_param *gw_layer_impact_setup_params(void)
 
 int gw_layer_impact_setup_init(gw_layer_impact_setup *s)
 {
+    if (!s)
+        return GW_EINVAL;
     memset(s, 0, sizeof *s);
     return gw_param_init(impact_params, s, NULL);
 }
@@ -192,6 +194,8 @@ const gw_param *gw_layer_impact_outcome_fields(void)
 
 void gw_layer_impact_outcome_free(gw_layer_impact_outcome *out)
 {
+    if (!out)
+        return;
     gw_layer_impact_result_free(&out->r);
     out->nregions = 0;
     free(out->undecided);
@@ -340,6 +344,8 @@ static int resolve(const gw_layer_impact_setup *s, const gw_layer_sample *smp, g
 
 int gw_layer_impact_plan_make(const gw_layer_impact_setup *s, gw_layer_impact_plan *p, gw_err *err)
 {
+    if (!s || !p)
+        return gw_err_set(err, GW_EINVAL, "gw_layer_impact_plan_make: %s is NULL", !s ? "s" : "p");
     memset(p, 0, sizeof *p);
     int rc = gw_param_check(impact_params, s, err);
     if (rc != GW_OK)
@@ -353,6 +359,8 @@ int gw_layer_impact_plan_make(const gw_layer_impact_setup *s, gw_layer_impact_pl
 
 void gw_layer_impact_plan_free(gw_layer_impact_plan *p)
 {
+    if (!p)
+        return;
     gw_layer_sample_free(&p->sample);
 }
 
@@ -372,6 +380,8 @@ int gw_layer_impact_run(const gw_layer_impact_setup *s, gw_layer_impact_outcome 
 int gw_layer_impact_run_progress(const gw_layer_impact_setup *s, gw_progress_fn progress, void *pctx,
                                  gw_layer_impact_outcome *out, gw_err *err)
 {
+    if (!s || !out)
+        return gw_err_set(err, GW_EINVAL, "gw_layer_impact_run: %s is NULL", !s ? "setup" : "out");
     memset(out, 0, sizeof *out);
     out->block_index = -1;
     gw_layer_impact_plan plan;

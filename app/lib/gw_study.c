@@ -87,6 +87,8 @@ static void make_free(void *out) { gw_layer_make_outcome_free(out); }
 static int stats_init(void *s)
 {
     int rc = gw_stats_setup_init(s);
+    if (rc != GW_OK)
+        return rc;
     const gw_layer_impact_params ip = gw_layer_impact_params_default();
     ((gw_stats_setup *)s)->defaults = (gw_stats_defaults){
         .rb_rm = ip.rb_rm, .alpha = ip.alpha_deg, .vi = ip.vi, .density = gw_layer_params_default().density};
@@ -169,9 +171,15 @@ const gw_sweep_model *const *gw_sweep_models(int *n)
 int gw_sweep_run_text(const char *text, const char *name, int jobs, gw_progress_fn progress, void *pctx,
                       double **values, long *ncases, const gw_sweep_model **model, gw_err *err)
 {
-    *values = NULL;
-    *ncases = 0;
-    *model = NULL;
+    if (values)
+        *values = NULL;
+    if (ncases)
+        *ncases = 0;
+    if (model)
+        *model = NULL;
+    if (!text || !values || !ncases || !model)
+        return gw_err_set(err, GW_EINVAL, "gw_sweep_run_text: %s is NULL",
+                          !text ? "text" : !values ? "values" : !ncases ? "ncases" : "model");
     int nm = 0;
     const gw_sweep_model *const *ms = gw_sweep_models(&nm);
     gw_sweep_config cfg;

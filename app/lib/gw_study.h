@@ -25,6 +25,15 @@
 #include "gw_param.h"
 #include "gw_sweep.h"
 
+/* C++ callers link the C symbols; the declarations below are the library's
+ * exported interface (everything else in libgranwave.so is hidden). */
+#ifdef __cplusplus
+extern "C" {
+#endif
+#if defined(__GNUC__)
+#pragma GCC visibility push(default)
+#endif
+
 typedef struct gw_study {
     const char *name;        /* the program's command ("chain", "layer-impact") */
     const char *summary;     /* one line */
@@ -64,5 +73,12 @@ void gw_free(void *p);
 /* sizeof(gw_param) and sizeof(gw_study), for bindings that mirror them. */
 size_t gw_param_row_size(void);
 size_t gw_study_size(void);
+
+#if defined(__GNUC__)
+#pragma GCC visibility pop
+#endif
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -19,6 +19,15 @@
 
 #include "gw_common.h"
 
+/* C++ callers link the C symbols; the declarations below are the library's
+ * exported interface (everything else in libgranwave.so is hidden). */
+#ifdef __cplusplus
+extern "C" {
+#endif
+#if defined(__GNUC__)
+#pragma GCC visibility push(default)
+#endif
+
 /* Right-hand side dy/dt = f(t, y). Return 0 on success, > 0 for a recoverable
  * failure (the adaptive backends retry with a smaller step), < 0 to stop. */
 typedef int (*gw_rhs_fn)(double t, const double *y, double *ydot, void *params);
@@ -220,5 +229,12 @@ const char *gw_solver_error(const gw_solver *s);
 const gw_solver_type *gw_solver_get_type(const gw_solver *s);
 /* Free; NULL is a no-op. */
 void gw_solver_free(gw_solver *s);
+
+#if defined(__GNUC__)
+#pragma GCC visibility pop
+#endif
+#ifdef __cplusplus
+}
+#endif
 
 #endif

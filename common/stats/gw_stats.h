@@ -29,6 +29,15 @@
 #include "gw_common.h"
 #include "gw_param.h"
 
+/* C++ callers link the C symbols; the declarations below are the library's
+ * exported interface (everything else in libgranwave.so is hidden). */
+#ifdef __cplusplus
+extern "C" {
+#endif
+#if defined(__GNUC__)
+#pragma GCC visibility push(default)
+#endif
+
 #define GW_STATS_MAX_KEYS 32
 
 /* A layer sweep table. Grid values are kept as the strings of the config
@@ -410,5 +419,12 @@ const gw_param *gw_stats_outcome_fields(void);
  * gw_stats_outcome_free also after a failure. No files are written. */
 int gw_stats_run(const gw_stats_setup *s, gw_stats_outcome *out, gw_err *err);
 void gw_stats_outcome_free(gw_stats_outcome *out);
+
+#if defined(__GNUC__)
+#pragma GCC visibility pop
+#endif
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -46,6 +46,8 @@ const gw_param *gw_stats_setup_params(void)
 
 int gw_stats_setup_init(gw_stats_setup *s)
 {
+    if (!s)
+        return GW_EINVAL;
     memset(s, 0, sizeof *s);
     s->defaults = (gw_stats_defaults){NAN, NAN, NAN, NAN};
     gw_err err = {{0}};
@@ -262,6 +264,8 @@ static int diagrams_make(gw_stats_analysis *A)
 
 void gw_stats_analysis_free(gw_stats_analysis *A)
 {
+    if (!A)
+        return;
     for (int q = 0; A->dia && q < A->ndia; q++) {
         free(A->dia[q].groups);
         gw_stats_diagram_free(&A->dia[q].d);

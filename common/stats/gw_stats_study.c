@@ -241,6 +241,8 @@ static int tables_make(gw_stats_outcome *out)
 
 int gw_stats_run(const gw_stats_setup *s, gw_stats_outcome *out, gw_err *err)
 {
+    if (!s || !out)
+        return gw_err_set(err, GW_EINVAL, "gw_stats_run: %s is NULL", !s ? "setup" : "out");
     memset(out, 0, sizeof *out);
     int rc = gw_stats_analyse(s, &out->a, err);
     if (rc == GW_OK && tables_make(out) != GW_OK)
@@ -250,6 +252,8 @@ int gw_stats_run(const gw_stats_setup *s, gw_stats_outcome *out, gw_err *err)
 
 void gw_stats_outcome_free(gw_stats_outcome *out)
 {
+    if (!out)
+        return;
     gw_stats_analysis_free(&out->a);
     free(out->group_keys);
     free(out->keys);

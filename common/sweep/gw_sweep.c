@@ -327,6 +327,9 @@ static int lines_fit(const char *text, const char *name, gw_err *err)
 int gw_sweep_config_read(const char *path, const gw_sweep_model *const *models, int nmodels,
                          gw_sweep_config *cfg, const gw_sweep_model **model, gw_err *err)
 {
+    if (!cfg || !model || !path || !models)
+        return gw_err_set(err, GW_EINVAL, "gw_sweep_config_read: %s is NULL",
+                          !cfg ? "cfg" : !model ? "model" : !path ? "path" : "models");
     memset(cfg, 0, sizeof *cfg);
     *model = NULL;
     parse_ctx pc = {cfg, models, nmodels, "", 0, 0};
@@ -357,6 +360,9 @@ int gw_sweep_config_read(const char *path, const gw_sweep_model *const *models, 
 int gw_sweep_config_read_string(const char *text, const char *name, const gw_sweep_model *const *models,
                                 int nmodels, gw_sweep_config *cfg, const gw_sweep_model **model, gw_err *err)
 {
+    if (!cfg || !model || !text || !models)
+        return gw_err_set(err, GW_EINVAL, "gw_sweep_config_read_string: %s is NULL",
+                          !cfg ? "cfg" : !model ? "model" : !text ? "text" : "models");
     memset(cfg, 0, sizeof *cfg);
     *model = NULL;
     parse_ctx pc = {cfg, models, nmodels, "", 0, 0};
@@ -576,6 +582,8 @@ static void free_keys(gw_sweep_key *k, int n)
 
 void gw_sweep_config_free(gw_sweep_config *cfg)
 {
+    if (!cfg)
+        return;
     free_keys(cfg->grid, cfg->ngrid);
     free_keys(cfg->params, cfg->nparams);
     free(cfg->inputs);

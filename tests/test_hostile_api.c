@@ -1,0 +1,525 @@
+/*
+ * test_hostile_api.c: the library's C interface used as a careless or hostile
+ * caller would (docs/library.md "The contract of every call"): NULL for every
+ * pointer argument of the entry points, zeroed and hand-filled structs, results
+ * freed twice or never filled, studies run into a result struct that is reused,
+ * progress callbacks that call the library again or stop it, and several
+ * threads running the same studies at once.
+ *
+ * The rules checked: the library never crashes, prints or exits; a refused call
+ * returns GW_EINVAL with one line in gw_err naming the call and the argument,
+ * and writes nothing; free and clear calls take NULL and can be repeated.
+ * Every case runs in its own child process (a crash in one is reported as that
+ * case's failure, not the end of the test), with a time limit.
+ */
+#define _POSIX_C_SOURCE 200809L
+#include <math.h>
+#include <pthread.h>
+#include <signal.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include "granwave.h"
+
+static int nfail, ncases;
+
+static void check(int ok, const char *what)
+{
+    ncases++;
+    if (!ok) {
+        nfail++;
+        printf("FAIL: %s\n", what);
+    }
+}
+
+/* Run body in a child (time limit 120 s, ASan builds are ~10x slower): it must
+ * end by returning 0 (its own checks passed), never by a signal. What it
+ * printed on stdout and stderr is captured: the library must print nothing, so
+ * a child that wrote anything fails too (the children print only on failure). */
+typedef int (*case_fn)(void);
+
+static void in_child(const char *label, case_fn body)
+{
+    char out[] = "/tmp/gw_hostile_api.XXXXXX";
+    int fd = mkstemp(out);
+    if (fd < 0) {
+        check(0, "mkstemp");
+        return;
+    }
+    fflush(stdout);
+    fflush(stderr);
+    pid_t pid = fork();
+    if (pid == 0) {
+        dup2(fd, 1);
+        dup2(fd, 2);
+        alarm(120);
+        int rc = body();
+        fflush(stdout);
+        exit(rc == 0 ? 0 : 1); /* exit, not _exit: LeakSanitizer checks the child */
+    }
+    int st = 0;
+    waitpid(pid, &st, 0);
+    char buf[2048] = "";
+    ssize_t got = pread(fd, buf, sizeof buf - 1, 0);
+    buf[got > 0 ? got : 0] = '\0';
+    close(fd);
+    unlink(out);
+    char what[3072];
+    if (WIFSIGNALED(st))
+        snprintf(what, sizeof what, "%s: killed by signal %d (%s)", label, WTERMSIG(st), buf);
+    else if (WEXITSTATUS(st) != 0)
+        snprintf(what, sizeof what, "%s: exit %d: %s", label, WEXITSTATUS(st), buf);
+    else
+        snprintf(what, sizeof what, "%s: printed \"%s\"", label, buf);
+    check(WIFEXITED(st) && WEXITSTATUS(st) == 0 && buf[0] == '\0', what);
+}
+
+/* In a child: report a failed expectation on stdout (which fails the case). */
+#define EXPECT(cond)                                                                                  \
+    do {                                                                                              \
+        if (!(cond)) {                                                                                \
+            printf("%s:%d: expected %s\n", __FILE__, __LINE__, #cond);                               \
+            return 1;                                                                                 \
+        }                                                                                             \
+    } while (0)
+
+/* A refusal: GW_EINVAL and a message that contains what (the argument named). */
+static int refused(int rc, const gw_err *e, const char *what)
+{
+    if (rc != GW_EINVAL || !strstr(e->msg, what) || strchr(e->msg, '\n')) {
+        printf("status %d, message '%s' (wanted GW_EINVAL naming '%s')\n", rc, e->msg, what);
+        return 0;
+    }
+    return 1;
+}
+
+/* ---- every study through the index: NULL, zeroed, freed twice ---- */
+
+static const gw_study *cur; /* the study of the case running */
+
+static int study_null_init(void)
+{
+    EXPECT(cur->init(NULL) == GW_EINVAL);
+    cur->clear(NULL);
+    cur->free_out(NULL);
+    return 0;
+}
+
+static int study_null_run(void)
+{
+    char *out = malloc(cur->fields_size), *p = calloc(1, cur->params_size);
+    memset(out, 0x5a, cur->fields_size);
+    gw_err e = {{0}};
+    EXPECT(refused(cur->run(NULL, out, NULL, NULL, &e), &e, "setup is NULL"));
+    for (size_t i = 0; i < cur->fields_size; i++) /* nothing written into out */
+        EXPECT(out[i] == 0x5a);
+    EXPECT(cur->init(p) == GW_OK);
+    e.msg[0] = '\0';
+    EXPECT(refused(cur->run(p, NULL, NULL, NULL, &e), &e, "out is NULL"));
+    EXPECT(cur->run(NULL, NULL, NULL, NULL, NULL) == GW_EINVAL); /* err may be NULL */
+    cur->clear(p);
+    free(p);
+    free(out);
+    return 0;
+}
+
+/* A zeroed setup (never initialised) is refused by name, with or without err;
+ * its zeroed result and the setup can be freed and cleared twice. */
+static int study_zeroed(void)
+{
+    void *p = calloc(1, cur->params_size), *o = calloc(1, cur->fields_size);
+    gw_err e = {{0}};
+    int rc = cur->run(p, o, NULL, NULL, &e);
+    EXPECT(rc == GW_EINVAL && e.msg[0] && !strchr(e.msg, '\n'));
+    cur->free_out(o);
+    cur->free_out(o);
+    EXPECT(cur->run(p, o, NULL, NULL, NULL) == GW_EINVAL);
+    cur->free_out(o);
+    cur->clear(p);
+    cur->clear(p);
+    void *z = calloc(1, cur->fields_size); /* a never-filled result frees as nothing */
+    cur->free_out(z);
+    free(z);
+    free(p);
+    free(o);
+    return 0;
+}
+
+/* init, clear twice, init again (a cleared setup is reusable) */
+static int study_reinit(void)
+{
+    void *p = calloc(1, cur->params_size);
+    EXPECT(cur->init(p) == GW_OK);
+    cur->clear(p);
+    cur->clear(p);
+    EXPECT(cur->init(p) == GW_OK);
+    cur->clear(p);
+    free(p);
+    return 0;
+}
+
+/* ---- the parameter tables ---- */
+
+static int param_nulls(void)
+{
+    const gw_param *t = gw_chain_setup_params();
+    gw_chain_setup s;
+    EXPECT(gw_chain_setup_init(&s) == GW_OK);
+    gw_err e = {{0}};
+    EXPECT(refused(gw_param_set(t, NULL, "n", "3", &e), &e, "obj is NULL"));
+    EXPECT(refused(gw_param_set(NULL, &s, "n", "3", &e), &e, "unknown parameter 'n'"));
+    EXPECT(refused(gw_param_set(t, &s, NULL, "3", &e), &e, "unknown parameter '(null)'"));
+    EXPECT(refused(gw_param_set(t, &s, "n", NULL, &e), &e, "n: no value"));
+    EXPECT(gw_param_set(t, NULL, "n", "3", NULL) == GW_EINVAL);
+    EXPECT(refused(gw_param_set_double(t, NULL, "vimp", 0.3, &e), &e, "obj is NULL"));
+    EXPECT(refused(gw_param_set_value(gw_param_find(t, "n"), NULL, "3", &e), &e, "fieldp is NULL"));
+    EXPECT(refused(gw_param_set_value(NULL, &s.n, "3", &e), &e, "(null)"));
+    EXPECT(refused(gw_param_check(t, NULL, &e), &e, "obj is NULL"));
+    EXPECT(refused(gw_param_check(NULL, &s, &e), &e, "table is NULL"));
+    EXPECT(refused(gw_param_init(t, NULL, &e), &e, "obj is NULL"));
+    EXPECT(refused(gw_param_init(NULL, &s, &e), &e, "table is NULL"));
+    EXPECT(refused(gw_param_copy(t, sizeof s, NULL, &s, &e), &e, "dst is NULL"));
+    EXPECT(gw_param_json(t, NULL) == NULL);
+    EXPECT(gw_param_find(NULL, "n") == NULL && gw_param_find(t, NULL) == NULL);
+    EXPECT(gw_param_count(NULL) == 0 && gw_param_is_input(NULL) == 0);
+    char buf[64];
+    EXPECT(gw_param_format(NULL, &s, buf, sizeof buf) == -1);
+    EXPECT(gw_param_format(gw_param_find(t, "n"), NULL, buf, sizeof buf) == -1);
+    EXPECT(gw_param_format(gw_param_find(t, "n"), &s, NULL, 64) == -1);
+    EXPECT(strcmp(gw_param_type_name((gw_param_type)99), "unknown") == 0);
+    gw_param_clear(t, NULL);
+    gw_param_clear(NULL, &s);
+    /* the refused calls left s as it was: n is still the default */
+    EXPECT(gw_param_format(gw_param_find(t, "n"), &s, buf, sizeof buf) == 1 && strcmp(buf, "1") == 0);
+    gw_chain_setup_clear(&s);
+    return 0;
+}
+
+/* A list filled by hand with a count but no values, or a negative count: the
+ * check refuses it by name instead of reading through NULL. */
+static int param_list_by_hand(void)
+{
+    gw_chain_setup s;
+    EXPECT(gw_chain_setup_init(&s) == GW_OK);
+    s.n = 3;
+    s.radii.n = 3; /* v left NULL */
+    gw_err e = {{0}};
+    EXPECT(refused(gw_param_check(gw_chain_setup_params(), &s, &e), &e, "radii:"));
+    gw_chain_collision c;
+    EXPECT(refused(gw_chain_collision_run(&s, &c, &e), &e, "radii:"));
+    gw_chain_collision_free(&c);
+    s.radii.n = -2;
+    EXPECT(refused(gw_chain_collision_run(&s, &c, &e), &e, "radii:"));
+    gw_chain_collision_free(&c);
+    gw_chain_setup copy;
+    s.radii.n = 3;
+    EXPECT(gw_param_copy(gw_chain_setup_params(), sizeof s, &copy, &s, &e) == GW_OK);
+    EXPECT(copy.radii.v == NULL && copy.radii.n == 0);
+    s.radii.n = 0;
+    gw_chain_setup_clear(&copy);
+    gw_chain_setup_clear(&s);
+    return 0;
+}
+
+/* ---- the index, the sweep in memory, the model's own structs ---- */
+
+static int index_nulls(void)
+{
+    EXPECT(gw_study_find(NULL) == NULL && gw_study_find("") == NULL && gw_study_find("chain ") == NULL);
+    EXPECT(gw_study_get(-1) == NULL && gw_study_get(gw_study_count()) == NULL && gw_study_get(1 << 30) == NULL);
+    EXPECT(gw_sweep_models(NULL) != NULL);
+    gw_free(NULL);
+    EXPECT(gw_strerror(12345) != NULL && gw_strerror(-12345) != NULL && gw_strerror(GW_EINVAL) != NULL);
+    EXPECT(gw_err_set(NULL, GW_EIO, "%s", "nowhere") == GW_EIO);
+    double *v = (double *)&v;
+    long nc = 7;
+    const gw_sweep_model *m = (const gw_sweep_model *)&m;
+    gw_err e = {{0}};
+    EXPECT(refused(gw_sweep_run_text(NULL, "x", 1, NULL, NULL, &v, &nc, &m, &e), &e, "text is NULL"));
+    EXPECT(v == NULL && nc == 0 && m == NULL);
+    EXPECT(refused(gw_sweep_run_text("[sweep]\n", "x", 1, NULL, NULL, NULL, &nc, &m, &e), &e, "values is NULL"));
+    EXPECT(refused(gw_sweep_run_text("[sweep]\n", "x", 1, NULL, NULL, &v, NULL, &m, &e), &e, "ncases is NULL"));
+    EXPECT(refused(gw_sweep_run_text("[sweep]\n", "x", 1, NULL, NULL, &v, &nc, NULL, &e), &e, "model is NULL"));
+    return 0;
+}
+
+static int chain_model_nulls(void)
+{
+    gw_chain_params p = gw_chain_params_default();
+    gw_chain_run_opts o = gw_chain_run_opts_default();
+    gw_chain *c = (gw_chain *)&c;
+    gw_err e = {{0}};
+    EXPECT(refused(gw_chain_create(NULL, &c, &e), &e, "gw_chain_create: p is NULL"));
+    EXPECT(c == NULL);
+    EXPECT(refused(gw_chain_create(&p, NULL, &e), &e, "gw_chain_create: out is NULL"));
+    EXPECT(gw_chain_create(&p, &c, NULL) == GW_OK);
+    gw_chain_result r;
+    EXPECT(refused(gw_chain_collide(NULL, &o, &r, &e), &e, "gw_chain_collide: c is NULL"));
+    gw_chain_result_free(&r); /* zeroed by the refused call */
+    EXPECT(refused(gw_chain_collide(c, NULL, &r, &e), &e, "gw_chain_collide: o is NULL"));
+    gw_chain_result_free(&r);
+    EXPECT(refused(gw_chain_collide(c, &o, NULL, &e), &e, "gw_chain_collide: r is NULL"));
+    EXPECT(gw_chain_collide(c, &o, &r, NULL) == GW_OK);
+    gw_chain_result_free(&r);
+    gw_chain_result_free(&r);
+    gw_chain_result_free(NULL);
+    gw_chain_free(c);
+    gw_chain_free(NULL);
+    /* the sweep over N: NULL arrays, empty and reversed ranges */
+    double v = 0.3;
+    EXPECT(refused(gw_chain_sweep_n_progress(NULL, &o, &v, 1, 1, 2, 1, NULL, NULL, &r, &e), &e, "tmpl is NULL"));
+    EXPECT(refused(gw_chain_sweep_n_progress(&p, &o, NULL, 1, 1, 2, 1, NULL, NULL, &r, &e), &e, "v is NULL"));
+    EXPECT(refused(gw_chain_sweep_n_progress(&p, &o, &v, 1, 1, 1, 1, NULL, NULL, NULL, &e), &e, "res is NULL"));
+    EXPECT(refused(gw_chain_sweep_n_progress(&p, &o, &v, 1, 3, 2, 1, NULL, NULL, &r, &e), &e, "n_lo"));
+    EXPECT(refused(gw_chain_sweep_n_progress(&p, &o, &v, -1, 1, 2, 1, NULL, NULL, &r, &e), &e, "nv"));
+    return 0;
+}
+
+/* the utilities, readers and writers of gw_common.h and the models' readers
+ * and frees: NULL refused (GW_EINVAL naming it) or ignored, never followed */
+static int utilities_nulls(void)
+{
+    gw_err e = {{0}};
+    double d = 0, *v = NULL;
+    int n = 0;
+    EXPECT(refused(gw_parse_double("1", "x", NULL, &e), &e, "out is NULL"));
+    EXPECT(refused(gw_parse_double(NULL, "x", &d, &e), &e, "x: expected a number"));
+    EXPECT(refused(gw_parse_double_list("1,2", "x", NULL, &n, &e), &e, "out is NULL"));
+    EXPECT(gw_str_trim(NULL) == NULL && gw_parse_flag(NULL) == -1);
+    EXPECT(gw_fnv1a64(GW_FNV1A64_INIT, NULL, 10) == GW_FNV1A64_INIT);
+    EXPECT(refused(gw_afile_open(NULL, "/tmp/x", &e), &e, "f is NULL"));
+    gw_afile f;
+    EXPECT(refused(gw_afile_open(&f, NULL, &e), &e, "path is NULL"));
+    EXPECT(refused(gw_afile_commit(NULL, &e), &e, "f is NULL"));
+    gw_afile_abort(NULL);
+    gw_outset os;
+    EXPECT(refused(gw_outset_begin(NULL, "/tmp", NULL, &e), &e, "s is NULL"));
+    EXPECT(refused(gw_outset_begin(&os, NULL, NULL, &e), &e, "dir is NULL"));
+    EXPECT(refused(gw_outset_commit(NULL, &e), &e, "s is NULL"));
+    gw_outset_abort(NULL);
+    EXPECT(refused(gw_input_read("/dev/null", "x", 10, NULL, NULL, &e), &e, "out is NULL"));
+    EXPECT(refused(gw_write_text(NULL, "x", &e), &e, "path is NULL"));
+    EXPECT(refused(gw_write_text("/tmp/gw_hostile_api_never", NULL, &e), &e, "text is NULL"));
+    EXPECT(access("/tmp/gw_hostile_api_never", F_OK) != 0); /* nothing written */
+    EXPECT(refused(gw_mkdir_p(NULL, &e), &e, "path is NULL"));
+    gw_write_comment(NULL, "x");
+    gw_path_parent(NULL);
+    gw_linfit fit;
+    double x[3] = {1, 2, 3};
+    EXPECT(gw_fit_linear(NULL, x, 3, &fit) == GW_EINVAL && gw_fit_linear(x, x, 3, NULL) == GW_EINVAL);
+    EXPECT(gw_fit_linear(x, x, -5, &fit) == GW_EINVAL);
+    EXPECT(gw_json_doubles(NULL, 5) == NULL);
+    gw_layer *L = (gw_layer *)&L;
+    EXPECT(refused(gw_layer_create(NULL, 3, NULL, &L, &e), &e, "p is NULL") && L == NULL);
+    EXPECT(refused(gw_layer_sample_read(NULL, NULL, &e), &e, "is NULL"));
+    EXPECT(refused(gw_stats_table_read(NULL, NULL, &e), &e, "is NULL"));
+    gw_sweep_config cfg;
+    const gw_sweep_model *m = NULL;
+    EXPECT(refused(gw_sweep_config_read_string(NULL, "x", NULL, 0, &cfg, &m, &e), &e, "text is NULL"));
+    EXPECT(refused(gw_sweep_config_read(NULL, NULL, 0, NULL, NULL, &e), &e, "cfg is NULL"));
+    gw_layer_free(NULL);
+    gw_layer_sample_free(NULL);
+    gw_layer_impact_result_free(NULL);
+    gw_layer_impact_plan_free(NULL);
+    gw_stats_table_free(NULL);
+    gw_stats_analysis_free(NULL);
+    gw_stats_groups_free(NULL);
+    gw_stats_diagram_free(NULL);
+    gw_sweep_config_free(NULL);
+    gw_chain_trace_free(NULL);
+    gw_chain_disp_result_free(NULL);
+    gw_chain_drop_result_free(NULL);
+    gw_chain_spectrum_free(NULL);
+    gw_chain_resolved_free(NULL);
+    gw_solver_free(NULL);
+    gw_layer_law_free(NULL);
+    (void)v;
+    return 0;
+}
+
+static int case_ok(void *ctx, long k, gw_err *err)
+{
+    (void)ctx;
+    (void)k;
+    (void)err;
+    return GW_OK;
+}
+
+static int stop_at_once(void *ctx, long done, long total)
+{
+    (void)done;
+    (void)total;
+    ++*(int *)ctx;
+    return 1;
+}
+
+static int pool_hostile(void)
+{
+    gw_err e = {{0}};
+    EXPECT(refused(gw_cases_run(3, 1, NULL, NULL, NULL, NULL, &e), &e, "fn is NULL"));
+    EXPECT(gw_cases_run(0, 1, NULL, NULL, NULL, NULL, &e) == GW_OK);   /* nothing to run */
+    EXPECT(gw_cases_run(-5, -7, case_ok, NULL, NULL, NULL, &e) == GW_OK);
+    int calls = 0; /* a huge set stopped by its first progress call: returns at once */
+    EXPECT(gw_cases_run(1L << 62, 2, case_ok, NULL, stop_at_once, &calls, &e) == GW_ECANCELED);
+    EXPECT(calls == 1);
+    EXPECT(gw_cases_run(10, -1000000, case_ok, NULL, NULL, NULL, &e) == GW_OK);
+    EXPECT(gw_cases_run(10, 1 << 30, case_ok, NULL, NULL, NULL, NULL) == GW_OK);
+    return 0;
+}
+
+/* ---- real runs: freed twice, reused, progress that re-enters or stops ---- */
+
+static int set(const gw_study *s, void *p, const char *k, const char *v)
+{
+    gw_err e = {{0}};
+    int rc = gw_param_set(s->params(), p, k, v, &e);
+    if (rc != GW_OK)
+        printf("%s %s=%s: %s\n", s->name, k, v, e.msg);
+    return rc;
+}
+
+static double chain_fmax(int n)
+{
+    const gw_study *c = gw_study_find("chain");
+    gw_chain_setup s;
+    gw_chain_collision o;
+    char nb[16];
+    snprintf(nb, sizeof nb, "%d", n);
+    double f = NAN;
+    if (c->init(&s) == GW_OK && set(c, &s, "n", nb) == GW_OK && c->run(&s, &o, NULL, NULL, NULL) == GW_OK)
+        f = o.r.f_max;
+    c->free_out(&o);
+    c->clear(&s);
+    return f;
+}
+
+static int reentered;
+static double reentered_fmax;
+
+static int progress_reenters(void *ctx, long done, long total)
+{
+    (void)ctx;
+    (void)done;
+    (void)total;
+    reentered++;
+    reentered_fmax = chain_fmax(2);
+    return 0;
+}
+
+static int runs_reused(void)
+{
+    const gw_study *f = gw_study_find("falcon");
+    gw_chain_falcon_setup s;
+    gw_chain_falcon_outcome o, o2;
+    EXPECT(f->init(&s) == GW_OK);
+    EXPECT(set(f, &s, "n", "1:3") == GW_OK && set(f, &s, "vimp", "0.3") == GW_OK &&
+           set(f, &s, "heights", "none") == GW_OK);
+    gw_err e = {{0}};
+    EXPECT(f->run(&s, &o, progress_reenters, NULL, &e) == GW_OK);
+    EXPECT(reentered == 3);                           /* once per column */
+    EXPECT(reentered_fmax == chain_fmax(2));          /* the nested call's answer is the plain one */
+    f->free_out(&o);
+    f->free_out(&o);                                  /* freed twice */
+    EXPECT(f->run(&s, &o, NULL, NULL, &e) == GW_OK);  /* the freed struct reused */
+    EXPECT(f->run(&s, &o2, NULL, NULL, &e) == GW_OK);
+    EXPECT(o.f_max_mean[0] == o2.f_max_mean[0]);      /* same answer both times */
+    f->free_out(&o);
+    f->free_out(&o2);
+    int calls = 0;
+    EXPECT(f->run(&s, &o, stop_at_once, &calls, &e) == GW_ECANCELED && calls == 1 && strstr(e.msg, "canceled"));
+    f->free_out(&o);
+    f->clear(&s);
+    return 0;
+}
+
+/* ---- threads: the same studies at once give the answers of one at a time ---- */
+
+static double serial_f[8];
+
+static void *thread_run(void *arg)
+{
+    long k = (long)arg;
+    double *f = malloc(sizeof *f);
+    *f = chain_fmax(1 + (int)(k % 8));
+    return f;
+}
+
+/* one gw_chain (const) shared by threads: each gw_chain_collide has its own solver */
+static gw_chain *shared_chain;
+
+static void *thread_collide(void *arg)
+{
+    (void)arg;
+    gw_chain_run_opts o = gw_chain_run_opts_default();
+    gw_chain_result r;
+    double *f = malloc(sizeof *f);
+    *f = gw_chain_collide(shared_chain, &o, &r, NULL) == GW_OK ? r.f_max : NAN;
+    gw_chain_result_free(&r);
+    return f;
+}
+
+static int threads_agree(void)
+{
+    for (int k = 0; k < 8; k++)
+        serial_f[k] = chain_fmax(1 + k);
+    enum { NT = 16 };
+    pthread_t t[NT];
+    for (long k = 0; k < NT; k++)
+        EXPECT(pthread_create(&t[k], NULL, thread_run, (void *)k) == 0);
+    int same = 1;
+    for (long k = 0; k < NT; k++) {
+        void *r = NULL;
+        pthread_join(t[k], &r);
+        same = same && r && *(double *)r == serial_f[k % 8] && serial_f[k % 8] > 0;
+        free(r);
+    }
+    EXPECT(same);
+    gw_chain_params p = gw_chain_params_default();
+    p.n = 6;
+    EXPECT(gw_chain_create(&p, &shared_chain, NULL) == GW_OK);
+    double *alone = thread_collide(NULL);
+    for (long k = 0; k < NT; k++)
+        EXPECT(pthread_create(&t[k], NULL, thread_collide, NULL) == 0);
+    for (long k = 0; k < NT; k++) {
+        void *r = NULL;
+        pthread_join(t[k], &r);
+        same = same && r && *(double *)r == *alone && *alone > 0;
+        free(r);
+    }
+    free(alone);
+    gw_chain_free(shared_chain);
+    EXPECT(same);
+    return 0;
+}
+
+int main(void)
+{
+    static const struct {
+        const char *name;
+        case_fn fn;
+    } per_study[] = {{"init/clear/free_out(NULL)", study_null_init},
+                     {"run(NULL)", study_null_run},
+                     {"zeroed setup and result", study_zeroed},
+                     {"init, clear twice, init", study_reinit}};
+    for (int i = 0; i < gw_study_count(); i++) {
+        cur = gw_study_get(i);
+        for (size_t k = 0; k < sizeof per_study / sizeof per_study[0]; k++) {
+            char label[128];
+            snprintf(label, sizeof label, "%s: %s", cur->name, per_study[k].name);
+            in_child(label, per_study[k].fn);
+        }
+    }
+    in_child("gw_param_* with NULL", param_nulls);
+    in_child("a list filled by hand", param_list_by_hand);
+    in_child("the index and the sweep in memory with NULL", index_nulls);
+    in_child("gw_chain_create/collide/sweep with NULL", chain_model_nulls);
+    in_child("gw_cases_run hostile sizes", pool_hostile);
+    in_child("utilities, readers and frees with NULL", utilities_nulls);
+    in_child("runs freed twice, reused, re-entered, stopped", runs_reused);
+    in_child("16 threads", threads_agree);
+    printf("%d of %d checks failed\n", nfail, ncases);
+    return nfail != 0;
+}

@@ -38,6 +38,7 @@
 #include "chain_restitution.h"
 #include "gw_chain.h"
 #include "gw_global.h"
+#include "gw_locale.h"
 
 typedef struct calib {
     gw_chain_params bead; /* the one-bead problem, constant 0 */
@@ -238,7 +239,7 @@ static int calib_failed(const calib *cb, gw_err *err)
     if (cb->rc == GW_EINVAL) /* a bound of the run's plan, naming its input (dt-max, dt-out) */
         return cb->rc;
     char tmp[sizeof err->msg];
-    snprintf(tmp, sizeof tmp, "%s", err->msg);
+    gw_snprintf(tmp, sizeof tmp, "%s", err->msg);
     return gw_err_set(err, cb->rc, "restitution: calibrating the damping on one bead at %g m/s: %s", cb->bead.v_imp,
                       tmp);
 }

@@ -22,7 +22,7 @@ for f in lib/libgranwave.so lib/libgranwave.a lib/pkgconfig/granwave.pc include/
          include/granwave/gw_version.h lib/cmake/granwave/granwaveConfig.cmake; do
     [ -e "$p/$f" ] || fail "not installed: $f"
 done
-[ -x "$p/bin/granwave" ] && "$p/bin/granwave" version | grep -q "$version" || fail "the program bin/granwave"
+[ -x "$p/bin/granwave" ] && grep -q "$version" <<<"$("$p/bin/granwave" version)" || fail "the program bin/granwave"
 echo "PASS: library, headers, granwave.pc, the CMake package and the program installed"
 
 major=${version%%.*}

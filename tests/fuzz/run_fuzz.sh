@@ -14,7 +14,7 @@ SRC=$(cd "$1" && pwd); B=$(cd "$2" && pwd); T=${3:-10}
 if ! command -v clang >/dev/null; then echo "SKIP: clang not installed"; exit 0; fi
 out="$B/fuzz"; mkdir -p "$out"
 CF="-g -O1 -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=undefined -I$SRC/common -I$SRC/app -I$SRC/common/solver -I$SRC/common/sweep -I$SRC/common/stats -I$B/generated -D_DEFAULT_SOURCE"
-common="$SRC/common/gw_common.c $SRC/common/gw_io.c $SRC/app/gw_cli.c $SRC/common/gw_json.c $SRC/common/gw_param.c"
+common="$SRC/common/gw_common.c $SRC/common/gw_io.c $SRC/app/gw_cli.c $SRC/common/gw_json.c $SRC/common/gw_param.c $SRC/common/gw_locale.c"
 clang $CF -o "$out/fuzz_sweep_config" "$SRC/tests/fuzz/fuzz_sweep_config.c" "$SRC/common/sweep/gw_sweep.c" $common -linih -lcjson -lm
 clang $CF -o "$out/fuzz_cli" "$SRC/tests/fuzz/fuzz_cli.c" $common -lcjson -lm
 # the sweep journal a resumed sweep reads back, and the table written from it
@@ -47,7 +47,7 @@ fi
 # cannot share a process with clang's: skipped there (and without the library).
 if [ -f "$B/lib/libgranwave.so" ] && ! grep -q '^GW_SANITIZE:BOOL=ON' "$B/CMakeCache.txt" 2>/dev/null; then
     clang $CF -I"$SRC/app/lib" -I"$SRC/chain" -I"$SRC/layer" -o "$out/fuzz_params" "$SRC/tests/fuzz/fuzz_params.c" \
-        "$SRC/common/gw_param.c" "$SRC/common/gw_common.c" "$SRC/common/gw_json.c" -L"$B/lib" -lgranwave \
+        "$SRC/common/gw_param.c" "$SRC/common/gw_common.c" "$SRC/common/gw_json.c" "$SRC/common/gw_locale.c" -L"$B/lib" -lgranwave \
         -Wl,-rpath,"$B/lib" -lcjson -lm
     targets="$targets params"
 else

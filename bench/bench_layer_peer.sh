@@ -13,7 +13,9 @@
 #           simulates granwave's t_end of the same repetition (plus at most
 #           2 ms to settle the outcome with granwave's stopping rule);
 #        3. R_b = 3 R_m, both over 0.1 s (granwave --t-max 0.1 --full);
-#      CPU time (user + sys, /usr/bin/time) of each process;
+#      CPU time (user + sys) of each process and the processes it waited for,
+#      from getrusage(RUSAGE_CHILDREN) in microseconds (cpu_run below;
+#      /usr/bin/time's 10 ms steps are 10 % of granwave's 0.1 s runs);
 #   d. bench_dem_min (velocity Verlet at 1e-5 s and RK4 at 1e-6 s, ns per
 #      disc-step, fixed contact list);
 #   e. a table: median CPU s, ratio granwave / LAMMPS, cost per disc-step
@@ -72,10 +74,19 @@ echo "                    (T_END = granwave's t_end of the same repetition)"
 echo "   granwave case 3: $GW ${gw_args_3[*]} ${gwflags[*]:-}"
 echo "   lammps   case 3: $PY bench/peer_lammps_layer.py --lmp $LMP --sample $S --rb-rm 3 --t-end 0.1 --full"
 rm -f "$W"/gw_*.json "$W"/lmp_*.txt "$W"/*.rus
+# cpu_run FILE CMD...: run CMD (stdout and stderr as given) and write its user
+# and system CPU seconds to FILE
+cpu_run() {
+    "$PY" -c 'import resource, subprocess, sys
+rc = subprocess.run(sys.argv[2:]).returncode
+u = resource.getrusage(resource.RUSAGE_CHILDREN)
+open(sys.argv[1], "w").write("%.6f %.6f\n" % (u.ru_utime, u.ru_stime))
+sys.exit(rc)' "$@"
+}
 for rep in $(seq 1 "$REPS"); do
     for c in 1 3; do
         if [ "$c" = 1 ]; then args=("${gw_args_1[@]}"); else args=("${gw_args_3[@]}"); fi
-        /usr/bin/time -f "%U %S" -o "$W/gw_${c}_$rep.rus" "$GW" "${args[@]}" "${gwflags[@]}" \
+        cpu_run "$W/gw_${c}_$rep.rus" "$GW" "${args[@]}" "${gwflags[@]}" \
             >"$W/gw_${c}_$rep.json"
         if [ "$c" = 1 ]; then
             tend=$("$PY" -c "import json, sys; print(json.load(open(sys.argv[1]))['t_end'])" "$W/gw_1_$rep.json")
@@ -83,7 +94,7 @@ for rep in $(seq 1 "$REPS"); do
         else
             largs=(--rb-rm 3 --t-end 0.1 --full)
         fi
-        /usr/bin/time -f "%U %S" -o "$W/lmp_${c}_$rep.rus" "$PY" bench/peer_lammps_layer.py --lmp "$LMP" \
+        cpu_run "$W/lmp_${c}_$rep.rus" "$PY" bench/peer_lammps_layer.py --lmp "$LMP" \
             --sample "$S" "${largs[@]}" >"$W/lmp_${c}_$rep.txt"
         echo "   rep $rep case $c: granwave $(awk '{print $1 + $2}' "$W/gw_${c}_$rep.rus") s CPU," \
              "lammps $(awk '{print $1 + $2}' "$W/lmp_${c}_$rep.rus") s CPU"

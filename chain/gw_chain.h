@@ -17,14 +17,9 @@
 #include "gw_common.h"
 #include "gw_solver.h"
 
-/* C++ callers link the C symbols; the declarations below are the library's
- * exported interface (everything else in libgranwave.so is hidden). */
-#ifdef __cplusplus
-extern "C" {
-#endif
-#if defined(__GNUC__)
-#pragma GCC visibility push(default)
-#endif
+#include "gw_api.h"
+
+GW_BEGIN_DECLS /* the exported interface, C linkage (gw_api.h) */
 
 /* ---- materials and closed forms (docs/physics.md 1.2, 1.3) ---- */
 
@@ -725,11 +720,6 @@ void gw_chain_drop_result_free(gw_chain_drop_result *r);
 struct gw_sweep_model;
 extern const struct gw_sweep_model gw_chain_sweep_model;
 
-#if defined(__GNUC__)
-#pragma GCC visibility pop
-#endif
-#ifdef __cplusplus
-}
-#endif
+GW_END_DECLS
 
 #endif

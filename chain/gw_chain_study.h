@@ -22,14 +22,9 @@
 #include "gw_chain.h"
 #include "gw_param.h"
 
-/* C++ callers link the C symbols; the declarations below are the library's
- * exported interface (everything else in libgranwave.so is hidden). */
-#ifdef __cplusplus
-extern "C" {
-#endif
-#if defined(__GNUC__)
-#pragma GCC visibility push(default)
-#endif
+#include "gw_api.h"
+
+GW_BEGIN_DECLS /* the exported interface, C linkage (gw_api.h) */
 
 /* Accepted Hertz coefficients, N/m^1.5: the stiffest real contact (diamond on
  * diamond, R = 1 m) has k ~ 1e12, the softest sheet of Table 2 K_eff ~ 1e6. */
@@ -434,11 +429,6 @@ int gw_chain_drop_study_run(const gw_chain_drop_setup *s, gw_progress_fn progres
                             gw_chain_drop_outcome *out, gw_err *err);
 void gw_chain_drop_outcome_free(gw_chain_drop_outcome *out);
 
-#if defined(__GNUC__)
-#pragma GCC visibility pop
-#endif
-#ifdef __cplusplus
-}
-#endif
+GW_END_DECLS
 
 #endif

@@ -16,14 +16,9 @@
 
 #include "gw_version.h"
 
-/* C++ callers link the C symbols; the declarations below are the library's
- * exported interface (everything else in libgranwave.so is hidden). */
-#ifdef __cplusplus
-extern "C" {
-#endif
-#if defined(__GNUC__)
-#pragma GCC visibility push(default)
-#endif
+#include "gw_api.h"
+
+GW_BEGIN_DECLS /* the exported interface, C linkage (gw_api.h) */
 
 enum {
     GW_OK = 0,
@@ -310,11 +305,6 @@ int gw_json_print(const cJSON *o, FILE *fp);
 /* Write o to path atomically. */
 int gw_json_write(const char *path, const cJSON *o, gw_err *err);
 
-#if defined(__GNUC__)
-#pragma GCC visibility pop
-#endif
-#ifdef __cplusplus
-}
-#endif
+GW_END_DECLS
 
 #endif

@@ -24,14 +24,9 @@
 
 #include "gw_common.h"
 
-/* C++ callers link the C symbols; the declarations below are the library's
- * exported interface (everything else in libgranwave.so is hidden). */
-#ifdef __cplusplus
-extern "C" {
-#endif
-#if defined(__GNUC__)
-#pragma GCC visibility push(default)
-#endif
+#include "gw_api.h"
+
+GW_BEGIN_DECLS /* the exported interface, C linkage (gw_api.h) */
 
 typedef enum gw_param_type {
     GW_PARAM_DOUBLE = 0, /* double; NaN = not given (when the row has no default) */
@@ -153,11 +148,6 @@ int gw_param_copy(const gw_param *t, size_t size, void *dst, const void *src, gw
      .help = hl}
 #define GW_PARAM_END {0}
 
-#if defined(__GNUC__)
-#pragma GCC visibility pop
-#endif
-#ifdef __cplusplus
-}
-#endif
+GW_END_DECLS
 
 #endif

@@ -11,14 +11,9 @@
 
 #include "gw_common.h"
 
-/* C++ callers link the C symbols; the declarations below are the library's
- * exported interface (everything else in libgranwave.so is hidden). */
-#ifdef __cplusplus
-extern "C" {
-#endif
-#if defined(__GNUC__)
-#pragma GCC visibility push(default)
-#endif
+#include "gw_api.h"
+
+GW_BEGIN_DECLS /* the exported interface, C linkage (gw_api.h) */
 
 /* One case k of a set; GW_OK or a status with a message in err. Called from
  * any of the pool's threads, several cases at a time: a case must not write
@@ -40,11 +35,6 @@ typedef int (*gw_case_fn)(void *ctx, long k, gw_err *err);
 int gw_cases_run(long n, int jobs, gw_case_fn fn, void *ctx, gw_progress_fn progress, void *pctx,
                  gw_err *err);
 
-#if defined(__GNUC__)
-#pragma GCC visibility pop
-#endif
-#ifdef __cplusplus
-}
-#endif
+GW_END_DECLS
 
 #endif

@@ -25,14 +25,9 @@
 #include "gw_common.h"
 #include "gw_solver.h"
 
-/* C++ callers link the C symbols; the declarations below are the library's
- * exported interface (everything else in libgranwave.so is hidden). */
-#ifdef __cplusplus
-extern "C" {
-#endif
-#if defined(__GNUC__)
-#pragma GCC visibility push(default)
-#endif
+#include "gw_api.h"
+
+GW_BEGIN_DECLS /* the exported interface, C linkage (gw_api.h) */
 
 /* ---------------------------------------------------------------- model ---- */
 
@@ -586,11 +581,6 @@ struct gw_sweep_model;
 extern const struct gw_sweep_model gw_layer_sweep_model;
 #define GW_LAYER_SWEEP_MODEL gw_layer_sweep_model
 
-#if defined(__GNUC__)
-#pragma GCC visibility pop
-#endif
-#ifdef __cplusplus
-}
-#endif
+GW_END_DECLS
 
 #endif

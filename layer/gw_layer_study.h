@@ -26,14 +26,9 @@
 #include "gw_layer.h"
 #include "gw_param.h"
 
-/* C++ callers link the C symbols; the declarations below are the library's
- * exported interface (everything else in libgranwave.so is hidden). */
-#ifdef __cplusplus
-extern "C" {
-#endif
-#if defined(__GNUC__)
-#pragma GCC visibility push(default)
-#endif
+#include "gw_api.h"
+
+GW_BEGIN_DECLS /* the exported interface, C linkage (gw_api.h) */
 
 typedef struct gw_layer_impact_setup {
     char *sample;          /* sample file from layer-make (required), owned */
@@ -203,11 +198,6 @@ int gw_layer_make_run_progress(const gw_layer_make_setup *s, gw_progress_fn prog
 int gw_layer_make_plan(const gw_layer_make_setup *s, gw_layer_params *lp, gw_layer_make_params *mp, gw_err *err);
 void gw_layer_make_outcome_free(gw_layer_make_outcome *out);
 
-#if defined(__GNUC__)
-#pragma GCC visibility pop
-#endif
-#ifdef __cplusplus
-}
-#endif
+GW_END_DECLS
 
 #endif

@@ -25,14 +25,9 @@
 #include "gw_param.h"
 #include "gw_sweep.h"
 
-/* C++ callers link the C symbols; the declarations below are the library's
- * exported interface (everything else in libgranwave.so is hidden). */
-#ifdef __cplusplus
-extern "C" {
-#endif
-#if defined(__GNUC__)
-#pragma GCC visibility push(default)
-#endif
+#include "gw_api.h"
+
+GW_BEGIN_DECLS /* the exported interface, C linkage (gw_api.h) */
 
 typedef struct gw_study {
     const char *name;        /* the program's command ("chain", "layer-impact") */
@@ -74,11 +69,6 @@ void gw_free(void *p);
 size_t gw_param_row_size(void);
 size_t gw_study_size(void);
 
-#if defined(__GNUC__)
-#pragma GCC visibility pop
-#endif
-#ifdef __cplusplus
-}
-#endif
+GW_END_DECLS
 
 #endif

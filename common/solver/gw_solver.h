@@ -19,14 +19,9 @@
 
 #include "gw_common.h"
 
-/* C++ callers link the C symbols; the declarations below are the library's
- * exported interface (everything else in libgranwave.so is hidden). */
-#ifdef __cplusplus
-extern "C" {
-#endif
-#if defined(__GNUC__)
-#pragma GCC visibility push(default)
-#endif
+#include "gw_api.h"
+
+GW_BEGIN_DECLS /* the exported interface, C linkage (gw_api.h) */
 
 /* Right-hand side dy/dt = f(t, y). Return 0 on success, > 0 for a recoverable
  * failure (the adaptive backends retry with a smaller step), < 0 to stop. */
@@ -230,11 +225,6 @@ const gw_solver_type *gw_solver_get_type(const gw_solver *s);
 /* Free; NULL is a no-op. */
 void gw_solver_free(gw_solver *s);
 
-#if defined(__GNUC__)
-#pragma GCC visibility pop
-#endif
-#ifdef __cplusplus
-}
-#endif
+GW_END_DECLS
 
 #endif

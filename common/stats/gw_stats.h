@@ -29,14 +29,9 @@
 #include "gw_common.h"
 #include "gw_param.h"
 
-/* C++ callers link the C symbols; the declarations below are the library's
- * exported interface (everything else in libgranwave.so is hidden). */
-#ifdef __cplusplus
-extern "C" {
-#endif
-#if defined(__GNUC__)
-#pragma GCC visibility push(default)
-#endif
+#include "gw_api.h"
+
+GW_BEGIN_DECLS /* the exported interface, C linkage (gw_api.h) */
 
 #define GW_STATS_MAX_KEYS 32
 
@@ -420,11 +415,6 @@ const gw_param *gw_stats_outcome_fields(void);
 int gw_stats_run(const gw_stats_setup *s, gw_stats_outcome *out, gw_err *err);
 void gw_stats_outcome_free(gw_stats_outcome *out);
 
-#if defined(__GNUC__)
-#pragma GCC visibility pop
-#endif
-#ifdef __cplusplus
-}
-#endif
+GW_END_DECLS
 
 #endif

@@ -22,14 +22,9 @@
 #include "gw_common.h"
 #include "gw_pool.h"
 
-/* C++ callers link the C symbols; the declarations below are the library's
- * exported interface (everything else in libgranwave.so is hidden). */
-#ifdef __cplusplus
-extern "C" {
-#endif
-#if defined(__GNUC__)
-#pragma GCC visibility push(default)
-#endif
+#include "gw_api.h"
+
+GW_BEGIN_DECLS /* the exported interface, C linkage (gw_api.h) */
 
 #define GW_SWEEP_MAX_KEYS 32
 #define GW_SWEEP_CONFIG_MAX (1L << 20) /* bytes: a config is read whole, bounded */
@@ -211,11 +206,6 @@ int gw_sweep_size_check(const gw_sweep_config *cfg, const gw_sweep_model *m, gw_
 int gw_sweep_run(const gw_sweep_config *cfg, const gw_sweep_model *m, int jobs, gw_progress_fn progress,
                  void *pctx, double *values, gw_err *err);
 
-#if defined(__GNUC__)
-#pragma GCC visibility pop
-#endif
-#ifdef __cplusplus
-}
-#endif
+GW_END_DECLS
 
 #endif

@@ -116,9 +116,10 @@ int main(void)
     /* every input of the one-bead run, changed alone */
     variant in[20];
     int nin = 0;
-#define IN(WHAT, STMT)                                                                                                 \
+/* one variant of the base inputs, appended to ARR[N++] */
+#define VARIANT(ARR, N, WHAT, STMT)                                                                                    \
     do {                                                                                                               \
-        variant *v = &in[nin++];                                                                                       \
+        variant *v = &ARR[N++];                                                                                        \
         v->what = WHAT;                                                                                                \
         v->p = p0;                                                                                                     \
         v->o = o0;                                                                                                     \
@@ -128,6 +129,7 @@ int main(void)
         (void)p, (void)o;                                                                                              \
         STMT;                                                                                                          \
     } while (0)
+#define IN(WHAT, STMT) VARIANT(in, nin, WHAT, STMT)
     IN("target", v->e = 0.9000001);
     IN("damping model", p->damping = GW_DAMP_HUNT_CROSSLEY);
     IN("speed", p->v_imp *= 1.0000001);
@@ -169,18 +171,7 @@ int main(void)
     double y0[11] = {1e-6, 0.1, 0, 0.3, 0, 0.3, 0, 0.3, 0, 0.3, 0};
     variant col[16];
     int ncol = 0;
-#define COL(WHAT, STMT)                                                                                                \
-    do {                                                                                                               \
-        variant *v = &col[ncol++];                                                                                     \
-        v->what = WHAT;                                                                                                \
-        v->p = p0;                                                                                                     \
-        v->o = o0;                                                                                                     \
-        v->e = 0.9;                                                                                                    \
-        gw_chain_params *p = &v->p;                                                                                    \
-        gw_chain_run_opts *o = &v->o;                                                                                  \
-        (void)p, (void)o;                                                                                              \
-        STMT;                                                                                                          \
-    } while (0)
+#define COL(WHAT, STMT) VARIANT(col, ncol, WHAT, STMT)
     COL("n = 5", p->n = 5);
     COL("per-bead masses", (p->n = 5, p->masses = masses));
     COL("a viscoelastic wall", p->wall.loss = 0.1);

@@ -332,6 +332,11 @@ static int text_header(text_in *t, gw_layer_sample *s, long *n, int *version, gw
     if (rc <= 0)
         return rc < 0 ? rc : gw_err_set(err, GW_EFORMAT, "sample '%s': empty file, not a granwave layer sample",
                                         t->path);
+    /* a UTF-8 byte-order mark (an editor's "save as UTF-8"): skipped, as
+     * layer-stats does with its tables; it was refused as "not a granwave layer
+     * sample" without a word on the mark */
+    if (strncmp(t->buf, "\xEF\xBB\xBF", 3) == 0)
+        memmove(t->buf, t->buf + 3, strlen(t->buf + 3) + 1);
     int k = split(t->buf, tok, 2);
     if (strcmp(tok[0], SAMPLE_MAGIC) != 0)
         return gw_err_set(err, GW_EFORMAT, "sample '%s': line %ld: not a granwave layer sample (expected '"

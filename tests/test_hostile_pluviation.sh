@@ -151,5 +151,17 @@ PY
     fi
 done
 
+# --- a sample saved with a UTF-8 byte-order mark (an editor's "save as UTF-8")
+# was refused as "not a granwave layer sample"; it reads as the same sample
+"$GW" layer-make --n 30 --out "$tmp/b0.txt" >/dev/null 2>&1 || ko "layer-make for the byte-order-mark check"
+{ printf '\xEF\xBB\xBF'; cat "$tmp/b0.txt"; } >"$tmp/bom.txt"
+"$GW" layer-impact --sample "$tmp/b0.txt" --vi 5 --t-max 0.01 --json 2>/dev/null | grep -v '"sample\|wall_time' >"$tmp/b0.json"
+"$GW" layer-impact --sample "$tmp/bom.txt" --vi 5 --t-max 0.01 --json 2>"$tmp/stderr" | grep -v '"sample\|wall_time' >"$tmp/b1.json"
+if [ -s "$tmp/b0.json" ] && cmp -s "$tmp/b0.json" "$tmp/b1.json"; then
+    ok "a sample with a byte-order mark reads as the same sample (the same JSON but its name, hash and wall time)"
+else
+    ko "a sample with a byte-order mark: $(head -c 300 "$tmp/stderr")"
+fi
+
 echo "test_hostile_pluviation: $passes passed, $fails failed"
 [ "$fails" -eq 0 ]

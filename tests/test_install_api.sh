@@ -13,7 +13,13 @@
 #  4. a C++17 program (tests/install/cxx) links and runs, with pkg-config and
 #     with find_package(granwave); without extern "C" it did not link;
 #  5. tests/test_hostile_api.c, built as an outside C11 program against the
-#     installed headers and library (pkg-config), passes.
+#     installed headers and library (pkg-config), passes;
+#  6. libgranwave.a defines as global exactly the symbols libgranwave.so
+#     exports, each once (its internal helpers are local: before, 433 globals
+#     where the .so exports 342), and tests/install/own_names.c, which defines
+#     its own chain_blown_up, chain_steps_check, gw_sun_rhs and layer_snapshot,
+#     links statically against it and runs N = 1 against F.13 (before: multiple
+#     definition of chain_blown_up).
 set -euo pipefail
 build=$(cd "$1" && pwd)
 src=$(cd "$2" && pwd)
@@ -82,3 +88,21 @@ cc -std=c11 -Wall -Wextra -pedantic -Werror "$src/tests/test_hostile_api.c" $(pk
     -lpthread -Wl,-rpath,"$p/lib" -o "$tmp/hostile" || fail "test_hostile_api.c against the installed library"
 "$tmp/hostile" > "$tmp/hostile.log" || { cat "$tmp/hostile.log"; fail "test_hostile_api against the installed library"; }
 echo "PASS: test_hostile_api against the installed library: $(tail -1 "$tmp/hostile.log")"
+
+# 6. the static archive: the same global symbols as the shared library, and a
+# program with its own functions under the library's internal names
+nm --defined-only --extern-only "$p/lib/libgranwave.a" | awk 'NF == 3 {print $3}' | sort > "$tmp/a_all"
+[ "$(wc -l < "$tmp/a_all")" -gt 300 ] || fail "only $(wc -l < "$tmp/a_all") global symbols in libgranwave.a (the check is broken)"
+twice=$(uniq -d "$tmp/a_all")
+[ -z "$twice" ] || fail "defined by several members of libgranwave.a: $(tr '\n' ' ' <<< "$twice" | cut -c1-400)"
+leaked=$(comm -23 "$tmp/a_all" "$tmp/exported")
+[ -z "$leaked" ] || fail "global in libgranwave.a but not exported by libgranwave.so ($(echo "$leaked" | wc -l)): $(tr '\n' ' ' <<< "$leaked" | cut -c1-400)"
+missing=$(comm -13 "$tmp/a_all" "$tmp/exported")
+[ -z "$missing" ] || fail "exported by libgranwave.so but not global in libgranwave.a: $(tr '\n' ' ' <<< "$missing" | cut -c1-400)"
+echo "PASS: libgranwave.a defines as global exactly the $(wc -l < "$tmp/a_all") symbols libgranwave.so exports"
+static_libs=$(pkg-config --static --libs granwave | sed 's/-lgranwave//')
+# shellcheck disable=SC2046,SC2086
+cc -std=c11 -Wall -Wextra -pedantic -Werror "$src/tests/install/own_names.c" $(pkg-config --cflags granwave) \
+    "$p/lib/libgranwave.a" $static_libs -o "$tmp/own_names" || fail "own_names.c (the library's internal names) against libgranwave.a"
+"$tmp/own_names" > "$tmp/own.log" || { cat "$tmp/own.log"; fail "own_names against libgranwave.a"; }
+echo "PASS: a program with its own chain_blown_up, chain_steps_check, gw_sun_rhs, layer_snapshot links libgranwave.a statically: $(grep -c PASS "$tmp/own.log") checks"

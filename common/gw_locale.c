@@ -59,17 +59,6 @@ int gw_snprintf(char *buf, size_t n, const char *fmt, ...)
     return k;
 }
 
-int gw_sprintf(char *buf, const char *fmt, ...)
-{
-    va_list ap;
-    va_start(ap, fmt);
-    locale_t old = enter();
-    int k = vsprintf(buf, fmt, ap);
-    leave(old);
-    va_end(ap);
-    return k;
-}
-
 int gw_fprintf(FILE *fp, const char *fmt, ...)
 {
     va_list ap;

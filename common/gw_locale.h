@@ -23,11 +23,10 @@
 
 /* strtod in the "C" locale */
 double gw_strtod(const char *s, char **end);
-/* snprintf, vsnprintf, fprintf, sprintf in the "C" locale */
+/* snprintf, vsnprintf, fprintf in the "C" locale (no unbounded sprintf) */
 int gw_snprintf(char *buf, size_t n, const char *fmt, ...) GW_FMT(3, 4);
 int gw_vsnprintf(char *buf, size_t n, const char *fmt, va_list ap) GW_FMT(3, 0);
 int gw_fprintf(FILE *fp, const char *fmt, ...) GW_FMT(2, 3);
-int gw_sprintf(char *buf, const char *fmt, ...) GW_FMT(2, 3);
 
 /* The permissions of a file the library creates in place of `replaces`: the
  * replaced regular file's, or 0666 less the process's umask (what a shell's >

@@ -1075,16 +1075,17 @@ static char *row_key_string(const gw_stats_table *t, const gw_stats_groups *gs, 
     size_t len = 1;
     for (int k = 0; k < gs->nkeys; k++)
         len += strlen(t->grid_value[r * t->ngrid + gs->key[k]]) + 32;
-    char *s = malloc(len), *p = s;
+    char *s = malloc(len);
+    size_t used = 0;
     for (int k = 0; s && k < gs->nkeys; k++) {
         const double v = t->grid_num[r * t->ngrid + gs->key[k]];
         if (isnan(v))
-            p += gw_sprintf(p, "s%s\x1f", t->grid_value[r * t->ngrid + gs->key[k]]);
-        else
-            p += gw_sprintf(p, "n%.17g\x1f", v == 0 ? 0.0 : v); /* -0 and 0 are one value */
+            used += (size_t)gw_snprintf(s + used, len - used, "s%s\x1f", t->grid_value[r * t->ngrid + gs->key[k]]);
+        else /* -0 and 0 are one value */
+            used += (size_t)gw_snprintf(s + used, len - used, "n%.17g\x1f", v == 0 ? 0.0 : v);
     }
     if (s)
-        *p = '\0';
+        s[used] = '\0';
     return s;
 }
 

@@ -112,21 +112,23 @@ def diagrams(st):
         xs = [_none(x) for x in sorted(set(C["rb_rm"][m].tolist()))]
         hs = [_none(h) for h in sorted(set(C["height_rm"][m].tolist()))]
         share = [[math.nan] * len(hs) for _ in xs]
-        for x, h, s in zip(C["rb_rm"][m], C["height_rm"][m], C["share"][m]):
+        pen = [[math.nan] * len(hs) for _ in xs]
+        for x, h, s, p in zip(C["rb_rm"][m], C["height_rm"][m], C["share"][m], C["penetration_rm"][m]):
             share[xs.index(x)][hs.index(h)] = float(s)
-        d.update(rb_rm=xs, height_rm=hs, share=share)
+            pen[xs.index(x)][hs.index(h)] = float(p)
+        d.update(rb_rm=xs, height_rm=hs, share=share, penetration_rm=pen)
         mb = B["diagram"] == i
         d["boundary"] = [{"rb_rm": _none(B["rb_rm"][j]), "kind": _BOUNDARY_KINDS[int(B["kind"][j])],
                           **{k: _none(B[k][j]) for k in ("h_star", "h_lo", "h_hi", "share_lo", "share_hi",
-                                                         "penetration_rm")}}
+                                                         "changes", "penetration_rm", "b31")}}
                          for j in range(len(mb)) if mb[j]]
-        for k in ("r_crit", "r_crit_upper", "r_min", "h_min"):
+        for k in ("r_crit", "r_crit_upper", "r_min", "h_min", "penetration_rm_boundary", "ncross"):
             d[k] = _none(row[k])
         if row["fit_ok"] == 1:
             fit = {k: _none(row[k]) for k in ("offset", "beta", "beta_err", "a_over_b", "a_over_b_err",
                                              "tan_gamma", "tan_gamma_err", "gamma_deg", "a", "b", "x_min",
-                                             "rms_residual")}
-            fit.update(h_min=_none(row["h_min_fit"]), n_points=int(row["n_fit"]), dof=int(row["dof"]),
+                                             "h_min_fit", "rms_residual")}
+            fit.update(n_fit=int(row["n_fit"]), dof=int(row["dof"]),
                        fixed=[k for k in ("offset", "beta", "a_over_b", "tan_gamma") if row[k + "_err"] == 0],
                        curve=_b31_curve(row, xs[0], xs[-1]))
             d["fit"] = fit

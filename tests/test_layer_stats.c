@@ -399,13 +399,16 @@ static void test_run(void)
         gw_test_rel(g1[col_index(gc, "bounce_share")], 2.0 / 3, 1e-15, "group 1 share 2/3");
         gw_test_rel(g0[col_index(gc, "e_n_mean")], 0.3, 1e-14, "group 0 mean e_n over the bouncing points");
         gw_test_rel(g0[col_index(gc, "e_n_std")], 0.2, 1e-14, "group 0 std e_n (n - 1)");
-        gw_test_abs(g0[col_index(gc, "n_rebound")], 3, 0, "group 0: 3 rebounds");
+        gw_test_abs(g0[col_index(gc, "n_e")], 3, 0, "group 0: 3 rebounds");
+        gw_test_abs(g0[col_index(gc, "n_e_n")], 3, 0, "group 0: 3 values of e_n");
+        gw_test_abs(g0[col_index(gc, "n_penetration")], 4, 0, "group 0: 4 penetrations");
         gw_test_abs(g0[col_index(gc, "verdict_certain")], 1, 0, "group 0 verdict certain");
-        gw_test_true(col_index(gc, "verdict_certain") == GW_STATS_GROUP_NCOLS - 1, "36 group columns");
+        gw_test_true(col_index(gc, "verdict_certain") == 35 && col_index(gc, "n_alpha_r_first") == GW_STATS_GROUP_NCOLS - 1,
+                     "45 group columns: the 36 of the tables before, then the counts");
         gw_test_true(out.nbinary == 1 && out.nconvergence == 7 && out.nwalls == 0, "1 binary row, 7 convergence rows");
         gw_test_abs(out.binary[0], 2, 0, "binary rb_rm from the grid");
         gw_test_abs(out.binary[1], 7, 0, "binary alpha from the caller's default");
-        gw_test_abs(out.binary[2], 7, 0, "binary n");
+        gw_test_abs(out.binary[2], 7, 0, "binary n_block_loss_first_contact");
         gw_test_rel(out.binary[3], 3.6 / 7, 1e-14, "binary mean first-contact loss");
         gw_test_rel(out.binary[5], 16.0 / 25, 1e-15, "binary disc 4 r^2/(1 + r^2)^2");
         gw_test_abs(out.convergence[3 * 10 + 9], 0.75, 1e-15, "running share of group 0 after its 4 points");

@@ -136,7 +136,7 @@ for p in w:
     if p["walls"]["bounce_share"] != 1 or p["walls_removed"]["bounce_share"] != 0.5 or p["walls_removed"]["bouncing"]:
         bad.append("shares %s" % p)
     # rebound energy e^2 = 0.36 where the block bounces, 0 where it does not
-    if abs(p["walls"]["rebound_energy"] - 0.36) > 1e-12 or abs(p["walls_removed"]["rebound_energy"] - 0.18) > 1e-12:
+    if abs(p["walls"]["rebound_energy_mean"] - 0.36) > 1e-12 or abs(p["walls_removed"]["rebound_energy_mean"] - 0.18) > 1e-12:
         bad.append("rebound energy %s" % p)
 b = {x["rb_rm"]: x for x in j["binary"]}
 for r in (1, 2):

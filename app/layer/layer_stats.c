@@ -171,7 +171,7 @@ int gw_cmd_layer_stats(int argc, char **argv)
     long cut = 0; /* bouncing points whose run ended before T_f */
     for (int i = 0; i < R.gs.n; i++)
         cut += R.gs.g[i].n_bounced - R.gs.g[i].e.n;
-    if (cut > 0) /* recorded as n_bounced - n_rebound in groups.csv and the JSON */
+    if (cut > 0) /* recorded as n_bounced - n_e in groups.csv (the JSON: e.n) */
         fprintf(stderr, "granwave layer-stats: warning: %ld bouncing point(s) with e = nan (the run ended before "
                         "T_f, or stopped at the verdict: until = verdict) are left out of the e_n, e, alpha_r "
                         "statistics; e_n_first, e_first, alpha_r_first cover them\n", cut);

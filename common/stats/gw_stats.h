@@ -146,6 +146,8 @@ typedef struct gw_stats_group {
     double share_high;    /* (n_bounced + n - n_valid) / n */
     int bouncing;         /* global verdict: share >= criterion */
     int verdict_certain;  /* share >= criterion or share_high < criterion */
+    /* block_loss and dissipated: of the columns block_loss_first_contact and
+     * dissipated_first_contact, the names of every output form */
     gw_stats_moment e_n, e, alpha_r, penetration, penetration_rm, block_loss, dissipated;
     /* the first free-flight maximum (columns e_n_first, e_first, alpha_r_first
      * when the table has them; n = 0 otherwise), over the bouncing rows */
@@ -373,15 +375,23 @@ int gw_stats_out_check(const char *dir, const char *what, gw_err *err);
 
 /* ---- the library call: the analysis as tables (gw_stats_study.c) ---- */
 
-/* Columns of the per-group table (as groups.csv, without group and keys). */
+/* Columns of the per-group table (as groups.csv, without group and keys): the
+ * JSON's group object flattened, one name per statistic in every form (a
+ * moment X of the JSON, {"mean", "std", "n"}, is X_mean, X_std and n_X;
+ * docs/formats.md, layer-stats outputs). The moments block_loss and dissipated
+ * of gw_stats_group are block_loss_first_contact and dissipated_first_contact
+ * there, as the sweep table's columns they average. The counts n_X of the
+ * moments other than e and e_first follow the first 36 columns. */
 #define GW_STATS_GROUP_COLUMNS                                                                         \
     "n_points,n_valid,n_bounced,bounce_share,bouncing,e_n_mean,e_n_std,e_mean,e_std,alpha_r_mean,"     \
-    "alpha_r_std,n_rebound,penetration_mean,penetration_std,penetration_rm_mean,penetration_rm_std,"   \
-    "block_loss_mean,block_loss_std,dissipated_mean,dissipated_std,rebound_energy_mean,"               \
-    "rebound_energy_std,energy_error_max,k_stable_e,x_span,x_span_rm,e_n_first_mean,e_n_first_std,"    \
-    "e_first_mean,e_first_std,alpha_r_first_mean,alpha_r_first_std,n_rebound_first,"                  \
-    "bounce_share_decided,bounce_share_high,verdict_certain"
-#define GW_STATS_GROUP_NCOLS 36
+    "alpha_r_std,n_e,penetration_mean,penetration_std,penetration_rm_mean,penetration_rm_std,"         \
+    "block_loss_first_contact_mean,block_loss_first_contact_std,dissipated_first_contact_mean,"        \
+    "dissipated_first_contact_std,rebound_energy_mean,rebound_energy_std,energy_error_max,k_stable_e," \
+    "x_span,x_span_rm,e_n_first_mean,e_n_first_std,e_first_mean,e_first_std,alpha_r_first_mean,"      \
+    "alpha_r_first_std,n_e_first,bounce_share_decided,bounce_share_high,verdict_certain,n_e_n,"        \
+    "n_alpha_r,n_penetration,n_penetration_rm,n_block_loss_first_contact,n_dissipated_first_contact,"  \
+    "n_rebound_energy,n_e_n_first,n_alpha_r_first"
+#define GW_STATS_GROUP_NCOLS 45
 /* One group's row of that table. */
 void gw_stats_group_row(const gw_stats_group *g, double row[GW_STATS_GROUP_NCOLS]);
 

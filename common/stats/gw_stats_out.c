@@ -130,9 +130,12 @@ static cJSON *fit_json(const gw_stats_analysis *R, const gw_stats_panel *D)
     cJSON_AddNumberToObject(o, "a", D->a);
     cJSON_AddNumberToObject(o, "b", D->a / f->p.a_over_b);
     cJSON_AddNumberToObject(o, "b_err", D->a / f->p.a_over_b * f->err.a_over_b / f->p.a_over_b);
+    /* the fitted curve's minimum and the boundary points fitted: h_min_fit and n_fit, as no
+     * name of the fit is one of the diagram's (h_min: its lowest crossing) or of a group's
+     * (n_points: impact points); the library's table lends the fit's names to the diagram's row */
     cJSON_AddNumberToObject(o, "x_min", f->x_min);
-    cJSON_AddNumberToObject(o, "h_min", f->h_min);
-    cJSON_AddNumberToObject(o, "n_points", f->n);
+    cJSON_AddNumberToObject(o, "h_min_fit", f->h_min);
+    cJSON_AddNumberToObject(o, "n_fit", f->n);
     cJSON_AddNumberToObject(o, "dof", f->dof);
     cJSON_AddNumberToObject(o, "rms_residual", f->rms);
     cJSON_AddNumberToObject(o, "iterations", f->iterations);
@@ -164,9 +167,11 @@ static cJSON *diagram_json(const gw_stats_analysis *R, const gw_stats_panel *D)
     const gw_stats_diagram *d = &D->d;
     cJSON_AddItemToObject(o, "rb_rm", gw_json_doubles(d->xs, d->nx));
     cJSON_AddItemToObject(o, "height_rm", gw_json_doubles(d->hs, d->nh));
-    cJSON *sh = cJSON_AddArrayToObject(o, "share");
-    for (int i = 0; i < d->nx; i++)
+    cJSON *sh = cJSON_AddArrayToObject(o, "share"), *pm = cJSON_AddArrayToObject(o, "penetration_rm");
+    for (int i = 0; i < d->nx; i++) {
         cJSON_AddItemToArray(sh, gw_json_doubles(d->share + (size_t)i * d->nh, d->nh));
+        cJSON_AddItemToArray(pm, gw_json_doubles(d->pen + (size_t)i * d->nh, d->nh));
+    }
     cJSON_AddStringToObject(o, "placement", placement);
     cJSON *b = cJSON_AddArrayToObject(o, "boundary");
     for (int i = 0; i < d->nx; i++) {
@@ -181,8 +186,10 @@ static cJSON *diagram_json(const gw_stats_analysis *R, const gw_stats_panel *D)
         cJSON_AddNumberToObject(q, "share_hi", p->s_hi);
         cJSON_AddNumberToObject(q, "changes", p->changes);
         cJSON_AddNumberToObject(q, "penetration_rm", p->penetration_rm);
+        cJSON_AddNumberToObject(q, "b31", D->fit_ok ? gw_stats_b31_eval(&D->fit.p, p->x) : NAN);
         cJSON_AddItemToArray(b, q);
     }
+    cJSON_AddNumberToObject(o, "ncross", d->ncross);
     cJSON_AddNumberToObject(o, "r_crit", d->r_crit);
     cJSON_AddNumberToObject(o, "r_crit_upper", d->r_crit_upper);
     cJSON_AddStringToObject(o, "r_crit_means", "largest R_b/R_m of the grid up to which every column bounces at "
@@ -215,6 +222,15 @@ static cJSON *binary_json(const gw_stats_analysis *R)
     return a;
 }
 
+/* A walls pair: two sides (walls kept, removed at impact time) of these
+ * statistics of a group, named side_col in walls.csv and side: {col} in the
+ * JSON. group is the side's row of groups.csv (and of the JSON's groups). */
+static const char *const wall_side[2] = {"walls", "walls_removed"};
+static const char *const wall_cols[] = {"group", "n_points", "bounce_share", "bouncing", "e_n_mean", "e_mean",
+                                        "penetration_rm_mean", "block_loss_first_contact_mean",
+                                        "rebound_energy_mean"};
+enum { NWALL_COLS = sizeof wall_cols / sizeof wall_cols[0] };
+
 static cJSON *walls_json(const gw_stats_analysis *R)
 {
     cJSON *a = cJSON_CreateArray();
@@ -224,15 +240,16 @@ static cJSON *walls_json(const gw_stats_analysis *R)
         cJSON_AddItemToObject(o, "keys", keys_json(R, R->gs.g[R->walls[k][0]].first, kw, -1));
         for (int w = 0; w < 2; w++) {
             const gw_stats_group *g = &R->gs.g[R->walls[k][w]];
-            cJSON *q = cJSON_AddObjectToObject(o, w ? "walls_removed" : "walls");
-            cJSON_AddNumberToObject(q, "n_points", g->n);
-            cJSON_AddNumberToObject(q, "bounce_share", g->share);
-            cJSON_AddBoolToObject(q, "bouncing", g->bouncing);
-            cJSON_AddNumberToObject(q, "e_n", g->e_n.mean);
-            cJSON_AddNumberToObject(q, "e", g->e.mean);
-            cJSON_AddNumberToObject(q, "penetration_rm", g->penetration_rm.mean);
-            cJSON_AddNumberToObject(q, "block_loss_first_contact", g->block_loss.mean);
-            cJSON_AddNumberToObject(q, "rebound_energy", g->rebound_energy.mean);
+            /* walls.csv's columns without the side's prefix (write_walls) */
+            cJSON *q = cJSON_AddObjectToObject(o, wall_side[w]);
+            cJSON_AddNumberToObject(q, wall_cols[0], R->walls[k][w]);
+            cJSON_AddNumberToObject(q, wall_cols[1], g->n);
+            cJSON_AddNumberToObject(q, wall_cols[2], g->share);
+            cJSON_AddBoolToObject(q, wall_cols[3], g->bouncing);
+            const double v[] = {g->e_n.mean, g->e.mean, g->penetration_rm.mean, g->block_loss.mean,
+                                g->rebound_energy.mean};
+            for (int c = 4; c < NWALL_COLS; c++)
+                cJSON_AddNumberToObject(q, wall_cols[c], v[c - 4]);
         }
         cJSON_AddItemToArray(a, o);
     }
@@ -325,18 +342,19 @@ static void key_values(FILE *fp, const gw_stats_analysis *R, long row, int skip1
 
 static void write_groups(FILE *fp, const gw_stats_analysis *R)
 {
-    head(fp, R, "per group of impact points (every grid key but point): e_n, e, alpha_r (deg) over the "
-                "bouncing points (n_rebound of them), the others over all points; std = sample standard "
-                "deviation (n - 1); penetration in m and in R_m; first-contact block loss and friction "
-                "dissipation as fractions of the incident energy; rebound_energy = e^2, the block's rebound "
-                "kinetic energy (translation) over the incident one, 0 where it does not bounce; k_stable_e = points after which the running "
-                "mean of e stays within 5 % of the final mean; x_span = spread of the impact points (max - min "
-                "x_impact, m; x_span_rm in R_m); e_n_first, e_first, alpha_r_first: the same at the first "
-                "free-flight maximum (n_rebound_first points; nan when the table has no such columns); "
-                "n_rebound < n_bounced when runs ended before T_f; n_points - n_valid points are undecided "
-                "(the run ended before the verdict): bounce_share counts them as not bounced (bounced before "
-                "the end of the run), bounce_share_decided leaves them out, bounce_share_high counts them as "
-                "bounced; verdict_certain = 1 when no outcome of theirs could change the verdict");
+    head(fp, R, "per group of impact points (every grid key but point), the JSON's groups under the same "
+                "names: X_mean, X_std, n_X = mean, sample standard deviation (n - 1) and number of the finite "
+                "values of X; e_n, e, alpha_r (deg) over the bouncing points, the others over all points; "
+                "penetration in m and in R_m; block_loss_first_contact and dissipated_first_contact (first-contact "
+                "block loss and friction dissipation) as fractions of the incident energy; rebound_energy = e^2, "
+                "the block's rebound kinetic energy (translation) over the incident one, 0 where it does not "
+                "bounce; k_stable_e = points after which the running mean of e stays within 5 % of the final "
+                "mean; x_span = spread of the impact points (max - min x_impact, m; x_span_rm in R_m); e_n_first, "
+                "e_first, alpha_r_first: the same at the first free-flight maximum (nan when the table has no "
+                "such columns); n_e < n_bounced when runs ended before T_f; n_points - n_valid points are "
+                "undecided (the run ended before the verdict): bounce_share counts them as not bounced (bounced "
+                "before the end of the run), bounce_share_decided leaves them out, bounce_share_high counts them "
+                "as bounced; verdict_certain = 1 when no outcome of theirs could change the verdict");
     gw_fprintf(fp, "group");
     key_names(fp, R, -1, -1);
     gw_fprintf(fp, ",%s\n", GW_STATS_GROUP_COLUMNS);
@@ -383,11 +401,13 @@ static void write_convergence(FILE *fp, const gw_stats_analysis *R)
 
 static void write_binary(FILE *fp, const gw_stats_analysis *R)
 {
-    head(fp, R, "first contact against the binary impact (B.24-B.28): block_loss = (E_kb(0) - E_kb)/E_incident at "
-                "the end of the block's first contact, over every row with this R_b/R_m and incidence (deg); "
+    head(fp, R, "first contact against the binary impact (B.24-B.28): block_loss_first_contact = (E_kb(0) - "
+                "E_kb)/E_incident at the end of the block's first contact, over the rows with this R_b/R_m and "
+                "incidence (deg) where it is defined (n_block_loss_first_contact of them); "
                 "binary_disc = 4 r^2/(1 + r^2)^2 (disc masses, the layer default), binary_sphere = "
                 "4 r^3/(1 + r^3)^2, r = R_b/R_m");
-    gw_fprintf(fp, "rb_rm,alpha,n,block_loss_mean,block_loss_std,binary_disc,binary_sphere\n");
+    gw_fprintf(fp, "rb_rm,alpha,n_block_loss_first_contact,block_loss_first_contact_mean,"
+                "block_loss_first_contact_std,binary_disc,binary_sphere\n");
     for (int k = 0; k < R->nbin; k++) {
         const gw_stats_binary *b = &R->bin[k];
         gw_fprintf(fp, "%.9g,%.9g,%d", b->rb_rm, b->alpha, b->loss.n);
@@ -404,21 +424,21 @@ static void write_walls(FILE *fp, const gw_stats_analysis *R)
     int kw = gw_stats_table_key(&R->t, "remove-walls");
     head(fp, R, kw < 0 ? "walls: the table has no remove-walls grid key, nothing to compare"
                        : "walls kept (remove-walls = 0) and removed at impact time (remove-walls = 1) side by "
-                         "side, for the groups that agree on every other key");
+                         "side, for the groups that agree on every other key: the JSON's walls and walls_removed, "
+                         "each name prefixed with its side; walls_group and walls_removed_group are the rows of "
+                         "groups.csv, the other columns means over their points");
     gw_fprintf(fp, "pair");
     key_names(fp, R, kw, -1);
-    static const char *cols[] = {"n_points", "bounce_share", "bouncing", "e_n_mean", "e_mean", "penetration_rm_mean",
-                                 "block_loss_mean", "rebound_energy_mean"};
     for (int w = 0; w < 2; w++)
-        for (size_t c = 0; c < sizeof cols / sizeof cols[0]; c++)
-            gw_fprintf(fp, ",%s_%s", w ? "removed" : "walls", cols[c]);
+        for (int c = 0; c < NWALL_COLS; c++)
+            gw_fprintf(fp, ",%s_%s", wall_side[w], wall_cols[c]);
     fputc('\n', fp);
     for (int k = 0; k < R->nwalls; k++) {
         gw_fprintf(fp, "%d", k);
         key_values(fp, R, R->gs.g[R->walls[k][0]].first, kw, -1);
         for (int w = 0; w < 2; w++) {
             const gw_stats_group *g = &R->gs.g[R->walls[k][w]];
-            gw_fprintf(fp, ",%d", g->n);
+            gw_fprintf(fp, ",%d,%d", R->walls[k][w], g->n);
             num(fp, g->share);
             gw_fprintf(fp, ",%d", g->bouncing);
             num(fp, g->e_n.mean);

@@ -3,7 +3,8 @@
  * tables with named columns (gw_stats_outcome, its table
  * gw_stats_outcome_fields), for the library's index of studies ("layer-stats")
  * and the Python module. The numbers are those of the command's JSON and CSV
- * files (docs/physics.md 2.3, 2.5): groups as groups.csv, the running means
+ * files under their names, one per statistic (docs/formats.md, layer-stats
+ * outputs; docs/physics.md 2.3, 2.5): groups as groups.csv, the running means
  * of Fig. 10, the first contact against B.24-B.28, walls kept/removed, per
  * diagram R_crit, (R_min, H_min) and the B.31 fit (offset, beta, a/b, tan
  * gamma; a = (pi/2) rho V_i^2 in J/m^3 per unit thickness, b = a / (a/b)),
@@ -20,11 +21,14 @@
 #include "gw_stats.h"
 
 #define CONV_COLS "group,k,case,point,bounced,e_n,e,running_mean_e_n,running_mean_e,running_share"
-#define BIN_COLS "rb_rm,alpha,n,block_loss_mean,block_loss_std,binary_disc,binary_sphere"
-#define WALL_SIDE(p)                                                                                     \
-    p "n_points," p "bounce_share," p "bouncing," p "e_n_mean," p "e_mean," p "penetration_rm_mean," p \
-      "block_loss_mean," p "rebound_energy_mean"
-#define WALL_COLS "group_walls,group_removed," WALL_SIDE("walls_") "," WALL_SIDE("removed_")
+/* the names of the JSON and the CSV files (gw_stats_out.c), one per statistic */
+#define BIN_COLS                                                                                          \
+    "rb_rm,alpha,n_block_loss_first_contact,block_loss_first_contact_mean,block_loss_first_contact_std," \
+    "binary_disc,binary_sphere"
+#define WALL_SIDE(p)                                                                                      \
+    p "group," p "n_points," p "bounce_share," p "bouncing," p "e_n_mean," p "e_mean," p                 \
+      "penetration_rm_mean," p "block_loss_first_contact_mean," p "rebound_energy_mean"
+#define WALL_COLS WALL_SIDE("walls_") "," WALL_SIDE("walls_removed_")
 #define DIA_COLS                                                                                         \
     "ok,ncross,r_crit,r_crit_upper,r_min,h_min,penetration_rm_boundary,fit_ok,offset,offset_err,beta,"   \
     "beta_err,a_over_b,a_over_b_err,tan_gamma,tan_gamma_err,gamma_deg,corr_beta_a_over_b,a,b,b_err,"     \
@@ -47,8 +51,9 @@ static const gw_param outcome_fields[] = {
     {.name = "group_keys", .type = GW_PARAM_TEXT, .offset = OFF(group_keys), .unit = "",
      .help = "the grouping keys' names, comma-separated (columns of keys)"},
     RA("keys", keys, "ngroups", "nkeys", NULL, "each group's values of the grouping keys (NaN: not a number)"),
-    RA("groups", groups, "ngroups", "36", GW_STATS_GROUP_COLUMNS,
-       "per group, as groups.csv: moments of e_n, e, alpha_r (bouncing points), penetration (m, R_m), shares"),
+    RA("groups", groups, "ngroups", "45", GW_STATS_GROUP_COLUMNS,
+       "per group, as groups.csv: moments of e_n, e, alpha_r (bouncing points), penetration (m, R_m), shares; "
+       "X_mean, X_std and n_X of the JSON's X"),
     RI("nconvergence", nconvergence, "rows of convergence"),
     RA("convergence", convergence, "nconvergence", "10", CONV_COLS,
        "running means over the first k points of each group (Fig. 10), as convergence.csv"),
@@ -56,7 +61,8 @@ static const gw_param outcome_fields[] = {
     RA("binary", binary, "nbinary", "7", BIN_COLS,
        "first-contact block loss per R_b/R_m and incidence (deg) beside the binary impact (B.24-B.28)"),
     RI("nwalls", nwalls, "rows of walls"),
-    RA("walls", walls, "nwalls", "18", WALL_COLS, "groups with walls kept and removed side by side"),
+    RA("walls", walls, "nwalls", "18", WALL_COLS,
+       "groups with walls kept and removed side by side (walls_group, walls_removed_group: their rows of groups)"),
     RI("ndiagrams", ndiagrams, "bouncing-occurrence diagrams"),
     RA("diagrams", diagrams, "ndiagrams", "27", DIA_COLS,
        "per diagram: R_crit in [r_crit, r_crit_upper), (r_min, h_min), the B.31 fit (NaN when not done)"),
@@ -105,6 +111,11 @@ void gw_stats_group_row(const gw_stats_group *g, double row[GW_STATS_GROUP_NCOLS
     row[i++] = g->share_decided;
     row[i++] = g->share_high;
     row[i++] = g->verdict_certain;
+    /* the counts of the other moments, after the columns of the tables written before them */
+    const gw_stats_moment *m4[] = {&g->e_n, &g->alpha_r, &g->penetration, &g->penetration_rm, &g->block_loss,
+                                   &g->dissipated, &g->rebound_energy, &g->e_n_first, &g->alpha_r_first};
+    for (int k = 0; k < 9; k++)
+        row[i++] = m4[k]->n;
 }
 
 static double *table(int rows, int cols)
@@ -112,16 +123,18 @@ static double *table(int rows, int cols)
     return malloc(((size_t)rows * (size_t)cols + 1) * sizeof(double));
 }
 
-static void wall_side(const gw_stats_group *g, double *r)
+static void wall_side(const gw_stats_groups *gs, int group, double *r)
 {
-    r[0] = g->n;
-    r[1] = g->share;
-    r[2] = g->bouncing;
-    r[3] = g->e_n.mean;
-    r[4] = g->e.mean;
-    r[5] = g->penetration_rm.mean;
-    r[6] = g->block_loss.mean;
-    r[7] = g->rebound_energy.mean;
+    const gw_stats_group *g = &gs->g[group];
+    r[0] = group;
+    r[1] = g->n;
+    r[2] = g->share;
+    r[3] = g->bouncing;
+    r[4] = g->e_n.mean;
+    r[5] = g->e.mean;
+    r[6] = g->penetration_rm.mean;
+    r[7] = g->block_loss.mean;
+    r[8] = g->rebound_energy.mean;
 }
 
 static void diagram_row(const gw_stats_panel *D, double *r)
@@ -213,10 +226,8 @@ static int tables_make(gw_stats_outcome *out)
     }
     for (int k = 0; k < A->nwalls; k++) {
         double *r = out->walls + k * NWALL;
-        r[0] = A->walls[k][0];
-        r[1] = A->walls[k][1];
-        wall_side(&gs->g[A->walls[k][0]], r + 2);
-        wall_side(&gs->g[A->walls[k][1]], r + 10);
+        wall_side(gs, A->walls[k][0], r);
+        wall_side(gs, A->walls[k][1], r + NWALL / 2);
     }
     long ic = 0, ib = 0;
     for (int q = 0; q < A->ndia; q++) {

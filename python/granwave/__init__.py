@@ -116,8 +116,43 @@ def layer_impact(*, progress=None, **kwargs):
 
 # the tables' yes/no columns (never NaN); convergence's bounced stays a number: NaN
 # where the impact was undecided, as the sweep table's
-_STATS_FLAGS = (("groups", ("bouncing", "verdict_certain")), ("walls", ("walls_bouncing", "removed_bouncing")),
+_STATS_FLAGS = (("groups", ("bouncing", "verdict_certain")), ("walls", ("walls_bouncing", "walls_removed_bouncing")),
                 ("diagrams", ("ok", "fit_ok")))
+
+# the tables' columns before they took the names of the JSON and the CSV files
+# (one name per statistic in every form): still read, with a warning
+_WALL_SIDE_BEFORE = ("n_points", "bounce_share", "bouncing", "e_n_mean", "e_mean", "penetration_rm_mean",
+                     "rebound_energy_mean")
+_STATS_NAMES_BEFORE = {
+    "groups": {"n_rebound": "n_e", "n_rebound_first": "n_e_first",
+               "block_loss_mean": "block_loss_first_contact_mean", "block_loss_std": "block_loss_first_contact_std",
+               "dissipated_mean": "dissipated_first_contact_mean",
+               "dissipated_std": "dissipated_first_contact_std"},
+    "binary": {"n": "n_block_loss_first_contact", "block_loss_mean": "block_loss_first_contact_mean",
+               "block_loss_std": "block_loss_first_contact_std"},
+    "walls": {"group_walls": "walls_group", "group_removed": "walls_removed_group",
+              "walls_block_loss_mean": "walls_block_loss_first_contact_mean",
+              "removed_block_loss_mean": "walls_removed_block_loss_first_contact_mean",
+              **{"removed_" + c: "walls_removed_" + c for c in _WALL_SIDE_BEFORE}},
+}
+
+
+class _Columns(dict):
+    """A table's columns; a name it had before reads the column of its new name,
+    with a DeprecationWarning (not listed, not `in`)."""
+
+    def __init__(self, columns=(), before=None):
+        super().__init__(columns)
+        self._before = before or {}
+
+    def __missing__(self, name):
+        now = getattr(self, "_before", {}).get(name)
+        if now is None or now not in self:
+            raise KeyError(name)
+        import warnings
+        warnings.warn(f"layer_stats: column '{name}' is now '{now}' (the name of the JSON and the CSV files)",
+                      DeprecationWarning, stacklevel=2)
+        return self[now]
 
 
 def layer_stats(input=None, **kwargs):
@@ -131,10 +166,14 @@ def layer_stats(input=None, **kwargs):
             if t in r and c in r[t] and not _np.isnan(r[t][c]).any():
                 r[t][c] = r[t][c] != 0
     names = r.pop("group_keys", None)
+    r["group_keys"] = names.split(",") if names else []  # as the JSON's list
     keys = r.pop("keys", None)
-    if names and keys is not None and "groups" in r:
-        for j, name in enumerate(names.split(",")):
+    if keys is not None and "groups" in r:
+        for j, name in enumerate(r["group_keys"]):
             r["groups"][name] = keys[:, j].copy()
+    for t, before in _STATS_NAMES_BEFORE.items():
+        if t in r:
+            r[t] = _Columns(r[t], before)
     return r
 
 
@@ -298,4 +337,6 @@ layer_stats.__doc__ = _study("layer-stats").doc(
     "walls on/off; per bouncing diagram R_crit, (R_min, H_min), the boundary H* and the\n"
     "B.31 fit. Tables with named columns are dicts of numpy arrays, one entry per row:\n"
     "groups (with the grouping keys' values, NaN where not numeric), convergence,\n"
-    "binary, walls, diagrams, cells, boundary. input may be given by position.")
+    "binary, walls, diagrams, cells, boundary; group_keys lists the grouping keys. The\n"
+    "names are those of the JSON and the CSV files of `--out` (a statistic X of the\n"
+    "JSON, {mean, std, n}, is X_mean, X_std and n_X). input may be given by position.")

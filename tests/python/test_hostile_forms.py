@@ -131,7 +131,7 @@ def test_layer_stats_flag_columns_as_the_json(program):
     assert r.groups["bouncing"].tolist() == [g["bouncing"] for g in j["groups"]]
     assert r.groups["verdict_certain"].tolist() == [g["verdict_certain"] for g in j["groups"]]
     assert r.walls["walls_bouncing"].tolist() == [w["walls"]["bouncing"] for w in j["walls"]]
-    assert r.walls["removed_bouncing"].tolist() == [w["walls_removed"]["bouncing"] for w in j["walls"]]
+    assert r.walls["walls_removed_bouncing"].tolist() == [w["walls_removed"]["bouncing"] for w in j["walls"]]
     assert False in r.groups["bouncing"].tolist() and True in r.groups["bouncing"].tolist()
 
 

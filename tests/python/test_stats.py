@@ -16,8 +16,8 @@ import pytest
 
 import granwave
 
-GROUP_MOMENTS = ["e_n", "e", "alpha_r", "penetration", "penetration_rm", "rebound_energy", "e_n_first",
-                 "e_first", "alpha_r_first"]
+GROUP_MOMENTS = ["e_n", "e", "alpha_r", "penetration", "penetration_rm", "block_loss_first_contact",
+                 "dissipated_first_contact", "rebound_energy", "e_n_first", "e_first", "alpha_r_first"]
 COLS = ("x_impact,bounced,e_n,e,alpha_r,v_ni,v_nr,v_r,penetration,penetration_rm,dissipated_first_contact,"
         "block_loss_first_contact,energy_error,wave_speed,t_end,steps")
 
@@ -48,9 +48,7 @@ def compare(r, j):
         for m in GROUP_MOMENTS:
             same(G[m + "_mean"][i], g[m]["mean"], f"group {i} {m} mean")
             same(G[m + "_std"][i], g[m]["std"], f"group {i} {m} std")
-        same(G["block_loss_mean"][i], g["block_loss_first_contact"]["mean"], f"group {i} block loss")
-        same(G["dissipated_mean"][i], g["dissipated_first_contact"]["mean"], f"group {i} dissipated")
-        assert G["n_rebound"][i] == g["e"]["n"] and G["n_rebound_first"][i] == g["e_first"]["n"]
+            assert G["n_" + m][i] == g[m]["n"], f"group {i} {m} n"
         sel = r.convergence["group"] == i
         for k in ("running_mean_e_n", "running_mean_e", "running_share"):
             np.testing.assert_allclose(r.convergence[k][sel], [math.nan if v is None else v for v in g[k]],
@@ -58,8 +56,9 @@ def compare(r, j):
     for i, b in enumerate(j["binary"]):
         for k in ("rb_rm", "alpha", "binary_disc", "binary_sphere"):
             same(r.binary[k][i], b[k], f"binary {i} {k}")
-        same(r.binary["block_loss_mean"][i], b["block_loss_first_contact"]["mean"], f"binary {i} mean")
-        same(r.binary["block_loss_std"][i], b["block_loss_first_contact"]["std"], f"binary {i} std")
+        same(r.binary["block_loss_first_contact_mean"][i], b["block_loss_first_contact"]["mean"], f"binary {i} mean")
+        same(r.binary["block_loss_first_contact_std"][i], b["block_loss_first_contact"]["std"], f"binary {i} std")
+        assert r.binary["n_block_loss_first_contact"][i] == b["block_loss_first_contact"]["n"], f"binary {i} n"
     nb = 0
     for q, d in enumerate(j["diagrams"]):
         assert r.diagrams["ok"][q] == (0 if "error" in d else 1)
@@ -80,10 +79,9 @@ def compare(r, j):
         assert r.diagrams["fit_ok"][q] == (f is not None)
         if f is not None:
             for k in ("offset", "beta", "beta_err", "a_over_b", "a_over_b_err", "tan_gamma", "gamma_deg",
-                      "corr_beta_a_over_b", "a", "b", "b_err", "x_min", "dof", "rms_residual", "iterations"):
+                      "corr_beta_a_over_b", "a", "b", "b_err", "x_min", "h_min_fit", "n_fit", "dof", "rms_residual",
+                      "iterations"):
                 same(r.diagrams[k][q], f[k], f"diagram {q} fit {k}")
-            same(r.diagrams["h_min_fit"][q], f["h_min"], "fit h_min")
-            same(r.diagrams["n_fit"][q], f["n_points"], "fit n")
     assert r.nboundary == nb
 
 
@@ -168,11 +166,8 @@ def test_measured_tables_as_the_program(program, name):
     r = granwave.layer_stats(table)
     j = cli_json(program, table)
     compare(r, j)
-    column = {"n_points": "n_points", "bounce_share": "bounce_share", "bouncing": "bouncing", "e_n": "e_n_mean",
-              "e": "e_mean", "penetration_rm": "penetration_rm_mean", "block_loss_first_contact": "block_loss_mean",
-              "rebound_energy": "rebound_energy_mean"}
     for i, w in enumerate(j["walls"]):
-        for side, pre in (("walls", "walls_"), ("walls_removed", "removed_")):
+        for side in ("walls", "walls_removed"):
             for k, v in w[side].items():
-                same(r.walls[pre + column[k]][i], None if v is None else float(v), f"walls {i} {side} {k}")
+                same(r.walls[side + "_" + k][i], None if v is None else float(v), f"walls {i} {side} {k}")
     assert r.nwalls == (6 if name == "layer_walls" else 0)

@@ -100,6 +100,12 @@ void gw_cli_progress_init(gw_cli_progress *p, const char *prefix, const char *un
 /* gw_progress_fn: a line after the last unit and when due; returns 0. */
 int gw_cli_progress_report(void *ctx, long done, long total);
 
+/* A number for a text output: v printed with fmt (one conversion of a double)
+ * into buf, or "n/a" where v is not finite, the JSON's null (a period from one
+ * maximum, a spread of one value): one spelling in every command's text. */
+#define GW_CLI_NA "n/a"
+const char *gw_cli_num(char *buf, size_t n, const char *fmt, double v);
+
 /* A study's setup (table t) from the command line: every option of argv that is
  * a row of t is set from its text with the table's checks (the command's own
  * parse ran first with the same names and ranges). GW_EINVAL "CMD --NAME: ...". */

@@ -10,6 +10,8 @@
  * the time left is (n - d) / rate seconds.
  */
 #include <errno.h>
+#include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
@@ -110,6 +112,15 @@ char *gw_cli_provenance(const char *cmd, int argc, char **argv, const cJSON *set
         snprintf(h, len, "granwave %s\ncommand: %s", v, line);
     free(line);
     return gw_cli_provenance_add(h, "settings", settings);
+}
+
+const char *gw_cli_num(char *buf, size_t n, const char *fmt, double v)
+{
+    if (!isfinite(v))
+        snprintf(buf, n, "%s", GW_CLI_NA);
+    else
+        snprintf(buf, n, fmt, v);
+    return buf;
 }
 
 char *gw_cli_one_line(char *text, char sep)

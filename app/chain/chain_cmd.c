@@ -88,7 +88,9 @@ static void print_text(const chain_cli *c, const gw_chain_result *r)
     printf("  m = %.6g kg, k = %.6g N/m^1.5, K = %.6g N/m^1.5\n", p->mass, p->k, p->kwall);
     printf("  F_max      %.6g N at tau_max = %.6g us\n", r->f_max, r->tau_max * 1e6);
     printf("  tau_N      %.6g us (wall contacts: %d)\n", r->tau_n * 1e6, r->wall_contacts);
-    printf("  period P   %.6g us (%d maxima)\n", r->period * 1e6, r->n_maxima);
+    char per[32];
+    printf("  period P   %s us (%d maxima)\n", gw_cli_num(per, sizeof per, "%.6g", r->period * 1e6),
+           r->n_maxima);
     printf("  eps_eff    %.6g   eps_col %.6g   E_rel/E_K %.6g\n", r->eps_eff, r->eps_col,
            r->e_rel_over_e_k);
     printf("  N_s        %d (cluster of %d)\n", r->n_s, r->cluster);

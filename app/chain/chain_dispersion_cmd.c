@@ -385,11 +385,13 @@ static int disp_column(const disp_cli *c, const gw_opt *opts, int argc, char **a
         }
         if (code == 0 && c->json)
             gw_json_print(js, stdout);
-        else if (code == 0)
+        else if (code == 0) {
+            char ip[32], rd[32];
             printf("granwave %s dispersion --column-n %d (v_imp %g m/s): wall-force peak %.6g Hz, "
-                   "1/P %.6g Hz (rel diff %+.2e), bin %.3g Hz, contact %.4g us\n",
-                   gw_version(), p.n, p.v_imp, sp.f_peak, out.inv_period, out.f_peak_rel_diff,
-                   sp.df, r.tau_n * 1e6);
+                   "1/P %s Hz (rel diff %s), bin %.3g Hz, contact %.4g us\n",
+                   gw_version(), p.n, p.v_imp, sp.f_peak, gw_cli_num(ip, sizeof ip, "%.6g", out.inv_period),
+                   gw_cli_num(rd, sizeof rd, "%+.2e", out.f_peak_rel_diff), sp.df, r.tau_n * 1e6);
+        }
         free(hdr);
         cJSON_Delete(js);
     }

@@ -428,10 +428,11 @@ int gw_cmd_falcon(int argc, char **argv)
             printf("granwave %s falcon: %d collisions in %.2f s\n", gw_version(), ncase, f.wall_s);
             for (int iv = 0; iv < f.nv; iv++) {
                 const falcon_vel *fv = &f.fv[iv];
+                char per[32];
                 printf("  v_imp %.4f m/s: F_max %.2f N (%.2f..%.2f), T_q %.3f us, v = 4R/T_q %.1f m/s "
-                       "(F.27: %.1f), P %.2f us\n",
+                       "(F.27: %.1f), P %s us\n",
                        fv->v, fv->f_mean, fv->f_min, fv->f_max, fv->fit.c1 * 1e6, fv->speed,
-                       fv->speed_theory, fv->period_mean * 1e6);
+                       fv->speed_theory, gw_cli_num(per, sizeof per, "%.2f", fv->period_mean * 1e6));
             }
             if (f.c.out)
                 printf("  report: %s/report.md\n", f.c.out);

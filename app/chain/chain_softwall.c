@@ -210,14 +210,14 @@ int gw_cmd_softwall(int argc, char **argv)
                 if (!isnan(so.n_d_predicted[w]))
                     snprintf(np, sizeof np, "%d", (int)so.n_d_predicted[w]);
                 else
-                    snprintf(np, sizeof np, "-");
+                    snprintf(np, sizeof np, GW_CLI_NA);
                 char taus[96] = "";
                 if (use_sheets) {
                     const gw_sheet *sh = gw_sheet_get(w);
                     /* tau_max(1) only when N = 1 was run (the JSON's tau_max_1_model): the first
                      * size's was printed under that name (--n 3:12: 17.6 us for none, tau_max(3));
-                     * "-" where the model gives none (the JSON's null), not "nan" */
-                    char t1[16] = "-", tn[16] = "-";
+                     * n/a where the model gives none (the JSON's null), not "nan" */
+                    char t1[16] = GW_CLI_NA, tn[16] = GW_CLI_NA;
                     if (so.n[0] == 1)
                         snprintf(t1, sizeof t1, "%.1f", so.tau_max[(size_t)w * per] * 1e6);
                     if (!isnan(so.tau_max_at_n_d[w]))

@@ -52,6 +52,16 @@ static gw_stats_defaults layer_defaults(void)
 
 /* ------------------------------------------------------------------ command --- */
 
+/* "mean +- std" with n/a for what the JSON gives as null (no value, or the spread of one) */
+static const char *pm(char *b, size_t n, const char *fmt, gw_stats_moment m)
+{
+    char a[32], c[32];
+    gw_cli_num(a, sizeof a, fmt, m.mean);
+    gw_cli_num(c, sizeof c, fmt, m.std);
+    snprintf(b, n, "%s +- %s", a, c);
+    return b;
+}
+
 static void print_text(const gw_stats_analysis *R)
 {
     const gw_stats_table *t = &R->t;
@@ -62,24 +72,30 @@ static void print_text(const gw_stats_analysis *R)
         printf("  ");
         for (int k = 0; k < R->gs.nkeys; k++)
             printf("%s=%s ", t->grid_name[R->gs.key[k]], t->grid_value[g->first * t->ngrid + R->gs.key[k]]);
-        printf(": n %d, share %.3f (%s%s), e_n %.3f +- %.3f, e %.3f +- %.3f, alpha_r %.1f +- %.1f deg, "
-               "e_n_first %.3f +- %.3f, penetration %.3g R_m, points over %.3g R_m\n", g->n, g->share,
+        char b[4][72], pen[32];
+        printf(": n %d, share %.3f (%s%s), e_n %s, e %s, alpha_r %s deg, "
+               "e_n_first %s, penetration %s R_m, points over %.3g R_m\n", g->n, g->share,
                g->bouncing ? "bounces" : "no bounce", g->verdict_certain ? "" : "; undecided points could change it",
-               g->e_n.mean, g->e_n.std, g->e.mean, g->e.std, g->alpha_r.mean, g->alpha_r.std, g->e_n_first.mean,
-               g->e_n_first.std, g->penetration_rm.mean, g->x_span_rm);
+               pm(b[0], sizeof b[0], "%.3f", g->e_n), pm(b[1], sizeof b[1], "%.3f", g->e),
+               pm(b[2], sizeof b[2], "%.1f", g->alpha_r), pm(b[3], sizeof b[3], "%.3f", g->e_n_first),
+               gw_cli_num(pen, sizeof pen, "%.3g", g->penetration_rm.mean), g->x_span_rm);
     }
-    for (int k = 0; k < R->nbin; k++)
-        printf("  binary: R_b/R_m %g, alpha %g: block loss %.3f +- %.3f (n %d); disc %.3f, sphere %.3f\n",
-               R->bin[k].rb_rm, R->bin[k].alpha, R->bin[k].loss.mean, R->bin[k].loss.std, R->bin[k].loss.n,
+    for (int k = 0; k < R->nbin; k++) {
+        char b[72];
+        printf("  binary: R_b/R_m %g, alpha %g: block loss %s (n %d); disc %.3f, sphere %.3f\n",
+               R->bin[k].rb_rm, R->bin[k].alpha, pm(b, sizeof b, "%.3f", R->bin[k].loss), R->bin[k].loss.n,
                R->bin[k].disc, R->bin[k].sphere);
+    }
     for (int q = 0; q < R->ndia; q++) {
         const gw_stats_panel *D = &R->dia[q];
         if (!D->ok) {
             printf("  diagram %d: %s\n", q, D->reason);
             continue;
         }
-        printf("  diagram %d: %d crossings, R_crit %g (next %g), R_min %g, H_min %g\n", q, D->d.ncross,
-               D->d.r_crit, D->d.r_crit_upper, D->d.r_min, D->d.h_min);
+        char v[4][32];
+        printf("  diagram %d: %d crossings, R_crit %s (next %s), R_min %s, H_min %s\n", q, D->d.ncross,
+               gw_cli_num(v[0], sizeof v[0], "%g", D->d.r_crit), gw_cli_num(v[1], sizeof v[1], "%g", D->d.r_crit_upper),
+               gw_cli_num(v[2], sizeof v[2], "%g", D->d.r_min), gw_cli_num(v[3], sizeof v[3], "%g", D->d.h_min));
         if (D->fit_ok && D->fit.dof == 0)
             printf("    B.31 fit: beta %.4g, a/b %.4g (as many points as free parameters: exact, no errors), "
                    "tan gamma %.4g, offset %.4g\n", D->fit.p.beta, D->fit.p.a_over_b, D->fit.p.tan_gamma,

@@ -454,6 +454,11 @@ typedef struct gw_layer_impact_result {
                                  block-target contact normal, deg (0: head-on) */
     double t_contact_open;  /* time the block-target contact opened (NaN: not by the verdict), s */
     double dissipated_contact_open; /* E_d / E_incident then */
+    double block_loss_contact_open; /* (E_kb(0) - E_kb) / E_incident then: the
+                                       binary impact's loss (B.28) for every r,
+                                       where block_loss_first_contact, at the
+                                       block's smallest energy, is 1 for a block
+                                       that rebounds from its target (r <= 1) */
     double wave_speed, wave_speed_err;      /* from strain-energy peaks, m/s */
     double wave_speed_kin, wave_speed_kin_err; /* from kinetic-energy peaks */
     int wave_rings;         /* rings in the strain fit */

@@ -511,7 +511,7 @@ int gw_layer_impact(const gw_layer_sample *smp, const gw_layer_params *lp0,
      * A contact that had not opened by then (or by the end of an undecided
      * run) has no opening: NaN (null), where t_end stood in for it */
     const layer_first_contact *fc = &L->fc;
-    double t_open = fc->t_open, ed_open = fc->ed_open;
+    double t_open = fc->t_open, ed_open = fc->ed_open, kb_open = fc->kb_open;
     /* undecided (NaN) when fewer than three step ends fell in the contact, so
      * that its smallest block energy is not bracketed */
     double t_min = fc->t_min, kb_min = fc->kb_min, ed_min = fc->ed_min, edb_min = fc->edb_min;
@@ -523,6 +523,7 @@ int gw_layer_impact(const gw_layer_sample *smp, const gw_layer_params *lp0,
     res->block_loss_first_contact = (res->ledger[0].kinetic_block - kb_min) / res->e_incident;
     res->t_contact_open = t_open;
     res->dissipated_contact_open = ed_open / res->e_incident;
+    res->block_loss_contact_open = (res->ledger[0].kinetic_block - kb_open) / res->e_incident;
     gw_layer_free(L);
     if ((rc = gw_layer_crowns(res)) != GW_OK) {
         gw_layer_impact_result_free(res);

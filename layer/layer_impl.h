@@ -53,8 +53,8 @@ typedef struct layer_first_contact {
     int frozen;            /* the verdict is in: no more updates */
     int n_touch;           /* evaluations that saw it overlapped before it opened */
     double kb_min, t_min, ed_min, edb_min;
-    double t_open, ed_open; /* NaN until it opens */
-    double t_last, ov_last, ed_last; /* the last evaluation that saw it overlapped */
+    double t_open, ed_open, kb_open; /* NaN until it opens */
+    double t_last, ov_last, ed_last, kb_last; /* the last evaluation that saw it overlapped */
 } layer_first_contact;
 
 struct gw_layer {

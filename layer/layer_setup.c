@@ -113,6 +113,7 @@ static const gw_param outcome_fields[] = {
     RD("contact_angle", r.contact_angle_deg, "deg", "incident velocity to block-target contact normal"),
     RD("t_contact_open", r.t_contact_open, "s", "block-target contact opening (NaN: not by the verdict)"),
     RD("dissipated_contact_open", r.dissipated_contact_open, "", "E_d / E_incident then"),
+    RD("block_loss_contact_open", r.block_loss_contact_open, "", "block kinetic energy lost by then / E_incident (B.28's loss for every R_b/R_m)"),
     RD("wave_speed", r.wave_speed, "m/s", "crown-to-crown speed of the strain-energy peaks"),
     RD("wave_speed_err", r.wave_speed_err, "m/s", "its standard error"),
     RD("wave_speed_kinetic", r.wave_speed_kin, "m/s", "the same from the kinetic-energy peaks"),

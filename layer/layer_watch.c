@@ -55,7 +55,8 @@ void gw_layer_block_extremes_get(const gw_layer *L, gw_layer_block_extremes *ex)
 void layer_watch_first_contact(gw_layer *L, int target)
 {
     L->fc = (layer_first_contact){.target = target, .kb_min = INFINITY, .t_min = NAN, .ed_min = NAN,
-                                  .edb_min = NAN, .t_open = NAN, .ed_open = NAN, .t_last = NAN};
+                                  .edb_min = NAN, .t_open = NAN, .ed_open = NAN, .kb_open = NAN,
+                                  .t_last = NAN};
 }
 
 /* The first contact at one evaluation of the roots (state y at t). */
@@ -75,9 +76,9 @@ static void first_contact(gw_layer *L, double t, const double *y)
     layer_disc_xy(L, y, f->target, pt, arm);
     const double ov = L->r[L->block] + L->r[f->target] - hypot(pb[0] - pt[0], pb[1] - pt[1]);
     const double *tail = y + 6 * L->nb + L->nc, ed = tail[0];
+    const double *s = y + 6 * bb;
+    const double kb = 0.5 * L->m[bb] * (s[3] * s[3] + s[4] * s[4]) + 0.5 * L->inertia[bb] * s[5] * s[5];
     if (ov > 0) {
-        const double *s = y + 6 * bb;
-        const double kb = 0.5 * L->m[bb] * (s[3] * s[3] + s[4] * s[4]) + 0.5 * L->inertia[bb] * s[5] * s[5];
         f->n_touch++;
         if (kb < f->kb_min) {
             f->kb_min = kb;
@@ -85,12 +86,13 @@ static void first_contact(gw_layer *L, double t, const double *y)
             f->ed_min = ed;
             f->edb_min = L->reg_n > 0 ? tail[2 + 2 * (L->reg_n + 1)] : NAN;
         }
-        f->t_last = t, f->ov_last = ov, f->ed_last = ed;
+        f->t_last = t, f->ov_last = ov, f->ed_last = ed, f->kb_last = kb;
     } else if (f->n_touch > 0 && t > f->t_last) {
         /* opened between the last evaluation that saw it overlapped and this one */
         const double a = f->ov_last / (f->ov_last - ov);
         f->t_open = f->t_last + a * (t - f->t_last);
         f->ed_open = f->ed_last + a * (ed - f->ed_last);
+        f->kb_open = f->kb_last + a * (kb - f->kb_last);
     }
 }
 

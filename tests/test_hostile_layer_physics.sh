@@ -112,7 +112,12 @@ import json
 d = json.load(open("a.json")); r = '$r'; m = r ** (2 if "'$law'" == "disc" else 3)
 ok = abs(d["e_n_first"] - (1 - m) / (1 + m)) < 1e-6 if r < 1 else \
      abs(d["ledger_end"]["kinetic_block"] / d["e_incident"] - ((m - 1) / (m + 1)) ** 2) < 1e-6
-print("ok" if ok else "e_n_first %r ledger %r" % (d["e_n_first"], d["ledger_end"]))'
+# the loss at the contact opening is B.28 for every r; at the smallest block
+# energy it is 1 where the block stops inside the contact (r < 1)
+ok = ok and abs(d["block_loss_contact_open"] - 4 * m / (1 + m) ** 2) < 1e-6 and \
+     abs(d["block_loss_first_contact"] - (1 if m < 1 else 4 * m / (1 + m) ** 2)) < 1e-6
+print("ok" if ok else "e_n_first %r ledger %r loss open %r first %r" % (d["e_n_first"], d["ledger_end"],
+      d.get("block_loss_contact_open"), d["block_loss_first_contact"]))'
     done
 done
 cat >own.py <<'EOF'

@@ -171,7 +171,13 @@ static void test_binary(void)
     gw_test_abs(gw_stats_binary_loss(1, 1), 1, 1e-15, "binary loss r = 1 (sphere)");
     gw_test_rel(gw_stats_binary_loss(2, 0), 16.0 / 25, 1e-15, "binary loss r = 2, discs: 4*4/25");
     gw_test_rel(gw_stats_binary_loss(2, 1), 32.0 / 81, 1e-15, "binary loss r = 2, spheres: 4*8/81");
-    gw_test_rel(gw_stats_binary_loss(0.5, 1), 32.0 / 81, 1e-14, "r and 1/r lose the same fraction");
+    /* below r = 1 the binary block stops and rebounds inside the contact: the
+     * smallest energy it has there (what block_loss_first_contact measures) is
+     * 0, so the loss is 1, not B.28's 4 m/(1 + m)^2 at the contact's opening */
+    gw_test_abs(gw_stats_binary_loss(0.5, 0), 1, 0, "binary loss r = 0.5, discs: the block stops");
+    gw_test_abs(gw_stats_binary_loss(0.999, 1), 1, 0, "binary loss r = 0.999, spheres: the block stops");
+    gw_test_rel(gw_stats_binary_loss(1.001, 0), 4 * 1.002001 / (2.002001 * 2.002001), 1e-15,
+                "binary loss just above r = 1: the formula");
 }
 
 static void test_diagram(void)

@@ -143,7 +143,7 @@ for r in (1, 2):
     x = b.get(r)
     if not x or x["alpha"] != 30 or x["block_loss_first_contact"]["n"] != 4 \
             or abs(x["block_loss_first_contact"]["mean"] - (0.1 * r + 0.1)) > 1e-12 \
-            or abs(x["binary_disc"] - 4 * r**2 / (1 + r**2)**2) > 1e-15 or abs(x["binary_sphere"] - 4 * r**3 / (1 + r**3)**2) > 1e-15:
+            or abs(x["binary_disc"] - 4 * r**2 / (1 + r**2)**2) > 1e-15 or abs(x["binary_sphere"] - 4 * r**3 / (1 + r**3)**2) > 1e-15:  # r >= 1
         bad.append("binary %s" % x)
 print("\n".join(bad))
 sys.exit(1 if bad else 0)

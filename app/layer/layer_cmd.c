@@ -303,6 +303,7 @@ static cJSON *impact_json(const impact_cli *c, const gw_layer_impact_result *r,
     cJSON_AddNumberToObject(o, "contact_angle", r->contact_angle_deg);
     cJSON_AddNumberToObject(o, "t_contact_open", r->t_contact_open);
     cJSON_AddNumberToObject(o, "dissipated_contact_open", r->dissipated_contact_open);
+    cJSON_AddNumberToObject(o, "block_loss_contact_open", r->block_loss_contact_open);
     cJSON_AddNumberToObject(o, "wave_speed", r->wave_speed);
     cJSON_AddNumberToObject(o, "wave_speed_err", r->wave_speed_err);
     cJSON_AddNumberToObject(o, "wave_speed_kinetic", r->wave_speed_kin);

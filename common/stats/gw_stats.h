@@ -273,9 +273,15 @@ typedef struct gw_stats_b31_fit {
 int gw_stats_b31_fit_points(const double *x, const double *h, int n, const gw_stats_b31 *start,
                             int free_mask, gw_stats_b31_fit *fit, gw_err *err);
 
-/* Binary-impact fraction of the block's kinetic energy lost to a target at
- * rest (B.24-B.28): 4 m / (1 + m)^2 with mass ratio m = r^2 (discs) or r^3
- * (spheres), r = R_b/R_m. */
+/* The binary impact's value (B.24-B.28, a target at rest) of the quantity
+ * block_loss_first_contact measures, the fraction of the block's kinetic
+ * energy gone at its smallest during the contact: 4 m / (1 + m)^2 with mass
+ * ratio m = r^2 (discs) or r^3 (spheres), r = R_b/R_m, for m > 1, where the
+ * block goes on forward and its energy is smallest as the contact opens; 1 for
+ * m <= 1, where the block stops and rebounds inside the contact. (B.28's
+ * 4 m / (1 + m)^2 below m = 1 is the loss at the contact's opening, the
+ * impact's block_loss_contact_open; it read 0.64 at r = 0.5 against a measured
+ * 1 before this was the binary value of what is measured.) */
 double gw_stats_binary_loss(double r, int sphere);
 
 /* ---- the whole analysis (gw_stats_run.c) ---- */

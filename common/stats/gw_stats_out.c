@@ -404,8 +404,8 @@ static void write_binary(FILE *fp, const gw_stats_analysis *R)
     head(fp, R, "first contact against the binary impact (B.24-B.28): block_loss_first_contact = (E_kb(0) - "
                 "E_kb)/E_incident at the end of the block's first contact, over the rows with this R_b/R_m and "
                 "incidence (deg) where it is defined (n_block_loss_first_contact of them); "
-                "binary_disc = 4 r^2/(1 + r^2)^2 (disc masses, the layer default), binary_sphere = "
-                "4 r^3/(1 + r^3)^2, r = R_b/R_m");
+                "binary_disc = 4 m/(1 + m)^2 with m = r^2 (disc masses, the layer default), binary_sphere the "
+                "same with m = r^3, r = R_b/R_m, and 1 where m <= 1 (the block stops inside the contact)");
     gw_fprintf(fp, "rb_rm,alpha,n_block_loss_first_contact,block_loss_first_contact_mean,"
                 "block_loss_first_contact_std,binary_disc,binary_sphere\n");
     for (int k = 0; k < R->nbin; k++) {

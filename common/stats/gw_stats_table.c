@@ -1145,5 +1145,7 @@ int gw_stats_groups_make(const gw_stats_table *t, double criterion, gw_stats_gro
 double gw_stats_binary_loss(double r, int sphere)
 {
     double m = sphere ? r * r * r : r * r;
-    return 4 * m / ((1 + m) * (1 + m));
+    /* a block no heavier than its target stops and turns back inside the
+     * contact: its smallest energy there is 0 */
+    return m <= 1 ? 1.0 : 4 * m / ((1 + m) * (1 + m));
 }

@@ -60,6 +60,8 @@ typedef struct run_state {
     double t_max;            /* the run's time limit, s */
     double t_expect;         /* the collision's expected length, s (collide_plan) */
     const gw_solver *s;      /* for its step count */
+    const gw_solver_type *type; /* the backend (the blow-up's advice) */
+    double wg;               /* the largest work gravity has done so far, J */
 } run_state;
 
 /* Steps a whole run may take: the plan bounds them at 1e8 over the expected
@@ -156,7 +158,7 @@ static int observe(run_state *st, double t, const double *y, int is_event)
     }
     gw_chain_energy e;
     gw_chain_energy_of(st->c, y, &e);
-    double err = fabs(e.total - r->e0) / r->e0;
+    double err = chain_energy_rel_error(&e, r->e0, &st->wg);
     if (err > r->energy_error)
         r->energy_error = err;
     if (st->o->sample)
@@ -341,7 +343,7 @@ static int collide_after(void *ctx, double t, const double *y, gw_err *err)
 {
     run_state *st = ctx;
     gw_chain_result *r = st->r;
-    if (chain_blown_up(st->c, y, r->energy_error, "chain", t, err) != GW_OK)
+    if (chain_blown_up(st->c, y, r->energy_error, st->type, "chain", t, err) != GW_OK)
         return GW_ESOLVER;
     if (st->s) {
         gw_solver_stats ss;
@@ -669,6 +671,7 @@ int gw_chain_collide(const gw_chain *c, const gw_chain_run_opts *o, gw_chain_res
     st.t_max = t_max;
     st.t_expect = pl.t_expect;
     st.s = s;
+    st.type = type;
     if (observe(&st, t, y, 0) != 0)
         goto stopped;
     gw_drive drive = {.t_end = t_max, .dt_out = dt_out, .k_out = 1, .on_root = collide_root,

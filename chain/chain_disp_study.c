@@ -33,9 +33,9 @@ static const gw_param disp_params[] = {
         "seed of the random mode phases of the initial velocities [1]"),
     ROW("min-bins", GW_PARAM_DOUBLE, min_bins, "", 1, GW_CHAIN_DISP_MIN_BINS_MAX, 0, "8", "B",
         "ridge resolved from B frequency bins up, B <= T/2 - 2 [8]"),
-    CHOICE("solver", solver, "rk4,cvode,arkode", NULL, "NAME", "rk4, cvode or arkode [rk4]"),
+    CHOICE("solver", solver, "rk4,cvode,arkode", NULL, "NAME", "rk4, cvode or arkode [rk4; column-n: cvode]"),
     CHOICE("method", method, "default,adams,bdf,erk,dirk", NULL, "NAME",
-           "cvode: adams|bdf; arkode: erk|dirk (bdf, dirk: fixed ends) [adams / erk]"),
+           "cvode: adams|bdf; arkode: erk|dirk (bdf, dirk: fixed ends) [adams / erk; column-n: bdf / erk]"),
     ROW("rtol", GW_PARAM_DOUBLE, rtol, "", GW_TOL_MIN, GW_TOL_MAX, 0, NULL, "R", "relative tolerance, cvode/arkode [1e-10]"),
     ROW("atol", GW_PARAM_DOUBLE, atol, "", GW_TOL_MIN, GW_TOL_MAX, 0, NULL, "A",
         "absolute tolerance in units of the perturbation scales [1e-10]"),
@@ -142,7 +142,11 @@ int gw_chain_dispersion_solver(const gw_chain_dispersion_setup *s, const gw_solv
                                gw_solver_params *sp, gw_err *err)
 {
     char sname[16], mname[16];
-    const char *sv = choice(s, "solver", "rk4", sname, sizeof sname);
+    /* the column (column_n > 0) is `granwave chain`'s collision and takes its
+     * default solver, cvode; the method and the tolerances are checked against
+     * the solver that runs (they were checked against rk4, and --column-n with
+     * --rtol or --method adams was refused as having no effect with rk4) */
+    const char *sv = choice(s, "solver", s->column_n > 0 ? "cvode" : "rk4", sname, sizeof sname);
     const char *mv = choice(s, "method", "default", mname, sizeof mname);
     *type = gw_solver_type_find(sv);
     int m = gw_solver_method_find(mv);
@@ -198,10 +202,7 @@ static int run_column(const gw_chain_dispersion_setup *s, gw_chain_dispersion_ou
     int rc = gw_chain_dispersion_solver(s, &type, &o.sp, err);
     if (rc != GW_OK)
         return rc;
-    if (s->solver >= 0)
-        o.solver = type;
-    else
-        o.sp.method = GW_METHOD_DEFAULT;
+    o.solver = type; /* cvode unless solver is given, as the chain's default */
     o.sp.rtol = isnan(s->rtol) ? 1e-12 : s->rtol; /* the tolerances of `granwave chain` */
     o.sp.atol = isnan(s->atol) ? 1e-12 : s->atol;
     o.dt_out = gw_chain_tau1(p.mass, p.kwall, p.v_imp) / 200;

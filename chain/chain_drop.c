@@ -119,6 +119,8 @@ typedef struct drop_state {
     double ep_start, ep_vin, ep_fmax, ep_tfmax, ep_fsample, ep_tsample;
     int ep_peaks, ep_cluster, ep_cluster_sample, ep_index;
     double t_end1, t_start2; /* end of the first episode, start of the second (NaN) */
+    const gw_solver_type *type; /* the backend (the blow-up's advice) */
+    double wg;               /* the largest work gravity has done so far, J */
 } drop_state;
 
 static int cluster_of(const drop_state *st)
@@ -284,7 +286,7 @@ static int observe(drop_state *st, double t, const double *y, int is_event)
     }
     gw_chain_energy e;
     gw_chain_energy_of(st->d->c, y, &e);
-    double err = fabs(e.total - r->e0) / r->e0;
+    double err = chain_energy_rel_error(&e, r->e0, &st->wg);
     if (err > r->energy_error)
         r->energy_error = err;
     r->e_end = e;
@@ -387,7 +389,7 @@ static int drop_output(void *ctx, double t, double *y, gw_err *err)
 static int drop_after(void *ctx, double t, const double *y, gw_err *err)
 {
     const drop_state *st = ctx;
-    if (chain_blown_up(st->d->c, y, st->r->energy_error, "drop", t, err) != GW_OK)
+    if (chain_blown_up(st->d->c, y, st->r->energy_error, st->type, "drop", t, err) != GW_OK)
         return GW_ESOLVER;
     if (st->o->energy_tol > 0 && st->r->energy_error > st->o->energy_tol)
         return gw_err_set(err, GW_EENERGY, "drop: relative energy error %.3g exceeds the limit %.3g at t = %.9g s",
@@ -498,6 +500,7 @@ int gw_chain_drop_run(const gw_chain_drop_params *p, const gw_chain_run_opts *o,
     if ((rc = chain_steps_check(type, &sp, &o->sp, p->t_max, "t-max", err)) != GW_OK ||
         (rc = chain_sensor_steps_check(&q, type, p->t_max, "t-max", err)) != GW_OK)
         goto done;
+    st.type = type;
     if ((rc = gw_solver_create(type, &d.sys, &sp, 0.0, y, &s, err)) != GW_OK)
         goto done;
     rc = drop_loop(&st, s, y, roots, err);

@@ -474,8 +474,15 @@ static double wall_reduced_mass(const gw_chain_params *p)
     return M > 0 ? m0 * M / (m0 + M) : m0;
 }
 
-int chain_blown_up(const gw_chain *c, const double *y, double energy_error, const char *who, double t,
-                   gw_err *err)
+double chain_energy_rel_error(const gw_chain_energy *e, double e0, double *wg)
+{
+    if (-e->gravity > *wg)
+        *wg = -e->gravity;
+    return fabs(e->total - e0) / (e0 + *wg);
+}
+
+int chain_blown_up(const gw_chain *c, const double *y, double energy_error, const gw_solver_type *type,
+                   const char *who, double t, gw_err *err)
 {
     const long dim = c->sys.dim;
     char what[64] = "";
@@ -486,9 +493,10 @@ int chain_blown_up(const gw_chain *c, const double *y, double energy_error, cons
         gw_snprintf(what, sizeof what, "relative energy error %.3g", energy_error);
     if (!what[0])
         return GW_OK;
+    /* the advice is the backend's: an adaptive one is not helped by dt, nor by "use cvode" */
     return gw_err_set(err, GW_ESOLVER, "%s: the solution blew up at t = %.9g s (%s): the step is too long for the "
-                      "model's fastest time scale (a contact, the sensor body, damping or friction); lower dt (or "
-                      "dt-max), or use cvode", who, t, what);
+                      "model's fastest time scale (a contact, the sensor body, damping or friction); %s", who, t,
+                      what, type == gw_solver_rk4 ? "lower dt (or dt-max), or use cvode" : "lower dt-max, rtol or atol");
 }
 
 double chain_contact_tau_min(const gw_chain_params *p, double v)

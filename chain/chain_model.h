@@ -72,8 +72,17 @@ int chain_sensor_steps_check(const gw_chain_params *p, const gw_solver_type *typ
  * starts "WHO: the solution blew up at t = ..." and says which. GW_OK otherwise.
  * The energy monitor alone misses it: a NaN error never exceeds the largest so
  * far. */
-int chain_blown_up(const gw_chain *c, const double *y, double energy_error, const char *who, double t,
-                   gw_err *err);
+int chain_blown_up(const gw_chain *c, const double *y, double energy_error, const gw_solver_type *type,
+                   const char *who, double t, gw_err *err);
+
+/* The relative energy error of energies e against the initial total e0 (J):
+ * |E - e0| over the energy the run has held, e0 plus the largest work gravity
+ * has done on the column so far (*wg, J, updated: max of -e->gravity, 0 at the
+ * start). Without gravity the scale is e0 itself, bit for bit. Over e0 alone,
+ * a column set on the wall slowly under gravity (v_imp 1e-6 m/s, where gravity
+ * puts 1e8 times e0 into motion) read an error of 1e-8 of its energy as 1 and
+ * was stopped as blown up. */
+double chain_energy_rel_error(const gw_chain_energy *e, double e0, double *wg);
 
 /* The shortest binary contact time tau_1 (gw_chain_tau1) at relative speed v over
  * the column's contacts: every pair of beads (reduced mass, its coefficient) and

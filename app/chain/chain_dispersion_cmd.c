@@ -78,8 +78,8 @@ static void disp_options(disp_cli *c, gw_opt *o)
     o[i++] = DOPT_D("amp", &c->amp, "A", "rms overlap perturbation / d0 of the initial velocities [1e-3]", 0, 0.1, 1);
     o[i++] = DOPT_L("seed", &c->seed, "S", "seed of the random mode phases of the initial velocities [1]", 0, 9.0e18);
     o[i++] = DOPT_D("min-bins", &c->min_bins, "B", "ridge resolved from B frequency bins up, B <= T/2 - 2 [8]", 1, GW_CHAIN_DISP_MIN_BINS_MAX, 0);
-    o[i++] = DOPT_S("solver", &c->solver, "NAME", "rk4, cvode or arkode [rk4]");
-    o[i++] = DOPT_S("method", &c->method, "NAME", "cvode: adams|bdf; arkode: erk|dirk (bdf, dirk: fixed ends) [adams / erk]");
+    o[i++] = DOPT_S("solver", &c->solver, "NAME", "rk4, cvode or arkode [rk4; column-n: cvode]");
+    o[i++] = DOPT_S("method", &c->method, "NAME", "cvode: adams|bdf; arkode: erk|dirk (bdf, dirk: fixed ends) [adams / erk; column-n: bdf / erk]");
     o[i++] = DOPT_D("rtol", &c->rtol, "R", "relative tolerance, cvode/arkode [1e-10]", GW_TOL_MIN, GW_TOL_MAX, 0);
     o[i++] = DOPT_D("atol", &c->atol, "A", "absolute tolerance in units of the perturbation scales [1e-10]", GW_TOL_MIN, GW_TOL_MAX, 0);
     o[i++] = (gw_opt){.name = "fftw-measure", .kind = GW_OPT_FLAG, .dest = &c->measure,
@@ -342,6 +342,10 @@ static int disp_column(const disp_cli *c, const gw_opt *opts, int argc, char **a
         cJSON_AddNumberToObject(js, "column_n", p.n);
         cJSON_AddNumberToObject(js, "v_imp", p.v_imp);
         cJSON_AddStringToObject(js, "solver", gw_solver_type_name(o.solver));
+        /* the method the column ran (the chain's: cvode bdf, arkode erk by default) */
+        cJSON_AddStringToObject(js, "method", o.solver == gw_solver_rk4 ? "none"
+                                              : strcmp(c->method, "default") != 0 ? c->method
+                                              : o.solver == gw_solver_cvode ? "bdf" : "erk");
         cJSON_AddNumberToObject(js, "rtol", o.sp.rtol);
         cJSON_AddNumberToObject(js, "atol", o.sp.atol);
         cJSON_AddNumberToObject(js, "mass", p.mass);
@@ -361,7 +365,7 @@ static int disp_column(const disp_cli *c, const gw_opt *opts, int argc, char **a
         cJSON_AddStringToObject(js, "fftw_planner", c->measure ? "measure" : "estimate");
         disp_wisdom_json(js, c);
         { /* "settings", as every command's JSON (formats.md): the run's settings above, again */
-            static const char *const keys[] = {"column_n", "v_imp", "solver", "rtol", "atol", "mass", "k",
+            static const char *const keys[] = {"column_n", "v_imp", "solver", "method", "rtol", "atol", "mass", "k",
                                                "kwall", "radius", "dt_out", "fftw_planner"};
             cJSON *set = cJSON_CreateObject();
             for (size_t i = 0; i < sizeof keys / sizeof keys[0]; i++)

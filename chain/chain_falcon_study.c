@@ -76,7 +76,7 @@ static const gw_param falcon_params[] = {
      .max = GW_CHAIN_VIMP_MAX, .def = "0.3", .metavar = "V,V..", .help = "impact velocities, m/s [0.3]"},
     {.name = "heights", .type = GW_PARAM_LIST, .offset = OWN(heights), .unit = "mm", .min = GW_CHAIN_HEIGHT_MIN_MM,
      .max = GW_CHAIN_VIMP_MAX * GW_CHAIN_VIMP_MAX / (2 * G_EARTH * 1e-3), .def = "1.9,2.9,3.1,5.1",
-     .metavar = "H,H..", .help = "drop heights, mm, v = sqrt(2 g h) ['none' to skip] [1.9,2.9,3.1,5.1]"},
+     .metavar = "H,H..", .help = "drop heights, mm, v = sqrt(2 g h), g the gravity or 9.81 when off ['none' to skip] [1.9,2.9,3.1,5.1]"},
     {.name = "n", .type = GW_PARAM_RANGE, .offset = OWN(n), .unit = "", .min = 1, .max = 100000, .def = "1:40",
      .metavar = "A:B", .help = "column sizes [1:40]"},
     {.name = "accuracy", .type = GW_PARAM_DOUBLE, .offset = OWN(accuracy), .unit = "", .min = 0, .max = 1e-2,
@@ -275,10 +275,14 @@ int gw_chain_falcon_run(const gw_chain_falcon_setup *s, gw_progress_fn progress,
     if ((rc = alloc_outcome(out, nv, nn, err)) != GW_OK)
         return rc;
     double vmax = 0;
+    /* the fall in the run's gravity when it has one (as drop's), else Earth's:
+     * with gravity 100 the heights were converted at 9.81 while the column
+     * felt 100 (falcon --heights 5.1 --gravity 100: 0.316 m/s, not 1.01) */
+    const double g_fall = s->col.gravity > 0 ? s->col.gravity : G_EARTH;
     for (int i = 0; i < nv; i++) {
         int is_h = i >= s->vimp.n;
         out->h_mm[i] = is_h ? s->heights.v[i - s->vimp.n] : NAN;
-        out->v_imp[i] = is_h ? sqrt(2 * G_EARTH * out->h_mm[i] * 1e-3) : s->vimp.v[i];
+        out->v_imp[i] = is_h ? sqrt(2 * g_fall * out->h_mm[i] * 1e-3) : s->vimp.v[i];
         vmax = fmax(vmax, out->v_imp[i]);
     }
     for (int k = 0; k < nn; k++)

@@ -166,7 +166,7 @@ void gw_chain_falcon_analyse(const gw_chain_params *p, double v, const gw_chain_
 typedef struct gw_chain_falcon_setup {
     gw_chain_setup col;
     gw_param_list vimp;    /* impact velocities, m/s [0.3] */
-    gw_param_list heights; /* drop heights, mm, v = sqrt(2 g h), g = 9.81 [1.9,2.9,3.1,5.1] */
+    gw_param_list heights; /* drop heights, mm, v = sqrt(2 g h), g = gravity, or 9.81 when 0 [1.9,2.9,3.1,5.1] */
     long n[2];             /* column sizes [1:40] */
     double accuracy;       /* relative accuracy of F_max and tau_N for the RK4 step
                               study, used when every solver row of col is at its

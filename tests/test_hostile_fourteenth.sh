@@ -17,6 +17,11 @@
 #    the fixed-step rk4 solver" and `--method adams` as "not a method of solver
 #    rk4" (exit 2, the program and Python alike); the JSON did not record the
 #    method.
+#  3 falcon --heights converted every height with g = 9.81 whatever --gravity
+#    the column ran under (drop uses its own gravity for the same conversion):
+#    --heights 5.1 --gravity 100 ran at 0.316 m/s, not sqrt(2 100 5.1e-3) =
+#    1.01 m/s. The fall now uses the run's gravity when it has one, 9.81 when
+#    it is off (the default), in the program and the library alike.
 set -u
 GW=$1
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
@@ -105,6 +110,22 @@ refused "g: dispersion --method adams (the study: rk4)" "^granwave dispersion --
     dispersion --method adams
 refused "2: dispersion --column-n 5 --method erk: named as not a method of cvode, the solver that runs" "^granwave dispersion --method: 'erk' is not a method of solver cvode" \
     dispersion --column-n 5 --method erk
+
+# --- 3: falcon's heights fall in the run's gravity
+for g in 0 100; do
+    if runs_json "3: falcon --heights 5.1 --gravity $g" "$tmp/fh$g.json" falcon --n 1:2 --heights 5.1 --vimp 0.3 --gravity $g --quiet; then
+        want=$($PY -c "import math; print(math.sqrt(2 * ($g if $g > 0 else 9.81) * 5.1e-3))")
+        [ "$(jq_py "$tmp/fh$g.json" "abs(d['velocities'][1]['v_imp'] - $want) <= 1e-15 * $want")" = True ] &&
+            ok "3: falcon --heights 5.1 --gravity $g runs at sqrt(2 g h) = $want m/s" ||
+            ko "3: falcon --gravity $g: v_imp $(jq_py "$tmp/fh$g.json" "d['velocities'][1]['v_imp']") against $want"
+    fi
+done
+PYTHONPATH="$SRC/python" GRANWAVE_LIB="$(dirname "$GW")/lib" $PY -c "
+import json, granwave
+r = granwave.falcon(n='1:2', vimp=[0.3], heights=[5.1], gravity=100)
+assert r['v_imp'][1] == json.load(open('$tmp/fh100.json'))['velocities'][1]['v_imp'], r['v_imp']
+" 2>"$tmp/pyerr" && ok "3: granwave.falcon(heights=[5.1], gravity=100): the program's speed" ||
+    ko "3: Python: $(tail -1 "$tmp/pyerr")"
 
 echo "$passes passed, $fails failed"
 [ $fails -eq 0 ]

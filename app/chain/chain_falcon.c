@@ -294,7 +294,7 @@ int gw_cmd_falcon(int argc, char **argv)
     opts[k++] = (gw_opt){.name = "vimp", .kind = GW_OPT_STRING, .dest = &vlist, .metavar = "V,V..",
                          .help = "impact velocities, m/s [0.3]"};
     opts[k++] = (gw_opt){.name = "heights", .kind = GW_OPT_STRING, .dest = &hlist, .metavar = "H,H..",
-                         .help = "drop heights, mm, v = sqrt(2 g h) ['none' to skip] [1.9,2.9,3.1,5.1]"};
+                         .help = "drop heights, mm, v = sqrt(2 g h), g the gravity or 9.81 when off ['none' to skip] [1.9,2.9,3.1,5.1]"};
     opts[k++] = (gw_opt){.name = "n", .kind = GW_OPT_STRING, .dest = &nrange, .metavar = "A:B",
                          .help = "column sizes [1:40]"};
     opts[k++] = (gw_opt){.name = "accuracy", .kind = GW_OPT_DOUBLE, .dest = &accuracy, .metavar = "A",
@@ -334,6 +334,9 @@ int gw_cmd_falcon(int argc, char **argv)
         code = chain_cli_fail("falcon: out of memory");
         goto out;
     }
+    /* heights fall in the run's gravity when it has one, else Earth's (the
+     * library's rule, gw_chain_falcon_run) */
+    const double g_fall = f.c.gravity > 0 ? f.c.gravity : G_EARTH;
     for (int i = 0; i < f.nv; i++) {
         int is_h = i >= nvv;
         double x = is_h ? hh[i - nvv] : vv[i];
@@ -343,7 +346,7 @@ int gw_cmd_falcon(int argc, char **argv)
             goto out;
         }
         f.fv[i].h_mm = is_h ? x : NAN;
-        f.fv[i].v = f.v[i] = is_h ? sqrt(2 * G_EARTH * x * 1e-3) : x;
+        f.fv[i].v = f.v[i] = is_h ? sqrt(2 * g_fall * x * 1e-3) : x;
     }
     if (gw_chain_study_speeds_check(f.v, f.nv, nvv, &err) != GW_OK) {
         code = chain_cli_study_fail("falcon", err.msg);

@@ -28,8 +28,6 @@ GranwaveIOError (an OSError), a failed run GranwaveRunError (a RuntimeError).
 The library is found in the build tree (./setup.sh build), next to an
 installed module (cmake --install), or at GRANWAVE_LIB.
 """
-import ctypes as _ctypes
-
 import numpy as _np
 
 from . import _core
@@ -97,15 +95,15 @@ _SNAP_COLS = ("x", "y", "theta", "vx", "vy", "omega")
 
 
 def _mass_law_name(code):
-    """The mass law's name as the JSON's settings give it (the library's text)."""
-    f = _clib.gw_layer_mass_law_name
-    f.restype, f.argtypes = _ctypes.c_char_p, [_ctypes.c_int]
-    return f(int(code)).decode()
+    """The mass law by its choice name ('disc', 'sphere': what the keyword takes
+    and the first word of the JSON settings' name), from the impact's table."""
+    choices = next(p.choices for p in _study("layer-impact").params if p.keyword == "mass_law")
+    return choices[int(code)]
 
 
 def layer_impact(*, progress=None, **kwargs):
     r = _study("layer-impact").run(kwargs, progress)
-    r["mass_law"] = _mass_law_name(r["mass_law"])  # 0/1 before; the JSON's name, as softwall's sheet_law
+    r["mass_law"] = _mass_law_name(r["mass_law"])  # 0/1 before; its name, as softwall's sheet_law
     ng = max(r["nrings"] - 1, 0)  # ring pairs k, k + 1; NaN without the analysis (the program's null)
     for k in ("xcorr_delay", "xcorr_rho"):
         if k not in r:

@@ -461,7 +461,7 @@ for d in 1e-2; do
     fi
 done
 runs "layer-impact --dt-out 0.05 --until verdict (text)" layer-impact --sample "$S12" --dt-out 0.05 --until verdict
-grep -qE "^  first contact: E_d = 0.05[0-9]* of E_incident \(ends at [0-9.]+ ms\)$" "$tmp/stdout" &&
+grep -qE "^  first contact: E_d = 0.05[0-9]* of E_incident, block loss [0-9.e-]+ \(ends at [0-9.]+ ms\); at its opening block loss ([0-9.e-]+|n/a) \(B.28\)$" "$tmp/stdout" &&
     ok "  the text gives the first contact (read at step ends, not at the 50 ms samples)" ||
     ko "  text: $(grep 'first contact' "$tmp/stdout")"
 grep -qx "  wave speed unresolved (strain peaks, [0-9]* rings), unresolved (kinetic)" "$tmp/stdout" &&

@@ -663,18 +663,26 @@ int gw_cmd_layer_impact(int argc, char **argv)
                    gw_version(), c.ip.rb_rm, c.ip.vi, c.ip.alpha_deg, c.solver);
             printf("  mass law %s, %d mobile + %d frozen particles\n",
                    gw_layer_mass_law_name(c.m.lp.mass_law), r.n_mobile, r.n_frozen);
-            printf("  bounced %s: e_n = %.4g, e = %.4g, alpha_r = %.4g deg (V_nr = %.4g m/s at T_i = %.4g ms, "
-                   "T_f = %.4g ms)\n", r.bounced > 0 ? "yes" : r.bounced == 0 ? "no" : "undecided", r.e_n, r.e,
-                   r.alpha_r_deg, r.v_nr, r.t_rebound * 1e3, r.t_f * 1e3);
-            printf("  first free-flight maximum: e_n = %.4g, e = %.4g, alpha_r = %.4g deg (V_nr = %.4g m/s at "
-                   "%.4g ms; left at %.4g ms)\n", r.e_n_first, r.e_first, r.alpha_r_first_deg, r.v_nr_first,
-                   r.t_rebound_first * 1e3, r.t_leave * 1e3);
-            printf("  penetration %.4g m (%.3g R_m)\n", r.penetration, r.penetration / c.rm);
+            /* what the JSON gives as null (undecided, not reached) reads n/a */
+            char v[6][32];
+            printf("  bounced %s: e_n = %s, e = %s, alpha_r = %s deg (V_nr = %s m/s at T_i = %s ms, "
+                   "T_f = %s ms)\n", r.bounced > 0 ? "yes" : r.bounced == 0 ? "no" : "undecided",
+                   gw_cli_num(v[0], sizeof v[0], "%.4g", r.e_n), gw_cli_num(v[1], sizeof v[1], "%.4g", r.e),
+                   gw_cli_num(v[2], sizeof v[2], "%.4g", r.alpha_r_deg), gw_cli_num(v[3], sizeof v[3], "%.4g", r.v_nr),
+                   gw_cli_num(v[4], sizeof v[4], "%.4g", r.t_rebound * 1e3), gw_cli_num(v[5], sizeof v[5], "%.4g", r.t_f * 1e3));
+            printf("  first free-flight maximum: e_n = %s, e = %s, alpha_r = %s deg (V_nr = %s m/s at "
+                   "%s ms; left at %s ms)\n", gw_cli_num(v[0], sizeof v[0], "%.4g", r.e_n_first),
+                   gw_cli_num(v[1], sizeof v[1], "%.4g", r.e_first), gw_cli_num(v[2], sizeof v[2], "%.4g", r.alpha_r_first_deg),
+                   gw_cli_num(v[3], sizeof v[3], "%.4g", r.v_nr_first), gw_cli_num(v[4], sizeof v[4], "%.4g", r.t_rebound_first * 1e3),
+                   gw_cli_num(v[5], sizeof v[5], "%.4g", r.t_leave * 1e3));
+            printf("  penetration %s m (%s R_m)\n", gw_cli_num(v[0], sizeof v[0], "%.4g", r.penetration),
+                   gw_cli_num(v[1], sizeof v[1], "%.3g", r.penetration / c.rm));
             if (isnan(r.t_first_contact))
                 printf("  first contact: unresolved (fewer than 3 steps in it: lower --dt)\n");
             else
-                printf("  first contact: E_d = %.3g of E_incident (ends at %.4g ms)\n",
-                       r.dissipated_first_contact, r.t_first_contact * 1e3);
+                printf("  first contact: E_d = %.3g of E_incident, block loss %.3g (ends at %.4g ms); at its opening "
+                       "block loss %s (B.28)\n", r.dissipated_first_contact, r.block_loss_first_contact,
+                       r.t_first_contact * 1e3, gw_cli_num(v[0], sizeof v[0], "%.3g", r.block_loss_contact_open));
             char ws[3][64]; /* a crown speed the samples do not resolve is null in JSON: "unresolved" here */
             const double wv[3] = {r.wave_speed, r.wave_speed_kin, r.wave_speed_xcorr};
             const double we[3] = {r.wave_speed_err, r.wave_speed_kin_err, r.wave_speed_xcorr_err};

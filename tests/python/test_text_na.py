@@ -71,3 +71,19 @@ def test_layer_stats_spread_of_one_point(program, tmp_path):
         m = g["e_n"]["mean"]
         if m is not None and not math.isnan(m):
             assert f"e_n {m:.3f} +- " in text
+
+
+def test_layer_impact_undecided_rebound(program, tmp_path):
+    """A block on one free disc without gravity: the bounce is decided, e_n is not
+    (T_f never comes) and the text printed e_n = nan, T_i = nan ms; the first
+    contact's two losses, at the block's smallest energy (1: it stops) and at the
+    contact's opening (B.28, 0.64 at r = 0.5), are on its line."""
+    one = tmp_path / "one.txt"
+    one.write_text("granwave-layer-sample 1\nwidth 20\nrm 0.325\nvolume_ratio 1\nn 1\n10 0.325 0.325\n")
+    text, j = text_and_json(program, "layer-impact", "--sample", one, "--rb-rm", 0.5, "--vi", 10, "--gravity", 0,
+                            "--remove-walls", "--t-max", 0.003, "--exact")
+    assert j["bounced"] is True and j["e_n"] is None and j["t_rebound"] is None
+    no_nan(text)
+    assert "bounced yes: e_n = n/a, e = n/a, alpha_r = n/a deg (V_nr = n/a m/s at T_i = n/a ms, T_f = n/a ms)" in text
+    m = re.search(r"block loss ([0-9.e-]+) \(ends at [0-9.]+ ms\); at its opening block loss ([0-9.e-]+) \(B\.28\)", text)
+    assert m and abs(float(m.group(1)) - 1) < 1e-3 and abs(float(m.group(2)) - 0.64) < 1e-3, text

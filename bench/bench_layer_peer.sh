@@ -17,10 +17,13 @@
 #      from getrusage(RUSAGE_CHILDREN) in microseconds (cpu_run below;
 #      /usr/bin/time's 10 ms steps are 10 % of granwave's 0.1 s runs);
 #   d. bench_dem_min (velocity Verlet at 1e-5 s and RK4 at 1e-6 s, ns per
-#      disc-step, fixed contact list);
+#      disc-step, fixed contact list), once inside each repetition of c (the
+#      bound beside its impacts: a load that comes and goes falls on both)
+#      and once at the end for its checks;
 #   e. a table: median CPU s, ratio granwave / LAMMPS, cost per disc-step
 #      (CPU / (discs x steps), discs = sample + block; granwave's steps from
-#      its --json "steps"), and both codes' e_n, bounced, penetration.
+#      its --json "steps") over the bound (of the medians, and the median of
+#      each repetition's own ratio), and both codes' e_n, bounced, penetration.
 # granwave runs with its program defaults plus GW_FLAGS (e.g. GW_FLAGS="--exact"
 # or "--solver rk4"): the script works with any granwave binary.
 # Environment: REPS (3), GW_FLAGS (empty), LMP (LAMMPS binary, default lmp),
@@ -99,6 +102,9 @@ for rep in $(seq 1 "$REPS"); do
         echo "   rep $rep case $c: granwave $(awk '{print $1 + $2}' "$W/gw_${c}_$rep.rus") s CPU," \
              "lammps $(awk '{print $1 + $2}' "$W/lmp_${c}_$rep.rus") s CPU"
     done
+    # the bound in the same repetition, so that a load that comes and goes
+    # falls on the bound as on the impacts (the x bound of each pair)
+    "$B/bench/bench_dem_min" "$S" --steps "$DEM_STEPS" --reps "$DEM_REPS" >"$W/dem_min_$rep.txt"
 done
 
 # d. the minimal DEM step
@@ -112,14 +118,19 @@ echo
 import json, statistics, sys
 w, reps = sys.argv[1], int(sys.argv[2])
 cpu = lambda p: sum(float(v) for v in open(p).read().split())
-bound = {}
-for line in open(w + "/dem_min.txt"):
-    if line.startswith("BOUND "):
-        bound[line.split()[1]] = float(line.split()[2])
+def bounds(path):
+    b = {}
+    for line in open(path):
+        if line.startswith("BOUND "):
+            b[line.split()[1]] = float(line.split()[2])
+    return b
+bound = bounds(w + "/dem_min.txt")
+# the verlet bound measured inside each repetition, beside its impacts
+rep_bound = [bounds("%s/dem_min_%d.txt" % (w, r)).get("verlet", float("nan")) for r in range(1, reps + 1)]
 names = {1: "R_b = R_m, 20 m/s", 3: "R_b = 3 R_m, 0.1 s"}
 def num(v):  # e_n is null (undecided) when a run ends before T_f (docs/outcomes.md)
     return "%.4f" % v if isinstance(v, (int, float)) else "undecided"
-print("impact               code      CPU s (median; all)            ratio gw/lmp  steps    ns/disc-step  x bound  e_n        bounced  penetration m")
+print("impact               code      CPU s (median; all)            ratio gw/lmp  steps    ns/disc-step  x bound (pairs)  e_n        bounced  penetration m")
 for c in (1, 3):
     g = [json.load(open("%s/gw_%d_%d.json" % (w, c, r))) for r in range(1, reps + 1)]
     l = []
@@ -135,17 +146,24 @@ for c in (1, 3):
     lsteps = statistics.median(o["steps"] + o["steps_settle"] for o in l)
     # the ratio of the medians, and the median of the ratios of the alternating pairs
     pairs = statistics.median(a / b for a, b in zip(gc, lc))
-    for code, m, allc, steps, o in (("granwave", gm, gc, gsteps, g[-1]), ("lammps", lm, lc, lsteps, l[-1])):
+    for code, m, allc, steps, o, runs in (("granwave", gm, gc, gsteps, g[-1], [(cc, j["steps"]) for cc, j in zip(gc, g)]),
+                                          ("lammps", lm, lc, lsteps, l[-1],
+                                           [(cc, q["steps"] + q["steps_settle"]) for cc, q in zip(lc, l)])):
         ns = 1e9 * m / (discs * steps)
-        print("%-20s %-9s %8.3f (%-20s) %12s %8d %12.1f %8.2f  %-9s  %-7s  %.4f" % (
+        # each repetition's cost per disc-step over the bound measured in that repetition
+        xb = statistics.median(1e9 * cc / (discs * st) / rb for (cc, st), rb in zip(runs, rep_bound))
+        print("%-20s %-9s %8.3f (%-20s) %12s %8d %12.1f %8.2f (%.2f)  %-9s  %-7s  %.4f" % (
             names[c], code, m, " ".join("%.3g" % v for v in allc),
             "%.2f (%.2f)" % (gm / lm, pairs) if code == "granwave" else "",
-            steps, ns, ns / bound.get("verlet", float("nan")), num(o["e_n"]),
+            steps, ns, ns / statistics.median(rep_bound), xb, num(o["e_n"]),
             "undecided" if o["bounced"] is None else str(bool(o["bounced"])).lower(),
             o["penetration"]))
-print("bench_dem_min bound (fixed list, %s): verlet %.1f ns/disc-step (dt 1e-5 s), rk4 %.1f ns/disc-step (dt 1e-6 s)" % (
-    "sample + block", bound.get("verlet", float("nan")), bound.get("rk4", float("nan"))))
-print("ratio: of the medians (median of the %d pairwise ratios); x bound: ns/disc-step over bench_dem_min's verlet" % reps)
+print("bench_dem_min bound (fixed list, %s): verlet %.1f ns/disc-step (dt 1e-5 s), rk4 %.1f ns/disc-step (dt 1e-6 s);"
+      " verlet in the repetitions: median %.1f (%s)" % (
+    "sample + block", bound.get("verlet", float("nan")), bound.get("rk4", float("nan")), statistics.median(rep_bound),
+    " ".join("%.1f" % v for v in rep_bound)))
+print("ratio: of the medians (median of the %d pairwise ratios); x bound: ns/disc-step over bench_dem_min's verlet"
+      " measured in the repetitions (median of each repetition's own ratio)" % reps)
 print("granwave's CPU is the whole process (sample read, set-up, solver, recording every 2e-5 s, crowns, JSON);")
 print("LAMMPS's is python + lmp (input writing, set-up, run, trace parsing). Steps: granwave's --json 'steps';")
 print("LAMMPS's steps include those run past t_end to settle the outcome (case 1).")

@@ -335,10 +335,19 @@ static int text_header(text_in *t, gw_layer_sample *s, long *n, int *version, gw
     /* a UTF-8 byte-order mark (an editor's "save as UTF-8"): skipped, as
      * layer-stats does with its tables; it was refused as "not a granwave layer
      * sample" without a word on the mark */
-    if (strncmp(t->buf, "\xEF\xBB\xBF", 3) == 0)
+    if (strncmp(t->buf, "\xEF\xBB\xBF", 3) == 0) {
         memmove(t->buf, t->buf + 3, strlen(t->buf + 3) + 1);
+        /* the mark alone on a blank or comment line: text_next took the mark
+         * for text and returned the line; the header is on a later line (a
+         * mark then blank lines read tok[0] unset: SIGSEGV, found by
+         * fuzz_layer_sample) */
+        const char *p = t->buf + strspn(t->buf, " \t");
+        if ((*p == '\0' || *p == '#') && (rc = text_next(t, err)) <= 0)
+            return rc < 0 ? rc : gw_err_set(err, GW_EFORMAT, "sample '%s': empty file, not a granwave layer sample",
+                                            t->path);
+    }
     int k = split(t->buf, tok, 2);
-    if (strcmp(tok[0], SAMPLE_MAGIC) != 0)
+    if (k < 1 || strcmp(tok[0], SAMPLE_MAGIC) != 0)
         return gw_err_set(err, GW_EFORMAT, "sample '%s': line %ld: not a granwave layer sample (expected '"
                           SAMPLE_MAGIC " 1')", t->path, t->line);
     if (k > 2)

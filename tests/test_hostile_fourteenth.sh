@@ -22,6 +22,11 @@
 #    --heights 5.1 --gravity 100 ran at 0.316 m/s, not sqrt(2 100 5.1e-3) =
 #    1.01 m/s. The fall now uses the run's gravity when it has one, 9.81 when
 #    it is off (the default), in the program and the library alike.
+#  4 a layer sample whose UTF-8 byte-order mark stands alone on a blank or
+#    comment line (the mark, then blank lines): the header was read from an
+#    empty line and SIGSEGV (exit 139; found by fuzz_layer_sample). Refused as
+#    "not a granwave layer sample" or "empty file" (exit 2), or read as
+#    without the mark when a comment follows it.
 set -u
 GW=$1
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
@@ -126,6 +131,23 @@ r = granwave.falcon(n='1:2', vimp=[0.3], heights=[5.1], gravity=100)
 assert r['v_imp'][1] == json.load(open('$tmp/fh100.json'))['velocities'][1]['v_imp'], r['v_imp']
 " 2>"$tmp/pyerr" && ok "3: granwave.falcon(heights=[5.1], gravity=100): the program's speed" ||
     ko "3: Python: $(tail -1 "$tmp/pyerr")"
+
+# --- 4: a byte-order mark alone on its line
+printf '\xef\xbb\xbf\n\n\x8a\npor eno1.70d.\xdb' >"$tmp/bom1.txt"
+printf '\xef\xbb\xbf\n\n' >"$tmp/bom2.txt"
+refused "4: a sample of a byte-order mark, blank lines and junk" "^granwave layer-impact: sample '.*bom1.txt': line 3: not a granwave layer sample" \
+    layer-impact --sample "$tmp/bom1.txt"
+refused "4: a sample of a byte-order mark and blank lines" "^granwave layer-impact: sample '.*bom2.txt': empty file" \
+    layer-impact --sample "$tmp/bom2.txt"
+one='granwave-layer-sample 1\nwidth 20\nrm 0.325\nvolume_ratio 1\nn 1\n10 0.325 0.325\n'
+printf "$one" >"$tmp/one.txt"
+printf "\xef\xbb\xbf  # saved as UTF-8\n$one" >"$tmp/bom3.txt"
+ia=(layer-impact --rb-rm 0.5 --vi 10 --gravity 0 --remove-walls --t-max 0.003)
+if runs_json "4: the plain sample" "$tmp/i1.json" "${ia[@]}" --sample "$tmp/one.txt" &&
+    runs_json "4: the mark before a comment line" "$tmp/i3.json" "${ia[@]}" --sample "$tmp/bom3.txt"; then
+    [ "$(jq_py "$tmp/i3.json" "(d['e_n_first'], d['penetration']) == tuple(json.load(open('$tmp/i1.json'))[k] for k in ('e_n_first', 'penetration'))")" = True ] &&
+        ok "4: a mark before a comment line reads as the sample without it" || ko "4: the mark changed the run"
+fi
 
 echo "$passes passed, $fails failed"
 [ $fails -eq 0 ]

@@ -59,6 +59,14 @@ void layer_watch_first_contact(gw_layer *L, int target)
                                   .t_last = NAN};
 }
 
+/* The block's kinetic energy (translation and rotation) in state y, J. */
+static double block_kinetic(const gw_layer *L, const double *y)
+{
+    const int bb = L->block_body;
+    const double *s = y + 6 * bb;
+    return 0.5 * L->m[bb] * (s[3] * s[3] + s[4] * s[4]) + 0.5 * L->inertia[bb] * s[5] * s[5];
+}
+
 /* The first contact at one evaluation of the roots (state y at t). */
 void layer_watch_first_contact_freeze(gw_layer *L)
 {
@@ -70,15 +78,13 @@ static void first_contact(gw_layer *L, double t, const double *y)
     layer_first_contact *f = &L->fc;
     if (f->frozen || !isnan(f->t_open))
         return;
-    const int bb = L->block_body;
     double pb[2], pt[2], arm[2];
     layer_disc_xy(L, y, L->block, pb, arm);
     layer_disc_xy(L, y, f->target, pt, arm);
     const double ov = L->r[L->block] + L->r[f->target] - hypot(pb[0] - pt[0], pb[1] - pt[1]);
     const double *tail = y + 6 * L->nb + L->nc, ed = tail[0];
-    const double *s = y + 6 * bb;
-    const double kb = 0.5 * L->m[bb] * (s[3] * s[3] + s[4] * s[4]) + 0.5 * L->inertia[bb] * s[5] * s[5];
     if (ov > 0) {
+        const double kb = block_kinetic(L, y);
         f->n_touch++;
         if (kb < f->kb_min) {
             f->kb_min = kb;
@@ -92,7 +98,7 @@ static void first_contact(gw_layer *L, double t, const double *y)
         const double a = f->ov_last / (f->ov_last - ov);
         f->t_open = f->t_last + a * (t - f->t_last);
         f->ed_open = f->ed_last + a * (ed - f->ed_last);
-        f->kb_open = f->kb_last + a * (kb - f->kb_last);
+        f->kb_open = f->kb_last + a * (block_kinetic(L, y) - f->kb_last);
     }
 }
 

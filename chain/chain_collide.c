@@ -500,15 +500,21 @@ static int collide_plan_make(const gw_chain_params *p, const gw_chain_run_opts *
     const double m0 = p->masses ? p->masses[0] : p->mass;
     memset(pl, 0, sizeof *pl);
     pl->type = o->solver ? o->solver : gw_solver_cvode;
-    pl->tc = gw_chain_time_scale(p);
     pl->tau1 = gw_chain_tau1(m0, p->kwall, p->v_imp);
     pl->dt_out = o->dt_out > 0 ? o->dt_out : pl->tau1 / 200.0;
-    pl->t_max = o->t_max > 0 ? o->t_max : 20.0 * (n * 2.0 * pl->tc + pl->tau1);
+    /* The collision's expected length: n bead-to-bead transits of 2 T_c plus
+     * the wall contact, each on the scale of the heaviest bead it can involve
+     * (chain_column_scales; bead 1's for equal beads). Bead 1's alone made a
+     * light bead under a heavy one end at the default t-max still on the wall
+     * (--radii 5e-4,1e-2: t-max 0.197 ms, the collision 0.248 ms, exit 1). */
+    double tc_col = 0, tau1_col = 0;
+    chain_column_scales(p, &tc_col, &tau1_col);
+    pl->tc = tc_col;
+    pl->t_max = o->t_max > 0 ? o->t_max : 20.0 * (n * 2.0 * tc_col + tau1_col);
     /* Every sample costs O(n) (energy, contacts): bound the samples over the
-     * collision's expected length (n bead-to-bead transits of 2 T_c plus the
-     * wall contact, or t_max when shorter). The
+     * collision's expected length (or t_max when shorter). The
      * default dt-out gives about 100 n + 200 of them; checked before the run. */
-    pl->t_expect = fmin(pl->t_max, n * 2.0 * pl->tc + pl->tau1);
+    pl->t_expect = fmin(pl->t_max, n * 2.0 * tc_col + tau1_col);
     int rc;
     pl->sp = o->sp;
     /* The root finders compare signs at step ends only: a step longer than half a

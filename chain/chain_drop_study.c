@@ -21,6 +21,7 @@
 #include <string.h>
 
 #include "chain_setup_rows.h"
+#include "chain_model.h"
 
 /* ---- the table of the inputs: the drop's rows, then the column's with the
  * drop's gravity, t-max and dt-out ---- */
@@ -332,7 +333,8 @@ int gw_chain_drop_study_run(const gw_chain_drop_setup *s, gw_progress_fn progres
     int rc = gw_param_check(drop_params, s, err);
     if (rc != GW_OK)
         return rc;
-    if ((rc = gw_chain_drop_setup_gaps(s, &out->gaps, err)) != GW_OK)
+    if ((rc = gw_chain_drop_guide_check(s->col.guide_friction, s->col.guide_viscous, err)) != GW_OK ||
+        (rc = gw_chain_drop_setup_gaps(s, &out->gaps, err)) != GW_OK)
         return rc;
     const int n = (int)s->col.n;
     out->n_gaps = out->gaps ? n - 1 : 0;

@@ -466,6 +466,23 @@ double gw_chain_time_scale(const gw_chain_params *p)
     return pow(m / k, 0.4) * pow(p->v_imp, -0.2);
 }
 
+void chain_column_scales(const gw_chain_params *p, double *tc, double *tau1)
+{
+    const double v = p->v_imp, m0 = p->masses ? p->masses[0] : p->mass;
+    double t = gw_chain_time_scale(p), mmax = m0;
+    if (p->masses)
+        for (int i = 0; i < p->n; i++)
+            mmax = fmax(mmax, p->masses[i]);
+    if (p->masses || p->kc)
+        for (int i = 0; i + 1 < p->n; i++) {
+            const double a = p->masses ? p->masses[i] : p->mass, b = p->masses ? p->masses[i + 1] : p->mass;
+            const double k = p->kc ? p->kc[i] : p->k;
+            t = fmax(t, pow(fmax(a, b) / k, 0.4) * pow(v, -0.2));
+        }
+    *tc = t;
+    *tau1 = gw_chain_tau1(mmax, p->kwall, v);
+}
+
 /* The reduced mass of bead 1 on the wall: the bead's own on a rigid sensor, with
  * the sensor's mass M on a sensor body. */
 static double wall_reduced_mass(const gw_chain_params *p)

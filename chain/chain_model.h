@@ -104,4 +104,15 @@ int chain_steps_check(const gw_solver_type *type, const gw_solver_params *sp, co
  * Studies add them up over their columns (chain_sweep.c). */
 int chain_run_steps(const gw_chain_params *p, const gw_chain_run_opts *o, double *steps, gw_err *err);
 
+/* The column's time scales for its expected length (chain_collide.c): tc the
+ * largest bead-to-bead T_c = (m/k)^(2/5) v^(-1/5) over the contacts, each with
+ * the heavier of its two beads, and tau1 the wall contact time (F.2) of the
+ * heaviest bead; for equal beads gw_chain_time_scale and bead 1's tau_1. */
+void chain_column_scales(const gw_chain_params *p, double *tc, double *tau1);
+
+/* The drop's fall to the first contact is free fall in closed form: guide
+ * friction (Coulomb or viscous, N and N s/m per bead) would slow it and is
+ * refused, GW_EINVAL naming guide-friction or guide-viscous (chain_drop.c). */
+int gw_chain_drop_guide_check(double coulomb, double viscous, gw_err *err);
+
 #endif

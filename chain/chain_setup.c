@@ -229,6 +229,15 @@ static int check_damping(const gw_chain_setup *s, gw_err *err)
     }
     if (!isnan(s->restitution_v) && !restitution)
         return gw_err_set(err, GW_EINVAL, "restitution-v: has no effect without restitution");
+    /* a damping model without its constant is the elastic column (gamma and
+     * alpha default to 0): it would run undamped and record the model's name.
+     * A constant of 0 given on purpose (a sweep over gamma from 0) is kept. */
+    if (s->damping == GW_DAMP_KUWABARA_KONO && isnan(s->gamma) && !restitution)
+        return gw_err_set(err, GW_EINVAL, "damping: kk without gamma or restitution has no effect (gamma defaults "
+                          "to 0, the elastic column): give gamma or restitution");
+    if (s->damping == GW_DAMP_HUNT_CROSSLEY && isnan(s->alpha) && !restitution)
+        return gw_err_set(err, GW_EINVAL, "damping: hc without alpha or restitution has no effect (alpha defaults "
+                          "to 0, the elastic column): give alpha or restitution");
     return GW_OK;
 }
 

@@ -39,7 +39,8 @@ _Static_assert(GW_SHEET_FITTED == 0 && GW_SHEET_HERTZ == 1 && GW_SHEET_LAYER == 
     GW_CHAIN_MATERIAL_ROWS \
     ROW("gravity", GW_PARAM_DOUBLE, gravity, "m/s^2", 0, 1e4, 0, "0", "G", "gravity toward the wall, m/s^2 [0 = off]"), \
     GW_CHAIN_SOLVER_ROWS \
-    ROW("t-max", GW_PARAM_DOUBLE, t_max, "s", 0, 1e6, 0, "0", "T", "stop after T seconds [20 (n T_q + tau_1)]"), \
+    ROW("t-max", GW_PARAM_DOUBLE, t_max, "s", 0, 1e6, 0, "0", "T", \
+        "stop after T seconds [20 (n T_q + tau_1), of the heaviest bead]"), \
     ROW("dt-out", GW_PARAM_DOUBLE, dt_out, "s", 0, 1, 0, "0", "DT", \
         "sampling interval for traces, energy and F_max, s [tau_1/200]"), \
     GW_CHAIN_ENERGY_ROW \
@@ -66,7 +67,9 @@ _Static_assert(GW_SHEET_FITTED == 0 && GW_SHEET_HERTZ == 1 && GW_SHEET_LAYER == 
 
 /* damping .. max-steps */
 #define GW_CHAIN_SOLVER_ROWS \
-    CHOICE("damping", damping, "none,kk,hc", "none", "MODEL", "none, kk (Kuwabara-Kono) or hc (Hunt-Crossley) [none]"), \
+    CHOICE("damping", damping, "none,kk,hc", "none", "MODEL", \
+           "none, kk (Kuwabara-Kono; with gamma or restitution) or hc (Hunt-Crossley; with alpha or restitution) " \
+           "[none]"), \
     ROW("gamma", GW_PARAM_DOUBLE, gamma, "N s/m^1.5", 0, GW_CHAIN_GAMMA_MAX, 0, NULL, "G", \
         "Kuwabara-Kono constant of bead contacts, N s/m^1.5, in [0, 1e14] [0]"), \
     ROW("alpha", GW_PARAM_DOUBLE, alpha, "s/m", 0, GW_CHAIN_ALPHA_MAX, 0, NULL, "A", \

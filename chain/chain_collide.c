@@ -255,23 +255,31 @@ static void on_roots(run_state *st, double t, const double *y, const int *roots)
 /* Bead 1 off the wall and separating from it; with a sensor body (which
  * oscillates on its spring, x_s between -A and A, A^2 = x_s^2 + m_s v_s^2 / k_s,
  * A falling with its damping) also moving away and beyond its reach. */
-static int wall_finished(const run_state *st, const double *y, double dtol)
+/* What keeps the wall's side of the run from its end at state y: NULL when
+ * nothing does (bead 1 off the wall, separating and beyond a sensor body's
+ * reach, the reading no longer rising), else the reason, as the warnings say it. */
+static const char *wall_pending(const run_state *st, const double *y, double dtol)
 {
     if (st->closed[0] || gw_chain_wall_gap_rate(st->c, y) > 0 || gw_chain_wall_gap(st->c, y) > dtol)
-        return 0;
+        return "bead 1 still at the wall";
     long is = gw_chain_sensor_index(st->c);
     if (is >= 0) {
         const gw_chain_sensor *s = &gw_chain_get_params(st->c)->sensor;
         double xs = y[is], vs = y[is + 1], a = sqrt(xs * xs + s->mass * vs * vs / s->stiffness);
         if (y[1] > 0 || y[0] > -a)
-            return 0;
+            return "bead 1 off the wall but within the sensor body's swing";
         /* the reading k_s x_s (+ c_s v_s) still rising: its largest value, F_max,
          * comes after bead 1 left (a 1000 kg sensor on 1e12 N/m ended at 20.7 N,
          * rising, of a peak near J omega = 40 N) */
         if (vs > 0)
-            return 0;
+            return "bead 1 left the wall, the sensor's reading still rising";
     }
-    return 1;
+    return NULL;
+}
+
+static int wall_finished(const run_state *st, const double *y, double dtol)
+{
+    return wall_pending(st, y, dtol) == NULL;
 }
 
 /* Every contact open (by its events and by its geometry, so that a contact the
@@ -696,7 +704,8 @@ stopped:
             mg += gw_chain_bead_mass(c, i) * p->gravity;
         r->impulse = p0 - momentum(c, y) + mg * t;
     }
-    r->wall_done = r->converged || wall_finished(&st, y, st.dtol);
+    r->wall_pending = r->converged ? NULL : wall_pending(&st, y, st.dtol);
+    r->wall_done = r->wall_pending == NULL;
     finish_result(&st, y);
     gw_solver_get_stats(s, &r->stats);
 done:

@@ -377,6 +377,8 @@ typedef struct gw_chain_result {
     int wall_done;       /* 1: at t_end bead 1 is off the wall, separating from it and beyond
                             a sensor body's reach (f_max, tau_max, tau_n are final; the
                             column's own contacts may still be busy: converged 0) */
+    const char *wall_pending; /* wall_done 0: why, as a phrase ("bead 1 still at the
+                                 wall", ...; static storage); NULL when wall_done */
     /* The run's settings as used, defaults resolved (for the provenance):
      * t_max and dt_out in s; dt the RK4 step or the initial step asked of
      * cvode/arkode (0 = their own choice), s; dt_max the largest step, s. */

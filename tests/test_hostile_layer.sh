@@ -327,7 +327,7 @@ refused "layer-impact --solver cvode --dt 1e-6 (ignored)" "layer-impact --dt: ha
 refused "layer-impact --solver arkode --dt 1e-6 (ignored)" "layer-impact --dt: has no effect with the arkode solver" \
     layer-impact --sample "$S" --solver arkode --dt 1e-6 --t-max 1e-4 --out "$tmp/o"
 runs "layer-impact --exact --dt 1e-6 (rk4's step) is accepted" layer-impact --sample "$S" --exact --dt 1e-6 --t-max 1e-5 --skin 1e-3
-for opt in "--delta-rm 0.5" "--gamma-deg 1" "--fit beta"; do
+for opt in "--delta-rm 0.5" "--gamma-deg 1" "--fit beta,a_over_b,offset"; do
     refused "layer-stats $opt on a table without a diagram (ignored)" \
         "layer-stats ${opt%% *}: has no effect: the table has no bouncing diagram" layer-stats "$R" $opt --out "$tmp/o"
 done

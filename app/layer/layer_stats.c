@@ -123,12 +123,14 @@ int gw_cmd_layer_stats(int argc, char **argv)
          .help = "global bouncing verdict: share of bouncing points >= S, in (0, 1] [0.75]", .lo = 0, .hi = 1,
          .open_lo = 1},
         {.name = "fit", .kind = GW_OPT_STRING, .dest = &fit, .metavar = "LIST",
-         .help = "B.31 parameters to fit among offset, beta, a_over_b, tan_gamma [beta,a_over_b]"},
+         .help = "B.31 parameters to fit: beta,a_over_b and optionally offset, tan_gamma [beta,a_over_b]"},
         {.name = "gamma-deg", .kind = GW_OPT_DOUBLE, .dest = &S.gamma_deg, .metavar = "G",
          .help = "cone angle gamma (start value, or fixed when not fitted), deg [0.2, the paper's]", .lo = 0,
          .hi = 89, .open_lo = 1},
         {.name = "delta-rm", .kind = GW_OPT_DOUBLE, .dest = &S.delta_rm, .metavar = "D",
-         .help = "delta* / R_m of B.31 [measured: mean penetration_rm at the boundary]", .lo = 0, .hi = 1e6},
+         .help = "delta* / R_m of B.31 (start value when offset is fitted) [measured: mean penetration_rm at "
+                 "the boundary]",
+         .lo = 0, .hi = 1e6},
         {.name = "out", .kind = GW_OPT_STRING, .dest = &out, .metavar = "DIR",
          .help = "write groups.csv, convergence.csv, binary.csv, walls.csv, diagram.csv, boundary_fit.json"},
         {.name = "json", .kind = GW_OPT_FLAG, .dest = &json, .help = "print the results as JSON"},
@@ -147,7 +149,7 @@ int gw_cmd_layer_stats(int argc, char **argv)
     if (npos != 1)
         return gw_stats_setup_clear(&S), fail("a results table is required: granwave layer-stats RESULTS.csv");
     if (gw_stats_fit_parse(fit, &mask, &err) != GW_OK) {
-        fprintf(stderr, "granwave layer-stats: --%s\n", err.msg); /* "fit: ...": the flag's name */
+        fprintf(stderr, "granwave layer-stats --%s\n", err.msg); /* "fit: ...": the flag's name */
         gw_stats_setup_clear(&S);
         return 2;
     }

@@ -314,7 +314,10 @@ int gw_stats_setup_init(gw_stats_setup *s);
 void gw_stats_setup_clear(gw_stats_setup *s);
 
 /* --fit text to a mask of GW_STATS_B31_*: GW_EINVAL "fit: unknown parameter
- * 'X' (offset, beta, a_over_b, tan_gamma)" or "fit: no parameter given". */
+ * 'X' (offset, beta, a_over_b, tan_gamma)", "fit: no parameter given", an
+ * empty item or a name listed twice, or a list without beta and a_over_b
+ * (the analysis has no value to hold either of them at; the offset and
+ * tan gamma are held at delta-rm and gamma-deg when not listed). */
 int gw_stats_fit_parse(const char *text, int *mask, gw_err *err);
 
 typedef struct gw_stats_binary {

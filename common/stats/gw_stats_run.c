@@ -31,12 +31,14 @@ static const gw_param setup_params[] = {
      .open_min = 1, .def = "0.75", .metavar = "S",
      .help = "global bouncing verdict: share of bouncing points >= S, in (0, 1] [0.75]"},
     {.name = "fit", .type = GW_PARAM_TEXT, .offset = OFF(fit), .unit = "", .def = "beta,a_over_b",
-     .metavar = "LIST", .help = "B.31 parameters to fit among offset, beta, a_over_b, tan_gamma [beta,a_over_b]"},
+     .metavar = "LIST", .help = "B.31 parameters to fit: beta,a_over_b and optionally offset, tan_gamma [beta,a_over_b]"},
     {.name = "gamma-deg", .type = GW_PARAM_DOUBLE, .offset = OFF(gamma_deg), .unit = "deg", .min = 0, .max = 89,
      .open_min = 1, .def = "0.2", .metavar = "G",
      .help = "cone angle gamma (start value, or fixed when not fitted), deg [0.2, the paper's]"},
     {.name = "delta-rm", .type = GW_PARAM_DOUBLE, .offset = OFF(delta_rm), .unit = "", .min = 0, .max = 1e6,
-     .metavar = "D", .help = "delta* / R_m of B.31 [measured: mean penetration_rm at the boundary]"},
+     .metavar = "D",
+     .help = "delta* / R_m of B.31 (start value when offset is fitted) [measured: mean penetration_rm at the "
+             "boundary]"},
     GW_PARAM_END};
 
 const gw_param *gw_stats_setup_params(void)
@@ -70,9 +72,13 @@ int gw_stats_fit_parse(const char *s, int *mask, gw_err *err)
     const char *p = s ? s : "";
     while (*p) {
         size_t len = strcspn(p, ",");
+        if (len == 0 || (p[len] == ',' && !p[len + 1])) /* "beta,": an item left out, as a sweep list refuses */
+            return gw_err_set(err, GW_EINVAL, "fit: '%s' has an empty item", s);
         int found = 0;
         for (size_t i = 0; i < sizeof names / sizeof names[0]; i++)
             if (strlen(names[i].name) == len && strncmp(p, names[i].name, len) == 0) {
+                if (*mask & names[i].bit) /* "beta,beta" fitted beta alone, silently */
+                    return gw_err_set(err, GW_EINVAL, "fit: '%s' is listed twice in '%s'", names[i].name, s);
                 *mask |= names[i].bit;
                 found = 1;
             }
@@ -83,6 +89,19 @@ int gw_stats_fit_parse(const char *s, int *mask, gw_err *err)
     }
     if (!*mask)
         return gw_err_set(err, GW_EINVAL, "fit: no parameter given");
+    /* A parameter left out of the fit is held at a value: the offset at
+     * delta-rm / 2 (or half the measured penetration at the boundary), tan gamma
+     * at gamma-deg. beta and a/b have no such input: left out, they were held at
+     * 1, and the fit reported them (and b = a / (a/b)) with an error of 0 as if
+     * measured (--fit beta: a/b 1 +- 0, b = a). */
+    const int need = GW_STATS_B31_BETA | GW_STATS_B31_AB;
+    if ((*mask & need) != need) {
+        const char *left = (*mask & GW_STATS_B31_BETA) ? "a_over_b" : (*mask & GW_STATS_B31_AB) ? "beta"
+                                                                                              : "beta and a_over_b";
+        return gw_err_set(err, GW_EINVAL, "fit: '%s' leaves %s out, and no input gives %s value to hold fixed "
+                          "(only the offset, by delta-rm, and tan_gamma, by gamma-deg, can be held): list beta "
+                          "and a_over_b", s, left, (*mask & need) ? "its" : "their");
+    }
     return GW_OK;
 }
 

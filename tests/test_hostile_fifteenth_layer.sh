@@ -1,0 +1,95 @@
+#!/bin/bash
+# test_hostile_fifteenth_layer.sh GRANWAVE SRCDIR: the fifteenth hostile pass,
+# layer and sweep side. Each numbered check failed on the binary before this
+# pass (d9a28a2); the guards (g) hold on both.
+#  1 layer-stats --fit without beta or a_over_b: the parameters left out of the
+#    B.31 fit are held at a value, and only the offset (--delta-rm) and
+#    tan gamma (--gamma-deg) have an input for it. beta and a/b were held at 1,
+#    a value no input gives, and reported as if measured: `--fit beta` on a
+#    diagram printed "a/b 1 +- 0" and gave b = a with b_err 0 (rms 2.1 R_m),
+#    `--fit tan_gamma` "beta 1 +- 0, a/b 1 +- 0", exit 0. Refused now (exit 2,
+#    one line naming --fit), in the program and in Python alike.
+#  2 layer-stats --fit with a name listed twice (`beta,beta` fitted beta alone)
+#    or an empty item (`beta,a_over_b,`): read silently; refused as a sweep list
+#    refuses them.
+#  3 layer-stats --fit's refusals read "granwave layer-stats: --fit: ..." where
+#    every other flag's read "granwave layer-stats --FLAG: ...".
+set -u
+GW=$1
+tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
+# shellcheck source=tests/refusal_lib.sh
+. "$(dirname "${BASH_SOURCE[0]}")/refusal_lib.sh"
+PY=/usr/bin/python3
+SRC=${2:-$(dirname "${BASH_SOURCE[0]}")/..}
+
+# a hand-made diagram table: 7 R_b x 6 H x 4 points, bouncing below a B.31
+# curve (beta 1, a/b 4, offset 1, gamma 0.2 deg) and always at point 3
+$PY - "$tmp/d.csv" <<'PY'
+import math, sys
+cols = ("x_impact,bounced,e_n,e,alpha_r,v_ni,v_nr,v_r,penetration,penetration_rm,dissipated_first_contact,"
+        "block_loss_first_contact,energy_error,wave_speed,t_end,steps").split(",")
+T = math.tan(math.radians(0.2))
+def f(x):
+    K = 4 * T; u = x - 1; r = math.sqrt(u * u + K * x * x)
+    return 1 + ((K * x * x / (r + u)) if u > 0 else (r - u)) / (2 * T)
+with open(sys.argv[1], "w") as out:
+    out.write("# hand-made layer sweep\n# param vi = 20\ncase,rb-rm,height-rm,point," + ",".join(cols) + "\n")
+    k = 0
+    for x in (1.25, 1.5, 2, 3, 4, 6, 8):
+        for h in (2, 4, 6, 8, 10, 12):
+            for p in range(4):
+                b = 1 if (h < f(x) or p == 3) else 0
+                v = [0.05 * p, b, 0.5, 0.6, 10, 20, 10, 12, 0.65, 2.0, 0.001, 0.6, 1e-6, float("nan"), 0.01, 100]
+                out.write("%d,%g,%g,%d," % (k, x, h, p) + ",".join("%.17g" % q for q in v) + "\n")
+                k += 1
+PY
+D=$tmp/d.csv
+
+# --- 1: beta and a/b are always fitted
+for f in beta a_over_b tan_gamma offset a_over_b,offset beta,tan_gamma; do
+    refused "1: layer-stats --fit $f (beta or a/b held at 1, reported as measured)" \
+        "^granwave layer-stats --fit: '$f' leaves .* out, and no input gives" layer-stats "$D" --fit "$f" --out "$tmp/o"
+done
+# the same refusal in Python, naming the keyword
+if PYTHONPATH=$SRC/python GRANWAVE=$GW $PY - "$D" >"$tmp/py1" 2>&1 <<'PY'
+import sys, granwave
+try:
+    granwave.layer_stats(sys.argv[1], fit="beta")
+except ValueError as e:
+    assert str(e).startswith("layer_stats: fit: 'beta' leaves a_over_b out"), str(e)
+else:
+    raise SystemExit("layer_stats(fit='beta') ran")
+PY
+then ok "1: granwave.layer_stats(fit='beta') refused naming fit"
+else ko "1: granwave.layer_stats(fit='beta'): $(tail -3 "$tmp/py1")"; fi
+
+# --- 2: a name twice, an empty item
+refused "2: layer-stats --fit beta,beta (fitted beta alone)" \
+    "^granwave layer-stats --fit: 'beta' is listed twice" layer-stats "$D" --fit beta,beta --out "$tmp/o"
+refused "2: layer-stats --fit beta,a_over_b,beta" \
+    "^granwave layer-stats --fit: 'beta' is listed twice" layer-stats "$D" --fit beta,a_over_b,beta --out "$tmp/o"
+refused "2: layer-stats --fit beta,a_over_b, (an empty item)" \
+    "^granwave layer-stats --fit: 'beta,a_over_b,' has an empty item" layer-stats "$D" --fit beta,a_over_b, --out "$tmp/o"
+refused "2: layer-stats --fit ,beta,a_over_b" \
+    "^granwave layer-stats --fit: ',beta,a_over_b' has an empty item" layer-stats "$D" --fit ,beta,a_over_b --out "$tmp/o"
+
+# --- 3: the flag named as every other flag is
+refused "3: layer-stats --fit BETA names the flag as the others" \
+    "^granwave layer-stats --fit: unknown parameter 'BETA'" layer-stats "$D" --fit BETA --out "$tmp/o"
+
+# --- g: the lists that keep beta and a/b still fit, the free ones as listed
+for f in beta,a_over_b a_over_b,beta beta,a_over_b,offset beta,a_over_b,tan_gamma offset,beta,a_over_b,tan_gamma; do
+    if timeout 60 "$GW" layer-stats "$D" --fit "$f" --json >"$tmp/g.json" 2>"$tmp/err" &&
+        $PY - "$tmp/g.json" "$f" <<'PY'
+import json, sys
+fit = json.load(open(sys.argv[1]))["diagrams"][0]["fit"]
+want = set(sys.argv[2].split(","))
+assert fit is not None and set(fit["free"]) == want, fit and fit["free"]
+assert abs(fit["beta"] - 1) < 0.5 and fit["beta_err"] is not None and fit["a_over_b_err"] is not None
+PY
+    then ok "g: layer-stats --fit $f fits $f"
+    else ko "g: layer-stats --fit $f: $(head -c 300 "$tmp/err")"; fi
+done
+
+echo "$passes passed, $fails failed"
+[ "$fails" -eq 0 ]

@@ -2,7 +2,9 @@
  * layer_vtk.c: VTK legacy (ASCII POLYDATA) snapshots of the layer, for ParaView.
  *
  * Points: particle centres (z = 0) with point data radius (m), velocity (m/s,
- * 3-vector), omega (rad/s), fixed (0/1), block (0/1); one vertex cell per
+ * 3-vector), omega (rad/s), fixed (0/1), block (0/1), body (the rigid body
+ * the particle belongs to: one value per clump, its own for a free disc and for
+ * the block); one vertex cell per
  * particle (so that ParaView draws the points), then one line cell per closed
  * particle-particle contact (u_n > 0); cell data F_n and F_t (N, from B.1 and
  * the capped tangential state; 0 on the vertex cells). Field data TIME (s):
@@ -58,6 +60,9 @@ int gw_layer_write_vtk(const gw_layer *L, const char *path, const char *title, g
     gw_fprintf(fp, "SCALARS block int 1\nLOOKUP_TABLE default\n");
     for (int i = 0; i < n; i++)
         gw_fprintf(fp, "%d\n", i == L->block);
+    gw_fprintf(fp, "SCALARS body int 1\nLOOKUP_TABLE default\n");
+    for (int i = 0; i < n; i++)
+        gw_fprintf(fp, "%d\n", layer_body(L, i));
     gw_fprintf(fp, "VECTORS velocity double\n");
     for (int i = 0; i < n; i++) {
         double s[6];

@@ -14,6 +14,11 @@
 #    refuses them.
 #  3 layer-stats --fit's refusals read "granwave layer-stats: --fit: ..." where
 #    every other flag's read "granwave layer-stats --FLAG: ...".
+#  4 the VTK snapshots of a clump sample did not say which disc belongs to which
+#    clump: ParaView drew loose discs. Point data `body` now gives each
+#    particle's rigid body; checked against the sample file's own body column
+#    (the same partition of the discs, the block alone in its own) and against
+#    rigidity (the distances within a body equal at the start and the end).
 set -u
 GW=$1
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
@@ -90,6 +95,50 @@ PY
     then ok "g: layer-stats --fit $f fits $f"
     else ko "g: layer-stats --fit $f: $(head -c 300 "$tmp/err")"; fi
 done
+
+# 4: the clumps in the VTK snapshots
+if timeout -s KILL 120 "$GW" layer-make --clumps --n 12 --width-rm 12 --seed 3 --t-max 0.2 --out "$tmp/c.txt" >/dev/null 2>"$tmp/err" &&
+   timeout -s KILL 120 "$GW" layer-impact --sample "$tmp/c.txt" --t-max 0.004 --out "$tmp/ci" >/dev/null 2>>"$tmp/err"; then
+    $PY - "$tmp/c.txt" "$tmp/ci" >"$tmp/v4" 2>&1 <<'PY'
+import math, sys
+def vtk(path):
+    lines = open(path).read().split("\n")
+    n = int(next(s for s in lines if s.startswith("POINTS")).split()[1])
+    k = lines.index(next(s for s in lines if s.startswith("POINTS")))
+    pts = [tuple(map(float, lines[k + 1 + i].split()[:2])) for i in range(n)]
+    def arr(name):
+        k = lines.index(next(s for s in lines if s.split()[:2] == ["SCALARS", name]))
+        return [int(lines[k + 2 + i]) for i in range(n)]
+    return pts, arr("body"), arr("block")
+rows = [l.split() for l in open(sys.argv[1]) if l.strip() and not l.startswith("#")]
+rows = [r for r in rows if len(r) == 4 and all(c.lstrip("-").replace(".", "").replace("e", "").replace("+", "").isdigit() for c in r)]
+sbody = [int(r[3]) for r in rows]
+p0, b0, blk = vtk(sys.argv[2] + "/snapshot_0.vtk")
+p1, b1, _ = vtk(sys.argv[2] + "/snapshot_end.vtk")
+assert b0 == b1, "body changed between the snapshots"
+ib = blk.index(1)
+grains = [i for i in range(len(b0)) if i != ib]
+assert len(grains) == len(sbody), (len(grains), len(sbody))
+# the same partition: sample body i <-> vtk body of the i-th grain, one to one
+m = {}
+for s, i in zip(sbody, grains):
+    assert m.setdefault(s, b0[i]) == b0[i], "a clump split across bodies"
+assert len(set(m.values())) == len(m), "two clumps share a body"
+assert b0[ib] not in m.values(), "the block shares a body with a grain"
+nb = len(m); nd = len(grains)
+assert nb < nd, "no clump of several discs"
+worst = 0
+for b in set(b0):
+    idx = [i for i in range(len(b0)) if b0[i] == b]
+    for a in idx:
+        for c in idx:
+            d0 = math.dist(p0[a], p0[c]); d1 = math.dist(p1[a], p1[c])
+            worst = max(worst, abs(d1 - d0))
+assert worst < 1e-6, worst
+print(f"{nd} discs in {nb} bodies, as the sample; distances within a body kept to {worst:.1e} m")
+PY
+    [ $? -eq 0 ] && ok "4: VTK body of a clump sample: $(cat "$tmp/v4")" || ko "4: VTK body: $(tail -2 "$tmp/v4")"
+else ko "4: clump sample and impact: $(head -c 300 "$tmp/err")"; fi
 
 echo "$passes passed, $fails failed"
 [ "$fails" -eq 0 ]

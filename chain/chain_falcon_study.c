@@ -2,7 +2,8 @@
  * chain_falcon_study.c: the rigid-wall study of Falcon et al. (1998) as a
  * library call (gw_chain_study.h): one collision for every N in [n_lo, n_hi]
  * at each impact velocity (given directly, or from drop heights h in mm:
- * v = sqrt(2 g h), g = 9.81 m/s^2), then per velocity
+ * v = sqrt(2 g h), g the run's gravity or 9.81 m/s^2 when it has none:
+ * gw_chain_falcon_speeds), then per velocity
  *   tau_N = T_q (N - 1) + tau_1            (F.4, GSL least squares)
  *   wave speed 4R/T_q                      (F.6)
  *   against 2 (k/m)^(2/5) R v^(1/5)        (F.27), T_q = 2 (m/k)^(2/5) v^(-1/5) (F.17)
@@ -17,8 +18,6 @@
 #include <string.h>
 
 #include "chain_setup_rows.h"
-
-#define G_EARTH 9.81
 
 void gw_chain_falcon_analyse(const gw_chain_params *p, double v, const gw_chain_result *res, int n_lo,
                              int n_hi, gw_chain_falcon_fit *a)
@@ -75,7 +74,8 @@ static const gw_param falcon_params[] = {
     {.name = "vimp", .type = GW_PARAM_LIST, .offset = OWN(vimp), .unit = "m/s", .min = GW_CHAIN_VIMP_MIN,
      .max = GW_CHAIN_VIMP_MAX, .def = "0.3", .metavar = "V,V..", .help = "impact velocities, m/s [0.3]"},
     {.name = "heights", .type = GW_PARAM_LIST, .offset = OWN(heights), .unit = "mm", .min = GW_CHAIN_HEIGHT_MIN_MM,
-     .max = GW_CHAIN_VIMP_MAX * GW_CHAIN_VIMP_MAX / (2 * G_EARTH * 1e-3), .def = "1.9,2.9,3.1,5.1",
+     
+     .max = GW_CHAIN_HEIGHT_MAX_MM, .def = "1.9,2.9,3.1,5.1",
      .metavar = "H,H..", .help = "drop heights, mm, v = sqrt(2 g h), g the gravity or 9.81 when off ['none' to skip] [1.9,2.9,3.1,5.1]"},
     {.name = "n", .type = GW_PARAM_RANGE, .offset = OWN(n), .unit = "", .min = 1, .max = 100000, .def = "1:40",
      .metavar = "A:B", .help = "column sizes [1:40]"},
@@ -258,6 +258,30 @@ int gw_chain_falcon_sizes_check(long a, long b, gw_err *err)
     return GW_OK;
 }
 
+int gw_chain_falcon_speeds(const double *vimp, int n_vimp, const double *heights_mm, int n_heights, double gravity,
+                           double *v, double *h_mm, gw_err *err)
+{
+    int nv = n_vimp + n_heights;
+    if (nv <= 0 || n_vimp < 0 || n_heights < 0)
+        return gw_err_set(err, GW_EINVAL, "vimp: no impact velocity (vimp and heights both empty)");
+    if (!v || (n_vimp && !vimp) || (n_heights && !heights_mm))
+        return gw_err_set(err, GW_EINVAL, "gw_chain_falcon_speeds: a list is NULL");
+    /* the fall in the run's gravity when it has one (as drop's), else Earth's:
+     * with gravity 100 the heights were converted at 9.81 while the column
+     * felt 100 (falcon --heights 5.1 --gravity 100: 0.316 m/s, not 1.01) */
+    const double g_fall = gravity > 0 ? gravity : GW_CHAIN_G_EARTH;
+    for (int i = 0; i < nv; i++) {
+        int is_h = i >= n_vimp;
+        double x = is_h ? heights_mm[i - n_vimp] : vimp[i];
+        if (!(x > 0))
+            return gw_err_set(err, GW_EINVAL, "%s: %g must be > 0", is_h ? "heights" : "vimp", x);
+        if (h_mm)
+            h_mm[i] = is_h ? x : NAN;
+        v[i] = is_h ? sqrt(2 * g_fall * x * 1e-3) : x;
+    }
+    return gw_chain_study_speeds_check(v, nv, n_vimp, err);
+}
+
 int gw_chain_falcon_run(const gw_chain_falcon_setup *s, gw_progress_fn progress, void *pctx,
                         gw_chain_falcon_outcome *out, gw_err *err)
 {
@@ -270,27 +294,19 @@ int gw_chain_falcon_run(const gw_chain_falcon_setup *s, gw_progress_fn progress,
     int nv = s->vimp.n + s->heights.n, nn = (int)(s->n[1] - s->n[0] + 1);
     if ((rc = gw_chain_falcon_sizes_check(s->n[0], s->n[1], err)) != GW_OK)
         return rc;
-    if (nv == 0)
-        return gw_err_set(err, GW_EINVAL, "vimp: no impact velocity (vimp and heights both empty)");
     if ((rc = alloc_outcome(out, nv, nn, err)) != GW_OK)
         return rc;
-    double vmax = 0;
-    /* the fall in the run's gravity when it has one (as drop's), else Earth's:
-     * with gravity 100 the heights were converted at 9.81 while the column
-     * felt 100 (falcon --heights 5.1 --gravity 100: 0.316 m/s, not 1.01) */
-    const double g_fall = s->col.gravity > 0 ? s->col.gravity : G_EARTH;
-    for (int i = 0; i < nv; i++) {
-        int is_h = i >= s->vimp.n;
-        out->h_mm[i] = is_h ? s->heights.v[i - s->vimp.n] : NAN;
-        out->v_imp[i] = is_h ? sqrt(2 * g_fall * out->h_mm[i] * 1e-3) : s->vimp.v[i];
-        vmax = fmax(vmax, out->v_imp[i]);
-    }
-    for (int k = 0; k < nn; k++)
-        out->n[k] = (double)(s->n[0] + k);
-    if ((rc = gw_chain_study_speeds_check(out->v_imp, nv, s->vimp.n, err)) != GW_OK) {
+    /* the speeds and heights to velocities (none: refused there) */
+    if ((rc = gw_chain_falcon_speeds(s->vimp.v, s->vimp.n, s->heights.v, s->heights.n, s->col.gravity, out->v_imp,
+                                     out->h_mm, err)) != GW_OK) {
         gw_chain_falcon_outcome_free(out);
         return rc;
     }
+    double vmax = 0;
+    for (int i = 0; i < nv; i++)
+        vmax = fmax(vmax, out->v_imp[i]);
+    for (int k = 0; k < nn; k++)
+        out->n[k] = (double)(s->n[0] + k);
     gw_chain_setup col = s->col; /* shallow: n and vimp of the first case, no radii */
     col.n = s->n[0];
     col.vimp = out->v_imp[0];

@@ -220,6 +220,12 @@ typedef struct gw_chain_params {
 #define GW_CHAIN_VIMP_MIN 1e-9
 #define GW_CHAIN_VIMP_MAX 1e3
 #define GW_CHAIN_HEIGHT_MIN_MM 5e-17 /* v = sqrt(2 g h) = 0.99e-9 m/s: rounded so that h >= it gives v >= ~VIMP_MIN */
+/* Earth's gravity, m/s^2: the fall of a drop height when the run has no
+ * gravity of its own (gw_chain_falcon_speeds), the paper's 2.9 mm drop of
+ * softwall and of the sheets' K_eff, the drop's default gravity. */
+#define GW_CHAIN_G_EARTH 9.81
+/* The largest drop height, mm: GW_CHAIN_VIMP_MAX at GW_CHAIN_G_EARTH. */
+#define GW_CHAIN_HEIGHT_MAX_MM (GW_CHAIN_VIMP_MAX * GW_CHAIN_VIMP_MAX / (2 * GW_CHAIN_G_EARTH * 1e-3))
 
 /* Largest damping constants (docs/physics.md 1.5). Hunt-Crossley's restitution
  * depends on alpha v alone (measured with gw_chain_calibrate: e = 0.5 at

@@ -1,7 +1,7 @@
 /*
  * chain_falcon.c: `granwave falcon`, the rigid-wall study of Falcon et al. (1998)
  * for steel beads: N = 1..nmax at v_imp = 0.3 m/s and at the paper's drop heights
- * (v_imp = sqrt(2 g h), g = 9.81 m/s^2).
+ * (v_imp = sqrt(2 g h), g = 9.81 m/s^2 or --gravity: gw_chain_falcon_speeds).
  *
  * Per velocity: F_max(N), tau_max(N), tau_N(N) with the GSL line
  * tau_N = T_q (N - 1) + tau_1 (F.4) giving T_q and its intercept, the wave speed
@@ -334,24 +334,23 @@ int gw_cmd_falcon(int argc, char **argv)
         code = chain_cli_fail("falcon: out of memory");
         goto out;
     }
-    /* heights fall in the run's gravity when it has one, else Earth's (the
-     * library's rule, gw_chain_falcon_run) */
-    const double g_fall = f.c.gravity > 0 ? f.c.gravity : G_EARTH;
-    for (int i = 0; i < f.nv; i++) {
-        int is_h = i >= nvv;
-        double x = is_h ? hh[i - nvv] : vv[i];
-        if (!(x > 0)) {
-            gw_err_set(&err, GW_EINVAL, "falcon --%s: %g must be > 0", is_h ? "heights" : "vimp", x);
-            code = chain_cli_fail(err.msg);
-            goto out;
-        }
-        f.fv[i].h_mm = is_h ? x : NAN;
-        f.fv[i].v = f.v[i] = is_h ? sqrt(2 * g_fall * x * 1e-3) : x;
+    /* the speeds, then the heights fallen in the run's gravity (or Earth's):
+     * the library's one rule, as gw_chain_falcon_run */
+    double *h_mm = malloc((size_t)f.nv * sizeof *h_mm);
+    if (!h_mm) {
+        code = chain_cli_fail("falcon: out of memory");
+        goto out;
     }
-    if (gw_chain_study_speeds_check(f.v, f.nv, nvv, &err) != GW_OK) {
+    if (gw_chain_falcon_speeds(vv, nvv, hh, nhh, f.c.gravity, f.v, h_mm, &err) != GW_OK) {
+        free(h_mm);
         code = chain_cli_study_fail("falcon", err.msg);
         goto out;
     }
+    for (int i = 0; i < f.nv; i++) {
+        f.fv[i].v = f.v[i];
+        f.fv[i].h_mm = h_mm[i];
+    }
+    free(h_mm);
     f.c.params.n = f.n_lo;
     f.c.params.v_imp = f.v[0];
     if ((rc0 = chain_cli_resolve(&f.c, opts, "falcon", &err)) != GW_OK) {

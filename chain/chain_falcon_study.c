@@ -279,7 +279,30 @@ int gw_chain_falcon_speeds(const double *vimp, int n_vimp, const double *heights
             h_mm[i] = is_h ? x : NAN;
         v[i] = is_h ? sqrt(2 * g_fall * x * 1e-3) : x;
     }
-    return gw_chain_study_speeds_check(v, nv, n_vimp, err);
+    int rc = gw_chain_study_speeds_check(v, nv, n_vimp, err);
+    if (rc != GW_OK)
+        return rc;
+    /* the ranges (after the checks above, the order the command's messages have
+     * always come in): the table's rows (speeds as every chain command takes
+     * them; heights GW_CHAIN_HEIGHT_MIN_MM to GW_CHAIN_HEIGHT_MAX_MM, those
+     * speeds at 9.81), and under another gravity each height's fall within the
+     * speeds of the row (the smallest height's at 9.81, 0.99e-9 m/s, to
+     * GW_CHAIN_VIMP_MAX): the row alone let --heights 5e7 --gravity 1e4 run at
+     * 31623 m/s and --heights 1 --gravity 1e-300 at 4.5e-152 m/s */
+    const double vlo = sqrt(2 * GW_CHAIN_G_EARTH * GW_CHAIN_HEIGHT_MIN_MM * 1e-3);
+    for (int i = 0; i < nv; i++) {
+        int is_h = i >= n_vimp, k = is_h ? i - n_vimp + 1 : i + 1;
+        double x = is_h ? heights_mm[i - n_vimp] : vimp[i];
+        double lo = is_h ? GW_CHAIN_HEIGHT_MIN_MM : GW_CHAIN_VIMP_MIN, hi = is_h ? GW_CHAIN_HEIGHT_MAX_MM : GW_CHAIN_VIMP_MAX;
+        if (!(x >= lo && x <= hi)) /* the list parser's message (gw_parse_double_list_in) */
+            return gw_err_set(err, GW_EINVAL, "%s: item %d is %g, outside [%g, %g]", is_h ? "heights" : "vimp", k, x,
+                              lo, hi);
+        if (is_h && g_fall != GW_CHAIN_G_EARTH && !(v[i] >= vlo && v[i] <= GW_CHAIN_VIMP_MAX))
+            return gw_err_set(err, GW_EINVAL, "heights: item %d is %g mm: at gravity %g m/s^2 it falls to v = "
+                              "sqrt(2 g h) = %g m/s, outside the impact speeds [%g, %g] m/s", k, x, g_fall, v[i], vlo,
+                              GW_CHAIN_VIMP_MAX);
+    }
+    return GW_OK;
 }
 
 int gw_chain_falcon_run(const gw_chain_falcon_setup *s, gw_progress_fn progress, void *pctx,

@@ -62,8 +62,13 @@ int gw_chain_study_speeds_check(const double *v, int n, int n_speeds, gw_err *er
  * n_heights. Checks, in this order: at least one velocity (GW_EINVAL "vimp: no
  * impact velocity ..."); each value > 0, vimp first ("vimp: X must be > 0",
  * "heights: X must be > 0"); the velocities distinct
- * (gw_chain_study_speeds_check). The ranges of the lists are the table's
- * (gw_chain_falcon_setup_params), checked by its caller. */
+ * (gw_chain_study_speeds_check); the speeds in [GW_CHAIN_VIMP_MIN,
+ * GW_CHAIN_VIMP_MAX] and the heights in [GW_CHAIN_HEIGHT_MIN_MM,
+ * GW_CHAIN_HEIGHT_MAX_MM] ("vimp: item K is X, outside [A, B]", the rows of
+ * gw_chain_falcon_setup_params); under another gravity than Earth's, each
+ * height's fall within the speeds of those heights at 9.81 m/s^2, [0.99e-9,
+ * GW_CHAIN_VIMP_MAX] m/s ("heights: item K is H mm: at gravity G m/s^2 it falls
+ * to v = ... m/s, outside the impact speeds [..] m/s"). */
 int gw_chain_falcon_speeds(const double *vimp, int n_vimp, const double *heights_mm, int n_heights, double gravity,
                            double *v, double *h_mm, gw_err *err);
 

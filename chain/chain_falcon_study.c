@@ -221,9 +221,6 @@ static int pick_solver(const gw_chain_falcon_setup *s, gw_chain_resolved *r, dou
                       s->col.atol == d.atol && s->col.dt == d.dt;
     gw_chain_setup_clear(&d);
     *used = 0;
-    const gw_chain_params *p = &r->params; /* a general wall, sensor or guide: outside the step study */
-    int general = p->wall.layer || p->wall.yield_pressure > 0 || p->wall.loss > 0 || p->sensor.mass > 0 ||
-                  p->guide.coulomb > 0 || p->guide.viscous > 0;
     /* an accuracy other than the default was asked for: where it cannot act it
      * is refused, as the command refuses --accuracy (not silently ignored) */
     const int asked = s->accuracy != FALCON_ACCURACY_DEFAULT;
@@ -234,17 +231,12 @@ static int pick_solver(const gw_chain_falcon_setup *s, gw_chain_resolved *r, dou
         return GW_OK;
     if (!at_defaults)
         return asked ? gw_err_set(err, GW_EINVAL, "accuracy: give either accuracy or the solver options") : GW_OK;
-    if (p->damping != GW_DAMP_NONE || p->gravity != 0 || s->n[1] > 40 || general)
+    if (!gw_chain_rk4_study_covers(&r->params, s->n[1]))
         return asked ? gw_err_set(err, GW_EINVAL, "accuracy: the step study covers undamped columns of N <= 40 "
                                                   "without gravity on a Hertz wall, without sensor body or guide "
                                                   "friction; give the solver instead")
                      : GW_OK;
-    int m = gw_chain_rk4_steps_per_tc(s->accuracy);
-    r->run.solver = gw_solver_rk4;
-    r->run.sp.method = GW_METHOD_DEFAULT;
-    r->run.steps_per_tc = m;
-    if (s->col.dt_out == 0)
-        r->run.dt_out = gw_chain_tau1(r->params.mass, r->params.kwall, vmax) / 10;
+    gw_chain_rk4_study_apply(&r->run, &r->params, s->accuracy, vmax, s->col.dt_out != 0); /* checked above */
     *used = s->accuracy;
     return GW_OK;
 }

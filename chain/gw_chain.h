@@ -353,6 +353,18 @@ gw_chain_run_opts gw_chain_run_opts_default(void);
  * From the convergence study bench/bench_falcon_accuracy (see chain_collide.c).
  * Returns 0 when rel_acc is outside [1e-9, 1e-2] (use an adaptive backend). */
 int gw_chain_rk4_steps_per_tc(double rel_acc);
+/* Whether that study covers the column p run up to n_max beads: undamped, no
+ * gravity, N <= 40, a Hertz wall on a rigid sensor (no sheet layer, yield or
+ * loss), no guide friction. 1 or 0. The falcon study picks its solver by an
+ * accuracy target only there (gw_chain_falcon_run and `granwave falcon`). */
+int gw_chain_rk4_study_covers(const gw_chain_params *p, long n_max);
+/* The study's choice into run: RK4 (default method) with
+ * M = gw_chain_rk4_steps_per_tc(rel_acc) steps per T_c and, unless keep_dt_out,
+ * samples every tau_1/10 of the fastest impact vmax (F_max and tau_N are
+ * events; samples feed the energy check). Returns M, or 0 (run unchanged) when
+ * rel_acc is outside [1e-9, 1e-2]. */
+int gw_chain_rk4_study_apply(gw_chain_run_opts *run, const gw_chain_params *p, double rel_acc, double vmax,
+                             int keep_dt_out);
 
 typedef struct gw_chain_result {
     int n;

@@ -243,31 +243,21 @@ static int falcon_pick_solver(falcon *f, const gw_opt *opts, double accuracy, gw
             return gw_err_set(err, GW_EINVAL, "falcon --accuracy: give either --accuracy or the solver options");
         return GW_OK;
     }
-    const gw_chain_params *p = &f->c.params;
-    int general = p->wall.layer || p->wall.yield_pressure > 0 || p->wall.loss > 0 || p->sensor.mass > 0 ||
-                  p->guide.coulomb > 0 || p->guide.viscous > 0;
-    if (p->damping != GW_DAMP_NONE || p->gravity != 0 || f->n_hi > 40 || general) {
+    if (!gw_chain_rk4_study_covers(&f->c.params, f->n_hi)) { /* the library's rule, as gw_chain_falcon_run */
         if (gw_cli_find(opts, "accuracy")->seen)
             return gw_err_set(err, GW_EINVAL, "falcon --accuracy: the step study covers undamped columns "
                                               "of N <= 40 without gravity on a Hertz wall, without sensor "
                                               "body or guide friction; give --solver instead");
         return GW_OK; /* outside the study: the adaptive default */
     }
-    int m = gw_chain_rk4_steps_per_tc(accuracy);
-    if (m <= 0)
+    double vmax = 0;
+    for (int i = 0; i < f->nv; i++)
+        vmax = fmax(vmax, f->v[i]);
+    if (gw_chain_rk4_study_apply(&f->c.run, &f->c.params, accuracy, vmax, gw_cli_find(opts, "dt-out")->seen) <= 0)
         return gw_err_set(err, GW_EINVAL, "falcon --accuracy: %g outside [1e-9, 1e-2]", accuracy);
     f->c.solver = "rk4";
     f->c.method = "default";
-    f->c.run.solver = gw_solver_rk4;
-    f->c.run.sp.method = GW_METHOD_DEFAULT;
-    f->c.run.steps_per_tc = m;
     f->accuracy = accuracy;
-    if (!gw_cli_find(opts, "dt-out")->seen) {
-        double vmax = 0;
-        for (int i = 0; i < f->nv; i++)
-            vmax = fmax(vmax, f->v[i]);
-        f->c.run.dt_out = gw_chain_tau1(f->c.params.mass, f->c.params.kwall, vmax) / 10;
-    }
     return GW_OK;
 }
 

@@ -45,6 +45,27 @@ int gw_chain_rk4_steps_per_tc(double rel_acc)
     return m < 16 ? 16 : (int)ceil(m);
 }
 
+int gw_chain_rk4_study_covers(const gw_chain_params *p, long n_max)
+{
+    int general = p->wall.layer || p->wall.yield_pressure > 0 || p->wall.loss > 0 || p->sensor.mass > 0 ||
+                  p->guide.coulomb > 0 || p->guide.viscous > 0;
+    return !(p->damping != GW_DAMP_NONE || p->gravity != 0 || n_max > 40 || general);
+}
+
+int gw_chain_rk4_study_apply(gw_chain_run_opts *run, const gw_chain_params *p, double rel_acc, double vmax,
+                             int keep_dt_out)
+{
+    int m = gw_chain_rk4_steps_per_tc(rel_acc);
+    if (m <= 0)
+        return 0;
+    run->solver = gw_solver_rk4;
+    run->sp.method = GW_METHOD_DEFAULT;
+    run->steps_per_tc = m;
+    if (!keep_dt_out)
+        run->dt_out = gw_chain_tau1(p->mass, p->kwall, vmax) / 10;
+    return m;
+}
+
 typedef struct run_state {
     const gw_chain *c;
     const gw_chain_run_opts *o;

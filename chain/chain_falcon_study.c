@@ -2,7 +2,8 @@
  * chain_falcon_study.c: the rigid-wall study of Falcon et al. (1998) as a
  * library call (gw_chain_study.h): one collision for every N in [n_lo, n_hi]
  * at each impact velocity (given directly, or from drop heights h in mm:
- * v = sqrt(2 g h), g = 9.81 m/s^2), then per velocity
+ * v = sqrt(2 g h), g the run's gravity or 9.81 m/s^2 when it has none:
+ * gw_chain_falcon_speeds), then per velocity
  *   tau_N = T_q (N - 1) + tau_1            (F.4, GSL least squares)
  *   wave speed 4R/T_q                      (F.6)
  *   against 2 (k/m)^(2/5) R v^(1/5)        (F.27), T_q = 2 (m/k)^(2/5) v^(-1/5) (F.17)
@@ -17,8 +18,6 @@
 #include <string.h>
 
 #include "chain_setup_rows.h"
-
-#define G_EARTH 9.81
 
 void gw_chain_falcon_analyse(const gw_chain_params *p, double v, const gw_chain_result *res, int n_lo,
                              int n_hi, gw_chain_falcon_fit *a)
@@ -75,7 +74,8 @@ static const gw_param falcon_params[] = {
     {.name = "vimp", .type = GW_PARAM_LIST, .offset = OWN(vimp), .unit = "m/s", .min = GW_CHAIN_VIMP_MIN,
      .max = GW_CHAIN_VIMP_MAX, .def = "0.3", .metavar = "V,V..", .help = "impact velocities, m/s [0.3]"},
     {.name = "heights", .type = GW_PARAM_LIST, .offset = OWN(heights), .unit = "mm", .min = GW_CHAIN_HEIGHT_MIN_MM,
-     .max = GW_CHAIN_VIMP_MAX * GW_CHAIN_VIMP_MAX / (2 * G_EARTH * 1e-3), .def = "1.9,2.9,3.1,5.1",
+     
+     .max = GW_CHAIN_HEIGHT_MAX_MM, .def = "1.9,2.9,3.1,5.1",
      .metavar = "H,H..", .help = "drop heights, mm, v = sqrt(2 g h), g the gravity or 9.81 when off ['none' to skip] [1.9,2.9,3.1,5.1]"},
     {.name = "n", .type = GW_PARAM_RANGE, .offset = OWN(n), .unit = "", .min = 1, .max = 100000, .def = "1:40",
      .metavar = "A:B", .help = "column sizes [1:40]"},
@@ -221,9 +221,6 @@ static int pick_solver(const gw_chain_falcon_setup *s, gw_chain_resolved *r, dou
                       s->col.atol == d.atol && s->col.dt == d.dt;
     gw_chain_setup_clear(&d);
     *used = 0;
-    const gw_chain_params *p = &r->params; /* a general wall, sensor or guide: outside the step study */
-    int general = p->wall.layer || p->wall.yield_pressure > 0 || p->wall.loss > 0 || p->sensor.mass > 0 ||
-                  p->guide.coulomb > 0 || p->guide.viscous > 0;
     /* an accuracy other than the default was asked for: where it cannot act it
      * is refused, as the command refuses --accuracy (not silently ignored) */
     const int asked = s->accuracy != FALCON_ACCURACY_DEFAULT;
@@ -234,17 +231,12 @@ static int pick_solver(const gw_chain_falcon_setup *s, gw_chain_resolved *r, dou
         return GW_OK;
     if (!at_defaults)
         return asked ? gw_err_set(err, GW_EINVAL, "accuracy: give either accuracy or the solver options") : GW_OK;
-    if (p->damping != GW_DAMP_NONE || p->gravity != 0 || s->n[1] > 40 || general)
+    if (!gw_chain_rk4_study_covers(&r->params, s->n[1]))
         return asked ? gw_err_set(err, GW_EINVAL, "accuracy: the step study covers undamped columns of N <= 40 "
                                                   "without gravity on a Hertz wall, without sensor body or guide "
                                                   "friction; give the solver instead")
                      : GW_OK;
-    int m = gw_chain_rk4_steps_per_tc(s->accuracy);
-    r->run.solver = gw_solver_rk4;
-    r->run.sp.method = GW_METHOD_DEFAULT;
-    r->run.steps_per_tc = m;
-    if (s->col.dt_out == 0)
-        r->run.dt_out = gw_chain_tau1(r->params.mass, r->params.kwall, vmax) / 10;
+    gw_chain_rk4_study_apply(&r->run, &r->params, s->accuracy, vmax, s->col.dt_out != 0); /* checked above */
     *used = s->accuracy;
     return GW_OK;
 }
@@ -255,6 +247,53 @@ int gw_chain_falcon_sizes_check(long a, long b, gw_err *err)
         return gw_err_set(err, GW_EINVAL, "n: %ld:%ld is one column size, and the study fits tau_N = T_q (N - 1) + "
                           "tau_1 over N (T_q, the wave speed 4R/T_q): give at least two sizes, e.g. %ld:%ld (one "
                           "column's collision: granwave chain --n %ld)", a, b, a > 1 ? a - 1 : a, a > 1 ? b : b + 1, a);
+    return GW_OK;
+}
+
+int gw_chain_falcon_speeds(const double *vimp, int n_vimp, const double *heights_mm, int n_heights, double gravity,
+                           double *v, double *h_mm, gw_err *err)
+{
+    int nv = n_vimp + n_heights;
+    if (nv <= 0 || n_vimp < 0 || n_heights < 0)
+        return gw_err_set(err, GW_EINVAL, "vimp: no impact velocity (vimp and heights both empty)");
+    if (!v || (n_vimp && !vimp) || (n_heights && !heights_mm))
+        return gw_err_set(err, GW_EINVAL, "gw_chain_falcon_speeds: a list is NULL");
+    /* the fall in the run's gravity when it has one (as drop's), else Earth's:
+     * with gravity 100 the heights were converted at 9.81 while the column
+     * felt 100 (falcon --heights 5.1 --gravity 100: 0.316 m/s, not 1.01) */
+    const double g_fall = gravity > 0 ? gravity : GW_CHAIN_G_EARTH;
+    for (int i = 0; i < nv; i++) {
+        int is_h = i >= n_vimp;
+        double x = is_h ? heights_mm[i - n_vimp] : vimp[i];
+        if (!(x > 0))
+            return gw_err_set(err, GW_EINVAL, "%s: %g must be > 0", is_h ? "heights" : "vimp", x);
+        if (h_mm)
+            h_mm[i] = is_h ? x : NAN;
+        v[i] = is_h ? sqrt(2 * g_fall * x * 1e-3) : x;
+    }
+    int rc = gw_chain_study_speeds_check(v, nv, n_vimp, err);
+    if (rc != GW_OK)
+        return rc;
+    /* the ranges (after the checks above, the order the command's messages have
+     * always come in): the table's rows (speeds as every chain command takes
+     * them; heights GW_CHAIN_HEIGHT_MIN_MM to GW_CHAIN_HEIGHT_MAX_MM, those
+     * speeds at 9.81), and under another gravity each height's fall within the
+     * speeds of the row (the smallest height's at 9.81, 0.99e-9 m/s, to
+     * GW_CHAIN_VIMP_MAX): the row alone let --heights 5e7 --gravity 1e4 run at
+     * 31623 m/s and --heights 1 --gravity 1e-300 at 4.5e-152 m/s */
+    const double vlo = sqrt(2 * GW_CHAIN_G_EARTH * GW_CHAIN_HEIGHT_MIN_MM * 1e-3);
+    for (int i = 0; i < nv; i++) {
+        int is_h = i >= n_vimp, k = is_h ? i - n_vimp + 1 : i + 1;
+        double x = is_h ? heights_mm[i - n_vimp] : vimp[i];
+        double lo = is_h ? GW_CHAIN_HEIGHT_MIN_MM : GW_CHAIN_VIMP_MIN, hi = is_h ? GW_CHAIN_HEIGHT_MAX_MM : GW_CHAIN_VIMP_MAX;
+        if (!(x >= lo && x <= hi)) /* the list parser's message (gw_parse_double_list_in) */
+            return gw_err_set(err, GW_EINVAL, "%s: item %d is %g, outside [%g, %g]", is_h ? "heights" : "vimp", k, x,
+                              lo, hi);
+        if (is_h && g_fall != GW_CHAIN_G_EARTH && !(v[i] >= vlo && v[i] <= GW_CHAIN_VIMP_MAX))
+            return gw_err_set(err, GW_EINVAL, "heights: item %d is %g mm: at gravity %g m/s^2 it falls to v = "
+                              "sqrt(2 g h) = %g m/s, outside the impact speeds [%g, %g] m/s", k, x, g_fall, v[i], vlo,
+                              GW_CHAIN_VIMP_MAX);
+    }
     return GW_OK;
 }
 
@@ -270,27 +309,19 @@ int gw_chain_falcon_run(const gw_chain_falcon_setup *s, gw_progress_fn progress,
     int nv = s->vimp.n + s->heights.n, nn = (int)(s->n[1] - s->n[0] + 1);
     if ((rc = gw_chain_falcon_sizes_check(s->n[0], s->n[1], err)) != GW_OK)
         return rc;
-    if (nv == 0)
-        return gw_err_set(err, GW_EINVAL, "vimp: no impact velocity (vimp and heights both empty)");
     if ((rc = alloc_outcome(out, nv, nn, err)) != GW_OK)
         return rc;
-    double vmax = 0;
-    /* the fall in the run's gravity when it has one (as drop's), else Earth's:
-     * with gravity 100 the heights were converted at 9.81 while the column
-     * felt 100 (falcon --heights 5.1 --gravity 100: 0.316 m/s, not 1.01) */
-    const double g_fall = s->col.gravity > 0 ? s->col.gravity : G_EARTH;
-    for (int i = 0; i < nv; i++) {
-        int is_h = i >= s->vimp.n;
-        out->h_mm[i] = is_h ? s->heights.v[i - s->vimp.n] : NAN;
-        out->v_imp[i] = is_h ? sqrt(2 * g_fall * out->h_mm[i] * 1e-3) : s->vimp.v[i];
-        vmax = fmax(vmax, out->v_imp[i]);
-    }
-    for (int k = 0; k < nn; k++)
-        out->n[k] = (double)(s->n[0] + k);
-    if ((rc = gw_chain_study_speeds_check(out->v_imp, nv, s->vimp.n, err)) != GW_OK) {
+    /* the speeds and heights to velocities (none: refused there) */
+    if ((rc = gw_chain_falcon_speeds(s->vimp.v, s->vimp.n, s->heights.v, s->heights.n, s->col.gravity, out->v_imp,
+                                     out->h_mm, err)) != GW_OK) {
         gw_chain_falcon_outcome_free(out);
         return rc;
     }
+    double vmax = 0;
+    for (int i = 0; i < nv; i++)
+        vmax = fmax(vmax, out->v_imp[i]);
+    for (int k = 0; k < nn; k++)
+        out->n[k] = (double)(s->n[0] + k);
     gw_chain_setup col = s->col; /* shallow: n and vimp of the first case, no radii */
     col.n = s->n[0];
     col.vimp = out->v_imp[0];

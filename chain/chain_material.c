@@ -130,6 +130,6 @@ const gw_sheet *gw_sheet_find(const char *name)
 
 double gw_sheet_kwall(const gw_sheet *s, double m)
 {
-    double v = sqrt(2 * 9.81 * 2.9e-3);
+    double v = sqrt(2 * GW_CHAIN_G_EARTH * 2.9e-3);
     return 1.25 * m * pow(gw_chain_tau_constant() / (2e-6 * s->tau_max1_us * pow(v, 0.2)), 2.5);
 }

@@ -31,7 +31,6 @@
 #include "chain_setup_rows.h"
 #include "gw_locale.h"
 
-#define G_EARTH 9.81
 #define SATURATION_RUN 6
 
 /* ---- the tables of the inputs ---- */
@@ -586,7 +585,7 @@ int gw_chain_softwall_run(const gw_chain_softwall_setup *s, gw_progress_fn progr
     long a = s->n[0], b = s->n[1];
     if (b - a < 2)
         return gw_err_set(err, GW_EINVAL, "n: need at least 3 column sizes");
-    double vimp = isnan(s->vimp) ? sqrt(2 * G_EARTH * 2.9e-3) : s->vimp;
+    double vimp = isnan(s->vimp) ? sqrt(2 * GW_CHAIN_G_EARTH * 2.9e-3) : s->vimp;
     gw_chain_setup col = s->col; /* shallow: no radii */
     col.n = a;
     col.vimp = vimp;

@@ -220,6 +220,12 @@ typedef struct gw_chain_params {
 #define GW_CHAIN_VIMP_MIN 1e-9
 #define GW_CHAIN_VIMP_MAX 1e3
 #define GW_CHAIN_HEIGHT_MIN_MM 5e-17 /* v = sqrt(2 g h) = 0.99e-9 m/s: rounded so that h >= it gives v >= ~VIMP_MIN */
+/* Earth's gravity, m/s^2: the fall of a drop height when the run has no
+ * gravity of its own (gw_chain_falcon_speeds), the paper's 2.9 mm drop of
+ * softwall and of the sheets' K_eff, the drop's default gravity. */
+#define GW_CHAIN_G_EARTH 9.81
+/* The largest drop height, mm: GW_CHAIN_VIMP_MAX at GW_CHAIN_G_EARTH. */
+#define GW_CHAIN_HEIGHT_MAX_MM (GW_CHAIN_VIMP_MAX * GW_CHAIN_VIMP_MAX / (2 * GW_CHAIN_G_EARTH * 1e-3))
 
 /* Largest damping constants (docs/physics.md 1.5). Hunt-Crossley's restitution
  * depends on alpha v alone (measured with gw_chain_calibrate: e = 0.5 at
@@ -347,6 +353,18 @@ gw_chain_run_opts gw_chain_run_opts_default(void);
  * From the convergence study bench/bench_falcon_accuracy (see chain_collide.c).
  * Returns 0 when rel_acc is outside [1e-9, 1e-2] (use an adaptive backend). */
 int gw_chain_rk4_steps_per_tc(double rel_acc);
+/* Whether that study covers the column p run up to n_max beads: undamped, no
+ * gravity, N <= 40, a Hertz wall on a rigid sensor (no sheet layer, yield or
+ * loss), no guide friction. 1 or 0. The falcon study picks its solver by an
+ * accuracy target only there (gw_chain_falcon_run and `granwave falcon`). */
+int gw_chain_rk4_study_covers(const gw_chain_params *p, long n_max);
+/* The study's choice into run: RK4 (default method) with
+ * M = gw_chain_rk4_steps_per_tc(rel_acc) steps per T_c and, unless keep_dt_out,
+ * samples every tau_1/10 of the fastest impact vmax (F_max and tau_N are
+ * events; samples feed the energy check). Returns M, or 0 (run unchanged) when
+ * rel_acc is outside [1e-9, 1e-2]. */
+int gw_chain_rk4_study_apply(gw_chain_run_opts *run, const gw_chain_params *p, double rel_acc, double vmax,
+                             int keep_dt_out);
 
 typedef struct gw_chain_result {
     int n;

@@ -54,6 +54,23 @@ int gw_chain_study_work_check(long a, long b, int runs, gw_err *err);
  * distinct speeds). GW_EINVAL "vimp: ..." (or "heights: ..." for an index >=
  * n_speeds) otherwise. */
 int gw_chain_study_speeds_check(const double *v, int n, int n_speeds, gw_err *err);
+/* The impact velocities of the falcon study, one rule for the program, the
+ * library's gw_chain_falcon_run and Python: v[0..n_vimp) the speeds vimp as
+ * given, then v[n_vimp + j] = sqrt(2 g h) of the drop height heights_mm[j] (mm),
+ * g = gravity (the run's, m/s^2) when > 0, else GW_CHAIN_G_EARTH; h_mm (may be
+ * NULL) the heights, NaN for a speed given directly. v and h_mm hold n_vimp +
+ * n_heights. Checks, in this order: at least one velocity (GW_EINVAL "vimp: no
+ * impact velocity ..."); each value > 0, vimp first ("vimp: X must be > 0",
+ * "heights: X must be > 0"); the velocities distinct
+ * (gw_chain_study_speeds_check); the speeds in [GW_CHAIN_VIMP_MIN,
+ * GW_CHAIN_VIMP_MAX] and the heights in [GW_CHAIN_HEIGHT_MIN_MM,
+ * GW_CHAIN_HEIGHT_MAX_MM] ("vimp: item K is X, outside [A, B]", the rows of
+ * gw_chain_falcon_setup_params); under another gravity than Earth's, each
+ * height's fall within the speeds of those heights at 9.81 m/s^2, [0.99e-9,
+ * GW_CHAIN_VIMP_MAX] m/s ("heights: item K is H mm: at gravity G m/s^2 it falls
+ * to v = ... m/s, outside the impact speeds [..] m/s"). */
+int gw_chain_falcon_speeds(const double *vimp, int n_vimp, const double *heights_mm, int n_heights, double gravity,
+                           double *v, double *h_mm, gw_err *err);
 
 typedef struct gw_chain_setup {
     long n;               /* beads [1] */
@@ -166,7 +183,8 @@ void gw_chain_falcon_analyse(const gw_chain_params *p, double v, const gw_chain_
 typedef struct gw_chain_falcon_setup {
     gw_chain_setup col;
     gw_param_list vimp;    /* impact velocities, m/s [0.3] */
-    gw_param_list heights; /* drop heights, mm, v = sqrt(2 g h), g = gravity, or 9.81 when 0 [1.9,2.9,3.1,5.1] */
+    gw_param_list heights; /* drop heights, mm, v = sqrt(2 g h), g = gravity, or 9.81 when 0
+                              (gw_chain_falcon_speeds) [1.9,2.9,3.1,5.1] */
     long n[2];             /* column sizes [1:40] */
     double accuracy;       /* relative accuracy of F_max and tau_N for the RK4 step
                               study, used when every solver row of col is at its

@@ -18,6 +18,9 @@
  *   over these cases exceeds 1e-6 (measured 1.7e-5 at M = 9; with M = 37 the
  *   worst errors are 5.0e-7 on F_max and 1.0e-7 on tau_N);
  *   M does not fall as the target tightens (1e-7 needs at least M(1e-6)).
+ * The setting is the one gw_chain_rk4_study_apply makes (the program's and
+ * gw_chain_falcon_run's), and gw_chain_rk4_study_covers holds for the cases
+ * the study measured (N <= 40, undamped, no gravity, Hertz wall) only.
  */
 #include <stdio.h>
 
@@ -54,15 +57,39 @@ int main(void)
 
     gw_chain_params p0 = gw_chain_params_default();
     double dt_out = gw_chain_tau1(p0.mass, p0.kwall, vs[1]) / 10;
+    /* the study's choice as the program and gw_chain_falcon_run make it */
+    gw_chain_run_opts o0 = gw_chain_run_opts_default(), keep = o0, bad = o0;
+    gw_test_true(gw_chain_rk4_study_apply(&o0, &p0, 1e-6, vs[1], 0) == m && o0.solver == gw_solver_rk4 &&
+                     o0.steps_per_tc == m && o0.sp.method == GW_METHOD_DEFAULT,
+                 "gw_chain_rk4_study_apply: rk4 at M(1e-6)");
+    gw_test_rel(o0.dt_out, dt_out, 1e-15, "sampled every tau_1/10 of the fastest impact");
+    keep.dt_out = 2e-6;
+    gw_chain_rk4_study_apply(&keep, &p0, 1e-6, vs[1], 1);
+    gw_test_true(keep.dt_out == 2e-6 && keep.steps_per_tc == m, "a given sampling kept");
+    gw_test_true(gw_chain_rk4_study_apply(&bad, &p0, 1e-12, vs[1], 0) == 0 && bad.solver == gw_chain_run_opts_default().solver &&
+                     bad.steps_per_tc == gw_chain_run_opts_default().steps_per_tc,
+                 "a target outside [1e-9, 1e-2]: 0, run unchanged");
+    /* where the study covers the column: these N, undamped, no gravity, Hertz wall */
+    gw_chain_params q = p0;
+    int cov = gw_chain_rk4_study_covers(&q, 40) && !gw_chain_rk4_study_covers(&q, 41);
+    q.gravity = 9.81;
+    cov = cov && !gw_chain_rk4_study_covers(&q, 40);
+    q = p0;
+    q.damping = GW_DAMP_KUWABARA_KONO;
+    cov = cov && !gw_chain_rk4_study_covers(&q, 40);
+    q = p0;
+    q.sensor.mass = 1e-3;
+    cov = cov && !gw_chain_rk4_study_covers(&q, 40);
+    q = p0;
+    q.guide.coulomb = 1e-3;
+    cov = cov && !gw_chain_rk4_study_covers(&q, 40);
+    gw_test_true(cov, "gw_chain_rk4_study_covers: N <= 40 undamped without gravity, sensor body or friction only");
     double coarse_worst = 0;
     for (size_t iv = 0; iv < sizeof vs / sizeof vs[0]; iv++)
         for (size_t in = 0; in < sizeof ns / sizeof ns[0]; in++) {
             gw_chain_run_opts ro = gw_chain_run_opts_default();
             ro.sp.rtol = ro.sp.atol = 1e-12;
-            gw_chain_run_opts o = gw_chain_run_opts_default();
-            o.solver = gw_solver_rk4;
-            o.steps_per_tc = m;
-            o.dt_out = dt_out;
+            gw_chain_run_opts o = o0;
             gw_chain_run_opts oc = o;
             oc.steps_per_tc = m / 4;
             gw_chain_result ref, r, rc;

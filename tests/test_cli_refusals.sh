@@ -5,7 +5,8 @@
 #  1 memory: a negative or absurd item of a --vimp / --heights / --radii list is
 #    refused by the list parser itself (exit 2, the item named; before the fix
 #    wavespeed printed it after freeing the list); falcon refuses the speeds
-#    chain refuses.
+#    chain refuses, and a height whose fall under --gravity leaves them
+#    (gw_chain_falcon_speeds; 5e7 mm at 1e4 m/s^2 ran at 31623 m/s).
 #  2 unbounded work: dispersion --min-bins in [1, T/2 - 2] (above, no ridge can
 #    be resolved); the column's --gamma <= 1e14, --alpha <= 1e8, --energy-tol <= 1
 #    in every chain command and a chain sweep, and --restitution refused when it
@@ -47,6 +48,14 @@ refused "wavespeed --vimp with an absurd item" 'wavespeed --vimp: item 1 is 1e\+
 refused "falcon --vimp refuses what chain refuses (2000 m/s)" 'falcon --vimp: item 2' falcon --n 1:2 --vimp 0.3,2000 --heights none --out "$tmp/o"
 "$GW" chain --vimp 2000 >/dev/null 2>&1; [ $? -eq 2 ] && ok "chain --vimp 2000 refused (the shared bound)" || ko "chain --vimp 2000 not refused"
 refused "falcon --heights beyond the shared speed bound" 'falcon --heights: item 1' falcon --n 1:2 --heights 1e12 --out "$tmp/o"
+# a height's fall under the run's gravity: the table's row of heights holds the
+# speeds at 9.81; 5e7 mm at 1e4 m/s^2 ran at 31623 m/s, 1 mm at 1e-300 at 4.5e-152
+refused "falcon --heights 5e7 --gravity 1e4 (a fall of 31623 m/s)" \
+    '^granwave falcon --heights: item 1 is 5e\+07 mm: at gravity 10000 m/s\^2 it falls to v = sqrt\(2 g h\) = 31622.8 m/s, outside the impact speeds \[9.90454e-10, 1000\] m/s$' \
+    falcon --n 1:2 --heights 5e7 --gravity 1e4 --out "$tmp/o"
+refused "falcon --vimp 0.3 --heights 1 --gravity 1e-300 (a fall of 4.5e-152 m/s)" \
+    '^granwave falcon --heights: item 1 is 1 mm: at gravity 1e-300 m/s\^2 it falls to v = sqrt\(2 g h\) = 4.47214e-152 m/s' \
+    falcon --n 1:2 --vimp 0.3 --heights 1 --gravity 1e-300 --out "$tmp/o"
 refused "chain --radii below a micron (the mass underflowed to 0)" 'chain --radii: item 1 is 1e-300, outside \[1e-06, 1\]' chain --n 2 --radii 1e-300,4e-3 --out "$tmp/o"
 refused "chain --wall-material with --kwall (no effect)" 'chain --wall-material: has no effect with kwall' chain --n 3 --wall-material rigid --kwall 1e9 --out "$tmp/o"
 refused "chain --rtol with the fixed-step rk4 (no effect)" 'chain --rtol: has no effect with the fixed-step rk4 solver' chain --n 3 --solver rk4 --rtol 1e-6 --out "$tmp/o"

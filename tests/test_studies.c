@@ -10,6 +10,12 @@
  *    the fitted T_q is the least-squares slope of tau_N against N - 1
  *    recomputed here (1e-12), F_max spread on the rigid steel wall below 5 %
  *    (physics.md 1.3), v = sqrt(2 g h) for a height.
+ *  - The Falcon study's velocities (gw_chain_falcon_speeds, the one rule of
+ *    the program, the library and Python): heights fall in the run's gravity
+ *    (9.81 when off), to 1e-15; a negative value, a speed given twice, a speed
+ *    beyond 1000 m/s and a height whose fall under the run's gravity leaves the
+ *    speeds [0.99e-9, 1000] m/s (5e7 mm at 1e4 m/s^2, 1 mm at 1e-300) refused
+ *    by name, by the function and by gw_chain_falcon_run (which ran both).
  *  - Pluviation and an impact on a 30-disc sample: the impact's ledger closes
  *    to 2e-3 (the fast default's bound, tests/test_layer_cli.sh) and the
  *    ledger's components add up to its total (1e-9 of A); snapshots at 5 ms
@@ -172,10 +178,72 @@ static void layer(void)
     remove(path);
 }
 
+/* msg starts with prefix and holds part */
+static int says(const gw_err *e, const char *prefix, const char *part)
+{
+    return strncmp(e->msg, prefix, strlen(prefix)) == 0 && strstr(e->msg, part) != NULL;
+}
+
+/* The falcon study's velocities, one rule for the program, the library and
+ * Python (gw_chain_falcon_speeds): the speeds as given, heights as sqrt(2 g h)
+ * in the run's gravity (9.81 when off); refusals name the list and the item. */
+static void falcon_speeds(void)
+{
+    const double sp[] = {0.3, 0.5}, h[] = {5.1, 1.9};
+    double v[4], hm[4];
+    gw_err err = {{0}};
+    int rc = gw_chain_falcon_speeds(sp, 2, h, 2, 0, v, hm, &err);
+    gw_test_true(rc == GW_OK && v[0] == 0.3 && v[1] == 0.5 && isnan(hm[0]) && isnan(hm[1]) && hm[2] == 5.1 &&
+                     hm[3] == 1.9, "speeds as given (h_mm NaN), then the heights");
+    gw_test_rel(v[2], sqrt(2 * 9.81 * 5.1e-3), 1e-15, "gravity off: 5.1 mm falls at 9.81, sqrt(2 g h)");
+    rc = gw_chain_falcon_speeds(sp, 2, h, 2, 100, v, NULL, &err);
+    gw_test_rel(v[3], sqrt(2 * 100 * 1.9e-3), 1e-15, "gravity 100: 1.9 mm falls at 100 (h_mm may be NULL)");
+    const double neg[] = {-1}, dup[] = {1, 1}, big[] = {5e7}, one[] = {1}, fast[] = {2000};
+    rc = gw_chain_falcon_speeds(sp, 2, neg, 1, 0, v, hm, &err);
+    gw_test_true(rc == GW_EINVAL && says(&err, "heights: ", "-1 must be > 0"), "a negative height refused by name");
+    rc = gw_chain_falcon_speeds(dup, 2, NULL, 0, 0, v, hm, &err);
+    gw_test_true(rc == GW_EINVAL && says(&err, "vimp: item 2 ", "of item 1"), "a speed given twice refused");
+    rc = gw_chain_falcon_speeds(fast, 1, NULL, 0, 0, v, hm, &err);
+    gw_test_true(rc == GW_EINVAL && says(&err, "vimp: item 1 is 2000, outside [1e-09, 1000]", ""),
+                 "a speed beyond the chain commands' bound (the table's message)");
+    rc = gw_chain_falcon_speeds(sp, 1, big, 1, 9.81, v, hm, &err);
+    gw_test_true(rc == GW_OK, "5e7 mm at 9.81 m/s^2 (990 m/s): inside the table's row");
+    rc = gw_chain_falcon_speeds(sp, 1, big, 1, 1e4, v, hm, &err);
+    gw_test_true(rc == GW_EINVAL && says(&err, "heights: item 1 is 5e+07 mm: at gravity 10000", "31622.8 m/s"),
+                 "5e7 mm at 1e4 m/s^2 falls at 31623 m/s: refused, beyond 1000 m/s");
+    rc = gw_chain_falcon_speeds(sp, 1, one, 1, 1e-300, v, hm, &err);
+    gw_test_true(rc == GW_EINVAL && says(&err, "heights: item 1 is 1 mm: at gravity 1e-300", "4.47214e-152"),
+                 "1 mm at 1e-300 m/s^2 falls at 4.5e-152 m/s: refused, below 1e-9 m/s");
+    rc = gw_chain_falcon_speeds(NULL, 0, NULL, 0, 0, v, hm, &err);
+    gw_test_true(rc == GW_EINVAL && says(&err, "vimp: no impact velocity", ""), "no velocity refused");
+    /* the study itself: the same rule, nothing run */
+    gw_chain_falcon_setup f;
+    gw_chain_falcon_setup_init(&f);
+    const gw_param *t = gw_chain_falcon_setup_params();
+    gw_param_set(t, &f, "n", "1:2", &err);
+    gw_param_set(t, &f, "heights", "5e7", &err);
+    gw_param_set(gw_chain_setup_params(), &f.col, "gravity", "1e4", &err);
+    gw_chain_falcon_outcome o;
+    rc = gw_chain_falcon_run(&f, NULL, NULL, &o, &err);
+    gw_test_true(rc == GW_EINVAL && says(&err, "heights: item 1 is 5e+07 mm", "") && o.v_imp == NULL,
+                 "gw_chain_falcon_run refuses --heights 5e7 --gravity 1e4 (ran at 31623 m/s), outcome empty");
+    gw_chain_falcon_outcome_free(&o);
+    gw_param_set(t, &f, "heights", "5.1", &err);
+    gw_param_set(gw_chain_setup_params(), &f.col, "gravity", "100", &err);
+    f.accuracy = 0; /* cvode as the column's rows say: under gravity the step study does not apply */
+    rc = gw_chain_falcon_run(&f, NULL, NULL, &o, &err);
+    gw_test_true(rc == GW_OK && o.nv == 2, "falcon study: heights 5.1 under gravity 100 runs");
+    if (rc == GW_OK)
+        gw_test_rel(o.v_imp[1], sqrt(2 * 100 * 5.1e-3), 1e-15, "the study's v for 5.1 mm at gravity 100");
+    gw_chain_falcon_outcome_free(&o);
+    gw_chain_falcon_setup_clear(&f);
+}
+
 int main(void)
 {
     sweep_in_memory();
     falcon();
+    falcon_speeds();
     layer();
     return gw_test_summary("test_studies");
 }

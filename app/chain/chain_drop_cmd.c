@@ -16,7 +16,6 @@
 
 #include "gw_cli.h"
 #include "chain_options.h"
-#include "chain_falcon.h" /* G_EARTH */
 
 static const char *drop_summary =
     "The whole drop (Falcon et al. 1998, Fig. 12): a column of N beads released from\n"
@@ -69,7 +68,7 @@ static void drop_options(drop_cli *d, gw_opt *opts)
     d->n = 1;
     d->height = 5.1e-3;
     d->peak_threshold = NAN;
-    d->c.gravity = G_EARTH;
+    d->c.gravity = GW_CHAIN_G_EARTH;
     d->c.t_max = 10e-3;
     static const char *const own[] = {"gravity", "t-max", "dt-out"}; /* the drop's own rows */
     for (int i = 0; i < 3; i++) {

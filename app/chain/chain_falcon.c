@@ -1,7 +1,7 @@
 /*
  * chain_falcon.c: `granwave falcon`, the rigid-wall study of Falcon et al. (1998)
  * for steel beads: N = 1..nmax at v_imp = 0.3 m/s and at the paper's drop heights
- * (v_imp = sqrt(2 g h), g = 9.81 m/s^2).
+ * (v_imp = sqrt(2 g h), g = 9.81 m/s^2 or --gravity: gw_chain_falcon_speeds).
  *
  * Per velocity: F_max(N), tau_max(N), tau_N(N) with the GSL line
  * tau_N = T_q (N - 1) + tau_1 (F.4) giving T_q and its intercept, the wave speed
@@ -243,31 +243,21 @@ static int falcon_pick_solver(falcon *f, const gw_opt *opts, double accuracy, gw
             return gw_err_set(err, GW_EINVAL, "falcon --accuracy: give either --accuracy or the solver options");
         return GW_OK;
     }
-    const gw_chain_params *p = &f->c.params;
-    int general = p->wall.layer || p->wall.yield_pressure > 0 || p->wall.loss > 0 || p->sensor.mass > 0 ||
-                  p->guide.coulomb > 0 || p->guide.viscous > 0;
-    if (p->damping != GW_DAMP_NONE || p->gravity != 0 || f->n_hi > 40 || general) {
+    if (!gw_chain_rk4_study_covers(&f->c.params, f->n_hi)) { /* the library's rule, as gw_chain_falcon_run */
         if (gw_cli_find(opts, "accuracy")->seen)
             return gw_err_set(err, GW_EINVAL, "falcon --accuracy: the step study covers undamped columns "
                                               "of N <= 40 without gravity on a Hertz wall, without sensor "
                                               "body or guide friction; give --solver instead");
         return GW_OK; /* outside the study: the adaptive default */
     }
-    int m = gw_chain_rk4_steps_per_tc(accuracy);
-    if (m <= 0)
+    double vmax = 0;
+    for (int i = 0; i < f->nv; i++)
+        vmax = fmax(vmax, f->v[i]);
+    if (gw_chain_rk4_study_apply(&f->c.run, &f->c.params, accuracy, vmax, gw_cli_find(opts, "dt-out")->seen) <= 0)
         return gw_err_set(err, GW_EINVAL, "falcon --accuracy: %g outside [1e-9, 1e-2]", accuracy);
     f->c.solver = "rk4";
     f->c.method = "default";
-    f->c.run.solver = gw_solver_rk4;
-    f->c.run.sp.method = GW_METHOD_DEFAULT;
-    f->c.run.steps_per_tc = m;
     f->accuracy = accuracy;
-    if (!gw_cli_find(opts, "dt-out")->seen) {
-        double vmax = 0;
-        for (int i = 0; i < f->nv; i++)
-            vmax = fmax(vmax, f->v[i]);
-        f->c.run.dt_out = gw_chain_tau1(f->c.params.mass, f->c.params.kwall, vmax) / 10;
-    }
     return GW_OK;
 }
 
@@ -334,24 +324,23 @@ int gw_cmd_falcon(int argc, char **argv)
         code = chain_cli_fail("falcon: out of memory");
         goto out;
     }
-    /* heights fall in the run's gravity when it has one, else Earth's (the
-     * library's rule, gw_chain_falcon_run) */
-    const double g_fall = f.c.gravity > 0 ? f.c.gravity : G_EARTH;
-    for (int i = 0; i < f.nv; i++) {
-        int is_h = i >= nvv;
-        double x = is_h ? hh[i - nvv] : vv[i];
-        if (!(x > 0)) {
-            gw_err_set(&err, GW_EINVAL, "falcon --%s: %g must be > 0", is_h ? "heights" : "vimp", x);
-            code = chain_cli_fail(err.msg);
-            goto out;
-        }
-        f.fv[i].h_mm = is_h ? x : NAN;
-        f.fv[i].v = f.v[i] = is_h ? sqrt(2 * g_fall * x * 1e-3) : x;
+    /* the speeds, then the heights fallen in the run's gravity (or Earth's):
+     * the library's one rule, as gw_chain_falcon_run */
+    double *h_mm = malloc((size_t)f.nv * sizeof *h_mm);
+    if (!h_mm) {
+        code = chain_cli_fail("falcon: out of memory");
+        goto out;
     }
-    if (gw_chain_study_speeds_check(f.v, f.nv, nvv, &err) != GW_OK) {
+    if (gw_chain_falcon_speeds(vv, nvv, hh, nhh, f.c.gravity, f.v, h_mm, &err) != GW_OK) {
+        free(h_mm);
         code = chain_cli_study_fail("falcon", err.msg);
         goto out;
     }
+    for (int i = 0; i < f.nv; i++) {
+        f.fv[i].v = f.v[i];
+        f.fv[i].h_mm = h_mm[i];
+    }
+    free(h_mm);
     f.c.params.n = f.n_lo;
     f.c.params.v_imp = f.v[0];
     if ((rc0 = chain_cli_resolve(&f.c, opts, "falcon", &err)) != GW_OK) {

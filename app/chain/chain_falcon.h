@@ -7,8 +7,6 @@
 
 #include "chain_options.h"
 
-#define G_EARTH 9.81
-
 typedef struct falcon_vel {
     double v, h_mm;     /* h_mm NaN when v was given directly */
     gw_linfit fit;      /* tau_N against N - 1, all N */

@@ -15,7 +15,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "chain_falcon.h" /* G_EARTH: falcon's --heights are drop heights in mm */
+#include "chain_options.h"
 #include "chain_wall.h"
 #include "gw_cli.h"
 #include "gw_chain_study.h"
@@ -42,10 +42,9 @@ static int check_speeds(const gw_opt *opts, const char *cmd, gw_err *err)
         strcmp(*(const char *const *)o->dest, "none") != 0) {
         double *h = NULL;
         int nh = 0;
-        double hmax = GW_CHAIN_VIMP_MAX * GW_CHAIN_VIMP_MAX / (2 * G_EARTH * 1e-3);
+        const gw_param *row = gw_param_find(gw_chain_falcon_setup_params(), "heights"); /* the library's range */
         snprintf(name, sizeof name, "%s --heights", cmd);
-        int rc = gw_parse_double_list_in(*(const char *const *)o->dest, name, GW_CHAIN_HEIGHT_MIN_MM, hmax, 0, &h,
-                                         &nh, err);
+        int rc = gw_parse_double_list_in(*(const char *const *)o->dest, name, row->min, row->max, 0, &h, &nh, err);
         free(h);
         if (rc != GW_OK)
             return rc;

@@ -61,7 +61,7 @@ int gw_cmd_softwall(int argc, char **argv)
     chain_cli_options(&c, opts);
     chain_cli_out_help(opts, "write softwall.json into DIR");
     const char *nrange = "1:30";
-    double vimp = sqrt(2 * 9.81 * 2.9e-3), tol = 0.01;
+    double vimp = sqrt(2 * GW_CHAIN_G_EARTH * 2.9e-3), tol = 0.01;
     long jobs = 0;
     int quiet = 0, use_sheets = 0, k = CHAIN_CLI_NOPTS;
     opts[k++] = (gw_opt){.name = "n", .kind = GW_OPT_STRING, .dest = &nrange, .metavar = "A:B", .help = "column sizes [1:30]"};

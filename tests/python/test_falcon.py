@@ -42,3 +42,15 @@ def test_falcon_refusals():
         granwave.falcon(radii=[4e-3])
     with pytest.raises(ValueError, match="vimp"):
         granwave.falcon(vimp=[], heights=[])
+    # a height's fall under the run's gravity beyond the speeds (it ran at 31623 m/s)
+    with pytest.raises(ValueError, match=r"heights: item 1 is 5e\+07 mm: at gravity 10000 .* 31622.8 m/s"):
+        granwave.falcon(n=(1, 2), vimp=[], heights=[5e7], gravity=1e4)
+
+
+def test_falcon_heights_under_gravity_as_the_program(program):
+    """One rule (gw_chain_falcon_speeds): heights fall in the run's gravity, the
+    library and the program alike."""
+    f = granwave.falcon(n=(1, 3), vimp=[0.3], heights=[5.1], gravity=100, accuracy=0)
+    cli = run_cli(program, "falcon", "--n", "1:3", "--vimp", "0.3", "--heights", "5.1", "--gravity", 100, "--quiet")
+    assert f.v_imp[1] == pytest.approx(np.sqrt(2 * 100 * 5.1e-3), rel=1e-15)
+    assert [v["v_imp"] for v in cli["velocities"]] == list(f.v_imp)

@@ -109,6 +109,8 @@ int main(int argc, char **argv)
             int code = commands[i].run(argc - 2, argv + 2);
             return stdout_checked(cmd, code);
         }
-    fprintf(stderr, "granwave: unknown command '%s' (see granwave --help)\n", cmd);
+    gw_err e; /* through gw_err_set: a control character in the name is escaped, one line */
+    gw_err_set(&e, GW_EINVAL, "unknown command '%s' (see granwave --help)", cmd);
+    fprintf(stderr, "granwave: %s\n", e.msg);
     return 2;
 }

@@ -51,13 +51,58 @@ int gw_version_patch(void)
     return GW_VERSION_PATCH;
 }
 
+/* The message as one line of UTF-8: a control character that a caller's value
+ * brought in (a newline, a carriage return, a tab, an escape sequence) is
+ * written \n, \r, \t or \xHH, and so is a byte that is no part of a whole UTF-8
+ * character (a value cut by the message's bound, a Latin-1 name), so that the text
+ * is one line that shows every byte it quotes. A message cut at the end of dst
+ * is cut between characters. Backslashes are kept as they are, so a message
+ * that quotes another message is escaped once. */
+static void gw_err_one_line(char *dst, size_t n, const char *src)
+{
+    static const char hex[] = "0123456789abcdef";
+    size_t o = 0;
+    for (const unsigned char *c = (const unsigned char *)src; *c;) {
+        size_t want = *c < 0x80 ? 1 : *c >= 0xc2 && *c <= 0xdf ? 2 : *c >= 0xe0 && *c <= 0xef ? 3
+                    : *c >= 0xf0 && *c <= 0xf4 ? 4 : 0;
+        size_t len = 1;
+        while (want > 1 && len < want && (c[len] & 0xc0) == 0x80)
+            len++;
+        char esc[4];
+        const char *piece = (const char *)c;
+        size_t plen = len;
+        if (*c < 0x20 || *c == 0x7f || want == 0 || len < want) {
+            len = 1;
+            piece = esc;
+            esc[0] = '\\';
+            if (*c == '\n' || *c == '\r' || *c == '\t') {
+                esc[1] = *c == '\n' ? 'n' : *c == '\r' ? 'r' : 't';
+                plen = 2;
+            } else {
+                esc[1] = 'x';
+                esc[2] = hex[*c >> 4];
+                esc[3] = hex[*c & 15];
+                plen = 4;
+            }
+        }
+        if (o + plen + 1 > n)
+            break;
+        memcpy(dst + o, piece, plen);
+        o += plen;
+        c += len;
+    }
+    dst[o] = '\0';
+}
+
 int gw_err_set(gw_err *err, int status, const char *fmt, ...)
 {
     if (err) {
+        char raw[sizeof err->msg];
         va_list ap;
         va_start(ap, fmt);
-        gw_vsnprintf(err->msg, sizeof err->msg, fmt, ap);
+        gw_vsnprintf(raw, sizeof raw, fmt, ap);
         va_end(ap);
+        gw_err_one_line(err->msg, sizeof err->msg, raw);
     }
     return status;
 }

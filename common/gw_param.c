@@ -3,6 +3,7 @@
  * type and range checks, text and JSON of the values. No physics here; units
  * are the rows' (SI).
  */
+#include <float.h>
 #include <limits.h>
 #include <math.h>
 #include <stdlib.h>
@@ -116,11 +117,26 @@ static int choice_name(const char *choices, int i, char *buf, size_t n)
     return (int)len;
 }
 
+/* A subnormal double (nonzero, below DBL_MIN in magnitude): the text path
+ * (gw_parse_double) refuses it, so a value set as a double or written into
+ * the struct is refused too, with the same words: every accepted value can be
+ * given again as the text gw_param_format and gw_param_json write. */
+static int subnormal_bad(const gw_param *p, double v, gw_err *err, const char *what)
+{
+    if (v == 0 || !(fabs(v) < DBL_MIN))
+        return GW_OK;
+    return gw_err_set(err, GW_EINVAL, "%s: %s%.17g is too small in magnitude: nonzero values lie at or above "
+                      "%.5g, the smallest normal double (give 0 or a larger value)", p->name, what, v, DBL_MIN);
+}
+
 static int set_number(const gw_param *p, void *obj, double v, const char *text, gw_err *err)
 {
     if (!isfinite(v))
         return gw_err_set(err, GW_EINVAL, "%s: must be a finite number, got %g", p->name, v);
-    int rc = range_bad(p, v, err, "");
+    int rc = subnormal_bad(p, v, err, "");
+    if (rc != GW_OK)
+        return rc;
+    rc = range_bad(p, v, err, "");
     if (rc != GW_OK)
         return rc;
     switch (p->type) {
@@ -300,7 +316,9 @@ int gw_param_check(const gw_param *t, const void *obj, gw_err *err)
                 break;
             if (!isfinite(v))
                 return gw_err_set(err, GW_EINVAL, "%s: must be a finite number, got %g", p->name, v);
-            rc = range_bad(p, v, err, "");
+            rc = subnormal_bad(p, v, err, "");
+            if (rc == GW_OK)
+                rc = range_bad(p, v, err, "");
             break;
         }
         case GW_PARAM_INT: rc = range_bad(p, *(const int *)f, err, ""); break;
@@ -325,8 +343,9 @@ int gw_param_check(const gw_param *t, const void *obj, gw_err *err)
             for (int k = 0; k < l->n && rc == GW_OK; k++) {
                 char what[32];
                 gw_snprintf(what, sizeof what, "item %d is ", k + 1);
-                rc = isfinite(l->v[k]) ? range_bad(p, l->v[k], err, what)
-                                       : gw_err_set(err, GW_EINVAL, "%s: item %d is not finite", p->name, k + 1);
+                rc = !isfinite(l->v[k]) ? gw_err_set(err, GW_EINVAL, "%s: item %d is not finite", p->name, k + 1)
+                     : subnormal_bad(p, l->v[k], err, what) != GW_OK ? GW_EINVAL
+                                                                       : range_bad(p, l->v[k], err, what);
             }
             break;
         }

@@ -224,6 +224,151 @@ static int param_list_by_hand(void)
     return 0;
 }
 
+/* ---- messages and values: one line, every accepted value given again ---- */
+
+/* msg is one line of UTF-8: no control character, every multi-byte character
+ * whole (a message quotes the caller's value, and is cut at 511 bytes) */
+static int one_line_utf8(const char *msg)
+{
+    const unsigned char *c = (const unsigned char *)msg;
+    while (*c) {
+        int want = *c < 0x80 ? 1 : *c >= 0xc2 && *c <= 0xdf ? 2 : *c >= 0xe0 && *c <= 0xef ? 3
+                 : *c >= 0xf0 && *c <= 0xf4 ? 4 : 0;
+        if (want == 0 || *c < 0x20 || *c == 0x7f)
+            return 0;
+        for (int k = 1; k < want; k++)
+            if ((c[k] & 0xc0) != 0x80)
+                return 0;
+        c += want;
+    }
+    return 1;
+}
+
+/* Every input row of every study given a value with a newline, a carriage
+ * return, a terminal escape or a Latin-1 byte: the refusal is one line that
+ * names the row and shows the bytes escaped; a value far longer than a message
+ * is cut between characters. (The message quoted the value as it was: two
+ * lines for '1\n2', and "granwave chain --n" printed both.) */
+static int messages_one_line(void)
+{
+    static const char *const values[] = {"1\n2", "0.3\r", "a\x1b[31mred", "st\xe9" "el", "\n"};
+    char longv[1500];
+    size_t o = 0;
+    while (o + 3 < sizeof longv) { /* "é" (2 bytes) over and over, then a newline */
+        longv[o++] = '\xc3';
+        longv[o++] = '\xa9';
+    }
+    longv[o - 1] = '\n';
+    longv[o] = '\0';
+    int bad = 0, refusals = 0;
+    for (int i = 0; i < gw_study_count(); i++) {
+        const gw_study *st = gw_study_get(i);
+        for (const gw_param *p = st->params(); p->name; p++) {
+            if (p->type == GW_PARAM_TEXT) /* a text row takes any bytes (a path) */
+                continue;
+            for (size_t k = 0; k <= sizeof values / sizeof values[0]; k++) {
+                const char *v = k < sizeof values / sizeof values[0] ? values[k] : longv;
+                void *obj = calloc(1, st->params_size);
+                EXPECT(st->init(obj) == GW_OK);
+                gw_err e;
+                memset(e.msg, 'Z', sizeof e.msg);
+                int rc = gw_param_set(st->params(), obj, p->name, v, &e);
+                size_t len = strlen(p->name);
+                if (rc == GW_OK) {
+                    printf("%s %s: accepted a value with a control character\n", st->name, p->name);
+                    bad++;
+                } else if (!memchr(e.msg, '\0', sizeof e.msg) || !one_line_utf8(e.msg) ||
+                           strncmp(e.msg, p->name, len) != 0 || e.msg[len] != ':') {
+                    if (bad++ < 5)
+                        printf("%s %s: message not one line naming the row: '%s'\n", st->name, p->name, e.msg);
+                } else
+                    refusals++;
+                if (rc != GW_OK && k == 0 && p->type == GW_PARAM_INT && !strstr(e.msg, "'1\\n2'")) {
+                    printf("%s %s: the newline is not shown escaped: '%s'\n", st->name, p->name, e.msg);
+                    bad++;
+                }
+                st->clear(obj);
+                free(obj);
+            }
+        }
+    }
+    EXPECT(bad == 0 && refusals > 300);
+    /* the same through the model's own parser and a sweep config given as text */
+    gw_err e = {{0}};
+    double d;
+    EXPECT(gw_parse_double("0.3\n", "vimp", &d, &e) == GW_EINVAL && one_line_utf8(e.msg) && strstr(e.msg, "'0.3\\n'"));
+    double *vals = NULL;
+    long nc = 0;
+    const gw_sweep_model *m = NULL;
+    EXPECT(gw_sweep_run_text("[sweep]\nmodel = chain\n[grid]\nvimp = 0.1, 0.2\n[params]\nmaterial = st\xe9" "el\n", "mem", 1,
+                             NULL, NULL, &vals, &nc, &m, &e) == GW_EINVAL);
+    EXPECT(one_line_utf8(e.msg) && strstr(e.msg, "st\\xe9el"));
+    gw_free(vals);
+    return 0;
+}
+
+/* A subnormal double (5e-324, 1e-310) is refused as text ("too small in
+ * magnitude"); through gw_param_set_double, or written into the struct and
+ * checked, it was accepted, so a run took a value that the settings' text
+ * (gw_param_format, gw_param_json: "4.9406564584124654e-324") could not give
+ * again, nor a sweep config or Python. Now every number a row accepts as a double
+ * sets back from its formatted text to the same value. */
+static int doubles_given_again(void)
+{
+    static const double values[] = {5e-324, -5e-324, 1e-310, 2.2250738585072014e-308, 0.5, -0.0, 1e300, 3.0};
+    int bad = 0, accepted = 0, subnormal_refused = 0;
+    for (int i = 0; i < gw_study_count(); i++) {
+        const gw_study *st = gw_study_get(i);
+        const gw_param *t = st->params();
+        for (const gw_param *p = t; p->name; p++) {
+            if (p->type != GW_PARAM_DOUBLE && p->type != GW_PARAM_INT && p->type != GW_PARAM_LONG &&
+                p->type != GW_PARAM_FLAG)
+                continue;
+            for (size_t k = 0; k < sizeof values / sizeof values[0]; k++) {
+                void *obj = calloc(1, st->params_size), *again = calloc(1, st->params_size);
+                EXPECT(st->init(obj) == GW_OK && st->init(again) == GW_OK);
+                gw_err e = {{0}};
+                int subnormal = values[k] != 0 && fabs(values[k]) < 2.2250738585072014e-308;
+                if (gw_param_set_double(t, obj, p->name, values[k], &e) == GW_OK) {
+                    accepted++;
+                    char text[64], text2[64];
+                    EXPECT(gw_param_format(p, obj, text, sizeof text) >= 0);
+                    if (subnormal || gw_param_set(t, again, p->name, text, &e) != GW_OK ||
+                        gw_param_format(p, again, text2, sizeof text2) < 0 || strcmp(text, text2) != 0) {
+                        if (bad++ < 5)
+                            printf("%s %s: %g accepted as a double, its text '%s' does not set again: %s\n", st->name,
+                                   p->name, values[k], text, e.msg);
+                    }
+                } else if (subnormal && strstr(e.msg, "too small in magnitude") && one_line_utf8(e.msg))
+                    subnormal_refused++;
+                st->clear(obj);
+                st->clear(again);
+                free(obj);
+                free(again);
+            }
+        }
+    }
+    EXPECT(bad == 0 && accepted > 100 && subnormal_refused > 100);
+    /* written by hand into the struct: gw_param_check and the run refuse it by name */
+    gw_chain_setup s;
+    EXPECT(gw_chain_setup_init(&s) == GW_OK);
+    s.guide_friction = 5e-324;
+    gw_err e = {{0}};
+    EXPECT(refused(gw_param_check(gw_chain_setup_params(), &s, &e), &e, "guide-friction: 4.9406564584124654e-324 is too small"));
+    gw_chain_collision c;
+    EXPECT(refused(gw_chain_collision_run(&s, &c, &e), &e, "guide-friction:"));
+    gw_chain_collision_free(&c);
+    gw_chain_setup_clear(&s);
+    gw_chain_drop_setup d; /* a list item: the drop's gaps, [0, 0.1] m */
+    EXPECT(gw_chain_drop_setup_init(&d) == GW_OK);
+    EXPECT(gw_param_set(gw_chain_drop_setup_params(), &d, "gap", "0,1e-3", &e) == GW_OK);
+    d.gap.v[0] = 1e-320;
+    EXPECT(refused(gw_param_check(gw_chain_drop_setup_params(), &d, &e), &e, "gap: item 1 is "));
+    EXPECT(strstr(e.msg, "too small in magnitude"));
+    gw_chain_drop_setup_clear(&d);
+    return 0;
+}
+
 /* ---- the index, the sweep in memory, the model's own structs ---- */
 
 static int index_nulls(void)
@@ -514,6 +659,8 @@ int main(void)
     }
     in_child("gw_param_* with NULL", param_nulls);
     in_child("a list filled by hand", param_list_by_hand);
+    in_child("refusals are one line of UTF-8 naming the row", messages_one_line);
+    in_child("every double a row accepts can be given again as text", doubles_given_again);
     in_child("the index and the sweep in memory with NULL", index_nulls);
     in_child("gw_chain_create/collide/sweep with NULL", chain_model_nulls);
     in_child("gw_cases_run hostile sizes", pool_hostile);

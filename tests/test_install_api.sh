@@ -14,6 +14,11 @@
 #     with find_package(granwave); without extern "C" it did not link;
 #  5. tests/test_hostile_api.c, built as an outside C11 program against the
 #     installed headers and library (pkg-config), passes;
+#  7. docs/library.md's C examples, as written: each block wrapped in a main
+#     (its #include lines and a leading function at file scope; err and rc
+#     declared when the block uses them without declaring them) compiles with
+#     -Wall -Wextra -Werror against the install and runs with rc == GW_OK
+#     (the progress example's callback left its ctx unused: -Wunused-parameter);
 #  6. libgranwave.a defines as global exactly the symbols libgranwave.so
 #     exports, each once (its internal helpers are local: before, 433 globals
 #     where the .so exports 342), and tests/install/own_names.c, which defines
@@ -88,6 +93,40 @@ cc -std=c11 -Wall -Wextra -pedantic -Werror "$src/tests/test_hostile_api.c" $(pk
     -lpthread -Wl,-rpath,"$p/lib" -o "$tmp/hostile" || fail "test_hostile_api.c against the installed library"
 "$tmp/hostile" > "$tmp/hostile.log" || { cat "$tmp/hostile.log"; fail "test_hostile_api against the installed library"; }
 echo "PASS: test_hostile_api against the installed library: $(tail -1 "$tmp/hostile.log")"
+
+# 7. library.md's C examples as a reader copies them (run before 6, which
+# needs nothing from here)
+/usr/bin/python3 - "$src/docs/library.md" "$tmp" <<'PY' || fail "extracting library.md's C examples"
+import re, sys
+text = open(sys.argv[1]).read()
+blocks = re.findall(r"```c\n(.*?)```", text, re.S)
+assert len(blocks) >= 3, f"only {len(blocks)} C blocks in library.md"
+for i, b in enumerate(blocks):
+    lines = b.splitlines()
+    top = [l for l in lines if l.startswith("#include")]
+    body = [l for l in lines if not l.startswith("#include")]
+    if body and body[0].startswith("static "):  # a function first: at file scope up to its closing brace
+        end = body.index("}") + 1
+        top += body[:end]
+        body = body[end:]
+    decl = []
+    if re.search(r"\berr\b", b) and not re.search(r"gw_err err\b", b):
+        decl.append("gw_err err = {{0}};")
+    if re.search(r"\brc\b", b) and not re.search(r"int rc\b", b):
+        decl.append("int rc = GW_OK;")
+    src = ["#include <stdio.h>", "#include <granwave.h>"] + top + ["int main(void)", "{"] + decl + body
+    src += ["return rc != GW_OK;" if re.search(r"\brc\b", b) else "return 0;", "}"]
+    open(f"{sys.argv[2]}/doc_example_{i}.c", "w").write("\n".join(src) + "\n")
+PY
+ndoc=0
+for f in "$tmp"/doc_example_*.c; do
+    # shellcheck disable=SC2046
+    cc -std=c11 -Wall -Wextra -Werror "$f" $(pkg-config --cflags --libs granwave) -Wl,-rpath,"$p/lib" -o "${f%.c}" \
+        > "${f%.c}.log" 2>&1 || { cat "$f" "${f%.c}.log"; fail "library.md's example $(basename "$f") does not compile warning-free"; }
+    "${f%.c}" > "${f%.c}.out" 2>&1 || { cat "$f" "${f%.c}.out"; fail "library.md's example $(basename "$f") does not run to GW_OK"; }
+    ndoc=$((ndoc + 1))
+done
+echo "PASS: library.md's $ndoc C examples compile with -Wall -Wextra -Werror and run to GW_OK"
 
 # 6. the static archive: the same global symbols as the shared library, and a
 # program with its own functions under the library's internal names

@@ -24,6 +24,8 @@ units, defaults and ranges, from the library's own parameter tables.
 Errors raise exceptions: a bad value GranwaveValueError (a ValueError naming
 the parameter), an unknown keyword TypeError, an unreadable file
 GranwaveIOError (an OSError), a failed run GranwaveRunError (a RuntimeError).
+A run the program warns about (cut at t_max, not settled, undecided) returns
+its result and issues a GranwaveWarning (a RuntimeWarning) with that text.
 
 The library is found in the build tree (./setup.sh build), next to an
 installed module (cmake --install), or at GRANWAVE_LIB.
@@ -338,7 +340,9 @@ def sweep(model="chain", grid=None, *, jobs=0, progress=None, **params):
 
     grid: {keyword: values}, every combination is a case (the last key varies
     fastest); values are a list, a range, or a string "A:B" (integers) or
-    "a,b,c". Other keywords are the model's parameters, the same for every
+    "a,b,c" (a list item "A:B" is refused: the library would run it as a
+    range). A key's values go on one config line of at most 198 characters:
+    consecutive integers are written A:B, about ten floats fit. Other keywords are the model's parameters, the same for every
     case. progress: optional f(done, total), called as cases finish (from the
     worker threads, one call at a time); return True (or raise) to stop. Returns a Result with one array per grid key and
     per result column (f_max, tau_n, ... for the chain), one entry per case.

@@ -40,6 +40,8 @@ static const gw_param collision_fields[] = {
     RI("wall_contacts", r.wall_contacts, "separate wall contacts (> 1: re-contact)"),
     RF("converged", r.converged, "1: all contacts open and separating at t_end"),
     RF("wall_done", r.wall_done, "1: bead 1 off the wall and separating at t_end (f_max, tau_n final)"),
+    {.name = "wall_pending", .type = GW_PARAM_TEXT, .offset = OFF(r.wall_pending), .unit = "",
+     .help = "wall_done 0: what kept the wall's contact going at t_end (None: done)"},
     RD("t_end", r.t_end, "s", "end of the run"),
     RD("t_max", r.run_t_max, "s", "time limit the run used (default 20 (n T_q + tau_1))"),
     RD("dt_out", r.run_dt_out, "s", "sampling interval the run used (default tau_1/200)"),

@@ -50,6 +50,20 @@ class GranwaveUnsupported(GranwaveError, NotImplementedError):
     """Not available in this build (e.g. HDF5)."""
 
 
+class GranwaveWarning(RuntimeWarning):
+    """A run that ended with results the program warns about on stderr (a
+    collision cut at t_max, a sample that did not settle, an undecided
+    bounce, ...): the result is returned and records it (converged False,
+    undecided, unfinished, ...); the warning says what is not final."""
+
+
+def warn(what, text, stacklevel=3):
+    """One GranwaveWarning "what: text", shown at the caller's line (stacklevel
+    3: the caller of the public function that calls this)."""
+    import warnings
+    warnings.warn(f"{what}: {text}", GranwaveWarning, stacklevel=stacklevel)
+
+
 def _raise(rc, err, what, params=()):
     text = err.msg.decode(errors="replace") or lib.gw_strerror(rc).decode()
     for p in params:  # the library names a parameter by its flag; Python by its keyword
@@ -82,6 +96,9 @@ class Result(dict):
             return self[name]
         except KeyError:
             raise AttributeError(name) from None
+
+    def __dir__(self):  # the keys an attribute reaches, for completion (r.<TAB> in a notebook)
+        return sorted(set(super().__dir__()) | {k for k in self if isinstance(k, str) and k.isidentifier()})
 
     def __repr__(self):
         parts = []
@@ -412,16 +429,28 @@ def _text_plain(v):
     raise TypeError(f"cannot use a {type(v).__name__} ({v!r}) as a sweep value")
 
 
+def _looks_like_range(s):
+    """The library's test of a grid value "A:B" (common/sweep/gw_sweep.c,
+    looks_like_range): one ':' and only digits, signs and blanks around it.
+    Such a value alone on its grid line is the range A..B, not one value."""
+    return s.count(":") == 1 and all(c in " \t+-0123456789" for c in s.replace(":", ""))
+
+
 def _grid_values(key, v):
     if isinstance(v, str):
-        parts = v.split(":")
-        if len(parts) == 2 and all(x.strip().lstrip("-").isdigit() for x in parts):
-            a, b = int(parts[0]), int(parts[1])
-            return list(range(a, b + 1))
+        if _looks_like_range(v):
+            a, b = (x.strip() for x in v.split(":"))
+            try:  # '+1:3' ran 3 cases in C and was one value '+1:3' here
+                return list(range(int(a), int(b) + 1))
+            except ValueError:
+                return [v]  # not integers ('1-:3'): the library names it
         return [x.strip() for x in v.split(",")]
     if isinstance(v, (numbers.Number, os.PathLike)):
         return [v]
     return list(v)
+
+
+_SWEEP_LINE_MAX = 198  # the longest line the library's config reader takes (libinih's buffer less 2)
 
 
 def run_sweep(model, grid, params, jobs, progress):
@@ -468,6 +497,11 @@ def run_sweep(model, grid, params, jobs, progress):
             raise TypeError(f"sweep() grid: '{k}': {e}") from None
         if any("," in t for t in texts):  # the list's separator: 'a,b' ran two cases
             raise ValueError(f"{k}: a grid value holds ',' (the list separator of a sweep)")
+        # a list item 'A:B' alone on its line is the library's range: grid={"n": ["1:3"]}
+        # ran 3 cases where the result's n had one entry (its columns 3)
+        if not isinstance(v, str) and any(_looks_like_range(t) for t in texts):
+            raise ValueError(f"sweep() grid: '{k}': a list item {next(t for t in texts if _looks_like_range(t))!r} "
+                             f"is a range, not one value: give the string 'A:B' or range(A, B + 1)")
         # consecutive integers as the range A:B (a list line has at most 198
         # characters: point = range(100) does not fit as a list)
         ints = [x for x in vals if isinstance(x, numbers.Integral) and not isinstance(x, bool)]
@@ -475,6 +509,10 @@ def run_sweep(model, grid, params, jobs, progress):
             lines.append(f"{name} = {int(ints[0])}:{int(ints[-1])}")
         else:
             lines.append(f"{name} = " + ", ".join(texts))
+        if len(lines[-1]) > _SWEEP_LINE_MAX:  # refused by the library as "sweep:4: a line of ...", a text never shown
+            raise GranwaveValueError(f"sweep() grid: '{k}': {len(vals)} values take {len(lines[-1])} characters on "
+                                     f"the sweep's config line, above the {_SWEEP_LINE_MAX} the library's reader takes: "
+                                     f"give integers as range(A, B + 1), or fewer values per sweep", GW_EINVAL)
     lines.append("[params]")
     for k, v in params.items():
         if v is None:
@@ -488,6 +526,10 @@ def run_sweep(model, grid, params, jobs, progress):
             lines.append(f"{name} = {_ini_value(k, v)}")
         except TypeError as e:
             raise TypeError(f"sweep(): '{k}': {e}") from None
+        if len(lines[-1]) > _SWEEP_LINE_MAX:  # a long path: "sweep:6: a line of ..." before
+            raise GranwaveValueError(f"sweep(): '{k}': its value takes {len(lines[-1])} characters on the sweep's "
+                                     f"config line, above the {_SWEEP_LINE_MAX} the library's reader takes (a shorter "
+                                     f"path, relative to the working directory)", GW_EINVAL)
     text = "\n".join(lines) + "\n"
     values = _lib.c_double_p()
     ncases = ctypes.c_long()
@@ -501,13 +543,16 @@ def run_sweep(model, grid, params, jobs, progress):
         cb.reraise()
         if rc != 0:
             _raise(rc, err, "sweep")
+        cases = list(itertools.product(*axes.values()))  # the C order: last key fastest
+        if ncases.value != len(cases):  # each grid value here must be one case's value there
+            raise GranwaveError(f"sweep: the library ran {ncases.value} cases where the grid gives {len(cases)}: "
+                                f"the grid values are not one value each ({text!r})", GW_EINVAL)
         ncol = m.ncolumns
         cols = [m.columns[j].decode() for j in range(ncol)]
         a = np.ctypeslib.as_array(values, shape=(ncases.value * ncol,)).copy().reshape(ncases.value, ncol)
     finally:
         lib.gw_free(values)
     res = Result()
-    cases = list(itertools.product(*axes.values()))  # the C order: last key fastest
     for i, k in enumerate(axes):
         col = [c[i] for c in cases]
         try:

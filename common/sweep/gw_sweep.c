@@ -27,6 +27,13 @@ typedef struct parse_ctx {
     char msg[400];
     int line; /* current line, counted by the reader */
     int failed; /* a handler call failed: later calls are ignored */
+    /* The reader's handler calls in order, as scan_lines found them: bit 0 a
+     * call that continues a [grid] list on an indented line, bit 1 a call that
+     * the next one continues. A continued list is gathered in 'pending' and
+     * read as one value at its last line. */
+    unsigned char *calls;
+    long ncalls, call;
+    char *pending;
 } parse_ctx;
 
 static char *dupstr(const char *s)
@@ -134,9 +141,30 @@ static int handler_one(parse_ctx *pc, const char *section, const char *name, con
 static int handler(void *user, const char *section, const char *name, const char *value)
 {
     parse_ctx *pc = user;
+    const long i = pc->call++;
+    const int part = i < pc->ncalls ? pc->calls[i] : 0;
     if (pc->failed)
         return 0;
+    if (part) { /* a [grid] list over several lines: "a, b," then "  c, d" */
+        size_t have = pc->pending ? strlen(pc->pending) : 0, add = strlen(value);
+        char *p = realloc(pc->pending, have + add + 2);
+        if (!p) {
+            pc->failed = 1;
+            return 0;
+        }
+        if (have)
+            p[have++] = ' ';
+        memcpy(p + have, value, add + 1);
+        pc->pending = p;
+        if (part & 2)
+            return 1; /* more to come */
+        value = pc->pending;
+    }
     int ok = handler_one(pc, section, name, value);
+    if (part) {
+        free(pc->pending);
+        pc->pending = NULL;
+    }
     if (!ok)
         pc->failed = 1;
     return ok;
@@ -254,19 +282,24 @@ static int config_finish(const char *path, const gw_sweep_model *const *models, 
 
 /* libinih reads an indented line after a key as more of that key's value
  * (Python's multi-line style) and passes it to the handler under the key's
- * name again, so '  rings = 4' after 't-max = 0.003' was refused as
- * "duplicate key 't-max'" on the indented line, and an indented '  [params]'
- * after 'vi = 10, 20' as "duplicate key 'vi'": the wrong key and the wrong
- * cause. Such lines are refused here, naming the key they would continue.
- * The rule is the reader's: an indented line that is neither blank nor a
- * comment continues the last key since the last section header. */
-static int continued_lines(const char *text, const char *name, gw_err *err)
+ * name again. In [grid] that continues a long list: a line whose value ends
+ * with a comma goes on over the indented lines after it (each line within the
+ * reader's buffer, below), and pc->calls marks those handler calls so that the
+ * handler reads the list whole. Anywhere else such a line was misread ('  rings
+ * = 4' after 't-max = 0.003' refused as "duplicate key 't-max'", an indented
+ * '  [params]' after 'vi = 10, 20' as "duplicate key 'vi'": the wrong key and
+ * the wrong cause), so it is refused here, naming the key it would continue.
+ * The rules are the reader's: an indented line that is neither blank nor a
+ * comment continues the last key since the last section header; a ';' after a
+ * blank starts a comment; a line with neither '=' nor ':' calls no handler. */
+static int scan_lines(const char *text, const char *name, parse_ctx *pc, gw_err *err)
 {
     char key[64] = "";
-    long key_ln = 0, ln = 1;
+    long key_ln = 0, ln = 1, cap = 0;
+    int in_grid = 0, comma = 0; /* the last value line of the key ends with ',' */
     for (const char *p = text; *p; ln++) {
         const char *e = strchr(p, '\n');
-        const size_t len = e ? (size_t)(e - p) : strlen(p);
+        size_t len = e ? (size_t)(e - p) : strlen(p);
         size_t i = 0;
         if (ln == 1 && len >= 3 && memcmp(p, "\xef\xbb\xbf", 3) == 0)
             i = 3; /* the BOM the reader skips */
@@ -274,12 +307,30 @@ static int continued_lines(const char *text, const char *name, gw_err *err)
         while (i < len && (p[i] == ' ' || p[i] == '\t' || p[i] == '\r' || p[i] == '\f' || p[i] == '\v'))
             i++;
         const int blank = i == len, comment = !blank && (p[i] == ';' || p[i] == '#');
+        /* the line's end without an inline comment and trailing blanks */
+        size_t end = i;
+        while (end < len && !(p[end] == ';' && end > i && (p[end - 1] == ' ' || p[end - 1] == '\t')))
+            end++;
+        while (end > i && (p[end - 1] == ' ' || p[end - 1] == '\t' || p[end - 1] == '\r'))
+            end--;
+        int call = -1; /* this line's handler call: 0 a key, 1 a continuation */
         if (!blank && !comment) {
-            if (i > lead && key[0])
-                return gw_err_set(err, GW_EINVAL, "%s:%ld: an indented line: the config reader takes it as more "
-                                  "of the value of '%s' (line %ld); remove the indentation", name, ln, key, key_ln);
-            if (p[i] == '[') {
+            if (i > lead && key[0]) {
+                /* (a section header or a key there is a mistake, not values) */
+                if (!(in_grid && comma))
+                    return gw_err_set(err, GW_EINVAL, "%s:%ld: an indented line: the config reader takes it as "
+                                      "more of the value of '%s' (line %ld); remove the indentation (a [grid] "
+                                      "list goes on over indented lines after a line ending with a comma)", name,
+                                      ln, key, key_ln);
+                if (p[i] == '[' || memchr(p + i, '=', end - i))
+                    return gw_err_set(err, GW_EINVAL, "%s:%ld: an indented %s where the list of '%s' (line %ld) "
+                                      "goes on after its comma; remove the indentation", name, ln,
+                                      p[i] == '[' ? "section header" : "key", key, key_ln);
+                call = 1;
+            } else if (p[i] == '[') {
                 key[0] = '\0';
+                const char *q = memchr(p + i, ']', len - i);
+                in_grid = q && q - (p + i) == 5 && memcmp(p + i, "[grid", 5) == 0;
             } else {
                 size_t k = i;
                 while (k < len && p[k] != '=' && p[k] != ':')
@@ -290,8 +341,23 @@ static int continued_lines(const char *text, const char *name, gw_err *err)
                 if (k < len) {
                     gw_snprintf(key, sizeof key, "%.*s", (int)(kl - i), p + i);
                     key_ln = ln;
+                    call = 0;
                 }
             }
+        }
+        if (call >= 0) {
+            if (pc->ncalls == cap) {
+                cap = cap ? 2 * cap : 64;
+                unsigned char *c = realloc(pc->calls, (size_t)cap);
+                if (!c)
+                    return gw_err_set(err, GW_ENOMEM, "%s: out of memory", name);
+                pc->calls = c;
+            }
+            pc->calls[pc->ncalls] = (unsigned char)call;
+            if (call == 1)
+                pc->calls[pc->ncalls - 1] |= 2; /* the previous call is this key's (blank and comment lines make none) */
+            pc->ncalls++;
+            comma = end > i && p[end - 1] == ',';
         }
         if (!e)
             break;
@@ -305,7 +371,7 @@ static int continued_lines(const char *text, const char *name, gw_err *err)
  * after '49, 5' (refused as the value 5 listed twice; granwave.sweep writes
  * its lists this way), a longer value ended as a syntax error on the wrong
  * line or a path cut short. Lines that do not fit are refused whole. */
-static int lines_fit(const char *text, const char *name, gw_err *err)
+static int lines_fit(const char *text, const char *name, parse_ctx *pc, gw_err *err)
 {
     const long max = INI_MAX_LINE - 2; /* the newline and the NUL fit too */
     long ln = 1;
@@ -316,12 +382,12 @@ static int lines_fit(const char *text, const char *name, gw_err *err)
             len--;
         if (len > max)
             return gw_err_set(err, GW_EINVAL, "%s:%ld: a line of %ld characters, above the %ld the config reader "
-                              "takes: give integers as a range A:B, or fewer values", name, ln, len, max);
+                              "takes: give integers as a range A:B, or go on over indented lines after a comma", name, ln, len, max);
         if (!e)
             break;
         p = e + 1;
     }
-    return continued_lines(text, name, err);
+    return scan_lines(text, name, pc, err);
 }
 
 int gw_sweep_config_read(const char *path, const gw_sweep_model *const *models, int nmodels,
@@ -332,7 +398,7 @@ int gw_sweep_config_read(const char *path, const gw_sweep_model *const *models, 
                           !cfg ? "cfg" : !model ? "model" : !path ? "path" : "models");
     memset(cfg, 0, sizeof *cfg);
     *model = NULL;
-    parse_ctx pc = {cfg, models, nmodels, "", 0, 0};
+    parse_ctx pc = {cfg, models, nmodels, "", 0, 0, NULL, 0, 0, NULL};
     char *text = NULL;
     size_t len = 0;
     int rc = gw_input_read(path, "sweep CONFIG", GW_SWEEP_CONFIG_MAX, &text, &len, err);
@@ -348,12 +414,15 @@ int gw_sweep_config_read(const char *path, const gw_sweep_model *const *models, 
         free(text);
         return gw_err_set(err, GW_EINVAL, "%s:%ld: a NUL byte (binary data, not a config)", path, ln);
     }
-    if (lines_fit(text, path, err) != GW_OK) {
+    if (lines_fit(text, path, &pc, err) != GW_OK) {
         free(text);
+        free(pc.calls);
         return GW_EINVAL;
     }
     rc = ini_parse_string(text, handler, &pc);
     free(text);
+    free(pc.calls);
+    free(pc.pending);
     return config_finish(path, models, nmodels, cfg, model, rc, &pc, err);
 }
 
@@ -365,10 +434,14 @@ int gw_sweep_config_read_string(const char *text, const char *name, const gw_swe
                           !cfg ? "cfg" : !model ? "model" : !text ? "text" : "models");
     memset(cfg, 0, sizeof *cfg);
     *model = NULL;
-    parse_ctx pc = {cfg, models, nmodels, "", 0, 0};
-    if (lines_fit(text, name, err) != GW_OK)
+    parse_ctx pc = {cfg, models, nmodels, "", 0, 0, NULL, 0, 0, NULL};
+    if (lines_fit(text, name, &pc, err) != GW_OK) {
+        free(pc.calls);
         return GW_EINVAL;
+    }
     int rc = ini_parse_string(text, handler, &pc);
+    free(pc.calls);
+    free(pc.pending);
     return config_finish(name, models, nmodels, cfg, model, rc, &pc, err);
 }
 

@@ -341,8 +341,9 @@ def sweep(model="chain", grid=None, *, jobs=0, progress=None, **params):
     grid: {keyword: values}, every combination is a case (the last key varies
     fastest); values are a list, a range, or a string "A:B" (integers) or
     "a,b,c" (a list item "A:B" is refused: the library would run it as a
-    range). A key's values go on one config line of at most 198 characters:
-    consecutive integers are written A:B, about ten floats fit. Other keywords are the model's parameters, the same for every
+    range). Consecutive integers are written A:B; any number of other values
+    fit (a long list goes on over several lines of the config, as a sweep file
+    writes it). Other keywords are the model's parameters, the same for every
     case. progress: optional f(done, total), called as cases finish (from the
     worker threads, one call at a time); return True (or raise) to stop. Returns a Result with one array per grid key and
     per result column (f_max, tau_n, ... for the chain), one entry per case.

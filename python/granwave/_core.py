@@ -502,17 +502,24 @@ def run_sweep(model, grid, params, jobs, progress):
         if not isinstance(v, str) and any(_looks_like_range(t) for t in texts):
             raise ValueError(f"sweep() grid: '{k}': a list item {next(t for t in texts if _looks_like_range(t))!r} "
                              f"is a range, not one value: give the string 'A:B' or range(A, B + 1)")
-        # consecutive integers as the range A:B (a list line has at most 198
-        # characters: point = range(100) does not fit as a list)
+        # consecutive integers as the range A:B; a longer list goes on over
+        # indented lines after a line ending with a comma (each line of the
+        # config at most 198 characters, the library's reader's buffer)
         ints = [x for x in vals if isinstance(x, numbers.Integral) and not isinstance(x, bool)]
         if len(vals) > 2 and len(ints) == len(vals) and all(b - a == 1 for a, b in zip(ints, ints[1:])):
             lines.append(f"{name} = {int(ints[0])}:{int(ints[-1])}")
         else:
-            lines.append(f"{name} = " + ", ".join(texts))
-        if len(lines[-1]) > _SWEEP_LINE_MAX:  # refused by the library as "sweep:4: a line of ...", a text never shown
-            raise GranwaveValueError(f"sweep() grid: '{k}': {len(vals)} values take {len(lines[-1])} characters on "
-                                     f"the sweep's config line, above the {_SWEEP_LINE_MAX} the library's reader takes: "
-                                     f"give integers as range(A, B + 1), or fewer values per sweep", GW_EINVAL)
+            line = f"{name} = "
+            for j, t in enumerate(texts):
+                item = t + ("," if j < len(texts) - 1 else "")
+                if len(line) + len(item) + 1 > _SWEEP_LINE_MAX and line.strip() and not line.endswith("= "):
+                    lines.append(line.rstrip())
+                    line = "    "
+                line += item + " "
+            lines.append(line.rstrip())
+        if any(len(x) > _SWEEP_LINE_MAX for x in lines):  # one value longer than a line
+            raise GranwaveValueError(f"sweep() grid: '{k}': a value takes {max(len(t) for t in texts)} characters, "
+                                     f"above the {_SWEEP_LINE_MAX} of a line of the library's config reader", GW_EINVAL)
     lines.append("[params]")
     for k, v in params.items():
         if v is None:

@@ -85,7 +85,11 @@ _Static_assert(GW_SHEET_FITTED == 0 && GW_SHEET_HERTZ == 1 && GW_SHEET_LAYER == 
     ROW("atol", GW_PARAM_DOUBLE, atol, "", GW_TOL_MIN, GW_TOL_MAX, 0, "1e-12", "A", \
         "absolute tolerance in units of the overlap and velocity scales [1e-12]"), \
     ROW("dt", GW_PARAM_DOUBLE, dt, "s", 0, 1, 0, "0", "DT", "RK4 step, s [T_c/400]; initial step for cvode/arkode"), \
-    ROW("dt-max", GW_PARAM_DOUBLE, dt_max, "s", 0, 1, 0, "0", "DT", "largest step, s [unlimited]"), \
+    /* 0 is not "unlimited": the run caps the step at a quarter of the shortest \
+     * binary contact at 2 v_imp (chain_collide.c, chain_drop.c; the settings \
+     * record it), which the help said nothing of until the fifteenth pass */ \
+    ROW("dt-max", GW_PARAM_DOUBLE, dt_max, "s", 0, 1, 0, "0", "DT", \
+        "largest step, s [a quarter of the shortest binary contact time at 2 v_imp]"), \
     ROW("max-steps", GW_PARAM_LONG, max_steps, "", 1, 1e12, 0, "10000000", "N", \
         "internal steps allowed between outputs [1e7]"),
 

@@ -89,7 +89,7 @@ typedef struct gw_chain_setup {
     int solver;           /* cvode, arkode, rk4 (choice) [cvode] */
     int method;           /* default, bdf, adams, erk, dirk, imex (choice) [default] */
     double rtol, atol;    /* tolerances [1e-12] */
-    double dt, dt_max;    /* s [0: auto, unlimited] */
+    double dt, dt_max;    /* s [0: auto: T_c/400 (rk4); a quarter of the shortest binary contact at 2 v_imp] */
     long max_steps;       /* steps between outputs [1e7] */
     double t_max;         /* s [0: 20 (n T_q + tau_1)] */
     double dt_out;        /* sampling interval, s [0: tau_1/200] */

@@ -25,8 +25,18 @@ value, printed to the digits the page shows, differs (both directions of drift: 
 changed page or a changed code). The 300-disc default sample and impact of README.md
 (porosity 0.192, T_f = 0.06 s, e_n = 0.019), with the other runs of it that layer.md,
 formats.md and outcomes.md quote (a claim may take several runs), take about 14 s; the rest 10 s.
+Since the fifteenth pass also the results a user tries first that nothing recomputed:
+column.md's closed forms, final velocities, E_rel/E_K, energy errors, the N = 5..20 wave
+speeds and the memory bound's messages; drop.md's comparison with chain, its 300 ms runs,
+gaps and first collision; sheets.md's tau_max(1) under every law for the bare sensor and the
+four target sheets, brass's yield stresses, the loss, guide friction and PVC's F_max(N); the
+exact 3 m/s impact of outcomes.md (about 20 s of CPU more). And the defaults the `--help` of
+chain, drop, falcon, dispersion, layer-make and layer-impact states, against the settings
+the runs record (HELP_DEFAULTS: a numeric [default] read from the help line, or a formula
+such as dt-max's quarter of the shortest binary contact computed from the run's closed forms).
 First it checks itself on made-up pages (unnamed files, columns other than the
-listed ones, a wrong quoted number) and fails if any goes unnoticed. Exit 0 when all hold, 1
+listed ones, a wrong quoted number, a --help default the run does not use) and fails if any
+goes unnoticed. Exit 0 when all hold, 1
 otherwise (each fault printed), 2 on bad usage.
 """
 import json
@@ -243,14 +253,49 @@ class Checker:
             self.fault(f"granwave sweep (model layer): results.csv's columns {model}; docs/formats.md lists {doc}")
 
     def value(self, key, args):
+        """The run's JSON object; for a run with --out and no --json, its directory (the
+        claim reads the files); for a run whose first word is REFUSED, its stderr line
+        (the run must exit 2)."""
         if key not in self.cache:
-            p = self.run(args)
-            if p.returncode != 0:
+            refused = args[0] == "REFUSED"
+            p = self.run(args[1:] if refused else args)
+            if refused:
+                self.cache[key] = p.stderr.strip() if p.returncode == 2 else None
+                if p.returncode != 2:
+                    self.fault(f"granwave {' '.join(args[1:])}: exit {p.returncode}, not 2")
+            elif p.returncode != 0:
                 self.cache[key] = None
                 self.fault(f"granwave {' '.join(args)}: exit {p.returncode}: {p.stderr.strip()[-300:]}")
+            elif "--out" in args and "--json" not in args:
+                self.cache[key] = os.path.join(self.work, args[args.index("--out") + 1])
             else:
                 self.cache[key] = json.loads(p.stdout)
         return self.cache[key]
+
+    def help_default(self, cmd, flag, text, args, check):
+        """`granwave CMD --help`'s line of FLAG holds text, and check(the run's JSON) is
+        None (the run uses that default) or the fault's words."""
+        p = self.run([cmd, "--help"])
+        line = next((ln.strip() for ln in p.stdout.splitlines() if ln.strip().startswith(flag + " ")), "")
+        if text != "NUMBER" and text not in line:
+            self.fault(f"granwave {cmd} --help: {flag} says {line!r}, not {text!r}")
+            return
+        if text == "NUMBER":  # the line's last [default], its first number, against the settings
+            m = re.search(r"\[([-+0-9.e]+)[],;]", line[line.rfind("["):] if "[" in line else "")
+            if not m:
+                self.fault(f"granwave {cmd} --help: {flag} states no numeric default: {line!r}")
+                return
+            want, get = float(m.group(1)), check
+            check = lambda j: None if _rel(float(get(j)), want, 1e-12) else f"records {get(j)!r}, not {m.group(1)}"
+        js = self.value(tuple(args), args)
+        if js is None:
+            return
+        try:
+            why = check(js)
+        except (KeyError, IndexError, TypeError) as e:
+            why = f"has no such value ({e!r})"
+        if why:
+            self.fault(f"granwave {cmd} --help: {flag} says {text!r}; granwave {' '.join(args)}: {why}")
 
     def claim(self, page, text, args, get, fmt):
         body = open(os.path.join(self.src, page), encoding="utf-8").read()
@@ -416,6 +461,236 @@ for _k, _nd in (("2e9", "4"), ("1e9", "7")):
                    ["softwall", "--kwall", _k, "--n", "1:40", "--json", "--quiet"], lambda j: j["n_d_predicted"],
                    lambda x: f"| {x} |"))
 
+# ---- the fifteenth pass: the quoted results a user tries first that nothing recomputed ----
+def csv_rows(d, name):
+    import csv
+    with open(os.path.join(d, name)) as f:
+        return list(csv.DictReader(ln for ln in f if not ln.startswith("#")))
+
+
+def falcon_runs(d, v="0.3"):
+    return [r for r in csv_rows(d, "falcon_runs.csv") if r["v_imp_m_s"] == v]
+
+
+def final_v(d, n):
+    return [float(r["final_v_m_s"]) for r in csv_rows(d, "falcon_final_velocities.csv")
+            if r["v_imp_m_s"] == "0.3" and r["n"] == str(n)]
+
+
+FALCON_OUT = ["falcon", "--quiet", "--out", "o_falcon_all"]
+WS20 = ["wavespeed", "--n", "5:20", "--json", "--quiet"]
+V51 = "0.3163257814"  # sqrt(2 g h) at h = 5.1 mm, g = 9.81
+V29 = "0.23853301658261064"
+KK9 = ["--damping", "kk", "--restitution", "0.9"]
+BEAD300 = ["drop", "--n", "1", "--height", "5.1e-3", *KK9, "--t-max", "0.3", "--json"]
+BLOCK300 = ["drop", "--n", "40", "--block", "--height", "5.1e-3", *KK9, "--t-max", "0.3", "--json"]
+
+
+def e_first(j):
+    i = j["impacts"][0]
+    return -i["v_out"] / i["v_in"]
+
+
+CLAIMS += [
+    # docs/column.md's table and paragraph on the main job
+    ("docs/column.md", "| tau_1 = tau_N(N = 1) (us) | 5.1 | 34.62 | 34.62 (F.2) |", FALCON,
+     lambda j: (vel(j, 5.1)["tau_n_first"] * 1e6, vel(j, 5.1)["tau_1_theory"] * 1e6),
+     lambda x: f"| {x[0]:.2f} | {x[1]:.2f} (F.2) |"),
+    ("docs/column.md", "| F_max, mean over N = 1..40 (N) | 5.1 | 72.4 | 70.75 (F.13, N = 1) |", FALCON,
+     lambda j: vel(j, 5.1)["f_max_1_theory"], lambda x: f"| {x:.2f} (F.13"),
+    ("docs/column.md", "| wave speed 4R/T_q, N <= 20 (m/s) | 3.1 | 599.0 | 616.0 |", FALCON,
+     lambda j: (vel(j, 3.1)["wave_speed_n20"], vel(j, 3.1)["wave_speed_theory"]),
+     lambda x: f"| {x[0]:.1f} | {x[1]:.1f} |"),
+    ("docs/column.md", "| T_q, slope over N = 1..20 (us) | 2.9 | 26.89 | 26.15 |", FALCON,
+     lambda j: (vel(j, 2.9)["t_q_n20"] * 1e6, vel(j, 2.9)["t_q_theory"] * 1e6),
+     lambda x: f"| {x[0]:.2f} | {x[1]:.2f} |"),
+    ("docs/column.md", "tau_N is linear in N (r^2 = 0.99966)", FALCON, lambda j: vel(j, 0)["r2"],
+     lambda x: f"(r^2 = {x:.5f})"),
+    ("docs/column.md", "(1.82 v_imp for the top bead at N = 40) and bead 1 slower (0.036 v_imp)", FALCON_OUT,
+     lambda d: (-final_v(d, 40)[-1] / 0.3, -final_v(d, 40)[0] / 0.3),
+     lambda x: f"({x[0]:.2f} v_imp for the top bead at N = 40) and bead 1 slower ({x[1]:.3f} v_imp)"),
+    ("docs/column.md", "E_rel/E_K grows from 0.058 (N = 2) to 0.187 (N = 40), rising in 38 of 39 steps", FALCON_OUT,
+     lambda d: [float(r["e_rel_over_e_k"]) for r in falcon_runs(d)],
+     lambda e: f"from {e[1]:.3f} (N = 2) to {e[39]:.3f} (N = 40), rising in "
+               f"{sum(b > a for a, b in zip(e, e[1:]))} of {len(e) - 1} steps"),
+    ("docs/column.md", "Measured relative energy error: 7.7e-8 to 8.4e-7 over the 200 Falcon runs", FALCON_OUT,
+     lambda d: [float(r["energy_error"]) for r in csv_rows(d, "falcon_runs.csv")],
+     lambda e: f"{sci(min(e))} to {sci(max(e))} over the {len(e)} Falcon"),
+    # the wave speed's table (N = 5..20) and its two ratios
+    ("docs/column.md", "| N = 5..20 | 1.946 | 2.012 | 2.409 | 1.967 | 3.4 % |", WS20,
+     lambda j: ([j["fits"][k]["c3"] for k in ("tq", "front", "group", "group_front")], j["max_disagreement"]),
+     lambda x: "| {:.3f} | {:.3f} | {:.3f} | {:.3f} | ".format(*x[0]) + f"{x[1] * 100:.1f} % |"),
+    ("docs/column.md", "The measured c0/v_front is 1.197 at every velocity over N = 5..20", WS20,
+     lambda j: sorted({f"{g / f:.3f}" for g, f in zip(j["v_group"], j["v_front"])}),
+     lambda x: f"is {' or '.join(x)} at every velocity"),
+    ("docs/column.md", "with C2 = 2.54 (N = 5..20;", WS20, lambda j: j["c2"], f2),
+    # the memory bound's messages
+    ("docs/column.md", "needs about 47.2 GB ...: at most 2274873 beads here", ["REFUSED", "chain", "--n", "50000000"],
+     lambda t: re.search(r"needs about (\S+ GB) .*at most (\d+) beads here", t).groups(),
+     lambda x: f"needs about {x[0]} ...: at most {x[1]} beads here"),
+    ("docs/column.md", "a column with a sensor body at most 3339 beads with cvode",
+     ["REFUSED", "chain", "--n", "4000", "--sensor-mass", "1e-3", "--sensor-stiffness", "1e9"],
+     lambda t: re.search(r"at most (\d+) beads here", t).group(1), lambda x: f"at most {x} beads"),
+    # docs/drop.md: the first collision against chain, the runs of its tables
+    ("docs/drop.md", "| 1 | F_max (N) | 70.77858 | 70.74761 | 4.4e-4 | 70.77858 |",
+     [["drop", "--n", "1", "--json"], ["chain", "--n", "1", "--vimp", V51, "--json"],
+      ["chain", "--n", "1", "--vimp", V51, "--gravity", "9.81", "--json"]],
+     lambda j: (j[0]["impacts"][0]["f_max"], j[1]["f_max"], j[2]["f_max"]),
+     lambda x: f"| {x[0]:.5f} | {x[1]:.5f} | {sci(x[0] / x[1] - 1)} | {x[2]:.5f} |"),
+    ("docs/drop.md", "| 10 | contact time (us) | 266.0576 | 265.9323 | 4.7e-4 | 266.0576 |",
+     [["drop", "--n", "10", "--json"], ["chain", "--n", "10", "--vimp", V51, "--json"],
+      ["chain", "--n", "10", "--vimp", V51, "--gravity", "9.81", "--json"]],
+     lambda j: (j[0]["first_collision"]["tau_n"] * 1e6, j[1]["tau_n"] * 1e6, j[2]["tau_n"] * 1e6),
+     lambda x: f"| {x[0]:.4f} | {x[1]:.4f} | {sci(x[0] / x[1] - 1)} | {x[2]:.4f} |"),
+    ("docs/drop.md", "the rounded `--vimp 0.31633` gives F_max 1.6e-5 higher, 70.74874 N at N = 1",
+     [["chain", "--n", "1", "--vimp", "0.31633", "--json"], ["chain", "--n", "1", "--vimp", V51, "--json"]],
+     lambda j: (j[0]["f_max"] / j[1]["f_max"] - 1, j[0]["f_max"]), lambda x: f"F_max {sci(x[0])} higher, {x[1]:.5f} N"),
+    ("docs/drop.md", "(70.78, 71.68, 72.57, 73.45, 74.33 N for N = 5 undamped)",
+     ["drop", "--n", "5", "--gap", "1e-4", "--t-max", "2e-3", "--json"],
+     lambda j: [i["f_max"] for i in j["impacts"]], lambda x: "(" + ", ".join(f"{v:.2f}" for v in x) + " N for"),
+    ("docs/drop.md", "| one bead, h = 5.1 mm (first bounce: e = 0.900) | 300 ms | 7 | 0 | 66.70, 58.85, 52.05, 46.15, 41.02, 36.54, 32.62 |",
+     BEAD300, lambda j: (e_first(j), len(j["impacts"]), j["impact_rises"], [i["f_max"] for i in j["impacts"]]),
+     lambda x: f"e = {x[0]:.3f}) | 300 ms | {x[1]} | {x[2]} | " + ", ".join(f"{v:.2f}" for v in x[3]) + " |"),
+    ("docs/drop.md", "| rigid block of 40 bead masses, h = 5.1 mm (first bounce: e = 0.976) | 300 ms | 5 | 0 | 639.0, 620.6, 602.8, 585.6, 569.0 |",
+     BLOCK300, lambda j: (e_first(j), len(j["impacts"]), j["impact_rises"], [i["f_max"] for i in j["impacts"]]),
+     lambda x: f"e = {x[0]:.3f}) | 300 ms | {x[1]} | {x[2]} | " + ", ".join(f"{v:.1f}" for v in x[3]) + " |"),
+    ("docs/drop.md", "(gamma = 6957 N s/m^1.5 at 5.1 mm)", DROP51, lambda j: j["settings"]["model"]["gamma"],
+     lambda x: f"(gamma = {x:.0f} N"),
+    ("docs/drop.md", "the damped collision of 40 beads lasts 0.987 ms (tau_N; 1.066 ms undamped)",
+     [DROP51, ["drop", "--n", "40", "--json"]], lambda j: [x["first_collision"]["tau_n"] * 1e3 for x in j],
+     lambda x: f"lasts {x[0]:.3f} ms (tau_N; {x[1]:.3f} ms undamped)"),
+    ("docs/drop.md", "(at tau_N: bead 1 at 0.029 m/s, bead 2 at 0.066 m/s, the top bead at 0.368 m/s = 1.16 v_imp; N_s = 4 beads leave from the top before a cluster of 36)",
+     DROP51, lambda j: (j["first_collision"]["velocities_at_tau_n"], j["v_imp"], j["first_collision"]["n_s"],
+                        j["first_collision"]["cluster"]),
+     lambda x: f"bead 1 at {-x[0][0]:.3f} m/s, bead 2 at {-x[0][1]:.3f} m/s, the top bead at {-x[0][-1]:.3f} m/s = "
+               f"{-x[0][-1] / x[1]:.2f} v_imp; N_s = {x[2]} beads leave from the top before a cluster of {x[3]})"),
+    ("docs/drop.md", "is 4.3e-10 to 1.1e-9 over the 10 ms and 300 ms runs above (today's build)",
+     [DROP51, DROP19, BEAD300, BLOCK300], lambda j: [x["energy_error"] for x in j],
+     lambda e: f"is {sci(min(e))} to {sci(max(e))} over"),
+    # docs/sheets.md: one bead on each target sheet under each law, brass's yield stresses,
+    # the loss, guide friction, PVC's F_max(N) on the bonded layer
+    ("docs/sheets.md", "energy ledger closes to 3e-10, and eps_eff falls as the friction grows (N = 10 at h = 2.9 mm: 0.9206, 0.9133 and 0.9061",
+     [["chain", "--n", "10", "--vimp", V29, "--json"],
+      ["chain", "--n", "10", "--vimp", V29, "--guide-friction", "0.01", "--guide-viscous", "0.05", "--json"],
+      ["chain", "--n", "10", "--vimp", V29, "--guide-friction", "0.02", "--guide-viscous", "0.1", "--json"]],
+     lambda j: ([x["eps_eff"] for x in j], max(x["energy_error"] for x in j[1:])),
+     lambda x: f"closes to {sci(x[1], 0)}, and eps_eff falls as the friction grows (N = 10 at h = 2.9 mm: "
+               f"{x[0][0]:.4f}, {x[0][1]:.4f} and {x[0][2]:.4f}"),
+    ("docs/sheets.md", "0.9172 and 0.9138 with the Coulomb part alone",
+     [["chain", "--n", "10", "--vimp", V29, "--guide-friction", f, "--json"] for f in ("0.01", "0.02")],
+     lambda j: [x["eps_eff"] for x in j], lambda x: f"{x[0]:.4f} and {x[1]:.4f} with"),
+    ("docs/sheets.md", "Tests: restitution 0.888, 0.9873, 0.99871 and 1 for losses 0.1, 0.01, 0.001 and 0",
+     [["chain", "--vimp", V29, "--sheet", "pmma", "--sheet-law", "material", "--sheet-loss", l, "--json"]
+      for l in ("0.1", "0.01", "0.001", "0")],
+     lambda j: [x["eps_eff"] for x in j], lambda x: f"restitution {x[0]:.3f}, {x[1]:.4f}, {x[2]:.5f} and {x[3]:.0f} for"),
+    ("docs/sheets.md", "The rebound of one bead drops to e = 0.975 (PVC) and 0.93 (PMMA).",
+     [["chain", "--vimp", V29, "--sheet", s_, "--sheet-law", "material", "--json"] for s_ in ("pvc", "pmma")],
+     lambda j: [x["eps_eff"] for x in j], lambda x: f"e = {x[0]:.3f} (PVC) and {x[1]:.2f} (PMMA)"),
+    ("docs/sheets.md", "it goes 13.8, 20.9, 26.4, 30.3, 33.1, 35.1, 36.3, 37.2 N for N = 1..8, against 38.9 N at N = 30",
+     [["chain", "--n", str(n), "--vimp", V29, "--sheet", "pvc", "--sheet-law", "layer", "--json"]
+      for n in (1, 2, 3, 4, 5, 6, 7, 8, 30)],
+     lambda j: [x["f_max"] for x in j],
+     lambda x: "goes " + ", ".join(f"{v:.1f}" for v in x[:8]) + f" N for N = 1..8, against {x[8]:.1f} N at N = 30"),
+]
+_TAU1 = {"none": "| none | 17.0 | 17.0 | 18.3 | 18.3 | 18.3 | 20.8 |",
+         "brass": "| brass | 47.5 | 47.5 | 21.7 | 21.2 | 27.9 | 29.4 |",
+         "tape": "| tape | 47.5 | 47.5 | 74.9 | 56.1 | 55.5 | 54.1 |",
+         "pvc": "| pvc | 67.5 | 67.5 | 74.9 | 68.9 | 68.1 | 68.3 |",
+         "pmma": "| pmma | 69.0 | 69.0 | 72.4 | 66.8 | 64.4 | 61.5 |"}
+for _s, _row in _TAU1.items():
+    _sh = [] if _s == "none" else ["--sheet", _s]
+    _laws = [["--sheet-law", l] if _sh else [] for l in ("hertz", "layer", "material")]
+    CLAIMS.append(("docs/sheets.md", _row,
+                   [["chain", "--vimp", V29, *_sh, *lw, "--json"] for lw in _laws] +
+                   [["chain", "--vimp", V29, *_sh, *(_laws[2]), "--sensor-mass", "3e-3", "--sensor-stiffness", "2e9",
+                     "--json"]],
+                   lambda j: [x["tau_max"] * 1e6 for x in j], lambda x: "| " + " | ".join(f"{v:.1f}" for v in x) + " |"))
+for _y, _row in (("1e8", "| 100 MPa | 38.6 | 0.425 | 7 / 5 | 62.4 |"), ("2e8", "| 200 MPa | 27.9 | 0.649 | 4 / 3 | 51.0 |"),
+                 ("3.5e8", "| 350 MPa | 22.8 | 0.886 | 2 / 1 | 25.5 |")):
+    _a = ["--vimp", V29, "--sheet", "brass", "--sheet-law", "material", "--sheet-yield", _y, "--json"]
+    CLAIMS.append(("docs/sheets.md", _row, [["chain", *_a], ["chain", "--n", "2", *_a]],
+                   lambda j: (j[0]["tau_max"] * 1e6, j[0]["eps_eff"], j[1]["tau_max"] * 1e6),
+                   lambda x, row=_row: (f"| {x[0]:.1f} | {x[1]:.3f} |" if f"| {x[2]:.1f} |" in row
+                                        else f"tau_max(2) {x[2]:.1f}")))
+# docs/outcomes.md: the exact 3 m/s impact on the 100-disc test sample as pluviated today
+CLAIMS.append(("docs/outcomes.md", "the same impact gives e_n 0.148998, T_f 47.743 ms and a penetration of 0.00279180 m",
+               [["layer-make", "--n", "100", "--width-rm", "20", "--seed", "5", "--out", "s100.txt", "--json"],
+                ["layer-impact", "--sample", "s100.txt", "--exact", "--vi", "3", "--t-max", "0.05", "--json"]],
+               lambda j: (j[1]["e_n"], j[1]["t_f"] * 1e3, j[1]["penetration"]),
+               lambda x: f"e_n {x[0]:.6f}, T_f {x[1]:.3f} ms and a penetration of {x[2]:.8f} m"))
+
+
+def _pair_tau(j, v):
+    """The shortest binary contact at 2 v of a uniform steel column (chain_contact_tau_min):
+    two beads (m/2, k) or bead on wall (m, kwall), from the closed-form tau_1 (m, kwall, v)."""
+    m = j["settings"]["model"]
+    t1 = j["closed_forms"]["tau_1"] if "closed_forms" in j else j["first_collision"]["closed_forms"]["tau_1"]
+    return min(t1 * (0.5 * m["kwall"] / m["k"]) ** 0.4, t1) * 2 ** -0.2
+
+
+def _rel(a, b, tol=1e-9):
+    return a is not None and b is not None and abs(a - b) <= tol * abs(b)
+
+
+CHAIN3 = ["chain", "--n", "3", "--json"]
+# (command, flag, text in its --help line, run, check: None or what is wrong)
+HELP_DEFAULTS = [
+    ("chain", "--dt-max", "[a quarter of the shortest binary contact time at 2 v_imp]", CHAIN3,
+     lambda j: None if _rel(j["settings"]["solver"]["dt_max"], 0.25 * _pair_tau(j, 0.3))
+     else f"dt_max {j['settings']['solver']['dt_max']!r}, a quarter of the shortest contact is {0.25 * _pair_tau(j, 0.3)!r}"),
+    ("drop", "--dt-max", "[a quarter of the shortest binary contact time at 2 v_imp]", ["drop", "--n", "3", "--json"],
+     lambda j: None if _rel(j["settings"]["solver"]["dt_max"], 0.25 * _pair_tau(j, j["v_imp"]))
+     else f"dt_max {j['settings']['solver']['dt_max']!r}"),
+    ("chain", "--dt", "[T_c/400]", ["chain", "--n", "3", "--solver", "rk4", "--json"],
+     lambda j: None if _rel(j["settings"]["solver"]["dt"], j["closed_forms"]["t_q"] / 2 / 400)
+     else f"dt {j['settings']['solver']['dt']!r}, T_c/400 = {j['closed_forms']['t_q'] / 800!r}"),
+    ("chain", "--dt-out", "[tau_1/200]", CHAIN3,
+     lambda j: None if _rel(j["settings"]["solver"]["dt_out"], j["closed_forms"]["tau_1"] / 200)
+     else f"dt_out {j['settings']['solver']['dt_out']!r}"),
+    ("chain", "--t-max", "[20 (n T_q + tau_1), of the heaviest bead]", CHAIN3,
+     lambda j: None if _rel(j["settings"]["solver"]["t_max"], 20 * (3 * j["closed_forms"]["t_q"] + j["closed_forms"]["tau_1"]))
+     else f"t_max {j['settings']['solver']['t_max']!r}"),
+    ("falcon", "--solver", "[rk4 by --accuracy;", FALCON, lambda j: None if j["settings"]["solver"]["name"] == "rk4"
+     else f"solver {j['settings']['solver']['name']}"),
+    ("falcon", "--dt", "[T_c/M by --accuracy, M = 37 at 1e-6;", FALCON,
+     lambda j: None if j["settings"]["solver"]["steps_per_tc"] == 37 and j["accuracy_target"] == 1e-6
+     else f"steps_per_tc {j['settings']['solver']['steps_per_tc']}"),
+    ("falcon", "--dt-out", "[tau_1/10 of the fastest impact by --accuracy,", FALCON,
+     lambda j: None if _rel(j["settings"]["solver"]["dt_out"], min(v["tau_1_theory"] for v in j["velocities"]) / 10)
+     else f"dt_out {j['settings']['solver']['dt_out']!r}"),
+    ("drop", "--peak-threshold", "[1 % of F_max(1) (F.13) at v_imp;", ["drop", "--n", "3", "--json"],
+     lambda j: None if _rel(j["peak_threshold"], 0.01 * j["first_collision"]["closed_forms"]["f_max_1"])
+     else f"peak_threshold {j['peak_threshold']!r}"),
+]
+# the defaults each --help states as a number, against the settings the run records
+for _cmd, _flag, _args, _path in (
+        ("chain", "--rtol", CHAIN3, ("solver", "rtol")), ("chain", "--atol", CHAIN3, ("solver", "atol")),
+        ("chain", "--max-steps", CHAIN3, ("solver", "max_steps")), ("chain", "--radius", CHAIN3, ("model", "radius")),
+        ("drop", "--t-max", ["drop", "--json"], ("drop", "t_max")), ("drop", "--height", ["drop", "--json"], ("drop", "height")),
+        ("drop", "--gravity", ["drop", "--json"], ("drop", "gravity")),
+        ("dispersion", "--n", ["dispersion", "--n", "1024", "--json"], ("model", "n")),
+        ("dispersion", "--f0", DISP, ("model", "f0")), ("dispersion", "--amp", DISP, ("model", "amp")),
+        ("dispersion", "--t-samples", DISP, ("spectrum", "t_samples")),
+        ("dispersion", "--steps-per-sample", DISP, ("solver", "steps_per_sample")),
+        ("dispersion", "--min-bins", DISP, ("spectrum", "min_bins")),
+        ("layer-make", "--rm", SAMPLE300, ("rm",)), ("layer-make", "--volume-ratio", SAMPLE300, ("volume_ratio",)),
+        ("layer-make", "--width-rm", SAMPLE300, ("width_rm",)), ("layer-make", "--ke-threshold", SAMPLE300, ("ke_threshold",)),
+        ("layer-make", "--t-max", SAMPLE300, ("t_max",)), ("layer-make", "--damping", SAMPLE300, ("damping",)),
+        ("layer-make", "--dt", SAMPLE300, ("dt",)), ("layer-make", "--friction", SAMPLE300, ("material", "friction_deg")),
+        ("layer-make", "--shear-modulus", SAMPLE300, ("material", "shear_modulus")),
+        ("layer-make", "--poisson", SAMPLE300, ("material", "poisson")), ("layer-make", "--density", SAMPLE300, ("material", "density")),
+        ("layer-make", "--gravity", SAMPLE300, ("material", "gravity")), ("layer-make", "--skin", SAMPLE300, ("material", "skin")),
+        ("layer-impact", "--vi", VERDICT300, ("vi",)), ("layer-impact", "--rb-rm", VERDICT300, ("rb_rm",)),
+        ("layer-impact", "--gap", VERDICT300, ("gap",)), ("layer-impact", "--t-max", VERDICT300, ("t_max",)),
+        ("layer-impact", "--dt-out", VERDICT300, ("dt_out",)), ("layer-impact", "--rings", VERDICT300, ("rings",)),
+        ("layer-impact", "--rtol", VERDICT300, ("solver", "rtol")), ("layer-impact", "--atol", VERDICT300, ("solver", "atol"))):
+    def _num(j, path=_path):
+        v = j["settings"]
+        for k in path:
+            v = v[k]
+        return v
+    HELP_DEFAULTS.append((_cmd, _flag, "NUMBER", _args, _num))
+
 OUTPUT_RUNS = [
     ("chain", ["--n", "7", "--solver", "rk4"], "o_chain", "chain.json"),
     ("falcon", ["--n", "1:30", "--quiet"], "o_falcon", "falcon_summary.json"),
@@ -444,8 +719,13 @@ def self_test(program, srcdir):
         c = Checker(program, src, work)
         c.outputs("chain", ["--n", "2"], "o", "chain.json")
         c.claim("README.md", "F_max is 99.9 N", ["chain", "--n", "2", "--json"], lambda j: j["f_max"], f1)
+        # a --help default the run does not use, and a help line that does not say it
+        c.help_default("chain", "--rtol", "NUMBER", ["chain", "--n", "2", "--json"], lambda j: 1e-6)
+        c.help_default("chain", "--dt-max", "[unlimited]", ["chain", "--n", "2", "--json"], lambda j: None)
+        c.help_default("chain", "--dt-out", "[tau_1/200]", ["chain", "--n", "2", "--json"], lambda j: "made-up fault")
         want = ("chain_beads.csv, which docs/cli.md", "chain.h5, which docs/cli.md", "chain_beads.csv has the columns",
-            "the docs list ['t_s', 'f_N']", "says 'F_max is 99.9 N'")
+            "the docs list ['t_s', 'f_N']", "says 'F_max is 99.9 N'", "--rtol says", "records 1e-06, not 1e-12",
+            "--dt-max says", "made-up fault")
         missing = [w for w in want if not any(w in x for x in c.faults)]
         if missing:
             print("self-test: not caught: " + "; ".join(missing) + "\n  faults: " + "\n  ".join(c.faults))
@@ -471,11 +751,14 @@ def main(argv):
         c.sweep_columns()
         for page, text, args, get, fmt in CLAIMS:
             c.claim(page, text, args, get, fmt)
+        for cmd, flag, text, args, check in HELP_DEFAULTS:
+            c.help_default(cmd, flag, text, args, check)
         if c.faults:
             for f in c.faults:
                 print("FAIL: " + f)
             return 1
-    print(f"{len(OUTPUT_RUNS)} --out runs and {len(CLAIMS)} quoted numbers agree with the docs")
+    print(f"{len(OUTPUT_RUNS)} --out runs, {len(CLAIMS)} quoted numbers and {len(HELP_DEFAULTS)} --help defaults "
+          "agree with the docs and the runs")
     return 0
 
 

@@ -116,6 +116,13 @@ void chain_cli_out_help(gw_opt *o, const char *help)
     o[NBASE + 1].help = help;
 }
 
+void chain_cli_opt_help(gw_opt *o, const char *name, const char *help)
+{
+    for (; o->name; o++)
+        if (strcmp(o->name, name) == 0)
+            o->help = help;
+}
+
 int chain_cli_sheet(const chain_cli *c, const gw_sheet *s, gw_chain_params *p,
                     gw_layer_law **layer, gw_err *err)
 {

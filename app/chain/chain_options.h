@@ -40,6 +40,10 @@ typedef struct chain_cli {
 void chain_cli_options(chain_cli *c, gw_opt *opts);
 /* The --out line of the command's help: the files it writes into DIR. */
 void chain_cli_out_help(gw_opt *opts, const char *help);
+/* Replace the help line of option name (a command whose default differs from
+ * the shared row's, e.g. falcon's solver by accuracy); opts ends with a zeroed
+ * entry or is the CHAIN_CLI_NOPTS shared options followed by one. */
+void chain_cli_opt_help(gw_opt *opts, const char *name, const char *help);
 
 /* Resolve materials, damping and solver into c->params / c->run (n and v_imp are
  * the caller's). GW_EINVAL with a message naming the option. The sheet options

@@ -84,7 +84,15 @@ static const gw_param falcon_params[] = {
              "from a measured convergence study [1e-6]; 0: the solver options as given"},
     {.name = "jobs", .type = GW_PARAM_LONG, .offset = OWN(jobs), .unit = "", .min = 0, .max = 1024, .def = "0",
      .metavar = "J", .help = "threads [0 = one per CPU]"},
-    GW_CHAIN_MODEL_ROWS
+    /* the defaults of --accuracy (pick_solver), not chain's: the help said
+     * cvode, T_c/400 and tau_1/200 while the runs used rk4 at T_c/37 sampled
+     * every tau_1/10 (the program takes these three from here) */
+    GW_CHAIN_MODEL_ROWS_HELP("cvode, arkode or rk4 [rk4 by --accuracy; cvode when a solver option is given or "
+                             "the column is outside the step study]",
+                             "RK4 step, s [T_c/M by --accuracy, M = 37 at 1e-6; T_c/400 with --solver rk4]; "
+                             "initial step for cvode/arkode",
+                             "sampling interval for the energy check, s [tau_1/10 of the fastest impact by "
+                             "--accuracy, else tau_1/200; the traces every tau_1/50]")
     GW_PARAM_END};
 
 const gw_param *gw_chain_falcon_setup_params(void)

@@ -35,16 +35,23 @@ _Static_assert(GW_SHEET_FITTED == 0 && GW_SHEET_HERTZ == 1 && GW_SHEET_LAYER == 
 /* material .. guide-viscous: the options every chain command shares, in this
  * order; the drop's table (chain_drop_study.c) replaces the gravity, t-max and
  * dt-out rows by its own (other defaults, ranges and help). */
-#define GW_CHAIN_MODEL_ROWS \
+/* The column's rows with the help of solver, dt and dt-out given: a study that
+ * picks its own solver (falcon by its accuracy) states its own defaults. */
+#define GW_CHAIN_MODEL_ROWS_HELP(solver_help, dt_help, dtout_help) \
     GW_CHAIN_MATERIAL_ROWS \
     ROW("gravity", GW_PARAM_DOUBLE, gravity, "m/s^2", 0, 1e4, 0, "0", "G", "gravity toward the wall, m/s^2 [0 = off]"), \
-    GW_CHAIN_SOLVER_ROWS \
+    GW_CHAIN_SOLVER_ROWS_HELP(solver_help, dt_help) \
     ROW("t-max", GW_PARAM_DOUBLE, t_max, "s", 0, 1e6, 0, "0", "T", \
         "stop after T seconds [20 (n T_q + tau_1), of the heaviest bead]"), \
-    ROW("dt-out", GW_PARAM_DOUBLE, dt_out, "s", 0, 1, 0, "0", "DT", \
-        "sampling interval for traces, energy and F_max, s [tau_1/200]"), \
+    ROW("dt-out", GW_PARAM_DOUBLE, dt_out, "s", 0, 1, 0, "0", "DT", dtout_help), \
     GW_CHAIN_ENERGY_ROW \
     GW_CHAIN_WALL_ROWS
+
+#define GW_CHAIN_SOLVER_HELP "cvode, arkode or rk4 [cvode]"
+#define GW_CHAIN_DT_HELP "RK4 step, s [T_c/400]; initial step for cvode/arkode"
+#define GW_CHAIN_MODEL_ROWS \
+    GW_CHAIN_MODEL_ROWS_HELP(GW_CHAIN_SOLVER_HELP, GW_CHAIN_DT_HELP, \
+                             "sampling interval for traces, energy and F_max, s [tau_1/200]")
 
 /* material .. mass */
 #define GW_CHAIN_MATERIAL_ROWS \
@@ -66,7 +73,8 @@ _Static_assert(GW_SHEET_FITTED == 0 && GW_SHEET_HERTZ == 1 && GW_SHEET_LAYER == 
     ROW("mass", GW_PARAM_DOUBLE, mass, "kg", 0, 1e3, 1, NULL, "M", "bead mass, kg, in (0, 1e3] [4/3 pi R^3 rho]"),
 
 /* damping .. max-steps */
-#define GW_CHAIN_SOLVER_ROWS \
+#define GW_CHAIN_SOLVER_ROWS GW_CHAIN_SOLVER_ROWS_HELP(GW_CHAIN_SOLVER_HELP, GW_CHAIN_DT_HELP)
+#define GW_CHAIN_SOLVER_ROWS_HELP(solver_help, dt_help) \
     CHOICE("damping", damping, "none,kk,hc", "none", "MODEL", \
            "none, kk (Kuwabara-Kono; with gamma or restitution) or hc (Hunt-Crossley; with alpha or restitution) " \
            "[none]"), \
@@ -78,13 +86,13 @@ _Static_assert(GW_SHEET_FITTED == 0 && GW_SHEET_HERTZ == 1 && GW_SHEET_LAYER == 
         "calibrate gamma/alpha so one bead on the wall rebounds with E, in (0, 1)"), \
     ROW("restitution-v", GW_PARAM_DOUBLE, restitution_v, "m/s", GW_CHAIN_VIMP_MIN, GW_CHAIN_VIMP_MAX, 0, NULL, "V", \
         "impact velocity of that calibration, m/s [v_imp]"), \
-    CHOICE("solver", solver, "cvode,arkode,rk4", "cvode", "NAME", "cvode, arkode or rk4 [cvode]"), \
+    CHOICE("solver", solver, "cvode,arkode,rk4", "cvode", "NAME", solver_help), \
     CHOICE("method", method, "default,bdf,adams,erk,dirk,imex", "default", "NAME", \
            "cvode: bdf|adams; arkode: erk|dirk|imex [bdf / erk]"), \
     ROW("rtol", GW_PARAM_DOUBLE, rtol, "", GW_TOL_MIN, GW_TOL_MAX, 0, "1e-12", "R", "relative tolerance [1e-12]"), \
     ROW("atol", GW_PARAM_DOUBLE, atol, "", GW_TOL_MIN, GW_TOL_MAX, 0, "1e-12", "A", \
         "absolute tolerance in units of the overlap and velocity scales [1e-12]"), \
-    ROW("dt", GW_PARAM_DOUBLE, dt, "s", 0, 1, 0, "0", "DT", "RK4 step, s [T_c/400]; initial step for cvode/arkode"), \
+    ROW("dt", GW_PARAM_DOUBLE, dt, "s", 0, 1, 0, "0", "DT", dt_help), \
     /* 0 is not "unlimited": the run caps the step at a quarter of the shortest \
      * binary contact at 2 v_imp (chain_collide.c, chain_drop.c; the settings \
      * record it), which the help said nothing of until the fifteenth pass */ \

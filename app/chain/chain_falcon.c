@@ -296,12 +296,9 @@ int gw_cmd_falcon(int argc, char **argv)
     /* the shared rows state chain's defaults; falcon's are those of --accuracy
      * (falcon_pick_solver): its help said cvode, T_c/400 and tau_1/200 while
      * the runs used rk4 at T_c/37 sampled every tau_1/10 */
-    chain_cli_opt_help(opts, "solver", "cvode, arkode or rk4 [rk4 by --accuracy; cvode when a solver option is "
-                                       "given or the column is outside the step study]");
-    chain_cli_opt_help(opts, "dt", "RK4 step, s [T_c/M by --accuracy, M = 37 at 1e-6; T_c/400 with --solver rk4]; "
-                                   "initial step for cvode/arkode");
-    chain_cli_opt_help(opts, "dt-out", "sampling interval for the energy check, s [tau_1/10 of the fastest impact by "
-                                       "--accuracy, else tau_1/200; the traces every tau_1/50]");
+    const gw_param *rows = gw_chain_falcon_setup_params(); /* falcon's own solver, dt, dt-out defaults */
+    for (const char *const *nm = (const char *const[]){"solver", "dt", "dt-out", NULL}; *nm; nm++)
+        chain_cli_opt_help(opts, *nm, gw_param_find(rows, *nm)->help);
     int done = chain_cli_parse("falcon", "granwave falcon [--out DIR] [options]", falcon_summary, opts, argc, argv);
     if (done >= 0)
         return done;

@@ -179,3 +179,13 @@ def test_result_dir_lists_its_keys():
     assert "items" in d and "__getattr__" in d
     assert all(getattr(r, k) is r[k] for k in r if k.isidentifier() and k not in dir(dict))
     json.dumps({k: v for k, v in r.items() if not isinstance(v, np.ndarray)})
+
+
+def test_falcon_help_states_the_solver_it_runs():
+    # help(granwave.falcon) gave chain's defaults (solver cvode, dt T_c/400,
+    # dt_out tau_1/200) while falcon runs rk4 chosen by its accuracy
+    doc = {ln.split("(")[0].strip(): ln for ln in granwave.falcon.__doc__.split("\n") if ln.startswith("  ")}
+    r = granwave.falcon(n=(1, 2), vimp=[0.3], heights=[])
+    assert r.accuracy == 1e-6  # the run took its solver from the accuracy target (rk4)
+    assert "[rk4 by --accuracy" in doc["solver"] and "T_c/M by --accuracy" in doc["dt"], doc["solver"]
+    assert "tau_1/10" in doc["dt_out"]

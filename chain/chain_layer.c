@@ -33,9 +33,12 @@
  * + O(chi^2), chi = sqrt(R d)/h (the bonded-layer coefficient 1.133 of Dimitriadis
  * et al. 2002 for nu = 1/2); thin (a >> h, nu < 1/2): F = pi R M d^2/h (Johnson 1985,
  * section 5.9).
+ * Sharing: a process builds each law once per distinct set of inputs and hands
+ * out references to it (the memo below; gw_layer_law_free drops one).
  * Units: SI (m, Pa, N, J).
  */
 #include <math.h>
+#include <pthread.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -43,6 +46,7 @@
 #include <gsl/gsl_integration.h>
 #include <gsl/gsl_linalg.h>
 
+#include "chain_layer.h"
 #include "gw_chain.h"
 #include "gw_global.h"
 
@@ -54,6 +58,13 @@
 #define N_ALPHA 72     /* alpha samples */
 #define N_GRID 256     /* uniform ln d nodes of the law */
 
+/* Every input the law depends on, as given (compared bit for bit): sphere radius,
+ * thickness, layer Young and Poisson, sphere Young and Poisson. */
+#define LAYER_KEY 6
+typedef struct layer_key {
+    double v[LAYER_KEY];
+} layer_key;
+
 struct gw_layer_law {
     double radius, thickness, young, poisson, estar, lambda;
     double dscale, fscale; /* h^2/R (m), E* h^3/R (N) */
@@ -62,6 +73,11 @@ struct gw_layer_law {
     double la[N_GRID];     /* ln alpha at the nodes (contact radius) */
     double b0;             /* below node 0: Fhat = (4/3) dhat^(3/2) (1 + b0 sqrt(dhat)) */
     double alpha_max;
+    /* the memo's (below), under memo_lock */
+    layer_key key;
+    int refs;                  /* references handed out and not yet freed */
+    int building;              /* 1 while the creating thread builds the tables */
+    struct gw_layer_law *next; /* the memo's list, most recently used first */
 };
 
 static double layer_q_integrand(double u, double kap)
@@ -254,23 +270,12 @@ static double law_segment_energy(const gw_layer_law *l, double a, double b)
     return 0.5 * (b - a) * s;
 }
 
-int gw_layer_law_create(double radius, const gw_material *bead, double thickness, double young,
-                        double poisson, gw_layer_law **out, gw_err *err)
+/* The tables of l for these inputs (validated); l's other fields untouched. */
+static int layer_build(gw_layer_law *l, double radius, const gw_material *bead, double thickness, double young,
+                       double poisson, gw_err *err)
 {
-    *out = NULL;
-    int rc;
-    if ((rc = gw_check_range(radius, "layer law: sphere radius (m)", 1e-6, 1.0, err)) != GW_OK ||
-        (rc = gw_check_range(thickness, "layer law: thickness (m)", 1e-7, 1.0, err)) != GW_OK ||
-        (rc = gw_check_range(young, "layer law: Young modulus (Pa)", 1e3, 1e13, err)) != GW_OK ||
-        (rc = gw_check_range(poisson, "layer law: Poisson ratio", 0.0, 0.5, err)) != GW_OK)
-        return rc;
-    if (!bead)
-        return gw_err_set(err, GW_EINVAL, "layer law: no sphere material");
     double cl = (1.0 - poisson * poisson) / young;
     double cs = isinf(bead->young) ? 0.0 : (1.0 - bead->poisson * bead->poisson) / bead->young;
-    gw_layer_law *l = calloc(1, sizeof *l);
-    if (!l)
-        return gw_err_set(err, GW_ENOMEM, "layer law: out of memory");
     l->radius = radius;
     l->thickness = thickness;
     l->young = young;
@@ -284,7 +289,7 @@ int gw_layer_law_create(double radius, const gw_material *bead, double thickness
     l->alpha_max = fmin(40.0, fmax(2.0, 2.0 * radius / thickness));
     qtab t = {0, NULL};
     double al[N_ALPHA], xd[N_ALPHA], yf[N_ALPHA], m[N_ALPHA], ma[N_ALPHA];
-    rc = qtab_build(poisson, 2.0 * l->alpha_max + 0.1, &t, err);
+    int rc = qtab_build(poisson, 2.0 * l->alpha_max + 0.1, &t, err);
     for (int k = 0; rc == GW_OK && k < N_ALPHA; k++) {
         al[k] = ALPHA_LO * pow(l->alpha_max / ALPHA_LO, (double)k / (N_ALPHA - 1));
         double dh, fh;
@@ -296,10 +301,8 @@ int gw_layer_law_create(double radius, const gw_material *bead, double thickness
         al[k] = log(al[k]);
     }
     free(t.q);
-    if (rc != GW_OK) {
-        free(l);
+    if (rc != GW_OK)
         return rc;
-    }
     pchip_slopes(xd, yf, N_ALPHA, m);
     pchip_slopes(xd, al, N_ALPHA, ma);
     l->s0 = xd[0];
@@ -320,13 +323,201 @@ int gw_layer_law_create(double radius, const gw_material *bead, double thickness
     l->ucum[0] = 4.0 / 3.0 * (0.4 * d0 * d0 * sqrt(d0) + l->b0 * d0 * d0 * d0 / 3.0);
     for (int j = 1; j < N_GRID; j++)
         l->ucum[j] = l->ucum[j - 1] + law_segment_energy(l, l->s0 + (j - 1) * l->ds, l->s0 + j * l->ds);
+    return GW_OK;
+}
+
+/* ---- memo ----
+ * One law object per distinct set of inputs in a process: a create with the
+ * inputs of a law the memo holds returns that object with one more reference,
+ * and gw_layer_law_free drops one. A law nobody references stays in the memo,
+ * idle, for a later create (a sweep case's check frees its law before the case
+ * runs); at most CHAIN_LAYER_MEMO_IDLE idle laws are kept (8.3 kB each), the least
+ * recently used freed first. A law being built is in the memo as such: a
+ * create of the same inputs in another thread waits for it (the condition
+ * variable) instead of building it again, and builds it itself if that build
+ * failed (only successes are kept). The lock is never held during a build,
+ * and a fork waits for it (pthread_atfork, as gw_global.h's); the child drops
+ * the laws other threads were building (it has not those threads). */
+
+static struct {
+    gw_layer_law *head; /* every law handed out or idle, most recently used first */
+    long built, shared; /* creates that built a law, creates answered from the memo */
+    int keep;           /* idle laws kept at most */
+} memo = {NULL, 0, 0, CHAIN_LAYER_MEMO_IDLE};
+static pthread_mutex_t memo_lock = PTHREAD_MUTEX_INITIALIZER;
+static pthread_cond_t memo_built = PTHREAD_COND_INITIALIZER;
+static pthread_once_t memo_once = PTHREAD_ONCE_INIT;
+
+static void memo_fork_prepare(void)
+{
+    pthread_mutex_lock(&memo_lock);
+}
+
+static void memo_fork_parent(void)
+{
+    pthread_mutex_unlock(&memo_lock);
+}
+
+static void memo_fork_child(void)
+{
+    for (gw_layer_law **pp = &memo.head; *pp;) {
+        gw_layer_law *l = *pp;
+        if (l->building) { /* its builder is a thread of the parent */
+            *pp = l->next;
+            free(l);
+        } else
+            pp = &l->next;
+    }
+    pthread_mutex_init(&memo_lock, NULL); /* made anew: the child's thread has a new id */
+    pthread_cond_init(&memo_built, NULL);
+}
+
+static void memo_init(void)
+{
+    pthread_atfork(memo_fork_prepare, memo_fork_parent, memo_fork_child);
+}
+
+static void memo_lock_take(void)
+{
+    pthread_once(&memo_once, memo_init);
+    pthread_mutex_lock(&memo_lock);
+}
+
+/* Unlink l from the list (under the lock). */
+static void memo_unlink(gw_layer_law *l)
+{
+    for (gw_layer_law **pp = &memo.head; *pp; pp = &(*pp)->next)
+        if (*pp == l) {
+            *pp = l->next;
+            return;
+        }
+}
+
+static void memo_to_front(gw_layer_law *l)
+{
+    memo_unlink(l);
+    l->next = memo.head;
+    memo.head = l;
+}
+
+/* Free the idle laws beyond the keep most recently used (under the lock). */
+static void memo_trim(int keep)
+{
+    int idle = 0;
+    for (gw_layer_law **pp = &memo.head; *pp;) {
+        gw_layer_law *l = *pp;
+        if (l->refs == 0 && !l->building && ++idle > keep) {
+            *pp = l->next;
+            free(l);
+        } else
+            pp = &l->next;
+    }
+}
+
+void chain_layer_memo_stats(long *built, long *shared, int *laws)
+{
+    memo_lock_take();
+    int n = 0;
+    for (const gw_layer_law *l = memo.head; l; l = l->next)
+        n++;
+    *built = memo.built;
+    *shared = memo.shared;
+    *laws = n;
+    pthread_mutex_unlock(&memo_lock);
+}
+
+void chain_layer_memo_clear(void)
+{
+    memo_lock_take();
+    memo_trim(0);
+    memo.built = memo.shared = 0;
+    pthread_mutex_unlock(&memo_lock);
+}
+
+int chain_layer_memo_keep(int keep)
+{
+    memo_lock_take();
+    int old = memo.keep;
+    if (keep >= 0) {
+        memo.keep = keep;
+        memo_trim(keep);
+    }
+    pthread_mutex_unlock(&memo_lock);
+    return old;
+}
+
+int gw_layer_law_create(double radius, const gw_material *bead, double thickness, double young,
+                        double poisson, gw_layer_law **out, gw_err *err)
+{
+    *out = NULL;
+    int rc;
+    if ((rc = gw_check_range(radius, "layer law: sphere radius (m)", 1e-6, 1.0, err)) != GW_OK ||
+        (rc = gw_check_range(thickness, "layer law: thickness (m)", 1e-7, 1.0, err)) != GW_OK ||
+        (rc = gw_check_range(young, "layer law: Young modulus (Pa)", 1e3, 1e13, err)) != GW_OK ||
+        (rc = gw_check_range(poisson, "layer law: Poisson ratio", 0.0, 0.5, err)) != GW_OK)
+        return rc;
+    if (!bead)
+        return gw_err_set(err, GW_EINVAL, "layer law: no sphere material");
+    layer_key k;
+    const double v[LAYER_KEY] = {radius, thickness, young, poisson, bead->young, bead->poisson};
+    memcpy(k.v, v, sizeof v);
+    memo_lock_take();
+    gw_layer_law *l;
+    for (;;) {
+        for (l = memo.head; l && memcmp(&l->key, &k, sizeof k) != 0; l = l->next)
+            ;
+        if (!l || !l->building)
+            break;
+        pthread_cond_wait(&memo_built, &memo_lock); /* another thread builds it */
+    }
+    if (l) {
+        l->refs++;
+        memo.shared++;
+        memo_to_front(l);
+        pthread_mutex_unlock(&memo_lock);
+        *out = l;
+        return GW_OK;
+    }
+    l = calloc(1, sizeof *l);
+    if (!l) {
+        pthread_mutex_unlock(&memo_lock);
+        return gw_err_set(err, GW_ENOMEM, "layer law: out of memory");
+    }
+    l->key = k;
+    l->refs = 1;
+    l->building = 1;
+    l->next = memo.head;
+    memo.head = l;
+    pthread_mutex_unlock(&memo_lock);
+
+    rc = layer_build(l, radius, bead, thickness, young, poisson, err);
+
+    memo_lock_take();
+    l->building = 0;
+    if (rc == GW_OK)
+        memo.built++;
+    else
+        memo_unlink(l);
+    pthread_cond_broadcast(&memo_built);
+    pthread_mutex_unlock(&memo_lock);
+    if (rc != GW_OK) {
+        free(l);
+        return rc;
+    }
     *out = l;
     return GW_OK;
 }
 
 void gw_layer_law_free(gw_layer_law *l)
 {
-    free(l);
+    if (!l)
+        return;
+    memo_lock_take();
+    if (l->refs > 0 && --l->refs == 0) {
+        memo_to_front(l);
+        memo_trim(memo.keep);
+    }
+    pthread_mutex_unlock(&memo_lock);
 }
 
 double gw_layer_law_force(const gw_layer_law *l, double d, double *stiffness)

@@ -103,11 +103,17 @@ double gw_sheet_kwall(const gw_sheet *s, double m);
  * Winkler foundation F = pi R M d^2/h, M = E(1-nu)/((1+nu)(1-2nu)), for a >> h. */
 typedef struct gw_layer_law gw_layer_law;
 
-/* Build the law (about 0.1-0.5 s). GW_EINVAL (radius in [1e-6, 1] m, h in
- * [1e-7, 1] m, E in [1e3, 1e13] Pa, nu in [0, 0.5]), GW_ENOMEM, GW_ESOLVER.
- * The law is read-only after creation and may be shared by threads. */
+/* Build the law (about 0.1-0.5 s), or return the process's law of the same
+ * inputs (radius, thickness, E, nu, the sphere's Young modulus and Poisson
+ * ratio, compared bit for bit) with one more reference: a law is built once per
+ * distinct set of inputs, and up to 256 laws nobody references are kept for a
+ * later create. GW_EINVAL (radius in [1e-6, 1] m, h in [1e-7, 1] m, E in
+ * [1e3, 1e13] Pa, nu in [0, 0.5]), GW_ENOMEM, GW_ESOLVER. The law is read-only
+ * and may be shared by threads. */
 int gw_layer_law_create(double radius, const gw_material *bead, double thickness, double young,
                         double poisson, gw_layer_law **out, gw_err *err);
+/* Drop the reference a create gave (each create is paired with one free, in any
+ * order across holders and threads); NULL is nothing. */
 void gw_layer_law_free(gw_layer_law *l);
 /* Force (N) at overlap d (m), 0 for d <= 0; *stiffness = dF/dd (may be NULL). */
 double gw_layer_law_force(const gw_layer_law *l, double d, double *stiffness);

@@ -218,7 +218,15 @@ int main(void)
     }
     gw_test_true(bad == 0, "four threads, eight targets, memo shared: every constant as calibrated alone");
 
-    /* fork while a thread calibrates (and takes the memo's lock) */
+    /* fork while a thread calibrates (and takes the memo's lock). Not in the
+     * sanitizer build: GCC 12's AddressSanitizer takes no allocator lock around
+     * fork, so a child forked while the other thread is in malloc can hang in
+     * ASan's allocator (seen in 1 run of 5 on a loaded machine; gdb: the child
+     * in SizeClassAllocator64::GetFromAllocator under CVODE's malloc) */
+#ifdef __SANITIZE_ADDRESS__
+    printf("SKIP: forks during a calibration (the sanitizer's allocator is not fork-safe)\n");
+    return gw_test_summary("test_chain_calibrate_memo");
+#endif
     pthread_t sp;
     pthread_create(&sp, NULL, spin, NULL);
     int hung = 0, failed = 0;

@@ -163,10 +163,30 @@ int gw_xcorr_fft_len(const gw_xcorr *x)
     return x->M;
 }
 
-/* DFT of a (m samples, zero-padded) into x->fa. */
-static void transform(gw_xcorr *x, const double *a, int m)
+/* Power of 2 that brings the largest |a[i]| to [1/2, 1) (1 for a zero series):
+ * the correlation's sums of products then neither overflow (a series of 1e155
+ * gave NaN, EDGE) nor underflow (one of 1e-150 was "identically zero"), and the
+ * scaling is exact, so ordinary series give the same bits as unscaled. NaN when
+ * a sample is not finite. */
+static double scale_of(const double *a, int m)
 {
-    memcpy(x->in, a, (size_t)m * sizeof *a);
+    double big = 0;
+    for (int i = 0; i < m; i++) {
+        if (!isfinite(a[i]))
+            return NAN;
+        big = fmax(big, fabs(a[i]));
+    }
+    int e = 0;
+    if (big > 0)
+        frexp(big, &e);
+    return ldexp(1.0, -e);
+}
+
+/* DFT of s * a (m samples, zero-padded) into x->fa. */
+static void transform(gw_xcorr *x, const double *a, int m, double sc)
+{
+    for (int i = 0; i < m; i++)
+        x->in[i] = a[i] * sc;
     memset(x->in + m, 0, (size_t)(x->M - m) * sizeof *x->in);
     fftw_execute(x->r2c);
 }
@@ -178,16 +198,21 @@ static int check_len(const gw_xcorr *x, int m, gw_err *err)
     return GW_OK;
 }
 
-/* Cross-spectrum of a and b into x->xs and the correlation into x->out
- * (x->out[L mod M] = c[L]); returns sum a^2 * sum b^2. */
-static double correlate(gw_xcorr *x, const double *a, const double *b, int m)
+/* Cross-spectrum of sa a and sb b into x->xs and their correlation into x->out
+ * (x->out[L mod M] = sa sb c[L]), sa, sb the powers of 2 of scale_of (*unscale =
+ * 1 / (sa sb), NaN when a sample is not finite); returns sum (sa a)^2 * sum (sb b)^2. */
+static double correlate(gw_xcorr *x, const double *a, const double *b, int m, double *unscale)
 {
+    const double sa = scale_of(a, m), sb = scale_of(b, m);
+    *unscale = 1 / sa / sb;
+    if (isnan(sa) || isnan(sb))
+        return NAN;
     double ea = 0, eb = 0;
     for (int i = 0; i < m; i++)
-        ea += a[i] * a[i], eb += b[i] * b[i];
-    transform(x, a, m);
+        ea += (a[i] * sa) * (a[i] * sa), eb += (b[i] * sb) * (b[i] * sb);
+    transform(x, a, m, sa);
     memcpy(x->xs, x->fa, (size_t)x->nf * sizeof *x->xs);
-    transform(x, b, m);
+    transform(x, b, m, sb);
     for (int l = 0; l < x->nf; l++) {
         double ar = x->xs[l][0], ai = x->xs[l][1], br = x->fa[l][0], bi = x->fa[l][1];
         x->xs[l][0] = ar * br + ai * bi; /* conj(A) B */
@@ -206,9 +231,11 @@ int gw_xcorr_series(gw_xcorr *x, const double *a, const double *b, int m, double
     int rc = check_len(x, m, err);
     if (rc != GW_OK)
         return rc;
-    correlate(x, a, b, m);
+    double us;
+    if (isnan(correlate(x, a, b, m, &us)))
+        us = NAN; /* a sample not finite: every value NaN */
     for (int L = -(m - 1); L <= m - 1; L++)
-        c[L + m - 1] = x->out[L < 0 ? L + x->M : L];
+        c[L + m - 1] = x->out[L < 0 ? L + x->M : L] * us;
     return GW_OK;
 }
 
@@ -274,7 +301,13 @@ int gw_xcorr_peak_find(gw_xcorr *x, const double *a, const double *b, int m, int
         return gw_err_set(err, GW_EINVAL, "cross-correlation: unknown interpolation %d", method);
     memset(pk, 0, sizeof *pk);
     pk->lag = NAN;
-    const double e2 = correlate(x, a, b, m);
+    double us;
+    const double e2 = correlate(x, a, b, m, &us);
+    if (isnan(e2)) {
+        pk->status = GW_XCORR_PEAK_NONFINITE;
+        pk->value = pk->rho = NAN;
+        return GW_OK;
+    }
     const double *c = x->out;
     const int M = x->M;
 #define C_AT(L) c[(L) < 0 ? (L) + M : (L)]
@@ -283,7 +316,7 @@ int gw_xcorr_peak_find(gw_xcorr *x, const double *a, const double *b, int m, int
         if (C_AT(L) > C_AT(best))
             best = L;
     pk->lag_int = best;
-    pk->value = C_AT(best);
+    pk->value = C_AT(best) * us;
     if (!(e2 > 0)) {
         pk->status = GW_XCORR_PEAK_ZERO;
         pk->rho = NAN;
@@ -292,6 +325,10 @@ int gw_xcorr_peak_find(gw_xcorr *x, const double *a, const double *b, int m, int
     pk->rho = C_AT(best) / sqrt(e2);
     if (best == lo || best == hi) {
         pk->status = GW_XCORR_PEAK_EDGE;
+        return GW_OK;
+    }
+    if (!(pk->rho > 1e-9)) { /* b anti-correlated with a: b = -a shifted gave lag 97.16 at rho 3e-17 */
+        pk->status = GW_XCORR_PEAK_NOT_POSITIVE;
         return GW_OK;
     }
     const double ym = C_AT(best - 1), y0 = C_AT(best), yp = C_AT(best + 1);
@@ -318,6 +355,7 @@ int gw_xcorr_peak_find(gw_xcorr *x, const double *a, const double *b, int m, int
             interp(x, pk->lag, &pk->value, &g0, &h);
     }
     pk->rho = pk->value / sqrt(e2);
+    pk->value *= us;
     pk->status = GW_XCORR_PEAK_OK;
     return GW_OK;
 }
@@ -329,7 +367,7 @@ int gw_xcorr_psd(gw_xcorr *x, const double *a, int m, double dt, double *psd, gw
         return rc;
     if (!(dt > 0) || !isfinite(dt))
         return gw_err_set(err, GW_EINVAL, "power spectrum: sampling step %g s must be positive", dt);
-    transform(x, a, m);
+    transform(x, a, m, 1.0);
     for (int l = 0; l < x->nf; l++) {
         const double g = l == 0 || 2 * l == x->M ? 1 : 2;
         psd[l] = g * dt * (x->fa[l][0] * x->fa[l][0] + x->fa[l][1] * x->fa[l][1]) / m;

@@ -41,7 +41,11 @@ enum {
 enum {
     GW_XCORR_PEAK_OK = 0,    /* a maximum strictly inside the lag window */
     GW_XCORR_PEAK_EDGE = 1,  /* the largest value is on the window's edge: no peak found */
-    GW_XCORR_PEAK_ZERO = 2   /* a or b is identically zero */
+    GW_XCORR_PEAK_ZERO = 2,  /* a or b is identically zero */
+    GW_XCORR_PEAK_NONFINITE = 3, /* a or b holds a NaN or an infinite sample: no peak */
+    GW_XCORR_PEAK_NOT_POSITIVE = 4 /* the largest correlation in the window is not above 1e-9
+                                      of sqrt(sum a^2 sum b^2) (0 but for rounding): b is no
+                                      delayed copy of a there (an anti-correlation), no peak */
 };
 
 /* Plans for series of up to n samples, 2 <= n <= 2^26. measure = 1 plans with
@@ -64,7 +68,10 @@ typedef struct gw_xcorr_peak {
     double lag;   /* lag of the maximum, samples, refined (b behind a: > 0); NaN unless OK */
     double value; /* correlation at lag (interpolated; c at lag_int for EDGE) */
     double rho;   /* value / sqrt(sum a^2 sum b^2): 1 for b a shifted copy of a, |rho| <= 1
-                     (up to the series' aliasing between integer lags); NaN for ZERO */
+                     (up to the series' aliasing between integer lags); NaN for ZERO and
+                     NONFINITE. The lag and rho do not depend on the series' scales (each
+                     series is scaled by a power of 2 before the transforms: 1e-150 or
+                     1e150 times a series gives the same lag and rho) */
     int lag_int;  /* integer lag of the largest correlation in the window */
     int status;   /* GW_XCORR_PEAK_* */
     int fallback; /* FOURIER only: 1 when the interpolant was not bracketed around
@@ -73,7 +80,8 @@ typedef struct gw_xcorr_peak {
 
 /* Delay of b behind a: the largest correlation over the integer lags lo .. hi
  * (-(m-1) <= lo < hi <= m - 1), refined by method (GW_XCORR_*). A largest value
- * at lo or hi is not a peak (status EDGE, lag NaN). GW_EINVAL for a bad m,
+ * at lo or hi is not a peak (status EDGE, lag NaN), nor one not above 1e-9 of sqrt(sum a^2 sum b^2) (NOT_POSITIVE),
+ * nor anything of series with a sample that is not finite (NONFINITE). GW_EINVAL for a bad m,
  * window or method; the peak is then untouched. */
 int gw_xcorr_peak_find(gw_xcorr *x, const double *a, const double *b, int m, int lo, int hi,
                        int method, gw_xcorr_peak *pk, gw_err *err);

@@ -138,6 +138,7 @@ typedef struct drop_state {
     double t_end1, t_start2; /* end of the first episode, start of the second (NaN) */
     const gw_solver_type *type; /* the backend (the blow-up's advice) */
     double wg;               /* the largest work gravity has done so far, J */
+    double t_sampled;        /* time of the last row given to o->sample (-inf: none) */
 } drop_state;
 
 static int cluster_of(const drop_state *st)
@@ -307,8 +308,13 @@ static int observe(drop_state *st, double t, const double *y, int is_event)
     if (err > r->energy_error)
         r->energy_error = err;
     r->e_end = e;
-    if (st->o->sample)
+    /* an event found exactly at an output time is observed by the root and by
+     * the output, in the same state: one row (the trace held the row at
+     * 2.51e-4 s twice; dF/dt from the files divided by zero there) */
+    if (st->o->sample && t != st->t_sampled) {
+        st->t_sampled = t;
         return st->o->sample(st->o->sample_ctx, t, y, f, is_event);
+    }
     return 0;
 }
 
@@ -460,7 +466,7 @@ int gw_chain_drop_run(const gw_chain_drop_params *p, const gw_chain_run_opts *o,
     gw_solver *s = NULL;
     drop_sys d;
     memset(&d, 0, sizeof d);
-    drop_state st = {.d = &d, .p = p, .o = o, .r = r, .n = n, .t_end1 = NAN, .t_start2 = NAN};
+    drop_state st = {.d = &d, .p = p, .o = o, .r = r, .n = n, .t_end1 = NAN, .t_start2 = NAN, .t_sampled = -INFINITY};
     double *y = NULL, *y0 = NULL;
     int *roots = NULL;
     if ((rc = gw_chain_create(&q, &c, err)) != GW_OK)

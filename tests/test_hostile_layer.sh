@@ -602,7 +602,7 @@ fi
 # --- 22: indented lines in a sweep config ------------------------------------
 printf '[sweep]\nmodel = layer\n[grid]\nvi = 10, 20\n[params]\nsample = %s\nt-max = 0.003\n  rings = 4\n' "$S" >"$tmp/i22.ini"
 refused "sweep: an indented '  rings = 4' (it said: duplicate key 't-max')" \
-    "^granwave sweep: .*i22.ini:8: an indented line: the config reader takes it as more of the value of 't-max' \(line 7\); remove the indentation$" \
+    "^granwave sweep: .*i22.ini:8: an indented line: the config reader takes it as more of the value of 't-max' \(line 7\); remove the indentation \(a \[grid\] list goes on over indented lines after a line ending with a comma\)$" \
     sweep "$tmp/i22.ini" --out "$tmp/o" --check
 printf '[sweep]\nmodel = layer\n[grid]\nvi = 10, 20\r\n\r\n; note\r\n\t[params]\nsample = %s\nt-max = 0.003\n' "$S" >"$tmp/i22.ini"
 refused "sweep: an indented '[params]' after a blank line and a comment (it said: duplicate key 'vi')" \

@@ -6,6 +6,8 @@
 #   refused WHAT PATTERN CMD...: exit 2 within REFUSE_TIMEOUT seconds (20), exactly
 #   one stderr line matching PATTERN, no sanitizer report, nothing printed on
 #   stdout and nothing at $tmp/o (the --out the cases name).
+#   runs_json WHAT FILE CMD...: exit 0 within 60 s, the JSON in FILE.
+#   jq_py FILE EXPR: EXPR over the JSON d of FILE, printed (Debian's python3).
 fails=0; passes=0
 ok() { echo "PASS: $1"; passes=$((passes+1)); }
 ko() { echo "FAIL: $1"; fails=$((fails+1)); }
@@ -23,3 +25,12 @@ refused() {
     if [ -s "$tmp/stdout" ]; then ko "$what: printed on stdout"; return; fi
     ok "$what"
 }
+
+runs_json() {
+    local what=$1 out=$2; shift 2
+    timeout -s KILL 60 "$GW" "$@" --json >"$out" 2>"$tmp/stderr" </dev/null
+    local rc=$?
+    if [ $rc -ne 0 ]; then ko "$what: exit $rc ($(head -c 300 "$tmp/stderr"))"; return 1; fi
+    return 0
+}
+jq_py() { /usr/bin/python3 -c "import json,sys; d=json.load(open('$1')); print($2)"; }

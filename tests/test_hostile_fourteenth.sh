@@ -35,16 +35,6 @@ tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 PY=/usr/bin/python3
 SRC=${2:-$(dirname "${BASH_SOURCE[0]}")/..}
 
-# runs_json WHAT FILE CMD...: exit 0 within 60 s, the JSON in FILE
-runs_json() {
-    local what=$1 out=$2; shift 2
-    timeout -s KILL 60 "$GW" "$@" --json >"$out" 2>"$tmp/stderr" </dev/null
-    local rc=$?
-    if [ $rc -ne 0 ]; then ko "$what: exit $rc ($(head -c 300 "$tmp/stderr"))"; return 1; fi
-    return 0
-}
-# jq_py FILE EXPR: EXPR over the JSON d of FILE, printed
-jq_py() { $PY -c "import json,sys; d=json.load(open('$1')); print($2)"; }
 
 # --- 1: the energy error under gravity
 for s in cvode arkode rk4; do

@@ -23,6 +23,7 @@
 
 #include "gw_layer.h"
 #include "gw_test.h"
+#include "layer_test_util.h"
 #include "gw_xcorr.h"
 
 enum { N = 200 };
@@ -98,19 +99,7 @@ static void test_crowns_nan(void)
 {
     enum { nr = 12, ns = 1500 };
     const double c = 600, dc = 0.65, dt = 2e-5, w = 5e-4;
-    gw_layer_impact_result r;
-    memset(&r, 0, sizeof r);
-    r.ns = ns;
-    r.nrings = nr;
-    r.e_incident = 1;
-    r.t = malloc(ns * sizeof *r.t);
-    r.ring_strain = calloc((size_t)ns * nr, sizeof *r.ring_strain);
-    r.ring_kin = calloc((size_t)ns * nr, sizeof *r.ring_kin);
-    r.peak_strain_t = malloc(3 * nr * sizeof *r.peak_strain_t);
-    r.peak_kin_t = r.peak_strain_t + nr;
-    r.ring_r = r.peak_strain_t + 2 * nr;
-    for (int k = 0; k < ns; k++)
-        r.t[k] = k * dt;
+    gw_layer_impact_result r = test_crowns_result(nr, ns, dt);
     double x[nr], y[nr];
     int m = 0;
     for (int q = 0; q < nr; q++) {
@@ -138,11 +127,7 @@ static void test_crowns_nan(void)
     gw_test_rel(r.wave_speed_err, se, 1e-9, "its standard error = own");
     gw_test_rel(r.wave_speed_xcorr, c, 1e-6, "cross-correlation speed 600 m/s without the NaN ring's pairs");
     gw_test_true(isnan(r.xcorr_delay[4]) && isnan(r.xcorr_delay[5]), "the NaN ring's two pairs are left out");
-    free(r.t);
-    free(r.ring_strain);
-    free(r.ring_kin);
-    free(r.peak_strain_t);
-    free(r.xcorr_delay);
+    test_crowns_result_free(&r);
 }
 
 int main(void)

@@ -29,6 +29,7 @@
 
 #include "gw_layer.h"
 #include "gw_test.h"
+#include "layer_test_util.h"
 #include "gw_xcorr.h"
 
 static double shape_strain(double u, double w)
@@ -123,19 +124,7 @@ int main(void)
 {
     const int nr = 8, ns = 1201;
     const double c = 1000, dc = 0.65, dt = 1e-5, w = 2e-4;
-    gw_layer_impact_result r;
-    memset(&r, 0, sizeof r);
-    r.ns = ns;
-    r.nrings = nr;
-    r.e_incident = 1;
-    r.t = malloc(ns * sizeof *r.t);
-    r.ring_strain = calloc((size_t)ns * nr, sizeof *r.ring_strain);
-    r.ring_kin = calloc((size_t)ns * nr, sizeof *r.ring_kin);
-    r.peak_strain_t = malloc(3 * nr * sizeof *r.peak_strain_t);
-    r.peak_kin_t = r.peak_strain_t + nr;
-    r.ring_r = r.peak_strain_t + 2 * nr;
-    for (int k = 0; k < ns; k++)
-        r.t[k] = k * dt;
+    gw_layer_impact_result r = test_crowns_result(nr, ns, dt);
     for (int q = 0; q < nr; q++) {
         r.ring_r[q] = (q + 0.5) * dc;
         double tq = round(r.ring_r[q] / c / dt) * dt; /* on the sample grid */
@@ -160,11 +149,7 @@ int main(void)
     gw_test_true(isnan(r.peak_strain_t[nr - 1]), "a ring without signal has no peak");
     gw_test_rel(r.peak_strain_t[3], round(r.ring_r[3] / c / dt) * dt, 1e-12,
                 "arrival peak taken, not the later larger reflection (s)");
-    free(r.t);
-    free(r.ring_strain);
-    free(r.ring_kin);
-    free(r.peak_strain_t);
-    free(r.xcorr_delay);
+    test_crowns_result_free(&r);
     test_xcorr(1, 0);
     test_xcorr(0, 0);
     test_xcorr(1, 1);

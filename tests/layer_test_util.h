@@ -1,0 +1,43 @@
+/*
+ * layer_test_util.h: a synthetic impact result for the crowns' tests: ns samples
+ * every dt s over nr rings, the series zero, for the test to fill, and its free.
+ */
+#ifndef GW_LAYER_TEST_UTIL_H
+#define GW_LAYER_TEST_UTIL_H
+
+#include <stdlib.h>
+#include <string.h>
+
+#include "gw_layer.h"
+
+static inline gw_layer_impact_result test_crowns_result(int nr, int ns, double dt)
+{
+    gw_layer_impact_result r;
+    memset(&r, 0, sizeof r);
+    r.ns = ns;
+    r.nrings = nr;
+    r.e_incident = 1;
+    r.t = malloc((size_t)ns * sizeof *r.t);
+    r.ring_strain = calloc((size_t)ns * (size_t)nr, sizeof *r.ring_strain);
+    r.ring_kin = calloc((size_t)ns * (size_t)nr, sizeof *r.ring_kin);
+    r.peak_strain_t = malloc(3 * (size_t)nr * sizeof *r.peak_strain_t);
+    if (!r.t || !r.ring_strain || !r.ring_kin || !r.peak_strain_t)
+        abort(); /* a test without memory has nothing to say */
+    r.peak_kin_t = r.peak_strain_t + nr;
+    r.ring_r = r.peak_strain_t + 2 * nr;
+    for (int k = 0; k < ns; k++)
+        r.t[k] = k * dt;
+    return r;
+}
+
+/* What test_crowns_result and gw_layer_crowns allocated. */
+static inline void test_crowns_result_free(gw_layer_impact_result *r)
+{
+    free(r->t);
+    free(r->ring_strain);
+    free(r->ring_kin);
+    free(r->peak_strain_t);
+    free(r->xcorr_delay);
+}
+
+#endif

@@ -11,10 +11,31 @@
 #                     bench/run_peers.sh (measurements only, a few minutes)
 #
 # Environment: BUILD_DIR (default build), RESULTS (default results/falcon),
-# JOBS (build parallelism, default nproc).
+# JOBS (build parallelism, a positive integer, default nproc). A relative BUILD_DIR
+# or RESULTS given by the caller is taken from the caller's working directory (the
+# defaults are in the checkout).
 set -euo pipefail
-cd "$(dirname "$0")"
+usage="usage: setup.sh [main|test|build|bench]"
+if [ $# -gt 1 ]; then
+    echo "setup.sh: unexpected argument '$2' ($usage)" >&2
+    exit 2
+fi
 mode=${1:-main}
+case "$mode" in main | test | build | bench) ;; *)
+    echo "setup.sh: unknown mode '$mode' ($usage)" >&2
+    exit 2
+    ;;
+esac
+case "${JOBS:-}" in '' ) ;; *[!0-9]* | 0*)
+    echo "setup.sh: JOBS='$JOBS' is not a positive integer" >&2
+    exit 2
+    ;;
+esac
+caller=$PWD
+abs() { case "$1" in /*) printf '%s' "$1" ;; *) printf '%s/%s' "$caller" "$1" ;; esac; }
+[ -z "${BUILD_DIR:-}" ] || BUILD_DIR=$(abs "$BUILD_DIR")
+[ -z "${RESULTS:-}" ] || RESULTS=$(abs "$RESULTS")
+cd "$(dirname "$0")"
 BUILD_DIR=${BUILD_DIR:-build}
 RESULTS=${RESULTS:-results/falcon}
 JOBS=${JOBS:-$(nproc)}
@@ -82,9 +103,5 @@ bench)
     bench/rhs_vs_v01.sh 7 "$BUILD_DIR"
     bench/falcon_vs_lsoda.sh "$BUILD_DIR" 7
     bench/run_peers.sh "$BUILD_DIR"
-    ;;
-*)
-    echo "setup.sh: unknown mode '$mode' (main, test, build, bench)" >&2
-    exit 2
     ;;
 esac

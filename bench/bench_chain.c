@@ -228,10 +228,21 @@ static int hardware_bound(int reps)
 
 int main(int argc, char **argv)
 {
-    int reps = argc > 1 ? atoi(argv[1]) : 2000;
-    int rhs_only = argc > 2 && strcmp(argv[2], "rhs") == 0;
-    if (reps < 1)
-        reps = 1;
+    int reps = 2000;
+    if (argc > 1) {
+        char *end;
+        long r = strtol(argv[1], &end, 10);
+        if (end == argv[1] || *end || r < 1 || r > 100000000) {
+            fprintf(stderr, "bench_chain: REPS '%s' is not a positive integer\n", argv[1]);
+            return 2;
+        }
+        reps = (int)r;
+    }
+    if (argc > 3 || (argc > 2 && strcmp(argv[2], "rhs") != 0)) {
+        fprintf(stderr, "bench_chain: usage: bench_chain [REPS [rhs]]\n");
+        return 2;
+    }
+    int rhs_only = argc > 2;
     printf("granwave %s bench_chain (reps %d)\n\n1. right-hand side, ns per bead per evaluation "
            "(median of 7)\n", gw_version(), reps);
     printf("%10s %12s %12s %8s\n", "beads", "model RHS", "scalar loop", "ratio");

@@ -187,27 +187,41 @@ int main(int argc, char **argv)
     double transits = 20;
     int reps = 3, nmax = 1000000, bdf_max = 100000, rounds = 1;
     const char *only = NULL;
-    for (int i = 1; i + 1 < argc; i += 2) {
-        if (!strcmp(argv[i], "--transits"))
-            transits = atof(argv[i + 1]);
-        else if (!strcmp(argv[i], "--reps"))
-            reps = atoi(argv[i + 1]);
-        else if (!strcmp(argv[i], "--nmax"))
-            nmax = atoi(argv[i + 1]);
-        else if (!strcmp(argv[i], "--bdf-max"))
-            bdf_max = atoi(argv[i + 1]);
-        else if (!strcmp(argv[i], "--rounds"))
-            rounds = atoi(argv[i + 1]);
-        else if (!strcmp(argv[i], "--only"))
-            only = argv[i + 1];
-        else {
-            fprintf(stderr, "bench_long: unknown option %s\n", argv[i]);
+    for (int i = 1; i < argc; i += 2) {
+        const char *o = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
+        int known = !strcmp(o, "--transits") || !strcmp(o, "--reps") || !strcmp(o, "--nmax") ||
+                    !strcmp(o, "--bdf-max") || !strcmp(o, "--rounds") || !strcmp(o, "--only");
+        if (!known) {
+            fprintf(stderr, "bench_long: unknown option %s\n", o);
             return 2;
         }
-    }
-    if (!(transits > 0) || reps < 1 || nmax < 1 || rounds < 1) {
-        fprintf(stderr, "bench_long: bad --transits, --reps, --rounds or --nmax\n");
-        return 2;
+        if (!v) {
+            fprintf(stderr, "bench_long: %s needs a value\n", o);
+            return 2;
+        }
+        if (!strcmp(o, "--only")) {
+            only = v;
+            continue;
+        }
+        char *end;
+        double x = strtod(v, &end);
+        int is_int = strcmp(o, "--transits") != 0;
+        int zero_ok = !strcmp(o, "--bdf-max"); /* 0: no BDF run at any size */
+        if (end == v || *end || !(x > 0 || (zero_ok && x == 0)) || x > 1e9 || (is_int && x != (double)(int)x)) {
+            fprintf(stderr, "bench_long: %s %s: expected a positive %s\n", o, v,
+                    is_int ? "integer" : "number");
+            return 2;
+        }
+        if (!strcmp(o, "--transits"))
+            transits = x;
+        else if (!strcmp(o, "--reps"))
+            reps = (int)x;
+        else if (!strcmp(o, "--nmax"))
+            nmax = (int)x;
+        else if (!strcmp(o, "--bdf-max"))
+            bdf_max = (int)x;
+        else
+            rounds = (int)x;
     }
     gw_chain_params p = gw_chain_params_default();
     printf("granwave %s bench_long: column at v_imp %.2g m/s hitting the wall, end time %g tc "

@@ -5,6 +5,8 @@ numbers come either from the paper (data/falcon1998/*.csv) or from the program.
 
     load_table(name)       a table of data/falcon1998 (e.g. "wave_speed_table1")
     load_csv(path)         any granwave CSV ('#' comment lines, one header row)
+    load_json(path)        a JSON file of the program (an object)
+    open_regular(path)     open a regular file for reading; anything else is refused
     paper_value(q, h_mm)   one row of rigid_wall.csv, selected by quantity and height
     find_granwave()        path of the program: $GRANWAVE, ../build/granwave, build/granwave
     run_granwave(args)     run it; parsed JSON (json=True) or stdout text
@@ -18,6 +20,7 @@ Use Debian's /usr/bin/python3 (numpy).
 import csv
 import json as _json
 import os
+import stat
 import subprocess
 
 import numpy as np
@@ -25,7 +28,13 @@ import numpy as np
 HERE = os.path.dirname(os.path.abspath(__file__))
 DATA_DIR = os.path.normpath(os.path.join(HERE, "..", "data", "falcon1998"))
 
-__all__ = ["DATA_DIR", "GranwaveError", "load_csv", "load_table", "paper_value",
+def read_error(path, e):
+    """The one-line message of an error e raised while reading path (naming path once)."""
+    msg = getattr(e, "strerror", None) or str(e) if isinstance(e, OSError) else str(e)
+    return msg if path in msg else f"cannot read {path}: {msg}"
+
+
+__all__ = ["read_error", "DATA_DIR", "GranwaveError", "open_regular", "load_csv", "load_json", "load_table", "paper_value",
            "find_granwave", "run_granwave", "import_granwave"]
 
 
@@ -48,17 +57,67 @@ def _column(cells):
     return np.array(values, dtype=float)
 
 
+def open_regular(path, **kw):
+    """open(path) for reading text, refusing anything but a regular file.
+
+    A FIFO, a device or a socket given where a table or a JSON file is expected would
+    block the reader or never end (issue 18, class 3): the file is opened without
+    blocking and checked before a byte is read. Raises FileNotFoundError if path does
+    not exist, ValueError naming path and its kind if it is not a regular file.
+    """
+    try:
+        fd = os.open(path, os.O_RDONLY | os.O_NONBLOCK)
+    except IsADirectoryError:
+        raise ValueError(f"{path} is a directory, not a file")
+    try:
+        mode = os.fstat(fd).st_mode
+        if not stat.S_ISREG(mode):
+            kind = ("a directory" if stat.S_ISDIR(mode) else "a FIFO" if stat.S_ISFIFO(mode)
+                    else "a device" if stat.S_ISCHR(mode) or stat.S_ISBLK(mode)
+                    else "a socket" if stat.S_ISSOCK(mode) else "not a regular file")
+            raise ValueError(f"{path} is {kind}, not a regular file")
+        os.set_blocking(fd, True)
+        return os.fdopen(fd, "r", **kw)
+    except BaseException:
+        os.close(fd)
+        raise
+
+
+def load_json(path):
+    """The JSON object in the regular file path (a dict). Raises FileNotFoundError if
+    path is missing, ValueError naming path if it is not a regular file, not UTF-8 or
+    not JSON, or holds something other than an object."""
+    with open_regular(path) as f:
+        try:
+            obj = _json.load(f)
+        except UnicodeDecodeError as e:
+            raise ValueError(f"{path}: not UTF-8 text ({e.reason} at byte {e.start})")
+        except ValueError as e:
+            raise ValueError(f"{path}: not JSON ({e})")
+    if not isinstance(obj, dict):
+        kind = {list: "an array", str: "a string", type(None): "null", bool: "a boolean"}.get(type(obj), "a number")
+        raise ValueError(f"{path}: holds {kind}, not a JSON object")
+    return obj
+
+
 def load_csv(path, comments=False):
     """Read a CSV with leading/interleaved '#' comment lines and one header row.
 
     Returns {column: numpy array or list of str}; with comments=True returns
     (table, list of comment lines without the leading '#').
-    Raises FileNotFoundError if path is missing, ValueError if it has no header or a row
-    has the wrong number of cells (the message names the file and line).
+    Raises FileNotFoundError if path is missing, ValueError if it is not a regular file or
+    not UTF-8, has no header or a row has the wrong number of cells (the message names
+    the file and line).
     """
     notes, header, rows = [], None, []
-    with open(path, newline="") as f:
-        for lineno, row in enumerate(csv.reader(f), start=1):
+    with open_regular(path, newline="") as f:
+        try:
+            lines = list(csv.reader(f))
+        except UnicodeDecodeError as e:
+            raise ValueError(f"{path}: not UTF-8 text ({e.reason} at byte {e.start})")
+        except csv.Error as e:
+            raise ValueError(f"{path}: {e}")
+        for lineno, row in enumerate(lines, start=1):
             if not row or (len(row) == 1 and row[0].strip() == ""):
                 continue
             if row[0].lstrip().startswith("#"):

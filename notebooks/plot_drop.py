@@ -23,7 +23,9 @@ collision time 1.04 ms for N = 40 at h = 5.1 mm).
 
 Writes DIR/figures/drop_signal.png (the sensor signal over 10 ms) and
 DIR/figures/drop_impacts.png (every impact's peak force against time: the column against a
-single bead and a rigid block). Exit status: 0 ok, 2 on a missing or malformed input.
+single bead and a rigid block). Exit status: 0 ok, 2 on a missing or malformed input (a
+file that is not a regular file, a key or the signal's rows missing), 1 if a run of the
+program fails or a figure cannot be written.
 Use Debian's /usr/bin/python3. notebooks/experiment.ipynb uses run_cases_module (the same
 cases through the Python module's granwave.drop, in memory: the keys of drop.json that
 the figures read, and the signal) and make_figures.
@@ -57,6 +59,10 @@ PAPER_BAND = 0.05  # "independent of N within 5 %" (physics.md 1.7)
 
 class InputError(Exception):
     """A missing or malformed input; main() prints it and exits with 2."""
+
+
+class OutputError(Exception):
+    """A figure that cannot be written; main() prints it and exits with 1."""
 
 
 def run_cases(d, names=None, program=None):
@@ -143,16 +149,23 @@ def load_case(d, name):
     base = os.path.join(d, name)
     path = os.path.join(base, "drop.json")
     try:
-        with open(path) as f:
-            js = json.load(f)
-        for key in ("impacts", "wall_peaks", "first_collision", "settings", "n_impacts"):
-            js[key]  # noqa: B018 (presence check)
+        js = gwdata.load_json(path)
     except FileNotFoundError:
         raise InputError(f"missing file {path} (make it with: plot_drop.py {d} --run)")
     except (OSError, ValueError) as e:
-        raise InputError(f"cannot read {path}: {e}")
-    except KeyError as e:
-        raise InputError(f"{path}: missing key {e}")
+        raise InputError(gwdata.read_error(path, e))
+    for key, kind in (("impacts", list), ("wall_peaks", list), ("first_collision", dict),
+                      ("settings", dict), ("n_impacts", int)):
+        if key not in js:
+            raise InputError(f"{path}: missing key '{key}'")
+        if not isinstance(js[key], kind):
+            raise InputError(f"{path}: '{key}' is not {'a list' if kind is list else 'an object' if kind is dict else 'an integer'}")
+    if not js["impacts"] or not all(isinstance(i, dict) and all(isinstance(i.get(k), (int, float))
+                                                                for k in ("t_fmax", "f_max"))
+                                    for i in js["impacts"]):
+        raise InputError(f"{path}: 'impacts' is empty or an impact has no t_fmax, f_max")
+    if not all(isinstance(js["settings"].get(k), dict) for k in ("model", "solver")):
+        raise InputError(f"{path}: 'settings' has no 'model' or 'solver' object")
     sig = os.path.join(base, "drop_wall_force.csv")
     if name not in SIGNAL and not os.path.isfile(sig):
         return {"name": name, "json": js, "t": None, "f": None}
@@ -161,8 +174,12 @@ def load_case(d, name):
         ts, fs = np.asarray(t["t_s"], float), np.asarray(t["f_wall_N"], float)
     except FileNotFoundError:
         raise InputError(f"missing file {sig}")
-    except (KeyError, ValueError, TypeError, OSError) as e:
-        raise InputError(f"cannot read {sig}: {e}")
+    except KeyError as e:
+        raise InputError(f"{sig}: missing column {e}")
+    except (ValueError, TypeError, OSError) as e:
+        raise InputError(gwdata.read_error(sig, e))
+    if len(ts) == 0:
+        raise InputError(f"{sig}: no rows (a run cut short?)")
     return {"name": name, "json": js, "t": ts, "f": fs}
 
 
@@ -277,7 +294,10 @@ def make_figures(cases):
 def write_figures(d, quiet=False):
     cases = load_cases(d)
     outdir = os.path.join(d, "figures")
-    os.makedirs(outdir, exist_ok=True)
+    try:
+        os.makedirs(outdir, exist_ok=True)
+    except OSError as e:
+        raise OutputError(f"cannot create {outdir}: {e.strerror or e}")
     first = cases["column_h5.1_10ms"]["json"]
     meta = {"Software": f"granwave {first.get('version', '?')} + plot_drop.py",
             "Description": json.dumps({n: c["json"]["settings"] for n, c in cases.items()},
@@ -286,7 +306,10 @@ def write_figures(d, quiet=False):
     paths = []
     for name, fig in make_figures(cases).items():
         p = os.path.join(outdir, name + ".png")
-        fig.savefig(p, dpi=110, metadata=meta)
+        try:
+            fig.savefig(p, dpi=110, metadata=meta)
+        except OSError as e:
+            raise OutputError(f"cannot write {p}: {e.strerror or e}")
         paths.append(p)
         if not quiet:
             print(p)
@@ -314,7 +337,7 @@ def main(argv):
     except InputError as e:
         print(f"plot_drop.py: error: {e}", file=sys.stderr)
         return 2
-    except gwdata.GranwaveError as e:
+    except (gwdata.GranwaveError, OutputError) as e:
         print(f"plot_drop.py: error: {e}", file=sys.stderr)
         return 1
     return 0

@@ -28,8 +28,9 @@ peaks by 4e-7 of F_max and final velocities by 2.3e-7 m/s (measured at N = 1..30
 below what the figures resolve; the study's own numbers are the same library call.
 The library is found as the module finds it (GRANWAVE_LIB, ...).
 
-Exit status: 0 ok, 2 if DIR or a required file is missing or unreadable, or (--module) if
-the module cannot be loaded or refuses a value.
+Exit status: 0 ok, 2 if DIR or a required file is missing, unreadable, not a regular file
+or malformed (no rows, a key or a number missing), or (--module) if the module cannot be
+loaded or refuses a value; 1 if a figure cannot be written.
 Use Debian's /usr/bin/python3. The functions (load_run, run_from_module, make_figures)
 are also used by notebooks/falcon_column.ipynb to show the figures inline.
 """
@@ -60,20 +61,33 @@ class InputError(Exception):
     """A missing or malformed input; main() prints it and exits with 2."""
 
 
-def _csv(path, columns=()):
+class OutputError(Exception):
+    """A figure that cannot be written; main() prints it and exits with 1."""
+
+
+def _csv(path, columns=(), finite=()):
     try:
         t = gwdata.load_csv(path)
     except FileNotFoundError:
         raise InputError(f"missing file {path}")
     except (ValueError, OSError) as e:
-        raise InputError(f"cannot read {path}: {e}")
+        raise InputError(gwdata.read_error(path, e))
     missing = [c for c in columns if c not in t]
     if missing:
         raise InputError(f"{path}: missing column(s) {', '.join(missing)}")
     for c in columns:
         if not isinstance(t[c], np.ndarray):
             raise InputError(f"{path}: column {c} is not numeric")
+    if columns and len(t[columns[0]]) == 0:
+        raise InputError(f"{path}: no rows (a run cut short?)")
+    for c in finite:
+        if not np.all(np.isfinite(t[c])):
+            raise InputError(f"{path}: column {c} has an empty or non-finite cell")
     return t
+
+
+def _is_number(x):
+    return isinstance(x, (int, float)) and not isinstance(x, bool)
 
 
 def load_run(d):
@@ -81,33 +95,40 @@ def load_run(d):
     if not os.path.isdir(d):
         raise InputError(f"no such directory {d} (run: granwave falcon --out {d})")
     for f in REQUIRED:
-        if not os.path.isfile(os.path.join(d, f)):
+        if not os.path.lexists(os.path.join(d, f)):
             raise InputError(f"missing file {os.path.join(d, f)} "
                              f"(is {d} the --out directory of granwave falcon?)")
     run = {"dir": d, "notes": []}
-    run["runs"] = _csv(os.path.join(d, "falcon_runs.csv"), RUN_COLUMNS)
-    run["final"] = _csv(os.path.join(d, "falcon_final_velocities.csv"), FINAL_COLUMNS)
+    run["runs"] = _csv(os.path.join(d, "falcon_runs.csv"), RUN_COLUMNS, finite=("v_imp_m_s", "n"))
+    run["final"] = _csv(os.path.join(d, "falcon_final_velocities.csv"), FINAL_COLUMNS,
+                        finite=("v_imp_m_s", "n", "bead"))
     path = os.path.join(d, "falcon_summary.json")
     try:
-        with open(path) as f:
-            run["summary"] = json.load(f)
-        vel = run["summary"]["velocities"]
-        for key in ("v_imp", "h_mm", "t_q", "t_q_err", "tau_fit_intercept", "f_max_1_theory"):
-            for v in vel:
-                v[key]  # noqa: B018 (presence check)
+        run["summary"] = gwdata.load_json(path)
+    except FileNotFoundError:
+        raise InputError(f"missing file {path}")
     except (OSError, ValueError) as e:
-        raise InputError(f"cannot read {path}: {e}")
-    except (KeyError, TypeError) as e:
-        raise InputError(f"{path}: missing key {e}")
+        raise InputError(gwdata.read_error(path, e))
+    vel = run["summary"].get("velocities")
+    if not isinstance(vel, list) or not vel or not all(isinstance(v, dict) for v in vel):
+        raise InputError(f"{path}: 'velocities' is not a non-empty list of objects")
+    for v in vel:
+        for key in ("v_imp", "h_mm", "t_q", "t_q_err", "tau_fit_intercept", "f_max_1_theory"):
+            if key not in v:
+                raise InputError(f"{path}: missing key '{key}' in velocities")
+            if not (v[key] is None or _is_number(v[key])) or (key == "v_imp" and not _is_number(v[key])):
+                raise InputError(f"{path}: velocities' {key} = {v[key]!r} is not a number")
+    if not isinstance(run["summary"].get("settings", {}), dict):
+        raise InputError(f"{path}: 'settings' is not an object")
     run["wall"] = {}
     for n in [7] + OPTIONAL_TRACES:
         p = os.path.join(d, f"trace_n{n}_wall_force.csv")
-        if n != 7 and not os.path.isfile(p):
+        if n != 7 and not os.path.lexists(p):
             run["notes"].append(f"{p} not found (N = {n} outside the run's --n range?): "
                                 f"left out of wall_force_n7_15_30.png")
             continue
         run["wall"][n] = _csv(p, ["t_s", "f_wall_N"])
-    run["beads7"] = _csv(os.path.join(d, "trace_n7_beads.csv"), ["t_s", "v1_m_s"])
+    run["beads7"] = _csv(os.path.join(d, "trace_n7_beads.csv"), ["t_s", "v1_m_s"], finite=("v1_m_s",))
     return run
 
 
@@ -427,7 +448,10 @@ def write_figures(d, quiet=False, run=None):
     paths = []
     for name, fig in figs.items():
         p = os.path.join(outdir, name + ".png")
-        fig.savefig(p, dpi=120, metadata=meta)
+        try:
+            fig.savefig(p, dpi=120, metadata=meta)
+        except OSError as e:
+            raise OutputError(f"cannot write {p}: {e.strerror or e}")
         paths.append(p)
         if not quiet:
             print(p)
@@ -469,6 +493,9 @@ def main(argv):
     except InputError as e:
         print(f"plot_falcon.py: error: {e}", file=sys.stderr)
         return 2
+    except OutputError as e:
+        print(f"plot_falcon.py: error: {e}", file=sys.stderr)
+        return 1
     return 0
 
 

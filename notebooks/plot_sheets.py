@@ -34,7 +34,9 @@ or granwave.softwall(sheets=True) through softwall_from_module):
   fig_plateau_runs(cases)             fig_plateau for cases held in memory, with the paper's numbers
   plateau_table(cases)                plateau_markdown's rows plus tau_N(40) against 1.04 ms
 
-Exit status: 0 ok, 2 if DATA_DIR or a required file is missing. Headless (Agg); use
+Exit status: 0 ok, 2 if DATA_DIR or a required file is missing, not a regular file or
+malformed, or on extra arguments (nothing is written then); 1 if a figure cannot be
+written. Headless (Agg); use
 Debian's /usr/bin/python3.
 """
 
@@ -78,14 +80,20 @@ class InputError(Exception):
     """A missing or malformed input; main() prints it and exits with 2."""
 
 
+class OutputError(Exception):
+    """A figure that cannot be written; main() prints it and exits with 1."""
+
+
 # ---- sheets ----
 
 def load_softwall(data_dir, law, tol):
     path = os.path.join(data_dir, f"softwall_{law}_tol{int(round(tol * 100)):02d}.json")
-    if not os.path.exists(path):
+    if not os.path.lexists(path):
         return None
-    with open(path) as f:
-        return json.load(f)
+    try:
+        return gwdata.load_json(path)
+    except (OSError, ValueError) as e:
+        raise InputError(gwdata.read_error(path, e))
 
 
 _INT_KEYS = ("n_d_model", "n_d_measured", "n_d_measured_err", "n_d_predicted_f8", "n_d", "n_d_predicted",
@@ -292,9 +300,20 @@ def load_plateau(data_dir):
     for case in CASES:
         d = os.path.join(data_dir, "plateau", case)
         runs_p, tr_p = os.path.join(d, "falcon_runs.csv"), os.path.join(d, "trace_n30_wall_force.csv")
-        if not (os.path.exists(runs_p) and os.path.exists(tr_p)):
+        if not (os.path.lexists(runs_p) and os.path.lexists(tr_p)):
             continue
-        out[case] = {"runs": gwdata.load_csv(runs_p), "trace": gwdata.load_csv(tr_p)}
+        c = {}
+        for key, path, cols in (("runs", runs_p, ("n", "tau_n_s", "eps_eff")), ("trace", tr_p, ())):
+            try:
+                c[key] = gwdata.load_csv(path)
+            except (OSError, ValueError) as e:
+                raise InputError(gwdata.read_error(path, e))
+            miss = [k for k in cols if not isinstance(c[key].get(k), np.ndarray)]
+            if miss:
+                raise InputError(f"{path}: missing or non-numeric column(s) {', '.join(miss)}")
+            if not c[key] or not len(next(iter(c[key].values()))):
+                raise InputError(f"{path}: no rows (a run cut short?)")
+        out[case] = c
     return out
 
 
@@ -649,17 +668,24 @@ def run_study(out_dir, granwave=None):
 
 
 def write_figures(data_dir, out_dir, quiet=False):
-    os.makedirs(out_dir, exist_ok=True)
+    """Every figure is made before out_dir is created: a refused input writes nothing."""
     figs = {"sheets_nd_tau1_tol05": lambda: fig_sheets(data_dir, 0.05, 0.05),
             "sheets_nd_tau1_tol10": lambda: fig_sheets(data_dir, 0.05, 0.10),
             "plateau": lambda: fig_plateau(data_dir)}
     sw = load_softwall(data_dir, "material", 0.05)
     if sw:
         figs["fmax_vs_n_material"] = lambda: fig_fmax_n(sw)
-    for name, make in figs.items():
-        fig = make()
+    made = {name: make() for name, make in figs.items()}
+    try:
+        os.makedirs(out_dir, exist_ok=True)
+    except OSError as e:
+        raise OutputError(f"cannot create {out_dir}: {e.strerror or e}")
+    for name, fig in made.items():
         path = os.path.join(out_dir, name + ".png")
-        fig.savefig(path, dpi=120)
+        try:
+            fig.savefig(path, dpi=120)
+        except OSError as e:
+            raise OutputError(f"cannot write {path}: {e.strerror or e}")
         if not quiet:
             print(path)
 
@@ -668,6 +694,10 @@ def main(argv):
     if len(argv) > 1 and argv[1] in ("-h", "--help"):
         print(__doc__)
         return 0
+    if len(argv) > 3:
+        print("usage: plot_sheets.py [DATA_DIR [OUT_DIR]]  (unexpected: "
+              + " ".join(argv[3:]) + ")", file=sys.stderr)
+        return 2
     data = argv[1] if len(argv) > 1 else DEFAULT_DATA
     out = argv[2] if len(argv) > 2 else os.path.join(data, "figures")
     matplotlib.use("Agg")
@@ -678,6 +708,9 @@ def main(argv):
     except InputError as e:
         print(f"plot_sheets.py: {e}", file=sys.stderr)
         return 2
+    except OutputError as e:
+        print(f"plot_sheets.py: {e}", file=sys.stderr)
+        return 1
     return 0
 
 

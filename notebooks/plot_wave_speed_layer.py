@@ -113,8 +113,9 @@ def run(args):
         speeds = [float(s) for s in a.speeds.split(",")]
     except ValueError:
         raise InputError(f"--speeds: '{a.speeds}' is not a comma-separated list of numbers")
-    if a.points < 1 or not a.spacing >= 0 or not a.t_max > 0 or any(not v > 0 for v in speeds):
-        raise InputError("--points >= 1, --spacing >= 0, --t-max > 0 and speeds > 0 are required")
+    if (a.points < 1 or not 0 <= a.spacing < math.inf or not 0 < a.t_max < math.inf
+            or any(not 0 < v < math.inf for v in speeds)):
+        raise InputError("--points >= 1, finite --spacing >= 0, --t-max > 0 and speeds > 0 are required")
     gw = gwdata.find_granwave()
     os.makedirs(a.dir, exist_ok=True)
     imp, dly = os.path.join(a.dir, "impacts.csv"), os.path.join(a.dir, "delays.csv")
@@ -190,10 +191,12 @@ def load(d):
         except FileNotFoundError:
             raise InputError(f"missing file {path}")
         except (ValueError, OSError) as e:
-            raise InputError(f"cannot read {path}: {e}")
+            raise InputError(gwdata.read_error(path, e))
         miss = [c for c in cols if c not in t]
         if miss:
             raise InputError(f"{path}: missing column(s) {', '.join(miss)}")
+        if len(t[cols[0]]) == 0:
+            raise InputError(f"{path}: no rows (run: plot_wave_speed_layer.py run {d})")
         out.append(t)
     return out
 
@@ -407,9 +410,14 @@ def plot(args):
     d = args[0]
     imp, dly = load(d)
     fit = analyse(imp, dly)
-    with open(os.path.join(d, "fit.json"), "w") as fp:
-        json.dump(fit, fp, indent=1)
-    figures(d, fit)
+    try:
+        figures(d, fit)
+        with open(os.path.join(d, "fit.json"), "w") as fp:
+            json.dump(fit, fp, indent=1)
+    except OSError as e:
+        sys.stderr.write(f"plot_wave_speed_layer.py: cannot write under {d}: {e.strerror or e}"
+                         + (f" ({e.filename})" if e.filename else "") + "\n")
+        return 1
     for tag, f in fit["tags"].items():
         p = f.get("power_law_xcorr", {})
         cr = f.get("crossover", {})

@@ -25,14 +25,8 @@ GW=$B/granwave
 PY=/usr/bin/python3
 W=$B/bench-layer
 NPT=${NPT:-4}
-SCRIPT=bench_layer.sh
-posint() { # NAME VALUE: refuse anything but a positive integer, before any work
-    case "$2" in '' | *[!0-9]* | 0*)
-        echo "$SCRIPT: $1 must be a positive integer, got '$2'" >&2
-        exit 2
-        ;;
-    esac
-}
+# shellcheck source=bench/bench_lib.sh
+. bench/bench_lib.sh # (the working directory is the checkout)
 posint NPT "$NPT"
 mkdir -p "$W"
 cmake --build "$B" --target granwave >/dev/null

@@ -40,14 +40,8 @@ GW_FLAGS=${GW_FLAGS:-}
 LMP=${LMP:-$(command -v lmp || true)}
 DEM_STEPS=${DEM_STEPS:-1000}
 DEM_REPS=${DEM_REPS:-9}
-SCRIPT=bench_layer_peer.sh
-posint() { # NAME VALUE: refuse anything but a positive integer, before any work
-    case "$2" in '' | *[!0-9]* | 0*)
-        echo "$SCRIPT: $1 must be a positive integer, got '$2'" >&2
-        exit 2
-        ;;
-    esac
-}
+# shellcheck source=bench/bench_lib.sh
+. bench/bench_lib.sh # (the working directory is the checkout)
 posint REPS "$REPS"
 posint DEM_STEPS "$DEM_STEPS"
 posint DEM_REPS "$DEM_REPS"

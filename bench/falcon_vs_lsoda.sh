@@ -14,14 +14,8 @@ cd "$(dirname "$0")/.."
 B=${1:-build}
 ROUNDS=${2:-3}
 PY=/usr/bin/python3
-SCRIPT=falcon_vs_lsoda.sh
-posint() { # NAME VALUE: refuse anything but a positive integer, before any work
-    case "$2" in '' | *[!0-9]* | 0*)
-        echo "$SCRIPT: $1 must be a positive integer, got '$2'" >&2
-        exit 2
-        ;;
-    esac
-}
+# shellcheck source=bench/bench_lib.sh
+. bench/bench_lib.sh # (the working directory is the checkout)
 posint ROUNDS "$ROUNDS"
 cmake --build "$B" --target granwave >/dev/null
 OUT=$(mktemp -d)

@@ -19,14 +19,8 @@ ACC=${ACC:-1e-6}
 REPS=${REPS:-3}
 DT_OUT=${DT_OUT:-1e-4}
 PY=/usr/bin/python3
-SCRIPT=run_peers.sh
-posint() { # NAME VALUE: refuse anything but a positive integer, before any work
-    case "$2" in '' | *[!0-9]* | 0*)
-        echo "$SCRIPT: $1 must be a positive integer, got '$2'" >&2
-        exit 2
-        ;;
-    esac
-}
+# shellcheck source=bench/bench_lib.sh
+. bench/bench_lib.sh # (the working directory is the checkout)
 posint REPS "$REPS"
 cmake --build "$B" --target bench_tts >/dev/null
 OUT=$(mktemp -d)

@@ -10,6 +10,17 @@
 #include <stdio.h>
 #include <string.h>
 
+#include <cjson/cJSON.h>
+#include <fftw3.h>
+#include <gsl/gsl_version.h>
+#include <sundials/sundials_version.h>
+
+#include "gw_common.h"
+#include "gw_version.h"
+#if GW_HAVE_HDF5
+#include <hdf5.h>
+#endif
+
 #include "gw_chain.h"
 #include "chain_commands.h"
 #include "sweep_cmd.h"
@@ -57,7 +68,8 @@ static void usage(FILE *fp)
             gw_version());
     for (size_t i = 0; i < sizeof commands / sizeof commands[0]; i++)
         fprintf(fp, "  %-14s %s\n", commands[i].name, commands[i].summary);
-    fprintf(fp, "  %-14s %s\n", "version", "print the version");
+    fprintf(fp, "  %-14s %s\n", "version", "print the version (--json: also the libraries', as loaded)");
+    fprintf(fp, "  %-14s %s\n", "help", "this list; help COMMAND: that command's options");
 }
 
 /* One check for every command and for --help and --version: output that did
@@ -73,6 +85,88 @@ static int stdout_checked(const char *cmd, int code)
             code = 1;
     }
     return code;
+}
+
+static const command *find_command(const char *name)
+{
+    for (size_t i = 0; i < sizeof commands / sizeof commands[0]; i++)
+        if (strcmp(commands[i].name, name) == 0)
+            return &commands[i];
+    return NULL;
+}
+
+/* a refusal of the top level's own arguments: one line, exit 2 */
+static int refuse(const char *what, const char *fmt, const char *arg)
+{
+    gw_err e; /* through gw_err_set: a control character in arg is escaped, one line */
+    gw_err_set(&e, GW_EINVAL, fmt, arg);
+    fprintf(stderr, "granwave%s%s: %s\n", what ? " " : "", what ? what : "", e.msg);
+    return 2;
+}
+
+/* granwave help [COMMAND] (also --help, -h): the list, or the command's own
+ * --help; anything more is refused, never ignored */
+static int help(int argc, char **argv)
+{
+    if (argc > 3)
+        return refuse(argv[1], "unexpected argument '%s' (usage: granwave help [COMMAND])", argv[3]);
+    if (argc == 3) {
+        const command *c = find_command(argv[2]);
+        if (!c && (strcmp(argv[2], "version") == 0 || strcmp(argv[2], "help") == 0)) {
+            usage(stdout); /* their help is their line in the list */
+            return stdout_checked(NULL, 0);
+        }
+        if (!c)
+            return refuse(argv[1], "unknown command '%s' (see granwave --help)", argv[2]);
+        char *h[] = {"--help", NULL};
+        return stdout_checked(c->name, c->run(1, h));
+    }
+    usage(stdout);
+    return stdout_checked(NULL, 0);
+}
+
+/* granwave version [--json]: the JSON adds the libraries' versions as loaded
+ * at run time (the provenance a bug report or a paper's methods needs) */
+static int version(int argc, char **argv)
+{
+    int json = 0;
+    for (int i = 2; i < argc; i++) {
+        if (strcmp(argv[i], "--json") != 0)
+            return refuse(argv[1], "unexpected argument '%s' (usage: granwave version [--json])", argv[i]);
+        if (json)
+            return refuse(argv[1], "%s: given twice", argv[i]);
+        json = 1;
+    }
+    if (!json) {
+        printf("granwave %s\n", gw_version());
+        return stdout_checked(NULL, 0);
+    }
+    char sun[64] = "";
+    if (SUNDIALSGetVersion(sun, (int)sizeof sun) != 0)
+        sun[0] = '\0';
+    cJSON *o = cJSON_CreateObject();
+    int ok = o && cJSON_AddStringToObject(o, "version", gw_version()) &&
+             cJSON_AddStringToObject(o, "sundials", sun) && cJSON_AddStringToObject(o, "gsl", gsl_version) &&
+             cJSON_AddStringToObject(o, "fftw", fftw_version) && cJSON_AddStringToObject(o, "cjson", cJSON_Version());
+#if GW_HAVE_HDF5
+    unsigned maj = 0, min = 0, rel = 0;
+    char h5[48];
+    if (H5get_libversion(&maj, &min, &rel) < 0)
+        h5[0] = '\0';
+    else
+        snprintf(h5, sizeof h5, "%u.%u.%u", maj, min, rel);
+    ok = ok && cJSON_AddStringToObject(o, "hdf5", h5);
+#else
+    ok = ok && cJSON_AddNullToObject(o, "hdf5");
+#endif
+    if (!ok) {
+        cJSON_Delete(o);
+        fprintf(stderr, "granwave version: out of memory\n");
+        return 1;
+    }
+    gw_json_print(o, stdout);
+    cJSON_Delete(o);
+    return stdout_checked(NULL, 0);
 }
 
 int main(int argc, char **argv)
@@ -96,21 +190,12 @@ int main(int argc, char **argv)
         return 2;
     }
     const char *cmd = argv[1];
-    if (strcmp(cmd, "--help") == 0 || strcmp(cmd, "-h") == 0 || strcmp(cmd, "help") == 0) {
-        usage(stdout);
-        return stdout_checked(NULL, 0);
-    }
-    if (strcmp(cmd, "version") == 0 || strcmp(cmd, "--version") == 0) {
-        printf("granwave %s\n", gw_version());
-        return stdout_checked(NULL, 0);
-    }
-    for (size_t i = 0; i < sizeof commands / sizeof commands[0]; i++)
-        if (strcmp(commands[i].name, cmd) == 0) {
-            int code = commands[i].run(argc - 2, argv + 2);
-            return stdout_checked(cmd, code);
-        }
-    gw_err e; /* through gw_err_set: a control character in the name is escaped, one line */
-    gw_err_set(&e, GW_EINVAL, "unknown command '%s' (see granwave --help)", cmd);
-    fprintf(stderr, "granwave: %s\n", e.msg);
-    return 2;
+    if (strcmp(cmd, "--help") == 0 || strcmp(cmd, "-h") == 0 || strcmp(cmd, "help") == 0)
+        return help(argc, argv);
+    if (strcmp(cmd, "version") == 0 || strcmp(cmd, "--version") == 0)
+        return version(argc, argv);
+    const command *c = find_command(cmd);
+    if (c)
+        return stdout_checked(cmd, c->run(argc - 2, argv + 2));
+    return refuse(NULL, "unknown command '%s' (see granwave --help)", cmd);
 }

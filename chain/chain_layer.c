@@ -344,19 +344,7 @@ static struct {
     long built, shared; /* creates that built a law, creates answered from the memo */
     int keep;           /* idle laws kept at most */
 } memo = {NULL, 0, 0, CHAIN_LAYER_MEMO_IDLE};
-static pthread_mutex_t memo_lock = PTHREAD_MUTEX_INITIALIZER;
 static pthread_cond_t memo_built = PTHREAD_COND_INITIALIZER;
-static pthread_once_t memo_once = PTHREAD_ONCE_INIT;
-
-static void memo_fork_prepare(void)
-{
-    pthread_mutex_lock(&memo_lock);
-}
-
-static void memo_fork_parent(void)
-{
-    pthread_mutex_unlock(&memo_lock);
-}
 
 static void memo_fork_child(void)
 {
@@ -368,20 +356,10 @@ static void memo_fork_child(void)
         } else
             pp = &l->next;
     }
-    pthread_mutex_init(&memo_lock, NULL); /* made anew: the child's thread has a new id */
     pthread_cond_init(&memo_built, NULL);
 }
 
-static void memo_init(void)
-{
-    pthread_atfork(memo_fork_prepare, memo_fork_parent, memo_fork_child);
-}
-
-static void memo_lock_take(void)
-{
-    pthread_once(&memo_once, memo_init);
-    pthread_mutex_lock(&memo_lock);
-}
+static gw_forklock memo_lock = GW_FORKLOCK(memo_fork_child);
 
 /* Unlink l from the list (under the lock). */
 static void memo_unlink(gw_layer_law *l)
@@ -416,33 +394,33 @@ static void memo_trim(int keep)
 
 void chain_layer_memo_stats(long *built, long *shared, int *laws)
 {
-    memo_lock_take();
+    gw_forklock_take(&memo_lock);
     int n = 0;
     for (const gw_layer_law *l = memo.head; l; l = l->next)
         n++;
     *built = memo.built;
     *shared = memo.shared;
     *laws = n;
-    pthread_mutex_unlock(&memo_lock);
+    gw_forklock_give(&memo_lock);
 }
 
 void chain_layer_memo_clear(void)
 {
-    memo_lock_take();
+    gw_forklock_take(&memo_lock);
     memo_trim(0);
     memo.built = memo.shared = 0;
-    pthread_mutex_unlock(&memo_lock);
+    gw_forklock_give(&memo_lock);
 }
 
 int chain_layer_memo_keep(int keep)
 {
-    memo_lock_take();
+    gw_forklock_take(&memo_lock);
     int old = memo.keep;
     if (keep >= 0) {
         memo.keep = keep;
         memo_trim(keep);
     }
-    pthread_mutex_unlock(&memo_lock);
+    gw_forklock_give(&memo_lock);
     return old;
 }
 
@@ -461,26 +439,26 @@ int gw_layer_law_create(double radius, const gw_material *bead, double thickness
     layer_key k;
     const double v[LAYER_KEY] = {radius, thickness, young, poisson, bead->young, bead->poisson};
     memcpy(k.v, v, sizeof v);
-    memo_lock_take();
+    gw_forklock_take(&memo_lock);
     gw_layer_law *l;
     for (;;) {
         for (l = memo.head; l && memcmp(&l->key, &k, sizeof k) != 0; l = l->next)
             ;
         if (!l || !l->building)
             break;
-        pthread_cond_wait(&memo_built, &memo_lock); /* another thread builds it */
+        pthread_cond_wait(&memo_built, &memo_lock.mutex); /* another thread builds it */
     }
     if (l) {
         l->refs++;
         memo.shared++;
         memo_to_front(l);
-        pthread_mutex_unlock(&memo_lock);
+        gw_forklock_give(&memo_lock);
         *out = l;
         return GW_OK;
     }
     l = calloc(1, sizeof *l);
     if (!l) {
-        pthread_mutex_unlock(&memo_lock);
+        gw_forklock_give(&memo_lock);
         return gw_err_set(err, GW_ENOMEM, "layer law: out of memory");
     }
     l->key = k;
@@ -488,18 +466,18 @@ int gw_layer_law_create(double radius, const gw_material *bead, double thickness
     l->building = 1;
     l->next = memo.head;
     memo.head = l;
-    pthread_mutex_unlock(&memo_lock);
+    gw_forklock_give(&memo_lock);
 
     rc = layer_build(l, radius, bead, thickness, young, poisson, err);
 
-    memo_lock_take();
+    gw_forklock_take(&memo_lock);
     l->building = 0;
     if (rc == GW_OK)
         memo.built++;
     else
         memo_unlink(l);
     pthread_cond_broadcast(&memo_built);
-    pthread_mutex_unlock(&memo_lock);
+    gw_forklock_give(&memo_lock);
     if (rc != GW_OK) {
         free(l);
         return rc;
@@ -512,12 +490,12 @@ void gw_layer_law_free(gw_layer_law *l)
 {
     if (!l)
         return;
-    memo_lock_take();
+    gw_forklock_take(&memo_lock);
     if (l->refs > 0 && --l->refs == 0) {
         memo_to_front(l);
         memo_trim(memo.keep);
     }
-    pthread_mutex_unlock(&memo_lock);
+    gw_forklock_give(&memo_lock);
 }
 
 double gw_layer_law_force(const gw_layer_law *l, double d, double *stiffness)

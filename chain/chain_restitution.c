@@ -149,40 +149,13 @@ static struct {
     int used, next;
     long hits, misses;
 } memo;
-static pthread_mutex_t memo_lock = PTHREAD_MUTEX_INITIALIZER;
-static pthread_once_t memo_once = PTHREAD_ONCE_INIT;
-
-static void memo_fork_prepare(void)
-{
-    pthread_mutex_lock(&memo_lock);
-}
-
-static void memo_fork_parent(void)
-{
-    pthread_mutex_unlock(&memo_lock);
-}
-
-static void memo_fork_child(void) /* made anew: the child's thread has a new id */
-{
-    pthread_mutex_init(&memo_lock, NULL);
-}
-
-static void memo_init(void)
-{
-    pthread_atfork(memo_fork_prepare, memo_fork_parent, memo_fork_child);
-}
-
-static void memo_lock_take(void)
-{
-    pthread_once(&memo_once, memo_init);
-    pthread_mutex_lock(&memo_lock);
-}
+static gw_forklock memo_lock = GW_FORKLOCK(NULL);
 
 /* 1 and *constant when key is stored. The keys are compared as bytes: equal
  * doubles with other bits (-0 and 0, NaNs) are a miss, never a wrong hit. */
 static int memo_find(const calib_key *k, double *constant)
 {
-    memo_lock_take();
+    gw_forklock_take(&memo_lock);
     int found = 0;
     for (int i = 0; i < memo.used && !found; i++)
         if (memcmp(&memo.key[i], k, sizeof *k) == 0) {
@@ -193,13 +166,13 @@ static int memo_find(const calib_key *k, double *constant)
         memo.hits++;
     else
         memo.misses++;
-    pthread_mutex_unlock(&memo_lock);
+    gw_forklock_give(&memo_lock);
     return found;
 }
 
 static void memo_store(const calib_key *k, double constant)
 {
-    memo_lock_take();
+    gw_forklock_take(&memo_lock);
     int i;
     for (i = 0; i < memo.used; i++) /* another thread may have stored it meanwhile */
         if (memcmp(&memo.key[i], k, sizeof *k) == 0)
@@ -212,23 +185,23 @@ static void memo_store(const calib_key *k, double constant)
     }
     memo.key[i] = *k;
     memo.constant[i] = constant;
-    pthread_mutex_unlock(&memo_lock);
+    gw_forklock_give(&memo_lock);
 }
 
 void chain_calibrate_memo_stats(long *hits, long *misses)
 {
-    memo_lock_take();
+    gw_forklock_take(&memo_lock);
     *hits = memo.hits;
     *misses = memo.misses;
-    pthread_mutex_unlock(&memo_lock);
+    gw_forklock_give(&memo_lock);
 }
 
 void chain_calibrate_memo_clear(void)
 {
-    memo_lock_take();
+    gw_forklock_take(&memo_lock);
     memo.used = memo.next = 0;
     memo.hits = memo.misses = 0;
-    pthread_mutex_unlock(&memo_lock);
+    gw_forklock_give(&memo_lock);
 }
 
 /* A run's failure inside the calibration, named as the calibration's (the

@@ -72,53 +72,19 @@ double gw_peak_offset_log(double pm, double p0, double pp)
 }
 
 /* GSL's error handler is process-wide: sections that turn it off hold one
- * recursive lock (gw_global.h). */
-static pthread_mutex_t gsl_handler_lock;
-static pthread_once_t gsl_handler_once = PTHREAD_ONCE_INIT;
-
-static void gsl_fork_prepare(void)
-{
-    pthread_mutex_lock(&gsl_handler_lock);
-}
-
-static void gsl_fork_parent(void)
-{
-    pthread_mutex_unlock(&gsl_handler_lock);
-}
-
-static void gsl_lock_make(void)
-{
-    pthread_mutexattr_t a;
-    pthread_mutexattr_init(&a);
-    pthread_mutexattr_settype(&a, PTHREAD_MUTEX_RECURSIVE);
-    pthread_mutex_init(&gsl_handler_lock, &a);
-    pthread_mutexattr_destroy(&a);
-}
-
-/* the child's thread has a new id: a recursive lock taken before the fork
- * cannot be unlocked by it, it is made anew */
-static void gsl_fork_child(void)
-{
-    gsl_lock_make();
-}
-
-static void gsl_handler_lock_init(void)
-{
-    gsl_lock_make();
-    /* a fork waits for the section under way: a child forked during another
-     * thread's restitution calibration waited for ever on this lock */
-    pthread_atfork(gsl_fork_prepare, gsl_fork_parent, gsl_fork_child);
-}
+ * recursive lock (gw_global.h); a fork waits for the section under way (a
+ * child forked during another thread's restitution calibration waited for
+ * ever on this lock). */
+static gw_forklock gsl_handler_lock = GW_FORKLOCK_RECURSIVE;
 
 gsl_error_handler_t *gw_gsl_quiet_begin(void)
 {
-    pthread_once(&gsl_handler_once, gsl_handler_lock_init);
-    pthread_mutex_lock(&gsl_handler_lock);
+    gw_forklock_take(&gsl_handler_lock);
     return gsl_set_error_handler_off();
 }
 
 void gw_gsl_quiet_end(gsl_error_handler_t *old)
 {
     gsl_set_error_handler(old);
-    pthread_mutex_unlock(&gsl_handler_lock);
+    gw_forklock_give(&gsl_handler_lock);
 }

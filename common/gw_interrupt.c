@@ -15,22 +15,11 @@
 #include <string.h>
 
 #include "gw_common.h"
+#include "gw_global.h"
 
 static atomic_int requested;
-static pthread_mutex_t lock = PTHREAD_MUTEX_INITIALIZER;
 static int depth;
 static struct sigaction saved;
-static pthread_once_t fork_once = PTHREAD_ONCE_INIT;
-
-static void fork_prepare(void)
-{
-    pthread_mutex_lock(&lock);
-}
-
-static void fork_parent(void)
-{
-    pthread_mutex_unlock(&lock);
-}
 
 static void fork_child(void)
 {
@@ -38,13 +27,9 @@ static void fork_child(void)
         sigaction(SIGINT, &saved, NULL);
     depth = 0;
     atomic_store(&requested, 0);
-    pthread_mutex_init(&lock, NULL); /* made anew: the child's thread has a new id */
 }
 
-static void fork_init(void)
-{
-    pthread_atfork(fork_prepare, fork_parent, fork_child);
-}
+static gw_forklock lock = GW_FORKLOCK(fork_child);
 
 static void on_sigint(int sig)
 {
@@ -60,8 +45,7 @@ int gw_interrupt_pending(void)
 int gw_interrupt_begin(void)
 {
     int rc = GW_OK;
-    pthread_once(&fork_once, fork_init);
-    pthread_mutex_lock(&lock);
+    gw_forklock_take(&lock);
     if (depth == 0) {
         struct sigaction sa;
         memset(&sa, 0, sizeof sa);
@@ -74,18 +58,18 @@ int gw_interrupt_begin(void)
     }
     if (rc == GW_OK)
         depth++;
-    pthread_mutex_unlock(&lock);
+    gw_forklock_give(&lock);
     return rc;
 }
 
 int gw_interrupt_end(void)
 {
-    pthread_mutex_lock(&lock);
+    gw_forklock_take(&lock);
     int was = gw_interrupt_pending();
     if (depth > 0 && --depth == 0) {
         sigaction(SIGINT, &saved, NULL);
         atomic_store(&requested, 0);
     }
-    pthread_mutex_unlock(&lock);
+    gw_forklock_give(&lock);
     return was;
 }

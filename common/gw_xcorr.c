@@ -44,41 +44,19 @@
 
 #define GW_XCORR_MAX_N (1 << 26)
 
-static pthread_mutex_t planner_lock = PTHREAD_MUTEX_INITIALIZER;
-static pthread_once_t planner_fork_once = PTHREAD_ONCE_INIT;
-
 /* fork() while another thread plans: the child got the lock held by a thread it
  * does not have, and its first FFT waited for ever (Python's multiprocessing,
  * fork start method). The fork waits for the planner instead (gw_global.h). */
-static void planner_fork_prepare(void)
-{
-    pthread_mutex_lock(&planner_lock);
-}
-
-static void planner_fork_parent(void)
-{
-    pthread_mutex_unlock(&planner_lock);
-}
-
-static void planner_fork_child(void) /* made anew: the child's thread has a new id */
-{
-    pthread_mutex_init(&planner_lock, NULL);
-}
-
-static void planner_fork_init(void)
-{
-    pthread_atfork(planner_fork_prepare, planner_fork_parent, planner_fork_child);
-}
+static gw_forklock planner_lock = GW_FORKLOCK(NULL);
 
 void gw_fftw_planner_lock(void)
 {
-    pthread_once(&planner_fork_once, planner_fork_init);
-    pthread_mutex_lock(&planner_lock);
+    gw_forklock_take(&planner_lock);
 }
 
 void gw_fftw_planner_unlock(void)
 {
-    pthread_mutex_unlock(&planner_lock);
+    gw_forklock_give(&planner_lock);
 }
 
 struct gw_xcorr {
@@ -123,10 +101,10 @@ int gw_xcorr_create(int n, int measure, gw_xcorr **out, gw_err *err)
     if (x->in && x->out && x->fa && x->xs) {
         /* plans first: FFTW_MEASURE overwrites the arrays */
         unsigned flags = measure ? FFTW_MEASURE : FFTW_ESTIMATE;
-        pthread_mutex_lock(&planner_lock);
+        gw_fftw_planner_lock();
         x->r2c = fftw_plan_dft_r2c_1d(x->M, x->in, x->fa, flags);
         x->c2r = fftw_plan_dft_c2r_1d(x->M, x->fa, x->out, flags);
-        pthread_mutex_unlock(&planner_lock);
+        gw_fftw_planner_unlock();
     }
     if (!x->r2c || !x->c2r) {
         gw_xcorr_free(x);
@@ -140,12 +118,12 @@ void gw_xcorr_free(gw_xcorr *x)
 {
     if (!x)
         return;
-    pthread_mutex_lock(&planner_lock);
+    gw_fftw_planner_lock();
     if (x->r2c)
         fftw_destroy_plan(x->r2c);
     if (x->c2r)
         fftw_destroy_plan(x->c2r);
-    pthread_mutex_unlock(&planner_lock);
+    gw_fftw_planner_unlock();
     fftw_free(x->in);
     fftw_free(x->out);
     fftw_free(x->fa);

@@ -13,6 +13,7 @@
  * M = gw_chain_rk4_steps_per_tc(accuracy) (a measured convergence study).
  * SI units (heights in mm).
  */
+#include <limits.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -120,6 +121,7 @@ void gw_chain_falcon_setup_clear(gw_chain_falcon_setup *s)
 #define OFF(f) offsetof(gw_chain_falcon_outcome, f)
 #define CASE(nm, f, un, hl) RA(nm, f, un, "nv", "nn", hl " [velocity, N]")
 #define VEL(nm, f, un, hl) RA(nm, f, un, "nv", NULL, hl " [velocity]")
+#define BEAD(nm, f, un, hl) RA(nm, f, un, "nbeads", NULL, hl " [bead row: velocity, N, bead]")
 
 static const gw_param falcon_fields[] = {
     {.name = "nv", .type = GW_PARAM_INT, .offset = OFF(nv), .unit = "", .help = "impact velocities"},
@@ -175,6 +177,14 @@ static const gw_param falcon_fields[] = {
     VEL("period_mean", period_mean, "s", "P averaged over N >= 10"),
     {.name = "unfinished", .type = GW_PARAM_INT, .offset = OFF(unfinished), .unit = "",
      .help = "collisions not ended at t_max (their tau_N and eps are those at t_max)"},
+    RI("steps_per_tc", steps_per_tc, "RK4 steps per T_c by the accuracy target (0: the solver options as given)"),
+    RI("nbeads", nbeads, "rows of the bead table: every bead of every collision"),
+    BEAD("bead_v_imp", bead_v_imp, "m/s", "impact velocity of the bead's collision"),
+    BEAD("bead_n", bead_n, "", "column size N of the bead's collision"),
+    BEAD("bead", bead, "", "the bead, 1 (on the wall) to N"),
+    BEAD("final_v", final_v, "m/s", "velocity at the end, toward the wall > 0"),
+    BEAD("detach_t", detach_t, "s", "last opening of a contact of the bead"),
+    BEAD("v_tau_n", v_tau_n, "m/s", "velocity at tau_N"),
     GW_PARAM_END};
 
 const gw_param *gw_chain_falcon_outcome_fields(void)
@@ -187,11 +197,13 @@ void gw_chain_falcon_outcome_free(gw_chain_falcon_outcome *out)
     if (!out)
         return;
     free(out->v_imp); /* one block holds every array */
+    for (int i = 0; i < GW_CHAIN_FALCON_NTRACE; i++)
+        gw_chain_trace_free(&out->trace[i].tr); /* zeroed or initialised */
     memset(out, 0, sizeof *out);
 }
 
 /* Point out's arrays into one block of doubles. */
-static int alloc_outcome(gw_chain_falcon_outcome *o, int nv, int nn, gw_err *err)
+static int alloc_outcome(gw_chain_falcon_outcome *o, int nv, int n_lo, int nn, gw_err *err)
 {
     double **vel[] = {&o->v_imp, &o->h_mm, &o->t_q, &o->t_q_err, &o->tau_fit_intercept,
                       &o->tau_fit_intercept_err, &o->r2, &o->tau_fit_max_rel_resid, &o->t_q_n20,
@@ -201,11 +213,20 @@ static int alloc_outcome(gw_chain_falcon_outcome *o, int nv, int nn, gw_err *err
     double **cas[] = {&o->f_max, &o->tau_max, &o->tau_n, &o->period, &o->eps_eff, &o->eps_col,
                       &o->e_rel_over_e_k, &o->n_s, &o->energy_error, &o->t_max, &o->dt_out, &o->dt, &o->dt_max,
                       &o->n_maxima, &o->cluster, &o->steps, &o->rhs_evals};
+    double **bead[] = {&o->bead_v_imp, &o->bead_n, &o->bead, &o->final_v, &o->detach_t, &o->v_tau_n};
     const size_t nvel = sizeof vel / sizeof vel[0], ncas = sizeof cas / sizeof cas[0];
+    const size_t nbead = sizeof bead / sizeof bead[0];
     o->nv = nv;
     o->nn = nn;
     o->ncase = nv * nn;
-    double *b = calloc(nvel * (size_t)nv + ncas * (size_t)o->ncase + (size_t)nn, sizeof *b);
+    /* every bead of every collision: nv (n_lo + ... + n_hi), within the work
+       bound of the study (gw_chain_study_work_check) */
+    double rows = (double)nv * nn * (n_lo + (n_lo + nn - 1)) / 2;
+    if (rows > INT_MAX / 8)
+        return gw_err_set(err, GW_EINVAL, "n: %g bead rows: too many", rows);
+    o->nbeads = (int)rows;
+    double *b = calloc(nvel * (size_t)nv + ncas * (size_t)o->ncase + (size_t)nn + nbead * (size_t)o->nbeads,
+                       sizeof *b);
     if (!b)
         return gw_err_set(err, GW_ENOMEM, "falcon: out of memory for %d collisions", o->ncase);
     for (size_t i = 0; i < nvel; i++, b += nv)
@@ -213,6 +234,61 @@ static int alloc_outcome(gw_chain_falcon_outcome *o, int nv, int nn, gw_err *err
     for (size_t i = 0; i < ncas; i++, b += o->ncase)
         *cas[i] = b;
     o->n = b;
+    b += nn;
+    for (size_t i = 0; i < nbead; i++, b += o->nbeads)
+        *bead[i] = b;
+    return GW_OK;
+}
+
+/* The traces of N = 7, 15, 30 (those <= n_hi) at the first velocity, each its
+ * own run of p, o: sampled every tau_1/50 of that velocity when the solver was
+ * picked by the accuracy target (one sample per pixel of the 1080-pixel-wide
+ * figures of the longest, N = 30, 0.8 ms trace at 0.3 m/s, 45 per force period;
+ * maxima are events), else at o's dt_out. The beads' series are kept for N = 7
+ * only (the bead table of long columns is large). */
+static int run_traces(gw_chain_falcon_outcome *out, const gw_chain_params *p0, const gw_chain_run_opts *o0,
+                      int n_hi, gw_err *err)
+{
+    static const int ns[GW_CHAIN_FALCON_NTRACE] = {7, 15, 30};
+    for (int k = 0; k < GW_CHAIN_FALCON_NTRACE; k++) {
+        if (ns[k] > n_hi)
+            continue;
+        gw_chain_falcon_trace *t = &out->trace[out->ntrace];
+        gw_chain_params p = *p0;
+        p.n = ns[k];
+        p.v_imp = out->v_imp[0];
+        gw_chain *c = NULL;
+        int rc = gw_chain_create(&p, &c, err);
+        if (rc != GW_OK)
+            return rc;
+        gw_chain_trace_init(&t->tr, p.n);
+        gw_chain_run_opts o = *o0;
+        if (out->accuracy > 0)
+            o.dt_out = gw_chain_tau1(p.mass, p.kwall, p.v_imp) / 50;
+        o.sample = gw_chain_trace_sample;
+        o.sample_ctx = &t->tr;
+        gw_chain_result r;
+        rc = gw_chain_collide(c, &o, &r, err);
+        t->n = p.n;
+        t->v_imp = p.v_imp;
+        t->t_max = r.run_t_max;
+        t->dt_out = r.run_dt_out;
+        t->dt = r.run_dt;
+        t->dt_max = r.run_dt_max;
+        gw_chain_result_free(&r);
+        gw_chain_free(c);
+        if (rc != GW_OK) {
+            gw_chain_trace_free(&t->tr);
+            return rc;
+        }
+        if (p.n != 7) { /* wall force only */
+            free(t->tr.x);
+            free(t->tr.v);
+            t->tr.x = t->tr.v = NULL;
+            t->tr.n = 0;
+        }
+        out->ntrace++;
+    }
     return GW_OK;
 }
 
@@ -316,7 +392,7 @@ int gw_chain_falcon_run(const gw_chain_falcon_setup *s, gw_progress_fn progress,
     int nv = s->vimp.n + s->heights.n, nn = (int)(s->n[1] - s->n[0] + 1);
     if ((rc = gw_chain_falcon_sizes_check(s->n[0], s->n[1], err)) != GW_OK)
         return rc;
-    if ((rc = alloc_outcome(out, nv, nn, err)) != GW_OK)
+    if ((rc = alloc_outcome(out, nv, (int)s->n[0], nn, err)) != GW_OK)
         return rc;
     /* the speeds and heights to velocities (none: refused there) */
     if ((rc = gw_chain_falcon_speeds(s->vimp.v, s->vimp.n, s->heights.v, s->heights.n, s->col.gravity, out->v_imp,
@@ -344,6 +420,7 @@ int gw_chain_falcon_run(const gw_chain_falcon_setup *s, gw_progress_fn progress,
     out->wall_time_s = (gw_clock_ms() - t0) / 1e3;
     for (int i = 0; rc == GW_OK && i < out->ncase; i++)
         out->unfinished += !res[i].converged;
+    int row = 0;
     for (int iv = 0; rc == GW_OK && iv < nv; iv++) {
         gw_chain_falcon_fit a;
         const gw_chain_result *rv = &res[iv * nn];
@@ -367,6 +444,14 @@ int gw_chain_falcon_run(const gw_chain_falcon_setup *s, gw_progress_fn progress,
             out->cluster[c] = rv[k].cluster;
             out->steps[c] = (double)rv[k].stats.steps;
             out->rhs_evals[c] = (double)rv[k].stats.rhs_evals;
+            for (int i = 0, n = (int)s->n[0] + k; i < n; i++, row++) {
+                out->bead_v_imp[row] = out->v_imp[iv];
+                out->bead_n[row] = n;
+                out->bead[row] = i + 1;
+                out->final_v[row] = rv[k].final_v[i];
+                out->detach_t[row] = rv[k].detach_t[i];
+                out->v_tau_n[row] = rv[k].v_tau_n[i];
+            }
         }
         out->t_q[iv] = a.fit.c1;
         out->t_q_err[iv] = a.fit.c1_err;
@@ -393,7 +478,10 @@ int gw_chain_falcon_run(const gw_chain_falcon_setup *s, gw_progress_fn progress,
         out->rigid = r.params.kwall > out->k_c;
         out->gamma = r.params.gamma; /* as the JSON's settings.model */
         out->alpha = r.params.alpha;
+        out->steps_per_tc = out->accuracy > 0 ? (int)r.run.steps_per_tc : 0;
     }
+    if (rc == GW_OK && s->traces && (rc = run_traces(out, &r.params, &r.run, (int)s->n[1], err)) != GW_OK)
+        out->trace_failed = 1;
     for (int i = 0; res && i < out->ncase; i++)
         gw_chain_result_free(&res[i]);
     free(res);

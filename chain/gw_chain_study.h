@@ -190,11 +190,28 @@ typedef struct gw_chain_falcon_setup {
                               study, used when every solver row of col is at its
                               default (0: col's solver rows as they are) [1e-6] */
     long jobs;             /* threads [0 = one per CPU] */
+    int traces;            /* not a row (C only): 1 also runs the traces of N = 7, 15, 30
+                              (those <= n[1]) at the first velocity into the outcome's
+                              trace[] (granwave falcon --out writes them) [0] */
 } gw_chain_falcon_setup;
 
 const gw_param *gw_chain_falcon_setup_params(void);
 int gw_chain_falcon_setup_init(gw_chain_falcon_setup *s);
 void gw_chain_falcon_setup_clear(gw_chain_falcon_setup *s);
+
+/* One trace of the Falcon study: the collision of N beads at the first
+ * velocity, sampled every tau_1/50 of that velocity when the solver was picked
+ * by the accuracy target (else at col's dt-out), with what its run used. */
+typedef struct gw_chain_falcon_trace {
+    int n;                 /* column size: 7, 15 or 30 */
+    double v_imp;          /* m/s, the study's first velocity */
+    gw_chain_trace tr;     /* t and the wall force; the beads' x and v for N = 7 only
+                              (tr.n = 0 for 15 and 30: gw_chain_trace_write then
+                              writes the wall force only) */
+    double t_max, dt_out, dt, dt_max; /* s, as gw_chain_result's run_* */
+} gw_chain_falcon_trace;
+
+#define GW_CHAIN_FALCON_NTRACE 3
 
 typedef struct gw_chain_falcon_outcome {
     int nv, nn, ncase;     /* velocities, column sizes, nv * nn */
@@ -219,12 +236,24 @@ typedef struct gw_chain_falcon_outcome {
        solver steps and right-hand side evaluations of each collision */
     double *n_maxima, *cluster, *steps, *rhs_evals;
     double gamma, alpha;   /* the damping constants run (calibrated with restitution) */
+    int steps_per_tc;      /* RK4 steps per T_c by the accuracy target (0: col's solver) */
+    /* [nbeads] the beads of every collision (falcon_final_velocities.csv), velocity-major,
+       then N, then bead 1..N: nbeads = nv * (n_lo + ... + n_hi) */
+    int nbeads;
+    double *bead_v_imp, *bead_n, *bead; /* m/s; the column size; the bead, 1 = on the wall */
+    double *final_v, *detach_t, *v_tau_n; /* m/s (toward the wall > 0) at the end; s, its last
+                                             contact opening; m/s at tau_N */
+    int ntrace;            /* traces run (setup.traces): N = 7, 15, 30 up to n_hi */
+    int trace_failed;      /* 1: a trace's run failed after the study (its error returned;
+                              every number above stands, trace[0..ntrace) those done) */
+    gw_chain_falcon_trace trace[GW_CHAIN_FALCON_NTRACE];
 } gw_chain_falcon_outcome;
 
 const gw_param *gw_chain_falcon_outcome_fields(void);
 
 /* Run the study: every (v, N) collision on jobs threads, progress per
- * collision (may be NULL), then the analysis per velocity. out zeroed first;
+ * collision (may be NULL), then the analysis per velocity, then with
+ * s->traces the traces (gw_chain_falcon_trace, no progress). out zeroed first;
  * free with gw_chain_falcon_outcome_free also after a failure. GW_EINVAL
  * "NAME: reason", a collision's failure ("N = .., v_imp = ..: ..."),
  * GW_ECANCELED, GW_ENOMEM. */

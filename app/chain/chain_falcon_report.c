@@ -46,8 +46,8 @@ static const paper_ref refs[] = {
 
 static int find_h(const falcon *f, double h)
 {
-    for (int i = 0; i < f->nv; i++)
-        if (fabs(f->fv[i].h_mm - h) < 1e-9)
+    for (int i = 0; i < f->o.nv; i++)
+        if (fabs(f->o.h_mm[i] - h) < 1e-9)
             return i;
     return -1;
 }
@@ -55,28 +55,28 @@ static int find_h(const falcon *f, double h)
 /* Model value and closed form of quantity q at velocity index iv (SI). */
 static void model_value(const falcon *f, int q, int iv, double *val, double *closed)
 {
-    const falcon_vel *fv = &f->fv[iv];
+    const gw_chain_falcon_outcome *o = &f->o;
     *closed = NAN;
     *val = NAN;
     switch (q) {
-    case Q_FMAX: *val = fv->f_mean; *closed = fv->f_max_1_theory; break;
-    case Q_TAUMAX: *val = fv->tau_max_mean; *closed = fv->tau_1_theory / 2; break;
-    case Q_PERIOD: *val = fv->period_mean; break;
+    case Q_FMAX: *val = o->f_max_mean[iv]; *closed = o->f_max_1_theory[iv]; break;
+    case Q_TAUMAX: *val = o->tau_max_mean[iv]; *closed = o->tau_1_theory[iv] / 2; break;
+    case Q_PERIOD: *val = o->period_mean[iv]; break;
     case Q_TAU1:
-        if (f->n_lo <= 1) *val = res_at(f, iv, 1)->tau_n;
-        *closed = fv->tau_1_theory;
+        if (f->n_lo <= 1) *val = o->tau_n[falcon_case(f, iv, 1)];
+        *closed = o->tau_1_theory[iv];
         break;
-    case Q_TQ: *val = fv->fit.c1; *closed = fv->t_q_theory; break;
-    case Q_TQ20: *val = fv->fit20.c1; *closed = fv->t_q_theory; break;
+    case Q_TQ: *val = o->t_q[iv]; *closed = o->t_q_theory[iv]; break;
+    case Q_TQ20: *val = o->t_q_n20[iv]; *closed = o->t_q_theory[iv]; break;
     case Q_TAUN1:
-        if (f->n_lo <= 1) *val = res_at(f, iv, 1)->tau_n;
-        *closed = fv->tau_1_theory;
+        if (f->n_lo <= 1) *val = o->tau_n[falcon_case(f, iv, 1)];
+        *closed = o->tau_1_theory[iv];
         break;
     case Q_TAUN40:
-        if (f->n_lo <= 40 && f->n_hi >= 40) *val = res_at(f, iv, 40)->tau_n;
+        if (f->n_lo <= 40 && f->n_hi >= 40) *val = o->tau_n[falcon_case(f, iv, 40)];
         break;
-    case Q_SPEED: *val = fv->speed; *closed = fv->speed_theory; break;
-    case Q_SPEED20: *val = fv->speed20; *closed = fv->speed_theory; break;
+    case Q_SPEED: *val = o->wave_speed[iv]; *closed = o->wave_speed_theory[iv]; break;
+    case Q_SPEED20: *val = o->wave_speed_n20[iv]; *closed = o->wave_speed_theory[iv]; break;
     }
 }
 
@@ -136,16 +136,17 @@ static void write_velocity_table(const falcon *f, FILE *fp)
                 "| v = 4R/T_q (m/s) | v (N<=20) | v F.27 (m/s) | r^2 |\n"
                 "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n",
             f->n_lo, f->n_hi);
-    for (int iv = 0; iv < f->nv; iv++) {
-        const falcon_vel *fv = &f->fv[iv];
+    const gw_chain_falcon_outcome *o = &f->o;
+    for (int iv = 0; iv < o->nv; iv++) {
         char h[16];
-        fmt(h, sizeof h, fv->h_mm, "%.1f");
+        fmt(h, sizeof h, o->h_mm[iv], "%.1f");
         fprintf(fp, "| %s | %.4f | %.2f [%.2f, %.2f] | %.2f | %.2f | %.2f | %.3f +- %.3f | %.3f | %.3f | %.2f +- %.2f "
                     "| %.2f | %.1f | %.1f | %.1f | %.6f |\n",
-                h, fv->v, fv->f_mean, fv->f_min, fv->f_max, fv->f_max_1_theory, fv->tau_max_mean * 1e6,
-                fv->period_mean * 1e6, fv->fit.c1 * 1e6, fv->fit.c1_err * 1e6, fv->fit20.c1 * 1e6,
-                fv->t_q_theory * 1e6, fv->fit.c0 * 1e6, fv->fit.c0_err * 1e6, fv->tau_1_theory * 1e6,
-                fv->speed, fv->speed20, fv->speed_theory, fv->fit.r2);
+                h, o->v_imp[iv], o->f_max_mean[iv], o->f_max_min[iv], o->f_max_max[iv], o->f_max_1_theory[iv],
+                o->tau_max_mean[iv] * 1e6, o->period_mean[iv] * 1e6, o->t_q[iv] * 1e6, o->t_q_err[iv] * 1e6,
+                o->t_q_n20[iv] * 1e6, o->t_q_theory[iv] * 1e6, o->tau_fit_intercept[iv] * 1e6,
+                o->tau_fit_intercept_err[iv] * 1e6, o->tau_1_theory[iv] * 1e6, o->wave_speed[iv],
+                o->wave_speed_n20[iv], o->wave_speed_theory[iv], o->r2[iv]);
     }
     fprintf(fp, "\n");
 }
@@ -159,20 +160,22 @@ static void write_detachment(const falcon *f, FILE *fp)
                 "growing with N.\n\n"
                 "| N | tau_N (us) | N_s | cluster | v_top/v_imp | v_bead1/v_imp | eps_eff | eps_col | E_rel/E_K | energy error |\n"
                 "|---|---|---|---|---|---|---|---|---|---|\n",
-            f->v[0]);
+            f->o.v_imp[0]);
+    const gw_chain_falcon_outcome *o = &f->o;
+    const double v0 = o->v_imp[0];
     const int show[] = {1, 2, 3, 5, 7, 10, 15, 20, 30, 40};
     for (size_t k = 0; k < sizeof show / sizeof show[0]; k++) {
         int n = show[k];
         if (n < f->n_lo || n > f->n_hi)
             continue;
-        const gw_chain_result *r = res_at(f, 0, n);
+        int c = falcon_case(f, 0, n), b1 = falcon_bead_row(f, 0, n);
         fprintf(fp, "| %d | %.3f | %d | %d | %.4f | %.4f | %.6f | %.9f | %.4f | %.1e |\n", n,
-                r->tau_n * 1e6, r->n_s, r->cluster, r->final_v[n - 1] / f->v[0],
-                r->final_v[0] / f->v[0], r->eps_eff, r->eps_col, r->e_rel_over_e_k, r->energy_error);
+                o->tau_n[c] * 1e6, (int)o->n_s[c], (int)o->cluster[c], o->final_v[b1 + n - 1] / v0,
+                o->final_v[b1] / v0, o->eps_eff[c], o->eps_col[c], o->e_rel_over_e_k[c], o->energy_error[c]);
     }
     int up = 0, steps = 0;
     for (int n = f->n_lo + 1; n <= f->n_hi; n++, steps++)
-        up += res_at(f, 0, n)->e_rel_over_e_k > res_at(f, 0, n - 1)->e_rel_over_e_k;
+        up += o->e_rel_over_e_k[falcon_case(f, 0, n)] > o->e_rel_over_e_k[falcon_case(f, 0, n - 1)];
     fprintf(fp, "\nE_rel/E_K increases from N to N+1 in %d of %d steps.\n\n", up, steps);
 }
 
@@ -192,15 +195,15 @@ int falcon_write_report(const falcon *f, const char *path, gw_err *err)
             p->mass, f->c.material, p->radius, p->k, p->kwall, f->c.wall_material, kc,
             p->kwall > kc ? "rigid (K > K_c)" : "soft (K <= K_c)", p->gravity > 0 ? " (off: gravity on)" : "",
             p->damping != GW_DAMP_NONE ? " (off: damping on)" : "");
-    if (f->accuracy > 0)
+    if (f->o.accuracy > 0)
         fprintf(fp, "Solver: rk4, events as roots, dt = T_c/%g (T_c = (m/k)^(2/5) v_imp^(-1/5)),\n"
                     "chosen for F_max and tau_N within %.1e relative (measured convergence study).\n",
-                f->c.run.steps_per_tc, f->accuracy);
+                (double)f->o.steps_per_tc, f->o.accuracy);
     else
         fprintf(fp, "Solver: %s (%s), rtol %.1e, atol %.1e.\n", f->c.solver, f->c.method,
                 f->c.run.sp.rtol, f->c.run.sp.atol);
     fprintf(fp, "%d collisions (N = %d..%d at %d velocities) in %.2f s of wall time.\n\n",
-            falcon_ncase(f), f->n_lo, f->n_hi, f->nv, f->wall_s);
+            f->o.ncase, f->n_lo, f->n_hi, f->o.nv, f->o.wall_time_s);
     fprintf(fp, "The paper's simulations use m = 2.05e-3 kg; the material mass 4/3 pi R^3 rho is\n"
                 "2.104e-3 kg (used here unless --mass is given). Drop heights map to v_imp = sqrt(2 g h)\n"
                 "with g = 9.81 m/s^2 (1.9 mm gives 0.193 m/s where the paper's Table 1 lists 0.191).\n\n");

@@ -359,9 +359,12 @@ falcon.__doc__ = _study("falcon").doc(
     "The rigid-wall study of Falcon et al. (1998), as `granwave falcon`: one collision\n"
     "for every N in n = (A, B) at each impact velocity (vimp, and heights in mm), the\n"
     "line tau_N = T_q (N - 1) + tau_1, the wave speed 4R/T_q against (F.27), F_max(N).\n"
-    "Per-case results are arrays [velocity, N]. progress: optional f(done, total) per\n"
-    "collision, called from the worker threads one call at a time; return True (or\n"
-    "raise) to stop. heights=[] (or 'none') for none.")
+    "Per-case results are arrays [velocity, N]; the bead table (bead_v_imp, bead_n,\n"
+    "bead, final_v, detach_t, v_tau_n: nbeads rows, velocity, N, bead 1..N) holds the\n"
+    "rows of the program's falcon_final_velocities.csv (the program runs the same\n"
+    "library call). progress: optional f(done, total) per collision, called from\n"
+    "the worker threads one call at a time; return True (or raise) to stop.\n"
+    "heights=[] (or 'none') for none.")
 wavespeed.__doc__ = _study("wavespeed").doc(
     "The deformation-wave speed of the column against the impact velocity, as\n"
     "`granwave wavespeed`: (a) 4R/T_q from the slope of tau_N(N), (b) the front's time\n"

@@ -23,9 +23,12 @@
  * level cut by the end of the record biases the delay of E_k itself, test_xcorr).
  * A ring counts when E_k has a first arrival peak by the rule above. For
  * neighbours k, k + 1 >= 1 that both count, the delay tau_k is the lag of the
- * largest correlation sum_i f_k[i] f_(k+1)[i + L] over 0 <= L <= (n - 2)/2,
- * refined by the band-limited interpolant (GW_XCORR_FOURIER); a largest value at
- * either end of that window is no delay. With m >= 2 delays tau_k over the ring
+ * largest correlation sum_i f_k[i] f_(k+1)[i + L] over -1 <= L <= (n - 2)/2,
+ * refined by the band-limited interpolant (GW_XCORR_FOURIER), so a delay below
+ * half a sample (largest integer value at L = 0) is measured, not left out; when
+ * the largest value is at L = -1, the one over 0 <= L <= (n - 2)/2 (a largest
+ * value at L = 0 there is no outward delay); a largest value at the far end of
+ * the window is no delay. With m >= 2 delays tau_k over the ring
  * spacings dr_k (slowness p_k = tau_k / dr_k):
  *     c = sum dr_k / sum tau_k = 1 / p,   p = mean of p_k (equal spacings),
  *     c_err = c * s_p / (sqrt(m) p),      s_p the standard deviation of the p_k.
@@ -141,6 +144,25 @@ static void pair_speed(gw_layer_impact_result *r, double *slow)
     r->wave_speed_xcorr_err = r->wave_speed_xcorr * sqrt(var / m) / pm;
 }
 
+/* Delay of f_(k+1) (b) behind f_k (a), m samples each, into *pk; 1 when there is
+ * one. The largest correlation over the lags -1 .. (m - 1)/2: lag 0 is inside the
+ * window, so a pair less than half a sample apart (two rings reached at once) is
+ * refined like any other. It was the window's edge (0 .. (m - 1)/2), and such pairs
+ * were left out: rings reached at once gave 540 m/s for 600. When the largest value
+ * is at -1 (the pair matches best with ring k + 1 ahead), the outward lags
+ * 0 .. (m - 1)/2 alone are searched, as before: a largest value at 0 there means
+ * the correlation still rises toward ring k + 1 ahead, no outward delay. */
+static int pair_delay(gw_xcorr *xc, const double *a, const double *b, int m, gw_xcorr_peak *pk)
+{
+    const int hi = (m - 1) / 2;
+    if (gw_xcorr_peak_find(xc, a, b, m, -1, hi, GW_XCORR_FOURIER, pk, NULL) != GW_OK)
+        return 0;
+    if (pk->status == GW_XCORR_PEAK_EDGE && pk->lag_int == -1 &&
+        gw_xcorr_peak_find(xc, a, b, m, 0, hi, GW_XCORR_FOURIER, pk, NULL) != GW_OK)
+        return 0;
+    return pk->status == GW_XCORR_PEAK_OK;
+}
+
 static int crowns_xcorr(gw_layer_impact_result *r, double thr)
 {
     const int nr = r->nrings, n = even_samples(r);
@@ -173,9 +195,7 @@ static int crowns_xcorr(gw_layer_impact_result *r, double thr)
         for (int i = 0; i + 1 < n; i++)
             fcur[i] = e[i + 1] - e[i];
         gw_xcorr_peak pk_q;
-        if (q >= 2 && used[q - 1] && used[q] &&
-            gw_xcorr_peak_find(xc, fprev, fcur, n - 1, 0, (n - 2) / 2, GW_XCORR_FOURIER, &pk_q, NULL) == GW_OK &&
-            pk_q.status == GW_XCORR_PEAK_OK) {
+        if (q >= 2 && used[q - 1] && used[q] && pair_delay(xc, fprev, fcur, n - 1, &pk_q)) {
             r->xcorr_delay[q - 1] = pk_q.lag * dt;
             r->xcorr_rho[q - 1] = pk_q.rho;
         }

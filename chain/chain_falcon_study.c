@@ -175,6 +175,7 @@ static const gw_param falcon_fields[] = {
     VEL("period_mean", period_mean, "s", "P averaged over N >= 10"),
     {.name = "unfinished", .type = GW_PARAM_INT, .offset = OFF(unfinished), .unit = "",
      .help = "collisions not ended at t_max (their tau_N and eps are those at t_max)"},
+    GW_PARAM_WARNINGS(OFF(warnings)),
     GW_PARAM_END};
 
 const gw_param *gw_chain_falcon_outcome_fields(void)
@@ -187,6 +188,7 @@ void gw_chain_falcon_outcome_free(gw_chain_falcon_outcome *out)
     if (!out)
         return;
     free(out->v_imp); /* one block holds every array */
+    free(out->warnings);
     memset(out, 0, sizeof *out);
 }
 
@@ -393,6 +395,8 @@ int gw_chain_falcon_run(const gw_chain_falcon_setup *s, gw_progress_fn progress,
         out->rigid = r.params.kwall > out->k_c;
         out->gamma = r.params.gamma; /* as the JSON's settings.model */
         out->alpha = r.params.alpha;
+        if ((rc = gw_chain_unfinished_warnings(out->unfinished, out->ncase, &out->warnings)) != GW_OK)
+            rc = gw_err_set(err, rc, "falcon: out of memory");
     }
     for (int i = 0; res && i < out->ncase; i++)
         gw_chain_result_free(&res[i]);

@@ -323,10 +323,10 @@ char *chain_cli_header(const chain_cli *c, const char *cmd, int argc, char **arg
 
 void chain_cli_warn_unfinished(const char *cmd, int unfinished, int total)
 {
-    if (unfinished > 0)
-        fprintf(stderr, "granwave %s: warning: %d of %d collisions had not ended at t_max (a contact still closed or "
-                "closing): their tau_N, restitution and what is fitted over them are those at t_max; raise --t-max\n",
-                cmd, unfinished, total);
+    char *w = NULL; /* the library's text (out of memory for it: no line) */
+    (void)gw_chain_unfinished_warnings(unfinished, total, &w);
+    gw_cli_warnings(cmd, w);
+    free(w);
 }
 
 int chain_cli_fail(const char *msg)

@@ -152,7 +152,8 @@ int gw_param_copy(const gw_param *t, size_t size, void *dst, const void *src, gw
  * table has it; bindings issue each text as a warning. */
 #define GW_PARAM_WARNINGS(off)                                                                     \
     {.name = "warnings", .type = GW_PARAM_TEXT, .offset = (off), .unit = "",                       \
-     .help = "why results are not final, one text per line as the program's warnings (None: none)"}
+     .help = "why results are not final: the texts the program prints as warnings, one per line " \
+             "(NULL when none; Python: a list of str, empty when none)"}
 
 GW_END_DECLS
 

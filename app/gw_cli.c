@@ -193,6 +193,16 @@ int gw_cli_study_error(const gw_param *t, const char *cmd, int rc, gw_err *err)
     return gw_err_set(err, rc, named ? "%s --%s" : "%s: %s", cmd, tmp);
 }
 
+void gw_cli_warnings(const char *cmd, const char *list)
+{
+    for (const char *p = list; p && *p;) {
+        const char *nl = strchr(p, '\n');
+        const int len = nl ? (int)(nl - p) : (int)strlen(p);
+        fprintf(stderr, "granwave %s: warning: %.*s\n", cmd, len, p);
+        p += len + (nl != NULL);
+    }
+}
+
 int gw_cli_study_setup(const gw_param *t, void *setup, const gw_opt *opts, int argc, char **argv,
                           const char *cmd, gw_err *err)
 {

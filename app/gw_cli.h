@@ -113,6 +113,9 @@ int gw_cli_study_setup(const struct gw_param *t, void *setup, const gw_opt *opts
                        const char *cmd, gw_err *err);
 /* A library message "NAME: reason" as "CMD --NAME: reason" when NAME is a row of t. */
 int gw_cli_study_error(const struct gw_param *t, const char *cmd, int rc, gw_err *err);
+/* A result's warnings (gw_common.h, "warnings of a result"; may be NULL), the
+ * library's texts: each on stderr as "granwave CMD: warning: TEXT". */
+void gw_cli_warnings(const char *cmd, const char *list);
 
 
 /* --out made only as far as needed and taken back on a refusal:

@@ -70,6 +70,7 @@ static const gw_param collision_fields[] = {
     RA("f_wall", f_wall, "N", "trace_len", NULL, "wall force"),
     RA("x", x, "m", "trace_len", "n", "bead displacements toward the wall, bead 1 first"),
     RA("v", v, "m/s", "trace_len", "n", "bead velocities toward the wall, bead 1 first"),
+    GW_PARAM_WARNINGS(OFF(warnings)),
     GW_PARAM_END};
 
 const gw_param *gw_chain_collision_fields(void)
@@ -86,6 +87,8 @@ void gw_chain_collision_free(gw_chain_collision *out)
     free(out->f_wall);
     free(out->x);
     free(out->v);
+    free(out->warnings);
+    out->warnings = NULL;
     out->t = out->f_wall = out->x = out->v = NULL;
     out->trace_len = 0;
 }
@@ -143,6 +146,8 @@ int gw_chain_collision_run(const gw_chain_setup *s, gw_chain_collision *out, gw_
             rc = gw_err_set(err, GW_ENOMEM, "trace: more than 2^31 samples (raise dt-out)");
         }
     }
+    if (rc == GW_OK && (rc = gw_chain_result_warnings(&out->r, &out->warnings)) != GW_OK)
+        rc = gw_err_set(err, rc, "chain: out of memory");
     gw_chain_free(c);
     gw_chain_resolved_free(&res);
     return rc;

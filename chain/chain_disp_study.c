@@ -105,6 +105,7 @@ static const gw_param disp_fields[] = {
     RD("df", sp.df, "Hz", "column mode: bin spacing"),
     RD("f_min", sp.f_min, "Hz", "column mode: lowest frequency searched"),
     RI("samples", sp.samples, "column mode: uniform samples"),
+    GW_PARAM_WARNINGS(OFF(warnings)),
     GW_PARAM_END};
 
 const gw_param *gw_chain_dispersion_setup_params(void) { return disp_params; }
@@ -129,6 +130,7 @@ void gw_chain_dispersion_outcome_free(gw_chain_dispersion_outcome *out)
         return;
     gw_chain_disp_result_free(&out->r);
     gw_chain_spectrum_free(&out->sp);
+    free(out->warnings);
     memset(out, 0, sizeof *out);
 }
 
@@ -310,5 +312,7 @@ int gw_chain_dispersion_run(const gw_chain_dispersion_setup *s, gw_chain_dispers
     out->dt_out = out->r.dt_sample;
     out->rtol = sp.rtol;
     out->atol = sp.atol;
+    if (rc == GW_OK && (rc = gw_chain_dispersion_warnings(&out->r, &out->warnings)) != GW_OK)
+        rc = gw_err_set(err, rc, "dispersion: out of memory");
     return rc;
 }

@@ -152,6 +152,7 @@ static const gw_param drop_fields[] = {
     RA("x", x, "m", "trace_len", "n", "bead displacements toward the sensor (trace = 1)"),
     RA("v", v, "m/s", "trace_len", "n", "bead velocities toward the sensor (trace = 1)"),
     RF("canceled", canceled, "1: stopped by the progress callback at t_end"),
+    GW_PARAM_WARNINGS(OFF(warnings)),
     GW_PARAM_END};
 #undef OFF
 #undef O
@@ -188,6 +189,7 @@ void gw_chain_drop_outcome_free(gw_chain_drop_outcome *out)
     free(out->f_wall);
     free(out->x);
     free(out->v);
+    free(out->warnings);
     memset(out, 0, sizeof *out);
 }
 
@@ -412,6 +414,8 @@ int gw_chain_drop_study_run(const gw_chain_drop_setup *s, gw_progress_fn progres
         rc = rc2;
     if (rc == GW_OK && out->canceled)
         rc = gw_err_set(err, GW_ECANCELED, "drop: stopped by the progress callback at t = %.9g s", out->r.t_end);
+    if (rc == GW_OK && (rc = gw_chain_drop_result_warnings(&out->r, &out->warnings)) != GW_OK)
+        rc = gw_err_set(err, rc, "drop: out of memory");
     gw_chain_resolved_free(&res);
     out->wall_time_ms = gw_clock_ms() - t0;
     return rc;

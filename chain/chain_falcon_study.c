@@ -185,6 +185,7 @@ static const gw_param falcon_fields[] = {
     BEAD("final_v", final_v, "m/s", "velocity at the end, toward the wall > 0"),
     BEAD("detach_t", detach_t, "s", "last opening of a contact of the bead"),
     BEAD("v_tau_n", v_tau_n, "m/s", "velocity at tau_N"),
+    GW_PARAM_WARNINGS(OFF(warnings)),
     GW_PARAM_END};
 
 const gw_param *gw_chain_falcon_outcome_fields(void)
@@ -197,6 +198,7 @@ void gw_chain_falcon_outcome_free(gw_chain_falcon_outcome *out)
     if (!out)
         return;
     free(out->v_imp); /* one block holds every array */
+    free(out->warnings);
     for (int i = 0; i < GW_CHAIN_FALCON_NTRACE; i++)
         gw_chain_trace_free(&out->trace[i].tr); /* zeroed or initialised */
     memset(out, 0, sizeof *out);
@@ -479,6 +481,8 @@ int gw_chain_falcon_run(const gw_chain_falcon_setup *s, gw_progress_fn progress,
         out->gamma = r.params.gamma; /* as the JSON's settings.model */
         out->alpha = r.params.alpha;
         out->steps_per_tc = out->accuracy > 0 ? (int)r.run.steps_per_tc : 0;
+        if ((rc = gw_chain_unfinished_warnings(out->unfinished, out->ncase, &out->warnings)) != GW_OK)
+            rc = gw_err_set(err, rc, "falcon: out of memory");
     }
     if (rc == GW_OK && s->traces && (rc = run_traces(out, &r.params, &r.run, (int)s->n[1], err)) != GW_OK)
         out->trace_failed = 1;

@@ -156,6 +156,7 @@ static const gw_param ws_fields[] = {
     RIT(W, "unfinished", unfinished, "collisions of the tau_N sweep not ended at t_max"),
     RDT(W, "gamma", gamma, "N s/m^1.5", "Kuwabara-Kono constant run (calibrated with restitution; 0: none)"),
     RDT(W, "alpha", alpha, "s/m", "Hunt-Crossley constant run (calibrated with restitution; 0: none)"),
+    GW_PARAM_WARNINGS(offsetof(W, warnings)),
     GW_PARAM_END};
 #undef W
 
@@ -197,6 +198,7 @@ static const gw_param sw_fields[] = {
     RIT(S, "unfinished", unfinished, "collisions still at the wall at t_max (their F_max, tau_max may not be final)"),
     RDT(S, "gamma", gamma, "N s/m^1.5", "Kuwabara-Kono constant run (calibrated with restitution; 0: none)"),
     RDT(S, "alpha", alpha, "s/m", "Hunt-Crossley constant run (calibrated with restitution; 0: none)"),
+    GW_PARAM_WARNINGS(offsetof(S, warnings)),
     GW_PARAM_END};
 #undef S
 
@@ -208,6 +210,7 @@ void gw_chain_wavespeed_outcome_free(gw_chain_wavespeed_outcome *out)
     if (!out)
         return;
     free(out->v_imp); /* one block */
+    free(out->warnings);
     memset(out, 0, sizeof *out);
 }
 
@@ -220,6 +223,7 @@ void gw_chain_softwall_outcome_free(gw_chain_softwall_outcome *out)
     free(out->sheet_table);
     free(out->sheet_names);
     free(out->sheet_materials);
+    free(out->warnings);
     memset(out, 0, sizeof *out);
 }
 
@@ -403,6 +407,8 @@ int gw_chain_wavespeed_run(const gw_chain_wavespeed_setup *s, gw_progress_fn pro
     out->wall_time_s = (gw_clock_ms() - t0) / 1e3;
     if (rc == GW_OK)
         ws_fits(&r.params, out);
+    if (rc == GW_OK && (rc = gw_chain_unfinished_warnings(out->unfinished, out->ncase, &out->warnings)) != GW_OK)
+        rc = gw_err_set(err, rc, "wavespeed: out of memory");
     for (int i = 0; i < nv * per_v; i++)
         gw_chain_result_free(&res[i]);
     free(res);
@@ -638,6 +644,8 @@ int gw_chain_softwall_run(const gw_chain_softwall_setup *s, gw_progress_fn progr
     out->wall_time_s = (gw_clock_ms() - t0) / 1e3;
     if (rc == GW_OK)
         sw_fill(s, &rs, res, sr, lay, out);
+    if (rc == GW_OK && (rc = gw_chain_softwall_warnings(out->unfinished, out->ncase, &out->warnings)) != GW_OK)
+        rc = gw_err_set(err, rc, "softwall: out of memory");
     for (int i = 0; res && i < nw * per; i++)
         gw_chain_result_free(&res[i]);
     free(res);

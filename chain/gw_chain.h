@@ -416,6 +416,12 @@ typedef struct gw_chain_result {
 int gw_chain_collide(const gw_chain *c, const gw_chain_run_opts *o,
                      gw_chain_result *r, gw_err *err);
 void gw_chain_result_free(gw_chain_result *r);
+/* The warning of a collision that had not ended at t_max (converged 0: which
+ * results are those at t_max, and why: wall_pending, or the column's own
+ * contacts), appended to *list (gw_warnings_add, gw_common.h); nothing when
+ * converged. The text `granwave chain` prints and Python issues. GW_OK or
+ * GW_ENOMEM. */
+int gw_chain_result_warnings(const gw_chain_result *r, char **list);
 
 /* Characteristic time (m/k)^(2/5) v^(-1/5) of the chain, s. */
 double gw_chain_time_scale(const gw_chain_params *p);
@@ -593,6 +599,11 @@ typedef struct gw_chain_disp_result {
     gw_solver_stats stats;
 } gw_chain_disp_result;
 
+/* The warning of a dispersion run whose spectrum resolved no wavenumber
+ * (n_resolved 0: the ridge error is NaN), appended to *list as
+ * gw_chain_result_warnings. */
+int gw_chain_dispersion_warnings(const gw_chain_disp_result *r, char **list);
+
 /* Integrate the chain with solver type (NULL: rk4) and settings sp, then
  * transform and extract the ridge. rk4 steps at dt_sample / steps_per_sample
  * (sp->dt ignored); sp->method GW_METHOD_DEFAULT means adams for cvode and erk
@@ -740,6 +751,10 @@ int gw_chain_drop_impact_rises(const gw_chain_drop_result *r);
 int gw_chain_drop_run(const gw_chain_drop_params *p, const gw_chain_run_opts *o,
                       gw_chain_drop_result *r, gw_err *err);
 void gw_chain_drop_result_free(gw_chain_drop_result *r);
+/* The warning of a drop cut at t_max (first_cut: inside the first collision;
+ * open_at_t_max: bead 1 still on the sensor), appended to *list as
+ * gw_chain_result_warnings; nothing otherwise. */
+int gw_chain_drop_result_warnings(const gw_chain_drop_result *r, char **list);
 
 /* ---- the chain as a sweep model (chain_sweep_model.c, see gw_sweep.h) ---- */
 

@@ -149,6 +149,7 @@ typedef struct gw_chain_collision {
     double *x, *v;                        /* [trace_len * n] m, m/s, bead 1 first */
     double gamma, alpha;                  /* the damping constants run (calibrated with
                                              restitution): N s/m^1.5, s/m */
+    char *warnings;                       /* gw_chain_result_warnings of r (owned; NULL: none) */
 } gw_chain_collision;
 
 /* The table of gw_chain_collision's results. */
@@ -247,6 +248,7 @@ typedef struct gw_chain_falcon_outcome {
     int trace_failed;      /* 1: a trace's run failed after the study (its error returned;
                               every number above stands, trace[0..ntrace) those done) */
     gw_chain_falcon_trace trace[GW_CHAIN_FALCON_NTRACE];
+    char *warnings;        /* gw_chain_unfinished_warnings (owned; NULL: none) */
 } gw_chain_falcon_outcome;
 
 const gw_param *gw_chain_falcon_outcome_fields(void);
@@ -266,6 +268,12 @@ int gw_chain_falcon_run(const gw_chain_falcon_setup *s, gw_progress_fn progress,
  * command calls it before it creates --out. */
 int gw_chain_falcon_sizes_check(long a, long b, gw_err *err);
 void gw_chain_falcon_outcome_free(gw_chain_falcon_outcome *out);
+/* The warning of a study over columns (falcon, wavespeed) with unfinished of
+ * its total collisions not ended at t_max, appended to *list
+ * (gw_warnings_add); nothing when unfinished is 0. GW_OK or GW_ENOMEM. */
+int gw_chain_unfinished_warnings(int unfinished, int total, char **list);
+/* The softwall's: unfinished of total collisions still at the wall at t_max. */
+int gw_chain_softwall_warnings(int unfinished, int total, char **list);
 
 /* ---- the studies of `granwave wavespeed`, `softwall`, `drop`, `dispersion` ----
  * Each: a setup struct with its table (rows named as the command's flags; the
@@ -305,6 +313,7 @@ typedef struct gw_chain_wavespeed_outcome {
                               speed, whose speeds, t_q, period, c2 and max_disagreement stand but whose
                               beta, beta_err, c3, fits and beta_period are NaN (no line through one point) */
     double gamma, alpha;   /* the damping constants run (calibrated with restitution) */
+    char *warnings;        /* gw_chain_unfinished_warnings (owned; NULL: none) */
 } gw_chain_wavespeed_outcome;
 
 const gw_param *gw_chain_wavespeed_setup_params(void);
@@ -356,6 +365,7 @@ typedef struct gw_chain_softwall_outcome {
     int unfinished;             /* collisions still at the wall at t_max (wall_done 0):
                                    their F_max and tau_max may not be final */
     double gamma, alpha;        /* the damping constants run (calibrated with restitution) */
+    char *warnings;             /* gw_chain_softwall_warnings (owned; NULL: none) */
 } gw_chain_softwall_outcome;
 
 const gw_param *gw_chain_softwall_setup_params(void);
@@ -402,6 +412,7 @@ typedef struct gw_chain_dispersion_outcome {
     int column_n, n_maxima;
     double inv_period;        /* column mode: 1/P, Hz (NaN: fewer than two maxima) */
     double f_peak_rel_diff;   /* column mode: f_peak P - 1 */
+    char *warnings;           /* gw_chain_dispersion_warnings (dispersion mode; owned; NULL: none) */
 } gw_chain_dispersion_outcome;
 
 const gw_param *gw_chain_dispersion_setup_params(void);
@@ -456,6 +467,7 @@ typedef struct gw_chain_drop_outcome {
     double *t, *f_wall;      /* [trace_len] s, N: the sensor signal */
     double *x, *v;           /* [trace_len x n] m, m/s (setup trace = 1), else NULL */
     int canceled;            /* 1: stopped by the progress callback at r.t_end */
+    char *warnings;          /* gw_chain_drop_result_warnings of r (owned; NULL: none) */
 } gw_chain_drop_outcome;
 
 const gw_param *gw_chain_drop_setup_params(void);

@@ -107,6 +107,37 @@ int gw_err_set(gw_err *err, int status, const char *fmt, ...)
     return status;
 }
 
+int gw_warnings_add(char **list, const char *fmt, ...)
+{
+    if (!list || !fmt)
+        return GW_EINVAL;
+    va_list ap;
+    va_start(ap, fmt);
+    int len = gw_vsnprintf(NULL, 0, fmt, ap);
+    va_end(ap);
+    if (len < 0)
+        return GW_EINVAL;
+    char *raw = malloc((size_t)len + 1);
+    const size_t room = 4 * (size_t)len + 1; /* every byte escaped as \xNN at most */
+    char *line = malloc(room);
+    const size_t have = *list ? strlen(*list) : 0;
+    if (raw && line) {
+        va_start(ap, fmt);
+        gw_vsnprintf(raw, (size_t)len + 1, fmt, ap);
+        va_end(ap);
+        gw_err_one_line(line, room, raw); /* one text, one line, as an error message */
+    }
+    char *grown = raw && line ? realloc(*list, have + strlen(line) + 2) : NULL;
+    if (grown) {
+        strcpy(grown + have, line);
+        strcat(grown + have, "\n");
+        *list = grown;
+    }
+    free(raw);
+    free(line);
+    return grown ? GW_OK : GW_ENOMEM;
+}
+
 int gw_parse_double(const char *s, const char *name, double *out, gw_err *err)
 {
     if (!out)

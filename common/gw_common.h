@@ -80,6 +80,23 @@ typedef struct gw_err {
 int gw_err_set(gw_err *err, int status, const char *fmt, ...)
     __attribute__((format(printf, 3, 4)));
 
+/* ---- warnings of a result ----
+ * A run that ends with results that are not final (a collision cut at t_max,
+ * a sample that did not settle, an undecided bounce) still returns GW_OK; the
+ * result says why in warning texts that the library builds, each in one place,
+ * for every caller: the program prints each as "granwave CMD: warning: TEXT",
+ * the Python module issues it as a GranwaveWarning "func: TEXT", a C caller
+ * reads it from the result (the studies' outcomes: a field `warnings`). A list
+ * of warnings is one malloc'd string of texts, each ending with '\n'; NULL
+ * when there are none. Its owner frees it with free(). */
+
+/* Append one text (printf-style, numbers in the "C" locale) to *list. The text
+ * is made one line as error messages are (a control character, a newline in a
+ * file name say, written \n or \xNN; invalid UTF-8 as \xNN), so that one
+ * warning stays one line. GW_OK; GW_ENOMEM (*list unchanged); GW_EINVAL for a
+ * NULL list or fmt. */
+int gw_warnings_add(char **list, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+
 /* ---- validation of numbers (name is the input's name for the message) ---- */
 
 /* Parse a whole string as a finite double; GW_EINVAL with a message otherwise. */

@@ -147,6 +147,13 @@ int gw_param_copy(const gw_param *t, size_t size, void *dst, const void *src, gw
     {.name = nm, .type = GW_PARAM_DARRAY, .offset = off, .unit = un, .rows = r, .cols = c, .choices = names, \
      .help = hl}
 #define GW_PARAM_END {0}
+/* The row of a result's warnings (gw_common.h, "warnings of a result"): a char *
+ * at offset off, its texts one per line, NULL when none. Every study's result
+ * table has it; bindings issue each text as a warning. */
+#define GW_PARAM_WARNINGS(off)                                                                     \
+    {.name = "warnings", .type = GW_PARAM_TEXT, .offset = (off), .unit = "",                       \
+     .help = "why results are not final: the texts the program prints as warnings, one per line " \
+             "(NULL when none; Python: a list of str, empty when none)"}
 
 GW_END_DECLS
 

@@ -371,6 +371,12 @@ typedef struct gw_layer_make_result {
  * out->n counts discs (res->n_bodies the clumps). */
 int gw_layer_make(const gw_layer_params *lp, const gw_layer_make_params *mp,
                   gw_layer_sample *out, gw_layer_make_result *res, gw_err *err);
+/* The warning of a pluviation that did not settle (converged 0), appended to
+ * *list (gw_warnings_add, gw_common.h): t_max (s, the run's) below t_judge, or
+ * E_k still above the threshold at t_max; out (may be NULL) the file the sample
+ * was written to, named in the text. Nothing when converged. The text
+ * `granwave layer-make` prints and Python issues. GW_OK or GW_ENOMEM. */
+int gw_layer_make_result_warnings(const gw_layer_make_result *r, double t_max, const char *out, char **list);
 
 /* Porosity of the sample in the window x in [0.1, 0.9] W, y in [0.1, 0.8] h,
  * with h = max(y + r), by sampling on a 600 x 600 grid. */
@@ -562,6 +568,9 @@ int gw_layer_impact_step_check(const gw_layer_impact_params *ip, const gw_solver
 int gw_layer_impact(const gw_layer_sample *s, const gw_layer_params *lp,
                     const gw_layer_impact_params *ip, const gw_solver_type *type,
                     const gw_solver_params *sp, gw_layer_impact_result *res, gw_err *err);
+/* The warning of an impact whose outcome is undecided (res->undecided), appended
+ * to *list as gw_layer_make_result_warnings; nothing when decided. */
+int gw_layer_impact_result_warnings(const gw_layer_impact_result *r, char **list);
 
 /* Write res's time series (ledger, block, rings, peaks) and scalar results to
  * path as HDF5 (layer_h5.c documents the layout), atomically. GW_EUNSUPPORTED

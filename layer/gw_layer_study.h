@@ -86,6 +86,8 @@ typedef struct gw_layer_impact_outcome {
     int exact;
     double dt;             /* fixed step used, s (0 for cvode/arkode) */
     char *undecided;       /* r.undecided, NULL when "" (owned) */
+    char *warnings;        /* gw_layer_impact_result_warnings of r: the undecided text
+                              as a line (owned; NULL: none) */
     int nxcorr;            /* entries of r.xcorr_delay and r.xcorr_rho listed:
                               nrings - 1 (pairs k, k + 1), 0 without the analysis */
     /* Snapshots (setup's snapshots; none by default): snapshot j is the state at
@@ -178,6 +180,7 @@ typedef struct gw_layer_make_outcome {
     double height_rm;       /* height / R_m */
     char *sample_fnv1a64;   /* with out: the FNV-1a 64 hash of the file written (16 hex
                                digits, owned; what layer-impact records), else NULL */
+    char *warnings;         /* gw_layer_make_result_warnings of r (owned; NULL: none) */
 } gw_layer_make_outcome;
 
 const gw_param *gw_layer_make_outcome_fields(void);

@@ -11,6 +11,7 @@ add_library(gw_layer_obj OBJECT
   ${CMAKE_CURRENT_LIST_DIR}/layer_make.c
   ${CMAKE_CURRENT_LIST_DIR}/layer_impact.c
   ${CMAKE_CURRENT_LIST_DIR}/layer_outcome.c
+  ${CMAKE_CURRENT_LIST_DIR}/layer_warnings.c
   ${CMAKE_CURRENT_LIST_DIR}/layer_crowns.c
   ${CMAKE_CURRENT_LIST_DIR}/layer_regions.c
   ${CMAKE_CURRENT_LIST_DIR}/layer_h5.c

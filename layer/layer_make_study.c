@@ -86,6 +86,7 @@ static const gw_param make_fields[] = {
      .help = "clump of each disc (clumps only)"},
     {.name = "sample_fnv1a64", .type = GW_PARAM_TEXT, .offset = OFF(sample_fnv1a64), .unit = "",
      .help = "with out: FNV-1a 64 hash of the file written (what layer-impact records), else None"},
+    GW_PARAM_WARNINGS(OFF(warnings)),
     GW_PARAM_END};
 
 const gw_param *gw_layer_make_outcome_fields(void)
@@ -99,6 +100,7 @@ void gw_layer_make_outcome_free(gw_layer_make_outcome *out)
         return;
     gw_layer_sample_free(&out->sample);
     free(out->sample_fnv1a64);
+    free(out->warnings);
     memset(out, 0, sizeof *out);
 }
 
@@ -190,5 +192,7 @@ int gw_layer_make_run_progress(const gw_layer_make_setup *s, gw_progress_fn prog
         if (rc == GW_OK && gw_fnv1a64_file(s->out, "sample", &fh, &he) == GW_OK && (out->sample_fnv1a64 = malloc(17)))
             gw_snprintf(out->sample_fnv1a64, 17, "%016llx", fh);
     }
+    if (rc == GW_OK && (rc = gw_layer_make_result_warnings(&out->r, mp.t_max, s->out, &out->warnings)) != GW_OK)
+        rc = gw_err_set(err, rc, "layer-make: out of memory");
     return rc;
 }

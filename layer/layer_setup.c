@@ -186,6 +186,7 @@ static const gw_param outcome_fields[] = {
     RA("snapshot_r", particle_r, "m", "nparticles", NULL, NULL, "particle radii"),
     RA("snapshot", snap, "m, rad, m/s, rad/s", "snap_rows", "6", "x,y,theta,vx,vy,omega",
        "particle states, snapshot after snapshot"),
+    GW_PARAM_WARNINGS(OFF(warnings)),
     GW_PARAM_END};
 
 const gw_param *gw_layer_impact_outcome_fields(void)
@@ -200,9 +201,10 @@ void gw_layer_impact_outcome_free(gw_layer_impact_outcome *out)
     gw_layer_impact_result_free(&out->r);
     out->nregions = 0;
     free(out->undecided);
+    free(out->warnings);
     free(out->sample_fnv1a64);
     free(out->snap_t); /* snap and particle_r with it */
-    out->undecided = NULL;
+    out->undecided = out->warnings = NULL;
     out->sample_fnv1a64 = NULL;
     out->snap_t = out->snap = out->particle_r = NULL;
     out->nxcorr = out->nsnap = out->nparticles = out->snap_rows = 0;
@@ -453,6 +455,8 @@ int gw_layer_impact_run_progress(const gw_layer_impact_setup *s, gw_progress_fn 
             memcpy(out->undecided, out->r.undecided, nu + 1);
         else if (nu > 0 && rc == GW_OK)
             rc = gw_err_set(err, GW_ENOMEM, "layer-impact: out of memory");
+        if (rc == GW_OK && (rc = gw_layer_impact_result_warnings(&out->r, &out->warnings)) != GW_OK)
+            rc = gw_err_set(err, rc, "layer-impact: out of memory");
     }
     gw_layer_impact_plan_free(&plan);
     return rc;

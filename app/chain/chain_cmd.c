@@ -191,12 +191,12 @@ int gw_cmd_chain(int argc, char **argv)
             cJSON_Delete(o);
             free(hdr);
         }
-        if (code == 0 && !r.converged) /* results at t_max, not final: said, and recorded (JSON converged false) */
-            fprintf(stderr, "granwave chain: warning: the collision had not ended at t_max = %.6g s (%s): %s are "
-                    "those at t_max; raise --t-max\n", r.t_end,
-                    r.wall_done ? "the column's own contacts still closed or closing" : r.wall_pending,
-                    r.wall_done ? "the final velocities, eps_eff, eps_col and N_s"
-                                : "F_max, tau_N, the final velocities and the restitution");
+        if (code == 0 && !r.converged) { /* results at t_max, not final: said, and recorded (JSON converged false) */
+            char *w = NULL; /* the library's text (out of memory for it: no line) */
+            (void)gw_chain_result_warnings(&r, &w);
+            gw_cli_warnings("chain", w);
+            free(w);
+        }
         if (code == 0) {
             if (c.json) {
                 cJSON *o = chain_result_json(&c, &r, wall_ms);

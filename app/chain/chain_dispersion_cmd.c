@@ -511,9 +511,8 @@ int gw_cmd_dispersion(int argc, char **argv)
             fprintf(stderr, "granwave dispersion --out: %s\n", err.msg);
             code = 1;
         }
-        if (code == 0 && r.n_resolved == 0) /* the ridge error is NaN (JSON null): say why */
-            fprintf(stderr, "granwave dispersion: warning: no wavenumber resolved: the spectrum shows no ridge "
-                            "(an --f0 so small that it underflows, or a --dt-out too fine for --t-samples)\n");
+        if (code == 0) /* no wavenumber resolved: the ridge error is NaN (JSON null), said why */
+            gw_cli_warnings("dispersion", out.warnings);
         if (code == 0 && c.json)
             gw_json_print(o, stdout);
         else if (code == 0)

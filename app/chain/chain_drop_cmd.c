@@ -347,14 +347,8 @@ int gw_cmd_drop(int argc, char **argv)
     char *buf = malloc((size_t)o.n + 1);
     if (!buf && rc == GW_OK)
         rc = gw_err_set(&err, GW_ENOMEM, "drop: out of memory");
-    if (rc == GW_OK && (r->first_cut || r->open_at_t_max)) /* said, and recorded (cut_first_collision, open_at_t_max) */
-        fprintf(stderr, "granwave drop: warning: the run was cut at t_max = %.6g s: %s%s%s; raise --t-max\n",
-                r->t_end,
-                r->first_cut ? "the first collision had not ended (its F_max, tau_N and restitution are those at "
-                               "t_max)" : "",
-                r->first_cut && r->open_at_t_max ? "; " : "",
-                r->open_at_t_max ? "bead 1 was still on the sensor (the last impact's t_end and v_out are null, "
-                                   "its peaks those so far)" : "");
+    if (rc == GW_OK) /* cut at t_max: said, and recorded (cut_first_collision, open_at_t_max) */
+        gw_cli_warnings("drop", o.warnings);
     if (rc != GW_OK) {
         fprintf(stderr, "granwave %s%s\n", rc == GW_EINVAL || strncmp(err.msg, "drop: ", 6) == 0 ? "" : "drop: ", err.msg);
         code = rc == GW_EINVAL ? 2 : 1;

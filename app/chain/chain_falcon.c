@@ -310,7 +310,7 @@ int gw_cmd_falcon(int argc, char **argv)
         f.c.run.steps_per_tc = f.o.steps_per_tc;
     }
     cJSON *sum = summary_json(&f);
-    chain_cli_warn_unfinished("falcon", f.o.unfinished, ncase);
+    gw_cli_warnings("falcon", f.o.warnings); /* the library's text: unfinished collisions */
     if (f.o.trace_failed) { /* a trace's run: the study stands, its --out files are not written */
         fprintf(stderr, "granwave falcon --out: %s\n", err.msg);
         code = 1;

@@ -321,14 +321,6 @@ char *chain_cli_header(const chain_cli *c, const char *cmd, int argc, char **arg
     return h;
 }
 
-void chain_cli_warn_unfinished(const char *cmd, int unfinished, int total)
-{
-    if (unfinished > 0)
-        fprintf(stderr, "granwave %s: warning: %d of %d collisions had not ended at t_max (a contact still closed or "
-                "closing): their tau_N, restitution and what is fitted over them are those at t_max; raise --t-max\n",
-                cmd, unfinished, total);
-}
-
 int chain_cli_fail(const char *msg)
 {
     fprintf(stderr, "granwave %s\n", msg);

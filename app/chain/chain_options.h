@@ -89,9 +89,6 @@ int chain_cli_parse(const char *cmd, const char *usage, const char *summary, gw_
 void chain_cli_sweep_opts(gw_opt *opts, int *k, long *jobs, int *quiet);
 
 /* Print "granwave CMD: message" and return exit code 2. */
-/* One warning line on stderr when some of total collisions had not ended at
- * t_max (gw_chain_result.converged 0); nothing when unfinished is 0. */
-void chain_cli_warn_unfinished(const char *cmd, int unfinished, int total);
 int chain_cli_fail(const char *msg);
 /* The same with the exit code of status rc: 1 for a run's failure (a solver,
  * a limit, the energy monitor, memory: the restitution calibration's one-bead

@@ -176,9 +176,7 @@ int gw_cmd_softwall(int argc, char **argv)
         }
         cJSON_AddNumberToObject(o, "wall_time_s", wall_s);
         cJSON_AddNumberToObject(o, "unfinished", so.unfinished);
-        if (so.unfinished > 0) /* F_max and tau_max: the wall's contact, the column's own may still be busy */
-            fprintf(stderr, "granwave softwall: warning: %d of %d collisions were still at the wall at t_max: their "
-                    "F_max and tau_max may not be final; raise --t-max\n", so.unfinished, so.ncase);
+        gw_cli_warnings("softwall", so.warnings); /* unfinished: F_max, tau_max may not be final */
         cJSON *set = chain_cli_settings_json(&c);
         chain_cli_settings_runs(set, so.ncase, so.t_max, so.dt_out, so.dt, so.dt_max);
         cJSON_AddItemToObject(o, "settings", set);

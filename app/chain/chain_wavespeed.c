@@ -134,7 +134,7 @@ int gw_cmd_wavespeed(int argc, char **argv)
         cJSON_AddNumberToObject(o, "n_max", (double)b);
         cJSON_AddNumberToObject(o, "wall_time_s", wall_s);
         cJSON_AddNumberToObject(o, "unfinished", wo.unfinished);
-        chain_cli_warn_unfinished("wavespeed", wo.unfinished, nv * (int)(b - a + 1));
+        gw_cli_warnings("wavespeed", wo.warnings); /* unfinished collisions of the tau_N sweep */
         cJSON *set = chain_cli_settings_json(&c);
         chain_cli_settings_runs(set, wo.ncase, wo.t_max, wo.dt_out, wo.dt, wo.dt_max);
         cJSON_AddItemToObject(o, "settings", set);

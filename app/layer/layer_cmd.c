@@ -185,14 +185,12 @@ int gw_cmd_layer_make(int argc, char **argv)
         fprintf(stderr, "granwave layer-make --out: %s\n", err.msg);
         return 1;
     }
-    if (!r.converged && mp.t_max < r.t_judge) /* it could not settle: not "E_k above the threshold" */
-        fprintf(stderr, "granwave layer-make: warning: the sample did not settle: t-max = %g s ends before the "
-                "settling is judged (from t = %.3g s, once the pile has landed: raise --t-max); written to %s "
-                "with 'converged 0'\n", mp.t_max, r.t_judge, out);
-    else if (!r.converged) /* written (its header says converged 0), but not a settled packing: one line */
-        fprintf(stderr, "granwave layer-make: warning: the sample did not settle: E_k = %.4g J still above "
-                "--ke-threshold at t-max = %g s (raise --t-max); written to %s with 'converged 0'\n", r.ke_final,
-                mp.t_max, out);
+    if (!r.converged) { /* written (its header says converged 0), but not a settled packing: one line */
+        char *w = NULL; /* the library's text (out of memory for it: no line) */
+        (void)gw_layer_make_result_warnings(&r, mp.t_max, out, &w);
+        gw_cli_warnings("layer-make", w);
+        free(w);
+    }
     double h = 0;
     for (int k = 0; k < s.n; k++)
         h = fmax(h, s.y[k] + s.r[k]);
@@ -635,8 +633,12 @@ int gw_cmd_layer_impact(int argc, char **argv)
         return rc == GW_EINVAL || rc == GW_EUNSUPPORTED ? 2 : 1;
     }
     int code = 0;
-    if (r.undecided[0]) /* one line; the JSON says null */
-        fprintf(stderr, "granwave layer-impact: warning: %s\n", r.undecided);
+    if (r.undecided[0]) { /* one line; the JSON says null */
+        char *w = NULL; /* the library's text (out of memory for it: no line) */
+        (void)gw_layer_impact_result_warnings(&r, &w);
+        gw_cli_warnings("layer-impact", w);
+        free(w);
+    }
     cJSON *j = impact_json(&c, &r, &sp);
     if (c.out) {
         /* the command line and every setting (defaults included, the step used)

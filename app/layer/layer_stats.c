@@ -176,23 +176,9 @@ int gw_cmd_layer_stats(int argc, char **argv)
         fprintf(stderr, "granwave layer-stats: %s\n", err.msg);
         return rc == GW_ENOMEM ? 1 : 2;
     }
-    long undecided = 0, uncertain = 0;
-    for (int i = 0; i < R.gs.n; i++) {
-        undecided += R.gs.g[i].n - R.gs.g[i].n_valid;
-        uncertain += !R.gs.g[i].verdict_certain;
-    }
-    if (undecided > 0) /* recorded as n_points - n_valid in groups.csv and the JSON */
-        fprintf(stderr, "granwave layer-stats: warning: %ld point(s) with bounced = nan (undecided: the run ended "
-                        "before the verdict) count as not bounced in bounce_share and are left out of "
-                        "bounce_share_decided; %ld group verdict(s) could change with longer runs\n", undecided,
-                uncertain);
-    long cut = 0; /* bouncing points whose run ended before T_f */
-    for (int i = 0; i < R.gs.n; i++)
-        cut += R.gs.g[i].n_bounced - R.gs.g[i].e.n;
-    if (cut > 0) /* recorded as n_bounced - n_e in groups.csv (the JSON: e.n) */
-        fprintf(stderr, "granwave layer-stats: warning: %ld bouncing point(s) with e = nan (the run ended before "
-                        "T_f, or stopped at the verdict: until = verdict) are left out of the e_n, e, alpha_r "
-                        "statistics; e_n_first, e_first, alpha_r_first cover them\n", cut);
+    /* undecided points (n_points - n_valid in groups.csv and the JSON), bouncing
+     * points without e (n_bounced - n_e): the library's texts */
+    gw_cli_warnings("layer-stats", R.warnings);
     int status = 0;
     if (out && gw_stats_write_files(&R, out, &err) != GW_OK) {
         fprintf(stderr, "granwave layer-stats --out: %s\n", err.msg);

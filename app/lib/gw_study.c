@@ -155,6 +155,19 @@ const gw_study *gw_study_find(const char *name)
     return NULL;
 }
 
+const char *gw_study_warnings(const gw_study *st, const void *out)
+{
+    if (!st || !out)
+        return NULL;
+    for (const gw_param *f = st->fields(); f && f->name; f++)
+        if (f->type == GW_PARAM_TEXT && strcmp(f->name, "warnings") == 0) {
+            const char *w;
+            memcpy(&w, (const char *)out + f->offset, sizeof w);
+            return w && *w ? w : NULL;
+        }
+    return NULL;
+}
+
 static const gw_sweep_model *const models[] = {&gw_chain_sweep_model,
 #if GW_HAVE_LAYER
                                                &gw_layer_sweep_model

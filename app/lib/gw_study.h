@@ -50,6 +50,13 @@ const gw_study *gw_study_find(const char *name);
 const gw_study *gw_study_get(int i);
 int gw_study_count(void);
 
+/* The warnings of a run's results out (the study's result struct, after its
+ * run returned GW_OK): why results are not final, one text per line, each
+ * ending with '\n' (gw_common.h, "warnings of a result"), or NULL when there
+ * are none. The texts the program prints after "granwave NAME: warning: " and
+ * Python issues as GranwaveWarning. Owned by out (valid until free_out). */
+const char *gw_study_warnings(const gw_study *st, const void *out);
+
 /* The sweep models of `granwave sweep` (chain, layer): *n of them. */
 const gw_sweep_model *const *gw_sweep_models(int *n);
 

@@ -355,6 +355,9 @@ typedef struct gw_stats_analysis {
     int nwalls;
     gw_stats_panel *dia;
     int ndia;
+    char *warnings;         /* what the statistics leave out or may change (gw_common.h,
+                               "warnings of a result": undecided points, bouncing points
+                               without e); owned, NULL: none */
 } gw_stats_analysis;
 
 /* Read s->input and compute everything into A (zeroed first; free with

@@ -293,9 +293,37 @@ void gw_stats_analysis_free(gw_stats_analysis *A)
     free(A->bin);
     free(A->walls);
     free(A->cmdline);
+    free(A->warnings);
     gw_stats_groups_free(&A->gs);
     gw_stats_table_free(&A->t);
     memset(A, 0, sizeof *A);
+}
+
+/* The analysis's warnings, from the counts groups.csv records: points whose
+ * bounce is undecided (n_points - n_valid) and bouncing points without e
+ * (n_bounced - n_e: the run ended before T_f, or stopped at the verdict). */
+static int warnings_make(gw_stats_analysis *A)
+{
+    long undecided = 0, uncertain = 0, cut = 0;
+    for (int i = 0; i < A->gs.n; i++) {
+        undecided += A->gs.g[i].n - A->gs.g[i].n_valid;
+        uncertain += !A->gs.g[i].verdict_certain;
+        cut += A->gs.g[i].n_bounced - A->gs.g[i].e.n;
+    }
+    int rc = GW_OK;
+    if (undecided > 0)
+        rc = gw_warnings_add(&A->warnings,
+                             "%ld point(s) with bounced = nan (undecided: the run ended before the verdict) count as "
+                             "not bounced in bounce_share and are left out of bounce_share_decided; %ld group "
+                             "verdict(s) could change with longer runs",
+                             undecided, uncertain);
+    if (rc == GW_OK && cut > 0)
+        rc = gw_warnings_add(&A->warnings,
+                             "%ld bouncing point(s) with e = nan (the run ended before T_f, or stopped at the "
+                             "verdict: until = verdict) are left out of the e_n, e, alpha_r statistics; e_n_first, "
+                             "e_first, alpha_r_first cover them",
+                             cut);
+    return rc;
 }
 
 int gw_stats_analyse(const gw_stats_setup *s, gw_stats_analysis *A, gw_err *err)
@@ -329,7 +357,7 @@ int gw_stats_analyse(const gw_stats_setup *s, gw_stats_analysis *A, gw_err *err)
         rc = gw_stats_groups_make(&A->t, s->criterion, &A->gs, err);
     if (rc == GW_OK)
         rc = binary_make(A, err);
-    if (rc == GW_OK && (walls_make(A) != GW_OK || diagrams_make(A) != GW_OK))
+    if (rc == GW_OK && (walls_make(A) != GW_OK || diagrams_make(A) != GW_OK || warnings_make(A) != GW_OK))
         rc = gw_err_set(err, GW_ENOMEM, "%s: out of memory", A->input);
     return rc;
 }

@@ -71,6 +71,7 @@ static const gw_param outcome_fields[] = {
     RI("nboundary", nboundary, "rows of boundary"),
     RA("boundary", boundary, "nboundary", "11", BND_COLS,
        "H*/R_m per R_b/R_m column; kind 0 cross, 1 above, 2 below, 3 inverted; b31 = fitted curve there"),
+    GW_PARAM_WARNINGS(OFF(a.warnings)),
     GW_PARAM_END};
 
 const gw_param *gw_stats_outcome_fields(void)

@@ -25,7 +25,8 @@ Errors raise exceptions: a bad value GranwaveValueError (a ValueError naming
 the parameter), an unknown keyword TypeError, an unreadable file
 GranwaveIOError (an OSError), a failed run GranwaveRunError (a RuntimeError).
 A run the program warns about (cut at t_max, not settled, undecided) returns
-its result and issues a GranwaveWarning (a RuntimeWarning) with that text.
+its result and issues a GranwaveWarning (a RuntimeWarning) with that text: the
+library's own, which the result lists too (r.warnings, one str per warning).
 
 The library is found in the build tree (./setup.sh build), next to an
 installed module (cmake --install), or at GRANWAVE_LIB.
@@ -35,7 +36,6 @@ import numpy as _np
 from . import _core
 from ._core import (GranwaveError, GranwaveIOError, GranwaveRunError, GranwaveUnsupported,
                     GranwaveValueError, GranwaveWarning, Result)
-from ._core import warn as _warn
 from ._lib import lib as _clib
 from ._lib import path as library_path
 
@@ -87,45 +87,17 @@ def params(study):
             for p in st.params]
 
 
-# The program warns on stderr (one line) where a run ended with results that are
-# not final; Python said nothing: a GranwaveWarning now, with the program's text
-# (keywords spelled as Python's), the result recording it as before.
-
-def _warn_chain(what, r):
-    if r["converged"] is False:
-        why = "the column's own contacts still closed or closing" if r["wall_done"] else r.get("wall_pending")
-        which = ("the final velocities, eps_eff, eps_col and N_s" if r["wall_done"]
-                 else "F_max, tau_N, the final velocities and the restitution")
-        _warn(what, f"the collision had not ended at t_max = {r['t_end']:.6g} s ({why}): {which} are those at "
-                    "t_max; raise t_max", stacklevel=4)
-
-
-def _warn_unfinished(what, unfinished, total):
-    if unfinished > 0:
-        _warn(what, f"{unfinished} of {total} collisions had not ended at t_max (a contact still closed or "
-                    "closing): their tau_N, restitution and what is fitted over them are those at t_max; raise t_max",
-              stacklevel=4)
-
+# A run that ended with results that are not final (cut at t_max, not settled,
+# undecided) issues a GranwaveWarning per text of the library's result (its
+# `warnings`, what the program prints on stderr): Study.run in _core, for every
+# study alike. No warning text is written here.
 
 def chain(**kwargs):
-    r = _study("chain").run(kwargs)
-    _warn_chain("chain", r)
-    return r
+    return _study("chain").run(kwargs)
 
 
 def layer_make(*, progress=None, **kwargs):
-    r = _study("layer-make").run(kwargs, progress)
-    if r["converged"] is False:
-        t_max = kwargs.get("t_max")  # as set (checked by the library), else the table's default
-        t_max = float(t_max if t_max is not None else
-                      next(p.default for p in _study("layer-make").params if p.keyword == "t_max"))
-        if t_max < r["t_judge"]:  # it could not settle: not "E_k above the threshold"
-            _warn("layer_make", f"the sample did not settle: t_max = {t_max:g} s ends before the settling is judged "
-                                f"(from t = {r['t_judge']:.3g} s, once the pile has landed: raise t_max)")
-        else:
-            _warn("layer_make", f"the sample did not settle: E_k = {r['ke_final']:.4g} J still above ke_threshold "
-                                f"at t_max = {t_max:g} s (raise t_max)")
-    return r
+    return _study("layer-make").run(kwargs, progress)
 
 
 _SNAP_COLS = ("x", "y", "theta", "vx", "vy", "omega")
@@ -156,8 +128,6 @@ def layer_impact(*, progress=None, **kwargs):
         for c in _SNAP_COLS:
             snaps[c] = tab[c].reshape(n, m)
     r["snapshots"] = snaps
-    if r["undecided"]:  # the program's warning line: the library's own text
-        _warn("layer_impact", r["undecided"])
     return r
 
 
@@ -221,19 +191,6 @@ def layer_stats(input=None, **kwargs):
     for t, before in _STATS_NAMES_BEFORE.items():
         if t in r:
             r[t] = _Columns(r[t], before)
-    g = r.get("groups") or {}
-    if len(g.get("n_points", ())):  # the program's two warnings, from the counts groups.csv records
-        undecided = int(_np.sum(g["n_points"] - g["n_valid"]))
-        if undecided > 0:
-            _warn("layer_stats", f"{undecided} point(s) with bounced = nan (undecided: the run ended before the "
-                                 "verdict) count as not bounced in bounce_share and are left out of "
-                                 f"bounce_share_decided; {int(_np.sum(~g['verdict_certain']))} group verdict(s) "
-                                 "could change with longer runs")
-        cut = int(_np.sum(g["n_bounced"] - g["n_e"]))
-        if cut > 0:
-            _warn("layer_stats", f"{cut} bouncing point(s) with e = nan (the run ended before T_f, or stopped at the "
-                                 "verdict: until = verdict) are left out of the e_n, e, alpha_r statistics; "
-                                 "e_n_first, e_first, alpha_r_first cover them")
     return r
 
 
@@ -246,14 +203,11 @@ def falcon(*, progress=None, **kwargs):
     # solver="cvode" (its default's value) as not given: it ran RK4 instead.
     if "accuracy" not in kwargs and any(kwargs.get(k) is not None for k in _SOLVER_KEYWORDS):
         kwargs["accuracy"] = 0
-    r = _study("falcon").run(kwargs, progress)
-    _warn_unfinished("falcon", r["unfinished"], r["ncase"])
-    return r
+    return _study("falcon").run(kwargs, progress)
 
 
 def wavespeed(*, progress=None, **kwargs):
     r = _study("wavespeed").run(kwargs, progress)
-    _warn_unfinished("wavespeed", r["unfinished"], r["ncase"])
     r["fits"] = {w: {k: r["fit_%s_%s" % (w, k)] for k in ("beta", "beta_err", "prefactor", "c3")}
                  for w in ("tq", "front", "group", "group_front")}
     return r
@@ -282,18 +236,11 @@ def softwall(*, progress=None, **kwargs):
             del e["a_over_h_1"]
         sheets.append(e)
     r["sheets"] = sheets
-    if r["unfinished"] > 0:  # F_max and tau_max: the wall's contact, the column's own may still be busy
-        _warn("softwall", f"{r['unfinished']} of {r['nw'] * r['nn']} collisions were still at the wall at t_max: "
-                          "their F_max and tau_max may not be final; raise t_max")
     return r
 
 
 def dispersion(**kwargs):
-    r = _study("dispersion").run(kwargs)
-    if r.get("column") is False and r["n_resolved"] == 0:  # the ridge error is NaN: said why, as the program does
-        _warn("dispersion", "no wavenumber resolved: the spectrum shows no ridge (an f0 so small that it "
-                            "underflows, or a dt_out too fine for t_samples)")
-    return r
+    return _study("dispersion").run(kwargs)
 
 
 _IMPACT_INTS = ("n_peaks", "cluster")
@@ -320,13 +267,6 @@ def drop(*, progress=None, **kwargs):
     imp["located"] = imp["located"].astype(bool)
     r["impacts"] = imp
     r["gaps"] = r.get("gaps", _np.zeros(0))
-    cut, still = r["cut_first_collision"], r["open_at_t_max"]
-    if cut or still:
-        _warn("drop", f"the run was cut at t_max = {r['t_end']:.6g} s: "
-                      + ("the first collision had not ended (its F_max, tau_N and restitution are those at t_max)"
-                         if cut else "") + ("; " if cut and still else "")
-                      + ("bead 1 was still on the sensor (the last impact's t_end and v_out are NaN, its peaks those "
-                         "so far)" if still else "") + "; raise t_max")
     return r
 
 

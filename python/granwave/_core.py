@@ -54,7 +54,9 @@ class GranwaveWarning(RuntimeWarning):
     """A run that ended with results the program warns about on stderr (a
     collision cut at t_max, a sample that did not settle, an undecided
     bounce, ...): the result is returned and records it (converged False,
-    undecided, unfinished, ...); the warning says what is not final."""
+    undecided, unfinished, ...); the warning says what is not final, in the
+    library's text (the program's line after "warning: "), which the result
+    lists too (warnings)."""
 
 
 def warn(what, text, stacklevel=3):
@@ -268,10 +270,18 @@ class Study:
             cb.reraise(self.func)
             if rc != 0:
                 _raise(rc, err, self.func, self.params)
-            return read_result(self.fields, ctypes.addressof(out))
+            r = read_result(self.fields, ctypes.addressof(out))
         finally:
             self.st.free_out(out)
             self.st.clear(buf)
+        # The library's warning texts, each ending with a newline (gw_study_warnings;
+        # the program prints each after "granwave NAME: warning: "): a list, and a
+        # GranwaveWarning each, shown at the line that called the public function
+        text = r.get("warnings") or ""
+        r["warnings"] = text[:-1].split("\n") if text else []
+        for w in r["warnings"]:
+            warn(self.func, w, stacklevel=4)
+        return r
 
     def doc(self, intro):
         lines = [intro, "", "Keywords (the flags of `granwave %s`, '-' written '_'; units SI):" % self.name]

@@ -1,0 +1,66 @@
+/*
+ * chain_warnings.c: the warning texts of the column's runs and studies, each
+ * written once (gw_common.h, "warnings of a result"). A run that ended with
+ * results that are not final (a collision cut at t_max, physics.md 1.2: every
+ * contact open and every pair separating; a dispersion spectrum without a
+ * ridge, 1.6) returns GW_OK and its result says why here. The program prints
+ * these texts as "granwave CMD: warning: TEXT", the Python module issues them
+ * as GranwaveWarning, a C caller reads them from the outcome's `warnings`.
+ * Parameters are named as the program's flags (--t-max), as the library's
+ * other texts for the user (the layer's undecided outcome) do.
+ */
+#include "gw_chain.h"
+#include "gw_chain_study.h"
+
+int gw_chain_result_warnings(const gw_chain_result *r, char **list)
+{
+    if (!r || r->converged)
+        return GW_OK;
+    return gw_warnings_add(list,
+                           "the collision had not ended at t_max = %.6g s (%s): %s are those at t_max; raise --t-max",
+                           r->t_end, r->wall_done ? "the column's own contacts still closed or closing" :
+                           r->wall_pending ? r->wall_pending : "bead 1 still at the wall",
+                           r->wall_done ? "the final velocities, eps_eff, eps_col and N_s"
+                                        : "F_max, tau_N, the final velocities and the restitution");
+}
+
+int gw_chain_unfinished_warnings(int unfinished, int total, char **list)
+{
+    if (unfinished <= 0)
+        return GW_OK;
+    return gw_warnings_add(list,
+                           "%d of %d collisions had not ended at t_max (a contact still closed or closing): their "
+                           "tau_N, restitution and what is fitted over them are those at t_max; raise --t-max",
+                           unfinished, total);
+}
+
+int gw_chain_softwall_warnings(int unfinished, int total, char **list)
+{
+    if (unfinished <= 0) /* F_max and tau_max: the wall's contact, the column's own may still be busy */
+        return GW_OK;
+    return gw_warnings_add(list,
+                           "%d of %d collisions were still at the wall at t_max: their F_max and tau_max may not "
+                           "be final; raise --t-max",
+                           unfinished, total);
+}
+
+int gw_chain_dispersion_warnings(const gw_chain_disp_result *r, char **list)
+{
+    if (!r || r->n_resolved > 0) /* the ridge error is NaN (JSON null): say why */
+        return GW_OK;
+    return gw_warnings_add(list, "no wavenumber resolved: the spectrum shows no ridge (an --f0 so small that it "
+                                 "underflows, or a --dt-out too fine for --t-samples)");
+}
+
+int gw_chain_drop_result_warnings(const gw_chain_drop_result *r, char **list)
+{
+    if (!r || !(r->first_cut || r->open_at_t_max))
+        return GW_OK;
+    /* NaN in the result, null in the program's JSON: "NaN" is what the result holds for every caller */
+    return gw_warnings_add(list, "the run was cut at t_max = %.6g s: %s%s%s; raise --t-max", r->t_end,
+                           r->first_cut ? "the first collision had not ended (its F_max, tau_N and restitution are "
+                                          "those at t_max)" : "",
+                           r->first_cut && r->open_at_t_max ? "; " : "",
+                           r->open_at_t_max ? "bead 1 was still on the sensor (the last impact's t_end and v_out are "
+                                              "NaN, its peaks those so far)" : "");
+}

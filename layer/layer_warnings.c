@@ -1,0 +1,34 @@
+/*
+ * layer_warnings.c: the warning texts of the layer's runs, each written once
+ * (gw_common.h, "warnings of a result"): a pluviation that did not settle
+ * (physics.md 2.2: E_k below the threshold, judged once the pile has landed)
+ * and an impact whose outcome is undecided (2.3; the text is built where the
+ * outcome is, layer_outcome.c, as the result's `undecided`). The program prints
+ * them as "granwave CMD: warning: TEXT", the Python module issues them as
+ * GranwaveWarning, a C caller reads them from the outcome's `warnings`.
+ * Parameters are named as the program's flags (--t-max). Units: s, J.
+ */
+#include "gw_layer.h"
+
+int gw_layer_make_result_warnings(const gw_layer_make_result *r, double t_max, const char *out, char **list)
+{
+    if (!r || r->converged)
+        return GW_OK;
+    const char *sep = out ? "; written to " : "", *path = out ? out : "", *end = out ? " with 'converged 0'" : "";
+    if (t_max < r->t_judge) /* it could not settle: not "E_k above the threshold" */
+        return gw_warnings_add(list,
+                               "the sample did not settle: t-max = %g s ends before the settling is judged (from t = "
+                               "%.3g s, once the pile has landed: raise --t-max)%s%s%s",
+                               t_max, r->t_judge, sep, path, end);
+    return gw_warnings_add(list,
+                           "the sample did not settle: E_k = %.4g J still above --ke-threshold at t-max = %g s "
+                           "(raise --t-max)%s%s%s",
+                           r->ke_final, t_max, sep, path, end);
+}
+
+int gw_layer_impact_result_warnings(const gw_layer_impact_result *r, char **list)
+{
+    if (!r || !r->undecided[0]) /* decided, or stopped at the verdict on purpose */
+        return GW_OK;
+    return gw_warnings_add(list, "%s", r->undecided);
+}

@@ -9,8 +9,10 @@
  * and the rhs then applies it at the end of the step:
  *   v_t = v_t(t + h/2) with the normal at the mid-step positions
  *         x(t + h/2) = x(t) + (h/2) v(t + h/2),
- *   K_m = 2 K_s K_e / (K_s + K_e)  (K_s, K_e = k_t K_n^(1/3) u_n^(1/2) at the
- *         start and at the end; the one of them that is closed if one is open),
+ *   K_m = the mean of K_t = k_t K_n^(1/3) u_n^(1/2) over the step with u_n
+ *         linear in time between its values at the start and the end
+ *         (mean_kt: K_s, K_e the two ends' K_t; a contact that closes or opens
+ *         in the step is stiff only for the part of it where u_n > 0),
  *   F_trial = F_s + K_m v_t h,   F_e = F_trial clamped to [-C, C],
  *   C = tan(phi) K_n u_e^(3/2) (0 when the contact is open at the end).
  * The books of the step follow from the rate forms of layer_model.c,
@@ -18,7 +20,8 @@
  * written at the midpoint of the step:
  *   dE_d = Fbar (v_t h - (F_e - F_s)/K_m) = Fbar (F_trial - F_e)/K_m, Fbar =
  *          (F_s + F_e)/2: zero while sticking, the cap times the slip otherwise;
- *   dW_K = (F_s^2 + F_e^2)/4 (1/K_s - 1/K_e).
+ *   dW_K = F_e^2 (1/K_m - 1/K_e)/2 + F_s^2 (1/K_s - 1/K_m)/2 (an open end's
+ *          term is 0: its F is 0).
  * With them, the work the two half kicks do through the contact, v_t h Fbar,
  * equals dE_d + dE_st + dW_K to second order in h, where E_st = F_t^2/(2 K_t):
  * the ledger closure measures the step's error, the kinetic side included, as
@@ -28,7 +31,7 @@
  * with the friction angle (2.6e-2 at 85 deg, 1.9e-3 at 30 deg, dt = 1e-5 s)
  * and decreases only as dt^2 to dt^3 from there.
  * A contact that opens ends the step with F_t = 0 (C = 0): its stored energy
- * goes to dE_d through the same formula. The increments of E_d and W_K (and of
+ * goes to dE_d and W_K through the same formulas. The increments of E_d and W_K (and of
  * the contact's region) are added to the state after the step's last kick
  * (layer_dem_project), since the kicks rewrite the kicked tail.
  * Units: SI.
@@ -98,6 +101,51 @@ static inline double disc_geometry(const layer_contact *c, const double *y, doub
     }
 }
 
+/* The signed overlap of a disc-only contact in state y (negative: the gap),
+ * also for a pair farther apart than R_a + R_b (disc_geometry's -1). Only for
+ * the steps where the contact closes or opens. */
+static double disc_overlap(const layer_contact *c, const double *y, double width)
+{
+    const double *sa = y + 6 * c->qa;
+    switch (c->b) {
+    case LAYER_LEFT:
+        return c->ra - sa[0];
+    case LAYER_RIGHT:
+        return c->ra - (width - sa[0]);
+    case LAYER_BOTTOM:
+        return c->ra - sa[1];
+    default: {
+        const double *sb = y + 6 * c->qb;
+        return c->ra + c->rb - hypot(sb[0] - sa[0], sb[1] - sa[1]);
+    }
+    }
+}
+
+/* The mean tangential stiffness of a step, K_m = k_ts <sqrt(u_n)>, with u_n
+ * linear in time from us to ue (signed overlaps: negative is open; K_s =
+ * k_ts sqrt(us), K_e = k_ts sqrt(ue) for the closed ends):
+ *   closed at both ends:  K_m = (2/3) (K_s^2 + K_s K_e + K_e^2) / (K_s + K_e),
+ *   closing (us <= 0):    K_m = (2/3) K_e ue / (ue - us),
+ *   opening (ue <= 0):    K_m = (2/3) K_s us / (us - ue),
+ * the integral of K_t over the part of the step the contact is closed, over h.
+ * K_t grows as the square root of the overlap, so near a closure the
+ * harmonic mean of K_s and K_e is not the step's: a contact that closed just
+ * before the previous step's end has K_s -> 0 and the harmonic mean 2 K_s -> 0
+ * (no stiffness for one step), and the closing step itself took K_e over the
+ * whole step, where the contact is closed only for its last ue / (ue - us)
+ * part. Either is an error in F_t of order K v_t h that depends on where the
+ * touch falls in the step. */
+static inline double mean_kt(double ks, double ke, double us, double ue)
+{
+    if (ks > 0 && ke > 0)
+        return (2.0 / 3.0) * (ks * ks + ks * ke + ke * ke) / (ks + ke);
+    if (ke > 0)
+        return (2.0 / 3.0) * ke * (us < 0 ? ue / (ue - us) : 1);
+    if (ks > 0)
+        return (2.0 / 3.0) * ks * (ue < 0 ? us / (us - ue) : 1);
+    return 0;
+}
+
 /* The normal force with Hunt-Crossley damping (B.1 with the settling damping
  * alpha, s/m): F_n = F_el (1 + 3/2 alpha u_n'), u_n' the approach speed along
  * the normal nn (*und), never negative; F_el and *und = 0 when alpha is 0. The
@@ -140,19 +188,22 @@ static void drift_discs(gw_layer *L, double h, const double *ph, double *y)
         const int closed0 = un_last[k] > 0;
         const int q0 = closed0 ? tscr[k].q : -1;
         const double iks = closed0 ? tscr[k].ikt : 0; /* 1/K_s, 0 when open */
+        const double ks = closed0 ? tscr[k].kt : 0;
         const double su = ue > 0 ? sqrt(ue) : 0, ke = c->kts * su;
         const double fel = ue > 0 ? c->kn * ue * su : 0;
-        /* 1/K_e, and K_m with 1/K_m = (1/K_s + 1/K_e)/2 (or the closed end's
-         * alone): one division, p = K_e/K_s + 1, 1/K_e = p/(K_e p), K_m = 2 K_e^2/(K_e p) */
-        double ike = 0, ikm = iks, km = closed0 ? tscr[k].kt : 0;
-        if (ke > 0 && iks > 0) {
-            const double p = iks * ke + 1, inv = 1 / (ke * p);
-            ike = p * inv;
-            km = 2 * ke * ke * inv;
-            ikm = 0.5 * p * p * inv;
-        } else if (ke > 0) {
-            ike = ikm = 1 / ke;
-            km = ke;
+        /* 1/K_e, K_m the step's mean stiffness (mean_kt) and 1/K_m */
+        double ike = 0, ikm = 0, km = 0;
+        if (ke > 0 && closed0) {
+            ike = 1 / ke;
+            km = mean_kt(ks, ke, un_last[k], ue);
+            ikm = 1 / km;
+        } else if (ke > 0) { /* closing: the start's gap from the start positions */
+            ike = 1 / ke;
+            km = mean_kt(0, ke, disc_overlap(c, ph, width), ue);
+            ikm = 1 / km;
+        } else if (closed0) { /* opening */
+            km = mean_kt(ks, 0, un_last[k], disc_overlap(c, y, width));
+            ikm = 1 / km;
         }
         double *g = geo + 4 * k;
         g[0] = ue, g[1] = su, g[2] = nn[0], g[3] = nn[1];
@@ -164,7 +215,9 @@ static void drift_discs(gw_layer *L, double h, const double *ph, double *y)
             const double f0 = fe[k], ftr = f0 + vt * h * km;
             f1 = ftr > cap ? cap : ftr < -cap ? -cap : ftr;
             const double ed = ftr == f1 ? 0 : 0.5 * (f0 + f1) * (ftr - f1) * ikm;
-            const double ek = iks > 0 && ike > 0 ? 0.25 * (f0 * f0 + f1 * f1) * (iks - ike) : 0;
+            /* W_K: the kicks' work Fbar v_t h less dE_d and the change of F_t^2/(2 K_t),
+             * F_e^2 (1/K_m - 1/K_e)/2 + F_s^2 (1/K_s - 1/K_m)/2 (an open end's F is 0) */
+            const double ek = 0.5 * ((ike > 0 ? f1 * f1 * (ikm - ike) : 0) + (iks > 0 ? f0 * f0 * (iks - ikm) : 0));
             ed_sum += ed;
             ek_sum += ek;
             if (reg) {
@@ -235,15 +288,17 @@ int layer_dem_drift(double t, double h, const double *ph, double *y, void *P)
             continue;
         }
         const double vt = layer_contact_vt(L, c, ym, &um);
-        const double km = ks > 0 && ke > 0 ? 2 * ks * ke / (ks + ke) : ks > 0 ? ks : ke;
+        double us = L->un_last[k], ns[2]; /* the start's gap of a closing contact: the start positions */
+        if (!(ks > 0))
+            layer_contact_geometry(L, c, ph, &us, ns, NULL);
+        const double km = mean_kt(ks, ke, us, ue); /* (an opening's ue is the end's gap) */
         const double cap = ue > 0 ? tp * c->kn * ue * su : 0;
         const double f0 = fe[k], ftr = f0 + km * vt * h;
         const double f1 = ftr > cap ? cap : ftr < -cap ? -cap : ftr;
         fe[k] = f1;
         double ed = 0.5 * (f0 + f1) * (ftr - f1) / km;
-        /* closing (F_s = 0) or opening (F_e = 0): K_t is not defined at the open
-         * end, and the kicks' work v_t h Fbar equals dE_d + dE_st with W_K = 0 */
-        double ek = ks > 0 && ke > 0 ? 0.25 * (f0 * f0 + f1 * f1) * (1 / ks - 1 / ke) : 0;
+        /* W_K as in drift_discs; K_t is not defined at an open end, where F is 0 */
+        double ek = 0.5 * ((ke > 0 ? f1 * f1 * (1 / km - 1 / ke) : 0) + (ks > 0 ? f0 * f0 * (1 / ks - 1 / km) : 0));
         book[0] += ed;
         book[1] += ek;
         if (L->reg_n > 0) {

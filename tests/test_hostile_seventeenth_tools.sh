@@ -15,6 +15,9 @@
 #    took --help for a build directory; bench_layer.sh ran everything on a misspelt
 #    ONLY; bench_layer_peer.sh built before it looked for LAMMPS and took a relative LMP
 #    from the checkout. Each refused first now (exit 2), --help prints the header.
+#  4 the plot scripts (notebooks/plot_*.py) on a stdout that cannot be written (a
+#    full disk, a pipe closed by `| head`) gave a 7-line traceback; one line now
+#    ("plot_drop.py: stdout: write failed: ..."), exit 1 (gwdata.run_main).
 set -u
 GW=$1
 SRC=$(cd "$2" && pwd)
@@ -88,6 +91,17 @@ for s in run.sh rhs_vs_v01.sh falcon_vs_lsoda.sh run_peers.sh bench_layer.sh ben
         ok "3 $s --help: $(head -1 "$tmp/out")"
     else
         bad "3 $s --help: exit $rc, $(head -1 "$tmp/err")"
+    fi
+done
+
+# 4 the plot scripts on a stdout that cannot be written
+for s in plot_falcon plot_drop plot_sheets plot_wave_speed_layer; do
+    (cd "$tmp/caller" && timeout 20 /usr/bin/python3 "$SRC/notebooks/$s.py" --help >/dev/full 2>"$tmp/err")
+    rc=$?
+    if [ $rc = 1 ] && [ "$(wc -l <"$tmp/err")" = 1 ] && grep -q "^$s.py: stdout: write failed" "$tmp/err"; then
+        ok "4 $s.py --help >/dev/full: $(cat "$tmp/err")"
+    else
+        bad "4 $s.py --help >/dev/full: exit $rc, $(wc -l <"$tmp/err") stderr lines: $(tail -1 "$tmp/err")"
     fi
 done
 

@@ -96,17 +96,30 @@ int main(int argc, char **argv)
         return 2;
     }
     const char *cmd = argv[1];
-    if (strcmp(cmd, "--help") == 0 || strcmp(cmd, "-h") == 0 || strcmp(cmd, "help") == 0) {
+    int help = strcmp(cmd, "--help") == 0 || strcmp(cmd, "-h") == 0 || strcmp(cmd, "help") == 0;
+    int version = strcmp(cmd, "version") == 0 || strcmp(cmd, "--version") == 0;
+    /* `granwave help CMD` is `granwave CMD --help`; anything else after help or
+     * version is refused (it was ignored: `help chain` printed the command list) */
+    if ((help && argc > 3) || (version && argc > 2)) {
+        gw_err e;
+        gw_err_set(&e, GW_EINVAL, "unexpected argument '%s' after %s (see granwave --help)", argv[help ? 3 : 2], cmd);
+        fprintf(stderr, "granwave: %s\n", e.msg);
+        return 2;
+    }
+    if (help && argc == 2) {
         usage(stdout);
         return stdout_checked(NULL, 0);
     }
-    if (strcmp(cmd, "version") == 0 || strcmp(cmd, "--version") == 0) {
+    if (version) {
         printf("granwave %s\n", gw_version());
         return stdout_checked(NULL, 0);
     }
+    if (help)
+        cmd = argv[2];
     for (size_t i = 0; i < sizeof commands / sizeof commands[0]; i++)
         if (strcmp(commands[i].name, cmd) == 0) {
-            int code = commands[i].run(argc - 2, argv + 2);
+            char *help_argv[] = {"--help", NULL};
+            int code = help ? commands[i].run(1, help_argv) : commands[i].run(argc - 2, argv + 2);
             return stdout_checked(cmd, code);
         }
     gw_err e; /* through gw_err_set: a control character in the name is escaped, one line */

@@ -18,8 +18,11 @@
 #  4 the plot scripts (notebooks/plot_*.py) on a stdout that cannot be written (a
 #    full disk, a pipe closed by `| head`) gave a 7-line traceback; one line now
 #    ("plot_drop.py: stdout: write failed: ..."), exit 1 (gwdata.run_main).
+#  5 `granwave help chain` printed the command list and `granwave version extra` the
+#    version, the extra words ignored (exit 0); help CMD prints CMD's help now, and an
+#    unknown command or anything more is refused (exit 2, one line).
 set -u
-GW=$1
+GW=$(cd "$(dirname "$1")" && pwd)/$(basename "$1")
 SRC=$(cd "$2" && pwd)
 B=$(cd "$(dirname "$GW")" && pwd)
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
@@ -104,6 +107,19 @@ for s in plot_falcon plot_drop plot_sheets plot_wave_speed_layer; do
         bad "4 $s.py --help >/dev/full: exit $rc, $(wc -l <"$tmp/err") stderr lines: $(tail -1 "$tmp/err")"
     fi
 done
+
+# 5 the program's own help and version
+(cd "$tmp/caller" && timeout 20 "$GW" help layer-stats >"$tmp/out" 2>"$tmp/err")
+rc=$?
+if [ $rc = 0 ] && head -1 "$tmp/out" | grep -q "^usage: granwave layer-stats" && [ ! -s "$tmp/err" ]; then
+    ok "5 granwave help layer-stats: $(head -1 "$tmp/out")"
+else
+    bad "5 granwave help layer-stats: exit $rc, $(head -1 "$tmp/out") $(head -1 "$tmp/err")"
+fi
+expect "5 granwave help bogus" 2 "unknown command 'bogus'" "$GW" help bogus
+expect "5 granwave help chain extra" 2 "unexpected argument 'extra' after help" "$GW" help chain extra
+expect "5 granwave version extra" 2 "unexpected argument 'extra' after version" "$GW" version extra
+expect "5 granwave --version extra" 2 "unexpected argument 'extra' after --version" "$GW" --version extra
 
 echo "$((checks - fails)) of $checks checks passed"
 [ "$fails" = 0 ]

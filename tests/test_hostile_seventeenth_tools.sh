@@ -21,6 +21,10 @@
 #  5 `granwave help chain` printed the command list and `granwave version extra` the
 #    version, the extra words ignored (exit 0); help CMD prints CMD's help now, and an
 #    unknown command or anything more is refused (exit 2, one line).
+#  6 plot_wave_speed_layer.py plot printed "beta(5-40) = nan +- nan" for a series with
+#    fewer than 3 speeds in 5-40 m/s (two stored series) and a matplotlib warning for
+#    the single-point error bars (NaN); it says "not fitted (2 speed(s) ..., 3 needed)"
+#    now, draws an unknown error as no bar, fit.json byte-identical.
 set -u
 GW=$(cd "$(dirname "$1")" && pwd)/$(basename "$1")
 SRC=$(cd "$2" && pwd)
@@ -120,6 +124,34 @@ expect "5 granwave help bogus" 2 "unknown command 'bogus'" "$GW" help bogus
 expect "5 granwave help chain extra" 2 "unexpected argument 'extra' after help" "$GW" help chain extra
 expect "5 granwave version extra" 2 "unexpected argument 'extra' after version" "$GW" version extra
 expect "5 granwave --version extra" 2 "unexpected argument 'extra' after --version" "$GW" --version extra
+
+# 6 plot_wave_speed_layer.py plot on the stored series: fits a series cannot give said so
+cp -r "$SRC/data/measured/layer_wave_speed" "$tmp/lws"; rm -rf "$tmp/lws/figures" "$tmp/lws/fit.json"
+(cd "$tmp/caller" && MPLBACKEND=Agg timeout 60 /usr/bin/python3 "$SRC/notebooks/plot_wave_speed_layer.py" plot "$tmp/lws" \
+    >"$tmp/out" 2>"$tmp/err")
+rc=$?
+if [ $rc = 0 ] && ! grep -qi nan "$tmp/out" && grep -q "^seed2_r7: beta(5-40) not fitted (2 speed(s) in 5-40 m/s, 3 needed)" "$tmp/out"; then
+    ok "6 plot_wave_speed_layer.py: $(grep '^seed2_r7' "$tmp/out")"
+else
+    bad "6 plot_wave_speed_layer.py: exit $rc, $(grep -i nan "$tmp/out" | head -1)"
+fi
+cmp -s "$tmp/lws/fit.json" "$SRC/data/measured/layer_wave_speed/fit.json" && ok "6 fit.json unchanged" \
+    || bad "6 fit.json differs from the stored one"
+# one impact (the first stored one): no fit, one-point error bars
+mkdir "$tmp/lws1"
+awk -F, '/^#/ || /^tag,/ { print; next } $1 == "disc" && !done { print; done = 1 }' \
+    "$SRC/data/measured/layer_wave_speed/impacts.csv" >"$tmp/lws1/impacts.csv"
+read -r vi x < <(awk -F, '!/^#/ && !/^tag,/ { print $6, $7 }' "$tmp/lws1/impacts.csv")
+awk -F, -v vi="$vi" -v x="$x" '/^#/ || /^tag,/ || ($1 == "disc" && $2 == vi && $3 == x)' \
+    "$SRC/data/measured/layer_wave_speed/delays.csv" >"$tmp/lws1/delays.csv"
+(cd "$tmp/caller" && MPLBACKEND=Agg timeout 60 /usr/bin/python3 "$SRC/notebooks/plot_wave_speed_layer.py" plot "$tmp/lws1" \
+    >"$tmp/out" 2>"$tmp/err")
+rc=$?
+if [ $rc = 0 ] && ! grep -qi nan "$tmp/out" && [ ! -s "$tmp/err" ] && grep -q "not fitted (1 speed(s)" "$tmp/out"; then
+    ok "6 plot_wave_speed_layer.py, one impact: $(cat "$tmp/out")"
+else
+    bad "6 plot_wave_speed_layer.py, one impact: exit $rc, $(head -1 "$tmp/out"); $(wc -l <"$tmp/err") stderr lines $(head -1 "$tmp/err")"
+fi
 
 echo "$((checks - fails)) of $checks checks passed"
 [ "$fails" = 0 ]

@@ -9,6 +9,8 @@
 #   ./setup.sh bench  install (with LAMMPS, the peer) + build + run the benchmarks:
 #                     bench/run.sh, bench/rhs_vs_v01.sh, bench/falcon_vs_lsoda.sh,
 #                     bench/run_peers.sh (measurements only, a few minutes)
+#   ./setup.sh        the main job; ./setup.sh --help prints the usage. Any other
+#                     argument (an empty one too) or a second one: exit 2, nothing done.
 #
 # Environment: BUILD_DIR (default build), RESULTS (default results/falcon),
 # JOBS (build parallelism, a positive integer, default nproc). A relative BUILD_DIR
@@ -20,8 +22,15 @@ if [ $# -gt 1 ]; then
     echo "setup.sh: unexpected argument '$2' ($usage)" >&2
     exit 2
 fi
-mode=${1:-main}
-case "$mode" in main | test | build | bench) ;; *)
+# no argument is the main job; an argument given, even an empty one, must name a job
+if [ $# -eq 0 ]; then mode=main; else mode=$1; fi
+case "$mode" in
+main | test | build | bench) ;;
+-h | --help)
+    echo "$usage (no argument: main); environment BUILD_DIR, RESULTS, JOBS"
+    exit 0
+    ;;
+*)
     echo "setup.sh: unknown mode '$mode' ($usage)" >&2
     exit 2
     ;;

@@ -19,15 +19,17 @@
 #      its sample read and checked), i.e. the cost of reading the sample per case.
 # Environment: NPT (impact points in 2-3, default 4); ONLY=speed runs items 1-3 only.
 set -euo pipefail
-cd "$(dirname "$0")/.."
-B=$(cd "${1:-build}" && pwd)
+# shellcheck source=bench/bench_lib.sh
+. "$(dirname "$0")/bench_lib.sh" # (before the cd: it records the caller's directory)
+bench_args 1 "$@"
+bench_build_dir "${1-$bench_checkout/build}"
+cd "$bench_checkout"
 GW=$B/granwave
 PY=/usr/bin/python3
 W=$B/bench-layer
 NPT=${NPT:-4}
-# shellcheck source=bench/bench_lib.sh
-. bench/bench_lib.sh # (the working directory is the checkout)
 posint NPT "$NPT"
+case "${ONLY:-}" in '' | speed) ;; *) bench_refuse "ONLY must be empty or 'speed', got '$ONLY'" ;; esac
 mkdir -p "$W"
 cmake --build "$B" --target granwave >/dev/null
 now() { date +%s.%N; }

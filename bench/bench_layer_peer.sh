@@ -30,8 +30,12 @@
 # DEM_STEPS (bench_dem_min steps per repetition, 1000), DEM_REPS (9).
 # The machine may be shared: compare the ratios of this run, not the seconds.
 set -euo pipefail
-cd "$(dirname "$0")/.."
-B=$(cd "${1:-build}" && pwd)
+# shellcheck source=bench/bench_lib.sh
+. "$(dirname "$0")/bench_lib.sh" # (before the cd: it records the caller's directory)
+bench_args 1 "$@"
+bench_build_dir "${1-$bench_checkout/build}"
+bench_path_var LMP
+cd "$bench_checkout"
 GW=$B/granwave
 PY=/usr/bin/python3
 W=$B/bench-peer
@@ -40,17 +44,13 @@ GW_FLAGS=${GW_FLAGS:-}
 LMP=${LMP:-$(command -v lmp || true)}
 DEM_STEPS=${DEM_STEPS:-1000}
 DEM_REPS=${DEM_REPS:-9}
-# shellcheck source=bench/bench_lib.sh
-. bench/bench_lib.sh # (the working directory is the checkout)
 posint REPS "$REPS"
 posint DEM_STEPS "$DEM_STEPS"
 posint DEM_REPS "$DEM_REPS"
+[ -n "$LMP" ] || bench_refuse "no LAMMPS binary (Debian package lammps: lmp); set LMP"
+command -v "$LMP" >/dev/null || bench_refuse "LMP '$LMP' is not an executable"
 mkdir -p "$W"
 cmake --build "$B" --target granwave bench_dem_min >/dev/null
-if [ -z "$LMP" ]; then
-    echo "bench_layer_peer: no LAMMPS binary (Debian package lammps: lmp); set LMP" >&2
-    exit 2
-fi
 S=$W/sample300.txt
 
 echo "# bench_layer_peer: $(date -u +%Y-%m-%dT%H:%MZ) on $(hostname), $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')"

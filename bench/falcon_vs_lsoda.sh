@@ -10,13 +10,14 @@
 # The machine is shared: compare the ratio, not the seconds.
 # Environment: FALCON_ARGS (extra arguments, e.g. "--solver cvode --rtol 1e-12").
 set -euo pipefail
-cd "$(dirname "$0")/.."
-B=${1:-build}
-ROUNDS=${2:-3}
-PY=/usr/bin/python3
 # shellcheck source=bench/bench_lib.sh
-. bench/bench_lib.sh # (the working directory is the checkout)
+. "$(dirname "$0")/bench_lib.sh" # (before the cd: it records the caller's directory)
+bench_args 2 "$@"
+ROUNDS=${2-3}
 posint ROUNDS "$ROUNDS"
+bench_build_dir "${1-$bench_checkout/build}"
+cd "$bench_checkout"
+PY=/usr/bin/python3
 cmake --build "$B" --target granwave >/dev/null
 OUT=$(mktemp -d)
 trap 'rm -rf "$OUT"' EXIT

@@ -9,16 +9,15 @@
 # Same harness, same machine, same run: only the library differs. Prints
 # measurements, never a pass/fail verdict. Needs a git clone (for the history).
 set -euo pipefail
-cd "$(dirname "$0")/.."
-PAIRS=${1:-7}
-B=${2:-build}
+# shellcheck source=bench/bench_lib.sh
+. "$(dirname "$0")/bench_lib.sh" # (before the cd: it records the caller's directory)
+bench_args 2 "$@"
+PAIRS=${1-7}
+posint PAIRS "$PAIRS"
+bench_build_dir "${2-$bench_checkout/build}"
+cd "$bench_checkout"
 V01=024eb8d
-case "$PAIRS" in '' | *[!0-9]* | 0)
-    echo "rhs_vs_v01.sh: PAIRS must be a positive integer, got '$PAIRS'" >&2
-    exit 2
-    ;;
-esac
-if ! git rev-parse --verify -q "$V01^{commit}" >/dev/null; then
+if ! git rev-parse --verify -q "$V01^{commit}" >/dev/null 2>&1; then
     echo "rhs_vs_v01.sh: commit $V01 (v0.1) is not in this checkout; run from a git clone" >&2
     exit 2
 fi

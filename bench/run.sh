@@ -10,8 +10,11 @@
 # 3 SciPy LSODA collisions). Peers (SciPy, LAMMPS) and time to solution:
 # bench/run_peers.sh. The RHS against v0.1's library, alternating: bench/rhs_vs_v01.sh.
 set -euo pipefail
-cd "$(dirname "$0")/.."
-B=${1:-build}
+# shellcheck source=bench/bench_lib.sh
+. "$(dirname "$0")/bench_lib.sh" # (before the cd: it records the caller's directory)
+bench_args 1 "$@"
+bench_build_dir "${1-$bench_checkout/build}"
+cd "$bench_checkout"
 cmake --build "$B" --target bench_chain bench_long >/dev/null
 "$B/bench/bench_chain"
 echo

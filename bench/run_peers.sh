@@ -13,14 +13,16 @@
 # as the peers, which are not sampled in their timed runs either; 0 = the
 # gw_chain_collide default tau_1/200, on which rk4 then lands every step).
 set -euo pipefail
-cd "$(dirname "$0")/.."
-B=${1:-build}
+# shellcheck source=bench/bench_lib.sh
+. "$(dirname "$0")/bench_lib.sh" # (before the cd: it records the caller's directory)
+bench_args 1 "$@"
+bench_build_dir "${1-$bench_checkout/build}"
+bench_path_var LMP
+cd "$bench_checkout"
 ACC=${ACC:-1e-6}
 REPS=${REPS:-3}
 DT_OUT=${DT_OUT:-1e-4}
 PY=/usr/bin/python3
-# shellcheck source=bench/bench_lib.sh
-. bench/bench_lib.sh # (the working directory is the checkout)
 posint REPS "$REPS"
 cmake --build "$B" --target bench_tts >/dev/null
 OUT=$(mktemp -d)

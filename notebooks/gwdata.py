@@ -11,6 +11,8 @@ numbers come either from the paper (data/falcon1998/*.csv) or from the program.
     find_granwave()        path of the program: $GRANWAVE, ../build/granwave, build/granwave
     run_granwave(args)     run it; parsed JSON (json=True) or stdout text
     import_granwave()      the Python module granwave (python/granwave over libgranwave)
+    run_main(main, argv)   a plot script's entry: a stdout that cannot be written (a
+                           closed pipe, a full disk) ends in one line and exit 1
 
 Columns whose non-empty cells all parse as numbers become float numpy arrays (empty cells
 and "nan" -> NaN); other columns are lists of str. Dicts keep the file's column order.
@@ -22,6 +24,7 @@ import json as _json
 import os
 import stat
 import subprocess
+import sys
 
 import numpy as np
 
@@ -35,7 +38,7 @@ def read_error(path, e):
 
 
 __all__ = ["read_error", "DATA_DIR", "GranwaveError", "open_regular", "load_csv", "load_json", "load_table", "paper_value",
-           "find_granwave", "run_granwave", "import_granwave"]
+           "find_granwave", "run_granwave", "import_granwave", "run_main"]
 
 
 class GranwaveError(RuntimeError):
@@ -248,3 +251,52 @@ def import_granwave():
         return importlib.import_module("granwave")
     except ImportError as e:
         raise GranwaveError(f"the Python module granwave could not be loaded: {e}") from e
+
+
+class _StdoutError(Exception):
+    """A write to stdout failed (the OSError is the argument)."""
+
+
+class _GuardedStdout:
+    """sys.stdout whose write and flush failures are told apart from other files'."""
+
+    def __init__(self, f):
+        self._f = f
+
+    def write(self, text):
+        try:
+            return self._f.write(text)
+        except OSError as e:
+            raise _StdoutError(e) from None
+
+    def flush(self):
+        try:
+            self._f.flush()
+        except OSError as e:
+            raise _StdoutError(e) from None
+
+    def __getattr__(self, name):
+        return getattr(self._f, name)
+
+
+def run_main(main, argv):
+    """main(argv)'s exit status. A stdout that cannot be written (`| head` closing the
+    pipe, a full disk) ends in one line on stderr naming the script, exit 1, instead of
+    a traceback; what was not written is dropped."""
+    name = os.path.basename(argv[0])
+    real = sys.stdout
+    sys.stdout = _GuardedStdout(real)
+    try:
+        rc = main(argv)
+        sys.stdout.flush()
+        return rc
+    except _StdoutError as e:
+        err = e.args[0]
+        # the rest of the buffer goes nowhere, so that the exit flush cannot fail again
+        devnull = os.open(os.devnull, os.O_WRONLY)
+        os.dup2(devnull, real.fileno())
+        os.close(devnull)
+        print(f"{name}: stdout: write failed: {err.strerror or err}", file=sys.stderr)
+        return 1
+    finally:
+        sys.stdout = real

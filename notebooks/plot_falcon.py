@@ -500,4 +500,4 @@ def main(argv):
 
 
 if __name__ == "__main__":
-    sys.exit(main(sys.argv))
+    sys.exit(gwdata.run_main(main, sys.argv))

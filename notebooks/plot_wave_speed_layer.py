@@ -343,7 +343,7 @@ def figures(d, fit):
             continue
         col = colors.get(tag, f"C{i + 4}")
         v, m, e = np.array(f["vi"]), np.array(f["c_xcorr_mean"]), np.array(f["c_xcorr_se"])
-        ax.errorbar(v, m, yerr=e, fmt="o", color=col, label=f"{tag}: cross-correlation")
+        ax.errorbar(v, m, yerr=np.nan_to_num(e), fmt="o", color=col, label=f"{tag}: cross-correlation")
         ax.plot(f["peak_vi"], f["c_peak_mean"], "x", color=col, alpha=0.6, label=f"{tag}: strain peak picking")
         if "power_law_xcorr" in f:
             p = f["power_law_xcorr"]
@@ -374,7 +374,7 @@ def figures(d, fit):
         rows = np.array(f["local_speed_by_r"][k])
         if len(rows) == 0:
             continue
-        ax.errorbar(rows[:, 0], rows[:, 1], yerr=rows[:, 2], fmt="o-", ms=3,
+        ax.errorbar(rows[:, 0], rows[:, 1], yerr=np.nan_to_num(rows[:, 2]), fmt="o-", ms=3,
                     color=cmap(i / max(len(keys) - 1, 1)), label=f"{float(k):g} m/s")
     ax.set_xlabel("ring pair mid radius (m)"), ax.set_ylabel("local speed d_c / delay (m/s)")
     ax.set_title("local speed ring to ring (cross-correlation), by V_i")
@@ -387,10 +387,10 @@ def figures(d, fit):
         for i, (a, b) in enumerate(p for p in GRAVITY_PAIRS if f"{p[1]}/{p[0]}" in fit["gravity_ratios"]):
             for tag, ls in ((a, "-"), (b, "--")):
                 f = fit["tags"][tag]
-                ax.errorbar(f["vi"], f["c_xcorr_mean"], yerr=f["c_xcorr_se"], fmt="o" + ls, ms=3, color=f"C{i}",
+                ax.errorbar(f["vi"], f["c_xcorr_mean"], yerr=np.nan_to_num(f["c_xcorr_se"]), fmt="o" + ls, ms=3, color=f"C{i}",
                             label=tag)
             rows = np.array(fit["gravity_ratios"][f"{b}/{a}"])
-            bx.errorbar(rows[:, 0], rows[:, 1], yerr=rows[:, 2], fmt="o-", ms=3, color=f"C{i}", label=f"{b} / {a}")
+            bx.errorbar(rows[:, 0], rows[:, 1], yerr=np.nan_to_num(rows[:, 2]), fmt="o-", ms=3, color=f"C{i}", label=f"{b} / {a}")
         bx.axhline(4 ** (1 / 6), color="k", ls=":", lw=1, label="4^(1/6): linear speed, Hertz prestress")
         if "gravity_prediction_4g" in fit:
             pr = np.array(fit["gravity_prediction_4g"])
@@ -419,12 +419,27 @@ def plot(args):
                          + (f" ({e.filename})" if e.filename else "") + "\n")
         return 1
     for tag, f in fit["tags"].items():
-        p = f.get("power_law_xcorr", {})
-        cr = f.get("crossover", {})
-        print(f"{tag}: beta(5-40) = {p.get('beta', float('nan')):.4f} +- {p.get('beta_err', float('nan')):.4f}; "
-              f"c0 = {cr.get('c0', float('nan')):.1f} +- {cr.get('c0_err', float('nan')):.1f} m/s, "
-              f"V* = {cr.get('v_star', float('nan')):.3g} +- {cr.get('v_star_err', float('nan')):.2g} m/s")
+        print(f"{tag}: {fit_summary(f)}")
     return 0
+
+
+def fit_summary(f):
+    """One tag's fits in words; a fit the series cannot give is said so, not printed as nan."""
+    p, cr = f.get("power_law_xcorr"), f.get("crossover", {})
+    n_range = sum(1 for v in f["vi"] if FIT_RANGE[0] <= v <= FIT_RANGE[1])
+    if p:
+        out = f"beta({FIT_RANGE[0]:g}-{FIT_RANGE[1]:g}) = {p['beta']:.4f} +- {p['beta_err']:.4f}; "
+    else:
+        out = (f"beta({FIT_RANGE[0]:g}-{FIT_RANGE[1]:g}) not fitted ({n_range} speed(s) in "
+               f"{FIT_RANGE[0]:g}-{FIT_RANGE[1]:g} m/s, 3 needed); ")
+    if "c0" in cr:
+        out += (f"c0 = {cr['c0']:.1f} +- {cr['c0_err']:.1f} m/s, "
+                f"V* = {cr['v_star']:.3g} +- {cr['v_star_err']:.2g} m/s")
+    elif "error" in cr:
+        out += f"crossover not fitted ({cr['error']})"
+    else:
+        out += f"crossover not fitted ({len(f['vi'])} speed(s), 4 needed)"
+    return out
 
 
 def main(argv):
@@ -444,4 +459,4 @@ def main(argv):
 
 
 if __name__ == "__main__":
-    sys.exit(main(sys.argv))
+    sys.exit(gwdata.run_main(main, sys.argv))

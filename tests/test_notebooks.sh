@@ -8,7 +8,7 @@
 #     the program's files: F_max, tau_N, E_rel/E_K and the per-velocity fit to 1e-9
 #     (the same library and solver; measured 1.1e-10, the CSV's 12 digits), the traces' peak force to 1e-4 and
 #     the final velocities to 1e-5 m/s (granwave.chain's CVODE against the study's RK4 at
-#     its 1e-6 accuracy target; measured 2e-5 relative and 2.3e-7 m/s).
+#     its 1e-6 accuracy target; measured 3.8e-7 relative and 2.3e-7 m/s).
 #  2. plot_falcon.py must exit 2 (not crash) on a missing directory and on a directory
 #     with a required file removed; --module with an --n range without N = 7 exits 2.
 #  2b. notebooks/plot_drop.py draws the committed drop runs (a copy of
@@ -21,6 +21,10 @@
 #  3. Every notebooks/*.ipynb executes headless (nbconvert --execute, Agg backend) with
 #     GRANWAVE set to the binary under test and GRANWAVE_LIB to the library beside it
 #     (<build>/lib, when there); outputs go to a temp dir, never the repo.
+#  4. What docs/notebooks.md quotes from them (the drop's contact time against chain,
+#     the fresh sheets runs, bouncing_diagram's table, the plateau's cases, the paper's
+#     numbers, figure sizes, 1b's 1.1e-10) equals what they printed in 3
+#     (tests/notebook_numbers.py on 3's outputs: nothing runs twice).
 # Exits non-zero with a message on the first failure. Skips (exit 0) only when
 # /usr/bin/jupyter is missing. Python: Debian's /usr/bin/python3 (numpy, matplotlib).
 set -u
@@ -201,4 +205,10 @@ for nb in "${nbs[@]}"; do
     fi
     echo "PASS: notebook $name executed in $(( $(date +%s) - start )) s"
 done
+
+# 4. the numbers docs/notebooks.md quotes from the notebooks against what they printed
+#    above (and the plot_falcon --module comparison of 1b): tests/notebook_numbers.py
+"$PY" "$SRC/tests/notebook_numbers.py" "$SRC" "$tmp/nbout" "$tmp/cmp.log" >"$tmp/nn.log" 2>&1 \
+    || { cat "$tmp/nn.log"; fail "docs/notebooks.md against the notebooks' output"; }
+echo "PASS: docs/notebooks.md against the notebooks' output ($(tail -1 "$tmp/nn.log"))"
 echo "all notebook tests passed"

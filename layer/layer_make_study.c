@@ -32,7 +32,8 @@ static const gw_param make_params[] = {
     CHOICE("solver", solver, "rk4,verlet", "rk4", "NAME",
            "rk4 or verlet (explicit DEM); contact events are not located while settling [rk4]"),
     ROW("height-rm", GW_PARAM_DOUBLE, height_rm, "", 0, 1e6, 0, 0, "0", "H",
-        "keep the particles wholly below H R_m after settling [0 = all]"),
+        "keep the particles wholly below H R_m after settling, then settle those again "
+        "(within t-max) [0 = all]"),
     {.name = "clumps", .type = GW_PARAM_FLAG, .offset = OFF(clumps), .unit = "", .min = 0, .max = 1, .def = "0",
      .help = "type B soil: n rigid clumps (aspect ratio 1-4) instead of n discs"},
     ROW("aspect-max", GW_PARAM_DOUBLE, aspect_max, "", 1, 4, 0, 0, "4", "A",

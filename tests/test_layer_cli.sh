@@ -42,8 +42,8 @@ check "layer-make not settled at --t-max: exit 0, one warning line naming t-max,
 check "layer-make that settles: no warning" "[ ! -s '$tmp/make.err' ]"
 
 "$gw" layer-make --n 60 --width-rm 16 --seed 4 --height-rm 5 --out "$tmp/h.txt" --json > "$tmp/makeh.json"
-check "layer-make --height-rm 5: same settled sample cut at 5 R_m (every top <= 5 R_m, fewer particles, kept ones unchanged)" "python3 - '$tmp' <<'PY'
-import json, sys
+check "layer-make --height-rm 5: the settled sample's particles below 5 R_m (same radii, fewer), settled again under their own weight: the floor carries their weight (0.8-1.2 of it; the cut pile kept the overlaps of the whole pile's weight), and layer-impact takes it" "python3 - '$tmp' <<'PY'
+import json, math, sys
 t = sys.argv[1]
 def parts(p):
     out, head = [], True
@@ -55,16 +55,23 @@ def parts(p):
             head = False
             continue
         if not head:
-            out.append(tuple(f))
+            out.append(tuple(float(v) for v in f))
     return out
 a, h = parts(t + '/a.txt'), parts(t + '/h.txt')
 d = json.load(open(t + '/makeh.json'))
-rm = 0.325
+rm, G, nu, rho, g = 0.325, 4e10, 0.25, 2650.0, 9.81
+def floor_share(ps):  # the floor's Hertz force over the weight (disc law, unit thickness)
+    f = sum(2 * math.sqrt(2 * r) * G / (3 * (1 - nu)) * (r - y) ** 1.5 for x, y, r in ps if r > y)
+    return f / sum(math.pi * r * r * rho * g for x, y, r in ps)
+below = sorted(r for x, y, r in a if y + r <= 5 * rm)
+share = floor_share(h)
 ok = 0 < len(h) < len(a) and d['n'] == len(h) and d['n_removed_above_height'] == len(a) - len(h)
-ok = ok and all(float(y) + float(r) <= 5 * rm for x, y, r in h) and set(h) <= set(a)
-print('kept', len(h), 'of', len(a))
+ok = ok and sorted(r for x, y, r in h) == below and d['converged'] is True and 0.8 <= share <= 1.2
+print('kept', len(h), 'of', len(a), 'floor share', round(share, 4), 'whole pile', round(floor_share(a), 4))
 sys.exit(0 if ok else 1)
 PY"
+"$gw" layer-impact --sample "$tmp/h.txt" --t-max 0.002 --json > "$tmp/imph.json" 2> "$tmp/imph.err"
+check "layer-impact takes the sample layer-make --height-rm wrote (it was refused: its floor carried 1.8 to 4.6 times its weight)" "[ $? -eq 0 ]"
 
 "$gw" layer-impact --sample "$tmp/a.txt" --rb-rm 1 --vi 10 --alpha 30 --t-max 0.005 --exact --json --out "$tmp/out" > "$tmp/imp.json"
 check "layer-impact exits 0" "[ $? -eq 0 ]"

@@ -44,9 +44,34 @@ typedef struct sweep_run {
     long done;
     int fd, failed;
     gw_err err;
+    /* Cases whose run failed on their own (a solver failure, an energy
+     * error above --energy-tol, a step limit): the sweep stopped at the
+     * first one, so a grid with one such point never ran the cases after it
+     * and never got its table (leaving the point out of the grid made it
+     * another sweep, its journal unusable). The other cases run and are
+     * journaled now; these are counted, the first named, and no table is
+     * written (it holds every case). */
+    long nfailed, first_failed;
+    gw_err fail_err;
     pthread_mutex_t lock; /* the journal: one row appended at a time */
     gw_cli_progress prog;
 } sweep_run;
+
+/* A case's own failure, after which the sweep goes on with the others (a bad
+ * value, a file that cannot be read or no memory stop it). */
+static int case_failure(int rc)
+{
+    return rc == GW_ESOLVER || rc == GW_EENERGY || rc == GW_ELIMIT;
+}
+
+/* Record a case's own failure (caller holds the lock or is the only writer). */
+static void case_failed(sweep_run *s, long k, const gw_err *err)
+{
+    if (s->nfailed++ == 0 || k < s->first_failed) {
+        s->first_failed = k;
+        s->fail_err = *err;
+    }
+}
 
 static int run_case(const sweep_run *s, long k, char *row, gw_err *err)
 {
@@ -91,9 +116,12 @@ static int pool_case(void *ctx, long i, gw_err *err)
     if (!row)
         return gw_err_set(err, GW_ENOMEM, "case %ld: out of memory", s->todo[i]);
     int rc = run_case(s, s->todo[i], row, err);
-    if (rc == GW_OK) {
+    if (rc == GW_OK || case_failure(rc)) {
         pthread_mutex_lock(&s->lock);
-        rc = journal(s, row, err);
+        if (rc == GW_OK)
+            rc = journal(s, row, err);
+        else
+            case_failed(s, s->todo[i], err), rc = GW_OK;
         pthread_mutex_unlock(&s->lock);
     }
     free(row);
@@ -159,11 +187,17 @@ static void mpi_master(sweep_run *s, int size)
         if (st.MPI_TAG == TAG_ROW) {
             int rc = journal(s, buf, &err);
             if (rc == GW_OK)
-                gw_cli_progress_report(&s->prog, s->done, s->ntodo);
+                gw_cli_progress_report(&s->prog, s->done + s->nfailed, s->ntodo);
             if (rc != GW_OK && !s->failed) {
                 s->failed = rc;
                 s->err = err;
             }
+        } else if (st.MPI_TAG == TAG_FAIL && buf[0] == 'C') { /* the case's own failure: go on */
+            long k = strtol(buf + 1, NULL, 10);
+            const char *msg = strchr(buf + 1, ' ');
+            gw_err_set(&err, GW_ESOLVER, "%s", msg ? msg + 1 : buf + 1);
+            case_failed(s, k, &err);
+            gw_cli_progress_report(&s->prog, s->done + s->nfailed, s->ntodo);
         } else if (st.MPI_TAG == TAG_FAIL && !s->failed) {
             s->failed = buf[0] == 'I' ? GW_EINVAL : GW_ESOLVER;
             gw_err_set(&s->err, s->failed, "%s", buf + 1);
@@ -195,7 +229,10 @@ static void mpi_worker(sweep_run *s)
         if (rc == GW_OK) {
             MPI_Send(row, (int)strlen(row) + 1, MPI_CHAR, 0, TAG_ROW, MPI_COMM_WORLD);
         } else {
-            snprintf(row, ROW_MAX, "%c%s", rc == GW_EINVAL ? 'I' : 'F', err.msg);
+            if (case_failure(rc))
+                snprintf(row, ROW_MAX, "C%ld %s", k, err.msg);
+            else
+                snprintf(row, ROW_MAX, "%c%s", rc == GW_EINVAL ? 'I' : 'F', err.msg);
             MPI_Send(row, (int)strlen(row) + 1, MPI_CHAR, 0, TAG_FAIL, MPI_COMM_WORLD);
         }
     }
@@ -367,6 +404,12 @@ int gw_cmd_sweep(int argc, char **argv, const gw_sweep_model *const *models, int
             } else if (stop_requested) {
                 fprintf(stderr, "sweep: interrupted after %ld new cases; rerun the same command to resume\n", s.done);
                 code = 130;
+            } else if (s.nfailed) {
+                gw_err_set(&err, GW_ESOLVER, "sweep: %ld of the %ld cases run failed (the first, %s); %ld of the "
+                           "sweep's %ld cases are journaled in %s/journal.csv, no table written (it holds every "
+                           "case): rerun to retry the failed cases", s.nfailed, s.ntodo, s.fail_err.msg,
+                           s.ndone0 + s.done, cfg.ncases, out);
+                code = 1;
             } else if (gw_sweep_write_table(out, &cfg, m, &err) != GW_OK) {
                 code = 1;
             } else if (!quiet) {

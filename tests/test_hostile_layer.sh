@@ -835,14 +835,14 @@ if runs "a layer sweep of 4 cases" sweep "$tmp/w30.ini" --out "$tmp/w30" --quiet
     }
     awk -F, -v OFS=, 'n == 1 && !/^#/ { $3 = "1" $3; n = 2 } !/^#/ && !n { n = 1 } { print }' "$tmp/j30.orig" >"$j30"
     resume30 "a value edited in the second row (that row and the two after it were dropped and rerun)" \
-        "^granwave sweep: .*w30/journal.csv:4: its checksum does not match its values: the journal was edited by hand"
+        "^granwave sweep: .*w30/journal.csv:7: its checksum does not match its values: the journal was edited by hand"
     awk '!/^#/ && !d { d = 1; next } { print }' "$tmp/j30.orig" >"$j30"
     grep -v '^#' "$tmp/w30b/journal.csv" | head -1 >>"$j30"
     resume30 "case 0's row replaced by case 0 of a sweep over another grid (taken for case 0)" \
-        "journal.csv:6: its grid values are not its case's \(a row of another sweep\)"
+        "journal.csv:9: its grid values are not its case's \(a row of another sweep\)"
     grep -v '^#' "$tmp/w30d/journal.csv" | head -1 >>"$j30"
     resume30 "case 0's row of the sweep at t-max 2e-4 pasted (the table took the first; now told by its config hash)" \
-        "journal.csv:7: case 0 ran under config hash [0-9a-f]{16}, not this sweep's [0-9a-f]{16} for it"
+        "journal.csv:10: case 0 ran under config hash [0-9a-f]{16}, not this sweep's [0-9a-f]{16} for it"
     # case 0 again with its steps edited and the checksum recomputed (FNV-1a 32
     # of the row up to its last comma): the same config, other results
     grep -v '^#' "$tmp/j30.orig" | head -1 | /usr/bin/python3 -c "
@@ -856,7 +856,7 @@ for b in body.encode():
     h = ((h ^ b) * 16777619) % 2**32
 print('%s%08x' % (body, h))" >>"$j30"
     resume30 "case 0 journaled twice with different results (the table took the first)" \
-        "journal.csv:7: case 0 is journaled twice with different results \(lines 3 and 7\)"
+        "journal.csv:10: case 0 is journaled twice with different results \(lines 6 and 10\)"
     cp "$tmp/j30.orig" "$j30"; grep -v '^#' "$tmp/j30.orig" | head -1 >>"$j30"
     rm -f "$tmp/w30/results.csv"
     runs "  a journal with one row copied resumes" sweep "$tmp/w30.ini" --out "$tmp/w30" --quiet

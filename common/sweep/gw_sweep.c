@@ -471,15 +471,28 @@ static int add_input(gw_sweep_config *cfg, const char *key, const char *value, l
     return GW_OK;
 }
 
+/* 1 when the values of key name name files the cases read: the model's
+ * read_key only. Every value that named a regular file was taken as one: a
+ * chain sweep ('solver = rk4', 'n = 1:40') run where a file 'rk4' or '5'
+ * happened to be had that file's bytes in its identity, so its rerun from
+ * another directory, or after the file changed, was refused as "another
+ * sweep (different config)", and a change to the file while it ran stopped
+ * it ("solver 'rk4' changed while the sweep ran"). */
+static int names_file(const gw_sweep_config *cfg, const char *name)
+{
+    return cfg->read_key && strcmp(cfg->read_key, name) == 0;
+}
+
 static int find_inputs(const char *path, gw_sweep_config *cfg, gw_err *err)
 {
     long cap = 0;
     int rc = GW_OK;
     for (int i = 0; rc == GW_OK && i < cfg->ngrid; i++)
-        for (int j = 0; rc == GW_OK && j < cfg->grid[i].nvalues; j++)
+        for (int j = 0; rc == GW_OK && names_file(cfg, cfg->grid[i].name) && j < cfg->grid[i].nvalues; j++)
             rc = add_input(cfg, cfg->grid[i].name, cfg->grid[i].values[j], &cap);
     for (int i = 0; rc == GW_OK && i < cfg->nparams; i++)
-        rc = add_input(cfg, cfg->params[i].name, cfg->params[i].values[0], &cap);
+        if (names_file(cfg, cfg->params[i].name))
+            rc = add_input(cfg, cfg->params[i].name, cfg->params[i].values[0], &cap);
     if (rc != GW_OK) {
         gw_sweep_config_free(cfg);
         return gw_err_set(err, rc, "%s: out of memory", path);
@@ -524,12 +537,24 @@ int gw_sweep_case_inputs_check(const gw_sweep_config *cfg, long k, gw_err *err)
     return GW_OK;
 }
 
-/* "# input KEY = VALUE fnv1a64 HEX" lines of cfg, into a new string. */
+/* "# input KEY = VALUE fnv1a64 HEX" lines of cfg, then its "# grid KEY = v1,
+ * v2, ..." lines (the values as the config gives them, ranges listed) and
+ * "# param KEY = VALUE" lines in the config's order, into a new string. A
+ * journal held the config's hash alone: a rerun after a small edit that makes
+ * another sweep (0.1 spelt 1e-1, two [params] lines swapped) was refused as
+ * "another sweep (different config)", naming nothing the user could find. */
 static char *input_lines(const gw_sweep_config *cfg)
 {
     size_t n = 1;
     for (int i = 0; i < cfg->ninputs; i++)
         n += strlen(cfg->inputs[i].key) + strlen(cfg->inputs[i].value) + 48;
+    for (int i = 0; i < cfg->ngrid; i++) {
+        n += strlen(cfg->grid[i].name) + 12;
+        for (int j = 0; j < cfg->grid[i].nvalues; j++)
+            n += strlen(cfg->grid[i].values[j]) + 2;
+    }
+    for (int i = 0; i < cfg->nparams; i++)
+        n += strlen(cfg->params[i].name) + strlen(cfg->params[i].values[0]) + 14;
     char *s = malloc(n), *p = s;
     if (!s)
         return NULL;
@@ -537,7 +562,130 @@ static char *input_lines(const gw_sweep_config *cfg)
     for (int i = 0; i < cfg->ninputs; i++)
         p += gw_snprintf(p, n - (size_t)(p - s), "# input %s = %s fnv1a64 %016llx\n", cfg->inputs[i].key,
                       cfg->inputs[i].value, cfg->inputs[i].hash);
+    for (int i = 0; i < cfg->ngrid; i++) {
+        p += gw_snprintf(p, n - (size_t)(p - s), "# grid %s = ", cfg->grid[i].name);
+        for (int j = 0; j < cfg->grid[i].nvalues; j++)
+            p += gw_snprintf(p, n - (size_t)(p - s), "%s%s", j ? ", " : "", cfg->grid[i].values[j]);
+        p += gw_snprintf(p, n - (size_t)(p - s), "\n");
+    }
+    for (int i = 0; i < cfg->nparams; i++)
+        p += gw_snprintf(p, n - (size_t)(p - s), "# param %s = %s\n", cfg->params[i].name, cfg->params[i].values[0]);
     return s;
+}
+
+/* The journal's "# grid" or "# param" line of key name (sec "grid " or
+ * "param "): its value (the text after " = ") and length, or NULL. nth: the
+ * key's place among the journal's lines of that section. */
+static const char *journal_key(const char *buf, size_t len, const char *sec, const char *name, size_t *vl, int *nth)
+{
+    const size_t sl = strlen(sec), nl = strlen(name);
+    *nth = 0;
+    for (const char *p = memchr(buf, '\n', len); p && (size_t)(p + 1 - buf) < len && p[1] == '#';
+         p = memchr(p + 1, '\n', len - (size_t)(p + 1 - buf))) {
+        const char *line = p + 1, *end = memchr(line, '\n', len - (size_t)(line - buf));
+        if (!end)
+            break;
+        if ((size_t)(end - line) < 2 + sl || memcmp(line + 2, sec, sl) != 0)
+            continue;
+        const char *k = line + 2 + sl;
+        if ((size_t)(end - k) >= nl + 3 && memcmp(k, name, nl) == 0 && memcmp(k + nl, " = ", 3) == 0) {
+            *vl = (size_t)(end - k - nl - 3);
+            return k + nl + 3;
+        }
+        (*nth)++;
+    }
+    return NULL;
+}
+
+/* The number of "# SEC" lines in the journal's head. */
+static int journal_nkeys(const char *buf, size_t len, const char *sec)
+{
+    int n = 0;
+    size_t vl;
+    journal_key(buf, len, sec, "\n", &vl, &n); /* no key is named "\n": counts them all */
+    return n;
+}
+
+/* a and b (n values of a key, or one text a and the list b) are the same
+ * numbers, spelt otherwise: 1 (0.1 and 1e-1) */
+static int same_numbers(const char *a, size_t al, char *const *b, int nb)
+{
+    char *copy = malloc(al + 1), *save = NULL;
+    if (!copy)
+        return 0;
+    memcpy(copy, a, al);
+    copy[al] = '\0';
+    int i = 0, same = 1;
+    for (char *t = strtok_r(copy, ",", &save); same && t; t = strtok_r(NULL, ",", &save), i++) {
+        char *e1, *e2;
+        t = gw_str_trim(t);
+        if (i >= nb) {
+            same = 0;
+            break;
+        }
+        double x = gw_strtod(t, &e1), y = gw_strtod(b[i], &e2);
+        same = e1 != t && !*e1 && e2 != b[i] && !*e2 && x == y;
+    }
+    free(copy);
+    return same && i == nb;
+}
+
+/* An existing journal of another config: name the first key whose place or
+ * value differs from cfg's (journals that record their keys: "# grid" and
+ * "# param" lines). GW_OK when it cannot tell. */
+static int changed_keys(const gw_sweep_config *cfg, const char *buf, size_t len, const char *dir, gw_err *err)
+{
+    static const char *const fix = "remove the journal or choose another output to start this one";
+    const int ng = journal_nkeys(buf, len, "grid "), np = journal_nkeys(buf, len, "param ");
+    if (ng == 0)
+        return GW_OK; /* a journal before these lines */
+    for (int sec = 0; sec < 2; sec++) {
+        const gw_sweep_key *keys = sec ? cfg->params : cfg->grid;
+        const int n = sec ? cfg->nparams : cfg->ngrid, nj = sec ? np : ng;
+        const char *sname = sec ? "param " : "grid ", *what = sec ? "[params]" : "[grid]";
+        for (int i = 0; i < n; i++) {
+            size_t vl = 0;
+            int at = 0;
+            const char *v = journal_key(buf, len, sname, keys[i].name, &vl, &at);
+            if (!v)
+                return gw_err_set(err, GW_EINVAL, "%s: this directory holds another sweep: %s %s is not in the "
+                                  "config of its journal; %s", dir, what, keys[i].name, fix);
+            /* the config's values as the journal writes them */
+            size_t cl = 0;
+            for (int j = 0; j < keys[i].nvalues; j++)
+                cl += strlen(keys[i].values[j]) + (j ? 2 : 0);
+            char *c = malloc(cl + 1), *q = c;
+            if (!c)
+                return gw_err_set(err, GW_ENOMEM, "%s: out of memory", dir);
+            for (int j = 0; j < keys[i].nvalues; j++)
+                q += gw_snprintf(q, cl + 1 - (size_t)(q - c), "%s%s", j ? ", " : "", keys[i].values[j]);
+            const int same = vl == cl && memcmp(v, c, cl) == 0;
+            const int ci = (int)(cl < 160 ? cl : 160), vi = (int)(vl < 160 ? vl : 160);
+            int rc = GW_OK;
+            if (!same && same_numbers(v, vl, keys[i].values, keys[i].nvalues))
+                rc = gw_err_set(err, GW_EINVAL, "%s: this directory holds another sweep: %s %s = %.*s%s here, %.*s%s "
+                                "in its journal, the same numbers spelt otherwise (rows and hashes hold the values as "
+                                "spelt): spell them as the journal does to resume, or %s", dir, what, keys[i].name,
+                                ci, c, ci < (int)cl ? "..." : "", vi, v, vi < (int)vl ? "..." : "", fix);
+            else if (!same)
+                rc = gw_err_set(err, GW_EINVAL, "%s: this directory holds another sweep: %s %s = %.*s%s here, %.*s%s "
+                                "in its journal; %s", dir, what, keys[i].name, ci, c, ci < (int)cl ? "..." : "", vi,
+                                v, vi < (int)vl ? "..." : "", fix);
+            else if (at != i)
+                rc = gw_err_set(err, GW_EINVAL, "%s: this directory holds another sweep: its journal has the %s "
+                                "keys in another order (%s is key %d here, %d there; %s): restore the journal's "
+                                "order to resume, or %s", dir, what, keys[i].name, i + 1, at + 1,
+                                sec ? "each row's config hash is over the [params] in order"
+                                    : "the case numbers would name other combinations", fix);
+            free(c);
+            if (rc != GW_OK)
+                return rc;
+        }
+        if (nj > n)
+            return gw_err_set(err, GW_EINVAL, "%s: this directory holds another sweep: its journal has %d %s keys, "
+                              "the config %d; %s", dir, nj, what, n, fix);
+    }
+    return GW_OK;
 }
 
 /* The content hash that ends a journal's "# input KEY = VALUE fnv1a64 HEX"
@@ -633,12 +781,18 @@ static int config_finish(const char *path, const gw_sweep_model *const *models, 
             return gw_err_set(err, GW_EINVAL, "%s: the grid has more than 1e9 cases", path);
         }
         h = fnv64(h, cfg->grid[i].name);
-        for (int j = 0; j < cfg->grid[i].nvalues; j++)
-            h = fnv64_file(fnv64(h, cfg->grid[i].values[j]), cfg->grid[i].values[j]);
+        const int file = names_file(cfg, cfg->grid[i].name);
+        for (int j = 0; j < cfg->grid[i].nvalues; j++) {
+            h = fnv64(h, cfg->grid[i].values[j]);
+            if (file)
+                h = fnv64_file(h, cfg->grid[i].values[j]);
+        }
     }
-    for (int i = 0; i < cfg->nparams; i++)
-        h = fnv64_file(fnv64(fnv64(h, cfg->params[i].name), cfg->params[i].values[0]),
-                       cfg->params[i].values[0]);
+    for (int i = 0; i < cfg->nparams; i++) {
+        h = fnv64(fnv64(h, cfg->params[i].name), cfg->params[i].values[0]);
+        if (names_file(cfg, cfg->params[i].name))
+            h = fnv64_file(h, cfg->params[i].values[0]);
+    }
     cfg->hash = h;
     return find_inputs(path, cfg, err);
 }
@@ -1057,6 +1211,8 @@ static int journal_check(const char *path, const char *dir, const char *head, co
         int rc = strncmp(buf, "# granwave sweep journal ", 25) == 0 ? changed_input(cfg, buf, len, path, dir, err)
                                                                       : GW_OK;
         const int ours = strncmp(buf, "# granwave sweep journal ", 25) == 0;
+        if (rc == GW_OK && ours)
+            rc = changed_keys(cfg, buf, len, dir, err);
         free(buf);
         if (rc != GW_OK)
             return rc;
@@ -1078,6 +1234,12 @@ static int journal_check(const char *path, const char *dir, const char *head, co
             free(buf);
             return GW_EINVAL;
         }
+        pos = good = (size_t)(nl - buf) + 1;
+    }
+    while (pos < len && (strncmp(buf + pos, "# grid ", 7) == 0 || strncmp(buf + pos, "# param ", 8) == 0)) {
+        const char *nl = memchr(buf + pos, '\n', len - pos); /* the config's keys (input_lines) */
+        if (!nl)
+            break;
         pos = good = (size_t)(nl - buf) + 1;
     }
     long line = 1;

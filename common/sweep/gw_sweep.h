@@ -52,8 +52,9 @@ typedef struct gw_sweep_config {
     long ncases;
     unsigned long hash; /* of the normalised config: a journal belongs to one config */
     const char *read_key; /* the model's read_key (NULL: rows carry no read hash) */
-    /* The values that name a regular file (a layer sample): their content
-     * hash (gw_fnv1a64) when the config was read. Written to the journal and
+    /* The values of the model's read_key (a layer sample; the values of
+     * other keys are text, whatever files they happen to name) that name a
+     * regular file: their content hash (gw_fnv1a64) when the config was read. Written to the journal and
      * the table ("# input KEY = VALUE fnv1a64 HEX"); a resumed sweep whose
      * file changed is refused naming it, and gw_sweep_inputs_check finds a
      * change while the sweep runs. */
@@ -128,9 +129,10 @@ int gw_sweep_row_check(const gw_sweep_config *cfg, const char *row, gw_err *err)
 
 /* Read DIR/journal.csv: done[k] = 1 for every complete row with a valid checksum.
  * A torn last line (no newline or bad checksum) is cut off the file. A new
- * journal gets the config's hash and its input lines; an existing one of
- * another config is refused (GW_EINVAL), naming the input file whose content
- * changed when its "# input" line says so. A row whose case config hash is
+ * journal gets the config's hash, its input lines and its keys ("# grid" and
+ * "# param" lines); an existing one of another config is refused (GW_EINVAL),
+ * naming the input file whose content changed when its "# input" line says
+ * so, else the first key whose value or place differs. A row whose case config hash is
  * not its case's (a row of a sweep with other [params]), or whose read hash is
  * not the sweep's file's, is refused naming the journal, the line and both
  * hashes; so is a journal of the format before rows carried these hashes. */

@@ -26,6 +26,8 @@
 #    before [grid], a range written as a list) resume it, and a journal
 #    without the key lines (an earlier granwave's) still resumes.
 #  4 kept: each row of the table equals `granwave chain --json` of its case.
+#  5 a range as an item of a list (`n = 5:6,` then `7, 8`) was refused at the
+#    case check as "'5:6' is not an integer"; now at the config line, naming the cause.
 set -u
 GW=$(cd "$(dirname "$1")" && pwd)/$(basename "$1") # the test runs in its scratch directory
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
@@ -179,6 +181,18 @@ print(bad)
 PY
 )
 [ "$bad" = 0 ] && ok "4: each of the 8 rows equals granwave chain --json of its case" || ko "4: $bad values differ"
+
+# 5 a range as an item of a list, on one line or continued (it was read as one value
+#   and refused at the case check as "'5:6' is not an integer", naming no cause)
+mkdir -p "$tmp/rng"
+printf '[sweep]\nmodel = chain\n[grid]\nn = 5:6,\n    7, 8\n[params]\nsolver = rk4\n' > "$tmp/rng/c.ini"
+(cd "$tmp/rng" && "$GW" sweep c.ini --out o --check > out 2> err); rc=$?
+if [ $rc = 2 ] && [ "$(wc -l < "$tmp/rng/err")" = 1 ] && grep -q "c.ini:5: n: a range '5:6' cannot be an item of the list" "$tmp/rng/err" &&
+   [ ! -e "$tmp/rng/o" ]; then
+    ok "5: a range as a list item refused naming the cause: $(cat "$tmp/rng/err")"
+else
+    ko "5: exit $rc: $(cat "$tmp/rng/err")"
+fi
 
 echo "$passes passed, $fails failed"
 [ $fails -eq 0 ]

@@ -100,6 +100,12 @@ static int split_values(const char *value, gw_sweep_key *k, char *msg, size_t ml
             free(copy);
             return 0;
         }
+        if (looks_like_range(t)) { /* "5:6, 7": the range was read as one value, "not an integer" */
+            gw_snprintf(msg, mlen, "%s: a range '%s' cannot be an item of the list '%s': give a range A:B "
+                        "alone, or list every value", k->name, t, value);
+            free(copy);
+            return 0;
+        }
         k->values[k->nvalues++] = dupstr(t);
     }
     free(copy);

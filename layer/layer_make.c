@@ -237,13 +237,20 @@ static int box_params(const gw_layer_params *lp0, const gw_layer_make_params *m,
 /* Settle the n discs b (softened by modulus_factor first when it is < 1) until
  * the kinetic energy is below ke_threshold M g R_m; b receives the settled
  * positions. */
-static int settle_all(const gw_layer_params *lp, const gw_layer_make_params *m, int n, gw_layer_body *b,
-                      double *t, double *ke, int *conv, gw_layer_make_result *res, gw_err *err)
+/* The kinetic energy below which the n particles b are settled: ke_threshold M g R_m. */
+static double settle_threshold(const gw_layer_params *lp, const gw_layer_make_params *m, int n,
+                               const gw_layer_body *b)
 {
     double mtot = 0;
     for (int i = 0; i < n; i++)
         mtot += gw_layer_mass(lp, b[i].r);
-    const double thr = m->ke_threshold * mtot * lp->gravity * m->rm;
+    return m->ke_threshold * mtot * lp->gravity * m->rm;
+}
+
+static int settle_all(const gw_layer_params *lp, const gw_layer_make_params *m, int n, gw_layer_body *b,
+                      double *t, double *ke, int *conv, gw_layer_make_result *res, gw_err *err)
+{
+    const double thr = settle_threshold(lp, m, n, b);
     int rc = GW_OK;
     *t = *ke = 0;
     *conv = 0;
@@ -285,10 +292,7 @@ static int settle_all(const gw_layer_params *lp, const gw_layer_make_params *m, 
 static int relax_trimmed(const gw_layer_params *lp, const gw_layer_make_params *m, int n, gw_layer_body *b,
                          double *t, double *ke, int *conv, gw_layer_make_result *res, gw_err *err)
 {
-    double mtot = 0;
-    for (int i = 0; i < n; i++)
-        mtot += gw_layer_mass(lp, b[i].r);
-    const double thr = m->ke_threshold * mtot * lp->gravity * m->rm;
+    const double thr = settle_threshold(lp, m, n, b);
     res->t_judge = *t + SETTLE_CHUNKS_MIN * SETTLE_CHUNK;
     double tr = 0;
     int rc = settle(lp, m, *t, m->t_max - *t, n, b, thr, &tr, ke, conv, &res->steps, &res->rebuilds, err);

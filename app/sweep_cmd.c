@@ -43,6 +43,7 @@ typedef struct sweep_run {
     long ntodo, ndone0;
     long done;
     int fd, failed;
+    double synced_ms; /* gw_clock_ms of the journal's last fsync */
     gw_err err;
     /* Cases whose run failed on their own (a solver failure, an energy
      * error above --energy-tol, a step limit): the sweep stopped at the
@@ -102,7 +103,7 @@ static int journal(sweep_run *s, const char *row, gw_err *err)
     if (rc == GW_OK)
         rc = gw_sweep_row_check(s->cfg, row, err);
     if (rc == GW_OK)
-        rc = gw_sweep_journal_append(s->fd, row, err);
+        rc = gw_sweep_journal_append(s->fd, row, &s->synced_ms, err);
     if (rc == GW_OK)
         s->done++;
     return rc;
@@ -410,7 +411,8 @@ int gw_cmd_sweep(int argc, char **argv, const gw_sweep_model *const *models, int
                            "case): rerun to retry the failed cases", s.nfailed, s.ntodo, s.fail_err.msg,
                            s.ndone0 + s.done, cfg.ncases, out);
                 code = 1;
-            } else if (gw_sweep_write_table(out, &cfg, m, &err) != GW_OK) {
+            } else if (gw_sweep_journal_sync(s.fd, &s.synced_ms, &err) != GW_OK ||
+                       gw_sweep_write_table(out, &cfg, m, &err) != GW_OK) {
                 code = 1;
             } else if (!quiet) {
                 fprintf(stderr, "sweep: %ld cases in %.1f s; table %s/results.csv\n", s.done,
@@ -421,8 +423,14 @@ int gw_cmd_sweep(int argc, char **argv, const gw_sweep_model *const *models, int
     if (code != 0 && code != 130 && rank == 0 && err.msg[0])
         fprintf(stderr, strncmp(err.msg, "sweep", 5) == 0 ? "granwave %s\n" : "granwave sweep: %s\n", err.msg);
 finish:
-    if (s.fd >= 0) /* after the table: the journal's lock held to the end */
+    if (s.fd >= 0) { /* after the table: the journal's lock held to the end */
+        gw_err e2; /* rows since the last fsync (a stop, a failure) made durable too */
+        if (rank == 0 && s.done > 0 && gw_sweep_journal_sync(s.fd, NULL, &e2) != GW_OK && code == 0) {
+            fprintf(stderr, "granwave sweep: %s\n", e2.msg);
+            code = 1;
+        }
         close(s.fd);
+    }
     free(done);
     free(s.todo);
     gw_sweep_config_free(&cfg);

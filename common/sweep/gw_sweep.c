@@ -2,7 +2,11 @@
  * gw_sweep.c: sweep configs (libinih), grid expansion, the append-only journal
  * and the final table (see gw_sweep.h). A journal row is complete only with its
  * trailing FNV-1a checksum and newline, so a row torn by kill -9 is detected and
- * dropped on the next run; rows are appended with one write() and fsync().
+ * dropped on the next run; rows are appended with one write() each (a kill
+ * loses none: the row is in the kernel's cache once write() returns) and the
+ * journal is fsynced at most every GW_SWEEP_SYNC_MS and at the sweep's end, so
+ * a power cut loses at most the rows of that interval, which the rerun runs
+ * again. An fsync per row made a 0.32 ms case cost 3.7 ms.
  */
 #define _POSIX_C_SOURCE 200809L
 #include <errno.h>
@@ -1315,12 +1319,24 @@ static int journal_check(const char *path, const char *dir, const char *head, co
     return GW_OK;
 }
 
-int gw_sweep_journal_append(int fd, const char *row, gw_err *err)
+int gw_sweep_journal_append(int fd, const char *row, double *synced_ms, gw_err *err)
 {
     size_t n = strlen(row);
     ssize_t w = write(fd, row, n);
-    if (w != (ssize_t)n || fsync(fd) != 0)
+    if (w != (ssize_t)n)
         return gw_err_set(err, GW_EIO, "sweep journal: write failed: %s", strerror(errno));
+    const double now = gw_clock_ms();
+    if (!synced_ms || now - *synced_ms >= GW_SWEEP_SYNC_MS)
+        return gw_sweep_journal_sync(fd, synced_ms, err);
+    return GW_OK;
+}
+
+int gw_sweep_journal_sync(int fd, double *synced_ms, gw_err *err)
+{
+    if (fsync(fd) != 0)
+        return gw_err_set(err, GW_EIO, "sweep journal: fsync failed: %s", strerror(errno));
+    if (synced_ms)
+        *synced_ms = gw_clock_ms();
     return GW_OK;
 }
 

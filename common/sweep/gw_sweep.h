@@ -158,8 +158,14 @@ int gw_sweep_inputs_check(const gw_sweep_config *cfg, gw_err *err);
  * sample, the extra time growing with the samples' size and number. */
 int gw_sweep_case_inputs_check(const gw_sweep_config *cfg, long k, gw_err *err);
 
-/* Append one row to DIR/journal.csv with a single write and fsync. */
-int gw_sweep_journal_append(int fd, const char *row, gw_err *err);
+/* Append one row to DIR/journal.csv with a single write; fsync it when
+ * *synced_ms (gw_clock_ms of the last fsync, updated; NULL: every row) is
+ * GW_SWEEP_SYNC_MS old or more. A killed process loses no written row; a power
+ * cut at most the rows of the last GW_SWEEP_SYNC_MS, which a rerun runs again. */
+#define GW_SWEEP_SYNC_MS 250.0
+int gw_sweep_journal_append(int fd, const char *row, double *synced_ms, gw_err *err);
+/* fsync the journal now (the sweep's end, or a stop): *synced_ms updated. */
+int gw_sweep_journal_sync(int fd, double *synced_ms, gw_err *err);
 
 /* Write DIR/results.csv (header, rows sorted by case) atomically from the journal. */
 int gw_sweep_write_table(const char *dir, const gw_sweep_config *cfg, const gw_sweep_model *m,

@@ -104,6 +104,32 @@ static int refuse(const char *what, const char *fmt, const char *arg)
     return 2;
 }
 
+/* The own --help of the two top-level commands, as every command has one
+ * (`granwave version --help` and `granwave help --help` exited 2, "unexpected
+ * argument" / "unknown command '--help'"); `help version` and `help help`
+ * print the same, as `help COMMAND` is `COMMAND --help` for every command. */
+static int version_usage(void)
+{
+    printf("usage: granwave version [--json]\n\n"
+           "Print the program's version. --json: one JSON object with the version and\n"
+           "those of the libraries as loaded at run time (sundials, gsl, fftw, cjson,\n"
+           "hdf5; null without HDF5).\n");
+    return stdout_checked(NULL, 0);
+}
+
+static int help_usage(void)
+{
+    printf("usage: granwave help [COMMAND]\n\n"
+           "Without COMMAND the list of commands (as granwave --help); with COMMAND that\n"
+           "command's options, as granwave COMMAND --help.\n");
+    return stdout_checked(NULL, 0);
+}
+
+static int is_help_flag(const char *a)
+{
+    return strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0;
+}
+
 /* granwave help [COMMAND] (also --help, -h): the list, or the command's own
  * --help; anything more is refused, never ignored */
 static int help(int argc, char **argv)
@@ -112,10 +138,10 @@ static int help(int argc, char **argv)
         return refuse(argv[1], "unexpected argument '%s' (usage: granwave help [COMMAND])", argv[3]);
     if (argc == 3) {
         const command *c = find_command(argv[2]);
-        if (!c && (strcmp(argv[2], "version") == 0 || strcmp(argv[2], "help") == 0)) {
-            usage(stdout); /* their help is their line in the list */
-            return stdout_checked(NULL, 0);
-        }
+        if (!c && strcmp(argv[2], "version") == 0)
+            return version_usage();
+        if (!c && (strcmp(argv[2], "help") == 0 || is_help_flag(argv[2])))
+            return help_usage();
         if (!c)
             return refuse(argv[1], "unknown command '%s' (see granwave --help)", argv[2]);
         char *h[] = {"--help", NULL};
@@ -129,14 +155,20 @@ static int help(int argc, char **argv)
  * at run time (the provenance a bug report or a paper's methods needs) */
 static int version(int argc, char **argv)
 {
-    int json = 0;
+    int json = 0, want_help = 0;
     for (int i = 2; i < argc; i++) {
+        if (is_help_flag(argv[i])) { /* as a command's --help among its flags */
+            want_help = 1;
+            continue;
+        }
         if (strcmp(argv[i], "--json") != 0)
             return refuse(argv[1], "unexpected argument '%s' (usage: granwave version [--json])", argv[i]);
         if (json)
             return refuse(argv[1], "%s: given twice", argv[i]);
         json = 1;
     }
+    if (want_help)
+        return version_usage();
     if (!json) {
         printf("granwave %s\n", gw_version());
         return stdout_checked(NULL, 0);

@@ -79,8 +79,11 @@ static const gw_param falcon_params[] = {
      .metavar = "H,H..", .help = "drop heights, mm, v = sqrt(2 g h), g the gravity or 9.81 when off ['none' to skip] [1.9,2.9,3.1,5.1]"},
     {.name = "n", .type = GW_PARAM_RANGE, .offset = OWN(n), .unit = "", .min = 1, .max = 100000, .def = "1:40",
      .metavar = "A:B", .help = "column sizes [1:40]"},
+    /* no default in the table: not given (NaN) is the default target
+     * FALCON_ACCURACY_DEFAULT, and a value given, even that one, is asked for
+     * (pick_solver), as the command's --accuracy */
     {.name = "accuracy", .type = GW_PARAM_DOUBLE, .offset = OWN(accuracy), .unit = "", .min = 0, .max = 1e-2,
-     .def = "1e-6", .metavar = "A", /* FALCON_ACCURACY_DEFAULT */
+     .metavar = "A",
      .help = "relative accuracy of F_max and tau_N when no solver option is given: RK4, dt = T_c/M with M "
              "from a measured convergence study [1e-6]; 0: the solver options as given"},
     {.name = "jobs", .type = GW_PARAM_LONG, .offset = OWN(jobs), .unit = "", .min = 0, .max = 1024, .def = "0",
@@ -306,13 +309,18 @@ static int pick_solver(const gw_chain_falcon_setup *s, gw_chain_resolved *r, dou
                       s->col.atol == d.atol && s->col.dt == d.dt;
     gw_chain_setup_clear(&d);
     *used = 0;
-    /* an accuracy other than the default was asked for: where it cannot act it
-     * is refused, as the command refuses --accuracy (not silently ignored) */
-    const int asked = s->accuracy != FALCON_ACCURACY_DEFAULT;
-    if (s->accuracy > 0 && gw_chain_rk4_steps_per_tc(s->accuracy) <= 0)
+    /* an accuracy given (the row set, to any value: NaN is not given) is asked
+     * for: where it cannot act it is refused, as the command refuses --accuracy
+     * (not silently ignored). Before, "asked" was a value other than the
+     * default, so accuracy=1e-6 given with a damped column or a solver option
+     * ran the solver as given where `granwave falcon --accuracy 1e-6` is
+     * refused (exit 2). */
+    const int asked = !isnan(s->accuracy);
+    const double acc = asked ? s->accuracy : FALCON_ACCURACY_DEFAULT;
+    if (acc > 0 && gw_chain_rk4_steps_per_tc(acc) <= 0)
         return gw_err_set(err, GW_EINVAL, "accuracy: %g outside [1e-9, 1e-2] (or 0: the solver options as given)",
-                          s->accuracy);
-    if (!(s->accuracy > 0))
+                          acc);
+    if (!(acc > 0))
         return GW_OK;
     if (!at_defaults)
         return asked ? gw_err_set(err, GW_EINVAL, "accuracy: give either accuracy or the solver options") : GW_OK;
@@ -321,8 +329,8 @@ static int pick_solver(const gw_chain_falcon_setup *s, gw_chain_resolved *r, dou
                                                   "without gravity on a Hertz wall, without sensor body or guide "
                                                   "friction; give the solver instead")
                      : GW_OK;
-    gw_chain_rk4_study_apply(&r->run, &r->params, s->accuracy, vmax, s->col.dt_out != 0); /* checked above */
-    *used = s->accuracy;
+    gw_chain_rk4_study_apply(&r->run, &r->params, acc, vmax, s->col.dt_out != 0); /* checked above */
+    *used = acc;
     return GW_OK;
 }
 

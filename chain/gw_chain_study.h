@@ -189,7 +189,10 @@ typedef struct gw_chain_falcon_setup {
     long n[2];             /* column sizes [1:40] */
     double accuracy;       /* relative accuracy of F_max and tau_N for the RK4 step
                               study, used when every solver row of col is at its
-                              default (0: col's solver rows as they are) [1e-6] */
+                              default (0: col's solver rows as they are) [NaN: not
+                              given, 1e-6; a value given, 1e-6 too, is refused where
+                              it cannot act (a solver row set, a column outside the
+                              step study), as granwave falcon --accuracy] */
     long jobs;             /* threads [0 = one per CPU] */
     int traces;            /* not a row (C only): 1 also runs the traces of N = 7, 15, 30
                               (those <= n[1]) at the first velocity into the outcome's

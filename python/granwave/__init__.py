@@ -201,7 +201,14 @@ def falcon(*, progress=None, **kwargs):
     # As `granwave falcon`: the accuracy target picks RK4 only when no solver
     # option is given. The library sees values, not keywords, and took
     # solver="cvode" (its default's value) as not given: it ran RK4 instead.
-    if "accuracy" not in kwargs and any(kwargs.get(k) is not None for k in _SOLVER_KEYWORDS):
+    # Both given: refused, as the command refuses --accuracy with a solver
+    # option (the library saw solver="cvode", its default's value, as not
+    # given and ran RK4 by the accuracy instead).
+    solver_given = any(kwargs.get(k) is not None for k in _SOLVER_KEYWORDS)
+    if solver_given and kwargs.get("accuracy") is not None:
+        if kwargs["accuracy"] != 0:
+            raise GranwaveValueError("falcon: accuracy: give either accuracy or the solver options", _core.GW_EINVAL)
+    elif solver_given:
         kwargs["accuracy"] = 0
     return _study("falcon").run(kwargs, progress)
 

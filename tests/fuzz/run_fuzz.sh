@@ -21,7 +21,7 @@ clang $CF -o "$out/fuzz_cli" "$SRC/tests/fuzz/fuzz_cli.c" $common -lcjson -lm
 clang $CF -o "$out/fuzz_sweep_journal" "$SRC/tests/fuzz/fuzz_sweep_journal.c" "$SRC/common/sweep/gw_sweep.c" $common \
     -linih -lcjson -lm
 # the sweep table layer-stats reads, and the whole analysis after it (B.31 fit: GSL)
-clang $CF -o "$out/fuzz_stats_table" "$SRC/tests/fuzz/fuzz_stats_table.c" "$SRC"/common/stats/*.c "$SRC/common/gw_fit.c" \
+clang $CF -o "$out/fuzz_stats_table" "$SRC/tests/fuzz/fuzz_stats_table.c" "$SRC"/common/stats/*.c "$SRC/common/gw_fit.c" "$SRC/common/gw_forklock.c" \
     $common -lcjson -lgsl -lgslcblas -lm
 # The layer sample reader (text, and HDF5 when the build has it: inputs up to
 # 16 kB so that the seed HDF5 samples fit). Without HDF5 flags for clang the

@@ -205,8 +205,8 @@ static int run_column(const gw_chain_dispersion_setup *s, gw_chain_dispersion_ou
     if (rc != GW_OK)
         return rc;
     o.solver = type; /* cvode unless solver is given, as the chain's default */
-    o.sp.rtol = isnan(s->rtol) ? 1e-12 : s->rtol; /* the tolerances of `granwave chain` */
-    o.sp.atol = isnan(s->atol) ? 1e-12 : s->atol;
+    o.sp.rtol = isnan(s->rtol) ? GW_CHAIN_TOL_DEFAULT : s->rtol; /* the tolerances of `granwave chain` */
+    o.sp.atol = isnan(s->atol) ? GW_CHAIN_TOL_DEFAULT : s->atol;
     o.dt_out = gw_chain_tau1(p.mass, p.kwall, p.v_imp) / 200;
     gw_chain *ch = NULL;
     gw_chain_trace tr; /* the wall force only: the spectrum needs no bead series */

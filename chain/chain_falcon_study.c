@@ -303,11 +303,11 @@ static int run_traces(gw_chain_falcon_outcome *out, const gw_chain_params *p0, c
 static int pick_solver(const gw_chain_falcon_setup *s, gw_chain_resolved *r, double vmax, double *used,
                        gw_err *err)
 {
-    gw_chain_setup d;
-    gw_chain_setup_init(&d);
-    int at_defaults = s->col.solver == d.solver && s->col.method == d.method && s->col.rtol == d.rtol &&
-                      s->col.atol == d.atol && s->col.dt == d.dt;
-    gw_chain_setup_clear(&d);
+    /* any solver row given, even at its default's value (solver = cvode), is
+     * the solver as given: before the rows had a "not given" state, a C
+     * caller's solver = cvode ran RK4 by the accuracy target */
+    const int at_defaults = s->col.solver < 0 && s->col.method < 0 && isnan(s->col.rtol) && isnan(s->col.atol) &&
+                            isnan(s->col.dt);
     *used = 0;
     /* an accuracy given (the row set, to any value: NaN is not given) is asked
      * for: where it cannot act it is refused, as the command refuses --accuracy

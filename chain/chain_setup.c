@@ -245,8 +245,16 @@ static int resolve_run(const gw_chain_setup *s, gw_chain_run_opts *o, gw_err *er
 {
     char sname[16], mname[16];
     *o = gw_chain_run_opts_default();
-    o->solver = gw_solver_type_find(choice(s, "solver", sname, sizeof sname));
-    int method = gw_solver_method_find(choice(s, "method", mname, sizeof mname));
+    /* the solver rows have no table default: not given (-1, NaN) is cvode,
+     * its default method, 1e-12 and the default step, so that a study that
+     * picks its own solver (falcon by its accuracy) can tell a row given at
+     * the default's value from one not given */
+    o->solver = s->solver < 0 ? gw_solver_cvode : gw_solver_type_find(choice(s, "solver", sname, sizeof sname));
+    if (s->solver < 0)
+        gw_snprintf(sname, sizeof sname, "%s", gw_solver_type_name(o->solver));
+    int method = s->method < 0 ? GW_METHOD_DEFAULT : gw_solver_method_find(choice(s, "method", mname, sizeof mname));
+    if (s->method < 0)
+        gw_snprintf(mname, sizeof mname, "default");
     if (!o->solver || method < 0) /* the table's choices are names the solver layer knows */
         return gw_err_set(err, GW_EINVAL, "solver: unknown solver '%s' or method '%s'", sname, mname);
     int ok = method == GW_METHOD_DEFAULT ||
@@ -261,9 +269,9 @@ static int resolve_run(const gw_chain_setup *s, gw_chain_run_opts *o, gw_err *er
     if (rc != GW_OK)
         return rc;
     o->sp.method = method;
-    o->sp.rtol = s->rtol;
-    o->sp.atol = s->atol;
-    o->sp.dt = s->dt;
+    o->sp.rtol = isnan(s->rtol) ? GW_CHAIN_TOL_DEFAULT : s->rtol;
+    o->sp.atol = isnan(s->atol) ? GW_CHAIN_TOL_DEFAULT : s->atol;
+    o->sp.dt = isnan(s->dt) ? 0 : s->dt;
     o->sp.dt_max = s->dt_max;
     o->sp.max_steps = s->max_steps;
     o->t_max = s->t_max;
@@ -356,8 +364,9 @@ int gw_chain_setup_resolve(const gw_chain_setup *s, gw_chain_resolved *r, gw_err
     p->gamma = isnan(s->gamma) ? 0 : s->gamma;
     p->alpha = isnan(s->alpha) ? 0 : s->alpha;
     if ((rc = check_damping(s, err)) != GW_OK ||
-        (rc = gw_solver_tolerances_check(s->rtol, s->atol, "rtol", "atol", err)) != GW_OK ||
-        (rc = resolve_run(s, &r->run, err)) != GW_OK || (rc = gw_chain_params_validate(p, err)) != GW_OK ||
+        (rc = resolve_run(s, &r->run, err)) != GW_OK ||
+        (rc = gw_solver_tolerances_check(r->run.sp.rtol, r->run.sp.atol, "rtol", "atol", err)) != GW_OK ||
+        (rc = gw_chain_params_validate(p, err)) != GW_OK ||
         (rc = check_wall(s, err)) != GW_OK)
         return rc;
     r->law = s->sheet_law < 0 ? GW_SHEET_FITTED : (gw_sheet_law)s->sheet_law;

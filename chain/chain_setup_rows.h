@@ -86,13 +86,13 @@ _Static_assert(GW_SHEET_FITTED == 0 && GW_SHEET_HERTZ == 1 && GW_SHEET_LAYER == 
         "calibrate gamma/alpha so one bead on the wall rebounds with E, in (0, 1)"), \
     ROW("restitution-v", GW_PARAM_DOUBLE, restitution_v, "m/s", GW_CHAIN_VIMP_MIN, GW_CHAIN_VIMP_MAX, 0, NULL, "V", \
         "impact velocity of that calibration, m/s [v_imp]"), \
-    CHOICE("solver", solver, "cvode,arkode,rk4", "cvode", "NAME", solver_help), \
-    CHOICE("method", method, "default,bdf,adams,erk,dirk,imex", "default", "NAME", \
+    CHOICE("solver", solver, "cvode,arkode,rk4", NULL, "NAME", solver_help), \
+    CHOICE("method", method, "default,bdf,adams,erk,dirk,imex", NULL, "NAME", \
            "cvode: bdf|adams; arkode: erk|dirk|imex [bdf / erk]"), \
-    ROW("rtol", GW_PARAM_DOUBLE, rtol, "", GW_TOL_MIN, GW_TOL_MAX, 0, "1e-12", "R", "relative tolerance [1e-12]"), \
-    ROW("atol", GW_PARAM_DOUBLE, atol, "", GW_TOL_MIN, GW_TOL_MAX, 0, "1e-12", "A", \
+    ROW("rtol", GW_PARAM_DOUBLE, rtol, "", GW_TOL_MIN, GW_TOL_MAX, 0, NULL, "R", "relative tolerance [1e-12]"), \
+    ROW("atol", GW_PARAM_DOUBLE, atol, "", GW_TOL_MIN, GW_TOL_MAX, 0, NULL, "A", \
         "absolute tolerance in units of the overlap and velocity scales [1e-12]"), \
-    ROW("dt", GW_PARAM_DOUBLE, dt, "s", 0, 1, 0, "0", "DT", dt_help), \
+    ROW("dt", GW_PARAM_DOUBLE, dt, "s", 0, 1, 0, NULL, "DT", dt_help), \
     /* 0 is not "unlimited": the run caps the step at a quarter of the shortest \
      * binary contact at 2 v_imp (chain_collide.c, chain_drop.c; the settings \
      * record it), which the help said nothing of until the fifteenth pass */ \

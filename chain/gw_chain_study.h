@@ -30,6 +30,8 @@ GW_BEGIN_DECLS /* the exported interface, C linkage (gw_api.h) */
  * diamond, R = 1 m) has k ~ 1e12, the softest sheet of Table 2 K_eff ~ 1e6. */
 #define GW_CHAIN_K_MIN 1e3
 #define GW_CHAIN_K_MAX 1e14
+/* the column's tolerances when rtol, atol are not given (CVODE, ARKode) */
+#define GW_CHAIN_TOL_DEFAULT 1e-12
 
 /* Work of a study over a range of N (falcon, wavespeed, softwall): a column of
  * N beads runs to t_max = 20 (N T_q + tau_1) with steps set by the contact time,
@@ -86,10 +88,15 @@ typedef struct gw_chain_setup {
     double gamma, alpha;  /* damping constants [NaN: not given = 0] */
     double restitution;   /* calibrate gamma/alpha to this one-bead restitution [NaN: off] */
     double restitution_v; /* impact velocity of the calibration, m/s [NaN: vimp] */
-    int solver;           /* cvode, arkode, rk4 (choice) [cvode] */
-    int method;           /* default, bdf, adams, erk, dirk, imex (choice) [default] */
-    double rtol, atol;    /* tolerances [1e-12] */
-    double dt, dt_max;    /* s [0: auto: T_c/400 (rk4); a quarter of the shortest binary contact at 2 v_imp] */
+    /* the solver rows solver, method, rtol, atol and dt have a "not given"
+     * state (-1, NaN), resolved to cvode, its default method, 1e-12 and 0: a
+     * study that picks its own solver (falcon by its accuracy target) runs
+     * the solver as given when any of them is set, even to that value */
+    int solver;           /* cvode, arkode, rk4 (choice) [-1: not given = cvode] */
+    int method;           /* default, bdf, adams, erk, dirk, imex (choice) [-1: not given = default] */
+    double rtol, atol;    /* tolerances [NaN: not given = GW_CHAIN_TOL_DEFAULT] */
+    double dt, dt_max;    /* s [dt NaN: not given = 0; 0: auto: T_c/400 (rk4); dt_max 0: a quarter of the
+                           * shortest binary contact at 2 v_imp] */
     long max_steps;       /* steps between outputs [1e7] */
     double t_max;         /* s [0: 20 (n T_q + tau_1)] */
     double dt_out;        /* sampling interval, s [0: tau_1/200] */

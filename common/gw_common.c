@@ -138,6 +138,18 @@ int gw_warnings_add(char **list, const char *fmt, ...)
     return grown ? GW_OK : GW_ENOMEM;
 }
 
+/* The end of a number's text: blanks after it are allowed, as strtod and
+ * strtol allow them before it ("0.3, 0.5" and "0.3 , 0.5" alike); before the
+ * sixteenth session of stage 2, ' 5' was 5 and '5 ' not an integer. */
+static int number_ends(const char *s, const char *end)
+{
+    if (end == s)
+        return 0;
+    while (*end == ' ' || *end == '\t' || *end == '\n' || *end == '\r' || *end == '\f' || *end == '\v')
+        end++;
+    return *end == '\0';
+}
+
 int gw_parse_double(const char *s, const char *name, double *out, gw_err *err)
 {
     if (!out)
@@ -147,7 +159,7 @@ int gw_parse_double(const char *s, const char *name, double *out, gw_err *err)
     char *end = NULL;
     errno = 0;
     double v = gw_strtod(s, &end);
-    if (end == s || *end != '\0')
+    if (!number_ends(s, end))
         return gw_err_set(err, GW_EINVAL, "%s: '%s' is not a number", name, s);
     if (!isfinite(v) || (errno == ERANGE && fabs(v) >= 1.0))
         return gw_err_set(err, GW_EINVAL, "%s: '%s' is not a finite number", name, s);
@@ -165,7 +177,7 @@ int gw_parse_long(const char *s, const char *name, long lo, long hi, long *out, 
     char *end = NULL;
     errno = 0;
     long v = strtol(s, &end, 10);
-    if (end == s || *end != '\0')
+    if (!number_ends(s, end))
         return gw_err_set(err, GW_EINVAL, "%s: '%s' is not an integer", name, s);
     if (errno == ERANGE || v < lo || v > hi)
         return gw_err_set(err, GW_EINVAL, "%s: %s is outside [%ld, %ld]", name, s, lo, hi);

@@ -114,6 +114,11 @@ def case_from_module(name, gw=None):
     kw = _kwargs([*CASES[name], *DAMPING])
     r = gw.drop(**kw)
     defaults = {p["keyword"]: p["default"] for p in gw.params("drop")}
+    # the solver rows have no table default (not given: cvode, its default
+    # method, rtol = atol = 1e-12, as docs/library.md says); the program's
+    # drop.json records those values
+    defaults.update({k: v for k, v in (("solver", "cvode"), ("method", "default"), ("rtol", 1e-12),
+                                       ("atol", 1e-12)) if defaults.get(k) is None})
     im = r["impacts"]
     impacts = [{c: im[c][i] for c in im} for i in range(len(im["f_max"]))]
     wp = r["wall_peaks"]

@@ -13,6 +13,8 @@
  * and 1e-6 with solver rk4, are refused naming "accuracy"; 1e-7 given with
  * damping refused as before; not given with damping runs the solver as given
  * (accuracy 0), and accuracy 0 with damping too.
+ * The solver rows by value (the sixteenth session of stage 2; the 13 checks
+ * below it all fail on 68a27d7).
  */
 #include <math.h>
 #include <string.h>
@@ -80,5 +82,58 @@ int main(void)
     rc = run((const char *const[]){"accuracy", "0", "damping", "kk", "restitution", "0.9", NULL}, &acc, &steps, msg,
              sizeof msg);
     gw_test_true(rc == GW_OK && acc == 0 && steps == 0, "0 given, damped: the solver as given");
+
+    /* The solver rows at their defaults' values (the sixteenth session of
+     * stage 2): the rows had table defaults (cvode, default, 1e-12, 1e-12, 0),
+     * so a C caller's solver = cvode was "not given" and ran RK4 by the
+     * accuracy target, and accuracy 1e-6 with it was not refused. They now
+     * have a "not given" state; any value given is the solver as given. */
+    gw_chain_falcon_setup_init(&f);
+    gw_test_true(f.col.solver < 0 && f.col.method < 0 && isnan(f.col.rtol) && isnan(f.col.atol) && isnan(f.col.dt),
+                 "setup_init: solver, method, rtol, atol, dt not given");
+    gw_chain_falcon_setup_clear(&f);
+    static const char *const by_value[][2] = {{"solver", "cvode"}, {"method", "default"}, {"rtol", "1e-12"},
+                                              {"atol", "1e-12"}, {"dt", "0"}};
+    for (int i = 0; i < 5; i++) {
+        rc = run((const char *const[]){by_value[i][0], by_value[i][1], NULL}, &acc, &steps, msg, sizeof msg);
+        printf("  %s = %s: rc %d accuracy %g steps %d\n", by_value[i][0], by_value[i][1], rc, acc, steps);
+        char what[128];
+        snprintf(what, sizeof what, "%s = %s given (the default's value): the solver as given", by_value[i][0],
+                 by_value[i][1]);
+        gw_test_true(rc == GW_OK && acc == 0 && steps == 0, what);
+        rc = run((const char *const[]){by_value[i][0], by_value[i][1], "accuracy", "1e-6", NULL}, &acc, &steps, msg,
+                 sizeof msg);
+        snprintf(what, sizeof what, "%s = %s with accuracy 1e-6: refused", by_value[i][0], by_value[i][1]);
+        gw_test_true(rc == GW_EINVAL && strstr(msg, "either accuracy or the solver options") != NULL, what);
+    }
+    /* the struct's field set by value, as a C caller writes it */
+    gw_chain_falcon_setup_init(&f);
+    gw_err err = {0};
+    rc = gw_param_set(gw_chain_falcon_setup_params(), &f, "n", "2:3", &err);
+    rc = rc == GW_OK ? gw_param_set(gw_chain_falcon_setup_params(), &f, "heights", "none", &err) : rc;
+    f.jobs = 1;
+    f.col.solver = 0; /* the first choice, cvode */
+    gw_chain_falcon_outcome o;
+    memset(&o, 0, sizeof o);
+    rc = rc == GW_OK ? gw_chain_falcon_run(&f, NULL, NULL, &o, &err) : rc;
+    gw_test_true(rc == GW_OK && o.accuracy == 0 && o.steps_per_tc == 0, "col.solver = 0 (cvode) by value: cvode ran");
+    gw_chain_falcon_outcome_free(&o);
+    gw_chain_falcon_setup_clear(&f);
+
+    /* the column: rk4 with a tolerance at its default's value has no effect */
+    gw_chain_setup c;
+    gw_chain_setup_init(&c);
+    gw_chain_resolved r;
+    memset(&r, 0, sizeof r);
+    c.n = 3;
+    c.vimp = 0.3;
+    rc = gw_param_set(gw_chain_setup_params(), &c, "solver", "rk4", &err);
+    rc = rc == GW_OK ? gw_param_set(gw_chain_setup_params(), &c, "rtol", "1e-12", &err) : rc;
+    rc = rc == GW_OK ? gw_chain_setup_resolve(&c, &r, &err) : rc;
+    printf("  chain rk4 + rtol 1e-12: rc %d: %s\n", rc, err.msg);
+    gw_test_true(rc == GW_EINVAL && strncmp(err.msg, "rtol: has no effect", 19) == 0,
+                 "chain: rk4 with rtol = 1e-12 given: refused (no effect)");
+    gw_chain_resolved_free(&r);
+    gw_chain_setup_clear(&c);
     return gw_test_summary("test_falcon_accuracy_given");
 }

@@ -159,20 +159,19 @@ static int write_traces(const falcon *f, const char *dir, int argc, char **argv,
     return GW_OK;
 }
 
-/* The solver options against --accuracy (which flags were given: the library
- * sees values): a solver option given runs the solver as given (accuracy 0 to
- * the library, as Python's keywords), and with --accuracy too is refused;
+/* The solver options against --accuracy, checked before --out is made (the
+ * library applies the same rule from the rows given): a solver option given
+ * runs the solver as given, and with --accuracy too is refused;
  * --accuracy where the step study does not cover the column is refused (the
  * library's rule, gw_chain_rk4_study_covers). The library then picks RK4 by
  * the target (gw_chain_rk4_study_apply): dt = T_c/M, sampled every tau_1/10 of
  * the fastest impact, the traces every tau_1/50. */
-static int falcon_check_solver(const falcon *f, const gw_opt *opts, int *given, gw_err *err)
+static int falcon_check_solver(const falcon *f, const gw_opt *opts, gw_err *err)
 {
     const char *names[] = {"solver", "method", "rtol", "atol", "dt"};
     int any = 0;
     for (size_t i = 0; i < sizeof names / sizeof names[0]; i++)
         any |= gw_cli_find(opts, names[i])->seen;
-    *given = any;
     if (any && gw_cli_find(opts, "accuracy")->seen)
         return gw_err_set(err, GW_EINVAL, "falcon --accuracy: give either --accuracy or the solver options");
     if (!any && !gw_chain_rk4_study_covers(&f->c.params, f->n_hi) && gw_cli_find(opts, "accuracy")->seen)
@@ -243,7 +242,7 @@ int gw_cmd_falcon(int argc, char **argv)
     }
     f.n_lo = (int)a;
     f.n_hi = (int)b;
-    int nv = nvv + nhh, code = 0, rc0, solver_given = 0;
+    int nv = nvv + nhh, code = 0, rc0;
     gw_chain_falcon_setup fs;
     gw_chain_falcon_setup_init(&fs);
     /* the speeds, then the heights fallen in the run's gravity (or Earth's),
@@ -264,7 +263,7 @@ int gw_cmd_falcon(int argc, char **argv)
         code = chain_cli_fail_rc(rc0, err.msg);
         goto out;
     }
-    if ((rc0 = falcon_check_solver(&f, opts, &solver_given, &err)) != GW_OK) {
+    if ((rc0 = falcon_check_solver(&f, opts, &err)) != GW_OK) {
         code = chain_cli_fail(err.msg);
         goto out;
     }
@@ -284,8 +283,6 @@ int gw_cmd_falcon(int argc, char **argv)
     /* the study: the library's, from the flags given (its rows are the flags) */
     int rc = gw_cli_study_setup(rows, &fs, opts, argc, argv, "falcon", &err);
     if (rc == GW_OK) {
-        if (solver_given)
-            fs.accuracy = 0; /* the solver options as given */
         fs.traces = f.c.out != NULL;
         rc = gw_chain_falcon_run(&fs, quiet ? NULL : gw_cli_progress_report, &prog, &f.o, &err);
     }

@@ -206,6 +206,10 @@ int chain_cli_resolve(chain_cli *c, const gw_opt *opts, const char *cmd, gw_err 
         return cli_error(cmd, rc, err);
     c->params = r.params;
     c->run = r.run;
+    if (!c->solver) /* not given: the solver the library resolved (cvode) */
+        c->solver = gw_solver_type_name(r.run.solver);
+    if (!c->method)
+        c->method = "default";
     c->law = r.law;
     c->gamma = r.params.gamma; /* calibrated by --restitution */
     c->alpha = r.params.alpha;

@@ -194,22 +194,11 @@ def layer_stats(input=None, **kwargs):
     return r
 
 
-_SOLVER_KEYWORDS = ("solver", "method", "rtol", "atol", "dt")
-
-
 def falcon(*, progress=None, **kwargs):
     # As `granwave falcon`: the accuracy target picks RK4 only when no solver
-    # option is given. The library sees values, not keywords, and took
-    # solver="cvode" (its default's value) as not given: it ran RK4 instead.
-    # Both given: refused, as the command refuses --accuracy with a solver
-    # option (the library saw solver="cvode", its default's value, as not
-    # given and ran RK4 by the accuracy instead).
-    solver_given = any(kwargs.get(k) is not None for k in _SOLVER_KEYWORDS)
-    if solver_given and kwargs.get("accuracy") is not None:
-        if kwargs["accuracy"] != 0:
-            raise GranwaveValueError("falcon: accuracy: give either accuracy or the solver options", _core.GW_EINVAL)
-    elif solver_given:
-        kwargs["accuracy"] = 0
+    # option is given, and both given are refused. The library decides: its
+    # solver rows have a "not given" state, so solver="cvode" (the default's
+    # value) given is the solver as given there too.
     return _study("falcon").run(kwargs, progress)
 
 

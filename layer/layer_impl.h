@@ -11,15 +11,22 @@
 #include "gw_layer.h"
 
 /* Sliding margin of the tangential state outside the Coulomb cap and its
- * restoring rate, 1/s (layer_model.c). */
+ * restoring rate (layer_model.c): LAYER_CAP_RATE 1/s for the adaptive
+ * backends, LAYER_CAP_RATE_STEP / dt for the fixed-step rk4 (1e4 /s at its
+ * default 1 us), so that the rate keeps its place among the run's time scales
+ * when they scale (gw_layer.cap_rate). */
 #define LAYER_CAP_MARGIN 1e-4
 #define LAYER_CAP_RATE 1e4
+#define LAYER_CAP_RATE_STEP 1e-2
 
 /* Zeno guard of layer_sim.c: events closer than LAYER_ZENO_DT s, how many in a
- * row trigger it, and how long the contact roots stay off. */
+ * row trigger it, and how long the contact roots stay off (for rk4 the
+ * _STEP values times its step: the same at its default 1 us). */
 #define LAYER_ZENO_DT 1e-12
 #define LAYER_ZENO_COUNT 20
 #define LAYER_ZENO_QUIET 1e-7
+#define LAYER_ZENO_DT_STEP 1e-6
+#define LAYER_ZENO_QUIET_STEP 0.1
 
 /* Walls are contact partners with negative ids. */
 enum { LAYER_LEFT = -1, LAYER_RIGHT = -2, LAYER_BOTTOM = -3 };
@@ -98,6 +105,8 @@ struct gw_layer {
     double v_scale, u_scale, f_scale, e_scale;
     gw_layer_stats st;
     double t_event, quiet_until; /* Zeno guard (layer_sim.c) */
+    double zeno_dt, zeno_quiet;  /* its window and quiet time, s (gw_layer_start) */
+    double cap_rate;             /* the sliding margin's restoring rate, 1/s (gw_layer_start) */
     int storm, no_events_user;
     gw_layer_event_fn hook;
     void *hook_ctx;
@@ -253,7 +262,7 @@ typedef struct layer_tscr {
  * tp: the force used (f clamped to the cap), the state's rate, and the
  * dissipation and Mindlin-work rates (B.7-B.14). */
 static inline void layer_tangential(double f, double kt, double vt, double fnd, double fel, double tp,
-                                    double *ft, double *rate, double *cd, double *ck)
+                                    double lam, double *ft, double *rate, double *cd, double *ck)
 {
     double cap = tp * fel, re = kt * vt;
     double sg = f > 0 ? 1 : f < 0 ? -1 : (re >= 0 ? 1 : -1);
@@ -262,7 +271,7 @@ static inline void layer_tangential(double f, double kt, double vt, double fnd, 
     if (fabs(f) >= cap) {
         fud = rc; /* the force used rides the cap */
         if (sg * re > sg * rc) /* sliding: keep the state a margin outside */
-            *rate = rc + sg * LAYER_CAP_RATE * (cap * (1 + LAYER_CAP_MARGIN) - fabs(f));
+            *rate = rc + sg * lam * (cap * (1 + LAYER_CAP_MARGIN) - fabs(f));
     }
     *ft = f > cap ? cap : f < -cap ? -cap : f;
     *cd = *ft * (vt - fud / kt);

@@ -32,7 +32,8 @@
  *   dF_t/dt = r_e. Sliding (|F_t| >= cap and s r_e > s r_c): the used force rides
  *   the cap (rate r_c, zero rate relative to the cap), and the state is held a
  *   margin eta = 1e-4 outside it, dF_t/dt = r_c + s lambda (cap (1 + eta) - |F_t|),
- *   lambda = 1e4 /s. Why the margin: a state exactly on the cap chatters between
+ *   lambda = 1e4 /s (0.01 / dt in the exact mode: gw_layer.cap_rate, layer_sim.c).
+ *   Why the margin: a state exactly on the cap chatters between
  *   the two branches under the stage perturbations of an adaptive method (the
  *   elastic rate is ~1e8 N/s), which drives its steps to ~1e-14 s. The margin
  *   delays the elastic unloading after a reversal by eta cap / |r_e| (~1e-9 s).
@@ -455,7 +456,7 @@ static int layer_rhs(double t, const double *y, double *yd, void *P)
             }
         } else if (tp > 0) {
             double kt = c->kts * su, cd, ck;
-            layer_tangential(y[6 * n + k], kt, vt, fnd, fel, tp, &ft, fdot, &cd, &ck);
+            layer_tangential(y[6 * n + k], kt, vt, fnd, fel, tp, L->cap_rate, &ft, fdot, &cd, &ck);
             pd += cd;
             pk += ck;
             if (rtail) {

@@ -20,9 +20,10 @@
  *   events, only the list rebuild root, reported at the end of the step that
  *   crossed it. The tangential force is advanced as a coordinate of the step
  *   and the ledger books it feeds are added after the step (layer_dem.c).
- * - Zeno guard: more than LAYER_ZENO_COUNT events within LAYER_ZENO_DT of each
+ * - Zeno guard: more than LAYER_ZENO_COUNT events within L->zeno_dt of each
  *   other (seen with CVODE when a contact grazes u_n = 0) switch the event roots
- *   off for LAYER_ZENO_QUIET s; counted in gw_layer_stats.zeno_guards.
+ *   off for L->zeno_quiet s (1e-12 and 1e-7 s, or 1e-6 and 0.1 rk4 steps in the
+ *   exact mode); counted in gw_layer_stats.zeno_guards.
  * Units: SI.
  */
 #include <math.h>
@@ -146,6 +147,24 @@ int gw_layer_start(gw_layer *L, const gw_solver_type *type, const gw_solver_para
      * method is asked for (BDF with a diagonal band is far slower here). */
     if (type == gw_solver_cvode && L->sp.method == GW_METHOD_DEFAULT)
         L->sp.method = GW_CVODE_ADAMS;
+    /* The sliding margin's restoring rate and the Zeno guard's times are
+     * numerical devices with no physical scale of their own. Fixed in s, they
+     * made the exact mode depend on the size of the problem: lengths x 1000
+     * (R_m = 325 m) with V_i kept, g / 1000 and the step x 1000 (1 ms, the
+     * same number of steps per contact) put 1e4 /s x 1 ms = 10 beyond RK4's
+     * stability bound (2.8 for a decay) and the friction loss of the first
+     * contact came out 4.5 times too small (0.00059 against 0.00264), the
+     * ledger closure 0.16; lengths x 4 moved it by 1.7e-4. Tied to rk4's step
+     * they scale with the run and are unchanged at its default 1 us; the
+     * adaptive backends have no step and keep them in s, and so does rk4
+     * without events (the pluviation, whose 20 us steps would otherwise
+     * change every sample; its settling is timed in s anyway) */
+    double h = type == gw_solver_rk4 && !L->p.no_events && L->sp.dt > 0 ? L->sp.dt : 0;
+    if (h > 0 && L->sp.dt_max > 0 && L->sp.dt_max < h)
+        h = L->sp.dt_max; /* the step rk4 takes (gw_solver_create) */
+    L->cap_rate = h > 0 ? LAYER_CAP_RATE_STEP / h : LAYER_CAP_RATE;
+    L->zeno_dt = h > 0 ? LAYER_ZENO_DT_STEP * h : LAYER_ZENO_DT;
+    L->zeno_quiet = h > 0 ? LAYER_ZENO_QUIET_STEP * h : LAYER_ZENO_QUIET;
     L->t = 0;
     int rc = layer_contacts_build(L, err);
     if (rc != GW_OK)
@@ -185,7 +204,7 @@ static int layer_on_root(void *ctx, double t, double *y, const int *roots, gw_er
     if (!layer_watch_dispatch(L))
         return GW_DRIVE_ON; /* only the block watch's roots: nothing to project or restart */
     L->st.events++;
-    L->storm = L->t - L->t_event < LAYER_ZENO_DT ? L->storm + 1 : 0;
+    L->storm = L->t - L->t_event < L->zeno_dt ? L->storm + 1 : 0;
     L->t_event = L->t;
     const int r0 = layer_root_rebuild(L), s0 = layer_root_slip(L);
     for (int k = 0; L->hook && !L->p.no_events && k < L->nc; k++)
@@ -198,10 +217,10 @@ static int layer_on_root(void *ctx, double t, double *y, const int *roots, gw_er
     if (L->storm > LAYER_ZENO_COUNT && L->quiet_until == 0) {
         /* Zeno guard: the root finder keeps stopping at the same instant (a
          * contact grazing u_n = 0 with CVODE's zero-at-restart rule). Step
-         * over LAYER_ZENO_QUIET s with only the rebuild roots, then resume. */
+         * over L->zeno_quiet s with only the rebuild roots, then resume. */
         L->no_events_user = L->p.no_events;
         L->p.no_events = 1;
-        L->quiet_until = L->t + LAYER_ZENO_QUIET;
+        L->quiet_until = L->t + L->zeno_quiet;
         L->st.zeno_guards++;
         L->storm = 0;
         return GW_DRIVE_YIELD;

@@ -34,10 +34,10 @@ static const gw_param setup_params[] = {
      .metavar = "LIST", .help = "B.31 parameters to fit: beta,a_over_b and optionally offset, tan_gamma [beta,a_over_b]"},
     {.name = "gamma-deg", .type = GW_PARAM_DOUBLE, .offset = OFF(gamma_deg), .unit = "deg", .min = 0, .max = 89,
      .open_min = 1, .def = "0.2", .metavar = "G",
-     .help = "cone angle gamma (start value, or fixed when not fitted), deg [0.2, the paper's]"},
+     .help = "cone angle gamma, deg, held when not fitted (a fitted one is searched over 1e-6 to 89 deg) [0.2, the paper's]"},
     {.name = "delta-rm", .type = GW_PARAM_DOUBLE, .offset = OFF(delta_rm), .unit = "", .min = 0, .max = 1e6,
      .metavar = "D",
-     .help = "delta* / R_m of B.31 (start value when offset is fitted) [measured: mean penetration_rm at the "
+     .help = "delta* / R_m of B.31, held when the offset is not fitted (a fitted one is searched over >= 0) [measured: mean penetration_rm at the "
              "boundary]"},
     GW_PARAM_END};
 

@@ -17,6 +17,7 @@
 #include <strings.h>
 
 #include "gw_cli.h"
+#include "gw_locale.h"
 #include "gw_layer.h"
 #include "gw_layer_study.h"
 #include "layer_commands.h"
@@ -96,14 +97,23 @@ static void print_text(const gw_stats_analysis *R)
         printf("  diagram %d: %d crossings, R_crit %s (next %s), R_min %s, H_min %s\n", q, D->d.ncross,
                gw_cli_num(v[0], sizeof v[0], "%g", D->d.r_crit), gw_cli_num(v[1], sizeof v[1], "%g", D->d.r_crit_upper),
                gw_cli_num(v[2], sizeof v[2], "%g", D->d.r_min), gw_cli_num(v[3], sizeof v[3], "%g", D->d.h_min));
+        char edge[96] = "";
+        if (D->fit_ok && D->fit.at_bound) /* the box stopped the search there: no free minimum */
+            gw_snprintf(edge, sizeof edge, "; at the edge of the fit's box: %s%s%s%s",
+                        D->fit.at_bound & GW_STATS_B31_OFFSET ? "offset " : "",
+                        D->fit.at_bound & GW_STATS_B31_BETA ? "beta " : "",
+                        D->fit.at_bound & GW_STATS_B31_AB ? "a/b " : "",
+                        D->fit.at_bound & GW_STATS_B31_TANG ? "tan_gamma " : "");
+        if (edge[0])
+            edge[strlen(edge) - 1] = 0;
         if (D->fit_ok && D->fit.dof == 0)
-            printf("    B.31 fit: beta %.4g, a/b %.4g (as many points as free parameters: exact, no errors), "
-                   "tan gamma %.4g, offset %.4g\n", D->fit.p.beta, D->fit.p.a_over_b, D->fit.p.tan_gamma,
-                   D->fit.p.offset);
+            printf("    B.31 fit: beta %.4g, a/b %.4g (as many points as free parameters: %s, no errors), "
+                   "tan gamma %.4g, offset %.4g%s\n", D->fit.p.beta, D->fit.p.a_over_b,
+                   D->fit.at_bound ? "not exact" : "exact", D->fit.p.tan_gamma, D->fit.p.offset, edge);
         else if (D->fit_ok)
             printf("    B.31 fit: beta %.4g +- %.2g, a/b %.4g +- %.2g, tan gamma %.4g, offset %.4g, rms %.3g R_m "
-                   "(%d dof)\n", D->fit.p.beta, D->fit.err.beta, D->fit.p.a_over_b, D->fit.err.a_over_b,
-                   D->fit.p.tan_gamma, D->fit.p.offset, D->fit.rms, D->fit.dof);
+                   "(%d dof)%s\n", D->fit.p.beta, D->fit.err.beta, D->fit.p.a_over_b, D->fit.err.a_over_b,
+                   D->fit.p.tan_gamma, D->fit.p.offset, D->fit.rms, D->fit.dof, edge);
         else
             printf("    B.31 fit: not done: %s\n", D->fit_reason);
     }
@@ -125,10 +135,10 @@ int gw_cmd_layer_stats(int argc, char **argv)
         {.name = "fit", .kind = GW_OPT_STRING, .dest = &fit, .metavar = "LIST",
          .help = "B.31 parameters to fit: beta,a_over_b and optionally offset, tan_gamma [beta,a_over_b]"},
         {.name = "gamma-deg", .kind = GW_OPT_DOUBLE, .dest = &S.gamma_deg, .metavar = "G",
-         .help = "cone angle gamma (start value, or fixed when not fitted), deg [0.2, the paper's]", .lo = 0,
+         .help = "cone angle gamma, deg, held when not fitted (a fitted one is searched over 1e-6 to 89 deg) [0.2, the paper's]", .lo = 0,
          .hi = 89, .open_lo = 1},
         {.name = "delta-rm", .kind = GW_OPT_DOUBLE, .dest = &S.delta_rm, .metavar = "D",
-         .help = "delta* / R_m of B.31 (start value when offset is fitted) [measured: mean penetration_rm at "
+         .help = "delta* / R_m of B.31, held when the offset is not fitted (a fitted one is searched over >= 0) [measured: mean penetration_rm at "
                  "the boundary]",
          .lo = 0, .hi = 1e6},
         {.name = "out", .kind = GW_OPT_STRING, .dest = &out, .metavar = "DIR",

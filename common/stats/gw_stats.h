@@ -250,26 +250,39 @@ double gw_stats_b31_eval(const gw_stats_b31 *p, double x);
 /* Position and value of the minimum. */
 void gw_stats_b31_min(const gw_stats_b31 *p, double *x_min, double *f_min);
 
-/* Parameters to fit (the others stay at their start values). */
+/* Parameters to fit (the others stay at the values given). */
 enum { GW_STATS_B31_OFFSET = 1, GW_STATS_B31_BETA = 2, GW_STATS_B31_AB = 4,
        GW_STATS_B31_TANG = 8 };
 
 typedef struct gw_stats_b31_fit {
     gw_stats_b31 p;       /* fitted (fixed ones as given) */
     gw_stats_b31 err;     /* standard errors (0 for fixed; NaN when dof = 0) */
-    double corr_beta_ab;  /* correlation of beta and ln(a/b) when both free */
+    double corr_beta_ab;  /* correlation of beta and ln(a/b) */
     int free_mask, n, dof, iterations, converged;
+    int at_bound;         /* free parameters on an edge of the box (GW_STATS_B31_* bits) */
+    long evaluations;     /* sums of squares evaluated by the search */
     double rms;           /* root-mean-square residual, R_m */
     double x_min, h_min;  /* minimum of the fitted curve */
 } gw_stats_b31_fit;
 
-/* Nonlinear least squares (gsl_multifit_nlinear, trust region with
- * Levenberg-Marquardt steps) of B.31 to n boundary points (x, h), unweighted.
- * a/b and tan gamma are fitted as logarithms (kept positive), beta and the
- * offset as they are. Several starts for beta (fractions of the x of the
- * lowest point); the best converged one is kept. Standard errors from the
- * covariance scaled by the residual variance (chi^2 / dof). GW_EINVAL when
- * n < number of free parameters or no start converges. */
+/* Least squares of B.31 to n boundary points (x, h), unweighted: the global
+ * minimum of the sum of squared residuals over the box
+ *     beta in [0, x_lo] (x_lo the smallest x: B.31 holds for x >= beta),
+ *     a/b in [1e-6, 1e6], tan gamma in [tan 1e-6 deg, tan 89 deg],
+ *     offset >= 0,
+ * the parameters not in free_mask held at start's values (start's free
+ * values are not used). beta and a/b are always free. With u = x - beta the
+ * model is offset + A (sqrt(u^2 + K x^2) - u), A = 1/(2 tan gamma),
+ * K = (a/b) tan gamma: for given (beta, ln K) a free offset and a free A are
+ * solved exactly (linear least squares under their bounds), and the sum left,
+ * a function of (beta, ln K), is evaluated on a 65 x (8 per decade of K) grid
+ * and refined (pattern search) from its 6 lowest local minima; the best is
+ * polished by Levenberg-Marquardt (gsl_multifit_nlinear) when that stays in
+ * the box. Standard errors from (J^T J)^-1 at the minimum (a/b and tan gamma
+ * as logarithms) scaled by chi^2 / dof; at_bound names parameters the box
+ * stops (their errors are not those of a free minimum). GW_EINVAL when beta
+ * or a/b is not free, n < number of free parameters, a point is not finite
+ * or x_lo <= 0. */
 int gw_stats_b31_fit_points(const double *x, const double *h, int n, const gw_stats_b31 *start,
                             int free_mask, gw_stats_b31_fit *fit, gw_err *err);
 

@@ -266,8 +266,9 @@ typedef struct b31_try {
     double cov[16];
 } b31_try;
 
-/* One trust-region run from start; fills t (cost = sum of squares). */
-static int b31_run(b31_problem *pb, const gw_stats_b31 *start, int p, b31_try *t)
+/* One trust-region run of at most niter iterations from start (0: none, the
+ * covariance at start); fills t (cost = sum of squares). */
+static int b31_run(b31_problem *pb, const gw_stats_b31 *start, int p, int niter, b31_try *t)
 {
     gsl_multifit_nlinear_parameters fp = gsl_multifit_nlinear_default_parameters();
     fp.trs = gsl_multifit_nlinear_trs_lm;
@@ -283,7 +284,8 @@ static int b31_run(b31_problem *pb, const gw_stats_b31 *start, int p, b31_try *t
         pack(pb->mask, start, th);
         gsl_multifit_nlinear_init(th, &fdf, w);
         int info = 0;
-        int st = gsl_multifit_nlinear_driver(500, 1e-12, 1e-12, 0.0, NULL, NULL, &info, w);
+        int st = niter > 0 ? gsl_multifit_nlinear_driver((size_t)niter, 1e-12, 1e-12, 0.0, NULL, NULL, &info, w)
+                           : GSL_SUCCESS;
         gsl_vector *res = gsl_multifit_nlinear_residual(w);
         double chi2 = 0;
         gsl_blas_ddot(res, res, &chi2);
@@ -304,68 +306,275 @@ static int b31_run(b31_problem *pb, const gw_stats_b31 *start, int p, b31_try *t
     return rc;
 }
 
+/* The box every fit searches (gw_stats.h): beta in [0, x_lo] (B.31 holds for
+ * x >= beta; x_lo the smallest boundary x), a/b in [B31_AB_LO, B31_AB_HI],
+ * tan gamma in [B31_T_LO, B31_T_HI] (gamma from 1e-6 to 89 deg, --gamma-deg's
+ * range), offset >= 0 (a penetration). */
+#define B31_AB_LO 1e-6
+#define B31_AB_HI 1e6
+#define B31_T_LO 1.7453292519943295e-8 /* tan(1e-6 deg) */
+#define B31_T_HI 57.289961630759416    /* tan(89 deg) */
+
+/* The structure the global search uses: with u = x - beta,
+ *     f(x) = offset + A phi(x; beta, K),  phi = sqrt(u^2 + K x^2) - u,
+ *     A = 1 / (2 tan gamma),  K = (a/b) tan gamma,  a/b = 2 A K.
+ * For given (beta, K) the model is linear in offset and A: whichever of them
+ * is free is solved exactly (least squares under its bounds), and what is
+ * left is a function of (beta, ln K) alone, searched on a grid and refined
+ * from each of the grid's local minima. */
+typedef struct b31_profile {
+    const double *x, *h;
+    int n, mask;
+    double offset0, T0;  /* the fixed values */
+    double xlo;          /* beta's upper bound */
+    double lnk_lo, lnk_hi;
+    double *phi;         /* [n] scratch */
+    long evals;
+} b31_profile;
+
+static double clampd(double v, double lo, double hi)
+{
+    return v < lo ? lo : v > hi ? hi : v;
+}
+
+/* The sum of squares at (beta, ln K) with the linear parameters solved; p
+ * (when not NULL) receives the parameters. */
+static double prof_eval(b31_profile *q, double beta, double lnk, gw_stats_b31 *p)
+{
+    const int n = q->n;
+    const double K = exp(lnk);
+    double sp = 0, spp = 0, sh = 0, sph = 0;
+    q->evals++;
+    for (int i = 0; i < n; i++) {
+        double x = q->x[i], u = x - beta, r = sqrt(u * u + K * x * x);
+        double ph = u > 0 ? K * x * x / (r + u) : r - u;
+        q->phi[i] = ph;
+        sp += ph, spp += ph * ph, sh += q->h[i], sph += ph * q->h[i];
+    }
+    const int foff = (q->mask & GW_STATS_B31_OFFSET) != 0, ftan = (q->mask & GW_STATS_B31_TANG) != 0;
+    /* A's bounds: tan gamma within its own, and a/b = 2 A K within its own */
+    const double alo = fmax(1 / (2 * B31_T_HI), B31_AB_LO / (2 * K)),
+                 ahi = fmin(1 / (2 * B31_T_LO), B31_AB_HI / (2 * K));
+    double off = q->offset0, A = 1 / (2 * q->T0);
+    if (foff && !ftan) {
+        off = fmax(0, (sh - A * sp) / n);
+    } else if (ftan && !foff) {
+        A = clampd(spp > 0 ? (sph - off * sp) / spp : alo, alo, ahi);
+    } else if (foff && ftan) {
+        /* a convex quadratic in (offset, A) over offset >= 0, alo <= A <= ahi:
+         * the free minimum when it lies inside, else the best of the edges,
+         * each a clamped one-variable least squares */
+        double det = n * spp - sp * sp, best = INFINITY;
+        double cand[4][2];
+        int nc = 0;
+        if (det > 1e-14 * n * spp) {
+            double a0 = (n * sph - sp * sh) / det, o0 = (sh - a0 * sp) / n;
+            if (o0 >= 0 && a0 >= alo && a0 <= ahi)
+                cand[nc][0] = o0, cand[nc++][1] = a0;
+        }
+        if (nc == 0) {
+            cand[nc][0] = 0, cand[nc][1] = clampd(spp > 0 ? sph / spp : alo, alo, ahi), nc++;
+            cand[nc][0] = fmax(0, (sh - alo * sp) / n), cand[nc][1] = alo, nc++;
+            cand[nc][0] = fmax(0, (sh - ahi * sp) / n), cand[nc][1] = ahi, nc++;
+        }
+        for (int c = 0; c < nc; c++) {
+            double s = 0;
+            for (int i = 0; i < n; i++) {
+                double r = cand[c][0] + cand[c][1] * q->phi[i] - q->h[i];
+                s += r * r;
+            }
+            if (s < best)
+                best = s, off = cand[c][0], A = cand[c][1];
+        }
+    }
+    double s = 0;
+    for (int i = 0; i < n; i++) {
+        double r = off + A * q->phi[i] - q->h[i];
+        s += r * r;
+    }
+    if (p) {
+        p->offset = off;
+        p->beta = beta;
+        p->tan_gamma = ftan ? 1 / (2 * A) : q->T0;
+        p->a_over_b = ftan ? 2 * A * K : K / q->T0;
+    }
+    return isfinite(s) ? s : INFINITY;
+}
+
+/* Hooke and Jeeves' pattern search on (beta, ln K) within the box, from
+ * (b, k) with steps (db, dk), down to steps of 1e-13 of the box. */
+static double prof_refine(b31_profile *q, double *b, double *k, double db, double dk)
+{
+    const double tb = 1e-13 * fmax(q->xlo, 1e-300), tk = 1e-13 * (q->lnk_hi - q->lnk_lo);
+    double fb = prof_eval(q, *b, *k, NULL);
+    double base[2] = {*b, *k};
+    for (int guard = 0; guard < 100000 && (db > tb || dk > tk); guard++) {
+        /* exploratory moves around base */
+        double t[2] = {base[0], base[1]}, ft = fb, step[2] = {db, dk};
+        double lo[2] = {0, q->lnk_lo}, hi[2] = {q->xlo, q->lnk_hi};
+        for (int d = 0; d < 2; d++)
+            for (int sgn = -1; sgn <= 1; sgn += 2) {
+                double tr[2] = {t[0], t[1]};
+                tr[d] = clampd(t[d] + sgn * step[d], lo[d], hi[d]);
+                if (tr[d] == t[d])
+                    continue;
+                double f = prof_eval(q, tr[0], tr[1], NULL);
+                if (f < ft) {
+                    ft = f, t[0] = tr[0], t[1] = tr[1];
+                    break;
+                }
+            }
+        if (ft < fb) {
+            /* pattern moves along the improving direction while they improve */
+            for (;;) {
+                double pnew[2] = {clampd(2 * t[0] - base[0], 0, q->xlo), clampd(2 * t[1] - base[1], q->lnk_lo, q->lnk_hi)};
+                base[0] = t[0], base[1] = t[1], fb = ft;
+                double f = prof_eval(q, pnew[0], pnew[1], NULL);
+                if (!(f < fb))
+                    break;
+                t[0] = pnew[0], t[1] = pnew[1], ft = f;
+            }
+        } else {
+            db /= 2, dk /= 2;
+        }
+    }
+    *b = base[0], *k = base[1];
+    return fb;
+}
+
+static int in_box(const b31_profile *q, const gw_stats_b31 *p)
+{
+    int ok = p->beta >= 0 && p->beta <= q->xlo && p->a_over_b >= B31_AB_LO && p->a_over_b <= B31_AB_HI;
+    if (q->mask & GW_STATS_B31_OFFSET)
+        ok = ok && p->offset >= 0;
+    if (q->mask & GW_STATS_B31_TANG)
+        ok = ok && p->tan_gamma >= B31_T_LO && p->tan_gamma <= B31_T_HI;
+    return ok;
+}
+
+/* The free parameters lying on an edge of the box (GW_STATS_B31_* bits). */
+static int at_bounds(const b31_profile *q, const gw_stats_b31 *p)
+{
+    int m = 0;
+    if (p->beta <= 1e-9 * q->xlo || p->beta >= q->xlo * (1 - 1e-9))
+        m |= GW_STATS_B31_BETA;
+    if (p->a_over_b <= B31_AB_LO * (1 + 1e-6) || p->a_over_b >= B31_AB_HI * (1 - 1e-6))
+        m |= GW_STATS_B31_AB;
+    if ((q->mask & GW_STATS_B31_OFFSET) && p->offset <= 0)
+        m |= GW_STATS_B31_OFFSET;
+    if ((q->mask & GW_STATS_B31_TANG) && (p->tan_gamma <= B31_T_LO * (1 + 1e-6) || p->tan_gamma >= B31_T_HI * (1 - 1e-6)))
+        m |= GW_STATS_B31_TANG;
+    return m;
+}
+
+enum { B31_NB = 65, B31_PER_DECADE = 8, B31_STARTS = 6 };
+
 static int b31_fit(const double *x, const double *h, int n, const gw_stats_b31 *start, int free_mask,
                    gw_stats_b31_fit *fit, gw_err *err)
 {
-    int p = popcount4(free_mask & 15);
-    if (p == 0)
-        return gw_err_set(err, GW_EINVAL, "B.31 fit: no free parameter");
+    const int mask = free_mask & 15, p = popcount4(mask);
+    if (!(mask & GW_STATS_B31_BETA) || !(mask & GW_STATS_B31_AB))
+        return gw_err_set(err, GW_EINVAL, "B.31 fit: beta and a/b must be free (nothing gives them a value to hold)");
     if (n < p)
         return gw_err_set(err, GW_EINVAL, "B.31 fit: %d boundary point(s) for %d free parameter(s)", n, p);
-    if (!(start->tan_gamma > 0) || !(start->a_over_b > 0) || !isfinite(start->beta) ||
-        !isfinite(start->offset))
-        return gw_err_set(err, GW_EINVAL, "B.31 fit: start needs a/b > 0, tan(gamma) > 0, finite beta and offset");
-    /* starts for beta: fractions of the x of the lowest point (the minimum of
-     * B.31 is at x = 2 beta / (1 + K), so beta near half of it), a/b from the
-     * depth of that minimum above the offset */
-    int lo = 0;
-    for (int i = 1; i < n; i++)
-        if (h[i] < h[lo])
-            lo = i;
-    static const double frac[] = {0.5, 0.3, 0.7, 0.9, 0.15};
-    b31_problem pb = {.x = x, .h = h, .n = n, .mask = free_mask & 15};
-    b31_try best = {.cost = INFINITY}, t;
-    int any = 0;
-    for (size_t s = 0; s < sizeof frac / sizeof frac[0]; s++) {
-        gw_stats_b31 st = *start;
-        if (pb.mask & GW_STATS_B31_BETA)
-            st.beta = frac[s] * x[lo];
-        if ((pb.mask & GW_STATS_B31_AB) && st.beta > 0 && h[lo] - st.offset > 0)
-            st.a_over_b = (h[lo] - st.offset) / st.beta;
-        if (b31_run(&pb, &st, p, &t) != GW_OK)
-            continue;
-        if (t.converged && (!best.converged || t.cost < best.cost)) {
-            best = t;
-            any = 1;
-        }
-        if (!(pb.mask & GW_STATS_B31_BETA))
-            break; /* the starts differ only in beta */
+    if (!(mask & GW_STATS_B31_TANG) && !(start->tan_gamma > 0 && start->tan_gamma < INFINITY))
+        return gw_err_set(err, GW_EINVAL, "B.31 fit: a fixed tan(gamma) must be finite and > 0");
+    if (!(mask & GW_STATS_B31_OFFSET) && !isfinite(start->offset))
+        return gw_err_set(err, GW_EINVAL, "B.31 fit: a fixed offset must be finite");
+    double xlo = INFINITY;
+    for (int i = 0; i < n; i++) {
+        if (!isfinite(x[i]) || !isfinite(h[i]))
+            return gw_err_set(err, GW_EINVAL, "B.31 fit: boundary point %d is not finite", i + 1);
+        xlo = fmin(xlo, x[i]);
     }
-    if (!any)
-        return gw_err_set(err, GW_EINVAL, "B.31 fit: no start converged (%d points)", n);
-    fit->p = best.p;
-    fit->free_mask = pb.mask;
+    if (!(xlo > 0))
+        return gw_err_set(err, GW_EINVAL, "B.31 fit: a boundary point at R_b/R_m = %g (beta lies in [0, R_b/R_m])",
+                          xlo);
+    b31_profile q = {.x = x, .h = h, .n = n, .mask = mask, .offset0 = start->offset, .T0 = start->tan_gamma,
+                     .xlo = xlo};
+    if (mask & GW_STATS_B31_TANG)
+        q.lnk_lo = log(B31_AB_LO * B31_T_LO), q.lnk_hi = log(B31_AB_HI * B31_T_HI);
+    else
+        q.lnk_lo = log(B31_AB_LO * q.T0), q.lnk_hi = log(B31_AB_HI * q.T0);
+    const int nk = (int)ceil((q.lnk_hi - q.lnk_lo) / log(10) * B31_PER_DECADE) + 1;
+    const double db = xlo / (B31_NB - 1), dk = (q.lnk_hi - q.lnk_lo) / (nk - 1);
+    double *S = malloc(((size_t)B31_NB * (size_t)nk + (size_t)n) * sizeof *S);
+    if (!S)
+        return gw_err_set(err, GW_ENOMEM, "B.31 fit: out of memory");
+    q.phi = S + (size_t)B31_NB * (size_t)nk;
+    for (int i = 0; i < B31_NB; i++)
+        for (int j = 0; j < nk; j++)
+            S[(size_t)i * nk + j] = prof_eval(&q, i * db, q.lnk_lo + j * dk, NULL);
+    /* the grid's local minima (no neighbour lower), best first */
+    int si[B31_STARTS], sj[B31_STARTS], ns = 0;
+    for (int i = 0; i < B31_NB; i++)
+        for (int j = 0; j < nk; j++) {
+            double s = S[(size_t)i * nk + j];
+            if (!isfinite(s))
+                continue;
+            int low = 1;
+            for (int a = -1; a <= 1 && low; a++)
+                for (int b = -1; b <= 1 && low; b++)
+                    if ((a || b) && i + a >= 0 && i + a < B31_NB && j + b >= 0 && j + b < nk &&
+                        S[(size_t)(i + a) * nk + j + b] < s)
+                        low = 0;
+            if (!low)
+                continue;
+            int pos = ns < B31_STARTS ? ns++ : B31_STARTS;
+            while (pos > 0 && S[(size_t)si[pos - 1] * nk + sj[pos - 1]] > s) {
+                if (pos < B31_STARTS)
+                    si[pos] = si[pos - 1], sj[pos] = sj[pos - 1];
+                pos--;
+            }
+            if (pos < B31_STARTS)
+                si[pos] = i, sj[pos] = j;
+        }
+    double bb = NAN, bk = NAN, bs = INFINITY;
+    for (int s = 0; s < ns; s++) {
+        double b = si[s] * db, k = q.lnk_lo + sj[s] * dk;
+        double f = prof_refine(&q, &b, &k, db, dk);
+        if (f < bs)
+            bs = f, bb = b, bk = k;
+    }
+    if (!(bs < INFINITY)) {
+        free(S);
+        return gw_err_set(err, GW_EINVAL, "B.31 fit: no finite sum of squares in the box (%d points)", n);
+    }
+    gw_stats_b31 best;
+    prof_eval(&q, bb, bk, &best);
+    /* a last Levenberg-Marquardt polish in all the free parameters, kept when
+     * it stays in the box and lowers the sum; the covariance where it ends */
+    b31_problem pb = {.x = x, .h = h, .n = n, .mask = mask};
+    b31_try t;
+    int iters = 0;
+    if (b31_run(&pb, &best, p, 500, &t) == GW_OK && t.converged && t.cost <= bs && in_box(&q, &t.p)) {
+        best = t.p, bs = t.cost, iters = t.iterations;
+    }
+    int rc = b31_run(&pb, &best, p, 0, &t);
+    free(S);
+    if (rc != GW_OK)
+        return gw_err_set(err, GW_EINVAL, "B.31 fit: the covariance failed (%d points)", n);
+    fit->p = best;
+    fit->free_mask = mask;
+    fit->at_bound = at_bounds(&q, &best);
     fit->n = n;
     fit->dof = n - p;
-    fit->iterations = best.iterations;
+    fit->iterations = iters;
+    fit->evaluations = q.evals;
     fit->converged = 1;
-    fit->rms = sqrt(best.cost / n);
-    double s2 = fit->dof > 0 ? best.cost / fit->dof : NAN;
+    fit->rms = sqrt(bs / n);
+    double s2 = fit->dof > 0 ? bs / fit->dof : NAN;
     double sd[4];
     for (int k = 0; k < p; k++)
-        sd[k] = sqrt(s2 * best.cov[k * 4 + k]);
+        sd[k] = sqrt(s2 * t.cov[k * 4 + k]);
     int k = 0, kb = -1, ka = -1;
-    if (pb.mask & GW_STATS_B31_OFFSET)
+    if (mask & GW_STATS_B31_OFFSET)
         fit->err.offset = sd[k++];
-    if (pb.mask & GW_STATS_B31_BETA)
-        fit->err.beta = sd[kb = k++];
-    if (pb.mask & GW_STATS_B31_AB)
-        fit->err.a_over_b = fit->p.a_over_b * sd[ka = k++]; /* d(a/b) = (a/b) d ln(a/b) */
-    if (pb.mask & GW_STATS_B31_TANG)
+    fit->err.beta = sd[kb = k++];
+    fit->err.a_over_b = fit->p.a_over_b * sd[ka = k++]; /* d(a/b) = (a/b) d ln(a/b) */
+    if (mask & GW_STATS_B31_TANG)
         fit->err.tan_gamma = fit->p.tan_gamma * sd[k++];
-    fit->corr_beta_ab = kb >= 0 && ka >= 0
-                            ? best.cov[kb * 4 + ka] / sqrt(best.cov[kb * 4 + kb] * best.cov[ka * 4 + ka])
-                            : NAN;
+    fit->corr_beta_ab = t.cov[kb * 4 + ka] / sqrt(t.cov[kb * 4 + kb] * t.cov[ka * 4 + ka]);
     gw_stats_b31_min(&fit->p, &fit->x_min, &fit->h_min);
     return GW_OK;
 }

@@ -139,6 +139,13 @@ static cJSON *fit_json(const gw_stats_analysis *R, const gw_stats_panel *D)
     cJSON_AddNumberToObject(o, "dof", f->dof);
     cJSON_AddNumberToObject(o, "rms_residual", f->rms);
     cJSON_AddNumberToObject(o, "iterations", f->iterations);
+    cJSON *ab = cJSON_AddArrayToObject(o, "at_bound");
+    for (int k = 0; k < 4; k++)
+        if (f->at_bound & bits[k].bit)
+            cJSON_AddItemToArray(ab, cJSON_CreateString(bits[k].name));
+    cJSON_AddStringToObject(o, "box", "the global least-squares minimum over beta in [0, the smallest boundary "
+                                      "R_b/R_m], a/b in [1e-6, 1e6], tan gamma in [tan 1e-6 deg, tan 89 deg] and "
+                                      "offset >= 0 (the free ones); at_bound: free parameters on an edge of it");
     cJSON_AddStringToObject(o, "errors", "standard errors from (J^T J)^-1 scaled by chi^2/dof (unweighted); "
                                          "null when dof = 0");
     cJSON_AddStringToObject(o, "identifiability", identifiability);

@@ -96,6 +96,7 @@ static int cell_number(const char *s, double *v)
 }
 
 static int numeric_setting(const char *name);
+static const char *setting_domain(const char *name, double v);
 
 static int add_param(gw_stats_table *t, char *text, long ln, gw_err *err)
 {
@@ -107,9 +108,13 @@ static int add_param(gw_stats_table *t, char *text, long ln, gw_err *err)
     if (!*name)
         return GW_OK;
     /* "# param rb-rm = abc" (or nan) was read as no value: the default 1 */
-    double v;
+    double v = 0;
     if (numeric_setting(name) && !(cell_number(value, &v) && isfinite(v)))
         return gw_err_set(err, GW_EFORMAT, "%s:%ld: param %s: '%s' is not a finite number", t->path, ln, name, value);
+    const char *dom = numeric_setting(name) ? setting_domain(name, v) : NULL;
+    if (dom)
+        return gw_err_set(err, GW_EFORMAT, "%s:%ld: param %s: '%s' is not a value a sweep runs (%s must be %s)",
+                          t->path, ln, name, value, name, dom);
     t->param_name[t->nparams] = strdup(name);
     t->param_value[t->nparams] = strdup(value);
     if (!t->param_name[t->nparams] || !t->param_value[t->nparams]) {
@@ -132,6 +137,29 @@ static int numeric_setting(const char *name)
         if (strcmp(name, settings[k]) == 0)
             return 1;
     return 0;
+}
+
+/* The domain of each numeric setting, as the layer model takes it (a sweep
+ * refuses any other value): NULL when v is in it, else what it must be.
+ * R_b/R_m = 0 or -1 gave a diagram with R_crit -2 and a binary row of mass
+ * ratio 0, H/R_m = -4 a group of its own (exit 0). */
+static const char *setting_domain(const char *name, double v)
+{
+    static const struct {
+        const char *name;
+        double lo, hi;
+        int open_lo, open_hi;
+        const char *what;
+    } dom[] = {{"point", 0, INFINITY, 0, 1, ">= 0"},      {"rb-rm", 0, INFINITY, 1, 1, "> 0"},
+               {"height-rm", 0, INFINITY, 0, 1, ">= 0"},  {"alpha", 0, 90, 0, 1, "in [0, 90) deg"},
+               {"vi", 0, INFINITY, 1, 1, "> 0"},          {"density", 0, INFINITY, 1, 1, "> 0"}};
+    for (size_t k = 0; k < sizeof dom / sizeof dom[0]; k++)
+        if (strcmp(name, dom[k].name) == 0) {
+            int ok = (dom[k].open_lo ? v > dom[k].lo : v >= dom[k].lo) &&
+                     (dom[k].open_hi ? v < dom[k].hi : v <= dom[k].hi);
+            return ok ? NULL : dom[k].what;
+        }
+    return NULL;
 }
 
 /* Whether s is a number as a whole, in range or not (strtod reads all of it). */
@@ -369,6 +397,10 @@ static int parse_row(gw_stats_table *t, char *line, long ln, int ncells, int cb,
         if (!num && numeric_setting(t->grid_name[i]))
             return gw_err_set(err, GW_EFORMAT, "%s:%ld: grid key %s: '%s' is not a number", t->path, ln,
                               t->grid_name[i], cells[1 + i]);
+        const char *dom = num ? setting_domain(t->grid_name[i], v) : NULL;
+        if (dom)
+            return gw_err_set(err, GW_EFORMAT, "%s:%ld: grid key %s: '%s' is not a value a sweep runs (%s must be %s)",
+                              t->path, ln, t->grid_name[i], cells[1 + i], t->grid_name[i], dom);
         t->grid_num[r * t->ngrid + i] = num ? v : NAN;
         t->grid_value[r * t->ngrid + i] = NULL;
     }

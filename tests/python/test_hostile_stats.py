@@ -352,3 +352,25 @@ def test_bad_tables_exit_2_naming_the_file(program, tmp_path):
         t = lines[:2] + [lines[2].rsplit(",", 1)[0] + "," + cell] + lines[3:]
         (tmp_path / "inf.csv").write_text("\n".join(t) + "\n")
         refused(program, tmp_path / "inf.csv", tmp_path, 3)
+
+
+def test_settings_outside_what_a_sweep_runs(program, tmp_path):
+    """R_b/R_m <= 0, H/R_m < 0, an incidence outside [0, 90), V_i or density <= 0,
+    a point < 0, as a grid value or a "# param" line, is a table no sweep wrote:
+    R_b/R_m 0 and -2 gave a diagram with R_crit -2 and a binary row of mass
+    ratio 0 (exit 0). Refused naming the file, the line and the setting."""
+    rows = make_rows(np.random.default_rng(11), points=2)
+    for key, bad in (("rb-rm", 0.0), ("rb-rm", -2.0), ("height-rm", -4.0), ("point", -1)):
+        t = [dict(r) for r in rows]
+        t[1][key] = bad
+        msg = refused(program, write(tmp_path / "dom.csv", t), tmp_path, 3)
+        assert key in msg and "is not a value a sweep runs" in msg, msg
+    for name, bad in (("alpha", "90"), ("alpha", "-1"), ("vi", "0"), ("density", "-2650"), ("rb-rm", "0")):
+        p = write(tmp_path / "param.csv", rows, comments=[f"# param {name} = {bad}"],
+                  grid=[g for g in GRID if g != name], cols=COLS)
+        msg = refused(program, p, tmp_path, 1)
+        assert f"param {name}" in msg and "is not a value a sweep runs" in msg, msg
+    # the edges a sweep runs are read: H/R_m = 0 (every particle mobile), incidence 0
+    t = [dict(r) for r in rows]
+    t[1]["height-rm"] = 0.0
+    run(program, write(tmp_path / "edge.csv", t, comments=["# param alpha = 0"]))

@@ -174,6 +174,10 @@ int gw_layer_make_run_progress(const gw_layer_make_setup *s, gw_progress_fn prog
     if (!s || !out)
         return gw_err_set(err, GW_EINVAL, "gw_layer_make_run: %s is NULL", !s ? "setup" : "out");
     memset(out, 0, sizeof *out);
+    /* a study run is a unit of work for its caller (Python, a C program): the
+     * cJSON failures of an earlier call in this thread, an out-of-memory error
+     * the caller went on from, are not this run's (its sample header is JSON) */
+    gw_json_failures_clear();
     gw_layer_params lp;
     gw_layer_make_params mp;
     int rc = gw_layer_make_plan(s, &lp, &mp, err);

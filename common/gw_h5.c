@@ -81,10 +81,16 @@ int gw_h5_stack_nomem(hid_t stack)
     return found;
 }
 
-static herr_t note_nomem(hid_t stack, void *m)
+/* The handler while a file is built: a failed allocation noted, nothing
+ * printed; a caller's own handler (one with client data: HDF5's default
+ * printer has none, and is not H5Eprint2 itself) is called on. */
+static herr_t note_nomem(hid_t stack, void *ctx)
 {
+    gw_h5_mem *m = ctx;
     if (gw_h5_stack_nomem(stack))
-        ((gw_h5_mem *)m)->nomem = 1;
+        m->nomem = 1;
+    if (m->old_fn && m->old_data)
+        m->old_fn(stack, m->old_data);
     return 0;
 }
 
@@ -92,8 +98,7 @@ hid_t gw_h5_mem_create(gw_h5_mem *m, const char *path, int v18)
 {
     memset(m, 0, sizeof *m);
     m->file = -1;
-    if (H5Eget_auto2(H5E_DEFAULT, &m->old_fn, &m->old_data) >= 0 &&
-        (m->old_fn == NULL || m->old_fn == (H5E_auto2_t)H5Eprint2) && H5Eset_auto2(H5E_DEFAULT, note_nomem, m) >= 0)
+    if (H5Eget_auto2(H5E_DEFAULT, &m->old_fn, &m->old_data) >= 0 && H5Eset_auto2(H5E_DEFAULT, note_nomem, m) >= 0)
         m->quiet = 1;
     hid_t fapl = H5Pcreate(H5P_FILE_ACCESS);
     if (fapl < 0) {

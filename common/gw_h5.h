@@ -26,11 +26,11 @@ typedef struct gw_h5_mem {
     void *buf;   /* the core driver's buffer (NULL before its first write) */
     size_t cap;  /* its size (a multiple of the 1 MiB increment) */
     int keep;    /* 1: H5Fclose hands it back instead of freeing it */
-    /* HDF5's automatic error printing (H5Eprint2, or none), replaced from
-     * create to write or abort by a silent handler that notes a failed
-     * allocation (an allocation failing inside HDF5 printed 60 lines of its
-     * error stack before granwave's one line), then restored. A caller's own
-     * handler is left in place (it notes what it needs: gw_h5_stack_nomem). */
+    /* HDF5's automatic error handler, replaced from create to write or abort
+     * by a silent one that notes a failed allocation (an allocation failing
+     * inside HDF5 printed 60 lines of its error stack before granwave's one
+     * line), then restored. A caller's own handler (one with client data) is
+     * called on from it. */
     H5E_auto2_t old_fn;
     void *old_data;
     int quiet;

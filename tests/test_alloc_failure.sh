@@ -21,7 +21,11 @@
 # SUNDIALS 6.4 (N_VClone and SUNContext_Create/SUNLogger dereference the NULL:
 # SIGSEGV; CVodeCreate prints its own lines) or inside HDF5 (its library
 # initialisation, "infinite loop closing library" at exit): the shim names the
-# library that asked (GW_FAIL_WHO), and only those failures are taken as limits.
+# library that asked (GW_FAIL_WHO), and only those failures are taken as limits,
+# when they end by a signal or exit 255, or print the library's own lines that
+# granwave cannot stop (HDF5's "initialization failed", SUNDIALS's "[CVODE
+# ERROR]" of a creation call); an HDF5 error stack printed while granwave
+# builds a file is a failure (it was, in 5 of 512 chain runs: now silenced).
 GW="$1"
 SRC="$2"
 SHIM="${3:-$(dirname "$GW")/tests/libgw_alloc_fail_shim.so}"
@@ -69,6 +73,10 @@ GW, SHIM, WORK, H5 = sys.argv[1], sys.argv[2], sys.argv[3], sys.argv[4] == '1'
 IN = WORK + '/in'
 ALLOWED = {'journal.csv', 'snapshot_0.vtk', 'snapshot_failure.vtk'}  # what a failed run leaves by design
 THIRD = re.compile(r'lib(sundials|fftw3|hdf5)')
+# their own lines that granwave cannot stop: HDF5's initialisation (before any
+# handler of granwave's can be set), SUNDIALS's creation calls (before the
+# handler can be set on the memory they failed to make)
+LIMIT_TEXT = re.compile(r'initiali[sz]ation failed|infinite loop closing library|\[(CVODE|ARKODE)[^]]* ERROR\]')
 
 CASES = [  # name, argv, io (also the file calls)
     ('chain', ['chain', '--n', '5', '--out', 'o', '--json'], 1),
@@ -241,7 +249,8 @@ for name, argv, io in CASES:
                 prob = 'exit 1 leaving %s' % (['the sample'] if changed == [''] else changed)
             elif stray:
                 prob = 'exit 1 leaving %s' % stray
-        if prob and THIRD.match(owner) and (rc == 'timeout' or rc < 0 or rc == 255 or len(new) > 1):
+        if prob and THIRD.match(owner) and (rc == 'timeout' or rc < 0 or rc == 255 or
+                                            (len(new) > 1 and LIMIT_TEXT.search('\n'.join(new)))):
             nlim += 1  # inside FFTW, SUNDIALS or HDF5: their own abort, crash or printing
             continue
         if prob:

@@ -196,8 +196,12 @@ static int version(int argc, char **argv)
         fprintf(stderr, "granwave version: out of memory\n");
         return 1;
     }
-    gw_json_print(o, stdout);
+    int nomem = gw_json_print(o, stdout) == GW_ENOMEM;
     cJSON_Delete(o);
+    if (nomem) {
+        fprintf(stderr, "granwave version: out of memory\n");
+        return 1;
+    }
     return stdout_checked(NULL, 0);
 }
 

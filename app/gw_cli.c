@@ -193,6 +193,20 @@ int gw_cli_study_error(const gw_param *t, const char *cmd, int rc, gw_err *err)
     return gw_err_set(err, rc, named ? "%s --%s" : "%s: %s", cmd, tmp);
 }
 
+int gw_cli_nomem(const char *cmd)
+{
+    fprintf(stderr, "granwave %s: out of memory\n", cmd);
+    return 1;
+}
+
+int gw_cli_json_stdout(const char *cmd, const cJSON *o)
+{
+    if (o && gw_json_print(o, stdout) != GW_ENOMEM)
+        return 0;
+    fprintf(stderr, "granwave %s: out of memory for the JSON result\n", cmd);
+    return 1;
+}
+
 void gw_cli_warnings(const char *cmd, const char *list)
 {
     for (const char *p = list; p && *p;) {

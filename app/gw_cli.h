@@ -116,6 +116,14 @@ int gw_cli_study_error(const struct gw_param *t, const char *cmd, int rc, gw_err
 /* A result's warnings (gw_common.h, "warnings of a result"; may be NULL), the
  * library's texts: each on stderr as "granwave CMD: warning: TEXT". */
 void gw_cli_warnings(const char *cmd, const char *list);
+/* o (a command's --json result; NULL when it could not be built) printed on
+ * stdout: 0, or 1 after "granwave CMD: out of memory for the JSON result" on
+ * stderr when it could not be printed whole (nothing is printed then). A write
+ * error of stdout is left to the program's own check of stdout. */
+int gw_cli_json_stdout(const char *cmd, const struct cJSON *o);
+/* "granwave CMD: out of memory" on stderr; returns 1 (a run failure, not bad
+ * input: the command line was not read wrong). */
+int gw_cli_nomem(const char *cmd);
 
 
 /* --out made only as far as needed and taken back on a refusal:

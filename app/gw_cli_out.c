@@ -86,9 +86,13 @@ char *gw_cli_command_line(const char *cmd, int argc, char **argv)
 
 char *gw_cli_provenance_add(char *hdr, const char *key, const cJSON *value)
 {
-    if (!hdr || !value)
-        return hdr;
-    char *js = gw_json_string(value, 0);
+    if (!hdr)
+        return NULL;
+    if (!value && !gw_json_failures())
+        return hdr; /* nothing to add */
+    /* a value cJSON could not build (NULL, or an object short of a member):
+     * out of memory, never a header that leaves the settings out */
+    char *js = value ? gw_json_string(value, 0) : NULL;
     char *out = NULL;
     if (js) {
         size_t len = strlen(hdr) + strlen(key) + strlen(js) + 4;

@@ -248,6 +248,13 @@ static const char *summary =
     "on a rerun; OUT/results.csv gets one row per case, sorted. Under mpirun, rank 0\n"
     "writes and hands out cases to the other ranks; otherwise one thread per core.";
 
+/* A refusal's exit code: 2 for the config or a case (bad input), 1 when the
+ * check itself ran out of memory (a run failure: the input is not at fault). */
+static int exit_code(int rc)
+{
+    return rc == GW_ENOMEM ? 1 : 2;
+}
+
 int gw_cmd_sweep(int argc, char **argv, const gw_sweep_model *const *models, int nmodels)
 {
     const char *out = NULL;
@@ -293,17 +300,17 @@ int gw_cmd_sweep(int argc, char **argv, const gw_sweep_model *const *models, int
         gw_err_set(&err, GW_EINVAL, "sweep --jobs: has no effect under mpirun with %d ranks (each rank but the "
                    "writer runs one case at a time: choose the ranks with mpirun -np)", size);
         code = 2;
-    } else if (gw_sweep_config_read(pos[0], models, nmodels, &cfg, &m, &err) != GW_OK) {
-        code = 2;
+    } else if ((rc = gw_sweep_config_read(pos[0], models, nmodels, &cfg, &m, &err)) != GW_OK) {
+        code = exit_code(rc);
     } else if (!out && !(out = cfg.out)) {
         gw_err_set(&err, GW_EINVAL, "%s: no output directory ([sweep] out or --out)", pos[0]);
         code = 2;
     }
     /* The journal and table of the whole grid fit, before a case is checked */
-    if (code == 0 && rank == 0 && gw_sweep_size_check(&cfg, m, &err) != GW_OK) {
+    if (code == 0 && rank == 0 && (rc = gw_sweep_size_check(&cfg, m, &err)) != GW_OK) {
         fprintf(stderr, "granwave sweep: %s: %s\n", pos[0], err.msg);
         err.msg[0] = '\0';
-        code = 2;
+        code = exit_code(rc);
     }
     /* Validate every case before running anything (bad values exit 2). */
     if (code == 0 && rank == 0 && m->check) {
@@ -317,11 +324,11 @@ int gw_cmd_sweep(int argc, char **argv, const gw_sweep_model *const *models, int
             if (k > 0 && k % 1000 == 0)
                 gw_cli_progress_report(&chk, k, cfg.ncases);
             gw_sweep_case(&cfg, k, names, values);
-            if (m->check(cfg.ngrid + cfg.nparams, names, values, &err) != GW_OK) {
+            if ((rc = m->check(cfg.ngrid + cfg.nparams, names, values, &err)) != GW_OK) {
                 char tmp[sizeof err.msg];
                 snprintf(tmp, sizeof tmp, "%s", err.msg);
-                gw_err_set(&err, GW_EINVAL, "case %ld: %s", k, tmp);
-                code = 2;
+                gw_err_set(&err, rc, "case %ld: %s", k, tmp);
+                code = exit_code(rc);
             }
         }
         if (code)
@@ -336,8 +343,8 @@ int gw_cmd_sweep(int argc, char **argv, const gw_sweep_model *const *models, int
         const char *local = getenv("OMPI_COMM_WORLD_LOCAL_SIZE");
         if (use_mpi && size > 1)
             workers = local && atol(local) > 1 ? atol(local) - 1 : size - 1;
-        if (gw_sweep_memory_check(&cfg, m, workers, use_mpi && size > 1, &most, &err) != GW_OK) {
-            code = 2;
+        if ((rc = gw_sweep_memory_check(&cfg, m, workers, use_mpi && size > 1, &most, &err)) != GW_OK) {
+            code = exit_code(rc);
             if (strncmp(err.msg, "jobs: ", 6) == 0 && use_mpi && size > 1)
                 fprintf(stderr, "granwave sweep: %s: the MPI ranks: %s (mpirun -np %ld or fewer)\n", pos[0],
                         err.msg + 6, most + 1);
@@ -361,7 +368,7 @@ int gw_cmd_sweep(int argc, char **argv, const gw_sweep_model *const *models, int
             code = 1, gw_err_set(&err, GW_ENOMEM, "out of memory");
         else if (gw_mkdir_p(out, &err) != GW_OK ||
                  (rc = gw_sweep_journal_open(out, &cfg, done, &s.ndone0, &s.fd, &err)) != GW_OK)
-            code = rc == GW_EIO ? 1 : 2; /* the journal stays open, and locked, until the sweep ends */
+            code = rc == GW_EIO ? 1 : exit_code(rc); /* the journal stays open, and locked, until the sweep ends */
     }
     if (code == 0 && rank == 0) {
         for (long k = 0; k < cfg.ncases; k++)

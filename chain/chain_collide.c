@@ -352,26 +352,36 @@ static void finish_result(run_state *st, const double *y)
                                  : NAN;
 }
 
+/* A sample callback's answer as the drive's: a stop (> 0) ends the run without
+ * an error, a failure (< 0: the trace's growth out of memory) is the run's. It
+ * was taken for a stop, so a trace that could not grow ended the run as if it
+ * were complete: exit 0 with F_max 0 and the beads' initial velocities as their
+ * final ones (tests/test_alloc_failure.sh). */
+static int sampled(int sr, int go_on, double t, gw_err *err)
+{
+    if (sr < 0)
+        return gw_err_set(err, sr, "chain: the trace at t = %.9g s: %s", t, gw_strerror(sr));
+    return sr > 0 ? GW_DRIVE_STOP : go_on;
+}
+
 /* The run's hooks (gw_solver_drive): at a root the contact flags and the
  * observation; at an output time the flags brought in line with the geometry
  * (reconcile) and the observation; after either the energy monitor and the end. */
 static int collide_root(void *ctx, double t, double *y, const int *roots, gw_err *err)
 {
-    (void)err;
     run_state *st = ctx;
     on_roots(st, t, y, roots);
-    return observe(st, t, y, 1) != 0 ? GW_DRIVE_STOP : GW_DRIVE_RESET;
+    return sampled(observe(st, t, y, 1), GW_DRIVE_RESET, t, err);
 }
 
 static int collide_output(void *ctx, double t, double *y, gw_err *err)
 {
-    (void)err;
     run_state *st = ctx;
     int wall_closed = st->closed[0];
     reconcile(st, t, y);
     if (wall_closed && !st->closed[0])
         on_wall_open(st, t, y);
-    return observe(st, t, y, 0) != 0 ? GW_DRIVE_STOP : GW_DRIVE_ON;
+    return sampled(observe(st, t, y, 0), GW_DRIVE_ON, t, err);
 }
 
 static int collide_after(void *ctx, double t, const double *y, gw_err *err)
@@ -713,8 +723,12 @@ int gw_chain_collide(const gw_chain *c, const gw_chain_run_opts *o, gw_chain_res
     st.t_expect = pl.t_expect;
     st.s = s;
     st.type = type;
-    if (observe(&st, t, y, 0) != 0)
+    if ((rc = sampled(observe(&st, t, y, 0), GW_DRIVE_ON, t, err)) < 0)
+        goto done;
+    if (rc == GW_DRIVE_STOP) {
+        rc = GW_OK;
         goto stopped;
+    }
     gw_drive drive = {.t_end = t_max, .dt_out = dt_out, .k_out = 1, .on_root = collide_root,
                       .on_output = collide_output, .after = collide_after, .ctx = &st};
     rc = gw_solver_drive(s, &drive, &t, y, roots, err);

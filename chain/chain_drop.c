@@ -383,7 +383,7 @@ static int drop_observed(drop_state *st, double t, const double *y, int is_event
 {
     int sr = observe(st, t, y, is_event);
     if (sr < 0)
-        return gw_err_set(err, sr, "drop: the sample callback failed at t = %.9g s", t);
+        return gw_err_set(err, sr, "drop: the sample callback failed at t = %.9g s: %s", t, gw_strerror(sr));
     return sr > 0 ? GW_DRIVE_STOP : GW_DRIVE_ON;
 }
 

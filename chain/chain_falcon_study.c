@@ -20,7 +20,7 @@
 
 #include "chain_setup_rows.h"
 
-void gw_chain_falcon_analyse(const gw_chain_params *p, double v, const gw_chain_result *res, int n_lo,
+int gw_chain_falcon_analyse(const gw_chain_params *p, double v, const gw_chain_result *res, int n_lo,
                              int n_hi, gw_chain_falcon_fit *a)
 {
     int count = n_hi - n_lo + 1, c20 = 0, np = 0;
@@ -61,6 +61,7 @@ void gw_chain_falcon_analyse(const gw_chain_params *p, double v, const gw_chain_
     a->speed = 4 * p->radius / a->fit.c1;
     a->speed20 = 4 * p->radius / a->fit20.c1;
     a->speed_theory = 4 * p->radius / a->t_q_theory;
+    return x ? GW_OK : GW_ENOMEM;
 }
 
 /* ---- the table of the inputs ---- */
@@ -434,7 +435,10 @@ int gw_chain_falcon_run(const gw_chain_falcon_setup *s, gw_progress_fn progress,
     for (int iv = 0; rc == GW_OK && iv < nv; iv++) {
         gw_chain_falcon_fit a;
         const gw_chain_result *rv = &res[iv * nn];
-        gw_chain_falcon_analyse(&r.params, out->v_imp[iv], rv, (int)s->n[0], (int)s->n[1], &a);
+        if (gw_chain_falcon_analyse(&r.params, out->v_imp[iv], rv, (int)s->n[0], (int)s->n[1], &a) != GW_OK) {
+            rc = gw_err_set(err, GW_ENOMEM, "out of memory for the fits");
+            break;
+        }
         for (int k = 0; k < nn; k++) {
             int c = iv * nn + k;
             out->f_max[c] = rv[k].f_max;

@@ -169,7 +169,8 @@ static int write_h5(const gw_chain_trace *tr, const char *dir, const char *stem,
     gw_h5_mem mem;
     hid_t file = gw_h5_mem_create(&mem, path, 0);
     if (file < 0)
-        return gw_err_set(err, GW_EIO, "%s: cannot create HDF5 file", path);
+        return mem.nomem ? gw_err_set(err, GW_ENOMEM, "%s: out of memory", path)
+                             : gw_err_set(err, GW_EIO, "%s: cannot create HDF5 file", path);
     hsize_t d1[1] = {tr->len}, d2[2] = {tr->len, (hsize_t)tr->n};
     if (tr->len > 0) {
         rc = h5_dataset(file, "t", tr->t, 1, d1, "s");
@@ -193,8 +194,10 @@ static int write_h5(const gw_chain_trace *tr, const char *dir, const char *stem,
         H5Tclose(ts);
     }
     if (rc != GW_OK) {
+        int nomem = mem.nomem;
         gw_h5_mem_abort(&mem);
-        return gw_err_set(err, GW_EIO, "%s: HDF5 write failed", path);
+        return nomem ? gw_err_set(err, GW_ENOMEM, "%s: out of memory", path)
+                     : gw_err_set(err, GW_EIO, "%s: HDF5 write failed", path);
     }
     return gw_h5_mem_write(&mem, path, err);
 }

@@ -182,8 +182,10 @@ typedef struct gw_chain_falcon_fit {
 } gw_chain_falcon_fit;
 
 /* Analyse the collisions res[0 .. n_hi - n_lo] (N = n_lo .. n_hi) of the column
- * p at impact velocity v into a. */
-void gw_chain_falcon_analyse(const gw_chain_params *p, double v, const gw_chain_result *res, int n_lo,
+ * p at impact velocity v into a. GW_OK, or GW_ENOMEM (no memory for the fit:
+ * a filled, its fits undefined, NaN; it was void, and an allocation that
+ * failed gave t_q and the wave speed null with exit 0). */
+int gw_chain_falcon_analyse(const gw_chain_params *p, double v, const gw_chain_result *res, int n_lo,
                              int n_hi, gw_chain_falcon_fit *a);
 
 /* The inputs of `granwave falcon`: the column (its model and solver rows; its n,

@@ -315,8 +315,20 @@ cJSON *gw_json_ints(const int *v, int n);
 cJSON *gw_json_bools(const int *v, int n);
 /* o as JSON text, numbers exact (the shortest %.15g-%.17g that reads back as
  * the same double), formatted or on one line; malloc'd (free it), NULL on out
- * of memory. gw_json_print and gw_json_write print the same way. */
+ * of memory. gw_json_print and gw_json_write print the same way.
+ * Also NULL once an allocation of cJSON has failed in the calling thread
+ * (gw_json_failures): cJSON's builders drop a member they could not allocate
+ * and say so only in a return value the callers rarely read, so a settings
+ * record or result could lose a key (a chain header without "wall_material")
+ * with exit 0; such an object is now never printed. */
 char *gw_json_string(const cJSON *o, int formatted);
+/* Allocations of cJSON (every cJSON call in the process goes through
+ * granwave's hooks once the library is loaded) that failed in the calling
+ * thread since it started or since gw_json_failures_clear. A caller that goes
+ * on after an out-of-memory error (an interpreter) clears them before building
+ * new objects. */
+unsigned long gw_json_failures(void);
+void gw_json_failures_clear(void);
 /* Print o (indented) with a newline to fp. */
 int gw_json_print(const cJSON *o, FILE *fp);
 /* Write o to path atomically. */

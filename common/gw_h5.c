@@ -65,20 +65,63 @@ static herr_t udata_keep(void *udata)
     return 0;
 }
 
+static herr_t find_nomem(unsigned n, const H5E_error2_t *e, void *found)
+{
+    (void)n;
+    if (e->maj_num == H5E_RESOURCE)
+        *(int *)found = 1;
+    return 0;
+}
+
+int gw_h5_stack_nomem(hid_t stack)
+{
+    int found = 0;
+    if (H5Ewalk2(stack, H5E_WALK_DOWNWARD, find_nomem, &found) < 0)
+        return 0;
+    return found;
+}
+
+/* The handler while a file is built: a failed allocation noted, nothing
+ * printed; a caller's own handler (one with client data: HDF5's default
+ * printer has none, and is not H5Eprint2 itself) is called on. */
+static herr_t note_nomem(hid_t stack, void *ctx)
+{
+    gw_h5_mem *m = ctx;
+    if (gw_h5_stack_nomem(stack))
+        m->nomem = 1;
+    if (m->old_fn && m->old_data)
+        m->old_fn(stack, m->old_data);
+    return 0;
+}
+
 hid_t gw_h5_mem_create(gw_h5_mem *m, const char *path, int v18)
 {
     memset(m, 0, sizeof *m);
     m->file = -1;
+    if (H5Eget_auto2(H5E_DEFAULT, &m->old_fn, &m->old_data) >= 0 && H5Eset_auto2(H5E_DEFAULT, note_nomem, m) >= 0)
+        m->quiet = 1;
     hid_t fapl = H5Pcreate(H5P_FILE_ACCESS);
-    if (fapl < 0)
+    if (fapl < 0) {
+        gw_h5_mem_abort(m);
         return -1;
+    }
     H5FD_file_image_callbacks_t cb = {buf_malloc, buf_memcpy, buf_realloc, buf_free, udata_same, udata_keep, m};
     /* grown 1 MiB at a time; backing_store 0: nothing is written on close */
     if (H5Pset_fapl_core(fapl, (size_t)1 << 20, 0) >= 0 && H5Pset_file_image_callbacks(fapl, &cb) >= 0 &&
         (!v18 || H5Pset_libver_bounds(fapl, H5F_LIBVER_V18, H5F_LIBVER_LATEST) >= 0))
         m->file = H5Fcreate(path, H5F_ACC_TRUNC, H5P_DEFAULT, fapl);
     H5Pclose(fapl);
+    if (m->file < 0)
+        gw_h5_mem_abort(m);
     return m->file;
+}
+
+/* HDF5's error printing as it was before gw_h5_mem_create. */
+static void loud(gw_h5_mem *m)
+{
+    if (m->quiet)
+        H5Eset_auto2(H5E_DEFAULT, m->old_fn, m->old_data);
+    m->quiet = 0;
 }
 
 void gw_h5_mem_abort(gw_h5_mem *m)
@@ -86,6 +129,7 @@ void gw_h5_mem_abort(gw_h5_mem *m)
     if (m->file >= 0)
         H5Fclose(m->file); /* frees the buffer (keep is 0) */
     m->file = -1;
+    loud(m);
 }
 
 /* HDF5 reads the image in place: its copies of the buffer (into the file
@@ -176,6 +220,7 @@ int gw_h5_mem_write(gw_h5_mem *m, const char *path, gw_err *err)
     }
     free(m->buf);
     m->buf = NULL, m->cap = 0;
+    loud(m);
     return rc;
 }
 #endif

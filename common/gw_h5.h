@@ -26,6 +26,15 @@ typedef struct gw_h5_mem {
     void *buf;   /* the core driver's buffer (NULL before its first write) */
     size_t cap;  /* its size (a multiple of the 1 MiB increment) */
     int keep;    /* 1: H5Fclose hands it back instead of freeing it */
+    /* HDF5's automatic error handler, replaced from create to write or abort
+     * by a silent one that notes a failed allocation (an allocation failing
+     * inside HDF5 printed 60 lines of its error stack before granwave's one
+     * line), then restored. A caller's own handler (one with client data) is
+     * called on from it. */
+    H5E_auto2_t old_fn;
+    void *old_data;
+    int quiet;
+    int nomem; /* an HDF5 call failed for want of memory */
 } gw_h5_mem;
 
 /* A new empty HDF5 file in memory, to be written to path (the name is only
@@ -39,6 +48,11 @@ hid_t gw_h5_mem_create(gw_h5_mem *m, const char *path, int v18);
 int gw_h5_mem_write(gw_h5_mem *m, const char *path, gw_err *err);
 /* Close an in-memory file without writing it (an error while building it). */
 void gw_h5_mem_abort(gw_h5_mem *m);
+/* 1 when the error stack holds a failed allocation (major error "resource
+ * unavailable"), to say "out of memory" rather than "HDF5 write failed"; for
+ * an automatic error handler (H5Eset_auto2), which sees the stack before the
+ * next HDF5 call clears it. */
+int gw_h5_stack_nomem(hid_t stack);
 #endif
 
 #endif

@@ -165,6 +165,13 @@ mode_t gw_new_file_mode(const char *replaces)
     return 0666 & ~current_umask();
 }
 
+/* The status of a failed open: out of memory (the stream's buffer, the
+ * kernel's) is a run failure, not a file to blame. */
+static int io_status(int e)
+{
+    return e == ENOMEM ? GW_ENOMEM : GW_EIO;
+}
+
 int gw_afile_open(gw_afile *f, const char *path, gw_err *err)
 {
     if (!f || !path)
@@ -186,7 +193,7 @@ int gw_afile_open(gw_afile *f, const char *path, gw_err *err)
         f->tmp[0] = '\0';
         int e = errno;
         release_signals(f);
-        return gw_err_set(err, GW_EIO, "%s: cannot create: %s", path, strerror(e));
+        return gw_err_set(err, io_status(e), "%s: cannot create: %s", path, strerror(e));
     }
     /* mkstemp made it 0600: the permissions a shell's > would give (the
      * replaced file's, or 0666 less the umask) */
@@ -198,7 +205,7 @@ int gw_afile_open(gw_afile *f, const char *path, gw_err *err)
         unlink(f->tmp);
         f->tmp[0] = '\0';
         release_signals(f);
-        return gw_err_set(err, GW_EIO, "%s: cannot open: %s", path, strerror(e));
+        return gw_err_set(err, io_status(e), "%s: cannot open: %s", path, strerror(e));
     }
     return GW_OK;
 }
@@ -589,8 +596,10 @@ int gw_input_open(const char *path, const char *what, FILE **out, gw_err *err)
         return gw_err_set(err, GW_EINVAL, "%s: empty file name", what);
     /* O_NONBLOCK: opening a FIFO without a writer would block until one comes */
     int fd = open(path, O_RDONLY | O_NONBLOCK | O_NOCTTY);
-    if (fd < 0)
-        return gw_err_set(err, GW_EIO, "%s: %s: cannot open: %s", what, path, strerror(errno));
+    if (fd < 0) {
+        int e = errno;
+        return gw_err_set(err, io_status(e), "%s: %s: cannot open: %s", what, path, strerror(e));
+    }
     struct stat st;
     if (fstat(fd, &st) != 0) {
         int e = errno;
@@ -609,7 +618,7 @@ int gw_input_open(const char *path, const char *what, FILE **out, gw_err *err)
     if (!fp) {
         int e = errno;
         close(fd);
-        return gw_err_set(err, GW_EIO, "%s: %s: cannot open: %s", what, path, strerror(e));
+        return gw_err_set(err, io_status(e), "%s: %s: cannot open: %s", what, path, strerror(e));
     }
     *out = fp;
     return GW_OK;

@@ -14,6 +14,36 @@
 #include "gw_common.h"
 #include "gw_locale.h"
 
+/* Failed allocations of cJSON in this thread (see gw_json_failures): thread
+ * state, as a cJSON object is built and printed by one thread. */
+static _Thread_local unsigned long json_failures;
+
+static void *json_malloc(size_t n)
+{
+    void *p = malloc(n);
+    if (!p)
+        json_failures++;
+    return p;
+}
+
+/* cJSON's allocator, installed when the library is loaded (before any cJSON
+ * call of the program: cJSON_InitHooks is not thread-safe). */
+__attribute__((constructor)) static void json_hooks(void)
+{
+    cJSON_Hooks h = {.malloc_fn = json_malloc, .free_fn = free};
+    cJSON_InitHooks(&h);
+}
+
+unsigned long gw_json_failures(void)
+{
+    return json_failures;
+}
+
+void gw_json_failures_clear(void)
+{
+    json_failures = 0;
+}
+
 cJSON *gw_json_doubles(const double *v, int n)
 {
     if (!v && n > 0)
@@ -79,6 +109,8 @@ static int exact_numbers(cJSON *o)
 
 char *gw_json_string(const cJSON *o, int formatted)
 {
+    if (json_failures)
+        return NULL; /* o may lack a member cJSON could not allocate */
     cJSON *d = cJSON_Duplicate(o, 1); /* a copy is converted */
     char *s = d && exact_numbers(d) ? (formatted ? cJSON_Print(d) : cJSON_PrintUnformatted(d)) : NULL;
     cJSON_Delete(d);

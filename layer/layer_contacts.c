@@ -55,14 +55,18 @@ static int pairs_cells(const gw_layer *L, layer_contact **c, int *nc, int *cap)
     const long nx = g.nx, ny = g.ny;
     for (int i = 0; i < n && rc == GW_OK; i++) {
         long cx = g.cell[i] % nx, cy = g.cell[i] / nx;
-        for (long ky = cy - 1; ky <= cy + 1; ky++) {
+        /* every loop stops at a failed push: the break left the cells after it
+         * to go on, and a push that then succeeded reset rc, so one failed
+         * allocation dropped a pair from the list without a word (the run
+         * then refused itself as "skin: 0.1 m is too small", exit 2) */
+        for (long ky = cy - 1; ky <= cy + 1 && rc == GW_OK; ky++) {
             if (ky < 0 || ky >= ny)
                 continue;
-            for (long kx = cx - 1; kx <= cx + 1; kx++) {
+            for (long kx = cx - 1; kx <= cx + 1 && rc == GW_OK; kx++) {
                 if (kx < 0 || kx >= nx)
                     continue;
                 long kc = ky * nx + kx;
-                for (int q = g.start[kc]; q < g.start[kc + 1]; q++) {
+                for (int q = g.start[kc]; q < g.start[kc + 1] && rc == GW_OK; q++) {
                     int j = g.idx[q];
                     if (j <= i)
                         continue;
@@ -71,8 +75,8 @@ static int pairs_cells(const gw_layer *L, layer_contact **c, int *nc, int *cap)
                         continue;
                     double dx = y[2 * j] - y[2 * i], dy = y[2 * j + 1] - y[2 * i + 1];
                     double lim = L->r[i] + L->r[j] + s;
-                    if (dx * dx + dy * dy < lim * lim && (rc = push(c, nc, cap, i, j)) != GW_OK)
-                        break;
+                    if (dx * dx + dy * dy < lim * lim)
+                        rc = push(c, nc, cap, i, j);
                 }
             }
         }

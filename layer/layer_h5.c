@@ -138,9 +138,11 @@ int gw_layer_impact_write_h5(const gw_layer_impact_result *r, const char *path, 
     free(led);
     int rc = GW_OK;
     if (bad) {
+        int nomem = mem.nomem;
         if (file >= 0)
             gw_h5_mem_abort(&mem);
-        rc = gw_err_set(err, GW_EIO, "%s: cannot write the HDF5 file", path);
+        rc = nomem ? gw_err_set(err, GW_ENOMEM, "%s: out of memory", path)
+                   : gw_err_set(err, GW_EIO, "%s: cannot write the HDF5 file", path);
     } else {
         rc = gw_h5_mem_write(&mem, path, err); /* fsync, then the rename makes it visible */
     }

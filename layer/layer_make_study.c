@@ -111,11 +111,13 @@ static char *header(const gw_layer_make_setup *s, const gw_layer_make_outcome *o
     cJSON *j = gw_param_json(make_params, s);
     char *js = j ? gw_json_string(j, 0) : NULL;
     cJSON_Delete(j);
-    size_t len = 512 + (js ? strlen(js) : 0);
+    if (!js) /* a sample whose header left its settings out ("{}") was written */
+        return NULL;
+    size_t len = 512 + strlen(js);
     char *h = malloc(len);
     if (h)
         gw_snprintf(h, len, "granwave %s library gw_layer_make_run\nsettings: %s\nsettled: t = %.4g s, E_k = %.4g J, "
-                 "converged %d, max overlap %.3g R_p", gw_version(), js ? js : "{}", o->r.t_settle, o->r.ke_final,
+                 "converged %d, max overlap %.3g R_p", gw_version(), js, o->r.t_settle, o->r.ke_final,
                  o->r.converged, o->r.max_overlap);
     free(js);
     return h;
@@ -172,6 +174,10 @@ int gw_layer_make_run_progress(const gw_layer_make_setup *s, gw_progress_fn prog
     if (!s || !out)
         return gw_err_set(err, GW_EINVAL, "gw_layer_make_run: %s is NULL", !s ? "setup" : "out");
     memset(out, 0, sizeof *out);
+    /* a study run is a unit of work for its caller (Python, a C program): the
+     * cJSON failures of an earlier call in this thread, an out-of-memory error
+     * the caller went on from, are not this run's (its sample header is JSON) */
+    gw_json_failures_clear();
     gw_layer_params lp;
     gw_layer_make_params mp;
     int rc = gw_layer_make_plan(s, &lp, &mp, err);
@@ -186,12 +192,18 @@ int gw_layer_make_run_progress(const gw_layer_make_setup *s, gw_progress_fn prog
     out->height_rm = out->height / mp.rm;
     if (s->out) {
         char *h = header(s, out);
-        rc = gw_layer_sample_write(&out->sample, s->out, h ? h : "", err);
+        rc = h ? gw_layer_sample_write(&out->sample, s->out, h, err)
+               : gw_err_set(err, GW_ENOMEM, "%s: out of memory for the header", s->out);
         free(h);
         unsigned long long fh = 0; /* the content written, as the program's JSON gives it */
         gw_err he = {{0}};
-        if (rc == GW_OK && gw_fnv1a64_file(s->out, "sample", &fh, &he) == GW_OK && (out->sample_fnv1a64 = malloc(17)))
+        int hrc = rc == GW_OK ? gw_fnv1a64_file(s->out, "sample", &fh, &he) : rc;
+        if (hrc == GW_OK && !(out->sample_fnv1a64 = malloc(17)))
+            hrc = GW_ENOMEM;
+        if (hrc == GW_OK)
             gw_snprintf(out->sample_fnv1a64, 17, "%016llx", fh);
+        else if (rc == GW_OK && hrc == GW_ENOMEM) /* the outcome would lack the hash of what it wrote */
+            rc = gw_err_set(err, hrc, "%s: out of memory", s->out);
     }
     if (rc == GW_OK && (rc = gw_layer_make_result_warnings(&out->r, mp.t_max, s->out, &out->warnings)) != GW_OK)
         rc = gw_err_set(err, rc, "layer-make: out of memory");

@@ -197,7 +197,10 @@ int gw_layer_sample_format_check(const char *path, gw_err *err)
      * made and removed at once, before hours of pluviation */
     gw_afile f;
     gw_err e = {{0}};
-    if (gw_afile_open(&f, path, &e) != GW_OK)
+    int orc = gw_afile_open(&f, path, &e);
+    if (orc == GW_ENOMEM) /* not the place's fault */
+        return gw_err_set(err, orc, "sample '%s': %s", path, e.msg);
+    if (orc != GW_OK)
         return gw_err_set(err, GW_EINVAL, "sample '%s': cannot be written there (%s)", path, e.msg);
     gw_afile_abort(&f);
     return GW_OK;
@@ -504,6 +507,7 @@ typedef struct h5_quiet {
     H5E_auto2_t fn;
     void *data;
     char why[160];
+    int nomem; /* a failed allocation in HDF5: "out of memory" */
 } h5_quiet;
 
 static herr_t h5_innermost(unsigned k, const H5E_error2_t *e, void *ctx)
@@ -520,7 +524,10 @@ static herr_t h5_innermost(unsigned k, const H5E_error2_t *e, void *ctx)
 
 static herr_t h5_record(hid_t stack, void *ctx)
 {
-    char *why = ctx;
+    h5_quiet *q = ctx;
+    char *why = q->why;
+    if (gw_h5_stack_nomem(stack))
+        q->nomem = 1;
     if (!why[0])
         H5Ewalk2(stack, H5E_WALK_UPWARD, h5_innermost, why);
     if (!why[0])
@@ -531,8 +538,9 @@ static herr_t h5_record(hid_t stack, void *ctx)
 static void h5_quiet_on(h5_quiet *q)
 {
     q->why[0] = '\0';
+    q->nomem = 0;
     H5Eget_auto2(H5E_DEFAULT, &q->fn, &q->data);
-    H5Eset_auto2(H5E_DEFAULT, h5_record, q->why);
+    H5Eset_auto2(H5E_DEFAULT, h5_record, q);
 }
 
 static void h5_quiet_off(const h5_quiet *q)
@@ -626,9 +634,11 @@ static int write_h5(const gw_layer_sample *s, const char *path, const char *head
               (s->body && h5_body_write(file, s->body, n));
     int rc = GW_OK;
     if (bad) {
+        int nomem = q.nomem;
         if (file >= 0)
             gw_h5_mem_abort(&mem);
-        rc = gw_err_set(err, GW_EIO, "sample '%s': HDF5 write failed%s%s", path, q.why[0] ? ": " : "", q.why);
+        rc = nomem ? gw_err_set(err, GW_ENOMEM, "sample '%s': out of memory", path)
+                   : gw_err_set(err, GW_EIO, "sample '%s': HDF5 write failed%s%s", path, q.why[0] ? ": " : "", q.why);
     } else {
         rc = gw_h5_mem_write(&mem, path, err);
     }

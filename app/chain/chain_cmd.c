@@ -140,9 +140,10 @@ int gw_cmd_chain(int argc, char **argv)
         chain_cli_free(&c);
         return 2;
     }
-    if (gw_chain_create(&c.params, &chain, &err) != GW_OK) {
+    int crc = gw_chain_create(&c.params, &chain, &err);
+    if (crc != GW_OK) {
         chain_cli_free(&c);
-        return chain_cli_fail(err.msg);
+        return chain_cli_fail_rc(crc, err.msg); /* out of memory: exit 1, not bad input */
     }
     gw_chain_trace_init(&tr, c.params.n);
     gw_chain_result r;
@@ -154,7 +155,10 @@ int gw_cmd_chain(int argc, char **argv)
         /* the library's run messages start "chain: " already */
         fprintf(stderr, "granwave %s%s\n", strncmp(err.msg, "chain: ", 7) == 0 ? "" : "chain: ", err.msg);
         code = rc == GW_EINVAL ? 2 : 1;
-        if (c.out && code == 1) { /* keep what was computed: the trace up to the failure and its state */
+        /* keep what was computed: the trace up to the failure and its state; not
+         * after an out-of-memory error (one line, nothing written: the trace
+         * then ends where memory did, not where the solver failed) */
+        if (c.out && code == 1 && rc != GW_ENOMEM) {
             char *hdr = run_header(&c, &r, argc, argv);
             char path[4096];
             gw_err werr = {{0}};
@@ -162,8 +166,9 @@ int gw_cmd_chain(int argc, char **argv)
             cJSON_AddStringToObject(o, "error", err.msg);
             gw_outset set; /* the earlier run's chain.json goes: these are this run's files */
             memset(&set, 0, sizeof set);
-            if (gw_mkdir_p(c.out, &werr) != GW_OK || gw_outset_begin(&set, c.out, chain_files, &werr) != GW_OK ||
-                gw_chain_trace_write(&tr, c.out, "chain", hdr ? hdr : "", &werr) != GW_OK ||
+            if ((!hdr && gw_err_set(&werr, GW_ENOMEM, "out of memory") != GW_OK) ||
+                gw_mkdir_p(c.out, &werr) != GW_OK || gw_outset_begin(&set, c.out, chain_files, &werr) != GW_OK ||
+                gw_chain_trace_write(&tr, c.out, "chain", hdr, &werr) != GW_OK ||
                 gw_path_join(path, sizeof path, c.out, "chain_failure.json") != GW_OK ||
                 gw_json_write(path, o, &werr) != GW_OK || gw_outset_commit(&set, &werr) != GW_OK) {
                 gw_outset_abort(&set);
@@ -180,8 +185,9 @@ int gw_cmd_chain(int argc, char **argv)
             cJSON *o = chain_result_json(&c, &r, wall_ms);
             gw_outset set; /* all of this run's files, or (a write failed) the earlier run's as they were */
             memset(&set, 0, sizeof set);
-            if (gw_mkdir_p(c.out, &err) != GW_OK || gw_outset_begin(&set, c.out, chain_files, &err) != GW_OK ||
-                gw_chain_trace_write(&tr, c.out, "chain", hdr ? hdr : "", &err) != GW_OK ||
+            if ((!hdr && gw_err_set(&err, GW_ENOMEM, "out of memory") != GW_OK) ||
+                gw_mkdir_p(c.out, &err) != GW_OK || gw_outset_begin(&set, c.out, chain_files, &err) != GW_OK ||
+                gw_chain_trace_write(&tr, c.out, "chain", hdr, &err) != GW_OK ||
                 gw_path_join(path, sizeof path, c.out, "chain.json") != GW_OK ||
                 gw_json_write(path, o, &err) != GW_OK || gw_outset_commit(&set, &err) != GW_OK) {
                 gw_outset_abort(&set);
@@ -200,7 +206,7 @@ int gw_cmd_chain(int argc, char **argv)
         if (code == 0) {
             if (c.json) {
                 cJSON *o = chain_result_json(&c, &r, wall_ms);
-                gw_json_print(o, stdout);
+                code = gw_cli_json_stdout("chain", o);
                 cJSON_Delete(o);
             } else {
                 print_text(&c, &r);

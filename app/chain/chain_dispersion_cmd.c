@@ -307,7 +307,10 @@ static int disp_column(const disp_cli *c, const gw_opt *opts, int argc, char **a
 {
     gw_err err = {{0}};
     gw_chain_dispersion_setup ds;
-    gw_chain_dispersion_setup_init(&ds);
+    if (gw_chain_dispersion_setup_init(&ds) != GW_OK) {
+        gw_chain_dispersion_setup_clear(&ds);
+        return gw_cli_nomem("dispersion");
+    }
     gw_chain_dispersion_outcome out;
     memset(&out, 0, sizeof out);
     int rc = gw_cli_study_setup(gw_chain_dispersion_setup_params(), &ds, opts, argc, argv, "dispersion", &err);
@@ -377,7 +380,8 @@ static int disp_column(const disp_cli *c, const gw_opt *opts, int argc, char **a
         gw_outset oset; /* the study's files of an earlier run go when this one is placed */
         memset(&oset, 0, sizeof oset);
         char jpath[4096]; /* dispersion.json: the --json object, as every command's --out */
-        if (c->out && (gw_mkdir_p(c->out, &err) != GW_OK || gw_outset_begin(&oset, c->out, disp_files, &err) != GW_OK ||
+        if (c->out && (!hdr ? gw_err_set(&err, GW_ENOMEM, "out of memory") != GW_OK :
+                       gw_mkdir_p(c->out, &err) != GW_OK || gw_outset_begin(&oset, c->out, disp_files, &err) != GW_OK ||
                        write_csv(c->out, "wall_spectrum.csv", hdr ? hdr : "", spectrum_body, &sp, &err) != GW_OK ||
                        (gw_path_join(jpath, sizeof jpath, c->out, "dispersion.json") != GW_OK &&
                         gw_err_set(&err, GW_EINVAL, "%s: path too long", c->out) != GW_OK) ||
@@ -388,7 +392,7 @@ static int disp_column(const disp_cli *c, const gw_opt *opts, int argc, char **a
             code = 1;
         }
         if (code == 0 && c->json)
-            gw_json_print(js, stdout);
+            code = gw_cli_json_stdout("dispersion", js);
         else if (code == 0) {
             char ip[32], rd[32];
             printf("granwave %s dispersion --column-n %d (v_imp %g m/s): wall-force peak %.6g Hz, "
@@ -490,7 +494,10 @@ int gw_cmd_dispersion(int argc, char **argv)
         return gw_cli_study_error(gw_chain_dispersion_setup_params(), "dispersion", GW_EINVAL, &err),
                chain_cli_fail(err.msg);
     gw_chain_dispersion_setup ds;
-    gw_chain_dispersion_setup_init(&ds);
+    if (gw_chain_dispersion_setup_init(&ds) != GW_OK) {
+        gw_chain_dispersion_setup_clear(&ds);
+        return gw_cli_nomem("dispersion");
+    }
     gw_chain_dispersion_outcome out;
     memset(&out, 0, sizeof out);
     int rc = gw_cli_study_setup(gw_chain_dispersion_setup_params(), &ds, opts, argc, argv, "dispersion", &err);
@@ -507,14 +514,15 @@ int gw_cmd_dispersion(int argc, char **argv)
         cJSON *settings = disp_settings_json(&c, &p, &sp);
         cJSON *o = disp_json(&p, &r, settings, wall_ms);
         char *hdr = gw_cli_provenance("dispersion", argc, argv, settings);
-        if (c.out && disp_write_out(c.out, hdr ? hdr : "", o, &r, &err) != GW_OK) {
+        if (c.out && (!hdr ? gw_err_set(&err, GW_ENOMEM, "out of memory") != GW_OK
+                           : disp_write_out(c.out, hdr, o, &r, &err) != GW_OK)) {
             fprintf(stderr, "granwave dispersion --out: %s\n", err.msg);
             code = 1;
         }
         if (code == 0) /* no wavenumber resolved: the ridge error is NaN (JSON null), said why */
             gw_cli_warnings("dispersion", out.warnings);
         if (code == 0 && c.json)
-            gw_json_print(o, stdout);
+            code = gw_cli_json_stdout("dispersion", o);
         else if (code == 0)
             disp_print(&c, &r, wall_ms);
         free(hdr);

@@ -321,7 +321,10 @@ int gw_cmd_drop(int argc, char **argv)
     gw_err err = {{0}};
     /* the study from the same command line (its rows are these options) */
     gw_chain_drop_setup ds;
-    gw_chain_drop_setup_init(&ds);
+    if (gw_chain_drop_setup_init(&ds) != GW_OK) {
+        gw_chain_drop_setup_clear(&ds);
+        return gw_cli_nomem("drop");
+    }
     gw_chain_drop_outcome o;
     memset(&o, 0, sizeof o);
     int code = 0;
@@ -357,7 +360,7 @@ int gw_cmd_drop(int argc, char **argv)
         code = 1;
     } else if (d.c.json) {
         cJSON *j = result_json(&d, r, o.wall_time_ms, buf);
-        gw_json_print(j, stdout);
+        code = gw_cli_json_stdout("drop", j);
         cJSON_Delete(j);
     } else {
         print_text(&d, r);

@@ -228,12 +228,13 @@ int gw_cmd_falcon(int argc, char **argv)
     long a, b;
     double *vv = NULL, *hh = NULL, *v = NULL;
     int nvv = 0, nhh = 0;
-    if (gw_parse_int_range(nrange, "falcon --n", 1, 100000, &a, &b, &err) != GW_OK ||
-        gw_parse_double_list(vlist, "falcon --vimp", &vv, &nvv, &err) != GW_OK ||
+    int prc;
+    if ((prc = gw_parse_int_range(nrange, "falcon --n", 1, 100000, &a, &b, &err)) != GW_OK ||
+        (prc = gw_parse_double_list(vlist, "falcon --vimp", &vv, &nvv, &err)) != GW_OK ||
         (strcmp(hlist, "none") != 0 &&
-         gw_parse_double_list(hlist, "falcon --heights", &hh, &nhh, &err) != GW_OK)) {
+         (prc = gw_parse_double_list(hlist, "falcon --heights", &hh, &nhh, &err)) != GW_OK)) {
         free(vv);
-        return chain_cli_fail(err.msg);
+        return chain_cli_fail_rc(prc, err.msg);
     }
     if (gw_chain_falcon_sizes_check(a, b, &err) != GW_OK || gw_chain_study_work_check(a, b, nvv + nhh, &err) != GW_OK) {
         free(vv);
@@ -244,13 +245,16 @@ int gw_cmd_falcon(int argc, char **argv)
     f.n_hi = (int)b;
     int nv = nvv + nhh, code = 0, rc0;
     gw_chain_falcon_setup fs;
-    gw_chain_falcon_setup_init(&fs);
+    if (gw_chain_falcon_setup_init(&fs) != GW_OK) {
+        gw_chain_falcon_setup_clear(&fs);
+        return gw_cli_nomem("falcon");
+    }
     /* the speeds, then the heights fallen in the run's gravity (or Earth's),
      * checked before --out is made (the library's one rule, which
      * gw_chain_falcon_run applies again) */
     v = malloc((size_t)nv * sizeof *v);
     if (!v) {
-        code = chain_cli_fail("falcon: out of memory");
+        code = chain_cli_fail_rc(GW_ENOMEM, "falcon: out of memory");
         goto out;
     }
     if (gw_chain_falcon_speeds(vv, nvv, hh, nhh, f.c.gravity, v, NULL, &err) != GW_OK) {
@@ -317,9 +321,10 @@ int gw_cmd_falcon(int argc, char **argv)
         cJSON_Delete(set);
         char path[4096];
         gw_outset oset; /* all of this run's files in place, or none (and the earlier run's as they were) */
-        rc = gw_outset_begin(&oset, f.c.out, falcon_files, &err);
+        memset(&oset, 0, sizeof oset);
+        rc = hdr ? gw_outset_begin(&oset, f.c.out, falcon_files, &err) : gw_err_set(&err, GW_ENOMEM, "out of memory");
         if (rc == GW_OK)
-            rc = write_tables(&f, f.c.out, hdr ? hdr : "", &err);
+            rc = write_tables(&f, f.c.out, hdr, &err);
         if (rc == GW_OK)
             rc = write_traces(&f, f.c.out, argc, argv, &err);
         if (rc == GW_OK && gw_path_join(path, sizeof path, f.c.out, "falcon_summary.json") == GW_OK)
@@ -337,7 +342,7 @@ int gw_cmd_falcon(int argc, char **argv)
     }
     if (code == 0) {
         if (f.c.json) {
-            gw_json_print(sum, stdout);
+            code = gw_cli_json_stdout("falcon", sum);
         } else {
             printf("granwave %s falcon: %d collisions in %.2f s\n", gw_version(), ncase, f.o.wall_time_s);
             for (int iv = 0; iv < nv; iv++) {

@@ -156,7 +156,8 @@ static int cli_error(const char *cmd, int rc, gw_err *err)
 static int cli_setup(const chain_cli *c, const gw_opt *opts, gw_chain_setup *s, gw_err *err)
 {
     const gw_param *t = gw_chain_setup_params();
-    gw_chain_setup_init(s);
+    if (gw_chain_setup_init(s) != GW_OK)
+        return gw_err_set(err, GW_ENOMEM, "out of memory");
     s->n = c->params.n;
     s->vimp = c->params.v_imp;
     s->sheets = c->sheets_mode;

@@ -110,7 +110,10 @@ int gw_cmd_softwall(int argc, char **argv)
         return chain_cli_fail_rc(rrc, err.msg);
     }
     gw_chain_softwall_setup ss;
-    gw_chain_softwall_setup_init(&ss);
+    if (gw_chain_softwall_setup_init(&ss) != GW_OK) {
+        gw_chain_softwall_setup_clear(&ss);
+        return gw_cli_nomem("softwall");
+    }
     gw_chain_softwall_outcome so;
     memset(&so, 0, sizeof so);
     int rc = gw_cli_study_setup(gw_chain_softwall_setup_params(), &ss, opts, argc, argv, "softwall", &err);
@@ -187,7 +190,7 @@ int gw_cmd_softwall(int argc, char **argv)
             code = 1;
         }
         if (code == 0 && c.json) {
-            gw_json_print(o, stdout);
+            code = gw_cli_json_stdout("softwall", o);
         } else if (code == 0) {
             printf("granwave %s softwall: v_imp %.4g m/s, K_c %.4g N/m^1.5, rigid-wall T_q %.3f us (%.1f s)\n",
                    gw_version(), vimp, kc, t_q * 1e6, wall_s);

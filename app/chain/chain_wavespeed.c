@@ -58,9 +58,11 @@ int gw_cmd_wavespeed(int argc, char **argv)
     long a, b;
     double *v = NULL;
     int nv = 0;
-    if (gw_parse_int_range(nrange, "wavespeed --n", 1, 100000, &a, &b, &err) != GW_OK ||
-        gw_parse_double_list_in(vlist, "wavespeed --vimp", GW_CHAIN_VIMP_MIN, GW_CHAIN_VIMP_MAX, 0, &v, &nv, &err) != GW_OK)
-        return chain_cli_fail(err.msg);
+    int prc;
+    if ((prc = gw_parse_int_range(nrange, "wavespeed --n", 1, 100000, &a, &b, &err)) != GW_OK ||
+        (prc = gw_parse_double_list_in(vlist, "wavespeed --vimp", GW_CHAIN_VIMP_MIN, GW_CHAIN_VIMP_MAX, 0, &v, &nv,
+                                       &err)) != GW_OK)
+        return chain_cli_fail_rc(prc, err.msg);
     if (b - a < 2 || b < 8) {
         free(v);
         return chain_cli_fail("wavespeed --n: need at least 3 sizes and a largest column of >= 8 beads");
@@ -82,7 +84,10 @@ int gw_cmd_wavespeed(int argc, char **argv)
     }
     int code = 0;
     gw_chain_wavespeed_setup ws;
-    gw_chain_wavespeed_setup_init(&ws);
+    if (gw_chain_wavespeed_setup_init(&ws) != GW_OK) {
+        gw_chain_wavespeed_setup_clear(&ws);
+        return gw_cli_nomem("wavespeed");
+    }
     gw_chain_wavespeed_outcome wo;
     memset(&wo, 0, sizeof wo);
     gw_cli_progress prog;
@@ -142,9 +147,11 @@ int gw_cmd_wavespeed(int argc, char **argv)
         if (c.out) {
             gw_afile af;
             gw_outset oset; /* the table and the JSON of one run, or (a write failed) the earlier run's */
+            memset(&oset, 0, sizeof oset);
             static const char *const files[] = {"wavespeed.csv", "wavespeed.json", NULL};
             char *hdr = gw_cli_one_line(gw_cli_provenance("wavespeed", argc, argv, set), ' ');
-            if (gw_outset_begin(&oset, c.out, files, &err) != GW_OK ||
+            if ((!hdr && gw_err_set(&err, GW_ENOMEM, "out of memory") != GW_OK) ||
+                gw_outset_begin(&oset, c.out, files, &err) != GW_OK ||
                 gw_path_join(path, sizeof path, c.out, "wavespeed.csv") != GW_OK ||
                 gw_afile_open(&af, path, &err) != GW_OK) {
                 code = 1;
@@ -168,7 +175,7 @@ int gw_cmd_wavespeed(int argc, char **argv)
             free(hdr);
         }
         if (code == 0 && c.json) {
-            gw_json_print(o, stdout);
+            code = gw_cli_json_stdout("wavespeed", o);
         } else if (code == 0) {
             printf("granwave %s wavespeed (%.1f s)\n  v_imp     v_tq    v_front  v_group  v_group/sqrt(3/2)  (m/s)\n",
                    gw_version(), wall_s);

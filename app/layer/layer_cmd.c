@@ -46,6 +46,15 @@ static int fail(const char *cmd, const char *msg)
     return 2;
 }
 
+/* fail, but exit 1 when the status is out of memory (a run failure, not the
+ * input: "granwave layer-impact: sample '...': out of memory for 12 particles"
+ * ended 2, as if the sample were bad). */
+static int fail_rc(const char *cmd, int rc, const char *msg)
+{
+    int code = fail(cmd, msg);
+    return rc == GW_ENOMEM ? 1 : code;
+}
+
 /* ------------------------------------------------------------ layer-make --- */
 
 /* On a terminal, a progress line every PROGRESS_MS of wall time once a run
@@ -138,13 +147,16 @@ int gw_cmd_layer_make(int argc, char **argv)
     if (!c.out)
         return fail("layer-make", "--out: the sample file to write is required");
     gw_layer_make_setup st;
-    gw_layer_make_setup_init(&st);
+    if (gw_layer_make_setup_init(&st) != GW_OK) {
+        gw_layer_make_setup_clear(&st);
+        return gw_cli_nomem("layer-make");
+    }
     int prc = gw_cli_study_setup(gw_layer_make_setup_params(), &st, o, argc, argv, "layer-make", &err);
     if (prc == GW_OK && (prc = gw_layer_make_plan(&st, &m.lp, &mp, &err)) != GW_OK)
         gw_cli_study_error(gw_layer_make_setup_params(), "layer-make", prc, &err); /* "NAME:" -> "--NAME:" */
     gw_layer_make_setup_clear(&st);
     if (prc != GW_OK)
-        return fail("layer-make", err.msg);
+        return fail_rc("layer-make", prc, err.msg);
     out = c.out;
     solver = gw_solver_type_name(mp.solver);
     const int json = c.json;
@@ -176,8 +188,9 @@ int gw_cmd_layer_make(int argc, char **argv)
                  hdr ? hdr : "", r.t_settle, r.ke_final, r.converged, r.max_overlap,
                  gw_layer_mass_law_name(m.lp.mass_law), gw_layer_clump_mass_name(m.lp.clump_mass), mp.damping,
                  mp.modulus_factor, solver, mp.dt);
+    /* no header (out of memory for it): the sample would not record its settings */
+    rc = info && hdr ? gw_layer_sample_write(&s, out, info, &err) : gw_err_set(&err, GW_ENOMEM, "out of memory");
     free(hdr);
-    rc = info ? gw_layer_sample_write(&s, out, info, &err) : gw_err_set(&err, GW_ENOMEM, "out of memory");
     free(info);
     if (rc != GW_OK) {
         gw_layer_sample_free(&s);
@@ -194,6 +207,7 @@ int gw_cmd_layer_make(int argc, char **argv)
     double h = 0;
     for (int k = 0; k < s.n; k++)
         h = fmax(h, s.y[k] + s.r[k]);
+    int code = 0;
     if (json) {
         cJSON *j = cJSON_CreateObject();
         cJSON_AddStringToObject(j, "version", gw_version());
@@ -201,8 +215,13 @@ int gw_cmd_layer_make(int argc, char **argv)
         unsigned long long fh = 0; /* the content written: what layer-impact records */
         char hx[17] = "";
         gw_err he = {{0}};
-        if (gw_fnv1a64_file(out, "sample", &fh, &he) == GW_OK)
+        int hrc = gw_fnv1a64_file(out, "sample", &fh, &he);
+        if (hrc == GW_OK)
             snprintf(hx, sizeof hx, "%016llx", fh);
+        else if (hrc == GW_ENOMEM) { /* out of memory, not a hash the file lacks: no JSON (exit 1) */
+            cJSON_Delete(j);
+            j = NULL;
+        }
         if (hx[0])
             cJSON_AddStringToObject(j, "sample_fnv1a64", hx);
         else
@@ -227,8 +246,10 @@ int gw_cmd_layer_make(int argc, char **argv)
         cJSON_AddNumberToObject(j, "rebuilds", (double)r.rebuilds);
         cJSON_AddNumberToObject(j, "wall_time_ms", r.wall_ms);
         cJSON_AddItemToObject(j, "settings", settings);
+        if (!j)
+            cJSON_Delete(settings);
         settings = NULL;
-        gw_json_print(j, stdout);
+        code = gw_cli_json_stdout("layer-make", j);
         cJSON_Delete(j);
     } else {
         printf("granwave %s layer-make: %d particles, porosity %.4f, height %.3f m (%.2f R_m)\n",
@@ -247,7 +268,7 @@ int gw_cmd_layer_make(int argc, char **argv)
     }
     gw_layer_sample_free(&s);
     cJSON_Delete(settings);
-    return 0;
+    return code;
 }
 
 /* ---------------------------------------------------------- layer-impact --- */
@@ -569,7 +590,10 @@ int gw_cmd_layer_impact(int argc, char **argv)
      * library (the sample, the materials, the solver, the options without
      * effect): what a sweep case and Python do */
     gw_layer_impact_setup st;
-    gw_layer_impact_setup_init(&st);
+    if (gw_layer_impact_setup_init(&st) != GW_OK) {
+        gw_layer_impact_setup_clear(&st);
+        return gw_cli_nomem("layer-impact");
+    }
     gw_layer_impact_plan plan;
     memset(&plan, 0, sizeof plan);
     int prc = gw_cli_study_setup(gw_layer_impact_setup_params(), &st, o, argc, argv, "layer-impact", &err);
@@ -578,7 +602,7 @@ int gw_cmd_layer_impact(int argc, char **argv)
     gw_layer_impact_setup_clear(&st);
     if (prc != GW_OK) {
         gw_layer_impact_plan_free(&plan);
-        return fail("layer-impact", err.msg);
+        return fail_rc("layer-impact", prc, err.msg);
     }
     c.m.lp = plan.lp; /* what the JSON settings and the text report */
     c.ip = plan.ip;
@@ -648,7 +672,8 @@ int gw_cmd_layer_impact(int argc, char **argv)
         /* a snapshot_failure.vtk left by an earlier failed run in DIR is not this
          * run's (beside its results it read as the state where it failed): the
          * set's commit removes it */
-        if (write_csvs(&c, &r, hdr ? hdr : "", &err) != GW_OK ||
+        if ((!hdr && gw_err_set(&err, GW_ENOMEM, "out of memory") != GW_OK) ||
+            write_csvs(&c, &r, hdr, &err) != GW_OK ||
             gw_path_join(path, sizeof path, c.out, "impact.json") != GW_OK ||
             gw_json_write(path, j, &err) != GW_OK || gw_outset_commit(&oset, &err) != GW_OK) {
             gw_outset_abort(&oset);
@@ -659,7 +684,7 @@ int gw_cmd_layer_impact(int argc, char **argv)
     }
     if (code == 0) {
         if (c.json) {
-            gw_json_print(j, stdout);
+            code = gw_cli_json_stdout("layer-impact", j);
         } else {
             printf("granwave %s layer-impact: R_b = %g R_m, V_i = %g m/s, alpha = %g deg, solver %s\n",
                    gw_version(), c.ip.rb_rm, c.ip.vi, c.ip.alpha_deg, c.solver);

@@ -124,7 +124,10 @@ int gw_cmd_layer_stats(int argc, char **argv)
     gw_stats_analysis R;
     memset(&R, 0, sizeof R);
     gw_stats_setup S;
-    gw_stats_setup_init(&S);
+    if (gw_stats_setup_init(&S) != GW_OK) {
+        gw_stats_setup_clear(&S);
+        return gw_cli_nomem("layer-stats");
+    }
     S.defaults = layer_defaults();
     const char *out = NULL, *fit = "beta,a_over_b";
     int json = 0;
@@ -163,9 +166,13 @@ int gw_cmd_layer_stats(int argc, char **argv)
         gw_stats_setup_clear(&S);
         return 2;
     }
-    if (out && (gw_stats_out_check(out, "layer-stats --out", &err) != GW_OK || /* before any work */
-                gw_stats_out_check_input(out, pos[0], &err) != GW_OK))
-        return gw_stats_setup_clear(&S), fail(err.msg);
+    int orc = GW_OK;
+    if (out && ((orc = gw_stats_out_check(out, "layer-stats --out", &err)) != GW_OK || /* before any work */
+                (orc = gw_stats_out_check_input(out, pos[0], &err)) != GW_OK)) {
+        gw_stats_setup_clear(&S);
+        int code = fail(err.msg);
+        return orc == GW_ENOMEM ? 1 : code; /* the check ran out of memory: not the directory's fault */
+    }
     if (!*pos[0]) /* the table reader's message (the setup refuses an empty input as "input: ...") */
         return gw_stats_setup_clear(&S), fail("layer-stats RESULTS.csv: empty file name");
     const gw_param *tab = gw_stats_setup_params();
@@ -198,8 +205,7 @@ int gw_cmd_layer_stats(int argc, char **argv)
         /* as every other command: nothing on stdout when the files were not written */
     } else if (json) {
         cJSON *j = gw_stats_json(&R, 1);
-        if (!j || gw_json_print(j, stdout) != GW_OK)
-            status = 1;
+        status = gw_cli_json_stdout("layer-stats", j); /* it ended 1 without a word */
         cJSON_Delete(j);
     } else {
         print_text(&R);

@@ -123,8 +123,8 @@ static const char *ark_configure(gw_solver *s, ark_impl *a, int method, int *fla
         ARK_CHECK(ARKStepSetTableName(a->mem, "ARKODE_DIRK_NONE", "ARKODE_CASH_KARP_6_4_5"));
     } else {
         if (gw_sun_band(s, a->y, a->ctx, &a->A, &a->LS) != GW_OK) {
-            *flag = -1;
-            return "band matrix allocation";
+            *flag = ARK_MEM_FAIL;
+            return "the band matrix";
         }
         ARK_CHECK(ARKStepSetLinearSolver(a->mem, a->LS, a->A));
         if (method == GW_ARKODE_DIRK) {
@@ -159,7 +159,7 @@ static int ark_create(gw_solver *s, double t0, const double *y0, gw_err *err)
     s->impl = a;
     if (SUNContext_Create(NULL, &a->ctx) != 0) {
         ark_destroy(s);
-        return gw_err_set(err, GW_ESOLVER, "arkode: SUNContext_Create failed");
+        return gw_err_set(err, GW_ENOMEM, "arkode: out of memory (SUNContext_Create)"); /* its only failure */
     }
     a->y = gw_sun_vector(s->sys.dim, a->ctx);
     a->abstol = gw_sun_abstol(s, a->ctx);
@@ -180,16 +180,22 @@ static int ark_create(gw_solver *s, double t0, const double *y0, gw_err *err)
         a->mem = ARKStepCreate(gw_sun_rhs_ex, gw_sun_rhs_im, t0, a->y, a->ctx);
     if (!a->mem) {
         ark_destroy(s);
-        return gw_err_set(err, GW_ESOLVER, "arkode: %sCreate failed",
+        return gw_err_set(err, GW_ENOMEM, "arkode: out of memory (%sCreate)", /* its only failure */
                           a->erk ? "ERKStep" : "ARKStep");
     }
     int flag = 0;
     const char *failed =
         a->erk ? erk_configure(s, a, &flag) : ark_configure(s, a, method, &flag);
     if (failed) {
-        gw_err_set(err, GW_ESOLVER, "arkode: %s failed (flag %d)", failed, flag);
+        /* a failed allocation (ARKODE's own or its linear solver interface's):
+         * out of memory, not a solver failure */
+        int rc = flag == ARK_MEM_FAIL || flag == ARKLS_MEM_FAIL ? GW_ENOMEM : GW_ESOLVER;
+        if (rc == GW_ENOMEM)
+            gw_err_set(err, rc, "arkode: out of memory (%s)", failed);
+        else
+            gw_err_set(err, rc, "arkode: %s failed (flag %d)", failed, flag);
         ark_destroy(s);
-        return GW_ESOLVER;
+        return rc;
     }
     return GW_OK;
 }

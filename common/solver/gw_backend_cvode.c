@@ -93,15 +93,26 @@ static void cv_flag_name(int flag, char *buf, size_t len)
     free(name);
 }
 
+/* A setup call's flag for a failed allocation (CVODE's own, or its linear
+ * solver interface's): out of memory, exit 1 "out of memory", not a solver
+ * failure. */
+static int cv_nomem(int flag)
+{
+    return flag == CV_MEM_FAIL || flag == CVLS_MEM_FAIL;
+}
+
 #define CV_TRY(call, what)                                                           \
     do {                                                                             \
         int flag_ = (call);                                                          \
         if (flag_ < 0) {                                                             \
             char name_[64];                                                          \
             cv_flag_name(flag_, name_, sizeof name_);                                \
-            gw_err_set(err, GW_ESOLVER, "cvode: %s failed: %s", what, name_);        \
+            int rc_ = cv_nomem(flag_) ? GW_ENOMEM : GW_ESOLVER;                      \
+            gw_err_set(err, rc_, rc_ == GW_ENOMEM ? "cvode: %s: out of memory (%s)"  \
+                                                  : "cvode: %s failed: %s",          \
+                       what, name_);                                                 \
             cv_destroy(s);                                                           \
-            return GW_ESOLVER;                                                       \
+            return rc_;                                                              \
         }                                                                            \
     } while (0)
 
@@ -117,7 +128,7 @@ static int cv_create(gw_solver *s, double t0, const double *y0, gw_err *err)
     s->impl = c;
     if (SUNContext_Create(NULL, &c->ctx) != 0) {
         cv_destroy(s);
-        return gw_err_set(err, GW_ESOLVER, "cvode: SUNContext_Create failed");
+        return gw_err_set(err, GW_ENOMEM, "cvode: out of memory (SUNContext_Create)"); /* its only failure */
     }
     c->y = gw_sun_vector(s->sys.dim, c->ctx);
     c->abstol = gw_sun_abstol(s, c->ctx);
@@ -132,7 +143,7 @@ static int cv_create(gw_solver *s, double t0, const double *y0, gw_err *err)
     c->mem = CVodeCreate(method == GW_CVODE_BDF ? CV_BDF : CV_ADAMS, c->ctx);
     if (!c->mem) {
         cv_destroy(s);
-        return gw_err_set(err, GW_ESOLVER, "cvode: CVodeCreate failed");
+        return gw_err_set(err, GW_ENOMEM, "cvode: out of memory (CVodeCreate)"); /* its only failure */
     }
     CV_TRY(CVodeSetErrHandlerFn(c->mem, gw_sun_errh, s), "CVodeSetErrHandlerFn");
     CV_TRY(CVodeInit(c->mem, gw_sun_rhs, t0, c->y), "CVodeInit");
@@ -153,7 +164,7 @@ static int cv_create(gw_solver *s, double t0, const double *y0, gw_err *err)
     if (method == GW_CVODE_BDF) {
         if (gw_sun_band(s, c->y, c->ctx, &c->A, &c->LS) != GW_OK) {
             cv_destroy(s);
-            return gw_err_set(err, GW_ENOMEM, "cvode: band matrix allocation failed");
+            return gw_err_set(err, GW_ENOMEM, "cvode: out of memory for the band matrix");
         }
         CV_TRY(CVodeSetLinearSolver(c->mem, c->LS, c->A), "CVodeSetLinearSolver");
         if (s->p.use_jac && s->sys.jac && !s->sys.matrix_free)
@@ -162,7 +173,7 @@ static int cv_create(gw_solver *s, double t0, const double *y0, gw_err *err)
         c->NLS = SUNNonlinSol_FixedPoint(c->y, 0, c->ctx);
         if (!c->NLS) {
             cv_destroy(s);
-            return gw_err_set(err, GW_ENOMEM, "cvode: fixed-point solver allocation failed");
+            return gw_err_set(err, GW_ENOMEM, "cvode: out of memory for the fixed-point solver");
         }
         CV_TRY(CVodeSetNonlinearSolver(c->mem, c->NLS), "CVodeSetNonlinearSolver");
     }

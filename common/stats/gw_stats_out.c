@@ -556,7 +556,10 @@ int gw_stats_out_check(const char *dir, const char *what, gw_err *err)
         return gw_err_set(err, GW_EINVAL, "%s: path too long", what);
     gw_afile f;
     gw_err e = {{0}};
-    if (gw_afile_open(&f, probe, &e) != GW_OK)
+    int orc = gw_afile_open(&f, probe, &e);
+    if (orc == GW_ENOMEM) /* not the directory's fault */
+        return gw_err_set(err, orc, "%s: %s", what, e.msg);
+    if (orc != GW_OK)
         return gw_err_set(err, GW_EINVAL, "%s: cannot write into '%s' (%s)", what, d,
                           strstr(e.msg, ": cannot create: ") ? strstr(e.msg, ": cannot create: ") + 17 : e.msg);
     gw_afile_abort(&f);

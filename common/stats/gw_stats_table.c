@@ -218,10 +218,13 @@ static int parse_header(gw_stats_table *t, char *line, long ln, int *ncells, gw_
     t->nhash = nh;
     n -= nh;
     t->ngrid = xi - 1;
-    t->ncols = n - xi;
-    t->col_name = calloc((size_t)t->ncols, sizeof *t->col_name);
+    /* ncols only once its names are there: with the count set and the array
+     * not allocated, the reader's next look-up of a column (and the table's
+     * free) read through a null pointer (SIGSEGV, tests/test_alloc_failure.sh) */
+    t->col_name = calloc((size_t)(n - xi), sizeof *t->col_name);
     if (!t->col_name)
         return gw_err_set(err, GW_ENOMEM, "%s: out of memory", t->path);
+    t->ncols = n - xi;
     for (int i = 1; i < n; i++) {
         char *s = strdup(cells[i]);
         if (!s)
@@ -786,7 +789,7 @@ int gw_stats_table_parse(const char *text, const char *name, gw_stats_table *t, 
         if (!header_line) {
             header_line = ln;
             rc = parse_header(t, line, ln, &ncells, err);
-            cb = gw_stats_table_col(t, "bounced");
+            cb = rc == GW_OK ? gw_stats_table_col(t, "bounced") : -1;
             continue;
         }
         if (t->nrows == cap && grow(t, &cap) != GW_OK)

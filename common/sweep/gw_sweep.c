@@ -38,6 +38,7 @@ typedef struct parse_ctx {
     unsigned char *calls;
     long ncalls, call;
     char *pending;
+    int nomem; /* the failed call was out of memory (not a mistake of the file) */
 } parse_ctx;
 
 static char *dupstr(const char *s)
@@ -64,8 +65,21 @@ static int looks_like_range(const char *v)
 }
 
 /* Split a grid value: "A:B" (integers) or "a, b, c". */
-static int split_values(const char *value, gw_sweep_key *k, char *msg, size_t mlen)
+/* Out of memory in a handler call: 0 (the call failed), the cause noted. */
+static int parse_nomem(parse_ctx *pc)
 {
+    pc->nomem = 1;
+    gw_snprintf(pc->msg, sizeof pc->msg, "out of memory");
+    return 0;
+}
+
+/* A [grid] value into k's values. An allocation that failed was read as an
+ * empty item ("empty value in list '0.2, 0.3'", exit 2) or stored as a null
+ * value that the duplicate check then read (SIGSEGV): out of memory now. */
+static int split_values(const char *value, gw_sweep_key *k, parse_ctx *pc)
+{
+    char *msg = pc->msg;
+    const size_t mlen = sizeof pc->msg;
     long a, b;
     gw_err err;
     if (looks_like_range(value)) {
@@ -81,23 +95,31 @@ static int split_values(const char *value, gw_sweep_key *k, char *msg, size_t ml
         }
         k->nvalues = (int)(b - a + 1);
         k->values = calloc((size_t)k->nvalues, sizeof *k->values);
-        for (long i = 0; k->values && i <= b - a; i++) {
+        if (!k->values) {
+            k->nvalues = 0;
+            return parse_nomem(pc);
+        }
+        for (long i = 0; i <= b - a; i++) {
             char buf[32];
             gw_snprintf(buf, sizeof buf, "%ld", a + i);
             if (!(k->values[i] = dupstr(buf)))
-                return 0;
+                return parse_nomem(pc);
         }
-        return k->values != NULL;
+        return 1;
     }
     char *copy = dupstr(value);
     if (!copy)
-        return 0;
+        return parse_nomem(pc);
     int cap = 1;
     for (const char *p = value; *p; p++)
         cap += *p == ',';
     k->values = calloc((size_t)cap, sizeof *k->values);
+    if (!k->values) {
+        free(copy);
+        return parse_nomem(pc);
+    }
     char *save = NULL;
-    for (char *tok = strtok_r(copy, ",", &save); k->values && tok; tok = strtok_r(NULL, ",", &save)) {
+    for (char *tok = strtok_r(copy, ",", &save); tok; tok = strtok_r(NULL, ",", &save)) {
         char *t = gw_str_trim(tok);
         if (!*t) {
             gw_snprintf(msg, mlen, "%s: empty value in list '%s'", k->name, value);
@@ -110,7 +132,11 @@ static int split_values(const char *value, gw_sweep_key *k, char *msg, size_t ml
             free(copy);
             return 0;
         }
-        k->values[k->nvalues++] = dupstr(t);
+        if (!(k->values[k->nvalues] = dupstr(t))) {
+            free(copy);
+            return parse_nomem(pc);
+        }
+        k->nvalues++;
     }
     free(copy);
     if (k->nvalues != cap) {
@@ -160,7 +186,7 @@ static int handler(void *user, const char *section, const char *name, const char
         char *p = realloc(pc->pending, have + add + 2);
         if (!p) {
             pc->failed = 1;
-            return 0;
+            return parse_nomem(pc);
         }
         if (have)
             p[have++] = ' ';
@@ -207,7 +233,7 @@ static int handler_one(parse_ctx *pc, const char *section, const char *name, con
             }
         }
         *dst = dupstr(value);
-        return *dst != NULL;
+        return *dst ? 1 : parse_nomem(pc);
     }
     int is_grid = strcmp(section, "grid") == 0;
     if (!is_grid && strcmp(section, "params") != 0) {
@@ -244,12 +270,12 @@ static int handler_one(parse_ctx *pc, const char *section, const char *name, con
     memset(k, 0, sizeof *k);
     k->name = dupstr(name);
     if (!k->name)
-        return 0;
+        return parse_nomem(pc);
     if (is_grid)
-        return split_values(value, k, pc->msg, sizeof pc->msg);
+        return split_values(value, k, pc);
     k->values = calloc(1, sizeof *k->values);
     if (!k->values || !(k->values[0] = dupstr(value)))
-        return 0;
+        return parse_nomem(pc);
     k->nvalues = 1;
     return 1;
 }
@@ -266,14 +292,17 @@ static unsigned long fnv64(unsigned long h, const char *s)
 /* A value that names an existing regular file (a layer sample, say) adds the
  * file's bytes to the config hash: a journal made with another version of the
  * file is then refused instead of silently mixing rows of both. */
-static unsigned long fnv64_file(unsigned long h, const char *path)
+static unsigned long fnv64_file(unsigned long h, const char *path, int *nomem)
 {
     struct stat sb;
     if (stat(path, &sb) != 0 || !S_ISREG(sb.st_mode))
         return h;
     FILE *f = NULL;
     gw_err err;
-    if (gw_input_open(path, "sweep", &f, &err) != GW_OK) /* never blocks on a FIFO */
+    int rc = gw_input_open(path, "sweep", &f, &err); /* never blocks on a FIFO */
+    if (rc == GW_ENOMEM) /* the file left out of the hash: another sweep's identity */
+        *nomem = 1;
+    if (rc != GW_OK)
         return h;
     unsigned char buf[8192]; /* 64 KiB here overflowed a 64 KiB stack (ulimit -s 64) */
     size_t got;
@@ -408,12 +437,12 @@ int gw_sweep_config_read(const char *path, const gw_sweep_model *const *models, 
                           !cfg ? "cfg" : !model ? "model" : !path ? "path" : "models");
     memset(cfg, 0, sizeof *cfg);
     *model = NULL;
-    parse_ctx pc = {cfg, models, nmodels, "", 0, 0, NULL, 0, 0, NULL};
+    parse_ctx pc = {cfg, models, nmodels, "", 0, 0, NULL, 0, 0, NULL, 0};
     char *text = NULL;
     size_t len = 0;
     int rc = gw_input_read(path, "sweep CONFIG", GW_SWEEP_CONFIG_MAX, &text, &len, err);
-    if (rc != GW_OK)
-        return GW_EINVAL; /* a config that cannot be read is bad input (exit 2) */
+    if (rc != GW_OK) /* a config that cannot be read is bad input (exit 2); out of memory is not */
+        return rc == GW_ENOMEM ? rc : GW_EINVAL;
     /* the reader takes the text as a C string: everything after a NUL byte was
      * dropped without a word ('rings = 2' after one ran the default rings) */
     const char *nul = memchr(text, '\0', len);
@@ -424,10 +453,10 @@ int gw_sweep_config_read(const char *path, const gw_sweep_model *const *models, 
         free(text);
         return gw_err_set(err, GW_EINVAL, "%s:%ld: a NUL byte (binary data, not a config)", path, ln);
     }
-    if (lines_fit(text, path, &pc, err) != GW_OK) {
+    if ((rc = lines_fit(text, path, &pc, err)) != GW_OK) {
         free(text);
         free(pc.calls);
-        return GW_EINVAL;
+        return rc == GW_ENOMEM ? rc : GW_EINVAL;
     }
     rc = ini_parse_string(text, handler, &pc);
     free(text);
@@ -444,10 +473,11 @@ int gw_sweep_config_read_string(const char *text, const char *name, const gw_swe
                           !cfg ? "cfg" : !model ? "model" : !text ? "text" : "models");
     memset(cfg, 0, sizeof *cfg);
     *model = NULL;
-    parse_ctx pc = {cfg, models, nmodels, "", 0, 0, NULL, 0, 0, NULL};
-    if (lines_fit(text, name, &pc, err) != GW_OK) {
+    parse_ctx pc = {cfg, models, nmodels, "", 0, 0, NULL, 0, 0, NULL, 0};
+    int lrc = lines_fit(text, name, &pc, err);
+    if (lrc != GW_OK) {
         free(pc.calls);
-        return GW_EINVAL;
+        return lrc == GW_ENOMEM ? lrc : GW_EINVAL;
     }
     int rc = ini_parse_string(text, handler, &pc);
     free(pc.calls);
@@ -464,8 +494,9 @@ static int add_input(gw_sweep_config *cfg, const char *key, const char *value, l
         return GW_OK;
     unsigned long long fh;
     gw_err e;
-    if (gw_fnv1a64_file(value, "sweep", &fh, &e) != GW_OK)
-        return GW_OK; /* unreadable: the model's check names it */
+    int rc = gw_fnv1a64_file(value, "sweep", &fh, &e);
+    if (rc != GW_OK) /* unreadable: the model's check names it; out of memory: said here */
+        return rc == GW_ENOMEM ? rc : GW_OK;
     for (int i = 0; i < cfg->ninputs; i++)
         if (strcmp(cfg->inputs[i].key, key) == 0 && strcmp(cfg->inputs[i].value, value) == 0)
             return GW_OK;
@@ -760,6 +791,10 @@ static int config_finish(const char *path, const gw_sweep_model *const *models, 
         gw_sweep_config_free(cfg);
         return gw_err_set(err, GW_EINVAL, "%s: cannot open the config file", path);
     }
+    if (rc == -2 || (rc > 0 && pc->nomem)) { /* the reader's line buffer, or a handler's copy */
+        gw_sweep_config_free(cfg);
+        return gw_err_set(err, GW_ENOMEM, "%s: out of memory reading the config", path);
+    }
     if (rc != 0) {
         gw_err_set(err, GW_EINVAL, "%s:%d: %s", path, rc, pc->msg[0] ? pc->msg : "syntax error");
         gw_sweep_config_free(cfg);
@@ -783,6 +818,7 @@ static int config_finish(const char *path, const gw_sweep_model *const *models, 
         return gw_err_set(err, GW_EINVAL, "%s: the [grid] section is empty or missing", path);
     }
     cfg->ncases = 1;
+    int nomem = 0;
     unsigned long h = fnv64(14695981039346656037UL, cfg->model);
     for (int i = 0; i < cfg->ngrid; i++) {
         cfg->ncases *= cfg->grid[i].nvalues;
@@ -795,13 +831,17 @@ static int config_finish(const char *path, const gw_sweep_model *const *models, 
         for (int j = 0; j < cfg->grid[i].nvalues; j++) {
             h = fnv64(h, cfg->grid[i].values[j]);
             if (file)
-                h = fnv64_file(h, cfg->grid[i].values[j]);
+                h = fnv64_file(h, cfg->grid[i].values[j], &nomem);
         }
     }
     for (int i = 0; i < cfg->nparams; i++) {
         h = fnv64(fnv64(h, cfg->params[i].name), cfg->params[i].values[0]);
         if (names_file(cfg, cfg->params[i].name))
-            h = fnv64_file(h, cfg->params[i].values[0]);
+            h = fnv64_file(h, cfg->params[i].values[0], &nomem);
+    }
+    if (nomem) {
+        gw_sweep_config_free(cfg);
+        return gw_err_set(err, GW_ENOMEM, "%s: out of memory reading the files it names", path);
     }
     cfg->hash = h;
     return find_inputs(path, cfg, err);
@@ -1066,8 +1106,11 @@ static char *slurp(const char *path, size_t *len, gw_err *err)
         return NULL;
     }
     char *buf = NULL;
-    if (gw_input_read(path, "sweep journal", GW_SWEEP_JOURNAL_MAX, &buf, len, err) != GW_OK) {
-        errno = EINVAL; /* what it is (a FIFO, a directory) is in err: it said "Invalid argument" */
+    int rc = gw_input_read(path, "sweep journal", GW_SWEEP_JOURNAL_MAX, &buf, len, err);
+    if (rc != GW_OK) {
+        /* what it is (a FIFO, a directory) is in err: it said "Invalid argument";
+         * ENOMEM tells the caller it was memory, not the journal */
+        errno = rc == GW_ENOMEM ? ENOMEM : EINVAL;
         return NULL;
     }
     return buf;
@@ -1199,8 +1242,8 @@ static int journal_check(const char *path, const char *dir, const char *head, co
 {
     size_t len = 0;
     char *buf = slurp(path, &len, err);
-    if (!buf)
-        return GW_EINVAL; /* a FIFO, a directory, gone: named in err */
+    if (!buf) /* a FIFO, a directory, gone: named in err; or out of memory */
+        return errno == ENOMEM ? GW_ENOMEM : GW_EINVAL;
     struct stat a, b;
     if (fd < 0 || fstat(fd, &a) != 0 || stat(path, &b) != 0 || a.st_dev != b.st_dev || a.st_ino != b.st_ino) {
         free(buf);
@@ -1360,7 +1403,7 @@ int gw_sweep_write_table(const char *dir, const gw_sweep_config *cfg, const gw_s
     size_t len = 0;
     char *buf = slurp(path, &len, err);
     if (!buf)
-        return GW_EIO;
+        return errno == ENOMEM ? GW_ENOMEM : GW_EIO;
     row_ref *rows = calloc((size_t)cfg->ncases + 1, sizeof *rows);
     char *seen = calloc((size_t)cfg->ncases + 1, 1);
     long nr = 0;

@@ -337,13 +337,17 @@ static int warnings_make(gw_stats_analysis *A)
         gw_snprintf(given + strlen(given), sizeof given - strlen(given), "%sgamma-deg", *given ? ", " : "");
     if (!isnan(A->delta_rm))
         gw_snprintf(given + strlen(given), sizeof given - strlen(given), "%sdelta-rm", *given ? ", " : "");
-    int crossings = 0;
-    for (int q = 0; q < A->ndia; q++)
+    int crossings = 0, built = 0;
+    for (int q = 0; q < A->ndia; q++) {
         crossings += A->dia[q].ok ? A->dia[q].d.ncross : 0;
+        built += A->dia[q].ok;
+    }
     if (rc == GW_OK && *given && A->ndia > 0 && crossings == 0)
-        rc = gw_warnings_add(&A->warnings, "%s: %s no effect: no diagram has a B.31 fit (no R_b/R_m column "
-                             "changes from bouncing to not along H: no boundary crossing to fit)", given,
-                             strchr(given, ',') ? "have" : "has");
+        rc = gw_warnings_add(&A->warnings, "%s: %s no effect: no diagram has a B.31 fit (%s%s)", given,
+                             strchr(given, ',') ? "have" : "has",
+                             built ? "no R_b/R_m column changes from bouncing to not along H: no boundary crossing "
+                                     "to fit" : "no diagram could be built: ",
+                             built ? "" : A->dia[0].reason);
     return rc;
 }
 

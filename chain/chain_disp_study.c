@@ -26,7 +26,7 @@ static const gw_param disp_params[] = {
         "velocity samples in time, even [2048]"),
     ROW("dt-out", GW_PARAM_DOUBLE, dt_out, "s", 0, 1, 0, "0", "DT", "sampling interval, s [pi / (1.25 omega_c)]"),
     ROW("steps-per-sample", GW_PARAM_LONG, steps_per_sample, "", 1, 100000, 0, "16", "K",
-        "RK4 steps per sampling interval [16]"),
+        "RK4 steps per sampling interval (rk4 only) [16]"),
     ROW("amp", GW_PARAM_DOUBLE, amp, "", 0, 0.1, 1, "1e-3", "A",
         "rms overlap perturbation / d0 of the initial velocities [1e-3]"),
     ROW("seed", GW_PARAM_LONG, seed, "", 0, 9.0e18, 0, "1", "S",
@@ -160,6 +160,13 @@ int gw_chain_dispersion_solver(const gw_chain_dispersion_setup *s, const gw_solv
     int rc = gw_solver_tolerances_unused_check(*type, disp_params, s, err); /* no effect on a fixed step */
     if (rc != GW_OK)
         return rc;
+    /* the reverse: RK4's steps per sample have no effect on an adaptive solver,
+     * which chooses its own steps from rtol and atol (the column's mode refuses
+     * the row before this, as a row of the other mode) */
+    const gw_param *spp = gw_param_find(disp_params, "steps-per-sample");
+    if (*type != gw_solver_rk4 && s->steps_per_sample != strtol(spp->def, NULL, 10))
+        return gw_err_set(err, GW_EINVAL, "steps-per-sample: has no effect with the %s solver (it chooses its "
+                          "steps from rtol and atol; steps-per-sample is rk4's)", sv);
     *sp = gw_solver_params_default();
     sp->method = m;
     sp->rtol = isnan(s->rtol) ? 1e-10 : s->rtol;

@@ -350,6 +350,31 @@ static int warnings_make(gw_stats_analysis *A)
                              "verdict: until = verdict) are left out of the e_n, e, alpha_r statistics; e_n_first, "
                              "e_first, alpha_r_first cover them",
                              cut);
+    /* the B.31 options act on the fits alone: given (other than their
+     * defaults) on a table whose diagrams have no boundary crossing, no fit
+     * can be made whatever they say, and they changed nothing (with crossings,
+     * a fit that fails may fail by them: fewer crossings than the parameters
+     * of fit, a start that does not converge). A table without a diagram at
+     * all refuses them before this (gw_stats_analyse). */
+    const gw_param *gr = gw_param_find(setup_params, "gamma-deg");
+    char given[64] = "";
+    if (A->fit_mask != (GW_STATS_B31_BETA | GW_STATS_B31_AB))
+        gw_snprintf(given, sizeof given, "fit");
+    if (A->gamma_deg != gw_strtod(gr->def, NULL))
+        gw_snprintf(given + strlen(given), sizeof given - strlen(given), "%sgamma-deg", *given ? ", " : "");
+    if (!isnan(A->delta_rm))
+        gw_snprintf(given + strlen(given), sizeof given - strlen(given), "%sdelta-rm", *given ? ", " : "");
+    int crossings = 0, built = 0;
+    for (int q = 0; q < A->ndia; q++) {
+        crossings += A->dia[q].ok ? A->dia[q].d.ncross : 0;
+        built += A->dia[q].ok;
+    }
+    if (rc == GW_OK && *given && A->ndia > 0 && crossings == 0)
+        rc = gw_warnings_add(&A->warnings, "%s: %s no effect: no diagram has a B.31 fit (%s%s)", given,
+                             strchr(given, ',') ? "have" : "has",
+                             built ? "no R_b/R_m column changes from bouncing to not along H: no boundary crossing "
+                                     "to fit" : "no diagram could be built: ",
+                             built ? "" : A->dia[0].reason);
     return rc;
 }
 

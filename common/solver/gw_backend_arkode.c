@@ -239,6 +239,10 @@ static int ark_reset(gw_solver *s, double t, const double *y)
     memcpy(N_VGetArrayPointer(a->y), y, (size_t)s->sys.dim * sizeof *y);
     a->t = t;
     int flag = a->erk ? ERKStepReset(a->mem, t, a->y) : ARKStepReset(a->mem, t, a->y);
+    if (flag >= 0 && s->p.dt > 0) { /* a step given: one that moves t from here */
+        const double h0 = gw_sun_init_step(s->p.dt, t);
+        flag = a->erk ? ERKStepSetInitStep(a->mem, h0) : ARKStepSetInitStep(a->mem, h0);
+    }
     if (flag < 0) {
         char name[64];
         ark_flag_name(flag, name, sizeof name);

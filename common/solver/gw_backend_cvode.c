@@ -220,6 +220,8 @@ static int cv_reset(gw_solver *s, double t, const double *y)
     cv_raw_stats(c, &before);
     int flag = CVodeReInit(c->mem, t, c->y);
     cv_carry(c, &before);
+    if (flag >= 0 && s->p.dt > 0) /* a step given: one that moves t from here */
+        flag = CVodeSetInitStep(c->mem, gw_sun_init_step(s->p.dt, t));
     if (flag < 0) {
         char name[64];
         cv_flag_name(flag, name, sizeof name);

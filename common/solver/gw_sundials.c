@@ -1,6 +1,7 @@
 /*
  * gw_sundials.c: callback wrappers between SUNDIALS and gw_system (see header).
  */
+#include <float.h>
 #include <math.h>
 #include <string.h>
 
@@ -67,6 +68,12 @@ int gw_sun_ewt(N_Vector y, N_Vector w, void *ud)
 {
     const gw_solver *s = ud;
     return gw_sun_nv_ewt(y, w, s->p.rtol, s->p.atol, s->sys.scale);
+}
+
+double gw_sun_init_step(double dt, double t)
+{
+    const double floor = 100 * DBL_EPSILON * fabs(t);
+    return dt > 0 && dt < floor ? floor : dt;
 }
 
 int gw_sun_abstol_positive(N_Vector abstol)

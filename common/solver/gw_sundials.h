@@ -43,6 +43,14 @@ int gw_sun_nv_ewt(N_Vector y, N_Vector w, double rtol, double atol, const double
  * denominator is then positive and needs no check. Returns 0. */
 int gw_sun_ewt(N_Vector y, N_Vector w, void *ud);
 
+/* The initial step for a (re)start at t: the step given (dt > 0), but at least
+ * 100 units of rounding of t, CVODE's own lower bound for a step it estimates
+ * (HLB_FACTOR * uround * |t|); 0 (dt not given) stays 0. A step below it does
+ * not move t (t + dt == t): restarted at an event with the chain's --dt 1e-300,
+ * CVODE stepped in place at t = 5.03e-5 s for good (the sixteenth session of
+ * stage 2), while its first start at t = 0 took the step as given. */
+double gw_sun_init_step(double dt, double t);
+
 /* 1 if every component of the absolute tolerance vector is > 0, else 0. */
 int gw_sun_abstol_positive(N_Vector abstol);
 

@@ -577,6 +577,24 @@ def _grid_values(key, v):
     return list(v)
 
 
+_SWEEP_KEYWORDS = {}
+
+
+def _sweep_hint(model, m, k):
+    """ " (did you mean 'vimp'?)" for a misspelt sweep key: the nearest keyword
+    of the studies' tables that the model takes, else ""."""
+    import difflib
+    if model not in _SWEEP_KEYWORDS:
+        names = set()
+        for i in range(lib.gw_study_count()):
+            _, rows = read_table(lib.gw_study_get(i).contents.params)
+            names.update(r.name for r in rows if m.has_key(r.name.encode()))
+        names.add("point")
+        _SWEEP_KEYWORDS[model] = sorted(n.replace("-", "_") for n in names if m.has_key(n.encode()))
+    close = difflib.get_close_matches(k.replace("-", "_").lower(), _SWEEP_KEYWORDS[model], n=1, cutoff=0.75)
+    return f" (did you mean '{close[0]}'?)" if close else ""
+
+
 _SWEEP_LINE_MAX = 198  # the longest line the library's config reader takes (libinih's buffer less 2)
 
 
@@ -609,7 +627,7 @@ def run_sweep(model, grid, params, jobs, progress):
     for k, v in grid.items():
         name = k.replace("_", "-")
         if not m.has_key(name.encode()):
-            raise TypeError(f"sweep() grid: '{k}' is not a parameter of model {model}")
+            raise TypeError(f"sweep() grid: '{k}' is not a parameter of model {model}{_sweep_hint(model, m, k)}")
         if v is None or isinstance(v, (set, frozenset, dict)) or \
                 (isinstance(v, np.ndarray) and v.ndim != 1):
             raise TypeError(f"sweep() grid: '{k}': expected a list, a range, a 1-D array or a string, "
@@ -653,7 +671,8 @@ def run_sweep(model, grid, params, jobs, progress):
             continue
         name = k.replace("_", "-")
         if not m.has_key(name.encode()):
-            raise TypeError(f"sweep() got an unexpected keyword argument '{k}' (not a parameter of model {model})")
+            raise TypeError(f"sweep() got an unexpected keyword argument '{k}' (not a parameter of model {model})"
+                            f"{_sweep_hint(model, m, k)}")
         if k in grid:
             raise TypeError(f"sweep(): '{k}' given both in grid and as a keyword")
         try:

@@ -14,7 +14,7 @@ Each test but the first two fails on the module before this pass:
 - two runs of the same inputs were unequal (their wall-clock times) or raised
   "The truth value of an array ... is ambiguous" (r == copy.deepcopy(r));
 - help() and a notebook's completion showed chain(**kwargs); a misspelt
-  keyword gave no hint;
+  keyword (of a study or a sweep) gave no hint;
 - a progress callback left its C thunk, its exception and the frames of the
   callback in reference cycles, freed only by the cyclic collector;
 - layer_make(out="/tmp") said "layer_make: sample: '/tmp' is a directory":
@@ -268,6 +268,14 @@ def test_a_misspelt_keyword_is_named_with_a_hint(kw, hint):
         granwave.chain(**{kw: 1})
     with pytest.raises(TypeError, match=r"^chain\(\) got an unexpected keyword argument 'zzz'$"):
         granwave.chain(zzz=1)
+    if "-" in kw:  # the sweep's keys take either spelling
+        return
+    with pytest.raises(TypeError, match=rf"^sweep\(\) got an unexpected keyword argument '{kw}' \(not a parameter "
+                                        rf"of model chain\) \(did you mean '{hint}'\?\)$"):
+        granwave.sweep("chain", grid={"n": [1]}, **{kw: 1})
+    with pytest.raises(TypeError, match=rf"^sweep\(\) grid: '{kw}' is not a parameter of model chain \(did you "
+                                        rf"mean '{hint}'\?\)$"):
+        granwave.sweep("chain", grid={kw: [1]})
 
 
 # ---- callbacks freed without the cyclic collector ----

@@ -317,6 +317,10 @@ int gw_layer_sample_read(const char *path, gw_layer_sample *s, gw_err *err);
  * device or directory, or its directory is missing or not writable; see
  * gw_out_file_check): lets a command refuse before a long run. GW_OK otherwise. */
 int gw_layer_sample_format_check(const char *path, gw_err *err);
+/* The same check, its messages naming `what` (the keyword or flag that gave the
+ * path: "out" for layer-make, whose refusals said "sample: ..." where the
+ * program's flag is --out and Python's keyword out; NULL: "sample"). */
+int gw_layer_sample_out_check(const char *path, const char *what, gw_err *err);
 
 /* Pluviation (docs/physics.md 2.2). */
 typedef struct gw_layer_make_params {

@@ -135,7 +135,7 @@ int gw_layer_make_plan(const gw_layer_make_setup *s, gw_layer_params *lp_out, gw
         return gw_err_set(err, GW_EINVAL, "aspect-max: shapes clumps, so it needs clumps");
     if (s->clump_mass != GW_LAYER_CLUMP_MASS_SUM && !s->clumps)
         return gw_err_set(err, GW_EINVAL, "clump-mass: has no effect without clumps (a disc sample has no clumps)");
-    if (s->out && (rc = gw_layer_sample_format_check(s->out, err)) != GW_OK)
+    if (s->out && (rc = gw_layer_sample_out_check(s->out, "out", err)) != GW_OK)
         return rc; /* before the run: a result that cannot be written is not computed */
     gw_layer_params lp = gw_layer_params_default();
     GW_LAYER_MATERIAL_TO_PARAMS(&lp, s);

@@ -169,14 +169,16 @@ static int wants_h5(const char *path)
            (n >= 5 && strcasecmp(path + n - 5, ".hdf5") == 0);
 }
 
-int gw_layer_sample_format_check(const char *path, gw_err *err)
+int gw_layer_sample_out_check(const char *path, const char *what, gw_err *err)
 {
+    if (!what)
+        what = "sample";
     if (wants_h5(path) && !GW_HAVE_HDF5)
-        return gw_err_set(err, GW_EUNSUPPORTED, "sample '%s': HDF5 samples need granwave built with HDF5 "
-                          "(GW_WITH_HDF5=ON and libhdf5); give a text name such as sample.txt", path);
+        return gw_err_set(err, GW_EUNSUPPORTED, "%s: '%s': HDF5 samples need granwave built with HDF5 "
+                          "(GW_WITH_HDF5=ON and libhdf5); give a text name such as sample.txt", what, path);
     /* the place the sample goes, before the run: a FIFO, device or directory of
      * that name, or a missing or read-only directory, is refused */
-    int rc = gw_out_file_check(path, "sample", err);
+    int rc = gw_out_file_check(path, what, err);
     if (rc != GW_OK)
         return rc;
     /* an existing file is replaced only when it is a sample (text or HDF5) or
@@ -189,8 +191,8 @@ int gw_layer_sample_format_check(const char *path, gw_err *err)
         const int text = got == sizeof head && memcmp(head, SAMPLE_MAGIC, sizeof head) == 0;
         const int h5 = got >= sizeof h5_signature && memcmp(head, h5_signature, sizeof h5_signature) == 0;
         if (got > 0 && !text && !h5)
-            return gw_err_set(err, GW_EINVAL, "sample '%s': exists and is not a granwave sample; refusing to "
-                              "overwrite it", path);
+            return gw_err_set(err, GW_EINVAL, "%s: '%s' exists and is not a granwave sample; refusing to "
+                              "overwrite it", what, path);
     }
     /* and a directory that refuses new files whatever its mode says (root in
      * /proc, a read-only mount): the temporary file of the atomic write is
@@ -199,11 +201,16 @@ int gw_layer_sample_format_check(const char *path, gw_err *err)
     gw_err e = {{0}};
     int orc = gw_afile_open(&f, path, &e);
     if (orc == GW_ENOMEM) /* not the place's fault */
-        return gw_err_set(err, orc, "sample '%s': %s", path, e.msg);
+        return gw_err_set(err, orc, "%s: '%s': %s", what, path, e.msg);
     if (orc != GW_OK)
-        return gw_err_set(err, GW_EINVAL, "sample '%s': cannot be written there (%s)", path, e.msg);
+        return gw_err_set(err, GW_EINVAL, "%s: '%s' cannot be written there (%s)", what, path, e.msg);
     gw_afile_abort(&f);
     return GW_OK;
+}
+
+int gw_layer_sample_format_check(const char *path, gw_err *err)
+{
+    return gw_layer_sample_out_check(path, "sample", err);
 }
 
 /* ------------------------------------------------------------- text ---- */

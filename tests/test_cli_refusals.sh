@@ -122,7 +122,7 @@ none=$("$GW" dispersion --n 16 --t-samples 64 --json 2>/dev/null |
 [ -n "$wis_hash" ] && [ "$got" = "$wis_hash" ] && [ "$none" = "None" ] &&
     ok "the settings record the wisdom read ($got) and null without --wisdom" ||
     ko "settings' fftw_wisdom_fnv1a64: '$got' for wisdom hashing to '$wis_hash', '$none' without"
-refused "layer-make --out naming a file that is not a sample" 'not a granwave sample' layer-make --n 10 --width-rm 6 --t-max 0.05 --out "$tmp/notes.txt"
+refused "layer-make --out naming a file that is not a sample" "layer-make --out: '$tmp/notes.txt' exists and is not a granwave sample" layer-make --n 10 --width-rm 6 --t-max 0.05 --out "$tmp/notes.txt"
 [ "$(cat "$tmp/notes.txt")" = "my notes" ] && ok "that file is unchanged" || ko "layer-make overwrote a file that is not a sample"
 "$GW" layer-make --n 10 --width-rm 6 --t-max 0.05 --out "$tmp/s1.txt" >/dev/null 2>&1 &&
     "$GW" layer-make --n 10 --width-rm 6 --t-max 0.05 --seed 2 --out "$tmp/s1.txt" >/dev/null 2>&1 &&
@@ -206,7 +206,7 @@ refused "layer-impact --out is /dev/full" 'not a directory' layer-impact --sampl
 refused "layer-make --out is /dev/zero" 'character device' layer-make --n 10 --out /dev/zero
 refused "layer-make --out is a directory" 'directory' layer-make --n 10 --out "$tmp/adir"
 # unwritable even for root: a directory under /proc takes no new files
-refused "layer-make --out under /proc, before the run" "sample: cannot write into '/proc'" layer-make --n 10 --out /proc/granwave_no.txt
+refused "layer-make --out under /proc, before the run" "layer-make --out: cannot write into '/proc'" layer-make --n 10 --out /proc/granwave_no.txt
 refused "layer-impact --out under /proc, before the run" 'cannot create directory' layer-impact --sample "$tmp/L.txt" --t-max 1e-3 --out /proc/granwave_no
 refused "layer-stats table is /dev/zero" 'character device' layer-stats /dev/zero --out "$tmp/o"
 refused "sweep config is /dev/zero" 'character device' sweep /dev/zero --out "$tmp/o"

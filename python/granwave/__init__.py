@@ -348,6 +348,14 @@ layer_impact.__doc__ = _study("layer-impact").doc(
     "before it: snapshots=[t_max] gives the end); None without. progress: f(done, total)\n"
     "in output samples up to t_max (the run ends at T_f with done = total); return True\n"
     "(or raise) to stop.")
+# each function's signature from its table: help() and a notebook's completion
+# showed (**kwargs) (chain, dispersion) or (*, progress=None, **kwargs)
+for _f, _name, _pos, _prog in ((chain, "chain", (), False), (falcon, "falcon", (), True),
+                               (wavespeed, "wavespeed", (), True), (softwall, "softwall", (), True),
+                               (dispersion, "dispersion", (), False), (drop, "drop", (), True),
+                               (layer_make, "layer-make", (), True), (layer_impact, "layer-impact", (), True),
+                               (layer_stats, "layer-stats", ("input",), False)):
+    _f.__signature__ = _study(_name).signature(_pos, _prog)
 layer_stats.__doc__ = _study("layer-stats").doc(
     "Statistics of a layer sweep table (OUT/results.csv of `granwave sweep` with model =\n"
     "layer; Bourrier et al. 2008, physics.md 2.3, 2.5), as `granwave layer-stats INPUT`:\n"

@@ -87,11 +87,58 @@ def _raise(rc, err, what, params=()):
     raise GranwaveError(msg, rc)
 
 
+# the results that time the run on the machine, not results of the model, left
+# out of ==: the field tables' rows in ms and their "wall-clock time" rows
+# (wall_time_ms, wall_time_s; dispersion's integrate_ms and fft_ms), gathered
+# as each Study reads its table
+CLOCK_KEYS = set()
+
+
+def same_value(a, b):
+    """a and b hold the same results: dicts by key (wall-clock times left out),
+    arrays by shape and value (NaN equal to NaN in the same place), floats by
+    value or both NaN, lists and tuples item by item, anything else by ==."""
+    if isinstance(a, dict) and isinstance(b, dict):
+        ka, kb = set(a) - CLOCK_KEYS, set(b) - CLOCK_KEYS
+        return ka == kb and all(same_value(a[k], b[k]) for k in ka)
+    if isinstance(a, np.ndarray) or isinstance(b, np.ndarray):
+        if not (isinstance(a, np.ndarray) and isinstance(b, np.ndarray)) or a.shape != b.shape:
+            return False
+        try:
+            return bool(np.array_equal(a, b, equal_nan=True))
+        except TypeError:  # text columns (a sweep's grid of names): no NaN to match
+            return bool(np.array_equal(a, b))
+    if isinstance(a, (list, tuple)) and isinstance(b, (list, tuple)):
+        return type(a) is type(b) and len(a) == len(b) and all(same_value(x, y) for x, y in zip(a, b))
+    if isinstance(a, float) and isinstance(b, float) and a != a and b != b:
+        return True
+    r = a == b
+    return r if isinstance(r, bool) else bool(r)
+
+
 class Result(dict):
     """A study's results: a dict (keys as in the CLI's JSON) with attribute access.
     Numbers are Python floats and ints, yes/no results bools (None where the
     program's JSON has null: undecided), series numpy arrays; tables with named
-    columns (the energy ledger) are dicts of arrays."""
+    columns (the energy ledger) are dicts of arrays. Two results are == when
+    they hold the same results: the same keys, arrays of the same shape and
+    values (NaN equal to NaN in the same place), the same numbers; the run's
+    own timings (wall_time_ms, wall_time_s, dispersion's integrate_ms and
+    fft_ms) are left out. A Result pickles and copies as a dict does."""
+
+    __hash__ = None
+
+    def __eq__(self, other):
+        # dict's == compared arrays element-wise and asked their truth: two runs
+        # of the same inputs raised "The truth value of an array ... is
+        # ambiguous", or were unequal by their wall-clock time
+        if not isinstance(other, dict):
+            return NotImplemented
+        return same_value(self, other)
+
+    def __ne__(self, other):
+        eq = self.__eq__(other)
+        return eq if eq is NotImplemented else not eq
 
     def __getattr__(self, name):
         try:
@@ -149,6 +196,33 @@ def read_table(fn):
     return t, rows
 
 
+def _scalar(v):
+    """v as a plain Python bool, int or float when it is one number: a Python or
+    numpy number (numbers.Real) or a 0-d array of one (a numpy reduction with
+    keepdims, np.asarray(x), a[()] of a view); None when it is not. A date or a
+    duration (np.datetime64, np.timedelta64, an Integral to numpy) is no number:
+    int() of one failed with "int() argument must be ... 'datetime.timedelta'",
+    naming no keyword."""
+    if isinstance(v, np.ndarray) and v.ndim == 0 and v.dtype.kind in "biuf":
+        v = v[()]
+    if isinstance(v, (np.datetime64, np.timedelta64)):
+        return None
+    if isinstance(v, (bool, np.bool_)):
+        return bool(v)
+    try:
+        if isinstance(v, numbers.Integral):
+            return int(v)
+        if isinstance(v, numbers.Real):
+            return float(v)
+    except (TypeError, ValueError, OverflowError):  # a Fraction beyond a double, an odd subclass
+        return None
+    return None
+
+
+def _kind(value):
+    return f"{type(value).__name__} ({value!r})"
+
+
 def _text(p, value):
     """A Python value as the text gw_param_set parses."""
     if isinstance(value, os.PathLike):
@@ -157,24 +231,26 @@ def _text(p, value):
         value = os.fsdecode(value)
     if p.type == TEXT and not isinstance(value, str):
         # a number went to C as its digits: sample=3 looked for a file named '3'
-        raise TypeError(f"{p.keyword}: expected a str or a path, got {type(value).__name__} ({value!r})")
+        raise TypeError(f"{p.keyword}: expected a str or a path, got {_kind(value)}")
     if isinstance(value, str):
         if "\0" in value:  # C would read up to the NUL: another file, silently
             raise GranwaveValueError(f"{p.keyword}: {value!r} holds a NUL character", GW_EINVAL)
         return value
     if p.type == FLAG:
-        if isinstance(value, (bool, np.bool_)) or value in (0, 1):
-            return "1" if value else "0"
-        raise TypeError(f"{p.keyword}: expected True or False, got {value!r}")
+        # an array of several values raised numpy's "truth value of an array ...
+        # is ambiguous" naming no keyword, and array([1]) was taken as True
+        x = _scalar(value)
+        if isinstance(x, bool) or (x is not None and x in (0, 1)):
+            return "1" if x else "0"
+        raise TypeError(f"{p.keyword}: expected True or False, got {_kind(value)}")
     if p.type == LIST:
-        if isinstance(value, numbers.Real) and not isinstance(value, (bool, np.bool_)):
+        if _scalar(value) is not None and not isinstance(value, (bool, np.bool_, np.ndarray)):
             value = [value]
         # an ordered sequence of numbers: a set or a dict has no order (radii
         # went to the beads in hash order), an array of two or more dimensions
         # was flattened silently, a bad item was named by float() alone
         if isinstance(value, (set, frozenset, dict, bytes)) or not hasattr(value, "__iter__"):
-            raise TypeError(f"{p.keyword}: expected a number or a sequence of numbers, got "
-                            f"{type(value).__name__} ({value!r})")
+            raise TypeError(f"{p.keyword}: expected a number or a sequence of numbers, got {_kind(value)}")
         if isinstance(value, np.ndarray) and value.ndim != 1:  # 0-d: "iteration over a 0-d array", unnamed
             raise TypeError(f"{p.keyword}: expected a 1-D sequence of numbers, got an array of shape {value.shape}")
         items = []
@@ -182,36 +258,43 @@ def _text(p, value):
             if isinstance(x, str):
                 items.append(x)  # parsed and checked by the library, as on the command line
                 continue
-            if isinstance(x, (bool, np.bool_)) or not isinstance(x, numbers.Real):
+            v = _scalar(x)
+            if v is None or isinstance(v, bool):
                 raise TypeError(f"{p.keyword}: item {k + 1} is not a number ({x!r})")
-            items.append(repr(float(x)))
+            items.append(repr(float(v)))
         if any("," in x for x in items):
             raise GranwaveValueError(f"{p.keyword}: an item holds ',' ({items!r})", GW_EINVAL)
         return ",".join(items) if items else "none"
     if p.type == RANGE:
         if isinstance(value, range):
-            if value.step != 1 or len(value) == 0:
-                raise ValueError(f"{p.keyword}: a range of step 1 with at least one value, got {value!r}")
+            # len() of range(1, 2**80) raised OverflowError naming nothing
+            if value.step != 1 or value.stop <= value.start:
+                raise GranwaveValueError(f"{p.keyword}: a range of step 1 with at least one value, got {value!r}",
+                                         GW_EINVAL)
             return f"{value.start}:{value.stop - 1}"
-        if isinstance(value, numbers.Integral):
-            return str(int(value))
+        x = _scalar(value)
+        if isinstance(x, int) and not isinstance(x, bool):  # 7, np.int64(7), np.array(7)
+            return str(x)
         # (A, B): exactly two ends; a fractional end goes to C as written, which
         # refuses it ("'1.5' is not an integer"), instead of being cut by int()
-        if isinstance(value, (str, bytes)) or not hasattr(value, "__len__") or len(value) != 2:
+        if isinstance(value, (str, bytes)) or not hasattr(value, "__len__") or \
+                (isinstance(value, np.ndarray) and value.ndim != 1) or len(value) != 2:
             raise TypeError(f"{p.keyword}: expected (A, B), an integer or a range, got {value!r}")
         ends = []
         for x in value:
-            if isinstance(x, (bool, np.bool_)) or not isinstance(x, numbers.Real):
+            v = _scalar(x)
+            if v is None or isinstance(v, bool):
                 raise TypeError(f"{p.keyword}: a range end must be a number, got {x!r}")
-            ends.append(str(int(x)) if isinstance(x, numbers.Integral) else repr(float(x)))
+            ends.append(str(v) if isinstance(v, int) else repr(v))
         return ":".join(ends)
-    if isinstance(value, (bool, np.bool_)):
+    x = _scalar(value)
+    if isinstance(x, bool):
         raise TypeError(f"{p.keyword}: expected a number, got {value!r}")
-    if isinstance(value, numbers.Integral):
-        return str(int(value))
-    if isinstance(value, numbers.Real):
-        return repr(float(value))
-    raise TypeError(f"{p.keyword}: cannot use a {type(value).__name__} ({value!r})")
+    if isinstance(x, int):
+        return str(x)
+    if isinstance(x, float):
+        return repr(x)
+    raise TypeError(f"{p.keyword}: cannot use a {_kind(value)}")
 
 
 class Study:
@@ -227,6 +310,7 @@ class Study:
         self.table, self.params = read_table(self.st.params)
         self.by_keyword = {p.keyword: p for p in self.params}
         self.ftable, self.fields = read_table(self.st.fields)
+        CLOCK_KEYS.update(f.name for f in self.fields if f.unit == "ms" or f.help.startswith("wall-clock"))
 
     def setup(self, kwargs):
         """A C setup struct with kwargs set over the defaults (caller clears it)."""
@@ -237,7 +321,7 @@ class Study:
             for k, v in kwargs.items():
                 p = self.by_keyword.get(k)
                 if p is None:
-                    raise TypeError(f"{self.func}() got an unexpected keyword argument '{k}'")
+                    raise TypeError(f"{self.func}() got an unexpected keyword argument '{k}'{self.hint(k)}")
                 if v is None:
                     continue
                 try:  # named as the library's messages are: the study, then the keyword
@@ -282,6 +366,27 @@ class Study:
         for w in r["warnings"]:
             warn(self.func, w, stacklevel=4)
         return r
+
+    def hint(self, k):
+        """ " (did you mean 'vimp'?)" for a misspelt keyword (vimpp, tmax, t-max), else ""."""
+        if not isinstance(k, str):
+            return ""
+        import difflib
+        close = difflib.get_close_matches(k.replace("-", "_").lower(), self.by_keyword, n=1, cutoff=0.75)
+        return f" (did you mean '{close[0]}'?)" if close else ""
+
+    def signature(self, positional=(), progress=False):
+        """The public function's signature: every keyword of the table, None by
+        default (the library's default, stated in the help); `positional` ones
+        may be given by position. help() and a notebook's completion showed
+        (**kwargs)."""
+        import inspect
+        P = inspect.Parameter
+        ps = [P(k, P.POSITIONAL_OR_KEYWORD, default=None) for k in positional]
+        ps += [P(p.keyword, P.KEYWORD_ONLY, default=None) for p in self.params if p.keyword not in positional]
+        if progress:
+            ps.append(P("progress", P.KEYWORD_ONLY, default=None))
+        return inspect.Signature(ps)
 
     def doc(self, intro):
         lines = [intro, "", "Keywords (the flags of `granwave %s`, '-' written '_'; units SI):" % self.name]
@@ -356,8 +461,19 @@ class Progress:
                 lib.gw_interrupt_begin()
 
     def reraise(self, what="sweep"):
-        if self.exc is not None:
-            raise self.exc
+        # the C callback holds this object (c_fn -> _call -> self) and the
+        # exception's traceback holds _call's frame (-> self -> exc): reference
+        # cycles, each call's callback, exception and the frames of f (with
+        # what f's locals hold) kept until the cyclic collector ran (6 objects
+        # a call, 24 with an exception, with gc off). Both let go here, after
+        # the library's call: freed when the caller lets go.
+        self.c_fn = self.fn = None
+        exc, self.exc = self.exc, None
+        if exc is not None:
+            try:
+                raise exc
+            finally:
+                del exc
         if self.interrupted:  # the program's own handler ran and did not raise: as a SIGINT in C
             raise GranwaveError(f"{what}: interrupted (SIGINT)", GW_ECANCELED)
 
@@ -430,13 +546,14 @@ def _text_plain(v):
         return os.fspath(v)
     if isinstance(v, str):
         return v
-    if isinstance(v, (bool, np.bool_)):
-        return "1" if v else "0"
-    if isinstance(v, numbers.Integral):
-        return str(int(v))
-    if isinstance(v, numbers.Real):
-        return repr(float(v))
-    raise TypeError(f"cannot use a {type(v).__name__} ({v!r}) as a sweep value")
+    x = _scalar(v)
+    if isinstance(x, bool):
+        return "1" if x else "0"
+    if isinstance(x, int):
+        return str(x)
+    if isinstance(x, float):
+        return repr(x)
+    raise TypeError(f"cannot use a {_kind(v)} as a sweep value")
 
 
 def _looks_like_range(s):
@@ -458,6 +575,24 @@ def _grid_values(key, v):
     if isinstance(v, (numbers.Number, os.PathLike)):
         return [v]
     return list(v)
+
+
+_SWEEP_KEYWORDS = {}
+
+
+def _sweep_hint(model, m, k):
+    """ " (did you mean 'vimp'?)" for a misspelt sweep key: the nearest keyword
+    of the studies' tables that the model takes, else ""."""
+    import difflib
+    if model not in _SWEEP_KEYWORDS:
+        names = set()
+        for i in range(lib.gw_study_count()):
+            _, rows = read_table(lib.gw_study_get(i).contents.params)
+            names.update(r.name for r in rows if m.has_key(r.name.encode()))
+        names.add("point")
+        _SWEEP_KEYWORDS[model] = sorted(n.replace("-", "_") for n in names if m.has_key(n.encode()))
+    close = difflib.get_close_matches(k.replace("-", "_").lower(), _SWEEP_KEYWORDS[model], n=1, cutoff=0.75)
+    return f" (did you mean '{close[0]}'?)" if close else ""
 
 
 _SWEEP_LINE_MAX = 198  # the longest line the library's config reader takes (libinih's buffer less 2)
@@ -492,7 +627,7 @@ def run_sweep(model, grid, params, jobs, progress):
     for k, v in grid.items():
         name = k.replace("_", "-")
         if not m.has_key(name.encode()):
-            raise TypeError(f"sweep() grid: '{k}' is not a parameter of model {model}")
+            raise TypeError(f"sweep() grid: '{k}' is not a parameter of model {model}{_sweep_hint(model, m, k)}")
         if v is None or isinstance(v, (set, frozenset, dict)) or \
                 (isinstance(v, np.ndarray) and v.ndim != 1):
             raise TypeError(f"sweep() grid: '{k}': expected a list, a range, a 1-D array or a string, "
@@ -536,7 +671,8 @@ def run_sweep(model, grid, params, jobs, progress):
             continue
         name = k.replace("_", "-")
         if not m.has_key(name.encode()):
-            raise TypeError(f"sweep() got an unexpected keyword argument '{k}' (not a parameter of model {model})")
+            raise TypeError(f"sweep() got an unexpected keyword argument '{k}' (not a parameter of model {model})"
+                            f"{_sweep_hint(model, m, k)}")
         if k in grid:
             raise TypeError(f"sweep(): '{k}' given both in grid and as a keyword")
         try:

@@ -37,8 +37,10 @@
  *    M at rest is a two-body Hertz impact with the reduced mass m M/(m + M), and
  *    the bead leaves at (m - M)/(m + M) v (for M = m it stops: Newton's cradle).
  *    Asserted: contact time 1e-7, final velocity 1e-8 v.
+ * 6. See tiny_initial_step.
  */
 #include <math.h>
+#include <unistd.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -247,8 +249,37 @@ static void free_body(void)
     }
 }
 
+/* 6. An initial step far below the resolution of t (the sixteenth session of
+ *    stage 2): cvode and arkode restart at every contact event with the step
+ *    given, and 1e-300 at t = 5.03e-5 s does not move t, so CVODE stepped in
+ *    place for good (`granwave chain --n 2 --dt 1e-300`). The restart's step
+ *    is now at least 100 roundings of t; the run ends (an alarm fails a hang)
+ *    with the contact's closed-form time as for the default step. */
+static void tiny_initial_step(void)
+{
+    alarm(60);
+    const char *solvers[][2] = {{"cvode", "bdf"}, {"cvode", "adams"}, {"arkode", "erk"}};
+    for (int i = 0; i < 3; i++) {
+        gw_chain_params p = test_params(2, 0.3);
+        gw_chain_run_opts o = test_opts(solvers[i][0], solvers[i][1]), d = o;
+        o.sp.dt = 1e-300;
+        gw_chain_result r, q;
+        char what[160];
+        snprintf(what, sizeof what, "%s %s, n = 2, initial step 1e-300: ends with the default step's f_max",
+                 solvers[i][0], solvers[i][1]);
+        if (test_collide(&p, &o, &r) == GW_OK && test_collide(&p, &d, &q) == GW_OK)
+            gw_test_rel(r.f_max, q.f_max, 1e-7, what);
+        else
+            gw_test_true(0, what);
+        gw_chain_result_free(&r);
+        gw_chain_result_free(&q);
+    }
+    alarm(0);
+}
+
 int main(void)
 {
+    tiny_initial_step();
     materials();
     lengths();
     hunt_crossley();

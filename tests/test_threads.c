@@ -466,6 +466,12 @@ static void *read_quietly(void *arg)
 
 static void h5_exit_quiet(void)
 {
+#ifdef __SANITIZE_THREAD__
+    /* ThreadSanitizer does not support a thread started in a child forked from
+     * a multi-threaded process (it reports and exits 66): checked without it */
+    printf("note: the exit check is skipped under ThreadSanitizer\n");
+    return;
+#endif
     char good[300], bad[300], errf[300];
     h5_path(good, sizeof good, 98);
     gw_err e = {{0}};

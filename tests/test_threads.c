@@ -606,7 +606,7 @@ int main(int argc, char **argv)
     if (h5_only) {
         h5_exit_quiet(); /* first: no corrupt file read on the main thread yet */
         h5_threads();
-        return gw_test_summary("test_threads");
+        goto done;
     }
     /* 2a. different inputs at once, first of all: the memos of the restitution
      * calibration and of the layer laws are empty and the threads race to fill them */
@@ -652,6 +652,7 @@ int main(int argc, char **argv)
     h5_exit_quiet(); /* before h5_threads: no corrupt file read on the main thread yet */
     h5_threads();
     interrupts();
+done:
     fflush(stdout);
     char cmd[300];
     snprintf(cmd, sizeof cmd, "rm -rf '%s'", dir);

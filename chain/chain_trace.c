@@ -157,8 +157,8 @@ static int h5_dataset(hid_t file, const char *name, const double *data, int rank
     return bad ? GW_EIO : GW_OK;
 }
 
-static int write_h5(const gw_chain_trace *tr, const char *dir, const char *stem,
-                    const char *header, gw_err *err)
+static int write_h5_locked(const gw_chain_trace *tr, const char *dir, const char *stem,
+                           const char *header, gw_err *err)
 {
     char path[4096], name[512];
     gw_snprintf(name, sizeof name, "%s.h5", stem);
@@ -200,6 +200,23 @@ static int write_h5(const gw_chain_trace *tr, const char *dir, const char *stem,
                      : gw_err_set(err, GW_EIO, "%s: HDF5 write failed", path);
     }
     return gw_h5_mem_write(&mem, path, err);
+}
+
+/* Under the HDF5 lock (gw_h5.h), with HDF5's error printing off: the message
+ * names the file, and HDF5 would print its error stack to stderr (its handler
+ * is per thread in a thread-safe HDF5: a new thread's prints). */
+static int write_h5(const gw_chain_trace *tr, const char *dir, const char *stem,
+                    const char *header, gw_err *err)
+{
+    gw_h5_lock();
+    H5E_auto2_t old_fn;
+    void *old_data;
+    H5Eget_auto2(H5E_DEFAULT, &old_fn, &old_data);
+    H5Eset_auto2(H5E_DEFAULT, NULL, NULL);
+    int rc = write_h5_locked(tr, dir, stem, header, err);
+    H5Eset_auto2(H5E_DEFAULT, old_fn, old_data);
+    gw_h5_unlock();
+    return rc;
 }
 #endif
 

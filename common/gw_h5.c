@@ -3,14 +3,41 @@
  * written through gw_afile as one image (gw_h5.h).
  */
 #include <errno.h>
+#include <stdatomic.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "gw_global.h"
 #include "gw_h5.h"
 
 #if GW_HAVE_HDF5
+static gw_forklock h5_lock = GW_FORKLOCK_RECURSIVE;
+
+void gw_h5_lock(void)
+{
+    gw_forklock_take(&h5_lock);
+}
+
+void gw_h5_unlock(void)
+{
+    gw_forklock_give(&h5_lock);
+}
+
+static atomic_int exit_quiet_set;
+
+static void exit_quiet(void)
+{
+    H5Eset_auto2(H5E_DEFAULT, NULL, NULL);
+}
+
+void gw_h5_quiet_at_exit(void)
+{
+    if (!atomic_exchange(&exit_quiet_set, 1))
+        atexit(exit_quiet);
+}
+
 /* The core driver's buffer is ours (file image callbacks): HDF5 grows it as
  * the file grows and, at H5Fclose, hands it back instead of freeing it when
  * gw_h5_mem_write asked to keep it. The closed file's buffer is the file: its

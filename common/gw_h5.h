@@ -53,6 +53,28 @@ void gw_h5_mem_abort(gw_h5_mem *m);
  * an automatic error handler (H5Eset_auto2), which sees the stack before the
  * next HDF5 call clears it. */
 int gw_h5_stack_nomem(hid_t stack);
+
+/* HDF5 is called by one thread at a time: every section of the library that
+ * calls HDF5 (the sample's read and write, the chain trace's and the impact's
+ * .h5 files) holds this lock from its first HDF5 call to its last, including
+ * the swap of HDF5's error handler. HDF5 built without --enable-threadsafe
+ * (HDF5's own default) has no lock of its own, and its error handler and
+ * identifier tables are process-wide; a thread-safe build serialises its API
+ * calls anyway, so the lock costs nothing there. Recursive; a gw_forklock
+ * (gw_global.h): a fork waits for the section under way. */
+void gw_h5_lock(void);
+void gw_h5_unlock(void);
+
+/* After a failed read: HDF5 1.10 can lose track of a block of a corrupt file
+ * and then prints "HDF5: infinite loop closing library" and a line of
+ * "FL,FL,..." to stderr when the process exits, unless automatic error
+ * printing is off in the thread that exits. That setting is per thread in a
+ * thread-safe HDF5, so turning it off in the reading thread left the main
+ * thread's on: a corrupt sample read on any other thread (a Python
+ * ThreadPoolExecutor, a program's worker) printed at exit. This registers,
+ * once, an atexit handler that turns the printing off in the exiting thread;
+ * it runs before HDF5's own (registered at HDF5's first call, earlier). */
+void gw_h5_quiet_at_exit(void);
 #endif
 
 #endif

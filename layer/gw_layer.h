@@ -307,8 +307,10 @@ void gw_layer_sample_free(gw_layer_sample *s);
  * without HDF5) with a message naming the file and the line or particle; s is
  * then empty (safe to free). HDF5 files are opened only in the 1.8 format or
  * later (metadata checksums; libhdf5 can crash on corrupt files without them).
- * HDF5's own error printing is silenced during both calls and stays off after
- * a failed HDF5 read (its handler is process-wide: not thread-safe). */
+ * HDF5's own error printing is silenced during both calls (under the
+ * library's HDF5 lock: calls from several threads run one at a time) and
+ * stays off after a failed HDF5 read, in the reading thread and in the thread
+ * that exits the process (HDF5 1.10 prints at exit after some corrupt files). */
 int gw_layer_sample_write(const gw_layer_sample *s, const char *path, const char *header,
                           gw_err *err);
 int gw_layer_sample_read(const char *path, gw_layer_sample *s, gw_err *err);

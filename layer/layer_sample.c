@@ -617,7 +617,7 @@ static int h5_body_write(hid_t f, const int *v, int n)
 /* Written under a temporary name through gw_afile (signals held, fsync, rename
  * on commit): HDF5 creates the temporary by name (gw_afile_open_named). The
  * 1.8 file format (superblock 2) puts checksums on all metadata (see read_h5). */
-static int write_h5(const gw_layer_sample *s, const char *path, const char *header, gw_err *err)
+static int write_h5_locked(const gw_layer_sample *s, const char *path, const char *header, gw_err *err)
 {
     h5_quiet q;
     h5_quiet_on(&q);
@@ -650,6 +650,15 @@ static int write_h5(const gw_layer_sample *s, const char *path, const char *head
         rc = gw_h5_mem_write(&mem, path, err);
     }
     h5_quiet_off(&q);
+    return rc;
+}
+
+/* under the HDF5 lock (gw_h5.h): HDF5 and its error handler, one thread at a time */
+static int write_h5(const gw_layer_sample *s, const char *path, const char *header, gw_err *err)
+{
+    gw_h5_lock();
+    int rc = write_h5_locked(s, path, header, err);
+    gw_h5_unlock();
     return rc;
 }
 
@@ -850,7 +859,7 @@ static int h5_fields(hid_t f, gw_layer_sample *s, const char *path, const char *
  * Superblocks from version 2 on (HDF5 1.8 format and later) come with
  * checksums on all metadata, which HDF5 verifies before decoding: only those
  * files are opened. sb: the superblock version, byte 8 of the file. */
-static int read_h5(const char *path, int sb, gw_layer_sample *s, gw_err *err)
+static int read_h5_locked(const char *path, int sb, gw_layer_sample *s, gw_err *err)
 {
     if (sb < 0)
         return gw_err_set(err, GW_EFORMAT, "sample '%s': truncated HDF5 file (signature only)", path);
@@ -882,6 +891,16 @@ static int read_h5(const char *path, int sb, gw_layer_sample *s, gw_err *err)
         h5_quiet_off(&q);
     else
         H5Eset_auto2(H5E_DEFAULT, NULL, NULL);
+    return rc;
+}
+
+static int read_h5(const char *path, int sb, gw_layer_sample *s, gw_err *err)
+{
+    gw_h5_lock();
+    int rc = read_h5_locked(path, sb, s, err);
+    if (rc != GW_OK)
+        gw_h5_quiet_at_exit(); /* HDF5's exit message after a corrupt file, whichever thread read it */
+    gw_h5_unlock();
     return rc;
 }
 #endif

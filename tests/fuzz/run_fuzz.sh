@@ -35,7 +35,8 @@ if [ -f "$SRC/layer/layer_sample.c" ]; then
             echo "NOTE: no pkg-config flags for HDF5: fuzz_layer_sample built text-only"; H5=""; }
     fi
     clang -I"$GEN" -I"$SRC/layer" $CF -o "$out/fuzz_layer_sample" "$SRC/tests/fuzz/fuzz_layer_sample.c" \
-        "$SRC/layer/layer_sample.c" "$SRC/layer/layer_clump_check.c" "$SRC/common/gw_h5.c" $common $H5 -lcjson -lm
+        "$SRC/layer/layer_sample.c" "$SRC/layer/layer_clump_check.c" "$SRC/common/gw_h5.c" "$SRC/common/gw_forklock.c" \
+        $common $H5 -lcjson -lm
     targets="sweep_config cli sweep_journal stats_table layer_sample"
 else
     targets="sweep_config cli sweep_journal stats_table"

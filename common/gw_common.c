@@ -138,14 +138,20 @@ int gw_warnings_add(char **list, const char *fmt, ...)
     return grown ? GW_OK : GW_ENOMEM;
 }
 
-/* The end of a number's text: blanks after it are allowed, as strtod and
- * strtol allow them before it ("0.3, 0.5" and "0.3 , 0.5" alike); before the
- * sixteenth session of stage 2, ' 5' was 5 and '5 ' not an integer. */
+/* A number's text: blanks (spaces, tabs) are allowed around it, on both sides
+ * alike ("0.3, 0.5" and "0.3 , 0.5"); before the sixteenth session of stage 2,
+ * strtod and strtol took ' 5' as 5 and '5 ' was not an integer. Other white
+ * space (a newline, a carriage return) is no part of a number, before it (which
+ * strtod would skip) or after it. */
 static int number_ends(const char *s, const char *end)
 {
     if (end == s)
         return 0;
-    while (*end == ' ' || *end == '\t' || *end == '\n' || *end == '\r' || *end == '\f' || *end == '\v')
+    for (const char *p = s; p < end && (*p == ' ' || *p == '\t' || *p == '\n' || *p == '\r' || *p == '\f' ||
+                                        *p == '\v'); p++)
+        if (*p != ' ' && *p != '\t')
+            return 0;
+    while (*end == ' ' || *end == '\t')
         end++;
     return *end == '\0';
 }

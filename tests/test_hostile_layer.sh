@@ -1058,7 +1058,7 @@ if runs "layer-make --out a symbolic link to an empty file" layer-make --n 20 --
     ls "$tmp/d38" | grep -q tmp && ko "  a temporary file left beside the target"
 fi
 ln -s d38/nowhere/s.txt "$tmp/dl38.txt"
-refused "layer-make --out a symbolic link to nothing" "^granwave layer-make: sample: '.*dl38.txt' is a symbolic link to 'd38/nowhere/s.txt', which does not exist$" \
+refused "layer-make --out a symbolic link to nothing" "^granwave layer-make --out: '.*dl38.txt' is a symbolic link to 'd38/nowhere/s.txt', which does not exist$" \
     layer-make --n 20 --width-rm 10 --t-max 0.005 --out "$tmp/dl38.txt"
 [ -L "$tmp/dl38.txt" ] && [ ! -e "$tmp/d38/nowhere" ] || ko "  the dangling link was replaced or its target made"
 # --- 40: a verlet pluviation at four skins ------------------------------------------------

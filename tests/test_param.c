@@ -89,7 +89,7 @@ static void check_result_table(const gw_param *t, const char *what)
 /* Blanks around a number (the sixteenth session of stage 2): strtod and strtol
  * skip them before the number, and ' 5' was 5 while '5 ' was "not an integer"
  * (and '0.3 ,0.5' not a list where '0.3, 0.5' was). Both sides are now alike
- * (5 of these 11 checks fail on 68a27d7). */
+ * (6 of these 11 checks fail on 68a27d7). */
 static void blanks_around_numbers(void)
 {
     gw_err err = {{0}};

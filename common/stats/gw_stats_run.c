@@ -388,6 +388,14 @@ int gw_stats_analyse(const gw_stats_setup *s, gw_stats_analysis *A, gw_err *err)
         return gw_err_set(err, GW_EINVAL, "input: a sweep table (results.csv) is required");
     if ((rc = gw_stats_fit_parse(s->fit, &A->fit_mask, err)) != GW_OK)
         return rc;
+    /* a fitted offset or tan gamma is searched over its whole range (the
+     * global fit): the value that would hold it is not used, not even as a
+     * start, so giving it has no effect (the option-effect test found
+     * --fit beta,a_over_b,offset --delta-rm 0.5 silent) */
+    if ((A->fit_mask & GW_STATS_B31_OFFSET) && !isnan(s->delta_rm))
+        return gw_err_set(err, GW_EINVAL, "delta-rm: has no effect when the offset is fitted (fit lists offset)");
+    if ((A->fit_mask & GW_STATS_B31_TANG) && s->gamma_deg != 0.2)
+        return gw_err_set(err, GW_EINVAL, "gamma-deg: has no effect when tan_gamma is fitted (fit lists tan_gamma)");
     A->gamma_deg = s->gamma_deg;
     A->delta_rm = s->delta_rm;
     A->defaults = s->defaults;

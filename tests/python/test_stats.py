@@ -133,10 +133,12 @@ def test_synthetic_diagram_as_the_program(program, synthetic_table):
     r = granwave.layer_stats(synthetic_table, criterion=0.7)
     compare(r, cli_json(program, synthetic_table, "--criterion", 0.7))
     assert r.ndiagrams == 1 and r.diagrams["fit_ok"][0] == 1 and r.diagrams["ncross"][0] >= 3
-    kw = dict(fit="beta,a_over_b,offset", gamma_deg=0.3, delta_rm=2)
+    kw = dict(fit="beta,a_over_b,offset", gamma_deg=0.3)
     r = granwave.layer_stats(input=synthetic_table, **kw)
-    compare(r, cli_json(program, synthetic_table, "--fit", "beta,a_over_b,offset", "--gamma-deg", 0.3,
-                        "--delta-rm", 2))
+    compare(r, cli_json(program, synthetic_table, "--fit", "beta,a_over_b,offset", "--gamma-deg", 0.3))
+    # the offset fitted: delta-rm (which would hold it) has no effect, refused alike
+    with pytest.raises(granwave.GranwaveValueError, match="delta_rm: has no effect when the offset is fitted"):
+        granwave.layer_stats(input=synthetic_table, delta_rm=2, **kw)
 
 
 def test_bad_values_name_the_parameter(synthetic_table, tmp_path):

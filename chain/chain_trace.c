@@ -208,14 +208,10 @@ static int write_h5_locked(const gw_chain_trace *tr, const char *dir, const char
 static int write_h5(const gw_chain_trace *tr, const char *dir, const char *stem,
                     const char *header, gw_err *err)
 {
-    gw_h5_lock();
-    H5E_auto2_t old_fn;
-    void *old_data;
-    H5Eget_auto2(H5E_DEFAULT, &old_fn, &old_data);
-    H5Eset_auto2(H5E_DEFAULT, NULL, NULL);
+    gw_h5_section sec;
+    gw_h5_enter(&sec, NULL, NULL);
     int rc = write_h5_locked(tr, dir, stem, header, err);
-    H5Eset_auto2(H5E_DEFAULT, old_fn, old_data);
-    gw_h5_unlock();
+    gw_h5_leave(&sec);
     return rc;
 }
 #endif

@@ -25,6 +25,30 @@ void gw_h5_unlock(void)
     gw_forklock_give(&h5_lock);
 }
 
+void gw_h5_enter(gw_h5_section *sec, H5E_auto2_t fn, void *data)
+{
+    gw_h5_lock();
+    if (H5Eget_auto2(H5E_DEFAULT, &sec->fn, &sec->data) < 0)
+        sec->fn = NULL, sec->data = NULL;
+    H5Eset_auto2(H5E_DEFAULT, fn, data);
+}
+
+void gw_h5_leave(gw_h5_section *sec)
+{
+    H5Eclear2(H5E_DEFAULT);
+    H5Eset_auto2(H5E_DEFAULT, sec->fn, sec->data);
+    gw_h5_unlock();
+}
+
+void gw_h5_leave_failed_read(gw_h5_section *sec)
+{
+    (void)sec;
+    H5Eclear2(H5E_DEFAULT);
+    H5Eset_auto2(H5E_DEFAULT, NULL, NULL);
+    gw_h5_quiet_at_exit();
+    gw_h5_unlock();
+}
+
 static atomic_int exit_quiet_set;
 
 static void exit_quiet(void)

@@ -65,6 +65,21 @@ int gw_h5_stack_nomem(hid_t stack);
 void gw_h5_lock(void);
 void gw_h5_unlock(void);
 
+/* A section of HDF5 calls, as every caller in the library makes one: the lock
+ * taken, HDF5's automatic error handler (process-wide, or per thread in a
+ * thread-safe HDF5) saved and replaced by fn with data (fn NULL: nothing
+ * printed; granwave reports through gw_err, naming the file), and at the end
+ * the caller's handler put back and the lock given. */
+typedef struct gw_h5_section {
+    H5E_auto2_t fn;
+    void *data;
+} gw_h5_section;
+void gw_h5_enter(gw_h5_section *sec, H5E_auto2_t fn, void *data);
+void gw_h5_leave(gw_h5_section *sec);
+/* The end of a section whose read failed: automatic error printing stays off
+ * in this thread and, once, in the exiting one (gw_h5_quiet_at_exit). */
+void gw_h5_leave_failed_read(gw_h5_section *sec);
+
 /* After a failed read: HDF5 1.10 can lose track of a block of a corrupt file
  * and then prints "HDF5: infinite loop closing library" and a line of
  * "FL,FL,..." to stderr when the process exits, unless automatic error

@@ -93,11 +93,8 @@ int gw_layer_impact_write_h5(const gw_layer_impact_result *r, const char *path, 
         memcpy(led + 8 * k, v, sizeof v);
     }
     /* our message names the file; HDF5's own error stack would add dozens of lines */
-    gw_h5_lock(); /* HDF5 and its error handler, one thread at a time (gw_h5.h) */
-    H5E_auto2_t old_fn;
-    void *old_data;
-    H5Eget_auto2(H5E_DEFAULT, &old_fn, &old_data);
-    H5Eset_auto2(H5E_DEFAULT, NULL, NULL);
+    gw_h5_section sec; /* HDF5 and its error handler, one thread at a time (gw_h5.h) */
+    gw_h5_enter(&sec, NULL, NULL);
     gw_h5_mem mem;
     hid_t file = gw_h5_mem_create(&mem, path, 0); /* in memory, written as one image (gw_h5.h) */
     int bad = file < 0;
@@ -147,8 +144,7 @@ int gw_layer_impact_write_h5(const gw_layer_impact_result *r, const char *path, 
     } else {
         rc = gw_h5_mem_write(&mem, path, err); /* fsync, then the rename makes it visible */
     }
-    H5Eset_auto2(H5E_DEFAULT, old_fn, old_data);
-    gw_h5_unlock();
+    gw_h5_leave(&sec);
     return rc;
 }
 #else

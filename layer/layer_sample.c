@@ -507,12 +507,10 @@ static int read_text(text_in *t, gw_layer_sample *s, gw_err *err)
 /* ------------------------------------------------------------- HDF5 ---- */
 
 #if GW_HAVE_HDF5
-/* HDF5 prints its error stack by default. While granwave calls it, a handler
- * records the most specific message of the first failure instead (for gw_err);
- * the caller's handler is put back afterwards (it is process-wide state). */
+/* HDF5 prints its error stack by default. While granwave calls it (a
+ * gw_h5_section, gw_h5.h), a handler records the most specific message of the
+ * first failure instead (for gw_err). */
 typedef struct h5_quiet {
-    H5E_auto2_t fn;
-    void *data;
     char why[160];
     int nomem; /* a failed allocation in HDF5: "out of memory" */
 } h5_quiet;
@@ -542,17 +540,12 @@ static herr_t h5_record(hid_t stack, void *ctx)
     return 0;
 }
 
-static void h5_quiet_on(h5_quiet *q)
+/* A section of HDF5 calls with h5_record as its handler. */
+static void h5_enter(gw_h5_section *sec, h5_quiet *q)
 {
     q->why[0] = '\0';
     q->nomem = 0;
-    H5Eget_auto2(H5E_DEFAULT, &q->fn, &q->data);
-    H5Eset_auto2(H5E_DEFAULT, h5_record, q);
-}
-
-static void h5_quiet_off(const h5_quiet *q)
-{
-    H5Eset_auto2(H5E_DEFAULT, q->fn, q->data);
+    gw_h5_enter(sec, h5_record, q);
 }
 
 static int h5_attr_write(hid_t loc, const char *name, hid_t type, const void *v)
@@ -617,10 +610,9 @@ static int h5_body_write(hid_t f, const int *v, int n)
 /* Written under a temporary name through gw_afile (signals held, fsync, rename
  * on commit): HDF5 creates the temporary by name (gw_afile_open_named). The
  * 1.8 file format (superblock 2) puts checksums on all metadata (see read_h5). */
-static int write_h5_locked(const gw_layer_sample *s, const char *path, const char *header, gw_err *err)
+static int write_h5_locked(const gw_layer_sample *s, const char *path, const char *header,
+                           const h5_quiet *q, gw_err *err)
 {
-    h5_quiet q;
-    h5_quiet_on(&q);
     int version = 1, n = s->n;
     gw_h5_mem mem;
     hid_t file = gw_h5_mem_create(&mem, path, 1); /* in memory, written as one image (gw_h5.h) */
@@ -641,24 +633,25 @@ static int write_h5_locked(const gw_layer_sample *s, const char *path, const cha
               (s->body && h5_body_write(file, s->body, n));
     int rc = GW_OK;
     if (bad) {
-        int nomem = q.nomem;
+        int nomem = q->nomem;
         if (file >= 0)
             gw_h5_mem_abort(&mem);
         rc = nomem ? gw_err_set(err, GW_ENOMEM, "sample '%s': out of memory", path)
-                   : gw_err_set(err, GW_EIO, "sample '%s': HDF5 write failed%s%s", path, q.why[0] ? ": " : "", q.why);
+                   : gw_err_set(err, GW_EIO, "sample '%s': HDF5 write failed%s%s", path, q->why[0] ? ": " : "", q->why);
     } else {
         rc = gw_h5_mem_write(&mem, path, err);
     }
-    h5_quiet_off(&q);
     return rc;
 }
 
-/* under the HDF5 lock (gw_h5.h): HDF5 and its error handler, one thread at a time */
+/* one section of HDF5 calls (gw_h5.h): HDF5 and its error handler, one thread at a time */
 static int write_h5(const gw_layer_sample *s, const char *path, const char *header, gw_err *err)
 {
-    gw_h5_lock();
-    int rc = write_h5_locked(s, path, header, err);
-    gw_h5_unlock();
+    gw_h5_section sec;
+    h5_quiet q;
+    h5_enter(&sec, &q);
+    int rc = write_h5_locked(s, path, header, &q, err);
+    gw_h5_leave(&sec);
     return rc;
 }
 
@@ -858,49 +851,45 @@ static int h5_fields(hid_t f, gw_layer_sample *s, const char *path, const char *
  * it (memory errors found by fuzzing 1.10.8 with superblock-0 files).
  * Superblocks from version 2 on (HDF5 1.8 format and later) come with
  * checksums on all metadata, which HDF5 verifies before decoding: only those
- * files are opened. sb: the superblock version, byte 8 of the file. */
-static int read_h5_locked(const char *path, int sb, gw_layer_sample *s, gw_err *err)
+ * files are opened (read_h5, given sb: the superblock version, byte 8 of the file). */
+static int read_h5_locked(const char *path, gw_layer_sample *s, const h5_quiet *q, gw_err *err)
 {
-    if (sb < 0)
-        return gw_err_set(err, GW_EFORMAT, "sample '%s': truncated HDF5 file (signature only)", path);
-    if (sb < 2)
-        return gw_err_set(err, GW_EFORMAT, "sample '%s': HDF5 file without metadata checksums (superblock "
-                          "version %d; write it with the 1.8 format or later, e.g. h5py libver='v108')", path, sb);
-    h5_quiet q;
-    h5_quiet_on(&q);
     int rc;
     /* strong close: H5Fclose also closes what a failed read left open */
     hid_t fapl = H5Pcreate(H5P_FILE_ACCESS);
     hid_t f = fapl < 0 || H5Pset_fclose_degree(fapl, H5F_CLOSE_STRONG) < 0 ? -1 :
               H5Fopen(path, H5F_ACC_RDONLY, fapl);
     if (f < 0) {
-        rc = gw_err_set(err, GW_EFORMAT, "sample '%s': corrupt or truncated HDF5 file (%s)", path, q.why);
+        rc = gw_err_set(err, GW_EFORMAT, "sample '%s': corrupt or truncated HDF5 file (%s)", path, q->why);
     } else {
-        rc = h5_fields(f, s, path, q.why, err);
+        rc = h5_fields(f, s, path, q->why, err);
         if (H5Fclose(f) < 0 && rc == GW_OK)
-            rc = gw_err_set(err, GW_EFORMAT, "sample '%s': corrupt HDF5 file (%s)", path, q.why);
+            rc = gw_err_set(err, GW_EFORMAT, "sample '%s': corrupt HDF5 file (%s)", path, q->why);
     }
     if (fapl >= 0)
         H5Pclose(fapl);
-    H5Eclear2(H5E_DEFAULT);
-    /* After some corrupt files HDF5 1.10 loses track of a block (a leak inside
-     * the library) and at exit prints "infinite loop closing library" unless
-     * automatic error printing is off: after a failed read it stays off
-     * (granwave reports HDF5 errors through gw_err). */
-    if (rc == GW_OK)
-        h5_quiet_off(&q);
-    else
-        H5Eset_auto2(H5E_DEFAULT, NULL, NULL);
     return rc;
 }
 
 static int read_h5(const char *path, int sb, gw_layer_sample *s, gw_err *err)
 {
-    gw_h5_lock();
-    int rc = read_h5_locked(path, sb, s, err);
-    if (rc != GW_OK)
-        gw_h5_quiet_at_exit(); /* HDF5's exit message after a corrupt file, whichever thread read it */
-    gw_h5_unlock();
+    if (sb < 0)
+        return gw_err_set(err, GW_EFORMAT, "sample '%s': truncated HDF5 file (signature only)", path);
+    if (sb < 2)
+        return gw_err_set(err, GW_EFORMAT, "sample '%s': HDF5 file without metadata checksums (superblock "
+                          "version %d; write it with the 1.8 format or later, e.g. h5py libver='v108')", path, sb);
+    gw_h5_section sec;
+    h5_quiet q;
+    h5_enter(&sec, &q);
+    int rc = read_h5_locked(path, s, &q, err);
+    /* After some corrupt files HDF5 1.10 loses track of a block (a leak inside
+     * the library) and at exit prints "infinite loop closing library" unless
+     * automatic error printing is off: after a failed read it stays off, here
+     * and in the exiting thread (granwave reports HDF5 errors through gw_err). */
+    if (rc == GW_OK)
+        gw_h5_leave(&sec);
+    else
+        gw_h5_leave_failed_read(&sec);
     return rc;
 }
 #endif

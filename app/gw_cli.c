@@ -28,7 +28,7 @@ int gw_cli_opt_param(const gw_param *p, void *dest, gw_opt *o, gw_err *err)
     case GW_PARAM_CHOICE:
     case GW_PARAM_TEXT:
         o->kind = GW_OPT_STRING;
-        *(const char **)dest = p->def;
+        *(const char **)dest = p->optional ? NULL : p->def; /* an optional row: not given (gw_param.h) */
         return GW_OK;
     default:
         return gw_err_set(err, GW_EINVAL, "%s: a %s row is not a command-line option", p->name,
@@ -42,8 +42,8 @@ int gw_cli_opt_param(const gw_param *p, void *dest, gw_opt *o, gw_err *err)
     if (p->type == GW_PARAM_DOUBLE)
         *(double *)dest = NAN;
     else
-        *(long *)dest = 0;
-    return p->def ? gw_param_set_value(p, dest, p->def, err) : GW_OK;
+        *(long *)dest = p->optional ? GW_PARAM_UNSET_LONG : 0;
+    return p->def && !p->optional ? gw_param_set_value(p, dest, p->def, err) : GW_OK;
 }
 
 /* The value checked by the option's table row: the row's message "NAME:

@@ -47,8 +47,9 @@ int gw_cli_parse(const char *cmd, gw_opt *opts, int argc, char **argv, int *help
  * long -> GW_OPT_LONG into a long, flag -> GW_OPT_FLAG into an int, choice and
  * text -> GW_OPT_STRING into a const char *), the value checked by the row; the
  * row's default is written into dest (a choice or text default as the row's
- * static text, NULL when it has none). Int rows are not supported (GW_EINVAL,
- * a table bug). */
+ * static text, NULL when it has none; an optional row's "not given": NaN,
+ * GW_PARAM_UNSET_LONG, NULL). Int rows are not supported (GW_EINVAL, a table
+ * bug). */
 int gw_cli_opt_param(const struct gw_param *p, void *dest, gw_opt *o, gw_err *err);
 /* Print usage and every option's help. */
 void gw_cli_help(FILE *fp, const char *cmd, const char *usage, const char *summary,

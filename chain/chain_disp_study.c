@@ -18,20 +18,27 @@
 
 #define OFF(f) offsetof(gw_chain_dispersion_setup, f)
 
+/* The rows of one mode only (all but the solver rows and fftw-measure) are
+ * optional: not given until set, so that one given at its default's value in
+ * the other mode is refused as having no effect (disp_unused_check), as any
+ * other value is; a run uses their defaults (gw_param_resolve). */
+#define OROW(nm, ty, f, un, lo, hi, op, df, mv, hl) GW_PARAM_OPT_ROW(nm, ty, OFF(f), un, lo, hi, op, 0, df, mv, hl)
+#define OCHOICE(nm, f, ch, df, mv, hl) GW_PARAM_OPT_CHOICE_ROW(nm, OFF(f), ch, df, mv, hl)
+
 static const gw_param disp_params[] = {
-    ROW("n", GW_PARAM_LONG, n, "", 8, 1 << 22, 0, "1024", "N", "number of beads [1024]"),
-    ROW("f0", GW_PARAM_DOUBLE, f0, "N", 0, 1e9, 1, "10", "F", "static precompression, N [10]"),
-    CHOICE("ends", ends, "periodic,fixed", "periodic", "KIND", "periodic or fixed [periodic]"),
-    ROW("t-samples", GW_PARAM_LONG, t_samples, "", 64, 1 << 24, 0, "2048", "T",
+    OROW("n", GW_PARAM_LONG, n, "", 8, 1 << 22, 0, "1024", "N", "number of beads [1024]"),
+    OROW("f0", GW_PARAM_DOUBLE, f0, "N", 0, 1e9, 1, "10", "F", "static precompression, N [10]"),
+    OCHOICE("ends", ends, "periodic,fixed", "periodic", "KIND", "periodic or fixed [periodic]"),
+    OROW("t-samples", GW_PARAM_LONG, t_samples, "", 64, 1 << 24, 0, "2048", "T",
         "velocity samples in time, even [2048]"),
-    ROW("dt-out", GW_PARAM_DOUBLE, dt_out, "s", 0, 1, 0, "0", "DT", "sampling interval, s [pi / (1.25 omega_c)]"),
-    ROW("steps-per-sample", GW_PARAM_LONG, steps_per_sample, "", 1, 100000, 0, "16", "K",
+    OROW("dt-out", GW_PARAM_DOUBLE, dt_out, "s", 0, 1, 0, "0", "DT", "sampling interval, s [pi / (1.25 omega_c)]"),
+    OROW("steps-per-sample", GW_PARAM_LONG, steps_per_sample, "", 1, 100000, 0, "16", "K",
         "RK4 steps per sampling interval (rk4 only) [16]"),
-    ROW("amp", GW_PARAM_DOUBLE, amp, "", 0, 0.1, 1, "1e-3", "A",
+    OROW("amp", GW_PARAM_DOUBLE, amp, "", 0, 0.1, 1, "1e-3", "A",
         "rms overlap perturbation / d0 of the initial velocities [1e-3]"),
-    ROW("seed", GW_PARAM_LONG, seed, "", 0, 9.0e18, 0, "1", "S",
+    OROW("seed", GW_PARAM_LONG, seed, "", 0, 9.0e18, 0, "1", "S",
         "seed of the random mode phases of the initial velocities [1]"),
-    ROW("min-bins", GW_PARAM_DOUBLE, min_bins, "", 1, GW_CHAIN_DISP_MIN_BINS_MAX, 0, "8", "B",
+    OROW("min-bins", GW_PARAM_DOUBLE, min_bins, "", 1, GW_CHAIN_DISP_MIN_BINS_MAX, 0, "8", "B",
         "ridge resolved from B frequency bins up, B <= T/2 - 2 [8]"),
     CHOICE("solver", solver, "rk4,cvode,arkode", NULL, "NAME", "rk4, cvode or arkode [rk4; column-n: cvode]"),
     CHOICE("method", method, "default,adams,bdf,erk,dirk", NULL, "NAME",
@@ -41,11 +48,13 @@ static const gw_param disp_params[] = {
         "absolute tolerance in units of the perturbation scales [1e-10]"),
     ROW("fftw-measure", GW_PARAM_FLAG, fftw_measure, "", 0, 1, 0, "0", NULL,
         "plan the FFTs with FFTW_MEASURE (default FFTW_ESTIMATE)"),
-    ROW("column-n", GW_PARAM_LONG, column_n, "", 0, 100000, 0, "0", "N",
-        "instead: wall-force spectrum of an N-bead column collision [0 = off]"),
-    ROW("vimp", GW_PARAM_DOUBLE, vimp, "m/s", GW_CHAIN_VIMP_MIN, GW_CHAIN_VIMP_MAX, 0, "0.3", "V",
+    OROW("column-n", GW_PARAM_LONG, column_n, "", 1, 100000, 0, NULL, "N",
+        "instead: wall-force spectrum of an N-bead column collision [not given: off]"),
+    OROW("vimp", GW_PARAM_DOUBLE, vimp, "m/s", GW_CHAIN_VIMP_MIN, GW_CHAIN_VIMP_MAX, 0, "0.3", "V",
         "impact velocity of that column, m/s [0.3]"),
     GW_PARAM_END};
+#undef OROW
+#undef OCHOICE
 #undef OFF
 
 #define OFF(f) offsetof(gw_chain_dispersion_outcome, f)
@@ -163,8 +172,7 @@ int gw_chain_dispersion_solver(const gw_chain_dispersion_setup *s, const gw_solv
     /* the reverse: RK4's steps per sample have no effect on an adaptive solver,
      * which chooses its own steps from rtol and atol (the column's mode refuses
      * the row before this, as a row of the other mode) */
-    const gw_param *spp = gw_param_find(disp_params, "steps-per-sample");
-    if (*type != gw_solver_rk4 && s->steps_per_sample != strtol(spp->def, NULL, 10))
+    if (*type != gw_solver_rk4 && gw_param_given(gw_param_find(disp_params, "steps-per-sample"), s))
         return gw_err_set(err, GW_EINVAL, "steps-per-sample: has no effect with the %s solver (it chooses its "
                           "steps from rtol and atol; steps-per-sample is rk4's)", sv);
     *sp = gw_solver_params_default();
@@ -201,16 +209,16 @@ static int wall_sample(void *ctx, double t, const double *y, double f_wall, int 
     return 0;
 }
 
-static int run_column(const gw_chain_dispersion_setup *s, gw_chain_dispersion_outcome *out, gw_err *err)
+/* s: resolved (gw_param_resolve); type, sp: gw_chain_dispersion_solver's */
+static int run_column(const gw_chain_dispersion_setup *s, const gw_solver_type *type, const gw_solver_params *sp,
+                      gw_chain_dispersion_outcome *out, gw_err *err)
 {
     gw_chain_params p = gw_chain_params_default();
     p.n = (int)s->column_n;
     p.v_imp = s->vimp;
     gw_chain_run_opts o = gw_chain_run_opts_default();
-    const gw_solver_type *type;
-    int rc = gw_chain_dispersion_solver(s, &type, &o.sp, err);
-    if (rc != GW_OK)
-        return rc;
+    int rc = GW_OK;
+    o.sp = *sp;
     o.solver = type; /* cvode unless solver is given, as the chain's default */
     o.sp.rtol = isnan(s->rtol) ? GW_CHAIN_TOL_DEFAULT : s->rtol; /* the tolerances of `granwave chain` */
     o.sp.atol = isnan(s->atol) ? GW_CHAIN_TOL_DEFAULT : s->atol;
@@ -248,26 +256,21 @@ static int run_column(const gw_chain_dispersion_setup *s, gw_chain_dispersion_ou
     return rc;
 }
 
-/* The two modes' own rows: a row of the other mode set away from its default
- * would have no effect (the column is the chain command's steel column at
- * vimp; the dispersion study has no impact). */
+/* The two modes' own rows: a row of the other mode given (at any value, its
+ * default's too) has no effect (the column is the chain command's steel column
+ * at vimp; the dispersion study has no impact). */
 static int disp_unused_check(const gw_chain_dispersion_setup *s, gw_err *err)
 {
     static const char *const chain_rows[] = {"n", "f0", "ends", "t-samples", "dt-out", "steps-per-sample",
                                              "amp", "seed", "min-bins"};
-    gw_chain_dispersion_setup d;
-    int rc = gw_chain_dispersion_setup_init(&d);
-    char a[64], b[64];
-    for (size_t i = 0; rc == GW_OK && s->column_n > 0 && i < sizeof chain_rows / sizeof chain_rows[0]; i++) {
-        const gw_param *p = gw_param_find(disp_params, chain_rows[i]);
-        if (gw_param_format(p, s, a, sizeof a) >= 0 && gw_param_format(p, &d, b, sizeof b) >= 0 && strcmp(a, b) != 0)
-            rc = gw_err_set(err, GW_EINVAL, "%s: has no effect with column-n (the column's wall-force spectrum)",
-                            chain_rows[i]);
-    }
-    if (rc == GW_OK && s->column_n == 0 && s->vimp != d.vimp)
-        rc = gw_err_set(err, GW_EINVAL, "vimp: has no effect without column-n (the impact speed of that column)");
-    gw_chain_dispersion_setup_clear(&d);
-    return rc;
+    const int column = gw_param_given(gw_param_find(disp_params, "column-n"), s);
+    for (size_t i = 0; column && i < sizeof chain_rows / sizeof chain_rows[0]; i++)
+        if (gw_param_given(gw_param_find(disp_params, chain_rows[i]), s))
+            return gw_err_set(err, GW_EINVAL, "%s: has no effect with column-n (the column's wall-force spectrum)",
+                              chain_rows[i]);
+    if (!column && gw_param_given(gw_param_find(disp_params, "vimp"), s))
+        return gw_err_set(err, GW_EINVAL, "vimp: has no effect without column-n (the impact speed of that column)");
+    return GW_OK;
 }
 
 int gw_chain_dispersion_run(const gw_chain_dispersion_setup *s, gw_chain_dispersion_outcome *out, gw_err *err)
@@ -275,32 +278,35 @@ int gw_chain_dispersion_run(const gw_chain_dispersion_setup *s, gw_chain_dispers
     if (!s || !out)
         return gw_err_set(err, GW_EINVAL, "gw_chain_dispersion_run: %s is NULL", !s ? "setup" : "out");
     memset(out, 0, sizeof *out);
+    const gw_solver_type *type;
+    gw_solver_params sp;
     int rc = gw_param_check(disp_params, s, err);
     if (rc == GW_OK)
         rc = disp_unused_check(s, err);
+    if (rc == GW_OK) /* what was given decides (steps-per-sample with cvode) */
+        rc = gw_chain_dispersion_solver(s, &type, &sp, err);
     if (rc != GW_OK)
         return rc;
+    gw_chain_dispersion_setup r = *s; /* the values the run uses (no owned fields) */
+    if ((rc = gw_param_resolve(disp_params, &r, err)) != GW_OK)
+        return rc;
     double t0 = gw_clock_ms();
-    if (s->column_n > 0) {
-        rc = run_column(s, out, err);
+    if (r.column_n > 0) {
+        rc = run_column(&r, type, &sp, out, err);
         out->wall_time_ms = gw_clock_ms() - t0;
         return rc;
     }
     gw_chain_disp_params p = gw_chain_disp_params_default();
-    p.n = (int)s->n;
-    p.f0 = s->f0;
-    p.ends = s->ends == 1 ? GW_CHAIN_DISP_FIXED : GW_CHAIN_DISP_PERIODIC;
-    p.t_samples = (int)s->t_samples;
-    p.dt_sample = s->dt_out;
-    p.steps_per_sample = (int)s->steps_per_sample;
-    p.amp = s->amp;
-    p.seed = (unsigned long)s->seed;
-    p.min_bins = s->min_bins;
-    p.fftw_measure = s->fftw_measure;
-    const gw_solver_type *type;
-    gw_solver_params sp;
-    if ((rc = gw_chain_dispersion_solver(s, &type, &sp, err)) != GW_OK)
-        return rc;
+    p.n = (int)r.n;
+    p.f0 = r.f0;
+    p.ends = r.ends == 1 ? GW_CHAIN_DISP_FIXED : GW_CHAIN_DISP_PERIODIC;
+    p.t_samples = (int)r.t_samples;
+    p.dt_sample = r.dt_out;
+    p.steps_per_sample = (int)r.steps_per_sample;
+    p.amp = r.amp;
+    p.seed = (unsigned long)r.seed;
+    p.min_bins = r.min_bins;
+    p.fftw_measure = r.fftw_measure;
     if ((rc = gw_chain_disp_params_validate(&p, err)) != GW_OK) {
         if (strncmp(err->msg, "--", 2) == 0) { /* the model names its fields as flags */
             char tmp[sizeof err->msg];

@@ -122,11 +122,13 @@ void gw_chain_resolved_free(gw_chain_resolved *r)
     r->params.wall.layer = NULL;
 }
 
-/* the name of a choice row's value ("" when not given) */
+/* the name of a choice row's value: its default's when not given ("" when it
+ * has none) */
 static const char *choice(const gw_chain_setup *s, const char *row, char *buf, size_t n)
 {
-    if (gw_param_format(gw_param_find(setup_params, row), s, buf, n) < 0)
-        buf[0] = '\0';
+    const gw_param *p = gw_param_find(setup_params, row);
+    if (gw_param_format(p, s, buf, n) <= 0)
+        gw_snprintf(buf, n, "%s", p->def ? p->def : "");
     return buf;
 }
 
@@ -143,11 +145,15 @@ static int resolve_model(const gw_chain_setup *s, gw_chain_resolved *r, gw_err *
     if (!wm)
         return gw_err_set(err, GW_EINVAL, "wall-material: unknown material '%s' (known: %s)", name,
                           gw_material_names());
-    p->radius = s->radius;
-    p->mass = isnan(s->mass) ? 4.0 / 3.0 * M_PI * pow(s->radius, 3) * bm->density : s->mass;
-    p->k = isnan(s->k) ? gw_hertz_coefficient(s->radius, bm, s->radius, bm) : s->k;
-    p->kwall = isnan(s->kwall) ? gw_hertz_coefficient(s->radius, bm, INFINITY, wm) : s->kwall;
-    if (!isnan(s->kwall) && strcmp(wm->name, "steel") != 0) /* other than the table's default */
+    const gw_param *radius_row = gw_param_find(setup_params, "radius");
+    const int radius_given = gw_param_given(radius_row, s);
+    const double radius = radius_given ? s->radius : gw_strtod(radius_row->def, NULL);
+    p->radius = radius;
+    p->mass = isnan(s->mass) ? 4.0 / 3.0 * M_PI * pow(radius, 3) * bm->density : s->mass;
+    p->k = isnan(s->k) ? gw_hertz_coefficient(radius, bm, radius, bm) : s->k;
+    p->kwall = isnan(s->kwall) ? gw_hertz_coefficient(radius, bm, INFINITY, wm) : s->kwall;
+    const int wall_material_given = gw_param_given(gw_param_find(setup_params, "wall-material"), s);
+    if (!isnan(s->kwall) && wall_material_given)
         return gw_err_set(err, GW_EINVAL, "wall-material: has no effect with kwall (the wall's Hertz coefficient "
                           "is given)");
     /* the wall's material is the sensor's: a sheet lies on it and is the wall;
@@ -155,7 +161,7 @@ static int resolve_model(const gw_chain_setup *s, gw_chain_resolved *r, gw_err *
      * (fitted is K_eff from the measured tau_max, F.2) and a restitution
      * calibrated on the bare sensor under such a law */
     const int fitted = s->sheet_law < 0 || s->sheet_law == GW_SHEET_FITTED;
-    if (s->sheet >= 0 && strcmp(wm->name, "steel") != 0) {
+    if (s->sheet >= 0 && wall_material_given) {
         const gw_sheet *sh = gw_sheet_find(choice(s, "sheet", name, sizeof name));
         if (sh && (fitted || (sh->thickness > 0 && isnan(s->restitution))))
             return gw_err_set(err, GW_EINVAL, "wall-material: has no effect with sheet %s under sheet-law %s (the "
@@ -166,9 +172,10 @@ static int resolve_model(const gw_chain_setup *s, gw_chain_resolved *r, gw_err *
     /* the bead material gives the mass, k and K (and the sheet laws' bead): with
      * all three given and no law that needs it, it would be ignored */
     const int wall_given = !isnan(s->kwall) || ((s->sheet >= 0 || s->sheets) && fitted);
-    if (!isnan(s->mass) && !isnan(s->k) && wall_given && s->radii.n == 0 && strcmp(bm->name, "steel") != 0)
+    if (!isnan(s->mass) && !isnan(s->k) && wall_given && s->radii.n == 0 &&
+        gw_param_given(gw_param_find(setup_params, "material"), s))
         return gw_err_set(err, GW_EINVAL, "material: has no effect with mass, k and the wall's coefficient given");
-    if (s->radii.n > 0 && s->radius != gw_strtod(gw_param_find(setup_params, "radius")->def, NULL))
+    if (s->radii.n > 0 && radius_given)
         return gw_err_set(err, GW_EINVAL, "radius: has no effect with radii (bead 1's radius is the first of radii)");
     if (s->sheet >= 0) {
         const gw_sheet *sh = gw_sheet_find(choice(s, "sheet", name, sizeof name));

@@ -54,12 +54,15 @@ _Static_assert(GW_SHEET_FITTED == 0 && GW_SHEET_HERTZ == 1 && GW_SHEET_LAYER == 
                              "sampling interval for traces, energy and F_max, s [tau_1/200]")
 
 /* material .. mass */
+/* material, radius and wall-material are optional (gw_param.h): given at
+ * their defaults' values too, they are refused where they have no effect */
 #define GW_CHAIN_MATERIAL_ROWS \
-    CHOICE("material", material, BEAD_MATERIALS, "steel", "NAME", \
+    GW_PARAM_OPT_CHOICE_ROW("material", OFF(material), BEAD_MATERIALS, "steel", "NAME", \
            "bead material (steel, brass, aluminium, glass, pmma, pvc) [steel]"), \
     /* a micron to a metre: below, masses of 1e-300 m beads underflow to 0 */ \
-    ROW("radius", GW_PARAM_DOUBLE, radius, "m", 1e-6, 1, 0, "4e-3", "R", "bead radius, m, in [1e-6, 1] [4e-3]"), \
-    CHOICE("wall-material", wall_material, MATERIALS, "steel", "NAME", \
+    GW_PARAM_OPT_ROW("radius", GW_PARAM_DOUBLE, OFF(radius), "m", 1e-6, 1, 0, 0, "4e-3", "R", \
+                     "bead radius, m, in [1e-6, 1] [4e-3]"), \
+    GW_PARAM_OPT_CHOICE_ROW("wall-material", OFF(wall_material), MATERIALS, "steel", "NAME", \
            "wall material, a half-space (steel, rigid, brass, aluminium, glass, pmma, pvc) [steel]"), \
     CHOICE("sheet", sheet, SHEETS, NULL, "NAME", \
            "wall: a sheet of the paper's Table 2 with its fitted K_eff (none, brass, tape, pvc, pmma, " \

@@ -77,9 +77,9 @@ int gw_chain_falcon_speeds(const double *vimp, int n_vimp, const double *heights
 typedef struct gw_chain_setup {
     long n;               /* beads [1] */
     double vimp;          /* impact velocity toward the wall, m/s [0.3] */
-    int material;         /* bead material (choice) [steel] */
-    double radius;        /* bead radius, m [4e-3] */
-    int wall_material;    /* wall material, a half-space (choice) [steel] */
+    int material;         /* bead material (choice) [-1: not given = steel] */
+    double radius;        /* bead radius, m [NaN: not given = 4e-3] */
+    int wall_material;    /* wall material, a half-space (choice) [-1: not given = steel] */
     int sheet;            /* sheet of Table 2 on the wall (choice) [-1: none given] */
     gw_param_list radii;  /* per-bead radii, m, bead 1 first [empty] */
     double k, kwall, mass;/* direct coefficients, N/m^1.5, kg [NaN: from materials] */
@@ -393,7 +393,10 @@ void gw_chain_softwall_outcome_free(gw_chain_softwall_outcome *out);
  * chain_dispersion.c): ridge omega(q) against 2 sqrt(kappa/m) |sin(qa/2)|,
  * kappa = (3/2) k^(2/3) f0^(1/3); or, with column_n > 0, the wall-force spectrum
  * of one column collision against 1/P (chain_spectrum.c). Steel beads, R = 4 mm.
- * rad/s, Hz, m, N. */
+ * rad/s, Hz, m, N. The rows of one mode (all but solver, method, rtol, atol,
+ * fftw_measure) are optional (gw_param.h): init leaves them "not given" (NaN,
+ * GW_PARAM_UNSET_LONG, -1) and a run uses the defaults below; one given in the
+ * other mode is refused, at its default's value too. */
 typedef struct gw_chain_dispersion_setup {
     long n;               /* beads [1024] */
     double f0;            /* precompression, N [10] */
@@ -408,7 +411,7 @@ typedef struct gw_chain_dispersion_setup {
     int method;           /* default, adams, bdf, erk, dirk (choice) [-1: default] */
     double rtol, atol;    /* [NaN: 1e-10; column: 1e-12] */
     int fftw_measure;     /* [0: FFTW_ESTIMATE] */
-    long column_n;        /* > 0: the wall-force spectrum of this column instead [0] */
+    long column_n;        /* 1..100000: the wall-force spectrum of this column instead [not given: off] */
     double vimp;          /* impact velocity of that column, m/s [0.3] */
 } gw_chain_dispersion_setup;
 
@@ -431,7 +434,8 @@ const gw_param *gw_chain_dispersion_setup_params(void);
 int gw_chain_dispersion_setup_init(gw_chain_dispersion_setup *s);
 void gw_chain_dispersion_setup_clear(gw_chain_dispersion_setup *s);
 const gw_param *gw_chain_dispersion_outcome_fields(void);
-/* The solver of s: type and settings (GW_EINVAL "solver: ..", "method: .."). */
+/* The solver of s: type and settings (GW_EINVAL "solver: ..", "method: ..",
+ * "steps-per-sample: .." given with cvode or arkode). */
 int gw_chain_dispersion_solver(const gw_chain_dispersion_setup *s, const gw_solver_type **type,
                                gw_solver_params *sp, gw_err *err);
 /* No progress (one integration); GW_EUNSUPPORTED for bdf/dirk on periodic ends. */

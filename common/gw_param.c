@@ -60,6 +60,13 @@ static const void *cfield(const void *obj, const gw_param *p)
     return (const char *)obj + p->offset;
 }
 
+/* an optional int or long row's field f at "not given" */
+static int unset(const gw_param *p, const void *f)
+{
+    return p->optional && ((p->type == GW_PARAM_INT && *(const int *)f == GW_PARAM_UNSET_INT) ||
+                           (p->type == GW_PARAM_LONG && *(const long *)f == GW_PARAM_UNSET_LONG));
+}
+
 /* within [min, max], "(" / ")" for open ends; messages "(0, 1000]", "> 0" */
 static int range_bad(const gw_param *p, double x, gw_err *err, const char *what)
 {
@@ -312,7 +319,7 @@ int gw_param_check(const gw_param *t, const void *obj, gw_err *err)
         switch (p->type) {
         case GW_PARAM_DOUBLE: {
             double v = *(const double *)f;
-            if (isnan(v) && !p->def)
+            if (isnan(v) && (!p->def || p->optional))
                 break;
             if (!isfinite(v))
                 return gw_err_set(err, GW_EINVAL, "%s: must be a finite number, got %g", p->name, v);
@@ -321,15 +328,21 @@ int gw_param_check(const gw_param *t, const void *obj, gw_err *err)
                 rc = range_bad(p, v, err, "");
             break;
         }
-        case GW_PARAM_INT: rc = range_bad(p, *(const int *)f, err, ""); break;
-        case GW_PARAM_LONG: rc = range_bad(p, (double)*(const long *)f, err, ""); break;
+        case GW_PARAM_INT:
+            if (!unset(p, f))
+                rc = range_bad(p, *(const int *)f, err, "");
+            break;
+        case GW_PARAM_LONG:
+            if (!unset(p, f))
+                rc = range_bad(p, (double)*(const long *)f, err, "");
+            break;
         case GW_PARAM_FLAG:
             if (*(const int *)f != 0 && *(const int *)f != 1)
                 rc = gw_err_set(err, GW_EINVAL, "%s: %d is not a flag (0 or 1)", p->name, *(const int *)f);
             break;
         case GW_PARAM_CHOICE: {
             int c = *(const int *)f;
-            if ((c < 0 && p->def) || c >= choice_count(p->choices))
+            if ((c < 0 && p->def && !p->optional) || c >= choice_count(p->choices))
                 rc = gw_err_set(err, GW_EINVAL, "%s: choice %d is not one of %s", p->name, c, p->choices);
             break;
         }
@@ -375,9 +388,9 @@ int gw_param_init(const gw_param *t, void *obj, gw_err *err)
         void *f = field(obj, p);
         switch (p->type) {
         case GW_PARAM_DOUBLE: *(double *)f = NAN; break;
-        case GW_PARAM_INT:
+        case GW_PARAM_INT: *(int *)f = p->optional ? GW_PARAM_UNSET_INT : 0; break;
         case GW_PARAM_FLAG: *(int *)f = 0; break;
-        case GW_PARAM_LONG: *(long *)f = 0; break;
+        case GW_PARAM_LONG: *(long *)f = p->optional ? GW_PARAM_UNSET_LONG : 0; break;
         case GW_PARAM_CHOICE: *(int *)f = -1; break;
         case GW_PARAM_TEXT: *(char **)f = NULL; break;
         case GW_PARAM_LIST: memset(f, 0, sizeof(gw_param_list)); break;
@@ -386,11 +399,62 @@ int gw_param_init(const gw_param *t, void *obj, gw_err *err)
         case GW_PARAM_IARRAY:
         case GW_PARAM_FARRAY: *(int **)f = NULL; break;
         }
-        if (p->def && gw_param_is_input(p)) {
+        if (p->def && !p->optional && gw_param_is_input(p)) {
             int rc = set_text(p, obj, p->def, err);
             if (rc != GW_OK)
                 return rc;
         }
+    }
+    return GW_OK;
+}
+
+int gw_param_given(const gw_param *p, const void *obj)
+{
+    if (!p || !obj || !gw_param_is_input(p))
+        return 0;
+    const void *f = cfield(obj, p);
+    if (p->optional || !p->def) {
+        switch (p->type) {
+        case GW_PARAM_DOUBLE: return !isnan(*(const double *)f);
+        case GW_PARAM_INT: return !unset(p, f) && (p->optional || *(const int *)f != 0);
+        case GW_PARAM_LONG: return !unset(p, f) && (p->optional || *(const long *)f != 0);
+        case GW_PARAM_FLAG: return *(const int *)f != 0;
+        case GW_PARAM_CHOICE: return *(const int *)f >= 0;
+        case GW_PARAM_TEXT: return *(char *const *)f != NULL;
+        case GW_PARAM_LIST: return ((const gw_param_list *)f)->n > 0;
+        case GW_PARAM_RANGE: return ((const long *)f)[0] != 0 || ((const long *)f)[1] != 0;
+        default: return 0;
+        }
+    }
+    /* a row with a default: given when its value is not the default's (both as
+     * gw_param_format writes them) */
+    char a[512], b[512];
+    if (p->type == GW_PARAM_TEXT || p->type == GW_PARAM_LIST)
+        return gw_param_format(p, obj, a, sizeof a) != 0 && strcmp(a, p->def) != 0;
+    union {
+        double d;
+        int i;
+        long l;
+        long r[2];
+    } u;
+    memset(&u, 0, sizeof u);
+    gw_param row = *p;
+    row.offset = 0;
+    return gw_param_set_value(p, &u, p->def, NULL) != GW_OK || gw_param_format(p, obj, a, sizeof a) < 0 ||
+           gw_param_format(&row, &u, b, sizeof b) < 0 || strcmp(a, b) != 0;
+}
+
+int gw_param_resolve(const gw_param *t, void *obj, gw_err *err)
+{
+    if (!t || !obj)
+        return gw_err_set(err, GW_EINVAL, "gw_param_resolve: %s is NULL", !t ? "table" : "obj");
+    for (int i = 0; t[i].name; i++) {
+        const gw_param *p = &t[i];
+        if (!p->optional || !p->def || !gw_param_is_input(p) || gw_param_given(p, obj))
+            continue;
+        int rc = set_text(p, obj, p->def, err);
+        if (rc != GW_OK)
+            return rc;
     }
     return GW_OK;
 }
@@ -407,8 +471,8 @@ int gw_param_format(const gw_param *p, const void *obj, char *buf, size_t n)
         w = isnan(*(const double *)f) ? 0 : gw_snprintf(buf, n, "%.17g", *(const double *)f);
         break;
     case GW_PARAM_INT:
-    case GW_PARAM_FLAG: w = gw_snprintf(buf, n, "%d", *(const int *)f); break;
-    case GW_PARAM_LONG: w = gw_snprintf(buf, n, "%ld", *(const long *)f); break;
+    case GW_PARAM_FLAG: w = unset(p, f) ? 0 : gw_snprintf(buf, n, "%d", *(const int *)f); break;
+    case GW_PARAM_LONG: w = unset(p, f) ? 0 : gw_snprintf(buf, n, "%ld", *(const long *)f); break;
     case GW_PARAM_CHOICE:
         w = *(const int *)f < 0 ? 0 : choice_name(p->choices, *(const int *)f, buf, n);
         break;
@@ -448,8 +512,12 @@ cJSON *gw_param_json(const gw_param *t, const void *obj)
         case GW_PARAM_DOUBLE:
             v = isfinite(*(const double *)f) ? cJSON_CreateNumber(*(const double *)f) : cJSON_CreateNull();
             break;
-        case GW_PARAM_INT: v = cJSON_CreateNumber(*(const int *)f); break;
-        case GW_PARAM_LONG: v = cJSON_CreateNumber((double)*(const long *)f); break;
+        case GW_PARAM_INT:
+            v = unset(p, f) ? cJSON_CreateNull() : cJSON_CreateNumber(*(const int *)f);
+            break;
+        case GW_PARAM_LONG:
+            v = unset(p, f) ? cJSON_CreateNull() : cJSON_CreateNumber((double)*(const long *)f);
+            break;
         case GW_PARAM_FLAG: v = cJSON_CreateBool(*(const int *)f); break;
         case GW_PARAM_CHOICE:
         case GW_PARAM_TEXT:

@@ -20,6 +20,7 @@
 #ifndef GW_PARAM_H
 #define GW_PARAM_H
 
+#include <limits.h>
 #include <stddef.h>
 
 #include "gw_common.h"
@@ -68,7 +69,17 @@ typedef struct gw_param {
     const char *metavar;  /* placeholder in --help ("V") */
     const char *rows;     /* arrays: number of rows, a number or an int row's name */
     const char *cols;     /* arrays: values per row, likewise (NULL = 1) */
+    int optional;         /* 1: the row starts "not given" (GW_PARAM_UNSET_*) even
+                             when it has a default; def is then the value a run
+                             uses when the row is not given (gw_param_resolve),
+                             and a value given at the default's value is told
+                             apart from none (gw_param_given) */
 } gw_param;
+
+/* "Not given" in a number row that has no default or is optional: double NaN,
+ * int and long these (outside every row's range), choice -1. */
+#define GW_PARAM_UNSET_INT INT_MIN
+#define GW_PARAM_UNSET_LONG LONG_MIN
 
 /* Number of rows of table t. */
 int gw_param_count(const gw_param *t);
@@ -85,9 +96,21 @@ const char *gw_param_type_name(gw_param_type type);
 
 /* Fill obj's fields from t's defaults: a row's def is set as if by gw_param_set;
  * rows without a default get NaN (double), -1 (choice), NULL (text), an empty
- * list, or 0. Other bytes of obj are left as they are. GW_EINVAL (message
- * naming the row) only for a table whose default is invalid (a bug). */
+ * list, or 0; optional rows get "not given" (NaN, GW_PARAM_UNSET_INT/LONG, -1).
+ * Other bytes of obj are left as they are. GW_EINVAL (message naming the row)
+ * only for a table whose default is invalid (a bug). */
 int gw_param_init(const gw_param *t, void *obj, gw_err *err);
+
+/* 1 when row p of obj holds a value given by the caller: for an optional row
+ * or one without a default, any value but "not given" (the default's value
+ * too); for another row, a value other than the default's (a caller who gives
+ * the default's value cannot be told from one who gives none there). */
+int gw_param_given(const gw_param *p, const void *obj);
+
+/* Set every optional row of obj that is not given to its default (the values
+ * a run uses); rows without a default stay not given. GW_EINVAL only for a
+ * table whose default is invalid (a bug). */
+int gw_param_resolve(const gw_param *t, void *obj, gw_err *err);
 
 /* Set row name of obj from text value, checking it as the row says (number,
  * finite, within [min, max] or (min, max], integer, choice, list items, range).
@@ -138,6 +161,13 @@ int gw_param_copy(const gw_param *t, size_t size, void *dst, const void *src, gw
 #define GW_PARAM_CHOICE_ROW(nm, off, ch, df, mv, hl)                                                 \
     {.name = nm, .type = GW_PARAM_CHOICE, .offset = off, .unit = "", .def = df, .choices = ch,       \
      .metavar = mv, .help = hl}
+/* An optional number row (see gw_param.optional): not given until set. */
+#define GW_PARAM_OPT_ROW(nm, ty, off, un, lo, hi, op, opx, df, mv, hl)                               \
+    {.name = nm, .type = ty, .offset = off, .unit = un, .min = lo, .max = hi, .open_min = op,         \
+     .open_max = opx, .def = df, .metavar = mv, .help = hl, .optional = 1}
+#define GW_PARAM_OPT_CHOICE_ROW(nm, off, ch, df, mv, hl)                                             \
+    {.name = nm, .type = GW_PARAM_CHOICE, .offset = off, .unit = "", .def = df, .choices = ch,       \
+     .metavar = mv, .help = hl, .optional = 1}
 #define GW_PARAM_FLAG_ROW(nm, off, hl)                                                               \
     {.name = nm, .type = GW_PARAM_FLAG, .offset = off, .unit = "", .min = 0, .max = 1, .def = "0", .help = hl}
 #define GW_RESULT_ROW(nm, ty, off, un, hl) {.name = nm, .type = ty, .offset = off, .unit = un, .help = hl}

@@ -151,7 +151,7 @@ int gw_layer_impact_setup_check(const gw_layer_impact_setup *s, gw_err *err);
 typedef struct gw_layer_make_setup {
     double friction, shear_modulus, poisson, density, gravity, skin; /* as gw_layer_impact_setup */
     int mass_law;          /* disc, sphere [disc] */
-    int clump_mass;        /* sum, union [sum] */
+    int clump_mass;        /* sum, union (choice) [-1: not given = sum] */
     long n;                /* particles (clumps with clumps = 1) [300] */
     double rm;             /* mean radius R_m, m [0.325] */
     double volume_ratio;   /* largest/smallest volume [10] */
@@ -165,7 +165,7 @@ typedef struct gw_layer_make_setup {
     int solver;            /* rk4, verlet (choice) [rk4] */
     double height_rm;      /* keep particles wholly below H R_m [0 = all] */
     int clumps;            /* type B soil [0] */
-    double aspect_max;     /* clumps: aspect ratio in [1, A] [4] */
+    double aspect_max;     /* clumps: aspect ratio in [1, A] [NaN: not given = 4] */
     char *out;             /* sample file to write (text, or HDF5 for .h5) [NULL: none], owned */
 } gw_layer_make_setup;
 

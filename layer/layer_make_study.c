@@ -36,7 +36,7 @@ static const gw_param make_params[] = {
         "(within t-max) [0 = all]"),
     {.name = "clumps", .type = GW_PARAM_FLAG, .offset = OFF(clumps), .unit = "", .min = 0, .max = 1, .def = "0",
      .help = "type B soil: n rigid clumps (aspect ratio 1-4) instead of n discs"},
-    ROW("aspect-max", GW_PARAM_DOUBLE, aspect_max, "", 1, 4, 0, 0, "4", "A",
+    GW_PARAM_OPT_ROW("aspect-max", GW_PARAM_DOUBLE, OFF(aspect_max), "", 1, 4, 0, 0, "4", "A",
         "clumps: aspect ratio uniform in [1, A], A in [1, 4] [4]"),
     {.name = "out", .type = GW_PARAM_TEXT, .offset = OFF(out), .unit = "", .metavar = "FILE",
      .help = "sample file to write (HDF5 when it ends in .h5) [none: the sample is only returned]"},
@@ -105,10 +105,12 @@ void gw_layer_make_outcome_free(gw_layer_make_outcome *out)
     memset(out, 0, sizeof *out);
 }
 
-/* The header of a written sample: version and every setting. */
-static char *header(const gw_layer_make_setup *s, const gw_layer_make_outcome *o)
+/* The header of a written sample: version and every setting, as the run used
+ * it (the optional rows not given at their defaults). */
+static char *header(const gw_layer_make_setup *given, const gw_layer_make_outcome *o)
 {
-    cJSON *j = gw_param_json(make_params, s);
+    gw_layer_make_setup s = *given; /* owned text shared, read only */
+    cJSON *j = gw_param_resolve(make_params, &s, NULL) == GW_OK ? gw_param_json(make_params, &s) : NULL;
     char *js = j ? gw_json_string(j, 0) : NULL;
     cJSON_Delete(j);
     if (!js) /* a sample whose header left its settings out ("{}") was written */
@@ -123,18 +125,23 @@ static char *header(const gw_layer_make_setup *s, const gw_layer_make_outcome *o
     return h;
 }
 
-int gw_layer_make_plan(const gw_layer_make_setup *s, gw_layer_params *lp_out, gw_layer_make_params *mp_out,
+int gw_layer_make_plan(const gw_layer_make_setup *given, gw_layer_params *lp_out, gw_layer_make_params *mp_out,
                        gw_err *err)
 {
-    int rc = gw_param_check(make_params, s, err);
+    int rc = gw_param_check(make_params, given, err);
     if (rc != GW_OK)
         return rc;
-    if (!(s->gravity > 0))
+    if (!(given->gravity > 0))
         return gw_err_set(err, GW_EINVAL, "gravity: pluviation needs gravity > 0 m/s^2");
-    if (s->aspect_max != 4 && !s->clumps)
+    /* the clumps' rows given (at any value, their defaults' too) without clumps */
+    if (gw_param_given(gw_param_find(make_params, "aspect-max"), given) && !given->clumps)
         return gw_err_set(err, GW_EINVAL, "aspect-max: shapes clumps, so it needs clumps");
-    if (s->clump_mass != GW_LAYER_CLUMP_MASS_SUM && !s->clumps)
+    if (gw_param_given(gw_param_find(make_params, "clump-mass"), given) && !given->clumps)
         return gw_err_set(err, GW_EINVAL, "clump-mass: has no effect without clumps (a disc sample has no clumps)");
+    gw_layer_make_setup r = *given; /* the values the run uses (owned text shared, read only) */
+    if ((rc = gw_param_resolve(make_params, &r, err)) != GW_OK)
+        return rc;
+    const gw_layer_make_setup *s = &r;
     if (s->out && (rc = gw_layer_sample_out_check(s->out, "out", err)) != GW_OK)
         return rc; /* before the run: a result that cannot be written is not computed */
     gw_layer_params lp = gw_layer_params_default();

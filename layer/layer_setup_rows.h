@@ -26,7 +26,9 @@ _Static_assert(GW_LAYER_MASS_DISC == 0 && GW_LAYER_MASS_SPHERE == 1, "mass-law c
 _Static_assert(GW_LAYER_CLUMP_MASS_SUM == 0 && GW_LAYER_CLUMP_MASS_UNION == 1, "clump-mass choices sum,union");
 
 /* LAW, CLUMP: the defaults of mass-law and clump-mass (NULL: not given);
- * WLAW, WCLUMP: the end of their help, "[disc]", "[sum]" or "[the sample's]" */
+ * WLAW, WCLUMP: the end of their help, "[disc]", "[sum]" or "[the sample's]".
+ * clump-mass is optional (gw_param.h): given or not is told apart at its
+ * default's value too (layer-make refuses it given without clumps). */
 #define GW_LAYER_MATERIAL_ROWS(LAW, CLUMP, WLAW, WCLUMP) \
     ROW("friction", GW_PARAM_DOUBLE, friction, "deg", 0, 90, 0, 1, "30", "PHI", "friction angle phi, deg in [0, 90) [30]"), \
     ROW("shear-modulus", GW_PARAM_DOUBLE, shear_modulus, "Pa", 1e-3, 1e15, 0, 0, "40e9", "G", "shear modulus, Pa [40e9]"), \
@@ -35,7 +37,7 @@ _Static_assert(GW_LAYER_CLUMP_MASS_SUM == 0 && GW_LAYER_CLUMP_MASS_UNION == 1, "
     ROW("gravity", GW_PARAM_DOUBLE, gravity, "m/s^2", 0, 1e4, 0, 0, "9.81", "G", "gravity, m/s^2 [9.81]"), \
     ROW("skin", GW_PARAM_DOUBLE, skin, "m", 0, 1e6, 1, 0, "0.1", "S", "contact-list skin, m in (0, 1e6] [0.1]"), \
     CHOICE("mass-law", mass_law, "disc,sphere", LAW, "LAW", "disc (unit thickness) or sphere " WLAW), \
-    CHOICE("clump-mass", clump_mass, "sum,union", CLUMP, "HOW", \
+    GW_PARAM_OPT_CHOICE_ROW("clump-mass", OFF(clump_mass), "sum,union", CLUMP, "HOW", \
            "clump mass: sum (members added, overlaps twice, as PFC2D) or union (density x the union's area; " \
            "disc law) " WCLUMP),
 

@@ -173,7 +173,7 @@ static int cli_setup(const chain_cli *c, const gw_opt *opts, gw_chain_setup *s, 
         } else if (p->type == GW_PARAM_LONG) {
             if (o->seen)
                 *(long *)dst = *(const long *)src;
-        } else if (*(const char *const *)src) {
+        } else if (o->seen && *(const char *const *)src) { /* given: an optional row's default too */
             rc = gw_param_set(t, s, p->name, *(const char *const *)src, err);
         }
         if (rc != GW_OK)

@@ -96,8 +96,7 @@ int gw_solver_tolerances_unused_check(const gw_solver_type *type, const struct g
         const gw_param *p = gw_param_find(t, rows[k]);
         if (!p || p->type != GW_PARAM_DOUBLE)
             continue;
-        const double v = *(const double *)((const char *)obj + p->offset);
-        if (p->def ? v != gw_strtod(p->def, NULL) : !isnan(v))
+        if (gw_param_given(p, obj))
             return gw_err_set(err, GW_EINVAL, "%s: has no effect with the fixed-step %s solver (the tolerances "
                               "are cvode's and arkode's)", p->name, type->name);
     }

@@ -315,7 +315,7 @@ typedef struct gw_stats_setup {
     double criterion;   /* global verdict: share >= S, in (0, 1] [0.75] */
     char *fit;          /* B.31 parameters to fit, comma-separated among offset,
                            beta, a_over_b, tan_gamma [beta,a_over_b], owned */
-    double gamma_deg;   /* cone angle gamma, deg in (0, 89] [0.2] */
+    double gamma_deg;   /* cone angle gamma, deg in (0, 89] [NaN: not given = 0.2] */
     double delta_rm;    /* delta* / R_m of B.31, [0, 1e6] [NaN: measured] */
     gw_stats_defaults defaults; /* not a table row: set by the caller after
                                    init (init sets NaN) */
@@ -358,6 +358,7 @@ typedef struct gw_stats_analysis {
     const char *input;      /* = t.path */
     char *cmdline;          /* for the outputs' headers; owned, may be NULL */
     double gamma_deg, delta_rm; /* delta_rm NaN: from the measured penetration */
+    int gamma_given;            /* gamma-deg was given (its default's value too) */
     int fit_mask;
     gw_stats_defaults defaults;
     gw_stats_table t;

@@ -33,7 +33,7 @@ static const gw_param setup_params[] = {
     {.name = "fit", .type = GW_PARAM_TEXT, .offset = OFF(fit), .unit = "", .def = "beta,a_over_b",
      .metavar = "LIST", .help = "B.31 parameters to fit: beta,a_over_b and optionally offset, tan_gamma [beta,a_over_b]"},
     {.name = "gamma-deg", .type = GW_PARAM_DOUBLE, .offset = OFF(gamma_deg), .unit = "deg", .min = 0, .max = 89,
-     .open_min = 1, .def = "0.2", .metavar = "G",
+     .open_min = 1, .def = "0.2", .metavar = "G", .optional = 1, /* given at 0.2 too: refused where it has no effect */
      .help = "cone angle gamma, deg, held when not fitted (a fitted one is searched over 1e-6 to 89 deg) [0.2, the paper's]"},
     {.name = "delta-rm", .type = GW_PARAM_DOUBLE, .offset = OFF(delta_rm), .unit = "", .min = 0, .max = 1e6,
      .metavar = "D",
@@ -356,11 +356,10 @@ static int warnings_make(gw_stats_analysis *A)
      * a fit that fails may fail by them: fewer crossings than the parameters
      * of fit, a start that does not converge). A table without a diagram at
      * all refuses them before this (gw_stats_analyse). */
-    const gw_param *gr = gw_param_find(setup_params, "gamma-deg");
     char given[64] = "";
     if (A->fit_mask != (GW_STATS_B31_BETA | GW_STATS_B31_AB))
         gw_snprintf(given, sizeof given, "fit");
-    if (A->gamma_deg != gw_strtod(gr->def, NULL))
+    if (A->gamma_given)
         gw_snprintf(given + strlen(given), sizeof given - strlen(given), "%sgamma-deg", *given ? ", " : "");
     if (!isnan(A->delta_rm))
         gw_snprintf(given + strlen(given), sizeof given - strlen(given), "%sdelta-rm", *given ? ", " : "");
@@ -394,9 +393,13 @@ int gw_stats_analyse(const gw_stats_setup *s, gw_stats_analysis *A, gw_err *err)
      * --fit beta,a_over_b,offset --delta-rm 0.5 silent) */
     if ((A->fit_mask & GW_STATS_B31_OFFSET) && !isnan(s->delta_rm))
         return gw_err_set(err, GW_EINVAL, "delta-rm: has no effect when the offset is fitted (fit lists offset)");
-    if ((A->fit_mask & GW_STATS_B31_TANG) && s->gamma_deg != 0.2)
+    A->gamma_given = gw_param_given(gw_param_find(setup_params, "gamma-deg"), s);
+    if ((A->fit_mask & GW_STATS_B31_TANG) && A->gamma_given)
         return gw_err_set(err, GW_EINVAL, "gamma-deg: has no effect when tan_gamma is fitted (fit lists tan_gamma)");
-    A->gamma_deg = s->gamma_deg;
+    gw_stats_setup r = *s; /* gamma-deg as the fit holds it (owned text shared, read only) */
+    if ((rc = gw_param_resolve(setup_params, &r, err)) != GW_OK)
+        return rc;
+    A->gamma_deg = r.gamma_deg;
     A->delta_rm = s->delta_rm;
     A->defaults = s->defaults;
     rc = gw_stats_table_read(s->input, &A->t, err);
@@ -405,7 +408,7 @@ int gw_stats_analyse(const gw_stats_setup *s, gw_stats_analysis *A, gw_err *err)
      * effect, on a table without one (given: other than the row's default) */
     if (rc == GW_OK && (gw_stats_table_key(&A->t, "rb-rm") < 0 || gw_stats_table_key(&A->t, "height-rm") < 0)) {
         const char *given = strcmp(s->fit ? s->fit : "beta,a_over_b", "beta,a_over_b") != 0 ? "fit"
-                            : s->gamma_deg != 0.2 ? "gamma-deg" : !isnan(s->delta_rm) ? "delta-rm" : NULL;
+                            : A->gamma_given ? "gamma-deg" : !isnan(s->delta_rm) ? "delta-rm" : NULL;
         if (given) {
             gw_stats_table_free(&A->t);
             A->input = NULL;

@@ -181,10 +181,53 @@ static void drift_discs(gw_layer *L, double h, const double *ph, double *y)
     const int reg = L->reg_n > 0;
     memset(fa, 0, 3 * (size_t)nb * sizeof *fa);
     memset(rate, 0, (size_t)L->ntail * sizeof *rate);
+    /* the common case has a path of its own: no damping (alpha 0, the impacts:
+     * F_n = F_el, no damping power) and regions set; see below */
+    const int lean = !(alpha > 0) && reg;
     for (int k = 0; k < nc; k++) {
         const layer_contact *c = &L->c[k];
         double nn[2];
         const double ue = disc_geometry(c, y, width, nn);
+        if (lean && ue > 0 && un_last[k] > 0 && tscr[k].kt > 0 && tscr[k].ikt > 0 && tscr[k].q >= 0) {
+            /* closed at both ends with K_s, 1/K_s and the region known: the general
+             * path below with its tests resolved (the same operations in the same
+             * order, so the same numbers); the damping's zero terms (F_n - F_el) u_n'
+             * are not added (adding +0 to the sums changes none of them) */
+            const double su = sqrt(ue), ke = c->kts * su, fel = c->kn * ue * su;
+            if (fel > 0 && ke > 0) {
+                const double ks = tscr[k].kt, iks = tscr[k].ikt;
+                const int q0 = tscr[k].q;
+                const double ike = 1 / ke, km = mean_kt(ks, ke, un_last[k], ue), ikm = 1 / km;
+                double *g = geo + 4 * k;
+                g[0] = ue, g[1] = su, g[2] = nn[0], g[3] = nn[1];
+                un_last[k] = ue;
+                const double vt = disc_vt(c, ph, hh);
+                const double cap = tp * c->kn * ue * su;
+                const double f0 = fe[k], ftr = f0 + vt * h * km;
+                const double f1 = ftr > cap ? cap : ftr < -cap ? -cap : ftr;
+                const double ed = ftr == f1 ? 0 : 0.5 * (f0 + f1) * (ftr - f1) * ikm;
+                const double ek = 0.5 * (f1 * f1 * (ikm - ike) + f0 * f0 * (iks - ikm));
+                ed_sum += ed;
+                ek_sum += ek;
+                book[2 + 2 * q0] += ed;
+                book[3 + 2 * q0] += ek;
+                fe[k] = f1;
+                const double capr = tp * fel, ft = f1 > capr ? capr : f1 < -capr ? -capr : f1;
+                tscr[k].kt = ke;
+                tscr[k].ikt = ike;
+                const double arm = c->ra - 0.5 * ue;
+                tscr[k].q = layer_contact_region_near(L, c, y[6 * c->qa] + arm * nn[0],
+                                                      y[6 * c->qa + 1] + arm * nn[1], q0);
+                const double fx = -fel * nn[0] - ft * nn[1], fy = -fel * nn[1] + ft * nn[0];
+                double *da = fa + 3 * c->qa;
+                da[0] += fx, da[1] += fy, da[2] += ft * c->ra;
+                if (c->b >= 0) {
+                    double *db = fa + 3 * c->qb;
+                    db[0] -= fx, db[1] -= fy, db[2] += ft * c->rb;
+                }
+                continue;
+            }
+        }
         const int closed0 = un_last[k] > 0;
         const int q0 = closed0 ? tscr[k].q : -1;
         const double iks = closed0 ? tscr[k].ikt : 0; /* 1/K_s, 0 when open */

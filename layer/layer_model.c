@@ -519,7 +519,28 @@ static int layer_roots(double t, const double *y, double *g, void *P)
     if (L->stepend) { /* one rebuild root (layer_root_nrebuild): the smallest margin */
         double gmin = 1.0;
         const double m0 = 0.1 * half, m02 = m0 * m0 / (dt2 * dt2), h0 = (half - m0) * (half - m0);
-        for (int i = 0; i < L->n; i++) {
+        const int n = L->n;
+        const double *xl = L->x_list;
+        const unsigned char *fixed = L->fixed;
+        for (int i = 0; !L->off && i < n; i++) { /* discs: the loop below with arm = 0, its
+                                                     constants out of the loop */
+            if (fixed[i])
+                continue;
+            const double *s = y + 6 * i;
+            const double dx = s[0] - xl[2 * i], dy = s[1] - xl[2 * i + 1];
+            const double v2 = s[3] * s[3] + s[4] * s[4], a2 = 0.0;
+            double hi2 = h0;
+            if (v2 + s[5] * s[5] * a2 > 0.25 * m02) {
+                const double sp = sqrt(v2) + fabs(s[5]) * sqrt(a2);
+                if (dt2 * sp > m0) {
+                    const double hi = half - dt2 * sp > 1e-6 * half ? half - dt2 * sp : 1e-6 * half;
+                    hi2 = hi * hi;
+                }
+            }
+            const double gi = hi2 - dx * dx - dy * dy;
+            gmin = gi < gmin ? gi : gmin;
+        }
+        for (int i = 0; L->off && i < L->n; i++) {
             double p[2], arm[2] = {0, 0};
             const int b = L->off ? layer_body(L, i) : i;
             if (L->fixed[b])

@@ -184,22 +184,36 @@ int layer_ledgers_rings(const gw_layer *L, gw_layer_energy *e, gw_layer_energy *
     int *np = M->ring_np, *rk = np + nring;
     for (int k = 0; k < nring; k++)
         kin[k] = strain[k] = coord[k] = 0, np[k] = 0;
-    for (int i = 0; i < L->nb; i++) { /* bodies (discs: body i is disc i) */
+    /* the global ledger's sums in registers (the same additions in the same
+     * order as body_add and the contacts' +=, so the same numbers): through e
+     * every += was a load and a store the next one waited for */
+    double kb = 0, ks = 0, pot = 0, sn_sum = 0, st_sum = 0;
+    const int bb = L->block_body, blk = L->block, nb = L->nb, nc = L->nc;
+    const double grav = L->p.gravity, *mass = L->m, *inert = L->inertia, *yref = L->y_ref;
+    const unsigned char *fixed = L->fixed;
+    const int same = L->snap_stamp == L->stamp;
+    for (int i = 0; i < nb; i++) { /* bodies (discs: body i is disc i) */
         const double *s = y + 6 * i;
-        const double ke = 0.5 * L->m[i] * (s[3] * s[3] + s[4] * s[4]) + 0.5 * L->inertia[i] * s[5] * s[5];
-        const double pe = L->m[i] * L->p.gravity * (s[1] - L->y_ref[i]);
-        const int q = L->snap_stamp == L->stamp ? L->snap_breg[i]
-                                                : (M->snap_breg[i] = layer_body_region_near(L, i, y, L->snap_breg[i]));
-        body_add(L, i, ke, pe, e);
-        body_add(L, i, ke, pe, regions + q);
-        if (i != L->block_body && q < nring)
+        const double ke = 0.5 * mass[i] * (s[3] * s[3] + s[4] * s[4]) + 0.5 * inert[i] * s[5] * s[5];
+        const double pe = mass[i] * grav * (s[1] - yref[i]);
+        const int q = same ? L->snap_breg[i] : (M->snap_breg[i] = layer_body_region_near(L, i, y, L->snap_breg[i]));
+        gw_layer_energy *r = regions + q;
+        if (i == bb)
+            kb += ke, r->kinetic_block += ke;
+        else
+            ks += ke, r->kinetic_soil += ke;
+        if (!fixed[i])
+            pot += pe, r->potential += pe;
+        if (i != bb && q < nring)
             kin[q] += ke;
-        rk[i] = i == L->block || q >= nring ? -1 : q;
+        rk[i] = i == blk || q >= nring ? -1 : q;
         if (rk[i] >= 0)
             np[rk[i]]++;
     }
-    for (int k = 0; k < L->nc; k++) {
-        const layer_contact *c = &L->c[k];
+    const layer_contact *cs = L->c;
+    const layer_tscr *tscr = L->tscr;
+    for (int k = 0; k < nc; k++) {
+        const layer_contact *c = cs + k;
         const double *g = L->geo + 4 * k, un = g[0], su = g[1];
         if (!(un > 0))
             continue;
@@ -208,8 +222,8 @@ int layer_ledgers_rings(const gw_layer *L, gw_layer_energy *e, gw_layer_energy *
             continue;
         const double ft = f > cap ? cap : f < -cap ? -cap : f;
         const double sn = 0.4 * fn * un, st = ft * ft / (2 * kt);
-        const int q = L->tscr[k].q;
-        e->strain_normal += sn, e->strain_tangent += st;
+        const int q = tscr[k].q;
+        sn_sum += sn, st_sum += st;
         regions[q].strain_normal += sn, regions[q].strain_tangent += st;
         int rq = q < nring ? q : -1;
         if (q > nring) { /* the block's contacts by their point */
@@ -223,6 +237,8 @@ int layer_ledgers_rings(const gw_layer *L, gw_layer_energy *e, gw_layer_energy *
         if (c->b >= 0 && rk[c->b] >= 0)
             coord[rk[c->b]] += 1;
     }
+    e->kinetic_block = kb, e->kinetic_soil = ks, e->potential = pot;
+    e->strain_normal = sn_sum, e->strain_tangent = st_sum;
     for (int k = 0; k < nring; k++)
         coord[k] = np[k] > 0 ? coord[k] / np[k] : NAN;
     ledger_tail(L, e, regions, nr);

@@ -197,15 +197,17 @@ static int verlet_step(gw_solver *s, double h)
     if (v->bn > 0) { /* fused: half kick of the velocities, drift, predicted end */
         const long m = v->bm;
         i0 = 2 * m * v->bn;
-        if (m == 3) { /* (x, y, angle) bodies: a fixed trip count the compiler unrolls */
-            for (long b = 0; b < i0; b += 6)
-                for (long j = 0; j < 3; j++) {
-                    double d = hh * f[b + 3 + j];
-                    pp[b + 3 + j] = y[b + 3 + j] + d;
-                    y[b + 3 + j] = pp[b + 3 + j] + d;
-                    pp[b + j] = y[b + j];
-                    y[b + j] += h * pp[b + 3 + j];
-                }
+        if (m == 3) { /* (x, y, angle) bodies: the loop below written out, its
+                         statements side by side so that the compiler pairs them */
+            for (long b = 0; b < i0; b += 6) {
+                const double d3 = hh * f[b + 3], d4 = hh * f[b + 4], d5 = hh * f[b + 5];
+                const double p3 = y[b + 3] + d3, p4 = y[b + 4] + d4, p5 = y[b + 5] + d5;
+                const double q0 = y[b], q1 = y[b + 1], q2 = y[b + 2];
+                pp[b + 3] = p3, pp[b + 4] = p4, pp[b + 5] = p5;
+                y[b + 3] = p3 + d3, y[b + 4] = p4 + d4, y[b + 5] = p5 + d5;
+                pp[b] = q0, pp[b + 1] = q1, pp[b + 2] = q2;
+                y[b] = q0 + h * p3, y[b + 1] = q1 + h * p4, y[b + 2] = q2 + h * p5;
+            }
         } else {
             for (long b = 0; b < i0; b += 2 * m)
                 for (long j = 0; j < m; j++) {
@@ -242,9 +244,11 @@ static int verlet_step(gw_solver *s, double h)
     if (v->bn > 0) {
         const long m = v->bm;
         if (m == 3) /* as in the first half kick */
-            for (long b = 0; b < i0; b += 6)
-                for (long j = 3; j < 6; j++)
-                    y[b + j] = pp[b + j] + hh * f[b + j];
+            for (long b = 0; b < i0; b += 6) {
+                const double v3 = pp[b + 3] + hh * f[b + 3], v4 = pp[b + 4] + hh * f[b + 4];
+                const double v5 = pp[b + 5] + hh * f[b + 5];
+                y[b + 3] = v3, y[b + 4] = v4, y[b + 5] = v5;
+            }
         else
             for (long b = 0; b < i0; b += 2 * m)
                 for (long j = b + m; j < b + 2 * m; j++)

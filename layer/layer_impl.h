@@ -257,6 +257,23 @@ typedef struct layer_tscr {
     int q;
 } layer_tscr;
 
+/* The Coulomb cap F_n tan(phi) of a contact of stiffness kn at overlap un (0
+ * when open), rounded as the right-hand side rounds it (layer_model.c: tp (kn
+ * un sqrt(un)), the elastic F_n first). The stick/slip root |F_t| - cap uses
+ * it, so that a located end of sliding (the root finder stops where |F_t| <=
+ * cap) is sticking for the right-hand side too (layer_tangential: |F_t| = cap
+ * sticks). With the root's cap rounded as (tp kn un) sqrt(un), the state lay
+ * one ulp above the right-hand side's cap at about half of those stops, and
+ * the first RK4 stage after them booked the sliding branch's dissipation: a
+ * draw of rounding worth 1e-7 of the ledger, the exact mode's residual under
+ * scaling and under a change of one ulp of its inputs. (The projections of
+ * layer_sim.c keep their rounding: they only put the state a margin of 1e-4
+ * outside the cap, and the pluviation's samples depend on them bit for bit.) */
+static inline double layer_cap(double tp, double kn, double un)
+{
+    return un > 0 ? tp * (kn * un * sqrt(un)) : 0;
+}
+
 /* The tangential law of layer_model.c (B.2) for a closed contact with state f,
  * K_t = kt, tangential velocity vt, dF_n/dt = fnd, elastic F_n = fel, tan phi =
  * tp: the force used (f clamped to the cap), the state's rate, and the
@@ -268,7 +285,7 @@ static inline void layer_tangential(double f, double kt, double vt, double fnd, 
     double sg = f > 0 ? 1 : f < 0 ? -1 : (re >= 0 ? 1 : -1);
     double rc = sg * tp * fnd, fud = re;
     *rate = re;
-    if (fabs(f) >= cap) {
+    if (fabs(f) > cap) { /* |F_t| = cap sticks: where a located end of sliding lands (layer_cap) */
         fud = rc; /* the force used rides the cap */
         if (sg * re > sg * rc) /* sliding: keep the state a margin outside */
             *rate = rc + sg * lam * (cap * (1 + LAYER_CAP_MARGIN) - fabs(f));

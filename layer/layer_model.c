@@ -585,8 +585,7 @@ static int layer_roots(double t, const double *y, double *g, void *P)
         layer_contact_geometry(L, &L->c[k], y, &un, nn, NULL);
         g[k] = un;
         if (s0 >= 0) {
-            double cap = un > 0 ? L->tan_phi * L->c[k].kn * un * sqrt(un) : 0;
-            g[s0 + k] = fabs(y[6 * L->nb + k]) - cap;
+            g[s0 + k] = fabs(y[6 * L->nb + k]) - layer_cap(L->tan_phi, L->c[k].kn, un);
         }
     }
     return 0;

@@ -4,21 +4,22 @@
 # physics fixes without a reference code (docs/layer.md, "Invariances"):
 #  1 mirror x -> W - x with the impact point (alpha 0): every outcome, ledger
 #    and ring term the same, the block's x mirrored and v_x of opposite sign
-#    in ledger.csv, the crowns' peak times the same (fast and exact;
-#    measured 4e-9 relative, on the ledger's small terms; e_n to 1e-13);
+#    in ledger.csv, the crowns' peak times the same (fast to 1e-7, exact to
+#    1e-8; measured 1.4e-12 fast, 1.3e-9 exact);
 #  2 translation with the walls removed (--remove-walls; the sample moved by
 #    (c_x, c_y), the box widened by 2 c_x so the impact point keeps its place
-#    about the centre): the same outcome (measured 5e-8 at (5, 7) m);
+#    about the centre): the same outcome (fast to 1e-6, exact to 1e-8;
+#    measured 3e-12 fast, 6e-10 exact at (5, 7) m);
 #  3 dimensional scaling: sphere masses (m ~ L^3, F ~ G L^2), lengths x lambda
 #    (sample, x, gap, skin), V_i, G, rho, nu, phi kept, g / lambda: times x
 #    lambda (dt, dt-out, t-max given scaled), e_n, e, alpha_r and the
 #    relative losses the same, penetration x lambda, energies x lambda^3;
 #    disc masses (unit thickness, m ~ L^2): lengths x lambda, V_i and times x
 #    sqrt(lambda), g kept, energies x lambda^2. lambda = 4 (exact in binary),
-#    1e-3 and 1000. Fast mode to 1e-8 (measured 8e-15 at 4, 4e-10 at 1e-3 and
-#    1000); exact mode (rk4, its step scaled) to 2e-5 on the outcome and the
-#    ledger terms over A (measured 4e-6 or less: the exact mode's ledger
-#    quadrature depends on the order of located events, which rounding moves);
+#    1e-3 and 1000. Fast mode to 1e-8 (measured 8e-16 at 4, 1.3e-11 at 1e-3
+#    and 1000); exact mode (rk4, its step scaled) to 1e-8 on the outcome and
+#    the ledger terms over A (measured 2e-11 at 4, 2.7e-10 or less at 1e-3
+#    and 1000);
 #  4 limits: a block 10 m above the layer without gravity, stopped before it
 #    arrives, is undecided in free flight (no verdict, no first contact, no
 #    penetration); a block set down at 1 mm/s (gap 0) gains no energy: what
@@ -30,6 +31,18 @@
 # (1e4 /s x 1 ms beyond RK4's stability bound); at lambda = 4 it moved by
 # 1.7e-4, at 1e-3 by 1.2e-4, and under the disc law the rings' strain by 9e-4
 # (lambda 1000) and 1.5e-2 (1e-3). 8 of the 31 checks fail on that binary.
+# Then the exact mode's books still moved by 2.3e-7 to 8.1e-7 under scaling
+# (mirror 2.9e-8, translation 1.1e-8), and by as much under a change of one
+# ulp of V_i or g: the stick/slip root rounded the Coulomb cap as
+# (tan phi K_n u_n) sqrt(u_n), the right-hand side as tan phi (K_n u_n
+# sqrt(u_n)), and took |F_t| = cap as sliding, so that a located end of
+# sliding (the root finder stops where |F_t| <= its cap) was still sliding for
+# the right-hand side at about half the stops, an ulp above its cap, and the
+# next RK4 step's first stage booked the sliding branch's dissipation
+# (1.2e4 W x dt / 6 = 6e-3 J, 8e-8 of A, in one such step). With one rounding
+# (layer_cap) and |F_t| = cap sticking, 7 of the 24 checks fail on that binary
+# (the 5 exact scalings, the exact mirror at x = -0.6 and the exact
+# translation by (5, 7) m).
 set -u
 GW=$1
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
@@ -163,9 +176,10 @@ for mode in ([], ["--exact"]):
         dx = max(abs(float(p["block_x"]) + float(q["block_x"]) - W) for p, q in zip(sa, sb))
         dv = max(abs(float(p["block_vx"]) + float(q["block_vx"])) for p, q in zip(sa, sb))
         # ledger.csv holds 9 significant digits: the series to 1e-8 of W and of the speeds
-        ok = w < 1e-7 and len(sa) == len(sb) and dx < 1e-8 * W and dv < 1e-7 * vmax and vmax > 0.1
-        check(name, ok, "worst %.2g at %s; x mirrored to %.2g m, v_x reversed to %.2g m/s over %d samples"
-              % (w, at, dx, dv, len(sa)))
+        tol = 1e-8 if mode else 1e-7
+        ok = w < tol and len(sa) == len(sb) and dx < 1e-8 * W and dv < 1e-7 * vmax and vmax > 0.1
+        check(name, ok, "worst %.2g at %s (tolerance %g); x mirrored to %.2g m, v_x reversed to %.2g m/s "
+              "over %d samples" % (w, at, tol, dx, dv, len(sa)))
 
 # 2 translation, walls removed
 for cx, cy in ((0.37, 0.0), (0.0, 0.3), (5.0, 7.0)):
@@ -178,7 +192,8 @@ for cx, cy in ((0.37, 0.0), (0.0, 0.3), (5.0, 7.0)):
             check(name, False, "a run failed")
             continue
         w, at = worst(a, b, one, a["ledger_end"]["A"])
-        check(name, w < 1e-6, "worst %.2g at %s" % (w, at))
+        tol = 1e-8 if mode else 1e-6
+        check(name, w < tol, "worst %.2g at %s (tolerance %g)" % (w, at, tol))
 
 # 3 scaling
 def scaled(law, fn, lam, mode):
@@ -204,7 +219,7 @@ for law, fn in (("sphere", "sp.txt"), ("disc", "s.txt")):
                 check(name, False, "a run failed")
                 continue
             w, at = worst(a, b, f, a["ledger_end"]["A"])
-            tol = 2e-5 if mode else 1e-8
+            tol = 1e-8
             check(name, w < tol and a["bounced"] is True, "worst %.2g at %s (tolerance %g)" % (w, at, tol))
 
 # 4 limits

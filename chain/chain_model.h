@@ -104,6 +104,13 @@ int chain_steps_check(const gw_solver_type *type, const gw_solver_params *sp, co
  * Studies add them up over their columns (chain_sweep.c). */
 int chain_run_steps(const gw_chain_params *p, const gw_chain_run_opts *o, double *steps, gw_err *err);
 
+/* gw_chain_collide for a run whose t_max falls in bead 1's flight after it left
+ * the wall, its return being the caller's next impact (the drop's first
+ * collision, cut half way through that flight): bead 1 off the wall counts as
+ * done (wall_done, the warnings) whatever the sign of its velocity, which at
+ * the flight's midpoint is zero but for the integration's error. */
+int chain_collide_flight_cut(const gw_chain *c, const gw_chain_run_opts *o, gw_chain_result *r, gw_err *err);
+
 /* The column's time scales for its expected length (chain_collide.c): tc the
  * largest bead-to-bead T_c = (m/k)^(2/5) v^(-1/5) over the contacts, each with
  * the heavier of its two beads, and tau1 the wall contact time (F.2) of the

@@ -514,7 +514,8 @@ int gw_layer_impact(const gw_layer_sample *smp, const gw_layer_params *lp0,
     double t_open = fc->t_open, ed_open = fc->ed_open, kb_open = fc->kb_open;
     /* undecided (NaN) when fewer than three step ends fell in the contact, so
      * that its smallest block energy is not bracketed */
-    double t_min = fc->t_min, kb_min = fc->kb_min, ed_min = fc->ed_min, edb_min = fc->edb_min;
+    double t_min, kb_min, ed_min, edb_min;
+    layer_watch_first_contact_min(L, &t_min, &kb_min, &ed_min, &edb_min);
     if (fc->n_touch < 3)
         t_min = kb_min = ed_min = edb_min = NAN;
     res->t_first_contact = t_min;

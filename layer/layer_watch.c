@@ -56,7 +56,7 @@ void layer_watch_first_contact(gw_layer *L, int target)
 {
     L->fc = (layer_first_contact){.target = target, .kb_min = INFINITY, .t_min = NAN, .ed_min = NAN,
                                   .edb_min = NAN, .t_open = NAN, .ed_open = NAN, .kb_open = NAN,
-                                  .t_last = NAN};
+                                  .t_last = NAN, .lo = {NAN}, .hi = {NAN}};
 }
 
 /* The block's kinetic energy (translation and rotation) in state y, J. */
@@ -85,14 +85,28 @@ static void first_contact(gw_layer *L, double t, const double *y)
     const double *tail = y + 6 * L->nb + L->nc, ed = tail[0];
     if (ov > 0) {
         const double kb = block_kinetic(L, y);
+        const double edb = L->reg_n > 0 ? tail[2 + 2 * (L->reg_n + 1)] : NAN;
         f->n_touch++;
         if (kb < f->kb_min) {
+            /* the evaluation before it in time brackets the new smallest value
+             * from below; the one after is still to come */
+            if (f->n_touch > 1 && f->t_last < t)
+                f->lo[0] = f->t_last, f->lo[1] = f->kb_last, f->lo[2] = f->ed_last, f->lo[3] = f->edb_last;
+            else
+                f->lo[0] = NAN;
+            f->hi[0] = NAN;
             f->kb_min = kb;
             f->t_min = t;
             f->ed_min = ed;
-            f->edb_min = L->reg_n > 0 ? tail[2 + 2 * (L->reg_n + 1)] : NAN;
+            f->edb_min = edb;
+        } else if (isnan(f->hi[0]) && t > f->t_min) {
+            f->hi[0] = t, f->hi[1] = kb, f->hi[2] = ed, f->hi[3] = edb;
+        } else if (t > f->t_min && t < f->hi[0]) {
+            f->hi[0] = t, f->hi[1] = kb, f->hi[2] = ed, f->hi[3] = edb;
+        } else if (t < f->t_min && (isnan(f->lo[0]) || t > f->lo[0])) {
+            f->lo[0] = t, f->lo[1] = kb, f->lo[2] = ed, f->lo[3] = edb;
         }
-        f->t_last = t, f->ov_last = ov, f->ed_last = ed, f->kb_last = kb;
+        f->t_last = t, f->ov_last = ov, f->ed_last = ed, f->kb_last = kb, f->edb_last = edb;
     } else if (f->n_touch > 0 && t > f->t_last) {
         /* opened between the last evaluation that saw it overlapped and this one */
         const double a = f->ov_last / (f->ov_last - ov);
@@ -100,6 +114,41 @@ static void first_contact(gw_layer *L, double t, const double *y)
         f->ed_open = f->ed_last + a * (ed - f->ed_last);
         f->kb_open = f->kb_last + a * (block_kinetic(L, y) - f->kb_last);
     }
+}
+
+/* The quadratic through (-1, v[0]), (0, v[1]), (r, v[2]) at u. */
+static double quad_at(double r, const double *v, double u)
+{
+    const double a = (v[2] - v[1] + r * (v[0] - v[1])) / (r * (1 + r)), b = a - (v[0] - v[1]);
+    return v[1] + u * (b + a * u);
+}
+
+void layer_watch_first_contact_min(const gw_layer *L, double *t, double *kb, double *ed, double *edb)
+{
+    const layer_first_contact *f = &L->fc;
+    *t = f->t_min, *kb = f->kb_min, *ed = f->ed_min, *edb = f->edb_min;
+    if (isnan(f->lo[0]) || isnan(f->hi[0]) || !(f->lo[0] < f->t_min && f->t_min < f->hi[0]))
+        return;
+    /* in units of the step before the smallest value, the evaluations at -1, 0
+     * and r; equal steps (the fast mode's) give r = 1 exactly, so that the result
+     * does not depend on the step ends' times, whose last bits differ where a
+     * sample ends the step (the outcome is the same at every dt-out that is a
+     * multiple of the step, to the last bit) */
+    const double h0 = f->t_min - f->lo[0];
+    double r = (f->hi[0] - f->t_min) / h0;
+    if (fabs(r - 1) < 1e-9)
+        r = 1;
+    const double k[3] = {f->lo[1], f->kb_min, f->hi[1]};
+    const double a = (k[2] - k[1] + r * (k[0] - k[1])) / (r * (1 + r)), b = a - (k[0] - k[1]);
+    if (!(a > 0) || !isfinite(a))
+        return;
+    /* the vertex, between the outer two as k[1] is the smallest */
+    const double u = fmin(fmax(-b / (2 * a), -1.0), r);
+    const double e[3] = {f->lo[2], f->ed_min, f->hi[2]}, eb[3] = {f->lo[3], f->edb_min, f->hi[3]};
+    *t = f->t_min + u * h0;
+    *kb = fmin(quad_at(r, k, u), f->kb_min);
+    *ed = quad_at(r, e, u);
+    *edb = quad_at(r, eb, u);
 }
 
 void layer_watch_roots(gw_layer *L, double t, const double *y, double *g)

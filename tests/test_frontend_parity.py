@@ -1,31 +1,42 @@
 #!/usr/bin/python3
-"""test_frontend_parity.py GRANWAVE [--full] [--verbose] [--only CMD]: one rule in the program and Python.
+"""test_frontend_parity.py GRANWAVE [--full] [--verbose] [--only CMD]: one rule in the three front-ends.
 
-granwave is used through the program (`granwave CMD --flag V`) and the Python
-module (granwave.CMD(keyword=V)); both hand each value to the library's
-parameter table, which holds the rule. For every study of the library's index
-and every number, integer, range, list or choice row of its table that is also
-an option of the command, the same values go to both front-ends:
+granwave is used through the program (`granwave CMD --flag V`), the Python
+module (granwave.CMD(keyword=V)) and the C library (a setup struct from the
+study's _init, its fields set, the study's run); the library's parameter table
+holds the rule. For every study of the library's index and every number,
+integer, range, list or choice row of its table that is also an option of the
+command, the same values go to the front-ends, each over a small baseline run:
 
-  0, -1, 1e-308 (subnormal), 1e308, nan, inf, -inf, 1.5 (integer rows), the
-  row's documented min and max (from the table) and just outside each end,
+  the row's documented min and max (from the table) and just outside each end,
+  0, nan and 1.5 (integer rows); with --full also -1, 1e308, -1e308, 1e-308
+  (subnormal), 3e-308, inf, -inf, 2^63 and -0.5; every name of a choice row
+  and an unknown one.
 
-each over a small baseline run of the command. Asserted:
-  - both refuse (the program: exit 2 with exactly one line on stderr naming
-    --flag; Python: a ValueError or TypeError naming the keyword or the flag),
-    or both accept (the program exits 0, or 1 for a run that failed, and Python
-    returns, or raises GranwaveRunError for the same failure);
+Asserted:
+  - the program and Python both refuse (the program: exit 2 with exactly one
+    line on stderr naming --flag, or naming it as a word in a rule over it and
+    the sample; Python: a ValueError or TypeError naming the keyword), or both
+    accept (the program exits 0, or 1 for a run that failed, and Python returns,
+    or raises GranwaveRunError for the same failure); a refusal over another
+    option (t-samples x n) must be the same in both;
   - where both ran to the end, the results agree: every number of the
     program's --json (top level, and lists of numbers) that the Python result
-    holds under the same name is the same to 1e-12 (the same library call);
-    timings aside.
-A run still going after the time limit on one side counts as accepted; a
-run on one side and a refusal on the other is a disagreement.
+    holds under the same name is the same to 1e-12 (timings aside);
+  - a C caller that writes the value into the setup's field (an index past the
+    names for an unknown choice; NaN is "not given" in a field, so not tried)
+    is refused or runs as Python is (by default where Python refuses; --full:
+    every value), with the same results.
+A run still going after the time limit counts as accepted; where one side
+refused and the other was still going, the other is run to its end.
 
-The Python calls run in a worker process (restarted after a time-out), so a
-long run cannot hang the test. Default: every row with the values outside its
-range and at its ends (about 40 s); --full: every value of the list for every
-row. Exit 0 when every check passes, 1 otherwise.
+The Python and C calls run in a worker process, interrupted by SIGINT at the
+time limit (as Ctrl-C), so a long run cannot hang the test. By default a row
+shared by several studies (the column's material ... guide-viscous, the layer's
+material) is tried in the first that has it with the same range, nan and 1.5 in
+the first row of each study: 460 checks, about 20 s of CPU (2 minutes of wall
+time at a load of 12 on two cores). --full: every row in every study, every
+value, a 20 s limit. Exit 0 when every check passes, 1 otherwise.
 """
 import json
 import math
@@ -48,7 +59,7 @@ VERBOSE = "--verbose" in sys.argv
 ONLY = sys.argv[sys.argv.index("--only") + 1] if "--only" in sys.argv else None
 # seconds a run may take before it counts as running (accepted): a refusal comes
 # before any work, in milliseconds; results are compared for the runs done by then
-TIMEOUT = 20.0 if FULL else 0.5
+TIMEOUT = 20.0 if FULL else 0.4
 LONG_TIMEOUT = 120.0  # where one side refused and the other was still running at TIMEOUT
 TMP = tempfile.mkdtemp(prefix="gw_parity_")
 SAMPLE = os.path.join(TMP, "S.txt")
@@ -117,6 +128,57 @@ def num(v):
     if isinstance(v, (list, tuple)) and v and all(isinstance(x, (int, float)) and not isinstance(x, bool) for x in v):
         return [float(x) for x in v]
     return None
+import ctypes
+from granwave import _core, _lib
+C_TYPES = {_core.DOUBLE: ctypes.c_double, _core.LONG: ctypes.c_long, _core.INT: ctypes.c_int}
+def c_value(p, value):
+    """value as a C caller writes it into the struct field of row p; None where
+    no C value is that one (1.5 into a long)."""
+    if p.type == _core.CHOICE:
+        return p.choices.index(value) if value in p.choices else len(p.choices)  # an index past the names
+    if isinstance(value, list) or isinstance(value, str):
+        return None
+    if p.type == _core.DOUBLE:
+        return float(value)
+    if p.type in (_core.LONG, _core.INT, _core.RANGE):
+        v = float(value)
+        lim = 2 ** 31 if p.type == _core.INT else 2 ** 63
+        return int(v) if v == v and abs(v) < lim and v == int(v) else None
+    return None
+def c_call(func, kwargs, key):
+    """The study as a C caller runs it: the setup from its _init, the other
+    parameters set by name (gw_param_set), the one under test written into its
+    field, then the study's run (which checks the struct, gw_param_check)."""
+    st = granwave._study(func.replace("_", "-") if func != "layer_stats" else "layer-stats")
+    p = st.by_keyword[key]
+    v = c_value(p, kwargs.pop(key))
+    if v is None:
+        return {"kind": "na"}
+    buf = st.setup(kwargs)
+    out = ctypes.create_string_buffer(st.st.fields_size)
+    err = _lib.GwErr()
+    try:
+        addr = ctypes.addressof(buf) + p.offset
+        if p.type == _core.RANGE:
+            (ctypes.c_long * 2).from_address(addr)[:] = [v, v]
+        else:
+            (ctypes.c_int if p.type == _core.CHOICE else C_TYPES[p.type]).from_address(addr).value = v
+        with _core.Interruptible():
+            rc = st.st.run(buf, out, _lib.PROGRESS(), None, ctypes.byref(err))
+        msg = err.msg.decode(errors="replace")
+        if rc == 0:
+            r = _core.read_result(st.fields, ctypes.addressof(out))
+            return {"kind": "ok", "nums": {k: num(x) for k, x in r.items() if num(x) is not None}}
+        if rc in (_core.GW_EINVAL, _core.GW_EFORMAT, _core.GW_EUNSUPPORTED):
+            return {"kind": "refused", "etype": "status %d" % rc, "msg": msg}
+        if rc in (_core.GW_ESOLVER, _core.GW_ELIMIT, _core.GW_EENERGY):
+            return {"kind": "runfail", "msg": msg}
+        if rc == _core.GW_ECANCELED:
+            return {"kind": "running"}
+        return {"kind": "error", "etype": "status %d" % rc, "msg": msg}
+    finally:
+        st.st.free_out(out)
+        st.st.clear(buf)
 def serve():
     while True:
         try:
@@ -129,13 +191,16 @@ def serve():
         fn = getattr(granwave, q["func"])
         try:
             try:
-                r = fn(**q["kwargs"])
-                out = {"kind": "ok", "nums": {k: num(v) for k, v in r.items() if num(v) is not None}}
+                if q.get("c_key"):
+                    out = c_call(q["func"], q["kwargs"], q["c_key"])
+                else:
+                    r = fn(**q["kwargs"])
+                    out = {"kind": "ok", "nums": {k: num(v) for k, v in r.items() if num(v) is not None}}
             except KeyboardInterrupt:  # the driver's time limit: the run was going (accepted)
                 out = {"kind": "running"}
             except granwave.GranwaveRunError as e:
                 out = {"kind": "runfail", "msg": str(e)}
-            except (ValueError, TypeError) as e:
+            except (ValueError, TypeError, granwave.GranwaveUnsupported) as e:  # the program's exit 2
                 out = {"kind": "refused", "etype": type(e).__name__, "msg": str(e)}
             except Exception as e:
                 out = {"kind": "error", "etype": type(e).__name__, "msg": str(e)}
@@ -159,12 +224,13 @@ class Worker:
         if self.p.stdout.readline() != "ready\n":
             raise SystemExit("the Python worker did not start (PYTHONPATH, GRANWAVE_LIB?)")
 
-    def call(self, func, kwargs):
+    def call(self, func, kwargs, c_key=None):
         if self.p is None or self.p.poll() is not None:
             self.start()
-        self.p.stdin.write(json.dumps({"func": func, "kwargs": kwargs}) + "\n")
+        self.p.stdin.write(json.dumps({"func": func, "kwargs": kwargs, "c_key": c_key}) + "\n")
         self.p.stdin.flush()
         r, _, _ = select.select([self.p.stdout], [], [], TIMEOUT)
+        interrupted = not r
         if not r:  # interrupted as Ctrl-C would (the module stops the library's run), else ended
             self.p.send_signal(signal.SIGINT)
             r, _, _ = select.select([self.p.stdout], [], [], 30)
@@ -172,6 +238,9 @@ class Worker:
                 self.stop()
                 return {"kind": "running"}
         line = self.p.stdout.readline()
+        if not line and interrupted and self.p.wait() == -signal.SIGINT:  # ended by the driver's SIGINT
+            self.p = None
+            return {"kind": "running"}
         if not line:  # the interpreter died: a crash in the library
             rc = self.p.wait()
             self.p = None
@@ -214,6 +283,10 @@ def text_of(v):
     return str(v) if isinstance(v, int) else repr(v)
 
 
+GENERIC = set()
+CURRENT = [None]
+
+
 def values(p):
     """The values tried for row p: (value, why). Numbers as Python numbers
     (the program gets their repr)."""
@@ -222,7 +295,7 @@ def values(p):
     out = []
 
     def add(v, why):
-        if isinstance(v, float) and integer and math.isfinite(v) and v == int(v) and abs(v) < 2 ** 62:
+        if isinstance(v, float) and integer and math.isfinite(v) and v == int(v) and abs(v) < 2 ** 63:
             v = int(v)
         if all(not (type(v) is type(w) and (v == w or (v != v and w != w))) for w, _ in out):
             out.append((v, why))
@@ -236,10 +309,15 @@ def values(p):
             add(end + sign, "just outside " + name)
         else:
             add(end + sign * max(abs(end) * 1e-9, 1e-300), "just outside " + name)
-    add(float("nan"), "nan")
-    if integer:
-        add(1.5, "not an integer")
     add(0, "zero")
+    # nan and 1.5 go through the one number parser of every row: by default in
+    # the first row of each kind of a study (--full: every row)
+    if FULL or ("nan", CURRENT[0]) not in GENERIC:
+        GENERIC.add(("nan", CURRENT[0]))
+        add(float("nan"), "nan")
+    if integer and (FULL or ("int", CURRENT[0]) not in GENERIC):
+        GENERIC.add(("int", CURRENT[0]))
+        add(1.5, "not an integer")
     if FULL:
         add(-1, "negative")
         add(1e308, "huge")
@@ -451,12 +529,62 @@ def check(cmd, p, value, why, types):
                 k = diff[0]
                 problems.append("results differ in %d of %d (%s; %s: program %s, python %s)" % (
                     len(diff), len(common), ", ".join(diff), k, str(c["nums"][k])[:60], str(py["nums"][k])[:60]))
+    # the C caller: by default where Python refuses (a struct that runs there is
+    # a finding, found within TIMEOUT); --full: every value
+    if not problems and (not isinstance(value, str) or p["type"] == "choice") and (FULL or py["kind"] == "refused"):
+        problems += c_check(cmd, p, kw, py)
     if problems:
         fails.append((label, problems))
         print("FAIL %s\n     %s" % (label, "\n     ".join(problems)), flush=True)
     elif VERBOSE:
         print("ok   %-60s program %-8s %5.2f s python %-8s %5.2f s" % (label, c["kind"], t2 - t0, py["kind"], t1 - t0),
               flush=True)
+
+
+NC = [0]
+
+
+def c_check(cmd, p, kw, py):
+    """The third front-end: a C caller that writes the value into the setup's
+    field and runs the study (the library's gw_param_check), against Python's
+    verdict (gw_param_set on the text)."""
+    key = p["keyword"]
+    v = kw[key]
+    if isinstance(v, float) and v != v and p["default"] is None and p["type"] == "double":
+        return []  # NaN in a field is "not given" to the library (gw_param.h), the text "nan" is refused
+    c = WORK.call(cmd.replace("-", "_"), dict(kw), c_key=key)
+    if c["kind"] == "na":
+        return []
+    NC[0] += 1
+    if {c["kind"], py["kind"]} == {"running", "refused"}:
+        global TIMEOUT
+        short, TIMEOUT = TIMEOUT, LONG_TIMEOUT
+        try:
+            if c["kind"] == "running":
+                c = WORK.call(cmd.replace("-", "_"), dict(kw), c_key=key)
+            else:
+                py = WORK.call(cmd.replace("-", "_"), dict(kw))
+        finally:
+            TIMEOUT = short
+    accepted = ("ok", "runfail", "running")
+    if c["kind"] == "error":
+        return ["C caller: %s %s" % (c.get("etype"), c["msg"])]
+    if c["kind"] == "refused" and py["kind"] in accepted:
+        return ["a C caller's struct is refused (%s) where Python's keyword runs" % c["msg"]]
+    if py["kind"] == "refused" and c["kind"] in accepted:
+        return ["a C caller's struct runs (%s) where Python refuses (%s)" % (c["kind"], py["msg"])]
+    same_refusal = c["kind"] == "refused" and \
+        reason(py["msg"], cmd, p["name"], key).replace("_", "-") == c["msg"].replace("_", "-")
+    if c["kind"] == "refused" and not (names(c["msg"], p["name"]) or names(c["msg"], key) or same_refusal):
+        return ["the C caller's refusal does not name %s: %s" % (p["name"], c["msg"])]
+    if {c["kind"], py["kind"]} == {"ok", "runfail"}:
+        return ["the C caller %s, Python %s" % (c["kind"], py["kind"])]
+    if c["kind"] == "ok" and py["kind"] == "ok":
+        common = [k for k in c["nums"] if k in py["nums"] and not timing(k)]
+        diff = [k for k in common if not same(c["nums"][k], py["nums"][k])]
+        if diff:
+            return ["C caller and Python differ in %s" % ", ".join(diff)]
+    return []
 
 
 def make_fixtures():
@@ -504,6 +632,7 @@ def main():
         if ONLY and cmd != ONLY:
             continue
         flags = help_options(cmd)
+        CURRENT[0] = cmd
         for p in rows:
             p["type"] = TYPES.get(p["type"], p["type"])
         types = {p["name"]: p["type"] for p in rows}
@@ -537,8 +666,8 @@ def main():
     for w in WORDING if VERBOSE else ():
         print("wording: " + w)
     print("%d refusals alike in both but worded differently (--verbose lists them)" % len(WORDING))
-    print("%d checks (%d with results compared), %d fail, %.0f s" % (nchecks, ncompared, len(fails),
-                                                                     time.time() - t_start))
+    print("%d checks (%d with results compared; %d also as a C caller), %d fail, %.0f s" % (
+        nchecks, ncompared, NC[0], len(fails), time.time() - t_start))
     shutil.rmtree(TMP, ignore_errors=True)
     return 1 if fails else 0
 

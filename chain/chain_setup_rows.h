@@ -73,7 +73,10 @@ _Static_assert(GW_SHEET_FITTED == 0 && GW_SHEET_HERTZ == 1 && GW_SHEET_LAYER == 
         "bead-bead Hertz coefficient, N/m^1.5, in [1e3, 1e14] [from material, F.12]"), \
     ROW("kwall", GW_PARAM_DOUBLE, kwall, "N/m^1.5", GW_CHAIN_K_MIN, GW_CHAIN_K_MAX, 0, NULL, "K", \
         "bead-wall Hertz coefficient, N/m^1.5, in [1e3, 1e14] [from materials, F.3]"), \
-    ROW("mass", GW_PARAM_DOUBLE, mass, "kg", 0, 1e3, 1, NULL, "M", "bead mass, kg, in (0, 1e3] [4/3 pi R^3 rho]"),
+    /* from the lightest bead the radius row and the materials give (pmma at 1e-6 m, \
+     * 4.9e-15 kg): below, (0, 1e3] took 3e-308 kg, whose contact (1e-126 s) left a \
+     * step of 0 and a refusal naming dt-max, not mass (test_frontend_parity) */ \
+    ROW("mass", GW_PARAM_DOUBLE, mass, "kg", 1e-15, 1e3, 0, NULL, "M", "bead mass, kg, in [1e-15, 1e3] [4/3 pi R^3 rho]"),
 
 /* damping .. max-steps */
 #define GW_CHAIN_SOLVER_ROWS GW_CHAIN_SOLVER_ROWS_HELP(GW_CHAIN_SOLVER_HELP, GW_CHAIN_DT_HELP)

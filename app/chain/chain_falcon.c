@@ -159,27 +159,11 @@ static int write_traces(const falcon *f, const char *dir, int argc, char **argv,
     return GW_OK;
 }
 
-/* The solver options against --accuracy, checked before --out is made (the
- * library applies the same rule from the rows given): a solver option given
- * runs the solver as given, and with --accuracy too is refused;
- * --accuracy where the step study does not cover the column is refused (the
- * library's rule, gw_chain_rk4_study_covers). The library then picks RK4 by
- * the target (gw_chain_rk4_study_apply): dt = T_c/M, sampled every tau_1/10 of
- * the fastest impact, the traces every tau_1/50. */
-static int falcon_check_solver(const falcon *f, const gw_opt *opts, gw_err *err)
-{
-    const char *names[] = {"solver", "method", "rtol", "atol", "dt"};
-    int any = 0;
-    for (size_t i = 0; i < sizeof names / sizeof names[0]; i++)
-        any |= gw_cli_find(opts, names[i])->seen;
-    if (any && gw_cli_find(opts, "accuracy")->seen)
-        return gw_err_set(err, GW_EINVAL, "falcon --accuracy: give either --accuracy or the solver options");
-    if (!any && !gw_chain_rk4_study_covers(&f->c.params, f->n_hi) && gw_cli_find(opts, "accuracy")->seen)
-        return gw_err_set(err, GW_EINVAL, "falcon --accuracy: the step study covers undamped columns "
-                                          "of N <= 40 without gravity on a Hertz wall, without sensor "
-                                          "body or guide friction; give --solver instead");
-    return GW_OK;
-}
+/* --accuracy against the solver options is the library's rule (pick_solver in
+ * chain_falcon_study.c, run before any collision; a refusal takes back what
+ * --out made): the command kept a copy of it, and of the row's range, that
+ * refused --accuracy 0 ("the solver options as given"), which the library and
+ * Python take (test_frontend_parity). */
 
 static const char *falcon_summary =
     "The rigid-wall study of Falcon et al. (1998): one collision for every N in\n"
@@ -197,7 +181,7 @@ int gw_cmd_falcon(int argc, char **argv)
     chain_cli_options(&f.c, opts);
     chain_cli_out_help(opts, "write falcon_runs.csv, falcon_final_velocities.csv, falcon_summary.json, report.md and the traces of N = 7, 15, 30 (wall force; the beads for N = 7; and .h5 with HDF5) into DIR");
     const char *vlist = "0.3", *hlist = "1.9,2.9,3.1,5.1", *nrange = "1:40";
-    double accuracy = 1e-6;
+    double accuracy; /* given or not (NaN): the setup's row, set by gw_cli_study_setup */
     long jobs = 0;
     int quiet = 0;
     int k = CHAIN_CLI_NOPTS;
@@ -207,16 +191,16 @@ int gw_cmd_falcon(int argc, char **argv)
                          .help = "drop heights, mm, v = sqrt(2 g h), g the gravity or 9.81 when off ['none' to skip] [1.9,2.9,3.1,5.1]"};
     opts[k++] = (gw_opt){.name = "n", .kind = GW_OPT_STRING, .dest = &nrange, .metavar = "A:B",
                          .help = "column sizes [1:40]"};
-    opts[k++] = (gw_opt){.name = "accuracy", .kind = GW_OPT_DOUBLE, .dest = &accuracy, .metavar = "A",
-                         .help = "relative accuracy of F_max and tau_N when no solver option is given: "
-                                 "RK4, dt = T_c/M with M from a measured convergence study [1e-6]",
-                         .lo = 1e-9, .hi = 1e-2};
+    const gw_param *rows = gw_chain_falcon_setup_params(); /* falcon's own rows: accuracy; solver, dt, dt-out defaults */
+    /* --accuracy is the table's row: its range [0, 1e-2] (0: the solver options
+     * as given; (0, 1e-9) refused by the library) and help, checked by the row */
+    if (gw_cli_opt_param(gw_param_find(rows, "accuracy"), &accuracy, &opts[k++], NULL) != GW_OK)
+        return chain_cli_fail("falcon --accuracy: not an option row (a bug)");
     chain_cli_sweep_opts(opts, &k, &jobs, &quiet);
     opts[k] = (gw_opt){0};
     /* the shared rows state chain's defaults; falcon's are those of --accuracy
      * (the library's pick of the solver): its help said cvode, T_c/400 and
      * tau_1/200 while the runs used rk4 at T_c/37 sampled every tau_1/10 */
-    const gw_param *rows = gw_chain_falcon_setup_params(); /* falcon's own solver, dt, dt-out defaults */
     for (const char *const *nm = (const char *const[]){"solver", "dt", "dt-out", NULL}; *nm; nm++)
         chain_cli_opt_help(opts, *nm, gw_param_find(rows, *nm)->help);
     int done = chain_cli_parse("falcon", "granwave falcon [--out DIR] [options]", falcon_summary, opts, argc, argv);
@@ -265,10 +249,6 @@ int gw_cmd_falcon(int argc, char **argv)
     f.c.params.v_imp = v[0];
     if ((rc0 = chain_cli_resolve(&f.c, opts, "falcon", &err)) != GW_OK) {
         code = chain_cli_fail_rc(rc0, err.msg);
-        goto out;
-    }
-    if ((rc0 = falcon_check_solver(&f, opts, &err)) != GW_OK) {
-        code = chain_cli_fail(err.msg);
         goto out;
     }
     char made[4096] = ""; /* what --out this run creates, taken back on a refusal */

@@ -25,7 +25,7 @@ def test_accuracy_with_a_solver_keyword_refused(solver):
         flag, value = next(iter(solver.items()))
         p = subprocess.run([PROGRAM, "falcon", "--n", "2:3", "--heights", "none", "--quiet", "--accuracy", "1e-6",
                             "--" + flag, str(value)], capture_output=True, text=True, timeout=60)
-        assert p.returncode == 2 and "give either --accuracy or the solver options" in p.stderr
+        assert p.returncode == 2 and "falcon --accuracy: give either accuracy or the solver options" in p.stderr
 
 
 def test_default_accuracy_given_on_a_damped_column_refused():

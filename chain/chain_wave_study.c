@@ -588,6 +588,12 @@ int gw_chain_softwall_run(const gw_chain_softwall_setup *s, gw_progress_fn progr
     if (s->sheets && (!isnan(s->col.kwall) || s->col.sheet >= 0))
         return gw_err_set(err, GW_EINVAL, "%s: has no effect with sheets (each sheet of Table 2 is its own wall)",
                           s->col.sheet >= 0 ? "sheet" : "kwall");
+    /* the wall material, given at steel too (an optional row), where the wall
+     * is a stiffness (kwall, 1e9 by default) or each sheet of Table 2 */
+    if (gw_param_given(gw_param_find(sw_params, "wall-material"), s) && (s->sheets || s->col.sheet < 0))
+        return gw_err_set(err, GW_EINVAL, "wall-material: has no effect %s",
+                          s->sheets ? "with sheets (each sheet of Table 2 is its own wall)"
+                                    : "(the wall is kwall, default 1e9 N/m^1.5, or sheets)");
     long a = s->n[0], b = s->n[1];
     if (b - a < 2)
         return gw_err_set(err, GW_EINVAL, "n: need at least 3 column sizes");

@@ -79,18 +79,20 @@ int gw_cmd_softwall(int argc, char **argv)
         return chain_cli_fail("softwall --radii: per-bead radii need a fixed N (use granwave chain)");
     gw_err err = {{0}};
     c.sheets_mode = use_sheets;
-    /* every wall option is ignored with --sheets (each sheet has its fitted K_eff),
-     * and the wall material is ignored when the wall is a stiffness */
-    static const char *const wall_opts[] = {"kwall", "sheet", "wall-material"};
-    for (int i = 0; i < 3; i++)
-        if (gw_cli_find(opts, wall_opts[i])->seen && (use_sheets || i == 2)) {
+    /* every wall option is ignored with --sheets (each sheet has its fitted
+     * K_eff); the wall material where the wall is a stiffness is the library's
+     * rule (gw_chain_softwall_run), as Python meets it */
+    static const char *const wall_opts[] = {"kwall", "sheet"};
+    for (int i = 0; i < 2; i++)
+        if (gw_cli_find(opts, wall_opts[i])->seen && use_sheets) {
             char msg[160];
-            snprintf(msg, sizeof msg, "softwall --%s: has no effect %s", wall_opts[i],
-                     use_sheets ? "with --sheets (each sheet of Table 2 is its own wall)"
-                                : "(the wall is --kwall, default 1e9 N/m^1.5, or --sheets)");
+            snprintf(msg, sizeof msg, "softwall --%s: has no effect with --sheets (each sheet of Table 2 is its own wall)",
+                     wall_opts[i]);
             return chain_cli_fail(msg);
         }
-    if (!gw_cli_find(opts, "kwall")->seen && !use_sheets && !c.sheet) /* (--sheet: its own wall) */
+    /* (--sheet: its own wall; --wall-material there: the library refuses it,
+     * naming the default wall, not a kwall the user did not give) */
+    if (!gw_cli_find(opts, "kwall")->seen && !use_sheets && !c.sheet && !gw_cli_find(opts, "wall-material")->seen)
         c.kwall = 1e9, ((gw_opt *)gw_cli_find(opts, "kwall"))->seen = 1;
     long a, b;
     if (gw_parse_int_range(nrange, "softwall --n", 1, 100000, &a, &b, &err) != GW_OK)

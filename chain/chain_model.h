@@ -61,7 +61,7 @@ double chain_force_rate(const gw_chain *c, double t, const double *y);
 void chain_general_energy(const gw_chain *c, const double *y, gw_chain_energy *e);
 
 /* cvode and arkode follow a sensor body's oscillation (omega = sqrt(k_s/M)) at 2
- * to 9 steps a radian (measured): 9 omega t_len steps, the most, bounded at 1e8
+ * to 9 steps a radian (measured): at least 2 omega t_len steps, bounded at 1e8
  * before the run; GW_EINVAL naming sensor-stiffness. rk4: GW_OK (its step is
  * chain_steps_check's). */
 int chain_sensor_steps_check(const gw_chain_params *p, const gw_solver_type *type, double t_len, const char *over,
@@ -100,7 +100,7 @@ int chain_steps_check(const gw_solver_type *type, const gw_solver_params *sp, co
 /* The steps a run of column p is expected to take over its collision, from the
  * same plan as gw_chain_run_check (GW_EINVAL and its message when that refuses):
  * the collision's expected length over the RK4 step, or over cvode's and
- * arkode's largest step and 9 a radian of a sensor body's oscillation.
+ * arkode's largest step and at least 2 a radian of a sensor body's oscillation.
  * Studies add them up over their columns (chain_sweep.c). */
 int chain_run_steps(const gw_chain_params *p, const gw_chain_run_opts *o, double *steps, gw_err *err);
 

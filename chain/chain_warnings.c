@@ -12,10 +12,28 @@
 #include "gw_chain.h"
 #include "gw_chain_study.h"
 
+/* Beyond an overlap of one radius the beads would have passed through each
+ * other's centres: the numbers are those of the Hertz law outside its range
+ * (chain --vimp 1000 --mass 1e3 --k 1e3 --kwall 1e3 pressed 281 m into the
+ * wall with a 4 mm bead and said nothing). */
+static int overlap_warning(const gw_chain_result *r, char **list)
+{
+    if (!(r->overlap_max_rel > 1))
+        return GW_OK;
+    return gw_warnings_add(list,
+                           "the largest contact overlap was %.3g bead radii: the Hertz law holds for overlaps much "
+                           "smaller than the radius, and these results are the law's far outside its range (a lower "
+                           "--vimp or --gravity, or stiffer or lighter beads)",
+                           r->overlap_max_rel);
+}
+
 int gw_chain_result_warnings(const gw_chain_result *r, char **list)
 {
-    if (!r || r->converged)
+    if (!r)
         return GW_OK;
+    int rc = overlap_warning(r, list);
+    if (rc != GW_OK || r->converged)
+        return rc;
     return gw_warnings_add(list,
                            "the collision had not ended at t_max = %.6g s (%s): %s are those at t_max; raise --t-max",
                            r->t_end, r->wall_done ? "the column's own contacts still closed or closing" :
@@ -54,8 +72,11 @@ int gw_chain_dispersion_warnings(const gw_chain_disp_result *r, char **list)
 
 int gw_chain_drop_result_warnings(const gw_chain_drop_result *r, char **list)
 {
-    if (!r || !(r->first_cut || r->open_at_t_max))
+    if (!r)
         return GW_OK;
+    int rc = overlap_warning(&r->first, list); /* the first collision, the drop's hardest */
+    if (rc != GW_OK || !(r->first_cut || r->open_at_t_max))
+        return rc;
     /* NaN in the result, null in the program's JSON: "NaN" is what the result holds for every caller */
     return gw_warnings_add(list, "the run was cut at t_max = %.6g s: %s%s%s; raise --t-max", r->t_end,
                            r->first_cut ? "the first collision had not ended (its F_max, tau_N and restitution are "

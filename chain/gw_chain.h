@@ -407,6 +407,11 @@ typedef struct gw_chain_result {
      * t_max and dt_out in s; dt the RK4 step or the initial step asked of
      * cvode/arkode (0 = their own choice), s; dt_max the largest step, s. */
     double run_t_max, run_dt_out, run_dt, run_dt_max;
+    /* The largest overlap of any contact (the wall's elastic one included) at
+     * the samples and events, over the bead radius (gw_chain_params.radius):
+     * the Hertz law assumes it much below 1, and above 1 the results are the
+     * law's outside its range (gw_chain_result_warnings says so). */
+    double overlap_max_rel;
 } gw_chain_result;
 
 /* Run one collision from the initial state until every contact is open and every
@@ -416,11 +421,12 @@ typedef struct gw_chain_result {
 int gw_chain_collide(const gw_chain *c, const gw_chain_run_opts *o,
                      gw_chain_result *r, gw_err *err);
 void gw_chain_result_free(gw_chain_result *r);
-/* The warning of a collision that had not ended at t_max (converged 0: which
- * results are those at t_max, and why: wall_pending, or the column's own
- * contacts), appended to *list (gw_warnings_add, gw_common.h); nothing when
- * converged. The text `granwave chain` prints and Python issues. GW_OK or
- * GW_ENOMEM. */
+/* The warnings of a collision, appended to *list (gw_warnings_add,
+ * gw_common.h): one that had not ended at t_max (converged 0: which results
+ * are those at t_max, and why: wall_pending, or the column's own contacts),
+ * and one whose largest overlap exceeded the bead radius (overlap_max_rel > 1:
+ * the Hertz law used outside its range); nothing otherwise. The text
+ * `granwave chain` prints and Python issues. GW_OK or GW_ENOMEM. */
 int gw_chain_result_warnings(const gw_chain_result *r, char **list);
 
 /* Characteristic time (m/k)^(2/5) v^(-1/5) of the chain, s. */

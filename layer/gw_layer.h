@@ -39,6 +39,15 @@ enum { GW_LAYER_CLUMP_MASS_SUM = 0, GW_LAYER_CLUMP_MASS_UNION = 1 };
 enum { GW_LAYER_WALL_LEFT = 1, GW_LAYER_WALL_RIGHT = 2, GW_LAYER_WALL_BOTTOM = 4,
        GW_LAYER_WALLS_ALL = 7 };
 
+/* The smallest contact-list skin, m. The rebuild test compares squared
+ * distances with (skin/2)^2 less a margin (layer_model.c): below about 1e-154 m
+ * that square underflows to 0, no particle ever crosses it, the list is never
+ * rebuilt, and the discs fell through each other (layer-make --skin 1e-300: a
+ * NaN porosity blamed on "contacts too soft for their load"). A femtometre is
+ * far below any disc (R_m >= 1e-5 m) and far above the underflow; a run whose
+ * particles outrun a small skin is refused by the rebuild's own check. */
+#define GW_LAYER_SKIN_MIN 1e-15
+
 typedef struct gw_layer_params {
     double shear_modulus; /* G, Pa [40e9] */
     double poisson;       /* nu, in [0, 0.5) [0.25] */
@@ -56,7 +65,8 @@ typedef struct gw_layer_params {
                              (disc mass law only) [sum] */
     double damping;       /* Hunt-Crossley normal damping alpha, s/m [0 = none, as
                              the paper]; used to settle pluviated samples */
-    double skin;          /* Verlet skin of the contact list, m [0.1] */
+    double skin;          /* Verlet skin of the contact list, m, in
+                             [GW_LAYER_SKIN_MIN, 1e6] [0.1] */
     int no_events;        /* 1: do not stop at contact openings/closings and
                              stick/slip switches: faster, lower order; used for
                              pluviation. With rk4 and no block watch the list

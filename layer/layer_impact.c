@@ -27,6 +27,7 @@
  * layer_setup.c), reading only.
  * Units: SI.
  */
+#include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -403,8 +404,17 @@ int gw_layer_impact(const gw_layer_sample *smp, const gw_layer_params *lp0,
      * dissipated_first_contact moved by 5 % between --dt-out 1e-5 and 1e-4 s on
      * the same trajectory, and a contact shorter than three samples had none. */
     gw_solver_params spu = *sp;
-    if (type == gw_solver_verlet && !(spu.dt > 0))
+    if (type == gw_solver_verlet && !(spu.dt > 0)) {
         spu.dt = gw_layer_impact_dem_dt(smp, &lp, ip);
+        /* a block so small that its mass, and with it the shortest contact
+         * time, underflows (--rb-rm 1e-300): the step came out 0 and the
+         * solver's set-up said "verlet: the fixed step dt must be set" */
+        if (!(spu.dt >= DBL_MIN)) {
+            gw_layer_free(L);
+            return gw_err_set(err, GW_EINVAL, "rb-rm: a block of %g R_m makes the automatic step (the shortest "
+                              "contact time / 100) %g s: its mass underflows; a larger block", ip->rb_rm, spu.dt);
+        }
+    }
     res->dt = type == gw_solver_verlet || type == gw_solver_rk4 ? spu.dt : 0;
     rc = gw_layer_start(L, type, &spu, err);
     if (rc != GW_OK) {

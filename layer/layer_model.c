@@ -96,7 +96,7 @@ int gw_layer_params_validate(const gw_layer_params *p, gw_err *err)
         (rc = gw_check_range(p->gravity, "gravity (m/s^2)", 0, 1e4, err)) != GW_OK ||
         (rc = gw_check_positive(p->width, "box width (m)", err)) != GW_OK ||
         (rc = gw_check_range(p->damping, "normal damping alpha (s/m)", 0, 1e3, err)) != GW_OK ||
-        (rc = gw_check_positive(p->skin, "contact-list skin (m)", err)) != GW_OK)
+        (rc = gw_check_range(p->skin, "contact-list skin (m)", GW_LAYER_SKIN_MIN, 1e6, err)) != GW_OK)
         return rc;
     if (!(p->friction_deg >= 0 && p->friction_deg < 90))
         return gw_err_set(err, GW_EINVAL, "friction angle phi: %g deg is outside [0, 90)",

@@ -35,7 +35,7 @@ _Static_assert(GW_LAYER_CLUMP_MASS_SUM == 0 && GW_LAYER_CLUMP_MASS_UNION == 1, "
     ROW("poisson", GW_PARAM_DOUBLE, poisson, "", 0, 0.499999, 0, 0, "0.25", "NU", "Poisson ratio [0.25]"), \
     ROW("density", GW_PARAM_DOUBLE, density, "kg/m^3", 1e-6, 1e6, 0, 0, "2650", "RHO", "particle density, kg/m^3 [2650]"), \
     ROW("gravity", GW_PARAM_DOUBLE, gravity, "m/s^2", 0, 1e4, 0, 0, "9.81", "G", "gravity, m/s^2 [9.81]"), \
-    ROW("skin", GW_PARAM_DOUBLE, skin, "m", 0, 1e6, 1, 0, "0.1", "S", "contact-list skin, m in (0, 1e6] [0.1]"), \
+    ROW("skin", GW_PARAM_DOUBLE, skin, "m", GW_LAYER_SKIN_MIN, 1e6, 0, 0, "0.1", "S", "contact-list skin, m in [1e-15, 1e6] [0.1]"), \
     CHOICE("mass-law", mass_law, "disc,sphere", LAW, "LAW", "disc (unit thickness) or sphere " WLAW), \
     GW_PARAM_OPT_CHOICE_ROW("clump-mass", OFF(clump_mass), "sum,union", CLUMP, "HOW", \
            "clump mass: sum (members added, overlaps twice, as PFC2D) or union (density x the union's area; " \

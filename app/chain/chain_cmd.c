@@ -197,7 +197,7 @@ int gw_cmd_chain(int argc, char **argv)
             cJSON_Delete(o);
             free(hdr);
         }
-        if (code == 0 && !r.converged) { /* results at t_max, not final: said, and recorded (JSON converged false) */
+        if (code == 0) { /* results at t_max, not final, or an overlap beyond the radius: the library says which */
             char *w = NULL; /* the library's text (out of memory for it: no line) */
             (void)gw_chain_result_warnings(&r, &w);
             gw_cli_warnings("chain", w);

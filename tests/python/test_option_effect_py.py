@@ -44,8 +44,11 @@ def test_dispersion_steps_per_sample_refused_with_adaptive_solvers(program):
                             "--steps-per-sample", "8", "--json"], capture_output=True, text=True)
         assert p.returncode == 2 and p.stdout == "" and len(p.stderr.splitlines()) == 1, p.stderr
         assert "--steps-per-sample: has no effect with the %s solver" % solver in p.stderr
-    # the default's value is no change; rk4 takes it and its step is another
-    granwave.dispersion(n=32, t_samples=128, solver="cvode", steps_per_sample=16)
+    # the default's value given is refused alike (an optional row: given is told
+    # from not given); rk4 takes it and its step is another
+    with pytest.raises(granwave.GranwaveValueError, match=r"steps_per_sample: has no effect with the cvode"):
+        granwave.dispersion(n=32, t_samples=128, solver="cvode", steps_per_sample=16)
+    granwave.dispersion(n=32, t_samples=128, solver="cvode")
     a = granwave.dispersion(n=32, t_samples=128)
     b = granwave.dispersion(n=32, t_samples=128, steps_per_sample=8)
     assert b["dt_step"] == pytest.approx(2 * a["dt_step"], rel=1e-15)

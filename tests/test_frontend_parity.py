@@ -50,6 +50,8 @@ import sys
 import tempfile
 import time
 
+import synthetic_tables  # the script's own folder is on sys.path
+
 HERE = os.path.dirname(os.path.abspath(__file__))
 SRC = os.path.dirname(HERE)
 ARGS = [a for a in sys.argv[1:] if not a.startswith("--")]
@@ -590,18 +592,7 @@ def c_check(cmd, p, kw, py):
 def make_fixtures():
     subprocess.run([GW, "layer-make", "--n", "40", "--width-rm", "14", "--seed", "2", "--ke-threshold", "1e-2",
                     "--solver", "verlet", "--out", SAMPLE], check=True, capture_output=True)
-    cols = ("x_impact,bounced,e_n,e,alpha_r,v_ni,v_nr,v_r,penetration,penetration_rm,dissipated_first_contact,"
-            "block_loss_first_contact,energy_error,wave_speed,t_end,steps")
-    with open(TABLE, "w") as f:  # a synthetic diagram with a boundary (as test_option_effect's)
-        f.write("# param vi = 20\ncase,rb-rm,height-rm,point,%s\n" % cols)
-        k = 0
-        for x in (0.5, 1, 1.5, 2, 3, 4):
-            for h in (3, 6, 9, 12, 15):
-                for pt in range(4):
-                    b = 1 if (h < 3 + 2 * x + 0.3 * pt or pt == 3) else 0
-                    f.write("%d,%g,%g,%d,%g,%d,0.5,0.6,10,20,10,12,0.6,%g,0.001,0.6,1e-6,nan,0.01,100\n"
-                            % (k, x, h, pt, 0.05 * pt, b, 1.5 + 0.1 * pt))
-                    k += 1
+    synthetic_tables.write_bouncing_diagram(TABLE)  # a diagram with a boundary (synthetic_tables.py)
 
 
 # the studies share rows (the column's material ... guide-viscous in chain,

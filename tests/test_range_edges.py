@@ -40,6 +40,8 @@ import sys
 import tempfile
 import time
 
+import synthetic_tables  # the script's own folder is on sys.path
+
 GW = os.path.abspath(sys.argv[1]) if len(sys.argv) > 1 else "build/granwave"
 FULL = "--full" in sys.argv
 VERBOSE = "--verbose" in sys.argv
@@ -347,18 +349,7 @@ def layer_cases():
     # layer-stats on a synthetic diagram (a boundary to fit: bouncing below
     # H = 3 + 2 R_b/R_m) at the ends of its options
     table = os.path.join(TMP, "syn.csv")
-    cols = ("x_impact,bounced,e_n,e,alpha_r,v_ni,v_nr,v_r,penetration,penetration_rm,dissipated_first_contact,"
-            "block_loss_first_contact,energy_error,wave_speed,t_end,steps")
-    with open(table, "w") as f:
-        f.write("# param vi = 20\ncase,rb-rm,height-rm,point,%s\n" % cols)
-        k = 0
-        for x in (0.5, 1, 1.5, 2, 3, 4):
-            for h in (3, 6, 9, 12, 15):
-                for pt in range(4):
-                    b = 1 if (h < 3 + 2 * x + 0.3 * pt or pt == 3) else 0
-                    f.write("%d,%g,%g,%d,%g,%d,0.5,0.6,10,20,10,12,0.6,%g,0.001,0.6,1e-6,nan,0.01,100\n"
-                            % (k, x, h, pt, 0.05 * pt, b, 1.5 + 0.1 * pt))
-                    k += 1
+    synthetic_tables.write_bouncing_diagram(table)
     for a in (["--criterion", "1e-300"], ["--criterion", 1], ["--gamma-deg", "1e-300"], ["--gamma-deg", 89],
               ["--delta-rm", 0], ["--delta-rm", 1e6], ["--fit", "beta,a_over_b,offset,tan_gamma"]):
         case("layer-stats", [table] + a)

@@ -86,7 +86,7 @@ static const gw_param falcon_params[] = {
     {.name = "accuracy", .type = GW_PARAM_DOUBLE, .offset = OWN(accuracy), .unit = "", .min = 0, .max = 1e-2,
      .metavar = "A",
      .help = "relative accuracy of F_max and tau_N when no solver option is given: RK4, dt = T_c/M with M "
-             "from a measured convergence study [1e-6]; 0: the solver options as given"},
+             "from a measured convergence study [1e-6]; 0 = the solver options as given"},
     {.name = "jobs", .type = GW_PARAM_LONG, .offset = OWN(jobs), .unit = "", .min = 0, .max = 1024, .def = "0",
      .metavar = "J", .help = "threads [0 = one per CPU]"},
     /* the defaults of --accuracy (pick_solver), not chain's: the help said

@@ -20,7 +20,6 @@
 #ifndef GW_PARAM_H
 #define GW_PARAM_H
 
-#include <limits.h>
 #include <stddef.h>
 
 #include "gw_common.h"
@@ -78,8 +77,8 @@ typedef struct gw_param {
 
 /* "Not given" in a number row that has no default or is optional: double NaN,
  * int and long these (outside every row's range), choice -1. */
-#define GW_PARAM_UNSET_INT INT_MIN
-#define GW_PARAM_UNSET_LONG LONG_MIN
+#define GW_PARAM_UNSET_INT (-(int)(~0u >> 1) - 1)     /* INT_MIN (no <limits.h> in this header) */
+#define GW_PARAM_UNSET_LONG (-(long)(~0ul >> 1) - 1) /* LONG_MIN */
 
 /* Number of rows of table t. */
 int gw_param_count(const gw_param *t);

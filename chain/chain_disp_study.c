@@ -217,7 +217,6 @@ static int run_column(const gw_chain_dispersion_setup *s, const gw_solver_type *
     p.n = (int)s->column_n;
     p.v_imp = s->vimp;
     gw_chain_run_opts o = gw_chain_run_opts_default();
-    int rc = GW_OK;
     o.sp = *sp;
     o.solver = type; /* cvode unless solver is given, as the chain's default */
     o.sp.rtol = isnan(s->rtol) ? GW_CHAIN_TOL_DEFAULT : s->rtol; /* the tolerances of `granwave chain` */
@@ -230,7 +229,7 @@ static int run_column(const gw_chain_dispersion_setup *s, const gw_solver_type *
     o.sample_ctx = &tr;
     gw_chain_result r;
     memset(&r, 0, sizeof r);
-    rc = gw_chain_create(&p, &ch, err);
+    int rc = gw_chain_create(&p, &ch, err);
     if (rc == GW_OK)
         rc = gw_chain_collide(ch, &o, &r, err);
     if (rc == GW_OK)
@@ -245,6 +244,8 @@ static int run_column(const gw_chain_dispersion_setup *s, const gw_solver_type *
     out->dt_out = o.dt_out;
     out->rtol = o.sp.rtol;
     out->atol = o.sp.atol;
+    out->solver = type;
+    out->solver_params = o.sp;
     out->tau_n = r.tau_n;
     out->period = r.period;
     out->inv_period = 1.0 / r.period;
@@ -315,6 +316,9 @@ int gw_chain_dispersion_run(const gw_chain_dispersion_setup *s, gw_chain_dispers
         }
         return rc;
     }
+    out->params = p;
+    out->solver = type;
+    out->solver_params = sp;
     rc = gw_chain_disp_run(&p, type, &sp, &out->r, err);
     out->wall_time_ms = gw_clock_ms() - t0;
     out->c0_rel_err = fabs(out->r.c0_measured / out->r.c0_theory - 1);

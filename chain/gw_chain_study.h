@@ -428,6 +428,12 @@ typedef struct gw_chain_dispersion_outcome {
     double inv_period;        /* column mode: 1/P, Hz (NaN: fewer than two maxima) */
     double f_peak_rel_diff;   /* column mode: f_peak P - 1 */
     char *warnings;           /* gw_chain_dispersion_warnings (dispersion mode; owned; NULL: none) */
+    /* what ran, resolved from the setup (its defaults filled in): the backend
+     * and its settings (method as given, GW_METHOD_DEFAULT when not given;
+     * rtol, atol), and in dispersion mode the study's parameters */
+    const gw_solver_type *solver;
+    gw_solver_params solver_params;
+    gw_chain_disp_params params;
 } gw_chain_dispersion_outcome;
 
 const gw_param *gw_chain_dispersion_setup_params(void);

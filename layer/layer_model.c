@@ -496,6 +496,26 @@ static int layer_rhs(double t, const double *y, double *yd, void *P)
     return 0;
 }
 
+/* The stepend rebuild root's margin of one particle (layer_roots): half the
+ * skin squared less the squared distance (dx, dy) it moved since the list
+ * was built, the half skin less the larger of the margin m0 and twice what it
+ * moves in a step at its speed |v| + |w| |arm| (body state s, a2 = |arm|^2),
+ * the square root only for fast particles; positive at the rebuild, d = 0. */
+static inline double layer_rebuild_margin(double half, double m0, double m02, double h0, double dt2, double dx,
+                                          double dy, const double *s, double a2)
+{
+    const double v2 = s[3] * s[3] + s[4] * s[4];
+    double hi2 = h0;
+    if (v2 + s[5] * s[5] * a2 > 0.25 * m02) { /* |v| + |w| |arm| > m0 / dt2 implies it */
+        const double sp = sqrt(v2) + fabs(s[5]) * sqrt(a2);
+        if (dt2 * sp > m0) {
+            const double hi = half - dt2 * sp > 1e-6 * half ? half - dt2 * sp : 1e-6 * half;
+            hi2 = hi * hi;
+        }
+    }
+    return hi2 - dx * dx - dy * dy;
+}
+
 /* Roots: the overlap of every listed contact, then (skin/2)^2 - |x_i - x_list|^2
  * per particle (the list must be rebuilt when one of those reaches zero), then
  * with friction |F_t| - F_n tan(phi) per contact: the stick/slip switches are a
@@ -522,47 +542,27 @@ static int layer_roots(double t, const double *y, double *g, void *P)
         const int n = L->n;
         const double *xl = L->x_list;
         const unsigned char *fixed = L->fixed;
-        for (int i = 0; !L->off && i < n; i++) { /* discs: the loop below with arm = 0, its
-                                                     constants out of the loop */
-            if (fixed[i])
-                continue;
-            const double *s = y + 6 * i;
-            const double dx = s[0] - xl[2 * i], dy = s[1] - xl[2 * i + 1];
-            const double v2 = s[3] * s[3] + s[4] * s[4], a2 = 0.0;
-            double hi2 = h0;
-            if (v2 + s[5] * s[5] * a2 > 0.25 * m02) {
-                const double sp = sqrt(v2) + fabs(s[5]) * sqrt(a2);
-                if (dt2 * sp > m0) {
-                    const double hi = half - dt2 * sp > 1e-6 * half ? half - dt2 * sp : 1e-6 * half;
-                    hi2 = hi * hi;
-                }
+        if (!L->off) { /* discs: particle i is body i, arm = 0 */
+            for (int i = 0; i < n; i++) {
+                if (fixed[i])
+                    continue;
+                const double *s = y + 6 * i;
+                const double gi = layer_rebuild_margin(half, m0, m02, h0, dt2, s[0] - xl[2 * i],
+                                                       s[1] - xl[2 * i + 1], s, 0.0);
+                gmin = gi < gmin ? gi : gmin;
             }
-            const double gi = hi2 - dx * dx - dy * dy;
-            gmin = gi < gmin ? gi : gmin;
-        }
-        for (int i = 0; L->off && i < L->n; i++) {
-            double p[2], arm[2] = {0, 0};
-            const int b = L->off ? layer_body(L, i) : i;
-            if (L->fixed[b])
-                continue;
-            const double *s = y + 6 * b;
-            if (L->off)
+        } else { /* clumps: particle i is a disc of body layer_body(L, i) */
+            for (int i = 0; i < n; i++) {
+                double p[2], arm[2];
+                const int b = layer_body(L, i);
+                if (fixed[b])
+                    continue;
                 layer_disc_xy(L, y, i, p, arm);
-            else
-                p[0] = s[0], p[1] = s[1];
-            const double dx = p[0] - L->x_list[2 * i], dy = p[1] - L->x_list[2 * i + 1];
-            const double v2 = s[3] * s[3] + s[4] * s[4], a2 = arm[0] * arm[0] + arm[1] * arm[1];
-            double hi2 = h0; /* a slow particle (the square root only for fast ones) */
-            if (v2 + s[5] * s[5] * a2 > 0.25 * m02) { /* |v| + |w| |arm| > m0 / dt2 implies it */
-                const double sp = sqrt(v2) + fabs(s[5]) * sqrt(a2);
-                if (dt2 * sp > m0) {
-                    /* (positive at the rebuild, d = 0: the root is a change of sign) */
-                    const double hi = half - dt2 * sp > 1e-6 * half ? half - dt2 * sp : 1e-6 * half;
-                    hi2 = hi * hi;
-                }
+                const double gi = layer_rebuild_margin(half, m0, m02, h0, dt2, p[0] - xl[2 * i],
+                                                       p[1] - xl[2 * i + 1], y + 6 * b,
+                                                       arm[0] * arm[0] + arm[1] * arm[1]);
+                gmin = gi < gmin ? gi : gmin;
             }
-            const double gi = hi2 - dx * dx - dy * dy;
-            gmin = gi < gmin ? gi : gmin;
         }
         g[r0] = gmin;
     } else if (L->off) {

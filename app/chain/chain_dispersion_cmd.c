@@ -93,27 +93,6 @@ static void disp_options(disp_cli *c, gw_opt *o)
     o[i++] = (gw_opt){0};
 }
 
-/* Solver and method from the options; GW_EINVAL with a message naming them. */
-static int disp_solver(const disp_cli *c, const gw_solver_type **type, gw_solver_params *sp,
-                       gw_err *err)
-{
-    *type = gw_solver_type_find(c->solver);
-    if (!*type || *type == gw_solver_verlet)
-        return gw_err_set(err, GW_EINVAL, "dispersion --solver: unknown solver '%s' (rk4, cvode, arkode)", c->solver);
-    int m = gw_solver_method_find(c->method);
-    int ok = m == GW_METHOD_DEFAULT ||
-             (*type == gw_solver_cvode && (m == GW_CVODE_ADAMS || m == GW_CVODE_BDF)) ||
-             (*type == gw_solver_arkode && (m == GW_ARKODE_ERK || m == GW_ARKODE_DIRK));
-    if (!ok)
-        return gw_err_set(err, GW_EINVAL, "dispersion --method: '%s' is not a method of solver %s (cvode: adams, bdf; arkode: erk, dirk; rk4: none)",
-                          c->method, c->solver);
-    *sp = gw_solver_params_default();
-    sp->method = m;
-    sp->rtol = c->rtol;
-    sp->atol = c->atol;
-    return gw_solver_tolerances_check(sp->rtol, sp->atol, "dispersion --rtol", "dispersion --atol", err);
-}
-
 /* the wisdom a run planned over: its FNV-1a 64 (hex), or null when none was read */
 static void disp_wisdom_json(cJSON *o, const disp_cli *c)
 {
@@ -125,7 +104,8 @@ static void disp_wisdom_json(cJSON *o, const disp_cli *c)
         cJSON_AddNullToObject(o, "fftw_wisdom_fnv1a64");
 }
 
-static cJSON *disp_settings_json(const disp_cli *c, const gw_chain_disp_params *p,
+/* p, type, sp: what ran (the library's outcome, defaults resolved) */
+static cJSON *disp_settings_json(const disp_cli *c, const gw_chain_disp_params *p, const gw_solver_type *type,
                                  const gw_solver_params *sp)
 {
     cJSON *o = cJSON_CreateObject();
@@ -133,15 +113,14 @@ static cJSON *disp_settings_json(const disp_cli *c, const gw_chain_disp_params *
     cJSON *m = cJSON_AddObjectToObject(o, "model");
     cJSON_AddNumberToObject(m, "n", p->n);
     cJSON_AddNumberToObject(m, "f0", p->f0);
-    cJSON_AddStringToObject(m, "ends", c->ends);
+    cJSON_AddStringToObject(m, "ends", p->ends == GW_CHAIN_DISP_FIXED ? "fixed" : "periodic");
     cJSON_AddNumberToObject(m, "mass", p->mass);
     cJSON_AddNumberToObject(m, "k", p->k);
     cJSON_AddNumberToObject(m, "radius", p->radius);
     cJSON_AddNumberToObject(m, "amp", p->amp);
     cJSON_AddNumberToObject(m, "seed", (double)p->seed);
     cJSON *s = cJSON_AddObjectToObject(o, "solver");
-    cJSON_AddStringToObject(s, "name", c->solver);
-    const gw_solver_type *type = gw_solver_type_find(c->solver);
+    cJSON_AddStringToObject(s, "name", gw_solver_type_name(type));
     cJSON_AddStringToObject(s, "method", type == gw_solver_rk4 ? "none"
                                          : sp->method != GW_METHOD_DEFAULT ? gw_solver_method_name(sp->method)
                                          : type == gw_solver_cvode ? "adams" : "erk");
@@ -250,10 +229,11 @@ static cJSON *disp_json(const gw_chain_disp_params *p, const gw_chain_disp_resul
     return o;
 }
 
-static void disp_print(const disp_cli *c, const gw_chain_disp_result *r, double wall_ms)
+static void disp_print(const gw_chain_disp_params *p, const gw_solver_type *type, const gw_chain_disp_result *r,
+                       double wall_ms)
 {
-    printf("granwave %s dispersion: n = %ld beads, F0 = %g N, %s ends, solver %s\n", gw_version(),
-           c->n, c->f0, c->ends, c->solver);
+    printf("granwave %s dispersion: n = %d beads, F0 = %g N, %s ends, solver %s\n", gw_version(), p->n, p->f0,
+           p->ends == GW_CHAIN_DISP_FIXED ? "fixed" : "periodic", gw_solver_type_name(type));
     printf("  d0 = %.6g m, kappa = %.6g N/m, a = %.6g m\n", r->d0, r->kappa, r->a);
     printf("  omega_c   theory %.6g rad/s, ridge max %.6g at qa %.4g (rel err %.2e), edge %.6g\n",
            r->omega_c_theory, r->omega_c_measured, r->qa_resolved_max, r->omega_c_rel_err, r->omega_edge);
@@ -324,9 +304,7 @@ static int disp_column(const disp_cli *c, const gw_opt *opts, int argc, char **a
         double dt_out;
         gw_solver_params sp;
         const gw_solver_type *solver;
-    } o = {out.dt_out, {.rtol = out.rtol, .atol = out.atol}, gw_chain_run_opts_default().solver};
-    if (gw_cli_find(opts, "solver")->seen)
-        o.solver = gw_solver_type_find(c->solver);
+    } o = {out.dt_out, out.solver_params, out.solver};
     struct {
         double tau_n, period;
         int n_maxima;
@@ -347,7 +325,7 @@ static int disp_column(const disp_cli *c, const gw_opt *opts, int argc, char **a
         cJSON_AddStringToObject(js, "solver", gw_solver_type_name(o.solver));
         /* the method the column ran (the chain's: cvode bdf, arkode erk by default) */
         cJSON_AddStringToObject(js, "method", o.solver == gw_solver_rk4 ? "none"
-                                              : strcmp(c->method, "default") != 0 ? c->method
+                                              : o.sp.method != GW_METHOD_DEFAULT ? gw_solver_method_name(o.sp.method)
                                               : o.solver == gw_solver_cvode ? "bdf" : "erk");
         cJSON_AddNumberToObject(js, "rtol", o.sp.rtol);
         cJSON_AddNumberToObject(js, "atol", o.sp.atol);
@@ -470,29 +448,6 @@ int gw_cmd_dispersion(int argc, char **argv)
             disp_export_wisdom(c.wisdom);
         return code;
     }
-    gw_chain_disp_params p = gw_chain_disp_params_default();
-    p.n = (int)c.n;
-    p.f0 = c.f0;
-    if (strcmp(c.ends, "periodic") == 0)
-        p.ends = GW_CHAIN_DISP_PERIODIC;
-    else if (strcmp(c.ends, "fixed") == 0)
-        p.ends = GW_CHAIN_DISP_FIXED;
-    else
-        return chain_cli_fail("dispersion --ends: expected periodic or fixed");
-    p.t_samples = (int)c.t_samples;
-    p.dt_sample = c.dt_out;
-    p.steps_per_sample = (int)c.steps;
-    p.amp = c.amp;
-    p.seed = (unsigned long)c.seed;
-    p.min_bins = c.min_bins;
-    p.fftw_measure = c.measure;
-    const gw_solver_type *type;
-    gw_solver_params sp = gw_solver_params_default();
-    if (disp_solver(&c, &type, &sp, &err) != GW_OK)
-        return chain_cli_fail(err.msg);
-    if (gw_chain_disp_params_validate(&p, &err) != GW_OK) /* "NAME: reason" -> "dispersion --NAME: reason" */
-        return gw_cli_study_error(gw_chain_dispersion_setup_params(), "dispersion", GW_EINVAL, &err),
-               chain_cli_fail(err.msg);
     gw_chain_dispersion_setup ds;
     if (gw_chain_dispersion_setup_init(&ds) != GW_OK) {
         gw_chain_dispersion_setup_clear(&ds);
@@ -511,8 +466,9 @@ int gw_cmd_dispersion(int argc, char **argv)
         fprintf(stderr, "granwave %s\n", err.msg);
         code = rc == GW_EINVAL || rc == GW_EUNSUPPORTED ? 2 : 1;
     } else {
-        cJSON *settings = disp_settings_json(&c, &p, &sp);
-        cJSON *o = disp_json(&p, &r, settings, wall_ms);
+        const gw_chain_disp_params *p = &out.params; /* what ran */
+        cJSON *settings = disp_settings_json(&c, p, out.solver, &out.solver_params);
+        cJSON *o = disp_json(p, &r, settings, wall_ms);
         char *hdr = gw_cli_provenance("dispersion", argc, argv, settings);
         if (c.out && (!hdr ? gw_err_set(&err, GW_ENOMEM, "out of memory") != GW_OK
                            : disp_write_out(c.out, hdr, o, &r, &err) != GW_OK)) {
@@ -524,7 +480,7 @@ int gw_cmd_dispersion(int argc, char **argv)
         if (code == 0 && c.json)
             code = gw_cli_json_stdout("dispersion", o);
         else if (code == 0)
-            disp_print(&c, &r, wall_ms);
+            disp_print(&out.params, out.solver, &r, wall_ms);
         free(hdr);
         cJSON_Delete(o);
         cJSON_Delete(settings);

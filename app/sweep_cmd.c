@@ -306,6 +306,19 @@ int gw_cmd_sweep(int argc, char **argv, const gw_sweep_model *const *models, int
         gw_err_set(&err, GW_EINVAL, "%s: no output directory ([sweep] out or --out)", pos[0]);
         code = 2;
     }
+    /* The output location before a case is checked: a grid of 90000 layer
+     * cases took 25 s to be refused for --out naming a file ("X: not a
+     * directory", also for a symbolic link to nothing). --check too: the
+     * config's out is part of what it validates. */
+    if (code == 0 && rank == 0) {
+        char what[4200];
+        if (out == cfg.out)
+            snprintf(what, sizeof what, "sweep: %s: [sweep] out", pos[0]);
+        else
+            snprintf(what, sizeof what, "sweep --out");
+        if (gw_out_check(out, what, &err) != GW_OK)
+            code = 2;
+    }
     /* The journal and table of the whole grid fit, before a case is checked */
     if (code == 0 && rank == 0 && (rc = gw_sweep_size_check(&cfg, m, &err)) != GW_OK) {
         fprintf(stderr, "granwave sweep: %s: %s\n", pos[0], err.msg);

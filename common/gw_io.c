@@ -529,9 +529,17 @@ int gw_mkdir_p(const char *path, gw_err *err)
             buf[i] = c;
         }
     }
+    /* what is there instead of a directory, by name: a file, a symbolic link
+     * to nothing or a loop of links were all "X: not a directory" */
     struct stat st;
-    if (stat(path, &st) != 0 || !S_ISDIR(st.st_mode))
-        return gw_err_set(err, GW_EIO, "%s: not a directory", path);
+    if (stat(path, &st) != 0) {
+        int e = errno;
+        if (lstat(path, &st) == 0 && S_ISLNK(st.st_mode))
+            return link_refused(path, "output directory", e, err);
+        return gw_err_set(err, GW_EINVAL, "output directory: '%s': %s", path, strerror(e));
+    }
+    if (!S_ISDIR(st.st_mode))
+        return gw_err_set(err, GW_EINVAL, "output directory: '%s' exists and is not a directory", path);
     /* made under a umask that leaves its owner no write or search permission
      * (umask 0300 and up): nothing could go into it. Removed again, deepest
      * first, so that a refused run leaves nothing. */

@@ -139,6 +139,44 @@ static int check_bodies(const gw_layer_sample *s, const char *path, int status, 
     return layer_bodies_check(s->n, s->x, s->y, s->r, s->body, what, status, err);
 }
 
+/* The header's grading against the radii of a disc sample. volume_ratio V
+ * (0: unknown) is the largest over the smallest particle volume, and rm the
+ * mean radius: the radii then span at most V in volume, and their mean lies
+ * between the smallest and the largest, so each radius lies within
+ * [rm / V^(1/3), rm V^(1/3)]. Both hold for any sample whose header says what
+ * its particles are, layer-make's (graded over [2 rm / (1 + V^(1/3)),
+ * V^(1/3) times that]), trimmed ones and hand-made ones alike; a header whose
+ * rm was edited (a diameter for the radius) or whose volume_ratio was not the
+ * particles' would run silently with a block and rings of the wrong size.
+ * Clump samples are skipped: their members are smaller than their bodies. */
+static int check_grading(const gw_layer_sample *s, const char *path, int status, gw_err *err)
+{
+    if (s->body || !(s->volume_ratio > 0) || s->n < 1)
+        return GW_OK;
+    const double tol = 1e-9, cv = cbrt(s->volume_ratio);
+    int lo = 0, hi = 0;
+    for (int i = 1; i < s->n; i++) {
+        if (s->r[i] < s->r[lo])
+            lo = i;
+        if (s->r[i] > s->r[hi])
+            hi = i;
+    }
+    const double span = pow(s->r[hi] / s->r[lo], 3);
+    if (span > s->volume_ratio * (1 + tol))
+        return gw_err_set(err, status, "sample '%s': its radii span a volume ratio of %.6g (particle %d: %.6g m, "
+                          "particle %d: %.6g m), above the header's volume_ratio %.6g (the largest over the "
+                          "smallest particle volume)", path, span, lo + 1, s->r[lo], hi + 1, s->r[hi],
+                          s->volume_ratio);
+    if (s->r[lo] < s->rm / cv * (1 - tol) || s->r[hi] > s->rm * cv * (1 + tol)) {
+        int i = s->r[lo] < s->rm / cv * (1 - tol) ? lo : hi;
+        return gw_err_set(err, status, "sample '%s': particle %d's radius %.6g m lies outside [%.6g, %.6g] m, "
+                          "rm / volume_ratio^(1/3) to rm x volume_ratio^(1/3): the header's rm %.6g m cannot be "
+                          "the mean radius of particles graded over a volume ratio of %.6g", path, i + 1, s->r[i],
+                          s->rm / cv, s->rm * cv, s->rm, s->volume_ratio);
+    }
+    return GW_OK;
+}
+
 static int check_sample(const gw_layer_sample *s, const char *path, int status, gw_err *err)
 {
     int rc = check_header(s, path, status, err);
@@ -152,7 +190,9 @@ static int check_sample(const gw_layer_sample *s, const char *path, int status, 
         gw_snprintf(where, sizeof where, "particle at index %d", i);
         rc = check_particle(s->width, s->rm, s->x[i], s->y[i], s->r[i], path, where, status, err);
     }
-    return rc == GW_OK ? check_bodies(s, path, status, err) : rc;
+    if (rc == GW_OK)
+        rc = check_bodies(s, path, status, err);
+    return rc == GW_OK ? check_grading(s, path, status, err) : rc;
 }
 
 int layer_sample_readable(const gw_layer_sample *s, const char *what, gw_err *err)
@@ -501,7 +541,8 @@ static int read_text(text_in *t, gw_layer_sample *s, gw_err *err)
         s->y = s->x + n, s->r = s->x + 2 * n;
     }
     s->n = (int)n;
-    return check_bodies(s, t->path, GW_EFORMAT, err);
+    rc = check_bodies(s, t->path, GW_EFORMAT, err);
+    return rc == GW_OK ? check_grading(s, t->path, GW_EFORMAT, err) : rc;
 }
 
 /* ------------------------------------------------------------- HDF5 ---- */

@@ -207,7 +207,7 @@ refused "layer-make --out is /dev/zero" 'character device' layer-make --n 10 --o
 refused "layer-make --out is a directory" 'directory' layer-make --n 10 --out "$tmp/adir"
 # unwritable even for root: a directory under /proc takes no new files
 refused "layer-make --out under /proc, before the run" "layer-make --out: cannot write into '/proc'" layer-make --n 10 --out /proc/granwave_no.txt
-refused "layer-impact --out under /proc, before the run" 'cannot create directory' layer-impact --sample "$tmp/L.txt" --t-max 1e-3 --out /proc/granwave_no
+refused "layer-impact --out under /proc, before the run" "layer-impact --out: cannot write into '/proc'" layer-impact --sample "$tmp/L.txt" --t-max 1e-3 --out /proc/granwave_no
 refused "layer-stats table is /dev/zero" 'character device' layer-stats /dev/zero --out "$tmp/o"
 refused "sweep config is /dev/zero" 'character device' sweep /dev/zero --out "$tmp/o"
 "$GW" layer-impact --sample "$tmp/L.txt" --dt 0 --t-max 1e-4 >/dev/null 2>&1 && ok "layer-impact --dt 0 (auto, as its help says) accepted" ||

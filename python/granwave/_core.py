@@ -534,7 +534,37 @@ def sweep_models():
     return {arr[i].contents.name.decode(): arr[i].contents for i in range(n.value)}
 
 
-def _ini_value(key, v):
+_SWEEP_ROWS = {}
+
+
+def _sweep_rows(model, m, key):
+    """The rows of the studies' tables named as the sweep key (the tables a
+    model's keys come from: chain's, layer-impact's), [] for a key of the model
+    alone (the layer's placement: point, points, spacing)."""
+    if model not in _SWEEP_ROWS:
+        rows = {}
+        for i in range(lib.gw_study_count()):
+            _, table = read_table(lib.gw_study_get(i).contents.params)
+            for r in table:
+                if m.has_key(r.name.encode()):
+                    rows.setdefault(r.name, []).append(r)
+        _SWEEP_ROWS[model] = rows
+    return _SWEEP_ROWS[model].get(key.replace("_", "-"), [])
+
+
+def _ini_value(key, v, rows=()):
+    """v as the text of a sweep config's value of key. A flag's value (a row of
+    type bool) is converted by the row as a study's keyword is (True, 1, an
+    np.bool_); any other key refuses a bool as the studies do ("expected a
+    number, got True"): grid={"n": [True, 2]} ran a column of 1 bead, and
+    vimp=True an impact at 1 m/s, where chain(n=True) is refused."""
+    if rows and all(r.type == FLAG for r in rows):
+        try:
+            return _text(rows[0], v)
+        except TypeError as e:  # named by the caller, as the other values are
+            raise TypeError(str(e).split(": ", 1)[-1]) from None
+    if not isinstance(v, (str, os.PathLike)) and isinstance(_scalar(v), bool):
+        raise TypeError(f"expected a number, got {v!r}")
     s = _text_plain(v)
     if any(c in s for c in "\n\r;#\0") or not s.strip():
         raise ValueError(f"{key}: value {s!r} cannot go into a sweep (empty, or holds ';', '#', NUL or a newline)")
@@ -637,7 +667,7 @@ def run_sweep(model, grid, params, jobs, progress):
             raise ValueError(f"{k}: empty list of grid values")
         axes[k] = vals
         try:
-            texts = [_ini_value(k, x) for x in vals]
+            texts = [_ini_value(k, x, _sweep_rows(model, m, k)) for x in vals]
         except TypeError as e:
             raise TypeError(f"sweep() grid: '{k}': {e}") from None
         if any("," in t for t in texts):  # the list's separator: 'a,b' ran two cases
@@ -676,7 +706,7 @@ def run_sweep(model, grid, params, jobs, progress):
         if k in grid:
             raise TypeError(f"sweep(): '{k}' given both in grid and as a keyword")
         try:
-            lines.append(f"{name} = {_ini_value(k, v)}")
+            lines.append(f"{name} = {_ini_value(k, v, _sweep_rows(model, m, k))}")
         except TypeError as e:
             raise TypeError(f"sweep(): '{k}': {e}") from None
         if len(lines[-1]) > _SWEEP_LINE_MAX:  # a long path: "sweep:6: a line of ..." before

@@ -140,6 +140,16 @@ struct gw_layer {
     int stepend;
     long *drift;        /* [cap_y] */
     double *un_last;    /* [cap_c] */
+    /* DEM mode, discs only: a contact open at both ends of a step with a gap
+     * g sleeps (drift_discs, layer_dem.c) until the travel of its two discs
+     * since then may have closed it: travel[i] sums a bound of how far disc i
+     * has moved since the list was built (2 h (|v_x| + |v_y|) per step, v the
+     * half-step velocity), wake[k] the travel sum of contact k's discs at
+     * which it wakes (0: awake). Both new with every list. */
+    double *wake;       /* [cap_c] */
+    double *travel;     /* [nb + 1]; travel[nb] = 0, a wall's */
+    int *tix;           /* [2 cap_c]: the travel indices of contact k's two discs
+                           (qa, and qb or nb for a wall) */
     struct layer_tscr *tscr; /* [cap_c], DEM mode only */
     double *ymid;       /* [6 nb], DEM mode: the mid-step state (layer_dem.c) */
     double *dem_book;   /* [ntail], DEM mode: the ledger increments of a step */

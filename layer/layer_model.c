@@ -240,6 +240,9 @@ void gw_layer_free(gw_layer *L)
     free(L->scale);
     free(L->drift);
     free(L->un_last);
+    free(L->wake);
+    free(L->travel);
+    free(L->tix);
     free(L->tscr);
     free(L->ymid);
     free(L->dem_book);

@@ -252,8 +252,9 @@ static void drift_discs(gw_layer *L, double h, const double *ph, double *y)
                 const double ek = 0.5 * (f1 * f1 * (ikm - ike) + f0 * f0 * (iks - ikm));
                 ed_sum += ed;
                 ek_sum += ek;
-                book[2 + 2 * q0] += ed;
-                book[3 + 2 * q0] += ek;
+                double *bk = book + 2 + 2 * q0; /* (one address: the two adds pair) */
+                bk[0] += ed;
+                bk[1] += ek;
                 fe[k] = f1;
                 const double capr = tp * fel, ft = f1 > capr ? capr : f1 < -capr ? -capr : f1;
                 /* the contact's region: layer_contact_region_near written out */

@@ -525,16 +525,18 @@ static int layer_roots(double t, const double *y, double *g, void *P)
         const int n = L->n;
         const double *xl = L->x_list;
         const unsigned char *fixed = L->fixed;
-        for (int i = 0; !L->off && i < n; i++) { /* discs: the loop below with arm = 0, its
-                                                     constants out of the loop */
+        const double q02 = 0.25 * m02;
+        for (int i = 0; !L->off && i < n; i++) { /* discs: the loop below with arm = 0 (its
+                                                     terms in |w| |arm| are +0 for a finite w, and
+                                                     left out), its constants out of the loop */
             if (fixed[i])
                 continue;
             const double *s = y + 6 * i;
             const double dx = s[0] - xl[2 * i], dy = s[1] - xl[2 * i + 1];
-            const double v2 = s[3] * s[3] + s[4] * s[4], a2 = 0.0;
+            const double v2 = s[3] * s[3] + s[4] * s[4];
             double hi2 = h0;
-            if (v2 + s[5] * s[5] * a2 > 0.25 * m02) {
-                const double sp = sqrt(v2) + fabs(s[5]) * sqrt(a2);
+            if (v2 > q02) {
+                const double sp = sqrt(v2);
                 if (dt2 * sp > m0) {
                     const double hi = half - dt2 * sp > 1e-6 * half ? half - dt2 * sp : 1e-6 * half;
                     hi2 = hi * hi;

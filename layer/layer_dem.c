@@ -170,7 +170,7 @@ static inline double damped_normal(const layer_contact *c, const double *y, cons
  * rhs would compute (Hertz, the damping at the predicted velocities, F_t as
  * the cap allows), summed per body into L->facc with the rhs's arithmetic, so
  * that layer_dem_rhs only assembles them (bit-identical to its own pass). */
-static void drift_discs(gw_layer *L, double h, const double *ph, double *y)
+LAYER_HOT static void drift_discs(gw_layer *L, double h, const double *ph, double *y)
 {
     const int nb = L->nb, nc = L->nc;
     const double tp = L->tan_phi, alpha = L->p.damping, width = L->p.width;

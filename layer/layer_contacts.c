@@ -162,12 +162,15 @@ int layer_contacts_build(gw_layer *L, gw_err *err)
     int *roots = malloc((2 * (size_t)nc + (size_t)n + 3) * sizeof *roots); /* + 2 watch roots */
     long *drift = malloc((size_t)dim * sizeof *drift);
     double *un_last = calloc((size_t)nc + 1, sizeof *un_last);
+    double *wake = calloc((size_t)nc + 1, sizeof *wake); /* all awake */
+    double *travel = calloc((size_t)nb + 1, sizeof *travel);
+    int *tix = malloc((2 * (size_t)nc + 2) * sizeof *tix);
     layer_tscr *tscr = calloc((size_t)nc + 1, sizeof *tscr);
     double *geo = malloc((4 * (size_t)nc + 4) * sizeof *geo);
     double *snap = malloc(((size_t)nc + 1) * LAYER_SNAP_W * sizeof *snap);
-    if (!ny || !nsc || !roots || !drift || !un_last || !tscr || !geo || !snap) {
+    if (!ny || !nsc || !roots || !drift || !un_last || !tscr || !geo || !snap || !wake || !travel || !tix) {
         free(c), free(ny), free(nsc), free(roots), free(drift), free(un_last), free(tscr), free(snap);
-        free(geo);
+        free(geo), free(wake), free(travel), free(tix);
         return gw_err_set(err, GW_ENOMEM, "layer: out of memory for %d contacts", nc);
     }
     memcpy(ny, L->y, 6 * (size_t)nb * sizeof *ny);
@@ -181,7 +184,7 @@ int layer_contacts_build(gw_layer *L, gw_err *err)
             if (un > 0) {
                 int rc2 = missed_contact(L, &c[k], un, err);
                 free(c), free(ny), free(nsc), free(roots), free(drift), free(un_last), free(tscr), free(snap);
-                free(geo);
+                free(geo), free(wake), free(travel), free(tix);
                 return rc2;
             }
         }
@@ -197,7 +200,13 @@ int layer_contacts_build(gw_layer *L, gw_err *err)
     }
     memcpy(ny + 6 * nb + nc, L->y + 6 * nb + L->nc, (size_t)L->ntail * sizeof *ny);
     free(L->y), free(L->scale), free(L->c), free(L->roots), free(L->drift), free(L->un_last);
-    free(L->tscr), free(L->snap), free(L->geo);
+    free(L->tscr), free(L->snap), free(L->geo), free(L->wake), free(L->travel);
+    free(L->tix);
+    for (int k = 0; k < nc; k++)
+        tix[2 * k] = c[k].qa, tix[2 * k + 1] = c[k].b >= 0 ? c[k].qb : nb;
+    L->wake = wake;
+    L->travel = travel;
+    L->tix = tix;
     L->tscr = tscr;
     L->geo = geo;
     L->geo_valid = L->geo_pos = 0;

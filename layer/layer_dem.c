@@ -49,14 +49,7 @@ static inline double disc_vt(const layer_contact *c, const double *ph, double hh
 {
     const double *sa = ph + 6 * c->qa;
     double rx = -sa[3], ry = -sa[4];
-    switch (c->b) { /* v_t = -r_x n_y + r_y n_x - w_a R_a (- w_b R_b) */
-    case LAYER_LEFT: /* n = (-1, 0) */
-        return -ry - sa[5] * c->ra;
-    case LAYER_RIGHT: /* n = (1, 0) */
-        return ry - sa[5] * c->ra;
-    case LAYER_BOTTOM: /* n = (0, -1) */
-        return rx - sa[5] * c->ra;
-    default: {
+    if (c->b >= 0) { /* a pair (the common case, tested first); v_t = -r_x n_y + r_y n_x - w_a R_a - w_b R_b */
         const double *sb = ph + 6 * c->qb;
         double dx = (sb[0] + hh * sb[3]) - (sa[0] + hh * sa[3]);
         double dy = (sb[1] + hh * sb[4]) - (sa[1] + hh * sa[4]), d = sqrt(dx * dx + dy * dy);
@@ -64,6 +57,13 @@ static inline double disc_vt(const layer_contact *c, const double *ph, double hh
         double w = -sa[5] * c->ra - sb[5] * c->rb;
         return d > 0 ? (-rx * dy + ry * dx) / d + w : -rx + w; /* coincident: n = (0, 1) */
     }
+    switch (c->b) {
+    case LAYER_LEFT: /* n = (-1, 0) */
+        return -ry - sa[5] * c->ra;
+    case LAYER_RIGHT: /* n = (1, 0) */
+        return ry - sa[5] * c->ra;
+    default: /* LAYER_BOTTOM, n = (0, -1) */
+        return rx - sa[5] * c->ra;
     }
 }
 
@@ -73,17 +73,7 @@ static inline double disc_vt(const layer_contact *c, const double *ph, double hh
 static inline double disc_geometry(const layer_contact *c, const double *y, double width, double n[2])
 {
     const double *sa = y + 6 * c->qa;
-    switch (c->b) {
-    case LAYER_LEFT:
-        n[0] = -1, n[1] = 0;
-        return c->ra - sa[0];
-    case LAYER_RIGHT:
-        n[0] = 1, n[1] = 0;
-        return c->ra - (width - sa[0]);
-    case LAYER_BOTTOM:
-        n[0] = 0, n[1] = -1;
-        return c->ra - sa[1];
-    default: {
+    if (c->b >= 0) { /* a pair (the common case, tested first) */
         const double *sb = y + 6 * c->qb;
         double dx = sb[0] - sa[0], dy = sb[1] - sa[1], d2 = dx * dx + dy * dy, rs = c->ra + c->rb;
         if (!(d2 < rs * rs)) {
@@ -98,6 +88,16 @@ static inline double disc_geometry(const layer_contact *c, const double *y, doub
             n[0] = 0, n[1] = 1;
         return rs - d;
     }
+    switch (c->b) {
+    case LAYER_LEFT:
+        n[0] = -1, n[1] = 0;
+        return c->ra - sa[0];
+    case LAYER_RIGHT:
+        n[0] = 1, n[1] = 0;
+        return c->ra - (width - sa[0]);
+    default: /* LAYER_BOTTOM */
+        n[0] = 0, n[1] = -1;
+        return c->ra - sa[1];
     }
 }
 
@@ -170,7 +170,7 @@ static inline double damped_normal(const layer_contact *c, const double *y, cons
  * rhs would compute (Hertz, the damping at the predicted velocities, F_t as
  * the cap allows), summed per body into L->facc with the rhs's arithmetic, so
  * that layer_dem_rhs only assembles them (bit-identical to its own pass). */
-static void drift_discs(gw_layer *L, double h, const double *ph, double *y)
+LAYER_HOT static void drift_discs(gw_layer *L, double h, const double *ph, double *y)
 {
     const int nb = L->nb, nc = L->nc;
     const double tp = L->tan_phi, alpha = L->p.damping, width = L->p.width;
@@ -178,51 +178,102 @@ static void drift_discs(gw_layer *L, double h, const double *ph, double *y)
     double *fe = y + 6L * nb, *book = L->dem_book, *rate = L->dem_rate, *fa = L->facc;
     double *geo = L->geo, *un_last = L->un_last, pd = 0, ed_sum = 0, ek_sum = 0;
     layer_tscr *tscr = L->tscr;
+    const layer_contact *cs = L->c;
     const int reg = L->reg_n > 0;
     memset(fa, 0, 3 * (size_t)nb * sizeof *fa);
     memset(rate, 0, (size_t)L->ntail * sizeof *rate);
     /* the common case has a path of its own: no damping (alpha 0, the impacts:
-     * F_n = F_el, no damping power) and regions set; see below */
+     * F_n = F_el, no damping power) and regions set; see below. Its loop
+     * invariants in locals: the stores through the double arrays below may
+     * alias L's fields for the compiler, which then reloaded them per contact */
     const int lean = !(alpha > 0) && reg;
+    const int nreg = L->reg_n, bb = L->block_body;
+    const double rcx = L->reg_cx, rcy = L->reg_cy, riw2 = L->reg_iw2;
+    /* Open contacts asleep: in a step a disc's centre moves by h v, v its
+     * half-step velocity, which rounded is at most 2 h |v| <= 2 h (|v_x| +
+     * |v_y|), summed into travel[i]. A contact found open at both ends of a
+     * step with a gap g sleeps until the travel of its two discs has grown by
+     * 0.99 g (less 1e-9 of its reach: the rounding of g and of the sums): it
+     * is open at every step end before, where this loop would only write its
+     * zeros again, and what reads geo of an open contact reads only its sign,
+     * so the sleep changes no number. A velocity that is not finite makes
+     * the travel sums NaN or infinite, and the comparison wakes the contact. */
+    double *travel = L->travel, *wake = L->wake;
+    const int *tix = L->tix;
+    const double h2 = 2 * h;
+    for (int i = 0; i < nb; i++) {
+        const double *s = ph + 6 * i;
+        travel[i] += h2 * (fabs(s[3]) + fabs(s[4]));
+    }
     for (int k = 0; k < nc; k++) {
-        const layer_contact *c = &L->c[k];
+        const double tr = travel[tix[2 * k]] + travel[tix[2 * k + 1]];
+        if (tr < wake[k])
+            continue;
+        const layer_contact *c = cs + k;
         double nn[2];
         const double ue = disc_geometry(c, y, width, nn);
-        if (lean && ue > 0 && un_last[k] > 0 && tscr[k].kt > 0 && tscr[k].ikt > 0 && tscr[k].q >= 0) {
+        const double ul = un_last[k];
+        if (!(ue > 0) && !(ul > 0)) {
+            /* open at both ends (about half the listed contacts): what the general
+             * path below does with its zeros (su, K_e, F_el, F_t all 0) */
+            double *g = geo + 4 * k;
+            g[0] = ue, g[1] = 0, g[2] = nn[0], g[3] = nn[1];
+            un_last[k] = 0;
+            fe[k] = 0;
+            const double *sa = y + 6 * c->qa, rs = c->ra + c->rb;
+            double gap = -ue; /* a wall's, exact */
+            if (c->b >= 0) {
+                const double *sb = y + 6 * c->qb, dx = sb[0] - sa[0], dy = sb[1] - sa[1];
+                gap = sqrt(dx * dx + dy * dy) - rs;
+            }
+            wake[k] = tr + (0.99 * gap - 1e-9 * rs); /* (not above tr: awake) */
+            continue;
+        }
+        const layer_tscr ts = tscr[k];
+        if (lean && ue > 0 && ul > 0 && ts.kt > 0 && ts.ikt > 0 && ts.q >= 0) {
             /* closed at both ends with K_s, 1/K_s and the region known: the general
              * path below with its tests resolved (the same operations in the same
              * order, so the same numbers); the damping's zero terms (F_n - F_el) u_n'
              * are not added (adding +0 to the sums changes none of them) */
-            const double su = sqrt(ue), ke = c->kts * su, fel = c->kn * ue * su;
+            const double kn = c->kn, kts = c->kts, ra = c->ra;
+            const double su = sqrt(ue), ke = kts * su, fel = kn * ue * su;
             if (fel > 0 && ke > 0) {
-                const double ks = tscr[k].kt, iks = tscr[k].ikt;
-                const int q0 = tscr[k].q;
-                const double ike = 1 / ke, km = mean_kt(ks, ke, un_last[k], ue), ikm = 1 / km;
+                const int qa = c->qa, qb = c->qb, q0 = ts.q;
+                const double ks = ts.kt, iks = ts.ikt;
+                const double ike = 1 / ke, km = mean_kt(ks, ke, ul, ue), ikm = 1 / km;
                 double *g = geo + 4 * k;
                 g[0] = ue, g[1] = su, g[2] = nn[0], g[3] = nn[1];
                 un_last[k] = ue;
                 const double vt = disc_vt(c, ph, hh);
-                const double cap = tp * c->kn * ue * su;
+                const double cap = tp * kn * ue * su;
                 const double f0 = fe[k], ftr = f0 + vt * h * km;
                 const double f1 = ftr > cap ? cap : ftr < -cap ? -cap : ftr;
                 const double ed = ftr == f1 ? 0 : 0.5 * (f0 + f1) * (ftr - f1) * ikm;
                 const double ek = 0.5 * (f1 * f1 * (ikm - ike) + f0 * f0 * (iks - ikm));
                 ed_sum += ed;
                 ek_sum += ek;
-                book[2 + 2 * q0] += ed;
-                book[3 + 2 * q0] += ek;
+                double *bk = book + 2 + 2 * q0; /* (one address: the two adds pair) */
+                bk[0] += ed;
+                bk[1] += ek;
                 fe[k] = f1;
                 const double capr = tp * fel, ft = f1 > capr ? capr : f1 < -capr ? -capr : f1;
+                /* the contact's region: layer_contact_region_near written out */
+                const double arm = ra - 0.5 * ue;
+                const double px = y[6 * qa] + arm * nn[0], py = y[6 * qa + 1] + arm * nn[1];
+                int q = -1;
+                if (q0 < nreg && qa != bb && qb != bb) {
+                    const double dx = px - rcx, dy = py - rcy, d2 = (dx * dx + dy * dy) * riw2;
+                    if ((double)q0 * q0 <= d2 && d2 < (double)(q0 + 1) * (q0 + 1))
+                        q = q0;
+                }
                 tscr[k].kt = ke;
                 tscr[k].ikt = ike;
-                const double arm = c->ra - 0.5 * ue;
-                tscr[k].q = layer_contact_region_near(L, c, y[6 * c->qa] + arm * nn[0],
-                                                      y[6 * c->qa + 1] + arm * nn[1], q0);
+                tscr[k].q = q >= 0 ? q : layer_contact_region_pt(L, c, px, py);
                 const double fx = -fel * nn[0] - ft * nn[1], fy = -fel * nn[1] + ft * nn[0];
-                double *da = fa + 3 * c->qa;
-                da[0] += fx, da[1] += fy, da[2] += ft * c->ra;
+                double *da = fa + 3 * qa;
+                da[0] += fx, da[1] += fy, da[2] += ft * ra;
                 if (c->b >= 0) {
-                    double *db = fa + 3 * c->qb;
+                    double *db = fa + 3 * qb;
                     db[0] -= fx, db[1] -= fy, db[2] += ft * c->rb;
                 }
                 continue;

@@ -28,6 +28,21 @@
 #define LAYER_ZENO_DT_STEP 1e-6
 #define LAYER_ZENO_QUIET_STEP 0.1
 
+/* The DEM step's hot loops (layer_dem.c's drift, the samples' ledgers) are
+ * compiled twice, for AVX and for the baseline x86-64, and the program runs
+ * the one its CPU has (chosen when it loads: GCC's target_clones, an ELF
+ * ifunc). AVX without FMA does the same IEEE operations in the same order,
+ * so the numbers are the same to the last bit; its three-operand encoding
+ * only drops the register copies of SSE2's two-operand form (16 % of the
+ * drift's instructions on the default impact). Off elsewhere (other
+ * compilers or CPUs, or -DGW_NO_CLONES). */
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__ELF__) && \
+    !defined(GW_NO_CLONES) && !defined(__AVX__)
+#define LAYER_HOT __attribute__((target_clones("avx", "default")))
+#else
+#define LAYER_HOT
+#endif
+
 /* Walls are contact partners with negative ids. */
 enum { LAYER_LEFT = -1, LAYER_RIGHT = -2, LAYER_BOTTOM = -3 };
 
@@ -140,6 +155,16 @@ struct gw_layer {
     int stepend;
     long *drift;        /* [cap_y] */
     double *un_last;    /* [cap_c] */
+    /* DEM mode, discs only: a contact open at both ends of a step with a gap
+     * g sleeps (drift_discs, layer_dem.c) until the travel of its two discs
+     * since then may have closed it: travel[i] sums a bound of how far disc i
+     * has moved since the list was built (2 h (|v_x| + |v_y|) per step, v the
+     * half-step velocity), wake[k] the travel sum of contact k's discs at
+     * which it wakes (0: awake). Both new with every list. */
+    double *wake;       /* [cap_c] */
+    double *travel;     /* [nb + 1]; travel[nb] = 0, a wall's */
+    int *tix;           /* [2 cap_c]: the travel indices of contact k's two discs
+                           (qa, and qb or nb for a wall) */
     struct layer_tscr *tscr; /* [cap_c], DEM mode only */
     double *ymid;       /* [6 nb], DEM mode: the mid-step state (layer_dem.c) */
     double *dem_book;   /* [ntail], DEM mode: the ledger increments of a step */

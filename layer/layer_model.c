@@ -240,6 +240,9 @@ void gw_layer_free(gw_layer *L)
     free(L->scale);
     free(L->drift);
     free(L->un_last);
+    free(L->wake);
+    free(L->travel);
+    free(L->tix);
     free(L->tscr);
     free(L->ymid);
     free(L->dem_book);
@@ -542,13 +545,24 @@ static int layer_roots(double t, const double *y, double *g, void *P)
         const int n = L->n;
         const double *xl = L->x_list;
         const unsigned char *fixed = L->fixed;
-        if (!L->off) { /* discs: particle i is body i, arm = 0 */
+        const double q02 = 0.25 * m02;
+        if (!L->off) { /* discs: particle i is body i, arm = 0 (the terms in |w| |arm| are +0 for a
+                          finite w, and left out), the constants out of the loop */
             for (int i = 0; i < n; i++) {
                 if (fixed[i])
                     continue;
                 const double *s = y + 6 * i;
-                const double gi = layer_rebuild_margin(half, m0, m02, h0, dt2, s[0] - xl[2 * i],
-                                                       s[1] - xl[2 * i + 1], s, 0.0);
+                const double dx = s[0] - xl[2 * i], dy = s[1] - xl[2 * i + 1];
+                const double v2 = s[3] * s[3] + s[4] * s[4];
+                double hi2 = h0;
+                if (v2 > q02) {
+                    const double sp = sqrt(v2);
+                    if (dt2 * sp > m0) {
+                        const double hi = half - dt2 * sp > 1e-6 * half ? half - dt2 * sp : 1e-6 * half;
+                        hi2 = hi * hi;
+                    }
+                }
+                const double gi = hi2 - dx * dx - dy * dy;
                 gmin = gi < gmin ? gi : gmin;
             }
         } else { /* clumps: particle i is a disc of body layer_body(L, i) */

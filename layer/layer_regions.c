@@ -156,7 +156,7 @@ int gw_layer_ledgers(const gw_layer *L, gw_layer_energy *e, gw_layer_energy *reg
     return nr;
 }
 
-int layer_ledgers_rings(const gw_layer *L, gw_layer_energy *e, gw_layer_energy *regions, double cx, double cy,
+LAYER_HOT int layer_ledgers_rings(const gw_layer *L, gw_layer_energy *e, gw_layer_energy *regions, double cx, double cy,
                         double w, int nring, double *kin, double *strain, double *coord)
 {
     const int regs = e && regions && L->reg_n > 0 && cx == L->reg_cx && cy == L->reg_cy && w == L->reg_w &&

@@ -39,7 +39,7 @@ gw_chain_run_opts gw_chain_run_opts_default(void)
  * margin covers the scatter between N. */
 int gw_chain_rk4_steps_per_tc(double rel_acc)
 {
-    if (!(rel_acc >= 1e-9 && rel_acc <= 1e-2))
+    if (!(rel_acc >= GW_CHAIN_RK4_ACCURACY_MIN && rel_acc <= GW_CHAIN_RK4_ACCURACY_MAX))
         return 0;
     double m = 16.0 * pow(4.0e-6 / (0.5 * rel_acc), 1.0 / 2.5);
     return m < 16 ? 16 : (int)ceil(m);

@@ -100,7 +100,8 @@ const char *gw_param_type_name(gw_param_type type);
 
 /* Fill obj's fields from t's defaults: a row's def is set as if by gw_param_set;
  * rows without a default get NaN (double), -1 (choice), NULL (text), an empty
- * list, or 0; optional rows get "not given" (NaN, GW_PARAM_UNSET_INT/LONG, -1).
+ * list, or 0; optional rows get "not given" (NaN, GW_PARAM_UNSET_INT/LONG, -1,
+ * NULL).
  * Other bytes of obj are left as they are. GW_EINVAL (message naming the row)
  * only for a table whose default is invalid (a bug). */
 int gw_param_init(const gw_param *t, void *obj, gw_err *err);

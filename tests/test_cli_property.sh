@@ -47,9 +47,11 @@
 # row that is a flag of the command is given the numbers just inside its range
 # (INSIDE_MIN, INSIDE_MAX of gw_param_rows: the closed end itself, or the end
 # moved inward by 1e-9 of its size, by 1e-300 from 0) and, for a row that takes
-# 0 besides its range (or_zero), 0. The command may run, fail, or refuse by a
-# rule over other settings ("has no effect", a combination), but never refuse
-# the value as out of range ("is outside", "must be >"): the row's range is
+# 0 besides its range (or_zero), 0. The command may run (a run still going
+# after 3 s counts as taken), fail, or refuse by a rule over other settings
+# ("has no effect", a bound naming another flag: drop's "dt-out: ... outside
+# [t-max/1e7, t-max]"), but never refuse the value as out of range ("is
+# outside [1e-09, 1]", "must be > 0"): the row's range is
 # what the command takes (layer-make's modulus-factor row said (0, 1] and the
 # pluviation refused (0, 1e-9); falcon's accuracy row said [0, 1e-2] and the
 # study refused (0, 1e-9)).
@@ -249,12 +251,16 @@ run_cmd() {
                 [ "$val" = "-" ] && continue
                 ncase=$((ncase+1))
                 out="$tmp/in_$ncase"; mkdir "$out"
-                bash -c "$MEMLIM exec timeout -s KILL 20 \"\$@\"" _ "$GW" "$cmd" $(base_args "$cmd" "$out") \
+                # a refusal comes before any work: a run still going after 3 s
+                # (killed: 137) has taken the value, as a legitimate long run
+                bash -c "$MEMLIM exec timeout -s KILL 3 \"\$@\"" _ "$GW" "$cmd" $(base_args "$cmd" "$out") \
                     "--$flag" "$val" >"$tmp/stdout" 2>"$tmp/stderr" </dev/null
                 rc=$?
-                if [ $rc -gt 2 ]; then
+                if [ $rc -gt 2 ] && [ $rc -ne 137 ]; then
                     ko "$cmd --$flag $val (inside the row's range): exit $rc"
-                elif [ $rc -eq 2 ] && grep -qE -- "--$flag: .*(outside [[(]|must be [<>])" "$tmp/stderr"; then
+                elif [ $rc -eq 2 ] && grep -qE -- "--$flag: .*(outside [[(][-+0-9.]|must be [<>]=? [-+0-9.])" "$tmp/stderr"; then
+                    # (a bound naming another setting, "outside [t-max/1e7, t-max]", is a
+                    # rule over the combination with the base run's options)
                     ko "$cmd --$flag $val is inside the row's range but refused as out of range: $(head -1 "$tmp/stderr")"
                 else
                     passes=$((passes+1))

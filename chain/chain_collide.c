@@ -39,7 +39,7 @@ gw_chain_run_opts gw_chain_run_opts_default(void)
  * margin covers the scatter between N. */
 int gw_chain_rk4_steps_per_tc(double rel_acc)
 {
-    if (!(rel_acc >= 1e-9 && rel_acc <= 1e-2))
+    if (!(rel_acc >= GW_CHAIN_RK4_ACCURACY_MIN && rel_acc <= GW_CHAIN_RK4_ACCURACY_MAX))
         return 0;
     double m = 16.0 * pow(4.0e-6 / (0.5 * rel_acc), 1.0 / 2.5);
     return m < 16 ? 16 : (int)ceil(m);
@@ -195,7 +195,7 @@ static int observe(run_state *st, double t, const double *y, int is_event)
     overlap_track(st, y);
     gw_chain_energy e;
     gw_chain_energy_of(st->c, y, &e);
-    double err = chain_energy_rel_error(&e, r->e0, &st->wg);
+    double err = chain_energy_rel_error(st->c, &e, r->e0, &st->wg);
     if (err > r->energy_error)
         r->energy_error = err;
     /* an event found exactly at an output time is observed twice, by the root
@@ -561,30 +561,10 @@ typedef struct collide_plan {
     const gw_solver_type *type;
 } collide_plan;
 
-/* The speed the plan's time scales are taken at: v_imp, or under gravity at
- * least the speed v_g whose binary wall collision peaks at the column's weight
- * W = g sum m (F_max = K (5 m v^2 / (4 K))^(3/5) = W, bead 1's mass m on the
- * wall's K). Below it the column is carried by its weight and its contacts ring
- * at that scale, not at v_imp's: chain --n 3 --gravity 1e4 --vimp 1e-9 --mass
- * 1e3 --k 1e3 --kwall 1e3 planned t_max 1.2e4 s and a largest step of 33 s
- * from v_imp, and took 1.8e7 steps, 52 s of CPU, for a column that never left
- * the wall. Above it (every run where gravity is a correction) nothing changes. */
-static double plan_speed(const gw_chain_params *p)
-{
-    if (!(p->gravity > 0) || !(p->kwall > 0))
-        return p->v_imp;
-    const double m0 = p->masses ? p->masses[0] : p->mass;
-    double mt = 0;
-    for (int i = 0; i < p->n; i++)
-        mt += p->masses ? p->masses[i] : p->mass;
-    const double w = p->gravity * mt, vg = sqrt(4.0 * p->kwall / (5.0 * m0) * pow(w / p->kwall, 5.0 / 3.0));
-    return isfinite(vg) && vg > p->v_imp ? vg : p->v_imp;
-}
-
 static int collide_plan_make(const gw_chain_params *p0, const gw_chain_run_opts *o, collide_plan *pl, gw_err *err)
 {
-    gw_chain_params q = *p0; /* the time scales at plan_speed; p0 itself for the rest */
-    q.v_imp = plan_speed(p0);
+    gw_chain_params q = *p0; /* the time scales at chain_speed_scale; p0 itself for the rest */
+    q.v_imp = chain_speed_scale(p0);
     const gw_chain_params *p = &q;
     const int n = p->n;
     const double m0 = p->masses ? p->masses[0] : p->mass;
@@ -762,7 +742,7 @@ static int collide_run(const gw_chain *c, const gw_chain_run_opts *o, int flight
     r->wall_contacts = st.closed[0];
 
     const double dt_out = pl.dt_out, t_max = pl.t_max;
-    double dscale = gw_chain_dmax1(gw_chain_bead_mass(c, 0), p->kwall, p->v_imp);
+    double dscale = gw_chain_dmax1(gw_chain_bead_mass(c, 0), p->kwall, chain_speed_scale(&pc));
     st.dtol = 1e-9 * dscale;
     gw_solver_params sp = pl.sp;
     const gw_solver_type *type = pl.type;

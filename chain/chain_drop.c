@@ -318,7 +318,7 @@ static int observe(drop_state *st, double t, const double *y, int is_event)
     }
     gw_chain_energy e;
     gw_chain_energy_of(st->d->c, y, &e);
-    double err = chain_energy_rel_error(&e, r->e0, &st->wg);
+    double err = chain_energy_rel_error(st->d->c, &e, r->e0, &st->wg);
     if (err > r->energy_error)
         r->energy_error = err;
     r->e_end = e;

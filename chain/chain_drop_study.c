@@ -49,9 +49,12 @@ static const gw_param drop_params[] = {
     GW_CHAIN_SOLVER_ROWS
     ROW("t-max", GW_PARAM_DOUBLE, t_max, "s", 1e-6, GW_CHAIN_DROP_T_MAX, 0, "10e-3", "T",
         "time followed after the first contact, s, in [1e-6, 1] [10e-3, the paper's Fig. 12]"),
-    ROW("dt-out", GW_PARAM_DOUBLE, dt_out, "s", 0, 1, 0, "0", "DT",
-        "sampling interval of the signal, s, in [t-max/1e7, t-max] [0 = 1e-6]; peaks and impacts are "
-        "located by events, not read from the samples (long runs are chaotic: docs/drop.md)"),
+    /* [t-max/1e7, t-max] over t-max's row [1e-6, 1], or 0: the row said [0, 1]
+     * while (0, 1e-13) is below t-max/1e7 at every t-max (test_cli_property) */
+    {.name = "dt-out", .type = GW_PARAM_DOUBLE, .offset = OFF(dt_out), .unit = "s", .min = 1e-6 * 1e-7,
+     .max = GW_CHAIN_DROP_T_MAX, .or_zero = 1, .def = "0", .metavar = "DT",
+     .help = "sampling interval of the signal, s, in [t-max/1e7, t-max] [0 = 1e-6]; peaks and impacts are "
+             "located by events, not read from the samples (long runs are chaotic: docs/drop.md)"},
     GW_CHAIN_ENERGY_ROW
     GW_CHAIN_WALL_ROWS
     ROW("trace", GW_PARAM_FLAG, trace, "", 0, 1, 0, "0", NULL,

@@ -83,10 +83,13 @@ static const gw_param falcon_params[] = {
     /* no default in the table: not given (NaN) is the default target
      * FALCON_ACCURACY_DEFAULT, and a value given, even that one, is asked for
      * (pick_solver), as the command's --accuracy */
-    {.name = "accuracy", .type = GW_PARAM_DOUBLE, .offset = OWN(accuracy), .unit = "", .min = 0, .max = 1e-2,
-     .metavar = "A",
-     .help = "relative accuracy of F_max and tau_N when no solver option is given: RK4, dt = T_c/M with M "
-             "from a measured convergence study [1e-6]; 0 = the solver options as given"},
+    /* the range is the step study's, [1e-9, 1e-2] (gw_chain_rk4_steps_per_tc),
+     * and 0 besides it (or_zero): the row said [0, 1e-2] while the study
+     * refused (0, 1e-9) */
+    {.name = "accuracy", .type = GW_PARAM_DOUBLE, .offset = OWN(accuracy), .unit = "",
+     .min = GW_CHAIN_RK4_ACCURACY_MIN, .max = GW_CHAIN_RK4_ACCURACY_MAX, .or_zero = 1, .metavar = "A",
+     .help = "relative accuracy of F_max and tau_N when no solver option is given, in [1e-9, 1e-2]: RK4, dt = "
+             "T_c/M with M from a measured convergence study [1e-6]; 0 = the solver options as given"},
     {.name = "jobs", .type = GW_PARAM_LONG, .offset = OWN(jobs), .unit = "", .min = 0, .max = 1024, .def = "0",
      .metavar = "J", .help = "threads [0 = one per CPU]"},
     /* the defaults of --accuracy (pick_solver), not chain's: the help said

@@ -491,11 +491,35 @@ static double wall_reduced_mass(const gw_chain_params *p)
     return M > 0 ? m0 * M / (m0 + M) : m0;
 }
 
-double chain_energy_rel_error(const gw_chain_energy *e, double e0, double *wg)
+/* The speed the column's scales are taken at: v_imp, or under gravity at
+ * least the speed v_g whose binary wall collision peaks at the column's weight
+ * W = g sum m (F_max = K (5 m v^2 / (4 K))^(3/5) = W, bead 1's mass m on the
+ * wall's K). Below it the column is carried by its weight and its contacts ring
+ * at that scale, not at v_imp's. The plan's time scales (chain_collide.c: chain
+ * --n 3 --gravity 1e4 --vimp 1e-9 --mass 1e3 --k 1e3 --kwall 1e3 planned t_max
+ * 1.2e4 s and a largest step of 33 s from v_imp, and took 1.8e7 steps) and the
+ * states' scales of the solvers' absolute tolerance (gw_chain_create: at v_imp
+ * 1e-9 the velocities' atol was 1e-21 m/s for a column ringing at 1 m/s, and
+ * CVODE's BDF closed the ledger of --n 30 --gravity 1e4 only to 2.3e-4 in 6.8e5
+ * steps) are both taken here. Above it (every run where gravity is a
+ * correction) v_imp. */
+double chain_speed_scale(const gw_chain_params *p)
+{
+    if (!(p->gravity > 0) || !(p->kwall > 0))
+        return p->v_imp;
+    const double m0 = p->masses ? p->masses[0] : p->mass;
+    double mt = 0;
+    for (int i = 0; i < p->n; i++)
+        mt += p->masses ? p->masses[i] : p->mass;
+    const double w = p->gravity * mt, vg = sqrt(4.0 * p->kwall / (5.0 * m0) * pow(w / p->kwall, 5.0 / 3.0));
+    return isfinite(vg) && vg > p->v_imp ? vg : p->v_imp;
+}
+
+double chain_energy_rel_error(const gw_chain *c, const gw_chain_energy *e, double e0, double *wg)
 {
     if (-e->gravity > *wg)
         *wg = -e->gravity;
-    return fabs(e->total - e0) / (e0 + *wg);
+    return fabs(e->total - e0) / fmax(e0 + *wg, c->e_scale);
 }
 
 int chain_blown_up(const gw_chain *c, const double *y, double energy_error, const gw_solver_type *type,
@@ -627,14 +651,18 @@ int gw_chain_create(const gw_chain_params *p, gw_chain **out, gw_err *err)
         c->uniform &= c->minv[i] == c->minv[0] && c->kc[i - 1] == c->kc[0];
     c->kwall = p->kwall;
     c->gwall = p->gamma * p->kwall / (p->kc && n > 1 ? p->kc[0] : p->k);
-    double xs = gw_chain_dmax1(c->m[0], p->kwall, p->v_imp);
+    /* the states' scales (the solvers' absolute tolerance is atol times these)
+     * at the column's speed scale: v_imp, or the speed its weight rings at */
+    const double vs = chain_speed_scale(p);
+    double xs = gw_chain_dmax1(c->m[0], p->kwall, vs);
     for (int i = 0; i < n; i++) {
         c->scale[2 * i] = xs;
-        c->scale[2 * i + 1] = p->v_imp;
+        c->scale[2 * i + 1] = vs;
     }
     double e0 = 0;
     for (int i = 0; i < n; i++)
-        e0 += 0.5 * c->m[i] * p->v_imp * p->v_imp;
+        e0 += 0.5 * c->m[i] * vs * vs;
+    c->e_scale = vs > p->v_imp ? e0 : 0; /* the weight's ringing sets the scale */
     c->general = general;
     c->wl = wl;
     c->i_diss = i_diss;

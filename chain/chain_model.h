@@ -18,6 +18,10 @@ struct gw_chain {
     int uniform;                 /* every kc equal and every minv equal: the lean
                                     loop reads kc[0] and minv[0] only */
     double *scale;               /* [dim] */
+    double e_scale;              /* the energy at the column's speed scale when
+                                    gravity sets it above v_imp (sum m v_s^2 / 2,
+                                    chain_speed_scale), else 0: the energy
+                                    ledger's least scale (chain_energy_rel_error) */
     gw_system sys;
     int general;                 /* any wall law, sensor body or guide option */
     chain_wall_law wl;
@@ -75,14 +79,21 @@ int chain_sensor_steps_check(const gw_chain_params *p, const gw_solver_type *typ
 int chain_blown_up(const gw_chain *c, const double *y, double energy_error, const gw_solver_type *type,
                    const char *who, double t, gw_err *err);
 
-/* The relative energy error of energies e against the initial total e0 (J):
- * |E - e0| over the energy the run has held, e0 plus the largest work gravity
- * has done on the column so far (*wg, J, updated: max of -e->gravity, 0 at the
- * start). Without gravity the scale is e0 itself, bit for bit. Over e0 alone,
- * a column set on the wall slowly under gravity (v_imp 1e-6 m/s, where gravity
- * puts 1e8 times e0 into motion) read an error of 1e-8 of its energy as 1 and
- * was stopped as blown up. */
-double chain_energy_rel_error(const gw_chain_energy *e, double e0, double *wg);
+/* The relative energy error of column c's energies e against the initial
+ * total e0 (J): |E - e0| over the energy the run has held, e0 plus the largest
+ * work gravity has done on the column so far (*wg, J, updated: max of
+ * -e->gravity, 0 at the start), and at least c->e_scale. Without gravity the
+ * scale is e0 itself, bit for bit. Over e0 alone, a column set on the wall
+ * slowly under gravity (v_imp 1e-6 m/s, where gravity puts 1e8 times e0 into
+ * motion) read an error of 1e-8 of its energy as 1 and was stopped as blown
+ * up; over e0 + wg alone, its first steps, before gravity had done any work,
+ * read an error of 4.6e-22 J as 2.3e-4 (--n 30 --gravity 1e4 --vimp 1e-9,
+ * CVODE at t = 8.1e-13 s, where the run's energy is 0.1 J). */
+double chain_energy_rel_error(const gw_chain *c, const gw_chain_energy *e, double e0, double *wg);
+/* The speed the column's time scales and the states' tolerance scales are
+ * taken at: v_imp, or under gravity the larger speed whose wall collision
+ * peaks at the column's weight (chain_model.c). */
+double chain_speed_scale(const gw_chain_params *p);
 
 /* The shortest binary contact time tau_1 (gw_chain_tau1) at relative speed v over
  * the column's contacts: every pair of beads (reduced mass, its coefficient) and

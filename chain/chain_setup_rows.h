@@ -97,7 +97,8 @@ _Static_assert(GW_SHEET_FITTED == 0 && GW_SHEET_HERTZ == 1 && GW_SHEET_LAYER == 
            "cvode: bdf|adams; arkode: erk|dirk|imex [bdf / erk]"), \
     ROW("rtol", GW_PARAM_DOUBLE, rtol, "", GW_TOL_MIN, GW_TOL_MAX, 0, NULL, "R", "relative tolerance [1e-12]"), \
     ROW("atol", GW_PARAM_DOUBLE, atol, "", GW_TOL_MIN, GW_TOL_MAX, 0, NULL, "A", \
-        "absolute tolerance in units of the overlap and velocity scales [1e-12]"), \
+        "absolute tolerance in units of the overlap and velocity scales (at v_imp, or at the speed the " \
+        "column's weight rings at when gravity sets a larger one) [1e-12]"), \
     ROW("dt", GW_PARAM_DOUBLE, dt, "s", 0, 1, 0, NULL, "DT", dt_help), \
     /* 0 is not "unlimited": the run caps the step at a quarter of the shortest \
      * binary contact at 2 v_imp (chain_collide.c, chain_drop.c; the settings \

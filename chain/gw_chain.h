@@ -357,7 +357,10 @@ gw_chain_run_opts gw_chain_run_opts_default(void);
  * F_max and tau_N of an undamped column (N <= 40, no gravity) within the relative
  * error rel_acc of a converged solution, sampling every tau_1/10 or coarser.
  * From the convergence study bench/bench_falcon_accuracy (see chain_collide.c).
- * Returns 0 when rel_acc is outside [1e-9, 1e-2] (use an adaptive backend). */
+ * Returns 0 when rel_acc is outside [GW_CHAIN_RK4_ACCURACY_MIN, _MAX] =
+ * [1e-9, 1e-2] (use an adaptive backend). */
+#define GW_CHAIN_RK4_ACCURACY_MIN 1e-9
+#define GW_CHAIN_RK4_ACCURACY_MAX 1e-2
 int gw_chain_rk4_steps_per_tc(double rel_acc);
 /* Whether that study covers the column p run up to n_max beads: undamped, no
  * gravity, N <= 40, a Hertz wall on a rigid sensor (no sheet layer, yield or

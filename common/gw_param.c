@@ -67,16 +67,20 @@ static int unset(const gw_param *p, const void *f)
                            (p->type == GW_PARAM_LONG && *(const long *)f == GW_PARAM_UNSET_LONG));
 }
 
-/* within [min, max], "(" / ")" for open ends; messages "(0, 1000]", "> 0" */
+/* within [min, max], "(" / ")" for open ends, or 0 for an or_zero row;
+ * messages "(0, 1000]", "> 0", "[1e-09, 0.01] (or 0)" */
 static int range_bad(const gw_param *p, double x, gw_err *err, const char *what)
 {
     if (x >= p->min && x <= p->max && !(p->open_min && !(x > p->min)) && !(p->open_max && !(x < p->max)))
         return GW_OK;
+    if (p->or_zero && x == 0)
+        return GW_OK;
+    const char *zero = p->or_zero ? " (or 0)" : "";
     if (!isfinite(p->max))
-        return gw_err_set(err, GW_EINVAL, "%s: %s%g must be %s %g", p->name, what, x,
-                          p->open_min ? ">" : ">=", p->min);
-    return gw_err_set(err, GW_EINVAL, "%s: %s%g is outside %s%g, %g%s", p->name, what, x,
-                      p->open_min ? "(" : "[", p->min, p->max, p->open_max ? ")" : "]");
+        return gw_err_set(err, GW_EINVAL, "%s: %s%g must be %s %g%s", p->name, what, x,
+                          p->open_min ? ">" : ">=", p->min, zero);
+    return gw_err_set(err, GW_EINVAL, "%s: %s%g is outside %s%g, %g%s%s", p->name, what, x,
+                      p->open_min ? "(" : "[", p->min, p->max, p->open_max ? ")" : "]", zero);
 }
 
 /* index of value in the comma-separated choices, -1 if absent */
@@ -182,6 +186,8 @@ static int set_integer_text(const gw_param *p, void *obj, const char *value, gw_
     }
     long v;
     int rc = gw_parse_long(value, p->name, lo, hi, &v, err);
+    if (rc != GW_OK && p->or_zero && gw_parse_long(value, p->name, 0, 0, &v, NULL) == GW_OK)
+        rc = GW_OK; /* 0 besides the range */
     if (rc != GW_OK)
         return rc;
     if (p->type == GW_PARAM_INT)

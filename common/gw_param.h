@@ -68,15 +68,20 @@ typedef struct gw_param {
     const char *metavar;  /* placeholder in --help ("V") */
     const char *rows;     /* arrays: number of rows, a number or an int row's name */
     const char *cols;     /* arrays: values per row, likewise (NULL = 1) */
-    int optional;         /* 1: the row starts "not given" (GW_PARAM_UNSET_*) even
+    int optional;         /* 1: the row starts "not given" (GW_PARAM_UNSET_*, NaN,
+                             -1; a text row NULL) even
                              when it has a default; def is then the value a run
                              uses when the row is not given (gw_param_resolve),
                              and a value given at the default's value is told
                              apart from none (gw_param_given) */
+    int or_zero;          /* 1: a number row takes 0 besides [min, max] (0 is a
+                             setting the help names, "0 = ..."; min > 0): the
+                             range a caller can give is {0} and [min, max] */
 } gw_param;
 
-/* "Not given" in a number row that has no default or is optional: double NaN,
- * int and long these (outside every row's range), choice -1. */
+/* "Not given" in a row that has no default or is optional: double NaN, int
+ * and long these (outside every row's range), choice -1, text NULL (a text
+ * row's default is then strdup'ed by gw_param_resolve). */
 #define GW_PARAM_UNSET_INT (-(int)(~0u >> 1) - 1)     /* INT_MIN (no <limits.h> in this header) */
 #define GW_PARAM_UNSET_LONG (-(long)(~0ul >> 1) - 1) /* LONG_MIN */
 
@@ -95,7 +100,8 @@ const char *gw_param_type_name(gw_param_type type);
 
 /* Fill obj's fields from t's defaults: a row's def is set as if by gw_param_set;
  * rows without a default get NaN (double), -1 (choice), NULL (text), an empty
- * list, or 0; optional rows get "not given" (NaN, GW_PARAM_UNSET_INT/LONG, -1).
+ * list, or 0; optional rows get "not given" (NaN, GW_PARAM_UNSET_INT/LONG, -1,
+ * NULL).
  * Other bytes of obj are left as they are. GW_EINVAL (message naming the row)
  * only for a table whose default is invalid (a bug). */
 int gw_param_init(const gw_param *t, void *obj, gw_err *err);

@@ -335,6 +335,10 @@ int gw_layer_sample_format_check(const char *path, gw_err *err);
 int gw_layer_sample_out_check(const char *path, const char *what, gw_err *err);
 
 /* Pluviation (docs/physics.md 2.2). */
+/* The smallest modulus_factor a pluviation takes (the table's row and
+ * gw_layer_make's check alike). */
+#define GW_LAYER_MODULUS_FACTOR_MIN 1e-9
+
 typedef struct gw_layer_make_params {
     int n;                 /* particles [300] */
     double rm;             /* mean radius R_m, m [0.325] */
@@ -344,7 +348,8 @@ typedef struct gw_layer_make_params {
     double ke_threshold;   /* stop when E_k < ke_threshold * m_total g R_m [1e-5] */
     double t_max;          /* give up after t_max s of simulated time [6] */
     double damping;        /* Hunt-Crossley alpha while settling, s/m [0.3] */
-    double modulus_factor; /* settle with G * factor, then relax with true G [1] */
+    double modulus_factor; /* settle with G * factor, then relax with true G, in
+                              [GW_LAYER_MODULUS_FACTOR_MIN, 1] [1] */
     double dt;             /* fixed step, s [2e-5] */
     const gw_solver_type *solver; /* rk4 or verlet (explicit DEM), contact events
                                      not located either way [gw_solver_rk4] */

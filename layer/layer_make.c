@@ -79,7 +79,7 @@ static int check_make(const gw_layer_make_params *m, gw_err *err)
         (rc = gw_check_positive(m->ke_threshold, "ke-threshold", err)) != GW_OK ||
         (rc = gw_check_positive(m->t_max, "t-max (s)", err)) != GW_OK ||
         (rc = gw_check_range(m->damping, "damping (s/m)", 0, 1e3, err)) != GW_OK ||
-        (rc = gw_check_range(m->modulus_factor, "modulus-factor", 1e-9, 1, err)) != GW_OK ||
+        (rc = gw_check_range(m->modulus_factor, "modulus-factor", GW_LAYER_MODULUS_FACTOR_MIN, 1, err)) != GW_OK ||
         (rc = gw_check_positive(m->dt, "dt (s)", err)) != GW_OK ||
         (rc = m->solver == gw_solver_verlet || m->solver == gw_solver_rk4 ? GW_OK
               : gw_err_set(err, GW_EINVAL, "solver: pluviation takes verlet or rk4")) != GW_OK ||

@@ -27,7 +27,10 @@ static const gw_param make_params[] = {
     ROW("ke-threshold", GW_PARAM_DOUBLE, ke_threshold, "", 0, 1, 1, 0, "1e-5", "E", "stop when E_k < E * M g R_m [1e-5]"),
     ROW("t-max", GW_PARAM_DOUBLE, t_max, "s", 0, 1e4, 1, 0, "6", "T", "give up after T s simulated [6]"),
     ROW("damping", GW_PARAM_DOUBLE, damping, "s/m", 0, 1e3, 0, 0, "0.3", "A", "Hunt-Crossley alpha while settling, s/m [0.3]"),
-    ROW("modulus-factor", GW_PARAM_DOUBLE, modulus_factor, "", 0, 1, 1, 0, "1", "F", "settle with F*G (at most half of t-max) then relax with G [1]"),
+    /* the range the pluviation takes (layer_make.c): the row said (0, 1] while
+     * values below 1e-9 were refused */
+    ROW("modulus-factor", GW_PARAM_DOUBLE, modulus_factor, "", GW_LAYER_MODULUS_FACTOR_MIN, 1, 0, 0, "1", "F",
+        "settle with F*G (at most half of t-max) then relax with G, F in [1e-9, 1] [1]"),
     ROW("dt", GW_PARAM_DOUBLE, dt, "s", 0, 1, 1, 0, "2e-5", "DT", "fixed step, s [2e-5]"),
     CHOICE("solver", solver, "rk4,verlet", "rk4", "NAME",
            "rk4 or verlet (explicit DEM); contact events are not located while settling [rk4]"),

@@ -18,3 +18,13 @@ def write_bouncing_diagram(path):
                     f.write("%d,%g,%g,%d,%g,%d,0.5,0.6,10,20,10,12,0.6,%g,0.001,0.6,1e-6,nan,0.01,100\n"
                             % (k, x, h, pt, 0.05 * pt, b, 1.5 + 0.1 * pt))
                     k += 1
+
+
+def write_no_diagram(path):
+    """4 cases over rb-rm alone: no bouncing diagram (that needs rb-rm and
+    height-rm), so the B.31 options (fit, gamma-deg, delta-rm) have no effect."""
+    with open(path, "w") as f:
+        f.write("# param vi = 20\ncase,rb-rm,point,%s\n" % COLUMNS)
+        for k in range(4):
+            f.write("%d,%g,%d,0,%d,0.5,0.6,10,20,10,12,0.6,1.5,0.001,0.6,1e-6,nan,0.01,100\n"
+                    % (k, 1 + (k // 2) * 0.5, k % 2, k % 2))

@@ -43,6 +43,19 @@
 # input rows and the command's --help must also list the same flags (json,
 # out and help aside).
 #
+# Inside edges (every command with a study, from the table too): each number
+# row that is a flag of the command is given the numbers just inside its range
+# (INSIDE_MIN, INSIDE_MAX of gw_param_rows: the closed end itself, or the end
+# moved inward by 1e-9 of its size, by 1e-300 from 0) and, for a row that takes
+# 0 besides its range (or_zero), 0. The command may run (a run still going
+# after 3 s counts as taken), fail, or refuse by a rule over other settings
+# ("has no effect", a bound naming another flag: drop's "dt-out: ... outside
+# [t-max/1e7, t-max]"), but never refuse the value as out of range ("is
+# outside [1e-09, 1]", "must be > 0"): the row's range is
+# what the command takes (layer-make's modulus-factor row said (0, 1] and the
+# pluviation refused (0, 1e-9); falcon's accuracy row said [0, 1e-2] and the
+# study refused (0, 1e-9)).
+#
 # A longer run: GW_PROPERTY_VALUES="nan inf ... 1e-3 1e3 5e-324" overrides the
 # value list; GW_PROPERTY_CMDS="chain falcon" restricts the commands.
 set -u
@@ -115,20 +128,20 @@ table_cmd() { [ -n "$ROWS" ] && case "$TABLE_CMDS" in *" $1 "*) return 0;; esac;
 # command without a table the range fields are "-"
 numeric_flags() {
     if table_cmd "$1"; then
-        "$ROWS" "$1" | awk '$3 == "double" || $3 == "long" || $3 == "int" {print $2, "@row", $4, $5, $6, $7, $8, $9}'
+        "$ROWS" "$1" | awk '$3 == "double" || $3 == "long" || $3 == "int" {print $2, "@row", $4, $5, $6, $7, $8, $9, $11}'
         return
     fi
     "$GW" "$1" --help | awk '/^  --/ {print $1, $2}' |
-        awk '$2 ~ /^[A-Z][A-Z0-9:,.]*$/ && $2 !~ /^(NAME|DIR|FILE|MODEL|KIND|LAW|HOW|LIST)$/ {sub(/^--/, "", $1); print $1, $2, "- - - - - -"}'
+        awk '$2 ~ /^[A-Z][A-Z0-9:,.]*$/ && $2 !~ /^(NAME|DIR|FILE|MODEL|KIND|LAW|HOW|LIST)$/ {sub(/^--/, "", $1); print $1, $2, "- - - - - - -"}'
 }
 
-# in_range VALUE MIN MAX OPEN_MIN OPEN_MAX: 0 when VALUE is a decimal number
-# inside the row's range, 1 outside, 2 when it is no decimal number (hex "0x10"
+# in_range VALUE MIN MAX OPEN_MIN OPEN_MAX [OR_ZERO]: 0 when VALUE is a decimal
+# number inside the row's range (or 0 for an OR_ZERO row), 1 outside, 2 when it is no decimal number (hex "0x10"
 # is a number to strtod: such a value is judged by its class only)
 in_range() {
-    awk -v v="$1" -v lo="$2" -v hi="$3" -v olo="$4" -v ohi="$5" 'BEGIN {
+    awk -v v="$1" -v lo="$2" -v hi="$3" -v olo="$4" -v ohi="$5" -v orz="${6:-0}" 'BEGIN {
         if (v !~ /^[-+]?([0-9]+[.]?[0-9]*|[.][0-9]+)([eE][-+]?[0-9]+)?$/) exit 2
-        x = v + 0; l = (lo == "-inf") ? -1e308 * 10 : lo + 0; h = (hi == "inf") ? 1e308 * 10 : hi + 0
+        x = v + 0; if (orz == 1 && x == 0) exit 0; l = (lo == "-inf") ? -1e308 * 10 : lo + 0; h = (hi == "inf") ? 1e308 * 10 : hi + 0
         if (x < l || x > h || (olo == 1 && x <= l) || (ohi == 1 && x >= h)) exit 1
         exit 0 }'
 }
@@ -156,7 +169,7 @@ run_cmd() {
     if table_cmd "$cmd"; then
         ncase=$((ncase+1)); same_flags "$cmd" && passes=$((passes+1)) || fails=$((fails+1))
     fi
-    while read -r flag mv rmin rmax romin romax below above; do
+    while read -r flag mv rmin rmax romin romax below above orz; do
         [ -n "$flag" ] || continue
         extra=""
         [ "$below" != "-" ] && extra="$below"
@@ -191,7 +204,7 @@ run_cmd() {
                 if [ "$mv" = "@row" ]; then # a table row: its range decides
                     case "$val" in
                     nan|inf|-inf|junk|@empty) allow="2";;
-                    *) in_range "$val" "$rmin" "$rmax" "$romin" "$romax"
+                    *) in_range "$val" "$rmin" "$rmax" "$romin" "$romax" "$orz"
                        case $? in 0|2) allow="012";; *) allow="2";; esac;;
                     esac
                 else
@@ -229,6 +242,33 @@ run_cmd() {
             rm -rf "$out"
         done
     done < <(numeric_flags "$cmd")
+    # the inside edges of every number row that is a flag (see the head)
+    if [ -n "$ROWS" ]; then
+        while read -r flag ilo ihi orz; do
+            printf '%s\n' "$help" | grep -qE -- "^  --$flag " || continue
+            vals="$ilo $ihi"; [ "$orz" = 1 ] && vals="$vals 0"
+            for val in $vals; do
+                [ "$val" = "-" ] && continue
+                ncase=$((ncase+1))
+                out="$tmp/in_$ncase"; mkdir "$out"
+                # a refusal comes before any work: a run still going after 3 s
+                # (killed: 137) has taken the value, as a legitimate long run
+                bash -c "$MEMLIM exec timeout -s KILL 3 \"\$@\"" _ "$GW" "$cmd" $(base_args "$cmd" "$out") \
+                    "--$flag" "$val" >"$tmp/stdout" 2>"$tmp/stderr" </dev/null
+                rc=$?
+                if [ $rc -gt 2 ] && [ $rc -ne 137 ]; then
+                    ko "$cmd --$flag $val (inside the row's range): exit $rc"
+                elif [ $rc -eq 2 ] && grep -qE -- "--$flag: .*(outside [[(][-+0-9.]|must be [<>]=? [-+0-9.])" "$tmp/stderr"; then
+                    # (a bound naming another setting, "outside [t-max/1e7, t-max]", is a
+                    # rule over the combination with the base run's options)
+                    ko "$cmd --$flag $val is inside the row's range but refused as out of range: $(head -1 "$tmp/stderr")"
+                else
+                    passes=$((passes+1))
+                fi
+                rm -rf "$out"
+            done
+        done < <("$ROWS" "$cmd" | awk '$3 == "double" || $3 == "long" || $3 == "int" {print $2, $12, $13, $11}')
+    fi
     echo "$ncase $passes $fails $known" >"$tmp/counts"
 }
 base=$tmp

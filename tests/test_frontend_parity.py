@@ -11,7 +11,9 @@ command, the same values go to the front-ends, each over a small baseline run:
   the row's documented min and max (from the table) and just outside each end,
   0, nan and 1.5 (integer rows); with --full also -1, 1e308, -1e308, 1e-308
   (subnormal), 3e-308, inf, -inf, 2^63 and -0.5; every name of a choice row
-  and an unknown one.
+  and an unknown one; an optional text row (granwave.params "optional") at its
+  default's text, given (layer-stats' fit, on a table without a diagram where
+  a given fit has no effect: refused by all three, as none given runs).
 
 Asserted:
   - the program and Python both refuse (the program: exit 2 with exactly one
@@ -66,6 +68,7 @@ LONG_TIMEOUT = 120.0  # where one side refused and the other was still running a
 TMP = tempfile.mkdtemp(prefix="gw_parity_")
 SAMPLE = os.path.join(TMP, "S.txt")
 TABLE = os.path.join(TMP, "syn.csv")
+NODIA = os.path.join(TMP, "nodia.csv")  # a table without a bouncing diagram
 
 ENV = dict(os.environ)
 ENV.setdefault("PYTHONPATH", os.path.join(SRC, "python"))
@@ -113,6 +116,9 @@ CONTEXT = {
     ("layer-impact", "method"): {"exact": None, "solver": "cvode"},
     ("layer-make", "aspect-max"): {"clumps": None}, ("layer-make", "clump-mass"): {"clumps": None},
     ("layer-stats", "gamma-deg"): {"fit": "beta,a_over_b"}, ("layer-stats", "delta-rm"): {"fit": "beta,a_over_b"},
+    # an optional text row is tried at its default's text, where being given
+    # decides a refusal: fit on a table without a diagram has no effect
+    ("layer-stats", "fit"): {"input": NODIA},
 }
 
 WORKER = r'''
@@ -138,6 +144,8 @@ def c_value(p, value):
     no C value is that one (1.5 into a long)."""
     if p.type == _core.CHOICE:
         return p.choices.index(value) if value in p.choices else len(p.choices)  # an index past the names
+    if p.type == _core.TEXT:
+        return value if isinstance(value, str) else None
     if isinstance(value, list) or isinstance(value, str):
         return None
     if p.type == _core.DOUBLE:
@@ -163,6 +171,13 @@ def c_call(func, kwargs, key):
         addr = ctypes.addressof(buf) + p.offset
         if p.type == _core.RANGE:
             (ctypes.c_long * 2).from_address(addr)[:] = [v, v]
+        elif p.type == _core.TEXT:  # an owned copy, as the struct's clear frees it
+            libc = ctypes.CDLL(None)
+            libc.strdup.restype, libc.strdup.argtypes = ctypes.c_void_p, [ctypes.c_char_p]
+            libc.free.argtypes = [ctypes.c_void_p]
+            cell = ctypes.c_void_p.from_address(addr)
+            libc.free(cell.value)
+            cell.value = libc.strdup(v.encode())
         else:
             (ctypes.c_int if p.type == _core.CHOICE else C_TYPES[p.type]).from_address(addr).value = v
         with _core.Interruptible():
@@ -533,7 +548,8 @@ def check(cmd, p, value, why, types):
                     len(diff), len(common), ", ".join(diff), k, str(c["nums"][k])[:60], str(py["nums"][k])[:60]))
     # the C caller: by default where Python refuses (a struct that runs there is
     # a finding, found within TIMEOUT); --full: every value
-    if not problems and (not isinstance(value, str) or p["type"] == "choice") and (FULL or py["kind"] == "refused"):
+    if not problems and (not isinstance(value, str) or p["type"] in ("choice", "text")) and \
+            (FULL or py["kind"] == "refused"):
         problems += c_check(cmd, p, kw, py)
     if problems:
         fails.append((label, problems))
@@ -593,6 +609,7 @@ def make_fixtures():
     subprocess.run([GW, "layer-make", "--n", "40", "--width-rm", "14", "--seed", "2", "--ke-threshold", "1e-2",
                     "--solver", "verlet", "--out", SAMPLE], check=True, capture_output=True)
     synthetic_tables.write_bouncing_diagram(TABLE)  # a diagram with a boundary (synthetic_tables.py)
+    synthetic_tables.write_no_diagram(NODIA)
 
 
 # the studies share rows (the column's material ... guide-viscous in chain,
@@ -635,6 +652,9 @@ def main():
             if p["name"] not in flags:
                 missing.append("%s: keyword %s has no option --%s" % (cmd, p["keyword"], p["name"]))
                 continue
+            if p["type"] == "text" and p.get("optional") and p["default"]:
+                # the default's text given: told from none alike (gw_param.optional)
+                check(cmd, p, p["default"], "the default's text, given", types)
             if p["type"] in ("text", "flag"):
                 continue
             if p["min"] is None:

@@ -10,7 +10,9 @@
  * without clumps, `chain --radii ... --radius 4e-3`, `chain --kwall K
  * --wall-material steel` (and the bead material with mass, k, kwall; the
  * wall's with a fitted sheet), `layer-stats --fit
- * ...,tan_gamma --gamma-deg 0.2`. And dispersion's column-n accepted 0 in the
+ * ...,tan_gamma --gamma-deg 0.2`, `layer-stats --fit beta,a_over_b` on a
+ * table without a diagram (while `--fit a_over_b,beta` was refused: a text
+ * row judged by its text). And dispersion's column-n accepted 0 in the
  * library (Python) while the program refused it.
  *
  * Asserted, through the library (gw_param_set, as Python and the program set
@@ -25,6 +27,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "gw_chain_study.h"
 #include "gw_layer_study.h"
@@ -257,6 +260,77 @@ static void stats_gamma(void)
     gw_stats_setup_clear(&s);
 }
 
+/* A sweep table of 4 cases over rb-rm alone: no bouncing diagram (that needs
+ * rb-rm and height-rm), so the B.31 options have no effect on it. */
+static int write_flat_table(const char *path)
+{
+    FILE *f = fopen(path, "w");
+    if (!f)
+        return -1;
+    fprintf(f, "# param vi = 20\ncase,rb-rm,point,x_impact,bounced,e_n,e,alpha_r,v_ni,v_nr,v_r,penetration,"
+               "penetration_rm,dissipated_first_contact,block_loss_first_contact,energy_error,wave_speed,t_end,"
+               "steps\n");
+    for (int k = 0; k < 4; k++)
+        fprintf(f, "%d,%g,%d,0,%d,0.5,0.6,10,20,10,12,0.6,1.5,0.001,0.6,1e-6,nan,0.01,100\n", k, 1 + (k / 2) * 0.5,
+                k % 2, k % 2);
+    return fclose(f);
+}
+
+/* layer-stats' fit: an optional text row. Before, it was judged by its text:
+ * "beta,a_over_b" given on a table without a diagram ran silently while
+ * "a_over_b,beta" (the same fit) was refused as having no effect. */
+static void stats_fit(void)
+{
+    const gw_param *t = gw_stats_setup_params(), *fit = gw_param_find(t, "fit");
+    gw_stats_setup s;
+    gw_stats_setup_init(&s);
+    gw_test_true(fit && fit->optional && fit->type == GW_PARAM_TEXT && fit->def && strcmp(fit->def, "beta,a_over_b") == 0,
+                 "layer-stats fit: an optional text row, default beta,a_over_b");
+    gw_test_true(s.fit == NULL && !gw_param_given(fit, &s), "fit: init leaves it not given (NULL)");
+    char buf[64] = "x";
+    gw_test_true(gw_param_format(fit, &s, buf, sizeof buf) == 0 && buf[0] == '\0', "fit: format '' when not given");
+    cJSON *j = gw_param_json(t, &s);
+    gw_test_true(j && cJSON_IsNull(cJSON_GetObjectItem(j, "fit")), "fit: json null when not given");
+    cJSON_Delete(j);
+    gw_err e = {{0}};
+    gw_stats_setup r;
+    gw_test_true(gw_param_copy(t, sizeof r, &r, &s, &e) == GW_OK && gw_param_resolve(t, &r, &e) == GW_OK &&
+                     r.fit && strcmp(r.fit, "beta,a_over_b") == 0 && r.fit != fit->def,
+                 "fit: resolve gives an owned copy of the default");
+    gw_param_clear(t, &r);
+    gw_test_true(set(t, &s, "fit", "beta,a_over_b") == GW_OK && gw_param_given(fit, &s),
+                 "fit: given at the default's text is given");
+    gw_stats_setup_clear(&s);
+
+    char path[] = "/tmp/gw_param_given_XXXXXX";
+    int fd = mkstemp(path);
+    if (fd < 0 || write_flat_table(path) != 0) {
+        gw_test_true(0, "write the table without a diagram");
+        return;
+    }
+    close(fd);
+    const char *fits[] = {NULL, "beta,a_over_b", "a_over_b,beta", "beta,a_over_b,offset"};
+    for (size_t k = 0; k < sizeof fits / sizeof fits[0]; k++) {
+        gw_stats_setup_init(&s);
+        s.defaults = (gw_stats_defaults){1, 0, 20, 2650};
+        set(t, &s, "input", path);
+        if (fits[k])
+            set(t, &s, "fit", fits[k]);
+        gw_stats_analysis A;
+        gw_err ea = {{0}};
+        int rc = gw_stats_analyse(&s, &A, &ea);
+        char what[160];
+        snprintf(what, sizeof what, "layer-stats without a diagram, fit %s", fits[k] ? fits[k] : "not given");
+        if (fits[k])
+            refused(rc, &ea, "fit", what);
+        else
+            gw_test_true(rc == GW_OK && A.fit_mask == (GW_STATS_B31_BETA | GW_STATS_B31_AB) && !A.fit_given, what);
+        gw_stats_analysis_free(&A);
+        gw_stats_setup_clear(&s);
+    }
+    unlink(path);
+}
+
 int main(void)
 {
     states();
@@ -264,5 +338,6 @@ int main(void)
     layer_make();
     chain_radius();
     stats_gamma();
+    stats_fit();
     return gw_test_summary("test_param_given");
 }

@@ -174,8 +174,10 @@ def closure_check(name, cmd, args, d):
         check(isinstance(p, (int, float)) and 0 <= p <= 1, "%s: porosity %r in [0, 1]" % (name, p))
 
 
-def case(cmd, args, may_fail=False, cpu_limit=CPU_LIMIT, out=None, full_only=False):
-    """Run granwave CMD ARGS (--json added) and check the contract above."""
+def case(cmd, args, may_fail=False, cpu_limit=CPU_LIMIT, out=None, full_only=False, must_run=False):
+    """Run granwave CMD ARGS (--json added) and check the contract above;
+    must_run: a refusal (exit 2) fails too (a value the row's range states,
+    with nothing it conflicts with)."""
     if full_only and not FULL:
         return
     args = [str(a) for a in args]
@@ -205,6 +207,8 @@ def case(cmd, args, may_fail=False, cpu_limit=CPU_LIMIT, out=None, full_only=Fal
         named = re.match(r"granwave %s(?: --|: )([a-z0-9-]+)[: ]" % re.escape(cmd), line)
         check(len(lines) == 1 and named is not None and (named.group(1) in flags or named.group(1) in HELP_FLAGS(cmd)),
               "%s: refused in one line naming a flag (%r)" % (name, se.strip()[:300]))
+        if must_run:
+            check(False, "%s: a value the row documents is taken, not refused (%r)" % (name, line[:300]))
         check(so == "", "%s: nothing on stdout when refused" % name)
         if outpath:
             check(not os.path.exists(outpath), "%s: --out not written when refused" % name)
@@ -289,6 +293,11 @@ def study_cases():
     case("falcon", ["--quiet", "--jobs", 1, "--n", "1:2", "--heights", "5e-17"])
     case("falcon", ["--quiet", "--jobs", 1, "--n", "1:2", "--heights", "none", "--accuracy", 0.01],
          full_only=True)
+    # the row's range is [1e-9, 1e-2] and 0 (the solver options as given): taken
+    # at its ends (test_cli_property asserts no value inside it is refused as
+    # out of range: the row said [0, 1e-2] while (0, 1e-9) was refused)
+    case("falcon", ["--quiet", "--jobs", 1, "--n", "1:2", "--heights", "none", "--accuracy", "1e-9"], must_run=True)
+    case("falcon", ["--quiet", "--jobs", 1, "--n", "1:2", "--heights", "none", "--accuracy", 0], must_run=True)
     case("falcon", ["--quiet", "--jobs", 1, "--n", "99999:100000", "--heights", "none"])
     case("wavespeed", ["--quiet", "--jobs", 1, "--n", "6:8", "--vimp", "1e-9,1000"])
     case("wavespeed", ["--quiet", "--jobs", 1, "--n", "6:8", "--vimp", "0.3,0.5", "--threshold", "1e-6"],
@@ -325,7 +334,7 @@ def layer_cases():
     for a in (["--n", 1, "--t-max", 0.5], ["--friction", 89.999, "--poisson", 0.499999],
               ["--friction", 0, "--poisson", 0, "--damping", 0], ["--volume-ratio", 1e6], ["--width-rm", 1e6],
               ["--width-rm", 2.2], ["--gravity", "1e-300"], ["--t-max", "1e-300"], ["--ke-threshold", 1],
-              ["--modulus-factor", "1e-300"], ["--modulus-factor", "1e-9"], ["--height-rm", 1e6],
+              ["--modulus-factor", "1e-9"], ["--height-rm", 1e6],  # modulus-factor's row: [1e-9, 1]
               ["--skin", "1e-300"], ["--skin", "1e-15"], ["--skin", 1e6], ["--rm", 1000], ["--rm", "1e-5"],
               ["--shear-modulus", "1e-3"], ["--shear-modulus", 1e15], ["--density", "1e-6"], ["--gravity", 1e4],
               ["--damping", 1000], ["--dt", 1], ["--clumps", "--n", 6, "--width-rm", 12, "--aspect-max", 1]):

@@ -46,7 +46,9 @@ static gw_opt *opt_named(gw_opt *opts, const char *name)
     return (gw_opt *)gw_cli_find(opts, name);
 }
 
-/* An option as the drop study's row: help, metavar and range from the table. */
+/* An option as the drop study's row: help, metavar and range from the table;
+ * a number checked by the row itself (gw_param_set_value: dt-out's 0 besides
+ * its range, or_zero). */
 static gw_opt opt_row(const char *name, gw_opt_kind kind, void *dest)
 {
     const gw_param *p = gw_param_find(gw_chain_drop_setup_params(), name);
@@ -56,6 +58,8 @@ static gw_opt opt_row(const char *name, gw_opt_kind kind, void *dest)
         o.hi = p->max;
         o.open_lo = p->open_min;
         o.open_hi = p->open_max;
+        if ((kind == GW_OPT_DOUBLE && p->type == GW_PARAM_DOUBLE) || (kind == GW_OPT_LONG && p->type == GW_PARAM_LONG))
+            o.param = p;
     }
     return o;
 }

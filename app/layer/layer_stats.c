@@ -129,25 +129,26 @@ int gw_cmd_layer_stats(int argc, char **argv)
         return gw_cli_nomem("layer-stats");
     }
     S.defaults = layer_defaults();
-    const char *out = NULL, *fit = "beta,a_over_b";
+    const char *out = NULL, *fit = NULL;
     int json = 0;
-    gw_opt o[] = {
-        {.name = "criterion", .kind = GW_OPT_DOUBLE, .dest = &S.criterion, .metavar = "S",
-         .help = "global bouncing verdict: share of bouncing points >= S, in (0, 1] [0.75]", .lo = 0, .hi = 1,
-         .open_lo = 1},
-        {.name = "fit", .kind = GW_OPT_STRING, .dest = &fit, .metavar = "LIST",
-         .help = "B.31 parameters to fit: beta,a_over_b and optionally offset, tan_gamma [beta,a_over_b]"},
-        {.name = "gamma-deg", .kind = GW_OPT_DOUBLE, .dest = &S.gamma_deg, .metavar = "G",
-         .help = "cone angle gamma, deg, held when not fitted (a fitted one is searched over 1e-6 to 89 deg) [0.2, the paper's]", .lo = 0,
-         .hi = 89, .open_lo = 1},
-        {.name = "delta-rm", .kind = GW_OPT_DOUBLE, .dest = &S.delta_rm, .metavar = "D",
-         .help = "delta* / R_m of B.31, held when the offset is not fitted (a fitted one is searched over >= 0) [measured: mean penetration_rm at "
-                 "the boundary]",
-         .lo = 0, .hi = 1e6},
+    /* criterion, fit, gamma-deg, delta-rm: the table's rows (range, default,
+     * help, and "not given" for the optional fit and gamma-deg: a list given
+     * at the default's text is told from none, as in Python and C) */
+    const gw_param *tab = gw_stats_setup_params();
+    gw_opt o[7];
+    memset(o, 0, sizeof o);
+    if (gw_cli_opt_param(gw_param_find(tab, "criterion"), &S.criterion, &o[0], NULL) != GW_OK ||
+        gw_cli_opt_param(gw_param_find(tab, "fit"), &fit, &o[1], NULL) != GW_OK ||
+        gw_cli_opt_param(gw_param_find(tab, "gamma-deg"), &S.gamma_deg, &o[2], NULL) != GW_OK ||
+        gw_cli_opt_param(gw_param_find(tab, "delta-rm"), &S.delta_rm, &o[3], NULL) != GW_OK) {
+        gw_stats_setup_clear(&S);
+        return fail("the setup table lacks a row (a bug)");
+    }
+    gw_opt more[] = {
         {.name = "out", .kind = GW_OPT_STRING, .dest = &out, .metavar = "DIR",
          .help = "write groups.csv, convergence.csv, binary.csv, walls.csv, diagram.csv, boundary_fit.json"},
-        {.name = "json", .kind = GW_OPT_FLAG, .dest = &json, .help = "print the results as JSON"},
-        {0}};
+        {.name = "json", .kind = GW_OPT_FLAG, .dest = &json, .help = "print the results as JSON"}};
+    memcpy(&o[4], more, sizeof more); /* o[6] stays the end */
     gw_err err = {{0}};
     int help = 0, npos = 0, mask = 0;
     const char *pos[1] = {NULL};
@@ -161,7 +162,7 @@ int gw_cmd_layer_stats(int argc, char **argv)
     }
     if (npos != 1)
         return gw_stats_setup_clear(&S), fail("a results table is required: granwave layer-stats RESULTS.csv");
-    if (gw_stats_fit_parse(fit, &mask, &err) != GW_OK) {
+    if (fit && gw_stats_fit_parse(fit, &mask, &err) != GW_OK) {
         fprintf(stderr, "granwave layer-stats --%s\n", err.msg); /* "fit: ...": the flag's name */
         gw_stats_setup_clear(&S);
         return 2;
@@ -175,9 +176,8 @@ int gw_cmd_layer_stats(int argc, char **argv)
     }
     if (!*pos[0]) /* the table reader's message (the setup refuses an empty input as "input: ...") */
         return gw_stats_setup_clear(&S), fail("layer-stats RESULTS.csv: empty file name");
-    const gw_param *tab = gw_stats_setup_params();
     int rc = gw_param_set(tab, &S, "input", pos[0], &err);
-    if (rc == GW_OK)
+    if (rc == GW_OK && fit) /* given (at the default's text too); not given stays NULL */
         rc = gw_param_set(tab, &S, "fit", fit, &err);
     if (rc == GW_OK)
         rc = gw_stats_analyse(&S, &R, &err);

@@ -314,7 +314,8 @@ typedef struct gw_stats_setup {
     char *input;        /* the sweep table (results.csv), required, owned */
     double criterion;   /* global verdict: share >= S, in (0, 1] [0.75] */
     char *fit;          /* B.31 parameters to fit, comma-separated among offset,
-                           beta, a_over_b, tan_gamma [beta,a_over_b], owned */
+                           beta, a_over_b, tan_gamma, owned [NULL: not given =
+                           beta,a_over_b] */
     double gamma_deg;   /* cone angle gamma, deg in (0, 89] [NaN: not given = 0.2] */
     double delta_rm;    /* delta* / R_m of B.31, [0, 1e6] [NaN: measured] */
     gw_stats_defaults defaults; /* not a table row: set by the caller after
@@ -359,6 +360,7 @@ typedef struct gw_stats_analysis {
     char *cmdline;          /* for the outputs' headers; owned, may be NULL */
     double gamma_deg, delta_rm; /* delta_rm NaN: from the measured penetration */
     int gamma_given;            /* gamma-deg was given (its default's value too) */
+    int fit_given;              /* fit was given (its default's list too) */
     int fit_mask;
     gw_stats_defaults defaults;
     gw_stats_table t;

@@ -30,8 +30,10 @@ static const gw_param setup_params[] = {
     {.name = "criterion", .type = GW_PARAM_DOUBLE, .offset = OFF(criterion), .unit = "", .min = 0, .max = 1,
      .open_min = 1, .def = "0.75", .metavar = "S",
      .help = "global bouncing verdict: share of bouncing points >= S, in (0, 1] [0.75]"},
+    /* optional: given at its default's text too, it is refused or warned of
+     * where it has no effect (a table without a diagram, or without a fit) */
     {.name = "fit", .type = GW_PARAM_TEXT, .offset = OFF(fit), .unit = "", .def = "beta,a_over_b",
-     .metavar = "LIST", .help = "B.31 parameters to fit: beta,a_over_b and optionally offset, tan_gamma [beta,a_over_b]"},
+     .metavar = "LIST", .optional = 1, .help = "B.31 parameters to fit: beta,a_over_b and optionally offset, tan_gamma [beta,a_over_b]"},
     {.name = "gamma-deg", .type = GW_PARAM_DOUBLE, .offset = OFF(gamma_deg), .unit = "deg", .min = 0, .max = 89,
      .open_min = 1, .def = "0.2", .metavar = "G", .optional = 1, /* given at 0.2 too: refused where it has no effect */
      .help = "cone angle gamma, deg, held when not fitted (a fitted one is searched over 1e-6 to 89 deg) [0.2, the paper's]"},
@@ -357,7 +359,8 @@ static int warnings_make(gw_stats_analysis *A)
      * of fit, a start that does not converge). A table without a diagram at
      * all refuses them before this (gw_stats_analyse). */
     char given[64] = "";
-    if (A->fit_mask != (GW_STATS_B31_BETA | GW_STATS_B31_AB))
+    if (A->fit_given) /* given, at the default's list too (judged by value, "beta,a_over_b" given was
+                         not said and "a_over_b,beta" was, on a table without a diagram) */
         gw_snprintf(given, sizeof given, "fit");
     if (A->gamma_given)
         gw_snprintf(given + strlen(given), sizeof given - strlen(given), "%sgamma-deg", *given ? ", " : "");
@@ -385,8 +388,19 @@ int gw_stats_analyse(const gw_stats_setup *s, gw_stats_analysis *A, gw_err *err)
         return rc;
     if (!s->input || !*s->input)
         return gw_err_set(err, GW_EINVAL, "input: a sweep table (results.csv) is required");
-    if ((rc = gw_stats_fit_parse(s->fit, &A->fit_mask, err)) != GW_OK)
+    /* the settings as the run uses them: the optional rows not given at their
+     * defaults (fit's text, gamma-deg); a deep copy, cleared below */
+    gw_stats_setup r;
+    memset(&r, 0, sizeof r);
+    if ((rc = gw_param_copy(setup_params, sizeof r, &r, s, err)) != GW_OK)
         return rc;
+    if ((rc = gw_param_resolve(setup_params, &r, err)) == GW_OK)
+        rc = gw_stats_fit_parse(r.fit, &A->fit_mask, err);
+    A->gamma_deg = r.gamma_deg;
+    gw_param_clear(setup_params, &r);
+    if (rc != GW_OK)
+        return rc;
+    A->fit_given = gw_param_given(gw_param_find(setup_params, "fit"), s);
     /* a fitted offset or tan gamma is searched over its whole range (the
      * global fit): the value that would hold it is not used, not even as a
      * start, so giving it has no effect (the option-effect test found
@@ -396,19 +410,14 @@ int gw_stats_analyse(const gw_stats_setup *s, gw_stats_analysis *A, gw_err *err)
     A->gamma_given = gw_param_given(gw_param_find(setup_params, "gamma-deg"), s);
     if ((A->fit_mask & GW_STATS_B31_TANG) && A->gamma_given)
         return gw_err_set(err, GW_EINVAL, "gamma-deg: has no effect when tan_gamma is fitted (fit lists tan_gamma)");
-    gw_stats_setup r = *s; /* gamma-deg as the fit holds it (owned text shared, read only) */
-    if ((rc = gw_param_resolve(setup_params, &r, err)) != GW_OK)
-        return rc;
-    A->gamma_deg = r.gamma_deg;
     A->delta_rm = s->delta_rm;
     A->defaults = s->defaults;
     rc = gw_stats_table_read(s->input, &A->t, err);
     A->input = A->t.path;
     /* the B.31 options act on the bouncing diagram only: refused, as having no
-     * effect, on a table without one (given: other than the row's default) */
+     * effect, on a table without one (given: set, at the row's default too) */
     if (rc == GW_OK && (gw_stats_table_key(&A->t, "rb-rm") < 0 || gw_stats_table_key(&A->t, "height-rm") < 0)) {
-        const char *given = strcmp(s->fit ? s->fit : "beta,a_over_b", "beta,a_over_b") != 0 ? "fit"
-                            : A->gamma_given ? "gamma-deg" : !isnan(s->delta_rm) ? "delta-rm" : NULL;
+        const char *given = A->fit_given ? "fit" : A->gamma_given ? "gamma-deg" : !isnan(s->delta_rm) ? "delta-rm" : NULL;
         if (given) {
             gw_stats_table_free(&A->t);
             A->input = NULL;

@@ -80,10 +80,13 @@ def _study(name):
 
 def params(study):
     """The parameter table of a study ("chain", "layer-impact") as a list of
-    dicts: keyword, flag name, type, unit, min, max, default (text), help."""
+    dicts: keyword, flag name, type, unit, min, max, or_zero (0 is taken
+    besides [min, max]), default (text), optional (a value given at the
+    default's is told from none), help."""
     st = _study(study)
     return [{"keyword": p.keyword, "name": p.name, "type": _core._TYPE_NAMES[p.type], "unit": p.unit,
-             "min": p.min, "max": p.max, "default": p.default, "choices": p.choices, "help": p.help}
+             "min": p.min, "max": p.max, "or_zero": p.or_zero, "default": p.default, "optional": p.optional,
+             "choices": p.choices, "help": p.help}
             for p in st.params]
 
 

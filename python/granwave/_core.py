@@ -174,6 +174,8 @@ class Param:
         self.unit = (row.unit or b"").decode()
         self.min, self.max = row.min, row.max
         self.open_min, self.open_max = bool(row.open_min), bool(row.open_max)
+        self.or_zero = bool(row.or_zero)  # 0 taken besides [min, max] (gw_param.h)
+        self.optional = bool(row.optional)  # not given (None) is told from the default given
         self.default = row.default.decode() if row.default is not None else None
         self.help = (row.help or b"").decode()
         self.choices = row.choices.decode().split(",") if row.choices else None

@@ -30,7 +30,8 @@ class GwParam(ctypes.Structure):
                 ("unit", ctypes.c_char_p), ("min", ctypes.c_double), ("max", ctypes.c_double),
                 ("open_min", ctypes.c_int), ("open_max", ctypes.c_int), ("default", ctypes.c_char_p),
                 ("help", ctypes.c_char_p), ("choices", ctypes.c_char_p), ("metavar", ctypes.c_char_p),
-                ("rows", ctypes.c_char_p), ("cols", ctypes.c_char_p), ("optional", ctypes.c_int)]
+                ("rows", ctypes.c_char_p), ("cols", ctypes.c_char_p), ("optional", ctypes.c_int),
+                ("or_zero", ctypes.c_int)]
 
 
 PROGRESS = ctypes.CFUNCTYPE(ctypes.c_int, ctypes.c_void_p, ctypes.c_long, ctypes.c_long)

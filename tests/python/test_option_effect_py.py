@@ -83,3 +83,43 @@ def test_layer_stats_fit_options_without_a_fit_warn(tmp_path, program, kw, name)
     assert d0["fit_ok"][0] and d1["fit_ok"][0]
     fit = ("offset", "beta", "a_over_b", "tan_gamma", "rms_residual")
     assert [d0[k][0] for k in fit] != [d1[k][0] for k in fit]
+
+
+def flat_table(path):
+    """4 cases over rb-rm alone: no bouncing diagram (it needs rb-rm and height-rm)."""
+    lines = ["# param vi = 20", "case,rb-rm,point," + COLS]
+    for k in range(4):
+        lines.append("%d,%g,%d,0,%d,0.5,0.6,10,20,10,12,0.6,1.5,0.001,0.6,1e-6,nan,0.01,100"
+                     % (k, 1 + (k // 2) * 0.5, k % 2, k % 2))
+    path.write_text("\n".join(lines) + "\n")
+    return path
+
+
+@pytest.mark.parametrize("fit", ["beta,a_over_b", "a_over_b,beta"])
+def test_layer_stats_fit_at_its_default_is_given(tmp_path, program, fit):
+    """fit is an optional row: the default's list given (in any order) is told
+    from none, in Python and the program alike. Before, it was judged by its
+    text: "beta,a_over_b" ran silently where "a_over_b,beta" was refused (no
+    diagram) or warned of as "beta,a_over_b,offset" is (no fit)."""
+    nodia = flat_table(tmp_path / "nodia.csv")
+    with pytest.raises(granwave.GranwaveValueError, match=r"layer_stats: fit: has no effect: the table has no bouncing"):
+        granwave.layer_stats(str(nodia), fit=fit)
+    p = subprocess.run([program, "layer-stats", str(nodia), "--fit", fit, "--json"], capture_output=True, text=True)
+    assert p.returncode == 2 and p.stdout == "" and len(p.stderr.splitlines()) == 1, p.stderr
+    assert p.stderr.startswith("granwave layer-stats --fit: has no effect: the table has no bouncing"), p.stderr
+    # not given: both run
+    granwave.layer_stats(str(nodia))
+    assert subprocess.run([program, "layer-stats", str(nodia), "--json"], capture_output=True).returncode == 0
+    # a diagram without a boundary crossing: warned of, in both, given or not as the library says
+    flat = table(tmp_path / "flat.csv", crossing=False)
+    for kw, args, said in (({"fit": fit}, ["--fit", fit], True), ({}, [], False)):
+        with warnings.catch_warnings(record=True) as w:
+            warnings.simplefilter("always")
+            r = granwave.layer_stats(str(flat), **kw)
+        mine = [str(x.message) for x in w if "no diagram has a B.31 fit" in str(x.message)]
+        assert (mine == ["layer_stats: fit: has no effect: no diagram has a B.31 fit (no R_b/R_m column changes "
+                         "from bouncing to not along H: no boundary crossing to fit)"]) == said, mine
+        assert any(x.startswith("fit: has no effect") for x in r["warnings"]) == said
+        p = subprocess.run([program, "layer-stats", str(flat), "--json"] + args, capture_output=True, text=True)
+        assert p.returncode == 0
+        assert ("granwave layer-stats: warning: fit: has no effect: no diagram has a B.31 fit" in p.stderr) == said

@@ -241,6 +241,7 @@ void gw_layer_free(gw_layer *L)
     free(L->drift);
     free(L->un_last);
     free(L->tscr);
+    free(L->tmode);
     free(L->ymid);
     free(L->dem_book);
     free(L->geo);
@@ -337,6 +338,13 @@ static void contact_kinematics(const gw_layer *L, const layer_contact *c, const 
     double rx = vbx - vax, ry = vby - vay;
     *und = -(rx * n[0] + ry * n[1]);
     *vt = -rx * n[1] + ry * n[0] - sa[5] * lev[0] - wrb;
+}
+
+void layer_contact_rates(const gw_layer *L, const layer_contact *c, const double *y, double *un, double *und,
+                         double *vt)
+{
+    double nn[2], arma[2], armb[2], lev[2];
+    contact_kinematics(L, c, y, un, nn, und, vt, arma, armb, lev);
 }
 
 double layer_contact_vt(const gw_layer *L, const layer_contact *c, const double *y, double *un)
@@ -456,7 +464,8 @@ static int layer_rhs(double t, const double *y, double *yd, void *P)
             }
         } else if (tp > 0) {
             double kt = c->kts * su, cd, ck;
-            layer_tangential(y[6 * n + k], kt, vt, fnd, fel, tp, L->cap_rate, &ft, fdot, &cd, &ck);
+            layer_tangential(y[6 * n + k], kt, vt, fnd, fel, tp, L->cap_rate, L->tmode_on ? L->tmode[k] : -1, &ft,
+                             fdot, &cd, &ck);
             pd += cd;
             pk += ck;
             if (rtail) {

@@ -43,7 +43,7 @@ typedef struct layer_contact {
 /* The block as the watch roots saw it (layer_watch.c): time, the two watch
  * functions (v_y, largest overlap), centre and velocity. */
 typedef struct layer_probe {
-    double t, g[2], x, y, vx, vy;
+    double t, g[2], x, y, vx, vy, ay;
 } layer_probe;
 
 /* The block's first contact with one disc (layer_watch_first_contact), read at
@@ -122,6 +122,10 @@ struct gw_layer {
     void *watch_ctx;
     layer_probe probe[2];
     gw_layer_block_extremes ext;
+    /* The evaluations around the largest v_y (layer_watch.c): [1] the largest,
+     * [0] the latest before it in time and [2] the earliest after it (t NaN:
+     * none yet); t, v_y, dv_y/dt, v_x and the largest overlap g_c at each. */
+    double vb_t[3], vb_vy[3], vb_ay[3], vb_vx[3], vb_gc[3];
     layer_first_contact fc; /* layer_watch_first_contact: the block on disc fc.target */
     /* The listed contacts that touch the block (indices into c), for the watch
      * roots: made for list number wblk_gen (st.rebuilds) and body wblk_body. */
@@ -484,6 +488,11 @@ int layer_dem_carried(gw_layer *L, const double *y, double *yd);
 void layer_contact_rates(const gw_layer *L, const layer_contact *c, const double *y, double *un, double *und,
                          double *vt);
 double layer_contact_vt(const gw_layer *L, const layer_contact *c, const double *y, double *un);
+/* The vertical force on body q from the listed contacts idx[0 .. n_idx - 1]
+ * (all contacts with idx NULL) in state y, as the right-hand side applies it
+ * (the fast mode's F_t: the state clamped to the cap; the exact mode's: its
+ * held branch), N. */
+double layer_body_contact_fy(const gw_layer *L, const double *y, int q, const int *idx, int n_idx);
 
 /* Fill sys (rhs, roots, dim, scale, drift) for the current list. */
 void layer_system_fill(gw_layer *L);

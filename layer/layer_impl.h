@@ -58,7 +58,7 @@ typedef struct layer_contact {
 /* The block as the watch roots saw it (layer_watch.c): time, the two watch
  * functions (v_y, largest overlap), centre and velocity. */
 typedef struct layer_probe {
-    double t, g[2], x, y, vx, vy;
+    double t, g[2], x, y, vx, vy, ay;
 } layer_probe;
 
 /* The block's first contact with one disc (layer_watch_first_contact), read at
@@ -137,6 +137,10 @@ struct gw_layer {
     void *watch_ctx;
     layer_probe probe[2];
     gw_layer_block_extremes ext;
+    /* The evaluations around the largest v_y (layer_watch.c): [1] the largest,
+     * [0] the latest before it in time and [2] the earliest after it (t NaN:
+     * none yet); t, v_y, dv_y/dt, v_x and the largest overlap g_c at each. */
+    double vb_t[3], vb_vy[3], vb_ay[3], vb_vx[3], vb_gc[3];
     layer_first_contact fc; /* layer_watch_first_contact: the block on disc fc.target */
     /* The listed contacts that touch the block (indices into c), for the watch
      * roots: made for list number wblk_gen (st.rebuilds) and body wblk_body. */
@@ -166,6 +170,20 @@ struct gw_layer {
     int *tix;           /* [2 cap_c]: the travel indices of contact k's two discs
                            (qa, and qb or nb for a wall) */
     struct layer_tscr *tscr; /* [cap_c], DEM mode only */
+    /* The exact mode's tangential branch per contact, held through the steps
+     * and switched only where the solver stops (layer_tmode_update,
+     * layer_sim.c): 1 at the Coulomb cap, 0 inside it. Read by the rhs while
+     * tmode_on (the stick/slip roots are located: not in DEM mode, not without
+     * events); otherwise each evaluation compares |F_t| with the cap. */
+    unsigned char *tmode;
+    int tmode_cap, tmode_on;
+    /* 1: the tail's second entries (global and per region) hold the tangential
+     * work E_st + W_K, from which the ledger subtracts E_st (the state
+     * function) to give W_K: the rate form (not DEM mode), where W_K's own
+     * rate is near-singular at phi near 90 deg (layer_tangential). 0: W_K
+     * itself (DEM mode books it per step, layer_dem.c). Set by gw_layer_start,
+     * which converts the tail when it changes. */
+    int tail_work;
     double *ymid;       /* [6 nb], DEM mode: the mid-step state (layer_dem.c) */
     double *dem_book;   /* [ntail], DEM mode: the ledger increments of a step */
     double *geo;        /* [4 cap_c], DEM mode, discs only: u_n, sqrt(u_n), normal
@@ -305,22 +323,42 @@ static inline double layer_cap(double tp, double kn, double un)
 /* The tangential law of layer_model.c (B.2) for a closed contact with state f,
  * K_t = kt, tangential velocity vt, dF_n/dt = fnd, elastic F_n = fel, tan phi =
  * tp: the force used (f clamped to the cap), the state's rate, and the
- * dissipation and Mindlin-work rates (B.7-B.14). */
+ * rates of the dissipation and of the tangential work E_st + W_K (B.7-B.14). mode: the held branch
+ * (gw_layer.tmode: 1 at the cap, the force used is the cap; 0 inside), or -1
+ * to decide from |f| against the cap at this evaluation. Held, an RK4 stage
+ * whose extrapolated state dips inside a collapsing cap still slides: decided
+ * per stage, the unloading of a contact at phi = 89.9 deg booked no
+ * dissipation at the midpoint stages (the cap, convex in time, lies above
+ * their linear extrapolation), and E_d fell 28 % short on a binary collision
+ * at 1 us (ledger closure 7.9e-2, docs/layer.md). */
 static inline void layer_tangential(double f, double kt, double vt, double fnd, double fel, double tp,
-                                    double lam, double *ft, double *rate, double *cd, double *ck)
+                                    double lam, int mode, double *ft, double *rate, double *cd, double *ck)
 {
     double cap = tp * fel, re = kt * vt;
     double sg = f > 0 ? 1 : f < 0 ? -1 : (re >= 0 ? 1 : -1);
     double rc = sg * tp * fnd, fud = re;
     *rate = re;
-    if (fabs(f) > cap) { /* |F_t| = cap sticks: where a located end of sliding lands (layer_cap) */
+    /* at the cap: the branch held since the last stop (mode 1), or |F_t|
+     * above the cap at this evaluation without held branches (mode -1; |F_t|
+     * = cap sticks: where a located end of sliding lands, layer_cap). Held
+     * inside (mode 0), a stage past the located stick/slip root continues the
+     * sticking branch, so that the root finder sees a smooth |F_t| - cap
+     * (with the branch switched at the stages past it, the root landed 0.12
+     * us late at phi = 89.9 deg and 1 us) */
+    const int at_cap = mode > 0 || (mode < 0 && fabs(f) > cap);
+    if (at_cap) {
         fud = rc; /* the force used rides the cap */
         if (sg * re > sg * rc) /* sliding: keep the state a margin outside */
             *rate = rc + sg * lam * (cap * (1 + LAYER_CAP_MARGIN) - fabs(f));
     }
-    *ft = f > cap ? cap : f < -cap ? -cap : f;
+    *ft = mode > 0 ? sg * cap : f > cap ? cap : f < -cap ? -cap : f;
     *cd = *ft * (vt - fud / kt);
-    *ck = *ft * *ft * fnd / (6.0 * kt * fel);
+    /* the rate of E_st + W_K, F_t (dF_t/dt) / K_t (= F_t v_t - dE_d/dt): the
+     * tail integrates it (gw_layer.tail_work), not dW_K/dt = F_t^2 (dF_n/dt) /
+     * (6 K_t F_n), which grows as u_n^(-3/2) while a contact stuck at phi
+     * near 90 deg unloads towards a small overlap */
+    *ck = *ft * fud / kt;
+    (void)fnd;
 }
 
 /* Body of disc i. */
@@ -390,6 +428,16 @@ int layer_clump_shape(double req, double aspect, double angle, double *ox, doubl
  * carrying F_t of contacts present in both lists. Rewrites L->y, L->scale and
  * L->sys for the new dimension. */
 int layer_contacts_build(gw_layer *L, gw_err *err);
+
+/* Set the held tangential branches (gw_layer.tmode) from the state where the
+ * solver stops, with the roots that fired there (NULL: none; contact roots
+ * first, stick/slip roots from layer_root_slip): off the cap where a
+ * stick/slip root went down; for a contact with F_t = 0 (closing), on the cap
+ * when it slides from the start (K_t |v_t| > tan(phi) dF_n/dt: F_t / cap
+ * tends to 2 k_t K_n^(1/3) |v_t| / (3 tan(phi) K_n du_n/dt) as u_n -> 0, and
+ * with both at 0 no root marks the switch); else |F_t| above the cap.
+ * Returns the number of branches changed. */
+int layer_tmode_update(gw_layer *L, const int *roots);
 
 /* Number of rebuild roots: one per particle, or when the rebuild is checked at
  * the steps' ends (L->stepend) one for all (the smallest margin: it is not
@@ -462,7 +510,14 @@ int layer_dem_carried(gw_layer *L, const double *y, double *yd);
 
 /* Overlap (*un) and tangential relative velocity of contact c in state y, the
  * velocity also when the contact is open there (layer_model.c). */
+void layer_contact_rates(const gw_layer *L, const layer_contact *c, const double *y, double *un, double *und,
+                         double *vt);
 double layer_contact_vt(const gw_layer *L, const layer_contact *c, const double *y, double *un);
+/* The vertical force on body q from the listed contacts idx[0 .. n_idx - 1]
+ * (all contacts with idx NULL) in state y, as the right-hand side applies it
+ * (the fast mode's F_t: the state clamped to the cap; the exact mode's: its
+ * held branch), N. */
+double layer_body_contact_fy(const gw_layer *L, const double *y, int q, const int *idx, int n_idx);
 
 /* Fill sys (rhs, roots, dim, scale, drift) for the current list. */
 void layer_system_fill(gw_layer *L);

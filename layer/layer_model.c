@@ -244,6 +244,7 @@ void gw_layer_free(gw_layer *L)
     free(L->travel);
     free(L->tix);
     free(L->tscr);
+    free(L->tmode);
     free(L->ymid);
     free(L->dem_book);
     free(L->geo);
@@ -340,6 +341,45 @@ static void contact_kinematics(const gw_layer *L, const layer_contact *c, const 
     double rx = vbx - vax, ry = vby - vay;
     *und = -(rx * n[0] + ry * n[1]);
     *vt = -rx * n[1] + ry * n[0] - sa[5] * lev[0] - wrb;
+}
+
+void layer_contact_rates(const gw_layer *L, const layer_contact *c, const double *y, double *un, double *und,
+                         double *vt)
+{
+    double nn[2], arma[2], armb[2], lev[2];
+    contact_kinematics(L, c, y, un, nn, und, vt, arma, armb, lev);
+}
+
+double layer_body_contact_fy(const gw_layer *L, const double *y, int q, const int *idx, int n_idx)
+{
+    const int n = L->nb;
+    const double tp = L->tan_phi, alpha = L->p.damping;
+    double fy = 0;
+    for (int j = 0; j < (idx ? n_idx : L->nc); j++) {
+        const int k = idx ? idx[j] : j;
+        const layer_contact *c = &L->c[k];
+        if (c->qa != q && c->qb != q)
+            continue;
+        double un, nn[2], und, vt, arma[2], armb[2], lev[2];
+        contact_kinematics(L, c, y, &un, nn, &und, &vt, arma, armb, lev);
+        const double su = un > 0 ? sqrt(un) : 0, fel = c->kn * un * su;
+        if (!(un > 0) || !(fel > 0))
+            continue;
+        double fn = fel, ft = 0;
+        if (alpha > 0)
+            fn = fmax(0, fel * (1.0 + 1.5 * alpha * und));
+        if (tp > 0 && L->dem) {
+            const double cap = tp * fel, f = y[6 * n + k];
+            ft = f > cap ? cap : f < -cap ? -cap : f;
+        } else if (tp > 0) {
+            double rate, cd, ck;
+            layer_tangential(y[6 * n + k], c->kts * su, vt, 1.5 * c->kn * su * und, fel, tp, L->cap_rate,
+                             L->tmode_on ? L->tmode[k] : -1, &ft, &rate, &cd, &ck);
+        }
+        const double f = -fn * nn[1] + ft * nn[0];
+        fy += c->qa == q ? f : -f;
+    }
+    return fy;
 }
 
 double layer_contact_vt(const gw_layer *L, const layer_contact *c, const double *y, double *un)
@@ -459,7 +499,8 @@ static int layer_rhs(double t, const double *y, double *yd, void *P)
             }
         } else if (tp > 0) {
             double kt = c->kts * su, cd, ck;
-            layer_tangential(y[6 * n + k], kt, vt, fnd, fel, tp, L->cap_rate, &ft, fdot, &cd, &ck);
+            layer_tangential(y[6 * n + k], kt, vt, fnd, fel, tp, L->cap_rate, L->tmode_on ? L->tmode[k] : -1, &ft,
+                             fdot, &cd, &ck);
             pd += cd;
             pk += ck;
             if (rtail) {

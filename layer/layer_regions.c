@@ -132,14 +132,15 @@ static void ledger_total(gw_layer_energy *e)
 static void ledger_tail(const gw_layer *L, gw_layer_energy *e, gw_layer_energy *regions, int nr)
 {
     const double *tail = L->y + 6 * L->nb + L->nc;
+    /* tail_work: the tail holds E_st + W_K, and e and regions E_st already */
     if (e) {
         e->dissipated = tail[0];
-        e->mindlin_excess = tail[1];
+        e->mindlin_excess = L->tail_work ? tail[1] - e->strain_tangent : tail[1];
         ledger_total(e);
     }
     for (int q = 0; q < nr; q++) {
         regions[q].dissipated = tail[2 + 2 * q];
-        regions[q].mindlin_excess = tail[3 + 2 * q];
+        regions[q].mindlin_excess = L->tail_work ? tail[3 + 2 * q] - regions[q].strain_tangent : tail[3 + 2 * q];
         ledger_total(regions + q);
     }
 }

@@ -101,9 +101,47 @@ static void harvest_stats(gw_layer *L)
     L->st.rhs_evals += ss.rhs_evals;
 }
 
+int layer_tmode_update(gw_layer *L, const int *roots)
+{
+    L->tmode_on = 0;
+    const int s0 = layer_root_slip(L);
+    if (L->dem || s0 < 0)
+        return 0; /* the stick/slip switches are not located: decided at each evaluation */
+    if (L->tmode_cap < L->nc + 1) {
+        unsigned char *m = realloc(L->tmode, (size_t)L->nc + 1);
+        if (!m)
+            return 0; /* (out of memory: decided at each evaluation, as before) */
+        memset(m + L->tmode_cap, 0, (size_t)(L->nc + 1 - L->tmode_cap));
+        L->tmode = m;
+        L->tmode_cap = L->nc + 1;
+    }
+    const double *f = L->y + 6 * L->nb;
+    int changed = 0;
+    for (int k = 0; k < L->nc; k++) {
+        const layer_contact *c = &L->c[k];
+        int m = 0;
+        if (roots && roots[s0 + k] < 0) {
+            m = 0; /* the root just crossed into the cap, whatever the rounding */
+        } else if (f[k] == 0) { /* open, or closing: does it slide from the start? */
+            double un, und, vt;
+            layer_contact_rates(L, c, L->y, &un, &und, &vt);
+            m = un >= 0 && und > 0 && c->kts * fabs(vt) > 1.5 * L->tan_phi * c->kn * und;
+        } else {
+            double un, nn[2];
+            layer_contact_geometry(L, c, L->y, &un, nn, NULL);
+            m = fabs(f[k]) > layer_cap(L->tan_phi, c->kn, un);
+        }
+        changed += L->tmode[k] != m;
+        L->tmode[k] = (unsigned char)m;
+    }
+    L->tmode_on = 1;
+    return changed;
+}
+
 static int make_solver(gw_layer *L, gw_err *err)
 {
     harvest_stats(L);
+    layer_tmode_update(L, NULL);
     gw_solver_free(L->solver);
     L->solver = NULL;
     int rc = gw_solver_create(L->type, &L->sys, &L->sp, L->t, L->y, &L->solver, err);
@@ -171,6 +209,19 @@ int gw_layer_start(gw_layer *L, const gw_solver_type *type, const gw_solver_para
         return rc;
     project(L, NULL, NULL);
     gw_layer_energy e;
+    if (L->tail_work != !L->dem) { /* the tail's convention changes: keep W_K */
+        const int nr = gw_layer_region_count(L);
+        gw_layer_energy *reg = nr > 0 ? calloc((size_t)nr, sizeof *reg) : NULL;
+        if (nr > 0 && !reg)
+            return gw_err_set(err, GW_ENOMEM, "layer: out of memory");
+        gw_layer_ledgers(L, &e, reg);
+        double *tail = L->y + 6 * L->nb + L->nc, sg = L->dem ? 0 : 1;
+        tail[1] = e.mindlin_excess + sg * e.strain_tangent;
+        for (int q = 0; q < nr; q++)
+            tail[3 + 2 * q] = reg[q].mindlin_excess + sg * reg[q].strain_tangent;
+        free(reg);
+        L->tail_work = !L->dem;
+    }
     gw_layer_energy_of(L, &e);
     L->e0 = e.total;
     double mg = 0;
@@ -192,7 +243,10 @@ static int layer_on_output(void *ctx, double t, double *y, gw_err *err)
     gw_layer *L = ctx;
     L->stamp++;
     L->t = t;
-    return !L->dem && project(L, NULL, NULL) > 0 ? GW_DRIVE_RESET : GW_DRIVE_ON;
+    int changed = !L->dem && project(L, NULL, NULL) > 0;
+    if (!L->dem && L->tmode_on) /* (a branch that the roots missed is switched here) */
+        changed += layer_tmode_update(L, NULL) > 0;
+    return changed ? GW_DRIVE_RESET : GW_DRIVE_ON;
 }
 
 static int layer_on_root(void *ctx, double t, double *y, const int *roots, gw_err *err)
@@ -214,6 +268,7 @@ static int layer_on_root(void *ctx, double t, double *y, const int *roots, gw_er
     for (int i = 0; i < layer_root_nrebuild(L); i++)
         rebuild |= roots[r0 + i] != 0;
     project(L, L->p.no_events ? NULL : roots, s0 >= 0 ? roots + s0 : NULL);
+    layer_tmode_update(L, roots);
     if (L->storm > LAYER_ZENO_COUNT && L->quiet_until == 0) {
         /* Zeno guard: the root finder keeps stopping at the same instant (a
          * contact grazing u_n = 0 with CVODE's zero-at-restart rule). Step

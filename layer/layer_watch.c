@@ -15,10 +15,12 @@
  *     s = g0 / (g0 - g1),  t* = t0 + s (t1 - t0),  state* = state0 + s (state1 - state0)
  * (time error O(h^2) for a step h, about 1e-11 s at h = 5 us).
  * The running extremes (largest v_y, lowest centre y) are updated at every
- * evaluation of the roots. In DEM mode that is every step end; between step
- * ends a smooth v_y exceeds its largest step-end value by at most
- * |dv_y/dt| h / 2 x (h / tau), tau the contact time (about 1e-6 of the
- * velocity change over a contact for h = tau / 200).
+ * evaluation of the roots (in DEM mode every step end), with the block's
+ * dv_y/dt from its listed contacts; the largest v_y is then located between
+ * the evaluations around it (vy_max_located: the cubic through v_y and
+ * dv_y/dt at both ends, cut at the opening of the block's last contact,
+ * after which the flight is exact), so that T_i does not sit on the step
+ * grid (docs/outcomes.md).
  * Units: SI.
  */
 #include <math.h>
@@ -40,16 +42,73 @@ int gw_layer_watch_block(gw_layer *L, gw_layer_block_fn fn, void *ctx, gw_err *e
     memset(L->probe, 0, sizeof L->probe);
     L->ext = (gw_layer_block_extremes){.vy_max = -INFINITY, .y_min = INFINITY,
                                        .t_vy_max = NAN, .t_y_min = NAN, .vx_at_vy_max = NAN};
+    for (int q = 0; q < 3; q++)
+        L->vb_t[q] = L->vb_vy[q] = L->vb_ay[q] = L->vb_vx[q] = L->vb_gc[q] = NAN;
     return GW_OK;
+}
+
+/* The largest v_y located between the evaluations around the largest one
+ * (L->vb_*), into (t, v_y, v_x) of *ex. Between two evaluations a < b with
+ * dv_y/dt > 0 at a and < 0 at b, v_y is the cubic with the values and slopes
+ * of both ends (Hermite), and its largest value is where its slope, a
+ * quadratic, falls through zero. Where the block's last contact opens between
+ * them (the largest overlap through 0, linearly, at t_o), the flight from t_o
+ * is exact, v_y = v_y(b) + g (b - t), dv_y/dt = -g, and b moves to t_o: the
+ * force of the opening contact falls to 0 within the step, and across a whole
+ * fast step (10 us) the cubic would not follow it. */
+static void vy_max_located(const gw_layer *L, gw_layer_block_extremes *ex)
+{
+    double t[3], v[3], a[3], vx[3], gc[3];
+    for (int q = 0; q < 3; q++)
+        t[q] = L->vb_t[q], v[q] = L->vb_vy[q], a[q] = L->vb_ay[q], vx[q] = L->vb_vx[q], gc[q] = L->vb_gc[q];
+    const double g = L->p.gravity;
+    /* the bracket: after the largest evaluation while v_y still rises there */
+    const int lo = a[1] > 0 ? 1 : 0, hi = lo + 1;
+    if (isnan(t[lo]) || isnan(t[hi]) || !(t[lo] < t[hi]) || !(a[lo] >= 0) || !(a[hi] <= 0))
+        return; /* not bracketed: the largest evaluation stands */
+    double tb = t[hi], vb = v[hi], ab = a[hi];
+    if (gc[lo] >= 0 && gc[hi] < 0) { /* free flight from t_o */
+        const double to = t[lo] + gc[lo] / (gc[lo] - gc[hi]) * (tb - t[lo]);
+        if (to > t[lo] && to < tb)
+            vb = v[hi] + g * (tb - to), tb = to, ab = -g;
+    }
+    /* on s in [0, 1] over h = tb - t_lo: slope / h = A s^2 + B s + C */
+    const double h = tb - t[lo], dv = (vb - v[lo]) / h;
+    const double A = 3 * a[lo] + 3 * ab - 6 * dv, B = -4 * a[lo] - 2 * ab + 6 * dv, C = a[lo];
+    /* the root where the slope goes from + to - (2 A s + B < 0 there), from
+     * the form without cancellation: q = -(B + sign(B) sqrt(B^2 - 4 A C)) / 2,
+     * roots q / A and C / q (C / q alone when A vanishes) */
+    const double disc = B * B - 4 * A * C;
+    if (!(disc >= 0))
+        return;
+    const double q = -0.5 * (B + (B < 0 ? -sqrt(disc) : sqrt(disc)));
+    const double r1 = q != 0 ? C / q : NAN, r2 = A != 0 ? q / A : NAN;
+    const int ok1 = r1 >= 0 && r1 <= 1 && 2 * A * r1 + B <= 0, ok2 = r2 >= 0 && r2 <= 1 && 2 * A * r2 + B <= 0;
+    if (!ok1 && !ok2)
+        return;
+    double s = ok1 ? r1 : r2;
+    const double s2 = s * s, s3 = s2 * s;
+    const double vm = (2 * s3 - 3 * s2 + 1) * v[lo] + (s3 - 2 * s2 + s) * h * a[lo] + (-2 * s3 + 3 * s2) * vb +
+                      (s3 - s2) * h * ab;
+    if (!(vm >= v[1]) || !isfinite(vm))
+        return;
+    ex->t_vy_max = t[lo] + s * h;
+    ex->vy_max = vm;
+    /* v_x linearly between the interval's ends: at t_o it is the flight's,
+     * v_x(b), which gravity does not change */
+    ex->vx_at_vy_max = vx[lo] + s * (vx[hi] - vx[lo]);
 }
 
 void gw_layer_block_extremes_get(const gw_layer *L, gw_layer_block_extremes *ex)
 {
-    if (L->watch)
+    if (L->watch) {
         *ex = L->ext;
-    else
+        if (ex->n > 0)
+            vy_max_located(L, ex);
+    } else {
         *ex = (gw_layer_block_extremes){.vy_max = NAN, .t_vy_max = NAN, .vx_at_vy_max = NAN,
                                         .y_min = NAN, .t_y_min = NAN, .n = 0};
+    }
 }
 
 void layer_watch_first_contact(gw_layer *L, int target)
@@ -180,13 +239,29 @@ void layer_watch_roots(gw_layer *L, double t, const double *y, double *g)
     double *w = g + layer_root_count(L);
     w[0] = s[4];
     w[1] = gc;
+    /* the block's dv_y/dt, for the largest v_y between evaluations */
+    const double ay = L->fixed[bb] ? 0
+                                   : layer_body_contact_fy(L, y, bb, all ? NULL : L->wblk, L->nwblk) * L->minv[bb] -
+                                         L->p.gravity;
     L->probe[0] = L->probe[1];
-    L->probe[1] = (layer_probe){.t = t, .g = {w[0], w[1]}, .x = s[0], .y = s[1], .vx = s[3], .vy = s[4]};
+    L->probe[1] = (layer_probe){.t = t, .g = {w[0], w[1]}, .x = s[0], .y = s[1], .vx = s[3], .vy = s[4], .ay = ay};
     gw_layer_block_extremes *e = &L->ext;
     if (s[4] > e->vy_max) {
+        /* the evaluation before it in time brackets the new largest value; the
+         * one after is still to come */
+        const layer_probe *pv = &L->probe[0];
+        const int before = e->n > 0 && pv->t < t;
+        L->vb_t[0] = before ? pv->t : NAN, L->vb_vy[0] = pv->vy, L->vb_ay[0] = pv->ay, L->vb_vx[0] = pv->vx;
+        L->vb_gc[0] = pv->g[1];
+        L->vb_t[1] = t, L->vb_vy[1] = s[4], L->vb_ay[1] = ay, L->vb_vx[1] = s[3], L->vb_gc[1] = gc;
+        L->vb_t[2] = NAN;
         e->vy_max = s[4];
         e->t_vy_max = t;
         e->vx_at_vy_max = s[3];
+    } else if (t > L->vb_t[1] && !(t >= L->vb_t[2])) { /* the earliest after it */
+        L->vb_t[2] = t, L->vb_vy[2] = s[4], L->vb_ay[2] = ay, L->vb_vx[2] = s[3], L->vb_gc[2] = gc;
+    } else if (t < L->vb_t[1] && !(t <= L->vb_t[0])) { /* the latest before it */
+        L->vb_t[0] = t, L->vb_vy[0] = s[4], L->vb_ay[0] = ay, L->vb_vx[0] = s[3], L->vb_gc[0] = gc;
     }
     if (s[1] < e->y_min) {
         e->y_min = s[1];

@@ -222,10 +222,13 @@ print('rings', nr, 'frequencies', len(fs), 'worst Parseval', worst, 'c_xcorr', d
 sys.exit(0 if ok and len(fs) > 2 and worst < 1e-6 else 1)
 PY"
 
-"$gw" layer-impact --sample "$tmp/a.txt" --rb-rm 1 --vi 10 --exact --dt 3e-5 --energy-tol 1e-3 --out "$tmp/emon" > "$tmp/stdout" 2> "$tmp/stderr"
+# (RK4 at 30 us: closure 8.4e-7 at 20 us; 6.4e-2 over the run before the exact mode's
+# tangential books were integrated as E_st + W_K with the stick/slip branch held, when
+# this check broke a 1e-3 closure)
+"$gw" layer-impact --sample "$tmp/a.txt" --rb-rm 1 --vi 10 --exact --dt 3e-5 --energy-tol 1e-7 --out "$tmp/emon" > "$tmp/stdout" 2> "$tmp/stderr"
 rc=$?
-check "energy monitor: RK4 at 30 us breaks the 1e-3 closure -> exit 1 naming the time; the state at failure kept as VTK, no half-written table (got $rc: $(cat "$tmp/stderr"))" \
-  "[ $rc -eq 1 ] && grep -q 'energy monitor: ledger closure .* exceeds energy-tol 0.001 at t = .*snapshot_failure.vtk' '$tmp/stderr' && grep -q '^POINTS' '$tmp/emon/snapshot_failure.vtk' && [ ! -e '$tmp/emon/ledger.csv' ] && [ ! -e '$tmp/emon/impact.json' ]"
+check "energy monitor: RK4 at 30 us breaks a 1e-7 closure -> exit 1 naming the time; the state at failure kept as VTK, no half-written table (got $rc: $(cat "$tmp/stderr"))" \
+  "[ $rc -eq 1 ] && grep -q 'energy monitor: ledger closure .* exceeds energy-tol 1e-07 at t = .*snapshot_failure.vtk' '$tmp/stderr' && grep -q '^POINTS' '$tmp/emon/snapshot_failure.vtk' && [ ! -e '$tmp/emon/ledger.csv' ] && [ ! -e '$tmp/emon/impact.json' ]"
 
 # HDF5 samples (builds with HDF5): the same seed written as .h5 gives the same impact
 if "$gw" layer-make --n 60 --width-rm 16 --seed 4 --out "$tmp/a.h5" > /dev/null 2> "$tmp/h5err"; then

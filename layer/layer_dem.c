@@ -88,17 +88,7 @@ static inline double disc_geometry(const layer_contact *c, const double *y, doub
             n[0] = 0, n[1] = 1;
         return rs - d;
     }
-    switch (c->b) {
-    case LAYER_LEFT:
-        n[0] = -1, n[1] = 0;
-        return c->ra - sa[0];
-    case LAYER_RIGHT:
-        n[0] = 1, n[1] = 0;
-        return c->ra - (width - sa[0]);
-    default: /* LAYER_BOTTOM */
-        n[0] = 0, n[1] = -1;
-        return c->ra - sa[1];
-    }
+    return layer_wall_overlap(c->b, c->ra, sa, width, n);
 }
 
 /* The signed overlap of a disc-only contact in state y (negative: the gap),

@@ -46,6 +46,23 @@
 /* Walls are contact partners with negative ids. */
 enum { LAYER_LEFT = -1, LAYER_RIGHT = -2, LAYER_BOTTOM = -3 };
 
+/* Overlap and outward unit normal of a disc of radius ra centred at p against
+ * wall (LAYER_LEFT, LAYER_RIGHT or LAYER_BOTTOM) of a box of width w. */
+static inline double layer_wall_overlap(int wall, double ra, const double p[2], double w, double n[2])
+{
+    switch (wall) {
+    case LAYER_LEFT:
+        n[0] = -1, n[1] = 0;
+        return ra - p[0];
+    case LAYER_RIGHT:
+        n[0] = 1, n[1] = 0;
+        return ra - (w - p[0]);
+    default: /* LAYER_BOTTOM */
+        n[0] = 0, n[1] = -1;
+        return ra - p[1];
+    }
+}
+
 typedef struct layer_contact {
     int a, b;        /* particle a < b, or b = LAYER_* wall */
     int qa, qb;      /* bodies of a and b (qb = b for a wall) */

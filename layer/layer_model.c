@@ -268,25 +268,14 @@ void gw_layer_free(gw_layer *L)
 static double pair_geometry(const layer_contact *c, const double pa[2], const double pb[2], double w,
                             double n[2])
 {
-    switch (c->b) {
-    case LAYER_LEFT:
-        n[0] = -1, n[1] = 0;
-        return c->ra - pa[0];
-    case LAYER_RIGHT:
-        n[0] = 1, n[1] = 0;
-        return c->ra - (w - pa[0]);
-    case LAYER_BOTTOM:
-        n[0] = 0, n[1] = -1;
-        return c->ra - pa[1];
-    default: {
-        double dx = pb[0] - pa[0], dy = pb[1] - pa[1], d = sqrt(dx * dx + dy * dy);
-        if (d > 0)
-            n[0] = dx / d, n[1] = dy / d;
-        else
-            n[0] = 0, n[1] = 1;
-        return c->ra + c->rb - d;
-    }
-    }
+    if (c->b < 0)
+        return layer_wall_overlap(c->b, c->ra, pa, w, n);
+    double dx = pb[0] - pa[0], dy = pb[1] - pa[1], d = sqrt(dx * dx + dy * dy);
+    if (d > 0)
+        n[0] = dx / d, n[1] = dy / d;
+    else
+        n[0] = 0, n[1] = 1;
+    return c->ra + c->rb - d;
 }
 
 /* Geometry of contact c with the arms of its discs (layer_disc_xy). */

@@ -157,8 +157,12 @@ int gw_layer_ledgers(const gw_layer *L, gw_layer_energy *e, gw_layer_energy *reg
     return nr;
 }
 
-LAYER_HOT int layer_ledgers_rings(const gw_layer *L, gw_layer_energy *e, gw_layer_energy *regions, double cx, double cy,
-                        double w, int nring, double *kin, double *strain, double *coord)
+/* layer_ledgers_rings' body: a static function, because GCC gives the ifunc
+ * of an external function's target clones default visibility whatever
+ * -fvisibility says (libgranwave.so exported layer_ledgers_rings and its
+ * resolver; test_install_api) */
+LAYER_HOT static int ledgers_rings(const gw_layer *L, gw_layer_energy *e, gw_layer_energy *regions, double cx,
+                                   double cy, double w, int nring, double *kin, double *strain, double *coord)
 {
     const int regs = e && regions && L->reg_n > 0 && cx == L->reg_cx && cy == L->reg_cy && w == L->reg_w &&
                      nring == L->reg_n;
@@ -244,6 +248,12 @@ LAYER_HOT int layer_ledgers_rings(const gw_layer *L, gw_layer_energy *e, gw_laye
         coord[k] = np[k] > 0 ? coord[k] / np[k] : NAN;
     ledger_tail(L, e, regions, nr);
     return nr;
+}
+
+int layer_ledgers_rings(const gw_layer *L, gw_layer_energy *e, gw_layer_energy *regions, double cx, double cy,
+                        double w, int nring, double *kin, double *strain, double *coord)
+{
+    return ledgers_rings(L, e, regions, cx, cy, w, nring, kin, strain, coord);
 }
 
 int gw_layer_region_ledger(const gw_layer *L, gw_layer_energy *out)

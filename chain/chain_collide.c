@@ -742,8 +742,9 @@ static int collide_run(const gw_chain *c, const gw_chain_run_opts *o, int flight
     r->wall_contacts = st.closed[0];
 
     const double dt_out = pl.dt_out, t_max = pl.t_max;
-    double dscale = gw_chain_dmax1(gw_chain_bead_mass(c, 0), p->kwall, chain_speed_scale(&pc));
-    st.dtol = 1e-9 * dscale;
+    /* the first contact's position scale, gw_chain_dmax1 at the column's
+     * speed scale (gw_chain_create set it) */
+    st.dtol = 1e-9 * c->scale[0];
     gw_solver_params sp = pl.sp;
     const gw_solver_type *type = pl.type;
     r->run_t_max = t_max;

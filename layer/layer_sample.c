@@ -177,6 +177,13 @@ static int check_grading(const gw_layer_sample *s, const char *path, int status,
     return GW_OK;
 }
 
+/* The checks that need the whole sample: its bodies, then its grading. */
+static int check_whole(const gw_layer_sample *s, const char *path, int status, gw_err *err)
+{
+    int rc = check_bodies(s, path, status, err);
+    return rc == GW_OK ? check_grading(s, path, status, err) : rc;
+}
+
 static int check_sample(const gw_layer_sample *s, const char *path, int status, gw_err *err)
 {
     int rc = check_header(s, path, status, err);
@@ -190,9 +197,7 @@ static int check_sample(const gw_layer_sample *s, const char *path, int status, 
         gw_snprintf(where, sizeof where, "particle at index %d", i);
         rc = check_particle(s->width, s->rm, s->x[i], s->y[i], s->r[i], path, where, status, err);
     }
-    if (rc == GW_OK)
-        rc = check_bodies(s, path, status, err);
-    return rc == GW_OK ? check_grading(s, path, status, err) : rc;
+    return rc == GW_OK ? check_whole(s, path, status, err) : rc;
 }
 
 int layer_sample_readable(const gw_layer_sample *s, const char *what, gw_err *err)
@@ -541,8 +546,7 @@ static int read_text(text_in *t, gw_layer_sample *s, gw_err *err)
         s->y = s->x + n, s->r = s->x + 2 * n;
     }
     s->n = (int)n;
-    rc = check_bodies(s, t->path, GW_EFORMAT, err);
-    return rc == GW_OK ? check_grading(s, t->path, GW_EFORMAT, err) : rc;
+    return check_whole(s, t->path, GW_EFORMAT, err);
 }
 
 /* ------------------------------------------------------------- HDF5 ---- */

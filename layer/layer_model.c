@@ -342,7 +342,6 @@ void layer_contact_rates(const gw_layer *L, const layer_contact *c, const double
 double layer_body_contact_fy(const gw_layer *L, const double *y, int q, const int *idx, int n_idx)
 {
     const int n = L->nb;
-    const double tp = L->tan_phi, alpha = L->p.damping;
     double fy = 0;
     for (int j = 0; j < (idx ? n_idx : L->nc); j++) {
         const int k = idx ? idx[j] : j;
@@ -354,18 +353,9 @@ double layer_body_contact_fy(const gw_layer *L, const double *y, int q, const in
         const double su = un > 0 ? sqrt(un) : 0, fel = c->kn * un * su;
         if (!(un > 0) || !(fel > 0))
             continue;
-        double fn = fel, ft = 0;
-        if (alpha > 0)
-            fn = fmax(0, fel * (1.0 + 1.5 * alpha * und));
-        if (tp > 0 && L->dem) {
-            const double cap = tp * fel, f = y[6 * n + k];
-            ft = f > cap ? cap : f < -cap ? -cap : f;
-        } else if (tp > 0) {
-            double rate, cd, ck;
-            layer_tangential(y[6 * n + k], c->kts * su, vt, 1.5 * c->kn * su * und, fel, tp, L->cap_rate,
-                             L->tmode_on ? L->tmode[k] : -1, &ft, &rate, &cd, &ck);
-        }
-        const double f = -fn * nn[1] + ft * nn[0];
+        const layer_cforce o = layer_contact_force(c, su, fel, und, vt, y[6 * n + k], L->p.damping, L->tan_phi,
+                                                   L->cap_rate, layer_ft_mode(L, k));
+        const double f = -o.fn * nn[1] + o.ft * nn[0];
         fy += c->qa == q ? f : -f;
     }
     return fy;
@@ -468,17 +458,13 @@ static int layer_rhs(double t, const double *y, double *yd, void *P)
             continue;
         }
         un_last[k] = un;
-        double fnd = 1.5 * c->kn * su * und, fn = fel;
-        if (alpha > 0) {
-            fn = fel * (1.0 + 1.5 * alpha * und);
-            if (fn < 0)
-                fn = 0;
+        /* DEM: F_t is the step's (layer_dem.c), tangential books there */
+        const layer_cforce o = layer_contact_force(c, su, fel, und, vt, y[6 * n + k], alpha, tp, L->cap_rate,
+                                                   layer_ft_mode(L, k));
+        const double fn = o.fn, ft = o.ft;
+        if (alpha > 0)
             pd += (fn - fel) * und;
-        }
-        double ft = 0;
-        if (tp > 0 && tscr) { /* DEM: F_t is the step's (layer_dem.c), tangential books there */
-            double cap = tp * fel, f = y[6 * n + k];
-            ft = f > cap ? cap : f < -cap ? -cap : f;
+        if (tp > 0 && tscr) {
             *fdot = 0;
             tscr[k].kt = c->kts * su;
             if (rtail) {
@@ -487,15 +473,13 @@ static int layer_rhs(double t, const double *y, double *yd, void *P)
                 rtail[2 * q] += (fn - fel) * und;
             }
         } else if (tp > 0) {
-            double kt = c->kts * su, cd, ck;
-            layer_tangential(y[6 * n + k], kt, vt, fnd, fel, tp, L->cap_rate, L->tmode_on ? L->tmode[k] : -1, &ft,
-                             fdot, &cd, &ck);
-            pd += cd;
-            pk += ck;
+            *fdot = o.rate;
+            pd += o.cd;
+            pk += o.ck;
             if (rtail) {
                 int q = rhs_region(L, c, y, un, nn, clumps);
-                rtail[2 * q] += cd + (fn - fel) * und;
-                rtail[2 * q + 1] += ck;
+                rtail[2 * q] += o.cd + (fn - fel) * und;
+                rtail[2 * q + 1] += o.ck;
             }
         } else {
             *fdot = 0;

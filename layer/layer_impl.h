@@ -384,16 +384,16 @@ static inline void layer_tangential(double f, double kt, double vt, double fnd, 
  * speed und (du_n/dt), tangential velocity vt and tangential state f.
  *   F_n: Hunt-Crossley, fel (1 + 3/2 alpha und), never below 0; fel itself
  *        without damping (alpha 0: und is not read).
- *   F_t by mode (layer_ft_mode), tp = tan(phi): LAYER_FT_NONE without
+ *   F_t by mode (layer_ft_modes), tp = tan(phi): LAYER_FT_NONE without
  *        friction, 0; LAYER_FT_FAST, the fast (DEM) mode, whose drift advances
  *        f (layer_dem.c): f clamped to the cap tp fel (layer_cap); otherwise
  *        the exact mode's law, layer_tangential with K_t = k_ts su, dF_n/dt =
  *        3/2 K_n su und, the cap's restoring rate lam and the branch mode (1, 0
- *        held, -1 decided here), which alone gives F_t's rate and the rates of
+ *        held, LAYER_FT_EXACT = -1 decided here), which alone gives F_t's rate and the rates of
  *        E_d and E_st + W_K (rate, cd, ck; 0 for the other modes).
  * (The mode, not tp, tells the frictionless case: the drift's callers pass
  * LAYER_FT_FAST as a constant, and its hot loop then tests nothing.) */
-enum { LAYER_FT_NONE = -3, LAYER_FT_FAST = -2 };
+enum { LAYER_FT_NONE = -3, LAYER_FT_FAST = -2, LAYER_FT_EXACT = -1 };
 typedef struct layer_cforce {
     double fn, ft, rate, cd, ck;
 } layer_cforce;
@@ -418,12 +418,15 @@ static inline layer_cforce layer_contact_force(const layer_contact *c, double su
     return o;
 }
 
-/* The mode of layer_contact_force for contact k of L: LAYER_FT_NONE without
- * friction, LAYER_FT_FAST in DEM mode, else the held branch (gw_layer.tmode)
- * or -1 without held branches. */
-static inline int layer_ft_mode(const gw_layer *L, int k)
+/* The modes of layer_contact_force for the contacts of L, read once before a
+ * loop over them: LAYER_FT_NONE without friction, LAYER_FT_FAST in DEM mode,
+ * else LAYER_FT_EXACT, and then *held the held branches (gw_layer.tmode;
+ * NULL: none held): contact k's mode is held ? held[k] : the value returned. */
+static inline int layer_ft_modes(const gw_layer *L, const unsigned char **held)
 {
-    return !(L->tan_phi > 0) ? LAYER_FT_NONE : L->dem ? LAYER_FT_FAST : L->tmode_on ? L->tmode[k] : -1;
+    const int m = !(L->tan_phi > 0) ? LAYER_FT_NONE : L->dem ? LAYER_FT_FAST : LAYER_FT_EXACT;
+    *held = m == LAYER_FT_EXACT && L->tmode_on ? L->tmode : NULL;
+    return m;
 }
 
 /* Body of disc i. */

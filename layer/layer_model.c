@@ -342,6 +342,8 @@ void layer_contact_rates(const gw_layer *L, const layer_contact *c, const double
 double layer_body_contact_fy(const gw_layer *L, const double *y, int q, const int *idx, int n_idx)
 {
     const int n = L->nb;
+    const unsigned char *held;
+    const int ftm = layer_ft_modes(L, &held);
     double fy = 0;
     for (int j = 0; j < (idx ? n_idx : L->nc); j++) {
         const int k = idx ? idx[j] : j;
@@ -354,7 +356,7 @@ double layer_body_contact_fy(const gw_layer *L, const double *y, int q, const in
         if (!(un > 0) || !(fel > 0))
             continue;
         const layer_cforce o = layer_contact_force(c, su, fel, und, vt, y[6 * n + k], L->p.damping, L->tan_phi,
-                                                   L->cap_rate, layer_ft_mode(L, k));
+                                                   L->cap_rate, held ? held[k] : ftm);
         const double f = -o.fn * nn[1] + o.ft * nn[0];
         fy += c->qa == q ? f : -f;
     }
@@ -430,7 +432,10 @@ static int layer_rhs(double t, const double *y, double *yd, void *P)
     double pd = 0, pk = 0;
     double *rtail = L->reg_n > 0 ? yd + 6 * n + L->nc + 2 : NULL;
     double *un_last = L->un_last;
-    layer_tscr *tscr = L->dem ? L->tscr : NULL;
+    layer_tscr *tscr = L->tscr;
+    const unsigned char *held;
+    const int ftm = layer_ft_modes(L, &held);
+    const double cap_rate = L->cap_rate;
     for (int q = 0; rtail && q < 2 * (L->reg_n + 2); q++)
         rtail[q] = 0;
     for (int i = 0; i < n; i++) {
@@ -458,34 +463,42 @@ static int layer_rhs(double t, const double *y, double *yd, void *P)
             continue;
         }
         un_last[k] = un;
-        /* DEM: F_t is the step's (layer_dem.c), tangential books there */
-        const layer_cforce o = layer_contact_force(c, su, fel, und, vt, y[6 * n + k], alpha, tp, L->cap_rate,
-                                                   layer_ft_mode(L, k));
-        const double fn = o.fn, ft = o.ft;
-        if (alpha > 0)
-            pd += (fn - fel) * und;
-        if (tp > 0 && tscr) {
-            *fdot = 0;
-            tscr[k].kt = c->kts * su;
-            if (rtail) {
-                int q = rhs_region(L, c, y, un, nn, clumps);
-                tscr[k].q = q;
-                rtail[2 * q] += (fn - fel) * und;
-            }
-        } else if (tp > 0) {
+        /* the law (layer_contact_force) in each mode's branch, with its books
+         * (one test of the mode per contact; the exact mode's first) */
+        const double f = y[6 * n + k];
+        layer_cforce o;
+        if (ftm == LAYER_FT_EXACT) {
+            o = layer_contact_force(c, su, fel, und, vt, f, alpha, tp, cap_rate, held ? held[k] : ftm);
+            if (alpha > 0)
+                pd += (o.fn - fel) * und;
             *fdot = o.rate;
             pd += o.cd;
             pk += o.ck;
             if (rtail) {
                 int q = rhs_region(L, c, y, un, nn, clumps);
-                rtail[2 * q] += o.cd + (fn - fel) * und;
+                rtail[2 * q] += o.cd + (o.fn - fel) * und;
                 rtail[2 * q + 1] += o.ck;
             }
+        } else if (ftm == LAYER_FT_FAST) { /* DEM: F_t is the step's (layer_dem.c), tangential books there */
+            o = layer_contact_force(c, su, fel, und, vt, f, alpha, tp, cap_rate, LAYER_FT_FAST);
+            if (alpha > 0)
+                pd += (o.fn - fel) * und;
+            *fdot = 0;
+            tscr[k].kt = c->kts * su;
+            if (rtail) {
+                int q = rhs_region(L, c, y, un, nn, clumps);
+                tscr[k].q = q;
+                rtail[2 * q] += (o.fn - fel) * und;
+            }
         } else {
+            o = layer_contact_force(c, su, fel, und, vt, f, alpha, tp, cap_rate, LAYER_FT_NONE);
+            if (alpha > 0)
+                pd += (o.fn - fel) * und;
             *fdot = 0;
             if (rtail && alpha > 0)
-                rtail[2 * layer_contact_region_at(L, c, y, un, nn)] += (fn - fel) * und;
+                rtail[2 * layer_contact_region_at(L, c, y, un, nn)] += (o.fn - fel) * und;
         }
+        const double fn = o.fn, ft = o.ft;
         double fx = -fn * nn[0] - ft * nn[1], fy = -fn * nn[1] + ft * nn[0];
         double *da = yd + 6 * c->qa;
         da[3] += fx, da[4] += fy, da[5] += ft * lev[0];

@@ -67,20 +67,20 @@ static inline double disc_vt(const layer_contact *c, const double *ph, double hh
     }
 }
 
-/* Overlap and unit normal (a -> b) of a disc-only contact in state y; a
- * negative overlap, without the square root, for a pair farther apart than
- * R_a + R_b. */
+/* Overlap and unit normal (a -> b) of a disc-only contact in state y; for a
+ * pair farther apart than R_a + R_b the overlap, less than 0 (the gap, which
+ * the drift's sleep needs: drift_discs), without the normal (n = (0, 1)). */
 static inline double disc_geometry(const layer_contact *c, const double *y, double width, double n[2])
 {
     const double *sa = y + 6 * c->qa;
     if (c->b >= 0) { /* a pair (the common case, tested first) */
         const double *sb = y + 6 * c->qb;
         double dx = sb[0] - sa[0], dy = sb[1] - sa[1], d2 = dx * dx + dy * dy, rs = c->ra + c->rb;
+        double d = sqrt(d2);
         if (!(d2 < rs * rs)) {
             n[0] = 0, n[1] = 1;
-            return -1;
+            return rs - d;
         }
-        double d = sqrt(d2);
         if (d > 0) {
             double id = 1 / d;
             n[0] = dx * id, n[1] = dy * id;
@@ -92,8 +92,8 @@ static inline double disc_geometry(const layer_contact *c, const double *y, doub
 }
 
 /* The signed overlap of a disc-only contact in state y (negative: the gap),
- * also for a pair farther apart than R_a + R_b (disc_geometry's -1). Only for
- * the steps where the contact closes or opens. */
+ * with hypot (disc_geometry's rounding differs). Only for the steps where the
+ * contact closes or opens. */
 static double disc_overlap(const layer_contact *c, const double *y, double width)
 {
     const double *sa = y + 6 * c->qa;
@@ -212,12 +212,8 @@ LAYER_HOT static void drift_discs(gw_layer *L, double h, const double *ph, doubl
             g[0] = ue, g[1] = 0, g[2] = nn[0], g[3] = nn[1];
             un_last[k] = 0;
             fe[k] = 0;
-            const double *sa = y + 6 * c->qa, rs = c->ra + c->rb;
-            double gap = -ue; /* a wall's, exact */
-            if (c->b >= 0) {
-                const double *sb = y + 6 * c->qb, dx = sb[0] - sa[0], dy = sb[1] - sa[1];
-                gap = sqrt(dx * dx + dy * dy) - rs;
-            }
+            /* the gap -u_e: a pair's |x_b - x_a| - R_a - R_b (the negation is exact) */
+            const double rs = c->ra + c->rb, gap = -ue;
             wake[k] = tr + (0.99 * gap - 1e-9 * rs); /* (not above tr: awake) */
             continue;
         }

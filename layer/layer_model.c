@@ -58,8 +58,10 @@
  * K_t = k_t F_n^(1/3) = (k_t K_n^(1/3)) u_n^(1/2), the same to rounding, needs no
  * cube root; a layer without clumps takes a disc-only kinematics path (arms =
  * radii) that skips the pairs farther apart than R_a + R_b before any square
- * root. The tangential law itself is layer_tangential (layer_impl.h). In DEM
- * mode a disc-only layer uses layer_dem_rhs (layer_dem.c) instead.
+ * root. The forces of a closed contact are layer_contact_force (layer_impl.h;
+ * the tangential law itself layer_tangential), which every right-hand side
+ * and the block watch call. In DEM mode a disc-only layer uses layer_dem_rhs
+ * (layer_dem.c) instead.
  * Units: SI (m, s, kg, N, Pa, J).
  */
 #include <math.h>

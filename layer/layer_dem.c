@@ -67,20 +67,20 @@ static inline double disc_vt(const layer_contact *c, const double *ph, double hh
     }
 }
 
-/* Overlap and unit normal (a -> b) of a disc-only contact in state y; a
- * negative overlap, without the square root, for a pair farther apart than
- * R_a + R_b. */
+/* Overlap and unit normal (a -> b) of a disc-only contact in state y; for a
+ * pair farther apart than R_a + R_b the overlap, less than 0 (the gap, which
+ * the drift's sleep needs: drift_discs), without the normal (n = (0, 1)). */
 static inline double disc_geometry(const layer_contact *c, const double *y, double width, double n[2])
 {
     const double *sa = y + 6 * c->qa;
     if (c->b >= 0) { /* a pair (the common case, tested first) */
         const double *sb = y + 6 * c->qb;
         double dx = sb[0] - sa[0], dy = sb[1] - sa[1], d2 = dx * dx + dy * dy, rs = c->ra + c->rb;
+        double d = sqrt(d2);
         if (!(d2 < rs * rs)) {
             n[0] = 0, n[1] = 1;
-            return -1;
+            return rs - d;
         }
-        double d = sqrt(d2);
         if (d > 0) {
             double id = 1 / d;
             n[0] = dx * id, n[1] = dy * id;
@@ -92,8 +92,8 @@ static inline double disc_geometry(const layer_contact *c, const double *y, doub
 }
 
 /* The signed overlap of a disc-only contact in state y (negative: the gap),
- * also for a pair farther apart than R_a + R_b (disc_geometry's -1). Only for
- * the steps where the contact closes or opens. */
+ * with hypot (disc_geometry's rounding differs). Only for the steps where the
+ * contact closes or opens. */
 static double disc_overlap(const layer_contact *c, const double *y, double width)
 {
     const double *sa = y + 6 * c->qa;
@@ -136,30 +136,32 @@ static inline double mean_kt(double ks, double ke, double us, double ue)
     return 0;
 }
 
-/* The normal force with Hunt-Crossley damping (B.1 with the settling damping
- * alpha, s/m): F_n = F_el (1 + 3/2 alpha u_n'), u_n' the approach speed along
- * the normal nn (*und), never negative; F_el and *und = 0 when alpha is 0. The
- * damping dissipates (F_n - F_el) u_n'. */
-static inline double damped_normal(const layer_contact *c, const double *y, const double nn[2], double fel,
-                                   double alpha, double *und)
+/* The forces of a closed disc-only contact in state y (layer_contact_force in
+ * mode LAYER_FT_FAST or LAYER_FT_NONE; nn its normal, fel its elastic F_n, f
+ * its F_t state), with the approach speed u_n' along nn for the normal
+ * damping alpha (s/m) in *und: 0 when alpha is 0, where the damping and its
+ * power (F_n - F_el) u_n' vanish. */
+static inline layer_cforce disc_force(const layer_contact *c, const double *y, const double nn[2], double su,
+                                      double fel, double f, double alpha, double tp, int mode, double *und)
 {
     *und = 0;
-    if (!(alpha > 0))
-        return fel;
-    const double *sa = y + 6 * c->qa;
-    double rx = -sa[3], ry = -sa[4];
-    if (c->b >= 0)
-        rx += y[6 * c->qb + 3], ry += y[6 * c->qb + 4];
-    *und = -(rx * nn[0] + ry * nn[1]);
-    const double fn = fel * (1.0 + 1.5 * alpha * *und);
-    return fn < 0 ? 0 : fn;
+    if (alpha > 0) {
+        const double *sa = y + 6 * c->qa;
+        double rx = -sa[3], ry = -sa[4];
+        if (c->b >= 0)
+            rx += y[6 * c->qb + 3], ry += y[6 * c->qb + 4];
+        *und = -(rx * nn[0] + ry * nn[1]);
+    }
+    return layer_contact_force(c, su, fel, *und, 0, f, alpha, tp, 0, mode);
 }
 
 /* The drift of a disc-only layer, fused with its force pass: per contact the
  * end geometry, the tangential step and its books, then the end forces the
  * rhs would compute (Hertz, the damping at the predicted velocities, F_t as
- * the cap allows), summed per body into L->facc with the rhs's arithmetic, so
- * that layer_dem_rhs only assembles them (bit-identical to its own pass). */
+ * the cap allows: layer_contact_force), summed per body into L->facc with the
+ * rhs's arithmetic, so that layer_dem_rhs only assembles them (bit-identical
+ * to its own pass). Only with friction (layer_dem_drift returns before it
+ * without): the force calls pass LAYER_FT_FAST. */
 LAYER_HOT static void drift_discs(gw_layer *L, double h, const double *ph, double *y)
 {
     const int nb = L->nb, nc = L->nc;
@@ -210,12 +212,8 @@ LAYER_HOT static void drift_discs(gw_layer *L, double h, const double *ph, doubl
             g[0] = ue, g[1] = 0, g[2] = nn[0], g[3] = nn[1];
             un_last[k] = 0;
             fe[k] = 0;
-            const double *sa = y + 6 * c->qa, rs = c->ra + c->rb;
-            double gap = -ue; /* a wall's, exact */
-            if (c->b >= 0) {
-                const double *sb = y + 6 * c->qb, dx = sb[0] - sa[0], dy = sb[1] - sa[1];
-                gap = sqrt(dx * dx + dy * dy) - rs;
-            }
+            /* the gap -u_e: a pair's |x_b - x_a| - R_a - R_b (the negation is exact) */
+            const double rs = c->ra + c->rb, gap = -ue;
             wake[k] = tr + (0.99 * gap - 1e-9 * rs); /* (not above tr: awake) */
             continue;
         }
@@ -246,7 +244,9 @@ LAYER_HOT static void drift_discs(gw_layer *L, double h, const double *ph, doubl
                 bk[0] += ed;
                 bk[1] += ek;
                 fe[k] = f1;
-                const double capr = tp * fel, ft = f1 > capr ? capr : f1 < -capr ? -capr : f1;
+                /* the forces, without damping (alpha 0) */
+                const layer_cforce o = layer_contact_force(c, su, fel, 0, 0, f1, 0, tp, 0, LAYER_FT_FAST);
+                const double fn = o.fn, ft = o.ft;
                 /* the contact's region: layer_contact_region_near written out */
                 const double arm = ra - 0.5 * ue;
                 const double px = y[6 * qa] + arm * nn[0], py = y[6 * qa + 1] + arm * nn[1];
@@ -259,7 +259,7 @@ LAYER_HOT static void drift_discs(gw_layer *L, double h, const double *ph, doubl
                 tscr[k].kt = ke;
                 tscr[k].ikt = ike;
                 tscr[k].q = q >= 0 ? q : layer_contact_region_pt(L, c, px, py);
-                const double fx = -fel * nn[0] - ft * nn[1], fy = -fel * nn[1] + ft * nn[0];
+                const double fx = -fn * nn[0] - ft * nn[1], fy = -fn * nn[1] + ft * nn[0];
                 double *da = fa + 3 * qa;
                 da[0] += fx, da[1] += fy, da[2] += ft * ra;
                 if (c->b >= 0) {
@@ -314,9 +314,9 @@ LAYER_HOT static void drift_discs(gw_layer *L, double h, const double *ph, doubl
         if (!(fel > 0))
             continue;
         double und;
-        const double fn = damped_normal(c, y, nn, fel, alpha, &und);
+        const layer_cforce o = disc_force(c, y, nn, su, fel, f1, alpha, tp, LAYER_FT_FAST, &und);
+        const double fn = o.fn, ft = o.ft;
         pd += (fn - fel) * und;
-        const double capr = tp * fel, ft = f1 > capr ? capr : f1 < -capr ? -capr : f1;
         tscr[k].kt = ke;
         tscr[k].ikt = ike;
         if (reg) {
@@ -484,12 +484,11 @@ int layer_dem_rhs(double t, const double *y, double *yd, void *P)
         }
         un_last[k] = un;
         double und;
-        const double fn = damped_normal(c, y, nn, fel, alpha, &und);
+        const layer_cforce o = disc_force(c, y, nn, su, fel, y[6 * n + k], alpha, tp,
+                                          tp > 0 ? LAYER_FT_FAST : LAYER_FT_NONE, &und);
+        const double fn = o.fn, ft = o.ft;
         pd += (fn - fel) * und;
-        double ft = 0;
         if (tp > 0) {
-            const double cap = tp * fel, f = y[6 * n + k];
-            ft = f > cap ? cap : f < -cap ? -cap : f;
             tscr[k].kt = c->kts * su;
             tscr[k].ikt = 1 / tscr[k].kt;
         }

@@ -375,7 +375,58 @@ static inline void layer_tangential(double f, double kt, double vt, double fnd, 
      * (6 K_t F_n), which grows as u_n^(-3/2) while a contact stuck at phi
      * near 90 deg unloads towards a small overlap */
     *ck = *ft * fud / kt;
-    (void)fnd;
+}
+
+/* The forces of a closed contact, as every right-hand side applies them
+ * (layer_rhs, layer_dem_rhs and the drift's force pass drift_discs) and the
+ * block watch reads them (layer_body_contact_fy), so that these cannot part:
+ * contact c with sqrt(u_n) = su, elastic F_n = fel = K_n u_n su > 0, approach
+ * speed und (du_n/dt), tangential velocity vt and tangential state f.
+ *   F_n: Hunt-Crossley, fel (1 + 3/2 alpha und), never below 0; fel itself
+ *        without damping (alpha 0: und is not read).
+ *   F_t by mode (layer_ft_modes), tp = tan(phi): LAYER_FT_NONE without
+ *        friction, 0; LAYER_FT_FAST, the fast (DEM) mode, whose drift advances
+ *        f (layer_dem.c): f clamped to the cap tp fel (layer_cap); otherwise
+ *        the exact mode's law, layer_tangential with K_t = k_ts su, dF_n/dt =
+ *        3/2 K_n su und, the cap's restoring rate lam and the branch mode (1, 0
+ *        held, LAYER_FT_EXACT = -1 decided here), which alone gives F_t's rate and the rates of
+ *        E_d and E_st + W_K (rate, cd, ck; 0 for the other modes).
+ * (The mode, not tp, tells the frictionless case: the drift's callers pass
+ * LAYER_FT_FAST as a constant, and its hot loop then tests nothing.) */
+enum { LAYER_FT_NONE = -3, LAYER_FT_FAST = -2, LAYER_FT_EXACT = -1 };
+typedef struct layer_cforce {
+    double fn, ft, rate, cd, ck;
+} layer_cforce;
+static inline layer_cforce layer_contact_force(const layer_contact *c, double su, double fel, double und,
+                                               double vt, double f, double alpha, double tp, double lam, int mode)
+{
+    layer_cforce o = {fel, 0, 0, 0, 0};
+    if (alpha > 0) {
+        o.fn = fel * (1.0 + 1.5 * alpha * und);
+        if (o.fn < 0)
+            o.fn = 0;
+    }
+    if (mode == LAYER_FT_NONE)
+        return o;
+    if (mode == LAYER_FT_FAST) {
+        const double cap = tp * fel;
+        o.ft = f > cap ? cap : f < -cap ? -cap : f;
+    } else {
+        layer_tangential(f, c->kts * su, vt, 1.5 * c->kn * su * und, fel, tp, lam, mode, &o.ft, &o.rate, &o.cd,
+                         &o.ck);
+    }
+    return o;
+}
+
+/* The modes of layer_contact_force for the contacts of L, read once before a
+ * loop over them: LAYER_FT_NONE without friction, LAYER_FT_FAST in DEM mode,
+ * else LAYER_FT_EXACT, and then *held the held branches (gw_layer.tmode;
+ * NULL: none held): contact k's mode is held ? held[k] : the value returned. */
+static inline int layer_ft_modes(const gw_layer *L, const unsigned char **held)
+{
+    const int m = !(L->tan_phi > 0) ? LAYER_FT_NONE : L->dem ? LAYER_FT_FAST : LAYER_FT_EXACT;
+    *held = m == LAYER_FT_EXACT && L->tmode_on ? L->tmode : NULL;
+    return m;
 }
 
 /* Body of disc i. */

@@ -58,8 +58,10 @@
  * K_t = k_t F_n^(1/3) = (k_t K_n^(1/3)) u_n^(1/2), the same to rounding, needs no
  * cube root; a layer without clumps takes a disc-only kinematics path (arms =
  * radii) that skips the pairs farther apart than R_a + R_b before any square
- * root. The tangential law itself is layer_tangential (layer_impl.h). In DEM
- * mode a disc-only layer uses layer_dem_rhs (layer_dem.c) instead.
+ * root. The forces of a closed contact are layer_contact_force (layer_impl.h;
+ * the tangential law itself layer_tangential), which every right-hand side
+ * and the block watch call. In DEM mode a disc-only layer uses layer_dem_rhs
+ * (layer_dem.c) instead.
  * Units: SI (m, s, kg, N, Pa, J).
  */
 #include <math.h>
@@ -342,7 +344,8 @@ void layer_contact_rates(const gw_layer *L, const layer_contact *c, const double
 double layer_body_contact_fy(const gw_layer *L, const double *y, int q, const int *idx, int n_idx)
 {
     const int n = L->nb;
-    const double tp = L->tan_phi, alpha = L->p.damping;
+    const unsigned char *held;
+    const int ftm = layer_ft_modes(L, &held);
     double fy = 0;
     for (int j = 0; j < (idx ? n_idx : L->nc); j++) {
         const int k = idx ? idx[j] : j;
@@ -354,18 +357,9 @@ double layer_body_contact_fy(const gw_layer *L, const double *y, int q, const in
         const double su = un > 0 ? sqrt(un) : 0, fel = c->kn * un * su;
         if (!(un > 0) || !(fel > 0))
             continue;
-        double fn = fel, ft = 0;
-        if (alpha > 0)
-            fn = fmax(0, fel * (1.0 + 1.5 * alpha * und));
-        if (tp > 0 && L->dem) {
-            const double cap = tp * fel, f = y[6 * n + k];
-            ft = f > cap ? cap : f < -cap ? -cap : f;
-        } else if (tp > 0) {
-            double rate, cd, ck;
-            layer_tangential(y[6 * n + k], c->kts * su, vt, 1.5 * c->kn * su * und, fel, tp, L->cap_rate,
-                             L->tmode_on ? L->tmode[k] : -1, &ft, &rate, &cd, &ck);
-        }
-        const double f = -fn * nn[1] + ft * nn[0];
+        const layer_cforce o = layer_contact_force(c, su, fel, und, vt, y[6 * n + k], L->p.damping, L->tan_phi,
+                                                   L->cap_rate, held ? held[k] : ftm);
+        const double f = -o.fn * nn[1] + o.ft * nn[0];
         fy += c->qa == q ? f : -f;
     }
     return fy;
@@ -440,7 +434,10 @@ static int layer_rhs(double t, const double *y, double *yd, void *P)
     double pd = 0, pk = 0;
     double *rtail = L->reg_n > 0 ? yd + 6 * n + L->nc + 2 : NULL;
     double *un_last = L->un_last;
-    layer_tscr *tscr = L->dem ? L->tscr : NULL;
+    layer_tscr *tscr = L->tscr;
+    const unsigned char *held;
+    const int ftm = layer_ft_modes(L, &held);
+    const double cap_rate = L->cap_rate;
     for (int q = 0; rtail && q < 2 * (L->reg_n + 2); q++)
         rtail[q] = 0;
     for (int i = 0; i < n; i++) {
@@ -468,40 +465,42 @@ static int layer_rhs(double t, const double *y, double *yd, void *P)
             continue;
         }
         un_last[k] = un;
-        double fnd = 1.5 * c->kn * su * und, fn = fel;
-        if (alpha > 0) {
-            fn = fel * (1.0 + 1.5 * alpha * und);
-            if (fn < 0)
-                fn = 0;
-            pd += (fn - fel) * und;
-        }
-        double ft = 0;
-        if (tp > 0 && tscr) { /* DEM: F_t is the step's (layer_dem.c), tangential books there */
-            double cap = tp * fel, f = y[6 * n + k];
-            ft = f > cap ? cap : f < -cap ? -cap : f;
+        /* the law (layer_contact_force) in each mode's branch, with its books
+         * (one test of the mode per contact; the exact mode's first) */
+        const double f = y[6 * n + k];
+        layer_cforce o;
+        if (ftm == LAYER_FT_EXACT) {
+            o = layer_contact_force(c, su, fel, und, vt, f, alpha, tp, cap_rate, held ? held[k] : ftm);
+            if (alpha > 0)
+                pd += (o.fn - fel) * und;
+            *fdot = o.rate;
+            pd += o.cd;
+            pk += o.ck;
+            if (rtail) {
+                int q = rhs_region(L, c, y, un, nn, clumps);
+                rtail[2 * q] += o.cd + (o.fn - fel) * und;
+                rtail[2 * q + 1] += o.ck;
+            }
+        } else if (ftm == LAYER_FT_FAST) { /* DEM: F_t is the step's (layer_dem.c), tangential books there */
+            o = layer_contact_force(c, su, fel, und, vt, f, alpha, tp, cap_rate, LAYER_FT_FAST);
+            if (alpha > 0)
+                pd += (o.fn - fel) * und;
             *fdot = 0;
             tscr[k].kt = c->kts * su;
             if (rtail) {
                 int q = rhs_region(L, c, y, un, nn, clumps);
                 tscr[k].q = q;
-                rtail[2 * q] += (fn - fel) * und;
-            }
-        } else if (tp > 0) {
-            double kt = c->kts * su, cd, ck;
-            layer_tangential(y[6 * n + k], kt, vt, fnd, fel, tp, L->cap_rate, L->tmode_on ? L->tmode[k] : -1, &ft,
-                             fdot, &cd, &ck);
-            pd += cd;
-            pk += ck;
-            if (rtail) {
-                int q = rhs_region(L, c, y, un, nn, clumps);
-                rtail[2 * q] += cd + (fn - fel) * und;
-                rtail[2 * q + 1] += ck;
+                rtail[2 * q] += (o.fn - fel) * und;
             }
         } else {
+            o = layer_contact_force(c, su, fel, und, vt, f, alpha, tp, cap_rate, LAYER_FT_NONE);
+            if (alpha > 0)
+                pd += (o.fn - fel) * und;
             *fdot = 0;
             if (rtail && alpha > 0)
-                rtail[2 * layer_contact_region_at(L, c, y, un, nn)] += (fn - fel) * und;
+                rtail[2 * layer_contact_region_at(L, c, y, un, nn)] += (o.fn - fel) * und;
         }
+        const double fn = o.fn, ft = o.ft;
         double fx = -fn * nn[0] - ft * nn[1], fy = -fn * nn[1] + ft * nn[0];
         double *da = yd + 6 * c->qa;
         da[3] += fx, da[4] += fy, da[5] += ft * lev[0];

@@ -164,11 +164,14 @@ lean_rhs_quads(const gw_chain *c, const double *restrict y, double *restrict yd,
     const __m256d vg = _mm256_set1_pd(g);
     const __m256d k1 = _mm256_set1_pd(kc[0]), mi1 = _mm256_set1_pd(m1[0]);
     const __m256d vmask = kinematics ? _mm256_castsi256_pd(_mm256_set1_epi32(-1)) : _mm256_setzero_pd();
-    double u0 = y[0] > 0 ? y[0] : 0.0;
-    __m256d fb = _mm256_set_pd(lean_force(c, y, 3), lean_force(c, y, 2), lean_force(c, y, 1),
-                               c->kwall * u0 * sqrt(u0)); /* f_0 .. f_3 */
-    /* v_0 .. v_3 */
-    __m256d v = _mm256_unpackhi_pd(lean_pairs2(y, y + 4), lean_pairs2(y + 2, y + 6));
+    /* f_0 .. f_3, the wall's as a contact with a bead at x = 0 (x_0 - 0 = x_0) */
+    const __m256d c0 = lean_pairs2(y, y + 4), d0 = lean_pairs2(y + 2, y + 6);
+    const __m256d x0 = _mm256_unpacklo_pd(c0, d0); /* x_0 .. x_3 */
+    const __m256d xw = _mm256_shuffle_pd(_mm256_permute2f128_pd(_mm256_setzero_pd(), x0, 0x21), x0, 0x5);
+    const __m256d u0 = _mm256_max_pd(_mm256_sub_pd(x0, xw), _mm256_setzero_pd()); /* 0, x_0, x_1, x_2 */
+    const __m256d kw = _mm256_set_pd(kc[2], kc[1], kc[0], c->kwall);
+    __m256d fb = _mm256_mul_pd(_mm256_mul_pd(kw, u0), _mm256_sqrt_pd(u0));
+    __m256d v = _mm256_unpackhi_pd(c0, d0); /* v_0 .. v_3 */
     int j = 0;
     for (; j + 7 < n; j += 4) /* beads j..j+3 */
         lean_quad(y + 2 * j, kc + j, m1 + j, yd + 2 * j, &fb, &v, vg, vmask, k1, mi1, uni);

@@ -178,11 +178,9 @@ lean_rhs_quads(const gw_chain *c, const double *restrict y, double *restrict yd,
     /* beads j..n-1 (4 to 7) on a padded copy of beads j..j+11 */
     double yb[24], kb[12], mb[8], ob[16];
     const int r = n - j;
-    memcpy(yb, y + 2 * j, (size_t)(2 * r) * sizeof *yb);
-    for (int i = r; i < 12; i++) {
-        yb[2 * i] = -INFINITY;
-        yb[2 * i + 1] = 0.0;
-    }
+    const __m128d pad = _mm_set_pd(0.0, -INFINITY); /* x, v of a bead past the end */
+    for (int i = 0; i < 12; i++) /* pairs: no call to memcpy (4 % of the falcon job) */
+        _mm_storeu_pd(yb + 2 * i, i < r ? _mm_loadu_pd(y + 2 * (j + i)) : pad);
     if (!uni) {
         memset(kb, 0, sizeof kb);
         memcpy(kb, kc + j, (size_t)(r - 1) * sizeof *kb);
@@ -192,7 +190,8 @@ lean_rhs_quads(const gw_chain *c, const double *restrict y, double *restrict yd,
     lean_quad(yb, kb, mb, ob, &fb, &v, vg, vmask, k1, mi1, uni);
     if (r > 4)
         lean_quad(yb + 8, kb + 4, mb + 4, ob + 8, &fb, &v, vg, vmask, k1, mi1, uni);
-    memcpy(yd + 2 * j, ob, (size_t)(2 * r) * sizeof *ob);
+    for (int i = 0; i < r; i++)
+        _mm_storeu_pd(yd + 2 * (j + i), _mm_loadu_pd(ob + 2 * i));
     /* clean upper halves before the SSE code that follows (the solver): SSE
      * code run with dirty upper halves was 7x slower on a Cascade Lake */
     _mm256_zeroupper();

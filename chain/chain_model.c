@@ -193,7 +193,8 @@ lean_rhs_quads(const gw_chain *c, const double *restrict y, double *restrict yd,
     for (int i = 0; i < r; i++)
         _mm_storeu_pd(yd + 2 * (j + i), _mm_loadu_pd(ob + 2 * i));
     /* clean upper halves before the SSE code that follows (the solver): SSE
-     * code run with dirty upper halves ran about 3x slower on a Cascade Lake (the SSE2 loop 8.4 against 3.0 ns per bead) */
+     * code run with dirty upper halves ran about 3x slower on a Cascade Lake
+     * (the SSE2 loop 8.4 against 3.0 ns per bead) */
     _mm256_zeroupper();
 }
 

@@ -17,6 +17,8 @@ struct gw_chain {
     double kwall, gwall;         /* wall coefficient and its KK constant */
     int uniform;                 /* every kc equal and every minv equal: the lean
                                     loop reads kc[0] and minv[0] only */
+    int rhs_avx;                 /* the undamped right-hand side's 4-wide AVX loop
+                                    (the CPU has AVX; same values as the SSE2 loop) */
     double *scale;               /* [dim] */
     double e_scale;              /* the energy at the column's speed scale when
                                     gravity sets it above v_imp (sum m v_s^2 / 2,

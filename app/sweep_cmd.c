@@ -318,6 +318,11 @@ int gw_cmd_sweep(int argc, char **argv, const gw_sweep_model *const *models, int
             snprintf(what, sizeof what, "sweep --out");
         if (gw_out_check(out, what, &err) != GW_OK)
             code = 2;
+        /* and no input of the sweep (the config, a sample) is its journal or
+         * table there: before, a config named DIR/results.csv ran and was
+         * replaced by the table (exit 0), and --check passed a sample there */
+        else if (gw_sweep_out_inputs_check(out, &cfg, &err) != GW_OK)
+            code = 2;
     }
     /* The journal and table of the whole grid fit, before a case is checked */
     if (code == 0 && rank == 0 && (rc = gw_sweep_size_check(&cfg, m, &err)) != GW_OK) {

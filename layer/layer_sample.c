@@ -37,6 +37,10 @@
 #define SAMPLE_LINE_MAX 1024  /* longest header or particle line; comments may be longer */
 #define SAMPLE_MAGIC "granwave-layer-sample"
 
+/* the units attributes of an HDF5 sample: the file's, and each coordinate
+ * dataset's (x, y, r); a reader refuses others (h5_units_check) */
+#define SAMPLE_H5_UNITS "SI: x, y, r, width, rm in metres"
+#define SAMPLE_H5_COLUMN_UNITS "m"
 static const unsigned char h5_signature[8] = {0x89, 'H', 'D', 'F', '\r', '\n', 0x1a, '\n'};
 
 void gw_layer_sample_free(gw_layer_sample *s)
@@ -630,7 +634,7 @@ static int h5_column_write(hid_t f, const char *name, const double *v, int n)
     hid_t sp = H5Screate_simple(1, &dim, NULL);
     hid_t d = sp < 0 ? -1 : H5Dcreate2(f, name, H5T_IEEE_F64LE, sp, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
     int bad = d < 0 || H5Dwrite(d, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, v) < 0 ||
-              h5_attr_write_str(d, "units", "m");
+              h5_attr_write_str(d, "units", SAMPLE_H5_COLUMN_UNITS);
     if (d >= 0)
         H5Dclose(d);
     if (sp >= 0)
@@ -673,7 +677,7 @@ static int write_h5_locked(const gw_layer_sample *s, const char *path, const cha
               h5_attr_write_str(file, "mass_law", s->mass_law == GW_LAYER_MASS_SPHERE ? "sphere" : "disc") ||
               (s->clump_mass == GW_LAYER_CLUMP_MASS_UNION && h5_attr_write_str(file, "clump_mass", gw_layer_clump_mass_name(s->clump_mass))) ||
               h5_attr_write(file, "n", H5T_NATIVE_INT, &n) ||
-              h5_attr_write_str(file, "units", "SI: x, y, r, width, rm in metres") ||
+              h5_attr_write_str(file, "units", SAMPLE_H5_UNITS) ||
               (header && h5_attr_write_str(file, "header", header)) ||
               (s->body && h5_body_write(file, s->body, n));
     int rc = GW_OK;
@@ -777,9 +781,34 @@ static int h5_in_file(hid_t f, const char *name, const char **what)
     return in;
 }
 
-/* Dataset name: one dimension of n numbers, read as doubles into v. */
-static int h5_column_read(hid_t f, const char *name, long n, double *v, const char *path, const char *why,
-                          gw_err *err)
+/* The units attribute of loc (the file, or dataset name), when there is one,
+ * must be want, the units granwave writes and reads the values in: a sample
+ * converted to millimetres with its units attribute saying "mm" ran as metres
+ * (a 1000 times larger box, block and particles), exit 0. Absent: the values
+ * are taken as SI, as the format says. */
+static int h5_units_check(hid_t loc, const char *name, const char *want, const char *path, gw_err *err)
+{
+    char str[64], show[48];
+    const int got = h5_attr_read(loc, "units", H5T_STRING, -1, str);
+    if (got == 0 || (got == 1 && strcmp(str, want) == 0))
+        return GW_OK;
+    char what[96];
+    if (got < 0)
+        return gw_err_set(err, GW_EFORMAT, "sample '%s': HDF5 attribute units of %s%s%s is not one string "
+                          "(granwave writes '%s')", path, name ? "dataset '" : "the file", name ? name : "",
+                          name ? "'" : "", want);
+    if (name)
+        gw_snprintf(what, sizeof what, "HDF5 dataset '%s' has units", name);
+    else
+        gw_snprintf(what, sizeof what, "HDF5 attribute units is");
+    return gw_err_set(err, GW_EFORMAT, "sample '%s': %s '%s', not '%s': the values are read in metres, as "
+                      "granwave writes them (convert them, and their units)", path, what, shown(str, show), want);
+}
+
+/* Dataset name: one dimension of n numbers, read as doubles into v; its units
+ * attribute, when it has one, must be units (NULL: not checked). */
+static int h5_column_read(hid_t f, const char *name, long n, double *v, const char *units, const char *path,
+                          const char *why, gw_err *err)
 {
     htri_t ex = H5Lexists(f, name, H5P_DEFAULT);
     const char *where = "";
@@ -802,6 +831,8 @@ static int h5_column_read(hid_t f, const char *name, long n, double *v, const ch
     else if (dim != (hsize_t)n)
         rc = gw_err_set(err, GW_EFORMAT, "sample '%s': HDF5 dataset '%s' has %llu values, n = %ld", path, name,
                         (unsigned long long)dim, n);
+    else if (units && h5_units_check(d, name, units, path, err) != GW_OK)
+        rc = GW_EFORMAT;
     else if (H5Dread(d, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, v) < 0)
         rc = gw_err_set(err, GW_EFORMAT, "sample '%s': HDF5 dataset '%s' unreadable: %s", path, name, why);
     if (t >= 0)
@@ -866,9 +897,10 @@ static int h5_fields(hid_t f, gw_layer_sample *s, const char *path, const char *
         return gw_err_set(err, GW_ENOMEM, "sample '%s': out of memory for %lld particles", path, n);
     s->y = s->x + n, s->r = s->x + 2 * n;
     s->n = (int)n;
-    if ((rc = h5_column_read(f, "x", (long)n, s->x, path, why, err)) != GW_OK ||
-        (rc = h5_column_read(f, "y", (long)n, s->y, path, why, err)) != GW_OK ||
-        (rc = h5_column_read(f, "r", (long)n, s->r, path, why, err)) != GW_OK)
+    if ((rc = h5_units_check(f, NULL, SAMPLE_H5_UNITS, path, err)) != GW_OK ||
+        (rc = h5_column_read(f, "x", (long)n, s->x, SAMPLE_H5_COLUMN_UNITS, path, why, err)) != GW_OK ||
+        (rc = h5_column_read(f, "y", (long)n, s->y, SAMPLE_H5_COLUMN_UNITS, path, why, err)) != GW_OK ||
+        (rc = h5_column_read(f, "r", (long)n, s->r, SAMPLE_H5_COLUMN_UNITS, path, why, err)) != GW_OK)
         return rc;
     if (H5Lexists(f, "body", H5P_DEFAULT) > 0) { /* a clump sample: ids read as numbers, then checked */
         double *v = malloc((size_t)n * sizeof *v);
@@ -877,7 +909,7 @@ static int h5_fields(hid_t f, gw_layer_sample *s, const char *path, const char *
             free(v);
             return gw_err_set(err, GW_ENOMEM, "sample '%s': out of memory for %lld body ids", path, n);
         }
-        rc = h5_column_read(f, "body", (long)n, v, path, why, err);
+        rc = h5_column_read(f, "body", (long)n, v, NULL, path, why, err);
         for (long long i = 0; rc == GW_OK && i < n; i++) {
             if (!(v[i] >= 0 && v[i] < (double)n && v[i] == floor(v[i])))
                 rc = gw_err_set(err, GW_EFORMAT, "sample '%s': HDF5 dataset 'body': value %g at index %lld is "

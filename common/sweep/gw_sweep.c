@@ -462,7 +462,14 @@ int gw_sweep_config_read(const char *path, const gw_sweep_model *const *models, 
     free(text);
     free(pc.calls);
     free(pc.pending);
-    return config_finish(path, models, nmodels, cfg, model, rc, &pc, err);
+    if ((rc = config_finish(path, models, nmodels, cfg, model, rc, &pc, err)) != GW_OK)
+        return rc;
+    if (!(cfg->path = strdup(path))) {
+        gw_sweep_config_free(cfg);
+        *model = NULL;
+        return gw_err_set(err, GW_ENOMEM, "%s: out of memory", path);
+    }
+    return GW_OK;
 }
 
 int gw_sweep_config_read_string(const char *text, const char *name, const gw_sweep_model *const *models,
@@ -866,6 +873,7 @@ void gw_sweep_config_free(gw_sweep_config *cfg)
     free(cfg->inputs);
     free(cfg->model);
     free(cfg->out);
+    free(cfg->path);
     memset(cfg, 0, sizeof *cfg);
 }
 
@@ -1159,6 +1167,23 @@ static int journal_create(const char *path, const char *text, int *fdp, gw_err *
 static int journal_check(const char *path, const char *dir, const char *head, const gw_sweep_config *cfg,
                          char *done, long *ndone, int fd, gw_err *err);
 
+int gw_sweep_out_inputs_check(const char *dir, const gw_sweep_config *cfg, gw_err *err)
+{
+    /* an input file of the sweep that is its journal or table: the table would
+     * replace it (a sample named results.csv in DIR, exit 0 before; the
+     * config itself named DIR/results.csv, or a link to it, until the
+     * twenty-first pass) */
+    static const char *const outs[] = {"journal.csv", "results.csv", NULL};
+    if (!dir || !cfg)
+        return gw_err_set(err, GW_EINVAL, "gw_sweep_out_inputs_check: %s is NULL", !dir ? "dir" : "cfg");
+    if (cfg->path && gw_outset_check_input(dir, outs, cfg->path, "sweep CONFIG", err) != GW_OK)
+        return GW_EINVAL;
+    for (int i = 0; i < cfg->ninputs; i++)
+        if (gw_outset_check_input(dir, outs, cfg->inputs[i].value, "sweep", err) != GW_OK)
+            return GW_EINVAL;
+    return GW_OK;
+}
+
 int gw_sweep_journal_scan(const char *dir, const gw_sweep_config *cfg, char *done, long *ndone, gw_err *err)
 {
     int fd = -1;
@@ -1183,12 +1208,8 @@ int gw_sweep_journal_open(const char *dir, const gw_sweep_config *cfg, char *don
         return gw_err_set(err, GW_EINVAL, "%s: path too long", dir);
     if (gw_out_file_check(tpath, "sweep table", err) != GW_OK)
         return GW_EINVAL;
-    /* an input file of the sweep that is its journal or table: the table would
-     * replace it (a sample named results.csv in DIR, exit 0 before) */
-    static const char *const outs[] = {"journal.csv", "results.csv", NULL};
-    for (int i = 0; i < cfg->ninputs; i++)
-        if (gw_outset_check_input(dir, outs, cfg->inputs[i].value, "sweep", err) != GW_OK)
-            return GW_EINVAL;
+    if (gw_sweep_out_inputs_check(dir, cfg, err) != GW_OK)
+        return GW_EINVAL;
     char head[96];
     gw_snprintf(head, sizeof head, GW_SWEEP_JOURNAL_HEAD "\n", cfg->hash);
     struct stat st;

@@ -43,6 +43,7 @@ typedef struct gw_sweep_key {
 } gw_sweep_key;
 
 typedef struct gw_sweep_config {
+    char *path; /* the config file as given to gw_sweep_config_read (NULL from a string): an input too */
     char *model;
     char *out;
     gw_sweep_key grid[GW_SWEEP_MAX_KEYS];
@@ -138,6 +139,15 @@ int gw_sweep_row_check(const gw_sweep_config *cfg, const char *row, gw_err *err)
  * hashes; so is a journal of the format before rows carried these hashes. */
 int gw_sweep_journal_scan(const char *dir, const gw_sweep_config *cfg, char *done, long *ndone,
                           gw_err *err);
+/* The sweep's input files in DIR under the names of its outputs (journal.csv,
+ * results.csv): the config file itself (cfg->path) and the files the
+ * model's read_key names (cfg->inputs). The table would replace such a file
+ * when the sweep ends (a config DIR/results.csv ran, exit 0, and was gone),
+ * the journal be refused as not one. GW_EINVAL "sweep CONFIG: 'P' is the file
+ * this run writes as DIR/results.csv: ..." (or "sweep: ..." for a sample);
+ * the same file under another name (a symbolic or hard link) counts. A DIR
+ * not made yet holds nothing. gw_sweep_journal_open checks it too. */
+int gw_sweep_out_inputs_check(const char *dir, const gw_sweep_config *cfg, gw_err *err);
 /* The same, and the journal kept open for appending in *fd (-1 on failure),
  * locked (flock) until it is closed: one sweep at a time in a directory. A
  * new journal is linked into place whole, never over one made meanwhile.

@@ -315,7 +315,7 @@ static unsigned long fnv64_file(unsigned long h, const char *path, int *nomem)
     return h ^ 0xfe;
 }
 
-static int config_finish(const char *path, const gw_sweep_model *const *models, int nmodels,
+static int config_finish(const char *path, const char *base, const gw_sweep_model *const *models, int nmodels,
                          gw_sweep_config *cfg, const gw_sweep_model **model, int rc,
                          const parse_ctx *pc, gw_err *err);
 
@@ -429,6 +429,97 @@ static int lines_fit(const char *text, const char *name, parse_ctx *pc, gw_err *
     return scan_lines(text, name, pc, err);
 }
 
+/* The directory of the config file at path, absolute (realpath of the part
+ * before its last '/', "." without one); NULL with err set when it cannot be
+ * found. */
+static char *config_dir(const char *path, int *status, gw_err *err)
+{
+    const char *slash = strrchr(path, '/');
+    char *dir = slash ? malloc((size_t)(slash - path) + 2) : dupstr(".");
+    if (dir && slash) {
+        const size_t n = slash == path ? 1 : (size_t)(slash - path); /* "/x.ini": "/" */
+        memcpy(dir, path, n);
+        dir[n] = '\0';
+    }
+    char *real = dir ? realpath(dir, NULL) : NULL;
+    const int e = errno;
+    free(dir);
+    if (!real)
+        *status = gw_err_set(err, e == ENOMEM || !dir ? GW_ENOMEM : GW_EINVAL,
+                             "%s: cannot find the config's directory: %s", path, strerror(e));
+    return real;
+}
+
+/* value resolved against base (the config's directory): a relative path is
+ * taken from the config's directory, an absolute one is kept. *value
+ * replaced by a new string; GW_ENOMEM. */
+static int resolve_one(char **value, const char *base)
+{
+    if ((*value)[0] == '/')
+        return GW_OK;
+    const size_t bl = strlen(base), vl = strlen(*value);
+    char *r = malloc(bl + vl + 2);
+    if (!r)
+        return GW_ENOMEM;
+    memcpy(r, base, bl);
+    size_t at = bl;
+    if (!(bl > 0 && base[bl - 1] == '/')) /* base "/" */
+        r[at++] = '/';
+    memcpy(r + at, *value, vl + 1);
+    free(*value);
+    *value = r;
+    return GW_OK;
+}
+
+/* A relative file named in the config that is not there: refused naming the
+ * key, the value as written and the path it was taken as. */
+static int resolved_missing(const char *path, const char *section, const char *key, const char *written,
+                            const char *resolved, gw_err *err)
+{
+    struct stat sb;
+    if (stat(resolved, &sb) == 0 || (errno != ENOENT && errno != ENOTDIR))
+        return GW_OK; /* there (or unreadable: the model's check names it) */
+    return gw_err_set(err, GW_EINVAL, "%s: [%s] %s = %s: no such file %s (a relative path in a config is taken "
+                      "from the config's directory)", path, section, key, written, resolved);
+}
+
+/* The paths a config names, taken from the config's directory (base,
+ * absolute) instead of the working directory: [sweep] out and the values of
+ * the model's read_key (the layer's sample). The same config then names the
+ * same files from every working directory, and the journal and the table
+ * record the paths the cases read. A relative read_key value that names
+ * nothing there is refused. */
+static int resolve_paths(gw_sweep_config *cfg, const char *base, const char *path, gw_err *err)
+{
+    if (cfg->out && resolve_one(&cfg->out, base) != GW_OK)
+        return gw_err_set(err, GW_ENOMEM, "%s: out of memory", path);
+    if (!cfg->read_key)
+        return GW_OK;
+    for (int s = 0; s < 2; s++) {
+        gw_sweep_key *keys = s ? cfg->params : cfg->grid;
+        const int nk = s ? cfg->nparams : cfg->ngrid;
+        for (int i = 0; i < nk; i++) {
+            if (strcmp(keys[i].name, cfg->read_key) != 0)
+                continue;
+            for (int j = 0; j < keys[i].nvalues; j++) {
+                if (keys[i].values[j][0] == '/')
+                    continue;
+                char *written = dupstr(keys[i].values[j]);
+                int rc = written ? resolve_one(&keys[i].values[j], base) : GW_ENOMEM;
+                if (rc != GW_OK) {
+                    free(written);
+                    return gw_err_set(err, GW_ENOMEM, "%s: out of memory", path);
+                }
+                rc = resolved_missing(path, s ? "params" : "grid", keys[i].name, written, keys[i].values[j], err);
+                free(written);
+                if (rc != GW_OK)
+                    return rc;
+            }
+        }
+    }
+    return GW_OK;
+}
+
 int gw_sweep_config_read(const char *path, const gw_sweep_model *const *models, int nmodels,
                          gw_sweep_config *cfg, const gw_sweep_model **model, gw_err *err)
 {
@@ -462,7 +553,15 @@ int gw_sweep_config_read(const char *path, const gw_sweep_model *const *models, 
     free(text);
     free(pc.calls);
     free(pc.pending);
-    if ((rc = config_finish(path, models, nmodels, cfg, model, rc, &pc, err)) != GW_OK)
+    int drc = GW_OK;
+    char *base = config_dir(path, &drc, err);
+    if (!base) {
+        gw_sweep_config_free(cfg);
+        return drc;
+    }
+    rc = config_finish(path, base, models, nmodels, cfg, model, rc, &pc, err);
+    free(base);
+    if (rc != GW_OK)
         return rc;
     if (!(cfg->path = strdup(path))) {
         gw_sweep_config_free(cfg);
@@ -489,7 +588,7 @@ int gw_sweep_config_read_string(const char *text, const char *name, const gw_swe
     int rc = ini_parse_string(text, handler, &pc);
     free(pc.calls);
     free(pc.pending);
-    return config_finish(name, models, nmodels, cfg, model, rc, &pc, err);
+    return config_finish(name, NULL, models, nmodels, cfg, model, rc, &pc, err);
 }
 
 /* A value naming a regular file: its content hash into cfg->inputs (once per
@@ -790,7 +889,7 @@ static int changed_input(const gw_sweep_config *cfg, const char *buf, size_t len
     return GW_OK;
 }
 
-static int config_finish(const char *path, const gw_sweep_model *const *models, int nmodels,
+static int config_finish(const char *path, const char *base, const gw_sweep_model *const *models, int nmodels,
                          gw_sweep_config *cfg, const gw_sweep_model **model, int rc,
                          const parse_ctx *pc, gw_err *err)
 {
@@ -823,6 +922,10 @@ static int config_finish(const char *path, const gw_sweep_model *const *models, 
     if (cfg->ngrid == 0) {
         gw_sweep_config_free(cfg);
         return gw_err_set(err, GW_EINVAL, "%s: the [grid] section is empty or missing", path);
+    }
+    if (base && (rc = resolve_paths(cfg, base, path, err)) != GW_OK) {
+        gw_sweep_config_free(cfg);
+        return rc;
     }
     cfg->ncases = 1;
     int nomem = 0;

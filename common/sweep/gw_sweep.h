@@ -6,7 +6,7 @@
  * Config format (parsed with libinih; '#' or ';' comments):
  *   [sweep]
  *   model = chain              ; which model runs the cases
- *   out = results/my_sweep     ; output directory (or --out DIR)
+ *   out = results/my_sweep     ; output directory (or --out DIR), from the config's directory
  *   [grid]                     ; every combination of these values is a case
  *   n = 1:40                   ; integer range A:B, or a comma list
  *   vimp = 0.1, 0.2, 0.3
@@ -97,10 +97,18 @@ typedef struct gw_sweep_model {
 
 /* Parse path. Errors (exit code 2 material): unreadable file, syntax error or
  * unknown section/key with "path:line: ..." in err, empty grid values, a grid
- * larger than 1e9 cases. models/nmodels: the known models. */
+ * larger than 1e9 cases. models/nmodels: the known models. The paths the
+ * config names ([sweep] out, the values of the model's read_key) are taken
+ * from the config file's own directory when relative (absolute ones are
+ * kept): cfg holds them absolute (the config's directory, symbolic links
+ * resolved, then the value as written), so the same config reads the same
+ * files from any working directory and its journal and table record them.
+ * A relative read_key value that names nothing there: GW_EINVAL "path: [grid]
+ * sample = S: no such file /DIR/S (...)". */
 int gw_sweep_config_read(const char *path, const gw_sweep_model *const *models, int nmodels,
                          gw_sweep_config *cfg, const gw_sweep_model **model, gw_err *err);
-/* The same from a string (name is used in messages). */
+/* The same from a string (name is used in messages; relative paths stay as
+ * written: the caller's working directory). */
 int gw_sweep_config_read_string(const char *text, const char *name, const gw_sweep_model *const *models,
                                 int nmodels, gw_sweep_config *cfg, const gw_sweep_model **model, gw_err *err);
 void gw_sweep_config_free(gw_sweep_config *cfg);

@@ -6,8 +6,10 @@ into exceptions. No physics here: every number comes from libgranwave.
 """
 import ctypes
 import itertools
+import math
 import numbers
 import os
+import re
 import signal
 import threading
 
@@ -55,8 +57,8 @@ class GranwaveWarning(RuntimeWarning):
     collision cut at t_max, a sample that did not settle, an undecided
     bounce, ...): the result is returned and records it (converged False,
     undecided, unfinished, ...); the warning says what is not final, in the
-    library's text (the program's line after "warning: "), which the result
-    lists too (warnings)."""
+    library's text (the program's line after "warning: ", its inputs named by
+    their keywords: keyword_text), which the result lists too (warnings)."""
 
 
 def warn(what, text, stacklevel=3):
@@ -66,12 +68,75 @@ def warn(what, text, stacklevel=3):
     warnings.warn(f"{what}: {text}", GranwaveWarning, stacklevel=stacklevel)
 
 
-def _raise(rc, err, what, params=()):
+# an input named as the program's flag ("raise --t-max"): two dashes at a word's
+# start, then the flag's name
+_FLAG_RE = re.compile(r"(?<![\w./-])--([a-z][a-z0-9]*(?:-[a-z0-9]+)*)(?![\w/-])")
+# a command line of the program quoted in a text ("one column's collision:
+# granwave chain --n 3"): the program's, left as it is
+_COMMAND_RE = re.compile(r"granwave [a-z][a-z-]*(?: --[a-z][a-z0-9-]*(?: [^\s,;()]+)?)+")
+
+
+def keyword_text(text, names, keep=()):
+    """The library's text (an error message, a warning) with its inputs named
+    as Python names them. The library writes an input as the program's flag
+    ("raise --t-max", "an --f0 so small") or by its row's name ("t-max = 0.05
+    s", "dt-out: ..."), the program prints that as it is (its messages stay
+    byte for byte), and Python said "--t-max" to a caller who wrote t_max=.
+    Here each input of names (the rows' names, '-' in them: the call's
+    inputs) becomes its keyword (t_max), as a flag or as a whole word; a
+    flag that is no input of the call (the program's --out where the
+    function has no out), a quoted command line of the program ("granwave
+    chain --n 3") and the call's own text values quoted back (keep: a sample
+    file named t-max) stay as they are."""
+    if not text or not names:
+        return text
+    names = set(names)
+    hy = sorted((n for n in names if "-" in n), key=len, reverse=True)
+    bare = re.compile(r"(?<![\w./-])(" + "|".join(map(re.escape, hy)) + r")(?![\w/-]|\.\w)") if hy else None
+
+    def flag(m):
+        return m.group(1).replace("-", "_") if m.group(1) in names else m.group(0)
+
+    def words(part):
+        part = _FLAG_RE.sub(flag, part)
+        return bare.sub(lambda b: b.group(1).replace("-", "_"), part) if bare else part
+
+    # the spans left as they are: command lines, then the values quoted back
+    spans = [m.span() for m in _COMMAND_RE.finditer(text)]
+    for k in sorted({k for k in keep if k}, key=len, reverse=True):
+        for m in re.finditer(re.escape(k), text):
+            if not any(a < m.end() and m.start() < b for a, b in spans):
+                spans.append(m.span())
+    out, pos = [], 0
+    for a, b in sorted(spans):
+        out += [words(text[pos:a]), text[a:b]]
+        pos = b
+    out.append(words(text[pos:]))
+    return "".join(out)
+
+
+def _texts(values):
+    """The str values among values (a path as its str): what a message may
+    quote back (keyword_text's keep)."""
+    out = []
+    for v in values:
+        if isinstance(v, os.PathLike):
+            v = os.fspath(v)
+        if isinstance(v, bytes):
+            v = os.fsdecode(v)
+        if isinstance(v, str):
+            out.append(v)
+        elif isinstance(v, (list, tuple)):
+            out += [x for x in v if isinstance(x, str)]
+    return out
+
+
+def _raise(rc, err, what, names=(), keep=()):
+    """The exception for the library's status rc and message err, in the
+    words of the call what; names: the rows' names of its inputs, keep: the
+    call's text values (keyword_text)."""
     text = err.msg.decode(errors="replace") or lib.gw_strerror(rc).decode()
-    for p in params:  # the library names a parameter by its flag; Python by its keyword
-        if text.startswith(p.name + ":"):
-            text = p.keyword + text[len(p.name):]
-            break
+    text = keyword_text(text, names, keep)  # the library names a parameter by its flag; Python by its keyword
     # the library's run messages name the study already ("chain: bead 1 still on the wall ...")
     msg = text if text.startswith(what + ": ") else f"{what}: {text}"
     if rc in (GW_EINVAL, GW_EFORMAT):
@@ -225,8 +290,23 @@ def _kind(value):
     return f"{type(value).__name__} ({value!r})"
 
 
+def _flag(p, value):
+    """A bool keyword's value as the text gw_param_set parses ("1", "0"): a
+    Python bool, a numpy bool (np.bool_, a 0-d bool array), nothing else. A
+    number or a string was taken too: trace=1.0, trace=np.float64(1) and
+    trace="true" ran with the trace, trace=0 without, where trace=2 was
+    refused; a flag takes True or False as the program's takes no value."""
+    if isinstance(value, np.ndarray) and value.ndim == 0 and value.dtype.kind == "b":
+        value = value[()]
+    if isinstance(value, (bool, np.bool_)):
+        return "1" if value else "0"
+    raise TypeError(f"{p.keyword}: expected True or False, got {_kind(value)}")
+
+
 def _text(p, value):
     """A Python value as the text gw_param_set parses."""
+    if p.type == FLAG:  # every bool keyword, of every study and sweep, here
+        return _flag(p, value)
     if isinstance(value, os.PathLike):
         value = os.fspath(value)
     if isinstance(value, bytes) and p.type == TEXT:  # a file name as the OS gives it
@@ -238,13 +318,6 @@ def _text(p, value):
         if "\0" in value:  # C would read up to the NUL: another file, silently
             raise GranwaveValueError(f"{p.keyword}: {value!r} holds a NUL character", GW_EINVAL)
         return value
-    if p.type == FLAG:
-        # an array of several values raised numpy's "truth value of an array ...
-        # is ambiguous" naming no keyword, and array([1]) was taken as True
-        x = _scalar(value)
-        if isinstance(x, bool) or (x is not None and x in (0, 1)):
-            return "1" if x else "0"
-        raise TypeError(f"{p.keyword}: expected True or False, got {_kind(value)}")
     if p.type == LIST:
         if _scalar(value) is not None and not isinstance(value, (bool, np.bool_, np.ndarray)):
             value = [value]
@@ -263,7 +336,10 @@ def _text(p, value):
             v = _scalar(x)
             if v is None or isinstance(v, bool):
                 raise TypeError(f"{p.keyword}: item {k + 1} is not a number ({x!r})")
-            items.append(repr(float(v)))
+            # an integer by its digits, as a scalar's: float() of one beyond the
+            # largest double raised OverflowError naming nothing (radii=[1e-3,
+            # 2**2000]); the library refuses it as not finite, naming the keyword
+            items.append(str(v) if isinstance(v, int) else repr(v))
         if any("," in x for x in items):
             raise GranwaveValueError(f"{p.keyword}: an item holds ',' ({items!r})", GW_EINVAL)
         return ",".join(items) if items else "none"
@@ -311,6 +387,7 @@ class Study:
         self.func = name.replace("-", "_")
         self.table, self.params = read_table(self.st.params)
         self.by_keyword = {p.keyword: p for p in self.params}
+        self.names = {p.name for p in self.params}  # the inputs' rows, for the library's texts (keyword_text)
         self.ftable, self.fields = read_table(self.st.fields)
         CLOCK_KEYS.update(f.name for f in self.fields if f.unit == "ms" or f.help.startswith("wall-clock"))
 
@@ -338,7 +415,7 @@ class Study:
                     raise GranwaveValueError(f"{self.func}: {p.keyword}: {text!r} cannot be encoded", GW_EINVAL) from None
                 rc = lib.gw_param_set(self.table, buf, p.name.encode(), raw, ctypes.byref(err))
                 if rc != 0:
-                    _raise(rc, err, self.func, self.params)
+                    _raise(rc, err, self.func, self.names, _texts(kwargs.values()))
         except BaseException:
             self.st.clear(buf)
             raise
@@ -355,7 +432,7 @@ class Study:
                 rc = self.st.run(buf, out, cb.c_fn, None, ctypes.byref(err))
             cb.reraise(self.func)
             if rc != 0:
-                _raise(rc, err, self.func, self.params)
+                _raise(rc, err, self.func, self.names, _texts(kwargs.values()))
             r = read_result(self.fields, ctypes.addressof(out))
         finally:
             self.st.free_out(out)
@@ -364,7 +441,8 @@ class Study:
         # the program prints each after "granwave NAME: warning: "): a list, and a
         # GranwaveWarning each, shown at the line that called the public function
         text = r.get("warnings") or ""
-        r["warnings"] = text[:-1].split("\n") if text else []
+        keep = _texts(kwargs.values())
+        r["warnings"] = [keyword_text(t, self.names, keep) for t in text[:-1].split("\n")] if text else []
         for w in r["warnings"]:
             warn(self.func, w, stacklevel=4)
         return r
@@ -556,8 +634,8 @@ def _sweep_rows(model, m, key):
 
 def _ini_value(key, v, rows=()):
     """v as the text of a sweep config's value of key. A flag's value (a row of
-    type bool) is converted by the row as a study's keyword is (True, 1, an
-    np.bool_); any other key refuses a bool as the studies do ("expected a
+    type bool) is converted by the row as a study's keyword is (True, False,
+    an np.bool_: _flag); any other key refuses a bool as the studies do ("expected a
     number, got True"): grid={"n": [True, 2]} ran a column of 1 bead, and
     vimp=True an impact at 1 m/s, where chain(n=True) is refused."""
     if rows and all(r.type == FLAG for r in rows):
@@ -595,7 +673,20 @@ def _looks_like_range(s):
     return s.count(":") == 1 and all(c in " \t+-0123456789" for c in s.replace(":", ""))
 
 
+_GRID_MAX = 10**9  # cases of a sweep (the library's bound: "the grid has more than 1e9 cases")
+
+
 def _grid_values(key, v):
+    if isinstance(v, range):
+        # read whole below: range(2, 10**12) raised an empty MemoryError after
+        # taking the memory there was, range(1, 2**80) OverflowError
+        try:
+            n = len(v)
+        except OverflowError:
+            n = math.inf
+        if n > _GRID_MAX:
+            raise GranwaveValueError(f"sweep() grid: '{key}': {v!r} holds more than 1e9 values: the grid has more "
+                                     f"than 1e9 cases", GW_EINVAL)
     if isinstance(v, str):
         if _looks_like_range(v):
             a, b = (x.strip() for x in v.split(":"))
@@ -610,6 +701,12 @@ def _grid_values(key, v):
 
 
 _SWEEP_KEYWORDS = {}
+
+
+def _sweep_names(model, m):
+    """The rows' names of the model's keys (keyword_text)."""
+    _sweep_rows(model, m, "")
+    return set(_SWEEP_ROWS[model]) | {"point", "points", "spacing"}
 
 
 def _sweep_hint(model, m, k):
@@ -727,7 +824,8 @@ def run_sweep(model, grid, params, jobs, progress):
                                        ctypes.byref(ncases), ctypes.byref(mod), ctypes.byref(err))
         cb.reraise()
         if rc != 0:
-            _raise(rc, err, "sweep")
+            _raise(rc, err, "sweep", _sweep_names(model, m), _texts(list(params.values()) + [
+                x for v in axes.values() for x in v]))
         cases = list(itertools.product(*axes.values()))  # the C order: last key fastest
         if ncases.value != len(cases):  # each grid value here must be one case's value there
             raise GranwaveError(f"sweep: the library ran {ncases.value} cases where the grid gives {len(cases)}: "

@@ -12,6 +12,7 @@ import subprocess
 import sys
 from pathlib import Path
 
+import numpy as np
 import pytest
 
 REPO = Path(__file__).resolve().parents[2]
@@ -66,10 +67,11 @@ def test_sweep_jobs_keyword(jobs, exc, text):
 
 def test_sweep_flag_spellings_are_one_value():
     import granwave
-    # 1 and True reach the config as "1" and "true": the same case twice
+    # True and np.bool_(True) are one value: the same case twice (1 and True
+    # were, before a flag took bools only)
     with pytest.raises(granwave.GranwaveValueError, match="exact: .* are the same value"):
-        granwave.sweep("layer", {"exact": [1, True]}, sample=SAMPLE, t_max=1e-4, skin=1e-3)
-    r = granwave.sweep("layer", {"exact": [0, True]}, jobs=2, sample=SAMPLE, t_max=1e-4, skin=1e-3)
+        granwave.sweep("layer", {"exact": [np.bool_(True), True]}, sample=SAMPLE, t_max=1e-4, skin=1e-3)
+    r = granwave.sweep("layer", {"exact": [False, True]}, jobs=2, sample=SAMPLE, t_max=1e-4, skin=1e-3)
     assert len(r["t_end"]) == 2
 
 

@@ -8,12 +8,14 @@ program said "raise --t-max", Python "raise t_max"; drop's "null" against
 builds each text once (chain/chain_warnings.c, layer/layer_warnings.c,
 common/stats/gw_stats_run.c) and gives it with the result (the outcomes'
 `warnings`, gw_study_warnings); the program prints those texts and Python
-issues them.
+issues them with its inputs named by their keywords (t_max where the program
+says --t-max: _core.keyword_text, the nineteenth session of stage 2).
 
 For each study that can warn, a run that does: the texts of the program's
-stderr, of Python's GranwaveWarning (and the result's `warnings` list) and of
-a C caller of the library (tests/gw_warnings_probe.c, gw_study_warnings) are
-the same, one by one. A run that does not warn gives no warning anywhere. No
+stderr and of a C caller of the library (tests/gw_warnings_probe.c,
+gw_study_warnings) are the same, one by one, and Python's GranwaveWarning
+(and the result's `warnings` list) is that text with each input of the study
+named by its keyword. A run that does not warn gives no warning anywhere. No
 warning prose is left in the Python module: no call to issue a warning outside
 _core.Study.run, and no run of five words of any warning text in its strings.
 """
@@ -144,12 +146,33 @@ def workdir(tmp_path_factory):
     os.chdir(here)
 
 
+def _in_python(study, text):
+    """The program's text as Python words it: each input of the study named by
+    its keyword, as a flag ("raise --t-max": "raise t_max") or by its row's
+    name ("t-max = 0.05 s": "t_max = 0.05 s"); a quoted command line of the
+    program and a flag the function does not take stay."""
+    names = {p["name"] for p in granwave.params(study)}
+    keep = re.findall(r"granwave [a-z-]+(?: --[a-z0-9-]+(?: [^\s,;()]+)?)+", text)
+    for i, k in enumerate(keep):
+        text = text.replace(k, f"\0{i}\0")
+    for n in sorted(names, key=len, reverse=True):
+        text = re.sub(r"(?<![\w./-])(--)?" + re.escape(n) + r"(?![\w/-]|\.\w)", n.replace("-", "_"), text)
+    for i, k in enumerate(keep):
+        text = text.replace(f"\0{i}\0", k)
+    return text
+
+
 @pytest.mark.parametrize("study, flags, count", WARNING_CASES,
                          ids=[f"{s}-{i}" for i, (s, _, _) in enumerate(WARNING_CASES)])
 def test_one_text_in_every_caller(workdir, study, flags, count):
+    # one text, worded for each caller: the program's flags (--t-max) for the
+    # program and a C caller, Python's keywords (t_max) in Python
     prog = _program(study, flags)
     assert len(prog) == count, prog
-    assert _python(study, flags) == prog
+    py = _python(study, flags)
+    assert py == [_in_python(study, t) for t in prog]
+    names = {p["name"] for p in granwave.params(study)}
+    assert not [t for t in py for n in names if "--" + n in t or ("-" in n and n in t)], py
     assert _c_caller(study, flags) == prog
 
 
@@ -167,8 +190,8 @@ def test_without_out_no_file_is_named(workdir):
     # always writes it): the same text, without "written to"
     flags = {"n": "60", "width-rm": "16", "seed": "3", "t-max": "0.05"}
     (text,) = _python("layer-make", flags)
-    assert _c_caller("layer-make", flags) == [text]
-    assert text.startswith("the sample did not settle: t-max = 0.05 s ends before the settling is judged")
+    assert [_in_python("layer-make", t) for t in _c_caller("layer-make", flags)] == [text]
+    assert text.startswith("the sample did not settle: t_max = 0.05 s ends before the settling is judged")
     assert "written to" not in text
 
 

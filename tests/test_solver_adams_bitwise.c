@@ -5,20 +5,21 @@
  * (gw_sun_nv_rhs, common/solver/gw_nvector.c), and the fixed-point solver
  * without copies (gw_sun_fixed_point, common/solver/gw_sundials.c).
  *
- * The queued right-hand side runs block by block (512 elements) one block
- * behind the operations queued before it, because its block reads a few
+ * The queued right-hand side runs by ranges that trail the operations queued
+ * before it by 64 elements (blocks of 512), because a range reads a few
  * elements of y beyond its ends; the operations after it and the norm that ends
- * the pass run with it. If an operation after it writes y, it runs alone after
- * the ones before it instead. Checked here:
- * - a stencil right-hand side (halo 2) queued among random sums, scalings,
- *   copies, constants and error weights on tuned vectors, against SUNDIALS'
- *   own vectors with the right-hand side called at once: every norm and every
- *   vector bit for bit, lengths 1, 3, 511, 512, 513, 1500 and 5000 (blocks of
- *   512), with y written after it (the fallback) in some sequences, two
+ * the pass run on the range with it. If an operation after it writes y, it
+ * runs alone after the ones before it instead. Checked here:
+ * - a stencil right-hand side reading y from 64 elements before to 63 after
+ *   (halo 64, the most allowed) queued among random sums, scalings, copies,
+ *   constants and error weights on tuned vectors, against SUNDIALS' own
+ *   vectors with the right-hand side called at once: every norm and every
+ *   vector bit for bit, lengths 1, 3, 100, 448, 449, 511, 512, 513, 575, 1025,
+ *   1500 and 5000 (blocks of 512), with y written after it (the fallback) in some sequences, two
  *   right-hand sides in one pass in others, and the data read directly
  *   (N_VGetArrayPointer) while one is pending;
- * - the chain's lean right-hand side by ranges (blocks of 512 components and
- *   the whole state) against its rhs, bit for bit, on a compressed state of 1300
+ * - the chain's lean right-hand side by ranges (ranges of 64 and 512
+ *   components and the whole state) against its rhs, bit for bit, on a compressed state of 1300
  *   beads (uniform and with varied masses and stiffnesses);
  * - CVODE Adams on a column of 3000 beads hitting the wall (the bench_long
  *   case, 0.5 tc): with rhs_range (queued) and without (the system copied with
@@ -63,8 +64,9 @@ static double coef(void)
 }
 static int same_bits(double x, double y) { return memcmp(&x, &y, sizeof x) == 0; }
 
-/* ydot_i = t + 0.5 y_(i-2) - y_i + 0.25 y_(i+1) (terms outside [0, n) left
- * out): reads y within 2 elements of the range */
+/* ydot_i = t + 0.5 y_(i-2) - y_i + 0.25 y_(i+1) + 0.125 y_(i-64) - 0.0625
+ * y_(i+63) (terms outside [0, n) left out): reads y within 64 elements of the
+ * range */
 static long stencil_n;
 static void stencil(double t, const double *y, double *yd, long i0, long i1, void *p)
 {
@@ -75,6 +77,10 @@ static void stencil(double t, const double *y, double *yd, long i0, long i1, voi
             a += 0.5 * y[i - 2];
         if (i + 1 < stencil_n)
             a += 0.25 * y[i + 1];
+        if (i >= 64)
+            a += 0.125 * y[i - 64];
+        if (i + 63 < stencil_n)
+            a -= 0.0625 * y[i + 63];
         yd[i] = a;
     }
 }
@@ -130,7 +136,8 @@ static int rhs_both(set *s, set *t, int y, int yd, double tt)
 {
     const long n = N_VGetLength(s->v[y]);
     stencil(tt, N_VGetArrayPointer(s->v[y]), N_VGetArrayPointer(s->v[yd]), 0, n, NULL);
-    return gw_sun_nv_rhs(tt, t->v[y], t->v[yd], stencil, 2, NULL) == 0;
+    return gw_sun_nv_rhs(tt, t->v[y], t->v[yd], stencil, 64, NULL) == 0 &&
+           gw_sun_nv_rhs(tt, t->v[y], t->v[yd], stencil, 65, NULL) == -1;
 }
 
 static void run(long n, int seqs, SUNContext ctx, int *fallbacks)
@@ -226,13 +233,16 @@ static void chain_ranges(int varied)
     }
     y[0] = 2e-6;
     sys->rhs(0.0, y, f, sys->params);
-    for (long i0 = 0; i0 < dim; i0 += 512)
-        sys->rhs_range(0.0, y, g, i0, i0 + 512 < dim ? i0 + 512 : dim, sys->params);
-    sys->rhs_range(0.0, y, h, 0, dim, sys->params);
     char what[120];
-    snprintf(what, sizeof what, "chain (%s): rhs by blocks of 512 = rhs, bit for bit",
-             varied ? "varied beads" : "uniform");
-    gw_test_true(memcmp(f, g, (size_t)dim * sizeof *f) == 0, what);
+    for (long w = 64; w <= 512; w *= 8) {
+        memset(g, 0, (size_t)dim * sizeof *g);
+        for (long i0 = 0; i0 < dim; i0 += w)
+            sys->rhs_range(0.0, y, g, i0, i0 + w < dim ? i0 + w : dim, sys->params);
+        snprintf(what, sizeof what, "chain (%s): rhs by ranges of %ld = rhs, bit for bit",
+                 varied ? "varied beads" : "uniform", w);
+        gw_test_true(memcmp(f, g, (size_t)dim * sizeof *f) == 0, what);
+    }
+    sys->rhs_range(0.0, y, h, 0, dim, sys->params);
     snprintf(what, sizeof what, "chain (%s): rhs by one range = rhs, bit for bit",
              varied ? "varied beads" : "uniform");
     gw_test_true(memcmp(f, h, (size_t)dim * sizeof *f) == 0, what);
@@ -414,7 +424,7 @@ int main(void)
     if (SUNContext_Create(NULL, &ctx) != 0)
         return 1;
     int fallbacks = 0;
-    const long lens[] = {1, 3, 511, 512, 513, 1500, 5000};
+    const long lens[] = {1, 3, 100, 448, 449, 511, 512, 513, 575, 1025, 1500, 5000};
     for (size_t i = 0; i < sizeof lens / sizeof lens[0]; i++)
         run(lens[i], 60, ctx, &fallbacks);
     gw_test_true(fallbacks > 20, "sequences writing y after the right-hand side were run");

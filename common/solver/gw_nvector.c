@@ -57,7 +57,10 @@
  * z = 1 / (a |x| + b y) (y the scales, NULL for 1) and at most one
  * right-hand side z = f(a, x) given by ranges (gw_sun_nv_rhs; rhs_at is its
  * place in the queue, -1 for none). */
-enum { QMAX = 128, BLK = 512 };
+#ifndef GW_NV_BLK
+#define GW_NV_BLK 512
+#endif
+enum { QMAX = 128, BLK = GW_NV_BLK, RHS_LAG = 64 };
 typedef enum { OP_SUM, OP_SCALE, OP_CONST, OP_EWT, OP_RHS } gw_nv_kind;
 typedef struct {
     gw_nv_kind kind;
@@ -160,11 +163,11 @@ static realtype wsqrsum_range(const realtype *xd, const realtype *wd, sunindexty
     return s;
 }
 
-/* The right-hand side queued at r can run block by block in the pass, one
- * block behind the operations queued before it (its block b - 1 reads y up to
- * rhs_halo <= BLK elements into block b, which those have then reached), if
- * no operation after it writes y (block b - 1 would read y at the end of block
- * b - 2 after those had changed it) and every operation has its length. */
+/* The right-hand side queued at r can run in the pass, by ranges that trail
+ * the operations queued before it by RHS_LAG elements (a range reads y up to
+ * rhs_halo <= RHS_LAG elements beyond its end, which those have then reached),
+ * if no operation after it writes y (a range would read y just before its
+ * start after those had changed it) and every operation has its length. */
 static int rhs_fusable(int r)
 {
     const gw_nv_op *o = &queue[r];
@@ -175,9 +178,11 @@ static int rhs_fusable(int r)
 }
 
 /* Runs the queue block by block. With xd, returns s plus the sum of (x w)^2
- * over [0, n) in index order, each block summed as soon as every queued
- * operation has run on it. A right-hand side in the queue runs one block
- * behind the operations before it, and the operations after it (and the sum)
+ * over [0, n) in index order, each range summed as soon as every queued
+ * operation has run on it. A right-hand side in the queue runs after the
+ * operations before it have run on block b, on the range from where the last
+ * one ended to RHS_LAG elements before the end of block b (to the end, at the
+ * last block), and the operations after it (and the sum) run on that range
  * with it: per element the same operations in the same order as one by one. */
 static realtype run_pass(const realtype *xd, const realtype *wd, sunindextype n, realtype s)
 {
@@ -195,20 +200,17 @@ static realtype run_pass(const realtype *xd, const realtype *wd, sunindextype n,
     sunindextype nmax = queue_length();
     if (xd && n > nmax)
         nmax = n;
-    const sunindextype nb = (nmax + BLK - 1) / BLK, lag = r >= 0;
+    const sunindextype lag = r >= 0 ? RHS_LAG : 0;
     const int k_pre = r >= 0 ? r : queued;
-    for (sunindextype b = 0; b < nb + lag; b++) {
-        if (b < nb) {
-            const sunindextype i0 = b * BLK;
-            apply_ops(0, k_pre, i0, i0 + BLK < nmax ? i0 + BLK : nmax);
-        }
-        if (b < lag)
-            continue;
-        const sunindextype j0 = (b - lag) * BLK, j1 = j0 + BLK < nmax ? j0 + BLK : nmax;
-        if (lag)
-            apply_ops(r, queued, j0, j1);
-        if (xd && j0 < n)
-            s = wsqrsum_range(xd, wd, j0, j1 < n ? j1 : n, s);
+    sunindextype done = 0; /* [0, done) has seen every operation */
+    for (sunindextype i0 = 0; i0 < nmax; i0 += BLK) {
+        const sunindextype i1 = i0 + BLK < nmax ? i0 + BLK : nmax, e = i1 == nmax ? nmax : i1 - lag;
+        apply_ops(0, k_pre, i0, i1);
+        if (r >= 0)
+            apply_ops(r, queued, done, e);
+        if (xd && done < n)
+            s = wsqrsum_range(xd, wd, done, e < n ? e : n, s);
+        done = e;
     }
     queued = 0;
     rhs_at = -1;
@@ -485,7 +487,7 @@ static int gw_nv_linearcombination(int nvec, realtype *c, N_Vector *X, N_Vector 
  * way at the end of a step, and queued it runs in one pass with the next error
  * weights and the norm that follows them. Shorter ones stay in cache and run
  * at once, term by term (measured cheaper at 1e3 beads). */
-enum { SAM_QUEUED = 16 * BLK };
+enum { SAM_QUEUED = 8192 };
 static int gw_nv_scaleaddmulti(int nvec, realtype *a, N_Vector x, N_Vector *Y, N_Vector *Z)
 {
     if (nvec < 1)
@@ -636,7 +638,7 @@ int gw_sun_nv_ewt(N_Vector y, N_Vector w, double rtol, double atol, const double
 int gw_sun_nv_rhs(double t, N_Vector y, N_Vector ydot, gw_rhs_range_fn f, long halo,
                   void *params)
 {
-    if (!f || halo < 0 || halo > BLK || y->ops->nvlinearsum != gw_nv_linearsum ||
+    if (!f || halo < 0 || halo > RHS_LAG || y->ops->nvlinearsum != gw_nv_linearsum ||
         ydot->ops->nvlinearsum != gw_nv_linearsum || LEN(y) != LEN(ydot) || DATA(y) == DATA(ydot))
         return -1;
     gw_nv_op o = {OP_RHS, t, 0.0, DATA(y), NULL, DATA(ydot), LEN(y), f, params};

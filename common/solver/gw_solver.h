@@ -108,8 +108,8 @@ typedef struct gw_system {
                               always locate, verlet never) */
     gw_drift_fn drift_fn;  /* required when some drift[i] == GW_DRIFT_MODEL */
     /* Optional, for a system whose rhs is local (component i depends on y only
-     * within rhs_halo <= 512 components of i): the same rhs by ranges of
-     * components, i0 a multiple of 512 and i1 = min(i0 + 512, dim). CVODE Adams
+     * within rhs_halo <= 64 components of i): the same rhs by ranges of
+     * components, i0 and i1 multiples of 64 (i1 = dim for the last). CVODE Adams
      * then runs it block by block in one pass with the vector operations queued
      * around it (gw_nvector.c), so y and ydot are not streamed through memory
      * once more each; results are bit-identical to rhs. NULL: rhs only. */

@@ -56,7 +56,7 @@ int gw_sun_tune_vector(N_Vector v);
 int gw_sun_nv_ewt(N_Vector y, N_Vector w, double rtol, double atol, const double *scale);
 
 /* Queue ydot = f(t, y), given by ranges of components (gw_rhs_range_fn,
- * reading y within halo <= 512 elements of each range), with the pending
+ * reading y within halo <= 64 elements of each range), with the pending
  * operations of gw_nvector.c; it then runs block by block in their pass.
  * 0 if queued; -1 (nothing done) if y or ydot is not a tuned vector, they
  * differ in length or share data, or the halo is out of range. */

@@ -44,6 +44,42 @@
  * do the same (forces into a contiguous stack array, then the outputs);
  * -DGW_CHAIN_PORTABLE_RHS selects them on x86 too. */
 
+/* Beads j0 .. j0 + nb - 1 (nb <= LEAN_BLOCK) in two compiler-vectorised
+ * passes: the forces f_j0 .. f_(j0+nb) into a stack array, then the outputs.
+ * Reads y from x_(j0-1) to x_(j0+nb). The portable right-hand side, and the
+ * right-hand side by ranges (chain_rhs_range) on every target. */
+enum { LEAN_BLOCK = 512 };
+
+static void lean_block(const gw_chain *c, const double *restrict y, double *restrict yd,
+                       int j0, int nb, double g, int kinematics)
+{
+    const int n = c->n;
+    double f[LEAN_BLOCK + 1];
+    int k0 = 0, k1 = nb; /* f[k] = f_(j0+k) */
+    if (j0 == 0) {
+        double u = y[0] > 0 ? y[0] : 0.0;
+        f[0] = c->kwall * u * sqrt(u);
+        k0 = 1;
+    }
+    if (j0 + nb == n) {
+        f[nb] = 0.0;
+        k1 = nb - 1;
+    }
+    const double *restrict x = y + 2 * (size_t)j0;
+    const double *restrict kb = c->kc + j0 + k0 - 1; /* kb[k - k0]: contact j0 + k - 1 */
+    for (int k = k0; k <= k1; k++) {
+        double u = x[2 * k] - x[2 * k - 2];
+        u = u > 0 ? u : 0.0;
+        f[k] = kb[k - k0] * u * sqrt(u);
+    }
+    const double *restrict mb = c->minv + j0;
+    double *restrict out = yd + 2 * (size_t)j0;
+    for (int k = 0; k < nb; k++) {
+        out[2 * k] = kinematics ? x[2 * k + 1] : 0.0;
+        out[2 * k + 1] = g + (f[k + 1] - f[k]) * mb[k];
+    }
+}
+
 #if defined(__SSE2__) && !defined(GW_CHAIN_PORTABLE_RHS)
 #include <emmintrin.h>
 
@@ -227,38 +263,6 @@ static void lean_rhs(const gw_chain *c, const double *restrict y, double *restri
     }
 }
 #else
-enum { LEAN_BLOCK = 512 };
-
-static void lean_block(const gw_chain *c, const double *restrict y, double *restrict yd,
-                       int j0, int nb, double g, int kinematics)
-{
-    const int n = c->n;
-    double f[LEAN_BLOCK + 1];
-    int k0 = 0, k1 = nb; /* f[k] = f_(j0+k) */
-    if (j0 == 0) {
-        double u = y[0] > 0 ? y[0] : 0.0;
-        f[0] = c->kwall * u * sqrt(u);
-        k0 = 1;
-    }
-    if (j0 + nb == n) {
-        f[nb] = 0.0;
-        k1 = nb - 1;
-    }
-    const double *restrict x = y + 2 * (size_t)j0;
-    const double *restrict kb = c->kc + j0 + k0 - 1; /* kb[k - k0]: contact j0 + k - 1 */
-    for (int k = k0; k <= k1; k++) {
-        double u = x[2 * k] - x[2 * k - 2];
-        u = u > 0 ? u : 0.0;
-        f[k] = kb[k - k0] * u * sqrt(u);
-    }
-    const double *restrict mb = c->minv + j0;
-    double *restrict out = yd + 2 * (size_t)j0;
-    for (int k = 0; k < nb; k++) {
-        out[2 * k] = kinematics ? x[2 * k + 1] : 0.0;
-        out[2 * k + 1] = g + (f[k + 1] - f[k]) * mb[k];
-    }
-}
-
 static void lean_rhs(const gw_chain *c, const double *y, double *yd, double g, int kinematics)
 {
     for (int j0 = 0; j0 < c->n; j0 += LEAN_BLOCK) {
@@ -315,6 +319,20 @@ static int chain_rhs(double t, const double *y, double *yd, void *P)
     chain_kinematics(c, y, yd);
     chain_forces(c, y, yd, 1);
     return 0;
+}
+
+/* The undamped rhs on components [i0, i1) (gw_system.rhs_range; i0 even):
+ * beads i0/2 .. (i1+1)/2 - 1, the same values as chain_rhs; reads y from
+ * bead i0/2 - 1 to bead (i1+1)/2 (halo 2 components). */
+static void chain_rhs_range(double t, const double *y, double *yd, long i0, long i1, void *P)
+{
+    (void)t;
+    const gw_chain *c = P;
+    const int j1 = (int)((i1 + 1) / 2);
+    for (int j0 = (int)(i0 / 2); j0 < j1; j0 += LEAN_BLOCK) {
+        int nb = j1 - j0 < LEAN_BLOCK ? j1 - j0 : LEAN_BLOCK;
+        lean_block(c, y, yd, j0, nb, c->p.gravity, 1);
+    }
 }
 
 static int chain_rhs_ex(double t, const double *y, double *yd, void *P)
@@ -812,6 +830,11 @@ int gw_chain_create(const gw_chain_params *p, gw_chain **out, gw_err *err)
     if (i_work >= 0 || i_sens >= 0) { /* states outside the band: finite differences */
         s->jac = NULL;
         s->mu = s->ml = dim - 1;
+    }
+    /* the lean rhs is local: by ranges, CVODE Adams runs it in its vector passes */
+    if (!general && p->damping == GW_DAMP_NONE && dim == 2L * n) {
+        s->rhs_range = chain_rhs_range;
+        s->rhs_halo = 2;
     }
     s->roots = general ? chain_general_roots : chain_roots;
     s->nroots = n + 1 + (i_sens >= 0);

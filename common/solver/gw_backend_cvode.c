@@ -146,7 +146,12 @@ static int cv_create(gw_solver *s, double t0, const double *y0, gw_err *err)
         return gw_err_set(err, GW_ENOMEM, "cvode: out of memory (CVodeCreate)"); /* its only failure */
     }
     CV_TRY(CVodeSetErrHandlerFn(c->mem, gw_sun_errh, s), "CVodeSetErrHandlerFn");
-    CV_TRY(CVodeInit(c->mem, gw_sun_rhs, t0, c->y), "CVodeInit");
+    /* Adams touches the vectors only through their ops: a right-hand side by
+     * ranges runs queued, in one pass with the corrector's vector operations */
+    CV_TRY(CVodeInit(c->mem,
+                     method == GW_CVODE_ADAMS && s->sys.rhs_range ? gw_sun_rhs_queued : gw_sun_rhs,
+                     t0, c->y),
+           "CVodeInit");
     CV_TRY(CVodeSetUserData(c->mem, s), "CVodeSetUserData");
     /* error weights from gw_sun_ewt: the values CVodeSVtolerances gives with
      * the abstol vector, in one pass instead of four per step */
@@ -170,7 +175,7 @@ static int cv_create(gw_solver *s, double t0, const double *y0, gw_err *err)
         if (s->p.use_jac && s->sys.jac && !s->sys.matrix_free)
             CV_TRY(CVodeSetJacFn(c->mem, gw_sun_jac), "CVodeSetJacFn");
     } else {
-        c->NLS = SUNNonlinSol_FixedPoint(c->y, 0, c->ctx);
+        c->NLS = gw_sun_fixed_point(c->y, c->ctx);
         if (!c->NLS) {
             cv_destroy(s);
             return gw_err_set(err, GW_ENOMEM, "cvode: out of memory for the fixed-point solver");

@@ -28,8 +28,15 @@
  * three: the correction of the Nordsieck array (q + 1 scaled additions), the
  * next error weights from z_0 and the norm CVODE takes of z_0 with them; the
  * next predictor (q(q+1)/2 sums z_{j-1} += z_j) runs in one pass with the
- * corrector's first sums. Every element still sees the same operations in
- * the same order, so the results are bit-identical (tests/test_nvector.c).
+ * corrector's first sums. A system that gives its right-hand side by ranges
+ * of components (gw_system.rhs_range) has it queued too under CVODE Adams
+ * (gw_sun_rhs_queued): the state y = z_0 + correction, the right-hand side,
+ * the corrector's sums and the norm of the change then run in one pass, the
+ * right-hand side one block behind the operations before it (it reads a few
+ * elements of y beyond its block), and y and f(y) are not streamed through
+ * memory once more each per iterate. Every element still sees the same
+ * operations in the same order, so the results are bit-identical
+ * (tests/test_nvector.c, tests/test_nvector_rhs.c).
  * The queue is per thread; every op in the table (and the serial ones that
  * touch data, wrapped below) runs it first, and a vector is destroyed only
  * after it.
@@ -46,19 +53,26 @@
 
 /* The queue of pending element-wise operations (see the head of the file):
  * z = a x + b y (linear sums, with the cases of apply below), z = a x
- * (scalings, a copy when a = 1), z = a (constants) and the error weights
- * z = 1 / (a |x| + b y) (y the scales, NULL for 1). */
-enum { QMAX = 128, BLK = 512 };
-typedef enum { OP_SUM, OP_SCALE, OP_CONST, OP_EWT } gw_nv_kind;
+ * (scalings, a copy when a = 1), z = a (constants), the error weights
+ * z = 1 / (a |x| + b y) (y the scales, NULL for 1) and at most one
+ * right-hand side z = f(a, x) given by ranges (gw_sun_nv_rhs; rhs_at is its
+ * place in the queue, -1 for none). */
+#ifndef GW_NV_BLK
+#define GW_NV_BLK 512
+#endif
+enum { QMAX = 128, BLK = GW_NV_BLK, RHS_LAG = 64 };
+typedef enum { OP_SUM, OP_SCALE, OP_CONST, OP_EWT, OP_RHS } gw_nv_kind;
 typedef struct {
     gw_nv_kind kind;
     realtype a, b;
     const realtype *x, *y;
     realtype *z;
     sunindextype n;
+    gw_rhs_range_fn f; /* OP_RHS: f(a, x, z, i0, i1, p) */
+    void *p;
 } gw_nv_op;
 static _Thread_local gw_nv_op queue[QMAX];
-static _Thread_local int queued;
+static _Thread_local int queued, rhs_at = -1;
 
 /* one operation on elements [i0, i1): the same arithmetic, element by element,
  * as the direct kernel (in-place forms alias z with x or y) */
@@ -69,6 +83,10 @@ static void apply(const gw_nv_op *o, sunindextype i0, sunindextype i1)
     if (o->kind == OP_CONST) {
         for (sunindextype i = i0; i < i1; i++)
             zd[i] = a;
+        return;
+    }
+    if (o->kind == OP_RHS) {
+        o->f(a, xd, zd, (long)i0, (long)i1, o->p);
         return;
     }
     if (o->kind == OP_EWT) { /* error weights, as gw_sun_ewt: y in x, scale in y */
@@ -113,10 +131,10 @@ static void apply(const gw_nv_op *o, sunindextype i0, sunindextype i1)
     }
 }
 
-/* the queued operations on elements [i0, i1), in order */
-static void apply_block(sunindextype i0, sunindextype i1)
+/* the queued operations k0 <= k < k1 on elements [i0, i1), in order */
+static void apply_ops(int k0, int k1, sunindextype i0, sunindextype i1)
 {
-    for (int k = 0; k < queued; k++) {
+    for (int k = k0; k < k1; k++) {
         sunindextype e = queue[k].n < i1 ? queue[k].n : i1;
         if (e > i0)
             apply(&queue[k], i0, e);
@@ -132,34 +150,99 @@ static sunindextype queue_length(void)
     return nmax;
 }
 
+/* Sum of (x w)^2 in index order (one dependent add per element, as the
+ * library; partial sums would be faster in cache but change the rounding of
+ * the error norms and through them the step sizes). */
+static realtype wsqrsum_range(const realtype *xd, const realtype *wd, sunindextype i0,
+                              sunindextype i1, realtype s)
+{
+    for (sunindextype i = i0; i < i1; i++) {
+        realtype p = xd[i] * wd[i];
+        s += p * p;
+    }
+    return s;
+}
+
+/* The right-hand side queued at r can run in the pass, by ranges that trail
+ * the operations queued before it by RHS_LAG elements (a range reads y up to
+ * rhs_halo <= RHS_LAG elements beyond its end, which those have then reached),
+ * if no operation after it writes y (a range would read y just before its
+ * start after those had changed it) and every operation has its length. */
+static int rhs_fusable(int r)
+{
+    const gw_nv_op *o = &queue[r];
+    for (int k = 0; k < queued; k++)
+        if (queue[k].n != o->n || (k > r && queue[k].z == o->x))
+            return 0;
+    return 1;
+}
+
+/* Runs the queue block by block. With xd, returns s plus the sum of (x w)^2
+ * over [0, n) in index order, each range summed as soon as every queued
+ * operation has run on it. A right-hand side in the queue runs after the
+ * operations before it have run on block b, on the range from where the last
+ * one ended to RHS_LAG elements before the end of block b (to the end, at the
+ * last block), and the operations after it (and the sum) run on that range
+ * with it: per element the same operations in the same order as one by one. */
+static realtype run_pass(const realtype *xd, const realtype *wd, sunindextype n, realtype s)
+{
+    int r = rhs_at;
+    if (r >= 0 && !rhs_fusable(r)) { /* what precedes it, then it alone, in passes */
+        const sunindextype len = queue_length();
+        for (sunindextype i0 = 0; i0 < len; i0 += BLK)
+            apply_ops(0, r, i0, i0 + BLK < len ? i0 + BLK : len);
+        for (sunindextype i0 = 0; i0 < len; i0 += BLK)
+            apply_ops(r, r + 1, i0, i0 + BLK < len ? i0 + BLK : len);
+        queued -= r + 1;
+        memmove(queue, queue + r + 1, (size_t)queued * sizeof *queue);
+        r = rhs_at = -1;
+    }
+    sunindextype nmax = queue_length();
+    if (xd && n > nmax)
+        nmax = n;
+    const sunindextype lag = r >= 0 ? RHS_LAG : 0;
+    const int k_pre = r >= 0 ? r : queued;
+    sunindextype done = 0; /* [0, done) has seen every operation */
+    for (sunindextype i0 = 0; i0 < nmax; i0 += BLK) {
+        const sunindextype i1 = i0 + BLK < nmax ? i0 + BLK : nmax, e = i1 == nmax ? nmax : i1 - lag;
+        apply_ops(0, k_pre, i0, i1);
+        if (r >= 0)
+            apply_ops(r, queued, done, e);
+        if (xd && done < n)
+            s = wsqrsum_range(xd, wd, done, e < n ? e : n, s);
+        done = e;
+    }
+    queued = 0;
+    rhs_at = -1;
+    return s;
+}
+
 /* the whole queue, block by block */
 static void run_queue(void)
 {
-    if (queued == 0)
-        return;
-    const sunindextype nmax = queue_length();
-    for (sunindextype i0 = 0; i0 < nmax; i0 += BLK)
-        apply_block(i0, i0 + BLK < nmax ? i0 + BLK : nmax);
-    queued = 0;
+    if (queued != 0)
+        run_pass(NULL, NULL, 0, 0.0);
 }
 
 #define FLUSH() run_queue()
 
 static void enqueue(gw_nv_op o)
 {
-    if (queued == QMAX)
+    if (queued == QMAX || (o.kind == OP_RHS && rhs_at >= 0))
         run_queue();
+    if (o.kind == OP_RHS)
+        rhs_at = queued;
     queue[queued++] = o;
 }
 
 static void gw_nv_linearsum(realtype a, N_Vector x, realtype b, N_Vector y, N_Vector z)
 {
-    enqueue((gw_nv_op){OP_SUM, a, b, DATA(x), DATA(y), DATA(z), LEN(x)});
+    enqueue((gw_nv_op){OP_SUM, a, b, DATA(x), DATA(y), DATA(z), LEN(x), NULL, NULL});
 }
 
 static void gw_nv_const(realtype c, N_Vector z)
 {
-    enqueue((gw_nv_op){OP_CONST, c, 0.0, NULL, NULL, DATA(z), LEN(z)});
+    enqueue((gw_nv_op){OP_CONST, c, 0.0, NULL, NULL, DATA(z), LEN(z), NULL, NULL});
 }
 
 static void gw_nv_prod(N_Vector x, N_Vector y, N_Vector z)
@@ -187,7 +270,7 @@ static void gw_nv_scale(realtype c, N_Vector x, N_Vector z)
     /* c = 1 is a copy (ARKode's interpolant keeps y_n and f_n every step,
      * CVODE's fixed-point iteration its previous iterate): memcpy, which uses
      * the widest vectors the CPU has */
-    enqueue((gw_nv_op){OP_SCALE, c, 0.0, DATA(x), NULL, DATA(z), LEN(x)});
+    enqueue((gw_nv_op){OP_SCALE, c, 0.0, DATA(x), NULL, DATA(z), LEN(x), NULL, NULL});
 }
 
 static void gw_nv_abs(N_Vector x, N_Vector z)
@@ -242,39 +325,15 @@ static realtype gw_nv_maxnorm(N_Vector x)
     return m;
 }
 
-/* Weighted sum of squares in index order (one dependent add per element, as
- * the library; partial sums would be faster in cache but change the rounding
- * of the error norms and through them the step sizes). */
-static realtype wsqrsum_range(const realtype *xd, const realtype *wd, sunindextype i0,
-                              sunindextype i1, realtype s)
-{
-    for (sunindextype i = i0; i < i1; i++) {
-        realtype p = xd[i] * wd[i];
-        s += p * p;
-    }
-    return s;
-}
-
 /* sum of (x w)^2 in index order; pending operations run block by block
  * just before the block is summed, while it is in cache */
 static realtype wsqrsum(N_Vector x, N_Vector w)
 {
     const sunindextype n = LEN(x);
     const realtype *xd = DATA(x), *wd = DATA(w);
-    realtype s = 0.0;
     if (queued == 0)
-        return wsqrsum_range(xd, wd, 0, n, s);
-    sunindextype nmax = queue_length();
-    if (nmax < n)
-        nmax = n;
-    for (sunindextype i0 = 0; i0 < nmax; i0 += BLK) {
-        sunindextype i1 = i0 + BLK < nmax ? i0 + BLK : nmax;
-        apply_block(i0, i1);
-        if (i0 < n)
-            s = wsqrsum_range(xd, wd, i0, i1 < n ? i1 : n, s);
-    }
-    queued = 0;
-    return s;
+        return wsqrsum_range(xd, wd, 0, n, 0.0);
+    return run_pass(xd, wd, n, 0.0);
 }
 
 static realtype rsqrt0(realtype x)
@@ -428,7 +487,7 @@ static int gw_nv_linearcombination(int nvec, realtype *c, N_Vector *X, N_Vector 
  * way at the end of a step, and queued it runs in one pass with the next error
  * weights and the norm that follows them. Shorter ones stay in cache and run
  * at once, term by term (measured cheaper at 1e3 beads). */
-enum { SAM_QUEUED = 16 * BLK };
+enum { SAM_QUEUED = 8192 };
 static int gw_nv_scaleaddmulti(int nvec, realtype *a, N_Vector x, N_Vector *Y, N_Vector *Z)
 {
     if (nvec < 1)
@@ -566,13 +625,24 @@ static void q_printfile(N_Vector v, FILE *f)
 
 int gw_sun_nv_ewt(N_Vector y, N_Vector w, double rtol, double atol, const double *scale)
 {
-    const gw_nv_op o = {OP_EWT, rtol, atol, DATA(y), scale, DATA(w), LEN(y)};
+    const gw_nv_op o = {OP_EWT, rtol, atol, DATA(y), scale, DATA(w), LEN(y), NULL, NULL};
     if (y->ops->nvlinearsum == gw_nv_linearsum && w->ops->nvlinearsum == gw_nv_linearsum) {
         enqueue(o);
     } else { /* not tuned vectors: at once, after whatever is pending */
         FLUSH();
         apply(&o, 0, o.n);
     }
+    return 0;
+}
+
+int gw_sun_nv_rhs(double t, N_Vector y, N_Vector ydot, gw_rhs_range_fn f, long halo,
+                  void *params)
+{
+    if (!f || halo < 0 || halo > RHS_LAG || y->ops->nvlinearsum != gw_nv_linearsum ||
+        ydot->ops->nvlinearsum != gw_nv_linearsum || LEN(y) != LEN(ydot) || DATA(y) == DATA(ydot))
+        return -1;
+    gw_nv_op o = {OP_RHS, t, 0.0, DATA(y), NULL, DATA(ydot), LEN(y), f, params};
+    enqueue(o);
     return 0;
 }
 

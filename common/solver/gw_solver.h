@@ -27,6 +27,12 @@ GW_BEGIN_DECLS /* the exported interface, C linkage (gw_api.h) */
  * failure (the adaptive backends retry with a smaller step), < 0 to stop. */
 typedef int (*gw_rhs_fn)(double t, const double *y, double *ydot, void *params);
 
+/* The right-hand side on components i0 <= i < i1 only (gw_system.rhs_range):
+ * ydot[i] for those i, bit for bit as rhs computes them, reading y only in
+ * [i0 - rhs_halo, i1 + rhs_halo) and writing nothing else. It cannot fail. */
+typedef void (*gw_rhs_range_fn)(double t, const double *y, double *ydot, long i0, long i1,
+                                void *params);
+
 /* Event (root) functions g_k(t, y), k = 0..nroots-1. Same return convention. */
 typedef int (*gw_root_fn)(double t, const double *y, double *g, void *params);
 
@@ -101,6 +107,14 @@ typedef struct gw_system {
                               after every step; 0 locates roots (cvode and arkode
                               always locate, verlet never) */
     gw_drift_fn drift_fn;  /* required when some drift[i] == GW_DRIFT_MODEL */
+    /* Optional, for a system whose rhs is local (component i depends on y only
+     * within rhs_halo <= 64 components of i): the same rhs by ranges of
+     * components, i0 and i1 multiples of 64 (i1 = dim for the last). CVODE Adams
+     * then runs it block by block in one pass with the vector operations queued
+     * around it (gw_nvector.c), so y and ydot are not streamed through memory
+     * once more each; results are bit-identical to rhs. NULL: rhs only. */
+    gw_rhs_range_fn rhs_range;
+    long rhs_halo;
 } gw_system;
 
 /* Backend variants. */

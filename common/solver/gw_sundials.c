@@ -8,6 +8,7 @@
 #include <sunlinsol/sunlinsol_band.h>
 #include <sunlinsol/sunlinsol_spgmr.h>
 #include <sunmatrix/sunmatrix_band.h>
+#include <sunnonlinsol/sunnonlinsol_fixedpoint.h>
 
 #include "gw_sundials.h"
 
@@ -17,6 +18,72 @@ int gw_sun_rhs(realtype t, N_Vector y, N_Vector ydot, void *ud)
     if (gw_interrupt_pending())
         return -1; /* unrecoverable: gw_solver_advance reports the interrupt */
     return s->sys.rhs(t, N_VGetArrayPointer(y), N_VGetArrayPointer(ydot), s->sys.params);
+}
+
+int gw_sun_rhs_queued(realtype t, N_Vector y, N_Vector ydot, void *ud)
+{
+    gw_solver *s = ud;
+    if (gw_interrupt_pending())
+        return -1; /* unrecoverable: gw_solver_advance reports the interrupt */
+    if (s->sys.rhs_range &&
+        gw_sun_nv_rhs(t, y, ydot, s->sys.rhs_range, s->sys.rhs_halo, s->sys.params) == 0)
+        return 0;
+    return s->sys.rhs(t, N_VGetArrayPointer(y), N_VGetArrayPointer(ydot), s->sys.params);
+}
+
+/* The fixed-point iteration without its two copies (see gw_sundials.h): the
+ * library's solve with m = 0 (SUNDIALS 6.4.1) step by step, with the change
+ * between iterates formed as g(y_k) - y_k (the library forms y_(k+1) - y_k
+ * after copying g(y_k) into y_(k+1) and y_k aside: the same subtraction of the
+ * same values) and g(y_k) handed to the corrector by exchanging the two
+ * vectors' data instead of copying it. */
+static int fp_swappable(N_Vector a, N_Vector b)
+{
+    if (N_VGetVectorID(a) != SUNDIALS_NVEC_SERIAL || N_VGetVectorID(b) != SUNDIALS_NVEC_SERIAL)
+        return 0;
+    const N_VectorContent_Serial ca = a->content, cb = b->content;
+    return ca->length == cb->length && ca->own_data && cb->own_data && ca->data != cb->data;
+}
+
+static int fp_solve(SUNNonlinearSolver NLS, N_Vector y0, N_Vector ycor, N_Vector w, realtype tol,
+                    booleantype call_setup, void *mem)
+{
+    if (!NLS || !y0 || !ycor || !w || !mem)
+        return SUN_NLS_MEM_NULL;
+    SUNNonlinearSolverContent_FixedPoint c = NLS->content;
+    if (!c->Sys || !c->CTest)
+        return SUN_NLS_MEM_NULL;
+    if (c->m != 0 || !fp_swappable(ycor, c->gy))
+        return SUNNonlinSolSolve_FixedPoint(NLS, y0, ycor, w, tol, call_setup, mem);
+    c->niters = 0;
+    c->nconvfails = 0;
+    for (c->curiter = 0; c->curiter < c->maxiters; c->curiter++) {
+        if (c->Sys(ycor, c->gy, mem) != 0)
+            break; /* as the library: a failed evaluation is a convergence failure */
+        c->niters++;
+        N_VLinearSum(1.0, c->gy, -1.0, ycor, c->delta);
+        const N_VectorContent_Serial a = ycor->content, b = c->gy->content;
+        realtype *d = a->data;
+        a->data = b->data;
+        b->data = d;
+        const int rc = c->CTest(NLS, ycor, c->delta, tol, w, c->ctest_data);
+        if (rc == SUN_NLS_SUCCESS)
+            return SUN_NLS_SUCCESS;
+        if (rc != SUN_NLS_CONTINUE) {
+            c->nconvfails++;
+            return rc;
+        }
+    }
+    c->nconvfails++;
+    return SUN_NLS_CONV_RECVR;
+}
+
+SUNNonlinearSolver gw_sun_fixed_point(N_Vector y, SUNContext ctx)
+{
+    SUNNonlinearSolver NLS = SUNNonlinSol_FixedPoint(y, 0, ctx);
+    if (NLS)
+        NLS->ops->solve = fp_solve;
+    return NLS;
 }
 
 int gw_sun_rhs_ex(realtype t, N_Vector y, N_Vector ydot, void *ud)

@@ -11,10 +11,18 @@
 #include <sundials/sundials_context.h>
 #include <sundials/sundials_linearsolver.h>
 #include <sundials/sundials_matrix.h>
+#include <sundials/sundials_nonlinearsolver.h>
 
 #include "gw_solver_impl.h"
 
 int gw_sun_rhs(realtype t, N_Vector y, N_Vector ydot, void *ud);
+/* gw_sun_rhs for a solver whose system has rhs_range, for SUNDIALS code that
+ * touches vector data only through the vector's ops (CVODE Adams with its
+ * fixed-point corrector; not the linear solvers, whose difference quotients
+ * read f(y) through a data pointer taken before the call): the rhs is queued
+ * with the pending vector operations (gw_sun_nv_rhs) when it can be, else
+ * called at once. */
+int gw_sun_rhs_queued(realtype t, N_Vector y, N_Vector ydot, void *ud);
 int gw_sun_rhs_ex(realtype t, N_Vector y, N_Vector ydot, void *ud);
 int gw_sun_rhs_im(realtype t, N_Vector y, N_Vector ydot, void *ud);
 int gw_sun_roots(realtype t, N_Vector y, realtype *g, void *ud);
@@ -22,6 +30,16 @@ int gw_sun_jac(realtype t, N_Vector y, N_Vector fy, SUNMatrix J, void *ud,
                N_Vector t1, N_Vector t2, N_Vector t3);
 void gw_sun_errh(int code, const char *module, const char *function, char *msg,
                  void *ud);
+
+/* SUNDIALS' fixed-point nonlinear solver (m = 0, no acceleration) whose
+ * solve makes neither of the library's two whole-vector copies per iteration
+ * (the previous iterate, and g(y) into the iterate): the change between
+ * iterates is formed as g(y_k) - y_k, and g(y_k) becomes the iterate by
+ * exchanging the data of the two serial vectors. The same values in the same
+ * vectors as the library's solve, bit for bit, with one vector less streamed
+ * and written per iteration (CVODE Adams). Falls back to the library's solve
+ * for vectors it cannot exchange. NULL on allocation failure. */
+SUNNonlinearSolver gw_sun_fixed_point(N_Vector y, SUNContext ctx);
 
 /* Serial vector of length n with SUNDIALS' fused and vector-array operations
  * enabled and the hot operations replaced by gw_nvector.c's compiled kernels
@@ -36,6 +54,14 @@ int gw_sun_tune_vector(N_Vector v);
  * queued with gw_nvector.c's pending operations, to run in their pass, when y
  * and w are tuned vectors, else computed at once. Returns 0. */
 int gw_sun_nv_ewt(N_Vector y, N_Vector w, double rtol, double atol, const double *scale);
+
+/* Queue ydot = f(t, y), given by ranges of components (gw_rhs_range_fn,
+ * reading y within halo <= 64 elements of each range), with the pending
+ * operations of gw_nvector.c; it then runs block by block in their pass.
+ * 0 if queued; -1 (nothing done) if y or ydot is not a tuned vector, they
+ * differ in length or share data, or the halo is out of range. */
+int gw_sun_nv_rhs(double t, N_Vector y, N_Vector ydot, gw_rhs_range_fn f, long halo,
+                  void *params);
 
 /* Error weights w_i = 1 / (rtol |y_i| + atol scale_i) in one pass (the values
  * SUNDIALS' vector-tolerance path computes in four passes); ud is the gw_solver.

@@ -119,7 +119,10 @@ static herr_t udata_keep(void *udata)
 static herr_t find_nomem(unsigned n, const H5E_error2_t *e, void *found)
 {
     (void)n;
-    if (e->maj_num == H5E_RESOURCE)
+    /* a resource error, or a failed allocation reported under another major
+     * (H5Dread's "memory allocation failed for temporary property value" is
+     * H5E_PLIST / H5E_CANTALLOC) */
+    if (e->maj_num == H5E_RESOURCE || e->min_num == H5E_CANTALLOC || e->min_num == H5E_NOSPACE)
         *(int *)found = 1;
     return 0;
 }

@@ -959,6 +959,11 @@ static int read_h5(const char *path, int sb, gw_layer_sample *s, gw_err *err)
     h5_quiet q;
     h5_enter(&sec, &q);
     int rc = read_h5_locked(path, s, &q, err);
+    /* a read that failed because an allocation inside HDF5 did (its stack
+     * holds a resource error) is out of memory, not a bad sample: the
+     * dataset's sizes were checked against n before it was read */
+    if (rc != GW_OK && rc != GW_ENOMEM && q.nomem)
+        rc = gw_err_set(err, GW_ENOMEM, "sample '%s': out of memory (in HDF5: %s)", path, q.why);
     /* After some corrupt files HDF5 1.10 loses track of a block (a leak inside
      * the library) and at exit prints "infinite loop closing library" unless
      * automatic error printing is off: after a failed read it stays off, here

@@ -7,6 +7,7 @@
 #define GW_TEST_H
 
 #include <math.h>
+#include <stdint.h>
 #include <stdio.h>
 
 static int gw_test_failures;
@@ -41,6 +42,22 @@ static inline int gw_test_summary(const char *name)
 {
     printf("%s: %d failure(s)\n", name, gw_test_failures);
     return gw_test_failures ? 1 : 0;
+}
+
+/* xorshift64 over *s: the tests' reproducible random sequence */
+static inline uint64_t gw_test_xorshift(uint64_t *s)
+{
+    *s ^= *s << 13;
+    *s ^= *s >> 7;
+    *s ^= *s << 17;
+    return *s;
+}
+
+/* One of a few vector-operation coefficients (signs, halves, a third, a small one). */
+static inline double gw_test_coef(uint64_t *s)
+{
+    static const double c[] = {1.0, -1.0, 0.5, 2.5, -0.3, 1e-3, 7.0 / 3.0};
+    return c[gw_test_xorshift(s) % 7];
 }
 
 #endif

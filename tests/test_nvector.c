@@ -45,19 +45,9 @@
 enum { NV = 14 };
 
 static uint64_t rng = 88172645463325252ull;
-static uint64_t next(void)
-{
-    rng ^= rng << 13;
-    rng ^= rng >> 7;
-    rng ^= rng << 17;
-    return rng;
-}
+static uint64_t next(void) { return gw_test_xorshift(&rng); }
 static int pick(int n) { return (int)(next() % (uint64_t)n); }
-static double coef(void)
-{
-    static const double c[] = {1.0, -1.0, 0.5, 2.5, -0.3, 1e-3, 7.0 / 3.0};
-    return c[pick(7)];
-}
+static double coef(void) { return gw_test_coef(&rng); }
 
 typedef struct {
     N_Vector v[NV];

@@ -49,19 +49,9 @@
 enum { NV = 8 };
 
 static uint64_t rng = 0x9E3779B97F4A7C15ull;
-static uint64_t next(void)
-{
-    rng ^= rng << 13;
-    rng ^= rng >> 7;
-    rng ^= rng << 17;
-    return rng;
-}
+static uint64_t next(void) { return gw_test_xorshift(&rng); }
 static int pick(int n) { return (int)(next() % (uint64_t)n); }
-static double coef(void)
-{
-    static const double c[] = {1.0, -1.0, 0.5, 2.5, -0.3, 1e-3, 7.0 / 3.0};
-    return c[pick(7)];
-}
+static double coef(void) { return gw_test_coef(&rng); }
 static int same_bits(double x, double y) { return memcmp(&x, &y, sizeof x) == 0; }
 
 /* ydot_i = t + 0.5 y_(i-2) - y_i + 0.25 y_(i+1) + 0.125 y_(i-64) - 0.0625

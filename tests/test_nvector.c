@@ -41,6 +41,7 @@
 
 #include "gw_sundials.h"
 #include "gw_test.h"
+#include "gw_test_nvector.h"
 
 enum { NV = 14 };
 
@@ -52,15 +53,6 @@ static double coef(void) { return gw_test_coef(&rng); }
 typedef struct {
     N_Vector v[NV];
 } set;
-
-static int same_data(const set *a, const set *b, long n)
-{
-    for (int k = 0; k < NV; k++)
-        if (memcmp(N_VGetArrayPointer(a->v[k]), N_VGetArrayPointer(b->v[k]),
-                   (size_t)n * sizeof(double)) != 0)
-            return 0;
-    return 1;
-}
 
 static int same_bits(double x, double y) { return memcmp(&x, &y, sizeof x) == 0; }
 
@@ -179,7 +171,7 @@ static void run(long n, int steps, SUNContext ctx)
              steps);
     gw_test_true(red_ok, what);
     snprintf(what, sizeof what, "n = %ld: every vector bit-identical after them", n);
-    gw_test_true(same_data(&s, &t, n), what);
+    gw_test_true(gw_test_same_vectors(s.v, t.v, NV, n), what);
 
     /* a vector destroyed with a sum into it pending, then more work */
     N_Vector tmp = N_VClone(t.v[0]);
@@ -190,7 +182,7 @@ static void run(long n, int steps, SUNContext ctx)
     N_VLinearSum(1.0, s.v[3], 1.0, s.v[4], s.v[3]);
     snprintf(what, sizeof what, "n = %ld: a destroyed vector's pending work ran before it went",
              n);
-    gw_test_true(same_data(&s, &t, n), what);
+    gw_test_true(gw_test_same_vectors(s.v, t.v, NV, n), what);
     for (int k = 0; k < NV; k++) {
         N_VDestroy(s.v[k]);
         N_VDestroy(t.v[k]);

@@ -36,7 +36,7 @@
  * elements of y beyond its block), and y and f(y) are not streamed through
  * memory once more each per iterate. Every element still sees the same
  * operations in the same order, so the results are bit-identical
- * (tests/test_nvector.c, tests/test_nvector_rhs.c).
+ * (tests/test_nvector.c, tests/test_solver_adams_bitwise.c).
  * The queue is per thread; every op in the table (and the serial ones that
  * touch data, wrapped below) runs it first, and a vector is destroyed only
  * after it.

@@ -35,7 +35,7 @@ static const gw_param drop_params[] = {
      .max = GW_CHAIN_DROP_H_MAX, .def = "5.1e-3", .metavar = "H",
      .help = "fall of bead 1 to the sensor, m, in [1e-6, 1] [5.1e-3]"},
     {.name = "gap", .type = GW_PARAM_LIST, .offset = OWN(gap), .unit = "m", .min = 0, .max = GW_CHAIN_DROP_GAP_MAX,
-     .metavar = "G,G..",
+     .rows = "n", .metavar = "G,G..", /* n - 1 pairs at most (gw_chain_drop_setup_gaps checks the count) */
      .help = "initial gap between neighbouring beads, m, in [0, 0.1]: one value for every pair or n-1 values, "
              "bead 1 first [0 = touching]"},
     {.name = "block", .type = GW_PARAM_FLAG, .offset = OWN(block), .unit = "", .min = 0, .max = 1, .def = "0",

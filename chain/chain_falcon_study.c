@@ -74,10 +74,10 @@ int gw_chain_falcon_analyse(const gw_chain_params *p, double v, const gw_chain_r
 
 static const gw_param falcon_params[] = {
     {.name = "vimp", .type = GW_PARAM_LIST, .offset = OWN(vimp), .unit = "m/s", .min = GW_CHAIN_VIMP_MIN,
-     .max = GW_CHAIN_VIMP_MAX, .def = "0.3", .metavar = "V,V..", .help = "impact velocities, m/s [0.3]"},
+     .max = GW_CHAIN_VIMP_MAX, .def = "0.3", .rows = SPEEDS_MOST, .metavar = "V,V..", .help = "impact velocities, m/s [0.3]"},
     {.name = "heights", .type = GW_PARAM_LIST, .offset = OWN(heights), .unit = "mm", .min = GW_CHAIN_HEIGHT_MIN_MM,
      .max = GW_CHAIN_HEIGHT_MAX_MM, .def = "1.9,2.9,3.1,5.1",
-     .metavar = "H,H..", .help = "drop heights, mm, v = sqrt(2 g h), g the gravity or 9.81 when off ['none' to skip] [1.9,2.9,3.1,5.1]"},
+     .rows = SPEEDS_MOST, .metavar = "H,H..", .help = "drop heights, mm, v = sqrt(2 g h), g the gravity or 9.81 when off ['none' to skip] [1.9,2.9,3.1,5.1]"},
     {.name = "n", .type = GW_PARAM_RANGE, .offset = OWN(n), .unit = "", .min = 1, .max = 100000, .def = "1:40",
      .metavar = "A:B", .help = "column sizes [1:40]"},
     /* no default in the table: not given (NaN) is the default target

@@ -96,16 +96,44 @@ int gw_chain_study_work_check(long a, long b, int runs, gw_err *err)
     return GW_OK;
 }
 
+typedef struct {
+    double v;
+    int i;
+} speed_at;
+
+static int speed_cmp(const void *a, const void *b)
+{
+    const speed_at *x = a, *y = b;
+    return x->v < y->v ? -1 : x->v > y->v ? 1 : (x->i > y->i) - (x->i < y->i);
+}
+
 int gw_chain_study_speeds_check(const double *v, int n, int n_speeds, gw_err *err)
 {
-    for (int j = 1; j < n; j++)
-        for (int i = 0; i < j; i++)
-            if (v[i] == v[j])
-                return gw_err_set(err, GW_EINVAL, "%s: item %d gives the impact velocity %.10g m/s of item %d%s: the "
-                                  "same collisions would run twice and count twice in the fits",
-                                  j >= n_speeds ? "heights" : "vimp", j >= n_speeds ? j - n_speeds + 1 : j + 1, v[j],
-                                  i >= n_speeds ? i - n_speeds + 1 : i + 1,
-                                  (i >= n_speeds) != (j >= n_speeds) ? " of vimp" : "");
+    /* the first j with an earlier equal speed, i the first of those: sorted by
+     * speed then index, each run of equal speeds gives its first two indices.
+     * Every pair compared (n^2 / 2) took 220 s before the first collision of
+     * falcon --n 1:2 with 320000 speeds (the study's work bound takes 4e5) */
+    if (n < 2)
+        return GW_OK;
+    speed_at *s = malloc((size_t)n * sizeof *s);
+    if (!s)
+        return gw_err_set(err, GW_ENOMEM, "vimp: out of memory for %d impact velocities", n);
+    for (int k = 0; k < n; k++)
+        s[k] = (speed_at){v[k], k};
+    qsort(s, (size_t)n, sizeof *s, speed_cmp);
+    int i = -1, j = n;
+    for (int k = 1; k < n; k++)
+        if (s[k].v == s[k - 1].v && (k < 2 || s[k - 1].v != s[k - 2].v) && s[k].i < j) {
+            i = s[k - 1].i;
+            j = s[k].i;
+        }
+    free(s);
+    if (i >= 0)
+        return gw_err_set(err, GW_EINVAL, "%s: item %d gives the impact velocity %.10g m/s of item %d%s: the "
+                          "same collisions would run twice and count twice in the fits",
+                          j >= n_speeds ? "heights" : "vimp", j >= n_speeds ? j - n_speeds + 1 : j + 1, v[j],
+                          i >= n_speeds ? i - n_speeds + 1 : i + 1,
+                          (i >= n_speeds) != (j >= n_speeds) ? " of vimp" : "");
     return GW_OK;
 }
 

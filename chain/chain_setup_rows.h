@@ -67,8 +67,9 @@ _Static_assert(GW_SHEET_FITTED == 0 && GW_SHEET_HERTZ == 1 && GW_SHEET_LAYER == 
     CHOICE("sheet", sheet, SHEETS, NULL, "NAME", \
            "wall: a sheet of the paper's Table 2 with its fitted K_eff (none, brass, tape, pvc, pmma, " \
            "cardboard2, beech, cardboard1, rubber)"), \
+    /* one radius a bead: at most n (chain_resolve checks the count) */ \
     {.name = "radii", .type = GW_PARAM_LIST, .offset = OFF(radii), .unit = "m", .min = 1e-6, .max = 1, \
-     .metavar = "R,R..", .help = "per-bead radii, m, bead 1 first (masses and contact k from the material)"}, \
+     .rows = "n", .metavar = "R,R..", .help = "per-bead radii, m, bead 1 first (masses and contact k from the material)"}, \
     ROW("k", GW_PARAM_DOUBLE, k, "N/m^1.5", GW_CHAIN_K_MIN, GW_CHAIN_K_MAX, 0, NULL, "K", \
         "bead-bead Hertz coefficient, N/m^1.5, in [1e3, 1e14] [from material, F.12]"), \
     ROW("kwall", GW_PARAM_DOUBLE, kwall, "N/m^1.5", GW_CHAIN_K_MIN, GW_CHAIN_K_MAX, 0, NULL, "K", \
@@ -150,5 +151,10 @@ void chain_study_setup_clear(void *s, gw_chain_setup *col, const gw_param *t);
  * at each N of t's range row "n", within GW_CHAIN_STUDY_WORK_MAX
  * (gw_chain_study.h). GW_EINVAL naming the row. */
 int chain_study_range_check(const gw_param *t, const void *s, const gw_chain_setup *col, int runs, gw_err *err);
+
+/* The most impact velocities (vimp and heights rows, gw_param.rows) of a study
+ * over a range of N: each runs at least one column of at least one bead, one
+ * bead^2 of the study's work, so GW_CHAIN_STUDY_WORK_MAX (2e6) bounds them */
+#define SPEEDS_MOST "2000000"
 
 #endif

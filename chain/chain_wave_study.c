@@ -40,7 +40,7 @@
 #define OWN(f) offsetof(gw_chain_wavespeed_setup, f)
 static const gw_param ws_params[] = {
     {.name = "vimp", .type = GW_PARAM_LIST, .offset = OWN(vimp), .unit = "m/s", .min = GW_CHAIN_VIMP_MIN,
-     .max = GW_CHAIN_VIMP_MAX, .def = "0.075,0.15,0.3,0.5", .metavar = "V,V..",
+     .max = GW_CHAIN_VIMP_MAX, .def = "0.075,0.15,0.3,0.5", .rows = SPEEDS_MOST, .metavar = "V,V..",
      .help = "impact velocities, m/s [0.075,0.15,0.3,0.5]"},
     {.name = "n", .type = GW_PARAM_RANGE, .offset = OWN(n), .unit = "", .min = 1, .max = 100000, .def = "5:40",
      .metavar = "A:B", .help = "column sizes for the tau_N fit; B is the front column [5:40]"},

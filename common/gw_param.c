@@ -197,7 +197,25 @@ static int set_integer_text(const gw_param *p, void *obj, const char *value, gw_
     return GW_OK;
 }
 
-static int set_text(const gw_param *p, void *obj, const char *value, gw_err *err)
+/* The most items list row p of table t takes (gw_param.rows): its number, or
+ * the maximum of the integer or range row of t it names (INT_MAX without t);
+ * INT_MAX when none (the count is an int) */
+static long list_most(const gw_param *t, const gw_param *p)
+{
+    if (!p->rows)
+        return INT_MAX;
+    char *end;
+    long m = strtol(p->rows, &end, 10);
+    if (end == p->rows) { /* a row's name */
+        const gw_param *r = gw_param_find(t, p->rows);
+        return r && (r->type == GW_PARAM_INT || r->type == GW_PARAM_LONG || r->type == GW_PARAM_RANGE) && r->max >= 0 && r->max <= INT_MAX
+                   ? (long)r->max
+                   : INT_MAX;
+    }
+    return *end || m < 0 || m > INT_MAX ? INT_MAX : m;
+}
+
+static int set_text(const gw_param *t, const gw_param *p, void *obj, const char *value, gw_err *err)
 {
     switch (p->type) {
     case GW_PARAM_DOUBLE: {
@@ -249,6 +267,13 @@ static int set_text(const gw_param *p, void *obj, const char *value, gw_err *err
             l->n = 0;
             return GW_OK;
         }
+        /* the row's most items, counted before anything is parsed or allocated */
+        long most = list_most(t, p);
+        long items = 1;
+        for (const char *c = value; *c; c++)
+            items += *c == ',';
+        if (items > most)
+            return gw_err_set(err, GW_EINVAL, "%s: %ld items, at most %ld", p->name, items, most);
         int rc = gw_parse_double_list_in(value, p->name, p->min, p->max, p->open_min, &v, &n, err);
         if (rc != GW_OK)
             return rc;
@@ -288,7 +313,7 @@ int gw_param_set(const gw_param *t, void *obj, const char *name, const char *val
         return gw_err_set(err, GW_EINVAL, "%s: no value", p->name);
     if (!obj)
         return gw_err_set(err, GW_EINVAL, "gw_param_set: obj is NULL (setting %s)", p->name);
-    return set_text(p, obj, value, err);
+    return set_text(t, p, obj, value, err);
 }
 
 int gw_param_set_value(const gw_param *p, void *fieldp, const char *value, gw_err *err)
@@ -301,7 +326,7 @@ int gw_param_set_value(const gw_param *p, void *fieldp, const char *value, gw_er
         return gw_err_set(err, GW_EINVAL, "gw_param_set_value: fieldp is NULL (setting %s)", p->name);
     gw_param row = *p; /* the same row with its field at fieldp */
     row.offset = 0;
-    return set_text(&row, fieldp, value, err);
+    return set_text(NULL, &row, fieldp, value, err);
 }
 
 int gw_param_set_double(const gw_param *t, void *obj, const char *name, double v, gw_err *err)
@@ -359,6 +384,10 @@ int gw_param_check(const gw_param *t, const void *obj, gw_err *err)
                                 l->n < 0 ? "(a negative count)" : "without its values (v is NULL)");
                 break;
             }
+            if (l->n > list_most(t, p)) {
+                rc = gw_err_set(err, GW_EINVAL, "%s: %d items, at most %ld", p->name, l->n, list_most(t, p));
+                break;
+            }
             for (int k = 0; k < l->n && rc == GW_OK; k++) {
                 char what[32];
                 gw_snprintf(what, sizeof what, "item %d is ", k + 1);
@@ -406,7 +435,7 @@ int gw_param_init(const gw_param *t, void *obj, gw_err *err)
         case GW_PARAM_FARRAY: *(int **)f = NULL; break;
         }
         if (p->def && !p->optional && gw_param_is_input(p)) {
-            int rc = set_text(p, obj, p->def, err);
+            int rc = set_text(t, p, obj, p->def, err);
             if (rc != GW_OK)
                 return rc;
         }
@@ -458,7 +487,7 @@ int gw_param_resolve(const gw_param *t, void *obj, gw_err *err)
         const gw_param *p = &t[i];
         if (!p->optional || !p->def || !gw_param_is_input(p) || gw_param_given(p, obj))
             continue;
-        int rc = set_text(p, obj, p->def, err);
+        int rc = set_text(t, p, obj, p->def, err);
         if (rc != GW_OK)
             return rc;
     }

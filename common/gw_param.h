@@ -66,7 +66,15 @@ typedef struct gw_param {
     const char *choices;  /* GW_PARAM_CHOICE: the names, comma-separated; arrays:
                              the names of the columns (NULL: none) */
     const char *metavar;  /* placeholder in --help ("V") */
-    const char *rows;     /* arrays: number of rows, a number or an int row's name */
+    const char *rows;     /* arrays: number of rows, a number or an int row's name;
+                             lists (GW_PARAM_LIST): the most items the row takes, a
+                             number, or the name of an integer (or range) row of
+                             the table: at most that row's value (its maximum for
+                             a range; the study checks the count
+                             against it; gw_param_set and gw_param_check take that
+                             row's maximum, gw_param_set_value INT_MAX); NULL:
+                             INT_MAX. A binding reads it to bound what it takes
+                             from a caller's sequence (Python's generators) */
     const char *cols;     /* arrays: values per row, likewise (NULL = 1) */
     int optional;         /* 1: the row starts "not given" (GW_PARAM_UNSET_*, NaN,
                              -1; a text row NULL) even

@@ -71,9 +71,10 @@ static const gw_param impact_params[] = {
            "rebound: run until the rebound is complete (T_f: the block's normal velocity back to zero after it "
            "left, physics.md 2.3) or the block is found not to bounce; verdict: stop at the bounce verdict (e_n, "
            "e, alpha_r then null; the _first values given) [rebound]"),
-    ROW("snapshots", GW_PARAM_LIST, snapshots, "s", 0, 1e3, 0, 0, NULL, "T,...",
-        "particle snapshots at these times, s: each the first output sample at or after it, the end state "
-        "when the run ended before (library only) [none]"),
+    {.name = "snapshots", .type = GW_PARAM_LIST, .offset = OFF(snapshots), .unit = "s", .min = 0, .max = 1e3,
+     .rows = "10000", .metavar = "T,...", /* the most snapshots a run keeps (below) */
+     .help = "particle snapshots at these times, s: each the first output sample at or after it, the end state "
+             "when the run ended before (library only) [none]"},
     GW_PARAM_END};
 
 const gw_param *gw_layer_impact_setup_params(void)

@@ -445,6 +445,11 @@ typedef struct gw_stats_outcome {
     double *cells;          /* [ncells x 5]: diagram, rb_rm, height_rm, share, penetration_rm */
     int nboundary;
     double *boundary;       /* [nboundary x 11]: H* per R_b/R_m column */
+    /* per diagram, one line each ('\n'-ended; an empty line where the JSON has
+     * none), owned: the B.31 fit's offset source (the JSON's fit.offset_source:
+     * "fitted", "--delta-rm" or "measured: ...") and why there is no fit (its
+     * fit_reason) */
+    char *offset_sources, *fit_reasons;
 } gw_stats_outcome;
 
 const gw_param *gw_stats_outcome_fields(void);

@@ -71,6 +71,11 @@ static const gw_param outcome_fields[] = {
     RI("nboundary", nboundary, "rows of boundary"),
     RA("boundary", boundary, "nboundary", "11", BND_COLS,
        "H*/R_m per R_b/R_m column; kind 0 cross, 1 above, 2 below, 3 inverted; b31 = fitted curve there"),
+    {.name = "offset_sources", .type = GW_PARAM_TEXT, .offset = OFF(offset_sources), .unit = "",
+     .help = "per diagram, one line each: the B.31 fit's offset source (the JSON's fit.offset_source; "
+             "empty without a fit)"},
+    {.name = "fit_reasons", .type = GW_PARAM_TEXT, .offset = OFF(fit_reasons), .unit = "",
+     .help = "per diagram, one line each: why it has no B.31 fit (the JSON's fit_reason; empty with one)"},
     GW_PARAM_WARNINGS(OFF(a.warnings)),
     GW_PARAM_END};
 
@@ -163,6 +168,46 @@ static void diagram_row(const gw_stats_panel *D, double *r)
     memcpy(r + 8, v, sizeof v);
 }
 
+/* The texts of a diagram as the JSON has them (gw_stats_out.c): its fit's
+ * offset source, or why it has no fit; NULL where the JSON has none. */
+static const char *offset_source(const gw_stats_analysis *A, const gw_stats_panel *D)
+{
+    return !D->ok || !D->fit_ok ? NULL : (A->fit_mask & GW_STATS_B31_OFFSET) ? "fitted" : D->offset_source;
+}
+
+static const char *fit_reason(const gw_stats_panel *D)
+{
+    return D->ok && !D->fit_ok ? D->fit_reason : NULL;
+}
+
+/* out->offset_sources and out->fit_reasons: a line per diagram. GW_ENOMEM. */
+static int diagram_texts(gw_stats_outcome *out)
+{
+    const gw_stats_analysis *A = &out->a;
+    size_t ns = 1, nr = 1;
+    for (int q = 0; q < A->ndia; q++) {
+        const char *s = offset_source(A, &A->dia[q]), *r = fit_reason(&A->dia[q]);
+        ns += (s ? strlen(s) : 0) + 1;
+        nr += (r ? strlen(r) : 0) + 1;
+    }
+    out->offset_sources = malloc(ns);
+    out->fit_reasons = malloc(nr);
+    if (!out->offset_sources || !out->fit_reasons)
+        return GW_ENOMEM;
+    char *ps = out->offset_sources, *pr = out->fit_reasons;
+    for (int q = 0; q < A->ndia; q++) {
+        const char *s = offset_source(A, &A->dia[q]), *r = fit_reason(&A->dia[q]);
+        size_t ls = s ? strlen(s) : 0, lr = r ? strlen(r) : 0;
+        memcpy(ps, s ? s : "", ls);
+        memcpy(pr, r ? r : "", lr);
+        ps[ls] = pr[lr] = '\n';
+        ps += ls + 1;
+        pr += lr + 1;
+    }
+    *ps = *pr = '\0';
+    return GW_OK;
+}
+
 /* The tables of out from out->a. GW_ENOMEM. */
 static int tables_make(gw_stats_outcome *out)
 {
@@ -230,6 +275,8 @@ static int tables_make(gw_stats_outcome *out)
         wall_side(gs, A->walls[k][0], r);
         wall_side(gs, A->walls[k][1], r + NWALL / 2);
     }
+    if (diagram_texts(out) != GW_OK)
+        return GW_ENOMEM;
     long ic = 0, ib = 0;
     for (int q = 0; q < A->ndia; q++) {
         const gw_stats_panel *D = &A->dia[q];
@@ -276,5 +323,7 @@ void gw_stats_outcome_free(gw_stats_outcome *out)
     free(out->diagrams);
     free(out->cells);
     free(out->boundary);
+    free(out->offset_sources);
+    free(out->fit_reasons);
     memset(out, 0, sizeof *out);
 }

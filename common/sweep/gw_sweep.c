@@ -579,6 +579,11 @@ int gw_sweep_config_read_string(const char *text, const char *name, const gw_swe
                           !cfg ? "cfg" : !model ? "model" : !text ? "text" : "models");
     memset(cfg, 0, sizeof *cfg);
     *model = NULL;
+    /* the bound of a config file (gw_sweep_config_read), for a config given as text too */
+    size_t len = strlen(text);
+    if (len > (size_t)GW_SWEEP_CONFIG_MAX)
+        return gw_err_set(err, GW_EINVAL, "%s: the config takes %zu bytes, above the %ld of a sweep config", name,
+                          len, GW_SWEEP_CONFIG_MAX);
     parse_ctx pc = {cfg, models, nmodels, "", 0, 0, NULL, 0, 0, NULL, 0};
     int lrc = lines_fit(text, name, &pc, err);
     if (lrc != GW_OK) {

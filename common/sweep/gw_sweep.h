@@ -108,7 +108,8 @@ typedef struct gw_sweep_model {
 int gw_sweep_config_read(const char *path, const gw_sweep_model *const *models, int nmodels,
                          gw_sweep_config *cfg, const gw_sweep_model **model, gw_err *err);
 /* The same from a string (name is used in messages; relative paths stay as
- * written: the caller's working directory). */
+ * written: the caller's working directory), bounded as a file is: a text
+ * longer than GW_SWEEP_CONFIG_MAX bytes is GW_EINVAL. */
 int gw_sweep_config_read_string(const char *text, const char *name, const gw_sweep_model *const *models,
                                 int nmodels, gw_sweep_config *cfg, const gw_sweep_model **model, gw_err *err);
 void gw_sweep_config_free(gw_sweep_config *cfg);

@@ -185,6 +185,15 @@ def layer_stats(input=None, **kwargs):
         for c in cols:
             if t in r and c in r[t] and not _np.isnan(r[t][c]).any():
                 r[t][c] = r[t][c] != 0
+    # per diagram: the fit's offset source and why there is no fit, as the JSON's
+    # fit.offset_source and fit_reason (None where the JSON has none), the
+    # layer-stats inputs named by their keywords ("delta_rm" where the program
+    # writes "--delta-rm")
+    keep = _core._texts(list(kwargs.values()) + [input])
+    for col, key in (("offset_source", "offset_sources"), ("fit_reason", "fit_reasons")):
+        lines = (r.pop(key, None) or "").split("\n")[:-1]
+        r["diagrams"][col] = _np.array([_core.keyword_text(t, st.names, keep) if t else None for t in lines],
+                                       dtype=object)
     names = r.pop("group_keys", None)
     r["group_keys"] = names.split(",") if names else []  # as the JSON's list
     keys = r.pop("keys", None)

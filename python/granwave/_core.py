@@ -120,8 +120,10 @@ def _texts(values):
     quote back (keyword_text's keep)."""
     out = []
     for v in values:
-        if isinstance(v, os.PathLike):
-            v = os.fspath(v)
+        try:
+            v = _fspath("", v)
+        except TypeError:  # refused where it is set
+            continue
         if isinstance(v, bytes):
             v = os.fsdecode(v)
         if isinstance(v, str):
@@ -303,18 +305,92 @@ def _flag(p, value):
     raise TypeError(f"{p.keyword}: expected True or False, got {_kind(value)}")
 
 
-def _text(p, value):
-    """A Python value as the text gw_param_set parses."""
+# text as bytes: a sequence of small integers to Python, never numbers a caller
+# means (radii=bytearray([1]) ran a bead of 1 m, grid={"n": b"12"} n = 49 and 50)
+_BYTES = (bytes, bytearray)
+
+
+def _plain(s):
+    """A str (a subclass too) as a plain str of its characters: a subclass's
+    own __contains__, split or __str__ decided what the module checked and
+    wrote (sample=S('a.txt\\0b') hid its NUL and opened 'a.txt')."""
+    return str.__str__(s)
+
+
+def _fspath(what, value):
+    """value, an os.PathLike as its path (str or bytes); a path object whose
+    __fspath__ fails or gives no path is refused naming what."""
+    if not isinstance(value, os.PathLike):
+        return value
+    try:
+        return os.fspath(value)
+    except TypeError as e:
+        raise TypeError(f"{what}: {e}" if what else str(e)) from None
+
+
+def _items(what, value, most, why=""):
+    """The items of value, a caller's sequence, as a list of at most `most`
+    (int) items: the one place the module takes the items of a sequence it
+    is given (a list keyword's, a range's ends, a sweep grid's values). A
+    sequence that knows its length (a list, a tuple, an array, a range) is
+    refused by it before any item is taken; any other iterable (a generator,
+    an iterator) is taken item by item up to most + 1. A generator that never
+    ends (radii=itertools.count(1)) ran on for good, taking memory as it went.
+    Refused: GranwaveValueError "WHAT: N items, at most MOST" (the library's
+    words for a list row's bound) or "WHAT: more than MOST items", then why
+    (" (n = 3)": where the bound comes from)."""
+    try:
+        n = len(value)
+    except TypeError:  # no length: a generator, an iterator
+        n = None
+    except OverflowError:  # a range of more items than an index holds
+        n = math.inf
+    if n is not None and n > most:
+        raise GranwaveValueError(f"{what}: {n} items, at most {most}{why}", GW_EINVAL)
+    items = list(itertools.islice(value, most + 1))
+    if len(items) > most:  # no length, or one its iteration does not keep
+        raise GranwaveValueError(f"{what}: more than {most} item{'s' if most != 1 else ''}{why}", GW_EINVAL)
+    return items
+
+
+_INT_MAX = 2**31 - 1  # a list row's count is a C int (gw_param_list.n)
+
+
+def list_most(p, rows, kwargs):
+    """(most, why): the most items list row p takes in a call with kwargs
+    (the library's gw_param.rows; rows: the call's table by row name) and
+    where that comes from, for a message. Its number; or the call's value of
+    the integer row it names (radii: at most n beads; that row's default when
+    not given; its maximum when given as no integer in its range, or for a
+    range row); INT_MAX when the table gives none."""
+    if p.rows is None:
+        return _INT_MAX, ""
+    if p.rows.isdigit():
+        return min(int(p.rows), _INT_MAX), ""
+    r = rows.get(p.rows)
+    if r is None:
+        return _INT_MAX, ""
+    if r.type in (INT, LONG):
+        given = kwargs.get(r.keyword)
+        v = _scalar(given) if given is not None else int(r.default) if (r.default or "").isdigit() else None
+        if isinstance(v, int) and not isinstance(v, bool) and r.min <= v <= r.max:
+            return min(v, _INT_MAX), f" ({r.keyword} = {v}{'' if given is not None else ', its default'})"
+    return int(min(max(r.max, 0), _INT_MAX)), f" (the most {r.keyword} takes)"
+
+
+def _text(p, value, most=(_INT_MAX, "")):
+    """A Python value as the text gw_param_set parses; most: the most items a
+    list row takes in this call and why (list_most)."""
     if p.type == FLAG:  # every bool keyword, of every study and sweep, here
         return _flag(p, value)
-    if isinstance(value, os.PathLike):
-        value = os.fspath(value)
+    value = _fspath(p.keyword, value)
     if isinstance(value, bytes) and p.type == TEXT:  # a file name as the OS gives it
         value = os.fsdecode(value)
     if p.type == TEXT and not isinstance(value, str):
         # a number went to C as its digits: sample=3 looked for a file named '3'
         raise TypeError(f"{p.keyword}: expected a str or a path, got {_kind(value)}")
     if isinstance(value, str):
+        value = _plain(value)
         if "\0" in value:  # C would read up to the NUL: another file, silently
             raise GranwaveValueError(f"{p.keyword}: {value!r} holds a NUL character", GW_EINVAL)
         return value
@@ -324,14 +400,14 @@ def _text(p, value):
         # an ordered sequence of numbers: a set or a dict has no order (radii
         # went to the beads in hash order), an array of two or more dimensions
         # was flattened silently, a bad item was named by float() alone
-        if isinstance(value, (set, frozenset, dict, bytes)) or not hasattr(value, "__iter__"):
+        if isinstance(value, (set, frozenset, dict) + _BYTES) or not hasattr(value, "__iter__"):
             raise TypeError(f"{p.keyword}: expected a number or a sequence of numbers, got {_kind(value)}")
         if isinstance(value, np.ndarray) and value.ndim != 1:  # 0-d: "iteration over a 0-d array", unnamed
             raise TypeError(f"{p.keyword}: expected a 1-D sequence of numbers, got an array of shape {value.shape}")
         items = []
-        for k, x in enumerate(value):
+        for k, x in enumerate(_items(p.keyword, value, *most)):
             if isinstance(x, str):
-                items.append(x)  # parsed and checked by the library, as on the command line
+                items.append(_plain(x))  # parsed and checked by the library, as on the command line
                 continue
             v = _scalar(x)
             if v is None or isinstance(v, bool):
@@ -355,11 +431,11 @@ def _text(p, value):
             return str(x)
         # (A, B): exactly two ends; a fractional end goes to C as written, which
         # refuses it ("'1.5' is not an integer"), instead of being cut by int()
-        if isinstance(value, (str, bytes)) or not hasattr(value, "__len__") or \
+        if isinstance(value, (str,) + _BYTES) or not hasattr(value, "__len__") or \
                 (isinstance(value, np.ndarray) and value.ndim != 1) or len(value) != 2:
             raise TypeError(f"{p.keyword}: expected (A, B), an integer or a range, got {value!r}")
         ends = []
-        for x in value:
+        for x in _items(p.keyword, value, 2):
             v = _scalar(x)
             if v is None or isinstance(v, bool):
                 raise TypeError(f"{p.keyword}: a range end must be a number, got {x!r}")
@@ -387,6 +463,7 @@ class Study:
         self.func = name.replace("-", "_")
         self.table, self.params = read_table(self.st.params)
         self.by_keyword = {p.keyword: p for p in self.params}
+        self.by_name = {p.name: p for p in self.params}
         self.names = {p.name for p in self.params}  # the inputs' rows, for the library's texts (keyword_text)
         self.ftable, self.fields = read_table(self.st.fields)
         CLOCK_KEYS.update(f.name for f in self.fields if f.unit == "ms" or f.help.startswith("wall-clock"))
@@ -404,7 +481,7 @@ class Study:
                 if v is None:
                     continue
                 try:  # named as the library's messages are: the study, then the keyword
-                    text = _text(p, v)
+                    text = _text(p, v, list_most(p, self.by_name, kwargs)) if p.type == LIST else _text(p, v)
                 except GranwaveValueError as e:
                     raise GranwaveValueError(f"{self.func}: {e}", GW_EINVAL) from None
                 except TypeError as e:
@@ -653,9 +730,10 @@ def _ini_value(key, v, rows=()):
 
 def _text_plain(v):
     if isinstance(v, os.PathLike):
-        return os.fspath(v)
+        v = _fspath("", v)
+        return os.fsdecode(v) if isinstance(v, bytes) else _plain(v)
     if isinstance(v, str):
-        return v
+        return _plain(v)
     x = _scalar(v)
     if isinstance(x, bool):
         return "1" if x else "0"
@@ -674,6 +752,9 @@ def _looks_like_range(s):
 
 
 _GRID_MAX = 10**9  # cases of a sweep (the library's bound: "the grid has more than 1e9 cases")
+_SWEEP_CONFIG_MAX = 1 << 20  # bytes of a sweep's config, as text too (the library's GW_SWEEP_CONFIG_MAX)
+# the most values of one grid key but a range (written A:B): each takes a character and its ','
+_GRID_VALUES_MOST = _SWEEP_CONFIG_MAX // 2
 
 
 def _grid_values(key, v):
@@ -688,6 +769,7 @@ def _grid_values(key, v):
             raise GranwaveValueError(f"sweep() grid: '{key}': {v!r} holds more than 1e9 values: the grid has more "
                                      f"than 1e9 cases", GW_EINVAL)
     if isinstance(v, str):
+        v = _plain(v)
         if _looks_like_range(v):
             a, b = (x.strip() for x in v.split(":"))
             try:  # '+1:3' ran 3 cases in C and was one value '+1:3' here
@@ -697,7 +779,9 @@ def _grid_values(key, v):
         return [x.strip() for x in v.split(",")]
     if isinstance(v, (numbers.Number, os.PathLike)):
         return [v]
-    return list(v)
+    if isinstance(v, range):
+        return list(v)
+    return _items(f"sweep() grid: '{key}'", v, _GRID_VALUES_MOST)
 
 
 _SWEEP_KEYWORDS = {}
@@ -738,6 +822,8 @@ def run_sweep(model, grid, params, jobs, progress):
         raise TypeError(f"sweep(): grid must be a dict {{keyword: values}}, not {type(grid).__name__}")
     cb = Progress(progress)
     models = sweep_models()
+    if not isinstance(model, str):  # a list raised "unhashable type: 'list'"
+        raise TypeError(f"sweep(): model must be a str ({', '.join(map(repr, models))}), not {_kind(model)}")
     if model not in models:
         raise ValueError(f"sweep: unknown model '{model}' ({', '.join(models)})")
     m = models[model]
@@ -745,6 +831,7 @@ def run_sweep(model, grid, params, jobs, progress):
         raise ValueError("sweep: grid needs at least one key with its values")
     lines = ["[sweep]", f"model = {model}", "[grid]"]
     axes = {}
+    key_bytes = {}  # the config's bytes of each grid key's lines
     seen = {}  # t_max and t-max are one key: "sweep: sweep:5: duplicate key 't-max'" named a line of a text never shown
     for k in itertools.chain(grid, (k for k, v in params.items() if v is not None)):
         if not isinstance(k, str):  # AttributeError: 'int' object has no attribute 'replace'
@@ -757,7 +844,7 @@ def run_sweep(model, grid, params, jobs, progress):
         name = k.replace("_", "-")
         if not m.has_key(name.encode()):
             raise TypeError(f"sweep() grid: '{k}' is not a parameter of model {model}{_sweep_hint(model, m, k)}")
-        if v is None or isinstance(v, (set, frozenset, dict)) or \
+        if v is None or isinstance(v, (set, frozenset, dict) + _BYTES) or \
                 (isinstance(v, np.ndarray) and v.ndim != 1):
             raise TypeError(f"sweep() grid: '{k}': expected a list, a range, a 1-D array or a string, "
                             f"got {type(v).__name__}")
@@ -776,6 +863,7 @@ def run_sweep(model, grid, params, jobs, progress):
         if not isinstance(v, str) and any(_looks_like_range(t) for t in texts):
             raise ValueError(f"sweep() grid: '{k}': a list item {next(t for t in texts if _looks_like_range(t))!r} "
                              f"is a range, not one value: give the string 'A:B' or range(A, B + 1)")
+        n_lines = len(lines)
         # consecutive integers as the range A:B; a longer list goes on over
         # indented lines after a line ending with a comma (each line of the
         # config at most 198 characters, the library's reader's buffer)
@@ -791,6 +879,7 @@ def run_sweep(model, grid, params, jobs, progress):
                     line = "    "
                 line += item + " "
             lines.append(line.rstrip())
+        key_bytes[k] = sum(len(x) + 1 for x in lines[n_lines:])
         if any(len(x) > _SWEEP_LINE_MAX for x in lines):  # one value longer than a line
             raise GranwaveValueError(f"sweep() grid: '{k}': a value takes {max(len(t) for t in texts)} characters, "
                                      f"above the {_SWEEP_LINE_MAX} of a line of the library's config reader", GW_EINVAL)
@@ -813,6 +902,11 @@ def run_sweep(model, grid, params, jobs, progress):
                                      f"config line, above the {_SWEEP_LINE_MAX} the library's reader takes (a shorter "
                                      f"path, relative to the working directory)", GW_EINVAL)
     text = "\n".join(lines) + "\n"
+    if len(text.encode(errors="surrogateescape")) > _SWEEP_CONFIG_MAX:  # the library's bound, by key
+        big = max(key_bytes, key=key_bytes.get)
+        raise GranwaveValueError(f"sweep() grid: '{big}': the sweep's config takes {len(text)} bytes, above the "
+                                 f"{_SWEEP_CONFIG_MAX} the library reads (a range for consecutive integers, or "
+                                 f"fewer values)", GW_EINVAL)
     values = _lib.c_double_p()
     ncases = ctypes.c_long()
     mod = ctypes.POINTER(_lib.GwSweepModel)()

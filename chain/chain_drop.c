@@ -536,8 +536,7 @@ int gw_chain_drop_run(const gw_chain_drop_params *p, const gw_chain_run_opts *o,
     r->run_dt = type == gw_solver_rk4 ? fmin(sp.dt, sp.dt_max) : sp.dt; /* the step rk4 takes */
     r->run_dt_max = sp.dt_max;
     if ((rc = chain_steps_check(type, &sp, &o->sp, p->t_max, "t-max", err)) != GW_OK ||
-        (rc = chain_sensor_steps_check(&q, type, p->t_max, "t-max", err)) != GW_OK ||
-        (rc = chain_ring_check(&q, type, &sp, p->t_max, "t-max", err)) != GW_OK)
+        (rc = chain_sensor_steps_check(&q, type, p->t_max, "t-max", err)) != GW_OK)
         goto done;
     st.type = type;
     if ((rc = gw_solver_create(type, &d.sys, &sp, 0.0, y, &s, err)) != GW_OK)

@@ -110,13 +110,14 @@ double chain_contact_tau_min(const gw_chain_params *p, double v);
  * *fastest (may be NULL) is that bead's index. */
 double chain_ring_period(const gw_chain_params *p, int *fastest);
 
-/* cvode's and arkode's work over a light bead that heavy beads hold (or a wall
- * far stiffer than the beads' contacts), bounded before the run
+/* cvode's and arkode's work over a light bead that heavy beads hold (per-bead
+ * masses only: radii), bounded before the run
  * (chain_collide.c): the oscillations of chain_ring_period over t_len seconds
  * at about 260 steps each (rtol 1e-12; (tol/1e-12)^-0.11 at tol = the looser of
  * rtol and atol), times the beads, at most 2e7 when they are more than 100 per
- * bead transit (2n + 1 over the collision); GW_EINVAL naming radii (kwall for
- * equal beads) and "... over OVER (about T s)". rk4: GW_OK (chain_steps_check). */
+ * bead transit (2n + 1 over the collision); GW_EINVAL naming radii and "...
+ * over OVER (about T s)". rk4 and equal beads: GW_OK. Called by the collision's
+ * plan (gw_chain_run_check, so chain, sweeps, studies and Python), not the drop. */
 int chain_ring_check(const gw_chain_params *p, const gw_solver_type *type, const gw_solver_params *sp,
                      double t_len, const char *over, gw_err *err);
 

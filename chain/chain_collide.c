@@ -561,6 +561,63 @@ typedef struct collide_plan {
     const gw_solver_type *type;
 } collide_plan;
 
+/* A light bead held by heavy ones rings on its contacts all the time they
+ * hold it, and cvode and arkode follow every oscillation: the run stops and
+ * restarts at each maximum and minimum of the wall force, and BDF starts again
+ * at order 1 there. Measured (cvode bdf at rtol 1e-12, --n 2 --radii 1e-3,X):
+ * 258 to 266 steps per oscillation of chain_ring_period over the expected
+ * length at X = 1e-2, 3e-2, 0.1 and 1 (1.7e4 to 1.7e7 steps); fewer at looser
+ * tolerances, as (tol / 1e-12)^-0.11 (99 at 1e-8, 58 at 1e-6), adams 113 and
+ * arkode's erk 133 at 1e-12. --radii 1e-3,1 took 17.1 million steps and 45 s
+ * of CPU (2.6 us a step). The plan bounds these steps times the beads at 2e7
+ * (about 30 s of CPU) when the ringing is not the column's own: more than
+ * RING_RATIO_MAX oscillations per bead transit (2n + 1 of them over the
+ * collision's expected length, whatever the run's length t_len). Equal beads
+ * would ring 0.37 to 0.61 times per transit (n = 1 to 1000, gravity, sheets),
+ * mixed radii of ratio 2 to 20 up to 13; a bead of 1e-3 m under 3e-2, 0.1 and
+ * 1 m 67, 407 and 12900 times, 3e-5 m between two of 4e-3 m 564 (within the
+ * bound: 3.1e6 bead-steps). Equal beads are not checked: a wall far
+ * stiffer than their contacts (--n 10 --k 1e3 --kwall 1e14) has bead 1 bounce
+ * between the two (9 wall contacts, 1.26e6 steps), not held ringing. rk4's
+ * steps are the fixed step's, bounded by chain_steps_check. The drop does not
+ * call it: its calibration is not this one (drop --n 2 --radii 1e-3,1 took
+ * 929331 steps over its 10 ms, 5.8 s, where this would estimate 1.4e7). */
+#define RING_RATIO_MAX 100.0
+#define RING_WORK_MAX 2e7
+#define RING_STEPS_PER_OSC 260.0
+
+int chain_ring_check(const gw_chain_params *p, const gw_solver_type *type, const gw_solver_params *sp,
+                     double t_len, const char *over, gw_err *err)
+{
+    if (type == gw_solver_rk4 || !p->masses)
+        return GW_OK;
+    int f = 0;
+    const double n = p->n, tr = chain_ring_period(p, &f), osc = t_len / tr;
+    double tol = fmax(sp->rtol, sp->atol);
+    if (!(tol > 0))
+        tol = 1e-12;
+    const double per_osc = RING_STEPS_PER_OSC * pow(fmin(tol, 1.0) / 1e-12, -0.11);
+    const double work = n * per_osc * osc;
+    /* the ringing against the column's own scale: its collision's expected
+     * length (whatever t_len) */
+    double tc = 0, tau1 = 0;
+    chain_column_scales(p, &tc, &tau1);
+    const double t_col = n * 2.0 * tc + tau1;
+    if (!(t_col / tr > RING_RATIO_MAX * (2 * n + 1)) || !(work > RING_WORK_MAX))
+        return GW_OK;
+    int h = 0;
+    for (int i = 1; i < p->n; i++)
+        if (p->masses[i] > p->masses[h])
+            h = i;
+    return gw_err_set(err, GW_EINVAL,
+                      "radii: bead %d (%.3g kg) is %.3g times lighter than bead %d (%.3g kg) and rings every %.3g s "
+                      "while the heavy beads hold it, about %.3g oscillations over %s (about %.3g s): about %.3g "
+                      "bead-steps of %s (%.0f steps an oscillation), above the bound %.0e (about 30 s): use rk4 (its "
+                      "fixed step is bounded on its own) or closer radii",
+                      f + 1, p->masses[f], p->masses[h] / p->masses[f], h + 1, p->masses[h], tr, osc, over, t_len,
+                      work, gw_solver_type_name(type), per_osc, RING_WORK_MAX);
+}
+
 static int collide_plan_make(const gw_chain_params *p0, const gw_chain_run_opts *o, collide_plan *pl, gw_err *err)
 {
     gw_chain_params q = *p0; /* the time scales at chain_speed_scale; p0 itself for the rest */
@@ -623,6 +680,10 @@ static int collide_plan_make(const gw_chain_params *p0, const gw_chain_run_opts 
             worst = i;
     if (worst >= 0)
         return gw_err_set(err, GW_EINVAL, "%s", e[worst].msg);
+    /* cvode and arkode follow a light bead that heavy beads hold, all the time
+     * they hold it (chain_ring_check) */
+    if ((rc = chain_ring_check(p, pl->type, &pl->sp, pl->t_expect, "the collision", err)) != GW_OK)
+        return rc;
     /* A stored trace (gw_chain_trace_sample) keeps t, the wall force and every
      * bead's x and v at each sample and event (about 4 events per bead): bound
      * it before the run (--n 1000 --dt-out 1e-9 grew toward 400 GB; written,

@@ -102,6 +102,25 @@ double chain_speed_scale(const gw_chain_params *p);
  * bead 1 on the wall (on the sensor body: their reduced mass). */
 double chain_contact_tau_min(const gw_chain_params *p, double v);
 
+/* The period, s, at which the column's fastest bead rings on its contacts when
+ * they carry the largest force the column's energy can make (chain_model.c);
+ * INFINITY without contacts. Over the collision's expected length it counts the
+ * oscillations cvode and arkode follow: a light bead held between the wall and
+ * heavy beads rings for the whole of their contact (chain_collide.c's plan);
+ * *fastest (may be NULL) is that bead's index. */
+double chain_ring_period(const gw_chain_params *p, int *fastest);
+
+/* cvode's and arkode's work over a light bead that heavy beads hold (per-bead
+ * masses only: radii), bounded before the run
+ * (chain_collide.c): the oscillations of chain_ring_period over t_len seconds
+ * at about 260 steps each (rtol 1e-12; (tol/1e-12)^-0.11 at tol = the looser of
+ * rtol and atol), times the beads, at most 2e7 when they are more than 100 per
+ * bead transit (2n + 1 over the collision); GW_EINVAL naming radii and "...
+ * over OVER (about T s)". rk4 and equal beads: GW_OK. Called by the collision's
+ * plan (gw_chain_run_check, so chain, sweeps, studies and Python), not the drop. */
+int chain_ring_check(const gw_chain_params *p, const gw_solver_type *type, const gw_solver_params *sp,
+                     double t_len, const char *over, gw_err *err);
+
 /* The run's steps bounded before it starts (chain_collide.c): the RK4 step
  * (the smaller of dt and dt_max), or cvode's and arkode's largest step dt_max,
  * may need at most 1e8 steps over t_len seconds; GW_EINVAL naming dt or

@@ -20,7 +20,12 @@
 #  4 layer-make --height-rm at or above the settled pile's top took nothing
 #    away: now a warning (program: one stderr line; Python: the result's
 #    warnings), the sample still written; a height below the top trims, no
-#    warning.
+#    warning;
+#  5 the reverse: softwall --sheets refused --wall-material under every sheet
+#    law, where under hertz, layer and material the sheet none among them is
+#    the Hertz half-space of the sensor's material (gw_sheet_apply): it now
+#    runs and sets that row alone (kwall, and its label "no sheet (brass
+#    sensor)"); under fitted it is still refused.
 # Checks that fail on the code before: see docs/tests.md.
 set -u
 GW=$(cd "$(dirname "$1")" && pwd)/$(basename "$1")
@@ -60,11 +65,10 @@ fi
 
 # 2: drop --block with one bead
 refused "2a drop --block --n 1" "^granwave drop --block: has no effect with one bead" drop --block --n 1 --out "$tmp/o"
-if runs_json "2b drop --block --n 2" b2.json drop --block --n 2 --t-max 1e-3 &&
-    [ "$(jq_py b2.json 'd["n"], d["block"]')" = "1 True" ]; then
-    ok "2b drop --block --n 2 runs one body"
-else
-    ko "2b drop --block --n 2 ($(head -c 200 b2.json))"
+# (runs_json counts a run that fails; the checks after it, a run that ran)
+if runs_json "2b drop --block --n 2" b2.json drop --block --n 2 --t-max 1e-3; then
+    [ "$(jq_py b2.json 'd["n"], d["block"]')" = "1 True" ] && ok "2b drop --block --n 2 runs one body" ||
+        ko "2b drop --block --n 2 ($(head -c 200 b2.json))"
 fi
 
 # 3: layer-impact --height-rm above the sample's depth
@@ -87,11 +91,10 @@ refused "3a layer-impact --height-rm 1000" "^granwave layer-impact --height-rm: 
     "${LI[@]}" --height-rm 1000 --out "$tmp/o"
 refused "3b layer-impact --height-rm just above the depth ($above R_m)" "^granwave layer-impact --height-rm: " \
     "${LI[@]}" --height-rm "$above"
-if runs_json "3c layer-impact --height-rm just below the depth" h.json "${LI[@]}" --height-rm "$below" &&
-    [ "$(jq_py h.json 'd["n_frozen"] >= 1')" = "True" ]; then
-    ok "3c just below the depth ($below R_m) freezes $(jq_py h.json 'd["n_frozen"]') particle(s)"
-else
-    ko "3c just below the depth ($below R_m): $(head -c 200 "$tmp/stderr")"
+if runs_json "3c layer-impact --height-rm just below the depth" h.json "${LI[@]}" --height-rm "$below"; then
+    [ "$(jq_py h.json 'd["n_frozen"] >= 1')" = "True" ] &&
+        ok "3c just below the depth ($below R_m) freezes $(jq_py h.json 'd["n_frozen"]') particle(s)" ||
+        ko "3c just below the depth ($below R_m): nothing frozen"
 fi
 printf '[sweep]\nmodel = layer\nout = %s/o\n[grid]\nheight-rm = 2, 1000\n[params]\nsample = S.txt\nt-max = 2e-3\n' \
     "$tmp" >h.ini
@@ -115,6 +118,30 @@ if [ $rc -eq 0 ] && [ ! -s u.err ] && [ "$(jq_py u.json 'd["n_removed_above_heig
     ok "4b layer-make --height-rm 6 trims $(jq_py u.json 'd["n_removed_above_height"]') particles, no warning"
 else
     ko "4b layer-make --height-rm 6: exit $rc, stderr: $(cat u.err)"
+fi
+
+# 5: the reverse: softwall --sheets refused --wall-material under every law,
+# where under hertz, layer and material the sheet none among them is the Hertz
+# half-space of the sensor's material: it now runs and sets that row alone
+refused "5a softwall --sheets --wall-material (fitted)" "^granwave softwall --wall-material: has no effect with sheets" \
+    softwall --sheets --n 1:3 --jobs 1 --quiet --wall-material brass
+SW=(softwall --sheets --n 1:3 --jobs 1 --quiet --sheet-law hertz)
+if runs_json "5b softwall --sheets --sheet-law hertz" sw0.json "${SW[@]}" &&
+    runs_json "5b softwall --sheets --sheet-law hertz --wall-material brass" sw1.json "${SW[@]}" --wall-material brass; then
+    r=$($PY - <<'EOF'
+import json
+a, b = (json.load(open(f))["sheets"] for f in ("sw0.json", "sw1.json"))
+bad = []
+if not b[0]["kwall"] < 0.9 * a[0]["kwall"]:  # brass is softer than steel: a lower Hertz coefficient
+    bad.append("none: kwall %g -> %g" % (a[0]["kwall"], b[0]["kwall"]))
+if b[0]["material"] != "no sheet (brass sensor)":
+    bad.append("none labelled %r" % b[0]["material"])
+bad += ["%s changed" % x["name"] for x, y in zip(a[1:], b[1:]) if x != y]
+print("; ".join(bad) or "ok")
+EOF
+)
+    [ "$r" = "ok" ] && ok "5b --sheets --sheet-law hertz --wall-material brass sets the sheet none row alone" ||
+        ko "5b --sheets --sheet-law hertz --wall-material brass: $r"
 fi
 
 # 1-4 in Python: the same library checks and warning
@@ -144,7 +171,7 @@ if not any("height_rm took nothing away" in x for x in ws) or not any("height_rm
     bad.append("layer_make(height_rm=100): warnings %r, issued %r" % (ws, [str(x.message) for x in w]))
 print("\n".join(bad) or "ok")
 EOF
-[ "$(cat py.out)" = "ok" ] && ok "5 Python refuses 1-3 naming the keyword and warns of 4" || ko "5 Python: $(cat py.out)"
+[ "$(cat py.out)" = "ok" ] && ok "6 Python refuses 1-3 naming the keyword and warns of 4" || ko "6 Python: $(cat py.out)"
 
 echo "$passes passed, $fails failed"
 [ "$fails" -eq 0 ]

@@ -25,7 +25,10 @@
 #    law, where under hertz, layer and material the sheet none among them is
 #    the Hertz half-space of the sensor's material (gw_sheet_apply): it now
 #    runs and sets that row alone (kwall, and its label "no sheet (brass
-#    sensor)"); under fitted it is still refused.
+#    sensor)"); under fitted it is still refused;
+#  7 --clump-mass over grains of one disc each (layer-make --clumps
+#    --aspect-max 1, or layer-impact on such a sample): sum and union are the
+#    same mass; refused, and taken where a clump has two discs or more.
 # Checks that fail on the code before: see docs/tests.md.
 set -u
 GW=$(cd "$(dirname "$1")" && pwd)/$(basename "$1")
@@ -144,7 +147,22 @@ EOF
         ko "5b --sheets --sheet-law hertz --wall-material brass: $r"
 fi
 
-# 1-4 in Python: the same library checks and warning
+# 7: --clump-mass over grains of one disc each (aspect-max 1: the sum and the
+# union of a clump's discs are the same mass; the sample differed only in its
+# header line, the impact not at all)
+refused "7a layer-make --clumps --aspect-max 1 --clump-mass union" \
+    "^granwave layer-make --clump-mass: has no effect with aspect-max 1" \
+    "${LM[@]}" --clumps --aspect-max 1 --clump-mass union --out "$tmp/o"
+"$GW" "${LM[@]}" --clumps --aspect-max 1 --out C1.txt >/dev/null 2>&1 || ko "7 layer-make of the one-disc clump sample"
+refused "7b layer-impact --clump-mass union on one-disc clumps" \
+    "^granwave layer-impact --clump-mass: has no effect: every clump of the sample 'C1.txt' is one disc" \
+    layer-impact --sample C1.txt --t-max 2e-3 --vi 5 --clump-mass union --out "$tmp/o"
+"$GW" "${LM[@]}" --clumps --aspect-max 1.5 --clump-mass union --out C2.txt >/dev/null 2>c2.err &&
+    runs_json "7c" c2.json layer-impact --sample C2.txt --t-max 2e-3 --vi 5 --clump-mass sum &&
+    ok "7c clumps of aspect up to 1.5: --clump-mass taken by layer-make and layer-impact" ||
+    ko "7c clumps of aspect up to 1.5: $(cat c2.err "$tmp/stderr" | head -c 300)"
+
+# 1-4 and 7 in Python: the same library checks and warning
 PYTHONPATH="$SRC/python" GRANWAVE_LIB="$(dirname "$GW")/lib" $PY - >py.out 2>&1 <<'EOF'
 import warnings
 import granwave
@@ -163,6 +181,7 @@ refused("chain", "sheet_loss", sheet="brass", sheet_law="material", sheet_loss=0
 refused("chain", "sheet_yield", sheet="none", sheet_law="material", sheet_yield=1e6)
 refused("drop", "block", n=1, block=True)
 refused("layer_impact", "height_rm", sample="S.txt", t_max=2e-3, vi=5, height_rm=1000)
+refused("layer_make", "clump_mass", n=12, width_rm=8, clumps=True, aspect_max=1, clump_mass="union")
 with warnings.catch_warnings(record=True) as w:
     warnings.simplefilter("always")
     r = granwave.layer_make(n=12, width_rm=8, seed=2, ke_threshold=1e-2, t_max=2, solver="verlet", height_rm=100)
@@ -171,7 +190,7 @@ if not any("height_rm took nothing away" in x for x in ws) or not any("height_rm
     bad.append("layer_make(height_rm=100): warnings %r, issued %r" % (ws, [str(x.message) for x in w]))
 print("\n".join(bad) or "ok")
 EOF
-[ "$(cat py.out)" = "ok" ] && ok "6 Python refuses 1-3 naming the keyword and warns of 4" || ko "6 Python: $(cat py.out)"
+[ "$(cat py.out)" = "ok" ] && ok "6 Python refuses 1-3 and 7 naming the keyword and warns of 4" || ko "6 Python: $(cat py.out)"
 
 echo "$passes passed, $fails failed"
 [ "$fails" -eq 0 ]

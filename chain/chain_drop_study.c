@@ -201,6 +201,9 @@ int gw_chain_drop_setup_gaps(const gw_chain_drop_setup *s, double **gaps, gw_err
 {
     *gaps = NULL;
     const int n = (int)s->col.n, ng = s->gap.n;
+    if (s->block && n < 2) /* one bead is one body of the column's mass already */
+        return gw_err_set(err, GW_EINVAL, "block: has no effect with one bead (n = 1 is already one body of the "
+                          "column's mass)");
     if (ng == 0)
         return GW_OK;
     if (n < 2 || s->block)

@@ -335,6 +335,25 @@ static int check_wall(const gw_chain_setup *s, gw_err *err)
     if (s->sheet_yield > 0 && s->sheet_yield < 1e5)
         return gw_err_set(err, GW_EINVAL, "sheet-yield: %g Pa is below any solid's yield stress "
                           "(0 = elastic, or >= 1e5 Pa)", s->sheet_yield);
+    /* what gw_sheet_apply takes of the overrides under law material: nothing
+     * for the bare sensor (sheet none: no thickness, the Hertz wall of the
+     * sensor's material), and no loss for a sheet that yields (Thornton
+     * elastic-plastic on the Hertz law; the loss is the elastic layer's) */
+    if (s->sheet >= 0 && law == GW_SHEET_MATERIAL && (!isnan(s->sheet_yield) || !isnan(s->sheet_loss))) {
+        char name[32];
+        const gw_sheet *sh = gw_sheet_find(choice(s, "sheet", name, sizeof name));
+        const int i = !isnan(s->sheet_yield) ? 0 : 1;
+        if (sh && !(sh->thickness > 0))
+            return gw_err_set(err, GW_EINVAL, "%s: has no effect with sheet %s (the bare sensor: no sheet to "
+                              "yield or to lose energy; its wall is the Hertz half-space of wall-material)",
+                              mat_rows[i], sh->name);
+        const double y = !isnan(s->sheet_yield) ? s->sheet_yield : sh ? sh->yield : 0;
+        if (sh && y > 0 && !isnan(s->sheet_loss))
+            return gw_err_set(err, GW_EINVAL, "sheet-loss: has no effect on sheet %s with a yield stress of %g Pa "
+                              "(%s; a sheet that yields is Thornton elastic-plastic, the loss is that of the "
+                              "elastic layer): give sheet-yield 0 with it", sh->name, y,
+                              isnan(s->sheet_yield) ? "the sheet's own" : "sheet-yield");
+    }
     int ms = !isnan(s->sensor_mass);
     if (!ms && !isnan(s->sensor_stiffness))
         return gw_err_set(err, GW_EINVAL, "sensor-stiffness: has no effect without sensor-mass");

@@ -572,7 +572,13 @@ static void sw_fill(const gw_chain_softwall_setup *s, const gw_chain_resolved *r
                   o->sheet_table + (size_t)w * GW_SOFTWALL_NSHEET_COLS);
         size_t ln = strlen(o->sheet_names), lm = strlen(o->sheet_materials);
         gw_snprintf(o->sheet_names + ln, 16, "%s%s", w ? "," : "", sh->name);
-        gw_snprintf(o->sheet_materials + lm, 64, "%s%s", w ? ";" : "", sh->material);
+        char wall[32] = "steel"; /* sheet none under a law other than fitted: the sensor's material */
+        if (gw_param_format(gw_param_find(sw_params, "wall-material"), s, wall, sizeof wall) <= 0)
+            gw_snprintf(wall, sizeof wall, "steel");
+        if (!(sh->thickness > 0) && rs->law != GW_SHEET_FITTED)
+            gw_snprintf(o->sheet_materials + lm, 64, "%sno sheet (%s sensor)", w ? ";" : "", wall);
+        else
+            gw_snprintf(o->sheet_materials + lm, 64, "%s%s", w ? ";" : "", sh->material);
     }
 }
 
@@ -589,10 +595,16 @@ int gw_chain_softwall_run(const gw_chain_softwall_setup *s, gw_progress_fn progr
         return gw_err_set(err, GW_EINVAL, "%s: has no effect with sheets (each sheet of Table 2 is its own wall)",
                           s->col.sheet >= 0 ? "sheet" : "kwall");
     /* the wall material, given at steel too (an optional row), where the wall
-     * is a stiffness (kwall, 1e9 by default) or each sheet of Table 2 */
-    if (gw_param_given(gw_param_find(sw_params, "wall-material"), s) && (s->sheets || s->col.sheet < 0))
+     * is a stiffness (kwall, 1e9 by default) or each sheet of Table 2 with its
+     * fitted K_eff; under the laws hertz, layer and material the sheet none
+     * among them is the Hertz half-space of the sensor's material
+     * (gw_sheet_apply), which the wall material sets */
+    const int fitted = s->col.sheet_law < 0 || s->col.sheet_law == GW_SHEET_FITTED;
+    if (gw_param_given(gw_param_find(sw_params, "wall-material"), s) &&
+        ((s->sheets && fitted) || (!s->sheets && s->col.sheet < 0)))
         return gw_err_set(err, GW_EINVAL, "wall-material: has no effect %s",
-                          s->sheets ? "with sheets (each sheet of Table 2 is its own wall)"
+                          s->sheets ? "with sheets under sheet-law fitted (each sheet of Table 2 is its own wall, "
+                                      "sheet none too: its fitted K_eff)"
                                     : "(the wall is kwall, default 1e9 N/m^1.5, or sheets)");
     long a = s->n[0], b = s->n[1];
     if (b - a < 2)

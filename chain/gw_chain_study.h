@@ -497,7 +497,9 @@ int gw_chain_drop_setup_init(gw_chain_drop_setup *s);
 void gw_chain_drop_setup_clear(gw_chain_drop_setup *s);
 const gw_param *gw_chain_drop_outcome_fields(void);
 /* The gaps of s for its n beads ([n-1] m, or *gaps = NULL when touching) with
- * the study's checks (GW_EINVAL "gap: ..."); the caller frees. */
+ * the study's checks of the column's layout (GW_EINVAL "gap: ...", or
+ * "block: ..." for block with one bead, which changes nothing); the caller
+ * frees. */
 int gw_chain_drop_setup_gaps(const gw_chain_drop_setup *s, double **gaps, gw_err *err);
 /* The drop's block (block = 1): p, a column of p->n beads, becomes one body of
  * the column's whole mass with bead 1's contact constants (p->masses and

@@ -381,6 +381,8 @@ typedef struct gw_layer_make_result {
     int n_bodies, n_discs; /* grains and discs in the sample */
     double t_judge;       /* s: the settling is judged from here on (0.1 s of settling, and the
                              lowest particle's free fall to the floor): a t_max below it cannot converge */
+    double untrimmed_top_rm; /* height_rm > 0 that took nothing away: the settled pile's top in R_m
+                                (at or below height_rm; the sample is the whole pile); else 0 */
 } gw_layer_make_result;
 
 /* Pluviate a sample (lp: material, friction; width and mass law are taken from
@@ -392,10 +394,11 @@ typedef struct gw_layer_make_result {
  * out->n counts discs (res->n_bodies the clumps). */
 int gw_layer_make(const gw_layer_params *lp, const gw_layer_make_params *mp,
                   gw_layer_sample *out, gw_layer_make_result *res, gw_err *err);
-/* The warning of a pluviation that did not settle (converged 0), appended to
- * *list (gw_warnings_add, gw_common.h): t_max (s, the run's) below t_judge, or
- * E_k still above the threshold at t_max; out (may be NULL) the file the sample
- * was written to, named in the text. Nothing when converged. The text
+/* The warnings of a pluviation, appended to *list (gw_warnings_add,
+ * gw_common.h): one that did not settle (converged 0: t_max, s, the run's,
+ * below t_judge, or E_k still above the threshold at t_max; out, may be NULL,
+ * the file the sample was written to, named in the text), and a height_rm
+ * that took nothing away (untrimmed_top_rm > 0). Nothing else. The texts
  * `granwave layer-make` prints and Python issues. GW_OK or GW_ENOMEM. */
 int gw_layer_make_result_warnings(const gw_layer_make_result *r, double t_max, const char *out, char **list);
 

@@ -78,6 +78,18 @@ void gw_layer_impact_result_free(gw_layer_impact_result *r)
     memset(r, 0, sizeof *r);
 }
 
+/* The level below which a particle's centre is frozen: height_rm R_m under
+ * the surface (the largest y + r); -inf with height_rm 0 (all mobile). */
+static double freeze_level(const gw_layer_sample *smp, double height_rm, double *top_out)
+{
+    double top = 0;
+    for (int i = 0; i < smp->n; i++)
+        top = fmax(top, smp->y[i] + smp->r[i]);
+    if (top_out)
+        *top_out = top;
+    return height_rm > 0 ? top - height_rm * smp->rm : -INFINITY;
+}
+
 int gw_layer_impact_check(const gw_layer_sample *smp, const gw_layer_impact_params *p, gw_err *err)
 {
     int rc;
@@ -128,6 +140,19 @@ int gw_layer_impact_check(const gw_layer_sample *smp, const gw_layer_impact_para
     if (xc - rb < 0 || xc + rb > smp->width)
         return gw_err_set(err, GW_EINVAL, "x: block of radius %g m at x = %g m from the centre "
                           "does not fit in the box of width %g m", rb, p->x, smp->width);
+    /* a mobile layer reaching below every particle's centre freezes none: the
+     * run of height-rm 0, silently (the rule gw_layer_impact freezes by) */
+    if (p->height_rm > 0 && smp->n > 0) {
+        double top = 0, ymin = INFINITY;
+        const double yf = freeze_level(smp, p->height_rm, &top);
+        for (int i = 0; i < smp->n; i++)
+            ymin = fmin(ymin, smp->y[i]);
+        if (!(ymin < yf))
+            return gw_err_set(err, GW_EINVAL, "height-rm: a mobile layer of %g R_m reaches below every particle's "
+                              "centre (the lowest lies %.4g R_m under the surface): no particle is frozen, as with "
+                              "0 (give less than %.4g, or 0 for all mobile)", p->height_rm,
+                              (top - ymin) / smp->rm, (top - ymin) / smp->rm);
+    }
     return GW_OK;
 }
 
@@ -339,10 +364,9 @@ int gw_layer_impact(const gw_layer_sample *smp, const gw_layer_params *lp0,
     lp.potential_from_start = 1;
     lp.no_events = 0;
     lp.walls = ip->remove_walls ? 0 : GW_LAYER_WALLS_ALL;
-    double top = 0, yb = -INFINITY;
+    double yb = -INFINITY;
     int target = -1;
     for (int i = 0; i < n; i++) {
-        top = fmax(top, smp->y[i] + smp->r[i]);
         double dx = smp->x[i] - xc, reach = rb + smp->r[i];
         if (fabs(dx) < reach) {
             double yy = smp->y[i] + sqrt(reach * reach - dx * dx);
@@ -356,7 +380,7 @@ int gw_layer_impact(const gw_layer_sample *smp, const gw_layer_params *lp0,
     gw_layer_body *b = calloc((size_t)n + 1, sizeof *b);
     if (!b)
         return gw_err_set(err, GW_ENOMEM, "layer-impact: out of memory");
-    const double y_freeze = ip->height_rm > 0 ? top - ip->height_rm * rm : -INFINITY;
+    const double y_freeze = freeze_level(smp, ip->height_rm, NULL);
     for (int i = 0; i < n; i++) {
         b[i] = (gw_layer_body){.x = smp->x[i], .y = smp->y[i], .r = smp->r[i]};
         b[i].fixed = smp->y[i] < y_freeze; /* a clump with a frozen member is frozen whole */

@@ -289,6 +289,19 @@ static int settle_all(const gw_layer_params *lp, const gw_layer_make_params *m, 
  * would go into the impact). The kept pile settles again under its own weight
  * (every velocity zero, the same damping and threshold), within what is left of
  * t_max; it is judged after SETTLE_CHUNKS_MIN chunks of it. */
+/* A trim to height_rm that took nothing away (the settled pile's top at or
+ * below it): the sample is the whole pile, as with height_rm 0; its top (R_m)
+ * is kept for the warning (gw_layer_make_result_warnings). */
+static void note_untrimmed(const gw_layer_make_params *m, const gw_layer_body *b, int n, gw_layer_make_result *res)
+{
+    if (!(m->height_rm > 0) || res->n_removed > 0)
+        return;
+    double top = 0;
+    for (int i = 0; i < n; i++)
+        top = fmax(top, b[i].y + b[i].r);
+    res->untrimmed_top_rm = top / m->rm;
+}
+
 static int relax_trimmed(const gw_layer_params *lp, const gw_layer_make_params *m, int n, gw_layer_body *b,
                          double *t, double *ke, int *conv, gw_layer_make_result *res, gw_err *err)
 {
@@ -434,6 +447,8 @@ static int make_clumps(const gw_layer_params *lp0, const gw_layer_make_params *m
     }
     if (rc == GW_OK && kept == 0)
         rc = gw_err_set(err, GW_EINVAL, "height-rm: no clump lies below %g R_m", m->height_rm);
+    if (rc == GW_OK)
+        note_untrimmed(m, b, kept, res);
     if (rc == GW_OK && res->n_removed > 0)
         rc = relax_trimmed(&lp, m, kept, b, &t, &ke, &conv, res, err);
     if (rc == GW_OK) {
@@ -546,6 +561,7 @@ int gw_layer_make(const gw_layer_params *lp0, const gw_layer_make_params *m,
         }
         res->n_removed = n - kept;
         n = kept;
+        note_untrimmed(m, b, n, res);
         if (res->n_removed > 0 && (rc = relax_trimmed(&lp, m, n, b, &t, &ke, &conv, res, err)) != GW_OK) {
             free(b);
             free(out->x);

@@ -145,6 +145,11 @@ int gw_layer_make_plan(const gw_layer_make_setup *given, gw_layer_params *lp_out
     if ((rc = gw_param_resolve(make_params, &r, err)) != GW_OK)
         return rc;
     const gw_layer_make_setup *s = &r;
+    /* aspect-max 1 draws one-disc grains (layer_clump_shape): the union of a
+     * clump is its disc, the same mass as the sum */
+    if (gw_param_given(gw_param_find(make_params, "clump-mass"), given) && s->aspect_max == 1)
+        return gw_err_set(err, GW_EINVAL, "clump-mass: has no effect with aspect-max 1 (one-disc grains: the sum "
+                          "and the union of a clump's discs are the same mass)");
     if (s->out && (rc = gw_layer_sample_out_check(s->out, "out", err)) != GW_OK)
         return rc; /* before the run: a result that cannot be written is not computed */
     gw_layer_params lp = gw_layer_params_default();

@@ -318,6 +318,17 @@ static int resolve(const gw_layer_impact_setup *s, const gw_layer_sample *smp, g
         return rc;
     if (s->clump_mass >= 0 && !smp->body)
         return gw_err_set(err, GW_EINVAL, "clump-mass: has no effect: the sample '%s' has no clumps", s->sample);
+    if (s->clump_mass >= 0) { /* clumps of one disc each: sum and union are the same mass */
+        int *members = calloc((size_t)smp->n, sizeof *members), shared = 0;
+        if (!members)
+            return gw_err_set(err, GW_ENOMEM, "layer-impact: out of memory");
+        for (int i = 0; i < smp->n && !shared; i++)
+            shared = ++members[smp->body[i]] > 1;
+        free(members);
+        if (!shared)
+            return gw_err_set(err, GW_EINVAL, "clump-mass: has no effect: every clump of the sample '%s' is one disc "
+                              "(the sum and the union of its discs are the same mass)", s->sample);
+    }
     if ((cv || ak) && s->dt > 0) /* the fixed step of verlet and rk4 (0: auto); cvode and arkode choose theirs */
         return gw_err_set(err, GW_EINVAL, "dt: has no effect with the %s solver (it chooses its steps from rtol "
                           "and atol; dt is the fixed step of verlet and rk4)", gw_solver_type_name(*type));

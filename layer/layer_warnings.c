@@ -1,9 +1,10 @@
 /*
  * layer_warnings.c: the warning texts of the layer's runs, each written once
  * (gw_common.h, "warnings of a result"): a pluviation that did not settle
- * (physics.md 2.2: E_k below the threshold, judged once the pile has landed)
- * and an impact whose outcome is undecided (2.3; the text is built where the
- * outcome is, layer_outcome.c, as the result's `undecided`). The program prints
+ * (physics.md 2.2: E_k below the threshold, judged once the pile has landed),
+ * a pluviation whose --height-rm took nothing away, and an impact whose
+ * outcome is undecided (2.3; the text is built where the outcome is,
+ * layer_outcome.c, as the result's `undecided`). The program prints
  * them as "granwave CMD: warning: TEXT", the Python module issues them as
  * GranwaveWarning, a C caller reads them from the outcome's `warnings`.
  * Parameters are named as the program's flags (--t-max). Units: s, J.
@@ -12,6 +13,15 @@
 
 int gw_layer_make_result_warnings(const gw_layer_make_result *r, double t_max, const char *out, char **list)
 {
+    if (r && r->untrimmed_top_rm > 0) { /* --height-rm asked a trim that took nothing away */
+        int rc = gw_warnings_add(list,
+                                 "--height-rm took nothing away: the settled pile's top lies at %.4g R_m, at or "
+                                 "below the height asked, so the sample is the whole pile, as with 0 (give a "
+                                 "height below the top to trim it)",
+                                 r->untrimmed_top_rm);
+        if (rc != GW_OK)
+            return rc;
+    }
     if (!r || r->converged)
         return GW_OK;
     const char *sep = out ? "; written to " : "", *path = out ? out : "", *end = out ? " with 'converged 0'" : "";

@@ -198,8 +198,8 @@ int gw_cmd_layer_make(int argc, char **argv)
         fprintf(stderr, "granwave layer-make --out: %s\n", err.msg);
         return 1;
     }
-    if (!r.converged) { /* written (its header says converged 0), but not a settled packing: one line */
-        char *w = NULL; /* the library's text (out of memory for it: no line) */
+    { /* written: a pile not settled (its header says converged 0), a trim that took nothing away */
+        char *w = NULL; /* the library's texts (out of memory for them: no line) */
         (void)gw_layer_make_result_warnings(&r, mp.t_max, out, &w);
         gw_cli_warnings("layer-make", w);
         free(w);

@@ -1220,6 +1220,29 @@ int gw_layer_sample_write(const gw_layer_sample *s, const char *path, const char
     return write_text(s, path, header, err);
 }
 
+/* 1 when the file is HDF5: its signature at offset 0 (pre, the first 8
+ * bytes) or, after a user block, at 512, 1024, 2048, ... (HDF5 looks there
+ * too; a valid sample written by h5py with userblock_size=512 was read as
+ * text and refused as "NUL byte"); *sb: the superblock version, the byte
+ * after the signature (-1: none). The stream is left at offset 8. */
+static int h5_signature_at(FILE *fp, const unsigned char pre[8], int *sb)
+{
+    if (memcmp(pre, h5_signature, 8) == 0) {
+        *sb = getc(fp);
+        return fseek(fp, 8, SEEK_SET) == 0;
+    }
+    int found = 0;
+    unsigned char b[9];
+    for (long off = 512; off <= (1L << 24) && !found; off *= 2) {
+        if (fseek(fp, off, SEEK_SET) != 0 || fread(b, 1, 8, fp) != 8)
+            break;
+        found = memcmp(b, h5_signature, 8) == 0;
+        if (found)
+            *sb = getc(fp);
+    }
+    return fseek(fp, 8, SEEK_SET) == 0 && found;
+}
+
 int gw_layer_sample_read(const char *path, gw_layer_sample *s, gw_err *err)
 {
     if (!s || !path)
@@ -1232,9 +1255,8 @@ int gw_layer_sample_read(const char *path, gw_layer_sample *s, gw_err *err)
     if (orc != GW_OK)
         return orc;
     t.npre = fread(t.pre, 1, sizeof t.pre, t.fp);
-    int rc;
-    if (t.npre == sizeof t.pre && memcmp(t.pre, h5_signature, sizeof t.pre) == 0) {
-        int sb = getc(t.fp);
+    int rc, sb = -1;
+    if (t.npre == sizeof t.pre && h5_signature_at(t.fp, t.pre, &sb)) {
         fclose(t.fp);
 #if GW_HAVE_HDF5
         rc = read_h5(path, sb, s, err);

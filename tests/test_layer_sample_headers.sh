@@ -14,9 +14,11 @@
 #    without a porosity line, HDF5, on the left after a shift);
 #  2 taken as before: the sample as written (text and HDF5), without its
 #    porosity line, with the porosity rounded to 4 decimals (the same impact
-#    numbers), and one disc in a box 30 times its size.
-# 13 of the 21 checks fail on the code before (the 8 that pass: part 2, and
-# the NaN porosity, refused before with another message).
+#    numbers), and one disc in a box 30 times its size; an HDF5 sample behind
+#    a 512-byte user block (h5py's userblock_size) runs as without it (it was
+#    read as text and refused: "line 1: NUL byte").
+# 14 of the 22 checks fail on the code before (the 8 that pass: part 2 but the
+# user block, and the NaN porosity, refused before with another message).
 # The HDF5 cases are skipped in a build without HDF5 or without h5py.
 set -u
 GW=$1
@@ -106,6 +108,14 @@ edit("wide.h5", lambda h: h.attrs.__setitem__("width", 6.0))
 def nopor(h):
     del h.attrs["porosity"]
 edit("nopor.h5", nopor)
+# the same sample behind a 512-byte user block (HDF5 finds its signature there)
+with h5py.File("s.h5", "r") as a, h5py.File("ub.h5", "w", libver="v108", userblock_size=512) as b:
+    for k, v in a.attrs.items():
+        b.attrs[k] = v
+    for k in a:
+        b.create_dataset(k, data=a[k][:])
+        for n, v in a[k].attrs.items():
+            b[k].attrs[n] = v
 EOF
     # shellcheck disable=SC2046
     {
@@ -136,6 +146,10 @@ if [ $h5 = 1 ]; then
     if runs_json "HDF5 without porosity" h5n.json layer-impact --sample nopor.h5 --t-max 0.002; then
         [ "$(num h5n.json)" = "$(num h5.json)" ] && ok "HDF5 without porosity: runs, the same numbers" ||
             ko "HDF5 without porosity: $(num h5n.json) against $(num h5.json)"
+    fi
+    if runs_json "HDF5 behind a user block" ub.json layer-impact --sample ub.h5 --t-max 0.002; then
+        [ "$(num ub.json)" = "$(num h5.json)" ] && ok "HDF5 behind a 512-byte user block: runs, the same numbers" ||
+            ko "HDF5 behind a user block: $(num ub.json) against $(num h5.json)"
     fi
 fi
 

@@ -266,8 +266,9 @@ typedef struct gw_layer_sample {
     double width;        /* box width, m */
     double rm;           /* mean radius R_m, m */
     double volume_ratio; /* largest / smallest particle volume */
-    double porosity;     /* as measured by layer-make */
-    long seed;
+    double porosity;     /* as measured by layer-make (gw_layer_sample_porosity);
+                            NaN: unknown (read from a file without it; not written) */
+    long seed;           /* the pluviation's seed, >= 0 (a record, not used by a run) */
     int mass_law;
     int clump_mass;      /* GW_LAYER_CLUMP_MASS_*, the law the clumps settled under */
     double *x, *y, *r;   /* [n], m; owned by the sample */
@@ -287,8 +288,8 @@ void gw_layer_sample_free(gw_layer_sample *s);
  *   width W          (m, > 0; required)
  *   rm R             (m, > 0; required)
  *   volume_ratio V   (>= 1; 0 when absent = unknown)
- *   porosity P       (in [0, 1])
- *   seed S           (integer)
+ *   porosity P       (in [0, 1], within 2e-3 of the particles' own; optional)
+ *   seed S           (integer >= 0)
  *   mass_law disc|sphere   [disc]
  *   clump_mass sum|union   [sum; optional, written only for union]
  *   n N              (integer in [1, 1e7]; last header line)
@@ -313,8 +314,10 @@ void gw_layer_sample_free(gw_layer_sample *s);
  * Read: the format is told by content (HDF5 signature), not by name. Every field
  * is checked the same way in both formats: finite, r > 0, inside the box
  * (0 <= x <= width, y >= 0, up to 0.02 r), n within limits and matching the
- * data. GW_EFORMAT (GW_EIO: unreadable; GW_EUNSUPPORTED: HDF5 file in a build
- * without HDF5) with a message naming the file and the line or particle; s is
+ * data, and a header that is the particles' (the grading of rm and
+ * volume_ratio, a width the packing fills when it is more than one particle
+ * high, a porosity within 2e-3 of gw_layer_sample_porosity's). GW_EFORMAT
+ * (GW_EIO: unreadable; GW_EUNSUPPORTED: HDF5 file in a build without HDF5) with a message naming the file and the line or particle; s is
  * then empty (safe to free). HDF5 files are opened only in the 1.8 format or
  * later (metadata checksums; libhdf5 can crash on corrupt files without them).
  * HDF5's own error printing is silenced during both calls (under the

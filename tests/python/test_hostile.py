@@ -73,7 +73,7 @@ def test_chain_speeds_below_a_nanometre_per_second_are_refused():
 def _lattice_sample(path, ncol=25, nrow=200, r=0.325):
     """A square lattice of equal discs 1 mm apart resting on the floor."""
     d = 2 * r + 1e-3
-    rows = ["granwave-layer-sample 1", f"width {ncol * d!r}", f"rm {r!r}", "volume_ratio 1", "porosity 0.2",
+    rows = ["granwave-layer-sample 1", f"width {ncol * d!r}", f"rm {r!r}", "volume_ratio 1",
             "seed 1", "mass_law disc", f"n {ncol * nrow}"]
     rows += [f"{d / 2 + i * d!r} {r + 5e-4 + j * d!r} {r!r}" for j in range(nrow) for i in range(ncol)]
     path.write_text("\n".join(rows) + "\n")

@@ -220,10 +220,11 @@ int gw_cmd_falcon(int argc, char **argv)
         free(vv);
         return chain_cli_fail_rc(prc, err.msg);
     }
-    if (gw_chain_falcon_sizes_check(a, b, &err) != GW_OK || gw_chain_study_work_check(a, b, nvv + nhh, &err) != GW_OK) {
+    if ((prc = gw_chain_falcon_sizes_check(a, b, &err)) != GW_OK ||
+        (prc = gw_chain_study_work_check(a, b, nvv + nhh, &err)) != GW_OK) {
         free(vv);
         free(hh);
-        return chain_cli_study_fail("falcon", err.msg);
+        return chain_cli_study_fail("falcon", prc, err.msg);
     }
     f.n_lo = (int)a;
     f.n_hi = (int)b;
@@ -241,8 +242,8 @@ int gw_cmd_falcon(int argc, char **argv)
         code = chain_cli_fail_rc(GW_ENOMEM, "falcon: out of memory");
         goto out;
     }
-    if (gw_chain_falcon_speeds(vv, nvv, hh, nhh, f.c.gravity, v, NULL, &err) != GW_OK) {
-        code = chain_cli_study_fail("falcon", err.msg);
+    if ((rc0 = gw_chain_falcon_speeds(vv, nvv, hh, nhh, f.c.gravity, v, NULL, &err)) != GW_OK) {
+        code = chain_cli_study_fail("falcon", rc0, err.msg);
         goto out;
     }
     f.c.params.n = f.n_lo;

@@ -332,16 +332,22 @@ int chain_cli_fail(const char *msg)
     return 2;
 }
 
-int chain_cli_fail_rc(int rc, const char *msg)
+/* exit 1 for a run's failure (a solver, a limit, the energy monitor, memory), else 2 */
+static int fail_status(int rc)
 {
-    fprintf(stderr, "granwave %s\n", msg);
     return rc == GW_ESOLVER || rc == GW_ELIMIT || rc == GW_EENERGY || rc == GW_ENOMEM ? 1 : 2;
 }
 
-int chain_cli_study_fail(const char *cmd, const char *msg)
+int chain_cli_fail_rc(int rc, const char *msg)
+{
+    fprintf(stderr, "granwave %s\n", msg);
+    return fail_status(rc);
+}
+
+int chain_cli_study_fail(const char *cmd, int rc, const char *msg)
 {
     fprintf(stderr, "granwave %s --%s\n", cmd, msg);
-    return 2;
+    return fail_status(rc);
 }
 
 int chain_cli_parse(const char *cmd, const char *usage, const char *summary, gw_opt *opts,

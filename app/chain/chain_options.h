@@ -94,7 +94,9 @@ int chain_cli_fail(const char *msg);
  * a limit, the energy monitor, memory: the restitution calibration's one-bead
  * collisions), else 2. */
 int chain_cli_fail_rc(int rc, const char *msg);
-/* The same for a library message "ROW: reason": "granwave CMD --ROW: reason". */
-int chain_cli_study_fail(const char *cmd, const char *msg);
+/* The same for a library message "ROW: reason" of status rc: "granwave CMD
+ * --ROW: reason", exit 1 for memory (the check's own allocation) and the
+ * run's failures, else 2. */
+int chain_cli_study_fail(const char *cmd, int rc, const char *msg);
 
 #endif

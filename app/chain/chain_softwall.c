@@ -107,8 +107,9 @@ int gw_cmd_softwall(int argc, char **argv)
         return chain_cli_fail(err.msg);
     if (b - a < 2)
         return chain_cli_fail("softwall --n: need at least 3 column sizes");
-    if (gw_chain_study_work_check(a, b, use_sheets ? gw_sheet_count() : 1, &err) != GW_OK)
-        return chain_cli_study_fail("softwall", err.msg);
+    int src = gw_chain_study_work_check(a, b, use_sheets ? gw_sheet_count() : 1, &err);
+    if (src != GW_OK)
+        return chain_cli_study_fail("softwall", src, err.msg);
     c.params.n = (int)a;
     c.params.v_imp = vimp;
     char made[4096] = ""; /* what --out this run creates, taken back on a refusal */

@@ -67,9 +67,10 @@ int gw_cmd_wavespeed(int argc, char **argv)
         free(v);
         return chain_cli_fail("wavespeed --n: need at least 3 sizes and a largest column of >= 8 beads");
     }
-    if (gw_chain_study_speeds_check(v, nv, nv, &err) != GW_OK || gw_chain_study_work_check(a, b, nv, &err) != GW_OK) {
+    if ((prc = gw_chain_study_speeds_check(v, nv, nv, &err)) != GW_OK ||
+        (prc = gw_chain_study_work_check(a, b, nv, &err)) != GW_OK) {
         free(v);
-        return chain_cli_study_fail("wavespeed", err.msg);
+        return chain_cli_study_fail("wavespeed", prc, err.msg);
     }
     c.params.n = (int)b;
     c.params.v_imp = v[0];

@@ -129,7 +129,7 @@ int chain_ring_check(const gw_chain_params *p, const gw_solver_type *type, const
 int chain_held_check(const gw_chain_params *p, double t_max, double t_col, double tau1, double dt_out, gw_err *err);
 
 /* Samples over the collision's expected length t_expect at dt_out: more than
- * 1e6 and more than 1e4 per bead transit (2n + 1 over the collision) is
+ * 3e6 and more than 1e4 per bead transit (2n + 1 over the collision) is
  * GW_EINVAL naming dt-out (given: 1 when the caller chose it, 0 for the
  * default tau_1/200) and the interval that passes (chain_collide.c). */
 int chain_sampling_check(int n, double t_expect, double dt_out, int given, gw_err *err);

@@ -3,13 +3,13 @@
 # of bead 1 on the wall; a wall far stiffer than the bead contacts makes that
 # tiny against the column's own length, and every sample costs a fixed part
 # (about 0.6 us) besides its O(n). The plan bounds the samples over the
-# collision before the run (issue 18, unbounded work): more than 1e6 and more
+# collision before the run (issue 18, unbounded work): more than 3e6 and more
 # than 1e4 per bead transit is refused, naming dt-out and the interval that
 # passes.
 #   - chain --n 2 --k 1e3 --kwall 1e14 (dt-out 4.4 ns over a 28 ms collision,
 #     6.4e6 samples, over a minute of CPU before) exits 2 at once with one line
 #     naming --dt-out as the default, nothing written with --out; an explicit
-#     --dt-out 1e-10 on 10 steel beads is refused naming the value;
+#     --dt-out 5e-11 on 10 steel beads is refused naming the value;
 #   - the suggested dt-out runs to its end (converged, 14.5 ms, 0.4 s), and
 #     F_max and tau_N (events, not samples) are the same at twice that
 #     interval to 1e-8 (tau_max not: bead 1's two wall contacts peak at the
@@ -26,8 +26,8 @@ REFUSE_TIMEOUT=5
 refused "chain --n 2 --k 1e3 --kwall 1e14 (default dt-out)" \
     "^granwave chain --dt-out: the default tau_1/200 = 4.3[0-9]*e-09 s gives about 6.[0-9]*e\+06 samples over the collision .* raise dt-out to [0-9.e+-]+ s or more \(the wall's contact is far shorter" \
     chain --n 2 --k 1e3 --kwall 1e14 --out "$tmp/o"
-refused "chain --n 10 --dt-out 1e-10" "^granwave chain --dt-out: 1e-10 s gives about .* per bead transit of 10 beads" \
-    chain --n 10 --dt-out 1e-10 --out "$tmp/o"
+refused "chain --n 10 --dt-out 5e-11" "^granwave chain --dt-out: 5e-11 s gives about .* per bead transit of 10 beads" \
+    chain --n 10 --dt-out 5e-11 --out "$tmp/o"
 printf '[sweep]\nmodel = chain\n[grid]\nvimp = 0.3\n[params]\nn = 2\nk = 1e3\nkwall = 1e14\n' >"$tmp/s.ini"
 refused "a chain sweep's case with k = 1e3, kwall = 1e14 (before OUT is made)" \
     "^granwave sweep: .*s.ini: case 0: dt-out: the default" sweep "$tmp/s.ini" --out "$tmp/o"

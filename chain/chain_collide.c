@@ -618,6 +618,78 @@ int chain_ring_check(const gw_chain_params *p, const gw_solver_type *type, const
                       work, gw_solver_type_name(type), per_osc, RING_WORK_MAX);
 }
 
+/* A column that gravity holds on the wall: when gravity takes back the impact
+ * speed within the collision's expected length (g t_e > v_imp), the beads
+ * leaving the wall fall back before the column has separated, and the run goes
+ * on to t_max with bead 1 bouncing on the wall and the top contacts chattering,
+ * cvode restarting at each of their events. Measured (steel, cvode at 1e-12,
+ * default t-max and dt-out): the collision ended at g t_e / v_imp = 0.009 to
+ * 0.15 (n = 10, 40; g = 9.81, 100; v_imp 0.3 to 0.03) and never at 0.35 and
+ * above. The cost of such a run is its samples and steps, each O(n): 0.4 to
+ * 1.6 us a bead-sample at the default sampling tau_1/200 (steps 1 to 3.4 per
+ * sample: n = 300, g = 100, v_imp = 1e-3 ran 16715 steps and 17189 samples in
+ * 1.9 s up to t = 3e-3 s, about 100 s to its default t-max of 0.152 s; n = 40,
+ * g = 100, v_imp = 1e-3 407013 steps, 126228 samples, 8 s). The steps follow
+ * the contacts, not the sampling: the estimate counts samples at the finer of
+ * dt-out and tau_1/200, times the beads, over t_max, bounded at 1e7 (about 4
+ * to 16 s) whatever t_max was given. */
+#define HELD_WORK_MAX 1e7
+
+/* The longest t_max the bound admits for a held column (INFINITY when gravity
+ * does not hold it), rounded down to two digits. */
+static double held_t_lim(const gw_chain_params *p, double t_col, double tau1, double dt_out)
+{
+    if (!(p->gravity > 0) || !(p->gravity * t_col > p->v_imp))
+        return INFINITY;
+    return floor_2digits(HELD_WORK_MAX / p->n * fmin(dt_out, tau1 / 200.0));
+}
+
+int chain_held_check(const gw_chain_params *p, double t_max, double t_col, double tau1, double dt_out, gw_err *err)
+{
+    if (!isfinite(held_t_lim(p, t_col, tau1, dt_out)))
+        return GW_OK;
+    const double dt = fmin(dt_out, tau1 / 200.0), samples = t_max / dt, work = p->n * samples;
+    if (!(work > HELD_WORK_MAX))
+        return GW_OK;
+    return gw_err_set(err, GW_EINVAL,
+                      "gravity: %g m/s^2 takes back the impact speed (vimp %g m/s) in %.3g s, within the collision's "
+                      "expected %.3g s: the column stays on the wall, bouncing on it, and the run goes on to t-max "
+                      "%.3g s, about %.3g samples of %.3g s times %d beads, above the bound %.0e (about 15 s): lower "
+                      "t-max to %g s or less, raise vimp or lower gravity",
+                      p->gravity, p->v_imp, p->v_imp / p->gravity, t_col, t_max, samples, dt, p->n, HELD_WORK_MAX,
+                      held_t_lim(p, t_col, tau1, dt_out));
+}
+
+/* Every sample costs a fixed part (the drive's stop, the root functions, the
+ * observation) besides its O(n): about 0.6 us at n = 2. The default dt-out,
+ * tau_1/200 of bead 1 on the wall, gives about 185 samples per bead transit of
+ * an ordinary column (200 over the wall contact, 2n + 1 transits of 2 T_c);
+ * a wall far stiffer than the bead contacts makes tau_1 tiny against the
+ * column's own length (--n 2 --k 1e3 --kwall 1e14: tau_1 = 0.87 us over a
+ * collision of 28 ms, dt-out 4.4 ns, 6.4e6 samples). Sampling finer than 1e4
+ * a bead transit and more than 3e6 samples over the collision (about 2 s at
+ * n = 2; rk4 on --radii 1e-3,1, 1.8e6 samples, ran in 1.6 s) is refused, naming dt-out and the interval that passes; the large
+ * counts of long columns (200 + 370 n at the defaults) come from their length,
+ * not their sampling, and stay bounded by the plan's 1e9. */
+#define SAMPLING_MAX 3e6
+#define SAMPLING_PER_TRANSIT_MAX 1e4
+
+int chain_sampling_check(int n, double t_expect, double dt_out, int given, gw_err *err)
+{
+    const double samples = t_expect / dt_out, transits = 2.0 * n + 1;
+    if (!(samples > SAMPLING_MAX) || !(samples / transits > SAMPLING_PER_TRANSIT_MAX))
+        return GW_OK;
+    /* the interval that passes, rounded up to two digits */
+    const double lim = t_expect / fmax(SAMPLING_MAX, SAMPLING_PER_TRANSIT_MAX * transits),
+                 q = pow(10, floor(log10(lim)) - 1);
+    return gw_err_set(err, GW_EINVAL,
+                      "dt-out: %s%g s gives about %.3g samples over the collision (about %.3g s), %.3g per bead "
+                      "transit of %d beads; at most %.0e when above %.0e a transit: raise dt-out to %.2g s or more%s",
+                      given ? "" : "the default tau_1/200 = ", dt_out, samples, t_expect, samples / transits, n,
+                      SAMPLING_MAX, SAMPLING_PER_TRANSIT_MAX, ceil(lim / q) * q,
+                      given ? "" : " (the wall's contact is far shorter than the column's: a stiff wall on soft contacts)");
+}
+
 static int collide_plan_make(const gw_chain_params *p0, const gw_chain_run_opts *o, collide_plan *pl, gw_err *err)
 {
     gw_chain_params q = *p0; /* the time scales at chain_speed_scale; p0 itself for the rest */
@@ -691,6 +763,10 @@ static int collide_plan_make(const gw_chain_params *p0, const gw_chain_run_opts 
     if (o->sample == gw_chain_trace_sample &&
         (rc = gw_chain_trace_check(n, pl->t_expect, pl->dt_out, 4.0 * n + 2, err)) != GW_OK)
         return rc;
+    /* sampling far finer than the column's own scale (chain_sampling_check;
+     * after the stored trace's bound, which names what --out would write) */
+    if ((rc = chain_sampling_check(n, pl->t_expect, pl->dt_out, o->dt_out > 0, err)) != GW_OK)
+        return rc;
     /* A run that does not end (a column held on the wall by gravity and damping,
      * a sensor body still ringing) goes on to t_max: the bounds above hold over
      * the expected collision, an explicit --t-max far beyond it must meet them too
@@ -702,7 +778,10 @@ static int collide_plan_make(const gw_chain_params *p0, const gw_chain_run_opts 
             return gw_err_set(err, GW_EINVAL, "t-max: %g s would take about %.3g steps of %g s and %.3g samples "
                               "of %g s if the collision has not ended by then; at most 1e+08 steps and 1e+09 samples: "
                               "lower t-max to %g s or less", pl->t_max, pl->t_max / step, step,
-                              pl->t_max / pl->dt_out, pl->dt_out, floor_2digits(t_lim));
+                              pl->t_max / pl->dt_out, pl->dt_out,
+                              /* one that passes the held column's bound too (chain_held_check) */
+                              fmin(floor_2digits(t_lim), held_t_lim(p0, n * 2.0 * tc_col + tau1_col, pl->tau1,
+                                                                    pl->dt_out)));
         if ((rc = chain_sensor_steps_check(p, pl->type, pl->t_max, "t-max", err)) != GW_OK)
             return rc;
         if (o->sample == gw_chain_trace_sample) {
@@ -713,6 +792,9 @@ static int collide_plan_make(const gw_chain_params *p0, const gw_chain_run_opts 
                                   "t-max or raise dt-out", pl->t_max, pl->t_max / pl->dt_out + 1, n);
         }
     }
+    /* A column that gravity holds on the wall runs to t_max (chain_held_check) */
+    if ((rc = chain_held_check(p0, pl->t_max, n * 2.0 * tc_col + tau1_col, pl->tau1, pl->dt_out, err)) != GW_OK)
+        return rc;
     return GW_OK;
 }
 

@@ -121,6 +121,19 @@ double chain_ring_period(const gw_chain_params *p, int *fastest);
 int chain_ring_check(const gw_chain_params *p, const gw_solver_type *type, const gw_solver_params *sp,
                      double t_len, const char *over, gw_err *err);
 
+/* A column that gravity holds on the wall (g t_col > v_imp: gravity takes back
+ * the impact speed within the collision's expected length t_col) bounces on it
+ * until t_max: its samples at the finer of dt_out and tau1/200 over t_max,
+ * times the beads, at most 1e7 (chain_collide.c); GW_EINVAL naming gravity,
+ * vimp and t-max otherwise. Called by the collision's plan. */
+int chain_held_check(const gw_chain_params *p, double t_max, double t_col, double tau1, double dt_out, gw_err *err);
+
+/* Samples over the collision's expected length t_expect at dt_out: more than
+ * 3e6 and more than 1e4 per bead transit (2n + 1 over the collision) is
+ * GW_EINVAL naming dt-out (given: 1 when the caller chose it, 0 for the
+ * default tau_1/200) and the interval that passes (chain_collide.c). */
+int chain_sampling_check(int n, double t_expect, double dt_out, int given, gw_err *err);
+
 /* The run's steps bounded before it starts (chain_collide.c): the RK4 step
  * (the smaller of dt and dt_max), or cvode's and arkode's largest step dt_max,
  * may need at most 1e8 steps over t_len seconds; GW_EINVAL naming dt or

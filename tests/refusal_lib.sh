@@ -8,6 +8,8 @@
 #   stdout and nothing at $tmp/o (the --out the cases name).
 #   runs_json WHAT FILE CMD...: exit 0 within 60 s, the JSON in FILE.
 #   jq_py FILE EXPR: EXPR over the JSON d of FILE, printed (Debian's python3).
+#   py_checks: the Python script on stdin run against this build's module and
+#   library, each line it prints "PASS: ..." or "FAIL: ..." counted as a check.
 fails=0; passes=0
 ok() { echo "PASS: $1"; passes=$((passes+1)); }
 ko() { echo "FAIL: $1"; fails=$((fails+1)); }
@@ -34,3 +36,11 @@ runs_json() {
     return 0
 }
 jq_py() { /usr/bin/python3 -c "import json,sys; d=json.load(open('$1')); print($2)"; }
+
+py_checks() {
+    PYTHONPATH="$SRC/python" GRANWAVE_LIB="$(dirname "$GW")/lib" /usr/bin/python3 - >"$tmp/py.out" 2>&1
+    local line
+    while read -r line; do
+        case $line in PASS:*) ok "${line#PASS: }" ;; FAIL:*) ko "${line#FAIL: }" ;; *) echo "$line" ;; esac
+    done <"$tmp/py.out"
+}

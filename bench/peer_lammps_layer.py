@@ -58,9 +58,10 @@ under it, velocity V_i (sin alpha, -cos alpha), no spin. Outcome as granwave
 computes it, from samples every dt_out = 2e-5 s: bounced when v_y > 0 while the
 block has no contact (LAMMPS compute contact/atom: disc contacts only; the block
 never reaches a wall here), e_n = largest upward v_y / (V_i cos alpha),
-penetration = y_0 - min y; without --full the outcome stops at the first
-sample after the largest upward velocity with the block free (granwave's
-stopping rule). The LAMMPS run itself lasts --t-end (take granwave's JSON
+penetration = y_0 - min y; the outcome stops at the first sample after the
+largest upward velocity with the block free (granwave's stopping rule); --full
+runs on to --t-end for the penetration and adds e_n_run_max, the run's largest
+upward v_y over V_i cos alpha (later hops included). The LAMMPS run itself lasts --t-end (take granwave's JSON
 t_end so that both simulate the same span).
 
 Modes:
@@ -376,22 +377,31 @@ def impact(a, work):
     ran = [int(v) for v in re.findall(r"Loop time of [0-9.eE+-]+ on \d+ procs for (\d+) steps", screen)]
     rows = read_trace(trace)
     v_ni = a.vi * math.cos(al)
+    # The outcome by granwave's rule with or without --full (granwave's --full runs on
+    # for the crowns but keeps the outcome it decided): the largest upward v_y up to the
+    # first sample after it with the block free. With --full the run's largest upward v_y
+    # (later hops, kicks from ejected grains, in contact or not) is reported beside it.
     ymin, vmax_up, t_reb, bounced, t_stop = yb, 0.0, float("nan"), False, rows[-1][0] if rows else 0.0
+    decided, vmax_run = False, 0.0
     for t, x, y, bvx, bvy, cc in rows[1:]:
         ymin = min(ymin, y)
-        if bvy > 0:
+        vmax_run = max(vmax_run, bvy)
+        if bvy > 0 and not decided:
             free = cc == 0
             bounced |= free
             if bvy > vmax_up:
                 vmax_up, t_reb = bvy, t
-            elif not a.full and free:
-                t_stop = t
-                break
+            elif free:
+                t_stop, decided = t, True
+                if not a.full:
+                    break
     out = {"peer": "lammps", "bounced": bool(bounced), "e_n": vmax_up / v_ni, "t_rebound": t_reb,
            "penetration": yb - ymin, "t_end_run": rows[-1][0] if rows else 0.0, "t_outcome_end": t_stop,
            "steps": steps, "steps_settle": sum(ran[1:]), "discs": nb, "loop_time_s": loops[0] if loops else loop,
            "loop_time_settle_s": sum(loops[1:]), "dt": a.dt, "mass_law": mass_law,
            "e_pair": mat.e_pair, "e_wall": mat.e_wall}
+    if a.full:
+        out["e_n_run_max"] = vmax_run / v_ni
     if a.series:
         with open(a.series, "w") as f:
             f.write("t,x,y,vx,vy,contacts\n")

@@ -454,8 +454,8 @@ int layer_clump_key_cmp(const void *pa, const void *pb);
 int layer_members_connected(const double *x, const double *y, const double *r, int *m, int k,
                             int *stack);
 
-/* The checks a sample read from a file passes (check_sample and
- * layer_overlaps_check of layer_sample.c): GW_EFORMAT with a message starting
+/* The checks a sample read from a file passes (layer_sample_check of
+ * layer_sample_check.c and layer_overlaps_check): GW_EFORMAT with a message starting
  * "sample 'WHAT'" when s would be refused on reading. */
 int layer_sample_readable(const gw_layer_sample *s, const char *what, gw_err *err);
 

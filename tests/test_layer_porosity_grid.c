@@ -1,5 +1,5 @@
 /*
- * test_layer_porosity_grid.c: gw_layer_sample_porosity (layer_sample.c) marks,
+ * test_layer_porosity_grid.c: gw_layer_sample_porosity (layer_sample_porosity.c) marks,
  * row by row, the run of grid points each disc covers, found from sqrt's
  * estimate and set at its ends by the point test itself. It must give the
  * porosity of testing every grid point of each disc's bounding box (the

@@ -315,20 +315,19 @@ static int check_box(const gw_layer_sample *s, const body_scan *b, const char *p
  * own: the header records the porosity layer-make measured with
  * gw_layer_sample_porosity on the particles and box it wrote, so a granwave
  * sample matches it to the bit. The tolerance, 2e-3, takes that value rounded
- * to 4 decimals (layer-make's stdout: 5e-5) and a finer measurement of a
- * random packing over the same window (the 600 x 600 grid differs from a
- * 4800 x 4800 one by at most 5.4e-4 over 23 samples, the stored ones and
- * layer-make's of 5 to 300 particles). A regular lattice whose particles
- * span fewer than about 20 grid cells aliases on the grid beyond it (8.7e-3
- * at 10 cells a diameter): a hand-made sample may leave porosity out. A header
- * porosity of other particles or of another box (0.2 for layer-make's
- * 0.19558, a width widened) is refused. */
+ * to 4 decimals (layer-make's stdout: 5e-5) and the samples written before
+ * the porosity was the exact area (a 600 x 600 grid until session 21: within
+ * 2.9e-4 of the exact value on the 7 stored samples, 5.4e-4 of a 4800 x 4800
+ * grid over 23 samples). Since it is exact, a regular lattice reads its own
+ * porosity (the grid aliased on them). A header porosity of other particles
+ * or of another box (0.2 for layer-make's 0.19562, a width widened) is
+ * refused. */
 static int check_porosity(const gw_layer_sample *s, const char *path, const hdr_src *src, int status, gw_err *err)
 {
     if (isnan(s->porosity))
         return GW_OK;
     const double tol = 2e-3, p = gw_layer_sample_porosity(s);
-    if (isnan(p)) /* the grid's allocation failed: the window is never empty here */
+    if (isnan(p)) /* an allocation failed: the window is never empty here */
         return gw_err_set(err, GW_ENOMEM, "sample '%s': out of memory measuring its porosity", path);
     if (fabs(p - s->porosity) <= tol)
         return GW_OK;

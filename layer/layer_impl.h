@@ -459,6 +459,14 @@ int layer_members_connected(const double *x, const double *y, const double *r, i
  * "sample 'WHAT'" when s would be refused on reading. */
 int layer_sample_readable(const gw_layer_sample *s, const char *what, gw_err *err);
 
+/* gw_layer_impact_setup_check with the sample s->sample names already read
+ * (and checked) into smp by gw_layer_sample_read: the rows and the resolution
+ * against smp, for the sweep's check pass, which checks many setups of one
+ * sample file (layer_setup.c; smp is only read). */
+struct gw_layer_impact_setup;
+int layer_impact_setup_check_sample(const struct gw_layer_impact_setup *s, const gw_layer_sample *smp,
+                                    gw_err *err);
+
 /* A uniform grid of square cells over n points (px[i stride], py[i stride]),
  * of side h or coarser (doubled until there are at most 16 n + 64 cells, so
  * that a far point does not blow it up); cell k holds the points

@@ -406,7 +406,11 @@ int gw_layer_make(const gw_layer_params *lp, const gw_layer_make_params *mp,
 int gw_layer_make_result_warnings(const gw_layer_make_result *r, double t_max, const char *out, char **list);
 
 /* Porosity of the sample in the window x in [0.1, 0.9] W, y in [0.1, 0.8] h,
- * with h = max(y + r), by sampling on a 600 x 600 grid. */
+ * with h = max(y + r): 1 - (area of the union of the discs in the window) /
+ * (window area), the area exact up to rounding (Green's theorem on the
+ * union's boundary; before session 21 a 600 x 600 sampling grid, which
+ * aliased on lattices). In [0, 1]; NaN when the window is empty (width or h
+ * not positive and finite) or an allocation fails. */
 double gw_layer_sample_porosity(const gw_layer_sample *s);
 
 /* --------------------------------------------------------------- impact ---- */

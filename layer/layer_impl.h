@@ -454,10 +454,18 @@ int layer_clump_key_cmp(const void *pa, const void *pb);
 int layer_members_connected(const double *x, const double *y, const double *r, int *m, int k,
                             int *stack);
 
-/* The checks a sample read from a file passes (check_sample and
- * layer_overlaps_check of layer_sample.c): GW_EFORMAT with a message starting
+/* The checks a sample read from a file passes (layer_sample_check of
+ * layer_sample_check.c and layer_overlaps_check): GW_EFORMAT with a message starting
  * "sample 'WHAT'" when s would be refused on reading. */
 int layer_sample_readable(const gw_layer_sample *s, const char *what, gw_err *err);
+
+/* gw_layer_impact_setup_check with the sample s->sample names already read
+ * (and checked) into smp by gw_layer_sample_read: the rows and the resolution
+ * against smp, for the sweep's check pass, which checks many setups of one
+ * sample file (layer_setup.c; smp is only read). */
+struct gw_layer_impact_setup;
+int layer_impact_setup_check_sample(const struct gw_layer_impact_setup *s, const gw_layer_sample *smp,
+                                    gw_err *err);
 
 /* A uniform grid of square cells over n points (px[i stride], py[i stride]),
  * of side h or coarser (doubled until there are at most 16 n + 64 cells, so

@@ -13,6 +13,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "layer_impl.h"
 #include "layer_setup_rows.h"
 #include "gw_locale.h"
 
@@ -381,6 +382,22 @@ void gw_layer_impact_plan_free(gw_layer_impact_plan *p)
     if (!p)
         return;
     gw_layer_sample_free(&p->sample);
+}
+
+int layer_impact_setup_check_sample(const gw_layer_impact_setup *s, const gw_layer_sample *smp, gw_err *err)
+{
+    if (!s || !smp)
+        return gw_err_set(err, GW_EINVAL, "layer_impact_setup_check_sample: %s is NULL", !s ? "s" : "smp");
+    int rc = gw_param_check(impact_params, s, err);
+    if (rc != GW_OK)
+        return rc;
+    if (!s->sample)
+        return gw_err_set(err, GW_EINVAL, "sample: a sample file (from layer-make) is required");
+    gw_layer_params lp;
+    gw_layer_impact_params ip;
+    const gw_solver_type *type;
+    gw_solver_params sp;
+    return resolve(s, smp, &lp, &ip, &type, &sp, err);
 }
 
 int gw_layer_impact_setup_check(const gw_layer_impact_setup *s, gw_err *err)

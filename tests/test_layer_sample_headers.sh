@@ -2,7 +2,7 @@
 # test_layer_sample_headers.sh GRANWAVE SRCDIR: a sample's porosity, seed and
 # width headers against its particles (docs/formats.md, "Sample files";
 # issue 18). Before, the reader compared none of them with anything: a
-# layer-make sample with `porosity 0.2` (its discs give 0.19558), `seed -1`, or
+# layer-make sample with `porosity 0.2` (its discs give 0.19562), `seed -1`, or
 # `width` widened from 3.9 to 6 m ran with exit 0, the last with the block
 # dropped 1.05 m off the packing's centre. Checked:
 #  1 refused by layer-impact (exit 2, one line naming the sample, the line or
@@ -51,8 +51,8 @@ sed 's/^rm .*/rm 0.5/' c.txt >crm.txt
 imp() { echo layer-impact --sample "$1" --t-max 0.002 --out "$tmp/o"; }
 # shellcheck disable=SC2046
 {
-refused "porosity 0.2 over discs giving 0.19558" \
-    "sample 'por.txt': line [0-9]+: header 'porosity': 0.2, but its particles and width give 0.19558" $(imp por.txt)
+refused "porosity 0.2 over discs giving 0.19562" \
+    "sample 'por.txt': line [0-9]+: header 'porosity': 0.2, but its particles and width give 0.19562" $(imp por.txt)
 refused "seed -1" "sample 'seed.txt': line [0-9]+: seed '-1' is not an integer >= 0" $(imp seed.txt)
 refused "width widened from 3.9 to 6 m" \
     "sample 'wide.txt': line [0-9]+: header 'width': 6 m leaves 2.[01][0-9]* m between the right wall" $(imp wide.txt)

@@ -35,7 +35,8 @@ if [ -f "$SRC/layer/layer_sample.c" ]; then
             echo "NOTE: no pkg-config flags for HDF5: fuzz_layer_sample built text-only"; H5=""; }
     fi
     clang -I"$GEN" -I"$SRC/layer" $CF -o "$out/fuzz_layer_sample" "$SRC/tests/fuzz/fuzz_layer_sample.c" \
-        "$SRC/layer/layer_sample.c" "$SRC/layer/layer_clump_check.c" "$SRC/common/gw_h5.c" "$SRC/common/gw_forklock.c" \
+        "$SRC/layer/layer_sample.c" "$SRC/layer/layer_sample_check.c" "$SRC/layer/layer_sample_h5.c" \
+        "$SRC/layer/layer_sample_porosity.c" "$SRC/layer/layer_clump_check.c" "$SRC/common/gw_h5.c" "$SRC/common/gw_forklock.c" \
         $common $H5 -lcjson -lm
     targets="sweep_config cli sweep_journal stats_table layer_sample"
 else
@@ -55,7 +56,7 @@ else
     echo "NOTE: fuzz_params skipped (no libgranwave.so in $B/lib, or a sanitizer build)"
 fi
 # libhdf5 1.10 loses a block when a metadata checksum fails (a leak inside the
-# library, see read_h5 in layer/layer_sample.c): not ours to fix, so leaks
+# library, see layer_sample_h5_read in layer/layer_sample_h5.c): not ours to fix, so leaks
 # whose allocation stack passes through libhdf5 are suppressed; leaks of our own
 # allocations are still fatal.
 echo "leak:libhdf5" >"$out/lsan.supp"

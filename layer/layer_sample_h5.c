@@ -1,0 +1,454 @@
+/*
+ * layer_sample_h5.c: the HDF5 layer samples (docs/physics.md 2.2; format in
+ * gw_layer.h), when granwave is built with HDF5: datasets x, y, r [n] (m),
+ * body [n] for clump samples, and the header as attributes of the root group,
+ * written atomically (gw_afile) and read back with the checks of
+ * layer_sample_check.c, the same as a text sample's. Only files with metadata
+ * checksums (superblock version 2 or later) are opened, and HDF5's own error
+ * printing is replaced by a recorded message (gw_err).
+ * Units: SI (m); the file's and each coordinate dataset's units attribute say
+ * so, and a reader refuses others.
+ */
+#include "layer_sample_impl.h"
+#if GW_HAVE_HDF5
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <hdf5.h>
+#include "gw_h5.h"
+#include "gw_locale.h"
+
+/* the units attributes of an HDF5 sample: the file's, and each coordinate
+ * dataset's (x, y, r); a reader refuses others (h5_units_check) */
+#define SAMPLE_H5_UNITS "SI: x, y, r, width, rm in metres"
+#define SAMPLE_H5_COLUMN_UNITS "m"
+
+/* HDF5 prints its error stack by default. While granwave calls it (a
+ * gw_h5_section, gw_h5.h), a handler records the most specific message of the
+ * first failure instead (for gw_err). */
+typedef struct h5_quiet {
+    char why[160];
+    int nomem; /* a failed allocation in HDF5: "out of memory" */
+} h5_quiet;
+
+static herr_t h5_innermost(unsigned k, const H5E_error2_t *e, void *ctx)
+{
+    char *why = ctx;
+    if (k == 0 && e->desc) {
+        gw_snprintf(why, 160, "%s", e->desc);
+        for (char *p = why; *p; p++)
+            if (*p == '\n' || *p == '\r')
+                *p = ' ';
+    }
+    return 0;
+}
+
+static herr_t h5_record(hid_t stack, void *ctx)
+{
+    h5_quiet *q = ctx;
+    char *why = q->why;
+    if (gw_h5_stack_nomem(stack))
+        q->nomem = 1;
+    if (!why[0])
+        H5Ewalk2(stack, H5E_WALK_UPWARD, h5_innermost, why);
+    if (!why[0])
+        gw_snprintf(why, 160, "HDF5 call failed");
+    return 0;
+}
+
+/* A section of HDF5 calls with h5_record as its handler. */
+static void h5_enter(gw_h5_section *sec, h5_quiet *q)
+{
+    q->why[0] = '\0';
+    q->nomem = 0;
+    gw_h5_enter(sec, h5_record, q);
+}
+
+static int h5_attr_write(hid_t loc, const char *name, hid_t type, const void *v)
+{
+    hid_t sp = H5Screate(H5S_SCALAR);
+    hid_t a = sp < 0 ? -1 : H5Acreate2(loc, name, type, sp, H5P_DEFAULT, H5P_DEFAULT);
+    int bad = a < 0 || H5Awrite(a, type, v) < 0;
+    if (a >= 0)
+        H5Aclose(a);
+    if (sp >= 0)
+        H5Sclose(sp);
+    return bad;
+}
+
+/* A fixed-length string attribute; cut at 16 kB, well below the 64 kB an
+ * object header can hold, so a long command line cannot fail the write. */
+static int h5_attr_write_str(hid_t loc, const char *name, const char *v)
+{
+    size_t len = strnlen(v, 16384);
+    char *copy = malloc(len + 1);
+    hid_t t = H5Tcopy(H5T_C_S1);
+    int bad = !copy || t < 0 || H5Tset_size(t, len + 1) < 0;
+    if (!bad) {
+        memcpy(copy, v, len);
+        copy[len] = '\0';
+        bad = h5_attr_write(loc, name, t, copy);
+    }
+    free(copy);
+    if (t >= 0)
+        H5Tclose(t);
+    return bad;
+}
+
+static int h5_column_write(hid_t f, const char *name, const double *v, int n)
+{
+    hsize_t dim = (hsize_t)n;
+    hid_t sp = H5Screate_simple(1, &dim, NULL);
+    hid_t d = sp < 0 ? -1 : H5Dcreate2(f, name, H5T_IEEE_F64LE, sp, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+    int bad = d < 0 || H5Dwrite(d, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, v) < 0 ||
+              h5_attr_write_str(d, "units", SAMPLE_H5_COLUMN_UNITS);
+    if (d >= 0)
+        H5Dclose(d);
+    if (sp >= 0)
+        H5Sclose(sp);
+    return bad;
+}
+
+/* The rigid-body ids of a clump sample as 32-bit integers. */
+static int h5_body_write(hid_t f, const int *v, int n)
+{
+    hsize_t dim = (hsize_t)n;
+    hid_t sp = H5Screate_simple(1, &dim, NULL);
+    hid_t d = sp < 0 ? -1 : H5Dcreate2(f, "body", H5T_STD_I32LE, sp, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+    int bad = d < 0 || H5Dwrite(d, H5T_NATIVE_INT, H5S_ALL, H5S_ALL, H5P_DEFAULT, v) < 0;
+    if (d >= 0)
+        H5Dclose(d);
+    if (sp >= 0)
+        H5Sclose(sp);
+    return bad;
+}
+
+/* Written under a temporary name through gw_afile (signals held, fsync, rename
+ * on commit): HDF5 creates the temporary by name (gw_afile_open_named). The
+ * 1.8 file format (superblock 2) puts checksums on all metadata (see read_h5). */
+static int write_h5_locked(const gw_layer_sample *s, const char *path, const char *header,
+                           const h5_quiet *q, gw_err *err)
+{
+    int version = 1, n = s->n;
+    gw_h5_mem mem;
+    hid_t file = gw_h5_mem_create(&mem, path, 1); /* in memory, written as one image (gw_h5.h) */
+    int bad = file < 0 || h5_column_write(file, "x", s->x, n) || h5_column_write(file, "y", s->y, n) ||
+              h5_column_write(file, "r", s->r, n) || h5_attr_write_str(file, "format", SAMPLE_MAGIC) ||
+              h5_attr_write(file, "format_version", H5T_NATIVE_INT, &version) ||
+              h5_attr_write_str(file, "granwave_version", gw_version()) ||
+              h5_attr_write(file, "width", H5T_NATIVE_DOUBLE, &s->width) ||
+              h5_attr_write(file, "rm", H5T_NATIVE_DOUBLE, &s->rm) ||
+              h5_attr_write(file, "volume_ratio", H5T_NATIVE_DOUBLE, &s->volume_ratio) ||
+              (!isnan(s->porosity) && h5_attr_write(file, "porosity", H5T_NATIVE_DOUBLE, &s->porosity)) ||
+              h5_attr_write(file, "seed", H5T_NATIVE_LONG, &s->seed) ||
+              h5_attr_write_str(file, "mass_law", s->mass_law == GW_LAYER_MASS_SPHERE ? "sphere" : "disc") ||
+              (s->clump_mass == GW_LAYER_CLUMP_MASS_UNION && h5_attr_write_str(file, "clump_mass", gw_layer_clump_mass_name(s->clump_mass))) ||
+              h5_attr_write(file, "n", H5T_NATIVE_INT, &n) ||
+              h5_attr_write_str(file, "units", SAMPLE_H5_UNITS) ||
+              (header && h5_attr_write_str(file, "header", header)) ||
+              (s->body && h5_body_write(file, s->body, n));
+    int rc = GW_OK;
+    if (bad) {
+        int nomem = q->nomem;
+        if (file >= 0)
+            gw_h5_mem_abort(&mem);
+        rc = nomem ? gw_err_set(err, GW_ENOMEM, "sample '%s': out of memory", path)
+                   : gw_err_set(err, GW_EIO, "sample '%s': HDF5 write failed%s%s", path, q->why[0] ? ": " : "", q->why);
+    } else {
+        rc = gw_h5_mem_write(&mem, path, err);
+    }
+    return rc;
+}
+
+/* one section of HDF5 calls (gw_h5.h): HDF5 and its error handler, one thread at a time */
+int layer_sample_h5_write(const gw_layer_sample *s, const char *path, const char *header, gw_err *err)
+{
+    gw_h5_section sec;
+    h5_quiet q;
+    h5_enter(&sec, &q);
+    int rc = write_h5_locked(s, path, header, &q, err);
+    gw_h5_leave(&sec);
+    return rc;
+}
+
+/* A scalar root attribute of class want (H5T_FLOAT also takes integers; a
+ * string goes into char[64]) read as memtype: 0 absent, 1 read, -1 malformed. */
+static int h5_attr_read(hid_t f, const char *name, H5T_class_t want, hid_t memtype, void *out)
+{
+    htri_t ex = H5Aexists(f, name);
+    if (ex == 0)
+        return 0;
+    hid_t a = ex > 0 ? H5Aopen(f, name, H5P_DEFAULT) : -1;
+    hid_t t = a >= 0 ? H5Aget_type(a) : -1, sp = a >= 0 ? H5Aget_space(a) : -1;
+    H5T_class_t cls = t >= 0 ? H5Tget_class(t) : H5T_NO_CLASS;
+    int ok = sp >= 0 && H5Sget_simple_extent_npoints(sp) == 1 &&
+             (cls == want || (want == H5T_FLOAT && cls == H5T_INTEGER));
+    if (ok && want == H5T_STRING) { /* fixed or variable length */
+        char *vs = NULL;
+        htri_t var = H5Tis_variable_str(t);
+        size_t size = H5Tget_size(t);
+        hid_t mt = H5Tcopy(H5T_C_S1);
+        ok = var >= 0 && mt >= 0 && (var > 0 || (size > 0 && size < 64)) &&
+             H5Tset_size(mt, var > 0 ? H5T_VARIABLE : 64) >= 0 && H5Tset_cset(mt, H5Tget_cset(t)) >= 0 &&
+             H5Tset_strpad(mt, H5T_STR_NULLTERM) >= 0 && H5Aread(a, mt, var > 0 ? (void *)&vs : out) >= 0;
+        if (ok && var > 0) {
+            ok = vs && strlen(vs) < 64;
+            if (ok)
+                memcpy(out, vs, strlen(vs) + 1);
+        }
+        if (vs)
+            H5free_memory(vs);
+        if (mt >= 0)
+            H5Tclose(mt);
+        if (ok)
+            ((char *)out)[63] = '\0';
+    } else if (ok) {
+        ok = H5Aread(a, memtype, out) >= 0;
+    }
+    if (t >= 0)
+        H5Tclose(t);
+    if (sp >= 0)
+        H5Sclose(sp);
+    if (a >= 0)
+        H5Aclose(a);
+    return ok ? 1 : -1;
+}
+
+/* Where the data of dataset name lies: 1 in the file itself (a hard link to a
+ * dataset whose layout is compact, contiguous or chunked in this file), 0
+ * elsewhere (an external or user-defined link, raw data in external files, a
+ * virtual dataset), -1 unknown. Data outside the file would be read through a
+ * path the file names: a FIFO there hung the reader, /dev/zero gave zeros,
+ * a superblock-0 file there skipped the checksum rule of read_h5, and the
+ * sample's content hash (its own bytes) would not cover what was read. */
+static int h5_in_file(hid_t f, const char *name, const char **what)
+{
+    H5L_info_t li;
+    *what = "";
+    if (H5Lget_info(f, name, &li, H5P_DEFAULT) < 0)
+        return -1;
+    if (li.type != H5L_TYPE_HARD) {
+        *what = li.type == H5L_TYPE_SOFT ? "a soft link" : li.type == H5L_TYPE_EXTERNAL ? "an external link"
+                : "a user-defined link";
+        return 0;
+    }
+    hid_t d = H5Dopen2(f, name, H5P_DEFAULT);
+    hid_t pl = d >= 0 ? H5Dget_create_plist(d) : -1;
+    int in = -1;
+    if (pl >= 0) {
+        const int next = H5Pget_external_count(pl);
+        const H5D_layout_t lay = H5Pget_layout(pl);
+        in = next == 0 && (lay == H5D_COMPACT || lay == H5D_CONTIGUOUS || lay == H5D_CHUNKED);
+        *what = next != 0 ? "stored in external files" : lay == H5D_VIRTUAL ? "a virtual dataset" : "";
+    }
+    if (pl >= 0)
+        H5Pclose(pl);
+    if (d >= 0)
+        H5Dclose(d);
+    return in;
+}
+
+/* The units attribute of loc (the file, or dataset name), when there is one,
+ * must be want, the units granwave writes and reads the values in: a sample
+ * converted to millimetres with its units attribute saying "mm" ran as metres
+ * (a 1000 times larger box, block and particles), exit 0. Absent: the values
+ * are taken as SI, as the format says. */
+static int h5_units_check(hid_t loc, const char *name, const char *want, const char *path, gw_err *err)
+{
+    char str[64], show[48];
+    const int got = h5_attr_read(loc, "units", H5T_STRING, -1, str);
+    if (got == 0 || (got == 1 && strcmp(str, want) == 0))
+        return GW_OK;
+    char what[96];
+    if (got < 0)
+        return gw_err_set(err, GW_EFORMAT, "sample '%s': HDF5 attribute units of %s%s%s is not one string "
+                          "(granwave writes '%s')", path, name ? "dataset '" : "the file", name ? name : "",
+                          name ? "'" : "", want);
+    if (name)
+        gw_snprintf(what, sizeof what, "HDF5 dataset '%s' has units", name);
+    else
+        gw_snprintf(what, sizeof what, "HDF5 attribute units is");
+    return gw_err_set(err, GW_EFORMAT, "sample '%s': %s '%s', not '%s': the values are read in metres, as "
+                      "granwave writes them (convert them, and their units)", path, what, layer_sample_shown(str, show), want);
+}
+
+/* Dataset name: one dimension of n numbers, read as doubles into v; its units
+ * attribute, when it has one, must be units (NULL: not checked). */
+static int h5_column_read(hid_t f, const char *name, long n, double *v, const char *units, const char *path,
+                          const char *why, gw_err *err)
+{
+    htri_t ex = H5Lexists(f, name, H5P_DEFAULT);
+    const char *where = "";
+    const int in = ex > 0 ? h5_in_file(f, name, &where) : -1;
+    if (in == 0)
+        return gw_err_set(err, GW_EFORMAT, "sample '%s': HDF5 dataset '%s' is %s: a sample holds its data in "
+                          "the file itself (hard links, no external storage)", path, name, where);
+    hid_t d = in > 0 ? H5Dopen2(f, name, H5P_DEFAULT) : -1;
+    if (d < 0)
+        return gw_err_set(err, GW_EFORMAT, "sample '%s': HDF5 dataset '%s' %s%s%s", path, name,
+                          ex == 0 ? "missing" : "unreadable", why[0] ? ": " : "", why);
+    hid_t sp = H5Dget_space(d), t = H5Dget_type(d);
+    hsize_t dim = 0;
+    H5T_class_t cls = t >= 0 ? H5Tget_class(t) : H5T_NO_CLASS;
+    int shape = sp >= 0 && H5Sget_simple_extent_ndims(sp) == 1 && H5Sget_simple_extent_dims(sp, &dim, NULL) == 1;
+    int rc = GW_OK;
+    if (!shape || (cls != H5T_FLOAT && cls != H5T_INTEGER))
+        rc = gw_err_set(err, GW_EFORMAT, "sample '%s': HDF5 dataset '%s' must be a 1-D array of numbers",
+                        path, name);
+    else if (dim != (hsize_t)n)
+        rc = gw_err_set(err, GW_EFORMAT, "sample '%s': HDF5 dataset '%s' has %llu values, n = %ld", path, name,
+                        (unsigned long long)dim, n);
+    else if (units && h5_units_check(d, name, units, path, err) != GW_OK)
+        rc = GW_EFORMAT;
+    else if (H5Dread(d, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, v) < 0)
+        rc = gw_err_set(err, GW_EFORMAT, "sample '%s': HDF5 dataset '%s' unreadable: %s", path, name, why);
+    if (t >= 0)
+        H5Tclose(t);
+    if (sp >= 0)
+        H5Sclose(sp);
+    H5Dclose(d);
+    return rc;
+}
+
+static int h5_fields(hid_t f, gw_layer_sample *s, const char *path, const char *why, gw_err *err)
+{
+    char str[64], show[48];
+    long long ver = 0, n = 0, seed = 0;
+    int got = h5_attr_read(f, "format", H5T_STRING, -1, str);
+    if (got < 0 && why[0])
+        return gw_err_set(err, GW_EFORMAT, "sample '%s': corrupt HDF5 file (%s)", path, why);
+    if (got != 1 || strcmp(str, SAMPLE_MAGIC) != 0)
+        return gw_err_set(err, GW_EFORMAT, "sample '%s': HDF5 file is not a granwave layer sample (no "
+                          "attribute format = '" SAMPLE_MAGIC "')", path);
+    if (h5_attr_read(f, "format_version", H5T_INTEGER, H5T_NATIVE_LLONG, &ver) != 1 || ver != 1)
+        return gw_err_set(err, GW_EFORMAT, "sample '%s': HDF5 attribute format_version (%lld) missing or "
+                          "unsupported (this build reads 1)", path, ver);
+    const struct {
+        const char *name;
+        double *v;
+        int required;
+    } num[] = {{"width", &s->width, 1}, {"rm", &s->rm, 1}, {"volume_ratio", &s->volume_ratio, 0},
+               {"porosity", &s->porosity, 0}};
+    s->porosity = NAN; /* absent: unknown */
+    for (size_t k = 0; k < sizeof num / sizeof num[0]; k++) {
+        got = h5_attr_read(f, num[k].name, H5T_FLOAT, H5T_NATIVE_DOUBLE, num[k].v);
+        if (got < 0 || (got == 0 && num[k].required) || (got == 1 && !isfinite(*num[k].v)))
+            return gw_err_set(err, GW_EFORMAT, "sample '%s': HDF5 attribute '%s' %s", path, num[k].name,
+                              got < 0 ? "is not one number" : got == 0 ? "missing" : "is not a finite number");
+    }
+    /* read twice, signed and unsigned: HDF5 converts an out-of-range integer to
+     * the nearest one it can hold, so a uint64 seed above 2^63 was read as
+     * 2^63 - 1 and a negative one ran; the two reads agree only in range */
+    unsigned long long useed = 0;
+    got = h5_attr_read(f, "seed", H5T_INTEGER, H5T_NATIVE_LLONG, &seed);
+    if (got == 1)
+        got = h5_attr_read(f, "seed", H5T_INTEGER, H5T_NATIVE_ULLONG, &useed);
+    if (got < 0 || (got == 1 && (seed < 0 || seed > LONG_MAX || (unsigned long long)seed != useed)))
+        return gw_err_set(err, GW_EFORMAT, "sample '%s': HDF5 attribute 'seed' is not one integer in [0, %ld] "
+                          "(layer-make's seeds are in [0, 9e18])", path, LONG_MAX);
+    s->seed = (long)seed;
+    got = h5_attr_read(f, "mass_law", H5T_STRING, -1, str);
+    if (got < 0 || (got > 0 && strcmp(str, "disc") != 0 && strcmp(str, "sphere") != 0))
+        return gw_err_set(err, GW_EFORMAT, "sample '%s': HDF5 attribute mass_law '%s' is not disc or sphere",
+                          path, got > 0 ? layer_sample_shown(str, show) : "?");
+    s->mass_law = got > 0 && strcmp(str, "sphere") == 0 ? GW_LAYER_MASS_SPHERE : GW_LAYER_MASS_DISC;
+    got = h5_attr_read(f, "clump_mass", H5T_STRING, -1, str);
+    s->clump_mass = got > 0 ? gw_layer_clump_mass_parse(str) : GW_LAYER_CLUMP_MASS_SUM;
+    if (got < 0 || s->clump_mass < 0)
+        return gw_err_set(err, GW_EFORMAT, "sample '%s': HDF5 attribute clump_mass '%s' is not sum or union",
+                          path, got > 0 ? layer_sample_shown(str, show) : "?");
+    got = h5_attr_read(f, "n", H5T_INTEGER, H5T_NATIVE_LLONG, &n);
+    if (got != 1) /* it said "n = 0" for a missing n, a string or a float */
+        return gw_err_set(err, GW_EFORMAT, "sample '%s': HDF5 attribute 'n' %s", path,
+                          got == 0 ? "missing" : "is not one integer");
+    if (n < 1 || n > SAMPLE_NMAX)
+        return gw_err_set(err, GW_EFORMAT, "sample '%s': HDF5 attribute n = %lld must be an integer in [1, %ld]",
+                          path, n, SAMPLE_NMAX);
+    int rc = layer_sample_header_check(s, path, GW_EFORMAT, err);
+    if (rc != GW_OK)
+        return rc;
+    s->x = malloc(3 * (size_t)n * sizeof *s->x);
+    if (!s->x)
+        return gw_err_set(err, GW_ENOMEM, "sample '%s': out of memory for %lld particles", path, n);
+    s->y = s->x + n, s->r = s->x + 2 * n;
+    s->n = (int)n;
+    if ((rc = h5_units_check(f, NULL, SAMPLE_H5_UNITS, path, err)) != GW_OK ||
+        (rc = h5_column_read(f, "x", (long)n, s->x, SAMPLE_H5_COLUMN_UNITS, path, why, err)) != GW_OK ||
+        (rc = h5_column_read(f, "y", (long)n, s->y, SAMPLE_H5_COLUMN_UNITS, path, why, err)) != GW_OK ||
+        (rc = h5_column_read(f, "r", (long)n, s->r, SAMPLE_H5_COLUMN_UNITS, path, why, err)) != GW_OK)
+        return rc;
+    if (H5Lexists(f, "body", H5P_DEFAULT) > 0) { /* a clump sample: ids read as numbers, then checked */
+        double *v = malloc((size_t)n * sizeof *v);
+        s->body = malloc((size_t)n * sizeof *s->body);
+        if (!v || !s->body) {
+            free(v);
+            return gw_err_set(err, GW_ENOMEM, "sample '%s': out of memory for %lld body ids", path, n);
+        }
+        rc = h5_column_read(f, "body", (long)n, v, NULL, path, why, err);
+        for (long long i = 0; rc == GW_OK && i < n; i++) {
+            if (!(v[i] >= 0 && v[i] < (double)n && v[i] == floor(v[i])))
+                rc = gw_err_set(err, GW_EFORMAT, "sample '%s': HDF5 dataset 'body': value %g at index %lld is "
+                                "not an integer in [0, %lld)", path, v[i], i, n);
+            else
+                s->body[i] = (int)v[i];
+        }
+        free(v);
+        if (rc != GW_OK)
+            return rc;
+    }
+    const hdr_src src = {.h5 = 1};
+    return layer_sample_check(s, path, &src, GW_EFORMAT, err);
+}
+
+/* libhdf5 decodes metadata without bounds checks, so a corrupt file can crash
+ * it (memory errors found by fuzzing 1.10.8 with superblock-0 files).
+ * Superblocks from version 2 on (HDF5 1.8 format and later) come with
+ * checksums on all metadata, which HDF5 verifies before decoding: only those
+ * files are opened (read_h5, given sb: the superblock version, byte 8 of the file). */
+static int read_h5_locked(const char *path, gw_layer_sample *s, const h5_quiet *q, gw_err *err)
+{
+    int rc;
+    /* strong close: H5Fclose also closes what a failed read left open */
+    hid_t fapl = H5Pcreate(H5P_FILE_ACCESS);
+    hid_t f = fapl < 0 || H5Pset_fclose_degree(fapl, H5F_CLOSE_STRONG) < 0 ? -1 :
+              H5Fopen(path, H5F_ACC_RDONLY, fapl);
+    if (f < 0) {
+        rc = gw_err_set(err, GW_EFORMAT, "sample '%s': corrupt or truncated HDF5 file (%s)", path, q->why);
+    } else {
+        rc = h5_fields(f, s, path, q->why, err);
+        if (H5Fclose(f) < 0 && rc == GW_OK)
+            rc = gw_err_set(err, GW_EFORMAT, "sample '%s': corrupt HDF5 file (%s)", path, q->why);
+    }
+    if (fapl >= 0)
+        H5Pclose(fapl);
+    return rc;
+}
+
+int layer_sample_h5_read(const char *path, int sb, gw_layer_sample *s, gw_err *err)
+{
+    if (sb < 0)
+        return gw_err_set(err, GW_EFORMAT, "sample '%s': truncated HDF5 file (signature only)", path);
+    if (sb < 2)
+        return gw_err_set(err, GW_EFORMAT, "sample '%s': HDF5 file without metadata checksums (superblock "
+                          "version %d; write it with the 1.8 format or later, e.g. h5py libver='v108')", path, sb);
+    gw_h5_section sec;
+    h5_quiet q;
+    h5_enter(&sec, &q);
+    int rc = read_h5_locked(path, s, &q, err);
+    /* a read that failed because an allocation inside HDF5 did (its stack
+     * holds a resource error) is out of memory, not a bad sample: the
+     * dataset's sizes were checked against n before it was read */
+    if (rc != GW_OK && rc != GW_ENOMEM && q.nomem)
+        rc = gw_err_set(err, GW_ENOMEM, "sample '%s': out of memory (in HDF5: %s)", path, q.why);
+    /* After some corrupt files HDF5 1.10 loses track of a block (a leak inside
+     * the library) and at exit prints "infinite loop closing library" unless
+     * automatic error printing is off: after a failed read it stays off, here
+     * and in the exiting thread (granwave reports HDF5 errors through gw_err). */
+    if (rc == GW_OK)
+        gw_h5_leave(&sec);
+    else
+        gw_h5_leave_failed_read(&sec);
+    return rc;
+}
+#endif

@@ -1,0 +1,54 @@
+/*
+ * layer_sample_impl.h: what the three parts of the sample files share (not
+ * installed): the reader and writers (layer_sample.c, text; layer_sample_h5.c,
+ * HDF5) and the checks both apply to the fields they read or write
+ * (layer_sample_check.c). Units: SI (m).
+ */
+#ifndef GW_LAYER_SAMPLE_IMPL_H
+#define GW_LAYER_SAMPLE_IMPL_H
+
+#include "layer_impl.h"
+
+#define SAMPLE_NMAX 10000000L /* 240 MB of coordinates */
+#define SAMPLE_MAGIC "granwave-layer-sample" /* the text format's first word; HDF5's "format" attribute */
+
+/* Where a header value came from, for the messages of the box and porosity
+ * checks: a text file's line (line[K] > 0), an HDF5 attribute (h5), or a
+ * sample in memory being written (NULL). */
+enum { K_WIDTH, K_RM, K_VR, K_POR, K_SEED, K_LAW, K_CMASS, K_N, K_COUNT };
+typedef struct hdr_src {
+    int h5;
+    long line[K_COUNT];
+} hdr_src;
+
+/* Up to 40 characters of untrusted text s for a message in out, non-printables
+ * as '?'; returns out. */
+const char *layer_sample_shown(const char *s, char out[48]);
+
+/* The header fields alone (width, rm, volume_ratio, porosity, seed, mass
+ * laws): status with a message "sample 'PATH': ..." when one is refused. */
+int layer_sample_header_check(const gw_layer_sample *s, const char *path, int status, gw_err *err);
+
+/* One particle (x, y, r) of a sample of that width and rm; where names it in
+ * the message ("line 12", "particle at index 3"). */
+int layer_sample_particle_check(double width, double rm, double x, double y, double r, const char *path,
+                                const char *where, int status, gw_err *err);
+
+/* The checks that need the whole sample (bodies, grading, box, porosity), once
+ * its header and particles have passed; GW_ENOMEM when a scratch allocation
+ * fails. src: where the header came from (NULL: a sample in memory). */
+int layer_sample_whole_check(const gw_layer_sample *s, const char *path, const hdr_src *src, int status,
+                             gw_err *err);
+
+/* All of them: the header, n and each particle, then the whole sample. */
+int layer_sample_check(const gw_layer_sample *s, const char *path, const hdr_src *src, int status, gw_err *err);
+
+#if GW_HAVE_HDF5
+/* The HDF5 sample (layer_sample_h5.c): s, already checked, written
+ * atomically; read (sb: the superblock version, the byte after the
+ * signature, -1 when none) into s, which the caller frees on failure. */
+int layer_sample_h5_write(const gw_layer_sample *s, const char *path, const char *header, gw_err *err);
+int layer_sample_h5_read(const char *path, int sb, gw_layer_sample *s, gw_err *err);
+#endif
+
+#endif

@@ -9,7 +9,6 @@
  * Progress: after d of n units at t seconds elapsed, rate = d / t units/s and
  * the time left is (n - d) / rate seconds.
  */
-#include <errno.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -215,16 +214,4 @@ int gw_cli_mkdir_out(const char *path, char *made, size_t n, gw_err *err)
 {
     first_missing(path, made, n);
     return gw_mkdir_p(path, err);
-}
-
-int gw_cli_out_remove(const char *dir, const char *const *names, gw_err *err)
-{
-    char path[4096];
-    for (int i = 0; names[i]; i++) {
-        if (gw_path_join(path, sizeof path, dir, names[i]) != GW_OK)
-            return gw_err_set(err, GW_EINVAL, "%s: output path too long", dir);
-        if (unlink(path) != 0 && errno != ENOENT)
-            return gw_err_set(err, GW_EIO, "%s: cannot remove the earlier run's file: %s", path, strerror(errno));
-    }
-    return GW_OK;
 }

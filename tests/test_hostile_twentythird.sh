@@ -96,6 +96,7 @@ rm -rf "é ü"
     ok "a UTF-8 --out is recorded as given, single-quoted" || ko "a UTF-8 --out is not recorded as given"
 
 # --- 1d the validator against Python's strict decoder ---
+before=$((passes + fails))
 py_checks <<'EOF'
 import ctypes, random
 import granwave
@@ -133,6 +134,8 @@ for c in ("é", "€", "😀", "\U0010ffff", "\ud7ff"):
 print(("PASS" if not bad else "FAIL") + ": gw_utf8_len agrees with Python's strict decoder over 20000 edge-biased byte "
       "strings and 5 characters up to U+10FFFF" + ("" if not bad else f" ({len(bad)} disagree, e.g. {bad[:3]})"))
 EOF
+
+[ $((passes + fails)) -eq $((before + 1)) ] || ko "the validator check printed no verdict: $(tail -3 "$tmp/py.out")"
 
 echo "test_hostile_twentythird: $passes passed, $fails failed"
 [ $fails -eq 0 ]

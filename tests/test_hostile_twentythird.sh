@@ -14,6 +14,11 @@
 #    same bytes. The library's validator gw_utf8_len agrees with Python's strict
 #    UTF-8 decoder over 20000 random byte strings biased to the edge cases
 #    (overlong forms, surrogates, above U+10FFFF, cut sequences).
+#  2 dispersion's settings recorded an RK4 step that never ran: under cvode
+#    and arkode (which choose their steps) settings.solver held
+#    steps_per_sample 16 and rk4_dt = dt_out / 16, in the JSON and in every
+#    CSV header. They are now null there; under rk4 they are what ran
+#    (rk4_dt x steps_per_sample = dt_out).
 # Checks that fail on the code before: see docs/tests.md.
 set -u
 GW=$(cd "$(dirname "$1")" && pwd)/$(basename "$1")
@@ -136,6 +141,23 @@ print(("PASS" if not bad else "FAIL") + ": gw_utf8_len agrees with Python's stri
 EOF
 
 [ $((passes + fails)) -eq $((before + 1)) ] || ko "the validator check printed no verdict: $(tail -3 "$tmp/py.out")"
+
+# --- 2 dispersion's settings under an adaptive solver record no RK4 step ---
+for solver in cvode arkode; do
+    rm -rf "d_$solver"
+    if runs_json "dispersion --solver $solver" "d_$solver.json" dispersion --n 32 --t-samples 64 --ends fixed --solver "$solver" --out "d_$solver"; then
+        r=$(jq_py "d_$solver.json" "d['settings']['solver']['steps_per_sample'] is None and d['settings']['solver']['rk4_dt'] is None")
+        [ "$r" = True ] && ok "dispersion --solver $solver: settings record no RK4 step (null)" ||
+            ko "dispersion --solver $solver: settings record an RK4 step that never ran"
+        h=$(grep -h '^# settings: ' "d_$solver/dispersion_ridge.csv" | $PY -c "import sys, json; s = json.loads(sys.stdin.read()[12:])['solver']; print(s['steps_per_sample'] is None and s['rk4_dt'] is None)")
+        [ "$h" = True ] && ok "  and so does dispersion_ridge.csv's header" || ko "  dispersion_ridge.csv's header records an RK4 step"
+    fi
+done
+if runs_json "dispersion --solver rk4" d_rk4.json dispersion --n 32 --t-samples 64 --steps-per-sample 8; then
+    r=$(jq_py d_rk4.json "d['settings']['solver']['steps_per_sample'] == 8 and abs(d['settings']['solver']['rk4_dt'] * 8 / d['settings']['spectrum']['dt_out'] - 1) < 1e-15")
+    [ "$r" = True ] && ok "dispersion --solver rk4: the RK4 step recorded is dt_out / steps-per-sample" ||
+        ko "dispersion --solver rk4: the RK4 step recorded is not dt_out / steps-per-sample"
+fi
 
 echo "test_hostile_twentythird: $passes passed, $fails failed"
 [ $fails -eq 0 ]

@@ -134,10 +134,4 @@ int gw_cli_nomem(const char *cmd);
 int gw_cli_mkdir_out(const char *path, char *made, size_t n, gw_err *err);
 void gw_cli_unmake(const char *path, const char *made);
 
-/* The files names (NULL-terminated) of dir removed where they exist: the members
- * of a command's output set that this run does not write, so that --out never
- * holds two runs' files side by side (a failed chain run's trace beside the
- * chain.json of an earlier success). GW_EIO naming the file if one cannot go. */
-int gw_cli_out_remove(const char *dir, const char *const *names, gw_err *err);
-
 #endif

@@ -9,7 +9,6 @@
  * Progress: after d of n units at t seconds elapsed, rate = d / t units/s and
  * the time left is (n - d) / rate seconds.
  */
-#include <errno.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -21,19 +20,22 @@
 
 /* arg as a POSIX shell reads it back: as it is when it holds only characters
  * no shell treats specially, else in single quotes ('\'' for a quote), and in
- * $'...' (\n, \t, \xHH) when it holds a control character such as a newline,
- * so that the command line stays one header line and can be run again as
- * written (before, "--out a b" read as two arguments and a newline in a path
- * split the line). Writes at most 4 bytes per byte of arg plus 4; returns the
- * bytes written. */
+ * $'...' (\n, \t, \xHH) when it holds a control character such as a newline
+ * or a byte that is not UTF-8 (a Latin-1 file name), so that the command line
+ * stays one header line of UTF-8 text, in the JSON too, and can be run again
+ * as written (before, "--out a b" read as two arguments, a newline in a path
+ * split the line and a byte 0xff made the JSON invalid). Writes at most 4
+ * bytes per byte of arg plus 4; returns the bytes written. */
 static size_t shell_word(char *out, const char *arg)
 {
     static const char safe[] = "_@%+=:,./-";
     int plain = *arg != '\0', ctrl = 0;
-    for (const unsigned char *c = (const unsigned char *)arg; *c; c++) {
-        if (*c < 0x20 || *c == 0x7f)
+    for (size_t i = 0, k; arg[i]; i += k ? k : 1) {
+        const unsigned char c = (unsigned char)arg[i];
+        k = gw_utf8_len(arg + i);
+        if (c < 0x20 || c == 0x7f || k == 0)
             ctrl = 1;
-        if (!((*c >= 'a' && *c <= 'z') || (*c >= 'A' && *c <= 'Z') || (*c >= '0' && *c <= '9') || strchr(safe, *c)))
+        if (!((c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || strchr(safe, c)))
             plain = 0;
     }
     char *w = out;
@@ -45,22 +47,25 @@ static size_t shell_word(char *out, const char *arg)
     if (ctrl)
         *w++ = '$';
     *w++ = '\'';
-    for (const unsigned char *c = (const unsigned char *)arg; *c; c++) {
-        if (*c == '\'' && !ctrl) {
+    for (size_t i = 0, k; arg[i]; i += k ? k : 1) {
+        const unsigned char c = (unsigned char)arg[i];
+        k = gw_utf8_len(arg + i);
+        if (c == '\'' && !ctrl) {
             memcpy(w, "'\\''", 4);
             w += 4;
-        } else if (ctrl && (*c == '\'' || *c == '\\')) {
+        } else if (ctrl && (c == '\'' || c == '\\')) {
             *w++ = '\\';
-            *w++ = (char)*c;
-        } else if (ctrl && *c == '\n') {
+            *w++ = (char)c;
+        } else if (ctrl && c == '\n') {
             *w++ = '\\', *w++ = 'n';
-        } else if (ctrl && *c == '\t') {
+        } else if (ctrl && c == '\t') {
             *w++ = '\\', *w++ = 't';
-        } else if (ctrl && (*c < 0x20 || *c == 0x7f)) {
+        } else if (ctrl && (c < 0x20 || c == 0x7f || k == 0)) {
             static const char hex[] = "0123456789abcdef";
-            *w++ = '\\', *w++ = 'x', *w++ = hex[*c >> 4], *w++ = hex[*c & 15];
+            *w++ = '\\', *w++ = 'x', *w++ = hex[c >> 4], *w++ = hex[c & 15];
         } else {
-            *w++ = (char)*c;
+            memcpy(w, arg + i, k); /* a character, whole */
+            w += k;
         }
     }
     *w++ = '\'';
@@ -215,16 +220,4 @@ int gw_cli_mkdir_out(const char *path, char *made, size_t n, gw_err *err)
 {
     first_missing(path, made, n);
     return gw_mkdir_p(path, err);
-}
-
-int gw_cli_out_remove(const char *dir, const char *const *names, gw_err *err)
-{
-    char path[4096];
-    for (int i = 0; names[i]; i++) {
-        if (gw_path_join(path, sizeof path, dir, names[i]) != GW_OK)
-            return gw_err_set(err, GW_EINVAL, "%s: output path too long", dir);
-        if (unlink(path) != 0 && errno != ENOENT)
-            return gw_err_set(err, GW_EIO, "%s: cannot remove the earlier run's file: %s", path, strerror(errno));
-    }
-    return GW_OK;
 }

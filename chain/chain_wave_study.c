@@ -519,7 +519,7 @@ static int sw_alloc(gw_chain_softwall_outcome *o, int nw, int nn, int nsheet, gw
     o->rigid = calloc(2 * (size_t)nw, sizeof *o->rigid);
     o->sheet_table = calloc((size_t)nsheet * GW_SOFTWALL_NSHEET_COLS + 1, sizeof *o->sheet_table);
     o->sheet_names = calloc((size_t)nsheet * 16 + 1, 1);
-    o->sheet_materials = calloc((size_t)nsheet * 64 + 1, 1);
+    o->sheet_materials = calloc((size_t)nsheet * GW_SOFTWALL_LABEL_MAX + 1, 1);
     if (!o->n || !o->rigid || !o->sheet_table || !o->sheet_names || !o->sheet_materials)
         return gw_err_set(err, GW_ENOMEM, "softwall: out of memory");
     o->saturated = o->rigid + nw;
@@ -561,6 +561,12 @@ static void sw_fill(const gw_chain_softwall_setup *s, const gw_chain_resolved *r
         o->f_plateau[w] = sr[w].plateau;
         o->tau_max_at_n_d[w] = sr[w].n_d > 0 ? rw[sr[w].n_d - a].tau_max : NAN;
     }
+    /* sheet none under a law other than fitted is the Hertz half-space of the
+     * sensor's material: one label for the run, whichever wall it is */
+    char wall[32], bare[GW_SOFTWALL_LABEL_MAX];
+    if (gw_param_format(gw_param_find(sw_params, "wall-material"), s, wall, sizeof wall) <= 0)
+        gw_snprintf(wall, sizeof wall, "steel");
+    gw_snprintf(bare, sizeof bare, "no sheet (%s sensor)", wall);
     for (int w = 0; w < o->nsheet; w++) {
         const gw_sheet *sh = s->sheets ? gw_sheet_get(w)
                                        : (gw_param_format(gw_param_find(sw_params, "sheet"), s, name, sizeof name) > 0
@@ -572,14 +578,31 @@ static void sw_fill(const gw_chain_softwall_setup *s, const gw_chain_resolved *r
                   o->sheet_table + (size_t)w * GW_SOFTWALL_NSHEET_COLS);
         size_t ln = strlen(o->sheet_names), lm = strlen(o->sheet_materials);
         gw_snprintf(o->sheet_names + ln, 16, "%s%s", w ? "," : "", sh->name);
-        char wall[32] = "steel"; /* sheet none under a law other than fitted: the sensor's material */
-        if (gw_param_format(gw_param_find(sw_params, "wall-material"), s, wall, sizeof wall) <= 0)
-            gw_snprintf(wall, sizeof wall, "steel");
-        if (!(sh->thickness > 0) && rs->law != GW_SHEET_FITTED)
-            gw_snprintf(o->sheet_materials + lm, 64, "%sno sheet (%s sensor)", w ? ";" : "", wall);
-        else
-            gw_snprintf(o->sheet_materials + lm, 64, "%s%s", w ? ";" : "", sh->material);
+        gw_snprintf(o->sheet_materials + lm, GW_SOFTWALL_LABEL_MAX, "%s%s", w ? ";" : "",
+                    !(sh->thickness > 0) && rs->law != GW_SHEET_FITTED ? bare : sh->material);
     }
+}
+
+int gw_chain_softwall_sheet_material(const gw_chain_softwall_outcome *o, int w, char *buf, size_t size)
+{
+    if (!buf || size == 0)
+        return GW_EINVAL;
+    buf[0] = '\0';
+    if (!o || !o->sheet_materials || w < 0 || w >= o->nsheet)
+        return GW_EINVAL;
+    const char *m = o->sheet_materials;
+    for (int i = 0; i < w; i++) {
+        m = strchr(m, ';');
+        if (!m)
+            return GW_EINVAL; /* fewer labels than sheets: a sheet left out */
+        m++;
+    }
+    size_t len = strcspn(m, ";");
+    if (len >= size)
+        return GW_EINVAL;
+    memcpy(buf, m, len);
+    buf[len] = '\0';
+    return GW_OK;
 }
 
 int gw_chain_softwall_run(const gw_chain_softwall_setup *s, gw_progress_fn progress, void *pctx,

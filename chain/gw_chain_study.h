@@ -372,7 +372,8 @@ typedef struct gw_chain_softwall_outcome {
     double *n_d_at_most;        /* [nw]: n_min > 1 when F_max is on its plateau from n_min on, so
                                    N_d <= n_min and is not located (n_d NaN, saturated 1); NaN otherwise */
     double *sheet_table;        /* [nsheet * GW_SOFTWALL_NSHEET_COLS]; NaN: not defined */
-    char *sheet_names, *sheet_materials; /* nsheet items, separated by "," and ";" */
+    char *sheet_names, *sheet_materials; /* nsheet items, separated by "," and ";" (a material
+                                            label: gw_chain_softwall_sheet_material) */
     double wall_time_s;
     int unfinished;             /* collisions still at the wall at t_max (wall_done 0):
                                    their F_max and tau_max may not be final */
@@ -388,6 +389,14 @@ const gw_param *gw_chain_softwall_outcome_fields(void);
 int gw_chain_softwall_run(const gw_chain_softwall_setup *s, gw_progress_fn progress, void *pctx,
                           gw_chain_softwall_outcome *out, gw_err *err);
 void gw_chain_softwall_outcome_free(gw_chain_softwall_outcome *out);
+/* The longest material label of one sheet, its NUL included. */
+#define GW_SOFTWALL_LABEL_MAX 64
+/* Sheet w's material label (field w of sheet_materials) copied into buf: the
+ * sheet's material, or "no sheet (M sensor)" for the sheet none under a law
+ * other than fitted (the Hertz half-space of the sensor's material M). GW_OK;
+ * GW_EINVAL (buf "" when size > 0) when w is not one of out's nsheet sheets or
+ * the label does not fit in size (GW_SOFTWALL_LABEL_MAX always does). */
+int gw_chain_softwall_sheet_material(const gw_chain_softwall_outcome *out, int w, char *buf, size_t size);
 
 /* Small-amplitude dispersion of a precompressed chain (physics.md 1.6,
  * chain_dispersion.c): ridge omega(q) against 2 sqrt(kappa/m) |sin(qa/2)|,

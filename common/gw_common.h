@@ -322,6 +322,11 @@ cJSON *gw_json_bools(const int *v, int n);
  * record or result could lose a key (a chain header without "wall_material")
  * with exit 0; such an object is now never printed. */
 char *gw_json_string(const cJSON *o, int formatted);
+/* Length of the well-formed UTF-8 sequence at text (RFC 3629: no overlong
+ * form, no surrogate, at most U+10FFFF; 1 for an ASCII byte), 0 when the byte
+ * at text starts none. JSON text is UTF-8: gw_json_string prints each such
+ * byte of a key or string as U+FFFD. */
+size_t gw_utf8_len(const char *text);
 /* Allocations of cJSON (every cJSON call in the process goes through
  * granwave's hooks once the library is loaded) that failed in the calling
  * thread since it started or since gw_json_failures_clear. A caller that goes

@@ -5,6 +5,10 @@
  * read back within one ulp, so a JSON value could differ in its last bit from
  * the same value in an HDF5 or CSV file: alpha_r 8.73474671993196 against
  * 8.734746719931962). Integers, and NaN and infinities as null, as cJSON.
+ * Text is printed as UTF-8, which JSON requires (RFC 8259): a byte of a key or
+ * string that is not part of a well-formed UTF-8 sequence (a file name in
+ * Latin-1, a stray byte of a table's comment) is printed as U+FFFD, so a
+ * strict parser reads every output; valid UTF-8 is printed as given.
  */
 #include <math.h>
 #include <stdio.h>
@@ -107,12 +111,85 @@ static int exact_numbers(cJSON *o)
     return 1;
 }
 
+size_t gw_utf8_len(const char *text)
+{
+    const unsigned char *s = (const unsigned char *)text, c = s[0];
+    if (c < 0x80)
+        return 1;
+    size_t n = c >= 0xc2 && c <= 0xdf ? 2 : c >= 0xe0 && c <= 0xef ? 3 : c >= 0xf0 && c <= 0xf4 ? 4 : 0;
+    unsigned char lo = 0x80, hi = 0xbf; /* the second byte's range */
+    if (c == 0xe0)
+        lo = 0xa0;
+    else if (c == 0xed)
+        hi = 0x9f;
+    else if (c == 0xf0)
+        lo = 0x90;
+    else if (c == 0xf4)
+        hi = 0x8f;
+    for (size_t i = 1; i < n; i++)
+        if (s[i] < (i == 1 ? lo : 0x80) || s[i] > (i == 1 ? hi : 0xbf))
+            return 0;
+    return n;
+}
+
+/* *text as valid UTF-8 (in place: a new malloc'd string when a byte had to
+ * become U+FFFD; *text freed unless owned is 0). 0 on out of memory. */
+static int utf8_fix(char **text, int owned)
+{
+    const unsigned char *t = (const unsigned char *)*text;
+    size_t bad = 0, len = 0;
+    for (size_t k; t[len]; len += k ? k : 1)
+        bad += (k = gw_utf8_len((const char *)t + len)) == 0;
+    if (!bad)
+        return 1;
+    char *u = malloc(len + 2 * bad + 1), *w = u;
+    if (!u)
+        return 0;
+    for (size_t i = 0, k; i < len; i += k ? k : 1) {
+        if ((k = gw_utf8_len((const char *)t + i)) != 0) {
+            memcpy(w, t + i, k);
+            w += k;
+        } else {
+            memcpy(w, "\xef\xbf\xbd", 3); /* U+FFFD */
+            w += 3;
+        }
+    }
+    *w = '\0';
+    if (owned)
+        free(*text);
+    *text = u;
+    return 1;
+}
+
+/* Every key and string of o (in place) as valid UTF-8; 0 on out of memory. */
+static int utf8_text(cJSON *o)
+{
+    for (cJSON *c = o; c; c = c->next) {
+        if (c->child && !utf8_text(c->child))
+            return 0;
+        if (c->string) {
+            const int owned = !(c->type & cJSON_StringIsConst);
+            char *k = c->string;
+            if (!utf8_fix(&k, owned))
+                return 0;
+            if (k != c->string) {
+                c->string = k;
+                c->type &= ~cJSON_StringIsConst; /* now the node's own */
+            }
+        }
+        if (cJSON_IsString(c) && c->valuestring && !utf8_fix(&c->valuestring, 1))
+            return 0;
+    }
+    return 1;
+}
+
 char *gw_json_string(const cJSON *o, int formatted)
 {
     if (json_failures)
         return NULL; /* o may lack a member cJSON could not allocate */
     cJSON *d = cJSON_Duplicate(o, 1); /* a copy is converted */
-    char *s = d && exact_numbers(d) ? (formatted ? cJSON_Print(d) : cJSON_PrintUnformatted(d)) : NULL;
+    char *s = d && exact_numbers(d) && utf8_text(d) ? (formatted ? cJSON_Print(d) : cJSON_PrintUnformatted(d))
+                                                     : NULL;
     cJSON_Delete(d);
     return s;
 }

@@ -126,8 +126,13 @@ static cJSON *disp_settings_json(const disp_cli *c, const gw_chain_disp_params *
                                          : type == gw_solver_cvode ? "adams" : "erk");
     cJSON_AddNumberToObject(s, "rtol", sp->rtol);
     cJSON_AddNumberToObject(s, "atol", sp->atol);
-    cJSON_AddNumberToObject(s, "steps_per_sample", p->steps_per_sample);
-    cJSON_AddNumberToObject(s, "rk4_dt", gw_chain_disp_dt_sample(p) / p->steps_per_sample);
+    if (type == gw_solver_rk4) {
+        cJSON_AddNumberToObject(s, "steps_per_sample", p->steps_per_sample);
+        cJSON_AddNumberToObject(s, "rk4_dt", gw_chain_disp_dt_sample(p) / p->steps_per_sample);
+    } else { /* cvode and arkode choose their steps: no RK4 step ran (it read dt_out / 16) */
+        cJSON_AddNullToObject(s, "steps_per_sample");
+        cJSON_AddNullToObject(s, "rk4_dt");
+    }
     cJSON *f = cJSON_AddObjectToObject(o, "spectrum");
     cJSON_AddNumberToObject(f, "t_samples", p->t_samples);
     cJSON_AddNumberToObject(f, "dt_out", gw_chain_disp_dt_sample(p));

@@ -23,15 +23,9 @@ static cJSON *sheet_json(const gw_chain_softwall_outcome *so, int w, const gw_sh
                                        "tau_max_at_measured_nd_model", "f_max_at_measured_nd_over_plateau"};
     cJSON *e = cJSON_CreateObject();
     cJSON_AddStringToObject(e, "name", sh->name);
-    /* the library's label of wall w (field w of sheet_materials, ';'-separated:
-     * sheet none under a law other than fitted names the sensor's material) */
-    const char *m = so->sheet_materials ? so->sheet_materials : "";
-    for (int i = 0; i < w && m; i++)
-        m = strchr(m, ';') ? strchr(m, ';') + 1 : NULL;
-    char label[64];
-    snprintf(label, sizeof label, "%.*s", m ? (int)(strchr(m, ';') ? strchr(m, ';') - m : (long)strlen(m)) : 0,
-             m ? m : "");
-    cJSON_AddStringToObject(e, "material", label[0] ? label : sh->material);
+    char label[GW_SOFTWALL_LABEL_MAX]; /* the library's: sheet none may name the sensor's material */
+    cJSON_AddStringToObject(e, "material",
+                            gw_chain_softwall_sheet_material(so, w, label, sizeof label) == GW_OK ? label : sh->material);
     int k = 0;
     for (; k < 12; k++)
         cJSON_AddNumberToObject(e, keys[k], row[k]);

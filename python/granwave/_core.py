@@ -455,7 +455,7 @@ class Study:
     """A study of the library's index (app/lib/gw_study.h)."""
 
     def __init__(self, name):
-        ptr = lib.gw_study_find(name.encode())
+        ptr = lib.gw_study_find(name.encode()) if "\0" not in name else None  # the library stops at a NUL
         if not ptr:
             raise GranwaveError(f"libgranwave has no study '{name}'", GW_EINVAL)
         self.st = ptr.contents
@@ -808,6 +808,13 @@ def _sweep_hint(model, m, k):
     return f" (did you mean '{close[0]}'?)" if close else ""
 
 
+def _model_has(m, name):
+    """Whether the sweep model m takes the key name. A name holding a NUL is
+    none: the library reads a name up to its first NUL, so that 'n\\x00x'
+    passed as 'n' and the config text then failed as "sweep:4: syntax error"."""
+    return "\0" not in name and bool(m.has_key(name.encode()))
+
+
 _SWEEP_LINE_MAX = 198  # the longest line the library's config reader takes (libinih's buffer less 2)
 
 
@@ -842,7 +849,7 @@ def run_sweep(model, grid, params, jobs, progress):
         seen.setdefault(name, k)
     for k, v in grid.items():
         name = k.replace("_", "-")
-        if not m.has_key(name.encode()):
+        if not _model_has(m, name):
             raise TypeError(f"sweep() grid: '{k}' is not a parameter of model {model}{_sweep_hint(model, m, k)}")
         if v is None or isinstance(v, (set, frozenset, dict) + _BYTES) or \
                 (isinstance(v, np.ndarray) and v.ndim != 1):
@@ -888,7 +895,7 @@ def run_sweep(model, grid, params, jobs, progress):
         if v is None:
             continue
         name = k.replace("_", "-")
-        if not m.has_key(name.encode()):
+        if not _model_has(m, name):
             raise TypeError(f"sweep() got an unexpected keyword argument '{k}' (not a parameter of model {model})"
                             f"{_sweep_hint(model, m, k)}")
         if k in grid:

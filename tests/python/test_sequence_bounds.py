@@ -47,6 +47,7 @@ import numpy as np
 import pytest
 
 import granwave
+from conftest import write_synthetic_sweep
 from granwave import _core, _lib
 
 GEN = "(0.3 for _ in iter(int, 1))"  # a generator that never ends
@@ -195,32 +196,6 @@ def test_a_sweep_config_as_text_is_bounded_as_a_file():
     assert s.ncases == 5
 
 
-def _syn(path, penetration=True):
-    """Bounce iff H < B.31(R_b/R_m) (test_stats.py's synthetic table); without
-    a penetration, the offset has no measured source."""
-    from test_stats import COLS
-    T = math.tan(math.radians(0.2))
-
-    def f(x):
-        u = x - 1.0
-        return 1.0 + (math.sqrt(u * u + 4.0 * T * x * x) - u) / (2 * T)
-
-    lines = ["# synthetic layer sweep", "# param vi = 20", "case,rb-rm,height-rm,point," + COLS]
-    case = 0
-    for x in (0.5, 1.5, 2, 3, 4, 6):
-        for h in (3, 6, 9, 12, 15, 18, 21):
-            for p in range(4):
-                b = 1 if h < f(x) + (0.3 if p == 0 else 0) else 0
-                e = 0.3 + 0.01 * p + 0.02 * x
-                pen = 0.4 + 0.01 * h if penetration else "nan"
-                lines.append(f"{case},{x},{h},{p},{0.05 * p},{b},{e if b else 'nan'},{e if b else 'nan'},"
-                             f"{10 + p if b else 'nan'},20,{8 * e},{20 * e},0.1,{pen},0.001,"
-                             f"{0.5 + 0.01 * p},1e-6,nan,0.01,100")
-                case += 1
-    path.write_text("\n".join(lines) + "\n")
-    return path
-
-
 def _json(program, *args):
     return json.loads(subprocess.run([program, "layer-stats", *map(str, args), "--json"], check=True,
                                      capture_output=True, text=True).stdout)
@@ -232,7 +207,7 @@ def _json(program, *args):
                                            ({"fit": "beta,a_over_b,offset"}, "fitted", None)],
                          ids=["measured", "delta_rm", "fitted"])
 def test_layer_stats_offset_source_names_the_keyword(program, tmp_path, kw, python, cli):
-    t = _syn(tmp_path / "syn.csv")
+    t = write_synthetic_sweep(tmp_path / "syn.csv")
     r = granwave.layer_stats(t, **kw)
     args = [a for k, v in kw.items() for a in ("--" + k.replace("_", "-"), v)]
     j = _json(program, t, *args)
@@ -242,7 +217,7 @@ def test_layer_stats_offset_source_names_the_keyword(program, tmp_path, kw, pyth
 
 
 def test_layer_stats_fit_reason_names_the_keyword(program, tmp_path):
-    t = _syn(tmp_path / "nopen.csv", penetration=False)
+    t = write_synthetic_sweep(tmp_path / "nopen.csv", penetration=False)
     r = granwave.layer_stats(t)
     j = _json(program, t)
     assert j["diagrams"][0]["fit"] is None

@@ -15,11 +15,10 @@ import numpy as np
 import pytest
 
 import granwave
+from conftest import SWEEP_COLS, write_synthetic_sweep
 
 GROUP_MOMENTS = ["e_n", "e", "alpha_r", "penetration", "penetration_rm", "block_loss_first_contact",
                  "dissipated_first_contact", "rebound_energy", "e_n_first", "e_first", "alpha_r_first"]
-COLS = ("x_impact,bounced,e_n,e,alpha_r,v_ni,v_nr,v_r,penetration,penetration_rm,dissipated_first_contact,"
-        "block_loss_first_contact,energy_error,wave_speed,t_end,steps")
 
 
 def cli_json(program, table, *args):
@@ -100,27 +99,8 @@ def sweep_table(program, tmp_path_factory):
 
 @pytest.fixture(scope="module")
 def synthetic_table(tmp_path_factory):
-    """Bounce iff H < B.31(R_b/R_m) (beta 1, a/b 4, offset 1, gamma 0.2 deg), 4 points per cell."""
-    T = math.tan(math.radians(0.2))
-
-    def f(x):
-        u = x - 1.0
-        return 1.0 + (math.sqrt(u * u + 4.0 * T * x * x) - u) / (2 * T)
-
-    path = tmp_path_factory.mktemp("syn") / "syn.csv"
-    lines = ["# synthetic layer sweep", "# param vi = 20", "case,rb-rm,height-rm,point," + COLS]
-    case = 0
-    for x in (0.5, 1.5, 2, 3, 4, 6):
-        for h in (3, 6, 9, 12, 15, 18, 21):
-            for p in range(4):
-                b = 1 if h < f(x) + (0.3 if p == 0 else 0) else 0
-                e = 0.3 + 0.01 * p + 0.02 * x
-                lines.append(f"{case},{x},{h},{p},{0.05 * p},{b},{e if b else 'nan'},{e if b else 'nan'},"
-                             f"{10 + p if b else 'nan'},20,{8 * e},{20 * e},0.1,{0.4 + 0.01 * h},0.001,"
-                             f"{0.5 + 0.01 * p},1e-6,nan,0.01,100")
-                case += 1
-    path.write_text("\n".join(lines) + "\n")
-    return path
+    """conftest's synthetic sweep: bounce iff H < B.31(R_b/R_m) (beta 1, a/b 4, offset 1, gamma 0.2 deg)."""
+    return write_synthetic_sweep(tmp_path_factory.mktemp("syn") / "syn.csv")
 
 
 def test_sweep_table_as_the_program(program, sweep_table):
@@ -152,7 +132,7 @@ def test_bad_values_name_the_parameter(synthetic_table, tmp_path):
     with pytest.raises(OSError, match="missing.csv"):
         granwave.layer_stats(tmp_path / "missing.csv")
     bad = tmp_path / "bad.csv"
-    bad.write_text("case,point," + COLS + "\n0,0,0,1,0.5,abc,10,20,10,12,0.1,0.3,0.001,0.6,1e-6,nan,0.01,100\n")
+    bad.write_text("case,point," + SWEEP_COLS + "\n0,0,0,1,0.5,abc,10,20,10,12,0.1,0.3,0.001,0.6,1e-6,nan,0.01,100\n")
     with pytest.raises(ValueError, match="bad.csv:2: column e"):
         granwave.layer_stats(bad)
     with pytest.raises(TypeError):

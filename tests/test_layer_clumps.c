@@ -39,6 +39,7 @@
 #include <string.h>
 
 #include "gw_layer.h"
+#include "gw_test_overlap.h"
 #include "gw_test.h"
 
 /* --------------------------------------------------------------- helpers */
@@ -423,6 +424,8 @@ static void test_pluviation(gw_layer_sample *keep)
            ra.porosity, ra.max_overlap);
     gw_test_true(ids_ok && kmin >= 1 && kmax <= 6 && kmax >= 2, "10 bodies of 1 .. 6 members, some clumps");
     gw_test_true(ra.porosity > 0 && ra.porosity < 1 && ra.porosity == a.porosity, "porosity reported");
+    /* members of one clump overlap by design: only pairs of different bodies count */
+    gw_test_rel(ra.max_overlap, gw_test_max_overlap(&a), 1e-12, "largest overlap between bodies = every pair compared");
     /* round trips */
     gw_err err = {{0}};
     const char *paths[2] = {"test_layer_clumps_sample.txt", "test_layer_clumps_sample.h5"};

@@ -39,6 +39,7 @@
 #include <string.h>
 
 #include "gw_layer.h"
+#include "gw_test_overlap.h"
 #include "gw_test.h"
 #if GW_HAVE_HDF5
 #include <hdf5.h>
@@ -459,6 +460,8 @@ int main(void)
     gw_test_true(same, "pluviation deterministic for a seed (bitwise)");
     gw_test_true(diff, "another seed gives another sample");
     gw_test_abs(ra.max_overlap, 0, 1e-2, "largest overlap after settling (u_n / R_p)");
+    /* the same pairs and formula: equal to rounding (the grid's pairs in another order) */
+    gw_test_rel(ra.max_overlap, gw_test_max_overlap(&a), 1e-12, "largest overlap = every pair compared");
     printf("porosity %.4f, settled in %.3g s, %.0f ms wall\n", ra.porosity, ra.t_settle, ra.wall_ms);
 
     const char *path = "test_layer_sample.txt";

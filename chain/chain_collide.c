@@ -74,6 +74,8 @@ typedef struct run_state {
     char *closed;    /* [n]: 0 = wall, 1+i = contact i */
     double *last_open;
     double dtol;     /* overlap below which a contact counts as open, m */
+    double v_scale;  /* the states' velocity scale (chain_speed_scale), m/s */
+    double vtol_tol; /* the solver tolerances' floor of resolved_speed, relative */
     double t_first_max, t_last_max;
     double t_prev, f_prev;   /* previous observation (wall force) */
     double *fc_prev;         /* [3n] contact forces, overlaps and their rates at the
@@ -232,13 +234,54 @@ static void reconcile(run_state *st, double t, const double *y)
     }
 }
 
+/* The relative speed of two beads below which the integration does not
+ * resolve it, m/s. Beads that leave together (eps near 1, two equal beads on a
+ * stiff wall) separate or close at the integration's error, and the sign of
+ * that difference changed with the stop times of the sampling: --n 2 --k 1e3
+ * --kwall 1e14 --t-max 0.02 ended at tau_N with --dt-out 7e-9 and ran to t-max
+ * "still closing" with 6.7e-9 (beads at -0.300000000306 and -0.300000000303
+ * m/s). The velocities' error shows in the energy's: over 4 samplings times
+ * cvode bdf at rtol = atol = 1e-12, 1e-10, 1e-8, 1e-6, adams, arkode and rk4,
+ * the pair's final relative speed was at most 3.1 times the run's relative
+ * energy error times the speed scale (arkode at 1e-12), and at most 64 times
+ * max(rtol, atol) (bdf at 1e-10). A closing pair is followed from 30 times the
+ * former or 1e3 times the latter (cvode, arkode: rk4's tolerances are not its
+ * error), whichever is larger, and always from 1e-3 of the speed scale: a
+ * column whose beads meet again closes at a fair part of v_imp (a light bead
+ * above a heavy one: --radii 1e-2,1e-3, 0.55 v_imp). */
+static double resolved_speed(const run_state *st)
+{
+    return st->v_scale * fmin(1e-3, fmax(30.0 * st->r->energy_error, st->vtol_tol));
+}
+
+/* Contact k (between beads k-1 and k, k >= 1) still acting at state y: closed
+ * (its flag, or its overlap above dtol) or its beads closing, and the relative
+ * speed it can still take up or give back, from its approach w and its stored
+ * energy E_c = 2/5 k d^(5/2) (w^2 + 2 E_c / mu, mu the pair's reduced mass),
+ * resolved (above vtol). Below it, nothing the pair still does changes a
+ * velocity by more than the integration's error. */
+static int contact_acting(const run_state *st, const double *y, int k, double vtol)
+{
+    const double d = y[2 * k] - y[2 * k - 2], w = y[2 * k + 1] - y[2 * k - 1];
+    if (!st->closed[k] && !(d > st->dtol) && !(w > 0))
+        return 0;
+    const double m1 = gw_chain_bead_mass(st->c, k - 1), m2 = gw_chain_bead_mass(st->c, k),
+                 kc = st->c->kc[k - 1], ec = d > 0 ? 0.4 * kc * d * d * sqrt(d) : 0.0,
+                 wc = w > 0 ? w : 0.0;
+    return wc * wc + 2.0 * ec * (m1 + m2) / (m1 * m2) > vtol * vtol;
+}
+
 static void on_wall_open(run_state *st, double t, const double *y)
 {
     gw_chain_result *r = st->r;
     const int n = st->n;
     r->tau_n = t;
+    /* the cluster: the contacts above bead 1 that still act (contact_acting; a
+     * contact held at the integration's error is open, whichever way its
+     * flag was left) */
     int cl = 1;
-    while (cl < n && st->closed[cl])
+    const double vtol = resolved_speed(st);
+    while (cl < n && st->closed[cl] && contact_acting(st, y, cl, vtol))
         cl++;
     r->cluster = cl;
     r->n_s = n - cl;
@@ -331,21 +374,16 @@ static int wall_finished(const run_state *st, const double *y, double dtol)
     return wall_pending(st, y, dtol) == NULL;
 }
 
-/* Every contact open (by its events and by its geometry, so that a contact the
- * root finder missed still counts) and every neighbour pair separating. */
+/* The wall's side done (wall_pending), and every contact between beads open
+ * and not closing (by its events and by its geometry, so that a contact the
+ * root finder missed still counts) at a resolved speed (contact_acting). */
 static int finished(const run_state *st, const double *y, double dtol)
 {
-    const int n = st->n;
-    for (int k = 0; k < n; k++)
-        if (st->closed[k])
-            return 0;
     if (!wall_finished(st, y, dtol))
         return 0;
-    for (int i = 0; i < n - 1; i++)
-        if (y[2 * i + 2] - y[2 * i] > dtol)
-            return 0;
-    for (int i = 0; i < n - 1; i++)
-        if (y[2 * i + 3] > y[2 * i + 1])
+    const double vtol = resolved_speed(st);
+    for (int k = 1; k < st->n; k++)
+        if (contact_acting(st, y, k, vtol))
             return 0;
     return 1;
 }
@@ -888,8 +926,10 @@ static int collide_run(const gw_chain *c, const gw_chain_run_opts *o, int flight
     /* the first contact's position scale, gw_chain_dmax1 at the column's
      * speed scale (gw_chain_create set it) */
     st.dtol = 1e-9 * c->scale[0];
+    st.v_scale = c->scale[1];
     gw_solver_params sp = pl.sp;
     const gw_solver_type *type = pl.type;
+    st.vtol_tol = type == gw_solver_rk4 ? 0.0 : 1e3 * fmax(sp.rtol, sp.atol);
     r->run_t_max = t_max;
     r->run_dt_out = dt_out;
     /* rk4 steps at the smaller of dt and dt_max (gw_backend_rk4.c): record that */

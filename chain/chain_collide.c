@@ -625,9 +625,17 @@ typedef struct collide_plan {
 #define RING_STEPS_PER_OSC 260.0
 
 int chain_ring_check(const gw_chain_params *p, const gw_solver_type *type, const gw_solver_params *sp,
-                     double t_len, const char *over, gw_err *err)
+                     double t_len, double t_col, const char *over, gw_err *err)
 {
     if (type == gw_solver_rk4 || !p->masses)
+        return GW_OK;
+    /* the run passes the chain's own masses (gw_chain_create fills them for
+     * equal beads too): --n 10 --k 1e3 --kwall 1e14 --dt-out 1e-7 was refused
+     * at the run as "bead 1 is 1 times lighter than bead 1" */
+    int equal = 1;
+    for (int i = 1; i < p->n && equal; i++)
+        equal = p->masses[i] == p->masses[0];
+    if (equal)
         return GW_OK;
     int f = 0;
     const double n = p->n, tr = chain_ring_period(p, &f), osc = t_len / tr;
@@ -637,10 +645,7 @@ int chain_ring_check(const gw_chain_params *p, const gw_solver_type *type, const
     const double per_osc = RING_STEPS_PER_OSC * pow(fmin(tol, 1.0) / 1e-12, -0.11);
     const double work = n * per_osc * osc;
     /* the ringing against the column's own scale: its collision's expected
-     * length (whatever t_len) */
-    double tc = 0, tau1 = 0;
-    chain_column_scales(p, &tc, &tau1);
-    const double t_col = n * 2.0 * tc + tau1;
+     * length t_col (whatever t_len) */
     if (!(t_col / tr > RING_RATIO_MAX * (2 * n + 1)) || !(work > RING_WORK_MAX))
         return GW_OK;
     int h = 0;
@@ -746,12 +751,13 @@ static int collide_plan_make(const gw_chain_params *p0, const gw_chain_run_opts 
      * (--radii 5e-4,1e-2: t-max 0.197 ms, the collision 0.248 ms, exit 1). */
     double tc_col = 0, tau1_col = 0;
     chain_column_scales(p, &tc_col, &tau1_col);
+    const double t_col = n * 2.0 * tc_col + tau1_col; /* the ring, held and t-max bounds' too */
     pl->tc = tc_col;
-    pl->t_max = o->t_max > 0 ? o->t_max : 20.0 * (n * 2.0 * tc_col + tau1_col);
+    pl->t_max = o->t_max > 0 ? o->t_max : 20.0 * t_col;
     /* Every sample costs O(n) (energy, contacts): bound the samples over the
      * collision's expected length (or t_max when shorter). The
      * default dt-out gives about 100 n + 200 of them; checked before the run. */
-    pl->t_expect = fmin(pl->t_max, n * 2.0 * tc_col + tau1_col);
+    pl->t_expect = fmin(pl->t_max, t_col);
     int rc;
     pl->sp = o->sp;
     /* The root finders compare signs at step ends only: a step longer than half a
@@ -792,7 +798,7 @@ static int collide_plan_make(const gw_chain_params *p0, const gw_chain_run_opts 
         return gw_err_set(err, GW_EINVAL, "%s", e[worst].msg);
     /* cvode and arkode follow a light bead that heavy beads hold, all the time
      * they hold it (chain_ring_check) */
-    if ((rc = chain_ring_check(p, pl->type, &pl->sp, pl->t_expect, "the collision", err)) != GW_OK)
+    if ((rc = chain_ring_check(p, pl->type, &pl->sp, pl->t_expect, t_col, "the collision", err)) != GW_OK)
         return rc;
     /* A stored trace (gw_chain_trace_sample) keeps t, the wall force and every
      * bead's x and v at each sample and event (about 4 events per bead): bound
@@ -818,7 +824,7 @@ static int collide_plan_make(const gw_chain_params *p0, const gw_chain_run_opts 
                               "lower t-max to %g s or less", pl->t_max, pl->t_max / step, step,
                               pl->t_max / pl->dt_out, pl->dt_out,
                               /* one that passes the held column's bound too (chain_held_check) */
-                              fmin(floor_2digits(t_lim), held_t_lim(p0, n * 2.0 * tc_col + tau1_col, pl->tau1,
+                              fmin(floor_2digits(t_lim), held_t_lim(p0, t_col, pl->tau1,
                                                                     pl->dt_out)));
         if ((rc = chain_sensor_steps_check(p, pl->type, pl->t_max, "t-max", err)) != GW_OK)
             return rc;
@@ -831,7 +837,7 @@ static int collide_plan_make(const gw_chain_params *p0, const gw_chain_run_opts 
         }
     }
     /* A column that gravity holds on the wall runs to t_max (chain_held_check) */
-    if ((rc = chain_held_check(p0, pl->t_max, n * 2.0 * tc_col + tau1_col, pl->tau1, pl->dt_out, err)) != GW_OK)
+    if ((rc = chain_held_check(p0, pl->t_max, t_col, pl->tau1, pl->dt_out, err)) != GW_OK)
         return rc;
     return GW_OK;
 }

@@ -672,7 +672,13 @@ int chain_ring_check(const gw_chain_params *p, const gw_solver_type *type, const
  * 1.6 us a bead-sample at the default sampling tau_1/200 (steps 1 to 3.4 per
  * sample: n = 300, g = 100, v_imp = 1e-3 ran 16715 steps and 17189 samples in
  * 1.9 s up to t = 3e-3 s, about 100 s to its default t-max of 0.152 s; n = 40,
- * g = 100, v_imp = 1e-3 407013 steps, 126228 samples, 8 s). The steps follow
+ * g = 100, v_imp = 1e-3 407013 steps, 126228 samples, 8 s; profiled again:
+ * 7728 contact events and 446 force maxima over its 29 ms, about 200 a
+ * contact, each a real collision of beads bouncing under their weight (18 at
+ * a relative speed below 1e-9 m/s, none within 1e-7 s of the contact's
+ * previous event: no chattering), each a restart of BDF at order 1, about 95
+ * steps a restart, 780k steps, half the CPU in the band LU; adams took 1.2 s,
+ * arkode's erk 0.6 s, bdf 5.1 s). The steps follow
  * the contacts, not the sampling: the estimate counts samples at the finer of
  * dt-out and tau_1/200, times the beads, over t_max, bounded at 1e7 (about 4
  * to 16 s) whatever t_max was given. */

@@ -74,6 +74,8 @@ typedef struct run_state {
     char *closed;    /* [n]: 0 = wall, 1+i = contact i */
     double *last_open;
     double dtol;     /* overlap below which a contact counts as open, m */
+    double v_scale;  /* the states' velocity scale (chain_speed_scale), m/s */
+    double vtol_tol; /* the solver tolerances' floor of resolved_speed, relative */
     double t_first_max, t_last_max;
     double t_prev, f_prev;   /* previous observation (wall force) */
     double *fc_prev;         /* [3n] contact forces, overlaps and their rates at the
@@ -232,13 +234,54 @@ static void reconcile(run_state *st, double t, const double *y)
     }
 }
 
+/* The relative speed of two beads below which the integration does not
+ * resolve it, m/s. Beads that leave together (eps near 1, two equal beads on a
+ * stiff wall) separate or close at the integration's error, and the sign of
+ * that difference changed with the stop times of the sampling: --n 2 --k 1e3
+ * --kwall 1e14 --t-max 0.02 ended at tau_N with --dt-out 7e-9 and ran to t-max
+ * "still closing" with 6.7e-9 (beads at -0.300000000306 and -0.300000000303
+ * m/s). The velocities' error shows in the energy's: over 4 samplings times
+ * cvode bdf at rtol = atol = 1e-12, 1e-10, 1e-8, 1e-6, adams, arkode and rk4,
+ * the pair's final relative speed was at most 3.1 times the run's relative
+ * energy error times the speed scale (arkode at 1e-12), and at most 64 times
+ * max(rtol, atol) (bdf at 1e-10). A closing pair is followed from 30 times the
+ * former or 1e3 times the latter (cvode, arkode: rk4's tolerances are not its
+ * error), whichever is larger, and always from 1e-3 of the speed scale: a
+ * column whose beads meet again closes at a fair part of v_imp (a light bead
+ * above a heavy one: --radii 1e-2,1e-3, 0.55 v_imp). */
+static double resolved_speed(const run_state *st)
+{
+    return st->v_scale * fmin(1e-3, fmax(30.0 * st->r->energy_error, st->vtol_tol));
+}
+
+/* Contact k (between beads k-1 and k, k >= 1) still acting at state y: closed
+ * (its flag, or its overlap above dtol) or its beads closing, and the relative
+ * speed it can still take up or give back, from its approach w and its stored
+ * energy E_c = 2/5 k d^(5/2) (w^2 + 2 E_c / mu, mu the pair's reduced mass),
+ * resolved (above vtol). Below it, nothing the pair still does changes a
+ * velocity by more than the integration's error. */
+static int contact_acting(const run_state *st, const double *y, int k, double vtol)
+{
+    const double d = y[2 * k] - y[2 * k - 2], w = y[2 * k + 1] - y[2 * k - 1];
+    if (!st->closed[k] && !(d > st->dtol) && !(w > 0))
+        return 0;
+    const double m1 = gw_chain_bead_mass(st->c, k - 1), m2 = gw_chain_bead_mass(st->c, k),
+                 kc = st->c->kc[k - 1], ec = d > 0 ? 0.4 * kc * d * d * sqrt(d) : 0.0,
+                 wc = w > 0 ? w : 0.0;
+    return wc * wc + 2.0 * ec * (m1 + m2) / (m1 * m2) > vtol * vtol;
+}
+
 static void on_wall_open(run_state *st, double t, const double *y)
 {
     gw_chain_result *r = st->r;
     const int n = st->n;
     r->tau_n = t;
+    /* the cluster: the contacts above bead 1 that still act (contact_acting; a
+     * contact held at the integration's error is open, whichever way its
+     * flag was left) */
     int cl = 1;
-    while (cl < n && st->closed[cl])
+    const double vtol = resolved_speed(st);
+    while (cl < n && st->closed[cl] && contact_acting(st, y, cl, vtol))
         cl++;
     r->cluster = cl;
     r->n_s = n - cl;
@@ -331,21 +374,16 @@ static int wall_finished(const run_state *st, const double *y, double dtol)
     return wall_pending(st, y, dtol) == NULL;
 }
 
-/* Every contact open (by its events and by its geometry, so that a contact the
- * root finder missed still counts) and every neighbour pair separating. */
+/* The wall's side done (wall_pending), and every contact between beads open
+ * and not closing (by its events and by its geometry, so that a contact the
+ * root finder missed still counts) at a resolved speed (contact_acting). */
 static int finished(const run_state *st, const double *y, double dtol)
 {
-    const int n = st->n;
-    for (int k = 0; k < n; k++)
-        if (st->closed[k])
-            return 0;
     if (!wall_finished(st, y, dtol))
         return 0;
-    for (int i = 0; i < n - 1; i++)
-        if (y[2 * i + 2] - y[2 * i] > dtol)
-            return 0;
-    for (int i = 0; i < n - 1; i++)
-        if (y[2 * i + 3] > y[2 * i + 1])
+    const double vtol = resolved_speed(st);
+    for (int k = 1; k < st->n; k++)
+        if (contact_acting(st, y, k, vtol))
             return 0;
     return 1;
 }
@@ -587,9 +625,17 @@ typedef struct collide_plan {
 #define RING_STEPS_PER_OSC 260.0
 
 int chain_ring_check(const gw_chain_params *p, const gw_solver_type *type, const gw_solver_params *sp,
-                     double t_len, const char *over, gw_err *err)
+                     double t_len, double t_col, const char *over, gw_err *err)
 {
     if (type == gw_solver_rk4 || !p->masses)
+        return GW_OK;
+    /* the run passes the chain's own masses (gw_chain_create fills them for
+     * equal beads too): --n 10 --k 1e3 --kwall 1e14 --dt-out 1e-7 was refused
+     * at the run as "bead 1 is 1 times lighter than bead 1" */
+    int equal = 1;
+    for (int i = 1; i < p->n && equal; i++)
+        equal = p->masses[i] == p->masses[0];
+    if (equal)
         return GW_OK;
     int f = 0;
     const double n = p->n, tr = chain_ring_period(p, &f), osc = t_len / tr;
@@ -599,10 +645,7 @@ int chain_ring_check(const gw_chain_params *p, const gw_solver_type *type, const
     const double per_osc = RING_STEPS_PER_OSC * pow(fmin(tol, 1.0) / 1e-12, -0.11);
     const double work = n * per_osc * osc;
     /* the ringing against the column's own scale: its collision's expected
-     * length (whatever t_len) */
-    double tc = 0, tau1 = 0;
-    chain_column_scales(p, &tc, &tau1);
-    const double t_col = n * 2.0 * tc + tau1;
+     * length t_col (whatever t_len) */
     if (!(t_col / tr > RING_RATIO_MAX * (2 * n + 1)) || !(work > RING_WORK_MAX))
         return GW_OK;
     int h = 0;
@@ -629,7 +672,13 @@ int chain_ring_check(const gw_chain_params *p, const gw_solver_type *type, const
  * 1.6 us a bead-sample at the default sampling tau_1/200 (steps 1 to 3.4 per
  * sample: n = 300, g = 100, v_imp = 1e-3 ran 16715 steps and 17189 samples in
  * 1.9 s up to t = 3e-3 s, about 100 s to its default t-max of 0.152 s; n = 40,
- * g = 100, v_imp = 1e-3 407013 steps, 126228 samples, 8 s). The steps follow
+ * g = 100, v_imp = 1e-3 407013 steps, 126228 samples, 8 s; profiled again:
+ * 7728 contact events and 446 force maxima over its 29 ms, about 200 a
+ * contact, each a real collision of beads bouncing under their weight (18 at
+ * a relative speed below 1e-9 m/s, none within 1e-7 s of the contact's
+ * previous event: no chattering), each a restart of BDF at order 1, about 95
+ * steps a restart, 780k steps, half the CPU in the band LU; adams took 1.2 s,
+ * arkode's erk 0.6 s, bdf 5.1 s). The steps follow
  * the contacts, not the sampling: the estimate counts samples at the finer of
  * dt-out and tau_1/200, times the beads, over t_max, bounded at 1e7 (about 4
  * to 16 s) whatever t_max was given. */
@@ -708,12 +757,13 @@ static int collide_plan_make(const gw_chain_params *p0, const gw_chain_run_opts 
      * (--radii 5e-4,1e-2: t-max 0.197 ms, the collision 0.248 ms, exit 1). */
     double tc_col = 0, tau1_col = 0;
     chain_column_scales(p, &tc_col, &tau1_col);
+    const double t_col = n * 2.0 * tc_col + tau1_col; /* the ring, held and t-max bounds' too */
     pl->tc = tc_col;
-    pl->t_max = o->t_max > 0 ? o->t_max : 20.0 * (n * 2.0 * tc_col + tau1_col);
+    pl->t_max = o->t_max > 0 ? o->t_max : 20.0 * t_col;
     /* Every sample costs O(n) (energy, contacts): bound the samples over the
      * collision's expected length (or t_max when shorter). The
      * default dt-out gives about 100 n + 200 of them; checked before the run. */
-    pl->t_expect = fmin(pl->t_max, n * 2.0 * tc_col + tau1_col);
+    pl->t_expect = fmin(pl->t_max, t_col);
     int rc;
     pl->sp = o->sp;
     /* The root finders compare signs at step ends only: a step longer than half a
@@ -754,7 +804,7 @@ static int collide_plan_make(const gw_chain_params *p0, const gw_chain_run_opts 
         return gw_err_set(err, GW_EINVAL, "%s", e[worst].msg);
     /* cvode and arkode follow a light bead that heavy beads hold, all the time
      * they hold it (chain_ring_check) */
-    if ((rc = chain_ring_check(p, pl->type, &pl->sp, pl->t_expect, "the collision", err)) != GW_OK)
+    if ((rc = chain_ring_check(p, pl->type, &pl->sp, pl->t_expect, t_col, "the collision", err)) != GW_OK)
         return rc;
     /* A stored trace (gw_chain_trace_sample) keeps t, the wall force and every
      * bead's x and v at each sample and event (about 4 events per bead): bound
@@ -780,7 +830,7 @@ static int collide_plan_make(const gw_chain_params *p0, const gw_chain_run_opts 
                               "lower t-max to %g s or less", pl->t_max, pl->t_max / step, step,
                               pl->t_max / pl->dt_out, pl->dt_out,
                               /* one that passes the held column's bound too (chain_held_check) */
-                              fmin(floor_2digits(t_lim), held_t_lim(p0, n * 2.0 * tc_col + tau1_col, pl->tau1,
+                              fmin(floor_2digits(t_lim), held_t_lim(p0, t_col, pl->tau1,
                                                                     pl->dt_out)));
         if ((rc = chain_sensor_steps_check(p, pl->type, pl->t_max, "t-max", err)) != GW_OK)
             return rc;
@@ -793,7 +843,7 @@ static int collide_plan_make(const gw_chain_params *p0, const gw_chain_run_opts 
         }
     }
     /* A column that gravity holds on the wall runs to t_max (chain_held_check) */
-    if ((rc = chain_held_check(p0, pl->t_max, n * 2.0 * tc_col + tau1_col, pl->tau1, pl->dt_out, err)) != GW_OK)
+    if ((rc = chain_held_check(p0, pl->t_max, t_col, pl->tau1, pl->dt_out, err)) != GW_OK)
         return rc;
     return GW_OK;
 }
@@ -888,8 +938,10 @@ static int collide_run(const gw_chain *c, const gw_chain_run_opts *o, int flight
     /* the first contact's position scale, gw_chain_dmax1 at the column's
      * speed scale (gw_chain_create set it) */
     st.dtol = 1e-9 * c->scale[0];
+    st.v_scale = c->scale[1];
     gw_solver_params sp = pl.sp;
     const gw_solver_type *type = pl.type;
+    st.vtol_tol = type == gw_solver_rk4 ? 0.0 : 1e3 * fmax(sp.rtol, sp.atol);
     r->run_t_max = t_max;
     r->run_dt_out = dt_out;
     /* rk4 steps at the smaller of dt and dt_max (gw_backend_rk4.c): record that */

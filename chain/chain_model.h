@@ -115,11 +115,13 @@ double chain_ring_period(const gw_chain_params *p, int *fastest);
  * (chain_collide.c): the oscillations of chain_ring_period over t_len seconds
  * at about 260 steps each (rtol 1e-12; (tol/1e-12)^-0.11 at tol = the looser of
  * rtol and atol), times the beads, at most 2e7 when they are more than 100 per
- * bead transit (2n + 1 over the collision); GW_EINVAL naming radii and "...
- * over OVER (about T s)". rk4 and equal beads: GW_OK. Called by the collision's
- * plan (gw_chain_run_check, so chain, sweeps, studies and Python), not the drop. */
+ * bead transit (2n + 1 over the collision's expected length t_col, s, the
+ * plan's n 2 T_c + tau_1 as chain_held_check takes it); GW_EINVAL naming radii
+ * and "... over OVER (about T s)". rk4 and equal beads (p->masses NULL or all
+ * the same): GW_OK. Called by the collision's plan (gw_chain_run_check, so
+ * chain, sweeps, studies and Python), not the drop. */
 int chain_ring_check(const gw_chain_params *p, const gw_solver_type *type, const gw_solver_params *sp,
-                     double t_len, const char *over, gw_err *err);
+                     double t_len, double t_col, const char *over, gw_err *err);
 
 /* A column that gravity holds on the wall (g t_col > v_imp: gravity takes back
  * the impact speed within the collision's expected length t_col) bounces on it

@@ -1364,6 +1364,72 @@ int gw_sweep_journal_open(const char *dir, const gw_sweep_config *cfg, char *don
     return rc;
 }
 
+/* The format of a journal's first line "# granwave sweep journal HASH" (16
+ * lowercase hex digits, as GW_SWEEP_JOURNAL_HEAD writes it), then nothing
+ * (format 1, the first) or ", format N" (N a decimal number with no leading
+ * zero, no sign) and the line's end: 1 with *fmt and *hash; 2 when the line
+ * starts as a granwave journal's but goes on otherwise (a format no granwave
+ * this one knows of writes, or an edited head); 0 when it does not start so
+ * (not a granwave sweep journal). */
+static int journal_head_format(const char *buf, size_t len, long *fmt, unsigned long *hash)
+{
+    static const char pre[] = "# granwave sweep journal ";
+    const size_t pl = sizeof pre - 1;
+    if (len < pl || memcmp(buf, pre, pl) != 0)
+        return 0;
+    const char *nl = memchr(buf, '\n', len);
+    const char *p = buf + pl, *end = nl ? nl : buf + len;
+    unsigned long h = 0;
+    for (int i = 0; i < 16; i++, p++) {
+        if (p >= end || !((*p >= '0' && *p <= '9') || (*p >= 'a' && *p <= 'f')))
+            return 2;
+        h = h << 4 | (unsigned long)(*p <= '9' ? *p - '0' : *p - 'a' + 10);
+    }
+    *hash = h;
+    if (p == end) {
+        /* a head without its newline is no journal a sweep made (it writes
+         * the head and its lines whole): not format 1 */
+        if (!nl)
+            return 2;
+        *fmt = 1;
+        return 1;
+    }
+    static const char fsep[] = ", format ";
+    const size_t fl = sizeof fsep - 1;
+    if ((size_t)(end - p) < fl + 1 || memcmp(p, fsep, fl) != 0)
+        return 2;
+    p += fl;
+    if (*p < '1' || *p > '9' || end - p > 9) /* up to 9 digits: no overflow, and no format a sweep writes */
+        return 2;
+    long n = 0;
+    for (; p < end; p++) {
+        if (*p < '0' || *p > '9')
+            return 2;
+        n = 10 * n + (*p - '0');
+    }
+    /* "format 1" was never written (format 1 had no suffix) */
+    if (n < 2 || !nl)
+        return 2;
+    *fmt = n;
+    return 1;
+}
+
+/* The journal's first line for a message: at most n - 1 bytes, each byte
+ * that is not printable ASCII as '?', "..." when cut. */
+static void journal_first_line(const char *buf, size_t len, char *out, size_t n)
+{
+    const char *nl = memchr(buf, '\n', len);
+    size_t l = nl ? (size_t)(nl - buf) : len, w = 0;
+    const int cut = l > n - 4;
+    if (cut)
+        l = n - 4;
+    for (size_t i = 0; i < l; i++)
+        out[w++] = buf[i] >= 0x20 && buf[i] < 0x7f ? buf[i] : '?';
+    if (cut)
+        out[w++] = '.', out[w++] = '.', out[w++] = '.';
+    out[w] = '\0';
+}
+
 /* The journal at path, read (under the caller's lock on fd) and checked;
  * a torn last row cut. */
 static int journal_check(const char *path, const char *dir, const char *head, const gw_sweep_config *cfg,
@@ -1378,16 +1444,45 @@ static int journal_check(const char *path, const char *dir, const char *head, co
         free(buf);
         return gw_err_set(err, GW_EIO, "%s: replaced while the sweep opened it: rerun", path);
     }
-    /* the format before rows carried their case config hash and the hash of
-     * the file they read: "# granwave sweep journal HASH" alone. Its rows
-     * cannot be told from rows pasted from a sweep with other [params]. */
-    char old_head[64];
-    gw_snprintf(old_head, sizeof old_head, "# granwave sweep journal %016lx\n", cfg->hash);
-    if (strncmp(buf, old_head, strlen(old_head)) == 0) {
+    /* The format before the one read here (GW_SWEEP_JOURNAL_FORMAT), before
+     * rows carried their case config hash and the hash of the file they read:
+     * "# granwave sweep journal HASH" alone. Its rows cannot be told from rows
+     * pasted from a sweep with other [params]. A later format, or a head no
+     * granwave writes, is said as such: both were refused as "another sweep
+     * (different config)", a journal of this very config included, naming
+     * neither the file nor its format. */
+    long fmt = 0;
+    unsigned long jhash = 0;
+    const int head_kind = journal_head_format(buf, len, &fmt, &jhash);
+    if (head_kind == 1 && fmt == 1) {
+        char other[96] = "";
+        if (jhash != cfg->hash)
+            gw_snprintf(other, sizeof other, ", of another config (%016lx; this one is %016lx)", jhash, cfg->hash);
         free(buf);
         return gw_err_set(err, GW_EINVAL, "%s: a journal of an earlier granwave, whose rows do not record the "
-                          "config they ran under (a row pasted from another sweep could not be told): finish the "
-                          "sweep with the granwave that started it, or remove the journal to rerun its cases", path);
+                          "config they ran under (format 1%s; granwave %s reads format %d only, as a row pasted from "
+                          "another sweep could not be told in format 1): finish the sweep with the granwave that "
+                          "started it, or remove the journal to rerun its cases", path, other, gw_version(),
+                          GW_SWEEP_JOURNAL_FORMAT);
+    }
+    if (head_kind == 1 && fmt > GW_SWEEP_JOURNAL_FORMAT) {
+        free(buf);
+        return gw_err_set(err, GW_EINVAL, "%s: a sweep journal of format %ld, newer than granwave %s's "
+                          "format %d: resume it with the granwave that wrote it, or choose another output (the "
+                          "journal is left as it is)", path, fmt, gw_version(), GW_SWEEP_JOURNAL_FORMAT);
+    }
+    if (head_kind == 2) {
+        char first[128];
+        journal_first_line(buf, len, first, sizeof first);
+        const char *nl = memchr(buf, '\n', len);
+        /* a journal whose line ends a program converted: no row's checksum
+         * (over the row and its LF) holds either */
+        const int crlf = nl && nl > buf && nl[-1] == '\r';
+        free(buf);
+        return gw_err_set(err, GW_EINVAL, "%s: a sweep journal of a format granwave %s does not know (its first line "
+                          "'%s'%s; this granwave writes and reads format %d): remove it or choose another output (the "
+                          "journal is left as it is)", path, gw_version(), first,
+                          crlf ? ", its lines ending in CR LF where a sweep writes LF" : "", GW_SWEEP_JOURNAL_FORMAT);
     }
     if (strncmp(buf, "# granwave sweep journal ", 25) != 0 || strncmp(buf, head, strlen(head)) != 0) {
         int rc = strncmp(buf, "# granwave sweep journal ", 25) == 0 ? changed_input(cfg, buf, len, path, dir, err)

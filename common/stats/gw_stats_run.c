@@ -414,6 +414,10 @@ int gw_stats_analyse(const gw_stats_setup *s, gw_stats_analysis *A, gw_err *err)
     A->defaults = s->defaults;
     rc = gw_stats_table_read(s->input, &A->t, err);
     A->input = A->t.path;
+    /* the rows against the definitions of e_n, e, alpha_r: with the run's
+     * settings, which the reader does not know */
+    if (rc == GW_OK && (rc = gw_stats_table_bounds(&A->t, &A->defaults, &A->warnings, err)) == GW_ENOMEM)
+        gw_err_set(err, rc, "%s: out of memory", A->input);
     /* the B.31 options act on the bouncing diagram only: refused, as having no
      * effect, on a table without one (given: set, at the row's default too) */
     if (rc == GW_OK && (gw_stats_table_key(&A->t, "rb-rm") < 0 || gw_stats_table_key(&A->t, "height-rm") < 0)) {

@@ -178,6 +178,15 @@ static int parse_header(gw_stats_table *t, char *line, long ln, int *ncells, gw_
     int n = split(line, cells, max);
     if (n > max)
         return gw_err_set(err, GW_EFORMAT, "%s:%ld: more than %d columns", t->path, ln, max);
+    /* a table saved by a spreadsheet program: cells separated by ';' or a
+     * tab, or quoted. It was refused as "must start with 'case'", which it
+     * seemed to. */
+    if (strncmp(cells[0], "case", 4) == 0 && (cells[0][4] == ';' || cells[0][4] == '\t'))
+        return gw_err_set(err, GW_EFORMAT, "%s:%ld: the header's cells are separated by %s, a sweep table's by ',' "
+                          "(saved by a spreadsheet program?)", t->path, ln, cells[0][4] == ';' ? "';'" : "tabs");
+    if (strncmp(cells[0], "\"case\"", 6) == 0)
+        return gw_err_set(err, GW_EFORMAT, "%s:%ld: the header's cells are in double quotes, a sweep table's are "
+                          "not (saved by a spreadsheet program?)", t->path, ln);
     if (strcmp(cells[0], "case") != 0)
         return gw_err_set(err, GW_EFORMAT, "%s:%ld: header must start with 'case' (a sweep results table)",
                           t->path, ln);
@@ -736,6 +745,13 @@ static int check_rows(const gw_stats_table *t, gw_err *err)
      * at T_f) are NaN when the run ended before T_f. Tables before e_n_first
      * have no such rows. */
     const int first = gw_stats_table_col(t, "e_n_first") >= 0;
+    /* a sweep writes the three together: without e_n_first, e_first and
+     * alpha_r_first kept, the table was read as one before them and refused
+     * as "case 0 bounced but its e_n is nan" (a rebound cut before T_f) */
+    const int nfirst = first + (gw_stats_table_col(t, "e_first") >= 0) + (gw_stats_table_col(t, "alpha_r_first") >= 0);
+    if (nfirst > 0 && nfirst < 3)
+        return gw_err_set(err, GW_EFORMAT, "%s: the header has %d of the columns e_n_first, e_first, alpha_r_first, "
+                          "which a sweep writes together (a column removed by hand?)", t->path, nfirst);
     const char *const need[] = {first ? "e_n_first" : "e_n", first ? "e_first" : "e",
                                 first ? "alpha_r_first" : "alpha_r"};
     for (long r = 0; cb >= 0 && r < t->nrows; r++) {
@@ -761,6 +777,11 @@ int gw_stats_table_parse(const char *text, const char *name, gw_stats_table *t, 
      * 'case'" (or its first '#' line taken for the header) */
     if (strncmp(text, "\xEF\xBB\xBF", 3) == 0)
         text += 3;
+    /* lines ending in CR alone (a classic Mac OS file): the whole table was
+     * one line, a comment, and refused as "no header line (an empty table)" */
+    if (strchr(text, '\r') && !strchr(text, '\n'))
+        return gw_err_set(err, GW_EFORMAT, "%s:1: lines end in CR alone, a sweep table's in LF (CR LF is read "
+                          "too): convert its line ends", name);
     char *buf = strdup(text);
     if (!buf)
         return gw_err_set(err, GW_ENOMEM, "%s: out of memory", name);

@@ -2,7 +2,7 @@
  * gw_stats_run.c: the whole analysis of a layer sweep table (gw_stats.h),
  * the computation behind `granwave layer-stats` (docs/physics.md 2.3, 2.5):
  *  - per group (every grid key but `point`): the moments and shares of
- *    gw_stats_groups_make (gw_stats_table.c);
+ *    gw_stats_groups_make (gw_stats_groups.c);
  *  - binary-impact check: per R_b/R_m (and incidence) the block's energy loss
  *    in its first contact beside 4 m/(1 + m)^2, m = r^2 (discs) or r^3
  *    (spheres) (B.24-B.28);

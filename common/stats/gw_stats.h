@@ -308,17 +308,6 @@ typedef struct gw_stats_defaults {
     double rb_rm, alpha, vi, density;
 } gw_stats_defaults;
 
-/* The rows of t against the definitions of e_n, e, alpha_r (B.16-B.18) and
- * the energy ledger (gw_stats_bounds.c says per column why): GW_EFORMAT
- * "path:line: column C: ..." for a row no run writes (alpha_r above 90 deg
- * in a bouncing row, e_n cos(alpha_i) above e, a number where a row that did
- * not bounce has nan, ...); a row a run writes in an unusual case only (e
- * above what the incident energy and gravity's work give) is added to
- * *warnings (gw_warnings_add; warnings NULL: not said). alpha_i and V_i of a
- * row: its grid key, its "# param" line, else df's (df NULL or NaN: the
- * checks that need them are skipped). GW_ENOMEM for a warning not added. */
-int gw_stats_table_bounds(const gw_stats_table *t, const gw_stats_defaults *df, char **warnings, gw_err *err);
-
 /* The inputs of `granwave layer-stats` (its table: gw_stats_setup_params,
  * rows named as the command's flags; "input" is its positional argument). */
 typedef struct gw_stats_setup {

@@ -49,6 +49,7 @@
 
 #include "gw_stats.h"
 #include "gw_locale.h"
+#include "gw_stats_impl.h"
 
 /* the layer's default gravity (gw_layer_params, docs/physics.md 2.1): a table
  * records gravity only when the sweep set it */

@@ -21,6 +21,7 @@
 
 #include "gw_stats.h"
 #include "gw_locale.h"
+#include "gw_stats_impl.h"
 
 #define OFF(f) offsetof(gw_stats_setup, f)
 

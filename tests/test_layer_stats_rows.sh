@@ -17,12 +17,13 @@
 #    and line): e 1.6 at normal incidence, above what the incident energy and
 #    gravity's work over the penetration give;
 #  - read (exit 0, no such warning): e_n 1.2 at 40 deg of incidence with e
-#    1.0 (oblique impacts turn tangential momentum into normal), a row that did
+#    1.0 (oblique impacts turn tangential momentum into normal), a block loss
+#    of -5.1e-6 (the block gains energy falling the gap), a row that did
 #    not bounce as the model writes it (nan at the rebound columns), the
 #    measured 8000-case diagram (before e_n_first: its non-bouncing rows carry
 #    e_n), the table with CR LF line ends (the same statistics); a duplicated
 #    header column and a units line after the header are refused as before.
-# 12 of the 19 checks fail on the code before (the seven that pass: the five
+# 12 of the 20 checks fail on the code before (the eight that pass: the six
 # tables read without a warning, the duplicated column, the units line).
 set -u
 GW=$1
@@ -138,7 +139,10 @@ edit g.csv 0 bounced=0 e_n_first=nan e_first=nan alpha_r_first=nan v_nr_first=na
 read_ok "a row that did not bounce, nan at its rebound columns: read" g.csv
 # 8 a block loss of 1.5
 ln=$(edit h.csv "$c0" block_loss_first_contact=1.5)
-refused "block_loss_first_contact 1.5" h.csv "h\.csv:$ln: column block_loss_first_contact: 1\.5 is outside \[0, 1\]"
+refused "block_loss_first_contact 1.5" h.csv "h\.csv:$ln: column block_loss_first_contact: 1\.5 is above 1"
+# 9b a block loss below 0 (the block gained energy falling the gap: a run wrote -5.1e-6)
+edit h2.csv "$c0" block_loss_first_contact=-5.0776792151664117e-06 >/dev/null
+read_ok "block_loss_first_contact -5.1e-6: read" h2.csv
 # 9 v_nr above v_r
 ln=$(edit i.csv "$c0" v_nr=1e3)
 refused "v_nr above v_r" i.csv "i\.csv:$ln: column v_nr: 1000 m/s exceeds v_r"

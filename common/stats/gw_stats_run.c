@@ -2,7 +2,7 @@
  * gw_stats_run.c: the whole analysis of a layer sweep table (gw_stats.h),
  * the computation behind `granwave layer-stats` (docs/physics.md 2.3, 2.5):
  *  - per group (every grid key but `point`): the moments and shares of
- *    gw_stats_groups_make (gw_stats_table.c);
+ *    gw_stats_groups_make (gw_stats_groups.c);
  *  - binary-impact check: per R_b/R_m (and incidence) the block's energy loss
  *    in its first contact beside 4 m/(1 + m)^2, m = r^2 (discs) or r^3
  *    (spheres) (B.24-B.28);
@@ -21,6 +21,7 @@
 
 #include "gw_stats.h"
 #include "gw_locale.h"
+#include "gw_stats_impl.h"
 
 #define OFF(f) offsetof(gw_stats_setup, f)
 
@@ -414,6 +415,10 @@ int gw_stats_analyse(const gw_stats_setup *s, gw_stats_analysis *A, gw_err *err)
     A->defaults = s->defaults;
     rc = gw_stats_table_read(s->input, &A->t, err);
     A->input = A->t.path;
+    /* the rows against the definitions of e_n, e, alpha_r: with the run's
+     * settings, which the reader does not know */
+    if (rc == GW_OK && (rc = gw_stats_table_bounds(&A->t, &A->defaults, &A->warnings, err)) == GW_ENOMEM)
+        gw_err_set(err, rc, "%s: out of memory", A->input);
     /* the B.31 options act on the bouncing diagram only: refused, as having no
      * effect, on a table without one (given: set, at the row's default too) */
     if (rc == GW_OK && (gw_stats_table_key(&A->t, "rb-rm") < 0 || gw_stats_table_key(&A->t, "height-rm") < 0)) {

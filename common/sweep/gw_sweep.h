@@ -34,6 +34,9 @@ GW_BEGIN_DECLS /* the exported interface, C linkage (gw_api.h) */
  * their case config hash and read hash; the format before them said
  * "# granwave sweep journal HASH" alone and is refused (docs/formats.md). */
 #define GW_SWEEP_JOURNAL_HEAD "# granwave sweep journal %016lx, format 2"
+/* The number in GW_SWEEP_JOURNAL_HEAD: a journal of another format (an
+ * earlier one, a later granwave's) is refused naming both formats. */
+#define GW_SWEEP_JOURNAL_FORMAT 2
 
 typedef struct gw_sweep_key {
     char *name;

@@ -1,6 +1,6 @@
 /*
  * fuzz_sweep_config.c: libFuzzer target for the sweep config parser (libinih +
- * gw_sweep.c) and the grid expansion and row formatting that follow it. Any
+ * gw_sweep_config.c) and the grid expansion and row formatting that follow it. Any
  * input must give either a config or an error message; never a crash, a leak or
  * undefined behaviour (built with ASan + UBSan).
  */

@@ -14,11 +14,14 @@ SRC=$(cd "$1" && pwd); B=$(cd "$2" && pwd); T=${3:-10}
 if ! command -v clang >/dev/null; then echo "SKIP: clang not installed"; exit 0; fi
 out="$B/fuzz"; mkdir -p "$out"
 CF="-g -O1 -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=undefined -I$SRC/common -I$SRC/app -I$SRC/common/solver -I$SRC/common/sweep -I$SRC/common/stats -I$B/generated -D_DEFAULT_SOURCE"
+# the sweep module's files (common/CMakeLists.txt lists the same)
+sweep="$SRC/common/sweep/gw_sweep_config.c $SRC/common/sweep/gw_sweep_inputs.c $SRC/common/sweep/gw_sweep_rows.c
+ $SRC/common/sweep/gw_sweep_head.c $SRC/common/sweep/gw_sweep_journal.c $SRC/common/sweep/gw_sweep_table.c"
 common="$SRC/common/gw_common.c $SRC/common/gw_io.c $SRC/app/gw_cli.c $SRC/common/gw_json.c $SRC/common/gw_param.c $SRC/common/gw_locale.c"
-clang $CF -o "$out/fuzz_sweep_config" "$SRC/tests/fuzz/fuzz_sweep_config.c" "$SRC/common/sweep/gw_sweep.c" $common -linih -lcjson -lm
+clang $CF -o "$out/fuzz_sweep_config" "$SRC/tests/fuzz/fuzz_sweep_config.c" $sweep $common -linih -lcjson -lm
 clang $CF -o "$out/fuzz_cli" "$SRC/tests/fuzz/fuzz_cli.c" $common -lcjson -lm
 # the sweep journal a resumed sweep reads back, and the table written from it
-clang $CF -o "$out/fuzz_sweep_journal" "$SRC/tests/fuzz/fuzz_sweep_journal.c" "$SRC/common/sweep/gw_sweep.c" $common \
+clang $CF -o "$out/fuzz_sweep_journal" "$SRC/tests/fuzz/fuzz_sweep_journal.c" $sweep $common \
     -linih -lcjson -lm
 # the sweep table layer-stats reads, and the whole analysis after it (B.31 fit: GSL)
 clang $CF -o "$out/fuzz_stats_table" "$SRC/tests/fuzz/fuzz_stats_table.c" "$SRC"/common/stats/*.c "$SRC/common/gw_fit.c" "$SRC/common/gw_forklock.c" \

@@ -103,6 +103,9 @@ def made_up_table(path):
                     u = rng.random()
                     b = math.nan if u < 0.1 else float(u < 1.1 - h / (6 * x))
                     first = [rng.uniform(0.05, 0.4), rng.uniform(0.1, 0.5), rng.uniform(0, 60)]
+                    # e_n = e cos(alpha_r) / cos(alpha_i) (B.16-B.18 with V_nr = V_r cos(alpha_r)):
+                    # layer-stats refuses e_n cos(alpha_i) > e, a normal speed above the speed
+                    first[0] = first[1] * math.cos(math.radians(first[2])) / math.cos(math.radians(30))
                     cut = b == 1 and rng.random() < 0.2
                     ek = [math.nan] * 3 if b != 1 or cut else first
                     if b != 1:

@@ -1,0 +1,619 @@
+/*
+ * gw_sweep_config.c: a sweep config (libinih) read into gw_sweep_config: its
+ * [sweep], [grid] and [params] keys, the grid's values (lists, ranges A:B, a
+ * list continued over indented lines), the config's hash (FNV-1a 64 over the
+ * model, the keys, their values and the bytes of the files they name), and
+ * case k's values, the last grid key varying fastest (see gw_sweep.h).
+ * No units: values are kept as the config spells them.
+ */
+#define _POSIX_C_SOURCE 200809L
+#include <errno.h>
+#include <math.h>
+#include <stdio.h>
+#include <sys/file.h>
+#include <sys/stat.h>
+#include <fcntl.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include <ini.h>
+
+#include "gw_sweep.h"
+#include "gw_locale.h"
+#include "gw_sweep_impl.h"
+
+typedef struct parse_ctx {
+    gw_sweep_config *cfg;
+    const gw_sweep_model *const *models;
+    int nmodels;
+    char msg[400];
+    int line; /* current line, counted by the reader */
+    int failed; /* a handler call failed: later calls are ignored */
+    /* The reader's handler calls in order, as scan_lines found them: bit 0 a
+     * call that continues a [grid] list on an indented line, bit 1 a call that
+     * the next one continues. A continued list is gathered in 'pending' and
+     * read as one value at its last line. */
+    unsigned char *calls;
+    long ncalls, call;
+    char *pending;
+    int nomem; /* the failed call was out of memory (not a mistake of the file) */
+} parse_ctx;
+
+char *gw_sweep_strdup(const char *s)
+{
+    size_t n = strlen(s) + 1;
+    char *d = malloc(n);
+    if (d)
+        memcpy(d, s, n);
+    return d;
+}
+
+/* "A:B" with two integers (blanks allowed around them): a range, even when it is
+ * empty or out of bounds, so that its error is a range error. */
+static int looks_like_range(const char *v)
+{
+    const char *colon = strchr(v, ':');
+    if (!colon || strchr(colon + 1, ':'))
+        return 0;
+    for (const char *p = v; *p; p++)
+        if (p != colon && !(*p == ' ' || *p == '\t' || *p == '-' || *p == '+' || (*p >= '0' && *p <= '9')))
+            return 0;
+    return 1;
+}
+
+/* Split a grid value: "A:B" (integers) or "a, b, c". */
+/* Out of memory in a handler call: 0 (the call failed), the cause noted. */
+static int parse_nomem(parse_ctx *pc)
+{
+    pc->nomem = 1;
+    gw_snprintf(pc->msg, sizeof pc->msg, "out of memory");
+    return 0;
+}
+
+/* A [grid] value into k's values. An allocation that failed was read as an
+ * empty item ("empty value in list '0.2, 0.3'", exit 2) or stored as a null
+ * value that the duplicate check then read (SIGSEGV): out of memory now. */
+static int split_values(const char *value, gw_sweep_key *k, parse_ctx *pc)
+{
+    char *msg = pc->msg;
+    const size_t mlen = sizeof pc->msg;
+    long a, b;
+    gw_err err;
+    if (looks_like_range(value)) {
+        if (gw_parse_int_range(value, k->name, -1000000000L, 1000000000L, &a, &b, &err) != GW_OK) {
+            size_t l = strnlen(err.msg, mlen - 1); /* "5:1": an empty range, not "not an integer" */
+            memcpy(msg, err.msg, l);
+            msg[l] = '\0';
+            return 0;
+        }
+        if (b - a >= 1000000L) { /* each value is a string: bound the memory */
+            gw_snprintf(msg, mlen, "%s: range %s has more than 1000000 values", k->name, value);
+            return 0;
+        }
+        k->nvalues = (int)(b - a + 1);
+        k->values = calloc((size_t)k->nvalues, sizeof *k->values);
+        if (!k->values) {
+            k->nvalues = 0;
+            return parse_nomem(pc);
+        }
+        for (long i = 0; i <= b - a; i++) {
+            char buf[32];
+            gw_snprintf(buf, sizeof buf, "%ld", a + i);
+            if (!(k->values[i] = gw_sweep_strdup(buf)))
+                return parse_nomem(pc);
+        }
+        return 1;
+    }
+    char *copy = gw_sweep_strdup(value);
+    if (!copy)
+        return parse_nomem(pc);
+    int cap = 1;
+    for (const char *p = value; *p; p++)
+        cap += *p == ',';
+    k->values = calloc((size_t)cap, sizeof *k->values);
+    if (!k->values) {
+        free(copy);
+        return parse_nomem(pc);
+    }
+    char *save = NULL;
+    for (char *tok = strtok_r(copy, ",", &save); tok; tok = strtok_r(NULL, ",", &save)) {
+        char *t = gw_str_trim(tok);
+        if (!*t) {
+            gw_snprintf(msg, mlen, "%s: empty value in list '%s'", k->name, value);
+            free(copy);
+            return 0;
+        }
+        if (looks_like_range(t)) { /* "5:6, 7": the range was read as one value, "not an integer" */
+            gw_snprintf(msg, mlen, "%s: a range '%s' cannot be an item of the list '%s': give a range A:B "
+                        "alone, or list every value", k->name, t, value);
+            free(copy);
+            return 0;
+        }
+        if (!(k->values[k->nvalues] = gw_sweep_strdup(t))) {
+            free(copy);
+            return parse_nomem(pc);
+        }
+        k->nvalues++;
+    }
+    free(copy);
+    if (k->nvalues != cap) {
+        gw_snprintf(msg, mlen, "%s: empty value in list '%s'", k->name, value);
+        return 0;
+    }
+    /* a value listed twice runs the same case twice: the table then holds a
+     * combination twice and its statistics count it twice ("1, 1.0" too, and
+     * a flag's words: "1, true", "0, FALSE") */
+    for (int i = 0; k->values && i < k->nvalues; i++)
+        for (int j = 0; j < i; j++) {
+            char *ei, *ej;
+            double vi = gw_strtod(k->values[i], &ei), vj = gw_strtod(k->values[j], &ej);
+            const int fi = gw_parse_flag(k->values[i]), fj = gw_parse_flag(k->values[j]);
+            if (strcmp(k->values[i], k->values[j]) == 0 || (!*ei && !*ej && ei != k->values[i] && vi == vj) ||
+                (fi >= 0 && fi == fj)) {
+                gw_snprintf(msg, mlen, "%s: '%s' and '%s' in list '%s' are the same value (each case would run "
+                         "twice)", k->name, k->values[j], k->values[i], value);
+                return 0;
+            }
+        }
+    return k->values != NULL;
+}
+
+static int find_key(const gw_sweep_key *keys, int n, const char *name)
+{
+    for (int i = 0; i < n; i++)
+        if (strcmp(keys[i].name, name) == 0)
+            return i;
+    return -1;
+}
+
+/* libinih goes on after a handler error and reports the first error's line: keep
+ * the first message too (a misspelt model would otherwise be reported as the
+ * next section's "model must come before"). */
+static int handler_one(parse_ctx *pc, const char *section, const char *name, const char *value);
+
+static int handler(void *user, const char *section, const char *name, const char *value)
+{
+    parse_ctx *pc = user;
+    const long i = pc->call++;
+    const int part = i < pc->ncalls ? pc->calls[i] : 0;
+    if (pc->failed)
+        return 0;
+    if (part) { /* a [grid] list over several lines: "a, b," then "  c, d" */
+        size_t have = pc->pending ? strlen(pc->pending) : 0, add = strlen(value);
+        char *p = realloc(pc->pending, have + add + 2);
+        if (!p) {
+            pc->failed = 1;
+            return parse_nomem(pc);
+        }
+        if (have)
+            p[have++] = ' ';
+        memcpy(p + have, value, add + 1);
+        pc->pending = p;
+        if (part & 2)
+            return 1; /* more to come */
+        value = pc->pending;
+    }
+    int ok = handler_one(pc, section, name, value);
+    if (part) {
+        free(pc->pending);
+        pc->pending = NULL;
+    }
+    if (!ok)
+        pc->failed = 1;
+    return ok;
+}
+
+static int handler_one(parse_ctx *pc, const char *section, const char *name, const char *value)
+{
+    gw_sweep_config *cfg = pc->cfg;
+    if (strcmp(section, "sweep") == 0) {
+        char **dst = strcmp(name, "model") == 0 ? &cfg->model : strcmp(name, "out") == 0 ? &cfg->out : NULL;
+        if (!dst) {
+            gw_snprintf(pc->msg, sizeof pc->msg, "unknown key '%s' in [sweep] (model, out)", name);
+            return 0;
+        }
+        if (*dst) {
+            gw_snprintf(pc->msg, sizeof pc->msg, "duplicate key '%s'", name);
+            return 0;
+        }
+        if (!*value) {
+            gw_snprintf(pc->msg, sizeof pc->msg, "empty value for '%s'", name);
+            return 0;
+        }
+        if (dst == &cfg->model) {
+            int known = 0;
+            for (int i = 0; i < pc->nmodels; i++)
+                known |= strcmp(pc->models[i]->name, value) == 0;
+            if (!known) {
+                gw_snprintf(pc->msg, sizeof pc->msg, "unknown model '%s'", value);
+                return 0;
+            }
+        }
+        *dst = gw_sweep_strdup(value);
+        return *dst ? 1 : parse_nomem(pc);
+    }
+    int is_grid = strcmp(section, "grid") == 0;
+    if (!is_grid && strcmp(section, "params") != 0) {
+        gw_snprintf(pc->msg, sizeof pc->msg, "unknown section [%s] (sweep, grid, params)", section);
+        return 0;
+    }
+    if (!cfg->model) {
+        gw_snprintf(pc->msg, sizeof pc->msg, "[sweep] model must come before [%s]", section);
+        return 0;
+    }
+    const gw_sweep_model *m = NULL;
+    for (int i = 0; i < pc->nmodels; i++)
+        if (strcmp(pc->models[i]->name, cfg->model) == 0)
+            m = pc->models[i];
+    if (!m) {
+        gw_snprintf(pc->msg, sizeof pc->msg, "unknown model '%s'", cfg->model);
+        return 0;
+    }
+    if (!m->has_key(name)) {
+        gw_snprintf(pc->msg, sizeof pc->msg, "'%s' is not an option of model %s", name, cfg->model);
+        return 0;
+    }
+    if (find_key(cfg->grid, cfg->ngrid, name) >= 0 || find_key(cfg->params, cfg->nparams, name) >= 0) {
+        gw_snprintf(pc->msg, sizeof pc->msg, "duplicate key '%s'", name);
+        return 0;
+    }
+    gw_sweep_key *keys = is_grid ? cfg->grid : cfg->params;
+    int *nk = is_grid ? &cfg->ngrid : &cfg->nparams;
+    if (*nk >= GW_SWEEP_MAX_KEYS) {
+        gw_snprintf(pc->msg, sizeof pc->msg, "more than %d keys in [%s]", GW_SWEEP_MAX_KEYS, section);
+        return 0;
+    }
+    gw_sweep_key *k = &keys[(*nk)++];
+    memset(k, 0, sizeof *k);
+    k->name = gw_sweep_strdup(name);
+    if (!k->name)
+        return parse_nomem(pc);
+    if (is_grid)
+        return split_values(value, k, pc);
+    k->values = calloc(1, sizeof *k->values);
+    if (!k->values || !(k->values[0] = gw_sweep_strdup(value)))
+        return parse_nomem(pc);
+    k->nvalues = 1;
+    return 1;
+}
+
+static unsigned long fnv64(unsigned long h, const char *s)
+{
+    for (; *s; s++) {
+        h ^= (unsigned char)*s;
+        h *= 1099511628211UL;
+    }
+    return h ^ 0xff; /* separator */
+}
+
+/* A value that names an existing regular file (a layer sample, say) adds the
+ * file's bytes to the config hash: a journal made with another version of the
+ * file is then refused instead of silently mixing rows of both. */
+static unsigned long fnv64_file(unsigned long h, const char *path, int *nomem)
+{
+    struct stat sb;
+    if (stat(path, &sb) != 0 || !S_ISREG(sb.st_mode))
+        return h;
+    FILE *f = NULL;
+    gw_err err;
+    int rc = gw_input_open(path, "sweep", &f, &err); /* never blocks on a FIFO */
+    if (rc == GW_ENOMEM) /* the file left out of the hash: another sweep's identity */
+        *nomem = 1;
+    if (rc != GW_OK)
+        return h;
+    unsigned char buf[8192]; /* 64 KiB here overflowed a 64 KiB stack (ulimit -s 64) */
+    size_t got;
+    while ((got = fread(buf, 1, sizeof buf, f)) > 0)
+        for (size_t i = 0; i < got; i++) {
+            h ^= buf[i];
+            h *= 1099511628211UL;
+        }
+    fclose(f);
+    return h ^ 0xfe;
+}
+
+static int config_finish(const char *path, const char *base, const gw_sweep_model *const *models, int nmodels,
+                         gw_sweep_config *cfg, const gw_sweep_model **model, int rc,
+                         const parse_ctx *pc, gw_err *err);
+
+/* libinih reads an indented line after a key as more of that key's value
+ * (Python's multi-line style) and passes it to the handler under the key's
+ * name again. In [grid] that continues a long list: a line whose value ends
+ * with a comma goes on over the indented lines after it (each line within the
+ * reader's buffer, below), and pc->calls marks those handler calls so that the
+ * handler reads the list whole. Anywhere else such a line was misread ('  rings
+ * = 4' after 't-max = 0.003' refused as "duplicate key 't-max'", an indented
+ * '  [params]' after 'vi = 10, 20' as "duplicate key 'vi'": the wrong key and
+ * the wrong cause), so it is refused here, naming the key it would continue.
+ * The rules are the reader's: an indented line that is neither blank nor a
+ * comment continues the last key since the last section header; a ';' after a
+ * blank starts a comment; a line with neither '=' nor ':' calls no handler. */
+static int scan_lines(const char *text, const char *name, parse_ctx *pc, gw_err *err)
+{
+    char key[64] = "";
+    long key_ln = 0, ln = 1, cap = 0;
+    int in_grid = 0, comma = 0; /* the last value line of the key ends with ',' */
+    for (const char *p = text; *p; ln++) {
+        const char *e = strchr(p, '\n');
+        size_t len = e ? (size_t)(e - p) : strlen(p);
+        size_t i = 0;
+        if (ln == 1 && len >= 3 && memcmp(p, "\xef\xbb\xbf", 3) == 0)
+            i = 3; /* the BOM the reader skips */
+        const size_t lead = i;
+        while (i < len && (p[i] == ' ' || p[i] == '\t' || p[i] == '\r' || p[i] == '\f' || p[i] == '\v'))
+            i++;
+        const int blank = i == len, comment = !blank && (p[i] == ';' || p[i] == '#');
+        /* the line's end without an inline comment and trailing blanks */
+        size_t end = i;
+        while (end < len && !(p[end] == ';' && end > i && (p[end - 1] == ' ' || p[end - 1] == '\t')))
+            end++;
+        while (end > i && (p[end - 1] == ' ' || p[end - 1] == '\t' || p[end - 1] == '\r'))
+            end--;
+        int call = -1; /* this line's handler call: 0 a key, 1 a continuation */
+        if (!blank && !comment) {
+            if (i > lead && key[0]) {
+                /* (a section header or a key there is a mistake, not values) */
+                if (!(in_grid && comma))
+                    return gw_err_set(err, GW_EINVAL, "%s:%ld: an indented line: the config reader takes it as "
+                                      "more of the value of '%s' (line %ld); remove the indentation (a [grid] "
+                                      "list goes on over indented lines after a line ending with a comma)", name,
+                                      ln, key, key_ln);
+                if (p[i] == '[' || memchr(p + i, '=', end - i))
+                    return gw_err_set(err, GW_EINVAL, "%s:%ld: an indented %s where the list of '%s' (line %ld) "
+                                      "goes on after its comma; remove the indentation", name, ln,
+                                      p[i] == '[' ? "section header" : "key", key, key_ln);
+                call = 1;
+            } else if (p[i] == '[') {
+                key[0] = '\0';
+                const char *q = memchr(p + i, ']', len - i);
+                in_grid = q && q - (p + i) == 5 && memcmp(p + i, "[grid", 5) == 0;
+            } else {
+                size_t k = i;
+                while (k < len && p[k] != '=' && p[k] != ':')
+                    k++;
+                size_t kl = k;
+                while (kl > i && (p[kl - 1] == ' ' || p[kl - 1] == '\t'))
+                    kl--;
+                if (k < len) {
+                    gw_snprintf(key, sizeof key, "%.*s", (int)(kl - i), p + i);
+                    key_ln = ln;
+                    call = 0;
+                }
+            }
+        }
+        if (call >= 0) {
+            if (pc->ncalls == cap) {
+                cap = cap ? 2 * cap : 64;
+                unsigned char *c = realloc(pc->calls, (size_t)cap);
+                if (!c)
+                    return gw_err_set(err, GW_ENOMEM, "%s: out of memory", name);
+                pc->calls = c;
+            }
+            pc->calls[pc->ncalls] = (unsigned char)call;
+            if (call == 1)
+                pc->calls[pc->ncalls - 1] |= 2; /* the previous call is this key's (blank and comment lines make none) */
+            pc->ncalls++;
+            comma = end > i && p[end - 1] == ',';
+        }
+        if (!e)
+            break;
+        p = e + 1;
+    }
+    return GW_OK;
+}
+
+/* libinih reads a line into INI_MAX_LINE bytes (200 in Debian's build) and
+ * parses what does not fit as the next line: 'point = 0, 1, ..., 99' was cut
+ * after '49, 5' (refused as the value 5 listed twice; granwave.sweep writes
+ * its lists this way), a longer value ended as a syntax error on the wrong
+ * line or a path cut short. Lines that do not fit are refused whole. */
+static int lines_fit(const char *text, const char *name, parse_ctx *pc, gw_err *err)
+{
+    const long max = INI_MAX_LINE - 2; /* the newline and the NUL fit too */
+    long ln = 1;
+    for (const char *p = text; *p; ln++) {
+        const char *e = strchr(p, '\n');
+        long len = e ? (long)(e - p) : (long)strlen(p);
+        if (len > 0 && p[len - 1] == '\r')
+            len--;
+        if (len > max)
+            return gw_err_set(err, GW_EINVAL, "%s:%ld: a line of %ld characters, above the %ld the config reader "
+                              "takes: give integers as a range A:B, or go on over indented lines after a comma", name, ln, len, max);
+        if (!e)
+            break;
+        p = e + 1;
+    }
+    return scan_lines(text, name, pc, err);
+}
+
+int gw_sweep_config_read(const char *path, const gw_sweep_model *const *models, int nmodels,
+                         gw_sweep_config *cfg, const gw_sweep_model **model, gw_err *err)
+{
+    if (!cfg || !model || !path || !models)
+        return gw_err_set(err, GW_EINVAL, "gw_sweep_config_read: %s is NULL",
+                          !cfg ? "cfg" : !model ? "model" : !path ? "path" : "models");
+    memset(cfg, 0, sizeof *cfg);
+    *model = NULL;
+    parse_ctx pc = {cfg, models, nmodels, "", 0, 0, NULL, 0, 0, NULL, 0};
+    char *text = NULL;
+    size_t len = 0;
+    int rc = gw_input_read(path, "sweep CONFIG", GW_SWEEP_CONFIG_MAX, &text, &len, err);
+    if (rc != GW_OK) /* a config that cannot be read is bad input (exit 2); out of memory is not */
+        return rc == GW_ENOMEM ? rc : GW_EINVAL;
+    /* the reader takes the text as a C string: everything after a NUL byte was
+     * dropped without a word ('rings = 2' after one ran the default rings) */
+    const char *nul = memchr(text, '\0', len);
+    if (nul) {
+        long ln = 1;
+        for (const char *q = text; q < nul; q++)
+            ln += *q == '\n';
+        free(text);
+        return gw_err_set(err, GW_EINVAL, "%s:%ld: a NUL byte (binary data, not a config)", path, ln);
+    }
+    if ((rc = lines_fit(text, path, &pc, err)) != GW_OK) {
+        free(text);
+        free(pc.calls);
+        return rc == GW_ENOMEM ? rc : GW_EINVAL;
+    }
+    rc = ini_parse_string(text, handler, &pc);
+    free(text);
+    free(pc.calls);
+    free(pc.pending);
+    int drc = GW_OK;
+    char *base = gw_sweep_config_dir(path, &drc, err);
+    if (!base) {
+        gw_sweep_config_free(cfg);
+        return drc;
+    }
+    rc = config_finish(path, base, models, nmodels, cfg, model, rc, &pc, err);
+    free(base);
+    if (rc != GW_OK)
+        return rc;
+    if (!(cfg->path = strdup(path))) {
+        gw_sweep_config_free(cfg);
+        *model = NULL;
+        return gw_err_set(err, GW_ENOMEM, "%s: out of memory", path);
+    }
+    return GW_OK;
+}
+
+int gw_sweep_config_read_string(const char *text, const char *name, const gw_sweep_model *const *models,
+                                int nmodels, gw_sweep_config *cfg, const gw_sweep_model **model, gw_err *err)
+{
+    if (!cfg || !model || !text || !models)
+        return gw_err_set(err, GW_EINVAL, "gw_sweep_config_read_string: %s is NULL",
+                          !cfg ? "cfg" : !model ? "model" : !text ? "text" : "models");
+    memset(cfg, 0, sizeof *cfg);
+    *model = NULL;
+    /* the bound of a config file (gw_sweep_config_read), for a config given as text too */
+    size_t len = strlen(text);
+    if (len > (size_t)GW_SWEEP_CONFIG_MAX)
+        return gw_err_set(err, GW_EINVAL, "%s: the config takes %zu bytes, above the %ld of a sweep config", name,
+                          len, GW_SWEEP_CONFIG_MAX);
+    parse_ctx pc = {cfg, models, nmodels, "", 0, 0, NULL, 0, 0, NULL, 0};
+    int lrc = lines_fit(text, name, &pc, err);
+    if (lrc != GW_OK) {
+        free(pc.calls);
+        return lrc == GW_ENOMEM ? lrc : GW_EINVAL;
+    }
+    int rc = ini_parse_string(text, handler, &pc);
+    free(pc.calls);
+    free(pc.pending);
+    return config_finish(name, NULL, models, nmodels, cfg, model, rc, &pc, err);
+}
+
+static int config_finish(const char *path, const char *base, const gw_sweep_model *const *models, int nmodels,
+                         gw_sweep_config *cfg, const gw_sweep_model **model, int rc,
+                         const parse_ctx *pc, gw_err *err)
+{
+    if (rc == -1) {
+        gw_sweep_config_free(cfg);
+        return gw_err_set(err, GW_EINVAL, "%s: cannot open the config file", path);
+    }
+    if (rc == -2 || (rc > 0 && pc->nomem)) { /* the reader's line buffer, or a handler's copy */
+        gw_sweep_config_free(cfg);
+        return gw_err_set(err, GW_ENOMEM, "%s: out of memory reading the config", path);
+    }
+    if (rc != 0) {
+        gw_err_set(err, GW_EINVAL, "%s:%d: %s", path, rc, pc->msg[0] ? pc->msg : "syntax error");
+        gw_sweep_config_free(cfg);
+        return GW_EINVAL;
+    }
+    if (!cfg->model) {
+        gw_sweep_config_free(cfg);
+        return gw_err_set(err, GW_EINVAL, "%s: no [sweep] model", path);
+    }
+    for (int i = 0; i < nmodels; i++)
+        if (strcmp(models[i]->name, cfg->model) == 0)
+            *model = models[i];
+    if (!*model) {
+        gw_err_set(err, GW_EINVAL, "%s: unknown model '%s'", path, cfg->model);
+        gw_sweep_config_free(cfg);
+        return GW_EINVAL;
+    }
+    cfg->read_key = (*model)->read_key;
+    if (cfg->ngrid == 0) {
+        gw_sweep_config_free(cfg);
+        return gw_err_set(err, GW_EINVAL, "%s: the [grid] section is empty or missing", path);
+    }
+    if (base && (rc = gw_sweep_resolve_paths(cfg, base, path, err)) != GW_OK) {
+        gw_sweep_config_free(cfg);
+        return rc;
+    }
+    cfg->ncases = 1;
+    int nomem = 0;
+    unsigned long h = fnv64(14695981039346656037UL, cfg->model);
+    for (int i = 0; i < cfg->ngrid; i++) {
+        cfg->ncases *= cfg->grid[i].nvalues;
+        if (cfg->ncases > 1000000000L) {
+            gw_sweep_config_free(cfg);
+            return gw_err_set(err, GW_EINVAL, "%s: the grid has more than 1e9 cases", path);
+        }
+        h = fnv64(h, cfg->grid[i].name);
+        const int file = gw_sweep_names_file(cfg, cfg->grid[i].name);
+        for (int j = 0; j < cfg->grid[i].nvalues; j++) {
+            h = fnv64(h, cfg->grid[i].values[j]);
+            if (file)
+                h = fnv64_file(h, cfg->grid[i].values[j], &nomem);
+        }
+    }
+    for (int i = 0; i < cfg->nparams; i++) {
+        h = fnv64(fnv64(h, cfg->params[i].name), cfg->params[i].values[0]);
+        if (gw_sweep_names_file(cfg, cfg->params[i].name))
+            h = fnv64_file(h, cfg->params[i].values[0], &nomem);
+    }
+    if (nomem) {
+        gw_sweep_config_free(cfg);
+        return gw_err_set(err, GW_ENOMEM, "%s: out of memory reading the files it names", path);
+    }
+    cfg->hash = h;
+    return gw_sweep_find_inputs(path, cfg, err);
+}
+
+static void free_keys(gw_sweep_key *k, int n)
+{
+    for (int i = 0; i < n; i++) {
+        for (int j = 0; k[i].values && j < k[i].nvalues; j++)
+            free(k[i].values[j]);
+        free(k[i].values);
+        free(k[i].name);
+    }
+}
+
+void gw_sweep_config_free(gw_sweep_config *cfg)
+{
+    if (!cfg)
+        return;
+    free_keys(cfg->grid, cfg->ngrid);
+    free_keys(cfg->params, cfg->nparams);
+    free(cfg->inputs);
+    free(cfg->model);
+    free(cfg->out);
+    free(cfg->path);
+    memset(cfg, 0, sizeof *cfg);
+}
+
+int gw_sweep_case(const gw_sweep_config *cfg, long k, const char **names, const char **values)
+{
+    if (k < 0 || k >= cfg->ncases)
+        return GW_EINVAL;
+    for (int i = cfg->ngrid - 1; i >= 0; i--) {
+        names[i] = cfg->grid[i].name;
+        values[i] = cfg->grid[i].values[k % cfg->grid[i].nvalues];
+        k /= cfg->grid[i].nvalues;
+    }
+    for (int i = 0; i < cfg->nparams; i++) {
+        names[cfg->ngrid + i] = cfg->params[i].name;
+        values[cfg->ngrid + i] = cfg->params[i].values[0];
+    }
+    return GW_OK;
+}
+
+unsigned long long gw_sweep_case_hash(const gw_sweep_config *cfg, long k)
+{
+    const char *names[2 * GW_SWEEP_MAX_KEYS], *values[2 * GW_SWEEP_MAX_KEYS];
+    if (gw_sweep_case(cfg, k, names, values) != GW_OK)
+        return 0;
+    return gw_case_config_hash(cfg->model, cfg->ngrid + cfg->nparams, names, values);
+}

@@ -1,0 +1,52 @@
+/*
+ * gw_sweep_impl.h: what the files of the sweep module share and the library
+ * does not export (it is built with -fvisibility=hidden; gw_sweep.h is the
+ * module's public header). Errors as in gw_sweep.h: GW_EINVAL naming the
+ * file, key or line, GW_ENOMEM, GW_EIO.
+ */
+#ifndef GW_SWEEP_IMPL_H
+#define GW_SWEEP_IMPL_H
+
+#include <stddef.h>
+
+#include "gw_sweep.h"
+
+/* gw_sweep_config.c: a copy of s (malloc'd), NULL on ENOMEM. */
+char *gw_sweep_strdup(const char *s);
+
+/* gw_sweep_inputs.c: the config's directory (malloc'd; NULL with *status and
+ * err set), its relative paths resolved from base, whether key name is the
+ * model's read key (its values name files), and the files' hashes. */
+char *gw_sweep_config_dir(const char *path, int *status, gw_err *err);
+int gw_sweep_resolve_paths(gw_sweep_config *cfg, const char *base, const char *path, gw_err *err);
+int gw_sweep_names_file(const gw_sweep_config *cfg, const char *name);
+int gw_sweep_find_inputs(const char *path, gw_sweep_config *cfg, gw_err *err);
+
+/* gw_sweep_rows.c: a complete journal line's case number (-1: not a row of
+ * ncases with a good checksum); why a line is not one of this sweep's rows
+ * (static text, or msg filled; NULL: it is). */
+long gw_sweep_line_case(const char *line, size_t len, long ncases);
+const char *gw_sweep_line_fault(const char *line, size_t len, long ncases);
+const char *gw_sweep_row_grid_fault(const gw_sweep_config *cfg, long k, const char *line, size_t len);
+const char *gw_sweep_row_hash_fault(const gw_sweep_config *cfg, long k, const char *s, size_t len, int live,
+                                    char *msg, size_t n);
+
+/* gw_sweep_head.c: a new journal's "# input", "# grid" and "# param" lines
+ * (malloc'd, NULL on ENOMEM); an existing journal of another config or
+ * format: which key or file differs (GW_OK when it cannot tell), an "# input"
+ * line's hash, the first line's format (1 and *fmt, *hash; 2: a head no
+ * granwave writes; 0: no granwave journal) and the first line for a message. */
+char *gw_sweep_head_lines(const gw_sweep_config *cfg);
+int gw_sweep_head_changed_keys(const gw_sweep_config *cfg, const char *buf, size_t len, const char *dir, gw_err *err);
+int gw_sweep_head_input_hash(const char *path, long lineno, const char *line, const char *end, const char **at,
+                             unsigned long long *h, gw_err *err);
+int gw_sweep_head_changed_input(const gw_sweep_config *cfg, const char *buf, size_t len, const char *path,
+                                const char *dir, gw_err *err);
+int gw_sweep_head_format(const char *buf, size_t len, long *fmt, unsigned long *hash);
+void gw_sweep_head_first_line(const char *buf, size_t len, char *out, size_t n);
+
+/* gw_sweep_journal.c: the journal or table read whole (a regular file only),
+ * NULL with errno set (ENOENT absent, ENOMEM) and err filled. */
+char *gw_sweep_slurp(const char *path, size_t *len, gw_err *err);
+
+#endif

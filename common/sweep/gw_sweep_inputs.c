@@ -1,0 +1,222 @@
+/*
+ * gw_sweep_inputs.c: the files a sweep config names: relative paths taken
+ * from the config's directory, the regular files the model reads (a layer
+ * sample) hashed when the config is read (FNV-1a 64 of their bytes), checked
+ * unchanged before a case's row is kept, and never one of the sweep's own
+ * outputs (DIR/journal.csv, DIR/results.csv). No units.
+ */
+#define _POSIX_C_SOURCE 200809L
+#include <errno.h>
+#include <math.h>
+#include <stdio.h>
+#include <sys/file.h>
+#include <sys/stat.h>
+#include <fcntl.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "gw_sweep.h"
+#include "gw_locale.h"
+#include "gw_sweep_impl.h"
+
+/* The directory of the config file at path, absolute (realpath of the part
+ * before its last '/', "." without one); NULL with err set when it cannot be
+ * found. */
+char *gw_sweep_config_dir(const char *path, int *status, gw_err *err)
+{
+    const char *slash = strrchr(path, '/');
+    char *dir = slash ? malloc((size_t)(slash - path) + 2) : gw_sweep_strdup(".");
+    if (dir && slash) {
+        const size_t n = slash == path ? 1 : (size_t)(slash - path); /* "/x.ini": "/" */
+        memcpy(dir, path, n);
+        dir[n] = '\0';
+    }
+    char *real = dir ? realpath(dir, NULL) : NULL;
+    const int e = errno;
+    free(dir);
+    if (!real)
+        *status = gw_err_set(err, e == ENOMEM || !dir ? GW_ENOMEM : GW_EINVAL,
+                             "%s: cannot find the config's directory: %s", path, strerror(e));
+    return real;
+}
+
+/* value resolved against base (the config's directory): a relative path is
+ * taken from the config's directory, an absolute one is kept. *value
+ * replaced by a new string; GW_ENOMEM. */
+static int resolve_one(char **value, const char *base)
+{
+    if ((*value)[0] == '/')
+        return GW_OK;
+    const size_t bl = strlen(base), vl = strlen(*value);
+    char *r = malloc(bl + vl + 2);
+    if (!r)
+        return GW_ENOMEM;
+    memcpy(r, base, bl);
+    size_t at = bl;
+    if (!(bl > 0 && base[bl - 1] == '/')) /* base "/" */
+        r[at++] = '/';
+    memcpy(r + at, *value, vl + 1);
+    free(*value);
+    *value = r;
+    return GW_OK;
+}
+
+/* A relative file named in the config that is not there: refused naming the
+ * key, the value as written and the path it was taken as. */
+static int resolved_missing(const char *path, const char *section, const char *key, const char *written,
+                            const char *resolved, gw_err *err)
+{
+    struct stat sb;
+    if (stat(resolved, &sb) == 0 || (errno != ENOENT && errno != ENOTDIR))
+        return GW_OK; /* there (or unreadable: the model's check names it) */
+    return gw_err_set(err, GW_EINVAL, "%s: [%s] %s = %s: no such file %s (a relative path in a config is taken "
+                      "from the config's directory)", path, section, key, written, resolved);
+}
+
+/* The paths a config names, taken from the config's directory (base,
+ * absolute) instead of the working directory: [sweep] out and the values of
+ * the model's read_key (the layer's sample). The same config then names the
+ * same files from every working directory, and the journal and the table
+ * record the paths the cases read. A relative read_key value that names
+ * nothing there is refused. */
+int gw_sweep_resolve_paths(gw_sweep_config *cfg, const char *base, const char *path, gw_err *err)
+{
+    if (cfg->out && resolve_one(&cfg->out, base) != GW_OK)
+        return gw_err_set(err, GW_ENOMEM, "%s: out of memory", path);
+    if (!cfg->read_key)
+        return GW_OK;
+    for (int s = 0; s < 2; s++) {
+        gw_sweep_key *keys = s ? cfg->params : cfg->grid;
+        const int nk = s ? cfg->nparams : cfg->ngrid;
+        for (int i = 0; i < nk; i++) {
+            if (strcmp(keys[i].name, cfg->read_key) != 0)
+                continue;
+            for (int j = 0; j < keys[i].nvalues; j++) {
+                if (keys[i].values[j][0] == '/')
+                    continue;
+                char *written = gw_sweep_strdup(keys[i].values[j]);
+                int rc = written ? resolve_one(&keys[i].values[j], base) : GW_ENOMEM;
+                if (rc != GW_OK) {
+                    free(written);
+                    return gw_err_set(err, GW_ENOMEM, "%s: out of memory", path);
+                }
+                rc = resolved_missing(path, s ? "params" : "grid", keys[i].name, written, keys[i].values[j], err);
+                free(written);
+                if (rc != GW_OK)
+                    return rc;
+            }
+        }
+    }
+    return GW_OK;
+}
+
+/* A value naming a regular file: its content hash into cfg->inputs (once per
+ * key and value). */
+static int add_input(gw_sweep_config *cfg, const char *key, const char *value, long *cap)
+{
+    struct stat sb;
+    if (stat(value, &sb) != 0 || !S_ISREG(sb.st_mode))
+        return GW_OK;
+    unsigned long long fh;
+    gw_err e;
+    int rc = gw_fnv1a64_file(value, "sweep", &fh, &e);
+    if (rc != GW_OK) /* unreadable: the model's check names it; out of memory: said here */
+        return rc == GW_ENOMEM ? rc : GW_OK;
+    for (int i = 0; i < cfg->ninputs; i++)
+        if (strcmp(cfg->inputs[i].key, key) == 0 && strcmp(cfg->inputs[i].value, value) == 0)
+            return GW_OK;
+    if (cfg->ninputs == *cap) {
+        long nc = *cap ? 2 * *cap : 8;
+        void *p = realloc(cfg->inputs, (size_t)nc * sizeof *cfg->inputs);
+        if (!p)
+            return GW_ENOMEM;
+        cfg->inputs = p;
+        *cap = nc;
+    }
+    cfg->inputs[cfg->ninputs++] = (struct gw_sweep_input){key, value, fh};
+    return GW_OK;
+}
+
+/* 1 when the values of key name name files the cases read: the model's
+ * read_key only. Every value that named a regular file was taken as one: a
+ * chain sweep ('solver = rk4', 'n = 1:40') run where a file 'rk4' or '5'
+ * happened to be had that file's bytes in its identity, so its rerun from
+ * another directory, or after the file changed, was refused as "another
+ * sweep (different config)", and a change to the file while it ran stopped
+ * it ("solver 'rk4' changed while the sweep ran"). */
+int gw_sweep_names_file(const gw_sweep_config *cfg, const char *name)
+{
+    return cfg->read_key && strcmp(cfg->read_key, name) == 0;
+}
+
+int gw_sweep_find_inputs(const char *path, gw_sweep_config *cfg, gw_err *err)
+{
+    long cap = 0;
+    int rc = GW_OK;
+    for (int i = 0; rc == GW_OK && i < cfg->ngrid; i++)
+        for (int j = 0; rc == GW_OK && gw_sweep_names_file(cfg, cfg->grid[i].name) && j < cfg->grid[i].nvalues; j++)
+            rc = add_input(cfg, cfg->grid[i].name, cfg->grid[i].values[j], &cap);
+    for (int i = 0; rc == GW_OK && i < cfg->nparams; i++)
+        if (gw_sweep_names_file(cfg, cfg->params[i].name))
+            rc = add_input(cfg, cfg->params[i].name, cfg->params[i].values[0], &cap);
+    if (rc != GW_OK) {
+        gw_sweep_config_free(cfg);
+        return gw_err_set(err, rc, "%s: out of memory", path);
+    }
+    return GW_OK;
+}
+
+int gw_sweep_inputs_check(const gw_sweep_config *cfg, gw_err *err)
+{
+    return gw_sweep_case_inputs_check(cfg, -1, err);
+}
+
+/* 1 when case k (k < 0: every case) reads input in. */
+static int case_reads(const gw_sweep_config *cfg, long k, const struct gw_sweep_input *in)
+{
+    const char *names[2 * GW_SWEEP_MAX_KEYS], *values[2 * GW_SWEEP_MAX_KEYS];
+    if (k < 0 || gw_sweep_case(cfg, k, names, values) != GW_OK)
+        return 1;
+    for (int j = 0; j < cfg->ngrid + cfg->nparams; j++)
+        if (strcmp(names[j], in->key) == 0 && strcmp(values[j], in->value) == 0)
+            return 1;
+    return 0;
+}
+
+int gw_sweep_case_inputs_check(const gw_sweep_config *cfg, long k, gw_err *err)
+{
+    for (int i = 0; i < cfg->ninputs; i++) {
+        const struct gw_sweep_input *in = &cfg->inputs[i];
+        if (!case_reads(cfg, k, in))
+            continue;
+        unsigned long long fh = 0;
+        gw_err e;
+        if (gw_fnv1a64_file(in->value, in->key, &fh, &e) != GW_OK)
+            return gw_err_set(err, GW_EINVAL, "%s '%s' cannot be read any more while the sweep runs (%s)", in->key,
+                              in->value, e.msg);
+        if (fh != in->hash)
+            return gw_err_set(err, GW_EINVAL, "%s '%s' changed while the sweep ran (content fnv1a64 %016llx when it "
+                              "started, now %016llx): the case that just finished may have read either; its row is "
+                              "not kept. Restore the file and rerun to resume, or start a new sweep", in->key,
+                              in->value, in->hash, fh);
+    }
+    return GW_OK;
+}
+
+int gw_sweep_out_inputs_check(const char *dir, const gw_sweep_config *cfg, gw_err *err)
+{
+    /* an input file of the sweep that is its journal or table: the table would
+     * replace it (a sample named results.csv in DIR, exit 0 before; the
+     * config itself named DIR/results.csv, or a link to it, until the
+     * twenty-first pass) */
+    static const char *const outs[] = {"journal.csv", "results.csv", NULL};
+    if (!dir || !cfg)
+        return gw_err_set(err, GW_EINVAL, "gw_sweep_out_inputs_check: %s is NULL", !dir ? "dir" : "cfg");
+    if (cfg->path && gw_outset_check_input(dir, outs, cfg->path, "sweep CONFIG", err) != GW_OK)
+        return GW_EINVAL;
+    for (int i = 0; i < cfg->ninputs; i++)
+        if (gw_outset_check_input(dir, outs, cfg->inputs[i].value, "sweep", err) != GW_OK)
+            return GW_EINVAL;
+    return GW_OK;
+}

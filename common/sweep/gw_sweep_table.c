@@ -1,0 +1,110 @@
+/*
+ * gw_sweep_table.c: the sweep's table (DIR/results.csv), written once every
+ * case has run from this sweep's journal alone: its first line (version,
+ * model, config hash, N of C cases), the "# param", "# input" and "# grid"
+ * lines, the header and the rows sorted by case number. Units: the model's.
+ */
+#define _POSIX_C_SOURCE 200809L
+#include <errno.h>
+#include <math.h>
+#include <stdio.h>
+#include <sys/file.h>
+#include <sys/stat.h>
+#include <fcntl.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "gw_sweep.h"
+#include "gw_locale.h"
+#include "gw_sweep_impl.h"
+
+typedef struct row_ref {
+    long k;
+    const char *s;
+    size_t len;
+} row_ref;
+
+static int cmp_rows(const void *a, const void *b)
+{
+    long x = ((const row_ref *)a)->k, y = ((const row_ref *)b)->k;
+    return (x > y) - (x < y);
+}
+
+int gw_sweep_write_table(const char *dir, const gw_sweep_config *cfg, const gw_sweep_model *m, gw_err *err)
+{
+    char path[4096];
+    if (gw_path_join(path, sizeof path, dir, "journal.csv") != GW_OK)
+        return gw_err_set(err, GW_EINVAL, "%s: path too long", dir);
+    size_t len = 0;
+    char *buf = gw_sweep_slurp(path, &len, err);
+    if (!buf)
+        return errno == ENOMEM ? GW_ENOMEM : GW_EIO;
+    row_ref *rows = calloc((size_t)cfg->ncases + 1, sizeof *rows);
+    char *seen = calloc((size_t)cfg->ncases + 1, 1);
+    long nr = 0;
+    for (size_t pos = 0; rows && seen && pos < len;) {
+        const char *nl = memchr(buf + pos, '\n', len - pos);
+        size_t l = nl ? (size_t)(nl - (buf + pos)) + 1 : len - pos;
+        long k = gw_sweep_line_case(buf + pos, l, cfg->ncases);
+        if (k >= 0 && !seen[k]) {
+            seen[k] = 1;
+            rows[nr++] = (row_ref){k, buf + pos, l - 10}; /* drop ",checksum\n" */
+        }
+        pos += l;
+    }
+    int rc = GW_OK;
+    char head[96];
+    gw_snprintf(head, sizeof head, GW_SWEEP_JOURNAL_HEAD "\n", cfg->hash);
+    const int other = strncmp(buf, head, strlen(head)) != 0;
+    if (!rows || !seen) {
+        rc = gw_err_set(err, GW_ENOMEM, "sweep: out of memory");
+    } else if (other || nr != cfg->ncases) {
+        /* the table is of this sweep's journal, every case once: a journal
+         * replaced meanwhile gave a table of another sweep's rows, exit 0 */
+        rc = other
+                 ? gw_err_set(err, GW_EIO, "%s: replaced by another sweep's journal while this sweep ran: no table "
+                              "written (this sweep's rows are not in it)", path)
+                 : gw_err_set(err, GW_EIO, "%s: lost rows while the sweep ran (%ld of its %ld cases in it): no table "
+                              "written; rerun to resume", path, nr, cfg->ncases);
+    } else {
+        qsort(rows, (size_t)nr, sizeof *rows, cmp_rows);
+        gw_afile f;
+        if (gw_path_join(path, sizeof path, dir, "results.csv") != GW_OK)
+            rc = gw_err_set(err, GW_EINVAL, "%s: path too long", dir);
+        else if ((rc = gw_afile_open(&f, path, err)) == GW_OK) {
+            gw_fprintf(f.fp, "# granwave %s sweep, model %s, config %016lx, %ld of %ld cases\n", gw_version(),
+                    cfg->model, cfg->hash, nr, cfg->ncases);
+            for (int i = 0; i < cfg->nparams; i++)
+                gw_fprintf(f.fp, "# param %s = %s\n", cfg->params[i].name, cfg->params[i].values[0]);
+            for (int i = 0; i < cfg->ninputs; i++) /* what the cases' files held */
+                gw_fprintf(f.fp, "# input %s = %s fnv1a64 %016llx\n", cfg->inputs[i].key, cfg->inputs[i].value,
+                        cfg->inputs[i].hash);
+            /* the grid itself: a reader can tell a missing or edited row */
+            for (int i = 0; i < cfg->ngrid; i++) {
+                gw_fprintf(f.fp, "# grid %s = ", cfg->grid[i].name);
+                for (int j = 0; j < cfg->grid[i].nvalues; j++)
+                    gw_fprintf(f.fp, "%s%s", j ? ", " : "", cfg->grid[i].values[j]);
+                fputc('\n', f.fp);
+            }
+            gw_fprintf(f.fp, "case");
+            for (int i = 0; i < cfg->ngrid; i++)
+                gw_fprintf(f.fp, ",%s", cfg->grid[i].name);
+            for (int i = 0; i < m->ncolumns; i++)
+                gw_fprintf(f.fp, ",%s", m->columns[i]);
+            gw_fprintf(f.fp, ",case_config_fnv1a64"); /* the hashes that end each row */
+            if (cfg->read_key)
+                gw_fprintf(f.fp, ",%s_fnv1a64", cfg->read_key);
+            fputc('\n', f.fp);
+            for (long i = 0; i < nr; i++) {
+                fwrite(rows[i].s, 1, rows[i].len, f.fp);
+                fputc('\n', f.fp);
+            }
+            rc = gw_afile_commit(&f, err);
+        }
+    }
+    free(rows);
+    free(seen);
+    free(buf);
+    return rc;
+}

@@ -32,6 +32,15 @@
  * machine falls on all of them alike; step/rk4 is a backend's CPU time per step
  * over rk4's in the same run.
  *
+ * The memory bound: before the backends of each N, a STREAM-like triad
+ * a = b + s c over vectors of the state's length 2N, rotating through 16 of them
+ * (the working set of a solver's step), timed the same way (best of 5 x 2
+ * repetitions), gives the cost of streaming one whole state vector once (one
+ * read or one write: the triad streams three) in ns per bead; the column
+ * streams/step is a backend's cost per step in those units, to compare with the
+ * whole-vector reads and writes a step makes (docs/performance.md counts them:
+ * RK4 23).
+ *
  * Usage: bench_long [--transits T] [--reps R] [--rounds K] [--nmax N]
  *                   [--bdf-max N] [--only BACKEND]
  * Units: SI; times printed in ns per bead-step (CPU time of the advance divided
@@ -151,6 +160,42 @@ out:
     gw_chain_free(c);
 }
 
+/* ns per bead of streaming one vector of 2n doubles once (one read or one
+ * write), from a triad over 16 rotating vectors; 0 if out of memory. */
+static double stream_ns_per_bead(int n)
+{
+    enum { NVEC = 16 };
+    const size_t len = 2 * (size_t)n;
+    double *v[NVEC] = {0};
+    double best = 0;
+    for (int j = 0; j < NVEC; j++)
+        if (!(v[j] = malloc(len * sizeof *v[j])))
+            goto out;
+    for (int j = 0; j < NVEC; j++)
+        for (size_t i = 0; i < len; i++)
+            v[j][i] = 1e-3 * (double)i + j;
+    /* about 0.2 s per timing, at least 3 triads */
+    const int reps = 2e8 / (double)len > 3 ? (int)(2e8 / (double)len) : 3;
+    best = 1e300;
+    for (int r = 0; r < 5; r++) {
+        double t0 = cpu_ms();
+        for (int k = 0; k < reps; k++) {
+            double *restrict a = v[k % NVEC];
+            const double *restrict b = v[(k + 5) % NVEC], *restrict c = v[(k + 11) % NVEC];
+            for (size_t i = 0; i < len; i++)
+                a[i] = b[i] + 0.5 * c[i];
+        }
+        double ms = (cpu_ms() - t0) / reps;
+        if (ms < best)
+            best = ms;
+    }
+    best = best * 1e6 / 3.0 / n;
+out:
+    for (int j = 0; j < NVEC; j++)
+        free(v[j]);
+    return best;
+}
+
 /* Fork, run the case in the child, read its result through a pipe. */
 static int run_forked(int n, const backend *b, double transits, int reps, case_result *cr)
 {
@@ -189,6 +234,14 @@ int main(int argc, char **argv)
     const char *only = NULL;
     for (int i = 1; i < argc; i += 2) {
         const char *o = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
+        if (!strcmp(o, "--help") || !strcmp(o, "-h")) {
+            printf("usage: bench_long [--transits T] [--reps R] [--rounds K] [--nmax N] "
+                   "[--bdf-max N] [--only BACKEND]\n"
+                   "  cost per bead-step of each backend on a column of 1e3 .. nmax beads\n"
+                   "  (1e3, 1e4, 1e5, 1e6), its ratio to RK4's step in the same run, and the\n"
+                   "  step in whole-vector streams of a triad timed before each N\n");
+            return 0;
+        }
         int known = !strcmp(o, "--transits") || !strcmp(o, "--reps") || !strcmp(o, "--nmax") ||
                     !strcmp(o, "--bdf-max") || !strcmp(o, "--rounds") || !strcmp(o, "--only");
         if (!known) {
@@ -228,14 +281,20 @@ int main(int argc, char **argv)
            "(tc = %.4g s: the front crosses ~%g beads), best of %d x %d rounds\n",
            gw_version(), p.v_imp, transits, gw_chain_time_scale(&p), transits, reps, rounds);
     printf("rk4 dt = tc/400; adaptive rtol = atol = 1e-10; no root functions\n\n");
-    printf("%9s %-12s %9s %8s %9s %13s %9s %7s %10s %10s %9s\n", "beads", "backend", "ms", "steps",
-           "rhs/step", "ns/bead-step", "energy", "front", "peak MiB", "B/bead", "step/rk4");
+    printf("%9s %-12s %9s %8s %9s %13s %9s %7s %10s %10s %9s %12s\n", "beads", "backend", "ms",
+           "steps", "rhs/step", "ns/bead-step", "energy", "front", "peak MiB", "B/bead", "step/rk4",
+           "streams/step");
     const int sizes[] = {1000, 10000, 100000, 1000000};
     enum { NB = sizeof backends / sizeof backends[0] };
     for (size_t s = 0; s < sizeof sizes / sizeof sizes[0]; s++) {
         int n = sizes[s];
         if (n > nmax)
             break;
+        const double stream = stream_ns_per_bead(n);
+        if (stream > 0)
+            printf("%9d triad: one whole-vector stream (2N doubles read or written once) %.3f ns "
+                   "per bead, %.1f GB/s\n",
+                   n, stream, 16.0 / stream);
         /* the backends in turn, `rounds` times; each keeps its best child */
         case_result best[NB];
         int run[NB] = {0};
@@ -275,6 +334,10 @@ int main(int argc, char **argv)
                    cr->rss_kib / 1024.0, (cr->rss_kib - cr->rss0_kib) * 1024.0 / n);
             if (rk4_step > 0)
                 printf(" %9.2f", cr->ms / (double)cr->steps / rk4_step);
+            else
+                printf(" %9s", "-");
+            if (stream > 0)
+                printf(" %12.1f", cr->ms * 1e6 / ((double)cr->steps * n) / stream);
             printf("\n");
         }
     }

@@ -492,6 +492,11 @@ int gw_chain_drop_run(const gw_chain_drop_params *p, const gw_chain_run_opts *o,
     d.sys = *d.cs;
     d.sys.params = &d;
     d.sys.rhs = drop_rhs;
+    /* the chain's rhs by ranges reads the chain as its params, not this
+     * system's: kept, CVODE Adams and ARKode ERK called it with the drop's
+     * params (a crash, granwave drop --solver cvode --method adams) */
+    d.sys.rhs_range = NULL;
+    d.sys.rhs_halo = 0;
     d.sys.rhs_ex = d.cs->rhs_ex ? drop_rhs_ex : NULL;
     d.sys.rhs_im = d.cs->rhs_im ? drop_rhs_im : NULL;
     d.sys.jac = d.cs->jac ? drop_jac : NULL;

@@ -167,7 +167,7 @@ else
 fi
 
 # ---- 6: the drop's impact rises do not count the integration's error ----
-for sv in cvode rk4 arkode; do
+for sv in cvode rk4 arkode "cvode --method adams"; do
     if "$GW" drop --n 1 --t-max 0.3 --solver $sv --json >"$tmp/d6.json" 2>"$tmp/err"; then
         $PY - "$tmp/d6.json" <<'PYEOF' >"$tmp/out6" 2>&1 && ok "6: drop --n 1 --solver $sv: $(cat "$tmp/out6")" || ko "6: drop --n 1 --solver $sv: $(cat "$tmp/out6")"
 import json, sys

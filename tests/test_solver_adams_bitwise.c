@@ -25,6 +25,12 @@
  *   case, 0.5 tc): with rhs_range (queued) and without (the system copied with
  *   rhs_range NULL), the same steps, right-hand sides and final state, bit for
  *   bit;
+ * - linear combinations of 3 to 10 terms (queued up to 8, some starting from
+ *   the vector they write) among the random operations above;
+ * - ARKode ERK (ERKStep, whose stages are queued linear combinations with the
+ *   right-hand side by ranges after them, in one pass) on that column (3000
+ *   beads, 2 tc, its contact roots on), with rhs_range and without: the same
+ *   stop, steps, right-hand sides and final state, bit for bit;
  * - CVODE Adams with gw_sun_fixed_point against SUNDIALS' own fixed-point
  *   solver on that column (400 beads, 2 tc), on SUNDIALS' vectors and on the
  *   tuned ones: the same steps, right-hand sides, nonlinear iterations and
@@ -88,8 +94,22 @@ static void elementwise(set *s, set *t, int keep)
     do
         z = pick(NV - 1);
     while (z == keep);
-    int op = pick(4), x = pick(NV), y = pick(NV);
-    if (op == 0) {
+    int op = pick(5), x = pick(NV), y = pick(NV);
+    if (op == 4) { /* a linear combination of 3 to 10 terms (queued up to 8) */
+        const int nt = 3 + pick(8);
+        double c[10];
+        N_Vector xs[10], xt[10];
+        for (int j = 0; j < nt; j++) {
+            int k = pick(NV);
+            if (j == 0 && pick(3) == 0) /* starting from z itself, kept when c_0 = 1 */
+                k = z;
+            c[j] = j == 0 && pick(2) ? 1.0 : coef();
+            xs[j] = s->v[k];
+            xt[j] = t->v[k];
+        }
+        N_VLinearCombination(nt, c, xs, s->v[z]);
+        N_VLinearCombination(nt, c, xt, t->v[z]);
+    } else if (op == 0) {
         double a = coef(), b = pick(3) == 0 ? -a : coef();
         N_VLinearSum(a, s->v[x], b, s->v[y], s->v[z]);
         N_VLinearSum(a, t->v[x], b, t->v[y], t->v[z]);
@@ -289,6 +309,62 @@ static void chain_adams(void)
     gw_chain_free(c);
 }
 
+/* ARKode ERK on the column hitting the wall, with or without rhs_range */
+static int erk(const gw_system *sys, const double *y0, double tend, double *y,
+               gw_solver_stats *st)
+{
+    gw_solver_params sp = gw_solver_params_default();
+    sp.method = GW_ARKODE_ERK;
+    gw_solver *s = NULL;
+    gw_err err = {0};
+    if (gw_solver_create(gw_solver_arkode, sys, &sp, 0.0, y0, &s, &err) != GW_OK)
+        return -1;
+    double t = 0;
+    memcpy(y, y0, (size_t)sys->dim * sizeof *y);
+    int rc = gw_solver_advance(s, tend, &t, y, NULL);
+    gw_solver_get_stats(s, st);
+    gw_solver_free(s);
+    return rc;
+}
+
+/* ERKStep's stages: the linear combination queued with the right-hand side by
+ * ranges after it (one pass), the next stage written where the last was read */
+static void chain_erk(void)
+{
+    gw_chain_params p = gw_chain_params_default();
+    p.n = 3000;
+    gw_chain *c = NULL;
+    gw_err err = {0};
+    if (gw_chain_create(&p, &c, &err) != GW_OK) {
+        gw_test_true(0, "chain of 3000 beads created");
+        return;
+    }
+    const gw_system *sys = gw_chain_system(c);
+    gw_system plain = *sys;
+    plain.rhs_range = NULL;
+    const long dim = sys->dim;
+    double *y0 = malloc((size_t)dim * sizeof *y0), *a = malloc((size_t)dim * sizeof *a),
+           *b = malloc((size_t)dim * sizeof *b);
+    gw_chain_initial_state(c, y0);
+    const double tend = 2.0 * gw_chain_time_scale(&p);
+    gw_solver_stats sa, sb;
+    int ra = erk(sys, y0, tend, a, &sa), rb = erk(&plain, y0, tend, b, &sb);
+    gw_test_true(ra == rb && (ra == GW_OK || ra == GW_ROOT),
+                 "arkode erk, 3000 beads: both runs stop alike (the end, or the same first "
+                 "contact root: the root functions read the state between passes)");
+    printf("  steps %ld and %ld, rhs %ld and %ld\n", sa.steps, sb.steps, sa.rhs_evals,
+           sb.rhs_evals);
+    gw_test_true(sa.steps == sb.steps && sa.rhs_evals == sb.rhs_evals && sa.steps > 20,
+                 "arkode erk, 3000 beads: the same steps and right-hand sides (more than 20 "
+                 "steps) queued and not");
+    gw_test_true(memcmp(a, b, (size_t)dim * sizeof *a) == 0,
+                 "arkode erk, 3000 beads: the same final state, bit for bit, queued and not");
+    free(y0);
+    free(a);
+    free(b);
+    gw_chain_free(c);
+}
+
 /* CVODE on a gw_system directly: user data is this */
 typedef struct {
     const gw_system *sys;
@@ -414,6 +490,7 @@ int main(void)
     chain_ranges(0);
     chain_ranges(1);
     chain_adams();
+    chain_erk();
     fixed_point();
     return gw_test_summary("test_solver_adams_bitwise");
 }

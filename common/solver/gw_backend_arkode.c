@@ -172,8 +172,11 @@ static int ark_create(gw_solver *s, double t0, const double *y0, gw_err *err)
     memcpy(N_VGetArrayPointer(a->y), y0, (size_t)s->sys.dim * sizeof *y0);
     a->t = t0;
     a->erk = method == GW_ARKODE_ERK;
+    /* ERKStep touches the vectors only through their ops: a right-hand side
+     * by ranges runs queued, in one pass with the stage's linear combination */
     if (a->erk)
-        a->mem = ERKStepCreate(gw_sun_rhs, t0, a->y, a->ctx);
+        a->mem = ERKStepCreate(s->sys.rhs_range ? gw_sun_rhs_queued : gw_sun_rhs, t0, a->y,
+                               a->ctx);
     else if (method == GW_ARKODE_DIRK)
         a->mem = ARKStepCreate(NULL, gw_sun_rhs, t0, a->y, a->ctx);
     else

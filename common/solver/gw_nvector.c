@@ -48,6 +48,17 @@
 
 #include "gw_sundials.h"
 
+/* The element loops are also compiled for AVX (chosen when the program
+ * loads, as rk4_step is): AVX without FMA does the same IEEE operations in
+ * the same order, so the same numbers, with half the instructions per
+ * element; the long linear combinations of an ERK step were bound by
+ * instructions, not by memory. */
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
+#define GW_NV_CLONES __attribute__((target_clones("avx", "default")))
+#else
+#define GW_NV_CLONES
+#endif
+
 #define LEN(v) NV_LENGTH_S(v)
 #define DATA(v) NV_DATA_S(v)
 
@@ -60,8 +71,8 @@
 #ifndef GW_NV_BLK
 #define GW_NV_BLK 512
 #endif
-enum { QMAX = 128, BLK = GW_NV_BLK, RHS_LAG = 64 };
-typedef enum { OP_SUM, OP_SCALE, OP_CONST, OP_EWT, OP_RHS } gw_nv_kind;
+enum { QMAX = 128, BLK = GW_NV_BLK, RHS_LAG = 64, LC_MAX = 8 };
+typedef enum { OP_SUM, OP_SCALE, OP_CONST, OP_EWT, OP_RHS, OP_LC } gw_nv_kind;
 typedef struct {
     gw_nv_kind kind;
     realtype a, b;
@@ -70,13 +81,50 @@ typedef struct {
     sunindextype n;
     gw_rhs_range_fn f; /* OP_RHS: f(a, x, z, i0, i1, p) */
     void *p;
+    /* OP_LC: z = sum_j c_j X_j, j < nt (keep: the first term is X_0 itself);
+     * the terms are copied, as the caller reuses its arrays */
+    int nt, keep;
+    realtype c[LC_MAX];
+    const realtype *X[LC_MAX];
 } gw_nv_op;
 static _Thread_local gw_nv_op queue[QMAX];
 static _Thread_local int queued, rhs_at = -1;
 
+/* z = sum_j c_j X_j on elements [i0, i1), summed in j order per element (as
+ * the library), sixteen elements at a time kept in registers while the terms
+ * stream in, so z is written once instead of read and written per term */
+static inline __attribute__((always_inline)) void lincomb_range(const gw_nv_op *o,
+                                                                sunindextype i0, sunindextype i1)
+{
+    enum { V = 16 };
+    const int nt = o->nt, keep = o->keep;
+    const realtype *x0 = o->X[0], c0 = o->c[0];
+    realtype *zd = o->z;
+    sunindextype i = i0;
+    for (; i + V <= i1; i += V) {
+        realtype acc[V];
+        for (int k = 0; k < V; k++)
+            acc[k] = keep ? x0[i + k] : c0 * x0[i + k];
+        for (int j = 1; j < nt; j++) {
+            const realtype *xj = o->X[j] + i, cj = o->c[j];
+            for (int k = 0; k < V; k++)
+                acc[k] += cj * xj[k];
+        }
+        for (int k = 0; k < V; k++)
+            zd[i + k] = acc[k];
+    }
+    for (; i < i1; i++) {
+        realtype acc = keep ? x0[i] : c0 * x0[i];
+        for (int j = 1; j < nt; j++)
+            acc += o->c[j] * o->X[j][i];
+        zd[i] = acc;
+    }
+}
+
 /* one operation on elements [i0, i1): the same arithmetic, element by element,
  * as the direct kernel (in-place forms alias z with x or y) */
-static void apply(const gw_nv_op *o, sunindextype i0, sunindextype i1)
+static inline __attribute__((always_inline)) void apply(const gw_nv_op *o, sunindextype i0,
+                                                        sunindextype i1)
 {
     const realtype a = o->a, b = o->b, *xd = o->x, *yd = o->y;
     realtype *zd = o->z;
@@ -87,6 +135,10 @@ static void apply(const gw_nv_op *o, sunindextype i0, sunindextype i1)
     }
     if (o->kind == OP_RHS) {
         o->f(a, xd, zd, (long)i0, (long)i1, o->p);
+        return;
+    }
+    if (o->kind == OP_LC) {
+        lincomb_range(o, i0, i1);
         return;
     }
     if (o->kind == OP_EWT) { /* error weights, as gw_sun_ewt: y in x, scale in y */
@@ -132,6 +184,7 @@ static void apply(const gw_nv_op *o, sunindextype i0, sunindextype i1)
 }
 
 /* the queued operations k0 <= k < k1 on elements [i0, i1), in order */
+GW_NV_CLONES
 static void apply_ops(int k0, int k1, sunindextype i0, sunindextype i1)
 {
     for (int k = k0; k < k1; k++) {
@@ -228,7 +281,10 @@ static void run_queue(void)
 
 static void enqueue(gw_nv_op o)
 {
-    if (queued == QMAX || (o.kind == OP_RHS && rhs_at >= 0))
+    /* a pending right-hand side runs in the pass of what precedes it only if
+     * nothing after it writes its input (rhs_fusable): an operation that does
+     * (ARKode's next stage, written where the last one was) starts a new pass */
+    if (queued == QMAX || (rhs_at >= 0 && (o.kind == OP_RHS || o.z == queue[rhs_at].x)))
         run_queue();
     if (o.kind == OP_RHS)
         rhs_at = queued;
@@ -237,12 +293,12 @@ static void enqueue(gw_nv_op o)
 
 static void gw_nv_linearsum(realtype a, N_Vector x, realtype b, N_Vector y, N_Vector z)
 {
-    enqueue((gw_nv_op){OP_SUM, a, b, DATA(x), DATA(y), DATA(z), LEN(x), NULL, NULL});
+    enqueue((gw_nv_op){.kind = OP_SUM, .a = a, .b = b, .x = DATA(x), .y = DATA(y), .z = DATA(z), .n = LEN(x)});
 }
 
 static void gw_nv_const(realtype c, N_Vector z)
 {
-    enqueue((gw_nv_op){OP_CONST, c, 0.0, NULL, NULL, DATA(z), LEN(z), NULL, NULL});
+    enqueue((gw_nv_op){.kind = OP_CONST, .a = c, .z = DATA(z), .n = LEN(z)});
 }
 
 static void gw_nv_prod(N_Vector x, N_Vector y, N_Vector z)
@@ -270,7 +326,7 @@ static void gw_nv_scale(realtype c, N_Vector x, N_Vector z)
     /* c = 1 is a copy (ARKode's interpolant keeps y_n and f_n every step,
      * CVODE's fixed-point iteration its previous iterate): memcpy, which uses
      * the widest vectors the CPU has */
-    enqueue((gw_nv_op){OP_SCALE, c, 0.0, DATA(x), NULL, DATA(z), LEN(x), NULL, NULL});
+    enqueue((gw_nv_op){.kind = OP_SCALE, .a = c, .x = DATA(x), .z = DATA(z), .n = LEN(x)});
 }
 
 static void gw_nv_abs(N_Vector x, N_Vector z)
@@ -413,6 +469,7 @@ static realtype gw_nv_minquotient(N_Vector num, N_Vector den)
 
 /* The library's order when z is also a later term X_j (j > 0): z is first
  * overwritten with c_0 X_0, and that new z is the X_j added later. */
+GW_NV_CLONES
 static int lincomb_aliased(int nvec, realtype *c, N_Vector *X, N_Vector z)
 {
     const sunindextype n = LEN(z);
@@ -437,11 +494,13 @@ static int lincomb_aliased(int nvec, realtype *c, N_Vector *X, N_Vector z)
 /* z = sum_j c_j X_j, summed in j order per element (as the library). Sixteen
  * elements at a time are kept in registers while the terms stream in, so z is
  * written once instead of read and written per term. */
+GW_NV_CLONES
 static int gw_nv_linearcombination(int nvec, realtype *c, N_Vector *X, N_Vector z)
 {
-    FLUSH();
-    if (nvec < 1)
+    if (nvec < 1) {
+        FLUSH();
         return -1;
+    }
     if (nvec == 1) {
         gw_nv_scale(c[0], X[0], z);
         return 0;
@@ -450,14 +509,29 @@ static int gw_nv_linearcombination(int nvec, realtype *c, N_Vector *X, N_Vector 
         gw_nv_linearsum(c[0], X[0], c[1], X[1], z);
         return 0;
     }
+    for (int j = 1; j < nvec; j++)
+        if (X[j] == z) {
+            FLUSH();
+            return lincomb_aliased(nvec, c, X, z);
+        }
+    /* first term: X[0] == z with c[0] == 1 starts from z itself */
+    gw_nv_op o = {.kind = OP_LC, .z = DATA(z), .n = LEN(z), .nt = nvec,
+                  .keep = X[0] == z && c[0] == 1.0};
+    const int nt = nvec < LC_MAX ? nvec : LC_MAX;
+    for (int j = 0; j < nt; j++) {
+        o.c[j] = c[j];
+        o.X[j] = DATA(X[j]);
+    }
+    if (nvec <= LC_MAX) { /* queued: an ERK stage runs in one pass with its right-hand side */
+        enqueue(o);
+        return 0;
+    }
+    FLUSH();
+    o.nt = nvec; /* more terms than an op holds: at once, from the caller's arrays */
     enum { V = 16 };
     const sunindextype n = LEN(z);
     realtype *zd = DATA(z);
-    for (int j = 1; j < nvec; j++)
-        if (X[j] == z)
-            return lincomb_aliased(nvec, c, X, z);
-    /* first term: X[0] == z with c[0] == 1 starts from z itself */
-    const int keep = X[0] == z && c[0] == 1.0;
+    const int keep = o.keep;
     const realtype *x0 = DATA(X[0]);
     sunindextype i = 0;
     for (; i + V <= n; i += V) {
@@ -488,6 +562,7 @@ static int gw_nv_linearcombination(int nvec, realtype *c, N_Vector *X, N_Vector 
  * weights and the norm that follows them. Shorter ones stay in cache and run
  * at once, term by term (measured cheaper at 1e3 beads). */
 enum { SAM_QUEUED = 8192 };
+GW_NV_CLONES
 static int gw_nv_scaleaddmulti(int nvec, realtype *a, N_Vector x, N_Vector *Y, N_Vector *Z)
 {
     if (nvec < 1)
@@ -625,7 +700,8 @@ static void q_printfile(N_Vector v, FILE *f)
 
 int gw_sun_nv_ewt(N_Vector y, N_Vector w, double rtol, double atol, const double *scale)
 {
-    const gw_nv_op o = {OP_EWT, rtol, atol, DATA(y), scale, DATA(w), LEN(y), NULL, NULL};
+    const gw_nv_op o = {.kind = OP_EWT, .a = rtol, .b = atol, .x = DATA(y), .y = scale, .z = DATA(w),
+                        .n = LEN(y)};
     if (y->ops->nvlinearsum == gw_nv_linearsum && w->ops->nvlinearsum == gw_nv_linearsum) {
         enqueue(o);
     } else { /* not tuned vectors: at once, after whatever is pending */
@@ -641,7 +717,8 @@ int gw_sun_nv_rhs(double t, N_Vector y, N_Vector ydot, gw_rhs_range_fn f, long h
     if (!f || halo < 0 || halo > RHS_LAG || y->ops->nvlinearsum != gw_nv_linearsum ||
         ydot->ops->nvlinearsum != gw_nv_linearsum || LEN(y) != LEN(ydot) || DATA(y) == DATA(ydot))
         return -1;
-    gw_nv_op o = {OP_RHS, t, 0.0, DATA(y), NULL, DATA(ydot), LEN(y), f, params};
+    gw_nv_op o = {.kind = OP_RHS, .a = t, .x = DATA(y), .z = DATA(ydot), .n = LEN(y), .f = f,
+                  .p = params};
     enqueue(o);
     return 0;
 }

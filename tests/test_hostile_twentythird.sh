@@ -140,7 +140,7 @@ print(("PASS" if not bad else "FAIL") + ": gw_utf8_len agrees with Python's stri
       "strings and 5 characters up to U+10FFFF" + ("" if not bad else f" ({len(bad)} disagree, e.g. {bad[:3]})"))
 EOF
 
-[ $((passes + fails)) -eq $((before + 1)) ] || ko "the validator check printed no verdict: $(tail -3 "$tmp/py.out")"
+[ -n "${py_skipped:-}" ] || [ $((passes + fails)) -eq $((before + 1)) ] || ko "the validator check printed no verdict: $(tail -3 "$tmp/py.out")"
 
 # --- 2 dispersion's settings under an adaptive solver record no RK4 step ---
 for solver in cvode arkode; do

@@ -338,17 +338,19 @@ int gw_cmd_sweep(int argc, char **argv, const gw_sweep_model *const *models, int
         gw_cli_progress chk;
         gw_cli_progress_init(&chk, "sweep: checked ", "cases", 2000);
         chk.quiet = quiet;
+        void *memo = NULL; /* the model's, over this pass (a layer sample read once) */
         for (long k = 0; k < cfg.ncases && code == 0; k++) {
             if (k > 0 && k % 1000 == 0)
                 gw_cli_progress_report(&chk, k, cfg.ncases);
             gw_sweep_case(&cfg, k, names, values);
-            if ((rc = m->check(cfg.ngrid + cfg.nparams, names, values, &err)) != GW_OK) {
+            if ((rc = gw_sweep_case_check(m, &memo, cfg.ngrid + cfg.nparams, names, values, &err)) != GW_OK) {
                 char tmp[sizeof err.msg];
                 snprintf(tmp, sizeof tmp, "%s", err.msg);
                 gw_err_set(&err, rc, "case %ld: %s", k, tmp);
                 code = exit_code(rc);
             }
         }
+        gw_sweep_checks_end(m, memo);
         if (code)
             fprintf(stderr, "granwave sweep: %s: %s\n", pos[0], err.msg);
         err.msg[0] = '\0';

@@ -71,4 +71,4 @@ static int run(int nk, const char *const *names, const char *const *values, doub
 
 const gw_sweep_model gw_chain_sweep_model = {"chain", (int)(sizeof columns / sizeof columns[0]), columns,
                                              has_key, run, check, NULL /* memory: not estimated */,
-                                             NULL /* read_key: no file */};
+                                             NULL /* read_key: no file */, NULL /* check_memo */, NULL};

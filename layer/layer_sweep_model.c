@@ -45,8 +45,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include <pthread.h>
-
 #include "gw_layer_study.h"
 #include "gw_locale.h"
 #include "gw_sweep.h"
@@ -135,18 +133,17 @@ static void name_placement(const gw_layer_impact_setup *s, const placement *pl, 
                pl->points, pl->spacing, x0, tmp);
 }
 
-/* The samples the check pass has read and checked, by path and the hash of
- * the bytes read: a case whose file hashes the same now is checked against
- * the sample kept (the rows and the resolution, layer_impact_setup_check_sample),
- * any other reads it (gw_layer_impact_plan_make, as the run does). Keyed by
- * content, not by the file's inode and times: a file rewritten in place with
- * the same size within the file system's timestamp resolution (4 ms on
- * ext4) is still seen. Up to MEMO_SLOTS files (a grid over several samples),
- * the least recently used replaced, each of at most MEMO_NMAX particles
- * (2.8 MB; larger samples are read for every case, as before): at most 11 MB
- * kept until the process exits. The one mutable state of the layer module:
- * the model's check has no context to keep it in (gw_sweep_model), and the
- * check pass runs in one thread; the lock makes other callers safe. */
+/* The samples a pass of checks has read and checked (the memo its caller
+ * keeps, gw_sweep_model.check_memo), by path and the hash of the bytes read:
+ * a case whose file hashes the same now is checked against the sample kept
+ * (the rows and the resolution, layer_impact_setup_check_sample), any other
+ * reads it (gw_layer_impact_plan_make, as the run does). Keyed by content, not
+ * by the file's inode and times: a file rewritten in place with the same size
+ * within the file system's timestamp resolution (4 ms on ext4) is still seen.
+ * Up to MEMO_SLOTS files (a grid over several samples), the least recently
+ * used replaced, each of at most MEMO_NMAX particles (2.8 MB; larger samples
+ * are read for every case, as before): at most 11 MB, held until the pass
+ * ends (memo_free). */
 #define MEMO_SLOTS 4
 #define MEMO_NMAX 100000
 typedef struct memo_slot {
@@ -154,59 +151,74 @@ typedef struct memo_slot {
     unsigned long long hash, used;
     gw_layer_sample s;
 } memo_slot;
-static struct {
-    pthread_mutex_t mu;
+typedef struct check_memo {
     unsigned long long tick;
     memo_slot slot[MEMO_SLOTS];
-} check_memo = {.mu = PTHREAD_MUTEX_INITIALIZER};
+} check_memo;
 
-/* gw_layer_impact_setup_check of s, through the memo. */
-static int setup_check(const gw_layer_impact_setup *s, gw_err *err)
+static void memo_free(void *memo)
+{
+    check_memo *c = memo;
+    if (!c)
+        return;
+    for (int k = 0; k < MEMO_SLOTS; k++) {
+        free(c->slot[k].path);
+        gw_layer_sample_free(&c->slot[k].s);
+    }
+    free(c);
+}
+
+/* gw_layer_impact_setup_check of s, through the memo *memo (NULL: none; *memo
+ * NULL: made here, on the first sample read; out of memory for it: the check
+ * without it). */
+static int setup_check(void **memo, const gw_layer_impact_setup *s, gw_err *err)
 {
     unsigned long long h;
     gw_err e = {{0}};
-    if (!s->sample || gw_fnv1a64_file(s->sample, "sample", &h, &e) != GW_OK)
+    if (memo && !*memo)
+        *memo = calloc(1, sizeof(check_memo));
+    check_memo *c = memo ? *memo : NULL;
+    if (!c || !s->sample || gw_fnv1a64_file(s->sample, "sample", &h, &e) != GW_OK)
         return gw_layer_impact_setup_check(s, err); /* its own message for a missing or odd file */
-    pthread_mutex_lock(&check_memo.mu);
-    memo_slot *old = &check_memo.slot[0];
+    memo_slot *old = &c->slot[0];
     for (int k = 0; k < MEMO_SLOTS; k++) {
-        memo_slot *m = &check_memo.slot[k];
+        memo_slot *m = &c->slot[k];
         if (m->path && m->hash == h && strcmp(m->path, s->sample) == 0) {
-            m->used = ++check_memo.tick;
-            int rc = layer_impact_setup_check_sample(s, &m->s, err);
-            pthread_mutex_unlock(&check_memo.mu);
-            return rc;
+            m->used = ++c->tick;
+            return layer_impact_setup_check_sample(s, &m->s, err);
         }
         if (m->used < old->used)
             old = m;
     }
-    pthread_mutex_unlock(&check_memo.mu);
     gw_layer_impact_plan p;
     int rc = gw_layer_impact_plan_make(s, &p, err);
     /* kept when read, whatever this case's verdict (x outside the box is the case's) */
     char *path = p.sample.x && p.sample.n <= MEMO_NMAX ? strdup(s->sample) : NULL;
     if (path) {
-        pthread_mutex_lock(&check_memo.mu);
         free(old->path);
         gw_layer_sample_free(&old->s);
-        *old = (memo_slot){path, p.sample.content_hash, ++check_memo.tick, p.sample};
+        *old = (memo_slot){path, p.sample.content_hash, ++c->tick, p.sample};
         memset(&p.sample, 0, sizeof p.sample);
-        pthread_mutex_unlock(&check_memo.mu);
     }
     gw_layer_impact_plan_free(&p);
     return rc;
 }
 
-static int check(int nk, const char *const *names, const char *const *values, gw_err *err)
+static int check_memo_fn(void **memo, int nk, const char *const *names, const char *const *values, gw_err *err)
 {
     gw_layer_impact_setup s;
     placement pl;
     int rc = prepare(&s, nk, names, values, &pl, err);
     if (rc == GW_OK) /* the sample and the resolution: as the run checks them */
-        if ((rc = setup_check(&s, err)) == GW_EINVAL)
+        if ((rc = setup_check(memo, &s, err)) == GW_EINVAL)
             name_placement(&s, &pl, err);
     gw_layer_impact_setup_clear(&s);
     return rc == GW_OK || rc == GW_ENOMEM ? rc : GW_EINVAL;
+}
+
+static int check(int nk, const char *const *names, const char *const *values, gw_err *err)
+{
+    return check_memo_fn(NULL, nk, names, values, err);
 }
 
 /* A case's peak memory: the series it allocates for t-max (time, ledger 8,
@@ -272,4 +284,5 @@ static int run(int nk, const char *const *names, const char *const *values, doub
     return rc;
 }
 
-const gw_sweep_model gw_layer_sweep_model = {"layer", NCOLUMNS, columns, has_key, run, check, memory, "sample"};
+const gw_sweep_model gw_layer_sweep_model = {"layer",  NCOLUMNS, columns,       has_key,  run,
+                                             check,    memory,   "sample",      check_memo_fn, memo_free};

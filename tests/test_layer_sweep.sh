@@ -116,16 +116,20 @@ bad and print("\n".join(bad))
 sys.exit(1 if bad else 0)
 PY
 
-# kill -9 once the first case is journaled, then resume. The six cases take
-# about a second together; on a loaded machine the poll below can wake after
-# the last one, so a run that finished before the kill is tried again (three
+# kill -9 once the first case is journaled, then resume. The kills run the
+# same grid in exact mode (k.ini: 0.17 s a case, about a second together):
+# the fast default's six cases take 0.02 s each, and the poll below woke
+# after the last one in half the runs on an idle machine (it passed only
+# under load). A run that finished before the kill is tried again (three
 # attempts): a kill that never lands mid-sweep still fails.
+sed 's/^full = true$/full = true\nexact = true/' "$tmp/s.ini" >"$tmp/k.ini"
+"$GW" sweep "$tmp/k.ini" --out "$tmp/kref" --quiet --jobs 2 || ko "the exact-mode sweep (the kills' reference) failed"
 # kill_mid_sweep DIR: the sweep into DIR killed once a case is journaled; sets n1
 # (rows journaled) and attempt
 kill_mid_sweep() {
     for attempt in 1 2 3; do
         rm -rf "$1"
-        "$GW" sweep "$tmp/s.ini" --out "$1" --quiet --jobs 1 & pid=$!
+        "$GW" sweep "$tmp/k.ini" --out "$1" --quiet --jobs 1 & pid=$!
         for _ in $(seq 1 300); do
             n=$(grep -vc '^#' "$1/journal.csv" 2>/dev/null); n=${n:-0}
             [ "$n" -ge 1 ] && break
@@ -142,8 +146,8 @@ if [ ! -e "$tmp/k/results.csv" ] && [ "${n1:-0}" -ge 1 ] && [ "${n1:-0}" -lt 6 ]
 else
     ko "kill -9 did not land mid-sweep in 3 attempts (journaled ${n1:-0}, table $(ls "$tmp/k" 2>/dev/null))"
 fi
-"$GW" sweep "$tmp/s.ini" --out "$tmp/k" --quiet --jobs 2 || ko "resume after kill -9 failed"
-cmp -s "$tmp/ref/results.csv" "$tmp/k/results.csv" && ok "resumed after kill -9: table byte-identical" || ko "resumed table differs"
+"$GW" sweep "$tmp/k.ini" --out "$tmp/k" --quiet --jobs 2 || ko "resume after kill -9 failed"
+cmp -s "$tmp/kref/results.csv" "$tmp/k/results.csv" && ok "resumed after kill -9: table byte-identical" || ko "resumed table differs"
 
 # serial vs MPI (rank 0 hands out cases, rank 1 runs them)
 if ! command -v mpirun >/dev/null; then
@@ -160,11 +164,11 @@ else
     # for the rows the other rank sends, and the table is the same
     kill_mid_sweep "$tmp/km"
     OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 mpirun --allow-run-as-root --oversubscribe -n 2 \
-        "$GW" sweep "$tmp/s.ini" --out "$tmp/km" --quiet >"$tmp/mpi.log" 2>&1
-    if [ "${n1:-0}" -ge 1 ] && [ "${n1:-0}" -lt 6 ] && cmp -s "$tmp/ref/results.csv" "$tmp/km/results.csv"; then
+        "$GW" sweep "$tmp/k.ini" --out "$tmp/km" --quiet >"$tmp/mpi.log" 2>&1
+    if [ "${n1:-0}" -ge 1 ] && [ "${n1:-0}" -lt 6 ] && cmp -s "$tmp/kref/results.csv" "$tmp/km/results.csv"; then
         ok "killed after $n1 of 6 cases, resumed under MPI (2 ranks): table byte-identical"
     else
-        ko "kill -9 then MPI resume: ${n1:-0} rows before, table $(cmp "$tmp/ref/results.csv" "$tmp/km/results.csv" 2>&1)"
+        ko "kill -9 then MPI resume: ${n1:-0} rows before, table $(cmp "$tmp/kref/results.csv" "$tmp/km/results.csv" 2>&1)"
         tail -5 "$tmp/mpi.log"
     fi
 fi

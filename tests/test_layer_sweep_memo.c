@@ -1,8 +1,10 @@
 /*
  * test_layer_sweep_memo.c: the layer sweep model's check (the check pass of
  * `granwave sweep`, and `sweep --check`) reads and checks each sample file
- * once and keeps it, keyed by the path and the hash of the file's bytes
- * (layer_sweep_model.c). The memo must never hide a change:
+ * once and keeps it, keyed by the path and the hash of the file's bytes, in
+ * a memo the caller holds over the pass (gw_sweep_case_check,
+ * gw_sweep_checks_end; layer_sweep_model.c). The memo must never hide a
+ * change:
  *  - a sample rewritten in place between two checks, with the same size and
  *    its modification time set back (the same inode, size and mtime: what a
  *    memo keyed by file identity would take for the same file), is refused
@@ -74,12 +76,13 @@ static int write_file(const char *path, const char *bytes, long len)
     return fclose(f) == 0 && ok ? 0 : -1;
 }
 
-/* The model's check of one case (sample, x, rb-rm, height-rm). */
-static int model_check(const char *sample, const char *x, const char *rb, const char *h, gw_err *err)
+/* The model's check of one case (sample, x, rb-rm, height-rm), through the
+ * memo *memo of the pass (as the sweep's check pass calls it). */
+static int model_check(void **memo, const char *sample, const char *x, const char *rb, const char *h, gw_err *err)
 {
     const char *names[] = {"sample", "x", "rb-rm", "height-rm"}, *values[] = {sample, x, rb, h};
     memset(err, 0, sizeof *err);
-    return gw_layer_sweep_model.check(4, names, values, err);
+    return gw_sweep_case_check(&gw_layer_sweep_model, memo, 4, names, values, err);
 }
 
 /* The same case through gw_layer_impact_setup_check (no memo), its status as the model maps it. */
@@ -110,9 +113,11 @@ int main(void)
     if (!good || write_file(a, good, len) != 0)
         return 1;
     gw_err err;
+    void *memo = NULL; /* one pass of checks over every case below */
 
     /* 1. rewritten in place: same size, same inode, mtime set back */
-    gw_test_true(model_check(a, "0", "1", "0", &err) == GW_OK, "a.txt (the stored sample) passes");
+    gw_test_true(model_check(&memo, a, "0", "1", "0", &err) == GW_OK, "a.txt (the stored sample) passes");
+    gw_test_true(memo != NULL, "the pass's memo holds what it read (the caller's, not the library's)");
     char *bad = malloc((size_t)len + 1), *p;
     memcpy(bad, good, (size_t)len + 1);
     p = strstr(bad, "\nporosity 0.1");
@@ -126,15 +131,15 @@ int main(void)
     gw_test_true(s0.st_ino == s1.st_ino && s0.st_size == s1.st_size &&
                  s0.st_mtim.tv_sec == s1.st_mtim.tv_sec && s0.st_mtim.tv_nsec == s1.st_mtim.tv_nsec,
                  "the same inode, size and modification time");
-    int rc = model_check(a, "0", "1", "0", &err);
+    int rc = model_check(&memo, a, "0", "1", "0", &err);
     gw_test_true(rc == GW_EINVAL && strstr(err.msg, "a.txt") && strstr(err.msg, "porosity"),
                  "then refused: its porosity header is no longer its particles'");
     printf("  %s\n", err.msg);
     overwrite(a, good, len);
-    gw_test_true(model_check(a, "0", "1", "0", &err) == GW_OK, "restored: passes again");
+    gw_test_true(model_check(&memo, a, "0", "1", "0", &err) == GW_OK, "restored: passes again");
     /* replaced by a FIFO: refused, not blocking (the hash opens regular files only) */
     if (mkfifo(fifo, 0600) == 0) {
-        rc = model_check(fifo, "0", "1", "0", &err);
+        rc = model_check(&memo, fifo, "0", "1", "0", &err);
         gw_test_true(rc == GW_EINVAL && strstr(err.msg, "fifo.txt"), "a FIFO of a sample's name: refused");
     }
 
@@ -147,8 +152,8 @@ int main(void)
     write_file(b, bad, len);
     int alt = 0;
     for (int k = 0; k < 6; k++) {
-        const int ra = model_check(a, "0", "1", "0", &err);
-        const int rb = model_check(b, "0", "1", "0", &err);
+        const int ra = model_check(&memo, a, "0", "1", "0", &err);
+        const int rb = model_check(&memo, b, "0", "1", "0", &err);
         alt += ra == GW_OK && rb == GW_EINVAL && strstr(err.msg, "b.txt") && strstr(err.msg, "width");
     }
     gw_test_true(alt == 6, "a grid over a.txt and b.txt (width edited): each checked, 6 times alternately");
@@ -159,7 +164,7 @@ int main(void)
     }
     for (int round = 0; round < 2; round++)
         for (int k = 0; k < MEMO_FILES_FOR_TEST; k++)
-            each += model_check(other[k], "0", "1", "0", &err) == (k % 2 ? GW_EINVAL : GW_OK);
+            each += model_check(&memo, other[k], "0", "1", "0", &err) == (k % 2 ? GW_EINVAL : GW_OK);
     gw_test_true(each == 2 * MEMO_FILES_FOR_TEST, "6 files, twice round (more than the memo keeps): each its verdict");
 
     /* 3. the memo's verdicts and messages are the plain check's */
@@ -169,7 +174,7 @@ int main(void)
         for (int j = 0; j < 3; j++)
             for (int k = 0; k < 2; k++) {
                 gw_err e1, e2;
-                const int r1 = model_check(a, xs[i], rbs[j], hs[k], &e1), r2 = plain_check(a, xs[i], rbs[j], hs[k], &e2);
+                const int r1 = model_check(&memo, a, xs[i], rbs[j], hs[k], &e1), r2 = plain_check(a, xs[i], rbs[j], hs[k], &e2);
                 cases++;
                 same += r1 == r2 && strcmp(e1.msg, e2.msg) == 0;
                 if (r1 != r2 || strcmp(e1.msg, e2.msg) != 0)
@@ -178,6 +183,7 @@ int main(void)
             }
     gw_test_true(same == cases, "24 cases: the same status and message as gw_layer_impact_setup_check");
 
+    gw_sweep_checks_end(&gw_layer_sweep_model, memo);
     for (int k = 0; k < MEMO_FILES_FOR_TEST; k++)
         remove(other[k]);
     remove(a), remove(b), remove(fifo), rmdir(dir);

@@ -95,7 +95,21 @@ typedef struct gw_sweep_model {
      * file while it was changed, and finished after it was restored, passed
      * the check of the file after the case. */
     const char *read_key;
+    /* check with a memo that the caller keeps over one pass of checks (may be
+     * NULL: check is used), so that a model reads a file the cases share once:
+     * *memo is NULL at the pass's first call, and the caller hands it to
+     * memo_free (NULL-safe) when the pass ends; one pass, one thread. The
+     * verdicts and messages are check's. */
+    int (*check_memo)(void **memo, int nkeys, const char *const *names, const char *const *values, gw_err *err);
+    void (*memo_free)(void *memo);
 } gw_sweep_model;
+
+/* Check case k of a pass over a model's cases (check_memo with *memo when the
+ * model has it, else check; GW_OK when it has neither). gw_sweep_checks_end
+ * frees the memo when the pass ends. */
+int gw_sweep_case_check(const gw_sweep_model *m, void **memo, int nkeys, const char *const *names,
+                        const char *const *values, gw_err *err);
+void gw_sweep_checks_end(const gw_sweep_model *m, void *memo);
 
 
 /* Parse path. Errors (exit code 2 material): unreadable file, syntax error or

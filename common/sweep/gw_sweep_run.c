@@ -153,6 +153,20 @@ static int run_one(void *arg, long k, gw_err *err)
     return rc;
 }
 
+int gw_sweep_case_check(const gw_sweep_model *m, void **memo, int nkeys, const char *const *names,
+                        const char *const *values, gw_err *err)
+{
+    if (m->check_memo)
+        return m->check_memo(memo, nkeys, names, values, err);
+    return m->check ? m->check(nkeys, names, values, err) : GW_OK;
+}
+
+void gw_sweep_checks_end(const gw_sweep_model *m, void *memo)
+{
+    if (m->memo_free)
+        m->memo_free(memo);
+}
+
 int gw_sweep_run(const gw_sweep_config *cfg, const gw_sweep_model *m, int jobs, gw_progress_fn progress,
                  void *pctx, double *values, gw_err *err)
 {
@@ -161,16 +175,19 @@ int gw_sweep_run(const gw_sweep_config *cfg, const gw_sweep_model *m, int jobs, 
         return gw_err_set(err, GW_EINVAL, "jobs: %d is outside [0, %d] (0: one per CPU)", jobs, GW_SWEEP_JOBS_MAX);
     for (long k = 0; k < cfg->ncases * m->ncolumns; k++)
         values[k] = NAN;
+    void *memo = NULL;
     for (long k = 0; m->check && k < cfg->ncases; k++) {
         const char *names[2 * GW_SWEEP_MAX_KEYS], *vals[2 * GW_SWEEP_MAX_KEYS];
         gw_sweep_case(cfg, k, names, vals);
-        int rc = m->check(nk, names, vals, err);
+        int rc = gw_sweep_case_check(m, &memo, nk, names, vals, err);
         if (rc != GW_OK) {
+            gw_sweep_checks_end(m, memo);
             char tmp[sizeof err->msg];
             gw_snprintf(tmp, sizeof tmp, "%s", err ? err->msg : "");
             return gw_err_set(err, rc, "case %ld: %s", k, tmp);
         }
     }
+    gw_sweep_checks_end(m, memo);
     int rc = gw_sweep_memory_check(cfg, m, jobs, 0, NULL, err);
     if (rc != GW_OK)
         return rc;

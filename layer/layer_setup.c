@@ -362,16 +362,24 @@ static int resolve(const gw_layer_impact_setup *s, const gw_layer_sample *smp, g
     return rc == GW_OK ? gw_layer_impact_rest_check(smp, lp, s->sample, err) : rc;
 }
 
+/* The setup's rows in their ranges and a sample named: what a plan (the
+ * sample read) and a check against a sample already read both need first. */
+static int setup_rows_check(const gw_layer_impact_setup *s, gw_err *err)
+{
+    int rc = gw_param_check(impact_params, s, err);
+    if (rc == GW_OK && !s->sample)
+        rc = gw_err_set(err, GW_EINVAL, "sample: a sample file (from layer-make) is required");
+    return rc;
+}
+
 int gw_layer_impact_plan_make(const gw_layer_impact_setup *s, gw_layer_impact_plan *p, gw_err *err)
 {
     if (!s || !p)
         return gw_err_set(err, GW_EINVAL, "gw_layer_impact_plan_make: %s is NULL", !s ? "s" : "p");
     memset(p, 0, sizeof *p);
-    int rc = gw_param_check(impact_params, s, err);
+    int rc = setup_rows_check(s, err);
     if (rc != GW_OK)
         return rc;
-    if (!s->sample)
-        return gw_err_set(err, GW_EINVAL, "sample: a sample file (from layer-make) is required");
     if ((rc = gw_layer_sample_read(s->sample, &p->sample, err)) != GW_OK)
         return rc;
     return resolve(s, &p->sample, &p->lp, &p->ip, &p->type, &p->sp, err);
@@ -388,11 +396,9 @@ int layer_impact_setup_check_sample(const gw_layer_impact_setup *s, const gw_lay
 {
     if (!s || !smp)
         return gw_err_set(err, GW_EINVAL, "layer_impact_setup_check_sample: %s is NULL", !s ? "s" : "smp");
-    int rc = gw_param_check(impact_params, s, err);
+    int rc = setup_rows_check(s, err);
     if (rc != GW_OK)
         return rc;
-    if (!s->sample)
-        return gw_err_set(err, GW_EINVAL, "sample: a sample file (from layer-make) is required");
     gw_layer_params lp;
     gw_layer_impact_params ip;
     const gw_solver_type *type;

@@ -16,7 +16,7 @@
  * falls as M^-2.5 (every contact closing restarts the method on the d^(3/2)
  * force), so err(M) M^2.5 is printed and is roughly constant. The main job picks
  * M from the worst case measured here (gw_chain_rk4_steps_per_tc,
- * chain_collide.c). Without gravity or damping the model is scale
+ * chain_collide_plan.c). Without gravity or damping the model is scale
  * invariant (lengths scale with d_max, times with T_c), so relative errors do not
  * depend on v_imp; three velocities are run to show it.
  *

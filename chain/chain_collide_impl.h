@@ -1,0 +1,26 @@
+/*
+ * chain_collide_impl.h (private to chain/, not installed): what the collision's
+ * run (chain_collide.c) takes from its plan (chain_collide_plan.c).
+ * Units: SI (s).
+ */
+#ifndef GW_CHAIN_COLLIDE_IMPL_H
+#define GW_CHAIN_COLLIDE_IMPL_H
+
+#include "gw_chain.h"
+
+/* What a collision of p with o will run with (t_max, dt_out, the steps), and the
+ * bounds on its steps, memory, samples and stored trace, checked before anything
+ * is allocated, in that order: at the defaults the bound that trips at the fewest
+ * beads is named (rk4: steps from 1.25e5 beads, memory from 7.9e6, samples from
+ * 7e6; cvode: memory from 2.3e6, samples from 7e6, steps from 1.3e7). */
+typedef struct collide_plan {
+    double tc, tau1, t_max, dt_out, t_expect;
+    gw_solver_params sp;
+    const gw_solver_type *type;
+} collide_plan;
+
+/* The plan of a collision of p0 with o in pl; GW_EINVAL naming the bound
+ * that trips (pl is then partly filled and not to be used). */
+int chain_collide_plan_make(const gw_chain_params *p0, const gw_chain_run_opts *o, collide_plan *pl, gw_err *err);
+
+#endif

@@ -1,0 +1,446 @@
+/*
+ * chain_collide_plan.c: what a collision will run with, and the bounds on it
+ * checked before anything is allocated (docs/physics.md 1.3): the run options'
+ * defaults and RK4's steps per contact time for an accuracy, t_max and dt_out,
+ * the solver's step, and the bounds on its steps (chain_steps_check, a sensor
+ * body's oscillation), its memory (gw_chain_memory_check), its samples
+ * (chain_sampling_check), a light bead's ringing (chain_ring_check) and a
+ * column gravity holds on the wall (chain_held_check). Separate from the run
+ * (chain_collide.c): it holds no state of a run and its checks are made on
+ * their own, before one (gw_chain_run_check, chain_run_steps).
+ * Units: SI (s, m, kg, bytes).
+ */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "gw_chain.h"
+#include "chain_model.h"
+#include "chain_collide_impl.h"
+
+gw_chain_run_opts gw_chain_run_opts_default(void)
+{
+    gw_chain_run_opts o;
+    memset(&o, 0, sizeof o);
+    o.solver = gw_solver_cvode;
+    o.sp = gw_solver_params_default();
+    return o;
+}
+
+/* Measured (bench_falcon_accuracy, RK4 with events as roots, dt = T_c/M, against
+ * CVODE BDF at 1e-12, N = 1..40 at three v_imp): the worst relative error, on
+ * F_max, is 4.0e-6 at M = 16 and falls as M^-2.5 (7.2e-7 at 32, 1.3e-7 at 64),
+ * not M^-4: every contact closing restarts the method on the d^(3/2) force, whose
+ * expansion is not smooth at the restart. tau_N errors are smaller. A factor 2
+ * margin covers the scatter between N. */
+int gw_chain_rk4_steps_per_tc(double rel_acc)
+{
+    if (!(rel_acc >= GW_CHAIN_RK4_ACCURACY_MIN && rel_acc <= GW_CHAIN_RK4_ACCURACY_MAX))
+        return 0;
+    double m = 16.0 * pow(4.0e-6 / (0.5 * rel_acc), 1.0 / 2.5);
+    return m < 16 ? 16 : (int)ceil(m);
+}
+
+int gw_chain_rk4_study_covers(const gw_chain_params *p, long n_max)
+{
+    int general = p->wall.layer || p->wall.yield_pressure > 0 || p->wall.loss > 0 || p->sensor.mass > 0 ||
+                  p->guide.coulomb > 0 || p->guide.viscous > 0;
+    return !(p->damping != GW_DAMP_NONE || p->gravity != 0 || n_max > 40 || general);
+}
+
+int gw_chain_rk4_study_apply(gw_chain_run_opts *run, const gw_chain_params *p, double rel_acc, double vmax,
+                             int keep_dt_out)
+{
+    int m = gw_chain_rk4_steps_per_tc(rel_acc);
+    if (m <= 0)
+        return 0;
+    run->solver = gw_solver_rk4;
+    run->sp.method = GW_METHOD_DEFAULT;
+    run->steps_per_tc = m;
+    if (!keep_dt_out)
+        run->dt_out = gw_chain_tau1(p->mass, p->kwall, vmax) / 10;
+    return m;
+}
+/* 1e8 steps: minutes at n = 3; the default RK4 step T_c/400 makes about 800 n
+ * over a collision, so columns up to 1.25e5 beads (a day of CPU already) */
+int chain_steps_check(const gw_solver_type *type, const gw_solver_params *sp, const gw_solver_params *given,
+                      double t_len, const char *over, gw_err *err)
+{
+    const double max_steps_run = 1e8;
+    const double step = type == gw_solver_rk4 ? fmin(sp->dt, sp->dt_max) : sp->dt_max;
+    const int is_dt = type == gw_solver_rk4 && sp->dt <= sp->dt_max;
+    /* a step the run chose itself resolves the stiffest contact (or the sensor
+     * body's oscillation): "raise it" would be wrong advice there */
+    const int chosen = is_dt ? !(given->dt > 0) : !(given->dt_max > 0);
+    if (!(t_len / step <= max_steps_run))
+        return gw_err_set(err, GW_EINVAL, "%s: a step of %g s needs about %.3g steps over %s (about %.3g s); "
+                          "at most %.0e: %s", is_dt ? "dt" : "dt-max", step, t_len / step, over, t_len, max_steps_run,
+                          !chosen ? "raise it"
+                          : is_dt ? "the default step resolves the stiffest contact or the sensor body's oscillation "
+                                    "(a longer one loses the run): use cvode or arkode"
+                                  : "the default largest step is a quarter of the shortest contact (a longer one can "
+                                    "step over a contact): fewer beads or a shorter run");
+    return GW_OK;
+}
+
+int chain_sensor_steps_check(const gw_chain_params *p, const gw_solver_type *type, double t_len, const char *over,
+                             gw_err *err)
+{
+    if (!(p->sensor.mass > 0 && p->sensor.stiffness > 0) || type == gw_solver_rk4)
+        return GW_OK; /* rk4: its step is bounded by chain_steps_check */
+    const double omega = sqrt(p->sensor.stiffness / p->sensor.mass), steps = 2.0 * omega * t_len;
+    if (!(steps <= 1e8))
+        return gw_err_set(err, GW_EINVAL, "sensor-stiffness: a sensor body oscillating at %.3g rad/s (sqrt(k_s/M)) "
+                          "needs about %.3g steps over %s (about %.3g s; 2 a radian at least, measured 2-9); at "
+                          "most 1e+08: a softer or heavier sensor body, or a shorter run", omega, steps, over, t_len);
+    return GW_OK;
+}
+
+/* Bytes a run of column p allocates, by what gw_chain_create, gw_chain_collide
+ * (or the drop) and the backend hold: the model's and the result's per-bead
+ * arrays (about 14 doubles a bead; the force-rate root's scratch of 2 dim doubles,
+ * touched only by the general model's central difference, is within the margin
+ * the measured sizes below leave), the solver's vectors over the state (dim =
+ * 2n + a few: rk4 10 of them with its root values, cvode and arkode about 24 with
+ * their histories and stages, arkode's implicit methods 34) and, for the implicit
+ * methods (cvode bdf, arkode dirk and imex), three band matrices of dim x (smu +
+ * ml + 1) doubles (the Jacobian, its saved copy and the factor workspace). The
+ * band is 2 above and 3 below the diagonal, except with a sensor body or a wall
+ * with its own states (plastic, viscoelastic, layer): those states couple every
+ * bead, the Jacobian is full (dim x (2 dim - 1)), and memory grows as n^2.
+ * Measured peak resident sizes at n = 1e6 (t-max 1e-9 s): 218 B a bead for rk4,
+ * 637 cvode bdf, 295 adams, 381 arkode erk, 810 dirk; 200 MB at n = 1000 with a
+ * sensor body (cvode). The estimate is an upper bound for each. */
+static int implicit_method(const gw_solver_type *t, int method)
+{
+    const char *used = gw_solver_method_used(t, method);
+    return t != gw_solver_rk4 && (strcmp(used, "bdf") == 0 || strcmp(used, "dirk") == 0 || strcmp(used, "imex") == 0);
+}
+
+static double memory_bytes(const gw_chain_params *p, const gw_solver_type *type, int method)
+{
+    const double n = p->n;
+    const int full = p->sensor.mass > 0 || p->wall.layer || p->wall.yield_pressure > 0 || p->wall.loss > 0;
+    const double dim = 2 * n + 8;
+    const gw_solver_type *t = type ? type : gw_solver_cvode;
+    const int implicit = implicit_method(t, method);
+    double vectors = t == gw_solver_rk4 ? 10 : implicit && t != gw_solver_cvode ? 34 : 24;
+    double bytes = 8 * (14 * n + vectors * dim);
+    if (implicit) {
+        double ldim = full ? 2 * dim - 1 : fmin(dim - 1, 5) + 3 + 1;
+        bytes += 3 * 8 * dim * ldim + 8 * dim;
+    }
+    return bytes;
+}
+
+/* The most beads within GW_CHAIN_MEMORY_MAX (memory_bytes grows with n). */
+static long memory_n_ok(const gw_chain_params *p, const gw_solver_type *type, int method)
+{
+    gw_chain_params q = *p;
+    long lo = 0, hi = (long)p->n + 1;
+    while (hi - lo > 1) {
+        long mid = lo + (hi - lo) / 2;
+        q.n = (int)mid;
+        if (memory_bytes(&q, type, method) <= GW_CHAIN_MEMORY_MAX)
+            lo = mid;
+        else
+            hi = mid;
+    }
+    return lo;
+}
+
+int gw_chain_memory_check(const gw_chain_params *p, const gw_solver_type *type, int method, gw_err *err)
+{
+    const double limit = GW_CHAIN_MEMORY_MAX;
+    double need = memory_bytes(p, type, method);
+    if (need <= limit)
+        return GW_OK;
+    long lo = memory_n_ok(p, type, method);
+    const gw_solver_type *t = type ? type : gw_solver_cvode;
+    const int full = p->sensor.mass > 0 || p->wall.layer || p->wall.yield_pressure > 0 || p->wall.loss > 0;
+    return gw_err_set(err, GW_EINVAL,
+                      "n: a column of %d beads needs about %.3g GB for its state and the %s (%s) solver's workspace%s, "
+                      "above the %.3g GB limit: at most %ld beads here", p->n, need / 1e9, gw_solver_type_name(t),
+                      gw_solver_method_used(t, method),
+                      full && implicit_method(t, method)
+                          ? " (a full Jacobian: the sensor body or the wall's own states couple every bead; rk4 or "
+                            "arkode erk need none)"
+                          : "",
+                      limit / 1e9, lo);
+}
+
+/* v rounded down to two significant digits (a suggested bound that passes). */
+static double floor_2digits(double v)
+{
+    const double p = pow(10, floor(log10(v)) - 1);
+    return floor(v / p) * p;
+}
+
+/* A light bead held by heavy ones rings on its contacts all the time they
+ * hold it, and cvode and arkode follow every oscillation: the run stops and
+ * restarts at each maximum and minimum of the wall force, and BDF starts again
+ * at order 1 there. Measured (cvode bdf at rtol 1e-12, --n 2 --radii 1e-3,X):
+ * 258 to 266 steps per oscillation of chain_ring_period over the expected
+ * length at X = 1e-2, 3e-2, 0.1 and 1 (1.7e4 to 1.7e7 steps); fewer at looser
+ * tolerances, as (tol / 1e-12)^-0.11 (99 at 1e-8, 58 at 1e-6), adams 113 and
+ * arkode's erk 133 at 1e-12. --radii 1e-3,1 took 17.1 million steps and 45 s
+ * of CPU (2.6 us a step). The plan bounds these steps times the beads at 2e7
+ * (about 30 s of CPU) when the ringing is not the column's own: more than
+ * RING_RATIO_MAX oscillations per bead transit (2n + 1 of them over the
+ * collision's expected length, whatever the run's length t_len). Equal beads
+ * would ring 0.37 to 0.61 times per transit (n = 1 to 1000, gravity, sheets),
+ * mixed radii of ratio 2 to 20 up to 13; a bead of 1e-3 m under 3e-2, 0.1 and
+ * 1 m 67, 407 and 12900 times, 3e-5 m between two of 4e-3 m 564 (within the
+ * bound: 3.1e6 bead-steps). Equal beads are not checked: a wall far
+ * stiffer than their contacts (--n 10 --k 1e3 --kwall 1e14) has bead 1 bounce
+ * between the two (9 wall contacts, 1.26e6 steps), not held ringing. rk4's
+ * steps are the fixed step's, bounded by chain_steps_check. The drop does not
+ * call it: its calibration is not this one (drop --n 2 --radii 1e-3,1 took
+ * 929331 steps over its 10 ms, 5.8 s, where this would estimate 1.4e7). */
+#define RING_RATIO_MAX 100.0
+#define RING_WORK_MAX 2e7
+#define RING_STEPS_PER_OSC 260.0
+
+int chain_ring_check(const gw_chain_params *p, const gw_solver_type *type, const gw_solver_params *sp,
+                     double t_len, double t_col, const char *over, gw_err *err)
+{
+    if (type == gw_solver_rk4 || !p->masses)
+        return GW_OK;
+    /* the run passes the chain's own masses (gw_chain_create fills them for
+     * equal beads too): --n 10 --k 1e3 --kwall 1e14 --dt-out 1e-7 was refused
+     * at the run as "bead 1 is 1 times lighter than bead 1" */
+    int equal = 1;
+    for (int i = 1; i < p->n && equal; i++)
+        equal = p->masses[i] == p->masses[0];
+    if (equal)
+        return GW_OK;
+    int f = 0;
+    const double n = p->n, tr = chain_ring_period(p, &f), osc = t_len / tr;
+    double tol = fmax(sp->rtol, sp->atol);
+    if (!(tol > 0))
+        tol = 1e-12;
+    const double per_osc = RING_STEPS_PER_OSC * pow(fmin(tol, 1.0) / 1e-12, -0.11);
+    const double work = n * per_osc * osc;
+    /* the ringing against the column's own scale: its collision's expected
+     * length t_col (whatever t_len) */
+    if (!(t_col / tr > RING_RATIO_MAX * (2 * n + 1)) || !(work > RING_WORK_MAX))
+        return GW_OK;
+    int h = 0;
+    for (int i = 1; i < p->n; i++)
+        if (p->masses[i] > p->masses[h])
+            h = i;
+    return gw_err_set(err, GW_EINVAL,
+                      "radii: bead %d (%.3g kg) is %.3g times lighter than bead %d (%.3g kg) and rings every %.3g s "
+                      "while the heavy beads hold it, about %.3g oscillations over %s (about %.3g s): about %.3g "
+                      "bead-steps of %s (%.0f steps an oscillation), above the bound %.0e (about 30 s): use rk4 (its "
+                      "fixed step is bounded on its own) or closer radii",
+                      f + 1, p->masses[f], p->masses[h] / p->masses[f], h + 1, p->masses[h], tr, osc, over, t_len,
+                      work, gw_solver_type_name(type), per_osc, RING_WORK_MAX);
+}
+
+/* A column that gravity holds on the wall: when gravity takes back the impact
+ * speed within the collision's expected length (g t_e > v_imp), the beads
+ * leaving the wall fall back before the column has separated, and the run goes
+ * on to t_max with bead 1 bouncing on the wall and the top contacts chattering,
+ * cvode restarting at each of their events. Measured (steel, cvode at 1e-12,
+ * default t-max and dt-out): the collision ended at g t_e / v_imp = 0.009 to
+ * 0.15 (n = 10, 40; g = 9.81, 100; v_imp 0.3 to 0.03) and never at 0.35 and
+ * above. The cost of such a run is its samples and steps, each O(n): 0.4 to
+ * 1.6 us a bead-sample at the default sampling tau_1/200 (steps 1 to 3.4 per
+ * sample: n = 300, g = 100, v_imp = 1e-3 ran 16715 steps and 17189 samples in
+ * 1.9 s up to t = 3e-3 s, about 100 s to its default t-max of 0.152 s; n = 40,
+ * g = 100, v_imp = 1e-3 407013 steps, 126228 samples, 8 s; profiled again:
+ * 7728 contact events and 446 force maxima over its 29 ms, about 200 a
+ * contact, each a real collision of beads bouncing under their weight (18 at
+ * a relative speed below 1e-9 m/s, none within 1e-7 s of the contact's
+ * previous event: no chattering), each a restart of BDF at order 1, about 95
+ * steps a restart, 780k steps, half the CPU in the band LU; adams took 1.2 s,
+ * arkode's erk 0.6 s, bdf 5.1 s). The steps follow
+ * the contacts, not the sampling: the estimate counts samples at the finer of
+ * dt-out and tau_1/200, times the beads, over t_max, bounded at 1e7 (about 4
+ * to 16 s) whatever t_max was given. */
+#define HELD_WORK_MAX 1e7
+
+/* The longest t_max the bound admits for a held column (INFINITY when gravity
+ * does not hold it), rounded down to two digits. */
+static double held_t_lim(const gw_chain_params *p, double t_col, double tau1, double dt_out)
+{
+    if (!(p->gravity > 0) || !(p->gravity * t_col > p->v_imp))
+        return INFINITY;
+    return floor_2digits(HELD_WORK_MAX / p->n * fmin(dt_out, tau1 / 200.0));
+}
+
+int chain_held_check(const gw_chain_params *p, double t_max, double t_col, double tau1, double dt_out, gw_err *err)
+{
+    if (!isfinite(held_t_lim(p, t_col, tau1, dt_out)))
+        return GW_OK;
+    const double dt = fmin(dt_out, tau1 / 200.0), samples = t_max / dt, work = p->n * samples;
+    if (!(work > HELD_WORK_MAX))
+        return GW_OK;
+    return gw_err_set(err, GW_EINVAL,
+                      "gravity: %g m/s^2 takes back the impact speed (vimp %g m/s) in %.3g s, within the collision's "
+                      "expected %.3g s: the column stays on the wall, bouncing on it, and the run goes on to t-max "
+                      "%.3g s, about %.3g samples of %.3g s times %d beads, above the bound %.0e (about 15 s): lower "
+                      "t-max to %g s or less, raise vimp or lower gravity",
+                      p->gravity, p->v_imp, p->v_imp / p->gravity, t_col, t_max, samples, dt, p->n, HELD_WORK_MAX,
+                      held_t_lim(p, t_col, tau1, dt_out));
+}
+
+/* Every sample costs a fixed part (the drive's stop, the root functions, the
+ * observation) besides its O(n): about 0.6 us at n = 2. The default dt-out,
+ * tau_1/200 of bead 1 on the wall, gives about 185 samples per bead transit of
+ * an ordinary column (200 over the wall contact, 2n + 1 transits of 2 T_c);
+ * a wall far stiffer than the bead contacts makes tau_1 tiny against the
+ * column's own length (--n 2 --k 1e3 --kwall 1e14: tau_1 = 0.87 us over a
+ * collision of 28 ms, dt-out 4.4 ns, 6.4e6 samples). Sampling finer than 1e4
+ * a bead transit and more than 3e6 samples over the collision (about 2 s at
+ * n = 2; rk4 on --radii 1e-3,1, 1.8e6 samples, ran in 1.6 s) is refused, naming dt-out and the interval that passes; the large
+ * counts of long columns (200 + 370 n at the defaults) come from their length,
+ * not their sampling, and stay bounded by the plan's 1e9. */
+#define SAMPLING_MAX 3e6
+#define SAMPLING_PER_TRANSIT_MAX 1e4
+
+int chain_sampling_check(int n, double t_expect, double dt_out, int given, gw_err *err)
+{
+    const double samples = t_expect / dt_out, transits = 2.0 * n + 1;
+    if (!(samples > SAMPLING_MAX) || !(samples / transits > SAMPLING_PER_TRANSIT_MAX))
+        return GW_OK;
+    /* the interval that passes, rounded up to two digits */
+    const double lim = t_expect / fmax(SAMPLING_MAX, SAMPLING_PER_TRANSIT_MAX * transits),
+                 q = pow(10, floor(log10(lim)) - 1);
+    return gw_err_set(err, GW_EINVAL,
+                      "dt-out: %s%g s gives about %.3g samples over the collision (about %.3g s), %.3g per bead "
+                      "transit of %d beads; at most %.0e when above %.0e a transit: raise dt-out to %.2g s or more%s",
+                      given ? "" : "the default tau_1/200 = ", dt_out, samples, t_expect, samples / transits, n,
+                      SAMPLING_MAX, SAMPLING_PER_TRANSIT_MAX, ceil(lim / q) * q,
+                      given ? "" : " (the wall's contact is far shorter than the column's: a stiff wall on soft contacts)");
+}
+
+int chain_collide_plan_make(const gw_chain_params *p0, const gw_chain_run_opts *o, collide_plan *pl, gw_err *err)
+{
+    gw_chain_params q = *p0; /* the time scales at chain_speed_scale; p0 itself for the rest */
+    q.v_imp = chain_speed_scale(p0);
+    const gw_chain_params *p = &q;
+    const int n = p->n;
+    const double m0 = p->masses ? p->masses[0] : p->mass;
+    memset(pl, 0, sizeof *pl);
+    pl->type = o->solver ? o->solver : gw_solver_cvode;
+    pl->tau1 = gw_chain_tau1(m0, p->kwall, p->v_imp);
+    pl->dt_out = o->dt_out > 0 ? o->dt_out : pl->tau1 / 200.0;
+    /* The collision's expected length: n bead-to-bead transits of 2 T_c plus
+     * the wall contact, each on the scale of the heaviest bead it can involve
+     * (chain_column_scales; bead 1's for equal beads). Bead 1's alone made a
+     * light bead under a heavy one end at the default t-max still on the wall
+     * (--radii 5e-4,1e-2: t-max 0.197 ms, the collision 0.248 ms, exit 1). */
+    double tc_col = 0, tau1_col = 0;
+    chain_column_scales(p, &tc_col, &tau1_col);
+    const double t_col = n * 2.0 * tc_col + tau1_col; /* the ring, held and t-max bounds' too */
+    pl->tc = tc_col;
+    pl->t_max = o->t_max > 0 ? o->t_max : 20.0 * t_col;
+    /* Every sample costs O(n) (energy, contacts): bound the samples over the
+     * collision's expected length (or t_max when shorter). The
+     * default dt-out gives about 100 n + 200 of them; checked before the run. */
+    pl->t_expect = fmin(pl->t_max, t_col);
+    int rc;
+    pl->sp = o->sp;
+    /* The root finders compare signs at step ends only: a step longer than half a
+     * contact could step over a whole contact. Contacts last at least about the
+     * binary contact time at twice v_imp, so cap the step at a quarter of it. */
+    if (!(pl->sp.dt_max > 0))
+        pl->sp.dt_max = 0.25 * chain_contact_tau_min(p, 2 * p->v_imp); /* the wall's too */
+    pl->type = o->solver ? o->solver : gw_solver_cvode;
+    /* the step resolves the stiffest contact (a small bead between large ones was
+     * taken at bead 1's scale and blew up) and a sensor body's oscillation */
+    if (pl->type == gw_solver_rk4 && !(pl->sp.dt > 0))
+        pl->sp.dt = gw_chain_step_scale(p) / (o->steps_per_tc > 0 ? o->steps_per_tc : 400.0);
+    /* and at least t_expect / step steps of O(n) each: bounded before the run
+     * (the RK4 step, or the largest step of cvode/arkode) */
+    /* Steps and samples grow about as n, memory as n (n^2 with a full Jacobian):
+     * when several trip, the one that passes the fewest beads is named. */
+    const double max_samples = 1e9, step = pl->type == gw_solver_rk4 ? fmin(pl->sp.dt, pl->sp.dt_max) : pl->sp.dt_max;
+    gw_err e[3] = {{{0}}};
+    double n_ok[3] = {INFINITY, INFINITY, INFINITY};
+    if (chain_steps_check(pl->type, &pl->sp, &o->sp, pl->t_expect, "the collision", &e[0]) != GW_OK)
+        n_ok[0] = n * 1e8 / (pl->t_expect / step);
+    /* cvode and arkode follow a sensor body's oscillation too (8 s for 0.1 ms at
+     * 1e-7 kg on 1e14 N/m, 5.8e7 steps) */
+    if ((rc = chain_sensor_steps_check(p, pl->type, pl->t_expect, "the collision", err)) != GW_OK)
+        return rc;
+    if (gw_chain_memory_check(p, pl->type, pl->sp.method, &e[1]) != GW_OK)
+        n_ok[1] = memory_n_ok(p, pl->type, pl->sp.method);
+    if (!(pl->t_expect / pl->dt_out <= max_samples)) {
+        gw_err_set(&e[2], GW_EINVAL, "dt-out: %g s gives about %.3g samples over the collision (about %.3g s); "
+                   "at most %.0e: raise dt-out", pl->dt_out, pl->t_expect / pl->dt_out, pl->t_expect, max_samples);
+        n_ok[2] = n * max_samples / (pl->t_expect / pl->dt_out);
+    }
+    int worst = -1;
+    for (int i = 0; i < 3; i++)
+        if (isfinite(n_ok[i]) && (worst < 0 || n_ok[i] < n_ok[worst]))
+            worst = i;
+    if (worst >= 0)
+        return gw_err_set(err, GW_EINVAL, "%s", e[worst].msg);
+    /* cvode and arkode follow a light bead that heavy beads hold, all the time
+     * they hold it (chain_ring_check) */
+    if ((rc = chain_ring_check(p, pl->type, &pl->sp, pl->t_expect, t_col, "the collision", err)) != GW_OK)
+        return rc;
+    /* A stored trace (gw_chain_trace_sample) keeps t, the wall force and every
+     * bead's x and v at each sample and event (about 4 events per bead): bound
+     * it before the run (--n 1000 --dt-out 1e-9 grew toward 400 GB; written,
+     * 28 B a value, 1000 beads at the default dt-out came to 8 GB of files). */
+    if (o->sample == gw_chain_trace_sample &&
+        (rc = gw_chain_trace_check(n, pl->t_expect, pl->dt_out, 4.0 * n + 2, err)) != GW_OK)
+        return rc;
+    /* sampling far finer than the column's own scale (chain_sampling_check;
+     * after the stored trace's bound, which names what --out would write) */
+    if ((rc = chain_sampling_check(n, pl->t_expect, pl->dt_out, o->dt_out > 0, err)) != GW_OK)
+        return rc;
+    /* A run that does not end (a column held on the wall by gravity and damping,
+     * a sensor body still ringing) goes on to t_max: the bounds above hold over
+     * the expected collision, an explicit --t-max far beyond it must meet them too
+     * (--t-max 1e6 ran 1e11 steps, hours, with nothing said). The default t_max is
+     * 20 expected lengths, so it stays within 20 times the bounds. */
+    if (o->t_max > 0 && pl->t_max > pl->t_expect) {
+        const double t_lim = fmin(1e8 * step, max_samples * pl->dt_out);
+        if (!(pl->t_max <= t_lim))
+            return gw_err_set(err, GW_EINVAL, "t-max: %g s would take about %.3g steps of %g s and %.3g samples "
+                              "of %g s if the collision has not ended by then; at most 1e+08 steps and 1e+09 samples: "
+                              "lower t-max to %g s or less", pl->t_max, pl->t_max / step, step,
+                              pl->t_max / pl->dt_out, pl->dt_out,
+                              /* one that passes the held column's bound too (chain_held_check) */
+                              fmin(floor_2digits(t_lim), held_t_lim(p0, t_col, pl->tau1,
+                                                                    pl->dt_out)));
+        if ((rc = chain_sensor_steps_check(p, pl->type, pl->t_max, "t-max", err)) != GW_OK)
+            return rc;
+        if (o->sample == gw_chain_trace_sample) {
+            gw_err te = {{0}};
+            if (gw_chain_trace_check(n, pl->t_max, pl->dt_out, 4.0 * n + 2, &te) != GW_OK)
+                return gw_err_set(err, GW_EINVAL, "t-max: %g s would store about %.3g samples of %d beads if the "
+                                  "collision has not ended by then, above the 5 GB limit of the written trace: lower "
+                                  "t-max or raise dt-out", pl->t_max, pl->t_max / pl->dt_out + 1, n);
+        }
+    }
+    /* A column that gravity holds on the wall runs to t_max (chain_held_check) */
+    if ((rc = chain_held_check(p0, pl->t_max, t_col, pl->tau1, pl->dt_out, err)) != GW_OK)
+        return rc;
+    return GW_OK;
+}
+
+int gw_chain_run_check(const gw_chain_params *p, const gw_chain_run_opts *o, gw_err *err)
+{
+    collide_plan pl;
+    return chain_collide_plan_make(p, o, &pl, err);
+}
+
+int chain_run_steps(const gw_chain_params *p, const gw_chain_run_opts *o, double *steps, gw_err *err)
+{
+    collide_plan pl;
+    int rc = chain_collide_plan_make(p, o, &pl, err);
+    if (rc != GW_OK)
+        return rc;
+    const double step = pl.type == gw_solver_rk4 ? fmin(pl.sp.dt, pl.sp.dt_max) : pl.sp.dt_max;
+    double s = pl.t_expect / step;
+    if (pl.type != gw_solver_rk4 && p->sensor.mass > 0 && p->sensor.stiffness > 0)
+        s = fmax(s, 2.0 * sqrt(p->sensor.stiffness / p->sensor.mass) * pl.t_expect);
+    *steps = s;
+    return GW_OK;
+}

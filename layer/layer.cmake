@@ -1,6 +1,8 @@
 # The 2D granular layer (issue 4): Hertz-Mindlin discs, pluviation, block impact.
 add_library(gw_layer_obj OBJECT
   ${CMAKE_CURRENT_LIST_DIR}/layer_model.c
+  ${CMAKE_CURRENT_LIST_DIR}/layer_create.c
+  ${CMAKE_CURRENT_LIST_DIR}/layer_snapshot.c
   ${CMAKE_CURRENT_LIST_DIR}/layer_clumps.c
   ${CMAKE_CURRENT_LIST_DIR}/layer_clump_check.c
   ${CMAKE_CURRENT_LIST_DIR}/layer_contacts.c

@@ -5,7 +5,7 @@
  * A body is a set of member discs i at fixed offsets o_i from its centre of mass
  * in the body frame; at orientation theta the member centre is
  *   x_i = X + R(theta) o_i,  v_i = V + omega e_z x (R(theta) o_i).
- * Mass and inertia, clump_mass = sum (members under the mass law of layer_model.c):
+ * Mass and inertia, clump_mass = sum (members under the mass law of layer_create.c):
  *   M = sum m_i,  X = sum m_i x_i / M,  I = sum (I_i + m_i |x_i - X|^2),
  * the area (volume) shared by overlapping members counted twice: the mass law
  * is per disc, and the double count is what a clump of PFC2D balls does too.

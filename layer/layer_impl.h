@@ -243,6 +243,12 @@ enum { LAYER_SNAP_UN, LAYER_SNAP_FN, LAYER_SNAP_FT, LAYER_SNAP_KT, LAYER_SNAP_PX
  * when open) and the contact point; disc centres in L->snap_xy. */
 const double *layer_snapshot(const gw_layer *L);
 
+/* Overlap u_n of contact c whose discs are centred at pa and pb (pb unused
+ * against a wall), box width w; its unit normal n (a -> b). layer_model.c,
+ * shared with the snapshot (layer_snapshot.c). */
+double layer_pair_geometry(const layer_contact *c, const double pa[2], const double pb[2], double w,
+                           double n[2]);
+
 /* Region of body i by its centre of mass in state y: the ring (0 .. reg_n - 1),
  * reg_n outside them, reg_n + 1 for the block. */
 static inline int layer_body_region(const gw_layer *L, int i, const double *y)

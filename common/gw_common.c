@@ -1,5 +1,6 @@
 /*
- * gw_common.c: status table, error text, validated number parsing.
+ * gw_common.c: status table, error text, version, the monotonic clock,
+ * validated number parsing.
  */
 #include <errno.h>
 #include <float.h>
@@ -9,6 +10,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <strings.h>
+#include <time.h>
 
 #include "gw_common.h"
 #include "gw_locale.h"
@@ -49,6 +51,13 @@ int gw_version_minor(void)
 int gw_version_patch(void)
 {
     return GW_VERSION_PATCH;
+}
+
+double gw_clock_ms(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return ts.tv_sec * 1e3 + ts.tv_nsec * 1e-6;
 }
 
 /* The message as one line of UTF-8: a control character that a caller's value

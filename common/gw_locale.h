@@ -30,7 +30,7 @@ int gw_fprintf(FILE *fp, const char *fmt, ...) GW_FMT(2, 3);
 
 /* The permissions of a file the library creates in place of `replaces`: the
  * replaced regular file's, or 0666 less the process's umask (what a shell's >
- * gives; the temporary that mkstemp made is 0600). Defined in gw_io.c. */
+ * gives; the temporary that mkstemp made is 0600). Defined in gw_io_afile.c. */
 mode_t gw_new_file_mode(const char *replaces);
 
 #endif

@@ -1,0 +1,337 @@
+/*
+ * gw_io_afile.c: atomic files: a file written under a temporary name beside
+ * its path ("PATH.tmp.HOST.PID.XXXXXX"), fsynced and renamed into place, so a
+ * reader sees the previous file or the complete new one; as a stream, or as a
+ * temporary path for writers that create the file by name (HDF5); through a
+ * symbolic link its target is replaced and the link kept; SIGINT, SIGTERM and
+ * SIGHUP held from open to commit; the temporaries a killed writer left
+ * removed at the next open. Also gw_write_text and the comment lines of file
+ * headers. Separate from the output sets (gw_io_outset.c), which stage these
+ * files and place them together, and from the checks of output locations
+ * made before a run (gw_io_paths.c).
+ */
+#define _POSIX_C_SOURCE 200809L
+#include <dirent.h>
+#include <errno.h>
+#include <fcntl.h>
+#include <limits.h>
+#include <signal.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <pthread.h>
+#include <unistd.h>
+
+#include "gw_common.h"
+#include "gw_locale.h"
+#include "gw_io_impl.h"
+
+_Static_assert(sizeof(sigset_t) <= sizeof(((gw_afile *)0)->oldmask), "sigset_t does not fit");
+
+/* SIGINT, SIGTERM and SIGHUP held on this thread (the mask before in old,
+ * *masked set when it was), and given back */
+void gw_io_sig_hold(unsigned char *old, int *masked)
+{
+    sigset_t s;
+    sigemptyset(&s);
+    sigaddset(&s, SIGINT);
+    sigaddset(&s, SIGTERM);
+    sigaddset(&s, SIGHUP);
+    *masked = pthread_sigmask(SIG_BLOCK, &s, (sigset_t *)(void *)old) == 0;
+}
+
+void gw_io_sig_release(unsigned char *old, int *masked)
+{
+    if (*masked)
+        pthread_sigmask(SIG_SETMASK, (sigset_t *)(void *)old, NULL);
+    *masked = 0;
+}
+
+static void hold_signals(gw_afile *f) { gw_io_sig_hold(f->oldmask, &f->masked); }
+static void release_signals(gw_afile *f) { gw_io_sig_release(f->oldmask, &f->masked); }
+
+/* GW_EINVAL for the symbolic link path whose target cannot be used (e: the
+ * errno of resolving it; ENOENT: it leads to nothing), naming the target. */
+int gw_io_link_refused(const char *path, const char *what, int e, gw_err *err)
+{
+    char target[4096];
+    ssize_t k = readlink(path, target, sizeof target - 1);
+    target[k > 0 ? k : 0] = '\0';
+    if (e == ENOENT)
+        return gw_err_set(err, GW_EINVAL, "%s: '%s' is a symbolic link to '%s', which does not exist", what, path,
+                          target);
+    return gw_err_set(err, GW_EINVAL, "%s: '%s' is a symbolic link to '%s': %s", what, path, target, strerror(e));
+}
+
+/* The file a write to path replaces: path itself, or the file a symbolic link
+ * there leads to (the rename of an atomic write would put a regular file in
+ * place of the link and leave its target as it was: layer-make --out LINK).
+ * GW_EINVAL for a link to nothing (as gw_out_check refuses for a directory). */
+int gw_io_write_target(const char *path, char *out, size_t n, const char *what, gw_err *err)
+{
+    struct stat st;
+    if (lstat(path, &st) != 0 || !S_ISLNK(st.st_mode)) {
+        if (strlen(path) >= n)
+            return gw_err_set(err, GW_EINVAL, "%s: path too long", path);
+        gw_snprintf(out, n, "%s", path);
+        return GW_OK;
+    }
+    char real[PATH_MAX];
+    if (!realpath(path, real))
+        return gw_io_link_refused(path, what, errno, err);
+    if (strlen(real) >= n)
+        return gw_err_set(err, GW_EINVAL, "%s: path too long", real);
+    gw_snprintf(out, n, "%s", real);
+    return GW_OK;
+}
+
+/* This host's name as it goes into temporaries' names: letters, digits and
+ * '-', at most 24 ("host" when none is left). */
+static void host_token(char *out, size_t n)
+{
+    char h[256] = "";
+    size_t k = 0;
+    if (gethostname(h, sizeof h - 1) != 0)
+        h[0] = '\0';
+    for (const char *c = h; *c && k + 1 < n && k < 24; c++)
+        if ((*c >= 'a' && *c <= 'z') || (*c >= 'A' && *c <= 'Z') || (*c >= '0' && *c <= '9') || *c == '-')
+            out[k++] = *c;
+    out[k] = '\0';
+    if (k == 0)
+        gw_snprintf(out, n, "host");
+}
+
+/* The temporaries of path that a writer on this host left when it was killed
+ * (kill -9): "BASE.tmp.HOST.PID.XXXXXX" whose PID is no process (kill(PID, 0):
+ * ESRCH). A writer alive (this process included), another host's temporary
+ * (a shared file system) and other names are left alone. */
+static void remove_stale_temporaries(const char *path, const char *host)
+{
+    char dir[4096];
+    const char *slash = strrchr(path, '/'), *base = slash ? slash + 1 : path;
+    if (gw_snprintf(dir, sizeof dir, "%s", path) >= (int)sizeof dir)
+        return;
+    gw_path_parent(dir);
+    char prefix[512];
+    if (gw_snprintf(prefix, sizeof prefix, "%s.tmp.%s.", base, host) >= (int)sizeof prefix)
+        return;
+    const size_t plen = strlen(prefix);
+    DIR *d = opendir(dir);
+    if (!d)
+        return;
+    for (struct dirent *e; (e = readdir(d)) != NULL;) {
+        if (strncmp(e->d_name, prefix, plen) != 0)
+            continue;
+        char *end;
+        errno = 0;
+        long pid = strtol(e->d_name + plen, &end, 10);
+        if (errno || end == e->d_name + plen || pid <= 0 || *end != '.' || strlen(end + 1) != 6 ||
+            pid == (long)getpid())
+            continue;
+        if (kill((pid_t)pid, 0) == 0 || errno != ESRCH)
+            continue;
+        unlinkat(dirfd(d), e->d_name, 0);
+    }
+    closedir(d);
+}
+
+/* The process's umask, read without changing it (/proc/self/status,
+ * "Umask:", Linux 4.7 and later); elsewhere set to 077 and back under a lock
+ * (a file another thread creates in between is then only more private). */
+mode_t gw_io_current_umask(void)
+{
+    FILE *fp = fopen("/proc/self/status", "re");
+    if (fp) {
+        char line[256];
+        unsigned v = 0;
+        int got = 0;
+        while (!got && fgets(line, sizeof line, fp))
+            got = strncmp(line, "Umask:", 6) == 0 && sscanf(line + 6, "%o", &v) == 1;
+        fclose(fp);
+        if (got)
+            return (mode_t)(v & 0777);
+    }
+    static pthread_mutex_t mu = PTHREAD_MUTEX_INITIALIZER;
+    pthread_mutex_lock(&mu);
+    mode_t m = umask(077);
+    umask(m);
+    pthread_mutex_unlock(&mu);
+    return m & 0777;
+}
+
+mode_t gw_new_file_mode(const char *replaces)
+{
+    struct stat st;
+    if (replaces && stat(replaces, &st) == 0 && S_ISREG(st.st_mode))
+        return st.st_mode & 0777;
+    return 0666 & ~gw_io_current_umask();
+}
+
+/* The status of a failed open: out of memory (the stream's buffer, the
+ * kernel's) is a run failure, not a file to blame. */
+int gw_io_status(int e)
+{
+    return e == ENOMEM ? GW_ENOMEM : GW_EIO;
+}
+
+int gw_afile_open(gw_afile *f, const char *path, gw_err *err)
+{
+    if (!f || !path)
+        return gw_err_set(err, GW_EINVAL, "gw_afile_open: %s is NULL", !f ? "f" : "path");
+    memset(f, 0, sizeof *f);
+    hold_signals(f);
+    int rc = gw_io_write_target(path, f->path, sizeof f->path, path, err);
+    if (rc != GW_OK) { /* nothing made: give the signals back */
+        release_signals(f);
+        return rc;
+    }
+    path = f->path; /* the temporary beside the file it replaces */
+    char host[32];
+    host_token(host, sizeof host);
+    remove_stale_temporaries(path, host);
+    gw_snprintf(f->tmp, sizeof f->tmp, "%s.tmp.%s.%ld.XXXXXX", path, host, (long)getpid());
+    int fd = mkstemp(f->tmp);
+    if (fd < 0) {
+        f->tmp[0] = '\0';
+        int e = errno;
+        release_signals(f);
+        return gw_err_set(err, gw_io_status(e), "%s: cannot create: %s", path, strerror(e));
+    }
+    /* mkstemp made it 0600: the permissions a shell's > would give (the
+     * replaced file's, or 0666 less the umask) */
+    fchmod(fd, gw_new_file_mode(path));
+    f->fp = fdopen(fd, "w");
+    if (!f->fp) {
+        int e = errno;
+        close(fd);
+        unlink(f->tmp);
+        f->tmp[0] = '\0';
+        release_signals(f);
+        return gw_err_set(err, gw_io_status(e), "%s: cannot open: %s", path, strerror(e));
+    }
+    return GW_OK;
+}
+
+int gw_afile_open_named(gw_afile *f, const char *path, gw_err *err)
+{
+    int rc = gw_afile_open(f, path, err);
+    if (rc != GW_OK)
+        return rc;
+    /* the writer creates f->tmp again by name (HDF5 truncates it): the empty
+     * file made by mkstemp only reserves the unique name */
+    fclose(f->fp);
+    f->fp = NULL;
+    f->named = 1;
+    return GW_OK;
+}
+
+/* The end of a commit once the temporary is complete and fsynced: staged in
+ * the open set, or renamed into place. */
+static int place(gw_afile *f, int *saved)
+{
+    int st = gw_outset_stage(f);
+    if (st < 0) {
+        *saved = ENOMEM;
+        return -1;
+    }
+    if (st == 0 && rename(f->tmp, f->path) != 0) {
+        *saved = errno ? errno : EIO;
+        return -1;
+    }
+    return 0;
+}
+
+/* fsync a file the caller wrote by name, then rename it into place. */
+static int commit_named(gw_afile *f, gw_err *err)
+{
+    errno = 0;
+    int fd = open(f->tmp, O_RDONLY);
+    int bad = fd < 0 || fsync(fd) != 0;
+    int saved = bad ? (errno ? errno : EIO) : 0;
+    if (fd >= 0)
+        close(fd);
+    if (!bad && place(f, &saved) != 0)
+        bad = 1;
+    if (bad)
+        unlink(f->tmp);
+    f->tmp[0] = '\0';
+    f->named = 0;
+    release_signals(f);
+    return bad ? gw_err_set(err, GW_EIO, "%s: write failed: %s", f->path, strerror(saved)) : GW_OK;
+}
+
+int gw_afile_commit(gw_afile *f, gw_err *err)
+{
+    if (!f)
+        return gw_err_set(err, GW_EINVAL, "gw_afile_commit: f is NULL");
+    if (f->named && !f->fp && f->tmp[0])
+        return commit_named(f, err);
+    if (!f->fp) {
+        release_signals(f);
+        return gw_err_set(err, GW_EIO, "%s: file not open", f->path);
+    }
+    /* errno is only meaningful right after the call that failed: a stream whose
+     * error flag was set by an earlier fwrite reports EIO, never "Success" */
+    errno = 0;
+    int bad = 0, saved = 0;
+    if (ferror(f->fp)) { /* an earlier write failed: flushing again gives its errno */
+        bad = 1;
+        fflush(f->fp);
+        saved = errno ? errno : EIO;
+    }
+    else if (fflush(f->fp) != 0 || fsync(fileno(f->fp)) != 0)
+        bad = 1, saved = errno ? errno : EIO;
+    errno = 0;
+    if (fclose(f->fp) != 0 && !bad)
+        bad = 1, saved = errno ? errno : EIO;
+    f->fp = NULL;
+    if (bad || place(f, &saved) != 0) {
+        unlink(f->tmp);
+        f->tmp[0] = '\0';
+        release_signals(f);
+        return gw_err_set(err, GW_EIO, "%s: write failed: %s", f->path, strerror(saved));
+    }
+    f->tmp[0] = '\0';
+    release_signals(f);
+    return GW_OK;
+}
+
+void gw_afile_abort(gw_afile *f)
+{
+    if (!f)
+        return;
+    if (f->fp) {
+        fclose(f->fp);
+        f->fp = NULL;
+    }
+    if (f->tmp[0]) {
+        unlink(f->tmp);
+        f->tmp[0] = '\0';
+    }
+    f->named = 0;
+    release_signals(f);
+}
+
+void gw_write_comment(FILE *fp, const char *text)
+{
+    if (!fp)
+        return;
+    for (const char *p = text; p && *p;) {
+        const char *nl = strchr(p, '\n');
+        size_t len = nl ? (size_t)(nl - p) : strlen(p);
+        gw_fprintf(fp, "# %.*s\n", (int)len, p);
+        p += len + (nl != NULL);
+    }
+}
+
+int gw_write_text(const char *path, const char *text, gw_err *err)
+{
+    if (!path || !text)
+        return gw_err_set(err, GW_EINVAL, "gw_write_text: %s is NULL", !path ? "path" : "text");
+    gw_afile f;
+    int rc = gw_afile_open(&f, path, err);
+    if (rc != GW_OK)
+        return rc;
+    fputs(text, f.fp);
+    return gw_afile_commit(&f, err);
+}

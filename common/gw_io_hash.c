@@ -1,0 +1,76 @@
+/*
+ * gw_io_hash.c: the content hashes a result records of what it ran on:
+ * FNV-1a 64 (offset basis 14695981039346656037, prime 1099511628211) of
+ * bytes, a stream or an input file, a sweep case's configuration hash, and a
+ * hash read back from its 16 hex digits. Separate from the files: it reads
+ * through gw_input_open only.
+ */
+#include <stdio.h>
+#include <string.h>
+
+#include "gw_common.h"
+unsigned long long gw_fnv1a64(unsigned long long h, const void *p, size_t n)
+{
+    if (!p)
+        return h;
+    const unsigned char *b = p;
+    for (size_t i = 0; i < n; i++) {
+        h ^= b[i];
+        h *= 1099511628211ULL;
+    }
+    return h;
+}
+
+unsigned long long gw_case_config_hash(const char *model, int n, const char *const *names,
+                                       const char *const *values)
+{
+    unsigned long long h = gw_fnv1a64(GW_FNV1A64_INIT, "model ", 6);
+    h = gw_fnv1a64(gw_fnv1a64(h, model, strlen(model)), "\n", 1);
+    for (int i = 0; i < n; i++) {
+        h = gw_fnv1a64(gw_fnv1a64(h, names[i], strlen(names[i])), " = ", 3);
+        h = gw_fnv1a64(gw_fnv1a64(h, values[i], strlen(values[i])), "\n", 1);
+    }
+    return h;
+}
+
+int gw_fnv1a64_parse(const char *p, size_t len, unsigned long long *h)
+{
+    if (len != 16)
+        return 0;
+    unsigned long long v = 0;
+    for (size_t i = 0; i < 16; i++) {
+        const char c = p[i];
+        if (c >= '0' && c <= '9')
+            v = v << 4 | (unsigned long long)(c - '0');
+        else if (c >= 'a' && c <= 'f')
+            v = v << 4 | (unsigned long long)(c - 'a' + 10);
+        else
+            return 0;
+    }
+    *h = v;
+    return 1;
+}
+
+int gw_fnv1a64_stream(FILE *fp, unsigned long long *h)
+{
+    unsigned char buf[8192]; /* 64 KiB here overflowed a 64 KiB stack (ulimit -s 64) */
+    size_t got;
+    unsigned long long v = GW_FNV1A64_INIT;
+    while ((got = fread(buf, 1, sizeof buf, fp)) > 0)
+        v = gw_fnv1a64(v, buf, got);
+    if (ferror(fp))
+        return GW_EIO;
+    *h = v;
+    return GW_OK;
+}
+
+int gw_fnv1a64_file(const char *path, const char *what, unsigned long long *h, gw_err *err)
+{
+    FILE *fp = NULL;
+    int rc = gw_input_open(path, what, &fp, err);
+    if (rc != GW_OK)
+        return rc;
+    rc = gw_fnv1a64_stream(fp, h);
+    fclose(fp);
+    return rc == GW_OK ? GW_OK : gw_err_set(err, GW_EIO, "%s: %s: read failed", what, path);
+}

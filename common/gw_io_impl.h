@@ -1,0 +1,42 @@
+/*
+ * gw_io_impl.h (private to common/, not installed): what the parts of the
+ * file layer share: the atomic file's (gw_io_afile.c) signal hold, symbolic
+ * link target, umask and open status, used by the output sets
+ * (gw_io_outset.c), the output locations' checks (gw_io_paths.c) and the
+ * inputs (gw_io_input.c); the inputs' file kind, used by the checks; and the
+ * open set's staging of a committed file (gw_io_outset.c).
+ */
+#ifndef GW_IO_IMPL_H
+#define GW_IO_IMPL_H
+
+#include <sys/types.h>
+
+#include "gw_common.h"
+
+/* SIGINT, SIGTERM and SIGHUP held on this thread (the mask before in old, a
+ * sigset_t; *masked set when it was), and given back. */
+void gw_io_sig_hold(unsigned char *old, int *masked);
+void gw_io_sig_release(unsigned char *old, int *masked);
+
+/* GW_EINVAL for the symbolic link path whose target cannot be used (e: the
+ * errno of resolving it; ENOENT: it leads to nothing), naming the target. */
+int gw_io_link_refused(const char *path, const char *what, int e, gw_err *err);
+
+/* The file a write to path replaces (path, or a symbolic link's target) into
+ * out (n bytes); GW_EINVAL for a link to nothing or a path too long. */
+int gw_io_write_target(const char *path, char *out, size_t n, const char *what, gw_err *err);
+
+/* The process's umask, read without changing it where the OS allows. */
+mode_t gw_io_current_umask(void);
+
+/* The status of a failed open of errno e: GW_ENOMEM or GW_EIO. */
+int gw_io_status(int e);
+
+/* What a file of mode m is, for a message ("a FIFO", "a directory", ...). */
+const char *gw_io_file_kind(mode_t m);
+
+/* Keep f's fsynced temporary in the set open on this thread instead of
+ * renaming it: 1 staged, 0 no set open, -1 out of memory. */
+int gw_outset_stage(gw_afile *f);
+
+#endif

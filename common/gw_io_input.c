@@ -1,0 +1,118 @@
+/*
+ * gw_io_input.c: the one way inputs are opened: regular files only (a FIFO,
+ * device or directory is refused before any read, so nothing can block), and
+ * whole files read bounded in size. Separate from the outputs (gw_io_afile.c,
+ * gw_io_outset.c, gw_io_paths.c): an input is never written.
+ */
+#define _POSIX_C_SOURCE 200809L
+#include <errno.h>
+#include <fcntl.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include "gw_common.h"
+#include "gw_locale.h"
+#include "gw_io_impl.h"
+
+const char *gw_io_file_kind(mode_t m)
+{
+    return S_ISFIFO(m) ? "a FIFO" : S_ISCHR(m) ? "a character device" : S_ISBLK(m) ? "a block device"
+         : S_ISDIR(m) ? "a directory" : S_ISSOCK(m) ? "a socket" : "not a regular file";
+}
+
+int gw_input_open(const char *path, const char *what, FILE **out, gw_err *err)
+{
+    *out = NULL;
+    if (!path || !*path)
+        return gw_err_set(err, GW_EINVAL, "%s: empty file name", what);
+    /* O_NONBLOCK: opening a FIFO without a writer would block until one comes */
+    int fd = open(path, O_RDONLY | O_NONBLOCK | O_NOCTTY);
+    if (fd < 0) {
+        int e = errno;
+        return gw_err_set(err, gw_io_status(e), "%s: %s: cannot open: %s", what, path, strerror(e));
+    }
+    struct stat st;
+    if (fstat(fd, &st) != 0) {
+        int e = errno;
+        close(fd);
+        return gw_err_set(err, GW_EIO, "%s: %s: cannot read: %s", what, path, strerror(e));
+    }
+    if (!S_ISREG(st.st_mode)) {
+        close(fd);
+        return gw_err_set(err, GW_EINVAL, "%s: %s is %s; give a regular file", what, path,
+                          gw_io_file_kind(st.st_mode));
+    }
+    int fl = fcntl(fd, F_GETFL);
+    if (fl != -1)
+        fcntl(fd, F_SETFL, fl & ~O_NONBLOCK);
+    FILE *fp = fdopen(fd, "rb");
+    if (!fp) {
+        int e = errno;
+        close(fd);
+        return gw_err_set(err, gw_io_status(e), "%s: %s: cannot open: %s", what, path, strerror(e));
+    }
+    *out = fp;
+    return GW_OK;
+}
+
+int gw_input_check(const char *path, const char *what, gw_err *err)
+{
+    FILE *fp = NULL;
+    int rc = gw_input_open(path, what, &fp, err);
+    if (fp)
+        fclose(fp);
+    return rc;
+}
+
+int gw_input_read(const char *path, const char *what, size_t max, char **out, size_t *len,
+                  gw_err *err)
+{
+    if (!out)
+        return gw_err_set(err, GW_EINVAL, "gw_input_read: out is NULL");
+    *out = NULL;
+    if (len)
+        *len = 0;
+    FILE *fp = NULL;
+    int rc = gw_input_open(path, what, &fp, err);
+    if (rc != GW_OK)
+        return rc;
+    struct stat st;
+    if (fstat(fileno(fp), &st) == 0 && (unsigned long long)st.st_size > (unsigned long long)max) {
+        fclose(fp);
+        return gw_err_set(err, GW_EINVAL, "%s: '%s' is larger than %zu bytes", what, path, max);
+    }
+    size_t cap = st.st_size > 0 ? (size_t)st.st_size + 1 : 4096, n = 0;
+    char *buf = malloc(cap + 1);
+    while (buf) {
+        size_t got = fread(buf + n, 1, cap - n, fp);
+        n += got;
+        if (got == 0 || n > max)
+            break;
+        if (n == cap) { /* the file grew since fstat: read on, still bounded by max */
+            char *nb = realloc(buf, 2 * cap + 1);
+            if (!nb) {
+                free(buf);
+                buf = NULL;
+                break;
+            }
+            buf = nb;
+            cap *= 2;
+        }
+    }
+    int bad = ferror(fp);
+    fclose(fp);
+    if (!buf)
+        return gw_err_set(err, GW_ENOMEM, "%s: out of memory reading '%s'", what, path);
+    if (bad || n > max) {
+        free(buf);
+        return n > max ? gw_err_set(err, GW_EINVAL, "%s: '%s' is larger than %zu bytes", what, path, max)
+                       : gw_err_set(err, GW_EIO, "%s: cannot read '%s'", what, path);
+    }
+    buf[n] = '\0';
+    *out = buf;
+    if (len)
+        *len = n;
+    return GW_OK;
+}

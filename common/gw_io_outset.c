@@ -1,0 +1,189 @@
+/*
+ * gw_io_outset.c: output sets: the files a command writes into its --out
+ * directory, committed together. While a set is open on a thread, each atomic
+ * file (gw_io_afile.c) it commits is staged under its temporary name; the
+ * set's commit renames them all into place under a lock on the directory and
+ * removes the earlier run's files of the set this run did not write; its abort
+ * removes the staged temporaries. Separate from the atomic file: one file
+ * needs no set, and a set outlives its files.
+ */
+#define _POSIX_C_SOURCE 200809L
+#include <errno.h>
+#include <fcntl.h>
+#include <signal.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/file.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include "gw_common.h"
+#include "gw_locale.h"
+#include "gw_io_impl.h"
+
+_Static_assert(sizeof(sigset_t) <= sizeof(((gw_outset *)0)->oldmask), "sigset_t does not fit");
+
+/* The output set open on this thread (gw_outset_begin), or NULL. */
+static _Thread_local gw_outset *cur_set;
+
+/* Keep f's fsynced temporary in the open set instead of renaming it: 1 staged,
+ * 0 no set open, -1 out of memory (the temporary is then removed). */
+int gw_outset_stage(gw_afile *f)
+{
+    gw_outset *s = cur_set;
+    if (!s)
+        return 0;
+    if (s->n == s->cap) {
+        int cap = s->cap ? 2 * s->cap : 16;
+        char **t = realloc(s->tmp, (size_t)cap * sizeof *t);
+        if (t)
+            s->tmp = t;
+        char **p = t ? realloc(s->path, (size_t)cap * sizeof *p) : NULL;
+        if (p)
+            s->path = p;
+        if (!t || !p)
+            return -1;
+        s->cap = cap;
+    }
+    char *t = strdup(f->tmp), *p = strdup(f->path);
+    if (!t || !p) {
+        free(t);
+        free(p);
+        return -1;
+    }
+    s->tmp[s->n] = t;
+    s->path[s->n] = p;
+    s->n++;
+    return 1;
+}
+
+int gw_outset_begin(gw_outset *s, const char *dir, const char *const *names, gw_err *err)
+{
+    if (!s || !dir || !names)
+        return gw_err_set(err, GW_EINVAL, "gw_outset_begin: %s is NULL", !s ? "s" : !dir ? "dir" : "names");
+    memset(s, 0, sizeof *s);
+    if (cur_set)
+        return gw_err_set(err, GW_EINVAL, "%s: an output set is already open on this thread", dir);
+    if (gw_snprintf(s->dir, sizeof s->dir, "%s", dir) >= (int)sizeof s->dir)
+        return gw_err_set(err, GW_EINVAL, "%s: output path too long", dir);
+    s->names = names;
+    s->active = 1;
+    cur_set = s;
+    return GW_OK;
+}
+
+int gw_outset_check_input(const char *dir, const char *const *names, const char *input, const char *what,
+                          gw_err *err)
+{
+    struct stat in, st;
+    if (!dir || !names || !input || !*input)
+        return GW_OK;
+    if (stat(input, &in) != 0) { /* a file still to make (wisdom): the same directory and name */
+        char d[4096];
+        if (gw_snprintf(d, sizeof d, "%s", input) >= (int)sizeof d)
+            return GW_OK;
+        const char *slash = strrchr(input, '/'), *base = slash ? slash + 1 : input;
+        gw_path_parent(d);
+        if (stat(d, &in) != 0 || stat(dir, &st) != 0 || in.st_dev != st.st_dev || in.st_ino != st.st_ino)
+            return GW_OK;
+        for (int k = 0; names[k]; k++)
+            if (strcmp(base, names[k]) == 0)
+                return gw_err_set(err, GW_EINVAL, "%s: '%s' is the file this run writes as %s/%s: give another "
+                                  "--out or another name", what, input, dir, names[k]);
+        return GW_OK;
+    }
+    for (int k = 0; names[k]; k++) {
+        char p[4096 + 256];
+        if (gw_snprintf(p, sizeof p, "%s/%s", dir, names[k]) < (int)sizeof p && stat(p, &st) == 0 &&
+            st.st_dev == in.st_dev && st.st_ino == in.st_ino)
+            return gw_err_set(err, GW_EINVAL, "%s: '%s' is the file this run writes as %s: give another --out "
+                              "or move the input", what, input, p);
+    }
+    return GW_OK;
+}
+
+static void outset_close(gw_outset *s)
+{
+    for (int i = 0; i < s->n; i++) {
+        free(s->tmp[i]);
+        free(s->path[i]);
+    }
+    free(s->tmp);
+    free(s->path);
+    s->tmp = s->path = NULL;
+    s->n = s->cap = 0;
+    if (cur_set == s)
+        cur_set = NULL;
+    s->active = 0;
+}
+
+/* SIGINT, SIGTERM and SIGHUP held while the staged files are placed: an
+ * interrupt then comes after the last rename, never between two */
+static void outset_hold(gw_outset *s) { gw_io_sig_hold(s->oldmask, &s->masked); }
+static void outset_release(gw_outset *s) { gw_io_sig_release(s->oldmask, &s->masked); }
+
+void gw_outset_abort(gw_outset *s)
+{
+    if (!s)
+        return;
+    if (!s->active)
+        return;
+    outset_hold(s);
+    for (int i = 0; i < s->n; i++)
+        unlink(s->tmp[i]);
+    outset_close(s);
+    outset_release(s);
+}
+
+int gw_outset_commit(gw_outset *s, gw_err *err)
+{
+    if (!s)
+        return gw_err_set(err, GW_EINVAL, "gw_outset_commit: s is NULL");
+    if (!s->active)
+        return gw_err_set(err, GW_EIO, "%s: no output set open", s->dir);
+    int rc = GW_OK;
+    outset_hold(s);
+    /* two runs into one directory place their sets one after the other, never
+     * file by file in turn: the directory holds the last one's files, all */
+    int dfd = open(s->dir, O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+    if (dfd >= 0)
+        flock(dfd, LOCK_EX);
+    /* what would stop a rename is found before any: nothing placed then */
+    for (int i = 0; rc == GW_OK && i < s->n; i++) {
+        struct stat st;
+        if (access(s->tmp[i], F_OK) != 0) /* removed meanwhile */
+            rc = gw_err_set(err, GW_EIO, "%s: write failed: its temporary %s is gone: %s", s->path[i], s->tmp[i],
+                            strerror(errno));
+        else if (lstat(s->path[i], &st) == 0 && S_ISDIR(st.st_mode))
+            rc = gw_err_set(err, GW_EIO, "%s: write failed: %s", s->path[i], strerror(EISDIR));
+    }
+    for (int i = 0; rc == GW_OK && i < s->n; i++)
+        if (rename(s->tmp[i], s->path[i]) != 0)
+            rc = gw_err_set(err, GW_EIO, "%s: write failed: %s", s->path[i], strerror(errno));
+    /* an earlier run's file of this set that this run did not write */
+    for (int k = 0; rc == GW_OK && s->names && s->names[k]; k++) {
+        char p[4096 + 256];
+        if (gw_snprintf(p, sizeof p, "%s/%s", s->dir, s->names[k]) >= (int)sizeof p)
+            continue;
+        struct stat a, b;
+        if (lstat(p, &a) != 0)
+            continue;
+        /* a symbolic link there was written through (gw_afile_open): it is
+         * this run's when it leads to a file staged, and stays */
+        if (S_ISLNK(a.st_mode) && stat(p, &b) == 0)
+            a = b;
+        int mine = 0; /* the same file as one staged (whatever the spelling of its path) */
+        for (int j = 0; j < s->n && !mine; j++)
+            mine = lstat(s->path[j], &b) == 0 && a.st_dev == b.st_dev && a.st_ino == b.st_ino;
+        if (!mine && unlink(p) != 0 && errno != ENOENT)
+            rc = gw_err_set(err, GW_EIO, "%s: cannot remove the earlier run's file: %s", p, strerror(errno));
+    }
+    if (rc != GW_OK) /* what is not in place is removed (a placed file's temporary name is gone) */
+        for (int i = 0; i < s->n; i++)
+            unlink(s->tmp[i]);
+    if (dfd >= 0)
+        close(dfd); /* and its lock */
+    outset_close(s);
+    outset_release(s);
+    return rc;
+}

@@ -1,0 +1,176 @@
+/*
+ * gw_io_paths.c: output locations: directories made (gw_mkdir_p, and removed
+ * again when the run is refused), paths joined and cut to their directory,
+ * and the checks made before any work that a run's outputs can be written
+ * where it was told (gw_out_check, gw_out_file_check: a writable directory or
+ * one that can be made, a regular file or none, a symbolic link that leads
+ * somewhere). Separate from the writes themselves (gw_io_afile.c): these run
+ * before a run, or make the place its files go.
+ */
+#define _POSIX_C_SOURCE 200809L
+#include <errno.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include "gw_common.h"
+#include "gw_locale.h"
+#include "gw_io_impl.h"
+
+/* gw_mkdir_p's failure: the directories it made (those of buf's components
+ * that end in [first, stop)) removed again, deepest first, so that a refused
+ * run leaves nothing behind */
+static void remove_made(char *buf, size_t first, size_t stop)
+{
+    if (!first)
+        return;
+    for (size_t i = stop; i-- > first;)
+        if (buf[i] == '/' || buf[i] == '\0') {
+            char c = buf[i];
+            buf[i] = '\0';
+            rmdir(buf);
+            buf[i] = c;
+        }
+}
+
+int gw_mkdir_p(const char *path, gw_err *err)
+{
+    if (!path)
+        return gw_err_set(err, GW_EINVAL, "gw_mkdir_p: path is NULL");
+    char buf[4096];
+    size_t n = strlen(path);
+    if (n == 0 || n >= sizeof buf)
+        return gw_err_set(err, GW_EINVAL, "output directory: bad path '%s'", path);
+    memcpy(buf, path, n + 1);
+    size_t first = 0; /* the end of the first component made here (0: none) */
+    for (size_t i = 1; i <= n; i++) {
+        if (buf[i] == '/' || buf[i] == '\0') {
+            char c = buf[i];
+            buf[i] = '\0';
+            if (mkdir(buf, 0777) == 0) { /* less the umask, as mkdir -p */
+                if (!first)
+                    first = i;
+            } else if (errno != EEXIST) {
+                int e = errno;
+                gw_err_set(err, GW_EIO, "%s: cannot create directory: %s", buf, strerror(e));
+                remove_made(buf, first, i);
+                return GW_EIO;
+            }
+            buf[i] = c;
+        }
+    }
+    /* what is there instead of a directory, by name: a file, a symbolic link
+     * to nothing or a loop of links were all "X: not a directory" */
+    struct stat st;
+    if (stat(path, &st) != 0) {
+        int e = errno;
+        if (lstat(path, &st) == 0 && S_ISLNK(st.st_mode))
+            return gw_io_link_refused(path, "output directory", e, err);
+        return gw_err_set(err, GW_EINVAL, "output directory: '%s': %s", path, strerror(e));
+    }
+    if (!S_ISDIR(st.st_mode))
+        return gw_err_set(err, GW_EINVAL, "output directory: '%s' exists and is not a directory", path);
+    /* made under a umask that leaves its owner no write or search permission
+     * (umask 0300 and up): nothing could go into it. Removed again, deepest
+     * first, so that a refused run leaves nothing. */
+    if (first && access(path, W_OK | X_OK) != 0 && errno == EACCES) {
+        mode_t mask = 0777 & ~(st.st_mode & 0777);
+        remove_made(buf, first, n + 1);
+        return gw_err_set(err, GW_EINVAL, "%s: the directory made under umask %04o cannot be written into "
+                          "(its owner needs write and search permission: umask 077 or less)", path,
+                          (unsigned)mask);
+    }
+    return GW_OK;
+}
+
+int gw_path_join(char *buf, size_t n, const char *dir, const char *name)
+{
+    int w = gw_snprintf(buf, n, "%s/%s", dir, name);
+    return (w < 0 || (size_t)w >= n) ? GW_EINVAL : GW_OK;
+}
+
+void gw_path_parent(char *buf)
+{
+    if (!buf)
+        return;
+    char *slash = strrchr(buf, '/');
+    if (!slash)
+        buf[0] = '.', buf[1] = '\0';
+    else if (slash == buf)
+        buf[1] = '\0';
+    else
+        *slash = '\0';
+}
+
+int gw_out_check(const char *dir, const char *what, gw_err *err)
+{
+    char buf[4096];
+    size_t n = dir ? strlen(dir) : 0;
+    if (n == 0 || n >= sizeof buf)
+        return gw_err_set(err, GW_EINVAL, "%s: bad path '%s'", what, dir ? dir : "");
+    memcpy(buf, dir, n + 1);
+    struct stat st;
+    int walked = 0;
+    /* the directory, or else its nearest existing ancestor, must be a writable directory */
+    for (;;) {
+        if (stat(buf, &st) == 0) {
+            if (!S_ISDIR(st.st_mode))
+                return gw_err_set(err, GW_EINVAL, "%s: '%s' exists and is not a directory", what, buf);
+            if (access(buf, W_OK | X_OK) != 0)
+                return gw_err_set(err, GW_EINVAL, "%s: cannot write into '%s': %s", what, buf,
+                                  strerror(errno));
+            /* what the mode bits do not say (root under /proc, a read-only mount):
+             * a directory made and removed at once where the run will make its own */
+            char probe[4096 + 32];
+            gw_snprintf(probe, sizeof probe, "%s/.granwave-probe-XXXXXX", buf);
+            if (!mkdtemp(probe))
+                return gw_err_set(err, GW_EINVAL, "%s: cannot write into '%s': %s", what, buf, strerror(errno));
+            rmdir(probe);
+            /* directories still to make: under a umask that takes the owner's
+             * write or search permission (0300 and up) nothing could go into them */
+            mode_t mask = walked && geteuid() != 0 ? gw_io_current_umask() : 0; /* root writes anyway */
+            if (mask & 0300)
+                return gw_err_set(err, GW_EINVAL, "%s: '%s' would be made under umask %04o, which leaves no "
+                                  "permission to write into it (umask 077 or less)", what, dir, (unsigned)mask);
+            return GW_OK;
+        }
+        walked = 1;
+        if (errno != ENOENT)
+            return gw_err_set(err, GW_EINVAL, "%s: '%s': %s", what, buf, strerror(errno));
+        /* a name that is a symbolic link to nothing is not a directory still to make:
+         * mkdir would refuse it after the run, so refuse it now */
+        if (lstat(buf, &st) == 0 && S_ISLNK(st.st_mode))
+            return gw_io_link_refused(buf, what, ENOENT, err);
+        while (n > 1 && buf[n - 1] == '/')
+            buf[--n] = '\0';
+        gw_path_parent(buf);
+        n = strlen(buf);
+    }
+}
+
+int gw_out_file_check(const char *path, const char *what, gw_err *err)
+{
+    char dir[4096];
+    size_t n = path ? strlen(path) : 0;
+    if (n == 0 || n >= sizeof dir)
+        return gw_err_set(err, GW_EINVAL, "%s: bad path '%s'", what, path ? path : "");
+    struct stat st;
+    if (stat(path, &st) == 0 && !S_ISREG(st.st_mode))
+        return gw_err_set(err, GW_EINVAL, "%s: '%s' is %s; give a regular file", what, path,
+                          gw_io_file_kind(st.st_mode));
+    /* a symbolic link is written through (gw_afile_open): its target's
+     * directory takes the temporary file; a link to nothing is refused */
+    char target[4096];
+    int rc = gw_io_write_target(path, target, sizeof target, what, err);
+    if (rc != GW_OK)
+        return rc;
+    path = target;
+    n = strlen(path);
+    memcpy(dir, path, n + 1);
+    gw_path_parent(dir);
+    /* a file is written into an existing directory (nothing makes its parents) */
+    if (stat(dir, &st) != 0)
+        return gw_err_set(err, GW_EINVAL, "%s: directory '%s' of '%s': %s", what, dir, path, strerror(errno));
+    return gw_out_check(dir, what, err);
+}

@@ -33,7 +33,7 @@ installed module (cmake --install), or at GRANWAVE_LIB.
 """
 import numpy as _np
 
-from . import _core
+from . import _core, _sweep
 from ._core import (GranwaveError, GranwaveIOError, GranwaveRunError, GranwaveUnsupported,
                     GranwaveValueError, GranwaveWarning, Result)
 from ._lib import lib as _clib
@@ -296,7 +296,7 @@ def sweep(model="chain", grid=None, *, jobs=0, progress=None, **params):
     worker threads, one call at a time); return True (or raise) to stop. Returns a Result with one array per grid key and
     per result column (f_max, tau_n, ... for the chain), one entry per case.
     """
-    return _core.run_sweep(model, grid or {}, params, jobs, progress)
+    return _sweep.run_sweep(model, grid or {}, params, jobs, progress)
 
 
 chain.__doc__ = _study("chain").doc(

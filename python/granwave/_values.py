@@ -1,0 +1,260 @@
+"""Parameter tables and the values set through them: a table's rows read
+from the library (Param: name, keyword, type, unit, range, default, help),
+and a caller's Python value (a number, a bool, a path, a sequence, a range)
+taken as the text gw_param_set parses, each kind refused by keyword when it
+is no such value. Separate from the studies that call it (_core.py) and the
+sweeps (_sweep.py), which convert their values the same way.
+"""
+import itertools
+import math
+import numbers
+import os
+
+import numpy as np
+
+from ._errors import GW_EINVAL, GranwaveValueError
+
+
+# gw_param_type (common/gw_param.h)
+DOUBLE, INT, LONG, FLAG, CHOICE, TEXT, LIST, RANGE, DARRAY, IARRAY, FARRAY = range(11)
+_TYPE_NAMES = ["float", "int", "int", "bool", "choice", "str", "list of float", "range A:B",
+               "array", "int array", "bool array"]
+
+
+class Param:
+    """One row of a parameter table."""
+
+    def __init__(self, row):
+        self.name = row.name.decode()
+        self.keyword = self.name.replace("-", "_")
+        self.type = row.type
+        self.offset = row.offset
+        self.unit = (row.unit or b"").decode()
+        self.min, self.max = row.min, row.max
+        self.open_min, self.open_max = bool(row.open_min), bool(row.open_max)
+        self.or_zero = bool(row.or_zero)  # 0 taken besides [min, max] (gw_param.h)
+        self.optional = bool(row.optional)  # not given (None) is told from the default given
+        self.default = row.default.decode() if row.default is not None else None
+        self.help = (row.help or b"").decode()
+        self.choices = row.choices.decode().split(",") if row.choices else None
+        self.rows = row.rows.decode() if row.rows else None
+        self.cols = row.cols.decode() if row.cols else None
+
+    def doc(self):
+        kind = "one of " + ", ".join(self.choices) if self.type == CHOICE else _TYPE_NAMES[self.type]
+        unit = f" [{self.unit}]" if self.unit else ""
+        return f"{self.keyword} ({kind}){unit}: {self.help}"
+
+
+def read_table(fn):
+    t = fn()
+    rows = []
+    i = 0
+    while t[i].name:
+        rows.append(Param(t[i]))
+        i += 1
+    return t, rows
+
+
+def _scalar(v):
+    """v as a plain Python bool, int or float when it is one number: a Python or
+    numpy number (numbers.Real) or a 0-d array of one (a numpy reduction with
+    keepdims, np.asarray(x), a[()] of a view); None when it is not. A date or a
+    duration (np.datetime64, np.timedelta64, an Integral to numpy) is no number:
+    int() of one failed with "int() argument must be ... 'datetime.timedelta'",
+    naming no keyword."""
+    if isinstance(v, np.ndarray) and v.ndim == 0 and v.dtype.kind in "biuf":
+        v = v[()]
+    if isinstance(v, (np.datetime64, np.timedelta64)):
+        return None
+    if isinstance(v, (bool, np.bool_)):
+        return bool(v)
+    try:
+        if isinstance(v, numbers.Integral):
+            return int(v)
+        if isinstance(v, numbers.Real):
+            return float(v)
+    except (TypeError, ValueError, OverflowError):  # a Fraction beyond a double, an odd subclass
+        return None
+    return None
+
+
+def _kind(value):
+    return f"{type(value).__name__} ({value!r})"
+
+
+def _flag(p, value):
+    """A bool keyword's value as the text gw_param_set parses ("1", "0"): a
+    Python bool, a numpy bool (np.bool_, a 0-d bool array), nothing else. A
+    number or a string was taken too: trace=1.0, trace=np.float64(1) and
+    trace="true" ran with the trace, trace=0 without, where trace=2 was
+    refused; a flag takes True or False as the program's takes no value."""
+    if isinstance(value, np.ndarray) and value.ndim == 0 and value.dtype.kind == "b":
+        value = value[()]
+    if isinstance(value, (bool, np.bool_)):
+        return "1" if value else "0"
+    raise TypeError(f"{p.keyword}: expected True or False, got {_kind(value)}")
+
+
+# text as bytes: a sequence of small integers to Python, never numbers a caller
+# means (radii=bytearray([1]) ran a bead of 1 m, grid={"n": b"12"} n = 49 and 50)
+_BYTES = (bytes, bytearray)
+
+
+def _plain(s):
+    """A str (a subclass too) as a plain str of its characters: a subclass's
+    own __contains__, split or __str__ decided what the module checked and
+    wrote (sample=S('a.txt\\0b') hid its NUL and opened 'a.txt')."""
+    return str.__str__(s)
+
+
+def _fspath(what, value):
+    """value, an os.PathLike as its path (str or bytes); a path object whose
+    __fspath__ fails or gives no path is refused naming what."""
+    if not isinstance(value, os.PathLike):
+        return value
+    try:
+        return os.fspath(value)
+    except TypeError as e:
+        raise TypeError(f"{what}: {e}" if what else str(e)) from None
+
+
+def _texts(values):
+    """The str values among values (a path as its str): what a message may
+    quote back (keyword_text's keep)."""
+    out = []
+    for v in values:
+        try:
+            v = _fspath("", v)
+        except TypeError:  # refused where it is set
+            continue
+        if isinstance(v, bytes):
+            v = os.fsdecode(v)
+        if isinstance(v, str):
+            out.append(v)
+        elif isinstance(v, (list, tuple)):
+            out += [x for x in v if isinstance(x, str)]
+    return out
+
+
+def _items(what, value, most, why=""):
+    """The items of value, a caller's sequence, as a list of at most `most`
+    (int) items: the one place the module takes the items of a sequence it
+    is given (a list keyword's, a range's ends, a sweep grid's values). A
+    sequence that knows its length (a list, a tuple, an array, a range) is
+    refused by it before any item is taken; any other iterable (a generator,
+    an iterator) is taken item by item up to most + 1. A generator that never
+    ends (radii=itertools.count(1)) ran on for good, taking memory as it went.
+    Refused: GranwaveValueError "WHAT: N items, at most MOST" (the library's
+    words for a list row's bound) or "WHAT: more than MOST items", then why
+    (" (n = 3)": where the bound comes from)."""
+    try:
+        n = len(value)
+    except TypeError:  # no length: a generator, an iterator
+        n = None
+    except OverflowError:  # a range of more items than an index holds
+        n = math.inf
+    if n is not None and n > most:
+        raise GranwaveValueError(f"{what}: {n} items, at most {most}{why}", GW_EINVAL)
+    items = list(itertools.islice(value, most + 1))
+    if len(items) > most:  # no length, or one its iteration does not keep
+        raise GranwaveValueError(f"{what}: more than {most} item{'s' if most != 1 else ''}{why}", GW_EINVAL)
+    return items
+
+
+_INT_MAX = 2**31 - 1  # a list row's count is a C int (gw_param_list.n)
+
+
+def list_most(p, rows, kwargs):
+    """(most, why): the most items list row p takes in a call with kwargs
+    (the library's gw_param.rows; rows: the call's table by row name) and
+    where that comes from, for a message. Its number; or the call's value of
+    the integer row it names (radii: at most n beads; that row's default when
+    not given; its maximum when given as no integer in its range, or for a
+    range row); INT_MAX when the table gives none."""
+    if p.rows is None:
+        return _INT_MAX, ""
+    if p.rows.isdigit():
+        return min(int(p.rows), _INT_MAX), ""
+    r = rows.get(p.rows)
+    if r is None:
+        return _INT_MAX, ""
+    if r.type in (INT, LONG):
+        given = kwargs.get(r.keyword)
+        v = _scalar(given) if given is not None else int(r.default) if (r.default or "").isdigit() else None
+        if isinstance(v, int) and not isinstance(v, bool) and r.min <= v <= r.max:
+            return min(v, _INT_MAX), f" ({r.keyword} = {v}{'' if given is not None else ', its default'})"
+    return int(min(max(r.max, 0), _INT_MAX)), f" (the most {r.keyword} takes)"
+
+
+def _text(p, value, most=(_INT_MAX, "")):
+    """A Python value as the text gw_param_set parses; most: the most items a
+    list row takes in this call and why (list_most)."""
+    if p.type == FLAG:  # every bool keyword, of every study and sweep, here
+        return _flag(p, value)
+    value = _fspath(p.keyword, value)
+    if isinstance(value, bytes) and p.type == TEXT:  # a file name as the OS gives it
+        value = os.fsdecode(value)
+    if p.type == TEXT and not isinstance(value, str):
+        # a number went to C as its digits: sample=3 looked for a file named '3'
+        raise TypeError(f"{p.keyword}: expected a str or a path, got {_kind(value)}")
+    if isinstance(value, str):
+        value = _plain(value)
+        if "\0" in value:  # C would read up to the NUL: another file, silently
+            raise GranwaveValueError(f"{p.keyword}: {value!r} holds a NUL character", GW_EINVAL)
+        return value
+    if p.type == LIST:
+        if _scalar(value) is not None and not isinstance(value, (bool, np.bool_, np.ndarray)):
+            value = [value]
+        # an ordered sequence of numbers: a set or a dict has no order (radii
+        # went to the beads in hash order), an array of two or more dimensions
+        # was flattened silently, a bad item was named by float() alone
+        if isinstance(value, (set, frozenset, dict) + _BYTES) or not hasattr(value, "__iter__"):
+            raise TypeError(f"{p.keyword}: expected a number or a sequence of numbers, got {_kind(value)}")
+        if isinstance(value, np.ndarray) and value.ndim != 1:  # 0-d: "iteration over a 0-d array", unnamed
+            raise TypeError(f"{p.keyword}: expected a 1-D sequence of numbers, got an array of shape {value.shape}")
+        items = []
+        for k, x in enumerate(_items(p.keyword, value, *most)):
+            if isinstance(x, str):
+                items.append(_plain(x))  # parsed and checked by the library, as on the command line
+                continue
+            v = _scalar(x)
+            if v is None or isinstance(v, bool):
+                raise TypeError(f"{p.keyword}: item {k + 1} is not a number ({x!r})")
+            # an integer by its digits, as a scalar's: float() of one beyond the
+            # largest double raised OverflowError naming nothing (radii=[1e-3,
+            # 2**2000]); the library refuses it as not finite, naming the keyword
+            items.append(str(v) if isinstance(v, int) else repr(v))
+        if any("," in x for x in items):
+            raise GranwaveValueError(f"{p.keyword}: an item holds ',' ({items!r})", GW_EINVAL)
+        return ",".join(items) if items else "none"
+    if p.type == RANGE:
+        if isinstance(value, range):
+            # len() of range(1, 2**80) raised OverflowError naming nothing
+            if value.step != 1 or value.stop <= value.start:
+                raise GranwaveValueError(f"{p.keyword}: a range of step 1 with at least one value, got {value!r}",
+                                         GW_EINVAL)
+            return f"{value.start}:{value.stop - 1}"
+        x = _scalar(value)
+        if isinstance(x, int) and not isinstance(x, bool):  # 7, np.int64(7), np.array(7)
+            return str(x)
+        # (A, B): exactly two ends; a fractional end goes to C as written, which
+        # refuses it ("'1.5' is not an integer"), instead of being cut by int()
+        if isinstance(value, (str,) + _BYTES) or not hasattr(value, "__len__") or \
+                (isinstance(value, np.ndarray) and value.ndim != 1) or len(value) != 2:
+            raise TypeError(f"{p.keyword}: expected (A, B), an integer or a range, got {value!r}")
+        ends = []
+        for x in _items(p.keyword, value, 2):
+            v = _scalar(x)
+            if v is None or isinstance(v, bool):
+                raise TypeError(f"{p.keyword}: a range end must be a number, got {x!r}")
+            ends.append(str(v) if isinstance(v, int) else repr(v))
+        return ":".join(ends)
+    x = _scalar(value)
+    if isinstance(x, bool):
+        raise TypeError(f"{p.keyword}: expected a number, got {value!r}")
+    if isinstance(x, int):
+        return str(x)
+    if isinstance(x, float):
+        return repr(x)
+    raise TypeError(f"{p.keyword}: cannot use a {_kind(value)}")

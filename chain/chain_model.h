@@ -106,13 +106,13 @@ double chain_contact_tau_min(const gw_chain_params *p, double v);
  * they carry the largest force the column's energy can make (chain_model.c);
  * INFINITY without contacts. Over the collision's expected length it counts the
  * oscillations cvode and arkode follow: a light bead held between the wall and
- * heavy beads rings for the whole of their contact (chain_collide.c's plan);
+ * heavy beads rings for the whole of their contact (chain_collide_plan.c);
  * *fastest (may be NULL) is that bead's index. */
 double chain_ring_period(const gw_chain_params *p, int *fastest);
 
 /* cvode's and arkode's work over a light bead that heavy beads hold (per-bead
  * masses only: radii), bounded before the run
- * (chain_collide.c): the oscillations of chain_ring_period over t_len seconds
+ * (chain_collide_plan.c): the oscillations of chain_ring_period over t_len seconds
  * at about 260 steps each (rtol 1e-12; (tol/1e-12)^-0.11 at tol = the looser of
  * rtol and atol), times the beads, at most 2e7 when they are more than 100 per
  * bead transit (2n + 1 over the collision's expected length t_col, s, the
@@ -126,17 +126,17 @@ int chain_ring_check(const gw_chain_params *p, const gw_solver_type *type, const
 /* A column that gravity holds on the wall (g t_col > v_imp: gravity takes back
  * the impact speed within the collision's expected length t_col) bounces on it
  * until t_max: its samples at the finer of dt_out and tau1/200 over t_max,
- * times the beads, at most 1e7 (chain_collide.c); GW_EINVAL naming gravity,
+ * times the beads, at most 1e7 (chain_collide_plan.c); GW_EINVAL naming gravity,
  * vimp and t-max otherwise. Called by the collision's plan. */
 int chain_held_check(const gw_chain_params *p, double t_max, double t_col, double tau1, double dt_out, gw_err *err);
 
 /* Samples over the collision's expected length t_expect at dt_out: more than
  * 3e6 and more than 1e4 per bead transit (2n + 1 over the collision) is
  * GW_EINVAL naming dt-out (given: 1 when the caller chose it, 0 for the
- * default tau_1/200) and the interval that passes (chain_collide.c). */
+ * default tau_1/200) and the interval that passes (chain_collide_plan.c). */
 int chain_sampling_check(int n, double t_expect, double dt_out, int given, gw_err *err);
 
-/* The run's steps bounded before it starts (chain_collide.c): the RK4 step
+/* The run's steps bounded before it starts (chain_collide_plan.c): the RK4 step
  * (the smaller of dt and dt_max), or cvode's and arkode's largest step dt_max,
  * may need at most 1e8 steps over t_len seconds; GW_EINVAL naming dt or
  * dt-max ("... over OVER (about T s)") otherwise; given holds the steps the caller
@@ -158,7 +158,7 @@ int chain_run_steps(const gw_chain_params *p, const gw_chain_run_opts *o, double
  * the flight's midpoint is zero but for the integration's error. */
 int chain_collide_flight_cut(const gw_chain *c, const gw_chain_run_opts *o, gw_chain_result *r, gw_err *err);
 
-/* The column's time scales for its expected length (chain_collide.c): tc the
+/* The column's time scales for its expected length (chain_collide_plan.c): tc the
  * largest bead-to-bead T_c = (m/k)^(2/5) v^(-1/5) over the contacts, each with
  * the heavier of its two beads, and tau1 the wall contact time (F.2) of the
  * heaviest bead; for equal beads gw_chain_time_scale and bead 1's tau_1. */

@@ -102,7 +102,7 @@ _Static_assert(GW_SHEET_FITTED == 0 && GW_SHEET_HERTZ == 1 && GW_SHEET_LAYER == 
         "column's weight rings at when gravity sets a larger one) [1e-12]"), \
     ROW("dt", GW_PARAM_DOUBLE, dt, "s", 0, 1, 0, NULL, "DT", dt_help), \
     /* 0 is not "unlimited": the run caps the step at a quarter of the shortest \
-     * binary contact at 2 v_imp (chain_collide.c, chain_drop.c; the settings \
+     * binary contact at 2 v_imp (chain_collide_plan.c, chain_drop.c; the settings \
      * record it), which the help said nothing of until the fifteenth pass */ \
     ROW("dt-max", GW_PARAM_DOUBLE, dt_max, "s", 0, 1, 0, "0", "DT", \
         "largest step, s [a quarter of the shortest binary contact time at 2 v_imp]"), \

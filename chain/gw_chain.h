@@ -356,7 +356,7 @@ gw_chain_run_opts gw_chain_run_opts_default(void);
 /* RK4 steps per time scale T_c (for gw_chain_run_opts.steps_per_tc) that keep
  * F_max and tau_N of an undamped column (N <= 40, no gravity) within the relative
  * error rel_acc of a converged solution, sampling every tau_1/10 or coarser.
- * From the convergence study bench/bench_falcon_accuracy (see chain_collide.c).
+ * From the convergence study bench/bench_falcon_accuracy (see chain_collide_plan.c).
  * Returns 0 when rel_acc is outside [GW_CHAIN_RK4_ACCURACY_MIN, _MAX] =
  * [1e-9, 1e-2] (use an adaptive backend). */
 #define GW_CHAIN_RK4_ACCURACY_MIN 1e-9

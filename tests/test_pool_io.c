@@ -6,7 +6,7 @@
  *    message and no case starts after the failure is seen beyond the one the
  *    other thread may already hold; a progress callback asking to stop gives
  *    GW_ECANCELED after exactly D cases (1 thread) or D + 1 at most (2).
- *  - The atomic file (gw_afile, gw_io.c): a commit replaces the old file, which
+ *  - The atomic file (gw_afile, gw_io_afile.c): a commit replaces the old file, which
  *    stays readable until then; a failed write (the file-size limit standing in
  *    for a full disk) leaves neither the file nor a temporary, and an older
  *    file untouched; the named mode used by the HDF5 writers commits and aborts

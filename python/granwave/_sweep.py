@@ -81,7 +81,7 @@ def _text_plain(v):
 
 
 def _looks_like_range(s):
-    """The library's test of a grid value "A:B" (common/sweep/gw_sweep.c,
+    """The library's test of a grid value "A:B" (common/sweep/gw_sweep_config.c,
     looks_like_range): one ':' and only digits, signs and blanks around it.
     Such a value alone on its grid line is the range A..B, not one value."""
     return s.count(":") == 1 and all(c in " \t+-0123456789" for c in s.replace(":", ""))

@@ -90,28 +90,56 @@ typedef struct {
 static _Thread_local gw_nv_op queue[QMAX];
 static _Thread_local int queued, rhs_at = -1;
 
+/* Four doubles as one value (GCC's vector extension): one AVX register in the
+ * AVX clones, two SSE2 ones elsewhere. Element-wise + and * are the IEEE
+ * operations of each lane, in the order written (no contraction: ISO C). */
+typedef double gw_v4 __attribute__((vector_size(32)));
+#define V4_LOAD(v, p) memcpy(&(v), (p), sizeof(gw_v4)) /* unaligned */
+#define V4_STORE(p, v) memcpy((p), &(v), sizeof(gw_v4))
+
 /* z = sum_j c_j X_j on elements [i0, i1), summed in j order per element (as
- * the library), sixteen elements at a time kept in registers while the terms
- * stream in, so z is written once instead of read and written per term */
+ * the library), sixteen elements at a time kept in four vector registers while
+ * the terms stream in, so z is written once instead of read and written per
+ * term. Written with explicit vectors: GCC's own vectorisation of this loop
+ * kept the sums on the stack and shuffled lanes (the ERK step's last pass ran
+ * at half the speed of its memory traffic). */
 static inline __attribute__((always_inline)) void lincomb_range(const gw_nv_op *o,
                                                                 sunindextype i0, sunindextype i1)
 {
-    enum { V = 16 };
     const int nt = o->nt, keep = o->keep;
     const realtype *x0 = o->X[0], c0 = o->c[0];
     realtype *zd = o->z;
     sunindextype i = i0;
-    for (; i + V <= i1; i += V) {
-        realtype acc[V];
-        for (int k = 0; k < V; k++)
-            acc[k] = keep ? x0[i + k] : c0 * x0[i + k];
+    const gw_v4 vc0 = {c0, c0, c0, c0};
+    for (; i + 16 <= i1; i += 16) {
+        gw_v4 a0, a1, a2, a3;
+        V4_LOAD(a0, x0 + i);
+        V4_LOAD(a1, x0 + i + 4);
+        V4_LOAD(a2, x0 + i + 8);
+        V4_LOAD(a3, x0 + i + 12);
+        if (!keep) {
+            a0 = vc0 * a0;
+            a1 = vc0 * a1;
+            a2 = vc0 * a2;
+            a3 = vc0 * a3;
+        }
         for (int j = 1; j < nt; j++) {
             const realtype *xj = o->X[j] + i, cj = o->c[j];
-            for (int k = 0; k < V; k++)
-                acc[k] += cj * xj[k];
+            const gw_v4 vc = {cj, cj, cj, cj};
+            gw_v4 b0, b1, b2, b3;
+            V4_LOAD(b0, xj);
+            V4_LOAD(b1, xj + 4);
+            V4_LOAD(b2, xj + 8);
+            V4_LOAD(b3, xj + 12);
+            a0 = a0 + vc * b0;
+            a1 = a1 + vc * b1;
+            a2 = a2 + vc * b2;
+            a3 = a3 + vc * b3;
         }
-        for (int k = 0; k < V; k++)
-            zd[i + k] = acc[k];
+        V4_STORE(zd + i, a0);
+        V4_STORE(zd + i + 4, a1);
+        V4_STORE(zd + i + 8, a2);
+        V4_STORE(zd + i + 12, a3);
     }
     for (; i < i1; i++) {
         realtype acc = keep ? x0[i] : c0 * x0[i];
@@ -206,12 +234,39 @@ static sunindextype queue_length(void)
 /* Sum of (x w)^2 in index order (one dependent add per element, as the
  * library; partial sums would be faster in cache but change the rounding of
  * the error norms and through them the step sizes). */
-static realtype wsqrsum_range(const realtype *xd, const realtype *wd, sunindextype i0,
-                              sunindextype i1, realtype s)
+static inline __attribute__((always_inline)) realtype
+wsqrsum_range(const realtype *xd, const realtype *wd, sunindextype i0, sunindextype i1, realtype s)
 {
     for (sunindextype i = i0; i < i1; i++) {
         realtype p = xd[i] * wd[i];
         s += p * p;
+    }
+    return s;
+}
+
+/* The queued operations k0 <= k < k1 (none a right-hand side) on [i0, i1) and
+ * the sum of (x w)^2 over [i0, min(i1, n)), SUM_CHUNK elements at a time, each
+ * chunk summed after the operations have run on it: the sum's chain of
+ * dependent adds (latency-bound, about 4 cycles per element) then overlaps the
+ * loads of the next chunk, where summed after a whole block it stalled the
+ * pass for as long (ARKode's two norms per step, of its error estimate and of
+ * y_n, cost about 5 whole-vector streams per step so). Each element sees the
+ * same operations in the same order. */
+enum { SUM_CHUNK = 32 };
+GW_NV_CLONES
+static realtype apply_sum(int k0, int k1, sunindextype i0, sunindextype i1, const realtype *xd,
+                          const realtype *wd, sunindextype n, realtype s)
+{
+    const sunindextype m = n < i1 ? n : i1;
+    for (sunindextype i = i0; i < i1; i += SUM_CHUNK) {
+        const sunindextype j = i + SUM_CHUNK < i1 ? i + SUM_CHUNK : i1;
+        for (int k = k0; k < k1; k++) {
+            const sunindextype e = queue[k].n < j ? queue[k].n : j;
+            if (e > i)
+                apply(&queue[k], i, e);
+        }
+        if (i < m)
+            s = wsqrsum_range(xd, wd, i, j < m ? j : m, s);
     }
     return s;
 }
@@ -254,15 +309,17 @@ static realtype run_pass(const realtype *xd, const realtype *wd, sunindextype n,
     if (xd && n > nmax)
         nmax = n;
     const sunindextype lag = r >= 0 ? RHS_LAG : 0;
-    const int k_pre = r >= 0 ? r : queued;
+    /* with a sum, the operations that run on [done, e) run with it
+     * (apply_sum), but for a right-hand side */
+    const int k_pre = r >= 0 ? r : xd ? 0 : queued, k_sum = r >= 0 ? r + 1 : k_pre;
     sunindextype done = 0; /* [0, done) has seen every operation */
     for (sunindextype i0 = 0; i0 < nmax; i0 += BLK) {
         const sunindextype i1 = i0 + BLK < nmax ? i0 + BLK : nmax, e = i1 == nmax ? nmax : i1 - lag;
         apply_ops(0, k_pre, i0, i1);
         if (r >= 0)
-            apply_ops(r, queued, done, e);
-        if (xd && done < n)
-            s = wsqrsum_range(xd, wd, done, e < n ? e : n, s);
+            apply_ops(r, xd ? r + 1 : queued, done, e);
+        if (xd)
+            s = apply_sum(k_sum, queued, done, e, xd, wd, n, s);
         done = e;
     }
     queued = 0;

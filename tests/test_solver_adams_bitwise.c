@@ -19,8 +19,11 @@
  *   right-hand sides in one pass in others, and the data read directly
  *   (N_VGetArrayPointer) while one is pending;
  * - the chain's lean right-hand side by ranges (ranges of 64 and 512
- *   components and the whole state) against its rhs, bit for bit, on a compressed state of 1300
- *   beads (uniform and with varied masses and stiffnesses);
+ *   components, the whole state, and random ranges of 1 to 24 beads: the 4-wide
+ *   AVX loop's start and end, ranges too short for it, the chain's both ends)
+ *   against its rhs, bit for bit, on a compressed state of 1300 beads (uniform
+ *   and with varied masses and stiffnesses), and that a range writes nothing
+ *   outside it (its halo is 8 components, what the 4-wide loop reads ahead);
  * - CVODE Adams on a column of 3000 beads hitting the wall (the bench_long
  *   case, 0.5 tc): with rhs_range (queued) and without (the system copied with
  *   rhs_range NULL), the same steps, right-hand sides and final state, bit for

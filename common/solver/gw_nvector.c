@@ -548,10 +548,8 @@ static int lincomb_aliased(int nvec, realtype *c, N_Vector *X, N_Vector z)
     return 0;
 }
 
-/* z = sum_j c_j X_j, summed in j order per element (as the library). Sixteen
- * elements at a time are kept in registers while the terms stream in, so z is
- * written once instead of read and written per term. */
-GW_NV_CLONES
+/* z = sum_j c_j X_j, summed in j order per element (as the library), queued
+ * (lincomb_range). */
 static int gw_nv_linearcombination(int nvec, realtype *c, N_Vector *X, N_Vector z)
 {
     if (nvec < 1) {
@@ -571,44 +569,26 @@ static int gw_nv_linearcombination(int nvec, realtype *c, N_Vector *X, N_Vector 
             FLUSH();
             return lincomb_aliased(nvec, c, X, z);
         }
-    /* first term: X[0] == z with c[0] == 1 starts from z itself */
-    gw_nv_op o = {.kind = OP_LC, .z = DATA(z), .n = LEN(z), .nt = nvec,
-                  .keep = X[0] == z && c[0] == 1.0};
-    const int nt = nvec < LC_MAX ? nvec : LC_MAX;
-    for (int j = 0; j < nt; j++) {
-        o.c[j] = c[j];
-        o.X[j] = DATA(X[j]);
-    }
-    if (nvec <= LC_MAX) { /* queued: an ERK stage runs in one pass with its right-hand side */
-        enqueue(o);
-        return 0;
-    }
-    FLUSH();
-    o.nt = nvec; /* more terms than an op holds: at once, from the caller's arrays */
-    enum { V = 16 };
-    const sunindextype n = LEN(z);
-    realtype *zd = DATA(z);
-    const int keep = o.keep;
-    const realtype *x0 = DATA(X[0]);
-    sunindextype i = 0;
-    for (; i + V <= n; i += V) {
-        realtype acc[V];
-        for (int k = 0; k < V; k++)
-            acc[k] = keep ? x0[i + k] : c[0] * x0[i + k];
-        for (int j = 1; j < nvec; j++) {
-            const realtype *xj = DATA(X[j]) + i, cj = c[j];
-            for (int k = 0; k < V; k++)
-                acc[k] += cj * xj[k];
+    /* queued: an ERK stage runs in one pass with its right-hand side. First
+     * term: X[0] == z with c[0] == 1 starts from z itself. More terms than an
+     * op holds: ops of up to LC_MAX - 1 terms more each, from the sum so far
+     * in z (stored and read back exactly: the same sums in the same order). */
+    gw_nv_op o = {.kind = OP_LC, .z = DATA(z), .n = LEN(z), .keep = X[0] == z && c[0] == 1.0};
+    int t = 0;
+    for (int j = 0; j < nvec; j++) {
+        if (t == LC_MAX) {
+            o.nt = t;
+            enqueue(o);
+            o.keep = 1;
+            o.c[0] = 1.0;
+            o.X[0] = DATA(z);
+            t = 1;
         }
-        for (int k = 0; k < V; k++)
-            zd[i + k] = acc[k];
+        o.c[t] = c[j];
+        o.X[t++] = DATA(X[j]);
     }
-    for (; i < n; i++) {
-        realtype acc = keep ? x0[i] : c[0] * x0[i];
-        for (int j = 1; j < nvec; j++)
-            acc += c[j] * DATA(X[j])[i];
-        zd[i] = acc;
-    }
+    o.nt = t;
+    enqueue(o);
     return 0;
 }
 
@@ -683,77 +663,40 @@ static int gw_nv_wrmsnormvectorarray(int nvec, N_Vector *X, N_Vector *W, realtyp
 }
 
 /* the serial ops that touch data, run after the queue */
-static realtype *q_getarraypointer(N_Vector v)
-{
-    FLUSH();
-    return N_VGetArrayPointer_Serial(v);
-}
-static void q_setarraypointer(realtype *d, N_Vector v)
-{
-    FLUSH();
-    N_VSetArrayPointer_Serial(d, v);
-}
-static void q_destroy(N_Vector v)
-{
-    FLUSH();
-    N_VDestroy_Serial(v);
-}
-static realtype q_wrmsnormmask(N_Vector x, N_Vector w, N_Vector id)
-{
-    FLUSH();
-    return N_VWrmsNormMask_Serial(x, w, id);
-}
-static realtype q_wsqrsummasklocal(N_Vector x, N_Vector w, N_Vector id)
-{
-    FLUSH();
-    return N_VWSqrSumMaskLocal_Serial(x, w, id);
-}
-static booleantype q_constrmask(N_Vector c, N_Vector x, N_Vector m)
-{
-    FLUSH();
-    return N_VConstrMask_Serial(c, x, m);
-}
-static int q_dotprodmulti(int nvec, N_Vector x, N_Vector *Y, realtype *d)
-{
-    FLUSH();
-    return N_VDotProdMulti_Serial(nvec, x, Y, d);
-}
-static int q_scaleaddmultiva(int nvec, int nsum, realtype *a, N_Vector *X, N_Vector **Y,
-                             N_Vector **Z)
-{
-    FLUSH();
-    return N_VScaleAddMultiVectorArray_Serial(nvec, nsum, a, X, Y, Z);
-}
-static int q_lincombva(int nvec, int nsum, realtype *c, N_Vector **X, N_Vector *Z)
-{
-    FLUSH();
-    return N_VLinearCombinationVectorArray_Serial(nvec, nsum, c, X, Z);
-}
-static int q_wrmsnormmaskva(int nvec, N_Vector *X, N_Vector *W, N_Vector id, realtype *nrm)
-{
-    FLUSH();
-    return N_VWrmsNormMaskVectorArray_Serial(nvec, X, W, id, nrm);
-}
-static int q_bufpack(N_Vector x, void *buf)
-{
-    FLUSH();
-    return N_VBufPack_Serial(x, buf);
-}
-static int q_bufunpack(N_Vector x, void *buf)
-{
-    FLUSH();
-    return N_VBufUnpack_Serial(x, buf);
-}
-static void q_print(N_Vector v)
-{
-    FLUSH();
-    N_VPrint_Serial(v);
-}
-static void q_printfile(N_Vector v, FILE *f)
-{
-    FLUSH();
-    N_VPrintFile_Serial(v, f);
-}
+#define AFTER_QUEUE(type, name, params, call)                                        \
+    static type name params                                                          \
+    {                                                                                \
+        FLUSH();                                                                     \
+        return call;                                                                 \
+    }
+#define AFTER_QUEUE_VOID(name, params, call)                                         \
+    static void name params                                                          \
+    {                                                                                \
+        FLUSH();                                                                     \
+        call;                                                                        \
+    }
+AFTER_QUEUE(realtype *, q_getarraypointer, (N_Vector v), N_VGetArrayPointer_Serial(v))
+AFTER_QUEUE_VOID(q_setarraypointer, (realtype * d, N_Vector v), N_VSetArrayPointer_Serial(d, v))
+AFTER_QUEUE_VOID(q_destroy, (N_Vector v), N_VDestroy_Serial(v))
+AFTER_QUEUE(realtype, q_wrmsnormmask, (N_Vector x, N_Vector w, N_Vector id),
+            N_VWrmsNormMask_Serial(x, w, id))
+AFTER_QUEUE(realtype, q_wsqrsummasklocal, (N_Vector x, N_Vector w, N_Vector id),
+            N_VWSqrSumMaskLocal_Serial(x, w, id))
+AFTER_QUEUE(booleantype, q_constrmask, (N_Vector c, N_Vector x, N_Vector m),
+            N_VConstrMask_Serial(c, x, m))
+AFTER_QUEUE(int, q_dotprodmulti, (int nvec, N_Vector x, N_Vector *Y, realtype *d),
+            N_VDotProdMulti_Serial(nvec, x, Y, d))
+AFTER_QUEUE(int, q_scaleaddmultiva,
+            (int nvec, int nsum, realtype *a, N_Vector *X, N_Vector **Y, N_Vector **Z),
+            N_VScaleAddMultiVectorArray_Serial(nvec, nsum, a, X, Y, Z))
+AFTER_QUEUE(int, q_lincombva, (int nvec, int nsum, realtype *c, N_Vector **X, N_Vector *Z),
+            N_VLinearCombinationVectorArray_Serial(nvec, nsum, c, X, Z))
+AFTER_QUEUE(int, q_wrmsnormmaskva, (int nvec, N_Vector *X, N_Vector *W, N_Vector id, realtype *nrm),
+            N_VWrmsNormMaskVectorArray_Serial(nvec, X, W, id, nrm))
+AFTER_QUEUE(int, q_bufpack, (N_Vector x, void *buf), N_VBufPack_Serial(x, buf))
+AFTER_QUEUE(int, q_bufunpack, (N_Vector x, void *buf), N_VBufUnpack_Serial(x, buf))
+AFTER_QUEUE_VOID(q_print, (N_Vector v), N_VPrint_Serial(v))
+AFTER_QUEUE_VOID(q_printfile, (N_Vector v, FILE *f), N_VPrintFile_Serial(v, f))
 
 int gw_sun_nv_ewt(N_Vector y, N_Vector w, double rtol, double atol, const double *scale)
 {

@@ -47,7 +47,8 @@
 /* Beads j0 .. j0 + nb - 1 (nb <= LEAN_BLOCK) in two compiler-vectorised
  * passes: the forces f_j0 .. f_(j0+nb) into a stack array, then the outputs.
  * Reads y from x_(j0-1) to x_(j0+nb). The portable right-hand side, and the
- * right-hand side by ranges (chain_rhs_range) on every target. */
+ * right-hand side by ranges (chain_rhs_range) where the CPU has no AVX and on
+ * the few beads at a range's end the 4-wide loop leaves. */
 enum { LEAN_BLOCK = 512 };
 
 static void lean_block(const gw_chain *c, const double *restrict y, double *restrict yd,

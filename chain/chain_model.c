@@ -47,7 +47,8 @@
 /* Beads j0 .. j0 + nb - 1 (nb <= LEAN_BLOCK) in two compiler-vectorised
  * passes: the forces f_j0 .. f_(j0+nb) into a stack array, then the outputs.
  * Reads y from x_(j0-1) to x_(j0+nb). The portable right-hand side, and the
- * right-hand side by ranges (chain_rhs_range) on every target. */
+ * right-hand side by ranges (chain_rhs_range) where the CPU has no AVX and on
+ * the few beads at a range's end the 4-wide loop leaves. */
 enum { LEAN_BLOCK = 512 };
 
 static void lean_block(const gw_chain *c, const double *restrict y, double *restrict yd,
@@ -234,6 +235,49 @@ lean_rhs_quads(const gw_chain *c, const double *restrict y, double *restrict yd,
     _mm256_zeroupper();
 }
 
+/* Beads j0 .. j1 - 1 of a range (j1 - j0 >= 4) four at a time, from the x of
+ * bead j0 - 1 (the wall at j0 = 0) to that of bead j1 + 3 at most (a quad
+ * for beads j .. j + 3 reads x up to bead j + 7, before the end of the
+ * chain); returns the first bead not done (at most 3 left, or the chain's last
+ * 4 to 7), which lean_block finishes. */
+static inline __attribute__((always_inline, target("avx"))) int
+lean_range_quads(const gw_chain *c, const double *restrict y, double *restrict yd, int j0, int j1,
+                 double g, int uni)
+{
+    const double *restrict kc = c->kc, *restrict m1 = c->minv;
+    const __m256d vg = _mm256_set1_pd(g), zero = _mm256_setzero_pd();
+    const __m256d k1 = _mm256_set1_pd(kc[0]), mi1 = _mm256_set1_pd(m1[0]);
+    const __m256d vmask = _mm256_castsi256_pd(_mm256_set1_epi32(-1));
+    const double *yq = y + 2 * (size_t)j0;
+    const __m256d c0 = lean_pairs2(yq, yq + 4), d0 = lean_pairs2(yq + 2, yq + 6);
+    const __m256d x0 = _mm256_unpacklo_pd(c0, d0); /* x_j0 .. x_(j0+3) */
+    __m256d xp, kv;                                 /* x_(j0-1) .. x_(j0+2), their contacts' k */
+    if (j0 == 0) { /* the wall's as a contact with a bead at x = 0, as lean_rhs_quads */
+        xp = _mm256_shuffle_pd(_mm256_permute2f128_pd(zero, x0, 0x21), x0, 0x5);
+        kv = _mm256_set_pd(kc[2], kc[1], kc[0], c->kwall);
+    } else {
+        xp = _mm256_unpacklo_pd(lean_pairs2(yq - 2, yq + 2), c0);
+        kv = uni ? k1 : _mm256_loadu_pd(kc + j0 - 1);
+    }
+    const __m256d u0 = _mm256_max_pd(_mm256_sub_pd(x0, xp), zero);
+    __m256d fb = _mm256_mul_pd(_mm256_mul_pd(kv, u0), _mm256_sqrt_pd(u0)); /* f_j0 .. */
+    __m256d v = _mm256_unpackhi_pd(c0, d0);                                 /* v_j0 .. */
+    int j = j0;
+    for (; j + 4 <= j1 && j + 7 < c->n; j += 4)
+        lean_quad(y + 2 * (size_t)j, kc + j, m1 + j, yd + 2 * (size_t)j, &fb, &v, vg, vmask, k1, mi1,
+                  uni);
+    _mm256_zeroupper(); /* before lean_block's SSE code (see lean_rhs_quads) */
+    return j;
+}
+
+static __attribute__((noinline, target("avx"))) int
+lean_range_avx(const gw_chain *c, const double *restrict y, double *restrict yd, int j0, int j1,
+               double g)
+{
+    return c->uniform ? lean_range_quads(c, y, yd, j0, j1, g, 1)
+                      : lean_range_quads(c, y, yd, j0, j1, g, 0);
+}
+
 static __attribute__((noinline, target("avx"))) void
 lean_rhs_avx(const gw_chain *c, const double *restrict y, double *restrict yd, double g, int kinematics)
 {
@@ -323,13 +367,21 @@ static int chain_rhs(double t, const double *y, double *yd, void *P)
 
 /* The undamped rhs on components [i0, i1) (gw_system.rhs_range; i0 even):
  * beads i0/2 .. (i1+1)/2 - 1, the same values as chain_rhs; reads y from
- * bead i0/2 - 1 to bead (i1+1)/2 (halo 2 components). */
+ * bead i0/2 - 1 to bead (i1+1)/2 + 3 (halo 8 components: the 4-wide loop's
+ * look-ahead, so that it runs to the range's end). */
 static void chain_rhs_range(double t, const double *y, double *yd, long i0, long i1, void *P)
 {
     (void)t;
     const gw_chain *c = P;
     const int j1 = (int)((i1 + 1) / 2);
-    for (int j0 = (int)(i0 / 2); j0 < j1; j0 += LEAN_BLOCK) {
+    int j0 = (int)(i0 / 2);
+#ifdef GW_CHAIN_AVX_RHS
+    /* the 4-wide loop (the same values): on a range of the vector passes
+     * (256 beads) the two-pass blocks cost about twice as much */
+    if (c->rhs_avx && j1 - j0 >= 4 && c->n >= 8)
+        j0 = lean_range_avx(c, y, yd, j0, j1, c->p.gravity);
+#endif
+    for (; j0 < j1; j0 += LEAN_BLOCK) {
         int nb = j1 - j0 < LEAN_BLOCK ? j1 - j0 : LEAN_BLOCK;
         lean_block(c, y, yd, j0, nb, c->p.gravity, 1);
     }
@@ -870,7 +922,7 @@ int gw_chain_create(const gw_chain_params *p, gw_chain **out, gw_err *err)
     /* the lean rhs is local: by ranges, CVODE Adams runs it in its vector passes */
     if (!general && p->damping == GW_DAMP_NONE && dim == 2L * n) {
         s->rhs_range = chain_rhs_range;
-        s->rhs_halo = 2;
+        s->rhs_halo = 8;
     }
     s->roots = general ? chain_general_roots : chain_roots;
     s->nroots = n + 1 + (i_sens >= 0);

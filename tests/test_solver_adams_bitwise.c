@@ -19,8 +19,11 @@
  *   right-hand sides in one pass in others, and the data read directly
  *   (N_VGetArrayPointer) while one is pending;
  * - the chain's lean right-hand side by ranges (ranges of 64 and 512
- *   components and the whole state) against its rhs, bit for bit, on a compressed state of 1300
- *   beads (uniform and with varied masses and stiffnesses);
+ *   components, the whole state, and random ranges of 1 to 24 beads: the 4-wide
+ *   AVX loop's start and end, ranges too short for it, the chain's both ends)
+ *   against its rhs, bit for bit, on a compressed state of 1300 beads (uniform
+ *   and with varied masses and stiffnesses), and that a range writes nothing
+ *   outside it (its halo is 8 components, what the 4-wide loop reads ahead);
  * - CVODE Adams on a column of 3000 beads hitting the wall (the bench_long
  *   case, 0.5 tc): with rhs_range (queued) and without (the system copied with
  *   rhs_range NULL), the same steps, right-hand sides and final state, bit for
@@ -221,8 +224,8 @@ static void chain_ranges(int varied)
     if (!c)
         return;
     const gw_system *sys = gw_chain_system(c);
-    gw_test_true(sys->rhs_range != NULL && sys->rhs_halo == 2,
-                 "the undamped column gives its rhs by ranges (halo 2)");
+    gw_test_true(sys->rhs_range != NULL && sys->rhs_halo == 8,
+                 "the undamped column gives its rhs by ranges (halo 8)");
     if (!sys->rhs_range)
         return;
     const long dim = sys->dim;
@@ -248,6 +251,28 @@ static void chain_ranges(int varied)
     snprintf(what, sizeof what, "chain (%s): rhs by one range = rhs, bit for bit",
              varied ? "varied beads" : "uniform");
     gw_test_true(memcmp(f, h, (size_t)dim * sizeof *f) == 0, what);
+    /* ranges of 1 to 24 beads in random order (the 4-wide loop's start, its
+     * last 0 to 3 beads, ranges too short for it, the chain's both ends), the
+     * halo beyond each range holding garbage the range must not depend on */
+    int ok = 1, writes_out = 0;
+    for (int rep = 0; rep < 20; rep++) {
+        for (long i0 = 0; i0 < dim;) {
+            const long w = 2 * (1 + pick(24)), i1 = i0 + w < dim ? i0 + w : dim;
+            for (long i = 0; i < dim; i++)
+                h[i] = -1.0 - (double)i;
+            sys->rhs_range(0.0, y, h, i0, i1, sys->params);
+            ok &= memcmp(f + i0, h + i0, (size_t)(i1 - i0) * sizeof *f) == 0;
+            for (long i = 0; i < dim; i++)
+                writes_out |= (i < i0 || i >= i1) && h[i] != -1.0 - (double)i;
+            i0 = i1;
+        }
+    }
+    snprintf(what, sizeof what, "chain (%s): rhs by ranges of 1 to 24 beads = rhs, bit for bit",
+             varied ? "varied beads" : "uniform");
+    gw_test_true(ok, what);
+    snprintf(what, sizeof what, "chain (%s): a range writes nothing outside it",
+             varied ? "varied beads" : "uniform");
+    gw_test_true(!writes_out, what);
     free(y);
     free(f);
     free(g);

@@ -90,28 +90,56 @@ typedef struct {
 static _Thread_local gw_nv_op queue[QMAX];
 static _Thread_local int queued, rhs_at = -1;
 
+/* Four doubles as one value (GCC's vector extension): one AVX register in the
+ * AVX clones, two SSE2 ones elsewhere. Element-wise + and * are the IEEE
+ * operations of each lane, in the order written (no contraction: ISO C). */
+typedef double gw_v4 __attribute__((vector_size(32)));
+#define V4_LOAD(v, p) memcpy(&(v), (p), sizeof(gw_v4)) /* unaligned */
+#define V4_STORE(p, v) memcpy((p), &(v), sizeof(gw_v4))
+
 /* z = sum_j c_j X_j on elements [i0, i1), summed in j order per element (as
- * the library), sixteen elements at a time kept in registers while the terms
- * stream in, so z is written once instead of read and written per term */
+ * the library), sixteen elements at a time kept in four vector registers while
+ * the terms stream in, so z is written once instead of read and written per
+ * term. Written with explicit vectors: GCC's own vectorisation of this loop
+ * kept the sums on the stack and shuffled lanes (the ERK step's last pass ran
+ * at half the speed of its memory traffic). */
 static inline __attribute__((always_inline)) void lincomb_range(const gw_nv_op *o,
                                                                 sunindextype i0, sunindextype i1)
 {
-    enum { V = 16 };
     const int nt = o->nt, keep = o->keep;
     const realtype *x0 = o->X[0], c0 = o->c[0];
     realtype *zd = o->z;
     sunindextype i = i0;
-    for (; i + V <= i1; i += V) {
-        realtype acc[V];
-        for (int k = 0; k < V; k++)
-            acc[k] = keep ? x0[i + k] : c0 * x0[i + k];
+    const gw_v4 vc0 = {c0, c0, c0, c0};
+    for (; i + 16 <= i1; i += 16) {
+        gw_v4 a0, a1, a2, a3;
+        V4_LOAD(a0, x0 + i);
+        V4_LOAD(a1, x0 + i + 4);
+        V4_LOAD(a2, x0 + i + 8);
+        V4_LOAD(a3, x0 + i + 12);
+        if (!keep) {
+            a0 = vc0 * a0;
+            a1 = vc0 * a1;
+            a2 = vc0 * a2;
+            a3 = vc0 * a3;
+        }
         for (int j = 1; j < nt; j++) {
             const realtype *xj = o->X[j] + i, cj = o->c[j];
-            for (int k = 0; k < V; k++)
-                acc[k] += cj * xj[k];
+            const gw_v4 vc = {cj, cj, cj, cj};
+            gw_v4 b0, b1, b2, b3;
+            V4_LOAD(b0, xj);
+            V4_LOAD(b1, xj + 4);
+            V4_LOAD(b2, xj + 8);
+            V4_LOAD(b3, xj + 12);
+            a0 = a0 + vc * b0;
+            a1 = a1 + vc * b1;
+            a2 = a2 + vc * b2;
+            a3 = a3 + vc * b3;
         }
-        for (int k = 0; k < V; k++)
-            zd[i + k] = acc[k];
+        V4_STORE(zd + i, a0);
+        V4_STORE(zd + i + 4, a1);
+        V4_STORE(zd + i + 8, a2);
+        V4_STORE(zd + i + 12, a3);
     }
     for (; i < i1; i++) {
         realtype acc = keep ? x0[i] : c0 * x0[i];
@@ -206,12 +234,39 @@ static sunindextype queue_length(void)
 /* Sum of (x w)^2 in index order (one dependent add per element, as the
  * library; partial sums would be faster in cache but change the rounding of
  * the error norms and through them the step sizes). */
-static realtype wsqrsum_range(const realtype *xd, const realtype *wd, sunindextype i0,
-                              sunindextype i1, realtype s)
+static inline __attribute__((always_inline)) realtype
+wsqrsum_range(const realtype *xd, const realtype *wd, sunindextype i0, sunindextype i1, realtype s)
 {
     for (sunindextype i = i0; i < i1; i++) {
         realtype p = xd[i] * wd[i];
         s += p * p;
+    }
+    return s;
+}
+
+/* The queued operations k0 <= k < k1 (none a right-hand side) on [i0, i1) and
+ * the sum of (x w)^2 over [i0, min(i1, n)), SUM_CHUNK elements at a time, each
+ * chunk summed after the operations have run on it: the sum's chain of
+ * dependent adds (latency-bound, about 4 cycles per element) then overlaps the
+ * loads of the next chunk, where summed after a whole block it stalled the
+ * pass for as long (ARKode's two norms per step, of its error estimate and of
+ * y_n, cost about 5 whole-vector streams per step so). Each element sees the
+ * same operations in the same order. */
+enum { SUM_CHUNK = 32 };
+GW_NV_CLONES
+static realtype apply_sum(int k0, int k1, sunindextype i0, sunindextype i1, const realtype *xd,
+                          const realtype *wd, sunindextype n, realtype s)
+{
+    const sunindextype m = n < i1 ? n : i1;
+    for (sunindextype i = i0; i < i1; i += SUM_CHUNK) {
+        const sunindextype j = i + SUM_CHUNK < i1 ? i + SUM_CHUNK : i1;
+        for (int k = k0; k < k1; k++) {
+            const sunindextype e = queue[k].n < j ? queue[k].n : j;
+            if (e > i)
+                apply(&queue[k], i, e);
+        }
+        if (i < m)
+            s = wsqrsum_range(xd, wd, i, j < m ? j : m, s);
     }
     return s;
 }
@@ -254,15 +309,17 @@ static realtype run_pass(const realtype *xd, const realtype *wd, sunindextype n,
     if (xd && n > nmax)
         nmax = n;
     const sunindextype lag = r >= 0 ? RHS_LAG : 0;
-    const int k_pre = r >= 0 ? r : queued;
+    /* with a sum, the operations that run on [done, e) run with it
+     * (apply_sum), but for a right-hand side */
+    const int k_pre = r >= 0 ? r : xd ? 0 : queued, k_sum = r >= 0 ? r + 1 : k_pre;
     sunindextype done = 0; /* [0, done) has seen every operation */
     for (sunindextype i0 = 0; i0 < nmax; i0 += BLK) {
         const sunindextype i1 = i0 + BLK < nmax ? i0 + BLK : nmax, e = i1 == nmax ? nmax : i1 - lag;
         apply_ops(0, k_pre, i0, i1);
         if (r >= 0)
-            apply_ops(r, queued, done, e);
-        if (xd && done < n)
-            s = wsqrsum_range(xd, wd, done, e < n ? e : n, s);
+            apply_ops(r, xd ? r + 1 : queued, done, e);
+        if (xd)
+            s = apply_sum(k_sum, queued, done, e, xd, wd, n, s);
         done = e;
     }
     queued = 0;
@@ -491,10 +548,8 @@ static int lincomb_aliased(int nvec, realtype *c, N_Vector *X, N_Vector z)
     return 0;
 }
 
-/* z = sum_j c_j X_j, summed in j order per element (as the library). Sixteen
- * elements at a time are kept in registers while the terms stream in, so z is
- * written once instead of read and written per term. */
-GW_NV_CLONES
+/* z = sum_j c_j X_j, summed in j order per element (as the library), queued
+ * (lincomb_range). */
 static int gw_nv_linearcombination(int nvec, realtype *c, N_Vector *X, N_Vector z)
 {
     if (nvec < 1) {
@@ -514,44 +569,26 @@ static int gw_nv_linearcombination(int nvec, realtype *c, N_Vector *X, N_Vector 
             FLUSH();
             return lincomb_aliased(nvec, c, X, z);
         }
-    /* first term: X[0] == z with c[0] == 1 starts from z itself */
-    gw_nv_op o = {.kind = OP_LC, .z = DATA(z), .n = LEN(z), .nt = nvec,
-                  .keep = X[0] == z && c[0] == 1.0};
-    const int nt = nvec < LC_MAX ? nvec : LC_MAX;
-    for (int j = 0; j < nt; j++) {
-        o.c[j] = c[j];
-        o.X[j] = DATA(X[j]);
-    }
-    if (nvec <= LC_MAX) { /* queued: an ERK stage runs in one pass with its right-hand side */
-        enqueue(o);
-        return 0;
-    }
-    FLUSH();
-    o.nt = nvec; /* more terms than an op holds: at once, from the caller's arrays */
-    enum { V = 16 };
-    const sunindextype n = LEN(z);
-    realtype *zd = DATA(z);
-    const int keep = o.keep;
-    const realtype *x0 = DATA(X[0]);
-    sunindextype i = 0;
-    for (; i + V <= n; i += V) {
-        realtype acc[V];
-        for (int k = 0; k < V; k++)
-            acc[k] = keep ? x0[i + k] : c[0] * x0[i + k];
-        for (int j = 1; j < nvec; j++) {
-            const realtype *xj = DATA(X[j]) + i, cj = c[j];
-            for (int k = 0; k < V; k++)
-                acc[k] += cj * xj[k];
+    /* queued: an ERK stage runs in one pass with its right-hand side. First
+     * term: X[0] == z with c[0] == 1 starts from z itself. More terms than an
+     * op holds: ops of up to LC_MAX - 1 terms more each, from the sum so far
+     * in z (stored and read back exactly: the same sums in the same order). */
+    gw_nv_op o = {.kind = OP_LC, .z = DATA(z), .n = LEN(z), .keep = X[0] == z && c[0] == 1.0};
+    int t = 0;
+    for (int j = 0; j < nvec; j++) {
+        if (t == LC_MAX) {
+            o.nt = t;
+            enqueue(o);
+            o.keep = 1;
+            o.c[0] = 1.0;
+            o.X[0] = DATA(z);
+            t = 1;
         }
-        for (int k = 0; k < V; k++)
-            zd[i + k] = acc[k];
+        o.c[t] = c[j];
+        o.X[t++] = DATA(X[j]);
     }
-    for (; i < n; i++) {
-        realtype acc = keep ? x0[i] : c[0] * x0[i];
-        for (int j = 1; j < nvec; j++)
-            acc += c[j] * DATA(X[j])[i];
-        zd[i] = acc;
-    }
+    o.nt = t;
+    enqueue(o);
     return 0;
 }
 
@@ -626,77 +663,40 @@ static int gw_nv_wrmsnormvectorarray(int nvec, N_Vector *X, N_Vector *W, realtyp
 }
 
 /* the serial ops that touch data, run after the queue */
-static realtype *q_getarraypointer(N_Vector v)
-{
-    FLUSH();
-    return N_VGetArrayPointer_Serial(v);
-}
-static void q_setarraypointer(realtype *d, N_Vector v)
-{
-    FLUSH();
-    N_VSetArrayPointer_Serial(d, v);
-}
-static void q_destroy(N_Vector v)
-{
-    FLUSH();
-    N_VDestroy_Serial(v);
-}
-static realtype q_wrmsnormmask(N_Vector x, N_Vector w, N_Vector id)
-{
-    FLUSH();
-    return N_VWrmsNormMask_Serial(x, w, id);
-}
-static realtype q_wsqrsummasklocal(N_Vector x, N_Vector w, N_Vector id)
-{
-    FLUSH();
-    return N_VWSqrSumMaskLocal_Serial(x, w, id);
-}
-static booleantype q_constrmask(N_Vector c, N_Vector x, N_Vector m)
-{
-    FLUSH();
-    return N_VConstrMask_Serial(c, x, m);
-}
-static int q_dotprodmulti(int nvec, N_Vector x, N_Vector *Y, realtype *d)
-{
-    FLUSH();
-    return N_VDotProdMulti_Serial(nvec, x, Y, d);
-}
-static int q_scaleaddmultiva(int nvec, int nsum, realtype *a, N_Vector *X, N_Vector **Y,
-                             N_Vector **Z)
-{
-    FLUSH();
-    return N_VScaleAddMultiVectorArray_Serial(nvec, nsum, a, X, Y, Z);
-}
-static int q_lincombva(int nvec, int nsum, realtype *c, N_Vector **X, N_Vector *Z)
-{
-    FLUSH();
-    return N_VLinearCombinationVectorArray_Serial(nvec, nsum, c, X, Z);
-}
-static int q_wrmsnormmaskva(int nvec, N_Vector *X, N_Vector *W, N_Vector id, realtype *nrm)
-{
-    FLUSH();
-    return N_VWrmsNormMaskVectorArray_Serial(nvec, X, W, id, nrm);
-}
-static int q_bufpack(N_Vector x, void *buf)
-{
-    FLUSH();
-    return N_VBufPack_Serial(x, buf);
-}
-static int q_bufunpack(N_Vector x, void *buf)
-{
-    FLUSH();
-    return N_VBufUnpack_Serial(x, buf);
-}
-static void q_print(N_Vector v)
-{
-    FLUSH();
-    N_VPrint_Serial(v);
-}
-static void q_printfile(N_Vector v, FILE *f)
-{
-    FLUSH();
-    N_VPrintFile_Serial(v, f);
-}
+#define AFTER_QUEUE(type, name, params, call)                                        \
+    static type name params                                                          \
+    {                                                                                \
+        FLUSH();                                                                     \
+        return call;                                                                 \
+    }
+#define AFTER_QUEUE_VOID(name, params, call)                                         \
+    static void name params                                                          \
+    {                                                                                \
+        FLUSH();                                                                     \
+        call;                                                                        \
+    }
+AFTER_QUEUE(realtype *, q_getarraypointer, (N_Vector v), N_VGetArrayPointer_Serial(v))
+AFTER_QUEUE_VOID(q_setarraypointer, (realtype * d, N_Vector v), N_VSetArrayPointer_Serial(d, v))
+AFTER_QUEUE_VOID(q_destroy, (N_Vector v), N_VDestroy_Serial(v))
+AFTER_QUEUE(realtype, q_wrmsnormmask, (N_Vector x, N_Vector w, N_Vector id),
+            N_VWrmsNormMask_Serial(x, w, id))
+AFTER_QUEUE(realtype, q_wsqrsummasklocal, (N_Vector x, N_Vector w, N_Vector id),
+            N_VWSqrSumMaskLocal_Serial(x, w, id))
+AFTER_QUEUE(booleantype, q_constrmask, (N_Vector c, N_Vector x, N_Vector m),
+            N_VConstrMask_Serial(c, x, m))
+AFTER_QUEUE(int, q_dotprodmulti, (int nvec, N_Vector x, N_Vector *Y, realtype *d),
+            N_VDotProdMulti_Serial(nvec, x, Y, d))
+AFTER_QUEUE(int, q_scaleaddmultiva,
+            (int nvec, int nsum, realtype *a, N_Vector *X, N_Vector **Y, N_Vector **Z),
+            N_VScaleAddMultiVectorArray_Serial(nvec, nsum, a, X, Y, Z))
+AFTER_QUEUE(int, q_lincombva, (int nvec, int nsum, realtype *c, N_Vector **X, N_Vector *Z),
+            N_VLinearCombinationVectorArray_Serial(nvec, nsum, c, X, Z))
+AFTER_QUEUE(int, q_wrmsnormmaskva, (int nvec, N_Vector *X, N_Vector *W, N_Vector id, realtype *nrm),
+            N_VWrmsNormMaskVectorArray_Serial(nvec, X, W, id, nrm))
+AFTER_QUEUE(int, q_bufpack, (N_Vector x, void *buf), N_VBufPack_Serial(x, buf))
+AFTER_QUEUE(int, q_bufunpack, (N_Vector x, void *buf), N_VBufUnpack_Serial(x, buf))
+AFTER_QUEUE_VOID(q_print, (N_Vector v), N_VPrint_Serial(v))
+AFTER_QUEUE_VOID(q_printfile, (N_Vector v, FILE *f), N_VPrintFile_Serial(v, f))
 
 int gw_sun_nv_ewt(N_Vector y, N_Vector w, double rtol, double atol, const double *scale)
 {

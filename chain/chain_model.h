@@ -52,6 +52,13 @@ static inline double damped_force(const gw_chain *c, double k, double gam, doubl
     return f;
 }
 
+/* The default model's undamped right-hand side (chain_rhs_lean.c): whole
+ * (kinematics 0: the forces' part only, for the implicit split), by beads
+ * [j0, j1), and whether the CPU runs its AVX loop. */
+void chain_lean_rhs(const gw_chain *c, const double *y, double *yd, double g, int kinematics);
+void chain_lean_range(const gw_chain *c, const double *y, double *yd, int j0, int j1, double g);
+int chain_lean_avx(void);
+
 /* General model (chain_general.c). */
 double chain_general_wall_force(const gw_chain *c, const double *y, double *kd, double *kv, double *pd);
 double chain_guide_force(const gw_chain *c, double v, double *dfdv);

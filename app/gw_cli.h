@@ -119,9 +119,14 @@ int gw_cli_study_error(const struct gw_param *t, const char *cmd, int rc, gw_err
 void gw_cli_warnings(const char *cmd, const char *list);
 /* o (a command's --json result; NULL when it could not be built) printed on
  * stdout: 0, or 1 after "granwave CMD: out of memory for the JSON result" on
- * stderr when it could not be printed whole (nothing is printed then). A write
- * error of stdout is left to the program's own check of stdout. */
+ * stderr when it could not be printed whole (nothing is printed then), or 1
+ * after gw_cli_stdout_failed when stdout could not be written. */
 int gw_cli_json_stdout(const char *cmd, const struct cJSON *o);
+/* stdout could not be written (errno e of the failed write; 0: unknown, said
+ * as EIO): "granwave[ CMD]: stdout: write failed: REASON" on stderr, stdout's
+ * error flag cleared (said once, by the writer that saw the errno: the
+ * program's last check of stdout then finds nothing new); returns 1. */
+int gw_cli_stdout_failed(const char *cmd, int e);
 /* "granwave CMD: out of memory" on stderr; returns 1 (a run failure, not bad
  * input: the command line was not read wrong). */
 int gw_cli_nomem(const char *cmd);

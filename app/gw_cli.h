@@ -89,6 +89,9 @@ typedef struct gw_cli_progress {
     const char *unit;    /* what is counted: "cases", "collisions" */
     long before;         /* units finished by an earlier run (< 0: not shown) */
     double every_ms;     /* > 0: a line at most every every_ms; 0: every tenth */
+    double after_ms;     /* > 0: no line before the run has lasted after_ms, the
+                            last one included: a shorter run says nothing (a
+                            single run whose length varies a thousandfold) */
     int quiet;           /* 1: print nothing */
     const char *header;  /* NULL, or a line printed once before the first report
                             (a refusal before any run then stays one line) */

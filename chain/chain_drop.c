@@ -523,10 +523,10 @@ int gw_chain_drop_run_progress(const gw_chain_drop_params *p, const gw_chain_run
     drop_state st = {.d = &d, .p = p, .o = o, .r = r, .n = n, .t_end1 = NAN, .t_start2 = NAN, .t_sampled = -INFINITY,
                      .progress = progress, .pctx = pctx, .dt_out = o->dt_out > 0 ? o->dt_out : 1e-6};
     /* the drop over t_max, then its first collision again by the chain's own
-     * code (first_collision), at most as long: about as much work again (52 %
-     * of the wall time of the 300-bead drop over the default 10 ms, whose
-     * first collision lasts it through). Both passes in one count, the
-     * second's end reported as the total when it stops earlier. */
+     * code (first_collision), at most as long: nearly as much work again (43
+     * and 49 % of the wall time in two runs of the 300-bead drop over the
+     * default 10 ms, whose first collision lasts it through). Both passes in
+     * one count, the second's end reported as the total when it stops earlier. */
     st.total = 2 * (long)floor(p->t_max / st.dt_out + 1e-9);
     st.step = st.total / 100 > 0 ? st.total / 100 : 1;
     st.next = st.step;

@@ -15,6 +15,7 @@
 #include <gsl/gsl_version.h>
 #include <sundials/sundials_version.h>
 
+#include "gw_cli.h"
 #include "gw_common.h"
 #include "gw_version.h"
 #if GW_HAVE_HDF5
@@ -78,12 +79,8 @@ static void usage(FILE *fp)
 static int stdout_checked(const char *cmd, int code)
 {
     errno = 0;
-    if (fflush(stdout) != 0 || ferror(stdout)) {
-        int e = errno ? errno : EIO;
-        fprintf(stderr, "granwave%s%s: stdout: write failed: %s\n", cmd ? " " : "", cmd ? cmd : "", strerror(e));
-        if (code == 0)
-            code = 1;
-    }
+    if ((fflush(stdout) != 0 || ferror(stdout)) && gw_cli_stdout_failed(cmd, errno) != 0 && code == 0)
+        code = 1;
     return code;
 }
 
@@ -196,12 +193,15 @@ static int version(int argc, char **argv)
         fprintf(stderr, "granwave version: out of memory\n");
         return 1;
     }
-    int nomem = gw_json_print(o, stdout) == GW_ENOMEM;
+    const int rc = gw_json_print(o, stdout);
+    const int e = errno; /* the failed write's (gw_json_print) */
     cJSON_Delete(o);
-    if (nomem) {
+    if (rc == GW_ENOMEM) {
         fprintf(stderr, "granwave version: out of memory\n");
         return 1;
     }
+    if (rc == GW_EIO) /* said with its errno: the flush emptied the buffer */
+        return gw_cli_stdout_failed(NULL, e);
     return stdout_checked(NULL, 0);
 }
 

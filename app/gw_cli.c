@@ -2,7 +2,9 @@
  * gw_cli.c: table-driven command-line options with range checks. Every error names
  * the option and the offending value in one line.
  */
+#include <errno.h>
 #include <math.h>
+#include <stdio.h>
 #include <string.h>
 
 #include "gw_cli.h"
@@ -199,9 +201,20 @@ int gw_cli_nomem(const char *cmd)
     return 1;
 }
 
+int gw_cli_stdout_failed(const char *cmd, int e)
+{
+    fprintf(stderr, "granwave%s%s: stdout: write failed: %s\n", cmd ? " " : "", cmd ? cmd : "",
+            strerror(e ? e : EIO));
+    clearerr(stdout);
+    return 1;
+}
+
 int gw_cli_json_stdout(const char *cmd, const cJSON *o)
 {
-    if (o && gw_json_print(o, stdout) != GW_ENOMEM)
+    const int rc = o ? gw_json_print(o, stdout) : GW_ENOMEM;
+    if (rc == GW_EIO) /* its errno now: the flush emptied the buffer (a closed pipe said "Input/output error") */
+        return gw_cli_stdout_failed(cmd, errno);
+    if (rc == GW_OK)
         return 0;
     fprintf(stderr, "granwave %s: out of memory for the JSON result\n", cmd);
     return 1;

@@ -89,6 +89,9 @@ typedef struct gw_cli_progress {
     const char *unit;    /* what is counted: "cases", "collisions" */
     long before;         /* units finished by an earlier run (< 0: not shown) */
     double every_ms;     /* > 0: a line at most every every_ms; 0: every tenth */
+    double after_ms;     /* > 0: no line before the run has lasted after_ms, the
+                            last one included: a shorter run says nothing (a
+                            single run whose length varies a thousandfold) */
     int quiet;           /* 1: print nothing */
     const char *header;  /* NULL, or a line printed once before the first report
                             (a refusal before any run then stays one line) */
@@ -119,9 +122,14 @@ int gw_cli_study_error(const struct gw_param *t, const char *cmd, int rc, gw_err
 void gw_cli_warnings(const char *cmd, const char *list);
 /* o (a command's --json result; NULL when it could not be built) printed on
  * stdout: 0, or 1 after "granwave CMD: out of memory for the JSON result" on
- * stderr when it could not be printed whole (nothing is printed then). A write
- * error of stdout is left to the program's own check of stdout. */
+ * stderr when it could not be printed whole (nothing is printed then), or 1
+ * after gw_cli_stdout_failed when stdout could not be written. */
 int gw_cli_json_stdout(const char *cmd, const struct cJSON *o);
+/* stdout could not be written (errno e of the failed write; 0: unknown, said
+ * as EIO): "granwave[ CMD]: stdout: write failed: REASON" on stderr, stdout's
+ * error flag cleared (said once, by the writer that saw the errno: the
+ * program's last check of stdout then finds nothing new); returns 1. */
+int gw_cli_stdout_failed(const char *cmd, int e);
 /* "granwave CMD: out of memory" on stderr; returns 1 (a run failure, not bad
  * input: the command line was not read wrong). */
 int gw_cli_nomem(const char *cmd);

@@ -159,6 +159,8 @@ int gw_cli_progress_report(void *ctx, long done, long total)
     if (!p || p->quiet || done <= 0)
         return 0;
     double now = gw_clock_ms();
+    if (p->after_ms > 0 && now - p->t0 < p->after_ms)
+        return 0;
     int due = done >= total || (p->every_ms > 0 ? now - p->last >= p->every_ms : done % (total / 10 + 1) == 0);
     if (!due)
         return 0;

@@ -248,6 +248,29 @@ static const char *summary =
     "on a rerun; OUT/results.csv gets one row per case, sorted. Under mpirun, rank 0\n"
     "writes and hands out cases to the other ranks; otherwise one thread per core.";
 
+/* A refusal or failure in one line, "granwave sweep: ..." */
+static void say_error(const gw_err *err)
+{
+    fprintf(stderr, strncmp(err->msg, "sweep", 5) == 0 ? "granwave %s\n" : "granwave sweep: %s\n", err->msg);
+}
+
+/* What a run would do now, after `--check` read the journal in out: start,
+ * resume (ndone of ncases done; a torn last row of torn bytes cut and its case
+ * run again), or write the table only. */
+static void check_report(const char *out, long ncases, int exists, long ndone, size_t torn)
+{
+    if (!exists) {
+        printf("sweep: %s: no journal yet: a run starts all %ld cases\n", out, ncases);
+        return;
+    }
+    printf("sweep: %s/journal.csv: %ld of %ld cases done", out, ndone, ncases);
+    if (ndone < ncases)
+        printf(", %ld to run on a resume", ncases - ndone);
+    if (torn)
+        printf("; its torn last row (%zu bytes) is cut then and its case run again", torn);
+    printf(ndone == ncases ? ": a rerun writes the table only\n" : "\n");
+}
+
 /* A refusal's exit code: 2 for the config or a case (bad input), 1 when the
  * check itself ran out of memory (a run failure: the input is not at fault). */
 static int exit_code(int rc)
@@ -264,7 +287,7 @@ int gw_cmd_sweep(int argc, char **argv, const gw_sweep_model *const *models, int
     gw_opt opts[] = {
         {.name = "out", .kind = GW_OPT_STRING, .dest = &out, .metavar = "DIR", .help = "output directory [config's [sweep] out]"},
         {.name = "jobs", .kind = GW_OPT_LONG, .dest = &jobs, .metavar = "J", .help = "threads without MPI [0 = one per CPU]", .lo = 0, .hi = GW_SWEEP_JOBS_MAX},
-        {.name = "check", .kind = GW_OPT_FLAG, .dest = &check_only, .help = "validate the config and every case, run nothing"},
+        {.name = "check", .kind = GW_OPT_FLAG, .dest = &check_only, .help = "validate the config and every case, read the journal as a resume would; write nothing"},
         {.name = "quiet", .kind = GW_OPT_FLAG, .dest = &quiet, .help = "no progress lines"},
         {0}};
     gw_err err = {{0}};
@@ -376,9 +399,26 @@ int gw_cmd_sweep(int argc, char **argv, const gw_sweep_model *const *models, int
             err.msg[0] = '\0';
         }
     }
-    if (code == 0 && check_only) {
-        if (rank == 0)
+    /* --check: and what a resume would do with the journal there, read by
+     * the resume's own code (its refusals, the same exit codes), nothing
+     * written: `--check` said "is valid" beside another config's journal,
+     * which the run then refused */
+    if (code == 0 && check_only && rank == 0) {
+        long ndone = 0;
+        int exists = 0;
+        size_t torn = 0;
+        if (!(done = calloc((size_t)cfg.ncases, 1)))
+            code = 1, gw_err_set(&err, GW_ENOMEM, "out of memory");
+        else if ((rc = gw_sweep_journal_resume_check(out, &cfg, done, &ndone, &exists, &torn, &err)) != GW_OK)
+            code = rc == GW_EIO ? 1 : exit_code(rc);
+        if (code == 0) {
             printf("sweep: %s is valid: model %s, %ld cases\n", pos[0], cfg.model, cfg.ncases);
+            check_report(out, cfg.ncases, exists, ndone, torn);
+        }
+    }
+    if (check_only) { /* every rank to the end: a refusal of rank 0 included (the other ranks wait there) */
+        if (code != 0 && rank == 0 && err.msg[0])
+            say_error(&err);
         goto finish;
     }
     if (code == 0 && rank == 0) {
@@ -448,7 +488,7 @@ int gw_cmd_sweep(int argc, char **argv, const gw_sweep_model *const *models, int
         }
     }
     if (code != 0 && code != 130 && rank == 0 && err.msg[0])
-        fprintf(stderr, strncmp(err.msg, "sweep", 5) == 0 ? "granwave %s\n" : "granwave sweep: %s\n", err.msg);
+        say_error(&err);
 finish:
     if (s.fd >= 0) { /* after the table: the journal's lock held to the end */
         gw_err e2; /* rows since the last fsync (a stop, a failure) made durable too */

@@ -155,7 +155,7 @@ static const gw_param drop_fields[] = {
     RA("f_wall", f_wall, "N", "trace_len", NULL, "the sensor signal F(t)"),
     RA("x", x, "m", "trace_len", "n", "bead displacements toward the sensor (trace = 1)"),
     RA("v", v, "m/s", "trace_len", "n", "bead velocities toward the sensor (trace = 1)"),
-    RF("canceled", canceled, "1: stopped by the progress callback at t_end"),
+    RF("canceled", canceled, "1: stopped by the progress callback (at t_end, or in the first collision's own run)"),
     GW_PARAM_WARNINGS(OFF(warnings)),
     GW_PARAM_END};
 #undef OFF
@@ -219,16 +219,12 @@ int gw_chain_drop_setup_gaps(const gw_chain_drop_setup *s, double **gaps, gw_err
     return GW_OK;
 }
 
-/* ---- the signal, and progress, from the run's sample callback ---- */
+/* ---- the signal from the run's sample callback ---- */
 
 typedef struct drop_rec {
     gw_chain_drop_outcome *out;
     size_t cap;
     int n, keep_beads;
-    gw_progress_fn progress;
-    void *pctx;
-    double dt_out;
-    long total, next, step;
 } drop_rec;
 
 static int grow(double **a, size_t cap)
@@ -261,18 +257,6 @@ static int record(void *ctx, double t, const double *y, double f_wall, int is_ev
             o->v[len * (size_t)rc->n + (size_t)i] = y[2 * i + 1];
         }
     o->trace_len++;
-    if (rc->progress) {
-        long done = (long)floor(t / rc->dt_out + 1e-9);
-        if (done >= rc->next) {
-            if (done > rc->total)
-                done = rc->total;
-            rc->next = done + rc->step;
-            if (rc->progress(rc->pctx, done, rc->total) != 0) {
-                o->canceled = 1;
-                return 1; /* ends the integration here, without an error */
-            }
-        }
-    }
     return 0;
 }
 
@@ -402,16 +386,11 @@ int gw_chain_drop_study_run(const gw_chain_drop_setup *s, gw_progress_fn progres
     dp.gaps = s->block ? NULL : out->gaps;
     dp.t_max = t_max;
     dp.peak_threshold = out->peak_threshold;
-    drop_rec rec = {.out = out, .n = p->n, .keep_beads = s->col.trace, .progress = progress, .pctx = pctx,
-                    .dt_out = dt_out};
-    if (progress) {
-        rec.total = (long)floor(t_max / dt_out + 1e-9);
-        rec.step = rec.total / 100 > 0 ? rec.total / 100 : 1;
-        rec.next = rec.step;
-    }
+    drop_rec rec = {.out = out, .n = p->n, .keep_beads = s->col.trace};
     res.run.sample = record;
     res.run.sample_ctx = &rec;
-    rc = gw_chain_drop_run(&dp, &res.run, &out->r, err);
+    rc = gw_chain_drop_run_progress(&dp, &res.run, progress, pctx, &out->r, err);
+    out->canceled = rc == GW_ECANCELED;
     out->v_imp = out->r.v_imp;
     out->t_fall = out->r.t_fall;
     out->dt = out->r.run_dt;
@@ -419,8 +398,6 @@ int gw_chain_drop_study_run(const gw_chain_drop_setup *s, gw_progress_fn progres
     int rc2 = fill_tables(out, err);
     if (rc == GW_OK)
         rc = rc2;
-    if (rc == GW_OK && out->canceled)
-        rc = gw_err_set(err, GW_ECANCELED, "drop: stopped by the progress callback at t = %.9g s", out->r.t_end);
     if (rc == GW_OK && (rc = gw_chain_drop_result_warnings(&out->r, &out->warnings)) != GW_OK)
         rc = gw_err_set(err, rc, "drop: out of memory");
     gw_chain_resolved_free(&res);

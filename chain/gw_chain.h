@@ -759,6 +759,16 @@ int gw_chain_drop_impact_rises(const gw_chain_drop_result *r);
  * measured up to the failure). */
 int gw_chain_drop_run(const gw_chain_drop_params *p, const gw_chain_run_opts *o,
                       gw_chain_drop_result *r, gw_err *err);
+/* The same with progress(pctx, done, total) (may be NULL) in output samples of
+ * the run's two passes: the drop over t_max (t / dt_out), then its first
+ * collision run again by the chain's code (gw_chain_collide; at most t_max more,
+ * about as much work again), total = 2 t_max / dt_out; called at most about
+ * every hundredth of total, and once with done = total at the end (the first
+ * collision's pass may end early). A non-zero return stops the run there:
+ * GW_ECANCELED "drop: stopped by the progress callback ...", r holding what
+ * was measured. */
+int gw_chain_drop_run_progress(const gw_chain_drop_params *p, const gw_chain_run_opts *o, gw_progress_fn progress,
+                               void *pctx, gw_chain_drop_result *r, gw_err *err);
 void gw_chain_drop_result_free(gw_chain_drop_result *r);
 /* The warning of a drop cut at t_max (first_cut: inside the first collision;
  * open_at_t_max: bead 1 still on the sensor), appended to *list as

@@ -497,7 +497,7 @@ typedef struct gw_chain_drop_outcome {
     int trace_len;           /* samples of the signal */
     double *t, *f_wall;      /* [trace_len] s, N: the sensor signal */
     double *x, *v;           /* [trace_len x n] m, m/s (setup trace = 1), else NULL */
-    int canceled;            /* 1: stopped by the progress callback at r.t_end */
+    int canceled;            /* 1: stopped by the progress callback (at r.t_end, or in the first collision's own run) */
     char *warnings;          /* gw_chain_drop_result_warnings of r (owned; NULL: none) */
 } gw_chain_drop_outcome;
 
@@ -515,8 +515,10 @@ int gw_chain_drop_setup_gaps(const gw_chain_drop_setup *s, double **gaps, gw_err
  * p->kc are dropped, not freed: the caller owns them). */
 void gw_chain_drop_block_params(gw_chain_params *p);
 /* The drop (gw_chain_drop_run) from a setup. progress(ctx, done, total) counts
- * output samples (total = t_max / dt_out), called at most about 100 times (may
- * be NULL); a stop ends the integration there and returns GW_ECANCELED. */
+ * output samples of the drop and of its first collision's own run
+ * (gw_chain_drop_run_progress: total = 2 t_max / dt_out), called at most about
+ * 100 times (may be NULL); a stop ends the run there and returns GW_ECANCELED
+ * (out->canceled = 1, out holding what was measured). */
 int gw_chain_drop_study_run(const gw_chain_drop_setup *s, gw_progress_fn progress, void *pctx,
                             gw_chain_drop_outcome *out, gw_err *err);
 void gw_chain_drop_outcome_free(gw_chain_drop_outcome *out);

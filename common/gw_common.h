@@ -334,7 +334,10 @@ size_t gw_utf8_len(const char *text);
  * new objects. */
 unsigned long gw_json_failures(void);
 void gw_json_failures_clear(void);
-/* Print o (indented) with a newline to fp. */
+/* Print o (indented) with a newline to fp, flushed. GW_OK; GW_ENOMEM (nothing
+ * printed); GW_EIO when a write or the flush failed, errno then the failed
+ * write's (EPIPE, ENOSPC: the caller reports it, as a later fflush of fp finds
+ * the error flag set but no errno). */
 int gw_json_print(const cJSON *o, FILE *fp);
 /* Write o to path atomically. */
 int gw_json_write(const char *path, const cJSON *o, gw_err *err);

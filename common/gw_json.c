@@ -10,6 +10,7 @@
  * Latin-1, a stray byte of a table's comment) is printed as U+FFFD, so a
  * strict parser reads every output; valid UTF-8 is printed as given.
  */
+#include <errno.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -199,8 +200,15 @@ int gw_json_print(const cJSON *o, FILE *fp)
     char *s = gw_json_string(o, 1);
     if (!s)
         return GW_ENOMEM;
+    errno = 0;
     int bad = fputs(s, fp) < 0 || fputc('\n', fp) == EOF || fflush(fp) != 0;
+    /* the failed write's errno for the caller's message: the flush above
+     * empties the buffer, so a later fflush of fp succeeds with ferror set and
+     * no errno (a closed pipe was reported as "Input/output error") */
+    const int e = bad ? (errno ? errno : EIO) : 0;
     free(s);
+    if (bad)
+        errno = e;
     return bad ? GW_EIO : GW_OK;
 }
 

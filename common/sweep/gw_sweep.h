@@ -181,6 +181,18 @@ int gw_sweep_out_inputs_check(const char *dir, const gw_sweep_config *cfg, gw_er
  * running in this directory ...", before anything is read or cut. */
 int gw_sweep_journal_open(const char *dir, const gw_sweep_config *cfg, char *done, long *ndone, int *fd,
                           gw_err *err);
+/* What a resume would find (`granwave sweep CONFIG --check`): DIR/journal.csv
+ * read and checked by the code of gw_sweep_journal_open, with its refusals
+ * (another config's journal, one edited by hand, of another format, a row of
+ * other [params] or of a changed input file, a FIFO or a directory of its
+ * name, a journal another sweep holds locked: GW_EINVAL naming the journal or
+ * DIR; GW_EIO when it cannot be opened for appending), but nothing created,
+ * cut or written: done[k] = 1 and *ndone as a resume would skip them,
+ * *exists (may be NULL) 0 when there is no journal yet (then *ndone = 0),
+ * *torn (may be NULL) the bytes of a torn last row a resume would cut (its
+ * case runs again). Read under a shared lock, closed on return. */
+int gw_sweep_journal_resume_check(const char *dir, const gw_sweep_config *cfg, char *done, long *ndone, int *exists,
+                                  size_t *torn, gw_err *err);
 
 /* Every input file of cfg still has the content it had when cfg was read:
  * GW_OK, or GW_EINVAL "KEY 'VALUE' changed ... (content fnv1a64 A when the

@@ -102,7 +102,7 @@ static int journal_create(const char *path, const char *text, int *fdp, gw_err *
 }
 
 static int journal_check(const char *path, const char *dir, const char *head, const gw_sweep_config *cfg,
-                         char *done, long *ndone, int fd, gw_err *err);
+                         char *done, long *ndone, int fd, size_t *torn, gw_err *err);
 
 int gw_sweep_journal_scan(const char *dir, const gw_sweep_config *cfg, char *done, long *ndone, gw_err *err)
 {
@@ -113,14 +113,29 @@ int gw_sweep_journal_scan(const char *dir, const gw_sweep_config *cfg, char *don
     return rc;
 }
 
-int gw_sweep_journal_open(const char *dir, const gw_sweep_config *cfg, char *done, long *ndone, int *fdp,
-                          gw_err *err)
+/* The journal of a sweep in dir as a resume takes it (fdp, torn NULL: made
+ * when absent, its torn last row cut, kept open and locked in *fdp), or as
+ * `sweep --check` reads it (torn set: nothing made or cut, *torn the bytes a
+ * resume would cut, *exists 0 when there is none; read under a shared lock
+ * and closed). One path for both: the same checks, the same refusals. */
+static int journal_access(const char *dir, const gw_sweep_config *cfg, char *done, long *ndone, int *fdp,
+                          int *exists, size_t *torn, gw_err *err)
 {
     char path[4096];
+    int fd = -1;
     *ndone = 0;
-    *fdp = -1;
+    if (fdp)
+        *fdp = -1;
+    if (exists)
+        *exists = 1;
     if (gw_path_join(path, sizeof path, dir, "journal.csv") != GW_OK)
         return gw_err_set(err, GW_EINVAL, "%s: path too long", dir);
+    struct stat st;
+    if (torn && stat(dir, &st) != 0 && errno == ENOENT) { /* a check before the first run: nothing in it */
+        *exists = 0;
+        *torn = 0;
+        return GW_OK;
+    }
     /* the table goes beside the journal once every case has run: a directory
      * or a FIFO of its name failed the sweep (exit 1) after all its cases */
     char tpath[4096];
@@ -132,7 +147,11 @@ int gw_sweep_journal_open(const char *dir, const gw_sweep_config *cfg, char *don
         return GW_EINVAL;
     char head[96];
     gw_snprintf(head, sizeof head, GW_SWEEP_JOURNAL_HEAD "\n", cfg->hash);
-    struct stat st;
+    if (torn && stat(path, &st) != 0 && errno == ENOENT) { /* a run would start it: nothing done */
+        *exists = 0;
+        *torn = 0;
+        return GW_OK;
+    }
     if (stat(path, &st) != 0 && errno == ENOENT) {
         char *in = gw_sweep_head_lines(cfg); /* a new journal: the config, and what its files held */
         size_t hl = strlen(head), il = in ? strlen(in) : 0;
@@ -143,7 +162,7 @@ int gw_sweep_journal_open(const char *dir, const gw_sweep_config *cfg, char *don
         }
         memcpy(text, head, hl);
         memcpy(text + hl, in, il + 1);
-        int rc = journal_create(path, text, fdp, err);
+        int rc = journal_create(path, text, &fd, err);
         free(text);
         free(in);
         if (rc != GW_OK)
@@ -153,12 +172,15 @@ int gw_sweep_journal_open(const char *dir, const gw_sweep_config *cfg, char *don
      * until the sweep ends (the lock goes with the process, kill -9 too).
      * Two sweeps of one config at once each ran every case and journaled it
      * twice; a second sweep's scan could cut a row the first was appending
-     * as a torn one. What is read, checked and cut below is read under it. */
-    if (*fdp < 0 && stat(path, &st) == 0 && S_ISREG(st.st_mode)) {
-        int fd = open(path, O_RDWR | O_APPEND | O_CLOEXEC | O_NONBLOCK);
+     * as a torn one. What is read, checked and cut below is read under it.
+     * A check opens it as a resume would (for appending: a journal a resume
+     * cannot append to is refused alike), writes nothing, and shares its lock
+     * with other checks. */
+    if (fd < 0 && stat(path, &st) == 0 && S_ISREG(st.st_mode)) {
+        fd = open(path, O_RDWR | O_APPEND | O_CLOEXEC | O_NONBLOCK);
         if (fd < 0)
             return gw_err_set(err, GW_EIO, "%s: cannot open for appending: %s", path, strerror(errno));
-        if (flock(fd, LOCK_EX | LOCK_NB) != 0) {
+        if (flock(fd, (torn ? LOCK_SH : LOCK_EX) | LOCK_NB) != 0) {
             const int e = errno;
             close(fd);
             if (e == EWOULDBLOCK)
@@ -166,20 +188,40 @@ int gw_sweep_journal_open(const char *dir, const gw_sweep_config *cfg, char *don
                                   "is locked by that process): wait for it to end, or choose another output", dir);
             return gw_err_set(err, GW_EIO, "%s: cannot lock: %s", path, strerror(e));
         }
+    }
+    int rc = journal_check(path, dir, head, cfg, done, ndone, fd, torn, err);
+    if ((rc != GW_OK || !fdp) && fd >= 0) {
+        close(fd);
+        fd = -1;
+    }
+    if (fdp)
         *fdp = fd;
-    }
-    int rc = journal_check(path, dir, head, cfg, done, ndone, *fdp, err);
-    if (rc != GW_OK && *fdp >= 0) {
-        close(*fdp);
-        *fdp = -1;
-    }
+    return rc;
+}
+
+int gw_sweep_journal_open(const char *dir, const gw_sweep_config *cfg, char *done, long *ndone, int *fdp,
+                          gw_err *err)
+{
+    return journal_access(dir, cfg, done, ndone, fdp, NULL, NULL, err);
+}
+
+int gw_sweep_journal_resume_check(const char *dir, const gw_sweep_config *cfg, char *done, long *ndone, int *exists,
+                                  size_t *torn, gw_err *err)
+{
+    int e = 0;
+    size_t t = 0;
+    int rc = journal_access(dir, cfg, done, ndone, NULL, &e, &t, err);
+    if (exists)
+        *exists = e;
+    if (torn)
+        *torn = t;
     return rc;
 }
 
 /* The journal at path, read (under the caller's lock on fd) and checked;
- * a torn last row cut. */
+ * a torn last row cut (torn NULL) or its bytes counted in *torn. */
 static int journal_check(const char *path, const char *dir, const char *head, const gw_sweep_config *cfg,
-                         char *done, long *ndone, int fd, gw_err *err)
+                         char *done, long *ndone, int fd, size_t *torn, gw_err *err)
 {
     size_t len = 0;
     char *buf = gw_sweep_slurp(path, &len, err);
@@ -327,6 +369,10 @@ static int journal_check(const char *path, const char *dir, const char *head, co
     free(buf);
     if (rc != GW_OK)
         return rc;
+    if (torn) {
+        *torn = len - good;
+        return GW_OK;
+    }
     if (good < len && ftruncate(fd, (off_t)good) != 0)
         return gw_err_set(err, GW_EIO, "%s: cannot cut a torn row: %s", path, strerror(errno));
     return GW_OK;

@@ -340,7 +340,8 @@ drop.__doc__ = _study("drop").doc(
     "({'t', 'f'} arrays, with peak_impact, peak_cluster, peak_contacts [peak, contact]),\n"
     "impacts (a dict of arrays by column), first_collision (a dict with the keys of\n"
     "granwave.chain's result: f_max, tau_max, tau_n, eps_eff, ...) and energy (the ledger\n"
-    "at t_end). progress: f(done, total) in output samples; return True (or raise) to stop.")
+    "at t_end). progress: f(done, total) in output samples of the drop and of its first\n"
+    "collision's own run (total = 2 t_max / dt_out); return True (or raise) to stop.")
 layer_make.__doc__ = _study("layer-make").doc(
     "Pluviate a 2D sample (Bourrier et al. 2008, physics.md 2.2), as `granwave layer-make`:\n"
     "polydisperse discs (clumps=True: rigid clumps) dropped under gravity until the kinetic\n"

@@ -127,7 +127,10 @@ def test_drop_unknown_keyword():
 def test_drop_progress_and_stop():
     seen = []
     d = granwave.drop(n=3, t_max=2e-3, progress=lambda done, total: seen.append((done, total)))
-    assert seen and seen[-1] == (2000, 2000) and all(t == 2000 for _, t in seen) and len(seen) <= 101
+    # output samples (1 us) of the drop over t_max and of its first collision's own run
+    # (at most as long): 2 x 2000, the last call at the total
+    assert seen and seen[-1] == (4000, 4000) and all(t == 4000 for _, t in seen) and len(seen) <= 101
+    assert all(b[0] > a[0] for a, b in zip(seen, seen[1:]))
     assert not d.canceled and d.t_end == pytest.approx(2e-3, rel=1e-12)
     with pytest.raises(granwave.GranwaveError) as e:
         granwave.drop(n=3, t_max=2e-3, progress=lambda done, total: done >= 500)

@@ -11,6 +11,12 @@
 #    run of minutes instead of 0.04 s (chain --n 20 --method adams 25 s; falcon
 #    --solver cvode --dt 1e-5 more than 30 s). The step given is now the run's
 #    first step only; a restart estimates its own, as a run without --dt does.
+#    A first step given that the error test must cut more than 7 times (the
+#    solvers' default limit) failed the run at its start: chain --sheet pvc
+#    --sheet-law material --dt 1e-6 (or 1e-3) exited 1, "cvode failed at t = 0
+#    s ... h = 1e-12", where 1e-7 and the estimated step run; arkode's erk
+#    failed so at 1e-5. Up to 30 cuts are now allowed while the first step is
+#    the one given (the default 7 again after a restart).
 #    Asserted by behaviour: each run ends under a timeout with exit 0, its
 #    steps within 3 times the default's and F_max within 1e-7 of the default's.
 #  2 wavespeed failed with no reason: a wall stiffer than the beads (--kwall
@@ -86,6 +92,11 @@ same_run "chain --n 20 --dt 1e-5 --method adams" chain --n 20 --method adams -- 
 same_run "chain --n 6 --dt 1e-5 --solver arkode" chain --n 6 --solver arkode -- --dt 1e-5
 same_run "chain --n 10 --dt 1e-3 --gravity 100 (cvode)" chain --n 10 --gravity 100 -- --dt 1e-3
 same_run "chain --n 2 --dt 1e-300 (cvode: a step below t's rounding)" chain --n 2 -- --dt 1e-300
+# a first step given that CVODE (ARKode's ERK) must cut more than its default
+# 7 times: a PVC sheet by its material failed at t = 0 with h = 1e-12
+same_run "chain --sheet pvc --sheet-law material --dt 1e-6 (cvode)" chain --n 5 --sheet pvc --sheet-law material -- --dt 1e-6
+same_run "chain --sheet pvc --sheet-law material --dt 1e-3 (cvode)" chain --n 5 --sheet pvc --sheet-law material -- --dt 1e-3
+same_run "chain --sheet pvc --sheet-law material --dt 1e-5 (arkode erk)" chain --n 5 --sheet pvc --sheet-law material --solver arkode -- --dt 1e-5
 same_run "falcon --n 1:6 --solver cvode --dt 1e-5" falcon --n 1:6 --heights none --solver cvode --quiet --jobs 1 -- --dt 1e-5
 
 # --- 2 wavespeed's front not seen ---

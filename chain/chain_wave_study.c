@@ -241,8 +241,13 @@ static void power_fit(const double *v, const double *s, int n, double scale, dou
     }
 }
 
-/* Front speed of one long column: linear fit of 2R k against front_t[k]. */
-static double front_speed(const gw_chain_params *p, const gw_chain_run_opts *run, double frac, gw_err *err)
+/* Front speed of one long column: linear fit of 2R k against front_t[k]. A
+ * run that ends without the front at three contacts fails naming the
+ * threshold (it failed with no reason, "no front fit at v_imp = 0.3 ()", when
+ * a stiff wall's F_max(1) put the threshold above every contact's force:
+ * wavespeed --kwall 1e13). */
+static int front_speed(const gw_chain_params *p, const gw_chain_run_opts *run, double frac, double *speed,
+                       gw_err *err)
 {
     gw_chain *c = NULL;
     gw_chain_run_opts o = *run;
@@ -253,7 +258,7 @@ static double front_speed(const gw_chain_params *p, const gw_chain_run_opts *run
     o.dt_out = o.dt_out > 0 ? fmin(o.dt_out, fine) : fine;
     gw_chain_result r;
     memset(&r, 0, sizeof r);
-    double speed = NAN;
+    *speed = NAN;
     int rc = gw_chain_create(p, &c, err);
     if (rc == GW_OK)
         rc = gw_chain_collide(c, &o, &r, err);
@@ -267,13 +272,21 @@ static double front_speed(const gw_chain_params *p, const gw_chain_run_opts *run
                 m++;
             }
         gw_linfit lf;
-        if (m >= 3 && gw_fit_linear(x, y, m, &lf) == GW_OK)
-            speed = lf.c1;
+        if (!x)
+            rc = gw_err_set(err, GW_ENOMEM, "out of memory");
+        else if (m >= 3 && gw_fit_linear(x, y, m, &lf) == GW_OK)
+            *speed = lf.c1;
+        else
+            rc = gw_err_set(err, GW_ESOLVER,
+                            "the force of %d of contacts 2..%d of the %d-bead column reached the front "
+                            "threshold %.4g N (%g of F_max(1) = %.4g N, one bead on this wall; at least 3 "
+                            "are fitted): lower --threshold",
+                            m, n - 2, n, o.front_threshold, frac, o.front_threshold / frac);
         free(x);
     }
     gw_chain_result_free(&r);
     gw_chain_free(c);
-    return speed;
+    return rc;
 }
 
 /* tau_N line, period, mean wall force and the three speeds at velocity iv. */
@@ -306,11 +319,11 @@ static int ws_velocity(const gw_chain_params *p, const gw_chain_run_opts *run, c
     o->v_group_front[iv] = o->v_group[iv] / sqrt(1.5);
     gw_chain_params q = *p;
     q.v_imp = o->v_imp[iv];
-    o->v_front[iv] = front_speed(&q, run, frac, err);
-    if (!isfinite(o->v_front[iv])) {
+    int rc = front_speed(&q, run, frac, &o->v_front[iv], err);
+    if (rc != GW_OK) {
         char tmp[sizeof err->msg];
         gw_snprintf(tmp, sizeof tmp, "%s", err->msg);
-        return gw_err_set(err, GW_ESOLVER, "wavespeed: no front fit at v_imp = %g (%s)", o->v_imp[iv], tmp);
+        return gw_err_set(err, rc, "wavespeed: no front fit at v_imp = %g (%s)", o->v_imp[iv], tmp);
     }
     return GW_OK;
 }

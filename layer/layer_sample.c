@@ -148,6 +148,14 @@ static int text_next(text_in *t, gw_err *err)
         while ((c = text_getc(t)) != EOF && c != '\n') {
             any = 1;
             nul |= c == 0;
+            /* a CR not before the LF: lines that end in CR alone were one line,
+             * refused as "longer than 1024 characters" (or, short, as a header) */
+            if (c == '\r' && (c = text_getc(t)) != '\n' && c != EOF)
+                return gw_err_set(err, GW_EFORMAT, "sample '%s': line %ld: a carriage return inside the line: "
+                                  "lines that end in CR alone are one line to the reader; convert them to LF "
+                                  "(CR LF is read too)", t->path, t->line + 1);
+            if (c == '\n' || c == EOF)
+                break;
             if (lead && (c == ' ' || c == '\t'))
                 continue;
             if (lead)

@@ -250,11 +250,13 @@ static void free_body(void)
 }
 
 /* 6. An initial step far below the resolution of t (the sixteenth session of
- *    stage 2): cvode and arkode restart at every contact event with the step
- *    given, and 1e-300 at t = 5.03e-5 s does not move t, so CVODE stepped in
- *    place for good (`granwave chain --n 2 --dt 1e-300`). The restart's step
- *    is now at least 100 roundings of t; the run ends (an alarm fails a hang)
- *    with the contact's closed-form time as for the default step. */
+ *    stage 2): cvode and arkode restarted at every contact event with the
+ *    step given, and 1e-300 at t = 5.03e-5 s does not move t, so CVODE stepped
+ *    in place for good (`granwave chain --n 2 --dt 1e-300`). The step given is
+ *    now the run's first step only, at least 100 roundings of t, and a restart
+ *    estimates its own (the twenty-fourth hostile pass: a large one given
+ *    again at each restart hung, test_hostile_twentyfourth); the run ends (an
+ *    alarm fails a hang) with the default step's f_max. */
 static void tiny_initial_step(void)
 {
     alarm(60);

@@ -88,8 +88,10 @@ static const char *erk_configure(gw_solver *s, ark_impl *a, int *flag)
         ERK_CHECK(ERKStepSVtolerances(a->mem, s->p.rtol, a->abstol));
     }
     ERK_CHECK(ERKStepSetMaxNumSteps(a->mem, s->p.max_steps));
-    if (s->p.dt > 0)
-        ERK_CHECK(ERKStepSetInitStep(a->mem, s->p.dt));
+    if (s->p.dt > 0) { /* a first step given: cut as far as needed (cv_create says why) */
+        ERK_CHECK(ERKStepSetInitStep(a->mem, gw_sun_init_step(s->p.dt, a->t)));
+        ERK_CHECK(ERKStepSetMaxErrTestFails(a->mem, 30));
+    }
     if (s->p.dt_max > 0)
         ERK_CHECK(ERKStepSetMaxStep(a->mem, s->p.dt_max));
     ERK_CHECK(ERKStepSetTableName(a->mem, "ARKODE_CASH_KARP_6_4_5"));
@@ -115,8 +117,10 @@ static const char *ark_configure(gw_solver *s, ark_impl *a, int method, int *fla
         ARK_CHECK(ARKStepSVtolerances(a->mem, s->p.rtol, a->abstol));
     }
     ARK_CHECK(ARKStepSetMaxNumSteps(a->mem, s->p.max_steps));
-    if (s->p.dt > 0)
-        ARK_CHECK(ARKStepSetInitStep(a->mem, s->p.dt));
+    if (s->p.dt > 0) {
+        ARK_CHECK(ARKStepSetInitStep(a->mem, gw_sun_init_step(s->p.dt, a->t)));
+        ARK_CHECK(ARKStepSetMaxErrTestFails(a->mem, 30));
+    }
     if (s->p.dt_max > 0)
         ARK_CHECK(ARKStepSetMaxStep(a->mem, s->p.dt_max));
     if (method == GW_ARKODE_ERK) {
@@ -242,10 +246,10 @@ static int ark_reset(gw_solver *s, double t, const double *y)
     memcpy(N_VGetArrayPointer(a->y), y, (size_t)s->sys.dim * sizeof *y);
     a->t = t;
     int flag = a->erk ? ERKStepReset(a->mem, t, a->y) : ARKStepReset(a->mem, t, a->y);
-    if (flag >= 0 && s->p.dt > 0) { /* a step given: one that moves t from here */
-        const double h0 = gw_sun_init_step(s->p.dt, t);
-        flag = a->erk ? ERKStepSetInitStep(a->mem, h0) : ARKStepSetInitStep(a->mem, h0);
-    }
+    if (flag >= 0 && s->p.dt > 0) /* the run's initial step only (cv_reset says why) */
+        flag = a->erk ? ERKStepSetInitStep(a->mem, 0.0) : ARKStepSetInitStep(a->mem, 0.0);
+    if (flag >= 0 && s->p.dt > 0) /* ARKode's own limit again, with its own step */
+        flag = a->erk ? ERKStepSetMaxErrTestFails(a->mem, 7) : ARKStepSetMaxErrTestFails(a->mem, 7);
     if (flag < 0) {
         char name[64];
         ark_flag_name(flag, name, sizeof name);

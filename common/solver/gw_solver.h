@@ -130,7 +130,8 @@ enum {
 typedef struct gw_solver_params {
     double rtol;       /* relative tolerance (adaptive backends) */
     double atol;       /* absolute tolerance, multiplied by gw_system.scale[i] */
-    double dt;         /* RK4 step (at most dt_max); initial step for adaptive backends (0 = auto) */
+    double dt;         /* RK4 step (at most dt_max); the run's first step for adaptive backends
+                          (0 = auto; a restart after an event estimates its own) */
     double dt_max;     /* largest step (0 = unlimited) */
     long max_steps;    /* internal steps allowed per gw_solver_advance call */
     int method;        /* GW_METHOD_DEFAULT or a backend variant above */

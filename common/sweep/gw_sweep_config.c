@@ -417,6 +417,12 @@ static int lines_fit(const char *text, const char *name, parse_ctx *pc, gw_err *
         long len = e ? (long)(e - p) : (long)strlen(p);
         if (len > 0 && p[len - 1] == '\r')
             len--;
+        /* a CR not ending the line: a file whose lines end in CR alone was one
+         * line to the reader, refused as "no [sweep] model" (or as too long) */
+        if (memchr(p, '\r', (size_t)len))
+            return gw_err_set(err, GW_EINVAL, "%s:%ld: a carriage return inside the line: lines that end in CR "
+                              "alone are one line to the config reader; convert them to LF (CR LF is read too)",
+                              name, ln);
         if (len > max)
             return gw_err_set(err, GW_EINVAL, "%s:%ld: a line of %ld characters, above the %ld the config reader "
                               "takes: give integers as a range A:B, or go on over indented lines after a comma", name, ln, len, max);

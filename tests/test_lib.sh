@@ -1,0 +1,89 @@
+#!/bin/bash
+# test_lib.sh: sourced by the program's shell tests (and by refusal_lib.sh).
+# Gives the counters and the run-control helpers they share:
+#   ok WHAT / ko WHAT: a passed / failed check, printed and counted;
+#   test_setup "$@": GW (the program, $1), SRC (the source tree, $2, else this
+#   file's parent), tmp (a scratch directory removed on exit) and set -u;
+#   test_summary [NAME]: prints the counts, returns 1 when a check failed.
+# Runs that must be stopped mid-way synchronise on an event of the run, never
+# on a wall-clock sleep (a sleep of 0.4 s missed a 0.3 s run on an idle machine
+# and landed before the run started under load):
+#   journal_rows FILE: the rows of a sweep journal (0 when there is none);
+#   wait_rows FILE N [SECONDS]: until FILE holds N rows (SECONDS, 120);
+#   wait_cpu PID SECONDS: until PID has used SECONDS of CPU (user + system, all
+#   threads): the same point of its work whatever the machine's load;
+#   stop_mid_sweep SIG DIR TOTAL CMD...: CMD (a sweep into DIR of TOTAL cases)
+#   sent SIG once its journal holds a row; asserts nothing, sets rows and rc.
+# Background jobs of a script ignore SIGINT (bash sets it so): a run that is to
+# see SIGINT is started under `env --default-signal=INT`.
+fails=0; passes=0
+ok() { echo "PASS: $1"; passes=$((passes+1)); }
+ko() { echo "FAIL: $1"; fails=$((fails+1)); }
+
+test_setup() {
+    set -u
+    GW=$1
+    SRC=${2:-$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)}
+    tmp=$(mktemp -d)
+    trap 'rm -rf "$tmp"' EXIT
+}
+
+test_summary() {
+    echo "${1:+$1: }$passes passed, $fails failed"
+    [ "$fails" -eq 0 ]
+}
+
+journal_rows() {
+    local n
+    n=$(grep -vc '^#' "$1" 2>/dev/null)
+    echo "${n:-0}"
+}
+
+wait_rows() {
+    local end=$((SECONDS + ${3:-120}))
+    while [ "$(journal_rows "$1")" -lt "$2" ]; do
+        [ $SECONDS -lt $end ] || return 1
+        sleep 0.01
+    done
+}
+
+# cpu_ticks PID: user + system time of PID in clock ticks; fails when PID has
+# ended (gone, or a zombie not yet waited for)
+cpu_ticks() {
+    local s
+    s=$(cat "/proc/$1/stat" 2>/dev/null) || return 1
+    s=${s##*) }   # past "pid (comm) ": state is field 1, utime 12, stime 13
+    set -- $s
+    [ "$1" != Z ] || return 1
+    echo $(( ${12} + ${13} ))
+}
+
+wait_cpu() {
+    local want t end=$((SECONDS + 300))
+    want=$(awk -v s="$2" -v hz="$(getconf CLK_TCK)" 'BEGIN { printf "%d", s * hz + 0.5 }')
+    while t=$(cpu_ticks "$1"); do
+        [ "$t" -ge "$want" ] && return 0
+        [ $SECONDS -lt $end ] || return 1
+        sleep 0.01
+    done
+    return 1
+}
+
+# stop_mid_sweep SIG DIR TOTAL CMD...: the caller asserts 1 <= rows < TOTAL and
+# no DIR/results.csv (the signal landed mid-sweep). A sweep that ended before
+# the signal (rows = TOTAL, a table) is started again, three times at most;
+# attempt says which one landed.
+stop_mid_sweep() {
+    local sig=$1 dir=$2 total=$3 pid
+    shift 3
+    for attempt in 1 2 3; do
+        rm -rf "$dir"
+        env --default-signal=INT "$@" & pid=$!
+        wait_rows "$dir/journal.csv" 1
+        kill -"$sig" $pid 2>/dev/null
+        wait $pid 2>/dev/null; rc=$?
+        rows=$(journal_rows "$dir/journal.csv")
+        [ ! -e "$dir/results.csv" ] && [ "$rows" -ge 1 ] && [ "$rows" -lt "$total" ] && return 0
+    done
+    return 1
+}

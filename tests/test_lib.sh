@@ -12,6 +12,8 @@
 #   wait_rows FILE N [SECONDS]: until FILE holds N rows (SECONDS, 120);
 #   wait_cpu PID SECONDS: until PID has used SECONDS of CPU (user + system, all
 #   threads): the same point of its work whatever the machine's load;
+#   cpu_of CMD...: runs CMD (output dropped), prints the CPU seconds it used:
+#   the reference for the points of wait_cpu on this machine;
 #   stop_mid_sweep SIG DIR TOTAL CMD...: CMD (a sweep into DIR of TOTAL cases)
 #   sent SIG once its journal holds a row; asserts nothing, sets rows and rc.
 # Background jobs of a script ignore SIGINT (bash sets it so): a run that is to
@@ -67,6 +69,11 @@ wait_cpu() {
         sleep 0.01
     done
     return 1
+}
+
+cpu_of() {
+    ( "$@" >/dev/null 2>&1; times ) | tail -1 |
+        awk '{ for (i = 1; i <= 2; i++) { split($i, a, "m"); t += a[1] * 60 + a[2] } } END { printf "%.3f\n", t }'
 }
 
 # stop_mid_sweep SIG DIR TOTAL CMD...: the caller asserts 1 <= rows < TOTAL and

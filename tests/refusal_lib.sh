@@ -2,7 +2,7 @@
 # refusal_lib.sh: sourced by the input-handling tests (test_cli_refusals.sh,
 # test_hostile_chain.sh, test_hostile_layer.sh) after they set GW (the program),
 # SRC (the source tree) and tmp (a scratch directory removed on exit). Gives the
-# counters and the refusal check they share:
+# counters (test_lib.sh's) and the refusal check they share:
 #   refused WHAT PATTERN CMD...: exit 2 within REFUSE_TIMEOUT seconds (20), exactly
 #   one stderr line matching PATTERN, no sanitizer report, nothing printed on
 #   stdout and nothing at $tmp/o (the --out the cases name).
@@ -11,9 +11,9 @@
 #   py_checks: the Python script on stdin run against this build's module and
 #   library, each line it prints "PASS: ..." or "FAIL: ..." counted as a check;
 #   skipped, saying so and setting py_skipped, in a sanitizer build.
-fails=0; passes=0
-ok() { echo "PASS: $1"; passes=$((passes+1)); }
-ko() { echo "FAIL: $1"; fails=$((fails+1)); }
+# the counters, ok and ko, and the run-control helpers: test_lib.sh
+# shellcheck source=tests/test_lib.sh
+. "$(dirname "${BASH_SOURCE[0]}")/test_lib.sh"
 
 refused() {
     local what=$1 pat=$2; shift 2

@@ -2,7 +2,7 @@
 # test_lib.sh: sourced by the program's shell tests (and by refusal_lib.sh).
 # Gives the counters and the run-control helpers they share:
 #   ok WHAT / ko WHAT: a passed / failed check, printed and counted;
-#   test_setup "$@": GW (the program, $1), SRC (the source tree, $2, else this
+#   test_setup "$@": GW (the program, $1, made absolute: tests may cd), SRC (the source tree, $2, else this
 #   file's parent), tmp (a scratch directory removed on exit) and set -u;
 #   test_summary [NAME]: prints the counts, returns 1 when a check failed.
 # Runs that must be stopped mid-way synchronise on an event of the run, never
@@ -24,7 +24,7 @@ ko() { echo "FAIL: $1"; fails=$((fails+1)); }
 
 test_setup() {
     set -u
-    GW=$1
+    case $1 in */*) GW=$(cd "$(dirname "$1")" && pwd)/$(basename "$1") ;; *) GW=$1 ;; esac
     SRC=${2:-$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)}
     tmp=$(mktemp -d)
     trap 'rm -rf "$tmp"' EXIT

@@ -2,12 +2,13 @@
 # test_lib.sh: sourced by the program's shell tests (and by refusal_lib.sh).
 # Gives the counters and the run-control helpers they share:
 #   ok WHAT / ko WHAT: a passed / failed check, printed and counted;
-#   test_setup "$@": GW (the program, $1, made absolute: tests may cd), SRC (the source tree, $2, else this
-#   file's parent), tmp (a scratch directory removed on exit) and set -u;
+#   test_setup "$@": GW (the program, $1, made absolute: tests may cd), SRC
+#   (the source tree, $2, else this file's parent), tmp (a scratch directory
+#   removed on exit) and set -u;
 #   test_summary [NAME]: prints the counts, returns 1 when a check failed.
 # Runs that must be stopped mid-way synchronise on an event of the run, never
-# on a wall-clock sleep (a sleep of 0.4 s missed a 0.3 s run on an idle machine
-# and landed before the run started under load):
+# on a wall-clock sleep (test_hardening's SIGINTs after 0.2 to 1.5 s came after
+# its 0.28 s run had ended; under load a sleep can end before a run has begun):
 #   journal_rows FILE: the rows of a sweep journal (0 when there is none);
 #   wait_rows FILE N [SECONDS]: until FILE holds N rows (SECONDS, 120);
 #   wait_cpu PID SECONDS: until PID has used SECONDS of CPU (user + system, all

@@ -13,6 +13,8 @@
 #   wait_rows FILE N [SECONDS]: until FILE holds N rows (SECONDS, 120);
 #   wait_cpu PID SECONDS: until PID has used SECONDS of CPU (user + system, all
 #   threads): the same point of its work whatever the machine's load;
+#   wait_file PID GLOB: until a file matching GLOB exists (polled every ms with
+#   builtins: a write phase of 30 ms is not missed); 1 when PID ended first;
 #   cpu_of CMD...: runs CMD (output dropped), prints the CPU seconds it used:
 #   the reference for the points of wait_cpu on this machine;
 #   stop_mid_sweep SIG DIR TOTAL CMD...: CMD (a sweep into DIR of TOTAL cases)
@@ -59,6 +61,20 @@ cpu_ticks() {
     set -- $s
     [ "$1" != Z ] || return 1
     echo $(( ${12} + ${13} ))
+}
+
+# running PID: PID has not ended (nor is a zombie); builtins only, no fork
+running() {
+    local s
+    { read -r s <"/proc/$1/stat"; } 2>/dev/null && [[ $s != *") Z "* ]]
+}
+
+wait_file() {
+    while running "$1"; do
+        compgen -G "$2" >/dev/null && return 0
+        sleep 0.001
+    done
+    return 1
 }
 
 wait_cpu() {

@@ -11,13 +11,10 @@
 #   - softwall --sheets --sheet-law material --json lists every sheet of Table 2
 #     with n_d_model, n_d_measured, tau_max_1_model/measured, tau_max_nd_*; the
 #     fitted mode keeps its walls[] keys and gains the same list.
-set -u
-GW=$1
+# shellcheck source=tests/test_lib.sh
+. "$(dirname "${BASH_SOURCE[0]}")/test_lib.sh"
+test_setup "$@"
 PY=/usr/bin/python3
-fails=0; passes=0
-tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
-ok() { echo "PASS: $1"; passes=$((passes+1)); }
-ko() { echo "FAIL: $1"; fails=$((fails+1)); }
 
 bad() { # expected-word args...
     local word=$1; shift
@@ -99,5 +96,4 @@ PYEOF
 done
 [ -s "$tmp/sw.json" ] && [ "$(jget "$tmp/sw.json" "d['sheet_law']")" = "material" ] && ok "softwall records sheet_law" || ko "softwall sheet_law"
 
-echo "$passes passed, $fails failed"
-[ $fails -eq 0 ]
+test_summary

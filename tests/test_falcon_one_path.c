@@ -28,32 +28,7 @@
 
 #include "gw_chain_study.h"
 #include "gw_test.h"
-
-/* The whole file, or NULL. */
-static char *slurp(const char *path)
-{
-    FILE *fp = fopen(path, "rb");
-    if (!fp)
-        return NULL;
-    size_t cap = 1 << 16, len = 0;
-    char *b = malloc(cap);
-    size_t got;
-    while (b && (got = fread(b + len, 1, cap - len - 1, fp)) > 0) {
-        len += got;
-        if (cap - len < 2) {
-            char *nb = realloc(b, cap *= 2);
-            if (!nb) {
-                free(b);
-                b = NULL;
-            }
-            b = nb;
-        }
-    }
-    fclose(fp);
-    if (b)
-        b[len] = '\0';
-    return b;
-}
+#include "gw_test_files.h"
 
 /* Past the first line (the provenance header). */
 static const char *body(const char *s)
@@ -169,12 +144,12 @@ static void one_set(const char *program, const char *label, const char *const *a
     if (prc == 0 && rc == GW_OK) {
         char p[4200];
         snprintf(p, sizeof p, "%s/prog/falcon_runs.csv", dir);
-        char *f = slurp(p), *mine = runs_csv(&o);
+        char *f = gw_test_slurp(p, NULL), *mine = runs_csv(&o);
         gw_test_true(f && strcmp(body(f), mine) == 0, "falcon_runs.csv = the outcome's cases, byte for byte");
         free(f);
         free(mine);
         snprintf(p, sizeof p, "%s/prog/falcon_final_velocities.csv", dir);
-        f = slurp(p);
+        f = gw_test_slurp(p, NULL);
         mine = beads_csv(&o);
         gw_test_true(f && strcmp(body(f), mine) == 0,
                      "falcon_final_velocities.csv = the outcome's bead table, byte for byte");
@@ -192,10 +167,10 @@ static void one_set(const char *program, const char *label, const char *const *a
             snprintf(stem, sizeof stem, "trace_n%d", t->n);
             tpath(pw, sizeof pw, prog, t->n, "wall_force");
             tpath(lw, sizeof lw, lib, t->n, "wall_force");
-            char *pf = slurp(pw), *nl = pf ? strchr(pf, '\n') : NULL;
+            char *pf = gw_test_slurp(pw, NULL), *nl = pf ? strchr(pf, '\n') : NULL;
             char *hdr = nl && nl - pf > 2 ? strndup(pf + 2, (size_t)(nl - pf - 2)) : NULL; /* "# " ... "\n" */
             int wrc = hdr ? gw_chain_trace_write(&t->tr, lib, stem, hdr, &err) : GW_EIO;
-            char *lf = wrc == GW_OK ? slurp(lw) : NULL;
+            char *lf = wrc == GW_OK ? gw_test_slurp(lw, NULL) : NULL;
             snprintf(what, sizeof what, "trace_n%d_wall_force.csv = the outcome's trace, byte for byte", t->n);
             gw_test_true(pf && lf && strcmp(pf, lf) == 0, what);
             free(pf);
@@ -203,8 +178,8 @@ static void one_set(const char *program, const char *label, const char *const *a
             free(hdr);
             tpath(pw, sizeof pw, prog, t->n, "beads");
             tpath(lw, sizeof lw, lib, t->n, "beads");
-            pf = slurp(pw);
-            lf = slurp(lw);
+            pf = gw_test_slurp(pw, NULL);
+            lf = gw_test_slurp(lw, NULL);
             snprintf(what, sizeof what, "trace_n%d_beads.csv: %s", t->n,
                      t->n == 7 ? "the outcome's, byte for byte" : "neither writes it");
             gw_test_true(t->n == 7 ? (pf && lf && strcmp(pf, lf) == 0) : (!pf && !lf && t->tr.n == 0), what);
@@ -213,7 +188,7 @@ static void one_set(const char *program, const char *label, const char *const *a
         }
         /* every per-velocity number of the JSON summary: the outcome's array of that name */
         snprintf(p, sizeof p, "%s/prog/falcon_summary.json", dir);
-        f = slurp(p);
+        f = gw_test_slurp(p, NULL);
         cJSON *j = f ? cJSON_Parse(f) : NULL;
         free(f);
         const cJSON *vel = cJSON_GetObjectItemCaseSensitive(j, "velocities");

@@ -2,7 +2,16 @@
 # test_hardening.sh GRANWAVE SRCDIR: outputs are atomic and runs are memory-clean.
 #  - A falcon run interrupted by SIGINT while writing into a directory that holds
 #    a previous report leaves either the previous files or complete new ones,
-#    never a temporary or truncated file.
+#    never a temporary or truncated file. The SIGINTs land at 5, 25, 50 and 75 %
+#    of the CPU time the same run took uninterrupted (1.8 s here: 40 columns by
+#    cvode), whatever the machine's load, and must stop it (exit 130). They were sent after 0.2 to
+#    1.5 s of wall time to a run of 0.28 s that ignored SIGINT (a script's
+#    background job): no check ever interrupted a run.
+#    A SIGINT once the first staged file appears (the writing has begun)
+#    stops the run with the previous set intact and the new set's staged
+#    temporaries left, named NAME.tmp.HOST.PID.XXXXXX of the stopped process
+#    (the next write of NAME removes them, as after kill -9), or, when it came
+#    while the set was placed (SIGINT held there), after the complete new set.
 #  - valgrind memcheck (when installed) finds no errors and no definite or
 #    indirect leaks in a short chain run with --out and a short falcon run, and
 #    in the 2D layer: layer-make --n 30 --width-rm 12 (stopped at 0.5 s of
@@ -10,26 +19,53 @@
 #    sample of the same size made without valgrind, the same two for a sample of
 #    12 clumps (type B), and, when the build writes
 #    HDF5 samples, the same impact read from an .h5 sample (~10 s in all).
-set -u
-GW=$1
-tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
-fails=0; passes=0
-ok() { echo "PASS: $1"; passes=$((passes+1)); }
-ko() { echo "FAIL: $1"; fails=$((fails+1)); }
+# shellcheck source=tests/test_lib.sh
+. "$(dirname "${BASH_SOURCE[0]}")/test_lib.sh"
+test_setup "$@"
 
 "$GW" falcon --n 1:6 --heights none --quiet --out "$tmp/f" >/dev/null || ko "first falcon run"
 cp "$tmp/f/report.md" "$tmp/report.before"
-for delay in 0.2 0.5 1.0 1.5; do
-    "$GW" falcon --n 1:40 --quiet --out "$tmp/f" >/dev/null 2>&1 & pid=$!
-    sleep $delay; kill -INT $pid 2>/dev/null; wait $pid 2>/dev/null
+full=$(cpu_of "$GW" falcon --n 1:40 --solver cvode --heights none --quiet --out "$tmp/fref")
+for pc in 5 25 50 75; do
+    cpu=$(awk -v f="$full" -v p=$pc 'BEGIN { printf "%.2f", f * p / 100 }')
+    env --default-signal=INT "$GW" falcon --n 1:40 --solver cvode --heights none --quiet --out "$tmp/f" >/dev/null 2>&1 & pid=$!
+    wait_cpu $pid $cpu; kill -INT $pid 2>/dev/null; wait $pid 2>/dev/null; rc=$?
+    if [ $rc -ne 130 ]; then ko "SIGINT at $cpu s of CPU: exit $rc, not stopped by it (130)"; continue; fi
     leftovers=$(ls "$tmp/f" | grep -c '\.tmp' || true)
-    if [ "$leftovers" -ne 0 ]; then ko "SIGINT after $delay s: $leftovers temporary file(s) left"; continue; fi
+    if [ "$leftovers" -ne 0 ]; then ko "SIGINT at $cpu s of CPU: $leftovers temporary file(s) left"; continue; fi
     if cmp -s "$tmp/f/report.md" "$tmp/report.before" || grep -q "E_rel/E_K increases" "$tmp/f/report.md"; then
-        ok "SIGINT after $delay s: report.md is the previous one or a complete new one, no temporaries"
+        ok "SIGINT at $cpu s of CPU stopped the run: report.md is the previous one or a complete new one, no temporaries"
     else
-        ko "SIGINT after $delay s: report.md is truncated"
+        ko "SIGINT at $cpu s of CPU: report.md is truncated"
     fi
 done
+
+# the staging: SIGINT once a temporary is seen (the writing, from the first
+# temporary to the end, took 28-170 ms at a load of 8-11), a run that ended
+# first tried again (five attempts)
+for attempt in 1 2 3 4 5; do
+    env --default-signal=INT "$GW" falcon --n 1:40 --solver cvode --heights none --quiet --out "$tmp/f" >/dev/null 2>&1 & pid=$!
+    wait_file $pid "$tmp/f/*.tmp.*"
+    kill -INT $pid 2>/dev/null; wait $pid 2>/dev/null; rc=$?
+    [ $rc -eq 130 ] && break
+done
+left=$(ls "$tmp/f" | grep '\.tmp\.' | grep -v "\.tmp\.[A-Za-z0-9-]*\.$pid\.[A-Za-z0-9]\{6\}$")
+if [ $rc -ne 130 ]; then
+    ko "SIGINT while the files are written: exit $rc in 5 attempts, not stopped by it (130)"
+elif [ -n "$left" ]; then
+    ko "SIGINT while the files are written: temporaries not of the stopped process: $left"
+elif ls "$tmp/f" | grep -q '\.tmp\.' && cmp -s "$tmp/f/report.md" "$tmp/report.before" &&
+     grep -q 'Solver: rk4' "$tmp/f/report.md"; then
+    ok "SIGINT while the files are written (attempt $attempt): the previous set intact, the staged temporaries of the stopped process"
+elif ! ls "$tmp/f" | grep -q '\.tmp\.' && grep -q 'Solver: cvode' "$tmp/f/report.md"; then
+    ok "SIGINT while the files are placed (attempt $attempt): the complete new set, no temporaries"
+else
+    ko "SIGINT while the files are written: a mixed set: $(ls "$tmp/f" | tr '\n' ' ')"
+fi
+"$GW" falcon --n 1:40 --solver cvode --heights none --quiet --out "$tmp/f" >/dev/null 2>&1 &&
+    ! ls "$tmp/f" | grep -q '\.tmp\.' && grep -q "Solver: cvode" "$tmp/f/report.md" &&
+    ok "the same run again places its set and removes the stopped run's temporaries" ||
+    ko "the next run: $(ls "$tmp/f" | tr '\n' ' ')"
 
 if command -v valgrind >/dev/null; then
     for args in "chain --n 5 --out $tmp/v1" "falcon --n 1:3 --heights none --quiet --jobs 1 --out $tmp/v2" "chain --n 4 --damping hc --restitution 0.8 --json"; do
@@ -69,5 +105,4 @@ if command -v valgrind >/dev/null; then
 else
     echo "SKIP: valgrind not installed"
 fi
-echo "$passes passed, $fails failed"
-[ $fails -eq 0 ]
+test_summary

@@ -718,23 +718,12 @@ if runs "a layer sweep of 2 cases" sweep "$tmp/w25.ini" --out "$tmp/w25" --quiet
     [ -e "$tmp/w25/results.csv" ] && ko "  the refused resume wrote a table"
 fi
 
-# wait_journaled JOURNAL TRIES PAUSE: poll until a sweep's journal holds a row
-wait_journaled() {
-    local k n
-    for k in $(seq 1 "$2"); do
-        n=$(grep -vc '^#' "$1" 2>/dev/null)
-        [ "${n:-0}" -ge 1 ] && return 0
-        sleep "$3"
-    done
-    return 1
-}
-
 # --- 26: a sample edited while the sweep runs --------------------------------------
 cp "$S300" "$tmp/s26.txt"
 printf '[sweep]\nmodel = layer\n[grid]\npoint = 0:11\n[params]\nsample = %s\npoints = 12\nspacing = 0.01\nt-max = 0.02\n' "$tmp/s26.txt" >"$tmp/w26.ini"
 timeout -s KILL 300 "$GW" sweep "$tmp/w26.ini" --out "$tmp/w26" --quiet --jobs 1 >"$tmp/stdout" 2>"$tmp/stderr" </dev/null &
 pid26=$!
-wait_journaled "$tmp/w26/journal.csv" 600 0.1
+wait_rows "$tmp/w26/journal.csv" 1 60
 echo "# edited while the sweep runs" >>"$tmp/s26.txt"
 wait $pid26; rc=$?
 n26=$(grep -vc '^#' "$tmp/w26/journal.csv" 2>/dev/null)
@@ -897,7 +886,7 @@ cp "$S300" "$tmp/a33.txt"; cp "$S300" "$tmp/b33.txt"; echo "# b" >>"$tmp/b33.txt
 printf '[sweep]\nmodel = layer\n[grid]\nsample = %s, %s\nvi = 10, 12, 14, 16, 18, 20\n[params]\nt-max = 0.1\n' "$tmp/a33.txt" "$tmp/b33.txt" >"$tmp/w33.ini"
 timeout -s KILL 300 "$GW" sweep "$tmp/w33.ini" --out "$tmp/w33" --quiet --jobs 1 >"$tmp/stdout" 2>"$tmp/stderr" </dev/null &
 pid33=$!
-wait_journaled "$tmp/w33/journal.csv" 1200 0.05
+wait_rows "$tmp/w33/journal.csv" 1 60
 echo "# edited while the sweep runs" >>"$tmp/b33.txt"
 wait $pid33; rc=$?
 n33=$(grep -vc '^#' "$tmp/w33/journal.csv" 2>/dev/null)
@@ -973,7 +962,7 @@ pid35=$!
 for _ in $(seq 1 6000); do [ -e "$tmp/w35/journal.csv" ] && break; sleep 0.02; done
 echo "# edited while case 0 runs" >>"$tmp/b35.txt"
 hc35=$(fnv "$tmp/b35.txt")
-wait_journaled "$tmp/w35/journal.csv" 30000 0.02
+wait_rows "$tmp/w35/journal.csv" 1 600
 sleep 0.2
 cp "$tmp/b35.orig" "$tmp/b35.txt"
 wait $pid35; rc=$?

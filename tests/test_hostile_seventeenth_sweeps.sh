@@ -28,12 +28,9 @@
 #  4 kept: each row of the table equals `granwave chain --json` of its case.
 #  5 a range as an item of a list (`n = 5:6,` then `7, 8`) was refused at the
 #    case check as "'5:6' is not an integer"; now at the config line, naming the cause.
-set -u
-GW=$(cd "$(dirname "$1")" && pwd)/$(basename "$1") # the test runs in its scratch directory
-tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
-fails=0; passes=0
-ok() { echo "PASS: $1"; passes=$((passes+1)); }
-ko() { echo "FAIL: $1"; fails=$((fails+1)); }
+# shellcheck source=tests/test_lib.sh
+. "$(dirname "${BASH_SOURCE[0]}")/test_lib.sh"
+test_setup "$@"
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 have_mpi=0
 command -v mpirun >/dev/null && ldd "$GW" 2>/dev/null | grep -q libmpi && have_mpi=1
@@ -194,5 +191,4 @@ else
     ko "5: exit $rc: $(cat "$tmp/rng/err")"
 fi
 
-echo "$passes passed, $fails failed"
-[ $fails -eq 0 ]
+test_summary

@@ -53,13 +53,7 @@ hb=$(head -1 "$tmp/refb/results.csv" | sed 's/.*config \([0-9a-f]*\),.*/\1/')
 [ "$ha" != "$hb" ] || ko "the two configs have one hash"
 
 # wait until DIR's journal holds a row (the first sweep is under way)
-wait_row() {
-    for _ in $(seq 1 300); do
-        [ "$(grep -vc '^#' "$1/journal.csv" 2>/dev/null)" -ge 1 ] 2>/dev/null && return 0
-        sleep 0.02
-    done
-    return 1
-}
+wait_row() { wait_rows "$1/journal.csv" 1 6; }
 
 # --- 1: a second sweep of the same config into a running sweep's DIR
 "$GW" sweep "$tmp/a.ini" --out "$tmp/d1" --quiet --jobs 1 2>"$tmp/e1a" & pa=$!
@@ -120,10 +114,10 @@ wait $pa; rc=$?
     ko "3: journal replaced mid-sweep: exit $rc, table $( [ -e "$tmp/d3/results.csv" ] && head -1 "$tmp/d3/results.csv"): $(cat "$tmp/e3")"
 
 # --- 4 (kept): kill -9 leaves no lock; the resumed table is the uninterrupted one
-rm -rf "$tmp/d4"
-"$GW" sweep "$tmp/a.ini" --out "$tmp/d4" --quiet --jobs 1 >/dev/null 2>&1 & pa=$!
-wait_row "$tmp/d4"
-kill -9 $pa; wait $pa 2>/dev/null
+# (it must land before the sweep's last case: 1..7 rows, no table)
+stop_mid_sweep KILL "$tmp/d4" 8 "$GW" sweep "$tmp/a.ini" --out "$tmp/d4" --quiet --jobs 1 &&
+    ok "4: kill -9 landed mid-sweep: $rows of 8 cases journaled, no table (attempt $attempt)" ||
+    ko "4: kill -9 did not land mid-sweep in 3 attempts ($rows rows, table $(ls "$tmp/d4" 2>/dev/null | tr '\n' ' '))"
 "$GW" sweep "$tmp/a.ini" --out "$tmp/d4" --quiet --jobs 2 2>"$tmp/e4"; rc=$?
 [ $rc -eq 0 ] && cmp -s "$tmp/d4/results.csv" "$tmp/refa/results.csv" &&
     ok "4: resumed after kill -9 (no stale lock), table byte-identical" || ko "4: resume after kill -9: exit $rc: $(cat "$tmp/e4")"

@@ -41,6 +41,7 @@
 #include "gw_layer.h"
 #include "gw_test_overlap.h"
 #include "gw_test.h"
+#include "gw_test_files.h"
 #if GW_HAVE_HDF5
 #include <hdf5.h>
 #endif
@@ -54,24 +55,6 @@ static gw_layer_make_params small(long seed)
     return m;
 }
 
-static int write_file(const char *path, const char *text)
-{
-    FILE *fp = fopen(path, "w");
-    if (!fp)
-        return -1;
-    fputs(text, fp);
-    return fclose(fp);
-}
-
-static int write_bytes(const char *path, const char *data, size_t n)
-{
-    FILE *fp = fopen(path, "wb");
-    if (!fp)
-        return -1;
-    fwrite(data, 1, n, fp);
-    return fclose(fp);
-}
-
 /* Bitwise equality of two samples (header and coordinates). */
 static int same_sample(const gw_layer_sample *a, const gw_layer_sample *b)
 {
@@ -82,14 +65,6 @@ static int same_sample(const gw_layer_sample *a, const gw_layer_sample *b)
         return 0;
     size_t k = (size_t)a->n * sizeof(double);
     return !memcmp(a->x, b->x, k) && !memcmp(a->y, b->y, k) && !memcmp(a->r, b->r, k);
-}
-
-static int file_exists(const char *path)
-{
-    FILE *fp = fopen(path, "rb");
-    if (fp)
-        fclose(fp);
-    return fp != NULL;
 }
 
 /* rc == GW_EFORMAT, the message names the file and contains want (may be NULL). */
@@ -138,42 +113,42 @@ static void bad_text_inputs(void)
     };
     for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
         snprintf(buf, sizeof buf, "%s%s", H, cases[i].body);
-        write_file(path, buf);
+        gw_test_write_text(path, buf);
         refused(path, cases[i].want, cases[i].what);
     }
-    write_file(path, "");
+    gw_test_write_text(path, "");
     refused(path, "empty", "empty file");
-    write_file(path, "\n# only a comment\n\n");
+    gw_test_write_text(path, "\n# only a comment\n\n");
     refused(path, "empty", "only comments and blank lines");
-    write_bytes(path, "\x7f" "ELF\x02\x01\x01\0\0\0\xff\xfe\n\x01", 15);
+    gw_test_write_bytes(path, "\x7f" "ELF\x02\x01\x01\0\0\0\xff\xfe\n\x01", 15);
     refused(path, "line 1", "binary junk");
-    write_file(path, "granwave-layer-sample 3\nwidth 5\nrm 0.3\nn 1\n1 1 0.3\n");
+    gw_test_write_text(path, "granwave-layer-sample 3\nwidth 5\nrm 0.3\nn 1\n1 1 0.3\n");
     refused(path, "version", "format version 3");
     /* version 2 (clump samples) needs the body column */
-    write_file(path, "granwave-layer-sample 2\nwidth 5\nrm 0.3\nn 1\n1 1 0.3\n");
+    gw_test_write_text(path, "granwave-layer-sample 2\nwidth 5\nrm 0.3\nn 1\n1 1 0.3\n");
     refused(path, "body", "format version 2 without the body column");
-    write_file(path, "granwave-layer-sample 2\nwidth 5\nrm 0.3\nn 1\n1 1 0.3 0.5\n");
+    gw_test_write_text(path, "granwave-layer-sample 2\nwidth 5\nrm 0.3\nn 1\n1 1 0.3 0.5\n");
     refused(path, "body", "format version 2 with a body id that is not an integer");
-    write_file(path, "granwave-layer-sample 12\nwidth 5\nrm 0.3\nn 1\n1 1 0.3\n");
+    gw_test_write_text(path, "granwave-layer-sample 12\nwidth 5\nrm 0.3\nn 1\n1 1 0.3\n");
     refused(path, "version", "format version 12 (was read as 1)");
     const char nul[] = "granwave-layer-sample 1\nwidth 5\nrm 0.3\nn 1\n1 1 0.3\0 9 9\n";
-    write_bytes(path, nul, sizeof nul - 1);
+    gw_test_write_bytes(path, nul, sizeof nul - 1);
     refused(path, "line 5", "NUL byte hiding trailing data");
     int w = snprintf(buf, sizeof buf, "%sn 1\n1 1 0.3", H);
     memset(buf + w, ' ', 1500);
     snprintf(buf + w + 1500, sizeof buf - (size_t)w - 1500, "junk\n");
-    write_file(path, buf);
+    gw_test_write_text(path, buf);
     refused(path, "line 5", "1500-character line (trailing junk used to be cut off)");
     w = snprintf(buf, sizeof buf, "granwave-layer-sample 1\nwidth 5");
     memset(buf + w, ' ', 600);
     snprintf(buf + w + 600, sizeof buf - (size_t)w - 600, "9\nrm 0.3\nn 1\n1 1 0.3\n");
-    write_file(path, buf);
+    gw_test_write_text(path, buf);
     refused(path, "line 2", "header value with garbage after 600 blanks");
 
     /* CRLF and long comments are fine and give the same values as LF */
     gw_layer_sample a, b;
     gw_err err = {{0}};
-    write_file(path, "granwave-layer-sample 1\r\n# c\r\nwidth 5\r\nrm 0.3\r\nseed 9000000000000000001\r\n"
+    gw_test_write_text(path, "granwave-layer-sample 1\r\n# c\r\nwidth 5\r\nrm 0.3\r\nseed 9000000000000000001\r\n"
                      "mass_law sphere\r\nn 2\r\n1 1 0.3\r\n2.5 0.4 0.35\r\n");
     int rc = gw_layer_sample_read(path, &a, &err);
     char big[3000];
@@ -182,7 +157,7 @@ static void bad_text_inputs(void)
     big[sizeof big - 1] = '\0';
     snprintf(buf, sizeof buf, "granwave-layer-sample 1\n%s\nwidth 5\nrm 0.3\nseed 9000000000000000001\n"
              "mass_law sphere\nn 2\n1 1 0.3\n2.5 0.4 0.35\n", big);
-    write_file(path, buf);
+    gw_test_write_text(path, buf);
     int rc2 = rc == GW_OK ? gw_layer_sample_read(path, &b, &err) : -1;
     gw_test_true(rc == GW_OK && rc2 == GW_OK && same_sample(&a, &b) && a.seed == 9000000000000000001L &&
                  a.mass_law == GW_LAYER_MASS_SPHERE && a.n == 2 && a.r[1] == 0.35,
@@ -194,7 +169,7 @@ static void bad_text_inputs(void)
         gw_test_true(rc == GW_OK && b.seed == 9000000000000000001L, "seed 9000000000000000001 (> 2^53) round-trips");
         a.x[0] = NAN;
         remove(path);
-        gw_test_true(gw_layer_sample_write(&a, path, NULL, &err) == GW_EINVAL && !file_exists(path),
+        gw_test_true(gw_layer_sample_write(&a, path, NULL, &err) == GW_EINVAL && !gw_test_file_exists(path),
                      "writer refuses a NaN coordinate and writes nothing");
     }
     gw_layer_sample_free(&a);
@@ -233,22 +208,6 @@ static int h5_edit(const char *path, int what)
     return H5Fclose(f) < 0 || rc ? -1 : 0;
 }
 
-static long copy_prefix(const char *from, const char *to, long n, long flip_at)
-{
-    FILE *in = fopen(from, "rb"), *out = fopen(to, "wb");
-    long k = 0;
-    int c;
-    while (in && out && (n < 0 || k < n) && (c = getc(in)) != EOF) {
-        putc(k == flip_at ? c ^ 0x01 : c, out);
-        k++;
-    }
-    if (in)
-        fclose(in);
-    if (out)
-        fclose(out);
-    return k;
-}
-
 static void hdf5_samples(const gw_layer_sample *a)
 {
     const char *t1 = "test_layer_sample_h5a.txt", *h = "test_layer_sample_h5.h5",
@@ -285,11 +244,11 @@ static void hdf5_samples(const gw_layer_sample *a)
     if (hf)
         fclose(hf);
     gw_layer_sample_free(&s3);
-    long size = copy_prefix(h, hx, -1, -1);
+    long size = gw_test_copy_prefix(h, hx, -1, -1);
     rc = gw_layer_sample_read(hx, &s3, &err);
     gw_test_true(rc == GW_OK && same_sample(&s2, &s3), "an HDF5 sample named .txt is read as HDF5 (by content)");
     gw_layer_sample_free(&s3);
-    copy_prefix(t1, th, -1, -1);
+    gw_test_copy_prefix(t1, th, -1, -1);
     rc = gw_layer_sample_read(th, &s3, &err);
     gw_test_true(rc == GW_OK && same_sample(&s1, &s3), "a text sample named .h5 is read as text (by content)");
     gw_layer_sample_free(&s3);
@@ -297,18 +256,18 @@ static void hdf5_samples(const gw_layer_sample *a)
     /* truncated and corrupted copies */
     const long cuts[] = {8, 9, 100, size / 2, size - 1};
     for (size_t k = 0; k < sizeof cuts / sizeof cuts[0]; k++) {
-        copy_prefix(h, bad, cuts[k], -1);
+        gw_test_copy_prefix(h, bad, cuts[k], -1);
         snprintf(what, sizeof what, "HDF5 sample truncated to %ld of %ld bytes", cuts[k], size);
         refused(bad, "HDF5", what);
     }
-    copy_prefix(h, bad, -1, 20); /* in the superblock, under its checksum */
+    gw_test_copy_prefix(h, bad, -1, 20); /* in the superblock, under its checksum */
     refused(bad, "checksum", "HDF5 superblock with one bit flipped");
-    copy_prefix(h, bad, -1, 60); /* in the root object header */
+    gw_test_copy_prefix(h, bad, -1, 60); /* in the root object header */
     refused(bad, "HDF5", "HDF5 root object header with one bit flipped");
-    copy_prefix(h, bad, -1, -1);
+    gw_test_copy_prefix(h, bad, -1, -1);
     gw_test_true(h5_edit(bad, 0) == 0, "made an HDF5 sample with y one value short");
     refused(bad, "dataset 'y' has 1 values, n = ", "HDF5 datasets of different lengths");
-    copy_prefix(h, bad, -1, -1);
+    gw_test_copy_prefix(h, bad, -1, -1);
     gw_test_true(h5_edit(bad, 1) == 0, "made an HDF5 sample with x[0] = NaN");
     refused(bad, "particle at index 0", "HDF5 sample with a NaN coordinate");
     hid_t f = H5Fcreate(bad, H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT); /* superblock 0 */
@@ -330,7 +289,7 @@ static void hdf5_samples(const gw_layer_sample *a)
     gw_err err = {{0}};
     const char *h = "test_layer_sample_nohdf5.h5";
     gw_test_true(gw_layer_sample_write(a, h, NULL, &err) == GW_EUNSUPPORTED && strstr(err.msg, "HDF5") &&
-                 !file_exists(h), "no HDF5 in this build: writing .h5 is GW_EUNSUPPORTED, nothing written");
+                 !gw_test_file_exists(h), "no HDF5 in this build: writing .h5 is GW_EUNSUPPORTED, nothing written");
 }
 #endif
 
@@ -352,7 +311,7 @@ static void bad_files(void)
     for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
         gw_layer_sample s;
         gw_err err = {{0}};
-        write_file(path, cases[i].text);
+        gw_test_write_text(path, cases[i].text);
         int rc = gw_layer_sample_read(path, &s, &err);
         char what[700];
         snprintf(what, sizeof what, "sample refused: %s (%s)", cases[i].what, err.msg);

@@ -18,13 +18,10 @@
 #  - a real tiny sweep (model layer, 2 R_b x 2 H x 3 points on a 40-disc
 #    sample) runs through layer-stats: the group shares and means of e over
 #    the bouncing points equal those recomputed in Python from results.csv.
-set -u
-GW=$1
+# shellcheck source=tests/test_lib.sh
+. "$(dirname "${BASH_SOURCE[0]}")/test_lib.sh"
+test_setup "$@"
 PY=/usr/bin/python3
-tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
-fails=0; passes=0
-ok() { echo "PASS: $1"; passes=$((passes+1)); }
-ko() { echo "FAIL: $1"; fails=$((fails+1)); }
 
 COLS="x_impact,bounced,e_n,e,alpha_r,v_ni,v_nr,v_r,penetration,penetration_rm,dissipated_first_contact,block_loss_first_contact,energy_error,wave_speed,t_end,steps"
 ROW="0,1,0.5,0.6,10,20,10,12,0.1,0.3,0.001,0.6,1e-6,nan,0.01,100"
@@ -192,5 +189,4 @@ print("\n".join(bad) or "; ".join("R_b %g H %g: share %.2f e %s" % (g["keys"]["r
                                   g["bounce_share"], g["e"]["mean"]) for g in j["groups"]))
 sys.exit(1 if bad else 0)
 PY
-echo "$passes passed, $fails failed"
-[ $fails -eq 0 ]
+test_summary

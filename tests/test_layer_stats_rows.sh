@@ -25,15 +25,11 @@
 #    header column and a units line after the header are refused as before.
 # 12 of the 20 checks fail on the code before (the eight that pass: the six
 # tables read without a warning, the duplicated column, the units line).
-set -u
-GW=$1
-SRC=$2
+# shellcheck source=tests/test_lib.sh
+. "$(dirname "${BASH_SOURCE[0]}")/test_lib.sh"
+test_setup "$@"
 PY=/usr/bin/python3
-tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 cd "$tmp" || exit 1
-fails=0; passes=0
-ok() { echo "PASS: $1"; passes=$((passes+1)); }
-ko() { echo "FAIL: $1"; fails=$((fails+1)); }
 
 "$GW" layer-make --n 40 --width-rm 14 --seed 2 --out S.txt >/dev/null 2>&1 || { echo "FAIL: layer-make"; exit 1; }
 printf '[sweep]\nmodel = layer\n[grid]\nrb-rm = 1, 2\nheight-rm = 3, 6\nalpha = 0, 40\npoint = 0:2\n[params]\nsample = %s/S.txt\npoints = 3\nvi = 10\nt-max = 0.3\n' "$tmp" >s.ini
@@ -200,5 +196,4 @@ read_ok "the sweep's table as written" "$T"
 ln=$(edit j.csv "$c40" e_n="$($PY -c "e = float('$(col "$c40" e)'); import math; print(repr(1.01 * e / math.cos(math.radians(40))))")")
 refused "e_n 1 % above e / cos(40 deg)" j.csv "j\.csv:$ln: column e_n: .* exceeds e / cos\(alpha_i\) .*alpha_i 40 deg"
 
-echo "$passes passed, $fails failed"
-[ $fails -eq 0 ]
+test_summary

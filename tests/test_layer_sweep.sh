@@ -20,13 +20,10 @@
 #    file, and nothing runs (no output directory);
 #  - rows equal the JSON of `granwave layer-impact` with the same options (x
 #    set to the row's x_impact): the same code path, to printed precision.
-set -u
-GW=$1
+# shellcheck source=tests/test_lib.sh
+. "$(dirname "${BASH_SOURCE[0]}")/test_lib.sh"
+test_setup "$@"
 PY=/usr/bin/python3
-tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
-fails=0; passes=0
-ok() { echo "PASS: $1"; passes=$((passes+1)); }
-ko() { echo "FAIL: $1"; fails=$((fails+1)); }
 
 "$GW" layer-make --n 40 --width-rm 14 --seed 2 --out "$tmp/S.txt" >/dev/null || { echo "FAIL: layer-make"; exit 1; }
 
@@ -124,27 +121,13 @@ PY
 # attempts): a kill that never lands mid-sweep still fails.
 sed 's/^full = true$/full = true\nexact = true/' "$tmp/s.ini" >"$tmp/k.ini"
 "$GW" sweep "$tmp/k.ini" --out "$tmp/kref" --quiet --jobs 2 || ko "the exact-mode sweep (the kills' reference) failed"
-# kill_mid_sweep DIR: the sweep into DIR killed once a case is journaled; sets n1
-# (rows journaled) and attempt
-kill_mid_sweep() {
-    for attempt in 1 2 3; do
-        rm -rf "$1"
-        "$GW" sweep "$tmp/k.ini" --out "$1" --quiet --jobs 1 & pid=$!
-        for _ in $(seq 1 300); do
-            n=$(grep -vc '^#' "$1/journal.csv" 2>/dev/null); n=${n:-0}
-            [ "$n" -ge 1 ] && break
-            sleep 0.02
-        done
-        kill -9 $pid 2>/dev/null; wait $pid 2>/dev/null
-        n1=$(grep -vc '^#' "$1/journal.csv" 2>/dev/null)
-        [ ! -e "$1/results.csv" ] && [ "${n1:-0}" -ge 1 ] && [ "${n1:-0}" -lt 6 ] && break
-    done
-}
-kill_mid_sweep "$tmp/k"
-if [ ! -e "$tmp/k/results.csv" ] && [ "${n1:-0}" -ge 1 ] && [ "${n1:-0}" -lt 6 ]; then
-    ok "kill -9 mid-sweep: $n1 of 6 cases journaled, no table (attempt $attempt)"
+# kill_mid_sweep DIR: the sweep into DIR killed once a case is journaled (sets
+# rows and attempt; fails when no attempt landed before its last case)
+kill_mid_sweep() { stop_mid_sweep KILL "$1" 6 "$GW" sweep "$tmp/k.ini" --out "$1" --quiet --jobs 1; }
+if kill_mid_sweep "$tmp/k"; then
+    ok "kill -9 mid-sweep: $rows of 6 cases journaled, no table (attempt $attempt)"
 else
-    ko "kill -9 did not land mid-sweep in 3 attempts (journaled ${n1:-0}, table $(ls "$tmp/k" 2>/dev/null))"
+    ko "kill -9 did not land mid-sweep in 3 attempts (journaled $rows, table $(ls "$tmp/k" 2>/dev/null))"
 fi
 "$GW" sweep "$tmp/k.ini" --out "$tmp/k" --quiet --jobs 2 || ko "resume after kill -9 failed"
 cmp -s "$tmp/kref/results.csv" "$tmp/k/results.csv" && ok "resumed after kill -9: table byte-identical" || ko "resumed table differs"
@@ -162,7 +145,7 @@ else
     # a sweep killed after its first journaled case (threads), resumed under
     # MPI: the rows' hashes (case config, sample read) are checked by rank 0
     # for the rows the other rank sends, and the table is the same
-    kill_mid_sweep "$tmp/km"
+    kill_mid_sweep "$tmp/km"; n1=$rows
     OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 mpirun --allow-run-as-root --oversubscribe -n 2 \
         "$GW" sweep "$tmp/k.ini" --out "$tmp/km" --quiet >"$tmp/mpi.log" 2>&1
     if [ "${n1:-0}" -ge 1 ] && [ "${n1:-0}" -lt 6 ] && cmp -s "$tmp/kref/results.csv" "$tmp/km/results.csv"; then
@@ -252,5 +235,4 @@ print([r["energy_error"] for r in rows])
 sys.exit(0 if len(rows) == 2 and all(float(r["energy_error"]) < 1e-4 for r in rows) else 1)
 PY
 
-echo "$passes passed, $fails failed"
-[ $fails -eq 0 ]
+test_summary

@@ -29,28 +29,12 @@
 #include "gw_param.h"
 #include "gw_sweep.h"
 #include "gw_test.h"
+#include "gw_test_files.h"
 
 #ifndef GW_SOURCE_DIR
 #define GW_SOURCE_DIR "."
 #endif
 #define MEMO_FILES_FOR_TEST 6 /* more than the memo's 4 slots */
-
-static char *slurp(const char *path, long *len)
-{
-    FILE *f = fopen(path, "rb");
-    if (!f)
-        return NULL;
-    fseek(f, 0, SEEK_END);
-    *len = ftell(f);
-    rewind(f);
-    char *b = malloc((size_t)*len + 1);
-    if (b && fread(b, 1, (size_t)*len, f) != (size_t)*len)
-        free(b), b = NULL;
-    fclose(f);
-    if (b)
-        b[*len] = '\0';
-    return b;
-}
 
 /* Write bytes over the file in place (same inode), keeping its mtime. */
 static int overwrite(const char *path, const char *bytes, long len)
@@ -65,15 +49,6 @@ static int overwrite(const char *path, const char *bytes, long len)
     ok &= fclose(f) == 0;
     const struct timespec t[2] = {st.st_atim, st.st_mtim};
     return ok && utimensat(AT_FDCWD, path, t, 0) == 0 ? 0 : -1;
-}
-
-static int write_file(const char *path, const char *bytes, long len)
-{
-    FILE *f = fopen(path, "wb");
-    if (!f)
-        return -1;
-    int ok = fwrite(bytes, 1, (size_t)len, f) == (size_t)len;
-    return fclose(f) == 0 && ok ? 0 : -1;
 }
 
 /* The model's check of one case (sample, x, rb-rm, height-rm), through the
@@ -109,8 +84,8 @@ int main(void)
     snprintf(a, sizeof a, "%s/a.txt", dir), snprintf(b, sizeof b, "%s/b.txt", dir);
     snprintf(fifo, sizeof fifo, "%s/fifo.txt", dir);
     long len;
-    char *good = slurp(GW_SOURCE_DIR "/data/measured/layer_diagram_8000/sample.txt", &len);
-    if (!good || write_file(a, good, len) != 0)
+    char *good = gw_test_slurp(GW_SOURCE_DIR "/data/measured/layer_diagram_8000/sample.txt", &len);
+    if (!good || gw_test_write_bytes(a, good, (size_t)len) != 0)
         return 1;
     gw_err err;
     void *memo = NULL; /* one pass of checks over every case below */
@@ -149,7 +124,7 @@ int main(void)
         return 1;
     memcpy(bad, good, (size_t)len + 1);
     bad[p - good + 7] = '9'; /* width 16.25 -> 96.25: the packing no longer fills the box */
-    write_file(b, bad, len);
+    gw_test_write_bytes(b, bad, (size_t)len);
     int alt = 0;
     for (int k = 0; k < 6; k++) {
         const int ra = model_check(&memo, a, "0", "1", "0", &err);
@@ -160,7 +135,7 @@ int main(void)
     int each = 0;
     for (int k = 0; k < MEMO_FILES_FOR_TEST; k++) {
         snprintf(other[k], sizeof other[k], "%s/c%d.txt", dir, k);
-        write_file(other[k], k % 2 ? bad : good, len);
+        gw_test_write_bytes(other[k], k % 2 ? bad : good, (size_t)len);
     }
     for (int round = 0; round < 2; round++)
         for (int k = 0; k < MEMO_FILES_FOR_TEST; k++)

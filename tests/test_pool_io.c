@@ -26,6 +26,7 @@
 #include "gw_cli.h"
 #include "gw_pool.h"
 #include "gw_test.h"
+#include "gw_test_files.h"
 
 /* ---------------------------------------------------------------- pool --- */
 
@@ -175,18 +176,6 @@ static int count_named(const char *prefix)
     return n;
 }
 
-static int file_is(const char *path, const char *text)
-{
-    char buf[256];
-    FILE *fp = fopen(path, "r");
-    if (!fp)
-        return 0;
-    size_t n = fread(buf, 1, sizeof buf - 1, fp);
-    fclose(fp);
-    buf[n] = '\0';
-    return strcmp(buf, text) == 0;
-}
-
 static int sigint_held(void)
 {
     sigset_t s;
@@ -202,15 +191,16 @@ static void test_afile(void)
     snprintf(path, sizeof path, "%s/out.csv", dir);
 
     /* a commit replaces the old file; until then readers see the old one */
-    gw_test_true(gw_write_text(path, "old\n", &err) == GW_OK && file_is(path, "old\n"), "first version written");
+    gw_test_true(gw_write_text(path, "old\n", &err) == GW_OK &&
+                     gw_test_file_is(path, "old\n"), "first version written");
     gw_test_true(gw_afile_open(&f, path, &err) == GW_OK, "open over an existing file");
     gw_test_true(sigint_held(), "SIGINT held while the file is open");
     fputs("new\n", f.fp);
     fflush(f.fp);
-    gw_test_true(file_is(path, "old\n") && count_named("out.csv.tmp.") == 1,
+    gw_test_true(gw_test_file_is(path, "old\n") && count_named("out.csv.tmp.") == 1,
                  "before commit: the old file intact, the new one under a temporary name");
     gw_test_true(gw_afile_commit(&f, &err) == GW_OK, "commit");
-    gw_test_true(file_is(path, "new\n") && count_named("out.csv.tmp.") == 0,
+    gw_test_true(gw_test_file_is(path, "new\n") && count_named("out.csv.tmp.") == 0,
                  "after commit: the new content, no temporary left");
     gw_test_true(!sigint_held(), "SIGINT released after commit");
 
@@ -228,7 +218,7 @@ static void test_afile(void)
     setrlimit(RLIMIT_FSIZE, &old_lim);
     signal(SIGXFSZ, SIG_DFL);
     gw_test_true(rc == GW_EIO && strstr(err.msg, "write failed") != NULL, "a failed write: GW_EIO, 'write failed'");
-    gw_test_true(file_is(path, "new\n") && count_named("out.csv.tmp.") == 0,
+    gw_test_true(gw_test_file_is(path, "new\n") && count_named("out.csv.tmp.") == 0,
                  "a failed write: the previous file untouched, no temporary left");
     gw_test_true(!sigint_held(), "SIGINT released after a failed commit");
 
@@ -274,20 +264,21 @@ static void test_afile(void)
     FILE *fp = fopen(f.tmp, "w"); /* as H5Fcreate(f.tmp, H5F_ACC_TRUNC, ...) does */
     fputs("new h5\n", fp);
     fclose(fp);
-    gw_test_true(file_is(h5, "old h5\n"), "named: the old file intact before commit");
-    gw_test_true(gw_afile_commit(&f, &err) == GW_OK && file_is(h5, "new h5\n") && count_named("run.h5.tmp.") == 0,
+    gw_test_true(gw_test_file_is(h5, "old h5\n"), "named: the old file intact before commit");
+    gw_test_true(gw_afile_commit(&f, &err) == GW_OK && gw_test_file_is(h5, "new h5\n") &&
+                     count_named("run.h5.tmp.") == 0,
                  "named: commit replaces the file, no temporary left");
     gw_test_true(gw_afile_open_named(&f, h5, &err) == GW_OK, "named: open again");
     fp = fopen(f.tmp, "w");
     fputs("half", fp);
     fclose(fp);
     gw_afile_abort(&f); /* the writer failed */
-    gw_test_true(file_is(h5, "new h5\n") && count_named("run.h5.tmp.") == 0 && !sigint_held(),
+    gw_test_true(gw_test_file_is(h5, "new h5\n") && count_named("run.h5.tmp.") == 0 && !sigint_held(),
                  "named: abort removes the temporary, the old file stays");
     gw_test_true(gw_afile_open_named(&f, h5, &err) == GW_OK, "named: open, temporary lost");
     unlink(f.tmp);
     rc = gw_afile_commit(&f, &err);
-    gw_test_true(rc == GW_EIO && file_is(h5, "new h5\n") && !sigint_held(),
+    gw_test_true(rc == GW_EIO && gw_test_file_is(h5, "new h5\n") && !sigint_held(),
                  "named: a temporary that vanished fails the commit, the old file stays");
 
     unlink(path);
@@ -312,31 +303,34 @@ static void test_outset(void)
     /* staged: a commit of one file does not place it until the set's commit */
     gw_test_true(gw_outset_begin(&set, dir, names, &err) == GW_OK && !sigint_held(),
                  "outset: begin (signals not held through a long run)");
-    gw_test_true(gw_write_text(a, "new a\n", &err) == GW_OK && file_is(a, "old a\n") && count_named("a.csv.tmp.") == 1,
+    gw_test_true(gw_write_text(a, "new a\n", &err) == GW_OK && gw_test_file_is(a, "old a\n") &&
+                     count_named("a.csv.tmp.") == 1,
                  "outset: a committed file is staged under its temporary name, the old one in place");
     gw_outset nested;
     gw_test_true(gw_outset_begin(&nested, dir, names, &err) == GW_EINVAL, "outset: one set per thread");
     gw_outset_abort(&set);
-    gw_test_true(file_is(a, "old a\n") && count_named("a.csv.tmp.") == 0 && file_is(stale, "old stale\n"),
+    gw_test_true(gw_test_file_is(a, "old a\n") && count_named("a.csv.tmp.") == 0 &&
+                     gw_test_file_is(stale, "old stale\n"),
                  "outset: abort removes the staged files, the earlier ones stay");
 
     gw_test_true(gw_outset_begin(&set, dir, names, &err) == GW_OK, "outset: begin again");
     gw_test_true(gw_write_text(a, "new a\n", &err) == GW_OK && gw_write_text(b, "new b\n", &err) == GW_OK &&
-                     file_is(a, "old a\n") && file_is(b, "old b\n"),
+                     gw_test_file_is(a, "old a\n") && gw_test_file_is(b, "old b\n"),
                  "outset: two files staged");
-    gw_test_true(gw_outset_commit(&set, &err) == GW_OK && file_is(a, "new a\n") && file_is(b, "new b\n") &&
+    gw_test_true(gw_outset_commit(&set, &err) == GW_OK && gw_test_file_is(a, "new a\n") &&
+                     gw_test_file_is(b, "new b\n") &&
                      access(stale, F_OK) != 0 && count_named("a.csv.tmp.") + count_named("b.csv.tmp.") == 0 &&
                      !sigint_held(),
                  "outset: commit places both and removes the set's name this run did not write");
-    gw_test_true(gw_write_text(a, "after\n", &err) == GW_OK && file_is(a, "after\n"),
+    gw_test_true(gw_write_text(a, "after\n", &err) == GW_OK && gw_test_file_is(a, "after\n"),
                  "outset: after the commit a file is placed at once again");
 
     gw_test_true(gw_outset_begin(&set, dir, names, &err) == GW_OK && gw_write_text(a, "lost\n", &err) == GW_OK,
                  "outset: one file staged");
     for (int i = 0; i < set.n; i++)
         unlink(set.tmp[i]);
-    gw_test_true(gw_outset_commit(&set, &err) == GW_EIO && strstr(err.msg, "a.csv") && file_is(a, "after\n") &&
-                     file_is(b, "new b\n"),
+    gw_test_true(gw_outset_commit(&set, &err) == GW_EIO && strstr(err.msg, "a.csv") && gw_test_file_is(a, "after\n") &&
+                     gw_test_file_is(b, "new b\n"),
                  "outset: a staged temporary gone fails the commit naming the file, nothing placed or removed");
     unlink(a);
     unlink(b);
@@ -381,7 +375,8 @@ static void test_provenance(void)
     gw_write_comment(fp, NULL);
     gw_write_comment(fp, "last");
     fclose(fp);
-    gw_test_true(file_is(path, "# granwave 1\n# command: x\n# last\n"), "comment lines: '# ' per line, no empty one");
+    gw_test_true(gw_test_file_is(path, "# granwave 1\n# command: x\n# last\n"),
+                 "comment lines: '# ' per line, no empty one");
     unlink(path);
 }
 

@@ -14,29 +14,20 @@
 # 6 of the 9 checks fail on the code before (the three that pass: the run over
 # the sample, which the journal's check refused after every case was checked,
 # and the two legitimate runs).
-set -u
-GW=$1
-SRC=$2
-tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
+# shellcheck source=tests/refusal_lib.sh
+. "$(dirname "${BASH_SOURCE[0]}")/refusal_lib.sh"
+test_setup "$@"
 cd "$tmp" || exit 1
-fails=0; passes=0
-ok() { echo "PASS: $1"; passes=$((passes+1)); }
-ko() { echo "FAIL: $1"; fails=$((fails+1)); }
 
 cfg='[sweep]\nmodel = chain\n[grid]\nn = 1:2\n[params]\nsolver = rk4\n'
 
-# refused_input WHAT INPUT DIR PATTERN ARGS...: exit 2, one line matching
-# PATTERN, INPUT unchanged (against INPUT.orig), no DIR/journal.csv
+# refused_input WHAT INPUT DIR PATTERN ARGS...: granwave ARGS refused
+# (exits_refused), INPUT unchanged (against INPUT.orig), no DIR/journal.csv
 refused_input() {
     local what=$1 input=$2 dir=$3 pat=$4; shift 4
-    timeout -s KILL 20 "$GW" "$@" >out.txt 2>err.txt </dev/null
-    local rc=$?
-    if [ $rc -ne 2 ]; then ko "$what: exit $rc, expected 2 ($(head -c 200 err.txt))"; return; fi
-    if [ "$(wc -l <err.txt)" -ne 1 ]; then ko "$what: $(wc -l <err.txt) stderr lines"; return; fi
-    if ! grep -qE -- "$pat" err.txt; then ko "$what: message does not match '$pat': $(cat err.txt)"; return; fi
+    exits_refused "$what" "$pat" 20 "$GW" "$@" || return
     if ! cmp -s "$input" "$input.orig"; then ko "$what: $input was changed"; return; fi
     if [ -e "$dir/journal.csv" ] && ! cmp -s "$dir/journal.csv" "$input.orig"; then ko "$what: a journal was made"; return; fi
-    if [ -s out.txt ]; then ko "$what: printed on stdout"; return; fi
     ok "$what"
 }
 
@@ -90,5 +81,4 @@ else
     ko "a config called results.csv elsewhere: $(cat err.txt)"
 fi
 
-echo "test_sweep_inputs_out: $passes passed, $fails failed"
-[ $fails -eq 0 ]
+test_summary test_sweep_inputs_out

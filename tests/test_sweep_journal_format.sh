@@ -13,13 +13,10 @@
 # granwave's format 2) resumes to the same table; format 2 of another config
 # is still refused as another sweep.
 # 9 of the 13 checks fail on the code before (the four that pass: the kept ones).
-set -u
-GW=$1
-tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
+# shellcheck source=tests/refusal_lib.sh
+. "$(dirname "${BASH_SOURCE[0]}")/refusal_lib.sh"
+test_setup "$@"
 cd "$tmp" || exit 1
-fails=0; passes=0
-ok() { echo "PASS: $1"; passes=$((passes+1)); }
-ko() { echo "FAIL: $1"; fails=$((fails+1)); }
 
 printf '[sweep]\nmodel = chain\n[grid]\nn = 1:3\n[params]\nsolver = rk4\n' >a.ini
 printf '[sweep]\nmodel = chain\n[grid]\nn = 1:3\n[params]\nsolver = rk4\nvimp = 0.2\n' >b.ini
@@ -29,20 +26,15 @@ timeout 60 "$GW" sweep b.ini --out refb --quiet --jobs 1 2>err.txt ||
     { echo "FAIL: the other config's sweep: $(cat err.txt)"; exit 1; }
 [ "$(grep -c '^[0-9]' ref/journal.csv)" -eq 3 ] || { echo "FAIL: the reference journal has not 3 rows"; exit 1; }
 
-# refused WHAT DIR PATTERN [CONFIG]: the sweep over DIR (its journal made
-# beforehand) exits 2 with one stderr line matching PATTERN, DIR/journal.csv
-# unchanged, DIR holding nothing else, stdout empty
-refused() {
+# refused_journal WHAT DIR PATTERN [CONFIG]: the sweep over DIR (its journal
+# made beforehand) refused (exits_refused), DIR/journal.csv unchanged, DIR
+# holding nothing else
+refused_journal() {
     local what=$1 dir=$2 pat=$3 ini=${4:-a.ini}
     cp "$dir/journal.csv" "$dir.orig"
-    timeout -s KILL 30 "$GW" sweep "$ini" --out "$dir" --quiet --jobs 1 >out.txt 2>err.txt </dev/null
-    local rc=$?
-    if [ $rc -ne 2 ]; then ko "$what: exit $rc, expected 2 ($(head -c 300 err.txt))"; return; fi
-    if [ "$(wc -l <err.txt)" -ne 1 ]; then ko "$what: $(wc -l <err.txt) stderr lines"; return; fi
-    if ! grep -qE -- "$pat" err.txt; then ko "$what: message does not match '$pat': $(cat err.txt)"; return; fi
+    exits_refused "$what" "$pat" 30 "$GW" sweep "$ini" --out "$dir" --quiet --jobs 1 || return
     if ! cmp -s "$dir/journal.csv" "$dir.orig"; then ko "$what: the journal was changed"; return; fi
     if [ "$(ls -A "$dir")" != journal.csv ]; then ko "$what: $dir holds $(ls -A "$dir" | tr '\n' ' ')"; return; fi
-    if [ -s out.txt ]; then ko "$what: printed on stdout"; return; fi
     ok "$what"
 }
 
@@ -51,35 +43,35 @@ journal() { mkdir "$1" && sed "$2" ref/journal.csv >"$1/journal.csv"; }
 
 # 1, 2 a later format's head over this config's journal
 journal f3 '1s/, format 2$/, format 3/'
-refused "format 3 (this config)" f3 \
+refused_journal "format 3 (this config)" f3 \
     "^granwave sweep: f3/journal\.csv: a sweep journal of format 3, newer than granwave [^ ]+'s format 2"
 journal f12 '1s/, format 2$/, format 12/'
-refused "format 12 (this config)" f12 "^granwave sweep: f12/journal\.csv: a sweep journal of format 12, newer than .*format 2"
+refused_journal "format 12 (this config)" f12 "^granwave sweep: f12/journal\.csv: a sweep journal of format 12, newer than .*format 2"
 # 3 a format no granwave writes
 journal fx '1s/, format 2$/, format 2a/'
-refused "format '2a'" fx \
+refused_journal "format '2a'" fx \
     "^granwave sweep: fx/journal\.csv: a sweep journal of a format granwave [^ ]+ does not know \(its first line '# granwave sweep journal [0-9a-f]{16}, format 2a'; this granwave writes and reads format 2\)"
 # 4 a hash cut short
 journal fh '1s/^\(# granwave sweep journal [0-9a-f]\{8\}\)[0-9a-f]*/\1/'
-refused "a head with an 8-digit hash" fh "^granwave sweep: fh/journal\.csv: a sweep journal of a format .* does not know"
+refused_journal "a head with an 8-digit hash" fh "^granwave sweep: fh/journal\.csv: a sweep journal of a format .* does not know"
 # 5 the journal converted to CR LF line ends
 journal fcr 's/$/\r/'
-refused "a journal with CR LF line ends" fcr \
+refused_journal "a journal with CR LF line ends" fcr \
     "^granwave sweep: fcr/journal\.csv: a sweep journal of a format .* does not know .*CR LF where a sweep writes LF"
 # 6 format 1 (no ', format N') of another config: its format first
 mkdir f1b && sed '1s/, format 2$//' refb/journal.csv >f1b/journal.csv
-refused "format 1 of another config" f1b \
+refused_journal "format 1 of another config" f1b \
     "^granwave sweep: f1b/journal\.csv: a journal of an earlier granwave, .*\(format 1, of another config \([0-9a-f]{16}; this one is [0-9a-f]{16}\); granwave [^ ]+ reads format 2 only"
 # 7 an explicit 'format 1' (format 1 had no suffix)
 journal fe1 '1s/, format 2$/, format 1/'
-refused "an explicit ', format 1'" fe1 "^granwave sweep: fe1/journal\.csv: a sweep journal of a format .* does not know"
+refused_journal "an explicit ', format 1'" fe1 "^granwave sweep: fe1/journal\.csv: a sweep journal of a format .* does not know"
 
 # kept 8: format 1 of this config, refused as an earlier granwave's
 journal f1 '1s/, format 2$//'
-refused "format 1 of this config (kept)" f1 "^granwave sweep: f1/journal\.csv: a journal of an earlier granwave, whose rows"
+refused_journal "format 1 of this config (kept)" f1 "^granwave sweep: f1/journal\.csv: a journal of an earlier granwave, whose rows"
 # kept 9: format 2 of another config: another sweep, the key named
 mkdir o2 && cp refb/journal.csv o2/journal.csv
-refused "format 2 of another config (kept)" o2 "^granwave sweep: o2: this directory holds another sweep: its journal has 2 \[params\] keys, the config 1"
+refused_journal "format 2 of another config (kept)" o2 "^granwave sweep: o2: this directory holds another sweep: its journal has 2 \[params\] keys, the config 1"
 
 # kept 10, 11: format 2 with one row to resume, with and without its key lines
 # (the format 2 of an earlier granwave), gives the reference table
@@ -101,10 +93,9 @@ resumes "format 2 without key lines resumes (kept)" r2o
 # 12 a later format over another config's journal: its format first (which
 # config a later format's head names cannot be told here)
 mkdir f3b && sed '1s/, format 2$/, format 3/' refb/journal.csv >f3b/journal.csv
-refused "format 3 of another config" f3b "^granwave sweep: f3b/journal\.csv: a sweep journal of format 3, newer"
+refused_journal "format 3 of another config" f3b "^granwave sweep: f3b/journal\.csv: a sweep journal of format 3, newer"
 # 13 the most digits read as a format
 journal f9 '1s/, format 2$/, format 999999999/'
-refused "format 999999999" f9 "^granwave sweep: f9/journal\.csv: a sweep journal of format 999999999, newer"
+refused_journal "format 999999999" f9 "^granwave sweep: f9/journal\.csv: a sweep journal of format 999999999, newer"
 
-echo "$passes passed, $fails failed"
-[ $fails -eq 0 ]
+test_summary

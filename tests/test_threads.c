@@ -40,6 +40,7 @@
 
 #include "granwave.h"
 #include "gw_test.h"
+#include "gw_test_files.h"
 
 enum { NT = 4 };
 
@@ -366,18 +367,6 @@ static int same_sample_file(const char *a, const char *b)
     return ok;
 }
 
-static void copy_cut(const char *from, const char *to, long n, long flip)
-{
-    FILE *in = fopen(from, "rb"), *out = fopen(to, "wb");
-    int c;
-    for (long k = 0; in && out && (n < 0 || k < n) && (c = getc(in)) != EOF; k++)
-        putc(k == flip ? c ^ 1 : c, out);
-    if (in)
-        fclose(in);
-    if (out)
-        fclose(out);
-}
-
 static void h5_threads(void)
 {
     gw_err e = {{0}};
@@ -419,7 +408,7 @@ static void h5_threads(void)
     h5_job ref[NT];
     for (int k = 0; k < NT; k++) {
         snprintf(bad_path[k], sizeof bad_path[k], "%s/bad%d.h5", dir, k);
-        copy_cut(alone, bad_path[k], cut[k][0], cut[k][1]);
+        gw_test_copy_prefix(alone, bad_path[k], cut[k][0], cut[k][1]);
         gw_layer_sample s;
         memset(&ref[k], 0, sizeof ref[k]);
         ref[k].rc = gw_layer_sample_read(bad_path[k], &s, &e);
@@ -483,7 +472,7 @@ static void h5_exit_quiet(void)
     for (long off = 97; rc == GW_OK && off < 1200; off += 97) {
         snprintf(bad, sizeof bad, "%s/exit%ld.h5", dir, off);
         snprintf(errf, sizeof errf, "%s/exit%ld.err", dir, off);
-        copy_cut(good, bad, -1, off);
+        gw_test_copy_prefix(good, bad, -1, off);
         fflush(stdout);
         pid_t pid = fork();
         if (pid == 0) {

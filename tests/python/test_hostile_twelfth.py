@@ -76,12 +76,18 @@ def test_a_child_forked_while_a_thread_is_in_the_library_runs(busy, work):
 def test_ctrl_c_works_in_a_child_forked_during_a_call():
     # Before: a child forked by another thread while the main thread was in a
     # call kept the library's SIGINT handler for good: Ctrl-C did nothing in it.
+    # The fork comes once the call has used 0.2 s of CPU (of about 1 s), not
+    # after 0.3 s of wall time: on an idle machine the call could have ended
+    # by then (the child then tested nothing); the child says it came in the call.
     r = child("""
         import granwave, os, signal, threading, time
-        res = {}
+        res = {"in_call": True}
         def forker():
-            time.sleep(0.3)
+            c0 = time.process_time()
+            while time.process_time() - c0 < 0.2 and res["in_call"]:
+                time.sleep(0.005)
             pid = os.fork()
+            in_call = res["in_call"]  # still in it after the fork: in it during the fork
             if pid == 0:
                 try:
                     threading.Timer(0.2, lambda: os.kill(os.getpid(), signal.SIGINT)).start()
@@ -90,17 +96,19 @@ def test_ctrl_c_works_in_a_child_forked_during_a_call():
                 except KeyboardInterrupt:
                     os._exit(0)
             res["st"] = os.waitpid(pid, 0)[1]
+            res["forked_in_call"] = in_call
         t = threading.Thread(target=forker)
         t.start()
         try:  # about 1 s of a column that has not left the wall by t_max
             granwave.chain(n=400, solver="rk4", t_max=4e-3)
         except granwave.GranwaveRunError:
             pass
+        res["in_call"] = False
         t.join()
-        print("child", os.waitstatus_to_exitcode(res["st"]))
+        print("child", os.waitstatus_to_exitcode(res["st"]), "forked_in_call", res["forked_in_call"])
     """)
     assert r.returncode == 0, r.stderr
-    assert r.stdout.split() == ["child", "0"], r.stdout + r.stderr
+    assert r.stdout.split() == ["child", "0", "forked_in_call", "True"], r.stdout + r.stderr
 
 
 # ---- Ctrl-C while a progress callback runs on the main thread ----

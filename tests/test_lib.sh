@@ -1,0 +1,113 @@
+#!/bin/bash
+# test_lib.sh: sourced by the program's shell tests (and by refusal_lib.sh).
+# Gives the counters and the run-control helpers they share:
+#   ok WHAT / ko WHAT: a passed / failed check, printed and counted;
+#   test_setup "$@": GW (the program, $1, made absolute: tests may cd), SRC
+#   (the source tree, $2, else this file's parent), tmp (a scratch directory
+#   removed on exit) and set -u;
+#   test_summary [NAME]: prints the counts, returns 1 when a check failed.
+# Runs that must be stopped mid-way synchronise on an event of the run, never
+# on a wall-clock sleep (test_hardening's SIGINTs after 0.2 to 1.5 s came after
+# its 0.28 s run had ended; under load a sleep can end before a run has begun):
+#   journal_rows FILE: the rows of a sweep journal (0 when there is none);
+#   wait_rows FILE N [SECONDS]: until FILE holds N rows (SECONDS, 120);
+#   wait_cpu PID SECONDS: until PID has used SECONDS of CPU (user + system, all
+#   threads): the same point of its work whatever the machine's load;
+#   wait_file PID GLOB: until a file matching GLOB exists (polled every ms with
+#   builtins: a write phase of 30 ms is not missed); 1 when PID ended first;
+#   cpu_of CMD...: runs CMD (output dropped), prints the CPU seconds it used:
+#   the reference for the points of wait_cpu on this machine;
+#   stop_mid_sweep SIG DIR TOTAL CMD...: CMD (a sweep into DIR of TOTAL cases)
+#   sent SIG once its journal holds a row; asserts nothing, sets rows and rc.
+# Background jobs of a script ignore SIGINT (bash sets it so): a run that is to
+# see SIGINT is started under `env --default-signal=INT`.
+fails=0; passes=0
+ok() { echo "PASS: $1"; passes=$((passes+1)); }
+ko() { echo "FAIL: $1"; fails=$((fails+1)); }
+
+test_setup() {
+    set -u
+    case $1 in */*) GW=$(cd "$(dirname "$1")" && pwd)/$(basename "$1") ;; *) GW=$1 ;; esac
+    SRC=${2:-$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)}
+    tmp=$(mktemp -d)
+    trap 'rm -rf "$tmp"' EXIT
+}
+
+test_summary() {
+    echo "${1:+$1: }$passes passed, $fails failed"
+    [ "$fails" -eq 0 ]
+}
+
+journal_rows() {
+    local n
+    n=$(grep -vc '^#' "$1" 2>/dev/null)
+    echo "${n:-0}"
+}
+
+wait_rows() {
+    local end=$((SECONDS + ${3:-120}))
+    while [ "$(journal_rows "$1")" -lt "$2" ]; do
+        [ $SECONDS -lt $end ] || return 1
+        sleep 0.01
+    done
+}
+
+# cpu_ticks PID: user + system time of PID in clock ticks; fails when PID has
+# ended (gone, or a zombie not yet waited for)
+cpu_ticks() {
+    local s
+    s=$(cat "/proc/$1/stat" 2>/dev/null) || return 1
+    s=${s##*) }   # past "pid (comm) ": state is field 1, utime 12, stime 13
+    set -- $s
+    [ "$1" != Z ] || return 1
+    echo $(( ${12} + ${13} ))
+}
+
+# running PID: PID has not ended (nor is a zombie); builtins only, no fork
+running() {
+    local s
+    { read -r s <"/proc/$1/stat"; } 2>/dev/null && [[ $s != *") Z "* ]]
+}
+
+wait_file() {
+    while running "$1"; do
+        compgen -G "$2" >/dev/null && return 0
+        sleep 0.001
+    done
+    return 1
+}
+
+wait_cpu() {
+    local want t end=$((SECONDS + 300))
+    want=$(awk -v s="$2" -v hz="$(getconf CLK_TCK)" 'BEGIN { printf "%d", s * hz + 0.5 }')
+    while t=$(cpu_ticks "$1"); do
+        [ "$t" -ge "$want" ] && return 0
+        [ $SECONDS -lt $end ] || return 1
+        sleep 0.01
+    done
+    return 1
+}
+
+cpu_of() {
+    ( "$@" >/dev/null 2>&1; times ) | tail -1 |
+        awk '{ for (i = 1; i <= 2; i++) { split($i, a, "m"); t += a[1] * 60 + a[2] } } END { printf "%.3f\n", t }'
+}
+
+# stop_mid_sweep SIG DIR TOTAL CMD...: the caller asserts 1 <= rows < TOTAL and
+# no DIR/results.csv (the signal landed mid-sweep). A sweep that ended before
+# the signal (rows = TOTAL, a table) is started again, three times at most;
+# attempt says which one landed.
+stop_mid_sweep() {
+    local sig=$1 dir=$2 total=$3 pid
+    shift 3
+    for attempt in 1 2 3; do
+        rm -rf "$dir"
+        env --default-signal=INT "$@" & pid=$!
+        wait_rows "$dir/journal.csv" 1
+        kill -"$sig" $pid 2>/dev/null
+        wait $pid 2>/dev/null; rc=$?
+        rows=$(journal_rows "$dir/journal.csv")
+        [ ! -e "$dir/results.csv" ] && [ "$rows" -ge 1 ] && [ "$rows" -lt "$total" ] && return 0
+    done
+    return 1
+}

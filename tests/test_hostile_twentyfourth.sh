@@ -33,13 +33,10 @@
 #    (exit 2, one line naming the file, nothing written); CR LF files and a
 #    last line ending in CR without LF read as before.
 # Checks that fail on the code before: see docs/tests.md.
-set -u
-GW=$(cd "$(dirname "$1")" && pwd)/$(basename "$1")
-SRC=$2
-PY=/usr/bin/python3
-tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 # shellcheck source=refusal_lib.sh
-. "$SRC/tests/refusal_lib.sh"
+. "$2/tests/refusal_lib.sh"
+test_setup "$@"
+PY=/usr/bin/python3
 cd "$tmp" || exit 1
 
 # --- 1 a large initial step under cvode and arkode ---

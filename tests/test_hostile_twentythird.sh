@@ -20,13 +20,10 @@
 #    CSV header. They are now null there; under rk4 they are what ran
 #    (rk4_dt x steps_per_sample = dt_out).
 # Checks that fail on the code before: see docs/tests.md.
-set -u
-GW=$(cd "$(dirname "$1")" && pwd)/$(basename "$1")
-SRC=$2
-PY=/usr/bin/python3
-tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 # shellcheck source=refusal_lib.sh
-. "$SRC/tests/refusal_lib.sh"
+. "$2/tests/refusal_lib.sh"
+test_setup "$@"
+PY=/usr/bin/python3
 cd "$tmp" || exit 1
 
 # strict: the file's bytes are UTF-8 and (JSON) parse, NaN and Infinity refused

@@ -19,13 +19,10 @@
 #    by a running sweep; under mpirun too (where available).
 # 11 of the 15 checks fail on the code before (the four that pass: nothing made
 # by --check, the two resumes' own counts and the resumed journal's rows).
-set -u
-GW=$(cd "$(dirname "$1")" && pwd)/$(basename "$1")
-tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
+# shellcheck source=test_lib.sh
+. "$(dirname "$0")/test_lib.sh"
+test_setup "$@"
 cd "$tmp" || exit 1
-fails=0; passes=0
-ok() { echo "PASS: $1"; passes=$((passes+1)); }
-ko() { echo "FAIL: $1"; fails=$((fails+1)); }
 
 printf '[sweep]\nmodel = chain\nout = out\n[grid]\nn = 2:5\n[params]\nvimp = 0.3\n' >s.ini
 
@@ -138,5 +135,4 @@ else
     fi
 fi
 
-echo "$passes passed, $fails failed"
-[ $fails -eq 0 ]
+test_summary

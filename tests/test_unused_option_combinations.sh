@@ -30,13 +30,10 @@
 #    --aspect-max 1, or layer-impact on such a sample): sum and union are the
 #    same mass; refused, and taken where a clump has two discs or more.
 # Checks that fail on the code before: see docs/tests.md.
-set -u
-GW=$(cd "$(dirname "$1")" && pwd)/$(basename "$1")
-SRC=$2
-PY=/usr/bin/python3
-tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 # shellcheck source=refusal_lib.sh
-. "$SRC/tests/refusal_lib.sh"
+. "$2/tests/refusal_lib.sh"
+test_setup "$@"
+PY=/usr/bin/python3
 cd "$tmp" || exit 1
 
 # 1: a sheet's overrides that the material law does not take

@@ -10,11 +10,16 @@ process pool was terminated abruptly" (BrokenProcessPool, the pool unusable
 after), and multiprocessing.Pool's result thread died, its get() waiting for
 ever (or until a timeout). Each exception now pickles and copies as itself:
 its class, message, status and any attribute set on it.
+
+A long drop called its progress callback only every hundredth of its samples:
+drop(n=1000, t_max=1) was silent for over a minute (the program's display
+too: tests/test_hostile_twentyfifth.sh). It now reports after half a second.
 """
 import concurrent.futures
 import copy
 import multiprocessing
 import pickle
+import time
 
 import pytest
 
@@ -74,3 +79,27 @@ def test_an_error_in_a_multiprocessing_pool_comes_back():
     with multiprocessing.get_context("fork").Pool(1) as pool:
         with pytest.raises(granwave.GranwaveValueError, match=r"^chain: n: -1 is outside"):
             pool.apply_async(_bad_chain, (-1,)).get(timeout=30)
+
+
+def test_a_long_drop_reports_its_progress_within_seconds():
+    """The library reported a drop's progress every hundredth of its samples
+    only: drop(n=1000, t_max=1) (about two hours) called progress after more
+    than a minute. It now also reports after half a second of wall time."""
+    class Stop(Exception):
+        pass
+
+    calls = []
+    t0 = time.monotonic()
+
+    def progress(done, total):
+        calls.append((time.monotonic() - t0, done, total))
+        raise Stop  # ends the call: nothing else is needed of it
+
+    with pytest.raises(Stop):
+        granwave.drop(n=1000, t_max=1, progress=progress)
+    assert len(calls) == 1
+    waited, done, total = calls[0]
+    # the report is due 0.5 s of wall time into the run, whatever the load;
+    # a hundredth of the samples takes over a minute
+    assert waited < 10, f"the first report came after {waited:.1f} s"
+    assert total == 2 * 1000000 and 0 < done < total // 100

@@ -144,12 +144,20 @@ typedef struct drop_state {
     void *pctx;
     double dt_out;           /* s, the drop's sampling */
     long total, next, step, base; /* base: samples before the pass under way */
+    double reported_ms;      /* gw_clock_ms of the last report */
     int canceled;            /* the callback asked to stop */
 } drop_state;
 
+/* Wall time after which the run reports even short of a hundredth of its
+ * samples: a hundredth of `drop --n 1000 --t-max 1` took minutes, and the
+ * program's display, which prints once a run has lasted 2 s, said nothing
+ * for all that time (it cannot print what it is not told). */
+#define DROP_PROGRESS_EVERY_MS 500.0
+
 /* Report the pass under way at t (its own clock, from 0): done = base +
- * t / dt_out, at most about every hundredth of total (and at total). 1 when
- * the callback asks to stop. */
+ * t / dt_out, about every hundredth of total or every DROP_PROGRESS_EVERY_MS
+ * of wall time, whichever comes first (and at total). 1 when the callback
+ * asks to stop. */
 static int drop_progress(drop_state *st, double t)
 {
     if (!st->progress)
@@ -157,8 +165,10 @@ static int drop_progress(drop_state *st, double t)
     long done = st->base + (long)floor(t / st->dt_out + 1e-9);
     if (done > st->total)
         done = st->total;
-    if (done < st->next)
+    double now = gw_clock_ms();
+    if (done < st->next && now - st->reported_ms < DROP_PROGRESS_EVERY_MS)
         return 0;
+    st->reported_ms = now;
     st->next = done + st->step;
     if (st->progress(st->pctx, done, st->total) != 0)
         st->canceled = 1;
@@ -530,6 +540,7 @@ int gw_chain_drop_run_progress(const gw_chain_drop_params *p, const gw_chain_run
     st.total = 2 * (long)floor(p->t_max / st.dt_out + 1e-9);
     st.step = st.total / 100 > 0 ? st.total / 100 : 1;
     st.next = st.step;
+    st.reported_ms = gw_clock_ms();
     double *y = NULL, *y0 = NULL;
     int *roots = NULL;
     if ((rc = gw_chain_create(&q, &c, err)) != GW_OK)

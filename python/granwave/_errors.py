@@ -22,6 +22,13 @@ class GranwaveError(Exception):
         super().__init__(message)
         self.status = status
 
+    def __reduce__(self):
+        # pickle and copy rebuild an exception from its args, here (message,)
+        # alone, which __init__ refuses without the status: an error raised in
+        # a worker process could not come back (ProcessPoolExecutor reported
+        # its pool broken, multiprocessing.Pool's get() waited for ever)
+        return (type(self), (str(self), self.status), self.__dict__)
+
 
 class GranwaveValueError(GranwaveError, ValueError):
     """A bad input value (GW_EINVAL) or a malformed input file (GW_EFORMAT)."""

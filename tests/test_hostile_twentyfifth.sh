@@ -14,12 +14,9 @@
 #    nothing on stdout, the run then ended by SIGINT with nothing written;
 #    --quiet stays silent.
 # Checks that fail on the code before: see docs/tests.md.
-set -u
-GW=$(cd "$(dirname "$1")" && pwd)/$(basename "$1")
-SRC=$2
-tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 # shellcheck source=refusal_lib.sh
-. "$SRC/tests/refusal_lib.sh"
+. "$2/tests/refusal_lib.sh"
+test_setup "$@"
 cd "$tmp" || exit 1
 
 # long_drop WHAT ARGS...: start a drop of about two hours in the background

@@ -90,7 +90,7 @@ static const char *erk_configure(gw_solver *s, ark_impl *a, int *flag)
     ERK_CHECK(ERKStepSetMaxNumSteps(a->mem, s->p.max_steps));
     if (s->p.dt > 0) { /* a first step given: cut as far as needed (cv_create says why) */
         ERK_CHECK(ERKStepSetInitStep(a->mem, gw_sun_init_step(s->p.dt, a->t)));
-        ERK_CHECK(ERKStepSetMaxErrTestFails(a->mem, 30));
+        ERK_CHECK(ERKStepSetMaxErrTestFails(a->mem, GW_SUN_GIVEN_STEP_ERR_FAILS));
     }
     if (s->p.dt_max > 0)
         ERK_CHECK(ERKStepSetMaxStep(a->mem, s->p.dt_max));
@@ -119,7 +119,7 @@ static const char *ark_configure(gw_solver *s, ark_impl *a, int method, int *fla
     ARK_CHECK(ARKStepSetMaxNumSteps(a->mem, s->p.max_steps));
     if (s->p.dt > 0) {
         ARK_CHECK(ARKStepSetInitStep(a->mem, gw_sun_init_step(s->p.dt, a->t)));
-        ARK_CHECK(ARKStepSetMaxErrTestFails(a->mem, 30));
+        ARK_CHECK(ARKStepSetMaxErrTestFails(a->mem, GW_SUN_GIVEN_STEP_ERR_FAILS));
     }
     if (s->p.dt_max > 0)
         ARK_CHECK(ARKStepSetMaxStep(a->mem, s->p.dt_max));
@@ -249,7 +249,8 @@ static int ark_reset(gw_solver *s, double t, const double *y)
     if (flag >= 0 && s->p.dt > 0) /* the run's initial step only (cv_reset says why) */
         flag = a->erk ? ERKStepSetInitStep(a->mem, 0.0) : ARKStepSetInitStep(a->mem, 0.0);
     if (flag >= 0 && s->p.dt > 0) /* ARKode's own limit again, with its own step */
-        flag = a->erk ? ERKStepSetMaxErrTestFails(a->mem, 7) : ARKStepSetMaxErrTestFails(a->mem, 7);
+        flag = a->erk ? ERKStepSetMaxErrTestFails(a->mem, GW_SUN_OWN_STEP_ERR_FAILS)
+                      : ARKStepSetMaxErrTestFails(a->mem, GW_SUN_OWN_STEP_ERR_FAILS);
     if (flag < 0) {
         char name[64];
         ark_flag_name(flag, name, sizeof name);

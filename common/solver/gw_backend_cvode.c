@@ -168,7 +168,7 @@ static int cv_create(gw_solver *s, double t0, const double *y0, gw_err *err)
          * gives up after 7: chain --sheet pvc --sheet-law material --dt 1e-6 (a
          * value in the row's range) failed at t = 0 with h = 1e-12, where the
          * step CVODE estimates runs. 30 reach 1e-30 of the step given. */
-        CV_TRY(CVodeSetMaxErrTestFails(c->mem, 30), "CVodeSetMaxErrTestFails");
+        CV_TRY(CVodeSetMaxErrTestFails(c->mem, GW_SUN_GIVEN_STEP_ERR_FAILS), "CVodeSetMaxErrTestFails");
     }
     if (s->p.dt_max > 0)
         CV_TRY(CVodeSetMaxStep(c->mem, s->p.dt_max), "CVodeSetMaxStep");
@@ -240,7 +240,7 @@ static int cv_reset(gw_solver *s, double t, const double *y)
     if (flag >= 0 && s->p.dt > 0)
         flag = CVodeSetInitStep(c->mem, 0.0);
     if (flag >= 0 && s->p.dt > 0) /* CVODE's own limit again, with its own step */
-        flag = CVodeSetMaxErrTestFails(c->mem, 7);
+        flag = CVodeSetMaxErrTestFails(c->mem, GW_SUN_OWN_STEP_ERR_FAILS);
     if (flag < 0) {
         char name[64];
         cv_flag_name(flag, name, sizeof name);

@@ -69,6 +69,12 @@ int gw_sun_nv_rhs(double t, N_Vector y, N_Vector ydot, gw_rhs_range_fn f, long h
  * denominator is then positive and needs no check. Returns 0. */
 int gw_sun_ewt(N_Vector y, N_Vector w, void *ud);
 
+/* Failed error tests allowed per step: with a first step the caller gave (each
+ * failure cuts the step at most tenfold, so 30 reach 1e-30 of it: cv_create
+ * says why), and the solvers' own default, put back at a restart, which
+ * estimates its own step. */
+enum { GW_SUN_GIVEN_STEP_ERR_FAILS = 30, GW_SUN_OWN_STEP_ERR_FAILS = 7 };
+
 /* The initial step for a (re)start at t: the step given (dt > 0), but at least
  * 100 units of rounding of t, CVODE's own lower bound for a step it estimates
  * (HLB_FACTOR * uround * |t|); 0 (dt not given) stays 0. A step below it does

@@ -47,7 +47,11 @@ typedef struct run_state {
     double wg;               /* the largest work gravity has done so far, J */
     double t_sampled;        /* time of the last row given to o->sample (-inf: none) */
     int flight_cut;          /* t_max falls in bead 1's flight, its return the
-                                caller's next impact (chain_collide_flight_cut) */
+                                caller's next impact (chain_collide_drop) */
+    int watch_fall;          /* gravity, no guide friction and not a drop's
+                                collision: held_by_gravity applies */
+    double q_prev;           /* the beads' momentum at the previous observation, kg m/s */
+    int held;                /* the column fell back on the wall (held_by_gravity) */
 } run_state;
 
 /* Steps a whole run may take: the plan bounds them at 1e8 over the expected
@@ -306,7 +310,7 @@ static void on_roots(run_state *st, double t, const double *y, const int *roots)
 static const char *wall_pending(const run_state *st, const double *y, double dtol)
 {
     /* a run cut in bead 1's flight whose return is the caller's next impact
-     * (chain_collide_flight_cut): bead 1 off the wall is done whatever its
+     * (chain_collide_drop): bead 1 off the wall is done whatever its
      * velocity. The drop cuts its first collision half way through that
      * flight, where bead 1 turns: its velocity there is zero but for the
      * integration's error, +4.3e-11 m/s (cvode at 1e-12, "still at the wall")
@@ -384,6 +388,30 @@ static int sampled(int sr, int go_on, double t, gw_err *err)
     return sr > 0 ? GW_DRIVE_STOP : go_on;
 }
 
+/* The column falls back onto the wall before its collision has ended: the
+ * beads' momentum q = sum m_i v_i (positive toward the wall), which the wall
+ * turned negative, is back at >= 0. Then not every bead moves away from the
+ * wall, so the collision has not ended (physics.md 1.2: every contact open and
+ * separating, bead 1 moving off the wall), and it cannot end before the wall
+ * pushes again: off the wall only gravity changes q (the contacts between beads
+ * cancel in it), and gravity raises it. What follows is a new impact of the
+ * whole column, not the end of this one: the run stops there, undecided
+ * (chain_held_pending), instead of bouncing on to t_max (softwall --n 17
+ * --gravity 1e4: 6 to 40 s, then a failure). Needs gravity; guide friction
+ * (which can slow beads toward the wall) and the drop's collision (whose
+ * bounces are its subject) are not watched. */
+static int held_by_gravity(run_state *st, const double *y)
+{
+    if (!st->watch_fall)
+        return 0;
+    double q = 0;
+    for (int i = 0; i < st->n; i++)
+        q += gw_chain_bead_mass(st->c, i) * y[2 * i + 1];
+    const int fell = st->q_prev < 0 && q >= 0;
+    st->q_prev = q;
+    return fell;
+}
+
 /* The run's hooks (gw_solver_drive): at a root the contact flags and the
  * observation; at an output time the flags brought in line with the geometry
  * (reconcile) and the observation; after either the energy monitor and the end. */
@@ -425,6 +453,10 @@ static int collide_after(void *ctx, double t, const double *y, gw_err *err)
         r->converged = 1;
         return GW_DRIVE_STOP;
     }
+    if (held_by_gravity(st, y)) {
+        st->held = 1;
+        return GW_DRIVE_STOP;
+    }
     if (t >= st->t_max) {
         if (!isfinite(r->tau_n))
             return gw_err_set(err, GW_ELIMIT, "chain: bead 1 still on the wall at t_max = %.6g s", st->t_max);
@@ -433,21 +465,22 @@ static int collide_after(void *ctx, double t, const double *y, gw_err *err)
     return GW_DRIVE_ON;
 }
 
-static int collide_run(const gw_chain *c, const gw_chain_run_opts *o, int flight_cut, gw_chain_result *r,
-                       gw_err *err);
+static int collide_run(const gw_chain *c, const gw_chain_run_opts *o, int drop, int flight_cut,
+                       gw_chain_result *r, gw_err *err);
 
 int gw_chain_collide(const gw_chain *c, const gw_chain_run_opts *o, gw_chain_result *r,
                      gw_err *err)
 {
-    return collide_run(c, o, 0, r, err);
+    return collide_run(c, o, 0, 0, r, err);
 }
 
-int chain_collide_flight_cut(const gw_chain *c, const gw_chain_run_opts *o, gw_chain_result *r, gw_err *err)
+int chain_collide_drop(const gw_chain *c, const gw_chain_run_opts *o, int flight_cut, gw_chain_result *r,
+                       gw_err *err)
 {
-    return collide_run(c, o, 1, r, err);
+    return collide_run(c, o, 1, flight_cut, r, err);
 }
 
-static int collide_run(const gw_chain *c, const gw_chain_run_opts *o, int flight_cut, gw_chain_result *r,
+static int collide_run(const gw_chain *c, const gw_chain_run_opts *o, int drop, int flight_cut, gw_chain_result *r,
                        gw_err *err)
 {
     if (r)
@@ -498,6 +531,8 @@ static int collide_run(const gw_chain *c, const gw_chain_run_opts *o, int flight
         st.last_open[k] = -INFINITY;
     }
     r->wall_contacts = st.closed[0];
+    st.watch_fall = !drop && p->gravity > 0 && !(p->guide.coulomb > 0 || p->guide.viscous > 0);
+    st.q_prev = INFINITY;
 
     const double dt_out = pl.dt_out, t_max = pl.t_max;
     /* the first contact's position scale, gw_chain_dmax1 at the column's
@@ -546,7 +581,7 @@ stopped:
             mg += gw_chain_bead_mass(c, i) * p->gravity;
         r->impulse = p0 - momentum(c, y) + mg * t;
     }
-    r->wall_pending = r->converged ? NULL : wall_pending(&st, y, st.dtol);
+    r->wall_pending = r->converged ? NULL : st.held ? chain_held_pending : wall_pending(&st, y, st.dtol);
     r->wall_done = r->wall_pending == NULL;
     finish_result(&st, y);
     gw_solver_get_stats(s, &r->stats);

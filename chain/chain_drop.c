@@ -425,8 +425,7 @@ static int first_collision(const gw_chain *c, const gw_chain_drop_params *p,
     o1.dt_out = 0;
     o1.t_max = isnan(st->t_start2) ? p->t_max : 0.5 * (st->t_end1 + st->t_start2);
     o1.y0 = y0;
-    int rc = isnan(st->t_start2) ? gw_chain_collide(c, &o1, &r->first, err)
-                                 : chain_collide_flight_cut(c, &o1, &r->first, err);
+    int rc = chain_collide_drop(c, &o1, !isnan(st->t_start2), &r->first, err);
     r->first_status = rc;
     /* bead 1 never back on the sensor: the first collision ran to t_max, and ended
      * there unless the chain's end came first */

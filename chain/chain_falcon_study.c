@@ -19,6 +19,7 @@
 #include <string.h>
 
 #include "chain_setup_rows.h"
+#include "chain_model.h"
 
 int gw_chain_falcon_analyse(const gw_chain_params *p, double v, const gw_chain_result *res, int n_lo,
                              int n_hi, gw_chain_falcon_fit *a)
@@ -432,8 +433,11 @@ int gw_chain_falcon_run(const gw_chain_falcon_setup *s, gw_progress_fn progress,
         rc = gw_chain_sweep_n_progress(&r.params, &r.run, out->v_imp, nv, (int)s->n[0], (int)s->n[1],
                                        (int)s->jobs, progress, pctx, res, err);
     out->wall_time_s = (gw_clock_ms() - t0) / 1e3;
-    for (int i = 0; rc == GW_OK && i < out->ncase; i++)
+    int held = 0;
+    for (int i = 0; rc == GW_OK && i < out->ncase; i++) {
         out->unfinished += !res[i].converged;
+        held += res[i].wall_pending == chain_held_pending;
+    }
     int row = 0;
     for (int iv = 0; rc == GW_OK && iv < nv; iv++) {
         gw_chain_falcon_fit a;
@@ -496,7 +500,8 @@ int gw_chain_falcon_run(const gw_chain_falcon_setup *s, gw_progress_fn progress,
         out->gamma = r.params.gamma; /* as the JSON's settings.model */
         out->alpha = r.params.alpha;
         out->steps_per_tc = out->accuracy > 0 ? (int)r.run.steps_per_tc : 0;
-        if ((rc = gw_chain_unfinished_warnings(out->unfinished, out->ncase, &out->warnings)) != GW_OK)
+        if ((rc = gw_chain_unfinished_warnings(out->unfinished - held, out->ncase, &out->warnings)) != GW_OK ||
+            (rc = chain_held_warnings(held, out->ncase, &out->warnings)) != GW_OK)
             rc = gw_err_set(err, rc, "falcon: out of memory");
     }
     if (rc == GW_OK && s->traces && (rc = run_traces(out, &r.params, &r.run, (int)s->n[1], err)) != GW_OK)

@@ -80,6 +80,17 @@ void chain_general_energy(const gw_chain *c, const double *y, gw_chain_energy *e
 int chain_sensor_steps_check(const gw_chain_params *p, const gw_solver_type *type, double t_len, const char *over,
                              gw_err *err);
 
+/* A collision's wall_pending (gw_chain_result) when the run stopped because the
+ * column fell back onto the wall before its collision ended (chain_collide.c,
+ * held_by_gravity); its warning (chain_warnings.c) names gravity and vimp. */
+extern const char chain_held_pending[];
+
+/* The warning of a study with held of its total collisions stopped so
+ * (chain_held_pending), appended to *list; nothing when held is 0. GW_OK or
+ * GW_ENOMEM. Their unfinished count includes them: the studies' "raise
+ * --t-max" warning counts the others only. */
+int chain_held_warnings(int held, int total, char **list);
+
 /* GW_ESOLVER when the run has blown up (a step too long for the stiffest
  * contact): a state not finite, or a relative energy error above 1; the message
  * starts "WHO: the solution blew up at t = ..." and says which. GW_OK otherwise.
@@ -158,12 +169,15 @@ int chain_steps_check(const gw_solver_type *type, const gw_solver_params *sp, co
  * Studies add them up over their columns (chain_sweep.c). */
 int chain_run_steps(const gw_chain_params *p, const gw_chain_run_opts *o, double *steps, gw_err *err);
 
-/* gw_chain_collide for a run whose t_max falls in bead 1's flight after it left
- * the wall, its return being the caller's next impact (the drop's first
- * collision, cut half way through that flight): bead 1 off the wall counts as
- * done (wall_done, the warnings) whatever the sign of its velocity, which at
- * the flight's midpoint is zero but for the integration's error. */
-int chain_collide_flight_cut(const gw_chain *c, const gw_chain_run_opts *o, gw_chain_result *r, gw_err *err);
+/* gw_chain_collide for the drop's first collision: a column falling back on
+ * the wall is not stopped as held (the drop follows its bounces: chain_collide.c,
+ * held_by_gravity). flight_cut 1: a run whose t_max falls in bead 1's flight
+ * after it left the wall, its return being the caller's next impact (cut half
+ * way through that flight): bead 1 off the wall counts as done (wall_done, the
+ * warnings) whatever the sign of its velocity, which at the flight's midpoint
+ * is zero but for the integration's error. */
+int chain_collide_drop(const gw_chain *c, const gw_chain_run_opts *o, int flight_cut, gw_chain_result *r,
+                       gw_err *err);
 
 /* The column's time scales for its expected length (chain_collide_plan.c): tc the
  * largest bead-to-bead T_c = (m/k)^(2/5) v^(-1/5) over the contacts, each with

@@ -11,6 +11,9 @@
  */
 #include "gw_chain.h"
 #include "gw_chain_study.h"
+#include "chain_model.h"
+
+const char chain_held_pending[] = "held by gravity: the column fell back onto the wall before its collision ended";
 
 /* Beyond an overlap of one radius the beads would have passed through each
  * other's centres: the numbers are those of the Hertz law outside its range
@@ -34,6 +37,12 @@ int gw_chain_result_warnings(const gw_chain_result *r, char **list)
     int rc = overlap_warning(r, list);
     if (rc != GW_OK || r->converged)
         return rc;
+    if (r->wall_pending == chain_held_pending) /* a longer run does not decide it */
+        return gw_warnings_add(list,
+                               "gravity holds the column: its momentum, turned away from the wall by the impact, "
+                               "was back toward it at t = %.6g s, before the collision ended: F_max, tau_N, the "
+                               "final velocities and the restitution are undecided, those at that time; raise "
+                               "--vimp or lower --gravity", r->t_end);
     return gw_warnings_add(list,
                            "the collision had not ended at t_max = %.6g s (%s): %s are those at t_max; raise --t-max",
                            r->t_end, r->wall_done ? "the column's own contacts still closed or closing" :
@@ -50,6 +59,17 @@ int gw_chain_unfinished_warnings(int unfinished, int total, char **list)
                            "%d of %d collisions had not ended at t_max (a contact still closed or closing): their "
                            "tau_N, restitution and what is fitted over them are those at t_max; raise --t-max",
                            unfinished, total);
+}
+
+int chain_held_warnings(int held, int total, char **list)
+{
+    if (held <= 0)
+        return GW_OK;
+    return gw_warnings_add(list,
+                           "%d of %d collisions were held by gravity (the column fell back onto the wall before its "
+                           "collision ended): their F_max, tau_max, tau_N and restitution are undecided, those at "
+                           "that time; raise --vimp or lower --gravity",
+                           held, total);
 }
 
 int gw_chain_softwall_warnings(int unfinished, int total, char **list)

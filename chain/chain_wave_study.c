@@ -29,6 +29,7 @@
 #include <string.h>
 
 #include "chain_setup_rows.h"
+#include "chain_model.h"
 #include "gw_locale.h"
 
 #define SATURATION_RUN 6
@@ -408,8 +409,10 @@ int gw_chain_wavespeed_run(const gw_chain_wavespeed_setup *s, gw_progress_fn pro
     if (rc == GW_OK)
         rc = gw_chain_sweep_n_progress(&r.params, &r.run, out->v_imp, nv, (int)a, (int)b, (int)s->jobs, progress,
                                        pctx, res, err);
+    int held = 0;
     for (int i = 0; rc == GW_OK && i < nv * per_v; i++) {
         out->unfinished += !res[i].converged;
+        held += res[i].wall_pending == chain_held_pending;
         out->t_max[i] = res[i].run_t_max;
         out->dt_out[i] = res[i].run_dt_out;
         out->dt[i] = res[i].run_dt;
@@ -420,7 +423,9 @@ int gw_chain_wavespeed_run(const gw_chain_wavespeed_setup *s, gw_progress_fn pro
     out->wall_time_s = (gw_clock_ms() - t0) / 1e3;
     if (rc == GW_OK)
         ws_fits(&r.params, out);
-    if (rc == GW_OK && (rc = gw_chain_unfinished_warnings(out->unfinished, out->ncase, &out->warnings)) != GW_OK)
+    if (rc == GW_OK &&
+        ((rc = gw_chain_unfinished_warnings(out->unfinished - held, out->ncase, &out->warnings)) != GW_OK ||
+         (rc = chain_held_warnings(held, out->ncase, &out->warnings)) != GW_OK))
         rc = gw_err_set(err, rc, "wavespeed: out of memory");
     for (int i = 0; i < nv * per_v; i++)
         gw_chain_result_free(&res[i]);
@@ -653,6 +658,7 @@ int gw_chain_softwall_run(const gw_chain_softwall_setup *s, gw_progress_fn progr
     if (isnan(col.kwall) && !s->sheets && col.sheet < 0)
         col.kwall = 1e9; /* the soft wall of the command */
     int nw = s->sheets ? gw_sheet_count() : 1, per = (int)(b - a + 1);
+    int held = 0; /* of the unfinished: stopped as held by gravity (chain_held_pending) */
     gw_chain_resolved rs;
     rc = gw_chain_setup_resolve(&col, &rs, err);
     if (rc != GW_OK) {
@@ -690,15 +696,19 @@ int gw_chain_softwall_run(const gw_chain_softwall_setup *s, gw_progress_fn progr
                                        res + (size_t)w * per, err);
         if (rc == GW_OK)
             sr[w] = analyse(res + (size_t)w * per, (int)a, (int)b, s->tol, out->t_q_rigid);
-        for (int i = 0; rc == GW_OK && i < per; i++)
+        for (int i = 0; rc == GW_OK && i < per; i++) {
             out->unfinished += !res[(size_t)w * per + i].wall_done; /* F_max, tau_max: the wall's */
+            held += res[(size_t)w * per + i].wall_pending == chain_held_pending;
+        }
         if (rc == GW_OK && progress && progress(pctx, w + 1, nw))
             rc = gw_err_set(err, GW_ECANCELED, "softwall: stopped by the progress callback");
     }
     out->wall_time_s = (gw_clock_ms() - t0) / 1e3;
     if (rc == GW_OK)
         sw_fill(s, &rs, res, sr, lay, out);
-    if (rc == GW_OK && (rc = gw_chain_softwall_warnings(out->unfinished, out->ncase, &out->warnings)) != GW_OK)
+    if (rc == GW_OK &&
+        ((rc = gw_chain_softwall_warnings(out->unfinished - held, out->ncase, &out->warnings)) != GW_OK ||
+         (rc = chain_held_warnings(held, out->ncase, &out->warnings)) != GW_OK))
         rc = gw_err_set(err, rc, "softwall: out of memory");
     for (int i = 0; res && i < nw * per; i++)
         gw_chain_result_free(&res[i]);

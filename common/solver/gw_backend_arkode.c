@@ -37,7 +37,8 @@ typedef struct ark_impl {
     SUNLinearSolver LS;
     int *rootinfo;
     double t;
-    int erk; /* mem is an ERKStep (the erk method), else an ARKStep */
+    int erk;        /* mem is an ERKStep (the erk method), else an ARKStep */
+    int first_step; /* a first step given, set at the first advance (gw_sun_init_step) */
 } ark_impl;
 
 /* ARKStepGetReturnFlagName returns a malloc'ed string: copy it and free it. */
@@ -89,7 +90,7 @@ static const char *erk_configure(gw_solver *s, ark_impl *a, int *flag)
     }
     ERK_CHECK(ERKStepSetMaxNumSteps(a->mem, s->p.max_steps));
     if (s->p.dt > 0) { /* a first step given: cut as far as needed (cv_create says why) */
-        ERK_CHECK(ERKStepSetInitStep(a->mem, gw_sun_init_step(s->p.dt, a->t)));
+        a->first_step = 1; /* ERKStepSetInitStep at the first advance, which knows tout */
         ERK_CHECK(ERKStepSetMaxErrTestFails(a->mem, GW_SUN_GIVEN_STEP_ERR_FAILS));
     }
     if (s->p.dt_max > 0)
@@ -118,7 +119,7 @@ static const char *ark_configure(gw_solver *s, ark_impl *a, int method, int *fla
     }
     ARK_CHECK(ARKStepSetMaxNumSteps(a->mem, s->p.max_steps));
     if (s->p.dt > 0) {
-        ARK_CHECK(ARKStepSetInitStep(a->mem, gw_sun_init_step(s->p.dt, a->t)));
+        a->first_step = 1;
         ARK_CHECK(ARKStepSetMaxErrTestFails(a->mem, GW_SUN_GIVEN_STEP_ERR_FAILS));
     }
     if (s->p.dt_max > 0)
@@ -216,7 +217,14 @@ static int ark_advance(gw_solver *s, double tout, double *t, double *y, int *roo
         gw_sun_copy_out(a->y, y, s->sys.dim);
         return GW_OK;
     }
-    int flag = a->erk ? ERKStepEvolve(a->mem, tout, a->y, &tret, ARK_NORMAL)
+    int flag = ARK_SUCCESS;
+    if (a->first_step) {
+        const double h0 = gw_sun_init_step(s->p.dt, a->t, tout);
+        a->first_step = 0;
+        flag = a->erk ? ERKStepSetInitStep(a->mem, h0) : ARKStepSetInitStep(a->mem, h0);
+    }
+    if (flag == ARK_SUCCESS)
+        flag = a->erk ? ERKStepEvolve(a->mem, tout, a->y, &tret, ARK_NORMAL)
                       : ARKStepEvolve(a->mem, tout, a->y, &tret, ARK_NORMAL);
     a->t = tret;
     *t = tret;
@@ -246,6 +254,7 @@ static int ark_reset(gw_solver *s, double t, const double *y)
     memcpy(N_VGetArrayPointer(a->y), y, (size_t)s->sys.dim * sizeof *y);
     a->t = t;
     int flag = a->erk ? ERKStepReset(a->mem, t, a->y) : ARKStepReset(a->mem, t, a->y);
+    a->first_step = 0;
     if (flag >= 0 && s->p.dt > 0) /* the run's initial step only (cv_reset says why) */
         flag = a->erk ? ERKStepSetInitStep(a->mem, 0.0) : ARKStepSetInitStep(a->mem, 0.0);
     if (flag >= 0 && s->p.dt > 0) /* ARKode's own limit again, with its own step */

@@ -26,6 +26,7 @@ typedef struct cv_impl {
     int *rootinfo;
     double t;
     gw_solver_stats base; /* counters accumulated over re-initialisations */
+    int first_step;       /* a first step given, set at the first advance (gw_sun_init_step) */
 } cv_impl;
 
 static void cv_raw_stats(const cv_impl *c, gw_solver_stats *st)
@@ -163,7 +164,7 @@ static int cv_create(gw_solver *s, double t0, const double *y0, gw_err *err)
     }
     CV_TRY(CVodeSetMaxNumSteps(c->mem, s->p.max_steps), "CVodeSetMaxNumSteps");
     if (s->p.dt > 0) {
-        CV_TRY(CVodeSetInitStep(c->mem, gw_sun_init_step(s->p.dt, t0)), "CVodeSetInitStep");
+        c->first_step = 1; /* CVodeSetInitStep at the first advance, which knows tout */
         /* a first step given is cut by at most 10 a failed error test, and CVODE
          * gives up after 7: chain --sheet pvc --sheet-law material --dt 1e-6 (a
          * value in the row's range) failed at t = 0 with h = 1e-12, where the
@@ -202,7 +203,13 @@ static int cv_advance(gw_solver *s, double tout, double *t, double *y, int *root
         gw_sun_copy_out(c->y, y, s->sys.dim);
         return GW_OK;
     }
-    int flag = CVode(c->mem, tout, c->y, &tret, CV_NORMAL);
+    int flag = CV_SUCCESS;
+    if (c->first_step) {
+        c->first_step = 0;
+        flag = CVodeSetInitStep(c->mem, gw_sun_init_step(s->p.dt, c->t, tout));
+    }
+    if (flag == CV_SUCCESS)
+        flag = CVode(c->mem, tout, c->y, &tret, CV_NORMAL);
     c->t = tret;
     *t = tret;
     gw_sun_copy_out(c->y, y, s->sys.dim);
@@ -231,6 +238,7 @@ static int cv_reset(gw_solver *s, double t, const double *y)
     cv_raw_stats(c, &before);
     int flag = CVodeReInit(c->mem, t, c->y);
     cv_carry(c, &before);
+    c->first_step = 0;
     /* dt is the run's initial step; a restart at an event estimates its own, as
      * one without dt does. Given again there, a dt far above the events' scale
      * (chain --n 6 --dt 1e-5, dt-max 6.6e-6) made CVODE look for roots that are

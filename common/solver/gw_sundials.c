@@ -137,9 +137,9 @@ int gw_sun_ewt(N_Vector y, N_Vector w, void *ud)
     return gw_sun_nv_ewt(y, w, s->p.rtol, s->p.atol, s->sys.scale);
 }
 
-double gw_sun_init_step(double dt, double t)
+double gw_sun_init_step(double dt, double t, double tout)
 {
-    const double floor = 100 * DBL_EPSILON * fabs(t);
+    const double floor = 100 * DBL_EPSILON * fmax(fabs(t), fabs(tout));
     return dt > 0 && dt < floor ? floor : dt;
 }
 

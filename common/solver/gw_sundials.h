@@ -75,13 +75,23 @@ int gw_sun_ewt(N_Vector y, N_Vector w, void *ud);
  * estimates its own step. */
 enum { GW_SUN_GIVEN_STEP_ERR_FAILS = 30, GW_SUN_OWN_STEP_ERR_FAILS = 7 };
 
-/* The initial step for a (re)start at t: the step given (dt > 0), but at least
- * 100 units of rounding of t, CVODE's own lower bound for a step it estimates
- * (HLB_FACTOR * uround * |t|); 0 (dt not given) stays 0. A step below it does
- * not move t (t + dt == t): restarted at an event with the chain's --dt 1e-300,
- * CVODE stepped in place at t = 5.03e-5 s for good (the sixteenth session of
- * stage 2), while its first start at t = 0 took the step as given. */
-double gw_sun_init_step(double dt, double t);
+/* The first step of a run from t toward its first output time tout: the step
+ * given (dt > 0), but at least 100 units of rounding of the larger of |t| and
+ * |tout|, CVODE's own lower bound for a step it estimates (HLB_FACTOR * uround *
+ * max(|t0|, |tout|)); 0 (dt not given) stays 0. The backends set it at their
+ * first advance, when tout is known. Below it:
+ * - at t > 0 a step does not move t (t + dt == t): restarted at an event with
+ *   the chain's --dt 1e-300, CVODE stepped in place at t = 5.03e-5 s for good
+ *   (the sixteenth session of stage 2);
+ * - at t = 0, SUNDIALS' difference-quotient Jacobian (the column's general
+ *   model, whose wall has states of its own, has no analytic one) perturbs the
+ *   state by about 1000 h uround N |f| over the error weights, which for h below
+ *   about 1e-290 s falls out of the normal doubles: every Newton iteration of
+ *   bdf and dirk failed and chain --sheet pvc --sheet-law material --dt 1e-300
+ *   exited 1 at t = 0 ("the corrector convergence test failed repeatedly").
+ * The raised step is one the solver could have estimated itself; the result
+ * is the default run's to the tolerances (test_chain_limits). */
+double gw_sun_init_step(double dt, double t, double tout);
 
 /* 1 if every component of the absolute tolerance vector is > 0, else 0. */
 int gw_sun_abstol_positive(N_Vector abstol);

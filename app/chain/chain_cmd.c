@@ -39,6 +39,11 @@ cJSON *chain_result_json(const chain_cli *c, const gw_chain_result *r, double wa
     cJSON_AddNumberToObject(o, "wall_contacts", r->wall_contacts);
     cJSON_AddBoolToObject(o, "converged", r->converged);
     cJSON_AddBoolToObject(o, "wall_done", r->wall_done);
+    /* why the wall's side is not done (the warning line's reason), null when done */
+    if (r->wall_pending)
+        cJSON_AddStringToObject(o, "wall_pending", r->wall_pending);
+    else
+        cJSON_AddNullToObject(o, "wall_pending");
     cJSON_AddNumberToObject(o, "t_end", r->t_end);
     cJSON_AddNumberToObject(o, "events", (double)r->n_events);
     cJSON_AddNumberToObject(o, "missed_events", (double)r->missed_events);

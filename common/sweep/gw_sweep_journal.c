@@ -24,6 +24,7 @@
 #include "gw_sweep.h"
 #include "gw_locale.h"
 #include "gw_sweep_impl.h"
+#include "gw_io_impl.h"
 
 /* A journal row as read: its case, text (without ",checksum\n") and line. */
 typedef struct jrow {
@@ -77,6 +78,7 @@ static int journal_create(const char *path, const char *text, int *fdp, gw_err *
     int fd = mkstemp(tmp);
     if (fd < 0)
         return gw_err_set(err, GW_EIO, "%s: cannot create: %s", path, strerror(errno));
+    gw_temps_add(tmp); /* a signal now removes it (the program's handler, gw_io_temps.c) */
     fchmod(fd, gw_new_file_mode(path));
     /* locked before it has its name: another sweep that finds it finds it
      * locked (a sweep that locked it first would refuse it as another
@@ -93,6 +95,7 @@ static int journal_create(const char *path, const char *text, int *fdp, gw_err *
         e = errno;
     }
     unlink(tmp);
+    gw_temps_drop(tmp);
     if (placed) {
         *fdp = fd;
         return GW_OK;

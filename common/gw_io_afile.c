@@ -6,8 +6,8 @@
  * symbolic link its target is replaced and the link kept; SIGINT, SIGTERM and
  * SIGHUP held from open to commit, the temporary in the table a signal
  * handler empties (gw_io_temps.c) until it is placed; the temporaries a
- * killed writer left removed at the next open. Also gw_write_text and the comment lines of file
- * headers. Separate from the output sets (gw_io_outset.c), which stage these
+ * killed writer left removed at the next open. Also gw_write_text and the
+ * comment lines of file headers. Separate from the output sets (gw_io_outset.c), which stage these
  * files and place them together, and from the checks of output locations
  * made before a run (gw_io_paths.c).
  */

@@ -6,8 +6,9 @@
  * removes the earlier run's files of the set this run did not write; its abort
  * removes the staged temporaries. The staged temporaries stay in the table a
  * signal handler empties (gw_io_temps.c) until they are placed or removed, so
- * a program ended by SIGINT before its commit leaves --out as it was. Separate from the atomic file: one file
- * needs no set, and a set outlives its files.
+ * a program ended by SIGINT before its commit leaves --out as it was.
+ * Separate from the atomic file: one file needs no set, and a set outlives
+ * its files.
  */
 #define _POSIX_C_SOURCE 200809L
 #include <errno.h>

@@ -37,6 +37,7 @@
  * does (the next write of its name removes it). */
 #define TEMPS_MAX 64
 #define TEMP_PATH_MAX (4096 + 64) /* gw_afile.tmp */
+_Static_assert(sizeof(((gw_afile *)0)->tmp) <= TEMP_PATH_MAX, "an atomic file's temporary fits a slot");
 
 enum { SLOT_FREE, SLOT_BUSY, SLOT_LIVE };
 

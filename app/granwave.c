@@ -211,6 +211,13 @@ int main(int argc, char **argv)
      * SIGXFSZ killing the program with its temporaries left: the output set
      * then removes them and says which file (Python ignores SIGXFSZ already) */
     signal(SIGXFSZ, SIG_IGN);
+    /* SIGINT, SIGTERM or SIGHUP (where not ignored) end the program as before,
+     * killed by the signal, but first remove the temporaries of the files under
+     * way and of the output set not yet placed: --out is then as it was
+     * before the run (before, a layer-impact stopped after its first snapshot
+     * left snapshot_0.vtk.tmp.HOST.PID.XXXXXX there until the next run). A
+     * sweep replaces SIGINT's and SIGTERM's while its cases run (sweep_cmd.c). */
+    gw_temps_on_signals();
     /* A stack limit far below the usual 8 MiB (ulimit -s 64) overflowed in
      * layer-impact --out (SIGSEGV): the main thread's and, through glibc's
      * default, the worker threads' stacks. Measured to run every command from

@@ -256,8 +256,9 @@ static void say_error(const gw_err *err)
 
 /* What a run would do now, after `--check` read the journal in out: start,
  * resume (ndone of ncases done; a torn last row of torn bytes cut and its case
- * run again), or write the table only. */
-static void check_report(const char *out, long ncases, int exists, long ndone, size_t torn)
+ * run again, or a torn line of the head, torn_head, cut), or write the table
+ * only. */
+static void check_report(const char *out, long ncases, int exists, long ndone, size_t torn, int torn_head)
 {
     if (!exists) {
         printf("sweep: %s: no journal yet: a run starts all %ld cases\n", out, ncases);
@@ -266,8 +267,11 @@ static void check_report(const char *out, long ncases, int exists, long ndone, s
     printf("sweep: %s/journal.csv: %ld of %ld cases done", out, ndone, ncases);
     if (ndone < ncases)
         printf(", %ld to run on a resume", ncases - ndone);
-    if (torn)
-        printf("; its torn last row (%zu bytes) is cut then and its case run again", torn);
+    if (torn && torn_head)
+        printf("; the torn last line of its head (%zu byte%s) is cut then, no case to run again for it", torn,
+               torn == 1 ? "" : "s");
+    else if (torn)
+        printf("; its torn last row (%zu byte%s) is cut then and its case run again", torn, torn == 1 ? "" : "s");
     printf(ndone == ncases ? ": a rerun writes the table only\n" : "\n");
 }
 
@@ -405,15 +409,15 @@ int gw_cmd_sweep(int argc, char **argv, const gw_sweep_model *const *models, int
      * which the run then refused */
     if (code == 0 && check_only && rank == 0) {
         long ndone = 0;
-        int exists = 0;
+        int exists = 0, torn_head = 0;
         size_t torn = 0;
         if (!(done = calloc((size_t)cfg.ncases, 1)))
             code = 1, gw_err_set(&err, GW_ENOMEM, "out of memory");
-        else if ((rc = gw_sweep_journal_resume_check(out, &cfg, done, &ndone, &exists, &torn, &err)) != GW_OK)
+        else if ((rc = gw_sweep_journal_resume_check(out, &cfg, done, &ndone, &exists, &torn, &torn_head, &err)) != GW_OK)
             code = rc == GW_EIO ? 1 : exit_code(rc);
         if (code == 0) {
             printf("sweep: %s is valid: model %s, %ld cases\n", pos[0], cfg.model, cfg.ncases);
-            check_report(out, cfg.ncases, exists, ndone, torn);
+            check_report(out, cfg.ncases, exists, ndone, torn, torn_head);
         }
     }
     if (check_only) { /* every rank to the end: a refusal of rank 0 included (the other ranks wait there) */

@@ -146,7 +146,9 @@ int gw_solver_tolerances_check(double rtol, double atol, const char *rname, cons
 /* A file written under a temporary name and renamed into place on commit, so a
  * reader sees either the previous file or the complete new one. SIGINT, SIGTERM
  * and SIGHUP are held from open to commit/abort (delivered right after), so an
- * interrupt never leaves the temporary behind; only kill -9 can. The temporary
+ * interrupt never leaves a half-written file in place; the temporary is in the
+ * table gw_temps_remove empties until it is placed (a program that installed
+ * gw_temps_on_signals leaves none behind; only kill -9 can). The temporary
  * is "PATH.tmp.HOST.PID.XXXXXX" in the same directory (a unique name: two
  * writers of one path never share a temporary); the temporaries of PATH that a
  * process of this host no longer running left (kill -9) are removed at the
@@ -191,10 +193,11 @@ void gw_afile_abort(gw_afile *f);
  * it holds the last one's files, never some of each. A set may stay open
  * through a long run (layer-impact's snapshots): SIGINT, SIGTERM and SIGHUP
  * are held only while each file is written and while the staged files are
- * placed or removed; a run killed (kill -9) before its commit leaves its
- * temporaries ("NAME.tmp.HOST.PID.XXXXXX", never read as results, removed by
- * the next run's write of NAME) and the earlier
- * run's files as they were. One set per thread. */
+ * placed or removed; a run ended before its commit leaves the earlier run's
+ * files as they were, and its staged temporaries only when killed with kill -9
+ * or by a signal without gw_temps_on_signals' handler ("NAME.tmp.HOST.PID.XXXXXX",
+ * never read as results, removed by the next run's write of NAME). One set per
+ * thread. */
 typedef struct gw_outset {
     char dir[4096];
     const char *const *names;
@@ -217,6 +220,26 @@ int gw_outset_check_input(const char *dir, const char *const *names, const char 
 int gw_outset_commit(gw_outset *s, gw_err *err);
 /* Remove the staged temporaries; the set is closed (safe on a closed set). */
 void gw_outset_abort(gw_outset *s);
+
+/* The temporaries of this process not yet placed or removed: an atomic file's
+ * from its open to its commit or abort, an output set's staged files until the
+ * set is placed or aborted (up to 64 at once; one beyond is left as kill -9
+ * leaves it). gw_temps_remove unlinks them all; it is async-signal-safe, for a
+ * program's own handler of a signal that ends it. It never touches a file
+ * already placed: a staged file renamed into place is no longer under its
+ * temporary name. The output set's guarantee holds: a signal that comes while
+ * the set is placed is held until the last rename (the calling thread's mask),
+ * so the directory then holds the complete new set, and before it, the earlier
+ * files as they were. */
+void gw_temps_remove(void);
+/* Install, for SIGINT, SIGTERM and SIGHUP where each has its default action
+ * (a signal ignored, or with a handler of the program's, is left as it is), a
+ * handler that calls gw_temps_remove and then ends the process by the signal's
+ * default action (the exit status still says "killed by SIGINT"). For programs:
+ * the granwave program calls it first; the library never installs it on its
+ * own, so a binding (the Python module) keeps its interpreter's handling.
+ * GW_OK, or GW_EIO when sigaction failed for one of them. */
+int gw_temps_on_signals(void);
 
 /* Write text as comment lines: "# " + each line + "\n" (a final newline in
  * text adds no empty comment; NULL or "" writes nothing). The provenance

@@ -4,9 +4,10 @@
  * reader sees the previous file or the complete new one; as a stream, or as a
  * temporary path for writers that create the file by name (HDF5); through a
  * symbolic link its target is replaced and the link kept; SIGINT, SIGTERM and
- * SIGHUP held from open to commit; the temporaries a killed writer left
- * removed at the next open. Also gw_write_text and the comment lines of file
- * headers. Separate from the output sets (gw_io_outset.c), which stage these
+ * SIGHUP held from open to commit, the temporary in the table a signal
+ * handler empties (gw_io_temps.c) until it is placed; the temporaries a
+ * killed writer left removed at the next open. Also gw_write_text and the
+ * comment lines of file headers. Separate from the output sets (gw_io_outset.c), which stage these
  * files and place them together, and from the checks of output locations
  * made before a run (gw_io_paths.c).
  */
@@ -174,6 +175,14 @@ int gw_io_status(int e)
     return e == ENOMEM ? GW_ENOMEM : GW_EIO;
 }
 
+/* The temporary removed, and forgotten by the signals' table */
+static void discard(gw_afile *f)
+{
+    unlink(f->tmp);
+    gw_temps_drop(f->tmp);
+    f->tmp[0] = '\0';
+}
+
 int gw_afile_open(gw_afile *f, const char *path, gw_err *err)
 {
     if (!f || !path)
@@ -197,6 +206,7 @@ int gw_afile_open(gw_afile *f, const char *path, gw_err *err)
         release_signals(f);
         return gw_err_set(err, gw_io_status(e), "%s: cannot create: %s", path, strerror(e));
     }
+    gw_temps_add(f->tmp); /* a signal that ends the program removes it (gw_temps_on_signals) */
     /* mkstemp made it 0600: the permissions a shell's > would give (the
      * replaced file's, or 0666 less the umask) */
     fchmod(fd, gw_new_file_mode(path));
@@ -204,8 +214,7 @@ int gw_afile_open(gw_afile *f, const char *path, gw_err *err)
     if (!f->fp) {
         int e = errno;
         close(fd);
-        unlink(f->tmp);
-        f->tmp[0] = '\0';
+        discard(f);
         release_signals(f);
         return gw_err_set(err, gw_io_status(e), "%s: cannot open: %s", path, strerror(e));
     }
@@ -238,6 +247,8 @@ static int place(gw_afile *f, int *saved)
         *saved = errno ? errno : EIO;
         return -1;
     }
+    if (st == 0) /* placed; a staged one stays in the table, the set's now */
+        gw_temps_drop(f->tmp);
     return 0;
 }
 
@@ -253,7 +264,7 @@ static int commit_named(gw_afile *f, gw_err *err)
     if (!bad && place(f, &saved) != 0)
         bad = 1;
     if (bad)
-        unlink(f->tmp);
+        discard(f);
     f->tmp[0] = '\0';
     f->named = 0;
     release_signals(f);
@@ -286,8 +297,7 @@ int gw_afile_commit(gw_afile *f, gw_err *err)
         bad = 1, saved = errno ? errno : EIO;
     f->fp = NULL;
     if (bad || place(f, &saved) != 0) {
-        unlink(f->tmp);
-        f->tmp[0] = '\0';
+        discard(f);
         release_signals(f);
         return gw_err_set(err, GW_EIO, "%s: write failed: %s", f->path, strerror(saved));
     }
@@ -304,10 +314,8 @@ void gw_afile_abort(gw_afile *f)
         fclose(f->fp);
         f->fp = NULL;
     }
-    if (f->tmp[0]) {
-        unlink(f->tmp);
-        f->tmp[0] = '\0';
-    }
+    if (f->tmp[0])
+        discard(f);
     f->named = 0;
     release_signals(f);
 }

@@ -3,8 +3,9 @@
  * file layer share: the atomic file's (gw_io_afile.c) signal hold, symbolic
  * link target, umask and open status, used by the output sets
  * (gw_io_outset.c), the output locations' checks (gw_io_paths.c) and the
- * inputs (gw_io_input.c); the inputs' file kind, used by the checks; and the
- * open set's staging of a committed file (gw_io_outset.c).
+ * inputs (gw_io_input.c); the inputs' file kind, used by the checks; the
+ * open set's staging of a committed file (gw_io_outset.c); and the table of
+ * temporaries a signal handler removes (gw_io_temps.c).
  */
 #ifndef GW_IO_IMPL_H
 #define GW_IO_IMPL_H
@@ -34,6 +35,15 @@ int gw_io_status(int e);
 
 /* What a file of mode m is, for a message ("a FIFO", "a directory", ...). */
 const char *gw_io_file_kind(mode_t m);
+
+/* A temporary made (path) for gw_temps_remove to find until it is placed
+ * or removed (gw_io_temps.c): the slot taken, or -1 when the table is full
+ * (a signal then leaves it, as kill -9 does); gw_temps_drop forgets it (by
+ * its path; nothing for a path not there). A handler that interrupts an add
+ * skips the slot (not yet filled: the temporary stays, as before), one that
+ * interrupts a drop after the file's rename or unlink finds its name gone. */
+int gw_temps_add(const char *path);
+void gw_temps_drop(const char *path);
 
 /* Keep f's fsynced temporary in the set open on this thread instead of
  * renaming it: 1 staged, 0 no set open, -1 out of memory. */

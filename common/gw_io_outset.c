@@ -4,8 +4,11 @@
  * file (gw_io_afile.c) it commits is staged under its temporary name; the
  * set's commit renames them all into place under a lock on the directory and
  * removes the earlier run's files of the set this run did not write; its abort
- * removes the staged temporaries. Separate from the atomic file: one file
- * needs no set, and a set outlives its files.
+ * removes the staged temporaries. The staged temporaries stay in the table a
+ * signal handler empties (gw_io_temps.c) until they are placed or removed, so
+ * a program ended by SIGINT before its commit leaves --out as it was.
+ * Separate from the atomic file: one file needs no set, and a set outlives
+ * its files.
  */
 #define _POSIX_C_SOURCE 200809L
 #include <errno.h>
@@ -129,8 +132,10 @@ void gw_outset_abort(gw_outset *s)
     if (!s->active)
         return;
     outset_hold(s);
-    for (int i = 0; i < s->n; i++)
+    for (int i = 0; i < s->n; i++) {
         unlink(s->tmp[i]);
+        gw_temps_drop(s->tmp[i]);
+    }
     outset_close(s);
     outset_release(s);
 }
@@ -181,6 +186,8 @@ int gw_outset_commit(gw_outset *s, gw_err *err)
     if (rc != GW_OK) /* what is not in place is removed (a placed file's temporary name is gone) */
         for (int i = 0; i < s->n; i++)
             unlink(s->tmp[i]);
+    for (int i = 0; i < s->n; i++) /* placed or removed: nothing for a signal to remove */
+        gw_temps_drop(s->tmp[i]);
     if (dfd >= 0)
         close(dfd); /* and its lock */
     outset_close(s);

@@ -11,14 +11,19 @@
 #  2 a finished sweep: "N of N cases done: a rerun writes the table only",
 #    journal and table unchanged;
 #  3 an interrupted sweep (rows missing, a torn last row): the cases done and
-#    to run, the torn row's bytes; the journal not cut; the resume that
-#    follows reports the same counts ("K already done, R to run");
+#    to run, the torn row's bytes ("1 byte" in the singular); the journal not
+#    cut; the resume that follows reports the same counts ("K already done, R
+#    to run"); a torn line of the journal's head named as such, not as a row
+#    whose case runs again, and cut by the resume, which runs every case once;
 #  4 refusals, each exit 2 with one stderr line, byte for byte the line the
 #    resume prints, nothing written: another config's journal, a row edited by
 #    hand, a file that is no journal, a directory of its name, a journal locked
 #    by a running sweep; under mpirun too (where available).
 # 11 of the 15 checks fail on the code before (the four that pass: nothing made
-# by --check, the two resumes' own counts and the resumed journal's rows).
+# by --check, the two resumes' own counts and the resumed journal's rows); of
+# the three on a one-byte row and a torn head line (issue 18, later), the two
+# --check lines fail on the code before ("(1 bytes)", "its torn last row (10
+# bytes) is cut then and its case run again").
 # shellcheck source=test_lib.sh
 . "$(dirname "$0")/test_lib.sh"
 test_setup "$@"
@@ -89,6 +94,19 @@ grep -q "^sweep: 4 cases, 3 already done, 1 to run" r.txt && ok "  the resume ra
     ko "  the resume said '$(head -1 r.txt)'"
 cmp -s out/journal.csv full.csv || [ "$(sort out/journal.csv | md5sum)" = "$(sort full.csv | md5sum)" ] &&
     ok "  the resumed journal holds the sweep's rows" || ko "  the resumed journal differs from the finished sweep's"
+# the count said in the singular for one byte ("(1 bytes)" before)
+head -n 4 full.csv >out/journal.csv   # the head and 1 row
+tail -n 1 full.csv | head -c 1 >>out/journal.csv
+check "a torn last row of one byte" "^sweep: $tmp/out/journal.csv: 1 of 4 cases done, 3 to run on a resume; its torn last row \(1 byte\) is cut then and its case run again$"
+# a torn line of the journal's head (its # param line cut short): no row, so
+# no case to run again for it (before: "its torn last row ... and its case run again")
+head -n 2 full.csv >out/journal.csv
+printf '# param vi' >>out/journal.csv
+check "a torn line of the journal's head" "^sweep: $tmp/out/journal.csv: 0 of 4 cases done, 4 to run on a resume; the torn last line of its head \(10 bytes\) is cut then, no case to run again for it$"
+"$GW" sweep s.ini >/dev/null 2>r.txt </dev/null
+grep -q "^sweep: 4 cases, 0 already done, 4 to run" r.txt && [ "$(journal_rows out/journal.csv)" -eq 4 ] &&
+    ! grep -q '^# param vi' out/journal.csv && ok "  the resume cut the torn head line and ran the 4 cases, each once" ||
+    ko "  the resume after a torn head line said '$(head -1 r.txt)', journal rows $(journal_rows out/journal.csv)"
 
 # 4 refusals, as the resume's
 cp full.csv out/journal.csv

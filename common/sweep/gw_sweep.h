@@ -189,10 +189,12 @@ int gw_sweep_journal_open(const char *dir, const gw_sweep_config *cfg, char *don
  * DIR; GW_EIO when it cannot be opened for appending), but nothing created,
  * cut or written: done[k] = 1 and *ndone as a resume would skip them,
  * *exists (may be NULL) 0 when there is no journal yet (then *ndone = 0),
- * *torn (may be NULL) the bytes of a torn last row a resume would cut (its
- * case runs again). Read under a shared lock, closed on return. */
+ * *torn (may be NULL) the bytes of a torn last line a resume would cut: a
+ * row, whose case runs again, or, *torn_head (may be NULL) 1, a line of the
+ * journal's head (# input, # grid, # param lines), which holds no case. Read
+ * under a shared lock, closed on return. */
 int gw_sweep_journal_resume_check(const char *dir, const gw_sweep_config *cfg, char *done, long *ndone, int *exists,
-                                  size_t *torn, gw_err *err);
+                                  size_t *torn, int *torn_head, gw_err *err);
 
 /* Every input file of cfg still has the content it had when cfg was read:
  * GW_OK, or GW_EINVAL "KEY 'VALUE' changed ... (content fnv1a64 A when the

@@ -24,6 +24,7 @@
 #include "gw_sweep.h"
 #include "gw_locale.h"
 #include "gw_sweep_impl.h"
+#include "gw_io_impl.h"
 
 /* A journal row as read: its case, text (without ",checksum\n") and line. */
 typedef struct jrow {
@@ -77,6 +78,7 @@ static int journal_create(const char *path, const char *text, int *fdp, gw_err *
     int fd = mkstemp(tmp);
     if (fd < 0)
         return gw_err_set(err, GW_EIO, "%s: cannot create: %s", path, strerror(errno));
+    gw_temps_add(tmp); /* a signal now removes it (the program's handler, gw_io_temps.c) */
     fchmod(fd, gw_new_file_mode(path));
     /* locked before it has its name: another sweep that finds it finds it
      * locked (a sweep that locked it first would refuse it as another
@@ -93,6 +95,7 @@ static int journal_create(const char *path, const char *text, int *fdp, gw_err *
         e = errno;
     }
     unlink(tmp);
+    gw_temps_drop(tmp);
     if (placed) {
         *fdp = fd;
         return GW_OK;
@@ -102,7 +105,7 @@ static int journal_create(const char *path, const char *text, int *fdp, gw_err *
 }
 
 static int journal_check(const char *path, const char *dir, const char *head, const gw_sweep_config *cfg,
-                         char *done, long *ndone, int fd, size_t *torn, gw_err *err);
+                         char *done, long *ndone, int fd, size_t *torn, int *torn_head, gw_err *err);
 
 int gw_sweep_journal_scan(const char *dir, const gw_sweep_config *cfg, char *done, long *ndone, gw_err *err)
 {
@@ -116,10 +119,11 @@ int gw_sweep_journal_scan(const char *dir, const gw_sweep_config *cfg, char *don
 /* The journal of a sweep in dir as a resume takes it (fdp, torn NULL: made
  * when absent, its torn last row cut, kept open and locked in *fdp), or as
  * `sweep --check` reads it (torn set: nothing made or cut, *torn the bytes a
- * resume would cut, *exists 0 when there is none; read under a shared lock
- * and closed). One path for both: the same checks, the same refusals. */
+ * resume would cut, *torn_head 1 when they are a line of the head, *exists 0
+ * when there is none; read under a shared lock and closed). One path for
+ * both: the same checks, the same refusals. */
 static int journal_access(const char *dir, const gw_sweep_config *cfg, char *done, long *ndone, int *fdp,
-                          int *exists, size_t *torn, gw_err *err)
+                          int *exists, size_t *torn, int *torn_head, gw_err *err)
 {
     char path[4096];
     int fd = -1;
@@ -189,7 +193,7 @@ static int journal_access(const char *dir, const gw_sweep_config *cfg, char *don
             return gw_err_set(err, GW_EIO, "%s: cannot lock: %s", path, strerror(e));
         }
     }
-    int rc = journal_check(path, dir, head, cfg, done, ndone, fd, torn, err);
+    int rc = journal_check(path, dir, head, cfg, done, ndone, fd, torn, torn_head, err);
     if ((rc != GW_OK || !fdp) && fd >= 0) {
         close(fd);
         fd = -1;
@@ -202,26 +206,29 @@ static int journal_access(const char *dir, const gw_sweep_config *cfg, char *don
 int gw_sweep_journal_open(const char *dir, const gw_sweep_config *cfg, char *done, long *ndone, int *fdp,
                           gw_err *err)
 {
-    return journal_access(dir, cfg, done, ndone, fdp, NULL, NULL, err);
+    return journal_access(dir, cfg, done, ndone, fdp, NULL, NULL, NULL, err);
 }
 
 int gw_sweep_journal_resume_check(const char *dir, const gw_sweep_config *cfg, char *done, long *ndone, int *exists,
-                                  size_t *torn, gw_err *err)
+                                  size_t *torn, int *torn_head, gw_err *err)
 {
-    int e = 0;
+    int e = 0, h = 0;
     size_t t = 0;
-    int rc = journal_access(dir, cfg, done, ndone, NULL, &e, &t, err);
+    int rc = journal_access(dir, cfg, done, ndone, NULL, &e, &t, &h, err);
     if (exists)
         *exists = e;
     if (torn)
         *torn = t;
+    if (torn_head)
+        *torn_head = h;
     return rc;
 }
 
 /* The journal at path, read (under the caller's lock on fd) and checked;
- * a torn last row cut (torn NULL) or its bytes counted in *torn. */
+ * a torn last line cut (torn NULL) or its bytes counted in *torn, *torn_head
+ * 1 when it is a line of the head (# input, # grid, # param), not a row. */
 static int journal_check(const char *path, const char *dir, const char *head, const gw_sweep_config *cfg,
-                         char *done, long *ndone, int fd, size_t *torn, gw_err *err)
+                         char *done, long *ndone, int fd, size_t *torn, int *torn_head, gw_err *err)
 {
     size_t len = 0;
     char *buf = gw_sweep_slurp(path, &len, err);
@@ -366,11 +373,17 @@ static int journal_check(const char *path, const char *dir, const char *head, co
         done[rows[i].k] = 1;
     }
     free(rows);
+    /* a torn line of the head ("# param vi": the head is written whole, so
+     * only an edit or a damaged disk leaves one), not a row, which begins with
+     * its case number: cut alike, but no case to run again */
+    const int head_torn = good < len && buf[good] == '#';
     free(buf);
     if (rc != GW_OK)
         return rc;
     if (torn) {
         *torn = len - good;
+        if (torn_head)
+            *torn_head = head_torn;
         return GW_OK;
     }
     if (good < len && ftruncate(fd, (off_t)good) != 0)

@@ -17,7 +17,7 @@ CF="-g -O1 -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=undefined -
 # the sweep module's files (common/CMakeLists.txt lists the same)
 sweep="$SRC/common/sweep/gw_sweep_config.c $SRC/common/sweep/gw_sweep_inputs.c $SRC/common/sweep/gw_sweep_rows.c
  $SRC/common/sweep/gw_sweep_head.c $SRC/common/sweep/gw_sweep_journal.c $SRC/common/sweep/gw_sweep_table.c"
-common="$SRC/common/gw_common.c $SRC/common/gw_io_afile.c $SRC/common/gw_io_outset.c $SRC/common/gw_io_paths.c $SRC/common/gw_io_input.c $SRC/common/gw_io_hash.c $SRC/app/gw_cli.c $SRC/common/gw_json.c $SRC/common/gw_param.c $SRC/common/gw_locale.c"
+common="$SRC/common/gw_common.c $SRC/common/gw_io_afile.c $SRC/common/gw_io_outset.c $SRC/common/gw_io_temps.c $SRC/common/gw_io_paths.c $SRC/common/gw_io_input.c $SRC/common/gw_io_hash.c $SRC/app/gw_cli.c $SRC/common/gw_json.c $SRC/common/gw_param.c $SRC/common/gw_locale.c"
 clang $CF -o "$out/fuzz_sweep_config" "$SRC/tests/fuzz/fuzz_sweep_config.c" $sweep $common -linih -lcjson -lm
 clang $CF -o "$out/fuzz_cli" "$SRC/tests/fuzz/fuzz_cli.c" $common -lcjson -lm
 # the sweep journal a resumed sweep reads back, and the table written from it

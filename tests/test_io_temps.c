@@ -1,0 +1,251 @@
+/*
+ * test_io_temps.c: the table of temporaries a signal handler removes
+ * (gw_io_temps.c, issue 18), no physics.
+ *  - gw_temps_remove removes an atomic file's temporary while it is written,
+ *    and an output set's staged temporaries, and leaves every placed file (a
+ *    file renamed into place, an earlier run's files) as it was; after a
+ *    commit or an abort it removes nothing; the file and the set are then
+ *    aborted safely.
+ *  - The table's bound: with 70 atomic files open at once, 64 temporaries are
+ *    removed and 6 stay (the documented bound), and all are aborted cleanly.
+ *  - gw_temps_on_signals in a child: an output set with a staged file and a
+ *    file being written, then SIGTERM (SIGINT, SIGHUP): the child ends killed
+ *    by that signal (wait status), its directory holds the earlier file byte
+ *    for byte and no temporary. Before the handler, the staged temporary
+ *    stayed. A signal ignored before the call stays ignored, and one with the
+ *    program's own handler keeps it.
+ */
+#define _POSIX_C_SOURCE 200809L
+#include <dirent.h>
+#include <signal.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include "gw_common.h"
+#include "gw_test.h"
+
+static char dir[256];
+
+/* The names in dir holding ".tmp." */
+static int count_temps(void)
+{
+    int n = 0;
+    DIR *d = opendir(dir);
+    if (!d)
+        return -1;
+    for (struct dirent *e; (e = readdir(d)) != NULL;)
+        n += strstr(e->d_name, ".tmp.") != NULL;
+    closedir(d);
+    return n;
+}
+
+static void path_of(char *out, size_t n, const char *name) { snprintf(out, n, "%s/%s", dir, name); }
+
+static int write_file(const char *name, const char *text)
+{
+    char p[512];
+    path_of(p, sizeof p, name);
+    return gw_write_text(p, text, NULL);
+}
+
+/* 1 when dir/name holds exactly text */
+static int holds(const char *name, const char *text)
+{
+    char p[512], buf[256] = "";
+    path_of(p, sizeof p, name);
+    FILE *fp = fopen(p, "r");
+    if (!fp)
+        return 0;
+    size_t k = fread(buf, 1, sizeof buf - 1, fp);
+    fclose(fp);
+    buf[k] = '\0';
+    return strcmp(buf, text) == 0;
+}
+
+static int exists(const char *path)
+{
+    struct stat st;
+    return stat(path, &st) == 0;
+}
+
+static const char *const names[] = {"a.csv", "b.csv", "c.csv", NULL};
+
+static void remove_in_process(void)
+{
+    gw_err err = {{0}};
+    write_file("a.csv", "earlier a\n");
+    write_file("b.csv", "earlier b\n");
+    /* an atomic file alone, being written */
+    char p[512];
+    path_of(p, sizeof p, "c.csv");
+    gw_afile f;
+    gw_test_true(gw_afile_open(&f, p, &err) == GW_OK && exists(f.tmp), "an atomic file open: its temporary exists");
+    fputs("new c\n", f.fp);
+    fflush(f.fp);
+    gw_temps_remove();
+    gw_test_true(!exists(f.tmp) && count_temps() == 0, "gw_temps_remove: the open file's temporary removed");
+    gw_test_true(holds("a.csv", "earlier a\n") && holds("b.csv", "earlier b\n") && !exists(p),
+                 "  the other files as they were, nothing placed");
+    gw_afile_abort(&f);
+    /* a set: a staged, b being written */
+    gw_outset s;
+    gw_test_true(gw_outset_begin(&s, dir, names, &err) == GW_OK, "an output set begun");
+    path_of(p, sizeof p, "a.csv");
+    gw_test_true(gw_write_text(p, "new a\n", &err) == GW_OK && count_temps() == 1, "  a.csv staged (1 temporary)");
+    path_of(p, sizeof p, "b.csv");
+    gw_test_true(gw_afile_open(&f, p, &err) == GW_OK && count_temps() == 2, "  b.csv being written (2 temporaries)");
+    gw_temps_remove();
+    gw_test_true(count_temps() == 0, "gw_temps_remove: the staged and the open temporaries removed");
+    gw_test_true(holds("a.csv", "earlier a\n") && holds("b.csv", "earlier b\n"), "  the earlier files as they were");
+    gw_afile_abort(&f);
+    gw_outset_abort(&s);
+    gw_test_true(count_temps() == 0 && holds("a.csv", "earlier a\n"), "  the set aborted after it: nothing else changed");
+    /* after a commit: the placed files stay */
+    gw_test_true(gw_outset_begin(&s, dir, names, &err) == GW_OK, "a second set begun");
+    path_of(p, sizeof p, "a.csv");
+    int w = gw_write_text(p, "new a\n", &err);
+    path_of(p, sizeof p, "b.csv");
+    w = w == GW_OK ? gw_write_text(p, "new b\n", &err) : w;
+    gw_test_true(w == GW_OK && gw_outset_commit(&s, &err) == GW_OK, "  two files written and the set placed");
+    gw_temps_remove();
+    gw_test_true(holds("a.csv", "new a\n") && holds("b.csv", "new b\n") && count_temps() == 0,
+                 "gw_temps_remove after the commit: the placed files stay");
+    gw_test_true(gw_write_text(p, "newer b\n", &err) == GW_OK, "a file alone written and placed");
+    gw_temps_remove();
+    gw_test_true(holds("b.csv", "newer b\n"), "gw_temps_remove after it: the file stays");
+}
+
+#define NOPEN 70
+
+static void table_bound(void)
+{
+    static gw_afile f[NOPEN];
+    gw_err err = {{0}};
+    int opened = 0;
+    for (int i = 0; i < NOPEN; i++) {
+        char name[32], p[512];
+        snprintf(name, sizeof name, "many%02d.txt", i);
+        path_of(p, sizeof p, name);
+        opened += gw_afile_open(&f[i], p, &err) == GW_OK;
+    }
+    gw_test_true(opened == NOPEN && count_temps() == NOPEN, "70 atomic files open: 70 temporaries");
+    gw_temps_remove();
+    int left = count_temps();
+    printf("  left after gw_temps_remove: %d\n", left);
+    gw_test_true(left == NOPEN - 64, "gw_temps_remove: 64 removed (the table's size), 6 left as kill -9 leaves them");
+    for (int i = NOPEN - 1; i >= 0; i--)
+        gw_afile_abort(&f[i]);
+    gw_test_true(count_temps() == 0, "  all aborted: no temporary");
+    /* the slots were given back: a new file's temporary is found again */
+    char p[512];
+    path_of(p, sizeof p, "again.txt");
+    gw_afile g;
+    int rc = gw_afile_open(&g, p, &err);
+    gw_temps_remove();
+    gw_test_true(rc == GW_OK && !exists(g.tmp), "  the slots given back: a new temporary is removed again");
+    gw_afile_abort(&g);
+}
+
+/* In a child: the handler installed, a set with a.csv staged and b.csv open,
+ * then sig raised at the process. Returns the child's wait status. */
+static int child_signal(int sig, int ignore_first)
+{
+    pid_t pid = fork();
+    if (pid == 0) {
+        if (ignore_first)
+            signal(sig, SIG_IGN);
+        gw_temps_on_signals();
+        gw_outset s;
+        gw_afile f;
+        char p[512];
+        if (gw_outset_begin(&s, dir, names, NULL) != GW_OK)
+            _exit(3);
+        path_of(p, sizeof p, "a.csv");
+        if (gw_write_text(p, "child a\n", NULL) != GW_OK)
+            _exit(4);
+        path_of(p, sizeof p, "b.csv");
+        if (gw_afile_open(&f, p, NULL) != GW_OK)
+            _exit(5);
+        fputs("child b\n", f.fp);
+        /* the file's hold (this thread's mask) lifted: the signal as another
+         * thread of the process would take it, which that mask does not stop */
+        sigset_t m;
+        sigemptyset(&m);
+        sigaddset(&m, sig);
+        pthread_sigmask(SIG_UNBLOCK, &m, NULL);
+        kill(getpid(), sig);
+        gw_afile_abort(&f); /* reached only when the signal is ignored */
+        gw_outset_abort(&s);
+        _exit(0);
+    }
+    int st = 0;
+    waitpid(pid, &st, 0);
+    return st;
+}
+
+static void on_own(int sig) { (void)sig; }
+
+static void on_signals(void)
+{
+    static const int sigs[] = {SIGTERM, SIGINT, SIGHUP};
+    static const char *const sname[] = {"SIGTERM", "SIGINT", "SIGHUP"};
+    write_file("a.csv", "earlier a\n");
+    write_file("b.csv", "earlier b\n");
+    for (int k = 0; k < 3; k++) {
+        int st = child_signal(sigs[k], 0);
+        char what[160];
+        snprintf(what, sizeof what, "%s with the handler: the child killed by it (status 0x%x)", sname[k], st);
+        gw_test_true(WIFSIGNALED(st) && WTERMSIG(st) == sigs[k], what);
+        snprintf(what, sizeof what, "  %s: no temporary (%d), the earlier files byte for byte", sname[k],
+                 count_temps());
+        gw_test_true(count_temps() == 0 && holds("a.csv", "earlier a\n") && holds("b.csv", "earlier b\n"), what);
+    }
+    int st = child_signal(SIGTERM, 1);
+    gw_test_true(WIFEXITED(st) && WEXITSTATUS(st) == 0 && count_temps() == 0,
+                 "SIGTERM ignored before gw_temps_on_signals stays ignored (the child ends normally)");
+    /* a handler of the program's own is kept; a signal at its default action
+     * gets the handler */
+    struct sigaction own, was_term, was_hup, got_term, got_hup;
+    memset(&own, 0, sizeof own);
+    own.sa_handler = on_own;
+    sigemptyset(&own.sa_mask);
+    sigaction(SIGTERM, &own, &was_term);
+    sigaction(SIGHUP, NULL, &was_hup);
+    gw_test_true(was_hup.sa_handler == SIG_DFL, "SIGHUP at its default action in this process");
+    gw_test_true(gw_temps_on_signals() == GW_OK, "gw_temps_on_signals: GW_OK");
+    sigaction(SIGTERM, NULL, &got_term);
+    sigaction(SIGHUP, NULL, &got_hup);
+    gw_test_true(got_term.sa_handler == on_own, "  SIGTERM keeps the program's own handler");
+    gw_test_true(got_hup.sa_handler != SIG_DFL && got_hup.sa_handler != SIG_IGN, "  SIGHUP gets the handler");
+    sigaction(SIGTERM, &was_term, NULL); /* this process's, back */
+    sigaction(SIGHUP, &was_hup, NULL);
+}
+
+int main(void)
+{
+    snprintf(dir, sizeof dir, "/tmp/gw_test_io_temps.XXXXXX");
+    if (!mkdtemp(dir)) {
+        perror("mkdtemp");
+        return 1;
+    }
+    remove_in_process();
+    table_bound();
+    on_signals();
+    /* clean up */
+    DIR *d = opendir(dir);
+    if (d) {
+        for (struct dirent *e; (e = readdir(d)) != NULL;) {
+            char p[512];
+            if (e->d_name[0] != '.' || strstr(e->d_name, ".tmp.")) {
+                snprintf(p, sizeof p, "%s/%s", dir, e->d_name);
+                unlink(p);
+            }
+        }
+        closedir(d);
+    }
+    rmdir(dir);
+    return gw_test_summary("test_io_temps");
+}

@@ -4,7 +4,8 @@
  * and the checks made before any work that a run's outputs can be written
  * where it was told (gw_out_check, gw_out_file_check: a writable directory or
  * one that can be made, a regular file or none, a symbolic link that leads
- * somewhere). Separate from the writes themselves (gw_io_afile.c): these run
+ * somewhere; gw_out_names_check: the files a run writes into its directory
+ * are regular files or none). Separate from the writes themselves (gw_io_afile.c): these run
  * before a run, or make the place its files go.
  */
 #define _POSIX_C_SOURCE 200809L
@@ -173,4 +174,22 @@ int gw_out_file_check(const char *path, const char *what, gw_err *err)
     if (stat(dir, &st) != 0)
         return gw_err_set(err, GW_EINVAL, "%s: directory '%s' of '%s': %s", what, dir, path, strerror(errno));
     return gw_out_check(dir, what, err);
+}
+
+int gw_out_names_check(const char *dir, const char *const *names, const char *what, gw_err *err)
+{
+    if (!dir || !names)
+        return GW_OK;
+    for (int k = 0; names[k]; k++) {
+        char p[4096 + 256], target[4096];
+        struct stat st;
+        if (gw_snprintf(p, sizeof p, "%s/%s", dir, names[k]) >= (int)sizeof p)
+            return gw_err_set(err, GW_EINVAL, "%s: '%s/%s': path too long", what, dir, names[k]);
+        if (lstat(p, &st) != 0) /* nothing there (or no directory yet): the run makes it */
+            continue;
+        int rc = gw_io_write_target(p, target, sizeof target, what, err);
+        if (rc != GW_OK)
+            return rc;
+    }
+    return GW_OK;
 }

@@ -10,6 +10,7 @@
  */
 #define _POSIX_C_SOURCE 200809L
 #include <errno.h>
+#include <limits.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
@@ -192,4 +193,46 @@ int gw_out_names_check(const char *dir, const char *const *names, const char *wh
             return rc;
     }
     return GW_OK;
+}
+
+int gw_io_path_canon(const char *path, char *out, size_t n)
+{
+    char buf[4096], rest[4096] = "", real[PATH_MAX];
+    size_t len = path ? strlen(path) : 0;
+    if (len == 0 || len >= sizeof buf)
+        return -1;
+    memcpy(buf, path, len + 1);
+    /* the nearest existing ancestor resolved; the names below it kept as written */
+    while (!realpath(buf, real)) {
+        if (errno != ENOENT)
+            return -1;
+        while (len > 1 && buf[len - 1] == '/')
+            buf[--len] = '\0';
+        const char *slash = strrchr(buf, '/'), *base = slash ? slash + 1 : buf;
+        char tmp[4096];
+        if (gw_snprintf(tmp, sizeof tmp, "%s%s%s", base, *rest ? "/" : "", rest) >= (int)sizeof tmp)
+            return -1;
+        memcpy(rest, tmp, strlen(tmp) + 1);
+        gw_path_parent(buf);
+        len = strlen(buf);
+    }
+    if (gw_snprintf(out, n, "%s", strcmp(real, "/") == 0 ? "" : real) >= (int)n)
+        return -1;
+    char *save = NULL;
+    for (char *c = strtok_r(rest, "/", &save); c; c = strtok_r(NULL, "/", &save)) {
+        size_t k = strlen(out);
+        if (strcmp(c, ".") == 0)
+            continue;
+        if (strcmp(c, "..") == 0) {
+            char *s = strrchr(out, '/');
+            if (s)
+                *s = '\0';
+            continue;
+        }
+        if (gw_snprintf(out + k, n - k, "/%s", c) >= (int)(n - k))
+            return -1;
+    }
+    if (!*out)
+        gw_snprintf(out, n, "/");
+    return 0;
 }

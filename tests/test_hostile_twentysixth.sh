@@ -24,6 +24,12 @@
 #    still a value.
 #  3 `--help=1` was refused as "unknown option '--help'"; it is now "takes no
 #    value" (the exit code was already 2).
+#  4 One path for two outputs: `dispersion --wisdom W --out W` (or --out
+#    W/sub) made W the output directory, then could not save the wisdom
+#    there ("Is a directory (not saved)", exit 0). A wisdom file still to
+#    make that is the --out directory or one above it is now refused before
+#    the run (exit 2, nothing made), by the check that already refused it as
+#    one of the files in DIR (gw_outset_check_input).
 # Checks that fail on the code before: see docs/tests.md.
 # shellcheck source=refusal_lib.sh
 . "$2/tests/refusal_lib.sh"
@@ -117,5 +123,22 @@ exits_refused "chain --vimp -0.3" "--vimp: -0.3 is outside" 20 "$GW" chain --vim
 # --- 3 --help=1 ---
 exits_refused "chain --help=1" "option '--help' takes no value" 20 "$GW" chain --help=1 &&
     ok "chain --help=1: --help takes no value"
+
+# --- 4 the wisdom file and the --out directory one path ---
+for pair in "w1 w1" "w2 ./w2/sub" "./w3 $tmp/w3/"; do
+    set -- $pair
+    rm -rf w1 w2 w3
+    exits_refused "dispersion --wisdom $1 --out $2" "dispersion --wisdom: '$1' is (the|a) directory" 20 \
+        "$GW" dispersion --n 64 --t-samples 256 --wisdom "$1" --out "$2" || continue
+    if [ -e w1 ] || [ -e w2 ] || [ -e w3 ]; then ko "dispersion --wisdom $1 --out $2: made $(ls -d w1 w2 w3 2>/dev/null)"; continue; fi
+    ok "dispersion --wisdom $1 --out $2: exit 2 before the run, nothing made"
+done
+rm -rf w4 w4.wisdom
+if "$GW" dispersion --n 64 --t-samples 256 --wisdom w4.wisdom --out w4 >/dev/null 2>"$tmp/err" && [ -d w4 ] &&
+    head -c 7 w4.wisdom | grep -q '(fftw-3' && [ ! -s "$tmp/err" ]; then
+    ok "dispersion --wisdom w4.wisdom --out w4: both written"
+else
+    ko "dispersion --wisdom w4.wisdom --out w4: $(head -c 300 "$tmp/err")"
+fi
 
 test_summary test_hostile_twentysixth

@@ -151,6 +151,24 @@ int gw_out_check(const char *dir, const char *what, gw_err *err)
     }
 }
 
+/* GW_EINVAL when target (the file path writes, gw_io_write_target) belongs to
+ * another user in a sticky directory (/tmp): its rename then fails after the
+ * run ("Operation not permitted", exit 1), in an output set after the set's
+ * other files were placed */
+static int sticky_refused(const char *path, const char *target, const char *what, gw_err *err)
+{
+    char d[4096];
+    struct stat st, ds;
+    const uid_t me = geteuid();
+    if (me == 0 || stat(target, &st) != 0 || gw_snprintf(d, sizeof d, "%s", target) >= (int)sizeof d)
+        return GW_OK;
+    gw_path_parent(d);
+    if (stat(d, &ds) == 0 && (ds.st_mode & S_ISVTX) && st.st_uid != me && ds.st_uid != me)
+        return gw_err_set(err, GW_EINVAL, "%s: '%s' belongs to another user in the sticky directory '%s': this run "
+                          "cannot replace it", what, path, d);
+    return GW_OK;
+}
+
 int gw_out_file_check(const char *path, const char *what, gw_err *err)
 {
     char dir[4096];
@@ -165,6 +183,8 @@ int gw_out_file_check(const char *path, const char *what, gw_err *err)
      * directory takes the temporary file; a link to nothing is refused */
     char target[4096];
     int rc = gw_io_write_target(path, target, sizeof target, what, err);
+    if (rc == GW_OK)
+        rc = sticky_refused(path, target, what, err);
     if (rc != GW_OK)
         return rc;
     path = target;
@@ -190,6 +210,8 @@ int gw_out_names_check(const char *dir, const char *const *names, const char *wh
             continue;
         int rc = gw_io_write_target(p, target, sizeof target, what, err);
         if (rc != GW_OK)
+            return rc;
+        if ((rc = sticky_refused(p, target, what, err)) != GW_OK)
             return rc;
     }
     return GW_OK;

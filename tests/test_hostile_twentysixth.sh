@@ -37,6 +37,11 @@
 #    pluviated first. Refused before the run now (exit 2, nothing placed).
 #    Needs root to make the other user's file and setpriv to run as nobody;
 #    said skipped otherwise.
+#  6 `layer-impact --full --until rebound` ran to t-max, --until without
+#    effect, exit 0 (only --until verdict was refused with --full): the
+#    until row now starts "not given", and with --full it is refused at
+#    either value (exit 2 naming --until, nothing in --out); --until rebound
+#    alone runs as the default.
 # Checks that fail on the code before: see docs/tests.md.
 # shellcheck source=refusal_lib.sh
 . "$2/tests/refusal_lib.sh"
@@ -146,6 +151,18 @@ if "$GW" dispersion --n 64 --t-samples 256 --wisdom w4.wisdom --out w4 >/dev/nul
     ok "dispersion --wisdom w4.wisdom --out w4: both written"
 else
     ko "dispersion --wisdom w4.wisdom --out w4: $(head -c 300 "$tmp/err")"
+fi
+
+# --- 6 --until given with --full, whatever its value ---
+REFUSE_TIMEOUT=60 refused "layer-impact --full --until rebound" "layer-impact --until: rebound has no effect with full" \
+    layer-impact --sample s.txt --t-max 0.02 --full --until rebound --out "$tmp/o"
+if runs_json "layer-impact --until rebound" u1.json layer-impact --sample s.txt --t-max 0.4 --until rebound &&
+    runs_json "layer-impact (default until)" u0.json layer-impact --sample s.txt --t-max 0.4 &&
+    [ "$(jq_py u1.json "d['e_n'], d['t_f'], d['settings']['until']")" = "$(jq_py u0.json "d['e_n'], d['t_f'], d['settings']['until']")" ] &&
+    [ "$(jq_py u0.json "d['e_n'] is not None")" = True ]; then
+    ok "layer-impact --until rebound alone: the default run's e_n and T_f"
+else
+    ko "layer-impact --until rebound alone differs from the default run"
 fi
 
 # --- 5 another user's file in a sticky directory ---

@@ -69,8 +69,8 @@ int gw_io_link_refused(const char *path, const char *what, int e, gw_err *err)
  * GW_EINVAL for a link to nothing (as gw_out_check refuses for a directory),
  * and for a file there that is not a regular file: the rename would put the
  * run's file in place of a FIFO, a socket or a device node (as root, an
- * output DIR/chain.json linked to /dev/null replaced /dev/null itself with a
- * regular file), and fails after the run on a directory. */
+ * output DIR/chain.json linked to a /dev/null made with mknod turned that
+ * device node into a regular file), and fails after the run on a directory. */
 int gw_io_write_target(const char *path, char *out, size_t n, const char *what, gw_err *err)
 {
     struct stat st;

@@ -5,8 +5,9 @@
 #  1 An output file of --out DIR that was not a regular file was replaced or
 #    failed the run after its work. A symbolic link DIR/chain.json to a FIFO
 #    or a device was written through: the rename put a regular file in place
-#    of the FIFO or the device node (as root, a link to /dev/null replaced
-#    /dev/null itself), exit 0; a FIFO at DIR/chain.json was replaced the
+#    of the FIFO or the device node (a character device 1,3 made with mknod,
+#    a /dev/null of the test's own, became a regular file), exit 0; a FIFO at
+#    DIR/chain.json was replaced the
 #    same way; a directory there failed the run after its work (exit 1,
 #    "write failed: Is a directory"); a link there to nothing failed after
 #    the work too. The atomic write now refuses a target that is not a regular

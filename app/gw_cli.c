@@ -114,6 +114,24 @@ static int set_value(const char *cmd, gw_opt *o, const char *val, gw_err *err)
     return GW_OK;
 }
 
+/* 1 when a is one of opts' options as the command line gives them ("--NAME",
+ * "--NAME=VALUE", "--help", "-h") */
+static int is_option(const gw_opt *opts, const char *a)
+{
+    if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0)
+        return 1;
+    if (strncmp(a, "--", 2) != 0)
+        return 0;
+    char name[96];
+    const char *eq = strchr(a + 2, '=');
+    size_t len = eq ? (size_t)(eq - (a + 2)) : strlen(a + 2);
+    if (len == 0 || len >= sizeof name)
+        return 0;
+    memcpy(name, a + 2, len);
+    name[len] = '\0';
+    return gw_cli_find(opts, name) != NULL;
+}
+
 int gw_cli_parse(const char *cmd, gw_opt *opts, int argc, char **argv, int *help,
                  const char **pos, int maxpos, int *npos, gw_err *err)
 {
@@ -141,6 +159,8 @@ int gw_cli_parse(const char *cmd, gw_opt *opts, int argc, char **argv, int *help
         memcpy(name, a + 2, len);
         name[len] = '\0';
         gw_opt *o = (gw_opt *)gw_cli_find(opts, name);
+        if (!o && strcmp(name, "help") == 0) /* "--help=1": the option is known, its value is not */
+            return gw_err_set(err, GW_EINVAL, "%s: option '--help' takes no value", cmd);
         if (!o)
             return gw_err_set(err, GW_EINVAL, "%s: unknown option '--%s' (see %s --help)", cmd,
                               name, cmd);
@@ -157,6 +177,12 @@ int gw_cli_parse(const char *cmd, gw_opt *opts, int argc, char **argv, int *help
             if (i + 1 >= argc)
                 return gw_err_set(err, GW_EINVAL, "%s: option '--%s' needs a value %s", cmd,
                                   name, o->metavar ? o->metavar : "");
+            /* the next option taken as this one's value left it without effect:
+             * `--out --json` made a directory "--json" and printed no JSON */
+            if (is_option(opts, argv[i + 1]))
+                return gw_err_set(err, GW_EINVAL, "%s --%s: needs a value %s, and '%s' is an option of %s (give "
+                                  "--%s=%s for a value of that spelling)", cmd, name,
+                                  o->metavar ? o->metavar : "", argv[i + 1], cmd, name, argv[i + 1]);
             val = argv[++i];
         }
         int rc = set_value(cmd, o, val, err);

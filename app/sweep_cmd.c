@@ -343,7 +343,8 @@ int gw_cmd_sweep(int argc, char **argv, const gw_sweep_model *const *models, int
             snprintf(what, sizeof what, "sweep: %s: [sweep] out", pos[0]);
         else
             snprintf(what, sizeof what, "sweep --out");
-        if (gw_out_check(out, what, &err) != GW_OK)
+        static const char *const sweep_files[] = {"journal.csv", "results.csv", NULL};
+        if (gw_out_check(out, what, &err) != GW_OK || gw_out_names_check(out, sweep_files, what, &err) != GW_OK)
             code = 2;
         /* and no input of the sweep (the config, a sample) is its journal or
          * table there: before, a config named DIR/results.csv ran and was

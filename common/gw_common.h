@@ -307,6 +307,13 @@ int gw_fnv1a64_parse(const char *p, size_t len, unsigned long long *h);
  * naming what. */
 int gw_out_check(const char *dir, const char *what, gw_err *err);
 int gw_out_file_check(const char *path, const char *what, gw_err *err);
+/* gw_out_names_check: each of the files a run writes into dir (names,
+ * NULL-terminated; NULL: none) that is already there is a regular file or a
+ * symbolic link to one: a directory, FIFO, socket or device there (or behind a
+ * link, or a link to nothing) is refused before the run, GW_EINVAL with one
+ * line naming what and the file. The atomic write refuses them too
+ * (gw_afile_open), but only after the run's work. */
+int gw_out_names_check(const char *dir, const char *const *names, const char *what, gw_err *err);
 
 /* ---- fits (GSL) ---- */
 

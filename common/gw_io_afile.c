@@ -67,13 +67,21 @@ int gw_io_link_refused(const char *path, const char *what, int e, gw_err *err)
 /* The file a write to path replaces: path itself, or the file a symbolic link
  * there leads to (the rename of an atomic write would put a regular file in
  * place of the link and leave its target as it was: layer-make --out LINK).
- * GW_EINVAL for a link to nothing (as gw_out_check refuses for a directory). */
+ * GW_EINVAL for a link to nothing (as gw_out_check refuses for a directory),
+ * and for a file there that is not a regular file: the rename would put the
+ * run's file in place of a FIFO, a socket or a device node (as root, an
+ * output DIR/chain.json linked to a /dev/null made with mknod turned that
+ * device node into a regular file), and fails after the run on a directory. */
 int gw_io_write_target(const char *path, char *out, size_t n, const char *what, gw_err *err)
 {
     struct stat st;
-    if (lstat(path, &st) != 0 || !S_ISLNK(st.st_mode)) {
+    const int there = lstat(path, &st) == 0;
+    if (!there || !S_ISLNK(st.st_mode)) {
         if (strlen(path) >= n)
             return gw_err_set(err, GW_EINVAL, "%s: path too long", path);
+        if (there && !S_ISREG(st.st_mode))
+            return gw_err_set(err, GW_EINVAL, "%s: '%s' is %s; an output replaces only a regular file", what,
+                              path, gw_io_file_kind(st.st_mode));
         gw_snprintf(out, n, "%s", path);
         return GW_OK;
     }
@@ -82,6 +90,9 @@ int gw_io_write_target(const char *path, char *out, size_t n, const char *what, 
         return gw_io_link_refused(path, what, errno, err);
     if (strlen(real) >= n)
         return gw_err_set(err, GW_EINVAL, "%s: path too long", real);
+    if (stat(real, &st) == 0 && !S_ISREG(st.st_mode))
+        return gw_err_set(err, GW_EINVAL, "%s: '%s' is a symbolic link to '%s', which is %s; an output replaces "
+                          "only a regular file", what, path, real, gw_io_file_kind(st.st_mode));
     gw_snprintf(out, n, "%s", real);
     return GW_OK;
 }

@@ -27,6 +27,13 @@ int gw_io_link_refused(const char *path, const char *what, int e, gw_err *err);
  * out (n bytes); GW_EINVAL for a link to nothing or a path too long. */
 int gw_io_write_target(const char *path, char *out, size_t n, const char *what, gw_err *err);
 
+/* path made absolute without changing what it names: its nearest existing
+ * ancestor resolved (realpath), the names below it appended as written ("."
+ * dropped, ".." taking one back), into out (n bytes); -1 when that fails
+ * (too long, a loop of links, no permission). For comparing a path still to
+ * be made with another. */
+int gw_io_path_canon(const char *path, char *out, size_t n);
+
 /* The process's umask, read without changing it where the OS allows. */
 mode_t gw_io_current_umask(void);
 

@@ -87,6 +87,16 @@ int gw_outset_check_input(const char *dir, const char *const *names, const char 
             return GW_OK;
         const char *slash = strrchr(input, '/'), *base = slash ? slash + 1 : input;
         gw_path_parent(d);
+        /* nor the directory the run makes, or one above it (dispersion --wisdom
+         * W --out W: the run made W a directory, then could not save W) */
+        char ci[4096], cd[4096];
+        if (gw_io_path_canon(input, ci, sizeof ci) == 0 && gw_io_path_canon(dir, cd, sizeof cd) == 0) {
+            size_t k = strlen(ci);
+            if (strncmp(cd, ci, k) == 0 && (cd[k] == '\0' || cd[k] == '/' || strcmp(ci, "/") == 0))
+                return gw_err_set(err, GW_EINVAL, "%s: '%s' is %s the run makes for --out '%s': give another "
+                                  "--out or another name", what, input, cd[k] ? "a directory above the one" :
+                                  "the directory", dir);
+        }
         if (stat(d, &in) != 0 || stat(dir, &st) != 0 || in.st_dev != st.st_dev || in.st_ino != st.st_ino)
             return GW_OK;
         for (int k = 0; names[k]; k++)

@@ -4,11 +4,13 @@
  * and the checks made before any work that a run's outputs can be written
  * where it was told (gw_out_check, gw_out_file_check: a writable directory or
  * one that can be made, a regular file or none, a symbolic link that leads
- * somewhere). Separate from the writes themselves (gw_io_afile.c): these run
+ * somewhere; gw_out_names_check: the files a run writes into its directory
+ * are regular files or none). Separate from the writes themselves (gw_io_afile.c): these run
  * before a run, or make the place its files go.
  */
 #define _POSIX_C_SOURCE 200809L
 #include <errno.h>
+#include <limits.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
@@ -149,6 +151,24 @@ int gw_out_check(const char *dir, const char *what, gw_err *err)
     }
 }
 
+/* GW_EINVAL when target (the file path writes, gw_io_write_target) belongs to
+ * another user in a sticky directory (/tmp): its rename then fails after the
+ * run ("Operation not permitted", exit 1), in an output set after the set's
+ * other files were placed */
+static int sticky_refused(const char *path, const char *target, const char *what, gw_err *err)
+{
+    char d[4096];
+    struct stat st, ds;
+    const uid_t me = geteuid();
+    if (me == 0 || stat(target, &st) != 0 || gw_snprintf(d, sizeof d, "%s", target) >= (int)sizeof d)
+        return GW_OK;
+    gw_path_parent(d);
+    if (stat(d, &ds) == 0 && (ds.st_mode & S_ISVTX) && st.st_uid != me && ds.st_uid != me)
+        return gw_err_set(err, GW_EINVAL, "%s: '%s' belongs to another user in the sticky directory '%s': this run "
+                          "cannot replace it", what, path, d);
+    return GW_OK;
+}
+
 int gw_out_file_check(const char *path, const char *what, gw_err *err)
 {
     char dir[4096];
@@ -163,6 +183,8 @@ int gw_out_file_check(const char *path, const char *what, gw_err *err)
      * directory takes the temporary file; a link to nothing is refused */
     char target[4096];
     int rc = gw_io_write_target(path, target, sizeof target, what, err);
+    if (rc == GW_OK)
+        rc = sticky_refused(path, target, what, err);
     if (rc != GW_OK)
         return rc;
     path = target;
@@ -173,4 +195,66 @@ int gw_out_file_check(const char *path, const char *what, gw_err *err)
     if (stat(dir, &st) != 0)
         return gw_err_set(err, GW_EINVAL, "%s: directory '%s' of '%s': %s", what, dir, path, strerror(errno));
     return gw_out_check(dir, what, err);
+}
+
+int gw_out_names_check(const char *dir, const char *const *names, const char *what, gw_err *err)
+{
+    if (!dir || !names)
+        return GW_OK;
+    for (int k = 0; names[k]; k++) {
+        char p[4096 + 256], target[4096];
+        struct stat st;
+        if (gw_snprintf(p, sizeof p, "%s/%s", dir, names[k]) >= (int)sizeof p)
+            return gw_err_set(err, GW_EINVAL, "%s: '%s/%s': path too long", what, dir, names[k]);
+        if (lstat(p, &st) != 0) /* nothing there (or no directory yet): the run makes it */
+            continue;
+        int rc = gw_io_write_target(p, target, sizeof target, what, err);
+        if (rc != GW_OK)
+            return rc;
+        if ((rc = sticky_refused(p, target, what, err)) != GW_OK)
+            return rc;
+    }
+    return GW_OK;
+}
+
+int gw_io_path_canon(const char *path, char *out, size_t n)
+{
+    char buf[4096], rest[4096] = "", real[PATH_MAX];
+    size_t len = path ? strlen(path) : 0;
+    if (len == 0 || len >= sizeof buf)
+        return -1;
+    memcpy(buf, path, len + 1);
+    /* the nearest existing ancestor resolved; the names below it kept as written */
+    while (!realpath(buf, real)) {
+        if (errno != ENOENT)
+            return -1;
+        while (len > 1 && buf[len - 1] == '/')
+            buf[--len] = '\0';
+        const char *slash = strrchr(buf, '/'), *base = slash ? slash + 1 : buf;
+        char tmp[4096];
+        if (gw_snprintf(tmp, sizeof tmp, "%s%s%s", base, *rest ? "/" : "", rest) >= (int)sizeof tmp)
+            return -1;
+        memcpy(rest, tmp, strlen(tmp) + 1);
+        gw_path_parent(buf);
+        len = strlen(buf);
+    }
+    if (gw_snprintf(out, n, "%s", strcmp(real, "/") == 0 ? "" : real) >= (int)n)
+        return -1;
+    char *save = NULL;
+    for (char *c = strtok_r(rest, "/", &save); c; c = strtok_r(NULL, "/", &save)) {
+        size_t k = strlen(out);
+        if (strcmp(c, ".") == 0)
+            continue;
+        if (strcmp(c, "..") == 0) {
+            char *s = strrchr(out, '/');
+            if (s)
+                *s = '\0';
+            continue;
+        }
+        if (gw_snprintf(out + k, n - k, "/%s", c) >= (int)(n - k))
+            return -1;
+    }
+    if (!*out)
+        gw_snprintf(out, n, "/");
+    return 0;
 }

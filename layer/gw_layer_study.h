@@ -58,7 +58,7 @@ typedef struct gw_layer_impact_setup {
     double energy_tol;     /* stop when the ledger closure exceeds it [0 = off] */
     int remove_walls;      /* no walls from the impact on [0] */
     int full;              /* run to t-max after the outcome is decided [0] */
-    int until;             /* rebound, verdict (choice, GW_LAYER_UNTIL_*) [rebound] */
+    int until;             /* rebound, verdict (choice, GW_LAYER_UNTIL_*; optional: -1 not given) [rebound] */
     gw_param_list snapshots; /* times, s, of particle snapshots (library only, no
                                 flag of the command) [none: off] */
 } gw_layer_impact_setup;

@@ -68,7 +68,9 @@ static const gw_param impact_params[] = {
         "stop (an error; the command exits 1) when the ledger closure |sum - A|/A exceeds E [0 = off]"),
     FLAG("remove-walls", remove_walls, "take the left, right and bottom walls away at the start of the impact"),
     FLAG("full", full, "run to t-max even after the outcome is decided (for the crowns)"),
-    CHOICE("until", until, "rebound,verdict", "rebound", "WHAT",
+    /* optional: with full, until is refused at either value (rebound, the
+     * default's value given, passed in silence though full runs to t-max) */
+    GW_PARAM_OPT_CHOICE_ROW("until", OFF(until), "rebound,verdict", "rebound", "WHAT",
            "rebound: run until the rebound is complete (T_f: the block's normal velocity back to zero after it "
            "left, physics.md 2.3) or the block is found not to bounce; verdict: stop at the bounce verdict (e_n, "
            "e, alpha_r then null; the _first values given) [rebound]"),
@@ -351,9 +353,10 @@ static int resolve(const gw_layer_impact_setup *s, const gw_layer_sample *smp, g
     ip->energy_tol = s->energy_tol;
     ip->remove_walls = s->remove_walls;
     ip->full = s->full;
-    ip->until = s->until;
-    if (ip->full && ip->until == GW_LAYER_UNTIL_VERDICT)
-        return gw_err_set(err, GW_EINVAL, "until: verdict has no effect with full (which runs to t-max)");
+    ip->until = s->until >= 0 ? s->until : GW_LAYER_UNTIL_REBOUND;
+    if (ip->full && s->until >= 0)
+        return gw_err_set(err, GW_EINVAL, "until: %s has no effect with full (which runs to t-max)",
+                          gw_layer_until_name(s->until));
     rc = gw_layer_impact_check(smp, ip, err);
     if (rc == GW_OK)
         rc = gw_layer_impact_gap_check(smp, ip, s->gravity, err);

@@ -859,7 +859,7 @@ print('%s%08x' % (body, h))" >>"$j30"
     fi
     mkdir -p "$tmp/w30c/results.csv"
     refused "a sweep whose results.csv is a directory (failed with exit 1 after every case)" \
-        "^granwave sweep table: '.*w30c/results.csv' is a directory; give a regular file" \
+        "^granwave sweep --out: '.*w30c/results.csv' is a directory; an output replaces only a regular file" \
         sweep "$tmp/w30.ini" --out "$tmp/w30c" --quiet
     [ ! -e "$tmp/w30c/journal.csv" ] && ok "  refused before the first case (no journal)" || ko "  a journal was written"
 fi

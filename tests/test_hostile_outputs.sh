@@ -94,15 +94,17 @@ rc=$?
     ko "1: failed run after a good one: exit $rc, $(ls "$d" | tr '\n' ' ')"
 
 # one of the names a directory: found before any file is placed (chain_wall_force.csv
-# of the new run was placed before the rename onto the directory failed)
+# of the new run was placed before the rename onto the directory failed), and since
+# the twenty-sixth pass before the run (exit 2; it was exit 1 after the run's work)
 d=$tmp/c1d
 "$GW" chain --n 1 --out "$d" >/dev/null 2>&1
 rm "$d/chain_beads.csv" && mkdir -p "$d/chain_beads.csv/x"
 "$GW" chain --n 2 --out "$d" >/dev/null 2>"$tmp/stderr"
 rc=$?
-[ $rc -eq 1 ] && grep -q "^granwave chain --out: $d/chain_beads.csv: write failed: Is a directory" "$tmp/stderr" &&
+[ $rc -eq 2 ] && grep -q "^granwave chain --out: '$d/chain_beads.csv' is a directory" "$tmp/stderr" &&
+    [ "$(wc -l <"$tmp/stderr")" -eq 1 ] &&
     [ "$(cmdlines "$d")" = "command: granwave chain --n 1 --out $d" ] && grep -q '"n":	1,' "$d/chain.json" && notmp "$d" &&
-    ok "1: a name of the set that is a directory: exit 1 naming it, nothing of the run placed" ||
+    ok "1: a name of the set that is a directory: exit 2 before the run naming it, nothing of the run placed" ||
     ko "1: a directory in the set: exit $rc, runs $(cmdlines "$d" | tr '\n' '|')"
 
 # --- 2: falcon, traces of an earlier run ------------------------------------

@@ -109,6 +109,7 @@ int gw_cmd_chain(int argc, char **argv)
     chain_cli c;
     gw_opt opts[CHAIN_CLI_NOPTS + 3];
     chain_cli_options(&c, opts);
+    c.out_names = chain_files;
     chain_cli_out_help(opts, "write chain_wall_force.csv, chain_beads.csv, chain.json (and chain.h5 with HDF5) into DIR");
     long n = 1;
     double vimp = 0.3;

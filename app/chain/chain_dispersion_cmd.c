@@ -444,6 +444,7 @@ int gw_cmd_dispersion(int argc, char **argv)
     }
     /* inputs and output locations before any work: a refused run writes nothing */
     if ((c.out && gw_out_check(c.out, "dispersion --out", &err) != GW_OK) ||
+        (c.out && gw_out_names_check(c.out, disp_files, "dispersion --out", &err) != GW_OK) ||
         (c.out && gw_outset_check_input(c.out, disp_files, c.wisdom, "dispersion --wisdom", &err) != GW_OK) ||
         (c.wisdom && disp_import_wisdom(&c, &err) != GW_OK))
         return chain_cli_fail(err.msg);

@@ -64,10 +64,15 @@ static gw_opt opt_row(const char *name, gw_opt_kind kind, void *dest)
     return o;
 }
 
+/* the files of --out DIR */
+static const char *const drop_files[] = {"drop_wall_force.csv", "drop_beads.csv", "drop.h5", "drop_peaks.csv",
+                                         "drop_impacts.csv", "drop.json", NULL};
+
 static void drop_options(drop_cli *d, gw_opt *opts)
 {
     memset(d, 0, sizeof *d);
     chain_cli_options(&d->c, opts);
+    d->c.out_names = drop_files;
     chain_cli_out_help(opts, "write drop_wall_force.csv, drop_beads.csv, drop_peaks.csv, drop_impacts.csv, drop.json (and drop.h5 with HDF5) into DIR");
     d->n = 1;
     d->height = 5.1e-3;
@@ -289,12 +294,10 @@ static int write_outputs(const drop_cli *d, const gw_chain_drop_result *r, const
         return gw_err_set(err, GW_ENOMEM, "drop --out: out of memory");
     char path[4096];
     /* this run's files all in place, or (a write failed) the earlier run's as they were */
-    static const char *const files[] = {"drop_wall_force.csv", "drop_beads.csv", "drop.h5", "drop_peaks.csv",
-                                        "drop_impacts.csv", "drop.json", NULL};
     gw_outset oset;
     int rc = gw_mkdir_p(d->c.out, err);
     if (rc == GW_OK)
-        rc = gw_outset_begin(&oset, d->c.out, files, err);
+        rc = gw_outset_begin(&oset, d->c.out, drop_files, err);
     else
         memset(&oset, 0, sizeof oset);
     if (rc == GW_OK)

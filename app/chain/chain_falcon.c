@@ -179,6 +179,7 @@ int gw_cmd_falcon(int argc, char **argv)
     memset(&f, 0, sizeof f);
     gw_opt opts[CHAIN_CLI_NOPTS + 7];
     chain_cli_options(&f.c, opts);
+    f.c.out_names = falcon_files;
     chain_cli_out_help(opts, "write falcon_runs.csv, falcon_final_velocities.csv, falcon_summary.json, report.md and the traces of N = 7, 15, 30 (wall force; the beads for N = 7; and .h5 with HDF5) into DIR");
     const char *vlist = "0.3", *hlist = "1.9,2.9,3.1,5.1", *nrange = "1:40";
     double accuracy; /* given or not (NaN): the setup's row, set by gw_cli_study_setup */

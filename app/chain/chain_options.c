@@ -221,7 +221,8 @@ int chain_cli_resolve(chain_cli *c, const gw_opt *opts, const char *cmd, gw_err 
     if (c->out) { /* before any work: a run that cannot write its results never starts */
         char name[96];
         snprintf(name, sizeof name, "%s --out", cmd);
-        return gw_out_check(c->out, name, err);
+        int rc = gw_out_check(c->out, name, err);
+        return rc == GW_OK ? gw_out_names_check(c->out, c->out_names, name, err) : rc;
     }
     return GW_OK;
 }

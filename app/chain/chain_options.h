@@ -18,6 +18,7 @@ typedef struct chain_cli {
     long max_steps;
     int json;
     const char *out;
+    const char *const *out_names; /* the files the command writes into out (checked before the run), or NULL */
     const char *material, *wall_material, *damping, *solver, *method, *sheet, *radii;
     double *radii_v, *masses_v, *kc_v; /* owned arrays for --radii */
     /* the sheet as a material, the sensor as a body, guide friction */

@@ -56,11 +56,15 @@ static const char *sw_summary =
     "--sheets --sheet-law material predicts every sheet from its material constants\n"
     "and thickness (bonded layer, plastic or viscoelastic; docs/sheets.md).";
 
+/* the file of --out DIR */
+static const char *const sw_files[] = {"softwall.json", NULL};
+
 int gw_cmd_softwall(int argc, char **argv)
 {
     chain_cli c;
     gw_opt opts[CHAIN_CLI_NOPTS + 7];
     chain_cli_options(&c, opts);
+    c.out_names = sw_files;
     chain_cli_out_help(opts, "write softwall.json into DIR");
     const char *nrange = "1:30";
     double vimp = sqrt(2 * GW_CHAIN_G_EARTH * 2.9e-3), tol = 0.01;
@@ -189,7 +193,7 @@ int gw_cmd_softwall(int argc, char **argv)
         chain_cli_settings_runs(set, so.ncase, so.t_max, so.dt_out, so.dt, so.dt_max);
         cJSON_AddItemToObject(o, "settings", set);
         char path[4096];
-        if (c.out && (gw_path_join(path, sizeof path, c.out, "softwall.json") != GW_OK ||
+        if (c.out && (gw_path_join(path, sizeof path, c.out, sw_files[0]) != GW_OK ||
                       gw_json_write(path, o, &err) != GW_OK)) {
             fprintf(stderr, "granwave softwall --out: %s\n", err.msg);
             code = 1;

@@ -31,11 +31,15 @@ static const char *ws_summary =
     "force. Power-law fits v = A v_imp^beta with standard errors, C3 of (F.16), and\n"
     "the period fit P = C2 (m/k)^(2/5) v_imp^(-1/5) (F.15).";
 
+/* the files of --out DIR (the table and the JSON of one run) */
+static const char *const ws_files[] = {"wavespeed.csv", "wavespeed.json", NULL};
+
 int gw_cmd_wavespeed(int argc, char **argv)
 {
     chain_cli c;
     gw_opt opts[CHAIN_CLI_NOPTS + 6];
     chain_cli_options(&c, opts);
+    c.out_names = ws_files;
     chain_cli_out_help(opts, "write wavespeed.csv and wavespeed.json into DIR");
     const char *vlist = "0.075,0.15,0.3,0.5", *nrange = "5:40";
     double frac = 0.1;
@@ -149,10 +153,9 @@ int gw_cmd_wavespeed(int argc, char **argv)
             gw_afile af;
             gw_outset oset; /* the table and the JSON of one run, or (a write failed) the earlier run's */
             memset(&oset, 0, sizeof oset);
-            static const char *const files[] = {"wavespeed.csv", "wavespeed.json", NULL};
             char *hdr = gw_cli_one_line(gw_cli_provenance("wavespeed", argc, argv, set), ' ');
             if ((!hdr && gw_err_set(&err, GW_ENOMEM, "out of memory") != GW_OK) ||
-                gw_outset_begin(&oset, c.out, files, &err) != GW_OK ||
+                gw_outset_begin(&oset, c.out, ws_files, &err) != GW_OK ||
                 gw_path_join(path, sizeof path, c.out, "wavespeed.csv") != GW_OK ||
                 gw_afile_open(&af, path, &err) != GW_OK) {
                 code = 1;

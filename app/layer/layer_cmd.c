@@ -589,7 +589,8 @@ int gw_cmd_layer_impact(int argc, char **argv)
     /* --out before the sample is read, as every other command checks it: its
      * directory was made only after the plan, and a file, a symbolic link to
      * nothing or a loop there was refused as "X: not a directory" */
-    if (c.out && gw_out_check(c.out, "layer-impact --out", &err) != GW_OK)
+    if (c.out && (gw_out_check(c.out, "layer-impact --out", &err) != GW_OK ||
+                  gw_out_names_check(c.out, impact_files, "layer-impact --out", &err) != GW_OK))
         return fail("layer-impact", err.msg);
     /* the library's setup from the same command line, read and resolved by the
      * library (the sample, the materials, the solver, the options without

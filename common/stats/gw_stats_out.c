@@ -540,6 +540,8 @@ int gw_stats_write_files(const gw_stats_analysis *R, const char *dir, gw_err *er
 int gw_stats_out_check(const char *dir, const char *what, gw_err *err)
 {
     int rc = gw_out_check(dir, what, err);
+    if (rc == GW_OK)
+        rc = gw_out_names_check(dir, stats_files, what, err);
     if (rc != GW_OK)
         return rc;
     /* the nearest existing ancestor (gw_out_check found it a directory) */

@@ -155,51 +155,6 @@ static inline layer_cforce disc_force(const layer_contact *c, const double *y, c
     return layer_contact_force(c, su, fel, *und, 0, f, alpha, tp, 0, mode);
 }
 
-/* Stage A of drift_discs's pipeline for contact k: asleep or not (see the
- * drift; tr its discs' travel sum, read only for a contact open at the step's
- * start, ul = un_last[k] <= 0), and when awake its end overlap u, normal n
- * (disc_geometry) and sqrt(u) (NaN when open: not used then). */
-typedef struct geo_ahead {
-    double u, n[2], su, tr;
-    int asleep;
-} geo_ahead;
-
-static inline geo_ahead dist_ahead(const layer_contact *cs, int k, const double *y, double width,
-                                   const double *ul, const double *travel, const int *tix, const double *wake)
-{
-    geo_ahead a = {0, {0, 1}, 0, 0, 0};
-    if (!(ul[k] > 0)) {
-        a.tr = travel[tix[2 * k]] + travel[tix[2 * k + 1]];
-        if (a.tr < wake[k]) {
-            a.asleep = 1;
-            return a;
-        }
-    }
-    a.u = disc_geometry(cs + k, y, width, a.n);
-    a.su = sqrt(a.u);
-    return a;
-}
-
-/* Stage B: what the lean path computes from stage A and K_s = ks before the
- * step itself: K_e = k_ts sqrt(u), 1/K_e, K_m (mean_kt, closed at both ends),
- * 1/K_m and v_t at mid-step (disc_vt). Meaningful only where the lean path
- * runs (K_s > 0, u > 0). */
-typedef struct law_ahead {
-    double ke, ike, km, ikm, vt;
-} law_ahead;
-
-static inline law_ahead kt_ahead(const layer_contact *c, const geo_ahead *a, double ks, const double *ph,
-                                 double hh)
-{
-    law_ahead b;
-    b.ke = c->kts * a->su;
-    b.ike = 1 / b.ke;
-    b.km = (2.0 / 3.0) * (ks * ks + ks * b.ke + b.ke * b.ke) / (ks + b.ke);
-    b.ikm = 1 / b.km;
-    b.vt = disc_vt(c, ph, hh);
-    return b;
-}
-
 /* The drift of a disc-only layer, fused with its force pass: per contact the
  * end geometry, the tangential step and its books, then the end forces the
  * rhs would compute (Hertz, the damping at the predicted velocities, F_t as
@@ -243,48 +198,22 @@ LAYER_HOT static void drift_discs(gw_layer *L, double h, const double *ph, doubl
         const double *s = ph + 6 * i;
         travel[i] += h2 * (fabs(s[3]) + fabs(s[4]));
     }
-    /* The loop is written as a pipeline over the contacts. Each contact's work
-     * is one chain of dependent operations (two square roots for the overlap
-     * and sqrt(u_n), then K_e, K_m and two divisions, F_t, the books: about
-     * 115 cycles), of which the processor holds about two contacts in flight,
-     * so it waited on the chain, not on its instruction count or divider
-     * (three more divisions per contact changed nothing measurable). The
-     * chain's head is therefore computed ahead, from inputs the loop does not
-     * write (y, ph, the travel sums, and tscr, un_last and wake of later
-     * contacts): iteration k computes whether contact k + 3 sleeps and its
-     * geometry (stage A: dist_ahead), the tangential
-     * stiffnesses and v_t of contact k + 2 (stage B: kt_ahead, the lean path's
-     * formulas with K_s from tscr) and contact k's step with them. Same
-     * functions of the same inputs, so the same numbers; stage B computed for
-     * a contact that sleeps or takes the general path is not used (and not
-     * computed at all where no contact takes the lean path).
-     * Measured on the default impact: 1 and 2 contacts ahead, 9 % and 12 %
-     * less CPU for the whole run; 4 ahead in a ring buffer, slower again. */
-    const geo_ahead none = {0, {0, 1}, 0, 0, 1};
-    geo_ahead A0 = nc > 0 ? dist_ahead(cs, 0, y, width, un_last, travel, tix, wake) : none;
-    geo_ahead A1 = nc > 1 ? dist_ahead(cs, 1, y, width, un_last, travel, tix, wake) : none;
-    geo_ahead A2 = nc > 2 ? dist_ahead(cs, 2, y, width, un_last, travel, tix, wake) : none;
-    law_ahead B0 = lean && nc > 0 ? kt_ahead(cs, &A0, tscr[0].kt, ph, hh) : (law_ahead){0, 0, 0, 0, 0};
-    law_ahead B1 = lean && nc > 1 ? kt_ahead(cs + 1, &A1, tscr[1].kt, ph, hh) : B0;
     for (int k = 0; k < nc; k++) {
-        const geo_ahead Ak = A0;
-        const law_ahead Bk = B0;
-        double nn[2] = {Ak.n[0], Ak.n[1]};
-        const double ue = Ak.u;
-        A0 = A1, A1 = A2, B0 = B1;
-        if (k + 3 < nc)
-            A2 = dist_ahead(cs, k + 3, y, width, un_last, travel, tix, wake);
-        if (lean && k + 2 < nc) /* (only the lean path reads stage B) */
-            B1 = kt_ahead(cs + k + 2, &A1, tscr[k + 2].kt, ph, hh);
         /* a contact closed at the step's start is awake: only the open-at-both-
          * ends path puts a contact to sleep, and it writes un_last = 0 (the
          * travel sums only grow between list rebuilds, which wake every
          * contact), so the closed ones, nearly all of a packed layer's, skip
-         * the test and its four loads (in stage A) */
-        if (Ak.asleep)
-            continue;
-        const double ul = un_last[k], tr = Ak.tr;
+         * the test and its four loads */
+        const double ul = un_last[k];
+        double tr = 0;
+        if (!(ul > 0)) {
+            tr = travel[tix[2 * k]] + travel[tix[2 * k + 1]];
+            if (tr < wake[k])
+                continue;
+        }
         const layer_contact *c = cs + k;
+        double nn[2];
+        const double ue = disc_geometry(c, y, width, nn);
         if (!(ue > 0) && !(ul > 0)) {
             /* open at both ends (about half the listed contacts): what the general
              * path below does with its zeros (su, K_e, F_el, F_t all 0) */
@@ -303,17 +232,16 @@ LAYER_HOT static void drift_discs(gw_layer *L, double h, const double *ph, doubl
              * path below with its tests resolved (the same operations in the same
              * order, so the same numbers); the damping's zero terms (F_n - F_el) u_n'
              * are not added (adding +0 to the sums changes none of them) */
-            const double kn = c->kn, ra = c->ra;
-            const double su = Ak.su, ke = Bk.ke, fel = kn * ue * su;
+            const double kn = c->kn, kts = c->kts, ra = c->ra;
+            const double su = sqrt(ue), ke = kts * su, fel = kn * ue * su;
             if (fel > 0 && ke > 0) {
                 const int qa = c->qa, qb = c->qb, q0 = ts.q;
-                const double iks = ts.ikt;
-                /* (K_e, 1/K_e, K_m = mean_kt's closed-at-both-ends branch and 1/K_m) */
-                const double ike = Bk.ike, km = Bk.km, ikm = Bk.ikm;
+                const double ks = ts.kt, iks = ts.ikt;
+                const double ike = 1 / ke, km = mean_kt(ks, ke, ul, ue), ikm = 1 / km;
                 double *g = geo + 4 * k;
                 g[0] = ue, g[1] = su, g[2] = nn[0], g[3] = nn[1];
                 un_last[k] = ue;
-                const double vt = Bk.vt;
+                const double vt = disc_vt(c, ph, hh);
                 const double cap = tp * kn * ue * su;
                 const double f0 = fe[k], ftr = f0 + vt * h * km;
                 const double f1 = ftr > cap ? cap : ftr < -cap ? -cap : ftr;

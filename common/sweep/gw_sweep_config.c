@@ -368,6 +368,17 @@ static int scan_lines(const char *text, const char *name, parse_ctx *pc, gw_err 
                 key[0] = '\0';
                 const char *q = memchr(p + i, ']', len - i);
                 in_grid = q && q - (p + i) == 5 && memcmp(p + i, "[grid", 5) == 0;
+                /* The reader drops whatever follows the ']': '[grid] n = 1:2'
+                 * ran without n (one case, exit 0), '[params] solver = rk4'
+                 * the default solver. Only blanks or a comment may follow. */
+                const char *t = q ? q + 1 : NULL, *le = p + len;
+                while (t && t < le && (*t == ' ' || *t == '\t' || *t == '\r'))
+                    t++;
+                if (t && t < le && *t != ';' && *t != '#')
+                    return gw_err_set(err, GW_EINVAL, "%s:%ld: '%.*s' after the section header %.*s: the config "
+                                      "reader ignores it; put it on a line of its own", name, ln,
+                                      (int)(end > (size_t)(t - p) ? end - (size_t)(t - p) : (size_t)(le - t)), t,
+                                      (int)(q - (p + i) + 1), p + i);
             } else {
                 size_t k = i;
                 while (k < len && p[k] != '=' && p[k] != ':')
@@ -539,6 +550,7 @@ static int config_finish(const char *path, const char *base, const gw_sweep_mode
         return GW_EINVAL;
     }
     cfg->read_key = (*model)->read_key;
+    cfg->ncolumns = (*model)->ncolumns;
     if (cfg->ngrid == 0) {
         gw_sweep_config_free(cfg);
         return gw_err_set(err, GW_EINVAL, "%s: the [grid] section is empty or missing", path);

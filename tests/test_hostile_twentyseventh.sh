@@ -24,6 +24,16 @@
 #    exits 2: the program links HDF5's static archive, so the suppression
 #    by module name (leak:libhdf5) did not match; tests/lsan.supp names
 #    HDF5's allocators. (A release build passes this part before and after.)
+#  4 One sample under two names ran each case twice. The config reader refuses
+#    a value listed twice, also in another spelling ('1, 1.0'), but compared
+#    file names as text: 's.txt, ./s.txt', an absolute path, 'sub/../s.txt',
+#    a symbolic or a hard link to the same file ran each case twice (exit 0).
+#    Files are compared by identity now (exit 2 naming both, nothing written).
+#  5 The same-value check of a grid list compared every pair: a config of
+#    20000 speeds took 64 s to read (5000: 3 s), the 1 MiB a config may hold
+#    about half an hour, printing nothing. It sorts now (20000: 0.3 s), with
+#    the same first pair named: 60000 speeds are read, and a repeat at the
+#    end named, each well within the 60 s alarm (about 10 minutes before).
 # Checks that fail on the code before: see docs/tests.md.
 # shellcheck source=refusal_lib.sh
 . "$2/tests/refusal_lib.sh"
@@ -127,5 +137,43 @@ if exits_refused "layer-impact on a corrupt HDF5 sample" "sample '.*bad.h5': .*(
     "$GW" layer-impact --sample bad.h5 --t-max 1e-3; then
     ok "a corrupt HDF5 sample: exit 2, one line naming it, no sanitizer report"
 fi
+
+# --- 4 one sample file under two names ---
+"$GW" layer-make --n 20 --width-rm 10 --seed 1 --t-max 0.05 --out s.txt >/dev/null 2>&1 || ko "layer-make s.txt failed"
+"$GW" layer-make --n 20 --width-rm 10 --seed 2 --t-max 0.05 --out t.txt >/dev/null 2>&1 || ko "layer-make t.txt failed"
+mkdir -p sub && ln -sf s.txt slink.txt && ln -f s.txt hard.txt
+for two in "s.txt, ./s.txt" "s.txt, $tmp/s.txt" "s.txt, sub/../s.txt" "s.txt, slink.txt" "s.txt, hard.txt"; do
+    printf '[sweep]\nmodel = layer\n[grid]\nsample = %s\npoints = 1\n[params]\nt-max = 0.002\n' "$two" >f.ini
+    rm -rf o
+    if exits_refused "sample = $two" "^granwave sweep: f.ini: \[grid\] sample: '.*' and '.*' in the list are the same file" 30 \
+        "$GW" sweep f.ini --out o --jobs 1; then ok "sample = $two: one file under two names refused"; fi
+    [ -e o ] && ko "sample = $two: wrote o" || ok "sample = $two: nothing written"
+done
+printf '[sweep]\nmodel = layer\n[grid]\nsample = s.txt, t.txt\npoints = 1\n[params]\nt-max = 0.002\n' >f.ini
+rm -rf o
+"$GW" sweep f.ini --out o --jobs 1 >/dev/null 2>&1 && [ "$(grep -vc '^#' o/results.csv)" -eq 3 ] &&
+    ok "two different samples: 2 cases" || ko "two different samples did not run"
+
+# --- 5 a long grid list read in n log n ---
+# list_ini N TAIL: a chain config of N speeds (15 a line, continued after
+# commas), TAIL appended to the list
+list_ini() {
+    $PY - "$1" "$2" <<'EOF'
+import sys
+n, tail = int(sys.argv[1]), sys.argv[2]
+v = ["%.6f" % (0.01 + 1e-5 * i) for i in range(n)] + ([tail] if tail else [])
+lines = ["[sweep]", "model = chain", "[grid]", "n = 1", "vimp = " + ", ".join(v[:15]) + ("," if len(v) > 15 else "")]
+for i in range(15, len(v), 15):
+    lines.append("    " + ", ".join(v[i:i + 15]) + ("," if i + 15 < len(v) else ""))
+open("long.ini", "w").write("\n".join(lines + ["[params]", "solver = rk4"]) + "\n")
+EOF
+}
+list_ini 60000 ""
+timeout -s KILL 60 "$GW" sweep long.ini --out lo --check >/dev/null 2>err.txt
+rc=$?
+[ $rc -eq 0 ] && ok "60000 speeds read and checked within 60 s" || ko "60000 speeds: exit $rc ($(head -c 200 err.txt))"
+list_ini 60000 1e-2
+if exits_refused "60000 speeds and a repeat" "long.ini:[0-9]+: vimp: '0.010000' and '1e-2' \(values 1 and 60001 of its list of 60001\) are the same value" 60 \
+    "$GW" sweep long.ini --out lo --check; then ok "a repeat at the end of 60000 speeds named with its first spelling"; fi
 
 test_summary test_hostile_twentyseventh

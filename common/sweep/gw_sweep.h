@@ -67,6 +67,10 @@ typedef struct gw_sweep_config {
         const char *key, *value; /* point into grid / params */
         unsigned long long hash;
     } *inputs;
+    /* The model's result columns (gw_sweep_model.ncolumns; 0: not known, as
+     * in a config filled by hand): a journal row must carry exactly these
+     * many numbers to be resumed. */
+    int ncolumns;
 } gw_sweep_config;
 
 /* A model that runs one case: name/value pairs in, ncolumns numbers out. */

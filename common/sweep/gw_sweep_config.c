@@ -71,6 +71,86 @@ static int parse_nomem(parse_ctx *pc)
     return 0;
 }
 
+/* One value of a grid list as the duplicate search sorts it. */
+typedef struct dup_item {
+    const char *s; /* the text */
+    double v;      /* its number (kind 1) or flag (kind 2) */
+    long idx;
+} dup_item;
+
+static int dup_cmp_text(const void *pa, const void *pb)
+{
+    const dup_item *a = pa, *b = pb;
+    const int c = strcmp(a->s, b->s);
+    return c ? c : (a->idx > b->idx) - (a->idx < b->idx);
+}
+
+static int dup_cmp_value(const void *pa, const void *pb)
+{
+    const dup_item *a = pa, *b = pb;
+    if (a->v != b->v)
+        return a->v < b->v ? -1 : 1;
+    return (a->idx > b->idx) - (a->idx < b->idx);
+}
+
+/* The first pair (j < i, i smallest, then j) of k's values that are the same
+ * value: the same text, the same number ("1", "1.0", "1e0") or the same flag
+ * ("1", "true"): 1 and *j, *i; 0 when there is none; -1 out of memory. Each
+ * relation's classes are found by sorting, so a list of n values costs
+ * n log n: the pairwise search took 64 s to read a config of 20000 speeds,
+ * and about half an hour for the 1 MiB a config may take. */
+static int first_duplicate(const gw_sweep_key *k, long *jp, long *ip)
+{
+    const long n = k->nvalues;
+    dup_item *it = malloc((size_t)(n ? n : 1) * sizeof *it);
+    long *first = malloc((size_t)(n ? n : 1) * sizeof *first); /* per value: the smallest index it equals */
+    if (!it || !first) {
+        free(it);
+        free(first);
+        return -1;
+    }
+    for (long q = 0; q < n; q++)
+        first[q] = q;
+    for (int kind = 0; kind < 3; kind++) {
+        long m = 0;
+        for (long q = 0; q < n; q++) {
+            char *e;
+            double v = 0;
+            int keep = 1;
+            if (kind == 1) {
+                v = gw_strtod(k->values[q], &e);
+                keep = !*e && e != k->values[q] && !isnan(v); /* NaN equals nothing, as before */
+            } else if (kind == 2) {
+                const int f = gw_parse_flag(k->values[q]);
+                keep = f >= 0;
+                v = f;
+            }
+            if (keep)
+                it[m++] = (dup_item){k->values[q], v, q};
+        }
+        qsort(it, (size_t)m, sizeof *it, kind ? dup_cmp_value : dup_cmp_text);
+        /* a class is a run of the sorted items, by index within it: its
+         * head holds its smallest index */
+        long head = 0;
+        for (long q = 0; q < m; q++) {
+            if (q > 0 && !(kind ? it[q].v == it[q - 1].v : strcmp(it[q].s, it[q - 1].s) == 0))
+                head = q;
+            if (it[head].idx < first[it[q].idx])
+                first[it[q].idx] = it[head].idx;
+        }
+    }
+    int found = 0;
+    for (long q = 0; q < n && !found; q++)
+        if (first[q] < q) {
+            *ip = q;
+            *jp = first[q];
+            found = 1;
+        }
+    free(it);
+    free(first);
+    return found;
+}
+
 /* A [grid] value into k's values. An allocation that failed was read as an
  * empty item ("empty value in list '0.2, 0.3'", exit 2) or stored as a null
  * value that the duplicate check then read (SIGSEGV): out of memory now. */
@@ -144,18 +224,19 @@ static int split_values(const char *value, gw_sweep_key *k, parse_ctx *pc)
     /* a value listed twice runs the same case twice: the table then holds a
      * combination twice and its statistics count it twice ("1, 1.0" too, and
      * a flag's words: "1, true", "0, FALSE") */
-    for (int i = 0; k->values && i < k->nvalues; i++)
-        for (int j = 0; j < i; j++) {
-            char *ei, *ej;
-            double vi = gw_strtod(k->values[i], &ei), vj = gw_strtod(k->values[j], &ej);
-            const int fi = gw_parse_flag(k->values[i]), fj = gw_parse_flag(k->values[j]);
-            if (strcmp(k->values[i], k->values[j]) == 0 || (!*ei && !*ej && ei != k->values[i] && vi == vj) ||
-                (fi >= 0 && fi == fj)) {
-                gw_snprintf(msg, mlen, "%s: '%s' and '%s' in list '%s' are the same value (each case would run "
-                         "twice)", k->name, k->values[j], k->values[i], value);
-                return 0;
-            }
-        }
+    long j, i;
+    const int dup = k->values ? first_duplicate(k, &j, &i) : 0;
+    if (dup < 0)
+        return parse_nomem(pc);
+    if (dup) { /* a long list quoted whole cut the message before its reason */
+        if (strlen(value) <= 120)
+            gw_snprintf(msg, mlen, "%s: '%s' and '%s' in list '%s' are the same value (each case would run twice)",
+                     k->name, k->values[j], k->values[i], value);
+        else
+            gw_snprintf(msg, mlen, "%s: '%s' and '%s' (values %ld and %ld of its list of %d) are the same value "
+                     "(each case would run twice)", k->name, k->values[j], k->values[i], j + 1, i + 1, k->nvalues);
+        return 0;
+    }
     return k->values != NULL;
 }
 
@@ -368,6 +449,17 @@ static int scan_lines(const char *text, const char *name, parse_ctx *pc, gw_err 
                 key[0] = '\0';
                 const char *q = memchr(p + i, ']', len - i);
                 in_grid = q && q - (p + i) == 5 && memcmp(p + i, "[grid", 5) == 0;
+                /* The reader drops whatever follows the ']': '[grid] n = 1:2'
+                 * ran without n (one case, exit 0), '[params] solver = rk4'
+                 * the default solver. Only blanks or a comment may follow. */
+                const char *t = q ? q + 1 : NULL, *le = p + len;
+                while (t && t < le && (*t == ' ' || *t == '\t' || *t == '\r'))
+                    t++;
+                if (t && t < le && *t != ';' && *t != '#')
+                    return gw_err_set(err, GW_EINVAL, "%s:%ld: '%.*s' after the section header %.*s: the config "
+                                      "reader ignores it; put it on a line of its own", name, ln,
+                                      (int)(end > (size_t)(t - p) ? end - (size_t)(t - p) : (size_t)(le - t)), t,
+                                      (int)(q - (p + i) + 1), p + i);
             } else {
                 size_t k = i;
                 while (k < len && p[k] != '=' && p[k] != ':')
@@ -539,6 +631,7 @@ static int config_finish(const char *path, const char *base, const gw_sweep_mode
         return GW_EINVAL;
     }
     cfg->read_key = (*model)->read_key;
+    cfg->ncolumns = (*model)->ncolumns;
     if (cfg->ngrid == 0) {
         gw_sweep_config_free(cfg);
         return gw_err_set(err, GW_EINVAL, "%s: the [grid] section is empty or missing", path);

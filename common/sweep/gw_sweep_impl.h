@@ -30,6 +30,8 @@ const char *gw_sweep_line_fault(const char *line, size_t len, long ncases);
 const char *gw_sweep_row_grid_fault(const gw_sweep_config *cfg, long k, const char *line, size_t len);
 const char *gw_sweep_row_hash_fault(const gw_sweep_config *cfg, long k, const char *s, size_t len, int live,
                                     char *msg, size_t n);
+const char *gw_sweep_row_values_fault(const gw_sweep_config *cfg, long k, const char *line, size_t len, char *msg,
+                                      size_t n);
 
 /* gw_sweep_head.c: a new journal's "# input", "# grid" and "# param" lines
  * (malloc'd, NULL on ENOMEM); an existing journal of another config or

@@ -150,6 +150,55 @@ int gw_sweep_names_file(const gw_sweep_config *cfg, const char *name)
     return cfg->read_key && strcmp(cfg->read_key, name) == 0;
 }
 
+/* A grid value that names a file, as the duplicate search sorts it. */
+typedef struct file_id {
+    dev_t dev;
+    ino_t ino;
+    long idx;
+} file_id;
+
+static int file_id_cmp(const void *pa, const void *pb)
+{
+    const file_id *a = pa, *b = pb;
+    if (a->dev != b->dev)
+        return a->dev < b->dev ? -1 : 1;
+    if (a->ino != b->ino)
+        return a->ino < b->ino ? -1 : 1;
+    return (a->idx > b->idx) - (a->idx < b->idx);
+}
+
+/* Grid key k (its values files the cases read) names no file twice. The
+ * reader refuses a value listed twice, also in another spelling ('1, 1.0'),
+ * but file names were compared as text: 's.txt, ./s.txt', an absolute path,
+ * 'sub/../s.txt' or a link to the same sample ran each case twice (exit 0).
+ * Files are compared by identity (device and inode, links followed); values
+ * naming nothing are left to the check that names them. GW_OK, GW_EINVAL
+ * (the first pair in list order), GW_ENOMEM. */
+static int grid_files_distinct(const char *path, const gw_sweep_key *k, gw_err *err)
+{
+    file_id *f = malloc((size_t)(k->nvalues ? k->nvalues : 1) * sizeof *f);
+    if (!f)
+        return gw_err_set(err, GW_ENOMEM, "%s: out of memory", path);
+    long m = 0, best_i = -1, best_j = -1;
+    for (long q = 0; q < k->nvalues; q++) {
+        struct stat st;
+        if (stat(k->values[q], &st) == 0)
+            f[m++] = (file_id){st.st_dev, st.st_ino, q};
+    }
+    qsort(f, (size_t)m, sizeof *f, file_id_cmp);
+    for (long q = 1, head = 0; q < m; q++) { /* a run of one file, by index: its head the first listed */
+        if (f[q].dev != f[head].dev || f[q].ino != f[head].ino)
+            head = q;
+        else if (q == head + 1 && (best_i < 0 || f[q].idx < best_i))
+            best_i = f[q].idx, best_j = f[head].idx;
+    }
+    free(f);
+    if (best_i < 0)
+        return GW_OK;
+    return gw_err_set(err, GW_EINVAL, "%s: [grid] %s: '%s' and '%s' in the list are the same file (each case would "
+                      "run twice)", path, k->name, k->values[best_j], k->values[best_i]);
+}
+
 int gw_sweep_find_inputs(const char *path, gw_sweep_config *cfg, gw_err *err)
 {
     long cap = 0;
@@ -164,7 +213,12 @@ int gw_sweep_find_inputs(const char *path, gw_sweep_config *cfg, gw_err *err)
         gw_sweep_config_free(cfg);
         return gw_err_set(err, rc, "%s: out of memory", path);
     }
-    return GW_OK;
+    for (int i = 0; rc == GW_OK && i < cfg->ngrid; i++)
+        if (gw_sweep_names_file(cfg, cfg->grid[i].name))
+            rc = grid_files_distinct(path, &cfg->grid[i], err);
+    if (rc != GW_OK)
+        gw_sweep_config_free(cfg);
+    return rc;
 }
 
 int gw_sweep_inputs_check(const gw_sweep_config *cfg, gw_err *err)

@@ -334,6 +334,8 @@ static int journal_check(const char *path, const char *dir, const char *head, co
         const char *why = k < 0 ? gw_sweep_line_fault(buf + pos, l, cfg->ncases) : gw_sweep_row_grid_fault(cfg, k, buf + pos, l);
         if (k >= 0 && !why)
             why = gw_sweep_row_hash_fault(cfg, k, buf + pos, l - 10, 0, hmsg, sizeof hmsg);
+        if (k >= 0 && !why)
+            why = gw_sweep_row_values_fault(cfg, k, buf + pos, l, hmsg, sizeof hmsg);
         if (k >= 0 && !why) {
             if (nrows == caprows) {
                 long nc = caprows ? 2 * caprows : 1024;

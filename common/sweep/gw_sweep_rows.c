@@ -193,6 +193,68 @@ const char *gw_sweep_row_hash_fault(const gw_sweep_config *cfg, long k, const ch
     return NULL;
 }
 
+/* NULL when line (len bytes with its newline; its checksum, grid values and
+ * hashes already found right) is, byte for byte, the row this build writes
+ * for case k with the numbers it holds: cfg->ncolumns of them (when known),
+ * each "nan" or a number as %.17g prints it. Else why not, into msg. Only the
+ * checksum vouched for the rest, and a checksum is no guard against a tool
+ * that recomputes it or a build whose model writes other columns: a row with
+ * a column dropped or added, "abc", an empty cell, "-nan", "1e999", a quoted
+ * number or a NUL byte was resumed and copied into results.csv (exit 0). */
+const char *gw_sweep_row_values_fault(const gw_sweep_config *cfg, long k, const char *line, size_t len, char *msg,
+                                      size_t n)
+{
+    unsigned long long ch, rh;
+    const size_t body = len - 10; /* without ",checksum\n" (gw_sweep_line_case checked them) */
+    if (!row_hashes(cfg, line, body, &ch, &rh))
+        return "its hashes are missing";
+    const char *end = line + body - (cfg->read_key ? 34 : 17); /* the comma before the hashes */
+    const char *p = line;
+    for (int i = 0; i <= cfg->ngrid; i++) /* past the case number and the grid values (checked) */
+        p = (const char *)memchr(p, ',', (size_t)(end - p) + 1) + 1;
+    p--; /* the comma before the first result, or the hashes' */
+    long count = 0;
+    for (const char *q = p; q < end; q++)
+        count += *q == ',';
+    if (cfg->ncolumns > 0 && count != cfg->ncolumns) {
+        gw_snprintf(msg, n, "case %ld's row holds %ld result values where model %s writes %d (a row of another "
+                 "granwave, or edited)", k, count, cfg->model, cfg->ncolumns);
+        return msg;
+    }
+    double *out = malloc((size_t)(count ? count : 1) * sizeof *out);
+    char *again = malloc(len + 64);
+    const char *why = NULL;
+    if (!out || !again)
+        why = "out of memory checking it";
+    for (long j = 0; j < count && !why; j++) {
+        const char *f = p + 1, *fe = memchr(f, ',', (size_t)(end - f) + 1);
+        const size_t fl = (size_t)(fe - f);
+        char text[48], *e = text;
+        int bad = fl == 0 || fl >= sizeof text;
+        if (!bad) {
+            memcpy(text, f, fl);
+            text[fl] = '\0';
+            out[j] = strcmp(text, "nan") == 0 ? NAN : gw_strtod(text, &e);
+            bad = strcmp(text, "nan") != 0 && (*e || isnan(out[j]));
+        }
+        if (bad) {
+            gw_snprintf(msg, n, "case %ld's result value %ld ('%.*s') is not a number as a sweep writes it", k, j + 1,
+                     (int)(fl < 40 ? fl : 40), f);
+            why = msg;
+        }
+        p = fe;
+    }
+    if (!why && (gw_sweep_format_row(cfg, k, out, (int)count, rh, again, len + 64) != GW_OK ||
+                 strlen(again) != len || memcmp(again, line, len) != 0)) {
+        gw_snprintf(msg, n, "case %ld's row is not as a sweep writes it (a number, its case number or a hash spelt "
+                 "otherwise)", k);
+        why = msg;
+    }
+    free(out);
+    free(again);
+    return why;
+}
+
 int gw_sweep_row_check(const gw_sweep_config *cfg, const char *row, gw_err *err)
 {
     char msg[1024];

@@ -20,7 +20,7 @@ from ._errors import (GW_ECANCELED, GW_EENERGY, GW_EFORMAT, GW_EINVAL, GW_EIO, G
                       keyword_text)
 from ._result import CLOCK_KEYS, Result, read_result  # noqa: F401
 from ._values import (_TYPE_NAMES, CHOICE, DARRAY, DOUBLE, FARRAY, FLAG, IARRAY, INT, LIST,  # noqa: F401
-                      LONG, RANGE, TEXT, _flag, _items, _text, _texts, list_most, read_table)
+                      LONG, RANGE, TEXT, _flag, _items, _show, _text, _texts, list_most, read_table)
 
 
 def warn(what, text, stacklevel=3):
@@ -68,7 +68,7 @@ class Study:
                 try:  # a file name as the OS gave it (undecodable bytes as surrogates) goes back as those bytes
                     raw = os.fsencode(text) if p.type == TEXT else text.encode()
                 except UnicodeEncodeError:
-                    raise GranwaveValueError(f"{self.func}: {p.keyword}: {text!r} cannot be encoded", GW_EINVAL) from None
+                    raise GranwaveValueError(f"{self.func}: {p.keyword}: {_show(text)} cannot be encoded", GW_EINVAL) from None
                 rc = lib.gw_param_set(self.table, buf, p.name.encode(), raw, ctypes.byref(err))
                 if rc != 0:
                     _raise(rc, err, self.func, self.names, _texts(kwargs.values()))
@@ -167,7 +167,7 @@ class Progress:
         if fn is not None and not callable(fn):
             # it failed only at the first report, after that much of the run
             raise TypeError(f"{what}: progress must be a callable f(done, total) or None, got "
-                            f"{type(fn).__name__} ({fn!r})")
+                            f"{type(fn).__name__} ({_show(fn)})")
         self.fn = fn
         self.exc = None
         self.interruptible = False  # set by the call, under Interruptible

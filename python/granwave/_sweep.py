@@ -18,7 +18,7 @@ from ._core import Interruptible, Progress
 from ._errors import GW_EINVAL, GranwaveError, GranwaveValueError, _raise
 from ._lib import lib
 from ._result import Result
-from ._values import FLAG, _BYTES, _fspath, _items, _kind, _plain, _scalar, _text, _texts, read_table
+from ._values import FLAG, TEXT, _BYTES, _fspath, _items, _kind, _plain, _scalar, _show, _text, _texts, read_table
 
 
 def sweep_models():
@@ -57,11 +57,31 @@ def _ini_value(key, v, rows=()):
         except TypeError as e:  # named by the caller, as the other values are
             raise TypeError(str(e).split(": ", 1)[-1]) from None
     if not isinstance(v, (str, os.PathLike)) and isinstance(_scalar(v), bool):
-        raise TypeError(f"expected a number, got {v!r}")
+        raise TypeError(f"expected a number, got {_show(v)}")
     s = _text_plain(v)
     if any(c in s for c in "\n\r;#\0") or not s.strip():
-        raise ValueError(f"{key}: value {s!r} cannot go into a sweep (empty, or holds ';', '#', NUL or a newline)")
+        raise ValueError(f"{key}: value {_show(s)} cannot go into a sweep (empty, or holds ';', '#', NUL or a newline)")
+    # The config reader drops the blanks around a value: sample=" a.txt" ran
+    # the file 'a.txt' (the result's column said ' a.txt'), where
+    # layer_impact(sample=" a.txt") opens ' a.txt'. (Around a number or a
+    # choice they change nothing.)
+    file = bool(rows) and all(r.type == TEXT for r in rows)
+    if file and s != s.strip(_INI_BLANKS):
+        raise ValueError(f"{key}: value {_show(s)} begins or ends with a blank, which a sweep's config reader drops "
+                         f"(it would run {_show(s.strip(_INI_BLANKS))})")
+    # A file name as the OS gives it (undecodable bytes as surrogates, from
+    # os.listdir or os.fsdecode) goes into the config as those bytes, as a
+    # study's keyword does; any other value must be text (the whole config
+    # failed to encode, a UnicodeEncodeError naming no keyword).
+    try:
+        s.encode()
+    except UnicodeEncodeError:
+        if not file:
+            raise GranwaveValueError(f"{key}: {_show(s)} cannot be encoded", GW_EINVAL) from None
     return s
+
+
+_INI_BLANKS = " \t\v\f"  # what libinih's strip takes (isspace; newlines are refused above)
 
 
 def _text_plain(v):
@@ -102,7 +122,7 @@ def _grid_values(key, v):
         except OverflowError:
             n = math.inf
         if n > _GRID_MAX:
-            raise GranwaveValueError(f"sweep() grid: '{key}': {v!r} holds more than 1e9 values: the grid has more "
+            raise GranwaveValueError(f"sweep() grid: '{key}': {_show(v)} holds more than 1e9 values: the grid has more "
                                      f"than 1e9 cases", GW_EINVAL)
     if isinstance(v, str):
         v = _plain(v)
@@ -178,7 +198,7 @@ def run_sweep(model, grid, params, jobs, progress):
     seen = {}  # t_max and t-max are one key: "sweep: sweep:5: duplicate key 't-max'" named a line of a text never shown
     for k in itertools.chain(grid, (k for k, v in params.items() if v is not None)):
         if not isinstance(k, str):  # AttributeError: 'int' object has no attribute 'replace'
-            raise TypeError(f"sweep() grid: a key is a keyword name (str), got {type(k).__name__} ({k!r})")
+            raise TypeError(f"sweep() grid: a key is a keyword name (str), got {type(k).__name__} ({_show(k)})")
         name = k.replace("_", "-")
         if name in seen and seen[name] != k:
             raise TypeError(f"sweep(): '{seen[name]}' and '{k}' name the same parameter")
@@ -257,7 +277,7 @@ def run_sweep(model, grid, params, jobs, progress):
     try:
         with Interruptible() as it:
             cb.interruptible = it.on
-            rc = lib.gw_sweep_run_text(text.encode(), b"sweep", int(jobs), cb.c_fn, None, ctypes.byref(values),
+            rc = lib.gw_sweep_run_text(text.encode(errors="surrogateescape"), b"sweep", int(jobs), cb.c_fn, None, ctypes.byref(values),
                                        ctypes.byref(ncases), ctypes.byref(mod), ctypes.byref(err))
         cb.reraise()
         if rc != 0:
@@ -266,7 +286,7 @@ def run_sweep(model, grid, params, jobs, progress):
         cases = list(itertools.product(*axes.values()))  # the C order: last key fastest
         if ncases.value != len(cases):  # each grid value here must be one case's value there
             raise GranwaveError(f"sweep: the library ran {ncases.value} cases where the grid gives {len(cases)}: "
-                                f"the grid values are not one value each ({text!r})", GW_EINVAL)
+                                f"the grid values are not one value each ({_show(text)})", GW_EINVAL)
         ncol = m.ncolumns
         cols = [m.columns[j].decode() for j in range(ncol)]
         a = np.ctypeslib.as_array(values, shape=(ncases.value * ncol,)).copy().reshape(ncases.value, ncol)

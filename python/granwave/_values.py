@@ -9,6 +9,7 @@ import itertools
 import math
 import numbers
 import os
+import reprlib
 
 import numpy as np
 
@@ -79,8 +80,28 @@ def _scalar(v):
     return None
 
 
+# A caller's value quoted in a message: at most about a line, and never an
+# exception of its own. repr() of a list of 10**6 numbers given for vimp made a
+# TypeError of 7.9 MB, and a value whose __repr__ raised replaced the refusal
+# naming the keyword by that error (chain(vimp=obj) raised obj's RuntimeError).
+_REPR = reprlib.Repr()
+_REPR.maxstring = _REPR.maxother = 80
+_REPR.maxlong = 40
+_REPR.maxlist = _REPR.maxtuple = _REPR.maxarray = _REPR.maxset = _REPR.maxfrozenset = _REPR.maxdeque = 8
+_REPR.maxdict = 4
+
+
+def _show(value):
+    """repr(value) for a message: cut to about 80 characters, and a plain
+    '<TYPE instance ...>' when its __repr__ fails (reprlib's rule)."""
+    try:
+        return _REPR.repr(value)
+    except Exception:  # noqa: BLE001 - a container whose items' repr fails in reprlib's own code
+        return f"<{type(value).__name__} object>"
+
+
 def _kind(value):
-    return f"{type(value).__name__} ({value!r})"
+    return f"{type(value).__name__} ({_show(value)})"
 
 
 def _flag(p, value):
@@ -201,7 +222,7 @@ def _text(p, value, most=(_INT_MAX, "")):
     if isinstance(value, str):
         value = _plain(value)
         if "\0" in value:  # C would read up to the NUL: another file, silently
-            raise GranwaveValueError(f"{p.keyword}: {value!r} holds a NUL character", GW_EINVAL)
+            raise GranwaveValueError(f"{p.keyword}: {_show(value)} holds a NUL character", GW_EINVAL)
         return value
     if p.type == LIST:
         if _scalar(value) is not None and not isinstance(value, (bool, np.bool_, np.ndarray)):
@@ -220,19 +241,19 @@ def _text(p, value, most=(_INT_MAX, "")):
                 continue
             v = _scalar(x)
             if v is None or isinstance(v, bool):
-                raise TypeError(f"{p.keyword}: item {k + 1} is not a number ({x!r})")
+                raise TypeError(f"{p.keyword}: item {k + 1} is not a number ({_show(x)})")
             # an integer by its digits, as a scalar's: float() of one beyond the
             # largest double raised OverflowError naming nothing (radii=[1e-3,
             # 2**2000]); the library refuses it as not finite, naming the keyword
             items.append(str(v) if isinstance(v, int) else repr(v))
         if any("," in x for x in items):
-            raise GranwaveValueError(f"{p.keyword}: an item holds ',' ({items!r})", GW_EINVAL)
+            raise GranwaveValueError(f"{p.keyword}: an item holds ',' ({_show(items)})", GW_EINVAL)
         return ",".join(items) if items else "none"
     if p.type == RANGE:
         if isinstance(value, range):
             # len() of range(1, 2**80) raised OverflowError naming nothing
             if value.step != 1 or value.stop <= value.start:
-                raise GranwaveValueError(f"{p.keyword}: a range of step 1 with at least one value, got {value!r}",
+                raise GranwaveValueError(f"{p.keyword}: a range of step 1 with at least one value, got {_show(value)}",
                                          GW_EINVAL)
             return f"{value.start}:{value.stop - 1}"
         x = _scalar(value)
@@ -242,17 +263,17 @@ def _text(p, value, most=(_INT_MAX, "")):
         # refuses it ("'1.5' is not an integer"), instead of being cut by int()
         if isinstance(value, (str,) + _BYTES) or not hasattr(value, "__len__") or \
                 (isinstance(value, np.ndarray) and value.ndim != 1) or len(value) != 2:
-            raise TypeError(f"{p.keyword}: expected (A, B), an integer or a range, got {value!r}")
+            raise TypeError(f"{p.keyword}: expected (A, B), an integer or a range, got {_show(value)}")
         ends = []
         for x in _items(p.keyword, value, 2):
             v = _scalar(x)
             if v is None or isinstance(v, bool):
-                raise TypeError(f"{p.keyword}: a range end must be a number, got {x!r}")
+                raise TypeError(f"{p.keyword}: a range end must be a number, got {_show(x)}")
             ends.append(str(v) if isinstance(v, int) else repr(v))
         return ":".join(ends)
     x = _scalar(value)
     if isinstance(x, bool):
-        raise TypeError(f"{p.keyword}: expected a number, got {value!r}")
+        raise TypeError(f"{p.keyword}: expected a number, got {_show(value)}")
     if isinstance(x, int):
         return str(x)
     if isinstance(x, float):

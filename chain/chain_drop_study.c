@@ -129,6 +129,8 @@ static const gw_param drop_fields[] = {
     RF("first_converged", r.first.converged, "first collision: 1 = ended at the chain's end"),
     RF("first_wall_done", r.first.wall_done,
        "first collision: 1 = bead 1 off the wall and separating at its end, or off it at the cut half way through its flight"),
+    {.name = "first_wall_pending", .type = GW_PARAM_TEXT, .offset = OFF(r.first.wall_pending), .unit = "",
+     .help = "first collision: first_wall_done 0: what kept the wall's contact going at its end (None: done)"},
     RD("first_t_end", r.first.t_end, "s", "first collision: its end"),
     RL("first_events", r.first.n_events, "first collision: contact events"),
     RL("first_missed_events", r.first.missed_events, "first collision: contact changes found from the state"),

@@ -308,6 +308,13 @@ static int resolve_run(const gw_chain_setup *s, gw_chain_run_opts *o, gw_err *er
     o->sp.atol = isnan(s->atol) ? GW_CHAIN_TOL_DEFAULT : s->atol;
     o->sp.dt = isnan(s->dt) ? 0 : s->dt;
     o->sp.dt_max = s->dt_max;
+    /* every step is at most dt-max: a first step (rk4's step) given above it
+     * ran as dt-max, byte for byte under every solver (--dt 1e-3 --dt-max
+     * 1e-6), the settings recording the dt given */
+    if (o->sp.dt > 0 && s->dt_max > 0 && o->sp.dt > s->dt_max)
+        return gw_err_set(err, GW_EINVAL, "dt: %g s is above dt-max = %g s, the largest step: every step is cut to "
+                          "dt-max, so dt would run as dt-max (give dt at most dt-max, or a larger dt-max)", o->sp.dt,
+                          s->dt_max);
     o->sp.max_steps = s->max_steps;
     o->t_max = s->t_max;
     o->dt_out = s->dt_out;

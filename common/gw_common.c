@@ -103,16 +103,56 @@ static void gw_err_one_line(char *dst, size_t n, const char *src)
     dst[o] = '\0';
 }
 
+/* The start of a UTF-8 character at or after p (a continuation byte is none). */
+static size_t char_start_after(const char *s, size_t p)
+{
+    while (s[p] && ((unsigned char)s[p] & 0xc0) == 0x80)
+        p++;
+    return p;
+}
+
+/* A message longer than err->msg keeps its start, which names the input ("CMD
+ * --NAME: 'VALUE'"), and its end, which says what is wrong with it, with
+ * " ... " between: cut at the end, a path near PATH_MAX (4095 bytes) quoted in
+ * a message filled all of it, and "granwave dispersion --wisdom: 'hhh...h"
+ * said nothing of why. A message of up to 8 KiB is formatted on the stack; a
+ * longer one (a value of 100,000 characters) on the heap, and cut at its end
+ * as before when that allocation fails. */
 int gw_err_set(gw_err *err, int status, const char *fmt, ...)
 {
-    if (err) {
-        char raw[sizeof err->msg];
-        va_list ap;
-        va_start(ap, fmt);
-        gw_vsnprintf(raw, sizeof raw, fmt, ap);
-        va_end(ap);
-        gw_err_one_line(err->msg, sizeof err->msg, raw);
+    if (!err)
+        return status;
+    char raw_s[8192], line_s[8192], *raw = raw_s, *line = line_s, *raw_h = NULL, *line_h = NULL;
+    size_t room = sizeof line_s;
+    va_list ap;
+    va_start(ap, fmt);
+    int want = gw_vsnprintf(NULL, 0, fmt, ap);
+    va_end(ap);
+    if (want >= (int)sizeof raw_s) { /* every byte escaped as \xNN at most */
+        raw_h = malloc((size_t)want + 1);
+        line_h = malloc(4 * (size_t)want + 1);
+        if (raw_h && line_h) {
+            raw = raw_h;
+            line = line_h;
+            room = 4 * (size_t)want + 1;
+        }
     }
+    va_start(ap, fmt);
+    gw_vsnprintf(raw, raw == raw_h ? (size_t)want + 1 : sizeof raw_s, fmt, ap);
+    va_end(ap);
+    gw_err_one_line(line, room, raw);
+    const size_t len = strlen(line), n = sizeof err->msg;
+    if (len < n) {
+        memcpy(err->msg, line, len + 1);
+    } else {
+        static const char gap[] = " ... ";
+        size_t head = n / 3, tail = char_start_after(line, len - (n - 1 - head - (sizeof gap - 1)));
+        while (head > 0 && ((unsigned char)line[head] & 0xc0) == 0x80) /* line[head] starts a character */
+            head--;
+        gw_snprintf(err->msg, n, "%.*s%s%s", (int)head, line, gap, line + tail);
+    }
+    free(raw_h);
+    free(line_h);
     return status;
 }
 

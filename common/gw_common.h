@@ -312,7 +312,9 @@ int gw_out_file_check(const char *path, const char *what, gw_err *err);
  * symbolic link to one: a directory, FIFO, socket or device there (or behind a
  * link, or a link to nothing) is refused before the run, GW_EINVAL with one
  * line naming what and the file. The atomic write refuses them too
- * (gw_afile_open), but only after the run's work. */
+ * (gw_afile_open), but only after the run's work. So is a dir whose files,
+ * under their temporary names (".tmp.HOST.PID.XXXXXX" longer), would exceed
+ * PATH_MAX (mkstemp failed after the run). */
 int gw_out_names_check(const char *dir, const char *const *names, const char *what, gw_err *err);
 
 /* ---- fits (GSL) ---- */

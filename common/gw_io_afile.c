@@ -113,6 +113,13 @@ static void host_token(char *out, size_t n)
         gw_snprintf(out, n, "host");
 }
 
+size_t gw_io_temp_suffix_len(void)
+{
+    char host[32], buf[96];
+    host_token(host, sizeof host);
+    return (size_t)gw_snprintf(buf, sizeof buf, ".tmp.%s.%ld.XXXXXX", host, (long)getpid());
+}
+
 /* The temporaries of path that a writer on this host left when it was killed
  * (kill -9): "BASE.tmp.HOST.PID.XXXXXX" whose PID is no process (kill(PID, 0):
  * ESRCH). A writer alive (this process included), another host's temporary

@@ -34,6 +34,12 @@ int gw_io_write_target(const char *path, char *out, size_t n, const char *what, 
  * be made with another. */
 int gw_io_path_canon(const char *path, char *out, size_t n);
 
+/* What a write adds to a file's path for its temporary on this host and in
+ * this process (gw_afile_open: ".tmp.HOST.PID.XXXXXX", HOST at most 24
+ * characters): a path this much below PATH_MAX can be written; one nearer
+ * failed at mkstemp, after the run's work. */
+size_t gw_io_temp_suffix_len(void);
+
 /* The process's umask, read without changing it where the OS allows. */
 mode_t gw_io_current_umask(void);
 

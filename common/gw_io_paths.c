@@ -197,6 +197,34 @@ int gw_out_file_check(const char *path, const char *what, gw_err *err)
     return gw_out_check(dir, what, err);
 }
 
+/* path quoted for a one-line message: itself, or its first and last 48
+ * characters around "..." (a path near PATH_MAX filled the message's 512
+ * bytes and cut off the reason after it) */
+static const char *path_cut(const char *path, char *buf, size_t n)
+{
+    const size_t len = strlen(path);
+    if (len <= 100)
+        return path;
+    gw_snprintf(buf, n, "%.48s...%s", path, path + len - 48);
+    return buf;
+}
+
+/* GW_EINVAL when file p (in dir), written under its temporary name
+ * (gw_io_temp_suffix_len more), would reach PATH_MAX: mkstemp then failed
+ * with ENAMETOOLONG after the run's work (exit 1, the directories made left
+ * empty; chain --out with a path of 4060 characters, whose own length passed) */
+static int temp_fits(const char *p, const char *dir, const char *name, const char *what, gw_err *err)
+{
+    const size_t len = strlen(p), more = gw_io_temp_suffix_len();
+    if (len + more < PATH_MAX)
+        return GW_OK;
+    char cut[128];
+    return gw_err_set(err, GW_EINVAL, "%s: '%s' (%zu characters) is too long a path for the run's files: %s, "
+                      "written first as %s.tmp.HOST.PID.XXXXXX (%zu more characters), would exceed PATH_MAX "
+                      "(%d); give a shorter path", what, path_cut(dir, cut, sizeof cut), strlen(dir), name, name,
+                      more, (int)PATH_MAX);
+}
+
 int gw_out_names_check(const char *dir, const char *const *names, const char *what, gw_err *err)
 {
     if (!dir || !names)
@@ -204,13 +232,21 @@ int gw_out_names_check(const char *dir, const char *const *names, const char *wh
     for (int k = 0; names[k]; k++) {
         char p[4096 + 256], target[4096];
         struct stat st;
-        if (gw_snprintf(p, sizeof p, "%s/%s", dir, names[k]) >= (int)sizeof p)
-            return gw_err_set(err, GW_EINVAL, "%s: '%s/%s': path too long", what, dir, names[k]);
+        if (gw_snprintf(p, sizeof p, "%s/%s", dir, names[k]) >= (int)sizeof p) {
+            char cut[128];
+            return gw_err_set(err, GW_EINVAL, "%s: '%s' (%zu characters): path too long for %s", what,
+                              path_cut(dir, cut, sizeof cut), strlen(dir), names[k]);
+        }
+        if (temp_fits(p, dir, names[k], what, err) != GW_OK)
+            return GW_EINVAL;
         if (lstat(p, &st) != 0) /* nothing there (or no directory yet): the run makes it */
             continue;
         int rc = gw_io_write_target(p, target, sizeof target, what, err);
         if (rc != GW_OK)
             return rc;
+        /* a link: the temporary goes beside its target */
+        if (strcmp(target, p) != 0 && temp_fits(target, p, names[k], what, err) != GW_OK)
+            return GW_EINVAL;
         if ((rc = sticky_refused(p, target, what, err)) != GW_OK)
             return rc;
     }

@@ -586,9 +586,11 @@ int gw_layer_impact_dt_divides(double dt, double dt_out);
 /* A verlet step sp->dt > 0 given by the caller must divide ip->dt_out, or the
  * step before every sample would be shortened to land on it (an uneven grid,
  * not the dt recorded): GW_EINVAL "dt-out: ..." naming dt and values that
- * pass. The automatic step (sp->dt = 0) and the other backends pass (rk4
- * restarts its steps at every located contact event; cvode and arkode choose
- * theirs). gw_layer_impact checks it, as the setup's resolution does. */
+ * pass. An rk4 step given above dt_out is GW_EINVAL "dt: ..." (rk4 lands
+ * on every sample: no step would be longer than dt_out). The automatic step
+ * (sp->dt = 0) and the other cases pass (rk4 restarts its steps at every
+ * located contact event; cvode and arkode choose theirs). gw_layer_impact
+ * checks it, as the setup's resolution does. */
 int gw_layer_impact_step_check(const gw_layer_impact_params *ip, const gw_solver_type *type,
                                const gw_solver_params *sp, gw_err *err);
 

@@ -222,12 +222,14 @@ print('rings', nr, 'frequencies', len(fs), 'worst Parseval', worst, 'c_xcorr', d
 sys.exit(0 if ok and len(fs) > 2 and worst < 1e-6 else 1)
 PY"
 
-# (RK4 at 30 us: closure 8.4e-7 at 20 us; 6.4e-2 over the run before the exact mode's
-# tangential books were integrated as E_st + W_K with the stick/slip branch held, when
-# this check broke a 1e-3 closure)
-"$gw" layer-impact --sample "$tmp/a.txt" --rb-rm 1 --vi 10 --exact --dt 3e-5 --energy-tol 1e-7 --out "$tmp/emon" > "$tmp/stdout" 2> "$tmp/stderr"
+# (RK4 at 20 us, the sampling interval: closure 8.4e-7 at 20 us; 6.4e-2 over the run
+# before the exact mode's tangential books were integrated as E_st + W_K with the
+# stick/slip branch held, when this check broke a 1e-3 closure. It gave --dt 3e-5,
+# which rk4 never took: it lands on every sample, and a step above dt-out is now
+# refused; the same closure at the same time)
+"$gw" layer-impact --sample "$tmp/a.txt" --rb-rm 1 --vi 10 --exact --dt 2e-5 --energy-tol 1e-7 --out "$tmp/emon" > "$tmp/stdout" 2> "$tmp/stderr"
 rc=$?
-check "energy monitor: RK4 at 30 us breaks a 1e-7 closure -> exit 1 naming the time; the state at failure kept as VTK, no half-written table (got $rc: $(cat "$tmp/stderr"))" \
+check "energy monitor: RK4 at 20 us breaks a 1e-7 closure -> exit 1 naming the time; the state at failure kept as VTK, no half-written table (got $rc: $(cat "$tmp/stderr"))" \
   "[ $rc -eq 1 ] && grep -q 'energy monitor: ledger closure .* exceeds energy-tol 1e-07 at t = .*snapshot_failure.vtk' '$tmp/stderr' && grep -q '^POINTS' '$tmp/emon/snapshot_failure.vtk' && [ ! -e '$tmp/emon/ledger.csv' ] && [ ! -e '$tmp/emon/impact.json' ]"
 
 # HDF5 samples (builds with HDF5): the same seed written as .h5 gives the same impact

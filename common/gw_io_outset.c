@@ -162,6 +162,8 @@ typedef struct aside {
     const char *path; /* the name in --out */
     char *bak;        /* the earlier file's side name (how != ASIDE_NONE) */
     int how, placed;
+    dev_t dev;        /* the file placed (placed): the names not written are told from it */
+    ino_t ino;
 } aside;
 
 /* The earlier file at a->path (if any) kept aside: by a hard link when link
@@ -287,6 +289,12 @@ int gw_outset_commit(gw_outset *s, gw_err *err)
         else
             a[i].placed = 1;
     }
+    for (int i = 0; rc == GW_OK && i < s->n; i++) { /* once each (an lstat per name and file was n^2 calls) */
+        struct stat st;
+        const int got = lstat(s->path[i], &st) == 0;
+        a[i].dev = got ? st.st_dev : 0;
+        a[i].ino = got ? st.st_ino : 0;
+    }
     /* an earlier run's file of this set that this run did not write: moved
      * aside, and removed once the set is in place */
     for (int k = 0; rc == GW_OK && k < nn; k++) {
@@ -302,7 +310,7 @@ int gw_outset_commit(gw_outset *s, gw_err *err)
             sa = sb;
         int mine = 0; /* the same file as one staged (whatever the spelling of its path) */
         for (int j = 0; j < s->n && !mine; j++)
-            mine = lstat(s->path[j], &sb) == 0 && sa.st_dev == sb.st_dev && sa.st_ino == sb.st_ino;
+            mine = a[j].ino != 0 && sa.st_dev == a[j].dev && sa.st_ino == a[j].ino;
         if (mine)
             continue;
         rm[nrm].path = p;

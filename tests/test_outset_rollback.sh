@@ -19,11 +19,15 @@
 #  4 as root where chattr works: an earlier file made immutable (chattr +i), one
 #    the run replaces (falcon_summary.json) or one it would remove
 #    (trace_n15.h5): exit 1 naming it and "Operation not permitted", D as it
-#    was.
-# 20 checks (18 without chattr). On the code before, which made 7 renames in
-# section 1 (no removal by rename), 14 of its 18 checks fail: every K from 2 on
-# in sections 1 to 3 and both of section 4; K = 1 (nothing placed yet) and the
-# run with no rename failing pass there.
+#    was;
+#  5 section 1 again where no hard link can be made (the shim fails every
+#    link with EPERM, GW_FAIL_LINK_ALL): the earlier files are renamed aside
+#    instead (16 renames), every K as in 1, and with none failing the new set
+#    and nothing left aside.
+# 37 checks (35 without chattr). On the code before, which made 7 renames in
+# sections 1 and 5 (no removal by rename, no side names), 20 of its 26 checks
+# fail: every K from 2 on in sections 1, 2, 3 and 5 and both of section 4; K =
+# 1 (nothing placed yet) and the runs with no rename failing pass there.
 # shellcheck source=test_lib.sh
 . "$(dirname "$0")/test_lib.sh"
 test_setup "$@"
@@ -87,6 +91,20 @@ want="falcon_final_velocities.csv falcon_runs.csv falcon_summary.json report.md 
 [ $rc -eq 0 ] && { [ "$got" = "$want" ] || [ "$got" = "${want/trace_n7.h5 /}" ]; } && ! cmp -s ref/falcon_runs.csv d/falcon_runs.csv &&
     ok "falcon --n 1:8 with no rename failing: exit 0, its own files and the N = 15 traces gone" ||
     ko "falcon --n 1:8 with no rename failing: exit $rc, files: $got ($(head -c 200 err.txt))"
+
+# 5 (first, while ref is falcon's): no hard link can be made (the shim fails
+# every link, as a file system without them): the earlier files are renamed
+# aside instead, and put back the same way
+export GW_FAIL_LINK_ALL=1
+sweep_k "falcon --n 1:8 without hard links" falcon --n 1:8 --quiet --out d
+rm -rf d && cp -a ref d
+LD_PRELOAD="$SHIM" "$GW" falcon --n 1:8 --quiet --out d >/dev/null 2>err.txt
+rc=$?
+got=$(ls -A d | tr '\n' ' ')
+[ $rc -eq 0 ] && { [ "$got" = "$want" ] || [ "$got" = "${want/trace_n7.h5 /}" ]; } && ! cmp -s ref/falcon_runs.csv d/falcon_runs.csv &&
+    ok "falcon --n 1:8 without hard links, no rename failing: exit 0, its own files, nothing left aside" ||
+    ko "falcon --n 1:8 without hard links, no rename failing: exit $rc, files: $got ($(head -c 200 err.txt))"
+unset GW_FAIL_LINK_ALL
 
 # 2: chain over an earlier chain
 rm -rf ref && "$GW" chain --n 5 --out ref >/dev/null 2>&1 || ko "chain --n 5 (the earlier run)"

@@ -131,13 +131,19 @@ static int is_help_flag(const char *a)
  * --help; anything more is refused, never ignored */
 static int help(int argc, char **argv)
 {
+    int ended = argc > 2 && strcmp(argv[2], "--") == 0; /* "help -- COMMAND": COMMAND is no flag */
+    if (ended) {
+        argv[2] = argv[1];
+        argv++;
+        argc--;
+    }
     if (argc > 3)
         return refuse(argv[1], "unexpected argument '%s' (usage: granwave help [COMMAND])", argv[3]);
     if (argc == 3) {
         const command *c = find_command(argv[2]);
         if (!c && strcmp(argv[2], "version") == 0)
             return version_usage();
-        if (!c && (strcmp(argv[2], "help") == 0 || is_help_flag(argv[2])))
+        if (!c && (strcmp(argv[2], "help") == 0 || (!ended && is_help_flag(argv[2]))))
             return help_usage();
         if (!c)
             return refuse(argv[1], "unknown command '%s' (see granwave --help)", argv[2]);
@@ -152,13 +158,17 @@ static int help(int argc, char **argv)
  * at run time (the provenance a bug report or a paper's methods needs) */
 static int version(int argc, char **argv)
 {
-    int json = 0, want_help = 0;
+    int json = 0, want_help = 0, ended = 0;
     for (int i = 2; i < argc; i++) {
-        if (is_help_flag(argv[i])) { /* as a command's --help among its flags */
+        if (!ended && strcmp(argv[i], "--") == 0) { /* the end of the options: nothing may follow */
+            ended = 1;
+            continue;
+        }
+        if (!ended && is_help_flag(argv[i])) { /* as a command's --help among its flags */
             want_help = 1;
             continue;
         }
-        if (strcmp(argv[i], "--json") != 0)
+        if (ended || strcmp(argv[i], "--json") != 0)
             return refuse(argv[1], "unexpected argument '%s' (usage: granwave version [--json])", argv[i]);
         if (json)
             return refuse(argv[1], "%s: given twice", argv[i]);
@@ -232,10 +242,22 @@ int main(int argc, char **argv)
         usage(stderr);
         return 2;
     }
+    /* "granwave -- COMMAND ...": the end of the program's own options (--help,
+     * --version); COMMAND is then taken as a name, never as one of them */
+    const int ended = strcmp(argv[1], "--") == 0;
+    if (ended) {
+        argv[1] = argv[0];
+        argv++;
+        argc--;
+    }
+    if (argc < 2) {
+        usage(stderr);
+        return 2;
+    }
     const char *cmd = argv[1];
-    if (strcmp(cmd, "--help") == 0 || strcmp(cmd, "-h") == 0 || strcmp(cmd, "help") == 0)
+    if (strcmp(cmd, "help") == 0 || (!ended && (strcmp(cmd, "--help") == 0 || strcmp(cmd, "-h") == 0)))
         return help(argc, argv);
-    if (strcmp(cmd, "version") == 0 || strcmp(cmd, "--version") == 0)
+    if (strcmp(cmd, "version") == 0 || (!ended && strcmp(cmd, "--version") == 0))
         return version(argc, argv);
     const command *c = find_command(cmd);
     if (c)

@@ -137,13 +137,18 @@ int gw_cli_parse(const char *cmd, gw_opt *opts, int argc, char **argv, int *help
 {
     *help = 0;
     *npos = 0;
+    int ended = 0; /* "--" seen: what follows is positional (POSIX guideline 10) */
     for (int i = 0; i < argc; i++) {
         const char *a = argv[i];
-        if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
+        if (!ended && strcmp(a, "--") == 0) { /* was "unknown option '--'" */
+            ended = 1;
+            continue;
+        }
+        if (!ended && (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0)) {
             *help = 1;
             continue;
         }
-        if (strncmp(a, "--", 2) != 0) {
+        if (ended || strncmp(a, "--", 2) != 0) {
             if (*npos >= maxpos)
                 return gw_err_set(err, GW_EINVAL, "%s: unexpected argument '%s' (see %s --help)",
                                   cmd, a, cmd);
@@ -261,6 +266,8 @@ int gw_cli_study_setup(const gw_param *t, void *setup, const gw_opt *opts, int a
 {
     for (int i = 0; i < argc; i++) {
         const char *a = argv[i], *eq = strncmp(a, "--", 2) == 0 ? strchr(a + 2, '=') : NULL;
+        if (strcmp(a, "--") == 0) /* the end of the options (gw_cli_parse) */
+            break;
         if (strncmp(a, "--", 2) != 0)
             continue;
         char name[96];

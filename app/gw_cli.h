@@ -36,7 +36,8 @@ typedef struct gw_opt {
 } gw_opt;
 
 /* Parse argv[0..argc) against opts (terminated by name == NULL). Accepts
- * "--name value" and "--name=value"; "--help"/"-h" sets *help. Positional
+ * "--name value" and "--name=value"; "--help"/"-h" sets *help; "--" ends the
+ * options (every argument after it is positional, "--help" too). Positional
  * arguments go to pos (at most maxpos; more is an error). Returns GW_EINVAL with
  * a message naming the option on unknown options, missing or bad values, and on
  * an option given twice ("CMD --NAME: given twice"; --help may repeat). */

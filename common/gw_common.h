@@ -214,17 +214,23 @@ int gw_outset_begin(gw_outset *s, const char *dir, const char *const *names, gw_
  * reads, or write two things under one name. GW_OK otherwise. */
 int gw_outset_check_input(const char *dir, const char *const *names, const char *input, const char *what,
                           gw_err *err);
-/* Rename the staged files into place and remove the set's names not written.
- * On a failure the message names the file and the OS error; the staged files
- * not yet renamed are removed. The set is closed either way. */
+/* Rename the staged files into place and remove the set's names not written,
+ * all or nothing: every earlier file replaced or removed is kept aside first
+ * (a hard link beside it, or a rename where no link can be made) until the
+ * set is in place. On a failure (a rename, an immutable file: GW_EIO; out of
+ * memory: GW_ENOMEM) the message names the file and the OS error, the earlier
+ * files are put back, the new ones and the temporaries removed: dir holds
+ * what it held before (only a failure to put one back, added to the message
+ * with the name it is kept under, or kill -9, can leave less). The set is
+ * closed either way. */
 int gw_outset_commit(gw_outset *s, gw_err *err);
 /* Remove the staged temporaries; the set is closed (safe on a closed set). */
 void gw_outset_abort(gw_outset *s);
 
 /* The temporaries of this process not yet placed or removed: an atomic file's
  * from its open to its commit or abort, an output set's staged files until the
- * set is placed or aborted (up to 64 at once; one beyond is left as kill -9
- * leaves it). gw_temps_remove unlinks them all; it is async-signal-safe, for a
+ * set is placed or aborted (as many as are open or staged at once: the table
+ * grows outside the handler). gw_temps_remove unlinks them all; it is async-signal-safe, for a
  * program's own handler of a signal that ends it. It never touches a file
  * already placed: a staged file renamed into place is no longer under its
  * temporary name. The output set's guarantee holds: a signal that comes while

@@ -120,6 +120,18 @@ size_t gw_io_temp_suffix_len(void)
     return (size_t)gw_snprintf(buf, sizeof buf, ".tmp.%s.%ld.XXXXXX", host, (long)getpid());
 }
 
+int gw_io_side_name(const char *path, unsigned long seq, char *out, size_t n)
+{
+    static const char digits[] = "0123456789abcdefghijklmnopqrstuvwxyz";
+    char host[32], tag[7];
+    host_token(host, sizeof host);
+    for (int k = 5; k >= 0; k--, seq /= 36)
+        tag[k] = digits[seq % 36];
+    tag[6] = '\0';
+    const int w = gw_snprintf(out, n, "%s.tmp.%s.%ld.%s", path, host, (long)getpid(), tag);
+    return w < 0 || (size_t)w >= n ? -1 : 0;
+}
+
 /* The temporaries of path that a writer on this host left when it was killed
  * (kill -9): "BASE.tmp.HOST.PID.XXXXXX" whose PID is no process (kill(PID, 0):
  * ESRCH). A writer alive (this process included), another host's temporary
@@ -224,7 +236,15 @@ int gw_afile_open(gw_afile *f, const char *path, gw_err *err)
         release_signals(f);
         return gw_err_set(err, gw_io_status(e), "%s: cannot create: %s", path, strerror(e));
     }
-    gw_temps_add(f->tmp); /* a signal that ends the program removes it (gw_temps_on_signals) */
+    /* a signal that ends the program removes it (gw_temps_on_signals); one
+     * the table could not take (out of memory) is not kept */
+    if (gw_temps_add(f->tmp) < 0) {
+        close(fd);
+        unlink(f->tmp);
+        f->tmp[0] = '\0';
+        release_signals(f);
+        return gw_err_set(err, GW_ENOMEM, "%s: cannot create: %s", path, strerror(ENOMEM));
+    }
     /* mkstemp made it 0600: the permissions a shell's > would give (the
      * replaced file's, or 0666 less the umask) */
     fchmod(fd, gw_new_file_mode(path));

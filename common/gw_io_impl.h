@@ -40,6 +40,13 @@ int gw_io_path_canon(const char *path, char *out, size_t n);
  * failed at mkstemp, after the run's work. */
 size_t gw_io_temp_suffix_len(void);
 
+/* A name beside path of the temporaries' form ("PATH.tmp.HOST.PID.xxxxxx",
+ * xxxxxx: seq in base 36), for a file the output set keeps aside while it is
+ * placed (gw_io_outset.c): removed at the next write of path when a kill -9
+ * left it, as a temporary is. The name may be taken (link(2) then says EEXIST:
+ * try the next seq). 0, or -1 when it does not fit in n bytes. */
+int gw_io_side_name(const char *path, unsigned long seq, char *out, size_t n);
+
 /* The process's umask, read without changing it where the OS allows. */
 mode_t gw_io_current_umask(void);
 
@@ -50,9 +57,11 @@ int gw_io_status(int e);
 const char *gw_io_file_kind(mode_t m);
 
 /* A temporary made (path) for gw_temps_remove to find until it is placed
- * or removed (gw_io_temps.c): the slot taken, or -1 when the table is full
- * (a signal then leaves it, as kill -9 does); gw_temps_drop forgets it (by
- * its path; nothing for a path not there). A handler that interrupts an add
+ * or removed (gw_io_temps.c): the slot taken, or -1 when no slot could be
+ * had (out of memory for a new block of the table; the caller then removes
+ * the temporary and fails: a temporary a signal could not remove is never
+ * kept); gw_temps_drop forgets it (by its path; nothing for a path not
+ * there). A handler that interrupts an add
  * skips the slot (not yet filled: the temporary stays, as before), one that
  * interrupts a drop after the file's rename or unlink finds its name gone. */
 int gw_temps_add(const char *path);

@@ -3,8 +3,9 @@
  * directory, committed together. While a set is open on a thread, each atomic
  * file (gw_io_afile.c) it commits is staged under its temporary name; the
  * set's commit renames them all into place under a lock on the directory and
- * removes the earlier run's files of the set this run did not write; its abort
- * removes the staged temporaries. The staged temporaries stay in the table a
+ * removes the earlier run's files of the set this run did not write, all or
+ * nothing (the earlier files kept aside until the set is in place, and put
+ * back when a step fails); its abort removes the staged temporaries. The staged temporaries stay in the table a
  * signal handler empties (gw_io_temps.c) until they are placed or removed, so
  * a program ended by SIGINT before its commit leaves --out as it was.
  * Separate from the atomic file: one file needs no set, and a set outlives
@@ -150,6 +151,91 @@ void gw_outset_abort(gw_outset *s)
     outset_release(s);
 }
 
+/* What placing the set did to one name, to be undone when a later step fails:
+ * the earlier file kept aside under a side name (gw_io_side_name), by a hard
+ * link (it stays in place for readers meanwhile) or, where no hard link can
+ * be made (a file system without them; Linux's protected_hardlinks for a
+ * file of another user), by a rename; and whether the staged file was
+ * renamed into place. */
+enum { ASIDE_NONE, ASIDE_LINK, ASIDE_MOVED };
+typedef struct aside {
+    const char *path; /* the name in --out */
+    char *bak;        /* the earlier file's side name (how != ASIDE_NONE) */
+    int how, placed;
+    dev_t dev;        /* the file placed (placed): the names not written are told from it */
+    ino_t ino;
+} aside;
+
+/* The earlier file at a->path (if any) kept aside: by a hard link when link
+ * is set and the file system allows it, else by a rename (the name is then
+ * free). 0 (a->how ASIDE_NONE when nothing is there), or the errno of the
+ * failure (an immutable or append-only file, chattr +i / +a: EPERM; ENOMEM;
+ * ENAMETOOLONG); nothing is kept aside then. */
+static int keep_aside(aside *a, int link_first, unsigned long *seq)
+{
+    struct stat st;
+    a->how = ASIDE_NONE;
+    if (lstat(a->path, &st) != 0)
+        return 0; /* nothing there (or what is there the rename will tell) */
+    char name[4096 + 128];
+    int e = EEXIST;
+    for (int tries = 0; tries < 64 && a->how == ASIDE_NONE; tries++) {
+        if (gw_io_side_name(a->path, (*seq)++, name, sizeof name) != 0)
+            return ENAMETOOLONG;
+        if (link_first && link(a->path, name) == 0)
+            a->how = ASIDE_LINK;
+        else if (link_first && errno == EEXIST)
+            continue;
+        /* rename would replace a file of that name: only onto a free one (the
+         * names carry this process's id: no other process makes them) */
+        else if (lstat(name, &st) == 0)
+            continue;
+        else if (rename(a->path, name) == 0)
+            a->how = ASIDE_MOVED;
+        else
+            return errno;
+    }
+    if (a->how == ASIDE_NONE)
+        return e;
+    if (!(a->bak = strdup(name))) {
+        if (a->how == ASIDE_LINK ? unlink(name) : rename(name, a->path)) { /* the name stays: removed next run */ }
+        a->how = ASIDE_NONE;
+        return ENOMEM;
+    }
+    return 0;
+}
+
+/* After a failed step: what the set did put back as it was, the last step
+ * first (a name renamed into place twice comes back to the earliest file).
+ * A name that cannot be put back is added to err's message, its earlier file
+ * then left under its side name. */
+static void undo(aside *a, int n, aside *rm, int nrm, gw_err *err)
+{
+    for (int k = nrm + n; k-- > 0;) {
+        aside *x = k >= n ? &rm[k - n] : &a[k];
+        const int restore = x->how == ASIDE_MOVED || (x->placed && x->how == ASIDE_LINK);
+        int r = 0;
+        if (restore)
+            r = rename(x->bak, x->path);
+        else if (x->placed) /* no earlier file: the new one goes */
+            r = unlink(x->path);
+        else if (x->how == ASIDE_LINK) /* still in place: only its second name goes */
+            r = unlink(x->bak);
+        if (r != 0) {
+            const int e = errno;
+            char first[sizeof err->msg];
+            gw_snprintf(first, sizeof first, "%s", err->msg);
+            if (restore)
+                gw_err_set(err, GW_EIO, "%s; %s could not be put back (%s): the earlier file is %s", first, x->path,
+                           strerror(e), x->bak);
+            else if (x->placed)
+                gw_err_set(err, GW_EIO, "%s; the new %s could not be removed: %s", first, x->path, strerror(e));
+        }
+        if (r == 0 || restore)
+            x->how = ASIDE_NONE; /* nothing aside left to remove (or the only copy, kept) */
+    }
+}
+
 int gw_outset_commit(gw_outset *s, gw_err *err)
 {
     if (!s)
@@ -157,6 +243,9 @@ int gw_outset_commit(gw_outset *s, gw_err *err)
     if (!s->active)
         return gw_err_set(err, GW_EIO, "%s: no output set open", s->dir);
     int rc = GW_OK;
+    gw_err own = {{0}};
+    if (!err) /* undo adds to the message */
+        err = &own;
     outset_hold(s);
     /* two runs into one directory place their sets one after the other, never
      * file by file in turn: the directory holds the last one's files, all */
@@ -172,27 +261,72 @@ int gw_outset_commit(gw_outset *s, gw_err *err)
         else if (lstat(s->path[i], &st) == 0 && S_ISDIR(st.st_mode))
             rc = gw_err_set(err, GW_EIO, "%s: write failed: %s", s->path[i], strerror(EISDIR));
     }
-    for (int i = 0; rc == GW_OK && i < s->n; i++)
+    /* All or nothing, as far as POSIX allows: every earlier file this set
+     * replaces or removes is kept aside first, and a rename that fails
+     * part-way (an immutable file, a name made a directory meanwhile, an I/O
+     * error) puts back the earlier files, removes the new ones and the
+     * temporaries, and says which file and why. Before, the files renamed
+     * before the failing one stayed: --out held a mix of two runs. */
+    int nn = 0;
+    while (s->names && s->names[nn])
+        nn++;
+    aside *a = rc == GW_OK ? calloc((size_t)s->n + (size_t)nn + 1, sizeof *a) : NULL, *rm = a ? a + s->n : NULL;
+    int nrm = 0;
+    char (*rmpath)[4096 + 256] = rc == GW_OK && a && nn ? calloc((size_t)nn, sizeof *rmpath) : NULL;
+    if (rc == GW_OK && (!a || (nn && !rmpath)))
+        rc = gw_err_set(err, GW_ENOMEM, "%s: out of memory placing the output files", s->dir);
+    unsigned long seq = 0;
+    for (int i = 0; rc == GW_OK && i < s->n; i++) {
+        a[i].path = s->path[i];
+        const int e = keep_aside(&a[i], 1, &seq);
+        if (e)
+            rc = gw_err_set(err, gw_io_status(e), "%s: write failed: the earlier file cannot be replaced: %s",
+                            s->path[i], strerror(e));
+    }
+    for (int i = 0; rc == GW_OK && i < s->n; i++) {
         if (rename(s->tmp[i], s->path[i]) != 0)
             rc = gw_err_set(err, GW_EIO, "%s: write failed: %s", s->path[i], strerror(errno));
-    /* an earlier run's file of this set that this run did not write */
-    for (int k = 0; rc == GW_OK && s->names && s->names[k]; k++) {
-        char p[4096 + 256];
-        if (gw_snprintf(p, sizeof p, "%s/%s", s->dir, s->names[k]) >= (int)sizeof p)
+        else
+            a[i].placed = 1;
+    }
+    for (int i = 0; rc == GW_OK && i < s->n; i++) { /* once each (an lstat per name and file was n^2 calls) */
+        struct stat st;
+        const int got = lstat(s->path[i], &st) == 0;
+        a[i].dev = got ? st.st_dev : 0;
+        a[i].ino = got ? st.st_ino : 0;
+    }
+    /* an earlier run's file of this set that this run did not write: moved
+     * aside, and removed once the set is in place */
+    for (int k = 0; rc == GW_OK && k < nn; k++) {
+        char *p = rmpath[k];
+        if (gw_snprintf(p, sizeof rmpath[k], "%s/%s", s->dir, s->names[k]) >= (int)sizeof rmpath[k])
             continue;
-        struct stat a, b;
-        if (lstat(p, &a) != 0)
+        struct stat sa, sb;
+        if (lstat(p, &sa) != 0)
             continue;
         /* a symbolic link there was written through (gw_afile_open): it is
          * this run's when it leads to a file staged, and stays */
-        if (S_ISLNK(a.st_mode) && stat(p, &b) == 0)
-            a = b;
+        if (S_ISLNK(sa.st_mode) && stat(p, &sb) == 0)
+            sa = sb;
         int mine = 0; /* the same file as one staged (whatever the spelling of its path) */
         for (int j = 0; j < s->n && !mine; j++)
-            mine = lstat(s->path[j], &b) == 0 && a.st_dev == b.st_dev && a.st_ino == b.st_ino;
-        if (!mine && unlink(p) != 0 && errno != ENOENT)
-            rc = gw_err_set(err, GW_EIO, "%s: cannot remove the earlier run's file: %s", p, strerror(errno));
+            mine = a[j].ino != 0 && sa.st_dev == a[j].dev && sa.st_ino == a[j].ino;
+        if (mine)
+            continue;
+        rm[nrm].path = p;
+        const int e = keep_aside(&rm[nrm++], 0, &seq);
+        if (e)
+            rc = gw_err_set(err, gw_io_status(e), "%s: cannot remove the earlier run's file: %s", p, strerror(e));
     }
+    if (rc != GW_OK && a)
+        undo(a, s->n, rm, nrm, err);
+    for (int k = 0; a && k < s->n + nrm; k++) { /* placed, or put back: the side names go */
+        if (a[k].how != ASIDE_NONE)
+            unlink(a[k].bak);
+        free(a[k].bak);
+    }
+    free(a);
+    free(rmpath);
     if (rc != GW_OK) /* what is not in place is removed (a placed file's temporary name is gone) */
         for (int i = 0; i < s->n; i++)
             unlink(s->tmp[i]);

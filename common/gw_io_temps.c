@@ -10,10 +10,19 @@
  * files of its set) left the staged temporaries in --out until the next write
  * of the same name removed them, as after kill -9.
  *
- * A handler may call no allocator and take no lock, so the table is fixed and
+ * A handler may call no allocator and take no lock, so the table is
  * file-scope (the one place a handler can reach: an exception to the house
  * rule of no mutable file-scope state), each slot claimed and released by
- * atomic operations. Slots are added and dropped under the signal hold of the
+ * atomic operations. It starts as one block of 64 slots and grows by blocks
+ * of 64 made outside the handler (in gw_temps_add, by the thread that needs a
+ * slot): a block is filled in before it is linked to the last one by one
+ * atomic compare-and-swap, so a handler walking the chain sees it whole or not at all,
+ * and blocks are never freed (a handler on another thread may be reading one).
+ * Before, the table was one fixed block: the 65th temporary open or staged at
+ * once was not registered, and a signal left it (an output set of the library
+ * with more than 64 files, or 65 atomic files open at once). The memory kept is
+ * the peak number of temporaries at once, about 4 KiB each past the first 64.
+ * Slots are added and dropped under the signal hold of the
  * file layer (gw_io_sig_hold), so a handler on the same thread never sees a
  * slot half written; a handler on another thread reads a slot's path and its
  * generation before and after the copy and unlinks only a path that did not
@@ -25,17 +34,18 @@
 #include <errno.h>
 #include <signal.h>
 #include <stdatomic.h>
+#include <stdint.h>
+#include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
 
 #include "gw_common.h"
 #include "gw_io_impl.h"
 
-/* The slots: one per temporary at once. A command's output set holds at most
- * 13 files (falcon's) beside the file being written; a temporary that finds
- * the table full is not registered, and a signal then leaves it as kill -9
- * does (the next write of its name removes it). */
-#define TEMPS_MAX 64
+/* A handler may only use atomics that take no lock */
+_Static_assert(ATOMIC_INT_LOCK_FREE == 2 && ATOMIC_POINTER_LOCK_FREE == 2, "lock-free atomics for the handler");
+
+#define TEMPS_BLOCK 64
 #define TEMP_PATH_MAX (4096 + 64) /* gw_afile.tmp */
 _Static_assert(sizeof(((gw_afile *)0)->tmp) <= TEMP_PATH_MAX, "an atomic file's temporary fits a slot");
 
@@ -44,42 +54,90 @@ enum { SLOT_FREE, SLOT_BUSY, SLOT_LIVE };
 typedef struct temp_slot {
     atomic_int state;  /* SLOT_FREE, SLOT_BUSY (being filled or emptied), SLOT_LIVE */
     atomic_uint gen;   /* changed at every fill: a reader's copy is checked against it */
+    atomic_uint hash;  /* of path: a drop compares it first (a set of thousands of files) */
     char path[TEMP_PATH_MAX];
 } temp_slot;
 
-static temp_slot slots[TEMPS_MAX];
+typedef struct temp_block {
+    temp_slot slot[TEMPS_BLOCK];
+    struct temp_block *_Atomic next; /* NULL, or a block filled in before it was linked */
+} temp_block;
+
+static temp_block first;
+
+static unsigned path_hash(const char *p)
+{
+    uint32_t h = 2166136261u; /* FNV-1a */
+    for (; *p; p++)
+        h = (h ^ (unsigned char)*p) * 16777619u;
+    return h;
+}
+
+/* The block after b, made and linked when there is none: NULL when out of
+ * memory. Two threads that both link one: the first wins, the other frees its
+ * own (never seen by anyone) and takes the winner's. */
+static temp_block *next_block(temp_block *b)
+{
+    temp_block *nx = atomic_load(&b->next);
+    if (nx)
+        return nx;
+    temp_block *nb = malloc(sizeof *nb);
+    if (!nb)
+        return NULL;
+    for (int i = 0; i < TEMPS_BLOCK; i++) {
+        atomic_init(&nb->slot[i].state, SLOT_FREE);
+        atomic_init(&nb->slot[i].gen, 0u);
+        atomic_init(&nb->slot[i].hash, 0u);
+        nb->slot[i].path[0] = '\0';
+    }
+    atomic_init(&nb->next, NULL);
+    temp_block *want = NULL;
+    if (atomic_compare_exchange_strong(&b->next, &want, nb))
+        return nb;
+    free(nb);
+    return want;
+}
 
 int gw_temps_add(const char *path)
 {
     const size_t n = path ? strlen(path) : 0;
     if (n == 0 || n >= TEMP_PATH_MAX)
         return -1;
-    for (int i = 0; i < TEMPS_MAX; i++) {
-        int want = SLOT_FREE;
-        if (!atomic_compare_exchange_strong(&slots[i].state, &want, SLOT_BUSY))
-            continue;
-        memcpy(slots[i].path, path, n + 1);
-        atomic_fetch_add(&slots[i].gen, 1);
-        atomic_store(&slots[i].state, SLOT_LIVE);
-        return i;
-    }
-    return -1;
+    const unsigned h = path_hash(path);
+    int base = 0;
+    for (temp_block *b = &first; b; b = next_block(b), base += TEMPS_BLOCK)
+        for (int i = 0; i < TEMPS_BLOCK; i++) {
+            temp_slot *t = &b->slot[i];
+            int want = SLOT_FREE;
+            if (atomic_load(&t->state) != SLOT_FREE ||
+                !atomic_compare_exchange_strong(&t->state, &want, SLOT_BUSY))
+                continue;
+            memcpy(t->path, path, n + 1);
+            atomic_store(&t->hash, h);
+            atomic_fetch_add(&t->gen, 1);
+            atomic_store(&t->state, SLOT_LIVE);
+            return base + i;
+        }
+    return -1; /* out of memory for a new block */
 }
 
 void gw_temps_drop(const char *path)
 {
     if (!path || !*path)
         return;
-    for (int i = 0; i < TEMPS_MAX; i++) {
-        if (atomic_load(&slots[i].state) != SLOT_LIVE || strcmp(slots[i].path, path) != 0)
-            continue;
-        int want = SLOT_LIVE;
-        if (atomic_compare_exchange_strong(&slots[i].state, &want, SLOT_BUSY)) {
-            atomic_fetch_add(&slots[i].gen, 1);
-            atomic_store(&slots[i].state, SLOT_FREE);
+    const unsigned h = path_hash(path);
+    for (temp_block *b = &first; b; b = atomic_load(&b->next))
+        for (int i = 0; i < TEMPS_BLOCK; i++) {
+            temp_slot *t = &b->slot[i];
+            if (atomic_load(&t->state) != SLOT_LIVE || atomic_load(&t->hash) != h || strcmp(t->path, path) != 0)
+                continue;
+            int want = SLOT_LIVE;
+            if (atomic_compare_exchange_strong(&t->state, &want, SLOT_BUSY)) {
+                atomic_fetch_add(&t->gen, 1);
+                atomic_store(&t->state, SLOT_FREE);
+            }
+            return;
         }
-        return;
-    }
 }
 
 /* Async-signal-safe: atomic loads, a byte copy and unlink(2). A path
@@ -88,17 +146,19 @@ void gw_temps_drop(const char *path)
 void gw_temps_remove(void)
 {
     char copy[TEMP_PATH_MAX];
-    for (int i = 0; i < TEMPS_MAX; i++) {
-        if (atomic_load(&slots[i].state) != SLOT_LIVE)
-            continue;
-        const unsigned g = atomic_load(&slots[i].gen);
-        size_t k = 0;
-        for (; k + 1 < sizeof copy && slots[i].path[k]; k++) /* no memcpy: a byte loop is safe in a handler */
-            copy[k] = slots[i].path[k];
-        copy[k] = '\0';
-        if (atomic_load(&slots[i].state) == SLOT_LIVE && atomic_load(&slots[i].gen) == g)
-            unlink(copy);
-    }
+    for (temp_block *b = &first; b; b = atomic_load(&b->next))
+        for (int i = 0; i < TEMPS_BLOCK; i++) {
+            temp_slot *t = &b->slot[i];
+            if (atomic_load(&t->state) != SLOT_LIVE)
+                continue;
+            const unsigned g = atomic_load(&t->gen);
+            size_t k = 0;
+            for (; k + 1 < sizeof copy && t->path[k]; k++) /* no memcpy: a byte loop is safe in a handler */
+                copy[k] = t->path[k];
+            copy[k] = '\0';
+            if (atomic_load(&t->state) == SLOT_LIVE && atomic_load(&t->gen) == g)
+                unlink(copy);
+        }
 }
 
 /* The temporaries removed, then the signal's own default action: the process

@@ -13,13 +13,16 @@
  *   GW_FAIL_IO=NAME:K the K-th call to NAME fails: fopen (NULL, errno EIO),
  *                     fwrite (0 items, the stream's error flag set, errno ENOSPC),
  *                     fflush, fclose (EOF, errno EIO; fclose still closes the
- *                     stream, as a failed close does), rename, fsync (-1, EIO).
+ *                     stream, as a failed close does), rename, fsync (-1, EIO),
+ *                     link (-1, EPERM, as where no hard link can be made).
+ *   GW_FAIL_LINK_ALL=1 every link fails (EPERM): a file system without hard
+ *                     links, or Linux's protected_hardlinks for another's file.
  *   GW_FAIL_WHO=FILE  at the failing call, write to FILE the file name of the
  *                     library (or program) that asked: the first frame of the
  *                     call's stack outside this shim and the C library (so a
  *                     test can tell a failure inside FFTW, HDF5 or SUNDIALS).
  *   GW_FAIL_COUNT=FILE at exit, append one line "alloc N fopen N fwrite N fflush N
- *                     fclose N rename N fsync N" (the calls made) to FILE, so a
+ *                     fclose N rename N fsync N link N" (the calls made) to FILE, so a
  *                     test can learn a run's counts before sweeping K over them.
  *
  * The real allocator is reached through glibc's __libc_* entry points (no dlsym
@@ -44,15 +47,16 @@ extern void *__libc_calloc(size_t, size_t);
 extern void *__libc_realloc(void *, size_t);
 extern void *__libc_memalign(size_t, size_t);
 
-enum { F_ALLOC, F_FOPEN, F_FWRITE, F_FFLUSH, F_FCLOSE, F_RENAME, F_FSYNC, F_N };
+enum { F_ALLOC, F_FOPEN, F_FWRITE, F_FFLUSH, F_FCLOSE, F_RENAME, F_FSYNC, F_LINK, F_N };
 static const char *const names[F_N] = {"alloc",  "fopen",  "fwrite", "fflush",
-                                       "fclose", "rename", "fsync"};
+                                       "fclose", "rename", "fsync",  "link"};
 
 /* The shim's own state: process-wide by nature (one preload per process). */
 static atomic_long calls[F_N];
 static long fail_at[F_N]; /* 0: never */
 static atomic_int ready;  /* the environment has been read */
 static atomic_int started; /* main has been entered: count from here */
+static int no_links;       /* GW_FAIL_LINK_ALL: every link fails */
 
 static long env_long(const char *s)
 {
@@ -77,6 +81,7 @@ static void setup(void)
             if ((size_t)(colon - io) == strlen(names[i]) && !strncmp(io, names[i], (size_t)(colon - io)))
                 fail_at[i] = env_long(colon + 1);
     }
+    no_links = getenv("GW_FAIL_LINK_ALL") != NULL;
     atomic_store(&ready, 1);
 }
 
@@ -262,6 +267,16 @@ int rename(const char *from, const char *to)
         return -1;
     }
     REAL(real, rename_fn, "rename");
+    return real(from, to);
+}
+
+int link(const char *from, const char *to)
+{
+    if (hit(F_LINK) || (no_links && atomic_load(&started))) { /* as a file system without hard links */
+        errno = EPERM;
+        return -1;
+    }
+    REAL(real, rename_fn, "link");
     return real(from, to);
 }
 

@@ -6,8 +6,13 @@
  *    file renamed into place, an earlier run's files) as it was; after a
  *    commit or an abort it removes nothing; the file and the set are then
  *    aborted safely.
- *  - The table's bound: with 70 atomic files open at once, 64 temporaries are
- *    removed and 6 stay (the documented bound), and all are aborted cleanly.
+ *  - The table grows: with 200 atomic files open at once (more than its first
+ *    block of 64 slots), all 200 temporaries are removed, and the slots given
+ *    back serve again. Before, 64 were removed and 136 stayed.
+ *  - An output set of 150 files staged and one more file open in a child with
+ *    the handler, then SIGTERM: killed by it, no temporary, the 150 earlier
+ *    files byte for byte (before: 87 temporaries left); the same set placed
+ *    whole in this process, and one staged, emptied and aborted.
  *  - gw_temps_on_signals in a child: an output set with a staged file and a
  *    file being written, then SIGTERM (SIGINT, SIGHUP): the child ends killed
  *    by that signal (wait status), its directory holds the earlier file byte
@@ -43,6 +48,22 @@ static int count_temps(void)
 }
 
 static void path_of(char *out, size_t n, const char *name) { snprintf(out, n, "%s/%s", dir, name); }
+
+/* The temporaries a failed check left removed, so that the next checks count
+ * only their own (on the code before, the table's bound left some) */
+static void clear_temps(void)
+{
+    DIR *d = opendir(dir);
+    if (!d)
+        return;
+    for (struct dirent *e; (e = readdir(d)) != NULL;)
+        if (strstr(e->d_name, ".tmp.")) {
+            char p[512];
+            path_of(p, sizeof p, e->d_name);
+            unlink(p);
+        }
+    closedir(d);
+}
 
 static int write_file(const char *name, const char *text)
 {
@@ -118,35 +139,151 @@ static void remove_in_process(void)
     gw_test_true(holds("b.csv", "newer b\n"), "gw_temps_remove after it: the file stays");
 }
 
-#define NOPEN 70
+/* More temporaries at once than the table's first block of 64 holds: every
+ * one is removed (the table grows; before, the 65th and later stayed). */
+#define NOPEN 200
 
-static void table_bound(void)
+static void table_grows(void)
 {
     static gw_afile f[NOPEN];
     gw_err err = {{0}};
     int opened = 0;
     for (int i = 0; i < NOPEN; i++) {
         char name[32], p[512];
-        snprintf(name, sizeof name, "many%02d.txt", i);
+        snprintf(name, sizeof name, "many%03d.txt", i);
         path_of(p, sizeof p, name);
         opened += gw_afile_open(&f[i], p, &err) == GW_OK;
     }
-    gw_test_true(opened == NOPEN && count_temps() == NOPEN, "70 atomic files open: 70 temporaries");
+    gw_test_true(opened == NOPEN && count_temps() == NOPEN, "200 atomic files open: 200 temporaries");
     gw_temps_remove();
     int left = count_temps();
     printf("  left after gw_temps_remove: %d\n", left);
-    gw_test_true(left == NOPEN - 64, "gw_temps_remove: 64 removed (the table's size), 6 left as kill -9 leaves them");
+    gw_test_true(left == 0, "gw_temps_remove: all 200 removed (the table past its first 64 slots)");
+    clear_temps();
     for (int i = NOPEN - 1; i >= 0; i--)
         gw_afile_abort(&f[i]);
     gw_test_true(count_temps() == 0, "  all aborted: no temporary");
-    /* the slots were given back: a new file's temporary is found again */
-    char p[512];
-    path_of(p, sizeof p, "again.txt");
-    gw_afile g;
-    int rc = gw_afile_open(&g, p, &err);
+    /* the slots were given back: new files' temporaries are found again, in
+     * the first block and past it */
+    for (int i = 0; i < NOPEN; i++) {
+        char name[32], p[512];
+        snprintf(name, sizeof name, "again%03d.txt", i);
+        path_of(p, sizeof p, name);
+        gw_afile_open(&f[i], p, &err);
+    }
     gw_temps_remove();
-    gw_test_true(rc == GW_OK && !exists(g.tmp), "  the slots given back: a new temporary is removed again");
-    gw_afile_abort(&g);
+    gw_test_true(count_temps() == 0 && !exists(f[0].tmp) && !exists(f[NOPEN - 1].tmp),
+                 "  the slots given back: 200 new temporaries removed again");
+    clear_temps();
+    for (int i = 0; i < NOPEN; i++)
+        gw_afile_abort(&f[i]);
+}
+
+/* An output set of NSET files, with the earlier run's NSET files in dir */
+#define NSET 150
+
+static const char *const *set_names(void)
+{
+    static char buf[NSET][16];
+    static const char *list[NSET + 1];
+    for (int i = 0; i < NSET; i++) {
+        snprintf(buf[i], sizeof buf[i], "s%03d.csv", i);
+        list[i] = buf[i];
+    }
+    list[NSET] = NULL;
+    return list;
+}
+
+/* 1 when every file of the set holds "WHO k\n" */
+static int set_holds(const char *who)
+{
+    const char *const *nm = set_names();
+    for (int i = 0; i < NSET; i++) {
+        char text[64];
+        snprintf(text, sizeof text, "%s %d\n", who, i);
+        if (!holds(nm[i], text))
+            return 0;
+    }
+    return 1;
+}
+
+/* In a child: the handler installed, the NSET files staged and one more open,
+ * then SIGTERM. Returns the child's wait status. */
+static int child_large_set(void)
+{
+    const char *const *nm = set_names();
+    pid_t pid = fork();
+    if (pid == 0) {
+        gw_temps_on_signals();
+        gw_outset s;
+        gw_afile f;
+        char p[512], text[64];
+        if (gw_outset_begin(&s, dir, nm, NULL) != GW_OK)
+            _exit(3);
+        for (int i = 0; i < NSET; i++) {
+            path_of(p, sizeof p, nm[i]);
+            snprintf(text, sizeof text, "child %d\n", i);
+            if (gw_write_text(p, text, NULL) != GW_OK)
+                _exit(4);
+        }
+        path_of(p, sizeof p, "open.csv");
+        if (gw_afile_open(&f, p, NULL) != GW_OK)
+            _exit(5);
+        sigset_t m;
+        sigemptyset(&m);
+        sigaddset(&m, SIGTERM);
+        pthread_sigmask(SIG_UNBLOCK, &m, NULL);
+        kill(getpid(), SIGTERM);
+        _exit(0);
+    }
+    int st = 0;
+    waitpid(pid, &st, 0);
+    return st;
+}
+
+static void large_set(void)
+{
+    const char *const *nm = set_names();
+    gw_err err = {{0}};
+    char p[512], text[64];
+    int w = GW_OK;
+    for (int i = 0; i < NSET && w == GW_OK; i++) {
+        path_of(p, sizeof p, nm[i]);
+        snprintf(text, sizeof text, "earlier %d\n", i);
+        w = gw_write_text(p, text, &err);
+    }
+    gw_test_true(w == GW_OK && set_holds("earlier"), "150 earlier files written");
+    int st = child_large_set();
+    char what[200];
+    snprintf(what, sizeof what, "SIGTERM with 150 files staged and one open: the child killed by it (status 0x%x)",
+             st);
+    gw_test_true(WIFSIGNALED(st) && WTERMSIG(st) == SIGTERM, what);
+    int left = count_temps();
+    snprintf(what, sizeof what, "  no temporary (%d left), the 150 earlier files byte for byte", left);
+    gw_test_true(left == 0 && set_holds("earlier"), what);
+    clear_temps();
+    /* and in this process: such a set placed whole, then one aborted */
+    gw_outset s;
+    w = gw_outset_begin(&s, dir, nm, &err);
+    for (int i = 0; i < NSET && w == GW_OK; i++) {
+        path_of(p, sizeof p, nm[i]);
+        snprintf(text, sizeof text, "new %d\n", i);
+        w = gw_write_text(p, text, &err);
+    }
+    gw_test_true(w == GW_OK && count_temps() == NSET, "150 files staged in this process: 150 temporaries");
+    gw_test_true(gw_outset_commit(&s, &err) == GW_OK && set_holds("new") && count_temps() == 0,
+                 "  the set placed: the 150 new files, no temporary");
+    w = gw_outset_begin(&s, dir, nm, &err);
+    for (int i = 0; i < NSET && w == GW_OK; i++) {
+        path_of(p, sizeof p, nm[i]);
+        w = gw_write_text(p, "lost\n", &err);
+    }
+    gw_temps_remove();
+    gw_test_true(w == GW_OK && count_temps() == 0 && set_holds("new"),
+                 "  a second set staged, gw_temps_remove: no temporary, the placed files kept");
+    clear_temps();
+    gw_outset_abort(&s);
+    gw_test_true(set_holds("new") && count_temps() == 0, "  and aborted: nothing changed");
 }
 
 /* In a child: the handler installed, a set with a.csv staged and b.csv open,
@@ -232,7 +369,8 @@ int main(void)
         return 1;
     }
     remove_in_process();
-    table_bound();
+    table_grows();
+    large_set();
     on_signals();
     /* clean up */
     DIR *d = opendir(dir);

@@ -67,6 +67,18 @@ if "$GW" sweep u.ini --out ou --jobs 1 >/dev/null 2>&1 && "$GW" sweep d.ini --ou
 else
     ko "wall_material in [grid]: its table differs from wall-material's ($(grep '^case' ou/results.csv 2>/dev/null | cut -c1-40))"
 fi
+# a journal of a granwave that kept the '_' spelling (its head hashed over it):
+# named as such on a resume, the journal left as it is
+printf '[sweep]\nmodel = chain\n[grid]\nn = 1:2\ndt_out = 1e-6, 2e-6\n[params]\nsolver = rk4\n' >j.ini
+rm -rf oj
+"$GW" sweep j.ini --out oj --jobs 1 >/dev/null 2>&1 || ko "j.ini did not run"
+sed -i '1s/journal [0-9a-f]*,/journal 0123456789abcdef,/; s/^# grid dt-out =/# grid dt_out =/' oj/journal.csv
+cp oj/journal.csv j.before
+rm -f oj/results.csv
+if exits_refused "a journal in the '_' spelling" "^granwave sweep: oj: this directory holds another sweep: its journal has \[grid\] dt_out, an earlier granwave's spelling of dt-out" 30 \
+    "$GW" sweep j.ini --out oj --jobs 1; then ok "a journal of the '_' spelling: the resume names the spelling"; fi
+cmp -s oj/journal.csv j.before && [ ! -e oj/results.csv ] && ok "that journal left as it is, no table" ||
+    ko "that journal changed or a table written"
 # the grid does act: two materials, two forces
 if $PY - od/results.csv <<'EOF'
 import sys

@@ -29,6 +29,9 @@
 #    one), before the impact's bound on its work could name the skin. The
 #    list now stops at 8 pairs a particle (at least 1e7) and the run is
 #    refused naming the skin (exit 2, nothing written); a small skin runs.
+# Also: a journal an earlier granwave wrote in a key's '_' spelling is named
+# as such on a resume, and a comment longer than the config reader's line is
+# named as a comment (its hint was about ranges and lists).
 # Checks that fail on the code before: see docs/tests.md.
 # shellcheck source=refusal_lib.sh
 . "$2/tests/refusal_lib.sh"
@@ -86,6 +89,13 @@ rows = [l.split(",") for l in open(sys.argv[1]) if l[0].isdigit()]
 sys.exit(0 if len(rows) == 2 and rows[0][2] != rows[1][2] else 1)
 EOF
 then ok "the two wall materials give two forces"; else ko "the wall-material grid gave equal rows"; fi
+
+# a comment longer than the reader's line: named as a comment (the hint was
+# "give integers as a range A:B"), nothing written
+{ printf '[sweep]\nmodel = chain\n; '; head -c 300 /dev/zero | tr '\0' x; printf '\n[grid]\nn = 1:2\n'; } >lc.ini
+rm -rf o
+if exits_refused "a long comment" "^granwave sweep: lc.ini:3: a comment of 302 characters, above the 198" 30 \
+    "$GW" sweep lc.ini --out o --jobs 1; then ok "a comment of 302 characters named as a comment"; fi
 
 # --- 2 layer-stats over a table keyed rb_rm, height_rm ---
 $PY -c "import sys; sys.path.insert(0, '$SRC/tests'); import synthetic_tables as s; s.write_bouncing_diagram('dash.csv')" ||

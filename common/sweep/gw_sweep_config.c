@@ -530,6 +530,13 @@ static int lines_fit(const char *text, const char *name, parse_ctx *pc, gw_err *
             return gw_err_set(err, GW_EINVAL, "%s:%ld: a carriage return inside the line: lines that end in CR "
                               "alone are one line to the config reader; convert them to LF (CR LF is read too)",
                               name, ln);
+        /* a long comment too: the reader takes what does not fit as a line of
+         * its own ("give integers as a range" was no help there) */
+        const size_t lead = strspn(p, " \t");
+        if (len > max && (long)lead < len && (p[lead] == ';' || p[lead] == '#'))
+            return gw_err_set(err, GW_EINVAL, "%s:%ld: a comment of %ld characters, above the %ld of a line the "
+                              "config reader takes (it reads the rest as another line): split it over several "
+                              "comment lines", name, ln, len, max);
         if (len > max)
             return gw_err_set(err, GW_EINVAL, "%s:%ld: a line of %ld characters, above the %ld the config reader "
                               "takes: give integers as a range A:B, or go on over indented lines after a comma", name, ln, len, max);

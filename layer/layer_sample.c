@@ -406,6 +406,14 @@ int gw_layer_sample_write(const gw_layer_sample *s, const char *path, const char
     int rc = gw_layer_sample_format_check(path, err);
     if (rc == GW_OK)
         rc = layer_sample_check(s, path, NULL, GW_EINVAL, err);
+    if (rc == GW_OK) { /* the reader's last check too: two discs deep inside each
+                          other were written, and the file then refused on reading */
+        char what[4200];
+        gw_snprintf(what, sizeof what, "sample '%s'", path);
+        rc = layer_overlaps_check(s->n, s->x, s->y, s->r, s->body, what, err);
+        if (rc == GW_EFORMAT)
+            rc = GW_EINVAL;
+    }
     if (rc != GW_OK)
         return rc;
 #if GW_HAVE_HDF5

@@ -14,6 +14,9 @@ interface (tests/test_hostile_twentyninth.sh holds the program's side).
   argument (SIGSEGV) where gw_sweep_run_text and gw_chain_collide refuse it
   with GW_EINVAL and a line naming the call and the argument. Each is called
   in a child process here, so that a crash fails the check, not the session.
+- gw_layer_sample_write, which says it refuses what the reader refuses, wrote
+  a sample of two discs at one place (overlap 2 R_p) that gw_layer_sample_read
+  and every command then refused: it runs the reader's overlap check too.
 """
 import ctypes
 import json
@@ -110,3 +113,35 @@ print(f(*args), err.value.decode())
     p = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=60)
     assert p.returncode == 0, (name, p.returncode, p.stderr[-300:])
     assert p.stdout.strip() == f"-1 {name}: {arg} is NULL", p.stdout
+
+
+class _Sample(ctypes.Structure):
+    """gw_layer_sample (layer/gw_layer.h)."""
+    _fields_ = [("n", ctypes.c_int), ("width", ctypes.c_double), ("rm", ctypes.c_double),
+                ("volume_ratio", ctypes.c_double), ("porosity", ctypes.c_double), ("seed", ctypes.c_long),
+                ("mass_law", ctypes.c_int), ("clump_mass", ctypes.c_int), ("x", ctypes.POINTER(ctypes.c_double)),
+                ("y", ctypes.POINTER(ctypes.c_double)), ("r", ctypes.POINTER(ctypes.c_double)),
+                ("body", ctypes.POINTER(ctypes.c_int)), ("content_hash", ctypes.c_ulonglong)]
+
+
+@pytest.mark.parametrize("x0, written", [(0.1, False), (0.3, True)])
+def test_sample_write_refuses_what_the_reader_refuses(tmp_path, x0, written):
+    """gw_layer_sample_write says it refuses a sample that fails the reader's
+    checks; two discs at one place (overlap 2 R_p) were written all the same
+    and then refused by gw_layer_sample_read. Touching discs are written."""
+    lib = ctypes.CDLL(granwave.library_path)
+    d = lambda v: (ctypes.c_double * 3)(*v)  # noqa: E731
+    s = _Sample(n=3, width=1.0, rm=0.1, volume_ratio=0, porosity=float("nan"), seed=0, mass_law=0, clump_mass=0,
+                x=d([0.1, x0, 0.5]), y=d([0.1, 0.1, 0.1]), r=d([0.1, 0.1, 0.1]), body=None)
+    err = ctypes.create_string_buffer(512)
+    for name in ("s.txt", "s.h5"):
+        path = tmp_path / name
+        rc = lib.gw_layer_sample_write(ctypes.byref(s), str(path).encode(), None, err)
+        if written:
+            assert rc == 0 and path.exists(), err.value
+            back = _Sample()
+            assert lib.gw_layer_sample_read(str(path).encode(), ctypes.byref(back), err) == 0, err.value
+            lib.gw_layer_sample_free(ctypes.byref(back))
+        else:
+            assert rc == -1 and not path.exists(), (rc, err.value)
+            assert b"particles 0 and 1 overlap by 2 R_p" in err.value, err.value

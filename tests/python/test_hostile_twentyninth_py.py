@@ -10,8 +10,8 @@ interface (tests/test_hostile_twentyninth.sh holds the program's side).
 - layer_stats read a table keyed rb_rm, height_rm (the '_' spelling a sweep
   config may give) as grid keys like any other: no diagram, every binary row
   under the default R_b/R_m = 1. It reads them as rb-rm and height-rm now.
-- gw_sweep_run, gw_chain_drop_run and gw_chain_disp_run dereferenced a NULL
-  argument (SIGSEGV) where gw_sweep_run_text and gw_chain_collide refuse it
+- gw_sweep_run, gw_chain_drop_run, gw_chain_disp_run and
+  gw_layer_sample_write (given a path) dereferenced a NULL argument (SIGSEGV) where gw_sweep_run_text and gw_chain_collide refuse it
   with GW_EINVAL and a line naming the call and the argument. Each is called
   in a child process here, so that a crash fails the check, not the session.
 - gw_layer_sample_write, which says it refuses what the reader refuses, wrote
@@ -100,6 +100,18 @@ _NULL_CALLS = [
 
 @pytest.mark.parametrize("name, nargs, arg", _NULL_CALLS)
 def test_null_arguments_refused(name, nargs, arg):
+    _null_call(name, f"[ctypes.c_void_p(0)] * ({nargs} - 1)", arg)
+
+
+def test_sample_write_null_sample_refused(tmp_path):
+    """gw_layer_sample_write(NULL, path): the path was checked, then the
+    sample read (SIGSEGV)."""
+    _null_call("gw_layer_sample_write", f"[None, {str(tmp_path / 's.txt').encode()!r}, None]", "s")
+    assert not (tmp_path / "s.txt").exists()
+
+
+def _null_call(name, args, arg):
+    """name(*args, err) in a child interpreter: -1 and 'NAME: ARG is NULL'."""
     lib = granwave.library_path
     code = f"""
 import ctypes
@@ -107,7 +119,7 @@ lib = ctypes.CDLL({lib!r})
 err = ctypes.create_string_buffer(4096)
 f = getattr(lib, {name!r})
 f.restype = ctypes.c_int
-args = [ctypes.c_void_p(0)] * ({nargs} - 1) + [ctypes.cast(err, ctypes.c_void_p)]
+args = {args} + [ctypes.cast(err, ctypes.c_void_p)]
 print(f(*args), err.value.decode())
 """
     p = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=60)

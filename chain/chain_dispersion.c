@@ -429,7 +429,10 @@ static int disp_integrate(const gw_chain_disp_params *p, const gw_solver_type *t
 int gw_chain_disp_run(const gw_chain_disp_params *p, const gw_solver_type *solver,
                       const gw_solver_params *sp, gw_chain_disp_result *r, gw_err *err)
 {
-    memset(r, 0, sizeof *r);
+    if (r) /* NULL refused as gw_chain_collide does (it was dereferenced: SIGSEGV) */
+        memset(r, 0, sizeof *r);
+    if (!p || !sp || !r)
+        return gw_err_set(err, GW_EINVAL, "gw_chain_disp_run: %s is NULL", !p ? "p" : !sp ? "sp" : "r");
     int rc = gw_chain_disp_params_validate(p, err);
     if (rc != GW_OK)
         return rc;

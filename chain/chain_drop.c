@@ -509,7 +509,10 @@ int gw_chain_drop_run(const gw_chain_drop_params *p, const gw_chain_run_opts *o,
 int gw_chain_drop_run_progress(const gw_chain_drop_params *p, const gw_chain_run_opts *o, gw_progress_fn progress,
                                void *pctx, gw_chain_drop_result *r, gw_err *err)
 {
-    memset(r, 0, sizeof *r);
+    if (r) /* NULL refused as gw_chain_collide does (it was dereferenced: SIGSEGV) */
+        memset(r, 0, sizeof *r);
+    if (!p || !o || !r)
+        return gw_err_set(err, GW_EINVAL, "gw_chain_drop_run: %s is NULL", !p ? "p" : !o ? "o" : "r");
     r->f_max = 0;
     r->t_fmax = NAN;
     int rc = gw_chain_drop_params_validate(p, err);

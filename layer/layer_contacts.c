@@ -43,9 +43,28 @@ static int push(layer_contact **c, int *nc, int *cap, int a, int b)
     return GW_OK;
 }
 
-/* Candidate pairs by a cell list over the bounding box of the particles. */
+/* The most pairs a list may hold: 8 a particle (a packing with a skin below
+ * the particles' size lists about 3) and at least 1e7. The skin is in metres:
+ * the default 0.1 m on a sample of 1 mm grains listed every pair within 0.1 m,
+ * about 1e4 per grain (20000 such grains: 2e8 pairs, some 40 GB with the
+ * per-contact state), and the list grew until the allocation failed (exit 1
+ * after the memory was gone) or the kernel killed the process, before the
+ * impact's bound on its work could name the skin. A pair takes about 200 B
+ * with its state: 1e7 pairs are 2 GB. */
+#define LAYER_PAIRS_MIN_BOUND 10000000L
+#define PAIRS_TOO_MANY 1 /* pairs_cells' status past the bound (GW_ codes are <= 0) */
+
+static long pairs_most(int n)
+{
+    const long per = 8L * ((long)n + 1);
+    return per > LAYER_PAIRS_MIN_BOUND ? per : LAYER_PAIRS_MIN_BOUND;
+}
+
+/* Candidate pairs by a cell list over the bounding box of the particles;
+ * PAIRS_TOO_MANY when they pass pairs_most, before more is allocated. */
 static int pairs_cells(const gw_layer *L, layer_contact **c, int *nc, int *cap)
 {
+    const long most = pairs_most(L->n);
     const int n = L->n;
     const double *y = L->x_list, s = L->p.skin; /* disc positions */
     layer_grid g;
@@ -76,7 +95,7 @@ static int pairs_cells(const gw_layer *L, layer_contact **c, int *nc, int *cap)
                     double dx = y[2 * j] - y[2 * i], dy = y[2 * j + 1] - y[2 * i + 1];
                     double lim = L->r[i] + L->r[j] + s;
                     if (dx * dx + dy * dy < lim * lim)
-                        rc = push(c, nc, cap, i, j);
+                        rc = *nc < most ? push(c, nc, cap, i, j) : PAIRS_TOO_MANY;
                 }
             }
         }
@@ -137,6 +156,12 @@ int layer_contacts_build(gw_layer *L, gw_err *err)
             rc = push(&c, &nc, &cap, i, LAYER_RIGHT);
         if (rc == GW_OK && (L->p.walls & GW_LAYER_WALL_BOTTOM) && yy - r < s)
             rc = push(&c, &nc, &cap, i, LAYER_BOTTOM);
+    }
+    if (rc == PAIRS_TOO_MANY) {
+        free(c);
+        return gw_err_set(err, GW_EINVAL, "skin: %g m lists more than %ld pairs of the %d particles (at most 8 a "
+                          "particle, or 1e7; the largest radius is %g m): lower the skin toward the particles' size",
+                          s, pairs_most(n), n, L->rmax);
     }
     if (rc != GW_OK) {
         free(c);

@@ -51,6 +51,8 @@ static int wants_h5(const char *path)
 
 int gw_layer_sample_out_check(const char *path, const char *what, gw_err *err)
 {
+    if (!path)
+        return gw_err_set(err, GW_EINVAL, "gw_layer_sample_out_check: path is NULL");
     if (!what)
         what = "sample";
     if (wants_h5(path) && !GW_HAVE_HDF5)
@@ -403,9 +405,19 @@ static int read_text(text_in *t, gw_layer_sample *s, gw_err *err)
 int gw_layer_sample_write(const gw_layer_sample *s, const char *path, const char *header,
                           gw_err *err)
 {
+    if (!s || !path) /* as gw_layer_sample_read (the path's name was read: SIGSEGV) */
+        return gw_err_set(err, GW_EINVAL, "gw_layer_sample_write: %s is NULL", !s ? "s" : "path");
     int rc = gw_layer_sample_format_check(path, err);
     if (rc == GW_OK)
         rc = layer_sample_check(s, path, NULL, GW_EINVAL, err);
+    if (rc == GW_OK) { /* the reader's last check too: two discs deep inside each
+                          other were written, and the file then refused on reading */
+        char what[4200];
+        gw_snprintf(what, sizeof what, "sample '%s'", path);
+        rc = layer_overlaps_check(s->n, s->x, s->y, s->r, s->body, what, err);
+        if (rc == GW_EFORMAT)
+            rc = GW_EINVAL;
+    }
     if (rc != GW_OK)
         return rc;
 #if GW_HAVE_HDF5

@@ -391,6 +391,30 @@ static int disp_column(const disp_cli *c, const gw_opt *opts, int argc, char **a
     return code;
 }
 
+/* The end of the wisdom in text[0, len): the byte after the ')' that closes
+ * its first '(' and the blanks after it; 0 when that ')' is missing. FFTW
+ * reads the wisdom and ignores what follows, which the export at the end then
+ * dropped: notes kept after the wisdom, or a second file appended to it, were
+ * lost with exit 0 (and the recorded hash stopped at a NUL byte). */
+static size_t wisdom_end(const char *text, size_t len)
+{
+    long depth = 0;
+    size_t i = 0;
+    for (; i < len; i++) {
+        depth += text[i] == '(';
+        depth -= text[i] == ')';
+        if (text[i] == '\0' || depth < 0)
+            return 0;
+        if (depth == 0 && text[i] == ')')
+            break;
+    }
+    if (i == len)
+        return 0;
+    for (i++; i < len && (text[i] == ' ' || text[i] == '\t' || text[i] == '\n' || text[i] == '\r'); i++)
+        ;
+    return i;
+}
+
 /* Wisdom is read through gw_input_read (a regular file, at most 64 MiB: a FIFO or
  * /dev/zero is refused, never read forever). An absent file is planned afresh
  * and created at the end; an existing file must be FFTW wisdom, since it is
@@ -402,14 +426,20 @@ static int disp_import_wisdom(disp_cli *c, gw_err *err)
     if (stat(path, &st) != 0 && errno == ENOENT)
         return gw_out_file_check(path, "dispersion --wisdom", err);
     char *text = NULL;
-    int rc = gw_input_read(path, "dispersion --wisdom", (size_t)64 << 20, &text, NULL, err);
+    size_t len = 0;
+    int rc = gw_input_read(path, "dispersion --wisdom", (size_t)64 << 20, &text, &len, err);
     if (rc != GW_OK)
         return GW_EINVAL;
-    if (strncmp(text, "(fftw-3", 7) != 0 || !fftw_import_wisdom_from_string(text)) {
+    const size_t end = wisdom_end(text, len);
+    if (strncmp(text, "(fftw-3", 7) != 0 || !end || !fftw_import_wisdom_from_string(text)) {
         rc = gw_err_set(err, GW_EINVAL, "dispersion --wisdom: '%s' is not FFTW wisdom; refusing to overwrite it", path);
+    } else if (end < len) {
+        rc = gw_err_set(err, GW_EINVAL, "dispersion --wisdom: '%s' holds more than FFTW wisdom (byte %zu on: %s); "
+                        "refusing to overwrite it", path, end + 1, memchr(text + end, '\0', len - end) ? "a NUL byte"
+                        : "text after the wisdom");
     } else {
         c->wisdom_read = 1;
-        c->wisdom_fnv1a64 = gw_fnv1a64(GW_FNV1A64_INIT, text, strlen(text));
+        c->wisdom_fnv1a64 = gw_fnv1a64(GW_FNV1A64_INIT, text, len);
     }
     free(text);
     return rc == GW_OK ? gw_out_file_check(path, "dispersion --wisdom", err) : rc;

@@ -105,7 +105,10 @@ void gw_stats_table_free(gw_stats_table *t);
 
 /* Index of model column name, or -1. */
 int gw_stats_table_col(const gw_stats_table *t, const char *name);
-/* Index of grid key name, or -1. */
+/* 1 when a and b name one key: equal with '-' and '_' taken as one (a sweep
+ * reads rb_rm as rb-rm); grid keys and params are looked up this way. */
+int gw_stats_same_key(const char *a, const char *b);
+/* Index of grid key name ('-' and '_' one), or -1. */
 int gw_stats_table_key(const gw_stats_table *t, const char *name);
 /* Whether rows ra and rb hold one value of grid key `key`: as numbers when
  * either is one (2 and 2.0, 0 and -0 are one value), else as strings. Groups,

@@ -95,6 +95,21 @@ static int cell_number(const char *s, double *v)
 static int numeric_setting(const char *name);
 static const char *setting_domain(const char *name, double v);
 
+/* Two names of one option: a sweep takes '_' for '-' in a key (rb_rm is
+ * rb-rm), so a table's grid keys and params are matched the same way. Read
+ * by their spelling, the rb_rm and height_rm of a sweep made that way were
+ * grid keys like any other: the binary table put every row under the default
+ * R_b/R_m = 1 and no diagram was drawn (exit 0). */
+int gw_stats_same_key(const char *a, const char *b)
+{
+    if (!a || !b)
+        return 0;
+    for (; *a && *b; a++, b++)
+        if (*a != *b && !((*a == '-' || *a == '_') && (*b == '-' || *b == '_')))
+            return 0;
+    return *a == *b;
+}
+
 static int add_param(gw_stats_table *t, char *text, long ln, gw_err *err)
 {
     char *eq = strchr(text, '=');
@@ -104,6 +119,10 @@ static int add_param(gw_stats_table *t, char *text, long ln, gw_err *err)
     char *name = gw_str_trim(text), *value = gw_str_trim(eq + 1);
     if (!*name)
         return GW_OK;
+    for (int i = 0; i < t->nparams; i++) /* a sweep writes each key once, in one spelling */
+        if (gw_stats_same_key(t->param_name[i], name))
+            return gw_err_set(err, GW_EFORMAT, "%s:%ld: param %s given twice (as '%s' before)", t->path, ln, name,
+                              t->param_name[i]);
     /* "# param rb-rm = abc" (or nan) was read as no value: the default 1 */
     double v = 0;
     if (numeric_setting(name) && !(cell_number(value, &v) && isfinite(v)))
@@ -131,7 +150,7 @@ static const char *const settings[] = {"point", "rb-rm", "height-rm", "alpha", "
 static int numeric_setting(const char *name)
 {
     for (size_t k = 0; k + 1 < sizeof settings / sizeof settings[0]; k++)
-        if (strcmp(name, settings[k]) == 0)
+        if (gw_stats_same_key(name, settings[k]))
             return 1;
     return 0;
 }
@@ -151,7 +170,7 @@ static const char *setting_domain(const char *name, double v)
                {"height-rm", 0, INFINITY, 0, 1, ">= 0"},  {"alpha", 0, 90, 0, 1, "in [0, 90) deg"},
                {"vi", 0, INFINITY, 1, 1, "> 0"},          {"density", 0, INFINITY, 1, 1, "> 0"}};
     for (size_t k = 0; k < sizeof dom / sizeof dom[0]; k++)
-        if (strcmp(name, dom[k].name) == 0) {
+        if (gw_stats_same_key(name, dom[k].name)) {
             int ok = (dom[k].open_lo ? v > dom[k].lo : v >= dom[k].lo) &&
                      (dom[k].open_hi ? v < dom[k].hi : v <= dom[k].hi);
             return ok ? NULL : dom[k].what;
@@ -200,8 +219,8 @@ static int parse_header(gw_stats_table *t, char *line, long ln, int *ncells, gw_
     for (int i = 0; i < n; i++) {
         if (!*cells[i])
             return gw_err_set(err, GW_EFORMAT, "%s:%ld: header column %d is empty", t->path, ln, i + 1);
-        for (int j = 0; j < i; j++)
-            if (strcmp(cells[i], cells[j]) == 0)
+        for (int j = 0; j < i; j++) /* a grid key under both spellings too (rb_rm, rb-rm) */
+            if (i < xi ? gw_stats_same_key(cells[i], cells[j]) : strcmp(cells[i], cells[j]) == 0)
                 return gw_err_set(err, GW_EFORMAT, "%s:%ld: header column '%s' appears twice", t->path,
                                   ln, cells[i]);
     }
@@ -246,7 +265,7 @@ static int parse_header(gw_stats_table *t, char *line, long ln, int *ncells, gw_
      * row and the binary table put all the rows under it (exit 0) */
     for (int i = 0; i < t->ncols; i++)
         for (size_t k = 0; k < sizeof settings / sizeof settings[0]; k++)
-            if (strcmp(t->col_name[i], settings[k]) == 0)
+            if (gw_stats_same_key(t->col_name[i], settings[k]))
                 return gw_err_set(err, GW_EFORMAT, "%s:%ld: column '%s' comes after x_impact, among the results: a "
                                   "grid key goes between 'case' and 'x_impact' (were the columns reordered?)", t->path,
                                   ln, settings[k]);
@@ -563,7 +582,7 @@ int gw_stats_table_col(const gw_stats_table *t, const char *name)
 int gw_stats_table_key(const gw_stats_table *t, const char *name)
 {
     for (int i = 0; i < t->ngrid; i++)
-        if (strcmp(t->grid_name[i], name) == 0)
+        if (gw_stats_same_key(t->grid_name[i], name))
             return i;
     return -1;
 }
@@ -571,7 +590,7 @@ int gw_stats_table_key(const gw_stats_table *t, const char *name)
 const char *gw_stats_table_param(const gw_stats_table *t, const char *name)
 {
     for (int i = 0; i < t->nparams; i++)
-        if (strcmp(t->param_name[i], name) == 0)
+        if (gw_stats_same_key(t->param_name[i], name))
             return t->param_value[i];
     return NULL;
 }

@@ -335,21 +335,36 @@ static int handler_one(parse_ctx *pc, const char *section, const char *name, con
         gw_snprintf(pc->msg, sizeof pc->msg, "'%s' is not an option of model %s", name, cfg->model);
         return 0;
     }
-    if (find_key(cfg->grid, cfg->ngrid, name) >= 0 || find_key(cfg->params, cfg->nparams, name) >= 0) {
-        gw_snprintf(pc->msg, sizeof pc->msg, "duplicate key '%s'", name);
+    /* The key under its one spelling: the options take '_' for '-' (t_max is
+     * t-max), and keys compared as written let 't-max' in [grid] and 't_max'
+     * in [params] both through, the later one silently setting every case
+     * (a grid of wall materials gave three equal rows, exit 0), and a table
+     * keyed 'rb_rm' that layer-stats did not know as R_b/R_m. */
+    char *canon = gw_sweep_strdup(name);
+    if (!canon)
+        return parse_nomem(pc);
+    for (char *c = canon; *c; c++)
+        if (*c == '_')
+            *c = '-';
+    if (find_key(cfg->grid, cfg->ngrid, canon) >= 0 || find_key(cfg->params, cfg->nparams, canon) >= 0) {
+        if (strcmp(canon, name) != 0)
+            gw_snprintf(pc->msg, sizeof pc->msg, "duplicate key '%s' (the option '%s': '_' and '-' are one)", name,
+                        canon);
+        else
+            gw_snprintf(pc->msg, sizeof pc->msg, "duplicate key '%s'", name);
+        free(canon);
         return 0;
     }
     gw_sweep_key *keys = is_grid ? cfg->grid : cfg->params;
     int *nk = is_grid ? &cfg->ngrid : &cfg->nparams;
     if (*nk >= GW_SWEEP_MAX_KEYS) {
         gw_snprintf(pc->msg, sizeof pc->msg, "more than %d keys in [%s]", GW_SWEEP_MAX_KEYS, section);
+        free(canon);
         return 0;
     }
     gw_sweep_key *k = &keys[(*nk)++];
     memset(k, 0, sizeof *k);
-    k->name = gw_sweep_strdup(name);
-    if (!k->name)
-        return parse_nomem(pc);
+    k->name = canon;
     if (is_grid)
         return split_values(value, k, pc);
     k->values = calloc(1, sizeof *k->values);
@@ -515,6 +530,13 @@ static int lines_fit(const char *text, const char *name, parse_ctx *pc, gw_err *
             return gw_err_set(err, GW_EINVAL, "%s:%ld: a carriage return inside the line: lines that end in CR "
                               "alone are one line to the config reader; convert them to LF (CR LF is read too)",
                               name, ln);
+        /* a long comment too: the reader takes what does not fit as a line of
+         * its own ("give integers as a range" was no help there) */
+        const size_t lead = strspn(p, " \t");
+        if (len > max && (long)lead < len && (p[lead] == ';' || p[lead] == '#'))
+            return gw_err_set(err, GW_EINVAL, "%s:%ld: a comment of %ld characters, above the %ld of a line the "
+                              "config reader takes (it reads the rest as another line): split it over several "
+                              "comment lines", name, ln, len, max);
         if (len > max)
             return gw_err_set(err, GW_EINVAL, "%s:%ld: a line of %ld characters, above the %ld the config reader "
                               "takes: give integers as a range A:B, or go on over indented lines after a comma", name, ln, len, max);

@@ -131,9 +131,24 @@ int gw_sweep_head_changed_keys(const gw_sweep_config *cfg, const char *buf, size
             size_t vl = 0;
             int at = 0;
             const char *v = journal_key(buf, len, sname, keys[i].name, &vl, &at);
-            if (!v)
+            if (!v) {
+                /* a journal of a granwave that kept the config's spelling
+                 * (dt_out): the same key, now held as dt-out */
+                char alt[128];
+                gw_snprintf(alt, sizeof alt, "%s", keys[i].name);
+                for (char *a = alt; *a; a++)
+                    if (*a == '-')
+                        *a = '_';
+                size_t al = 0;
+                int aat = 0;
+                if (strcmp(alt, keys[i].name) != 0 && journal_key(buf, len, sname, alt, &al, &aat))
+                    return gw_err_set(err, GW_EINVAL, "%s: this directory holds another sweep: its journal has %s "
+                                      "%s, an earlier granwave's spelling of %s (a sweep now holds each key under "
+                                      "its option's '-' spelling, and its hashes with it); finish that sweep with the "
+                                      "granwave that started it, or %s", dir, what, alt, keys[i].name, fix);
                 return gw_err_set(err, GW_EINVAL, "%s: this directory holds another sweep: %s %s is not in the "
                                   "config of its journal; %s", dir, what, keys[i].name, fix);
+            }
             /* the config's values as the journal writes them */
             size_t cl = 0;
             for (int j = 0; j < keys[i].nvalues; j++)

@@ -170,6 +170,8 @@ void gw_sweep_checks_end(const gw_sweep_model *m, void *memo)
 int gw_sweep_run(const gw_sweep_config *cfg, const gw_sweep_model *m, int jobs, gw_progress_fn progress,
                  void *pctx, double *values, gw_err *err)
 {
+    if (!cfg || !m || !values) /* as gw_sweep_run_text (they were dereferenced: SIGSEGV) */
+        return gw_err_set(err, GW_EINVAL, "gw_sweep_run: %s is NULL", !cfg ? "cfg" : !m ? "m" : "values");
     const int nk = cfg->ngrid + cfg->nparams;
     if (jobs < 0 || jobs > GW_SWEEP_JOBS_MAX) /* the range of granwave sweep --jobs */
         return gw_err_set(err, GW_EINVAL, "jobs: %d is outside [0, %d] (0: one per CPU)", jobs, GW_SWEEP_JOBS_MAX);

@@ -155,6 +155,13 @@ static const gw_param ws_fields[] = {
     RIT(W, "n_max", n_max, "longest column (the front's)"),
     RDT(W, "wall_time_s", wall_time_s, "s", "wall-clock time"),
     RIT(W, "unfinished", unfinished, "collisions of the tau_N sweep not ended at t_max"),
+    RIT(W, "n_held", n_held, "collisions held by gravity, of the tau_N sweep (counted in unfinished) and the front "
+                             "columns: undecided, left out of every fit and speed"),
+    {.name = "held", .type = GW_PARAM_FARRAY, .offset = offsetof(W, held), .unit = "", .rows = "nv", .cols = "nn",
+     .help = "1: the tau_N sweep's collision was held by gravity (the column fell back onto the wall before it "
+             "ended): undecided, left out of the fits [velocity, N]"},
+    {.name = "front_held", .type = GW_PARAM_FARRAY, .offset = offsetof(W, front_held), .unit = "", .rows = "nv",
+     .help = "1: the front's column was held by gravity: v_front undecided (NaN) [velocity]"},
     RDT(W, "gamma", gamma, "N s/m^1.5", "Kuwabara-Kono constant run (calibrated with restitution; 0: none)"),
     RDT(W, "alpha", alpha, "s/m", "Hunt-Crossley constant run (calibrated with restitution; 0: none)"),
     GW_PARAM_WARNINGS(offsetof(W, warnings)),
@@ -197,6 +204,13 @@ static const gw_param sw_fields[] = {
      .help = "what their constants describe, separated by semicolons"},
     RDT(S, "wall_time_s", wall_time_s, "s", "wall-clock time"),
     RIT(S, "unfinished", unfinished, "collisions still at the wall at t_max (their F_max, tau_max may not be final)"),
+    RIT(S, "n_held", n_held, "collisions held by gravity (counted in unfinished): undecided, left out of N_d and "
+                             "F_plateau"),
+    {.name = "held", .type = GW_PARAM_FARRAY, .offset = offsetof(S, held), .unit = "", .rows = "nw", .cols = "nn",
+     .help = "1: the collision was held by gravity (the column fell back onto the wall before it ended): its F_max, "
+             "tau_max undecided, left out of N_d [wall, N]"},
+    RIT(S, "n_held_rigid", n_held_rigid, "of the rigid wall's 20 columns of t_q_rigid, those held by gravity "
+                                         "(left out of its fit; NaN with fewer than two decided)"),
     RDT(S, "gamma", gamma, "N s/m^1.5", "Kuwabara-Kono constant run (calibrated with restitution; 0: none)"),
     RDT(S, "alpha", alpha, "s/m", "Hunt-Crossley constant run (calibrated with restitution; 0: none)"),
     GW_PARAM_WARNINGS(offsetof(S, warnings)),
@@ -211,6 +225,7 @@ void gw_chain_wavespeed_outcome_free(gw_chain_wavespeed_outcome *out)
     if (!out)
         return;
     free(out->v_imp); /* one block */
+    free(out->held);  /* and front_held */
     free(out->warnings);
     memset(out, 0, sizeof *out);
 }
@@ -246,9 +261,10 @@ static void power_fit(const double *v, const double *s, int n, double scale, dou
  * run that ends without the front at three contacts fails naming the
  * threshold (it failed with no reason, "no front fit at v_imp = 0.3 ()", when
  * a stiff wall's F_max(1) put the threshold above every contact's force:
- * wavespeed --kwall 1e13). */
+ * wavespeed --kwall 1e13). A column held by gravity (*held = 1) gives no
+ * speed (NaN, undecided), as its other results: the study leaves it out. */
 static int front_speed(const gw_chain_params *p, const gw_chain_run_opts *run, double frac, double *speed,
-                       gw_err *err)
+                       int *held, gw_err *err)
 {
     gw_chain *c = NULL;
     gw_chain_run_opts o = *run;
@@ -263,7 +279,8 @@ static int front_speed(const gw_chain_params *p, const gw_chain_run_opts *run, d
     int rc = gw_chain_create(p, &c, err);
     if (rc == GW_OK)
         rc = gw_chain_collide(c, &o, &r, err);
-    if (rc == GW_OK) {
+    *held = rc == GW_OK && chain_result_held(&r);
+    if (rc == GW_OK && !*held) {
         int n = p->n, m = 0;
         double *x = malloc(2 * (size_t)n * sizeof *x), *y = x ? x + n : NULL;
         for (int k = 2; x && k <= n - 2; k++)
@@ -297,30 +314,38 @@ static int ws_velocity(const gw_chain_params *p, const gw_chain_run_opts *run, c
     double *x = malloc(2 * (size_t)per_v * sizeof *x);
     if (!x)
         return gw_err_set(err, GW_ENOMEM, "wavespeed: out of memory");
-    int np = 0;
+    /* the decided columns only (as if the held sizes had not been run): a
+     * column held by gravity stopped when it fell back onto the wall, its
+     * tau_N that of that time; without held ones, the arithmetic as before */
+    int np = 0, m = 0;
     o->period[iv] = 0;
     for (int j = 0; j < per_v; j++) {
-        x[j] = a + j - 1;
-        x[per_v + j] = rv[j].tau_n;
+        if (chain_result_held(&rv[j]))
+            continue;
+        x[m] = a + j - 1;
+        x[per_v + m] = rv[j].tau_n;
+        m++;
         if (a + j >= 10 && rv[j].n_maxima >= 2) {
             o->period[iv] += rv[j].period;
             np++;
         }
     }
     o->period[iv] = np ? o->period[iv] / np : NAN;
-    gw_linfit lf;
-    gw_fit_linear(x, x + per_v, per_v, &lf);
+    gw_linfit lf = {.c1 = NAN};
+    if (m >= 2)
+        gw_fit_linear(x, x + per_v, m, &lf);
     free(x);
     o->t_q[iv] = lf.c1;
     o->v_tq[iv] = 4 * p->radius / lf.c1;
+    /* the longest column's mean wall force, undecided when it was held */
     const gw_chain_result *rl = &rv[per_v - 1];
-    o->mean_wall_force[iv] = rl->impulse / rl->tau_n;
+    o->mean_wall_force[iv] = chain_result_held(rl) ? NAN : rl->impulse / rl->tau_n;
     double kappa = 1.5 * pow(p->k, 2.0 / 3.0) * cbrt(o->mean_wall_force[iv]);
     o->v_group[iv] = 2 * p->radius * sqrt(kappa / p->mass);
     o->v_group_front[iv] = o->v_group[iv] / sqrt(1.5);
     gw_chain_params q = *p;
     q.v_imp = o->v_imp[iv];
-    int rc = front_speed(&q, run, frac, &o->v_front[iv], err);
+    int rc = front_speed(&q, run, frac, &o->v_front[iv], &o->front_held[iv], err);
     if (rc != GW_OK) {
         char tmp[sizeof err->msg];
         gw_snprintf(tmp, sizeof tmp, "%s", err->msg);
@@ -329,15 +354,53 @@ static int ws_velocity(const gw_chain_params *p, const gw_chain_run_opts *run, c
     return GW_OK;
 }
 
-static void ws_fits(const gw_chain_params *p, gw_chain_wavespeed_outcome *o)
+/* Speed iv of an estimator is left out of the fits over v_imp when the held
+ * columns left it undecided (NaN with columns held at that speed): a fit of
+ * the decided speeds; NaN with fewer than two. A NaN for another reason (a
+ * period without maxima) still makes its fit NaN, as before. */
+static int ws_skip(const gw_chain_wavespeed_outcome *o, const double *val, int iv)
 {
-    int nv = o->nv;
+    if (!isnan(val[iv]))
+        return 0;
+    for (int j = 0; j < o->nn; j++)
+        if (o->held[iv * o->nn + j])
+            return 1;
+    return o->front_held[iv];
+}
+
+/* power_fit over the speeds not skipped (ws_skip); the number fitted in *m */
+static void ws_power_fit(const gw_chain_wavespeed_outcome *o, const double *val, double scale, double f[4],
+                         double *buf, int *m)
+{
+    *m = 0;
+    for (int iv = 0; iv < o->nv; iv++)
+        if (!ws_skip(o, val, iv)) {
+            buf[*m] = o->v_imp[iv];
+            buf[o->nv + *m] = val[iv];
+            (*m)++;
+        }
+    power_fit(buf, buf + o->nv, *m, scale, f);
+}
+
+/* The fits over v_imp; *undecided: those that the held columns left without
+ * two decided speeds (nv >= 2). GW_ENOMEM. */
+static int ws_fits(const gw_chain_params *p, gw_chain_wavespeed_outcome *o, int *undecided)
+{
+    int nv = o->nv, m;
     const double *v = o->v_imp;
     double scale = pow(p->k / p->mass, 0.4) * p->radius, fp[4];
+    double *buf = malloc(2 * (size_t)nv * sizeof *buf);
+    if (!buf)
+        return GW_ENOMEM;
     const double *speeds[4] = {o->v_tq, o->v_front, o->v_group, o->v_group_front};
-    for (int i = 0; i < 4; i++)
-        power_fit(v, speeds[i], nv, scale, o->fits[i]);
-    power_fit(v, o->period, nv, pow(p->mass / p->k, 0.4), fp);
+    *undecided = 0;
+    for (int i = 0; i < 4; i++) {
+        ws_power_fit(o, speeds[i], scale, o->fits[i], buf, &m);
+        *undecided += nv >= 2 && m < 2;
+    }
+    ws_power_fit(o, o->period, pow(p->mass / p->k, 0.4), fp, buf, &m);
+    *undecided += nv >= 2 && m < 2;
+    free(buf);
     /* one speed: no line through one point (power_fit leaves NaN); the
      * speeds at it, t_q, the period, C2 (its exponent is fixed) and the
      * estimators' disagreement stand, so the run is kept and says so */
@@ -349,13 +412,25 @@ static void ws_fits(const gw_chain_params *p, gw_chain_wavespeed_outcome *o)
     o->beta_period = fp[0];
     o->beta_period_err = fp[1];
     o->c2 = o->max_disagreement = 0;
+    int n2 = 0, n3 = 0;
+    for (int iv = 0; iv < nv; iv++)
+        n2 += !ws_skip(o, o->period, iv);
     for (int iv = 0; iv < nv; iv++) {
-        o->c2 += o->period[iv] * pow(v[iv], 0.2) / pow(p->mass / p->k, 0.4) / nv;
+        if (!ws_skip(o, o->period, iv))
+            o->c2 += o->period[iv] * pow(v[iv], 0.2) / pow(p->mass / p->k, 0.4) / n2;
         double s3[3] = {o->v_tq[iv], o->v_front[iv], o->v_group_front[iv]};
+        if (!(isfinite(s3[0]) && isfinite(s3[1]) && isfinite(s3[2])))
+            continue; /* an estimator undecided at this speed (held columns) */
+        n3++;
         for (int i = 0; i < 3; i++)
             for (int j = 0; j < 3; j++)
                 o->max_disagreement = fmax(o->max_disagreement, fabs(s3[i] - s3[j]) / s3[j]);
     }
+    if (n2 == 0)
+        o->c2 = NAN;
+    if (n3 == 0)
+        o->max_disagreement = NAN;
+    return GW_OK;
 }
 
 int gw_chain_wavespeed_run(const gw_chain_wavespeed_setup *s, gw_progress_fn progress, void *pctx,
@@ -377,11 +452,15 @@ int gw_chain_wavespeed_run(const gw_chain_wavespeed_setup *s, gw_progress_fn pro
         return rc;
     double *blk = calloc(8 * (size_t)nv + 4 * (size_t)nv * (size_t)per_v, sizeof *blk);
     gw_chain_result *res = calloc((size_t)nv * (size_t)per_v, sizeof *res);
-    if (!blk || !res) {
+    int *flags = calloc((size_t)nv * ((size_t)per_v + 1), sizeof *flags); /* held, then front_held */
+    if (!blk || !res || !flags) {
         free(blk);
         free(res);
+        free(flags);
         return gw_err_set(err, GW_ENOMEM, "wavespeed: out of memory");
     }
+    out->held = flags;
+    out->front_held = flags + (size_t)nv * (size_t)per_v;
     double **arr[] = {&out->v_imp, &out->v_tq, &out->v_front, &out->v_group, &out->v_group_front,
                       &out->t_q, &out->mean_wall_force, &out->period};
     for (int i = 0; i < 8; i++)
@@ -409,10 +488,11 @@ int gw_chain_wavespeed_run(const gw_chain_wavespeed_setup *s, gw_progress_fn pro
     if (rc == GW_OK)
         rc = gw_chain_sweep_n_progress(&r.params, &r.run, out->v_imp, nv, (int)a, (int)b, (int)s->jobs, progress,
                                        pctx, res, err);
-    int held = 0;
+    int held = 0; /* of the tau_N sweep (out->n_held counts the front columns too) */
     for (int i = 0; rc == GW_OK && i < nv * per_v; i++) {
         out->unfinished += !res[i].converged;
-        held += res[i].wall_pending == chain_held_pending;
+        out->held[i] = chain_result_held(&res[i]);
+        held += out->held[i];
         out->t_max[i] = res[i].run_t_max;
         out->dt_out[i] = res[i].run_dt_out;
         out->dt[i] = res[i].run_dt;
@@ -421,11 +501,27 @@ int gw_chain_wavespeed_run(const gw_chain_wavespeed_setup *s, gw_progress_fn pro
     for (int iv = 0; rc == GW_OK && iv < nv; iv++)
         rc = ws_velocity(&r.params, &r.run, &res[iv * per_v], (int)a, per_v, s->threshold, iv, out, err);
     out->wall_time_s = (gw_clock_ms() - t0) / 1e3;
-    if (rc == GW_OK)
-        ws_fits(&r.params, out);
+    int fits_undecided = 0;
+    if (rc == GW_OK && ws_fits(&r.params, out, &fits_undecided) != GW_OK)
+        rc = gw_err_set(err, GW_ENOMEM, "wavespeed: out of memory");
+    /* the speeds at which a held column left an estimator undecided, and the
+     * fits over v_imp left without two decided speeds */
+    char list[256] = "", where[400];
+    int n_list = 0;
+    out->n_held = held;
+    for (int iv = 0; rc == GW_OK && iv < nv; iv++) {
+        out->n_held += out->front_held[iv];
+        if (ws_skip(out, out->v_tq, iv) || ws_skip(out, out->v_front, iv) || ws_skip(out, out->v_group, iv))
+            chain_list_speed(list, sizeof list, &n_list, out->v_imp[iv]);
+    }
+    gw_snprintf(where, sizeof where, "%s%s%s%s", n_list ? "the speeds measured at v_imp = " : "", list,
+                n_list ? " m/s (fewer than two decided columns, or the longest column held)" : "",
+                fits_undecided ? n_list ? ", and the fits over v_imp with fewer than two decided speeds"
+                                        : "the fits over v_imp with fewer than two decided speeds" : "");
     if (rc == GW_OK &&
         ((rc = gw_chain_unfinished_warnings(out->unfinished - held, out->ncase, &out->warnings)) != GW_OK ||
-         (rc = chain_held_warnings(held, out->ncase, &out->warnings)) != GW_OK))
+         (rc = chain_held_warnings(out->n_held, out->ncase + nv, "the fits over N and over v_imp, the front and "
+                                   "group speeds", where, &out->warnings)) != GW_OK))
         rc = gw_err_set(err, rc, "wavespeed: out of memory");
     for (int i = 0; i < nv * per_v; i++)
         gw_chain_result_free(&res[i]);
@@ -444,36 +540,65 @@ typedef struct sw_result {
     double plateau;
 } sw_result;
 
+/* F_max(N) against its plateau, over the decided columns only: a column held
+ * by gravity (stopped when it fell back onto the wall, its F_max that of that
+ * time) counts as a size not run. The plateau is F_max of the longest decided
+ * column; N_d the first size from which the decided F_max stay within tol of
+ * it, counted when at least SATURATION_RUN decided sizes lie there (or the
+ * plateau reaches back to N = 1). Where the plateau reaches back to a size
+ * below which nothing decided was run (n_lo > 1, or a held column), N_d is at
+ * most that size, not located. Without held columns, the rule and arithmetic
+ * as before. */
 static sw_result analyse(const gw_chain_result *r, int n_lo, int n_hi, double tol, double t_q)
 {
-    sw_result s = {n_hi, -1, -1, -1, r[n_hi - n_lo].f_max};
-    for (int n = n_hi; n >= n_lo; n--) {
-        if (fabs(r[n - n_lo].f_max - s.plateau) > tol * s.plateau)
+    sw_result s = {-1, -1, -1, -1, NAN};
+    int top = n_hi;
+    while (top >= n_lo && chain_result_held(&r[top - n_lo]))
+        top--;
+    if (top < n_lo) /* every column held: no plateau */
+        return s;
+    s.plateau = r[top - n_lo].f_max;
+    int low = top, on = 0, n = top;
+    for (; n >= n_lo; n--) {
+        if (chain_result_held(&r[n - n_lo]) || fabs(r[n - n_lo].f_max - s.plateau) > tol * s.plateau)
             break;
-        s.n_d = n;
+        low = n;
+        on++;
     }
     /* A plateau that reaches back to n_lo = 1 is N_d = 1 (no column is shorter);
-     * one that reaches back to n_lo > 1 began at n_lo or before it, among sizes
-     * not run: N_d <= n_lo is all they tell (softwall --kwall 1e9 --n 10:30 said
-     * N_d = 10, and --n 1:30 finds 7) */
-    if (n_hi - s.n_d + 1 < SATURATION_RUN && (s.n_d > n_lo || n_lo > 1))
+     * one that reaches back to n_lo > 1, or to a held column, began there or
+     * before, among sizes not run or not decided: N_d <= that size is all they
+     * tell (softwall --kwall 1e9 --n 10:30 said N_d = 10, and --n 1:30 finds 7) */
+    const int unknown_below = (n < n_lo && n_lo > 1) || (n >= n_lo && chain_result_held(&r[n - n_lo]));
+    if (low == 1)
+        s.n_d = 1;
+    else if (on < SATURATION_RUN)
         s.n_d = -1;
-    else if (s.n_d == n_lo && n_lo > 1) {
-        s.at_most = n_lo;
-        s.n_d = -1;
-    }
+    else if (unknown_below)
+        s.at_most = low;
+    else
+        s.n_d = low;
+    if (!isfinite(t_q)) /* the rigid wall's T_q undecided (its columns held): no F.8 */
+        return s;
     if (s.n_d > 0)
         s.n_d_pred = (int)ceil(r[s.n_d - n_lo].tau_max / t_q - 1e-9);
-    for (int n = n_lo; n <= n_hi; n++)
-        if (n >= (int)ceil(r[n - n_lo].tau_max / t_q - 1e-9)) {
-            s.n_d_fix = n > n_lo || n_lo == 1 ? n : -1; /* at n_lo > 1: smallest among those run only */
+    int gap = 0; /* a held column below: the smallest N could be that one */
+    for (int m = n_lo; m <= n_hi; m++) {
+        if (chain_result_held(&r[m - n_lo])) {
+            gap = 1;
+            continue;
+        }
+        if (m >= (int)ceil(r[m - n_lo].tau_max / t_q - 1e-9)) {
+            s.n_d_fix = !gap && (m > n_lo || n_lo == 1) ? m : -1; /* at n_lo > 1: smallest among those run only */
             break;
         }
+    }
     return s;
 }
 
-/* Rigid-wall T_q of the beads at v: slope of tau_N over N = 1..20. */
-static int measure_tq(const gw_chain_resolved *rs, double v, int jobs, double *t_q, gw_err *err)
+/* Rigid-wall T_q of the beads at v: slope of tau_N over N = 1..20, over the
+ * columns not held by gravity (*held of the 20; NaN with fewer than two). */
+static int measure_tq(const gw_chain_resolved *rs, double v, int jobs, double *t_q, int *held, gw_err *err)
 {
     gw_chain_params p = rs->params;
     const gw_material *steel = gw_material_find("steel");
@@ -482,13 +607,20 @@ static int measure_tq(const gw_chain_resolved *rs, double v, int jobs, double *t
     gw_chain_result r[20];
     int rc = gw_chain_sweep_n_progress(&p, &rs->run, &v, 1, 1, 20, jobs, NULL, NULL, r, err);
     double x[20], y[20];
+    int m = 0;
+    *held = 0;
     for (int i = 0; i < 20; i++) {
-        x[i] = i;
-        y[i] = r[i].tau_n;
+        if (rc == GW_OK && chain_result_held(&r[i])) {
+            (*held)++;
+        } else {
+            x[m] = i;
+            y[m] = r[i].tau_n;
+            m++;
+        }
         gw_chain_result_free(&r[i]);
     }
     gw_linfit lf;
-    if (rc == GW_OK && gw_fit_linear(x, y, 20, &lf) == GW_OK)
+    if (rc == GW_OK && m >= 2 && gw_fit_linear(x, y, m, &lf) == GW_OK)
         *t_q = lf.c1;
     return rc;
 }
@@ -497,13 +629,15 @@ static int measure_tq(const gw_chain_resolved *rs, double v, int jobs, double *t
 static void sheet_row(const gw_sheet *sh, const sw_result *sr, const gw_chain_result *r, int n_lo, int n_hi,
                       double t_q, double kwall, const gw_layer_law *layer, double *row)
 {
-    int nm = (int)sh->n_d, in = nm >= n_lo && nm <= n_hi, k = 0;
+    /* N = 1 and the measured N_d: NaN where that column was held (undecided) */
+    int nm = (int)sh->n_d, in = nm >= n_lo && nm <= n_hi && !chain_result_held(&r[nm - n_lo]), k = 0;
+    const int one = n_lo == 1 && !chain_result_held(&r[0]);
     row[k++] = sh->thickness > 0 ? sh->thickness : NAN;
     row[k++] = sr->n_d > 0 ? sr->n_d : NAN;
     row[k++] = sh->n_d;
     row[k++] = sh->n_d_err;
     row[k++] = sr->n_d_pred > 0 ? sr->n_d_pred : NAN;
-    row[k++] = n_lo == 1 ? r[0].tau_max : NAN;
+    row[k++] = one ? r[0].tau_max : NAN;
     row[k++] = sh->tau_max1_us * 1e-6;
     row[k++] = sr->n_d > 0 ? r[sr->n_d - n_lo].tau_max : NAN;
     row[k++] = sh->tau_max_nd_us * 1e-6;
@@ -517,12 +651,12 @@ static void sheet_row(const gw_sheet *sh, const sw_result *sr, const gw_chain_re
         row[k++] = x.n_d > 0 ? x.n_d : NAN;
         row[k++] = x.n_d > 0 ? r[x.n_d - n_lo].tau_max : NAN;
     }
-    row[k++] = n_lo == 1 ? r[0].f_max : NAN;
+    row[k++] = one ? r[0].f_max : NAN;
     row[k++] = sr->plateau;
-    row[k++] = n_lo == 1 ? r[0].eps_eff : NAN;
+    row[k++] = one ? r[0].eps_eff : NAN;
     row[k++] = kwall;
     /* contact radius over thickness at the single bead's peak force */
-    row[k++] = layer && n_lo == 1 ? gw_layer_law_contact_radius(layer, gw_layer_law_overlap(layer, r[0].f_max)) /
+    row[k++] = layer && one ? gw_layer_law_contact_radius(layer, gw_layer_law_overlap(layer, r[0].f_max)) /
                                         gw_layer_law_thickness(layer)
                                   : NAN;
 }
@@ -534,13 +668,14 @@ static int sw_alloc(gw_chain_softwall_outcome *o, int nw, int nn, int nsheet, gw
     o->ncase = nw * nn;
     o->nsheet = nsheet;
     o->n = calloc((size_t)nn + (size_t)nw * (7 + 6 * (size_t)nn), sizeof *o->n);
-    o->rigid = calloc(2 * (size_t)nw, sizeof *o->rigid);
+    o->rigid = calloc(2 * (size_t)nw + (size_t)o->ncase, sizeof *o->rigid); /* rigid, saturated, held */
     o->sheet_table = calloc((size_t)nsheet * GW_SOFTWALL_NSHEET_COLS + 1, sizeof *o->sheet_table);
     o->sheet_names = calloc((size_t)nsheet * 16 + 1, 1);
     o->sheet_materials = calloc((size_t)nsheet * GW_SOFTWALL_LABEL_MAX + 1, 1);
     if (!o->n || !o->rigid || !o->sheet_table || !o->sheet_names || !o->sheet_materials)
         return gw_err_set(err, GW_ENOMEM, "softwall: out of memory");
     o->saturated = o->rigid + nw;
+    o->held = o->rigid + 2 * (size_t)nw;
     double *b = o->n + nn;
     double **per_w[] = {&o->kwall, &o->n_d, &o->n_d_predicted, &o->n_d_fixed_point, &o->f_plateau,
                         &o->tau_max_at_n_d, &o->n_d_at_most};
@@ -569,6 +704,7 @@ static void sw_fill(const gw_chain_softwall_setup *s, const gw_chain_resolved *r
             o->dt_out[w * nn + k] = rw[k].run_dt_out;
             o->dt[w * nn + k] = rw[k].run_dt;
             o->dt_max[w * nn + k] = rw[k].run_dt_max;
+            o->held[w * nn + k] = chain_result_held(&rw[k]);
         }
         o->rigid[w] = o->kwall[w] > o->k_c;
         o->saturated[w] = sr[w].n_d > 0 || sr[w].at_most > 0;
@@ -599,6 +735,49 @@ static void sw_fill(const gw_chain_softwall_setup *s, const gw_chain_resolved *r
         gw_snprintf(o->sheet_materials + lm, GW_SOFTWALL_LABEL_MAX, "%s%s", w ? ";" : "",
                     !(sh->thickness > 0) && rs->law != GW_SHEET_FITTED ? bare : sh->material);
     }
+}
+
+/* The held columns' warning: those of the walls, and the rigid wall's of T_q
+ * (counted apart: the study's total is its walls' columns; the rigid wall's
+ * alone when no wall column was held). */
+static int sw_held_warnings(const gw_chain_softwall_outcome *o, int held, const char *where, char **list)
+{
+    char left[160];
+    if (held == 0)
+        return chain_held_warnings(o->n_held_rigid, 20, "the rigid wall's T_q and F.8's predictions", where, list);
+    gw_snprintf(left, sizeof left, "N_d and F_plateau%s", o->n_held_rigid ? " (and, of the rigid wall's 20 columns, "
+                                                                            "the T_q of F.8)" : "");
+    return chain_held_warnings(held, o->ncase, left, where, list);
+}
+
+/* What the held columns leave undecided, for their warning: N_d at the walls
+ * with held columns where the decided ones do not locate it, and T_q when
+ * fewer than two of the rigid wall's 20 columns were decided ("" when nothing). */
+static int sw_held_where(const gw_chain_softwall_outcome *o, int sheets, char *buf, size_t size)
+{
+    char walls[200] = "";
+    int nu = 0;
+    for (int w = 0; w < o->nw; w++) {
+        int held = 0;
+        for (int k = 0; k < o->nn; k++)
+            held += o->held[w * o->nn + k];
+        if (held && !o->saturated[w] && sheets) {
+            size_t len = strlen(walls);
+            if (len + 20 < sizeof walls)
+                gw_snprintf(walls + len, sizeof walls - len, "%s%s", nu ? ", " : "", gw_sheet_get(w)->name);
+            nu++;
+        } else if (held && !o->saturated[w]) {
+            nu++;
+        }
+    }
+    gw_snprintf(buf, size, "%s%s%s%s%s", nu ? "N_d" : "", nu && sheets ? " (sheets " : "", walls,
+                nu && sheets ? ")" : "", nu ? " (too few decided sizes on the plateau)" : "");
+    if (!isfinite(o->t_q_rigid) && o->n_held_rigid > 0) {
+        size_t len = strlen(buf);
+        gw_snprintf(buf + len, size - len, "%sthe rigid wall's T_q and F.8 (%d of its 20 columns held)",
+                    nu ? ", " : "", o->n_held_rigid);
+    }
+    return GW_OK;
 }
 
 int gw_chain_softwall_sheet_material(const gw_chain_softwall_outcome *o, int w, char *buf, size_t size)
@@ -680,7 +859,7 @@ int gw_chain_softwall_run(const gw_chain_softwall_setup *s, gw_progress_fn progr
     sw_result *sr = calloc((size_t)nw, sizeof *sr);
     gw_layer_law **lay = calloc((size_t)nw, sizeof *lay);
     double t0 = gw_clock_ms();
-    rc = res && sr && lay ? measure_tq(&rs, vimp, (int)s->jobs, &out->t_q_rigid, err)
+    rc = res && sr && lay ? measure_tq(&rs, vimp, (int)s->jobs, &out->t_q_rigid, &out->n_held_rigid, err)
                           : gw_err_set(err, GW_ENOMEM, "softwall: out of memory");
     char name[32];
     const gw_material *bm = gw_material_find(
@@ -698,17 +877,21 @@ int gw_chain_softwall_run(const gw_chain_softwall_setup *s, gw_progress_fn progr
             sr[w] = analyse(res + (size_t)w * per, (int)a, (int)b, s->tol, out->t_q_rigid);
         for (int i = 0; rc == GW_OK && i < per; i++) {
             out->unfinished += !res[(size_t)w * per + i].wall_done; /* F_max, tau_max: the wall's */
-            held += res[(size_t)w * per + i].wall_pending == chain_held_pending;
+            held += chain_result_held(&res[(size_t)w * per + i]);
         }
         if (rc == GW_OK && progress && progress(pctx, w + 1, nw))
             rc = gw_err_set(err, GW_ECANCELED, "softwall: stopped by the progress callback");
     }
     out->wall_time_s = (gw_clock_ms() - t0) / 1e3;
+    out->n_held = held;
     if (rc == GW_OK)
         sw_fill(s, &rs, res, sr, lay, out);
+    char where[300] = "";
+    if (rc == GW_OK)
+        rc = sw_held_where(out, s->sheets, where, sizeof where);
     if (rc == GW_OK &&
         ((rc = gw_chain_softwall_warnings(out->unfinished - held, out->ncase, &out->warnings)) != GW_OK ||
-         (rc = chain_held_warnings(held, out->ncase, &out->warnings)) != GW_OK))
+         (rc = sw_held_warnings(out, held, where, &out->warnings)) != GW_OK))
         rc = gw_err_set(err, rc, "softwall: out of memory");
     for (int i = 0; res && i < nw * per; i++)
         gw_chain_result_free(&res[i]);

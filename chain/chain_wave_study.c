@@ -161,7 +161,8 @@ static const gw_param ws_fields[] = {
      .help = "1: the tau_N sweep's collision was held by gravity (the column fell back onto the wall before it "
              "ended): undecided, left out of the fits [velocity, N]"},
     {.name = "front_held", .type = GW_PARAM_FARRAY, .offset = offsetof(W, front_held), .unit = "", .rows = "nv",
-     .help = "1: the front's column was held by gravity: v_front undecided (NaN) [velocity]"},
+     .help = "1: the front's column was held by gravity: v_front undecided (NaN) unless the front had reached "
+             "every contact it fits (2..N-2) by then [velocity]"},
     RDT(W, "gamma", gamma, "N s/m^1.5", "Kuwabara-Kono constant run (calibrated with restitution; 0: none)"),
     RDT(W, "alpha", alpha, "s/m", "Hunt-Crossley constant run (calibrated with restitution; 0: none)"),
     GW_PARAM_WARNINGS(offsetof(W, warnings)),
@@ -261,8 +262,11 @@ static void power_fit(const double *v, const double *s, int n, double scale, dou
  * run that ends without the front at three contacts fails naming the
  * threshold (it failed with no reason, "no front fit at v_imp = 0.3 ()", when
  * a stiff wall's F_max(1) put the threshold above every contact's force:
- * wavespeed --kwall 1e13). A column held by gravity (*held = 1) gives no
- * speed (NaN, undecided), as its other results: the study leaves it out. */
+ * wavespeed --kwall 1e13). A column held by gravity (*held = 1: stopped when
+ * it fell back onto the wall) keeps its speed when the front had reached
+ * every contact 2..N-2 by then: first arrivals, which nothing after the stop
+ * changes. Otherwise the contacts it had not reached might still be reached
+ * in the column's next impact: the speed is undecided (NaN), not a failure. */
 static int front_speed(const gw_chain_params *p, const gw_chain_run_opts *run, double frac, double *speed,
                        int *held, gw_err *err)
 {
@@ -280,7 +284,10 @@ static int front_speed(const gw_chain_params *p, const gw_chain_run_opts *run, d
     if (rc == GW_OK)
         rc = gw_chain_collide(c, &o, &r, err);
     *held = rc == GW_OK && chain_result_held(&r);
-    if (rc == GW_OK && !*held) {
+    int reached = 1;
+    for (int k = 2; rc == GW_OK && *held && k <= p->n - 2; k++)
+        reached &= isfinite(r.front_t[k]);
+    if (rc == GW_OK && reached) {
         int n = p->n, m = 0;
         double *x = malloc(2 * (size_t)n * sizeof *x), *y = x ? x + n : NULL;
         for (int k = 2; x && k <= n - 2; k++)
@@ -504,20 +511,33 @@ int gw_chain_wavespeed_run(const gw_chain_wavespeed_setup *s, gw_progress_fn pro
     int fits_undecided = 0;
     if (rc == GW_OK && ws_fits(&r.params, out, &fits_undecided) != GW_OK)
         rc = gw_err_set(err, GW_ENOMEM, "wavespeed: out of memory");
-    /* the speeds at which a held column left an estimator undecided, and the
-     * fits over v_imp left without two decided speeds */
-    char list[256] = "", where[400];
-    int n_list = 0;
+    /* the speeds at which the held columns left an estimator undecided, and
+     * the fits over v_imp they left without two decided speeds */
+    static const char *const why[3] = {"4R/T_q at v_imp = %s m/s (fewer than two decided columns)",
+                                       "the group speeds at v_imp = %s m/s (the longest column held)",
+                                       "v_front at v_imp = %s m/s (its column held before the front's end)"};
+    const double *est[3] = {out->v_tq, out->v_group, out->v_front};
+    char where[600] = "";
     out->n_held = held;
-    for (int iv = 0; rc == GW_OK && iv < nv; iv++) {
+    for (int iv = 0; rc == GW_OK && iv < nv; iv++)
         out->n_held += out->front_held[iv];
-        if (ws_skip(out, out->v_tq, iv) || ws_skip(out, out->v_front, iv) || ws_skip(out, out->v_group, iv))
-            chain_list_speed(list, sizeof list, &n_list, out->v_imp[iv]);
+    for (int e = 0; rc == GW_OK && e < 3; e++) {
+        char list[128] = "";
+        int n_list = 0;
+        for (int iv = 0; iv < nv; iv++)
+            if (ws_skip(out, est[e], iv))
+                chain_list_speed(list, sizeof list, &n_list, out->v_imp[iv]);
+        size_t len = strlen(where);
+        if (n_list && len < sizeof where) {
+            gw_snprintf(where + len, sizeof where - len, "%s", len ? ", " : "");
+            len = strlen(where);
+            gw_snprintf(where + len, sizeof where - len, why[e], list);
+        }
     }
-    gw_snprintf(where, sizeof where, "%s%s%s%s", n_list ? "the speeds measured at v_imp = " : "", list,
-                n_list ? " m/s (fewer than two decided columns, or the longest column held)" : "",
-                fits_undecided ? n_list ? ", and the fits over v_imp with fewer than two decided speeds"
-                                        : "the fits over v_imp with fewer than two decided speeds" : "");
+    size_t wl = strlen(where);
+    if (fits_undecided && wl < sizeof where)
+        gw_snprintf(where + wl, sizeof where - wl, "%sthe fits over v_imp with fewer than two decided speeds",
+                    wl ? ", and " : "");
     if (rc == GW_OK &&
         ((rc = gw_chain_unfinished_warnings(out->unfinished - held, out->ncase, &out->warnings)) != GW_OK ||
          (rc = chain_held_warnings(out->n_held, out->ncase + nv, "the fits over N and over v_imp, the front and "
@@ -745,8 +765,11 @@ static int sw_held_warnings(const gw_chain_softwall_outcome *o, int held, const 
     char left[160];
     if (held == 0)
         return chain_held_warnings(o->n_held_rigid, 20, "the rigid wall's T_q and F.8's predictions", where, list);
-    gw_snprintf(left, sizeof left, "N_d and F_plateau%s", o->n_held_rigid ? " (and, of the rigid wall's 20 columns, "
-                                                                            "the T_q of F.8)" : "");
+    if (o->n_held_rigid)
+        gw_snprintf(left, sizeof left, "N_d, F_plateau and the rigid wall's T_q (%d of whose 20 columns were held "
+                    "too)", o->n_held_rigid);
+    else
+        gw_snprintf(left, sizeof left, "N_d and F_plateau");
     return chain_held_warnings(held, o->ncase, left, where, list);
 }
 

@@ -342,13 +342,16 @@ typedef struct gw_chain_wavespeed_outcome {
        collision ended): undecided, and left out of what is derived, as if their
        sizes had not been run: t_q and v_tq fit the decided columns (NaN with
        fewer than two), mean_wall_force, v_group and v_group_front are NaN when
-       the longest column was held, v_front when the front's column was; the
+       the longest column was held, v_front when the front's column was held
+       before the front had reached every contact it fits (2..N-2: first
+       arrivals, which the stop does not change, are kept); the
        fits over v_imp, c2 and max_disagreement leave out the speeds so left
        undecided (NaN with fewer than two decided speeds). A warning says so. */
     int n_held;            /* held collisions: of the tau_N sweep (counted in unfinished) and
                               the nv front columns */
     int *held;             /* [ncase] 1: the tau_N sweep's collision was held [velocity, N] */
-    int *front_held;       /* [nv] 1: the front's column was held */
+    int *front_held;       /* [nv] 1: the front's column was held (v_front NaN unless the front
+                              had reached every contact 2..N-2 by then) */
 } gw_chain_wavespeed_outcome;
 
 const gw_param *gw_chain_wavespeed_setup_params(void);

@@ -198,24 +198,29 @@ int gw_cmd_wavespeed(int argc, char **argv)
             }
             if (!wo.fitted) { /* no power law through one point: said, not printed as nan */
                 printf("  beta, C3: not fitted (one speed; the fits over v_imp need two)\n");
-            } else if (!(isfinite(f_tq[0]) && isfinite(f_fr[0]) && isfinite(f_gr[0]) && isfinite(f_gf[0]))) {
-                /* a fit left without two decided speeds by held columns */
-                char b1[32], b2[32], b3[32], c1[32], c2s[32], c3[32], c4[32];
-                printf("  beta: tq %s, front %s, group %s (undecided: columns held by gravity)\n",
-                       gw_cli_num(b1, sizeof b1, "%.5f", f_tq[0]), gw_cli_num(b2, sizeof b2, "%.5f", f_fr[0]),
-                       gw_cli_num(b3, sizeof b3, "%.5f", f_gr[0]));
-                printf("  C3: tq %s, front %s, group %s, group/sqrt(3/2) %s (F.27: 2)\n",
-                       gw_cli_num(c1, sizeof c1, "%.4f", f_tq[3]), gw_cli_num(c2s, sizeof c2s, "%.4f", f_fr[3]),
-                       gw_cli_num(c3, sizeof c3, "%.4f", f_gr[3]), gw_cli_num(c4, sizeof c4, "%.4f", f_gf[3]));
             } else {
-                if (isfinite(f_tq[1]))
-                    printf("  beta: tq %.5f +- %.5f, front %.5f +- %.5f, group %.5f +- %.5f\n", f_tq[0],
-                           f_tq[1], f_fr[0], f_fr[1], f_gr[0], f_gr[1]);
-                else /* two speeds: the line through both, no residual */
-                    printf("  beta: tq %.5f, front %.5f, group %.5f (two speeds: each fit goes through both, "
-                           "no standard error)\n", f_tq[0], f_fr[0], f_gr[0]);
-                printf("  C3: tq %.4f, front %.4f, group %.4f, group/sqrt(3/2) %.4f (F.27: 2)\n", f_tq[3],
-                       f_fr[3], f_gr[3], f_gf[3]);
+                /* each estimator's exponent, "+- err" where the fit has one (three speeds or
+                 * more); n/a where held columns left fewer than two decided speeds */
+                const double *fs[3] = {f_tq, f_fr, f_gr};
+                char b[3][64], c[4][32];
+                int all_err = 1, all_val = 1;
+                for (int i = 0; i < 3; i++) {
+                    all_err &= isfinite(fs[i][1]);
+                    all_val &= isfinite(fs[i][0]);
+                    if (isfinite(fs[i][1]))
+                        snprintf(b[i], sizeof b[i], "%.5f +- %.5f", fs[i][0], fs[i][1]);
+                    else
+                        gw_cli_num(b[i], sizeof b[i], "%.5f", fs[i][0]);
+                }
+                const double *cs[4] = {f_tq, f_fr, f_gr, f_gf};
+                for (int i = 0; i < 4; i++) {
+                    all_val &= isfinite(cs[i][3]);
+                    gw_cli_num(c[i], sizeof c[i], "%.4f", cs[i][3]);
+                }
+                printf("  beta: tq %s, front %s, group %s%s\n", b[0], b[1], b[2],
+                       !all_val ? " (n/a: undecided, columns held by gravity)"
+                       : all_err ? "" : " (two speeds: each fit goes through both, no standard error)");
+                printf("  C3: tq %s, front %s, group %s, group/sqrt(3/2) %s (F.27: 2)\n", c[0], c[1], c[2], c[3]);
             }
             if (!isfinite(c2) && wo.n_held > 0) /* every speed's period left undecided */
                 printf("  period: undecided (columns held by gravity); ");

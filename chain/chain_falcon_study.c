@@ -462,7 +462,7 @@ int gw_chain_falcon_run(const gw_chain_falcon_setup *s, gw_progress_fn progress,
         out->n_held += out->held[i];
     }
     char undecided[256] = ""; /* the velocities whose fits the held columns leave undecided */
-    int n_undecided = 0;
+    int n_undecided = 0, none_decided = 0;
     int row = 0;
     for (int iv = 0; rc == GW_OK && iv < nv; iv++) {
         gw_chain_falcon_fit a;
@@ -523,10 +523,11 @@ int gw_chain_falcon_run(const gw_chain_falcon_setup *s, gw_progress_fn progress,
         const long top20 = s->n[1] < 20 ? s->n[1] : 20, c20 = s->n[0] <= 20 ? top20 - s->n[0] + 1 : 0;
         if (a.n_decided < 2 || (c20 >= 2 && a.n_decided20 < 2))
             chain_list_speed(undecided, sizeof undecided, &n_undecided, out->v_imp[iv]);
+        none_decided |= a.n_decided == 0;
     }
     char where[300];
-    gw_snprintf(where, sizeof where, "T_q and 4R/T_q at v_imp = %s m/s (fewer than two decided columns)",
-                undecided);
+    gw_snprintf(where, sizeof where, "T_q and 4R/T_q at v_imp = %s m/s (fewer than two decided columns%s)", undecided,
+                none_decided ? "; the means and extremes of F_max and tau_max too where none is decided" : "");
     if (rc == GW_OK) {
         out->k_c = gw_chain_kc(r.params.k);
         out->rigid = r.params.kwall > out->k_c;

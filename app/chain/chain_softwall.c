@@ -2,7 +2,7 @@
  * chain_softwall.c: `granwave softwall`, columns on a soft wall (docs/physics.md
  * 1.3): K_c (F.22), the saturation number N_d against ceil(tau_max(N_d)/T_q)
  * (F.8), and with --sheets each sheet of the paper's Table 2, model against
- * measured. The study is gw_chain_softwall_run (chain_wave_study.c, with its
+ * measured. The study is gw_chain_softwall_run (chain_softwall_study.c, with its
  * equations); here only the command line: options, JSON and the table.
  * Units: SI (tables print us).
  */

@@ -7,9 +7,9 @@
  * held_by_gravity): its F_max, tau_max and tau_N are those of that time, not
  * its collision's. falcon, wavespeed and softwall still fitted them:
  * `falcon --n 1:8 --vimp 0.3 --gravity 1e3` gave T_q = 68.4 us (27.9 us over
- * the four decided columns, 25.2 us without gravity), `softwall --n 1:14
- * --gravity 30 --tol 0.02` located N_d = 9 on a plateau read from two held
- * columns. Asserted here by behaviour, against numbers the test computes
+ * the four decided columns; 26.0 us over N = 1..8 without gravity), and
+ * `softwall --n 1:14 --gravity 30 --tol 0.02` located N_d = 9 on a plateau read
+ * from two held columns. Asserted here by behaviour, against numbers the test computes
  * itself from the decided columns' own results:
  *  1 falcon, N = 1..8 at 0.3 m/s under gravity 1e3 (N >= 5 held): T_q and its
  *    intercept equal the least-squares line over the decided columns' tau_N

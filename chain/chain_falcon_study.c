@@ -20,22 +20,33 @@
 
 #include "chain_setup_rows.h"
 #include "chain_model.h"
+#include "gw_locale.h"
 
 int gw_chain_falcon_analyse(const gw_chain_params *p, double v, const gw_chain_result *res, int n_lo,
                              int n_hi, gw_chain_falcon_fit *a)
 {
-    int count = n_hi - n_lo + 1, c20 = 0, np = 0;
-    double *x = calloc(2 * (size_t)count, sizeof *x), *y = x ? x + count : NULL;
+    /* Only the decided columns: one held by gravity (chain_held_pending) was
+     * stopped when it fell back onto the wall, its tau_N and F_max those of
+     * that time, not its collision's (softwall --gravity 1e4 fitted them). The
+     * numbers below are those of the decided columns alone, as if the held
+     * sizes had not been run; without held columns, the same arithmetic in the
+     * same order as before, bit for bit. */
+    int count = 0, c20 = 0, np = 0;
+    for (int n = n_lo; n <= n_hi; n++)
+        count += !chain_result_held(&res[n - n_lo]);
+    double *x = calloc(2 * (size_t)(count > 0 ? count : 1), sizeof *x), *y = x ? x + (count > 0 ? count : 1) : NULL;
     memset(a, 0, sizeof *a);
     a->f_min = INFINITY;
     a->f_max = -INFINITY;
-    for (int n = n_lo; n <= n_hi; n++) {
+    for (int n = n_lo, k = 0; n <= n_hi; n++) {
         const gw_chain_result *r = &res[n - n_lo];
-        int k = n - n_lo;
+        if (chain_result_held(r))
+            continue;
         if (x) {
             x[k] = n - 1;
             y[k] = r->tau_n;
         }
+        k++;
         if (n <= 20)
             c20++;
         a->f_mean += r->f_max / count;
@@ -48,6 +59,10 @@ int gw_chain_falcon_analyse(const gw_chain_params *p, double v, const gw_chain_r
         }
     }
     a->period_mean = np ? a->period_mean / np : NAN;
+    if (count == 0) /* every column held: no mean, no extreme */
+        a->f_mean = a->tau_max_mean = a->f_min = a->f_max = NAN;
+    a->n_decided = count;
+    a->n_decided20 = c20;
     /* no line through fewer than 2 points: every number of it undefined (a
      * single N reported t_q null beside t_q_err 0 and r2 0) */
     a->fit = a->fit20 = (gw_linfit){.c0 = NAN, .c1 = NAN, .c0_err = NAN, .c1_err = NAN, .r2 = NAN, .max_rel_resid = NAN};
@@ -185,6 +200,11 @@ static const gw_param falcon_fields[] = {
     VEL("period_mean", period_mean, "s", "P averaged over N >= 10"),
     {.name = "unfinished", .type = GW_PARAM_INT, .offset = OFF(unfinished), .unit = "",
      .help = "collisions not ended at t_max (their tau_N and eps are those at t_max)"},
+    RI("n_held", n_held, "collisions held by gravity (counted in unfinished): undecided, left out of every fit, "
+                         "mean and extreme"),
+    {.name = "held", .type = GW_PARAM_FARRAY, .offset = OFF(held), .unit = "", .rows = "nv", .cols = "nn",
+     .help = "1: the collision was held by gravity (the column fell back onto the wall before it ended): its "
+             "values are those of that time, undecided, and the fits leave it out [velocity, N]"},
     RI("steps_per_tc", steps_per_tc, "RK4 steps per T_c by the accuracy target (0: the solver options as given)"),
     RI("nbeads", nbeads, "rows of the bead table: every bead of every collision"),
     BEAD("bead_v_imp", bead_v_imp, "m/s", "impact velocity of the bead's collision"),
@@ -206,6 +226,7 @@ void gw_chain_falcon_outcome_free(gw_chain_falcon_outcome *out)
     if (!out)
         return;
     free(out->v_imp); /* one block holds every array */
+    free(out->held);
     free(out->warnings);
     for (int i = 0; i < GW_CHAIN_FALCON_NTRACE; i++)
         gw_chain_trace_free(&out->trace[i].tr); /* zeroed or initialised */
@@ -433,11 +454,15 @@ int gw_chain_falcon_run(const gw_chain_falcon_setup *s, gw_progress_fn progress,
         rc = gw_chain_sweep_n_progress(&r.params, &r.run, out->v_imp, nv, (int)s->n[0], (int)s->n[1],
                                        (int)s->jobs, progress, pctx, res, err);
     out->wall_time_s = (gw_clock_ms() - t0) / 1e3;
-    int held = 0;
+    if (rc == GW_OK && !(out->held = calloc((size_t)out->ncase, sizeof *out->held)))
+        rc = gw_err_set(err, GW_ENOMEM, "falcon: out of memory");
     for (int i = 0; rc == GW_OK && i < out->ncase; i++) {
         out->unfinished += !res[i].converged;
-        held += res[i].wall_pending == chain_held_pending;
+        out->held[i] = chain_result_held(&res[i]);
+        out->n_held += out->held[i];
     }
+    char undecided[256] = ""; /* the velocities whose fits the held columns leave undecided */
+    int n_undecided = 0, none_decided = 0;
     int row = 0;
     for (int iv = 0; rc == GW_OK && iv < nv; iv++) {
         gw_chain_falcon_fit a;
@@ -493,15 +518,26 @@ int gw_chain_falcon_run(const gw_chain_falcon_setup *s, gw_progress_fn progress,
         out->f_max_max[iv] = a.f_max;
         out->tau_max_mean[iv] = a.tau_max_mean;
         out->period_mean[iv] = a.period_mean;
+        /* a fit that the held columns leave without two points (every size
+         * range has two: gw_chain_falcon_sizes_check; N <= 20 when it has) */
+        const long top20 = s->n[1] < 20 ? s->n[1] : 20, c20 = s->n[0] <= 20 ? top20 - s->n[0] + 1 : 0;
+        if (a.n_decided < 2 || (c20 >= 2 && a.n_decided20 < 2))
+            chain_list_speed(undecided, sizeof undecided, &n_undecided, out->v_imp[iv]);
+        none_decided |= a.n_decided == 0;
     }
+    char where[300];
+    gw_snprintf(where, sizeof where, "T_q and 4R/T_q at v_imp = %s m/s (fewer than two decided columns%s)", undecided,
+                none_decided ? "; the means and extremes of F_max and tau_max too where none is decided" : "");
     if (rc == GW_OK) {
         out->k_c = gw_chain_kc(r.params.k);
         out->rigid = r.params.kwall > out->k_c;
         out->gamma = r.params.gamma; /* as the JSON's settings.model */
         out->alpha = r.params.alpha;
         out->steps_per_tc = out->accuracy > 0 ? (int)r.run.steps_per_tc : 0;
-        if ((rc = gw_chain_unfinished_warnings(out->unfinished - held, out->ncase, &out->warnings)) != GW_OK ||
-            (rc = chain_held_warnings(held, out->ncase, &out->warnings)) != GW_OK)
+        if ((rc = gw_chain_unfinished_warnings(out->unfinished - out->n_held, out->ncase, &out->warnings)) !=
+                GW_OK ||
+            (rc = chain_held_warnings(out->n_held, out->ncase, "the fits over N (T_q, the wave speeds), the means "
+                                      "and extremes", n_undecided ? where : NULL, &out->warnings)) != GW_OK)
             rc = gw_err_set(err, rc, "falcon: out of memory");
     }
     if (rc == GW_OK && s->traces && (rc = run_traces(out, &r.params, &r.run, (int)s->n[1], err)) != GW_OK)

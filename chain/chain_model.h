@@ -85,11 +85,24 @@ int chain_sensor_steps_check(const gw_chain_params *p, const gw_solver_type *typ
  * held_by_gravity); its warning (chain_warnings.c) names gravity and vimp. */
 extern const char chain_held_pending[];
 
+/* A collision stopped so (its wall_pending is chain_held_pending): its values
+ * are those of that time, and the studies leave it out of what they derive. */
+static inline int chain_result_held(const gw_chain_result *r)
+{
+    return r->wall_pending == chain_held_pending;
+}
+
 /* The warning of a study with held of its total collisions stopped so
- * (chain_held_pending), appended to *list; nothing when held is 0. GW_OK or
- * GW_ENOMEM. Their unfinished count includes them: the studies' "raise
- * --t-max" warning counts the others only. */
-int chain_held_warnings(int held, int total, char **list);
+ * (chain_held_pending), appended to *list; nothing when held is 0. left_out
+ * names what the study derives without them ("the fits over N"); undecided
+ * (NULL or "": nothing) what they leave without enough decided columns ("T_q
+ * at v_imp = 0.3 m/s (fewer than two decided columns)"). GW_OK or GW_ENOMEM.
+ * Their unfinished count includes them: the studies' "raise --t-max" warning
+ * counts the others only. */
+int chain_held_warnings(int held, int total, const char *left_out, const char *undecided, char **list);
+/* Append speed v to the list in buf ("0.3, 6.16"; "..." once it is full),
+ * counting in *count. */
+void chain_list_speed(char *buf, size_t size, int *count, double v);
 
 /* GW_ESOLVER when the run has blown up (a step too long for the stiffest
  * contact): a state not finite, or a relative energy error above 1; the message

@@ -9,9 +9,12 @@
  * Parameters are named as the program's flags (--t-max), as the library's
  * other texts for the user (the layer's undecided outcome) do.
  */
+#include <string.h>
+
 #include "gw_chain.h"
 #include "gw_chain_study.h"
 #include "chain_model.h"
+#include "gw_locale.h"
 
 const char chain_held_pending[] = "held by gravity: the column fell back onto the wall before its collision ended";
 
@@ -61,15 +64,28 @@ int gw_chain_unfinished_warnings(int unfinished, int total, char **list)
                            unfinished, total);
 }
 
-int chain_held_warnings(int held, int total, char **list)
+int chain_held_warnings(int held, int total, const char *left_out, const char *undecided, char **list)
 {
     if (held <= 0)
         return GW_OK;
+    const int u = undecided && *undecided;
     return gw_warnings_add(list,
                            "%d of %d collisions were held by gravity (the column fell back onto the wall before its "
                            "collision ended): their F_max, tau_max, tau_N and restitution are undecided, those at "
-                           "that time; raise --vimp or lower --gravity",
-                           held, total);
+                           "that time, and %s leave them out%s%s; raise --vimp or lower --gravity",
+                           held, total, left_out, u ? "; undecided: " : "", u ? undecided : "");
+}
+
+void chain_list_speed(char *buf, size_t size, int *count, double v)
+{
+    size_t len = strlen(buf);
+    if (len + 32 >= size) { /* room for one more and the mark */
+        if (len + 6 < size && (len < 3 || strcmp(buf + len - 3, "...") != 0))
+            gw_snprintf(buf + len, size - len, ", ...");
+        return;
+    }
+    gw_snprintf(buf + len, size - len, "%s%.4g", *count ? ", " : "", v);
+    (*count)++;
 }
 
 int gw_chain_softwall_warnings(int unfinished, int total, char **list)

@@ -179,10 +179,16 @@ typedef struct gw_chain_falcon_fit {
     double f_mean, f_min, f_max, tau_max_mean, period_mean; /* N, N, N, s, s */
     double t_q_theory, tau_1_theory, f_max_1_theory;        /* s, s, N */
     double speed, speed20, speed_theory;                    /* m/s */
+    int n_decided, n_decided20; /* columns fitted (over all N, over N <= 20): those not held by
+                                   gravity (gw_chain_result.wall_pending "held by gravity: ...") */
 } gw_chain_falcon_fit;
 
 /* Analyse the collisions res[0 .. n_hi - n_lo] (N = n_lo .. n_hi) of the column
- * p at impact velocity v into a. GW_OK, or GW_ENOMEM (no memory for the fit:
+ * p at impact velocity v into a. A collision held by gravity (its wall_pending
+ * "held by gravity: ...": stopped when the column fell back onto the wall, its
+ * values those of that time) is left out of every number: the fits, means and
+ * extremes are those of the decided columns alone, NaN where fewer than two
+ * (a fit) or none (a mean) remain. GW_OK, or GW_ENOMEM (no memory for the fit:
  * a filled, its fits undefined, NaN; it was void, and an allocation that
  * failed gave t_q and the wave speed null with exit 0). */
 int gw_chain_falcon_analyse(const gw_chain_params *p, double v, const gw_chain_result *res, int n_lo,
@@ -260,7 +266,13 @@ typedef struct gw_chain_falcon_outcome {
     int trace_failed;      /* 1: a trace's run failed after the study (its error returned;
                               every number above stands, trace[0..ntrace) those done) */
     gw_chain_falcon_trace trace[GW_CHAIN_FALCON_NTRACE];
-    char *warnings;        /* gw_chain_unfinished_warnings (owned; NULL: none) */
+    char *warnings;        /* gw_chain_unfinished_warnings and the held columns' (owned; NULL: none) */
+    /* collisions held by gravity (the column fell back onto the wall before its
+       collision ended; counted in unfinished): their values are those of that
+       time, undecided, and every fit, mean and extreme per velocity leaves
+       them out (NaN where too few decided columns remain: a warning says so) */
+    int n_held;            /* of ncase */
+    int *held;             /* [ncase] 1: held (velocity-major as f_max) */
 } gw_chain_falcon_outcome;
 
 const gw_param *gw_chain_falcon_outcome_fields(void);
@@ -325,7 +337,21 @@ typedef struct gw_chain_wavespeed_outcome {
                               speed, whose speeds, t_q, period, c2 and max_disagreement stand but whose
                               beta, beta_err, c3, fits and beta_period are NaN (no line through one point) */
     double gamma, alpha;   /* the damping constants run (calibrated with restitution) */
-    char *warnings;        /* gw_chain_unfinished_warnings (owned; NULL: none) */
+    char *warnings;        /* gw_chain_unfinished_warnings and the held columns' (owned; NULL: none) */
+    /* Columns held by gravity (the column fell back onto the wall before its
+       collision ended): undecided, and left out of what is derived, as if their
+       sizes had not been run: t_q and v_tq fit the decided columns (NaN with
+       fewer than two), mean_wall_force, v_group and v_group_front are NaN when
+       the longest column was held, v_front when the front's column was held
+       before the front had reached every contact it fits (2..N-2: first
+       arrivals, which the stop does not change, are kept); the
+       fits over v_imp, c2 and max_disagreement leave out the speeds so left
+       undecided (NaN with fewer than two decided speeds). A warning says so. */
+    int n_held;            /* held collisions: of the tau_N sweep (counted in unfinished) and
+                              the nv front columns */
+    int *held;             /* [ncase] 1: the tau_N sweep's collision was held [velocity, N] */
+    int *front_held;       /* [nv] 1: the front's column was held (v_front NaN unless the front
+                              had reached every contact 2..N-2 by then) */
 } gw_chain_wavespeed_outcome;
 
 const gw_param *gw_chain_wavespeed_setup_params(void);
@@ -378,7 +404,19 @@ typedef struct gw_chain_softwall_outcome {
     int unfinished;             /* collisions still at the wall at t_max (wall_done 0):
                                    their F_max and tau_max may not be final */
     double gamma, alpha;        /* the damping constants run (calibrated with restitution) */
-    char *warnings;             /* gw_chain_softwall_warnings (owned; NULL: none) */
+    char *warnings;             /* gw_chain_softwall_warnings and the held columns' (owned; NULL: none) */
+    /* Columns held by gravity (the column fell back onto the wall before its
+       collision ended): their F_max and tau_max are those of that time,
+       undecided, and each wall's plateau, N_d and F.8 are those of its decided
+       columns alone, as if the held sizes had not been run: f_plateau is F_max
+       of the longest decided column (NaN: none), N_d is located only where
+       decided columns bound it (n_d_at_most when the plateau reaches back to a
+       held column; saturated 0 where too few decided sizes lie on it, a
+       warning calling N_d undecided), and t_q_rigid fits the rigid wall's
+       decided columns (NaN with fewer than two, and F.8 with it). */
+    int n_held;                 /* held collisions, of ncase (counted in unfinished) */
+    int *held;                  /* [nw * nn] 1: held [wall, N] (in the block of rigid: freed with it) */
+    int n_held_rigid;           /* of the 20 rigid-wall columns of t_q_rigid */
 } gw_chain_softwall_outcome;
 
 const gw_param *gw_chain_softwall_setup_params(void);

@@ -69,16 +69,16 @@ static char *runs_csv(const gw_chain_falcon_outcome *o)
 {
     sbuf b = {0};
     sb_printf(&b, "v_imp_m_s,h_mm,n,f_max_N,tau_max_s,tau_n_s,period_s,n_maxima,n_s,cluster,"
-                  "e_rel_over_e_k,eps_eff,eps_col,energy_error,steps,rhs_evals,t_max_s,dt_out_s,dt_s,dt_max_s\n");
+                  "e_rel_over_e_k,eps_eff,eps_col,energy_error,steps,rhs_evals,t_max_s,dt_out_s,dt_s,dt_max_s,held\n");
     for (int iv = 0; iv < o->nv; iv++)
         for (int k = 0; k < o->nn; k++) {
             int c = iv * o->nn + k;
             sb_printf(&b, "%.10g,%.4g,%d,%.12g,%.12g,%.12g,%.12g,%d,%d,%d,%.12g,%.12g,%.12g,%.4g,%ld,%ld,%.17g,%.17g,"
-                          "%.17g,%.17g\n",
+                          "%.17g,%.17g,%d\n",
                       o->v_imp[iv], o->h_mm[iv], (int)o->n[k], o->f_max[c], o->tau_max[c], o->tau_n[c], o->period[c],
                       (int)o->n_maxima[c], (int)o->n_s[c], (int)o->cluster[c], o->e_rel_over_e_k[c], o->eps_eff[c],
                       o->eps_col[c], o->energy_error[c], (long)o->steps[c], (long)o->rhs_evals[c], o->t_max[c],
-                      o->dt_out[c], o->dt[c], o->dt_max[c]);
+                      o->dt_out[c], o->dt[c], o->dt_max[c], o->held[c]);
         }
     return b.s;
 }

@@ -70,20 +70,25 @@ static cJSON *summary_json(const falcon *f)
         cJSON_AddNumberToObject(e, "tau_max_mean", fo->tau_max_mean[iv]);
         cJSON_AddNumberToObject(e, "period_mean", fo->period_mean[iv]);
         int c1 = falcon_case(f, iv, f->n_lo), cn = falcon_case(f, iv, f->n_hi);
-        cJSON_AddNumberToObject(e, "tau_n_first", fo->tau_n[c1]);
-        cJSON_AddNumberToObject(e, "tau_n_last", fo->tau_n[cn]);
-        cJSON_AddNumberToObject(e, "e_rel_over_e_k_last", fo->e_rel_over_e_k[cn]);
-        cJSON_AddNumberToObject(e, "n_s_last", fo->n_s[cn]);
+        /* a column held by gravity: its values are those of the stop, undecided (null) */
+        const int h1 = fo->held[c1], hn = fo->held[cn];
+        cJSON_AddNumberToObject(e, "tau_n_first", h1 ? NAN : fo->tau_n[c1]);
+        cJSON_AddNumberToObject(e, "tau_n_last", hn ? NAN : fo->tau_n[cn]);
+        cJSON_AddNumberToObject(e, "e_rel_over_e_k_last", hn ? NAN : fo->e_rel_over_e_k[cn]);
+        cJSON_AddNumberToObject(e, "n_s_last", hn ? NAN : fo->n_s[cn]);
         double emax = 0;
         for (int n = f->n_lo; n <= f->n_hi; n++)
             emax = fmax(emax, fo->energy_error[falcon_case(f, iv, n)]);
         cJSON_AddNumberToObject(e, "energy_error_max", emax);
+        /* per N: held by gravity (undecided, left out of the fits, means and extremes above) */
+        cJSON_AddItemToObject(e, "held", gw_json_bools(fo->held + (size_t)iv * fo->nn, fo->nn));
         cJSON_AddItemToArray(a, e);
     }
     if (fo->accuracy > 0)
         cJSON_AddNumberToObject(o, "accuracy_target", fo->accuracy);
     cJSON_AddNumberToObject(o, "wall_time_s", fo->wall_time_s);
     cJSON_AddNumberToObject(o, "unfinished", fo->unfinished); /* collisions not ended at t_max */
+    cJSON_AddNumberToObject(o, "n_held", fo->n_held);         /* of them, held by gravity */
     return o;
 }
 
@@ -99,16 +104,17 @@ static int write_tables(const falcon *f, const char *dir, const char *hdr, gw_er
         return rc;
     fprintf(a.fp, "# %s\n", hdr);
     fprintf(a.fp, "v_imp_m_s,h_mm,n,f_max_N,tau_max_s,tau_n_s,period_s,n_maxima,n_s,cluster,"
-                  "e_rel_over_e_k,eps_eff,eps_col,energy_error,steps,rhs_evals,t_max_s,dt_out_s,dt_s,dt_max_s\n");
+                  "e_rel_over_e_k,eps_eff,eps_col,energy_error,steps,rhs_evals,t_max_s,dt_out_s,dt_s,dt_max_s,held\n");
     for (int iv = 0; iv < o->nv; iv++)
         for (int n = f->n_lo; n <= f->n_hi; n++) {
             int c = falcon_case(f, iv, n);
+            /* held: 1 when gravity held the column (its values those of the stop, undecided) */
             fprintf(a.fp, "%.10g,%.4g,%d,%.12g,%.12g,%.12g,%.12g,%d,%d,%d,%.12g,%.12g,%.12g,%.4g,%ld,%ld,%.17g,%.17g,"
-                          "%.17g,%.17g\n",
+                          "%.17g,%.17g,%d\n",
                     o->v_imp[iv], o->h_mm[iv], n, o->f_max[c], o->tau_max[c], o->tau_n[c], o->period[c],
                     (int)o->n_maxima[c], (int)o->n_s[c], (int)o->cluster[c], o->e_rel_over_e_k[c], o->eps_eff[c],
                     o->eps_col[c], o->energy_error[c], (long)o->steps[c], (long)o->rhs_evals[c], o->t_max[c],
-                    o->dt_out[c], o->dt[c], o->dt_max[c]);
+                    o->dt_out[c], o->dt[c], o->dt_max[c], o->held[c]);
         }
     if ((rc = gw_afile_commit(&a, err)) != GW_OK)
         return rc;
@@ -327,12 +333,15 @@ int gw_cmd_falcon(int argc, char **argv)
             code = gw_cli_json_stdout("falcon", sum);
         } else {
             printf("granwave %s falcon: %d collisions in %.2f s\n", gw_version(), ncase, f.o.wall_time_s);
-            for (int iv = 0; iv < nv; iv++) {
-                char per[32];
-                printf("  v_imp %.4f m/s: F_max %.2f N (%.2f..%.2f), T_q %.3f us, v = 4R/T_q %.1f m/s "
+            for (int iv = 0; iv < nv; iv++) { /* n/a: undecided, the columns held (the warning says) */
+                char per[32], fm[32], f0[32], f1[32], tq[32], ws[32];
+                printf("  v_imp %.4f m/s: F_max %s N (%s..%s), T_q %s us, v = 4R/T_q %s m/s "
                        "(F.27: %.1f), P %s us\n",
-                       f.o.v_imp[iv], f.o.f_max_mean[iv], f.o.f_max_min[iv], f.o.f_max_max[iv], f.o.t_q[iv] * 1e6,
-                       f.o.wave_speed[iv], f.o.wave_speed_theory[iv],
+                       f.o.v_imp[iv], gw_cli_num(fm, sizeof fm, "%.2f", f.o.f_max_mean[iv]),
+                       gw_cli_num(f0, sizeof f0, "%.2f", f.o.f_max_min[iv]),
+                       gw_cli_num(f1, sizeof f1, "%.2f", f.o.f_max_max[iv]),
+                       gw_cli_num(tq, sizeof tq, "%.3f", f.o.t_q[iv] * 1e6),
+                       gw_cli_num(ws, sizeof ws, "%.1f", f.o.wave_speed[iv]), f.o.wave_speed_theory[iv],
                        gw_cli_num(per, sizeof per, "%.2f", f.o.period_mean[iv] * 1e6));
             }
             if (f.c.out)

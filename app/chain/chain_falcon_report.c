@@ -148,6 +148,11 @@ static void write_velocity_table(const falcon *f, FILE *fp)
                 o->tau_fit_intercept_err[iv] * 1e6, o->tau_1_theory[iv] * 1e6, o->wave_speed[iv],
                 o->wave_speed_n20[iv], o->wave_speed_theory[iv], o->r2[iv]);
     }
+    if (o->n_held > 0) /* left out of the numbers above (nan: too few decided columns) */
+        fprintf(fp, "\n%d of the %d collisions were held by gravity (the column fell back onto the wall before "
+                    "its collision ended): their values are those of that time, undecided, and the fits, means "
+                    "and extremes above leave them out; their rows below are marked (held).\n",
+                o->n_held, o->ncase);
     fprintf(fp, "\n");
 }
 
@@ -169,13 +174,19 @@ static void write_detachment(const falcon *f, FILE *fp)
         if (n < f->n_lo || n > f->n_hi)
             continue;
         int c = falcon_case(f, 0, n), b1 = falcon_bead_row(f, 0, n);
-        fprintf(fp, "| %d | %.3f | %d | %d | %.4f | %.4f | %.6f | %.9f | %.4f | %.1e |\n", n,
+        fprintf(fp, "| %d%s | %.3f | %d | %d | %.4f | %.4f | %.6f | %.9f | %.4f | %.1e |\n", n,
+                o->held[c] ? " (held)" : "",
                 o->tau_n[c] * 1e6, (int)o->n_s[c], (int)o->cluster[c], o->final_v[b1 + n - 1] / v0,
                 o->final_v[b1] / v0, o->eps_eff[c], o->eps_col[c], o->e_rel_over_e_k[c], o->energy_error[c]);
     }
     int up = 0, steps = 0;
-    for (int n = f->n_lo + 1; n <= f->n_hi; n++, steps++)
-        up += o->e_rel_over_e_k[falcon_case(f, 0, n)] > o->e_rel_over_e_k[falcon_case(f, 0, n - 1)];
+    for (int n = f->n_lo + 1; n <= f->n_hi; n++) {
+        int c = falcon_case(f, 0, n), b = falcon_case(f, 0, n - 1);
+        if (o->held[c] || o->held[b]) /* undecided */
+            continue;
+        up += o->e_rel_over_e_k[c] > o->e_rel_over_e_k[b];
+        steps++;
+    }
     fprintf(fp, "\nE_rel/E_K increases from N to N+1 in %d of %d steps.\n\n", up, steps);
 }
 

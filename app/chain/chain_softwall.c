@@ -2,7 +2,7 @@
  * chain_softwall.c: `granwave softwall`, columns on a soft wall (docs/physics.md
  * 1.3): K_c (F.22), the saturation number N_d against ceil(tau_max(N_d)/T_q)
  * (F.8), and with --sheets each sheet of the paper's Table 2, model against
- * measured. The study is gw_chain_softwall_run (chain_wave_study.c, with its
+ * measured. The study is gw_chain_softwall_run (chain_softwall_study.c, with its
  * equations); here only the command line: options, JSON and the table.
  * Units: SI (tables print us).
  */
@@ -45,6 +45,15 @@ static cJSON *sheet_json(const gw_chain_softwall_outcome *so, int w, const gw_sh
     if (!isnan(row[k])) /* a layer law */
         cJSON_AddNumberToObject(e, "a_over_h_1", row[k]);
     return e;
+}
+
+/* columns of wall w held by gravity (their F_max undecided) */
+static int wall_held(const gw_chain_softwall_outcome *so, int w)
+{
+    int held = 0;
+    for (int k = 0; k < so->nn; k++)
+        held += so->held[(size_t)w * so->nn + k];
+    return held;
 }
 
 static const char *sw_summary =
@@ -170,6 +179,8 @@ int gw_cmd_softwall(int argc, char **argv)
             cJSON_AddStringToObject(e, "wall", so.rigid[w] ? "rigid" : "soft");
             cJSON_AddItemToObject(e, "f_max", gw_json_doubles(so.f_max + (size_t)w * per, ns));
             cJSON_AddItemToObject(e, "tau_max", gw_json_doubles(so.tau_max + (size_t)w * per, ns));
+            /* per N: held by gravity, F_max and tau_max undecided (those of the stop), left out of N_d */
+            cJSON_AddItemToObject(e, "held", gw_json_bools(so.held + (size_t)w * per, ns));
             /* null when F_max has not saturated (or F.8 is not met) within n_max */
             cJSON_AddNumberToObject(e, "n_d", so.n_d[w]);
             cJSON_AddNumberToObject(e, "n_d_predicted", so.n_d_predicted[w]);
@@ -188,6 +199,8 @@ int gw_cmd_softwall(int argc, char **argv)
         }
         cJSON_AddNumberToObject(o, "wall_time_s", wall_s);
         cJSON_AddNumberToObject(o, "unfinished", so.unfinished);
+        cJSON_AddNumberToObject(o, "n_held", so.n_held);             /* of them, held by gravity */
+        cJSON_AddNumberToObject(o, "n_held_rigid", so.n_held_rigid); /* of t_q_rigid's 20 columns */
         gw_cli_warnings("softwall", so.warnings); /* unfinished: F_max, tau_max may not be final */
         cJSON *set = chain_cli_settings_json(&c);
         chain_cli_settings_runs(set, so.ncase, so.t_max, so.dt_out, so.dt, so.dt_max);
@@ -201,8 +214,9 @@ int gw_cmd_softwall(int argc, char **argv)
         if (code == 0 && c.json) {
             code = gw_cli_json_stdout("softwall", o);
         } else if (code == 0) {
-            printf("granwave %s softwall: v_imp %.4g m/s, K_c %.4g N/m^1.5, rigid-wall T_q %.3f us (%.1f s)\n",
-                   gw_version(), vimp, kc, t_q * 1e6, wall_s);
+            char tq[32]; /* n/a: the rigid wall's columns held by gravity (the warning says) */
+            printf("granwave %s softwall: v_imp %.4g m/s, K_c %.4g N/m^1.5, rigid-wall T_q %s us (%.1f s)\n",
+                   gw_version(), vimp, kc, gw_cli_num(tq, sizeof tq, "%.3f", t_q * 1e6), wall_s);
             printf("  %-14s %11s %6s %9s %8s %11s %14s%s\n", "wall", "K", "kind", "N_d", "F.8", "F_plateau",
                    use_sheets ? "N_d measured" : "",
                    use_sheets ? "  tau_max(1) model/meas  tau_max(N_d) model/meas (us)" : "");
@@ -215,6 +229,8 @@ int gw_cmd_softwall(int argc, char **argv)
                     snprintf(nd, sizeof nd, "<= %d", (int)so.n_d_at_most[w]);
                 else if (so.saturated[w])
                     snprintf(nd, sizeof nd, "%d", (int)so.n_d[w]);
+                else if (wall_held(&so, w)) /* the decided columns do not locate it (the warning says) */
+                    snprintf(nd, sizeof nd, "undecided");
                 else
                     snprintf(nd, sizeof nd, "not in %ld", b);
                 if (!isnan(so.n_d_predicted[w]))
@@ -228,15 +244,17 @@ int gw_cmd_softwall(int argc, char **argv)
                      * size's was printed under that name (--n 3:12: 17.6 us for none, tau_max(3));
                      * n/a where the model gives none (the JSON's null), not "nan" */
                     char t1[16] = GW_CLI_NA, tn[16] = GW_CLI_NA;
-                    if (so.n[0] == 1)
+                    if (so.n[0] == 1 && !so.held[(size_t)w * per]) /* held: undecided */
                         snprintf(t1, sizeof t1, "%.1f", so.tau_max[(size_t)w * per] * 1e6);
                     if (!isnan(so.tau_max_at_n_d[w]))
                         snprintf(tn, sizeof tn, "%.1f", so.tau_max_at_n_d[w] * 1e6);
                     snprintf(taus, sizeof taus, "  %8s / %-8.1f     %8s / %.0f", t1, sh->tau_max1_us, tn,
                              sh->tau_max_nd_us);
                 }
-                printf("  %-14s %11.4g %6s %9s %8s %9.2f N %14s%s\n", use_sheets ? gw_sheet_get(w)->name : c.sheet ? c.sheet : "--kwall",
-                       kw[w], so.rigid[w] ? "rigid" : "soft", nd, np, so.f_plateau[w], meas, taus);
+                char fp[32]; /* n/a: every column held */
+                printf("  %-14s %11.4g %6s %9s %8s %9s N %14s%s\n", use_sheets ? gw_sheet_get(w)->name : c.sheet ? c.sheet : "--kwall",
+                       kw[w], so.rigid[w] ? "rigid" : "soft", nd, np, gw_cli_num(fp, sizeof fp, "%.2f", so.f_plateau[w]),
+                       meas, taus);
             }
         }
         free(nn);

@@ -144,6 +144,13 @@ int gw_cmd_wavespeed(int argc, char **argv)
         cJSON_AddNumberToObject(o, "n_max", (double)b);
         cJSON_AddNumberToObject(o, "wall_time_s", wall_s);
         cJSON_AddNumberToObject(o, "unfinished", wo.unfinished);
+        /* held by gravity (undecided, left out of every fit and speed): the count (the
+           tau_N sweep's and the front columns), per [velocity][N] and per front column */
+        cJSON_AddNumberToObject(o, "n_held", wo.n_held);
+        cJSON *held = cJSON_AddArrayToObject(o, "held");
+        for (int iv = 0; iv < nv; iv++)
+            cJSON_AddItemToArray(held, gw_json_bools(wo.held + (size_t)iv * wo.nn, wo.nn));
+        cJSON_AddItemToObject(o, "front_held", gw_json_bools(wo.front_held, nv));
         gw_cli_warnings("wavespeed", wo.warnings); /* unfinished collisions of the tau_N sweep */
         cJSON *set = chain_cli_settings_json(&c);
         chain_cli_settings_runs(set, wo.ncase, wo.t_max, wo.dt_out, wo.dt, wo.dt_max);
@@ -183,23 +190,45 @@ int gw_cmd_wavespeed(int argc, char **argv)
         } else if (code == 0) {
             printf("granwave %s wavespeed (%.1f s)\n  v_imp     v_tq    v_front  v_group  v_group/sqrt(3/2)  (m/s)\n",
                    gw_version(), wall_s);
-            for (int iv = 0; iv < nv; iv++)
-                printf("  %-8.4g %8.2f %8.2f %8.2f %8.2f\n", v[iv], v_tq[iv], v_front[iv], v_group[iv], v_gf[iv]);
+            for (int iv = 0; iv < nv; iv++) { /* n/a: undecided, held columns (the warning says) */
+                char s1[32], s2[32], s3[32], s4[32];
+                printf("  %-8.4g %8s %8s %8s %8s\n", v[iv], gw_cli_num(s1, sizeof s1, "%.2f", v_tq[iv]),
+                       gw_cli_num(s2, sizeof s2, "%.2f", v_front[iv]), gw_cli_num(s3, sizeof s3, "%.2f", v_group[iv]),
+                       gw_cli_num(s4, sizeof s4, "%.2f", v_gf[iv]));
+            }
             if (!wo.fitted) { /* no power law through one point: said, not printed as nan */
                 printf("  beta, C3: not fitted (one speed; the fits over v_imp need two)\n");
             } else {
-                if (isfinite(f_tq[1]))
-                    printf("  beta: tq %.5f +- %.5f, front %.5f +- %.5f, group %.5f +- %.5f\n", f_tq[0],
-                           f_tq[1], f_fr[0], f_fr[1], f_gr[0], f_gr[1]);
-                else /* two speeds: the line through both, no residual */
-                    printf("  beta: tq %.5f, front %.5f, group %.5f (two speeds: each fit goes through both, "
-                           "no standard error)\n", f_tq[0], f_fr[0], f_gr[0]);
-                printf("  C3: tq %.4f, front %.4f, group %.4f, group/sqrt(3/2) %.4f (F.27: 2)\n", f_tq[3],
-                       f_fr[3], f_gr[3], f_gf[3]);
+                /* each estimator's exponent, "+- err" where the fit has one (three speeds or
+                 * more); n/a where held columns left fewer than two decided speeds */
+                const double *fs[3] = {f_tq, f_fr, f_gr};
+                char b[3][64], c[4][32];
+                int all_err = 1, all_val = 1;
+                for (int i = 0; i < 3; i++) {
+                    all_err &= isfinite(fs[i][1]);
+                    all_val &= isfinite(fs[i][0]);
+                    if (isfinite(fs[i][1]))
+                        snprintf(b[i], sizeof b[i], "%.5f +- %.5f", fs[i][0], fs[i][1]);
+                    else
+                        gw_cli_num(b[i], sizeof b[i], "%.5f", fs[i][0]);
+                }
+                const double *cs[4] = {f_tq, f_fr, f_gr, f_gf};
+                for (int i = 0; i < 4; i++) {
+                    all_val &= isfinite(cs[i][3]);
+                    gw_cli_num(c[i], sizeof c[i], "%.4f", cs[i][3]);
+                }
+                printf("  beta: tq %s, front %s, group %s%s\n", b[0], b[1], b[2],
+                       !all_val ? " (n/a: undecided, columns held by gravity)"
+                       : all_err ? "" : " (two speeds: each fit goes through both, no standard error)");
+                printf("  C3: tq %s, front %s, group %s, group/sqrt(3/2) %s (F.27: 2)\n", c[0], c[1], c[2], c[3]);
             }
-            if (!isfinite(c2)) /* the period is read on columns of 10 beads and more (ws_velocity) */
+            if (!isfinite(c2) && wo.n_held > 0) /* every speed's period left undecided */
+                printf("  period: undecided (columns held by gravity); ");
+            else if (!isfinite(c2)) /* the period is read on columns of 10 beads and more (ws_velocity) */
                 printf("  period: not measured (at some speed no column of 10 beads or more shows two wall-force "
                        "maxima); ");
+            else if (wo.fitted && !isfinite(wo.beta_period))
+                printf("  period: C2 %.4f, beta undecided (columns held by gravity); ", c2);
             else if (wo.fitted && isfinite(wo.beta_period_err)) /* its error as the JSON's: damping
                                                                   moved beta to -0.076 +- 0.043 */
                 printf("  period: C2 %.4f, beta %.5f +- %.5f; ", c2, wo.beta_period, wo.beta_period_err);
@@ -207,7 +236,9 @@ int gw_cmd_wavespeed(int argc, char **argv)
                 printf("  period: C2 %.4f, beta %.5f (no standard error); ", c2, wo.beta_period);
             else
                 printf("  period: C2 %.4f, beta not fitted; ", c2);
-            printf("front-speed estimators (tq, front, group/sqrt(3/2)) disagree by up to %.1f %%\n", 100 * worst);
+            char dis[32]; /* n/a: no speed with all three decided */
+            printf("front-speed estimators (tq, front, group/sqrt(3/2)) disagree by up to %s %%\n",
+                   gw_cli_num(dis, sizeof dis, "%.1f", 100 * worst));
         }
         cJSON_Delete(o);
     }

@@ -19,6 +19,11 @@
 #define RF(nm, f, hl) GW_RESULT_FLAG(nm, OFF(f), hl)
 #define RL(nm, f, hl) GW_RESULT_ROW(nm, GW_PARAM_LONG, OFF(f), "", hl)
 #define RA(nm, f, un, r, c, hl) GW_RESULT_ARRAY(nm, OFF(f), un, r, c, NULL, hl)
+/* the same result rows of a field of struct T, for the files whose tables
+ * hold several structs (chain_wave_study.c, chain_softwall_study.c) */
+#define RDT(T, nm, f, un, hl) GW_RESULT_ROW(nm, GW_PARAM_DOUBLE, offsetof(T, f), un, hl)
+#define RIT(T, nm, f, hl) GW_RESULT_ROW(nm, GW_PARAM_INT, offsetof(T, f), "", hl)
+#define RAT(T, nm, f, un, r, c, hl) GW_RESULT_ARRAY(nm, offsetof(T, f), un, r, c, NULL, hl)
 
 #define MATERIALS "steel,rigid,brass,aluminium,glass,pmma,pvc"
 /* the beads' choices: rigid (infinite density) is a wall only */

@@ -62,9 +62,6 @@ void gw_chain_softwall_setup_clear(gw_chain_softwall_setup *s)
 
 /* ---- the table of the results ---- */
 
-#define RDT(T, nm, f, un, hl) GW_RESULT_ROW(nm, GW_PARAM_DOUBLE, offsetof(T, f), un, hl)
-#define RIT(T, nm, f, hl) GW_RESULT_ROW(nm, GW_PARAM_INT, offsetof(T, f), "", hl)
-#define RAT(T, nm, f, un, r, c, hl) GW_RESULT_ARRAY(nm, offsetof(T, f), un, r, c, NULL, hl)
 #define RFA(T, nm, f, r, hl) \
     {.name = nm, .type = GW_PARAM_FARRAY, .offset = offsetof(T, f), .unit = "", .rows = r, .help = hl}
 

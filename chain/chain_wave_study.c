@@ -50,7 +50,6 @@ static const gw_param ws_params[] = {
 #undef OFF
 #undef OWN
 
-
 const gw_param *gw_chain_wavespeed_setup_params(void) { return ws_params; }
 
 int gw_chain_wavespeed_setup_init(gw_chain_wavespeed_setup *s)
@@ -67,13 +66,7 @@ void gw_chain_wavespeed_setup_clear(gw_chain_wavespeed_setup *s)
     chain_study_setup_clear(s, &s->col, ws_params);
 }
 
-
 /* ---- the tables of the results ---- */
-
-/* result rows of struct T */
-#define RDT(T, nm, f, un, hl) GW_RESULT_ROW(nm, GW_PARAM_DOUBLE, offsetof(T, f), un, hl)
-#define RIT(T, nm, f, hl) GW_RESULT_ROW(nm, GW_PARAM_INT, offsetof(T, f), "", hl)
-#define RAT(T, nm, f, un, r, c, hl) GW_RESULT_ARRAY(nm, offsetof(T, f), un, r, c, NULL, hl)
 
 #define W gw_chain_wavespeed_outcome
 #define WFIT(k, j, nm, un, hl) RDT(W, nm, fits[k][j], un, hl)

@@ -299,6 +299,8 @@ void chain_cli_settings_run(cJSON *settings, const gw_chain_result *r)
     } used[] = {{"dt", r->run_dt}, {"dt_max", r->run_dt_max}, {"t_max", r->run_t_max}, {"dt_out", r->run_dt_out}};
     for (size_t i = 0; s && i < sizeof used / sizeof used[0]; i++)
         cJSON_ReplaceItemInObjectCaseSensitive(s, used[i].key, cJSON_CreateNumber(used[i].v));
+    if (s) /* dt is the step taken; the one given beside it (0: none) */
+        cJSON_AddNumberToObject(s, "dt_given", r->run_dt_given);
 }
 
 void chain_cli_settings_runs(cJSON *settings, long nrun, const double *t_max, const double *dt_out,

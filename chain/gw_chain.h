@@ -750,8 +750,10 @@ typedef struct gw_chain_drop_result {
     double t_end;
     long n_events, missed_events;
     gw_solver_stats stats;
-    double run_dt, run_dt_max; /* the step the run used (rk4; 0 for cvode and arkode)
+    double run_dt, run_dt_max; /* the step the run used (rk4: at most dt_max and dt_out;
+                                  cvode, arkode: their first, 0 when their own)
                                   and its step cap, s: the defaults resolved */
+    double run_dt_given;       /* the dt given (0: none), s; above run_dt: warned */
     int first_cut;          /* 1: t_max came before the first collision's end (it
                                ran to t_max): its results are those at t_max */
     int open_at_t_max;      /* 1: bead 1 still on the sensor at t_end: the last

@@ -19,7 +19,8 @@
 #    where its steps end) ran at that step byte for byte while the settings
 #    recorded the dt given. It still runs (exit 0, the same results) with one
 #    warning line naming --dt and the step, and the settings' dt is the step
-#    taken, dt_given the one given (JSON, the --out files' header, Python).
+#    taken, dt_given the one given (JSON, the --out files' header, Python);
+#    drop the same.
 # Checks that fail on the code before: see docs/tests.md.
 # shellcheck source=refusal_lib.sh
 . "$2/tests/refusal_lib.sh"
@@ -88,6 +89,17 @@ if runs_json "3 rk4 --dt 1e-3 --dt-out 1e-6" c.json chain --n 3 --solver rk4 --d
         [ "$(jq_py c.json "(d['f_max'], d['final_velocities'])")" = "$(jq_py e.json "(d['f_max'], d['final_velocities'])")" ] &&
         ok "3 rk4: the results of --dt 1e-6" || ko "3 rk4 results differ"
 fi
+# the drop: its own step (cvode's first, capped at its dt-max) the same way
+if runs_json "3 drop --dt 1e-3" da.json drop --n 3 --dt 1e-3; then
+    grep -qE -- "--dt 0.001 s is above dt-max = " "$tmp/stderr" && ok "3 drop --dt 1e-3: the warning" ||
+        ko "3 drop stderr: $(cat "$tmp/stderr")"
+    ddt=$(jq_py da.json "repr(d['settings']['solver']['dt_max'])")
+    [ "$(jq_py da.json "(d['settings']['solver']['dt'], d['settings']['solver']['dt_given'])")" = "($ddt, 0.001)" ] &&
+        ok "3 drop: settings dt the step taken, dt_given 1e-3" || ko "3 drop settings: $(jq_py da.json "d['settings']['solver']")"
+    runs_json "3 drop --dt dt-max" db.json drop --n 3 --dt "$ddt" &&
+        [ "$(jq_py da.json "d['f_max']")" = "$(jq_py db.json "d['f_max']")" ] &&
+        ok "3 drop --dt 1e-3: the results of --dt dt-max" || ko "3 drop results differ from --dt dt-max's"
+fi
 rm -rf o
 if "$GW" chain --n 3 --dt 1e-3 --out o >/dev/null 2>&1; then
     /usr/bin/python3 -c "
@@ -117,6 +129,11 @@ with warnings.catch_warnings(record=True) as w:
     r = granwave.chain(n=3, dt=1e-3)
 check("3 Python dt 1e-3: dt the step taken, dt_given 1e-3", r["dt"] == r["dt_max"] == $dtmax and r["dt_given"] == 1e-3)
 check("3 Python dt 1e-3: the warning", any("dt 0.001 s is above dt_max" in str(x.message) for x in w))
+with warnings.catch_warnings(record=True) as w:
+    warnings.simplefilter("always")
+    r = granwave.drop(n=3, dt=1e-3)
+check("3 Python drop dt 1e-3: dt the step taken, dt_given 1e-3", r["dt"] == r["dt_max"] and r["dt_given"] == 1e-3)
+check("3 Python drop dt 1e-3: the warning", any("dt 0.001 s is above dt_max" in str(x.message) for x in w))
 EOF
 
 test_summary test_chain_located_outcomes

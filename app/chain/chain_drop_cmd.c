@@ -123,8 +123,8 @@ static cJSON *settings_json(const drop_cli *d)
 {
     cJSON *o = chain_cli_settings_json(&d->c);
     cJSON *sv = cJSON_GetObjectItemCaseSensitive(o, "solver");
-    if (sv) /* dt is the step taken, the one given beside it (chain's settings too) */
-        cJSON_AddNumberToObject(sv, "dt_given", d->dt_given);
+    if (sv) /* dt is the step taken (o.dt), the one given beside it */
+        cJSON_ReplaceItemInObjectCaseSensitive(sv, "dt_given", cJSON_CreateNumber(d->dt_given));
     cJSON *dr = cJSON_AddObjectToObject(o, "drop");
     cJSON_AddNumberToObject(dr, "n_column", d->n_column);
     cJSON_AddBoolToObject(dr, "block", d->block);

@@ -280,6 +280,10 @@ cJSON *chain_cli_settings_json(const chain_cli *c)
     cJSON_AddNumberToObject(s, "rtol", c->run.sp.rtol);
     cJSON_AddNumberToObject(s, "atol", c->run.sp.atol);
     cJSON_AddNumberToObject(s, "dt", c->run.sp.dt);
+    /* the --dt given (0: none): a run's settings replace dt by the step it took
+     * (chain_cli_settings_run, _runs), which a dt above dt-max (or rk4's dt-out)
+     * is not */
+    cJSON_AddNumberToObject(s, "dt_given", c->run.sp.dt);
     if (c->run.steps_per_tc > 0)
         cJSON_AddNumberToObject(s, "steps_per_tc", c->run.steps_per_tc);
     cJSON_AddNumberToObject(s, "dt_max", c->run.sp.dt_max);
@@ -299,8 +303,6 @@ void chain_cli_settings_run(cJSON *settings, const gw_chain_result *r)
     } used[] = {{"dt", r->run_dt}, {"dt_max", r->run_dt_max}, {"t_max", r->run_t_max}, {"dt_out", r->run_dt_out}};
     for (size_t i = 0; s && i < sizeof used / sizeof used[0]; i++)
         cJSON_ReplaceItemInObjectCaseSensitive(s, used[i].key, cJSON_CreateNumber(used[i].v));
-    if (s) /* dt is the step taken; the one given beside it (0: none) */
-        cJSON_AddNumberToObject(s, "dt_given", r->run_dt_given);
 }
 
 void chain_cli_settings_runs(cJSON *settings, long nrun, const double *t_max, const double *dt_out,

@@ -338,18 +338,42 @@ static int wall_finished(const run_state *st, const double *y, double dtol)
     return wall_pending(st, y, dtol) == NULL;
 }
 
+/* A contact k >= 1 whose flag is still closed, with its beads overlapping and
+ * separating, that opens before the run's end at its present rate (d / -w,
+ * a lower bound under no force but the contact's). Such a contact no longer acts
+ * (contact_acting) but its opening, its beads' detach time, is still to come:
+ * a run that stopped at the first output after the contact stopped acting
+ * dropped it, so the detach time depended on where the samples fell (--n 5
+ * --kwall 1e4: bead 1's 0.016876 s at the default sampling, the wall's
+ * 0.016636 s at --dt-out 1e-8, the run ending 4.6e-8 s before the opening).
+ * Separating at a resolved speed (vtol, resolved_speed): two beads that leave
+ * together part at the integration's error, and waiting for that opening made
+ * the run's end move with the sampling (--n 2 --k 1e3 --kwall 1e14 under
+ * arkode: t_end 0.0145 to 0.0162 s over four samplings). */
+static int opening_ahead(const run_state *st, double t, const double *y, int k, double vtol)
+{
+    const double d = y[2 * k] - y[2 * k - 2], w = y[2 * k + 1] - y[2 * k - 1];
+    return st->closed[k] && d > 0 && -w > vtol && t + d / -w < st->t_max;
+}
+
 /* The wall's side done (wall_pending), and every contact between beads open
  * and not closing (by its events and by its geometry, so that a contact the
- * root finder missed still counts) at a resolved speed (contact_acting). */
-static int finished(const run_state *st, const double *y, double dtol)
+ * root finder missed still counts) at a resolved speed (contact_acting): 1.
+ * 2 when that holds but a contact's opening is still ahead (opening_ahead):
+ * the run goes on to the opening's located root, so that the detach times are
+ * events' times and never the samples'. 0 otherwise. */
+static int finished(const run_state *st, double t, const double *y, double dtol)
 {
     if (!wall_finished(st, y, dtol))
         return 0;
     const double vtol = resolved_speed(st);
-    for (int k = 1; k < st->n; k++)
+    int ahead = 0;
+    for (int k = 1; k < st->n; k++) {
         if (contact_acting(st, y, k, vtol))
             return 0;
-    return 1;
+        ahead |= opening_ahead(st, t, y, k, vtol);
+    }
+    return ahead ? 2 : 1;
 }
 
 static void finish_result(run_state *st, const double *y)
@@ -374,6 +398,16 @@ static void finish_result(run_state *st, const double *y)
     r->eps_col = sqrt(e_f / e_i);
     r->period = r->n_maxima >= 2 ? (st->t_last_max - st->t_first_max) / (r->n_maxima - 1)
                                  : NAN;
+}
+
+int gw_chain_result_held_blank(gw_chain_result *r)
+{
+    if (!r || r->wall_pending != chain_held_pending)
+        return 0;
+    r->f_max = r->tau_max = r->tau_n = r->eps_eff = r->eps_col = NAN;
+    for (int i = 0; r->final_v && i < r->n; i++)
+        r->final_v[i] = NAN;
+    return 1;
 }
 
 /* A sample callback's answer as the drive's: a stop (> 0) ends the run without
@@ -449,7 +483,8 @@ static int collide_after(void *ctx, double t, const double *y, gw_err *err)
     if (st->o->energy_tol > 0 && r->energy_error > st->o->energy_tol)
         return gw_err_set(err, GW_EENERGY, "chain: relative energy error %.3g exceeds the limit %.3g at t = %.9g s",
                           r->energy_error, st->o->energy_tol, t);
-    if (finished(st, y, st->dtol)) {
+    const int fin = finished(st, t, y, st->dtol);
+    if (fin == 1) {
         r->converged = 1;
         return GW_DRIVE_STOP;
     }
@@ -458,6 +493,10 @@ static int collide_after(void *ctx, double t, const double *y, gw_err *err)
         return GW_DRIVE_STOP;
     }
     if (t >= st->t_max) {
+        if (fin == 2) { /* ended but for an opening that did not come by t_max */
+            r->converged = 1;
+            return GW_DRIVE_STOP;
+        }
         if (!isfinite(r->tau_n))
             return gw_err_set(err, GW_ELIMIT, "chain: bead 1 still on the wall at t_max = %.6g s", st->t_max);
         return GW_DRIVE_STOP;
@@ -544,8 +583,13 @@ static int collide_run(const gw_chain *c, const gw_chain_run_opts *o, int drop, 
     st.vtol_tol = type == gw_solver_rk4 ? 0.0 : 1e3 * fmax(sp.rtol, sp.atol);
     r->run_t_max = t_max;
     r->run_dt_out = dt_out;
-    /* rk4 steps at the smaller of dt and dt_max (gw_backend_rk4.c): record that */
-    r->run_dt = type == gw_solver_rk4 ? fmin(sp.dt, sp.dt_max) : sp.dt;
+    /* every backend steps at most dt_max (gw_solver_create), rk4's steps end at
+     * the samples (gw_backend_rk4.c): record the step taken, beside the dt
+     * given (--dt 1e-3 ran as the automatic dt_max 6.6e-6 s, and rk4's --dt 1e-3
+     * at --dt-out 1e-6 as --dt 1e-6, while the settings said 1e-3) */
+    r->run_dt_given = o->sp.dt > 0 ? o->sp.dt : 0.0;
+    r->run_dt = type == gw_solver_rk4 ? fmin(fmin(sp.dt, sp.dt_max), dt_out > 0 ? dt_out : INFINITY)
+                                      : sp.dt > 0 ? fmin(sp.dt, sp.dt_max) : sp.dt;
     r->run_dt_max = sp.dt_max;
 
     gw_chain_energy e;

@@ -45,7 +45,8 @@ static const gw_param collision_fields[] = {
     RD("t_end", r.t_end, "s", "end of the run"),
     RD("t_max", r.run_t_max, "s", "time limit the run used (default 20 (n T_q + tau_1))"),
     RD("dt_out", r.run_dt_out, "s", "sampling interval the run used (default tau_1/200)"),
-    RD("dt", r.run_dt, "s", "RK4 step the run used (default T_c/400, at most dt_max; 0: cvode, arkode)"),
+    RD("dt", r.run_dt, "s", "step the run used: RK4's (default T_c/400, at most dt_max and dt_out), cvode's and arkode's first (0: their own)"),
+    RD("dt_given", r.run_dt_given, "s", "the dt given (0: none); dt differs when it was above dt_max or rk4's dt_out"),
     RD("dt_max", r.run_dt_max, "s", "largest step the run allowed (default a quarter of the shortest contact)"),
     RL("events", r.n_events, "contact events located"),
     RL("missed_events", r.missed_events, "contact changes found from the state, not a root"),
@@ -135,6 +136,8 @@ int gw_chain_collision_run(const gw_chain_setup *s, gw_chain_collision *out, gw_
     double t0 = gw_clock_ms();
     rc = gw_chain_collide(c, &res.run, &out->r, err);
     out->wall_time_ms = gw_clock_ms() - t0;
+    if (rc == GW_OK) /* held by gravity: what its warning calls undecided is NaN */
+        gw_chain_result_held_blank(&out->r);
     if (s->trace) { /* hand the series over (also after a failure: the run so far) */
         out->trace_len = (int)tr.len;
         out->t = tr.t;

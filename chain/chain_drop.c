@@ -599,7 +599,12 @@ int gw_chain_drop_run_progress(const gw_chain_drop_params *p, const gw_chain_run
         sp.dt = tc / (o->steps_per_tc > 0 ? o->steps_per_tc : 400.0);
     /* the drop runs to t_max whatever happens: its steps bounded over t_max
      * (the default RK4 step makes about 4e5 over 10 ms) */
-    r->run_dt = type == gw_solver_rk4 ? fmin(sp.dt, sp.dt_max) : sp.dt; /* the step rk4 takes */
+    /* the step taken (every backend at most dt_max, rk4's steps ending at the
+     * samples of drop_loop), beside the dt given: chain_collide.c's record */
+    const double dt_out_run = o->dt_out > 0 ? o->dt_out : 1e-6;
+    r->run_dt_given = o->sp.dt > 0 ? o->sp.dt : 0.0;
+    r->run_dt = type == gw_solver_rk4 ? fmin(fmin(sp.dt, sp.dt_max), dt_out_run)
+                                      : sp.dt > 0 ? fmin(sp.dt, sp.dt_max) : sp.dt;
     r->run_dt_max = sp.dt_max;
     if ((rc = chain_steps_check(type, &sp, &o->sp, p->t_max, "t-max", err)) != GW_OK ||
         (rc = chain_sensor_steps_check(&q, type, p->t_max, "t-max", err)) != GW_OK)

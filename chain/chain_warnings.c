@@ -33,11 +33,31 @@ static int overlap_warning(const gw_chain_result *r, char **list)
                            r->overlap_max_rel);
 }
 
+/* A dt given above the step the run could take ran at that step: the
+ * results are the step's (chain --dt 1e-3 byte for byte those of the
+ * automatic dt-max 6.6e-6 s); refusing would refuse the dt that earlier
+ * commands passed, so the run goes on and says so (the settings' dt is the
+ * step taken, dt_given the one given). */
+static int dt_warning(double given, double taken, double dt_max, char **list)
+{
+    if (!(given > 0 && taken < given))
+        return GW_OK;
+    const int at_out = taken < dt_max; /* rk4: its steps end at the samples */
+    return gw_warnings_add(list,
+                           "--dt %g s is above %s = %g s, the longest step the run takes%s: it ran at that step, "
+                           "the dt its settings record (dt_given: %g s)",
+                           given, at_out ? "--dt-out" : "dt-max", taken,
+                           at_out ? " (rk4's steps end at the samples)" : " (a quarter of the shortest contact unless given)",
+                           given);
+}
+
 int gw_chain_result_warnings(const gw_chain_result *r, char **list)
 {
     if (!r)
         return GW_OK;
-    int rc = overlap_warning(r, list);
+    int rc = dt_warning(r->run_dt_given, r->run_dt, r->run_dt_max, list);
+    if (rc == GW_OK)
+        rc = overlap_warning(r, list);
     if (rc != GW_OK || r->converged)
         return rc;
     if (r->wall_pending == chain_held_pending) /* a longer run does not decide it */
@@ -110,7 +130,9 @@ int gw_chain_drop_result_warnings(const gw_chain_drop_result *r, char **list)
 {
     if (!r)
         return GW_OK;
-    int rc = overlap_warning(&r->first, list); /* the first collision, the drop's hardest */
+    int rc = dt_warning(r->run_dt_given, r->run_dt, r->run_dt_max, list);
+    if (rc == GW_OK)
+        rc = overlap_warning(&r->first, list); /* the first collision, the drop's hardest */
     if (rc != GW_OK || !(r->first_cut || r->open_at_t_max))
         return rc;
     /* NaN in the result, null in the program's JSON: "NaN" is what the result holds for every caller */

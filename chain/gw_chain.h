@@ -410,6 +410,11 @@ typedef struct gw_chain_result {
      * t_max and dt_out in s; dt the RK4 step or the initial step asked of
      * cvode/arkode (0 = their own choice), s; dt_max the largest step, s. */
     double run_t_max, run_dt_out, run_dt, run_dt_max;
+    /* The dt the caller gave (0: none), s. run_dt is the step the run took: a
+     * dt above dt_max runs at dt_max (every backend; cvode and arkode take it
+     * as their first step), and rk4's steps end at the samples, so a dt above
+     * dt_out runs at dt_out; the warnings say so when they differ. */
+    double run_dt_given;
     /* The largest overlap of any contact (the wall's elastic one included) at
      * the samples and events, over the bead radius (gw_chain_params.radius):
      * the Hertz law assumes it much below 1, and above 1 the results are the
@@ -431,6 +436,16 @@ void gw_chain_result_free(gw_chain_result *r);
  * the Hertz law used outside its range); nothing otherwise. The text
  * `granwave chain` prints and Python issues. GW_OK or GW_ENOMEM. */
 int gw_chain_result_warnings(const gw_chain_result *r, char **list);
+/* A collision held by gravity (wall_pending the held text: the column fell back
+ * onto the wall before its collision ended, the warning "gravity holds the
+ * column"): the values that warning calls undecided, F_max (and its time
+ * tau_max), tau_N, the final velocities and the restitution eps_eff, eps_col,
+ * set to NaN, as every undecided value (the program's JSON null and text
+ * "n/a", Python's nan). They were those at the stop, which moved with the
+ * sampling (--n 2 --gravity 1e3 --vimp 0.01: eps_eff -0.0058 by default, -0.467
+ * at --dt-out 7e-6). Returns 1 when r was held (and is now so), else 0 (r NULL:
+ * 0); the warnings (gw_chain_result_warnings) are the same before and after. */
+int gw_chain_result_held_blank(gw_chain_result *r);
 
 /* Characteristic time (m/k)^(2/5) v^(-1/5) of the chain, s. */
 double gw_chain_time_scale(const gw_chain_params *p);
@@ -735,8 +750,10 @@ typedef struct gw_chain_drop_result {
     double t_end;
     long n_events, missed_events;
     gw_solver_stats stats;
-    double run_dt, run_dt_max; /* the step the run used (rk4; 0 for cvode and arkode)
+    double run_dt, run_dt_max; /* the step the run used (rk4: at most dt_max and dt_out;
+                                  cvode, arkode: their first, 0 when their own)
                                   and its step cap, s: the defaults resolved */
+    double run_dt_given;       /* the dt given (0: none), s; above run_dt: warned */
     int first_cut;          /* 1: t_max came before the first collision's end (it
                                ran to t_max): its results are those at t_max */
     int open_at_t_max;      /* 1: bead 1 still on the sensor at t_end: the last

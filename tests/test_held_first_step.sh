@@ -60,10 +60,10 @@ if not str(d.get("wall_pending")).startswith("held by gravity"):
     why.append(f"wall_pending {d.get('wall_pending')!r} does not say held by gravity")
 if not d["t_end"] < 0.2 * t_max:  # the fall comes at 0.08 t_max; the old run went to t_max
     why.append(f"t_end {d['t_end']} is not before 0.2 t_max = {0.2 * t_max}")
-# at the stop the beads' momentum is back toward the wall (eps_eff = -p/p0 <= 0),
-# by no more than gravity adds over a few samples (|eps_eff| small)
-if not (-0.05 < d["eps_eff"] <= 0):
-    why.append(f"eps_eff {d['eps_eff']} is not in (-0.05, 0]")
+# the restitution at the stop is undecided, null (it was the momentum toward the
+# wall there, in (-0.05, 0], which moved with the sampling: test_chain_located_outcomes)
+if d["eps_eff"] is not None:
+    why.append(f"eps_eff {d['eps_eff']} is not null (undecided)")
 print("ok" if not why else "; ".join(why))
 EOF
 )

@@ -91,13 +91,15 @@ static void print_text(const chain_cli *c, const gw_chain_result *r)
     printf("granwave %s chain: n = %d, v_imp = %g m/s, solver %s\n", gw_version(), p->n,
            p->v_imp, c->solver);
     printf("  m = %.6g kg, k = %.6g N/m^1.5, K = %.6g N/m^1.5\n", p->mass, p->k, p->kwall);
-    printf("  F_max      %.6g N at tau_max = %.6g us\n", r->f_max, r->tau_max * 1e6);
-    printf("  tau_N      %.6g us (wall contacts: %d)\n", r->tau_n * 1e6, r->wall_contacts);
-    char per[32];
+    char fm[32], tm[32], tn[32], per[32], ee[32], ec[32]; /* NaN (held by gravity, no period): n/a */
+    printf("  F_max      %s N at tau_max = %s us\n", gw_cli_num(fm, sizeof fm, "%.6g", r->f_max),
+           gw_cli_num(tm, sizeof tm, "%.6g", r->tau_max * 1e6));
+    printf("  tau_N      %s us (wall contacts: %d)\n", gw_cli_num(tn, sizeof tn, "%.6g", r->tau_n * 1e6),
+           r->wall_contacts);
     printf("  period P   %s us (%d maxima)\n", gw_cli_num(per, sizeof per, "%.6g", r->period * 1e6),
            r->n_maxima);
-    printf("  eps_eff    %.6g   eps_col %.6g   E_rel/E_K %.6g\n", r->eps_eff, r->eps_col,
-           r->e_rel_over_e_k);
+    printf("  eps_eff    %s   eps_col %s   E_rel/E_K %.6g\n", gw_cli_num(ee, sizeof ee, "%.6g", r->eps_eff),
+           gw_cli_num(ec, sizeof ec, "%.6g", r->eps_col), r->e_rel_over_e_k);
     printf("  N_s        %d (cluster of %d)\n", r->n_s, r->cluster);
     printf("  energy     max relative error %.3g\n", r->energy_error);
     printf("  solver     %ld steps, %ld rhs evaluations, %ld restarts\n", r->stats.steps,
@@ -157,6 +159,8 @@ int gw_cmd_chain(int argc, char **argv)
     int rc = gw_chain_collide(chain, &c.run, &r, &err);
     double wall_ms = gw_clock_ms() - t0;
     int code = 0;
+    if (rc == GW_OK) /* held by gravity: what its warning calls undecided is null in JSON, n/a in the text */
+        gw_chain_result_held_blank(&r);
     if (rc != GW_OK) {
         /* the library's run messages start "chain: " already */
         fprintf(stderr, "granwave %s%s\n", strncmp(err.msg, "chain: ", 7) == 0 ? "" : "chain: ", err.msg);

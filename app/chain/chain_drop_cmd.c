@@ -38,6 +38,7 @@ typedef struct drop_cli {
     int block, quiet;
     double *gaps;   /* [n-1] or NULL */
     double dt_out;  /* resolved signal sampling, s */
+    double dt_given; /* the --dt given (0: none), s; the settings' dt is the step taken */
     int n_column;   /* beads of the column (before --block) */
 } drop_cli;
 
@@ -121,6 +122,9 @@ static int drop_resolve(drop_cli *d, const gw_chain_drop_setup *ds, gw_opt *opts
 static cJSON *settings_json(const drop_cli *d)
 {
     cJSON *o = chain_cli_settings_json(&d->c);
+    cJSON *sv = cJSON_GetObjectItemCaseSensitive(o, "solver");
+    if (sv) /* dt is the step taken (o.dt), the one given beside it */
+        cJSON_ReplaceItemInObjectCaseSensitive(sv, "dt_given", cJSON_CreateNumber(d->dt_given));
     cJSON *dr = cJSON_AddObjectToObject(o, "drop");
     cJSON_AddNumberToObject(dr, "n_column", d->n_column);
     cJSON_AddBoolToObject(dr, "block", d->block);
@@ -382,6 +386,7 @@ int gw_cmd_drop(int argc, char **argv)
         gw_cli_study_error(gw_chain_drop_setup_params(), "drop", rc, &err);
     d.dt_out = d.c.run.dt_out = o.dt_out; /* as the study resolved them, for the settings */
     d.c.run.sp.dt = o.dt;
+    d.dt_given = o.r.run_dt_given;
     d.c.run.sp.dt_max = o.dt_max;
     d.peak_threshold = o.peak_threshold;
     const gw_chain_drop_result *r = &o.r;

@@ -280,6 +280,10 @@ cJSON *chain_cli_settings_json(const chain_cli *c)
     cJSON_AddNumberToObject(s, "rtol", c->run.sp.rtol);
     cJSON_AddNumberToObject(s, "atol", c->run.sp.atol);
     cJSON_AddNumberToObject(s, "dt", c->run.sp.dt);
+    /* the --dt given (0: none): a run's settings replace dt by the step it took
+     * (chain_cli_settings_run, _runs), which a dt above dt-max (or rk4's dt-out)
+     * is not */
+    cJSON_AddNumberToObject(s, "dt_given", c->run.sp.dt);
     if (c->run.steps_per_tc > 0)
         cJSON_AddNumberToObject(s, "steps_per_tc", c->run.steps_per_tc);
     cJSON_AddNumberToObject(s, "dt_max", c->run.sp.dt_max);

@@ -217,14 +217,6 @@ LAYER_HOT static int ledgers_rings(const gw_layer *L, gw_layer_energy *e, gw_lay
     }
     const layer_contact *cs = L->c;
     const layer_tscr *tscr = L->tscr;
-    /* The sums of the region and the ring the last contact added to are
-     * carried in registers (rsn, rst for regions[cq]; rstr for strain[cr])
-     * and written back when the next contact's differ: consecutive contacts
-     * (sorted by their first disc) mostly share both, and through memory
-     * every += waited for the store of the one before. The same additions
-     * on each sum in the same order, so the same numbers. */
-    int cq = -1, cr = -1;
-    double rsn = 0, rst = 0, rstr = 0;
     for (int k = 0; k < nc; k++) {
         const layer_contact *c = cs + k;
         const double *g = L->geo + 4 * k, un = g[0], su = g[1];
@@ -237,34 +229,19 @@ LAYER_HOT static int ledgers_rings(const gw_layer *L, gw_layer_energy *e, gw_lay
         const double sn = 0.4 * fn * un, st = ft * ft / (2 * kt);
         const int q = tscr[k].q;
         sn_sum += sn, st_sum += st;
-        if (q != cq) {
-            if (cq >= 0)
-                regions[cq].strain_normal = rsn, regions[cq].strain_tangent = rst;
-            cq = q, rsn = regions[q].strain_normal, rst = regions[q].strain_tangent;
-        }
-        rsn += sn, rst += st;
+        regions[q].strain_normal += sn, regions[q].strain_tangent += st;
         int rq = q < nring ? q : -1;
         if (q > nring) { /* the block's contacts by their point */
             const double arm = c->ra - 0.5 * un;
             rq = layer_ring_of(y[6 * c->a] + arm * g[2] - cx, y[6 * c->a + 1] + arm * g[3] - cy, w, nring);
         }
-        if (rq >= 0) {
-            if (rq != cr) {
-                if (cr >= 0)
-                    strain[cr] = rstr;
-                cr = rq, rstr = strain[rq];
-            }
-            rstr += sn + st;
-        }
+        if (rq >= 0)
+            strain[rq] += sn + st;
         if (rk[c->a] >= 0)
             coord[rk[c->a]] += 1;
         if (c->b >= 0 && rk[c->b] >= 0)
             coord[rk[c->b]] += 1;
     }
-    if (cq >= 0)
-        regions[cq].strain_normal = rsn, regions[cq].strain_tangent = rst;
-    if (cr >= 0)
-        strain[cr] = rstr;
     e->kinetic_block = kb, e->kinetic_soil = ks, e->potential = pot;
     e->strain_normal = sn_sum, e->strain_tangent = st_sum;
     for (int k = 0; k < nring; k++)

@@ -193,9 +193,12 @@ int layer_contacts_build(gw_layer *L, gw_err *err)
     layer_tscr *tscr = calloc((size_t)nc + 1, sizeof *tscr);
     double *geo = malloc((4 * (size_t)nc + 4) * sizeof *geo);
     double *snap = malloc(((size_t)nc + 1) * LAYER_SNAP_W * sizeof *snap);
-    if (!ny || !nsc || !roots || !drift || !un_last || !tscr || !geo || !snap || !wake || !travel || !tix) {
+    int *dem_act = malloc(((size_t)nc + 1) * sizeof *dem_act);
+    double *dem_w = malloc(((size_t)nc + 1) * LAYER_DEM_W * sizeof *dem_w);
+    if (!ny || !nsc || !roots || !drift || !un_last || !tscr || !geo || !snap || !wake || !travel || !tix ||
+        !dem_act || !dem_w) {
         free(c), free(ny), free(nsc), free(roots), free(drift), free(un_last), free(tscr), free(snap);
-        free(geo), free(wake), free(travel), free(tix);
+        free(geo), free(wake), free(travel), free(tix), free(dem_act), free(dem_w);
         return gw_err_set(err, GW_ENOMEM, "layer: out of memory for %d contacts", nc);
     }
     memcpy(ny, L->y, 6 * (size_t)nb * sizeof *ny);
@@ -209,7 +212,7 @@ int layer_contacts_build(gw_layer *L, gw_err *err)
             if (un > 0) {
                 int rc2 = missed_contact(L, &c[k], un, err);
                 free(c), free(ny), free(nsc), free(roots), free(drift), free(un_last), free(tscr), free(snap);
-                free(geo), free(wake), free(travel), free(tix);
+                free(geo), free(wake), free(travel), free(tix), free(dem_act), free(dem_w);
                 return rc2;
             }
         }
@@ -226,7 +229,9 @@ int layer_contacts_build(gw_layer *L, gw_err *err)
     memcpy(ny + 6 * nb + nc, L->y + 6 * nb + L->nc, (size_t)L->ntail * sizeof *ny);
     free(L->y), free(L->scale), free(L->c), free(L->roots), free(L->drift), free(L->un_last);
     free(L->tscr), free(L->snap), free(L->geo), free(L->wake), free(L->travel);
-    free(L->tix);
+    free(L->tix), free(L->dem_act), free(L->dem_w);
+    L->dem_act = dem_act;
+    L->dem_w = dem_w;
     for (int k = 0; k < nc; k++)
         tix[2 * k] = c[k].qa, tix[2 * k + 1] = c[k].b >= 0 ? c[k].qb : nb;
     L->wake = wake;

@@ -191,6 +191,8 @@ void gw_layer_free(gw_layer *L)
     free(L->wake);
     free(L->travel);
     free(L->tix);
+    free(L->dem_act);
+    free(L->dem_w);
     free(L->tscr);
     free(L->tmode);
     free(L->ymid);

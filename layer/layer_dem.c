@@ -155,6 +155,25 @@ static inline layer_cforce disc_force(const layer_contact *c, const double *y, c
     return layer_contact_force(c, su, fel, *und, 0, f, alpha, tp, 0, mode);
 }
 
+/* drift_discs's second pass: for the n contacts a step works on, from u_n
+ * (u), K_s (ks) and k_ts (kts), sqrt(u_n), 1/K_e, K_m (mean_kt's closed-at-both-
+ * ends form, the same operations) and 1/K_m, as if closed at both ends (the
+ * others' numbers are not read). A function of its own: inside drift_discs
+ * GCC did not vectorise the loop. */
+LAYER_HOT static void drift_stiffness(int n, const double *restrict u, const double *restrict ks,
+                                      const double *restrict kts, double *restrict su, double *restrict ike,
+                                      double *restrict km, double *restrict ikm)
+{
+    for (int j = 0; j < n; j++) {
+        const double s = ks[j], r = sqrt(u[j] > 0 ? u[j] : 0), ke = kts[j] * r;
+        const double m = (2.0 / 3.0) * (s * s + s * ke + ke * ke) / (s + ke);
+        su[j] = r;
+        ike[j] = 1 / ke;
+        km[j] = m;
+        ikm[j] = 1 / m;
+    }
+}
+
 /* The drift of a disc-only layer, fused with its force pass: per contact the
  * end geometry, the tangential step and its books, then the end forces the
  * rhs would compute (Hertz, the damping at the predicted velocities, F_t as
@@ -198,6 +217,18 @@ LAYER_HOT static void drift_discs(gw_layer *L, double h, const double *ph, doubl
         const double *s = ph + 6 * i;
         travel[i] += h2 * (fabs(s[3]) + fabs(s[4]));
     }
+    /* Three passes, so that the divider's long chains of each contact (the
+     * square roots and divisions of its geometry, v_t and stiffnesses) overlap
+     * with other contacts' instead of stalling the force pass: 1. the
+     * geometry and v_t of the awake contacts, gathered; 2. their stiffnesses
+     * as if closed at both ends, over arrays (vectorised); 3. the tangential
+     * step, the books and the forces, in the order of the list (the sums are
+     * the single loop's, bit for bit). */
+    const size_t sw = (size_t)nc + 1;
+    int *restrict act = L->dem_act, na = 0;
+    double *restrict wvt = L->dem_w, *restrict wu = wvt + sw, *restrict wks = wu + sw, *restrict wkts = wks + sw,
+                     *restrict wsu = wkts + sw, *restrict wike = wsu + sw, *restrict wkm = wike + sw,
+                     *restrict wikm = wkm + sw;
     for (int k = 0; k < nc; k++) {
         /* a contact closed at the step's start is awake: only the open-at-both-
          * ends path puts a contact to sleep, and it writes un_last = 0 (the
@@ -226,6 +257,21 @@ LAYER_HOT static void drift_discs(gw_layer *L, double h, const double *ph, doubl
             wake[k] = tr + (0.99 * gap - 1e-9 * rs); /* (not above tr: awake) */
             continue;
         }
+        double *g = geo + 4 * k;
+        g[0] = ue, g[2] = nn[0], g[3] = nn[1];
+        act[na] = k;
+        wvt[na] = disc_vt(c, ph, hh);
+        wu[na] = ue;
+        wks[na] = ul > 0 ? tscr[k].kt : 0;
+        wkts[na] = c->kts;
+        na++;
+    }
+    /* 2. (a contact not closed at both ends gets numbers pass 3 does not read) */
+    drift_stiffness(na, wu, wks, wkts, wsu, wike, wkm, wikm);
+    for (int j = 0; j < na; j++) {
+        const int k = act[j];
+        const layer_contact *c = cs + k;
+        const double ul = un_last[k], ue = wu[j], *g0 = geo + 4 * k, nn[2] = {g0[2], g0[3]};
         const layer_tscr ts = tscr[k];
         if (lean && ue > 0 && ul > 0 && ts.kt > 0 && ts.ikt > 0 && ts.q >= 0) {
             /* closed at both ends with K_s, 1/K_s and the region known: the general
@@ -233,15 +279,14 @@ LAYER_HOT static void drift_discs(gw_layer *L, double h, const double *ph, doubl
              * order, so the same numbers); the damping's zero terms (F_n - F_el) u_n'
              * are not added (adding +0 to the sums changes none of them) */
             const double kn = c->kn, kts = c->kts, ra = c->ra;
-            const double su = sqrt(ue), ke = kts * su, fel = kn * ue * su;
+            const double su = wsu[j], ke = kts * su, fel = kn * ue * su;
             if (fel > 0 && ke > 0) {
                 const int qa = c->qa, qb = c->qb, q0 = ts.q;
-                const double ks = ts.kt, iks = ts.ikt;
-                const double ike = 1 / ke, km = mean_kt(ks, ke, ul, ue), ikm = 1 / km;
-                double *g = geo + 4 * k;
-                g[0] = ue, g[1] = su, g[2] = nn[0], g[3] = nn[1];
+                const double iks = ts.ikt;
+                const double ike = wike[j], km = wkm[j], ikm = wikm[j];
+                geo[4 * k + 1] = su; /* (the first pass wrote the rest) */
                 un_last[k] = ue;
-                const double vt = disc_vt(c, ph, hh);
+                const double vt = wvt[j];
                 const double cap = tp * kn * ue * su;
                 const double f0 = fe[k], ftr = f0 + vt * h * km;
                 const double f1 = ftr > cap ? cap : ftr < -cap ? -cap : ftr;
@@ -300,12 +345,11 @@ LAYER_HOT static void drift_discs(gw_layer *L, double h, const double *ph, doubl
             km = mean_kt(ks, 0, un_last[k], disc_overlap(c, y, width));
             ikm = 1 / km;
         }
-        double *g = geo + 4 * k;
-        g[0] = ue, g[1] = su, g[2] = nn[0], g[3] = nn[1];
+        geo[4 * k + 1] = su;
         un_last[k] = fel > 0 ? ue : 0; /* as the rhs sets it */
         double f1 = 0;
         if (iks > 0 || ike > 0) { /* the tangential step (see the file's head) */
-            const double vt = disc_vt(c, ph, hh);
+            const double vt = wvt[j];
             const double cap = ue > 0 ? tp * c->kn * ue * su : 0;
             const double f0 = fe[k], ftr = f0 + vt * h * km;
             f1 = ftr > cap ? cap : ftr < -cap ? -cap : ftr;

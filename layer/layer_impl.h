@@ -187,6 +187,11 @@ struct gw_layer {
     int *tix;           /* [2 cap_c]: the travel indices of contact k's two discs
                            (qa, and qb or nb for a wall) */
     struct layer_tscr *tscr; /* [cap_c], DEM mode only */
+    /* DEM mode, discs only: the drift's scratch for the contacts a step works
+     * on (drift_discs, layer_dem.c): their indices, and LAYER_DEM_W arrays of
+     * nc + 1 doubles each (inputs and results of its three passes). */
+    int *dem_act;       /* [cap_c + 1] */
+    double *dem_w;      /* [LAYER_DEM_W (cap_c + 1)] */
     /* The exact mode's tangential branch per contact, held through the steps
      * and switched only where the solver stops (layer_tmode_update,
      * layer_sim.c): 1 at the Coulomb cap, 0 inside it. Read by the rhs while
@@ -317,6 +322,10 @@ static inline int layer_contact_region_near(const gw_layer *L, const layer_conta
     }
     return layer_contact_region_pt(L, c, px, py);
 }
+
+/* The number of arrays in gw_layer.dem_w (drift_discs, layer_dem.c): v_t,
+ * u_n, K_s and k_ts in; sqrt(u_n), 1/K_e, K_m and 1/K_m out. */
+enum { LAYER_DEM_W = 8 };
 
 /* What the last rhs evaluation found of a closed frictional contact, kept in
  * DEM mode for the next step (layer_dem.c): K_t at the step's start and the

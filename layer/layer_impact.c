@@ -336,16 +336,15 @@ static double record(gw_layer_impact_result *r, gw_layer *L, int block, double w
     int k = r->ns++;
     r->t[k] = gw_layer_time(L);
     double *kin = r->ring_kin + (size_t)k * r->nrings, *str = r->ring_strain + (size_t)k * r->nrings;
-    layer_ledgers_rings(L, &r->ledger[k], r->regions, r->impact_x, r->impact_y, w, r->nrings, kin, str,
-                        r->ring_coord + (size_t)k * r->nrings);
+    /* (the regions' ledgers are read once, at the end of the run) */
+    layer_ledgers_rings(L, &r->ledger[k], NULL, r->impact_x, r->impact_y, w, r->nrings, kin, str,
+                        r->ring_coord + (size_t)k * r->nrings, r->ring_diss + (size_t)k * r->nrings);
     double s[6];
     gw_layer_particle(L, block, s);
     r->block[4 * k] = s[0], r->block[4 * k + 1] = s[1];
     r->block[4 * k + 2] = s[3], r->block[4 * k + 3] = s[4];
     for (int q = 0; strain0 && q < r->nrings; q++)
         str[q] -= strain0[q];
-    for (int q = 0; q < r->nrings; q++)
-        r->ring_diss[(size_t)k * r->nrings + q] = r->regions[q].dissipated;
     double A = gw_layer_energy_initial(L);
     double e = fabs(r->ledger[k].total - A) / A;
     if (e > r->energy_error)
@@ -528,6 +527,8 @@ int gw_layer_impact(const gw_layer_sample *smp, const gw_layer_params *lp0,
         }
     }
     free(strain0);
+    if (rc == GW_OK) /* the regions' ledgers at the last sample */
+        gw_layer_ledgers(L, NULL, res->regions);
     res->wall_ms = gw_clock_ms() - t0;
     res->t_end = gw_layer_time(L);
     gw_layer_get_stats(L, &res->stats);

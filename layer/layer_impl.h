@@ -273,12 +273,15 @@ static inline int layer_ring_of(double dx, double dy, double w, int nring)
     return d < nring ? (int)d : -1;
 }
 
-/* gw_layer_ledgers (e and regions, both given) and gw_layer_rings of the same
- * state, in one pass when the rings are the regions' (same centre, width and
- * count) in DEM mode with discs only, else by the two calls; the same numbers
- * either way. Returns the region count written. */
+/* gw_layer_ledgers (e given; regions may be NULL) and gw_layer_rings of the
+ * same state, in one pass when the rings are the regions' (same centre, width
+ * and count) in DEM mode with discs only, else by the two calls; the same
+ * numbers either way. diss (may be NULL) gets the rings' E_d when the rings
+ * are the regions (NaN otherwise): the regions' sums are then not needed at
+ * every sample (layer-impact reads them once, at the end). Returns the
+ * region count written (0 without regions). */
 int layer_ledgers_rings(const gw_layer *L, gw_layer_energy *e, gw_layer_energy *regions, double cx, double cy,
-                        double w, int nring, double *kin, double *strain, double *coord);
+                        double w, int nring, double *kin, double *strain, double *coord, double *diss);
 
 /* layer_body_region knowing the body's region q0 at a nearby earlier state:
  * q0 when the centre is still in that ring (or still outside them), without

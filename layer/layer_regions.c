@@ -161,10 +161,21 @@ int gw_layer_ledgers(const gw_layer *L, gw_layer_energy *e, gw_layer_energy *reg
  * of an external function's target clones default visibility whatever
  * -fvisibility says (libgranwave.so exported layer_ledgers_rings and its
  * resolver; test_install_api) */
-LAYER_HOT static int ledgers_rings(const gw_layer *L, gw_layer_energy *e, gw_layer_energy *regions, double cx,
-                                   double cy, double w, int nring, double *kin, double *strain, double *coord)
+/* the rings' E_d from the state's tail (ledger_tail's regional dissipated),
+ * when the rings are the regions */
+static void rings_dissipated(const gw_layer *L, double cx, double cy, double w, int nring, double *diss)
 {
-    const int regs = e && regions && L->reg_n > 0 && cx == L->reg_cx && cy == L->reg_cy && w == L->reg_w &&
+    const int same = L->reg_n == nring && cx == L->reg_cx && cy == L->reg_cy && w == L->reg_w;
+    const double *tail = L->y + 6 * L->nb + L->nc;
+    for (int q = 0; q < nring; q++)
+        diss[q] = same ? tail[2 + 2 * q] : NAN;
+}
+
+LAYER_HOT static int ledgers_rings(const gw_layer *L, gw_layer_energy *e, gw_layer_energy *regions, double cx,
+                                   double cy, double w, int nring, double *kin, double *strain, double *coord,
+                                   double *diss)
+{
+    const int regs = e && L->reg_n > 0 && cx == L->reg_cx && cy == L->reg_cy && w == L->reg_w &&
                      nring == L->reg_n;
     const int dem_q = L->dem && !L->off && L->geo_pos && L->tan_phi > 0;
     gw_layer *M = (gw_layer *)L; /* scratch only */
@@ -174,6 +185,8 @@ LAYER_HOT static int ledgers_rings(const gw_layer *L, gw_layer_energy *e, gw_lay
         if (b)
             M->ring_np = b, M->ring_cap = need;
     }
+    if (diss)
+        rings_dissipated(L, cx, cy, w, nring, diss);
     if (!regs || !dem_q || M->ring_cap < need) { /* the two passes */
         int nr = gw_layer_ledgers(L, e, regions);
         gw_layer_rings(L, cx, cy, w, nring, kin, strain, coord);
@@ -181,9 +194,10 @@ LAYER_HOT static int ledgers_rings(const gw_layer *L, gw_layer_energy *e, gw_lay
     }
     /* one pass: gw_layer_ledgers's and gw_layer_rings's sums, in their order
      * and with their arithmetic (the rings are the regions 0 .. nring - 1) */
-    const int nr = gw_layer_region_count(L);
+    const int nr = regions ? gw_layer_region_count(L) : 0;
     memset(e, 0, sizeof *e);
-    memset(regions, 0, (size_t)nr * sizeof *regions);
+    if (regions)
+        memset(regions, 0, (size_t)nr * sizeof *regions);
     /* the snapshot's numbers (layer_snapshot), from the step's geometry */
     const double *y = L->y, *fts = y + 6 * L->nb, tp = L->tan_phi;
     int *np = M->ring_np, *rk = np + nring;
@@ -202,13 +216,21 @@ LAYER_HOT static int ledgers_rings(const gw_layer *L, gw_layer_energy *e, gw_lay
         const double ke = 0.5 * mass[i] * (s[3] * s[3] + s[4] * s[4]) + 0.5 * inert[i] * s[5] * s[5];
         const double pe = mass[i] * grav * (s[1] - yref[i]);
         const int q = same ? L->snap_breg[i] : (M->snap_breg[i] = layer_body_region_near(L, i, y, L->snap_breg[i]));
-        gw_layer_energy *r = regions + q;
         if (i == bb)
-            kb += ke, r->kinetic_block += ke;
+            kb += ke;
         else
-            ks += ke, r->kinetic_soil += ke;
+            ks += ke;
         if (!fixed[i])
-            pot += pe, r->potential += pe;
+            pot += pe;
+        if (regions) {
+            gw_layer_energy *r = regions + q;
+            if (i == bb)
+                r->kinetic_block += ke;
+            else
+                r->kinetic_soil += ke;
+            if (!fixed[i])
+                r->potential += pe;
+        }
         if (i != bb && q < nring)
             kin[q] += ke;
         rk[i] = i == blk || q >= nring ? -1 : q;
@@ -229,7 +251,8 @@ LAYER_HOT static int ledgers_rings(const gw_layer *L, gw_layer_energy *e, gw_lay
         const double sn = 0.4 * fn * un, st = ft * ft / (2 * kt);
         const int q = tscr[k].q;
         sn_sum += sn, st_sum += st;
-        regions[q].strain_normal += sn, regions[q].strain_tangent += st;
+        if (regions)
+            regions[q].strain_normal += sn, regions[q].strain_tangent += st;
         int rq = q < nring ? q : -1;
         if (q > nring) { /* the block's contacts by their point */
             const double arm = c->ra - 0.5 * un;
@@ -251,9 +274,9 @@ LAYER_HOT static int ledgers_rings(const gw_layer *L, gw_layer_energy *e, gw_lay
 }
 
 int layer_ledgers_rings(const gw_layer *L, gw_layer_energy *e, gw_layer_energy *regions, double cx, double cy,
-                        double w, int nring, double *kin, double *strain, double *coord)
+                        double w, int nring, double *kin, double *strain, double *coord, double *diss)
 {
-    return ledgers_rings(L, e, regions, cx, cy, w, nring, kin, strain, coord);
+    return ledgers_rings(L, e, regions, cx, cy, w, nring, kin, strain, coord, diss);
 }
 
 int gw_layer_region_ledger(const gw_layer *L, gw_layer_energy *out)

@@ -131,8 +131,10 @@ static void outset_close(gw_outset *s)
     s->active = 0;
 }
 
-/* SIGINT, SIGTERM and SIGHUP held while the staged files are placed: an
- * interrupt then comes after the last rename, never between two */
+/* SIGINT, SIGTERM and SIGHUP held on this thread while the staged files are
+ * placed: an interrupt then comes after the last rename, never between two.
+ * Another thread may take them meanwhile: the placing is also a critical
+ * section for the handler (gw_temps_placing_begin) */
 static void outset_hold(gw_outset *s) { gw_io_sig_hold(s->oldmask, &s->masked); }
 static void outset_release(gw_outset *s) { gw_io_sig_release(s->oldmask, &s->masked); }
 
@@ -252,6 +254,12 @@ int gw_outset_commit(gw_outset *s, gw_err *err)
     int dfd = open(s->dir, O_RDONLY | O_DIRECTORY | O_CLOEXEC);
     if (dfd >= 0)
         flock(dfd, LOCK_EX);
+    /* from here a signal another thread takes waits for the set
+     * (gw_io_temps.c); not while the lock is awaited: another run may hold it */
+    const int placing = gw_temps_placing_begin() == 0;
+    if (!placing)
+        rc = gw_err_set(err, GW_EIO, "%s: the output files were not placed: the program is ending on a signal",
+                        s->dir);
     /* what would stop a rename is found before any: nothing placed then */
     for (int i = 0; rc == GW_OK && i < s->n; i++) {
         struct stat st;
@@ -336,5 +344,7 @@ int gw_outset_commit(gw_outset *s, gw_err *err)
         close(dfd); /* and its lock */
     outset_close(s);
     outset_release(s);
+    if (placing) /* the signal that came meanwhile, if any, ends the program now */
+        gw_temps_placing_end();
     return rc;
 }

@@ -248,10 +248,19 @@ static const char *summary =
     "on a rerun; OUT/results.csv gets one row per case, sorted. Under mpirun, rank 0\n"
     "writes and hands out cases to the other ranks; otherwise one thread per core.";
 
-/* A refusal or failure in one line, "granwave sweep: ..." */
+/* A refusal or failure in one line, "granwave sweep: ..." (a message that
+ * names the command itself, "sweep: ", "sweep --jobs: ", "sweep CONFIG: ",
+ * "sweep journal: ", "sweep table: ", as it is). Any message starting
+ * "sweep" was taken for one: a config or --out named sweep.ini, sweeps/ or
+ * sweep_out/ lost the command's name ("granwave sweep_out/journal.csv: ..."). */
 static void say_error(const gw_err *err)
 {
-    fprintf(stderr, strncmp(err->msg, "sweep", 5) == 0 ? "granwave %s\n" : "granwave sweep: %s\n", err->msg);
+    static const char *const own[] = {"sweep: ", "sweep --", "sweep CONFIG: ", "sweep journal: ", "sweep table: "};
+    const char *m = err->msg;
+    int named = 0;
+    for (size_t i = 0; i < sizeof own / sizeof own[0] && !named; i++)
+        named = strncmp(m, own[i], strlen(own[i])) == 0;
+    fprintf(stderr, named ? "granwave %s\n" : "granwave sweep: %s\n", m);
 }
 
 /* What a run would do now, after `--check` read the journal in out: start,

@@ -234,14 +234,17 @@ void gw_outset_abort(gw_outset *s);
  * program's own handler of a signal that ends it. It never touches a file
  * already placed: a staged file renamed into place is no longer under its
  * temporary name. The output set's guarantee holds: a signal that comes while
- * the set is placed is held until the last rename (the calling thread's mask),
- * so the directory then holds the complete new set, and before it, the earlier
+ * the set is placed is held until the last rename (the calling thread's mask;
+ * on another thread, gw_temps_on_signals' handler records it and the placer
+ * sends it again once the set is wholly placed or wholly put back), so the
+ * directory then holds the complete new set, and before it, the earlier
  * files as they were. */
 void gw_temps_remove(void);
 /* Install, for SIGINT, SIGTERM and SIGHUP where each has its default action
  * (a signal ignored, or with a handler of the program's, is left as it is), a
  * handler that calls gw_temps_remove and then ends the process by the signal's
- * default action (the exit status still says "killed by SIGINT"). For programs:
+ * default action (the exit status still says "killed by SIGINT"); while an
+ * output set is placed, on any thread, after it is placed or put back. For programs:
  * the granwave program calls it first; the library never installs it on its
  * own, so a binding (the Python module) keeps its interpreter's handling.
  * GW_OK, or GW_EIO when sigaction failed for one of them. */

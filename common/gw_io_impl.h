@@ -67,6 +67,15 @@ const char *gw_io_file_kind(mode_t m);
 int gw_temps_add(const char *path);
 void gw_temps_drop(const char *path);
 
+/* The placing of an output set (gw_outset_commit), a critical section for
+ * the handler of gw_temps_on_signals: a signal that comes meanwhile, on any
+ * thread, is recorded and not acted on, and the last placer's end sends it
+ * again to the process (the handler then removes the temporaries and ends
+ * it), once the set is wholly placed or wholly put back. begin: 0, or -1 when
+ * the process is ending on a signal already (nothing may be placed then). */
+int gw_temps_placing_begin(void);
+void gw_temps_placing_end(void);
+
 /* Keep f's fsynced temporary in the set open on this thread instead of
  * renaming it: 1 staged, 0 no set open, -1 out of memory. */
 int gw_outset_stage(gw_afile *f);

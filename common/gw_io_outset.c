@@ -30,6 +30,39 @@ _Static_assert(sizeof(sigset_t) <= sizeof(((gw_outset *)0)->oldmask), "sigset_t 
 /* The output set open on this thread (gw_outset_begin), or NULL. */
 static _Thread_local gw_outset *cur_set;
 
+/* The directory the open set was begun in, held open: its temporaries are
+ * made there by name (gw_afile_open), so when --out is moved, removed or
+ * replaced while the run goes on (mv D D.old; mkdir D, or a link), they are
+ * in a directory the set's path no longer names. Before, the commit said
+ * "its temporary ... is gone" and the abort, removing by name, left them in
+ * D.old. The commit now says what happened, and the temporaries are removed
+ * through this handle too. Kept per thread beside cur_set (the gw_outset
+ * struct is the caller's, its layout public). -1: none (no directory yet). */
+static _Thread_local int cur_dirfd = -1;
+
+/* What the set's --out path names now is the directory it was begun in:
+ * 1, or 0 (moved, removed or replaced meanwhile), or 1 when it cannot tell
+ * (no directory at the begin). */
+static int same_dir(const gw_outset *s)
+{
+    struct stat a, b;
+    if (cur_set != s || cur_dirfd < 0 || fstat(cur_dirfd, &a) != 0)
+        return 1;
+    return stat(s->dir, &b) == 0 && a.st_dev == b.st_dev && a.st_ino == b.st_ino;
+}
+
+/* A staged temporary removed: by name, and by its own name in the directory
+ * the set was begun in, wherever that went (a name of the temporaries' form,
+ * with this host, process and 6 random characters: no other file has it; a
+ * temporary made beside a link's target elsewhere is simply not there) */
+static void remove_temp(const gw_outset *s, const char *tmp)
+{
+    unlink(tmp);
+    const char *slash = strrchr(tmp, '/');
+    if (cur_set == s && cur_dirfd >= 0)
+        unlinkat(cur_dirfd, slash ? slash + 1 : tmp, 0);
+}
+
 /* Keep f's fsynced temporary in the open set instead of renaming it: 1 staged,
  * 0 no set open, -1 out of memory (the temporary is then removed). */
 int gw_outset_stage(gw_afile *f)
@@ -73,6 +106,7 @@ int gw_outset_begin(gw_outset *s, const char *dir, const char *const *names, gw_
     s->names = names;
     s->active = 1;
     cur_set = s;
+    cur_dirfd = open(dir, O_RDONLY | O_DIRECTORY | O_CLOEXEC); /* -1 when it is still to be made */
     return GW_OK;
 }
 
@@ -126,13 +160,19 @@ static void outset_close(gw_outset *s)
     free(s->path);
     s->tmp = s->path = NULL;
     s->n = s->cap = 0;
-    if (cur_set == s)
+    if (cur_set == s) {
         cur_set = NULL;
+        if (cur_dirfd >= 0)
+            close(cur_dirfd);
+        cur_dirfd = -1;
+    }
     s->active = 0;
 }
 
-/* SIGINT, SIGTERM and SIGHUP held while the staged files are placed: an
- * interrupt then comes after the last rename, never between two */
+/* SIGINT, SIGTERM and SIGHUP held on this thread while the staged files are
+ * placed: an interrupt then comes after the last rename, never between two.
+ * Another thread may take them meanwhile: the placing is also a critical
+ * section for the handler (gw_temps_placing_begin) */
 static void outset_hold(gw_outset *s) { gw_io_sig_hold(s->oldmask, &s->masked); }
 static void outset_release(gw_outset *s) { gw_io_sig_release(s->oldmask, &s->masked); }
 
@@ -144,7 +184,7 @@ void gw_outset_abort(gw_outset *s)
         return;
     outset_hold(s);
     for (int i = 0; i < s->n; i++) {
-        unlink(s->tmp[i]);
+        remove_temp(s, s->tmp[i]);
         gw_temps_drop(s->tmp[i]);
     }
     outset_close(s);
@@ -252,7 +292,17 @@ int gw_outset_commit(gw_outset *s, gw_err *err)
     int dfd = open(s->dir, O_RDONLY | O_DIRECTORY | O_CLOEXEC);
     if (dfd >= 0)
         flock(dfd, LOCK_EX);
+    /* from here a signal another thread takes waits for the set
+     * (gw_io_temps.c); not while the lock is awaited: another run may hold it */
+    const int placing = gw_temps_placing_begin() == 0;
+    if (!placing)
+        rc = gw_err_set(err, GW_EIO, "%s: the output files were not placed: the program is ending on a signal",
+                        s->dir);
     /* what would stop a rename is found before any: nothing placed then */
+    if (rc == GW_OK && s->n > 0 && !same_dir(s))
+        rc = gw_err_set(err, GW_EIO, "%s: the output directory was moved, removed or replaced while the run went "
+                        "on: nothing placed (its files were made in the directory it named when the run began)",
+                        s->dir);
     for (int i = 0; rc == GW_OK && i < s->n; i++) {
         struct stat st;
         if (access(s->tmp[i], F_OK) != 0) /* removed meanwhile */
@@ -329,12 +379,14 @@ int gw_outset_commit(gw_outset *s, gw_err *err)
     free(rmpath);
     if (rc != GW_OK) /* what is not in place is removed (a placed file's temporary name is gone) */
         for (int i = 0; i < s->n; i++)
-            unlink(s->tmp[i]);
+            remove_temp(s, s->tmp[i]);
     for (int i = 0; i < s->n; i++) /* placed or removed: nothing for a signal to remove */
         gw_temps_drop(s->tmp[i]);
     if (dfd >= 0)
         close(dfd); /* and its lock */
     outset_close(s);
     outset_release(s);
+    if (placing) /* the signal that came meanwhile, if any, ends the program now */
+        gw_temps_placing_end();
     return rc;
 }

@@ -32,11 +32,13 @@
  */
 #define _POSIX_C_SOURCE 200809L
 #include <errno.h>
+#include <pthread.h>
 #include <signal.h>
 #include <stdatomic.h>
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 #include <unistd.h>
 
 #include "gw_common.h"
@@ -161,22 +163,105 @@ void gw_temps_remove(void)
         }
 }
 
+/* The placing of output sets as a critical section for the handler.
+ * gw_outset_commit holds SIGINT, SIGTERM and SIGHUP on its own thread, but a
+ * signal sent to the process is taken by any thread that does not hold it (an
+ * OpenMP or pool worker, a thread of the caller): the handler ran there,
+ * removed the temporaries not yet renamed and ended the process between two
+ * renames, or during the rollback, and --out held some new files, some old,
+ * and the earlier files kept aside under their side names. Now one lock-free
+ * word holds the number of sets being placed, the signal that came meanwhile
+ * (the first; the others end the process as well) and whether the process is
+ * ending: a handler that finds a set being placed only records its signal and
+ * returns, and the last placer to finish (the set wholly placed or wholly put
+ * back) sends it again to the process, whose handler then ends it as before. */
+#define PLACING_COUNT 0xffffu      /* sets being placed */
+#define PLACING_SIG_SHIFT 16       /* the signal deferred meanwhile (0: none) */
+#define PLACING_SIG (0xffu << PLACING_SIG_SHIFT)
+#define PLACING_ENDING (1u << 30)  /* a handler is ending the process: place nothing more */
+static atomic_uint placing;
+static struct sigaction default_action; /* SIG_DFL, filled in before the handler is installed */
+
 /* The temporaries removed, then the signal's own default action: the process
  * ends killed by the signal (a shell sees 128 + its number), as it did before
- * the handler, only without the temporaries. SA_RESETHAND has put the default
- * back on entry and SA_NODEFER leaves the signal unblocked, so raise() ends
+ * the handler, only without the temporaries. The default is put back here
+ * (not by SA_RESETHAND: a signal deferred while a set is placed must find the
+ * handler again) and SA_NODEFER leaves the signal unblocked, so raise() ends
  * the process here. */
 static void on_signal(int sig)
 {
     const int e = errno;
+    unsigned s = atomic_load(&placing);
+    for (;;) {
+        if (!(s & PLACING_ENDING) && (s & PLACING_COUNT)) {
+            const unsigned want = (s & PLACING_SIG) ? s : s | (unsigned)sig << PLACING_SIG_SHIFT;
+            if (atomic_compare_exchange_weak(&placing, &s, want)) {
+                errno = e; /* the placer sends it again when the set is placed or put back */
+                return;
+            }
+        } else if (atomic_compare_exchange_weak(&placing, &s, s | PLACING_ENDING))
+            break;
+    }
     gw_temps_remove();
+    sigaction(sig, &default_action, NULL);
     raise(sig);
     errno = e; /* not reached unless the signal is blocked elsewhere */
+}
+
+int gw_temps_placing_begin(void)
+{
+    unsigned s = atomic_load(&placing);
+    for (int waited = 0;;) {
+        if (s & PLACING_ENDING) {
+            /* a handler on another thread is removing the temporaries and
+             * ends the process within microseconds: wait for it rather than
+             * exit with another status (bounded: a handler of the program's
+             * own that chose not to end it) */
+            if (waited++ >= 500)
+                return -1;
+            struct timespec ts = {0, 10 * 1000 * 1000};
+            nanosleep(&ts, NULL);
+            s = atomic_load(&placing);
+        } else if ((s & PLACING_COUNT) == PLACING_COUNT)
+            return -1; /* 65535 sets placed at once: never in practice */
+        else if (atomic_compare_exchange_weak(&placing, &s, s + 1))
+            return 0;
+    }
+}
+
+void gw_temps_placing_end(void)
+{
+    unsigned s = atomic_load(&placing), want;
+    int sig;
+    do {
+        want = s - 1;
+        sig = 0;
+        if (!(want & PLACING_COUNT)) { /* the last one: the deferred signal is this placer's to send */
+            sig = (int)((want & PLACING_SIG) >> PLACING_SIG_SHIFT);
+            want &= ~PLACING_SIG;
+        }
+    } while (!atomic_compare_exchange_weak(&placing, &s, want));
+    if (sig) /* to the process: taken by a thread that does not hold it, as the first was */
+        kill(getpid(), sig);
+}
+
+/* A child forked while a set was placed on another thread has no placer:
+ * its signals are not deferred */
+static void placing_fork_child(void) { atomic_store(&placing, 0u); }
+
+static void temps_once(void)
+{
+    memset(&default_action, 0, sizeof default_action);
+    default_action.sa_handler = SIG_DFL;
+    sigemptyset(&default_action.sa_mask);
+    pthread_atfork(NULL, NULL, placing_fork_child);
 }
 
 int gw_temps_on_signals(void)
 {
     static const int sigs[] = {SIGINT, SIGTERM, SIGHUP};
+    static pthread_once_t once = PTHREAD_ONCE_INIT;
+    pthread_once(&once, temps_once);
     int rc = GW_OK;
     for (size_t k = 0; k < sizeof sigs / sizeof sigs[0]; k++) {
         struct sigaction old;
@@ -195,7 +280,9 @@ int gw_temps_on_signals(void)
         for (size_t j = 0; j < sizeof sigs / sizeof sigs[0]; j++) /* one removal at a time */
             if (j != k)
                 sigaddset(&sa.sa_mask, sigs[j]);
-        sa.sa_flags = SA_RESETHAND | SA_NODEFER;
+        /* SA_RESTART: a deferred signal returns to the thread it came to,
+         * whose read or write goes on */
+        sa.sa_flags = SA_NODEFER | SA_RESTART;
         if (sigaction(sigs[k], &sa, NULL) != 0)
             rc = GW_EIO;
     }

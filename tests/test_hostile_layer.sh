@@ -824,14 +824,14 @@ if runs "a layer sweep of 4 cases" sweep "$tmp/w30.ini" --out "$tmp/w30" --quiet
     }
     awk -F, -v OFS=, 'n == 1 && !/^#/ { $3 = "1" $3; n = 2 } !/^#/ && !n { n = 1 } { print }' "$tmp/j30.orig" >"$j30"
     resume30 "a value edited in the second row (that row and the two after it were dropped and rerun)" \
-        "^granwave sweep: .*w30/journal.csv:7: its checksum does not match its values: the journal was edited by hand"
+        "^granwave sweep: .*w30/journal.csv:8: its checksum does not match its values: the journal was edited by hand"
     awk '!/^#/ && !d { d = 1; next } { print }' "$tmp/j30.orig" >"$j30"
     grep -v '^#' "$tmp/w30b/journal.csv" | head -1 >>"$j30"
     resume30 "case 0's row replaced by case 0 of a sweep over another grid (taken for case 0)" \
-        "journal.csv:9: its grid values are not its case's \(a row of another sweep\)"
+        "journal.csv:10: its grid values are not its case's \(a row of another sweep\)"
     grep -v '^#' "$tmp/w30d/journal.csv" | head -1 >>"$j30"
     resume30 "case 0's row of the sweep at t-max 2e-4 pasted (the table took the first; now told by its config hash)" \
-        "journal.csv:10: case 0 ran under config hash [0-9a-f]{16}, not this sweep's [0-9a-f]{16} for it"
+        "journal.csv:11: case 0 ran under config hash [0-9a-f]{16}, not this sweep's [0-9a-f]{16} for it"
     # case 0 again with its steps edited and the checksum recomputed (FNV-1a 32
     # of the row up to its last comma): the same config, other results
     grep -v '^#' "$tmp/j30.orig" | head -1 | /usr/bin/python3 -c "
@@ -845,7 +845,7 @@ for b in body.encode():
     h = ((h ^ b) * 16777619) % 2**32
 print('%s%08x' % (body, h))" >>"$j30"
     resume30 "case 0 journaled twice with different results (the table took the first)" \
-        "journal.csv:10: case 0 is journaled twice with different results \(lines 6 and 10\)"
+        "journal.csv:11: case 0 is journaled twice with different results \(lines 7 and 11\)"
     cp "$tmp/j30.orig" "$j30"; grep -v '^#' "$tmp/j30.orig" | head -1 >>"$j30"
     rm -f "$tmp/w30/results.csv"
     runs "  a journal with one row copied resumes" sweep "$tmp/w30.ini" --out "$tmp/w30" --quiet
@@ -941,7 +941,7 @@ if runs "a layer sweep of 3 cases" sweep "$tmp/w34.ini" --out "$tmp/w34" --quiet
                 sweep "$tmp/w34.ini" --out "$tmp/w34" --quiet
         fi
         cp "$S300" "$tmp/s34.txt"
-        sed '1s/, format 2$//' "$tmp/j34.orig" >"$j34"
+        sed '1s/, format 3$//' "$tmp/j34.orig" >"$j34"
         rm -f "$tmp/w34/results.csv"
         refused "a journal in the format before rows carried their hashes" \
             "w34/journal.csv: a journal of an earlier granwave, whose rows do not record the config they ran under" \
@@ -1021,10 +1021,10 @@ if runs "a layer sweep of 2 cases" sweep "$tmp/w37.ini" --out "$tmp/w37" --quiet
     for bad in " 0x12" "-1" "000000000000012" " 0x0000000000012" "-000000000000001"; do
         for changed in 0 1; do
             cp "$S300" "$tmp/s37.txt"; [ $changed -eq 1 ] && echo "# changed" >>"$tmp/s37.txt"
-            sed "2s/ fnv1a64 .*/ fnv1a64 $bad/" "$tmp/j37.orig" >"$tmp/w37/journal.csv"; rm -f "$tmp/w37/results.csv"
+            sed "3s/ fnv1a64 .*/ fnv1a64 $bad/" "$tmp/j37.orig" >"$tmp/w37/journal.csv"; rm -f "$tmp/w37/results.csv"
             cp "$tmp/w37/journal.csv" "$tmp/j37.edited"
             refused "a journal whose '# input' hash is '$bad'$([ $changed -eq 1 ] && echo ", the sample changed")" \
-                "^granwave sweep: .*w37/journal.csv:2: '# input sample = .*s37.txt fnv1a64 $bad' does not end with ' fnv1a64 ' and the file's content hash in 16 hex digits" \
+                "^granwave sweep: .*w37/journal.csv:3: '# input sample = .*s37.txt fnv1a64 $bad' does not end with ' fnv1a64 ' and the file's content hash in 16 hex digits" \
                 sweep "$tmp/w37.ini" --out "$tmp/w37" --quiet --jobs 1
             cmp -s "$tmp/w37/journal.csv" "$tmp/j37.edited" && [ ! -e "$tmp/w37/results.csv" ] ||
                 ko "  the journal changed or a table was written"

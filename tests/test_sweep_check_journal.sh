@@ -81,7 +81,7 @@ cp out/journal.csv full.csv
 check "a finished sweep" "^sweep: $tmp/out/journal.csv: 4 of 4 cases done: a rerun writes the table only$"
 
 # 3 an interrupted sweep: two rows gone, then a torn last row as kill -9 leaves it
-head -n 5 full.csv >out/journal.csv   # the head (3 lines) and 2 rows
+head -n 6 full.csv >out/journal.csv   # the head (4 lines) and 2 rows
 check "an interrupted sweep, 2 rows" "^sweep: $tmp/out/journal.csv: 2 of 4 cases done, 2 to run on a resume$"
 "$GW" sweep s.ini >/dev/null 2>r.txt </dev/null
 grep -q "^sweep: 4 cases, 2 already done, 2 to run" r.txt && ok "  the resume ran what --check said (2 done, 2 to run)" ||
@@ -95,12 +95,12 @@ grep -q "^sweep: 4 cases, 3 already done, 1 to run" r.txt && ok "  the resume ra
 cmp -s out/journal.csv full.csv || [ "$(sort out/journal.csv | md5sum)" = "$(sort full.csv | md5sum)" ] &&
     ok "  the resumed journal holds the sweep's rows" || ko "  the resumed journal differs from the finished sweep's"
 # the count said in the singular for one byte ("(1 bytes)" before)
-head -n 4 full.csv >out/journal.csv   # the head and 1 row
+head -n 5 full.csv >out/journal.csv   # the head and 1 row
 tail -n 1 full.csv | head -c 1 >>out/journal.csv
 check "a torn last row of one byte" "^sweep: $tmp/out/journal.csv: 1 of 4 cases done, 3 to run on a resume; its torn last row \(1 byte\) is cut then and its case run again$"
 # a torn line of the journal's head (its # param line cut short): no row, so
 # no case to run again for it (before: "its torn last row ... and its case run again")
-head -n 2 full.csv >out/journal.csv
+head -n 3 full.csv >out/journal.csv
 printf '# param vi' >>out/journal.csv
 check "a torn line of the journal's head" "^sweep: $tmp/out/journal.csv: 0 of 4 cases done, 4 to run on a resume; the torn last line of its head \(10 bytes\) is cut then, no case to run again for it$"
 "$GW" sweep s.ini >/dev/null 2>r.txt </dev/null
@@ -113,8 +113,8 @@ cp full.csv out/journal.csv
 sed -i 's/vimp = 0.3/vimp = 0.4/' s.ini
 refused "the journal of another config" "^granwave sweep: $tmp/out: this directory holds another sweep: \[params\] vimp = 0.4 here, 0.3 in its journal"
 sed -i 's/vimp = 0.4/vimp = 0.3/' s.ini
-awk 'NR == 5 { sub(/,67\./, ",68.") } { print }' full.csv >out/journal.csv
-refused "a row edited by hand" "^granwave sweep: $tmp/out/journal.csv:5: .*the journal was edited by hand"
+awk 'NR == 6 { sub(/,67\./, ",68.") } { print }' full.csv >out/journal.csv
+refused "a row edited by hand" "^granwave sweep: $tmp/out/journal.csv:6: .*the journal was edited by hand"
 printf 'case,n,f_max\n0,2,1\n' >out/journal.csv
 refused "a file that is no journal" "^granwave sweep: $tmp/out/journal.csv: not a granwave sweep journal"
 rm out/journal.csv; mkdir out/journal.csv

@@ -30,13 +30,14 @@ GW_BEGIN_DECLS /* the exported interface, C linkage (gw_api.h) */
 #define GW_SWEEP_CONFIG_MAX (1L << 20) /* bytes: a config is read whole, bounded */
 #define GW_SWEEP_JOURNAL_MAX ((size_t)1 << 34) /* bytes of a journal read back (resume, table) */
 #define GW_SWEEP_JOBS_MAX 4096          /* threads of one sweep (--jobs, gw_sweep_run) */
-/* A journal's first line (the config's hash): "format 2", rows that end with
- * their case config hash and read hash; the format before them said
- * "# granwave sweep journal HASH" alone and is refused (docs/formats.md). */
-#define GW_SWEEP_JOURNAL_HEAD "# granwave sweep journal %016lx, format 2"
+/* A journal's first line (the config's hash): "format 3", a second line
+ * "# build ..." naming the build that computes its rows, rows that end with
+ * their case config hash and read hash. Format 2 had no build line, format 1
+ * no hashes in its rows: both are refused (docs/formats.md). */
+#define GW_SWEEP_JOURNAL_HEAD "# granwave sweep journal %016lx, format 3"
 /* The number in GW_SWEEP_JOURNAL_HEAD: a journal of another format (an
  * earlier one, a later granwave's) is refused naming both formats. */
-#define GW_SWEEP_JOURNAL_FORMAT 2
+#define GW_SWEEP_JOURNAL_FORMAT 3
 
 typedef struct gw_sweep_key {
     char *name;

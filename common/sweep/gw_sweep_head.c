@@ -1,7 +1,7 @@
 /*
  * gw_sweep_head.c: a sweep journal's head, which says what made it: the line
  * "# granwave sweep journal HASH, format N" (the config's hash, the journal
- * format), the "# input" lines (the files' content hashes), the "# grid" and
+ * format), the "# build" line (gw_sweep_build.c), the "# input" lines (the files' content hashes), the "# grid" and
  * "# param" lines (the config's keys as spelt). A journal found in an output
  * directory is of another format, or another config, and then the key, the
  * file or the format that differs is named. No units.
@@ -217,6 +217,10 @@ int gw_sweep_head_changed_input(const gw_sweep_config *cfg, const char *buf, siz
 {
     const char *p = memchr(buf, '\n', len);
     long lineno = 1;
+    if (p && (size_t)(p + 1 - buf) < len && strncmp(p + 1, "# build ", 8) == 0) { /* format 3's second line */
+        p = memchr(p + 1, '\n', len - (size_t)(p + 1 - buf));
+        lineno++;
+    }
     while (p && (size_t)(p + 1 - buf) < len && strncmp(p + 1, "# input ", 8) == 0) {
         const char *line = p + 9, *end = memchr(line, '\n', len - (size_t)(line - buf)), *at = NULL;
         if (!end)

@@ -47,6 +47,12 @@ int gw_sweep_head_changed_input(const gw_sweep_config *cfg, const char *buf, siz
 int gw_sweep_head_format(const char *buf, size_t len, long *fmt, unsigned long *hash);
 void gw_sweep_head_first_line(const char *buf, size_t len, char *out, size_t n);
 
+/* gw_sweep_build.c: the build this process is, as a journal's "# build"
+ * line records it (one printable line, at most GW_SWEEP_BUILD_MAX - 1 bytes;
+ * the same for every call). */
+#define GW_SWEEP_BUILD_MAX 384
+const char *gw_sweep_build(void);
+
 /* gw_sweep_journal.c: the journal or table read whole (a regular file only),
  * NULL with errno set (ENOENT absent, ENOMEM) and err filled. */
 char *gw_sweep_slurp(const char *path, size_t *len, gw_err *err);

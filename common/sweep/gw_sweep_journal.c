@@ -157,15 +157,20 @@ static int journal_access(const char *dir, const gw_sweep_config *cfg, char *don
         return GW_OK;
     }
     if (stat(path, &st) != 0 && errno == ENOENT) {
-        char *in = gw_sweep_head_lines(cfg); /* a new journal: the config, and what its files held */
-        size_t hl = strlen(head), il = in ? strlen(in) : 0;
-        char *text = in ? malloc(hl + il + 1) : NULL;
+        /* a new journal: the config, the build that computes its rows, and
+         * what its files held */
+        char *in = gw_sweep_head_lines(cfg);
+        char bline[GW_SWEEP_BUILD_MAX + 16];
+        gw_snprintf(bline, sizeof bline, "# build %s\n", gw_sweep_build());
+        size_t hl = strlen(head), bl = strlen(bline), il = in ? strlen(in) : 0;
+        char *text = in ? malloc(hl + bl + il + 1) : NULL;
         if (!text) {
             free(in);
             return gw_err_set(err, GW_ENOMEM, "%s: out of memory", path);
         }
         memcpy(text, head, hl);
-        memcpy(text + hl, in, il + 1);
+        memcpy(text + hl, bline, bl);
+        memcpy(text + hl + bl, in, il + 1);
         int rc = journal_create(path, text, &fd, err);
         free(text);
         free(in);
@@ -224,6 +229,59 @@ int gw_sweep_journal_resume_check(const char *dir, const gw_sweep_config *cfg, c
     return rc;
 }
 
+/* The fields of build line a (al bytes) that differ from b's (bl bytes; fields: the
+ * text between ", "), the version and the commit always, into out: the part
+ * of two builds' names a message needs. */
+static void build_diff(const char *a, size_t al, const char *b, size_t bl, char *out, size_t n)
+{
+    size_t w = 0;
+    out[0] = '\0';
+    const char *pa = a, *ea = a + al, *pb = b, *eb = b + bl;
+    for (int i = 0; pa < ea || pb < eb; i++) {
+        const char *na = pa, *nb = pb;
+        while (na < ea && !(na + 1 < ea && na[0] == ',' && na[1] == ' '))
+            na++;
+        while (nb < eb && !(nb + 1 < eb && nb[0] == ',' && nb[1] == ' '))
+            nb++;
+        const int same = na - pa == nb - pb && memcmp(pa, pb, (size_t)(na - pa)) == 0;
+        if ((i < 2 || !same) && pa < ea && w + 2 < n)
+            w += (size_t)gw_snprintf(out + w, n - w, "%s%.*s", w ? ", " : "", (int)(na - pa), pa);
+        if (w >= n)
+            w = n - 1;
+        pa = na < ea ? na + 2 : ea;
+        pb = nb < eb ? nb + 2 : eb;
+    }
+}
+
+/* The journal's second line, "# build ..." (from *pos, after its first):
+ * this build's, *pos then past it; else GW_EINVAL naming the journal and
+ * both builds (what differs between them). A journal resumes under the
+ * build that started it only: its rows are checked for their form, byte for
+ * byte, but another build may hold other numbers in that form, and the table
+ * would mix the two. */
+static int build_check(const char *path, const char *buf, size_t len, size_t *pos, gw_err *err)
+{
+    static const char pre[] = "# build ";
+    const size_t pl = sizeof pre - 1;
+    const char *line = buf + *pos, *nl = memchr(line, '\n', len - *pos);
+    if (!nl || (size_t)(nl - line) < pl || memcmp(line, pre, pl) != 0)
+        return gw_err_set(err, GW_EINVAL, "%s:2: not the '# build' line a journal of format %d has there (the build "
+                          "that computed its rows): the journal was edited or cut; remove it to rerun its cases, "
+                          "or choose another output", path, GW_SWEEP_JOURNAL_FORMAT);
+    const char *mine = gw_sweep_build(), *theirs = line + pl;
+    const size_t tl = (size_t)(nl - theirs);
+    if (tl == strlen(mine) && memcmp(theirs, mine, tl) == 0) {
+        *pos = (size_t)(nl - buf) + 1;
+        return GW_OK;
+    }
+    char was[200], now[200];
+    build_diff(theirs, tl, mine, strlen(mine), was, sizeof was);
+    build_diff(mine, strlen(mine), theirs, tl, now, sizeof now);
+    return gw_err_set(err, GW_EINVAL, "%s: a journal of another granwave build (its rows: %s; this one: %s): finish "
+                      "the sweep with the build that started it, or remove the journal to rerun its cases (rows of "
+                      "two builds are not mixed: the same form may hold other numbers)", path, was, now);
+}
+
 /* The journal at path, read (under the caller's lock on fd) and checked;
  * a torn last line cut (torn NULL) or its bytes counted in *torn, *torn_head
  * 1 when it is a line of the head (# input, # grid, # param), not a row. */
@@ -249,16 +307,20 @@ static int journal_check(const char *path, const char *dir, const char *head, co
     long fmt = 0;
     unsigned long jhash = 0;
     const int head_kind = gw_sweep_head_format(buf, len, &fmt, &jhash);
-    if (head_kind == 1 && fmt == 1) {
+    if (head_kind == 1 && fmt < GW_SWEEP_JOURNAL_FORMAT) {
+        /* format 2 rows record their config, not the build that computed
+         * them: every build that wrote one is an earlier granwave's */
         char other[96] = "";
         if (jhash != cfg->hash)
             gw_snprintf(other, sizeof other, ", of another config (%016lx; this one is %016lx)", jhash, cfg->hash);
         free(buf);
-        return gw_err_set(err, GW_EINVAL, "%s: a journal of an earlier granwave, whose rows do not record the "
-                          "config they ran under (format 1%s; granwave %s reads format %d only, as a row pasted from "
-                          "another sweep could not be told in format 1): finish the sweep with the granwave that "
-                          "started it, or remove the journal to rerun its cases", path, other, gw_version(),
-                          GW_SWEEP_JOURNAL_FORMAT);
+        return gw_err_set(err, GW_EINVAL, "%s: a journal of an earlier granwave, whose rows do not record %s "
+                          "(format %ld%s; granwave %s reads format %d only, as %s): finish the sweep with the "
+                          "granwave that started it, or remove the journal to rerun its cases", path,
+                          fmt == 1 ? "the config they ran under" : "the build that computed them", fmt, other,
+                          gw_version(), GW_SWEEP_JOURNAL_FORMAT,
+                          fmt == 1 ? "a row pasted from another sweep could not be told in format 1"
+                                   : "rows of another build may hold other numbers in the same form");
     }
     if (head_kind == 1 && fmt > GW_SWEEP_JOURNAL_FORMAT) {
         free(buf);
@@ -296,7 +358,13 @@ static int journal_check(const char *path, const char *dir, const char *head, co
                           dir);
     }
     size_t good = strlen(head), pos = good;
-    long inl = 1;
+    int rc = build_check(path, buf, len, &pos, err);
+    if (rc != GW_OK) {
+        free(buf);
+        return rc;
+    }
+    good = pos;
+    long inl = 2;
     while (pos < len && strncmp(buf + pos, "# input ", 8) == 0) { /* the journal's input lines */
         const char *nl = memchr(buf + pos, '\n', len - pos), *at = NULL;
         if (!nl)
@@ -325,7 +393,6 @@ static int journal_check(const char *path, const char *dir, const char *head, co
      * It is refused now, naming the line, and the journal is left as it is. */
     jrow *rows = NULL;
     long nrows = 0, caprows = 0;
-    int rc = GW_OK;
     while (pos < len && rc == GW_OK) {
         const char *nl = memchr(buf + pos, '\n', len - pos);
         size_t l = nl ? (size_t)(nl - (buf + pos)) + 1 : len - pos;

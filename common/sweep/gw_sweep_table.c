@@ -75,6 +75,7 @@ int gw_sweep_write_table(const char *dir, const gw_sweep_config *cfg, const gw_s
         else if ((rc = gw_afile_open(&f, path, err)) == GW_OK) {
             gw_fprintf(f.fp, "# granwave %s sweep, model %s, config %016lx, %ld of %ld cases\n", gw_version(),
                     cfg->model, cfg->hash, nr, cfg->ncases);
+            gw_fprintf(f.fp, "# build %s\n", gw_sweep_build()); /* the journal's: it computed every row */
             for (int i = 0; i < cfg->nparams; i++)
                 gw_fprintf(f.fp, "# param %s = %s\n", cfg->params[i].name, cfg->params[i].values[0]);
             for (int i = 0; i < cfg->ninputs; i++) /* what the cases' files held */

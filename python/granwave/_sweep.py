@@ -188,7 +188,8 @@ def run_sweep(model, grid, params, jobs, progress):
     if not isinstance(model, str):  # a list raised "unhashable type: 'list'"
         raise TypeError(f"sweep(): model must be a str ({', '.join(map(repr, models))}), not {_kind(model)}")
     if model not in models:
-        raise ValueError(f"sweep: unknown model '{model}' ({', '.join(models)})")
+        # quoted as repr: a newline or a control character in the name broke the message's line
+        raise ValueError(f"sweep: unknown model {_show(model)} ({', '.join(models)})")
     m = models[model]
     if not grid:
         raise ValueError("sweep: grid needs at least one key with its values")

@@ -3,7 +3,8 @@
  * resume of `granwave sweep`: gw_sweep_journal_scan) and the table written
  * from it (gw_sweep_write_table). The input is the journal's text after its
  * head: the first byte chooses whether the head of the target's config
- * ("# granwave sweep journal HASH, format 2") is put before the rest (odd)
+ * ("# granwave sweep journal HASH, format 3" and the "# build" line of this
+ * build) is put before the rest (odd)
  * or not (even: the rest is the whole file). Rows carry a checksum, so the
  * seed corpus holds journals with valid rows (written by this target when
  * GW_FUZZ_SEEDS names a directory). Any input must give a scan or an error
@@ -18,6 +19,7 @@
 #include <unistd.h>
 
 #include "gw_sweep.h"
+#include "gw_sweep_impl.h"
 
 static int has_key(const char *name)
 {
@@ -82,8 +84,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
     if (size == 0)
         return 0;
-    char head[96];
-    snprintf(head, sizeof head, GW_SWEEP_JOURNAL_HEAD "\n", cfg.hash);
+    char head[96 + GW_SWEEP_BUILD_MAX];
+    snprintf(head, sizeof head, GW_SWEEP_JOURNAL_HEAD "\n# build %s\n", cfg.hash, gw_sweep_build());
     put(data[0] & 1 ? head : NULL, data + 1, size - 1);
     char done[64] = {0};
     long ndone = 0;

@@ -16,13 +16,16 @@ out="$B/fuzz"; mkdir -p "$out"
 CF="-g -O1 -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=undefined -I$SRC/common -I$SRC/app -I$SRC/common/solver -I$SRC/common/sweep -I$SRC/common/stats -I$B/generated -D_DEFAULT_SOURCE"
 # the sweep module's files (common/CMakeLists.txt lists the same)
 sweep="$SRC/common/sweep/gw_sweep_config.c $SRC/common/sweep/gw_sweep_inputs.c $SRC/common/sweep/gw_sweep_rows.c
- $SRC/common/sweep/gw_sweep_head.c $SRC/common/sweep/gw_sweep_journal.c $SRC/common/sweep/gw_sweep_table.c"
+ $SRC/common/sweep/gw_sweep_head.c $SRC/common/sweep/gw_sweep_journal.c $SRC/common/sweep/gw_sweep_build.c
+ $SRC/common/sweep/gw_sweep_table.c"
+# the build a journal records names the numerical libraries' versions
+sweeplibs="-lsundials_cvode -lgsl -lgslcblas -lfftw3"
 common="$SRC/common/gw_common.c $SRC/common/gw_io_afile.c $SRC/common/gw_io_outset.c $SRC/common/gw_io_temps.c $SRC/common/gw_io_paths.c $SRC/common/gw_io_input.c $SRC/common/gw_io_hash.c $SRC/app/gw_cli.c $SRC/common/gw_json.c $SRC/common/gw_param.c $SRC/common/gw_locale.c"
-clang $CF -o "$out/fuzz_sweep_config" "$SRC/tests/fuzz/fuzz_sweep_config.c" $sweep $common -linih -lcjson -lm
+clang $CF -o "$out/fuzz_sweep_config" "$SRC/tests/fuzz/fuzz_sweep_config.c" $sweep $common $sweeplibs -linih -lcjson -lm
 clang $CF -o "$out/fuzz_cli" "$SRC/tests/fuzz/fuzz_cli.c" $common -lcjson -lm
 # the sweep journal a resumed sweep reads back, and the table written from it
 clang $CF -o "$out/fuzz_sweep_journal" "$SRC/tests/fuzz/fuzz_sweep_journal.c" $sweep $common \
-    -linih -lcjson -lm
+    $sweeplibs -linih -lcjson -lm
 # the sweep table layer-stats reads, and the whole analysis after it (B.31 fit: GSL)
 clang $CF -o "$out/fuzz_stats_table" "$SRC/tests/fuzz/fuzz_stats_table.c" "$SRC"/common/stats/*.c "$SRC/common/gw_fit.c" "$SRC/common/gw_forklock.c" \
     $common -lcjson -lgsl -lgslcblas -lm

@@ -1,0 +1,68 @@
+/*
+ * signal_shim.c: an LD_PRELOAD library that delivers a signal on a thread of
+ * its own in the middle of a chosen rename, to test that an output set is
+ * placed all or nothing when a signal is handled on a thread other than the
+ * one placing it (tests/test_outset_signal.sh, issue 18). Not linked into
+ * anything; glibc only.
+ *
+ * Environment:
+ *   GW_SIGNAL_AT=K:SIG  before the K-th call to rename (from 1, every thread),
+ *                       a new thread with SIGINT, SIGTERM and SIGHUP unblocked
+ *                       raises signal SIG on itself, so that the process's
+ *                       handler runs there while the caller (which holds
+ *                       them) waits in rename; the caller joins it, then
+ *                       renames. A handler that ends the process ends it
+ *                       there, between two renames.
+ *   GW_SIGNAL_COUNT=FILE at exit, write "rename N" (the calls made) to FILE.
+ */
+#define _GNU_SOURCE
+#include <dlfcn.h>
+#include <pthread.h>
+#include <signal.h>
+#include <stdatomic.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+static atomic_long renames;
+
+static void *raiser(void *arg)
+{
+    sigset_t s;
+    sigemptyset(&s);
+    sigaddset(&s, SIGINT);
+    sigaddset(&s, SIGTERM);
+    sigaddset(&s, SIGHUP);
+    pthread_sigmask(SIG_UNBLOCK, &s, NULL); /* the new thread has the caller's mask */
+    raise(*(int *)arg);
+    return NULL;
+}
+
+typedef int rename_fn(const char *, const char *);
+
+int rename(const char *from, const char *to)
+{
+    const long n = atomic_fetch_add(&renames, 1) + 1;
+    const char *at = getenv("GW_SIGNAL_AT");
+    long k = 0;
+    int sig = 0;
+    if (at && sscanf(at, "%ld:%d", &k, &sig) == 2 && k == n && sig > 0) {
+        pthread_t t;
+        if (pthread_create(&t, NULL, raiser, &sig) == 0)
+            pthread_join(t, NULL);
+    }
+    rename_fn *real;
+    void *sym = dlsym(RTLD_NEXT, "rename");
+    memcpy(&real, &sym, sizeof real);
+    return real(from, to);
+}
+
+__attribute__((destructor)) static void report(void)
+{
+    const char *path = getenv("GW_SIGNAL_COUNT");
+    FILE *f = path ? fopen(path, "w") : NULL;
+    if (f) {
+        fprintf(f, "rename %ld\n", atomic_load(&renames));
+        fclose(f);
+    }
+}

@@ -430,8 +430,15 @@ int layer_sample_h5_read(const char *path, int sb, gw_layer_sample *s, gw_err *e
     if (sb < 0)
         return gw_err_set(err, GW_EFORMAT, "sample '%s': truncated HDF5 file (signature only)", path);
     if (sb < 2)
+        /* granwave writes its samples in the 1.8 format (layer-make, gw_h5_mem_create
+         * with v18) and its other HDF5 outputs in the default one: a superblock
+         * below 2 is another program's sample or an output that is no sample
+         * (layer-impact's impact.h5 given as --sample said only "write it with
+         * the 1.8 format") */
         return gw_err_set(err, GW_EFORMAT, "sample '%s': HDF5 file without metadata checksums (superblock "
-                          "version %d; write it with the 1.8 format or later, e.g. h5py libver='v108')", path, sb);
+                          "version %d): not a sample granwave wrote (layer-make writes the 1.8 format; "
+                          "impact.h5 and granwave's other HDF5 outputs are not samples); a sample written "
+                          "elsewhere needs the 1.8 format or later, e.g. h5py libver='v108'", path, sb);
     gw_h5_section sec;
     h5_quiet q;
     h5_enter(&sec, &q);

@@ -273,6 +273,9 @@ static void hdf5_samples(const gw_layer_sample *a)
     hid_t f = H5Fcreate(bad, H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT); /* superblock 0 */
     H5Fclose(f);
     refused(bad, "checksums", "HDF5 file in the 1.6 format (no metadata checksums)");
+    /* the format of granwave's own outputs other than samples (impact.h5): the
+     * refusal says it is no sample granwave wrote, not only how to rewrite it */
+    refused(bad, "not a sample granwave wrote", "HDF5 file in the 1.6 format: named as no granwave sample");
     hid_t fapl = H5Pcreate(H5P_FILE_ACCESS);
     H5Pset_libver_bounds(fapl, H5F_LIBVER_LATEST, H5F_LIBVER_LATEST);
     f = H5Fcreate(bad, H5F_ACC_TRUNC, H5P_DEFAULT, fapl);

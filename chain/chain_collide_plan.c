@@ -434,6 +434,17 @@ int gw_chain_run_check(const gw_chain_params *p, const gw_chain_run_opts *o, gw_
     return chain_collide_plan_make(p, o, &pl, err);
 }
 
+int chain_run_step(const gw_chain_params *p, const gw_chain_run_opts *o, double *dt, double *dt_max, gw_err *err)
+{
+    collide_plan pl;
+    int rc = chain_collide_plan_make(p, o, &pl, err);
+    if (rc != GW_OK)
+        return rc;
+    *dt = chain_plan_step(&pl);
+    *dt_max = pl.sp.dt_max;
+    return GW_OK;
+}
+
 int chain_run_steps(const gw_chain_params *p, const gw_chain_run_opts *o, double *steps, gw_err *err)
 {
     collide_plan pl;

@@ -197,7 +197,8 @@ static sw_result analyse(const gw_chain_result *r, int n_lo, int n_hi, double to
 
 /* Rigid-wall T_q of the beads at v: slope of tau_N over N = 1..20, over the
  * columns not held by gravity (*held of the 20; NaN with fewer than two). */
-static int measure_tq(const gw_chain_resolved *rs, double v, int jobs, double *t_q, int *held, gw_err *err)
+static int measure_tq(const gw_chain_resolved *rs, double v, int jobs, double *t_q, int *held,
+                      chain_dt_tally *dt_tally, gw_err *err)
 {
     gw_chain_params p = rs->params;
     const gw_material *steel = gw_material_find("steel");
@@ -205,6 +206,8 @@ static int measure_tq(const gw_chain_resolved *rs, double v, int jobs, double *t
     memset(&p.wall, 0, sizeof p.wall); /* the bare sensor */
     gw_chain_result r[20];
     int rc = gw_chain_sweep_n_progress(&p, &rs->run, &v, 1, 1, 20, jobs, NULL, NULL, r, err);
+    if (rc == GW_OK) /* the steel wall's contact is the stiffest: its dt-max the shortest */
+        chain_dt_tally_results(dt_tally, r, 20);
     double x[20], y[20];
     int m = 0;
     *held = 0;
@@ -461,7 +464,8 @@ int gw_chain_softwall_run(const gw_chain_softwall_setup *s, gw_progress_fn progr
     sw_result *sr = calloc((size_t)nw, sizeof *sr);
     gw_layer_law **lay = calloc((size_t)nw, sizeof *lay);
     double t0 = gw_clock_ms();
-    rc = res && sr && lay ? measure_tq(&rs, vimp, (int)s->jobs, &out->t_q_rigid, &out->n_held_rigid, err)
+    chain_dt_tally dt_tally = {0}; /* a --dt above the step taken: the rigid wall's 20 columns and the walls' */
+    rc = res && sr && lay ? measure_tq(&rs, vimp, (int)s->jobs, &out->t_q_rigid, &out->n_held_rigid, &dt_tally, err)
                           : gw_err_set(err, GW_ENOMEM, "softwall: out of memory");
     char name[32];
     const gw_material *bm = gw_material_find(
@@ -475,8 +479,10 @@ int gw_chain_softwall_run(const gw_chain_softwall_setup *s, gw_progress_fn progr
         out->kwall[w] = q.kwall;
         rc = gw_chain_sweep_n_progress(&q, &rs.run, &vimp, 1, (int)a, (int)b, (int)s->jobs, NULL, NULL,
                                        res + (size_t)w * per, err);
-        if (rc == GW_OK)
+        if (rc == GW_OK) {
             sr[w] = analyse(res + (size_t)w * per, (int)a, (int)b, s->tol, out->t_q_rigid);
+            chain_dt_tally_results(&dt_tally, res + (size_t)w * per, per);
+        }
         for (int i = 0; rc == GW_OK && i < per; i++) {
             out->unfinished += !res[(size_t)w * per + i].wall_done; /* F_max, tau_max: the wall's */
             held += chain_result_held(&res[(size_t)w * per + i]);
@@ -493,7 +499,8 @@ int gw_chain_softwall_run(const gw_chain_softwall_setup *s, gw_progress_fn progr
         rc = sw_held_where(out, s->sheets, where, sizeof where);
     if (rc == GW_OK &&
         ((rc = gw_chain_softwall_warnings(out->unfinished - held, out->ncase, &out->warnings)) != GW_OK ||
-         (rc = sw_held_warnings(out, held, where, &out->warnings)) != GW_OK))
+         (rc = sw_held_warnings(out, held, where, &out->warnings)) != GW_OK ||
+         (rc = chain_dt_tally_warnings(&dt_tally, "--dt", "collisions", &out->warnings)) != GW_OK))
         rc = gw_err_set(err, rc, "softwall: out of memory");
     for (int i = 0; res && i < nw * per; i++)
         gw_chain_result_free(&res[i]);

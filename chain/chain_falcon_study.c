@@ -25,6 +25,8 @@
 int gw_chain_falcon_analyse(const gw_chain_params *p, double v, const gw_chain_result *res, int n_lo,
                              int n_hi, gw_chain_falcon_fit *a)
 {
+    if (!p || !res || !a)
+        return GW_EINVAL;
     /* Only the decided columns: one held by gravity (chain_held_pending) was
      * stopped when it fell back onto the wall, its tau_N and F_max those of
      * that time, not its collision's (softwall --gravity 1e4 fitted them). The

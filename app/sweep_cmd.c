@@ -387,6 +387,13 @@ int gw_cmd_sweep(int argc, char **argv, const gw_sweep_model *const *models, int
                 code = exit_code(rc);
             }
         }
+        /* what the cases will run other than given (a chain case's dt above
+         * its step): one line over the pass, how many cases it concerns */
+        char *warn = NULL;
+        if (code == 0 && m->memo_warnings && memo && m->memo_warnings(memo, &warn) != GW_OK)
+            code = 1, gw_err_set(&err, GW_ENOMEM, "out of memory");
+        gw_cli_warnings("sweep", warn);
+        free(warn);
         gw_sweep_checks_end(m, memo);
         if (code)
             fprintf(stderr, "granwave sweep: %s: %s\n", pos[0], err.msg);

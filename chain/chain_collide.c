@@ -588,8 +588,7 @@ static int collide_run(const gw_chain *c, const gw_chain_run_opts *o, int drop, 
      * given (--dt 1e-3 ran as the automatic dt_max 6.6e-6 s, and rk4's --dt 1e-3
      * at --dt-out 1e-6 as --dt 1e-6, while the settings said 1e-3) */
     r->run_dt_given = o->sp.dt > 0 ? o->sp.dt : 0.0;
-    r->run_dt = type == gw_solver_rk4 ? fmin(fmin(sp.dt, sp.dt_max), dt_out > 0 ? dt_out : INFINITY)
-                                      : sp.dt > 0 ? fmin(sp.dt, sp.dt_max) : sp.dt;
+    r->run_dt = chain_plan_step(&pl);
     r->run_dt_max = sp.dt_max;
 
     gw_chain_energy e;

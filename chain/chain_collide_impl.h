@@ -6,6 +6,8 @@
 #ifndef GW_CHAIN_COLLIDE_IMPL_H
 #define GW_CHAIN_COLLIDE_IMPL_H
 
+#include <math.h>
+
 #include "gw_chain.h"
 
 /* What a collision of p with o will run with (t_max, dt_out, the steps), and the
@@ -18,6 +20,16 @@ typedef struct collide_plan {
     gw_solver_params sp;
     const gw_solver_type *type;
 } collide_plan;
+
+/* The step the run of plan pl takes (gw_chain_result's run_dt): every
+ * backend steps at most dt_max (gw_solver_create), rk4's steps end at the
+ * samples (gw_backend_rk4.c); cvode's and arkode's first step (0: their own). */
+static inline double chain_plan_step(const collide_plan *pl)
+{
+    const gw_solver_params *sp = &pl->sp;
+    return pl->type == gw_solver_rk4 ? fmin(fmin(sp->dt, sp->dt_max), pl->dt_out > 0 ? pl->dt_out : INFINITY)
+                                     : sp->dt > 0 ? fmin(sp->dt, sp->dt_max) : sp->dt;
+}
 
 /* The plan of a collision of p0 with o in pl; GW_EINVAL naming the bound
  * that trips (pl is then partly filled and not to be used). */

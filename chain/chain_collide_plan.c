@@ -43,6 +43,8 @@ int gw_chain_rk4_steps_per_tc(double rel_acc)
 
 int gw_chain_rk4_study_covers(const gw_chain_params *p, long n_max)
 {
+    if (!p)
+        return 0;
     int general = p->wall.layer || p->wall.yield_pressure > 0 || p->wall.loss > 0 || p->sensor.mass > 0 ||
                   p->guide.coulomb > 0 || p->guide.viscous > 0;
     return !(p->damping != GW_DAMP_NONE || p->gravity != 0 || n_max > 40 || general);
@@ -151,6 +153,8 @@ static long memory_n_ok(const gw_chain_params *p, const gw_solver_type *type, in
 
 int gw_chain_memory_check(const gw_chain_params *p, const gw_solver_type *type, int method, gw_err *err)
 {
+    if (!p)
+        return gw_err_set(err, GW_EINVAL, "gw_chain_memory_check: p is NULL");
     const double limit = GW_CHAIN_MEMORY_MAX;
     double need = memory_bytes(p, type, method);
     if (need <= limit)
@@ -430,8 +434,21 @@ int chain_collide_plan_make(const gw_chain_params *p0, const gw_chain_run_opts *
 
 int gw_chain_run_check(const gw_chain_params *p, const gw_chain_run_opts *o, gw_err *err)
 {
+    if (!p || !o)
+        return gw_err_set(err, GW_EINVAL, "gw_chain_run_check: %s is NULL", !p ? "p" : "o");
     collide_plan pl;
     return chain_collide_plan_make(p, o, &pl, err);
+}
+
+int chain_run_step(const gw_chain_params *p, const gw_chain_run_opts *o, double *dt, double *dt_max, gw_err *err)
+{
+    collide_plan pl;
+    int rc = chain_collide_plan_make(p, o, &pl, err);
+    if (rc != GW_OK)
+        return rc;
+    *dt = chain_plan_step(&pl);
+    *dt_max = pl.sp.dt_max;
+    return GW_OK;
 }
 
 int chain_run_steps(const gw_chain_params *p, const gw_chain_run_opts *o, double *steps, gw_err *err)

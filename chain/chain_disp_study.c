@@ -152,6 +152,8 @@ static const char *choice(const gw_chain_dispersion_setup *s, const char *row, c
 int gw_chain_dispersion_solver(const gw_chain_dispersion_setup *s, const gw_solver_type **type,
                                gw_solver_params *sp, gw_err *err)
 {
+    if (!s || !type || !sp)
+        return gw_err_set(err, GW_EINVAL, "gw_chain_dispersion_solver: %s is NULL", !s ? "s" : !type ? "type" : "sp");
     char sname[16], mname[16];
     /* the column (column_n > 0) is `granwave chain`'s collision and takes its
      * default solver, cvode; the method and the tolerances are checked against

@@ -77,6 +77,8 @@ static double disp_omega_c(const gw_chain_disp_params *p)
 /* Sampling interval: the given one or omega_c at 80 % of Nyquist. */
 double gw_chain_disp_dt_sample(const gw_chain_disp_params *p)
 {
+    if (!p)
+        return NAN;
     return p->dt_sample > 0 ? p->dt_sample : M_PI / (1.25 * disp_omega_c(p));
 }
 
@@ -88,6 +90,8 @@ static int disp_nx(const gw_chain_disp_params *p)
 
 int gw_chain_disp_params_validate(const gw_chain_disp_params *p, gw_err *err)
 {
+    if (!p)
+        return gw_err_set(err, GW_EINVAL, "gw_chain_disp_params_validate: p is NULL");
     int rc;
     if (p->n < 8 || p->n > (1 << 22))
         return gw_err_set(err, GW_EINVAL, "n: %d beads outside [8, %d]", p->n, 1 << 22);

@@ -59,6 +59,8 @@ int gw_chain_drop_guide_check(double coulomb, double viscous, gw_err *err)
 
 int gw_chain_drop_params_validate(const gw_chain_drop_params *p, gw_err *err)
 {
+    if (!p)
+        return gw_err_set(err, GW_EINVAL, "gw_chain_drop_params_validate: p is NULL");
     int rc;
     if ((rc = gw_check_range(p->height, "height (m)", 0, GW_CHAIN_DROP_H_MAX, err)) != GW_OK)
         return rc;
@@ -650,6 +652,8 @@ void gw_chain_drop_result_free(gw_chain_drop_result *r)
 
 int gw_chain_drop_impact_rises(const gw_chain_drop_result *r)
 {
+    if (!r)
+        return 0;
     int rises = 0;
     for (int j = 1; j < r->n_impacts; j++)
         rises += r->impacts[j].f_max > r->impacts[j - 1].f_max * (1.0 + GW_CHAIN_DROP_RISE_REL);

@@ -202,6 +202,8 @@ void gw_chain_drop_outcome_free(gw_chain_drop_outcome *out)
 
 int gw_chain_drop_setup_gaps(const gw_chain_drop_setup *s, double **gaps, gw_err *err)
 {
+    if (!s || !gaps)
+        return gw_err_set(err, GW_EINVAL, "gw_chain_drop_setup_gaps: %s is NULL", !s ? "s" : "gaps");
     *gaps = NULL;
     const int n = (int)s->col.n, ng = s->gap.n;
     if (s->block && n < 2) /* one bead is one body of the column's mass already */
@@ -310,6 +312,8 @@ static int fill_tables(gw_chain_drop_outcome *o, gw_err *err)
 
 void gw_chain_drop_block_params(gw_chain_params *p)
 {
+    if (!p)
+        return;
     double mtot = 0;
     for (int i = 0; i < p->n; i++)
         mtot += p->masses ? p->masses[i] : p->mass;

@@ -25,6 +25,8 @@
 int gw_chain_falcon_analyse(const gw_chain_params *p, double v, const gw_chain_result *res, int n_lo,
                              int n_hi, gw_chain_falcon_fit *a)
 {
+    if (!p || !res || !a)
+        return GW_EINVAL;
     /* Only the decided columns: one held by gravity (chain_held_pending) was
      * stopped when it fell back onto the wall, its tau_N and F_max those of
      * that time, not its collision's (softwall --gravity 1e4 fitted them). The
@@ -278,7 +280,7 @@ static int alloc_outcome(gw_chain_falcon_outcome *o, int nv, int n_lo, int nn, g
  * maxima are events), else at o's dt_out. The beads' series are kept for N = 7
  * only (the bead table of long columns is large). */
 static int run_traces(gw_chain_falcon_outcome *out, const gw_chain_params *p0, const gw_chain_run_opts *o0,
-                      int n_hi, gw_err *err)
+                      int n_hi, chain_dt_tally *dt_tally, gw_err *err)
 {
     static const int ns[GW_CHAIN_FALCON_NTRACE] = {7, 15, 30};
     for (int k = 0; k < GW_CHAIN_FALCON_NTRACE; k++) {
@@ -306,6 +308,8 @@ static int run_traces(gw_chain_falcon_outcome *out, const gw_chain_params *p0, c
         t->dt_out = r.run_dt_out;
         t->dt = r.run_dt;
         t->dt_max = r.run_dt_max;
+        if (rc == GW_OK) /* its own run: the step it took, as the study's (the --dt warning) */
+            chain_dt_tally_add(dt_tally, r.run_dt_given, r.run_dt, r.run_dt_max);
         gw_chain_result_free(&r);
         gw_chain_free(c);
         if (rc != GW_OK) {
@@ -540,8 +544,14 @@ int gw_chain_falcon_run(const gw_chain_falcon_setup *s, gw_progress_fn progress,
                                       "and extremes", n_undecided ? where : NULL, &out->warnings)) != GW_OK)
             rc = gw_err_set(err, rc, "falcon: out of memory");
     }
-    if (rc == GW_OK && s->traces && (rc = run_traces(out, &r.params, &r.run, (int)s->n[1], err)) != GW_OK)
+    chain_dt_tally dt_tally = {0}; /* a --dt above the step taken: the grid's columns and the traces' */
+    if (rc == GW_OK)
+        chain_dt_tally_results(&dt_tally, res, out->ncase);
+    if (rc == GW_OK && s->traces &&
+        (rc = run_traces(out, &r.params, &r.run, (int)s->n[1], &dt_tally, err)) != GW_OK)
         out->trace_failed = 1;
+    if (rc == GW_OK && (rc = chain_dt_tally_warnings(&dt_tally, "--dt", "collisions", &out->warnings)) != GW_OK)
+        rc = gw_err_set(err, rc, "falcon: out of memory");
     for (int i = 0; res && i < out->ncase; i++)
         gw_chain_result_free(&res[i]);
     free(res);

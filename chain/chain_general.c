@@ -171,6 +171,8 @@ int chain_general_roots(double t, const double *y, double *g, void *P)
 
 double gw_chain_wall_contact_force(const gw_chain *c, const double *y)
 {
+    if (!c || !y)
+        return NAN;
     if (!c->general)
         return gw_chain_wall_force(c, y);
     double kd, kv, pd = 0.0;
@@ -179,6 +181,8 @@ double gw_chain_wall_contact_force(const gw_chain *c, const double *y)
 
 double gw_chain_wall_gap(const gw_chain *c, const double *y)
 {
+    if (!c || !y)
+        return NAN;
     if (!c->general)
         return y[0];
     double d = wall_overlap(c, y);
@@ -192,21 +196,29 @@ double gw_chain_wall_gap(const gw_chain *c, const double *y)
 
 double gw_chain_wall_gap_rate(const gw_chain *c, const double *y)
 {
+    if (!c || !y)
+        return NAN;
     return c->general ? wall_overlap_rate(c, y) : y[1];
 }
 
 int gw_chain_force_max_root(const gw_chain *c)
 {
+    if (!c)
+        return -1;
     return c->n + (c->i_sens >= 0);
 }
 
 long gw_chain_sensor_index(const gw_chain *c)
 {
+    if (!c)
+        return -1;
     return c->i_sens;
 }
 
 double gw_chain_momentum(const gw_chain *c, const double *y)
 {
+    if (!c || !y)
+        return NAN;
     double p = 0.0;
     for (int i = 0; i < c->n; i++)
         p += c->m[i] * y[2 * i + 1];

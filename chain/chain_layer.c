@@ -427,6 +427,8 @@ int chain_layer_memo_keep(int keep)
 int gw_layer_law_create(double radius, const gw_material *bead, double thickness, double young,
                         double poisson, gw_layer_law **out, gw_err *err)
 {
+    if (!out)
+        return gw_err_set(err, GW_EINVAL, "gw_layer_law_create: out is NULL");
     *out = NULL;
     int rc;
     if ((rc = gw_check_range(radius, "layer law: sphere radius (m)", 1e-6, 1.0, err)) != GW_OK ||
@@ -561,10 +563,14 @@ double gw_layer_law_contact_radius(const gw_layer_law *l, double d)
 
 double gw_layer_law_hertz_k(const gw_layer_law *l)
 {
+    if (!l)
+        return NAN;
     return 4.0 / 3.0 * l->estar * sqrt(l->radius);
 }
 
 double gw_layer_law_thickness(const gw_layer_law *l)
 {
+    if (!l)
+        return NAN;
     return l->thickness;
 }

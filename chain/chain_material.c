@@ -51,6 +51,8 @@ static double compliance(const gw_material *m)
 double gw_hertz_coefficient(double r1, const gw_material *m1, double r2,
                             const gw_material *m2)
 {
+    if (!m1 || !m2) /* no material: no coefficient */
+        return NAN;
     double inv_r = (isinf(r1) ? 0.0 : 1.0 / r1) + (isinf(r2) ? 0.0 : 1.0 / r2);
     double c = compliance(m1) + compliance(m2);
     if (!(inv_r > 0) || !(c > 0))
@@ -130,6 +132,8 @@ const gw_sheet *gw_sheet_find(const char *name)
 
 double gw_sheet_kwall(const gw_sheet *s, double m)
 {
+    if (!s)
+        return NAN;
     double v = sqrt(2 * GW_CHAIN_G_EARTH * 2.9e-3);
     return 1.25 * m * pow(gw_chain_tau_constant() / (2e-6 * s->tau_max1_us * pow(v, 0.2)), 2.5);
 }

@@ -266,6 +266,8 @@ gw_chain_params gw_chain_params_default(void)
 
 int gw_chain_params_validate(const gw_chain_params *p, gw_err *err)
 {
+    if (!p)
+        return gw_err_set(err, GW_EINVAL, "gw_chain_params_validate: p is NULL");
     int rc;
     if (p->n < 1)
         return gw_err_set(err, GW_EINVAL, "n: number of beads must be >= 1, got %d", p->n);
@@ -344,6 +346,8 @@ static int is_general(const gw_chain_params *p)
 
 double gw_chain_time_scale(const gw_chain_params *p)
 {
+    if (!p)
+        return NAN;
     double m = p->masses ? p->masses[0] : p->mass;
     double k = p->kc && p->n > 1 ? p->kc[0] : p->k;
     return pow(m / k, 0.4) * pow(p->v_imp, -0.2);
@@ -477,6 +481,8 @@ double chain_ring_period(const gw_chain_params *p, int *fastest)
 
 double gw_chain_step_scale(const gw_chain_params *p)
 {
+    if (!p)
+        return NAN;
     const double v = p->v_imp, tc = gw_chain_time_scale(p);
     double s = tc;
     /* T_c = (m/k)^(2/5) v^(-1/5) is (2 mu/k)^(2/5) v^(-1/5) of the pair of equal
@@ -653,11 +659,15 @@ const gw_chain_params *gw_chain_get_params(const gw_chain *c)
 
 double gw_chain_bead_mass(const gw_chain *c, int i)
 {
+    if (!c || i < 0 || i >= c->n) /* no such bead */
+        return NAN;
     return c->m[i];
 }
 
 void gw_chain_initial_state(const gw_chain *c, double *y)
 {
+    if (!c || !y)
+        return;
     for (int i = 0; i < c->n; i++) {
         y[2 * i] = 0.0;
         y[2 * i + 1] = c->p.v_imp;
@@ -668,6 +678,8 @@ void gw_chain_initial_state(const gw_chain *c, double *y)
 
 double gw_chain_wall_force(const gw_chain *c, const double *y)
 {
+    if (!c || !y)
+        return NAN;
     if (c->general) {
         if (c->i_sens >= 0)
             return c->p.sensor.stiffness * y[c->i_sens] + c->p.sensor.damping * y[c->i_sens + 1];
@@ -684,6 +696,12 @@ double gw_chain_wall_force(const gw_chain *c, const double *y)
 
 void gw_chain_energy_of(const gw_chain *c, const double *y, gw_chain_energy *e)
 {
+    if (!e)
+        return;
+    if (!c || !y) { /* no state: no energy */
+        e->kinetic = e->elastic = e->gravity = e->dissipated = e->total = NAN;
+        return;
+    }
     if (c->general) {
         chain_general_energy(c, y, e);
         return;

@@ -100,6 +100,29 @@ static inline int chain_result_held(const gw_chain_result *r)
  * Their unfinished count includes them: the studies' "raise --t-max" warning
  * counts the others only. */
 int chain_held_warnings(int held, int total, const char *left_out, const char *undecided, char **list);
+/* Runs whose step was below the dt given (gw_chain_result's run_dt under
+ * run_dt_given: above dt_max, or rk4's dt_out), tallied over the runs of one
+ * command, a study or a sweep, so that one warning line says how many: a
+ * thousand-case study gave none, and one a run would flood stderr. */
+typedef struct chain_dt_tally {
+    double given_lo, given_hi; /* the dt given of the runs above their step, s */
+    double taken_lo, taken_hi; /* the steps they took, s */
+    int over, total;           /* runs above their step, of the runs tallied */
+    int at_out;                /* of over, those whose step was rk4's dt_out (below dt_max) */
+} chain_dt_tally;
+/* One run into t: given the dt given (0: none), taken the step it took,
+ * dt_max its largest step (s). t starts zeroed. */
+void chain_dt_tally_add(chain_dt_tally *t, double given, double taken, double dt_max);
+/* The run's or runs' one warning line appended to *list, nothing when none
+ * ran above its step: name is the dt's name for the reader ("--dt" of a
+ * command, whose settings record the step taken; a sweep's key "dt", whose
+ * table records the dt given), what the runs ("collisions", "cases"; a single run, total 1, says
+ * "the run"). GW_OK or GW_ENOMEM. */
+int chain_dt_tally_warnings(const chain_dt_tally *t, const char *name, const char *what, char **list);
+/* The tally of the collisions res[0..n-1] (their run_dt_given, run_dt,
+ * run_dt_max) added to t. */
+void chain_dt_tally_results(chain_dt_tally *t, const gw_chain_result *res, long n);
+
 /* Append speed v to the list in buf ("0.3, 6.16"; "..." once it is full),
  * counting in *count. */
 void chain_list_speed(char *buf, size_t size, int *count, double v);
@@ -181,6 +204,12 @@ int chain_steps_check(const gw_solver_type *type, const gw_solver_params *sp, co
  * arkode's largest step and at least 2 a radian of a sensor body's oscillation.
  * Studies add them up over their columns (chain_sweep.c). */
 int chain_run_steps(const gw_chain_params *p, const gw_chain_run_opts *o, double *steps, gw_err *err);
+
+/* The step a run of column p takes (*dt, its result's run_dt) and its
+ * largest step (*dt_max, run_dt_max), s, from the same plan as
+ * gw_chain_run_check (GW_EINVAL and its message when that refuses), before
+ * it runs: a sweep says which of its cases run at a step below their dt. */
+int chain_run_step(const gw_chain_params *p, const gw_chain_run_opts *o, double *dt, double *dt_max, gw_err *err);
 
 /* gw_chain_collide for the drop's first collision: a column falling back on
  * the wall is not stopped as held (the drop follows its bounces: chain_collide.c,

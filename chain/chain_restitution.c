@@ -222,6 +222,8 @@ static int calibrate(calib *cb, double *constant, gw_err *err);
 int gw_chain_calibrate(const gw_chain_params *p, const gw_chain_run_opts *o, double e_target,
                        double *constant, gw_err *err)
 {
+    if (!p || !o || !constant)
+        return gw_err_set(err, GW_EINVAL, "gw_chain_calibrate: %s is NULL", !p ? "p" : !o ? "o" : "constant");
     if (p->damping != GW_DAMP_HUNT_CROSSLEY && p->damping != GW_DAMP_KUWABARA_KONO)
         return gw_err_set(err, GW_EINVAL, "restitution: choose a damping model (kk or hc) to calibrate");
     if (!(e_target > 0 && e_target < 1))

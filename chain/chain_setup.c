@@ -410,6 +410,11 @@ static int apply_wall(const gw_chain_setup *s, gw_chain_resolved *r, gw_err *err
 
 int gw_chain_setup_resolve(const gw_chain_setup *s, gw_chain_resolved *r, gw_err *err)
 {
+    if (!s || !r) {
+        if (r)
+            memset(r, 0, sizeof *r);
+        return gw_err_set(err, GW_EINVAL, "gw_chain_setup_resolve: %s is NULL", !s ? "s" : "r");
+    }
     memset(r, 0, sizeof *r);
     int rc = gw_param_check(setup_params, s, err);
     if (rc != GW_OK)

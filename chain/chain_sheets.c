@@ -34,6 +34,8 @@ int gw_sheet_apply(const gw_sheet *s, gw_sheet_law law, double yield, double los
                    const gw_material *bead, const gw_material *wall, gw_chain_params *p,
                    gw_layer_law **layer, gw_err *err)
 {
+    if (!s || !p || !layer)
+        return gw_err_set(err, GW_EINVAL, "gw_sheet_apply: %s is NULL", !s ? "s" : !p ? "p" : "layer");
     *layer = NULL;
     memset(&p->wall, 0, sizeof p->wall);
     if (law == GW_SHEET_FITTED) {

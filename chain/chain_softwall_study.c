@@ -78,7 +78,8 @@ static const gw_param sw_fields[] = {
     RAT(S, "n", n, "", "nn", NULL, "column sizes N"),
     RAT(S, "kwall", kwall, "N/m^1.5", "nw", NULL, "wall coefficient K [wall]"),
     RFA(S, "rigid", rigid, "nw", "1: K > K_c [wall]"),
-    RFA(S, "saturated", saturated, "nw", "1: F_max reached its plateau within the sizes [wall]"),
+    RFA(S, "saturated", saturated, "nw", "1: F_max reached its plateau within the sizes, 0: not, -1: undecided "
+                                         "(held columns leave too few decided sizes on it) [wall]"),
     RAT(S, "f_max", f_max, "N", "nw", "nn", "largest wall force [wall, N]"),
     RAT(S, "tau_max", tau_max, "s", "nw", "nn", "time of f_max [wall, N]"),
     RAT(S, "t_max", t_max, "s", "nw", "nn", "time limit of each collision [wall, N]"),
@@ -136,6 +137,8 @@ typedef struct sw_result {
     int n_d_pred; /* (F.8) at the measured N_d, -1 without N_d */
     int n_d_fix;  /* smallest N >= ceil(tau_max(N)/T_q), -1 if none or if n_lo > 1 meets it */
     int at_most;  /* n_lo > 1 when the plateau reaches back to it: N_d <= n_lo, -1 otherwise */
+    int undecided; /* 1: N_d not located because of held columns (the longest, or one that cut the
+                      plateau's walk short), which more decided sizes might locate; 0: decided */
     double plateau;
 } sw_result;
 
@@ -150,12 +153,14 @@ typedef struct sw_result {
  * as before. */
 static sw_result analyse(const gw_chain_result *r, int n_lo, int n_hi, double tol, double t_q)
 {
-    sw_result s = {-1, -1, -1, -1, NAN};
+    sw_result s = {-1, -1, -1, -1, 0, NAN};
     int top = n_hi;
     while (top >= n_lo && chain_result_held(&r[top - n_lo]))
         top--;
-    if (top < n_lo) /* every column held: no plateau */
+    if (top < n_lo) { /* every column held: no plateau */
+        s.undecided = 1;
         return s;
+    }
     s.plateau = r[top - n_lo].f_max;
     int low = top, on = 0, n = top;
     for (; n >= n_lo; n--) {
@@ -171,8 +176,9 @@ static sw_result analyse(const gw_chain_result *r, int n_lo, int n_hi, double to
     const int unknown_below = (n < n_lo && n_lo > 1) || (n >= n_lo && chain_result_held(&r[n - n_lo]));
     if (low == 1)
         s.n_d = 1;
-    else if (on < SATURATION_RUN)
-        s.n_d = -1;
+    else if (on < SATURATION_RUN) /* too few sizes on it: undecided when held columns are why (the
+                                     longest held, or one ending the walk), else not saturated */
+        s.undecided = top < n_hi || (n >= n_lo && chain_result_held(&r[n - n_lo]));
     else if (unknown_below)
         s.at_most = low;
     else
@@ -197,7 +203,8 @@ static sw_result analyse(const gw_chain_result *r, int n_lo, int n_hi, double to
 
 /* Rigid-wall T_q of the beads at v: slope of tau_N over N = 1..20, over the
  * columns not held by gravity (*held of the 20; NaN with fewer than two). */
-static int measure_tq(const gw_chain_resolved *rs, double v, int jobs, double *t_q, int *held, gw_err *err)
+static int measure_tq(const gw_chain_resolved *rs, double v, int jobs, double *t_q, int *held,
+                      chain_dt_tally *dt_tally, gw_err *err)
 {
     gw_chain_params p = rs->params;
     const gw_material *steel = gw_material_find("steel");
@@ -205,6 +212,8 @@ static int measure_tq(const gw_chain_resolved *rs, double v, int jobs, double *t
     memset(&p.wall, 0, sizeof p.wall); /* the bare sensor */
     gw_chain_result r[20];
     int rc = gw_chain_sweep_n_progress(&p, &rs->run, &v, 1, 1, 20, jobs, NULL, NULL, r, err);
+    if (rc == GW_OK) /* the steel wall's contact is the stiffest: its dt-max the shortest */
+        chain_dt_tally_results(dt_tally, r, 20);
     double x[20], y[20];
     int m = 0;
     *held = 0;
@@ -306,7 +315,8 @@ static void sw_fill(const gw_chain_softwall_setup *s, const gw_chain_resolved *r
             o->held[w * nn + k] = chain_result_held(&rw[k]);
         }
         o->rigid[w] = o->kwall[w] > o->k_c;
-        o->saturated[w] = sr[w].n_d > 0 || sr[w].at_most > 0;
+        /* -1 (JSON null, Python masked): held columns leave it undecided */
+        o->saturated[w] = sr[w].n_d > 0 || sr[w].at_most > 0 ? 1 : sr[w].undecided ? -1 : 0;
         o->n_d_at_most[w] = sr[w].at_most > 0 ? sr[w].at_most : NAN;
         o->n_d[w] = sr[w].n_d > 0 ? sr[w].n_d : NAN;
         o->n_d_predicted[w] = sr[w].n_d_pred > 0 ? sr[w].n_d_pred : NAN;
@@ -352,28 +362,25 @@ static int sw_held_warnings(const gw_chain_softwall_outcome *o, int held, const 
     return chain_held_warnings(held, o->ncase, left, where, list);
 }
 
-/* What the held columns leave undecided, for their warning: N_d at the walls
- * with held columns where the decided ones do not locate it, and T_q when
+/* What the held columns leave undecided, for their warning: N_d and saturated
+ * at the walls where held columns keep the decided ones from locating it, and T_q when
  * fewer than two of the rigid wall's 20 columns were decided ("" when nothing). */
 static int sw_held_where(const gw_chain_softwall_outcome *o, int sheets, char *buf, size_t size)
 {
     char walls[200] = "";
     int nu = 0;
     for (int w = 0; w < o->nw; w++) {
-        int held = 0;
-        for (int k = 0; k < o->nn; k++)
-            held += o->held[w * o->nn + k];
-        if (held && !o->saturated[w] && sheets) {
+        if (o->saturated[w] < 0 && sheets) {
             size_t len = strlen(walls);
             if (len + 20 < sizeof walls)
                 gw_snprintf(walls + len, sizeof walls - len, "%s%s", nu ? ", " : "", gw_sheet_get(w)->name);
             nu++;
-        } else if (held && !o->saturated[w]) {
+        } else if (o->saturated[w] < 0) {
             nu++;
         }
     }
     gw_snprintf(buf, size, "%s%s%s%s%s", nu ? "N_d" : "", nu && sheets ? " (sheets " : "", walls,
-                nu && sheets ? ")" : "", nu ? " (too few decided sizes on the plateau)" : "");
+                nu && sheets ? ")" : "", nu ? " and whether F_max saturated (saturated null: too few decided sizes on the plateau)" : "");
     if (!isfinite(o->t_q_rigid) && o->n_held_rigid > 0) {
         size_t len = strlen(buf);
         gw_snprintf(buf + len, size - len, "%sthe rigid wall's T_q and F.8 (%d of its 20 columns held)",
@@ -461,7 +468,8 @@ int gw_chain_softwall_run(const gw_chain_softwall_setup *s, gw_progress_fn progr
     sw_result *sr = calloc((size_t)nw, sizeof *sr);
     gw_layer_law **lay = calloc((size_t)nw, sizeof *lay);
     double t0 = gw_clock_ms();
-    rc = res && sr && lay ? measure_tq(&rs, vimp, (int)s->jobs, &out->t_q_rigid, &out->n_held_rigid, err)
+    chain_dt_tally dt_tally = {0}; /* a --dt above the step taken: the rigid wall's 20 columns and the walls' */
+    rc = res && sr && lay ? measure_tq(&rs, vimp, (int)s->jobs, &out->t_q_rigid, &out->n_held_rigid, &dt_tally, err)
                           : gw_err_set(err, GW_ENOMEM, "softwall: out of memory");
     char name[32];
     const gw_material *bm = gw_material_find(
@@ -475,8 +483,10 @@ int gw_chain_softwall_run(const gw_chain_softwall_setup *s, gw_progress_fn progr
         out->kwall[w] = q.kwall;
         rc = gw_chain_sweep_n_progress(&q, &rs.run, &vimp, 1, (int)a, (int)b, (int)s->jobs, NULL, NULL,
                                        res + (size_t)w * per, err);
-        if (rc == GW_OK)
+        if (rc == GW_OK) {
             sr[w] = analyse(res + (size_t)w * per, (int)a, (int)b, s->tol, out->t_q_rigid);
+            chain_dt_tally_results(&dt_tally, res + (size_t)w * per, per);
+        }
         for (int i = 0; rc == GW_OK && i < per; i++) {
             out->unfinished += !res[(size_t)w * per + i].wall_done; /* F_max, tau_max: the wall's */
             held += chain_result_held(&res[(size_t)w * per + i]);
@@ -493,7 +503,8 @@ int gw_chain_softwall_run(const gw_chain_softwall_setup *s, gw_progress_fn progr
         rc = sw_held_where(out, s->sheets, where, sizeof where);
     if (rc == GW_OK &&
         ((rc = gw_chain_softwall_warnings(out->unfinished - held, out->ncase, &out->warnings)) != GW_OK ||
-         (rc = sw_held_warnings(out, held, where, &out->warnings)) != GW_OK))
+         (rc = sw_held_warnings(out, held, where, &out->warnings)) != GW_OK ||
+         (rc = chain_dt_tally_warnings(&dt_tally, "--dt", "collisions", &out->warnings)) != GW_OK))
         rc = gw_err_set(err, rc, "softwall: out of memory");
     for (int i = 0; res && i < nw * per; i++)
         gw_chain_result_free(&res[i]);

@@ -52,6 +52,8 @@ int gw_chain_wall_spectrum(const gw_chain_trace *tr, double t0, double t1, doubl
                            double f_min, int fftw_measure, gw_chain_spectrum *sp,
                            gw_err *err)
 {
+    if (!sp)
+        return gw_err_set(err, GW_EINVAL, "gw_chain_wall_spectrum: sp is NULL");
     memset(sp, 0, sizeof *sp);
     if (!tr || tr->len < 2 || !(t1 > t0) || !isfinite(t1) || t0 < tr->t[0] || t1 > tr->t[tr->len - 1])
         return gw_err_set(err, GW_EINVAL, "wall spectrum: interval [%g, %g] s not inside the trace", t0, t1);

@@ -8,6 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "chain_model.h"
 #include "gw_chain_study.h"
 #include "gw_sweep.h"
 
@@ -31,21 +32,47 @@ static int prepare(gw_chain_setup *s, int nk, const char *const *names, const ch
     return rc == GW_OK ? GW_OK : GW_EINVAL;
 }
 
-static int check(int nk, const char *const *names, const char *const *values, gw_err *err)
+/* tally (may be NULL): the case's dt given against the step it will take */
+static int check_tally(chain_dt_tally *tally, int nk, const char *const *names, const char *const *values,
+                       gw_err *err)
 {
     gw_chain_setup s;
     int rc = prepare(&s, nk, names, values, err);
     if (rc == GW_OK) { /* the resolution's checks too (names, no-effect options), and the run's
                           bounds on steps, memory and samples: a case the run would refuse is
-                          refused with the config, before OUT and its journal are made */
+                          refused with the config, before OUT and its journal are made; the
+                          plan of these checks gives the step the case will take */
         gw_chain_resolved r;
-        rc = gw_chain_setup_resolve(&s, &r, err) == GW_OK && gw_chain_run_check(&r.params, &r.run, err) == GW_OK
+        double dt, dt_max;
+        rc = gw_chain_setup_resolve(&s, &r, err) == GW_OK && chain_run_step(&r.params, &r.run, &dt, &dt_max, err) == GW_OK
                  ? GW_OK
                  : GW_EINVAL;
+        if (rc == GW_OK && tally)
+            chain_dt_tally_add(tally, r.run.sp.dt > 0 ? r.run.sp.dt : 0.0, dt, dt_max);
         gw_chain_resolved_free(&r);
     }
     gw_chain_setup_clear(&s);
     return rc;
+}
+
+static int check(int nk, const char *const *names, const char *const *values, gw_err *err)
+{
+    return check_tally(NULL, nk, names, values, err);
+}
+
+/* A pass of checks tallies the cases whose dt is above the step they will
+ * take (the memo), for one warning line over the sweep: such a case runs at
+ * that step, and its row says nothing of it (granwave sweep warned of none). */
+static int check_memo(void **memo, int nk, const char *const *names, const char *const *values, gw_err *err)
+{
+    if (!*memo && !(*memo = calloc(1, sizeof(chain_dt_tally))))
+        return gw_err_set(err, GW_ENOMEM, "out of memory");
+    return check_tally(*memo, nk, names, values, err);
+}
+
+static int memo_warnings(const void *memo, char **list)
+{
+    return chain_dt_tally_warnings(memo, "dt", "cases", list);
 }
 
 static int run(int nk, const char *const *names, const char *const *values, double *out,
@@ -71,4 +98,4 @@ static int run(int nk, const char *const *names, const char *const *values, doub
 
 const gw_sweep_model gw_chain_sweep_model = {"chain", (int)(sizeof columns / sizeof columns[0]), columns,
                                              has_key, run, check, NULL /* memory: not estimated */,
-                                             NULL /* read_key: no file */, NULL /* check_memo */, NULL};
+                                             NULL /* read_key: no file */, check_memo, free, memo_warnings};

@@ -16,6 +16,8 @@
 
 void gw_chain_trace_init(gw_chain_trace *tr, int n)
 {
+    if (!tr) /* nothing to set: a void call's NULL is a no-op, as the _free calls' */
+        return;
     memset(tr, 0, sizeof *tr);
     tr->n = n;
 }
@@ -33,6 +35,8 @@ void gw_chain_trace_free(gw_chain_trace *tr)
 
 int gw_chain_trace_sample(void *ctx, double t, const double *y, double f_wall, int is_event)
 {
+    if (!ctx || !y) /* nowhere to store it, or nothing to store */
+        return GW_EINVAL;
     (void)is_event;
     gw_chain_trace *tr = ctx;
     const int n = tr->n;

@@ -28,6 +28,8 @@
 
 void gw_thornton_init(gw_thornton *t, double estar, double radius, double p_y)
 {
+    if (!t) /* nothing to set: a void call's NULL is a no-op, as the _free calls' */
+        return;
     t->estar = estar;
     t->radius = radius;
     t->p_y = p_y;
@@ -47,6 +49,8 @@ static double thornton_loading(const gw_thornton *t, double dm)
 double gw_thornton_force(const gw_thornton *t, double d, double dmax, double *stiffness,
                          double *residual, double *energy)
 {
+    if (!t)
+        return NAN;
     double dm = d > dmax ? d : dmax, rp = t->radius, dp = 0.0, f = 0.0, kd = 0.0;
     if (dm > t->d_y) {
         double fs = thornton_loading(t, dm);

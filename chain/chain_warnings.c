@@ -9,6 +9,7 @@
  * Parameters are named as the program's flags (--t-max), as the library's
  * other texts for the user (the layer's undecided outcome) do.
  */
+#include <math.h>
 #include <string.h>
 
 #include "gw_chain.h"
@@ -37,18 +38,76 @@ static int overlap_warning(const gw_chain_result *r, char **list)
  * results are the step's (chain --dt 1e-3 byte for byte those of the
  * automatic dt-max 6.6e-6 s); refusing would refuse the dt that earlier
  * commands passed, so the run goes on and says so (the settings' dt is the
- * step taken, dt_given the one given). */
+ * step taken, dt_given the one given). A study or a sweep says it once, with
+ * how many of its runs it concerns (falcon, wavespeed, softwall and the
+ * sweeps recorded dt_given and said nothing). */
+void chain_dt_tally_add(chain_dt_tally *t, double given, double taken, double dt_max)
+{
+    t->total++;
+    if (!(given > 0 && taken < given))
+        return;
+    if (t->over == 0) {
+        t->given_lo = t->given_hi = given;
+        t->taken_lo = t->taken_hi = taken;
+    }
+    t->given_lo = fmin(t->given_lo, given);
+    t->given_hi = fmax(t->given_hi, given);
+    t->taken_lo = fmin(t->taken_lo, taken);
+    t->taken_hi = fmax(t->taken_hi, taken);
+    t->at_out += taken < dt_max; /* rk4: its steps end at the samples */
+    t->over++;
+}
+
+void chain_dt_tally_results(chain_dt_tally *t, const gw_chain_result *res, long n)
+{
+    for (long i = 0; res && i < n; i++)
+        chain_dt_tally_add(t, res[i].run_dt_given, res[i].run_dt, res[i].run_dt_max);
+}
+
+/* "A s" or "A to B s" */
+static void span(char *buf, size_t size, double lo, double hi)
+{
+    if (lo == hi)
+        gw_snprintf(buf, size, "%g", lo);
+    else
+        gw_snprintf(buf, size, "%g to %g", lo, hi);
+}
+
+int chain_dt_tally_warnings(const chain_dt_tally *t, const char *name, const char *what, char **list)
+{
+    if (!t || !name || t->over <= 0)
+        return GW_OK;
+    /* a sweep's table holds the dt given (its key), the studies' settings the steps taken */
+    const int sweep = name[0] != '-';
+    const int all_out = t->at_out == t->over, some_out = t->at_out > 0;
+    const char *out = sweep ? "dt-out" : "--dt-out"; /* the names the reader gave */
+    char bound[32];
+    gw_snprintf(bound, sizeof bound, "%s%s%s", all_out ? "" : "dt-max", some_out && !all_out ? " or " : "",
+                some_out ? out : "");
+    const char *why = all_out ? "rk4's steps end at the samples"
+                    : some_out ? "a quarter of the shortest contact unless given; rk4's steps end at the samples"
+                               : "a quarter of the shortest contact unless given";
+    if (t->total == 1 && !sweep) /* one run: the text of chain and drop */
+        return gw_warnings_add(list,
+                               "%s %g s is above %s = %g s, the longest step the run takes (%s): it ran at that "
+                               "step, the dt its settings record (dt_given: %g s)",
+                               name, t->given_hi, bound, t->taken_hi, why, t->given_hi);
+    char given[64], taken[64];
+    span(given, sizeof given, t->given_lo, t->given_hi);
+    span(taken, sizeof taken, t->taken_lo, t->taken_hi);
+    return gw_warnings_add(list,
+                           "%s %s s is above the longest step that %d of %d %s take (%s = %s s, %s): they %s at that "
+                           "step, %s (dt_given: %s s)",
+                           name, given, t->over, t->total, what, bound, taken, why, sweep ? "run" : "ran",
+                           sweep ? "while the table records the dt given" : "the dt their settings record", given);
+}
+
+/* the one run's line (chain, drop) */
 static int dt_warning(double given, double taken, double dt_max, char **list)
 {
-    if (!(given > 0 && taken < given))
-        return GW_OK;
-    const int at_out = taken < dt_max; /* rk4: its steps end at the samples */
-    return gw_warnings_add(list,
-                           "--dt %g s is above %s = %g s, the longest step the run takes%s: it ran at that step, "
-                           "the dt its settings record (dt_given: %g s)",
-                           given, at_out ? "--dt-out" : "dt-max", taken,
-                           at_out ? " (rk4's steps end at the samples)" : " (a quarter of the shortest contact unless given)",
-                           given);
+    chain_dt_tally t = {0};
+    chain_dt_tally_add(&t, given, taken, dt_max);
+    return chain_dt_tally_warnings(&t, "--dt", "runs", list);
 }
 
 int gw_chain_result_warnings(const gw_chain_result *r, char **list)

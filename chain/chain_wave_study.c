@@ -160,7 +160,7 @@ static void power_fit(const double *v, const double *s, int n, double scale, dou
  * changes. Otherwise the contacts it had not reached might still be reached
  * in the column's next impact: the speed is undecided (NaN), not a failure. */
 static int front_speed(const gw_chain_params *p, const gw_chain_run_opts *run, double frac, double *speed,
-                       int *held, gw_err *err)
+                       int *held, chain_dt_tally *dt_tally, gw_err *err)
 {
     gw_chain *c = NULL;
     gw_chain_run_opts o = *run;
@@ -176,6 +176,8 @@ static int front_speed(const gw_chain_params *p, const gw_chain_run_opts *run, d
     if (rc == GW_OK)
         rc = gw_chain_collide(c, &o, &r, err);
     *held = rc == GW_OK && chain_result_held(&r);
+    if (rc == GW_OK) /* its finer sampling may cut rk4's step below a --dt the columns took */
+        chain_dt_tally_add(dt_tally, r.run_dt_given, r.run_dt, r.run_dt_max);
     int reached = 1;
     for (int k = 2; rc == GW_OK && *held && k <= p->n - 2; k++)
         reached &= isfinite(r.front_t[k]);
@@ -208,7 +210,8 @@ static int front_speed(const gw_chain_params *p, const gw_chain_run_opts *run, d
 
 /* tau_N line, period, mean wall force and the three speeds at velocity iv. */
 static int ws_velocity(const gw_chain_params *p, const gw_chain_run_opts *run, const gw_chain_result *rv,
-                       int a, int per_v, double frac, int iv, gw_chain_wavespeed_outcome *o, gw_err *err)
+                       int a, int per_v, double frac, int iv, gw_chain_wavespeed_outcome *o,
+                       chain_dt_tally *dt_tally, gw_err *err)
 {
     double *x = malloc(2 * (size_t)per_v * sizeof *x);
     if (!x)
@@ -244,7 +247,7 @@ static int ws_velocity(const gw_chain_params *p, const gw_chain_run_opts *run, c
     o->v_group_front[iv] = o->v_group[iv] / sqrt(1.5);
     gw_chain_params q = *p;
     q.v_imp = o->v_imp[iv];
-    int rc = front_speed(&q, run, frac, &o->v_front[iv], &o->front_held[iv], err);
+    int rc = front_speed(&q, run, frac, &o->v_front[iv], &o->front_held[iv], dt_tally, err);
     if (rc != GW_OK) {
         char tmp[sizeof err->msg];
         gw_snprintf(tmp, sizeof tmp, "%s", err->msg);
@@ -397,8 +400,12 @@ int gw_chain_wavespeed_run(const gw_chain_wavespeed_setup *s, gw_progress_fn pro
         out->dt[i] = res[i].run_dt;
         out->dt_max[i] = res[i].run_dt_max;
     }
+    chain_dt_tally dt_tally = {0}; /* a --dt above the step taken: the tau_N sweep's and the front's columns */
+    if (rc == GW_OK)
+        chain_dt_tally_results(&dt_tally, res, out->ncase);
     for (int iv = 0; rc == GW_OK && iv < nv; iv++)
-        rc = ws_velocity(&r.params, &r.run, &res[iv * per_v], (int)a, per_v, s->threshold, iv, out, err);
+        rc = ws_velocity(&r.params, &r.run, &res[iv * per_v], (int)a, per_v, s->threshold, iv, out, &dt_tally,
+                         err);
     out->wall_time_s = (gw_clock_ms() - t0) / 1e3;
     int fits_undecided = 0;
     if (rc == GW_OK && ws_fits(&r.params, out, &fits_undecided) != GW_OK)
@@ -433,7 +440,8 @@ int gw_chain_wavespeed_run(const gw_chain_wavespeed_setup *s, gw_progress_fn pro
     if (rc == GW_OK &&
         ((rc = gw_chain_unfinished_warnings(out->unfinished - held, out->ncase, &out->warnings)) != GW_OK ||
          (rc = chain_held_warnings(out->n_held, out->ncase + nv, "the fits over N and over v_imp, the front and "
-                                   "group speeds", where, &out->warnings)) != GW_OK))
+                                   "group speeds", where, &out->warnings)) != GW_OK ||
+         (rc = chain_dt_tally_warnings(&dt_tally, "--dt", "collisions", &out->warnings)) != GW_OK))
         rc = gw_err_set(err, rc, "wavespeed: out of memory");
     for (int i = 0; i < nv * per_v; i++)
         gw_chain_result_free(&res[i]);

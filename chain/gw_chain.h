@@ -144,6 +144,7 @@ typedef struct gw_thornton {
     double d_y, f_y;           /* m, N */
 } gw_thornton;
 
+/* t from E* (Pa), the radius R (m) and the yield pressure p_y (Pa); t NULL: nothing. */
 void gw_thornton_init(gw_thornton *t, double estar, double radius, double p_y);
 /* Force at overlap d after a largest overlap dmax (the force uses max(d, dmax)):
  * *stiffness dF/dd, *residual d_p, *energy the elastic energy recovered on
@@ -464,6 +465,7 @@ typedef struct gw_chain_trace {
     double *t, *f, *x, *v; /* x, v: len rows of n */
 } gw_chain_trace;
 
+/* An empty trace of n beads (nothing allocated yet); tr NULL: nothing. */
 void gw_chain_trace_init(gw_chain_trace *tr, int n);
 /* gw_chain_sample_fn storing every sample (ctx = gw_chain_trace*). */
 int gw_chain_trace_sample(void *ctx, double t, const double *y, double f_wall,

@@ -390,7 +390,7 @@ typedef struct gw_chain_softwall_outcome {
     int sheet_law;              /* gw_sheet_law */
     double *n;                  /* [nn] */
     double *kwall;              /* [nw] N/m^1.5 */
-    int *rigid, *saturated;     /* [nw] */
+    int *rigid, *saturated;     /* [nw]; saturated 1, 0, or -1 undecided (held columns) */
     double *f_max, *tau_max;    /* [nw * nn] N, s */
     double *t_max, *dt_out, *dt, *dt_max; /* [nw * nn] s: each collision, defaults resolved (dt: the
                                              RK4 step, 0 for cvode and arkode) */
@@ -411,8 +411,9 @@ typedef struct gw_chain_softwall_outcome {
        columns alone, as if the held sizes had not been run: f_plateau is F_max
        of the longest decided column (NaN: none), N_d is located only where
        decided columns bound it (n_d_at_most when the plateau reaches back to a
-       held column; saturated 0 where too few decided sizes lie on it, a
-       warning calling N_d undecided), and t_q_rigid fits the rigid wall's
+       held column; saturated -1, undecided, where held columns leave too
+       few decided sizes on it, the longest held or one cutting the walk
+       short, a warning calling N_d undecided), and t_q_rigid fits the rigid wall's
        decided columns (NaN with fewer than two, and F.8 with it). */
     int n_held;                 /* held collisions, of ncase (counted in unfinished) */
     int *held;                  /* [nw * nn] 1: held [wall, N] (in the block of rigid: freed with it) */

@@ -114,6 +114,8 @@ static int exact_numbers(cJSON *o)
 
 size_t gw_utf8_len(const char *text)
 {
+    if (!text)
+        return 0;
     const unsigned char *s = (const unsigned char *)text, c = s[0];
     if (c < 0x80)
         return 1;

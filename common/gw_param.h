@@ -44,7 +44,9 @@ typedef enum gw_param_type {
     GW_PARAM_DARRAY = 8, /* result: double *, rows x cols, row-major */
     GW_PARAM_IARRAY = 9, /* result: int *, rows x cols */
     GW_PARAM_FARRAY = 10 /* result: int * of flags 0 or 1, rows x cols (Python: a
-                            bool array, as the JSON's true/false) */
+                            bool array, as the JSON's true/false); -1 where the
+                            row's help says undecided (JSON null, Python a
+                            masked array, masked there) */
 } gw_param_type;
 
 /* A list of numbers held by a parameter struct (GW_PARAM_LIST). */

@@ -285,4 +285,5 @@ static int run(int nk, const char *const *names, const char *const *values, doub
 }
 
 const gw_sweep_model gw_layer_sweep_model = {"layer",  NCOLUMNS, columns,       has_key,  run,
-                                             check,    memory,   "sample",      check_memo_fn, memo_free};
+                                             check,    memory,   "sample",      check_memo_fn, memo_free,
+                                             NULL /* memo_warnings: none */};

@@ -12,6 +12,9 @@
 #   py_checks: the Python script on stdin run against this build's module and
 #   library, each line it prints "PASS: ..." or "FAIL: ..." counted as a check;
 #   skipped, saying so and setting py_skipped, in a sanitizer build.
+#   sanitizer_build: true in a sanitizer build (GW_SANITIZE: the program linked
+#   against ASan's or UBSan's runtime, or holding ASan's entry point, as a
+#   static runtime would): the one test of it that the scripts share.
 # the counters, ok and ko, and the run-control helpers: test_lib.sh
 # shellcheck source=tests/test_lib.sh
 . "$(dirname "${BASH_SOURCE[0]}")/test_lib.sh"
@@ -50,10 +53,14 @@ runs_json() {
 }
 jq_py() { /usr/bin/python3 -c "import json,sys; d=json.load(open('$1')); print($2)"; }
 
+sanitizer_build() {
+    ldd "$GW" 2>/dev/null | grep -qE 'lib(a|ub)san' || grep -qa '__asan_init' "$GW" 2>/dev/null
+}
+
 py_checks() {
     # a sanitizer build's library needs its runtime loaded first, which Python's
     # interpreter is not built with: the checks are said to be skipped there
-    if ldd "$GW" 2>/dev/null | grep -qE 'lib(a|ub)san'; then
+    if sanitizer_build; then
         cat >/dev/null
         echo "SKIP: the Python checks (a sanitizer build's library does not load into Python)"
         py_skipped=1

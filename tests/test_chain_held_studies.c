@@ -390,8 +390,9 @@ static void softwall_held(void)
     gw_test_true(agree, "softwall: the outcome's held flags are chain's verdicts");
     gw_test_rel(o.f_plateau[0], f[11], 0, "softwall: the plateau is F_max of the longest decided column, N = 12");
     int nd = n_d_decided(f, decided, 14, 0.02);
-    gw_test_true(nd == 0 && isnan(o.n_d[0]) && isnan(o.n_d_at_most[0]) && !o.saturated[0],
-                 "softwall --tol 0.02: fewer than 6 decided sizes on the plateau, N_d NaN (undecided)");
+    gw_test_true(nd == 0 && isnan(o.n_d[0]) && isnan(o.n_d_at_most[0]) && o.saturated[0] == -1,
+                 "softwall --tol 0.02: fewer than 6 decided sizes on the plateau, N_d NaN and saturated -1 "
+                 "(undecided)");
     int all[14];
     for (int k = 0; k < 14; k++)
         all[k] = 1;

@@ -40,10 +40,6 @@ SRC=$(cd "$SRC" && pwd)
 cd "$tmp" || exit 1
 export LSAN_OPTIONS="suppressions=$SRC/tests/lsan.supp:print_suppressions=0"
 PY=/usr/bin/python3
-# the sanitizer build reserves terabytes of shadow memory: no ulimit -v there
-sanitized=0
-ldd "$GW" 2>/dev/null | grep -qE 'lib(a|ub)san' && sanitized=1
-grep -qa '__asan_init' "$GW" 2>/dev/null && sanitized=1
 
 # --- 1 one option under two spellings ---
 printf '[sweep]\nmodel = chain\n[grid]\nwall-material = steel, glass, pmma\n[params]\nsolver = rk4\nwall_material = rigid\nn = 3\n' >a.ini
@@ -170,8 +166,8 @@ with open("fine.txt", "w") as f:
         f.write("%.17g %.17g %.17g\n" % ((i % nx) * 2 * r + r, (i // nx) * 2 * r + r, r))
 EOF
 rm -rf o
-lim=""
-[ $sanitized -eq 0 ] && lim="ulimit -v 2000000;"
+lim="" # the sanitizer build reserves terabytes of shadow memory: no ulimit -v there
+sanitizer_build || lim="ulimit -v 2000000;"
 bash -c "$lim exec timeout -s KILL 120 \"$GW\" layer-impact --sample fine.txt --t-max 1e-4 --until verdict --out o" \
     >stdout 2>stderr </dev/null
 rc=$?

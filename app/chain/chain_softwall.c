@@ -47,15 +47,6 @@ static cJSON *sheet_json(const gw_chain_softwall_outcome *so, int w, const gw_sh
     return e;
 }
 
-/* columns of wall w held by gravity (their F_max undecided) */
-static int wall_held(const gw_chain_softwall_outcome *so, int w)
-{
-    int held = 0;
-    for (int k = 0; k < so->nn; k++)
-        held += so->held[(size_t)w * so->nn + k];
-    return held;
-}
-
 static const char *sw_summary =
     "Columns on a soft wall: F_max(N) and tau_max(N) for a wall coefficient K, the\n"
     "saturation number N_d (F_max within --tol of its plateau from N_d on) against\n"
@@ -189,7 +180,10 @@ int gw_cmd_softwall(int argc, char **argv)
             cJSON_AddNumberToObject(e, "tau_max_at_n_d", so.tau_max_at_n_d[w]);
             /* the first size, when the plateau reaches back to it (N_d <= it; n_d null) */
             cJSON_AddNumberToObject(e, "n_d_at_most", so.n_d_at_most[w]);
-            cJSON_AddBoolToObject(e, "saturated", so.saturated[w]);
+            if (so.saturated[w] < 0) /* undecided: held columns (the warning says), never false */
+                cJSON_AddNullToObject(e, "saturated");
+            else
+                cJSON_AddBoolToObject(e, "saturated", so.saturated[w]);
         }
         if (use_sheets || c.sheet) { /* --sheets, or one --sheet: model against measured */
             cJSON_AddStringToObject(o, "sheet_law", gw_sheet_law_name(c.law));
@@ -225,11 +219,11 @@ int gw_cmd_softwall(int argc, char **argv)
                 if (use_sheets)
                     snprintf(meas, sizeof meas, "%g +- %g", gw_sheet_get(w)->n_d, gw_sheet_get(w)->n_d_err);
                 char nd[32], np[32];
-                if (so.saturated[w] && isnan(so.n_d[w]))
+                if (so.saturated[w] > 0 && isnan(so.n_d[w]))
                     snprintf(nd, sizeof nd, "<= %d", (int)so.n_d_at_most[w]);
-                else if (so.saturated[w])
+                else if (so.saturated[w] > 0)
                     snprintf(nd, sizeof nd, "%d", (int)so.n_d[w]);
-                else if (wall_held(&so, w)) /* the decided columns do not locate it (the warning says) */
+                else if (so.saturated[w] < 0) /* held columns keep the decided ones from locating it (the warning says) */
                     snprintf(nd, sizeof nd, "undecided");
                 else
                     snprintf(nd, sizeof nd, "not in %ld", b);

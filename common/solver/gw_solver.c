@@ -115,6 +115,8 @@ int gw_solver_create(const gw_solver_type *type, const gw_system *sys,
                      const gw_solver_params *p, double t0, const double *y0,
                      gw_solver **out, gw_err *err)
 {
+    if (!out)
+        return gw_err_set(err, GW_EINVAL, "gw_solver_create: out is NULL");
     *out = NULL;
     if (!type)
         return gw_err_set(err, GW_EINVAL, "solver: unknown backend");
@@ -165,6 +167,8 @@ int gw_solver_interrupted(gw_solver *s, double t)
 
 int gw_solver_advance(gw_solver *s, double tout, double *t, double *y, int *rootsfound)
 {
+    if (!s || !t || !y)
+        return GW_EINVAL;
     s->errmsg[0] = '\0';
     int rc = s->type->advance(s, tout, t, y, rootsfound);
     if (rc < 0 && rc != GW_ECANCELED && gw_solver_interrupted(s, *t)) /* CVODE or ARKode: their rhs failed */
@@ -174,6 +178,8 @@ int gw_solver_advance(gw_solver *s, double tout, double *t, double *y, int *root
 
 int gw_solver_reset(gw_solver *s, double t, const double *y)
 {
+    if (!s || !y)
+        return GW_EINVAL;
     s->restarts++;
     return s->type->reset(s, t, y);
 }
@@ -191,6 +197,8 @@ static int drive_failed(gw_solver *s, const gw_drive *d, int rc, gw_err *err)
 
 int gw_solver_drive(gw_solver *s, gw_drive *d, double *t, double *y, int *roots, gw_err *err)
 {
+    if (!s || !d || !t || !y)
+        return gw_err_set(err, GW_EINVAL, "gw_solver_drive: %s is NULL", !s ? "s" : !d ? "d" : !t ? "t" : "y");
     if (d->k_out < 1)
         d->k_out = 1;
     while (*t < d->t_end) {
@@ -231,6 +239,12 @@ int gw_solver_drive(gw_solver *s, gw_drive *d, double *t, double *y, int *roots,
 
 void gw_solver_get_stats(const gw_solver *s, gw_solver_stats *st)
 {
+    if (!st)
+        return;
+    if (!s) { /* no solver: no steps */
+        memset(st, 0, sizeof *st);
+        return;
+    }
     memset(st, 0, sizeof *st);
     s->type->stats(s, st);
     st->restarts = s->restarts;
@@ -238,11 +252,15 @@ void gw_solver_get_stats(const gw_solver *s, gw_solver_stats *st)
 
 const char *gw_solver_error(const gw_solver *s)
 {
+    if (!s)
+        return "no solver";
     return s->errmsg;
 }
 
 const gw_solver_type *gw_solver_get_type(const gw_solver *s)
 {
+    if (!s)
+        return NULL;
     return s->type;
 }
 

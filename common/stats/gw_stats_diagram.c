@@ -113,6 +113,12 @@ static void column_boundary(gw_stats_diagram *d, int i)
 int gw_stats_diagram_make(int n, const double *x, const double *h, const double *share,
                           const double *pen, double criterion, gw_stats_diagram *d, gw_err *err)
 {
+    if (!d)
+        return gw_err_set(err, GW_EINVAL, "gw_stats_diagram_make: d is NULL");
+    if (n > 0 && (!x || !h || !share || !pen)) {
+        memset(d, 0, sizeof *d);
+        return gw_err_set(err, GW_EINVAL, "gw_stats_diagram_make: %s is NULL", !x ? "x" : !h ? "h" : !share ? "share" : "pen");
+    }
     memset(d, 0, sizeof *d);
     d->criterion = criterion;
     char *keep = malloc((size_t)n + 1);
@@ -193,6 +199,8 @@ int gw_stats_diagram_make(int n, const double *x, const double *h, const double 
 
 double gw_stats_b31_eval(const gw_stats_b31 *p, double x)
 {
+    if (!p)
+        return NAN;
     double T = p->tan_gamma, K = p->a_over_b * T, u = x - p->beta;
     double r = sqrt(u * u + K * x * x);
     double g = u > 0 ? K * x * x / (r + u) : r - u;
@@ -201,6 +209,13 @@ double gw_stats_b31_eval(const gw_stats_b31 *p, double x)
 
 void gw_stats_b31_min(const gw_stats_b31 *p, double *x_min, double *f_min)
 {
+    if (!p || !x_min || !f_min) {
+        if (x_min)
+            *x_min = NAN;
+        if (f_min)
+            *f_min = NAN;
+        return;
+    }
     double K = p->a_over_b * p->tan_gamma;
     *x_min = 2 * p->beta / (1 + K);
     *f_min = p->offset + p->a_over_b * p->beta / (1 + K);
@@ -586,6 +601,12 @@ static int b31_fit(const double *x, const double *h, int n, const gw_stats_b31 *
 int gw_stats_b31_fit_points(const double *x, const double *h, int n, const gw_stats_b31 *start,
                             int free_mask, gw_stats_b31_fit *fit, gw_err *err)
 {
+    if (!fit)
+        return gw_err_set(err, GW_EINVAL, "gw_stats_b31_fit_points: fit is NULL");
+    if (!start || (n > 0 && (!x || !h))) {
+        memset(fit, 0, sizeof *fit);
+        return gw_err_set(err, GW_EINVAL, "gw_stats_b31_fit_points: %s is NULL", !start ? "start" : !x ? "x" : "h");
+    }
     memset(fit, 0, sizeof *fit);
     gsl_error_handler_t *old = gw_gsl_quiet_begin();
     const int rc = b31_fit(x, h, n, start, free_mask, fit, err);

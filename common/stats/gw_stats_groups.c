@@ -22,6 +22,10 @@
 
 void gw_stats_moment_of(const double *v, int n, gw_stats_moment *m)
 {
+    if (!m)
+        return;
+    if (!v) /* no values: as n of them not finite */
+        n = 0;
     double s = 0, lo = INFINITY, hi = -INFINITY;
     int k = 0;
     for (int i = 0; i < n; i++)
@@ -232,6 +236,8 @@ void gw_stats_groups_free(gw_stats_groups *gs)
 
 int gw_stats_table_same(const gw_stats_table *t, long ra, long rb, int key)
 {
+    if (!t || key < 0 || key >= t->ngrid || ra < 0 || rb < 0 || ra >= t->nrows || rb >= t->nrows)
+        return 0;
     const double a = t->grid_num[ra * t->ngrid + key], b = t->grid_num[rb * t->ngrid + key];
     if (!isnan(a) || !isnan(b))
         return a == b;
@@ -263,6 +269,11 @@ static char *row_key_string(const gw_stats_table *t, const gw_stats_groups *gs, 
 int gw_stats_groups_make(const gw_stats_table *t, double criterion, gw_stats_groups *gs,
                          gw_err *err)
 {
+    if (!t || !gs) {
+        if (gs)
+            memset(gs, 0, sizeof *gs);
+        return gw_err_set(err, GW_EINVAL, "gw_stats_groups_make: %s is NULL", !t ? "t" : "gs");
+    }
     memset(gs, 0, sizeof *gs);
     if (!(criterion > 0 && criterion <= 1))
         return gw_err_set(err, GW_EINVAL, "criterion: %g is not in (0, 1]", criterion);

@@ -265,6 +265,8 @@ static cJSON *walls_json(const gw_stats_analysis *R)
 
 cJSON *gw_stats_json(const gw_stats_analysis *R, int full)
 {
+    if (!R)
+        return NULL;
     const gw_stats_table *t = &R->t;
     cJSON *o = cJSON_CreateObject();
     cJSON_AddStringToObject(o, "program", "granwave layer-stats");

@@ -66,6 +66,8 @@ void gw_stats_setup_clear(gw_stats_setup *s)
 
 int gw_stats_fit_parse(const char *s, int *mask, gw_err *err)
 {
+    if (!s || !mask)
+        return gw_err_set(err, GW_EINVAL, "gw_stats_fit_parse: %s is NULL", !s ? "s" : "mask");
     static const struct {
         const char *name;
         int bit;
@@ -383,6 +385,11 @@ static int warnings_make(gw_stats_analysis *A)
 
 int gw_stats_analyse(const gw_stats_setup *s, gw_stats_analysis *A, gw_err *err)
 {
+    if (!s || !A) {
+        if (A)
+            memset(A, 0, sizeof *A);
+        return gw_err_set(err, GW_EINVAL, "gw_stats_analyse: %s is NULL", !s ? "s" : "A");
+    }
     memset(A, 0, sizeof *A);
     int rc = gw_param_check(setup_params, s, err);
     if (rc != GW_OK)

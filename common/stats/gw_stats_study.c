@@ -86,6 +86,13 @@ const gw_param *gw_stats_outcome_fields(void)
 
 void gw_stats_group_row(const gw_stats_group *g, double row[GW_STATS_GROUP_NCOLS])
 {
+    if (!row)
+        return;
+    if (!g) { /* no group: no numbers */
+        for (int k = 0; k < GW_STATS_GROUP_NCOLS; k++)
+            row[k] = NAN;
+        return;
+    }
     int i = 0;
     row[i++] = g->n;
     row[i++] = g->n_valid;

@@ -473,6 +473,14 @@ static int add_grid_list(gw_stats_table *t, char *text, long ln, gw_err *err)
 
 int gw_stats_table_parse(const char *text, const char *name, gw_stats_table *t, gw_err *err)
 {
+    if (!t)
+        return gw_err_set(err, GW_EINVAL, "gw_stats_table_parse: t is NULL");
+    if (!text) {
+        memset(t, 0, sizeof *t);
+        return gw_err_set(err, GW_EINVAL, "gw_stats_table_parse: text is NULL");
+    }
+    if (!name)
+        name = "";
     memset(t, 0, sizeof *t);
     t->sweep_rows = t->sweep_cases = -1;
     gw_snprintf(t->path, sizeof t->path, "%s", name);
@@ -573,6 +581,8 @@ int gw_stats_table_read(const char *path, gw_stats_table *t, gw_err *err)
 
 int gw_stats_table_col(const gw_stats_table *t, const char *name)
 {
+    if (!t || !name)
+        return -1;
     for (int i = 0; i < t->ncols; i++)
         if (strcmp(t->col_name[i], name) == 0)
             return i;
@@ -581,6 +591,8 @@ int gw_stats_table_col(const gw_stats_table *t, const char *name)
 
 int gw_stats_table_key(const gw_stats_table *t, const char *name)
 {
+    if (!t || !name)
+        return -1;
     for (int i = 0; i < t->ngrid; i++)
         if (gw_stats_same_key(t->grid_name[i], name))
             return i;
@@ -589,6 +601,8 @@ int gw_stats_table_key(const gw_stats_table *t, const char *name)
 
 const char *gw_stats_table_param(const gw_stats_table *t, const char *name)
 {
+    if (!t || !name)
+        return NULL;
     for (int i = 0; i < t->nparams; i++)
         if (gw_stats_same_key(t->param_name[i], name))
             return t->param_value[i];
@@ -597,6 +611,8 @@ const char *gw_stats_table_param(const gw_stats_table *t, const char *name)
 
 double gw_stats_table_value(const gw_stats_table *t, long i, const char *name, double dflt)
 {
+    if (!t || !name || i < 0 || i >= t->nrows)
+        return dflt;
     int k = gw_stats_table_key(t, name);
     if (k >= 0)
         return t->grid_num[i * t->ngrid + k];

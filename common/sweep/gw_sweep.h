@@ -107,6 +107,12 @@ typedef struct gw_sweep_model {
      * verdicts and messages are check's. */
     int (*check_memo)(void **memo, int nkeys, const char *const *names, const char *const *values, gw_err *err);
     void (*memo_free)(void *memo);
+    /* The warnings of a pass of check_memo over the sweep's cases (may be
+     * NULL: none), called with its memo before memo_free: lines appended to
+     * *list (gw_warnings_add), each saying how many of the cases checked it
+     * concerns (a chain case whose dt is above the step it will take), one
+     * line for a thousand cases, not one each. GW_OK or GW_ENOMEM. */
+    int (*memo_warnings)(const void *memo, char **list);
 } gw_sweep_model;
 
 /* Check case k of a pass over a model's cases (check_memo with *memo when the

@@ -128,7 +128,7 @@ class Study:
         lines = [intro, "", "Keywords (the flags of `granwave %s`, '-' written '_'; units SI):" % self.name]
         lines += ["  " + p.doc() for p in self.params]
         lines += ["", "Results (keys of the returned Result):"]
-        kind = {FLAG: " (bool; 1 is True, 0 False, -1 None)", FARRAY: " (bool array)"}
+        kind = {FLAG: " (bool; 1 is True, 0 False, -1 None)", FARRAY: " (bool array; masked where -1, undecided)"}
         lines += ["  " + f.name + (f" [{f.unit}]" if f.unit else "") + kind.get(f.type, "") + ": " + f.help
                   for f in self.fields]
         return "\n".join(lines)

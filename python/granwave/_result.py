@@ -28,6 +28,9 @@ def same_value(a, b):
     if isinstance(a, np.ndarray) or isinstance(b, np.ndarray):
         if not (isinstance(a, np.ndarray) and isinstance(b, np.ndarray)) or a.shape != b.shape:
             return False
+        if np.ma.isMaskedArray(a) or np.ma.isMaskedArray(b):  # undecided flags: masked in the same places
+            ma, mb = np.ma.getmaskarray(a), np.ma.getmaskarray(b)
+            return bool((ma == mb).all() and np.array_equal(np.ma.getdata(a)[~ma], np.ma.getdata(b)[~mb]))
         try:
             return bool(np.array_equal(a, b, equal_nan=True))
         except TypeError:  # text columns (a sweep's grid of names): no NaN to match
@@ -43,7 +46,9 @@ def same_value(a, b):
 class Result(dict):
     """A study's results: a dict (keys as in the CLI's JSON) with attribute access.
     Numbers are Python floats and ints, yes/no results bools (None where the
-    program's JSON has null: undecided), series numpy arrays; tables with named
+    program's JSON has null: undecided), series numpy arrays, yes/no arrays
+    bool arrays (a numpy masked array, masked where undecided, when any entry
+    is: tolist() gives None there, as the JSON's null); tables with named
     columns (the energy ledger) are dicts of arrays. Two results are == when
     they hold the same results: the same keys, arrays of the same shape and
     values (NaN equal to NaN in the same place), the same numbers; the run's
@@ -124,8 +129,8 @@ def read_result(fields, base):
             continue
         ctype = ctypes.c_double if f.type == DARRAY else ctypes.c_int
         a = np.ctypeslib.as_array((ctype * (rows * cols)).from_address(ptr)).copy()
-        if f.type == FARRAY:
-            a = a != 0
+        if f.type == FARRAY:  # as the JSON's true, false and null: -1 (undecided) masked
+            a = np.ma.MaskedArray(a > 0, mask=a < 0) if (a < 0).any() else a != 0
         if f.cols is not None:
             a = a.reshape(rows, cols)
         if f.choices and a.ndim == 2 and len(f.choices) == cols:

@@ -20,7 +20,7 @@ static int has_key(const char *name)
 }
 
 static const char *const cols[] = {"a", "b"};
-static const gw_sweep_model model = {"chain", 2, cols, has_key, NULL, NULL, NULL, NULL, NULL, NULL};
+static const gw_sweep_model model = {"chain", 2, cols, has_key, NULL, NULL, NULL, NULL, NULL, NULL, NULL};
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {

@@ -27,7 +27,7 @@ static int has_key(const char *name)
 }
 
 static const char *const cols[] = {"a", "b"};
-static const gw_sweep_model model = {"chain", 2, cols, has_key, NULL, NULL, NULL, NULL, NULL, NULL};
+static const gw_sweep_model model = {"chain", 2, cols, has_key, NULL, NULL, NULL, NULL, NULL, NULL, NULL};
 static const char config[] = "[sweep]\nmodel = chain\n[grid]\nn = 1, 2, 3\nvimp = 0.1, 0.2\n[params]\nk = 5\n";
 static gw_sweep_config cfg;
 static char dir[64], journal[128];

@@ -110,6 +110,28 @@ def test_sample_write_null_sample_refused(tmp_path):
     assert not (tmp_path / "s.txt").exists()
 
 
+# void calls given NULL: nothing to return, nothing done (they dereferenced it: SIGSEGV)
+_NULL_VOID_CALLS = [
+    ("gw_chain_trace_init", "[None, ctypes.c_int(3)]"),
+    ("gw_thornton_init", "[None, ctypes.c_double(1e11), ctypes.c_double(1e-3), ctypes.c_double(1e8)]"),
+]
+
+
+@pytest.mark.parametrize("name, args", _NULL_VOID_CALLS)
+def test_null_void_calls_no_crash(name, args):
+    lib = granwave.library_path
+    code = f"""
+import ctypes
+lib = ctypes.CDLL({lib!r})
+f = getattr(lib, {name!r})
+f.restype = None
+f(*{args})
+print("done")
+"""
+    p = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=60)
+    assert p.returncode == 0 and p.stdout.strip() == "done", (name, p.returncode, p.stderr[-300:])
+
+
 def _null_call(name, args, arg):
     """name(*args, err) in a child interpreter: -1 and 'NAME: ARG is NULL'."""
     lib = granwave.library_path

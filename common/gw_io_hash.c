@@ -24,6 +24,8 @@ unsigned long long gw_fnv1a64(unsigned long long h, const void *p, size_t n)
 unsigned long long gw_case_config_hash(const char *model, int n, const char *const *names,
                                        const char *const *values)
 {
+    if (!model || (n > 0 && (!names || !values))) /* (no case: the hash of none) */
+        return 0;
     unsigned long long h = gw_fnv1a64(GW_FNV1A64_INIT, "model ", 6);
     h = gw_fnv1a64(gw_fnv1a64(h, model, strlen(model)), "\n", 1);
     for (int i = 0; i < n; i++) {
@@ -53,6 +55,8 @@ int gw_fnv1a64_parse(const char *p, size_t len, unsigned long long *h)
 
 int gw_fnv1a64_stream(FILE *fp, unsigned long long *h)
 {
+    if (!fp || !h)
+        return GW_EINVAL;
     unsigned char buf[8192]; /* 64 KiB here overflowed a 64 KiB stack (ulimit -s 64) */
     size_t got;
     unsigned long long v = GW_FNV1A64_INIT;

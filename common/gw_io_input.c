@@ -24,6 +24,10 @@ const char *gw_io_file_kind(mode_t m)
 
 int gw_input_open(const char *path, const char *what, FILE **out, gw_err *err)
 {
+    if (!out)
+        return gw_err_set(err, GW_EINVAL, "gw_input_open: out is NULL");
+    if (!what)
+        what = "input";
     *out = NULL;
     if (!path || !*path)
         return gw_err_set(err, GW_EINVAL, "%s: empty file name", what);

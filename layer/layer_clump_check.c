@@ -90,6 +90,8 @@ const char *gw_layer_clump_mass_name(int clump_mass)
 
 int gw_layer_clump_mass_parse(const char *name)
 {
+    if (!name) /* no such rule */
+        return -1;
     for (int c = GW_LAYER_CLUMP_MASS_SUM; c <= GW_LAYER_CLUMP_MASS_UNION; c++)
         if (strcmp(name, gw_layer_clump_mass_name(c)) == 0)
             return c;

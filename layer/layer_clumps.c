@@ -262,21 +262,35 @@ int layer_bodies_build(gw_layer *L, const gw_layer_body *b, gw_err *err)
 
 int gw_layer_body_count(const gw_layer *L)
 {
+    if (!L)
+        return 0;
     return L->nb;
 }
 
 int gw_layer_body_of(const gw_layer *L, int i)
 {
+    if (!L || i < 0 || i >= L->n)
+        return -1;
     return layer_body(L, i);
 }
 
 void gw_layer_body_state(const gw_layer *L, int k, double s[6])
 {
+    if (!L || !s || k < 0 || k >= L->nb) { /* no such body */
+        for (int q = 0; s && q < 6; q++)
+            s[q] = NAN;
+        return;
+    }
     memcpy(s, L->y + 6 * k, 6 * sizeof *s);
 }
 
 void gw_layer_particle(const gw_layer *L, int i, double s[6])
 {
+    if (!L || !s || i < 0 || i >= L->n) { /* no such particle */
+        for (int q = 0; s && q < 6; q++)
+            s[q] = NAN;
+        return;
+    }
     if (!L->off) {
         memcpy(s, L->y + 6 * i, 6 * sizeof *s);
         return;

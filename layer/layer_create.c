@@ -35,6 +35,8 @@ gw_layer_params gw_layer_params_default(void)
 
 int gw_layer_params_validate(const gw_layer_params *p, gw_err *err)
 {
+    if (!p)
+        return gw_err_set(err, GW_EINVAL, "gw_layer_params_validate: p is NULL");
     int rc;
     /* the upper bounds keep K_n u^(3/2) and the energies finite in double
      * precision (diamond is 5e11 Pa, osmium 2.2e4 kg/m^3) */
@@ -63,17 +65,23 @@ int gw_layer_params_validate(const gw_layer_params *p, gw_err *err)
 
 double gw_layer_kn(const gw_layer_params *p, double rp)
 {
+    if (!p)
+        return NAN;
     return 2.0 * sqrt(2.0 * rp) * p->shear_modulus / (3.0 * (1.0 - p->poisson));
 }
 
 double gw_layer_kt_factor(const gw_layer_params *p, double rp)
 {
+    if (!p)
+        return NAN;
     double G = p->shear_modulus, nu = p->poisson;
     return 2.0 * cbrt(3.0 * G * G * (1.0 - nu) * rp) / (2.0 - nu);
 }
 
 double gw_layer_mass(const gw_layer_params *p, double r)
 {
+    if (!p)
+        return NAN;
     if (p->mass_law == GW_LAYER_MASS_SPHERE)
         return 4.0 / 3.0 * M_PI * r * r * r * p->density;
     return M_PI * r * r * p->density;
@@ -81,6 +89,8 @@ double gw_layer_mass(const gw_layer_params *p, double r)
 
 double gw_layer_inertia(const gw_layer_params *p, double r)
 {
+    if (!p)
+        return NAN;
     double m = gw_layer_mass(p, r);
     return (p->mass_law == GW_LAYER_MASS_SPHERE ? 0.4 : 0.5) * m * r * r;
 }
@@ -215,36 +225,53 @@ void gw_layer_free(gw_layer *L)
 
 void gw_layer_energy_of(const gw_layer *L, gw_layer_energy *e)
 {
+    if (!L || !e) {
+        if (e)
+            layer_energy_nan(e);
+        return;
+    }
     gw_layer_ledgers(L, e, NULL);
 }
 
 double gw_layer_energy_initial(const gw_layer *L)
 {
+    if (!L)
+        return NAN;
     return L->e0;
 }
 
 int gw_layer_n(const gw_layer *L)
 {
+    if (!L)
+        return 0;
     return L->n;
 }
 
 double gw_layer_time(const gw_layer *L)
 {
+    if (!L)
+        return NAN;
     return L->t;
 }
 
 double gw_layer_radius(const gw_layer *L, int i)
 {
+    if (!L || i < 0 || i >= L->n)
+        return NAN;
     return L->r[i];
 }
 
 double gw_layer_particle_mass(const gw_layer *L, int i)
 {
+    if (!L || i < 0 || i >= L->n)
+        return NAN;
     return L->m[layer_body(L, i)];
 }
 
 double gw_layer_particle_inertia(const gw_layer *L, int i)
 {
+    if (!L || i < 0 || i >= L->n)
+        return NAN;
     return L->inertia[layer_body(L, i)];
 }
 
@@ -255,12 +282,19 @@ const gw_layer_params *gw_layer_get_params(const gw_layer *L)
 
 void gw_layer_set_block(gw_layer *L, int i)
 {
+    if (!L)
+        return;
     L->block = i;
     L->block_body = i >= 0 ? layer_body(L, i) : -1;
 }
 
 void gw_layer_get_stats(const gw_layer *L, gw_layer_stats *st)
 {
+    if (!L || !st) {
+        if (st)
+            memset(st, 0, sizeof *st);
+        return;
+    }
     *st = L->st;
     if (L->solver) {
         gw_solver_stats ss;

@@ -226,6 +226,8 @@ static void resolved(const gw_layer_impact_result *r, double *c, double *cerr)
 
 int gw_layer_crowns(gw_layer_impact_result *r)
 {
+    if (!r)
+        return GW_EINVAL;
     const double thr = 1e-4 * r->e_incident;
     for (int k = 0; k < r->nrings; k++) {
         r->peak_strain_t[k] = peak_time(r->t, r->ring_strain + k, r->ns, r->nrings, thr);

@@ -79,6 +79,8 @@ static int put(hid_t file, const char *name, const double *data, hsize_t rows, h
 int gw_layer_impact_write_h5(const gw_layer_impact_result *r, const char *path, const char *header,
                              gw_err *err)
 {
+    if (!r || !path)
+        return gw_err_set(err, GW_EINVAL, "gw_layer_impact_write_h5: %s is NULL", !r ? "res" : "path");
     const size_t ns = (size_t)r->ns, nr = (size_t)r->nrings, nf = r->xcorr_delay ? (size_t)r->spec_len : 0;
     double *led = malloc((8 * ns + nf + 1) * sizeof *led);
     if (!led)
@@ -151,6 +153,8 @@ int gw_layer_impact_write_h5(const gw_layer_impact_result *r, const char *path, 
 int gw_layer_impact_write_h5(const gw_layer_impact_result *r, const char *path, const char *header,
                              gw_err *err)
 {
+    if (!r || !path)
+        return gw_err_set(err, GW_EINVAL, "gw_layer_impact_write_h5: %s is NULL", !r ? "res" : "path");
     (void)r, (void)header;
     return gw_err_set(err, GW_EUNSUPPORTED, "%s: this build has no HDF5", path);
 }

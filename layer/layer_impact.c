@@ -92,6 +92,8 @@ static double freeze_level(const gw_layer_sample *smp, double height_rm, double 
 
 int gw_layer_impact_check(const gw_layer_sample *smp, const gw_layer_impact_params *p, gw_err *err)
 {
+    if (!smp || !p)
+        return gw_err_set(err, GW_EINVAL, "gw_layer_impact_check: %s is NULL", !smp ? "s" : "ip");
     int rc;
     if (!(p->rb_rm > 0) || !isfinite(p->rb_rm))
         return gw_err_set(err, GW_EINVAL, "rb-rm: block radius %g R_m must be positive", p->rb_rm);
@@ -158,6 +160,8 @@ int gw_layer_impact_check(const gw_layer_sample *smp, const gw_layer_impact_para
 
 int gw_layer_impact_fall_check(const gw_layer_impact_params *ip, double g, gw_err *err)
 {
+    if (!ip)
+        return gw_err_set(err, GW_EINVAL, "gw_layer_impact_fall_check: ip is NULL");
     /* --gap 1 --vi 1 arrived at 4.54 m/s: e_n 0.86 and e 1.83 over V_i = 1,
      * a penetration of 1.06 m counted from the start, against e_n 0.179 and
      * 0.064 m for the same impact given as --vi 4.54 */
@@ -173,6 +177,8 @@ int gw_layer_impact_fall_check(const gw_layer_impact_params *ip, double g, gw_er
 int gw_layer_impact_gap_check(const gw_layer_sample *smp, const gw_layer_impact_params *p, double g,
                               gw_err *err)
 {
+    if (!smp || !p)
+        return gw_err_set(err, GW_EINVAL, "gw_layer_impact_gap_check: %s is NULL", !smp ? "s" : "ip");
     int rc = gw_layer_impact_fall_check(p, g, err);
     if (rc != GW_OK)
         return rc;
@@ -194,6 +200,8 @@ int gw_layer_impact_gap_check(const gw_layer_sample *smp, const gw_layer_impact_
 int gw_layer_impact_rest_check(const gw_layer_sample *smp, const gw_layer_params *lp, const char *name,
                                gw_err *err)
 {
+    if (!smp || !lp)
+        return gw_err_set(err, GW_EINVAL, "gw_layer_impact_rest_check: %s is NULL", !smp ? "s" : "lp");
     /* A settled pile rests on the floor: the floor's Hertz forces carry its
      * weight, less what the side walls hold by friction (0.97 to 1.006 of it
      * on the stored 300-disc samples, 0.88 in a 12 R_m box). The sample keeps
@@ -232,6 +240,8 @@ int gw_layer_impact_rest_check(const gw_layer_sample *smp, const gw_layer_params
 double gw_layer_impact_dem_dt(const gw_layer_sample *s, const gw_layer_params *lp,
                               const gw_layer_impact_params *ip)
 {
+    if (!s || !lp || !ip)
+        return NAN;
     double rmin = INFINITY;
     for (int i = 0; i < s->n; i++)
         rmin = fmin(rmin, s->r[i]);
@@ -356,6 +366,12 @@ int gw_layer_impact(const gw_layer_sample *smp, const gw_layer_params *lp0,
                     const gw_layer_impact_params *ip, const gw_solver_type *type,
                     const gw_solver_params *sp, gw_layer_impact_result *res, gw_err *err)
 {
+    if (!smp || !lp0 || !ip || !type || !sp || !res) {
+        if (res)
+            memset(res, 0, sizeof *res);
+        return gw_err_set(err, GW_EINVAL, "gw_layer_impact: %s is NULL",
+                          !smp ? "s" : !lp0 ? "lp" : !ip ? "ip" : !type ? "type" : !sp ? "sp" : "res");
+    }
     memset(res, 0, sizeof *res);
     int rc = gw_layer_impact_check(smp, ip, err);
     if (rc == GW_OK)

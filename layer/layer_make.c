@@ -537,6 +537,13 @@ static int check_work(const gw_layer_make_params *m, int n, int ncol, double pit
 int gw_layer_make(const gw_layer_params *lp0, const gw_layer_make_params *m,
                   gw_layer_sample *out, gw_layer_make_result *res, gw_err *err)
 {
+    if (!m || !out || !res) {
+        if (out)
+            memset(out, 0, sizeof *out);
+        if (res)
+            memset(res, 0, sizeof *res);
+        return gw_err_set(err, GW_EINVAL, "gw_layer_make: %s is NULL", !m ? "mp" : !out ? "out" : "res");
+    }
     memset(out, 0, sizeof *out);
     memset(res, 0, sizeof *res);
     int rc = check_make(m, err);

@@ -40,6 +40,8 @@ int layer_contact_region(const gw_layer *L, const layer_contact *c, const double
 
 int gw_layer_set_regions(gw_layer *L, double cx, double cy, double w, int nring, gw_err *err)
 {
+    if (!L)
+        return gw_err_set(err, GW_EINVAL, "gw_layer_set_regions: L is NULL");
     if (L->solver)
         return gw_err_set(err, GW_EINVAL, "layer: regions must be set before gw_layer_start");
     if (!isfinite(cx) || !isfinite(cy))
@@ -76,6 +78,8 @@ int gw_layer_set_regions(gw_layer *L, double cx, double cy, double w, int nring,
 
 int gw_layer_region_count(const gw_layer *L)
 {
+    if (!L)
+        return 0;
     return L->reg_n > 0 ? L->reg_n + 2 : 0;
 }
 
@@ -147,6 +151,11 @@ static void ledger_tail(const gw_layer *L, gw_layer_energy *e, gw_layer_energy *
 
 int gw_layer_ledgers(const gw_layer *L, gw_layer_energy *e, gw_layer_energy *regions)
 {
+    if (!L) { /* no layer: no regions, a ledger of NaN */
+        if (e)
+            layer_energy_nan(e);
+        return 0;
+    }
     const int nr = regions ? gw_layer_region_count(L) : 0;
     if (e)
         memset(e, 0, sizeof *e);

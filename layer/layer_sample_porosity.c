@@ -184,6 +184,8 @@ static int circle_arcs(const double *x, const double *y, const double *r, const 
 
 double gw_layer_sample_porosity(const gw_layer_sample *s)
 {
+    if (!s)
+        return NAN;
     double h = 0;
     for (int i = 0; i < s->n; i++)
         h = fmax(h, s->y[i] + s->r[i]);

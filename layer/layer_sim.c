@@ -285,6 +285,8 @@ static int layer_on_root(void *ctx, double t, double *y, const int *roots, gw_er
 
 int gw_layer_advance(gw_layer *L, double tout, gw_err *err)
 {
+    if (!L)
+        return gw_err_set(err, GW_EINVAL, "gw_layer_advance: L is NULL");
     if (!L->solver)
         return gw_err_set(err, GW_EINVAL, "layer: gw_layer_start was not called");
     while (L->t < tout) {
@@ -329,6 +331,8 @@ int gw_layer_advance(gw_layer *L, double tout, gw_err *err)
 
 void gw_layer_set_event_hook(gw_layer *L, gw_layer_event_fn fn, void *ctx)
 {
+    if (!L)
+        return;
     L->hook = fn;
     L->hook_ctx = ctx;
 }

@@ -73,6 +73,17 @@ const double *layer_snapshot(const gw_layer *L)
 void gw_layer_rings(const gw_layer *L, double cx, double cy, double w, int nring,
                     double *kin, double *strain, double *coord)
 {
+    if (!L || !kin || !strain || !coord) {
+        for (int k = 0; k < nring; k++) {
+            if (kin)
+                kin[k] = NAN;
+            if (strain)
+                strain[k] = NAN;
+            if (coord)
+                coord[k] = NAN;
+        }
+        return;
+    }
     const double *y = L->y, *snap = layer_snapshot(L), *xy = L->snap_xy;
     gw_layer *M = (gw_layer *)L; /* scratch only */
     const size_t need = (size_t)nring + (size_t)L->n;
@@ -135,6 +146,8 @@ void gw_layer_rings(const gw_layer *L, double cx, double cy, double w, int nring
 
 int gw_layer_contact_count(const gw_layer *L, int i)
 {
+    if (!L)
+        return 0;
     const double *snap = layer_snapshot(L);
     int c = 0;
     for (int k = 0; k < L->nc; k++)

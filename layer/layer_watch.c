@@ -31,6 +31,8 @@
 
 int gw_layer_watch_block(gw_layer *L, gw_layer_block_fn fn, void *ctx, gw_err *err)
 {
+    if (!L)
+        return gw_err_set(err, GW_EINVAL, "gw_layer_watch_block: L is NULL");
     if (L->block_body < 0)
         return gw_err_set(err, GW_EINVAL, "layer: the block watch needs a block (gw_layer_set_block)");
     if (L->solver)
@@ -101,6 +103,11 @@ static void vy_max_located(const gw_layer *L, gw_layer_block_extremes *ex)
 
 void gw_layer_block_extremes_get(const gw_layer *L, gw_layer_block_extremes *ex)
 {
+    if (!L || !ex) {
+        if (ex)
+            memset(ex, 0, sizeof *ex);
+        return;
+    }
     if (L->watch) {
         *ex = L->ext;
         if (ex->n > 0)

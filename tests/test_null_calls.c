@@ -1,7 +1,7 @@
 /*
  * test_null_calls.c: the exported calls of the column's module (gw_chain.h,
- * gw_chain_study.h), the solver layer (gw_solver.h) and the sweep statistics
- * (gw_stats.h) given NULL for their pointer arguments, all at once, each in a
+ * gw_chain_study.h), the solver layer (gw_solver.h), the sweep statistics
+ * (gw_stats.h), the sweep (gw_sweep.h) and the input files (gw_common.h) given NULL for their pointer arguments, all at once, each in a
  * child process, so that a crash fails its check and not the test. A call
  * that returns a status returns GW_EINVAL and names the argument ("NAME: ARG
  * is NULL"); an accessor returns NaN (a number), -1 (an index), 0 (a count),
@@ -9,27 +9,24 @@
  * it was given with NaN or zeros. gw_chain_trace_init and gw_thornton_init
  * dereferenced it (SIGSEGV), and so did the others here but gw_solver_error
  * (which returned a pointer into nothing): the twenty-ninth hostile pass gave
- * NULL one argument at a time. Not here yet, and still crashing given NULL
- * everywhere: the sweep journal's calls (gw_sweep_*), the input files'
- * (gw_input_open, gw_fnv1a64_stream, gw_case_config_hash) and the layer's
- * (gw_layer_*); one NULL among valid arguments: test_hostile_api.c and
+ * NULL one argument at a time. The sweep's calls (gw_sweep_*, 14) and the
+ * input files' (gw_input_open, gw_fnv1a64_stream, gw_case_config_hash)
+ * crashed the same way until the twenty-fifth session of stage 2 (17 of 17
+ * fail on the code before it); the layer's (gw_layer_*):
+ * test_layer_null_calls.c; one NULL among valid arguments: test_hostile_api.c and
  * tests/python/test_hostile_twentyninth_py.py.
  */
 #include <math.h>
 #include <string.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include "gw_chain.h"
 #include "gw_chain_study.h"
 #include "gw_solver.h"
 #include "gw_stats.h"
+#include "gw_sweep.h"
 #include "gw_test.h"
+#include "gw_test_calls.h"
 
-static int said(const gw_err *e, const char *text)
-{
-    return strstr(e->msg, text) != NULL;
-}
 
 static int c_gw_thornton_init(void)
 {
@@ -53,7 +50,7 @@ static int c_gw_sheet_kwall(void)
 
 static int c_gw_layer_law_create(void)
 {
-    gw_err e = {{0}}; return gw_layer_law_create(1e-3, gw_material_find("steel"), 1e-3, 1e9, 0.3, NULL, &e) == GW_EINVAL && said(&e, "gw_layer_law_create: out is NULL");
+    gw_err e = {{0}}; return gw_layer_law_create(1e-3, gw_material_find("steel"), 1e-3, 1e9, 0.3, NULL, &e) == GW_EINVAL && gw_test_said(&e, "gw_layer_law_create: out is NULL");
 }
 
 static int c_gw_layer_law_hertz_k(void)
@@ -73,12 +70,12 @@ static int c_gw_thornton_force(void)
 
 static int c_gw_chain_params_validate(void)
 {
-    gw_err e = {{0}}; return gw_chain_params_validate(NULL, &e) == GW_EINVAL && said(&e, "p is NULL");
+    gw_err e = {{0}}; return gw_chain_params_validate(NULL, &e) == GW_EINVAL && gw_test_said(&e, "p is NULL");
 }
 
 static int c_gw_sheet_apply(void)
 {
-    gw_err e = {{0}}; return gw_sheet_apply(NULL, GW_SHEET_FITTED, 0, 0, NULL, NULL, NULL, NULL, &e) == GW_EINVAL && said(&e, "s is NULL");
+    gw_err e = {{0}}; return gw_sheet_apply(NULL, GW_SHEET_FITTED, 0, 0, NULL, NULL, NULL, NULL, &e) == GW_EINVAL && gw_test_said(&e, "s is NULL");
 }
 
 static int c_gw_chain_bead_mass(void)
@@ -138,12 +135,12 @@ static int c_gw_chain_rk4_study_covers(void)
 
 static int c_gw_chain_memory_check(void)
 {
-    gw_err e = {{0}}; return gw_chain_memory_check(NULL, NULL, 0, &e) == GW_EINVAL && said(&e, "p is NULL");
+    gw_err e = {{0}}; return gw_chain_memory_check(NULL, NULL, 0, &e) == GW_EINVAL && gw_test_said(&e, "p is NULL");
 }
 
 static int c_gw_chain_run_check(void)
 {
-    gw_err e = {{0}}; return gw_chain_run_check(NULL, NULL, &e) == GW_EINVAL && said(&e, "p is NULL");
+    gw_err e = {{0}}; return gw_chain_run_check(NULL, NULL, &e) == GW_EINVAL && gw_test_said(&e, "p is NULL");
 }
 
 static int c_gw_chain_time_scale(void)
@@ -163,7 +160,7 @@ static int c_gw_chain_trace_sample(void)
 
 static int c_gw_chain_calibrate(void)
 {
-    gw_err e = {{0}}; return gw_chain_calibrate(NULL, NULL, 0.5, NULL, &e) == GW_EINVAL && said(&e, "p is NULL");
+    gw_err e = {{0}}; return gw_chain_calibrate(NULL, NULL, 0.5, NULL, &e) == GW_EINVAL && gw_test_said(&e, "p is NULL");
 }
 
 static int c_gw_chain_disp_dt_sample(void)
@@ -173,17 +170,17 @@ static int c_gw_chain_disp_dt_sample(void)
 
 static int c_gw_chain_disp_params_validate(void)
 {
-    gw_err e = {{0}}; return gw_chain_disp_params_validate(NULL, &e) == GW_EINVAL && said(&e, "p is NULL");
+    gw_err e = {{0}}; return gw_chain_disp_params_validate(NULL, &e) == GW_EINVAL && gw_test_said(&e, "p is NULL");
 }
 
 static int c_gw_chain_wall_spectrum(void)
 {
-    gw_err e = {{0}}; return gw_chain_wall_spectrum(NULL, 0, 1, 0, 0, 0, NULL, &e) == GW_EINVAL && said(&e, "sp is NULL");
+    gw_err e = {{0}}; return gw_chain_wall_spectrum(NULL, 0, 1, 0, 0, 0, NULL, &e) == GW_EINVAL && gw_test_said(&e, "sp is NULL");
 }
 
 static int c_gw_chain_drop_params_validate(void)
 {
-    gw_err e = {{0}}; return gw_chain_drop_params_validate(NULL, &e) == GW_EINVAL && said(&e, "p is NULL");
+    gw_err e = {{0}}; return gw_chain_drop_params_validate(NULL, &e) == GW_EINVAL && gw_test_said(&e, "p is NULL");
 }
 
 static int c_gw_chain_drop_impact_rises(void)
@@ -193,7 +190,7 @@ static int c_gw_chain_drop_impact_rises(void)
 
 static int c_gw_chain_setup_resolve(void)
 {
-    gw_err e = {{0}}; return gw_chain_setup_resolve(NULL, NULL, &e) == GW_EINVAL && said(&e, "s is NULL");
+    gw_err e = {{0}}; return gw_chain_setup_resolve(NULL, NULL, &e) == GW_EINVAL && gw_test_said(&e, "s is NULL");
 }
 
 static int c_gw_chain_falcon_analyse(void)
@@ -203,12 +200,12 @@ static int c_gw_chain_falcon_analyse(void)
 
 static int c_gw_chain_dispersion_solver(void)
 {
-    gw_err e = {{0}}; return gw_chain_dispersion_solver(NULL, NULL, NULL, &e) == GW_EINVAL && said(&e, "s is NULL");
+    gw_err e = {{0}}; return gw_chain_dispersion_solver(NULL, NULL, NULL, &e) == GW_EINVAL && gw_test_said(&e, "s is NULL");
 }
 
 static int c_gw_chain_drop_setup_gaps(void)
 {
-    gw_err e = {{0}}; return gw_chain_drop_setup_gaps(NULL, NULL, &e) == GW_EINVAL && said(&e, "s is NULL");
+    gw_err e = {{0}}; return gw_chain_drop_setup_gaps(NULL, NULL, &e) == GW_EINVAL && gw_test_said(&e, "s is NULL");
 }
 
 static int c_gw_chain_drop_block_params(void)
@@ -218,7 +215,7 @@ static int c_gw_chain_drop_block_params(void)
 
 static int c_gw_solver_create(void)
 {
-    gw_err e = {{0}}; return gw_solver_create(NULL, NULL, NULL, 0, NULL, NULL, &e) == GW_EINVAL && said(&e, "out is NULL");
+    gw_err e = {{0}}; return gw_solver_create(NULL, NULL, NULL, 0, NULL, NULL, &e) == GW_EINVAL && gw_test_said(&e, "out is NULL");
 }
 
 static int c_gw_solver_advance(void)
@@ -233,7 +230,7 @@ static int c_gw_solver_reset(void)
 
 static int c_gw_solver_drive(void)
 {
-    gw_err e = {{0}}; return gw_solver_drive(NULL, NULL, NULL, NULL, NULL, &e) == GW_EINVAL && said(&e, "s is NULL");
+    gw_err e = {{0}}; return gw_solver_drive(NULL, NULL, NULL, NULL, NULL, &e) == GW_EINVAL && gw_test_said(&e, "s is NULL");
 }
 
 static int c_gw_solver_get_stats(void)
@@ -253,7 +250,7 @@ static int c_gw_solver_error(void)
 
 static int c_gw_stats_table_parse(void)
 {
-    gw_err e = {{0}}, e2 = {{0}}; gw_stats_table t; return gw_stats_table_parse(NULL, NULL, NULL, &e) == GW_EINVAL && said(&e, "t is NULL") && gw_stats_table_parse(NULL, NULL, &t, &e2) == GW_EINVAL && said(&e2, "text is NULL");
+    gw_err e = {{0}}, e2 = {{0}}; gw_stats_table t; return gw_stats_table_parse(NULL, NULL, NULL, &e) == GW_EINVAL && gw_test_said(&e, "t is NULL") && gw_stats_table_parse(NULL, NULL, &t, &e2) == GW_EINVAL && gw_test_said(&e2, "text is NULL");
 }
 
 static int c_gw_stats_table_col(void)
@@ -288,12 +285,12 @@ static int c_gw_stats_moment_of(void)
 
 static int c_gw_stats_groups_make(void)
 {
-    gw_err e = {{0}}; return gw_stats_groups_make(NULL, 0.5, NULL, &e) == GW_EINVAL && said(&e, "t is NULL");
+    gw_err e = {{0}}; return gw_stats_groups_make(NULL, 0.5, NULL, &e) == GW_EINVAL && gw_test_said(&e, "t is NULL");
 }
 
 static int c_gw_stats_diagram_make(void)
 {
-    gw_err e = {{0}}; return gw_stats_diagram_make(3, NULL, NULL, NULL, NULL, 0.5, NULL, &e) == GW_EINVAL && said(&e, "d is NULL");
+    gw_err e = {{0}}; return gw_stats_diagram_make(3, NULL, NULL, NULL, NULL, 0.5, NULL, &e) == GW_EINVAL && gw_test_said(&e, "d is NULL");
 }
 
 static int c_gw_stats_b31_eval(void)
@@ -308,17 +305,17 @@ static int c_gw_stats_b31_min(void)
 
 static int c_gw_stats_b31_fit_points(void)
 {
-    gw_err e = {{0}}; return gw_stats_b31_fit_points(NULL, NULL, 3, NULL, 0, NULL, &e) == GW_EINVAL && said(&e, "fit is NULL");
+    gw_err e = {{0}}; return gw_stats_b31_fit_points(NULL, NULL, 3, NULL, 0, NULL, &e) == GW_EINVAL && gw_test_said(&e, "fit is NULL");
 }
 
 static int c_gw_stats_fit_parse(void)
 {
-    gw_err e = {{0}}; return gw_stats_fit_parse(NULL, NULL, &e) == GW_EINVAL && said(&e, "s is NULL");
+    gw_err e = {{0}}; return gw_stats_fit_parse(NULL, NULL, &e) == GW_EINVAL && gw_test_said(&e, "s is NULL");
 }
 
 static int c_gw_stats_analyse(void)
 {
-    gw_err e = {{0}}; return gw_stats_analyse(NULL, NULL, &e) == GW_EINVAL && said(&e, "s is NULL");
+    gw_err e = {{0}}; return gw_stats_analyse(NULL, NULL, &e) == GW_EINVAL && gw_test_said(&e, "s is NULL");
 }
 
 static int c_gw_stats_json(void)
@@ -336,10 +333,92 @@ static int c_gw_utf8_len(void)
     return gw_utf8_len(NULL) == 0;
 }
 
-static const struct {
-    const char *name;
-    int (*call)(void);
-} calls[] = {
+static int c_gw_sweep_case_check(void)
+{
+    gw_err e = {{0}}; return gw_sweep_case_check(NULL, NULL, 1, NULL, NULL, &e) == GW_EINVAL && gw_test_said(&e, "gw_sweep_case_check: m is NULL");
+}
+
+static int c_gw_sweep_checks_end(void)
+{
+    gw_sweep_checks_end(NULL, NULL); return 1;
+}
+
+static int c_gw_sweep_case(void)
+{
+    return gw_sweep_case(NULL, 0, NULL, NULL) == GW_EINVAL;
+}
+
+static int c_gw_sweep_format_row(void)
+{
+    return gw_sweep_format_row(NULL, 0, NULL, 1, 0, NULL, 16) == GW_EINVAL;
+}
+
+static int c_gw_sweep_case_hash(void)
+{
+    return gw_sweep_case_hash(NULL, 0) == 0;
+}
+
+static int c_gw_sweep_row_check(void)
+{
+    gw_err e = {{0}}; return gw_sweep_row_check(NULL, NULL, &e) == GW_EINVAL && gw_test_said(&e, "gw_sweep_row_check: cfg is NULL");
+}
+
+static int c_gw_sweep_journal_scan(void)
+{
+    gw_err e = {{0}}; long nd = 7; return gw_sweep_journal_scan(NULL, NULL, NULL, &nd, &e) == GW_EINVAL && nd == 0 && gw_test_said(&e, "dir is NULL");
+}
+
+static int c_gw_sweep_journal_open(void)
+{
+    gw_err e = {{0}}; int fd = 3; return gw_sweep_journal_open(NULL, NULL, NULL, NULL, &fd, &e) == GW_EINVAL && fd == -1 && gw_test_said(&e, "dir is NULL");
+}
+
+static int c_gw_sweep_journal_resume_check(void)
+{
+    gw_err e = {{0}}; return gw_sweep_journal_resume_check(NULL, NULL, NULL, NULL, NULL, NULL, NULL, &e) == GW_EINVAL && gw_test_said(&e, "dir is NULL");
+}
+
+static int c_gw_sweep_inputs_check(void)
+{
+    gw_err e = {{0}}; return gw_sweep_inputs_check(NULL, &e) == GW_EINVAL && gw_test_said(&e, "gw_sweep_inputs_check: cfg is NULL");
+}
+
+static int c_gw_sweep_case_inputs_check(void)
+{
+    gw_err e = {{0}}; return gw_sweep_case_inputs_check(NULL, 0, &e) == GW_EINVAL && gw_test_said(&e, "gw_sweep_case_inputs_check: cfg is NULL");
+}
+
+static int c_gw_sweep_journal_append(void)
+{
+    gw_err e = {{0}}; return gw_sweep_journal_append(-1, NULL, NULL, &e) == GW_EINVAL && gw_test_said(&e, "gw_sweep_journal_append: row is NULL");
+}
+
+static int c_gw_sweep_memory_check(void)
+{
+    gw_err e = {{0}}; return gw_sweep_memory_check(NULL, NULL, 1, 0, NULL, &e) == GW_EINVAL && gw_test_said(&e, "gw_sweep_memory_check: cfg is NULL");
+}
+
+static int c_gw_sweep_size_check(void)
+{
+    gw_err e = {{0}}; return gw_sweep_size_check(NULL, NULL, &e) == GW_EINVAL && gw_test_said(&e, "gw_sweep_size_check: cfg is NULL");
+}
+
+static int c_gw_input_open(void)
+{
+    gw_err e = {{0}}; return gw_input_open(NULL, NULL, NULL, &e) == GW_EINVAL && gw_test_said(&e, "gw_input_open: out is NULL");
+}
+
+static int c_gw_fnv1a64_stream(void)
+{
+    return gw_fnv1a64_stream(NULL, NULL) == GW_EINVAL;
+}
+
+static int c_gw_case_config_hash(void)
+{
+    return gw_case_config_hash(NULL, 1, NULL, NULL) == 0;
+}
+
+static const gw_test_call calls[] = {
     {"gw_thornton_init", c_gw_thornton_init},
     {"gw_chain_trace_init", c_gw_chain_trace_init},
     {"gw_hertz_coefficient", c_gw_hertz_coefficient},
@@ -401,28 +480,27 @@ static const struct {
     {"gw_stats_json", c_gw_stats_json},
     {"gw_stats_group_row", c_gw_stats_group_row},
     {"gw_utf8_len", c_gw_utf8_len},
+    {"gw_sweep_case_check", c_gw_sweep_case_check},
+    {"gw_sweep_checks_end", c_gw_sweep_checks_end},
+    {"gw_sweep_case", c_gw_sweep_case},
+    {"gw_sweep_format_row", c_gw_sweep_format_row},
+    {"gw_sweep_case_hash", c_gw_sweep_case_hash},
+    {"gw_sweep_row_check", c_gw_sweep_row_check},
+    {"gw_sweep_journal_scan", c_gw_sweep_journal_scan},
+    {"gw_sweep_journal_open", c_gw_sweep_journal_open},
+    {"gw_sweep_journal_resume_check", c_gw_sweep_journal_resume_check},
+    {"gw_sweep_inputs_check", c_gw_sweep_inputs_check},
+    {"gw_sweep_case_inputs_check", c_gw_sweep_case_inputs_check},
+    {"gw_sweep_journal_append", c_gw_sweep_journal_append},
+    {"gw_sweep_memory_check", c_gw_sweep_memory_check},
+    {"gw_sweep_size_check", c_gw_sweep_size_check},
+    {"gw_input_open", c_gw_input_open},
+    {"gw_fnv1a64_stream", c_gw_fnv1a64_stream},
+    {"gw_case_config_hash", c_gw_case_config_hash},
 };
 
 int main(void)
 {
-    for (size_t i = 0; i < sizeof calls / sizeof calls[0]; i++) {
-        fflush(stdout);
-        pid_t pid = fork();
-        if (pid == 0)
-            _exit(calls[i].call() ? 0 : 1);
-        int st = 0;
-        char what[160];
-        if (pid < 0 || waitpid(pid, &st, 0) != pid) {
-            snprintf(what, sizeof what, "%s: the child could not be run", calls[i].name);
-            gw_test_true(0, what);
-            continue;
-        }
-        if (WIFSIGNALED(st))
-            snprintf(what, sizeof what, "%s given NULL: killed by signal %d", calls[i].name, WTERMSIG(st));
-        else
-            snprintf(what, sizeof what, "%s given NULL: %s", calls[i].name,
-                     WEXITSTATUS(st) == 0 ? "refused or nothing done, no crash" : "no crash, but the wrong value");
-        gw_test_true(WIFEXITED(st) && WEXITSTATUS(st) == 0, what);
-    }
+    gw_test_each_call(calls, sizeof calls / sizeof calls[0]);
     return gw_test_summary("test_null_calls");
 }

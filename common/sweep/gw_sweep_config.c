@@ -717,6 +717,8 @@ void gw_sweep_config_free(gw_sweep_config *cfg)
 
 int gw_sweep_case(const gw_sweep_config *cfg, long k, const char **names, const char **values)
 {
+    if (!cfg || !names || !values)
+        return GW_EINVAL;
     if (k < 0 || k >= cfg->ncases)
         return GW_EINVAL;
     for (int i = cfg->ngrid - 1; i >= 0; i--) {
@@ -733,6 +735,8 @@ int gw_sweep_case(const gw_sweep_config *cfg, long k, const char **names, const 
 
 unsigned long long gw_sweep_case_hash(const gw_sweep_config *cfg, long k)
 {
+    if (!cfg) /* (as a case that does not exist) */
+        return 0;
     const char *names[2 * GW_SWEEP_MAX_KEYS], *values[2 * GW_SWEEP_MAX_KEYS];
     if (gw_sweep_case(cfg, k, names, values) != GW_OK)
         return 0;

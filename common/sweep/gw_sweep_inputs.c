@@ -223,6 +223,8 @@ int gw_sweep_find_inputs(const char *path, gw_sweep_config *cfg, gw_err *err)
 
 int gw_sweep_inputs_check(const gw_sweep_config *cfg, gw_err *err)
 {
+    if (!cfg)
+        return gw_err_set(err, GW_EINVAL, "gw_sweep_inputs_check: cfg is NULL");
     return gw_sweep_case_inputs_check(cfg, -1, err);
 }
 
@@ -240,6 +242,8 @@ static int case_reads(const gw_sweep_config *cfg, long k, const struct gw_sweep_
 
 int gw_sweep_case_inputs_check(const gw_sweep_config *cfg, long k, gw_err *err)
 {
+    if (!cfg)
+        return gw_err_set(err, GW_EINVAL, "gw_sweep_case_inputs_check: cfg is NULL");
     for (int i = 0; i < cfg->ninputs; i++) {
         const struct gw_sweep_input *in = &cfg->inputs[i];
         if (!case_reads(cfg, k, in))

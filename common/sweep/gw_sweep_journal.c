@@ -125,6 +125,13 @@ int gw_sweep_journal_scan(const char *dir, const gw_sweep_config *cfg, char *don
 static int journal_access(const char *dir, const gw_sweep_config *cfg, char *done, long *ndone, int *fdp,
                           int *exists, size_t *torn, int *torn_head, gw_err *err)
 {
+    if (!dir || !cfg || !done || !ndone) {
+        if (ndone)
+            *ndone = 0;
+        if (fdp)
+            *fdp = -1;
+        return gw_err_set(err, GW_EINVAL, "sweep journal: %s is NULL", !dir ? "dir" : !cfg ? "cfg" : !done ? "done" : "ndone");
+    }
     char path[4096];
     int fd = -1;
     *ndone = 0;
@@ -462,6 +469,8 @@ static int journal_check(const char *path, const char *dir, const char *head, co
 
 int gw_sweep_journal_append(int fd, const char *row, double *synced_ms, gw_err *err)
 {
+    if (!row)
+        return gw_err_set(err, GW_EINVAL, "gw_sweep_journal_append: row is NULL");
     size_t n = strlen(row);
     ssize_t w = write(fd, row, n);
     if (w != (ssize_t)n)

@@ -34,6 +34,8 @@ static unsigned fnv32(const char *s, size_t n)
 int gw_sweep_format_row(const gw_sweep_config *cfg, long k, const double *out, int ncol,
                         unsigned long long read_hash, char *buf, size_t n)
 {
+    if (!cfg || !out || !buf)
+        return GW_EINVAL;
     const char *names[2 * GW_SWEEP_MAX_KEYS], *values[2 * GW_SWEEP_MAX_KEYS];
     gw_sweep_case(cfg, k, names, values);
     size_t w = (size_t)gw_snprintf(buf, n, "%ld", k);
@@ -257,6 +259,8 @@ const char *gw_sweep_row_values_fault(const gw_sweep_config *cfg, long k, const 
 
 int gw_sweep_row_check(const gw_sweep_config *cfg, const char *row, gw_err *err)
 {
+    if (!cfg || !row)
+        return gw_err_set(err, GW_EINVAL, "gw_sweep_row_check: %s is NULL", !cfg ? "cfg" : "row");
     char msg[1024];
     size_t len = strlen(row);
     char *end;

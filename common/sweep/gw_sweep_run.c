@@ -31,6 +31,8 @@ double gw_memory_available(const char **what)
 int gw_sweep_memory_check(const gw_sweep_config *cfg, const gw_sweep_model *m, long jobs, int processes,
                           long *most, gw_err *err)
 {
+    if (!cfg || !m)
+        return gw_err_set(err, GW_EINVAL, "gw_sweep_memory_check: %s is NULL", !cfg ? "cfg" : "m");
     if (most)
         *most = cfg->ncases;
     if (!m->memory || cfg->ncases <= 0)
@@ -106,6 +108,8 @@ int gw_sweep_memory_check(const gw_sweep_config *cfg, const gw_sweep_model *m, l
 
 int gw_sweep_size_check(const gw_sweep_config *cfg, const gw_sweep_model *m, gw_err *err)
 {
+    if (!cfg || !m)
+        return gw_err_set(err, GW_EINVAL, "gw_sweep_size_check: %s is NULL", !cfg ? "cfg" : "m");
     double row = 1 + (double)gw_snprintf(NULL, 0, "%ld", cfg->ncases > 0 ? cfg->ncases - 1 : 0);
     for (int i = 0; i < cfg->ngrid; i++) {
         size_t w = 0;
@@ -156,6 +160,8 @@ static int run_one(void *arg, long k, gw_err *err)
 int gw_sweep_case_check(const gw_sweep_model *m, void **memo, int nkeys, const char *const *names,
                         const char *const *values, gw_err *err)
 {
+    if (!m)
+        return gw_err_set(err, GW_EINVAL, "gw_sweep_case_check: m is NULL");
     if (m->check_memo)
         return m->check_memo(memo, nkeys, names, values, err);
     return m->check ? m->check(nkeys, names, values, err) : GW_OK;
@@ -163,6 +169,8 @@ int gw_sweep_case_check(const gw_sweep_model *m, void **memo, int nkeys, const c
 
 void gw_sweep_checks_end(const gw_sweep_model *m, void *memo)
 {
+    if (!m)
+        return;
     if (m->memo_free)
         m->memo_free(memo);
 }

@@ -157,7 +157,8 @@ static inline layer_cforce disc_force(const layer_contact *c, const double *y, c
 
 /* drift_discs's second pass: for the n contacts a step works on, from u_n
  * (u), K_s (ks) and k_ts (kts), sqrt(u_n), 1/K_e, K_m (mean_kt's closed-at-both-
- * ends form, the same operations) and 1/K_m, as if closed at both ends (the
+ * ends form, the same operations, written out: a call of mean_kt, with its
+ * branches, is not vectorised) and 1/K_m, as if closed at both ends (the
  * others' numbers are not read). A function of its own: inside drift_discs
  * GCC did not vectorise the loop. */
 LAYER_HOT static void drift_stiffness(int n, const double *restrict u, const double *restrict ks,

@@ -326,13 +326,6 @@ static inline int layer_contact_region_near(const gw_layer *L, const layer_conta
     return layer_contact_region_pt(L, c, px, py);
 }
 
-/* A ledger of NaN (the answer of the ledger calls given no layer). */
-static inline void layer_energy_nan(gw_layer_energy *e)
-{
-    e->kinetic_block = e->kinetic_soil = e->strain_normal = e->strain_tangent = NAN;
-    e->mindlin_excess = e->dissipated = e->potential = e->total = NAN;
-}
-
 /* The number of arrays in gw_layer.dem_w (drift_discs, layer_dem.c): v_t,
  * u_n, K_s and k_ts in; sqrt(u_n), 1/K_e, K_m and 1/K_m out. */
 enum { LAYER_DEM_W = 8 };

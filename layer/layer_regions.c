@@ -152,8 +152,10 @@ static void ledger_tail(const gw_layer *L, gw_layer_energy *e, gw_layer_energy *
 int gw_layer_ledgers(const gw_layer *L, gw_layer_energy *e, gw_layer_energy *regions)
 {
     if (!L) { /* no layer: no regions, a ledger of NaN */
-        if (e)
-            layer_energy_nan(e);
+        if (e) {
+            e->kinetic_block = e->kinetic_soil = e->strain_normal = e->strain_tangent = NAN;
+            e->mindlin_excess = e->dissipated = e->potential = e->total = NAN;
+        }
         return 0;
     }
     const int nr = regions ? gw_layer_region_count(L) : 0;
@@ -170,22 +172,14 @@ int gw_layer_ledgers(const gw_layer *L, gw_layer_energy *e, gw_layer_energy *reg
  * of an external function's target clones default visibility whatever
  * -fvisibility says (libgranwave.so exported layer_ledgers_rings and its
  * resolver; test_install_api) */
-/* the rings' E_d from the state's tail (ledger_tail's regional dissipated),
- * when the rings are the regions */
-static void rings_dissipated(const gw_layer *L, double cx, double cy, double w, int nring, double *diss)
-{
-    const int same = L->reg_n == nring && cx == L->reg_cx && cy == L->reg_cy && w == L->reg_w;
-    const double *tail = L->y + 6 * L->nb + L->nc;
-    for (int q = 0; q < nring; q++)
-        diss[q] = same ? tail[2 + 2 * q] : NAN;
-}
-
 LAYER_HOT static int ledgers_rings(const gw_layer *L, gw_layer_energy *e, gw_layer_energy *regions, double cx,
                                    double cy, double w, int nring, double *kin, double *strain, double *coord,
                                    double *diss)
 {
-    const int regs = e && L->reg_n > 0 && cx == L->reg_cx && cy == L->reg_cy && w == L->reg_w &&
-                     nring == L->reg_n;
+    /* the rings are the regions 0 .. nring - 1 (same centre, width and count) */
+    const int rings_regions = L->reg_n > 0 && cx == L->reg_cx && cy == L->reg_cy && w == L->reg_w &&
+                              nring == L->reg_n;
+    const int regs = e && rings_regions;
     const int dem_q = L->dem && !L->off && L->geo_pos && L->tan_phi > 0;
     gw_layer *M = (gw_layer *)L; /* scratch only */
     const size_t need = (size_t)nring + (size_t)L->n;
@@ -194,8 +188,10 @@ LAYER_HOT static int ledgers_rings(const gw_layer *L, gw_layer_energy *e, gw_lay
         if (b)
             M->ring_np = b, M->ring_cap = need;
     }
-    if (diss)
-        rings_dissipated(L, cx, cy, w, nring, diss);
+    /* the rings' E_d: ledger_tail's regional dissipated, from the state's tail */
+    const double *tail = L->y + 6 * L->nb + L->nc;
+    for (int q = 0; diss && q < nring; q++)
+        diss[q] = rings_regions ? tail[2 + 2 * q] : NAN;
     if (!regs || !dem_q || M->ring_cap < need) { /* the two passes */
         int nr = gw_layer_ledgers(L, e, regions);
         gw_layer_rings(L, cx, cy, w, nring, kin, strain, coord);

@@ -40,8 +40,10 @@ ver=${ver#granwave }
 
 # 1 the build line, in the journal and in the table
 b=$(sed -n 2p ref/journal.csv)
+commit=
 if [[ $b =~ ^"# build granwave $ver, commit "([0-9a-f]{12}\+?|unknown)", ".*", SUNDIALS "[0-9.]+", GSL "[0-9.]+", fftw-3" ]]; then
     ok "the journal's second line names the build: $b"
+    commit=${BASH_REMATCH[1]}
 else
     ko "the journal's second line: '$b'"
 fi
@@ -80,7 +82,9 @@ rm -f r/results.csv
 other v "granwave $ver, " "granwave 0.0.9, "
 refused "another version" v "^granwave sweep: v/journal\.csv: a journal of another granwave build \(its rows: granwave 0\.0\.9, commit [^;]*; this one: granwave $ver, commit .*\): finish the sweep with the build that started it, or remove the journal"
 other c "commit [0-9a-fun+k]*, " "commit 0123456789ab, "
-refused "another commit" c "^granwave sweep: c/journal\.csv: a journal of another granwave build \(its rows: granwave $ver, commit 0123456789ab; this one: granwave $ver, commit [^0][^;)]*\)"
+# (this build's own commit, as the journal's line gave it: a pattern that only
+# ruled out a leading 0 failed whenever the commit's hash began with one)
+refused "another commit" c "^granwave sweep: c/journal\.csv: a journal of another granwave build \(its rows: granwave $ver, commit 0123456789ab; this one: granwave $ver, commit ${commit//+/\\+}\)"
 other o " -O3 " " -O0 "
 [ "$(sed -n 2p o/journal.csv)" != "$b" ] || sed -i '2s/, SUNDIALS/ -ffast-math, SUNDIALS/' o/journal.csv
 refused "other compile flags" o "^granwave sweep: o/journal\.csv: a journal of another granwave build \(its rows: granwave $ver, commit [^,]*, [^;]*(-O0|-ffast-math)"

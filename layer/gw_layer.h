@@ -377,7 +377,9 @@ typedef struct gw_layer_make_result {
     double t_settle;      /* simulated time, s */
     double ke_final;      /* J */
     double max_overlap;   /* largest u_n / R_p at the end */
-    int converged;        /* kinetic energy went below the threshold */
+    int converged;        /* the kinetic energy, with the fall of the grains in flight (touching
+                             nothing: m g times their straight drop), went below the threshold,
+                             the floor carrying at most 1.5 times the pile's weight */
     double wall_ms;
     long steps, rebuilds;
     int n_removed;        /* particles (clumps: grains) above height_rm R_m taken away */
@@ -386,6 +388,9 @@ typedef struct gw_layer_make_result {
                              lowest particle's free fall to the floor): a t_max below it cannot converge */
     double untrimmed_top_rm; /* height_rm > 0 that took nothing away: the settled pile's top in R_m
                                 (at or below height_rm; the sample is the whole pile); else 0 */
+    double floor_load;    /* the floor's Hertz forces over the pile's weight at the end (at rest:
+                             about 1; gw_layer_impact_rest_check refuses above 1.5) */
+    double fall_energy;   /* J: what the grains in flight at the end (touching nothing) land with */
 } gw_layer_make_result;
 
 /* Pluviate a sample (lp: material, friction; width and mass law are taken from

@@ -197,6 +197,21 @@ int gw_layer_impact_gap_check(const gw_layer_sample *smp, const gw_layer_impact_
     return GW_OK;
 }
 
+void layer_floor_load(const gw_layer_params *lp, int n, const double *y, const double *r, size_t stride, double *f,
+                      double *w)
+{
+    const char *py = (const char *)y, *pr = (const char *)r;
+    *f = *w = 0;
+    for (int i = 0; i < n; i++, py += stride, pr += stride) {
+        double ri, yi;
+        memcpy(&ri, pr, sizeof ri), memcpy(&yi, py, sizeof yi);
+        const double u = ri - yi;
+        *w += gw_layer_mass(lp, ri) * lp->gravity;
+        if (u > 0)
+            *f += gw_layer_kn(lp, ri) * u * sqrt(u);
+    }
+}
+
 int gw_layer_impact_rest_check(const gw_layer_sample *smp, const gw_layer_params *lp, const char *name,
                                gw_err *err)
 {
@@ -210,17 +225,13 @@ int gw_layer_impact_rest_check(const gw_layer_sample *smp, const gw_layer_params
      * its weight at t = 0, and its excess strain energy goes off into the
      * impact (settled at G = 4e9 Pa and hit at the default 4e10: 9.7 times the
      * weight, 16930 J of strain instead of 1693, 860 J of soil motion in the
-     * first 3 ms against 15). Above 1.5 times the weight, refused. The weight
+     * first 3 ms against 15). Above LAYER_FLOOR_LOAD_MAX times the weight,
+     * refused; layer-make settles until its pile is below it. The weight
      * counts clumps with the sum of their members' masses (at least the
      * union's), so no union sample is refused for its mass law. */
-    double f = 0, w = 0;
-    for (int i = 0; i < smp->n; i++) {
-        const double u = smp->r[i] - smp->y[i];
-        w += gw_layer_mass(lp, smp->r[i]) * lp->gravity;
-        if (u > 0)
-            f += gw_layer_kn(lp, smp->r[i]) * u * sqrt(u);
-    }
-    if (!(f > 1.5 * w))
+    double f, w;
+    layer_floor_load(lp, smp->n, smp->y, smp->r, sizeof *smp->y, &f, &w);
+    if (!(f > LAYER_FLOOR_LOAD_MAX * w))
         return GW_OK;
     char nm[300] = "";
     if (name)
@@ -231,9 +242,9 @@ int gw_layer_impact_rest_check(const gw_layer_sample *smp, const gw_layer_params
                           "released into the impact (give the gravity it was made with)", nm, f, lp->gravity);
     return gw_err_set(err, GW_EINVAL, "sample%s: at t = 0 its floor carries %.3g times the weight of the pile with "
                       "shear-modulus %g Pa, poisson %g, density %g kg/m^3, gravity %g m/s^2 and mass-law %s (a "
-                      "settled pile: at most 1): it was settled with another material or gravity (its header "
-                      "records layer-make's settings) and its excess strain energy would go into the impact; give "
-                      "those values", nm, f / w, lp->shear_modulus, lp->poisson, lp->density, lp->gravity,
+                      "settled pile: at most 1): it was settled with another material or gravity, or did not "
+                      "settle (its header records layer-make's settings and 'converged'), and its excess strain "
+                      "energy would go into the impact; give those values", nm, f / w, lp->shear_modulus, lp->poisson, lp->density, lp->gravity,
                       lp->mass_law == GW_LAYER_MASS_SPHERE ? "sphere" : "disc");
 }
 

@@ -330,6 +330,19 @@ static inline int layer_contact_region_near(const gw_layer *L, const layer_conta
  * u_n, K_s and k_ts in; sqrt(u_n), 1/K_e, K_m and 1/K_m out. */
 enum { LAYER_DEM_W = 8 };
 
+/* A settled pile rests on the floor: the floor's Hertz forces carry its weight
+ * (0.88 to 1.006 of it measured, wall friction holding the rest). Above this
+ * many times the weight a pile is not at rest: layer-make goes on settling
+ * (layer_make.c) and layer-impact refuses the sample
+ * (gw_layer_impact_rest_check). */
+#define LAYER_FLOOR_LOAD_MAX 1.5
+
+/* The floor's Hertz forces (N, *f) and the weight (N, *w) of n discs under
+ * lp's material and gravity, with centre heights y and radii r, the i-th of
+ * each stride bytes after the first. */
+void layer_floor_load(const gw_layer_params *lp, int n, const double *y, const double *r, size_t stride, double *f,
+                      double *w);
+
 /* What the last rhs evaluation found of a closed frictional contact, kept in
  * DEM mode for the next step (layer_dem.c): K_t at the step's start and the
  * contact's region (-1: none). */

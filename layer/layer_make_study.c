@@ -75,7 +75,10 @@ static const gw_param make_fields[] = {
     RD("height_rm", height_rm, "", "height in R_m"),
     RD("t_settle", r.t_settle, "s", "simulated settling time"),
     RD("ke_final", r.ke_final, "J", "kinetic energy at the end"),
-    RF("converged", r.converged, "1: the kinetic energy went below the threshold"),
+    RF("converged", r.converged, "1: the kinetic energy, with the fall of the grains in flight, went below the "
+       "threshold, the floor carrying at most 1.5 times the weight"),
+    RD("floor_load", r.floor_load, "", "the floor's Hertz forces over the pile's weight at the end (at rest: about 1)"),
+    RD("fall_energy", r.fall_energy, "J", "what the grains in flight at the end (touching nothing) land with"),
     RD("t_judge", r.t_judge, "s", "the settling is judged from this time on (a t-max below it cannot converge)"),
     RD("max_overlap_over_rp", r.max_overlap, "", "largest u_n / R_p at the end"),
     RI("n_removed_above_height", r.n_removed, "particles (clumps: grains) above height-rm taken away"),
@@ -122,8 +125,8 @@ static char *header(const gw_layer_make_setup *given, const gw_layer_make_outcom
     char *h = malloc(len);
     if (h)
         gw_snprintf(h, len, "granwave %s library gw_layer_make_run\nsettings: %s\nsettled: t = %.4g s, E_k = %.4g J, "
-                 "converged %d, max overlap %.3g R_p", gw_version(), js, o->r.t_settle, o->r.ke_final,
-                 o->r.converged, o->r.max_overlap);
+                 "converged %d, max overlap %.3g R_p, floor load %.4g of the weight", gw_version(), js,
+                 o->r.t_settle, o->r.ke_final, o->r.converged, o->r.max_overlap, o->r.floor_load);
     free(js);
     return h;
 }

@@ -30,10 +30,21 @@ int gw_layer_make_result_warnings(const gw_layer_make_result *r, double t_max, c
                                "the sample did not settle: t-max = %g s ends before the settling is judged (from t = "
                                "%.3g s, once the pile has landed: raise --t-max)%s%s%s",
                                t_max, r->t_judge, sep, path, end);
+    if (!(r->floor_load > 1.5) && r->fall_energy > 0) /* (gw_layer_make_result.floor_load) */
+        return gw_warnings_add(list,
+                               "the sample did not settle: E_k = %.4g J and %.4g J of grains in flight (touching "
+                               "nothing) still above --ke-threshold at t-max = %g s (raise --t-max)%s%s%s",
+                               r->ke_final, r->fall_energy, t_max, sep, path, end);
+    if (!(r->floor_load > 1.5))
+        return gw_warnings_add(list,
+                               "the sample did not settle: E_k = %.4g J still above --ke-threshold at t-max = %g s "
+                               "(raise --t-max)%s%s%s",
+                               r->ke_final, t_max, sep, path, end);
     return gw_warnings_add(list,
-                           "the sample did not settle: E_k = %.4g J still above --ke-threshold at t-max = %g s "
-                           "(raise --t-max)%s%s%s",
-                           r->ke_final, t_max, sep, path, end);
+                           "the sample did not settle: at t-max = %g s its floor carries %.3g times the pile's "
+                           "weight (at rest: about 1; layer-impact refuses above 1.5), E_k = %.4g J (raise "
+                           "--t-max)%s%s%s",
+                           t_max, r->floor_load, r->ke_final, sep, path, end);
 }
 
 int gw_layer_impact_result_warnings(const gw_layer_impact_result *r, char **list)

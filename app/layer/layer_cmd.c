@@ -183,9 +183,10 @@ int gw_cmd_layer_make(int argc, char **argv)
     size_t ilen = (hdr ? strlen(hdr) : 0) + 512;
     char *info = malloc(ilen);
     if (info)
-        snprintf(info, ilen, "%s\nsettled: t = %.4g s, E_k = %.4g J, converged %d, max overlap %.3g R_p; "
-                 "mass law %s, clump mass %s; settling damping alpha = %g s/m, modulus factor %g, %s dt = %g s",
-                 hdr ? hdr : "", r.t_settle, r.ke_final, r.converged, r.max_overlap,
+        snprintf(info, ilen, "%s\nsettled: t = %.4g s, E_k = %.4g J, converged %d, max overlap %.3g R_p, floor "
+                 "load %.4g of the weight; mass law %s, clump mass %s; settling damping alpha = %g s/m, modulus "
+                 "factor %g, %s dt = %g s",
+                 hdr ? hdr : "", r.t_settle, r.ke_final, r.converged, r.max_overlap, r.floor_load,
                  gw_layer_mass_law_name(m.lp.mass_law), gw_layer_clump_mass_name(m.lp.clump_mass), mp.damping,
                  mp.modulus_factor, solver, mp.dt);
     /* no header (out of memory for it): the sample would not record its settings */
@@ -242,6 +243,8 @@ int gw_cmd_layer_make(int argc, char **argv)
         cJSON_AddBoolToObject(j, "converged", r.converged);
         cJSON_AddNumberToObject(j, "t_judge", r.t_judge);
         cJSON_AddNumberToObject(j, "max_overlap_over_rp", r.max_overlap);
+        cJSON_AddNumberToObject(j, "floor_load", r.floor_load);
+        cJSON_AddNumberToObject(j, "fall_energy", r.fall_energy);
         cJSON_AddNumberToObject(j, "steps", (double)r.steps);
         cJSON_AddNumberToObject(j, "rebuilds", (double)r.rebuilds);
         cJSON_AddNumberToObject(j, "wall_time_ms", r.wall_ms);
@@ -259,8 +262,9 @@ int gw_cmd_layer_make(int argc, char **argv)
                    s.n, mp.aspect_max, gw_layer_clump_mass_name(m.lp.clump_mass));
         if (r.n_removed > 0)
             printf("  %d particles above %g R_m removed after settling\n", r.n_removed, mp.height_rm);
-        printf("  settled in %.3g s simulated (%s), E_k = %.3g J, max overlap %.3g R_p\n", r.t_settle,
-               r.converged ? "converged" : "NOT converged: t-max reached", r.ke_final, r.max_overlap);
+        printf("  settled in %.3g s simulated (%s), E_k = %.3g J, max overlap %.3g R_p, floor load %.3g of the "
+               "weight\n", r.t_settle, r.converged ? "converged" : "NOT converged: t-max reached", r.ke_final,
+               r.max_overlap, r.floor_load);
         printf("  mass law %s; settling: Hunt-Crossley alpha %g s/m, modulus factor %g; %s dt %g s\n",
                gw_layer_mass_law_name(m.lp.mass_law), mp.damping, mp.modulus_factor, solver, mp.dt);
         printf("  wall time %.0f ms, %ld steps, %ld list rebuilds; written to %s\n", r.wall_ms, r.steps,

@@ -107,6 +107,13 @@ refused "--wisdom naming a file that is not wisdom" 'not FFTW wisdom' dispersion
 "$GW" dispersion --n 16 --t-samples 64 --wisdom "$tmp/w.wis" >/dev/null 2>&1 && head -c 7 "$tmp/w.wis" | grep -q '(fftw-3' &&
     "$GW" dispersion --n 16 --t-samples 64 --wisdom "$tmp/w.wis" >/dev/null 2>&1 &&
     ok "--wisdom writes wisdom and reads it back" || ko "--wisdom round trip"
+# an empty file (touch, mktemp) holds nothing to lose: taken as no wisdom and
+# written at the end, as an absent one (it was refused as "not FFTW wisdom")
+: >"$tmp/empty.wis"
+"$GW" dispersion --n 16 --t-samples 64 --wisdom "$tmp/empty.wis" --json >"$tmp/ew.json" 2>"$tmp/ew.err" &&
+    [ ! -s "$tmp/ew.err" ] && head -c 7 "$tmp/empty.wis" | grep -q '(fftw-3' &&
+    /usr/bin/python3 -c 'import json, sys; sys.exit(json.load(open(sys.argv[1]))["settings"].get("fftw_wisdom_fnv1a64") is not None)' "$tmp/ew.json" &&
+    ok "--wisdom on an empty file: no wisdom read, wisdom written" || ko "--wisdom on an empty file: $(head -c 200 "$tmp/ew.err")"
 # the settings name the wisdom a run planned over: FNV-1a 64 of the bytes read
 # (computed here independently), null when there was none
 wis_hash=$(/usr/bin/python3 -c "

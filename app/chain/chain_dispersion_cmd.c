@@ -84,7 +84,7 @@ static void disp_options(disp_cli *c, gw_opt *o)
     o[i++] = DOPT_D("atol", &c->atol, "A", "absolute tolerance in units of the perturbation scales [1e-10]", GW_TOL_MIN, GW_TOL_MAX, 0);
     o[i++] = (gw_opt){.name = "fftw-measure", .kind = GW_OPT_FLAG, .dest = &c->measure,
                       .help = "plan the FFTs with FFTW_MEASURE (default FFTW_ESTIMATE)"};
-    o[i++] = DOPT_S("wisdom", &c->wisdom, "FILE", "import FFTW wisdom from FILE if present, export it after the run");
+    o[i++] = DOPT_S("wisdom", &c->wisdom, "FILE", "import FFTW wisdom from FILE if present (absent or empty: none), export it after the run");
     o[i++] = DOPT_L("column-n", &c->column_n, "N", "instead: wall-force spectrum of an N-bead column collision", 1, 100000);
     o[i++] = DOPT_D("vimp", &c->vimp, "V", "impact velocity of that column, m/s [0.3]", GW_CHAIN_VIMP_MIN,
                     GW_CHAIN_VIMP_MAX, 0);
@@ -416,14 +416,15 @@ static size_t wisdom_end(const char *text, size_t len)
 }
 
 /* Wisdom is read through gw_input_read (a regular file, at most 64 MiB: a FIFO or
- * /dev/zero is refused, never read forever). An absent file is planned afresh
- * and created at the end; an existing file must be FFTW wisdom, since it is
- * overwritten at the end of the run. */
+ * /dev/zero is refused, never read forever). An absent file, or an empty
+ * regular one (made by touch or mktemp: nothing in it to lose), is planned
+ * afresh and written at the end; any other file must be FFTW wisdom, since it
+ * is overwritten at the end of the run. */
 static int disp_import_wisdom(disp_cli *c, gw_err *err)
 {
     const char *path = c->wisdom;
     struct stat st;
-    if (stat(path, &st) != 0 && errno == ENOENT)
+    if ((stat(path, &st) != 0 && errno == ENOENT) || (S_ISREG(st.st_mode) && st.st_size == 0))
         return gw_out_file_check(path, "dispersion --wisdom", err);
     char *text = NULL;
     size_t len = 0;

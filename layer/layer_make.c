@@ -156,26 +156,38 @@ static double pair_touch(const gw_layer_body *b, int i, int j, unsigned char *to
  * work is linear in n: every pair was compared before, 34.8 s for 64000 discs.
  * Only when the grid cannot be had (out of memory, a position not finite) are
  * all pairs compared, which gives the same value. */
+/* A grid of cells of side at least 2 R_max over the centres of the n discs b
+ * (layer_grid_build: two discs that overlap lie in neighbouring cells, and a
+ * disc that meets another falling straight down lies at most one column
+ * away); 0 when it cannot be had (out of memory, a position not finite). */
+static int disc_grid(const gw_layer_body *b, int n, layer_grid *g)
+{
+    double rmax = 0;
+    for (int i = 0; i < n; i++)
+        rmax = fmax(rmax, b[i].r);
+    double *c = malloc(2 * (size_t)(n > 0 ? n : 1) * sizeof *c);
+    for (int i = 0; c && i < n; i++)
+        c[2 * i] = b[i].x, c[2 * i + 1] = b[i].y;
+    const int ok = c && layer_grid_build(g, n, c, c + 1, 2, 2 * rmax) == GW_OK;
+    free(c);
+    return ok;
+}
+
 static double max_overlap(const gw_layer_body *b, int n, double width, unsigned char *touch)
 {
-    double maxov = 0, rmax = 0;
+    double maxov = 0;
     for (int i = 0; i < n; i++) {
         const double wall = fmax(fmax((b[i].r - b[i].y) / b[i].r, (b[i].r - b[i].x) / b[i].r),
                                  (b[i].r - (width - b[i].x)) / b[i].r);
         maxov = fmax(maxov, wall);
         if (touch)
             touch[i] = wall > 0;
-        rmax = fmax(rmax, b[i].r);
     }
     layer_grid g = {0};
-    double *c = malloc(2 * (size_t)(n > 0 ? n : 1) * sizeof *c);
-    for (int i = 0; c && i < n; i++)
-        c[2 * i] = b[i].x, c[2 * i + 1] = b[i].y;
-    if (!c || layer_grid_build(&g, n, c, c + 1, 2, 2 * rmax) != GW_OK) {
+    if (!disc_grid(b, n, &g)) {
         for (int i = 0; i < n; i++)
             for (int j = i + 1; j < n; j++)
                 maxov = fmax(maxov, pair_touch(b, i, j, touch));
-        free(c);
         return maxov;
     }
     for (int i = 0; i < n; i++) {
@@ -190,51 +202,81 @@ static double max_overlap(const gw_layer_body *b, int n, double width, unsigned 
             }
     }
     layer_grid_free(&g);
-    free(c);
     return maxov;
 }
 
+/* The drop d of disc i onto disc j (m; d stays as it is when j is not below
+ * it, is i itself or of i's clump). */
+static double drop_onto(const gw_layer_body *b, int i, int j, double d)
+{
+    const double dx = b[j].x - b[i].x, rs = b[i].r + b[j].r;
+    if (j == i || (b[i].clump > 0 && b[j].clump == b[i].clump) || !(fabs(dx) < rs) || !(b[j].y < b[i].y))
+        return d;
+    return fmin(d, b[i].y - b[j].y - sqrt(rs * rs - dx * dx));
+}
+
 /* How far disc i of b falls straight down before it meets the floor or a disc
- * of another body (m). */
-static double drop_of(const gw_layer_body *b, int n, int i)
+ * of another body (m): over the grid g's cells at or below its own in its
+ * column and the two beside it, or over every disc without a grid. */
+static double drop_of(const gw_layer_body *b, int n, int i, const layer_grid *g)
 {
     double d = b[i].y - b[i].r;
-    for (int j = 0; j < n; j++) {
-        const double dx = b[j].x - b[i].x, rs = b[i].r + b[j].r;
-        if (j == i || (b[i].clump > 0 && b[j].clump == b[i].clump) || !(fabs(dx) < rs) || !(b[j].y < b[i].y))
-            continue;
-        d = fmin(d, b[i].y - b[j].y - sqrt(rs * rs - dx * dx));
+    if (!g) {
+        for (int j = 0; j < n; j++)
+            d = drop_onto(b, i, j, d);
+        return d > 0 ? d : 0;
     }
+    const long cx = g->cell[i] % g->nx, cy = g->cell[i] / g->nx;
+    for (long ky = cy; ky >= 0; ky--)
+        for (long kx = cx - 1; kx <= cx + 1; kx++) {
+            if (kx < 0 || kx >= g->nx)
+                continue;
+            for (int q = g->start[ky * g->nx + kx]; q < g->start[ky * g->nx + kx + 1]; q++)
+                d = drop_onto(b, i, g->idx[q], d);
+        }
     return d > 0 ? d : 0;
 }
 
 /* The energy (J) the bodies of the n discs b that touch nothing (no wall, no
  * disc of another body) will have gained when they land: under gravity they
  * are in flight, m g times the shortest straight drop of their discs (a clump
- * by the sum of its discs' masses); -1 for out of memory. */
-static double airborne(const gw_layer_params *lp, const gw_layer_body *b, int n)
+ * by the sum of its discs' masses). The count stops once it reaches budget
+ * (the pile is not settled then, whatever the rest). -1 for out of memory. */
+static double airborne(const gw_layer_params *lp, const gw_layer_body *b, int n, double budget)
 {
-    unsigned char *touch = malloc((size_t)(n > 0 ? n : 1));
-    if (!touch)
+    int cmax = 0;
+    for (int i = 0; i < n; i++)
+        cmax = b[i].clump > cmax ? b[i].clump : cmax;
+    unsigned char *touch = malloc((size_t)n + (size_t)cmax + 1), *held = touch ? touch + n : NULL;
+    double *cm = malloc(2 * ((size_t)cmax + 1) * sizeof *cm), *cd = cm ? cm + cmax + 1 : NULL;
+    if (!touch || !cm) {
+        free(touch), free(cm);
         return -1;
-    max_overlap(b, n, lp->width, touch);
-    double e = 0;
-    for (int i = 0; i < n; i++) {
-        if (touch[i])
-            continue;
-        int first = 1, held = 0; /* a clump touches through any of its discs, counted at its first */
-        for (int j = 0; b[i].clump > 0 && j < n && !held; j++)
-            if (b[j].clump == b[i].clump)
-                held = touch[j], first = first && j >= i;
-        if (held || !first)
-            continue;
-        double m = 0, drop = INFINITY;
-        for (int j = i; j < n; j++)
-            if (j == i || (b[i].clump > 0 && b[j].clump == b[i].clump))
-                m += gw_layer_mass(lp, b[j].r), drop = fmin(drop, drop_of(b, n, j));
-        e += m * lp->gravity * drop;
     }
-    free(touch);
+    max_overlap(b, n, lp->width, touch);
+    for (int c = 0; c <= cmax; c++)
+        held[c] = 0, cm[c] = 0, cd[c] = INFINITY;
+    for (int i = 0; i < n; i++) /* a clump touches through any of its discs */
+        if (b[i].clump > 0 && touch[i])
+            held[b[i].clump] = 1;
+    layer_grid g = {0};
+    const int grid = disc_grid(b, n, &g);
+    double e = 0;
+    for (int i = 0; i < n && e < budget; i++) {
+        const int c = b[i].clump;
+        if (touch[i] || (c > 0 && held[c]))
+            continue;
+        const double m = gw_layer_mass(lp, b[i].r), d = drop_of(b, n, i, grid ? &g : NULL);
+        if (c > 0)
+            cm[c] += m, cd[c] = fmin(cd[c], d);
+        else
+            e += m * lp->gravity * d;
+    }
+    for (int c = 1; c <= cmax && e < budget; c++)
+        if (cm[c] > 0)
+            e += cm[c] * lp->gravity * cd[c];
+    layer_grid_free(&g);
+    free(touch), free(cm);
     return e;
 }
 
@@ -305,7 +347,7 @@ static int settle(const gw_layer_params *lp, const gw_layer_make_params *m, doub
              * land with: a disc at the top of a bounce has E_k near 0 too
              * (`--n 1` was next caught 3 mm above the floor, 26 J of fall
              * against a threshold of 0.028 J) */
-            double f, w, fall = airborne(lp, b, n);
+            double f, w, fall = airborne(lp, b, n, thr - *ke);
             layer_floor_load(lp, n, &b[0].y, &b[0].r, sizeof *b, &f, &w);
             if (!(f > LAYER_FLOOR_LOAD_MAX * w) && fall >= 0 && *ke + fall < thr) {
                 *conv = 1;
@@ -443,7 +485,7 @@ static void finish(const gw_layer_params *lp, const gw_layer_make_params *m, con
     double f, w;
     layer_floor_load(lp, n, &b[0].y, &b[0].r, sizeof *b, &f, &w);
     res->floor_load = f / w;
-    res->fall_energy = airborne(lp, b, n);
+    res->fall_energy = airborne(lp, b, n, INFINITY);
     res->n_discs = n;
     res->wall_ms = gw_clock_ms() - t0;
 }

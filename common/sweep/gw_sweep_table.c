@@ -35,7 +35,7 @@ int gw_sweep_write_table(const char *dir, const gw_sweep_config *cfg, const gw_s
 {
     if (!dir)
         return gw_err_set(err, GW_EINVAL, "gw_sweep_write_table: dir is NULL");
-    const int dfd = open(dir, O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+    const int dfd = gw_sweep_dir_open(dir);
     if (dfd < 0)
         return gw_err_set(err, GW_EIO, "%s: cannot open the sweep's directory: %s", dir, strerror(errno));
     const int rc = gw_sweep_write_table_at(dfd, dir, cfg, m, err);

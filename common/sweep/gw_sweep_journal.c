@@ -116,13 +116,15 @@ int gw_sweep_dir_open(const char *dir)
 
 int gw_sweep_dir_held(int dirfd, const char *dir, gw_err *err)
 {
+    if (!dir)
+        return gw_err_set(err, GW_EINVAL, "gw_sweep_dir_held: dir is NULL");
     struct stat st;
     if (fstat(dirfd, &st) != 0)
-        return gw_err_set(err, GW_EIO, "%s: the sweep's directory: %s", dir ? dir : "?", strerror(errno));
+        return gw_err_set(err, GW_EIO, "%s: the sweep's directory: %s", dir, strerror(errno));
     if (st.st_nlink == 0) /* rmdir drops a directory's last link: a moved one keeps it */
         return gw_err_set(err, GW_EIO, "%s: the sweep's directory was removed while the sweep ran (or moved to "
                           "another file system, which copies it): its journal went with it, no table written; "
-                          "rerun to run its cases again (a copy of the journal resumes them)", dir ? dir : "?");
+                          "rerun to run its cases again (a copy of the journal resumes them)", dir);
     return GW_OK;
 }
 

@@ -13,6 +13,8 @@
 #include <fcntl.h>
 #include <pthread.h>
 #include <signal.h>
+#include <stdio.h>
+#include <sys/stat.h>
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
@@ -43,6 +45,8 @@ typedef struct sweep_run {
     long ntodo, ndone0;
     long done;
     int fd, failed;
+    int dirfd; /* the sweep's directory, held from the journal's open to the end */
+    const char *out; /* its name */
     double synced_ms; /* gw_clock_ms of the journal's last fsync */
     gw_err err;
     /* Cases whose run failed on their own (a solver failure, an energy
@@ -102,6 +106,10 @@ static int journal(sweep_run *s, const char *row, gw_err *err)
      * it was changed, and ended after it was restored, passed the check above */
     if (rc == GW_OK)
         rc = gw_sweep_row_check(s->cfg, row, err);
+    /* and the directory is still there, wherever it was moved: removed, the
+     * rows would go into a journal that is in no directory */
+    if (rc == GW_OK)
+        rc = gw_sweep_dir_held(s->dirfd, s->out, err);
     if (rc == GW_OK)
         rc = gw_sweep_journal_append(s->fd, row, &s->synced_ms, err);
     if (rc == GW_OK)
@@ -284,6 +292,27 @@ static void check_report(const char *out, long ncases, int exists, long ndone, s
     printf(ndone == ncases ? ": a rerun writes the table only\n" : "\n");
 }
 
+/* Where the sweep's directory (held open in dirfd) is now, when out no
+ * longer names it (moved or renamed while the sweep ran): 1 and its path in
+ * where (n bytes; Linux's /proc/self/fd tells it); 0 when out names it still,
+ * or it was removed (gw_sweep_dir_held says so). */
+static int dir_moved(const char *out, int dirfd, char *where, size_t n)
+{
+    struct stat a, b;
+    if (dirfd < 0 || fstat(dirfd, &a) != 0 || a.st_nlink == 0)
+        return 0;
+    if (stat(out, &b) == 0 && a.st_dev == b.st_dev && a.st_ino == b.st_ino)
+        return 0;
+    char link[64];
+    snprintf(link, sizeof link, "/proc/self/fd/%d", dirfd);
+    const ssize_t k = readlink(link, where, n - 1);
+    if (k > 0 && where[0] == '/')
+        where[k] = '\0';
+    else
+        snprintf(where, n, "the directory it was moved to (this system does not tell its path)");
+    return 1;
+}
+
 /* A refusal's exit code: 2 for the config or a case (bad input), 1 when the
  * check itself ran out of memory (a run failure: the input is not at fault). */
 static int exit_code(int rc)
@@ -320,6 +349,7 @@ int gw_cmd_sweep(int argc, char **argv, const gw_sweep_model *const *models, int
     sweep_run s;
     memset(&s, 0, sizeof s);
     s.fd = -1;
+    s.dirfd = -1;
     int rc = GW_OK;
     char *done = NULL;
     if (gw_cli_parse("sweep", opts, argc, argv, &help, pos, 1, &npos, &err) != GW_OK) {
@@ -448,8 +478,9 @@ int gw_cmd_sweep(int argc, char **argv, const gw_sweep_model *const *models, int
         if (!done || !s.todo)
             code = 1, gw_err_set(&err, GW_ENOMEM, "out of memory");
         else if (gw_mkdir_p(out, &err) != GW_OK ||
-                 (rc = gw_sweep_journal_open(out, &cfg, done, &s.ndone0, &s.fd, &err)) != GW_OK)
+                 (rc = gw_sweep_journal_open_at(out, &cfg, done, &s.ndone0, &s.fd, &s.dirfd, &err)) != GW_OK)
             code = rc == GW_EIO ? 1 : exit_code(rc); /* the journal stays open, and locked, until the sweep ends */
+        s.out = out;
     }
     if (code == 0 && rank == 0) {
         for (long k = 0; k < cfg.ncases; k++)
@@ -486,25 +517,40 @@ int gw_cmd_sweep(int argc, char **argv, const gw_sweep_model *const *models, int
             if (rank == 0)
             run_threads(&s, jobs);
         pthread_mutex_destroy(&s.lock);
+        /* the directory as it is now: out, or where it was moved meanwhile */
+        char where[4200];
+        const int moved = rank == 0 && dir_moved(out, s.dirfd, where, sizeof where);
+        const char *now = moved ? where : out;
         if (rank == 0) {
             if (s.failed) {
                 err = s.err;
                 code = s.failed == GW_EINVAL ? 2 : 1;
             } else if (stop_requested) {
-                fprintf(stderr, "sweep: interrupted after %ld new cases; rerun the same command to resume\n", s.done);
+                if (moved)
+                    fprintf(stderr, "sweep: interrupted after %ld new cases; %s was moved to %s while the sweep "
+                            "ran: move it back and rerun the same command to resume (or rerun with --out %s)\n",
+                            s.done, out, where, where);
+                else
+                    fprintf(stderr, "sweep: interrupted after %ld new cases; rerun the same command to resume\n",
+                            s.done);
                 code = 130;
             } else if (s.nfailed) {
                 gw_err_set(&err, GW_ESOLVER, "sweep: %ld of the %ld cases run failed (the first, %s); %ld of the "
                            "sweep's %ld cases are journaled in %s/journal.csv, no table written (it holds every "
                            "case): rerun to retry the failed cases", s.nfailed, s.ntodo, s.fail_err.msg,
-                           s.ndone0 + s.done, cfg.ncases, out);
+                           s.ndone0 + s.done, cfg.ncases, now);
                 code = 1;
             } else if (gw_sweep_journal_sync(s.fd, &s.synced_ms, &err) != GW_OK ||
-                       gw_sweep_write_table(out, &cfg, m, &err) != GW_OK) {
+                       gw_sweep_write_table_at(s.dirfd, now, &cfg, m, &err) != GW_OK) {
                 code = 1;
-            } else if (!quiet) {
-                fprintf(stderr, "sweep: %ld cases in %.1f s; table %s/results.csv\n", s.done,
-                        (gw_clock_ms() - s.prog.t0) / 1e3, out);
+            } else {
+                /* finished where the directory went: said even with --quiet */
+                if (moved)
+                    fprintf(stderr, "granwave sweep: warning: %s was moved while the sweep ran: its journal and "
+                            "table are in %s\n", out, where);
+                if (!quiet)
+                    fprintf(stderr, "sweep: %ld cases in %.1f s; table %s/results.csv\n", s.done,
+                            (gw_clock_ms() - s.prog.t0) / 1e3, now);
             }
         }
     }
@@ -519,6 +565,8 @@ finish:
         }
         close(s.fd);
     }
+    if (s.dirfd >= 0)
+        close(s.dirfd);
     free(done);
     free(s.todo);
     gw_sweep_config_free(&cfg);

@@ -161,6 +161,9 @@ typedef struct gw_afile {
     unsigned char oldmask[128]; /* the caller's signal mask (a sigset_t) */
     int masked;
     int named; /* opened by gw_afile_open_named: the caller writes tmp by name */
+    int held;  /* opened by gw_afile_openat: path and tmp name files from their rel-th byte on in dirfd */
+    int dirfd;
+    size_t rel;
 } gw_afile;
 
 /* Open path for writing through a temporary file: f->fp is the stream. On
@@ -173,6 +176,14 @@ int gw_afile_open(gw_afile *f, const char *path, gw_err *err);
  * unique name and f->fp is NULL. The writer closes its own handle before
  * commit; commit fsyncs f->tmp and renames it into place. */
 int gw_afile_open_named(gw_afile *f, const char *path, gw_err *err);
+/* The same for the file name in the directory dirfd (the caller's, open and
+ * held until the commit or abort), whose path dir names it in messages and
+ * in the table of temporaries: the file is written in that directory wherever
+ * it has been moved or renamed since it was opened (a sweep's table beside its
+ * journal). A symbolic link at name is written through (a relative target
+ * from the link's directory); no output set takes the file (it is placed at
+ * its commit). */
+int gw_afile_openat(gw_afile *f, int dirfd, const char *dir, const char *name, gw_err *err);
 /* Flush (stream), fsync and rename into place. On failure the temporary is
  * removed and the previous file at path, if any, is left as it was. */
 int gw_afile_commit(gw_afile *f, gw_err *err);

@@ -3,7 +3,9 @@
  * its path ("PATH.tmp.HOST.PID.XXXXXX"), fsynced and renamed into place, so a
  * reader sees the previous file or the complete new one; as a stream, or as a
  * temporary path for writers that create the file by name (HDF5); through a
- * symbolic link its target is replaced and the link kept; SIGINT, SIGTERM and
+ * symbolic link its target is replaced and the link kept; by name in a
+ * directory the caller holds open, which may be moved meanwhile
+ * (gw_afile_openat: a sweep's table); SIGINT, SIGTERM and
  * SIGHUP held from open to commit, the temporary in the table a signal
  * handler empties (gw_io_temps.c) until it is placed; the temporaries a
  * killed writer left removed at the next open. Also gw_write_text and the
@@ -21,6 +23,7 @@
 #include <string.h>
 #include <sys/stat.h>
 #include <pthread.h>
+#include <time.h>
 #include <unistd.h>
 
 #include "gw_common.h"
@@ -136,7 +139,7 @@ int gw_io_side_name(const char *path, unsigned long seq, char *out, size_t n)
  * (kill -9): "BASE.tmp.HOST.PID.XXXXXX" whose PID is no process (kill(PID, 0):
  * ESRCH). A writer alive (this process included), another host's temporary
  * (a shared file system) and other names are left alone. */
-static void remove_stale_temporaries(const char *path, const char *host)
+static void remove_stale_temporaries(int at, const char *path, const char *host)
 {
     char dir[4096];
     const char *slash = strrchr(path, '/'), *base = slash ? slash + 1 : path;
@@ -147,9 +150,13 @@ static void remove_stale_temporaries(const char *path, const char *host)
     if (gw_snprintf(prefix, sizeof prefix, "%s.tmp.%s.", base, host) >= (int)sizeof prefix)
         return;
     const size_t plen = strlen(prefix);
-    DIR *d = opendir(dir);
-    if (!d)
+    const int dfd = openat(at, dir, O_RDONLY | O_DIRECTORY | O_CLOEXEC); /* at: AT_FDCWD, or a held directory */
+    DIR *d = dfd >= 0 ? fdopendir(dfd) : NULL;
+    if (!d) {
+        if (dfd >= 0)
+            close(dfd);
         return;
+    }
     for (struct dirent *e; (e = readdir(d)) != NULL;) {
         if (strncmp(e->d_name, prefix, plen) != 0)
             continue;
@@ -208,7 +215,10 @@ int gw_io_status(int e)
 /* The temporary removed, and forgotten by the signals' table */
 static void discard(gw_afile *f)
 {
-    unlink(f->tmp);
+    if (f->held)
+        unlinkat(f->dirfd, f->tmp + f->rel, 0);
+    else
+        unlink(f->tmp);
     gw_temps_drop(f->tmp);
     f->tmp[0] = '\0';
 }
@@ -227,7 +237,7 @@ int gw_afile_open(gw_afile *f, const char *path, gw_err *err)
     path = f->path; /* the temporary beside the file it replaces */
     char host[32];
     host_token(host, sizeof host);
-    remove_stale_temporaries(path, host);
+    remove_stale_temporaries(AT_FDCWD, path, host);
     gw_snprintf(f->tmp, sizeof f->tmp, "%s.tmp.%s.%ld.XXXXXX", path, host, (long)getpid());
     int fd = mkstemp(f->tmp);
     if (fd < 0) {
@@ -272,16 +282,116 @@ int gw_afile_open_named(gw_afile *f, const char *path, gw_err *err)
     return GW_OK;
 }
 
+/* name in the directory dfd (shown as dir) followed through symbolic links
+ * to the file a write replaces, into rel (n bytes): a relative target from
+ * the link's own directory, an absolute one as it is (the *at calls take an
+ * absolute name as it is). GW_EINVAL for a link to nothing or a file that is
+ * not a regular file there, as gw_io_write_target. */
+static int at_target(int dfd, const char *dir, const char *name, char *rel, size_t n, gw_err *err)
+{
+    if (gw_snprintf(rel, n, "%s", name) >= (int)n)
+        return gw_err_set(err, GW_EINVAL, "%s/%s: path too long", dir, name);
+    for (int hops = 0;; hops++) {
+        struct stat st;
+        if (fstatat(dfd, rel, &st, AT_SYMLINK_NOFOLLOW) != 0) {
+            const int e = errno;
+            if (e == ENOENT && hops == 0)
+                return GW_OK; /* made by the commit */
+            return hops ? gw_err_set(err, GW_EINVAL, "%s/%s: a symbolic link to '%s', %s", dir, name, rel,
+                                     e == ENOENT ? "which does not exist" : strerror(e))
+                        : gw_err_set(err, gw_io_status(e), "%s/%s: %s", dir, name, strerror(e));
+        }
+        if (!S_ISLNK(st.st_mode))
+            return S_ISREG(st.st_mode) ? GW_OK
+                                       : gw_err_set(err, GW_EINVAL, "%s/%s: '%s' is %s; an output replaces only a "
+                                                    "regular file", dir, name, rel, gw_io_file_kind(st.st_mode));
+        char t[4096];
+        const ssize_t k = hops < 40 ? readlinkat(dfd, rel, t, sizeof t - 1) : -1;
+        if (k < 0)
+            return gw_err_set(err, GW_EINVAL, "%s/%s: a symbolic link that cannot be followed: %s", dir, name,
+                              strerror(hops < 40 ? errno : ELOOP));
+        t[k] = '\0';
+        const char *slash = strrchr(rel, '/');
+        const size_t keep = t[0] == '/' || !slash ? 0 : (size_t)(slash - rel) + 1;
+        if (keep + (size_t)k >= n)
+            return gw_err_set(err, GW_EINVAL, "%s/%s: path too long", dir, name);
+        memcpy(rel + keep, t, (size_t)k + 1);
+    }
+}
+
+int gw_afile_openat(gw_afile *f, int dirfd, const char *dir, const char *name, gw_err *err)
+{
+    if (!f || !dir || !name)
+        return gw_err_set(err, GW_EINVAL, "gw_afile_openat: %s is NULL", !f ? "f" : !dir ? "dir" : "name");
+    memset(f, 0, sizeof *f);
+    hold_signals(f);
+    char rel[4096];
+    int rc = at_target(dirfd, dir, name, rel, sizeof rel, err);
+    const int shown = rc != GW_OK ? 0
+                      : rel[0] == '/' ? gw_snprintf(f->path, sizeof f->path, "%s", rel)
+                                      : gw_snprintf(f->path, sizeof f->path, "%s/%s", dir, rel);
+    if (rc == GW_OK && (shown < 0 || (size_t)shown >= sizeof f->path))
+        rc = gw_err_set(err, GW_EINVAL, "%s/%s: path too long", dir, name);
+    if (rc != GW_OK) {
+        release_signals(f);
+        return rc;
+    }
+    f->held = 1;
+    f->dirfd = dirfd;
+    f->rel = strlen(f->path) - strlen(rel); /* the name in dirfd, of path and of tmp */
+    char host[32];
+    host_token(host, sizeof host);
+    remove_stale_temporaries(dirfd, rel, host);
+    /* a unique temporary of mkstemp's form, made in the held directory */
+    struct timespec ts;
+    clock_gettime(CLOCK_REALTIME, &ts);
+    unsigned long seq = (unsigned long)ts.tv_nsec ^ ((unsigned long)ts.tv_sec << 20);
+    int fd = -1, e = EEXIST;
+    for (int tries = 0; fd < 0 && e == EEXIST && tries < 1000; tries++, seq += 7919) {
+        if (gw_io_side_name(f->path, seq, f->tmp, sizeof f->tmp) != 0) {
+            e = ENAMETOOLONG;
+            break;
+        }
+        fd = openat(dirfd, f->tmp + f->rel, O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0600);
+        e = fd < 0 ? errno : 0;
+    }
+    if (fd < 0) {
+        f->tmp[0] = '\0';
+        release_signals(f);
+        return gw_err_set(err, gw_io_status(e), "%s: cannot create: %s", f->path, strerror(e));
+    }
+    if (gw_temps_add(f->tmp) < 0) { /* as gw_afile_open */
+        close(fd);
+        unlinkat(dirfd, f->tmp + f->rel, 0);
+        f->tmp[0] = '\0';
+        release_signals(f);
+        return gw_err_set(err, GW_ENOMEM, "%s: cannot create: %s", f->path, strerror(ENOMEM));
+    }
+    struct stat st; /* the permissions of the file it replaces, or a shell's > */
+    fchmod(fd, fstatat(dirfd, rel, &st, 0) == 0 && S_ISREG(st.st_mode) ? st.st_mode & 0777
+                                                                        : 0666 & ~gw_io_current_umask());
+    f->fp = fdopen(fd, "w");
+    if (!f->fp) {
+        e = errno;
+        close(fd);
+        discard(f);
+        release_signals(f);
+        return gw_err_set(err, gw_io_status(e), "%s: cannot open: %s", f->path, strerror(e));
+    }
+    return GW_OK;
+}
+
 /* The end of a commit once the temporary is complete and fsynced: staged in
  * the open set, or renamed into place. */
 static int place(gw_afile *f, int *saved)
 {
-    int st = gw_outset_stage(f);
+    int st = f->held ? 0 : gw_outset_stage(f);
     if (st < 0) {
         *saved = ENOMEM;
         return -1;
     }
-    if (st == 0 && rename(f->tmp, f->path) != 0) {
+    if (st == 0 && (f->held ? renameat(f->dirfd, f->tmp + f->rel, f->dirfd, f->path + f->rel)
+                            : rename(f->tmp, f->path)) != 0) {
         *saved = errno ? errno : EIO;
         return -1;
     }

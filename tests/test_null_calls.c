@@ -373,6 +373,25 @@ static int c_gw_sweep_journal_open(void)
     gw_err e = {{0}}; int fd = 3; return gw_sweep_journal_open(NULL, NULL, NULL, NULL, &fd, &e) == GW_EINVAL && fd == -1 && gw_test_said(&e, "dir is NULL");
 }
 
+static int c_gw_sweep_journal_open_at(void)
+{
+    gw_err e = {{0}}; int fd = 3, dfd = 3;
+    return gw_sweep_journal_open_at(NULL, NULL, NULL, NULL, NULL, NULL, &e) == GW_EINVAL && gw_test_said(&e, "fd is NULL") &&
+           gw_sweep_journal_open_at(NULL, NULL, NULL, NULL, &fd, &dfd, &e) == GW_EINVAL && fd == -1 && dfd == -1 &&
+           gw_test_said(&e, "dir is NULL");
+}
+
+static int c_gw_sweep_dir_held(void)
+{
+    gw_err e = {{0}}; return gw_sweep_dir_held(-1, NULL, &e) == GW_EINVAL && gw_test_said(&e, "gw_sweep_dir_held: dir is NULL");
+}
+
+static int c_gw_sweep_write_table(void)
+{
+    gw_err e = {{0}}; return gw_sweep_write_table(NULL, NULL, NULL, &e) == GW_EINVAL && gw_test_said(&e, "gw_sweep_write_table: dir is NULL") &&
+           gw_sweep_write_table_at(-1, NULL, NULL, NULL, &e) == GW_EINVAL && gw_test_said(&e, "gw_sweep_write_table_at: dir is NULL");
+}
+
 static int c_gw_sweep_journal_resume_check(void)
 {
     gw_err e = {{0}}; return gw_sweep_journal_resume_check(NULL, NULL, NULL, NULL, NULL, NULL, NULL, &e) == GW_EINVAL && gw_test_said(&e, "dir is NULL");
@@ -488,6 +507,9 @@ static const gw_test_call calls[] = {
     {"gw_sweep_row_check", c_gw_sweep_row_check},
     {"gw_sweep_journal_scan", c_gw_sweep_journal_scan},
     {"gw_sweep_journal_open", c_gw_sweep_journal_open},
+    {"gw_sweep_journal_open_at", c_gw_sweep_journal_open_at},
+    {"gw_sweep_dir_held", c_gw_sweep_dir_held},
+    {"gw_sweep_write_table", c_gw_sweep_write_table},
     {"gw_sweep_journal_resume_check", c_gw_sweep_journal_resume_check},
     {"gw_sweep_inputs_check", c_gw_sweep_inputs_check},
     {"gw_sweep_case_inputs_check", c_gw_sweep_case_inputs_check},

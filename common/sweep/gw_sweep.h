@@ -192,6 +192,18 @@ int gw_sweep_out_inputs_check(const char *dir, const gw_sweep_config *cfg, gw_er
  * running in this directory ...", before anything is read or cut. */
 int gw_sweep_journal_open(const char *dir, const gw_sweep_config *cfg, char *done, long *ndone, int *fd,
                           gw_err *err);
+/* The same, and DIR held open in *dirfd (O_DIRECTORY; -1 on failure) until
+ * the caller closes it: DIR was opened once and its journal found, made and
+ * read through it, and the sweep's table goes there (gw_sweep_write_table_at),
+ * so a DIR moved or renamed while the sweep runs keeps its journal and gets
+ * its table wherever it went. GW_EIO when DIR cannot be opened. */
+int gw_sweep_journal_open_at(const char *dir, const gw_sweep_config *cfg, char *done, long *ndone, int *fd,
+                             int *dirfd, gw_err *err);
+/* GW_OK while the directory dirfd (a sweep's, held open; dir names it in the
+ * message) is in the file system, wherever it was moved; GW_EIO when it was
+ * removed (or moved to another file system, which copies it and removes it):
+ * the rows journaled since went with it. */
+int gw_sweep_dir_held(int dirfd, const char *dir, gw_err *err);
 /* What a resume would find (`granwave sweep CONFIG --check`): DIR/journal.csv
  * read and checked by the code of gw_sweep_journal_open, with its refusals
  * (another config's journal, one edited by hand, of another format, a row of
@@ -231,6 +243,11 @@ int gw_sweep_journal_sync(int fd, double *synced_ms, gw_err *err);
 /* Write DIR/results.csv (header, rows sorted by case) atomically from the journal. */
 int gw_sweep_write_table(const char *dir, const gw_sweep_config *cfg, const gw_sweep_model *m,
                          gw_err *err);
+/* The same in the directory dirfd held open (gw_sweep_journal_open_at; dir
+ * names it in messages): its journal read and its table written there,
+ * wherever it was moved. */
+int gw_sweep_write_table_at(int dirfd, const char *dir, const gw_sweep_config *cfg, const gw_sweep_model *m,
+                            gw_err *err);
 
 /* ---- running cases in memory (gw_sweep_run.c) ---- */
 

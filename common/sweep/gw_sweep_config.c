@@ -424,10 +424,28 @@ static int config_finish(const char *path, const char *base, const gw_sweep_mode
  * the wrong cause), so it is refused here, naming the key it would continue.
  * The rules are the reader's: an indented line that is neither blank nor a
  * comment continues the last key since the last section header; a ';' after a
- * blank starts a comment; a line with neither '=' nor ':' calls no handler. */
+ * blank starts a comment (a '#' there is refused: comment_hash); a line with
+ * neither '=' nor ':' calls no handler. */
+/* The first '#' of the value p[from, end) that begins it or follows a blank:
+ * where a ';' would start a comment (the reader takes ';' only), so a '#'
+ * there was meant as one. -1 when there is none. 'n = 40  # beads' was
+ * refused as "case 0: n: '40  # beads' is not an integer", naming neither
+ * the line nor the cause, and 'out = o2  # where' made a directory of that
+ * name (exit 0). A value cannot hold such a '#' (a path 'runs #2' neither),
+ * so that no value is read otherwise than it was meant. */
+static long comment_hash(const char *p, size_t from, size_t end)
+{
+    while (from < end && (p[from] == ' ' || p[from] == '\t'))
+        from++;
+    for (size_t q = from; q < end; q++)
+        if (p[q] == '#' && (q == from || p[q - 1] == ' ' || p[q - 1] == '\t'))
+            return (long)q;
+    return -1;
+}
+
 static int scan_lines(const char *text, const char *name, parse_ctx *pc, gw_err *err)
 {
-    char key[64] = "";
+    char key[64] = "", sect[64] = "";
     long key_ln = 0, ln = 1, cap = 0;
     int in_grid = 0, comma = 0; /* the last value line of the key ends with ',' */
     for (const char *p = text; *p; ln++) {
@@ -464,6 +482,7 @@ static int scan_lines(const char *text, const char *name, parse_ctx *pc, gw_err 
                 key[0] = '\0';
                 const char *q = memchr(p + i, ']', len - i);
                 in_grid = q && q - (p + i) == 5 && memcmp(p + i, "[grid", 5) == 0;
+                gw_snprintf(sect, sizeof sect, "%.*s ", q ? (int)(q - (p + i) + 1) : 0, p + i);
                 /* The reader drops whatever follows the ']': '[grid] n = 1:2'
                  * ran without n (one case, exit 0), '[params] solver = rk4'
                  * the default solver. Only blanks or a comment may follow. */
@@ -490,6 +509,16 @@ static int scan_lines(const char *text, const char *name, parse_ctx *pc, gw_err 
             }
         }
         if (call >= 0) {
+            /* the value (after the key's '=' or ':', or the whole continued line) */
+            size_t v = i;
+            if (call == 0)
+                while (p[v] != '=' && p[v] != ':')
+                    v++;
+            const long hash = comment_hash(p, call == 0 ? v + 1 : v, end);
+            if (hash >= 0)
+                return gw_err_set(err, GW_EINVAL, "%s:%ld: %s%s: a '#' after a value starts no comment in a config, "
+                                  "';' does: '%.*s' would be read as part of the value; write ';' for that '#'",
+                                  name, ln, sect, key, (int)(end - (size_t)hash), p + hash);
             if (pc->ncalls == cap) {
                 cap = cap ? 2 * cap : 64;
                 unsigned char *c = realloc(pc->calls, (size_t)cap);

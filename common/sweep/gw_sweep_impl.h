@@ -56,5 +56,11 @@ const char *gw_sweep_build(void);
 /* gw_sweep_journal.c: the journal or table read whole (a regular file only),
  * NULL with errno set (ENOENT absent, ENOMEM) and err filled. */
 char *gw_sweep_slurp(const char *path, size_t *len, gw_err *err);
+/* The same through fd (open on a regular file; read from its start, path
+ * naming it in messages): a directory moved meanwhile is read still. */
+char *gw_sweep_slurp_fd(int fd, const char *path, size_t *len, gw_err *err);
+/* The sweep's directory opened for the *at calls (O_DIRECTORY, O_CLOEXEC; by
+ * O_PATH where it may be searched but not read), -1 with errno set. */
+int gw_sweep_dir_open(const char *dir);
 
 #endif

@@ -10,7 +10,7 @@
  * the rerun runs again. An fsync per row made a 0.32 ms case cost 3.7 ms.
  * No units.
  */
-#define _POSIX_C_SOURCE 200809L
+#define _GNU_SOURCE /* O_PATH (gw_sweep_dir_open) */
 #include <errno.h>
 #include <math.h>
 #include <stdio.h>
@@ -62,6 +62,72 @@ char *gw_sweep_slurp(const char *path, size_t *len, gw_err *err)
     return buf;
 }
 
+char *gw_sweep_slurp_fd(int fd, const char *path, size_t *len, gw_err *err)
+{
+    struct stat st;
+    errno = 0;
+    if (fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
+        gw_err_set(err, GW_EIO, "%s: cannot read: %s", path, strerror(errno ? errno : EIO));
+        errno = EIO;
+        return NULL;
+    }
+    if ((unsigned long long)st.st_size > (unsigned long long)GW_SWEEP_JOURNAL_MAX) {
+        gw_err_set(err, GW_EINVAL, "sweep journal: '%s' is larger than %zu bytes", path, GW_SWEEP_JOURNAL_MAX);
+        errno = EINVAL;
+        return NULL;
+    }
+    const size_t n = (size_t)st.st_size;
+    char *buf = malloc(n + 1);
+    if (!buf) {
+        gw_err_set(err, GW_ENOMEM, "sweep journal: out of memory reading '%s'", path);
+        errno = ENOMEM;
+        return NULL;
+    }
+    size_t got = 0;
+    errno = 0;
+    while (got < n) {
+        const ssize_t r = pread(fd, buf + got, n - got, (off_t)got);
+        if (r < 0 && errno == EINTR)
+            continue;
+        if (r <= 0)
+            break;
+        got += (size_t)r;
+    }
+    if (got < n) {
+        free(buf);
+        gw_err_set(err, GW_EIO, "%s: cannot read: %s", path, errno ? strerror(errno) : "cut short");
+        errno = EIO;
+        return NULL;
+    }
+    buf[n] = '\0';
+    *len = n;
+    return buf;
+}
+
+int gw_sweep_dir_open(const char *dir)
+{
+    int fd = open(dir, O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+#ifdef O_PATH
+    if (fd < 0 && errno == EACCES) /* a directory one may write and search but not list (mode 0300) */
+        fd = open(dir, O_PATH | O_DIRECTORY | O_CLOEXEC);
+#endif
+    return fd;
+}
+
+int gw_sweep_dir_held(int dirfd, const char *dir, gw_err *err)
+{
+    if (!dir)
+        return gw_err_set(err, GW_EINVAL, "gw_sweep_dir_held: dir is NULL");
+    struct stat st;
+    if (fstat(dirfd, &st) != 0)
+        return gw_err_set(err, GW_EIO, "%s: the sweep's directory: %s", dir, strerror(errno));
+    if (st.st_nlink == 0) /* rmdir drops a directory's last link: a moved one keeps it */
+        return gw_err_set(err, GW_EIO, "%s: the sweep's directory was removed while the sweep ran (or moved to "
+                          "another file system, which copies it): its journal went with it, no table written; "
+                          "rerun to run its cases again (a copy of the journal resumes them)", dir);
+    return GW_OK;
+}
+
 /* A new journal, whole (its head and input lines) or not at all, and never
  * over one another sweep made meanwhile: written under a temporary name and
  * linked into place, which fails when the name exists. The atomic write
@@ -69,15 +135,21 @@ char *gw_sweep_slurp(const char *path, size_t *len, gw_err *err)
  * made a journal, the second replaced the first's, and the first appended its
  * rows to a file no longer in the directory and wrote its table from the
  * other sweep's rows (exit 0 for both). */
-static int journal_create(const char *path, const char *text, int *fdp, gw_err *err)
+static int journal_create(int dfd, const char *path, const char *text, int *fdp, gw_err *err)
 {
     char tmp[4200];
     *fdp = -1;
-    if (gw_snprintf(tmp, sizeof tmp, "%s.new.%ld.XXXXXX", path, (long)getpid()) >= (int)sizeof tmp)
-        return gw_err_set(err, GW_EINVAL, "%s: path too long", path);
-    int fd = mkstemp(tmp);
+    const size_t rel = strlen(path) - strlen("journal.csv"); /* tmp + rel: its name in dfd */
+    int fd = -1, e = EEXIST;
+    long seq = (long)(gw_clock_ms() * 1e3) % 1000000; /* a unique name, as mkstemp's, made in dfd */
+    for (int tries = 0; fd < 0 && e == EEXIST && tries < 1000; tries++, seq = (seq + 7919) % 1000000) {
+        if (gw_snprintf(tmp, sizeof tmp, "%s.new.%ld.%06ld", path, (long)getpid(), seq) >= (int)sizeof tmp)
+            return gw_err_set(err, GW_EINVAL, "%s: path too long", path);
+        fd = openat(dfd, tmp + rel, O_RDWR | O_CREAT | O_EXCL | O_CLOEXEC, 0600);
+        e = fd < 0 ? errno : 0;
+    }
     if (fd < 0)
-        return gw_err_set(err, GW_EIO, "%s: cannot create: %s", path, strerror(errno));
+        return gw_err_set(err, GW_EIO, "%s: cannot create: %s", path, strerror(e));
     gw_temps_add(tmp); /* a signal now removes it (the program's handler, gw_io_temps.c) */
     fchmod(fd, gw_new_file_mode(path));
     /* locked before it has its name: another sweep that finds it finds it
@@ -86,15 +158,16 @@ static int journal_create(const char *path, const char *text, int *fdp, gw_err *
     const size_t n = strlen(text);
     int bad = flock(fd, LOCK_EX) != 0 || write(fd, text, n) != (ssize_t)n || fsync(fd) != 0 ||
               fcntl(fd, F_SETFL, O_APPEND) != 0;
-    int e = errno, placed = 0;
-    if (!bad && link(tmp, path) == 0) {
+    e = errno;
+    int placed = 0;
+    if (!bad && linkat(dfd, tmp + rel, dfd, "journal.csv", 0) == 0) {
         placed = 1;
     } else if (!bad && errno != EEXIST) {
-        placed = rename(tmp, path) == 0; /* a file system without hard links: by rename, as before */
+        placed = renameat(dfd, tmp + rel, dfd, "journal.csv") == 0; /* a file system without hard links: by rename, as before */
         bad = !placed;
         e = errno;
     }
-    unlink(tmp);
+    unlinkat(dfd, tmp + rel, 0);
     gw_temps_drop(tmp);
     if (placed) {
         *fdp = fd;
@@ -104,8 +177,11 @@ static int journal_create(const char *path, const char *text, int *fdp, gw_err *
     return bad ? gw_err_set(err, GW_EIO, "%s: cannot create: %s", path, strerror(e ? e : EIO)) : GW_OK;
 }
 
-static int journal_check(const char *path, const char *dir, const char *head, const gw_sweep_config *cfg,
+static int journal_check(const char *path, int dfd, const char *dir, const char *head, const gw_sweep_config *cfg,
                          char *done, long *ndone, int fd, size_t *torn, int *torn_head, gw_err *err);
+
+static int journal_find(const char *path, int dfd, const char *dir, const gw_sweep_config *cfg, char *done,
+                        long *ndone, int *fdp, int *exists, size_t *torn, int *torn_head, gw_err *err);
 
 int gw_sweep_journal_scan(const char *dir, const gw_sweep_config *cfg, char *done, long *ndone, gw_err *err)
 {
@@ -121,10 +197,14 @@ int gw_sweep_journal_scan(const char *dir, const gw_sweep_config *cfg, char *don
  * `sweep --check` reads it (torn set: nothing made or cut, *torn the bytes a
  * resume would cut, *torn_head 1 when they are a line of the head, *exists 0
  * when there is none; read under a shared lock and closed). One path for
- * both: the same checks, the same refusals. */
+ * both: the same checks, the same refusals. The directory is opened once and
+ * the journal found, made and read through it (kept in *dirfdp when given):
+ * a directory moved meanwhile is the sweep's still. */
 static int journal_access(const char *dir, const gw_sweep_config *cfg, char *done, long *ndone, int *fdp,
-                          int *exists, size_t *torn, int *torn_head, gw_err *err)
+                          int *dirfdp, int *exists, size_t *torn, int *torn_head, gw_err *err)
 {
+    if (dirfdp)
+        *dirfdp = -1;
     if (!dir || !cfg || !done || !ndone) {
         if (ndone)
             *ndone = 0;
@@ -141,12 +221,34 @@ static int journal_access(const char *dir, const gw_sweep_config *cfg, char *don
         *exists = 1;
     if (gw_path_join(path, sizeof path, dir, "journal.csv") != GW_OK)
         return gw_err_set(err, GW_EINVAL, "%s: path too long", dir);
-    struct stat st;
-    if (torn && stat(dir, &st) != 0 && errno == ENOENT) { /* a check before the first run: nothing in it */
+    const int dfd = gw_sweep_dir_open(dir);
+    if (dfd < 0 && torn && errno == ENOENT) { /* a check before the first run: nothing in it */
         *exists = 0;
         *torn = 0;
         return GW_OK;
     }
+    if (dfd < 0)
+        return gw_err_set(err, GW_EIO, "%s: cannot open the sweep's directory: %s", dir, strerror(errno));
+    int rc = journal_find(path, dfd, dir, cfg, done, ndone, &fd, exists, torn, torn_head, err);
+    if ((rc != GW_OK || !fdp) && fd >= 0) {
+        close(fd);
+        fd = -1;
+    }
+    if (fdp)
+        *fdp = fd;
+    if (rc == GW_OK && dirfdp && fd >= 0)
+        *dirfdp = dfd;
+    else
+        close(dfd);
+    return rc;
+}
+
+/* journal_access in the directory dfd, open */
+static int journal_find(const char *path, int dfd, const char *dir, const gw_sweep_config *cfg, char *done,
+                        long *ndone, int *fdp, int *exists, size_t *torn, int *torn_head, gw_err *err)
+{
+    struct stat st;
+    int fd = -1;
     /* the table goes beside the journal once every case has run: a directory
      * or a FIFO of its name failed the sweep (exit 1) after all its cases */
     char tpath[4096];
@@ -158,12 +260,13 @@ static int journal_access(const char *dir, const gw_sweep_config *cfg, char *don
         return GW_EINVAL;
     char head[96];
     gw_snprintf(head, sizeof head, GW_SWEEP_JOURNAL_HEAD "\n", cfg->hash);
-    if (torn && stat(path, &st) != 0 && errno == ENOENT) { /* a run would start it: nothing done */
+    const int absent = fstatat(dfd, "journal.csv", &st, 0) != 0 && errno == ENOENT;
+    if (torn && absent) { /* a run would start it: nothing done */
         *exists = 0;
         *torn = 0;
         return GW_OK;
     }
-    if (stat(path, &st) != 0 && errno == ENOENT) {
+    if (absent) {
         /* a new journal: the config, the build that computes its rows, and
          * what its files held */
         char *in = gw_sweep_head_lines(cfg);
@@ -178,7 +281,7 @@ static int journal_access(const char *dir, const gw_sweep_config *cfg, char *don
         memcpy(text, head, hl);
         memcpy(text + hl, bline, bl);
         memcpy(text + hl + bl, in, il + 1);
-        int rc = journal_create(path, text, &fd, err);
+        int rc = journal_create(dfd, path, text, &fd, err);
         free(text);
         free(in);
         if (rc != GW_OK)
@@ -192,8 +295,8 @@ static int journal_access(const char *dir, const gw_sweep_config *cfg, char *don
      * A check opens it as a resume would (for appending: a journal a resume
      * cannot append to is refused alike), writes nothing, and shares its lock
      * with other checks. */
-    if (fd < 0 && stat(path, &st) == 0 && S_ISREG(st.st_mode)) {
-        fd = open(path, O_RDWR | O_APPEND | O_CLOEXEC | O_NONBLOCK);
+    if (fd < 0 && fstatat(dfd, "journal.csv", &st, 0) == 0 && S_ISREG(st.st_mode)) {
+        fd = openat(dfd, "journal.csv", O_RDWR | O_APPEND | O_CLOEXEC | O_NONBLOCK);
         if (fd < 0)
             return gw_err_set(err, GW_EIO, "%s: cannot open for appending: %s", path, strerror(errno));
         if (flock(fd, (torn ? LOCK_SH : LOCK_EX) | LOCK_NB) != 0) {
@@ -205,20 +308,27 @@ static int journal_access(const char *dir, const gw_sweep_config *cfg, char *don
             return gw_err_set(err, GW_EIO, "%s: cannot lock: %s", path, strerror(e));
         }
     }
-    int rc = journal_check(path, dir, head, cfg, done, ndone, fd, torn, torn_head, err);
-    if ((rc != GW_OK || !fdp) && fd >= 0) {
-        close(fd);
-        fd = -1;
-    }
-    if (fdp)
-        *fdp = fd;
-    return rc;
+    *fdp = fd;
+    return journal_check(path, dfd, dir, head, cfg, done, ndone, fd, torn, torn_head, err);
 }
 
 int gw_sweep_journal_open(const char *dir, const gw_sweep_config *cfg, char *done, long *ndone, int *fdp,
                           gw_err *err)
 {
-    return journal_access(dir, cfg, done, ndone, fdp, NULL, NULL, NULL, err);
+    return journal_access(dir, cfg, done, ndone, fdp, NULL, NULL, NULL, NULL, err);
+}
+
+int gw_sweep_journal_open_at(const char *dir, const gw_sweep_config *cfg, char *done, long *ndone, int *fdp,
+                             int *dirfdp, gw_err *err)
+{
+    if (!fdp || !dirfdp) {
+        if (dirfdp)
+            *dirfdp = -1;
+        if (fdp)
+            *fdp = -1;
+        return gw_err_set(err, GW_EINVAL, "gw_sweep_journal_open_at: %s is NULL", !fdp ? "fd" : "dirfd");
+    }
+    return journal_access(dir, cfg, done, ndone, fdp, dirfdp, NULL, NULL, NULL, err);
 }
 
 int gw_sweep_journal_resume_check(const char *dir, const gw_sweep_config *cfg, char *done, long *ndone, int *exists,
@@ -226,7 +336,7 @@ int gw_sweep_journal_resume_check(const char *dir, const gw_sweep_config *cfg, c
 {
     int e = 0, h = 0;
     size_t t = 0;
-    int rc = journal_access(dir, cfg, done, ndone, NULL, &e, &t, &h, err);
+    int rc = journal_access(dir, cfg, done, ndone, NULL, NULL, &e, &t, &h, err);
     if (exists)
         *exists = e;
     if (torn)
@@ -292,15 +402,17 @@ static int build_check(const char *path, const char *buf, size_t len, size_t *po
 /* The journal at path, read (under the caller's lock on fd) and checked;
  * a torn last line cut (torn NULL) or its bytes counted in *torn, *torn_head
  * 1 when it is a line of the head (# input, # grid, # param), not a row. */
-static int journal_check(const char *path, const char *dir, const char *head, const gw_sweep_config *cfg,
+static int journal_check(const char *path, int dfd, const char *dir, const char *head, const gw_sweep_config *cfg,
                          char *done, long *ndone, int fd, size_t *torn, int *torn_head, gw_err *err)
 {
     size_t len = 0;
-    char *buf = gw_sweep_slurp(path, &len, err);
+    /* through the journal opened (fd), or what is there instead named */
+    char *buf = fd >= 0 ? gw_sweep_slurp_fd(fd, path, &len, err) : gw_sweep_slurp(path, &len, err);
     if (!buf) /* a FIFO, a directory, gone: named in err; or out of memory */
         return errno == ENOMEM ? GW_ENOMEM : GW_EINVAL;
     struct stat a, b;
-    if (fd < 0 || fstat(fd, &a) != 0 || stat(path, &b) != 0 || a.st_dev != b.st_dev || a.st_ino != b.st_ino) {
+    if (fd < 0 || fstat(fd, &a) != 0 || fstatat(dfd, "journal.csv", &b, 0) != 0 || a.st_dev != b.st_dev ||
+        a.st_ino != b.st_ino) {
         free(buf);
         return gw_err_set(err, GW_EIO, "%s: replaced while the sweep opened it: rerun", path);
     }

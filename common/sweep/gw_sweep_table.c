@@ -33,11 +33,34 @@ static int cmp_rows(const void *a, const void *b)
 
 int gw_sweep_write_table(const char *dir, const gw_sweep_config *cfg, const gw_sweep_model *m, gw_err *err)
 {
+    if (!dir)
+        return gw_err_set(err, GW_EINVAL, "gw_sweep_write_table: dir is NULL");
+    const int dfd = gw_sweep_dir_open(dir);
+    if (dfd < 0)
+        return gw_err_set(err, GW_EIO, "%s: cannot open the sweep's directory: %s", dir, strerror(errno));
+    const int rc = gw_sweep_write_table_at(dfd, dir, cfg, m, err);
+    close(dfd);
+    return rc;
+}
+
+int gw_sweep_write_table_at(int dfd, const char *dir, const gw_sweep_config *cfg, const gw_sweep_model *m,
+                            gw_err *err)
+{
+    if (!dir || !cfg || !m)
+        return gw_err_set(err, GW_EINVAL, "gw_sweep_write_table_at: %s is NULL", !dir ? "dir" : !cfg ? "cfg" : "m");
     char path[4096];
     if (gw_path_join(path, sizeof path, dir, "journal.csv") != GW_OK)
         return gw_err_set(err, GW_EINVAL, "%s: path too long", dir);
+    /* the journal now in the directory (another sweep's, when it was
+     * replaced: refused below), read through the directory held */
+    if (gw_sweep_dir_held(dfd, dir, err) != GW_OK)
+        return GW_EIO;
+    const int jfd = openat(dfd, "journal.csv", O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+    if (jfd < 0)
+        return gw_err_set(err, GW_EIO, "%s: cannot read: %s", path, strerror(errno));
     size_t len = 0;
-    char *buf = gw_sweep_slurp(path, &len, err);
+    char *buf = gw_sweep_slurp_fd(jfd, path, &len, err);
+    close(jfd);
     if (!buf)
         return errno == ENOMEM ? GW_ENOMEM : GW_EIO;
     row_ref *rows = calloc((size_t)cfg->ncases + 1, sizeof *rows);
@@ -70,9 +93,7 @@ int gw_sweep_write_table(const char *dir, const gw_sweep_config *cfg, const gw_s
     } else {
         qsort(rows, (size_t)nr, sizeof *rows, cmp_rows);
         gw_afile f;
-        if (gw_path_join(path, sizeof path, dir, "results.csv") != GW_OK)
-            rc = gw_err_set(err, GW_EINVAL, "%s: path too long", dir);
-        else if ((rc = gw_afile_open(&f, path, err)) == GW_OK) {
+        if ((rc = gw_afile_openat(&f, dfd, dir, "results.csv", err)) == GW_OK) {
             gw_fprintf(f.fp, "# granwave %s sweep, model %s, config %016lx, %ld of %ld cases\n", gw_version(),
                     cfg->model, cfg->hash, nr, cfg->ncases);
             gw_fprintf(f.fp, "# build %s\n", gw_sweep_build()); /* the journal's: it computed every row */

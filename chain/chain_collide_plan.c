@@ -323,7 +323,10 @@ int chain_sampling_check(int n, double t_expect, double dt_out, int given, gw_er
                       given ? "" : " (the wall's contact is far shorter than the column's: a stiff wall on soft contacts)");
 }
 
-int chain_collide_plan_make(const gw_chain_params *p0, const gw_chain_run_opts *o, collide_plan *pl, gw_err *err)
+/* The plan; whole 0: only the bounds that hold whatever t_max the run is cut
+ * at (t_max above the collision's expected length), not those of a run going
+ * on to t_max (chain_collide_plan_early) */
+static int plan_make(const gw_chain_params *p0, const gw_chain_run_opts *o, collide_plan *pl, int whole, gw_err *err)
 {
     gw_chain_params q = *p0; /* the time scales at chain_speed_scale; p0 itself for the rest */
     q.v_imp = chain_speed_scale(p0);
@@ -401,6 +404,8 @@ int chain_collide_plan_make(const gw_chain_params *p0, const gw_chain_run_opts *
      * after the stored trace's bound, which names what --out would write) */
     if ((rc = chain_sampling_check(n, pl->t_expect, pl->dt_out, o->dt_out > 0, err)) != GW_OK)
         return rc;
+    if (!whole)
+        return GW_OK;
     /* A run that does not end (a column held on the wall by gravity and damping,
      * a sensor body still ringing) goes on to t_max: the bounds above hold over
      * the expected collision, an explicit --t-max far beyond it must meet them too
@@ -430,6 +435,17 @@ int chain_collide_plan_make(const gw_chain_params *p0, const gw_chain_run_opts *
     if ((rc = chain_held_check(p0, pl->t_max, t_col, pl->tau1, pl->dt_out, err)) != GW_OK)
         return rc;
     return GW_OK;
+}
+
+int chain_collide_plan_make(const gw_chain_params *p0, const gw_chain_run_opts *o, collide_plan *pl, gw_err *err)
+{
+    return plan_make(p0, o, pl, 1, err);
+}
+
+int chain_collide_plan_early(const gw_chain_params *p0, const gw_chain_run_opts *o, gw_err *err)
+{
+    collide_plan pl;
+    return plan_make(p0, o, &pl, 0, err);
 }
 
 int gw_chain_run_check(const gw_chain_params *p, const gw_chain_run_opts *o, gw_err *err)

@@ -85,16 +85,41 @@ int chain_steps_check(const gw_solver_type *type, const gw_solver_params *sp, co
     return GW_OK;
 }
 
-int chain_sensor_steps_check(const gw_chain_params *p, const gw_solver_type *type, double t_len, const char *over,
-                             gw_err *err)
+/* The steps cvode and arkode take per radian of the sensor body's fastest
+ * oscillation, at rtol = atol = 1e-12 and as (tol / 1e-12)^-0.2 above it
+ * (never below 2). Measured at n = 3 over the first 50 to 200 us (cvode bdf
+ * unless said): 7.1 to 27 at 1e-12 (M 1e-7 kg on 1e9 N/m: 17.4; --k 1e3:
+ * 27; M 1e-3 on 1e14: 7.1; --kwall 1e14: 21.6 and 37; --vimp 10: 26; adams
+ * and arkode erk 8 and 9), 3.5 at 1e-8, 1.0 at 1e-6. Before, 2 a radian of
+ * sqrt(k_s/M) was taken: --n 3 --radius 1 --sensor-mass 1e-7
+ * --sensor-stiffness 1e9, estimated at 5.5e6 steps, ran 2e8 (438 s on an
+ * idle machine) into the run's own bound and exited 1. */
+#define SENSOR_STEPS_PER_RAD 20.0
+
+int chain_sensor_steps_check(const gw_chain_params *p, const gw_solver_type *type, const gw_solver_params *sp,
+                             double t_len, const char *over, gw_err *err)
 {
     if (!(p->sensor.mass > 0 && p->sensor.stiffness > 0) || type == gw_solver_rk4)
         return GW_OK; /* rk4: its step is bounded by chain_steps_check */
-    const double omega = sqrt(p->sensor.stiffness / p->sensor.mass), steps = 2.0 * omega * t_len;
+    /* The body rings between its spring and bead 1's contact, which adds the
+     * contact's stiffness dF/dd = 1.5 K d^(1/2) at bead 1's overlap on a
+     * rigid wall (an upper bound: the body gives way): a heavy bead (--radius
+     * 1, 3.3e4 kg) on 1e-7 kg and 1e9 N/m rings 2.8 times faster than
+     * sqrt(k_s/M) */
+    const double m1 = p->masses ? p->masses[0] : p->mass,
+                 kc = p->kwall > 0 && m1 > 0 && p->v_imp > 0 ? 1.5 * p->kwall * sqrt(gw_chain_dmax1(m1, p->kwall, p->v_imp))
+                                                                : 0.0;
+    const double omega = sqrt((p->sensor.stiffness + (isfinite(kc) ? kc : 0.0)) / p->sensor.mass);
+    double tol = sp ? fmax(sp->rtol, sp->atol) : 1e-12;
+    if (!(tol > 0))
+        tol = 1e-12;
+    const double per_rad = fmax(2.0, SENSOR_STEPS_PER_RAD * pow(fmax(tol, 1e-12) / 1e-12, -0.2)),
+                 steps = per_rad * omega * t_len;
     if (!(steps <= 1e8))
-        return gw_err_set(err, GW_EINVAL, "sensor-stiffness: a sensor body oscillating at %.3g rad/s (sqrt(k_s/M)) "
-                          "needs about %.3g steps over %s (about %.3g s; 2 a radian at least, measured 2-9); at "
-                          "most 1e+08: a softer or heavier sensor body, or a shorter run", omega, steps, over, t_len);
+        return gw_err_set(err, GW_EINVAL, "sensor-stiffness: a sensor body oscillating at %.3g rad/s (sqrt((k_s + the "
+                          "contact's stiffness)/M)) needs about %.3g steps over %s (about %.3g s; %.3g a radian at "
+                          "this tolerance, measured 7-37 at 1e-12); at most 1e+08: a softer or heavier sensor body, "
+                          "looser tolerances or a shorter run", omega, steps, over, t_len, per_rad);
     return GW_OK;
 }
 
@@ -374,7 +399,7 @@ static int plan_make(const gw_chain_params *p0, const gw_chain_run_opts *o, coll
         n_ok[0] = n * 1e8 / (pl->t_expect / step);
     /* cvode and arkode follow a sensor body's oscillation too (8 s for 0.1 ms at
      * 1e-7 kg on 1e14 N/m, 5.8e7 steps) */
-    if ((rc = chain_sensor_steps_check(p, pl->type, pl->t_expect, "the collision", err)) != GW_OK)
+    if ((rc = chain_sensor_steps_check(p, pl->type, &pl->sp, pl->t_expect, "the collision", err)) != GW_OK)
         return rc;
     if (gw_chain_memory_check(p, pl->type, pl->sp.method, &e[1]) != GW_OK)
         n_ok[1] = memory_n_ok(p, pl->type, pl->sp.method);
@@ -421,7 +446,7 @@ static int plan_make(const gw_chain_params *p0, const gw_chain_run_opts *o, coll
                               /* one that passes the held column's bound too (chain_held_check) */
                               fmin(floor_2digits(t_lim), held_t_lim(p0, t_col, pl->tau1,
                                                                     pl->dt_out)));
-        if ((rc = chain_sensor_steps_check(p, pl->type, pl->t_max, "t-max", err)) != GW_OK)
+        if ((rc = chain_sensor_steps_check(p, pl->type, &pl->sp, pl->t_max, "t-max", err)) != GW_OK)
             return rc;
         if (o->sample == gw_chain_trace_sample) {
             gw_err te = {{0}};

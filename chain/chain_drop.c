@@ -618,7 +618,7 @@ int gw_chain_drop_run_progress(const gw_chain_drop_params *p, const gw_chain_run
     /* and the first collision's own bounds (not known before: at most t_max) */
     gw_chain_run_opts o1 = first_opts(p, o, &st, y0);
     if ((rc = chain_steps_check(type, &sp, &o->sp, p->t_max, "t-max", err)) != GW_OK ||
-        (rc = chain_sensor_steps_check(&q, type, p->t_max, "t-max", err)) != GW_OK ||
+        (rc = chain_sensor_steps_check(&q, type, &sp, p->t_max, "t-max", err)) != GW_OK ||
         (rc = chain_collide_drop_check(c, &o1, err)) != GW_OK)
         goto done;
     st.type = type;

@@ -73,12 +73,13 @@ int chain_general_roots(double t, const double *y, double *g, void *P);
 double chain_force_rate(const gw_chain *c, double t, const double *y);
 void chain_general_energy(const gw_chain *c, const double *y, gw_chain_energy *e);
 
-/* cvode and arkode follow a sensor body's oscillation (omega = sqrt(k_s/M)) at 2
- * to 9 steps a radian (measured): at least 2 omega t_len steps, bounded at 1e8
- * before the run; GW_EINVAL naming sensor-stiffness. rk4: GW_OK (its step is
- * chain_steps_check's). */
-int chain_sensor_steps_check(const gw_chain_params *p, const gw_solver_type *type, double t_len, const char *over,
-                             gw_err *err);
+/* cvode and arkode follow a sensor body's oscillation (omega = sqrt((k_s + the
+ * stiffness of bead 1's contact)/M)) at 7 to 37 steps a radian at 1e-12
+ * (measured; fewer at looser tolerances of sp): 20 omega t_len steps there,
+ * bounded at 1e8 before the run; GW_EINVAL naming sensor-stiffness. rk4: GW_OK
+ * (its step is chain_steps_check's). */
+int chain_sensor_steps_check(const gw_chain_params *p, const gw_solver_type *type, const gw_solver_params *sp,
+                             double t_len, const char *over, gw_err *err);
 
 /* A collision's wall_pending (gw_chain_result) when the run stopped because the
  * column fell back onto the wall before its collision ended (chain_collide.c,

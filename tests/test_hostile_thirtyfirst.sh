@@ -13,6 +13,16 @@
 #    --radii, nothing written, and in Python the progress callback is never
 #    called. A drop within the bounds (a 3e-5 m bead between two of 4e-3 m)
 #    still runs.
+#  2 A sensor body's steps underestimated. The plan took cvode's steps over a
+#    sensor body's oscillation as 2 a radian of sqrt(k_s/M): measured, 7 to
+#    37 at the default tolerance 1e-12, and a heavy bead's contact stiffens
+#    the body further. chain --n 3 --radius 1 --sensor-mass 1e-7
+#    --sensor-stiffness 1e9 passed the plan (5.5e6 steps estimated), ran 2e8
+#    steps (438 s on an idle machine) into the run's own bound and exited 1
+#    ("... or use cvode", which it was using). The estimate now takes the
+#    contact's stiffness into the body's frequency and 20 steps a radian at
+#    1e-12 (fewer at looser tolerances): refused at once, exit 2 naming
+#    --sensor-stiffness, nothing written. A body within the bound still runs.
 # Checks that fail on the code before: see docs/tests.md.
 # shellcheck source=refusal_lib.sh
 . "$2/tests/refusal_lib.sh"
@@ -43,5 +53,16 @@ except granwave.GranwaveValueError as e:
 print(("PASS: " if not calls else "FAIL: ") + "Python drop: refused before the drop ran (the progress callback "
       "called %d times)" % len(calls))
 EOF
+
+# --- 2 a sensor body's steps: its contact's stiffness, 20 a radian at 1e-12 ---
+# (60 s only guards against the run of the code before, which took minutes)
+REFUSE_TIMEOUT=60 refused "chain --radius 1 --sensor-mass 1e-7 --sensor-stiffness 1e9: refused before the run" \
+    "^granwave chain --sensor-stiffness: a sensor body oscillating at .* rad/s .* needs about .* steps over the collision" \
+    chain --n 3 --radius 1 --sensor-mass 1e-7 --sensor-stiffness 1e9 --out o
+if runs_json "chain, a sensor body within the bound" s.json chain --n 3 --sensor-mass 1e-3 --sensor-stiffness 1e9; then
+    jcheck_ok=$(jq_py s.json "d['f_max'] > 0 and d['converged']")
+    [ "$jcheck_ok" = True ] && ok "chain --sensor-mass 1e-3 --sensor-stiffness 1e9 still runs (exit 0, converged)" ||
+        ko "chain with a sensor body within the bound: $(head -c 200 s.json)"
+fi
 
 test_summary test_hostile_thirtyfirst

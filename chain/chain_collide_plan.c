@@ -223,9 +223,11 @@ static double floor_2digits(double v)
  * bound: 3.1e6 bead-steps). Equal beads are not checked: a wall far
  * stiffer than their contacts (--n 10 --k 1e3 --kwall 1e14) has bead 1 bounce
  * between the two (9 wall contacts, 1.26e6 steps), not held ringing. rk4's
- * steps are the fixed step's, bounded by chain_steps_check. The drop does not
- * call it: its calibration is not this one (drop --n 2 --radii 1e-3,1 took
- * 929331 steps over its 10 ms, 5.8 s, where this would estimate 1.4e7). */
+ * steps are the fixed step's, bounded by chain_steps_check. The drop's own
+ * run over t_max does not call it: its calibration is not this one (drop --n
+ * 2 --radii 1e-3,1 took 929331 steps over its 10 ms, 5.8 s, where this would
+ * estimate 1.4e7); its first collision, run again by the chain's code, does,
+ * before the drop runs (chain_collide_drop_check). */
 #define RING_RATIO_MAX 100.0
 #define RING_WORK_MAX 2e7
 #define RING_STEPS_PER_OSC 260.0

@@ -519,6 +519,16 @@ int chain_collide_drop(const gw_chain *c, const gw_chain_run_opts *o, int flight
     return collide_run(c, o, 1, flight_cut, r, err);
 }
 
+int chain_collide_drop_check(const gw_chain *c, const gw_chain_run_opts *o, gw_err *err)
+{
+    /* the chain's own masses and contact coefficients, as collide_run plans */
+    const gw_chain_params *p = gw_chain_get_params(c);
+    gw_chain_params pc = *p;
+    pc.masses = c->m;
+    pc.kc = p->n > 1 ? c->kc : NULL;
+    return chain_collide_plan_early(&pc, o, err);
+}
+
 static int collide_run(const gw_chain *c, const gw_chain_run_opts *o, int drop, int flight_cut, gw_chain_result *r,
                        gw_err *err)
 {

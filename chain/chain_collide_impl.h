@@ -34,5 +34,9 @@ static inline double chain_plan_step(const collide_plan *pl)
 /* The plan of a collision of p0 with o in pl; GW_EINVAL naming the bound
  * that trips (pl is then partly filled and not to be used). */
 int chain_collide_plan_make(const gw_chain_params *p0, const gw_chain_run_opts *o, collide_plan *pl, gw_err *err);
+/* The same bounds but those of a run going on to t_max (the explicit t-max's
+ * and a column held by gravity's): a run whose t_max is cut shorter later
+ * (the drop's first collision) meets these whatever its cut. */
+int chain_collide_plan_early(const gw_chain_params *p0, const gw_chain_run_opts *o, gw_err *err);
 
 #endif

@@ -85,16 +85,41 @@ int chain_steps_check(const gw_solver_type *type, const gw_solver_params *sp, co
     return GW_OK;
 }
 
-int chain_sensor_steps_check(const gw_chain_params *p, const gw_solver_type *type, double t_len, const char *over,
-                             gw_err *err)
+/* The steps cvode and arkode take per radian of the sensor body's fastest
+ * oscillation, at rtol = atol = 1e-12 and as (tol / 1e-12)^-0.2 above it
+ * (never below 2). Measured at n = 3 over the first 50 to 200 us (cvode bdf
+ * unless said): 7.1 to 27 at 1e-12 (M 1e-7 kg on 1e9 N/m: 17.4; --k 1e3:
+ * 27; M 1e-3 on 1e14: 7.1; --kwall 1e14: 21.6 and 37; --vimp 10: 26; adams
+ * and arkode erk 8 and 9), 3.5 at 1e-8, 1.0 at 1e-6. Before, 2 a radian of
+ * sqrt(k_s/M) was taken: --n 3 --radius 1 --sensor-mass 1e-7
+ * --sensor-stiffness 1e9, estimated at 5.5e6 steps, ran 2e8 (438 s on an
+ * idle machine) into the run's own bound and exited 1. */
+#define SENSOR_STEPS_PER_RAD 20.0
+
+int chain_sensor_steps_check(const gw_chain_params *p, const gw_solver_type *type, const gw_solver_params *sp,
+                             double t_len, const char *over, gw_err *err)
 {
     if (!(p->sensor.mass > 0 && p->sensor.stiffness > 0) || type == gw_solver_rk4)
         return GW_OK; /* rk4: its step is bounded by chain_steps_check */
-    const double omega = sqrt(p->sensor.stiffness / p->sensor.mass), steps = 2.0 * omega * t_len;
+    /* The body rings between its spring and bead 1's contact, which adds the
+     * contact's stiffness dF/dd = 1.5 K d^(1/2) at bead 1's overlap on a
+     * rigid wall (an upper bound: the body gives way): a heavy bead (--radius
+     * 1, 3.3e4 kg) on 1e-7 kg and 1e9 N/m rings 2.8 times faster than
+     * sqrt(k_s/M) */
+    const double m1 = p->masses ? p->masses[0] : p->mass,
+                 kc = p->kwall > 0 && m1 > 0 && p->v_imp > 0 ? 1.5 * p->kwall * sqrt(gw_chain_dmax1(m1, p->kwall, p->v_imp))
+                                                                : 0.0;
+    const double omega = sqrt((p->sensor.stiffness + (isfinite(kc) ? kc : 0.0)) / p->sensor.mass);
+    double tol = sp ? fmax(sp->rtol, sp->atol) : 1e-12;
+    if (!(tol > 0))
+        tol = 1e-12;
+    const double per_rad = fmax(2.0, SENSOR_STEPS_PER_RAD * pow(fmax(tol, 1e-12) / 1e-12, -0.2)),
+                 steps = per_rad * omega * t_len;
     if (!(steps <= 1e8))
-        return gw_err_set(err, GW_EINVAL, "sensor-stiffness: a sensor body oscillating at %.3g rad/s (sqrt(k_s/M)) "
-                          "needs about %.3g steps over %s (about %.3g s; 2 a radian at least, measured 2-9); at "
-                          "most 1e+08: a softer or heavier sensor body, or a shorter run", omega, steps, over, t_len);
+        return gw_err_set(err, GW_EINVAL, "sensor-stiffness: a sensor body oscillating at %.3g rad/s (sqrt((k_s + the "
+                          "contact's stiffness)/M)) needs about %.3g steps over %s (about %.3g s; %.3g a radian at "
+                          "this tolerance, measured 7-37 at 1e-12); at most 1e+08: a softer or heavier sensor body, "
+                          "looser tolerances or a shorter run", omega, steps, over, t_len, per_rad);
     return GW_OK;
 }
 
@@ -198,9 +223,11 @@ static double floor_2digits(double v)
  * bound: 3.1e6 bead-steps). Equal beads are not checked: a wall far
  * stiffer than their contacts (--n 10 --k 1e3 --kwall 1e14) has bead 1 bounce
  * between the two (9 wall contacts, 1.26e6 steps), not held ringing. rk4's
- * steps are the fixed step's, bounded by chain_steps_check. The drop does not
- * call it: its calibration is not this one (drop --n 2 --radii 1e-3,1 took
- * 929331 steps over its 10 ms, 5.8 s, where this would estimate 1.4e7). */
+ * steps are the fixed step's, bounded by chain_steps_check. The drop's own
+ * run over t_max does not call it: its calibration is not this one (drop --n
+ * 2 --radii 1e-3,1 took 929331 steps over its 10 ms, 5.8 s, where this would
+ * estimate 1.4e7); its first collision, run again by the chain's code, does,
+ * before the drop runs (chain_collide_drop_check). */
 #define RING_RATIO_MAX 100.0
 #define RING_WORK_MAX 2e7
 #define RING_STEPS_PER_OSC 260.0
@@ -323,7 +350,10 @@ int chain_sampling_check(int n, double t_expect, double dt_out, int given, gw_er
                       given ? "" : " (the wall's contact is far shorter than the column's: a stiff wall on soft contacts)");
 }
 
-int chain_collide_plan_make(const gw_chain_params *p0, const gw_chain_run_opts *o, collide_plan *pl, gw_err *err)
+/* The plan; whole 0: only the bounds that hold whatever t_max the run is cut
+ * at (t_max above the collision's expected length), not those of a run going
+ * on to t_max (chain_collide_plan_early) */
+static int plan_make(const gw_chain_params *p0, const gw_chain_run_opts *o, collide_plan *pl, int whole, gw_err *err)
 {
     gw_chain_params q = *p0; /* the time scales at chain_speed_scale; p0 itself for the rest */
     q.v_imp = chain_speed_scale(p0);
@@ -371,7 +401,7 @@ int chain_collide_plan_make(const gw_chain_params *p0, const gw_chain_run_opts *
         n_ok[0] = n * 1e8 / (pl->t_expect / step);
     /* cvode and arkode follow a sensor body's oscillation too (8 s for 0.1 ms at
      * 1e-7 kg on 1e14 N/m, 5.8e7 steps) */
-    if ((rc = chain_sensor_steps_check(p, pl->type, pl->t_expect, "the collision", err)) != GW_OK)
+    if ((rc = chain_sensor_steps_check(p, pl->type, &pl->sp, pl->t_expect, "the collision", err)) != GW_OK)
         return rc;
     if (gw_chain_memory_check(p, pl->type, pl->sp.method, &e[1]) != GW_OK)
         n_ok[1] = memory_n_ok(p, pl->type, pl->sp.method);
@@ -401,6 +431,8 @@ int chain_collide_plan_make(const gw_chain_params *p0, const gw_chain_run_opts *
      * after the stored trace's bound, which names what --out would write) */
     if ((rc = chain_sampling_check(n, pl->t_expect, pl->dt_out, o->dt_out > 0, err)) != GW_OK)
         return rc;
+    if (!whole)
+        return GW_OK;
     /* A run that does not end (a column held on the wall by gravity and damping,
      * a sensor body still ringing) goes on to t_max: the bounds above hold over
      * the expected collision, an explicit --t-max far beyond it must meet them too
@@ -416,7 +448,7 @@ int chain_collide_plan_make(const gw_chain_params *p0, const gw_chain_run_opts *
                               /* one that passes the held column's bound too (chain_held_check) */
                               fmin(floor_2digits(t_lim), held_t_lim(p0, t_col, pl->tau1,
                                                                     pl->dt_out)));
-        if ((rc = chain_sensor_steps_check(p, pl->type, pl->t_max, "t-max", err)) != GW_OK)
+        if ((rc = chain_sensor_steps_check(p, pl->type, &pl->sp, pl->t_max, "t-max", err)) != GW_OK)
             return rc;
         if (o->sample == gw_chain_trace_sample) {
             gw_err te = {{0}};
@@ -430,6 +462,17 @@ int chain_collide_plan_make(const gw_chain_params *p0, const gw_chain_run_opts *
     if ((rc = chain_held_check(p0, pl->t_max, t_col, pl->tau1, pl->dt_out, err)) != GW_OK)
         return rc;
     return GW_OK;
+}
+
+int chain_collide_plan_make(const gw_chain_params *p0, const gw_chain_run_opts *o, collide_plan *pl, gw_err *err)
+{
+    return plan_make(p0, o, pl, 1, err);
+}
+
+int chain_collide_plan_early(const gw_chain_params *p0, const gw_chain_run_opts *o, gw_err *err)
+{
+    collide_plan pl;
+    return plan_make(p0, o, &pl, 0, err);
 }
 
 int gw_chain_run_check(const gw_chain_params *p, const gw_chain_run_opts *o, gw_err *err)

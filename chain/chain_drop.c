@@ -417,9 +417,8 @@ static int on_roots(drop_state *st, double t, const double *y, const int *roots)
  * chain's end (every contact open, every pair separating) or, under gravity, at
  * the latest half way through bead 1's first flight: the chain's end may
  * otherwise never come, or only after bead 1 fell back on the sensor. */
-static int first_collision(const gw_chain *c, const gw_chain_drop_params *p,
-                           const gw_chain_run_opts *o, const double *y0, drop_state *st,
-                           gw_chain_drop_result *r, gw_err *err)
+static gw_chain_run_opts first_opts(const gw_chain_drop_params *p, const gw_chain_run_opts *o, drop_state *st,
+                                    const double *y0)
 {
     gw_chain_run_opts o1 = *o;
     o1.sample = st->progress ? first_progress : NULL;
@@ -427,6 +426,14 @@ static int first_collision(const gw_chain *c, const gw_chain_drop_params *p,
     o1.dt_out = 0;
     o1.t_max = isnan(st->t_start2) ? p->t_max : 0.5 * (st->t_end1 + st->t_start2);
     o1.y0 = y0;
+    return o1;
+}
+
+static int first_collision(const gw_chain *c, const gw_chain_drop_params *p,
+                           const gw_chain_run_opts *o, const double *y0, drop_state *st,
+                           gw_chain_drop_result *r, gw_err *err)
+{
+    gw_chain_run_opts o1 = first_opts(p, o, st, y0);
     int rc = chain_collide_drop(c, &o1, !isnan(st->t_start2), &r->first, err);
     r->first_status = rc;
     /* bead 1 never back on the sensor: the first collision ran to t_max, and ended
@@ -608,8 +615,11 @@ int gw_chain_drop_run_progress(const gw_chain_drop_params *p, const gw_chain_run
     r->run_dt = type == gw_solver_rk4 ? fmin(fmin(sp.dt, sp.dt_max), dt_out_run)
                                       : sp.dt > 0 ? fmin(sp.dt, sp.dt_max) : sp.dt;
     r->run_dt_max = sp.dt_max;
+    /* and the first collision's own bounds (not known before: at most t_max) */
+    gw_chain_run_opts o1 = first_opts(p, o, &st, y0);
     if ((rc = chain_steps_check(type, &sp, &o->sp, p->t_max, "t-max", err)) != GW_OK ||
-        (rc = chain_sensor_steps_check(&q, type, p->t_max, "t-max", err)) != GW_OK)
+        (rc = chain_sensor_steps_check(&q, type, &sp, p->t_max, "t-max", err)) != GW_OK ||
+        (rc = chain_collide_drop_check(c, &o1, err)) != GW_OK)
         goto done;
     st.type = type;
     if ((rc = gw_solver_create(type, &d.sys, &sp, 0.0, y, &s, err)) != GW_OK)

@@ -73,12 +73,13 @@ int chain_general_roots(double t, const double *y, double *g, void *P);
 double chain_force_rate(const gw_chain *c, double t, const double *y);
 void chain_general_energy(const gw_chain *c, const double *y, gw_chain_energy *e);
 
-/* cvode and arkode follow a sensor body's oscillation (omega = sqrt(k_s/M)) at 2
- * to 9 steps a radian (measured): at least 2 omega t_len steps, bounded at 1e8
- * before the run; GW_EINVAL naming sensor-stiffness. rk4: GW_OK (its step is
- * chain_steps_check's). */
-int chain_sensor_steps_check(const gw_chain_params *p, const gw_solver_type *type, double t_len, const char *over,
-                             gw_err *err);
+/* cvode and arkode follow a sensor body's oscillation (omega = sqrt((k_s + the
+ * stiffness of bead 1's contact)/M)) at 7 to 37 steps a radian at 1e-12
+ * (measured; fewer at looser tolerances of sp): 20 omega t_len steps there,
+ * bounded at 1e8 before the run; GW_EINVAL naming sensor-stiffness. rk4: GW_OK
+ * (its step is chain_steps_check's). */
+int chain_sensor_steps_check(const gw_chain_params *p, const gw_solver_type *type, const gw_solver_params *sp,
+                             double t_len, const char *over, gw_err *err);
 
 /* A collision's wall_pending (gw_chain_result) when the run stopped because the
  * column fell back onto the wall before its collision ended (chain_collide.c,
@@ -220,6 +221,13 @@ int chain_run_step(const gw_chain_params *p, const gw_chain_run_opts *o, double 
  * is zero but for the integration's error. */
 int chain_collide_drop(const gw_chain *c, const gw_chain_run_opts *o, int flight_cut, gw_chain_result *r,
                        gw_err *err);
+/* The bounds chain_collide_drop will check on its plan that do not depend on
+ * the t_max it is given (o's t_max, the drop's, is an upper bound), checked
+ * before the drop runs: its first collision's plan (a light bead ringing
+ * between heavy ones, chain_ring_check; the sampling, the steps) refused the
+ * run only after the whole drop, about 23 s for --n 3 --radii
+ * 4e-3,1e-6,4e-3. GW_EINVAL naming the bound. */
+int chain_collide_drop_check(const gw_chain *c, const gw_chain_run_opts *o, gw_err *err);
 
 /* The column's time scales for its expected length (chain_collide_plan.c): tc the
  * largest bead-to-bead T_c = (m/k)^(2/5) v^(-1/5) over the contacts, each with

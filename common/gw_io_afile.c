@@ -246,9 +246,10 @@ int gw_afile_open(gw_afile *f, const char *path, gw_err *err)
         release_signals(f);
         return gw_err_set(err, gw_io_status(e), "%s: cannot create: %s", path, strerror(e));
     }
-    /* a signal that ends the program removes it (gw_temps_on_signals); one
-     * the table could not take (out of memory) is not kept */
-    if (gw_temps_add(f->tmp) < 0) {
+    /* a signal that ends the program removes it (gw_temps_on_signals): in an
+     * output set's directory, through the set's handle on it, wherever it is
+     * moved; one the table could not take (out of memory) is not kept */
+    if (gw_temps_add_at(f->tmp, gw_outset_temp_dir(f->tmp, fd)) < 0) {
         close(fd);
         unlink(f->tmp);
         f->tmp[0] = '\0';

@@ -66,6 +66,14 @@ const char *gw_io_file_kind(mode_t m);
  * interrupts a drop after the file's rename or unlink finds its name gone. */
 int gw_temps_add(const char *path);
 void gw_temps_drop(const char *path);
+/* The same for a temporary in the directory dirfd (an output set's, held
+ * open until the set closes; -1: none): the handler removes it by its last
+ * name in dirfd (unlinkat), so it finds it in that directory wherever it was
+ * moved, and removes nothing under the path, which may name another
+ * directory by then. gw_temps_unbind: the temporaries still bound to dirfd
+ * fall back to their paths (called before dirfd is closed). */
+int gw_temps_add_at(const char *path, int dirfd);
+void gw_temps_unbind(int dirfd);
 
 /* The placing of an output set (gw_outset_commit), a critical section for
  * the handler of gw_temps_on_signals: a signal that comes meanwhile, on any
@@ -79,5 +87,11 @@ void gw_temps_placing_end(void);
 /* Keep f's fsynced temporary in the set open on this thread instead of
  * renaming it: 1 staged, 0 no set open, -1 out of memory. */
 int gw_outset_stage(gw_afile *f);
+
+/* The directory the set open on this thread holds, when the temporary tmp
+ * just made (open as fd) is in it (the same file under its last name there),
+ * for gw_temps_add_at; -1 otherwise (no set, a temporary beside a link's
+ * target elsewhere, a directory moved before the temporary was made). */
+int gw_outset_temp_dir(const char *tmp, int fd);
 
 #endif

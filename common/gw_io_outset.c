@@ -36,13 +36,15 @@ static _Thread_local gw_outset *cur_set;
  * in a directory the set's path no longer names. Before, the commit said
  * "its temporary ... is gone" and the abort, removing by name, left them in
  * D.old. The commit now says what happened, and the temporaries are removed
- * through this handle too. Kept per thread beside cur_set (the gw_outset
- * struct is the caller's, its layout public). -1: none (no directory yet). */
+ * through this handle too, by the signal handler as well (each is bound to it
+ * in the handler's table: gw_outset_temp_dir, gw_temps_add_at). Kept per
+ * thread beside cur_set (the gw_outset struct is the caller's, its layout
+ * public). -1: none (no directory yet: opened at the set's first file). */
 static _Thread_local int cur_dirfd = -1;
 
 /* What the set's --out path names now is the directory it was begun in:
  * 1, or 0 (moved, removed or replaced meanwhile), or 1 when it cannot tell
- * (no directory at the begin). */
+ * (no directory held: none at the begin nor at the first file). */
 static int same_dir(const gw_outset *s)
 {
     struct stat a, b;
@@ -61,6 +63,21 @@ static void remove_temp(const gw_outset *s, const char *tmp)
     const char *slash = strrchr(tmp, '/');
     if (cur_set == s && cur_dirfd >= 0)
         unlinkat(cur_dirfd, slash ? slash + 1 : tmp, 0);
+}
+
+int gw_outset_temp_dir(const char *tmp, int fd)
+{
+    if (!cur_set || !tmp || fd < 0)
+        return -1;
+    if (cur_dirfd < 0) /* the directory made since the begin (falcon, wavespeed): held from its first file */
+        cur_dirfd = open(cur_set->dir, O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+    const char *slash = strrchr(tmp, '/');
+    struct stat a, b;
+    if (cur_dirfd < 0 || fstat(fd, &a) != 0 ||
+        fstatat(cur_dirfd, slash ? slash + 1 : tmp, &b, AT_SYMLINK_NOFOLLOW) != 0 || a.st_dev != b.st_dev ||
+        a.st_ino != b.st_ino)
+        return -1;
+    return cur_dirfd;
 }
 
 /* Keep f's fsynced temporary in the open set instead of renaming it: 1 staged,
@@ -162,6 +179,7 @@ static void outset_close(gw_outset *s)
     s->n = s->cap = 0;
     if (cur_set == s) {
         cur_set = NULL;
+        gw_temps_unbind(cur_dirfd); /* a file still open in the set: by its path from here */
         if (cur_dirfd >= 0)
             close(cur_dirfd);
         cur_dirfd = -1;

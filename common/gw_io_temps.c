@@ -26,7 +26,11 @@
  * file layer (gw_io_sig_hold), so a handler on the same thread never sees a
  * slot half written; a handler on another thread reads a slot's path and its
  * generation before and after the copy and unlinks only a path that did not
- * change meanwhile. The library never installs the handler itself: a program
+ * change meanwhile. A slot may also hold the descriptor of the directory its
+ * temporary is in (an output set's, which the set holds open until it
+ * closes, gw_io_outset.c): the handler then removes the temporary by its
+ * last name there (unlinkat, async-signal-safe), so a signal after --out was
+ * moved or replaced finds it where it went. The library never installs the handler itself: a program
  * asks for it (gw_temps_on_signals, called by the granwave program first
  * thing); a binding keeps its interpreter's own signal handling.
  */
@@ -57,6 +61,7 @@ typedef struct temp_slot {
     atomic_int state;  /* SLOT_FREE, SLOT_BUSY (being filled or emptied), SLOT_LIVE */
     atomic_uint gen;   /* changed at every fill: a reader's copy is checked against it */
     atomic_uint hash;  /* of path: a drop compares it first (a set of thousands of files) */
+    atomic_int dirfd;  /* the directory it is in, held open by its output set, or -1 (by path) */
     char path[TEMP_PATH_MAX];
 } temp_slot;
 
@@ -90,6 +95,7 @@ static temp_block *next_block(temp_block *b)
         atomic_init(&nb->slot[i].state, SLOT_FREE);
         atomic_init(&nb->slot[i].gen, 0u);
         atomic_init(&nb->slot[i].hash, 0u);
+        atomic_init(&nb->slot[i].dirfd, -1);
         nb->slot[i].path[0] = '\0';
     }
     atomic_init(&nb->next, NULL);
@@ -100,7 +106,9 @@ static temp_block *next_block(temp_block *b)
     return want;
 }
 
-int gw_temps_add(const char *path)
+int gw_temps_add(const char *path) { return gw_temps_add_at(path, -1); }
+
+int gw_temps_add_at(const char *path, int dirfd)
 {
     const size_t n = path ? strlen(path) : 0;
     if (n == 0 || n >= TEMP_PATH_MAX)
@@ -116,6 +124,7 @@ int gw_temps_add(const char *path)
                 continue;
             memcpy(t->path, path, n + 1);
             atomic_store(&t->hash, h);
+            atomic_store(&t->dirfd, dirfd < 0 ? -1 : dirfd);
             atomic_fetch_add(&t->gen, 1);
             atomic_store(&t->state, SLOT_LIVE);
             return base + i;
@@ -142,9 +151,31 @@ void gw_temps_drop(const char *path)
         }
 }
 
-/* Async-signal-safe: atomic loads, a byte copy and unlink(2). A path
- * already renamed into place no longer exists under its temporary name: its
- * unlink fails (ENOENT) and the placed file stays. */
+void gw_temps_unbind(int dirfd)
+{
+    if (dirfd < 0)
+        return;
+    for (temp_block *b = &first; b; b = atomic_load(&b->next))
+        for (int i = 0; i < TEMPS_BLOCK; i++) {
+            temp_slot *t = &b->slot[i];
+            int want = SLOT_LIVE;
+            if (atomic_load(&t->state) != SLOT_LIVE || atomic_load(&t->dirfd) != dirfd ||
+                !atomic_compare_exchange_strong(&t->state, &want, SLOT_BUSY))
+                continue;
+            atomic_store(&t->dirfd, -1);
+            atomic_fetch_add(&t->gen, 1);
+            atomic_store(&t->state, SLOT_LIVE);
+        }
+}
+
+/* Async-signal-safe: atomic loads, a byte copy, unlinkat(2) and unlink(2). A
+ * path already renamed into place no longer exists under its temporary name:
+ * its unlink fails (ENOENT) and the placed file stays. A temporary of an
+ * output set is removed by its own name in the directory the set holds open,
+ * wherever that directory went: before, the handler removed it by the path
+ * it was made under, and a SIGINT, SIGTERM or SIGHUP that came after --out
+ * was moved (mv D D.old) or replaced left every staged temporary in D.old and
+ * looked for them in whatever D was now. */
 void gw_temps_remove(void)
 {
     char copy[TEMP_PATH_MAX];
@@ -154,11 +185,19 @@ void gw_temps_remove(void)
             if (atomic_load(&t->state) != SLOT_LIVE)
                 continue;
             const unsigned g = atomic_load(&t->gen);
-            size_t k = 0;
-            for (; k + 1 < sizeof copy && t->path[k]; k++) /* no memcpy: a byte loop is safe in a handler */
+            const int dfd = atomic_load(&t->dirfd);
+            size_t k = 0, base = 0;
+            for (; k + 1 < sizeof copy && t->path[k]; k++) { /* no memcpy: a byte loop is safe in a handler */
                 copy[k] = t->path[k];
+                if (copy[k] == '/')
+                    base = k + 1;
+            }
             copy[k] = '\0';
-            if (atomic_load(&t->state) == SLOT_LIVE && atomic_load(&t->gen) == g)
+            if (atomic_load(&t->state) != SLOT_LIVE || atomic_load(&t->gen) != g)
+                continue;
+            if (dfd >= 0)
+                unlinkat(dfd, copy + base, 0);
+            else
                 unlink(copy);
         }
 }

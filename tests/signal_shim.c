@@ -13,7 +13,15 @@
  *                       them) waits in rename; the caller joins it, then
  *                       renames. A handler that ends the process ends it
  *                       there, between two renames.
- *   GW_SIGNAL_COUNT=FILE at exit, write "rename N" (the calls made) to FILE.
+ *   GW_SIGNAL_FSYNC=K:SIG  the same before the K-th call to fsync (the K-th
+ *                       file of a run made durable: an output set's staged
+ *                       temporaries exist by then), after GW_SIGNAL_RUN;
+ *                       SIG 0: GW_SIGNAL_RUN only, no signal.
+ *   GW_SIGNAL_RUN=CMD   a shell command run (system) just before that signal
+ *                       (tests/test_out_moved_signal.sh: "mv D D.old && mkdir
+ *                       D", --out moved under the run).
+ *   GW_SIGNAL_COUNT=FILE at exit, write "rename N" and "fsync N" (the calls
+ *                       made) to FILE.
  */
 #define _GNU_SOURCE
 #include <dlfcn.h>
@@ -24,7 +32,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-static atomic_long renames;
+static atomic_long renames, fsyncs;
 
 static void *raiser(void *arg)
 {
@@ -38,7 +46,34 @@ static void *raiser(void *arg)
     return NULL;
 }
 
+/* signal SIG raised on a thread of its own, which the caller waits for */
+static void signal_on_thread(int sig)
+{
+    pthread_t t;
+    if (pthread_create(&t, NULL, raiser, &sig) == 0)
+        pthread_join(t, NULL);
+}
+
 typedef int rename_fn(const char *, const char *);
+typedef int fsync_fn(int);
+
+int fsync(int fd)
+{
+    const long n = atomic_fetch_add(&fsyncs, 1) + 1;
+    const char *at = getenv("GW_SIGNAL_FSYNC"), *cmd = getenv("GW_SIGNAL_RUN");
+    long k = 0;
+    int sig = 0;
+    if (at && sscanf(at, "%ld:%d", &k, &sig) == 2 && k == n && sig >= 0) {
+        if (cmd && system(cmd) != 0)
+            fprintf(stderr, "signal_shim: '%s' failed\n", cmd);
+        if (sig > 0)
+            signal_on_thread(sig);
+    }
+    fsync_fn *real;
+    void *sym = dlsym(RTLD_NEXT, "fsync");
+    memcpy(&real, &sym, sizeof real);
+    return real(fd);
+}
 
 int rename(const char *from, const char *to)
 {
@@ -46,11 +81,8 @@ int rename(const char *from, const char *to)
     const char *at = getenv("GW_SIGNAL_AT");
     long k = 0;
     int sig = 0;
-    if (at && sscanf(at, "%ld:%d", &k, &sig) == 2 && k == n && sig > 0) {
-        pthread_t t;
-        if (pthread_create(&t, NULL, raiser, &sig) == 0)
-            pthread_join(t, NULL);
-    }
+    if (at && sscanf(at, "%ld:%d", &k, &sig) == 2 && k == n && sig > 0)
+        signal_on_thread(sig);
     rename_fn *real;
     void *sym = dlsym(RTLD_NEXT, "rename");
     memcpy(&real, &sym, sizeof real);
@@ -62,7 +94,7 @@ __attribute__((destructor)) static void report(void)
     const char *path = getenv("GW_SIGNAL_COUNT");
     FILE *f = path ? fopen(path, "w") : NULL;
     if (f) {
-        fprintf(f, "rename %ld\n", atomic_load(&renames));
+        fprintf(f, "rename %ld\nfsync %ld\n", atomic_load(&renames), atomic_load(&fsyncs));
         fclose(f);
     }
 }

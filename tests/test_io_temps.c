@@ -19,6 +19,10 @@
  *    for byte and no temporary. Before the handler, the staged temporary
  *    stayed. A signal ignored before the call stays ignored, and one with the
  *    program's own handler keeps it.
+ *  - An output set's directory moved and a new one made in its place: the
+ *    staged and the open temporaries removed in the moved directory, the new
+ *    one untouched (2 of its 8 checks fail before: the table held paths); a
+ *    file still open when its set closes is removed by its path.
  */
 #define _POSIX_C_SOURCE 200809L
 #include <dirent.h>
@@ -361,6 +365,63 @@ static void on_signals(void)
     sigaction(SIGHUP, &was_hup, NULL);
 }
 
+/* The names in path (a directory), "." and ".." left out: -1 when it cannot
+ * be read */
+static int entries(const char *path)
+{
+    int n = 0;
+    DIR *d = opendir(path);
+    if (!d)
+        return -1;
+    for (struct dirent *e; (e = readdir(d)) != NULL;)
+        n += strcmp(e->d_name, ".") != 0 && strcmp(e->d_name, "..") != 0;
+    closedir(d);
+    return n;
+}
+
+/* An output set's temporaries after its directory M was moved to M.old and
+ * a new M made: gw_temps_remove finds them in M.old (the set's handle on the
+ * directory) and touches nothing in the new M. Before, the table held paths:
+ * both stayed in M.old. A file still open when its set closes is removed by
+ * its path from then on (its slot no longer names the closed handle). */
+static void moved_dir(void)
+{
+    gw_err err = {{0}};
+    char m[300], old[304], pa[320], pb[320], pc[320];
+    snprintf(m, sizeof m, "%s/M", dir);
+    snprintf(old, sizeof old, "%s/M.old", dir);
+    snprintf(pa, sizeof pa, "%s/a.csv", m);
+    snprintf(pb, sizeof pb, "%s/b.csv", m);
+    snprintf(pc, sizeof pc, "%s/c.csv", m);
+    mkdir(m, 0700);
+    gw_outset s;
+    gw_afile a, b;
+    gw_test_true(gw_outset_begin(&s, m, names, &err) == GW_OK && gw_afile_open(&a, pa, &err) == GW_OK &&
+                     fputs("new a\n", a.fp) >= 0 && gw_afile_commit(&a, &err) == GW_OK &&
+                     gw_afile_open(&b, pb, &err) == GW_OK && entries(m) == 2,
+                 "a set in M: a.csv staged, b.csv open (2 temporaries in M)");
+    gw_test_true(rename(m, old) == 0 && mkdir(m, 0700) == 0, "  M moved to M.old, a new M made");
+    gw_temps_remove();
+    printf("  after gw_temps_remove: M.old holds %d, the new M %d\n", entries(old), entries(m));
+    gw_test_true(entries(old) == 0, "  gw_temps_remove: both temporaries removed in M.old");
+    gw_test_true(entries(m) == 0, "  the new M untouched (empty)");
+    gw_afile_abort(&b);
+    gw_outset_abort(&s);
+    gw_test_true(entries(old) == 0 && entries(m) == 0, "  the file and the set aborted: nothing left");
+    /* a file open when its set closes */
+    gw_afile c;
+    gw_test_true(gw_outset_begin(&s, m, names, &err) == GW_OK && gw_afile_open(&c, pc, &err) == GW_OK &&
+                     entries(m) == 1,
+                 "a set in M, c.csv open");
+    gw_outset_abort(&s);
+    gw_test_true(entries(m) == 1, "  the set aborted, c.csv still open: its temporary stays");
+    gw_temps_remove();
+    gw_test_true(entries(m) == 0, "  gw_temps_remove: removed by its path");
+    gw_afile_abort(&c);
+    rmdir(m);
+    rmdir(old);
+}
+
 int main(void)
 {
     snprintf(dir, sizeof dir, "/tmp/gw_test_io_temps.XXXXXX");
@@ -372,6 +433,7 @@ int main(void)
     table_grows();
     large_set();
     on_signals();
+    moved_dir();
     /* clean up */
     DIR *d = opendir(dir);
     if (d) {

@@ -361,7 +361,9 @@ int gw_afile_openat(gw_afile *f, int dirfd, const char *dir, const char *name, g
         release_signals(f);
         return gw_err_set(err, gw_io_status(e), "%s: cannot create: %s", f->path, strerror(e));
     }
-    if (gw_temps_add(f->tmp) < 0) { /* as gw_afile_open */
+    /* as gw_afile_open; one made in the held directory itself is removed there
+     * by its name, wherever that directory was moved (a sweep's table) */
+    if (gw_temps_add_at(f->tmp, strchr(f->tmp + f->rel, '/') ? -1 : dirfd) < 0) {
         close(fd);
         unlinkat(dirfd, f->tmp + f->rel, 0);
         f->tmp[0] = '\0';

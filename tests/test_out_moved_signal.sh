@@ -20,10 +20,13 @@
 #    from D.old before the signal): they stay, byte for byte, and D.old is
 #    clean (before, the handler removed the decoys and left the temporaries);
 #  5 no move: the temporaries in D removed, as before (a control);
-#  6 the last fsync of falcon's set: all its temporaries gone the same way.
-# 23 checks; on the code before, 9 fail (every D.old in 1 to 4 and 6, and
+#  6 the last fsync of falcon's set: all its temporaries gone the same way;
+#  7 a sweep's journal in the making (a temporary in the sweep's held
+#    directory): moved and signalled before its fsync, removed there.
+# 25 checks; on the code before the session, 10 fail (every D.old in 1 to 4, 6 and 7, and
 # the decoys in 4, which the handler removed); the exit codes, the empty new
-# directories and the control pass there.
+# directories and the control pass there. 7's second check fails on the
+# session's merge before the journal's temporary was bound to the directory.
 # shellcheck source=test_lib.sh
 . "$(dirname "$0")/test_lib.sh"
 test_setup "$@"
@@ -98,5 +101,18 @@ run 4 15 "$MOVE" falcon --n 1:4 --quiet --out D
 [ $rc -eq 143 ] && ok "falcon, its 4th file: 143" || ko "falcon, its 4th file: exit $rc"
 only_mine D.old && ok "  D.old holds the user's file only" || ko "  D.old holds $(listing D.old)"
 [ -z "$(ls -A D)" ] && ok "  the new D is empty" || ko "  the new D holds $(listing D)"
+
+# 7 a sweep's journal, made under a temporary name in the sweep's directory
+# (held open since the twenty-sixth session): the directory moved and SIGTERM
+# before that temporary's fsync (the run's first): removed in the moved
+# directory (the table of temporaries held its path: journal.csv.new.* stayed)
+printf '[sweep]\nmodel = chain\nout = SW\n[grid]\nn = 2:3\n[params]\nvimp = 0.1\n' >sw.ini
+rm -rf SW SW.old
+GW_SIGNAL_FSYNC="1:15" GW_SIGNAL_RUN="mv SW SW.old" LD_PRELOAD="$SHIM" \
+    env --default-signal=INT,TERM,HUP "$GW" sweep sw.ini --quiet >/dev/null 2>err.txt
+rc=$?
+[ $rc -eq 143 ] && ok "a sweep's journal in the making: 143" || ko "a sweep's journal in the making: exit $rc"
+[ -d SW.old ] && [ -z "$(ls -A SW.old)" ] && [ ! -e SW ] && ok "  the moved SW.old is empty" ||
+    ko "  SW.old holds $(listing SW.old)"
 
 test_summary test_out_moved_signal

@@ -150,7 +150,9 @@ static int journal_create(int dfd, const char *path, const char *text, int *fdp,
     }
     if (fd < 0)
         return gw_err_set(err, GW_EIO, "%s: cannot create: %s", path, strerror(e));
-    gw_temps_add(tmp); /* a signal now removes it (the program's handler, gw_io_temps.c) */
+    /* a signal now removes it (the program's handler, gw_io_temps.c), by its
+     * name in dfd: in the sweep's directory wherever that was moved */
+    gw_temps_add_at(tmp, dfd);
     fchmod(fd, gw_new_file_mode(path));
     /* locked before it has its name: another sweep that finds it finds it
      * locked (a sweep that locked it first would refuse it as another

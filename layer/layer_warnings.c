@@ -10,6 +10,7 @@
  * Parameters are named as the program's flags (--t-max). Units: s, J.
  */
 #include "gw_layer.h"
+#include "layer_impl.h"
 
 int gw_layer_make_result_warnings(const gw_layer_make_result *r, double t_max, const char *out, char **list)
 {
@@ -30,12 +31,12 @@ int gw_layer_make_result_warnings(const gw_layer_make_result *r, double t_max, c
                                "the sample did not settle: t-max = %g s ends before the settling is judged (from t = "
                                "%.3g s, once the pile has landed: raise --t-max)%s%s%s",
                                t_max, r->t_judge, sep, path, end);
-    if (!(r->floor_load > 1.5) && r->fall_energy > 0) /* (gw_layer_make_result.floor_load) */
+    if (!(r->floor_load > LAYER_FLOOR_LOAD_MAX) && r->fall_energy > 0)
         return gw_warnings_add(list,
                                "the sample did not settle: E_k = %.4g J and %.4g J of grains in flight (touching "
                                "nothing) still above --ke-threshold at t-max = %g s (raise --t-max)%s%s%s",
                                r->ke_final, r->fall_energy, t_max, sep, path, end);
-    if (!(r->floor_load > 1.5))
+    if (!(r->floor_load > LAYER_FLOOR_LOAD_MAX))
         return gw_warnings_add(list,
                                "the sample did not settle: E_k = %.4g J still above --ke-threshold at t-max = %g s "
                                "(raise --t-max)%s%s%s",

@@ -173,7 +173,18 @@ static int disc_grid(const gw_layer_body *b, int n, layer_grid *g)
     return ok;
 }
 
+static double overlaps_in(const gw_layer_body *b, int n, double width, unsigned char *touch, const layer_grid *g);
+
 static double max_overlap(const gw_layer_body *b, int n, double width, unsigned char *touch)
+{
+    layer_grid g = {0};
+    const double maxov = overlaps_in(b, n, width, touch, disc_grid(b, n, &g) ? &g : NULL);
+    layer_grid_free(&g);
+    return maxov;
+}
+
+/* max_overlap over the grid g (NULL: every pair compared) */
+static double overlaps_in(const gw_layer_body *b, int n, double width, unsigned char *touch, const layer_grid *g)
 {
     double maxov = 0;
     for (int i = 0; i < n; i++) {
@@ -183,25 +194,23 @@ static double max_overlap(const gw_layer_body *b, int n, double width, unsigned 
         if (touch)
             touch[i] = wall > 0;
     }
-    layer_grid g = {0};
-    if (!disc_grid(b, n, &g)) {
+    if (!g) {
         for (int i = 0; i < n; i++)
             for (int j = i + 1; j < n; j++)
                 maxov = fmax(maxov, pair_touch(b, i, j, touch));
         return maxov;
     }
     for (int i = 0; i < n; i++) {
-        const long cx = g.cell[i] % g.nx, cy = g.cell[i] / g.nx;
+        const long cx = g->cell[i] % g->nx, cy = g->cell[i] / g->nx;
         for (long ky = cy - 1; ky <= cy + 1; ky++)
             for (long kx = cx - 1; kx <= cx + 1; kx++) {
-                if (ky < 0 || ky >= g.ny || kx < 0 || kx >= g.nx)
+                if (ky < 0 || ky >= g->ny || kx < 0 || kx >= g->nx)
                     continue;
-                for (int q = g.start[ky * g.nx + kx]; q < g.start[ky * g.nx + kx + 1]; q++)
-                    if (g.idx[q] > i)
-                        maxov = fmax(maxov, pair_touch(b, i, g.idx[q], touch));
+                for (int q = g->start[ky * g->nx + kx]; q < g->start[ky * g->nx + kx + 1]; q++)
+                    if (g->idx[q] > i)
+                        maxov = fmax(maxov, pair_touch(b, i, g->idx[q], touch));
             }
     }
-    layer_grid_free(&g);
     return maxov;
 }
 
@@ -253,14 +262,14 @@ static double airborne(const gw_layer_params *lp, const gw_layer_body *b, int n,
         free(touch), free(cm);
         return -1;
     }
-    max_overlap(b, n, lp->width, touch);
+    layer_grid g = {0}; /* one grid for the contacts and the drops */
+    const int grid = disc_grid(b, n, &g);
+    overlaps_in(b, n, lp->width, touch, grid ? &g : NULL);
     for (int c = 0; c <= cmax; c++)
         held[c] = 0, cm[c] = 0, cd[c] = INFINITY;
     for (int i = 0; i < n; i++) /* a clump touches through any of its discs */
         if (b[i].clump > 0 && touch[i])
             held[b[i].clump] = 1;
-    layer_grid g = {0};
-    const int grid = disc_grid(b, n, &g);
     double e = 0;
     for (int i = 0; i < n && e < budget; i++) {
         const int c = b[i].clump;
@@ -278,6 +287,16 @@ static double airborne(const gw_layer_params *lp, const gw_layer_body *b, int n,
     layer_grid_free(&g);
     free(touch), free(cm);
     return e;
+}
+
+/* The positions of the n particles of L into b. */
+static void take_positions(const gw_layer *L, int n, gw_layer_body *b)
+{
+    for (int i = 0; i < n; i++) {
+        double s[6];
+        gw_layer_particle(L, i, s);
+        b[i].x = s[0], b[i].y = s[1];
+    }
 }
 
 /* Settle bodies b (positions updated, velocities zeroed) with the given G.
@@ -338,29 +357,24 @@ static int settle(const gw_layer_params *lp, const gw_layer_make_params *m, doub
              * many times its weight (`--n 1` was called settled with 26.2
              * times, `--n 5 --width-rm 50` with 1.55, and layer-impact refused
              * both samples) */
-            for (int i = 0; i < n; i++) {
-                double s[6];
-                gw_layer_particle(L, i, s);
-                b[i].x = s[0], b[i].y = s[1];
-            }
+            take_positions(L, n, b);
+            double f, w;
+            layer_floor_load(lp, n, &b[0].y, &b[0].r, sizeof *b, &f, &w);
             /* and the bodies in flight counted with the energy they will
              * land with: a disc at the top of a bounce has E_k near 0 too
              * (`--n 1` was next caught 3 mm above the floor, 26 J of fall
              * against a threshold of 0.028 J) */
-            double f, w, fall = airborne(lp, b, n, thr - *ke);
-            layer_floor_load(lp, n, &b[0].y, &b[0].r, sizeof *b, &f, &w);
-            if (!(f > LAYER_FLOOR_LOAD_MAX * w) && fall >= 0 && *ke + fall < thr) {
+            const double fall = f > LAYER_FLOOR_LOAD_MAX * w ? -1 : airborne(lp, b, n, thr - *ke);
+            if (fall >= 0 && *ke + fall < thr) {
                 *conv = 1;
                 break;
             }
         }
     }
-    for (int i = 0; rc == GW_OK && i < n; i++) {
-        double s[6];
-        gw_layer_particle(L, i, s);
-        b[i].x = s[0], b[i].y = s[1];
+    if (rc == GW_OK)
+        take_positions(L, n, b);
+    for (int i = 0; rc == GW_OK && i < n; i++)
         b[i].vx = b[i].vy = b[i].w = 0;
-    }
     gw_layer_stats st;
     gw_layer_get_stats(L, &st);
     *steps += st.steps;

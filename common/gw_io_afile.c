@@ -223,6 +223,30 @@ static void discard(gw_afile *f)
     f->tmp[0] = '\0';
 }
 
+/* The end of an open, f's temporary just made as fd: in the signals' table
+ * (bound to the directory bind, -1: by its path; one the table could not
+ * take, out of memory, is not kept), given the permissions mode and a
+ * stream. On failure the temporary is removed and the signals given back. */
+static int adopt_temp(gw_afile *f, int fd, int bind, mode_t mode, gw_err *err)
+{
+    if (gw_temps_add_at(f->tmp, bind) < 0) {
+        close(fd);
+        discard(f);
+        release_signals(f);
+        return gw_err_set(err, GW_ENOMEM, "%s: cannot create: %s", f->path, strerror(ENOMEM));
+    }
+    fchmod(fd, mode);
+    f->fp = fdopen(fd, "w");
+    if (!f->fp) {
+        const int e = errno;
+        close(fd);
+        discard(f);
+        release_signals(f);
+        return gw_err_set(err, gw_io_status(e), "%s: cannot open: %s", f->path, strerror(e));
+    }
+    return GW_OK;
+}
+
 int gw_afile_open(gw_afile *f, const char *path, gw_err *err)
 {
     if (!f || !path)
@@ -248,26 +272,9 @@ int gw_afile_open(gw_afile *f, const char *path, gw_err *err)
     }
     /* a signal that ends the program removes it (gw_temps_on_signals): in an
      * output set's directory, through the set's handle on it, wherever it is
-     * moved; one the table could not take (out of memory) is not kept */
-    if (gw_temps_add_at(f->tmp, gw_outset_temp_dir(f->tmp, fd)) < 0) {
-        close(fd);
-        unlink(f->tmp);
-        f->tmp[0] = '\0';
-        release_signals(f);
-        return gw_err_set(err, GW_ENOMEM, "%s: cannot create: %s", path, strerror(ENOMEM));
-    }
-    /* mkstemp made it 0600: the permissions a shell's > would give (the
+     * moved. mkstemp made it 0600: the permissions a shell's > would give (the
      * replaced file's, or 0666 less the umask) */
-    fchmod(fd, gw_new_file_mode(path));
-    f->fp = fdopen(fd, "w");
-    if (!f->fp) {
-        int e = errno;
-        close(fd);
-        discard(f);
-        release_signals(f);
-        return gw_err_set(err, gw_io_status(e), "%s: cannot open: %s", path, strerror(e));
-    }
-    return GW_OK;
+    return adopt_temp(f, fd, gw_outset_temp_dir(f->tmp, fd), gw_new_file_mode(path), err);
 }
 
 int gw_afile_open_named(gw_afile *f, const char *path, gw_err *err)
@@ -363,25 +370,10 @@ int gw_afile_openat(gw_afile *f, int dirfd, const char *dir, const char *name, g
     }
     /* as gw_afile_open; one made in the held directory itself is removed there
      * by its name, wherever that directory was moved (a sweep's table) */
-    if (gw_temps_add_at(f->tmp, strchr(f->tmp + f->rel, '/') ? -1 : dirfd) < 0) {
-        close(fd);
-        unlinkat(dirfd, f->tmp + f->rel, 0);
-        f->tmp[0] = '\0';
-        release_signals(f);
-        return gw_err_set(err, GW_ENOMEM, "%s: cannot create: %s", f->path, strerror(ENOMEM));
-    }
     struct stat st; /* the permissions of the file it replaces, or a shell's > */
-    fchmod(fd, fstatat(dirfd, rel, &st, 0) == 0 && S_ISREG(st.st_mode) ? st.st_mode & 0777
-                                                                        : 0666 & ~gw_io_current_umask());
-    f->fp = fdopen(fd, "w");
-    if (!f->fp) {
-        e = errno;
-        close(fd);
-        discard(f);
-        release_signals(f);
-        return gw_err_set(err, gw_io_status(e), "%s: cannot open: %s", f->path, strerror(e));
-    }
-    return GW_OK;
+    const mode_t mode = fstatat(dirfd, rel, &st, 0) == 0 && S_ISREG(st.st_mode) ? st.st_mode & 0777
+                                                                               : 0666 & ~gw_io_current_umask();
+    return adopt_temp(f, fd, strchr(f->tmp + f->rel, '/') ? -1 : dirfd, mode, err);
 }
 
 /* The end of a commit once the temporary is complete and fsynced: staged in

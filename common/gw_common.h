@@ -161,7 +161,8 @@ typedef struct gw_afile {
     unsigned char oldmask[128]; /* the caller's signal mask (a sigset_t) */
     int masked;
     int named; /* opened by gw_afile_open_named: the caller writes tmp by name */
-    int held;  /* opened by gw_afile_openat: path and tmp name files from their rel-th byte on in dirfd */
+    int held;  /* path and tmp name files from their rel-th byte on in dirfd: 1 opened by gw_afile_openat
+                  (the caller's dirfd), 2 by gw_afile_open outside an output set (its own, closed at the end) */
     int dirfd;
     size_t rel;
 } gw_afile;

@@ -223,6 +223,62 @@ static void discard(gw_afile *f)
     f->tmp[0] = '\0';
 }
 
+/* The directory gw_afile_open held for its file closed, once the temporary
+ * is placed or removed and out of the signals' table (a number the table
+ * still held could name another directory after the close) */
+static void release_dir(gw_afile *f)
+{
+    if (f->held == AFILE_OWN_DIR && f->dirfd >= 0)
+        close(f->dirfd);
+    if (f->held == AFILE_OWN_DIR) {
+        f->held = 0;
+        f->dirfd = -1;
+    }
+}
+
+/* A file written outside an output set (layer-make --out FILE, a wisdom
+ * file) holds its own directory from the open to the commit, so that a
+ * directory moved, removed or replaced meanwhile (mv D D.old; mkdir D) is
+ * told from the one it was made in. Before, its temporary was known by its
+ * path alone: a signal then removed whatever had that name in the new D and
+ * left the temporary in D.old, and the commit failed with "No such file or
+ * directory" and left it there too. The temporary is now bound to the held
+ * directory in the signals' table and removed there, and the commit places
+ * the file only when path still names that directory. Only a temporary made
+ * in the directory itself is taken: beside a link's target elsewhere, by its
+ * path as before. 1 held, 0 not (no read access to the directory: by path). */
+static int hold_own_dir(gw_afile *f, int fd)
+{
+    char dir[4096];
+    gw_snprintf(dir, sizeof dir, "%s", f->path);
+    gw_path_parent(dir);
+    const int dfd = open(dir, O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+    if (dfd < 0)
+        return 0;
+    const char *slash = strrchr(f->path, '/');
+    const size_t rel = slash ? (size_t)(slash - f->path) + 1 : 0;
+    struct stat a, b;
+    if (fstat(fd, &a) != 0 || fstatat(dfd, f->tmp + rel, &b, AT_SYMLINK_NOFOLLOW) != 0 || a.st_dev != b.st_dev ||
+        a.st_ino != b.st_ino) {
+        close(dfd);
+        return 0;
+    }
+    f->held = AFILE_OWN_DIR;
+    f->dirfd = dfd;
+    f->rel = rel;
+    return 1;
+}
+
+/* f's own held directory is still the one its path names: 1, else 0 */
+static int own_dir_in_place(const gw_afile *f)
+{
+    char dir[4096];
+    gw_snprintf(dir, sizeof dir, "%s", f->path);
+    gw_path_parent(dir);
+    struct stat a, b;
+    return fstat(f->dirfd, &a) == 0 && stat(dir, &b) == 0 && a.st_dev == b.st_dev && a.st_ino == b.st_ino;
+}
+
 /* The end of an open, f's temporary just made as fd: in the signals' table
  * (bound to the directory bind, -1: by its path; one the table could not
  * take, out of memory, is not kept), given the permissions mode and a
@@ -232,6 +288,7 @@ static int adopt_temp(gw_afile *f, int fd, int bind, mode_t mode, gw_err *err)
     if (gw_temps_add_at(f->tmp, bind) < 0) {
         close(fd);
         discard(f);
+        release_dir(f);
         release_signals(f);
         return gw_err_set(err, GW_ENOMEM, "%s: cannot create: %s", f->path, strerror(ENOMEM));
     }
@@ -241,6 +298,7 @@ static int adopt_temp(gw_afile *f, int fd, int bind, mode_t mode, gw_err *err)
         const int e = errno;
         close(fd);
         discard(f);
+        release_dir(f);
         release_signals(f);
         return gw_err_set(err, gw_io_status(e), "%s: cannot open: %s", f->path, strerror(e));
     }
@@ -271,10 +329,12 @@ int gw_afile_open(gw_afile *f, const char *path, gw_err *err)
         return gw_err_set(err, gw_io_status(e), "%s: cannot create: %s", path, strerror(e));
     }
     /* a signal that ends the program removes it (gw_temps_on_signals): in an
-     * output set's directory, through the set's handle on it, wherever it is
-     * moved. mkstemp made it 0600: the permissions a shell's > would give (the
-     * replaced file's, or 0666 less the umask) */
-    return adopt_temp(f, fd, gw_outset_temp_dir(f->tmp, fd), gw_new_file_mode(path), err);
+     * output set's directory, through the set's handle on it, and outside a
+     * set through the file's own, wherever it is moved. mkstemp made it 0600:
+     * the permissions a shell's > would give (the replaced file's, or 0666
+     * less the umask) */
+    const int bind = gw_outset_active() ? gw_outset_temp_dir(f->tmp, fd) : hold_own_dir(f, fd) ? f->dirfd : -1;
+    return adopt_temp(f, fd, bind, gw_new_file_mode(path), err);
 }
 
 int gw_afile_open_named(gw_afile *f, const char *path, gw_err *err)
@@ -380,6 +440,10 @@ int gw_afile_openat(gw_afile *f, int dirfd, const char *dir, const char *name, g
  * the open set, or renamed into place. */
 static int place(gw_afile *f, int *saved)
 {
+    if (f->held == AFILE_OWN_DIR && !own_dir_in_place(f)) {
+        *saved = -1; /* the directory moved: told by the caller */
+        return -1;
+    }
     int st = f->held ? 0 : gw_outset_stage(f);
     if (st < 0) {
         *saved = ENOMEM;
@@ -395,6 +459,24 @@ static int place(gw_afile *f, int *saved)
     return 0;
 }
 
+/* The end of a commit: on failure (bad, saved the errno, or -1 when the
+ * file's own directory was moved) the temporary removed; the directory and
+ * the signals given back */
+static int commit_end(gw_afile *f, int bad, int saved, gw_err *err)
+{
+    if (bad)
+        discard(f);
+    f->tmp[0] = '\0';
+    f->named = 0;
+    release_dir(f);
+    release_signals(f);
+    if (bad && saved < 0)
+        return gw_err_set(err, GW_EIO, "%s: the directory was moved, removed or replaced while the run went on: "
+                          "nothing written (the file was made in the directory that path named when it began)",
+                          f->path);
+    return bad ? gw_err_set(err, GW_EIO, "%s: write failed: %s", f->path, strerror(saved)) : GW_OK;
+}
+
 /* fsync a file the caller wrote by name, then rename it into place. */
 static int commit_named(gw_afile *f, gw_err *err)
 {
@@ -406,12 +488,7 @@ static int commit_named(gw_afile *f, gw_err *err)
         close(fd);
     if (!bad && place(f, &saved) != 0)
         bad = 1;
-    if (bad)
-        discard(f);
-    f->tmp[0] = '\0';
-    f->named = 0;
-    release_signals(f);
-    return bad ? gw_err_set(err, GW_EIO, "%s: write failed: %s", f->path, strerror(saved)) : GW_OK;
+    return commit_end(f, bad, saved, err);
 }
 
 int gw_afile_commit(gw_afile *f, gw_err *err)
@@ -421,6 +498,7 @@ int gw_afile_commit(gw_afile *f, gw_err *err)
     if (f->named && !f->fp && f->tmp[0])
         return commit_named(f, err);
     if (!f->fp) {
+        release_dir(f);
         release_signals(f);
         return gw_err_set(err, GW_EIO, "%s: file not open", f->path);
     }
@@ -439,14 +517,9 @@ int gw_afile_commit(gw_afile *f, gw_err *err)
     if (fclose(f->fp) != 0 && !bad)
         bad = 1, saved = errno ? errno : EIO;
     f->fp = NULL;
-    if (bad || place(f, &saved) != 0) {
-        discard(f);
-        release_signals(f);
-        return gw_err_set(err, GW_EIO, "%s: write failed: %s", f->path, strerror(saved));
-    }
-    f->tmp[0] = '\0';
-    release_signals(f);
-    return GW_OK;
+    if (!bad && place(f, &saved) != 0)
+        bad = 1;
+    return commit_end(f, bad, saved, err);
 }
 
 void gw_afile_abort(gw_afile *f)
@@ -460,6 +533,7 @@ void gw_afile_abort(gw_afile *f)
     if (f->tmp[0])
         discard(f);
     f->named = 0;
+    release_dir(f);
     release_signals(f);
 }
 

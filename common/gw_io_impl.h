@@ -87,6 +87,12 @@ void gw_temps_placing_end(void);
 /* Keep f's fsynced temporary in the set open on this thread instead of
  * renaming it: 1 staged, 0 no set open, -1 out of memory. */
 int gw_outset_stage(gw_afile *f);
+/* An output set is open on this thread: 1, else 0 */
+int gw_outset_active(void);
+/* gw_afile.held for a file gw_afile_open made outside a set, in a directory
+ * it holds itself (closed at the commit or abort); 1: the caller's
+ * (gw_afile_openat) */
+#define AFILE_OWN_DIR 2
 
 /* The directory the set open on this thread holds, when the temporary tmp
  * just made (open as fd) is in it (the same file under its last name there),

@@ -65,6 +65,8 @@ static void remove_temp(const gw_outset *s, const char *tmp)
         unlinkat(cur_dirfd, slash ? slash + 1 : tmp, 0);
 }
 
+int gw_outset_active(void) { return cur_set != NULL; }
+
 int gw_outset_temp_dir(const char *tmp, int fd)
 {
     if (!cur_set || !tmp || fd < 0)

@@ -169,6 +169,8 @@ static int sticky_refused(const char *path, const char *target, const char *what
     return GW_OK;
 }
 
+static int temp_name_fits(const char *path, const char *dir, const char *what, gw_err *err);
+
 int gw_out_file_check(const char *path, const char *what, gw_err *err)
 {
     char dir[4096];
@@ -194,7 +196,8 @@ int gw_out_file_check(const char *path, const char *what, gw_err *err)
     /* a file is written into an existing directory (nothing makes its parents) */
     if (stat(dir, &st) != 0)
         return gw_err_set(err, GW_EINVAL, "%s: directory '%s' of '%s': %s", what, dir, path, strerror(errno));
-    return gw_out_check(dir, what, err);
+    rc = gw_out_check(dir, what, err);
+    return rc == GW_OK ? temp_name_fits(path, dir, what, err) : rc;
 }
 
 /* path quoted for a one-line message: itself, or its first and last 48
@@ -223,6 +226,26 @@ static int temp_fits(const char *p, const char *dir, const char *name, const cha
                       "written first as %s.tmp.HOST.PID.XXXXXX (%zu more characters), would exceed PATH_MAX "
                       "(%d); give a shorter path", what, path_cut(dir, cut, sizeof cut), strlen(dir), name, name,
                       more, (int)PATH_MAX);
+}
+
+/* GW_EINVAL when the file path (in dir), written under its temporary name,
+ * would not fit: its last component with the temporary's suffix above the
+ * directory's NAME_MAX, or the whole above PATH_MAX. Checked before the run:
+ * dispersion --wisdom with a 240-character name ran, then said "cannot
+ * create: File name too long" and saved nothing. */
+static int temp_name_fits(const char *path, const char *dir, const char *what, gw_err *err)
+{
+    const char *slash = strrchr(path, '/'), *name = slash ? slash + 1 : path;
+    const long max = pathconf(dir, _PC_NAME_MAX);
+    const size_t len = strlen(name), more = gw_io_temp_suffix_len(), lim = max > 0 ? (size_t)max : 255;
+    if (len + more > lim) {
+        char cut[128];
+        return gw_err_set(err, GW_EINVAL, "%s: '%s' (%zu characters) is too long a name: the file is written "
+                          "first as NAME.tmp.HOST.PID.XXXXXX (%zu more characters), above the %zu its directory "
+                          "takes; give a name of at most %zu characters", what, path_cut(name, cut, sizeof cut), len,
+                          more, lim, lim > more ? lim - more : 0);
+    }
+    return temp_fits(path, dir, name, what, err);
 }
 
 int gw_out_names_check(const char *dir, const char *const *names, const char *what, gw_err *err)

@@ -19,7 +19,8 @@
 #  4 outputs: a refused run writes nothing in --out; an --out under a file or a
 #    read-only directory is refused before the work; --wisdom never overwrites a
 #    file that is not FFTW wisdom (exit 2, the file unchanged) and still writes
-#    real wisdom.
+#    real wisdom; a file name too long for its temporary is refused before the
+#    work.
 #  5 tolerances outside [1e-15, 1e-4] are refused by every command (chain,
 #    falcon, wavespeed, softwall, dispersion, drop, sweep); options with no effect
 #    (--gamma without --damping kk, --alpha without hc, --restitution-v without
@@ -107,6 +108,19 @@ refused "--wisdom naming a file that is not wisdom" 'not FFTW wisdom' dispersion
 "$GW" dispersion --n 16 --t-samples 64 --wisdom "$tmp/w.wis" >/dev/null 2>&1 && head -c 7 "$tmp/w.wis" | grep -q '(fftw-3' &&
     "$GW" dispersion --n 16 --t-samples 64 --wisdom "$tmp/w.wis" >/dev/null 2>&1 &&
     ok "--wisdom writes wisdom and reads it back" || ko "--wisdom round trip"
+# a name too long for its temporary (NAME.tmp.HOST.PID.XXXXXX above the
+# directory's 255): refused before the run, where dispersion ran and then said
+# "cannot create: File name too long" (exit 0, nothing saved); 200 characters
+# still written
+long=$(printf 'w%.0s' $(seq 1 240))
+refused "--wisdom with a 240-character name (its temporary above NAME_MAX)" 'wisdom.*too long a name.*at most' \
+    dispersion --n 16 --t-samples 64 --wisdom "$tmp/$long" --out "$tmp/o"
+[ ! -e "$tmp/$long" ] && ! ls "$tmp" | grep -q "^www.*tmp" && ok "  nothing written beside it" || ko "  wrote $tmp/$long"
+refused "layer-make --out with a 240-character name" 'layer-make --out.*too long a name' \
+    layer-make --n 10 --width-rm 6 --t-max 0.05 --out "$tmp/$long"
+"$GW" dispersion --n 16 --t-samples 64 --wisdom "$tmp/${long:0:200}" >/dev/null 2>&1 &&
+    head -c 7 "$tmp/${long:0:200}" | grep -q '(fftw-3' && ok "--wisdom with a 200-character name is written" ||
+    ko "--wisdom with a 200-character name"
 # an empty file (touch, mktemp) holds nothing to lose: taken as no wisdom and
 # written at the end, as an absent one (it was refused as "not FFTW wisdom")
 : >"$tmp/empty.wis"

@@ -27,9 +27,7 @@
 # shellcheck source=test_lib.sh
 . "$(dirname "$0")/test_lib.sh"
 test_setup "$@"
-SHIM=${3:-$(dirname "$GW")/tests/libgw_signal_shim.so}
-[ -f "$SHIM" ] || { echo "SKIP: no signal shim (not built here)"; exit 0; }
-SHIM=$(cd "$(dirname "$SHIM")" && pwd)/$(basename "$SHIM")
+SHIM=$(shim_path "${3:-}" signal) || { echo "SKIP: no signal shim (not built here)"; exit 0; }
 cd "$tmp" || exit 1
 export LC_ALL=C
 MAKE="layer-make --n 40 --out D/s.txt"

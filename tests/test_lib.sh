@@ -33,6 +33,15 @@ test_setup() {
     trap 'rm -rf "$tmp"' EXIT
 }
 
+# shim_path GIVEN NAME: the LD_PRELOAD library GIVEN (a test's argument), or
+# the build's tests/libgw_NAME_shim.so beside GW, as an absolute path (tests
+# cd into $tmp); status 1 when it is not there (not built here: SKIP)
+shim_path() {
+    local p=${1:-$(dirname "$GW")/tests/libgw_$2_shim.so}
+    [ -f "$p" ] || return 1
+    echo "$(cd "$(dirname "$p")" && pwd)/$(basename "$p")"
+}
+
 test_summary() {
     echo "${1:+$1: }$passes passed, $fails failed"
     [ "$fails" -eq 0 ]

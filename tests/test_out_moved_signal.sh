@@ -30,9 +30,7 @@
 # shellcheck source=test_lib.sh
 . "$(dirname "$0")/test_lib.sh"
 test_setup "$@"
-SHIM=${3:-$(dirname "$GW")/tests/libgw_signal_shim.so}
-[ -f "$SHIM" ] || { echo "SKIP: no signal shim (not built here)"; exit 0; }
-SHIM=$(cd "$(dirname "$SHIM")" && pwd)/$(basename "$SHIM")
+SHIM=$(shim_path "${3:-}" signal) || { echo "SKIP: no signal shim (not built here)"; exit 0; }
 cd "$tmp" || exit 1
 export LC_ALL=C
 "$GW" layer-make --n 60 --out s.txt >/dev/null 2>err.txt || { echo "FAIL: layer-make: $(head -c 200 err.txt)"; exit 1; }

@@ -28,11 +28,8 @@
 # shellcheck source=test_lib.sh
 . "$(dirname "$0")/test_lib.sh"
 test_setup "$@"
-SIG_SHIM=${3:-$(dirname "$GW")/tests/libgw_signal_shim.so}
-FAIL_SHIM=${4:-$(dirname "$GW")/tests/libgw_alloc_fail_shim.so}
-[ -f "$SIG_SHIM" ] && [ -f "$FAIL_SHIM" ] || { echo "SKIP: no shims (not built here)"; exit 0; }
-SIG_SHIM=$(cd "$(dirname "$SIG_SHIM")" && pwd)/$(basename "$SIG_SHIM")
-FAIL_SHIM=$(cd "$(dirname "$FAIL_SHIM")" && pwd)/$(basename "$FAIL_SHIM")
+SIG_SHIM=$(shim_path "${3:-}" signal) && FAIL_SHIM=$(shim_path "${4:-}" alloc_fail) ||
+    { echo "SKIP: no shims (not built here)"; exit 0; }
 cd "$tmp" || exit 1
 export LC_ALL=C
 

@@ -26,9 +26,7 @@
 # shellcheck source=test_lib.sh
 . "$(dirname "$0")/test_lib.sh"
 test_setup "$@"
-SHIM=${3:-$(dirname "$GW")/tests/libgw_move_shim.so}
-[ -f "$SHIM" ] || { echo "SKIP: no move shim (not built here)"; exit 0; }
-SHIM=$(cd "$(dirname "$SHIM")" && pwd)/$(basename "$SHIM") # the tests below run in $tmp
+SHIM=$(shim_path "${3:-}" move) || { echo "SKIP: no move shim (not built here)"; exit 0; }
 cd "$tmp" || exit 1
 export LC_ALL=C
 printf '[sweep]\nmodel = chain\nout = D\n[grid]\nn = 2:9\n[params]\nvimp = 0.1\n' >s.ini

@@ -662,12 +662,15 @@ int gw_layer_impact_step_check(const gw_layer_impact_params *ip, const gw_solver
 /* One block impact on a sample (docs/physics.md 2.3). Writes no files: a caller
  * that wants snapshots (the program's VTK files, the study's arrays) takes them
  * in ip->on_sample. GW_EINVAL names the input (block overlapping the layer,
- * block outside the box, bad parameters). */
+ * block outside the box, bad parameters, a pile not at rest under lp:
+ * gw_layer_impact_rest_check, gw_layer_impact_settled_check with
+ * ip->other_settling, whose warning goes into res->settling). */
 int gw_layer_impact(const gw_layer_sample *s, const gw_layer_params *lp,
                     const gw_layer_impact_params *ip, const gw_solver_type *type,
                     const gw_solver_params *sp, gw_layer_impact_result *res, gw_err *err);
-/* The warning of an impact whose outcome is undecided (res->undecided), appended
- * to *list as gw_layer_make_result_warnings; nothing when decided. */
+/* The warnings of an impact, appended to *list as gw_layer_make_result_warnings:
+ * a sample settled under another material (res->settling), then an outcome
+ * that is undecided (res->undecided); nothing else. */
 int gw_layer_impact_result_warnings(const gw_layer_impact_result *r, char **list);
 
 /* Write res's time series (ledger, block, rings, peaks) and scalar results to

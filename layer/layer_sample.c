@@ -144,10 +144,10 @@ typedef struct text_in {
 /* Append c to the settings text; GW_ENOMEM, or GW_EFORMAT past SAMPLE_SETTINGS_MAX. */
 static int settings_put(text_in *t, int c, gw_err *err)
 {
+    if (t->nset >= SAMPLE_SETTINGS_MAX)
+        return gw_err_set(err, GW_EFORMAT, "sample '%s': line %ld: layer-make's settings line is longer than "
+                          "%d characters", t->path, t->line + 1, SAMPLE_SETTINGS_MAX);
     if (t->nset + 1 >= t->capset) {
-        if (t->capset > SAMPLE_SETTINGS_MAX)
-            return gw_err_set(err, GW_EFORMAT, "sample '%s': line %ld: layer-make's settings line is longer than "
-                              "%d characters", t->path, t->line + 1, SAMPLE_SETTINGS_MAX);
         size_t nc = t->capset ? 2 * t->capset : 1024;
         char *b = realloc(t->set, nc);
         if (!b)

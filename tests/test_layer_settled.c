@@ -95,6 +95,9 @@ static void reading(void)
                  s.settled.density == 100.5 && s.settled.gravity == 1.62 && s.settled.mass_law == GW_LAYER_MASS_DISC,
                  "program's dialect: the values as written");
     gw_layer_sample_free(&s);
+    /* the reader knows the program's text of the disc law by heart (it links without the model) */
+    gw_test_true(strcmp(gw_layer_mass_law_name(GW_LAYER_MASS_DISC), "disc (unit thickness)") == 0,
+                 "the program's mass-law text is the one the reader knows");
     read_ok("library's dialect", write_sample("lib.txt", library_line, NULL, 0), 1, 2, &s);
     gw_test_true(s.settled.shear_modulus == 3e9 && s.settled.poisson == 0.1 && s.settled.friction_deg == 12 &&
                  s.settled.density == 7800 && s.settled.gravity == 3.71 && s.settled.mass_law == GW_LAYER_MASS_SPHERE,

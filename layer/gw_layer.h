@@ -332,7 +332,9 @@ void gw_layer_sample_free(gw_layer_sample *s);
  * Write: HDF5 when path ends in .h5 or .hdf5 (GW_EUNSUPPORTED in a build
  * without HDF5), text otherwise; atomically (temporary name, then rename).
  * GW_EINVAL (nothing written) when s fails the reader's checks; header (may be
- * NULL) goes into comment lines / the "header" attribute.
+ * NULL) goes into comment lines / the "header" attribute. s->settled is not
+ * written: a header's "settings: {JSON}" line records it (layer-make's does),
+ * and a file without one reads back as "not recorded".
  * Read: the format is told by content (HDF5 signature), not by name. Every field
  * is checked the same way in both formats: finite, r > 0, inside the box
  * (0 <= x <= width, y >= 0, up to 0.02 r), n within limits and matching the

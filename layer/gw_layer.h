@@ -260,6 +260,25 @@ int gw_layer_write_pvd(const char *path, int n, const char *const *files, const 
 
 /* -------------------------------------------------------------- samples ---- */
 
+/* The material and gravity a pile settled under, as layer-make's settings
+ * line records them (a "# settings: {...}" comment of a text sample, the
+ * "settings: " line of an HDF5 sample's header attribute; both dialects, the
+ * program's "material" object and the library's flat rows). recorded = 0: not
+ * recorded (a hand-written sample, a file from before the settings line, a
+ * sample built in memory, a settings line without material): the fields are
+ * then unused and no check compares them. --modulus-factor settles with
+ * F x G, then relaxes with G: G is recorded. */
+typedef struct gw_layer_settled {
+    int recorded;          /* 1: the fields below were read */
+    double shear_modulus;  /* G, Pa */
+    double poisson;        /* nu */
+    double friction_deg;   /* phi, deg */
+    double density;        /* kg/m^3 */
+    double gravity;        /* m/s^2, > 0 (pluviation needs gravity) */
+    int mass_law;          /* GW_LAYER_MASS_* */
+    long line;             /* the settings line of a text sample (0: HDF5, or not recorded) */
+} gw_layer_settled;
+
 /* A pluviated sample: positions and radii of settled soil particles. */
 typedef struct gw_layer_sample {
     int n;
@@ -277,6 +296,9 @@ typedef struct gw_layer_sample {
     unsigned long long content_hash; /* FNV-1a 64 of the file's bytes (gw_fnv1a64),
                             set by gw_layer_sample_read; 0 for a sample not read
                             from a file */
+    gw_layer_settled settled; /* the settling's material (gw_layer_sample_read, gw_layer_make);
+                                 recorded 0 when unknown. Appended: older callers that zero
+                                 the struct get "not recorded" */
 } gw_layer_sample;
 
 void gw_layer_sample_free(gw_layer_sample *s);
@@ -310,7 +332,9 @@ void gw_layer_sample_free(gw_layer_sample *s);
  * Write: HDF5 when path ends in .h5 or .hdf5 (GW_EUNSUPPORTED in a build
  * without HDF5), text otherwise; atomically (temporary name, then rename).
  * GW_EINVAL (nothing written) when s fails the reader's checks; header (may be
- * NULL) goes into comment lines / the "header" attribute.
+ * NULL) goes into comment lines / the "header" attribute. s->settled is not
+ * written: a header's "settings: {JSON}" line records it (layer-make's does),
+ * and a file without one reads back as "not recorded".
  * Read: the format is told by content (HDF5 signature), not by name. Every field
  * is checked the same way in both formats: finite, r > 0, inside the box
  * (0 <= x <= width, y >= 0, up to 0.02 r), n within limits and matching the
@@ -318,7 +342,14 @@ void gw_layer_sample_free(gw_layer_sample *s);
  * volume_ratio, a width the packing fills when it is more than one particle
  * high, a porosity within 2e-3 of gw_layer_sample_porosity's). GW_EFORMAT
  * (GW_EIO: unreadable; GW_EUNSUPPORTED: HDF5 file in a build without HDF5) with a message naming the file and the line or particle; s is
- * then empty (safe to free). HDF5 files are opened only in the 1.8 format or
+ * then empty (safe to free). The settling's record s->settled comes from the
+ * header's settings line (a comment "# settings: {JSON}" in text, a line
+ * "settings: {JSON}" of the HDF5 "header" attribute), the one line layer-make
+ * writes there: absent, or JSON without material keys, reads recorded = 0; a
+ * second such line, or one that is not a JSON object, or material values of
+ * the wrong type, missing or outside the material rows' ranges, are
+ * GW_EFORMAT naming the file and line (an altered file: remove the line to
+ * read the sample as hand-written). HDF5 files are opened only in the 1.8 format or
  * later (metadata checksums; libhdf5 can crash on corrupt files without them).
  * HDF5's own error printing is silenced during both calls (under the
  * library's HDF5 lock: calls from several threads run one at a time) and
@@ -451,6 +482,9 @@ typedef struct gw_layer_impact_params {
      * The run itself is unchanged by the hook. */
     int (*on_sample)(void *sample_ctx, const gw_layer *L, int k, int final);
     void *sample_ctx;
+    int other_settling; /* 1: run a sample whose recorded settling (gw_layer_settled)
+                           leaves its pile away from rest under this impact's material
+                           (gw_layer_impact_settled_check), with a warning [0: refused] */
 } gw_layer_impact_params;
 
 gw_layer_impact_params gw_layer_impact_params_default(void);
@@ -540,6 +574,9 @@ typedef struct gw_layer_impact_result {
     const char *method;     /* the solver variant run, default resolved ("adams" for
                                cvode, "erk" for arkode, "none" for verlet and rk4;
                                static text), for the provenance */
+    char settling[768];     /* the sample settled under another material, gravity or mass
+                               law than the impact's (gw_layer_impact_settled_check's
+                               warning; "" when the same or not recorded) */
 } gw_layer_impact_result;
 
 void gw_layer_impact_result_free(gw_layer_impact_result *r);
@@ -570,6 +607,31 @@ int gw_layer_impact_gap_check(const gw_layer_sample *s, const gw_layer_impact_pa
  * GW_EINVAL "sample 'name': ..." naming the values (name may be NULL). */
 int gw_layer_impact_rest_check(const gw_layer_sample *s, const gw_layer_params *lp, const char *name,
                                gw_err *err);
+
+/* The sample's recorded settling (s->settled) against the impact's material
+ * lp. Under lp the overlaps the pile settled with carry
+ *   q = [G/(1 - nu)]_lp / [G/(1 - nu)]_settled x W_settled / W_lp
+ * of the weight they carried at rest (Hertz K_n ~ G/(1 - nu), B.3; W the
+ * pile's weight, sum of m(r) g under each mass law; the equilibrium overlap
+ * scales as (m g / K_n)^(2/3)): q < 1 and the pile sags into the impact,
+ * q > 1 and it springs up. Outside [GW_LAYER_SETTLED_LOAD_MIN,
+ * GW_LAYER_SETTLED_LOAD_MAX] GW_EINVAL "sample 'name': ..." naming the
+ * values, unless other_settling; then, and for any other difference (q not 1
+ * within 1e-9, another mass law, another friction angle: the friction the
+ * pile may lean on), GW_OK with the warning text in warning[n] ("" when the
+ * same, or nothing is recorded: hand-written samples pass as before). The
+ * thresholds (docs/cli.md, layer-impact): the Hertz drop from overlap
+ * q^(2/3) d to d releases about 0.19 of the strain energy at rest at q = 1.5
+ * and 0.24 at q = 0.5; measured on a 40-disc pile left alone under the
+ * default material, the first 5 ms give 0.5-2 J of soil motion matched, 6.4 J
+ * at q = 0.38 and 19 J at q = 0.038. */
+#define GW_LAYER_SETTLED_LOAD_MIN 0.5
+#define GW_LAYER_SETTLED_LOAD_MAX 1.5
+int gw_layer_impact_settled_check(const gw_layer_sample *s, const gw_layer_params *lp, int other_settling,
+                                  const char *name, char *warning, size_t n, gw_err *err);
+/* q above for the sample s under lp; NaN when s->settled is not recorded, an
+ * infinity when lp has no gravity. */
+double gw_layer_settled_load_ratio(const gw_layer_sample *s, const gw_layer_params *lp);
 
 /* The verlet step gw_layer_impact takes when sp->dt is 0: the Hertz contact
  * time of the two smallest discs meeting at V_i, tau = (4/5) B(2/5, 1/2)
@@ -602,12 +664,15 @@ int gw_layer_impact_step_check(const gw_layer_impact_params *ip, const gw_solver
 /* One block impact on a sample (docs/physics.md 2.3). Writes no files: a caller
  * that wants snapshots (the program's VTK files, the study's arrays) takes them
  * in ip->on_sample. GW_EINVAL names the input (block overlapping the layer,
- * block outside the box, bad parameters). */
+ * block outside the box, bad parameters, a pile not at rest under lp:
+ * gw_layer_impact_rest_check, gw_layer_impact_settled_check with
+ * ip->other_settling, whose warning goes into res->settling). */
 int gw_layer_impact(const gw_layer_sample *s, const gw_layer_params *lp,
                     const gw_layer_impact_params *ip, const gw_solver_type *type,
                     const gw_solver_params *sp, gw_layer_impact_result *res, gw_err *err);
-/* The warning of an impact whose outcome is undecided (res->undecided), appended
- * to *list as gw_layer_make_result_warnings; nothing when decided. */
+/* The warnings of an impact, appended to *list as gw_layer_make_result_warnings:
+ * a sample settled under another material (res->settling), then an outcome
+ * that is undecided (res->undecided); nothing else. */
 int gw_layer_impact_result_warnings(const gw_layer_impact_result *r, char **list);
 
 /* Write res's time series (ledger, block, rings, peaks) and scalar results to

@@ -61,6 +61,9 @@ typedef struct gw_layer_impact_setup {
     int until;             /* rebound, verdict (choice, GW_LAYER_UNTIL_*; optional: -1 not given) [rebound] */
     gw_param_list snapshots; /* times, s, of particle snapshots (library only, no
                                 flag of the command) [none: off] */
+    int other_settling;    /* run a sample whose recorded settling leaves its pile away
+                              from rest under this material (gw_layer_impact_settled_check),
+                              with a warning [0: refused] */
 } gw_layer_impact_setup;
 
 /* The table of gw_layer_impact_setup (static, NULL-terminated). */

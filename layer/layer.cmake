@@ -13,8 +13,10 @@ add_library(gw_layer_obj OBJECT
   ${CMAKE_CURRENT_LIST_DIR}/layer_sample_check.c
   ${CMAKE_CURRENT_LIST_DIR}/layer_sample_h5.c
   ${CMAKE_CURRENT_LIST_DIR}/layer_sample_porosity.c
+  ${CMAKE_CURRENT_LIST_DIR}/layer_sample_settings.c
   ${CMAKE_CURRENT_LIST_DIR}/layer_make.c
   ${CMAKE_CURRENT_LIST_DIR}/layer_impact.c
+  ${CMAKE_CURRENT_LIST_DIR}/layer_settled.c
   ${CMAKE_CURRENT_LIST_DIR}/layer_outcome.c
   ${CMAKE_CURRENT_LIST_DIR}/layer_warnings.c
   ${CMAKE_CURRENT_LIST_DIR}/layer_crowns.c

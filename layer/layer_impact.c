@@ -504,6 +504,13 @@ int gw_layer_impact(const gw_layer_sample *smp, const gw_layer_params *lp0,
                           autodt ? "lower t-max" : "raise dt, lower t-max",
                           st0.contacts_listed > 8L * (n + 1) ? " or the skin" : "");
     }
+    /* the settling recorded in the sample against this material: refused far
+     * from rest (unless other_settling), else its warning kept in the result */
+    if (rc == GW_OK && (rc = gw_layer_impact_settled_check(smp, &lp, ip->other_settling, NULL, res->settling,
+                                                           sizeof res->settling, err)) != GW_OK) {
+        gw_layer_free(L);
+        return rc;
+    }
     if (rc == GW_OK && (rc = gw_layer_impact_rest_check(smp, &lp, NULL, err)) != GW_OK) {
         gw_layer_free(L);
         return rc;

@@ -490,6 +490,11 @@ static void finish(const gw_layer_params *lp, const gw_layer_make_params *m, con
     out->seed = m->seed;
     out->mass_law = lp->mass_law;
     out->clump_mass = lp->clump_mass;
+    /* the material the pile came to rest under (the true G after a softened
+     * start), as the settings line of the file written records it */
+    out->settled = (gw_layer_settled){.recorded = 1, .shear_modulus = lp->shear_modulus, .poisson = lp->poisson,
+                                      .friction_deg = lp->friction_deg, .density = lp->density,
+                                      .gravity = lp->gravity, .mass_law = lp->mass_law};
     res->max_overlap = max_overlap(b, n, lp->width, NULL);
     out->porosity = gw_layer_sample_porosity(out);
     res->porosity = out->porosity;

@@ -7,7 +7,9 @@
  * then "n N" and N lines "x y r" in metres (version 2, clump samples of type B
  * soil: "x y r body", the rigid-body id; disc samples keep writing version 1,
  * so their files are unchanged). '#' starts a comment line (the
- * writer puts the program version and the command line there). Lines end in LF
+ * writer puts the program version and the command line there); the one
+ * "# settings: {JSON}" line layer-make writes among them is read for the
+ * settling's material (layer_sample_settings.c, gw_layer_settled). Lines end in LF
  * or CRLF. The reader refuses anything else with the file name and line number,
  * and opens only regular files (gw_input_open: a FIFO or device never blocks it).
  * HDF5 samples (layer_sample_h5.c) are told apart by the HDF5 signature, not
@@ -132,7 +134,30 @@ typedef struct text_in {
     size_t npre, ipre;
     long line;
     char buf[SAMPLE_LINE_MAX + 1];
+    /* layer-make's settings line, a comment "# settings: {JSON}": its JSON
+     * (owned, NUL-terminated; NULL: none) and line */
+    char *set;
+    size_t nset, capset;
+    long set_line;
 } text_in;
+
+/* Append c to the settings text; GW_ENOMEM, or GW_EFORMAT past SAMPLE_SETTINGS_MAX. */
+static int settings_put(text_in *t, int c, gw_err *err)
+{
+    if (t->nset >= SAMPLE_SETTINGS_MAX)
+        return gw_err_set(err, GW_EFORMAT, "sample '%s': line %ld: layer-make's settings line is longer than "
+                          "%d characters", t->path, t->line + 1, SAMPLE_SETTINGS_MAX);
+    if (t->nset + 1 >= t->capset) {
+        size_t nc = t->capset ? 2 * t->capset : 1024;
+        char *b = realloc(t->set, nc);
+        if (!b)
+            return gw_err_set(err, GW_ENOMEM, "sample '%s': out of memory for its settings line", t->path);
+        t->set = b, t->capset = nc;
+    }
+    t->set[t->nset++] = (char)c;
+    t->set[t->nset] = '\0';
+    return GW_OK;
+}
 
 static int text_getc(text_in *t)
 {
@@ -144,8 +169,13 @@ static int text_getc(text_in *t)
  * or GW_EIO (read error), with err set. */
 static int text_next(text_in *t, gw_err *err)
 {
+    static const char set_key[] = "settings:";
     for (;;) {
         int c, any = 0, lead = 1, comment = 0, nul = 0;
+        /* in a comment: -1 after '#' (blanks), k >= 0 the characters of
+         * "settings:" matched, sizeof set_key - 1 the key whole (the rest is
+         * the JSON), -2 another comment */
+        int key = -1;
         size_t len = 0;
         while ((c = text_getc(t)) != EOF && c != '\n') {
             any = 1;
@@ -160,8 +190,30 @@ static int text_next(text_in *t, gw_err *err)
                 break;
             if (lead && (c == ' ' || c == '\t'))
                 continue;
-            if (lead)
+            if (lead) {
                 comment = c == '#', lead = 0;
+                if (comment)
+                    continue;
+            }
+            if (comment && key == (int)sizeof set_key - 1) {
+                int rc = settings_put(t, c, err);
+                if (rc != GW_OK)
+                    return rc;
+            } else if (comment && key == -1 && (c == ' ' || c == '\t')) {
+                /* the blanks between '#' and the key */
+            } else if (comment && key != -2) {
+                key = c == set_key[key < 0 ? 0 : key] ? (key < 0 ? 1 : key + 1) : -2;
+                if (key == (int)sizeof set_key - 1) { /* the key: a settings line */
+                    if (t->set_line > 0)
+                        return gw_err_set(err, GW_EFORMAT, "sample '%s': line %ld: a second settings line (the "
+                                          "first at line %ld): layer-make writes one", t->path, t->line + 1,
+                                          t->set_line);
+                    t->set_line = t->line + 1;
+                    int rc = settings_put(t, ' ', err); /* an empty one is text too: refused as not JSON */
+                    if (rc != GW_OK)
+                        return rc;
+                }
+            }
             if (comment)
                 continue;
             if (len == SAMPLE_LINE_MAX)
@@ -397,7 +449,15 @@ static int read_text(text_in *t, gw_layer_sample *s, gw_err *err)
         s->y = s->x + n, s->r = s->x + 2 * n;
     }
     s->n = (int)n;
-    return layer_sample_whole_check(s, t->path, &src, GW_EFORMAT, err);
+    rc = layer_sample_whole_check(s, t->path, &src, GW_EFORMAT, err);
+    if (rc == GW_OK && t->set) { /* the settling's record, once the sample is whole */
+        char where[32];
+        gw_snprintf(where, sizeof where, "line %ld", t->set_line);
+        if ((rc = layer_sample_settings_parse(t->set, t->path, where, &s->settled, err)) == GW_OK &&
+            s->settled.recorded)
+            s->settled.line = t->set_line;
+    }
+    return rc;
 }
 
 /* -------------------------------------------------------- public API ---- */
@@ -474,6 +534,7 @@ int gw_layer_sample_read(const char *path, gw_layer_sample *s, gw_err *err)
 #endif
     } else {
         rc = read_text(&t, s, err);
+        free(t.set);
         /* the content hash from the same open file: what was read */
         if (rc == GW_OK && (fseek(t.fp, 0, SEEK_SET) != 0 || gw_fnv1a64_stream(t.fp, &s->content_hash) != GW_OK))
             rc = gw_err_set(err, GW_EIO, "sample '%s': cannot read it again for its content hash", path);

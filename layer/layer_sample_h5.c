@@ -311,6 +311,87 @@ static int h5_column_read(hid_t f, const char *name, long n, double *v, const ch
     return rc;
 }
 
+/* The "header" attribute (a string, as written at most 16 kB; NULL when
+ * absent) into *out (owned); GW_EFORMAT when it is not one string. */
+static int h5_header_read(hid_t f, char **out, const char *path, gw_err *err)
+{
+    *out = NULL;
+    htri_t ex = H5Aexists(f, "header");
+    if (ex == 0)
+        return GW_OK;
+    hid_t a = ex > 0 ? H5Aopen(f, "header", H5P_DEFAULT) : -1;
+    hid_t t = a >= 0 ? H5Aget_type(a) : -1, sp = a >= 0 ? H5Aget_space(a) : -1;
+    htri_t var = t >= 0 ? H5Tis_variable_str(t) : -1;
+    size_t size = t >= 0 ? H5Tget_size(t) : 0;
+    int ok = sp >= 0 && H5Sget_simple_extent_npoints(sp) == 1 && H5Tget_class(t) == H5T_STRING && var >= 0 &&
+             (var > 0 || (size > 0 && size <= 65536));
+    char *vs = NULL, *buf = ok && var == 0 ? malloc(size + 1) : NULL;
+    hid_t mt = ok ? H5Tcopy(H5T_C_S1) : -1;
+    int nomem = ok && var == 0 && !buf;
+    ok = ok && !nomem && mt >= 0 && H5Tset_size(mt, var > 0 ? H5T_VARIABLE : size + 1) >= 0 &&
+         H5Tset_strpad(mt, H5T_STR_NULLTERM) >= 0 && H5Aread(a, mt, var > 0 ? (void *)&vs : buf) >= 0;
+    if (ok && var > 0) { /* a variable-length string: copied out of HDF5's memory */
+        size_t len = vs ? strnlen(vs, 65537) : 0;
+        ok = vs && len <= 65536;
+        if (ok && !(buf = malloc(len + 1)))
+            nomem = 1, ok = 0;
+        if (ok)
+            memcpy(buf, vs, len), buf[len] = '\0';
+    } else if (ok) {
+        buf[size] = '\0';
+    }
+    if (vs)
+        H5free_memory(vs);
+    if (mt >= 0)
+        H5Tclose(mt);
+    if (t >= 0)
+        H5Tclose(t);
+    if (sp >= 0)
+        H5Sclose(sp);
+    if (a >= 0)
+        H5Aclose(a);
+    if (!ok) {
+        free(buf);
+        return nomem ? gw_err_set(err, GW_ENOMEM, "sample '%s': out of memory for its header attribute", path)
+                     : gw_err_set(err, GW_EFORMAT, "sample '%s': HDF5 attribute header is not one string of at "
+                                  "most 65536 bytes", path);
+    }
+    *out = buf;
+    return GW_OK;
+}
+
+/* The settling's record (gw_layer_settled) from the header attribute's line
+ * "settings: {JSON}" (layer_sample_settings.c). The writer cuts the header at
+ * 16 kB: a settings line cut there (the header that long, the line its last)
+ * is not recorded rather than refused. */
+static int h5_settings_read(hid_t f, gw_layer_sample *s, const char *path, gw_err *err)
+{
+    char *h;
+    int rc = h5_header_read(f, &h, path, err);
+    if (rc != GW_OK || !h)
+        return rc;
+    static const char key[] = "settings:";
+    char *line = NULL;
+    for (char *p = h; p && *p; p = strchr(p, '\n'), p = p ? p + 1 : NULL) {
+        if (strncmp(p, key, sizeof key - 1) != 0)
+            continue;
+        if (line) {
+            free(h);
+            return gw_err_set(err, GW_EFORMAT, "sample '%s': HDF5 attribute header: a second settings line: "
+                              "layer-make writes one", path);
+        }
+        line = p + sizeof key - 1;
+    }
+    char *nl = line ? strchr(line, '\n') : NULL;
+    if (nl)
+        *nl = '\0';
+    const int cut = line && !nl && strlen(h) >= 16384;
+    if (line && !cut)
+        rc = layer_sample_settings_parse(line, path, "HDF5 attribute header", &s->settled, err);
+    free(h);
+    return rc;
+}
+
 static int h5_fields(hid_t f, gw_layer_sample *s, const char *path, const char *why, gw_err *err)
 {
     char str[64], show[48];
@@ -398,7 +479,8 @@ static int h5_fields(hid_t f, gw_layer_sample *s, const char *path, const char *
             return rc;
     }
     const hdr_src src = {.h5 = 1};
-    return layer_sample_check(s, path, &src, GW_EFORMAT, err);
+    rc = layer_sample_check(s, path, &src, GW_EFORMAT, err);
+    return rc == GW_OK ? h5_settings_read(f, s, path, err) : rc;
 }
 
 /* libhdf5 decodes metadata without bounds checks, so a corrupt file can crash

@@ -43,6 +43,15 @@ int layer_sample_whole_check(const gw_layer_sample *s, const char *path, const h
 /* All of them: the header, n and each particle, then the whole sample. */
 int layer_sample_check(const gw_layer_sample *s, const char *path, const hdr_src *src, int status, gw_err *err);
 
+/* The settings line's JSON text (layer_sample_settings.c) into *out: recorded
+ * 1 with the settling's material, or recorded 0 when the object has no
+ * material; GW_EFORMAT "sample 'PATH': WHERE: ..." when it is not a JSON
+ * object or its material is incomplete, of the wrong type or out of range;
+ * GW_ENOMEM. *out is zeroed first. */
+#define SAMPLE_SETTINGS_MAX 65536 /* longest settings line read, characters (layer-make's: under 30000) */
+int layer_sample_settings_parse(const char *text, const char *path, const char *where, gw_layer_settled *out,
+                                gw_err *err);
+
 #if GW_HAVE_HDF5
 /* The HDF5 sample (layer_sample_h5.c): s, already checked, written
  * atomically; read (sb: the superblock version, the byte after the

@@ -68,6 +68,11 @@ static const gw_param impact_params[] = {
         "stop (an error; the command exits 1) when the ledger closure |sum - A|/A exceeds E [0 = off]"),
     FLAG("remove-walls", remove_walls, "take the left, right and bottom walls away at the start of the impact"),
     FLAG("full", full, "run to t-max even after the outcome is decided (for the crowns)"),
+    /* layer-make's settings line records the pile's settling material: far
+     * from it the pile is not at rest at t = 0 (layer_settled.c) */
+    FLAG("other-settling", other_settling, "run a sample settled with another material or gravity (its settings line) "
+         "whose contacts carry less than 0.5 or more than 1.5 times the weight they carried at rest under "
+         "this material; the result records a warning (docs/cli.md)"),
     /* optional: with full, until is refused at either value (rebound, the
      * default's value given, passed in silence though full runs to t-max) */
     GW_PARAM_OPT_CHOICE_ROW("until", OFF(until), "rebound,verdict", "rebound", "WHAT",
@@ -353,6 +358,7 @@ static int resolve(const gw_layer_impact_setup *s, const gw_layer_sample *smp, g
     ip->energy_tol = s->energy_tol;
     ip->remove_walls = s->remove_walls;
     ip->full = s->full;
+    ip->other_settling = s->other_settling;
     ip->until = s->until >= 0 ? s->until : GW_LAYER_UNTIL_REBOUND;
     if (ip->full && s->until >= 0)
         return gw_err_set(err, GW_EINVAL, "until: %s has no effect with full (which runs to t-max)",
@@ -362,6 +368,8 @@ static int resolve(const gw_layer_impact_setup *s, const gw_layer_sample *smp, g
         rc = gw_layer_impact_gap_check(smp, ip, s->gravity, err);
     if (rc == GW_OK)
         rc = gw_layer_impact_step_check(ip, *type, sp, err);
+    if (rc == GW_OK) /* the warning is the run's (gw_layer_impact keeps it in its result) */
+        rc = gw_layer_impact_settled_check(smp, lp, s->other_settling, s->sample, NULL, 0, err);
     return rc == GW_OK ? gw_layer_impact_rest_check(smp, lp, s->sample, err) : rc;
 }
 

@@ -49,6 +49,7 @@
 #include "gw_locale.h"
 #include "gw_sweep.h"
 #include "layer_impl.h"
+#include "layer_setup_rows.h"
 
 static const char *const columns[] = {
     "x_impact", "bounced", "e_n", "e", "alpha_r", "v_ni", "v_nr", "v_r", "penetration", "penetration_rm",
@@ -154,7 +155,42 @@ typedef struct memo_slot {
 typedef struct check_memo {
     unsigned long long tick;
     memo_slot slot[MEMO_SLOTS];
+    /* cases checked, and those on a sample settled under another material
+     * (gw_layer_impact_settled_check's warning, the first one's text kept) */
+    long ncases, nsettling;
+    char settling[768];
 } check_memo;
+
+/* Tally case s's settling warning against the sample kept for it (none kept:
+ * a sample above MEMO_NMAX, whose runs still record theirs). The material
+ * resolves as the run's does (layer_setup.c: the sample's mass law unless given). */
+static void settling_tally(check_memo *c, const gw_layer_impact_setup *s)
+{
+    c->ncases++;
+    for (int k = 0; k < MEMO_SLOTS; k++) {
+        const memo_slot *m = &c->slot[k];
+        if (!m->path || m->used != c->tick || strcmp(m->path, s->sample) != 0)
+            continue;
+        gw_layer_params lp = gw_layer_params_default();
+        GW_LAYER_MATERIAL_TO_PARAMS(&lp, s);
+        lp.mass_law = s->mass_law >= 0 ? s->mass_law : m->s.mass_law;
+        char w[768] = "";
+        gw_err e = {{0}};
+        if (gw_layer_impact_settled_check(&m->s, &lp, s->other_settling, NULL, w, sizeof w, &e) == GW_OK && w[0] &&
+            c->nsettling++ == 0)
+            memcpy(c->settling, w, sizeof w);
+        return;
+    }
+}
+
+static int memo_warnings(const void *memo, char **list)
+{
+    const check_memo *c = memo;
+    if (!c || c->nsettling == 0)
+        return GW_OK;
+    return gw_warnings_add(list, "%ld of %ld cases run on a sample settled under another material (their rows "
+                           "hold its motion too); the first: %s", c->nsettling, c->ncases, c->settling);
+}
 
 static void memo_free(void *memo)
 {
@@ -212,6 +248,8 @@ static int check_memo_fn(void **memo, int nk, const char *const *names, const ch
     if (rc == GW_OK) /* the sample and the resolution: as the run checks them */
         if ((rc = setup_check(memo, &s, err)) == GW_EINVAL)
             name_placement(&s, &pl, err);
+    if (rc == GW_OK && memo && *memo)
+        settling_tally(*memo, &s);
     gw_layer_impact_setup_clear(&s);
     return rc == GW_OK || rc == GW_ENOMEM ? rc : GW_EINVAL;
 }
@@ -286,4 +324,4 @@ static int run(int nk, const char *const *names, const char *const *values, doub
 
 const gw_sweep_model gw_layer_sweep_model = {"layer",  NCOLUMNS, columns,       has_key,  run,
                                              check,    memory,   "sample",      check_memo_fn, memo_free,
-                                             NULL /* memo_warnings: none */};
+                                             memo_warnings};

@@ -2,8 +2,9 @@
  * layer_warnings.c: the warning texts of the layer's runs, each written once
  * (gw_common.h, "warnings of a result"): a pluviation that did not settle
  * (physics.md 2.2: E_k below the threshold, judged once the pile has landed),
- * a pluviation whose --height-rm took nothing away, and an impact whose
- * outcome is undecided (2.3; the text is built where the outcome is,
+ * a pluviation whose --height-rm took nothing away, an impact on a sample
+ * settled under another material or gravity (layer_settled.c builds its
+ * text), and an impact whose outcome is undecided (2.3; the text is built where the outcome is,
  * layer_outcome.c, as the result's `undecided`). The program prints
  * them as "granwave CMD: warning: TEXT", the Python module issues them as
  * GranwaveWarning, a C caller reads them from the outcome's `warnings`.
@@ -50,7 +51,11 @@ int gw_layer_make_result_warnings(const gw_layer_make_result *r, double t_max, c
 
 int gw_layer_impact_result_warnings(const gw_layer_impact_result *r, char **list)
 {
-    if (!r || !r->undecided[0]) /* decided, or stopped at the verdict on purpose */
+    if (!r)
         return GW_OK;
+    /* a sample settled under another material or gravity (layer_settled.c) */
+    int rc = r->settling[0] ? gw_warnings_add(list, "%s", r->settling) : GW_OK;
+    if (rc != GW_OK || !r->undecided[0]) /* decided, or stopped at the verdict on purpose */
+        return rc;
     return gw_warnings_add(list, "%s", r->undecided);
 }

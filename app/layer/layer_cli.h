@@ -50,6 +50,8 @@ typedef struct layer_impact_cli {
     double dt, rtol, atol;
     double rm; /* the sample's R_m, m (from the library's plan) */
     unsigned long long sample_hash; /* its content hash (gw_layer_sample.content_hash) */
+    gw_layer_settled settled;  /* its settling's record (recorded 0: none) */
+    double settled_q;          /* gw_layer_settled_load_ratio under the impact's material (NaN: none) */
     long rings;
     int json, exact;
     /* resolved by the library (gw_layer_impact_plan_make) */
@@ -58,11 +60,11 @@ typedef struct layer_impact_cli {
 } layer_impact_cli;
 
 /* Number of options layer_impact_options writes (materials included). */
-#define LAYER_IMPACT_NOPTS (LAYER_MAT_NOPTS + 21)
+#define LAYER_IMPACT_NOPTS (LAYER_MAT_NOPTS + 22)
 
 /* Zero c, fill the defaults and write the impact option table (the rows of
  * gw_layer_impact_setup_params: materials, sample, block, run, solver, flags
- * remove-walls and full, until) into
+ * remove-walls, full and other-settling, until) into
  * o[0 .. LAYER_IMPACT_NOPTS); returns LAYER_IMPACT_NOPTS. The caller appends
  * its own options and the {0} terminator. String options point into argv. */
 int layer_impact_options(layer_impact_cli *c, gw_opt *o);

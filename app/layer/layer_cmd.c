@@ -407,7 +407,25 @@ static cJSON *impact_json(const impact_cli *c, const gw_layer_impact_result *r,
     cJSON_AddBoolToObject(s, "full", c->ip.full);
     cJSON_AddStringToObject(s, "until", gw_layer_until_name(c->ip.until));
     cJSON_AddBoolToObject(s, "remove_walls", c->ip.remove_walls);
+    cJSON_AddBoolToObject(s, "other_settling", c->ip.other_settling);
     cJSON_AddItemToObject(s, "material", mat_json(&c->m.lp));
+    /* what the sample's settings line recorded of its settling (null: nothing) */
+    if (c->settled.recorded) {
+        gw_layer_params sl = c->m.lp;
+        sl.shear_modulus = c->settled.shear_modulus, sl.poisson = c->settled.poisson;
+        sl.friction_deg = c->settled.friction_deg, sl.density = c->settled.density;
+        sl.gravity = c->settled.gravity, sl.mass_law = c->settled.mass_law;
+        cJSON *st = cJSON_AddObjectToObject(s, "sample_settled");
+        cJSON_AddNumberToObject(st, "shear_modulus", sl.shear_modulus);
+        cJSON_AddNumberToObject(st, "poisson", sl.poisson);
+        cJSON_AddNumberToObject(st, "friction_deg", sl.friction_deg);
+        cJSON_AddNumberToObject(st, "density", sl.density);
+        cJSON_AddNumberToObject(st, "gravity", sl.gravity);
+        cJSON_AddStringToObject(st, "mass_law", gw_layer_mass_law_name(sl.mass_law));
+        cJSON_AddNumberToObject(st, "load_ratio", c->settled_q);
+    } else {
+        cJSON_AddNullToObject(s, "sample_settled");
+    }
     cJSON *so = cJSON_AddObjectToObject(s, "solver");
     cJSON_AddStringToObject(so, "name", c->solver);
     cJSON_AddStringToObject(so, "method", r->method ? r->method : c->method);
@@ -620,6 +638,8 @@ int gw_cmd_layer_impact(int argc, char **argv)
     c.sp = plan.sp;
     c.rm = plan.sample.rm;
     c.sample_hash = plan.sample.content_hash;
+    c.settled = plan.sample.settled;
+    c.settled_q = gw_layer_settled_load_ratio(&plan.sample, &plan.lp);
     c.solver = gw_solver_type_name(plan.type);
     const gw_solver_type *type = c.type;
     gw_solver_params sp = c.sp;
@@ -667,17 +687,38 @@ int gw_cmd_layer_impact(int argc, char **argv)
         return rc == GW_EINVAL || rc == GW_EUNSUPPORTED ? 2 : 1;
     }
     int code = 0;
-    if (r.undecided[0]) { /* one line; the JSON says null */
-        char *w = NULL; /* the library's text (out of memory for it: no line) */
-        (void)gw_layer_impact_result_warnings(&r, &w);
-        gw_cli_warnings("layer-impact", w);
-        free(w);
-    }
+    /* the library's texts, one line each (out of memory for them: no line): a
+     * sample settled under another material, an undecided outcome (the JSON
+     * says null); the JSON's "warnings" and the outputs' headers record them */
+    char *w = NULL;
+    (void)gw_layer_impact_result_warnings(&r, &w);
+    gw_cli_warnings("layer-impact", w);
     cJSON *j = impact_json(&c, &r, &sp);
+    cJSON *wl = cJSON_AddArrayToObject(j, "warnings");
+    for (const char *p = w; p && *p;) {
+        const char *nl = strchr(p, '\n');
+        const size_t len = nl ? (size_t)(nl - p) : strlen(p);
+        char *one = malloc(len + 1);
+        if (one) {
+            memcpy(one, p, len);
+            one[len] = '\0';
+            cJSON_AddItemToArray(wl, cJSON_CreateString(one));
+        }
+        free(one);
+        p += len + (nl != NULL);
+    }
     if (c.out) {
         /* the command line and every setting (defaults included, the step used)
-         * head each CSV and the HDF5 "run" attribute */
+         * head each CSV and the HDF5 "run" attribute, and the warnings after them */
         char *hdr = gw_cli_one_line(gw_cli_provenance("layer-impact", argc, argv, cJSON_GetObjectItem(j, "settings")), ';');
+        if (hdr && r.settling[0]) {
+            const size_t hl = strlen(hdr) + strlen(r.settling) + 16;
+            char *h2 = malloc(hl);
+            if (h2)
+                snprintf(h2, hl, "%s;warning: %s", hdr, r.settling);
+            free(hdr);
+            hdr = h2;
+        }
         char path[4096];
         /* a snapshot_failure.vtk left by an earlier failed run in DIR is not this
          * run's (beside its results it read as the state where it failed): the
@@ -735,6 +776,7 @@ int gw_cmd_layer_impact(int argc, char **argv)
         }
     }
     cJSON_Delete(j);
+    free(w);
     gw_layer_impact_result_free(&r);
     return code;
 }

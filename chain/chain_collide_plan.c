@@ -123,6 +123,113 @@ int chain_sensor_steps_check(const gw_chain_params *p, const gw_solver_type *typ
     return GW_OK;
 }
 
+double chain_rk4_default_dt(const gw_chain_params *p, double steps_per_tc)
+{
+    double dt = gw_chain_step_scale(p) / (steps_per_tc > 0 ? steps_per_tc : 400.0);
+    /* RK4 is stable on a decay of rate r while h r < 2.79; h r <= 1 keeps a
+     * margin. The beads' drags are in the step scale (0.5 m/c, over the steps
+     * a contact); the sensor body's only bounds the step here: --sensor-mass
+     * 1e-3 --sensor-stiffness 1e9 --sensor-damping 1e7 blew up at the default
+     * T_c/400 (h r = 25) and runs at h = M/c_s */
+    double r[CHAIN_DRAG_N];
+    chain_drag_rates(p, r);
+    if (r[CHAIN_DRAG_SENSOR] > 0)
+        dt = fmin(dt, 1.0 / r[CHAIN_DRAG_SENSOR]);
+    return dt;
+}
+
+/* Steps per unit of r t_len an explicit method takes on a drag of rate r
+ * (its stability bound, whatever the tolerance), measured at n = 3 over the
+ * collision (steel, --sensor-mass 1e-3 --sensor-stiffness 1e9, c_s 1e5 to
+ * 1e8 N s/m, and the guide's friction on 1e-4 m beads): cvode adams 1.24 to
+ * 1.97 (1.4 at 1e7 and above), arkode erk 0.27 to 0.63 (0.27 at 1e7 and
+ * above). cvode bdf, arkode dirk and imex (the forces implicit) are not held
+ * by it: bdf took 1480 to 1818 steps at c_s 1e7 to 1e9 and M 1e-7 to 1 kg.
+ * Before, no drag was counted: --sensor-damping 1e9 ran for minutes under
+ * adams (1.3e8 steps estimated), --radius 1e-5 --guide-friction 1 likewise
+ * under adams and erk. */
+#define DRAG_STEPS_ADAMS 1.5
+#define DRAG_STEPS_ERK 0.3
+/* The guide's Coulomb friction, regularised by tanh(v/v_reg), holds them to
+ * more at its slope's rate F/(v_reg m): --radius 1e-4 --guide-friction 1
+ * (1e11 1/s) took about 3.7 per unit of adams (31.7 s at 1.5 us a step) and
+ * 0.35 of erk, over the whole run to t-max: a friction that stops a bead
+ * within the collision (F/m t_e > v_imp) keeps bead 1 on the wall until
+ * t-max (exit 1 after 31.7 s there). */
+#define DRAG_STEPS_ADAMS_COULOMB 4.0
+#define DRAG_STEPS_ERK_COULOMB 0.4
+
+/* The steps a drag holds an explicit method to over t_len (0: none, or a
+ * method it does not hold), *k the drag (chain_drag_rates' index) and *rate
+ * its rate. */
+static double drag_steps(const gw_chain_params *p, const gw_solver_type *type, const gw_solver_params *sp,
+                         const gw_solver_params *given, double steps_per_tc, double t_len, double t_run, int *k,
+                         double *rate, double *t_used)
+{
+    *t_used = t_len;
+    double r[CHAIN_DRAG_N];
+    chain_drag_rates(p, r);
+    /* the guide's two frictions slow the same bead */
+    const double rg = r[CHAIN_DRAG_GUIDE_VISCOUS] + r[CHAIN_DRAG_GUIDE_COULOMB];
+    *k = r[CHAIN_DRAG_GUIDE_COULOMB] > r[CHAIN_DRAG_GUIDE_VISCOUS] ? CHAIN_DRAG_GUIDE_COULOMB : CHAIN_DRAG_GUIDE_VISCOUS;
+    *rate = rg;
+    if (r[CHAIN_DRAG_CONTACT] > *rate)
+        *rate = r[CHAIN_DRAG_CONTACT], *k = CHAIN_DRAG_CONTACT;
+    if (r[CHAIN_DRAG_SENSOR] > *rate)
+        *rate = r[CHAIN_DRAG_SENSOR], *k = CHAIN_DRAG_SENSOR;
+    if (!(*rate > 0))
+        return 0;
+    const char *used = gw_solver_method_used(type, sp ? sp->method : GW_METHOD_DEFAULT);
+    if (type == gw_solver_rk4) {
+        if (given && given->dt > 0)
+            return 0; /* a step given: chain_steps_check */
+        /* the step this drag sets (chain_rk4_default_dt, gw_chain_step_scale),
+         * counted only where it is the run's */
+        const double spt = steps_per_tc > 0 ? steps_per_tc : 400.0,
+                     h = *k == CHAIN_DRAG_SENSOR ? 1.0 / *rate : 0.5 / fmax(rg, r[CHAIN_DRAG_CONTACT]) / spt,
+                     dt = chain_rk4_default_dt(p, steps_per_tc), step = sp && sp->dt_max > 0 ? fmin(dt, sp->dt_max) : dt;
+        return h <= step * (1 + 1e-9) ? t_len / step : 0;
+    }
+    const int adams = strcmp(used, "adams") == 0, erk = strcmp(used, "erk") == 0;
+    if (!adams && !erk)
+        return 0; /* bdf, dirk, imex */
+    if (*k == CHAIN_DRAG_GUIDE_COULOMB) {
+        double m_min = p->masses ? p->masses[0] : p->mass;
+        for (int i = 0; p->masses && i < p->n; i++)
+            m_min = fmin(m_min, p->masses[i]);
+        if (p->guide.coulomb / m_min * t_len > p->v_imp)
+            *t_used = fmax(t_len, t_run);
+        return (adams ? DRAG_STEPS_ADAMS_COULOMB : DRAG_STEPS_ERK_COULOMB) * *rate * *t_used;
+    }
+    return (adams ? DRAG_STEPS_ADAMS : DRAG_STEPS_ERK) * *rate * t_len;
+}
+
+int chain_drag_steps_check(const gw_chain_params *p, const gw_solver_type *type, const gw_solver_params *sp,
+                           const gw_solver_params *given, double steps_per_tc, double t_len, double t_run,
+                           const char *over, gw_err *err)
+{
+    int k = 0;
+    double rate = 0, t_used = t_len;
+    const double steps = drag_steps(p, type, sp, given, steps_per_tc, t_len, t_run, &k, &rate, &t_used);
+    if (steps <= 1e8)
+        return GW_OK;
+    const char *what = k == CHAIN_DRAG_SENSOR ? "the sensor body's damping"
+                       : k == CHAIN_DRAG_CONTACT ? "the contact damping"
+                                                 : "the guide's friction";
+    return gw_err_set(err, GW_EINVAL, "%s: %s decays at %.3g 1/s (c/m), which %s %s follows with about %.3g steps "
+                      "over %s (about %.3g s), above 1e+08: use cvode with its default method bdf (implicit: "
+                      "its step is not held by the damping), or %s", chain_drag_flag[k], what, rate,
+                      gw_solver_type_name(type),
+                      type == gw_solver_rk4 ? "(explicit)" : gw_solver_method_used(type, sp->method), steps,
+                      t_used > t_len ? "the run to t-max (the friction stops a bead within the collision and bead 1 "
+                                       "stays on the wall)"
+                                     : over,
+                      t_used,
+                      k == CHAIN_DRAG_SENSOR ? "a smaller damping or a heavier sensor body"
+                      : k == CHAIN_DRAG_CONTACT ? "weaker contact damping"
+                                                : "a weaker guide friction or heavier beads");
+}
+
 /* Bytes a run of column p allocates, by what gw_chain_create, gw_chain_collide
  * (or the drop) and the backend hold: the model's and the result's per-bead
  * arrays (about 14 doubles a bead; the force-rate root's scratch of 2 dim doubles,
@@ -389,7 +496,7 @@ static int plan_make(const gw_chain_params *p0, const gw_chain_run_opts *o, coll
     /* the step resolves the stiffest contact (a small bead between large ones was
      * taken at bead 1's scale and blew up) and a sensor body's oscillation */
     if (pl->type == gw_solver_rk4 && !(pl->sp.dt > 0))
-        pl->sp.dt = gw_chain_step_scale(p) / (o->steps_per_tc > 0 ? o->steps_per_tc : 400.0);
+        pl->sp.dt = chain_rk4_default_dt(p, o->steps_per_tc);
     /* and at least t_expect / step steps of O(n) each: bounded before the run
      * (the RK4 step, or the largest step of cvode/arkode) */
     /* Steps and samples grow about as n, memory as n (n^2 with a full Jacobian):
@@ -402,6 +509,10 @@ static int plan_make(const gw_chain_params *p0, const gw_chain_run_opts *o, coll
     /* cvode and arkode follow a sensor body's oscillation too (8 s for 0.1 ms at
      * 1e-7 kg on 1e14 N/m, 5.8e7 steps) */
     if ((rc = chain_sensor_steps_check(p, pl->type, &pl->sp, pl->t_expect, "the collision", err)) != GW_OK)
+        return rc;
+    /* and the explicit methods a drag's decay (chain_drag_steps_check) */
+    if ((rc = chain_drag_steps_check(p, pl->type, &pl->sp, &o->sp, o->steps_per_tc, pl->t_expect, pl->t_max,
+                                     "the collision", err)) != GW_OK)
         return rc;
     if (gw_chain_memory_check(p, pl->type, pl->sp.method, &e[1]) != GW_OK)
         n_ok[1] = memory_n_ok(p, pl->type, pl->sp.method);
@@ -448,7 +559,9 @@ static int plan_make(const gw_chain_params *p0, const gw_chain_run_opts *o, coll
                               /* one that passes the held column's bound too (chain_held_check) */
                               fmin(floor_2digits(t_lim), held_t_lim(p0, t_col, pl->tau1,
                                                                     pl->dt_out)));
-        if ((rc = chain_sensor_steps_check(p, pl->type, &pl->sp, pl->t_max, "t-max", err)) != GW_OK)
+        if ((rc = chain_sensor_steps_check(p, pl->type, &pl->sp, pl->t_max, "t-max", err)) != GW_OK ||
+            (rc = chain_drag_steps_check(p, pl->type, &pl->sp, &o->sp, o->steps_per_tc, pl->t_max, pl->t_max,
+                                         "t-max", err)) != GW_OK)
             return rc;
         if (o->sample == gw_chain_trace_sample) {
             gw_err te = {{0}};
@@ -504,6 +617,9 @@ int chain_run_steps(const gw_chain_params *p, const gw_chain_run_opts *o, double
     double s = pl.t_expect / step;
     if (pl.type != gw_solver_rk4 && p->sensor.mass > 0 && p->sensor.stiffness > 0)
         s = fmax(s, 2.0 * sqrt(p->sensor.stiffness / p->sensor.mass) * pl.t_expect);
+    int k = 0;
+    double rate = 0, t_used = 0;
+    s = fmax(s, drag_steps(p, pl.type, &pl.sp, &o->sp, o->steps_per_tc, pl.t_expect, pl.t_max, &k, &rate, &t_used));
     *steps = s;
     return GW_OK;
 }

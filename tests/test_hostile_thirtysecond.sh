@@ -76,6 +76,12 @@ refused "chain --sensor-damping 1e9 under rk4: refused naming the damping" \
 refused "drop --sensor-damping 1e9 under rk4: refused naming the damping, not --dt" \
     "^granwave drop --sensor-damping: " \
     drop $SB --sensor-damping 1e9 --solver rk4 --out o
+# a study: its steps summed with the drags' (chain_run_steps), the damping
+# named where it alone trips the study's bound
+REFUSE_TIMEOUT=60 refused "falcon --sensor-damping 1e8 under arkode erk: the study refused naming the damping" \
+    "^granwave falcon --sensor-damping: the study's .* collisions need about .* steps in all" \
+    falcon --n 1:30 --vimp 0.2,0.3,0.4 --sensor-mass 1e-3 --sensor-stiffness 1e9 --sensor-damping 1e8 --solver arkode \
+    --out o
 py_checks <<'EOF'
 import granwave
 try:
@@ -91,6 +97,8 @@ try:
 except granwave.GranwaveValueError as e:
     print(("PASS: " if "sensor_damping" in str(e) else "FAIL: ") + "Python chain adams: GranwaveValueError naming "
           "sensor_damping")
+except granwave.GranwaveError as e:
+    print("FAIL: Python chain adams sensor_damping=1e9: ran, then %s" % e)
 EOF
 
 # --- 3 a drop with a heavily damped sensor body ---

@@ -153,9 +153,10 @@ double chain_rk4_default_dt(const gw_chain_params *p, double steps_per_tc)
 /* The guide's Coulomb friction, regularised by tanh(v/v_reg), holds them to
  * more at its slope's rate F/(v_reg m): --radius 1e-4 --guide-friction 1
  * (1e11 1/s) took about 3.7 per unit of adams (31.7 s at 1.5 us a step) and
- * 0.35 of erk, over the whole run to t-max: a friction that stops a bead
- * within the collision (F/m t_e > v_imp) keeps bead 1 on the wall until
- * t-max (exit 1 after 31.7 s there). */
+ * 0.35 of erk, over the whole run to t-max: a guide that stops a bead
+ * within the collision ((F + c_g v) / m t_e > v_imp) keeps bead 1 on the
+ * wall until t-max (exit 1 after 31.7 s there; --radius 1e-5 --guide-viscous
+ * 100, 3e12 1/s: 0.83 a unit of adams, 20.6 s, and 0.33 of erk). */
 #define DRAG_STEPS_ADAMS_COULOMB 4.0
 #define DRAG_STEPS_ERK_COULOMB 0.4
 
@@ -193,15 +194,18 @@ static double drag_steps(const gw_chain_params *p, const gw_solver_type *type, c
     const int adams = strcmp(used, "adams") == 0, erk = strcmp(used, "erk") == 0;
     if (!adams && !erk)
         return 0; /* bdf, dirk, imex */
-    if (*k == CHAIN_DRAG_GUIDE_COULOMB) {
+    if (*k == CHAIN_DRAG_GUIDE_COULOMB || *k == CHAIN_DRAG_GUIDE_VISCOUS) {
+        /* the guide slows the lightest bead by (F_c + c_g v) / m: stopped
+         * within t_len, bead 1 stays on the wall to t_run */
         double m_min = p->masses ? p->masses[0] : p->mass;
         for (int i = 0; p->masses && i < p->n; i++)
             m_min = fmin(m_min, p->masses[i]);
-        if (p->guide.coulomb / m_min * t_len > p->v_imp)
+        if ((p->guide.coulomb + p->guide.viscous * p->v_imp) / m_min * t_len > p->v_imp)
             *t_used = fmax(t_len, t_run);
-        return (adams ? DRAG_STEPS_ADAMS_COULOMB : DRAG_STEPS_ERK_COULOMB) * *rate * *t_used;
     }
-    return (adams ? DRAG_STEPS_ADAMS : DRAG_STEPS_ERK) * *rate * t_len;
+    if (*k == CHAIN_DRAG_GUIDE_COULOMB)
+        return (adams ? DRAG_STEPS_ADAMS_COULOMB : DRAG_STEPS_ERK_COULOMB) * *rate * *t_used;
+    return (adams ? DRAG_STEPS_ADAMS : DRAG_STEPS_ERK) * *rate * *t_used;
 }
 
 int chain_drag_steps_check(const gw_chain_params *p, const gw_solver_type *type, const gw_solver_params *sp,
@@ -221,7 +225,7 @@ int chain_drag_steps_check(const gw_chain_params *p, const gw_solver_type *type,
                       "its step is not held by the damping), or %s", chain_drag_flag[k], what, rate,
                       gw_solver_type_name(type),
                       type == gw_solver_rk4 ? "(explicit)" : gw_solver_method_used(type, sp->method), steps,
-                      t_used > t_len ? "the run to t-max (the friction stops a bead within the collision and bead 1 "
+                      t_used > t_len ? "the run to t-max (the guide stops a bead within the collision and bead 1 "
                                        "stays on the wall)"
                                      : over,
                       t_used,

@@ -15,7 +15,7 @@
 #  2 RK4's default step ignored the sensor body's damping: --sensor-damping
 #    1e7 (h c_s/M = 25) blew up (exit 1); its step is now at most M/c_s, and
 #    F_max agrees with cvode bdf's; where that step needs more than 1e8 steps,
-#    refused naming --sensor-damping (before: the drop named --dt).
+#    refused naming --sensor-damping (before: the drop blew up, exit 1).
 #  3 A drop with a heavily damped sensor body hung: its force-rate root, the
 #    central difference of the reading k_s x_s + c_s x_s' (a small difference
 #    of two large terms while bead 1 is off the sensor), chattered: drop --n 3
@@ -81,7 +81,7 @@ fi
 refused "chain --sensor-damping 1e9 under rk4: refused naming the damping" \
     "^granwave chain --sensor-damping: .* rk4 \(explicit\) follows" \
     chain $SB --sensor-damping 1e9 --solver rk4 --out o
-refused "drop --sensor-damping 1e9 under rk4: refused naming the damping, not --dt" \
+refused "drop --sensor-damping 1e9 under rk4: refused naming the damping (before: blew up, exit 1)" \
     "^granwave drop --sensor-damping: " \
     drop $SB --sensor-damping 1e9 --solver rk4 --out o
 # a study: its steps summed with the drags' (chain_run_steps), the damping

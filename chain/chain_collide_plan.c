@@ -95,6 +95,8 @@ int chain_steps_check(const gw_solver_type *type, const gw_solver_params *sp, co
  * --sensor-stiffness 1e9, estimated at 5.5e6 steps, ran 2e8 (438 s on an
  * idle machine) into the run's own bound and exited 1. */
 #define SENSOR_STEPS_PER_RAD 20.0
+#define SENSOR_DENSE_WORK_MAX 1e9
+
 
 int chain_sensor_steps_check(const gw_chain_params *p, const gw_solver_type *type, const gw_solver_params *sp,
                              double t_len, const char *over, gw_err *err)
@@ -307,6 +309,42 @@ int gw_chain_memory_check(const gw_chain_params *p, const gw_solver_type *type, 
                             "arkode erk need none)"
                           : "",
                       limit / 1e9, lo);
+}
+
+/* The implicit methods solve with the Jacobian at every step, and a sensor
+ * body couples every bead in it (full, dim = 2n + 3): a step costs about
+ * dim^2 (measured at the default 1e-3 kg on 1e9 N/m, cvode bdf: n = 10, 20,
+ * 40 in 0.11, 0.45, 3.0 s, 7.6, 16 and 50 us a step, about 2e-8 s a unit of
+ * the estimate below at n = 40 and 100; n = 100 ran 40 s, 300 and 600 past
+ * 60 s, hours at the 3339 beads the memory bound admits, with nothing
+ * refused). Bounded at 1e9 units, about 20 s of CPU, over the collision's
+ * steps (chain_sensor_steps_check's). Not the drop's: its steps over t-max
+ * are mostly in flight (--n 40 on that body: 2.96 s over 10 ms). */
+static int sensor_dense_check(const gw_chain_params *p, const gw_solver_type *type, const gw_solver_params *sp,
+                              double t_len, const char *over, gw_err *err)
+{
+    if (!(p->sensor.mass > 0 && p->sensor.stiffness > 0) || !implicit_method(type, sp->method))
+        return GW_OK;
+    const double m1 = p->masses ? p->masses[0] : p->mass,
+                 kc = p->kwall > 0 && m1 > 0 && p->v_imp > 0 ? 1.5 * p->kwall * sqrt(gw_chain_dmax1(m1, p->kwall, p->v_imp))
+                                                                : 0.0;
+    const double omega = sqrt((p->sensor.stiffness + (isfinite(kc) ? kc : 0.0)) / p->sensor.mass);
+    double tol = fmax(sp->rtol, sp->atol);
+    if (!(tol > 0))
+        tol = 1e-12;
+    const double per_rad = fmax(2.0, SENSOR_STEPS_PER_RAD * pow(fmax(tol, 1e-12) / 1e-12, -0.2)),
+                 steps = per_rad * omega * t_len, dim = 2.0 * p->n + 3, dense = steps * dim * dim;
+    if (dense <= SENSOR_DENSE_WORK_MAX)
+        return GW_OK;
+    /* the steps grow with the collision's length, about as n */
+    long n_ok = p->n;
+    while (n_ok > 1 && !(steps * n_ok / p->n * (2.0 * n_ok + 3) * (2.0 * n_ok + 3) <= SENSOR_DENSE_WORK_MAX))
+        n_ok = (long)(n_ok * 0.95);
+    return gw_err_set(err, GW_EINVAL, "n: a sensor body couples every bead in the Jacobian %s %s solves with at "
+                      "every step: about %.3g steps over %s of %.0f states each, %.3g (steps x states^2), above "
+                      "the bound %.0e (about 20 s of CPU): fewer beads (at most about %ld here), a rigid sensor, or "
+                      "rk4 or arkode erk (no Jacobian)", gw_solver_type_name(type),
+                      gw_solver_method_used(type, sp->method), steps, over, dim, dense, SENSOR_DENSE_WORK_MAX, n_ok);
 }
 
 /* v rounded down to two significant digits (a suggested bound that passes). */
@@ -531,6 +569,10 @@ static int plan_make(const gw_chain_params *p0, const gw_chain_run_opts *o, coll
             worst = i;
     if (worst >= 0)
         return gw_err_set(err, GW_EINVAL, "%s", e[worst].msg);
+    /* the implicit methods' dense solves with a sensor body (after the
+     * memory's bound: a column that does not fit is named so first) */
+    if ((rc = sensor_dense_check(p, pl->type, &pl->sp, pl->t_expect, "the collision", err)) != GW_OK)
+        return rc;
     /* cvode and arkode follow a light bead that heavy beads hold, all the time
      * they hold it (chain_ring_check) */
     if ((rc = chain_ring_check(p, pl->type, &pl->sp, pl->t_expect, t_col, "the collision", err)) != GW_OK)

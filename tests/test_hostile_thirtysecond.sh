@@ -31,6 +31,12 @@
 #    the second "arriving" at -0.227 m/s), and cut the first collision there
 #    (cvode bdf: tau_N null, a warning; adams decided it). Now one impact,
 #    decided alike by every solver.
+#  5 A sensor body couples every bead in the implicit methods' Jacobian (full,
+#    dim = 2n + 3), which they solve with at every step: cvode bdf at n = 10,
+#    20, 40 took 0.11, 0.45 and 3.0 s, n = 100 40 s, 300 and 600 past 60 s,
+#    with nothing refused up to the memory bound's 3339 beads (hours). The
+#    plan bounds steps x dim^2 at 1e9 (about 20 s): exit 2 naming --n and the
+#    beads that pass; rk4 and arkode erk (no Jacobian) still run.
 # Checks that fail on the code before: see docs/tests.md.
 # shellcheck source=refusal_lib.sh
 . "$2/tests/refusal_lib.sh"
@@ -149,6 +155,25 @@ print(a['n_impacts'] == 1 and b['n_impacts'] == 1 and ta is not None and tb is n
       and a['impacts'][0]['v_in'] > 0)")
     [ "$v" = True ] && ok "$DH: one impact, the first collision decided alike under bdf and adams" ||
         ko "$DH: $(head -c 300 h1.json)"
+fi
+
+# --- 5 a sensor body's dense Jacobian: the implicit methods' work bounded ---
+# (60 s only guards against the run of the code before, which went past it:
+# n = 100 took 40 s, 300 and 600 more than 60, the memory bound admits 3339)
+REFUSE_TIMEOUT=60 refused "chain --n 300 on a sensor body (cvode bdf): refused before the run naming --n" \
+    "^granwave chain --n: a sensor body couples every bead in the Jacobian cvode bdf solves .*at most about [0-9]+ here" \
+    chain --n 300 --sensor-mass 1e-3 --sensor-stiffness 1e9 --out o
+if runs_json "chain --n 20 on a sensor body (cvode bdf)" s20.json chain --n 20 --sensor-mass 1e-3 --sensor-stiffness 1e9 &&
+    runs_json "chain --n 20 on a sensor body (arkode erk)" e20.json chain --n 20 --sensor-mass 1e-3 \
+        --sensor-stiffness 1e9 --solver arkode &&
+    runs_json "chain --n 300 on a sensor body (arkode erk, no Jacobian)" e300.json chain --n 300 --sensor-mass 1e-3 \
+        --sensor-stiffness 1e9 --solver arkode; then
+    v=$(/usr/bin/python3 -c "
+import json
+a, b, c = (json.load(open(f)) for f in ('s20.json', 'e20.json', 'e300.json'))
+print(abs(a['f_max'] / b['f_max'] - 1) < 1e-6 and a['converged'] and c['converged'])")
+    [ "$v" = True ] && ok "a sensor body: cvode bdf at n = 20 (F_max arkode erk's within 1e-6) and arkode erk at n = 300 still run" ||
+        ko "a sensor body below the bound or without a Jacobian: $(head -c 200 e300.json)"
 fi
 
 test_summary test_hostile_thirtysecond

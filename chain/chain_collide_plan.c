@@ -95,7 +95,6 @@ int chain_steps_check(const gw_solver_type *type, const gw_solver_params *sp, co
  * --sensor-stiffness 1e9, estimated at 5.5e6 steps, ran 2e8 (438 s on an
  * idle machine) into the run's own bound and exited 1. */
 #define SENSOR_STEPS_PER_RAD 20.0
-#define SENSOR_DENSE_WORK_MAX 1e9
 
 
 int chain_sensor_steps_check(const gw_chain_params *p, const gw_solver_type *type, const gw_solver_params *sp,
@@ -312,28 +311,25 @@ int gw_chain_memory_check(const gw_chain_params *p, const gw_solver_type *type, 
 }
 
 /* The implicit methods solve with the Jacobian at every step, and a sensor
- * body couples every bead in it (full, dim = 2n + 3): a step costs about
- * dim^2 (measured at the default 1e-3 kg on 1e9 N/m, cvode bdf: n = 10, 20,
- * 40 in 0.11, 0.45, 3.0 s, 7.6, 16 and 50 us a step, about 2e-8 s a unit of
- * the estimate below at n = 40 and 100; n = 100 ran 40 s, 300 and 600 past
- * 60 s, hours at the 3339 beads the memory bound admits, with nothing
- * refused). Bounded at 1e9 units, about 20 s of CPU, over the collision's
- * steps (chain_sensor_steps_check's). Not the drop's: its steps over t-max
- * are mostly in flight (--n 40 on that body: 2.96 s over 10 ms). */
+ * body couples every bead in it (full, dim = 2n + 3): a step costs up to
+ * about 2e-8 dim^2 s. Measured, cvode bdf, a 1e-3 kg body on 1e9 N/m: n =
+ * 10, 20, 40 in 0.11, 0.45, 3.0 s (about 1450 n steps), n = 100 in 40 s,
+ * 300 and 600 past 60 s; a 1e3 kg body on 1e3 N/m: n = 100 in 10 s, 150 in
+ * 37 s (about 560 n steps); hours at the 3339 beads the memory bound admits,
+ * with nothing refused. How many steps the body adds depends on whether the
+ * collision excites it (a 1e-7 kg body on 1e14 N/m at n = 4: 8.3e5 steps,
+ * 0.22 a radian, 1.6 s), so the bound takes the fewest a run can take, the
+ * collision over the largest step (about 8 n), times dim^2, at 1e8: a run
+ * refused so takes at least about 2 s and, measured, minutes (n = 150 and
+ * above at these bodies). */
+#define SENSOR_DENSE_WORK_MAX 1e8
+
 static int sensor_dense_check(const gw_chain_params *p, const gw_solver_type *type, const gw_solver_params *sp,
                               double t_len, const char *over, gw_err *err)
 {
-    if (!(p->sensor.mass > 0 && p->sensor.stiffness > 0) || !implicit_method(type, sp->method))
+    if (!(p->sensor.mass > 0 && p->sensor.stiffness > 0) || !implicit_method(type, sp->method) || !(sp->dt_max > 0))
         return GW_OK;
-    const double m1 = p->masses ? p->masses[0] : p->mass,
-                 kc = p->kwall > 0 && m1 > 0 && p->v_imp > 0 ? 1.5 * p->kwall * sqrt(gw_chain_dmax1(m1, p->kwall, p->v_imp))
-                                                                : 0.0;
-    const double omega = sqrt((p->sensor.stiffness + (isfinite(kc) ? kc : 0.0)) / p->sensor.mass);
-    double tol = fmax(sp->rtol, sp->atol);
-    if (!(tol > 0))
-        tol = 1e-12;
-    const double per_rad = fmax(2.0, SENSOR_STEPS_PER_RAD * pow(fmax(tol, 1e-12) / 1e-12, -0.2)),
-                 steps = per_rad * omega * t_len, dim = 2.0 * p->n + 3, dense = steps * dim * dim;
+    const double steps = t_len / sp->dt_max, dim = 2.0 * p->n + 3, dense = steps * dim * dim;
     if (dense <= SENSOR_DENSE_WORK_MAX)
         return GW_OK;
     /* the steps grow with the collision's length, about as n */
@@ -341,10 +337,11 @@ static int sensor_dense_check(const gw_chain_params *p, const gw_solver_type *ty
     while (n_ok > 1 && !(steps * n_ok / p->n * (2.0 * n_ok + 3) * (2.0 * n_ok + 3) <= SENSOR_DENSE_WORK_MAX))
         n_ok = (long)(n_ok * 0.95);
     return gw_err_set(err, GW_EINVAL, "n: a sensor body couples every bead in the Jacobian %s %s solves with at "
-                      "every step: about %.3g steps over %s of %.0f states each, %.3g (steps x states^2), above "
-                      "the bound %.0e (about 20 s of CPU): fewer beads (at most about %ld here), a rigid sensor, or "
-                      "rk4 or arkode erk (no Jacobian)", gw_solver_type_name(type),
-                      gw_solver_method_used(type, sp->method), steps, over, dim, dense, SENSOR_DENSE_WORK_MAX, n_ok);
+                      "every step: at least about %.3g steps over %s (its length over the largest step %g s) of "
+                      "%.0f states each, %.3g (steps x states^2), above the bound %.0e (minutes of CPU): fewer beads "
+                      "(at most about %ld here), a rigid sensor, or rk4 or arkode erk (no Jacobian)",
+                      gw_solver_type_name(type), gw_solver_method_used(type, sp->method), steps, over, sp->dt_max, dim,
+                      dense, SENSOR_DENSE_WORK_MAX, n_ok);
 }
 
 /* v rounded down to two significant digits (a suggested bound that passes). */

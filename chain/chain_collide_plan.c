@@ -96,6 +96,7 @@ int chain_steps_check(const gw_solver_type *type, const gw_solver_params *sp, co
  * idle machine) into the run's own bound and exited 1. */
 #define SENSOR_STEPS_PER_RAD 20.0
 
+
 int chain_sensor_steps_check(const gw_chain_params *p, const gw_solver_type *type, const gw_solver_params *sp,
                              double t_len, const char *over, gw_err *err)
 {
@@ -121,6 +122,117 @@ int chain_sensor_steps_check(const gw_chain_params *p, const gw_solver_type *typ
                           "this tolerance, measured 7-37 at 1e-12); at most 1e+08: a softer or heavier sensor body, "
                           "looser tolerances or a shorter run", omega, steps, over, t_len, per_rad);
     return GW_OK;
+}
+
+double chain_rk4_default_dt(const gw_chain_params *p, double steps_per_tc)
+{
+    double dt = gw_chain_step_scale(p) / (steps_per_tc > 0 ? steps_per_tc : 400.0);
+    /* RK4 is stable on a decay of rate r while h r < 2.79; h r <= 1 keeps a
+     * margin. The beads' drags are in the step scale (0.5 m/c, over the steps
+     * a contact); the sensor body's only bounds the step here: --sensor-mass
+     * 1e-3 --sensor-stiffness 1e9 --sensor-damping 1e7 blew up at the default
+     * T_c/400 (h r = 25) and runs at h = M/c_s */
+    double r[CHAIN_DRAG_N];
+    chain_drag_rates(p, r);
+    if (r[CHAIN_DRAG_SENSOR] > 0)
+        dt = fmin(dt, 1.0 / r[CHAIN_DRAG_SENSOR]);
+    return dt;
+}
+
+/* Steps per unit of r t_len an explicit method takes on a drag of rate r
+ * (its stability bound, whatever the tolerance), measured at n = 3 over the
+ * collision (steel, --sensor-mass 1e-3 --sensor-stiffness 1e9, c_s 1e5 to
+ * 1e8 N s/m, and the guide's friction on 1e-4 m beads): cvode adams 1.24 to
+ * 1.97 (1.4 at 1e7 and above), arkode erk 0.27 to 0.63 (0.27 at 1e7 and
+ * above). cvode bdf, arkode dirk and imex (the forces implicit) are not held
+ * by it: bdf took 1480 to 1818 steps at c_s 1e7 to 1e9 and M 1e-7 to 1 kg.
+ * Before, no drag was counted: --sensor-damping 1e9 ran for minutes under
+ * adams (1.3e8 steps estimated), --radius 1e-5 --guide-friction 1 likewise
+ * under adams and erk. */
+#define DRAG_STEPS_ADAMS 1.5
+#define DRAG_STEPS_ERK 0.3
+/* The guide's Coulomb friction, regularised by tanh(v/v_reg), holds them to
+ * more at its slope's rate F/(v_reg m): --radius 1e-4 --guide-friction 1
+ * (1e11 1/s) took about 3.7 per unit of adams (31.7 s at 1.5 us a step) and
+ * 0.35 of erk, over the whole run to t-max: a guide that stops a bead
+ * within the collision ((F + c_g v) / m t_e > v_imp) keeps bead 1 on the
+ * wall until t-max (exit 1 after 31.7 s there; --radius 1e-5 --guide-viscous
+ * 100, 3e12 1/s: 0.83 a unit of adams, 20.6 s, and 0.33 of erk). */
+#define DRAG_STEPS_ADAMS_COULOMB 4.0
+#define DRAG_STEPS_ERK_COULOMB 0.4
+
+/* The steps a drag holds an explicit method to over t_len (0: none, or a
+ * method it does not hold), *k the drag (chain_drag_rates' index) and *rate
+ * its rate. */
+static double drag_steps(const gw_chain_params *p, const gw_solver_type *type, const gw_solver_params *sp,
+                         const gw_solver_params *given, double steps_per_tc, double t_len, double t_run, int *k,
+                         double *rate, double *t_used)
+{
+    *t_used = t_len;
+    double r[CHAIN_DRAG_N];
+    chain_drag_rates(p, r);
+    /* the guide's two frictions slow the same bead */
+    const double rg = r[CHAIN_DRAG_GUIDE_VISCOUS] + r[CHAIN_DRAG_GUIDE_COULOMB];
+    *k = r[CHAIN_DRAG_GUIDE_COULOMB] > r[CHAIN_DRAG_GUIDE_VISCOUS] ? CHAIN_DRAG_GUIDE_COULOMB : CHAIN_DRAG_GUIDE_VISCOUS;
+    *rate = rg;
+    if (r[CHAIN_DRAG_CONTACT] > *rate)
+        *rate = r[CHAIN_DRAG_CONTACT], *k = CHAIN_DRAG_CONTACT;
+    if (r[CHAIN_DRAG_SENSOR] > *rate)
+        *rate = r[CHAIN_DRAG_SENSOR], *k = CHAIN_DRAG_SENSOR;
+    if (!(*rate > 0))
+        return 0;
+    const char *used = gw_solver_method_used(type, sp ? sp->method : GW_METHOD_DEFAULT);
+    if (type == gw_solver_rk4) {
+        if (given && given->dt > 0)
+            return 0; /* a step given: chain_steps_check */
+        /* the step this drag sets (chain_rk4_default_dt, gw_chain_step_scale),
+         * counted only where it is the run's */
+        const double spt = steps_per_tc > 0 ? steps_per_tc : 400.0,
+                     h = *k == CHAIN_DRAG_SENSOR ? 1.0 / *rate : 0.5 / fmax(rg, r[CHAIN_DRAG_CONTACT]) / spt,
+                     dt = chain_rk4_default_dt(p, steps_per_tc), step = sp && sp->dt_max > 0 ? fmin(dt, sp->dt_max) : dt;
+        return h <= step * (1 + 1e-9) ? t_len / step : 0;
+    }
+    const int adams = strcmp(used, "adams") == 0, erk = strcmp(used, "erk") == 0;
+    if (!adams && !erk)
+        return 0; /* bdf, dirk, imex */
+    if (*k == CHAIN_DRAG_GUIDE_COULOMB || *k == CHAIN_DRAG_GUIDE_VISCOUS) {
+        /* the guide slows the lightest bead by (F_c + c_g v) / m: stopped
+         * within t_len, bead 1 stays on the wall to t_run */
+        double m_min = p->masses ? p->masses[0] : p->mass;
+        for (int i = 0; p->masses && i < p->n; i++)
+            m_min = fmin(m_min, p->masses[i]);
+        if ((p->guide.coulomb + p->guide.viscous * p->v_imp) / m_min * t_len > p->v_imp)
+            *t_used = fmax(t_len, t_run);
+    }
+    if (*k == CHAIN_DRAG_GUIDE_COULOMB)
+        return (adams ? DRAG_STEPS_ADAMS_COULOMB : DRAG_STEPS_ERK_COULOMB) * *rate * *t_used;
+    return (adams ? DRAG_STEPS_ADAMS : DRAG_STEPS_ERK) * *rate * *t_used;
+}
+
+int chain_drag_steps_check(const gw_chain_params *p, const gw_solver_type *type, const gw_solver_params *sp,
+                           const gw_solver_params *given, double steps_per_tc, double t_len, double t_run,
+                           const char *over, gw_err *err)
+{
+    int k = 0;
+    double rate = 0, t_used = t_len;
+    const double steps = drag_steps(p, type, sp, given, steps_per_tc, t_len, t_run, &k, &rate, &t_used);
+    if (steps <= 1e8)
+        return GW_OK;
+    const char *what = k == CHAIN_DRAG_SENSOR ? "the sensor body's damping"
+                       : k == CHAIN_DRAG_CONTACT ? "the contact damping"
+                                                 : "the guide's friction";
+    return gw_err_set(err, GW_EINVAL, "%s: %s decays at %.3g 1/s (c/m), which %s %s follows with about %.3g steps "
+                      "over %s (about %.3g s), above 1e+08: use cvode with its default method bdf (implicit: "
+                      "its step is not held by the damping), or %s", chain_drag_flag[k], what, rate,
+                      gw_solver_type_name(type),
+                      type == gw_solver_rk4 ? "(explicit)" : gw_solver_method_used(type, sp->method), steps,
+                      t_used > t_len ? "the run to t-max (the guide stops a bead within the collision and bead 1 "
+                                       "stays on the wall)"
+                                     : over,
+                      t_used,
+                      k == CHAIN_DRAG_SENSOR ? "a smaller damping or a heavier sensor body"
+                      : k == CHAIN_DRAG_CONTACT ? "weaker contact damping"
+                                                : "a weaker guide friction or heavier beads");
 }
 
 /* Bytes a run of column p allocates, by what gw_chain_create, gw_chain_collide
@@ -196,6 +308,40 @@ int gw_chain_memory_check(const gw_chain_params *p, const gw_solver_type *type, 
                             "arkode erk need none)"
                           : "",
                       limit / 1e9, lo);
+}
+
+/* The implicit methods solve with the Jacobian at every step, and a sensor
+ * body couples every bead in it (full, dim = 2n + 3): a step costs up to
+ * about 2e-8 dim^2 s. Measured, cvode bdf, a 1e-3 kg body on 1e9 N/m: n =
+ * 10, 20, 40 in 0.11, 0.45, 3.0 s (about 1450 n steps), n = 100 in 40 s,
+ * 300 and 600 past 60 s; a 1e3 kg body on 1e3 N/m: n = 100 in 10 s, 150 in
+ * 37 s (about 560 n steps); hours at the 3339 beads the memory bound admits,
+ * with nothing refused. How many steps the body adds depends on whether the
+ * collision excites it (a 1e-7 kg body on 1e14 N/m at n = 4: 8.3e5 steps,
+ * 0.22 a radian, 1.6 s), so the bound takes the fewest a run can take, the
+ * collision over the largest step (about 8 n), times dim^2, at 1e8: a run
+ * refused so takes at least about 2 s and, measured, minutes (n = 150 and
+ * above at these bodies). */
+#define SENSOR_DENSE_WORK_MAX 1e8
+
+static int sensor_dense_check(const gw_chain_params *p, const gw_solver_type *type, const gw_solver_params *sp,
+                              double t_len, const char *over, gw_err *err)
+{
+    if (!(p->sensor.mass > 0 && p->sensor.stiffness > 0) || !implicit_method(type, sp->method) || !(sp->dt_max > 0))
+        return GW_OK;
+    const double steps = t_len / sp->dt_max, dim = 2.0 * p->n + 3, dense = steps * dim * dim;
+    if (dense <= SENSOR_DENSE_WORK_MAX)
+        return GW_OK;
+    /* the steps grow with the collision's length, about as n */
+    long n_ok = p->n;
+    while (n_ok > 1 && !(steps * n_ok / p->n * (2.0 * n_ok + 3) * (2.0 * n_ok + 3) <= SENSOR_DENSE_WORK_MAX))
+        n_ok = (long)(n_ok * 0.95);
+    return gw_err_set(err, GW_EINVAL, "n: a sensor body couples every bead in the Jacobian %s %s solves with at "
+                      "every step: at least about %.3g steps over %s (its length over the largest step %g s) of "
+                      "%.0f states each, %.3g (steps x states^2), above the bound %.0e (minutes of CPU): fewer beads "
+                      "(at most about %ld here), a rigid sensor, or rk4 or arkode erk (no Jacobian)",
+                      gw_solver_type_name(type), gw_solver_method_used(type, sp->method), steps, over, sp->dt_max, dim,
+                      dense, SENSOR_DENSE_WORK_MAX, n_ok);
 }
 
 /* v rounded down to two significant digits (a suggested bound that passes). */
@@ -389,7 +535,7 @@ static int plan_make(const gw_chain_params *p0, const gw_chain_run_opts *o, coll
     /* the step resolves the stiffest contact (a small bead between large ones was
      * taken at bead 1's scale and blew up) and a sensor body's oscillation */
     if (pl->type == gw_solver_rk4 && !(pl->sp.dt > 0))
-        pl->sp.dt = gw_chain_step_scale(p) / (o->steps_per_tc > 0 ? o->steps_per_tc : 400.0);
+        pl->sp.dt = chain_rk4_default_dt(p, o->steps_per_tc);
     /* and at least t_expect / step steps of O(n) each: bounded before the run
      * (the RK4 step, or the largest step of cvode/arkode) */
     /* Steps and samples grow about as n, memory as n (n^2 with a full Jacobian):
@@ -402,6 +548,10 @@ static int plan_make(const gw_chain_params *p0, const gw_chain_run_opts *o, coll
     /* cvode and arkode follow a sensor body's oscillation too (8 s for 0.1 ms at
      * 1e-7 kg on 1e14 N/m, 5.8e7 steps) */
     if ((rc = chain_sensor_steps_check(p, pl->type, &pl->sp, pl->t_expect, "the collision", err)) != GW_OK)
+        return rc;
+    /* and the explicit methods a drag's decay (chain_drag_steps_check) */
+    if ((rc = chain_drag_steps_check(p, pl->type, &pl->sp, &o->sp, o->steps_per_tc, pl->t_expect, pl->t_max,
+                                     "the collision", err)) != GW_OK)
         return rc;
     if (gw_chain_memory_check(p, pl->type, pl->sp.method, &e[1]) != GW_OK)
         n_ok[1] = memory_n_ok(p, pl->type, pl->sp.method);
@@ -416,6 +566,10 @@ static int plan_make(const gw_chain_params *p0, const gw_chain_run_opts *o, coll
             worst = i;
     if (worst >= 0)
         return gw_err_set(err, GW_EINVAL, "%s", e[worst].msg);
+    /* the implicit methods' dense solves with a sensor body (after the
+     * memory's bound: a column that does not fit is named so first) */
+    if ((rc = sensor_dense_check(p, pl->type, &pl->sp, pl->t_expect, "the collision", err)) != GW_OK)
+        return rc;
     /* cvode and arkode follow a light bead that heavy beads hold, all the time
      * they hold it (chain_ring_check) */
     if ((rc = chain_ring_check(p, pl->type, &pl->sp, pl->t_expect, t_col, "the collision", err)) != GW_OK)
@@ -448,7 +602,9 @@ static int plan_make(const gw_chain_params *p0, const gw_chain_run_opts *o, coll
                               /* one that passes the held column's bound too (chain_held_check) */
                               fmin(floor_2digits(t_lim), held_t_lim(p0, t_col, pl->tau1,
                                                                     pl->dt_out)));
-        if ((rc = chain_sensor_steps_check(p, pl->type, &pl->sp, pl->t_max, "t-max", err)) != GW_OK)
+        if ((rc = chain_sensor_steps_check(p, pl->type, &pl->sp, pl->t_max, "t-max", err)) != GW_OK ||
+            (rc = chain_drag_steps_check(p, pl->type, &pl->sp, &o->sp, o->steps_per_tc, pl->t_max, pl->t_max,
+                                         "t-max", err)) != GW_OK)
             return rc;
         if (o->sample == gw_chain_trace_sample) {
             gw_err te = {{0}};
@@ -504,6 +660,9 @@ int chain_run_steps(const gw_chain_params *p, const gw_chain_run_opts *o, double
     double s = pl.t_expect / step;
     if (pl.type != gw_solver_rk4 && p->sensor.mass > 0 && p->sensor.stiffness > 0)
         s = fmax(s, 2.0 * sqrt(p->sensor.stiffness / p->sensor.mass) * pl.t_expect);
+    int k = 0;
+    double rate = 0, t_used = 0;
+    s = fmax(s, drag_steps(p, pl.type, &pl.sp, &o->sp, o->steps_per_tc, pl.t_expect, pl.t_max, &k, &rate, &t_used));
     *steps = s;
     return GW_OK;
 }

@@ -240,11 +240,18 @@ double chain_force_rate(const gw_chain *c, double t, const double *y)
     double h = 1e-6 * c->scale[0] / c->scale[1];
     for (long i = 0; i < dim; i++)
         yp[i] = y[i] + h * yd[i];
-    double fp = gw_chain_wall_force(c, yp);
+    double fp = gw_chain_wall_force(c, yp), cp = gw_chain_wall_contact_force(c, yp);
     for (long i = 0; i < dim; i++)
         yp[i] = y[i] - h * yd[i];
-    double fm = gw_chain_wall_force(c, yp);
-    if (fp == 0 && fm == 0)
+    double fm = gw_chain_wall_force(c, yp), cm = gw_chain_wall_contact_force(c, yp);
+    /* bead 1 off the wall: its maxima are not sought (only falling zeros with
+     * the contact closed are), and a damped sensor body's reading k_s x_s +
+     * c_s x_s' relaxes there as the small difference of two large terms, its
+     * rate noise over the body's fast mode c_s/M: the root chattered (drop
+     * --sensor-mass 1e-3 --sensor-stiffness 1e9 --sensor-damping 1e8: 1.65e6
+     * events in 0.1 ms, a run of hours). The gap's rate, as for a rigid
+     * sensor. */
+    if ((fp == 0 && fm == 0) || (cp == 0 && cm == 0))
         return gw_chain_wall_gap_rate(c, y);
     return (fp - fm) / (2.0 * h);
 }
@@ -495,23 +502,39 @@ double gw_chain_step_scale(const gw_chain_params *p)
     /* the sensor body's own oscillation, 1/omega = sqrt(M/k_s) */
     if (p->sensor.mass > 0 && p->sensor.stiffness > 0)
         s = fmin(s, sqrt(p->sensor.mass / p->sensor.stiffness));
-    /* relaxation times m/c of the linear drags: the guide's viscous friction, its
-     * Coulomb friction regularised over v_reg (c = F / v_reg), and the contact
-     * damping at the binary overlap (KK: c = gamma sqrt(d), HC: c = 1.5 alpha k d^1.5) */
+    /* relaxation times m/c of the beads' linear drags (chain_drag_rates; the
+     * sensor body's drag bounds RK4's step on its own, chain_rk4_default_dt) */
+    double r[CHAIN_DRAG_N];
+    chain_drag_rates(p, r);
+    const double rb = fmax(r[CHAIN_DRAG_GUIDE_VISCOUS] + r[CHAIN_DRAG_GUIDE_COULOMB], r[CHAIN_DRAG_CONTACT]);
+    if (rb > 0)
+        s = fmin(s, 0.5 / rb);
+    return s;
+}
+
+const char *const chain_drag_flag[CHAIN_DRAG_N] = {"sensor-damping", "guide-viscous", "guide-friction", "damping"};
+
+void chain_drag_rates(const gw_chain_params *p, double r[CHAIN_DRAG_N])
+{
+    const double v = p->v_imp, m0 = p->masses ? p->masses[0] : p->mass;
     double m_min = m0;
     for (int i = 0; p->masses && i < p->n; i++)
         m_min = fmin(m_min, p->masses[i]);
-    double c = p->guide.viscous;
+    for (int i = 0; i < CHAIN_DRAG_N; i++)
+        r[i] = 0;
+    if (p->sensor.mass > 0 && p->sensor.damping > 0)
+        r[CHAIN_DRAG_SENSOR] = p->sensor.damping / p->sensor.mass;
+    /* the guide's viscous friction, its Coulomb friction regularised over v_reg
+     * (c = F / v_reg), and the contact damping at the binary overlap (KK: c =
+     * gamma sqrt(d), HC: c = 1.5 alpha k d^1.5), on the lightest bead */
+    r[CHAIN_DRAG_GUIDE_VISCOUS] = p->guide.viscous / m_min;
     if (p->guide.coulomb > 0)
-        c += p->guide.coulomb / (p->guide.v_reg > 0 ? p->guide.v_reg : 1e-3 * v);
+        r[CHAIN_DRAG_GUIDE_COULOMB] = p->guide.coulomb / (p->guide.v_reg > 0 ? p->guide.v_reg : 1e-3 * v) / m_min;
     const double k = p->kc && p->n > 1 ? p->kc[0] : p->k, d = gw_chain_dmax1(0.5 * m_min, k, v);
     if (p->damping == GW_DAMP_KUWABARA_KONO)
-        c = fmax(c, p->gamma * sqrt(d));
+        r[CHAIN_DRAG_CONTACT] = p->gamma * sqrt(d) / m_min;
     else if (p->damping == GW_DAMP_HUNT_CROSSLEY)
-        c = fmax(c, 1.5 * p->alpha * k * d * sqrt(d));
-    if (c > 0)
-        s = fmin(s, 0.5 * m_min / c);
-    return s;
+        r[CHAIN_DRAG_CONTACT] = 1.5 * p->alpha * k * d * sqrt(d) / m_min;
 }
 
 int gw_chain_create(const gw_chain_params *p, gw_chain **out, gw_err *err)

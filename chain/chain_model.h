@@ -73,6 +73,33 @@ int chain_general_roots(double t, const double *y, double *g, void *P);
 double chain_force_rate(const gw_chain *c, double t, const double *y);
 void chain_general_energy(const gw_chain *c, const double *y, gw_chain_energy *e);
 
+/* The decay rates c/m, 1/s, of the column's linear drags, each on the body it
+ * slows (r[CHAIN_DRAG_SENSOR]: the sensor body's damping c_s/M; the guide's
+ * viscous and regularised Coulomb friction and the contact damping at the
+ * binary overlap: on the lightest bead); 0 where there is none.
+ * chain_drag_flag names the option that sets each. */
+enum { CHAIN_DRAG_SENSOR, CHAIN_DRAG_GUIDE_VISCOUS, CHAIN_DRAG_GUIDE_COULOMB, CHAIN_DRAG_CONTACT, CHAIN_DRAG_N };
+extern const char *const chain_drag_flag[CHAIN_DRAG_N];
+void chain_drag_rates(const gw_chain_params *p, double r[CHAIN_DRAG_N]);
+
+/* RK4's default step, s: gw_chain_step_scale(p) / steps_per_tc (400 when
+ * <= 0), and at most c_s/M's inverse, within RK4's stability on the sensor
+ * body's drag (chain_collide_plan.c). */
+double chain_rk4_default_dt(const gw_chain_params *p, double steps_per_tc);
+
+/* A drag decays at rate r: the explicit methods (cvode adams, arkode erk)
+ * hold their step within their stability on it, about r t_len steps (the
+ * stiff ones, cvode bdf and arkode dirk and imex, step over it), and RK4's
+ * default step is set by it where it is the shortest. Counted over t_len,
+ * or t_run (the run's t-max) for a guide friction that stops a bead within
+ * t_len (bead 1 then stays on the wall to t-max). Bounded at 1e8 before the
+ * run; GW_EINVAL naming the drag's option (chain_drag_flag) and the solver
+ * to use otherwise. given holds the steps the caller asked for (rk4: a dt
+ * given is chain_steps_check's). */
+int chain_drag_steps_check(const gw_chain_params *p, const gw_solver_type *type, const gw_solver_params *sp,
+                           const gw_solver_params *given, double steps_per_tc, double t_len, double t_run,
+                           const char *over, gw_err *err);
+
 /* cvode and arkode follow a sensor body's oscillation (omega = sqrt((k_s + the
  * stiffness of bead 1's contact)/M)) at 7 to 37 steps a radian at 1e-12
  * (measured; fewer at looser tolerances of sp): 20 omega t_len steps there,
@@ -202,7 +229,8 @@ int chain_steps_check(const gw_solver_type *type, const gw_solver_params *sp, co
 /* The steps a run of column p is expected to take over its collision, from the
  * same plan as gw_chain_run_check (GW_EINVAL and its message when that refuses):
  * the collision's expected length over the RK4 step, or over cvode's and
- * arkode's largest step and at least 2 a radian of a sensor body's oscillation.
+ * arkode's largest step and at least 2 a radian of a sensor body's oscillation
+ * and the steps a drag holds an explicit method to (chain_drag_steps_check).
  * Studies add them up over their columns (chain_sweep.c). */
 int chain_run_steps(const gw_chain_params *p, const gw_chain_run_opts *o, double *steps, gw_err *err);
 

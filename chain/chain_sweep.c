@@ -62,7 +62,16 @@ static int study_steps_check(const gw_chain_params *tmpl, const gw_chain_run_opt
     long w2;
     gw_err e2 = {{0}};
     int rk4 = o->solver == gw_solver_rk4;
-    if (tmpl->sensor.mass > 0 && tmpl->sensor.stiffness > 0 && !(rk4 && o->sp.dt > 0) &&
+    /* the sensor body's damping alone (the explicit methods' steps follow its
+     * decay, chain_drag_steps_check) before its oscillation */
+    gw_chain_params undamped = *tmpl;
+    undamped.sensor.damping = 0;
+    if (tmpl->sensor.damping > 0 && !(rk4 && o->sp.dt > 0) &&
+        study_steps(&undamped, o, v, nv, n_lo, n_hi, &t2, &w2, &m2, &e2) == GW_OK && t2 <= CHAIN_STUDY_STEPS_MAX) {
+        name = "sensor-damping";
+        advice = "cvode with its default method bdf (implicit: its step is not held by the damping), a smaller "
+                 "damping, or fewer columns";
+    } else if (tmpl->sensor.mass > 0 && tmpl->sensor.stiffness > 0 && !(rk4 && o->sp.dt > 0) &&
         study_steps(&bare, o, v, nv, n_lo, n_hi, &t2, &w2, &m2, &e2) == GW_OK && t2 <= CHAIN_STUDY_STEPS_MAX) {
         name = "sensor-stiffness";
         advice = "a softer or heavier sensor body (its oscillation sets the step), cvode, or fewer columns";

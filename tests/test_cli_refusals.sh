@@ -121,6 +121,10 @@ refused "layer-make --out with a 240-character name" 'layer-make --out.*too long
 "$GW" dispersion --n 16 --t-samples 64 --wisdom "$tmp/${long:0:200}" >/dev/null 2>&1 &&
     head -c 7 "$tmp/${long:0:200}" | grep -q '(fftw-3' && ok "--wisdom with a 200-character name is written" ||
     ko "--wisdom with a 200-character name"
+# a missing --out is named as every other flag is, after the command's name
+# (the thirty-second pass: "granwave layer-make: --out: ...")
+refused "layer-make without --out" '^granwave layer-make --out: the sample file to write is required$' \
+    layer-make --n 10 --width-rm 6 --json
 # an empty file (touch, mktemp) holds nothing to lose: taken as no wisdom and
 # written at the end, as an absent one (it was refused as "not FFTW wisdom")
 : >"$tmp/empty.wis"

@@ -145,7 +145,7 @@ int gw_cmd_layer_make(int argc, char **argv)
     /* the library's setup from the same command line, checked and resolved by
      * the library (gw_layer_make_plan): what Python's layer_make does */
     if (!c.out)
-        return fail("layer-make", "--out: the sample file to write is required");
+        return fail("layer-make", "layer-make --out: the sample file to write is required");
     gw_layer_make_setup st;
     if (gw_layer_make_setup_init(&st) != GW_OK) {
         gw_layer_make_setup_clear(&st);

@@ -96,7 +96,6 @@ int chain_steps_check(const gw_solver_type *type, const gw_solver_params *sp, co
  * idle machine) into the run's own bound and exited 1. */
 #define SENSOR_STEPS_PER_RAD 20.0
 
-
 int chain_sensor_steps_check(const gw_chain_params *p, const gw_solver_type *type, const gw_solver_params *sp,
                              double t_len, const char *over, gw_err *err)
 {

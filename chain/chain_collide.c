@@ -450,13 +450,13 @@ static int held_by_gravity(run_state *st, const double *y)
  * "use cvode" was given to cvode runs too (issue 18). rk4's fixed step and the
  * explicit methods' stability-bound steps are what cvode bdf lengthens; bdf
  * (and arkode's implicit methods) take their step from the tolerances. */
-static const char *cap_advice(const run_state *st)
+const char *chain_cap_advice(const gw_solver_type *type, int method)
 {
-    const gw_solver_type *t = st->type ? st->type : gw_solver_cvode;
-    const char *used = gw_solver_method_used(t, st->o->sp.method);
+    const gw_solver_type *t = type ? type : gw_solver_cvode;
+    const char *used = gw_solver_method_used(t, method);
     if (t == gw_solver_rk4)
         return "use cvode (bdf: it lengthens its step where nothing moves fast)";
-    if (strcmp(used, "adams") == 0 || strcmp(used, "erk") == 0)
+    if (used && (strcmp(used, "adams") == 0 || strcmp(used, "erk") == 0))
         return "use cvode with its default method bdf (implicit: a stiff sensor body, drag or contact does not "
                "hold its step)";
     return "loosen rtol and atol (this run already steps implicitly): something keeps ringing, a sensor body or "
@@ -495,7 +495,8 @@ static int collide_after(void *ctx, double t, const double *y, gw_err *err)
         if (ss.steps > CHAIN_RUN_STEPS_MAX)
             return gw_err_set(err, GW_ELIMIT, "chain: %ld steps taken by t = %.9g s and the collision has not "
                               "ended (expected by about %.3g s); at most %.0e a run: lower t-max, or %s",
-                              ss.steps, t, st->t_expect, CHAIN_RUN_STEPS_MAX, cap_advice(st));
+                              ss.steps, t, st->t_expect, CHAIN_RUN_STEPS_MAX,
+                              chain_cap_advice(st->type, st->o->sp.method));
     }
     if (st->o->energy_tol > 0 && r->energy_error > st->o->energy_tol)
         return gw_err_set(err, GW_EENERGY, "chain: relative energy error %.3g exceeds the limit %.3g at t = %.9g s",

@@ -100,6 +100,12 @@ int chain_drag_steps_check(const gw_chain_params *p, const gw_solver_type *type,
                            const gw_solver_params *given, double steps_per_tc, double t_len, double t_run,
                            const char *over, gw_err *err);
 
+/* What the run cap's message (a run past 2e8 steps, chain_collide.c) advises
+ * for a run of type with method (GW_METHOD_DEFAULT resolved): rk4 "use
+ * cvode", cvode adams and arkode erk its bdf, the implicit methods looser
+ * tolerances. A static text. */
+const char *chain_cap_advice(const gw_solver_type *type, int method);
+
 /* cvode and arkode follow a sensor body's oscillation (omega = sqrt((k_s + the
  * stiffness of bead 1's contact)/M)) at 7 to 37 steps a radian at 1e-12
  * (measured; fewer at looser tolerances of sp): 20 omega t_len steps there,

@@ -172,6 +172,17 @@ int layer_sample_h5_write(const gw_layer_sample *s, const char *path, const char
     return rc;
 }
 
+/* An attribute's handles closed: a, its dataspace sp and type t (-1: none) */
+static void attr_close(hid_t a, hid_t sp, hid_t t)
+{
+    if (t >= 0)
+        H5Tclose(t);
+    if (sp >= 0)
+        H5Sclose(sp);
+    if (a >= 0)
+        H5Aclose(a);
+}
+
 /* A scalar root attribute of class want (H5T_FLOAT also takes integers; a
  * string goes into char[64]) read as memtype: 0 absent, 1 read, -1 malformed. */
 static int h5_attr_read(hid_t f, const char *name, H5T_class_t want, hid_t memtype, void *out)
@@ -206,12 +217,7 @@ static int h5_attr_read(hid_t f, const char *name, H5T_class_t want, hid_t memty
     } else if (ok) {
         ok = H5Aread(a, memtype, out) >= 0;
     }
-    if (t >= 0)
-        H5Tclose(t);
-    if (sp >= 0)
-        H5Sclose(sp);
-    if (a >= 0)
-        H5Aclose(a);
+    attr_close(a, sp, t);
     return ok ? 1 : -1;
 }
 
@@ -344,12 +350,7 @@ static int h5_header_read(hid_t f, char **out, const char *path, gw_err *err)
         H5free_memory(vs);
     if (mt >= 0)
         H5Tclose(mt);
-    if (t >= 0)
-        H5Tclose(t);
-    if (sp >= 0)
-        H5Sclose(sp);
-    if (a >= 0)
-        H5Aclose(a);
+    attr_close(a, sp, t);
     if (!ok) {
         free(buf);
         return nomem ? gw_err_set(err, GW_ENOMEM, "sample '%s': out of memory for its header attribute", path)

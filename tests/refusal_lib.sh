@@ -24,6 +24,16 @@
 # matching PATTERN, no sanitizer report, nothing on stdout. A failed check is
 # counted (ko) and returns 1; a pass counts nothing and returns 0, for the
 # caller to check what CMD left behind and count the refusal.
+# hostile_setup "$@": test_setup, SRC made absolute, the scratch directory
+# entered and the sanitizer build's leak suppressions exported (as setup.sh
+# test runs that build): the opening of the hostile passes' tests
+hostile_setup() {
+    test_setup "$@"
+    SRC=$(cd "$SRC" && pwd)
+    cd "$tmp" || exit 1
+    export LSAN_OPTIONS="suppressions=$SRC/tests/lsan.supp:print_suppressions=0"
+}
+
 exits_refused() {
     local what=$1 pat=$2 secs=$3; shift 3
     timeout -s KILL "$secs" "$@" >"$tmp/stdout" 2>"$tmp/stderr" </dev/null

@@ -26,11 +26,8 @@
 # Checks that fail on the code before: see docs/tests.md.
 # shellcheck source=refusal_lib.sh
 . "$2/tests/refusal_lib.sh"
-test_setup "$@"
-SRC=$(cd "$SRC" && pwd)
-cd "$tmp" || exit 1
+hostile_setup "$@"
 export LC_ALL=C
-export LSAN_OPTIONS="suppressions=$SRC/tests/lsan.supp:print_suppressions=0"
 
 # --- 1 the drop's first collision planned before the drop ---
 # (the time limit only guards against a hang: before, the refusal came after

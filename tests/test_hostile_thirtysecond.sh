@@ -41,11 +41,8 @@
 # Checks that fail on the code before: see docs/tests.md.
 # shellcheck source=refusal_lib.sh
 . "$2/tests/refusal_lib.sh"
-test_setup "$@"
-SRC=$(cd "$SRC" && pwd)
-cd "$tmp" || exit 1
+hostile_setup "$@"
 export LC_ALL=C
-export LSAN_OPTIONS="suppressions=$SRC/tests/lsan.supp:print_suppressions=0"
 SB="--n 3 --sensor-mass 1e-3 --sensor-stiffness 1e9"
 
 # --- 1 a drag's decay counted for the explicit methods ---

@@ -35,10 +35,7 @@
 # Checks that fail on the code before: see docs/tests.md.
 # shellcheck source=refusal_lib.sh
 . "$2/tests/refusal_lib.sh"
-test_setup "$@"
-SRC=$(cd "$SRC" && pwd)
-cd "$tmp" || exit 1
-export LSAN_OPTIONS="suppressions=$SRC/tests/lsan.supp:print_suppressions=0"
+hostile_setup "$@"
 PY=/usr/bin/python3
 
 # --- 1 one option under two spellings ---

@@ -37,11 +37,7 @@
 # Checks that fail on the code before: see docs/tests.md.
 # shellcheck source=refusal_lib.sh
 . "$2/tests/refusal_lib.sh"
-test_setup "$@"
-SRC=$(cd "$SRC" && pwd)
-cd "$tmp" || exit 1
-# as setup.sh test runs the sanitizer build (part 3 is about this file)
-export LSAN_OPTIONS="suppressions=$SRC/tests/lsan.supp:print_suppressions=0"
+hostile_setup "$@"
 PY=/usr/bin/python3
 
 # --- 1 journal rows a sweep never writes ---

@@ -96,11 +96,14 @@ int chain_steps_check(const gw_solver_type *type, const gw_solver_params *sp, co
  * idle machine) into the run's own bound and exited 1. */
 #define SENSOR_STEPS_PER_RAD 20.0
 
-int chain_sensor_steps_check(const gw_chain_params *p, const gw_solver_type *type, const gw_solver_params *sp,
-                             double t_len, const char *over, gw_err *err)
+/* The steps cvode or arkode take over t_len on the sensor body's oscillation
+ * (its rate in *omega, the steps a radian in *per_rad); 0 without a body. */
+static double sensor_steps(const gw_chain_params *p, const gw_solver_params *sp, double t_len, double *omega,
+                           double *per_rad)
 {
-    if (!(p->sensor.mass > 0 && p->sensor.stiffness > 0) || type == gw_solver_rk4)
-        return GW_OK; /* rk4: its step is bounded by chain_steps_check */
+    *omega = *per_rad = 0;
+    if (!(p->sensor.mass > 0 && p->sensor.stiffness > 0))
+        return 0;
     /* The body rings between its spring and bead 1's contact, which adds the
      * contact's stiffness dF/dd = 1.5 K d^(1/2) at bead 1's overlap on a
      * rigid wall (an upper bound: the body gives way): a heavy bead (--radius
@@ -109,12 +112,21 @@ int chain_sensor_steps_check(const gw_chain_params *p, const gw_solver_type *typ
     const double m1 = p->masses ? p->masses[0] : p->mass,
                  kc = p->kwall > 0 && m1 > 0 && p->v_imp > 0 ? 1.5 * p->kwall * sqrt(gw_chain_dmax1(m1, p->kwall, p->v_imp))
                                                                 : 0.0;
-    const double omega = sqrt((p->sensor.stiffness + (isfinite(kc) ? kc : 0.0)) / p->sensor.mass);
+    *omega = sqrt((p->sensor.stiffness + (isfinite(kc) ? kc : 0.0)) / p->sensor.mass);
     double tol = sp ? fmax(sp->rtol, sp->atol) : 1e-12;
     if (!(tol > 0))
         tol = 1e-12;
-    const double per_rad = fmax(2.0, SENSOR_STEPS_PER_RAD * pow(fmax(tol, 1e-12) / 1e-12, -0.2)),
-                 steps = per_rad * omega * t_len;
+    *per_rad = fmax(2.0, SENSOR_STEPS_PER_RAD * pow(fmax(tol, 1e-12) / 1e-12, -0.2));
+    return *per_rad * *omega * t_len;
+}
+
+int chain_sensor_steps_check(const gw_chain_params *p, const gw_solver_type *type, const gw_solver_params *sp,
+                             double t_len, const char *over, gw_err *err)
+{
+    if (type == gw_solver_rk4)
+        return GW_OK; /* rk4: its step is bounded by chain_steps_check */
+    double omega, per_rad;
+    const double steps = sensor_steps(p, sp, t_len, &omega, &per_rad);
     if (!(steps <= 1e8))
         return gw_err_set(err, GW_EINVAL, "sensor-stiffness: a sensor body oscillating at %.3g rad/s (sqrt((k_s + the "
                           "contact's stiffness)/M)) needs about %.3g steps over %s (about %.3g s; %.3g a radian at "
@@ -243,12 +255,13 @@ int chain_drag_steps_check(const gw_chain_params *p, const gw_solver_type *type,
  * their histories and stages, arkode's implicit methods 34) and, for the implicit
  * methods (cvode bdf, arkode dirk and imex), three band matrices of dim x (smu +
  * ml + 1) doubles (the Jacobian, its saved copy and the factor workspace). The
- * band is 2 above and 3 below the diagonal, except with a sensor body or a wall
- * with its own states (plastic, viscoelastic, layer): those states couple every
- * bead, the Jacobian is full (dim x (2 dim - 1)), and memory grows as n^2.
- * Measured peak resident sizes at n = 1e6 (t-max 1e-9 s): 218 B a bead for rk4,
- * 637 cvode bdf, 295 adams, 381 arkode erk, 810 dirk; 200 MB at n = 1000 with a
- * sensor body (cvode). The estimate is an upper bound for each. */
+ * band is 2 above and 3 below the diagonal; a sensor body's and a plastic or
+ * viscoelastic wall's k states, ordered before the beads (gw_chain_create),
+ * widen it to k + 1 on both sides (k at most 2 + 1 + GW_WALL_MAX_ARMS). Before
+ * that order they made it the whole system (dim x (2 dim - 1), n^2: 200 MB at
+ * n = 1000). Measured peak resident sizes at n = 1e6 (t-max 1e-9 s): 218 B a
+ * bead for rk4, 637 cvode bdf, 295 adams, 381 arkode erk, 810 dirk. The
+ * estimate is an upper bound for each. */
 static int implicit_method(const gw_solver_type *t, int method)
 {
     const char *used = gw_solver_method_used(t, method);
@@ -258,14 +271,15 @@ static int implicit_method(const gw_solver_type *t, int method)
 static double memory_bytes(const gw_chain_params *p, const gw_solver_type *type, int method)
 {
     const double n = p->n;
-    const int full = p->sensor.mass > 0 || p->wall.layer || p->wall.yield_pressure > 0 || p->wall.loss > 0;
-    const double dim = 2 * n + 8;
+    /* the states ordered before the beads: x_s, v_s; W and D_max or the arms */
+    const double k = 2.0 * (p->sensor.mass > 0) + (p->wall.yield_pressure > 0 || p->wall.loss > 0 ? 1 + GW_WALL_MAX_ARMS : 0);
+    const double dim = 2 * n + 8 + k, mu = fmax(2, k + 1), ml = fmax(3, k + 1);
     const gw_solver_type *t = type ? type : gw_solver_cvode;
     const int implicit = implicit_method(t, method);
     double vectors = t == gw_solver_rk4 ? 10 : implicit && t != gw_solver_cvode ? 34 : 24;
     double bytes = 8 * (14 * n + vectors * dim);
     if (implicit) {
-        double ldim = full ? 2 * dim - 1 : fmin(dim - 1, 5) + 3 + 1;
+        double ldim = fmin(dim - 1, mu + ml) + ml + 1;
         bytes += 3 * 8 * dim * ldim + 8 * dim;
     }
     return bytes;
@@ -297,50 +311,10 @@ int gw_chain_memory_check(const gw_chain_params *p, const gw_solver_type *type, 
         return GW_OK;
     long lo = memory_n_ok(p, type, method);
     const gw_solver_type *t = type ? type : gw_solver_cvode;
-    const int full = p->sensor.mass > 0 || p->wall.layer || p->wall.yield_pressure > 0 || p->wall.loss > 0;
     return gw_err_set(err, GW_EINVAL,
-                      "n: a column of %d beads needs about %.3g GB for its state and the %s (%s) solver's workspace%s, "
+                      "n: a column of %d beads needs about %.3g GB for its state and the %s (%s) solver's workspace, "
                       "above the %.3g GB limit: at most %ld beads here", p->n, need / 1e9, gw_solver_type_name(t),
-                      gw_solver_method_used(t, method),
-                      full && implicit_method(t, method)
-                          ? " (a full Jacobian: the sensor body or the wall's own states couple every bead; rk4 or "
-                            "arkode erk need none)"
-                          : "",
-                      limit / 1e9, lo);
-}
-
-/* The implicit methods solve with the Jacobian at every step, and a sensor
- * body couples every bead in it (full, dim = 2n + 3): a step costs up to
- * about 2e-8 dim^2 s. Measured, cvode bdf, a 1e-3 kg body on 1e9 N/m: n =
- * 10, 20, 40 in 0.11, 0.45, 3.0 s (about 1450 n steps), n = 100 in 40 s,
- * 300 and 600 past 60 s; a 1e3 kg body on 1e3 N/m: n = 100 in 10 s, 150 in
- * 37 s (about 560 n steps); hours at the 3339 beads the memory bound admits,
- * with nothing refused. How many steps the body adds depends on whether the
- * collision excites it (a 1e-7 kg body on 1e14 N/m at n = 4: 8.3e5 steps,
- * 0.22 a radian, 1.6 s), so the bound takes the fewest a run can take, the
- * collision over the largest step (about 8 n), times dim^2, at 1e8: a run
- * refused so takes at least about 2 s and, measured, minutes (n = 150 and
- * above at these bodies). */
-#define SENSOR_DENSE_WORK_MAX 1e8
-
-static int sensor_dense_check(const gw_chain_params *p, const gw_solver_type *type, const gw_solver_params *sp,
-                              double t_len, const char *over, gw_err *err)
-{
-    if (!(p->sensor.mass > 0 && p->sensor.stiffness > 0) || !implicit_method(type, sp->method) || !(sp->dt_max > 0))
-        return GW_OK;
-    const double steps = t_len / sp->dt_max, dim = 2.0 * p->n + 3, dense = steps * dim * dim;
-    if (dense <= SENSOR_DENSE_WORK_MAX)
-        return GW_OK;
-    /* the steps grow with the collision's length, about as n */
-    long n_ok = p->n;
-    while (n_ok > 1 && !(steps * n_ok / p->n * (2.0 * n_ok + 3) * (2.0 * n_ok + 3) <= SENSOR_DENSE_WORK_MAX))
-        n_ok = (long)(n_ok * 0.95);
-    return gw_err_set(err, GW_EINVAL, "n: a sensor body couples every bead in the Jacobian %s %s solves with at "
-                      "every step: at least about %.3g steps over %s (its length over the largest step %g s) of "
-                      "%.0f states each, %.3g (steps x states^2), above the bound %.0e (minutes of CPU): fewer beads "
-                      "(at most about %ld here), a rigid sensor, or rk4 or arkode erk (no Jacobian)",
-                      gw_solver_type_name(type), gw_solver_method_used(type, sp->method), steps, over, sp->dt_max, dim,
-                      dense, SENSOR_DENSE_WORK_MAX, n_ok);
+                      gw_solver_method_used(t, method), limit / 1e9, lo);
 }
 
 /* v rounded down to two significant digits (a suggested bound that passes). */
@@ -537,7 +511,7 @@ static int plan_make(const gw_chain_params *p0, const gw_chain_run_opts *o, coll
         pl->sp.dt = chain_rk4_default_dt(p, o->steps_per_tc);
     /* and at least t_expect / step steps of O(n) each: bounded before the run
      * (the RK4 step, or the largest step of cvode/arkode) */
-    /* Steps and samples grow about as n, memory as n (n^2 with a full Jacobian):
+    /* Steps and samples grow about as n, memory as n:
      * when several trip, the one that passes the fewest beads is named. */
     const double max_samples = 1e9, step = pl->type == gw_solver_rk4 ? fmin(pl->sp.dt, pl->sp.dt_max) : pl->sp.dt_max;
     gw_err e[3] = {{{0}}};
@@ -565,10 +539,6 @@ static int plan_make(const gw_chain_params *p0, const gw_chain_run_opts *o, coll
             worst = i;
     if (worst >= 0)
         return gw_err_set(err, GW_EINVAL, "%s", e[worst].msg);
-    /* the implicit methods' dense solves with a sensor body (after the
-     * memory's bound: a column that does not fit is named so first) */
-    if ((rc = sensor_dense_check(p, pl->type, &pl->sp, pl->t_expect, "the collision", err)) != GW_OK)
-        return rc;
     /* cvode and arkode follow a light bead that heavy beads hold, all the time
      * they hold it (chain_ring_check) */
     if ((rc = chain_ring_check(p, pl->type, &pl->sp, pl->t_expect, t_col, "the collision", err)) != GW_OK)
@@ -657,8 +627,11 @@ int chain_run_steps(const gw_chain_params *p, const gw_chain_run_opts *o, double
         return rc;
     const double step = pl.type == gw_solver_rk4 ? fmin(pl.sp.dt, pl.sp.dt_max) : pl.sp.dt_max;
     double s = pl.t_expect / step;
-    if (pl.type != gw_solver_rk4 && p->sensor.mass > 0 && p->sensor.stiffness > 0)
-        s = fmax(s, 2.0 * sqrt(p->sensor.stiffness / p->sensor.mass) * pl.t_expect);
+    /* the sensor body's oscillation as a single run counts it (2 a radian
+     * before: a tenth of the 7-37 measured) */
+    double omega, per_rad;
+    if (pl.type != gw_solver_rk4)
+        s = fmax(s, sensor_steps(p, &pl.sp, pl.t_expect, &omega, &per_rad));
     int k = 0;
     double rate = 0, t_used = 0;
     s = fmax(s, drag_steps(p, pl.type, &pl.sp, &o->sp, o->steps_per_tc, pl.t_expect, pl.t_max, &k, &rate, &t_used));

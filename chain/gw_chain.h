@@ -284,8 +284,10 @@ void gw_chain_free(gw_chain *c);
  * work done on a plastic or viscoelastic wall, the sensor x_s, v_s, the largest
  * overlap of a plastic wall, one Maxwell-arm force per relaxation time of a
  * viscoelastic wall. Then g[0] = gw_chain_wall_gap, g[n] = v_0 - v_s and, with a
- * sensor body, g[n+1] = v_s. Extra states make the Jacobian dense (finite
- * differences). */
+ * sensor body, g[n+1] = v_s. The implicit methods order the states after the
+ * dissipated energy before the beads (gw_system.lead0, nlead): they couple only
+ * to bead 1, and the Jacobian stays banded (finite differences); the
+ * dissipated energy is a ledger (nledger). */
 const gw_system *gw_chain_system(const gw_chain *c);
 const gw_chain_params *gw_chain_get_params(const gw_chain *c);
 double gw_chain_bead_mass(const gw_chain *c, int i);
@@ -481,8 +483,7 @@ int gw_chain_trace_check(int n, double span, double dt_out, double events, gw_er
 
 /* The memory a run of column p needs with solver type (NULL: cvode) and method
  * (the model's and result's arrays, the solver's vectors and, for cvode bdf and
- * arkode dirk/imex, its band matrices: full, n^2, with a sensor body or a wall
- * with its own states) is bounded before anything is allocated at
+ * arkode dirk/imex, its band matrices) is bounded before anything is allocated at
  * GW_CHAIN_MEMORY_MAX bytes (2 GiB): GW_EINVAL "n: a column of N beads needs
  * about X GB ...: at most M beads here" otherwise. */
 #define GW_CHAIN_MEMORY_MAX 2147483648.0

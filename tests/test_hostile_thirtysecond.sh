@@ -35,9 +35,13 @@
 #    dim = 2n + 3), which they solve with at every step: cvode bdf at n = 10,
 #    20, 40 took 0.11, 0.45 and 3.0 s, n = 100 40 s, 300 and 600 past 60 s,
 #    with nothing refused up to the memory bound's 3339 beads (hours). The
-#    plan bounds the fewest steps a run can take (the collision over the
-#    largest step) times dim^2 at 1e8: exit 2 naming --n and the beads that
-#    pass (n above about 167 here); rk4 and arkode erk (no Jacobian) still run.
+#    plan bounded the fewest steps a run can take (the collision over the
+#    largest step) times dim^2 at 1e8 (exit 2 naming --n above about 167).
+#    The twenty-eighth session removed the cause: the body's states are
+#    ordered before the beads in the band (test_chain_band_order), the bound
+#    is gone, and n = 300 runs under cvode bdf (42 s). Kept here: a column on
+#    a sensor body under cvode bdf agrees with arkode erk's, which needs no
+#    Jacobian.
 # Checks that fail on the code before: see docs/tests.md.
 # shellcheck source=refusal_lib.sh
 . "$2/tests/refusal_lib.sh"
@@ -155,12 +159,7 @@ print(a['n_impacts'] == 1 and b['n_impacts'] == 1 and ta is not None and tb is n
         ko "$DH: $(head -c 300 h1.json)"
 fi
 
-# --- 5 a sensor body's dense Jacobian: the implicit methods' work bounded ---
-# (60 s only guards against the run of the code before, which went past it:
-# n = 100 took 40 s, 300 and 600 more than 60, the memory bound admits 3339)
-REFUSE_TIMEOUT=60 refused "chain --n 300 on a sensor body (cvode bdf): refused before the run naming --n" \
-    "^granwave chain --n: a sensor body couples every bead in the Jacobian cvode bdf solves .*at most about [0-9]+ here" \
-    chain --n 300 --sensor-mass 1e-3 --sensor-stiffness 1e9 --out o
+# --- 5 a sensor body under the implicit methods (no longer a dense Jacobian) ---
 if runs_json "chain --n 20 on a sensor body (cvode bdf)" s20.json chain --n 20 --sensor-mass 1e-3 --sensor-stiffness 1e9 &&
     runs_json "chain --n 20 on a sensor body (arkode erk)" e20.json chain --n 20 --sensor-mass 1e-3 \
         --sensor-stiffness 1e9 --solver arkode &&

@@ -132,10 +132,12 @@ static const char *ark_configure(gw_solver *s, ark_impl *a, int method, int *fla
             return "the band matrix";
         }
         ARK_CHECK(ARKStepSetLinearSolver(a->mem, a->LS, a->A));
+        if (gw_sun_band_ordered(&s->sys))
+            ARK_CHECK(ARKStepSetJacFn(a->mem, gw_sun_jac_ordered));
         if (method == GW_ARKODE_DIRK) {
             ARK_CHECK(ARKStepSetTableName(a->mem, "ARKODE_ARK548L2SA_DIRK_8_4_5",
                                           "ARKODE_ERK_NONE"));
-            if (s->p.use_jac && s->sys.jac && !s->sys.matrix_free)
+            if (!gw_sun_band_ordered(&s->sys) && s->p.use_jac && s->sys.jac && !s->sys.matrix_free)
                 ARK_CHECK(ARKStepSetJacFn(a->mem, gw_sun_jac));
         } else {
             ARK_CHECK(ARKStepSetTableName(a->mem, "ARKODE_ARK548L2SA_DIRK_8_4_5",

@@ -179,7 +179,9 @@ static int cv_create(gw_solver *s, double t0, const double *y0, gw_err *err)
             return gw_err_set(err, GW_ENOMEM, "cvode: out of memory for the band matrix");
         }
         CV_TRY(CVodeSetLinearSolver(c->mem, c->LS, c->A), "CVodeSetLinearSolver");
-        if (s->p.use_jac && s->sys.jac && !s->sys.matrix_free)
+        if (gw_sun_band_ordered(&s->sys))
+            CV_TRY(CVodeSetJacFn(c->mem, gw_sun_jac_ordered), "CVodeSetJacFn");
+        else if (s->p.use_jac && s->sys.jac && !s->sys.matrix_free)
             CV_TRY(CVodeSetJacFn(c->mem, gw_sun_jac), "CVodeSetJacFn");
     } else {
         c->NLS = gw_sun_fixed_point(c->y, c->ctx);

@@ -124,6 +124,13 @@ int gw_solver_create(const gw_solver_type *type, const gw_system *sys,
         return gw_err_set(err, GW_EINVAL, "solver: system has no right-hand side or dimension");
     if (sys->nroots < 0 || (sys->nroots > 0 && !sys->roots))
         return gw_err_set(err, GW_EINVAL, "solver: root count without root function");
+    if (sys->lead0 < 0 || sys->nlead < 0 || sys->nledger < 0 || sys->lead0 > sys->dim - sys->nlead ||
+        sys->nledger > sys->dim)
+        return gw_err_set(err, GW_EINVAL, "solver: band order (lead0 %ld, nlead %ld, nledger %ld) outside the %ld states",
+                          sys->lead0, sys->nlead, sys->nledger, sys->dim);
+    if (sys->nlead > 0 && sys->jac)
+        return gw_err_set(err, GW_EINVAL, "solver: a band order with leading states needs jac NULL (difference "
+                          "quotients in that order)");
     int rc = gw_solver_tolerances_check(p->rtol, p->atol, "solver: rtol", "solver: atol", err);
     if (rc != GW_OK)
         return rc;

@@ -88,6 +88,19 @@ typedef struct gw_system {
                             matrix of dim x (2 mu + ml + 1) from the Jacobian or
                             mu + ml + 1 rhs evaluations, LU-factored (dense when the
                             band is the whole system: dim^3 work per factorisation) */
+    /* The band's order (cvode bdf, arkode dirk and imex): states [lead0, lead0 +
+     * nlead) come first in the band matrix and its solves, the others after
+     * them in their own order; the last nledger states of that order are
+     * ledgers (integrals of rates that no rate depends on, e.g. an energy
+     * dissipated by every contact), their rows left out of the matrix (their
+     * Newton iterates follow the others' one iteration behind). A few states
+     * appended after a long chain that couple only to its first ones (a sensor
+     * body under bead 1) then keep the band narrow, where in the states' own
+     * order they make it the whole system. mu and ml are the half-bandwidths
+     * in the band's order. nlead > 0 needs jac NULL: the Jacobian is formed by
+     * difference quotients in that order (mu + ml + 1 rhs evaluations).
+     * nlead = nledger = 0: the states' own order. */
+    long lead0, nlead, nledger;
     gw_root_fn roots;    /* event functions (optional) */
     int nroots;
     const double *scale; /* typical magnitude of each component, or NULL (= 1):

@@ -3,6 +3,7 @@
  */
 #include <float.h>
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include <sunlinsol/sunlinsol_band.h>
@@ -125,6 +126,180 @@ int gw_sun_jac(realtype t, N_Vector y, N_Vector fy, SUNMatrix J, void *ud, N_Vec
                       s->sys.params);
 }
 
+/* The band's order (gw_system.lead0, nlead): position p of the matrix holds
+ * state band_state(p); band_pos is its inverse. */
+static long band_state(const gw_system *sys, long p)
+{
+    if (p < sys->nlead)
+        return sys->lead0 + p;
+    if (p < sys->lead0 + sys->nlead)
+        return p - sys->nlead;
+    return p;
+}
+
+static long band_pos(const gw_system *sys, long i)
+{
+    if (i >= sys->lead0 && i < sys->lead0 + sys->nlead)
+        return i - sys->lead0;
+    if (i < sys->lead0)
+        return i + sys->nlead;
+    return i;
+}
+
+int gw_sun_band_ordered(const gw_system *sys)
+{
+    return !sys->matrix_free && (sys->nlead > 0 || (sys->nledger > 0 && !sys->jac));
+}
+
+/* Difference quotients of the rhs in the band's order: the columns mu + ml + 1
+ * apart share one evaluation (each row in the band of at most one of them),
+ * each column's increment sqrt(eps) max(|y_i|, scale_i). The ledgers' rows
+ * stay zero. The rhs is the implicit part's under arkode's imex. */
+int gw_sun_jac_ordered(realtype t, N_Vector y, N_Vector fy, SUNMatrix J, void *ud, N_Vector t1, N_Vector t2,
+                       N_Vector t3)
+{
+    gw_solver *s = ud;
+    const gw_system *sys = &s->sys;
+    if (gw_interrupt_pending())
+        return -1;
+    const gw_rhs_fn rhs = s->p.method == GW_ARKODE_IMEX && sys->rhs_im ? sys->rhs_im : sys->rhs;
+    const long n = sys->dim, mu = SM_UBAND_B(J), ml = SM_LBAND_B(J), rows = n - sys->nledger;
+    const long w = mu + ml + 1 < n ? mu + ml + 1 : n;
+    const double *y0 = N_VGetArrayPointer(y), *f0 = N_VGetArrayPointer(fy);
+    double *yp = N_VGetArrayPointer(t1), *fp = N_VGetArrayPointer(t2), *inc = N_VGetArrayPointer(t3);
+    const double srur = sqrt(DBL_EPSILON);
+    SUNMatZero(J);
+    memcpy(yp, y0, (size_t)n * sizeof *yp);
+    for (long g = 0; g < w; g++) {
+        for (long p = g; p < n; p += w) {
+            const long i = band_state(sys, p);
+            const double sc = sys->scale && sys->scale[i] > 0 ? sys->scale[i] : 1.0;
+            const double h = srur * fmax(fabs(y0[i]), sc);
+            yp[i] = y0[i] + (y0[i] < 0 ? -h : h);
+            inc[p] = yp[i] - y0[i]; /* the increment as stored */
+        }
+        const int rc = rhs(t, yp, fp, sys->params);
+        if (rc != 0)
+            return rc;
+        for (long p = g; p < n; p += w) {
+            yp[band_state(sys, p)] = y0[band_state(sys, p)];
+            realtype *col = SM_COLUMN_B(J, p);
+            const long r0 = p - mu > 0 ? p - mu : 0, r1 = p + ml < rows - 1 ? p + ml : rows - 1;
+            for (long r = r0; r <= r1; r++) {
+                const long k = band_state(sys, r);
+                SM_COLUMN_ELEMENT_B(col, r, p) = (fp[k] - f0[k]) / inc[p];
+            }
+        }
+    }
+    return 0;
+}
+
+/* The band solver on the band's order: b taken into it, x out of it. */
+typedef struct ordered_ls {
+    SUNLinearSolver band;
+    N_Vector bp, xp;
+    const gw_system *sys;
+} ordered_ls;
+
+static SUNLinearSolver_Type ordered_type(SUNLinearSolver S)
+{
+    (void)S;
+    return SUNLINEARSOLVER_DIRECT;
+}
+
+static SUNLinearSolver_ID ordered_id(SUNLinearSolver S)
+{
+    (void)S;
+    return SUNLINEARSOLVER_CUSTOM;
+}
+
+static int ordered_initialize(SUNLinearSolver S)
+{
+    return SUNLinSolInitialize(((ordered_ls *)S->content)->band);
+}
+
+static int ordered_setup(SUNLinearSolver S, SUNMatrix A)
+{
+    return SUNLinSolSetup(((ordered_ls *)S->content)->band, A);
+}
+
+static int ordered_solve(SUNLinearSolver S, SUNMatrix A, N_Vector x, N_Vector b, realtype tol)
+{
+    ordered_ls *o = S->content;
+    const long n = o->sys->dim;
+    const double *bv = N_VGetArrayPointer(b);
+    double *bp = N_VGetArrayPointer(o->bp), *xp = N_VGetArrayPointer(o->xp), *xv = N_VGetArrayPointer(x);
+    for (long i = 0; i < n; i++)
+        bp[band_pos(o->sys, i)] = bv[i];
+    const int rc = SUNLinSolSolve(o->band, A, o->xp, o->bp, tol);
+    if (rc != SUNLS_SUCCESS)
+        return rc;
+    for (long i = 0; i < n; i++)
+        xv[i] = xp[band_pos(o->sys, i)];
+    return SUNLS_SUCCESS;
+}
+
+static sunindextype ordered_lastflag(SUNLinearSolver S)
+{
+    return SUNLinSolLastFlag(((ordered_ls *)S->content)->band);
+}
+
+static int ordered_space(SUNLinearSolver S, long *lrw, long *liw)
+{
+    const ordered_ls *o = S->content;
+    const int rc = SUNLinSolSpace(o->band, lrw, liw);
+    *lrw += 2 * o->sys->dim;
+    return rc;
+}
+
+static int ordered_free(SUNLinearSolver S)
+{
+    if (!S)
+        return SUNLS_SUCCESS;
+    ordered_ls *o = S->content;
+    if (o) {
+        if (o->band)
+            SUNLinSolFree(o->band);
+        if (o->bp)
+            N_VDestroy(o->bp);
+        if (o->xp)
+            N_VDestroy(o->xp);
+        free(o);
+    }
+    S->content = NULL;
+    SUNLinSolFreeEmpty(S);
+    return SUNLS_SUCCESS;
+}
+
+static SUNLinearSolver ordered_solver(const gw_system *sys, N_Vector y, SUNMatrix A, SUNContext ctx)
+{
+    SUNLinearSolver S = SUNLinSolNewEmpty(ctx);
+    ordered_ls *o = S ? calloc(1, sizeof *o) : NULL;
+    if (!o) {
+        if (S)
+            SUNLinSolFreeEmpty(S);
+        return NULL;
+    }
+    S->content = o;
+    S->ops->gettype = ordered_type;
+    S->ops->getid = ordered_id;
+    S->ops->initialize = ordered_initialize;
+    S->ops->setup = ordered_setup;
+    S->ops->solve = ordered_solve;
+    S->ops->lastflag = ordered_lastflag;
+    S->ops->space = ordered_space;
+    S->ops->free = ordered_free;
+    o->sys = sys;
+    o->band = SUNLinSol_Band(y, A, ctx);
+    o->bp = N_VClone(y);
+    o->xp = N_VClone(y);
+    if (!o->band || !o->bp || !o->xp) {
+        ordered_free(S);
+        return NULL;
+    }
+    return S;
+}
+
 void gw_sun_errh(int code, const char *module, const char *function, char *msg, void *ud)
 {
     gw_solver *s = ud;
@@ -193,7 +368,7 @@ int gw_sun_band(const gw_solver *s, N_Vector y, SUNContext ctx, SUNMatrix *A,
     *A = SUNBandMatrix(n, mu, ml, ctx);
     if (!*A)
         return GW_ENOMEM;
-    *LS = SUNLinSol_Band(y, *A, ctx);
+    *LS = s->sys.nlead > 0 ? ordered_solver(&s->sys, y, *A, ctx) : SUNLinSol_Band(y, *A, ctx);
     if (!*LS) {
         SUNMatDestroy(*A);
         *A = NULL;

@@ -28,6 +28,12 @@ int gw_sun_rhs_im(realtype t, N_Vector y, N_Vector ydot, void *ud);
 int gw_sun_roots(realtype t, N_Vector y, realtype *g, void *ud);
 int gw_sun_jac(realtype t, N_Vector y, N_Vector fy, SUNMatrix J, void *ud,
                N_Vector t1, N_Vector t2, N_Vector t3);
+/* Whether the band matrix follows the system's band order (gw_system.lead0,
+ * nlead, nledger): then gw_sun_band's solver takes the right-hand side into
+ * that order and the Jacobian is gw_sun_jac_ordered's (set as the jac fn). */
+int gw_sun_band_ordered(const gw_system *sys);
+int gw_sun_jac_ordered(realtype t, N_Vector y, N_Vector fy, SUNMatrix J, void *ud, N_Vector t1, N_Vector t2,
+                       N_Vector t3);
 void gw_sun_errh(int code, const char *module, const char *function, char *msg,
                  void *ud);
 

@@ -126,15 +126,14 @@ def test_results_record_the_settings_that_ran():
 
 
 def test_a_column_memory_is_bounded_before_allocation():
-    # chain(n=50000000) ended "out of memory" from its first allocation; with a
-    # sensor body cvode's Jacobian is full (n^2): 20000 beads asked for 77 GB
+    # chain(n=50000000) ended "out of memory" from its first allocation; a
+    # sensor body's states, ordered before the beads in the implicit methods'
+    # band, keep its memory linear in n (the whole band before: at most 3339)
     with pytest.raises(granwave.GranwaveValueError,
                        match=r"n: a column of 50000000 beads needs about 47.2 GB .* at most 2274873 beads here"):
         granwave.chain(n=50000000)
-    with pytest.raises(granwave.GranwaveValueError, match=r"n: a column of 20000 beads .*full Jacobian.* at most 3339"):
-        granwave.chain(n=20000, sensor_mass=3e-3, sensor_stiffness=2e9)
-    with pytest.raises(granwave.GranwaveValueError, match=r"n: a column of 100000 beads .*at most 3339"):
-        granwave.drop(n=100000, sensor_mass=3e-3, sensor_stiffness=2e9)
+    with pytest.raises(granwave.GranwaveValueError, match=r"n: a column of 20000000 beads .* at most 2164797 beads"):
+        granwave.chain(n=20000000, sensor_mass=1, sensor_stiffness=1e3)
 
 
 def test_a_speed_given_twice_is_refused():

@@ -34,8 +34,9 @@ static const gw_param disp_params[] = {
     OROW("dt-out", GW_PARAM_DOUBLE, dt_out, "s", 0, 1, 0, "0", "DT", "sampling interval, s [pi / (1.25 omega_c)]"),
     OROW("steps-per-sample", GW_PARAM_LONG, steps_per_sample, "", 1, 100000, 0, "16", "K",
         "RK4 steps per sampling interval (rk4 only) [16]"),
-    OROW("amp", GW_PARAM_DOUBLE, amp, "", 0, 0.1, 1, "1e-3", "A",
-        "rms overlap perturbation / d0 of the initial velocities [1e-3]"),
+    OROW("amp", GW_PARAM_DOUBLE, amp, "", GW_CHAIN_DISP_AMP_MIN, 0.1, 0, "1e-3", "A",
+        "rms overlap perturbation / d0 of the initial velocities, in [1e-12, 0.1] (smaller nears the rounding "
+        "of d0) [1e-3]"),
     OROW("seed", GW_PARAM_LONG, seed, "", 0, 9.0e18, 0, "1", "S",
         "seed of the random mode phases of the initial velocities [1]"),
     OROW("min-bins", GW_PARAM_DOUBLE, min_bins, "", 1, GW_CHAIN_DISP_MIN_BINS_MAX, 0, "8", "B",

@@ -105,8 +105,10 @@ int gw_chain_disp_params_validate(const gw_chain_disp_params *p, gw_err *err)
                           p->f0, disp_d0(p), p->radius);
     if (p->ends != GW_CHAIN_DISP_PERIODIC && p->ends != GW_CHAIN_DISP_FIXED)
         return gw_err_set(err, GW_EINVAL, "ends: unknown end condition %d", (int)p->ends);
-    if (!(p->amp > 0 && p->amp <= 0.1))
-        return gw_err_set(err, GW_EINVAL, "amp: %g outside (0, 0.1] (the analysis is linear)", p->amp);
+    if (!(p->amp >= GW_CHAIN_DISP_AMP_MIN && p->amp <= 0.1))
+        return gw_err_set(err, GW_EINVAL, "amp: %g outside [%g, 0.1] (the analysis is linear; below %g the "
+                          "perturbation nears the rounding of the overlap d0 and the ridge moves, by 12 %% at 1e-16)",
+                          p->amp, GW_CHAIN_DISP_AMP_MIN, GW_CHAIN_DISP_AMP_MIN);
     if (p->t_samples < 64 || p->t_samples > (1 << 24) || p->t_samples % 2)
         return gw_err_set(err, GW_EINVAL, "t-samples: %d must be even and in [64, %d]", p->t_samples, 1 << 24);
     if ((double)disp_nx(p) * p->t_samples > (double)(1L << 27))

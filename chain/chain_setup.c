@@ -109,10 +109,12 @@ static int speed_cmp(const void *a, const void *b)
 
 int gw_chain_study_speeds_check(const double *v, int n, int n_speeds, gw_err *err)
 {
-    /* the first j with an earlier equal speed, i the first of those: sorted by
-     * speed then index, each run of equal speeds gives its first two indices.
-     * Every pair compared (n^2 / 2) took 220 s before the first collision of
-     * falcon --n 1:2 with 320000 speeds (the study's work bound takes 4e5) */
+    /* Sorted by speed then index, each pair of neighbours closer than
+     * GW_CHAIN_SPEEDS_REL_MIN is a pair of speeds too close; named by the
+     * first item that has such an earlier or nearer one (j), with the first
+     * of those (i). Every pair compared (n^2 / 2) took 220 s before the first
+     * collision of falcon --n 1:2 with 320000 speeds (the study's work bound
+     * takes 4e5). */
     if (n < 2)
         return GW_OK;
     speed_at *s = malloc((size_t)n * sizeof *s);
@@ -122,19 +124,31 @@ int gw_chain_study_speeds_check(const double *v, int n, int n_speeds, gw_err *er
         s[k] = (speed_at){v[k], k};
     qsort(s, (size_t)n, sizeof *s, speed_cmp);
     int i = -1, j = n;
-    for (int k = 1; k < n; k++)
-        if (s[k].v == s[k - 1].v && (k < 2 || s[k - 1].v != s[k - 2].v) && s[k].i < j) {
-            i = s[k - 1].i;
-            j = s[k].i;
-        }
+    for (int k = 1; k < n; k++) {
+        if (!(s[k].v - s[k - 1].v <= GW_CHAIN_SPEEDS_REL_MIN * s[k].v))
+            continue;
+        const int lo = s[k - 1].i < s[k].i ? s[k - 1].i : s[k].i, hi = s[k - 1].i ^ s[k].i ^ lo;
+        if (hi < j)
+            i = lo, j = hi;
+    }
     free(s);
-    if (i >= 0)
+    if (i < 0)
+        return GW_OK;
+    const char *what = j >= n_speeds ? "heights" : "vimp", *of = (i >= n_speeds) != (j >= n_speeds) ? " of vimp" : "";
+    const int jj = j >= n_speeds ? j - n_speeds + 1 : j + 1, ii = i >= n_speeds ? i - n_speeds + 1 : i + 1;
+    if (v[i] == v[j])
         return gw_err_set(err, GW_EINVAL, "%s: item %d gives the impact velocity %.10g m/s of item %d%s: the "
-                          "same collisions would run twice and count twice in the fits",
-                          j >= n_speeds ? "heights" : "vimp", j >= n_speeds ? j - n_speeds + 1 : j + 1, v[j],
-                          i >= n_speeds ? i - n_speeds + 1 : i + 1,
-                          (i >= n_speeds) != (j >= n_speeds) ? " of vimp" : "");
-    return GW_OK;
+                          "same collisions would run twice and count twice in the fits", what, jj, v[j], ii, of);
+    /* two speeds as good as one: the collisions resolve a wave speed to about
+     * 1e-10 (default tolerances), and the fits over v_imp then rest on a
+     * difference they cannot measure: 0.3 and 0.3 + 1 ulp gave beta -278424
+     * and C3 0 with exit 0, a relative 3.3e-9 apart beta 0.179, 3.3e-7 apart
+     * 0.1998 (0.2 from speeds far apart) */
+    return gw_err_set(err, GW_EINVAL, "%s: item %d gives the impact velocity %.17g m/s, within a relative %.2g of "
+                      "item %d%s (%.17g m/s): the collisions cannot tell them apart (they resolve a wave speed to "
+                      "about 1e-10), it would count twice in the fits and their exponent over v_imp rest on the "
+                      "difference; give speeds at least a relative %g apart", what, jj, v[j],
+                      fabs(v[j] - v[i]) / fmax(v[i], v[j]), ii, of, v[i], GW_CHAIN_SPEEDS_REL_MIN);
 }
 
 void gw_chain_resolved_free(gw_chain_resolved *r)

@@ -53,9 +53,16 @@ int gw_chain_study_work_check(long a, long b, int runs, gw_err *err);
 /* The impact velocities v[0..n) of a study (falcon: the speeds, then the heights'
  * sqrt(2 g h); wavespeed) are distinct: one given twice ran the same collisions
  * twice and counted them twice in the fits (a spurious standard error with two
- * distinct speeds). GW_EINVAL "vimp: ..." (or "heights: ..." for an index >=
+ * distinct speeds), and no two lie within GW_CHAIN_SPEEDS_REL_MIN of each
+ * other. GW_EINVAL "vimp: ..." (or "heights: ..." for an index >=
  * n_speeds) otherwise. */
 int gw_chain_study_speeds_check(const double *v, int n, int n_speeds, gw_err *err);
+/* Two speeds closer than this, relative, are refused by the same check, named
+ * as such: the fits over v_imp would rest on their difference (0.3 and the
+ * next double gave beta -278424, exit 0). The collisions resolve a wave speed
+ * to about 1e-10 at the default tolerances (measured: beta off by about
+ * 7e-11 / the relative spread), so a spread of 1e-6 moves beta by 1e-4 at most. */
+#define GW_CHAIN_SPEEDS_REL_MIN 1e-6
 /* The impact velocities of the falcon study, one rule for the program, the
  * library's gw_chain_falcon_run and Python: v[0..n_vimp) the speeds vimp as
  * given, then v[n_vimp + j] = sqrt(2 g h) of the drop height heights_mm[j] (mm),

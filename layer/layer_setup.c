@@ -35,7 +35,8 @@ static const gw_param impact_params[] = {
     ROW("alpha", GW_PARAM_DOUBLE, alpha, "deg", 0, 90, 0, 1, "0", "DEG", "incidence from the normal, deg in [0, 90) [0]"),
     ROW("x", GW_PARAM_DOUBLE, x, "m", -1e6, 1e6, 0, 0, "0", "X", "impact abscissa from the box centre, m [0]"),
     ROW("height-rm", GW_PARAM_DOUBLE, height_rm, "", 0, 1e6, 0, 0, "0", "H",
-        "mobile layer height in R_m; deeper particles frozen [0 = all]"),
+        "mobile layer height in R_m; particles whose centre lies deeper are frozen (a clump with one such "
+        "member whole), at least one left mobile [0 = all]"),
     ROW("gap", GW_PARAM_DOUBLE, gap, "m", 0, 1e3, 0, 0, "1e-6", "G",
         "initial block-target gap, m in [0, 1000] (< 0 would overlap the layer) [1e-6]"),
     /* an impact lasts milliseconds: 1000 s bounds a block that falls 1000 m

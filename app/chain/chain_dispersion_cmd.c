@@ -75,7 +75,8 @@ static void disp_options(disp_cli *c, gw_opt *o)
     o[i++] = DOPT_L("t-samples", &c->t_samples, "T", "velocity samples in time, even [2048]", 64, 1 << 24);
     o[i++] = DOPT_D("dt-out", &c->dt_out, "DT", "sampling interval, s [pi / (1.25 omega_c)]", 0, 1, 0);
     o[i++] = DOPT_L("steps-per-sample", &c->steps, "K", "RK4 steps per sampling interval (rk4 only) [16]", 1, 100000);
-    o[i++] = DOPT_D("amp", &c->amp, "A", "rms overlap perturbation / d0 of the initial velocities [1e-3]", 0, 0.1, 1);
+    o[i++] = DOPT_D("amp", &c->amp, "A", "rms overlap perturbation / d0 of the initial velocities, in [1e-12, 0.1] "
+                    "(smaller nears the rounding of d0) [1e-3]", GW_CHAIN_DISP_AMP_MIN, 0.1, 0);
     o[i++] = DOPT_L("seed", &c->seed, "S", "seed of the random mode phases of the initial velocities [1]", 0, 9.0e18);
     o[i++] = DOPT_D("min-bins", &c->min_bins, "B", "ridge resolved from B frequency bins up, B <= T/2 - 2 [8]", 1, GW_CHAIN_DISP_MIN_BINS_MAX, 0);
     o[i++] = DOPT_S("solver", &c->solver, "NAME", "rk4, cvode or arkode [rk4; column-n: cvode]");

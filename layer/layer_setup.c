@@ -370,7 +370,7 @@ static int resolve(const gw_layer_impact_setup *s, const gw_layer_sample *smp, g
         rc = gw_layer_impact_step_check(ip, *type, sp, err);
     if (rc == GW_OK) /* the warning is the run's (gw_layer_impact keeps it in its result) */
         rc = gw_layer_impact_settled_check(smp, lp, s->other_settling, s->sample, NULL, 0, err);
-    return rc == GW_OK ? gw_layer_impact_rest_check(smp, lp, s->sample, err) : rc;
+    return rc == GW_OK ? layer_rest_check(smp, lp, s->other_settling, s->sample, err) : rc;
 }
 
 /* The setup's rows in their ranges and a sample named: what a plan (the

@@ -634,7 +634,8 @@ int gw_layer_impact_rest_check(const gw_layer_sample *s, const gw_layer_params *
  * then, and for any other difference (q not 1 within 1e-9, another mass law
  * or clump mass, another friction angle), GW_OK with the warning text in
  * warning[n] ("" when the same, or nothing is recorded: hand-written samples
- * pass as before). GW_ENOMEM when a union clump pile cannot be weighed. The
+ * pass as before). When its clumps cannot be weighed as unions (out of
+ * memory), gw_layer_create's status, "sample 'name': weighing its clumps: ...". The
  * thresholds (docs/cli.md, layer-impact; layer_settled.c has the numbers):
  * the Hertz drop from overlap q^(2/3) d to d releases about 0.19 of the
  * strain energy at rest at q = 1.5 and 0.24 at q = 0.5; measured on a 40-disc

@@ -253,22 +253,22 @@ int layer_rest_check(const gw_layer_sample *smp, const gw_layer_params *lp, int 
     char nm[300] = "";
     if (name)
         gw_snprintf(nm, sizeof nm, " '%s'", name);
-    /* what to do: other-settling when the recorded settling explains the load */
-    char todo[300];
-    if (!smp->settled.recorded)
-        gw_snprintf(todo, sizeof todo, "; the sample records no settling (no settings line), so other-settling "
-                    "does not apply");
-    else if (!(w > 0))
+    /* what to do: other-settling when the recorded settling explains the load
+     * (nothing added for a sample without a record run without the flag: the
+     * message holds a path and the values, within gw_err's 512 bytes) */
+    char todo[160] = "";
+    const int rec = smp->settled.recorded;
+    if (!rec && other_settling)
+        gw_snprintf(todo, sizeof todo, "; other-settling does not apply: no settings line");
+    else if (rec && !(w > 0) && other_settling)
         gw_snprintf(todo, sizeof todo, "; other-settling does not run a pile without gravity");
-    else if (other_settling)
-        gw_snprintf(todo, sizeof todo, "; other-settling allows the %.3g times its recorded settling explains "
-                    "(%g q, q = %.3g), not more: the pile did not settle", allowed, LAYER_FLOOR_LOAD_MAX, q);
-    else if (q > 1)
-        gw_snprintf(todo, sizeof todo, ", or other-settling to run it anyway (its recorded settling explains up to "
-                    "%.3g times; the result then records a warning)", allowed);
-    else
-        gw_snprintf(todo, sizeof todo, "; its recorded settling (q = %.3g) does not explain it: the pile did not "
-                    "settle", q);
+    else if (rec && other_settling)
+        gw_snprintf(todo, sizeof todo, "; other-settling allows %.3g (1.5 q, q = %.3g from its settings line): it "
+                    "did not settle", allowed, q);
+    else if (rec && q > 1)
+        gw_snprintf(todo, sizeof todo, ", or other-settling to run it (up to %.3g, 1.5 q)", allowed);
+    else if (rec)
+        gw_snprintf(todo, sizeof todo, "; its settings line gives q = %.3g: it did not settle", q);
     if (!(w > 0))
         return gw_err_set(err, GW_EINVAL, "sample%s: its floor contacts hold %.3g N of Hertz force at t = 0 and "
                           "gravity is %g: the pile was settled under gravity and its strain energy would be "

@@ -102,7 +102,8 @@ int layer_sample_settings_parse(const char *text, const char *path, const char *
     const char *cs = cJSON_GetStringValue(cm);
     const int clump = cs ? gw_layer_clump_mass_parse(cs) : -1;
     if (rc == GW_OK && cm && clump < 0)
-        rc = bad(path, where, err, "has a clump mass that is neither sum nor union:", mat ? "clump_mass" : "clump-mass");
+        rc = bad(path, where, err, "has a clump mass that is neither sum nor union:",
+                 mat ? "clump_mass" : "clump-mass");
     else if (rc == GW_OK && clump == GW_LAYER_CLUMP_MASS_UNION && sphere)
         rc = bad(path, where, err, "has clump mass union with mass law sphere (union is of discs):",
                  mat ? "clump_mass" : "clump-mass");

@@ -204,7 +204,8 @@ static int memo_warnings(const void *memo, char **list)
     if (!c || c->nsettling == 0)
         return GW_OK;
     return gw_warnings_add(list, "%ld of %ld cases run on a sample settled under another material (their rows "
-                           "hold its motion too, and say so: settling_warning = 1); the first: %s", c->nsettling, c->ncases, c->settling);
+                           "hold its motion too, and say so: settling_warning = 1); the first: %s", c->nsettling,
+                           c->ncases, c->settling);
 }
 
 static void memo_free(void *memo)

@@ -17,10 +17,12 @@
 #  3 matched (the sample's own clump mass, or given as it is): no settling
 #    warning, q = 1;
 #  4 a settings line with clump_mass "cube", or union with mass_law sphere,
-#    is refused by the reader (exit 2, the file, line and key);
+#    is refused by the reader (exit 2, the file, line and key); the library's
+#    flat line (clump-mass) is read the same: union hit with sum warns with
+#    the same q, "cube" is refused;
 #  5 a layer sweep with clump-mass = sum over the union pile: its rows'
 #    settling_warning 1 and settled_load_ratio q.
-# All 7 checks fail on the code before (the matched runs too: its
+# All 9 checks fail on the code before (the matched runs too: its
 # impact.json's sample_settled had no clump_mass).
 # shellcheck source=tests/refusal_lib.sh
 GW=$1
@@ -109,6 +111,16 @@ refused "settings line with clump_mass cube" "sample 'bad_cube.txt': line [0-9]+
     layer-impact --sample bad_cube.txt --t-max 0.002 --out "$tmp/o"
 refused "settings line with union and sphere" "sample 'bad_sphere.txt': line [0-9]+: .*clump mass union with mass law sphere" \
     layer-impact --sample bad_sphere.txt --t-max 0.002 --out "$tmp/o"
+
+# the library's dialect of the line (flat rows, as gw_layer_make_run and
+# Python's layer_make write it): clump-mass read the same
+flat='# settings: {"shear-modulus":40000000000,"poisson":0.25,"friction":30,"density":2650,"gravity":9.81,"mass-law":"disc","clump-mass":"CM"}'
+sed "s|^# settings: .*|${flat/CM/union}|" u.txt >lib_u.txt
+sed "s|^# settings: .*|${flat/CM/cube}|" u.txt >lib_cube.txt
+check_q "union pile, the library's line, hit with --clump-mass sum" x "$r" "union against the impact's sum" \
+    --sample lib_u.txt --clump-mass sum
+refused "the library's line with clump-mass cube" "sample 'lib_cube.txt': line [0-9]+: layer-make's settings line has a clump mass that is neither sum nor union: clump-mass" \
+    layer-impact --sample lib_cube.txt --t-max 0.002 --out "$tmp/o"
 
 # 5: a sweep's rows
 printf '[sweep]\nmodel = layer\n[grid]\nvi = 10, 20\n[params]\nsample = %s\nt-max = 0.002\nclump-mass = sum\n' "$tmp/u.txt" >sw.ini

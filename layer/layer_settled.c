@@ -46,7 +46,9 @@
  * degrees, against 0.109 at 30; 0.364, 0.030 and 0.211 on the piles settled
  * again) is that of neither. At 20 degrees e_n is 0.1065 against 0.1050 on the
  * pile settled again at 20 (1.4 %; settling the 30-degree pile again at 30
- * alone moves it from 0.1088 to 0.0981). So the friction coefficient the
+ * alone moves it from 0.1088 to 0.0981); the block's 176 kJ at 20 m/s do not
+ * drown it (e_n 0.0226 against 0.0221 at 20 degrees, 0.0073 against 0.198 at
+ * 15, 0.129 against 0.177 at 10). So the friction coefficient the
  * impact gives must be at least GW_LAYER_SETTLED_FRICTION_MIN = 0.6 of the
  * settling's (tan 19 / tan 30 = 0.597 sinks, tan 17.5 / tan 30 = 0.546
  * flows; a 40-disc pile, one or two discs deep, held at 10 degrees, 1.75 J

@@ -509,7 +509,19 @@ int gw_afile_commit(gw_afile *f, gw_err *err)
     if (ferror(f->fp)) { /* an earlier write failed: flushing again gives its errno */
         bad = 1;
         fflush(f->fp);
-        saved = errno ? errno : EIO;
+        saved = errno;
+        /* unless the stream dropped what it failed to write (the failure then
+         * hit a whole buffer, and the flush has nothing to say): one byte
+         * more at the end of the temporary, removed below, fails as the
+         * writes did. ledger.csv over ulimit -f said "Input/output error" or
+         * "File too large" by where its 4 kB buffers fell (a sample path 19
+         * bytes longer in its header). A write past the size limit raised
+         * SIGXFSZ at the first failure, so the probe's is ignored too. */
+        const int fd = fileno(f->fp);
+        const off_t end = saved ? -1 : lseek(fd, 0, SEEK_END);
+        const char zero = 0;
+        if (!saved)
+            saved = end >= 0 && pwrite(fd, &zero, 1, end) < 0 && errno ? errno : EIO;
     }
     else if (fflush(f->fp) != 0 || fsync(fileno(f->fp)) != 0)
         bad = 1, saved = errno ? errno : EIO;

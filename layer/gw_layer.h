@@ -277,6 +277,10 @@ typedef struct gw_layer_settled {
     double gravity;        /* m/s^2, > 0 (pluviation needs gravity) */
     int mass_law;          /* GW_LAYER_MASS_* */
     long line;             /* the settings line of a text sample (0: HDF5, or not recorded) */
+    int clump_mass;        /* GW_LAYER_CLUMP_MASS_* the clumps settled under (the program's
+                              material.clump_mass, the library's clump-mass); -1: the line
+                              does not say (the sample's own clump_mass line applies).
+                              Appended: a struct zeroed by an older caller reads sum */
 } gw_layer_settled;
 
 /* A pluviated sample: positions and radii of settled soil particles. */
@@ -577,6 +581,9 @@ typedef struct gw_layer_impact_result {
     char settling[768];     /* the sample settled under another material, gravity or mass
                                law than the impact's (gw_layer_impact_settled_check's
                                warning; "" when the same or not recorded) */
+    double settled_load_ratio; /* q of gw_layer_settled_load_ratio for the sample under the
+                                  impact's material (1: at rest as settled; NaN: the sample
+                                  records no settling) */
 } gw_layer_impact_result;
 
 void gw_layer_impact_result_free(gw_layer_impact_result *r);
@@ -604,7 +611,12 @@ int gw_layer_impact_gap_check(const gw_layer_sample *s, const gw_layer_impact_pa
  * contacts' Hertz force at t = 0 is at most 1.5 times the pile's weight (a
  * settled pile: at most 1). A pile settled with another material, density,
  * gravity or mass law holds strain energy that the impact would release:
- * GW_EINVAL "sample 'name': ..." naming the values (name may be NULL). */
+ * GW_EINVAL "sample 'name': ..." naming the values (name may be NULL), and
+ * other-settling when the sample records a settling that explains the load.
+ * gw_layer_impact runs it with ip->other_settling, which allows the load the
+ * recorded settling explains, 1.5 q times the weight (q of
+ * gw_layer_settled_load_ratio, when above 1); a sample without a record, or
+ * a load beyond that (a pile that did not settle), stays refused. */
 int gw_layer_impact_rest_check(const gw_layer_sample *s, const gw_layer_params *lp, const char *name,
                                gw_err *err);
 
@@ -612,25 +624,33 @@ int gw_layer_impact_rest_check(const gw_layer_sample *s, const gw_layer_params *
  * lp. Under lp the overlaps the pile settled with carry
  *   q = [G/(1 - nu)]_lp / [G/(1 - nu)]_settled x W_settled / W_lp
  * of the weight they carried at rest (Hertz K_n ~ G/(1 - nu), B.3; W the
- * pile's weight, sum of m(r) g under each mass law; the equilibrium overlap
- * scales as (m g / K_n)^(2/3)): q < 1 and the pile sags into the impact,
- * q > 1 and it springs up. Outside [GW_LAYER_SETTLED_LOAD_MIN,
- * GW_LAYER_SETTLED_LOAD_MAX] GW_EINVAL "sample 'name': ..." naming the
- * values, unless other_settling; then, and for any other difference (q not 1
- * within 1e-9, another mass law, another friction angle: the friction the
- * pile may lean on), GW_OK with the warning text in warning[n] ("" when the
- * same, or nothing is recorded: hand-written samples pass as before). The
- * thresholds (docs/cli.md, layer-impact): the Hertz drop from overlap
- * q^(2/3) d to d releases about 0.19 of the strain energy at rest at q = 1.5
- * and 0.24 at q = 0.5; measured on a 40-disc pile left alone under the
- * default material, the first 5 ms give 0.5-2 J of soil motion matched, 6.4 J
- * at q = 0.38 and 19 J at q = 0.038. */
+ * pile's weight, its bodies' masses times g under each mass law and clump
+ * mass; the equilibrium overlap scales as (m g / K_n)^(2/3)): q < 1 and the
+ * pile sags into the impact, q > 1 and it springs up. Outside
+ * [GW_LAYER_SETTLED_LOAD_MIN, GW_LAYER_SETTLED_LOAD_MAX], or with a friction
+ * coefficient tan(phi) below GW_LAYER_SETTLED_FRICTION_MIN times the
+ * settling's (the pile leans on friction it no longer has and flows),
+ * GW_EINVAL "sample 'name': ..." naming the values, unless other_settling;
+ * then, and for any other difference (q not 1 within 1e-9, another mass law
+ * or clump mass, another friction angle), GW_OK with the warning text in
+ * warning[n] ("" when the same, or nothing is recorded: hand-written samples
+ * pass as before). When its clumps cannot be weighed as unions (out of
+ * memory), gw_layer_create's status, "sample 'name': weighing its clumps: ...". The
+ * thresholds (docs/cli.md, layer-impact; layer_settled.c has the numbers):
+ * the Hertz drop from overlap q^(2/3) d to d releases about 0.19 of the
+ * strain energy at rest at q = 1.5 and 0.24 at q = 0.5; measured on a 40-disc
+ * pile left alone under the default material, the first 5 ms give 0.5-2 J of
+ * soil motion matched, 6.4 J at q = 0.38 and 19 J at q = 0.038. The 300-disc
+ * pile settled at 30 degrees and left alone at 19 degrees (0.597 of its
+ * tan(phi)) comes to rest, at 17.5 degrees (0.546) it flows: 711 J of
+ * potential energy and 64 J of motion in 100 ms, growing. */
 #define GW_LAYER_SETTLED_LOAD_MIN 0.5
 #define GW_LAYER_SETTLED_LOAD_MAX 1.5
+#define GW_LAYER_SETTLED_FRICTION_MIN 0.6
 int gw_layer_impact_settled_check(const gw_layer_sample *s, const gw_layer_params *lp, int other_settling,
                                   const char *name, char *warning, size_t n, gw_err *err);
-/* q above for the sample s under lp; NaN when s->settled is not recorded, an
- * infinity when lp has no gravity. */
+/* q above for the sample s under lp; NaN when s->settled is not recorded (or
+ * out of memory weighing union clumps), an infinity when lp has no gravity. */
 double gw_layer_settled_load_ratio(const gw_layer_sample *s, const gw_layer_params *lp);
 
 /* The verlet step gw_layer_impact takes when sp->dt is 0: the Hertz contact

@@ -342,6 +342,13 @@ enum { LAYER_DEM_W = 8 };
  * each stride bytes after the first. */
 void layer_floor_load(const gw_layer_params *lp, int n, const double *y, const double *r, size_t stride, double *f,
                       double *w);
+/* gw_layer_impact_rest_check with other_settling: 1 allows the floor load the
+ * sample's recorded settling explains, LAYER_FLOOR_LOAD_MAX q times the weight
+ * (q = gw_layer_settled_load_ratio above 1), as other-settling allows the
+ * settling check's q (layer-impact and a layer sweep, with the warning
+ * gw_layer_impact_settled_check records); 0 is gw_layer_impact_rest_check. */
+int layer_rest_check(const gw_layer_sample *smp, const gw_layer_params *lp, int other_settling, const char *name,
+                     gw_err *err);
 
 /* What the last rhs evaluation found of a closed frictional contact, kept in
  * DEM mode for the next step (layer_dem.c): K_t at the step's start and the

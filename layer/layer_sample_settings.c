@@ -8,9 +8,13 @@
  *
  * Two dialects are written: the program's (`granwave layer-make`: an object
  * "material" with shear_modulus, poisson, friction_deg, density, gravity,
- * mass_law "disc (unit thickness)" | "sphere") and the library's
- * (gw_layer_make_run, Python's layer_make: the flat rows shear-modulus,
- * poisson, friction, density, gravity, mass-law "disc" | "sphere"). A JSON
+ * mass_law "disc (unit thickness)" | "sphere", clump_mass "sum" | "union")
+ * and the library's (gw_layer_make_run, Python's layer_make: the flat rows
+ * shear-modulus, poisson, friction, density, gravity, mass-law "disc" |
+ * "sphere", clump-mass "sum" | "union"). The clump mass changes the weight a
+ * clump pile settled under (the union of overlapping members weighs less than
+ * their sum): a line without it (one written before clump samples) leaves it
+ * to the sample's own clump_mass line, which layer-make writes too. A JSON
  * object with neither is "not recorded"; one with some of the keys, a value
  * of the wrong type or outside the material rows' ranges (layer_setup_rows.h)
  * is refused: the line was altered, and read as "not recorded" it would turn
@@ -93,10 +97,21 @@ int layer_sample_settings_parse(const char *text, const char *path, const char *
         rc = bad(path, where, err, "lacks", d->keys[5]);
     else if (rc == GW_OK && !disc && !sphere)
         rc = bad(path, where, err, "has a mass law that is neither disc nor sphere:", d->keys[5]);
+    /* optional: sum or union, and union is of the disc law (gw_layer_create) */
+    const cJSON *cm = cJSON_GetObjectItemCaseSensitive(src, mat ? "clump_mass" : "clump-mass");
+    const char *cs = cJSON_GetStringValue(cm);
+    const int clump = cs ? gw_layer_clump_mass_parse(cs) : -1;
+    if (rc == GW_OK && cm && clump < 0)
+        rc = bad(path, where, err, "has a clump mass that is neither sum nor union:",
+                 mat ? "clump_mass" : "clump-mass");
+    else if (rc == GW_OK && clump == GW_LAYER_CLUMP_MASS_UNION && sphere)
+        rc = bad(path, where, err, "has clump mass union with mass law sphere (union is of discs):",
+                 mat ? "clump_mass" : "clump-mass");
     cJSON_Delete(j);
     if (rc != GW_OK)
         return rc;
     out->recorded = 1;
+    out->clump_mass = clump;
     out->shear_modulus = v[0];
     out->poisson = v[1];
     out->friction_deg = v[2];

@@ -1,15 +1,18 @@
 /*
  * layer_settled.c: does the pile rest under the impact's material? The sample
  * keeps the overlaps its pile settled with, and, when layer-make wrote it, the
- * material and gravity it settled under (gw_layer_settled, read from its
- * settings line). A Hertz contact carries F = K_n u^(3/2) with K_n ~ G/(1 - nu)
- * (physics.md 2.1, B.3), so a pile at rest under (G, nu, rho, g, mass law)_s
- * has overlaps u ~ (m g / K_n)^(2/3); under the impact's (...)_i they carry
+ * material, gravity and clump mass it settled under (gw_layer_settled, read
+ * from its settings line). A Hertz contact carries F = K_n u^(3/2) with
+ * K_n ~ G/(1 - nu) (physics.md 2.1, B.3), so a pile at rest under
+ * (G, nu, rho, g, mass law, clump mass)_s has overlaps u ~ (m g / K_n)^(2/3);
+ * under the impact's (...)_i they carry
  *   q = [G/(1 - nu)]_i / [G/(1 - nu)]_s x W_s / W_i
- * of the weight they carried at rest (W: the pile's weight, sum of m(r) g of
- * its discs under each mass law). q < 1: the pile sags into the impact,
- * q > 1: it springs up; either way the impact measures the pile's own motion
- * as well as the block's.
+ * of the weight they carried at rest (W: the pile's weight, the sum of its
+ * bodies' masses times g under each law: a disc's m(r), a clump's members
+ * added (sum) or its union's area times rho (union); the union of a clump's
+ * overlapping members weighs less than their sum). q < 1: the pile sags into
+ * the impact, q > 1: it springs up; either way the impact measures the pile's
+ * own motion as well as the block's.
  *
  * The thresholds: a Hertz drop from overlap x d to the rest overlap d
  * (x = q^(2/3)) turns E_rest [(5/2)(1 - x) - (1 - x^(5/2))] into motion, E_rest
@@ -24,27 +27,92 @@
  * 7.5 % at 0.38, and 0.2-5.4 % at 0.75-1.13, where settling a matched pile
  * again alone changes it by 1.5 % (at 20 m/s the block's 176 kJ drown the
  * pile's joules: e_n within 0.0035 at q <= 0.38). Outside [0.5, 1.5] the
- * impact is refused unless asked for (other_settling); any other difference
- * is a warning: q not 1, another mass law (q then from the total weights,
- * the discs' shares differ), another friction angle (the pile may lean on
- * friction it no longer has: settled at 30 degrees and run at 0, 26 J of
- * soil motion in 30 ms against 2 J).
+ * impact is refused unless asked for (other_settling).
+ *
+ * Friction: the tangential forces start at zero, so a pile leans on the
+ * friction it settled with only once it sags, and with less of it the pile
+ * flows. Measured on the 300-disc pile (layer-make --n 300 --seed 1, settled
+ * at 30 degrees) left alone for 100 ms under phi (verlet, the impact's step
+ * at 2 m/s): 36 J of soil motion in the first 5 ms at every phi >= 15 (the
+ * start), then at 30, 25, 20 and 19 degrees the motion decays (9.1, 6.6, 4.9
+ * and 6.0 J at 100 ms) while the pile sinks by 26, 39, 145 and 257 J of
+ * potential energy; at 17.5, 16 and 15 degrees it grows (64, 240 and 436 J at
+ * 100 ms; 711, 1270 and 1770 J of potential energy), at 10, 5 and 0 degrees
+ * 487, 1960 and 4910 J by 30 ms: the pile flows. Settled again from there
+ * (Hunt-Crossley 0.3 s/m), the 15-degree pile collapses by 41 kJ of
+ * potential energy in 2.4 s, the 10-degree one by 88 kJ: a pile run at
+ * 15 degrees or less is collapsing into another pile while the block is in
+ * it (2 m/s: 0.14 s), and its e_n (0.112 at 15, 0.168 at 10, 0.011 at 0
+ * degrees, against 0.109 at 30; 0.364, 0.030 and 0.211 on the piles settled
+ * again) is that of neither. At 20 degrees e_n is 0.1065 against 0.1050 on the
+ * pile settled again at 20 (1.4 %; settling the 30-degree pile again at 30
+ * alone moves it from 0.1088 to 0.0981); the block's 176 kJ at 20 m/s do not
+ * drown it (e_n 0.0226 against 0.0221 at 20 degrees, 0.0073 against 0.198 at
+ * 15, 0.129 against 0.177 at 10). So the friction coefficient the
+ * impact gives must be at least GW_LAYER_SETTLED_FRICTION_MIN = 0.6 of the
+ * settling's (tan 19 / tan 30 = 0.597 sinks, tan 17.5 / tan 30 = 0.546
+ * flows; a 40-disc pile, one or two discs deep, held at 10 degrees, 1.75 J
+ * in 30 ms against 1.98 J at 30, and flowed at 0, 26 J), else refused unless
+ * other_settling.
+ * Any other difference is a warning: q not 1, another mass law or clump mass
+ * (q then from the total weights, the bodies' shares differ), a lower
+ * friction within the bound or a higher one.
  * Units: SI (Pa, kg/m^3, m/s^2), angles in degrees.
  */
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "layer_impl.h"
 #include "gw_locale.h"
 
-double gw_layer_settled_load_ratio(const gw_layer_sample *smp, const gw_layer_params *lp)
+/* The clump mass law the sample's bodies settled under: the settings line's,
+ * else the sample's own clump_mass line. */
+static int settled_clump_mass(const gw_layer_sample *smp)
 {
-    if (!smp || !lp || !smp->settled.recorded)
-        return NAN;
+    return smp->settled.clump_mass >= 0 ? smp->settled.clump_mass : smp->clump_mass;
+}
+
+/* The weight of the sample's clumps as unions under lp (their masses as
+ * gw_layer_create sets them; a one-disc clump weighs its disc), N: *w;
+ * GW_OK, or gw_layer_create's status and message in err. */
+static int union_weight(const gw_layer_sample *smp, const gw_layer_params *lp, double *w, gw_err *err)
+{
+    gw_layer_params p = *lp;
+    p.clump_mass = GW_LAYER_CLUMP_MASS_UNION;
+    p.width = smp->width;
+    gw_layer_body *b = calloc((size_t)smp->n, sizeof *b);
+    char *seen = calloc((size_t)smp->n, 1);
+    gw_layer *L = NULL;
+    int rc = b && seen ? GW_OK : gw_err_set(err, GW_ENOMEM, "out of memory weighing the sample's clumps");
+    for (int i = 0; rc == GW_OK && i < smp->n; i++)
+        b[i] = (gw_layer_body){.x = smp->x[i], .y = smp->y[i], .r = smp->r[i], .clump = smp->body[i] + 1};
+    if (rc == GW_OK)
+        rc = gw_layer_create(&p, smp->n, b, &L, err);
+    *w = 0;
+    for (int i = 0; rc == GW_OK && i < smp->n; i++) {
+        const int k = gw_layer_body_of(L, i);
+        if (!seen[k]++)
+            *w += gw_layer_particle_mass(L, i) * lp->gravity;
+    }
+    gw_layer_free(L);
+    free(b);
+    free(seen);
+    return rc;
+}
+
+/* q of the header comment for smp under lp into *q (NaN: nothing recorded);
+ * GW_OK, or the status of weighing union clumps (err: why). */
+static int load_ratio(const gw_layer_sample *smp, const gw_layer_params *lp, double *q, gw_err *err)
+{
+    *q = NAN;
+    if (!smp->settled.recorded)
+        return GW_OK;
     const gw_layer_settled *st = &smp->settled;
     gw_layer_params sp = *lp; /* the settling's material, for its masses */
     sp.density = st->density;
     sp.mass_law = st->mass_law;
+    sp.gravity = st->gravity;
     double ws = 0, wi = 0;
     for (int i = 0; i < smp->n; i++) {
         ws += gw_layer_mass(&sp, smp->r[i]);
@@ -52,8 +120,26 @@ double gw_layer_settled_load_ratio(const gw_layer_sample *smp, const gw_layer_pa
     }
     ws *= st->gravity;
     wi *= lp->gravity;
+    /* a clump pile whose clump mass differs: the union side weighed as such
+     * (both union: the union's areas cancel, as the discs' do; without
+     * clumps the law is moot) */
+    const int cs = settled_clump_mass(smp), ci = lp->clump_mass;
+    int rc = GW_OK;
+    if (smp->body && cs != ci)
+        rc = cs == GW_LAYER_CLUMP_MASS_UNION ? union_weight(smp, &sp, &ws, err) : union_weight(smp, lp, &wi, err);
     const double kr = (lp->shear_modulus / (1 - lp->poisson)) / (st->shear_modulus / (1 - st->poisson));
-    return wi > 0 ? kr * ws / wi : INFINITY;
+    if (rc == GW_OK)
+        *q = wi > 0 ? kr * ws / wi : INFINITY;
+    return rc;
+}
+
+double gw_layer_settled_load_ratio(const gw_layer_sample *smp, const gw_layer_params *lp)
+{
+    double q = NAN;
+    gw_err e = {{0}};
+    if (smp && lp)
+        load_ratio(smp, lp, &q, &e);
+    return q;
 }
 
 /* Append "NAME A UNIT against the impact's B" to the list in buf when a != b. */
@@ -63,6 +149,16 @@ static void differ(char *buf, size_t n, const char *name, double a, double b, co
         return;
     const size_t k = strlen(buf);
     gw_snprintf(buf + k, n - k, "%s%s %g%s against the impact's %g", k ? ", " : "", name, a, unit, b);
+}
+
+/* The impact's friction coefficient over the settling's (1 when the same;
+ * an infinity for a pile settled without friction, which leaned on none). */
+static double friction_ratio(double settled_deg, double impact_deg)
+{
+    if (settled_deg == impact_deg)
+        return 1;
+    const double ts = tan(settled_deg * M_PI / 180), ti = tan(impact_deg * M_PI / 180);
+    return ts > 0 ? ti / ts : INFINITY;
 }
 
 int gw_layer_impact_settled_check(const gw_layer_sample *smp, const gw_layer_params *lp, int other_settling,
@@ -75,9 +171,20 @@ int gw_layer_impact_settled_check(const gw_layer_sample *smp, const gw_layer_par
     if (!smp->settled.recorded) /* hand-written, older, or in memory: nothing to compare */
         return GW_OK;
     const gw_layer_settled *st = &smp->settled;
-    const double q = gw_layer_settled_load_ratio(smp, lp);
+    char nm[300] = "", at[48] = "";
+    if (name)
+        gw_snprintf(nm, sizeof nm, " '%s'", name);
+    if (st->line > 0)
+        gw_snprintf(at, sizeof at, ", line %ld", st->line);
+    double q;
+    gw_err e = {{0}};
+    int rc = load_ratio(smp, lp, &q, &e);
+    if (rc != GW_OK) /* its clumps could not be weighed as unions */
+        return gw_err_set(err, rc, "sample%s: weighing its clumps: %s", nm, e.msg);
+    const int cs = settled_clump_mass(smp);
     const int law = st->mass_law != lp->mass_law, fric = st->friction_deg != lp->friction_deg;
-    if (!law && !fric && fabs(q - 1) <= 1e-9) /* the same rest: nothing to say */
+    const int clump = smp->body && cs != lp->clump_mass; /* without clumps the clump mass is moot */
+    if (!law && !clump && !fric && fabs(q - 1) <= 1e-9) /* the same rest: nothing to say */
         return GW_OK;
     char diff[512] = "";
     differ(diff, sizeof diff, "shear-modulus", st->shear_modulus, lp->shear_modulus, " Pa");
@@ -91,12 +198,14 @@ int gw_layer_impact_settled_check(const gw_layer_sample *smp, const gw_layer_par
                     st->mass_law == GW_LAYER_MASS_SPHERE ? "sphere" : "disc",
                     lp->mass_law == GW_LAYER_MASS_SPHERE ? "sphere" : "disc");
     }
-    char nm[300] = "", at[48] = "";
-    if (name)
-        gw_snprintf(nm, sizeof nm, " '%s'", name);
-    if (st->line > 0)
-        gw_snprintf(at, sizeof at, ", line %ld", st->line);
+    if (clump) {
+        const size_t k = strlen(diff);
+        gw_snprintf(diff + k, sizeof diff - k, "%sclump-mass %s against the impact's %s", k ? ", " : "",
+                    gw_layer_clump_mass_name(cs), gw_layer_clump_mass_name(lp->clump_mass));
+    }
     const int away = !(q >= GW_LAYER_SETTLED_LOAD_MIN && q <= GW_LAYER_SETTLED_LOAD_MAX);
+    const double mu = friction_ratio(st->friction_deg, lp->friction_deg);
+    const int flows = mu < GW_LAYER_SETTLED_FRICTION_MIN;
     const char *motion = q < 1 ? "sags into the impact" : "springs up into the impact";
     if (away && !other_settling)
         return gw_err_set(err, GW_EINVAL, "sample%s: it settled with %s (its settings line%s): under the impact's "
@@ -104,21 +213,38 @@ int gw_layer_impact_settled_check(const gw_layer_sample *smp, const gw_layer_par
                           "most %g), so the pile %s and the run measures its motion too; give the settling's "
                           "values, or other-settling to run it anyway (the result then records a warning)", nm,
                           diff, at, q, GW_LAYER_SETTLED_LOAD_MIN, GW_LAYER_SETTLED_LOAD_MAX, motion);
+    if (flows && !other_settling)
+        return gw_err_set(err, GW_EINVAL, "sample%s: it settled with %s (its settings line%s): the impact's "
+                          "friction coefficient tan(%g deg) is %.3g of the settling's tan(%g deg) (at least %g), so "
+                          "the pile, which leans on friction it no longer has, flows under its own weight and the "
+                          "run measures its collapse too; give a friction of at least %.3g deg, or other-settling "
+                          "to run it anyway (the result then records a warning)", nm, diff, at, lp->friction_deg,
+                          mu, st->friction_deg, GW_LAYER_SETTLED_FRICTION_MIN,
+                          atan(GW_LAYER_SETTLED_FRICTION_MIN * tan(st->friction_deg * M_PI / 180)) * 180 / M_PI);
     if (!warning || n == 0)
         return GW_OK;
+    char slide[160] = "";
+    if (flows)
+        gw_snprintf(slide, sizeof slide, "; its friction coefficient is %.3g of the settling's (below %g, run by "
+                    "other-settling): the pile flows on it", mu, GW_LAYER_SETTLED_FRICTION_MIN);
+    else if (mu < 1)
+        gw_snprintf(slide, sizeof slide, "; its friction coefficient is %.3g of the settling's (at least %g): the "
+                    "pile may slide on it a little", mu, GW_LAYER_SETTLED_FRICTION_MIN);
     if (away)
         gw_snprintf(warning, n, "the sample settled with %s: its contacts carry %.3g times the weight they carried "
-                    "at rest (outside [%g, %g], run by other-settling): the pile %s, and the outcome holds its "
+                    "at rest (outside [%g, %g], run by other-settling): the pile %s%s, and the outcome holds its "
                     "motion as well as the block's", diff, q, GW_LAYER_SETTLED_LOAD_MIN, GW_LAYER_SETTLED_LOAD_MAX,
-                    motion);
+                    motion, slide);
+    else if (flows)
+        gw_snprintf(warning, n, "the sample settled with %s: its contacts carry %.3g times the weight they carried "
+                    "at rest (within [%g, %g])%s, and the outcome holds its motion as well as the block's", diff, q,
+                    GW_LAYER_SETTLED_LOAD_MIN, GW_LAYER_SETTLED_LOAD_MAX, slide);
     else if (fabs(q - 1) > 1e-9)
         gw_snprintf(warning, n, "the sample settled with %s: its contacts carry %.3g times the weight they carried "
                     "at rest (within [%g, %g]): the pile %s a little%s", diff, q, GW_LAYER_SETTLED_LOAD_MIN,
-                    GW_LAYER_SETTLED_LOAD_MAX, motion,
-                    fric && lp->friction_deg < st->friction_deg ? ", and may slide on the lower friction" : "");
+                    GW_LAYER_SETTLED_LOAD_MAX, motion, slide);
     else
         gw_snprintf(warning, n, "the sample settled with %s: its contacts carry its weight as at rest%s", diff,
-                    fric && lp->friction_deg < st->friction_deg ? ", but it may slide on the lower friction"
-                    : law ? ", though its discs' shares of it differ" : "");
+                    slide[0] ? slide : law || clump ? ", though its bodies' shares of it differ" : "");
     return GW_OK;
 }

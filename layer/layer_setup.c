@@ -73,7 +73,8 @@ static const gw_param impact_params[] = {
      * from it the pile is not at rest at t = 0 (layer_settled.c) */
     FLAG("other-settling", other_settling, "run a sample settled with another material or gravity (its settings line) "
          "whose contacts carry less than 0.5 or more than 1.5 times the weight they carried at rest under "
-         "this material; the result records a warning (docs/cli.md)"),
+         "this material (and the floor load that explains), or whose friction coefficient is below 0.6 of "
+         "the settling's; the result records a warning (docs/cli.md)"),
     /* optional: with full, until is refused at either value (rebound, the
      * default's value given, passed in silence though full runs to t-max) */
     GW_PARAM_OPT_CHOICE_ROW("until", OFF(until), "rebound,verdict", "rebound", "WHAT",
@@ -371,7 +372,7 @@ static int resolve(const gw_layer_impact_setup *s, const gw_layer_sample *smp, g
         rc = gw_layer_impact_step_check(ip, *type, sp, err);
     if (rc == GW_OK) /* the warning is the run's (gw_layer_impact keeps it in its result) */
         rc = gw_layer_impact_settled_check(smp, lp, s->other_settling, s->sample, NULL, 0, err);
-    return rc == GW_OK ? gw_layer_impact_rest_check(smp, lp, s->sample, err) : rc;
+    return rc == GW_OK ? layer_rest_check(smp, lp, s->other_settling, s->sample, err) : rc;
 }
 
 /* The setup's rows in their ranges and a sample named: what a plan (the

@@ -22,7 +22,20 @@
  * the earlier columns keep working) the first free-flight maximum e_n_first,
  * e_first, alpha_r_first, v_nr_first, v_r_first, and the event times t_leave
  * (the block leaves moving up), t_rebound (T_i) and t_f (T_f) in s
- * (layer_outcome.c). Undefined values (e.g. e_n of a block that does not
+ * (layer_outcome.c), then the sample's settling against the case's material
+ * (layer_settled.c): settled_load_ratio q, the weight the pile's contacts
+ * carry under it over the weight they carried at rest (1: at rest as settled;
+ * nan: the sample records no settling), and settling_warning, 1 when the case
+ * ran on a sample settled under another material, gravity, mass law, clump
+ * mass or friction (the warning layer-impact prints; with other-settling, one
+ * far from rest), else 0. A reader of the table alone sees which rows hold the
+ * pile's own motion as well as the block's: the check pass's tally (below) is
+ * said once on stderr, and layer-stats counts these rows. The two are columns,
+ * not a line of the table's head, because the head is written by the sweep
+ * (common/sweep/) from the journal's rows alone, and a row carries its own
+ * case's verdict through a resume, an MPI gather and a table cut to some
+ * rows; a journal of the build before them is refused by its "# build" line
+ * and its row width, as for any column added. Undefined values (e.g. e_n of a block that does not
  * bounce, a wave speed without enough crowns) are NaN, written as "nan"
  * whatever the sign bit, so tables are byte-identical however the cases ran.
  * Undecided outcomes are NaN too: bounced = nan when the run ended before the
@@ -54,7 +67,8 @@
 static const char *const columns[] = {
     "x_impact", "bounced", "e_n", "e", "alpha_r", "v_ni", "v_nr", "v_r", "penetration", "penetration_rm",
     "dissipated_first_contact", "block_loss_first_contact", "energy_error", "wave_speed", "t_end", "steps",
-    "e_n_first", "e_first", "alpha_r_first", "v_nr_first", "v_r_first", "t_leave", "t_rebound", "t_f"};
+    "e_n_first", "e_first", "alpha_r_first", "v_nr_first", "v_r_first", "t_leave", "t_rebound", "t_f",
+    "settled_load_ratio", "settling_warning"};
 #define NCOLUMNS ((int)(sizeof columns / sizeof columns[0]))
 
 /* The impact point among points (the sweep's own keys). */
@@ -174,6 +188,7 @@ static void settling_tally(check_memo *c, const gw_layer_impact_setup *s)
         gw_layer_params lp = gw_layer_params_default();
         GW_LAYER_MATERIAL_TO_PARAMS(&lp, s);
         lp.mass_law = s->mass_law >= 0 ? s->mass_law : m->s.mass_law;
+        lp.clump_mass = s->clump_mass >= 0 ? s->clump_mass : m->s.clump_mass;
         char w[768] = "";
         gw_err e = {{0}};
         if (gw_layer_impact_settled_check(&m->s, &lp, s->other_settling, NULL, w, sizeof w, &e) == GW_OK && w[0] &&
@@ -189,7 +204,8 @@ static int memo_warnings(const void *memo, char **list)
     if (!c || c->nsettling == 0)
         return GW_OK;
     return gw_warnings_add(list, "%ld of %ld cases run on a sample settled under another material (their rows "
-                           "hold its motion too); the first: %s", c->nsettling, c->ncases, c->settling);
+                           "hold its motion too, and say so: settling_warning = 1); the first: %s", c->nsettling,
+                           c->ncases, c->settling);
 }
 
 static void memo_free(void *memo)
@@ -306,7 +322,7 @@ static int run(int nk, const char *const *names, const char *const *values, doub
                                     r->dissipated_first_contact, r->block_loss_first_contact, r->energy_error,
                                     r->wave_speed, r->t_end, (double)r->stats.steps, r->e_n_first, r->e_first,
                                     r->alpha_r_first_deg, r->v_nr_first, r->v_r_first, r->t_leave,
-                                    r->t_rebound, r->t_f};
+                                    r->t_rebound, r->t_f, r->settled_load_ratio, r->settling[0] ? 1 : 0};
         for (int i = 0; i < NCOLUMNS; i++)
             out[i] = canon(v[i]);
         /* the content hash of the sample bytes this run read (the sweep

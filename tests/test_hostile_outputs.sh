@@ -141,6 +141,16 @@ rc=$?
     cmp -s "$d/impact.json" "$tmp/impact.before" && [ "$(cmdlines "$d")" = "command: granwave layer-impact --sample $S --t-max 0.01 --out $d" ] &&
     notmp "$d" && ok "3: layer-impact, a write that fails: exit 1 naming the file, the earlier run's files as they were" ||
     ko "3: layer-impact write failure: exit $rc, $(cat "$tmp/stderr"), runs $(cmdlines "$d" | tr '\n' '|')"
+# the same with the sample's path 19 bytes longer in the header: the failure
+# falls where the stream had dropped its buffer, and the reason given was
+# "Input/output error" (gw_afile_commit now asks the file again)
+cp "$S" "$tmp/s20_a_longer_path_19.txt"
+(trap '' XFSZ; ulimit -f 48; exec "$GW" layer-impact --sample "$tmp/s20_a_longer_path_19.txt" --t-max 0.01 --vi 15 \
+    --out "$tmp/l3b") >/dev/null 2>"$tmp/stderr"
+rc=$?
+[ $rc -eq 1 ] && grep -q "^granwave layer-impact --out: $tmp/l3b/[a-z_]*\.[a-z5]*: write failed: File too large" "$tmp/stderr" &&
+    ok "3: the write failure at another offset: File too large too" ||
+    ko "3: the write failure at another offset: exit $rc, $(cat "$tmp/stderr")"
 
 # --- 4: layer-impact killed during its run -----------------------------------
 d=$tmp/l4

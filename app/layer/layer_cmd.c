@@ -422,6 +422,7 @@ static cJSON *impact_json(const impact_cli *c, const gw_layer_impact_result *r,
         cJSON_AddNumberToObject(st, "density", sl.density);
         cJSON_AddNumberToObject(st, "gravity", sl.gravity);
         cJSON_AddStringToObject(st, "mass_law", gw_layer_mass_law_name(sl.mass_law));
+        cJSON_AddStringToObject(st, "clump_mass", gw_layer_clump_mass_name(c->settled.clump_mass));
         cJSON_AddNumberToObject(st, "load_ratio", c->settled_q);
     } else {
         cJSON_AddNullToObject(s, "sample_settled");
@@ -639,6 +640,8 @@ int gw_cmd_layer_impact(int argc, char **argv)
     c.rm = plan.sample.rm;
     c.sample_hash = plan.sample.content_hash;
     c.settled = plan.sample.settled;
+    if (c.settled.clump_mass < 0) /* the line does not say: the sample's own clump_mass line */
+        c.settled.clump_mass = plan.sample.clump_mass;
     c.settled_q = gw_layer_settled_load_ratio(&plan.sample, &plan.lp);
     c.solver = gw_solver_type_name(plan.type);
     const gw_solver_type *type = c.type;

@@ -331,9 +331,39 @@ void gw_stats_analysis_free(gw_stats_analysis *A)
     memset(A, 0, sizeof *A);
 }
 
+/* The rows of a layer sweep whose case ran on a sample settled under
+ * another material, gravity, mass law, clump mass or friction (the model's
+ * column settling_warning = 1, tables since session 28; an older table has
+ * no such column and nothing is said): their outcomes hold the pile's own
+ * motion as well as the block's, which the table's numbers cannot show. */
+static int settling_warning(gw_stats_analysis *A)
+{
+    const gw_stats_table *t = &A->t;
+    const int cw = gw_stats_table_col(t, "settling_warning"), cq = gw_stats_table_col(t, "settled_load_ratio");
+    long nw = 0;
+    double lo = INFINITY, hi = -INFINITY;
+    for (long r = 0; cw >= 0 && r < t->nrows; r++)
+        if (t->val[r * t->ncols + cw] == 1) {
+            nw++;
+            const double q = cq >= 0 ? t->val[r * t->ncols + cq] : NAN;
+            lo = fmin(lo, q), hi = fmax(hi, q); /* fmin and fmax pass over nan */
+        }
+    if (nw == 0)
+        return GW_OK;
+    char qs[96] = "";
+    if (lo <= hi)
+        gw_snprintf(qs, sizeof qs, "; settled_load_ratio %.3g to %.3g, 1 at rest", lo, hi);
+    return gw_warnings_add(&A->warnings,
+                           "%ld of %ld rows ran on a sample settled under another material, gravity, mass law, "
+                           "clump mass or friction than their case's (column settling_warning = 1%s): their outcomes "
+                           "hold the pile's own motion as well as the block's, and the statistics include them",
+                           nw, t->nrows, qs);
+}
+
 /* The analysis's warnings, from the counts groups.csv records: points whose
  * bounce is undecided (n_points - n_valid) and bouncing points without e
- * (n_bounced - n_e: the run ended before T_f, or stopped at the verdict). */
+ * (n_bounced - n_e: the run ended before T_f, or stopped at the verdict);
+ * rows on a sample settled under another material (settling_warning). */
 static int warnings_make(gw_stats_analysis *A)
 {
     long undecided = 0, uncertain = 0, cut = 0;
@@ -355,6 +385,8 @@ static int warnings_make(gw_stats_analysis *A)
                              "verdict: until = verdict) are left out of the e_n, e, alpha_r statistics; e_n_first, "
                              "e_first, alpha_r_first cover them",
                              cut);
+    if (rc == GW_OK)
+        rc = settling_warning(A);
     /* the B.31 options act on the fits alone: given (other than their
      * defaults) on a table whose diagrams have no boundary crossing, no fit
      * can be made whatever they say, and they changed nothing (with crossings,

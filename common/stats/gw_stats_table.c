@@ -314,7 +314,8 @@ static int nonnegative(const char *col)
     static const char *const names[] = {"bounced", "e_n", "e", "alpha_r", "v_ni", "v_nr", "v_r", "penetration",
                                         "penetration_rm", "energy_error",
                                         "t_end", "steps", "e_n_first", "e_first", "alpha_r_first",
-                                        "v_nr_first", "v_r_first", "t_leave", "t_rebound", "t_f"};
+                                        "v_nr_first", "v_r_first", "t_leave", "t_rebound", "t_f",
+                                        "settled_load_ratio", "settling_warning"};
     for (size_t k = 0; k < sizeof names / sizeof names[0]; k++)
         if (strcmp(col, names[k]) == 0)
             return 1;

@@ -553,3 +553,8 @@ int gw_layer_sample_read(const char *path, gw_layer_sample *s, gw_err *err)
     }
     return rc;
 }
+
+size_t gw_layer_sample_size(void)
+{
+    return sizeof(gw_layer_sample);
+}

@@ -149,13 +149,32 @@ print(f(*args), err.value.decode())
     assert p.stdout.strip() == f"-1 {name}: {arg} is NULL", p.stdout
 
 
+class _Settled(ctypes.Structure):
+    """gw_layer_settled (layer/gw_layer.h)."""
+    _fields_ = [("recorded", ctypes.c_int), ("shear_modulus", ctypes.c_double), ("poisson", ctypes.c_double),
+                ("friction_deg", ctypes.c_double), ("density", ctypes.c_double), ("gravity", ctypes.c_double),
+                ("mass_law", ctypes.c_int), ("line", ctypes.c_long), ("clump_mass", ctypes.c_int)]
+
+
 class _Sample(ctypes.Structure):
-    """gw_layer_sample (layer/gw_layer.h)."""
+    """gw_layer_sample (layer/gw_layer.h). Its size is checked against the
+    library's (gw_layer_sample_size) before gw_layer_sample_read writes one:
+    this mirror without the appended settled record was written 80 bytes past
+    its end, which corrupted the interpreter's heap and crashed later tests of
+    the same session (a segfault in test_hostile_twentyseventh_py's
+    layer_impact or in the garbage collector)."""
     _fields_ = [("n", ctypes.c_int), ("width", ctypes.c_double), ("rm", ctypes.c_double),
                 ("volume_ratio", ctypes.c_double), ("porosity", ctypes.c_double), ("seed", ctypes.c_long),
                 ("mass_law", ctypes.c_int), ("clump_mass", ctypes.c_int), ("x", ctypes.POINTER(ctypes.c_double)),
                 ("y", ctypes.POINTER(ctypes.c_double)), ("r", ctypes.POINTER(ctypes.c_double)),
-                ("body", ctypes.POINTER(ctypes.c_int)), ("content_hash", ctypes.c_ulonglong)]
+                ("body", ctypes.POINTER(ctypes.c_int)), ("content_hash", ctypes.c_ulonglong),
+                ("settled", _Settled)]
+
+
+def test_sample_mirror_is_the_library_size():
+    lib = ctypes.CDLL(granwave.library_path)
+    lib.gw_layer_sample_size.restype = ctypes.c_size_t
+    assert ctypes.sizeof(_Sample) == lib.gw_layer_sample_size()
 
 
 @pytest.mark.parametrize("x0, written", [(0.1, False), (0.3, True)])
@@ -164,6 +183,8 @@ def test_sample_write_refuses_what_the_reader_refuses(tmp_path, x0, written):
     checks; two discs at one place (overlap 2 R_p) were written all the same
     and then refused by gw_layer_sample_read. Touching discs are written."""
     lib = ctypes.CDLL(granwave.library_path)
+    lib.gw_layer_sample_size.restype = ctypes.c_size_t
+    assert ctypes.sizeof(_Sample) == lib.gw_layer_sample_size()  # before the library writes one
     d = lambda v: (ctypes.c_double * 3)(*v)  # noqa: E731
     s = _Sample(n=3, width=1.0, rm=0.1, volume_ratio=0, porosity=float("nan"), seed=0, mass_law=0, clump_mass=0,
                 x=d([0.1, x0, 0.5]), y=d([0.1, 0.1, 0.1]), r=d([0.1, 0.1, 0.1]), body=None)

@@ -429,6 +429,16 @@ typedef struct gw_chain_result {
  * partially filled and must still be freed. */
 int gw_chain_collide(const gw_chain *c, const gw_chain_run_opts *o,
                      gw_chain_result *r, gw_err *err);
+/* Where a collision is: t the time reached, s; t_expect the collision's
+ * expected length (n bead-to-bead transits and the wall contact, on the
+ * heaviest bead's scales; t_max when shorter), s; t_max the run's limit, s.
+ * A run often goes on past t_expect (every contact open and separating comes
+ * after bead 1 leaves the wall): t / t_expect then exceeds 1. */
+typedef void (*gw_chain_progress_fn)(void *ctx, double t, double t_expect, double t_max);
+/* gw_chain_collide with progress(pctx, ...) (may be NULL) at every sample and
+ * event, t never decreasing; the results are those of gw_chain_collide. */
+int gw_chain_collide_progress(const gw_chain *c, const gw_chain_run_opts *o, gw_chain_progress_fn progress,
+                              void *pctx, gw_chain_result *r, gw_err *err);
 void gw_chain_result_free(gw_chain_result *r);
 /* The warnings of a collision, appended to *list (gw_warnings_add,
  * gw_common.h): one that had not ended at t_max (converged 0: which results

@@ -651,6 +651,13 @@ int gw_chain_dispersion_warnings(const gw_chain_disp_result *r, char **list);
  * GW_ESOLVER / GW_ELIMIT (backend message and time in err). */
 int gw_chain_disp_run(const gw_chain_disp_params *p, const gw_solver_type *solver,
                       const gw_solver_params *sp, gw_chain_disp_result *r, gw_err *err);
+/* The same with progress(pctx, k, t_samples) (may be NULL) after each of the
+ * t_samples velocity samples is integrated (the transform after the last
+ * takes about a tenth of the run: 0.5 of 4.5 s at n 8192); non-zero stops the run: GW_ECANCELED, r as after a
+ * failure. */
+int gw_chain_disp_run_progress(const gw_chain_disp_params *p, const gw_solver_type *solver,
+                               const gw_solver_params *sp, gw_progress_fn progress, void *pctx,
+                               gw_chain_disp_result *r, gw_err *err);
 void gw_chain_disp_result_free(gw_chain_disp_result *r);
 
 /* Power spectrum of a column's wall force (the plateau oscillation, 1/P). */

@@ -166,11 +166,11 @@ static int observe(run_state *st, double t, const double *y, int is_event)
     double err = chain_energy_rel_error(st->c, &e, r->e0, &st->wg);
     if (err > r->energy_error)
         r->energy_error = err;
+    if (st->progress) /* where the run is (gw_chain_collide_progress) */
+        st->progress(st->pctx, t, st->t_expect, st->t_max);
     /* an event found exactly at an output time is observed twice, by the root
      * and by the output, in the same state: one row (a drop's trace held the
      * row at 2.51e-4 s twice, and dF/dt from the files divided by zero) */
-    if (st->progress) /* before the sample: a trace's stop still reports where the run was */
-        st->progress(st->pctx, t, st->t_expect, st->t_max);
     if (st->o->sample && t != st->t_sampled) {
         st->t_sampled = t;
         return st->o->sample(st->o->sample_ctx, t, y, f, is_event);

@@ -436,7 +436,8 @@ int gw_chain_collide(const gw_chain *c, const gw_chain_run_opts *o,
  * after bead 1 leaves the wall): t / t_expect then exceeds 1. */
 typedef void (*gw_chain_progress_fn)(void *ctx, double t, double t_expect, double t_max);
 /* gw_chain_collide with progress(pctx, ...) (may be NULL) at every sample and
- * event, t never decreasing; the results are those of gw_chain_collide. */
+ * event, in the run's order; the results are those of gw_chain_collide (the
+ * callback cannot stop the run: a caller that must stops through o->sample). */
 int gw_chain_collide_progress(const gw_chain *c, const gw_chain_run_opts *o, gw_chain_progress_fn progress,
                               void *pctx, gw_chain_result *r, gw_err *err);
 void gw_chain_result_free(gw_chain_result *r);

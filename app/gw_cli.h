@@ -104,6 +104,17 @@ typedef struct gw_cli_progress {
 void gw_cli_progress_init(gw_cli_progress *p, const char *prefix, const char *unit, double every_ms);
 /* gw_progress_fn: a line after the last unit and when due; returns 0. */
 int gw_cli_progress_report(void *ctx, long done, long total);
+/* Progress of one run in simulated time, whose length is known only roughly
+ * (a collision: gw_chain_progress_fn's t, t_expect, t_max, s). One line when
+ * due ("PREFIXt = T ms of ~E ms expected (P%), X s elapsed, ~L s left"; past
+ * t_expect "... (P%, t-max M ms), X s elapsed, at most ~L s left"), or, last 1,
+ * the run's end at t ("... (P%): ended, X s elapsed"). Due: the first at
+ * after_ms, then every max(every_ms, a twentieth of the time elapsed), so an
+ * hours-long run says where it is without a line every few seconds. */
+void gw_cli_progress_time(gw_cli_progress *p, double t, double t_expect, double t_max, int last);
+/* The unit a simulated length t (s) prints in, "s", "ms" or "us", and into
+ * *scale that unit's count in 1 s: one choice for every progress line. */
+const char *gw_cli_time_unit(double t, double *scale);
 
 /* A number for a text output: v printed with fmt (one conversion of a double)
  * into buf, or "n/a" where v is not finite, the JSON's null (a period from one

@@ -179,6 +179,40 @@ int gw_cli_progress_report(void *ctx, long done, long total)
     return 0;
 }
 
+const char *gw_cli_time_unit(double t, double *scale)
+{
+    *scale = t >= 1.0 ? 1.0 : t >= 1e-3 ? 1e3 : 1e6;
+    return t >= 1.0 ? "s" : t >= 1e-3 ? "ms" : "us";
+}
+
+void gw_cli_progress_time(gw_cli_progress *p, double t, double t_expect, double t_max, int last)
+{
+    if (!p || p->quiet || !(t_expect > 0))
+        return;
+    const double now = gw_clock_ms(), el_ms = now - p->t0;
+    if (p->after_ms > 0 && el_ms < p->after_ms)
+        return;
+    if (!last && now - p->last < fmax(p->every_ms, el_ms / 20.0))
+        return;
+    if (p->header) {
+        fprintf(p->fp, "%s\n", p->header);
+        p->header = NULL;
+    }
+    double sc;
+    const char *u = gw_cli_time_unit(t_expect, &sc);
+    const double el = el_ms / 1e3, frac = t / t_expect;
+    fprintf(p->fp, "%st = %.4g %s of ~%.4g %s expected (%.1f%%", p->prefix, t * sc, u, t_expect * sc, u, 100.0 * frac);
+    if (last)
+        fprintf(p->fp, "): ended, %.1f s elapsed\n", el);
+    else if (t < t_expect) /* at the pace so far */
+        fprintf(p->fp, "), %.1f s elapsed, ~%.1f s left\n", el, t > 0 ? el / t * (t_expect - t) : 0.0);
+    else /* the end comes when every contact has opened: at the latest at t_max */
+        fprintf(p->fp, ", t-max %.4g %s), %.1f s elapsed, at most ~%.1f s left\n", t_max * sc, u, el,
+                el / t * fmax(t_max - t, 0.0));
+    fflush(p->fp);
+    p->last = now;
+}
+
 /* Into made: the shallowest directory of path (or path itself) that does not
  * exist yet, "" when path exists. */
 static void first_missing(const char *path, char *made, size_t n)

@@ -52,6 +52,8 @@ typedef struct run_state {
                                 collision: held_by_gravity applies */
     double q_prev;           /* the beads' momentum at the previous observation, kg m/s */
     int held;                /* the column fell back on the wall (held_by_gravity) */
+    gw_chain_progress_fn progress; /* gw_chain_collide_progress's, or NULL */
+    void *pctx;
 } run_state;
 
 /* Steps a whole run may take: the plan bounds them at 1e8 over the expected
@@ -164,6 +166,8 @@ static int observe(run_state *st, double t, const double *y, int is_event)
     double err = chain_energy_rel_error(st->c, &e, r->e0, &st->wg);
     if (err > r->energy_error)
         r->energy_error = err;
+    if (st->progress) /* where the run is (gw_chain_collide_progress) */
+        st->progress(st->pctx, t, st->t_expect, st->t_max);
     /* an event found exactly at an output time is observed twice, by the root
      * and by the output, in the same state: one row (a drop's trace held the
      * row at 2.51e-4 s twice, and dF/dt from the files divided by zero) */
@@ -523,18 +527,24 @@ static int collide_after(void *ctx, double t, const double *y, gw_err *err)
 }
 
 static int collide_run(const gw_chain *c, const gw_chain_run_opts *o, int drop, int flight_cut,
-                       gw_chain_result *r, gw_err *err);
+                       gw_chain_progress_fn progress, void *pctx, gw_chain_result *r, gw_err *err);
 
 int gw_chain_collide(const gw_chain *c, const gw_chain_run_opts *o, gw_chain_result *r,
                      gw_err *err)
 {
-    return collide_run(c, o, 0, 0, r, err);
+    return collide_run(c, o, 0, 0, NULL, NULL, r, err);
+}
+
+int gw_chain_collide_progress(const gw_chain *c, const gw_chain_run_opts *o, gw_chain_progress_fn progress,
+                              void *pctx, gw_chain_result *r, gw_err *err)
+{
+    return collide_run(c, o, 0, 0, progress, pctx, r, err);
 }
 
 int chain_collide_drop(const gw_chain *c, const gw_chain_run_opts *o, int flight_cut, gw_chain_result *r,
                        gw_err *err)
 {
-    return collide_run(c, o, 1, flight_cut, r, err);
+    return collide_run(c, o, 1, flight_cut, NULL, NULL, r, err);
 }
 
 int chain_collide_drop_check(const gw_chain *c, const gw_chain_run_opts *o, gw_err *err)
@@ -547,8 +557,8 @@ int chain_collide_drop_check(const gw_chain *c, const gw_chain_run_opts *o, gw_e
     return chain_collide_plan_early(&pc, o, err);
 }
 
-static int collide_run(const gw_chain *c, const gw_chain_run_opts *o, int drop, int flight_cut, gw_chain_result *r,
-                       gw_err *err)
+static int collide_run(const gw_chain *c, const gw_chain_run_opts *o, int drop, int flight_cut,
+                       gw_chain_progress_fn progress, void *pctx, gw_chain_result *r, gw_err *err)
 {
     if (r)
         memset(r, 0, sizeof *r);
@@ -572,6 +582,7 @@ static int collide_run(const gw_chain *c, const gw_chain_run_opts *o, int drop, 
     double *y = malloc((size_t)sys->dim * sizeof *y);
     int *roots = calloc((size_t)sys->nroots, sizeof *roots);
     run_state st = {.c = c, .o = o, .r = r, .n = n, .t_sampled = -INFINITY, .flight_cut = flight_cut,
+                    .progress = progress, .pctx = pctx,
                     .closed = calloc((size_t)n, 1),
                     .last_open = malloc((size_t)n * sizeof(double)),
                     .fc_prev = calloc(3 * (size_t)n, sizeof(double))};

@@ -212,9 +212,33 @@ static int wall_sample(void *ctx, double t, const double *y, double f_wall, int 
     return 0;
 }
 
+/* Column mode's progress as a gw_progress_fn in output samples of dt_out: k of
+ * those over the collision's expected length. A run goes on past it (every
+ * contact open and separating comes after bead 1 leaves the wall, 125 % of it
+ * at 250 beads): the count then stays one short of the total until the end's
+ * report, the total itself (run_column). */
+typedef struct column_progress {
+    gw_progress_fn fn;
+    void *ctx;
+    double dt_out;
+    long total; /* the expected samples, from the first report */
+    int stop;   /* the callback asked to stop: at the collision's end (it is not cut) */
+} column_progress;
+
+static void column_report(void *ctx, double t, double t_expect, double t_max)
+{
+    column_progress *cp = ctx;
+    (void)t_max;
+    if (!cp->total)
+        cp->total = (long)ceil(t_expect / cp->dt_out) + 1;
+    long k = (long)floor(t / cp->dt_out);
+    if (!cp->stop && cp->fn(cp->ctx, k < cp->total ? k : cp->total - 1, cp->total) != 0)
+        cp->stop = 1;
+}
+
 /* s: resolved (gw_param_resolve); type, sp: gw_chain_dispersion_solver's */
 static int run_column(const gw_chain_dispersion_setup *s, const gw_solver_type *type, const gw_solver_params *sp,
-                      gw_chain_dispersion_outcome *out, gw_err *err)
+                      gw_progress_fn progress, void *pctx, gw_chain_dispersion_outcome *out, gw_err *err)
 {
     gw_chain_params p = gw_chain_params_default();
     p.n = (int)s->column_n;
@@ -233,8 +257,12 @@ static int run_column(const gw_chain_dispersion_setup *s, const gw_solver_type *
     gw_chain_result r;
     memset(&r, 0, sizeof r);
     int rc = gw_chain_create(&p, &ch, err);
+    column_progress cp = {.fn = progress, .ctx = pctx, .dt_out = o.dt_out};
     if (rc == GW_OK)
-        rc = gw_chain_collide(ch, &o, &r, err);
+        rc = gw_chain_collide_progress(ch, &o, progress ? column_report : NULL, &cp, &r, err);
+    if (rc == GW_OK && progress && cp.total > 0 && (cp.stop || progress(pctx, cp.total, cp.total) != 0))
+        rc = gw_err_set(err, GW_ECANCELED, "dispersion: stopped by the progress callback at the collision's end, "
+                        "t = %.9g s", r.t_end); /* the end's report reaches the total */
     if (rc == GW_OK)
         rc = gw_chain_wall_spectrum(&tr, 0.0, r.tau_n, o.dt_out, 0.0, s->fftw_measure, &out->sp, err);
     out->column = 1;
@@ -279,6 +307,12 @@ static int disp_unused_check(const gw_chain_dispersion_setup *s, gw_err *err)
 
 int gw_chain_dispersion_run(const gw_chain_dispersion_setup *s, gw_chain_dispersion_outcome *out, gw_err *err)
 {
+    return gw_chain_dispersion_run_progress(s, NULL, NULL, out, err);
+}
+
+int gw_chain_dispersion_run_progress(const gw_chain_dispersion_setup *s, gw_progress_fn progress, void *pctx,
+                                     gw_chain_dispersion_outcome *out, gw_err *err)
+{
     if (!s || !out)
         return gw_err_set(err, GW_EINVAL, "gw_chain_dispersion_run: %s is NULL", !s ? "setup" : "out");
     memset(out, 0, sizeof *out);
@@ -296,7 +330,7 @@ int gw_chain_dispersion_run(const gw_chain_dispersion_setup *s, gw_chain_dispers
         return rc;
     double t0 = gw_clock_ms();
     if (r.column_n > 0) {
-        rc = run_column(&r, type, &sp, out, err);
+        rc = run_column(&r, type, &sp, progress, pctx, out, err);
         out->wall_time_ms = gw_clock_ms() - t0;
         return rc;
     }
@@ -322,7 +356,7 @@ int gw_chain_dispersion_run(const gw_chain_dispersion_setup *s, gw_chain_dispers
     out->params = p;
     out->solver = type;
     out->solver_params = sp;
-    rc = gw_chain_disp_run(&p, type, &sp, &out->r, err);
+    rc = gw_chain_disp_run_progress(&p, type, &sp, progress, pctx, &out->r, err);
     out->wall_time_ms = gw_clock_ms() - t0;
     out->c0_rel_err = fabs(out->r.c0_measured / out->r.c0_theory - 1);
     out->mass = p.mass;

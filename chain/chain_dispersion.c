@@ -384,8 +384,8 @@ static int disp_analyse(const gw_chain_disp_params *p, fftw_complex *out, int nx
 
 /* Integrate and sample into in[nx][nt]. */
 static int disp_integrate(const gw_chain_disp_params *p, const gw_solver_type *type,
-                          const gw_solver_params *sp0, double *in, gw_chain_disp_result *r,
-                          gw_err *err)
+                          const gw_solver_params *sp0, gw_progress_fn progress, void *pctx, double *in,
+                          gw_chain_disp_result *r, gw_err *err)
 {
     const int n = p->n, nt = p->t_samples, fixed = p->ends == GW_CHAIN_DISP_FIXED;
     disp_model md = {n, fixed, p->k, p->f0, r->d0, 1.0 / p->mass};
@@ -424,6 +424,11 @@ static int disp_integrate(const gw_chain_disp_params *p, const gw_solver_type *t
         }
         double w = sin(M_PI * it / nt);
         disp_record(&md, y, w * w, it, nt, in, &r->max_overlap_dev);
+        if (progress && progress(pctx, it + 1L, nt) != 0) {
+            rc = gw_err_set(err, GW_ECANCELED, "dispersion: stopped by the progress callback after %d of %d samples",
+                            it + 1, nt);
+            break;
+        }
     }
     if (s)
         gw_solver_get_stats(s, &r->stats);
@@ -434,6 +439,13 @@ static int disp_integrate(const gw_chain_disp_params *p, const gw_solver_type *t
 
 int gw_chain_disp_run(const gw_chain_disp_params *p, const gw_solver_type *solver,
                       const gw_solver_params *sp, gw_chain_disp_result *r, gw_err *err)
+{
+    return gw_chain_disp_run_progress(p, solver, sp, NULL, NULL, r, err);
+}
+
+int gw_chain_disp_run_progress(const gw_chain_disp_params *p, const gw_solver_type *solver,
+                               const gw_solver_params *sp, gw_progress_fn progress, void *pctx,
+                               gw_chain_disp_result *r, gw_err *err)
 {
     if (r) /* NULL refused as gw_chain_collide does (it was dereferenced: SIGSEGV) */
         memset(r, 0, sizeof *r);
@@ -470,7 +482,7 @@ int gw_chain_disp_run(const gw_chain_disp_params *p, const gw_solver_type *solve
     double plan_ms = gw_clock_ms() - t0;
     if (rc == GW_OK) {
         t0 = gw_clock_ms();
-        rc = disp_integrate(p, solver ? solver : gw_solver_rk4, sp, in, r, err);
+        rc = disp_integrate(p, solver ? solver : gw_solver_rk4, sp, progress, pctx, in, r, err);
         r->integrate_ms = gw_clock_ms() - t0;
     }
     if (rc == GW_OK) {

@@ -499,8 +499,15 @@ const gw_param *gw_chain_dispersion_outcome_fields(void);
  * "steps-per-sample: .." given with cvode or arkode). */
 int gw_chain_dispersion_solver(const gw_chain_dispersion_setup *s, const gw_solver_type **type,
                                gw_solver_params *sp, gw_err *err);
-/* No progress (one integration); GW_EUNSUPPORTED for bdf/dirk on periodic ends. */
+/* One integration; GW_EUNSUPPORTED for bdf/dirk on periodic ends. */
 int gw_chain_dispersion_run(const gw_chain_dispersion_setup *s, gw_chain_dispersion_outcome *out, gw_err *err);
+/* The same with progress(pctx, k, total) (may be NULL): the velocity samples
+ * integrated of t_samples, or with column_n the output samples (the column's
+ * dt_out) of the collision's expected length, held one short of the total past
+ * it until the end reports the total. Non-zero stops the call (GW_ECANCELED):
+ * at once in dispersion mode, at the collision's end with column_n. */
+int gw_chain_dispersion_run_progress(const gw_chain_dispersion_setup *s, gw_progress_fn progress, void *pctx,
+                                     gw_chain_dispersion_outcome *out, gw_err *err);
 void gw_chain_dispersion_outcome_free(gw_chain_dispersion_outcome *out);
 
 /* The whole drop (chain_drop.c, docs/drop.md): the column released from rest

@@ -106,21 +106,51 @@ static void print_text(const chain_cli *c, const gw_chain_result *r)
            r->stats.rhs_evals, r->stats.restarts);
 }
 
+/* Progress lines on stderr, once a run has lasted CHAIN_PROGRESS_MS (as
+ * `granwave drop`): a collision takes from milliseconds to hours (--n 1000
+ * under cvode bdf about 160 s) and said nothing until its end. */
+#define CHAIN_PROGRESS_MS 2000.0
+
+typedef struct chain_progress {
+    gw_cli_progress p;
+    char header[160];
+    int n;
+    double t_expect, t_max; /* the run's, from its first report */
+} chain_progress;
+
+static void chain_progress_report(void *ctx, double t, double t_expect, double t_max)
+{
+    chain_progress *cp = ctx;
+    cp->t_expect = t_expect;
+    cp->t_max = t_max;
+    if (!cp->header[0]) {
+        double sc;
+        const char *u = gw_cli_time_unit(t_expect, &sc);
+        snprintf(cp->header, sizeof cp->header, "granwave chain: %d bead%s, the collision expected to last about "
+                 "%.4g %s (t-max %.4g %s)", cp->n, cp->n == 1 ? "" : "s", t_expect * sc, u, t_max * sc, u);
+        cp->p.header = cp->header;
+    }
+    gw_cli_progress_time(&cp->p, t, t_expect, t_max, 0);
+}
+
 int gw_cmd_chain(int argc, char **argv)
 {
     chain_cli c;
-    gw_opt opts[CHAIN_CLI_NOPTS + 3];
+    gw_opt opts[CHAIN_CLI_NOPTS + 4];
     chain_cli_options(&c, opts);
     c.out_names = chain_files;
     chain_cli_out_help(opts, "write chain_wall_force.csv, chain_beads.csv, chain.json (and chain.h5 with HDF5) into DIR");
     long n = 1;
     double vimp = 0.3;
+    int quiet = 0;
     opts[CHAIN_CLI_NOPTS] = (gw_opt){.name = "n", .kind = GW_OPT_LONG, .dest = &n, .metavar = "N",
                                      .help = "number of beads [1]", .lo = 1, .hi = 50000000};
     opts[CHAIN_CLI_NOPTS + 1] = (gw_opt){.name = "vimp", .kind = GW_OPT_DOUBLE, .dest = &vimp,
                                          .metavar = "V", .help = "impact velocity, m/s [0.3]",
                                          .lo = GW_CHAIN_VIMP_MIN, .hi = GW_CHAIN_VIMP_MAX};
-    opts[CHAIN_CLI_NOPTS + 2] = (gw_opt){0};
+    opts[CHAIN_CLI_NOPTS + 2] = (gw_opt){.name = "quiet", .kind = GW_OPT_FLAG, .dest = &quiet,
+                                         .help = "no progress lines (a run that lasts 2 s or more reports on stderr)"};
+    opts[CHAIN_CLI_NOPTS + 3] = (gw_opt){0};
     int done = chain_cli_parse("chain", "granwave chain [options]", chain_summary, opts, argc, argv);
     if (done >= 0)
         return done;
@@ -155,9 +185,14 @@ int gw_cmd_chain(int argc, char **argv)
     }
     gw_chain_trace_init(&tr, c.params.n);
     gw_chain_result r;
+    chain_progress prog = {.n = c.params.n};
+    gw_cli_progress_init(&prog.p, "  ", "", CHAIN_PROGRESS_MS);
+    prog.p.after_ms = CHAIN_PROGRESS_MS;
     double t0 = gw_clock_ms();
-    int rc = gw_chain_collide(chain, &c.run, &r, &err);
+    int rc = gw_chain_collide_progress(chain, &c.run, quiet ? NULL : chain_progress_report, &prog, &r, &err);
     double wall_ms = gw_clock_ms() - t0;
+    if (rc == GW_OK && !quiet) /* the last line, at the run's end (none for a run under 2 s) */
+        gw_cli_progress_time(&prog.p, r.t_end, prog.t_expect, prog.t_max, 1);
     int code = 0;
     if (rc == GW_OK) /* held by gravity: what its warning calls undecided is null in JSON, n/a in the text */
         gw_chain_result_held_blank(&r);

@@ -32,7 +32,7 @@ static const char *disp_summary =
 typedef struct disp_cli {
     long n, t_samples, steps, seed, column_n;
     double f0, dt_out, amp, min_bins, rtol, atol, vimp;
-    int measure, json;
+    int measure, json, quiet;
     const char *ends, *solver, *method, *out, *wisdom;
     /* the FFTW wisdom imported before planning, as FNV-1a 64 of its bytes (set
      * when wisdom_read): plans made over it can differ from fresh ones in the
@@ -41,7 +41,7 @@ typedef struct disp_cli {
     unsigned long long wisdom_fnv1a64;
 } disp_cli;
 
-enum { DISP_NOPTS = 20 };
+enum { DISP_NOPTS = 21 };
 
 #define DOPT_L(nm, dst, mv, hl, lo_, hi_)                                                 \
     (gw_opt) { .name = nm, .kind = GW_OPT_LONG, .dest = dst, .metavar = mv, .help = hl, \
@@ -91,7 +91,45 @@ static void disp_options(disp_cli *c, gw_opt *o)
                     GW_CHAIN_VIMP_MAX, 0);
     o[i++] = (gw_opt){.name = "json", .kind = GW_OPT_FLAG, .dest = &c->json, .help = "print results as one JSON object on stdout"};
     o[i++] = DOPT_S("out", &c->out, "DIR", "write dispersion_ridge.csv, dispersion_power.csv and dispersion.json into DIR (--column-n: wall_spectrum.csv and dispersion.json)");
+    o[i++] = (gw_opt){.name = "quiet", .kind = GW_OPT_FLAG, .dest = &c->quiet,
+                      .help = "no progress lines (a run that lasts 2 s or more reports on stderr)"};
     o[i++] = (gw_opt){0};
+}
+
+/* Progress lines on stderr once a run has lasted DISP_PROGRESS_MS, as `granwave
+ * drop` and `chain`: the default run takes 0.6 s, --n 8192 about 6 s, and the
+ * work bound (1e10 bead-steps) minutes, with nothing said before. */
+#define DISP_PROGRESS_MS 2000.0
+
+typedef struct disp_progress {
+    gw_cli_progress p;
+    char header[200];
+    long n, column_n;
+} disp_progress;
+
+static int disp_progress_report(void *ctx, long done, long total)
+{
+    disp_progress *dp = ctx;
+    if (!dp->header[0]) { /* the counts are the study's (gw_chain_dispersion_run_progress) */
+        if (dp->column_n > 0)
+            snprintf(dp->header, sizeof dp->header, "granwave dispersion: a column of %ld bead%s, %ld samples over "
+                     "the collision's expected length (past it, the count waits one short until the end)",
+                     dp->column_n, dp->column_n == 1 ? "" : "s", total);
+        else
+            snprintf(dp->header, sizeof dp->header, "granwave dispersion: %ld beads, %ld velocity samples (the "
+                     "transform follows the last)", dp->n, total);
+        dp->p.header = dp->header;
+    }
+    return gw_cli_progress_report(&dp->p, done, total);
+}
+
+static void disp_progress_start(disp_progress *dp, const disp_cli *c)
+{
+    memset(dp, 0, sizeof *dp);
+    dp->n = c->n;
+    dp->column_n = c->column_n;
+    gw_cli_progress_init(&dp->p, "  ", "samples", DISP_PROGRESS_MS);
+    dp->p.after_ms = DISP_PROGRESS_MS;
 }
 
 /* the wisdom a run planned over: its FNV-1a 64 (hex), or null when none was read */
@@ -300,7 +338,10 @@ static int disp_column(const disp_cli *c, const gw_opt *opts, int argc, char **a
     gw_chain_dispersion_outcome out;
     memset(&out, 0, sizeof out);
     int rc = gw_cli_study_setup(gw_chain_dispersion_setup_params(), &ds, opts, argc, argv, "dispersion", &err);
-    if (rc == GW_OK && (rc = gw_chain_dispersion_run(&ds, &out, &err)) != GW_OK)
+    disp_progress prog;
+    disp_progress_start(&prog, c);
+    if (rc == GW_OK && (rc = gw_chain_dispersion_run_progress(&ds, c->quiet ? NULL : disp_progress_report, &prog,
+                                                              &out, &err)) != GW_OK)
         gw_cli_study_error(gw_chain_dispersion_setup_params(), "dispersion", rc, &err);
     int code = 0;
     gw_chain_params p = gw_chain_params_default();
@@ -494,7 +535,10 @@ int gw_cmd_dispersion(int argc, char **argv)
     gw_chain_dispersion_outcome out;
     memset(&out, 0, sizeof out);
     int rc = gw_cli_study_setup(gw_chain_dispersion_setup_params(), &ds, opts, argc, argv, "dispersion", &err);
-    if (rc == GW_OK && (rc = gw_chain_dispersion_run(&ds, &out, &err)) != GW_OK)
+    disp_progress prog;
+    disp_progress_start(&prog, &c);
+    if (rc == GW_OK && (rc = gw_chain_dispersion_run_progress(&ds, c.quiet ? NULL : disp_progress_report, &prog,
+                                                              &out, &err)) != GW_OK)
         gw_cli_study_error(gw_chain_dispersion_setup_params(), "dispersion", rc, &err); /* "NAME:" -> "--NAME:" */
     gw_chain_dispersion_setup_clear(&ds);
     const gw_chain_disp_result r = out.r;

@@ -53,13 +53,32 @@ static gw_stats_defaults layer_defaults(void)
 
 /* ------------------------------------------------------------------ command --- */
 
-/* "mean +- std" with n/a for what the JSON gives as null (no value, or the spread of one) */
-static const char *pm(char *b, size_t n, const char *fmt, gw_stats_moment m)
+/* "mean +- std" with n/a for what the JSON gives as null (no value, or the
+ * spread of one), then "(k of N points)" when the mean rests on some but not
+ * all of the group's N points (the JSON's n: an undecided point, or one that
+ * did not bounce, has no e_n), so that "e_n 0.149 +- n/a" is not read as the
+ * group's; points 0: no count (the binary lines give theirs) */
+static const char *pm(char *b, size_t n, const char *fmt, gw_stats_moment m, const char *unit, int points)
 {
     char a[32], c[32];
     gw_cli_num(a, sizeof a, fmt, m.mean);
     gw_cli_num(c, sizeof c, fmt, m.std);
-    snprintf(b, n, "%s +- %s", a, c);
+    if (m.n > 0 && m.n < points)
+        snprintf(b, n, "%s +- %s%s (%d of %d points)", a, c, unit, m.n, points);
+    else
+        snprintf(b, n, "%s +- %s%s", a, c, unit);
+    return b;
+}
+
+/* The mean alone, counted as pm does. */
+static const char *mean_of(char *b, size_t n, const char *fmt, gw_stats_moment m, const char *unit, int points)
+{
+    char a[32];
+    gw_cli_num(a, sizeof a, fmt, m.mean);
+    if (m.n > 0 && m.n < points)
+        snprintf(b, n, "%s%s (%d of %d points)", a, unit, m.n, points);
+    else
+        snprintf(b, n, "%s%s", a, unit);
     return b;
 }
 
@@ -73,18 +92,19 @@ static void print_text(const gw_stats_analysis *R)
         printf("  ");
         for (int k = 0; k < R->gs.nkeys; k++)
             printf("%s=%s ", t->grid_name[R->gs.key[k]], t->grid_value[g->first * t->ngrid + R->gs.key[k]]);
-        char b[4][72], pen[32];
-        printf(": n %d, share %.3f (%s%s), e_n %s, e %s, alpha_r %s deg, "
-               "e_n_first %s, penetration %s R_m, points over %.3g R_m\n", g->n, g->share,
+        char b[4][128], pen[80];
+        printf(": n %d, share %.3f (%s%s), e_n %s, e %s, alpha_r %s, "
+               "e_n_first %s, penetration %s, points over %.3g R_m\n", g->n, g->share,
                g->bouncing ? "bounces" : "no bounce", g->verdict_certain ? "" : "; undecided points could change it",
-               pm(b[0], sizeof b[0], "%.3f", g->e_n), pm(b[1], sizeof b[1], "%.3f", g->e),
-               pm(b[2], sizeof b[2], "%.1f", g->alpha_r), pm(b[3], sizeof b[3], "%.3f", g->e_n_first),
-               gw_cli_num(pen, sizeof pen, "%.3g", g->penetration_rm.mean), g->x_span_rm);
+               pm(b[0], sizeof b[0], "%.3f", g->e_n, "", g->n), pm(b[1], sizeof b[1], "%.3f", g->e, "", g->n),
+               pm(b[2], sizeof b[2], "%.1f", g->alpha_r, " deg", g->n),
+               pm(b[3], sizeof b[3], "%.3f", g->e_n_first, "", g->n),
+               mean_of(pen, sizeof pen, "%.3g", g->penetration_rm, " R_m", g->n), g->x_span_rm);
     }
     for (int k = 0; k < R->nbin; k++) {
         char b[72];
         printf("  binary: R_b/R_m %g, alpha %g: block loss %s (n %d); disc %.3f, sphere %.3f\n",
-               R->bin[k].rb_rm, R->bin[k].alpha, pm(b, sizeof b, "%.3f", R->bin[k].loss), R->bin[k].loss.n,
+               R->bin[k].rb_rm, R->bin[k].alpha, pm(b, sizeof b, "%.3f", R->bin[k].loss, "", 0), R->bin[k].loss.n,
                R->bin[k].disc, R->bin[k].sphere);
     }
     for (int q = 0; q < R->ndia; q++) {

@@ -50,9 +50,7 @@ static int disp_init(void *s) { return gw_chain_dispersion_setup_init(s); }
 static void disp_clear(void *s) { gw_chain_dispersion_setup_clear(s); }
 static int disp_run(const void *s, void *out, gw_progress_fn progress, void *pctx, gw_err *err)
 {
-    (void)progress;
-    (void)pctx;
-    return gw_chain_dispersion_run(s, out, err);
+    return gw_chain_dispersion_run_progress(s, progress, pctx, out, err);
 }
 static void disp_free(void *out) { gw_chain_dispersion_outcome_free(out); }
 

@@ -19,7 +19,9 @@ PY=/usr/bin/python3
 
 "$GW" dispersion --n 8192 --json >"$tmp/p.json" 2>"$tmp/p.err"; rc_p=$?
 "$GW" dispersion --n 8192 --json --quiet >"$tmp/q.json" 2>"$tmp/q.err"; rc_q=$?
+t0=$(date +%s%N)
 "$GW" dispersion --column-n 200 --json >"$tmp/c.json" 2>"$tmp/c.err"; rc_c=$?
+c_ms=$(( ($(date +%s%N) - t0) / 1000000 ))
 [ $rc_p -eq 0 ] && [ $rc_q -eq 0 ] && [ $rc_c -eq 0 ] && ok "the three long runs exit 0" \
     || ko "exit $rc_p / $rc_q / $rc_c: $(head -2 "$tmp/p.err" "$tmp/q.err" "$tmp/c.err")"
 [ ! -s "$tmp/q.err" ] && ok "--quiet: nothing on stderr" || ko "--quiet: stderr $(head -3 "$tmp/q.err")"
@@ -32,8 +34,16 @@ res = json.load(open(sys.argv[1]))
 err = open(sys.argv[2]).read().splitlines()
 def check(cond, what):
     print(("PASS: " if cond else "FAIL: ") + what)
-if "wall_time_ms" in res:  # the column mode's JSON has none: its lines' count says it
-    check(res["wall_time_ms"] >= 2000, "the run lasted %.0f ms (2000 or more: it is to report)" % res["wall_time_ms"])
+# whether a run lasts 2 s depends on the machine (as test_drop_progress): lines
+# are asked for when it lasted 2.5 s or more, none below 1.9 s (the column
+# mode's JSON has no wall time: the run is timed here, given as argv[4])
+wall = res.get("wall_time_ms", float(sys.argv[4]) if len(sys.argv) > 4 else None)
+if wall is not None and wall < 2500 and not err:
+    check(True, "the run lasted %.0f ms on this machine: under 2.5 s, no lines asked and none printed" % wall)
+    sys.exit(0)
+if wall is not None and wall < 1900:
+    check(False, "lines printed for a run of %.0f ms, under 2 s" % wall)
+    sys.exit(0)
 head = re.fullmatch(sys.argv[3], err[0] if err else "")
 check(head is not None, "header line: %r" % (err[0] if err else None))
 line = re.compile(r"  (\d+)/(\d+) samples, [0-9.]+ samples/s, ([0-9.]+) s elapsed, ~[0-9.]+ s left")
@@ -67,7 +77,7 @@ lines "$tmp/p.json" "$tmp/p.err" \
     'granwave dispersion: 8192 beads, (\d+) velocity samples \(the transform follows the last\)' >"$tmp/p.out" 2>&1
 check_lines "--n 8192" "$tmp/p.out"
 lines "$tmp/c.json" "$tmp/c.err" \
-    "granwave dispersion: a column of 200 beads, (\d+) samples over the collision's expected length .*" \
+    "granwave dispersion: a column of 200 beads, (\d+) samples over the collision's expected length .*" "$c_ms" \
     >"$tmp/c.out" 2>&1
 check_lines "--column-n 200" "$tmp/c.out"
 

@@ -309,7 +309,7 @@ void gw_layer_sample_free(gw_layer_sample *s);
 /* sizeof(gw_layer_sample) in this library: a caller that lays the struct out
  * itself (a ctypes mirror) checks its own size against it before passing one
  * to gw_layer_sample_read, which writes the whole struct (a mirror without the
- * appended settled record was written 80 bytes past its end). */
+ * appended settled record was written 72 bytes past its end). */
 size_t gw_layer_sample_size(void);
 
 /* Text sample format (version 1), one record per line (LF or CRLF), '#' starts

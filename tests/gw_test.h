@@ -38,6 +38,14 @@ static inline void gw_test_true(int cond, const char *what)
     gw_test_failures += !cond;
 }
 
+/* gw_test_true with a printf-style description. */
+#define GW_TEST_OK(cond, ...)                       \
+    do {                                            \
+        char gw_what_[1200];                        \
+        snprintf(gw_what_, sizeof gw_what_, __VA_ARGS__); \
+        gw_test_true((cond), gw_what_);             \
+    } while (0)
+
 static inline int gw_test_summary(const char *name)
 {
     printf("%s: %d failure(s)\n", name, gw_test_failures);

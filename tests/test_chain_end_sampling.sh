@@ -31,8 +31,10 @@ same_end() {
     local files=() d i=0
     rm -f "$tmp"/r*.json "$tmp"/e*
     for d in "$@"; do
+        # (--quiet: a run past 2 s reports progress on stderr, which is to hold
+        # the warnings alone here)
         # shellcheck disable=SC2086
-        timeout -s KILL 120 "$GW" chain $args --dt-out "$d" --json >"$tmp/r$i.json" 2>"$tmp/e$i" </dev/null ||
+        timeout -s KILL 120 "$GW" chain $args --dt-out "$d" --json --quiet >"$tmp/r$i.json" 2>"$tmp/e$i" </dev/null ||
             { ko "$what --dt-out $d: exit $? ($(head -c 300 "$tmp/e$i"))"; return; }
         files+=("$tmp/r$i.json:$tmp/e$i:$d"); i=$((i+1))
     done

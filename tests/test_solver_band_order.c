@@ -35,14 +35,6 @@
 #include "gw_solver.h"
 #include "gw_test.h"
 
-/* gw_test_true with a formatted description */
-#define OK(cond, ...)                                \
-    do {                                             \
-        char what_[1200];                             \
-        snprintf(what_, sizeof what_, __VA_ARGS__);  \
-        gw_test_true((cond), what_);                 \
-    } while (0)
-
 static long N = 200000; /* points after the lead */
 #define I_LEDGER N
 #define I_LEAD (N + 1)
@@ -173,20 +165,20 @@ static void run(const char *name, const gw_solver_type *type, int method)
     int rc;
     long jac = 0;
     double *y = run_mode(name, &sys, type, method, &rc, &jac);
-    OK(y != NULL, "%s: ran to %g s on the ordered band", name, T_END);
+    GW_TEST_OK(y != NULL, "%s: ran to %g s on the ordered band", name, T_END);
     if (!y)
         return;
     double worst = 0, decay = exp(lambda * T_END);
     for (long j = 0; j <= N; j++)
         worst = fmax(worst, fabs(point(y, j) - mode(j) * decay));
-    OK(worst < 1e-6, "%s: the sine mode (the lead too) decays to exp(lambda t) = %.6f within 1e-6 (worst %.2e)",
+    GW_TEST_OK(worst < 1e-6, "%s: the sine mode (the lead too) decays to exp(lambda t) = %.6f within 1e-6 (worst %.2e)",
        name, decay, worst);
     /* the ledger's own error at rtol 1e-8: 2.2e-6 under cvode bdf, 1.4e-7
      * under arkode, the same to every digit on the whole band (below) */
     const double l = D * s0 * (exp(2 * lambda * T_END) - 1) / (2 * lambda);
-    OK(fabs(y[I_LEDGER] / l - 1) < 1e-5, "%s: the ledger %.9g against its closed form %.9g within 1e-5", name,
+    GW_TEST_OK(fabs(y[I_LEDGER] / l - 1) < 1e-5, "%s: the ledger %.9g against its closed form %.9g within 1e-5", name,
        y[I_LEDGER], l);
-    OK(jac > 0, "%s: %ld Jacobians (the band matrix formed)", name, jac);
+    GW_TEST_OK(jac > 0, "%s: %ld Jacobians (the band matrix formed)", name, jac);
     free(y);
 }
 
@@ -215,12 +207,12 @@ static void against_own_order(void)
             s0 += mode(j) * mode(j);
         const double k = M_PI * (double)((N + 1) / 2) / (double)(N + 2), lambda = -4 * D * sin(0.5 * k) * sin(0.5 * k);
         const double l = D * s0 * (exp(2 * lambda * T_END) - 1) / (2 * lambda);
-        OK(worst < 2e-8, "500 points: the ordered band and the whole band agree within 2e-8 (worst %.2e)", worst);
-        OK(fabs(ya[I_LEDGER] / l - 1) < 1e-5 && fabs(yb[I_LEDGER] / l - 1) < 1e-5,
+        GW_TEST_OK(worst < 2e-8, "500 points: the ordered band and the whole band agree within 2e-8 (worst %.2e)", worst);
+        GW_TEST_OK(fabs(ya[I_LEDGER] / l - 1) < 1e-5 && fabs(yb[I_LEDGER] / l - 1) < 1e-5,
            "500 points: the ledgers %.12g (ordered) and %.12g (whole band) within 1e-5 of %.12g", ya[I_LEDGER],
            yb[I_LEDGER], l);
     } else {
-        OK(0, "500 points: both orders ran");
+        GW_TEST_OK(0, "500 points: both orders ran");
     }
     free(ya);
     free(yb);
@@ -232,7 +224,7 @@ static void against_own_order(void)
     gw_solver *s = NULL;
     gw_err err = {{0}};
     const int rc = y ? gw_solver_create(gw_solver_cvode, &big, &p, 0.0, y, &s, &err) : GW_ENOMEM;
-    OK(rc != GW_OK, "200,001 points in the states' own order: the whole band (960 GB) is not allocated (%s)",
+    GW_TEST_OK(rc != GW_OK, "200,001 points in the states' own order: the whole band (960 GB) is not allocated (%s)",
        rc != GW_OK ? err.msg : "created");
     gw_solver_free(s);
     free(y);
@@ -246,7 +238,7 @@ static void refused(const char *what, gw_system sys)
     gw_solver *s = NULL;
     gw_err err = {{0}};
     const int rc = gw_solver_create(gw_solver_cvode, &sys, &p, 0.0, y, &s, &err);
-    OK(rc == GW_EINVAL && !s, "%s: refused (%s)", what, rc == GW_EINVAL ? err.msg : "not refused");
+    GW_TEST_OK(rc == GW_EINVAL && !s, "%s: refused (%s)", what, rc == GW_EINVAL ? err.msg : "not refused");
     gw_solver_free(s);
 }
 

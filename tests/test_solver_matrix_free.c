@@ -24,14 +24,6 @@
 #include "gw_solver.h"
 #include "gw_test.h"
 
-/* gw_test_true with a formatted description */
-#define OK(cond, ...)                                \
-    do {                                             \
-        char what_[1200];                             \
-        snprintf(what_, sizeof what_, __VA_ARGS__);  \
-        gw_test_true((cond), what_);                 \
-    } while (0)
-
 #define N 200000L
 static const double D = 1000.0, T_END = 1e-3;
 
@@ -52,7 +44,7 @@ static void run(const char *name, int method)
     const double lambda = -4 * D * sin(0.5 * k) * sin(0.5 * k);
     double *y = malloc(N * sizeof *y);
     if (!y) {
-        OK(0, "%s: allocation", name);
+        GW_TEST_OK(0, "%s: allocation", name);
         return;
     }
     for (long i = 0; i < N; i++)
@@ -65,20 +57,20 @@ static void run(const char *name, int method)
     gw_err err = {{0}};
     const gw_solver_type *type = method == GW_CVODE_BDF ? gw_solver_cvode : gw_solver_arkode;
     int rc = gw_solver_create(type, &sys, &p, 0.0, y, &s, &err);
-    OK(rc == GW_OK, "%s: created without a matrix (%s)", name, rc == GW_OK ? "ok" : err.msg);
+    GW_TEST_OK(rc == GW_OK, "%s: created without a matrix (%s)", name, rc == GW_OK ? "ok" : err.msg);
     double t = 0;
     if (rc == GW_OK)
         rc = gw_solver_advance(s, T_END, &t, y, NULL);
-    OK(rc == GW_OK && t == T_END, "%s: ran to %g s (%s)", name, T_END, rc == GW_OK ? "ok" : gw_solver_error(s));
+    GW_TEST_OK(rc == GW_OK && t == T_END, "%s: ran to %g s (%s)", name, T_END, rc == GW_OK ? "ok" : gw_solver_error(s));
     if (rc == GW_OK) {
         double worst = 0, decay = exp(lambda * T_END);
         for (long i = 0; i < N; i++)
             worst = fmax(worst, fabs(y[i] - sin(k * (double)(i + 1)) * decay));
-        OK(worst < 1e-6, "%s: the sine mode decays to exp(lambda t) = %.6f within 1e-6 (worst %.2e)", name,
+        GW_TEST_OK(worst < 1e-6, "%s: the sine mode decays to exp(lambda t) = %.6f within 1e-6 (worst %.2e)", name,
                    decay, worst);
         gw_solver_stats st;
         gw_solver_get_stats(s, &st);
-        OK(st.jac_evals == 0 && st.steps > 0, "%s: %ld steps, %ld rhs, no Jacobian (%ld)", name, st.steps,
+        GW_TEST_OK(st.jac_evals == 0 && st.steps > 0, "%s: %ld steps, %ld rhs, no Jacobian (%ld)", name, st.steps,
                    st.rhs_evals, st.jac_evals);
     }
     gw_solver_free(s);

@@ -159,7 +159,7 @@ class _Settled(ctypes.Structure):
 class _Sample(ctypes.Structure):
     """gw_layer_sample (layer/gw_layer.h). Its size is checked against the
     library's (gw_layer_sample_size) before gw_layer_sample_read writes one:
-    this mirror without the appended settled record was written 80 bytes past
+    this mirror without the appended settled record was written 72 bytes past
     its end, which corrupted the interpreter's heap and crashed later tests of
     the same session (a segfault in test_hostile_twentyseventh_py's
     layer_impact or in the garbage collector)."""

@@ -51,7 +51,9 @@
  * checking the sample was nearly all of its cost: it reads and checks each
  * sample file once, keeping the sample read (check_memo below), and for each
  * case hashes the file (FNV-1a 64 of its bytes, as the sweep's inputs are)
- * to know it is the same.
+ * to know it is the same. The pass also refuses two sample paths holding one
+ * pile (pile_note: a copy, or layer-make run twice with one seed), which the
+ * sweep's own check of file identity cannot see.
  */
 #include <math.h>
 #include <stddef.h>

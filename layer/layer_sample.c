@@ -558,3 +558,45 @@ size_t gw_layer_sample_size(void)
 {
     return sizeof(gw_layer_sample);
 }
+
+/* One double into the pile hash, -0 as 0 (the same value written "-0"). */
+static unsigned long long hash_double(unsigned long long h, double v)
+{
+    v = v == 0 ? 0.0 : v;
+    return gw_fnv1a64(h, &v, sizeof v);
+}
+
+static unsigned long long hash_long(unsigned long long h, long v)
+{
+    return gw_fnv1a64(h, &v, sizeof v);
+}
+
+unsigned long long gw_layer_sample_pile_hash(const gw_layer_sample *s)
+{
+    if (!s)
+        return 0;
+    unsigned long long h = GW_FNV1A64_INIT;
+    h = hash_long(h, s->n);
+    h = hash_double(h, s->width);
+    h = hash_double(h, s->rm);
+    h = hash_long(h, s->mass_law);
+    h = hash_long(h, s->clump_mass);
+    for (int i = 0; s->x && i < s->n; i++) {
+        h = hash_double(h, s->x[i]);
+        h = hash_double(h, s->y[i]);
+        h = hash_double(h, s->r[i]);
+        h = hash_long(h, s->body ? s->body[i] : i); /* no body column: each particle its own body */
+    }
+    const gw_layer_settled *st = &s->settled;
+    h = hash_long(h, st->recorded);
+    if (st->recorded) { /* not its line: where the record sits in the file does not reach a run */
+        h = hash_double(h, st->shear_modulus);
+        h = hash_double(h, st->poisson);
+        h = hash_double(h, st->friction_deg);
+        h = hash_double(h, st->density);
+        h = hash_double(h, st->gravity);
+        h = hash_long(h, st->mass_law);
+        h = hash_long(h, st->clump_mass);
+    }
+    return h;
+}

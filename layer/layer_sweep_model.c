@@ -51,7 +51,9 @@
  * checking the sample was nearly all of its cost: it reads and checks each
  * sample file once, keeping the sample read (check_memo below), and for each
  * case hashes the file (FNV-1a 64 of its bytes, as the sweep's inputs are)
- * to know it is the same.
+ * to know it is the same. The pass also refuses two sample paths holding one
+ * pile (pile_note: a copy, or layer-make run twice with one seed), which the
+ * sweep's own check of file identity cannot see.
  */
 #include <math.h>
 #include <stddef.h>
@@ -173,7 +175,49 @@ typedef struct check_memo {
      * (gw_layer_impact_settled_check's warning, the first one's text kept) */
     long ncases, nsettling;
     char settling[768];
+    /* every sample path the pass read, with the hashes of its bytes and of
+     * its pile (pile_note) */
+    struct pile {
+        char *path;
+        unsigned long long file_hash, pile_hash;
+    } *piles;
+    long npiles, cap;
 } check_memo;
+
+/* Sample path, read with bytes hashing to file_hash as s, holds a pile no
+ * other sample of the pass holds. The sweep tells its grid's files apart by
+ * identity (common/sweep/gw_sweep_inputs.c), but a copy of a sample, or
+ * layer-make run twice with the same seed and options, is another file with
+ * other bytes (its comments record the command) and the same particles: each
+ * case ran twice and layer-stats counted its point twice (n 8 where 4 are
+ * distinct). Compared by gw_layer_sample_pile_hash; a path already noted with
+ * the same bytes is not hashed again. GW_OK, GW_EINVAL naming both files,
+ * GW_ENOMEM. */
+static int pile_note(check_memo *c, const char *path, unsigned long long file_hash, const gw_layer_sample *s,
+                     gw_err *err)
+{
+    for (long i = 0; i < c->npiles; i++)
+        if (c->piles[i].file_hash == file_hash && strcmp(c->piles[i].path, path) == 0)
+            return GW_OK;
+    const unsigned long long h = gw_layer_sample_pile_hash(s);
+    for (long i = 0; i < c->npiles; i++)
+        if (c->piles[i].pile_hash == h && strcmp(c->piles[i].path, path) != 0)
+            return gw_err_set(err, GW_EINVAL, "sample: '%s' and '%s' hold the same pile (the same particles, box "
+                              "and settling record): each case would run twice and its point count twice in "
+                              "layer-stats; list one of them", c->piles[i].path, path);
+    if (c->npiles == c->cap) {
+        const long cap = c->cap ? 2 * c->cap : 8;
+        struct pile *p = realloc(c->piles, (size_t)cap * sizeof *p);
+        if (!p)
+            return gw_err_set(err, GW_ENOMEM, "out of memory");
+        c->piles = p, c->cap = cap;
+    }
+    char *copy = strdup(path);
+    if (!copy)
+        return gw_err_set(err, GW_ENOMEM, "out of memory");
+    c->piles[c->npiles++] = (struct pile){copy, file_hash, h};
+    return GW_OK;
+}
 
 /* Tally case s's settling warning against the sample kept for it (none kept:
  * a sample above MEMO_NMAX, whose runs still record theirs). The material
@@ -217,6 +261,9 @@ static void memo_free(void *memo)
         free(c->slot[k].path);
         gw_layer_sample_free(&c->slot[k].s);
     }
+    for (long i = 0; i < c->npiles; i++)
+        free(c->piles[i].path);
+    free(c->piles);
     free(c);
 }
 
@@ -237,13 +284,16 @@ static int setup_check(void **memo, const gw_layer_impact_setup *s, gw_err *err)
         memo_slot *m = &c->slot[k];
         if (m->path && m->hash == h && strcmp(m->path, s->sample) == 0) {
             m->used = ++c->tick;
-            return layer_impact_setup_check_sample(s, &m->s, err);
+            int rc = layer_impact_setup_check_sample(s, &m->s, err);
+            return rc == GW_OK ? pile_note(c, s->sample, h, &m->s, err) : rc;
         }
         if (m->used < old->used)
             old = m;
     }
     gw_layer_impact_plan p;
     int rc = gw_layer_impact_plan_make(s, &p, err);
+    if (rc == GW_OK)
+        rc = pile_note(c, s->sample, h, &p.sample, err);
     /* kept when read, whatever this case's verdict (x outside the box is the case's) */
     char *path = p.sample.x && p.sample.n <= MEMO_NMAX ? strdup(s->sample) : NULL;
     if (path) {

@@ -882,7 +882,20 @@ sed '10s/,1,/,1\x00,/' "$SRC/data/measured/layer_diagram/results.csv" >"$tmp/t32
 refused "a table with a NUL byte on line 10 (it said line 1)" "t32c.csv:10: binary data \(NUL byte\)" layer-stats "$tmp/t32c.csv" --out "$tmp/o"
 
 # --- 33: a grid of samples, one edited mid-sweep ------------------------------------------------
-cp "$S300" "$tmp/a33.txt"; cp "$S300" "$tmp/b33.txt"; echo "# b" >>"$tmp/b33.txt"
+# other_pile SRC DST: SRC with its last particle's radius 1e-9 m smaller, another
+# pile (a copy with a comment added is SRC's pile, which a sweep refuses to list twice)
+other_pile() {
+    /usr/bin/python3 - "$1" "$2" <<'EOF'
+import sys
+lines = open(sys.argv[1]).read().split("\n")
+i = max(k for k, l in enumerate(lines) if l and not l.startswith("#") and len(l.split()) >= 3)
+f = lines[i].split()
+f[2] = repr(float(f[2]) - 1e-9)
+lines[i] = " ".join(f)
+open(sys.argv[2], "w").write("\n".join(lines))
+EOF
+}
+cp "$S300" "$tmp/a33.txt"; other_pile "$S300" "$tmp/b33.txt"
 printf '[sweep]\nmodel = layer\n[grid]\nsample = %s, %s\nvi = 10, 12, 14, 16, 18, 20\n[params]\nt-max = 0.1\n' "$tmp/a33.txt" "$tmp/b33.txt" >"$tmp/w33.ini"
 timeout -s KILL 300 "$GW" sweep "$tmp/w33.ini" --out "$tmp/w33" --quiet --jobs 1 >"$tmp/stdout" 2>"$tmp/stderr" </dev/null &
 pid33=$!
@@ -954,7 +967,7 @@ fi
 # jobs 1, a grid of two samples: case 0 runs on a35 (0.5 s of impact, about
 # 1.9 s), b35 is edited meanwhile; once case 0 is journaled case 1 reads the
 # edited b35, which is restored 0.2 s later (the read takes milliseconds), before case 1 ends (1.9 s).
-cp "$S300" "$tmp/a35.txt"; cp "$S300" "$tmp/b35.txt"; echo "# b" >>"$tmp/b35.txt"; cp "$tmp/b35.txt" "$tmp/b35.orig"
+cp "$S300" "$tmp/a35.txt"; other_pile "$S300" "$tmp/b35.txt"; cp "$tmp/b35.txt" "$tmp/b35.orig"
 hb35=$(fnv "$tmp/b35.txt")
 printf '[sweep]\nmodel = layer\n[grid]\nsample = %s, %s\n[params]\nt-max = 0.5\nfull = true\n' "$tmp/a35.txt" "$tmp/b35.txt" >"$tmp/w35.ini"
 timeout -s KILL 600 "$GW" sweep "$tmp/w35.ini" --out "$tmp/w35" --quiet --jobs 1 >"$tmp/stdout" 2>"$tmp/stderr" </dev/null &

@@ -281,6 +281,191 @@ static int check_combinations(const gw_stats_table *t, gw_err *err)
     return rc == GW_ENOMEM ? gw_err_set(err, rc, "%s: out of memory", t->path) : rc;
 }
 
+/* ------------------------------------------------ one pile under two names ---
+ * A sweep of a build before the sample check by content (layer_sweep_model.c)
+ * ran a grid listing a copy of a sample, or two layer-make outputs of one
+ * seed and options, as two samples: every case twice, and the binary check
+ * counted each point twice (n 8 where 4 are distinct). The file hashes of the
+ * rows differ (a sample's comments record the command that made it), and the
+ * table does not hold the particles; but a run is deterministic, and two
+ * distinct piles part in their model cells from the first step (measured on
+ * two 20-disc samples of seeds 2 and 3: energy_error 2.416e-14 and 2.400e-14
+ * after 1 ms of free fall above the pile, 9.47e-6 and 8.88e-6 after one step
+ * in contact). Two samples are taken for one pile when every row of each
+ * agrees, in every model cell and every other grid value, with a row of the
+ * other (one row alike by chance is not enough). */
+
+/* The grid key whose values name the file each case read: the one a hash
+ * column KEY_fnv1a64 names, else "sample" (a table before the hash columns);
+ * -1 when the table has none. */
+static int file_key(const gw_stats_table *t)
+{
+    for (int j = 1; j < t->nhash; j++) {
+        const size_t kl = strlen(t->hash_name[j]) - 8;
+        for (int i = 0; i < t->ngrid; i++)
+            if (strlen(t->grid_name[i]) == kl && strncmp(t->grid_name[i], t->hash_name[j], kl) == 0)
+                return i;
+    }
+    return gw_stats_table_key(t, "sample");
+}
+
+/* v's bits, -0 as 0 and every NaN one value (as a table prints them). */
+static unsigned long long bits_of(double v)
+{
+    v = isnan(v) ? NAN : v == 0 ? 0.0 : v;
+    unsigned long long b;
+    memcpy(&b, &v, sizeof b);
+    return b;
+}
+
+typedef struct outcome_row {
+    unsigned long long hash; /* of the row's cells but the file key's */
+    long sid, row;           /* sid: its file value's rank among the table's */
+} outcome_row;
+
+static int cmp_outcome(const void *pa, const void *pb)
+{
+    const outcome_row *a = pa, *b = pb;
+    if (a->hash != b->hash)
+        return a->hash < b->hash ? -1 : 1;
+    if (a->sid != b->sid)
+        return a->sid < b->sid ? -1 : 1;
+    return (a->row > b->row) - (a->row < b->row);
+}
+
+typedef struct named_row {
+    const char *value;
+    long row;
+} named_row;
+
+static int cmp_named(const void *pa, const void *pb)
+{
+    const named_row *a = pa, *b = pb;
+    const int c = strcmp(a->value, b->value);
+    return c ? c : (a->row > b->row) - (a->row < b->row);
+}
+
+/* Rows ra and rb agree in every cell but grid key skip's. */
+static int rows_agree(const gw_stats_table *t, long ra, long rb, int skip)
+{
+    for (int i = 0; i < t->ngrid; i++)
+        if (i != skip && !gw_stats_table_same(t, ra, rb, i))
+            return 0;
+    for (int c = 0; c < t->ncols; c++)
+        if (bits_of(t->val[ra * t->ncols + c]) != bits_of(t->val[rb * t->ncols + c]))
+            return 0;
+    return 1;
+}
+
+/* A pair of samples with a row alike: (a, b) by rank, a < b, its first rows. */
+typedef struct pile_pair {
+    long a, b, ra, rb;
+} pile_pair;
+
+static int cmp_pair(const void *pa, const void *pb)
+{
+    const pile_pair *x = pa, *y = pb;
+    if (x->a != y->a)
+        return x->a < y->a ? -1 : 1;
+    if (x->b != y->b)
+        return x->b < y->b ? -1 : 1;
+    return (x->ra > y->ra) - (x->ra < y->ra);
+}
+
+/* The first pair of samples that are one pile (above), into *pa and *pb
+ * (rows of each, the first alike; -1: none), given the rows ranked (o, by
+ * outcome) and each sample's row count cnt[sid]. GW_OK or GW_ENOMEM. */
+static int find_pile_pair(const gw_stats_table *t, int kf, const outcome_row *o, const long *cnt, long *pa, long *pb)
+{
+    *pa = *pb = -1;
+    pile_pair *p = malloc((size_t)t->nrows * sizeof *p);
+    if (!p)
+        return GW_ENOMEM;
+    long np = 0;
+    for (long a = 0, b; a < t->nrows; a = b) /* a run of one hash: each row against its first */
+        for (b = a + 1; b < t->nrows && o[b].hash == o[a].hash; b++)
+            if (o[b].sid != o[a].sid && rows_agree(t, o[a].row, o[b].row, kf))
+                p[np++] = (pile_pair){o[a].sid, o[b].sid, o[a].row, o[b].row};
+    qsort(p, (size_t)np, sizeof *p, cmp_pair);
+    long best = -1;
+    for (long i = 0, j; i < np; i = j) {
+        for (j = i; j < np && p[j].a == p[i].a && p[j].b == p[i].b; j++)
+            ;
+        if (j - i == cnt[p[i].a] && j - i == cnt[p[i].b] && (best < 0 || p[i].ra < p[best].ra))
+            best = i;
+    }
+    if (best >= 0)
+        *pa = p[best].ra, *pb = p[best].rb;
+    free(p);
+    return GW_OK;
+}
+
+/* No two samples of the table are one pile (above): GW_OK, GW_EFORMAT naming
+ * both samples and their first rows alike, GW_ENOMEM. */
+static int check_same_piles(const gw_stats_table *t, gw_err *err)
+{
+    const int kf = file_key(t);
+    if (kf < 0 || t->nrows < 2)
+        return GW_OK;
+    const size_t n = (size_t)t->nrows;
+    named_row *nr = malloc(n * sizeof *nr);
+    outcome_row *o = malloc(n * sizeof *o);
+    long *cnt = calloc(n, sizeof *cnt), ra = -1, rb = -1, nsamples = 0;
+    int rc = nr && o && cnt ? GW_OK : GW_ENOMEM;
+    for (long r = 0; rc == GW_OK && r < t->nrows; r++)
+        nr[r] = (named_row){t->grid_value[r * t->ngrid + kf], r};
+    if (rc == GW_OK)
+        qsort(nr, n, sizeof *nr, cmp_named);
+    for (long i = 0; rc == GW_OK && i < t->nrows; i++) {
+        /* a sample spelt as a number (grid_num set) is compared as the reader does */
+        nsamples += i > 0 && !gw_stats_table_same(t, nr[i].row, nr[i - 1].row, kf);
+        o[nr[i].row].sid = nsamples;
+        cnt[nsamples]++;
+    }
+    for (long r = 0; rc == GW_OK && r < t->nrows; r++) {
+        unsigned long long h = GW_FNV1A64_INIT;
+        for (int i = 0; i < t->ngrid; i++) {
+            const double v = t->grid_num[r * t->ngrid + i];
+            const char *txt = t->grid_value[r * t->ngrid + i];
+            if (i == kf)
+                continue;
+            if (isnan(v))
+                h = gw_fnv1a64(h, txt, strlen(txt) + 1);
+            else {
+                const unsigned long long b = bits_of(v);
+                h = gw_fnv1a64(h, &b, sizeof b);
+            }
+        }
+        for (int c = 0; c < t->ncols; c++) {
+            const unsigned long long b = bits_of(t->val[r * t->ncols + c]);
+            h = gw_fnv1a64(h, &b, sizeof b);
+        }
+        o[r].hash = h, o[r].row = r;
+    }
+    if (rc == GW_OK && nsamples > 0) {
+        qsort(o, n, sizeof *o, cmp_outcome);
+        rc = find_pile_pair(t, kf, o, cnt, &ra, &rb);
+    }
+    free(nr);
+    free(o);
+    free(cnt);
+    if (rc != GW_OK)
+        return gw_err_set(err, rc, "%s: out of memory", t->path);
+    if (ra < 0)
+        return GW_OK;
+    long same = 0;
+    for (long r = 0; r < t->nrows; r++)
+        same += gw_stats_table_same(t, r, ra, kf);
+    const char *key = t->grid_name[kf];
+    return gw_err_set(err, GW_EFORMAT, "%s:%ld: %s '%s' holds the pile of %s '%s' (line %ld) under another name: "
+                      "each of their %ld rows agrees in every cell with a row of the other (cases %ld and %ld the "
+                      "first), so every point would count twice (a copy of a sample, or layer-make run twice with "
+                      "one seed and options, listed in a sweep of a build before the sweep compared samples by "
+                      "content); rerun the sweep listing one of them", t->path, t->row_line[rb], key,
+                      t->grid_value[rb * t->ngrid + kf], key, t->grid_value[ra * t->ngrid + kf], t->row_line[ra],
+                      same, t->case_id[ra], t->case_id[rb]);
+}
+
 /* Whole-table checks: a case number appears once (a table stitched from two
  * runs would count its points twice), and a bouncing point carries its e_n, e
  * and alpha_r (a NaN there would drop out of the means while the point still
@@ -301,6 +486,8 @@ int gw_stats_table_check_rows(const gw_stats_table *t, gw_err *err)
         return gw_err_set(err, GW_EFORMAT, "%s: case %ld appears more than once (a table of one sweep holds each case once)",
                           t->path, dup);
     int rc = check_combinations(t, err);
+    if (rc == GW_OK)
+        rc = check_same_piles(t, err);
     if (rc != GW_OK)
         return rc;
     const int cb = gw_stats_table_col(t, "bounced");

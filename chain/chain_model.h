@@ -31,10 +31,13 @@ struct gw_chain {
     double vreg;                 /* Coulomb regularisation speed, m/s */
     double *work;                /* [2 dim] scratch of the force-rate root (chain_force_rate) */
     double dtrack;               /* plastic wall: D_max follows D (dD_max/dt = D' s(x),
-                                    s = x^2 (3 - 2x), x = (D - D_max + dtrack)/dtrack
+                                    s = x^2 (3 - 2x), x = (D - D_max + 2 dtrack)/dtrack
                                     clipped to [0, 1]) so that the switch between
                                     unloading and reloading is C^1, not a jump the
-                                    corrector chatters on; D_max lags D by < dtrack */
+                                    corrector chatters on; a reloading D_max runs
+                                    ahead of D by < dtrack, and tracking (D = D_max)
+                                    lies on the ramp's flat top, where the implicit
+                                    methods' difference quotients see no slope */
 };
 
 /* Contact force and dissipated power for overlap d > 0 and rate dd = d'. */

@@ -257,7 +257,7 @@ int chain_drag_steps_check(const gw_chain_params *p, const gw_solver_type *type,
  * ml + 1) doubles (the Jacobian, its saved copy and the factor workspace). The
  * band is 2 above and 3 below the diagonal; a sensor body's and a plastic or
  * viscoelastic wall's k states, ordered before the beads (gw_chain_create),
- * widen it to k + 1 on both sides (k at most 2 + 1 + GW_WALL_MAX_ARMS). Before
+ * widen it to k + 1 on both sides (k at most 2 + 2 + GW_WALL_MAX_ARMS). Before
  * that order they made it the whole system (dim x (2 dim - 1), n^2: 200 MB at
  * n = 1000). Measured peak resident sizes at n = 1e6 (t-max 1e-9 s): 218 B a
  * bead for rk4, 637 cvode bdf, 295 adams, 381 arkode erk, 810 dirk. The
@@ -271,8 +271,10 @@ static int implicit_method(const gw_solver_type *t, int method)
 static double memory_bytes(const gw_chain_params *p, const gw_solver_type *type, int method)
 {
     const double n = p->n;
-    /* the states ordered before the beads: x_s, v_s; W and D_max or the arms */
-    const double k = 2.0 * (p->sensor.mass > 0) + (p->wall.yield_pressure > 0 || p->wall.loss > 0 ? 1 + GW_WALL_MAX_ARMS : 0);
+    /* the states ordered before the beads: x_s, v_s; W, D_max and the arms
+     * (a yield stress and a loss together give all three) */
+    const int plastic = p->wall.yield_pressure > 0, visco = p->wall.loss > 0;
+    const double k = 2.0 * (p->sensor.mass > 0) + (plastic || visco) + plastic + (visco ? GW_WALL_MAX_ARMS : 0);
     const double dim = 2 * n + 8 + k, mu = fmax(2, k + 1), ml = fmax(3, k + 1);
     const gw_solver_type *t = type ? type : gw_solver_cvode;
     const int implicit = implicit_method(t, method);

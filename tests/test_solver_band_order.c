@@ -217,6 +217,12 @@ static void against_own_order(void)
     free(ya);
     free(yb);
     N = keep;
+#if defined(__SANITIZE_ADDRESS__)
+    /* the sanitizer's allocator aborts the process on a request this size
+     * (allocator_may_return_null is off): the release build checks it */
+    printf("SKIP: 200,001 points in the states' own order (960 GB): not asked of the sanitizer's allocator\n");
+    return;
+#endif
     const gw_system big = own_order();
     double *y = calloc(DIM, sizeof *y);
     gw_solver_params p = gw_solver_params_default();

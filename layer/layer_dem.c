@@ -562,18 +562,7 @@ int layer_dem_rhs(double t, const double *y, double *yd, void *P)
             db[3] -= fx, db[4] -= fy, db[5] += ft * c->rb;
         }
     }
-    for (int i = 0; i < n; i++) {
-        double *d = yd + 6 * i;
-        if (L->fixed[i]) {
-            d[0] = d[1] = d[2] = d[3] = d[4] = d[5] = 0;
-            continue;
-        }
-        d[3] *= L->minv[i];
-        d[4] = d[4] * L->minv[i] - g;
-        d[5] *= L->iinv[i];
-    }
-    yd[6 * n + L->nc] = pd;
-    yd[6 * n + L->nc + 1] = 0;
+    layer_rhs_finish(L, yd, n, g, pd, 0);
     L->geo_pos = 1;
     return 0;
 }

@@ -467,6 +467,26 @@ static inline int layer_ft_modes(const gw_layer *L, const unsigned char **held)
     return m;
 }
 
+/* The last pass of a right-hand side: the summed forces and torques of the n
+ * bodies in yd become accelerations (gravity g downwards); a frozen body's
+ * derivatives are all zero. Then the ledger's two rows: dissipated power pd and
+ * the rate pk of its other term (0 where the path has none). */
+static inline void layer_rhs_finish(const gw_layer *L, double *yd, int n, double g, double pd, double pk)
+{
+    for (int i = 0; i < n; i++) {
+        double *d = yd + 6 * i;
+        if (L->fixed[i]) {
+            d[0] = d[1] = d[2] = d[3] = d[4] = d[5] = 0;
+            continue;
+        }
+        d[3] *= L->minv[i];
+        d[4] = d[4] * L->minv[i] - g;
+        d[5] *= L->iinv[i];
+    }
+    yd[6 * n + L->nc] = pd;
+    yd[6 * n + L->nc + 1] = pk;
+}
+
 /* Body of disc i. */
 static inline int layer_body(const gw_layer *L, int i)
 {

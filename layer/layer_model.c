@@ -324,18 +324,7 @@ static int layer_rhs(double t, const double *y, double *yd, void *P)
                 db[5] -= armb[0] * fy - armb[1] * fx;
         }
     }
-    for (int i = 0; i < n; i++) {
-        double *d = yd + 6 * i;
-        if (L->fixed[i]) {
-            d[0] = d[1] = d[2] = d[3] = d[4] = d[5] = 0;
-            continue;
-        }
-        d[3] *= L->minv[i];
-        d[4] = d[4] * L->minv[i] - g;
-        d[5] *= L->iinv[i];
-    }
-    yd[6 * n + L->nc] = pd;
-    yd[6 * n + L->nc + 1] = pk;
+    layer_rhs_finish(L, yd, n, g, pd, pk);
     return 0;
 }
 

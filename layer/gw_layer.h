@@ -645,13 +645,14 @@ int gw_layer_impact_rest_check(const gw_layer_sample *s, const gw_layer_params *
  * the Hertz drop from overlap q^(2/3) d to d releases about 0.19 of the
  * strain energy at rest at q = 1.5 and 0.24 at q = 0.5; measured on a 40-disc
  * pile left alone under the default material, the first 5 ms give 0.5-2 J of
- * soil motion matched, 6.4 J at q = 0.38 and 19 J at q = 0.038. The 300-disc
- * pile settled at 30 degrees and left alone at 19 degrees (0.597 of its
- * tan(phi)) comes to rest, at 17.5 degrees (0.546) it flows: 711 J of
- * potential energy and 64 J of motion in 100 ms, growing. */
+ * soil motion matched, 6.4 J at q = 0.38 and 19 J at q = 0.038. A lower
+ * friction is refused whatever the ratio (GW_LAYER_SETTLED_FRICTION_MIN 1):
+ * the 300-disc pile settled at 30 degrees rests at 19.2, the 600-disc one
+ * flows there (37 kJ of potential energy in 100 ms), the 1000-disc one at
+ * 24 (layer_settled.c). */
 #define GW_LAYER_SETTLED_LOAD_MIN 0.5
 #define GW_LAYER_SETTLED_LOAD_MAX 1.5
-#define GW_LAYER_SETTLED_FRICTION_MIN 0.6
+#define GW_LAYER_SETTLED_FRICTION_MIN 1.0
 int gw_layer_impact_settled_check(const gw_layer_sample *s, const gw_layer_params *lp, int other_settling,
                                   const char *name, char *warning, size_t n, gw_err *err);
 /* q above for the sample s under lp; NaN when s->settled is not recorded (or

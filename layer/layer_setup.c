@@ -73,7 +73,7 @@ static const gw_param impact_params[] = {
      * from it the pile is not at rest at t = 0 (layer_settled.c) */
     FLAG("other-settling", other_settling, "run a sample settled with another material or gravity (its settings line) "
          "whose contacts carry less than 0.5 or more than 1.5 times the weight they carried at rest under "
-         "this material (and the floor load that explains), or whose friction coefficient is below 0.6 of "
+         "this material (and the floor load that explains), or whose friction angle is below "
          "the settling's; the result records a warning (docs/cli.md)"),
     /* optional: with full, until is refused at either value (rebound, the
      * default's value given, passed in silence though full runs to t-max) */

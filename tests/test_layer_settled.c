@@ -17,9 +17,9 @@
  *     (G/(1 - nu) ratio x the weights' ratio, discs and spheres), to 1e-14.
  *  4. gw_layer_impact_settled_check: refused below 0.5 and above 1.5 (with the
  *     values named), run with a warning by other_settling, warned inside
- *     [0.5, 1.5], for another friction (within GW_LAYER_SETTLED_FRICTION_MIN
- *     of its tangent, test_settling_friction.sh: a lower one below it is
- *     refused) or mass law; nothing for the same
+ *     [0.5, 1.5], for a higher friction or another mass law; a lower
+ *     friction, even by 0.01 degree, refused and run with a warning by
+ *     other_settling (test_settling_friction.sh); nothing for the same
  *     material, for a material in the same proportions (density x 2 and
  *     gravity / 2: the same rest) and when nothing is recorded.
  * Before this change the sample had no settling record: none of this compiles.
@@ -230,8 +230,16 @@ static void checks(void)
           NULL);
     gw_layer_params lf = lp;
     lf.friction_deg = 20; /* tan 20 / tan 30 = 0.63 */
-    check("friction 20 against 30: a warning", three(2650, 9.81, 40e9, 0.25, 0), &lf, 0, GW_OK,
+    check("friction 20 against 30: refused", three(2650, 9.81, 40e9, 0.25, 0), &lf, 0, GW_EINVAL,
           "friction 30 deg against the impact's 20");
+    check("friction 20 against 30, other_settling: a warning that it may flow", three(2650, 9.81, 40e9, 0.25, 0),
+          &lf, 1, GW_OK, "the pile may flow on it");
+    lf.friction_deg = 29.99;
+    check("friction 29.99 against 30: refused", three(2650, 9.81, 40e9, 0.25, 0), &lf, 0, GW_EINVAL,
+          "settling's friction (30 deg) or more");
+    lf.friction_deg = 40;
+    check("friction 40 against 30: a warning", three(2650, 9.81, 40e9, 0.25, 0), &lf, 0, GW_OK,
+          "friction 30 deg against the impact's 40");
     gw_layer_params ls = lp;
     ls.mass_law = GW_LAYER_MASS_SPHERE;
     ls.density = 2650 / 0.3; /* the spheres' weight about the discs' */

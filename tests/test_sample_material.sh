@@ -19,7 +19,8 @@
 #    (100/2650 to 1e-12), the CSV header's "warning:", Python's
 #    GranwaveWarning and outcome warnings;
 #  3 warned and run: a pile settled at density 2000 (load ratio 0.755, within
-#    [0.5, 1.5]) and the default pile hit with friction 20 against its 30;
+#    [0.5, 1.5]) and the default pile hit with friction 40 against its 30 (a
+#    lower one is refused: test_settling_friction);
 #  4 a settings line altered (not JSON, a density that is a string, a second
 #    settings line, the material without shear_modulus) is refused by the
 #    reader with the file and line (exit 2); a settings line without material
@@ -83,7 +84,7 @@ if runs_json "--other-settling" os.json layer-impact --sample d100.txt --t-max 0
 fi
 
 # 3: near rest, or another friction: run with a warning
-for c in "d2000.txt|0.755 times the weight|" "s.txt|friction 30 deg against the impact's 20|--friction 20"; do
+for c in "d2000.txt|0.755 times the weight|" "s.txt|friction 30 deg against the impact's 40|--friction 40"; do
     f=${c%%|*}; rest=${c#*|}; pat=${rest%%|*}; extra=${rest#*|}
     # shellcheck disable=SC2086
     if runs_json "$f $extra" w.json layer-impact --sample "$f" --t-max 0.002 $extra; then

@@ -13,6 +13,8 @@ numbers come either from the paper (data/falcon1998/*.csv) or from the program.
     import_granwave()      the Python module granwave (python/granwave over libgranwave)
     run_main(main, argv)   a plot script's entry: a stdout that cannot be written (a
                            closed pipe, a full disk) ends in one line and exit 1
+    InputError, OutputError  a plot script's two failures (exit 2 and exit 1)
+    save_pngs(figs, outdir, dpi)  write figures as outdir/NAME.png, OutputError naming one
 
 Columns whose non-empty cells all parse as numbers become float numpy arrays (empty cells
 and "nan" -> NaN); other columns are lists of str. Dicts keep the file's column order.
@@ -39,6 +41,31 @@ def read_error(path, e):
 
 __all__ = ["read_error", "DATA_DIR", "GranwaveError", "open_regular", "load_csv", "load_json", "load_table", "paper_value",
            "find_granwave", "run_granwave", "import_granwave", "run_main"]
+
+
+class InputError(Exception):
+    """A missing or malformed input; a plot script's main() prints it and exits with 2."""
+
+
+class OutputError(Exception):
+    """A figure that cannot be written; a plot script's main() prints it and exits with 1."""
+
+
+def save_pngs(figs, outdir, dpi, metadata=None, quiet=False):
+    """Write each figure of figs ({name: Figure}) as outdir/name.png, in order, printing
+    each path unless quiet; the paths. A write that fails raises OutputError naming the
+    file (outdir must exist)."""
+    paths = []
+    for name, fig in figs.items():
+        p = os.path.join(outdir, name + ".png")
+        try:
+            fig.savefig(p, dpi=dpi, metadata=metadata)
+        except OSError as e:
+            raise OutputError(f"cannot write {p}: {e.strerror or e}")
+        paths.append(p)
+        if not quiet:
+            print(p)
+    return paths
 
 
 class GranwaveError(RuntimeError):

@@ -57,12 +57,8 @@ SIGNAL = {"column_h5.1_10ms", "column_h1.9_10ms"}  # the cases whose signal is d
 PAPER_BAND = 0.05  # "independent of N within 5 %" (physics.md 1.7)
 
 
-class InputError(Exception):
-    """A missing or malformed input; main() prints it and exits with 2."""
-
-
-class OutputError(Exception):
-    """A figure that cannot be written; main() prints it and exits with 1."""
+InputError = gwdata.InputError    # exit 2
+OutputError = gwdata.OutputError  # exit 1
 
 
 def run_cases(d, names=None, program=None):
@@ -308,17 +304,7 @@ def write_figures(d, quiet=False):
             "Description": json.dumps({n: c["json"]["settings"] for n, c in cases.items()},
                                       sort_keys=True),
             "Source": os.path.abspath(d)}
-    paths = []
-    for name, fig in make_figures(cases).items():
-        p = os.path.join(outdir, name + ".png")
-        try:
-            fig.savefig(p, dpi=110, metadata=meta)
-        except OSError as e:
-            raise OutputError(f"cannot write {p}: {e.strerror or e}")
-        paths.append(p)
-        if not quiet:
-            print(p)
-    return paths
+    return gwdata.save_pngs(make_figures(cases), outdir, 110, meta, quiet)
 
 
 def main(argv):

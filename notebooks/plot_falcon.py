@@ -57,12 +57,8 @@ FIGURES = ["fmax_vs_n", "taun_vs_n", "wall_force_n7_15_30", "velocities_n7", "er
 PAPER_BAND = 0.05  # "independent of N within 5 %" (docs/physics.md 1.7)
 
 
-class InputError(Exception):
-    """A missing or malformed input; main() prints it and exits with 2."""
-
-
-class OutputError(Exception):
-    """A figure that cannot be written; main() prints it and exits with 1."""
+InputError = gwdata.InputError    # exit 2
+OutputError = gwdata.OutputError  # exit 1
 
 
 def _csv(path, columns=(), finite=()):
@@ -445,17 +441,7 @@ def write_figures(d, quiet=False, run=None):
     meta = {"Software": f"granwave {run['summary'].get('version', '?')} + plot_falcon.py",
             "Description": json.dumps(run["summary"].get("settings", {}), sort_keys=True),
             "Source": run.get("source") or os.path.abspath(d)}
-    paths = []
-    for name, fig in figs.items():
-        p = os.path.join(outdir, name + ".png")
-        try:
-            fig.savefig(p, dpi=120, metadata=meta)
-        except OSError as e:
-            raise OutputError(f"cannot write {p}: {e.strerror or e}")
-        paths.append(p)
-        if not quiet:
-            print(p)
-    return paths
+    return gwdata.save_pngs(figs, outdir, 120, meta, quiet)
 
 
 USAGE = ("usage: plot_falcon.py DIR                    (DIR = granwave falcon --out DIR)\n"

@@ -40,7 +40,6 @@ written. Headless (Agg); use
 Debian's /usr/bin/python3.
 """
 
-import json
 import os
 import sys
 
@@ -76,12 +75,8 @@ WINDOW = 50e-6   # plateau window (about two wall-force periods), s
 PAPER_BAND = 0.05  # the paper's F_max is "independent of N within 5 %" (docs/physics.md 1.7)
 
 
-class InputError(Exception):
-    """A missing or malformed input; main() prints it and exits with 2."""
-
-
-class OutputError(Exception):
-    """A figure that cannot be written; main() prints it and exits with 1."""
+InputError = gwdata.InputError    # exit 2
+OutputError = gwdata.OutputError  # exit 1
 
 
 # ---- sheets ----
@@ -680,14 +675,7 @@ def write_figures(data_dir, out_dir, quiet=False):
         os.makedirs(out_dir, exist_ok=True)
     except OSError as e:
         raise OutputError(f"cannot create {out_dir}: {e.strerror or e}")
-    for name, fig in made.items():
-        path = os.path.join(out_dir, name + ".png")
-        try:
-            fig.savefig(path, dpi=120)
-        except OSError as e:
-            raise OutputError(f"cannot write {path}: {e.strerror or e}")
-        if not quiet:
-            print(path)
+    gwdata.save_pngs(made, out_dir, 120, quiet=quiet)
 
 
 def main(argv):

@@ -121,11 +121,14 @@ def _declare(name, restype, *argtypes):
 
 def _check_abi():
     # first, before any call whose arguments or structs could differ: a library
-    # of another ABI (or older than the ABI number) is named with both numbers
+    # of another ABI (or older than the ABI number) is named with both numbers;
+    # one without gw_version is no libgranwave at all (_declare says so)
+    _declare("gw_version", ctypes.c_char_p)
     try:
         f = lib.gw_abi_version
     except AttributeError:
-        raise ImportError(f"granwave: {path} is a libgranwave older than ABI numbers (no gw_abi_version); "
+        raise ImportError(f"granwave: {path} is a libgranwave older than ABI numbers ({lib.gw_version().decode()}, "
+                          "no gw_abi_version); "
                           f"this module is written for ABI {ABI_VERSION}: use the module installed with that "
                           "library, or set GRANWAVE_LIB to the build's lib/libgranwave.so") from None
     f.restype, f.argtypes = ctypes.c_int, []
@@ -141,7 +144,6 @@ def _check_abi():
 
 
 _check_abi()
-_declare("gw_version", ctypes.c_char_p)
 _declare("gw_version_major", ctypes.c_int)
 _declare("gw_version_minor", ctypes.c_int)
 _declare("gw_version_patch", ctypes.c_int)

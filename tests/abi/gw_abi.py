@@ -351,7 +351,8 @@ def self_test(lay):
         rec = {**base, "structs": {**base["structs"], "gw_layer_sample": 96},
                "members": {k: v for k, v in base["members"].items() if k != ("gw_layer_sample", "settled")}}
         expect("gw_layer_sample appended to", rec, "breaking", "gw_layer_sample: member settled added")
-        expect("gw_layer_sample grown", rec, "breaking", "gw_layer_sample: 96 bytes in the record, 168 now")
+        expect("gw_layer_sample grown", rec, "breaking",
+               f"gw_layer_sample: 96 bytes in the record, {lay.structs['gw_layer_sample']} now")
     k = ("gw_err", "msg")
     moved = (str(int(lay.members[k][0]) + 8),) + tuple(lay.members[k][1:])
     expect("gw_err.msg moved", {**base, "members": {**base["members"], k: moved}}, "breaking", "member msg: offset")

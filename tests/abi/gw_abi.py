@@ -41,7 +41,7 @@ ATTR = re.compile(r"^\s*<[0-9a-f]+>\s+(DW_AT_\w+)\s*:\s?(.*)$")
 
 def _value(text):
     """An attribute's value as readelf prints it: strings may be indirect."""
-    m = re.match(r"\(indirect (?:line )?string, offset: (?:0x)?[0-9a-f]+\): (.*)$", text)
+    m = re.match(r"\((?:indirect|indexed) (?:line )?string[,:] [^)]*\): (.*)$", text)  # GCC's, Clang's
     if m:
         return m.group(1)
     return text.strip()
@@ -54,6 +54,10 @@ def read_dies(readelf, obj):
                          capture_output=True, text=True).stdout
     dies, stack, cur = {}, [], None
     for line in out.splitlines():
+        m = re.match(r"\s*Pointer Size:\s*(\d+)", line)  # the CU's: Clang gives pointers no byte size
+        if m:
+            dies["pointer_size"] = int(m.group(1))
+            continue
         m = DIE.match(line)
         if m:
             depth, off, tag = int(m.group(1)), int(m.group(2), 16), m.group(4)
@@ -115,6 +119,7 @@ def _int(text):
 
 class Layout:
     def __init__(self, dies, files, public):
+        self.pointer_size = dies.pop("pointer_size", 0)
         self.dies, self.files, self.public = dies, files, public
         self.structs = {}   # name -> size
         self.members = {}   # (struct, member) -> (offset, size, type)
@@ -154,6 +159,8 @@ class Layout:
         d = self.dies[off]
         if "DW_AT_byte_size" in d["attrs"]:
             return _int(d["attrs"]["DW_AT_byte_size"])
+        if d["tag"] == "DW_TAG_pointer_type":
+            return self.pointer_size
         if d["tag"] == "DW_TAG_array_type":
             n = 1
             for c in d["children"]:

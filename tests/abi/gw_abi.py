@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 """The ABI record of libgranwave: the layout of every struct of the installed
-headers and the value of every constant of their enums, as the compiler lays
-them out, compared with the committed record tests/abi/gw_abi.txt.
+headers, the value of every constant of their enums and (with GCC) the
+declaration of every function they declare, as the compiler sees them,
+compared with the committed record tests/abi/gw_abi.txt.
 
 Why: the library writes a caller's struct whole (a result, a gw_err, a
 gw_layer_sample). A caller compiled against an older header, or a hand-made
@@ -18,13 +19,15 @@ not), and its DWARF, printed by readelf, gives each struct's size and each
 member's offset, size and type. A struct counts as public when the DWARF says
 it is declared in one of the installed headers (the install rule's list,
 app/lib/CMakeLists.txt), so a new struct in any of them is in the record, and
-the check fails until the record has it.
+the check fails until the record has it. DWARF describes no function that
+is only declared, so the functions come from GCC's -aux-info listing of the
+same compilation (--aux; with another compiler they are not compared).
 
   gw_abi.py check ARGS   exit 0 when the record matches, 1 with the differences
   gw_abi.py write ARGS   rewrite the record; refused (exit 1) when a struct of
                          the record changed and GW_ABI_VERSION did not
-ARGS: --object O --readelf R --headers "h1;h2;..." --record F --abi N
-      [--sizes PROG] [--soname-of LIB] [--python-lib python/granwave/_lib.py]
+ARGS: --object O --readelf R --headers "h1,h2,..." --record F --abi N
+      [--aux O.aux] [--sizes PROG] [--soname-of LIB] [--python-lib python/granwave/_lib.py]
 Regenerate after a change: cmake --build build --target gw_abi_record
 """
 import argparse
@@ -102,6 +105,23 @@ def read_files(readelf, obj):
     return files
 
 
+AUX = re.compile(r"^/\* (.+):\d+:\w+ \*/ extern (.*\b(gw_\w+) \(.*\));")
+
+
+def read_functions(aux, public):
+    """The functions the installed headers declare, {name: declaration}, from
+    GCC's -aux-info listing of the same file (every prototype it saw, with
+    its types spelt out: "int gw_chain_collide (const gw_chain *, ...)").
+    DWARF describes no function a file only declares."""
+    fns = {}
+    with open(aux, encoding="utf-8") as f:
+        for line in f:
+            m = AUX.match(line.strip())
+            if m and os.path.basename(m.group(1)) in public:
+                fns[m.group(3)] = " ".join(m.group(2).split())
+    return fns
+
+
 def _ref(text):
     m = re.match(r"<0x([0-9a-f]+)>", text)
     return int(m.group(1), 16) if m else None
@@ -124,6 +144,7 @@ class Layout:
         self.structs = {}   # name -> size
         self.members = {}   # (struct, member) -> (offset, size, type)
         self.consts = {}    # enumerator -> value
+        self.fns = {}       # function -> declaration (with --aux only)
         self.typedef_of = {}  # off of a struct/enum/union -> its typedef's name
         for d in dies.values():
             if d["tag"] == "DW_TAG_typedef" and "DW_AT_type" in d["attrs"]:
@@ -251,11 +272,12 @@ class Layout:
 
 def record_lines(abi, plat, lay):
     out = ["# libgranwave's ABI record (tests/abi/gw_abi.py): the size of every struct of the",
-           "# installed headers, each member's offset, size and type, and every enum",
-           "# constant, as the compiler lays them out. test_abi compares the build's with",
-           "# this file; after a change, regenerate it with",
+           "# installed headers, each member's offset, size and type, every enum constant",
+           "# and every function's declaration (GCC's -aux-info), as the compiler sees",
+           "# them. test_abi compares the build's with this file; after a change,",
+           "# regenerate it with",
            f"#   {REGENERATE}",
-           "# (refused while a struct of this record changed and GW_ABI_VERSION did not).",
+           "# (refused while what this record holds changed and GW_ABI_VERSION did not).",
            "# The layouts are those of one platform (the ELF class and machine below);",
            "# another platform's build is not compared with them.",
            f"abi {abi}",
@@ -268,11 +290,13 @@ def record_lines(abi, plat, lay):
             out.append(f"member {s} {name} {where} {size} {typ}")
     for c in sorted(lay.consts):
         out.append(f"const {c} {lay.consts[c]}")
+    for fn in sorted(lay.fns):
+        out.append(f"fn {fn} {lay.fns[fn]}")
     return out
 
 
 def parse_record(path):
-    rec = {"abi": None, "platform": None, "structs": {}, "members": {}, "consts": {}}
+    rec = {"abi": None, "platform": None, "structs": {}, "members": {}, "consts": {}, "fns": {}}
     with open(path, encoding="utf-8") as f:
         for n, line in enumerate(f, 1):
             line = line.rstrip("\n")
@@ -289,6 +313,8 @@ def parse_record(path):
                 rec["members"][(w[1], w[2])] = (w[3], int(w[4]), w[5])
             elif w[0] == "const" and len(w) == 3:
                 rec["consts"][w[1]] = int(w[2])
+            elif w[0] == "fn" and len(w) >= 3:
+                rec["fns"][w[1]] = line.split(" ", 2)[2]
             else:
                 raise ValueError(f"{path}:{n}: not a record line: {line!r}")
     if rec["abi"] is None or rec["platform"] is None:
@@ -300,8 +326,9 @@ def compare(rec, lay):
     """(breaking, additions): lists of lines. Breaking: a struct of the record
     gone or resized, a member gone, moved, resized or retyped, a member added
     to a struct (the overrun of an older caller), an enum constant gone or
-    changed. Additions: a new struct, a new constant (old callers never see
-    them), which need the record regenerated but no new ABI number."""
+    changed, a function gone or its declaration changed. Additions: a new
+    struct, constant or function (old callers never see them), which need the
+    record regenerated but no new ABI number."""
     brk, add = [], []
     for s, size in sorted(rec["structs"].items()):
         if s not in lay.structs:
@@ -325,6 +352,14 @@ def compare(rec, lay):
             brk.append(f"constant {c}: gone (was {v})")
         elif lay.consts[c] != v:
             brk.append(f"constant {c}: {v} in the record, {lay.consts[c]} now")
+    if lay.fns:  # GCC's -aux-info: otherwise the functions are not compared
+        for fn, decl in sorted(rec["fns"].items()):
+            if fn not in lay.fns:
+                brk.append(f"function {fn}: gone (was {decl})")
+            elif lay.fns[fn] != decl:
+                brk.append(f"function {fn}: {decl} in the record, {lay.fns[fn]} now")
+        for fn in sorted(set(lay.fns) - set(rec["fns"])):
+            add.append(f"function {fn}: new ({lay.fns[fn]}), not in the record")
     for s in sorted(set(lay.structs) - set(rec["structs"])):
         add.append(f"struct {s}: new ({lay.structs[s]} bytes), not in the record")
     for c in sorted(set(lay.consts) - set(rec["consts"])):
@@ -345,7 +380,8 @@ def self_test(lay):
     them, so that a compare that can no longer fail fails here: the session-29
     case (gw_layer_sample without its settled record: 96 bytes for 168), a
     member moved, a constant changed, a struct the record lacks."""
-    base = {"abi": 0, "structs": dict(lay.structs), "members": dict(lay.members), "consts": dict(lay.consts)}
+    base = {"abi": 0, "structs": dict(lay.structs), "members": dict(lay.members), "consts": dict(lay.consts),
+            "fns": {}}
     fails = []
 
     def expect(what, rec, kind, needle):
@@ -368,6 +404,15 @@ def self_test(lay):
     expect("a new struct", {**base, "structs": {n: v for n, v in base["structs"].items() if n != "gw_err"},
                             "members": {m: v for m, v in base["members"].items() if m[0] != "gw_err"}},
            "addition", "struct gw_err: new")
+    if lay.fns:
+        base["fns"] = dict(lay.fns)
+        fn = "gw_chain_collide" if "gw_chain_collide" in lay.fns else sorted(lay.fns)[0]
+        changed = lay.fns[fn].replace(", gw_err *)", ", int, gw_err *)") if ", gw_err *)" in lay.fns[fn] \
+            else lay.fns[fn] + " "
+        expect(f"{fn} given a parameter", {**base, "fns": {**base["fns"], fn: changed}}, "breaking",
+               f"function {fn}:")
+        expect("a new function", {**base, "fns": {f: d for f, d in base["fns"].items() if f != fn}}, "addition",
+               f"function {fn}: new")
     if compare(base, lay) != ([], []):
         fails.append(f"self-test: the build's own layout differs from itself: {compare(base, lay)}")
     return fails
@@ -379,6 +424,14 @@ def soname(readelf, lib):
     return m.group(1) if m else None
 
 
+def _listed(lines, most=40):
+    """Indented, at most `most` of them (a new header can add hundreds)."""
+    out = ["  " + line for line in lines[:most]]
+    if len(lines) > most:
+        out.append(f"  ... and {len(lines) - most} more")
+    return out
+
+
 def main(argv):
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("mode", choices=("check", "write"))
@@ -387,6 +440,7 @@ def main(argv):
     ap.add_argument("--headers", required=True, help="the installed headers, ';'-separated")
     ap.add_argument("--record", required=True)
     ap.add_argument("--abi", type=int, required=True, help="GW_ABI_VERSION of the build")
+    ap.add_argument("--aux", help="GCC's -aux-info listing of the object's source (the functions)")
     ap.add_argument("--sizes", help="tests/abi/abi_sizes, linked to libgranwave.so")
     ap.add_argument("--soname-of", help="libgranwave.so, whose soname must carry the ABI")
     ap.add_argument("--python-lib", help="python/granwave/_lib.py, written for one ABI")
@@ -394,6 +448,12 @@ def main(argv):
 
     public = {os.path.basename(h) for h in re.split("[,;]", a.headers) if h}
     lay = Layout(read_dies(a.readelf, a.object), read_files(a.readelf, a.object), public).collect()
+    if a.aux:
+        lay.fns = read_functions(a.aux, public)
+        if "gw_abi_version" not in lay.fns or "gw_version" not in lay.fns:
+            print(f"gw_abi: read {len(lay.fns)} functions from {a.aux} (no gw_version, gw_abi_version): "
+                  "the -aux-info listing not understood", file=sys.stderr)
+            return 1
     # a readelf whose output this script no longer reads gives nothing: never a pass
     if "gw_err" not in lay.structs or lay.members.get(("gw_err", "msg"), (None, 0))[1] != 512 \
             or len(lay.structs) < 10:
@@ -417,34 +477,40 @@ def main(argv):
     brk, add = compare(rec, lay) if rec else ([], [])
 
     if a.mode == "write":
+        if not lay.fns and rec and rec["fns"]:
+            print("gw_abi: not written: the record's functions come from GCC's -aux-info, which this build "
+                  "lacks (build with GCC to regenerate the record)", file=sys.stderr)
+            return 1
         if rec and brk and rec["abi"] == a.abi:
-            print(f"gw_abi: not written: the layout of ABI {a.abi} changed and GW_ABI_VERSION did not:",
+            print(f"gw_abi: not written: ABI {a.abi} changed (a layout, a constant or a declaration) and "
+                  "GW_ABI_VERSION did not:",
                   file=sys.stderr)
-            for line in brk:
-                print("  " + line, file=sys.stderr)
+            for line in _listed(brk):
+                print(line, file=sys.stderr)
             print(f"  bump GW_ABI_VERSION in CMakeLists.txt (to {a.abi + 1}), then run {REGENERATE}",
                   file=sys.stderr)
             return 1
         with open(a.record, "w", encoding="utf-8") as f:
             f.write("\n".join(record_lines(a.abi, plat, lay)) + "\n")
         print(f"gw_abi: wrote {a.record}: ABI {a.abi}, {len(lay.structs)} structs, "
-              f"{len(lay.members)} members, {len(lay.consts)} constants")
+              f"{len(lay.members)} members, {len(lay.consts)} constants, {len(lay.fns)} functions")
         return 0
 
     fails = self_test(lay)
     if brk and rec["abi"] == a.abi:
-        fails.append(f"the layout of the public structs changed while GW_ABI_VERSION stayed {a.abi}:")
-        fails += ["  " + line for line in brk]
-        fails.append(f"  a caller compiled against the old headers would be overrun: bump GW_ABI_VERSION "
+        fails.append(f"the ABI (the public structs' layout, enum constants, function declarations) changed "
+                     f"while GW_ABI_VERSION stayed {a.abi}:")
+        fails += _listed(brk)
+        fails.append(f"  a caller compiled against the old headers would be overrun or call wrongly: bump GW_ABI_VERSION "
                      f"in CMakeLists.txt (to {a.abi + 1}) and regenerate the record: {REGENERATE}")
     elif brk or rec["abi"] != a.abi:
         fails.append(f"the record is of ABI {rec['abi']} and the headers of ABI {a.abi}"
                      + (" with another layout:" if brk else ":"))
-        fails += ["  " + line for line in brk]
+        fails += _listed(brk)
         fails.append(f"  regenerate the record: {REGENERATE}")
     if add:
         fails.append("the record lacks what the headers now have:")
-        fails += ["  " + line for line in add]
+        fails += _listed(add)
         fails.append(f"  an addition needs no new ABI number; regenerate the record: {REGENERATE}")
 
     if a.sizes:  # the library's own numbers: its ABI and gw_struct_size for each struct
@@ -482,7 +548,8 @@ def main(argv):
             print(line, file=sys.stderr)
         return 1
     print(f"gw_abi: PASS: ABI {a.abi}, {len(lay.structs)} structs, {len(lay.members)} members, "
-          f"{len(lay.consts)} constants as recorded" + (", gw_struct_size of each" if a.sizes else "")
+          f"{len(lay.consts)} constants" + (f", {len(lay.fns)} functions" if lay.fns else
+                                            " (functions not compared: no -aux-info, not GCC)") + " as recorded" + (", gw_struct_size of each" if a.sizes else "")
           + (f", soname libgranwave.so.{a.abi}" if a.soname_of else ""))
     return 0
 

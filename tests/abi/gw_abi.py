@@ -108,7 +108,7 @@ def read_files(readelf, obj):
 AUX = re.compile(r"^/\* (.+):\d+:\w+ \*/ extern (.*\b(gw_\w+) \(.*\));")
 
 
-def read_functions(aux, public):
+def read_functions(aux, public, header):
     """The functions the installed headers declare, {name: declaration}, from
     GCC's -aux-info listing of the same file (every prototype it saw, with
     its types spelt out: "int gw_chain_collide (const gw_chain *, ...)").
@@ -119,6 +119,7 @@ def read_functions(aux, public):
             m = AUX.match(line.strip())
             if m and os.path.basename(m.group(1)) in public:
                 fns[m.group(3)] = " ".join(m.group(2).split())
+                header[("fn", m.group(3))] = os.path.basename(m.group(1))
     return fns
 
 
@@ -145,6 +146,7 @@ class Layout:
         self.members = {}   # (struct, member) -> (offset, size, type)
         self.consts = {}    # enumerator -> value
         self.fns = {}       # function -> declaration (with --aux only)
+        self.header = {}    # (kind, name) -> the header declaring it
         self.typedef_of = {}  # off of a struct/enum/union -> its typedef's name
         for d in dies.values():
             if d["tag"] == "DW_TAG_typedef" and "DW_AT_type" in d["attrs"]:
@@ -153,9 +155,12 @@ class Layout:
     def name_of(self, d):
         return d["attrs"].get("DW_AT_name") or self.typedef_of.get(d["off"])
 
-    def is_public(self, d):
+    def header_of(self, d):
         f = d["attrs"].get("DW_AT_decl_file")
-        return f is not None and self.files.get(_int(f)) in self.public
+        return self.files.get(_int(f)) if f is not None else None
+
+    def is_public(self, d):
+        return self.header_of(d) in self.public
 
     def strip(self, off):
         """Past const, volatile and typedefs of non-aggregates."""
@@ -261,12 +266,14 @@ class Layout:
                 if not name:
                     continue  # anonymous, inside another: recorded by its members' paths
                 self.structs[name] = _int(d["attrs"]["DW_AT_byte_size"])
+                self.header[("struct", name)] = self.header_of(d)
                 self.add_members(name, d, 0, "")
             elif d["tag"] == "DW_TAG_enumeration_type":
                 for c in d["children"]:
                     e = self.dies[c]
                     if e["tag"] == "DW_TAG_enumerator":
                         self.consts[e["attrs"]["DW_AT_name"]] = _int(e["attrs"]["DW_AT_const_value"])
+                        self.header[("const", e["attrs"]["DW_AT_name"])] = self.header_of(d)
         return self
 
 
@@ -283,20 +290,20 @@ def record_lines(abi, plat, lay):
            f"abi {abi}",
            f"platform {plat}"]
     for s in sorted(lay.structs):
-        out.append(f"struct {s} {lay.structs[s]}")
+        out.append(f"struct {s} {lay.structs[s]} {lay.header[('struct', s)]}")
         ms = [(k[1], v) for k, v in lay.members.items() if k[0] == s]
         ms.sort(key=lambda kv: (int(kv[1][0].split("+")[0]), kv[0]))
         for name, (where, size, typ) in ms:
             out.append(f"member {s} {name} {where} {size} {typ}")
     for c in sorted(lay.consts):
-        out.append(f"const {c} {lay.consts[c]}")
+        out.append(f"const {c} {lay.consts[c]} {lay.header[('const', c)]}")
     for fn in sorted(lay.fns):
-        out.append(f"fn {fn} {lay.fns[fn]}")
+        out.append(f"fn {fn} {lay.header[('fn', fn)]} {lay.fns[fn]}")
     return out
 
 
 def parse_record(path):
-    rec = {"abi": None, "platform": None, "structs": {}, "members": {}, "consts": {}, "fns": {}}
+    rec = {"abi": None, "platform": None, "structs": {}, "members": {}, "consts": {}, "fns": {}, "header": {}}
     with open(path, encoding="utf-8") as f:
         for n, line in enumerate(f, 1):
             line = line.rstrip("\n")
@@ -307,19 +314,39 @@ def parse_record(path):
                 rec["abi"] = int(w[1])
             elif w[0] == "platform":
                 rec["platform"] = line.split(" ", 1)[1]
-            elif w[0] == "struct" and len(w) == 3:
+            elif w[0] == "struct" and len(w) == 4:
                 rec["structs"][w[1]] = int(w[2])
+                rec["header"][("struct", w[1])] = w[3]
             elif w[0] == "member" and len(w) == 6:
                 rec["members"][(w[1], w[2])] = (w[3], int(w[4]), w[5])
-            elif w[0] == "const" and len(w) == 3:
+            elif w[0] == "const" and len(w) == 4:
                 rec["consts"][w[1]] = int(w[2])
-            elif w[0] == "fn" and len(w) >= 3:
-                rec["fns"][w[1]] = line.split(" ", 2)[2]
+                rec["header"][("const", w[1])] = w[3]
+            elif w[0] == "fn" and len(w) >= 4:
+                rec["fns"][w[1]] = line.split(" ", 3)[3]
+                rec["header"][("fn", w[1])] = w[2]
             else:
                 raise ValueError(f"{path}:{n}: not a record line: {line!r}")
     if rec["abi"] is None or rec["platform"] is None:
         raise ValueError(f"{path}: no 'abi N' or 'platform ...' line")
     return rec
+
+
+def restrict(rec, public):
+    """The record without what headers this build does not install declare
+    (gw_layer.h and gw_layer_study.h in a build with GW_BUILD_LAYER=OFF), and
+    the names of those headers."""
+    out = {**rec, "structs": {}, "members": {}, "consts": {}, "fns": {}}
+    left = set()
+    for kind, key in (("struct", "structs"), ("const", "consts"), ("fn", "fns")):
+        for name, v in rec[key].items():
+            h = rec["header"][(kind, name)]
+            if h in public:
+                out[key][name] = v
+            else:
+                left.add(h)
+    out["members"] = {k: v for k, v in rec["members"].items() if k[0] in out["structs"]}
+    return out, sorted(left)
 
 
 def compare(rec, lay):
@@ -449,7 +476,7 @@ def main(argv):
     public = {os.path.basename(h) for h in re.split("[,;]", a.headers) if h}
     lay = Layout(read_dies(a.readelf, a.object), read_files(a.readelf, a.object), public).collect()
     if a.aux:
-        lay.fns = read_functions(a.aux, public)
+        lay.fns = read_functions(a.aux, public, lay.header)
         if "gw_version" not in lay.fns or len(lay.fns) < 100:
             print(f"gw_abi: read {len(lay.fns)} functions from {a.aux} (no gw_version, or under 100): "
                   "the -aux-info listing not understood", file=sys.stderr)
@@ -474,6 +501,13 @@ def main(argv):
             return 1
         print(f"gw_abi: SKIP: the record is of {rec['platform']}, this build of {plat}: layouts not compared")
         return 77
+    left = []
+    if rec:
+        rec, left = restrict(rec, public)
+        if left and a.mode == "write":
+            print(f"gw_abi: not written: this build does not install {', '.join(left)}, which the record "
+                  "holds (regenerate it from a build of every module)", file=sys.stderr)
+            return 1
     brk, add = compare(rec, lay) if rec else ([], [])
 
     if a.mode == "write":
@@ -549,7 +583,8 @@ def main(argv):
         return 1
     print(f"gw_abi: PASS: ABI {a.abi}, {len(lay.structs)} structs, {len(lay.members)} members, "
           f"{len(lay.consts)} constants" + (f", {len(lay.fns)} functions" if lay.fns else
-                                            " (functions not compared: no -aux-info, not GCC)") + " as recorded" + (", gw_struct_size of each" if a.sizes else "")
+                                            " (functions not compared: no -aux-info, not GCC)") + " as recorded"
+          + (f" (not in this build, not compared: what {', '.join(left)} declare)" if left else "") + (", gw_struct_size of each" if a.sizes else "")
           + (f", soname libgranwave.so.{a.abi}" if a.soname_of else ""))
     return 0
 

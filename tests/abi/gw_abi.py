@@ -10,7 +10,7 @@ mirror, that is shorter is overrun (session 29: a stale ctypes mirror of
 gw_layer_sample, 96 bytes for 168, wrote 72 bytes past its end). The soname is
 libgranwave.so.GW_ABI_VERSION, so a program linked against another ABI is
 refused by the dynamic linker; this script makes sure the number changes when
-a layout does.
+a layout (or a constant, or a declaration) does.
 
 The layout comes from the compiler, not from parsing C here: a translation
 unit that includes every installed header is compiled with
@@ -24,8 +24,8 @@ is only declared, so the functions come from GCC's -aux-info listing of the
 same compilation (--aux; with another compiler they are not compared).
 
   gw_abi.py check ARGS   exit 0 when the record matches, 1 with the differences
-  gw_abi.py write ARGS   rewrite the record; refused (exit 1) when a struct of
-                         the record changed and GW_ABI_VERSION did not
+  gw_abi.py write ARGS   rewrite the record; refused (exit 1) when what the
+                         record holds changed and GW_ABI_VERSION did not
 ARGS: --object O --readelf R --headers "h1,h2,..." --record F --abi N
       [--aux O.aux] [--sizes PROG] [--soname-of LIB] [--python-lib python/granwave/_lib.py]
 Regenerate after a change: cmake --build build --target gw_abi_record
@@ -51,15 +51,15 @@ def _value(text):
 
 
 def read_dies(readelf, obj):
-    """Every DIE of obj's .debug_info: {offset: die}, each die a dict with tag,
-    attrs, children (offsets) and parent."""
+    """Every DIE of obj's .debug_info, {offset: die} (each a dict of its tag,
+    attrs, children's offsets and own offset), and the CU's pointer size."""
     out = subprocess.run([readelf, "--debug-dump=info", obj], check=True,
                          capture_output=True, text=True).stdout
-    dies, stack, cur = {}, [], None
+    dies, stack, cur, pointer_size = {}, [], None, 0
     for line in out.splitlines():
         m = re.match(r"\s*Pointer Size:\s*(\d+)", line)  # the CU's: Clang gives pointers no byte size
         if m:
-            dies["pointer_size"] = int(m.group(1))
+            pointer_size = int(m.group(1))
             continue
         m = DIE.match(line)
         if m:
@@ -77,7 +77,7 @@ def read_dies(readelf, obj):
         m = ATTR.match(line)
         if m and cur is not None:
             cur["attrs"][m.group(1)] = _value(m.group(2))
-    return dies
+    return dies, pointer_size
 
 
 def read_files(readelf, obj):
@@ -139,16 +139,16 @@ def _int(text):
 
 
 class Layout:
-    def __init__(self, dies, files, public):
-        self.pointer_size = dies.pop("pointer_size", 0)
-        self.dies, self.files, self.public = dies, files, public
+    def __init__(self, dies_ptr, files, public):
+        self.dies, self.pointer_size = dies_ptr
+        self.files, self.public = files, public
         self.structs = {}   # name -> size
         self.members = {}   # (struct, member) -> (offset, size, type)
         self.consts = {}    # enumerator -> value
         self.fns = {}       # function -> declaration (with --aux only)
         self.header = {}    # (kind, name) -> the header declaring it
         self.typedef_of = {}  # off of a struct/enum/union -> its typedef's name
-        for d in dies.values():
+        for d in self.dies.values():
             if d["tag"] == "DW_TAG_typedef" and "DW_AT_type" in d["attrs"]:
                 self.typedef_of.setdefault(_ref(d["attrs"]["DW_AT_type"]), d["attrs"].get("DW_AT_name"))
 

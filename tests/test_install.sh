@@ -1,17 +1,19 @@
 #!/bin/bash
-# test_install.sh BUILD_DIR SOURCE_DIR VERSION: `cmake --install` into a temporary
+# test_install.sh BUILD_DIR SOURCE_DIR VERSION ABI: `cmake --install` into a temporary
 # prefix, then build tests/install/colliding.c against the installed package
 # three ways (pkg-config with the shared library, pkg-config --static with
 # libgranwave.a, CMake find_package(granwave CONFIG)) and run each: a column
 # collision checked against the closed form and the version (see colliding.c).
 # Also: every installed header compiles on its own (so none includes a header
-# that is not installed), the soname carries the version, and the .pc and
+# that is not installed), the soname is the ABI number (libgranwave.so.ABI, the
+# file libgranwave.so.ABI.VERSION), and the .pc and
 # CMake package report the project version, and the installed Python module
 # loads the installed library.
 set -euo pipefail
 build=$(cd "$1" && pwd)
 src=$(cd "$2" && pwd)
 version=$3
+abi=$4
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 fail() { echo "FAIL: $*"; exit 1; }
@@ -25,13 +27,12 @@ done
 [ -x "$p/bin/granwave" ] && grep -q "$version" <<<"$("$p/bin/granwave" version)" || fail "the program bin/granwave"
 echo "PASS: library, headers, granwave.pc, the CMake package and the program installed"
 
-major=${version%%.*}
-rest=${version#*.}
-minor=${rest%%.*}
 soname=$(readelf -d "$p/lib/libgranwave.so" | sed -n 's/.*SONAME.*\[\(.*\)\]/\1/p')
-[ "$soname" = "libgranwave.so.$major.$minor" ] || fail "soname '$soname', expected libgranwave.so.$major.$minor"
-[ -f "$p/lib/libgranwave.so.$version" ] || fail "no libgranwave.so.$version"
-echo "PASS: soname $soname, file libgranwave.so.$version"
+[ "$soname" = "libgranwave.so.$abi" ] || fail "soname '$soname', expected libgranwave.so.$abi (GW_ABI_VERSION)"
+[ -f "$p/lib/libgranwave.so.$abi.$version" ] || fail "no libgranwave.so.$abi.$version"
+[ "$(readlink "$p/lib/libgranwave.so.$abi")" = "libgranwave.so.$abi.$version" ] || fail "libgranwave.so.$abi is no link to the file"
+grep -q "^#define GW_ABI_VERSION $abi\$" "$p/include/granwave/gw_version.h" || fail "gw_version.h: no GW_ABI_VERSION $abi"
+echo "PASS: soname $soname, file libgranwave.so.$abi.$version, GW_ABI_VERSION $abi"
 
 inc=$p/include/granwave
 for h in "$inc"/*.h; do

@@ -12,7 +12,8 @@
  *   gw_layer.h   the 2D granular layer (Bourrier et al. 2008)
  *   gw_layer_study.h  a block impact from its parameter table
  *   gw_study.h   the index of studies and sweep models (for bindings)
- *   gw_version.h GW_VERSION, GW_VERSION_MAJOR/MINOR/PATCH of these headers
+ *   gw_abi.h     gw_abi_version(), gw_struct_size(): the ABI, the structs' sizes
+ *   gw_version.h GW_VERSION, GW_VERSION_MAJOR/MINOR/PATCH, GW_ABI_VERSION of these headers
  *
  * Link with pkg-config (pkg-config --cflags --libs granwave) or CMake
  * (find_package(granwave CONFIG), target granwave::granwave). Units are SI.
@@ -32,5 +33,6 @@
 #include "gw_layer.h"
 #include "gw_layer_study.h"
 #include "gw_study.h"
+#include "gw_abi.h"
 
 #endif

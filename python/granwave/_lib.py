@@ -10,7 +10,10 @@ Where the library is looked for, first found wins:
      (what ./setup.sh build makes), when this package is <repo>/python/granwave;
   4. the system's search path (ctypes.util.find_library("granwave")).
 No compilation happens at import: the C structs the module reads are mirrored
-here and their sizes checked against the library's.
+here. Before any other call the library's ABI (gw_abi_version) must be the one
+these mirrors were written for (ABI_VERSION), and their sizes the library's
+(gw_struct_size): a library of another ABI is refused with ImportError, not
+called with structs it would write past.
 """
 import ctypes
 import ctypes.util
@@ -18,6 +21,10 @@ import os
 from pathlib import Path
 
 c_double_p = ctypes.POINTER(ctypes.c_double)
+
+# The ABI of libgranwave (GW_ABI_VERSION, its soname number) these mirrors are
+# written for; test_abi fails while it differs from the headers'.
+ABI_VERSION = 1
 
 
 class GwErr(ctypes.Structure):
@@ -112,7 +119,31 @@ def _declare(name, restype, *argtypes):
     f.argtypes = list(argtypes)
 
 
-_declare("gw_version", ctypes.c_char_p)
+def _check_abi():
+    # first, before any call whose arguments or structs could differ: a library
+    # of another ABI (or older than the ABI number) is named with both numbers;
+    # one without gw_version is no libgranwave at all (_declare says so)
+    _declare("gw_version", ctypes.c_char_p)
+    try:
+        f = lib.gw_abi_version
+    except AttributeError:
+        raise ImportError(f"granwave: {path} is a libgranwave older than ABI numbers ({lib.gw_version().decode()}, "
+                          "no gw_abi_version); "
+                          f"this module is written for ABI {ABI_VERSION}: use the module installed with that "
+                          "library, or set GRANWAVE_LIB to the build's lib/libgranwave.so") from None
+    f.restype, f.argtypes = ctypes.c_int, []
+    if f() != ABI_VERSION:
+        raise ImportError(f"granwave: {path} has ABI {f()}, this module is written for ABI {ABI_VERSION}: use the "
+                          "module installed with that library, or set GRANWAVE_LIB to a libgranwave.so of "
+                          f"ABI {ABI_VERSION}")
+    _declare("gw_struct_size", ctypes.c_size_t, ctypes.c_char_p)
+    for name, mirror in (("gw_err", GwErr), ("gw_param", GwParam), ("gw_study", GwStudy)):
+        if lib.gw_struct_size(name.encode()) != ctypes.sizeof(mirror):
+            raise ImportError(f"granwave: {path} (ABI {ABI_VERSION}) does not match this module: {name} is "
+                              f"{lib.gw_struct_size(name.encode())} bytes there, {ctypes.sizeof(mirror)} here")
+
+
+_check_abi()
 _declare("gw_version_major", ctypes.c_int)
 _declare("gw_version_minor", ctypes.c_int)
 _declare("gw_version_patch", ctypes.c_int)

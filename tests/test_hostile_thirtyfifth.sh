@@ -1,0 +1,155 @@
+#!/bin/bash
+# test_hostile_thirtyfifth.sh GRANWAVE SRCDIR: what the thirty-fifth hostile
+# pass found, fixed at its root and asserted here.
+#  1 A pile written before it settled. layer-make writes a pile cut by its
+#    t-max with 'converged 0' in its settled line and one warning, and exits 0;
+#    layer-impact, sweeps and Python then ran on that file with exit 0 and
+#    nothing said. The file keeps positions, not velocities: the run starts the
+#    pile at rest where it was moving, grains in the air among them (the 8-disc
+#    pile below, cut at 0.2 s, is wholly in the air: floor load 0). The default
+#    impact gave e_n 0.258 against 0.083 on the same pile settled, penetration
+#    0.227 m against 0.013 (the 40-disc pile of seed 1 cut at 0.3 s: e_n 0.476
+#    against 0.149, penetration 0.625 m). It now warns (a warning, as
+#    layer-make's own exit is 0): stderr, impact.json's warnings, the CSV
+#    headers, a sweep's settling_warning column (counted by the check pass and
+#    by layer-stats), Python's GranwaveWarning; text and HDF5 samples, the
+#    program's and the library's settled lines.
+#  2 Impact points at one block position. A layer sweep with points > 1 and
+#    spacing = 0 ran the same impact once per point, and layer-stats counted
+#    them as that many points (n 4, spreads 0.000); so did a spacing below the
+#    rounding of the block's position (1e-300 m). Refused by sweep, sweep
+#    --check and Python's sweep, naming spacing, nothing written.
+#  3 layer-stats took a settling_warning cell of 7, 0.5 or nan (a sweep writes
+#    0 or 1) and counted the row as without warning; refused, as bounced is.
+# Checks that fail on the code before: see docs/tests.md.
+# shellcheck source=refusal_lib.sh
+. "$2/tests/refusal_lib.sh"
+hostile_setup "$@"
+export LC_ALL=C
+
+h5=0
+"$GW" version --json | grep -q '"hdf5":[[:space:]]*"' && h5=1
+
+# --- 1 a pile written before it settled ---
+# the same 8 discs settled (2.74 s) and cut at t-max 0.2 s (in the air)
+"$GW" layer-make --n 8 --width-rm 6 --seed 1 --out settled.txt >/dev/null 2>&1
+"$GW" layer-make --n 8 --width-rm 6 --seed 1 --t-max 0.2 --out cut.txt >/dev/null 2>&1
+grep -q 'converged 1' settled.txt && grep -q 'converged 0' cut.txt ||
+    ko "set-up: layer-make's piles are not as expected ($(grep -h '# settled' settled.txt cut.txt | cut -c1-60))"
+[ $h5 = 1 ] && "$GW" layer-make --n 8 --width-rm 6 --seed 1 --t-max 0.2 --out cut.h5 >/dev/null 2>&1
+
+WARN='the sample did not settle \(its settled line says converged 0'
+# unsettled NAME FILE: layer-impact on FILE runs (exit 0), says it once on
+# stderr, and records it in --json's and impact.json's warnings and in the
+# ledger's header
+unsettled() {
+    rm -rf o
+    timeout -s KILL 60 "$GW" layer-impact --sample "$2" --json --out o >i.json 2>"$tmp/stderr" </dev/null
+    local rc=$? n
+    n=$(grep -cE "^granwave layer-impact: warning: $WARN" "$tmp/stderr")
+    if [ $rc -eq 0 ] && [ "$n" -eq 1 ] &&
+        [ "$(jq_py i.json "sum('did not settle' in w for w in d['warnings'])")" = 1 ] &&
+        [ "$(jq_py o/impact.json "sum('did not settle' in w for w in d['warnings'])")" = 1 ] &&
+        grep -q '^#.*warning: the sample did not settle' o/ledger.csv; then
+        ok "$1: runs with one warning that the pile did not settle (stderr, --json, impact.json, ledger.csv)"
+    else
+        ko "$1: exit $rc, $n warning lines, warnings $(jq_py i.json "d['warnings']" 2>/dev/null | head -c 200)"
+    fi
+}
+unsettled "layer-impact on a pile cut at t-max 0.2 s (text)" cut.txt
+if [ $h5 = 1 ]; then
+    unsettled "layer-impact on a pile cut at t-max 0.2 s (HDF5)" cut.h5
+else
+    echo "SKIP: HDF5 (this build has none)"
+fi
+
+# the pile settled: nothing said, and the same pile's numbers as before
+if runs_json "layer-impact on the settled pile" s.json layer-impact --sample settled.txt; then
+    [ ! -s "$tmp/stderr" ] && [ "$(jq_py s.json "d['warnings'] == []")" = True ] &&
+        ok "layer-impact on the settled pile: no warning" || ko "layer-impact on the settled pile: $(head -c 300 "$tmp/stderr")"
+fi
+
+# with another material too: both said, in one warning line
+timeout -s KILL 60 "$GW" layer-impact --sample cut.txt --density 2500 --json >i.json 2>"$tmp/stderr" </dev/null
+rc=$?
+[ $rc -eq 0 ] && [ "$(wc -l <"$tmp/stderr")" -eq 1 ] &&
+    grep -qE "warning: the sample settled with density 2650 .*; $WARN" "$tmp/stderr" &&
+    ok "layer-impact on the cut pile at density 2500: one warning line with the material and the settling" ||
+    ko "layer-impact on the cut pile at density 2500: exit $rc, $(cat "$tmp/stderr")"
+
+# a sweep: the check pass counts the cases, each row says settling_warning 1
+# (0 on the settled pile), and layer-stats counts them
+printf '[sweep]\nmodel = layer\nout = sw\n[grid]\nsample = cut.txt, settled.txt\npoint = 0:1\n[params]\npoints = 2\nspacing = 0.3\nvi = 5\nt-max = 0.01\n' >sw.ini
+timeout -s KILL 120 "$GW" sweep sw.ini --quiet >/dev/null 2>"$tmp/stderr" </dev/null
+rc=$?
+col=$(/usr/bin/python3 -c "
+import csv
+rows = list(csv.DictReader(l for l in open('sw/results.csv') if not l.startswith('#')))
+print(' '.join(r['settling_warning'] for r in rows))" 2>/dev/null)
+[ $rc -eq 0 ] && [ "$col" = "1 1 0 0" ] &&
+    grep -q "warning: 2 of 4 cases run on a sample settled under another material or not settled" "$tmp/stderr" &&
+    ok "sweep over the cut and the settled pile: settling_warning 1 1 0 0, the check pass counts 2 of 4" ||
+    ko "sweep over the cut and the settled pile: exit $rc, settling_warning '$col', $(head -c 300 "$tmp/stderr")"
+timeout -s KILL 60 "$GW" layer-stats sw/results.csv >/dev/null 2>"$tmp/stderr" </dev/null
+rc=$?
+[ $rc -eq 0 ] && grep -q "warning: 2 of 4 rows ran on a sample .*not settled" "$tmp/stderr" &&
+    ok "layer-stats counts the 2 rows on the cut pile" || ko "layer-stats: exit $rc, $(head -c 300 "$tmp/stderr")"
+
+# Python: the program's file, and one the library writes (layer_make out=)
+py_checks <<'EOF'
+import warnings, granwave
+for f in ("cut.txt", "lib_cut.txt"):
+    with warnings.catch_warnings(record=True) as w:
+        warnings.simplefilter("always")
+        if f == "lib_cut.txt":
+            granwave.layer_make(n=8, width_rm=6, seed=1, t_max=0.2, out=f)
+            w.clear()
+        r = granwave.layer_impact(sample=f)
+    said = [str(x.message) for x in w if x.category is granwave.GranwaveWarning and "did not settle" in str(x.message)]
+    ok = len(said) == 1 and sum("did not settle" in t for t in r["warnings"]) == 1
+    print(("PASS: " if ok else "FAIL: ") + "Python layer_impact on %s: one GranwaveWarning that the pile did not "
+          "settle, in the result's warnings too (%d)" % (f, len(said)))
+EOF
+
+# --- 2 impact points at one block position ---
+for sp in 0 1e-300; do
+    printf '[sweep]\nmodel = layer\nout = o\n[grid]\npoint = 0:3\n[params]\nsample = settled.txt\npoints = 4\nspacing = %s\nvi = 5\nt-max = 0.01\n' "$sp" >p.ini
+    refused "sweep --check, spacing $sp with 4 points: refused naming spacing" \
+        "^granwave sweep: p.ini: case 0: spacing: $sp m puts impact points 0 and 1 of 4 at one block position" sweep p.ini --check
+    refused "sweep, spacing $sp with 4 points: refused naming spacing, nothing written" \
+        "^granwave sweep: p.ini: case 0: spacing: $sp m puts impact points 0 and 1 of 4 at one block position" sweep p.ini --quiet
+done
+# points that do move the block still run
+printf '[sweep]\nmodel = layer\nout = o\n[grid]\npoint = 0:3\n[params]\nsample = settled.txt\npoints = 4\nspacing = 1e-6\nvi = 5\nt-max = 0.01\n' >p.ini
+rm -rf o # a journal the code before wrote there would be another sweep's
+timeout -s KILL 60 "$GW" sweep p.ini --check >/dev/null 2>&1 </dev/null && ok "sweep --check, spacing 1e-6 with 4 points: valid" ||
+    ko "sweep --check, spacing 1e-6 with 4 points: exit $?"
+py_checks <<'EOF'
+import granwave
+try:
+    granwave.sweep(model="layer", grid={"point": "0:3"}, sample="settled.txt", points=4, spacing=0, vi=5, t_max=0.01)
+    print("FAIL: Python sweep with spacing 0 over 4 points ran")
+except granwave.GranwaveValueError as e:
+    print(("PASS: " if "spacing" in str(e) else "FAIL: ") + "Python sweep, spacing 0 over 4 points: "
+          "GranwaveValueError naming spacing (%s)" % str(e)[:80])
+EOF
+
+# --- 3 layer-stats: settling_warning is 0 or 1 ---
+if [ -f sw/results.csv ]; then
+    for v in 7 0.5 nan; do
+        /usr/bin/python3 - "$v" <<'EOF'
+import sys
+lines = open("sw/results.csv").read().split("\n")
+h = next(i for i, l in enumerate(lines) if l.startswith("case,"))
+k = lines[h].split(",").index("settling_warning")
+row = lines[h + 1].split(",")
+row[k] = sys.argv[1]
+lines[h + 1] = ",".join(row)
+open("edited.csv", "w").write("\n".join(lines))
+EOF
+        refused "layer-stats: a settling_warning of $v refused naming the column" \
+            "^granwave layer-stats: edited.csv:[0-9]+: column settling_warning: '$v' is not 0 or 1" layer-stats edited.csv --out o
+    done
+fi
+
+test_summary test_hostile_thirtyfifth

@@ -21,6 +21,10 @@
 #    --check and Python's sweep, naming spacing, nothing written.
 #  3 layer-stats took a settling_warning cell of 7, 0.5 or nan (a sweep writes
 #    0 or 1) and counted the row as without warning; refused, as bounced is.
+#  4 The sphere mass law with union clumps (layer-impact --mass-law sphere on a
+#    sample of union clumps, layer-make with both) was refused without naming
+#    an option ("clump mass 'union' needs the disc mass law ..."), in Python
+#    too; it now names --mass-law (Python: mass_law).
 # Checks that fail on the code before: see docs/tests.md.
 # shellcheck source=refusal_lib.sh
 . "$2/tests/refusal_lib.sh"
@@ -151,5 +155,21 @@ EOF
             "^granwave layer-stats: edited.csv:[0-9]+: column settling_warning: '$v' is not 0 or 1" layer-stats edited.csv --out o
     done
 fi
+
+# --- 4 the sphere mass law with union clumps: refused naming the option ---
+"$GW" layer-make --clumps --n 6 --width-rm 12 --clump-mass union --t-max 0.2 --out union.txt >/dev/null 2>&1
+refused "layer-impact --mass-law sphere on a sample of union clumps: refused naming --mass-law" \
+    "^granwave layer-impact --mass-law: sphere with clump mass 'union'" layer-impact --sample union.txt --mass-law sphere --out o
+refused "layer-make --clumps --mass-law sphere --clump-mass union: refused naming --mass-law" \
+    "^granwave layer-make --mass-law: sphere with clump mass 'union'" layer-make --clumps --n 3 --mass-law sphere --clump-mass union --out o
+py_checks <<'EOF'
+import granwave
+try:
+    granwave.layer_impact(sample="union.txt", mass_law="sphere")
+    print("FAIL: Python layer_impact mass_law='sphere' on union clumps ran")
+except granwave.GranwaveValueError as e:
+    print(("PASS: " if str(e).startswith("layer_impact: mass_law: ") else "FAIL: ") + "Python layer_impact "
+          "mass_law='sphere' on union clumps: GranwaveValueError naming mass_law (%s)" % str(e)[:70])
+EOF
 
 test_summary test_hostile_thirtyfifth

@@ -25,6 +25,9 @@
 #    sample of union clumps, layer-make with both) was refused without naming
 #    an option ("clump mass 'union' needs the disc mass law ..."), in Python
 #    too; it now names --mass-law (Python: mass_law).
+#  5 layer-stats' warnings (rows on such a pile among them) were on stderr
+#    alone: its --json and boundary_fit.json now list them ("warnings"), as
+#    Python's result and layer-impact's JSON do.
 # Checks that fail on the code before: see docs/tests.md.
 # shellcheck source=refusal_lib.sh
 . "$2/tests/refusal_lib.sh"
@@ -94,10 +97,22 @@ print(' '.join(r['settling_warning'] for r in rows))" 2>/dev/null)
     grep -q "warning: 2 of 4 cases run on a sample settled under another material or not settled" "$tmp/stderr" &&
     ok "sweep over the cut and the settled pile: settling_warning 1 1 0 0, the check pass counts 2 of 4" ||
     ko "sweep over the cut and the settled pile: exit $rc, settling_warning '$col', $(head -c 300 "$tmp/stderr")"
-timeout -s KILL 60 "$GW" layer-stats sw/results.csv >/dev/null 2>"$tmp/stderr" </dev/null
+timeout -s KILL 60 "$GW" layer-stats sw/results.csv --json --out st >st.json 2>"$tmp/stderr" </dev/null
 rc=$?
 [ $rc -eq 0 ] && grep -q "warning: 2 of 4 rows ran on a sample .*not settled" "$tmp/stderr" &&
     ok "layer-stats counts the 2 rows on the cut pile" || ko "layer-stats: exit $rc, $(head -c 300 "$tmp/stderr")"
+# its warnings in --json and boundary_fit.json, as Python's result and
+# layer-impact's JSON carry theirs (they were on stderr alone)
+if [ $rc -eq 0 ]; then
+    /usr/bin/python3 - "$tmp/stderr" >chk.txt 2>&1 <<'EOF'
+import json, sys
+said = [l.split(": warning: ", 1)[1].rstrip("\n") for l in open(sys.argv[1]) if ": warning: " in l]
+j, b = json.load(open("st.json")), json.load(open("st/boundary_fit.json"))
+print(len(said) >= 2 and j.get("warnings") == said and b.get("warnings") == said)
+EOF
+    [ "$(cat chk.txt)" = True ] && ok "layer-stats --json and boundary_fit.json list the warnings stderr gives" ||
+        ko "layer-stats --json and boundary_fit.json: warnings $(jq_py st.json "d.get('warnings')" | head -c 200)"
+fi
 
 # Python: the program's file, and one the library writes (layer_make out=)
 py_checks <<'EOF'

@@ -28,6 +28,9 @@
 #  5 layer-stats' warnings (rows on such a pile among them) were on stderr
 #    alone: its --json and boundary_fit.json now list them ("warnings"), as
 #    Python's result and layer-impact's JSON do.
+#  6 A sweep writes settled_load_ratio inf for a case without gravity (q =
+#    W_settled / W_impact; other-settling on a pile touching no floor), and
+#    layer-stats refused that table: "'inf' is not a value a sweep writes".
 # Checks that fail on the code before: see docs/tests.md.
 # shellcheck source=refusal_lib.sh
 . "$2/tests/refusal_lib.sh"
@@ -186,5 +189,25 @@ except granwave.GranwaveValueError as e:
     print(("PASS: " if str(e).startswith("layer_impact: mass_law: ") else "FAIL: ") + "Python layer_impact "
           "mass_law='sphere' on union clumps: GranwaveValueError naming mass_law (%s)" % str(e)[:70])
 EOF
+
+# --- 6 a table whose settled_load_ratio is inf, as a sweep writes it ---
+# the cut pile touches nothing (floor load 0): hit without gravity, with
+# other-settling, it runs, q = W_settled / W_impact = inf, and the sweep writes
+# 'inf' into its table, which layer-stats refused as no value a sweep writes
+printf '[sweep]\nmodel = layer\nout = g0\n[grid]\nvi = 5, 6\n[params]\nsample = cut.txt\ngravity = 0\nother-settling = 1\nt-max = 0.01\n' >g0.ini
+timeout -s KILL 120 "$GW" sweep g0.ini --quiet >/dev/null 2>&1 </dev/null
+rc=$?
+if [ $rc -eq 0 ] && grep -q ',inf,1,[0-9a-f]*,[0-9a-f]*$' g0/results.csv; then
+    timeout -s KILL 60 "$GW" layer-stats g0/results.csv --json >g0.json 2>"$tmp/stderr" </dev/null
+    rc=$?
+    [ $rc -eq 0 ] && grep -q "settled_load_ratio inf to inf" "$tmp/stderr" &&
+        ok "layer-stats reads the sweep's table of q = inf (no gravity) and counts its rows" ||
+        ko "layer-stats on the sweep's table of q = inf: exit $rc, $(head -c 300 "$tmp/stderr")"
+    sed 's/,inf,1,\([0-9a-f]*,[0-9a-f]*\)$/,-inf,1,\1/' g0/results.csv >neg.csv
+    refused "layer-stats: a settled_load_ratio of -inf still refused" \
+        "^granwave layer-stats: neg.csv:[0-9]+: column settled_load_ratio: '-inf' is not a value a sweep writes" layer-stats neg.csv --out o
+else
+    ko "a sweep without gravity on the cut pile (other-settling): exit $rc, rows $(grep -vc '^#' g0/results.csv 2>/dev/null)"
+fi
 
 test_summary test_hostile_thirtyfifth

@@ -31,6 +31,12 @@
 #  6 A sweep writes settled_load_ratio inf for a case without gravity (q =
 #    W_settled / W_impact; other-settling on a pile touching no floor), and
 #    layer-stats refused that table: "'inf' is not a value a sweep writes".
+#  7 A chain sweep said nothing of cases that did not end (held on the wall
+#    by gravity: a row of nan; cut at t-max: the values there), where cli.md
+#    says chain sweeps warn and `granwave chain` warns of each; Python's sweep
+#    issued none of the sweep's warnings (a dt above the step taken, layer
+#    cases on a sample settled otherwise or not settled, these). One line now
+#    counts such cases, and Python issues every line as a GranwaveWarning.
 # Checks that fail on the code before: see docs/tests.md.
 # shellcheck source=refusal_lib.sh
 . "$2/tests/refusal_lib.sh"
@@ -209,5 +215,52 @@ if [ $rc -eq 0 ] && grep -q ',inf,1,[0-9a-f]*,[0-9a-f]*$' g0/results.csv; then
 else
     ko "a sweep without gravity on the cut pile (other-settling): exit $rc, rows $(grep -vc '^#' g0/results.csv 2>/dev/null)"
 fi
+
+# --- 7 a sweep's warnings: chain cases that did not end, Python's sweep ---
+# held on the wall by gravity (its row nan) or cut at t-max (its values those
+# at t-max): the row says converged 0, and the sweep now says so in one line
+printf '[sweep]\nmodel = chain\nout = ch\n[grid]\nn = 6:7\n[params]\nt-max = 1.94e-4\n' >ch.ini
+timeout -s KILL 60 "$GW" sweep ch.ini --quiet >/dev/null 2>"$tmp/stderr" </dev/null
+rc=$?
+[ $rc -eq 0 ] && [ "$(grep -c warning "$tmp/stderr")" -eq 1 ] &&
+    grep -q "^granwave sweep: warning: 1 of 2 cases did not end their collision (column converged = 0; the first, case 1)" "$tmp/stderr" &&
+    grep -q '^1,7,.*,0,[0-9a-f]*$' ch/results.csv &&
+    ok "chain sweep with n 7 cut at t-max: one warning line, 1 of 2 cases (case 1, converged 0 in its row)" ||
+    ko "chain sweep with n 7 cut at t-max: exit $rc, $(head -c 300 "$tmp/stderr")"
+printf '[sweep]\nmodel = chain\nout = hd\n[grid]\nn = 2:3\n[params]\ngravity = 1e3\nvimp = 0.01\n' >hd.ini
+timeout -s KILL 60 "$GW" sweep hd.ini --quiet >/dev/null 2>"$tmp/stderr" </dev/null
+rc=$?
+[ $rc -eq 0 ] && grep -q "^granwave sweep: warning: 2 of 2 cases did not end their collision" "$tmp/stderr" &&
+    ok "chain sweep of columns gravity holds on the wall: the warning cli.md promises, 2 of 2" ||
+    ko "chain sweep of held columns: exit $rc, $(head -c 300 "$tmp/stderr")"
+printf '[sweep]\nmodel = chain\nout = cl\n[grid]\nn = 1:2\n' >cl.ini
+timeout -s KILL 60 "$GW" sweep cl.ini --quiet >/dev/null 2>"$tmp/stderr" </dev/null
+rc=$?
+[ $rc -eq 0 ] && [ ! -s "$tmp/stderr" ] && ok "chain sweep whose cases end: no warning" ||
+    ko "chain sweep whose cases end: exit $rc, $(head -c 300 "$tmp/stderr")"
+# Python's sweep: the lines the program prints, as GranwaveWarning and in the
+# result's warnings (it issued none: not the dt, the settling, nor these)
+py_checks <<'EOF'
+import warnings, granwave
+def said(**kw):
+    with warnings.catch_warnings(record=True) as w:
+        warnings.simplefilter("always")
+        r = granwave.sweep(jobs=1, **kw)
+    return [str(x.message) for x in w if x.category is granwave.GranwaveWarning], r
+for what, kw, text in (
+        ("chain cases held by gravity", dict(model="chain", grid={"n": [2, 3]}, gravity=1e3, vimp=0.01),
+         "sweep: 2 of 2 cases did not end their collision"),
+        ("a chain dt above the step taken", dict(model="chain", grid={"n": [2, 3]}, dt=1e-3),
+         "sweep: dt 0.001 s is above the longest step that 2 of 2 cases take"),
+        ("layer cases on the cut pile", dict(model="layer", grid={"point": "0:1"}, sample="cut.txt", points=2,
+                                             spacing=0.3, vi=5, t_max=0.01),
+         "sweep: 2 of 2 cases run on a sample settled under another material or not settled")):
+    got, r = said(**kw)
+    ok = len(got) == 1 and got[0].startswith(text) and r.get("warnings") == [got[0][len("sweep: "):]]
+    print(("PASS: " if ok else "FAIL: ") + "Python sweep, %s: one GranwaveWarning and the result's warnings (%s)"
+          % (what, got[:1]))
+got, r = said(model="chain", grid={"n": [1, 2]})
+print(("PASS: " if not got and r.get("warnings") == [] else "FAIL: ") + "Python sweep whose cases end: no warning, an empty list of warnings")
+EOF
 
 test_summary test_hostile_thirtyfifth

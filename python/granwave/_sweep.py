@@ -14,7 +14,7 @@ import os
 import numpy as np
 
 from . import _lib
-from ._core import Interruptible, Progress, warn
+from ._core import Interruptible, Progress, issue
 from ._errors import GW_EINVAL, GranwaveError, GranwaveValueError, _raise, keyword_text
 from ._lib import lib
 from ._result import Result
@@ -312,6 +312,5 @@ def run_sweep(model, grid, params, jobs, progress):
     # layer cases on a sample settled otherwise, chain cases that did not end)
     res["warnings"] = [keyword_text(t, _sweep_names(model, m), _texts(list(params.values())))
                        for t in said[:-1].split("\n")] if said else []
-    for w in res["warnings"]:
-        warn("sweep", w, stacklevel=4)
+    issue("sweep", res["warnings"])
     return res

@@ -9,7 +9,9 @@
  * so their files are unchanged). '#' starts a comment line (the
  * writer puts the program version and the command line there); the one
  * "# settings: {JSON}" line layer-make writes among them is read for the
- * settling's material (layer_sample_settings.c, gw_layer_settled). Lines end in LF
+ * settling's material (layer_sample_settings.c, gw_layer_settled), and its
+ * "# settled: ..." line for 'converged 0' (a pile written before it settled,
+ * gw_layer_settled.unsettled). Lines end in LF
  * or CRLF. The reader refuses anything else with the file name and line number,
  * and opens only regular files (gw_input_open: a FIFO or device never blocks it).
  * HDF5 samples (layer_sample_h5.c) are told apart by the HDF5 signature, not

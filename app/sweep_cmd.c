@@ -315,6 +315,56 @@ static int dir_moved(const char *out, int dirfd, char *where, size_t n)
 
 /* A refusal's exit code: 2 for the config or a case (bad input), 1 when the
  * check itself ran out of memory (a run failure: the input is not at fault). */
+/* The cases of the table just written (results.csv in the sweep's held
+ * directory dirfd) that did not end (gw_sweep_undecided_rows: the chain's
+ * column converged 0, a collision held by gravity or cut at t-max), said in
+ * one warning line, with --quiet too: a chain sweep wrote their nan rows, or
+ * the values at t-max, with nothing said, where `granwave chain` warns of
+ * each. Read back from the table, it counts the cases of a resume and of MPI
+ * ranks as well. */
+static void undecided_warning(int dirfd, const gw_sweep_model *m, long ncases)
+{
+    int col = -1;
+    for (int j = 0; j < m->ncolumns; j++)
+        if (strcmp(m->columns[j], "converged") == 0)
+            col = j;
+    const int fd = col < 0 ? -1 : openat(dirfd, "results.csv", O_RDONLY | O_CLOEXEC);
+    FILE *fp = fd >= 0 ? fdopen(fd, "r") : NULL;
+    if (!fp) {
+        if (fd >= 0)
+            close(fd);
+        return;
+    }
+    char *line = NULL;
+    size_t cap = 0;
+    long n = 0, first = -1;
+    int at = -1; /* the column's place among the table's cells */
+    while (getline(&line, &cap, fp) > 0) {
+        line[strcspn(line, "\r\n")] = '\0';
+        if (line[0] == '#')
+            continue;
+        int k = 0;
+        const char *cell = line;
+        for (const char *p = line;; p++)
+            if (*p == ',' || *p == '\0') {
+                const size_t len = (size_t)(p - cell);
+                if (at < 0 && len == strlen("converged") && strncmp(cell, "converged", len) == 0)
+                    at = k;
+                else if (at >= 0 && k == at && len == 1 && cell[0] == '0' && n++ == 0)
+                    first = strtol(line, NULL, 10);
+                if (*p == '\0' || (at >= 0 && k >= at))
+                    break;
+                k++, cell = p + 1;
+            }
+    }
+    free(line);
+    fclose(fp);
+    char *w = NULL;
+    if (n > 0 && gw_sweep_undecided_warning(m, n, ncases, first, &w) == GW_OK)
+        gw_cli_warnings("sweep", w);
+    free(w);
+}
+
 static int exit_code(int rc)
 {
     return rc == GW_ENOMEM ? 1 : 2;
@@ -544,6 +594,7 @@ int gw_cmd_sweep(int argc, char **argv, const gw_sweep_model *const *models, int
                        gw_sweep_write_table_at(s.dirfd, now, &cfg, m, &err) != GW_OK) {
                 code = 1;
             } else {
+                undecided_warning(s.dirfd, m, cfg.ncases);
                 /* finished where the directory went: said even with --quiet */
                 if (moved)
                     fprintf(stderr, "granwave sweep: warning: %s was moved while the sweep ran: its journal and "

@@ -281,6 +281,13 @@ typedef struct gw_layer_settled {
                               material.clump_mass, the library's clump-mass); -1: the line
                               does not say (the sample's own clump_mass line applies).
                               Appended: a struct zeroed by an older caller reads sum */
+    int unsettled;         /* 1: the pile did not settle: layer-make's "settled:" line says
+                              converged 0 (text and HDF5 samples, also without a settings
+                              line; gw_layer_make's sample when it did not converge). Its
+                              positions are a pile in motion, grains in the air among them;
+                              an impact on it warns (gw_layer_impact_settled_check). Kept in
+                              the struct's padding after clump_mass (its size is unchanged);
+                              0 in a struct zeroed by an older caller: nothing said */
 } gw_layer_settled;
 
 /* A pluviated sample: positions and radii of settled soil particles. */
@@ -584,8 +591,9 @@ typedef struct gw_layer_impact_result {
                                cvode, "erk" for arkode, "none" for verlet and rk4;
                                static text), for the provenance */
     char settling[768];     /* the sample settled under another material, gravity or mass
-                               law than the impact's (gw_layer_impact_settled_check's
-                               warning; "" when the same or not recorded) */
+                               law than the impact's, or did not settle
+                               (gw_layer_impact_settled_check's warning; "" when the
+                               same or not recorded) */
     double settled_load_ratio; /* q of gw_layer_settled_load_ratio for the sample under the
                                   impact's material (1: at rest as settled; NaN: the sample
                                   records no settling) */
@@ -639,7 +647,8 @@ int gw_layer_impact_rest_check(const gw_layer_sample *s, const gw_layer_params *
  * then, and for any other difference (q not 1 within 1e-9, another mass law
  * or clump mass, another friction angle), GW_OK with the warning text in
  * warning[n] ("" when the same, or nothing is recorded: hand-written samples
- * pass as before). When its clumps cannot be weighed as unions (out of
+ * pass as before). A pile that did not settle (s->settled.unsettled, with or
+ * without a record) is a warning too, after the material's. When its clumps cannot be weighed as unions (out of
  * memory), gw_layer_create's status, "sample 'name': weighing its clumps: ...". The
  * thresholds (docs/cli.md, layer-impact; layer_settled.c has the numbers):
  * the Hertz drop from overlap q^(2/3) d to d releases about 0.19 of the

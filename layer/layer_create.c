@@ -55,9 +55,11 @@ int gw_layer_params_validate(const gw_layer_params *p, gw_err *err)
         return gw_err_set(err, GW_EINVAL, "mass law: unknown value %d", p->mass_law);
     if (p->clump_mass != GW_LAYER_CLUMP_MASS_SUM && p->clump_mass != GW_LAYER_CLUMP_MASS_UNION)
         return gw_err_set(err, GW_EINVAL, "clump mass: unknown value %d", p->clump_mass);
+    /* named as the option (the program's --mass-law, Python's mass_law): the
+     * message named none, and an impact's union comes from its sample */
     if (p->clump_mass == GW_LAYER_CLUMP_MASS_UNION && p->mass_law != GW_LAYER_MASS_DISC)
-        return gw_err_set(err, GW_EINVAL, "clump mass 'union' needs the disc mass law (the area of the "
-                          "members' union), not 'sphere'");
+        return gw_err_set(err, GW_EINVAL, "mass-law: sphere with clump mass 'union', which weighs a clump as the "
+                          "area of its members' union (the disc law): give mass-law disc, or clump-mass sum");
     if (p->walls < 0 || p->walls > GW_LAYER_WALLS_ALL)
         return gw_err_set(err, GW_EINVAL, "walls: bad mask %d", p->walls);
     return GW_OK;

@@ -495,7 +495,7 @@ static void finish(const gw_layer_params *lp, const gw_layer_make_params *m, con
     out->settled = (gw_layer_settled){.recorded = 1, .shear_modulus = lp->shear_modulus, .poisson = lp->poisson,
                                       .friction_deg = lp->friction_deg, .density = lp->density,
                                       .gravity = lp->gravity, .mass_law = lp->mass_law,
-                                      .clump_mass = lp->clump_mass};
+                                      .clump_mass = lp->clump_mass, .unsettled = !conv};
     res->max_overlap = max_overlap(b, n, lp->width, NULL);
     out->porosity = gw_layer_sample_porosity(out);
     res->porosity = out->porosity;

@@ -9,7 +9,9 @@
  * so their files are unchanged). '#' starts a comment line (the
  * writer puts the program version and the command line there); the one
  * "# settings: {JSON}" line layer-make writes among them is read for the
- * settling's material (layer_sample_settings.c, gw_layer_settled). Lines end in LF
+ * settling's material (layer_sample_settings.c, gw_layer_settled), and its
+ * "# settled: ..." line for 'converged 0' (a pile written before it settled,
+ * gw_layer_settled.unsettled). Lines end in LF
  * or CRLF. The reader refuses anything else with the file name and line number,
  * and opens only regular files (gw_input_open: a FIFO or device never blocks it).
  * HDF5 samples (layer_sample_h5.c) are told apart by the HDF5 signature, not
@@ -139,6 +141,12 @@ typedef struct text_in {
     char *set;
     size_t nset, capset;
     long set_line;
+    /* the start of the comment line being read, from its first character
+     * after '#' and the blanks (layer-make's "settled: ..., converged N"
+     * comes within it), and whether a "settled:" line said converged 0 */
+    char com[128];
+    size_t ncom;
+    int unsettled;
 } text_in;
 
 /* Append c to the settings text; GW_ENOMEM, or GW_EFORMAT past SAMPLE_SETTINGS_MAX. */
@@ -177,6 +185,7 @@ static int text_next(text_in *t, gw_err *err)
          * the JSON), -2 another comment */
         int key = -1;
         size_t len = 0;
+        t->ncom = 0;
         while ((c = text_getc(t)) != EOF && c != '\n') {
             any = 1;
             nul |= c == 0;
@@ -195,6 +204,8 @@ static int text_next(text_in *t, gw_err *err)
                 if (comment)
                     continue;
             }
+            if (comment && t->ncom < sizeof t->com - 1 && (t->ncom > 0 || (c != ' ' && c != '\t')))
+                t->com[t->ncom++] = (char)c;
             if (comment && key == (int)sizeof set_key - 1) {
                 int rc = settings_put(t, c, err);
                 if (rc != GW_OK)
@@ -230,6 +241,10 @@ static int text_next(text_in *t, gw_err *err)
         if (nul)
             return gw_err_set(err, GW_EFORMAT, "sample '%s': line %ld: NUL byte (binary data, not a text sample)",
                               t->path, t->line);
+        if (comment) { /* a pile written before it settled: an impact on it warns */
+            t->com[t->ncom] = '\0';
+            t->unsettled |= layer_sample_settled_unsettled(t->com);
+        }
         if (len > 0 && t->buf[len - 1] == '\r')
             len--;
         t->buf[len] = '\0';
@@ -457,6 +472,8 @@ static int read_text(text_in *t, gw_layer_sample *s, gw_err *err)
             s->settled.recorded)
             s->settled.line = t->set_line;
     }
+    if (rc == GW_OK) /* after the settings' parse, which zeroes the record */
+        s->settled.unsettled = t->unsettled;
     return rc;
 }
 

@@ -373,7 +373,12 @@ static int h5_settings_read(hid_t f, gw_layer_sample *s, const char *path, gw_er
         return rc;
     static const char key[] = "settings:";
     char *line = NULL;
+    int unsettled = 0;
     for (char *p = h; p && *p; p = strchr(p, '\n'), p = p ? p + 1 : NULL) {
+        char one[128]; /* the line alone, as far as "converged N" (the text reader's too) */
+        const size_t l = strcspn(p, "\n");
+        gw_snprintf(one, sizeof one, "%.*s", (int)(l < sizeof one - 1 ? l : sizeof one - 1), p);
+        unsettled |= layer_sample_settled_unsettled(one); /* the "settled:" line: converged 0 */
         if (strncmp(p, key, sizeof key - 1) != 0)
             continue;
         if (line) {
@@ -389,6 +394,8 @@ static int h5_settings_read(hid_t f, gw_layer_sample *s, const char *path, gw_er
     const int cut = line && !nl && strlen(h) >= 16384;
     if (line && !cut)
         rc = layer_sample_settings_parse(line, path, "HDF5 attribute header", &s->settled, err);
+    if (rc == GW_OK) /* after the settings' parse, which zeroes the record */
+        s->settled.unsettled = unsettled;
     free(h);
     return rc;
 }

@@ -52,6 +52,11 @@ int layer_sample_check(const gw_layer_sample *s, const char *path, const hdr_src
 int layer_sample_settings_parse(const char *text, const char *path, const char *where, gw_layer_settled *out,
                                 gw_err *err);
 
+/* 1 when text, a header line without its '#' and leading blanks, is
+ * layer-make's "settled: ..." line and says "converged 0": the pile was
+ * written before it settled (gw_layer_settled.unsettled); else 0. */
+int layer_sample_settled_unsettled(const char *text);
+
 #if GW_HAVE_HDF5
 /* The HDF5 sample (layer_sample_h5.c): s, already checked, written
  * atomically; read (sb: the superblock version, the byte after the

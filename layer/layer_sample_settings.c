@@ -21,10 +21,34 @@
  * the check off while the file still claims layer-make's settings.
  * Units: SI (Pa, kg/m^3, m/s^2), angles in degrees.
  */
+#include <ctype.h>
 #include <math.h>
 #include <string.h>
 
 #include "layer_sample_impl.h"
+
+/* unsettled (gw_layer.h) sits in what was the padding after clump_mass: the
+ * struct's size, and gw_layer_sample's, stay those that callers compiled
+ * against the header before it (and ctypes mirrors) lay out. */
+struct settled_before {
+    int recorded;
+    double shear_modulus, poisson, friction_deg, density, gravity;
+    int mass_law;
+    long line;
+    int clump_mass;
+};
+_Static_assert(sizeof(gw_layer_settled) == sizeof(struct settled_before), "gw_layer_settled grew");
+
+int layer_sample_settled_unsettled(const char *text)
+{
+    /* both writers (the program's layer-make, gw_layer_make_run) print
+     * "settled: t = %.4g s, E_k = %.4g J, converged %d, ..." */
+    static const char key[] = "settled:", conv[] = ", converged ";
+    if (!text || strncmp(text, key, sizeof key - 1) != 0)
+        return 0;
+    const char *c = strstr(text, conv);
+    return c && c[sizeof conv - 1] == '0' && !isdigit((unsigned char)c[sizeof conv]);
+}
 
 /* One dialect: the keys of G, nu, phi, rho, g and the mass law, in that order. */
 typedef struct dialect {

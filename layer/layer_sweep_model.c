@@ -77,7 +77,39 @@ static const char *const columns[] = {
 typedef struct placement {
     long point, points;
     double spacing;
+    double x0; /* x before the point's shift, m (set by prepare) */
 } placement;
+
+/* The abscissa, from the box centre, of impact point k of pl around x0, as
+ * prepare places a case's block. */
+static double point_x(const placement *pl, long k)
+{
+    return pl->x0 + ((double)k - 0.5 * (double)(pl->points - 1)) * pl->spacing;
+}
+
+/* Case pl's impact point and its neighbour (the next point, or the one
+ * before for the last) put the block at one position, 0.5 width + x as
+ * gw_layer_impact places it (width 0: the abscissas alone, the sample not
+ * at hand): the same impact, run once per point and counted so by
+ * layer-stats (spacing = 0 with points = 4 gave four identical rows, one
+ * group of n 4 with spreads 0). GW_EINVAL naming spacing, or GW_OK. */
+static int placement_distinct(const placement *pl, double width, gw_err *err)
+{
+    if (pl->points <= 1)
+        return GW_OK;
+    const long nb = pl->point + 1 < pl->points ? pl->point + 1 : pl->point - 1;
+    const double a = point_x(pl, pl->point), b = point_x(pl, nb);
+    if (a != b && 0.5 * width + a != 0.5 * width + b)
+        return GW_OK;
+    char half[96] = "";
+    if (a != b) /* apart by less than the rounding of the block's position */
+        gw_snprintf(half, sizeof half, " and %.17g m, one position once the box's half-width %g m is added", b,
+                    0.5 * width);
+    return gw_err_set(err, GW_EINVAL, "spacing: %g m puts impact points %ld and %ld of %ld at one block position "
+                      "(x = %.17g m%s): the same impact would run once per point and count so in layer-stats; "
+                      "give the points a spacing that moves the block, or points = 1", pl->spacing,
+                      pl->point < nb ? pl->point : nb, pl->point < nb ? nb : pl->point, pl->points, a, half);
+}
 
 static const gw_param placement_params[] = {
     {.name = "point", .type = GW_PARAM_LONG, .offset = offsetof(placement, point), .unit = "", .min = 0,
@@ -101,7 +133,7 @@ static int has_key(const char *name)
 static int prepare(gw_layer_impact_setup *s, int nk, const char *const *names, const char *const *values,
                    placement *plo, gw_err *err)
 {
-    placement pl = {0, 1, 0};
+    placement pl = {0, 1, 0, 0};
     int rc = gw_layer_impact_setup_init(s);
     if (rc == GW_OK)
         rc = gw_param_init(placement_params, &pl, err);
@@ -125,11 +157,13 @@ static int prepare(gw_layer_impact_setup *s, int nk, const char *const *names, c
     if (rc == GW_OK && pl.points == 1 && has_spacing)
         rc = gw_err_set(err, GW_EINVAL, "spacing: has no effect with one impact point (points = 1)");
     if (rc == GW_OK) {
-        const double x0 = s->x;
-        s->x += ((double)pl.point - 0.5 * (double)(pl.points - 1)) * pl.spacing;
+        const double x0 = pl.x0 = s->x;
+        s->x = point_x(&pl, pl.point);
         if (!(fabs(s->x) <= 1e6)) /* the x row's range, named by the keys that moved it there */
             rc = gw_err_set(err, GW_EINVAL, "spacing: impact point %ld of %ld, %g m apart around x = %g m, lies "
                             "at %g m, outside [-1e6, 1e6]", pl.point, pl.points, pl.spacing, x0, s->x);
+        else
+            rc = placement_distinct(&pl, 0, err);
     }
     if (plo)
         *plo = pl;
@@ -222,24 +256,35 @@ static int pile_note(check_memo *c, const char *path, unsigned long long file_ha
 /* Tally case s's settling warning against the sample kept for it (none kept:
  * a sample above MEMO_NMAX, whose runs still record theirs). The material
  * resolves as the run's does (layer_setup.c: the sample's mass law unless given). */
+static const gw_layer_sample *memo_sample(const check_memo *c, const char *path);
+
 static void settling_tally(check_memo *c, const gw_layer_impact_setup *s)
 {
     c->ncases++;
-    for (int k = 0; k < MEMO_SLOTS; k++) {
-        const memo_slot *m = &c->slot[k];
-        if (!m->path || m->used != c->tick || strcmp(m->path, s->sample) != 0)
-            continue;
-        gw_layer_params lp = gw_layer_params_default();
-        GW_LAYER_MATERIAL_TO_PARAMS(&lp, s);
-        lp.mass_law = s->mass_law >= 0 ? s->mass_law : m->s.mass_law;
-        lp.clump_mass = s->clump_mass >= 0 ? s->clump_mass : m->s.clump_mass;
-        char w[768] = "";
-        gw_err e = {{0}};
-        if (gw_layer_impact_settled_check(&m->s, &lp, s->other_settling, NULL, w, sizeof w, &e) == GW_OK && w[0] &&
-            c->nsettling++ == 0)
-            memcpy(c->settling, w, sizeof w);
+    const gw_layer_sample *smp = memo_sample(c, s->sample);
+    if (!smp)
         return;
+    gw_layer_params lp = gw_layer_params_default();
+    GW_LAYER_MATERIAL_TO_PARAMS(&lp, s);
+    lp.mass_law = s->mass_law >= 0 ? s->mass_law : smp->mass_law;
+    lp.clump_mass = s->clump_mass >= 0 ? s->clump_mass : smp->clump_mass;
+    char w[768] = "";
+    gw_err e = {{0}};
+    if (gw_layer_impact_settled_check(smp, &lp, s->other_settling, NULL, w, sizeof w, &e) == GW_OK && w[0] &&
+        c->nsettling++ == 0)
+        memcpy(c->settling, w, sizeof w);
+}
+
+/* The sample the memo keeps for path, as the case just checked read it; NULL
+ * when none is kept (a sample above MEMO_NMAX, no memo). */
+static const gw_layer_sample *memo_sample(const check_memo *c, const char *path)
+{
+    for (int k = 0; c && path && k < MEMO_SLOTS; k++) {
+        const memo_slot *m = &c->slot[k];
+        if (m->path && m->used == c->tick && strcmp(m->path, path) == 0)
+            return &m->s;
     }
+    return NULL;
 }
 
 static int memo_warnings(const void *memo, char **list)
@@ -247,8 +292,9 @@ static int memo_warnings(const void *memo, char **list)
     const check_memo *c = memo;
     if (!c || c->nsettling == 0)
         return GW_OK;
-    return gw_warnings_add(list, "%ld of %ld cases run on a sample settled under another material (their rows "
-                           "hold its motion too, and say so: settling_warning = 1); the first: %s", c->nsettling,
+    return gw_warnings_add(list, "%ld of %ld cases run on a sample settled under another material or not "
+                           "settled (their rows hold its motion too, and say so: settling_warning = 1); the first: "
+                           "%s", c->nsettling,
                            c->ncases, c->settling);
 }
 
@@ -314,6 +360,11 @@ static int check_memo_fn(void **memo, int nk, const char *const *names, const ch
     if (rc == GW_OK) /* the sample and the resolution: as the run checks them */
         if ((rc = setup_check(memo, &s, err)) == GW_EINVAL)
             name_placement(&s, &pl, err);
+    if (rc == GW_OK && memo && *memo) { /* the points in the box's frame: its width is the sample's */
+        const gw_layer_sample *smp = memo_sample(*memo, s.sample);
+        if (smp)
+            rc = placement_distinct(&pl, smp->width, err);
+    }
     if (rc == GW_OK && memo && *memo)
         settling_tally(*memo, &s);
     gw_layer_impact_setup_clear(&s);

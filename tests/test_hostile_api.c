@@ -388,6 +388,11 @@ static int index_nulls(void)
     EXPECT(refused(gw_sweep_run_text("[sweep]\n", "x", 1, NULL, NULL, NULL, &nc, &m, &e), &e, "values is NULL"));
     EXPECT(refused(gw_sweep_run_text("[sweep]\n", "x", 1, NULL, NULL, &v, NULL, &m, &e), &e, "ncases is NULL"));
     EXPECT(refused(gw_sweep_run_text("[sweep]\n", "x", 1, NULL, NULL, &v, &nc, NULL, &e), &e, "model is NULL"));
+    /* the warned form: its warnings set to NULL on a refusal, none asked (NULL) taken */
+    char *w = (char *)&w;
+    EXPECT(refused(gw_sweep_run_text_warned(NULL, "x", 1, NULL, NULL, &v, &nc, &m, &w, &e), &e, "text is NULL"));
+    EXPECT(w == NULL && v == NULL);
+    EXPECT(refused(gw_sweep_run_text_warned("[sweep]\n", "x", 1, NULL, NULL, NULL, &nc, &m, NULL, &e), &e, "values is NULL"));
     return 0;
 }
 

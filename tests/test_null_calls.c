@@ -422,6 +422,20 @@ static int c_gw_sweep_size_check(void)
     gw_err e = {{0}}; return gw_sweep_size_check(NULL, NULL, &e) == GW_EINVAL && gw_test_said(&e, "gw_sweep_size_check: cfg is NULL");
 }
 
+/* the thirty-fifth pass's calls: the run with its warnings, the cases that
+ * did not end and their warning */
+static int c_gw_sweep_run_warned(void)
+{
+    gw_err e = {{0}}; return gw_sweep_run_warned(NULL, NULL, 1, NULL, NULL, NULL, NULL, &e) == GW_EINVAL && gw_test_said(&e, "gw_sweep_run: cfg is NULL");
+}
+
+static int c_gw_sweep_undecided(void)
+{
+    long first = -1;
+    return gw_sweep_undecided_rows(NULL, NULL, 3, &first) == 0 && first == -1 && gw_sweep_undecided_rows(NULL, NULL, 3, NULL) == 0 &&
+           gw_sweep_undecided_warning(NULL, 1, 1, 0, NULL) == GW_OK;
+}
+
 static int c_gw_input_open(void)
 {
     gw_err e = {{0}}; return gw_input_open(NULL, NULL, NULL, &e) == GW_EINVAL && gw_test_said(&e, "gw_input_open: out is NULL");
@@ -516,6 +530,8 @@ static const gw_test_call calls[] = {
     {"gw_sweep_journal_append", c_gw_sweep_journal_append},
     {"gw_sweep_memory_check", c_gw_sweep_memory_check},
     {"gw_sweep_size_check", c_gw_sweep_size_check},
+    {"gw_sweep_run_warned", c_gw_sweep_run_warned},
+    {"gw_sweep_undecided_rows", c_gw_sweep_undecided},
     {"gw_input_open", c_gw_input_open},
     {"gw_fnv1a64_stream", c_gw_fnv1a64_stream},
     {"gw_case_config_hash", c_gw_case_config_hash},

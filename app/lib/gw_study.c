@@ -182,6 +182,15 @@ const gw_sweep_model *const *gw_sweep_models(int *n)
 int gw_sweep_run_text(const char *text, const char *name, int jobs, gw_progress_fn progress, void *pctx,
                       double **values, long *ncases, const gw_sweep_model **model, gw_err *err)
 {
+    return gw_sweep_run_text_warned(text, name, jobs, progress, pctx, values, ncases, model, NULL, err);
+}
+
+int gw_sweep_run_text_warned(const char *text, const char *name, int jobs, gw_progress_fn progress, void *pctx,
+                             double **values, long *ncases, const gw_sweep_model **model, char **warnings,
+                             gw_err *err)
+{
+    if (warnings)
+        *warnings = NULL;
     if (values)
         *values = NULL;
     if (ncases)
@@ -203,7 +212,11 @@ int gw_sweep_run_text(const char *text, const char *name, int jobs, gw_progress_
         gw_sweep_config_free(&cfg);
         return gw_err_set(err, GW_ENOMEM, "sweep: out of memory for %ld cases", cfg.ncases);
     }
-    rc = gw_sweep_run(&cfg, *model, jobs, progress, pctx, v, err);
+    rc = gw_sweep_run_warned(&cfg, *model, jobs, progress, pctx, v, warnings, err);
+    if (rc != GW_OK && warnings) { /* no result, no warnings */
+        free(*warnings);
+        *warnings = NULL;
+    }
     if (rc == GW_OK) {
         *values = v;
         *ncases = cfg.ncases;

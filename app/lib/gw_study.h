@@ -69,6 +69,14 @@ const gw_sweep_model *const *gw_sweep_models(int *n);
 int gw_sweep_run_text(const char *text, const char *name, int jobs, gw_progress_fn progress, void *pctx,
                       double **values, long *ncases, const gw_sweep_model **model, gw_err *err);
 
+/* gw_sweep_run_text, and the sweep's warnings in *warnings (may be NULL:
+ * none kept): the lines the program's sweep prints, each ending with '\n'
+ * (the check pass's, then the cases that did not end: gw_sweep_run_warned),
+ * NULL when none or when the sweep failed; free with gw_free. */
+int gw_sweep_run_text_warned(const char *text, const char *name, int jobs, gw_progress_fn progress, void *pctx,
+                             double **values, long *ncases, const gw_sweep_model **model, char **warnings,
+                             gw_err *err);
+
 /* Free memory the library allocated for the caller (gw_sweep_run_text). */
 void gw_free(void *p);
 

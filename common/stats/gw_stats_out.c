@@ -296,6 +296,21 @@ cJSON *gw_stats_json(const gw_stats_analysis *R, int full)
     cJSON *d = cJSON_AddArrayToObject(o, "diagrams");
     for (int q = 0; q < R->ndia; q++)
         cJSON_AddItemToArray(d, diagram_json(R, &R->dia[q]));
+    /* the analysis's warnings (undecided points, rows on a sample settled
+     * under another material or not settled), one text each, as Python's
+     * result and layer-impact's JSON give them: they were on stderr alone,
+     * and a script reading the JSON or boundary_fit.json took statistics
+     * that include such rows for clean ones */
+    cJSON *w = cJSON_AddArrayToObject(o, "warnings");
+    for (const char *p = R->warnings; w && p && *p;) {
+        const char *e = strchr(p, '\n');
+        const size_t len = e ? (size_t)(e - p) : strlen(p);
+        char *one = strndup(p, len);
+        if (one)
+            cJSON_AddItemToArray(w, cJSON_CreateString(one));
+        free(one);
+        p += len + (e ? 1 : 0);
+    }
     return o;
 }
 

@@ -355,8 +355,9 @@ static int settling_warning(gw_stats_analysis *A)
         gw_snprintf(qs, sizeof qs, "; settled_load_ratio %.3g to %.3g, 1 at rest", lo, hi);
     return gw_warnings_add(&A->warnings,
                            "%ld of %ld rows ran on a sample settled under another material, gravity, mass law, "
-                           "clump mass or friction than their case's (column settling_warning = 1%s): their outcomes "
-                           "hold the pile's own motion as well as the block's, and the statistics include them",
+                           "clump mass or friction than their case's, or not settled (column settling_warning = 1%s): "
+                           "their outcomes hold the pile's own motion as well as the block's, and the statistics "
+                           "include them",
                            nw, t->nrows, qs);
 }
 

@@ -396,9 +396,19 @@ static int parse_row(gw_stats_table *t, char *line, long ln, int ncells, int cb,
                               t->col_name[i], c);
         if (i == cb && !(v == 0 || v == 1 || isnan(v)))
             return gw_err_set(err, GW_EFORMAT, "%s:%ld: column bounced: '%s' is not 0 or 1", t->path, ln, c);
+        /* a flag the sweep writes 0 or 1 (never nan): 7, 0.5 or nan counted as
+         * no warning, where the row was edited to say something else */
+        if (!(v == 0 || v == 1) && strcmp(t->col_name[i], "settling_warning") == 0)
+            return gw_err_set(err, GW_EFORMAT, "%s:%ld: column settling_warning: '%s' is not 0 or 1", t->path, ln,
+                              c);
         /* a sweep writes finite numbers or nan, and these columns are never
-         * negative: e_n = -3 or 1e300... entered the means silently */
-        if (isinf(v) || (v < 0 && nonnegative(t->col_name[i])))
+         * negative: e_n = -3 or 1e300... entered the means silently. One
+         * exception: settled_load_ratio is q = W_settled / W_impact, +inf for a
+         * case run without gravity (other-settling, a pile touching no floor:
+         * an unsettled one in the air), which the sweep writes as 'inf' and
+         * layer-stats refused as no value a sweep writes */
+        if ((isinf(v) && !(v > 0 && strcmp(t->col_name[i], "settled_load_ratio") == 0)) ||
+            (v < 0 && nonnegative(t->col_name[i])))
             return gw_err_set(err, GW_EFORMAT, "%s:%ld: column %s: '%s' is not a value a sweep writes (%s)",
                               t->path, ln, t->col_name[i], c, isinf(v) ? "not finite" : "negative");
         t->val[r * t->ncols + i] = v;

@@ -292,6 +292,25 @@ int gw_sweep_size_check(const gw_sweep_config *cfg, const gw_sweep_model *m, gw_
 int gw_sweep_run(const gw_sweep_config *cfg, const gw_sweep_model *m, int jobs, gw_progress_fn progress,
                  void *pctx, double *values, gw_err *err);
 
+/* gw_sweep_run, and the sweep's warnings appended to *warnings (a list of
+ * gw_warnings_add, freed by the caller; NULL: none kept), the program's
+ * lines: the check pass's (m->memo_warnings: a chain dt above the step the
+ * cases take, layer cases on a sample settled under another material or not
+ * settled), then the cases that did not end (gw_sweep_undecided_rows). */
+int gw_sweep_run_warned(const gw_sweep_config *cfg, const gw_sweep_model *m, int jobs, gw_progress_fn progress,
+                        void *pctx, double *values, char **warnings, gw_err *err);
+
+/* The cases of values (ncases rows of m->ncolumns) whose column "converged"
+ * is 0, the chain's collisions that did not end (held on the wall by gravity:
+ * their undecided values NaN; cut at t_max: those at t_max), *first (may be
+ * NULL) the first of them; 0 for a model without that column. */
+long gw_sweep_undecided_rows(const gw_sweep_model *m, const double *values, long ncases, long *first);
+
+/* The warning for n such cases of total, the first case first, appended to
+ * *list (nothing when n <= 0): the one text of the program's sweep and of
+ * gw_sweep_run_warned. GW_OK or GW_ENOMEM. */
+int gw_sweep_undecided_warning(const gw_sweep_model *m, long n, long total, long first, char **list);
+
 GW_END_DECLS
 
 #endif

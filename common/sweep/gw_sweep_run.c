@@ -175,8 +175,39 @@ void gw_sweep_checks_end(const gw_sweep_model *m, void *memo)
         m->memo_free(memo);
 }
 
+int gw_sweep_undecided_warning(const gw_sweep_model *m, long n, long total, long first, char **list)
+{
+    if (!m || !list || n <= 0)
+        return GW_OK;
+    /* the chain's column: converged 0 is a collision held by gravity (its
+     * row nan) or not ended at t-max (its values those there), the texts
+     * gw_chain_result_warnings gives a single run */
+    return gw_warnings_add(list, "%ld of %ld cases did not end their collision (column converged = 0; the first, "
+                           "case %ld): one held on the wall by gravity has its undecided values nan, one cut at t-max "
+                           "those at t-max (raise t-max); a single run of such a case says which", n, total, first);
+}
+
+long gw_sweep_undecided_rows(const gw_sweep_model *m, const double *values, long ncases, long *first)
+{
+    int col = -1;
+    for (int j = 0; m && m->columns && j < m->ncolumns; j++)
+        if (m->columns[j] && strcmp(m->columns[j], "converged") == 0)
+            col = j;
+    long n = 0;
+    for (long k = 0; col >= 0 && values && k < ncases; k++)
+        if (values[k * m->ncolumns + col] == 0 && n++ == 0 && first)
+            *first = k;
+    return n;
+}
+
 int gw_sweep_run(const gw_sweep_config *cfg, const gw_sweep_model *m, int jobs, gw_progress_fn progress,
                  void *pctx, double *values, gw_err *err)
+{
+    return gw_sweep_run_warned(cfg, m, jobs, progress, pctx, values, NULL, err);
+}
+
+int gw_sweep_run_warned(const gw_sweep_config *cfg, const gw_sweep_model *m, int jobs, gw_progress_fn progress,
+                        void *pctx, double *values, char **warnings, gw_err *err)
 {
     if (!cfg || !m || !values) /* as gw_sweep_run_text (they were dereferenced: SIGSEGV) */
         return gw_err_set(err, GW_EINVAL, "gw_sweep_run: %s is NULL", !cfg ? "cfg" : !m ? "m" : "values");
@@ -197,10 +228,18 @@ int gw_sweep_run(const gw_sweep_config *cfg, const gw_sweep_model *m, int jobs, 
             return gw_err_set(err, rc, "case %ld: %s", k, tmp);
         }
     }
+    /* the check pass's warnings, as the program prints them (the caller's
+     * out of memory for them: none kept) */
+    if (warnings && memo && m->memo_warnings)
+        (void)m->memo_warnings(memo, warnings);
     gw_sweep_checks_end(m, memo);
     int rc = gw_sweep_memory_check(cfg, m, jobs, 0, NULL, err);
     if (rc != GW_OK)
         return rc;
     sweep_ctx s = {cfg, m, values};
-    return gw_cases_run(cfg->ncases, jobs, run_one, &s, progress, pctx, err);
+    rc = gw_cases_run(cfg->ncases, jobs, run_one, &s, progress, pctx, err);
+    long first = 0, n = rc == GW_OK && warnings ? gw_sweep_undecided_rows(m, values, cfg->ncases, &first) : 0;
+    if (n > 0)
+        (void)gw_sweep_undecided_warning(m, n, cfg->ncases, first, warnings);
+    return rc;
 }

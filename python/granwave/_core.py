@@ -30,6 +30,15 @@ def warn(what, text, stacklevel=3):
     warnings.warn(f"{what}: {text}", GranwaveWarning, stacklevel=stacklevel)
 
 
+def issue(what, texts):
+    """The library's warning texts (their inputs named by keyword) as one
+    GranwaveWarning each, shown at the line that called the public function
+    (issue <- Study.run or run_sweep <- the public function <- its caller): the
+    one place warnings are issued, for a study's result and for a sweep's."""
+    for w in texts:
+        warn(what, w, stacklevel=5)
+
+
 class Study:
     """A study of the library's index (app/lib/gw_study.h)."""
 
@@ -99,8 +108,7 @@ class Study:
         text = r.get("warnings") or ""
         keep = _texts(kwargs.values())
         r["warnings"] = [keyword_text(t, self.names, keep) for t in text[:-1].split("\n")] if text else []
-        for w in r["warnings"]:
-            warn(self.func, w, stacklevel=4)
+        issue(self.func, r["warnings"])
         return r
 
     def hint(self, k):

@@ -159,6 +159,9 @@ _declare("gw_sweep_models", ctypes.POINTER(ctypes.POINTER(GwSweepModel)), ctypes
 _declare("gw_sweep_run_text", ctypes.c_int, ctypes.c_char_p, ctypes.c_char_p, ctypes.c_int, PROGRESS,
          ctypes.c_void_p, ctypes.POINTER(c_double_p), ctypes.POINTER(ctypes.c_long),
          ctypes.POINTER(ctypes.POINTER(GwSweepModel)), ctypes.POINTER(GwErr))
+_declare("gw_sweep_run_text_warned", ctypes.c_int, ctypes.c_char_p, ctypes.c_char_p, ctypes.c_int, PROGRESS,
+         ctypes.c_void_p, ctypes.POINTER(c_double_p), ctypes.POINTER(ctypes.c_long),
+         ctypes.POINTER(ctypes.POINTER(GwSweepModel)), ctypes.POINTER(ctypes.c_void_p), ctypes.POINTER(GwErr))
 _declare("gw_free", None, ctypes.c_void_p)
 _declare("gw_interrupt_begin", ctypes.c_int)
 _declare("gw_interrupt_end", ctypes.c_int)

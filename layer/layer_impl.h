@@ -497,6 +497,10 @@ int layer_members_connected(const double *x, const double *y, const double *r, i
  * "sample 'WHAT'" when s would be refused on reading. */
 int layer_sample_readable(const gw_layer_sample *s, const char *what, gw_err *err);
 
+/* gw_layer_sample_pile_hash of s into *h, GW_OK; GW_ENOMEM (*h 0) when the
+ * bodies of a clump sample cannot be gathered (layer_sample_pile.c). */
+int layer_sample_pile_hash(const gw_layer_sample *s, unsigned long long *h);
+
 /* gw_layer_impact_setup_check with the sample s->sample names already read
  * (and checked) into smp by gw_layer_sample_read: the rows and the resolution
  * against smp, for the sweep's check pass, which checks many setups of one

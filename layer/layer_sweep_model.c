@@ -190,7 +190,9 @@ typedef struct check_memo {
  * layer-make run twice with the same seed and options, is another file with
  * other bytes (its comments record the command) and the same particles: each
  * case ran twice and layer-stats counted its point twice (n 8 where 4 are
- * distinct). Compared by gw_layer_sample_pile_hash; a path already noted with
+ * distinct); a file listing the same particles in another order, or with its
+ * clumps numbered otherwise, is the same pile too (the run differs only by
+ * rounding). Compared by gw_layer_sample_pile_hash; a path already noted with
  * the same bytes is not hashed again. GW_OK, GW_EINVAL naming both files,
  * GW_ENOMEM. */
 static int pile_note(check_memo *c, const char *path, unsigned long long file_hash, const gw_layer_sample *s,
@@ -199,11 +201,13 @@ static int pile_note(check_memo *c, const char *path, unsigned long long file_ha
     for (long i = 0; i < c->npiles; i++)
         if (c->piles[i].file_hash == file_hash && strcmp(c->piles[i].path, path) == 0)
             return GW_OK;
-    const unsigned long long h = gw_layer_sample_pile_hash(s);
+    unsigned long long h;
+    if (layer_sample_pile_hash(s, &h) != GW_OK)
+        return gw_err_set(err, GW_ENOMEM, "out of memory");
     for (long i = 0; i < c->npiles; i++)
         if (c->piles[i].pile_hash == h && strcmp(c->piles[i].path, path) != 0)
-            return gw_err_set(err, GW_EINVAL, "sample: '%s' and '%s' hold the same pile (the same particles, box "
-                              "and settling record): each case would run twice and its point count twice in "
+            return gw_err_set(err, GW_EINVAL, "sample: '%s' and '%s' hold the same pile (the same particles, in "
+                              "whatever order, box and settling record): each case would run twice and its point count twice in "
                               "layer-stats; list one of them", c->piles[i].path, path);
     if (c->npiles == c->cap) {
         const long cap = c->cap ? 2 * c->cap : 8;

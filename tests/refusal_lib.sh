@@ -18,10 +18,16 @@
 #   imported (a module that does not load: one FAIL line, the script ends)
 #   and these helpers (py_prelude below):
 #     check(COND, WHAT): prints "PASS: WHAT" or "FAIL: WHAT";
-#     caught(FN, **KW): FN(**KW) with every warning recorded, returns its
-#       result and the texts of its GranwaveWarnings;
-#     refused(WHAT, FN, NEEDLES, **KW): FN(**KW) raises GranwaveValueError
-#       whose text holds every string of NEEDLES (a check either way).
+#     caught(FN, *ARGS, **KW): FN(*ARGS, **KW) with every warning recorded,
+#       returns its result and the texts of its GranwaveWarnings;
+#     refused(WHAT, NEEDLES, FN, *ARGS, **KW): FN(*ARGS, **KW) raises
+#       GranwaveValueError whose text holds every string of NEEDLES (a check
+#       either way: it ran, or raised something else, is a failed one);
+#     warned(WHAT, NEEDLE, FN, *ARGS, **KW): FN(*ARGS, **KW) runs and one of
+#       its GranwaveWarnings holds NEEDLE (a check either way); returns its
+#       result (None when it raised).
+#   pyenv CMD...: CMD run with this build's Python module and library
+#   (PYTHONPATH, GRANWAVE_LIB), as py_checks runs its script.
 #   make_sample FILE ARGS...: layer-make --out FILE ARGS (its output dropped);
 #   a failure is a failed check that ends the test.
 #   settling_sweep_ini FILE SAMPLE [LINES]: a layer sweep's configuration in
@@ -83,6 +89,8 @@ sanitizer_build() {
     ldd "$GW" 2>/dev/null | grep -qE 'lib(a|ub)san' || grep -qa '__asan_init' "$GW" 2>/dev/null
 }
 
+pyenv() { PYTHONPATH="$SRC/python" GRANWAVE_LIB="$(dirname "$GW")/lib" "$@"; }
+
 # The helpers every py_checks script starts with (see the header).
 py_prelude() {
     cat <<'EOF'
@@ -94,14 +102,22 @@ except Exception as e:  # noqa: BLE001
     raise SystemExit
 def check(cond, what):
     print(("PASS: " if cond else "FAIL: ") + what)
-def caught(fn, **kw):
+def caught(fn, *args, **kw):
     with warnings.catch_warnings(record=True) as w:
         warnings.simplefilter("always")
-        r = fn(**kw)
+        r = fn(*args, **kw)
     return r, [str(x.message) for x in w if issubclass(x.category, granwave.GranwaveWarning)]
-def refused(what, fn, needles, **kw):
+def warned(what, needle, fn, *args, **kw):
     try:
-        fn(**kw)
+        r, ws = caught(fn, *args, **kw)
+    except Exception as e:  # noqa: BLE001
+        print("FAIL: %s: raised %s: %s" % (what, type(e).__name__, str(e)[:160]))
+        return None
+    check(any(needle in m for m in ws), "%s: warned %s" % (what, [m[:100] for m in ws]))
+    return r
+def refused(what, needles, fn, *args, **kw):
+    try:
+        fn(*args, **kw)
         print("FAIL: %s: ran" % what)
     except granwave.GranwaveValueError as e:
         check(all(n in str(e) for n in needles), "%s: refused: %s" % (what, str(e)[:160]))
@@ -120,7 +136,7 @@ py_checks() {
         return
     fi
     { py_prelude; cat; } >"$tmp/py.in"
-    PYTHONPATH="$SRC/python" GRANWAVE_LIB="$(dirname "$GW")/lib" /usr/bin/python3 "$tmp/py.in" >"$tmp/py.out" 2>&1
+    pyenv /usr/bin/python3 "$tmp/py.in" >"$tmp/py.out" 2>&1
     local rc=$? line n=0
     while read -r line; do
         case $line in

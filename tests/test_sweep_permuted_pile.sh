@@ -118,8 +118,8 @@ done
 py_checks 4 <<'EOF'
 def run(samples):
     return granwave.sweep("layer", {"sample": samples, "point": [0, 1]}, points=2, t_max=0.002, jobs=1)
-refused("Python sweep over a.txt, p.txt", run, ["sample", "a.txt", "p.txt", "same pile"], samples=["a.txt", "p.txt"])
-refused("Python sweep over c.txt, cp.txt", run, ["sample", "c.txt", "cp.txt", "same pile"], samples=["c.txt", "cp.txt"])
+refused("Python sweep over a.txt, p.txt", ["sample", "a.txt", "p.txt", "same pile"], run, ["a.txt", "p.txt"])
+refused("Python sweep over c.txt, cp.txt", ["sample", "c.txt", "cp.txt", "same pile"], run, ["c.txt", "cp.txt"])
 for two in (["a.txt", "pr.txt"], ["c.txt", "cm.txt"]):
     try:
         check(len(run(two)["bounced"]) == 4, "Python sweep over %s: two piles, 4 rows" % two)

@@ -11,7 +11,10 @@
  * shuffled listing of it, the default impact: e_n, e, the penetration, t_f and
  * the 6108 steps alike to the bit; 102 of the 196 numbers of its JSON differ,
  * by at most 2.9e-9 relative (a ring's strain of 2.5 J), energy_error
- * 3.337568881406913e-05 against 3.337568881390644e-05. So the pile is hashed
+ * 3.337568881406913e-05 against 3.337568881390644e-05; on a pile of 60 clumps
+ * (layer-make --n 60 --clumps --seed 4) listed shuffled and renumbered, the
+ * steps, the penetration and energy_error alike, e_n and t_f within 4e-14
+ * relative, a ring's strain of 42 J within 1e-3 J. So the pile is hashed
  * as a multiset of bodies, each a multiset of discs (x, y, r; m):
  *   e_i = mix(FNV-1a 64 of x_i, y_i, r_i)                 (a disc, -0 as 0)
  *   B_b = mix(sum over the discs i of body b of e_i)       (a body)

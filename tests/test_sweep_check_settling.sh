@@ -8,9 +8,10 @@
 # clump-mass sum each check weighs the clumps' unions (a model built): 7.7 s
 # of CPU for 200 impact points on a pile of 150 clumps, 0.04 s now. The verdict is now kept per sample read and
 # material (layer_settling_verdict). Observed from outside: the number of
-# times the program enters gw_layer_impact_settled_check, counted by gdb (no
-# counter in the library; SKIP without gdb, or where a run's calls cannot be
-# counted: a stripped or inlined symbol):
+# times the program enters gw_layer_impact_settled_check, counted by
+# valgrind's callgrind (no counter in the library; SKIP without valgrind, in a
+# sanitizer build, or where a run's calls cannot be counted: a stripped or
+# inlined symbol):
 #  1 20 cases over 2 disc samples, one material: 2 calls (40 before);
 #  2 8 cases over 2 samples and 2 densities, the density varying fastest:
 #    4 calls (16 before);
@@ -26,24 +27,28 @@ make_sample s.txt --n 40 --seed 1
 make_sample s2.txt --n 40 --seed 2
 make_sample u.txt --n 20 --clumps --seed 1 --clump-mass union
 
-# calls CMD...: the times CMD enters gw_layer_impact_settled_check (empty when
-# gdb could not run it to its end)
+# calls CMD...: the times CMD enters gw_layer_impact_settled_check, from
+# valgrind's call graph (callgrind: each call site's "calls=" count under the
+# function's cfn= line; the first cfn= or fn= line naming it gives its id);
+# empty when valgrind could not run it
 calls() {
-    cat >"$tmp/count.gdb" <<'EOF'
-set pagination off
-set breakpoint pending on
-set $hits = 0
-break gw_layer_impact_settled_check
-commands
-silent
-set $hits = $hits + 1
-continue
-end
-run
-printf "HITS %d\n", $hits
+    rm -f "$tmp/cg.out"
+    timeout -s KILL 300 valgrind --tool=callgrind --callgrind-out-file="$tmp/cg.out" "$GW" "$@" \
+        >/dev/null 2>"$tmp/cg.err" </dev/null || return
+    /usr/bin/python3 - "$tmp/cg.out" <<'EOF'
+import re, sys
+ids, total, want = set(), 0, False
+for line in open(sys.argv[1]):
+    m = re.match(r"c?fn=\((\d+)\)(?: (.*))?$", line.strip())
+    if m:
+        if m.group(2) == "gw_layer_impact_settled_check":
+            ids.add(m.group(1))
+        want = line.startswith("cfn=") and m.group(1) in ids
+    elif want and line.startswith("calls="):
+        total += int(line.split("=")[1].split()[0])
+        want = False
+print(total)
 EOF
-    timeout -s KILL 300 gdb -q -batch -x "$tmp/count.gdb" --args "$GW" "$@" </dev/null 2>&1 |
-        sed -n 's/^HITS \([0-9]*\)$/\1/p'
 }
 # ini FILE GRID [PARAMS]: a layer sweep, "key = value" lines given with \n
 ini() {
@@ -56,9 +61,11 @@ ini union.ini 'sample = u.txt\npoint = 0:9' 'points = 10\nspacing = 0.05\nclump-
 ini fric.ini 'sample = s.txt\nvi = 10, 20\nfriction = 30, 10'
 
 base=""
-command -v gdb >/dev/null 2>&1 && base=$(calls layer-impact --sample s.txt --t-max 1e-4 --out "$tmp/li")
+# (valgrind does not run a sanitizer build's program)
+command -v valgrind >/dev/null 2>&1 && ! sanitizer_build &&
+    base=$(calls layer-impact --sample s.txt --t-max 1e-4 --out "$tmp/li")
 if [ -z "$base" ] || [ "$base" -lt 1 ]; then
-    echo "SKIP: the calls cannot be counted here (gdb: ${base:-absent or not permitted to trace})"
+    echo "SKIP: the calls cannot be counted here (valgrind: ${base:-absent, or it could not run the program})"
 else
     ok "a layer-impact run enters gw_layer_impact_settled_check $base times: the calls are counted"
     for c in "one.ini|2|20 cases, 2 samples, one material" "dens.ini|4|8 cases, 2 samples, 2 densities" \

@@ -507,8 +507,9 @@ int layer_sample_pile_hash(const gw_layer_sample *s, unsigned long long *h);
  * of one sample under a few materials (a grid of impact points or speeds,
  * perhaps of densities) and keeps one of these per sample read, so that a
  * verdict is found once per sample and material, not twice per case
- * (layer_settling_verdict). The last LAYER_SETTLING_KEPT materials are kept,
- * the oldest replaced; a struct zeroed keeps none. */
+ * (layer_settling_verdict). The last LAYER_SETTLING_KEPT materials are kept
+ * (44 kB), the oldest replaced: a grid of more materials on one sample finds
+ * a verdict once per case (twice before). A struct zeroed keeps none. */
 #define LAYER_SETTLING_KEPT 32
 typedef struct layer_settling_memo {
     struct layer_settling_kept {

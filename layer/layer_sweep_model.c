@@ -161,8 +161,8 @@ static void name_placement(const gw_layer_impact_setup *s, const placement *pl, 
  * within the file system's timestamp resolution (4 ms on ext4) is still seen.
  * Up to MEMO_SLOTS files (a grid over several samples), the least recently
  * used replaced, each of at most MEMO_NMAX particles (2.8 MB; larger samples
- * are read for every case, as before): at most 11 MB, held until the pass
- * ends (memo_free). */
+ * are read for every case, as before): at most 11 MB, with each slot's
+ * settling verdicts (44 kB), held until the pass ends (memo_free). */
 #define MEMO_SLOTS 4
 #define MEMO_NMAX 100000
 typedef struct memo_slot {
@@ -213,8 +213,8 @@ static int pile_note(check_memo *c, const char *path, unsigned long long file_ha
     for (long i = 0; i < c->npiles; i++)
         if (c->piles[i].pile_hash == h && strcmp(c->piles[i].path, path) != 0)
             return gw_err_set(err, GW_EINVAL, "sample: '%s' and '%s' hold the same pile (the same particles, in "
-                              "whatever order, box and settling record): each case would run twice and its point count twice in "
-                              "layer-stats; list one of them", c->piles[i].path, path);
+                              "whatever order, box and settling record): each case would run twice and its point "
+                              "count twice in layer-stats; list one of them", c->piles[i].path, path);
     if (c->npiles == c->cap) {
         const long cap = c->cap ? 2 * c->cap : 8;
         struct pile *p = realloc(c->piles, (size_t)cap * sizeof *p);

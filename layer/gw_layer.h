@@ -733,14 +733,20 @@ struct gw_sweep_model;
 extern const struct gw_sweep_model gw_layer_sweep_model;
 #define GW_LAYER_SWEEP_MODEL gw_layer_sweep_model
 
-/* The hash of what a run reads from sample s (FNV-1a 64, gw_fnv1a64): n, the
- * box width, rm, mass_law, clump_mass, each particle's x, y, r and body (its
- * index when s has no body column) and the settling record (gw_layer_settled,
- * but its line), doubles by their bits with -0 as 0. Not the file's bytes
+/* The hash of what a run reads from sample s: n, the box width, rm,
+ * mass_law, clump_mass, the settling record (gw_layer_settled, but its line)
+ * and the particles as a set of bodies, each a set of discs (x, y, r; no body
+ * column: each disc a body of its own), doubles by their bits with -0 as 0
+ * (layer_sample_pile.c gives the formula). Not the file's bytes
  * (content_hash): a sample's comments record the command that made it, so a
  * copy, or layer-make run twice with the same seed and options, hashes the
- * file differently and the pile the same. Nor the records a run does not
- * read (seed, porosity, volume_ratio). 0 for s NULL; never fails. */
+ * file differently and the pile the same; nor the order in which the file
+ * lists the particles, nor the numbers it gives its clumps, which change a
+ * run only to rounding (the summation order of the contact forces); but the
+ * same discs grouped into other clumps are another pile. Nor the records a
+ * run does not read (seed, porosity, volume_ratio). 0 for s NULL, or when the
+ * bodies of a clump sample cannot be gathered (out of memory for 9 bytes a
+ * particle); never fails otherwise. */
 unsigned long long gw_layer_sample_pile_hash(const gw_layer_sample *s);
 
 GW_END_DECLS

@@ -12,6 +12,7 @@ add_library(gw_layer_obj OBJECT
   ${CMAKE_CURRENT_LIST_DIR}/layer_sample.c
   ${CMAKE_CURRENT_LIST_DIR}/layer_sample_check.c
   ${CMAKE_CURRENT_LIST_DIR}/layer_sample_h5.c
+  ${CMAKE_CURRENT_LIST_DIR}/layer_sample_pile.c
   ${CMAKE_CURRENT_LIST_DIR}/layer_sample_porosity.c
   ${CMAKE_CURRENT_LIST_DIR}/layer_sample_settings.c
   ${CMAKE_CURRENT_LIST_DIR}/layer_make.c

@@ -517,13 +517,53 @@ int layer_members_connected(const double *x, const double *y, const double *r, i
  * "sample 'WHAT'" when s would be refused on reading. */
 int layer_sample_readable(const gw_layer_sample *s, const char *what, gw_err *err);
 
+/* gw_layer_sample_pile_hash of s into *h, GW_OK; GW_ENOMEM (*h 0) when the
+ * bodies of a clump sample cannot be gathered (layer_sample_pile.c). */
+int layer_sample_pile_hash(const gw_layer_sample *s, unsigned long long *h);
+
+/* A sample's settling verdicts under the materials it was checked under (lp
+ * and other_settling): gw_layer_impact_settled_check's status, message and
+ * warning, then layer_rest_check's. The sweep's check pass checks many setups
+ * of one sample under a few materials (a grid of impact points or speeds,
+ * perhaps of densities) and keeps one of these per sample read, so that a
+ * verdict is found once per sample and material, not twice per case
+ * (layer_settling_verdict). The last LAYER_SETTLING_KEPT materials are kept
+ * (44 kB), the oldest replaced: a grid of more materials on one sample finds
+ * a verdict once per case (twice before). A struct zeroed keeps none. */
+#define LAYER_SETTLING_KEPT 32
+typedef struct layer_settling_memo {
+    struct layer_settling_kept {
+        int valid, other_settling, rc;
+        gw_layer_params lp; /* compared by its bytes: a miss only finds the verdict again */
+        gw_err err;         /* the refusal (rc not GW_OK) */
+        char warning[768];  /* the warning (rc GW_OK; "" for none) */
+    } kept[LAYER_SETTLING_KEPT];
+    int next; /* the one replaced next */
+} layer_settling_memo;
+
+/* gw_layer_impact_settled_check of smp under lp, then layer_rest_check, the
+ * sample named name in their messages; memo (may be NULL) gives the verdict
+ * found before for the same lp and other_settling and keeps the one found
+ * here (a memo serves one sample under one name; GW_ENOMEM is not kept).
+ * Sets warning (n bytes; may be NULL) as gw_layer_impact_settled_check does
+ * (layer_settled.c). */
+int layer_settling_verdict(const gw_layer_sample *smp, const gw_layer_params *lp, int other_settling,
+                           const char *name, layer_settling_memo *memo, char *warning, size_t n, gw_err *err);
+
 /* gw_layer_impact_setup_check with the sample s->sample names already read
  * (and checked) into smp by gw_layer_sample_read: the rows and the resolution
  * against smp, for the sweep's check pass, which checks many setups of one
- * sample file (layer_setup.c; smp is only read). */
+ * sample file (layer_setup.c; smp is only read); its settling verdict through
+ * memo (may be NULL: found here). */
 struct gw_layer_impact_setup;
 int layer_impact_setup_check_sample(const struct gw_layer_impact_setup *s, const gw_layer_sample *smp,
-                                    gw_err *err);
+                                    layer_settling_memo *memo, gw_err *err);
+
+/* gw_layer_impact_plan_make with its settling verdict through memo (may be
+ * NULL). */
+struct gw_layer_impact_plan;
+int layer_impact_plan_make_memo(const struct gw_layer_impact_setup *s, struct gw_layer_impact_plan *p,
+                                layer_settling_memo *memo, gw_err *err);
 
 /* A uniform grid of square cells over n points (px[i stride], py[i stride]),
  * of side h or coarser (doubled until there are at most 16 n + 64 cells, so

@@ -294,10 +294,43 @@ static const char *choice(const gw_layer_impact_setup *s, const char *row, char 
     return buf;
 }
 
+/* Kept here, apart from the checks it calls (layer_settled.c, layer_impact.c),
+ * so that they are not inlined into it: the number of times
+ * gw_layer_impact_settled_check is entered is what test_sweep_check_settling
+ * counts. */
+int layer_settling_verdict(const gw_layer_sample *smp, const gw_layer_params *lp, int other_settling,
+                           const char *name, layer_settling_memo *memo, char *warning, size_t n, gw_err *err)
+{
+    for (int k = 0; memo && k < LAYER_SETTLING_KEPT; k++) {
+        const struct layer_settling_kept *m = &memo->kept[k];
+        if (m->valid && m->other_settling == other_settling && memcmp(&m->lp, lp, sizeof *lp) == 0) {
+            if (warning && n > 0)
+                gw_snprintf(warning, n, "%s", m->warning);
+            if (m->rc != GW_OK && err)
+                *err = m->err;
+            return m->rc;
+        }
+    }
+    struct layer_settling_kept f = {.other_settling = other_settling, .lp = *lp};
+    f.rc = gw_layer_impact_settled_check(smp, lp, other_settling, name, f.warning, sizeof f.warning, &f.err);
+    if (f.rc == GW_OK)
+        f.rc = layer_rest_check(smp, lp, other_settling, name, &f.err);
+    if (warning && n > 0)
+        gw_snprintf(warning, n, "%s", f.rc == GW_OK ? f.warning : "");
+    if (f.rc != GW_OK && err)
+        *err = f.err;
+    if (memo && f.rc != GW_ENOMEM) {
+        f.valid = 1;
+        memo->kept[memo->next] = f;
+        memo->next = (memo->next + 1) % LAYER_SETTLING_KEPT;
+    }
+    return f.rc;
+}
+
 /* Materials, solver and impact parameters as layer-impact resolves them. */
 static int resolve(const gw_layer_impact_setup *s, const gw_layer_sample *smp, gw_layer_params *lp,
                    gw_layer_impact_params *ip, const gw_solver_type **type, gw_solver_params *sp,
-                   gw_err *err)
+                   layer_settling_memo *memo, gw_err *err)
 {
     char sname[16], mname[16];
     *lp = gw_layer_params_default();
@@ -370,9 +403,8 @@ static int resolve(const gw_layer_impact_setup *s, const gw_layer_sample *smp, g
         rc = gw_layer_impact_gap_check(smp, ip, s->gravity, err);
     if (rc == GW_OK)
         rc = gw_layer_impact_step_check(ip, *type, sp, err);
-    if (rc == GW_OK) /* the warning is the run's (gw_layer_impact keeps it in its result) */
-        rc = gw_layer_impact_settled_check(smp, lp, s->other_settling, s->sample, NULL, 0, err);
-    return rc == GW_OK ? layer_rest_check(smp, lp, s->other_settling, s->sample, err) : rc;
+    /* the warning is the run's (gw_layer_impact keeps it in its result) */
+    return rc == GW_OK ? layer_settling_verdict(smp, lp, s->other_settling, s->sample, memo, NULL, 0, err) : rc;
 }
 
 /* The setup's rows in their ranges and a sample named: what a plan (the
@@ -385,7 +417,8 @@ static int setup_rows_check(const gw_layer_impact_setup *s, gw_err *err)
     return rc;
 }
 
-int gw_layer_impact_plan_make(const gw_layer_impact_setup *s, gw_layer_impact_plan *p, gw_err *err)
+int layer_impact_plan_make_memo(const gw_layer_impact_setup *s, gw_layer_impact_plan *p, layer_settling_memo *memo,
+                                gw_err *err)
 {
     if (!s || !p)
         return gw_err_set(err, GW_EINVAL, "gw_layer_impact_plan_make: %s is NULL", !s ? "s" : "p");
@@ -395,7 +428,12 @@ int gw_layer_impact_plan_make(const gw_layer_impact_setup *s, gw_layer_impact_pl
         return rc;
     if ((rc = gw_layer_sample_read(s->sample, &p->sample, err)) != GW_OK)
         return rc;
-    return resolve(s, &p->sample, &p->lp, &p->ip, &p->type, &p->sp, err);
+    return resolve(s, &p->sample, &p->lp, &p->ip, &p->type, &p->sp, memo, err);
+}
+
+int gw_layer_impact_plan_make(const gw_layer_impact_setup *s, gw_layer_impact_plan *p, gw_err *err)
+{
+    return layer_impact_plan_make_memo(s, p, NULL, err);
 }
 
 void gw_layer_impact_plan_free(gw_layer_impact_plan *p)
@@ -405,7 +443,8 @@ void gw_layer_impact_plan_free(gw_layer_impact_plan *p)
     gw_layer_sample_free(&p->sample);
 }
 
-int layer_impact_setup_check_sample(const gw_layer_impact_setup *s, const gw_layer_sample *smp, gw_err *err)
+int layer_impact_setup_check_sample(const gw_layer_impact_setup *s, const gw_layer_sample *smp,
+                                    layer_settling_memo *memo, gw_err *err)
 {
     if (!s || !smp)
         return gw_err_set(err, GW_EINVAL, "layer_impact_setup_check_sample: %s is NULL", !s ? "s" : "smp");
@@ -416,7 +455,7 @@ int layer_impact_setup_check_sample(const gw_layer_impact_setup *s, const gw_lay
     gw_layer_impact_params ip;
     const gw_solver_type *type;
     gw_solver_params sp;
-    return resolve(s, smp, &lp, &ip, &type, &sp, err);
+    return resolve(s, smp, &lp, &ip, &type, &sp, memo, err);
 }
 
 int gw_layer_impact_setup_check(const gw_layer_impact_setup *s, gw_err *err)

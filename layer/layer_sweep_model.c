@@ -51,9 +51,11 @@
  * checking the sample was nearly all of its cost: it reads and checks each
  * sample file once, keeping the sample read (check_memo below), and for each
  * case hashes the file (FNV-1a 64 of its bytes, as the sweep's inputs are)
- * to know it is the same. The pass also refuses two sample paths holding one
- * pile (pile_note: a copy, or layer-make run twice with one seed), which the
- * sweep's own check of file identity cannot see.
+ * to know it is the same, and finds a sample's settling verdict once per
+ * material (layer_settling_verdict), where each case found it twice. The pass
+ * also refuses two sample paths holding one pile (pile_note: a copy,
+ * layer-make run twice with one seed, or the particles listed in another
+ * order), which the sweep's own check of file identity cannot see.
  */
 #include <math.h>
 #include <stddef.h>
@@ -193,14 +195,18 @@ static void name_placement(const gw_layer_impact_setup *s, const placement *pl, 
  * within the file system's timestamp resolution (4 ms on ext4) is still seen.
  * Up to MEMO_SLOTS files (a grid over several samples), the least recently
  * used replaced, each of at most MEMO_NMAX particles (2.8 MB; larger samples
- * are read for every case, as before): at most 11 MB, held until the pass
- * ends (memo_free). */
+ * are read for every case, as before): at most 11 MB, with each slot's
+ * settling verdicts (44 kB), held until the pass ends (memo_free). */
 #define MEMO_SLOTS 4
 #define MEMO_NMAX 100000
 typedef struct memo_slot {
     char *path;
     unsigned long long hash, used;
     gw_layer_sample s;
+    /* its settling verdicts under the materials of the cases checked on it
+     * (layer_settling_verdict): found once for the cases of one material,
+     * where each case found it twice (its resolution, then settling_tally) */
+    layer_settling_memo *settle;
 } memo_slot;
 typedef struct check_memo {
     unsigned long long tick;
@@ -224,7 +230,9 @@ typedef struct check_memo {
  * layer-make run twice with the same seed and options, is another file with
  * other bytes (its comments record the command) and the same particles: each
  * case ran twice and layer-stats counted its point twice (n 8 where 4 are
- * distinct). Compared by gw_layer_sample_pile_hash; a path already noted with
+ * distinct); a file listing the same particles in another order, or with its
+ * clumps numbered otherwise, is the same pile too (the run differs only by
+ * rounding). Compared by gw_layer_sample_pile_hash; a path already noted with
  * the same bytes is not hashed again. GW_OK, GW_EINVAL naming both files,
  * GW_ENOMEM. */
 static int pile_note(check_memo *c, const char *path, unsigned long long file_hash, const gw_layer_sample *s,
@@ -233,12 +241,14 @@ static int pile_note(check_memo *c, const char *path, unsigned long long file_ha
     for (long i = 0; i < c->npiles; i++)
         if (c->piles[i].file_hash == file_hash && strcmp(c->piles[i].path, path) == 0)
             return GW_OK;
-    const unsigned long long h = gw_layer_sample_pile_hash(s);
+    unsigned long long h;
+    if (layer_sample_pile_hash(s, &h) != GW_OK)
+        return gw_err_set(err, GW_ENOMEM, "out of memory");
     for (long i = 0; i < c->npiles; i++)
         if (c->piles[i].pile_hash == h && strcmp(c->piles[i].path, path) != 0)
-            return gw_err_set(err, GW_EINVAL, "sample: '%s' and '%s' hold the same pile (the same particles, box "
-                              "and settling record): each case would run twice and its point count twice in "
-                              "layer-stats; list one of them", c->piles[i].path, path);
+            return gw_err_set(err, GW_EINVAL, "sample: '%s' and '%s' hold the same pile (the same particles, in "
+                              "whatever order, box and settling record): each case would run twice and its point "
+                              "count twice in layer-stats; list one of them", c->piles[i].path, path);
     if (c->npiles == c->cap) {
         const long cap = c->cap ? 2 * c->cap : 8;
         struct pile *p = realloc(c->piles, (size_t)cap * sizeof *p);
@@ -255,24 +265,28 @@ static int pile_note(check_memo *c, const char *path, unsigned long long file_ha
 
 /* Tally case s's settling warning against the sample kept for it (none kept:
  * a sample above MEMO_NMAX, whose runs still record theirs). The material
- * resolves as the run's does (layer_setup.c: the sample's mass law unless given). */
-static const gw_layer_sample *memo_sample(const check_memo *c, const char *path);
-
+ * resolves as the run's does (layer_setup.c: the sample's mass law unless
+ * given); the verdict is the one the case's check just found, kept in the
+ * slot (layer_settling_verdict finds it again only if the two materials'
+ * bytes differ). */
 static void settling_tally(check_memo *c, const gw_layer_impact_setup *s)
 {
     c->ncases++;
-    const gw_layer_sample *smp = memo_sample(c, s->sample);
-    if (!smp)
+    for (int k = 0; k < MEMO_SLOTS; k++) {
+        memo_slot *m = &c->slot[k];
+        if (!m->path || m->used != c->tick || strcmp(m->path, s->sample) != 0)
+            continue;
+        gw_layer_params lp = gw_layer_params_default();
+        GW_LAYER_MATERIAL_TO_PARAMS(&lp, s);
+        lp.mass_law = s->mass_law >= 0 ? s->mass_law : m->s.mass_law;
+        lp.clump_mass = s->clump_mass >= 0 ? s->clump_mass : m->s.clump_mass;
+        char w[768] = "";
+        gw_err e = {{0}};
+        if (layer_settling_verdict(&m->s, &lp, s->other_settling, s->sample, m->settle, w, sizeof w, &e) == GW_OK &&
+            w[0] && c->nsettling++ == 0)
+            memcpy(c->settling, w, sizeof w);
         return;
-    gw_layer_params lp = gw_layer_params_default();
-    GW_LAYER_MATERIAL_TO_PARAMS(&lp, s);
-    lp.mass_law = s->mass_law >= 0 ? s->mass_law : smp->mass_law;
-    lp.clump_mass = s->clump_mass >= 0 ? s->clump_mass : smp->clump_mass;
-    char w[768] = "";
-    gw_err e = {{0}};
-    if (gw_layer_impact_settled_check(smp, &lp, s->other_settling, NULL, w, sizeof w, &e) == GW_OK && w[0] &&
-        c->nsettling++ == 0)
-        memcpy(c->settling, w, sizeof w);
+    }
 }
 
 /* The sample the memo keeps for path, as the case just checked read it; NULL
@@ -305,6 +319,7 @@ static void memo_free(void *memo)
         return;
     for (int k = 0; k < MEMO_SLOTS; k++) {
         free(c->slot[k].path);
+        free(c->slot[k].settle);
         gw_layer_sample_free(&c->slot[k].s);
     }
     for (long i = 0; i < c->npiles; i++)
@@ -330,14 +345,15 @@ static int setup_check(void **memo, const gw_layer_impact_setup *s, gw_err *err)
         memo_slot *m = &c->slot[k];
         if (m->path && m->hash == h && strcmp(m->path, s->sample) == 0) {
             m->used = ++c->tick;
-            int rc = layer_impact_setup_check_sample(s, &m->s, err);
+            int rc = layer_impact_setup_check_sample(s, &m->s, m->settle, err);
             return rc == GW_OK ? pile_note(c, s->sample, h, &m->s, err) : rc;
         }
         if (m->used < old->used)
             old = m;
     }
     gw_layer_impact_plan p;
-    int rc = gw_layer_impact_plan_make(s, &p, err);
+    layer_settling_memo *settle = calloc(1, sizeof *settle); /* NULL: found again by the next case */
+    int rc = layer_impact_plan_make_memo(s, &p, settle, err);
     if (rc == GW_OK)
         rc = pile_note(c, s->sample, h, &p.sample, err);
     /* kept when read, whatever this case's verdict (x outside the box is the case's) */
@@ -345,8 +361,11 @@ static int setup_check(void **memo, const gw_layer_impact_setup *s, gw_err *err)
     if (path) {
         free(old->path);
         gw_layer_sample_free(&old->s);
-        *old = (memo_slot){path, p.sample.content_hash, ++c->tick, p.sample};
+        free(old->settle);
+        *old = (memo_slot){path, p.sample.content_hash, ++c->tick, p.sample, settle};
         memset(&p.sample, 0, sizeof p.sample);
+    } else {
+        free(settle);
     }
     gw_layer_impact_plan_free(&p);
     return rc;

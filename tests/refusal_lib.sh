@@ -9,9 +9,30 @@
 #   checks, which tests with other leftovers to check call themselves.
 #   runs_json WHAT FILE CMD...: exit 0 within 60 s, the JSON in FILE.
 #   jq_py FILE EXPR: EXPR over the JSON d of FILE, printed (Debian's python3).
-#   py_checks: the Python script on stdin run against this build's module and
-#   library, each line it prints "PASS: ..." or "FAIL: ..." counted as a check;
-#   skipped, saying so and setting py_skipped, in a sanitizer build.
+#   py_checks [N]: the Python script on stdin run against this build's module
+#   and library, each line it prints "PASS: ..." or "FAIL: ..." counted as a
+#   check; a script that ends with a status other than 0 (a traceback), or, N
+#   given, prints other than N checks (it stopped, or the module did not
+#   load), is a failed check too; skipped, saying so and setting py_skipped,
+#   in a sanitizer build. The script starts with granwave and warnings
+#   imported (a module that does not load: one FAIL line, the script ends)
+#   and these helpers (py_prelude below):
+#     check(COND, WHAT): prints "PASS: WHAT" or "FAIL: WHAT";
+#     caught(FN, *ARGS, **KW): FN(*ARGS, **KW) with every warning recorded,
+#       returns its result and the texts of its GranwaveWarnings;
+#     refused(WHAT, NEEDLES, FN, *ARGS, **KW): FN(*ARGS, **KW) raises
+#       GranwaveValueError whose text holds every string of NEEDLES (a check
+#       either way: it ran, or raised something else, is a failed one);
+#     warned(WHAT, NEEDLE, FN, *ARGS, **KW): FN(*ARGS, **KW) runs and one of
+#       its GranwaveWarnings holds NEEDLE (a check either way); returns its
+#       result (None when it raised).
+#   pyenv CMD...: CMD run with this build's Python module and library
+#   (PYTHONPATH, GRANWAVE_LIB), as py_checks runs its script.
+#   make_sample FILE ARGS...: layer-make --out FILE ARGS (its output dropped);
+#   a failure is a failed check that ends the test.
+#   settling_sweep_ini FILE SAMPLE [LINES]: a layer sweep's configuration in
+#   FILE, two cases (vi = 10, 20) on SAMPLE at t-max 0.002 s, LINES ("key =
+#   value" lines) added to its [params]: the settling tests' sweep.
 #   sanitizer_build: true in a sanitizer build (GW_SANITIZE: the program linked
 #   against ASan's or UBSan's runtime, or holding ASan's entry point, as a
 #   static runtime would): the one test of it that the scripts share.
@@ -26,7 +47,8 @@
 # caller to check what CMD left behind and count the refusal.
 # hostile_setup "$@": test_setup, SRC made absolute, the scratch directory
 # entered and the sanitizer build's leak suppressions exported (as setup.sh
-# test runs that build): the opening of the hostile passes' tests
+# test runs that build): the opening of the hostile passes' tests and of the
+# others that work in the scratch directory
 hostile_setup() {
     test_setup "$@"
     SRC=$(cd "$SRC" && pwd)
@@ -67,6 +89,43 @@ sanitizer_build() {
     ldd "$GW" 2>/dev/null | grep -qE 'lib(a|ub)san' || grep -qa '__asan_init' "$GW" 2>/dev/null
 }
 
+pyenv() { PYTHONPATH="$SRC/python" GRANWAVE_LIB="$(dirname "$GW")/lib" "$@"; }
+
+# The helpers every py_checks script starts with (see the header).
+py_prelude() {
+    cat <<'EOF'
+import sys, warnings
+try:
+    import granwave
+except Exception as e:  # noqa: BLE001
+    print("FAIL: Python: the module does not load: %s" % e)
+    raise SystemExit
+def check(cond, what):
+    print(("PASS: " if cond else "FAIL: ") + what)
+def caught(fn, *args, **kw):
+    with warnings.catch_warnings(record=True) as w:
+        warnings.simplefilter("always")
+        r = fn(*args, **kw)
+    return r, [str(x.message) for x in w if issubclass(x.category, granwave.GranwaveWarning)]
+def warned(what, needle, fn, *args, **kw):
+    try:
+        r, ws = caught(fn, *args, **kw)
+    except Exception as e:  # noqa: BLE001
+        print("FAIL: %s: raised %s: %s" % (what, type(e).__name__, str(e)[:160]))
+        return None
+    check(any(needle in m for m in ws), "%s: warned %s" % (what, [m[:100] for m in ws]))
+    return r
+def refused(what, needles, fn, *args, **kw):
+    try:
+        fn(*args, **kw)
+        print("FAIL: %s: ran" % what)
+    except granwave.GranwaveValueError as e:
+        check(all(n in str(e) for n in needles), "%s: refused: %s" % (what, str(e)[:160]))
+    except Exception as e:  # noqa: BLE001
+        print("FAIL: %s: raised %s: %s" % (what, type(e).__name__, str(e)[:160]))
+EOF
+}
+
 py_checks() {
     # a sanitizer build's library needs its runtime loaded first, which Python's
     # interpreter is not built with: the checks are said to be skipped there
@@ -76,9 +135,28 @@ py_checks() {
         py_skipped=1
         return
     fi
-    PYTHONPATH="$SRC/python" GRANWAVE_LIB="$(dirname "$GW")/lib" /usr/bin/python3 - >"$tmp/py.out" 2>&1
-    local line
+    { py_prelude; cat; } >"$tmp/py.in"
+    pyenv /usr/bin/python3 "$tmp/py.in" >"$tmp/py.out" 2>&1
+    local rc=$? line n=0
     while read -r line; do
-        case $line in PASS:*) ok "${line#PASS: }" ;; FAIL:*) ko "${line#FAIL: }" ;; *) echo "$line" ;; esac
+        case $line in
+            PASS:*) ok "${line#PASS: }"; n=$((n+1)) ;;
+            FAIL:*) ko "${line#FAIL: }"; n=$((n+1)) ;;
+            *) echo "$line" ;;
+        esac
     done <"$tmp/py.out"
+    [ $rc -eq 0 ] || ko "the Python checks ended with status $rc: $(tail -1 "$tmp/py.out")"
+    [ -z "${1:-}" ] || [ "$n" -eq "$1" ] || ko "the Python checks: $n of $1 ran"
+}
+
+make_sample() {
+    local out=$1; shift
+    "$GW" layer-make --out "$out" "$@" >/dev/null 2>&1 && return
+    ko "layer-make --out $out $*"
+    test_summary
+    exit 1
+}
+
+settling_sweep_ini() {
+    printf '[sweep]\nmodel = layer\n[grid]\nvi = 10, 20\n[params]\nsample = %s\nt-max = 0.002\n%s\n' "$2" "${3:-}" >"$1"
 }

@@ -16,14 +16,10 @@
 #     alone still runs: a held column of 3 beads at 1e-9 m/s, 10 beads at
 #     1e-3 m/s under 100 m/s^2, a column that leaves the wall under gravity
 #     (--n 40 --gravity 9.81, converged) and the same 300 beads cut at 2e-3 s.
-set -u
-GW=$1
-tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 # shellcheck source=tests/refusal_lib.sh
 . "$(dirname "${BASH_SOURCE[0]}")/refusal_lib.sh"
+test_setup "$@"
 PY=/usr/bin/python3
-SRC=${2:-$(dirname "${BASH_SOURCE[0]}")/..}
-pyenv() { PYTHONPATH="$SRC/python" GRANWAVE_LIB="$(dirname "$GW")/lib" "$@"; }
 
 # --- refused before the run (the old code ran it for about 100 s: killed at 5 s)
 REFUSE_TIMEOUT=5

@@ -14,14 +14,10 @@
 #     fixed step is bounded on its own), a bead 1e6 times lighter under a 0.1 m
 #     one (407 oscillations per transit, 1.1e6 bead-steps) and the documented
 #     polydisperse columns.
-set -u
-GW=$1
-tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 # shellcheck source=tests/refusal_lib.sh
 . "$(dirname "${BASH_SOURCE[0]}")/refusal_lib.sh"
+test_setup "$@"
 PY=/usr/bin/python3
-SRC=${2:-$(dirname "${BASH_SOURCE[0]}")/..}
-pyenv() { PYTHONPATH="$SRC/python" GRANWAVE_LIB="$(dirname "$GW")/lib" "$@"; }
 
 # --- refused before the run (the old code ran them for 35-60 s: killed at 5 s)
 REFUSE_TIMEOUT=5

@@ -32,14 +32,10 @@
 #    row at t = 2.51e-4 s twice in drop_wall_force.csv, drop_beads.csv and
 #    drop.h5 (dF/dt from the files divided by zero there). One row now, in the
 #    files and in Python's trace; the JSON is unchanged.
-set -u
-GW=$1
-tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 # shellcheck source=tests/refusal_lib.sh
 . "$(dirname "${BASH_SOURCE[0]}")/refusal_lib.sh"
+test_setup "$@"
 PY=/usr/bin/python3
-SRC=${2:-$(dirname "${BASH_SOURCE[0]}")/..}
-pyenv() { PYTHONPATH="$SRC/python" GRANWAVE_LIB="$(dirname "$GW")/lib" "$@"; }
 
 
 # --- 1: a damping model without its constant

@@ -89,7 +89,7 @@ fi
 [ -s "$tmp/d0.json" ] && [ "$(jq_py "$tmp/d0.json" "(d.get('method'), d['settings'].get('method'))")" = "('bdf', 'bdf')" ] &&
     ok "2: the column's JSON records its method (bdf)" ||
     ko "2: the column's JSON method: $(jq_py "$tmp/d0.json" "d.get('method')" 2>&1)"
-PYTHONPATH="$SRC/python" GRANWAVE_LIB="$(dirname "$GW")/lib" $PY -c "
+pyenv $PY -c "
 import json, granwave
 r = granwave.dispersion(column_n=5, method='adams')
 assert r['tau_n'] == json.load(open('$tmp/da.json'))['tau_n'], r['tau_n']
@@ -115,7 +115,7 @@ for g in 0 100; do
             ko "3: falcon --gravity $g: v_imp $(jq_py "$tmp/fh$g.json" "d['velocities'][1]['v_imp']") against $want"
     fi
 done
-PYTHONPATH="$SRC/python" GRANWAVE_LIB="$(dirname "$GW")/lib" $PY -c "
+pyenv $PY -c "
 import json, granwave
 r = granwave.falcon(n='1:2', vimp=[0.3], heights=[5.1], gravity=100)
 assert r['v_imp'][1] == json.load(open('$tmp/fh100.json'))['velocities'][1]['v_imp'], r['v_imp']

@@ -34,13 +34,10 @@
 # the 4 that pass: part 5 and the settings line without material.
 # The HDF5 case is skipped in a build without HDF5.
 # shellcheck source=tests/refusal_lib.sh
-GW=$1
-SRC=${2:-$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)}
-. "$SRC/tests/refusal_lib.sh"
-test_setup "$@"
-cd "$tmp" || exit 1
+. "$(dirname "${BASH_SOURCE[0]}")/refusal_lib.sh"
+hostile_setup "$@"
 
-mk() { "$GW" layer-make --n 40 --seed 1 --out "$@" >/dev/null 2>&1 || { echo "FAIL: layer-make $*"; exit 1; }; }
+mk() { make_sample "$1" --n 40 --seed 1 "${@:2}"; }
 mk s.txt
 mk d100.txt --density 100
 mk g1.txt --gravity 1 # not settled by t-max 6 s (a warning): the record is what counts here
@@ -61,7 +58,7 @@ refused "settled at gravity 1, hit at 9.81" "sample 'g1.txt': it settled with gr
 refused "settled at shear modulus 4e11, hit at 4e10" \
     "sample 'G.txt': it settled with shear-modulus 4e\+11 Pa against the impact's 4e\+10 .* 0.1 times" $(imp G.txt)
 }
-printf '[sweep]\nmodel = layer\n[grid]\nvi = 10, 20\n[params]\nsample = %s\nt-max = 0.002\n' "$tmp/d100.txt" >sw.ini
+settling_sweep_ini sw.ini "$tmp/d100.txt"
 refused "a layer sweep over the density-100 pile (--check)" "sample '.*d100.txt': it settled with density 100" \
     sweep sw.ini --out "$tmp/o" --check
 h5=0
@@ -135,35 +132,23 @@ runs_json "a hand-written density-100 copy hit at 2650" h.json layer-impact --sa
     ! grep -q settled "$tmp/stderr" && ok "a hand-written sample (no settings line) runs as before" ||
     ko "hand-written: $(cat "$tmp/stderr")"
 
-py_checks <<'EOF'
-import warnings
+py_checks 3 <<'EOF'
+refused("Python: the density-100 pile", ["settled with density 100"], granwave.layer_impact, sample="d100.txt",
+        t_max=0.002)
 try:
-    import granwave
+    r, ws = caught(granwave.layer_impact, sample="d100.txt", t_max=0.002, other_settling=True)
+    rec = r["warnings"] if isinstance(r, dict) else r.warnings
+    check(any("density 100" in m for m in ws) and rec and "density 100" in rec[0],
+          "Python other_settling=True: warned %s, recorded %s" % (ws[:1], rec))
 except Exception as e:  # noqa: BLE001
-    print("FAIL: Python: the module does not load: %s" % e)
-    raise SystemExit
-try:
-    granwave.layer_impact(sample="d100.txt", t_max=0.002)
-    print("FAIL: Python: the density-100 pile ran")
-except granwave.GranwaveValueError as e:
-    print(("PASS: " if "settled with density 100" in str(e) else "FAIL: ") + "Python refuses: " + str(e)[:120])
-with warnings.catch_warnings(record=True) as w:
-    warnings.simplefilter("always")
-    try:
-        r = granwave.layer_impact(sample="d100.txt", t_max=0.002, other_settling=True)
-        ws = [str(x.message) for x in w if issubclass(x.category, granwave.GranwaveWarning)]
-        rec = r["warnings"] if isinstance(r, dict) else r.warnings
-        print(("PASS: " if any("density 100" in m for m in ws) and rec and "density 100" in rec[0] else "FAIL: ")
-              + "Python other_settling=True: warned %s, recorded %s" % (ws[:1], rec))
-    except Exception as e:  # noqa: BLE001
-        print("FAIL: Python other_settling=True: %s" % e)
+    print("FAIL: Python other_settling=True: %s" % e)
 # the library's dialect of the settings line (flat rows): Python's layer_make writes it
 try:
     granwave.layer_make(n=40, seed=1, density=100, out="py100.txt")
-    granwave.layer_impact(sample="py100.txt", t_max=0.002)
-    print("FAIL: Python: the density-100 pile written by layer_make ran")
-except granwave.GranwaveValueError as e:
-    print(("PASS: " if "settled with density 100" in str(e) else "FAIL: ") + "Python's own sample refused: " + str(e)[:100])
+    refused("Python: the density-100 pile written by layer_make", ["settled with density 100"],
+            granwave.layer_impact, sample="py100.txt", t_max=0.002)
+except Exception as e:  # noqa: BLE001
+    print("FAIL: Python: layer_make(density=100) raised %s: %s" % (type(e).__name__, e))
 EOF
 [ $h5 = 1 ] || echo "SKIP: HDF5 (this build has none)"
 test_summary test_sample_material

@@ -25,14 +25,11 @@
 # All 9 checks fail on the code before (the matched runs too: its
 # impact.json's sample_settled had no clump_mass).
 # shellcheck source=tests/refusal_lib.sh
-GW=$1
-SRC=${2:-$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)}
-. "$SRC/tests/refusal_lib.sh"
-test_setup "$@"
-cd "$tmp" || exit 1
+. "$(dirname "${BASH_SOURCE[0]}")/refusal_lib.sh"
+hostile_setup "$@"
 PY=/usr/bin/python3
 
-mk() { "$GW" layer-make --n 20 --clumps --seed 1 --out "$@" >/dev/null 2>&1 || { echo "FAIL: layer-make $*"; exit 1; }; }
+mk() { make_sample "$1" --n 20 --clumps --seed 1 "${@:2}"; }
 mk u.txt --clump-mass union
 mk s.txt
 
@@ -123,7 +120,7 @@ refused "the library's line with clump-mass cube" "sample 'lib_cube.txt': line [
     layer-impact --sample lib_cube.txt --t-max 0.002 --out "$tmp/o"
 
 # 5: a sweep's rows
-printf '[sweep]\nmodel = layer\n[grid]\nvi = 10, 20\n[params]\nsample = %s\nt-max = 0.002\nclump-mass = sum\n' "$tmp/u.txt" >sw.ini
+settling_sweep_ini sw.ini "$tmp/u.txt" "clump-mass = sum"
 "$GW" sweep sw.ini --out "$tmp/sw" --quiet 2>sw.err; rc=$?
 if [ $rc -eq 0 ] && $PY - sw/results.csv "$r" <<'PY'; then
 import csv, sys

@@ -25,13 +25,10 @@
 # pile refused without the flag; the pushed piles were refused before too,
 # with a message that did not say what the flag does).
 # shellcheck source=tests/refusal_lib.sh
-GW=$1
-SRC=${2:-$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)}
-. "$SRC/tests/refusal_lib.sh"
-test_setup "$@"
-cd "$tmp" || exit 1
+. "$(dirname "${BASH_SOURCE[0]}")/refusal_lib.sh"
+hostile_setup "$@"
 
-mk() { "$GW" layer-make --n 40 --seed 1 --out "$@" >/dev/null 2>&1 || { echo "FAIL: layer-make $*"; exit 1; }; }
+mk() { make_sample "$1" --n 40 --seed 1 "${@:2}"; }
 mk s.txt
 mk G.txt --shear-modulus 4e9
 
@@ -42,8 +39,7 @@ if runs_json "G 4e9 with --other-settling" os.json layer-impact --sample G.txt -
     [ "$n" = 1 ] && [ "$got" = "1 True" ] && ok "G 4e9 with --other-settling: runs, warns (q 10), records it" ||
         ko "G 4e9 with --other-settling: $n warning lines, JSON $got: $(cat "$tmp/stderr")"
 fi
-printf '[sweep]\nmodel = layer\n[grid]\nvi = 10, 20\n[params]\nsample = %s\nt-max = 0.002\nother-settling = true\n' \
-    "$tmp/G.txt" >sw.ini
+settling_sweep_ini sw.ini "$tmp/G.txt" "other-settling = true"
 "$GW" sweep sw.ini --out "$tmp/sw" --quiet 2>sw.err; rc=$?
 if [ $rc -eq 0 ] && [ "$(awk -F, '/^[0-9]/ { print $(NF - 2) }' sw/results.csv | sort -u)" = 1 ]; then
     ok "a layer sweep with other-settling over the G 4e9 pile runs, its rows settling_warning 1"
@@ -78,21 +74,9 @@ refused "the pushed pile without its settings line, with --other-settling" \
     "sample 'pushed_hand.txt': at t = 0 its floor carries .*other-settling does not apply: no settings line" \
     layer-impact --sample pushed_hand.txt --t-max 0.002 --out "$tmp/o" --other-settling
 
-py_checks <<'EOF'
-import warnings
-try:
-    import granwave
-except Exception as e:  # noqa: BLE001
-    print("FAIL: Python: the module does not load: %s" % e)
-    raise SystemExit
-with warnings.catch_warnings(record=True) as w:
-    warnings.simplefilter("always")
-    try:
-        granwave.layer_impact(sample="G.txt", t_max=0.002, other_settling=True)
-        ws = [str(x.message) for x in w if issubclass(x.category, granwave.GranwaveWarning)]
-        print(("PASS: " if any("springs up" in m for m in ws) else "FAIL: ") + "Python other_settling=True on G 4e9: warned %s" % ws[:1])
-    except Exception as e:  # noqa: BLE001
-        print("FAIL: Python other_settling=True on G 4e9: %s" % str(e)[:200])
+py_checks 1 <<'EOF'
+warned("Python other_settling=True on G 4e9", "springs up", granwave.layer_impact, sample="G.txt", t_max=0.002,
+       other_settling=True)
 EOF
 
 test_summary test_settling_floor

@@ -30,13 +30,10 @@
 # On the code before: 19.2 and 29 degrees ran, the messages named 0.6 and
 # "flows".
 # shellcheck source=tests/refusal_lib.sh
-GW=$1
-SRC=${2:-$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)}
-. "$SRC/tests/refusal_lib.sh"
-test_setup "$@"
-cd "$tmp" || exit 1
+. "$(dirname "${BASH_SOURCE[0]}")/refusal_lib.sh"
+hostile_setup "$@"
 
-mk() { "$GW" layer-make --seed 1 --out "$@" >/dev/null 2>&1 || { echo "FAIL: layer-make $*"; exit 1; }; }
+mk() { make_sample "$1" --seed 1 "${@:2}"; }
 mk s.txt --n 40
 mk f0.txt --n 40 --friction 0 # (may not settle by t-max: the record is what counts here)
 
@@ -51,7 +48,7 @@ refused "settled at 30 deg, hit at 18.9 (0.593 of its tangent)" "sample 's.txt':
 refused "settled at 30 deg, hit at 19.2 (0.603, within session 28's bound)" "sample 's.txt': .*is 0.603 of the settling's" $(imp s.txt 19.2)
 refused "settled at 30 deg, hit at 29" "sample 's.txt': .*tan\(29 deg\) is 0.96 of the settling's" $(imp s.txt 29)
 }
-printf '[sweep]\nmodel = layer\n[grid]\nvi = 10, 20\n[params]\nsample = %s\nt-max = 0.002\nfriction = 10\n' "$tmp/s.txt" >sw.ini
+settling_sweep_ini sw.ini "$tmp/s.txt" "friction = 10"
 refused "a layer sweep at friction 10 (--check)" "sample '.*s.txt': it settled with friction 30 deg" sweep sw.ini --out "$tmp/o" --check
 
 # 2: other-settling runs it, recorded
@@ -75,26 +72,11 @@ warned() { # WHAT PATTERN NOTPATTERN ARGS...
 warned "--friction 40" "friction 30 deg against the impact's 40" "flow" --sample s.txt --friction 40
 warned "settled at 0 deg, hit at 10" "friction 0 deg against the impact's 10" "flow" --sample f0.txt --friction 10
 
-py_checks <<'EOF'
-import warnings
-try:
-    import granwave
-except Exception as e:  # noqa: BLE001
-    print("FAIL: Python: the module does not load: %s" % e)
-    raise SystemExit
-try:
-    granwave.layer_impact(sample="s.txt", t_max=0.002, friction=10)
-    print("FAIL: Python: friction 10 on the 30-degree pile ran")
-except granwave.GranwaveValueError as e:
-    print(("PASS: " if "friction 30 deg against the impact's 10" in str(e) else "FAIL: ") + "Python refuses: " + str(e)[:120])
-with warnings.catch_warnings(record=True) as w:
-    warnings.simplefilter("always")
-    try:
-        granwave.layer_impact(sample="s.txt", t_max=0.002, friction=10, other_settling=True)
-        ws = [str(x.message) for x in w if issubclass(x.category, granwave.GranwaveWarning)]
-        print(("PASS: " if any("may flow" in m for m in ws) else "FAIL: ") + "Python other_settling=True: warned %s" % ws[:1])
-    except Exception as e:  # noqa: BLE001
-        print("FAIL: Python other_settling=True: %s" % e)
+py_checks 2 <<'EOF'
+refused("Python: friction 10 on the 30-degree pile", ["friction 30 deg against the impact's 10"],
+        granwave.layer_impact, sample="s.txt", t_max=0.002, friction=10)
+warned("Python other_settling=True", "may flow", granwave.layer_impact, sample="s.txt", t_max=0.002, friction=10,
+       other_settling=True)
 EOF
 
 # 4: the measurement: the 600-disc pile settled at 30 degrees flows at 19.2

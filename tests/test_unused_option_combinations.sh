@@ -160,7 +160,7 @@ refused "7b layer-impact --clump-mass union on one-disc clumps" \
     ko "7c clumps of aspect up to 1.5: $(cat c2.err "$tmp/stderr" | head -c 300)"
 
 # 1-4 and 7 in Python: the same library checks and warning
-PYTHONPATH="$SRC/python" GRANWAVE_LIB="$(dirname "$GW")/lib" $PY - >py.out 2>&1 <<'EOF'
+pyenv $PY - >py.out 2>&1 <<'EOF'
 import warnings
 import granwave
 

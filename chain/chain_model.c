@@ -275,6 +275,11 @@ int chain_roots_need_reset(const gw_chain *c, double t, const double *y, const i
     for (int k = 0; k < c->sys.nroots; k++)
         if (k != im && roots[k] != 0)
             return 1;
+    /* on a plastic wall with no sensor body the force-maximum root is the
+     * overlap's rate, whose zero ends D_max's tracking (its rate dd s(x) for
+     * dd > 0 only): a kink, restarted at as a contact is */
+    if (c->i_dmax >= 0 && c->i_sens < 0 && roots[im] != 0)
+        return 1;
     /* the event functions as chain_roots and chain_general_roots give them */
     if (gw_chain_wall_gap(c, y) == 0 || chain_force_rate(c, t, y) == 0)
         return 1;

@@ -474,7 +474,8 @@ static int collide_root(void *ctx, double t, double *y, const int *roots, gw_err
 {
     run_state *st = ctx;
     on_roots(st, t, y, roots);
-    return sampled(observe(st, t, y, 1), GW_DRIVE_RESET, t, err);
+    return sampled(observe(st, t, y, 1), chain_roots_need_reset(st->c, t, y, roots) ? GW_DRIVE_RESET : GW_DRIVE_ON, t,
+                   err);
 }
 
 static int collide_output(void *ctx, double t, double *y, gw_err *err)

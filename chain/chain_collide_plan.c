@@ -172,6 +172,19 @@ double chain_rk4_default_dt(const gw_chain_params *p, double steps_per_tc)
 #define DRAG_STEPS_ADAMS_COULOMB 4.0
 #define DRAG_STEPS_ERK_COULOMB 0.4
 
+/* The most steps a run may spend on a drag's decay under an explicit method
+ * (cvode adams, arkode erk, rk4 at the step the drag sets): each step goes to
+ * the method's stability, which cvode bdf does without (1,480 to 1,850 steps
+ * at c_s/M = 1e10 to 1e12), and the reading it gives is no better. 1e7 steps
+ * is about 15 to 60 s at n = 3. At the general bound, 1e8, such runs were
+ * admitted for minutes: --n 3 --sensor-mass 1e-3 --sensor-stiffness 1e9
+ * --sensor-damping 1e9 under arkode erk (3.3e7 estimated) took 24.6 million
+ * steps, 66 to 108 s; --sensor-damping 1e8 under cvode adams (1.65e7) 18.6
+ * million steps, 114 s, with an energy error of 1.3e-7; falcon --n 1:5
+ * --sensor-damping 1e9 --solver arkode past 60 s. Measured within it: erk at
+ * 1e8 2.57 million steps (13.7 s), adams at 1e7 1.24 million (5.9 s). */
+#define DRAG_STEPS_MAX 1e7
+
 /* The steps a drag holds an explicit method to over t_len (0: none, or a
  * method it does not hold), *k the drag (chain_drag_rates' index) and *rate
  * its rate. */
@@ -227,13 +240,13 @@ int chain_drag_steps_check(const gw_chain_params *p, const gw_solver_type *type,
     int k = 0;
     double rate = 0, t_used = t_len;
     const double steps = drag_steps(p, type, sp, given, steps_per_tc, t_len, t_run, &k, &rate, &t_used);
-    if (steps <= 1e8)
+    if (steps <= DRAG_STEPS_MAX)
         return GW_OK;
     const char *what = k == CHAIN_DRAG_SENSOR ? "the sensor body's damping"
                        : k == CHAIN_DRAG_CONTACT ? "the contact damping"
                                                  : "the guide's friction";
     return gw_err_set(err, GW_EINVAL, "%s: %s decays at %.3g 1/s (c/m), which %s %s follows with about %.3g steps "
-                      "over %s (about %.3g s), above 1e+08: use cvode with its default method bdf (implicit: "
+                      "over %s (about %.3g s), above 1e+07: use cvode with its default method bdf (implicit: "
                       "its step is not held by the damping), or %s", chain_drag_flag[k], what, rate,
                       gw_solver_type_name(type),
                       type == gw_solver_rk4 ? "(explicit)" : gw_solver_method_used(type, sp->method), steps,

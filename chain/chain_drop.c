@@ -471,7 +471,7 @@ static int drop_root(void *ctx, double t, double *y, const int *roots, gw_err *e
     if (rc != GW_OK)
         return drop_failed(rc, err);
     rc = drop_observed(st, t, y, 1, err);
-    return rc == GW_DRIVE_ON ? GW_DRIVE_RESET : rc;
+    return rc == GW_DRIVE_ON && chain_roots_need_reset(st->d->c, t, y, roots) ? GW_DRIVE_RESET : rc;
 }
 
 static int drop_output(void *ctx, double t, double *y, gw_err *err)

@@ -74,6 +74,13 @@ int chain_general_roots(double t, const double *y, double *g, void *P);
  * gw_chain_force_max_root, whose falling zeros with the wall contact closed are
  * the maxima of F. See chain_model.c. */
 double chain_force_rate(const gw_chain *c, double t, const double *y);
+/* 1 when the roots reported at state (t, y) (gw_solver_advance's) need the
+ * solver restarted: one of them marks a change in the model's smoothness (a
+ * contact opening or closing, the overlap rate that switches a plastic wall's
+ * tracking), or an event function is exactly 0 there. 0 when only the
+ * force-maximum root (gw_chain_force_max_root) fell or rose: the model is as
+ * smooth there as on either side. See chain_model.c. */
+int chain_roots_need_reset(const gw_chain *c, double t, const double *y, const int *roots);
 void chain_general_energy(const gw_chain *c, const double *y, gw_chain_energy *e);
 
 /* The decay rates c/m, 1/s, of the column's linear drags, each on the body it

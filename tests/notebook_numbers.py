@@ -111,7 +111,7 @@ def pattern(rx):
 # --- the claims: name, the page they read ('doc' or a notebook's own text), the
 #     pattern whose groups are the numbers stated, and the check -----------------------
 
-@pattern(r"against `granwave\.chain` with gravity, \S+ then (\S+);")
+@pattern(r"against `granwave\.chain` with gravity, \S+ then \S+ at the time; now (\S+),")
 def c_contact_time(doc, ctx):
     m = doc_values(doc, c_contact_time.pattern, c_contact_time.__name__)
     row = printed(ctx, "experiment", r"^\| contact time \(us\) \|.*\| ([+-]?[\d.]+e[+-]\d+) \|\s*$",

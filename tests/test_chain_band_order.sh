@@ -10,8 +10,10 @@
 # Asserted:
 #  1 a column the plan refused as the whole band's work (n = 40 at --dt-max
 #    5e-8: 1.4e8 steps x states^2) runs under cvode bdf and agrees with arkode
-#    erk (no Jacobian): F_max within 1e-6, tau_N and the restitution within
-#    1e-9 (measured 2.6e-9, 8e-13 and 2e-11);
+#    erk (no Jacobian): F_max within 1e-6, tau_N within 2e-9 and the
+#    restitution within 1e-9 (measured 2.6e-9, 8e-10 and 2e-11; tau_N is
+#    bdf's own error at 1e-12 over 1.07 ms, 1.0e-9 since a force maximum no
+#    longer restarts the solver, 1.75e-10 at rtol = atol = 1e-13);
 #  2 arkode dirk and imex on a 1e-3 kg body damped at 1e7 N s/m (dirk failed
 #    with exit 1 before: error test failures at 5.1e-5 s) agree with cvode bdf
 #    within 1e-6 on F_max, tau_N and the restitution (the time of the peak,
@@ -44,8 +46,8 @@ PYEOF
 # --- 1 past the whole band's work bound, cvode bdf against arkode erk ---
 if runs_json "chain --n 40 on a sensor body at --dt-max 5e-8 (cvode bdf)" b40.json chain --n 40 $SB --dt-max 5e-8 &&
     runs_json "the same under arkode erk" e40.json chain --n 40 $SB --dt-max 5e-8 --solver arkode; then
-    v=$(agree b40.json e40.json 1e-6 f_max) w=$(agree b40.json e40.json 1e-9 tau_n eps_eff)
-    [ "$v" = True ] && [ "$w" = True ] &&
+    v=$(agree b40.json e40.json 1e-6 f_max) w=$(agree b40.json e40.json 2e-9 tau_n)$(agree b40.json e40.json 1e-9 eps_eff)
+    [ "$v" = True ] && [ "$w" = TrueTrue ] &&
         ok "n = 40 on a sensor body (refused before as the whole band's work): cvode bdf agrees with arkode erk" ||
         ko "n = 40 on a sensor body: $v $w"
 fi

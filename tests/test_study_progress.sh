@@ -14,6 +14,9 @@
 #    collisions (wavespeed's front columns and softwall's 20 rigid-wall ones
 #    counted); nothing else on stderr. Each is stopped once it has printed
 #    three lines (12 s without them is a failure);
+#  - a sweep of two such columns (chain, n = 400, 401, 2 threads): after its
+#    header, lines "sweep: 0/2 cases, J under way, E s elapsed" within 6 s
+#    and at most 4.5 s apart, where it said nothing until a case ended;
 #  - --quiet: nothing on stderr over the same time;
 #  - a study that lasts 2.5 s or more (falcon --n 140:141) ends with the last
 #    line "n/n collisions, 100.0% of the work", and its stdout --json parses;
@@ -33,6 +36,8 @@ def check(cond, what):
     print(("PASS: " if cond else "FAIL: ") + what, flush=True)
 
 LINE = re.compile(r"  (\d+)/(\d+) collisions, ([0-9.]+)% of the work, ([0-9.]+) s elapsed, ~([0-9.]+) s left")
+# a sweep's line: before its first case ends the cases under way, then its rate and time left
+SWEEP = re.compile(r"sweep: (\d+)/(\d+) cases, (?:(\d+) under way|[0-9.]+ cases/s), ([0-9.]+) s elapsed(?:, ~[0-9.]+ s left)?")
 
 class Run:
     """A run of the program whose stderr lines are stamped as they arrive."""
@@ -51,8 +56,8 @@ class Run:
             self.lines.append((time.monotonic() - self.t0, raw.decode(errors="replace").rstrip("\n")))
     def _read_out(self):
         self.out = self.p.stdout.read()
-    def progress(self):
-        return [(t, LINE.fullmatch(l)) for t, l in self.lines[1:] if LINE.fullmatch(l)]
+    def progress(self, line=LINE):
+        return [(t, line.fullmatch(l)) for t, l in self.lines[1:] if line.fullmatch(l)]
     def stop(self):
         """Kill the run if still running; its elapsed time when stopped."""
         el = time.monotonic() - self.t0
@@ -72,10 +77,30 @@ LONG = [
     (["wavespeed", "--n", "400:402", "--vimp", "0.3", "--jobs", "3"], 4, "granwave wavespeed: 4 collisions"),
     (["softwall", "--n", "300:302", "--jobs", "2"], 23, "granwave softwall: N = 300..302 on one wall"),
 ]
+# a sweep of two such columns on 2 threads: its cases end after the window
+for o in ("sw", "swq"):
+    open(o + ".ini", "w").write("[sweep]\nmodel = chain\nout = %s\n[grid]\nn = 400, 401\n" % o)
 runs = [(Run(a), Run(a + ["--quiet"]), n, h) for a, n, h in LONG]
+sw, swq = Run(["sweep", "sw.ini", "--jobs", "2"]), Run(["sweep", "swq.ini", "--jobs", "2", "--quiet"])
 deadline = time.monotonic() + 12
-while time.monotonic() < deadline and any(len(r.progress()) < 3 and r.p.poll() is None for r, _, _, _ in runs):
+while time.monotonic() < deadline and any(len(r.progress()) < 3 and r.p.poll() is None for r, _, _, _ in runs) or \
+        (time.monotonic() < deadline and len(sw.progress(SWEEP)) < 3 and sw.p.poll() is None):
     time.sleep(0.05)
+el, el_q = sw.stop(), swq.stop()
+prog = sw.progress(SWEEP)
+check(len(sw.lines) >= 1 and sw.lines[0][1].startswith("sweep: 2 cases, 0 already done, 2 to run on threads"),
+      "sweep: its header first: %r" % sw.lines[:1])
+check(len(prog) == len(sw.lines) - 1, "sweep: every other line a whole progress line: %r"
+      % [l for _, l in sw.lines[1:] if not SWEEP.fullmatch(l)])
+check(len(prog) >= 3, "sweep: three lines within 12 s (%d in %.1f s)" % (len(prog), el))
+if prog:
+    check(prog[0][0] <= 6.0 and prog[0][1].group(1) == "0" and prog[0][1].group(3) is not None,
+          "sweep: the first line within 6 s, before any case ended, its cases under way: %.2f s %s"
+          % (prog[0][0], prog[0][1].group(0)))
+    gaps = [b[0] - a[0] for a, b in zip(prog, prog[1:])]
+    check(all(g <= 4.5 for g in gaps), "sweep: lines at most 4.5 s apart: %s" % ["%.2f" % g for g in gaps])
+    check(all(x.group(2) == "2" for _, x in prog), "sweep: n = 2 cases in every line")
+check(not swq.lines, "sweep --quiet: nothing on stderr in %.1f s: %r" % (el_q, swq.lines[:2]))
 for r, q, n, head in runs:
     el, el_q = r.stop(), q.stop()
     lines = r.lines

@@ -282,7 +282,8 @@ int gw_cmd_falcon(int argc, char **argv)
     int rc = gw_cli_study_setup(rows, &fs, opts, argc, argv, "falcon", &err);
     if (rc == GW_OK) {
         fs.traces = f.c.out != NULL;
-        rc = gw_chain_falcon_run_watch(&fs, NULL, NULL, gw_cli_progress_watch, &prog, &f.o, &err);
+        gw_chain_watch_fn watch = quiet ? NULL : gw_cli_progress_watch; /* none: no lock at every sample */
+        rc = gw_chain_falcon_run_watch(&fs, NULL, NULL, watch, &prog, &f.o, &err);
         if (rc == GW_OK)
             gw_cli_progress_part(&prog, ncase + ntrace, ncase + ntrace, 1.0, 1);
     }

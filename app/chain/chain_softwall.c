@@ -136,8 +136,8 @@ int gw_cmd_softwall(int argc, char **argv)
     snprintf(header, sizeof header, "granwave softwall: N = %ld..%ld on %s (and N = 1..20 on the rigid wall for T_q)",
              a, b, use_sheets ? "every sheet of Table 2 and the rigid wall" : "one wall");
     prog.header = header;
-    if (rc == GW_OK && (rc = gw_chain_softwall_run_watch(&ss, NULL, NULL, gw_cli_progress_watch, &prog, &so, &err)) ==
-                           GW_OK)
+    gw_chain_watch_fn watch = quiet ? NULL : gw_cli_progress_watch; /* none: no lock at every sample */
+    if (rc == GW_OK && (rc = gw_chain_softwall_run_watch(&ss, NULL, NULL, watch, &prog, &so, &err)) == GW_OK)
         gw_cli_progress_part(&prog, 20 + (long)so.nw * so.nn, 20 + (long)so.nw * so.nn, 1.0, 1);
     int nw = so.nw, ns = so.nn, per = so.nn, code = 0;
     double kc = so.k_c, t_q = so.t_q_rigid, wall_s = so.wall_time_s;

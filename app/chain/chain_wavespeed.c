@@ -105,8 +105,8 @@ int gw_cmd_wavespeed(int argc, char **argv)
     snprintf(header, sizeof header, "granwave wavespeed: %d collisions (N = %ld..%ld and the front's N = %ld at %d "
              "velocities)", ncoll, a, b, b, nv);
     prog.header = header;
-    if (rc == GW_OK && (rc = gw_chain_wavespeed_run_watch(&ws, NULL, NULL, gw_cli_progress_watch, &prog, &wo, &err)) ==
-                           GW_OK)
+    gw_chain_watch_fn watch = quiet ? NULL : gw_cli_progress_watch; /* none: no lock at every sample */
+    if (rc == GW_OK && (rc = gw_chain_wavespeed_run_watch(&ws, NULL, NULL, watch, &prog, &wo, &err)) == GW_OK)
         gw_cli_progress_part(&prog, ncoll, ncoll, 1.0, 1);
     if (rc != GW_OK) {
         if (strncmp(err.msg, "wavespeed", 9) != 0)

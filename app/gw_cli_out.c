@@ -198,8 +198,9 @@ void gw_cli_progress_part(gw_cli_progress *p, long done, long total, double part
     const double el = el_ms / 1e3;
     part = last ? 1.0 : fmin(fmax(part, 0.0), 1.0);
     if (len >= 0 && (size_t)len < sizeof line)
-        snprintf(line + len, sizeof line - (size_t)len, "%s%ld/%ld %s, %.1f%% of the work, %.1f s elapsed, ~%.1f s left\n",
-                 p->prefix, done, total, p->unit, 100.0 * part, el, part > 0 ? el / part * (1.0 - part) : 0.0);
+        snprintf(line + len, sizeof line - (size_t)len,
+                 "%s%ld/%ld %s, %.1f%% of the work, %.1f s elapsed, ~%.1f s left\n", p->prefix, done, total,
+                 p->unit, 100.0 * part, el, part > 0 ? el / part * (1.0 - part) : 0.0);
     /* one fputs of the whole line: stderr is unbuffered, and a line written in
      * pieces could take another writer's text between them */
     fputs(line, p->fp);

@@ -17,6 +17,8 @@
 #  - a sweep of two such columns (chain, n = 400, 401, 2 threads): after its
 #    header, lines "sweep: 0/2 cases, J under way, E s elapsed" within 6 s
 #    and at most 4.5 s apart, where it said nothing until a case ended;
+#  - layer-make --n 300 (16 s on a loaded machine) in a pipe: its line
+#    within 6 s, where it spoke on a terminal only;
 #  - --quiet: nothing on stderr over the same time;
 #  - a study that lasts 2.5 s or more (falcon --n 140:141) ends with the last
 #    line "n/n collisions, 100.0% of the work", and its stdout --json parses;
@@ -82,10 +84,21 @@ for o in ("sw", "swq"):
     open(o + ".ini", "w").write("[sweep]\nmodel = chain\nout = %s\n[grid]\nn = 400, 401\n" % o)
 runs = [(Run(a), Run(a + ["--quiet"]), n, h) for a, n, h in LONG]
 sw, swq = Run(["sweep", "sw.ini", "--jobs", "2"]), Run(["sweep", "swq.ini", "--jobs", "2", "--quiet"])
+# a pluviation of 300 discs (16 s here) in a pipe: it spoke on a terminal only
+lm, lmq = Run(["layer-make", "--n", "300", "--seed", "1", "--out", "lm.txt"]), \
+    Run(["layer-make", "--n", "300", "--seed", "1", "--out", "lmq.txt", "--quiet"])
 deadline = time.monotonic() + 12
 while time.monotonic() < deadline and any(len(r.progress()) < 3 and r.p.poll() is None for r, _, _, _ in runs) or \
         (time.monotonic() < deadline and len(sw.progress(SWEEP)) < 3 and sw.p.poll() is None):
     time.sleep(0.05)
+while time.monotonic() < deadline and not lm.lines and lm.p.poll() is None:
+    time.sleep(0.05)
+el, el_q = lm.stop(), lmq.stop()
+LM = re.compile(r"granwave layer-make: t = [0-9.e+-]+ s simulated \(until the pile settles, at most t-max 6 s\), "
+                r"[0-9]+ s elapsed")
+check(len(lm.lines) >= 1 and lm.lines[0][0] <= 6.0 and all(LM.fullmatch(l) for _, l in lm.lines),
+      "layer-make --n 300 in a pipe: a line within 6 s, whole lines: %r" % lm.lines[:2])
+check(not lmq.lines, "layer-make --quiet: nothing on stderr in %.1f s: %r" % (el_q, lmq.lines[:2]))
 el, el_q = sw.stop(), swq.stop()
 prog = sw.progress(SWEEP)
 check(len(sw.lines) >= 1 and sw.lines[0][1].startswith("sweep: 2 cases, 0 already done, 2 to run on threads"),

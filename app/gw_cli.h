@@ -109,9 +109,29 @@ int gw_cli_progress_report(void *ctx, long done, long total);
  * due ("PREFIXt = T ms of ~E ms expected (P%), X s elapsed, ~L s left"; past
  * t_expect "... (P%, t-max M ms), X s elapsed, at most ~L s left"), or, last 1,
  * the run's end at t ("... (P%): ended, X s elapsed"). Due: the first at
- * after_ms, then every max(every_ms, a twentieth of the time elapsed), so an
- * hours-long run says where it is without a line every few seconds. */
+ * after_ms, then every max(every_ms, a twentieth of the time elapsed) up to
+ * GW_CLI_PROGRESS_GAP_MAX_MS, so an hours-long run says where it is without a
+ * line every few seconds, nor goes silent for minutes. */
 void gw_cli_progress_time(gw_cli_progress *p, double t, double t_expect, double t_max, int last);
+/* A study's first progress line (falcon, wavespeed, softwall), ms after its
+ * start, and the shortest gap between two: as a single run's. */
+#define GW_CLI_STUDY_PROGRESS_MS 2000.0
+/* The longest gap between two lines of a run or a study (gw_cli_progress_time,
+ * gw_cli_progress_part), ms: a twentieth of the time elapsed, but a line at
+ * least every 30 s however long the run has lasted. */
+#define GW_CLI_PROGRESS_GAP_MAX_MS 30000.0
+/* The gap due after el_ms of run: max(every_ms, el_ms / 20), at most
+ * GW_CLI_PROGRESS_GAP_MAX_MS (or every_ms if that is longer). */
+double gw_cli_progress_gap(const gw_cli_progress *p, double el_ms);
+/* A study's progress within its collisions (gw_chain_watch_fn's done, total,
+ * part): "PREFIXk/n UNIT, P% of the work, E s elapsed, ~L s left", the header
+ * before the first, each line one write. Due as gw_cli_progress_time's: the
+ * first once every_ms has passed, then every gw_cli_progress_gap; last 1: the
+ * line now, at 100%. Not locked: the caller calls it one call at a time (the
+ * study's lock, then the main thread once the study has returned). */
+void gw_cli_progress_part(gw_cli_progress *p, long done, long total, double part, int last);
+/* gw_cli_progress_part as a study's gw_chain_watch_fn (ctx the display). */
+void gw_cli_progress_watch(void *ctx, long done, long total, double part);
 /* The unit a simulated length t (s) prints in, "s", "ms" or "us", and into
  * *scale that unit's count in 1 s: one choice for every progress line. */
 const char *gw_cli_time_unit(double t, double *scale);

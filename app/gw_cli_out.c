@@ -179,6 +179,41 @@ int gw_cli_progress_report(void *ctx, long done, long total)
     return 0;
 }
 
+double gw_cli_progress_gap(const gw_cli_progress *p, double el_ms)
+{
+    return fmin(fmax(p->every_ms, el_ms / 20.0), fmax(p->every_ms, GW_CLI_PROGRESS_GAP_MAX_MS));
+}
+
+void gw_cli_progress_part(gw_cli_progress *p, long done, long total, double part, int last)
+{
+    if (!p || p->quiet || total <= 0)
+        return;
+    const double now = gw_clock_ms(), el_ms = now - p->t0;
+    if (!last && now - p->last < gw_cli_progress_gap(p, el_ms))
+        return;
+    char line[512];
+    int len = 0;
+    if (p->header) /* one write with the line below: a thread's output never falls between them */
+        len = snprintf(line, sizeof line, "%s\n", p->header);
+    const double el = el_ms / 1e3;
+    part = last ? 1.0 : fmin(fmax(part, 0.0), 1.0);
+    if (len >= 0 && (size_t)len < sizeof line)
+        snprintf(line + len, sizeof line - (size_t)len,
+                 "%s%ld/%ld %s, %.1f%% of the work, %.1f s elapsed, ~%.1f s left\n", p->prefix, done, total,
+                 p->unit, 100.0 * part, el, part > 0 ? el / part * (1.0 - part) : 0.0);
+    /* one fputs of the whole line: stderr is unbuffered, and a line written in
+     * pieces could take another writer's text between them */
+    fputs(line, p->fp);
+    fflush(p->fp);
+    p->header = NULL;
+    p->last = now;
+}
+
+void gw_cli_progress_watch(void *ctx, long done, long total, double part)
+{
+    gw_cli_progress_part(ctx, done, total, part, 0);
+}
+
 const char *gw_cli_time_unit(double t, double *scale)
 {
     *scale = t >= 1.0 ? 1.0 : t >= 1e-3 ? 1e3 : 1e6;
@@ -192,7 +227,7 @@ void gw_cli_progress_time(gw_cli_progress *p, double t, double t_expect, double 
     const double now = gw_clock_ms(), el_ms = now - p->t0;
     if (p->after_ms > 0 && el_ms < p->after_ms)
         return;
-    if (!last && now - p->last < fmax(p->every_ms, el_ms / 20.0))
+    if (!last && now - p->last < gw_cli_progress_gap(p, el_ms))
         return;
     if (p->header) {
         fprintf(p->fp, "%s\n", p->header);

@@ -13,6 +13,7 @@
 #include <fcntl.h>
 #include <pthread.h>
 #include <signal.h>
+#include <stdatomic.h>
 #include <stdio.h>
 #include <sys/stat.h>
 #include <stdlib.h>
@@ -58,9 +59,40 @@ typedef struct sweep_run {
      * written (it holds every case). */
     long nfailed, first_failed;
     gw_err fail_err;
-    pthread_mutex_t lock; /* the journal: one row appended at a time */
+    pthread_mutex_t lock; /* the journal: one row appended at a time; the progress lines */
     gw_cli_progress prog;
+    atomic_long running;  /* cases under way (threads; under MPI handed out and not back) */
 } sweep_run;
+
+/* The sweep's sign of life between cases: a case may run for minutes (a layer
+ * impact in exact mode, a column of hundreds of beads), and the lines came
+ * only as cases ended. Due as the studies' (gw_cli_progress_gap: 2 s, then a
+ * twentieth of the time elapsed, at most 30 s), from the one display: with
+ * cases done the usual line (its rate and time left), before the first
+ * "sweep: 0/N cases, J under way, E s elapsed". Caller holds s->lock, or is
+ * the only thread (the MPI master). */
+static void sweep_tick(sweep_run *s)
+{
+    gw_cli_progress *p = &s->prog;
+    const double now = gw_clock_ms(), el_ms = now - p->t0;
+    if (p->quiet || now - p->last < gw_cli_progress_gap(p, el_ms))
+        return;
+    const long done = s->done + s->nfailed, running = atomic_load(&s->running);
+    if (done > 0) { /* due there too: at least every_ms since the last line */
+        gw_cli_progress_report(p, done, s->ntodo);
+        return;
+    }
+    char line[256];
+    if (p->before > 0)
+        snprintf(line, sizeof line, "%s0/%ld %s (%ld done before), %ld under way, %.1f s elapsed\n", p->prefix,
+                 s->ntodo, p->unit, p->before, running, el_ms / 1e3);
+    else
+        snprintf(line, sizeof line, "%s0/%ld %s, %ld under way, %.1f s elapsed\n", p->prefix, s->ntodo, p->unit,
+                 running, el_ms / 1e3);
+    fputs(line, p->fp);
+    fflush(p->fp);
+    p->last = now;
+}
 
 /* A case's own failure, after which the sweep goes on with the others (a bad
  * value, a file that cannot be read or no memory stop it). */
@@ -124,7 +156,9 @@ static int pool_case(void *ctx, long i, gw_err *err)
     char *row = malloc(ROW_MAX);
     if (!row)
         return gw_err_set(err, GW_ENOMEM, "case %ld: out of memory", s->todo[i]);
+    atomic_fetch_add(&s->running, 1);
     int rc = run_case(s, s->todo[i], row, err);
+    atomic_fetch_sub(&s->running, 1);
     if (rc == GW_OK || case_failure(rc)) {
         pthread_mutex_lock(&s->lock);
         if (rc == GW_OK)
@@ -143,15 +177,46 @@ static int pool_case(void *ctx, long i, gw_err *err)
 static int pool_progress(void *ctx, long done, long total)
 {
     sweep_run *s = ctx;
+    pthread_mutex_lock(&s->lock); /* the ticker's lines too */
     gw_cli_progress_report(&s->prog, done, total);
+    pthread_mutex_unlock(&s->lock);
     return stop_requested != 0;
+}
+
+/* The ticker thread of a threaded sweep: sweep_tick every 100 ms until the
+ * pool has returned. */
+typedef struct ticker {
+    sweep_run *s;
+    atomic_int stop;
+} ticker;
+
+static void *tick_loop(void *arg)
+{
+    ticker *t = arg;
+    while (!atomic_load(&t->stop)) {
+        nanosleep(&(struct timespec){.tv_sec = 0, .tv_nsec = 100000000L}, NULL);
+        pthread_mutex_lock(&t->s->lock);
+        if (!atomic_load(&t->stop))
+            sweep_tick(t->s);
+        pthread_mutex_unlock(&t->s->lock);
+    }
+    return NULL;
 }
 
 static void run_threads(sweep_run *s, long jobs)
 {
     gw_err err = {{0}};
+    ticker t = {.s = s};
+    atomic_init(&t.stop, 0);
+    pthread_t th;
+    /* no ticker (no thread to spare): the lines as cases end, as before */
+    const int ticking = !s->prog.quiet && pthread_create(&th, NULL, tick_loop, &t) == 0;
     int rc = stop_requested ? GW_ECANCELED
                             : gw_cases_run(s->ntodo, (int)jobs, pool_case, s, pool_progress, s, &err);
+    if (ticking) {
+        atomic_store(&t.stop, 1);
+        pthread_join(th, NULL);
+    }
     if (rc != GW_OK && rc != GW_ECANCELED) {
         s->failed = rc;
         s->err = err;
@@ -166,7 +231,7 @@ enum { TAG_READY = 1, TAG_ROW = 2, TAG_FAIL = 3, TAG_WORK = 4 };
  * table write, or on its next case, would spin at 100 % CPU and slow the ranks
  * sharing its core. Test for about 100 us (a reply to a finished case comes
  * within that), then sleep, 20 us at first and doubling to 1 ms. */
-static void mpi_idle_wait(MPI_Request *req, MPI_Status *st)
+static void mpi_idle_wait(MPI_Request *req, MPI_Status *st, sweep_run *ticks)
 {
     int flag = 0;
     double t0 = gw_clock_ms();
@@ -177,6 +242,8 @@ static void mpi_idle_wait(MPI_Request *req, MPI_Status *st)
         nanosleep(&(struct timespec){.tv_sec = 0, .tv_nsec = nap}, NULL);
         if (nap < 1000000)
             nap *= 2;
+        if (ticks) /* the master, waiting on its workers' cases: the sweep's sign of life */
+            sweep_tick(ticks);
     }
 }
 
@@ -191,7 +258,9 @@ static void mpi_master(sweep_run *s, int size)
          * core from the workers (bench/README_layer.md). */
         MPI_Request req;
         MPI_Irecv(buf, ROW_MAX + 16, MPI_CHAR, MPI_ANY_SOURCE, MPI_ANY_TAG, MPI_COMM_WORLD, &req);
-        mpi_idle_wait(&req, &st);
+        mpi_idle_wait(&req, &st, s);
+        if (st.MPI_TAG == TAG_ROW || st.MPI_TAG == TAG_FAIL)
+            atomic_fetch_sub(&s->running, 1);
         gw_err err = {{0}};
         if (st.MPI_TAG == TAG_ROW) {
             int rc = journal(s, buf, &err);
@@ -212,10 +281,12 @@ static void mpi_master(sweep_run *s, int size)
             gw_err_set(&s->err, s->failed, "%s", buf + 1);
         }
         long k = -1;
-        if (next < s->ntodo && !s->failed && !stop_requested)
+        if (next < s->ntodo && !s->failed && !stop_requested) {
             k = s->todo[next++];
-        else
+            atomic_fetch_add(&s->running, 1);
+        } else {
             active--;
+        }
         MPI_Send(&k, 1, MPI_LONG, st.MPI_SOURCE, TAG_WORK, MPI_COMM_WORLD);
     }
     free(buf);
@@ -230,7 +301,7 @@ static void mpi_worker(sweep_run *s)
         long k;
         MPI_Request req;
         MPI_Irecv(&k, 1, MPI_LONG, 0, TAG_WORK, MPI_COMM_WORLD, &req);
-        mpi_idle_wait(&req, MPI_STATUS_IGNORE);
+        mpi_idle_wait(&req, MPI_STATUS_IGNORE, NULL);
         if (k < 0 || !row)
             break;
         gw_err err = {{0}};
@@ -541,7 +612,7 @@ int gw_cmd_sweep(int argc, char **argv, const gw_sweep_model *const *models, int
     if (use_mpi) { /* the other ranks wait here, idle, while rank 0 checks the journal */
         MPI_Request req;
         MPI_Ibcast(&code, 1, MPI_INT, 0, MPI_COMM_WORLD, &req);
-        mpi_idle_wait(&req, MPI_STATUS_IGNORE);
+        mpi_idle_wait(&req, MPI_STATUS_IGNORE, NULL);
     }
 #endif
     if (code == 0) {
@@ -550,6 +621,7 @@ int gw_cmd_sweep(int argc, char **argv, const gw_sweep_model *const *models, int
         gw_cli_progress_init(&s.prog, "sweep: ", "cases", 2000);
         s.prog.before = s.ndone0;
         s.prog.quiet = quiet;
+        atomic_init(&s.running, 0);
         pthread_mutex_init(&s.lock, NULL);
         signal(SIGINT, on_signal);
         signal(SIGTERM, on_signal);
@@ -625,7 +697,7 @@ finish:
     if (use_mpi) { /* idle while rank 0 writes the table: MPI_Finalize's own wait spins */
         MPI_Request req;
         MPI_Ibarrier(MPI_COMM_WORLD, &req);
-        mpi_idle_wait(&req, MPI_STATUS_IGNORE);
+        mpi_idle_wait(&req, MPI_STATUS_IGNORE, NULL);
         MPI_Finalize();
     }
 #endif

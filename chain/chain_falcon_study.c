@@ -20,6 +20,7 @@
 
 #include "chain_setup_rows.h"
 #include "chain_model.h"
+#include "chain_watch.h"
 #include "gw_locale.h"
 
 int gw_chain_falcon_analyse(const gw_chain_params *p, double v, const gw_chain_result *res, int n_lo,
@@ -279,29 +280,53 @@ static int alloc_outcome(gw_chain_falcon_outcome *o, int nv, int n_lo, int nn, g
  * figures of the longest, N = 30, 0.8 ms trace at 0.3 m/s, 45 per force period;
  * maxima are events), else at o's dt_out. The beads' series are kept for N = 7
  * only (the bead table of long columns is large). */
-static int run_traces(gw_chain_falcon_outcome *out, const gw_chain_params *p0, const gw_chain_run_opts *o0,
-                      int n_hi, chain_dt_tally *dt_tally, gw_err *err)
+static const int trace_n[GW_CHAIN_FALCON_NTRACE] = {7, 15, 30};
+
+/* A trace's run options: o0 sampled as run_traces says. */
+static gw_chain_run_opts trace_opts(const gw_chain_falcon_outcome *out, const gw_chain_params *p,
+                                    const gw_chain_run_opts *o0)
 {
-    static const int ns[GW_CHAIN_FALCON_NTRACE] = {7, 15, 30};
+    gw_chain_run_opts o = *o0;
+    if (out->accuracy > 0)
+        o.dt_out = gw_chain_tau1(p->mass, p->kwall, p->v_imp) / 50;
+    return o;
+}
+
+/* The traces' runs to come (watch's plan), as run_traces runs them. */
+static void plan_traces(chain_watch *watch, const gw_chain_falcon_outcome *out, const gw_chain_params *p0,
+                        const gw_chain_run_opts *o0, int n_hi)
+{
     for (int k = 0; k < GW_CHAIN_FALCON_NTRACE; k++) {
-        if (ns[k] > n_hi)
+        if (trace_n[k] > n_hi)
+            continue;
+        gw_chain_params p = *p0;
+        p.n = trace_n[k];
+        p.v_imp = out->v_imp[0];
+        gw_chain_run_opts o = trace_opts(out, &p, o0);
+        chain_watch_plan(watch, &p, &o);
+    }
+}
+
+static int run_traces(gw_chain_falcon_outcome *out, const gw_chain_params *p0, const gw_chain_run_opts *o0,
+                      int n_hi, chain_dt_tally *dt_tally, chain_watch *watch, gw_err *err)
+{
+    for (int k = 0; k < GW_CHAIN_FALCON_NTRACE; k++) {
+        if (trace_n[k] > n_hi)
             continue;
         gw_chain_falcon_trace *t = &out->trace[out->ntrace];
         gw_chain_params p = *p0;
-        p.n = ns[k];
+        p.n = trace_n[k];
         p.v_imp = out->v_imp[0];
         gw_chain *c = NULL;
         int rc = gw_chain_create(&p, &c, err);
         if (rc != GW_OK)
             return rc;
         gw_chain_trace_init(&t->tr, p.n);
-        gw_chain_run_opts o = *o0;
-        if (out->accuracy > 0)
-            o.dt_out = gw_chain_tau1(p.mass, p.kwall, p.v_imp) / 50;
+        gw_chain_run_opts o = trace_opts(out, &p, o0);
         o.sample = gw_chain_trace_sample;
         o.sample_ctx = &t->tr;
         gw_chain_result r;
-        rc = gw_chain_collide(c, &o, &r, err);
+        rc = chain_watch_collide(watch, c, &p, &o, &r, err);
         t->n = p.n;
         t->v_imp = p.v_imp;
         t->t_max = r.run_t_max;
@@ -420,8 +445,27 @@ int gw_chain_falcon_speeds(const double *vimp, int n_vimp, const double *heights
     return GW_OK;
 }
 
+static int falcon_run(const gw_chain_falcon_setup *s, gw_progress_fn progress, void *pctx, chain_watch *watch,
+                      gw_chain_falcon_outcome *out, gw_err *err);
+
 int gw_chain_falcon_run(const gw_chain_falcon_setup *s, gw_progress_fn progress, void *pctx,
                         gw_chain_falcon_outcome *out, gw_err *err)
+{
+    return gw_chain_falcon_run_watch(s, progress, pctx, NULL, NULL, out, err);
+}
+
+int gw_chain_falcon_run_watch(const gw_chain_falcon_setup *s, gw_progress_fn progress, void *pctx,
+                              gw_chain_watch_fn watch, void *wctx, gw_chain_falcon_outcome *out, gw_err *err)
+{
+    chain_watch w;
+    chain_watch_init(&w, watch, wctx);
+    int rc = falcon_run(s, progress, pctx, &w, out, err);
+    chain_watch_destroy(&w);
+    return rc;
+}
+
+static int falcon_run(const gw_chain_falcon_setup *s, gw_progress_fn progress, void *pctx, chain_watch *watch,
+                      gw_chain_falcon_outcome *out, gw_err *err)
 {
     if (!s || !out)
         return gw_err_set(err, GW_EINVAL, "gw_chain_falcon_run: %s is NULL", !s ? "setup" : "out");
@@ -454,9 +498,13 @@ int gw_chain_falcon_run(const gw_chain_falcon_setup *s, gw_progress_fn progress,
     if (rc == GW_OK)
         rc = pick_solver(s, &r, vmax, &out->accuracy, err);
     double t0 = gw_clock_ms();
-    if (rc == GW_OK)
-        rc = gw_chain_sweep_n_progress(&r.params, &r.run, out->v_imp, nv, (int)s->n[0], (int)s->n[1],
-                                       (int)s->jobs, progress, pctx, res, err);
+    if (rc == GW_OK) { /* the whole study's work first: the sweep's, then the traces' */
+        chain_watch_plan_sweep(watch, &r.params, &r.run, out->v_imp, nv, (int)s->n[0], (int)s->n[1]);
+        if (s->traces)
+            plan_traces(watch, out, &r.params, &r.run, (int)s->n[1]);
+        rc = chain_sweep_watch(&r.params, &r.run, out->v_imp, nv, (int)s->n[0], (int)s->n[1], (int)s->jobs,
+                               progress, pctx, watch, res, err);
+    }
     out->wall_time_s = (gw_clock_ms() - t0) / 1e3;
     if (rc == GW_OK && !(out->held = calloc((size_t)out->ncase, sizeof *out->held)))
         rc = gw_err_set(err, GW_ENOMEM, "falcon: out of memory");
@@ -548,7 +596,7 @@ int gw_chain_falcon_run(const gw_chain_falcon_setup *s, gw_progress_fn progress,
     if (rc == GW_OK)
         chain_dt_tally_results(&dt_tally, res, out->ncase);
     if (rc == GW_OK && s->traces &&
-        (rc = run_traces(out, &r.params, &r.run, (int)s->n[1], &dt_tally, err)) != GW_OK)
+        (rc = run_traces(out, &r.params, &r.run, (int)s->n[1], &dt_tally, watch, err)) != GW_OK)
         out->trace_failed = 1;
     if (rc == GW_OK && (rc = chain_dt_tally_warnings(&dt_tally, "--dt", "collisions", &out->warnings)) != GW_OK)
         rc = gw_err_set(err, rc, "falcon: out of memory");

@@ -20,6 +20,7 @@
 
 #include "chain_setup_rows.h"
 #include "chain_model.h"
+#include "chain_watch.h"
 #include "gw_locale.h"
 
 #define SATURATION_RUN 6
@@ -203,15 +204,21 @@ static sw_result analyse(const gw_chain_result *r, int n_lo, int n_hi, double to
 
 /* Rigid-wall T_q of the beads at v: slope of tau_N over N = 1..20, over the
  * columns not held by gravity (*held of the 20; NaN with fewer than two). */
-static int measure_tq(const gw_chain_resolved *rs, double v, int jobs, double *t_q, int *held,
-                      chain_dt_tally *dt_tally, gw_err *err)
+static gw_chain_params rigid_params(const gw_chain_resolved *rs)
 {
     gw_chain_params p = rs->params;
     const gw_material *steel = gw_material_find("steel");
     p.kwall = gw_hertz_coefficient(p.radius, steel, INFINITY, steel);
     memset(&p.wall, 0, sizeof p.wall); /* the bare sensor */
+    return p;
+}
+
+static int measure_tq(const gw_chain_resolved *rs, double v, int jobs, double *t_q, int *held,
+                      chain_dt_tally *dt_tally, chain_watch *watch, gw_err *err)
+{
+    gw_chain_params p = rigid_params(rs);
     gw_chain_result r[20];
-    int rc = gw_chain_sweep_n_progress(&p, &rs->run, &v, 1, 1, 20, jobs, NULL, NULL, r, err);
+    int rc = chain_sweep_watch(&p, &rs->run, &v, 1, 1, 20, jobs, NULL, NULL, watch, r, err);
     if (rc == GW_OK) /* the steel wall's contact is the stiffest: its dt-max the shortest */
         chain_dt_tally_results(dt_tally, r, 20);
     double x[20], y[20];
@@ -411,8 +418,28 @@ int gw_chain_softwall_sheet_material(const gw_chain_softwall_outcome *o, int w, 
     return GW_OK;
 }
 
+static int sw_run(const gw_chain_softwall_setup *s, gw_progress_fn progress, void *pctx, chain_watch *watch,
+                  gw_chain_softwall_outcome *out, gw_err *err);
+
 int gw_chain_softwall_run(const gw_chain_softwall_setup *s, gw_progress_fn progress, void *pctx,
                           gw_chain_softwall_outcome *out, gw_err *err)
+{
+    return gw_chain_softwall_run_watch(s, progress, pctx, NULL, NULL, out, err);
+}
+
+int gw_chain_softwall_run_watch(const gw_chain_softwall_setup *s, gw_progress_fn progress, void *pctx,
+                                gw_chain_watch_fn watch, void *wctx, gw_chain_softwall_outcome *out,
+                                gw_err *err)
+{
+    chain_watch w;
+    chain_watch_init(&w, watch, wctx);
+    int rc = sw_run(s, progress, pctx, &w, out, err);
+    chain_watch_destroy(&w);
+    return rc;
+}
+
+static int sw_run(const gw_chain_softwall_setup *s, gw_progress_fn progress, void *pctx, chain_watch *watch,
+                  gw_chain_softwall_outcome *out, gw_err *err)
 {
     if (!s || !out)
         return gw_err_set(err, GW_EINVAL, "gw_chain_softwall_run: %s is NULL", !s ? "setup" : "out");
@@ -467,22 +494,35 @@ int gw_chain_softwall_run(const gw_chain_softwall_setup *s, gw_progress_fn progr
     gw_chain_result *res = calloc((size_t)nw * (size_t)per, sizeof *res);
     sw_result *sr = calloc((size_t)nw, sizeof *sr);
     gw_layer_law **lay = calloc((size_t)nw, sizeof *lay);
+    gw_chain_params *wall = calloc((size_t)nw, sizeof *wall); /* each wall's column */
     double t0 = gw_clock_ms();
     chain_dt_tally dt_tally = {0}; /* a --dt above the step taken: the rigid wall's 20 columns and the walls' */
-    rc = res && sr && lay ? measure_tq(&rs, vimp, (int)s->jobs, &out->t_q_rigid, &out->n_held_rigid, &dt_tally, err)
-                          : gw_err_set(err, GW_ENOMEM, "softwall: out of memory");
+    rc = res && sr && lay && wall ? GW_OK : gw_err_set(err, GW_ENOMEM, "softwall: out of memory");
     char name[32];
     const gw_material *bm = gw_material_find(
         gw_param_format(gw_param_find(sw_params, "material"), s, name, sizeof name) > 0 ? name : "steel");
     const gw_material *wm = gw_material_find(
         gw_param_format(gw_param_find(sw_params, "wall-material"), s, name, sizeof name) > 0 ? name : "steel");
+    /* every wall before any run: the study's whole work is planned first (the
+     * rigid wall's 20 columns, then each wall's), and a sheet refused is so
+     * before minutes of the walls before it */
     for (int w = 0; rc == GW_OK && w < nw; w++) {
-        gw_chain_params q = rs.params;
-        if (s->sheets && (rc = gw_sheet_apply(gw_sheet_get(w), rs.law, -1, -1, bm, wm, &q, &lay[w], err)) != GW_OK)
-            break;
+        wall[w] = rs.params;
+        if (s->sheets)
+            rc = gw_sheet_apply(gw_sheet_get(w), rs.law, -1, -1, bm, wm, &wall[w], &lay[w], err);
+    }
+    if (rc == GW_OK) {
+        gw_chain_params rigid = rigid_params(&rs);
+        chain_watch_plan_sweep(watch, &rigid, &rs.run, &vimp, 1, 1, 20);
+        for (int w = 0; w < nw; w++)
+            chain_watch_plan_sweep(watch, &wall[w], &rs.run, &vimp, 1, (int)a, (int)b);
+        rc = measure_tq(&rs, vimp, (int)s->jobs, &out->t_q_rigid, &out->n_held_rigid, &dt_tally, watch, err);
+    }
+    for (int w = 0; rc == GW_OK && w < nw; w++) {
+        const gw_chain_params q = wall[w];
         out->kwall[w] = q.kwall;
-        rc = gw_chain_sweep_n_progress(&q, &rs.run, &vimp, 1, (int)a, (int)b, (int)s->jobs, NULL, NULL,
-                                       res + (size_t)w * per, err);
+        rc = chain_sweep_watch(&q, &rs.run, &vimp, 1, (int)a, (int)b, (int)s->jobs, NULL, NULL, watch,
+                               res + (size_t)w * per, err);
         if (rc == GW_OK) {
             sr[w] = analyse(res + (size_t)w * per, (int)a, (int)b, s->tol, out->t_q_rigid);
             chain_dt_tally_results(&dt_tally, res + (size_t)w * per, per);
@@ -513,6 +553,7 @@ int gw_chain_softwall_run(const gw_chain_softwall_setup *s, gw_progress_fn progr
     for (int w = 0; lay && w < nw; w++)
         gw_layer_law_free(lay[w]);
     free(lay);
+    free(wall);
     gw_chain_resolved_free(&rs);
     return rc;
 }

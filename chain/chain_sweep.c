@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "chain_model.h"
+#include "chain_watch.h"
 #include "gw_chain.h"
 #include "gw_pool.h"
 
@@ -94,6 +95,7 @@ typedef struct sweep {
     const double *v;
     int n_lo, per_v;
     gw_chain_result *res;
+    chain_watch *watch; /* the study's, or NULL */
 } sweep;
 
 static int one(void *arg, long k, gw_err *err)
@@ -106,16 +108,16 @@ static int one(void *arg, long k, gw_err *err)
     gw_err e = {{0}};
     int rc = gw_chain_create(&p, &c, &e);
     if (rc == GW_OK)
-        rc = gw_chain_collide(c, w->o, &w->res[k], &e);
+        rc = chain_watch_collide(w->watch, c, &p, w->o, &w->res[k], &e);
     gw_chain_free(c);
     if (rc != GW_OK)
         gw_err_set(err, rc, "N = %d, v_imp = %g m/s: %s", p.n, p.v_imp, e.msg);
     return rc;
 }
 
-int gw_chain_sweep_n_progress(const gw_chain_params *tmpl, const gw_chain_run_opts *o, const double *v,
-                              int nv, int n_lo, int n_hi, int jobs, gw_progress_fn progress, void *pctx,
-                              gw_chain_result *res, gw_err *err)
+int chain_sweep_watch(const gw_chain_params *tmpl, const gw_chain_run_opts *o, const double *v, int nv, int n_lo,
+                      int n_hi, int jobs, gw_progress_fn progress, void *pctx, chain_watch *watch,
+                      gw_chain_result *res, gw_err *err)
 {
     if (!tmpl || !o || !v || !res)
         return gw_err_set(err, GW_EINVAL, "gw_chain_sweep_n: %s is NULL",
@@ -123,7 +125,7 @@ int gw_chain_sweep_n_progress(const gw_chain_params *tmpl, const gw_chain_run_op
     if (nv < 1 || n_lo < 1 || n_hi < n_lo)
         return gw_err_set(err, GW_EINVAL, "gw_chain_sweep_n: empty grid (nv = %d speeds, N = n_lo %d .. n_hi %d)",
                           nv, n_lo, n_hi);
-    sweep w = {tmpl, o, v, n_lo, n_hi - n_lo + 1, res};
+    sweep w = {tmpl, o, v, n_lo, n_hi - n_lo + 1, res, watch};
     long ncase = (long)nv * w.per_v;
     memset(res, 0, (size_t)ncase * sizeof *res);
     /* the largest column's bounds (steps, memory, samples grow with n) at each
@@ -141,6 +143,13 @@ int gw_chain_sweep_n_progress(const gw_chain_params *tmpl, const gw_chain_run_op
     if (rc != GW_OK)
         return rc;
     return gw_cases_run(ncase, jobs, one, &w, progress, pctx, err);
+}
+
+int gw_chain_sweep_n_progress(const gw_chain_params *tmpl, const gw_chain_run_opts *o, const double *v,
+                              int nv, int n_lo, int n_hi, int jobs, gw_progress_fn progress, void *pctx,
+                              gw_chain_result *res, gw_err *err)
+{
+    return chain_sweep_watch(tmpl, o, v, nv, n_lo, n_hi, jobs, progress, pctx, NULL, res, err);
 }
 
 int gw_chain_sweep_n(const gw_chain_params *tmpl, const gw_chain_run_opts *o, const double *v, int nv,

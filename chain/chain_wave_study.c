@@ -25,6 +25,7 @@
 
 #include "chain_setup_rows.h"
 #include "chain_model.h"
+#include "chain_watch.h"
 #include "gw_locale.h"
 
 /* ---- the tables of the inputs ---- */
@@ -159,22 +160,29 @@ static void power_fit(const double *v, const double *s, int n, double scale, dou
  * every contact 2..N-2 by then: first arrivals, which nothing after the stop
  * changes. Otherwise the contacts it had not reached might still be reached
  * in the column's next impact: the speed is undecided (NaN), not a failure. */
-static int front_speed(const gw_chain_params *p, const gw_chain_run_opts *run, double frac, double *speed,
-                       int *held, chain_dt_tally *dt_tally, gw_err *err)
+/* The front column's run options: run with the threshold at frac of F_max(1). */
+static gw_chain_run_opts front_opts(const gw_chain_params *p, const gw_chain_run_opts *run, double frac)
 {
-    gw_chain *c = NULL;
     gw_chain_run_opts o = *run;
     o.front_threshold = frac * gw_chain_fmax1(p->mass, p->kwall, p->v_imp);
     /* the front times are interpolated between samples: at most tau_1/200 apart
      * whatever the study's dt-out (--dt-out 1e-3 moved v_front by 1.1 %) */
     double fine = gw_chain_tau1(p->mass, p->kwall, p->v_imp) / 200;
     o.dt_out = o.dt_out > 0 ? fmin(o.dt_out, fine) : fine;
+    return o;
+}
+
+static int front_speed(const gw_chain_params *p, const gw_chain_run_opts *run, double frac, double *speed,
+                       int *held, chain_dt_tally *dt_tally, chain_watch *watch, gw_err *err)
+{
+    gw_chain *c = NULL;
+    gw_chain_run_opts o = front_opts(p, run, frac);
     gw_chain_result r;
     memset(&r, 0, sizeof r);
     *speed = NAN;
     int rc = gw_chain_create(p, &c, err);
     if (rc == GW_OK)
-        rc = gw_chain_collide(c, &o, &r, err);
+        rc = chain_watch_collide(watch, c, p, &o, &r, err);
     *held = rc == GW_OK && chain_result_held(&r);
     if (rc == GW_OK) /* its finer sampling may cut rk4's step below a --dt the columns took */
         chain_dt_tally_add(dt_tally, r.run_dt_given, r.run_dt, r.run_dt_max);
@@ -211,7 +219,7 @@ static int front_speed(const gw_chain_params *p, const gw_chain_run_opts *run, d
 /* tau_N line, period, mean wall force and the three speeds at velocity iv. */
 static int ws_velocity(const gw_chain_params *p, const gw_chain_run_opts *run, const gw_chain_result *rv,
                        int a, int per_v, double frac, int iv, gw_chain_wavespeed_outcome *o,
-                       chain_dt_tally *dt_tally, gw_err *err)
+                       chain_dt_tally *dt_tally, chain_watch *watch, gw_err *err)
 {
     double *x = malloc(2 * (size_t)per_v * sizeof *x);
     if (!x)
@@ -247,7 +255,7 @@ static int ws_velocity(const gw_chain_params *p, const gw_chain_run_opts *run, c
     o->v_group_front[iv] = o->v_group[iv] / sqrt(1.5);
     gw_chain_params q = *p;
     q.v_imp = o->v_imp[iv];
-    int rc = front_speed(&q, run, frac, &o->v_front[iv], &o->front_held[iv], dt_tally, err);
+    int rc = front_speed(&q, run, frac, &o->v_front[iv], &o->front_held[iv], dt_tally, watch, err);
     if (rc != GW_OK) {
         char tmp[sizeof err->msg];
         gw_snprintf(tmp, sizeof tmp, "%s", err->msg);
@@ -335,8 +343,28 @@ static int ws_fits(const gw_chain_params *p, gw_chain_wavespeed_outcome *o, int 
     return GW_OK;
 }
 
+static int ws_run(const gw_chain_wavespeed_setup *s, gw_progress_fn progress, void *pctx, chain_watch *watch,
+                  gw_chain_wavespeed_outcome *out, gw_err *err);
+
 int gw_chain_wavespeed_run(const gw_chain_wavespeed_setup *s, gw_progress_fn progress, void *pctx,
                            gw_chain_wavespeed_outcome *out, gw_err *err)
+{
+    return gw_chain_wavespeed_run_watch(s, progress, pctx, NULL, NULL, out, err);
+}
+
+int gw_chain_wavespeed_run_watch(const gw_chain_wavespeed_setup *s, gw_progress_fn progress, void *pctx,
+                                 gw_chain_watch_fn watch, void *wctx, gw_chain_wavespeed_outcome *out,
+                                 gw_err *err)
+{
+    chain_watch w;
+    chain_watch_init(&w, watch, wctx);
+    int rc = ws_run(s, progress, pctx, &w, out, err);
+    chain_watch_destroy(&w);
+    return rc;
+}
+
+static int ws_run(const gw_chain_wavespeed_setup *s, gw_progress_fn progress, void *pctx, chain_watch *watch,
+                  gw_chain_wavespeed_outcome *out, gw_err *err)
 {
     if (!s || !out)
         return gw_err_set(err, GW_EINVAL, "gw_chain_wavespeed_run: %s is NULL", !s ? "setup" : "out");
@@ -387,9 +415,17 @@ int gw_chain_wavespeed_run(const gw_chain_wavespeed_setup *s, gw_progress_fn pro
         out->alpha = r.params.alpha;
     }
     double t0 = gw_clock_ms();
-    if (rc == GW_OK)
-        rc = gw_chain_sweep_n_progress(&r.params, &r.run, out->v_imp, nv, (int)a, (int)b, (int)s->jobs, progress,
-                                       pctx, res, err);
+    if (rc == GW_OK) { /* the whole study's work first: the tau_N sweep's, then each velocity's front column */
+        chain_watch_plan_sweep(watch, &r.params, &r.run, out->v_imp, nv, (int)a, (int)b);
+        for (int iv = 0; iv < nv; iv++) {
+            gw_chain_params q = r.params;
+            q.v_imp = out->v_imp[iv];
+            gw_chain_run_opts fo = front_opts(&q, &r.run, s->threshold);
+            chain_watch_plan(watch, &q, &fo);
+        }
+        rc = chain_sweep_watch(&r.params, &r.run, out->v_imp, nv, (int)a, (int)b, (int)s->jobs, progress, pctx,
+                               watch, res, err);
+    }
     int held = 0; /* of the tau_N sweep (out->n_held counts the front columns too) */
     for (int i = 0; rc == GW_OK && i < nv * per_v; i++) {
         out->unfinished += !res[i].converged;
@@ -405,7 +441,7 @@ int gw_chain_wavespeed_run(const gw_chain_wavespeed_setup *s, gw_progress_fn pro
         chain_dt_tally_results(&dt_tally, res, out->ncase);
     for (int iv = 0; rc == GW_OK && iv < nv; iv++)
         rc = ws_velocity(&r.params, &r.run, &res[iv * per_v], (int)a, per_v, s->threshold, iv, out, &dt_tally,
-                         err);
+                         watch, err);
     out->wall_time_s = (gw_clock_ms() - t0) / 1e3;
     int fits_undecided = 0;
     if (rc == GW_OK && ws_fits(&r.params, out, &fits_undecided) != GW_OK)

@@ -201,6 +201,19 @@ typedef struct gw_chain_falcon_fit {
 int gw_chain_falcon_analyse(const gw_chain_params *p, double v, const gw_chain_result *res, int n_lo,
                              int n_hi, gw_chain_falcon_fit *a);
 
+/* A study's progress within its collisions (the gw_chain_*_run_watch calls),
+ * for a display that must speak however long one collision runs: watch(ctx,
+ * done, total, part) after every output sample of every collision under way
+ * and as each ends, one call at a time (under the study's lock), from the
+ * thread running that collision. done and total count the study's
+ * collisions (its sweep and its own runs: wavespeed's front columns, falcon's
+ * traces, softwall's rigid wall); part (0..1) is the share of the study's
+ * expected work done, each collision weighed by its expected steps and
+ * samples times its beads and counted under way as t / t_expect of it (whole past t_expect).
+ * Called often (every sample): it must return quickly and cannot stop the
+ * study (the gw_progress_fn does, per collision). */
+typedef void (*gw_chain_watch_fn)(void *ctx, long done, long total, double part);
+
 /* The inputs of `granwave falcon`: the column (its model and solver rows; its n,
  * vimp and trace are not used) and the study's own. */
 typedef struct gw_chain_falcon_setup {
@@ -292,6 +305,9 @@ const gw_param *gw_chain_falcon_outcome_fields(void);
  * GW_ECANCELED, GW_ENOMEM. */
 int gw_chain_falcon_run(const gw_chain_falcon_setup *s, gw_progress_fn progress, void *pctx,
                         gw_chain_falcon_outcome *out, gw_err *err);
+/* The same with watch(wctx, ...) (may be NULL) within the collisions. */
+int gw_chain_falcon_run_watch(const gw_chain_falcon_setup *s, gw_progress_fn progress, void *pctx,
+                              gw_chain_watch_fn watch, void *wctx, gw_chain_falcon_outcome *out, gw_err *err);
 /* The column sizes a..b of the falcon study: its product at each velocity is
  * the line tau_N = T_q (N - 1) + tau_1 over N (T_q, the wave speed 4R/T_q),
  * which one size does not give (--n 1:1 printed T_q and the speed as nan, exit
@@ -368,6 +384,10 @@ const gw_param *gw_chain_wavespeed_outcome_fields(void);
 /* progress per collision of the tau_N sweep (may be NULL). */
 int gw_chain_wavespeed_run(const gw_chain_wavespeed_setup *s, gw_progress_fn progress, void *pctx,
                            gw_chain_wavespeed_outcome *out, gw_err *err);
+/* The same with watch(wctx, ...) (may be NULL) within the collisions. */
+int gw_chain_wavespeed_run_watch(const gw_chain_wavespeed_setup *s, gw_progress_fn progress, void *pctx,
+                                 gw_chain_watch_fn watch, void *wctx, gw_chain_wavespeed_outcome *out,
+                                 gw_err *err);
 void gw_chain_wavespeed_outcome_free(gw_chain_wavespeed_outcome *out);
 
 /* Columns on a soft wall (physics.md 1.3): F_max(N), tau_max(N), the saturation
@@ -434,6 +454,10 @@ const gw_param *gw_chain_softwall_outcome_fields(void);
 /* progress per wall (may be NULL). */
 int gw_chain_softwall_run(const gw_chain_softwall_setup *s, gw_progress_fn progress, void *pctx,
                           gw_chain_softwall_outcome *out, gw_err *err);
+/* The same with watch(wctx, ...) (may be NULL) within the collisions. */
+int gw_chain_softwall_run_watch(const gw_chain_softwall_setup *s, gw_progress_fn progress, void *pctx,
+                                gw_chain_watch_fn watch, void *wctx, gw_chain_softwall_outcome *out,
+                                gw_err *err);
 void gw_chain_softwall_outcome_free(gw_chain_softwall_outcome *out);
 /* The longest material label of one sheet, its NUL included. */
 #define GW_SOFTWALL_LABEL_MAX 64

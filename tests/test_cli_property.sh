@@ -146,12 +146,13 @@ in_range() {
         exit 0 }'
 }
 
-# the table's input rows and the --help flags are the same set (json, out aside;
-# layer-impact's snapshots is a library row: the command writes its snapshots to --out)
+# the table's input rows and the --help flags are the same set (json, out and
+# quiet, the program's display, aside; layer-impact's snapshots is a library
+# row: the command writes its snapshots to --out)
 same_flags() { # cmd
     local a b
     a=$("$ROWS" "$1" | awk '{print $2}' | grep -vxE 'out|json|snapshots' | sort)
-    b=$("$GW" "$1" --help | awk '/^  --/ {sub(/^--/, "", $1); print $1}' | grep -vxE 'out|json|help' | sort)
+    b=$("$GW" "$1" --help | awk '/^  --/ {sub(/^--/, "", $1); print $1}' | grep -vxE 'out|json|help|quiet' | sort)
     if [ "$a" = "$b" ]; then
         echo "PASS: $1: the --help flags are the table's rows ($(echo "$a" | wc -l))"
     else

@@ -266,17 +266,26 @@ int gw_cmd_falcon(int argc, char **argv)
         goto out;
     }
     int ncase = nv * (f.n_hi - f.n_lo + 1);
+    /* progress within the collisions (the study's watch): the first line at
+     * 2 s however long the first collision, then at a bounded interval, the
+     * last when the study ends; --quiet: none */
     gw_cli_progress prog;
-    gw_cli_progress_init(&prog, "  ", "collisions", 0);
-    char header[128]; /* with the first progress line: after the study's checks */
-    snprintf(header, sizeof header, "granwave falcon: %d collisions (N = %d..%d, %d velocities)", ncase, f.n_lo,
-             f.n_hi, nv);
+    gw_cli_progress_init(&prog, "  ", "collisions", GW_CLI_STUDY_PROGRESS_MS);
+    prog.quiet = quiet;
+    int ntrace = f.c.out ? (f.n_hi >= 30) + (f.n_hi >= 15) + (f.n_hi >= 7) : 0; /* run_traces' N = 7, 15, 30 */
+    char header[160]; /* with the first progress line: after the study's checks */
+    snprintf(header, sizeof header, "granwave falcon: %d collisions (N = %d..%d, %d velocities%s)", ncase + ntrace,
+             f.n_lo, f.n_hi, nv, ntrace == 0 ? "" : ntrace == 1 ? ", and a trace" : ntrace == 2 ? ", and 2 traces"
+                                                                                             : ", and 3 traces");
     prog.header = header;
     /* the study: the library's, from the flags given (its rows are the flags) */
     int rc = gw_cli_study_setup(rows, &fs, opts, argc, argv, "falcon", &err);
     if (rc == GW_OK) {
         fs.traces = f.c.out != NULL;
-        rc = gw_chain_falcon_run(&fs, quiet ? NULL : gw_cli_progress_report, &prog, &f.o, &err);
+        gw_chain_watch_fn watch = quiet ? NULL : gw_cli_progress_watch; /* none: no lock at every sample */
+        rc = gw_chain_falcon_run_watch(&fs, NULL, NULL, watch, &prog, &f.o, &err);
+        if (rc == GW_OK)
+            gw_cli_progress_part(&prog, ncase + ntrace, ncase + ntrace, 1.0, 1);
     }
     if (rc != GW_OK && !f.o.trace_failed) {
         if (rc == GW_EINVAL) { /* "NAME: ..." of an option -> "falcon --NAME: ...", as the other studies */

@@ -126,16 +126,19 @@ int gw_cmd_softwall(int argc, char **argv)
     gw_chain_softwall_outcome so;
     memset(&so, 0, sizeof so);
     int rc = gw_cli_study_setup(gw_chain_softwall_setup_params(), &ss, opts, argc, argv, "softwall", &err);
-    /* progress in walls, through the display of falcon, wavespeed and sweep: a
-     * header line once, then whole lines on stderr (--quiet: none) */
+    /* progress within the collisions, as falcon's: a header line once, then
+     * whole lines on stderr, the first at 2 s, the last at the end (--quiet:
+     * none); the collisions are the rigid wall's 20 (T_q) and every wall's */
     gw_cli_progress prog;
-    gw_cli_progress_init(&prog, "  ", "walls", 0);
-    char header[128];
-    snprintf(header, sizeof header, "granwave softwall: N = %ld..%ld on %s", a, b,
-             use_sheets ? "every sheet of Table 2 and the rigid wall" : "one wall");
+    gw_cli_progress_init(&prog, "  ", "collisions", GW_CLI_STUDY_PROGRESS_MS);
+    prog.quiet = quiet;
+    char header[160];
+    snprintf(header, sizeof header, "granwave softwall: N = %ld..%ld on %s (and N = 1..20 on the rigid wall for T_q)",
+             a, b, use_sheets ? "every sheet of Table 2 and the rigid wall" : "one wall");
     prog.header = header;
-    if (rc == GW_OK)
-        rc = gw_chain_softwall_run(&ss, quiet ? NULL : gw_cli_progress_report, &prog, &so, &err);
+    gw_chain_watch_fn watch = quiet ? NULL : gw_cli_progress_watch; /* none: no lock at every sample */
+    if (rc == GW_OK && (rc = gw_chain_softwall_run_watch(&ss, NULL, NULL, watch, &prog, &so, &err)) == GW_OK)
+        gw_cli_progress_part(&prog, 20 + (long)so.nw * so.nn, 20 + (long)so.nw * so.nn, 1.0, 1);
     int nw = so.nw, ns = so.nn, per = so.nn, code = 0;
     double kc = so.k_c, t_q = so.t_q_rigid, wall_s = so.wall_time_s;
     const double *kw = so.kwall;

@@ -95,14 +95,19 @@ int gw_cmd_wavespeed(int argc, char **argv)
     }
     gw_chain_wavespeed_outcome wo;
     memset(&wo, 0, sizeof wo);
+    /* progress within the collisions, as falcon's (--quiet: none) */
     gw_cli_progress prog;
-    gw_cli_progress_init(&prog, "  ", "collisions", 0);
+    gw_cli_progress_init(&prog, "  ", "collisions", GW_CLI_STUDY_PROGRESS_MS);
+    prog.quiet = quiet;
     int rc = gw_cli_study_setup(gw_chain_wavespeed_setup_params(), &ws, opts, argc, argv, "wavespeed", &err);
-    char header[96]; /* with the first progress line: after the study's checks */
-    snprintf(header, sizeof header, "granwave wavespeed: %d collisions", nv * (int)(b - a + 1));
+    const int ncoll = nv * (int)(b - a + 2); /* the tau_N sweep's and a front column per velocity */
+    char header[160]; /* with the first progress line: after the study's checks */
+    snprintf(header, sizeof header, "granwave wavespeed: %d collisions (N = %ld..%ld and the front's N = %ld at %d "
+             "velocities)", ncoll, a, b, b, nv);
     prog.header = header;
-    if (rc == GW_OK)
-        rc = gw_chain_wavespeed_run(&ws, quiet ? NULL : gw_cli_progress_report, &prog, &wo, &err);
+    gw_chain_watch_fn watch = quiet ? NULL : gw_cli_progress_watch; /* none: no lock at every sample */
+    if (rc == GW_OK && (rc = gw_chain_wavespeed_run_watch(&ws, NULL, NULL, watch, &prog, &wo, &err)) == GW_OK)
+        gw_cli_progress_part(&prog, ncoll, ncoll, 1.0, 1);
     if (rc != GW_OK) {
         if (strncmp(err.msg, "wavespeed", 9) != 0)
             gw_cli_study_error(gw_chain_wavespeed_setup_params(), "wavespeed", rc, &err);

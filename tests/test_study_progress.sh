@@ -1,0 +1,199 @@
+#!/bin/bash
+# test_study_progress.sh GRANWAVE SRCDIR: the studies on many collisions
+# (falcon, wavespeed, softwall) report their progress within the collisions,
+# by the clock (issue 18). A falcon study printed its first line after a tenth
+# of its collisions (33.7 s into `falcon --n 1:100` on a sensor body),
+# wavespeed likewise, softwall after each wall: a study of a few long
+# collisions said nothing for minutes.
+#  - long studies (columns of 300 and 400 beads, several seconds each; falcon
+#    and wavespeed on 2 and 3 threads): a header line, then whole lines
+#    "  k/n collisions, P% of the work, E s elapsed, ~L s left", the first
+#    within 6 s of the start (stamped here as each line arrives on the pipe)
+#    and before any collision has ended (k = 0, P > 0), the next ones at most
+#    4.5 s apart (due every 2 s), P and k never decreasing, n the study's
+#    collisions (wavespeed's front columns and softwall's 20 rigid-wall ones
+#    counted); nothing else on stderr. Each is stopped once it has printed
+#    three lines (12 s without them is a failure);
+#  - a sweep of two such columns (chain, n = 400, 401, 2 threads): after its
+#    header, lines "sweep: 0/2 cases, J under way, E s elapsed" within 6 s
+#    and at most 4.5 s apart, where it said nothing until a case ended;
+#  - layer-make --n 300 (16 s on a loaded machine) in a pipe: its line
+#    within 6 s, where it spoke on a terminal only;
+#  - --quiet: nothing on stderr over the same time;
+#  - a study that lasts 2.5 s or more (falcon --n 140:141) ends with the last
+#    line "n/n collisions, 100.0% of the work", and its stdout --json parses;
+#  - short studies (under 1.9 s): the header and the last line only, stdout's
+#    JSON that of --quiet but for the wall time, and nothing with --quiet.
+# About 15 s (the three long studies at once, then falcon --n 140:141).
+# shellcheck source=tests/test_lib.sh
+. "$(dirname "${BASH_SOURCE[0]}")/test_lib.sh"
+test_setup "$@"
+PY=/usr/bin/python3
+cd "$tmp" || exit 1
+
+$PY - "$GW" >"$tmp/checks.out" 2>&1 <<'EOF'
+import json, re, subprocess, sys, threading, time
+GW = sys.argv[1]
+def check(cond, what):
+    print(("PASS: " if cond else "FAIL: ") + what, flush=True)
+
+LINE = re.compile(r"  (\d+)/(\d+) collisions, ([0-9.]+)% of the work, ([0-9.]+) s elapsed, ~([0-9.]+) s left")
+# a sweep's line: before its first case ends the cases under way, then its rate and time left
+SWEEP = re.compile(r"sweep: (\d+)/(\d+) cases, (?:(\d+) under way|[0-9.]+ cases/s), ([0-9.]+) s elapsed(?:, ~[0-9.]+ s left)?")
+
+class Run:
+    """A run of the program whose stderr lines are stamped as they arrive."""
+    def __init__(self, args):
+        self.args = args
+        self.t0 = time.monotonic()
+        self.p = subprocess.Popen([GW] + args, stdout=subprocess.PIPE, stderr=subprocess.PIPE)
+        self.lines, self.out = [], b""
+        self.t_end = None
+        self.reader = threading.Thread(target=self._read)
+        self.reader.start()
+        self.outreader = threading.Thread(target=self._read_out)
+        self.outreader.start()
+    def _read(self):
+        for raw in self.p.stderr:
+            self.lines.append((time.monotonic() - self.t0, raw.decode(errors="replace").rstrip("\n")))
+    def _read_out(self):
+        self.out = self.p.stdout.read()
+    def progress(self, line=LINE):
+        return [(t, line.fullmatch(l)) for t, l in self.lines[1:] if line.fullmatch(l)]
+    def stop(self):
+        """Kill the run if still running; its elapsed time when stopped."""
+        el = time.monotonic() - self.t0
+        if self.p.poll() is None:
+            self.p.kill()
+        self.p.wait()
+        self.reader.join()
+        self.outreader.join()
+        return el
+
+def name(r):
+    return " ".join(r.args[:4])
+
+# --- the long studies, at once, each with its --quiet twin ---
+LONG = [
+    (["falcon", "--n", "400:401", "--heights", "none", "--vimp", "0.3", "--jobs", "2"], 2, "granwave falcon: 2 collisions"),
+    (["wavespeed", "--n", "400:402", "--vimp", "0.3", "--jobs", "3"], 4, "granwave wavespeed: 4 collisions"),
+    (["softwall", "--n", "300:302", "--jobs", "2"], 23, "granwave softwall: N = 300..302 on one wall"),
+]
+# a sweep of two such columns on 2 threads: its cases end after the window
+for o in ("sw", "swq"):
+    open(o + ".ini", "w").write("[sweep]\nmodel = chain\nout = %s\n[grid]\nn = 400, 401\n" % o)
+runs = [(Run(a), Run(a + ["--quiet"]), n, h) for a, n, h in LONG]
+sw, swq = Run(["sweep", "sw.ini", "--jobs", "2"]), Run(["sweep", "swq.ini", "--jobs", "2", "--quiet"])
+# a pluviation of 300 discs (16 s here) in a pipe: it spoke on a terminal only
+lm, lmq = Run(["layer-make", "--n", "300", "--seed", "1", "--out", "lm.txt"]), \
+    Run(["layer-make", "--n", "300", "--seed", "1", "--out", "lmq.txt", "--quiet"])
+deadline = time.monotonic() + 12
+while time.monotonic() < deadline and any(len(r.progress()) < 3 and r.p.poll() is None for r, _, _, _ in runs) or \
+        (time.monotonic() < deadline and len(sw.progress(SWEEP)) < 3 and sw.p.poll() is None):
+    time.sleep(0.05)
+while time.monotonic() < deadline and not lm.lines and lm.p.poll() is None:
+    time.sleep(0.05)
+el, el_q = lm.stop(), lmq.stop()
+LM = re.compile(r"granwave layer-make: t = [0-9.e+-]+ s simulated \(until the pile settles, at most t-max 6 s\), "
+                r"[0-9]+ s elapsed")
+check(len(lm.lines) >= 1 and lm.lines[0][0] <= 6.0 and all(LM.fullmatch(l) for _, l in lm.lines),
+      "layer-make --n 300 in a pipe: a line within 6 s, whole lines: %r" % lm.lines[:2])
+check(not lmq.lines, "layer-make --quiet: nothing on stderr in %.1f s: %r" % (el_q, lmq.lines[:2]))
+el, el_q = sw.stop(), swq.stop()
+prog = sw.progress(SWEEP)
+check(len(sw.lines) >= 1 and sw.lines[0][1].startswith("sweep: 2 cases, 0 already done, 2 to run on threads"),
+      "sweep: its header first: %r" % sw.lines[:1])
+check(len(prog) == len(sw.lines) - 1, "sweep: every other line a whole progress line: %r"
+      % [l for _, l in sw.lines[1:] if not SWEEP.fullmatch(l)])
+check(len(prog) >= 3, "sweep: three lines within 12 s (%d in %.1f s)" % (len(prog), el))
+if prog:
+    check(prog[0][0] <= 6.0 and prog[0][1].group(1) == "0" and prog[0][1].group(3) is not None,
+          "sweep: the first line within 6 s, before any case ended, its cases under way: %.2f s %s"
+          % (prog[0][0], prog[0][1].group(0)))
+    gaps = [b[0] - a[0] for a, b in zip(prog, prog[1:])]
+    check(all(g <= 4.5 for g in gaps), "sweep: lines at most 4.5 s apart: %s" % ["%.2f" % g for g in gaps])
+    check(all(x.group(2) == "2" for _, x in prog), "sweep: n = 2 cases in every line")
+check(not swq.lines, "sweep --quiet: nothing on stderr in %.1f s: %r" % (el_q, swq.lines[:2]))
+for r, q, n, head in runs:
+    el, el_q = r.stop(), q.stop()
+    lines = r.lines
+    prog = r.progress()
+    what = name(r)
+    check(len(lines) >= 1 and lines[0][1].startswith(head), "%s: the header first: %r" % (what, lines[:1]))
+    check(len(prog) == len(lines) - 1, "%s: every other line a whole progress line: %r"
+          % (what, [l for _, l in lines[1:] if not LINE.fullmatch(l)]))
+    check(len(prog) >= 3, "%s: three lines within 12 s (%d in %.1f s)" % (what, len(prog), el))
+    if prog:
+        check(prog[0][0] <= 6.0, "%s: the first line %.2f s after the start (at most 6 s)" % (what, prog[0][0]))
+        m = prog[0][1]
+        if what.startswith("softwall"):  # the rigid wall's 20 short columns may be done, no 300-bead one
+            check(int(m.group(1)) <= 20 and float(m.group(3)) > 0,
+                  "%s: the first line within the walls' columns: %s" % (what, m.group(0).strip()))
+        else:
+            check(int(m.group(1)) == 0 and float(m.group(3)) > 0,
+                  "%s: the first line before any collision ended, its work begun: %s" % (what, m.group(0).strip()))
+        gaps = [b[0] - a[0] for a, b in zip(prog, prog[1:])]
+        check(all(g <= 4.5 for g in gaps), "%s: lines at most 4.5 s apart: %s" % (what, ["%.2f" % g for g in gaps]))
+        ks = [int(x.group(1)) for _, x in prog]
+        ps = [float(x.group(3)) for _, x in prog]
+        check(all(b >= a for a, b in zip(ks, ks[1:])) and all(b >= a for a, b in zip(ps, ps[1:])),
+              "%s: k and P never decrease: %s %s" % (what, ks, ps))
+        check(all(int(x.group(2)) == n for _, x in prog), "%s: n = %d collisions in every line" % (what, n))
+        check(all(float(x.group(3)) < 100 for _, x in prog) or r.p.returncode == 0,
+              "%s: under 100%% while running" % what)
+    check(not q.lines, "%s --quiet: nothing on stderr in %.1f s: %r" % (what, el_q, q.lines[:2]))
+
+# --- a study of a few seconds to its end: the last line, and stdout's JSON ---
+r = Run(["falcon", "--n", "140:141", "--heights", "none", "--vimp", "0.3", "--jobs", "2", "--json"])
+r.p.wait(timeout=120)
+el = r.stop()
+prog = r.progress()
+check(r.p.returncode == 0, "falcon --n 140:141: exit 0 (%s)" % r.p.returncode)
+try:
+    res = json.loads(r.out)
+    check(isinstance(res, dict) and "tau_n" in json.dumps(res), "falcon --n 140:141 --json: stdout parses as JSON")
+except ValueError as e:
+    check(False, "falcon --n 140:141 --json: stdout does not parse: %s" % e)
+check(len(r.lines) >= 2 and r.lines[0][1].startswith("granwave falcon: 2 collisions")
+      and len(prog) == len(r.lines) - 1, "falcon --n 140:141: the header and whole lines: %r" % [l for _, l in r.lines])
+if prog:
+    last = prog[-1][1]
+    check(last.group(1) == last.group(2) == "2" and last.group(3) == "100.0", "the last line 2/2 at 100%%: %s"
+          % last.group(0).strip())
+if el >= 2.5:  # lasted long enough for the clock's lines: the first at 2 s, within 6 s
+    check(len(prog) >= 2 and prog[0][0] <= 6.0, "falcon --n 140:141 (%.1f s): a line before the last, within 6 s: %s"
+          % (el, ["%.2f" % t for t, _ in prog]))
+
+# --- short studies: the header and the last line; the same JSON with --quiet ---
+SHORT = [(["falcon", "--n", "1:5", "--heights", "none", "--json"], 5),
+         (["wavespeed", "--n", "5:10", "--vimp", "0.3", "--json"], 7),
+         (["softwall", "--n", "1:6", "--json"], 26)]
+for a, n in SHORT:
+    r, q = Run(a), Run(a + ["--quiet"])
+    r.p.wait(timeout=60)
+    q.p.wait(timeout=60)
+    el = r.stop()
+    q.stop()
+    what = " ".join(a[:3])
+    try:
+        jr, jq = json.loads(r.out), json.loads(q.out)
+        for j in (jr, jq):
+            j.pop("wall_time_ms", None)
+            j.pop("wall_time_s", None)
+        check(jr == jq, "%s: stdout's JSON parses and is --quiet's but for the wall time" % what)
+    except ValueError as e:
+        check(False, "%s: stdout is not JSON: %s" % (what, e))
+    prog = r.progress()
+    check(r.p.returncode == 0 and len(prog) == len(r.lines) - 1 and len(prog) >= 1 and
+          prog[-1][1].group(1) == prog[-1][1].group(2) == str(n), "%s: exit 0, the header and whole lines ending "
+          "%d/%d: %r" % (what, n, n, [l for _, l in r.lines]))
+    if el < 1.9:
+        check(len(prog) == 1, "%s (%.2f s): the last line only" % (what, el))
+    check(q.p.returncode == 0 and not q.lines, "%s --quiet: nothing on stderr: %r" % (what, q.lines[:2]))
+EOF
+while IFS= read -r l; do
+    case $l in PASS:*) ok "${l#PASS: }" ;; FAIL:*) ko "${l#FAIL: }" ;; *) ko "checker: $l" ;; esac
+done <"$tmp/checks.out"
+[ "$passes" -gt 0 ] || ko "no check ran"
+
+test_summary test_study_progress

@@ -60,7 +60,8 @@ def write_sweep_table(path, res, grid, params, model="layer"):
     there when they are not grid keys), then case, the grid keys, the model's columns."""
     gw = granwave_module()
     keys = [k.replace("-", "_") for k in grid]  # the module's keyword names
-    cols = [k for k in res if k not in keys and k != "ncases"]
+    # the model's columns: every per-case array (not ncases, not the warnings' list)
+    cols = [k for k in res if k not in keys and k not in ("ncases", "warnings")]
     with open(path, "w") as f:
         f.write(f"# granwave {gw.version()} sweep, model {model}, {res['ncases']} cases "
                 f"(granwave.sweep in memory)\n")

@@ -384,8 +384,6 @@ static int dir_moved(const char *out, int dirfd, char *where, size_t n)
     return 1;
 }
 
-/* A refusal's exit code: 2 for the config or a case (bad input), 1 when the
- * check itself ran out of memory (a run failure: the input is not at fault). */
 /* The cases of the table just written (results.csv in the sweep's held
  * directory dirfd) that did not end (gw_sweep_undecided_rows: the chain's
  * column converged 0, a collision held by gravity or cut at t-max), said in
@@ -436,6 +434,8 @@ static void undecided_warning(int dirfd, const gw_sweep_model *m, long ncases)
     free(w);
 }
 
+/* A refusal's exit code: 2 for the config or a case (bad input), 1 when the
+ * check itself ran out of memory (a run failure: the input is not at fault). */
 static int exit_code(int rc)
 {
     return rc == GW_ENOMEM ? 1 : 2;

@@ -49,8 +49,8 @@
  * (GW_LAYER_SETTLED_FRICTION_MIN = 1, to a relative 1e-9) unless
  * other_settling, which runs it with a warning.
  * Any other difference is a warning: q not 1, another mass law or clump mass
- * (q then from the total weights, the bodies' shares differ), a lower
- * friction within the bound or a higher one.
+ * (q then from the total weights, the bodies' shares differ), a higher
+ * friction.
  * Units: SI (Pa, kg/m^3, m/s^2), angles in degrees.
  */
 #include <math.h>

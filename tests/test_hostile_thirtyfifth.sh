@@ -37,6 +37,11 @@
 #    issued none of the sweep's warnings (a dt above the step taken, layer
 #    cases on a sample settled otherwise or not settled, these). One line now
 #    counts such cases, and Python issues every line as a GranwaveWarning.
+#  8 (left by the pass, closed by the lead) falcon, wavespeed and softwall
+#    listed --radii in their help as "per-bead radii, m" and refused it with
+#    "per-bead radii need a fixed N", also at --n 3:3: their help now says a
+#    study does not take it, and the refusal (exit 2, one line, nothing
+#    written) says why and names granwave chain.
 # Checks that fail on the code before: see docs/tests.md.
 # shellcheck source=refusal_lib.sh
 . "$2/tests/refusal_lib.sh"
@@ -262,5 +267,17 @@ for what, kw, text in (
 got, r = said(model="chain", grid={"n": [1, 2]})
 print(("PASS: " if not got and r.get("warnings") == [] else "FAIL: ") + "Python sweep whose cases end: no warning, an empty list of warnings")
 EOF
+
+# 8: --radii in the studies
+for cmd in falcon wavespeed softwall; do
+    if "$GW" "$cmd" --help 2>&1 | grep -E -- '^  --radii ' | grep -q 'not taken by a study'; then
+        ok "$cmd --help: --radii said not taken by a study"
+    else
+        ko "$cmd --help: $("$GW" "$cmd" --help 2>&1 | grep -E -- '^  --radii ')"
+    fi
+    refused "$cmd --n 3:3 --radii: refused, saying why" \
+        "^granwave $cmd --radii: a study runs columns of several sizes N .* use granwave chain\$" \
+        "$cmd" --n 3:3 --radii 4e-3,4e-3,4e-3 --out "$tmp/o"
+done
 
 test_summary test_hostile_thirtyfifth

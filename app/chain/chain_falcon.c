@@ -214,7 +214,7 @@ int gw_cmd_falcon(int argc, char **argv)
     if (done >= 0)
         return done;
     if (f.c.radii)
-        return chain_cli_fail("falcon --radii: per-bead radii need a fixed N (use granwave chain)");
+        return chain_cli_study_radii("falcon");
     gw_err err = {{0}};
     long a, b;
     double *vv = NULL, *hh = NULL, *v = NULL;

@@ -376,6 +376,19 @@ void chain_cli_sweep_opts(gw_opt *opts, int *k, long *jobs, int *quiet)
                             .help = "threads [0 = one per CPU]", .lo = 0, .hi = 1024};
     opts[(*k)++] = (gw_opt){.name = "quiet", .kind = GW_OPT_FLAG, .dest = quiet,
                             .help = "no progress lines"};
+    /* the shared rows list --radii, which a study cannot take: its help said
+     * "per-bead radii" and the run refused it, even at --n 3:3 */
+    opts[*k] = (gw_opt){0};
+    chain_cli_opt_help(opts, "radii", "not taken by a study: its columns have several sizes, per-bead radii "
+                       "fit one (granwave chain takes them)");
+}
+
+int chain_cli_study_radii(const char *cmd)
+{
+    char msg[200];
+    snprintf(msg, sizeof msg, "%s --radii: a study runs columns of several sizes N (even --n A:A is a range), "
+             "and per-bead radii fit one column: use granwave chain", cmd);
+    return chain_cli_fail(msg);
 }
 
 void chain_cli_free(chain_cli *c)

@@ -86,8 +86,12 @@ char *chain_cli_header(const chain_cli *c, const char *cmd, int argc, char **arg
 int chain_cli_parse(const char *cmd, const char *usage, const char *summary, gw_opt *opts,
                     int argc, char **argv);
 
-/* Append the sweep options --jobs and --quiet at opts[*k] (advances *k). */
+/* Append the sweep options --jobs and --quiet at opts[*k] (advances *k) of a
+ * study (falcon, wavespeed, softwall), whose --radii row's help then says it
+ * is not taken. */
 void chain_cli_sweep_opts(gw_opt *opts, int *k, long *jobs, int *quiet);
+/* A study's refusal of --radii (chain_cli_fail): exit code 2. */
+int chain_cli_study_radii(const char *cmd);
 
 /* Print "granwave CMD: message" and return exit code 2. */
 int chain_cli_fail(const char *msg);

@@ -82,7 +82,7 @@ int gw_cmd_softwall(int argc, char **argv)
     if (done >= 0)
         return done;
     if (c.radii)
-        return chain_cli_fail("softwall --radii: per-bead radii need a fixed N (use granwave chain)");
+        return chain_cli_study_radii("softwall");
     gw_err err = {{0}};
     c.sheets_mode = use_sheets;
     /* every wall option is ignored with --sheets (each sheet has its fitted

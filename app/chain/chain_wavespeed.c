@@ -57,7 +57,7 @@ int gw_cmd_wavespeed(int argc, char **argv)
     if (done >= 0)
         return done;
     if (c.radii)
-        return chain_cli_fail("wavespeed --radii: per-bead radii need a fixed N (use granwave chain)");
+        return chain_cli_study_radii("wavespeed");
     gw_err err = {{0}};
     long a, b;
     double *v = NULL;

@@ -1086,8 +1086,9 @@ for c40 in "discs:--n 30" "frictionless discs:--n 30 --friction 0" "clumps:--n 1
 done
 # --- 41: layer-make's progress on a terminal ----------------------------------------------
 # a pluviation of 300 discs runs 7 s and said nothing until it ended; on a
-# terminal (script(1) gives it one) it now says the simulated time every 3 s,
-# and off a terminal (every other test here) its stderr stays empty
+# terminal (script(1) gives it one) it now says the simulated time every 3 s;
+# off a terminal it does too since session 29 (test_study_progress), and
+# --quiet leaves its stderr empty
 if command -v script >/dev/null; then
     timeout -s KILL 300 script -qec "'$GW' layer-make --out '$tmp/p41.txt'" /dev/null </dev/null | tr -d '\r' >"$tmp/tty41"
     if grep -qE '^granwave layer-make: t = [0-9.]+ s simulated \(until the pile settles, at most t-max 6 s\), [0-9]+ s elapsed$' "$tmp/tty41" &&
@@ -1096,10 +1097,10 @@ if command -v script >/dev/null; then
     else
         ko "layer-make on a terminal: no progress line ($(head -c 300 "$tmp/tty41"))"
     fi
-    if "$GW" layer-make --n 60 --width-rm 16 --seed 3 --out "$tmp/p41b.txt" >/dev/null 2>"$tmp/stderr" </dev/null && [ ! -s "$tmp/stderr" ]; then
-        ok "  off a terminal: nothing on stderr"
+    if "$GW" layer-make --n 60 --width-rm 16 --seed 3 --quiet --out "$tmp/p41b.txt" >/dev/null 2>"$tmp/stderr" </dev/null && [ ! -s "$tmp/stderr" ]; then
+        ok "  off a terminal, --quiet: nothing on stderr"
     else
-        ko "  off a terminal: $(head -c 200 "$tmp/stderr")"
+        ko "  off a terminal, --quiet: $(head -c 200 "$tmp/stderr")"
     fi
 fi
 

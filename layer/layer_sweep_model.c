@@ -263,6 +263,18 @@ static int pile_note(check_memo *c, const char *path, unsigned long long file_ha
     return GW_OK;
 }
 
+/* The slot the memo keeps for path, as the case just checked read it; NULL
+ * when none is kept (a sample above MEMO_NMAX, no memo). */
+static memo_slot *memo_find(check_memo *c, const char *path)
+{
+    for (int k = 0; c && path && k < MEMO_SLOTS; k++) {
+        memo_slot *m = &c->slot[k];
+        if (m->path && m->used == c->tick && strcmp(m->path, path) == 0)
+            return m;
+    }
+    return NULL;
+}
+
 /* Tally case s's settling warning against the sample kept for it (none kept:
  * a sample above MEMO_NMAX, whose runs still record theirs). The material
  * resolves as the run's does (layer_setup.c: the sample's mass law unless
@@ -272,33 +284,18 @@ static int pile_note(check_memo *c, const char *path, unsigned long long file_ha
 static void settling_tally(check_memo *c, const gw_layer_impact_setup *s)
 {
     c->ncases++;
-    for (int k = 0; k < MEMO_SLOTS; k++) {
-        memo_slot *m = &c->slot[k];
-        if (!m->path || m->used != c->tick || strcmp(m->path, s->sample) != 0)
-            continue;
-        gw_layer_params lp = gw_layer_params_default();
-        GW_LAYER_MATERIAL_TO_PARAMS(&lp, s);
-        lp.mass_law = s->mass_law >= 0 ? s->mass_law : m->s.mass_law;
-        lp.clump_mass = s->clump_mass >= 0 ? s->clump_mass : m->s.clump_mass;
-        char w[768] = "";
-        gw_err e = {{0}};
-        if (layer_settling_verdict(&m->s, &lp, s->other_settling, s->sample, m->settle, w, sizeof w, &e) == GW_OK &&
-            w[0] && c->nsettling++ == 0)
-            memcpy(c->settling, w, sizeof w);
+    memo_slot *m = memo_find(c, s->sample);
+    if (!m)
         return;
-    }
-}
-
-/* The sample the memo keeps for path, as the case just checked read it; NULL
- * when none is kept (a sample above MEMO_NMAX, no memo). */
-static const gw_layer_sample *memo_sample(const check_memo *c, const char *path)
-{
-    for (int k = 0; c && path && k < MEMO_SLOTS; k++) {
-        const memo_slot *m = &c->slot[k];
-        if (m->path && m->used == c->tick && strcmp(m->path, path) == 0)
-            return &m->s;
-    }
-    return NULL;
+    gw_layer_params lp = gw_layer_params_default();
+    GW_LAYER_MATERIAL_TO_PARAMS(&lp, s);
+    lp.mass_law = s->mass_law >= 0 ? s->mass_law : m->s.mass_law;
+    lp.clump_mass = s->clump_mass >= 0 ? s->clump_mass : m->s.clump_mass;
+    char w[768] = "";
+    gw_err e = {{0}};
+    if (layer_settling_verdict(&m->s, &lp, s->other_settling, s->sample, m->settle, w, sizeof w, &e) == GW_OK &&
+        w[0] && c->nsettling++ == 0)
+        memcpy(c->settling, w, sizeof w);
 }
 
 static int memo_warnings(const void *memo, char **list)
@@ -380,9 +377,9 @@ static int check_memo_fn(void **memo, int nk, const char *const *names, const ch
         if ((rc = setup_check(memo, &s, err)) == GW_EINVAL)
             name_placement(&s, &pl, err);
     if (rc == GW_OK && memo && *memo) { /* the points in the box's frame: its width is the sample's */
-        const gw_layer_sample *smp = memo_sample(*memo, s.sample);
-        if (smp)
-            rc = placement_distinct(&pl, smp->width, err);
+        const memo_slot *slot = memo_find(*memo, s.sample);
+        if (slot)
+            rc = placement_distinct(&pl, slot->s.width, err);
     }
     if (rc == GW_OK && memo && *memo)
         settling_tally(*memo, &s);

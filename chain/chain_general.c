@@ -12,10 +12,11 @@
  *                 whose recoverable part (Thornton's unloading energy; for the
  *                 Maxwell arms, each arm's spring at the overlap carrying its force)
  *                 is counted as elastic and the rest as dissipated
- *   plastic wall  D_max follows D through a C^1 ramp (see dtrack in chain_model.h)
+ *   plastic wall  D_max follows D through a C^1 ramp (see dtrack in chain_model.h),
+ *                 carried as its excess E = D_max - D >= 0 (E' = D_max' - D')
  *   viscoelastic  dq_j/dt = f_U'(D) D' - q_j/tau_j
- * State layout after the beads (each only when present): E_d, W, x_s, v_s, D_max,
- * q_1..q_m. Roots: D (less a plastic dent), the contacts, D', v_s (sensor).
+ * State layout after the beads (each only when present): E_d, W, x_s, v_s,
+ * E = D_max - D, q_1..q_m. Roots: D (less a plastic dent), the contacts, D', v_s (sensor).
  * Units: SI (m, s, kg, N, J).
  */
 #include <math.h>
@@ -33,6 +34,26 @@ static double wall_overlap_rate(const gw_chain *c, const double *y)
     return c->i_sens >= 0 ? y[1] - y[c->i_sens + 1] : y[1];
 }
 
+/* The plastic wall's largest overlap D_max, from its excess E = D_max - D
+ * (the state). On first loading D tracks D_max exactly, the law's kink
+ * between its loading and unloading branches (Thornton: stiffness pi p_y R
+ * below against 1.5 F_m/(D_max - D_p) above, several times more). Carried as
+ * D_max itself, the implicit methods' difference quotients stepped off the
+ * kink on both sides at once: D up onto the loading branch, D_max up onto
+ * the unloading one, a Jacobian whose sum along the tracking (D and D_max
+ * moving together) was 2 pi p_y R - 1.5 F_m/(D_max - D_p), of the wrong sign,
+ * where the force grows by pi p_y R. Newton then failed in 72 % of arkode
+ * dirk's step attempts (chain --n 30 --sheet brass --sheet-law material:
+ * 118,640 steps, 156,430 failures and as many Jacobians; drop: 178,655
+ * steps). With E a state, an increment of any other state moves D and D_max
+ * together, along the loading branch, and E's rate is 0 on the tracking, so
+ * Newton moves along the branch the solution follows. E stays exactly 0 on
+ * first loading, where D_max carried apart drifted from D by rounding. */
+static double wall_dmax(const gw_chain *c, const double *y)
+{
+    return wall_overlap(c, y) + y[c->i_dmax];
+}
+
 /* Contact force of the wall in the general model; *kd = dF/dD, *kv = dF/dD'
  * (Jacobian), the dissipated power of contact damping added to *pd. */
 double chain_general_wall_force(const gw_chain *c, const double *y, double *kd, double *kv,
@@ -42,7 +63,7 @@ double chain_general_wall_force(const gw_chain *c, const double *y, double *kd, 
     double d = wall_overlap(c, y), dd = wall_overlap_rate(c, y), f = 0.0;
     *kd = *kv = 0.0;
     if (w->plastic)
-        return gw_thornton_force(&w->th, d, y[c->i_dmax], kd, NULL, NULL);
+        return gw_thornton_force(&w->th, d, wall_dmax(c, y), kd, NULL, NULL);
     if (w->narms > 0) {
         double k;
         f = w->w_inf * chain_wall_elastic(w, d, &k);
@@ -126,19 +147,24 @@ static void general_rhs(const gw_chain *c, const double *y, double *yd, int part
     }
     if (c->i_work >= 0)
         yd[c->i_work] = fw * dd;
-    if (c->i_dmax >= 0 && dd > 0) {
-        /* loading: D_max follows D, switched on by a C^1 ramp over D in
-         * [D_max - 2 dtrack, D_max - dtrack]. Tracking (D = D_max) then sits
-         * inside the ramp's flat top, not at its edge: the implicit methods'
-         * difference quotients (an increment of D_max up, 1.5e-8 of its
-         * scale) saw a slope of -dd 6x(1 - x)/dtrack there that the rate does
-         * not have on the other side, and Newton contracted by only
-         * 1/(1 + gamma slope) an iteration: arkode dirk crawled at steps of
-         * about 1e-10 s (n = 1, --sheet-yield 1e6: about 8 minutes by its progress lines, erk 252
-         * steps), cvode bdf took 180,000 steps. */
-        double x = (wall_overlap(c, y) - y[c->i_dmax] + 2.0 * c->dtrack) / c->dtrack;
-        x = x < 0 ? 0.0 : x > 1 ? 1.0 : x;
-        yd[c->i_dmax] = dd * x * x * (3.0 - 2.0 * x);
+    if (c->i_dmax >= 0) {
+        /* E' = D_max' - D'. Loading: D_max follows D, switched on by a C^1
+         * ramp over D in [D_max - 2 dtrack, D_max - dtrack] (E in [dtrack,
+         * 2 dtrack]). Tracking (E = 0) then sits inside the ramp's flat top,
+         * not at its edge: the implicit methods' difference quotients (an
+         * increment of E, 1.5e-8 of its scale) saw a slope of -dd 6x(1 -
+         * x)/dtrack there that the rate does not have on the other side, and
+         * Newton contracted by only 1/(1 + gamma slope) an iteration: arkode
+         * dirk crawled at steps of about 1e-10 s (n = 1, --sheet-yield 1e6:
+         * about 8 minutes by its progress lines, erk 252 steps), cvode bdf
+         * took 180,000 steps. On the top s = 1 exactly, so E' is 0 exactly. */
+        double s = 0.0;
+        if (dd > 0) {
+            double x = (2.0 * c->dtrack - y[c->i_dmax]) / c->dtrack;
+            x = x < 0 ? 0.0 : x > 1 ? 1.0 : x;
+            s = x * x * (3.0 - 2.0 * x);
+        }
+        yd[c->i_dmax] = dd * s - dd;
     }
     if (c->wl.narms > 0) {
         double k;
@@ -203,7 +229,7 @@ double gw_chain_wall_gap(const gw_chain *c, const double *y)
     double d = wall_overlap(c, y);
     if (c->wl.plastic) {
         double dp;
-        gw_thornton_force(&c->wl.th, d, y[c->i_dmax], NULL, &dp, NULL);
+        gw_thornton_force(&c->wl.th, d, wall_dmax(c, y), NULL, &dp, NULL);
         return d - dp;
     }
     return d;
@@ -248,7 +274,7 @@ static double wall_stored_energy(const gw_chain *c, const double *y)
     const chain_wall_law *w = &c->wl;
     double d = wall_overlap(c, y), u;
     if (w->plastic) {
-        gw_thornton_force(&w->th, d, y[c->i_dmax], NULL, NULL, &u);
+        gw_thornton_force(&w->th, d, wall_dmax(c, y), NULL, NULL, &u);
         return u;
     }
     u = w->w_inf * chain_wall_elastic_energy(w, d);

@@ -27,12 +27,14 @@ struct gw_chain {
     gw_system sys;
     int general;                 /* any wall law, sensor body or guide option */
     chain_wall_law wl;
-    long i_diss, i_work, i_sens, i_dmax, i_q; /* state indices, -1 when absent */
+    long i_diss, i_work, i_sens, i_dmax, i_q; /* state indices, -1 when absent; i_dmax
+                                                 holds the plastic wall's D_max - D */
     double vreg;                 /* Coulomb regularisation speed, m/s */
     double *work;                /* [2 dim] scratch of the force-rate root (chain_force_rate) */
-    double dtrack;               /* plastic wall: D_max follows D (dD_max/dt = D' s(x),
-                                    s = x^2 (3 - 2x), x = (D - D_max + 2 dtrack)/dtrack
-                                    clipped to [0, 1]) so that the switch between
+    double dtrack;               /* plastic wall: D_max follows D (dD_max/dt = D' s(x)
+                                    for D' > 0, s = x^2 (3 - 2x), x = (D - D_max +
+                                    2 dtrack)/dtrack clipped to [0, 1]; the state is
+                                    E = D_max - D) so that the switch between
                                     unloading and reloading is C^1, not a jump the
                                     corrector chatters on; a reloading D_max runs
                                     ahead of D by < dtrack, and tracking (D = D_max)

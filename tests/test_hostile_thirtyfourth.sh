@@ -71,9 +71,17 @@ S="--sensor-mass 1e-3 --sensor-stiffness 1e9"
 # shellcheck disable=SC2086
 if runs_json "n 2 sensor body on a plastic wall, arkode erk" e.json chain --n 2 $S $WALL --solver arkode --method erk --quiet &&
     runs_json "n 2 sensor body on a plastic wall, arkode dirk: ends within 60 s" i.json chain --n 2 $S $WALL --solver arkode --method dirk --quiet; then
-    # the sensor's reading peaks on its own ringing: 1e-7 (measured 1e-8 to 1e-7 across solvers)
-    [ "$(agree i.json f_max 1e-7)" = True ] && [ "$(agree i.json tau_n 1e-9)" = True ] &&
-        ok "n 2 sensor body on a plastic wall, dirk: F_max within 1e-7 and tau_N within 1e-9 of erk's" ||
+    # the sensor's reading peaks on its own ringing (1e6 rad/s, 0.02 N, about
+    # 600 periods), which the implicit methods resolve at these tolerances to
+    # about 1.4e-7: against the converged 3.6587982845 N (erk and dirk at
+    # --dt-max 1e-8 agree within 3e-11) dirk is 1.36e-7 low and cvode bdf
+    # 1.18e-7 (also before issue 18's fix of the wall's Jacobian), erk 3.6e-9
+    # high. Dirk's error falls as its step to the fifth power (--dt-max 1.3e-7:
+    # 6.4e-9) and with its tolerance (1e-13: 1.4e-8). Before, its Newton
+    # failures on the wall's kink cut its steps (28,238 against 17,645 now)
+    # and it was 3.3e-9 low. So 2e-7
+    [ "$(agree i.json f_max 2e-7)" = True ] && [ "$(agree i.json tau_n 1e-9)" = True ] &&
+        ok "n 2 sensor body on a plastic wall, dirk: F_max within 2e-7 and tau_N within 1e-9 of erk's" ||
         ko "n 2 sensor body on a plastic wall, dirk: F_max $(jq_py i.json "d['f_max']") against $(jq_py e.json "d['f_max']")"
 fi
 

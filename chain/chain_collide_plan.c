@@ -284,7 +284,7 @@ static int implicit_method(const gw_solver_type *t, int method)
 static double memory_bytes(const gw_chain_params *p, const gw_solver_type *type, int method)
 {
     const double n = p->n;
-    /* the states ordered before the beads: x_s, v_s; W, D_max and the arms
+    /* the states ordered before the beads: x_s, v_s; W, D_max - D and the arms
      * (a yield stress and a loss together give all three) */
     const int plastic = p->wall.yield_pressure > 0, visco = p->wall.loss > 0;
     const double k = 2.0 * (p->sensor.mass > 0) + (plastic || visco) + plastic + (visco ? GW_WALL_MAX_ARMS : 0);

@@ -22,6 +22,7 @@
 
 #include "chain_setup_rows.h"
 #include "chain_model.h"
+#include "chain_wall.h"
 #include "gw_locale.h"
 
 /* ---- the table of the inputs: the drop's rows, then the column's with the
@@ -352,6 +353,10 @@ int gw_chain_drop_study_run(const gw_chain_drop_setup *s, gw_progress_fn progres
     gw_chain_params *p = &res.params;
     if (s->block)
         gw_chain_drop_block_params(p);
+    if ((rc = chain_damping_check(p, err)) != GW_OK) {
+        gw_chain_resolved_free(&res);
+        return rc;
+    }
     if ((rc = gw_chain_memory_check(p, res.run.solver, res.run.sp.method, err)) != GW_OK) {
         gw_chain_resolved_free(&res);
         return rc;

@@ -7,6 +7,7 @@
 
 #include "gw_cli.h"
 #include "chain_options.h"
+#include "chain_wall.h"
 
 static const char *chain_summary =
     "One collision of a column of N beads with a wall (Falcon et al. 1998, eq. F.11):\n"
@@ -171,8 +172,9 @@ int gw_cmd_chain(int argc, char **argv)
         c.run.sample = gw_chain_trace_sample;
         c.run.sample_ctx = &tr;
     }
-    /* the run's bounds (samples, trace, steps, memory) before anything is allocated */
-    if (gw_chain_run_check(&c.params, &c.run, &err) != GW_OK) {
+    /* damping with nothing to act on, and the run's bounds (samples, trace,
+     * steps, memory), before anything is allocated */
+    if (chain_damping_check(&c.params, &err) != GW_OK || gw_chain_run_check(&c.params, &c.run, &err) != GW_OK) {
         gw_cli_study_error(gw_chain_setup_params(), "chain", GW_EINVAL, &err); /* "NAME: ..." -> "chain --NAME: ..." */
         fprintf(stderr, "granwave %s\n", err.msg);
         chain_cli_free(&c);

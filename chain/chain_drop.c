@@ -322,7 +322,7 @@ static int peak_add(drop_state *st, double t, const double *y, double f)
         st->ep_tfmax = t;
         st->ep_cluster = cl;
     }
-    if (f > r->f_max) {
+    if (!(f <= r->f_max)) { /* the first peak replaces the NaN of none */
         r->f_max = f;
         r->t_fmax = t;
     }
@@ -532,7 +532,10 @@ int gw_chain_drop_run_progress(const gw_chain_drop_params *p, const gw_chain_run
         memset(r, 0, sizeof *r);
     if (!p || !o || !r)
         return gw_err_set(err, GW_EINVAL, "gw_chain_drop_run: %s is NULL", !p ? "p" : !o ? "o" : "r");
-    r->f_max = 0;
+    /* no peak at or above the threshold: both NaN (JSON null), as t_fmax was;
+     * an f_max of 0 read as a measured force of a sensor that saw 72 N (drop
+     * --n 2 --peak-threshold 1e9) */
+    r->f_max = NAN;
     r->t_fmax = NAN;
     int rc = gw_chain_drop_params_validate(p, err);
     if (rc == GW_OK) /* before anything is allocated */

@@ -21,6 +21,10 @@
 #    "drop --height: 1 is outside [1e-06, 1]" for 1.0000000001, "layer-impact
 #    --gap: 1000 is outside [0, 1000]", "falcon --vimp: item 1 is 1000, outside
 #    [1e-09, 1000]". The value is now shown with the digits that read back.
+#  4 A drop in which no peak reaches --peak-threshold reported f_max 0 (t_fmax
+#    null): drop --n 2 --peak-threshold 1e9 said "f_max": 0 of a sensor whose
+#    first collision peaked at 72.5 N, a number a script reads as measured. Now
+#    null (Python: nan), as t_fmax; a drop with peaks gives impacts[0]'s.
 # Checks that fail on the code before: see docs/tests.md.
 # shellcheck source=refusal_lib.sh
 . "$2/tests/refusal_lib.sh"
@@ -130,5 +134,22 @@ refused "sweep --check, alpha = 90.0000000001: shown as given" \
     "^granwave sweep: a.ini: case 1: alpha: 90\.0000000001 is outside \[0, 90\)" sweep a.ini --check
 # and a value of few digits as before
 refused "drop --height 2: as before" "^granwave drop --height: 2 is outside \[1e-06, 1\]" drop --height 2 --out o
+
+# --- 4 a drop without a peak at or above the threshold: f_max null ---
+if runs_json "drop --n 2 --peak-threshold 1e9" p.json drop --n 2 --peak-threshold 1e9; then
+    [ "$(jq_py p.json "(d['n_peaks'], d['f_max'], d['t_fmax'], d['first_collision']['f_max'] > 70)")" = "(0, None, None, True)" ] &&
+        ok "drop --n 2 --peak-threshold 1e9: no peak, f_max and t_fmax null (the first collision's 72.5 N kept)" ||
+        ko "drop --n 2 --peak-threshold 1e9: $(jq_py p.json "(d['n_peaks'], d['f_max'], d['t_fmax'])")"
+fi
+if runs_json "drop --n 2" p.json drop --n 2; then
+    [ "$(jq_py p.json "d['n_peaks'] > 0 and d['f_max'] == max(i['f_max'] for i in d['impacts'])")" = True ] &&
+        ok "drop --n 2: f_max is the largest impact's peak" || ko "drop --n 2: f_max $(jq_py p.json "d['f_max']")"
+fi
+py_checks <<'EOF'
+import math
+r = granwave.drop(n=2, peak_threshold=1e9)
+check(r["n_peaks"] == 0 and math.isnan(r["f_max"]) and math.isnan(r["t_fmax"]),
+      "Python drop peak_threshold=1e9: f_max nan with no peak (%r)" % r["f_max"])
+EOF
 
 test_summary test_hostile_thirtysixth

@@ -5,6 +5,7 @@
 #include <errno.h>
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "gw_cli.h"
@@ -257,6 +258,23 @@ void gw_cli_warnings(const char *cmd, const char *list)
         const char *nl = strchr(p, '\n');
         const int len = nl ? (int)(nl - p) : (int)strlen(p);
         fprintf(stderr, "granwave %s: warning: %.*s\n", cmd, len, p);
+        p += len + (nl != NULL);
+    }
+}
+
+void gw_cli_json_warnings(cJSON *o, const char *list)
+{
+    cJSON *wl = o ? cJSON_AddArrayToObject(o, "warnings") : NULL;
+    for (const char *p = list; wl && p && *p;) {
+        const char *nl = strchr(p, '\n');
+        const size_t len = nl ? (size_t)(nl - p) : strlen(p);
+        char *one = malloc(len + 1);
+        if (one) {
+            memcpy(one, p, len);
+            one[len] = '\0';
+            cJSON_AddItemToArray(wl, cJSON_CreateString(one));
+        }
+        free(one);
         p += len + (nl != NULL);
     }
 }

@@ -152,6 +152,10 @@ int gw_cli_study_error(const struct gw_param *t, const char *cmd, int rc, gw_err
 /* A result's warnings (gw_common.h, "warnings of a result"; may be NULL), the
  * library's texts: each on stderr as "granwave CMD: warning: TEXT". */
 void gw_cli_warnings(const char *cmd, const char *list);
+/* The same texts as the array "warnings" of o (empty when list is NULL or
+ * empty), so that a script reading --json or an --out JSON file sees what
+ * stderr said (layer-impact's and layer-stats' JSON, Python's results). */
+void gw_cli_json_warnings(struct cJSON *o, const char *list);
 /* o (a command's --json result; NULL when it could not be built) printed on
  * stdout: 0, or 1 after "granwave CMD: out of memory for the JSON result" on
  * stderr when it could not be printed whole (nothing is printed then), or 1

@@ -15,6 +15,7 @@
 #include <string.h>
 
 #include "chain_setup_rows.h"
+#include "chain_wall.h"
 
 #define OFF(f) offsetof(gw_chain_collision, f)
 
@@ -104,6 +105,8 @@ int gw_chain_collision_run(const gw_chain_setup *s, gw_chain_collision *out, gw_
     gw_chain_trace tr;
     gw_chain_trace_init(&tr, 0);
     int rc = gw_chain_setup_resolve(s, &res, err);
+    if (rc == GW_OK)
+        rc = chain_damping_check(&res.params, err);
     if (rc == GW_OK) { /* the run's bounds (samples, trace, steps, memory) before anything is allocated */
         gw_chain_run_opts o = res.run;
         o.sample = s->trace ? gw_chain_trace_sample : NULL;

@@ -29,6 +29,7 @@
 
 #include "gw_chain.h"
 #include "chain_model.h"
+#include "gw_locale.h"
 
 gw_chain_drop_params gw_chain_drop_params_default(void)
 {
@@ -77,9 +78,11 @@ int gw_chain_drop_params_validate(const gw_chain_drop_params *p, gw_err *err)
     if ((rc = gw_chain_drop_guide_check(p->chain.guide.coulomb, p->chain.guide.viscous, err)) != GW_OK)
         return rc;
     for (int i = 0; p->gaps && i < p->chain.n - 1; i++)
-        if (!(p->gaps[i] >= 0 && p->gaps[i] <= GW_CHAIN_DROP_GAP_MAX))
-            return gw_err_set(err, GW_EINVAL, "gap %d (m): %g is outside [0, %g]", i + 1, p->gaps[i],
-                              GW_CHAIN_DROP_GAP_MAX);
+        if (!(p->gaps[i] >= 0 && p->gaps[i] <= GW_CHAIN_DROP_GAP_MAX)) {
+            char xs[32];
+            return gw_err_set(err, GW_EINVAL, "gap %d (m): %s is outside [0, %g]", i + 1,
+                              gw_num_text(xs, sizeof xs, p->gaps[i]), GW_CHAIN_DROP_GAP_MAX);
+        }
     gw_chain_params q = p->chain;
     q.v_imp = sqrt(2.0 * q.gravity * p->height);
     return gw_chain_params_validate(&q, err);
@@ -319,7 +322,7 @@ static int peak_add(drop_state *st, double t, const double *y, double f)
         st->ep_tfmax = t;
         st->ep_cluster = cl;
     }
-    if (f > r->f_max) {
+    if (!(f <= r->f_max)) { /* the first peak replaces the NaN of none */
         r->f_max = f;
         r->t_fmax = t;
     }
@@ -529,7 +532,10 @@ int gw_chain_drop_run_progress(const gw_chain_drop_params *p, const gw_chain_run
         memset(r, 0, sizeof *r);
     if (!p || !o || !r)
         return gw_err_set(err, GW_EINVAL, "gw_chain_drop_run: %s is NULL", !p ? "p" : !o ? "o" : "r");
-    r->f_max = 0;
+    /* no peak at or above the threshold: both NaN (JSON null), as t_fmax was;
+     * an f_max of 0 read as a measured force of a sensor that saw 72 N (drop
+     * --n 2 --peak-threshold 1e9) */
+    r->f_max = NAN;
     r->t_fmax = NAN;
     int rc = gw_chain_drop_params_validate(p, err);
     if (rc == GW_OK) /* before anything is allocated */

@@ -22,6 +22,8 @@
 
 #include "chain_setup_rows.h"
 #include "chain_model.h"
+#include "chain_wall.h"
+#include "gw_locale.h"
 
 /* ---- the table of the inputs: the drop's rows, then the column's with the
  * drop's gravity, t-max and dt-out ---- */
@@ -351,6 +353,10 @@ int gw_chain_drop_study_run(const gw_chain_drop_setup *s, gw_progress_fn progres
     gw_chain_params *p = &res.params;
     if (s->block)
         gw_chain_drop_block_params(p);
+    if ((rc = chain_damping_check(p, err)) != GW_OK) {
+        gw_chain_resolved_free(&res);
+        return rc;
+    }
     if ((rc = gw_chain_memory_check(p, res.run.solver, res.run.sp.method, err)) != GW_OK) {
         gw_chain_resolved_free(&res);
         return rc;
@@ -358,9 +364,10 @@ int gw_chain_drop_study_run(const gw_chain_drop_setup *s, gw_progress_fn progres
     const double t_max = res.run.t_max;
     const double dt_out = s->col.dt_out > 0 ? s->col.dt_out : fmin(1e-6, t_max);
     if (dt_out < t_max * 1e-7 || dt_out > t_max) {
+        char xs[32];
         gw_chain_resolved_free(&res);
-        return gw_err_set(err, GW_EINVAL, "dt-out: %g s is outside [t-max/1e7, t-max] = [%g, %g]", dt_out,
-                          t_max * 1e-7, t_max);
+        return gw_err_set(err, GW_EINVAL, "dt-out: %s s is outside [t-max/1e7, t-max] = [%g, %g]",
+                          gw_num_text(xs, sizeof xs, dt_out), t_max * 1e-7, t_max);
     }
     /* with trace = 1 (the program: --out) every bead's x and v are kept at each
      * sample and event: --n 1000 --t-max 1 --dt-out 1e-7 --out grew past 1.3 GB

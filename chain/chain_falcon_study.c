@@ -434,9 +434,10 @@ int gw_chain_falcon_speeds(const double *vimp, int n_vimp, const double *heights
         int is_h = i >= n_vimp, k = is_h ? i - n_vimp + 1 : i + 1;
         double x = is_h ? heights_mm[i - n_vimp] : vimp[i];
         double lo = is_h ? GW_CHAIN_HEIGHT_MIN_MM : GW_CHAIN_VIMP_MIN, hi = is_h ? GW_CHAIN_HEIGHT_MAX_MM : GW_CHAIN_VIMP_MAX;
+        char xs[32];
         if (!(x >= lo && x <= hi)) /* the list parser's message (gw_parse_double_list_in) */
-            return gw_err_set(err, GW_EINVAL, "%s: item %d is %g, outside [%g, %g]", is_h ? "heights" : "vimp", k, x,
-                              lo, hi);
+            return gw_err_set(err, GW_EINVAL, "%s: item %d is %s, outside [%g, %g]", is_h ? "heights" : "vimp", k,
+                              gw_num_text(xs, sizeof xs, x), lo, hi);
         if (is_h && g_fall != GW_CHAIN_G_EARTH && !(v[i] >= vlo && v[i] <= GW_CHAIN_VIMP_MAX))
             return gw_err_set(err, GW_EINVAL, "heights: item %d is %g mm: at gravity %g m/s^2 it falls to v = "
                               "sqrt(2 g h) = %g m/s, outside the impact speeds [%g, %g] m/s", k, x, g_fall, v[i], vlo,

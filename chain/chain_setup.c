@@ -387,6 +387,22 @@ static int check_wall(const gw_chain_setup *s, gw_err *err)
 
 /* The sheet as a wall law (law other than fitted), a loss the Maxwell arms can
  * give, the sensor body and guide friction on the resolved column. */
+/* Contact damping (kk, hc) acts on bead contacts and on a Hertz wall, not on a
+ * layer, plastic or viscoelastic wall (gw_chain_wall). One body on such a wall
+ * ran as if undamped, with exit 0: chain --damping kk --gamma 1e5 --sheet brass
+ * --sheet-law layer gave eps_eff 1.000, and --restitution 0.5 under sheet-law
+ * material gave 0.615, the sheet's own. */
+int chain_damping_check(const gw_chain_params *p, gw_err *err)
+{
+    if (!p || p->n != 1 || p->damping == GW_DAMP_NONE ||
+        !(p->wall.layer || p->wall.yield_pressure > 0 || p->wall.loss > 0))
+        return GW_OK;
+    return gw_err_set(err, GW_EINVAL, "damping: has no effect on one bead against a sheet under a layer, plastic "
+                      "or viscoelastic law (kk and hc act on bead contacts and on a Hertz wall; this wall dissipates "
+                      "by its own law, which sheet-loss and sheet-yield set): give more beads, sheet-law fitted or "
+                      "hertz, or no damping");
+}
+
 static int apply_wall(const gw_chain_setup *s, gw_chain_resolved *r, gw_err *err)
 {
     char name[32];

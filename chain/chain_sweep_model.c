@@ -9,6 +9,7 @@
 #include <string.h>
 
 #include "chain_model.h"
+#include "chain_wall.h"
 #include "gw_chain_study.h"
 #include "gw_sweep.h"
 
@@ -44,7 +45,8 @@ static int check_tally(chain_dt_tally *tally, int nk, const char *const *names, 
                           plan of these checks gives the step the case will take */
         gw_chain_resolved r;
         double dt, dt_max;
-        rc = gw_chain_setup_resolve(&s, &r, err) == GW_OK && chain_run_step(&r.params, &r.run, &dt, &dt_max, err) == GW_OK
+        rc = gw_chain_setup_resolve(&s, &r, err) == GW_OK && chain_damping_check(&r.params, err) == GW_OK &&
+                     chain_run_step(&r.params, &r.run, &dt, &dt_max, err) == GW_OK
                  ? GW_OK
                  : GW_EINVAL;
         if (rc == GW_OK && tally)

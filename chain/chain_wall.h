@@ -30,5 +30,10 @@ double chain_wall_elastic_energy(const chain_wall_law *w, double d);
 double chain_wall_elastic_overlap(const chain_wall_law *w, double f);
 /* Number of Maxwell arms between tau_min and tau_max (one per decade). */
 int chain_wall_arms(const gw_chain_wall *wall, double *tau_min, double *tau_max);
+/* GW_EINVAL naming damping when p's contact damping has nothing to act on: one
+ * body (n = 1, a drop's block) on a layer, plastic or viscoelastic wall, which
+ * the damping leaves to its own law (chain_setup.c). A single run's check: a
+ * study over a range of N has bead contacts from N = 2. */
+int chain_damping_check(const gw_chain_params *p, gw_err *err);
 
 #endif

@@ -769,7 +769,7 @@ typedef struct gw_chain_drop_result {
     gw_chain_drop_impact *impacts;
     int n_impacts;          /* episodes reaching peak_threshold */
     int n_episodes;         /* every contact episode of bead 1 with the sensor */
-    double f_max, t_fmax;   /* largest peak of the run */
+    double f_max, t_fmax;   /* largest peak of the run (NaN, NaN: no peak) */
     gw_chain_energy e_end;  /* ledger at t_end (gravity potential -m g x, x = 0 at
                                the first contact) */
     double e0;              /* energy at t = 0, J (n m g h for touching beads) */

@@ -245,7 +245,10 @@ int gw_check_range(double x, const char *name, double lo, double hi, gw_err *err
     if (!isfinite(x))
         return gw_err_set(err, GW_EINVAL, "%s: must be finite, got %g", name, x);
     if (x < lo || x > hi)
-        return gw_err_set(err, GW_EINVAL, "%s: %g is outside [%g, %g]", name, x, lo, hi);
+    {
+        char xs[32];
+        return gw_err_set(err, GW_EINVAL, "%s: %s is outside [%g, %g]", name, gw_num_text(xs, sizeof xs, x), lo, hi);
+    }
     return GW_OK;
 }
 
@@ -289,11 +292,13 @@ int gw_parse_double_list_in(const char *s, const char *name, double lo, double h
             break;
         double x = v[count];
         if (x < lo || x > hi || (open_lo && !(x > lo))) {
+            char xs[32];
+            gw_num_text(xs, sizeof xs, x);
             if (open_lo && !isfinite(hi))
-                rc = gw_err_set(err, GW_EINVAL, "%s: item %d is %g, must be > %g", name, count + 1, x, lo);
+                rc = gw_err_set(err, GW_EINVAL, "%s: item %d is %s, must be > %g", name, count + 1, xs, lo);
             else
-                rc = gw_err_set(err, GW_EINVAL, "%s: item %d is %g, outside %s%g, %g]", name,
-                                count + 1, x, open_lo ? "(" : "[", lo, hi);
+                rc = gw_err_set(err, GW_EINVAL, "%s: item %d is %s, outside %s%g, %g]", name,
+                                count + 1, xs, open_lo ? "(" : "[", lo, hi);
             break;
         }
         count++;

@@ -7,6 +7,7 @@
  */
 #define _GNU_SOURCE
 #include <locale.h>
+#include <math.h>
 #include <pthread.h>
 #include <stdlib.h>
 
@@ -57,6 +58,16 @@ int gw_snprintf(char *buf, size_t n, const char *fmt, ...)
     int k = gw_vsnprintf(buf, n, fmt, ap);
     va_end(ap);
     return k;
+}
+
+const char *gw_num_text(char *buf, size_t n, double x)
+{
+    for (int digits = 6; digits <= 17; digits++) {
+        gw_snprintf(buf, n, "%.*g", digits, x);
+        if (!isfinite(x) || gw_strtod(buf, NULL) == x)
+            break;
+    }
+    return buf;
 }
 
 int gw_fprintf(FILE *fp, const char *fmt, ...)

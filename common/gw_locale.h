@@ -27,6 +27,11 @@ double gw_strtod(const char *s, char **end);
 int gw_snprintf(char *buf, size_t n, const char *fmt, ...) GW_FMT(3, 4);
 int gw_vsnprintf(char *buf, size_t n, const char *fmt, va_list ap) GW_FMT(3, 0);
 int gw_fprintf(FILE *fp, const char *fmt, ...) GW_FMT(2, 3);
+/* x as the text of %g when that reads back as x, else with the fewest more
+ * digits that do (at most 17): a value refused just outside a bound is shown
+ * as given, not rounded onto the bound ("1000 is outside [0, 1000]" was said of
+ * 1000.0000001). Returns buf (n >= 32 holds every double). */
+const char *gw_num_text(char *buf, size_t n, double x);
 
 /* The permissions of a file the library creates in place of `replaces`: the
  * replaced regular file's, or 0666 less the process's umask (what a shell's >

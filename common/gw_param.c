@@ -76,10 +76,12 @@ static int range_bad(const gw_param *p, double x, gw_err *err, const char *what)
     if (p->or_zero && x == 0)
         return GW_OK;
     const char *zero = p->or_zero ? " (or 0)" : "";
+    char xs[32];
+    gw_num_text(xs, sizeof xs, x);
     if (!isfinite(p->max))
-        return gw_err_set(err, GW_EINVAL, "%s: %s%g must be %s %g%s", p->name, what, x,
+        return gw_err_set(err, GW_EINVAL, "%s: %s%s must be %s %g%s", p->name, what, xs,
                           p->open_min ? ">" : ">=", p->min, zero);
-    return gw_err_set(err, GW_EINVAL, "%s: %s%g is outside %s%g, %g%s%s", p->name, what, x,
+    return gw_err_set(err, GW_EINVAL, "%s: %s%s is outside %s%g, %g%s%s", p->name, what, xs,
                       p->open_min ? "(" : "[", p->min, p->max, p->open_max ? ")" : "]", zero);
 }
 
@@ -279,8 +281,10 @@ static int set_text(const gw_param *t, const gw_param *p, void *obj, const char 
             return rc;
         for (int k = 0; p->open_max && k < n; k++) /* the parser's upper end is closed */
             if (!(v[k] < p->max)) {
+                char xs[32]; /* the item (the bound was printed as the item) */
+                gw_num_text(xs, sizeof xs, v[k]);
                 free(v);
-                return gw_err_set(err, GW_EINVAL, "%s: item %d is %g, must be < %g", p->name, k + 1, p->max, p->max);
+                return gw_err_set(err, GW_EINVAL, "%s: item %d is %s, must be < %g", p->name, k + 1, xs, p->max);
             }
         gw_param_list *l = field(obj, p);
         free(l->v);

@@ -7,6 +7,7 @@
 
 #include "gw_cli.h"
 #include "chain_options.h"
+#include "chain_wall.h"
 
 static const char *chain_summary =
     "One collision of a column of N beads with a wall (Falcon et al. 1998, eq. F.11):\n"
@@ -171,8 +172,9 @@ int gw_cmd_chain(int argc, char **argv)
         c.run.sample = gw_chain_trace_sample;
         c.run.sample_ctx = &tr;
     }
-    /* the run's bounds (samples, trace, steps, memory) before anything is allocated */
-    if (gw_chain_run_check(&c.params, &c.run, &err) != GW_OK) {
+    /* damping with nothing to act on, and the run's bounds (samples, trace,
+     * steps, memory), before anything is allocated */
+    if (chain_damping_check(&c.params, &err) != GW_OK || gw_chain_run_check(&c.params, &c.run, &err) != GW_OK) {
         gw_cli_study_error(gw_chain_setup_params(), "chain", GW_EINVAL, &err); /* "NAME: ..." -> "chain --NAME: ..." */
         fprintf(stderr, "granwave %s\n", err.msg);
         chain_cli_free(&c);
@@ -224,10 +226,16 @@ int gw_cmd_chain(int argc, char **argv)
             free(hdr);
         }
     } else {
+        /* results at t_max, not final, or an overlap beyond the radius: the
+         * library's text (out of memory for it: none), said on stderr and
+         * listed in chain.json and --json */
+        char *w = NULL;
+        (void)gw_chain_result_warnings(&r, &w);
         if (c.out) {
             char *hdr = run_header(&c, &r, argc, argv);
             char path[4096];
             cJSON *o = chain_result_json(&c, &r, wall_ms);
+            gw_cli_json_warnings(o, w);
             gw_outset set; /* all of this run's files, or (a write failed) the earlier run's as they were */
             memset(&set, 0, sizeof set);
             if ((!hdr && gw_err_set(&err, GW_ENOMEM, "out of memory") != GW_OK) ||
@@ -242,21 +250,19 @@ int gw_cmd_chain(int argc, char **argv)
             cJSON_Delete(o);
             free(hdr);
         }
-        if (code == 0) { /* results at t_max, not final, or an overlap beyond the radius: the library says which */
-            char *w = NULL; /* the library's text (out of memory for it: no line) */
-            (void)gw_chain_result_warnings(&r, &w);
+        if (code == 0)
             gw_cli_warnings("chain", w);
-            free(w);
-        }
         if (code == 0) {
             if (c.json) {
                 cJSON *o = chain_result_json(&c, &r, wall_ms);
+                gw_cli_json_warnings(o, w);
                 code = gw_cli_json_stdout("chain", o);
                 cJSON_Delete(o);
             } else {
                 print_text(&c, &r);
             }
         }
+        free(w);
     }
     gw_chain_result_free(&r);
     gw_chain_trace_free(&tr);

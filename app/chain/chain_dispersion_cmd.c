@@ -551,6 +551,7 @@ int gw_cmd_dispersion(int argc, char **argv)
         const gw_chain_disp_params *p = &out.params; /* what ran */
         cJSON *settings = disp_settings_json(&c, p, out.solver, &out.solver_params);
         cJSON *o = disp_json(p, &r, settings, wall_ms);
+        gw_cli_json_warnings(o, out.warnings); /* in dispersion.json and --json as on stderr */
         char *hdr = gw_cli_provenance("dispersion", argc, argv, settings);
         if (c.out && (!hdr ? gw_err_set(&err, GW_ENOMEM, "out of memory") != GW_OK
                            : disp_write_out(c.out, hdr, o, &r, &err) != GW_OK)) {

@@ -291,7 +291,7 @@ static char *drop_header(const drop_cli *d, int argc, char **argv)
 }
 
 static int write_outputs(const drop_cli *d, const gw_chain_drop_result *r, const gw_chain_trace *tr,
-                         double wall_ms, int argc, char **argv, char *buf, gw_err *err)
+                         double wall_ms, const char *warnings, int argc, char **argv, char *buf, gw_err *err)
 {
     char *hdr = drop_header(d, argc, argv);
     if (!hdr)
@@ -310,6 +310,7 @@ static int write_outputs(const drop_cli *d, const gw_chain_drop_result *r, const
         rc = write_tables(d, r, hdr, buf, err);
     if (rc == GW_OK) {
         cJSON *o = result_json(d, r, wall_ms, buf);
+        gw_cli_json_warnings(o, warnings);
         if (gw_path_join(path, sizeof path, d->c.out, "drop.json") != GW_OK)
             rc = gw_err_set(err, GW_EINVAL, "drop --out: path too long");
         else
@@ -400,11 +401,12 @@ int gw_cmd_drop(int argc, char **argv)
     if (rc != GW_OK) {
         fprintf(stderr, "granwave %s%s\n", rc == GW_EINVAL || strncmp(err.msg, "drop: ", 6) == 0 ? "" : "drop: ", err.msg);
         code = rc == GW_EINVAL ? 2 : 1;
-    } else if (d.c.out && write_outputs(&d, r, &tr, o.wall_time_ms, argc, argv, buf, &err) != GW_OK) {
+    } else if (d.c.out && write_outputs(&d, r, &tr, o.wall_time_ms, o.warnings, argc, argv, buf, &err) != GW_OK) {
         fprintf(stderr, "granwave drop --out: %s\n", err.msg);
         code = 1;
     } else if (d.c.json) {
         cJSON *j = result_json(&d, r, o.wall_time_ms, buf);
+        gw_cli_json_warnings(j, o.warnings);
         code = gw_cli_json_stdout("drop", j);
         cJSON_Delete(j);
     } else {

@@ -309,6 +309,7 @@ int gw_cmd_falcon(int argc, char **argv)
     }
     cJSON *sum = summary_json(&f);
     gw_cli_warnings("falcon", f.o.warnings); /* the library's text: unfinished collisions */
+    gw_cli_json_warnings(sum, f.o.warnings); /* and in falcon_summary.json and --json */
     if (f.o.trace_failed) { /* a trace's run: the study stands, its --out files are not written */
         fprintf(stderr, "granwave falcon --out: %s\n", err.msg);
         code = 1;

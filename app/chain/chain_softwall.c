@@ -199,6 +199,7 @@ int gw_cmd_softwall(int argc, char **argv)
         cJSON_AddNumberToObject(o, "n_held", so.n_held);             /* of them, held by gravity */
         cJSON_AddNumberToObject(o, "n_held_rigid", so.n_held_rigid); /* of t_q_rigid's 20 columns */
         gw_cli_warnings("softwall", so.warnings); /* unfinished: F_max, tau_max may not be final */
+        gw_cli_json_warnings(o, so.warnings);     /* and in softwall.json and --json */
         cJSON *set = chain_cli_settings_json(&c);
         chain_cli_settings_runs(set, so.ncase, so.t_max, so.dt_out, so.dt, so.dt_max);
         cJSON_AddItemToObject(o, "settings", set);

@@ -157,6 +157,7 @@ int gw_cmd_wavespeed(int argc, char **argv)
             cJSON_AddItemToArray(held, gw_json_bools(wo.held + (size_t)iv * wo.nn, wo.nn));
         cJSON_AddItemToObject(o, "front_held", gw_json_bools(wo.front_held, nv));
         gw_cli_warnings("wavespeed", wo.warnings); /* unfinished collisions of the tau_N sweep */
+        gw_cli_json_warnings(o, wo.warnings);      /* and in wavespeed.json and --json */
         cJSON *set = chain_cli_settings_json(&c);
         chain_cli_settings_runs(set, wo.ncase, wo.t_max, wo.dt_out, wo.dt, wo.dt_max);
         cJSON_AddItemToObject(o, "settings", set);

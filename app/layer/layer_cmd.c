@@ -205,12 +205,12 @@ int gw_cmd_layer_make(int argc, char **argv)
         fprintf(stderr, "granwave layer-make --out: %s\n", err.msg);
         return 1;
     }
-    { /* written: a pile not settled (its header says converged 0), a trim that took nothing away */
-        char *w = NULL; /* the library's texts (out of memory for them: no line) */
-        (void)gw_layer_make_result_warnings(&r, mp.t_max, out, &w);
-        gw_cli_warnings("layer-make", w);
-        free(w);
-    }
+    /* written: a pile not settled (its header says converged 0), a trim that
+     * took nothing away; the library's texts (out of memory for them: none),
+     * on stderr and in --json's warnings */
+    char *mw = NULL;
+    (void)gw_layer_make_result_warnings(&r, mp.t_max, out, &mw);
+    gw_cli_warnings("layer-make", mw);
     double h = 0;
     for (int k = 0; k < s.n; k++)
         h = fmax(h, s.y[k] + s.r[k]);
@@ -258,6 +258,7 @@ int gw_cmd_layer_make(int argc, char **argv)
         if (!j)
             cJSON_Delete(settings);
         settings = NULL;
+        gw_cli_json_warnings(j, mw);
         code = gw_cli_json_stdout("layer-make", j);
         cJSON_Delete(j);
     } else {
@@ -276,6 +277,7 @@ int gw_cmd_layer_make(int argc, char **argv)
         printf("  wall time %.0f ms, %ld steps, %ld list rebuilds; written to %s\n", r.wall_ms, r.steps,
                r.rebuilds, out);
     }
+    free(mw);
     gw_layer_sample_free(&s);
     cJSON_Delete(settings);
     return code;
@@ -705,19 +707,7 @@ int gw_cmd_layer_impact(int argc, char **argv)
     (void)gw_layer_impact_result_warnings(&r, &w);
     gw_cli_warnings("layer-impact", w);
     cJSON *j = impact_json(&c, &r, &sp);
-    cJSON *wl = cJSON_AddArrayToObject(j, "warnings");
-    for (const char *p = w; p && *p;) {
-        const char *nl = strchr(p, '\n');
-        const size_t len = nl ? (size_t)(nl - p) : strlen(p);
-        char *one = malloc(len + 1);
-        if (one) {
-            memcpy(one, p, len);
-            one[len] = '\0';
-            cJSON_AddItemToArray(wl, cJSON_CreateString(one));
-        }
-        free(one);
-        p += len + (nl != NULL);
-    }
+    gw_cli_json_warnings(j, w);
     if (c.out) {
         /* the command line and every setting (defaults included, the step used)
          * head each CSV and the HDF5 "run" attribute, and the warnings after them */

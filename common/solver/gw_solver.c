@@ -77,12 +77,13 @@ const char *gw_solver_method_used(const gw_solver_type *type, int method)
 int gw_solver_tolerances_check(double rtol, double atol, const char *rname, const char *aname,
                                gw_err *err)
 {
+    char xs[32];
     if (!(rtol >= GW_TOL_MIN && rtol <= GW_TOL_MAX)) /* also refuses NaN */
-        return gw_err_set(err, GW_EINVAL, "%s: %g is outside [%g, %g]", rname, rtol, GW_TOL_MIN,
-                          GW_TOL_MAX);
+        return gw_err_set(err, GW_EINVAL, "%s: %s is outside [%g, %g]", rname, gw_num_text(xs, sizeof xs, rtol),
+                          GW_TOL_MIN, GW_TOL_MAX);
     if (!(atol >= GW_TOL_MIN && atol <= GW_TOL_MAX))
-        return gw_err_set(err, GW_EINVAL, "%s: %g is outside [%g, %g]", aname, atol, GW_TOL_MIN,
-                          GW_TOL_MAX);
+        return gw_err_set(err, GW_EINVAL, "%s: %s is outside [%g, %g]", aname, gw_num_text(xs, sizeof xs, atol),
+                          GW_TOL_MIN, GW_TOL_MAX);
     return GW_OK;
 }
 

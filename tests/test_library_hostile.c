@@ -469,6 +469,51 @@ static int writers_null(void)
     return 0;
 }
 
+/* gw_layer_rings with a negative count is a no-op (it asked realloc for
+ * SIZE_MAX bytes: an abort under ASan); 4 rings still get their values. */
+static int rings_negative_count(void)
+{
+    gw_layer_params p = gw_layer_params_default();
+    gw_layer_body b[2] = {{.x = 0.1, .y = 0.1, .r = 1e-2}, {.x = 0.3, .y = 0.1, .r = 1e-2}};
+    gw_layer *L = NULL;
+    gw_err e = {{0}};
+    EXPECT(gw_layer_create(&p, 2, b, &L, &e) == GW_OK);
+    double kin[4] = {7, 7, 7, 7}, st[4] = {7, 7, 7, 7}, co[4] = {7, 7, 7, 7};
+    gw_layer_rings(L, 0.2, 0.1, 0.05, -3, kin, st, co);
+    const int untouched = kin[0] == 7 && st[0] == 7 && co[0] == 7;
+    /* control: both discs 0.1 m from the centre, in ring 2, at rest and apart */
+    gw_layer_rings(L, 0.2, 0.1, 0.05, 4, kin, st, co);
+    gw_layer_free(L);
+    EXPECT(untouched);
+    EXPECT(kin[2] == 0 && st[2] == 0 && co[2] == 0);
+    return 0;
+}
+
+/* A wall-force trace with a NaN sample is no spectrum (every bin was NaN and
+ * the peak a meaningless bin, GW_OK); the same trace without it has its peak
+ * at the sine's frequency. */
+static int spectrum_nan_force(void)
+{
+    gw_chain_trace t;
+    gw_chain_trace_init(&t, 1);
+    const double f = 20e3, dt = 1e-6, x[2] = {0, 0}; /* 20 kHz sampled at 1 MHz, 1000 samples */
+    for (int k = 0; k < 1000; k++)
+        gw_chain_trace_sample(&t, k * dt, x, k == 300 ? NAN : sin(2 * M_PI * f * k * dt), 0);
+    gw_chain_spectrum sp;
+    gw_err e = {{0}};
+    const int rc = gw_chain_wall_spectrum(&t, 0, 999 * dt, 0, 0, 0, &sp, &e);
+    gw_chain_spectrum_free(&sp);
+    t.f[300] = sin(2 * M_PI * f * 300 * dt);
+    const int ok = gw_chain_wall_spectrum(&t, 0, 999 * dt, 0, 0, 0, &sp, &e);
+    const double peak = sp.f_peak;
+    gw_chain_spectrum_free(&sp);
+    gw_chain_trace_free(&t);
+    EXPECT(rc == GW_EINVAL);
+    /* the peak within a bin of the zero-padded spectrum, 1/(8 T) = 125 Hz */
+    EXPECT(ok == GW_OK && fabs(peak - f) < 250);
+    return 0;
+}
+
 /* ---- two threads, two chains: each the answer it gives alone ---- */
 
 typedef struct {
@@ -541,6 +586,8 @@ int main(void)
         {"gw_layer_solve_point: NULL results", solve_point_null},
         {"gw_layer_impact_step_check/fall_check: NULL, NaN gravity", step_and_fall_checks},
         {"gw_layer_write_vtk/pvd: NULL, n < 0, NaN time", writers_null},
+        {"gw_layer_rings: a negative count", rings_negative_count},
+        {"gw_chain_wall_spectrum: a NaN force sample", spectrum_nan_force},
         {"two threads, two chains", two_threads},
     };
     for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++)

@@ -54,7 +54,9 @@ int gw_chain_rk4_study_apply(gw_chain_run_opts *run, const gw_chain_params *p, d
                              int keep_dt_out)
 {
     int m = gw_chain_rk4_steps_per_tc(rel_acc);
-    if (m <= 0)
+    /* NULL was written through (SIGSEGV); a vmax of 0, NaN or inf set a
+     * dt_out of inf, NaN or 0 (1e-308 m/s: 1.3e59 s) */
+    if (m <= 0 || !run || !p || (!keep_dt_out && !(vmax > 0 && isfinite(vmax))))
         return 0;
     run->solver = gw_solver_rk4;
     run->sp.method = GW_METHOD_DEFAULT;
@@ -484,17 +486,39 @@ int chain_sampling_check(int n, double t_expect, double dt_out, int given, gw_er
                       given ? "" : " (the wall's contact is far shorter than the column's: a stiff wall on soft contacts)");
 }
 
+/* The run options' numbers whose 0 is "the default" or "off": each finite
+ * and >= 0. A NaN or negative value failed every "> 0" test and ran as that
+ * default (dt_out -1 sampled every tau_1/200, steps_per_tc NaN took 400 RK4
+ * steps per T_c, t_max NaN the default t-max), with GW_OK. GW_EINVAL naming
+ * the member, or GW_OK. */
+static int opts_numbers_check(const gw_chain_run_opts *o, gw_err *err)
+{
+    const struct {
+        const char *name;
+        double v;
+    } f[] = {{"dt_out", o->dt_out}, {"t_max", o->t_max}, {"energy_tol", o->energy_tol},
+             {"front_threshold", o->front_threshold}, {"steps_per_tc", o->steps_per_tc}};
+    for (size_t i = 0; i < sizeof f / sizeof f[0]; i++)
+        if (!(isfinite(f[i].v) && f[i].v >= 0))
+            return gw_err_set(err, GW_EINVAL, "gw_chain_run_opts.%s: %g is not a finite number >= 0 (0: the default)",
+                              f[i].name, f[i].v);
+    return GW_OK;
+}
+
 /* The plan; whole 0: only the bounds that hold whatever t_max the run is cut
  * at (t_max above the collision's expected length), not those of a run going
  * on to t_max (chain_collide_plan_early) */
 static int plan_make(const gw_chain_params *p0, const gw_chain_run_opts *o, collide_plan *pl, int whole, gw_err *err)
 {
+    memset(pl, 0, sizeof *pl);
+    int orc = opts_numbers_check(o, err);
+    if (orc != GW_OK)
+        return orc;
     gw_chain_params q = *p0; /* the time scales at chain_speed_scale; p0 itself for the rest */
     q.v_imp = chain_speed_scale(p0);
     const gw_chain_params *p = &q;
     const int n = p->n;
     const double m0 = p->masses ? p->masses[0] : p->mass;
-    memset(pl, 0, sizeof *pl);
     pl->type = o->solver ? o->solver : gw_solver_cvode;
     pl->tau1 = gw_chain_tau1(m0, p->kwall, p->v_imp);
     pl->dt_out = o->dt_out > 0 ? o->dt_out : pl->tau1 / 200.0;

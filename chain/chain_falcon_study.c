@@ -391,6 +391,8 @@ static int pick_solver(const gw_chain_falcon_setup *s, gw_chain_resolved *r, dou
 
 int gw_chain_falcon_sizes_check(long a, long b, gw_err *err)
 {
+    if (a < 1 || b < a) /* -5:9.2e18 passed */
+        return gw_err_set(err, GW_EINVAL, "n: %ld:%ld is not a range of column sizes (1 <= A < B)", a, b);
     if (a == b)
         return gw_err_set(err, GW_EINVAL, "n: %ld:%ld is one column size, and the study fits tau_N = T_q (N - 1) + "
                           "tau_1 over N (T_q, the wave speed 4R/T_q): give at least two sizes, e.g. %ld:%ld (one "

@@ -205,6 +205,8 @@ static int nodes_for(double alpha)
 int gw_layer_solve_point(double alpha, double poisson, double lambda, double *dhat,
                          double *fhat, gw_err *err)
 {
+    if (!dhat || !fhat) /* they were written through (SIGSEGV) */
+        return gw_err_set(err, GW_EINVAL, "gw_layer_solve_point: %s is NULL", !dhat ? "dhat" : "fhat");
     if (!(alpha > 0 && alpha <= 100) || !(poisson >= 0 && poisson <= 0.5) ||
         !(lambda >= 0 && lambda <= 1))
         return gw_err_set(err, GW_EINVAL, "layer law: a/h in (0, 100], Poisson ratio in [0, 0.5], "

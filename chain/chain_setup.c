@@ -85,9 +85,13 @@ int gw_chain_study_work_check(long a, long b, int runs, gw_err *err)
 {
     if (runs < 1)
         runs = 1;
-    /* sum of N^2 for N = a..b in double (b <= 1e5 in every table: exact to 1e-16) */
-    double x = (double)a - 1, y = (double)b;
-    double work = runs * (y * (y + 1) * (2 * y + 1) - x * (x + 1) * (2 * x + 1)) / 6;
+    if (a < 1 || b < a) /* 5:1 passed with a negative work */
+        return gw_err_set(err, GW_EINVAL, "n: %ld:%ld is not a range of column sizes (1 <= A <= B)", a, b);
+    /* sum of N^2 for N = a..b as m a^2 + a m (m - 1) + (m - 1) m (2m - 1) / 6
+     * with m = b - a + 1: terms >= 0, so no cancellation (S(b) - S(a - 1) gave 0
+     * at a = b = 9.2e18 and let the range pass); exact to 1e-16 where b <= 1e5 */
+    const double m = (double)b - (double)a + 1, x = (double)a;
+    double work = runs * (m * x * x + x * m * (m - 1) + (m - 1) * m * (2 * m - 1) / 6);
     if (work > GW_CHAIN_STUDY_WORK_MAX)
         return gw_err_set(err, GW_EINVAL,
                           "n: %ld:%ld at %d column%s per N is %.3g bead^2 of work (sum of N^2), above the "
@@ -115,6 +119,8 @@ int gw_chain_study_speeds_check(const double *v, int n, int n_speeds, gw_err *er
      * of those (i). Every pair compared (n^2 / 2) took 220 s before the first
      * collision of falcon --n 1:2 with 320000 speeds (the study's work bound
      * takes 4e5). */
+    if (n >= 2 && !v) /* it was read (SIGSEGV) */
+        return gw_err_set(err, GW_EINVAL, "gw_chain_study_speeds_check: v is NULL");
     if (n < 2)
         return GW_OK;
     speed_at *s = malloc((size_t)n * sizeof *s);

@@ -37,6 +37,16 @@ int gw_sheet_apply(const gw_sheet *s, gw_sheet_law law, double yield, double los
     if (!s || !p || !layer)
         return gw_err_set(err, GW_EINVAL, "gw_sheet_apply: %s is NULL", !s ? "s" : !p ? "p" : "layer");
     *layer = NULL;
+    /* a law outside the enum ran as the layer law, and a NaN yield or loss as
+     * the sheet's own, with GW_OK; NULL materials gave a NaN kwall */
+    if (!(law >= GW_SHEET_FITTED && law <= GW_SHEET_MATERIAL))
+        return gw_err_set(err, GW_EINVAL, "sheet-law: %d is not a sheet law (fitted, hertz, layer, material)", (int)law);
+    if (isnan(yield) || isinf(yield) || isnan(loss) || isinf(loss))
+        return gw_err_set(err, GW_EINVAL, "%s: %g is not a finite number (< 0: the sheet's own)",
+                          isnan(yield) || isinf(yield) ? "sheet-yield" : "sheet-loss",
+                          isnan(yield) || isinf(yield) ? yield : loss);
+    if (!bead || !wall)
+        return gw_err_set(err, GW_EINVAL, "gw_sheet_apply: %s is NULL", !bead ? "bead" : "wall");
     memset(&p->wall, 0, sizeof p->wall);
     if (law == GW_SHEET_FITTED) {
         p->kwall = gw_sheet_kwall(s, p->mass);

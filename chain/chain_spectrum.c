@@ -57,6 +57,13 @@ int gw_chain_wall_spectrum(const gw_chain_trace *tr, double t0, double t1, doubl
     memset(sp, 0, sizeof *sp);
     if (!tr || tr->len < 2 || !(t1 > t0) || !isfinite(t1) || t0 < tr->t[0] || t1 > tr->t[tr->len - 1])
         return gw_err_set(err, GW_EINVAL, "wall spectrum: interval [%g, %g] s not inside the trace", t0, t1);
+    /* a force or time that is not finite in the interval made every bin NaN
+     * and the peak a bin of no meaning (a NaN at one of 64 samples: f_peak
+     * 64 kHz, GW_OK) */
+    for (size_t k = 0; k < tr->len; k++)
+        if (tr->t[k] >= t0 && tr->t[k] <= t1 && (!isfinite(tr->f[k]) || !isfinite(tr->t[k])))
+            return gw_err_set(err, GW_EINVAL, "wall spectrum: the trace's force at sample %zu (t = %g s) is not "
+                              "finite", k, tr->t[k]);
     if (!(dt > 0))
         dt = median_spacing(tr);
     double span = (t1 - t0) / dt;

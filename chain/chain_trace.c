@@ -78,16 +78,21 @@ static double ceil_2digits(double v)
 int gw_chain_trace_check(int n, double span, double dt_out, double events, gw_err *err)
 {
     /* CSV "%.12e," is 19-20 B a value (measured 19.8 on drop --n 100); HDF5 8 */
+    /* a NaN passed every bound below (span, dt_out or events NaN: GW_OK) */
+    if (n < 0 || !(isfinite(span) && span >= 0) || !(isfinite(dt_out) && dt_out > 0) ||
+        !(isfinite(events) && events >= 0))
+        return gw_err_set(err, GW_EINVAL, "gw_chain_trace_check: n %d, span %g s, dt-out %g s, events %g: not a trace "
+                          "(n, span, events >= 0, dt-out > 0, all finite)", n, span, dt_out, events);
     const double per_value = 20.0 + (GW_HAVE_HDF5 ? 8.0 : 0.0), limit = 5e9;
     const double values = 2.0 * n + 2, rows = span / dt_out + 1 + events;
     const double files = rows * values * per_value;
     if (files <= limit)
         return GW_OK;
     const double free_rows = limit / (values * per_value) - events; /* samples left for dt-out */
-    if (free_rows < 16)
+    if (free_rows < 16) /* the events and 16 samples: 2^31 beads said "about 0 GB" with no events */
         return gw_err_set(err, GW_EINVAL, "n: the trace of %d beads would write about %.3g GB at any dt-out (its "
-                          "contact events alone), above the 5 GB limit: run without storing it (the program: "
-                          "without --out)", n, events * values * per_value / 1e9);
+                          "contact events and 16 samples), above the 5 GB limit: run without storing it (the program: "
+                          "without --out)", n, (events + 16) * values * per_value / 1e9);
     return gw_err_set(err, GW_EINVAL, "dt-out: the trace of %d beads at %g s (about %.3g samples over %.3g s) would "
                       "write about %.3g GB (%.3g GB in memory), above the 5 GB limit: raise dt-out to %.2g s or more",
                       n, dt_out, rows, span, files / 1e9, rows * values * 8 / 1e9, ceil_2digits(span / free_rows));

@@ -260,9 +260,9 @@ int gw_chain_params_validate(const gw_chain_params *p, gw_err *err);
 /* Set p->kwall and p->wall for sheet s under law, for the beads of p (radius,
  * mass) of material bead; wall is the material of the bare sensor (sheet "none"
  * and the Hertz time scale). yield and loss override the sheet's constants when
- * >= 0 (0: none). A layer law is created into *layer (caller frees with
- * gw_layer_law_free after the runs; NULL when none). GW_EINVAL, GW_ENOMEM,
- * GW_ESOLVER with a message. */
+ * >= 0 (0: none), each finite. A layer law is created into *layer (caller frees with
+ * gw_layer_law_free after the runs; NULL when none). GW_EINVAL (also for a law
+ * outside gw_sheet_law or a NULL pointer), GW_ENOMEM, GW_ESOLVER with a message. */
 int gw_sheet_apply(const gw_sheet *s, gw_sheet_law law, double yield, double loss,
                    const gw_material *bead, const gw_material *wall, gw_chain_params *p,
                    gw_layer_law **layer, gw_err *err);
@@ -331,6 +331,10 @@ double gw_chain_momentum(const gw_chain *c, const double *y);
 typedef int (*gw_chain_sample_fn)(void *ctx, double t, const double *y, double f_wall,
                                   int is_event);
 
+/* The run's options. dt_out, t_max, energy_tol, front_threshold and
+ * steps_per_tc are each a finite number >= 0 (0: the default or off): the run
+ * (gw_chain_collide, gw_chain_run_check) refuses any other with GW_EINVAL
+ * naming the member. */
 typedef struct gw_chain_run_opts {
     const gw_solver_type *solver; /* default CVODE */
     gw_solver_params sp;          /* dt == 0 for rk4: T_c / steps_per_tc, see below */
@@ -374,7 +378,8 @@ int gw_chain_rk4_study_covers(const gw_chain_params *p, long n_max);
  * M = gw_chain_rk4_steps_per_tc(rel_acc) steps per T_c and, unless keep_dt_out,
  * samples every tau_1/10 of the fastest impact vmax (F_max and tau_N are
  * events; samples feed the energy check). Returns M, or 0 (run unchanged) when
- * rel_acc is outside [1e-9, 1e-2]. */
+ * rel_acc is outside [1e-9, 1e-2], run or p is NULL, or (without keep_dt_out)
+ * vmax is not a finite speed > 0. */
 int gw_chain_rk4_study_apply(gw_chain_run_opts *run, const gw_chain_params *p, double rel_acc, double vmax,
                              int keep_dt_out);
 
@@ -685,8 +690,8 @@ typedef struct gw_chain_spectrum {
 /* Resample tr->f linearly onto t0 + i dt in [t0, t1] (events make the trace
  * non-uniform), remove the mean, apply a Hann window, zero-pad 8x and take the
  * r2c FFT. dt <= 0: the median trace spacing; f_min <= 0: 4 / (t1 - t0) (above
- * the envelope of the contact). GW_EINVAL for fewer than 16 samples or a bad
- * interval, GW_ENOMEM. sp is zeroed first; free with gw_chain_spectrum_free. */
+ * the envelope of the contact). GW_EINVAL for fewer than 16 samples, a force
+ * not finite in [t0, t1] or a bad interval, GW_ENOMEM. sp is zeroed first; free with gw_chain_spectrum_free. */
 int gw_chain_wall_spectrum(const gw_chain_trace *tr, double t0, double t1, double dt,
                            double f_min, int fftw_measure, gw_chain_spectrum *sp,
                            gw_err *err);

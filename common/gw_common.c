@@ -122,6 +122,8 @@ int gw_err_set(gw_err *err, int status, const char *fmt, ...)
 {
     if (!err)
         return status;
+    if (!fmt) /* no message: an empty one (vsnprintf read the NULL: SIGSEGV) */
+        fmt = "(no message)";
     char raw_s[8192], line_s[8192], *raw = raw_s, *line = line_s, *raw_h = NULL, *line_h = NULL;
     size_t room = sizeof line_s;
     va_list ap;
@@ -227,6 +229,8 @@ int gw_parse_double(const char *s, const char *name, double *out, gw_err *err)
 
 int gw_parse_long(const char *s, const char *name, long lo, long hi, long *out, gw_err *err)
 {
+    if (!out) /* as gw_parse_double (it was written through: SIGSEGV) */
+        return gw_err_set(err, GW_EINVAL, "gw_parse_long: out is NULL");
     if (!s || !*s)
         return gw_err_set(err, GW_EINVAL, "%s: expected an integer, got an empty value", name);
     char *end = NULL;
@@ -322,6 +326,8 @@ int gw_parse_int_range(const char *s, const char *name, long lo, long hi, long *
     if (!s || !*s)
         return gw_err_set(err, GW_EINVAL, "%s: empty value", name);
     const char *colon = strchr(s, ':');
+    if (!a || !b)
+        return gw_err_set(err, GW_EINVAL, "gw_parse_int_range: %s is NULL", !a ? "a" : "b");
     if (!colon) {
         int rc = gw_parse_long(s, name, lo, hi, a, err);
         *b = *a;

@@ -200,7 +200,8 @@ void gw_afile_abort(gw_afile *f);
  * beside this run's results would read as one of them). gw_outset_abort (a
  * write failed, or the run was refused) removes the staged temporaries: the
  * directory is left as the earlier run left it. names: every file the command
- * may write into dir, NULL-terminated. Two runs placing their sets in one
+ * may write into dir, NULL-terminated, each a file name (not empty, ".", ".."
+ * nor with a '/': GW_EINVAL). Two runs placing their sets in one
  * directory at once place them one after the other (flock on the directory):
  * it holds the last one's files, never some of each. A set may stay open
  * through a long run (layer-impact's snapshots): SIGINT, SIGTERM and SIGHUP
@@ -348,7 +349,10 @@ typedef struct gw_linfit {
     int n;
 } gw_linfit;
 
-/* Least-squares line through (x[i], y[i]), n >= 2 (errors need n >= 3). */
+/* Least-squares line through (x[i], y[i]), n >= 2 (errors need n >= 3).
+ * GW_EINVAL, with every number of *fit NaN, for a NULL pointer, n < 2, a
+ * point that is not finite or abscissas all equal (gw_fit_power also for a
+ * value <= 0). */
 int gw_fit_linear(const double *x, const double *y, int n, gw_linfit *fit);
 
 /* Power law y = A x^beta by a line in log-log; c0 = ln A, c1 = beta. */
@@ -387,8 +391,8 @@ size_t gw_utf8_len(const char *text);
  * new objects. */
 unsigned long gw_json_failures(void);
 void gw_json_failures_clear(void);
-/* Print o (indented) with a newline to fp, flushed. GW_OK; GW_ENOMEM (nothing
- * printed); GW_EIO when a write or the flush failed, errno then the failed
+/* Print o (indented) with a newline to fp, flushed. GW_OK; GW_EINVAL for a
+ * NULL o or fp; GW_ENOMEM (nothing printed); GW_EIO when a write or the flush failed, errno then the failed
  * write's (EPIPE, ENOSPC: the caller reports it, as a later fflush of fp finds
  * the error flag set but no errno). */
 int gw_json_print(const cJSON *o, FILE *fp);

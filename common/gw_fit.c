@@ -13,12 +13,30 @@
 
 #include "gw_common.h"
 
+/* A refused fit: every number of it undefined (a caller that reads it
+ * regardless reads NaN, not the previous fit's numbers). */
+static int no_fit(gw_linfit *fit, int n)
+{
+    if (fit)
+        *fit = (gw_linfit){.c0 = NAN, .c1 = NAN, .c0_err = NAN, .c1_err = NAN, .r2 = NAN, .max_rel_resid = NAN, .n = n};
+    return GW_EINVAL;
+}
+
 int gw_fit_linear(const double *x, const double *y, int n, gw_linfit *fit)
 {
-    if (!x || !y || !fit)
-        return GW_EINVAL;
-    if (n < 2)
-        return GW_EINVAL;
+    if (!x || !y || !fit || n < 2)
+        return no_fit(fit, 0);
+    /* every point finite and two abscissas apart: a NaN among the points gave
+     * the slope 0 with GW_OK (1, NaN, 3 over 1, 2, 3), one abscissa a NaN slope
+     * with GW_OK */
+    int apart = 0;
+    for (int i = 0; i < n; i++) {
+        if (!isfinite(x[i]) || !isfinite(y[i]))
+            return no_fit(fit, n);
+        apart |= x[i] != x[0];
+    }
+    if (!apart)
+        return no_fit(fit, n);
     double c0, c1, cov00, cov01, cov11, sumsq;
     if (gsl_fit_linear(x, 1, y, 1, (size_t)n, &c0, &c1, &cov00, &cov01, &cov11, &sumsq) != 0)
         return GW_EINVAL;
@@ -43,8 +61,8 @@ int gw_fit_linear(const double *x, const double *y, int n, gw_linfit *fit)
 
 int gw_fit_power(const double *x, const double *y, int n, gw_linfit *fit)
 {
-    if (n < 2)
-        return GW_EINVAL;
+    if (!x || !y || !fit || n < 2) /* as gw_fit_linear (x and y were read: SIGSEGV) */
+        return no_fit(fit, 0);
     double *lx = malloc(2 * (size_t)n * sizeof *lx);
     if (!lx)
         return GW_ENOMEM;
@@ -52,7 +70,7 @@ int gw_fit_power(const double *x, const double *y, int n, gw_linfit *fit)
     for (int i = 0; i < n; i++) {
         if (!(x[i] > 0) || !(y[i] > 0)) {
             free(lx);
-            return GW_EINVAL;
+            return no_fit(fit, n);
         }
         lx[i] = log(x[i]);
         ly[i] = log(y[i]);

@@ -37,7 +37,7 @@ unsigned long long gw_case_config_hash(const char *model, int n, const char *con
 
 int gw_fnv1a64_parse(const char *p, size_t len, unsigned long long *h)
 {
-    if (len != 16)
+    if (len != 16 || !p || !h) /* NULL: no hash (p was read: SIGSEGV) */
         return 0;
     unsigned long long v = 0;
     for (size_t i = 0; i < 16; i++) {

@@ -118,6 +118,13 @@ int gw_outset_begin(gw_outset *s, const char *dir, const char *const *names, gw_
     if (!s || !dir || !names)
         return gw_err_set(err, GW_EINVAL, "gw_outset_begin: %s is NULL", !s ? "s" : !dir ? "dir" : "names");
     memset(s, 0, sizeof *s);
+    /* each name one file of dir: the commit removes every name of the list
+     * the run did not write, and "../x" removed a file beside dir ("" and "."
+     * named dir itself) */
+    for (int k = 0; names[k]; k++)
+        if (!names[k][0] || strchr(names[k], '/') || strcmp(names[k], ".") == 0 || strcmp(names[k], "..") == 0)
+            return gw_err_set(err, GW_EINVAL, "gw_outset_begin: name %d '%s' is not a file name in %s", k, names[k],
+                              dir);
     if (cur_set)
         return gw_err_set(err, GW_EINVAL, "%s: an output set is already open on this thread", dir);
     if (gw_snprintf(s->dir, sizeof s->dir, "%s", dir) >= (int)sizeof s->dir)

@@ -199,6 +199,8 @@ char *gw_json_string(const cJSON *o, int formatted)
 
 int gw_json_print(const cJSON *o, FILE *fp)
 {
+    if (!o || !fp) /* no object is no out of memory (it said GW_ENOMEM) */
+        return GW_EINVAL;
     char *s = gw_json_string(o, 1);
     if (!s)
         return GW_ENOMEM;
@@ -216,6 +218,8 @@ int gw_json_print(const cJSON *o, FILE *fp)
 
 int gw_json_write(const char *path, const cJSON *o, gw_err *err)
 {
+    if (!path || !o) /* "(null): out of memory" before */
+        return gw_err_set(err, GW_EINVAL, "gw_json_write: %s is NULL", !path ? "path" : "o");
     char *s = gw_json_string(o, 1);
     if (!s)
         return gw_err_set(err, GW_ENOMEM, "%s: out of memory", path);

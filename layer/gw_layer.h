@@ -245,7 +245,8 @@ int gw_layer_region_ledger(const gw_layer *L, gw_layer_energy *out);
 /* Per-ring energies around (cx, cy): ring k holds distances [k w, (k+1) w).
  * Kinetic energy by particle centre (block excluded), strain energy (normal +
  * tangential state function) by contact point, coordination = contacts with
- * u_n > 0 counted per particle / particles. Arrays of nring entries. */
+ * u_n > 0 counted per particle / particles. Arrays of nring entries (nring
+ * <= 0: nothing done). */
 void gw_layer_rings(const gw_layer *L, double cx, double cy, double w, int nring,
                     double *kinetic, double *strain, double *coord);
 

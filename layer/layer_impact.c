@@ -245,6 +245,8 @@ int gw_layer_impact_fall_check(const gw_layer_impact_params *ip, double g, gw_er
 {
     if (!ip)
         return gw_err_set(err, GW_EINVAL, "gw_layer_impact_fall_check: ip is NULL");
+    if (!(isfinite(g) && g >= 0)) /* a NaN g passed as no gravity */
+        return gw_err_set(err, GW_EINVAL, "gravity: %g m/s^2 is not a finite number >= 0", g);
     /* --gap 1 --vi 1 arrived at 4.54 m/s: e_n 0.86 and e 1.83 over V_i = 1,
      * a penetration of 1.06 m counted from the start, against e_n 0.179 and
      * 0.064 m for the same impact given as --vi 4.54 */
@@ -411,6 +413,9 @@ int gw_layer_impact_dt_divides(double dt, double dt_out)
 int gw_layer_impact_step_check(const gw_layer_impact_params *ip, const gw_solver_type *type,
                                const gw_solver_params *sp, gw_err *err)
 {
+    /* NULL ip passed (GW_OK, nothing checked), NULL sp was read (SIGSEGV) */
+    if (!ip || !sp)
+        return gw_err_set(err, GW_EINVAL, "gw_layer_impact_step_check: %s is NULL", !ip ? "ip" : "sp");
     /* a fixed verlet step given by the caller that dt_out is not a multiple of
      * would be shortened before every sample (an uneven grid, not the dt the
      * settings record); the automatic step adapts (gw_layer_impact_dem_dt).

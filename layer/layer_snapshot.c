@@ -73,6 +73,8 @@ const double *layer_snapshot(const gw_layer *L)
 void gw_layer_rings(const gw_layer *L, double cx, double cy, double w, int nring,
                     double *kin, double *strain, double *coord)
 {
+    if (nring <= 0) /* no ring: a negative count asked realloc for SIZE_MAX bytes (an abort under ASan) */
+        return;
     if (!L || !kin || !strain || !coord) {
         for (int k = 0; k < nring; k++) {
             if (kin)

@@ -222,7 +222,86 @@ typedef struct check_memo {
         unsigned long long file_hash, pile_hash;
     } *piles;
     long npiles, cap;
+    /* the block positions the cases put it at (x_note): an open-addressing
+     * table of nx of cap_x entries, cap_x a power of two, at most half full */
+    struct x_seen {
+        int used;
+        unsigned long long sample; /* the sample's content hash */
+        long point, points;
+        double spacing, pos, x0; /* pos: 0.5 width + x in the box; x0: x given */
+    } *xs;
+    size_t nx, cap_x;
 } check_memo;
+
+/* The shortest %g text of v that reads back as v (1e-300, not
+ * 1.0000000000000001e-300), into buf. */
+static void shortest(char *buf, size_t n, double v)
+{
+    for (int d = 1; d <= 17; d++) {
+        gw_snprintf(buf, n, "%.*g", d, v);
+        if (gw_strtod(buf, NULL) == v)
+            return;
+    }
+}
+
+static unsigned long long x_key(const struct x_seen *e)
+{
+    unsigned long long h = gw_fnv1a64(GW_FNV1A64_INIT, &e->sample, sizeof e->sample);
+    h = gw_fnv1a64(h, &e->point, sizeof e->point);
+    h = gw_fnv1a64(h, &e->points, sizeof e->points);
+    h = gw_fnv1a64(h, &e->spacing, sizeof e->spacing);
+    return gw_fnv1a64(h, &e->pos, sizeof e->pos);
+}
+
+/* Case pl's block position on the sample (content hash `sample`, box width)
+ * against the cases the pass checked before: two values of x whose block
+ * positions are one double (x = 0 and 1e-300 in a box 0.5 m wide: 0.25 + 1e-300
+ * is 0.25) run the same impacts, and layer-stats, which groups rows by their
+ * grid values, counted them as two groups of one configuration. Refused
+ * naming x (the same point of the same placement, the rest of the case
+ * aside: the grid is a product, so the other keys' values come with both x);
+ * two placements that share a position (x = 0, spacing 0.1 and x = 0.1,
+ * spacing 0.2 at point 0) are two groups and pass. GW_EINVAL, GW_ENOMEM or
+ * GW_OK. */
+static int x_note(check_memo *c, unsigned long long sample, const placement *pl, double width, gw_err *err)
+{
+    const struct x_seen e = {1, sample, pl->point, pl->points, pl->spacing, 0.5 * width + point_x(pl, pl->point),
+                             pl->x0};
+    if (2 * (c->nx + 1) > c->cap_x) {
+        const size_t cap = c->cap_x ? 2 * c->cap_x : 64;
+        struct x_seen *t = calloc(cap, sizeof *t);
+        if (!t)
+            return gw_err_set(err, GW_ENOMEM, "out of memory");
+        for (size_t i = 0; i < c->cap_x; i++) {
+            if (!c->xs[i].used)
+                continue;
+            size_t k = x_key(&c->xs[i]) & (cap - 1);
+            while (t[k].used)
+                k = (k + 1) & (cap - 1);
+            t[k] = c->xs[i];
+        }
+        free(c->xs);
+        c->xs = t, c->cap_x = cap;
+    }
+    size_t k = x_key(&e) & (c->cap_x - 1);
+    for (; c->xs[k].used; k = (k + 1) & (c->cap_x - 1)) {
+        const struct x_seen *o = &c->xs[k];
+        if (o->sample != e.sample || o->point != e.point || o->points != e.points || o->spacing != e.spacing ||
+            o->pos != e.pos)
+            continue;
+        if (o->x0 == e.x0) /* the same x with other values of the other keys */
+            return GW_OK;
+        char a[32], b[32];
+        shortest(a, sizeof a, o->x0);
+        shortest(b, sizeof b, e.x0);
+        return gw_err_set(err, GW_EINVAL, "x: %s and %s m put the block at one position (its centre %.17g m from the "
+                          "box's left wall, width %g m%s): each impact would run twice, as two groups of layer-stats; "
+                          "list one of them", a, b, e.pos, width, e.points > 1 ? ", at the same impact point" : "");
+    }
+    c->xs[k] = e;
+    c->nx++;
+    return GW_OK;
+}
 
 /* Sample path, read with bytes hashing to file_hash as s, holds a pile no
  * other sample of the pass holds. The sweep tells its grid's files apart by
@@ -322,6 +401,7 @@ static void memo_free(void *memo)
     for (long i = 0; i < c->npiles; i++)
         free(c->piles[i].path);
     free(c->piles);
+    free(c->xs);
     free(c);
 }
 
@@ -380,6 +460,8 @@ static int check_memo_fn(void **memo, int nk, const char *const *names, const ch
         const memo_slot *slot = memo_find(*memo, s.sample);
         if (slot)
             rc = placement_distinct(&pl, slot->s.width, err);
+        if (slot && rc == GW_OK) /* and its x against the other cases' (a sample not kept: not compared) */
+            rc = x_note(*memo, slot->hash, &pl, slot->s.width, err);
     }
     if (rc == GW_OK && memo && *memo)
         settling_tally(*memo, &s);

@@ -21,6 +21,8 @@
 
 int gw_layer_write_vtk(const gw_layer *L, const char *path, const char *title, gw_err *err)
 {
+    if (!L) /* it was read after the file was opened (SIGSEGV) */
+        return gw_err_set(err, GW_EINVAL, "gw_layer_write_vtk: L is NULL");
     gw_afile f;
     int rc = gw_afile_open(&f, path, err);
     if (rc != GW_OK)
@@ -91,6 +93,14 @@ int gw_layer_write_vtk(const gw_layer *L, const char *path, const char *title, g
 
 int gw_layer_write_pvd(const char *path, int n, const char *const *files, const double *times, gw_err *err)
 {
+    /* NULL lists were read (SIGSEGV), n < 0 wrote an empty collection */
+    if (n < 0 || (n > 0 && (!files || !times)))
+        return gw_err_set(err, GW_EINVAL, "gw_layer_write_pvd: %s", n < 0 ? "n < 0" : !files ? "files is NULL" :
+                          "times is NULL");
+    for (int k = 0; k < n; k++)
+        if (!files[k] || !isfinite(times[k]))
+            return gw_err_set(err, GW_EINVAL, "gw_layer_write_pvd: snapshot %d: %s", k,
+                              !files[k] ? "file is NULL" : "time not finite");
     gw_afile f;
     int rc = gw_afile_open(&f, path, err);
     if (rc != GW_OK)

@@ -431,7 +431,15 @@ static cJSON *impact_json(const impact_cli *c, const gw_layer_impact_result *r,
         cJSON_AddNumberToObject(st, "gravity", sl.gravity);
         cJSON_AddStringToObject(st, "mass_law", gw_layer_mass_law_name(sl.mass_law));
         cJSON_AddStringToObject(st, "clump_mass", gw_layer_clump_mass_name(c->settled.clump_mass));
-        cJSON_AddNumberToObject(st, "load_ratio", c->settled_q);
+        /* q = W_settled / W_impact is +inf for an impact without gravity
+         * (other-settling): JSON has no infinity and cJSON printed null, the
+         * JSON's "undefined", where the sweep's table says inf. It is the
+         * text "inf" here, as the table writes it and as float() and strtod
+         * read it back; a finite q stays a number (docs/formats.md) */
+        if (isinf(c->settled_q))
+            cJSON_AddStringToObject(st, "load_ratio", c->settled_q > 0 ? "inf" : "-inf");
+        else
+            cJSON_AddNumberToObject(st, "load_ratio", c->settled_q);
     } else {
         cJSON_AddNullToObject(s, "sample_settled");
     }

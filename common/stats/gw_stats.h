@@ -297,7 +297,7 @@ int gw_stats_b31_fit_points(const double *x, const double *h, int n, const gw_st
  * m <= 1, where the block stops and rebounds inside the contact. (B.28's
  * 4 m / (1 + m)^2 below m = 1 is the loss at the contact's opening, the
  * impact's block_loss_contact_open; it read 0.64 at r = 0.5 against a measured
- * 1 before this was the binary value of what is measured.) */
+ * 1 before this was the binary value of what is measured.) NaN for r not > 0. */
 double gw_stats_binary_loss(double r, int sphere);
 
 /* ---- the whole analysis (gw_stats_run.c) ---- */

@@ -115,11 +115,18 @@ int gw_stats_diagram_make(int n, const double *x, const double *h, const double 
 {
     if (!d)
         return gw_err_set(err, GW_EINVAL, "gw_stats_diagram_make: d is NULL");
-    if (n > 0 && (!x || !h || !share || !pen)) {
+    /* pen may be NULL, as gw_stats.h says (it was refused); n < 0 asked
+     * malloc for SIZE_MAX bytes (an abort under ASan), a NaN criterion drew a
+     * boundary of no cell */
+    if (n > 0 && (!x || !h || !share)) {
         memset(d, 0, sizeof *d);
-        return gw_err_set(err, GW_EINVAL, "gw_stats_diagram_make: %s is NULL", !x ? "x" : !h ? "h" : !share ? "share" : "pen");
+        return gw_err_set(err, GW_EINVAL, "gw_stats_diagram_make: %s is NULL", !x ? "x" : !h ? "h" : "share");
     }
     memset(d, 0, sizeof *d);
+    if (n < 0)
+        return gw_err_set(err, GW_EINVAL, "diagram: %d cells (a count, >= 0)", n);
+    if (!(criterion > 0 && criterion <= 1))
+        return gw_err_set(err, GW_EINVAL, "criterion: %g is not in (0, 1]", criterion);
     d->criterion = criterion;
     char *keep = malloc((size_t)n + 1);
     d->xs = malloc(((size_t)n + 1) * sizeof *d->xs);

@@ -326,6 +326,8 @@ int gw_stats_groups_make(const gw_stats_table *t, double criterion, gw_stats_gro
 
 double gw_stats_binary_loss(double r, int sphere)
 {
+    if (!(r > 0)) /* no ratio of radii: r = -5 gave the loss of r = 5 (discs) */
+        return NAN;
     double m = sphere ? r * r * r : r * r;
     /* a block no heavier than its target stops and turns back inside the
      * contact: its smallest energy there is 0 */

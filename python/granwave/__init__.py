@@ -72,7 +72,7 @@ def _study(name):
         known = [_clib.gw_study_get(i).contents.name.decode() for i in range(_clib.gw_study_count())]
         name = name.replace("_", "-") if name.replace("_", "-") in known else name
         if name not in known:
-            raise ValueError(f"no study '{name}' (one of {', '.join(known)})")
+            raise GranwaveValueError(f"no study '{name}' (one of {', '.join(known)})", _core.GW_EINVAL)
     if name not in _studies:
         _studies[name] = _core.Study(name)
     return _studies[name]

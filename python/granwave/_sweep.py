@@ -60,15 +60,16 @@ def _ini_value(key, v, rows=()):
         raise TypeError(f"expected a number, got {_show(v)}")
     s = _text_plain(v)
     if any(c in s for c in "\n\r;#\0") or not s.strip():
-        raise ValueError(f"{key}: value {_show(s)} cannot go into a sweep (empty, or holds ';', '#', NUL or a newline)")
+        raise GranwaveValueError(f"{key}: value {_show(s)} cannot go into a sweep (empty, or holds ';', '#', NUL or a "
+                                 "newline)", GW_EINVAL)
     # The config reader drops the blanks around a value: sample=" a.txt" ran
     # the file 'a.txt' (the result's column said ' a.txt'), where
     # layer_impact(sample=" a.txt") opens ' a.txt'. (Around a number or a
     # choice they change nothing.)
     file = bool(rows) and all(r.type == TEXT for r in rows)
     if file and s != s.strip(_INI_BLANKS):
-        raise ValueError(f"{key}: value {_show(s)} begins or ends with a blank, which a sweep's config reader drops "
-                         f"(it would run {_show(s.strip(_INI_BLANKS))})")
+        raise GranwaveValueError(f"{key}: value {_show(s)} begins or ends with a blank, which a sweep's config reader "
+                                 f"drops (it would run {_show(s.strip(_INI_BLANKS))})", GW_EINVAL)
     # A file name as the OS gives it (undecodable bytes as surrogates, from
     # os.listdir or os.fsdecode) goes into the config as those bytes, as a
     # study's keyword does; any other value must be text (the whole config
@@ -189,10 +190,10 @@ def run_sweep(model, grid, params, jobs, progress):
         raise TypeError(f"sweep(): model must be a str ({', '.join(map(repr, models))}), not {_kind(model)}")
     if model not in models:
         # quoted as repr: a newline or a control character in the name broke the message's line
-        raise ValueError(f"sweep: unknown model {_show(model)} ({', '.join(models)})")
+        raise GranwaveValueError(f"sweep: unknown model {_show(model)} ({', '.join(models)})", GW_EINVAL)
     m = models[model]
     if not grid:
-        raise ValueError("sweep: grid needs at least one key with its values")
+        raise GranwaveValueError("sweep: grid needs at least one key with its values", GW_EINVAL)
     lines = ["[sweep]", f"model = {model}", "[grid]"]
     axes = {}
     key_bytes = {}  # the config's bytes of each grid key's lines
@@ -214,19 +215,20 @@ def run_sweep(model, grid, params, jobs, progress):
                             f"got {type(v).__name__}")
         vals = _grid_values(k, v)
         if not vals:
-            raise ValueError(f"{k}: empty list of grid values")
+            raise GranwaveValueError(f"{k}: empty list of grid values", GW_EINVAL)
         axes[k] = vals
         try:
             texts = [_ini_value(k, x, _sweep_rows(model, m, k)) for x in vals]
         except TypeError as e:
             raise TypeError(f"sweep() grid: '{k}': {e}") from None
         if any("," in t for t in texts):  # the list's separator: 'a,b' ran two cases
-            raise ValueError(f"{k}: a grid value holds ',' (the list separator of a sweep)")
+            raise GranwaveValueError(f"{k}: a grid value holds ',' (the list separator of a sweep)", GW_EINVAL)
         # a list item 'A:B' alone on its line is the library's range: grid={"n": ["1:3"]}
         # ran 3 cases where the result's n had one entry (its columns 3)
         if not isinstance(v, str) and any(_looks_like_range(t) for t in texts):
-            raise ValueError(f"sweep() grid: '{k}': a list item {next(t for t in texts if _looks_like_range(t))!r} "
-                             f"is a range, not one value: give the string 'A:B' or range(A, B + 1)")
+            raise GranwaveValueError(f"sweep() grid: '{k}': a list item "
+                                     f"{next(t for t in texts if _looks_like_range(t))!r} is a range, not one value: give "
+                                     f"the string 'A:B' or range(A, B + 1)", GW_EINVAL)
         n_lines = len(lines)
         # consecutive integers as the range A:B; a longer list goes on over
         # indented lines after a line ending with a comma (each line of the

@@ -22,12 +22,17 @@ app/lib/CMakeLists.txt), so a new struct in any of them is in the record, and
 the check fails until the record has it. DWARF describes no function that
 is only declared, so the functions come from GCC's -aux-info listing of the
 same compilation (--aux; with another compiler they are not compared).
+The exported variables (the solver types' tables gw_solver_*, the sweep models,
+gw_stats_table_required) come from the library's dynamic symbol table (--library:
+every defined global data symbol gw_*, with its size, the size a program's copy
+relocation takes) and their types from the same DWARF (GCC describes each
+extern declaration; with a compiler that does not, the types are not compared).
 
   gw_abi.py check ARGS   exit 0 when the record matches, 1 with the differences
   gw_abi.py write ARGS   rewrite the record; refused (exit 1) when what the
                          record holds changed and GW_ABI_VERSION did not
 ARGS: --object O --readelf R --headers "h1,h2,..." --record F --abi N
-      [--aux O.aux] [--sizes PROG] [--soname-of LIB] [--python-lib python/granwave/_lib.py]
+      [--aux O.aux] [--library LIB] [--sizes PROG] [--soname-of LIB] [--python-lib python/granwave/_lib.py]
 Regenerate after a change: cmake --build build --target gw_abi_record
 """
 import argparse
@@ -123,6 +128,21 @@ def read_functions(aux, public, header):
     return fns
 
 
+def read_data_symbols(readelf, lib):
+    """The library's exported variables, {name: size}: every defined GLOBAL
+    OBJECT symbol of its dynamic symbol table named gw_*. The size is what a
+    program linked against the library copies (a copy relocation): a table
+    grown under the same soname is cut short in such a program."""
+    out = subprocess.run([readelf, "--dyn-syms", "-W", lib], check=True, capture_output=True, text=True).stdout
+    syms = {}
+    for line in out.splitlines():
+        w = line.split()
+        # Num: Value Size Type Bind Vis Ndx Name
+        if len(w) >= 8 and w[3] == "OBJECT" and w[4] == "GLOBAL" and w[6] != "UND" and w[7].startswith("gw_"):
+            syms[w[7].split("@")[0]] = int(w[2], 0)
+    return syms
+
+
 def _ref(text):
     m = re.match(r"<0x([0-9a-f]+)>", text)
     return int(m.group(1), 16) if m else None
@@ -146,6 +166,7 @@ class Layout:
         self.members = {}   # (struct, member) -> (offset, size, type)
         self.consts = {}    # enumerator -> value
         self.fns = {}       # function -> declaration (with --aux only)
+        self.vars = {}      # exported variable -> [size, type] (size from --library; type "" unknown)
         self.header = {}    # (kind, name) -> the header declaring it
         self.typedef_of = {}  # off of a struct/enum/union -> its typedef's name
         for d in self.dies.values():
@@ -259,7 +280,7 @@ class Layout:
 
     def collect(self):
         for d in self.dies.values():
-            if not self.is_public(d) or "DW_AT_declaration" in d["attrs"]:
+            if not self.is_public(d) or ("DW_AT_declaration" in d["attrs"] and d["tag"] != "DW_TAG_variable"):
                 continue
             if d["tag"] in ("DW_TAG_structure_type", "DW_TAG_union_type"):
                 name = self.name_of(d)
@@ -268,6 +289,10 @@ class Layout:
                 self.structs[name] = _int(d["attrs"]["DW_AT_byte_size"])
                 self.header[("struct", name)] = self.header_of(d)
                 self.add_members(name, d, 0, "")
+            elif d["tag"] == "DW_TAG_variable" and "DW_AT_external" in d["attrs"] and "DW_AT_name" in d["attrs"]:
+                tref = _ref(d["attrs"].get("DW_AT_type", ""))
+                self.vars[d["attrs"]["DW_AT_name"]] = [self.size(tref), self.type_text(tref)]
+                self.header[("var", d["attrs"]["DW_AT_name"])] = self.header_of(d)
             elif d["tag"] == "DW_TAG_enumeration_type":
                 for c in d["children"]:
                     e = self.dies[c]
@@ -281,7 +306,8 @@ def record_lines(abi, plat, lay):
     out = ["# libgranwave's ABI record (tests/abi/gw_abi.py): the size of every struct of the",
            "# installed headers, each member's offset, size and type, every enum constant",
            "# and every function's declaration (GCC's -aux-info), as the compiler sees",
-           "# them. test_abi compares the build's with this file; after a change,",
+           "# them, and every exported variable's size (the library's dynamic symbol",
+           "# table) and type. test_abi compares the build's with this file; after a change,",
            "# regenerate it with",
            f"#   {REGENERATE}",
            "# (refused while what this record holds changed and GW_ABI_VERSION did not).",
@@ -299,11 +325,14 @@ def record_lines(abi, plat, lay):
         out.append(f"const {c} {lay.consts[c]} {lay.header[('const', c)]}")
     for fn in sorted(lay.fns):
         out.append(f"fn {fn} {lay.header[('fn', fn)]} {lay.fns[fn]}")
+    for v in sorted(lay.vars):
+        out.append(f"var {v} {lay.vars[v][0]} {lay.header[('var', v)]} {lay.vars[v][1]}")
     return out
 
 
 def parse_record(path):
-    rec = {"abi": None, "platform": None, "structs": {}, "members": {}, "consts": {}, "fns": {}, "header": {}}
+    rec = {"abi": None, "platform": None, "structs": {}, "members": {}, "consts": {}, "fns": {}, "vars": {},
+           "header": {}}
     with open(path, encoding="utf-8") as f:
         for n, line in enumerate(f, 1):
             line = line.rstrip("\n")
@@ -322,6 +351,10 @@ def parse_record(path):
             elif w[0] == "const" and len(w) == 4:
                 rec["consts"][w[1]] = int(w[2])
                 rec["header"][("const", w[1])] = w[3]
+            elif w[0] == "var" and len(w) >= 5:
+                v = line.split(" ", 4)
+                rec["vars"][v[1]] = [int(v[2]), v[4]]
+                rec["header"][("var", v[1])] = v[3]
             elif w[0] == "fn" and len(w) >= 4:
                 rec["fns"][w[1]] = line.split(" ", 3)[3]
                 rec["header"][("fn", w[1])] = w[2]
@@ -336,9 +369,9 @@ def restrict(rec, public):
     """The record without what headers this build does not install declare
     (gw_layer.h and gw_layer_study.h in a build with GW_BUILD_LAYER=OFF), and
     the names of those headers."""
-    out = {**rec, "structs": {}, "members": {}, "consts": {}, "fns": {}}
+    out = {**rec, "structs": {}, "members": {}, "consts": {}, "fns": {}, "vars": {}}
     left = set()
-    for kind, key in (("struct", "structs"), ("const", "consts"), ("fn", "fns")):
+    for kind, key in (("struct", "structs"), ("const", "consts"), ("fn", "fns"), ("var", "vars")):
         for name, v in rec[key].items():
             h = rec["header"][(kind, name)]
             if h in public:
@@ -387,6 +420,21 @@ def compare(rec, lay):
                 brk.append(f"function {fn}: {decl} in the record, {lay.fns[fn]} now")
         for fn in sorted(set(lay.fns) - set(rec["fns"])):
             add.append(f"function {fn}: new ({lay.fns[fn]}), not in the record")
+    # the exported variables (their sizes from the library's symbol table;
+    # the types where the DWARF described them, "" otherwise)
+    for v, (size, typ) in sorted(rec.get("vars", {}).items() if lay.vars else ()):
+        if v not in lay.vars:
+            brk.append(f"variable {v}: gone (was {size} bytes, {typ})")
+            continue
+        now_size, now_typ = lay.vars[v]
+        if now_size != size:
+            brk.append(f"variable {v}: {size} bytes in the record, {now_size} now (a program's copy of it is cut "
+                       f"short)")
+        if now_typ and now_typ != typ:
+            brk.append(f"variable {v}: type {typ} in the record, {now_typ} now")
+    for v in sorted(set(lay.vars) - set(rec.get("vars", {}))):
+        add.append(f"variable {v}: new ({lay.vars[v][0]} bytes, {lay.vars[v][1] or 'type unknown'}), not in the "
+                   f"record")
     for s in sorted(set(lay.structs) - set(rec["structs"])):
         add.append(f"struct {s}: new ({lay.structs[s]} bytes), not in the record")
     for c in sorted(set(lay.consts) - set(rec["consts"])):
@@ -408,7 +456,7 @@ def self_test(lay):
     case (gw_layer_sample without its settled record: 96 bytes for 168), a
     member moved, a constant changed, a struct the record lacks."""
     base = {"abi": 0, "structs": dict(lay.structs), "members": dict(lay.members), "consts": dict(lay.consts),
-            "fns": {}}
+            "fns": {}, "vars": {v: list(t) for v, t in lay.vars.items()}}
     fails = []
 
     def expect(what, rec, kind, needle):
@@ -440,6 +488,18 @@ def self_test(lay):
                f"function {fn}:")
         expect("a new function", {**base, "fns": {f: d for f, d in base["fns"].items() if f != fn}}, "addition",
                f"function {fn}: new")
+    if lay.vars:  # a table grown or retyped, a variable gone or new (session 30: not recorded before)
+        v = "gw_solver_cvode" if "gw_solver_cvode" in lay.vars else sorted(lay.vars)[0]
+        size, typ = lay.vars[v]
+        expect(f"{v} resized", {**base, "vars": {**base["vars"], v: [size + 8, typ]}}, "breaking",
+               f"variable {v}: {size + 8} bytes in the record, {size} now")
+        if typ:
+            expect(f"{v} retyped", {**base, "vars": {**base["vars"], v: [size, "int32"]}}, "breaking",
+                   f"variable {v}: type int32 in the record")
+        expect(f"{v} gone", {**base, "vars": {**base["vars"], "gw_no_such_variable": [8, "int64"]}}, "breaking",
+               "variable gw_no_such_variable: gone")
+        expect("a new variable", {**base, "vars": {n: t for n, t in base["vars"].items() if n != v}}, "addition",
+               f"variable {v}: new")
     if compare(base, lay) != ([], []):
         fails.append(f"self-test: the build's own layout differs from itself: {compare(base, lay)}")
     return fails
@@ -468,6 +528,7 @@ def main(argv):
     ap.add_argument("--record", required=True)
     ap.add_argument("--abi", type=int, required=True, help="GW_ABI_VERSION of the build")
     ap.add_argument("--aux", help="GCC's -aux-info listing of the object's source (the functions)")
+    ap.add_argument("--library", help="libgranwave.so: its exported variables (dynamic symbol table)")
     ap.add_argument("--sizes", help="tests/abi/abi_sizes, linked to libgranwave.so")
     ap.add_argument("--soname-of", help="libgranwave.so, whose soname must carry the ABI")
     ap.add_argument("--python-lib", help="python/granwave/_lib.py, written for one ABI")
@@ -481,6 +542,24 @@ def main(argv):
             print(f"gw_abi: read {len(lay.fns)} functions from {a.aux} (no gw_version, or under 100): "
                   "the -aux-info listing not understood", file=sys.stderr)
             return 1
+    if a.library:
+        # the exported variables: names and sizes from the library; their
+        # types from the DWARF's declarations (none with Clang: "")
+        declared = lay.vars
+        lay.vars = {}
+        for v, size in read_data_symbols(a.readelf, a.library).items():
+            lay.vars[v] = [size, declared[v][1] if v in declared else ""]
+            lay.header.setdefault(("var", v), lay.header.get(("var", v)) or "?")
+        if declared and set(declared) != set(lay.vars):
+            print(f"gw_abi: the headers declare the variables {sorted(declared)} and {a.library} exports "
+                  f"{sorted(lay.vars)}", file=sys.stderr)
+            return 1
+        if not lay.vars:
+            print(f"gw_abi: {a.library} exports no variable gw_* (gw_solver_cvode at least): readelf's "
+                  "--dyn-syms output not understood", file=sys.stderr)
+            return 1
+    else:
+        lay.vars = {}  # not compared without the library
     # a readelf whose output this script no longer reads gives nothing: never a pass
     if "gw_err" not in lay.structs or lay.members.get(("gw_err", "msg"), (None, 0))[1] != 512 \
             or len(lay.structs) < 10:
@@ -511,12 +590,16 @@ def main(argv):
     brk, add = compare(rec, lay) if rec else ([], [])
 
     if a.mode == "write":
+        if not a.library or any(not t for _, t in lay.vars.values()):
+            print("gw_abi: not written: the record's variables need --library and their types from the DWARF "
+                  "(build with GCC to regenerate the record)", file=sys.stderr)
+            return 1
         if not lay.fns and rec and rec["fns"]:
             print("gw_abi: not written: the record's functions come from GCC's -aux-info, which this build "
                   "lacks (build with GCC to regenerate the record)", file=sys.stderr)
             return 1
         if rec and brk and rec["abi"] == a.abi:
-            print(f"gw_abi: not written: ABI {a.abi} changed (a layout, a constant or a declaration) and "
+            print(f"gw_abi: not written: ABI {a.abi} changed (a layout, a constant, a declaration or a variable) and "
                   "GW_ABI_VERSION did not:",
                   file=sys.stderr)
             for line in _listed(brk):
@@ -527,12 +610,13 @@ def main(argv):
         with open(a.record, "w", encoding="utf-8") as f:
             f.write("\n".join(record_lines(a.abi, plat, lay)) + "\n")
         print(f"gw_abi: wrote {a.record}: ABI {a.abi}, {len(lay.structs)} structs, "
-              f"{len(lay.members)} members, {len(lay.consts)} constants, {len(lay.fns)} functions")
+              f"{len(lay.members)} members, {len(lay.consts)} constants, {len(lay.fns)} functions, "
+              f"{len(lay.vars)} variables")
         return 0
 
     fails = self_test(lay)
     if brk and rec["abi"] == a.abi:
-        fails.append(f"the ABI (the public structs' layout, enum constants, function declarations) changed "
+        fails.append(f"the ABI (the public structs' layout, enum constants, function declarations, exported variables) changed "
                      f"while GW_ABI_VERSION stayed {a.abi}:")
         fails += _listed(brk)
         fails.append(f"  a caller compiled against the old headers would be overrun or call wrongly: bump GW_ABI_VERSION "
@@ -582,7 +666,9 @@ def main(argv):
             print(line, file=sys.stderr)
         return 1
     print(f"gw_abi: PASS: ABI {a.abi}, {len(lay.structs)} structs, {len(lay.members)} members, "
-          f"{len(lay.consts)} constants" + (f", {len(lay.fns)} functions" if lay.fns else
+          f"{len(lay.consts)} constants" + (f", {len(lay.vars)} variables" if lay.vars else
+                                            " (variables not compared: no --library)")
+          + (f", {len(lay.fns)} functions" if lay.fns else
                                             " (functions not compared: no -aux-info, not GCC)") + " as recorded"
           + (f" (not in this build, not compared: what {', '.join(left)} declare)" if left else "") + (", gw_struct_size of each" if a.sizes else "")
           + (f", soname libgranwave.so.{a.abi}" if a.soname_of else ""))

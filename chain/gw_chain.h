@@ -823,6 +823,14 @@ int gw_chain_drop_result_warnings(const gw_chain_drop_result *r, char **list);
 
 struct gw_sweep_model;
 extern const struct gw_sweep_model gw_chain_sweep_model;
+/* The model's run with part(pctx, x) (gw_sweep_part_fn, may be NULL) at every
+ * output sample and event of the case's collision: x its simulated time over
+ * its expected length (t_expect times its expected ratio for N beads: the run
+ * goes on until every contact is open and separating), past 1 when the
+ * collision runs longer. The results are the run's, bit for bit. */
+int gw_chain_sweep_run_part(int nkeys, const char *const *names, const char *const *values, double *out,
+                            unsigned long long *read_hash, void (*part)(void *pctx, double x), void *pctx,
+                            gw_err *err);
 
 GW_END_DECLS
 

@@ -102,7 +102,10 @@ static case_slot *slot_take(const sweep_run *s)
 /* The share of the sweep's work done: the cases ended, and those under way
  * by their parts, each over the part the cases ended reached at their end
  * (their typical end: an impact ends at T_f, long before its t-max; 1 before
- * any ended), counted whole past it. Caller holds s->lock. */
+ * any ended); one near or past that end is expected to go on a tenth longer
+ * than it has, so that a case under way never counts whole (counted whole,
+ * a chain sweep said 100 % and ~0 s left while its last case ran). Caller
+ * holds s->lock. */
 static double sweep_part(const sweep_run *s, long done)
 {
     const double end = s->end_n > 0 && s->end_sum > 0 ? s->end_sum / (double)s->end_n : 1.0;
@@ -110,7 +113,7 @@ static double sweep_part(const sweep_run *s, long done)
     for (long i = 0; i < s->nslots; i++) {
         const long x = atomic_load_explicit(&s->slots[i].x_micro, memory_order_relaxed);
         if (atomic_load(&s->slots[i].busy) && x > 0)
-            part += fmin(1e-6 * (double)x / end, 1.0);
+            part += 1e-6 * (double)x / fmax(end, 1.1e-6 * (double)x);
     }
     return s->ntodo > 0 ? fmin(part / (double)s->ntodo, 1.0) : 1.0;
 }

@@ -76,7 +76,8 @@ static int memo_warnings(const void *memo, char **list)
     return chain_dt_tally_warnings(memo, "dt", "cases", list);
 }
 
-/* A case's part: its collision's t over its expected length (chain_watch_tail). */
+/* A case's part: the share of its collision's work done (chain_watch_share,
+ * its end expected at rho(N) t_expect). */
 typedef struct case_part {
     void (*fn)(void *pctx, double x);
     void *pctx;
@@ -88,7 +89,7 @@ static void at_sample(void *ctx, double t, double t_expect, double t_max)
     (void)t_max;
     const case_part *cp = ctx;
     if (t_expect > 0)
-        cp->fn(cp->pctx, t / (cp->rho * t_expect));
+        cp->fn(cp->pctx, chain_watch_share(t / t_expect, cp->rho));
 }
 
 int gw_chain_sweep_run_part(int nk, const char *const *names, const char *const *values, double *out,

@@ -10,26 +10,32 @@
  * done to the caller's gw_chain_watch_fn.
  *
  * A collision's weight w is its expected steps and samples (the plan that
- * bounds it) per t_expect, times its beads: the work grows as N^2 over a
- * falcon study's columns, so a count of collisions would put the first half
- * of the columns at half the work. A collision runs past t_expect until every
- * contact is open and separating, by a ratio r = t_end / t_expect that grows
- * with N (measured under cvode bdf at v_imp 0.3, steel on steel, solved
- * alike at any speed without gravity: 0.58 at N = 1, 0.84 at 3, 1.00 at 10,
- * 1.08 at 20, 1.21 at 50, 1.29 at 100 and 150, 1.56 at 200, 1.93 at 300, 1.27
- * at 400; a pvc wall 1.5 at N = 10 and 20, the t-max, at N = 50). Counting a
- * collision whole at t_expect put a study's early lines ahead of its work:
- * wavespeed --n 400:402 said ~28 s left at 6 s of a 68 s study. So each
- * collision is expected to run
- *     L = c rho(N) t_expect,   rho(N) = 1 + 0.1 log2(N / 10) in [0.5, 2]
- * (the fit of the ratios above), c the study's own correction learnt from its
- * collisions ended (the mean of r / rho weighed by w; 1 before any), and the
- * share done is
- *     part = (sum_ended w r + sum_running w t / t_expect)
- *          / (sum_ended w r + sum_running w max(c rho, 1.1 t / t_expect)
- *             + sum_planned w c rho).
- * A collision past its expected length is expected to go on a tenth of it. A
- * correction that grows takes the share back; the share reported is held at
+ * bounds it) over its expected length t_expect, times its beads: the work
+ * grows as N^2 over a falcon study's columns, so a count of collisions would
+ * put the first half of the columns at half the work. Measured, a whole
+ * collision's wall time follows w (its wall time per bead and t_expect even
+ * falls by a third from N = 20 to 200), so w counts a collision ended whole.
+ *
+ * But a collision runs past t_expect until every contact is open and
+ * separating, by a ratio r = t_end / t_expect that grows with N (measured
+ * under cvode bdf at v_imp 0.3, steel on steel, alike at any speed without
+ * gravity: 0.58 at N = 1, 0.84 at 3, 1.00 at 10, 1.08 at 20, 1.21 at 50, 1.29
+ * at 100 and 150, 1.56 at 200, 1.93 at 300, 1.27 at 400; 5.3 at 80; a pvc
+ * wall 1.5 at N = 10, the t-max at 50), and the tail goes fast: a 400-bead
+ * column spent 0.6 s of its 12.6 s past t_expect (5 %). Counted whole at
+ * t_expect, the collisions under way said 100 % for the rest of their run
+ * (two 200-bead columns at once: from t_expect on, a third of their time).
+ * So a collision under way at x = t / t_expect counts
+ *     f(x) = (1 - TAIL) min(x / B, 1) + TAIL (x - B) / (max(E, 1.25 x) - B) [x > B],
+ * E = c rho(N) its expected end, B = min(E, 1) the end of its bulk,
+ * rho(N) = 1 + 0.1 log2(N / 10) in [0.5, 2] (the fit of the ratios above), c
+ * the study's own correction learnt from its collisions ended (the mean of
+ * r / rho weighed by w; 1 before any), TAIL a tenth of its work spread over
+ * its simulated time from B to its expected end, and past that end expected
+ * to go on a quarter longer than it has (where it ends is not known): f
+ * stays under 1 until the collision ends. The share done is
+ *     part = (sum_ended w + sum_running w f(x)) / sum_all w.
+ * A correction that grows takes a share back; the share reported is held at
  * its largest instead (the time left then grows with the time elapsed).
  */
 #include <math.h>
@@ -38,6 +44,24 @@
 #include "chain_collide_impl.h"
 #include "chain_model.h"
 #include "chain_watch.h"
+
+/* A tenth of a collision's work is in its tail (5 % measured at N = 400),
+ * which is expected to go on a quarter longer than it has once past its
+ * expected end */
+#define CHAIN_WATCH_TAIL 0.1
+#define CHAIN_WATCH_PAST 1.25
+
+double chain_watch_share(double x, double e)
+{
+    if (!(x > 0))
+        return 0;
+    const double bulk = fmin(e, 1.0); /* where the bulk of the work ends: t_expect, or the end if sooner */
+    const double end = fmax(e, CHAIN_WATCH_PAST * x); /* > bulk when x > bulk */
+    double f = (1 - CHAIN_WATCH_TAIL) * fmin(x / bulk, 1.0);
+    if (x > bulk)
+        f += CHAIN_WATCH_TAIL * (x - bulk) / (end - bulk);
+    return fmin(f, 1.0);
+}
 
 double chain_watch_tail(int n)
 {
@@ -88,7 +112,7 @@ void chain_watch_plan(chain_watch *w, const gw_chain_params *p, const gw_chain_r
     if (!w || !w->fn)
         return;
     w->total++;
-    w->w_plan += weight(p, o) * chain_watch_tail(p->n);
+    w->w_plan += weight(p, o);
 }
 
 void chain_watch_plan_sweep(chain_watch *w, const gw_chain_params *tmpl, const gw_chain_run_opts *o,
@@ -103,12 +127,6 @@ void chain_watch_plan_sweep(chain_watch *w, const gw_chain_params *tmpl, const g
         }
 }
 
-/* A collision past its expected length is expected to run a tenth longer
- * than it has (where it ends is not known): counted whole there, a lone
- * collision said 100 % for the last third of its run (N = 200 ends at
- * 1.56 t_expect). */
-#define CHAIN_WATCH_PAST 1.1
-
 /* The study's correction c of the expected lengths (1 before a collision ended). */
 static double correction(const chain_watch *w)
 {
@@ -119,10 +137,10 @@ static double correction(const chain_watch *w)
 static void report(chain_watch *w)
 {
     const double c = correction(w);
-    double done = w->w_ended, total = w->w_ended + c * w->w_plan;
+    double done = w->w_ended, total = w->w_ended + w->w_plan;
     for (const chain_watch_running *r = w->running; r; r = r->next) {
-        done += r->weight * r->x;
-        total += r->weight * fmax(c * r->rho, CHAIN_WATCH_PAST * r->x);
+        done += r->weight * chain_watch_share(r->x, c * r->rho);
+        total += r->weight;
     }
     /* held where a longer correction would take it back: a display whose
      * share fell would read as work undone */
@@ -149,7 +167,7 @@ int chain_watch_collide(chain_watch *w, const gw_chain *c, const gw_chain_params
         return gw_chain_collide(c, o, r, err);
     chain_watch_running run = {.w = w, .weight = weight(p, o), .rho = chain_watch_tail(p->n)};
     pthread_mutex_lock(&w->lock); /* from planned to under way */
-    w->w_plan = fmax(w->w_plan - run.weight * run.rho, 0);
+    w->w_plan = fmax(w->w_plan - run.weight, 0);
     run.next = w->running;
     w->running = &run;
     pthread_mutex_unlock(&w->lock);
@@ -161,7 +179,7 @@ int chain_watch_collide(chain_watch *w, const gw_chain *c, const gw_chain_params
             break;
         }
     /* its length against the expected one: the study's correction */
-    w->w_ended += run.weight * run.x;
+    w->w_ended += run.weight;
     if (rc == GW_OK && run.x > 0) {
         w->c_num += run.weight * run.x / run.rho;
         w->c_den += run.weight;

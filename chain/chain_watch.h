@@ -2,7 +2,7 @@
  * chain_watch.h: a study's progress within its collisions (chain_watch.c),
  * behind gw_chain_watch_fn (gw_chain_study.h). A study plans its collisions
  * first (chain_watch_plan*: each weighed by its expected steps and samples
- * times its beads, and by its expected length past t_expect), then runs each
+ * times its beads), then runs each
  * through chain_watch_collide, which reports at every output sample of the
  * collision and at its end (the share of the work, chain_watch.c).
  * Internal to the library; no units but the weights' (bead-steps).
@@ -18,7 +18,7 @@
 /* One collision under way (on its thread's stack, listed under the lock). */
 typedef struct chain_watch_running {
     struct chain_watch *w;
-    double weight, rho;  /* its weight per t_expect, its expected ratio (chain_watch_tail) */
+    double weight, rho;  /* its weight, its expected t_end / t_expect (chain_watch_tail) */
     double x;            /* t / t_expect reached */
     struct chain_watch_running *next;
 } chain_watch_running;
@@ -28,8 +28,8 @@ typedef struct chain_watch {
     void *ctx;
     pthread_mutex_t lock; /* one report at a time, whatever thread runs a collision */
     long done, total;     /* collisions ended, planned */
-    double w_ended;       /* the work of the collisions ended (weight x t_end / t_expect) */
-    double w_plan;        /* of those not begun, weight x rho */
+    double w_ended;       /* the weight of the collisions ended */
+    double w_plan;        /* of those not begun */
     double c_num, c_den;  /* the correction of the expected lengths learnt: sum w r / rho, sum w */
     double shown;         /* the largest share reported */
     chain_watch_running *running;
@@ -38,6 +38,9 @@ typedef struct chain_watch {
 /* rho(N): a collision of N beads' expected length over its t_expect (the run
  * goes on until every contact is open and separating; chain_watch.c). */
 double chain_watch_tail(int n);
+/* The share of a collision's work done at x = t / t_expect, its end expected
+ * at e t_expect (chain_watch.c's f): under 1 while it runs. */
+double chain_watch_share(double x, double e);
 
 /* A watch reporting to fn(ctx) (fn NULL: inactive, every call below a no-op
  * but chain_watch_collide's run). Free with chain_watch_destroy. */

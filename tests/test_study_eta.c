@@ -2,20 +2,19 @@
  * test_study_eta.c: a study's share of the work done, the progress lines'
  * "P% of the work" whose ~L s left is (1 - P) / P of the time elapsed
  * (issue 18). A collision runs past its expected length t_expect until every
- * contact is open and separating, by a ratio that grows with N (0.58 at N = 1,
- * 1.29 at 100; chain_watch.c), and the solver's steps follow it; counted whole
- * at t_expect, the short columns done first were a larger share of the work
- * than they are, and the time left ran short by a quarter through
- * `falcon --n 1:100`. Measured without a clock: a falcon study of N = 1..60 on
+ * contact is open and separating (by 0.58 to 1.93 of it over N = 1 to 300;
+ * chain_watch.c); counted whole at t_expect, the collisions under way said
+ * 100 % for the rest of their run. Measured without a clock: a falcon study of N = 1..60 on
  * one thread (the collisions in order), its work each collision's solver steps
  * times its beads (falcon_runs.csv's steps: each step costs O(N)), the true
  * share done at each collision's end against the part the watch reported
  * then. Where the true share passes 10 %, 25 % and 50 %, the time left the
  * part implies ((1 - P) / P of the work done, at a steady pace) is within 15 %
- * of the true one ((1 - S) / S) (0.93 to 0.96 before, 1.02 to 1.03 now: on
- * this range the weights per t_expect followed the steps; these pass before).
+ * of the true one ((1 - S) / S) (0.93 to 0.96, before and now: the weights
+ * per t_expect follow the work; these pass before, and guard the weights).
  * Columns of N = 199 and 200 run to 1.56 t_expect: while they run, the part
- * stays under 98 % (it was 100 % from t_expect on, which fails before).
+ * stays under 99.5 % (0.979: a tenth of a collision's work is in its tail,
+ * spread over it; it was 100 % from t_expect on, which fails before).
  */
 #include <math.h>
 #include <stdio.h>
@@ -84,8 +83,8 @@ int main(void)
     GW_TEST_OK(rc == GW_OK && o.ncase == 2, "falcon --n 199:200 with a watch runs (%s)", err.msg);
     if (rc == GW_OK) {
         printf("# N = 199, 200 at once: the largest part while they ran %.3f\n", b.running);
-        GW_TEST_OK(b.running > 0.5 && b.running < 0.98, "N = 199, 200 at once: the part stays under 98 %% while "
-                   "they run (largest %.3f; above a half: they are counted within)", b.running);
+        GW_TEST_OK(b.running > 0.5 && b.running < 0.995, "N = 199, 200 at once: the part stays under 99.5 %% "
+                   "while they run (largest %.3f; above a half: they are counted within)", b.running);
         GW_TEST_OK(b.last_done == 2 && b.part[2] == 1.0, "and is 1 at their end (%.3f)", b.part[2]);
     }
     gw_chain_falcon_outcome_free(&o);

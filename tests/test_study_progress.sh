@@ -19,8 +19,8 @@
 #    elapsed, ~L s left" within 6 s and at most 4.5 s apart, where it said
 #    nothing until a case ended; P > 0 and rising while no case has ended
 #    (the cases seen inside: before, "0/2 cases, 2 under way" and no P);
-#  - a layer sweep of two exact impacts on a 40-disc pile, one thread (each
-#    several seconds): a line "sweep: 0/2 cases, 1 under way, P% ..." with
+#  - a layer sweep of two exact impacts on a 40-disc pile at 20 and 21 m/s,
+#    rk4 at 4e-7 s, one thread (each about 5 s to T_f = 0.31 s): a line "sweep: 0/2 cases, 1 under way, P% ..." with
 #    P > 0 inside the first case, a line at 100 % at the end, exit 0, and
 #    the table of its --quiet twin (results bit for bit);
 #  - layer-make --n 300 (16 s on a loaded machine) in a pipe: its line
@@ -163,8 +163,8 @@ for r, q, n, head in runs:
 subprocess.run([GW, "layer-make", "--n", "40", "--seed", "1", "--out", "s40.txt", "--quiet"], check=True,
                stdout=subprocess.DEVNULL)
 for o in ("ly", "lyq"):
-    open(o + ".ini", "w").write("[sweep]\nmodel = layer\nout = %s\n[grid]\nsample = s40.txt\nvi = 2, 3\n"
-                                "[params]\nexact = 1\ndt = 5e-7\n" % o)
+    open(o + ".ini", "w").write("[sweep]\nmodel = layer\nout = %s\n[grid]\nsample = s40.txt\nvi = 20, 21\n"
+                                "[params]\nexact = 1\ndt = 4e-7\n" % o)
 ly, lyq = Run(["sweep", "ly.ini", "--jobs", "1"]), Run(["sweep", "lyq.ini", "--jobs", "1", "--quiet"])
 ly.p.wait(timeout=300)
 lyq.p.wait(timeout=300)

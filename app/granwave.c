@@ -38,7 +38,13 @@ static int cmd_sweep(int argc, char **argv)
         &GW_LAYER_SWEEP_MODEL,
 #endif
     };
-    return gw_cmd_sweep(argc, argv, models, (int)(sizeof models / sizeof models[0]));
+    const gw_sweep_run_part_fn parts[] = {
+        gw_chain_sweep_run_part,
+#if GW_HAVE_LAYER && defined(GW_LAYER_SWEEP_MODEL)
+        gw_layer_sweep_run_part,
+#endif
+    };
+    return gw_cmd_sweep(argc, argv, models, parts, (int)(sizeof models / sizeof models[0]));
 }
 
 typedef struct command {

@@ -11,6 +11,7 @@
  */
 #define _POSIX_C_SOURCE 200809L
 #include <fcntl.h>
+#include <math.h>
 #include <pthread.h>
 #include <signal.h>
 #include <stdatomic.h>
@@ -62,7 +63,85 @@ typedef struct sweep_run {
     pthread_mutex_t lock; /* the journal: one row appended at a time; the progress lines */
     gw_cli_progress prog;
     atomic_long running;  /* cases under way (threads; under MPI handed out and not back) */
+    /* Threads, with progress lines: the model's run that reports its part
+     * (NULL: the cases are not seen inside), and a slot per case under way
+     * where it is stored */
+    gw_sweep_run_part_fn run_part;
+    struct case_slot *slots;
+    long nslots;
+    double end_sum; /* the last part of the cases ended (their typical end), summed */
+    long end_n;
 } sweep_run;
+
+/* A case under way: its part (gw_sweep_part_fn's x, in millionths; -1 none
+ * yet), stored by the thread running it at each of its output samples with a
+ * relaxed store, read by the ticker: nothing else is added to a case's run. */
+typedef struct case_slot {
+    atomic_int busy;
+    atomic_long x_micro;
+} case_slot;
+
+static void case_part(void *pctx, double x)
+{
+    case_slot *c = pctx;
+    if (x >= 0 && x < 1e6)
+        atomic_store_explicit(&c->x_micro, (long)(x * 1e6), memory_order_relaxed);
+}
+
+/* A free slot for a case starting (NULL: none, or no slots). */
+static case_slot *slot_take(const sweep_run *s)
+{
+    for (long i = 0; i < s->nslots; i++)
+        if (!atomic_exchange(&s->slots[i].busy, 1)) {
+            atomic_store(&s->slots[i].x_micro, -1);
+            return &s->slots[i];
+        }
+    return NULL;
+}
+
+/* The share of the sweep's work done: the cases ended, and those under way
+ * by their parts, each over the part the cases ended reached at their end
+ * (their typical end: an impact ends at T_f, long before its t-max; 1 before
+ * any ended); one near or past that end is expected to go on a tenth longer
+ * than it has, so that a case under way never counts whole (counted whole,
+ * a chain sweep said 100 % and ~0 s left while its last case ran). Caller
+ * holds s->lock. */
+static double sweep_part(const sweep_run *s, long done)
+{
+    const double end = s->end_n > 0 && s->end_sum > 0 ? s->end_sum / (double)s->end_n : 1.0;
+    double part = (double)done;
+    for (long i = 0; i < s->nslots; i++) {
+        const long x = atomic_load_explicit(&s->slots[i].x_micro, memory_order_relaxed);
+        if (atomic_load(&s->slots[i].busy) && x > 0)
+            part += 1e-6 * (double)x / fmax(end, 1.1e-6 * (double)x);
+    }
+    return s->ntodo > 0 ? fmin(part / (double)s->ntodo, 1.0) : 1.0;
+}
+
+/* The sweep's line when its cases are seen inside (threads): "sweep: k/n
+ * cases[ (b done before)], J under way, P% of the work, E s elapsed[, ~L s
+ * left]", as the studies' (the time left from P at the pace so far). Due
+ * every gw_cli_progress_gap, and at the last case (last). Caller holds
+ * s->lock. */
+static void sweep_line(sweep_run *s, int last)
+{
+    gw_cli_progress *p = &s->prog;
+    const double now = gw_clock_ms(), el_ms = now - p->t0;
+    if (p->quiet || (!last && now - p->last < gw_cli_progress_gap(p, el_ms)))
+        return;
+    const long done = s->done + s->nfailed;
+    const double part = last ? 1.0 : sweep_part(s, done), el = el_ms / 1e3;
+    char line[320], before[64] = "", left[64] = "";
+    if (p->before > 0)
+        snprintf(before, sizeof before, " (%ld done before)", p->before);
+    if (part > 0)
+        snprintf(left, sizeof left, ", ~%.1f s left", el / part * (1.0 - part));
+    snprintf(line, sizeof line, "%s%ld/%ld %s%s, %ld under way, %.1f%% of the work, %.1f s elapsed%s\n", p->prefix,
+             done, s->ntodo, p->unit, before, last ? 0L : atomic_load(&s->running), 100.0 * part, el, left);
+    fputs(line, p->fp); /* one write: the ticker's and a worker's lines never mix */
+    fflush(p->fp);
+    p->last = now;
+}
 
 /* The sweep's sign of life between cases: a case may run for minutes (a layer
  * impact in exact mode, a column of hundreds of beads), and the lines came
@@ -73,6 +152,10 @@ typedef struct sweep_run {
  * the only thread (the MPI master). */
 static void sweep_tick(sweep_run *s)
 {
+    if (s->slots) {
+        sweep_line(s, 0);
+        return;
+    }
     gw_cli_progress *p = &s->prog;
     const double now = gw_clock_ms(), el_ms = now - p->t0;
     if (p->quiet || now - p->last < gw_cli_progress_gap(p, el_ms))
@@ -110,7 +193,7 @@ static void case_failed(sweep_run *s, long k, const gw_err *err)
     }
 }
 
-static int run_case(const sweep_run *s, long k, char *row, gw_err *err)
+static int run_case(const sweep_run *s, long k, char *row, case_slot *slot, gw_err *err)
 {
     const char *names[2 * GW_SWEEP_MAX_KEYS], *values[2 * GW_SWEEP_MAX_KEYS];
     double out[64];
@@ -118,7 +201,9 @@ static int run_case(const sweep_run *s, long k, char *row, gw_err *err)
         return gw_err_set(err, GW_EINVAL, "model %s has %d columns (at most 64)", s->m->name, s->m->ncolumns);
     gw_sweep_case(s->cfg, k, names, values);
     unsigned long long read_hash = 0; /* the bytes of the sample the case read */
-    int rc = s->m->run(s->cfg->ngrid + s->cfg->nparams, names, values, out, &read_hash, err);
+    const int nk = s->cfg->ngrid + s->cfg->nparams;
+    int rc = slot && s->run_part ? s->run_part(nk, names, values, out, &read_hash, case_part, slot, err)
+                                 : s->m->run(nk, names, values, out, &read_hash, err);
     if (rc != GW_OK) {
         char tmp[sizeof err->msg];
         snprintf(tmp, sizeof tmp, "%s", err->msg);
@@ -156,17 +241,24 @@ static int pool_case(void *ctx, long i, gw_err *err)
     char *row = malloc(ROW_MAX);
     if (!row)
         return gw_err_set(err, GW_ENOMEM, "case %ld: out of memory", s->todo[i]);
+    case_slot *slot = slot_take(s);
     atomic_fetch_add(&s->running, 1);
-    int rc = run_case(s, s->todo[i], row, err);
+    int rc = run_case(s, s->todo[i], row, slot, err);
+    pthread_mutex_lock(&s->lock);
+    /* the slot freed with the case counted ended, under the lock the
+     * ticker's lines take: never counted both ways */
+    const long x = slot ? atomic_load_explicit(&slot->x_micro, memory_order_relaxed) : -1;
+    if (slot)
+        atomic_store(&slot->busy, 0);
     atomic_fetch_sub(&s->running, 1);
-    if (rc == GW_OK || case_failure(rc)) {
-        pthread_mutex_lock(&s->lock);
-        if (rc == GW_OK)
-            rc = journal(s, row, err);
-        else
-            case_failed(s, s->todo[i], err), rc = GW_OK;
-        pthread_mutex_unlock(&s->lock);
+    if (rc == GW_OK) {
+        if (x > 0) /* where its part ended: the cases' typical end (sweep_part) */
+            s->end_sum += 1e-6 * (double)x, s->end_n++;
+        rc = journal(s, row, err);
+    } else if (case_failure(rc)) {
+        case_failed(s, s->todo[i], err), rc = GW_OK;
     }
+    pthread_mutex_unlock(&s->lock);
     free(row);
     return rc;
 }
@@ -178,7 +270,10 @@ static int pool_progress(void *ctx, long done, long total)
 {
     sweep_run *s = ctx;
     pthread_mutex_lock(&s->lock); /* the ticker's lines too */
-    gw_cli_progress_report(&s->prog, done, total);
+    if (s->slots)
+        sweep_line(s, done >= total);
+    else
+        gw_cli_progress_report(&s->prog, done, total);
     pthread_mutex_unlock(&s->lock);
     return stop_requested != 0;
 }
@@ -206,6 +301,18 @@ static void *tick_loop(void *arg)
 static void run_threads(sweep_run *s, long jobs)
 {
     gw_err err = {{0}};
+    if (!s->prog.quiet && s->run_part) { /* a slot for each thread of the pool (gw_cases_run's count) */
+        long c = jobs > 0 ? jobs : sysconf(_SC_NPROCESSORS_ONLN);
+        c = c > 0 ? (c < 1024 ? c : 1024) : 1;
+        s->nslots = c < s->ntodo ? c : s->ntodo;
+        if (s->nslots > 0 && (s->slots = calloc((size_t)s->nslots, sizeof *s->slots)))
+            for (long i = 0; i < s->nslots; i++) {
+                atomic_init(&s->slots[i].busy, 0);
+                atomic_init(&s->slots[i].x_micro, -1);
+            }
+        else
+            s->nslots = 0; /* without them: the lines as before */
+    }
     ticker t = {.s = s};
     atomic_init(&t.stop, 0);
     pthread_t th;
@@ -217,6 +324,9 @@ static void run_threads(sweep_run *s, long jobs)
         atomic_store(&t.stop, 1);
         pthread_join(th, NULL);
     }
+    free(s->slots);
+    s->slots = NULL;
+    s->nslots = 0;
     if (rc != GW_OK && rc != GW_ECANCELED) {
         s->failed = rc;
         s->err = err;
@@ -305,7 +415,7 @@ static void mpi_worker(sweep_run *s)
         if (k < 0 || !row)
             break;
         gw_err err = {{0}};
-        int rc = run_case(s, k, row, &err);
+        int rc = run_case(s, k, row, NULL, &err);
         if (rc == GW_OK) {
             MPI_Send(row, (int)strlen(row) + 1, MPI_CHAR, 0, TAG_ROW, MPI_COMM_WORLD);
         } else {
@@ -441,7 +551,8 @@ static int exit_code(int rc)
     return rc == GW_ENOMEM ? 1 : 2;
 }
 
-int gw_cmd_sweep(int argc, char **argv, const gw_sweep_model *const *models, int nmodels)
+int gw_cmd_sweep(int argc, char **argv, const gw_sweep_model *const *models, const gw_sweep_run_part_fn *parts,
+                 int nmodels)
 {
     const char *out = NULL;
     long jobs = 0;
@@ -618,6 +729,9 @@ int gw_cmd_sweep(int argc, char **argv, const gw_sweep_model *const *models, int
     if (code == 0) {
         s.cfg = &cfg;
         s.m = m;
+        for (int i = 0; parts && i < nmodels; i++)
+            if (models[i] == m)
+                s.run_part = parts[i];
         gw_cli_progress_init(&s.prog, "sweep: ", "cases", 2000);
         s.prog.before = s.ndone0;
         s.prog.quiet = quiet;

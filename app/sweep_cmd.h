@@ -7,7 +7,10 @@
 
 #include "gw_sweep.h"
 
-/* The `granwave sweep` command over the given models. */
-int gw_cmd_sweep(int argc, char **argv, const gw_sweep_model *const *models, int nmodels);
+/* The `granwave sweep` command over the given models; parts (may be NULL, an
+ * entry NULL) the run of each that reports its part, for progress lines that
+ * see inside the cases. */
+int gw_cmd_sweep(int argc, char **argv, const gw_sweep_model *const *models, const gw_sweep_run_part_fn *parts,
+                 int nmodels);
 
 #endif

@@ -14,6 +14,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "chain_model.h"
 #include "chain_setup_rows.h"
 #include "chain_wall.h"
 
@@ -97,6 +98,12 @@ void gw_chain_collision_free(gw_chain_collision *out)
 
 int gw_chain_collision_run(const gw_chain_setup *s, gw_chain_collision *out, gw_err *err)
 {
+    return chain_collision_run_progress(s, out, NULL, NULL, err);
+}
+
+int chain_collision_run_progress(const gw_chain_setup *s, gw_chain_collision *out, gw_chain_progress_fn progress,
+                                 void *pctx, gw_err *err)
+{
     if (!s || !out)
         return gw_err_set(err, GW_EINVAL, "gw_chain_collision_run: %s is NULL", !s ? "setup" : "out");
     memset(out, 0, sizeof *out);
@@ -137,7 +144,7 @@ int gw_chain_collision_run(const gw_chain_setup *s, gw_chain_collision *out, gw_
         res.run.sample_ctx = &tr;
     }
     double t0 = gw_clock_ms();
-    rc = gw_chain_collide(c, &res.run, &out->r, err);
+    rc = gw_chain_collide_progress(c, &res.run, progress, pctx, &out->r, err);
     out->wall_time_ms = gw_clock_ms() - t0;
     if (rc == GW_OK) /* held by gravity: what its warning calls undecided is NaN */
         gw_chain_result_held_blank(&out->r);

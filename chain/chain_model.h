@@ -286,4 +286,12 @@ void chain_column_scales(const gw_chain_params *p, double *tc, double *tau1);
  * refused, GW_EINVAL naming guide-friction or guide-viscous (chain_drop.c). */
 int gw_chain_drop_guide_check(double coulomb, double viscous, gw_err *err);
 
+/* gw_chain_collision_run with progress(pctx, ...) (may be NULL) at every
+ * sample and event of the collision (gw_chain_collide_progress): the same
+ * results, bit for bit (a sweep case's progress, chain_sweep_model.c). */
+struct gw_chain_setup;
+struct gw_chain_collision;
+int chain_collision_run_progress(const struct gw_chain_setup *s, struct gw_chain_collision *out,
+                                 gw_chain_progress_fn progress, void *pctx, gw_err *err);
+
 #endif

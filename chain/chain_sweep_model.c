@@ -10,6 +10,7 @@
 
 #include "chain_model.h"
 #include "chain_wall.h"
+#include "chain_watch.h"
 #include "gw_chain_study.h"
 #include "gw_sweep.h"
 
@@ -77,16 +78,37 @@ static int memo_warnings(const void *memo, char **list)
     return chain_dt_tally_warnings(memo, "dt", "cases", list);
 }
 
-static int run(int nk, const char *const *names, const char *const *values, double *out,
-               unsigned long long *read_hash, gw_err *err)
+/* A case's part: the share of its collision's work done (chain_watch_share,
+ * its end expected at rho(N) t_expect). */
+typedef struct case_part {
+    void (*fn)(void *pctx, double x);
+    void *pctx;
+    double rho;
+} case_part;
+
+static void at_sample(void *ctx, double t, double t_expect, double t_max)
+{
+    (void)t_max;
+    const case_part *cp = ctx;
+    if (t_expect > 0)
+        cp->fn(cp->pctx, chain_watch_share(t / t_expect, cp->rho));
+}
+
+int gw_chain_sweep_run_part(int nk, const char *const *names, const char *const *values, double *out,
+                            unsigned long long *read_hash, void (*part)(void *pctx, double x), void *pctx,
+                            gw_err *err)
 {
     (void)read_hash; /* a chain case reads no file */
+    if (!out || (nk > 0 && (!names || !values)))
+        return gw_err_set(err, GW_EINVAL, "gw_chain_sweep_run_part: %s is NULL",
+                          !out ? "out" : !names ? "names" : "values");
     gw_chain_setup s;
     gw_chain_collision c;
     memset(&c, 0, sizeof c);
     int rc = prepare(&s, nk, names, values, err);
+    case_part cp = {.fn = part, .pctx = pctx, .rho = chain_watch_tail(s.n > 1 << 30 ? 1 << 30 : (int)s.n)};
     if (rc == GW_OK)
-        rc = gw_chain_collision_run(&s, &c, err);
+        rc = chain_collision_run_progress(&s, &c, part ? at_sample : NULL, &cp, err);
     if (rc == GW_OK) {
         const gw_chain_result *r = &c.r;
         double v[] = {r->f_max, r->tau_max, r->tau_n, r->period, r->eps_eff, r->eps_col, r->e_rel_over_e_k,
@@ -96,6 +118,12 @@ static int run(int nk, const char *const *names, const char *const *values, doub
     gw_chain_collision_free(&c);
     gw_chain_setup_clear(&s);
     return rc;
+}
+
+static int run(int nk, const char *const *names, const char *const *values, double *out,
+               unsigned long long *read_hash, gw_err *err)
+{
+    return gw_chain_sweep_run_part(nk, names, values, out, read_hash, NULL, NULL, err);
 }
 
 const gw_sweep_model gw_chain_sweep_model = {"chain", (int)(sizeof columns / sizeof columns[0]), columns,

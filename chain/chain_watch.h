@@ -2,8 +2,9 @@
  * chain_watch.h: a study's progress within its collisions (chain_watch.c),
  * behind gw_chain_watch_fn (gw_chain_study.h). A study plans its collisions
  * first (chain_watch_plan*: each weighed by its expected steps and samples
- * times its beads), then runs each through chain_watch_collide, which reports at every
- * output sample of the collision (t / t_expect of its weight) and at its end.
+ * times its beads), then runs each
+ * through chain_watch_collide, which reports at every output sample of the
+ * collision and at its end (the share of the work, chain_watch.c).
  * Internal to the library; no units but the weights' (bead-steps).
  */
 #ifndef CHAIN_WATCH_H
@@ -14,15 +15,32 @@
 #include "gw_chain.h"
 #include "gw_chain_study.h"
 
+/* One collision under way (on its thread's stack, listed under the lock). */
+typedef struct chain_watch_running {
+    struct chain_watch *w;
+    double weight, rho;  /* its weight, its expected t_end / t_expect (chain_watch_tail) */
+    double x;            /* t / t_expect reached */
+    struct chain_watch_running *next;
+} chain_watch_running;
+
 typedef struct chain_watch {
     gw_chain_watch_fn fn; /* NULL: the watch does nothing (the plain runs) */
     void *ctx;
     pthread_mutex_t lock; /* one report at a time, whatever thread runs a collision */
     long done, total;     /* collisions ended, planned */
-    double w_done;        /* weight of the collisions ended */
-    double w_run;         /* of those under way, the part done (weight x t / t_expect) */
-    double w_total;       /* of every collision planned */
+    double w_ended;       /* the weight of the collisions ended */
+    double w_plan;        /* of those not begun */
+    double c_num, c_den;  /* the correction of the expected lengths learnt: sum w r / rho, sum w */
+    double shown;         /* the largest share reported */
+    chain_watch_running *running;
 } chain_watch;
+
+/* rho(N): a collision of N beads' expected length over its t_expect (the run
+ * goes on until every contact is open and separating; chain_watch.c). */
+double chain_watch_tail(int n);
+/* The share of a collision's work done at x = t / t_expect, its end expected
+ * at e t_expect (chain_watch.c's f): under 1 while it runs. */
+double chain_watch_share(double x, double e);
 
 /* A watch reporting to fn(ctx) (fn NULL: inactive, every call below a no-op
  * but chain_watch_collide's run). Free with chain_watch_destroy. */

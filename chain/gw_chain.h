@@ -828,6 +828,14 @@ int gw_chain_drop_result_warnings(const gw_chain_drop_result *r, char **list);
 
 struct gw_sweep_model;
 extern const struct gw_sweep_model gw_chain_sweep_model;
+/* The model's run with part(pctx, x) (gw_sweep_part_fn, may be NULL) at every
+ * output sample and event of the case's collision: x the share of its work
+ * done by its simulated time, under 1 (a tenth of it in the tail the run goes
+ * on past t_expect until every contact is open and separating). The results
+ * are the run's, bit for bit. */
+int gw_chain_sweep_run_part(int nkeys, const char *const *names, const char *const *values, double *out,
+                            unsigned long long *read_hash, void (*part)(void *pctx, double x), void *pctx,
+                            gw_err *err);
 
 GW_END_DECLS
 

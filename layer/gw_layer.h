@@ -733,6 +733,13 @@ int gw_layer_crowns(gw_layer_impact_result *res);
 struct gw_sweep_model;
 extern const struct gw_sweep_model gw_layer_sweep_model;
 #define GW_LAYER_SWEEP_MODEL gw_layer_sweep_model
+/* The model's run with part(pctx, x) (gw_sweep_part_fn, may be NULL) about a
+ * thousand times over the case's impact: x its output samples done over those
+ * up to t-max (the run usually ends earlier, at T_f: x then never reaches 1).
+ * The results are the run's, bit for bit. */
+int gw_layer_sweep_run_part(int nkeys, const char *const *names, const char *const *values, double *out,
+                            unsigned long long *read_hash, void (*part)(void *pctx, double x), void *pctx,
+                            gw_err *err);
 
 /* The hash of what a run reads from sample s: n, the box width, rm,
  * mass_law, clump_mass, the settling record (gw_layer_settled, but its line)

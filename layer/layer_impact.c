@@ -302,11 +302,12 @@ int gw_layer_impact_rest_check(const gw_layer_sample *smp, const gw_layer_params
 {
     if (!smp || !lp)
         return gw_err_set(err, GW_EINVAL, "gw_layer_impact_rest_check: %s is NULL", !smp ? "s" : "lp");
-    return layer_rest_check(smp, lp, 0, name, err);
+    return layer_rest_check(smp, lp, 0, name, smp->settled.recorded ? gw_layer_settled_load_ratio(smp, lp) : NAN,
+                            err);
 }
 
 int layer_rest_check(const gw_layer_sample *smp, const gw_layer_params *lp, int other_settling, const char *name,
-                     gw_err *err)
+                     double q, gw_err *err)
 {
     /* A settled pile rests on the floor: the floor's Hertz forces carry its
      * weight, less what the side walls hold by friction (0.97 to 1.006 of it
@@ -329,7 +330,6 @@ int layer_rest_check(const gw_layer_sample *smp, const gw_layer_params *lp, int 
      * is a pile that did not settle, which no flag runs. */
     double f, w;
     layer_floor_load(lp, smp->n, smp->y, smp->r, sizeof *smp->y, &f, &w);
-    const double q = smp->settled.recorded ? gw_layer_settled_load_ratio(smp, lp) : NAN;
     const double allowed = q > 1 ? LAYER_FLOOR_LOAD_MAX * q : LAYER_FLOOR_LOAD_MAX; /* NaN: 1.5 */
     /* (no gravity in the impact: q infinite, nothing to weigh the load
      * against, refused whatever the flag: the pile's strain is all released) */
@@ -500,6 +500,13 @@ int gw_layer_impact(const gw_layer_sample *smp, const gw_layer_params *lp0,
                     const gw_layer_impact_params *ip, const gw_solver_type *type,
                     const gw_solver_params *sp, gw_layer_impact_result *res, gw_err *err)
 {
+    return layer_impact_run(smp, lp0, ip, type, sp, NULL, res, err);
+}
+
+int layer_impact_run(const gw_layer_sample *smp, const gw_layer_params *lp0, const gw_layer_impact_params *ip,
+                     const gw_solver_type *type, const gw_solver_params *sp, const layer_settling_found *found,
+                     gw_layer_impact_result *res, gw_err *err)
+{
     if (!smp || !lp0 || !ip || !type || !sp || !res) {
         if (res)
             memset(res, 0, sizeof *res);
@@ -634,14 +641,20 @@ int gw_layer_impact(const gw_layer_sample *smp, const gw_layer_params *lp0,
                           st0.contacts_listed > 8L * (n + 1) ? " or the skin" : "");
     }
     /* the settling recorded in the sample against this material: refused far
-     * from rest (unless other_settling), else its warning kept in the result */
-    if (rc == GW_OK && (rc = gw_layer_impact_settled_check(smp, &lp, ip->other_settling, NULL, res->settling,
-                                                           sizeof res->settling, err)) != GW_OK) {
+     * from rest (unless other_settling), else its warning kept in the result;
+     * found by the plan (gw_layer_impact_run), or here, once: a run checked it
+     * twice and weighed a union-clump pile under clump-mass sum five times */
+    double q = NAN; /* NaN: nothing recorded */
+    if (rc == GW_OK && found) {
+        q = found->q;
+        gw_snprintf(res->settling, sizeof res->settling, "%s", found->warning);
+    } else if (rc == GW_OK && (rc = layer_settled_check_q(smp, &lp, ip->other_settling, NULL, res->settling,
+                                                          sizeof res->settling, &q, err)) != GW_OK) {
         gw_layer_free(L);
         return rc;
     }
-    res->settled_load_ratio = gw_layer_settled_load_ratio(smp, &lp); /* NaN: nothing recorded */
-    if (rc == GW_OK && (rc = layer_rest_check(smp, &lp, ip->other_settling, NULL, err)) != GW_OK) {
+    res->settled_load_ratio = q;
+    if (rc == GW_OK && !found && (rc = layer_rest_check(smp, &lp, ip->other_settling, NULL, q, err)) != GW_OK) {
         gw_layer_free(L);
         return rc;
     }

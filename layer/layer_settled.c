@@ -158,8 +158,16 @@ static double friction_ratio(double settled_deg, double impact_deg)
 int gw_layer_impact_settled_check(const gw_layer_sample *smp, const gw_layer_params *lp, int other_settling,
                                   const char *name, char *warning, size_t n, gw_err *err)
 {
+    double q;
+    return layer_settled_check_q(smp, lp, other_settling, name, warning, n, &q, err);
+}
+
+int layer_settled_check_q(const gw_layer_sample *smp, const gw_layer_params *lp, int other_settling,
+                          const char *name, char *warning, size_t n, double *q_out, gw_err *err)
+{
     if (warning && n > 0)
         warning[0] = '\0';
+    *q_out = NAN;
     if (!smp || !lp)
         return gw_err_set(err, GW_EINVAL, "gw_layer_impact_settled_check: %s is NULL", !smp ? "s" : "lp");
     /* a pile written before it settled (its "settled:" line says converged
@@ -194,6 +202,7 @@ int gw_layer_impact_settled_check(const gw_layer_sample *smp, const gw_layer_par
     int rc = load_ratio(smp, lp, &q, &e);
     if (rc != GW_OK) /* its clumps could not be weighed as unions */
         return gw_err_set(err, rc, "sample%s: weighing its clumps: %s", nm, e.msg);
+    *q_out = q;
     const int cs = settled_clump_mass(smp);
     const int law = st->mass_law != lp->mass_law, fric = st->friction_deg != lp->friction_deg;
     const int clump = smp->body && cs != lp->clump_mass; /* without clumps the clump mass is moot */

@@ -301,6 +301,22 @@ static const char *choice(const gw_layer_impact_setup *s, const char *row, char 
 int layer_settling_verdict(const gw_layer_sample *smp, const gw_layer_params *lp, int other_settling,
                            const char *name, layer_settling_memo *memo, char *warning, size_t n, gw_err *err)
 {
+    return layer_settling_verdict_found(smp, lp, other_settling, name, memo, NULL, warning, n, err);
+}
+
+/* The verdict a run takes (found may be NULL). */
+static void found_set(layer_settling_found *found, const struct layer_settling_kept *k)
+{
+    if (!found)
+        return;
+    found->q = k->q;
+    gw_snprintf(found->warning, sizeof found->warning, "%s", k->rc == GW_OK ? k->warning : "");
+}
+
+int layer_settling_verdict_found(const gw_layer_sample *smp, const gw_layer_params *lp, int other_settling,
+                                 const char *name, layer_settling_memo *memo, layer_settling_found *found,
+                                 char *warning, size_t n, gw_err *err)
+{
     for (int k = 0; memo && k < LAYER_SETTLING_KEPT; k++) {
         const struct layer_settling_kept *m = &memo->kept[k];
         if (m->valid && m->other_settling == other_settling && memcmp(&m->lp, lp, sizeof *lp) == 0) {
@@ -308,15 +324,19 @@ int layer_settling_verdict(const gw_layer_sample *smp, const gw_layer_params *lp
                 gw_snprintf(warning, n, "%s", m->warning);
             if (m->rc != GW_OK && err)
                 *err = m->err;
+            found_set(found, m);
             return m->rc;
         }
     }
     struct layer_settling_kept f = {.other_settling = other_settling, .lp = *lp};
-    f.rc = gw_layer_impact_settled_check(smp, lp, other_settling, name, f.warning, sizeof f.warning, &f.err);
+    /* the check, then the floor's load against the ratio it found (one
+     * weighing of a union-clump pile for both) */
+    f.rc = layer_settled_check_q(smp, lp, other_settling, name, f.warning, sizeof f.warning, &f.q, &f.err);
     if (f.rc == GW_OK)
-        f.rc = layer_rest_check(smp, lp, other_settling, name, &f.err);
+        f.rc = layer_rest_check(smp, lp, other_settling, name, f.q, &f.err);
     if (warning && n > 0)
         gw_snprintf(warning, n, "%s", f.rc == GW_OK ? f.warning : "");
+    found_set(found, &f);
     if (f.rc != GW_OK && err)
         *err = f.err;
     if (memo && f.rc != GW_ENOMEM) {
@@ -330,7 +350,7 @@ int layer_settling_verdict(const gw_layer_sample *smp, const gw_layer_params *lp
 /* Materials, solver and impact parameters as layer-impact resolves them. */
 static int resolve(const gw_layer_impact_setup *s, const gw_layer_sample *smp, gw_layer_params *lp,
                    gw_layer_impact_params *ip, const gw_solver_type **type, gw_solver_params *sp,
-                   layer_settling_memo *memo, gw_err *err)
+                   layer_settling_memo *memo, layer_settling_found *found, gw_err *err)
 {
     char sname[16], mname[16];
     *lp = gw_layer_params_default();
@@ -404,7 +424,8 @@ static int resolve(const gw_layer_impact_setup *s, const gw_layer_sample *smp, g
     if (rc == GW_OK)
         rc = gw_layer_impact_step_check(ip, *type, sp, err);
     /* the warning is the run's (gw_layer_impact keeps it in its result) */
-    return rc == GW_OK ? layer_settling_verdict(smp, lp, s->other_settling, s->sample, memo, NULL, 0, err) : rc;
+    return rc == GW_OK ? layer_settling_verdict_found(smp, lp, s->other_settling, s->sample, memo, found, NULL, 0, err)
+                       : rc;
 }
 
 /* The setup's rows in their ranges and a sample named: what a plan (the
@@ -417,8 +438,9 @@ static int setup_rows_check(const gw_layer_impact_setup *s, gw_err *err)
     return rc;
 }
 
-int layer_impact_plan_make_memo(const gw_layer_impact_setup *s, gw_layer_impact_plan *p, layer_settling_memo *memo,
-                                gw_err *err)
+/* The plan, its settling verdict through memo (may be NULL) into found (may be NULL). */
+static int plan_make(const gw_layer_impact_setup *s, gw_layer_impact_plan *p, layer_settling_memo *memo,
+                     layer_settling_found *found, gw_err *err)
 {
     if (!s || !p)
         return gw_err_set(err, GW_EINVAL, "gw_layer_impact_plan_make: %s is NULL", !s ? "s" : "p");
@@ -428,7 +450,13 @@ int layer_impact_plan_make_memo(const gw_layer_impact_setup *s, gw_layer_impact_
         return rc;
     if ((rc = gw_layer_sample_read(s->sample, &p->sample, err)) != GW_OK)
         return rc;
-    return resolve(s, &p->sample, &p->lp, &p->ip, &p->type, &p->sp, memo, err);
+    return resolve(s, &p->sample, &p->lp, &p->ip, &p->type, &p->sp, memo, found, err);
+}
+
+int layer_impact_plan_make_memo(const gw_layer_impact_setup *s, gw_layer_impact_plan *p, layer_settling_memo *memo,
+                                gw_err *err)
+{
+    return plan_make(s, p, memo, NULL, err);
 }
 
 int gw_layer_impact_plan_make(const gw_layer_impact_setup *s, gw_layer_impact_plan *p, gw_err *err)
@@ -455,7 +483,7 @@ int layer_impact_setup_check_sample(const gw_layer_impact_setup *s, const gw_lay
     gw_layer_impact_params ip;
     const gw_solver_type *type;
     gw_solver_params sp;
-    return resolve(s, smp, &lp, &ip, &type, &sp, memo, err);
+    return resolve(s, smp, &lp, &ip, &type, &sp, memo, NULL, err);
 }
 
 int gw_layer_impact_setup_check(const gw_layer_impact_setup *s, gw_err *err)
@@ -479,7 +507,8 @@ int gw_layer_impact_run_progress(const gw_layer_impact_setup *s, gw_progress_fn 
     memset(out, 0, sizeof *out);
     out->block_index = -1;
     gw_layer_impact_plan plan;
-    int rc = gw_layer_impact_plan_make(s, &plan, err);
+    layer_settling_found found = {.q = NAN}; /* the plan's verdict: the run does not find it again */
+    int rc = plan_make(s, &plan, NULL, &found, err);
     const gw_layer_sample smp = plan.sample; /* a view: freed with the plan */
     const gw_layer_params lp = plan.lp;
     gw_layer_impact_params ip = plan.ip;
@@ -515,7 +544,7 @@ int gw_layer_impact_run_progress(const gw_layer_impact_setup *s, gw_progress_fn 
         }
     }
     if (rc == GW_OK)
-        rc = gw_layer_impact(&smp, &lp, &ip, type, &sp, &out->r, err);
+        rc = layer_impact_run(&smp, &lp, &ip, type, &sp, &found, &out->r, err);
     if (rc == GW_ECANCELED)
         gw_err_set(err, rc, "stopped by the progress callback");
     free(sc.req);

@@ -499,16 +499,36 @@ static double canon(double v)
     return isnan(v) ? NAN : v;
 }
 
-static int run(int nk, const char *const *names, const char *const *values, double *out,
-               unsigned long long *read_hash, gw_err *err)
+/* A case's part: the output samples done over those up to t-max (the last
+ * call, at the run's end, says all of them: not passed on). */
+typedef struct case_part {
+    void (*fn)(void *pctx, double x);
+    void *pctx;
+} case_part;
+
+static int at_samples(void *ctx, long done, long total)
 {
+    const case_part *cp = ctx;
+    if (done < total)
+        cp->fn(cp->pctx, (double)done / (double)total);
+    return 0;
+}
+
+int gw_layer_sweep_run_part(int nk, const char *const *names, const char *const *values, double *out,
+                            unsigned long long *read_hash, void (*part)(void *pctx, double x), void *pctx,
+                            gw_err *err)
+{
+    if (!out || (nk > 0 && (!names || !values)))
+        return gw_err_set(err, GW_EINVAL, "gw_layer_sweep_run_part: %s is NULL",
+                          !out ? "out" : !names ? "names" : "values");
     gw_layer_impact_setup s;
     gw_layer_impact_outcome o;
     memset(&o, 0, sizeof o);
     placement pl;
+    case_part cp = {.fn = part, .pctx = pctx};
     int rc = prepare(&s, nk, names, values, &pl, err);
     if (rc == GW_OK) {
-        rc = gw_layer_impact_run(&s, &o, err);
+        rc = gw_layer_impact_run_progress(&s, part ? at_samples : NULL, &cp, &o, err);
         if (rc == GW_EUNSUPPORTED || rc == GW_EFORMAT || rc == GW_EIO) /* a bad input found only by the run */
             rc = GW_EINVAL;
         if (rc == GW_EINVAL)
@@ -535,6 +555,12 @@ static int run(int nk, const char *const *names, const char *const *values, doub
     gw_layer_impact_outcome_free(&o);
     gw_layer_impact_setup_clear(&s);
     return rc;
+}
+
+static int run(int nk, const char *const *names, const char *const *values, double *out,
+               unsigned long long *read_hash, gw_err *err)
+{
+    return gw_layer_sweep_run_part(nk, names, values, out, read_hash, NULL, NULL, err);
 }
 
 const gw_sweep_model gw_layer_sweep_model = {"layer",  NCOLUMNS, columns,       has_key,  run,

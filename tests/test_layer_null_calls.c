@@ -215,6 +215,17 @@ static int c_gw_layer_crowns(void)
     return gw_layer_crowns(NULL) == GW_EINVAL;
 }
 
+/* the sweep model's run with its part (session 30): out, then names */
+static int c_gw_layer_sweep_run_part(void)
+{
+    gw_err e = {{0}}, f = {{0}};
+    double out[64];
+    return gw_layer_sweep_run_part(1, NULL, NULL, NULL, NULL, NULL, NULL, &e) == GW_EINVAL &&
+           gw_test_said(&e, "gw_layer_sweep_run_part: out is NULL") &&
+           gw_layer_sweep_run_part(1, NULL, NULL, out, NULL, NULL, NULL, &f) == GW_EINVAL &&
+           gw_test_said(&f, "gw_layer_sweep_run_part: names is NULL");
+}
+
 static const gw_test_call calls[] = {
     {"gw_layer_params_validate", c_gw_layer_params_validate},
     {"gw_layer_kn", c_gw_layer_kn},
@@ -255,6 +266,7 @@ static const gw_test_call calls[] = {
     {"gw_layer_impact", c_gw_layer_impact},
     {"gw_layer_impact_write_h5", c_gw_layer_impact_write_h5},
     {"gw_layer_crowns", c_gw_layer_crowns},
+    {"gw_layer_sweep_run_part", c_gw_layer_sweep_run_part},
 };
 
 int main(void)

@@ -451,6 +451,17 @@ static int c_gw_case_config_hash(void)
     return gw_case_config_hash(NULL, 1, NULL, NULL) == 0;
 }
 
+/* the sweep model's run with its part (session 30): out, then names */
+static int c_gw_chain_sweep_run_part(void)
+{
+    gw_err e = {{0}}, f = {{0}};
+    double out[16];
+    return gw_chain_sweep_run_part(1, NULL, NULL, NULL, NULL, NULL, NULL, &e) == GW_EINVAL &&
+           gw_test_said(&e, "gw_chain_sweep_run_part: out is NULL") &&
+           gw_chain_sweep_run_part(1, NULL, NULL, out, NULL, NULL, NULL, &f) == GW_EINVAL &&
+           gw_test_said(&f, "gw_chain_sweep_run_part: names is NULL");
+}
+
 static const gw_test_call calls[] = {
     {"gw_thornton_init", c_gw_thornton_init},
     {"gw_chain_trace_init", c_gw_chain_trace_init},
@@ -535,6 +546,7 @@ static const gw_test_call calls[] = {
     {"gw_input_open", c_gw_input_open},
     {"gw_fnv1a64_stream", c_gw_fnv1a64_stream},
     {"gw_case_config_hash", c_gw_case_config_hash},
+    {"gw_chain_sweep_run_part", c_gw_chain_sweep_run_part},
 };
 
 int main(void)

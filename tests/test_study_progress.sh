@@ -15,8 +15,14 @@
 #    counted); nothing else on stderr. Each is stopped once it has printed
 #    three lines (12 s without them is a failure);
 #  - a sweep of two such columns (chain, n = 400, 401, 2 threads): after its
-#    header, lines "sweep: 0/2 cases, J under way, E s elapsed" within 6 s
-#    and at most 4.5 s apart, where it said nothing until a case ended;
+#    header, lines "sweep: 0/2 cases, J under way, P% of the work, E s
+#    elapsed, ~L s left" within 6 s and at most 4.5 s apart, where it said
+#    nothing until a case ended; P > 0 and rising while no case has ended
+#    (the cases seen inside: before, "0/2 cases, 2 under way" and no P);
+#  - a layer sweep of two exact impacts on a 40-disc pile at 20 and 21 m/s,
+#    rk4 at 4e-7 s, one thread (each about 5 s to T_f = 0.31 s): a line "sweep: 0/2 cases, 1 under way, P% ..." with
+#    P > 0 inside the first case, a line at 100 % at the end, exit 0, and
+#    the table of its --quiet twin (results bit for bit);
 #  - layer-make --n 300 (16 s on a loaded machine) in a pipe: its line
 #    within 6 s, where it spoke on a terminal only;
 #  - --quiet: nothing on stderr over the same time;
@@ -24,7 +30,8 @@
 #    line "n/n collisions, 100.0% of the work", and its stdout --json parses;
 #  - short studies (under 1.9 s): the header and the last line only, stdout's
 #    JSON that of --quiet but for the wall time, and nothing with --quiet.
-# About 15 s (the three long studies at once, then falcon --n 140:141).
+# About 30 s (the three long studies at once, the layer sweep, then falcon
+# --n 140:141).
 # shellcheck source=tests/test_lib.sh
 . "$(dirname "${BASH_SOURCE[0]}")/test_lib.sh"
 test_setup "$@"
@@ -38,8 +45,10 @@ def check(cond, what):
     print(("PASS: " if cond else "FAIL: ") + what, flush=True)
 
 LINE = re.compile(r"  (\d+)/(\d+) collisions, ([0-9.]+)% of the work, ([0-9.]+) s elapsed, ~([0-9.]+) s left")
-# a sweep's line: before its first case ends the cases under way, then its rate and time left
-SWEEP = re.compile(r"sweep: (\d+)/(\d+) cases, (?:(\d+) under way|[0-9.]+ cases/s), ([0-9.]+) s elapsed(?:, ~[0-9.]+ s left)?")
+# a sweep's line: the cases ended and under way, the share of the work (the
+# cases under way by their parts), the time left once the share is above 0
+SWEEP = re.compile(r"sweep: (\d+)/(\d+) cases, (\d+) under way, ([0-9.]+)% of the work, ([0-9.]+) s elapsed"
+                   r"(?:, ~([0-9.]+) s left)?")
 
 class Run:
     """A run of the program whose stderr lines are stamped as they arrive."""
@@ -107,13 +116,20 @@ check(len(prog) == len(sw.lines) - 1, "sweep: every other line a whole progress 
       % [l for _, l in sw.lines[1:] if not SWEEP.fullmatch(l)])
 check(len(prog) >= 3, "sweep: three lines within 12 s (%d in %.1f s)" % (len(prog), el))
 if prog:
-    check(prog[0][0] <= 6.0 and prog[0][1].group(1) == "0" and prog[0][1].group(3) is not None,
+    check(prog[0][0] <= 6.0 and prog[0][1].group(1) == "0" and prog[0][1].group(3) == "2",
           "sweep: the first line within 6 s, before any case ended, its cases under way: %.2f s %s"
           % (prog[0][0], prog[0][1].group(0)))
+    inside = [x for _, x in prog if x.group(1) == "0"]
+    ps = [float(x.group(4)) for x in inside]
+    check(len(ps) >= 2 and ps[0] > 0 and all(b > a for a, b in zip(ps, ps[1:])) and ps[-1] < 100
+          and all(x.group(6) is not None for x in inside),
+          "sweep: inside its cases (0/2 ended) the share of the work above 0 and rising, under 100 %%, with a "
+          "time left: %s" % ps)
     gaps = [b[0] - a[0] for a, b in zip(prog, prog[1:])]
     check(all(g <= 4.5 for g in gaps), "sweep: lines at most 4.5 s apart: %s" % ["%.2f" % g for g in gaps])
     check(all(x.group(2) == "2" for _, x in prog), "sweep: n = 2 cases in every line")
 check(not swq.lines, "sweep --quiet: nothing on stderr in %.1f s: %r" % (el_q, swq.lines[:2]))
+
 for r, q, n, head in runs:
     el, el_q = r.stop(), q.stop()
     lines = r.lines
@@ -143,6 +159,32 @@ for r, q, n, head in runs:
               "%s: under 100%% while running" % what)
     check(not q.lines, "%s --quiet: nothing on stderr in %.1f s: %r" % (what, el_q, q.lines[:2]))
 
+# --- a layer sweep of two exact impacts, one at a time, each several seconds ---
+subprocess.run([GW, "layer-make", "--n", "40", "--seed", "1", "--out", "s40.txt", "--quiet"], check=True,
+               stdout=subprocess.DEVNULL)
+for o in ("ly", "lyq"):
+    open(o + ".ini", "w").write("[sweep]\nmodel = layer\nout = %s\n[grid]\nsample = s40.txt\nvi = 20, 21\n"
+                                "[params]\nexact = 1\ndt = 4e-7\n" % o)
+ly, lyq = Run(["sweep", "ly.ini", "--jobs", "1"]), Run(["sweep", "lyq.ini", "--jobs", "1", "--quiet"])
+ly.p.wait(timeout=300)
+lyq.p.wait(timeout=300)
+ly.stop(), lyq.stop()
+prog = ly.progress(SWEEP)
+check(ly.p.returncode == 0 and lyq.p.returncode == 0 and len(prog) == len(ly.lines) - 2,
+      "layer sweep: exit 0 (%s, --quiet %s), the header, whole progress lines and the last line: %r"
+      % (ly.p.returncode, lyq.p.returncode, [l for _, l in ly.lines]))
+first = [x for _, x in prog if x.group(1) == "0"]
+check(any(float(x.group(4)) > 0 and x.group(3) == "1" and x.group(6) is not None for x in first),
+      "layer sweep: a line inside its first case (0/2 ended, 1 under way) with a share of the work above 0 and a "
+      "time left: %r" % [x.group(0) for x in first])
+check(bool(prog) and prog[-1][1].group(1) == "2" and prog[-1][1].group(4) == "100.0",
+      "layer sweep: the last line 2/2 at 100 %%: %s" % (prog[-1][1].group(0) if prog else None))
+try:
+    rows = [[l for l in open(o + "/results.csv", "rb") if not l.startswith(b"#")] for o in ("ly", "lyq")]
+    same = rows[0] == rows[1] and len(rows[0]) == 3
+except OSError:
+    same = False
+check(same, "layer sweep: its table's rows those of its --quiet twin, byte for byte")
 # --- a study of a few seconds to its end: the last line, and stdout's JSON ---
 r = Run(["falcon", "--n", "140:141", "--heights", "none", "--vimp", "0.3", "--jobs", "2", "--json"])
 r.p.wait(timeout=120)

@@ -27,7 +27,8 @@ make_sample s.txt --n 40 --seed 1
 make_sample s2.txt --n 40 --seed 2
 make_sample u.txt --n 20 --clumps --seed 1 --clump-mass union
 
-# calls CMD...: the times CMD enters gw_layer_impact_settled_check, from
+# calls CMD...: the times CMD enters the settling check
+# (gw_layer_impact_settled_check or layer_settled_check_q), from
 # valgrind's call graph (callgrind: each call site's "calls=" count under the
 # function's cfn= line; the first cfn= or fn= line naming it gives its id);
 # empty when valgrind could not run it
@@ -37,16 +38,25 @@ calls() {
         >/dev/null 2>"$tmp/cg.err" </dev/null || return
     /usr/bin/python3 - "$tmp/cg.out" <<'EOF'
 import re, sys
-ids, total, want = set(), 0, False
+# the check is entered as gw_layer_impact_settled_check, or as its body
+# layer_settled_check_q (which the library's own callers call, to keep the
+# load ratio it finds): either, but not the one through the other
+CHECK = ("gw_layer_impact_settled_check", "layer_settled_check_q")
+names, fn, cfn, total = {}, "", None, 0
 for line in open(sys.argv[1]):
-    m = re.match(r"c?fn=\((\d+)\)(?: (.*))?$", line.strip())
+    line = line.strip()
+    m = re.match(r"(c?fn)=\((\d+)\)(?: (.*))?$", line)
     if m:
-        if m.group(2) == "gw_layer_impact_settled_check":
-            ids.add(m.group(1))
-        want = line.startswith("cfn=") and m.group(1) in ids
-    elif want and line.startswith("calls="):
-        total += int(line.split("=")[1].split()[0])
-        want = False
+        if m.group(3):
+            names[m.group(2)] = m.group(3)
+        if m.group(1) == "fn":
+            fn, cfn = names.get(m.group(2), ""), None
+        else:
+            cfn = names.get(m.group(2), "")
+    elif cfn and line.startswith("calls="):
+        if cfn in CHECK and fn not in CHECK:
+            total += int(line.split("=")[1].split()[0])
+        cfn = None
 print(total)
 EOF
 }

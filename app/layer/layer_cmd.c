@@ -661,7 +661,7 @@ int gw_cmd_layer_impact(int argc, char **argv)
     c.settled = plan.sample.settled;
     if (c.settled.clump_mass < 0) /* the line does not say: the sample's own clump_mass line */
         c.settled.clump_mass = plan.sample.clump_mass;
-    c.settled_q = gw_layer_settled_load_ratio(&plan.sample, &plan.lp);
+    c.settled_q = NAN; /* the run's (gw_layer_impact_result.settled_load_ratio): weighed once there */
     c.solver = gw_solver_type_name(plan.type);
     const gw_solver_type *type = c.type;
     gw_solver_params sp = c.sp;
@@ -707,6 +707,7 @@ int gw_cmd_layer_impact(int argc, char **argv)
         fprintf(stderr, "granwave layer-impact: %s\n", err.msg);
         return rc == GW_EINVAL || rc == GW_EUNSUPPORTED ? 2 : 1;
     }
+    c.settled_q = r.settled_load_ratio;
     int code = 0;
     /* the library's texts, one line each (out of memory for them: no line): a
      * sample settled under another material, an undecided outcome (the JSON

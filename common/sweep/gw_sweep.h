@@ -115,6 +115,19 @@ typedef struct gw_sweep_model {
     int (*memo_warnings)(const void *memo, char **list);
 } gw_sweep_model;
 
+/* A case's progress while it runs, for a display of the sweep: x, the share
+ * of the case done on its model's own scale (a chain case: its collision's
+ * simulated time over its expected length; a layer case: its output samples
+ * over those up to t-max), from the thread that runs the case, at most about
+ * once per output sample; x may pass 1 (a collision longer than expected) or
+ * end below it (an impact ended at T_f). It must return at once. */
+typedef void (*gw_sweep_part_fn)(void *pctx, double x);
+/* A model's run that reports its part (gw_chain_sweep_run_part,
+ * gw_layer_sweep_run_part): the model's run, its results bit for bit, with
+ * part(pctx, x) as it goes (part may be NULL). */
+typedef int (*gw_sweep_run_part_fn)(int nkeys, const char *const *names, const char *const *values, double *out,
+                                    unsigned long long *read_hash, gw_sweep_part_fn part, void *pctx, gw_err *err);
+
 /* Check case k of a pass over a model's cases (check_memo with *memo when the
  * model has it, else check; GW_OK when it has neither). gw_sweep_checks_end
  * frees the memo when the pass ends. */

@@ -290,6 +290,27 @@ typedef struct gw_layer_settled {
                               0 in a struct zeroed by an older caller: nothing said */
 } gw_layer_settled;
 
+/* The tangential (Mindlin/Coulomb) spring of one contact of a settled pile,
+ * which the pile leans on at rest: layer-make keeps every closed contact's
+ * (gw_layer_make), a sample file carries them in an optional section, and an
+ * impact starts its contacts from them (gw_layer_impact). Without them every
+ * contact's F_t starts at zero and the pile sags into the impact until
+ * friction builds up again (1000 discs: 5.9 kJ of potential energy lost in
+ * 100 ms, the default block at 0.01 m/s on it). */
+enum { GW_LAYER_SPRING_LEFT = -1, GW_LAYER_SPRING_RIGHT = -2, GW_LAYER_SPRING_BOTTOM = -3 };
+typedef struct gw_layer_spring {
+    int a, b;   /* the contact: particles a < b (indices into the sample), or particle a
+                   against a wall b (GW_LAYER_SPRING_LEFT, _RIGHT, _BOTTOM) */
+    double u;   /* the spring's elastic tangential displacement u_t = F_t / K_t, m: the
+                   geometry of the spring, as the positions are the overlaps' (F_t along
+                   t = (-n_y, n_x), n from a to b; the same value whichever disc is a).
+                   An impact turns it into F_t = K_t u_t with its own K_t (B.4) and
+                   clips that to its own Coulomb bound tan(phi) F_n: a friction below the
+                   settling's starts those contacts sliding. At rest |u_t| <= tan(phi)
+                   u_n (2 - nu) / (3 (1 - nu)), u_n the overlap (the bound F_t = tan(phi)
+                   F_n through B.3, B.4: it does not depend on G or R_p) */
+} gw_layer_spring;
+
 /* A pluviated sample: positions and radii of settled soil particles. */
 typedef struct gw_layer_sample {
     int n;
@@ -310,6 +331,11 @@ typedef struct gw_layer_sample {
     gw_layer_settled settled; /* the settling's material (gw_layer_sample_read, gw_layer_make);
                                  recorded 0 when unknown. Appended: older callers that zero
                                  the struct get "not recorded" */
+    int n_springs;              /* contacts whose tangential spring the sample carries; 0: none
+                                   (an impact starts every F_t at zero, as before ABI 2) */
+    gw_layer_spring *springs;   /* [n_springs], owned by the sample (NULL when none); each
+                                   pair at most once, in contact (u_n > 0), discs of
+                                   different bodies. ABI 2 */
 } gw_layer_sample;
 
 void gw_layer_sample_free(gw_layer_sample *s);
@@ -501,6 +527,10 @@ typedef struct gw_layer_impact_params {
     int other_settling; /* 1: run a sample whose recorded settling (gw_layer_settled)
                            leaves its pile away from rest under this impact's material
                            (gw_layer_impact_settled_check), with a warning [0: refused] */
+    int zero_springs;   /* 1: start every contact's tangential spring at zero, as from a sample
+                           without springs (a peer whose input carries none, such as a LAMMPS
+                           data file, is compared like with like) [0: from the sample's
+                           springs, gw_layer_spring] */
 } gw_layer_impact_params;
 
 gw_layer_impact_params gw_layer_impact_params_default(void);

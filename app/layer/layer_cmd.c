@@ -414,6 +414,7 @@ static cJSON *impact_json(const impact_cli *c, const gw_layer_impact_result *r,
     cJSON_AddStringToObject(s, "until", gw_layer_until_name(c->ip.until));
     cJSON_AddBoolToObject(s, "remove_walls", c->ip.remove_walls);
     cJSON_AddBoolToObject(s, "other_settling", c->ip.other_settling);
+    cJSON_AddBoolToObject(s, "zero_springs", c->ip.zero_springs);
     cJSON_AddItemToObject(s, "material", mat_json(&c->m.lp));
     /* what the sample's settings line recorded of its settling (null: nothing) */
     if (c->settled.recorded) {

@@ -161,6 +161,7 @@ typedef struct text_in {
     char com[128];
     size_t ncom;
     int unsettled;
+    long *spr_lines; /* the line of each spring read (owned) */
 } text_in;
 
 /* Append c to the settings text; GW_ENOMEM, or GW_EFORMAT past SAMPLE_SETTINGS_MAX. */
@@ -545,9 +546,10 @@ static int read_text(text_in *t, gw_layer_sample *s, gw_err *err)
     }
     if (rc == GW_OK) /* after the settings' parse, which zeroes the record */
         s->settled.unsettled = t->unsettled;
-    if (rc == GW_OK) /* under the settling's record: its Coulomb bound */
-        rc = layer_springs_check(s, t->path, lines, GW_EFORMAT, err);
-    free(lines);
+    if (rc == GW_OK) /* checked by the caller, last (gw_layer_sample_read) */
+        t->spr_lines = lines;
+    else
+        free(lines);
     return rc;
 }
 
@@ -616,6 +618,7 @@ int gw_layer_sample_read(const char *path, gw_layer_sample *s, gw_err *err)
         return orc;
     t.npre = fread(t.pre, 1, sizeof t.pre, t.fp);
     int rc, sb = -1;
+    long *spr_lines = NULL;
     if (t.npre == sizeof t.pre && h5_signature_at(t.fp, t.pre, &sb)) {
         fclose(t.fp);
 #if GW_HAVE_HDF5
@@ -628,6 +631,7 @@ int gw_layer_sample_read(const char *path, gw_layer_sample *s, gw_err *err)
     } else {
         rc = read_text(&t, s, err);
         free(t.set);
+        spr_lines = t.spr_lines;
         /* the content hash from the same open file: what was read */
         if (rc == GW_OK && (fseek(t.fp, 0, SEEK_SET) != 0 || gw_fnv1a64_stream(t.fp, &s->content_hash) != GW_OK))
             rc = gw_err_set(err, GW_EIO, "sample '%s': cannot read it again for its content hash", path);
@@ -640,6 +644,11 @@ int gw_layer_sample_read(const char *path, gw_layer_sample *s, gw_err *err)
         gw_snprintf(what, sizeof what, "sample '%s'", path);
         rc = layer_overlaps_check(s->n, s->x, s->y, s->r, s->body, what, err);
     }
+    /* the springs last, under the settling's record (its Coulomb bound): a
+     * file whose particles are refused says so first */
+    if (rc == GW_OK)
+        rc = layer_springs_check(s, path, spr_lines, GW_EFORMAT, err);
+    free(spr_lines);
     if (rc != GW_OK) {
         gw_layer_sample_free(s);
         memset(s, 0, sizeof *s);

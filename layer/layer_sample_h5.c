@@ -572,9 +572,8 @@ static int h5_fields(hid_t f, gw_layer_sample *s, const char *path, const char *
     rc = layer_sample_check(s, path, &src, GW_EFORMAT, err);
     if (rc == GW_OK)
         rc = h5_settings_read(f, s, path, err);
-    if (rc == GW_OK)
-        rc = h5_springs_read(f, s, path, why, err);
-    return rc == GW_OK ? layer_springs_check(s, path, NULL, GW_EFORMAT, err) : rc;
+    /* (their sense is checked last, by gw_layer_sample_read) */
+    return rc == GW_OK ? h5_springs_read(f, s, path, why, err) : rc;
 }
 
 /* libhdf5 decodes metadata without bounds checks, so a corrupt file can crash

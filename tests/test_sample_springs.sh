@@ -185,7 +185,7 @@ half[j] = "%s %s %r" % (a, b, float(u) / 2)
 open("h.txt", "w").write("\n".join(half) + "\n")
 EOF
 fp=$(imp --sample p.txt)
-$PY -c "import sys; a, b = (list(map(float, s.split())) for s in sys.argv[1:]); sys.exit(not all(abs(x - y) <= 1e-9 * abs(x) for x, y in zip(a, b)))" "$ft" "$fp" &&
+$PY -c "import sys; a, b = (list(map(float, s.split())) for s in sys.argv[1:]); sys.exit(not (len(a) == len(b) == 3 and all(abs(x - y) <= 1e-9 * abs(x) for x, y in zip(a, b))))" "$ft" "$fp" &&
     ok "4 shuffled, the springs following their discs: the impact within 1e-9 ($fp)" || ko "4 shuffled: '$fp' against '$ft'"
 one_pile "4 the pile and its shuffled listing" f.txt p.txt
 two_piles "4 the shuffled pile with one spring halved" p.txt h.txt

@@ -362,14 +362,19 @@ size_t gw_layer_sample_size(void);
  * column: "x y r body", body an integer id in [0, N); particles sharing an id
  * form one rigid clump and must overlap or touch (members connected within
  * 1e-9 of the sum of radii), at most 64 per clump. Version 1 files read with
- * body = NULL.
+ * body = NULL. Either version may end with the springs (gw_layer_spring):
+ *   springs M        (integer in [0, 8 (n + 1)])
+ * then M lines "a b u": particle indices a and b (or a wall: left, right,
+ * bottom) and the displacement u (m); without the section n_springs = 0.
  * HDF5 sample (format version 1, builds with HDF5): root attributes format =
  * "granwave-layer-sample", format_version = 1, granwave_version, width, rm,
  * volume_ratio, porosity (double), seed (integer), mass_law ("disc"/"sphere"),
  * clump_mass ("sum"/"union"; optional, written only for union),
  * n (integer), units and header (strings); datasets x, y, r of n doubles (m),
  * and for clump samples an integer dataset body (read when present, same
- * checks as the text column).
+ * checks as the text column); the springs as datasets spring_a, spring_b
+ * (integers, a wall GW_LAYER_SPRING_*) and spring_u (m) of M values, all
+ * three or none.
  *
  * Write: HDF5 when path ends in .h5 or .hdf5 (GW_EUNSUPPORTED in a build
  * without HDF5), text otherwise; atomically (temporary name, then rename).
@@ -382,7 +387,10 @@ size_t gw_layer_sample_size(void);
  * (0 <= x <= width, y >= 0, up to 0.02 r), n within limits and matching the
  * data, and a header that is the particles' (the grading of rm and
  * volume_ratio, a width the packing fills when it is more than one particle
- * high, a porosity within 2e-3 of gw_layer_sample_porosity's). GW_EFORMAT
+ * high, a porosity within 2e-3 of gw_layer_sample_porosity's), and last the
+ * springs (each pair once, of different bodies, in contact at the file's
+ * positions, finite, within the recorded settling's Coulomb bound to 1e-3;
+ * the writer checks them too, GW_EINVAL). GW_EFORMAT
  * (GW_EIO: unreadable; GW_EUNSUPPORTED: HDF5 file in a build without HDF5) with a message naming the file and the line or particle; s is
  * then empty (safe to free). The settling's record s->settled comes from the
  * header's settings line (a comment "# settings: {JSON}" in text, a line

@@ -16,6 +16,9 @@
  * random draws; the integration is RK4 with a fixed step (no contact events;
  * the contact list checked at the steps' ends and F_t of open contacts zeroed
  * after every step, so that the sample does not depend on the skin: layer_sim.c).
+ * The sample keeps the settled pile's tangential springs (gw_layer_spring:
+ * the last settling's contacts, layer_springs_take), so that an impact starts
+ * from the forces the pile rests on (before, from zero: the pile sagged).
  * Type B soil (clumps = 1): n rigid clumps instead of n discs. Each clump draws
  * its equivalent radius R_eq from the discs' grading (same curve), its aspect
  * ratio uniform in [1, aspect_max] ([1, 4] by default) and its orientation uniform in [0, pi); its shape is

@@ -6,7 +6,9 @@
  * Text format, documented in gw_layer.h: a magic line, "key value" header lines,
  * then "n N" and N lines "x y r" in metres (version 2, clump samples of type B
  * soil: "x y r body", the rigid-body id; disc samples keep writing version 1,
- * so their files are unchanged). '#' starts a comment line (the
+ * so their files are unchanged), then optionally the pile's tangential
+ * springs, "springs M" and M lines "a b u" (gw_layer_spring; read here,
+ * checked last by layer_sample_springs.c). '#' starts a comment line (the
  * writer puts the program version and the command line there); the one
  * "# settings: {JSON}" line layer-make writes among them is read for the
  * settling's material (layer_sample_settings.c, gw_layer_settled), and its

@@ -507,6 +507,10 @@ int gw_layer_impact(const gw_layer_sample *smp, const gw_layer_params *lp0,
         rc = gw_layer_impact_gap_check(smp, ip, lp0->gravity, err);
     if (rc == GW_OK)
         rc = gw_layer_impact_step_check(ip, type, sp, err);
+    /* a sample built in memory: its springs pass the reader's checks (a NaN
+     * was clipped to the cap, an index beyond the sample ignored, in silence) */
+    if (rc == GW_OK && !ip->zero_springs && smp->n_springs != 0)
+        rc = layer_springs_check(smp, "s", NULL, GW_EINVAL, err);
     if (rc != GW_OK)
         return rc;
     const int n = smp->n;

@@ -604,7 +604,7 @@ int layer_bodies_check(int n, const double *x, const double *y, const double *r,
 #define LAYER_CLUMP_MEMBERS 64
 int layer_clump_shape(double req, double aspect, double angle, double *ox, double *oy, double *r);
 
-/* A sample's tangential springs (layer_sample_springs.c). At most
+/* A sample's tangential springs (layer_sample_springs.c, layer_springs.c). At most
  * LAYER_SPRINGS_MOST(n) in a sample of n particles (a settled pile has about
  * 2 contacts a disc). */
 #define LAYER_SPRINGS_MOST(n) (8L * ((long)(n) + 1))
@@ -628,6 +628,13 @@ void layer_springs_load(gw_layer *L);
 /* A wall's name in a text sample ("left", "right", "bottom") and back (0: none). */
 int layer_spring_wall(const char *s);
 const char *layer_spring_wall_name(int b);
+/* Overlap u_n of the contact (a, b) (b a wall: GW_LAYER_SPRING_*) of discs at
+ * (x, y) with radii r in a box of width w, as layer_pair_geometry has it. */
+double layer_spring_overlap(const double *x, const double *y, const double *r, double w, int a, int b);
+/* Springs ordered by (a, b), as the contact list is; a pair of discs as a < b
+ * (either order is one contact with one value: n and t both turn over). */
+int layer_spring_cmp(const void *pa, const void *pb);
+gw_layer_spring layer_spring_sorted(gw_layer_spring q);
 
 /* Build the contact list from the positions in L->y (cell list, skin L->p.skin)
  * carrying F_t of contacts present in both lists. Rewrites L->y, L->scale and

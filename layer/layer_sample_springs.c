@@ -1,10 +1,11 @@
 /*
  * layer_sample_springs.c: the tangential springs a settled pile leans on
- * (gw_layer_spring), from the settling's last state into the sample
- * (layer_springs_take, layer_make.c), checked when a sample is read or
- * written (layer_springs_check), and from the sample into an impact's first
- * contact list (layer_springs_pend, layer_springs_load; layer_impact.c,
- * layer_sim.c). docs/physics.md 2.1, eqs. B.1-B.4.
+ * (gw_layer_spring) as a sample holds them: checked when a sample is read or
+ * written (layer_springs_check), and the helpers the layer's side shares
+ * (layer_springs.c: from the settling's last state into the sample, from the
+ * sample into an impact's first contact list). Nothing here needs a layer,
+ * so the sample reader builds alone (the fuzz target). docs/physics.md 2.1,
+ * eqs. B.1-B.4.
  *
  * The model's state holds the elastic tangential force F_t of every contact
  * (layer_model.c). A sample keeps the spring's elastic displacement
@@ -18,11 +19,10 @@
  * same K_t). The bound on the displacement,
  *   |u_t| <= tan(phi) F_n / K_t = tan(phi) u_n (2 - nu) / (3 (1 - nu))
  * (K_n and k_t of B.3, B.4: G and R_p cancel), is what a sample's springs are
- * checked against under the settling it records; computed here as the model
- * computes the cap and K_t (layer_cap, kts = k_t K_n^(1/3)), so that a
- * spring at the cap passes to rounding.
+ * checked against under the settling it records (the model's cap over its
+ * K_t, layer_springs_take, equals it to rounding).
  * The overlap of a spring's contact is computed from the sample's own
- * positions (spring_overlap), by the writer and the reader alike: a spring
+ * positions (layer_spring_overlap), by the writer and the reader alike: a spring
  * written is one the reader finds in contact.
  * Units: SI (m, N).
  */
@@ -39,13 +39,10 @@
  * (1e-9 m: 3e-5 of a settled overlap of the default pile, 3e-5 m), and
  * within this the impact clips the spring (layer_springs_load), a change of
  * the order of the move. Beyond it the file contradicts the settling it
- * records (its friction edited from 30 to 29.9 degrees: 4.5e-3). */
+ * records (its friction edited from 30 to 29.9 degrees: 3.8e-3). */
 #define SPRING_BOUND_TOL 1e-3
-/* A spring counted as clipped by the impact's bound (layer_springs_load):
- * beyond the rounding of the division u_t = F_t / K_t. */
-#define SPRING_CLIP_TOL 1e-9
 
-static int spring_cmp(const void *pa, const void *pb)
+int layer_spring_cmp(const void *pa, const void *pb)
 {
     const gw_layer_spring *a = pa, *b = pb;
     if (a->a != b->a)
@@ -55,7 +52,7 @@ static int spring_cmp(const void *pa, const void *pb)
 
 /* Overlap u_n of the contact (a, b) (b a wall: GW_LAYER_SPRING_*) of discs at
  * (x, y) with radii r in a box of width w; as layer_pair_geometry has it. */
-static double spring_overlap(const double *x, const double *y, const double *r, double w, int a, int b)
+double layer_spring_overlap(const double *x, const double *y, const double *r, double w, int a, int b)
 {
     switch (b) {
     case GW_LAYER_SPRING_LEFT:
@@ -71,16 +68,6 @@ static double spring_overlap(const double *x, const double *y, const double *r, 
     }
 }
 
-/* K_t and the cap tan(phi) F_n of the contact (radii ra, rb; rb 0 for a
- * wall) at overlap un > 0 under the material p, as layer_contacts_build and
- * the right-hand side compute them. */
-static void spring_law(const gw_layer_params *p, double tp, double ra, double rb, double un, double *kt,
-                       double *cap)
-{
-    const double rp = rb > 0 ? 2 * ra * rb / (ra + rb) : ra, kn = gw_layer_kn(p, rp);
-    *kt = gw_layer_kt_factor(p, rp) * cbrt(kn) * sqrt(un);
-    *cap = layer_cap(tp, kn, un);
-}
 
 static const char *wall_name(int b)
 {
@@ -99,7 +86,7 @@ static const char *pair_text(int a, int b, char out[40])
 
 /* Two discs in either order are one contact with one value (n and t both
  * turn over with the order): a pair is kept as a < b. */
-static gw_layer_spring spring_sorted(gw_layer_spring q)
+gw_layer_spring layer_spring_sorted(gw_layer_spring q)
 {
     if (q.b >= 0 && q.b < q.a) {
         const int t = q.a;
@@ -139,14 +126,11 @@ int layer_springs_check(const gw_layer_sample *s, const char *path, const long *
     if (s->n_springs > LAYER_SPRINGS_MOST(s->n))
         return gw_err_set(err, status, "sample '%s': %d springs for %d particles, more than %ld (a settled pile "
                           "has about 2 contacts a disc)", path, s->n_springs, s->n, LAYER_SPRINGS_MOST(s->n));
-    gw_layer_params p = gw_layer_params_default();
+    /* the bound over the overlap, tan(phi) (2 - nu) / (3 (1 - nu)) of the
+     * recorded settling (0: none recorded, nothing checked) */
     const int bound = s->settled.recorded;
-    double tp = 0;
-    if (bound) {
-        p.shear_modulus = s->settled.shear_modulus;
-        p.poisson = s->settled.poisson;
-        tp = tan(s->settled.friction_deg * M_PI / 180);
-    }
+    const double nu = s->settled.poisson;
+    const double per_un = bound ? tan(s->settled.friction_deg * M_PI / 180) * (2 - nu) / (3 * (1 - nu)) : 0;
     char where[48];
     for (int k = 0; k < s->n_springs; k++) {
         const gw_layer_spring *q = &s->springs[k];
@@ -163,14 +147,12 @@ int layer_springs_check(const gw_layer_sample *s, const char *path, const long *
         if (b >= 0 && s->body && s->body[a] == s->body[b])
             return gw_err_set(err, status, "sample '%s': %s: spring %s: the two discs are one clump (body %d): "
                               "discs of a clump have no contact", path, where, pair, s->body[a]);
-        const double un = spring_overlap(s->x, s->y, s->r, s->width, a, b);
+        const double un = layer_spring_overlap(s->x, s->y, s->r, s->width, a, b);
         if (!(un > 0))
             return gw_err_set(err, status, "sample '%s': %s: spring %s: the pair is not in contact (gap %.3g m): "
                               "a spring needs a closed contact", path, where, pair, -un);
         if (bound) {
-            double kt, cap;
-            spring_law(&p, tp, s->r[a], b >= 0 ? s->r[b] : 0, un, &kt, &cap);
-            const double most = cap / kt;
+            const double most = per_un * un;
             if (!(fabs(q->u) <= most * (1 + SPRING_BOUND_TOL)))
                 return gw_err_set(err, status, "sample '%s': %s: spring %s: displacement %.6g m is beyond the "
                                   "Coulomb bound %.6g m of the settling the sample records (friction %g deg, "
@@ -182,8 +164,8 @@ int layer_springs_check(const gw_layer_sample *s, const char *path, const long *
     if (!cp)
         return gw_err_set(err, GW_ENOMEM, "sample '%s': out of memory checking %d springs", path, s->n_springs);
     for (int k = 0; k < s->n_springs; k++)
-        cp[k] = spring_sorted(s->springs[k]), cp[k].u = k;
-    qsort(cp, (size_t)s->n_springs, sizeof *cp, spring_cmp);
+        cp[k] = layer_spring_sorted(s->springs[k]), cp[k].u = k;
+    qsort(cp, (size_t)s->n_springs, sizeof *cp, layer_spring_cmp);
     int rc = GW_OK;
     for (int k = 1; k < s->n_springs && rc == GW_OK; k++)
         if (cp[k].a == cp[k - 1].a && cp[k].b == cp[k - 1].b) {
@@ -195,86 +177,4 @@ int layer_springs_check(const gw_layer_sample *s, const char *path, const long *
         }
     free(cp);
     return rc;
-}
-
-int layer_springs_take(const gw_layer *L, const double *x, const double *y, const double *r, double width,
-                       gw_layer_spring **out, int *nout)
-{
-    *out = NULL;
-    *nout = 0;
-    const double *f = L->y + 6 * L->nb;
-    int m = 0;
-    for (int k = 0; k < L->nc; k++)
-        m += f[k] != 0;
-    if (m == 0)
-        return GW_OK;
-    gw_layer_spring *sp = malloc((size_t)m * sizeof *sp);
-    if (!sp)
-        return GW_ENOMEM;
-    int j = 0;
-    for (int k = 0; k < L->nc; k++) {
-        const layer_contact *c = &L->c[k];
-        if (f[k] == 0 || c->a == L->block || c->b == L->block)
-            continue;
-        /* the overlap of the positions written (the reader's), K_t and the cap
-         * there: the force used (the state clamped to the cap) as u_t */
-        const double un = spring_overlap(x, y, r, width, c->a, c->b);
-        if (!(un > 0))
-            continue;
-        const double kt = c->kts * sqrt(un), cap = layer_cap(L->tan_phi, c->kn, un);
-        const double ft = fmax(-cap, fmin(cap, f[k]));
-        if (!(kt > 0) || ft == 0)
-            continue;
-        sp[j++] = (gw_layer_spring){.a = c->a, .b = c->b, .u = ft / kt};
-    }
-    if (j == 0) {
-        free(sp);
-        return GW_OK;
-    }
-    *out = sp;
-    *nout = j;
-    return GW_OK;
-}
-
-int layer_springs_pend(gw_layer *L, const gw_layer_spring *sp, int n)
-{
-    free(L->spr);
-    L->spr = NULL;
-    L->nspr = 0;
-    if (n <= 0)
-        return GW_OK;
-    L->spr = malloc((size_t)n * sizeof *L->spr);
-    if (!L->spr)
-        return GW_ENOMEM;
-    for (int k = 0; k < n; k++)
-        L->spr[k] = spring_sorted(sp[k]);
-    qsort(L->spr, (size_t)n, sizeof *L->spr, spring_cmp);
-    L->nspr = n;
-    return GW_OK;
-}
-
-void layer_springs_load(gw_layer *L)
-{
-    if (!L->spr)
-        return;
-    double *f = L->y + 6 * L->nb;
-    for (int k = 0; k < L->nc; k++) {
-        const layer_contact *c = &L->c[k];
-        const gw_layer_spring key = {.a = c->a, .b = c->b};
-        const gw_layer_spring *q = bsearch(&key, L->spr, (size_t)L->nspr, sizeof key, spring_cmp);
-        if (!q)
-            continue;
-        double un, nn[2];
-        layer_contact_geometry(L, c, L->y, &un, nn, NULL);
-        if (!(un > 0))
-            continue;
-        const double kt = c->kts * sqrt(un), cap = layer_cap(L->tan_phi, c->kn, un), ft = kt * q->u;
-        f[k] = fmax(-cap, fmin(cap, ft));
-        L->spr_loaded++;
-        L->spr_clipped += fabs(ft) > cap * (1 + SPRING_CLIP_TOL);
-    }
-    free(L->spr);
-    L->spr = NULL;
-    L->nspr = 0;
-    L->stamp++;
 }

@@ -52,6 +52,7 @@ typedef struct layer_impact_cli {
     unsigned long long sample_hash; /* its content hash (gw_layer_sample.content_hash) */
     gw_layer_settled settled;  /* its settling's record (recorded 0: none) */
     double settled_q;          /* gw_layer_settled_load_ratio under the impact's material (NaN: none) */
+    int sample_springs;        /* the springs the sample carries (gw_layer_sample.n_springs) */
     long rings;
     int json, exact;
     /* resolved by the library (gw_layer_impact_plan_make) */

@@ -36,7 +36,10 @@
 #    recorded settling's Coulomb bound, two discs of one clump, a section
 #    shorter than its count, a count that is not one, data after the section;
 #    an HDF5 spring_u with a NaN (naming the spring's index); Python's
-#    layer_impact raises naming the file, and takes zero_springs.
+#    layer_impact raises naming the file, and takes zero_springs; the
+#    library's writer and reader (through a ctypes mirror of the struct, its
+#    size the library's) carry two springs to the bit in text and HDF5, and
+#    the writer refuses a pair that does not touch.
 # On the code before, layer-make wrote no springs and the reader refused the
 # section: every check but the pile's making fails.
 # shellcheck source=tests/refusal_lib.sh
@@ -259,7 +262,50 @@ else
     ko "the clump pile: no springs section, or no clump of two discs ($pair)"
 fi
 
-py_checks 3 <<'EOF'
+py_checks 6 <<'EOF'
+# the library's writer and reader, through a mirror of the C struct
+import ctypes, os
+class Settled(ctypes.Structure):
+    _fields_ = [("recorded", ctypes.c_int), ("shear_modulus", ctypes.c_double), ("poisson", ctypes.c_double),
+                ("friction_deg", ctypes.c_double), ("density", ctypes.c_double), ("gravity", ctypes.c_double),
+                ("mass_law", ctypes.c_int), ("line", ctypes.c_long), ("clump_mass", ctypes.c_int),
+                ("unsettled", ctypes.c_int)]
+class Spring(ctypes.Structure):
+    _fields_ = [("a", ctypes.c_int), ("b", ctypes.c_int), ("u", ctypes.c_double)]
+class Sample(ctypes.Structure):
+    _fields_ = [("n", ctypes.c_int), ("width", ctypes.c_double), ("rm", ctypes.c_double),
+                ("volume_ratio", ctypes.c_double), ("porosity", ctypes.c_double), ("seed", ctypes.c_long),
+                ("mass_law", ctypes.c_int), ("clump_mass", ctypes.c_int), ("x", ctypes.POINTER(ctypes.c_double)),
+                ("y", ctypes.POINTER(ctypes.c_double)), ("r", ctypes.POINTER(ctypes.c_double)),
+                ("body", ctypes.POINTER(ctypes.c_int)), ("content_hash", ctypes.c_ulonglong),
+                ("settled", Settled), ("n_springs", ctypes.c_int), ("springs", ctypes.POINTER(Spring))]
+lib = ctypes.CDLL(granwave.library_path)
+lib.gw_layer_sample_size.restype = ctypes.c_size_t
+check(ctypes.sizeof(Sample) == lib.gw_layer_sample_size(), "the mirror of gw_layer_sample with its springs: %d bytes, "
+      "the library's %d" % (ctypes.sizeof(Sample), lib.gw_layer_sample_size()))
+d3 = lambda v: (ctypes.c_double * 3)(*v)
+def sample(springs):
+    sp = (Spring * len(springs))(*[Spring(a, b, u) for a, b, u in springs])
+    return Sample(n=3, width=1.0, rm=0.1, porosity=float("nan"), x=d3([0.1, 0.299, 0.5]), y=d3([0.1, 0.1, 0.0999]),
+                  r=d3([0.1, 0.1, 0.1]), n_springs=len(springs), springs=sp), sp
+good = [(0, 1, 1e-5), (2, -3, -2.5e-5)]  # discs 0 and 1 overlap by 1e-3 m, disc 2 the floor by 1e-4 m
+err = ctypes.create_string_buffer(512)
+got = {}
+for name in ("w.txt", "w.h5"):
+    s, keep = sample(good)
+    rc = lib.gw_layer_sample_write(ctypes.byref(s), name.encode(), None, err)
+    back = Sample()
+    if rc == 0 and lib.gw_layer_sample_read(name.encode(), ctypes.byref(back), err) == 0:
+        got[name] = [(back.springs[k].a, back.springs[k].b, back.springs[k].u) for k in range(back.n_springs)]
+        lib.gw_layer_sample_free(ctypes.byref(back))
+    else:
+        got[name] = (rc, err.value)
+check(got["w.txt"] == good and (got["w.h5"] == good or (isinstance(got["w.h5"], tuple) and got["w.h5"][0] == -6)),
+      "the library writes and reads the springs back to the bit (text, HDF5): %r" % got)
+s, keep = sample([(0, 2, 1e-5)])
+rc = lib.gw_layer_sample_write(ctypes.byref(s), b"wbad.txt", None, err)
+check(rc == -1 and not os.path.exists("wbad.txt") and b"spring at index 0: spring 0 2: the pair is not in contact" in err.value,
+      "the library's writer refuses a spring whose discs do not touch (%d: %s)" % (rc, err.value))
 refused("Python: a spring beyond its bound", ["b_bound.txt", "line", "Coulomb bound"], granwave.layer_impact,
         sample="b_bound.txt", t_max=0.002)
 a = granwave.layer_impact(sample="f.txt", t_max=0.002)

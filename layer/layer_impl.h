@@ -239,10 +239,9 @@ struct gw_layer {
     size_t ring_cap;
     /* A sample's tangential springs for the first contact list
      * (layer_springs_pend; sorted by pair, freed once loaded by
-     * gw_layer_start), and what the load did: contacts started from a spring,
-     * and those clipped to this layer's Coulomb bound. */
+     * gw_layer_start, layer_springs_load). */
     gw_layer_spring *spr;
-    int nspr, spr_loaded, spr_clipped;
+    int nspr;
 };
 
 /* Contact k of the snapshot (layer_snapshot). */
@@ -624,6 +623,10 @@ int layer_springs_take(const gw_layer *L, const double *x, const double *y, cons
 /* Keep n springs (disc indices of L) for the first contact list: gw_layer_start
  * starts the listed contacts from them (layer_springs_load). GW_ENOMEM. */
 int layer_springs_pend(gw_layer *L, const gw_layer_spring *sp, int n);
+/* Once the first list is built (gw_layer_start): each listed contact that
+ * has a pending spring and is closed in L->y starts from F_t = K_t u, clipped
+ * to tan(phi) F_n; the pending springs are freed (a spring whose pair is not
+ * listed, its bodies frozen or a wall removed, is dropped). */
 void layer_springs_load(gw_layer *L);
 /* A wall's name in a text sample ("left", "right", "bottom") and back (0: none). */
 int layer_spring_wall(const char *s);

@@ -19,10 +19,6 @@
 
 #include "layer_impl.h"
 
-/* A spring counted as clipped by the impact's bound (layer_springs_load):
- * beyond the rounding of the division u_t = F_t / K_t. */
-#define SPRING_CLIP_TOL 1e-9
-
 int layer_springs_take(const gw_layer *L, const double *x, const double *y, const double *r, double width,
                        gw_layer_spring **out, int *nout)
 {
@@ -94,10 +90,8 @@ void layer_springs_load(gw_layer *L)
         layer_contact_geometry(L, c, L->y, &un, nn, NULL);
         if (!(un > 0))
             continue;
-        const double kt = c->kts * sqrt(un), cap = layer_cap(L->tan_phi, c->kn, un), ft = kt * q->u;
-        f[k] = fmax(-cap, fmin(cap, ft));
-        L->spr_loaded++;
-        L->spr_clipped += fabs(ft) > cap * (1 + SPRING_CLIP_TOL);
+        const double kt = c->kts * sqrt(un), cap = layer_cap(L->tan_phi, c->kn, un);
+        f[k] = fmax(-cap, fmin(cap, kt * q->u));
     }
     free(L->spr);
     L->spr = NULL;

@@ -72,8 +72,11 @@ echo "== LAMMPS force law: + $PY bench/peer_lammps_layer.py --lmp $LMP --verify"
 # c. impacts, alternating granwave / LAMMPS
 # shellcheck disable=SC2206
 gwflags=($GW_FLAGS)
-gw_args_1=(layer-impact --sample "$S" --t-max 0.05 --json)
-gw_args_3=(layer-impact --sample "$S" --rb-rm 3 --t-max 0.1 --full --json)
+# --zero-springs: the LAMMPS data file carries no tangential springs, so
+# granwave starts from none either (the sample's springs section, which
+# layer-make writes, is skipped by the peer's reader)
+gw_args_1=(layer-impact --sample "$S" --t-max 0.05 --zero-springs --json)
+gw_args_3=(layer-impact --sample "$S" --rb-rm 3 --t-max 0.1 --full --zero-springs --json)
 echo
 echo "== impacts, $REPS repetitions, alternating granwave / LAMMPS; commands:"
 echo "   granwave case 1: $GW ${gw_args_1[*]} ${gwflags[*]:-}"

@@ -318,6 +318,8 @@ def read_sample(path):
                 if k == "n":
                     n = int(v)
                 continue
+            if len(xs) == n:  # the contacts' springs follow (a LAMMPS data file carries none:
+                break          # granwave's side runs with --zero-springs, like with like)
             x, y, r = (float(t) for t in s.split()[:3])
             xs.append((x, y, r))
     if n is None or len(xs) != n:

@@ -291,6 +291,27 @@ typedef struct gw_layer_settled {
                               0 in a struct zeroed by an older caller: nothing said */
 } gw_layer_settled;
 
+/* The tangential (Mindlin/Coulomb) spring of one contact of a settled pile,
+ * which the pile leans on at rest: layer-make keeps every closed contact's
+ * (gw_layer_make), a sample file carries them in an optional section, and an
+ * impact starts its contacts from them (gw_layer_impact). Without them every
+ * contact's F_t starts at zero and the pile sags into the impact until
+ * friction builds up again (1000 discs: 5.9 kJ of potential energy lost in
+ * 100 ms, the default block at 0.01 m/s on it). */
+enum { GW_LAYER_SPRING_LEFT = -1, GW_LAYER_SPRING_RIGHT = -2, GW_LAYER_SPRING_BOTTOM = -3 };
+typedef struct gw_layer_spring {
+    int a, b;   /* the contact: particles a < b (indices into the sample), or particle a
+                   against a wall b (GW_LAYER_SPRING_LEFT, _RIGHT, _BOTTOM) */
+    double u;   /* the spring's elastic tangential displacement u_t = F_t / K_t, m: the
+                   geometry of the spring, as the positions are the overlaps' (F_t along
+                   t = (-n_y, n_x), n from a to b; the same value whichever disc is a).
+                   An impact turns it into F_t = K_t u_t with its own K_t (B.4) and
+                   clips that to its own Coulomb bound tan(phi) F_n: a friction below the
+                   settling's starts those contacts sliding. At rest |u_t| <= tan(phi)
+                   u_n (2 - nu) / (3 (1 - nu)), u_n the overlap (the bound F_t = tan(phi)
+                   F_n through B.3, B.4: it does not depend on G or R_p) */
+} gw_layer_spring;
+
 /* A pluviated sample: positions and radii of settled soil particles. */
 typedef struct gw_layer_sample {
     int n;
@@ -311,6 +332,11 @@ typedef struct gw_layer_sample {
     gw_layer_settled settled; /* the settling's material (gw_layer_sample_read, gw_layer_make);
                                  recorded 0 when unknown. Appended: older callers that zero
                                  the struct get "not recorded" */
+    int n_springs;              /* contacts whose tangential spring the sample carries; 0: none
+                                   (an impact starts every F_t at zero, as before ABI 2) */
+    gw_layer_spring *springs;   /* [n_springs], owned by the sample (NULL when none); each
+                                   pair at most once, in contact (u_n > 0), discs of
+                                   different bodies. ABI 2 */
 } gw_layer_sample;
 
 void gw_layer_sample_free(gw_layer_sample *s);
@@ -337,14 +363,19 @@ size_t gw_layer_sample_size(void);
  * column: "x y r body", body an integer id in [0, N); particles sharing an id
  * form one rigid clump and must overlap or touch (members connected within
  * 1e-9 of the sum of radii), at most 64 per clump. Version 1 files read with
- * body = NULL.
+ * body = NULL. Either version may end with the springs (gw_layer_spring):
+ *   springs M        (integer in [0, 8 (n + 1)])
+ * then M lines "a b u": particle indices a and b (or a wall: left, right,
+ * bottom) and the displacement u (m); without the section n_springs = 0.
  * HDF5 sample (format version 1, builds with HDF5): root attributes format =
  * "granwave-layer-sample", format_version = 1, granwave_version, width, rm,
  * volume_ratio, porosity (double), seed (integer), mass_law ("disc"/"sphere"),
  * clump_mass ("sum"/"union"; optional, written only for union),
  * n (integer), units and header (strings); datasets x, y, r of n doubles (m),
  * and for clump samples an integer dataset body (read when present, same
- * checks as the text column).
+ * checks as the text column); the springs as datasets spring_a, spring_b
+ * (integers, a wall GW_LAYER_SPRING_*) and spring_u (m) of M values, all
+ * three or none.
  *
  * Write: HDF5 when path ends in .h5 or .hdf5 (GW_EUNSUPPORTED in a build
  * without HDF5), text otherwise; atomically (temporary name, then rename).
@@ -357,7 +388,10 @@ size_t gw_layer_sample_size(void);
  * (0 <= x <= width, y >= 0, up to 0.02 r), n within limits and matching the
  * data, and a header that is the particles' (the grading of rm and
  * volume_ratio, a width the packing fills when it is more than one particle
- * high, a porosity within 2e-3 of gw_layer_sample_porosity's). GW_EFORMAT
+ * high, a porosity within 2e-3 of gw_layer_sample_porosity's), and last the
+ * springs (each pair once, of different bodies, in contact at the file's
+ * positions, finite, within the recorded settling's Coulomb bound to 1e-3;
+ * the writer checks them too, GW_EINVAL). GW_EFORMAT
  * (GW_EIO: unreadable; GW_EUNSUPPORTED: HDF5 file in a build without HDF5) with a message naming the file and the line or particle; s is
  * then empty (safe to free). The settling's record s->settled comes from the
  * header's settings line (a comment "# settings: {JSON}" in text, a line
@@ -502,6 +536,10 @@ typedef struct gw_layer_impact_params {
     int other_settling; /* 1: run a sample whose recorded settling (gw_layer_settled)
                            leaves its pile away from rest under this impact's material
                            (gw_layer_impact_settled_check), with a warning [0: refused] */
+    int zero_springs;   /* 1: start every contact's tangential spring at zero, as from a sample
+                           without springs (a peer whose input carries none, such as a LAMMPS
+                           data file, is compared like with like) [0: from the sample's
+                           springs, gw_layer_spring] */
 } gw_layer_impact_params;
 
 gw_layer_impact_params gw_layer_impact_params_default(void);

@@ -64,6 +64,8 @@ typedef struct gw_layer_impact_setup {
     int other_settling;    /* run a sample whose recorded settling leaves its pile away
                               from rest under this material (gw_layer_impact_settled_check),
                               with a warning [0: refused] */
+    int zero_springs;      /* start every contact's tangential spring at zero, whatever the
+                              sample carries (gw_layer_impact_params.zero_springs) [0] */
 } gw_layer_impact_setup;
 
 /* The table of gw_layer_impact_setup (static, NULL-terminated). */

@@ -15,6 +15,8 @@ add_library(gw_layer_obj OBJECT
   ${CMAKE_CURRENT_LIST_DIR}/layer_sample_pile.c
   ${CMAKE_CURRENT_LIST_DIR}/layer_sample_porosity.c
   ${CMAKE_CURRENT_LIST_DIR}/layer_sample_settings.c
+  ${CMAKE_CURRENT_LIST_DIR}/layer_sample_springs.c
+  ${CMAKE_CURRENT_LIST_DIR}/layer_springs.c
   ${CMAKE_CURRENT_LIST_DIR}/layer_make.c
   ${CMAKE_CURRENT_LIST_DIR}/layer_impact.c
   ${CMAKE_CURRENT_LIST_DIR}/layer_settled.c

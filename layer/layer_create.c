@@ -218,6 +218,7 @@ void gw_layer_free(gw_layer *L)
     free(L->snap_breg);
     free(L->wblk);
     free(L->ring_np);
+    free(L->spr);
     free(L->c);
     free(L->roots);
     free(L->bid);

@@ -519,6 +519,10 @@ int layer_impact_run(const gw_layer_sample *smp, const gw_layer_params *lp0, con
         rc = gw_layer_impact_gap_check(smp, ip, lp0->gravity, err);
     if (rc == GW_OK)
         rc = gw_layer_impact_step_check(ip, type, sp, err);
+    /* a sample built in memory: its springs pass the reader's checks (a NaN
+     * was clipped to the cap, an index beyond the sample ignored, in silence) */
+    if (rc == GW_OK && !ip->zero_springs && smp->n_springs != 0)
+        rc = layer_springs_check(smp, "s", NULL, GW_EINVAL, err);
     if (rc != GW_OK)
         return rc;
     const int n = smp->n;
@@ -566,6 +570,13 @@ int layer_impact_run(const gw_layer_sample *smp, const gw_layer_params *lp0, con
     if (rc != GW_OK)
         return rc;
     gw_layer_set_block(L, n);
+    /* the springs the pile leans on (the sample's indices are the layer's; the
+     * block, n, has none): the first contact list starts from them, turned into
+     * this material's forces and clipped to its Coulomb bound (layer_springs_load) */
+    if (!ip->zero_springs && smp->n_springs > 0 && layer_springs_pend(L, smp->springs, smp->n_springs) != GW_OK) {
+        gw_layer_free(L);
+        return gw_err_set(err, GW_ENOMEM, "layer-impact: out of memory for %d springs", smp->n_springs);
+    }
     const double w = ip->ring_width > 0 ? ip->ring_width : 2 * rm;
     {
         double dx = xc - smp->x[target], dy = yb - smp->y[target], d = hypot(dx, dy);

@@ -237,6 +237,11 @@ struct gw_layer {
                            0 without regions) */
     int *ring_np;       /* [ring_cap] scratch of gw_layer_rings */
     size_t ring_cap;
+    /* A sample's tangential springs for the first contact list
+     * (layer_springs_pend; sorted by pair, freed once loaded by
+     * gw_layer_start, layer_springs_load). */
+    gw_layer_spring *spr;
+    int nspr;
 };
 
 /* Contact k of the snapshot (layer_snapshot). */
@@ -620,6 +625,42 @@ int layer_bodies_check(int n, const double *x, const double *y, const double *r,
 /* Most members a clump may have (samples and gw_layer_create). */
 #define LAYER_CLUMP_MEMBERS 64
 int layer_clump_shape(double req, double aspect, double angle, double *ox, double *oy, double *r);
+
+/* A sample's tangential springs (layer_sample_springs.c, layer_springs.c). At most
+ * LAYER_SPRINGS_MOST(n) in a sample of n particles (a settled pile has about
+ * 2 contacts a disc). */
+#define LAYER_SPRINGS_MOST(n) (8L * ((long)(n) + 1))
+/* s's springs: pairs in range and of different bodies, finite, each pair
+ * once, in contact from s's positions, within the Coulomb bound of the
+ * settling s records (none checked without a record); status with a message
+ * "sample 'PATH': line L: ..." (lines[k] the file's line of spring k; NULL:
+ * "spring at index k"), GW_ENOMEM. */
+int layer_springs_check(const gw_layer_sample *s, const char *path, const long *lines, int status, gw_err *err);
+/* The springs of L's contacts (its state's F_t, clamped to the cap) as
+ * displacements at the overlaps of the discs x, y, r of a box of width
+ * width (the positions a sample is written with; contacts open there are
+ * left out, and the block's): *out (malloc'd; NULL when none), *nout.
+ * GW_ENOMEM. */
+int layer_springs_take(const gw_layer *L, const double *x, const double *y, const double *r, double width,
+                       gw_layer_spring **out, int *nout);
+/* Keep n springs (disc indices of L) for the first contact list: gw_layer_start
+ * starts the listed contacts from them (layer_springs_load). GW_ENOMEM. */
+int layer_springs_pend(gw_layer *L, const gw_layer_spring *sp, int n);
+/* Once the first list is built (gw_layer_start): each listed contact that
+ * has a pending spring and is closed in L->y starts from F_t = K_t u, clipped
+ * to tan(phi) F_n; the pending springs are freed (a spring whose pair is not
+ * listed, its bodies frozen or a wall removed, is dropped). */
+void layer_springs_load(gw_layer *L);
+/* A wall's name in a text sample ("left", "right", "bottom") and back (0: none). */
+int layer_spring_wall(const char *s);
+const char *layer_spring_wall_name(int b);
+/* Overlap u_n of the contact (a, b) (b a wall: GW_LAYER_SPRING_*) of discs at
+ * (x, y) with radii r in a box of width w, as layer_pair_geometry has it. */
+double layer_spring_overlap(const double *x, const double *y, const double *r, double w, int a, int b);
+/* Springs ordered by (a, b), as the contact list is; a pair of discs as a < b
+ * (either order is one contact with one value: n and t both turn over). */
+int layer_spring_cmp(const void *pa, const void *pb);
+gw_layer_spring layer_spring_sorted(gw_layer_spring q);
 
 /* Build the contact list from the positions in L->y (cell list, skin L->p.skin)
  * carrying F_t of contacts present in both lists. Rewrites L->y, L->scale and

@@ -16,6 +16,9 @@
  * random draws; the integration is RK4 with a fixed step (no contact events;
  * the contact list checked at the steps' ends and F_t of open contacts zeroed
  * after every step, so that the sample does not depend on the skin: layer_sim.c).
+ * The sample keeps the settled pile's tangential springs (gw_layer_spring:
+ * the last settling's contacts, layer_springs_take), so that an impact starts
+ * from the forces the pile rests on (before, from zero: the pile sagged).
  * Type B soil (clumps = 1): n rigid clumps instead of n discs. Each clump draws
  * its equivalent radius R_eq from the discs' grading (same curve), its aspect
  * ratio uniform in [1, aspect_max] ([1, 4] by default) and its orientation uniform in [0, pi); its shape is
@@ -315,9 +318,33 @@ static double settle_judge(const gw_layer_params *lp, int n, const gw_layer_body
     return fmax(SETTLE_CHUNKS_MIN * SETTLE_CHUNK, t_land);
 }
 
+/* The tangential springs of the last settle() (layer_springs_take): each
+ * settle replaces them, so that they are those of the positions written. */
+typedef struct make_springs {
+    gw_layer_spring *s;
+    int n;
+} make_springs;
+
+/* The springs of L's contacts at the n settled positions b into ks. */
+static int keep_springs(const gw_layer *L, double width, int n, const gw_layer_body *b, make_springs *ks,
+                        gw_err *err)
+{
+    free(ks->s);
+    ks->s = NULL;
+    ks->n = 0;
+    double *x = malloc(3 * (size_t)n * sizeof *x);
+    if (!x)
+        return gw_err_set(err, GW_ENOMEM, "layer-make: out of memory");
+    for (int i = 0; i < n; i++)
+        x[i] = b[i].x, x[n + i] = b[i].y, x[2 * n + i] = b[i].r;
+    int rc = layer_springs_take(L, x, x + n, x + 2 * n, width, &ks->s, &ks->n);
+    free(x);
+    return rc == GW_OK ? GW_OK : gw_err_set(err, rc, "layer-make: out of memory");
+}
+
 static int settle(const gw_layer_params *lp, const gw_layer_make_params *m, double t0, double t_max, int n,
                   gw_layer_body *b, double thr, double *t, double *ke, int *conv,
-                  long *steps, long *rebuilds, gw_err *err)
+                  long *steps, long *rebuilds, make_springs *ks, gw_err *err)
 {
     gw_layer *L = NULL;
     int rc = gw_layer_create(lp, n, b, &L, err);
@@ -373,6 +400,8 @@ static int settle(const gw_layer_params *lp, const gw_layer_make_params *m, doub
     }
     if (rc == GW_OK)
         take_positions(L, n, b);
+    if (rc == GW_OK) /* the springs the pile leans on there (gw_layer_spring) */
+        rc = keep_springs(L, lp->width, n, b, ks, err);
     for (int i = 0; rc == GW_OK && i < n; i++)
         b[i].vx = b[i].vy = b[i].w = 0;
     gw_layer_stats st;
@@ -412,7 +441,7 @@ static double settle_threshold(const gw_layer_params *lp, const gw_layer_make_pa
 }
 
 static int settle_all(const gw_layer_params *lp, const gw_layer_make_params *m, int n, gw_layer_body *b,
-                      double *t, double *ke, int *conv, gw_layer_make_result *res, gw_err *err)
+                      double *t, double *ke, int *conv, gw_layer_make_result *res, make_springs *ks, gw_err *err)
 {
     const double thr = settle_threshold(lp, m, n, b);
     int rc = GW_OK;
@@ -428,7 +457,8 @@ static int settle_all(const gw_layer_params *lp, const gw_layer_make_params *m, 
         gw_layer_params soft = *lp;
         soft.shear_modulus *= m->modulus_factor;
         double ts = 0;
-        rc = settle(&soft, m, 0.0, 0.5 * m->t_max, n, b, thr, &ts, ke, conv, &res->steps, &res->rebuilds, err);
+        rc = settle(&soft, m, 0.0, 0.5 * m->t_max, n, b, thr, &ts, ke, conv, &res->steps, &res->rebuilds, ks,
+                    err);
         *t += ts;
         /* the soft pile may sink into a wall: the relaxation cannot start from
          * there (it was refused naming no input, exit 2) */
@@ -440,7 +470,7 @@ static int settle_all(const gw_layer_params *lp, const gw_layer_make_params *m, 
     }
     if (rc == GW_OK) {
         double tr = 0;
-        rc = settle(lp, m, *t, m->t_max - *t, n, b, thr, &tr, ke, conv, &res->steps, &res->rebuilds, err);
+        rc = settle(lp, m, *t, m->t_max - *t, n, b, thr, &tr, ke, conv, &res->steps, &res->rebuilds, ks, err);
         *t += tr;
     }
     return rc;
@@ -467,12 +497,13 @@ static void note_untrimmed(const gw_layer_make_params *m, const gw_layer_body *b
 }
 
 static int relax_trimmed(const gw_layer_params *lp, const gw_layer_make_params *m, int n, gw_layer_body *b,
-                         double *t, double *ke, int *conv, gw_layer_make_result *res, gw_err *err)
+                         double *t, double *ke, int *conv, gw_layer_make_result *res, make_springs *ks,
+                         gw_err *err)
 {
     const double thr = settle_threshold(lp, m, n, b);
     res->t_judge = *t + SETTLE_CHUNKS_MIN * SETTLE_CHUNK;
     double tr = 0;
-    int rc = settle(lp, m, *t, m->t_max - *t, n, b, thr, &tr, ke, conv, &res->steps, &res->rebuilds, err);
+    int rc = settle(lp, m, *t, m->t_max - *t, n, b, thr, &tr, ke, conv, &res->steps, &res->rebuilds, ks, err);
     *t += tr;
     return rc;
 }
@@ -600,7 +631,8 @@ static int make_clumps(const gw_layer_params *lp0, const gw_layer_make_params *m
         free(b);
         return rc;
     }
-    rc = settle_all(&lp, m, nd, b, &t, &ke, &conv, res, err);
+    make_springs ks = {0};
+    rc = settle_all(&lp, m, nd, b, &t, &ke, &conv, res, &ks, err);
     /* keep the clumps lying wholly below height_rm R_m; ids renumbered 0.. */
     int kept = 0, nbody = 0;
     for (int a = 0; rc == GW_OK && a < nd;) {
@@ -624,7 +656,7 @@ static int make_clumps(const gw_layer_params *lp0, const gw_layer_make_params *m
     if (rc == GW_OK)
         note_untrimmed(m, b, kept, res);
     if (rc == GW_OK && res->n_removed > 0)
-        rc = relax_trimmed(&lp, m, kept, b, &t, &ke, &conv, res, err);
+        rc = relax_trimmed(&lp, m, kept, b, &t, &ke, &conv, res, &ks, err);
     if (rc == GW_OK) {
         out->x = malloc(3 * (size_t)kept * sizeof *out->x);
         out->body = malloc((size_t)kept * sizeof *out->body);
@@ -632,6 +664,7 @@ static int make_clumps(const gw_layer_params *lp0, const gw_layer_make_params *m
             rc = gw_err_set(err, GW_ENOMEM, "layer-make: out of memory");
     }
     if (rc != GW_OK) {
+        free(ks.s);
         free(b);
         gw_layer_sample_free(out);
         memset(out, 0, sizeof *out);
@@ -643,6 +676,7 @@ static int make_clumps(const gw_layer_params *lp0, const gw_layer_make_params *m
         out->x[i] = b[i].x, out->y[i] = b[i].y, out->r[i] = b[i].r;
         out->body[i] = b[i].clump - 1;
     }
+    out->springs = ks.s, out->n_springs = ks.n; /* the last settle's: the kept clumps' indices */
     finish(&lp, m, b, kept, t, ke, conv, t0, out, res);
     free(b);
     res->n_bodies = nbody;
@@ -718,13 +752,15 @@ int gw_layer_make(const gw_layer_params *lp0, const gw_layer_make_params *m,
         free(b);
         return rc;
     }
-    rc = settle_all(&lp, m, n, b, &t, &ke, &conv, res, err);
+    make_springs ks = {0};
+    rc = settle_all(&lp, m, n, b, &t, &ke, &conv, res, &ks, err);
     if (rc == GW_OK) {
         out->x = malloc(3 * (size_t)n * sizeof *out->x);
         if (!out->x)
             rc = gw_err_set(err, GW_ENOMEM, "layer-make: out of memory");
     }
     if (rc != GW_OK) {
+        free(ks.s);
         free(b);
         memset(out, 0, sizeof *out);
         return rc;
@@ -735,6 +771,7 @@ int gw_layer_make(const gw_layer_params *lp0, const gw_layer_make_params *m,
             if (b[i].y + b[i].r <= m->height_rm * m->rm)
                 b[kept++] = b[i];
         if (kept == 0) {
+            free(ks.s);
             free(b);
             free(out->x);
             memset(out, 0, sizeof *out);
@@ -743,7 +780,8 @@ int gw_layer_make(const gw_layer_params *lp0, const gw_layer_make_params *m,
         res->n_removed = n - kept;
         n = kept;
         note_untrimmed(m, b, n, res);
-        if (res->n_removed > 0 && (rc = relax_trimmed(&lp, m, n, b, &t, &ke, &conv, res, err)) != GW_OK) {
+        if (res->n_removed > 0 && (rc = relax_trimmed(&lp, m, n, b, &t, &ke, &conv, res, &ks, err)) != GW_OK) {
+            free(ks.s);
             free(b);
             free(out->x);
             memset(out, 0, sizeof *out);
@@ -754,6 +792,7 @@ int gw_layer_make(const gw_layer_params *lp0, const gw_layer_make_params *m,
     out->r = out->x + 2 * n;
     for (int i = 0; i < n; i++)
         out->x[i] = b[i].x, out->y[i] = b[i].y, out->r[i] = b[i].r;
+    out->springs = ks.s, out->n_springs = ks.n; /* the last settle's: after a trim, the kept discs' */
     finish(&lp, m, b, n, t, ke, conv, t0, out, res);
     free(b);
     res->n_bodies = n;

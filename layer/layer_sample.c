@@ -6,7 +6,9 @@
  * Text format, documented in gw_layer.h: a magic line, "key value" header lines,
  * then "n N" and N lines "x y r" in metres (version 2, clump samples of type B
  * soil: "x y r body", the rigid-body id; disc samples keep writing version 1,
- * so their files are unchanged). '#' starts a comment line (the
+ * so their files are unchanged), then optionally the pile's tangential
+ * springs, "springs M" and M lines "a b u" (gw_layer_spring; read here,
+ * checked last by layer_sample_springs.c). '#' starts a comment line (the
  * writer puts the program version and the command line there); the one
  * "# settings: {JSON}" line layer-make writes among them is read for the
  * settling's material (layer_sample_settings.c, gw_layer_settled), and its
@@ -40,9 +42,11 @@ void gw_layer_sample_free(gw_layer_sample *s)
         return;
     free(s->x);
     free(s->body);
+    free(s->springs);
     s->x = s->y = s->r = NULL;
     s->body = NULL;
-    s->n = 0;
+    s->springs = NULL;
+    s->n = s->n_springs = 0;
 }
 
 /* 1 when the name asks for HDF5 (.h5, .hdf5; any case). */
@@ -110,6 +114,9 @@ static int write_text(const gw_layer_sample *s, const char *path, const char *he
     gw_fprintf(f.fp, SAMPLE_MAGIC " %d\n", s->body ? 2 : 1);
     gw_write_comment(f.fp, header);
     gw_fprintf(f.fp, "# units: metres; lines after 'n' are: x y r%s\n", s->body ? " body" : "");
+    if (s->n_springs > 0)
+        gw_fprintf(f.fp, "# lines after 'springs' are: a b u, a contact (two particles' indices, or a particle "
+                   "and a wall: left, right, bottom) and its tangential spring's elastic displacement (m)\n");
     gw_fprintf(f.fp, "width %.17g\nrm %.17g\nvolume_ratio %.17g\n", s->width, s->rm, s->volume_ratio);
     if (!isnan(s->porosity)) /* NaN: unknown, not written */
         gw_fprintf(f.fp, "porosity %.17g\n", s->porosity);
@@ -123,6 +130,15 @@ static int write_text(const gw_layer_sample *s, const char *path, const char *he
             gw_fprintf(f.fp, "%.17g %.17g %.17g %d\n", s->x[i], s->y[i], s->r[i], s->body[i]);
         else
             gw_fprintf(f.fp, "%.17g %.17g %.17g\n", s->x[i], s->y[i], s->r[i]);
+    }
+    if (s->n_springs > 0)
+        gw_fprintf(f.fp, "springs %d\n", s->n_springs);
+    for (int k = 0; k < s->n_springs; k++) {
+        const gw_layer_spring *q = &s->springs[k];
+        if (q->b >= 0)
+            gw_fprintf(f.fp, "%d %d %.17g\n", q->a, q->b, q->u);
+        else
+            gw_fprintf(f.fp, "%d %s %.17g\n", q->a, layer_spring_wall_name(q->b), q->u);
     }
     return gw_afile_commit(&f, err);
 }
@@ -147,6 +163,7 @@ typedef struct text_in {
     char com[128];
     size_t ncom;
     int unsettled;
+    long *spr_lines; /* the line of each spring read (owned) */
 } text_in;
 
 /* Append c to the settings text; GW_ENOMEM, or GW_EFORMAT past SAMPLE_SETTINGS_MAX. */
@@ -412,6 +429,61 @@ static int grow(gw_layer_sample *s, long *cap, long want, int bodies)
     return GW_OK;
 }
 
+/* The optional springs section after the n particles, its first line in
+ * t->buf: "springs M", then M lines "a b u" (b an index or a wall's name),
+ * into s; lines[k] (owned by the caller, freed on any return) the line of
+ * spring k. The values are checked later (layer_springs_check), once the
+ * settling's record is read. */
+static int read_springs(text_in *t, gw_layer_sample *s, long n, long **lines, gw_err *err)
+{
+    char *tok[3];
+    long m = 0;
+    const long most = LAYER_SPRINGS_MOST(n);
+    int k = split(t->buf, tok, 2);
+    if (strcmp(tok[0], "springs") != 0)
+        return gw_err_set(err, GW_EFORMAT, "sample '%s': line %ld: data after the %ld particles (only a "
+                          "'springs M' section may follow them)", t->path, t->line, n);
+    if (k != 2 || !parse_long(tok[1], &m) || m < 0 || m > most)
+        return gw_err_set(err, GW_EFORMAT, "sample '%s': line %ld: expected 'springs M', M an integer in [0, "
+                          "%ld] (at most 8 (n + 1) contacts)", t->path, t->line, most);
+    long cap = 0;
+    for (long i = 0; i < m; i++) {
+        int got = text_next(t, err);
+        if (got <= 0)
+            return got < 0 ? got : gw_err_set(err, GW_EFORMAT, "sample '%s': truncated after line %ld: %ld of "
+                                              "%ld springs", t->path, t->line, i, m);
+        if (i == cap) { /* grown with the file: a short file claiming many costs little */
+            cap = cap ? 2 * cap : 1024;
+            cap = cap > m ? m : cap;
+            gw_layer_spring *q = realloc(s->springs, (size_t)cap * sizeof *q);
+            long *l = realloc(*lines, (size_t)cap * sizeof *l);
+            if (q)
+                s->springs = q;
+            if (l)
+                *lines = l;
+            if (!q || !l)
+                return gw_err_set(err, GW_ENOMEM, "sample '%s': out of memory for %ld springs", t->path, m);
+        }
+        long a = 0, b = 0;
+        double u = 0;
+        const int ntok = split(t->buf, tok, 3), wall = ntok == 3 ? layer_spring_wall(tok[1]) : 0;
+        (*lines)[i] = t->line;
+        if (ntok != 3 || !parse_long(tok[0], &a) || (!wall && !parse_long(tok[1], &b)) || !parse_num(tok[2], &u))
+            return gw_err_set(err, GW_EFORMAT, "sample '%s': line %ld: expected 'a b u' (spring %ld of %ld: two "
+                              "particle indices, or an index and left, right or bottom, and a finite number)",
+                              t->path, t->line, i + 1, m);
+        if (a < 0 || a >= n || (!wall && (b < 0 || b >= n)))
+            return gw_err_set(err, GW_EFORMAT, "sample '%s': line %ld: spring %ld %s: a particle index outside "
+                              "[0, %ld)", t->path, t->line, a, wall ? layer_spring_wall_name(wall) : tok[1], n);
+        s->springs[i] = (gw_layer_spring){.a = (int)a, .b = wall ? wall : (int)b, .u = u};
+        s->n_springs = (int)(i + 1);
+    }
+    int got = text_next(t, err);
+    if (got > 0)
+        return gw_err_set(err, GW_EFORMAT, "sample '%s': line %ld: data after the %ld springs", t->path, t->line, m);
+    return got < 0 ? got : GW_OK;
+}
+
 static int read_text(text_in *t, gw_layer_sample *s, gw_err *err)
 {
     long n = 0, cap = 0, i = 0, id = 0;
@@ -450,11 +522,13 @@ static int read_text(text_in *t, gw_layer_sample *s, gw_err *err)
         rc = layer_sample_particle_check(s->width, s->rm, s->x[i], s->y[i], s->r[i], t->path, where, GW_EFORMAT, err);
         i++;
     }
+    long *lines = NULL; /* the springs' lines */
     if (rc == GW_OK && (rc = text_next(t, err)) > 0)
-        rc = gw_err_set(err, GW_EFORMAT, "sample '%s': line %ld: data after the %ld particles", t->path,
-                        t->line, n);
-    if (rc != GW_OK)
+        rc = read_springs(t, s, n, &lines, err);
+    if (rc != GW_OK) {
+        free(lines);
         return rc;
+    }
     if (cap > n) { /* close the gaps of the x | y | r block */
         memmove(s->x + n, s->y, (size_t)n * sizeof *s->x);
         memmove(s->x + 2 * n, s->r, (size_t)n * sizeof *s->x);
@@ -474,6 +548,10 @@ static int read_text(text_in *t, gw_layer_sample *s, gw_err *err)
     }
     if (rc == GW_OK) /* after the settings' parse, which zeroes the record */
         s->settled.unsettled = t->unsettled;
+    if (rc == GW_OK) /* checked by the caller, last (gw_layer_sample_read) */
+        t->spr_lines = lines;
+    else
+        free(lines);
     return rc;
 }
 
@@ -495,6 +573,8 @@ int gw_layer_sample_write(const gw_layer_sample *s, const char *path, const char
         if (rc == GW_EFORMAT)
             rc = GW_EINVAL;
     }
+    if (rc == GW_OK) /* and its springs, as the reader would find them */
+        rc = layer_springs_check(s, path, NULL, GW_EINVAL, err);
     if (rc != GW_OK)
         return rc;
 #if GW_HAVE_HDF5
@@ -540,6 +620,7 @@ int gw_layer_sample_read(const char *path, gw_layer_sample *s, gw_err *err)
         return orc;
     t.npre = fread(t.pre, 1, sizeof t.pre, t.fp);
     int rc, sb = -1;
+    long *spr_lines = NULL;
     if (t.npre == sizeof t.pre && h5_signature_at(t.fp, t.pre, &sb)) {
         fclose(t.fp);
 #if GW_HAVE_HDF5
@@ -552,6 +633,7 @@ int gw_layer_sample_read(const char *path, gw_layer_sample *s, gw_err *err)
     } else {
         rc = read_text(&t, s, err);
         free(t.set);
+        spr_lines = t.spr_lines;
         /* the content hash from the same open file: what was read */
         if (rc == GW_OK && (fseek(t.fp, 0, SEEK_SET) != 0 || gw_fnv1a64_stream(t.fp, &s->content_hash) != GW_OK))
             rc = gw_err_set(err, GW_EIO, "sample '%s': cannot read it again for its content hash", path);
@@ -564,6 +646,11 @@ int gw_layer_sample_read(const char *path, gw_layer_sample *s, gw_err *err)
         gw_snprintf(what, sizeof what, "sample '%s'", path);
         rc = layer_overlaps_check(s->n, s->x, s->y, s->r, s->body, what, err);
     }
+    /* the springs last, under the settling's record (its Coulomb bound): a
+     * file whose particles are refused says so first */
+    if (rc == GW_OK)
+        rc = layer_springs_check(s, path, spr_lines, GW_EFORMAT, err);
+    free(spr_lines);
     if (rc != GW_OK) {
         gw_layer_sample_free(s);
         memset(s, 0, sizeof *s);

@@ -371,5 +371,7 @@ int layer_sample_check(const gw_layer_sample *s, const char *path, const hdr_src
 int layer_sample_readable(const gw_layer_sample *s, const char *what, gw_err *err)
 {
     int rc = layer_sample_check(s, what, NULL, GW_EFORMAT, err);
-    return rc == GW_OK ? layer_overlaps_check(s->n, s->x, s->y, s->r, s->body, what, err) : rc;
+    if (rc == GW_OK)
+        rc = layer_overlaps_check(s->n, s->x, s->y, s->r, s->body, what, err);
+    return rc == GW_OK ? layer_springs_check(s, what, NULL, GW_EFORMAT, err) : rc;
 }

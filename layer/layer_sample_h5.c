@@ -124,6 +124,33 @@ static int h5_body_write(hid_t f, const int *v, int n)
     return bad;
 }
 
+/* The springs as three datasets of m values: spring_a, spring_b (32-bit
+ * integers; b < 0 a wall, GW_LAYER_SPRING_*) and spring_u (m). */
+static int h5_springs_write(hid_t f, const gw_layer_sample *s)
+{
+    const int m = s->n_springs;
+    int *ab = malloc(2 * (size_t)m * sizeof *ab);
+    double *u = malloc((size_t)m * sizeof *u);
+    int bad = !ab || !u;
+    for (int k = 0; !bad && k < m; k++)
+        ab[k] = s->springs[k].a, ab[m + k] = s->springs[k].b, u[k] = s->springs[k].u;
+    hsize_t dim = (hsize_t)m;
+    hid_t sp = bad ? -1 : H5Screate_simple(1, &dim, NULL);
+    for (int j = 0; j < 2 && !bad; j++) {
+        hid_t d = sp < 0 ? -1 : H5Dcreate2(f, j ? "spring_b" : "spring_a", H5T_STD_I32LE, sp, H5P_DEFAULT,
+                                           H5P_DEFAULT, H5P_DEFAULT);
+        bad = d < 0 || H5Dwrite(d, H5T_NATIVE_INT, H5S_ALL, H5S_ALL, H5P_DEFAULT, ab + j * (size_t)m) < 0;
+        if (d >= 0)
+            H5Dclose(d);
+    }
+    if (sp >= 0)
+        H5Sclose(sp);
+    bad = bad || h5_column_write(f, "spring_u", u, m);
+    free(ab);
+    free(u);
+    return bad;
+}
+
 /* Written under a temporary name through gw_afile (signals held, fsync, rename
  * on commit): HDF5 creates the temporary by name (gw_afile_open_named). The
  * 1.8 file format (superblock 2) puts checksums on all metadata (see read_h5). */
@@ -147,7 +174,8 @@ static int write_h5_locked(const gw_layer_sample *s, const char *path, const cha
               h5_attr_write(file, "n", H5T_NATIVE_INT, &n) ||
               h5_attr_write_str(file, "units", SAMPLE_H5_UNITS) ||
               (header && h5_attr_write_str(file, "header", header)) ||
-              (s->body && h5_body_write(file, s->body, n));
+              (s->body && h5_body_write(file, s->body, n)) ||
+              (s->n_springs > 0 && h5_springs_write(file, s));
     int rc = GW_OK;
     if (bad) {
         int nomem = q->nomem;
@@ -400,6 +428,60 @@ static int h5_settings_read(hid_t f, gw_layer_sample *s, const char *path, gw_er
     return rc;
 }
 
+/* The springs when the file has them (spring_u, with spring_a and
+ * spring_b of as many values), checked for form here and for sense by
+ * layer_springs_check once the settling's record is read. */
+static int h5_springs_read(hid_t f, gw_layer_sample *s, const char *path, const char *why, gw_err *err)
+{
+    const char *names[3] = {"spring_a", "spring_b", "spring_u"};
+    int have = 0;
+    for (int j = 0; j < 3; j++)
+        have += H5Lexists(f, names[j], H5P_DEFAULT) > 0;
+    if (have == 0)
+        return GW_OK;
+    if (have != 3)
+        return gw_err_set(err, GW_EFORMAT, "sample '%s': HDF5 datasets spring_a, spring_b and spring_u go "
+                          "together (the file has %d of them)", path, have);
+    /* the length from spring_u (h5_column_read then checks all three) */
+    hid_t d = H5Dopen2(f, "spring_u", H5P_DEFAULT), sp = d >= 0 ? H5Dget_space(d) : -1;
+    hsize_t dim = 0;
+    const int ok = sp >= 0 && H5Sget_simple_extent_ndims(sp) == 1 && H5Sget_simple_extent_dims(sp, &dim, NULL) == 1;
+    if (sp >= 0)
+        H5Sclose(sp);
+    if (d >= 0)
+        H5Dclose(d);
+    const long most = LAYER_SPRINGS_MOST(s->n);
+    if (!ok || dim > (hsize_t)most)
+        return gw_err_set(err, GW_EFORMAT, "sample '%s': HDF5 dataset 'spring_u' must be a 1-D array of at most "
+                          "%ld numbers (8 (n + 1) contacts)", path, most);
+    const long m = (long)dim;
+    if (m == 0)
+        return GW_OK;
+    double *v = malloc(3 * (size_t)m * sizeof *v);
+    s->springs = malloc((size_t)m * sizeof *s->springs);
+    if (!v || !s->springs) {
+        free(v);
+        return gw_err_set(err, GW_ENOMEM, "sample '%s': out of memory for %ld springs", path, m);
+    }
+    int rc = GW_OK;
+    for (int j = 0; j < 3 && rc == GW_OK; j++)
+        rc = h5_column_read(f, names[j], m, v + j * m, j == 2 ? SAMPLE_H5_COLUMN_UNITS : NULL, path, why, err);
+    for (long k = 0; rc == GW_OK && k < m; k++) {
+        const double a = v[k], b = v[m + k];
+        if (!(a >= 0 && a < s->n && a == floor(a)) ||
+            !(b >= GW_LAYER_SPRING_BOTTOM && b < s->n && b == floor(b)))
+            rc = gw_err_set(err, GW_EFORMAT, "sample '%s': HDF5 spring at index %ld: pair %g %g is not a particle "
+                            "index in [0, %d) and an index or a wall (-1 left, -2 right, -3 bottom)", path, k, a,
+                            b, s->n);
+        else
+            s->springs[k] = (gw_layer_spring){.a = (int)a, .b = (int)b, .u = v[2 * m + k]};
+    }
+    free(v);
+    if (rc == GW_OK)
+        s->n_springs = (int)m;
+    return rc;
+}
+
 static int h5_fields(hid_t f, gw_layer_sample *s, const char *path, const char *why, gw_err *err)
 {
     char str[64], show[48];
@@ -488,7 +570,10 @@ static int h5_fields(hid_t f, gw_layer_sample *s, const char *path, const char *
     }
     const hdr_src src = {.h5 = 1};
     rc = layer_sample_check(s, path, &src, GW_EFORMAT, err);
-    return rc == GW_OK ? h5_settings_read(f, s, path, err) : rc;
+    if (rc == GW_OK)
+        rc = h5_settings_read(f, s, path, err);
+    /* (their sense is checked last, by gw_layer_sample_read) */
+    return rc == GW_OK ? h5_springs_read(f, s, path, why, err) : rc;
 }
 
 /* libhdf5 decodes metadata without bounds checks, so a corrupt file can crash

@@ -19,7 +19,12 @@
  *   e_i = mix(FNV-1a 64 of x_i, y_i, r_i)                 (a disc, -0 as 0)
  *   B_b = mix(sum over the discs i of body b of e_i)       (a body)
  *   H   = FNV-1a 64 of (n, width, rm, mass_law, clump_mass, the settling
- *         record, sum over the bodies b of B_b)
+ *         record, sum over the bodies b of B_b[, S])
+ *   S   = sum over the springs (a, b, u) of mix(FNV-1a 64 of
+ *         (mix(e_a + e_b), u)), e_b of a wall the mix of its id's hash
+ * (S only for a sample with springs, so that a pile without them keeps its
+ * hash; a spring changes the impact as a particle does, and follows its two
+ * discs, whatever their indices or order)
  * sums modulo 2^64, which do not depend on the order of their terms. mix
  * (below) is a bijection whose output bits each depend on all its input bits,
  * so that B_b is not linear in the e_i: the same discs grouped into other
@@ -99,6 +104,22 @@ static int bodies_sum(const gw_layer_sample *s, unsigned long long *sum)
     return GW_OK;
 }
 
+/* The sum over the springs of mix(FNV-1a 64 of (mix(e_a + e_b), u)), e_b of a
+ * wall its id's hash: a spring is known by the discs it joins, not by their
+ * indices, and the two in either order are one contact (gw_layer_spring). */
+static unsigned long long springs_sum(const gw_layer_sample *s)
+{
+    unsigned long long sum = 0;
+    for (int k = 0; k < s->n_springs; k++) {
+        const gw_layer_spring *q = &s->springs[k];
+        if (q->a < 0 || q->a >= s->n || q->b >= s->n) /* (no sample read or written has one) */
+            continue;
+        const unsigned long long eb = q->b >= 0 ? disc_hash(s, q->b) : mix(hash_long(GW_FNV1A64_INIT, q->b));
+        sum += mix(hash_double(mix(disc_hash(s, q->a) + eb), q->u));
+    }
+    return sum;
+}
+
 int layer_sample_pile_hash(const gw_layer_sample *s, unsigned long long *out)
 {
     *out = 0;
@@ -124,7 +145,12 @@ int layer_sample_pile_hash(const gw_layer_sample *s, unsigned long long *out)
         h = hash_long(h, st->mass_law);
         h = hash_long(h, st->clump_mass);
     }
-    *out = gw_fnv1a64(h, &sum, sizeof sum);
+    h = gw_fnv1a64(h, &sum, sizeof sum);
+    if (s->n_springs > 0 && s->springs && s->x) { /* none: the hash of a sample before springs */
+        const unsigned long long ss = springs_sum(s);
+        h = gw_fnv1a64(h, &ss, sizeof ss);
+    }
+    *out = h;
     return GW_OK;
 }
 

@@ -75,6 +75,11 @@ static const gw_param impact_params[] = {
          "whose contacts carry less than 0.5 or more than 1.5 times the weight they carried at rest under "
          "this material (and the floor load that explains), or whose friction angle is below "
          "the settling's; the result records a warning (docs/cli.md)"),
+    /* the sample's springs (gw_layer_spring): a peer's input without them
+     * (the LAMMPS data file) is compared from zero springs */
+    FLAG("zero-springs", zero_springs, "start every contact's tangential spring at zero, not from the springs the "
+         "sample carries (layer-make writes them; docs/formats.md): the pile then sags into the impact until "
+         "friction builds up"),
     /* optional: with full, until is refused at either value (rebound, the
      * default's value given, passed in silence though full runs to t-max) */
     GW_PARAM_OPT_CHOICE_ROW("until", OFF(until), "rebound,verdict", "rebound", "WHAT",
@@ -414,6 +419,7 @@ static int resolve(const gw_layer_impact_setup *s, const gw_layer_sample *smp, g
     ip->remove_walls = s->remove_walls;
     ip->full = s->full;
     ip->other_settling = s->other_settling;
+    ip->zero_springs = s->zero_springs;
     ip->until = s->until >= 0 ? s->until : GW_LAYER_UNTIL_REBOUND;
     if (ip->full && s->until >= 0)
         return gw_err_set(err, GW_EINVAL, "until: %s has no effect with full (which runs to t-max)",

@@ -207,6 +207,7 @@ int gw_layer_start(gw_layer *L, const gw_solver_type *type, const gw_solver_para
     int rc = layer_contacts_build(L, err);
     if (rc != GW_OK)
         return rc;
+    layer_springs_load(L); /* a sample's springs (layer_springs_pend), before the ledger's start */
     project(L, NULL, NULL);
     gw_layer_energy e;
     if (L->tail_work != !L->dem) { /* the tail's convention changes: keep W_K */

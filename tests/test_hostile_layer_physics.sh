@@ -44,8 +44,16 @@ lines = open("s.txt").read().splitlines()
 W = float([l for l in lines if l.startswith("width")][0].split()[1])
 start = [k for k, l in enumerate(lines) if l.startswith("n ")][0] + 1
 mir, sc = [], []
+n = int(lines[start - 1].split()[1])
 for k, l in enumerate(lines):
     f = l.split()
+    if k >= start + n and l.strip():  # the springs: mirrored, F_t changes sign and the side walls swap; x 4, u too
+        if f[0] == "springs":
+            mir.append(l), sc.append(l)
+            continue
+        mir.append("%s %s %.17g" % (f[0], {"left": "right", "right": "left"}.get(f[1], f[1]), -float(f[2])))
+        sc.append("%s %s %.17g" % (f[0], f[1], 4 * float(f[2])))
+        continue
     if k >= start and l.strip():
         mir.append("%.17g %s %s" % (W - float(f[0]), f[1], f[2]))
         sc.append(" ".join("%.17g" % (4 * float(v)) for v in f[:3]))

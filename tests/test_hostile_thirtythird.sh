@@ -64,7 +64,7 @@ import sys
 L = open('$1').read().split('\n')
 rm = float([l.split()[1] for l in L if l.startswith('rm ')][0])
 k = [i for i, l in enumerate(L) if l.startswith('n ')][0]
-P = [list(map(float, l.split())) for l in L[k + 1:] if l.strip()]
+P = [list(map(float, l.split())) for l in L[k + 1:k + 1 + int(L[k].split()[1])]]
 top = max(p[1] + p[2] for p in P)
 lo = {}
 for i, p in enumerate(P):
@@ -78,7 +78,7 @@ mobile_discs() {
 L = open('$1').read().split('\n')
 rm = float([l.split()[1] for l in L if l.startswith('rm ')][0])
 k = [i for i, l in enumerate(L) if l.startswith('n ')][0]
-P = [list(map(float, l.split())) for l in L[k + 1:] if l.strip()]
+P = [list(map(float, l.split())) for l in L[k + 1:k + 1 + int(L[k].split()[1])]]
 yf = max(p[1] + p[2] for p in P) - $2 * rm
 frozen = {int(p[3]) for p in P if p[1] < yf}
 print(sum(1 for p in P if int(p[3]) not in frozen))"

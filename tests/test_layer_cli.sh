@@ -54,6 +54,8 @@ def parts(p):
         if head and f[0] == 'n':
             head = False
             continue
+        if f[0] == 'springs':  # the contacts' springs follow the particles
+            break
         if not head:
             out.append(tuple(float(v) for v in f))
     return out

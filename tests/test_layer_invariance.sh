@@ -67,6 +67,8 @@ def check(name, ok, detail):
 def read(fn):
     hdr, rows, body = [], [], False
     for l in open(fn).read().splitlines():
+        if l.startswith("springs "):  # the contacts' springs follow the particles (springs())
+            break
         if body:
             if l.strip():
                 rows.append([float(v) for v in l.split()])
@@ -75,10 +77,21 @@ def read(fn):
         body = l.startswith("n ")
     return hdr, rows
 
+WALLS = ("left", "right", "bottom")
+def springs(fn):
+    """The sample's springs (a, b, u): b an index or a wall's name."""
+    lines = open(fn).read().splitlines()
+    k = [i for i, l in enumerate(lines) if l.startswith("springs ")]
+    out = []
+    for l in lines[k[0] + 1:] if k else []:
+        a, b, u = l.split()
+        out.append((int(a), b if b in WALLS else int(b), float(u)))
+    return out
+
 def key(hdr, k):
     return float([l for l in hdr if l.split()[:1] == [k]][0].split()[1])
 
-def write(fn, hdr, rows, width=None, rm=None):
+def write(fn, hdr, rows, width=None, rm=None, spr=()):
     out = []
     for l in hdr:
         f = l.split()
@@ -90,6 +103,8 @@ def write(fn, hdr, rows, width=None, rm=None):
             l = "rm %.17g" % rm
         out.append(l)
     out += ["%.17g %.17g %.17g" % tuple(r[:3]) for r in rows]
+    if spr:
+        out += ["springs %d" % len(spr)] + ["%d %s %.17g" % q for q in spr]
     open(fn, "w").write("\n".join(out) + "\n")
 
 def run(*a, out=None):
@@ -162,11 +177,18 @@ def worst(a, b, f, A):
     return w, at
 
 h, rows = read("s.txt")
+S = springs("s.txt")
 W, R = key(h, "width"), key(h, "rm")
+# the springs move with their contacts: mirrored, F_t (and u) change sign and
+# the side walls swap; translated without walls, or lifted, the wall contacts
+# are gone; scaled, u scales as a length
+MIRROR = {"left": "right", "right": "left"}
+S_mir = [(a, MIRROR.get(b, b), -u) for a, b, u in S]
+S_free = [q for q in S if q[1] not in WALLS]
 one = {"E": 1, "M": 1, "L": 1, "T": 1, "V": 1, "1": 1}
 
 # 1 mirror
-write("m.txt", h, [[W - r[0], r[1], r[2]] for r in rows])
+write("m.txt", h, [[W - r[0], r[1], r[2]] for r in rows], spr=S_mir)
 def series(d):
     return list(csv.DictReader(l for l in open(d + "/ledger.csv") if not l.startswith("#")))
 for mode in ([], ["--exact"]):
@@ -190,7 +212,7 @@ for mode in ([], ["--exact"]):
 
 # 2 translation, walls removed
 for cx, cy in ((0.37, 0.0), (0.0, 0.3), (1.0, 7.0)):
-    write("t.txt", h, [[r[0] + cx, r[1] + cy, r[2]] for r in rows], width=W + 2 * cx)
+    write("t.txt", h, [[r[0] + cx, r[1] + cy, r[2]] for r in rows], width=W + 2 * cx, spr=S_free)
     for mode in ([], ["--exact"]):
         a = run("--sample", "s.txt", "--x", 0.25, "--remove-walls", "--t-max", "0.01", "--full", *mode)
         b = run("--sample", "t.txt", "--x", 0.25, "--remove-walls", "--t-max", "0.01", "--full", *mode)
@@ -206,7 +228,7 @@ for cx, cy in ((0.37, 0.0), (0.0, 0.3), (1.0, 7.0)):
 def scaled(law, fn, lam, mode):
     hh, rr = read(fn)
     write("sc.txt", hh, [[v * lam for v in r[:3]] for r in rr], width=key(hh, "width") * lam,
-          rm=key(hh, "rm") * lam)
+          rm=key(hh, "rm") * lam, spr=[(a, b, u * lam) for a, b, u in springs(fn)])
     tf, vf, gf = (lam, 1.0, 1 / lam) if law == "sphere" else (math.sqrt(lam), math.sqrt(lam), 1.0)
     dt = 1e-6 if mode else 1e-5
     def args(l, t, v, g):
@@ -230,7 +252,7 @@ for law, fn in (("sphere", "sp.txt"), ("disc", "s.txt")):
             check(name, w < tol and a["bounced"] is True, "worst %.2g at %s (tolerance %g)" % (w, at, tol))
 
 # 4 limits
-write("lift.txt", h, [[r[0], r[1] + 1.0, r[2]] for r in rows])
+write("lift.txt", h, [[r[0], r[1] + 1.0, r[2]] for r in rows], spr=S_free)
 for mode in ([], ["--exact"]):
     d = run("--sample", "lift.txt", "--gravity", 0, "--remove-walls", "--gap", 10, "--t-max", 0.1, *mode)
     ok = d is not None and d["bounced"] is None and d["penetration"] == 0 and d["t_first_contact"] is None \

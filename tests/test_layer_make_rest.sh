@@ -47,6 +47,8 @@ for line in open(sys.argv[1]):
         rm = float(f[1])
     elif f[0] == "n":
         n = int(f[1])
+    elif f[0] == "springs": # the contacts' springs follow the particles
+        break
     elif n is not None and len(f) in (3, 4): # x y r, and a clump's number
         rows.append(tuple(map(float, f[:3])))
 g, mass = 9.81, lambda r: math.pi * r * r * 2650

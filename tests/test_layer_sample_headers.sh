@@ -43,7 +43,7 @@ printf 'granwave-layer-sample 1\nwidth 20\nrm 0.325\nvolume_ratio 1\nn 1\n10 0.3
 # the discs as a version-2 sample, each its own body, with rm edited: the
 # grading check skipped every version-2 sample
 awk '/^granwave-layer-sample/ { print "granwave-layer-sample 2"; next } /^n / { d = 1; print; next }
-     d && NF == 3 { print $0, i++; next } /^rm / { print "rm 0.5"; next } { print }' s.txt >v2rm.txt
+     /^springs / { d = 0 } d && NF == 3 { print $0, i++; next } /^rm / { print "rm 0.5"; next } { print }' s.txt >v2rm.txt
 "$GW" layer-make --clumps --n 20 --width-rm 16 --seed 3 --t-max 0.5 --out c.txt >/dev/null 2>&1 ||
     { echo "FAIL: layer-make --clumps"; exit 1; }
 sed 's/^rm .*/rm 0.5/' c.txt >crm.txt

@@ -48,6 +48,8 @@ for line in open(sys.argv[1]):
         if f[0] == "n":
             n = int(f[1])
         continue
+    if f[0] == "springs": # the contacts' springs follow the particles
+        break
     cl[int(f[3])].append((float(f[0]), float(f[1]), float(f[2])))
 union = summed = 0.0
 for m in cl.values():

@@ -1,9 +1,11 @@
 #!/bin/bash
 # test_settling_friction.sh GRANWAVE SRCDIR: an impact with a friction angle
 # below the one its pile settled with is refused unless other-settling (issue
-# 18, class 5: silent wrong answers). A pile's tangential forces start at
-# zero: it leans on its friction once it sags, and with less of it the pile
-# may flow under its own weight during the impact. How much less a pile bears
+# 18, class 5: silent wrong answers). A pile leans on the tangential springs
+# it settled with (the sample's springs section, session 30; before, they
+# started at zero and it leaned on its friction once it sagged); a lower
+# friction clips them to its Coulomb bound, and the pile may flow under its
+# own weight during the impact. How much less a pile bears
 # depends on the pile (layer_settled.c: settled at 30 degrees, the 300-disc
 # pile rests at 19.2, the 600-disc one flows there, the 1000-disc one at 24),
 # so the bound is the settling's own friction. Session 28 had taken 0.6 of
@@ -25,8 +27,9 @@
 #    block resting on it (0.01 m/s, other-settling): at 19.2 degrees, which
 #    session 28 ran with a warning that it "may slide a little", the soil holds
 #    more than 2 kJ of kinetic energy at 100 ms and has lost more than 10 kJ
-#    of potential energy (9.1 and 37 kJ measured: it flows); at 30 less than
-#    500 J and 5 kJ (75 J and 2.1 kJ: it rests).
+#    of potential energy (7.4 and 27 kJ measured with its springs, 9.1 and
+#    37 kJ from zero springs: it flows); at 30 less than 500 J and 5 kJ (11 J
+#    and 0.21 kJ with its springs, 75 J and 2.1 kJ from zero: it rests).
 # On the code before: 19.2 and 29 degrees ran, the messages named 0.6 and
 # "flows".
 # shellcheck source=tests/refusal_lib.sh

@@ -24,8 +24,9 @@ make_sample a.txt --n 20 --width-rm 10 --seed 2 --t-max 0.05
 make_sample c.txt --n 20 --clumps --seed 1
 
 # shuffle SRC DST SEED [EDIT]: DST lists SRC's particles in another order
-# (and, with a body column, its clumps numbered otherwise); EDIT: "radius"
-# takes 1e-9 m off one radius, "move" moves one disc by 1e-9 m in x, "merge"
+# (and, with a body column, its clumps numbered otherwise), its springs
+# following their discs; EDIT: "radius"
+# adds 1e-9 m to one radius, "move" moves one disc by 1e-9 m in x, "merge"
 # makes two touching clumps one
 shuffle() {
     $PY - "$@" <<'EOF'
@@ -35,21 +36,32 @@ edit = sys.argv[4] if len(sys.argv) > 4 else ""
 rnd = random.Random(seed)
 lines = open(src).read().split("\n")
 k = next(i for i, l in enumerate(lines) if l.split()[:1] == ["n"])
-rows = [l.split() for l in lines[k + 1:] if l.strip() and not l.startswith("#")]
+n = int(lines[k].split()[1])
+rows = [l.split() for l in lines[k + 1:k + 1 + n]]
+# the contacts' springs, which follow their two discs
+springs = [l.split() for l in lines[k + 2 + n:] if l.strip()] if lines[k + 1 + n].startswith("springs") else []
 if edit == "merge":  # the first two clumps with discs that overlap
     pair = next((a[3], b[3]) for a in rows for b in rows if a[3] != b[3] and
                 math.hypot(float(a[0]) - float(b[0]), float(a[1]) - float(b[1])) < float(a[2]) + float(b[2]))
     rows = [r[:3] + [pair[0]] if r[3] == pair[1] else r for r in rows]
-rnd.shuffle(rows)
-if edit == "radius":
-    rows[0][2] = repr(float(rows[0][2]) - 1e-9)
+    # the contacts between the two are no more
+    springs = [q for q in springs if q[1] in ("left", "right", "bottom") or rows[int(q[0])][3] != rows[int(q[1])][3]]
+order = list(range(n))
+rnd.shuffle(order)
+where = {old: new for new, old in enumerate(order)}
+rows = [rows[i] for i in order]
+springs = [[str(where[int(a)]), b if b in ("left", "right", "bottom") else str(where[int(b)]), u] for a, b, u in springs]
+rnd.shuffle(springs)
+if edit == "radius":  # (larger: the springs' Coulomb bound grows with the overlaps)
+    rows[0][2] = repr(float(rows[0][2]) + 1e-9)
 if edit == "move":
     rows[0][0] = repr(float(rows[0][0]) + 1e-9)
 if len(rows[0]) > 3:  # the clumps numbered otherwise
     ids = list(range(len(rows)))
     rnd.shuffle(ids)
     rows = [r[:3] + [str(ids[int(r[3])])] for r in rows]
-open(dst, "w").write("\n".join(lines[:k + 1] + [" ".join(r) for r in rows]) + "\n")
+tail = ["springs %d" % len(springs)] + [" ".join(q) for q in springs] if springs else []
+open(dst, "w").write("\n".join(lines[:k + 1] + [" ".join(r) for r in rows] + tail) + "\n")
 EOF
 }
 shuffle a.txt p.txt 1
@@ -78,6 +90,11 @@ with h5py.File("p.h5", "r+") as f:
         f.create_dataset(k, data=v[order])
         for a, b in attrs.items():
             f[k].attrs[a] = b
+    if "spring_a" in f:  # the springs follow their discs (walls: b < 0)
+        where = {old: new for new, old in enumerate(order)}
+        for k in ("spring_a", "spring_b"):
+            v = f[k][()]
+            f[k][...] = [where[int(i)] if i >= 0 else i for i in v]
 EOF
 fi
 

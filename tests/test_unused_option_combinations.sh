@@ -81,7 +81,7 @@ for i, l in enumerate(lines):
         rm = float(l.split()[1])
     if l.startswith("n "):
         break
-pts = [[float(v) for v in l.split()] for l in lines[i + 1:] if len(l.split()) == 3]
+pts = [[float(v) for v in l.split()] for l in lines[i + 1:i + 1 + int(lines[i].split()[1])]]
 print(repr((max(y + r for _, y, r in pts) - min(y for _, y, _ in pts)) / rm))
 EOF
 )

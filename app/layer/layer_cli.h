@@ -52,6 +52,7 @@ typedef struct layer_impact_cli {
     unsigned long long sample_hash; /* its content hash (gw_layer_sample.content_hash) */
     gw_layer_settled settled;  /* its settling's record (recorded 0: none) */
     double settled_q;          /* gw_layer_settled_load_ratio under the impact's material (NaN: none) */
+    int sample_springs;        /* the springs the sample carries (gw_layer_sample.n_springs) */
     long rings;
     int json, exact;
     /* resolved by the library (gw_layer_impact_plan_make) */
@@ -60,7 +61,7 @@ typedef struct layer_impact_cli {
 } layer_impact_cli;
 
 /* Number of options layer_impact_options writes (materials included). */
-#define LAYER_IMPACT_NOPTS (LAYER_MAT_NOPTS + 22)
+#define LAYER_IMPACT_NOPTS (LAYER_MAT_NOPTS + 23)
 
 /* Zero c, fill the defaults and write the impact option table (the rows of
  * gw_layer_impact_setup_params: materials, sample, block, run, solver, flags

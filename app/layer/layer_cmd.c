@@ -416,6 +416,10 @@ static cJSON *impact_json(const impact_cli *c, const gw_layer_impact_result *r,
     cJSON_AddStringToObject(s, "until", gw_layer_until_name(c->ip.until));
     cJSON_AddBoolToObject(s, "remove_walls", c->ip.remove_walls);
     cJSON_AddBoolToObject(s, "other_settling", c->ip.other_settling);
+    cJSON_AddBoolToObject(s, "zero_springs", c->ip.zero_springs);
+    /* the tangential springs the sample carries, from which the run started
+     * unless zero_springs (0: a sample without them, every spring from zero) */
+    cJSON_AddNumberToObject(s, "sample_springs", c->sample_springs);
     cJSON_AddItemToObject(s, "material", mat_json(&c->m.lp));
     /* what the sample's settings line recorded of its settling (null: nothing) */
     if (c->settled.recorded) {
@@ -662,6 +666,7 @@ int gw_cmd_layer_impact(int argc, char **argv)
     if (c.settled.clump_mass < 0) /* the line does not say: the sample's own clump_mass line */
         c.settled.clump_mass = plan.sample.clump_mass;
     c.settled_q = NAN; /* the run's (gw_layer_impact_result.settled_load_ratio): weighed once there */
+    c.sample_springs = plan.sample.n_springs;
     c.solver = gw_solver_type_name(plan.type);
     const gw_solver_type *type = c.type;
     gw_solver_params sp = c.sp;

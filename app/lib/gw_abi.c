@@ -115,6 +115,7 @@ static const gw_struct_entry gw_structs[] = {
     GW_STRUCT(gw_layer_params),
     GW_STRUCT(gw_layer_sample),
     GW_STRUCT(gw_layer_settled),
+    GW_STRUCT(gw_layer_spring),
     GW_STRUCT(gw_layer_stats),
     /* gw_layer_study.h */
     GW_STRUCT(gw_layer_impact_outcome),

@@ -42,7 +42,7 @@ if [ -f "$SRC/layer/layer_sample.c" ]; then
     fi
     clang -I"$GEN" -I"$SRC/layer" $CF -o "$out/fuzz_layer_sample" "$SRC/tests/fuzz/fuzz_layer_sample.c" \
         "$SRC/layer/layer_sample.c" "$SRC/layer/layer_sample_check.c" "$SRC/layer/layer_sample_h5.c" \
-        "$SRC/layer/layer_sample_porosity.c" "$SRC/layer/layer_sample_settings.c" "$SRC/layer/layer_clump_check.c" "$SRC/common/gw_h5.c" "$SRC/common/gw_forklock.c" \
+        "$SRC/layer/layer_sample_porosity.c" "$SRC/layer/layer_sample_settings.c" "$SRC/layer/layer_sample_springs.c" "$SRC/layer/layer_clump_check.c" "$SRC/common/gw_h5.c" "$SRC/common/gw_forklock.c" \
         $common $H5 -lcjson -lm
     targets="sweep_config cli sweep_journal stats_table layer_sample"
 else

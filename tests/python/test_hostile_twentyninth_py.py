@@ -162,13 +162,13 @@ class _Sample(ctypes.Structure):
     this mirror without the appended settled record was written 72 bytes past
     its end, which corrupted the interpreter's heap and crashed later tests of
     the same session (a segfault in test_hostile_twentyseventh_py's
-    layer_impact or in the garbage collector)."""
+    layer_impact or in the garbage collector). ABI 2 appended the springs."""
     _fields_ = [("n", ctypes.c_int), ("width", ctypes.c_double), ("rm", ctypes.c_double),
                 ("volume_ratio", ctypes.c_double), ("porosity", ctypes.c_double), ("seed", ctypes.c_long),
                 ("mass_law", ctypes.c_int), ("clump_mass", ctypes.c_int), ("x", ctypes.POINTER(ctypes.c_double)),
                 ("y", ctypes.POINTER(ctypes.c_double)), ("r", ctypes.POINTER(ctypes.c_double)),
                 ("body", ctypes.POINTER(ctypes.c_int)), ("content_hash", ctypes.c_ulonglong),
-                ("settled", _Settled)]
+                ("settled", _Settled), ("n_springs", ctypes.c_int), ("springs", ctypes.c_void_p)]
 
 
 def test_sample_mirror_is_the_library_size():

@@ -227,6 +227,12 @@ int main(int argc, char **argv)
      * SIGXFSZ killing the program with its temporaries left: the output set
      * then removes them and says which file (Python ignores SIGXFSZ already) */
     signal(SIGXFSZ, SIG_IGN);
+    /* A reader that leaves early (granwave sweep ... 2>&1 | head -1) made the
+     * next progress line kill the run by SIGPIPE: a sweep stopped with its
+     * table unwritten (exit 141). A write to a closed pipe now fails with
+     * EPIPE instead: progress lines are dropped, the run writes its files, and
+     * a failed stdout is reported and ends in exit 1, as a full disk does. */
+    signal(SIGPIPE, SIG_IGN);
     /* SIGINT, SIGTERM or SIGHUP (where not ignored) end the program as before,
      * killed by the signal, but first remove the temporaries of the files under
      * way and of the output set not yet placed: --out is then as it was

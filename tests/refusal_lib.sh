@@ -33,6 +33,11 @@
 #   settling_sweep_ini FILE SAMPLE [LINES]: a layer sweep's configuration in
 #   FILE, two cases (vi = 10, 20) on SAMPLE at t-max 0.002 s, LINES ("key =
 #   value" lines) added to its [params]: the settling tests' sweep.
+#   callgrind_edges CMD...: the program run as CMD under callgrind, its call
+#   graph's call sites as lines "CALLER CALLEE COUNT" (each site's "calls="
+#   count under its cfn= line, the caller the fn= line above it; "?" for a
+#   name callgrind does not give); status 1 and nothing when valgrind could
+#   not run it: the call-counting tests' (the settling check's, the weighing's).
 #   sanitizer_build: true in a sanitizer build (GW_SANITIZE: the program linked
 #   against ASan's or UBSan's runtime, or holding ASan's entry point, as a
 #   static runtime would): the one test of it that the scripts share.
@@ -159,4 +164,29 @@ make_sample() {
 
 settling_sweep_ini() {
     printf '[sweep]\nmodel = layer\n[grid]\nvi = 10, 20\n[params]\nsample = %s\nt-max = 0.002\n%s\n' "$2" "${3:-}" >"$1"
+}
+
+callgrind_edges() {
+    rm -f "$tmp/cg.out"
+    timeout -s KILL 300 valgrind --tool=callgrind --callgrind-out-file="$tmp/cg.out" "$GW" "$@" \
+        >/dev/null 2>"$tmp/cg.err" </dev/null || return 1
+    /usr/bin/python3 - "$tmp/cg.out" <<'PY'
+import re, sys
+# a name is given at its first fn= or cfn= line, its id alone after that
+names, fn, cfn = {}, "?", None
+for line in open(sys.argv[1]):
+    line = line.strip()
+    m = re.match(r"(c?fn)=\((\d+)\)(?: (.*))?$", line)
+    if m:
+        if m.group(3):
+            names[m.group(2)] = m.group(3).replace(" ", "_")
+        name = names.get(m.group(2)) or "?"
+        if m.group(1) == "fn":
+            fn, cfn = name, None
+        else:
+            cfn = name
+    elif cfn and line.startswith("calls="):
+        print(fn, cfn, int(line.split("=")[1].split()[0]))
+        cfn = None
+PY
 }

@@ -23,6 +23,7 @@
 #include <unistd.h>
 
 #include "granwave.h"
+#include "test_child.h"
 
 static int nfail, ncases;
 
@@ -39,34 +40,15 @@ static void check(int ok, const char *what)
  * end by returning 0 (its own checks passed), never by a signal. What it
  * printed on stdout and stderr is captured: the library must print nothing, so
  * a child that wrote anything fails too (the children print only on failure). */
-typedef int (*case_fn)(void);
 
 static void in_child(const char *label, case_fn body)
 {
-    char out[] = "/tmp/gw_hostile_api.XXXXXX";
-    int fd = mkstemp(out);
-    if (fd < 0) {
-        check(0, "mkstemp");
+    int st = 0;
+    char buf[2048];
+    if (child_run(body, &st, buf, sizeof buf) != 0) {
+        check(0, "a child for the case (mkstemp or fork)");
         return;
     }
-    fflush(stdout);
-    fflush(stderr);
-    pid_t pid = fork();
-    if (pid == 0) {
-        dup2(fd, 1);
-        dup2(fd, 2);
-        alarm(120);
-        int rc = body();
-        fflush(stdout);
-        exit(rc == 0 ? 0 : 1); /* exit, not _exit: LeakSanitizer checks the child */
-    }
-    int st = 0;
-    waitpid(pid, &st, 0);
-    char buf[2048] = "";
-    ssize_t got = pread(fd, buf, sizeof buf - 1, 0);
-    buf[got > 0 ? got : 0] = '\0';
-    close(fd);
-    unlink(out);
     char what[3072];
     if (WIFSIGNALED(st))
         snprintf(what, sizeof what, "%s: killed by signal %d (%s)", label, WTERMSIG(st), buf);

@@ -35,33 +35,12 @@ make_sample u.txt --n 20 --clumps --seed 1 --clump-mass union
 # call site's "calls=" count under its cfn= line, with the caller of that
 # site: the fn= line above it); empty when valgrind could not run it
 counts() {
-    rm -f "$tmp/cg.out"
-    timeout -s KILL 300 valgrind --tool=callgrind --callgrind-out-file="$tmp/cg.out" "$GW" "$@" \
-        >/dev/null 2>"$tmp/cg.err" </dev/null || return
-    /usr/bin/python3 - "$tmp/cg.out" <<'PY'
-import re, sys
-names, fn, cfn, checks, weighs = {}, None, None, 0, 0
-CHECK = ("gw_layer_impact_settled_check", "layer_settled_check_q")
-for line in open(sys.argv[1]):
-    line = line.strip()
-    m = re.match(r"(c?fn)=\((\d+)\)(?: (.*))?$", line)
-    if m:
-        if m.group(3):
-            names[m.group(2)] = m.group(3)
-        name = names.get(m.group(2), "")
-        if m.group(1) == "fn":
-            fn, cfn = name, None
-        else:
-            cfn = name
-    elif cfn and line.startswith("calls="):
-        k = int(line.split("=")[1].split()[0])
-        if cfn in CHECK and fn not in CHECK:
-            checks += k
-        if cfn == "gw_layer_create" and fn == "union_weight":
-            weighs += k
-        cfn = None
-print(checks, weighs)
-PY
+    local e
+    e=$(callgrind_edges "$@") || return
+    # the check is entered as gw_layer_impact_settled_check, or as its body
+    # layer_settled_check_q: either, but not the one through the other
+    awk '$2 ~ /^(gw_layer_impact_settled_check|layer_settled_check_q)$/ && $1 !~ /^(gw_layer_impact_settled_check|layer_settled_check_q)$/ { c += $3 } $1 == "union_weight" && $2 == "gw_layer_create" { w += $3 }
+         END { print c + 0, w + 0 }' <<<"$e"
 }
 ini() { # ini FILE VIS: one layer case per speed on u.txt under clump-mass sum
     printf '[sweep]\nmodel = layer\n[grid]\nsample = u.txt\nvi = %s\n[params]\nt-max = 1e-4\nclump-mass = sum\n' \

@@ -33,32 +33,12 @@ make_sample u.txt --n 20 --clumps --seed 1 --clump-mass union
 # function's cfn= line; the first cfn= or fn= line naming it gives its id);
 # empty when valgrind could not run it
 calls() {
-    rm -f "$tmp/cg.out"
-    timeout -s KILL 300 valgrind --tool=callgrind --callgrind-out-file="$tmp/cg.out" "$GW" "$@" \
-        >/dev/null 2>"$tmp/cg.err" </dev/null || return
-    /usr/bin/python3 - "$tmp/cg.out" <<'EOF'
-import re, sys
-# the check is entered as gw_layer_impact_settled_check, or as its body
-# layer_settled_check_q (which the library's own callers call, to keep the
-# load ratio it finds): either, but not the one through the other
-CHECK = ("gw_layer_impact_settled_check", "layer_settled_check_q")
-names, fn, cfn, total = {}, "", None, 0
-for line in open(sys.argv[1]):
-    line = line.strip()
-    m = re.match(r"(c?fn)=\((\d+)\)(?: (.*))?$", line)
-    if m:
-        if m.group(3):
-            names[m.group(2)] = m.group(3)
-        if m.group(1) == "fn":
-            fn, cfn = names.get(m.group(2), ""), None
-        else:
-            cfn = names.get(m.group(2), "")
-    elif cfn and line.startswith("calls="):
-        if cfn in CHECK and fn not in CHECK:
-            total += int(line.split("=")[1].split()[0])
-        cfn = None
-print(total)
-EOF
+    local e
+    e=$(callgrind_edges "$@") || return
+    # the check is entered as gw_layer_impact_settled_check, or as its body
+    # layer_settled_check_q (which the library's own callers call, to keep the
+    # load ratio it finds): either, but not the one through the other
+    awk '$2 ~ /^(gw_layer_impact_settled_check|layer_settled_check_q)$/ && $1 !~ /^(gw_layer_impact_settled_check|layer_settled_check_q)$/ { c += $3 } END { print c + 0 }' <<<"$e"
 }
 # ini FILE GRID [PARAMS]: a layer sweep, "key = value" lines given with \n
 ini() {

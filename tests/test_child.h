@@ -1,0 +1,47 @@
+/* test_child.h: one case of a C test run in a forked child, for the tests that
+ * call the library with input that may crash it (test_hostile_api,
+ * test_library_hostile). A crash, an abort or a sanitizer's report then fails
+ * that case alone, and the test goes on to the next. */
+#ifndef GW_TEST_CHILD_H
+#define GW_TEST_CHILD_H
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <sys/types.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+typedef int (*case_fn)(void);
+
+/* child_run: BODY in a child with stdout and stderr into a file and 120 s of
+ * alarm; *ST gets its wait status (exit 0 when BODY returned 0) and BUF
+ * (N > 0 bytes) what it printed. -1 when no child could be made. */
+static inline int child_run(case_fn body, int *st, char *buf, size_t n)
+{
+    char out[] = "/tmp/gw_test_child.XXXXXX";
+    int fd = mkstemp(out);
+    buf[0] = '\0';
+    if (fd < 0)
+        return -1;
+    fflush(stdout);
+    fflush(stderr);
+    pid_t pid = fork();
+    if (pid == 0) {
+        dup2(fd, 1);
+        dup2(fd, 2);
+        alarm(120);
+        int rc = body();
+        fflush(stdout);
+        exit(rc == 0 ? 0 : 1); /* exit, not _exit: LeakSanitizer checks the child */
+    }
+    *st = 0;
+    if (pid > 0)
+        waitpid(pid, st, 0);
+    ssize_t got = pid > 0 ? pread(fd, buf, n - 1, 0) : 0;
+    buf[got > 0 ? got : 0] = '\0';
+    close(fd);
+    unlink(out);
+    return pid > 0 ? 0 : -1;
+}
+
+#endif

@@ -6,10 +6,13 @@
 #define GW_TEST_CHILD_H
 
 #include <stdio.h>
+#include <string.h>
 #include <stdlib.h>
 #include <sys/types.h>
 #include <sys/wait.h>
 #include <unistd.h>
+
+#include "granwave.h"
 
 typedef int (*case_fn)(void);
 
@@ -42,6 +45,26 @@ static inline int child_run(case_fn body, int *st, char *buf, size_t n)
     close(fd);
     unlink(out);
     return pid > 0 ? 0 : -1;
+}
+
+/* In a child: report a failed expectation on stdout (which fails the case). */
+#define EXPECT(cond)                                                                                  \
+    do {                                                                                              \
+        if (!(cond)) {                                                                                \
+            printf("%s:%d: expected %s\n", __FILE__, __LINE__, #cond);                               \
+            return 1;                                                                                 \
+        }                                                                                             \
+    } while (0)
+
+/* A refusal: GW_EINVAL and one line that contains WHAT (the argument named);
+ * else says what came, on stdout (which fails the case). */
+static inline int refused(int rc, const gw_err *e, const char *what)
+{
+    if (rc != GW_EINVAL || !strstr(e->msg, what) || strchr(e->msg, '\n')) {
+        printf("status %d, message '%s' (wanted GW_EINVAL naming '%s')\n", rc, e->msg, what);
+        return 0;
+    }
+    return 1;
 }
 
 #endif

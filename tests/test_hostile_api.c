@@ -59,25 +59,6 @@ static void in_child(const char *label, case_fn body)
     check(WIFEXITED(st) && WEXITSTATUS(st) == 0 && buf[0] == '\0', what);
 }
 
-/* In a child: report a failed expectation on stdout (which fails the case). */
-#define EXPECT(cond)                                                                                  \
-    do {                                                                                              \
-        if (!(cond)) {                                                                                \
-            printf("%s:%d: expected %s\n", __FILE__, __LINE__, #cond);                               \
-            return 1;                                                                                 \
-        }                                                                                             \
-    } while (0)
-
-/* A refusal: GW_EINVAL and a message that contains what (the argument named). */
-static int refused(int rc, const gw_err *e, const char *what)
-{
-    if (rc != GW_EINVAL || !strstr(e->msg, what) || strchr(e->msg, '\n')) {
-        printf("status %d, message '%s' (wanted GW_EINVAL naming '%s')\n", rc, e->msg, what);
-        return 0;
-    }
-    return 1;
-}
-
 /* ---- every study through the index: NULL, zeroed, freed twice ---- */
 
 static const gw_study *cur; /* the study of the case running */

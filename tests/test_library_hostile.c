@@ -71,24 +71,6 @@ static void in_child(const char *label, case_fn body)
     }
 }
 
-#define EXPECT(cond)                                                                                  \
-    do {                                                                                              \
-        if (!(cond)) {                                                                                \
-            printf("%s:%d: expected %s\n", __FILE__, __LINE__, #cond);                               \
-            return 1;                                                                                 \
-        }                                                                                             \
-    } while (0)
-
-/* GW_EINVAL with one line naming what. */
-static int refused(int rc, const gw_err *e, const char *what)
-{
-    if (rc != GW_EINVAL || !strstr(e->msg, what) || strchr(e->msg, '\n')) {
-        printf("status %d, message '%s' (wanted GW_EINVAL naming '%s')\n", rc, e->msg, what);
-        return 0;
-    }
-    return 1;
-}
-
 static int exists(const char *path)
 {
     struct stat st;

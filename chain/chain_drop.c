@@ -63,16 +63,12 @@ int gw_chain_drop_params_validate(const gw_chain_drop_params *p, gw_err *err)
     if (!p)
         return gw_err_set(err, GW_EINVAL, "gw_chain_drop_params_validate: p is NULL");
     int rc;
-    if ((rc = gw_check_range(p->height, "height (m)", 0, GW_CHAIN_DROP_H_MAX, err)) != GW_OK)
+    if ((rc = gw_check_range(p->height, "height (m)", GW_CHAIN_DROP_H_MIN, GW_CHAIN_DROP_H_MAX, err)) != GW_OK)
         return rc;
-    if (!(p->height > 0))
-        return gw_err_set(err, GW_EINVAL, "height (m): must be > 0, got %g", p->height);
     if ((rc = gw_check_range(p->chain.gravity, "gravity (m/s^2)", GW_CHAIN_DROP_G_MIN, 1e4, err)) != GW_OK)
         return rc;
-    if ((rc = gw_check_range(p->t_max, "t-max (s)", 0, GW_CHAIN_DROP_T_MAX, err)) != GW_OK)
+    if ((rc = gw_check_range(p->t_max, "t-max (s)", GW_CHAIN_DROP_T_MIN, GW_CHAIN_DROP_T_MAX, err)) != GW_OK)
         return rc;
-    if (!(p->t_max > 0))
-        return gw_err_set(err, GW_EINVAL, "t-max (s): must be > 0, got %g", p->t_max);
     if ((rc = gw_check_range(p->peak_threshold, "peak-threshold (N)", 0, INFINITY, err)) != GW_OK)
         return rc;
     if ((rc = gw_chain_drop_guide_check(p->chain.guide.coulomb, p->chain.guide.viscous, err)) != GW_OK)

@@ -33,7 +33,7 @@
 
 static const gw_param drop_params[] = {
     ROW("n", GW_PARAM_LONG, n, "", 1, 100000, 0, "1", "N", "number of beads [1]"),
-    {.name = "height", .type = GW_PARAM_DOUBLE, .offset = OWN(height), .unit = "m", .min = 1e-6,
+    {.name = "height", .type = GW_PARAM_DOUBLE, .offset = OWN(height), .unit = "m", .min = GW_CHAIN_DROP_H_MIN,
      .max = GW_CHAIN_DROP_H_MAX, .def = "5.1e-3", .metavar = "H",
      .help = "fall of bead 1 to the sensor, m, in [1e-6, 1] [5.1e-3]"},
     {.name = "gap", .type = GW_PARAM_LIST, .offset = OWN(gap), .unit = "m", .min = 0, .max = GW_CHAIN_DROP_GAP_MAX,
@@ -49,7 +49,7 @@ static const gw_param drop_params[] = {
     ROW("gravity", GW_PARAM_DOUBLE, gravity, "m/s^2", GW_CHAIN_DROP_G_MIN, 1e4, 0, "9.81", "G",
         "gravity toward the sensor, m/s^2, in [1e-3, 1e4] [9.81]"),
     GW_CHAIN_SOLVER_ROWS
-    ROW("t-max", GW_PARAM_DOUBLE, t_max, "s", 1e-6, GW_CHAIN_DROP_T_MAX, 0, "10e-3", "T",
+    ROW("t-max", GW_PARAM_DOUBLE, t_max, "s", GW_CHAIN_DROP_T_MIN, GW_CHAIN_DROP_T_MAX, 0, "10e-3", "T",
         "time followed after the first contact, s, in [1e-6, 1] [10e-3, the paper's Fig. 12]"),
     /* [t-max/1e7, t-max] over t-max's row [1e-6, 1], or 0: the row said [0, 1]
      * while (0, 1e-13) is below t-max/1e7 at every t-max (test_cli_property) */

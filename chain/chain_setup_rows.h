@@ -95,7 +95,7 @@ _Static_assert(GW_SHEET_FITTED == 0 && GW_SHEET_HERTZ == 1 && GW_SHEET_LAYER == 
     ROW("alpha", GW_PARAM_DOUBLE, alpha, "s/m", 0, GW_CHAIN_ALPHA_MAX, 0, NULL, "A", \
         "Hunt-Crossley constant, s/m, in [0, 1e8] [0]"), \
     GW_PARAM_ROW("restitution", GW_PARAM_DOUBLE, OFF(restitution), "", 0, 1, 1, 1, NULL, "E", \
-        "calibrate gamma/alpha so one bead on the wall rebounds with E, in (0, 1)"), \
+        "calibrate gamma/alpha so one bead on the wall rebounds with E (a sheet under sheet-law hertz: on the bare sensor), in (0, 1)"), \
     ROW("restitution-v", GW_PARAM_DOUBLE, restitution_v, "m/s", GW_CHAIN_VIMP_MIN, GW_CHAIN_VIMP_MAX, 0, NULL, "V", \
         "impact velocity of that calibration, m/s [v_imp]"), \
     CHOICE("solver", solver, "cvode,arkode,rk4", NULL, "NAME", solver_help), \

@@ -719,16 +719,21 @@ void gw_chain_spectrum_free(gw_chain_spectrum *sp);
 typedef struct gw_chain_drop_params {
     gw_chain_params chain; /* the column; chain.v_imp is replaced by sqrt(2 g h),
                               chain.gravity = g > 0 */
-    double height;         /* fall of bead 1 to the sensor, m, (0, GW_CHAIN_DROP_H_MAX] */
+    double height;         /* fall of bead 1 to the sensor, m,
+                              [GW_CHAIN_DROP_H_MIN, GW_CHAIN_DROP_H_MAX] */
     const double *gaps;    /* [n-1] initial gaps between beads i and i+1, m, in
                               [0, GW_CHAIN_DROP_GAP_MAX], caller-owned; NULL = touching */
     double t_max;          /* time followed after the first contact, s,
-                              (0, GW_CHAIN_DROP_T_MAX] */
+                              [GW_CHAIN_DROP_T_MIN, GW_CHAIN_DROP_T_MAX] */
     double peak_threshold; /* N, >= 0 (see peak and impact above) */
 } gw_chain_drop_params;
 
+/* the lower ends are the program's (the study table's rows): a subnormal
+ * height or t-max passed (0, ...] and failed later as "the solution blew up" */
+#define GW_CHAIN_DROP_H_MIN 1e-6   /* m */
 #define GW_CHAIN_DROP_H_MAX 1.0    /* m: 4.4 m/s at the sensor on Earth */
 #define GW_CHAIN_DROP_GAP_MAX 0.1  /* m */
+#define GW_CHAIN_DROP_T_MIN 1e-6   /* s */
 #define GW_CHAIN_DROP_T_MAX 1.0    /* s */
 #define GW_CHAIN_DROP_G_MIN 1e-3   /* m/s^2 */
 

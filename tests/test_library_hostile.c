@@ -505,6 +505,27 @@ static void *collide_one(void *arg)
     return NULL;
 }
 
+/* gw_chain_drop_params_validate: a subnormal height or t-max passed (0, 1]
+ * and the drop failed later as "the solution blew up"; the program's table
+ * refused them (below 1e-6). 1e-6 itself is valid. */
+static int drop_subnormal(void)
+{
+    gw_err e = {0};
+    gw_chain_drop_params p = gw_chain_drop_params_default();
+    EXPECT(gw_chain_drop_params_validate(&p, &e) == GW_OK);
+    p.height = 4.9e-324;
+    EXPECT(refused(gw_chain_drop_params_validate(&p, &e), &e, "height"));
+    p.height = 1e-6;
+    EXPECT(gw_chain_drop_params_validate(&p, &e) == GW_OK);
+    p.t_max = 4.9e-324;
+    EXPECT(refused(gw_chain_drop_params_validate(&p, &e), &e, "t-max"));
+    p.t_max = 1e-7;
+    EXPECT(refused(gw_chain_drop_params_validate(&p, &e), &e, "t-max"));
+    p.t_max = 1e-6;
+    EXPECT(gw_chain_drop_params_validate(&p, &e) == GW_OK);
+    return 0;
+}
+
 static int two_threads(void)
 {
     one_run alone[2] = {{3, 0, 0, -1}, {5, 0, 0, -1}}, both[2] = {{3, 0, 0, -1}, {5, 0, 0, -1}};
@@ -552,6 +573,7 @@ int main(void)
         {"gw_layer_write_vtk/pvd: NULL, n < 0, NaN time", writers_null},
         {"gw_layer_rings: a negative count", rings_negative_count},
         {"gw_chain_wall_spectrum: a NaN force sample", spectrum_nan_force},
+        {"gw_chain_drop_params_validate: subnormal height and t-max", drop_subnormal},
         {"two threads, two chains", two_threads},
     };
     for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++)

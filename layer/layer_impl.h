@@ -583,10 +583,11 @@ int layer_impact_setup_check_sample(const struct gw_layer_impact_setup *s, const
  * ip its parameters), for a sweep's progress lines (gw_layer_sweep_run_part):
  * its simulated time over the end expected. A run to the rebound ends when
  * the block's v_y is back to zero after turning upward (T_f, or the rebound's
- * end inside the layer): with the block rising under gravity g that is
- * expected in v_y / g (exact in free flight, and the block leaves the layer
- * early: at 1.6 ms of the 40-disc pile's T_f = 0.31 s at 20 m/s), else at
- * t-max (an upper bound: before the block rises, a run until the verdict,
+ * end inside the layer): with the block rising under gravity g, past its
+ * largest v_y (the push that turned it over), that is expected in v_y / g
+ * (exact in free flight, and the block leaves the layer early: at 1.6 ms of
+ * the 40-disc pile's T_f = 0.31 s at 20 m/s), else at t-max (an upper bound:
+ * before the block rises and while it is pushed up, a run until the verdict,
  * a full run, a run without gravity). In [0, 1]. */
 double layer_run_part(const gw_layer *L, const gw_layer_impact_params *ip);
 /* gw_layer_impact_run_progress with part(part_ctx, x) (may be NULL) called

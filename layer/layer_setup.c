@@ -263,8 +263,13 @@ double layer_run_part(const gw_layer *L, const gw_layer_impact_params *ip)
     if (!ip->full && ip->until == GW_LAYER_UNTIL_REBOUND) {
         double b[6];
         gw_layer_particle(L, gw_layer_n(L) - 1, b);
+        gw_layer_block_extremes ex;
+        gw_layer_block_extremes_get(L, &ex);
         const double g = gw_layer_get_params(L)->gravity;
-        if (b[4] > 0 && g > 0) /* rising: v_y back to zero in v_y / g, or sooner */
+        /* rising past its largest v_y (its push over): v_y back to zero in
+         * v_y / g, or sooner; while still pushed up v_y / g says nothing (a
+         * sample at v_y = 0.001 m/s just after the turn read x = 0.99) */
+        if (b[4] > 0 && g > 0 && ex.n > 0 && b[4] < ex.vy_max)
             end = fmin(t_max, t + b[4] / g);
     }
     return end > 0 && t > 0 ? fmin(t / end, 1.0) : 0;

@@ -772,9 +772,10 @@ struct gw_sweep_model;
 extern const struct gw_sweep_model gw_layer_sweep_model;
 #define GW_LAYER_SWEEP_MODEL gw_layer_sweep_model
 /* The model's run with part(pctx, x) (gw_sweep_part_fn, may be NULL) about a
- * thousand times over the case's impact: x its output samples done over those
- * up to t-max (the run usually ends earlier, at T_f: x then never reaches 1).
- * The results are the run's, bit for bit. */
+ * thousand times over the case's impact: x its simulated time over the end
+ * expected, t + v_y / g while the block rises under gravity (T_f, when v_y is
+ * back to zero), else t-max (before it rises, until verdict, full, no
+ * gravity); x in [0, 1]. The results are the run's, bit for bit. */
 int gw_layer_sweep_run_part(int nkeys, const char *const *names, const char *const *values, double *out,
                             unsigned long long *read_hash, void (*part)(void *pctx, double x), void *pctx,
                             gw_err *err);

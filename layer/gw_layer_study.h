@@ -127,7 +127,9 @@ void gw_layer_impact_outcome_free(gw_layer_impact_outcome *out);
 
 /* An impact resolved from its setup as gw_layer_impact_run resolves it, for
  * callers that run gw_layer_impact themselves (with their own on_sample hook,
- * as the program does for its VTK files): the sample read and checked, the
+ * as the program does for its VTK files; gw_layer_impact checks the sample's
+ * settling again, which the program, through an internal run that takes the
+ * plan's verdict, does not): the sample read and checked, the
  * materials (the sample's mass law and clump mass unless given), the impact,
  * the solver and its parameters, options without effect in the combination
  * refused. Free with gw_layer_impact_plan_free, also after a failure. Returns

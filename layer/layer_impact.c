@@ -653,7 +653,8 @@ int layer_impact_run(const gw_layer_sample *smp, const gw_layer_params *lp0, con
     }
     /* the settling recorded in the sample against this material: refused far
      * from rest (unless other_settling), else its warning kept in the result;
-     * found by the plan (gw_layer_impact_run), or here, once: a run checked it
+     * found by the plan (gw_layer_impact_run, the program's layer-impact:
+     * layer_plan_run.h), or here, once: a run checked it
      * twice and weighed a union-clump pile under clump-mass sum five times */
     double q = NAN; /* NaN: nothing recorded */
     if (rc == GW_OK && found) {

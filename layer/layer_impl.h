@@ -9,6 +9,7 @@
 #include <math.h>
 
 #include "gw_layer.h"
+#include "layer_plan_run.h"
 
 /* Sliding margin of the tangential state outside the Coulomb cap and its
  * restoring rate (layer_model.c): LAYER_CAP_RATE 1/s for the adaptive
@@ -361,17 +362,8 @@ int layer_rest_check(const gw_layer_sample *smp, const gw_layer_params *lp, int 
  * needs it for the check, its result and the rest check. */
 int layer_settled_check_q(const gw_layer_sample *smp, const gw_layer_params *lp, int other_settling,
                           const char *name, char *warning, size_t n, double *q, gw_err *err);
-/* A run's settling verdict as its plan found it (layer_settling_verdict):
- * the run (layer_impact_run) takes it instead of checking again. */
-typedef struct layer_settling_found {
-    double q;          /* gw_layer_settled_load_ratio (NaN: nothing recorded) */
-    char warning[768]; /* gw_layer_impact_settled_check's warning */
-} layer_settling_found;
-/* gw_layer_impact, its sample's settling under lp0 taken from found when the
- * plan found it (found NULL: checked here, once) */
-int layer_impact_run(const gw_layer_sample *smp, const gw_layer_params *lp0, const gw_layer_impact_params *ip,
-                     const gw_solver_type *type, const gw_solver_params *sp, const layer_settling_found *found,
-                     gw_layer_impact_result *res, gw_err *err);
+/* layer_settling_found and layer_impact_run: layer_plan_run.h (the program
+ * runs them too) */
 
 /* What the last rhs evaluation found of a closed frictional contact, kept in
  * DEM mode for the next step (layer_dem.c): K_t at the step's start and the
@@ -586,6 +578,23 @@ int layer_settling_verdict_found(const gw_layer_sample *smp, const gw_layer_para
 struct gw_layer_impact_setup;
 int layer_impact_setup_check_sample(const struct gw_layer_impact_setup *s, const gw_layer_sample *smp,
                                     layer_settling_memo *memo, gw_err *err);
+
+/* The part of an impact's run done at its output sample (L the run's layer,
+ * ip its parameters), for a sweep's progress lines (gw_layer_sweep_run_part):
+ * its simulated time over the end expected. A run to the rebound ends when
+ * the block's v_y is back to zero after turning upward (T_f, or the rebound's
+ * end inside the layer): with the block rising under gravity g, past its
+ * largest v_y (the push that turned it over), that is expected in v_y / g
+ * (exact in free flight, and the block leaves the layer early: at 1.6 ms of
+ * the 40-disc pile's T_f = 0.31 s at 20 m/s), else at t-max (an upper bound:
+ * before the block rises and while it is pushed up, a run until the verdict,
+ * a full run, a run without gravity). In [0, 1]. */
+double layer_run_part(const gw_layer *L, const gw_layer_impact_params *ip);
+/* gw_layer_impact_run_progress with part(part_ctx, x) (may be NULL) called
+ * with layer_run_part as progress is, but not at the run's end */
+int layer_impact_run_part(const struct gw_layer_impact_setup *s, gw_progress_fn progress, void *pctx,
+                          void (*part)(void *part_ctx, double x), void *part_ctx,
+                          struct gw_layer_impact_outcome *out, gw_err *err);
 
 /* gw_layer_impact_plan_make with its settling verdict through memo (may be
  * NULL). */

@@ -244,13 +244,35 @@ typedef struct snap_ctx {
     int next;      /* first request not taken */
     gw_progress_fn progress; /* may be NULL */
     void *pctx;
-    long total, every;       /* samples at most, and how often progress is called */
+    void (*part)(void *pctx, double x); /* the run's part done (layer_run_part; may be NULL) */
+    void *part_ctx;
+    const gw_layer_impact_params *ip;   /* the run's (for part) */
+    long total, every;       /* samples at most, and how often progress and part are called */
 } snap_ctx;
 
 static int req_cmp(const void *a, const void *b)
 {
     const snap_req *x = a, *y = b;
     return x->t < y->t ? -1 : x->t > y->t ? 1 : x->j - y->j;
+}
+
+double layer_run_part(const gw_layer *L, const gw_layer_impact_params *ip)
+{
+    const double t = gw_layer_time(L), t_max = ip->t_max;
+    double end = t_max;
+    if (!ip->full && ip->until == GW_LAYER_UNTIL_REBOUND) {
+        double b[6];
+        gw_layer_particle(L, gw_layer_n(L) - 1, b);
+        gw_layer_block_extremes ex;
+        gw_layer_block_extremes_get(L, &ex);
+        const double g = gw_layer_get_params(L)->gravity;
+        /* rising past its largest v_y (its push over): v_y back to zero in
+         * v_y / g, or sooner; while still pushed up v_y / g says nothing (a
+         * sample at v_y = 0.001 m/s just after the turn read x = 0.99) */
+        if (b[4] > 0 && g > 0 && ex.n > 0 && b[4] < ex.vy_max)
+            end = fmin(t_max, t + b[4] / g);
+    }
+    return end > 0 && t > 0 ? fmin(t / end, 1.0) : 0;
 }
 
 /* Copy the layer's state into snapshot j (allocating them all at the first call). */
@@ -262,6 +284,8 @@ static int take_snapshots(void *ctx, const gw_layer *L, int k, int final)
     if (c->progress && (final || k % c->every == 0) &&
         c->progress(c->pctx, final ? c->total : k, c->total) != 0)
         return GW_ECANCELED;
+    if (c->part && !final && k % c->every == 0)
+        c->part(c->part_ctx, layer_run_part(L, c->ip));
     if (c->out->nsnap == 0)
         return GW_OK;
     gw_layer_impact_outcome *o = c->out;
@@ -465,6 +489,16 @@ int layer_impact_plan_make_memo(const gw_layer_impact_setup *s, gw_layer_impact_
     return plan_make(s, p, memo, NULL, err);
 }
 
+int layer_impact_plan_make_found(const gw_layer_impact_setup *s, gw_layer_impact_plan *p,
+                                 layer_settling_found *found, gw_err *err)
+{
+    if (!found)
+        return gw_err_set(err, GW_EINVAL, "layer_impact_plan_make_found: found is NULL");
+    found->q = NAN;
+    found->warning[0] = '\0';
+    return plan_make(s, p, NULL, found, err);
+}
+
 int gw_layer_impact_plan_make(const gw_layer_impact_setup *s, gw_layer_impact_plan *p, gw_err *err)
 {
     return layer_impact_plan_make_memo(s, p, NULL, err);
@@ -508,6 +542,13 @@ int gw_layer_impact_run(const gw_layer_impact_setup *s, gw_layer_impact_outcome 
 int gw_layer_impact_run_progress(const gw_layer_impact_setup *s, gw_progress_fn progress, void *pctx,
                                  gw_layer_impact_outcome *out, gw_err *err)
 {
+    return layer_impact_run_part(s, progress, pctx, NULL, NULL, out, err);
+}
+
+int layer_impact_run_part(const gw_layer_impact_setup *s, gw_progress_fn progress, void *pctx,
+                          void (*part)(void *part_ctx, double x), void *part_ctx, gw_layer_impact_outcome *out,
+                          gw_err *err)
+{
     if (!s || !out)
         return gw_err_set(err, GW_EINVAL, "gw_layer_impact_run: %s is NULL", !s ? "setup" : "out");
     memset(out, 0, sizeof *out);
@@ -520,8 +561,9 @@ int gw_layer_impact_run_progress(const gw_layer_impact_setup *s, gw_progress_fn 
     gw_layer_impact_params ip = plan.ip;
     const gw_solver_type *type = plan.type;
     const gw_solver_params sp = plan.sp;
-    snap_ctx sc = {.out = out, .req = NULL, .next = 0, .progress = progress, .pctx = pctx};
-    if (rc == GW_OK && progress) { /* about a thousand calls over the longest run */
+    snap_ctx sc = {.out = out, .req = NULL, .next = 0, .progress = progress, .pctx = pctx, .part = part,
+                   .part_ctx = part_ctx, .ip = &ip};
+    if (rc == GW_OK && (progress || part)) { /* about a thousand calls over the longest run */
         sc.total = (long)ceil(ip.t_max / ip.dt_out - 1e-9) + 1;
         sc.every = sc.total / 1000 > 1 ? sc.total / 1000 : 1;
         ip.on_sample = take_snapshots;

@@ -499,21 +499,6 @@ static double canon(double v)
     return isnan(v) ? NAN : v;
 }
 
-/* A case's part: the output samples done over those up to t-max (the last
- * call, at the run's end, says all of them: not passed on). */
-typedef struct case_part {
-    void (*fn)(void *pctx, double x);
-    void *pctx;
-} case_part;
-
-static int at_samples(void *ctx, long done, long total)
-{
-    const case_part *cp = ctx;
-    if (done < total)
-        cp->fn(cp->pctx, (double)done / (double)total);
-    return 0;
-}
-
 int gw_layer_sweep_run_part(int nk, const char *const *names, const char *const *values, double *out,
                             unsigned long long *read_hash, void (*part)(void *pctx, double x), void *pctx,
                             gw_err *err)
@@ -525,10 +510,10 @@ int gw_layer_sweep_run_part(int nk, const char *const *names, const char *const 
     gw_layer_impact_outcome o;
     memset(&o, 0, sizeof o);
     placement pl;
-    case_part cp = {.fn = part, .pctx = pctx};
     int rc = prepare(&s, nk, names, values, &pl, err);
     if (rc == GW_OK) {
-        rc = gw_layer_impact_run_progress(&s, part ? at_samples : NULL, &cp, &o, err);
+        /* its part: its simulated time over the end expected (layer_run_part) */
+        rc = layer_impact_run_part(&s, NULL, NULL, part, pctx, &o, err);
         if (rc == GW_EUNSUPPORTED || rc == GW_EFORMAT || rc == GW_EIO) /* a bad input found only by the run */
             rc = GW_EINVAL;
         if (rc == GW_EINVAL)

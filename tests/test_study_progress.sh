@@ -21,7 +21,9 @@
 #    (the cases seen inside: before, "0/2 cases, 2 under way" and no P);
 #  - a layer sweep of two exact impacts on a 40-disc pile at 20 and 21 m/s,
 #    rk4 at 4e-7 s, one thread (each about 5 s to T_f = 0.31 s): a line "sweep: 0/2 cases, 1 under way, P% ..." with
-#    P > 0 inside the first case, a line at 100 % at the end, exit 0, and
+#    P > 0 inside the first case, and one with P above 10 % (a case's part
+#    its simulated time over the end its block's flight gives: over t-max,
+#    P stayed under 7.7 % until a case ended), a line at 100 % at the end, exit 0, and
 #    the table of its --quiet twin (results bit for bit);
 #  - layer-make --n 300 (16 s on a loaded machine) in a pipe: its line
 #    within 6 s, where it spoke on a terminal only;
@@ -177,6 +179,13 @@ first = [x for _, x in prog if x.group(1) == "0"]
 check(any(float(x.group(4)) > 0 and x.group(3) == "1" and x.group(6) is not None for x in first),
       "layer sweep: a line inside its first case (0/2 ended, 1 under way) with a share of the work above 0 and a "
       "time left: %r" % [x.group(0) for x in first])
+# its part: the impact's simulated time over the end its block's flight gives
+# (T_f), not over t-max (then at most 0.31 / 2 of a case, 7.7 % of the sweep,
+# until a case ended): the last line inside the first case (at 2 s or later
+# of its 5 s or more) is past a tenth of the sweep
+check(any(float(x.group(4)) > 10 for x in first),
+      "layer sweep: inside its first case the share passes 10 %% (its part over the flight's end, not t-max): %s"
+      % [x.group(4) for x in first])
 check(bool(prog) and prog[-1][1].group(1) == "2" and prog[-1][1].group(4) == "100.0",
       "layer sweep: the last line 2/2 at 100 %%: %s" % (prog[-1][1].group(0) if prog else None))
 try:

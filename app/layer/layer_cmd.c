@@ -17,6 +17,7 @@
 
 #include "gw_cli.h"
 #include "layer_cli.h"
+#include "layer_plan_run.h"
 
 static cJSON *mat_json(const gw_layer_params *p)
 {
@@ -648,8 +649,11 @@ int gw_cmd_layer_impact(int argc, char **argv)
     }
     gw_layer_impact_plan plan;
     memset(&plan, 0, sizeof plan);
+    /* the plan's settling verdict, which the run takes: the sample's settling
+     * checked once (its pile weighed once), not again by gw_layer_impact */
+    layer_settling_found found;
     int prc = gw_cli_study_setup(gw_layer_impact_setup_params(), &st, o, argc, argv, "layer-impact", &err);
-    if (prc == GW_OK && (prc = gw_layer_impact_plan_make(&st, &plan, &err)) != GW_OK)
+    if (prc == GW_OK && (prc = layer_impact_plan_make_found(&st, &plan, &found, &err)) != GW_OK)
         gw_cli_study_error(gw_layer_impact_setup_params(), "layer-impact", prc, &err); /* "NAME:" -> "--NAME:" */
     gw_layer_impact_setup_clear(&st);
     if (prc != GW_OK) {
@@ -692,7 +696,7 @@ int gw_cmd_layer_impact(int argc, char **argv)
         c.ip.on_sample = write_snapshot;
         c.ip.sample_ctx = &vc;
     }
-    int rc = gw_layer_impact(&s, &c.m.lp, &c.ip, type, &sp, &r, &err);
+    int rc = layer_impact_run(&s, &c.m.lp, &c.ip, type, &sp, &found, &r, &err);
     if (vc.failed) /* the writer's own message, not the run's "the hook stopped it" */
         err = vc.err;
     else if (rc != GW_OK && vc.failure_file[0]) {

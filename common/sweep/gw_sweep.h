@@ -117,10 +117,11 @@ typedef struct gw_sweep_model {
 
 /* A case's progress while it runs, for a display of the sweep: x, the share
  * of the case done on its model's own scale (a chain case: its collision's
- * simulated time over its expected length; a layer case: its output samples
- * over those up to t-max), from the thread that runs the case, at most about
- * once per output sample; x may pass 1 (a collision longer than expected) or
- * end below it (an impact ended at T_f). It must return at once. */
+ * simulated time over its expected length; a layer case: its simulated time
+ * over the end its block's flight gives, or t-max), from the thread that runs
+ * the case, at most about once per output sample; x may pass 1 (a collision
+ * longer than expected) or end below it (an impact ended before the end
+ * expected). It must return at once. */
 typedef void (*gw_sweep_part_fn)(void *pctx, double x);
 /* A model's run that reports its part (gw_chain_sweep_run_part,
  * gw_layer_sweep_run_part): the model's run, its results bit for bit, with

@@ -1,0 +1,37 @@
+/*
+ * layer_plan_run.h (internal to the library and the program, not installed):
+ * an impact's plan with the settling verdict it found, and the run that takes
+ * that verdict instead of finding it again (layer_setup.c, layer_impact.c).
+ * The program's layer-impact runs gw_layer_impact itself (its own on_sample
+ * hook writes the VTK files and the progress lines): through the public
+ * gw_layer_impact_plan_make and gw_layer_impact it checked its sample's
+ * settling twice, the plan's check and the run's, and weighed a union-clump
+ * pile hit under clump-mass sum for each. gw_layer_impact_plan has no room
+ * for the verdict (its layout is the ABI's), so the verdict is kept beside it.
+ */
+#ifndef GW_LAYER_PLAN_RUN_H
+#define GW_LAYER_PLAN_RUN_H
+
+#include "gw_layer.h"
+#include "gw_layer_study.h"
+
+/* A run's settling verdict as its plan found it (layer_settling_verdict):
+ * the run (layer_impact_run) takes it instead of checking again. */
+typedef struct layer_settling_found {
+    double q;          /* gw_layer_settled_load_ratio (NaN: nothing recorded) */
+    char warning[768]; /* gw_layer_impact_settled_check's warning */
+} layer_settling_found;
+
+/* gw_layer_impact_plan_make, and into *found (not NULL) the settling verdict
+ * the plan found (set when GW_OK). */
+int layer_impact_plan_make_found(const gw_layer_impact_setup *s, gw_layer_impact_plan *p,
+                                 layer_settling_found *found, gw_err *err);
+
+/* gw_layer_impact, its sample's settling under lp0 taken from found when the
+ * plan found it (found NULL: checked here, once; gw_layer_impact is this with
+ * NULL). */
+int layer_impact_run(const gw_layer_sample *smp, const gw_layer_params *lp0, const gw_layer_impact_params *ip,
+                     const gw_solver_type *type, const gw_solver_params *sp, const layer_settling_found *found,
+                     gw_layer_impact_result *res, gw_err *err);
+
+#endif

@@ -157,8 +157,15 @@ int chain_sensor_steps_check(const gw_chain_params *p, const gw_solver_type *typ
  * takes 10,393 (0.6 s); at 1e-8, 1e13, erk's F_max was 0.235 N high (dirk
  * 1.5e-6 N low). Up to 1e12 N/m (3.5e5 radians as the plan counts them)
  * the explicit methods are as close as the implicit ones; beyond 5e5 they
- * are refused (1e13 N/m: 1.1e6). */
+ * are refused (1e13 N/m: 1.1e6), where the ring is more than 1e3 times the
+ * beads' shortest contact's pi/tau (8.4e4 at 1e13 N/m). */
 #define RING_RAD_MAX 5e5
+/* A ring within 1e3 times the beads' shortest contact's pi/tau is the
+ * column's own kind of motion, which the explicit methods resolve with its
+ * contacts: a 1e-3 kg body on 1e9 N/m (about 9 times) turns 5.1e5 radians
+ * under a 20,000-bead column. The rings measured above are 2.7e3 to 2.7e5
+ * times. */
+#define RING_RATIO_MIN 1e3
 #define RING_STEPS_ERK 2.3
 #define RING_STEPS_ADAMS 5.2
 
@@ -173,15 +180,19 @@ int chain_ring_explicit_check(const gw_chain_params *p, const gw_solver_type *ty
         return GW_OK; /* bdf, dirk, imex step over the ring */
     double omega, per_rad;
     sensor_steps(p, sp, t_len, &omega, &per_rad);
-    const double rad = omega * t_len;
-    if (!(rad > RING_RAD_MAX))
+    /* the beads' contacts, bead 1's on a rigid sensor (on the body itself it
+     * is as short as the body is light) */
+    gw_chain_params rigid = *p;
+    rigid.sensor.mass = rigid.sensor.stiffness = rigid.sensor.damping = 0;
+    const double rad = omega * t_len, ratio = omega * chain_contact_tau_min(&rigid, 2 * p->v_imp) / M_PI;
+    if (!(rad > RING_RAD_MAX && ratio > RING_RATIO_MIN))
         return GW_OK;
     return gw_err_set(err, GW_EINVAL, "sensor-stiffness: a sensor body ringing at %.3g rad/s (sqrt((k_s + the "
-                      "contact's stiffness)/M)) turns %.3g radians over %s (about %.3g s), above 5e+05: %s %s "
-                      "(explicit) holds its step to the ring at any tolerance, about %.3g steps, and leaves their "
-                      "errors undamped in it: use cvode with its default method bdf or arkode dirk (implicit: they "
-                      "step over the ring)",
-                      omega, rad, over, t_len, gw_solver_type_name(type), used,
+                      "contact's stiffness)/M)), %.3g times the beads' shortest contact's pi/tau, turns %.3g radians over "
+                      "%s (about %.3g s), above 5e+05: %s %s (explicit) holds its step to it at any tolerance, "
+                      "about %.3g steps, and leaves their errors undamped in it: use cvode bdf or arkode dirk "
+                      "(implicit: they step over the ring)",
+                      omega, ratio, rad, over, t_len, gw_solver_type_name(type), used,
                       (adams ? RING_STEPS_ADAMS : RING_STEPS_ERK) * rad);
 }
 

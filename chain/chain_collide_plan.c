@@ -137,6 +137,65 @@ int chain_sensor_steps_check(const gw_chain_params *p, const gw_solver_type *typ
     return GW_OK;
 }
 
+/* The explicit methods (cvode adams, arkode erk) on a sensor body that rings
+ * far faster than the collision: their step is held to the ring by their
+ * stability, whatever the tolerance (measured at n = 3, 1e-7 kg on 1e13 N/m:
+ * erk 2.11 million steps at 1e-12 and 2.08 at 1e-8, 2.3 a radian; adams 4.8
+ * and 4.6 million, 5.2), and the errors of those steps stay in the undamped
+ * ring: erk's F_max error grows with the radians. The implicit methods step
+ * over a ring that the collision barely excites (its amplitude falls as
+ * omega^-1.5). Measured against RK4 at 1e-11 and 5e-12 s (converged within
+ * 3e-8 N), F_max's error at 1e-12, erk / adams / cvode bdf, with the radians
+ * over the collision's 9.2e-5 s (the plan counts them over its expected
+ * 1.1e-4 s, 1.2 times more):
+ *   1e10 N/m (2.9e4 radians)                     +6.5e-8 / -2.4e-7 / -1.2e-6 N
+ *   1e11 (9.2e4)                                 +4.7e-7 / -1.0e-6 / -8.4e-6
+ *   1e12 (2.9e5)                                 +3.8e-6 / -9.7e-6 / +1.2e-5
+ *   1e13 (9.2e5)                                 +2.4e-5 / -1.8e-6 / -2.1e-6 (the ring's own)
+ *   1e14 (2.9e6, the converged ring 3.8e-7 N)    +7.2e-5 / +3.9e-6 / within 1e-8 of dirk
+ * with 8.2 and 9.5 million steps (33 and 44 s) at 1e14 where arkode dirk
+ * takes 10,393 (0.6 s); at 1e-8, 1e13, erk's F_max was 0.235 N high (dirk
+ * 1.5e-6 N low). Up to 1e12 N/m (3.5e5 radians as the plan counts them)
+ * the explicit methods are as close as the implicit ones; beyond 5e5 they
+ * are refused (1e13 N/m: 1.1e6), where the ring is more than 1e3 times the
+ * beads' shortest contact's pi/tau (8.4e4 at 1e13 N/m). */
+#define RING_RAD_MAX 5e5
+/* A ring within 1e3 times the beads' shortest contact's pi/tau is the
+ * column's own kind of motion, which the explicit methods resolve with its
+ * contacts: a 1e-3 kg body on 1e9 N/m (about 9 times) turns 5.1e5 radians
+ * under a 20,000-bead column. The rings measured above are 2.7e3 to 2.7e5
+ * times. */
+#define RING_RATIO_MIN 1e3
+#define RING_STEPS_ERK 2.3
+#define RING_STEPS_ADAMS 5.2
+
+int chain_ring_explicit_check(const gw_chain_params *p, const gw_solver_type *type, const gw_solver_params *sp,
+                              double t_len, const char *over, gw_err *err)
+{
+    if (type == gw_solver_rk4)
+        return GW_OK; /* its step is chain_steps_check's */
+    const char *used = gw_solver_method_used(type, sp ? sp->method : GW_METHOD_DEFAULT);
+    const int adams = strcmp(used, "adams") == 0, erk = strcmp(used, "erk") == 0;
+    if (!adams && !erk)
+        return GW_OK; /* bdf, dirk, imex step over the ring */
+    double omega, per_rad;
+    sensor_steps(p, sp, t_len, &omega, &per_rad);
+    /* the beads' contacts, bead 1's on a rigid sensor (on the body itself it
+     * is as short as the body is light) */
+    gw_chain_params rigid = *p;
+    rigid.sensor.mass = rigid.sensor.stiffness = rigid.sensor.damping = 0;
+    const double rad = omega * t_len, ratio = omega * chain_contact_tau_min(&rigid, 2 * p->v_imp) / M_PI;
+    if (!(rad > RING_RAD_MAX && ratio > RING_RATIO_MIN))
+        return GW_OK;
+    return gw_err_set(err, GW_EINVAL, "sensor-stiffness: a sensor body ringing at %.3g rad/s (sqrt((k_s + the "
+                      "contact's stiffness)/M)), %.3g times the beads' shortest contact's pi/tau, turns %.3g radians over "
+                      "%s (about %.3g s), above 5e+05: %s %s (explicit) holds its step to it at any tolerance, "
+                      "about %.3g steps, and leaves their errors undamped in it: use cvode bdf or arkode dirk "
+                      "(implicit: they step over the ring)",
+                      omega, ratio, rad, over, t_len, gw_solver_type_name(type), used,
+                      (adams ? RING_STEPS_ADAMS : RING_STEPS_ERK) * rad);
+}
+
 double chain_rk4_default_dt(const gw_chain_params *p, double steps_per_tc)
 {
     double dt = gw_chain_step_scale(p) / (steps_per_tc > 0 ? steps_per_tc : 400.0);
@@ -560,6 +619,9 @@ static int plan_make(const gw_chain_params *p0, const gw_chain_run_opts *o, coll
     /* cvode and arkode follow a sensor body's oscillation too (8 s for 0.1 ms at
      * 1e-7 kg on 1e14 N/m, 5.8e7 steps) */
     if ((rc = chain_sensor_steps_check(p, pl->type, &pl->sp, pl->t_expect, "the collision", err)) != GW_OK)
+        return rc;
+    /* and the explicit methods its ring, where it is far faster than the collision */
+    if ((rc = chain_ring_explicit_check(p, pl->type, &pl->sp, pl->t_expect, "the collision", err)) != GW_OK)
         return rc;
     /* and the explicit methods a drag's decay (chain_drag_steps_check) */
     if ((rc = chain_drag_steps_check(p, pl->type, &pl->sp, &o->sp, o->steps_per_tc, pl->t_expect, pl->t_max,

@@ -629,6 +629,7 @@ int gw_chain_drop_run_progress(const gw_chain_drop_params *p, const gw_chain_run
             GW_OK ||
         (rc = chain_steps_check(type, &sp, &o->sp, p->t_max, "t-max", err)) != GW_OK ||
         (rc = chain_sensor_steps_check(&q, type, &sp, p->t_max, "t-max", err)) != GW_OK ||
+        (rc = chain_ring_explicit_check(&q, type, &sp, p->t_max, "t-max", err)) != GW_OK ||
         (rc = chain_collide_drop_check(c, &o1, err)) != GW_OK)
         goto done;
     st.type = type;

@@ -160,7 +160,34 @@ static void general_rhs(const gw_chain *c, const double *y, double *yd, int part
          * an iteration: arkode dirk crawled at steps of about 1e-10 s (n = 1,
          * --sheet-yield 1e6: about 8 minutes by its progress lines, erk 252
          * steps), cvode bdf took 180,000 steps. On the top s = 1 exactly, so
-         * E' is 0 exactly. */
+         * E' is 0 exactly.
+         * What Newton still fails on (drop --n 30 --sheet brass --sheet-law
+         * material under dirk: 1,781 convergence failures in 6,452 attempts,
+         * a Hertz sheet 569 in 4,481) is the switch-on itself: E's rate goes
+         * from -D' to 0 within dtrack of E, in dtrack/D', about 1e-9 s on
+         * the drop's first reload (D'/dtrack about 8e8 /s by how E settled
+         * there), against steps of 1e-7 s; a step that enters the ramp
+         * meets a slope of that size that a Jacobian formed outside it
+         * lacks, and is cut until it resolves the switch. 1,250 of the
+         * failures come after steps that end on the ramp or within 10 dtrack
+         * above it. Measured and not taken:
+         *  - s = x^2 or x (a simple root where E settles, dtrack, instead of
+         *    x^2 (3 - 2x)'s double root, which E approaches as 1/t): dirk
+         *    1,001 and 901 failures, but cvode bdf 61,069 and 41,052 steps
+         *    (19,669) on the kink left at that root (x^2: the five
+         *    solvers' F_max 7.1e-8 N apart);
+         *  - a smooth ramp whose root is inside it (s = 1 - v^2 (14 v - 8 v^2
+         *    - 5), v = (E - dtrack/2)/dtrack): dirk 986, bdf 20,391, but
+         *    arkode erk 30,725 steps (8,272): settling at a rate of
+         *    1.5 D'/dtrack holds an explicit method to it;
+         *  - an event at the ramp's entry: 987 with s = x^2 (the failing
+         *    steps are those that cross it, before any root is seen);
+         *  - dtrack 1e-5 to 1e-3 of the overlap scale: 1,185 to 1,055, F_max
+         *    moved by -1.1e-5 to +8.4e-4 N; 1e-7: bdf 86,740 steps;
+         *  - five Newton iterations instead of ARKode's three (a setting of
+         *    every implicit run): 814 failures, 4,955 steps.
+         * F_max's own bias from dtrack is about -1.2e-6 N at 1e-6 (erk:
+         * 55.7903931 at 1e-7 and 1e-8, 55.7903919 at 1e-6). */
         double s = 0.0;
         if (dd > 0) {
             double x = (2.0 * c->dtrack - y[c->i_dmax]) / c->dtrack;

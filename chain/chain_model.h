@@ -126,6 +126,17 @@ const char *chain_cap_advice(const gw_solver_type *type, int method);
 int chain_sensor_steps_check(const gw_chain_params *p, const gw_solver_type *type, const gw_solver_params *sp,
                              double t_len, const char *over, gw_err *err);
 
+/* cvode adams and arkode erk on a sensor body that rings far faster than the
+ * collision: held to its ring by their stability (about 2.3 steps a radian
+ * for erk, 5.2 for adams, whatever the tolerance), whose errors they leave
+ * undamped in it. Beyond 5e5 radians of sqrt((k_s + the contact's
+ * stiffness)/M) over t_len, for a ring more than 1e3 times the beads'
+ * shortest contact's pi/tau, GW_EINVAL naming sensor-stiffness and the implicit
+ * methods (chain_collide_plan.c gives the measurements); GW_OK for the
+ * implicit methods and rk4. */
+int chain_ring_explicit_check(const gw_chain_params *p, const gw_solver_type *type, const gw_solver_params *sp,
+                              double t_len, const char *over, gw_err *err);
+
 /* A collision's wall_pending (gw_chain_result) when the run stopped because the
  * column fell back onto the wall before its collision ended (chain_collide.c,
  * held_by_gravity); its warning (chain_warnings.c) names gravity and vimp. */

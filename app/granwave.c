@@ -230,7 +230,8 @@ static int version(int argc, char **argv)
  * a file opened as 1 would take what is printed. Each closed one is held
  * here by /dev/null opened read-only: a write to it still fails with EBADF,
  * so a lost stdout ends the run with exit 1 as before, and reading gives
- * end of file. Without /dev/null the program refuses to run (exit 2). */
+ * end of file. Without /dev/null the program refuses to run (exit 2, one
+ * line where stderr is open). */
 static int hold_std_fds(void)
 {
     for (int fd = 0; fd <= 2; fd++) {
@@ -238,8 +239,12 @@ static int hold_std_fds(void)
             continue;
         int nd = open("/dev/null", O_RDONLY);
         if (nd != fd) {
+            const int e = nd < 0 ? errno : EBADF;
             if (nd >= 0)
                 close(nd);
+            /* said where stderr is open (it may be the closed one) */
+            fprintf(stderr, "granwave: descriptor %d (standard %s) is closed and /dev/null cannot hold it: %s\n", fd,
+                    fd == 0 ? "input" : fd == 1 ? "output" : "error", strerror(e));
             return -1;
         }
     }
@@ -248,7 +253,7 @@ static int hold_std_fds(void)
 
 int main(int argc, char **argv)
 {
-    if (hold_std_fds() != 0) /* stderr may be the closed one: the status alone says it */
+    if (hold_std_fds() != 0)
         return 2;
     /* Past a file-size limit (ulimit -f), a write fails with EFBIG instead of
      * SIGXFSZ killing the program with its temporaries left: the output set

@@ -28,6 +28,10 @@
 #    E = 0.5, where the help promised "one bead on the wall rebounds with E".
 #    The help now says so; the constant is the bare sensor's (chain's
 #    calibration on the default wall at the study's speed).
+#  5 layer-impact --x 1.2999999 (a block that does not fit in the box) was
+#    refused "at x = 1.3 m", a value the user did not give (the thirty-sixth
+#    pass's rounding onto a bound, in a message it did not reach); now shown
+#    as given, in the program and a sweep's check.
 # Checks that fail on the code before: see docs/tests.md.
 # shellcheck source=refusal_lib.sh
 . "$2/tests/refusal_lib.sh"
@@ -119,5 +123,13 @@ if runs_json "softwall --sheets --sheet-law hertz --damping kk --restitution 0.5
     /usr/bin/python3 -c "import sys; sys.exit(0 if abs($g1 - $g2) <= 1e-9 * $g2 else 1)" &&
         ok "softwall --sheets: gamma $g1 is chain's on the bare sensor ($g2)" || ko "softwall --sheets gamma $g1, chain $g2"
 fi
+
+# --- 5 x shown as given where the block does not fit ---
+refused "layer-impact --x 1.2999999: the value shown as given" \
+    "^granwave layer-impact --x: block of radius 0\.325 m at x = 1\.2999999 m from the centre does not fit" \
+    layer-impact --sample s.txt --x 1.2999999 --out o
+printf '[sweep]\nmodel = layer\nout = o\n[grid]\nx = 0, 1.2999999\n[params]\nsample = s.txt\n' >x.ini
+refused "sweep --check, x = 1.2999999: shown as given" "^granwave sweep: x.ini: case 1: x: .* at x = 1\.2999999 m" \
+    sweep x.ini --check
 
 test_summary test_hostile_thirtyseventh

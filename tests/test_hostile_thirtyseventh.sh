@@ -30,8 +30,9 @@
 #    calibration on the default wall at the study's speed).
 #  5 layer-impact --x 1.2999999 (a block that does not fit in the box) was
 #    refused "at x = 1.3 m", a value the user did not give (the thirty-sixth
-#    pass's rounding onto a bound, in a message it did not reach); now shown
-#    as given, in the program and a sweep's check.
+#    pass's rounding onto a bound, in a message it did not reach), and
+#    --rb-rm 4.0000001 on a box 8 R_m wide "a block of radius 4 R_m"; now
+#    shown as given, in the program and a sweep's check.
 # Checks that fail on the code before: see docs/tests.md.
 # shellcheck source=refusal_lib.sh
 . "$2/tests/refusal_lib.sh"
@@ -128,6 +129,8 @@ fi
 refused "layer-impact --x 1.2999999: the value shown as given" \
     "^granwave layer-impact --x: block of radius 0\.325 m at x = 1\.2999999 m from the centre does not fit" \
     layer-impact --sample s.txt --x 1.2999999 --out o
+refused "layer-impact --rb-rm 4.0000001 (wider than the 8 R_m box): shown as given" \
+    "^granwave layer-impact --rb-rm: a block of radius 4\.0000001 R_m" layer-impact --sample s.txt --rb-rm 4.0000001 --out o
 printf '[sweep]\nmodel = layer\nout = o\n[grid]\nx = 0, 1.2999999\n[params]\nsample = s.txt\n' >x.ini
 refused "sweep --check, x = 1.2999999: shown as given" "^granwave sweep: x.ini: case 1: x: .* at x = 1\.2999999 m" \
     sweep x.ini --check

@@ -5,10 +5,12 @@
  * (one line on stderr naming the input).
  */
 #include <errno.h>
+#include <fcntl.h>
 #include <signal.h>
 #include <sys/resource.h>
 #include <stdio.h>
 #include <string.h>
+#include <unistd.h>
 
 #include <cjson/cJSON.h>
 #include <fftw3.h>
@@ -221,8 +223,38 @@ static int version(int argc, char **argv)
     return stdout_checked(NULL, 0);
 }
 
+/* A standard descriptor closed by the caller (granwave sweep C >&- 2>&-) was
+ * the lowest free number, so the first file the run opened took it: the
+ * sweep's journal became descriptor 2 and took its progress lines ("sweep:
+ * 2/4 cases, ..."), and the next run refused the journal as edited by hand;
+ * a file opened as 1 would take what is printed. Each closed one is held
+ * here by /dev/null opened read-only: a write to it still fails with EBADF,
+ * so a lost stdout ends the run with exit 1 as before, and reading gives
+ * end of file. Without /dev/null the program refuses to run (exit 2, one
+ * line where stderr is open). */
+static int hold_std_fds(void)
+{
+    for (int fd = 0; fd <= 2; fd++) {
+        if (fcntl(fd, F_GETFD) != -1 || errno != EBADF)
+            continue;
+        int nd = open("/dev/null", O_RDONLY);
+        if (nd != fd) {
+            const int e = nd < 0 ? errno : EBADF;
+            if (nd >= 0)
+                close(nd);
+            /* said where stderr is open (it may be the closed one) */
+            fprintf(stderr, "granwave: descriptor %d (standard %s) is closed and /dev/null cannot hold it: %s\n", fd,
+                    fd == 0 ? "input" : fd == 1 ? "output" : "error", strerror(e));
+            return -1;
+        }
+    }
+    return 0;
+}
+
 int main(int argc, char **argv)
 {
+    if (hold_std_fds() != 0)
+        return 2;
     /* Past a file-size limit (ulimit -f), a write fails with EFBIG instead of
      * SIGXFSZ killing the program with its temporaries left: the output set
      * then removes them and says which file (Python ignores SIGXFSZ already) */

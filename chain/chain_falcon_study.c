@@ -499,6 +499,8 @@ static int falcon_run(const gw_chain_falcon_setup *s, gw_progress_fn progress, v
     gw_chain_result *res = calloc((size_t)out->ncase, sizeof *res);
     rc = res ? gw_chain_setup_resolve(&col, &r, err) : gw_err_set(err, GW_ENOMEM, "falcon: out of memory");
     if (rc == GW_OK)
+        rc = chain_damping_study_check(&r.params, s->n[0], NULL, err);
+    if (rc == GW_OK)
         rc = pick_solver(s, &r, vmax, &out->accuracy, err);
     double t0 = gw_clock_ms();
     if (rc == GW_OK) { /* the whole study's work first: the sweep's, then the traces' */

@@ -398,15 +398,34 @@ static int check_wall(const gw_chain_setup *s, gw_err *err)
  * ran as if undamped, with exit 0: chain --damping kk --gamma 1e5 --sheet brass
  * --sheet-law layer gave eps_eff 1.000, and --restitution 0.5 under sheet-law
  * material gave 0.615, the sheet's own. */
+static int damping_idle(const gw_chain_params *p)
+{
+    return p && p->damping != GW_DAMP_NONE && (p->wall.layer || p->wall.yield_pressure > 0 || p->wall.loss > 0);
+}
+
+#define DAMPING_WHY "(kk and hc act on bead contacts and on a Hertz wall; this wall dissipates by its own law, which " \
+                    "sheet-loss and sheet-yield set)"
+
 int chain_damping_check(const gw_chain_params *p, gw_err *err)
 {
-    if (!p || p->n != 1 || p->damping == GW_DAMP_NONE ||
-        !(p->wall.layer || p->wall.yield_pressure > 0 || p->wall.loss > 0))
+    if (!p || p->n != 1 || !damping_idle(p))
         return GW_OK;
     return gw_err_set(err, GW_EINVAL, "damping: has no effect on one bead against a sheet under a layer, plastic "
-                      "or viscoelastic law (kk and hc act on bead contacts and on a Hertz wall; this wall dissipates "
-                      "by its own law, which sheet-loss and sheet-yield set): give more beads, sheet-law fitted or "
-                      "hertz, or no damping");
+                      "or viscoelastic law " DAMPING_WHY ": give more beads, sheet-law fitted or hertz, or no damping");
+}
+
+/* A study's sizes from n_lo: its one-bead column ran undamped by its wall's law
+ * among damped columns, exit 0 (falcon --n 1:5 --damping kk --sheet brass
+ * --sheet-law layer); the single run's rule, chain_damping_check, applied to
+ * the study's smallest column. */
+int chain_damping_study_check(const gw_chain_params *p, long n_lo, const char *sheet, gw_err *err)
+{
+    if (!p || n_lo != 1 || !damping_idle(p))
+        return GW_OK;
+    return gw_err_set(err, GW_EINVAL, "damping: has no effect on the study's one-bead column (n from 1) against "
+                      "%s%s under a layer, plastic or viscoelastic law " DAMPING_WHY ": it would run undamped among "
+                      "damped columns: give sizes from 2, sheet-law fitted or hertz, or no damping",
+                      sheet ? "sheet " : "a sheet", sheet ? sheet : "");
 }
 
 static int apply_wall(const gw_chain_setup *s, gw_chain_resolved *r, gw_err *err)

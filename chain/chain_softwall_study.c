@@ -510,6 +510,8 @@ static int sw_run(const gw_chain_softwall_setup *s, gw_progress_fn progress, voi
         wall[w] = rs.params;
         if (s->sheets)
             rc = gw_sheet_apply(gw_sheet_get(w), rs.law, -1, -1, bm, wm, &wall[w], &lay[w], err);
+        if (rc == GW_OK) /* each wall's one-bead column, as the single run's (chain_damping_check) */
+            rc = chain_damping_study_check(&wall[w], a, s->sheets ? gw_sheet_get(w)->name : NULL, err);
     }
     if (rc == GW_OK) {
         gw_chain_params rigid = rigid_params(&rs);

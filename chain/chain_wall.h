@@ -35,5 +35,9 @@ int chain_wall_arms(const gw_chain_wall *wall, double *tau_min, double *tau_max)
  * the damping leaves to its own law (chain_setup.c). A single run's check: a
  * study over a range of N has bead contacts from N = 2. */
 int chain_damping_check(const gw_chain_params *p, gw_err *err);
+/* The same rule over a study's sizes from n_lo (falcon, wavespeed, softwall):
+ * GW_EINVAL naming damping when n_lo is 1 and p's wall (any n) is such a wall;
+ * sheet (may be NULL) names the wall in the message. */
+int chain_damping_study_check(const gw_chain_params *p, long n_lo, const char *sheet, gw_err *err);
 
 #endif

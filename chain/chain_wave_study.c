@@ -410,6 +410,8 @@ static int ws_run(const gw_chain_wavespeed_setup *s, gw_progress_fn progress, vo
     col.vimp = out->v_imp[0];
     gw_chain_resolved r;
     rc = gw_chain_setup_resolve(&col, &r, err);
+    if (rc == GW_OK)
+        rc = chain_damping_study_check(&r.params, a, NULL, err);
     if (rc == GW_OK) { /* as the JSON's settings.model */
         out->gamma = r.params.gamma;
         out->alpha = r.params.alpha;

@@ -195,12 +195,16 @@ int gw_layer_impact_check(const gw_layer_sample *smp, const gw_layer_impact_para
                           "of files with --out, above the 5 GB limit (raise dt-out, lower t-max or rings)", nsamp,
                           p->nrings, values * 8 / 1e9, values * 25 / 1e9);
     const double rb = p->rb_rm * smp->rm, xc = 0.5 * smp->width + p->x;
-    if (2 * rb > smp->width)
-        return gw_err_set(err, GW_EINVAL, "rb-rm: a block of radius %g R_m (%g m) is wider than the box "
-                          "(%g m)", p->rb_rm, rb, smp->width);
-    if (xc - rb < 0 || xc + rb > smp->width)
-        return gw_err_set(err, GW_EINVAL, "x: block of radius %g m at x = %g m from the centre "
-                          "does not fit in the box of width %g m", rb, p->x, smp->width);
+    if (2 * rb > smp->width) { /* rb-rm as given: 4.0000001 was shown as 4, half the box */
+        char rs[32];
+        return gw_err_set(err, GW_EINVAL, "rb-rm: a block of radius %s R_m (%g m) is wider than the box "
+                          "(%g m)", gw_num_text(rs, sizeof rs, p->rb_rm), rb, smp->width);
+    }
+    if (xc - rb < 0 || xc + rb > smp->width) { /* x as given: 1.2999999 was shown as 1.3 */
+        char xs[32];
+        return gw_err_set(err, GW_EINVAL, "x: block of radius %g m at x = %s m from the centre "
+                          "does not fit in the box of width %g m", rb, gw_num_text(xs, sizeof xs, p->x), smp->width);
+    }
     /* The block must have a particle under it: its target, on which it is
      * lowered (gw_layer_impact). This was found only by the run: a sweep's
      * check passed a grid whose abscissa missed a sparse layer, ran and

@@ -220,6 +220,7 @@ typedef struct check_memo {
     struct pile {
         char *path;
         unsigned long long file_hash, pile_hash;
+        int zero_springs; /* hashed without its springs (a case under zero-springs) */
     } *piles;
     long npiles, cap;
     /* the block positions the cases put it at (x_note): an open-addressing
@@ -312,22 +313,32 @@ static int x_note(check_memo *c, unsigned long long sample, const placement *pl,
  * distinct); a file listing the same particles in another order, or with its
  * clumps numbered otherwise, is the same pile too (the run differs only by
  * rounding). Compared by gw_layer_sample_pile_hash; a path already noted with
- * the same bytes is not hashed again. GW_OK, GW_EINVAL naming both files,
- * GW_ENOMEM. */
+ * the same bytes is not hashed again. A case under zero-springs reads no
+ * springs, so its pile is hashed without them: a sample run so and its copy
+ * without the springs section (or run so too) are one pile; before, such a
+ * grid ran every impact twice with exit 0 (2 samples, 4 cases, the rows
+ * alike) and layer-stats refused its table. GW_OK, GW_EINVAL naming both
+ * files, GW_ENOMEM. */
 static int pile_note(check_memo *c, const char *path, unsigned long long file_hash, const gw_layer_sample *s,
-                     gw_err *err)
+                     int zero_springs, gw_err *err)
 {
+    zero_springs = zero_springs && s->n_springs > 0; /* without springs: one pile either way */
     for (long i = 0; i < c->npiles; i++)
-        if (c->piles[i].file_hash == file_hash && strcmp(c->piles[i].path, path) == 0)
+        if (c->piles[i].file_hash == file_hash && c->piles[i].zero_springs == zero_springs &&
+            strcmp(c->piles[i].path, path) == 0)
             return GW_OK;
     unsigned long long h;
-    if (layer_sample_pile_hash(s, &h) != GW_OK)
+    gw_layer_sample bare = *s; /* shallow: the pile the run reads */
+    if (zero_springs)
+        bare.n_springs = 0;
+    if (layer_sample_pile_hash(&bare, &h) != GW_OK)
         return gw_err_set(err, GW_ENOMEM, "out of memory");
     for (long i = 0; i < c->npiles; i++)
         if (c->piles[i].pile_hash == h && strcmp(c->piles[i].path, path) != 0)
             return gw_err_set(err, GW_EINVAL, "sample: '%s' and '%s' hold the same pile (the same particles, in "
-                              "whatever order, box and settling record): each case would run twice and its point "
-                              "count twice in layer-stats; list one of them", c->piles[i].path, path);
+                              "whatever order, box and settling record%s): each case would run twice and its point "
+                              "count twice in layer-stats; list one of them", c->piles[i].path, path,
+                              c->piles[i].zero_springs || zero_springs ? "; springs left out under zero-springs" : "");
     if (c->npiles == c->cap) {
         const long cap = c->cap ? 2 * c->cap : 8;
         struct pile *p = realloc(c->piles, (size_t)cap * sizeof *p);
@@ -338,7 +349,7 @@ static int pile_note(check_memo *c, const char *path, unsigned long long file_ha
     char *copy = strdup(path);
     if (!copy)
         return gw_err_set(err, GW_ENOMEM, "out of memory");
-    c->piles[c->npiles++] = (struct pile){copy, file_hash, h};
+    c->piles[c->npiles++] = (struct pile){copy, file_hash, h, zero_springs};
     return GW_OK;
 }
 
@@ -423,7 +434,7 @@ static int setup_check(void **memo, const gw_layer_impact_setup *s, gw_err *err)
         if (m->path && m->hash == h && strcmp(m->path, s->sample) == 0) {
             m->used = ++c->tick;
             int rc = layer_impact_setup_check_sample(s, &m->s, m->settle, err);
-            return rc == GW_OK ? pile_note(c, s->sample, h, &m->s, err) : rc;
+            return rc == GW_OK ? pile_note(c, s->sample, h, &m->s, s->zero_springs, err) : rc;
         }
         if (m->used < old->used)
             old = m;
@@ -432,7 +443,7 @@ static int setup_check(void **memo, const gw_layer_impact_setup *s, gw_err *err)
     layer_settling_memo *settle = calloc(1, sizeof *settle); /* NULL: found again by the next case */
     int rc = layer_impact_plan_make_memo(s, &p, settle, err);
     if (rc == GW_OK)
-        rc = pile_note(c, s->sample, h, &p.sample, err);
+        rc = pile_note(c, s->sample, h, &p.sample, s->zero_springs, err);
     /* kept when read, whatever this case's verdict (x outside the box is the case's) */
     char *path = p.sample.x && p.sample.n <= MEMO_NMAX ? strdup(s->sample) : NULL;
     if (path) {

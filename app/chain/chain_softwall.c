@@ -78,6 +78,15 @@ int gw_cmd_softwall(int argc, char **argv)
     opts[k++] = (gw_opt){.name = "sheets", .kind = GW_OPT_FLAG, .dest = &use_sheets, .help = "the paper's sheets (Table 2) with fitted K_eff"};
     chain_cli_sweep_opts(opts, &k, &jobs, &quiet);
     opts[k] = (gw_opt){0};
+    /* with --sheets there are nine walls and one constant: the library
+     * calibrates it on the bare sensor (the Hertz wall of --wall-material),
+     * as for a sheet under sheet-law hertz; kk then gives each sheet its own
+     * rebound (0.48 on sheet none's fitted wall to 0.94 for E = 0.5), which
+     * "rebounds with E on the wall" did not say */
+    chain_cli_opt_help(opts, "restitution", "calibrate gamma/alpha so one bead on the wall rebounds with E (with --sheets, "
+                                            "or a sheet under sheet-law hertz: on the bare sensor, the Hertz wall of "
+                                            "wall-material, one constant for every sheet; hc then rebounds at E on each "
+                                            "sheet, kk not), in (0, 1)");
     int done = chain_cli_parse("softwall", "granwave softwall [--kwall K | --sheets] [options]", sw_summary, opts, argc, argv);
     if (done >= 0)
         return done;

@@ -205,7 +205,12 @@ void gw_afile_abort(gw_afile *f);
  * write failed, or the run was refused) removes the staged temporaries: the
  * directory is left as the earlier run left it. names: every file the command
  * may write into dir, NULL-terminated, each a file name (not empty, ".", ".."
- * nor with a '/': GW_EINVAL). Two runs placing their sets in one
+ * nor with a '/': GW_EINVAL); dir not empty (GW_EINVAL: the set's paths
+ * would be "/NAME"). Begun again while it is the set open on this thread,
+ * s is refused and left as it was (its commit still places its files).
+ * gw_outset_commit and gw_outset_abort act only on the set open on this
+ * thread: any other struct (never begun, closed, zeroed, garbage) is GW_EIO
+ * for commit and nothing for abort, and is not read. Two runs placing their sets in one
  * directory at once place them one after the other (flock on the directory):
  * it holds the last one's files, never some of each. A set may stay open
  * through a long run (layer-impact's snapshots): SIGINT, SIGTERM and SIGHUP

@@ -609,10 +609,9 @@ static int h5_signature_at(FILE *fp, const unsigned char pre[8], int *sb)
 
 int gw_layer_sample_read(const char *path, gw_layer_sample *s, gw_err *err)
 {
-    if (s) /* zeroed first: a result is freed after every failure, this one too */
-        memset(s, 0, sizeof *s);
     if (!s || !path)
         return gw_err_set(err, GW_EINVAL, "gw_layer_sample_read: %s is NULL", !s ? "s" : "path");
+    memset(s, 0, sizeof *s);
     s->mass_law = GW_LAYER_MASS_DISC;
     text_in t = {.path = path};
     /* a regular file only: a FIFO or a device is refused before any read */

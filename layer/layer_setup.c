@@ -508,10 +508,9 @@ int gw_layer_impact_run(const gw_layer_impact_setup *s, gw_layer_impact_outcome 
 int gw_layer_impact_run_progress(const gw_layer_impact_setup *s, gw_progress_fn progress, void *pctx,
                                  gw_layer_impact_outcome *out, gw_err *err)
 {
-    if (out) /* zeroed first: a result is freed after every failure, this one too */
-        memset(out, 0, sizeof *out);
     if (!s || !out)
         return gw_err_set(err, GW_EINVAL, "gw_layer_impact_run: %s is NULL", !s ? "setup" : "out");
+    memset(out, 0, sizeof *out);
     out->block_index = -1;
     gw_layer_impact_plan plan;
     layer_settling_found found = {.q = NAN}; /* the plan's verdict: the run does not find it again */

@@ -638,59 +638,6 @@ static int outset_empty_and_garbage(void)
     return 0;
 }
 
-/* The studies' runs and readers refused a NULL setup or path before zeroing
- * their result, which the caller frees after every failure (library.md):
- * freeing an uninitialised result then crashed. Each result is now zeroed
- * first: checked byte for byte (and only then freed). */
-static int all_zero(const void *p, size_t n)
-{
-    const unsigned char *b = p;
-    for (size_t i = 0; i < n; i++)
-        if (b[i])
-            return 0;
-    return 1;
-}
-
-#define ZEROED(type, call, free_fn)                                                                           \
-    do {                                                                                                      \
-        type o_;                                                                                              \
-        memset(&o_, 0xaa, sizeof o_);                                                                         \
-        const int rc_ = call;                                                                                 \
-        const int z_ = all_zero(&o_, sizeof o_);                                                              \
-        if (z_)                                                                                               \
-            free_fn(&o_);                                                                                     \
-        if (rc_ != GW_EINVAL || !z_) {                                                                        \
-            printf("%s: status %d, result %s\n", #call, rc_, z_ ? "zeroed" : "not zeroed");                 \
-            bad++;                                                                                            \
-        }                                                                                                     \
-    } while (0)
-
-static int results_zeroed_on_null(void)
-{
-    int bad = 0;
-    gw_err e = {{0}};
-    const gw_sweep_model *mm = NULL;
-    ZEROED(gw_chain_collision, gw_chain_collision_run(NULL, &o_, &e), gw_chain_collision_free);
-    ZEROED(gw_chain_falcon_outcome, gw_chain_falcon_run(NULL, NULL, NULL, &o_, &e), gw_chain_falcon_outcome_free);
-    ZEROED(gw_chain_falcon_outcome, gw_chain_falcon_run_watch(NULL, NULL, NULL, NULL, NULL, &o_, &e),
-           gw_chain_falcon_outcome_free);
-    ZEROED(gw_chain_wavespeed_outcome, gw_chain_wavespeed_run_watch(NULL, NULL, NULL, NULL, NULL, &o_, &e),
-           gw_chain_wavespeed_outcome_free);
-    ZEROED(gw_chain_softwall_outcome, gw_chain_softwall_run_watch(NULL, NULL, NULL, NULL, NULL, &o_, &e),
-           gw_chain_softwall_outcome_free);
-    ZEROED(gw_chain_dispersion_outcome, gw_chain_dispersion_run(NULL, &o_, &e), gw_chain_dispersion_outcome_free);
-    ZEROED(gw_chain_drop_outcome, gw_chain_drop_study_run(NULL, NULL, NULL, &o_, &e), gw_chain_drop_outcome_free);
-    ZEROED(gw_layer_make_outcome, gw_layer_make_run(NULL, &o_, &e), gw_layer_make_outcome_free);
-    ZEROED(gw_layer_impact_outcome, gw_layer_impact_run(NULL, &o_, &e), gw_layer_impact_outcome_free);
-    ZEROED(gw_stats_outcome, gw_stats_run(NULL, &o_, &e), gw_stats_outcome_free);
-    ZEROED(gw_layer_sample, gw_layer_sample_read(NULL, &o_, &e), gw_layer_sample_free);
-    ZEROED(gw_stats_table, gw_stats_table_read(NULL, &o_, &e), gw_stats_table_free);
-    ZEROED(gw_sweep_config, gw_sweep_config_read(NULL, NULL, 0, &o_, &mm, &e), gw_sweep_config_free);
-    ZEROED(gw_sweep_config, gw_sweep_config_read_string(NULL, "x", NULL, 0, &o_, &mm, &e), gw_sweep_config_free);
-    EXPECT(bad == 0);
-    return 0;
-}
-
 /* A sweep model's case given a negative count ran the defaults (GW_OK, a
  * row for no case asked); a NULL name crashed the layer model (SIGSEGV) and
  * was quoted "(null)" by the chain's; a key given twice ran its last value.
@@ -833,7 +780,6 @@ int main(void)
         {"gw_check_range/parse_double_list_in: NaN bounds, lo > hi", check_range_bounds},
         {"gw_outset_begin: the open set begun again", outset_begin_again},
         {"gw_outset_begin/commit/abort: an empty dir, zeroed and 0xff sets", outset_empty_and_garbage},
-        {"study runs and readers: the result zeroed before a NULL refusal", results_zeroed_on_null},
         {"sweep models: negative nkeys, NULL names, a key twice", sweep_pairs},
         {"gw_stats_write_files: a NULL analysis", stats_write_null},
         {"layer sweep check: x = 0, 1e-300 on a 100001-disc sample", x_check_large_sample},

@@ -563,10 +563,9 @@ int gw_stats_table_parse(const char *text, const char *name, gw_stats_table *t, 
 
 int gw_stats_table_read(const char *path, gw_stats_table *t, gw_err *err)
 {
-    if (t) /* zeroed first: a result is freed after every failure, this one too */
-        memset(t, 0, sizeof *t);
     if (!t || !path)
         return gw_err_set(err, GW_EINVAL, "gw_stats_table_read: %s is NULL", !t ? "t" : "path");
+    memset(t, 0, sizeof *t);
     t->sweep_rows = t->sweep_cases = -1;
     char *buf = NULL;
     size_t len = 0;

@@ -579,11 +579,10 @@ static int lines_fit(const char *text, const char *name, parse_ctx *pc, gw_err *
 int gw_sweep_config_read(const char *path, const gw_sweep_model *const *models, int nmodels,
                          gw_sweep_config *cfg, const gw_sweep_model **model, gw_err *err)
 {
-    if (cfg) /* zeroed first: a result is freed after every failure, this one too */
-        memset(cfg, 0, sizeof *cfg);
     if (!cfg || !model || !path || !models)
         return gw_err_set(err, GW_EINVAL, "gw_sweep_config_read: %s is NULL",
                           !cfg ? "cfg" : !model ? "model" : !path ? "path" : "models");
+    memset(cfg, 0, sizeof *cfg);
     *model = NULL;
     parse_ctx pc = {cfg, models, nmodels, "", 0, 0, NULL, 0, 0, NULL, 0};
     char *text = NULL;
@@ -631,11 +630,10 @@ int gw_sweep_config_read(const char *path, const gw_sweep_model *const *models, 
 int gw_sweep_config_read_string(const char *text, const char *name, const gw_sweep_model *const *models,
                                 int nmodels, gw_sweep_config *cfg, const gw_sweep_model **model, gw_err *err)
 {
-    if (cfg) /* zeroed first: a result is freed after every failure, this one too */
-        memset(cfg, 0, sizeof *cfg);
     if (!cfg || !model || !text || !models)
         return gw_err_set(err, GW_EINVAL, "gw_sweep_config_read_string: %s is NULL",
                           !cfg ? "cfg" : !model ? "model" : !text ? "text" : "models");
+    memset(cfg, 0, sizeof *cfg);
     *model = NULL;
     /* the bound of a config file (gw_sweep_config_read), for a config given as text too */
     size_t len = strlen(text);

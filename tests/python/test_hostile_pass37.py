@@ -39,7 +39,8 @@ def _refused(f, *needles):
 
 # --- a grid range as text is bounded as a range object ---
 
-@pytest.mark.parametrize("text", ["1:9223372036854775807", "-5:10000000000", "0:1000000000"])
+# (not 0:1000000000 here: on the code before, a list of 1e9 ints takes all the memory there is)
+@pytest.mark.parametrize("text", ["1:9223372036854775807", "-5:10000000000"])
 def test_text_range_bounded(text):
     _refused(lambda: granwave.sweep("chain", grid={"n": text}), "'n'", text, "more than 1e9 values")
 

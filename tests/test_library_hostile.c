@@ -695,11 +695,10 @@ static int big_sample_row(const char *path, int n)
     gw_layer_sample s;
     memset(&s, 0, sizeof s);
     s.n = n, s.width = 2 * r * n, s.rm = r, s.volume_ratio = 1, s.porosity = NAN;
-    s.x = malloc((size_t)n * sizeof *s.x), s.y = malloc((size_t)n * sizeof *s.y), s.r = malloc((size_t)n * sizeof *s.r);
-    if (!s.x || !s.y || !s.r) {
-        gw_layer_sample_free(&s);
+    s.x = malloc(3 * (size_t)n * sizeof *s.x); /* one block, as gw_layer_sample_free frees it */
+    if (!s.x)
         return GW_ENOMEM;
-    }
+    s.y = s.x + n, s.r = s.x + 2 * n;
     for (int i = 0; i < n; i++)
         s.x[i] = (2 * i + 1) * r, s.y[i] = r, s.r[i] = r;
     gw_err e = {{0}};

@@ -13,6 +13,7 @@
 #include "chain_watch.h"
 #include "gw_chain_study.h"
 #include "gw_sweep.h"
+#include "gw_sweep_impl.h"
 
 static const char *const columns[] = {"f_max", "tau_max", "tau_n", "period", "eps_eff", "eps_col",
                                       "e_rel_over_e_k", "n_s", "energy_error", "steps", "converged"};
@@ -28,6 +29,8 @@ static int has_key(const char *name)
 static int prepare(gw_chain_setup *s, int nk, const char *const *names, const char *const *values, gw_err *err)
 {
     int rc = gw_chain_setup_init(s);
+    if (rc == GW_OK)
+        rc = gw_sweep_pairs_check("gw_chain_sweep_model", nk, names, values, err);
     for (int i = 0; rc == GW_OK && i < nk; i++)
         rc = has_key(names[i]) ? gw_param_set(gw_chain_setup_params(), s, names[i], values[i], err)
                                : gw_err_set(err, GW_EINVAL, "unknown parameter '%s'", names[i]);

@@ -246,6 +246,13 @@ int gw_parse_long(const char *s, const char *name, long lo, long hi, long *out, 
 
 int gw_check_range(double x, const char *name, double lo, double hi, gw_err *err)
 {
+    if (!name)
+        name = "value";
+    /* a NaN bound compares false both ways: it was taken as no bound, and any
+     * finite x passed (the caller's error, refused naming the bound) */
+    if (isnan(lo) || isnan(hi) || lo > hi)
+        return gw_err_set(err, GW_EINVAL, "gw_check_range: %s: the bounds [%g, %g] are no range (%s)", name, lo, hi,
+                          isnan(lo) ? "lo is NaN" : isnan(hi) ? "hi is NaN" : "lo > hi");
     if (!isfinite(x))
         return gw_err_set(err, GW_EINVAL, "%s: must be finite, got %g", name, x);
     if (x < lo || x > hi)
@@ -275,6 +282,9 @@ int gw_parse_double_list_in(const char *s, const char *name, double lo, double h
         return gw_err_set(err, GW_EINVAL, "gw_parse_double_list: %s is NULL", !out ? "out" : "n");
     *out = NULL;
     *n = 0;
+    if (isnan(lo) || isnan(hi)) /* as gw_check_range: no bound is -INFINITY/INFINITY, never NaN */
+        return gw_err_set(err, GW_EINVAL, "gw_parse_double_list_in: %s: the bound %s is NaN", name ? name : "list",
+                          isnan(lo) ? "lo" : "hi");
     if (!s || !*s)
         return gw_err_set(err, GW_EINVAL, "%s: empty list", name);
     size_t len = strlen(s);

@@ -104,14 +104,18 @@ int gw_parse_double(const char *s, const char *name, double *out, gw_err *err);
 /* Parse a whole string as an integer in [lo, hi]. */
 int gw_parse_long(const char *s, const char *name, long lo, long hi, long *out,
                   gw_err *err);
-/* Check that x is finite and lo <= x <= hi (use -INFINITY/INFINITY for open). */
+/* Check that x is finite and lo <= x <= hi (use -INFINITY/INFINITY for open).
+ * A NaN bound, or lo > hi, is the caller's error: GW_EINVAL naming the bound
+ * ("gw_check_range: NAME: ... (lo is NaN)"), whatever x (a NaN bound was taken
+ * as none). name NULL: "value". */
 int gw_check_range(double x, const char *name, double lo, double hi, gw_err *err);
 /* Check that x is finite and strictly positive. */
 int gw_check_positive(double x, const char *name, gw_err *err);
 /* Parse a comma-separated list of finite doubles into a new array (caller frees).
  * Every item is checked inside the parser (lo <= x <= hi, x > lo when open_lo), so
  * a caller never has to check the items, or name one, after freeing the list. On
- * failure *out is NULL, *n is 0 and the message names the item. */
+ * failure *out is NULL, *n is 0 and the message names the item. A NaN lo or hi
+ * is GW_EINVAL naming it, as in gw_check_range. */
 int gw_parse_double_list_in(const char *s, const char *name, double lo, double hi,
                             int open_lo, double **out, int *n, gw_err *err);
 /* gw_parse_double_list_in with no bounds (any finite number). */
@@ -201,7 +205,12 @@ void gw_afile_abort(gw_afile *f);
  * write failed, or the run was refused) removes the staged temporaries: the
  * directory is left as the earlier run left it. names: every file the command
  * may write into dir, NULL-terminated, each a file name (not empty, ".", ".."
- * nor with a '/': GW_EINVAL). Two runs placing their sets in one
+ * nor with a '/': GW_EINVAL); dir not empty (GW_EINVAL: the set's paths
+ * would be "/NAME"). Begun again while it is the set open on this thread,
+ * s is refused and left as it was (its commit still places its files).
+ * gw_outset_commit and gw_outset_abort act only on the set open on this
+ * thread: any other struct (never begun, closed, zeroed, garbage) is GW_EIO
+ * for commit and nothing for abort, and is not read. Two runs placing their sets in one
  * directory at once place them one after the other (flock on the directory):
  * it holds the last one's files, never some of each. A set may stay open
  * through a long run (layer-impact's snapshots): SIGINT, SIGTERM and SIGHUP

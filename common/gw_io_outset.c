@@ -117,7 +117,19 @@ int gw_outset_begin(gw_outset *s, const char *dir, const char *const *names, gw_
 {
     if (!s || !dir || !names)
         return gw_err_set(err, GW_EINVAL, "gw_outset_begin: %s is NULL", !s ? "s" : !dir ? "dir" : "names");
+    /* s open already: refused untouched (it was zeroed first, which lost its
+     * staged files and left this thread's set pointing at a closed struct:
+     * every later begin on the thread was refused, every commit said "no
+     * output set open") */
+    if (cur_set == s)
+        return gw_err_set(err, GW_EINVAL, "gw_outset_begin: s is the output set open on this thread (in %s): "
+                          "commit or abort it first", s->dir);
     memset(s, 0, sizeof *s);
+    /* "" is no directory: the commit's paths "DIR/NAME" were "/NAME", and it
+     * removed the set's names not written from the root directory */
+    if (!dir[0])
+        return gw_err_set(err, GW_EINVAL, "gw_outset_begin: dir is empty (give a directory, \".\" for the working "
+                          "one)");
     /* each name one file of dir: the commit removes every name of the list
      * the run did not write, and "../x" removed a file beside dir ("" and "."
      * named dir itself) */
@@ -205,9 +217,9 @@ static void outset_release(gw_outset *s) { gw_io_sig_release(s->oldmask, &s->mas
 
 void gw_outset_abort(gw_outset *s)
 {
-    if (!s)
-        return;
-    if (!s->active)
+    /* only the set open on this thread: a struct never begun, closed, or
+     * garbage (a refused begin's) is left alone without reading it */
+    if (!s || s != cur_set || !s->active)
         return;
     outset_hold(s);
     for (int i = 0; i < s->n; i++) {
@@ -307,8 +319,9 @@ int gw_outset_commit(gw_outset *s, gw_err *err)
 {
     if (!s)
         return gw_err_set(err, GW_EINVAL, "gw_outset_commit: s is NULL");
-    if (!s->active)
-        return gw_err_set(err, GW_EIO, "%s: no output set open", s->dir);
+    if (s != cur_set || !s->active) /* s->dir is read only for the set open here (a 0xff struct: no NUL) */
+        return gw_err_set(err, GW_EIO, "gw_outset_commit: s is no output set open on this thread (begun and "
+                          "not yet committed or aborted)");
     int rc = GW_OK;
     gw_err own = {{0}};
     if (!err) /* undo adds to the message */

@@ -65,6 +65,7 @@
 #include "gw_layer_study.h"
 #include "gw_locale.h"
 #include "gw_sweep.h"
+#include "gw_sweep_impl.h"
 #include "layer_impl.h"
 #include "layer_setup_rows.h"
 
@@ -139,6 +140,8 @@ static int prepare(gw_layer_impact_setup *s, int nk, const char *const *names, c
     int rc = gw_layer_impact_setup_init(s);
     if (rc == GW_OK)
         rc = gw_param_init(placement_params, &pl, err);
+    if (rc == GW_OK)
+        rc = gw_sweep_pairs_check("gw_layer_sweep_model", nk, names, values, err);
     for (int i = 0; rc == GW_OK && i < nk; i++)
         rc = gw_param_find(placement_params, names[i])
                  ? gw_param_set(placement_params, &pl, names[i], values[i], err)
@@ -150,7 +153,7 @@ static int prepare(gw_layer_impact_setup *s, int nk, const char *const *names, c
      * point key runs point 0 alone, (points - 1) / 2 spacings left of x; a
      * spacing with one point moves nothing */
     int has_point = 0, has_spacing = 0;
-    for (int i = 0; i < nk; i++)
+    for (int i = 0; rc == GW_OK && i < nk; i++)
         has_point |= strcmp(names[i], "point") == 0, has_spacing |= strcmp(names[i], "spacing") == 0;
     if (rc == GW_OK && pl.points > 1 && !has_point)
         rc = gw_err_set(err, GW_EINVAL, "points: %ld points but no key point: every case would run point 0 "
@@ -418,11 +421,17 @@ static void memo_free(void *memo)
 
 /* gw_layer_impact_setup_check of s, through the memo *memo (NULL: none; *memo
  * NULL: made here, on the first sample read; out of memory for it: the check
- * without it). */
-static int setup_check(void **memo, const gw_layer_impact_setup *s, gw_err *err)
+ * without it). *width and *hash get the sample's box width and content hash
+ * whenever the memo had it or the check read it, kept or not (a sample above
+ * MEMO_NMAX too: its block positions are compared as any other's); *width is
+ * NaN when the check went without the memo. */
+static int setup_check(void **memo, const gw_layer_impact_setup *s, double *width, unsigned long long *hash,
+                       gw_err *err)
 {
     unsigned long long h;
     gw_err e = {{0}};
+    *width = NAN;
+    *hash = 0;
     if (memo && !*memo)
         *memo = calloc(1, sizeof(check_memo));
     check_memo *c = memo ? *memo : NULL;
@@ -433,6 +442,7 @@ static int setup_check(void **memo, const gw_layer_impact_setup *s, gw_err *err)
         memo_slot *m = &c->slot[k];
         if (m->path && m->hash == h && strcmp(m->path, s->sample) == 0) {
             m->used = ++c->tick;
+            *width = m->s.width, *hash = h;
             int rc = layer_impact_setup_check_sample(s, &m->s, m->settle, err);
             return rc == GW_OK ? pile_note(c, s->sample, h, &m->s, s->zero_springs, err) : rc;
         }
@@ -444,6 +454,8 @@ static int setup_check(void **memo, const gw_layer_impact_setup *s, gw_err *err)
     int rc = layer_impact_plan_make_memo(s, &p, settle, err);
     if (rc == GW_OK)
         rc = pile_note(c, s->sample, h, &p.sample, s->zero_springs, err);
+    if (p.sample.x)
+        *width = p.sample.width, *hash = h;
     /* kept when read, whatever this case's verdict (x outside the box is the case's) */
     char *path = p.sample.x && p.sample.n <= MEMO_NMAX ? strdup(s->sample) : NULL;
     if (path) {
@@ -463,16 +475,21 @@ static int check_memo_fn(void **memo, int nk, const char *const *names, const ch
 {
     gw_layer_impact_setup s;
     placement pl;
+    double width = NAN;
+    unsigned long long hash = 0;
     int rc = prepare(&s, nk, names, values, &pl, err);
     if (rc == GW_OK) /* the sample and the resolution: as the run checks them */
-        if ((rc = setup_check(memo, &s, err)) == GW_EINVAL)
+        if ((rc = setup_check(memo, &s, &width, &hash, err)) == GW_EINVAL)
             name_placement(&s, &pl, err);
-    if (rc == GW_OK && memo && *memo) { /* the points in the box's frame: its width is the sample's */
-        const memo_slot *slot = memo_find(*memo, s.sample);
-        if (slot)
-            rc = placement_distinct(&pl, slot->s.width, err);
-        if (slot && rc == GW_OK) /* and its x against the other cases' (a sample not kept: not compared) */
-            rc = x_note(*memo, slot->hash, &pl, slot->s.width, err);
+    /* the points in the box's frame (its width is the sample's), and its x
+     * against the other cases': for every sample the check read, kept in the
+     * memo or not (above MEMO_NMAX particles the x check was skipped: x = 0,
+     * 1e-300 ran one impact twice); only a pass without a memo (out of
+     * memory for it) compares none */
+    if (rc == GW_OK && memo && *memo && !isnan(width)) {
+        rc = placement_distinct(&pl, width, err);
+        if (rc == GW_OK)
+            rc = x_note(*memo, hash, &pl, width, err);
     }
     if (rc == GW_OK && memo && *memo)
         settling_tally(*memo, &s);

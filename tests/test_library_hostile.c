@@ -542,6 +542,207 @@ static int two_threads(void)
     return 0;
 }
 
+/* ---- the thirty-seventh pass ---- */
+
+/* gw_check_range with a NaN bound took it as none (every finite x passed);
+ * lo > hi likewise is no range. Refused naming the bound, whatever x; the
+ * list parser's bounds too. Controls: a range still checks. */
+static int check_range_bounds(void)
+{
+    gw_err e = {{0}};
+    EXPECT(refused(gw_check_range(1, "a", NAN, 2, &e), &e, "lo is NaN"));
+    EXPECT(strstr(e.msg, "a: "));
+    EXPECT(refused(gw_check_range(1, "a", 0, NAN, &e), &e, "hi is NaN"));
+    EXPECT(refused(gw_check_range(1e300, "a", -NAN, NAN, &e), &e, "lo is NaN"));
+    EXPECT(refused(gw_check_range(1, "a", 5, 2, &e), &e, "lo > hi"));
+    double *v = (double *)&e;
+    int n = 7;
+    EXPECT(refused(gw_parse_double_list_in("1,2", "l", NAN, 5, 0, &v, &n, &e), &e, "lo is NaN"));
+    EXPECT(v == NULL && n == 0);
+    EXPECT(refused(gw_parse_double_list_in("1,2", "l", 0, NAN, 0, &v, &n, &e), &e, "hi is NaN"));
+    /* controls */
+    EXPECT(gw_check_range(1, "a", 0, 2, &e) == GW_OK && gw_check_range(2, "a", 2, 2, &e) == GW_OK);
+    EXPECT(gw_check_range(1, "a", -INFINITY, INFINITY, &e) == GW_OK);
+    EXPECT(refused(gw_check_range(3, "a", 0, 2, &e), &e, "a: 3 is outside [0, 2]"));
+    EXPECT(refused(gw_check_range(3, NULL, 0, 2, &e), &e, "value: 3"));
+    EXPECT(gw_parse_double_list_in("1,2", "l", 0, 5, 0, &v, &n, &e) == GW_OK && n == 2 && v[1] == 2);
+    free(v);
+    /* every caller still works: a column, a drop, a layer's parameters */
+    gw_chain_params p = gw_chain_params_default();
+    gw_chain *c = NULL;
+    EXPECT(gw_chain_create(&p, &c, &e) == GW_OK);
+    gw_chain_free(c);
+    gw_chain_drop_params d = gw_chain_drop_params_default();
+    EXPECT(gw_chain_drop_params_validate(&d, &e) == GW_OK);
+    gw_layer_params lp = gw_layer_params_default();
+    EXPECT(gw_layer_params_validate(&lp, &e) == GW_OK);
+    return 0;
+}
+
+/* An output set begun again while open: it was zeroed before the refusal,
+ * its staged file lost, and the thread's set left pointing at it: every later
+ * begin on the thread was refused ("already open") and every commit said "no
+ * output set open". Now refused untouched: its commit places its file. */
+static int outset_begin_again(void)
+{
+    char db[256];
+    const char *dir = tmp_path(db, sizeof db, "again");
+    char path[300];
+    snprintf(path, sizeof path, "%s/a.csv", dir);
+    gw_err e = {{0}};
+    EXPECT(gw_mkdir_p(dir, &e) == GW_OK);
+    unlink(path);
+    const char *names[] = {"a.csv", NULL};
+    gw_outset s, t;
+    EXPECT(gw_outset_begin(&s, dir, names, &e) == GW_OK);
+    gw_afile f;
+    EXPECT(gw_afile_open(&f, path, &e) == GW_OK && fputs("1\n", f.fp) >= 0 && gw_afile_commit(&f, &e) == GW_OK);
+    const int again = gw_outset_begin(&s, dir, names, &e);
+    const int agained = refused(again, &e, "open on this thread");
+    const int committed = gw_outset_commit(&s, &e);
+    gw_outset_abort(&s);
+    const int placed = exists(path);
+    /* the thread takes a new set afterwards */
+    const int next = gw_outset_begin(&t, dir, names, &e);
+    gw_outset_abort(&t);
+    unlink(path);
+    rmdir(dir);
+    EXPECT(agained);
+    EXPECT(committed == GW_OK && placed);
+    EXPECT(next == GW_OK);
+    return 0;
+}
+
+/* An empty dir: the commit's paths "DIR/NAME" were "/NAME", and it removed
+ * the set's names not written from the root directory. Refused naming dir. A
+ * commit or abort of a struct that is not this thread's open set (zeroed,
+ * 0xff: a refused begin's garbage) is refused or ignored, never read. */
+static int outset_empty_and_garbage(void)
+{
+    gw_err e = {{0}};
+    gw_outset s;
+    const char *names[] = {"gw_library_hostile_never.csv", NULL};
+    const int rc = gw_outset_begin(&s, "", names, &e);
+    if (rc == GW_OK)
+        gw_outset_abort(&s);
+    EXPECT(refused(rc, &e, "dir is empty"));
+    memset(&s, 0xff, sizeof s);
+    EXPECT(gw_outset_commit(&s, &e) == GW_EIO && strstr(e.msg, "no output set open"));
+    gw_outset_abort(&s);
+    memset(&s, 0, sizeof s);
+    EXPECT(gw_outset_commit(&s, &e) == GW_EIO);
+    gw_outset_abort(&s);
+    char db[256]; /* control: the thread still takes a set, "." too */
+    EXPECT(gw_outset_begin(&s, tmp_path(db, sizeof db, "garbage"), names, &e) == GW_OK);
+    gw_outset_abort(&s);
+    return 0;
+}
+
+/* A sweep model's case given a negative count ran the defaults (GW_OK, a
+ * row for no case asked); a NULL name crashed the layer model (SIGSEGV) and
+ * was quoted "(null)" by the chain's; a key given twice ran its last value.
+ * Refused naming what, in the models' run, check and part calls. */
+static int sweep_pairs(void)
+{
+    gw_err e = {{0}};
+    double out[64];
+    unsigned long long h = 0;
+    const char *nm[] = {"n", "vimp"}, *vl[] = {"3", "0.3"};
+    EXPECT(refused(gw_chain_sweep_run_part(-1, nm, vl, out, &h, NULL, NULL, &e), &e, "nkeys: -1"));
+    EXPECT(refused(gw_chain_sweep_run_part(INT_MIN, NULL, NULL, out, &h, NULL, NULL, &e), &e, "nkeys"));
+    EXPECT(refused(gw_layer_sweep_run_part(-1, nm, vl, out, &h, NULL, NULL, &e), &e, "nkeys: -1"));
+    EXPECT(refused(gw_chain_sweep_model.check(-2, nm, vl, &e), &e, "nkeys: -2"));
+    EXPECT(refused(gw_layer_sweep_model.check(-2, nm, vl, &e), &e, "nkeys: -2"));
+    const char *nul[] = {NULL}, *one[] = {"3"}, *nn[] = {"n"}, *nulv[] = {NULL};
+    EXPECT(refused(gw_layer_sweep_run_part(1, nul, one, out, &h, NULL, NULL, &e), &e, "names[0] is NULL"));
+    EXPECT(refused(gw_layer_sweep_model.check(1, nul, one, &e), &e, "names[0] is NULL"));
+    EXPECT(refused(gw_chain_sweep_run_part(1, nul, one, out, &h, NULL, NULL, &e), &e, "names[0] is NULL"));
+    EXPECT(refused(gw_chain_sweep_run_part(1, nn, nulv, out, &h, NULL, NULL, &e), &e, "values[0] is NULL"));
+    const char *twice[] = {"n", "n"}, *tv[] = {"3", "4"}, *dash[] = {"dt-out", "dt_out"}, *dv[] = {"1e-6", "2e-6"};
+    EXPECT(refused(gw_chain_sweep_run_part(2, twice, tv, out, &h, NULL, NULL, &e), &e, "n: given twice"));
+    EXPECT(refused(gw_chain_sweep_model.check(2, dash, dv, &e), &e, "dt_out: given twice"));
+    /* control: each key once runs, in either order, to one row */
+    const char *mn[] = {"vimp", "n"}, *lv[] = {"0.3", "3"};
+    EXPECT(gw_chain_sweep_run_part(2, nm, vl, out, &h, NULL, NULL, &e) == GW_OK);
+    double row[64];
+    memcpy(row, out, sizeof row);
+    EXPECT(gw_chain_sweep_run_part(2, mn, lv, out, &h, NULL, NULL, &e) == GW_OK);
+    EXPECT(memcmp(row, out, (size_t)gw_chain_sweep_model.ncolumns * sizeof *out) == 0);
+    return 0;
+}
+
+/* gw_stats_write_files(NULL, dir): the first writer read the NULL analysis
+ * (SIGSEGV), after making dir. Refused naming A, nothing made. */
+static int stats_write_null(void)
+{
+    char db[256];
+    const char *dir = tmp_path(db, sizeof db, "stats");
+    rmdir(dir);
+    gw_err e = {{0}};
+    EXPECT(refused(gw_stats_write_files(NULL, dir, &e), &e, "A is NULL"));
+    EXPECT(!exists(dir));
+    return 0;
+}
+
+/* A layer grid's x check (x = 0, 1e-300: one block position, one impact run
+ * as two groups) covered only the samples the check pass keeps in memory (up
+ * to 1e5 particles): on a larger sample both cases passed. A row of 100001
+ * touching discs on the floor (one particle high, at rest): the second x is
+ * refused naming x and both values, as on a 1000-disc row (control). */
+static int big_sample_row(const char *path, int n)
+{
+    const double r = 0.01;
+    gw_layer_sample s;
+    memset(&s, 0, sizeof s);
+    s.n = n, s.width = 2 * r * n, s.rm = r, s.volume_ratio = 1, s.porosity = NAN;
+    s.x = malloc(3 * (size_t)n * sizeof *s.x); /* one block, as gw_layer_sample_free frees it */
+    if (!s.x)
+        return GW_ENOMEM;
+    s.y = s.x + n, s.r = s.x + 2 * n;
+    for (int i = 0; i < n; i++)
+        s.x[i] = (2 * i + 1) * r, s.y[i] = r, s.r[i] = r;
+    gw_err e = {{0}};
+    const int rc = gw_layer_sample_write(&s, path, NULL, &e);
+    gw_layer_sample_free(&s);
+    return rc;
+}
+
+static int x_check_on(const char *path, gw_err *e)
+{
+    char cfg[512];
+    snprintf(cfg, sizeof cfg, "[sweep]\nmodel = layer\n[grid]\nx = 0, 1e-300\n[params]\nsample = %s\n", path);
+    const gw_sweep_model *models[] = {&gw_layer_sweep_model}, *m = NULL;
+    gw_sweep_config c;
+    int rc = gw_sweep_config_read_string(cfg, "cfg", models, 1, &c, &m, e);
+    void *memo = NULL;
+    for (long k = 0; rc == GW_OK && k < c.ncases; k++) {
+        const char *nm[16], *vl[16];
+        if ((rc = gw_sweep_case(&c, k, nm, vl)) == GW_OK)
+            rc = gw_sweep_case_check(m, &memo, c.ngrid + c.nparams, nm, vl, e);
+    }
+    if (m)
+        gw_sweep_checks_end(m, memo);
+    gw_sweep_config_free(&c);
+    return rc;
+}
+
+static int x_check_large_sample(void)
+{
+    char bb[256], sb[256];
+    const char *big = tmp_path(bb, sizeof bb, "big.txt"), *small = tmp_path(sb, sizeof sb, "small.txt");
+    gw_err e = {{0}};
+    EXPECT(big_sample_row(big, 100001) == GW_OK && big_sample_row(small, 1000) == GW_OK);
+    const int rs = x_check_on(small, &e);
+    const int ok_small = refused(rs, &e, "x: 0 and 1e-300 m put the block at one position");
+    const int rb = x_check_on(big, &e);
+    const int ok_big = refused(rb, &e, "x: 0 and 1e-300 m put the block at one position");
+    unlink(big);
+    unlink(small);
+    EXPECT(ok_small);
+    EXPECT(ok_big && strstr(e.msg, "width 2000.02 m"));
+    return 0;
+}
+
 int main(void)
 {
     static const struct {
@@ -575,6 +776,12 @@ int main(void)
         {"gw_chain_wall_spectrum: a NaN force sample", spectrum_nan_force},
         {"gw_chain_drop_params_validate: subnormal height and t-max", drop_subnormal},
         {"two threads, two chains", two_threads},
+        {"gw_check_range/parse_double_list_in: NaN bounds, lo > hi", check_range_bounds},
+        {"gw_outset_begin: the open set begun again", outset_begin_again},
+        {"gw_outset_begin/commit/abort: an empty dir, zeroed and 0xff sets", outset_empty_and_garbage},
+        {"sweep models: negative nkeys, NULL names, a key twice", sweep_pairs},
+        {"gw_stats_write_files: a NULL analysis", stats_write_null},
+        {"layer sweep check: x = 0, 1e-300 on a 100001-disc sample", x_check_large_sample},
     };
     for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++)
         in_child(cases[k].label, cases[k].fn);

@@ -524,6 +524,8 @@ int gw_stats_write_files(const gw_stats_analysis *R, const char *dir, gw_err *er
     } files[] = {{"groups.csv", write_groups}, {"convergence.csv", write_convergence},
                  {"binary.csv", write_binary}, {"walls.csv", write_walls}, {"diagram.csv", write_diagram}};
     /* the six files of one analysis, or (a write failed) the earlier ones as they were */
+    if (!R || !dir) /* before the directory is made (R NULL was read by the first writer: SIGSEGV) */
+        return gw_err_set(err, GW_EINVAL, "gw_stats_write_files: %s is NULL", !R ? "A" : "dir");
     gw_outset set;
     memset(&set, 0, sizeof set);
     int rc = gw_mkdir_p(dir, err);

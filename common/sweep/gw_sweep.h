@@ -74,7 +74,12 @@ typedef struct gw_sweep_config {
     int ncolumns;
 } gw_sweep_config;
 
-/* A model that runs one case: name/value pairs in, ncolumns numbers out. */
+/* A model that runs one case: name/value pairs in, ncolumns numbers out. The
+ * pairs (nkeys of them; the chain's and the layer's run, check, memory,
+ * check_memo and run_part alike): nkeys >= 0, no name or value NULL, no key
+ * twice ('_' and '-' one): GW_EINVAL naming nkeys, names[i] or the key
+ * otherwise (a negative count ran the defaults, a NULL name crashed the layer
+ * model, a key twice ran its last value). */
 typedef struct gw_sweep_model {
     const char *name;
     int ncolumns;

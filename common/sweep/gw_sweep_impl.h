@@ -11,6 +11,15 @@
 
 #include "gw_sweep.h"
 
+/* gw_sweep_run.c: a case's pairs as a model's run, check and memory take
+ * them (both models' prepare): nk >= 0, names and values given when nk > 0,
+ * no name or value NULL, no key twice ('_' and '-' one, as in a config).
+ * GW_EINVAL naming what ("nkeys: -1 is negative", "names[1] is NULL", "n:
+ * given twice, pairs 1 and 2"): a negative count ran the defaults, GW_OK; a
+ * NULL name crashed the layer model; a key twice ran its last value. */
+int gw_sweep_pairs_check(const char *call, int nk, const char *const *names, const char *const *values,
+                         gw_err *err);
+
 /* gw_sweep_config.c: a copy of s (malloc'd), NULL on ENOMEM. */
 char *gw_sweep_strdup(const char *s);
 

@@ -11,6 +11,7 @@
 #include <unistd.h>
 
 #include "gw_sweep.h"
+#include "gw_sweep_impl.h"
 #include "gw_locale.h"
 
 double gw_memory_available(const char **what)
@@ -198,6 +199,32 @@ long gw_sweep_undecided_rows(const gw_sweep_model *m, const double *values, long
         if (values[k * m->ncolumns + col] == 0 && n++ == 0 && first)
             *first = k;
     return n;
+}
+
+static int same_key(const char *a, const char *b)
+{
+    for (; *a && *b; a++, b++)
+        if (*a != *b && !((*a == '_' || *a == '-') && (*b == '_' || *b == '-')))
+            return 0;
+    return *a == *b;
+}
+
+int gw_sweep_pairs_check(const char *call, int nk, const char *const *names, const char *const *values,
+                         gw_err *err)
+{
+    if (nk < 0)
+        return gw_err_set(err, GW_EINVAL, "%s: nkeys: %d is negative", call, nk);
+    if (nk > 0 && (!names || !values))
+        return gw_err_set(err, GW_EINVAL, "%s: %s is NULL", call, !names ? "names" : "values");
+    for (int i = 0; i < nk; i++) {
+        if (!names[i] || !values[i])
+            return gw_err_set(err, GW_EINVAL, "%s: %s[%d] is NULL", call, !names[i] ? "names" : "values", i);
+        for (int j = 0; j < i; j++)
+            if (names[j] && same_key(names[j], names[i]))
+                return gw_err_set(err, GW_EINVAL, "%s: given twice, pairs %d and %d ('%s' and '%s'): one value "
+                                  "a key", names[i], j, i, values[j], values[i]);
+    }
+    return GW_OK;
 }
 
 int gw_sweep_run(const gw_sweep_config *cfg, const gw_sweep_model *m, int jobs, gw_progress_fn progress,

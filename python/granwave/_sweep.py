@@ -115,6 +115,15 @@ _GRID_VALUES_MOST = _SWEEP_CONFIG_MAX // 2
 
 
 def _grid_values(key, v):
+    given = v
+    if isinstance(v, str) and _looks_like_range(_plain(v)):
+        # the string 'A:B' is the range A..B: bounded as a range object is
+        # ('1:9223372036854775807' raised a bare MemoryError naming nothing)
+        a, b = (x.strip() for x in _plain(v).split(":"))
+        try:  # '+1:3' ran 3 cases in C and was one value '+1:3' here
+            v = range(int(a), int(b) + 1)
+        except ValueError:
+            return [_plain(v)]  # not integers ('1-:3'): the library names it
     if isinstance(v, range):
         # read whole below: range(2, 10**12) raised an empty MemoryError after
         # taking the memory there was, range(1, 2**80) OverflowError
@@ -123,17 +132,10 @@ def _grid_values(key, v):
         except OverflowError:
             n = math.inf
         if n > _GRID_MAX:
-            raise GranwaveValueError(f"sweep() grid: '{key}': {_show(v)} holds more than 1e9 values: the grid has more "
+            raise GranwaveValueError(f"sweep() grid: '{key}': {_show(given)} holds more than 1e9 values: the grid has more "
                                      f"than 1e9 cases", GW_EINVAL)
     if isinstance(v, str):
-        v = _plain(v)
-        if _looks_like_range(v):
-            a, b = (x.strip() for x in v.split(":"))
-            try:  # '+1:3' ran 3 cases in C and was one value '+1:3' here
-                return list(range(int(a), int(b) + 1))
-            except ValueError:
-                return [v]  # not integers ('1-:3'): the library names it
-        return [x.strip() for x in v.split(",")]
+        return [x.strip() for x in _plain(v).split(",")]
     if isinstance(v, (numbers.Number, os.PathLike)):
         return [v]
     if isinstance(v, range):

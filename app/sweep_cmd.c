@@ -212,6 +212,17 @@ static int run_case(const sweep_run *s, long k, char *row, case_slot *slot, gw_e
     return gw_sweep_format_row(s->cfg, k, out, s->m->ncolumns, read_hash, row, ROW_MAX);
 }
 
+/* The journal put back when it was removed from the sweep's directory (said
+ * once a time in one line, with --quiet too); rc set on a failure. */
+static void journal_put_back(sweep_run *s, gw_err *err, int *rc)
+{
+    int back = 0;
+    *rc = gw_sweep_journal_held(s->dirfd, &s->fd, s->out, &back, err);
+    if (back)
+        fprintf(stderr, "granwave sweep: warning: %s/journal.csv was removed while the sweep ran: put back with "
+                "its %ld row%s; the sweep goes on\n", s->out, s->ndone0 + s->done, s->ndone0 + s->done == 1 ? "" : "s");
+}
+
 /* Append a finished row to the journal (caller holds the lock or is the only
  * writer). */
 static int journal(sweep_run *s, const char *row, gw_err *err)
@@ -227,6 +238,10 @@ static int journal(sweep_run *s, const char *row, gw_err *err)
      * rows would go into a journal that is in no directory */
     if (rc == GW_OK)
         rc = gw_sweep_dir_held(s->dirfd, s->out, err);
+    /* and its journal is still there: removed (rm DIR/journal.csv), every
+     * row went on into a file in no directory and was lost at the end */
+    if (rc == GW_OK)
+        journal_put_back(s, err, &rc);
     if (rc == GW_OK)
         rc = gw_sweep_journal_append(s->fd, row, &s->synced_ms, err);
     if (rc == GW_OK)
@@ -776,7 +791,8 @@ int gw_cmd_sweep(int argc, char **argv, const gw_sweep_model *const *models, con
                            "case): rerun to retry the failed cases", s.nfailed, s.ntodo, s.fail_err.msg,
                            s.ndone0 + s.done, cfg.ncases, now);
                 code = 1;
-            } else if (gw_sweep_journal_sync(s.fd, &s.synced_ms, &err) != GW_OK ||
+            } else if ((journal_put_back(&s, &err, &rc), rc) != GW_OK ||
+                       gw_sweep_journal_sync(s.fd, &s.synced_ms, &err) != GW_OK ||
                        gw_sweep_write_table_at(s.dirfd, now, &cfg, m, &err) != GW_OK) {
                 code = 1;
             } else {

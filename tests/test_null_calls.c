@@ -385,6 +385,13 @@ static int c_gw_sweep_dir_held(void)
 {
     gw_err e = {{0}}; return gw_sweep_dir_held(-1, NULL, &e) == GW_EINVAL && gw_test_said(&e, "gw_sweep_dir_held: dir is NULL");
 }
+static int c_gw_sweep_journal_held(void)
+{
+    gw_err e = {{0}};
+    int back = 7;
+    return gw_sweep_journal_held(-1, NULL, "d", &back, &e) == GW_EINVAL && back == 0 &&
+           gw_test_said(&e, "gw_sweep_journal_held: fd is NULL");
+}
 
 static int c_gw_sweep_write_table(void)
 {
@@ -534,6 +541,7 @@ static const gw_test_call calls[] = {
     {"gw_sweep_journal_open", c_gw_sweep_journal_open},
     {"gw_sweep_journal_open_at", c_gw_sweep_journal_open_at},
     {"gw_sweep_dir_held", c_gw_sweep_dir_held},
+    {"gw_sweep_journal_held", c_gw_sweep_journal_held},
     {"gw_sweep_write_table", c_gw_sweep_write_table},
     {"gw_sweep_journal_resume_check", c_gw_sweep_journal_resume_check},
     {"gw_sweep_inputs_check", c_gw_sweep_inputs_check},

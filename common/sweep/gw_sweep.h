@@ -223,6 +223,13 @@ int gw_sweep_journal_open_at(const char *dir, const gw_sweep_config *cfg, char *
  * removed (or moved to another file system, which copies it and removes it):
  * the rows journaled since went with it. */
 int gw_sweep_dir_held(int dirfd, const char *dir, gw_err *err);
+/* The sweep's journal *fd (open and locked, in the directory dirfd held open;
+ * dir names it) still in that directory. Removed from it while the sweep ran,
+ * it is put back whole under its name (locked, only while the name is free),
+ * *fd becomes the new file's (the old one closed) and *restored 1. GW_OK also
+ * when its name holds another file now (replaced: the table's check says so);
+ * GW_EIO when it cannot be read or written back. */
+int gw_sweep_journal_held(int dirfd, int *fd, const char *dir, int *restored, gw_err *err);
 /* What a resume would find (`granwave sweep CONFIG --check`): DIR/journal.csv
  * read and checked by the code of gw_sweep_journal_open, with its refusals
  * (another config's journal, one edited by hand, of another format, a row of

@@ -182,6 +182,54 @@ static int journal_create(int dfd, const char *path, const char *text, int *fdp,
 static int journal_check(const char *path, int dfd, const char *dir, const char *head, const gw_sweep_config *cfg,
                          char *done, long *ndone, int fd, size_t *torn, int *torn_head, gw_err *err);
 
+/* The journal removed from the sweep's directory while the sweep ran (`rm
+ * DIR/journal.csv`): the sweep went on appending its rows to a file in no
+ * directory, ran every case left and then exited 1 ("cannot read: No such
+ * file or directory"), its rows lost with the file. It is put back now, at
+ * the next row, whole (its head and every row so far, read through the
+ * held descriptor), by journal_create: locked, linked into place only while
+ * the name is free. A journal replaced by another file keeps that file (the
+ * table's check refuses it at the end). */
+int gw_sweep_journal_held(int dirfd, int *fdp, const char *dir, int *restored, gw_err *err)
+{
+    if (restored)
+        *restored = 0;
+    if (!fdp || !dir)
+        return gw_err_set(err, GW_EINVAL, "gw_sweep_journal_held: %s is NULL", !fdp ? "fd" : "dir");
+    struct stat a, b;
+    if (fstat(*fdp, &a) != 0)
+        return gw_err_set(err, GW_EIO, "%s/journal.csv: %s", dir, strerror(errno));
+    if (a.st_nlink > 0)
+        return GW_OK;
+    if (gw_sweep_dir_held(dirfd, dir, err) != GW_OK) /* the directory removed, the journal with it */
+        return GW_EIO;
+    if (fstatat(dirfd, "journal.csv", &b, AT_SYMLINK_NOFOLLOW) == 0 || errno != ENOENT)
+        return GW_OK; /* replaced: the name is another file's */
+    char path[4200];
+    if (gw_snprintf(path, sizeof path, "%s/journal.csv", dir) >= (int)sizeof path)
+        return gw_err_set(err, GW_EINVAL, "%s: path too long", dir);
+    size_t len = 0;
+    char *text = gw_sweep_slurp_fd(*fdp, path, &len, err);
+    if (!text)
+        return errno == ENOMEM ? GW_ENOMEM : GW_EIO;
+    if (len == 0 || text[len - 1] != '\n') {
+        free(text);
+        return GW_OK; /* a torn last row: left to the table's check */
+    }
+    int nfd = -1;
+    const int rc = journal_create(dirfd, path, text, &nfd, err);
+    free(text);
+    if (rc != GW_OK)
+        return rc;
+    if (nfd >= 0) {
+        close(*fdp);
+        *fdp = nfd;
+        if (restored)
+            *restored = 1;
+    }
+    return GW_OK;
+}
+
 static int journal_find(const char *path, int dfd, const char *dir, const gw_sweep_config *cfg, char *done,
                         long *ndone, int *fdp, int *exists, size_t *torn, int *torn_head, gw_err *err);
 

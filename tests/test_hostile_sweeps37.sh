@@ -1,0 +1,96 @@
+#!/bin/bash
+# test_hostile_sweeps37.sh GRANWAVE SRCDIR: the thirty-seventh hostile pass, over
+# sweeps. A journal removed from the sweep's directory while the sweep ran
+# (`rm DIR/journal.csv`): the sweep went on appending its rows to a file in no
+# directory, ran every case left, then exited 1 ("DIR/journal.csv: cannot read:
+# No such file or directory"), no table, no journal: every finished row lost, a
+# rerun ran them all again. Now the journal is put back whole at the next row
+# (one warning line), the sweep finishes with the uninterrupted table.
+#  1 threads (--jobs 1, --jobs 2): exit 0, one warning line naming the journal,
+#    the table byte-identical to an undisturbed sweep's, each case journaled once
+#  2 under mpirun -np 2 alike
+#  3 removed, then the sweep killed with kill -9: the put-back journal holds the
+#    rows finished before the kill, and the rerun's table is the undisturbed one
+#  4 kept: the whole directory removed still stops the sweep (exit 1, naming it)
+set -u
+GW=$1
+tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
+# shellcheck source=tests/refusal_lib.sh
+. "$(dirname "${BASH_SOURCE[0]}")/refusal_lib.sh"
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+have_mpi=0
+command -v mpirun >/dev/null && ldd "$GW" 2>/dev/null | grep -q libmpi && have_mpi=1
+
+# cases of about 0.1 to 0.3 s each (rk4, 60 to 90 beads)
+cat >"$tmp/a.ini" <<CFG
+[sweep]
+model = chain
+[grid]
+n = 60, 70, 80, 90
+vimp = 0.1, 0.2
+[params]
+solver = rk4
+CFG
+"$GW" sweep "$tmp/a.ini" --out "$tmp/ref" --quiet --jobs 1 || ko "reference sweep"
+
+# each case journaled once, all 8
+once() { [ "$(grep -v '^#' "$1" 2>/dev/null | cut -d, -f1 | sort -u | wc -l)" -eq 8 ] && [ "$(journal_rows "$1")" -eq 8 ]; }
+
+# --- 1, 2: the journal removed after the first row
+removed() { # WHAT DIR CMD...
+    local what=$1 d=$2 pa rc
+    shift 2
+    rm -rf "$d"
+    "$@" >/dev/null 2>"$d.err" & pa=$!
+    wait_rows "$d/journal.csv" 1 60 || ko "$what: the sweep journaled nothing"
+    rm -f "$d/journal.csv"
+    wait $pa; rc=$?
+    [ $rc -eq 0 ] && [ "$(wc -l <"$d.err")" -eq 1 ] && grep -q "journal.csv was removed while the sweep ran: put back" "$d.err" &&
+        ok "$what: exit 0, one line: $(cat "$d.err")" ||
+        ko "$what: journal removed mid-sweep: exit $rc: $(head -3 "$d.err")"
+    cmp -s "$d/results.csv" "$tmp/ref/results.csv" && ok "$what: the table is the undisturbed one" ||
+        ko "$what: table $( [ -e "$d/results.csv" ] && echo differs || echo missing)"
+    once "$d/journal.csv" && ok "$what: the journal holds each case once" ||
+        ko "$what: journal holds $(journal_rows "$d/journal.csv") rows"
+}
+removed "1 --jobs 1" "$tmp/d1" "$GW" sweep "$tmp/a.ini" --out "$tmp/d1" --quiet --jobs 1
+removed "1 --jobs 2" "$tmp/d2" "$GW" sweep "$tmp/a.ini" --out "$tmp/d2" --quiet --jobs 2
+if [ $have_mpi = 1 ]; then
+    removed "2 mpirun -np 2" "$tmp/d3" mpirun --oversubscribe -np 2 "$GW" sweep "$tmp/a.ini" --out "$tmp/d3" --quiet
+else
+    echo "SKIP: 2 (no mpirun or not an MPI build)"
+fi
+
+# --- 3: removed, put back, then kill -9: the rerun resumes the put-back rows
+d=$tmp/d4
+rm -rf "$d"
+env --default-signal=INT "$GW" sweep "$tmp/a.ini" --out "$d" --quiet --jobs 1 >/dev/null 2>"$d.err" & pa=$!
+wait_rows "$d/journal.csv" 1 60
+rm -f "$d/journal.csv"
+if wait_rows "$d/journal.csv" 2 10; then
+    kill -KILL $pa 2>/dev/null
+    wait $pa 2>/dev/null
+    kept=$(journal_rows "$d/journal.csv")
+    ok "3: the journal was put back ($kept rows when kill -9 came)"
+    "$GW" sweep "$tmp/a.ini" --out "$d" 2>"$d.err2"; rc=$?
+    [ $rc -eq 0 ] && cmp -s "$d/results.csv" "$tmp/ref/results.csv" && once "$d/journal.csv" &&
+        grep -q "$kept already done" "$d.err2" &&
+        ok "3: the rerun resumed its $kept rows, table byte-identical" ||
+        ko "3: rerun after kill -9: exit $rc: $(grep -v '^sweep: [0-9]*/' "$d.err2" | head -3)"
+else
+    kill -KILL $pa 2>/dev/null
+    wait $pa 2>/dev/null
+    ko "3: the removed journal never came back ($(ls "$d" | tr '\n' ' '))"
+fi
+
+# --- 4 (kept): the directory itself removed still stops the sweep
+d=$tmp/p/d5
+mkdir -p "$tmp/p"
+"$GW" sweep "$tmp/a.ini" --out "$d" --quiet --jobs 1 >/dev/null 2>"$tmp/e5" & pa=$!
+wait_rows "$d/journal.csv" 1 60
+rm -rf "$tmp/p"
+wait $pa; rc=$?
+[ $rc -eq 1 ] && grep -q "the sweep's directory was removed while the sweep ran" "$tmp/e5" &&
+    ok "4: a removed directory still stops the sweep (exit 1)" || ko "4: directory removed: exit $rc: $(cat "$tmp/e5")"
+
+test_summary test_hostile_sweeps37

@@ -14,12 +14,56 @@
 #    spring_u is named too (it was refused as "must be a 1-D array of at
 #    most 328 numbers", its target's length). The same sample with its
 #    springs in the file still runs.
+#  2 A text sample cut inside its last line ran. A file cut short (a full
+#    disk, a copy stopped) inside its particles or springs is refused by its
+#    counts, but a cut inside the last record left a number cut in its
+#    digits, which still reads: a 40-disc sample without its springs section
+#    cut 15 bytes short read the last radius 0.2296 m as 0.22 and ran with
+#    exit 0, the penetration 0.0258 m against 0.0168 (e_n_first 0.219
+#    against 0.264); with springs and no settings line, the last spring's
+#    exponent e-06 cut to e-0 read u a million times larger (the impact clips
+#    it to the Coulomb bound), exit 0. A record without its newline is now
+#    refused as the end of a cut file (layer-make and the library's writer
+#    end every line), naming the file and the line, by layer-impact, sweep
+#    --check and Python; the same file with its newline (LF or CRLF) runs.
 # Checks that fail on the code before: see docs/tests.md.
 # shellcheck source=refusal_lib.sh
 . "$2/tests/refusal_lib.sh"
 hostile_setup "$@"
 export LC_ALL=C
 PY=/usr/bin/python3
+
+# --- 2 a text sample cut inside its last line ---
+make_sample s.txt --n 40 --seed 2
+sed '/^springs /,$d' s.txt >p.txt          # the particles alone (a sample before springs)
+sed '/^# settings:/d' s.txt >h.txt           # springs, no settling record (hand-made)
+runs() { # runs WHAT FILE: layer-impact on FILE exits 0
+    timeout -s KILL 60 "$GW" layer-impact --sample "$2" --t-max 0.002 --quiet >/dev/null 2>"$tmp/stderr" </dev/null &&
+        ok "$1" || ko "$1: exit $? ($(head -c 300 "$tmp/stderr"))"
+}
+runs "the particles alone, ending with a newline: run" p.txt
+sed 's/$/\r/' p.txt >pc.txt
+runs "the particles alone in CRLF: run" pc.txt
+CUT="the file ends inside this line \\(no newline after it\\): cut short"
+for k in 1 5 15; do
+    head -c -$((k + 1)) p.txt >c$k.txt        # k bytes of the last radius and its newline gone
+    refused "the particles alone cut $k bytes into the last radius: refused naming the file and line" \
+        "^granwave layer-impact: sample 'c$k.txt': line [0-9]+: $CUT" layer-impact --sample c$k.txt --t-max 0.002 --out o
+done
+head -c -1 p.txt >n.txt                        # the newline alone gone: a cut file too
+refused "the particles alone without the last newline: refused" \
+    "^granwave layer-impact: sample 'n.txt': line [0-9]+: $CUT" layer-impact --sample n.txt --t-max 0.002 --out o
+runs "springs without a settling record, whole: run" h.txt
+head -c -2 h.txt >hc.txt                       # the last spring's exponent e-0N cut to e-0
+refused "springs without a settling record, the last exponent cut: refused" \
+    "^granwave layer-impact: sample 'hc.txt': line [0-9]+: $CUT" layer-impact --sample hc.txt --t-max 0.002 --out o
+printf '[sweep]\nmodel = layer\nout = o\n[grid]\nvi = 10, 20\n[params]\nsample = c5.txt\nt-max = 0.002\n' >cs.ini
+refused "sweep --check over the cut sample: refused naming it" \
+    "^granwave sweep: cs.ini: case 0: sample '.*/c5.txt': line [0-9]+: $CUT" sweep cs.ini --check
+py_checks 1 <<'EOF'
+refused("Python layer_impact on the cut sample", ["c5.txt", "the file ends inside this line"],
+        granwave.layer_impact, sample="c5.txt", t_max=0.002)
+EOF
 
 if ! $PY -c 'import h5py' 2>/dev/null || ! "$GW" version --json 2>/dev/null | grep -q hdf5; then
     echo "SKIP: h5py or an HDF5 build missing"

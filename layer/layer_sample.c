@@ -14,7 +14,8 @@
  * settling's material (layer_sample_settings.c, gw_layer_settled), and its
  * "# settled: ..." line for 'converged 0' (a pile written before it settled,
  * gw_layer_settled.unsettled). Lines end in LF
- * or CRLF. The reader refuses anything else with the file name and line number,
+ * or CRLF, the last line too (a file ending inside a record was cut short).
+ * The reader refuses anything else with the file name and line number,
  * and opens only regular files (gw_input_open: a FIFO or device never blocks it).
  * HDF5 samples (layer_sample_h5.c) are told apart by the HDF5 signature, not
  * by the file name. Both formats' fields pass the same checks
@@ -196,7 +197,7 @@ static int text_next(text_in *t, gw_err *err)
 {
     static const char set_key[] = "settings:";
     for (;;) {
-        int c, any = 0, lead = 1, comment = 0, nul = 0;
+        int c, any = 0, lead = 1, comment = 0, nul = 0, cr_end = 0;
         /* in a comment: -1 after '#' (blanks), k >= 0 the characters of
          * "settings:" matched, sizeof set_key - 1 the key whole (the rest is
          * the JSON), -2 another comment */
@@ -212,6 +213,8 @@ static int text_next(text_in *t, gw_err *err)
                 return gw_err_set(err, GW_EFORMAT, "sample '%s': line %ld: a carriage return inside the line: "
                                   "lines that end in CR alone are one line to the reader; convert them to LF "
                                   "(CR LF is read too)", t->path, t->line + 1);
+            if (c == EOF) /* a CR, then the end: the line's end (CR LF without its LF) */
+                cr_end = 1;
             if (c == '\n' || c == EOF)
                 break;
             if (lead && (c == ' ' || c == '\t'))
@@ -264,6 +267,14 @@ static int text_next(text_in *t, gw_err *err)
         }
         if (len > 0 && t->buf[len - 1] == '\r')
             len--;
+        /* a record without its newline (LF, or the CR of a CR LF) is the end
+         * of a file cut short: the writer ends every line, and a number cut
+         * in its digits still reads
+         * (the last radius of a 40-disc sample cut from 0.2296 to 0.22 m ran
+         * with exit 0, its penetration 53 % deeper) */
+        if (c == EOF && !cr_end && !comment && len > 0)
+            return gw_err_set(err, GW_EFORMAT, "sample '%s': line %ld: the file ends inside this line (no newline "
+                              "after it): cut short? layer-make ends every line with one", t->path, t->line);
         t->buf[len] = '\0';
         if (!comment && len > 0)
             return 1;

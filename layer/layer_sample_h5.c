@@ -442,6 +442,18 @@ static int h5_springs_read(hid_t f, gw_layer_sample *s, const char *path, const 
     if (have != 3)
         return gw_err_set(err, GW_EFORMAT, "sample '%s': HDF5 datasets spring_a, spring_b and spring_u go "
                           "together (the file has %d of them)", path, have);
+    /* each a dataset of this file before any is opened: opening spring_u to
+     * learn its length followed an external link, and HDF5 opened the file it
+     * names, a FIFO without a writer blocking the read for ever (the particles'
+     * columns were checked so before they were opened, the springs' only
+     * after) */
+    for (int j = 0; j < 3; j++) {
+        const char *where = "";
+        const int in = h5_in_file(f, names[j], &where);
+        if (in == 0) /* (-1, not a dataset: said below, as of the particles) */
+            return gw_err_set(err, GW_EFORMAT, "sample '%s': HDF5 dataset '%s' is %s: a sample holds its data in "
+                              "the file itself (hard links, no external storage)", path, names[j], where);
+    }
     /* the length from spring_u (h5_column_read then checks all three) */
     hid_t d = H5Dopen2(f, "spring_u", H5P_DEFAULT), sp = d >= 0 ? H5Dget_space(d) : -1;
     hsize_t dim = 0;

@@ -104,6 +104,9 @@ int gw_layer_sample_format_check(const char *path, gw_err *err)
     return gw_layer_sample_out_check(path, "sample", err);
 }
 
+/* how the writer's comment line announcing the springs section begins */
+#define SPRINGS_SAID "lines after 'springs'"
+
 /* ------------------------------------------------------------- text ---- */
 
 static int write_text(const gw_layer_sample *s, const char *path, const char *header, gw_err *err)
@@ -116,7 +119,7 @@ static int write_text(const gw_layer_sample *s, const char *path, const char *he
     gw_write_comment(f.fp, header);
     gw_fprintf(f.fp, "# units: metres; lines after 'n' are: x y r%s\n", s->body ? " body" : "");
     if (s->n_springs > 0)
-        gw_fprintf(f.fp, "# lines after 'springs' are: a b u, a contact (two particles' indices, or a particle "
+        gw_fprintf(f.fp, "# " SPRINGS_SAID " are: a b u, a contact (two particles' indices, or a particle "
                    "and a wall: left, right, bottom) and its tangential spring's elastic displacement (m)\n");
     gw_fprintf(f.fp, "width %.17g\nrm %.17g\nvolume_ratio %.17g\n", s->width, s->rm, s->volume_ratio);
     if (!isnan(s->porosity)) /* NaN: unknown, not written */
@@ -164,6 +167,7 @@ typedef struct text_in {
     char com[128];
     size_t ncom;
     int unsettled;
+    long spr_said; /* the line of the writer's "# lines after 'springs' ..." (0: none) */
     long *spr_lines; /* the line of each spring read (owned) */
 } text_in;
 
@@ -264,6 +268,8 @@ static int text_next(text_in *t, gw_err *err)
         if (comment) { /* a pile written before it settled: an impact on it warns */
             t->com[t->ncom] = '\0';
             t->unsettled |= layer_sample_settled_unsettled(t->com);
+            if (!t->spr_said && strncmp(t->com, SPRINGS_SAID, sizeof SPRINGS_SAID - 1) == 0)
+                t->spr_said = t->line;
         }
         if (len > 0 && t->buf[len - 1] == '\r')
             len--;
@@ -536,6 +542,10 @@ static int read_text(text_in *t, gw_layer_sample *s, gw_err *err)
     long *lines = NULL; /* the springs' lines */
     if (rc == GW_OK && (rc = text_next(t, err)) > 0)
         rc = read_springs(t, s, n, &lines, err);
+    else if (rc == 0 && t->spr_said) /* the writer said springs follow: the file was cut before them */
+        rc = gw_err_set(err, GW_EFORMAT, "sample '%s': ends after its %ld particles, but line %ld says a "
+                        "'springs M' section follows: the file is cut short (a sample without springs has "
+                        "no such line)", t->path, n, t->spr_said);
     if (rc != GW_OK) {
         free(lines);
         return rc;

@@ -35,7 +35,7 @@ PY=/usr/bin/python3
 
 # --- 2 a text sample cut inside its last line ---
 make_sample s.txt --n 40 --seed 2
-sed '/^springs /,$d' s.txt >p.txt          # the particles alone (a sample before springs)
+sed -e "/^# lines after 'springs'/d" -e '/^springs /,$d' s.txt >p.txt # the particles alone (a sample before springs)
 sed '/^# settings:/d' s.txt >h.txt           # springs, no settling record (hand-made)
 runs() { # runs WHAT FILE: layer-impact on FILE exits 0
     timeout -s KILL 60 "$GW" layer-impact --sample "$2" --t-max 0.002 --quiet >/dev/null 2>"$tmp/stderr" </dev/null &&
@@ -53,6 +53,12 @@ done
 head -c -1 p.txt >n.txt                        # the newline alone gone: a cut file too
 refused "the particles alone without the last newline: refused" \
     "^granwave layer-impact: sample 'n.txt': line [0-9]+: $CUT" layer-impact --sample n.txt --t-max 0.002 --out o
+# cut exactly where its springs section began: every count still agrees, and
+# the sample read as one without springs (the lead's check after the pass)
+sed '/^springs /,$d' s.txt >sc.txt
+refused "cut exactly before the springs the header announces: refused naming the announcing line" \
+    "^granwave layer-impact: sample 'sc.txt': ends after its 40 particles, but line [0-9]+ says a 'springs M' section follows: the file is cut short" \
+    layer-impact --sample sc.txt --t-max 0.002 --out o
 runs "springs without a settling record, whole: run" h.txt
 head -c -2 h.txt >hc.txt                       # the last spring's exponent e-0N cut to e-0
 refused "springs without a settling record, the last exponent cut: refused" \

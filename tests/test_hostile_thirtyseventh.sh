@@ -91,7 +91,7 @@ rc=$?
 # --- 3 zero-springs: a sample and its copy without springs are one pile ---
 make_sample s.txt --n 20 --width-rm 8 --seed 2
 grep -q '^springs [1-9]' s.txt && ok "layer-make's 20-disc sample carries springs" || ko "no springs in the sample"
-sed '/^springs /,$d' s.txt >bare.txt
+sed -e "/^# lines after 'springs'/d" -e '/^springs /,$d' s.txt >bare.txt
 zs_ini() { # FILE ZS [GRID LINE]
     printf '[sweep]\nmodel = layer\nout = o\n[grid]\n%s\n[params]\nt-max = 0.002\nzero-springs = %s\n' \
         "${3:-sample = s.txt, bare.txt}" "$2" >"$1"

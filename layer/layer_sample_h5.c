@@ -374,6 +374,25 @@ static int h5_header_read(hid_t f, char **out, const char *path, gw_err *err)
     } else if (ok) {
         buf[size] = '\0';
     }
+    /* A fixed-length string with a NUL inside: the conversion above ends it
+     * there, and what follows (the settings line with the settling's record)
+     * was dropped silently, so the impact ran unchecked. Its own bytes, as
+     * stored, may hold NULs only as the padding at their end. */
+    size_t nul_at = 0;
+    if (ok && var == 0) {
+        char *raw = malloc(size);
+        if (!raw)
+            nomem = 1, ok = 0;
+        else if (H5Aread(a, t, raw) < 0)
+            ok = 0;
+        const char *z = ok ? memchr(raw, '\0', size) : NULL;
+        for (const char *c = z; c && c < raw + size; c++)
+            if (*c != '\0') {
+                nul_at = (size_t)(z - raw) + 1, ok = 0;
+                break;
+            }
+        free(raw);
+    }
     if (vs)
         H5free_memory(vs);
     if (mt >= 0)
@@ -381,6 +400,10 @@ static int h5_header_read(hid_t f, char **out, const char *path, gw_err *err)
     attr_close(a, sp, t);
     if (!ok) {
         free(buf);
+        if (nul_at)
+            return gw_err_set(err, GW_EFORMAT, "sample '%s': HDF5 attribute header has a NUL byte at byte %zu of "
+                              "its %zu, text after it: a header is text (what follows a NUL would be lost)", path,
+                              nul_at, size);
         return nomem ? gw_err_set(err, GW_ENOMEM, "sample '%s': out of memory for its header attribute", path)
                      : gw_err_set(err, GW_EFORMAT, "sample '%s': HDF5 attribute header is not one string of at "
                                   "most 65536 bytes", path);

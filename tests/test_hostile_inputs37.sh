@@ -134,4 +134,26 @@ else
     ko "layer-impact on the unlinked sample: exit $?"
 fi
 
+
+# --- a NUL inside a fixed-length header attribute (the lead's check after the
+# pass): HDF5's string conversion ended the header at the NUL, dropping the
+# settings line after it, so the settling's record was lost and a friction of
+# 10 deg on a pile settled at 30 ran with exit 0 (s.h5 itself is refused) ---
+$PY - <<'EOF' || ko "making nul.h5"
+import h5py, shutil, numpy as np
+shutil.copy("s.h5", "nul.h5")
+with h5py.File("nul.h5", "r+") as f:
+    h = f.attrs["header"]
+    h = h.decode() if isinstance(h, bytes) else str(h)
+    i = h.index("settings:")
+    del f.attrs["header"]
+    f.attrs["header"] = np.bytes_((h[:i] + "\0" + h[i:]).encode())  # fixed length, the NUL kept
+EOF
+refused "an HDF5 header with a NUL before its settings line: refused naming the attribute" \
+    "^granwave layer-impact: sample 'nul.h5': HDF5 attribute header has a NUL byte at byte [0-9]+ of its [0-9]+, text after it" \
+    layer-impact --sample nul.h5 --t-max 0.002 --friction 10 --out o
+refused "the same sample whole at 10 deg: refused by its settling record (the control)" \
+    "^granwave layer-impact: sample 's.h5': it settled with friction 30 deg against the impact's 10" \
+    layer-impact --sample s.h5 --t-max 0.002 --friction 10 --out o
+
 test_summary test_hostile_inputs37

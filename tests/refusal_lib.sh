@@ -162,6 +162,19 @@ make_sample() {
     exit 1
 }
 
+# mpirun as root; have_mpi=1 when mpirun is here and the program links MPI
+mpi_setup() {
+    export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+    have_mpi=0
+    if command -v mpirun >/dev/null && ldd "$GW" 2>/dev/null | grep -q libmpi; then have_mpi=1; fi
+}
+
+# FILE: the sweep tests' chain grid, eight cases of about 0.1 to 0.3 s each
+# (rk4, 60 to 90 beads)
+chain_sweep8_ini() {
+    printf '[sweep]\nmodel = chain\n[grid]\nn = 60, 70, 80, 90\nvimp = 0.1, 0.2\n[params]\nsolver = rk4\n' >"$1"
+}
+
 settling_sweep_ini() {
     printf '[sweep]\nmodel = layer\n[grid]\nvi = 10, 20\n[params]\nsample = %s\nt-max = 0.002\n%s\n' "$2" "${3:-}" >"$1"
 }

@@ -17,20 +17,8 @@ GW=$1
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 # shellcheck source=tests/refusal_lib.sh
 . "$(dirname "${BASH_SOURCE[0]}")/refusal_lib.sh"
-export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
-have_mpi=0
-command -v mpirun >/dev/null && ldd "$GW" 2>/dev/null | grep -q libmpi && have_mpi=1
-
-# cases of about 0.1 to 0.3 s each (rk4, 60 to 90 beads)
-cat >"$tmp/a.ini" <<CFG
-[sweep]
-model = chain
-[grid]
-n = 60, 70, 80, 90
-vimp = 0.1, 0.2
-[params]
-solver = rk4
-CFG
+mpi_setup
+chain_sweep8_ini "$tmp/a.ini"
 "$GW" sweep "$tmp/a.ini" --out "$tmp/ref" --quiet --jobs 1 || ko "reference sweep"
 
 # each case journaled once, all 8

@@ -1,6 +1,7 @@
 /*
  * layer_test_util.h: a synthetic impact result for the crowns' tests: ns samples
- * every dt s over nr rings, the series zero, for the test to fill, and its free.
+ * every dt s over nr rings, the series zero, for the test to fill, and its free;
+ * and a small pile settled by layer-make for the tests that run impacts on one.
  */
 #ifndef GW_LAYER_TEST_UTIL_H
 #define GW_LAYER_TEST_UTIL_H
@@ -9,6 +10,7 @@
 #include <string.h>
 
 #include "gw_layer.h"
+#include "gw_layer_study.h"
 
 static inline gw_layer_impact_result test_crowns_result(int nr, int ns, double dt)
 {
@@ -38,6 +40,30 @@ static inline void test_crowns_result_free(gw_layer_impact_result *r)
     free(r->ring_kin);
     free(r->peak_strain_t);
     free(r->xcorr_delay);
+}
+
+/* A pile settled by layer-make into path, from settings given as name, value
+ * pairs ("out" is path): GW_OK, or the first failing call's code with err
+ * set. The sample's disc count in *n when n is not NULL. */
+static inline int test_make_pile(const char *path, int npairs, const char *const pairs[][2], int *n, gw_err *err)
+{
+    gw_layer_make_setup m;
+    gw_layer_make_setup_init(&m);
+    const gw_param *t = gw_layer_make_setup_params();
+    int rc = gw_param_set(t, &m, "out", path, err);
+    for (int i = 0; rc == GW_OK && i < npairs; i++)
+        rc = gw_param_set(t, &m, pairs[i][0], pairs[i][1], err);
+    if (rc == GW_OK) {
+        gw_layer_make_outcome mo;
+        rc = gw_layer_make_run(&m, &mo, err);
+        if (rc == GW_OK) {
+            if (n)
+                *n = mo.sample.n;
+            gw_layer_make_outcome_free(&mo);
+        }
+    }
+    gw_layer_make_setup_clear(&m);
+    return rc;
 }
 
 #endif

@@ -30,6 +30,7 @@
 #include "gw_layer_study.h"
 #include "gw_sweep.h"
 #include "gw_test.h"
+#include "layer_test_util.h"
 
 #define NCALLS_MAX 4096
 typedef struct parts {
@@ -61,19 +62,10 @@ int main(void)
     int fd = mkstemp(path);
     if (fd >= 0)
         close(fd);
-    gw_layer_make_setup m;
-    gw_layer_make_setup_init(&m);
     gw_err err = {{0}};
-    const gw_param *t = gw_layer_make_setup_params();
-    int rc = gw_param_set(t, &m, "n", "40", &err) | gw_param_set(t, &m, "seed", "1", &err) |
-             gw_param_set(t, &m, "out", path, &err);
-    gw_layer_make_outcome mo;
-    if (rc == GW_OK)
-        rc = gw_layer_make_run(&m, &mo, &err);
+    static const char *const pile[][2] = {{"n", "40"}, {"seed", "1"}};
+    int rc = test_make_pile(path, 2, pile, NULL, &err);
     GW_TEST_OK(rc == GW_OK, "a 40-disc pile (%s)", err.msg);
-    if (rc == GW_OK)
-        gw_layer_make_outcome_free(&mo);
-    gw_layer_make_setup_clear(&m);
     const int c_tend = column("t_end"), c_tf = column("t_f");
     GW_TEST_OK(c_tend >= 0 && c_tf >= 0, "the layer model's columns t_end and t_f");
     if (rc != GW_OK || c_tend < 0 || c_tf < 0) {

@@ -30,6 +30,7 @@
 #include "gw_layer_study.h"
 #include "gw_sweep.h"
 #include "gw_test.h"
+#include "layer_test_util.h"
 
 static int stop_after_two(void *ctx, long done, long total)
 {
@@ -123,19 +124,11 @@ static void layer(void)
     int fd = mkstemp(path);
     if (fd >= 0)
         close(fd);
-    gw_layer_make_setup m;
-    gw_layer_make_setup_init(&m);
     gw_err err = {{0}};
-    const gw_param *t = gw_layer_make_setup_params();
-    gw_param_set(t, &m, "n", "30", &err);
-    gw_param_set(t, &m, "width-rm", "10", &err);
-    gw_param_set(t, &m, "seed", "2", &err);
-    gw_param_set(t, &m, "out", path, &err);
-    gw_layer_make_outcome mo;
-    int rc = gw_layer_make_run(&m, &mo, &err);
-    gw_test_true(rc == GW_OK && mo.sample.n == 30, "pluviation of 30 discs, sample written");
-    gw_layer_make_outcome_free(&mo);
-    gw_layer_make_setup_clear(&m);
+    static const char *const pile[][2] = {{"n", "30"}, {"width-rm", "10"}, {"seed", "2"}};
+    int n = 0;
+    int rc = test_make_pile(path, 3, pile, &n, &err);
+    gw_test_true(rc == GW_OK && n == 30, "pluviation of 30 discs, sample written");
     gw_layer_impact_setup s;
     gw_layer_impact_setup_init(&s);
     gw_param_set(gw_layer_impact_setup_params(), &s, "sample", path, &err);

@@ -360,38 +360,40 @@ static int h5_header_read(hid_t f, char **out, const char *path, gw_err *err)
     int ok = sp >= 0 && H5Sget_simple_extent_npoints(sp) == 1 && H5Tget_class(t) == H5T_STRING && var >= 0 &&
              (var > 0 || (size > 0 && size <= 65536));
     char *vs = NULL, *buf = ok && var == 0 ? malloc(size + 1) : NULL;
-    hid_t mt = ok ? H5Tcopy(H5T_C_S1) : -1;
     int nomem = ok && var == 0 && !buf;
-    ok = ok && !nomem && mt >= 0 && H5Tset_size(mt, var > 0 ? H5T_VARIABLE : size + 1) >= 0 &&
-         H5Tset_strpad(mt, H5T_STR_NULLTERM) >= 0 && H5Aread(a, mt, var > 0 ? (void *)&vs : buf) >= 0;
+    size_t nul_at = 0;
+    hid_t mt = -1;
+    if (nomem)
+        ok = 0;
     if (ok && var > 0) { /* a variable-length string: copied out of HDF5's memory */
-        size_t len = vs ? strnlen(vs, 65537) : 0;
-        ok = vs && len <= 65536;
+        mt = H5Tcopy(H5T_C_S1);
+        ok = mt >= 0 && H5Tset_size(mt, H5T_VARIABLE) >= 0 && H5Aread(a, mt, (void *)&vs) >= 0;
+        size_t len = ok && vs ? strnlen(vs, 65537) : 0;
+        ok = ok && vs && len <= 65536;
         if (ok && !(buf = malloc(len + 1)))
             nomem = 1, ok = 0;
         if (ok)
             memcpy(buf, vs, len), buf[len] = '\0';
     } else if (ok) {
-        buf[size] = '\0';
-    }
-    /* A fixed-length string with a NUL inside: the conversion above ends it
-     * there, and what follows (the settings line with the settling's record)
-     * was dropped silently, so the impact ran unchecked. Its own bytes, as
-     * stored, may hold NULs only as the padding at their end. */
-    size_t nul_at = 0;
-    if (ok && var == 0) {
-        char *raw = malloc(size);
-        if (!raw)
-            nomem = 1, ok = 0;
-        else if (H5Aread(a, t, raw) < 0)
-            ok = 0;
-        const char *z = ok ? memchr(raw, '\0', size) : NULL;
-        for (const char *c = z; c && c < raw + size; c++)
+        /* A fixed-length string, read as its own bytes (the file's type, no
+         * conversion) and ended here by its padding: trailing spaces for
+         * space-padded, the first NUL otherwise. HDF5's conversion to a C
+         * string ended it at a NUL inside, and what followed (the settings
+         * line with the settling's record) was dropped silently, so the
+         * impact ran unchecked: NULs may only pad the end. */
+        ok = H5Aread(a, t, buf) >= 0;
+        size_t len = size;
+        if (ok && H5Tget_strpad(t) == H5T_STR_SPACEPAD)
+            while (len > 0 && buf[len - 1] == ' ')
+                len--;
+        const char *z = ok ? memchr(buf, '\0', len) : NULL;
+        for (const char *c = z; c && c < buf + len; c++)
             if (*c != '\0') {
-                nul_at = (size_t)(z - raw) + 1, ok = 0;
+                nul_at = (size_t)(z - buf) + 1, ok = 0;
                 break;
             }
-        free(raw);
+        if (ok)
+            buf[z ? (size_t)(z - buf) : len] = '\0';
     }
     if (vs)
         H5free_memory(vs);

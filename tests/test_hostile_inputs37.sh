@@ -156,4 +156,38 @@ refused "the same sample whole at 10 deg: refused by its settling record (the co
     "^granwave layer-impact: sample 's.h5': it settled with friction 30 deg against the impact's 10" \
     layer-impact --sample s.h5 --t-max 0.002 --friction 10 --out o
 
+# --- the header's padding (the lead's, when the reader took the fixed-length
+# header from its own bytes in one read instead of a converted read and a raw
+# one): a space-padded and a NUL-padded header are read to their end, so the
+# settling's record on their last lines still holds, and a NUL inside a
+# space-padded one is refused as in a NUL-terminated one ---
+$PY - <<'EOF' || ko "making space.h5, nullpad.h5 and spacenul.h5"
+import h5py, shutil, numpy as np
+with h5py.File("s.h5", "r") as f:
+    h = f.attrs["header"]
+    h = h.decode() if isinstance(h, bytes) else str(h)
+i = h.index("settings:")
+for name, pad, text, fill in (("space.h5", h5py.h5t.STR_SPACEPAD, h, b" "),
+                              ("nullpad.h5", h5py.h5t.STR_NULLPAD, h, b"\0"),
+                              ("spacenul.h5", h5py.h5t.STR_SPACEPAD, h[:i] + "\0" + h[i:], b" ")):
+    shutil.copy("s.h5", name)
+    with h5py.File(name, "r+") as f:
+        del f.attrs["header"]
+        b = text.encode() + fill * 40
+        tid = h5py.h5t.C_S1.copy()
+        tid.set_size(len(b))
+        tid.set_strpad(pad)
+        a = h5py.h5a.create(f.id, b"header", tid, h5py.h5s.create(h5py.h5s.SCALAR))
+        a.write(np.array(b, dtype="S%d" % len(b)), mtype=tid)  # the bytes as they are
+EOF
+for p in space nullpad; do
+    refused "a $p-padded header at 10 deg: refused by its settling record (read to its end)" \
+        "^granwave layer-impact: sample '$p.h5': it settled with friction 30 deg against the impact's 10" \
+        layer-impact --sample $p.h5 --t-max 0.002 --friction 10 --out o
+    runs "the $p-padded header at the pile's own friction: run" $p.h5
+done
+refused "a space-padded header with a NUL before its settings line: refused naming the attribute" \
+    "^granwave layer-impact: sample 'spacenul.h5': HDF5 attribute header has a NUL byte at byte [0-9]+ of its [0-9]+, text after it" \
+    layer-impact --sample spacenul.h5 --t-max 0.002 --friction 10 --out o
+
 test_summary test_hostile_inputs37

@@ -41,7 +41,7 @@ printf "${head}vi = 10, 0.25\n; the end" >com.ini # a comment ends the file
 printf "${head}vi = 10,\n    0.25" >cont.ini     # a continued list cut after its last value
 CUTC="the file ends inside this line \\(no newline after it\\): cut short\\?"
 refused "sweep over a config cut inside its last value: refused naming the file, the line and the value" \
-    "^granwave sweep: cut1.ini:8: $CUTC 'vi = 10, 0.2' may be a value cut" sweep cut1.ini --quiet
+    "^granwave sweep: cut1.ini:8: $CUTC 'vi = 10, 0.2' may hold a value cut short" sweep cut1.ini --quiet
 refused "sweep --check over that config: refused alike" \
     "^granwave sweep: cut1.ini:8: $CUTC" sweep cut1.ini --check
 refused "sweep over a config whose last value line lacks only its newline: refused" \

@@ -543,7 +543,8 @@ static int scan_lines(const char *text, const char *name, int whole, parse_ctx *
              * error). The rule of text samples (layer_sample.c). */
             if (!e && whole && !(len > 0 && p[len - 1] == '\r'))
                 return gw_err_set(err, GW_EINVAL, "%s:%ld: the file ends inside this line (no newline after it): "
-                                  "cut short? '%.*s' may be a value cut in its digits; end the file with a newline",
+                                  "cut short? '%.*s' may hold a value cut short (0.25 cut to 0.2 still reads); end the file "
+                                  "with a newline",
                                   name, ln, (int)(end - i), p + i);
         }
         if (!e)

@@ -97,7 +97,10 @@ extern const int gw_stats_table_nrequired;
  * (a sweep writes its table when every case has run): a row deleted, a case
  * number beyond C or a header edited is refused naming the first missing case;
  * with the "# grid" lines each row's grid values must be those of its case
- * number. A FIFO, device or directory is refused (GW_EFORMAT) without reading it. */
+ * number. A FIFO, device or directory is refused (GW_EFORMAT) without reading it.
+ * A file whose last row has no newline after it (LF, or the CR of a CR LF) was
+ * cut short: GW_EFORMAT "path:line: the file ends inside this line ..." (a
+ * last comment line may; text given to gw_stats_table_parse may end so). */
 int gw_stats_table_read(const char *path, gw_stats_table *t, gw_err *err);
 int gw_stats_table_parse(const char *text, const char *name, gw_stats_table *t,
                            gw_err *err);

@@ -580,6 +580,26 @@ int gw_stats_table_read(const char *path, gw_stats_table *t, gw_err *err)
             ln += *q == '\n';
         rc = gw_err_set(err, GW_EFORMAT, "%s:%ld: binary data (NUL byte), not a CSV table", path, ln);
     }
+    /* A row without its newline (LF, or the CR of a CR LF) is the end of a
+     * table cut short (a full disk, a copy stopped): a sweep ends every line,
+     * and a number cut in its digits still reads. The hash columns catch a
+     * cut in the row's hashes, but a table without them (written before
+     * them, or made by hand) read its last e_n 0.734 cut to 0.7 into the
+     * means with exit 0. A comment line may end the file so. */
+    if (rc == GW_OK && len > 0 && buf[len - 1] != '\n' && buf[len - 1] != '\r') {
+        size_t s = len, lead;
+        long ln = 1;
+        while (s > 0 && buf[s - 1] != '\n')
+            s--;
+        for (size_t q = 0; q < s; q++)
+            ln += buf[q] == '\n';
+        lead = s + (ln == 1 && len - s >= 3 && memcmp(buf, "\xEF\xBB\xBF", 3) == 0 ? 3 : 0);
+        while (lead < len && (buf[lead] == ' ' || buf[lead] == '\t'))
+            lead++;
+        if (lead < len && buf[lead] != '#')
+            rc = gw_err_set(err, GW_EFORMAT, "%s:%ld: the file ends inside this line (no newline after it): cut "
+                            "short? a sweep ends every line of its table", path, ln);
+    }
     if (rc == GW_OK)
         rc = gw_stats_table_parse(buf, path, t, err);
     if (rc == GW_OK) {

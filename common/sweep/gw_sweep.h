@@ -151,12 +151,16 @@ void gw_sweep_checks_end(const gw_sweep_model *m, void *memo);
  * resolved, then the value as written), so the same config reads the same
  * files from any working directory and its journal and table record them.
  * A relative read_key value that names nothing there: GW_EINVAL "path: [grid]
- * sample = S: no such file /DIR/S (...)". */
+ * sample = S: no such file /DIR/S (...)". A file whose last line holding a
+ * key or a value has no newline after it (LF, or the CR of a CR LF) may be
+ * cut short inside that value: GW_EINVAL "path:line: the file ends inside
+ * this line ...". */
 int gw_sweep_config_read(const char *path, const gw_sweep_model *const *models, int nmodels,
                          gw_sweep_config *cfg, const gw_sweep_model **model, gw_err *err);
 /* The same from a string (name is used in messages; relative paths stay as
  * written: the caller's working directory), bounded as a file is: a text
- * longer than GW_SWEEP_CONFIG_MAX bytes is GW_EINVAL. */
+ * longer than GW_SWEEP_CONFIG_MAX bytes is GW_EINVAL. The text may end
+ * without a newline. */
 int gw_sweep_config_read_string(const char *text, const char *name, const gw_sweep_model *const *models,
                                 int nmodels, gw_sweep_config *cfg, const gw_sweep_model **model, gw_err *err);
 void gw_sweep_config_free(gw_sweep_config *cfg);

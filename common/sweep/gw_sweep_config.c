@@ -443,7 +443,10 @@ static long comment_hash(const char *p, size_t from, size_t end)
     return -1;
 }
 
-static int scan_lines(const char *text, const char *name, parse_ctx *pc, gw_err *err)
+/* whole: the text is a file's (gw_sweep_config_read), whose last line holding
+ * a value must end with a newline (see below); a config given as text
+ * (gw_sweep_config_read_string, Python's sweep) may end without one. */
+static int scan_lines(const char *text, const char *name, int whole, parse_ctx *pc, gw_err *err)
 {
     char key[64] = "", sect[64] = "";
     long key_ln = 0, ln = 1, cap = 0;
@@ -531,6 +534,18 @@ static int scan_lines(const char *text, const char *name, parse_ctx *pc, gw_err 
                 pc->calls[pc->ncalls - 1] |= 2; /* the previous call is this key's (blank and comment lines make none) */
             pc->ncalls++;
             comma = end > i && p[end - 1] == ',';
+            /* A file whose last value line has no newline after it (LF, or the
+             * CR of a CR LF) may be a file cut short there, and a value cut in
+             * its digits still reads: 'vi = 10, 0.25' cut to 'vi = 10, 0.2'
+             * ran another grid with exit 0, 't-max = 0.002' cut to
+             * 't-max = 0.00' was refused only as a bad value. A comment or a
+             * section header cut short changes nothing read (or is a syntax
+             * error). The rule of text samples (layer_sample.c). */
+            if (!e && whole && !(len > 0 && p[len - 1] == '\r'))
+                return gw_err_set(err, GW_EINVAL, "%s:%ld: the file ends inside this line (no newline after it): "
+                                  "cut short? '%.*s' may hold a value cut short (0.25 cut to 0.2 still reads); end the file "
+                                  "with a newline",
+                                  name, ln, (int)(end - i), p + i);
         }
         if (!e)
             break;
@@ -544,7 +559,7 @@ static int scan_lines(const char *text, const char *name, parse_ctx *pc, gw_err 
  * after '49, 5' (refused as the value 5 listed twice; granwave.sweep writes
  * its lists this way), a longer value ended as a syntax error on the wrong
  * line or a path cut short. Lines that do not fit are refused whole. */
-static int lines_fit(const char *text, const char *name, parse_ctx *pc, gw_err *err)
+static int lines_fit(const char *text, const char *name, int whole, parse_ctx *pc, gw_err *err)
 {
     const long max = INI_MAX_LINE - 2; /* the newline and the NUL fit too */
     long ln = 1;
@@ -573,7 +588,7 @@ static int lines_fit(const char *text, const char *name, parse_ctx *pc, gw_err *
             break;
         p = e + 1;
     }
-    return scan_lines(text, name, pc, err);
+    return scan_lines(text, name, whole, pc, err);
 }
 
 int gw_sweep_config_read(const char *path, const gw_sweep_model *const *models, int nmodels,
@@ -600,7 +615,7 @@ int gw_sweep_config_read(const char *path, const gw_sweep_model *const *models, 
         free(text);
         return gw_err_set(err, GW_EINVAL, "%s:%ld: a NUL byte (binary data, not a config)", path, ln);
     }
-    if ((rc = lines_fit(text, path, &pc, err)) != GW_OK) {
+    if ((rc = lines_fit(text, path, 1, &pc, err)) != GW_OK) {
         free(text);
         free(pc.calls);
         return rc == GW_ENOMEM ? rc : GW_EINVAL;
@@ -641,7 +656,7 @@ int gw_sweep_config_read_string(const char *text, const char *name, const gw_swe
         return gw_err_set(err, GW_EINVAL, "%s: the config takes %zu bytes, above the %ld of a sweep config", name,
                           len, GW_SWEEP_CONFIG_MAX);
     parse_ctx pc = {cfg, models, nmodels, "", 0, 0, NULL, 0, 0, NULL, 0};
-    int lrc = lines_fit(text, name, &pc, err);
+    int lrc = lines_fit(text, name, 0, &pc, err);
     if (lrc != GW_OK) {
         free(pc.calls);
         return lrc == GW_ENOMEM ? lrc : GW_EINVAL;

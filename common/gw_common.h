@@ -174,7 +174,9 @@ typedef struct gw_afile {
 /* Open path for writing through a temporary file: f->fp is the stream. On
  * failure nothing is created (and f is safe to abort). A symbolic link at path
  * is written through: the temporary goes beside its target, which the commit
- * replaces (f->path), and the link stays; a link to nothing is GW_EINVAL. */
+ * replaces (f->path), and the link stays; a link to nothing is GW_EINVAL, and
+ * so is an empty path. An f open now (opened, not yet committed or aborted) is
+ * refused, GW_EINVAL, and left as it is (each of the three opens). */
 int gw_afile_open(gw_afile *f, const char *path, gw_err *err);
 /* The same for a writer that creates the file itself by name (HDF5's
  * H5Fcreate(f->tmp, H5F_ACC_TRUNC, ...)): f->tmp is an empty file reserving a

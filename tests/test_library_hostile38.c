@@ -23,7 +23,12 @@
  *   - the solver took a NaN or infinite t0 (rk4 then "reached" any time with
  *     GW_OK and the state untouched), and gw_solver_advance a NaN or infinite
  *     tout (rk4: GW_OK with *t not tout; cvode a convergence failure), and
- *     gw_solver_reset a NaN time.
+ *     gw_solver_reset a NaN time;
+ *   - gw_afile_open (and _openat) on a file open now zeroed it: its temporary
+ *     stayed beside the file, and the commit gave back the mask the first open
+ *     had set, leaving SIGINT, SIGTERM and SIGHUP blocked in the thread for
+ *     good; gw_afile_open("") made its temporary in the working directory and
+ *     only the commit failed.
  * Each refusal has a control: the valid call next to it still gives its value
  * (a journal row the sweep's own check takes, the Hertz coefficient of steel
  * against its closed form to 1e-15, the layer law's thick-layer limit equal to
@@ -32,11 +37,15 @@
  * anything printed fails that case.
  */
 #define _POSIX_C_SOURCE 200809L
+#include <dirent.h>
+#include <fcntl.h>
 #include <limits.h>
 #include <math.h>
+#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -117,6 +126,91 @@ static int path_join_null(void)
     EXPECT(gw_path_join(NULL, 16, "a", "b") == GW_EINVAL);
     EXPECT(gw_path_join(buf, sizeof buf, "dir", "name") == GW_OK && strcmp(buf, "dir/name") == 0);
     EXPECT(gw_path_join(buf, 8, "dir", "name") == GW_EINVAL); /* does not fit: as before */
+    return 0;
+}
+
+/* ---- atomic files: opened again while open, an empty path ---- */
+
+/* entries of dir besides . and .. */
+static int entries(const char *dir)
+{
+    DIR *d = opendir(dir);
+    int n = 0;
+    for (struct dirent *e; d && (e = readdir(d));)
+        n += strcmp(e->d_name, ".") != 0 && strcmp(e->d_name, "..") != 0;
+    if (d)
+        closedir(d);
+    return d ? n : -1;
+}
+
+static int sigint_blocked(void)
+{
+    sigset_t m;
+    sigprocmask(SIG_SETMASK, NULL, &m);
+    return sigismember(&m, SIGINT);
+}
+
+static int read_is(const char *path, const char *want)
+{
+    char got[64] = "";
+    FILE *fp = fopen(path, "r");
+    size_t k = fp ? fread(got, 1, sizeof got - 1, fp) : 0;
+    got[k] = '\0';
+    if (fp)
+        fclose(fp);
+    return strcmp(got, want) == 0;
+}
+
+static int afile_open_again(void)
+{
+    char dir[64], a[96], b[96];
+    snprintf(dir, sizeof dir, "/tmp/gw_hostile38.%ld", (long)getpid());
+    EXPECT(mkdir(dir, 0700) == 0);
+    snprintf(a, sizeof a, "%s/a.txt", dir);
+    snprintf(b, sizeof b, "%s/b.txt", dir);
+    EXPECT(!sigint_blocked());
+    for (int at = 0; at < 2; at++) {
+        const int dfd = open(dir, O_RDONLY | O_DIRECTORY);
+        gw_afile f;
+        gw_err e = {{0}};
+        EXPECT(dfd >= 0);
+        EXPECT((at ? gw_afile_openat(&f, dfd, dir, "a.txt", &e) : gw_afile_open(&f, a, &e)) == GW_OK);
+        fputs(at ? "second" : "first", f.fp);
+        FILE *fp = f.fp;
+        /* opened again while open: refused, f as it was (its stream, its temporary) */
+        if (!refused(gw_afile_open(&f, b, &e), &e, "is open") ||
+            !refused(gw_afile_openat(&f, dfd, dir, "b.txt", &e), &e, "is open"))
+            return 1;
+        EXPECT(f.fp == fp && strstr(f.path, "a.txt") && f.tmp[0]);
+        EXPECT(gw_afile_commit(&f, &e) == GW_OK);
+        /* the file placed, no temporary left beside it, the signals given back */
+        EXPECT(read_is(a, at ? "second" : "first") && entries(dir) == 1 && !sigint_blocked());
+        /* control: committed, it opens again (and aborts, leaving the file) */
+        EXPECT(gw_afile_open(&f, b, &e) == GW_OK);
+        gw_afile_abort(&f);
+        EXPECT(entries(dir) == 1 && !sigint_blocked());
+        close(dfd);
+    }
+    unlink(a);
+    rmdir(dir);
+    return 0;
+}
+
+static int afile_empty_path(void)
+{
+    char dir[64], cwd[4096];
+    snprintf(dir, sizeof dir, "/tmp/gw_hostile38e.%ld", (long)getpid());
+    EXPECT(mkdir(dir, 0700) == 0 && getcwd(cwd, sizeof cwd) && chdir(dir) == 0);
+    gw_afile f;
+    gw_err e = {{0}};
+    const int rc = gw_afile_open(&f, "", &e);
+    const int n = entries(".");
+    gw_afile_abort(rc == GW_OK ? &f : NULL);
+    EXPECT(chdir(cwd) == 0);
+    rmdir(dir);
+    if (!refused(rc, &e, "an empty path names no file"))
+        return 1;
+    EXPECT(n == 0 && !sigint_blocked()); /* its temporary was made in the working directory */
     return 0;
 }
 
@@ -301,6 +395,8 @@ int main(void)
         {"gw_sweep_format_row: a case the config has not, ncol < 0", sweep_row_case_range},
         {"gw_json_bools: NULL values", json_bools_null},
         {"gw_path_join: NULL buf, dir, name", path_join_null},
+        {"gw_afile_open/openat: a file opened again while open", afile_open_again},
+        {"gw_afile_open: an empty path", afile_empty_path},
         {"gw_hertz_coefficient: materials and radii no contact has", hertz_invalid_material},
         {"gw_layer_law_create: a sphere material filled by hand", layer_law_invalid_bead},
         {"gw_sheet_apply: bead, wall and sheet materials filled by hand", sheet_apply_invalid_material},

@@ -47,6 +47,7 @@
 #include <gsl/gsl_linalg.h>
 
 #include "chain_layer.h"
+#include "chain_material.h"
 #include "gw_chain.h"
 #include "gw_global.h"
 
@@ -438,8 +439,8 @@ int gw_layer_law_create(double radius, const gw_material *bead, double thickness
         (rc = gw_check_range(young, "layer law: Young modulus (Pa)", 1e3, 1e13, err)) != GW_OK ||
         (rc = gw_check_range(poisson, "layer law: Poisson ratio", 0.0, 0.5, err)) != GW_OK)
         return rc;
-    if (!bead)
-        return gw_err_set(err, GW_EINVAL, "layer law: no sphere material");
+    if ((rc = chain_material_check(bead, "layer law: sphere material", err)) != GW_OK)
+        return rc;
     layer_key k;
     const double v[LAYER_KEY] = {radius, thickness, young, poisson, bead->young, bead->poisson};
     memcpy(k.v, v, sizeof v);

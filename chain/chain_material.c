@@ -16,6 +16,7 @@
 
 #include <gsl/gsl_sf_gamma.h>
 
+#include "chain_material.h"
 #include "gw_chain.h"
 
 /* The experiment's steel is from docs/physics.md; the others are handbook values
@@ -43,6 +44,24 @@ const char *gw_material_names(void)
     return "steel, rigid, brass, aluminium, glass, pmma, pvc";
 }
 
+int chain_material_ok(const gw_material *m)
+{
+    return m && m->young > 0 && m->poisson > -1 && m->poisson <= 0.5; /* NaN fails each */
+}
+
+int chain_material_check(const gw_material *m, const char *what, gw_err *err)
+{
+    if (!m)
+        return gw_err_set(err, GW_EINVAL, "%s: no material (NULL)", what);
+    const char *name = m->name ? m->name : "(unnamed)";
+    if (!(m->young > 0))
+        return gw_err_set(err, GW_EINVAL, "%s '%s': Young modulus %g Pa is not in (0, inf] (inf: rigid)", what,
+                          name, m->young);
+    if (!(m->poisson > -1 && m->poisson <= 0.5))
+        return gw_err_set(err, GW_EINVAL, "%s '%s': Poisson ratio %g is not in (-1, 0.5]", what, name, m->poisson);
+    return GW_OK;
+}
+
 static double compliance(const gw_material *m)
 {
     return isinf(m->young) ? 0.0 : (1.0 - m->poisson * m->poisson) / m->young;
@@ -51,7 +70,10 @@ static double compliance(const gw_material *m)
 double gw_hertz_coefficient(double r1, const gw_material *m1, double r2,
                             const gw_material *m2)
 {
-    if (!m1 || !m2) /* no material: no coefficient */
+    /* no material, or one no contact has (a Young modulus not above 0, a
+     * Poisson ratio outside (-1, 0.5], NaN), or a radius not above 0: no
+     * coefficient (they gave INFINITY, a rigid contact) */
+    if (!chain_material_ok(m1) || !chain_material_ok(m2) || !(r1 > 0) || !(r2 > 0))
         return NAN;
     double inv_r = (isinf(r1) ? 0.0 : 1.0 / r1) + (isinf(r2) ? 0.0 : 1.0 / r2);
     double c = compliance(m1) + compliance(m2);

@@ -13,6 +13,7 @@
 #include <math.h>
 #include <string.h>
 
+#include "chain_material.h"
 #include "gw_chain.h"
 
 static const char *const law_names[] = {"fitted", "hertz", "layer", "material"};
@@ -47,6 +48,17 @@ int gw_sheet_apply(const gw_sheet *s, gw_sheet_law law, double yield, double los
                           isnan(yield) || isinf(yield) ? yield : loss);
     if (!bead || !wall)
         return gw_err_set(err, GW_EINVAL, "gw_sheet_apply: %s is NULL", !bead ? "bead" : "wall");
+    /* materials filled by hand: a Young modulus of 0 or below, NaN, a Poisson
+     * ratio outside (-1, 0.5] gave a law or a "rigid" coefficient with GW_OK */
+    int rc;
+    if ((rc = chain_material_check(bead, "bead material", err)) != GW_OK ||
+        (rc = chain_material_check(wall, "wall material", err)) != GW_OK)
+        return rc;
+    if (law != GW_SHEET_FITTED && s->thickness > 0) {
+        const gw_material own = {s->material ? s->material : s->name, s->young, s->poisson, NAN};
+        if ((rc = chain_material_check(&own, "sheet material", err)) != GW_OK)
+            return rc;
+    }
     memset(&p->wall, 0, sizeof p->wall);
     if (law == GW_SHEET_FITTED) {
         p->kwall = gw_sheet_kwall(s, p->mass);
@@ -65,7 +77,7 @@ int gw_sheet_apply(const gw_sheet *s, gw_sheet_law law, double yield, double los
         p->wall.yield_pressure = GW_SHEET_TABOR * y;
         return GW_OK;
     }
-    int rc = gw_layer_law_create(p->radius, bead, s->thickness, s->young, s->poisson, layer, err);
+    rc = gw_layer_law_create(p->radius, bead, s->thickness, s->young, s->poisson, layer, err);
     if (rc != GW_OK)
         return rc;
     p->wall.layer = *layer;

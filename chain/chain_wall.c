@@ -113,7 +113,10 @@ int chain_wall_law_init(chain_wall_law *w, const gw_chain_params *p, gw_err *err
     if (p->wall.loss > 0) {
         double a, b;
         int n = chain_wall_arms(&p->wall, &a, &b);
-        double wc = 1.0 / sqrt(a * b), s1 = 0.0, s2 = 0.0;
+        /* the band centre 1/sqrt(a b) as 1/(sqrt(a) sqrt(b)): a b underflowed to 0
+         * below about 1e-162 s each (wc infinite, every sum NaN: "tan(delta) = 10 is
+         * beyond what 1 Maxwell arm(s) give (< -nan)", and any loss refused so) */
+        double wc = 1.0 / (sqrt(a) * sqrt(b)), s1 = 0.0, s2 = 0.0;
         for (int j = 0; j < n; j++) {
             w->tau[j] = n > 1 ? a * pow(b / a, (double)j / (n - 1)) : a;
             double x = wc * w->tau[j];

@@ -36,7 +36,10 @@ const gw_material *gw_material_find(const char *name);
 const char *gw_material_names(void);
 
 /* Hertz coefficient of two spheres: k = (4/3) E* sqrt(R_eff), N/m^1.5; a radius of
- * INFINITY is a plane. (F.12) for equal spheres, (F.3) for sphere on plane. */
+ * INFINITY is a plane. (F.12) for equal spheres, (F.3) for sphere on plane. NaN
+ * for a NULL material, one whose Young modulus is not in (0, INFINITY] or whose
+ * Poisson ratio is not in (-1, 0.5], or a radius not > 0 (they gave INFINITY, a
+ * rigid contact). */
 double gw_hertz_coefficient(double r1, const gw_material *m1, double r2,
                             const gw_material *m2);
 
@@ -108,7 +111,8 @@ typedef struct gw_layer_law gw_layer_law;
  * ratio, compared bit for bit) with one more reference: a law is built once per
  * distinct set of inputs, and up to 256 laws nobody references are kept for a
  * later create. GW_EINVAL (radius in [1e-6, 1] m, h in [1e-7, 1] m, E in
- * [1e3, 1e13] Pa, nu in [0, 0.5]), GW_ENOMEM, GW_ESOLVER. The law is read-only
+ * [1e3, 1e13] Pa, nu in [0, 0.5]; the sphere's material with a Young modulus in
+ * (0, INFINITY] and a Poisson ratio in (-1, 0.5]), GW_ENOMEM, GW_ESOLVER. The law is read-only
  * and may be shared by threads. */
 int gw_layer_law_create(double radius, const gw_material *bead, double thickness, double young,
                         double poisson, gw_layer_law **out, gw_err *err);
@@ -262,7 +266,9 @@ int gw_chain_params_validate(const gw_chain_params *p, gw_err *err);
  * and the Hertz time scale). yield and loss override the sheet's constants when
  * >= 0 (0: none), each finite. A layer law is created into *layer (caller frees with
  * gw_layer_law_free after the runs; NULL when none). GW_EINVAL (also for a law
- * outside gw_sheet_law or a NULL pointer), GW_ENOMEM, GW_ESOLVER with a message. */
+ * outside gw_sheet_law, a NULL pointer, a bead or wall material, or the sheet's
+ * own under a law that uses it, whose Young modulus is not in (0, INFINITY] or
+ * Poisson ratio not in (-1, 0.5]), GW_ENOMEM, GW_ESOLVER with a message. */
 int gw_sheet_apply(const gw_sheet *s, gw_sheet_law law, double yield, double loss,
                    const gw_material *bead, const gw_material *wall, gw_chain_params *p,
                    gw_layer_law **layer, gw_err *err);

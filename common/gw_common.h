@@ -174,7 +174,9 @@ typedef struct gw_afile {
 /* Open path for writing through a temporary file: f->fp is the stream. On
  * failure nothing is created (and f is safe to abort). A symbolic link at path
  * is written through: the temporary goes beside its target, which the commit
- * replaces (f->path), and the link stays; a link to nothing is GW_EINVAL. */
+ * replaces (f->path), and the link stays; a link to nothing is GW_EINVAL, and
+ * so is an empty path. An f open now (opened, not yet committed or aborted) is
+ * refused, GW_EINVAL, and left as it is (each of the three opens). */
 int gw_afile_open(gw_afile *f, const char *path, gw_err *err);
 /* The same for a writer that creates the file itself by name (HDF5's
  * H5Fcreate(f->tmp, H5F_ACC_TRUNC, ...)): f->tmp is an empty file reserving a
@@ -279,7 +281,9 @@ void gw_write_comment(FILE *fp, const char *text);
 
 /* Create directory (and parents) if missing. */
 int gw_mkdir_p(const char *path, gw_err *err);
-/* Join dir and name into buf (size n); GW_EINVAL if it does not fit. */
+/* Join dir and name into buf (size n); GW_EINVAL if it does not fit, or for a
+ * NULL buf, dir or name (buf then unchanged; a NULL dir was joined as
+ * "(null)/name" with GW_OK, a NULL buf written to). */
 int gw_path_join(char *buf, size_t n, const char *dir, const char *name);
 /* Cut the path in buf (at least 2 bytes) to its directory, in place: "a/b" ->
  * "a", "/b" -> "/", "b" -> "." (trailing slashes are the caller's). */
@@ -374,7 +378,8 @@ double gw_peak_offset_log(double pm, double p0, double pp);
 
 /* ---- JSON (cJSON) ---- */
 
-/* New JSON array of n doubles (NaN and infinities print as null). NULL on ENOMEM. */
+/* New JSON array of n doubles (NaN and infinities print as null). NULL on ENOMEM,
+ * and for v NULL with n > 0 (each of the three). */
 cJSON *gw_json_doubles(const double *v, int n);
 cJSON *gw_json_ints(const int *v, int n);
 /* New JSON array of n flags: false for 0, true otherwise. NULL on ENOMEM. */

@@ -28,6 +28,7 @@
 
 #include "gw_common.h"
 #include "gw_locale.h"
+#include "gw_global.h"
 #include "gw_io_impl.h"
 
 _Static_assert(sizeof(sigset_t) <= sizeof(((gw_afile *)0)->oldmask), "sigset_t does not fit");
@@ -49,6 +50,61 @@ void gw_io_sig_release(unsigned char *old, int *masked)
     if (*masked)
         pthread_sigmask(SIG_SETMASK, (sigset_t *)(void *)old, NULL);
     *masked = 0;
+}
+
+/* The gw_afile structs open now (opened and not yet committed or aborted),
+ * by address, so that an open on one of them is refused before it touches
+ * it. An open on an open file zeroed it: its temporary stayed on disk, an
+ * orphan in the signals' table, and the signal mask it had saved was the
+ * one the first open had set, so the commit left SIGINT, SIGTERM and SIGHUP
+ * blocked in the thread for good (Ctrl-C did nothing after). Only addresses
+ * are compared: a struct never opened is never read. */
+static struct {
+    const gw_afile **v;
+    size_t n, cap;
+} opened;
+static gw_forklock opened_lock = GW_FORKLOCK(NULL);
+
+static int afile_is_open(const gw_afile *f)
+{
+    int found = 0;
+    gw_forklock_take(&opened_lock);
+    for (size_t i = 0; i < opened.n && !found; i++)
+        found = opened.v[i] == f;
+    gw_forklock_give(&opened_lock);
+    return found;
+}
+
+/* f is open now (out of memory: not recorded, the check is then skipped) */
+static void afile_opened(const gw_afile *f)
+{
+    gw_forklock_take(&opened_lock);
+    if (opened.n == opened.cap) {
+        const size_t cap = opened.cap ? 2 * opened.cap : 16;
+        const gw_afile **v = realloc(opened.v, cap * sizeof *v);
+        if (v)
+            opened.v = v, opened.cap = cap;
+    }
+    if (opened.n < opened.cap)
+        opened.v[opened.n++] = f;
+    gw_forklock_give(&opened_lock);
+}
+
+static void afile_closed(const gw_afile *f)
+{
+    gw_forklock_take(&opened_lock);
+    for (size_t i = 0; i < opened.n; i++)
+        if (opened.v[i] == f) {
+            opened.v[i] = opened.v[--opened.n];
+            break;
+        }
+    gw_forklock_give(&opened_lock);
+}
+
+static int refuse_open(const gw_afile *f, const char *call, gw_err *err)
+{
+    return gw_err_set(err, GW_EINVAL, "%s: f is open on '%s' (not yet committed or aborted): commit or abort it "
+                      "before opening it again", call, f->path);
 }
 
 static void hold_signals(gw_afile *f) { gw_io_sig_hold(f->oldmask, &f->masked); }
@@ -77,6 +133,11 @@ int gw_io_link_refused(const char *path, const char *what, int e, gw_err *err)
  * device node into a regular file), and fails after the run on a directory. */
 int gw_io_write_target(const char *path, char *out, size_t n, const char *what, gw_err *err)
 {
+    /* "" names no file: gw_afile_open made its temporary in the working
+     * directory and the commit failed ("write failed: No such file or
+     * directory") once the work was done */
+    if (!*path)
+        return gw_err_set(err, GW_EINVAL, "%s: an empty path names no file", what && *what ? what : "output");
     struct stat st;
     const int there = lstat(path, &st) == 0;
     if (!there || !S_ISLNK(st.st_mode)) {
@@ -302,6 +363,7 @@ static int adopt_temp(gw_afile *f, int fd, int bind, mode_t mode, gw_err *err)
         release_signals(f);
         return gw_err_set(err, gw_io_status(e), "%s: cannot open: %s", f->path, strerror(e));
     }
+    afile_opened(f);
     return GW_OK;
 }
 
@@ -309,6 +371,8 @@ int gw_afile_open(gw_afile *f, const char *path, gw_err *err)
 {
     if (!f || !path)
         return gw_err_set(err, GW_EINVAL, "gw_afile_open: %s is NULL", !f ? "f" : "path");
+    if (afile_is_open(f))
+        return refuse_open(f, "gw_afile_open", err);
     memset(f, 0, sizeof *f);
     hold_signals(f);
     int rc = gw_io_write_target(path, f->path, sizeof f->path, path, err);
@@ -391,6 +455,8 @@ int gw_afile_openat(gw_afile *f, int dirfd, const char *dir, const char *name, g
 {
     if (!f || !dir || !name)
         return gw_err_set(err, GW_EINVAL, "gw_afile_openat: %s is NULL", !f ? "f" : !dir ? "dir" : "name");
+    if (afile_is_open(f))
+        return refuse_open(f, "gw_afile_openat", err);
     memset(f, 0, sizeof *f);
     hold_signals(f);
     char rel[4096];
@@ -464,6 +530,7 @@ static int place(gw_afile *f, int *saved)
  * the signals given back */
 static int commit_end(gw_afile *f, int bad, int saved, gw_err *err)
 {
+    afile_closed(f);
     if (bad)
         discard(f);
     f->tmp[0] = '\0';
@@ -498,6 +565,7 @@ int gw_afile_commit(gw_afile *f, gw_err *err)
     if (f->named && !f->fp && f->tmp[0])
         return commit_named(f, err);
     if (!f->fp) {
+        afile_closed(f);
         release_dir(f);
         release_signals(f);
         return gw_err_set(err, GW_EIO, "%s: file not open", f->path);
@@ -538,6 +606,7 @@ void gw_afile_abort(gw_afile *f)
 {
     if (!f)
         return;
+    afile_closed(f);
     if (f->fp) {
         fclose(f->fp);
         f->fp = NULL;

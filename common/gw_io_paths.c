@@ -88,6 +88,8 @@ int gw_mkdir_p(const char *path, gw_err *err)
 
 int gw_path_join(char *buf, size_t n, const char *dir, const char *name)
 {
+    if (!buf || !dir || !name)
+        return GW_EINVAL;
     int w = gw_snprintf(buf, n, "%s/%s", dir, name);
     return (w < 0 || (size_t)w >= n) ? GW_EINVAL : GW_OK;
 }

@@ -72,14 +72,16 @@ cJSON *gw_json_ints(const int *v, int n)
 
 cJSON *gw_json_bools(const int *v, int n)
 {
+    if (!v && n > 0) /* no values: NULL, as gw_json_doubles and gw_json_ints (it read v[0]: SIGSEGV) */
+        return NULL;
     cJSON *a = cJSON_CreateArray();
     for (int i = 0; a && i < n; i++) {
         cJSON *b = cJSON_CreateBool(v[i] != 0);
-        if (!b) {
+        if (!b || !cJSON_AddItemToArray(a, b)) {
+            cJSON_Delete(b);
             cJSON_Delete(a);
             return NULL;
         }
-        cJSON_AddItemToArray(a, b);
     }
     return a;
 }

@@ -144,6 +144,10 @@ int gw_solver_create(const gw_solver_type *type, const gw_system *sys,
     for (long i = 0; i < sys->dim; i++)
         if (!isfinite(y0[i]))
             return gw_err_set(err, GW_EINVAL, "solver: initial state component %ld is not finite", i);
+    /* a NaN or infinite start ran: rk4 "reached" any time with GW_OK and the
+     * state untouched, cvode and arkode failed at t = nan */
+    if (!isfinite(t0))
+        return gw_err_set(err, GW_EINVAL, "solver: t0 = %g is not a finite time", t0);
 
     gw_solver *s = calloc(1, sizeof *s);
     if (!s)
@@ -178,6 +182,10 @@ int gw_solver_advance(gw_solver *s, double tout, double *t, double *y, int *root
     if (!s || !t || !y)
         return GW_EINVAL;
     s->errmsg[0] = '\0';
+    if (!isfinite(tout)) { /* rk4 returned GW_OK at its own time (*t != tout), cvode a convergence failure */
+        gw_solver_set_error(s, "%s: tout = %g is not a finite time", s->type->name, tout);
+        return GW_EINVAL;
+    }
     int rc = s->type->advance(s, tout, t, y, rootsfound);
     if (rc < 0 && rc != GW_ECANCELED && gw_solver_interrupted(s, *t)) /* CVODE or ARKode: their rhs failed */
         rc = GW_ECANCELED;
@@ -188,6 +196,12 @@ int gw_solver_reset(gw_solver *s, double t, const double *y)
 {
     if (!s || !y)
         return GW_EINVAL;
+    /* a restart at a time that is not finite: the next advance failed far
+     * from here (or, with rk4, "reached" its target with GW_OK) */
+    if (!isfinite(t)) {
+        gw_solver_set_error(s, "%s: reset at t = %g, not a finite time", s->type->name, t);
+        return GW_EINVAL;
+    }
     s->restarts++;
     return s->type->reset(s, t, y);
 }

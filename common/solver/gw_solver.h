@@ -189,7 +189,8 @@ typedef struct gw_solver_stats {
 } gw_solver_stats;
 
 /* Create a solver for sys at (t0, y0). sys and its params must outlive the solver;
- * y0 is copied. Returns GW_EINVAL (bad tolerances or step, message in err),
+ * y0 is copied. Returns GW_EINVAL (bad tolerances or step, a t0 or y0 that is
+ * not finite, message in err),
  * GW_EUNSUPPORTED (variant not offered by the backend, e.g. IMEX without a split),
  * GW_ESOLVER (backend setup failed, message in err). *out is NULL on failure. */
 int gw_solver_create(const gw_solver_type *type, const gw_system *sys,
@@ -200,11 +201,13 @@ int gw_solver_create(const gw_solver_type *type, const gw_system *sys,
  * stopped it at *t (rootsfound[k] = +1 for a rising and -1 for a falling zero of
  * g_k, 0 for components without a root; rootsfound may be NULL), or GW_ESOLVER /
  * GW_ELIMIT with the backend's message and the time in gw_solver_error(). After a
- * failure *t and y hold the last successful state. */
+ * failure *t and y hold the last successful state. A tout that is not finite is
+ * GW_EINVAL (message in gw_solver_error(), nothing integrated). */
 int gw_solver_advance(gw_solver *s, double tout, double *t, double *y,
                       int *rootsfound);
 
-/* Restart the integration at (t, y), discarding the step history. */
+/* Restart the integration at (t, y), discarding the step history. GW_EINVAL
+ * (message in gw_solver_error()) for a t that is not finite. */
 int gw_solver_reset(gw_solver *s, double t, const double *y);
 
 /* The rates (sys.dim entries) the next step starts from, when the backend

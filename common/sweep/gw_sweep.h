@@ -172,7 +172,8 @@ int gw_sweep_case(const gw_sweep_config *cfg, long k, const char **names, const 
 /* One journal row into buf: "k,<grid values>,<numbers>,<case config hash>\n"
  * then, when cfg->read_key is set, ",<read hash>" before the ",<checksum>\n"
  * (hashes as 16 hex digits: gw_sweep_case_hash, and read_hash, the content
- * hash of the file the case read). */
+ * hash of the file the case read). GW_EINVAL for a NULL pointer, ncol < 0, a
+ * case k the config has not (k < 0 or k >= ncases), or a row longer than n. */
 int gw_sweep_format_row(const gw_sweep_config *cfg, long k, const double *out, int ncol,
                         unsigned long long read_hash, char *buf, size_t n);
 

@@ -34,10 +34,14 @@ static unsigned fnv32(const char *s, size_t n)
 int gw_sweep_format_row(const gw_sweep_config *cfg, long k, const double *out, int ncol,
                         unsigned long long read_hash, char *buf, size_t n)
 {
-    if (!cfg || !out || !buf)
+    if (!cfg || !out || !buf || ncol < 0)
         return GW_EINVAL;
     const char *names[2 * GW_SWEEP_MAX_KEYS], *values[2 * GW_SWEEP_MAX_KEYS];
-    gw_sweep_case(cfg, k, names, values);
+    /* a case the config has not (k < 0 or k >= ncases): its grid values and
+     * config hash were read from the arrays gw_sweep_case had not filled
+     * (pointers off the stack) and the row returned GW_OK */
+    if (gw_sweep_case(cfg, k, names, values) != GW_OK)
+        return GW_EINVAL;
     size_t w = (size_t)gw_snprintf(buf, n, "%ld", k);
     for (int i = 0; i < cfg->ngrid && w < n; i++)
         w += (size_t)gw_snprintf(buf + w, n - w, ",%s", values[i]);

@@ -42,6 +42,7 @@ typedef struct chain_watch {
     double shown;         /* the largest share reported */
     chain_watch_running *running;
     int nrun, busy;       /* collisions under way; the most under way since the last report */
+    int cpus;             /* the CPUs online (chain_watch_init): threads beyond them share them */
     /* the schedule: the collisions planned in the order they run, each group's threads */
     chain_watch_task *task;
     long ntask, task_cap, first; /* first: the first not begun */

@@ -21,8 +21,10 @@
  * within 10 % of it. Studies: three columns of 400-402 beads on 2 threads;
  * the same with a front column of 402 beads after it on one thread
  * (wavespeed); a sweep of N = 1..60 on 2 threads; softwall's 20 rigid-wall
- * columns then 300-302 beads on 3 threads; and on one thread, where the part
- * is the share of the work (as before), a control.
+ * columns then 300-302 beads on 3 threads (4 CPUs); on one thread, where the
+ * part is the share of the work (as before), a control; and four columns on
+ * 3 threads on 2 CPUs, where threads beyond the CPUs share them (each at 2/3
+ * of a CPU's pace while three run).
  */
 #include <math.h>
 #include <stdio.h>
@@ -68,13 +70,16 @@ typedef struct col {
 } col;
 
 /* A study of ncol columns (their beads, their group), groups on threads[g]
- * threads, run in work units; checks the implied time left at the marks. */
-static void study(const char *name, const col *c, int ncol, const int *threads, int ngroup, double tol)
+ * threads, on cpus CPUs (threads beyond them share them: k threads at work
+ * each go at cpus / k of a thread's pace), run in work units; checks the
+ * implied time left at the marks. */
+static void study(const char *name, const col *c, int ncol, const int *threads, int ngroup, int cpus, double tol)
 {
     static log_t l;
     memset(&l, 0, sizeof l);
     chain_watch w;
     chain_watch_init(&w, record, &l);
+    w.cpus = cpus; /* the machine's, here the study's own */
     double wt[MAX_COL];
     for (int g = 0, k = 0; g < ngroup; g++) {
         chain_watch_group(&w, threads[g]);
@@ -107,10 +112,11 @@ static void study(const char *name, const col *c, int ncol, const int *threads, 
             if (!busy)
                 break;
             l.now += step;
+            const double pace = fmin(1.0, (double)cpus / busy); /* threads beyond the CPUs share them */
             for (int j = 0; j < th; j++) {
                 if (!on[j])
                     continue;
-                u[j] += step;
+                u[j] += step * pace;
                 const double rho = chain_watch_tail(c[idx[j]].n), share = fmin(u[j] / wt[idx[j]], 1.0);
                 chain_watch_at(&run[j], x_at(share, rho));
                 if (share >= 1.0) {
@@ -143,13 +149,13 @@ int main(void)
     {
         const col c[] = {{400, 0}, {401, 0}, {402, 0}};
         const int th[] = {2};
-        study("N = 400..402 on 2 threads", c, 3, th, 1, 0.10);
+        study("N = 400..402 on 2 threads", c, 3, th, 1, 2, 0.10);
     }
     /* wavespeed --n 400:402 on 2 threads: its front column after, on one */
     {
         const col c[] = {{400, 0}, {401, 0}, {402, 0}, {402, 1}};
         const int th[] = {2, 1};
-        study("N = 400..402 on 2 threads, a front column after", c, 4, th, 2, 0.10);
+        study("N = 400..402 on 2 threads, a front column after", c, 4, th, 2, 2, 0.10);
     }
     /* falcon --n 1:60 on 2 threads */
     {
@@ -157,7 +163,7 @@ int main(void)
         for (int k = 0; k < 60; k++)
             c[k] = (col){k + 1, 0};
         const int th[] = {2};
-        study("N = 1..60 on 2 threads", c, 60, th, 1, 0.10);
+        study("N = 1..60 on 2 threads", c, 60, th, 1, 2, 0.10);
     }
     /* softwall --n 300:302 on 3 threads: the rigid wall's 20 columns first */
     {
@@ -167,13 +173,20 @@ int main(void)
         for (int k = 0; k < 3; k++)
             c[20 + k] = (col){300 + k, 1};
         const int th[] = {3, 3};
-        study("N = 1..20, then 300..302, on 3 threads", c, 23, th, 2, 0.10);
+        study("N = 1..20, then 300..302, on 3 threads", c, 23, th, 2, 4, 0.10);
     }
     /* one thread: the part is the share of the work (a control) */
     {
         const col c[] = {{100, 0}, {150, 0}, {200, 0}};
         const int th[] = {1};
-        study("N = 100, 150, 200 on one thread", c, 3, th, 1, 0.10);
+        study("N = 100, 150, 200 on one thread", c, 3, th, 1, 2, 0.10);
+    }
+    /* 3 threads on 2 CPUs (wavespeed --jobs 3 on this machine): the three
+     * share the CPUs, then the fourth runs alone at a whole CPU's pace */
+    {
+        const col c[] = {{400, 0}, {401, 0}, {402, 0}, {403, 0}};
+        const int th[] = {3};
+        study("N = 400..403 on 3 threads, 2 CPUs", c, 4, th, 1, 2, 0.10);
     }
     return gw_test_summary("test_study_eta_threads");
 }

@@ -504,7 +504,8 @@ static int falcon_run(const gw_chain_falcon_setup *s, gw_progress_fn progress, v
         rc = pick_solver(s, &r, vmax, &out->accuracy, err);
     double t0 = gw_clock_ms();
     if (rc == GW_OK) { /* the whole study's work first: the sweep's, then the traces' */
-        chain_watch_plan_sweep(watch, &r.params, &r.run, out->v_imp, nv, (int)s->n[0], (int)s->n[1]);
+        chain_watch_plan_sweep(watch, &r.params, &r.run, out->v_imp, nv, (int)s->n[0], (int)s->n[1],
+                               (int)s->jobs);
         if (s->traces)
             plan_traces(watch, out, &r.params, &r.run, (int)s->n[1]);
         rc = chain_sweep_watch(&r.params, &r.run, out->v_imp, nv, (int)s->n[0], (int)s->n[1], (int)s->jobs,

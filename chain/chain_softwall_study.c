@@ -515,9 +515,9 @@ static int sw_run(const gw_chain_softwall_setup *s, gw_progress_fn progress, voi
     }
     if (rc == GW_OK) {
         gw_chain_params rigid = rigid_params(&rs);
-        chain_watch_plan_sweep(watch, &rigid, &rs.run, &vimp, 1, 1, 20);
+        chain_watch_plan_sweep(watch, &rigid, &rs.run, &vimp, 1, 1, 20, (int)s->jobs);
         for (int w = 0; w < nw; w++)
-            chain_watch_plan_sweep(watch, &wall[w], &rs.run, &vimp, 1, (int)a, (int)b);
+            chain_watch_plan_sweep(watch, &wall[w], &rs.run, &vimp, 1, (int)a, (int)b, (int)s->jobs);
         rc = measure_tq(&rs, vimp, (int)s->jobs, &out->t_q_rigid, &out->n_held_rigid, &dt_tally, watch, err);
     }
     for (int w = 0; rc == GW_OK && w < nw; w++) {

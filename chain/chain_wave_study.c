@@ -418,7 +418,7 @@ static int ws_run(const gw_chain_wavespeed_setup *s, gw_progress_fn progress, vo
     }
     double t0 = gw_clock_ms();
     if (rc == GW_OK) { /* the whole study's work first: the tau_N sweep's, then each velocity's front column */
-        chain_watch_plan_sweep(watch, &r.params, &r.run, out->v_imp, nv, (int)a, (int)b);
+        chain_watch_plan_sweep(watch, &r.params, &r.run, out->v_imp, nv, (int)a, (int)b, (int)s->jobs);
         for (int iv = 0; iv < nv; iv++) {
             gw_chain_params q = r.params;
             q.v_imp = out->v_imp[iv];

@@ -208,8 +208,13 @@ int gw_chain_falcon_analyse(const gw_chain_params *p, double v, const gw_chain_r
  * thread running that collision. done and total count the study's
  * collisions (its sweep and its own runs: wavespeed's front columns, falcon's
  * traces, softwall's rigid wall); part (0..1) is the share of the study's
- * expected work done, each collision weighed by its expected steps and
- * samples times its beads and counted under way as t / t_expect of it (whole past t_expect).
+ * expected time elapsed, so that (1 - part) / part of the time elapsed is
+ * the time left: each collision weighed by its expected steps and samples
+ * times its beads and counted under way by t / t_expect of it (a tenth of it
+ * over its tail past t_expect), the time counted in that work per thread at
+ * work, the work left scheduled over the threads that will run it (the
+ * study's jobs, fewer at a sweep's end, one for the runs after it). On one
+ * thread, the share of the expected work done.
  * Called often (every sample): it must return quickly and cannot stop the
  * study (the gw_progress_fn does, per collision). */
 typedef void (*gw_chain_watch_fn)(void *ctx, long done, long total, double part);

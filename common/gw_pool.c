@@ -11,6 +11,7 @@
 #include <unistd.h>
 
 #include "gw_pool.h"
+#include "gw_pool_impl.h"
 
 typedef struct pool {
     long n;
@@ -56,6 +57,17 @@ static void *worker(void *arg)
     return NULL;
 }
 
+int gw_pool_threads(long n, int jobs)
+{
+    if (jobs <= 0) {
+        long c = sysconf(_SC_NPROCESSORS_ONLN);
+        jobs = c > 0 ? (int)(c < 1024 ? c : 1024) : 1;
+    }
+    if (jobs > n)
+        jobs = n > 1 ? (int)n : 1;
+    return jobs;
+}
+
 int gw_cases_run(long n, int jobs, gw_case_fn fn, void *ctx, gw_progress_fn progress, void *pctx,
                  gw_err *err)
 {
@@ -73,12 +85,7 @@ int gw_cases_run(long n, int jobs, gw_case_fn fn, void *ctx, gw_progress_fn prog
     atomic_init(&w.next, 0);
     atomic_init(&w.stop, 0);
     pthread_mutex_init(&w.lock, NULL);
-    if (jobs <= 0) {
-        long c = sysconf(_SC_NPROCESSORS_ONLN);
-        jobs = c > 0 ? (int)(c < 1024 ? c : 1024) : 1;
-    }
-    if (jobs > n)
-        jobs = (int)n;
+    jobs = gw_pool_threads(n, jobs);
     pthread_t *th = jobs > 1 ? calloc((size_t)jobs, sizeof *th) : NULL;
     int started = 0;
     /* the threads that started are th[0..started-1]: with one that failed

@@ -260,8 +260,15 @@ static int journal(sweep_run *s, const char *row, gw_err *err)
      * row went on into a file in no directory and was lost at the end */
     if (rc == GW_OK)
         journal_put_back(s, err, &rc);
-    if (rc == GW_OK)
-        rc = gw_sweep_journal_append(s->fd, row, &s->synced_ms, err);
+    if (rc == GW_OK && (rc = gw_sweep_journal_append(s->fd, row, &s->synced_ms, err)) != GW_OK) {
+        /* said naming the journal, and what a rerun does with it (a full
+         * disk: the row torn inside, cut by the resume) */
+        const char *why = strncmp(err->msg, "sweep journal: ", 15) == 0 ? err->msg + 15 : err->msg;
+        char tmp[sizeof err->msg];
+        snprintf(tmp, sizeof tmp, "%s", why);
+        gw_err_set(err, rc, "%s/%s: %s: its %ld rows before are kept, no table written; rerun to resume", s->out,
+                   s->kept ? "the kept journal" : "journal.csv", tmp, s->ndone0 + s->done);
+    }
     if (rc == GW_OK)
         s->done++;
     return rc;

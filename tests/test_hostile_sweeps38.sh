@@ -26,6 +26,11 @@
 #    "cannot read" at the end)
 #  5 kept: a symbolic link put in the journal's place, to the journal itself,
 #    is the journal still (exit 0, the undisturbed table)
+#  6 a disk that fills inside a journal row (a 64 KiB tmpfs, one page left),
+#    threads and mpirun -np 3: "sweep journal: write failed: Success" (the
+#    write took part of the row, errno untouched); now exit 1, one line naming
+#    DIR/journal.csv, "No space left on device" and the rows kept; space freed,
+#    the resume the other way gives the undisturbed table
 set -u
 GW=$1
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
@@ -154,5 +159,41 @@ wait $pa; rc=$?
 [ $rc -eq 0 ] && cmp -s "$d/results.csv" "$tmp/ref/results.csv" && [ ! -s "$d.err" ] &&
     ok "5: a link to the journal in its place: exit 0, the undisturbed table, nothing said" ||
     ko "5: a link to the journal: exit $rc: $(head -3 "$d.err")"
+
+# --- 6: a full file system inside a row (a 64 KiB tmpfs, when this user may
+# mount one, one 4 KiB page left: the journal of 40 cases crosses it)
+mkdir -p "$tmp/full"
+if mount -t tmpfs -o size=64k tmpfs "$tmp/full" 2>/dev/null; then
+    trap 'umount "$tmp/full" 2>/dev/null; rm -rf "$tmp"' EXIT
+    printf '[sweep]\nmodel = chain\n[grid]\nn = 10:49\n[params]\nsolver = rk4\nvimp = 0.1\n' >"$tmp/c40.ini"
+    "$GW" sweep "$tmp/c40.ini" --out "$tmp/c40ref" --quiet --jobs 1 || ko "6: reference sweep"
+    full() { # WHAT RESUME-CMD... : the sweep run by $run, then resumed by RESUME-CMD
+        local what=$1 rc
+        shift
+        rm -rf "$tmp/full/d"
+        dd if=/dev/zero of="$tmp/full/fill" bs=4096 count=15 2>/dev/null
+        $run >/dev/null 2>"$tmp/full.err"; rc=$?
+        [ $rc -eq 1 ] && grep -q "^granwave sweep: $tmp/full/d/journal.csv: write failed: No space left on device: its [0-9]* rows before are kept" "$tmp/full.err" &&
+            ! grep -q Success "$tmp/full.err" && [ ! -e "$tmp/full/d/results.csv" ] &&
+            ok "6 $what: the disk full inside a row: exit 1, $(head -1 "$tmp/full.err" | cut -c1-140)" ||
+            ko "6 $what: the disk full inside a row: exit $rc: $(head -1 "$tmp/full.err")"
+        rm -f "$tmp/full/fill"
+        "$@" >/dev/null 2>"$tmp/full.err2"; rc=$?
+        [ $rc -eq 0 ] && cmp -s "$tmp/full/d/results.csv" "$tmp/c40ref/results.csv" &&
+            ok "6 $what: space freed, the resume's table byte-identical" ||
+            ko "6 $what: resume after a full disk: exit $rc: $(head -2 "$tmp/full.err2")"
+    }
+    run="$GW sweep $tmp/c40.ini --out $tmp/full/d --quiet --jobs 2"
+    if [ $have_mpi = 1 ]; then
+        full "--jobs 2" mpirun --oversubscribe -np 2 "$GW" sweep "$tmp/c40.ini" --out "$tmp/full/d" --quiet
+        run="mpirun --oversubscribe -np 3 $GW sweep $tmp/c40.ini --out $tmp/full/d --quiet"
+        full "mpirun -np 3" "$GW" sweep "$tmp/c40.ini" --out "$tmp/full/d" --quiet --jobs 1
+    else
+        full "--jobs 2" "$GW" sweep "$tmp/c40.ini" --out "$tmp/full/d" --quiet --jobs 1
+    fi
+    umount "$tmp/full"
+else
+    echo "SKIP: 6 (cannot mount a small tmpfs here)"
+fi
 
 test_summary test_hostile_sweeps38

@@ -129,6 +129,28 @@ int gw_sweep_dir_held(int dirfd, const char *dir, gw_err *err)
     return GW_OK;
 }
 
+/* n bytes of buf written to fd whole: 0, or -1 with errno set. A short
+ * write (a disk that fills inside a row: write() returns the bytes it took,
+ * errno untouched) is continued, so that the write that fails says why: the
+ * sweep said "write failed: Success" on a full disk, leaving a torn row. */
+static int write_all(int fd, const char *buf, size_t n)
+{
+    size_t off = 0;
+    while (off < n) {
+        const ssize_t w = write(fd, buf + off, n - off);
+        if (w < 0 && errno == EINTR)
+            continue;
+        if (w < 0)
+            return -1;
+        if (w == 0) { /* nothing taken and no error: no room */
+            errno = ENOSPC;
+            return -1;
+        }
+        off += (size_t)w;
+    }
+    return 0;
+}
+
 /* A new journal, whole (its head and input lines) or not at all, and never
  * over one another sweep made meanwhile: written under a temporary name and
  * linked into place, which fails when the name exists. The atomic write
@@ -162,7 +184,7 @@ static int journal_create_as(int dfd, const char *path, const char *name, const 
      * locked (a sweep that locked it first would refuse it as another
      * config's, and this one then find it locked: neither ran) */
     const size_t n = strlen(text);
-    int bad = flock(fd, LOCK_EX) != 0 || write(fd, text, n) != (ssize_t)n || fsync(fd) != 0 ||
+    int bad = flock(fd, LOCK_EX) != 0 || write_all(fd, text, n) != 0 || fsync(fd) != 0 ||
               fcntl(fd, F_SETFL, O_APPEND) != 0;
     e = errno;
     int placed = 0;
@@ -714,9 +736,7 @@ int gw_sweep_journal_append(int fd, const char *row, double *synced_ms, gw_err *
 {
     if (!row)
         return gw_err_set(err, GW_EINVAL, "gw_sweep_journal_append: row is NULL");
-    size_t n = strlen(row);
-    ssize_t w = write(fd, row, n);
-    if (w != (ssize_t)n)
+    if (write_all(fd, row, strlen(row)) != 0) /* a torn row then: cut by the resume, its case run again */
         return gw_err_set(err, GW_EIO, "sweep journal: write failed: %s", strerror(errno));
     const double now = gw_clock_ms();
     if (!synced_ms || now - *synced_ms >= GW_SWEEP_SYNC_MS)

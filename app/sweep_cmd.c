@@ -60,6 +60,12 @@ typedef struct sweep_run {
      * written (it holds every case). */
     long nfailed, first_failed;
     gw_err fail_err;
+    /* The journal's name found holding another file (gw_sweep_journal_held):
+     * this sweep's journal kept whole beside it (s->fd now that file's), its
+     * message in kept_err; no case is handed out after it, the rows of those
+     * under way go on into the kept file, and the sweep exits 1. */
+    int kept;
+    gw_err kept_err;
     pthread_mutex_t lock; /* the journal: one row appended at a time; the progress lines */
     gw_cli_progress prog;
     atomic_long running;  /* cases under way (threads; under MPI handed out and not back) */
@@ -213,12 +219,24 @@ static int run_case(const sweep_run *s, long k, char *row, case_slot *slot, gw_e
 }
 
 /* The journal put back when it was removed from the sweep's directory (said
- * once a time in one line, with --quiet too); rc set on a failure. */
+ * once a time in one line, with --quiet too), or kept aside when its name
+ * holds another file now (s->kept: the sweep stops taking cases; rc GW_OK,
+ * the row goes on into the kept file); rc set on a failure. Once kept, the
+ * kept file is the journal, under its own name: not checked again. */
 static void journal_put_back(sweep_run *s, gw_err *err, int *rc)
 {
     int back = 0;
+    if (s->kept) {
+        *rc = GW_OK;
+        return;
+    }
     *rc = gw_sweep_journal_held(s->dirfd, &s->fd, s->out, &back, err);
-    if (back)
+    if (back == 2) {
+        s->kept = 1;
+        s->kept_err = *err;
+        *rc = GW_OK;
+    }
+    if (back == 1)
         fprintf(stderr, "granwave sweep: warning: %s/journal.csv was removed while the sweep ran: put back with "
                 "its %ld row%s; the sweep goes on\n", s->out, s->ndone0 + s->done, s->ndone0 + s->done == 1 ? "" : "s");
 }
@@ -242,8 +260,15 @@ static int journal(sweep_run *s, const char *row, gw_err *err)
      * row went on into a file in no directory and was lost at the end */
     if (rc == GW_OK)
         journal_put_back(s, err, &rc);
-    if (rc == GW_OK)
-        rc = gw_sweep_journal_append(s->fd, row, &s->synced_ms, err);
+    if (rc == GW_OK && (rc = gw_sweep_journal_append(s->fd, row, &s->synced_ms, err)) != GW_OK) {
+        /* said naming the journal, and what a rerun does with it (a full
+         * disk: the row torn inside, cut by the resume) */
+        const char *why = strncmp(err->msg, "sweep journal: ", 15) == 0 ? err->msg + 15 : err->msg;
+        char tmp[sizeof err->msg];
+        snprintf(tmp, sizeof tmp, "%s", why);
+        gw_err_set(err, rc, "%s/%s: %s: its %ld rows before are kept, no table written; rerun to resume", s->out,
+                   s->kept ? "the kept journal" : "journal.csv", tmp, s->ndone0 + s->done);
+    }
     if (rc == GW_OK)
         s->done++;
     return rc;
@@ -289,8 +314,9 @@ static int pool_progress(void *ctx, long done, long total)
         sweep_line(s, done >= total);
     else
         gw_cli_progress_report(&s->prog, done, total);
+    const int stop = stop_requested != 0 || s->kept; /* the journal replaced: no case more */
     pthread_mutex_unlock(&s->lock);
-    return stop_requested != 0;
+    return stop;
 }
 
 /* The ticker thread of a threaded sweep: sweep_tick every 100 ms until the
@@ -406,7 +432,7 @@ static void mpi_master(sweep_run *s, int size)
             gw_err_set(&s->err, s->failed, "%s", buf + 1);
         }
         long k = -1;
-        if (next < s->ntodo && !s->failed && !stop_requested) {
+        if (next < s->ntodo && !s->failed && !stop_requested && !s->kept) {
             k = s->todo[next++];
             atomic_fetch_add(&s->running, 1);
         } else {
@@ -772,8 +798,25 @@ int gw_cmd_sweep(int argc, char **argv, const gw_sweep_model *const *models, con
         char where[4200];
         const int moved = rank == 0 && dir_moved(out, s.dirfd, where, sizeof where);
         const char *now = moved ? where : out;
+        /* the journal still there, whatever ended the sweep: removed or
+         * replaced after its last row, a stop or a failed case said "rerun to
+         * resume" and the rerun found the rows gone, or another file's */
+        if (rank == 0 && !s.kept) {
+            gw_err e2 = {{0}};
+            journal_put_back(&s, &e2, &rc);
+            if (rc != GW_OK && !s.failed)
+                s.failed = rc, s.err = e2;
+        }
         if (rank == 0) {
-            if (s.failed) {
+            if (s.kept) {
+                /* the rows are in the kept file: a rerun as it is resumes
+                 * from the other file, which may hold fewer of them */
+                gw_err_set(&err, GW_EIO, "%s; the sweep stopped taking cases after %ld new: %ld of its %ld cases "
+                           "are journaled there; to resume with them, move it over journal.csv and rerun (a rerun "
+                           "as it is resumes from the file now named journal.csv)", s.kept_err.msg, s.done,
+                           s.ndone0 + s.done, cfg.ncases);
+                code = 1;
+            } else if (s.failed) {
                 err = s.err;
                 code = s.failed == GW_EINVAL ? 2 : 1;
             } else if (stop_requested) {
@@ -791,8 +834,7 @@ int gw_cmd_sweep(int argc, char **argv, const gw_sweep_model *const *models, con
                            "case): rerun to retry the failed cases", s.nfailed, s.ntodo, s.fail_err.msg,
                            s.ndone0 + s.done, cfg.ncases, now);
                 code = 1;
-            } else if ((journal_put_back(&s, &err, &rc), rc) != GW_OK ||
-                       gw_sweep_journal_sync(s.fd, &s.synced_ms, &err) != GW_OK ||
+            } else if (gw_sweep_journal_sync(s.fd, &s.synced_ms, &err) != GW_OK ||
                        gw_sweep_write_table_at(s.dirfd, now, &cfg, m, &err) != GW_OK) {
                 code = 1;
             } else {

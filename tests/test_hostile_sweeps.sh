@@ -14,7 +14,7 @@
 #    and the table is the config of the one that exited 0.
 #  3 a journal replaced while its sweep ran (another sweep's journal moved in):
 #    the sweep wrote its table from the other's rows, exit 0. Now exit 1, no
-#    table, naming the journal.
+#    table, naming the journal, the other file left as it is.
 #  4 kept: a sweep killed with kill -9 leaves no lock behind: the rerun resumes
 #    and its table equals the uninterrupted one byte for byte.
 #  5 a grid of 1e9 cases (a journal of about 329 GB, never readable back) was
@@ -97,7 +97,8 @@ rm -rf "$tmp/d3"
 wait_row "$tmp/d3"
 cp "$tmp/refb/journal.csv" "$tmp/d3/j.new" && mv "$tmp/d3/j.new" "$tmp/d3/journal.csv"
 wait $pa; rc=$?
-[ $rc -eq 1 ] && [ ! -e "$tmp/d3/results.csv" ] && grep -q "journal.csv: replaced by another sweep's journal" "$tmp/e3" &&
+[ $rc -eq 1 ] && [ ! -e "$tmp/d3/results.csv" ] && grep -q "journal.csv was replaced by another file while the sweep ran" "$tmp/e3" &&
+    cmp -s "$tmp/d3/journal.csv" "$tmp/refb/journal.csv" &&
     ok "3: a journal replaced mid-sweep: no table, exit 1: $(cat "$tmp/e3")" ||
     ko "3: journal replaced mid-sweep: exit $rc, table $( [ -e "$tmp/d3/results.csv" ] && head -1 "$tmp/d3/results.csv"): $(cat "$tmp/e3")"
 

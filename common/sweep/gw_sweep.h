@@ -229,11 +229,19 @@ int gw_sweep_journal_open_at(const char *dir, const gw_sweep_config *cfg, char *
  * the rows journaled since went with it. */
 int gw_sweep_dir_held(int dirfd, const char *dir, gw_err *err);
 /* The sweep's journal *fd (open and locked, in the directory dirfd held open;
- * dir names it) still in that directory. Removed from it while the sweep ran,
+ * dir names it) still in that directory under its name (journal.csv, or a
+ * symbolic link to it). Removed from it while the sweep ran (or moved away),
  * it is put back whole under its name (locked, only while the name is free),
- * *fd becomes the new file's (the old one closed) and *restored 1. GW_OK also
- * when its name holds another file now (replaced: the table's check says so);
- * GW_EIO when it cannot be read or written back. */
+ * *fd becomes the new file's (the old one closed) and *restored 1, GW_OK.
+ * Its name holding another file now (replaced: an editor saving through a
+ * rename, a copy moved over it), the journal is kept whole under a free name
+ * beside it, DIR/journal.kept.csv (journal.kept.2.csv, ... when taken),
+ * made as a journal is, *fd becomes that file's and *restored 2, and GW_EIO
+ * "DIR/journal.csv was replaced by another file while the sweep ran ...:
+ * this sweep's journal is kept whole as DIR/journal.kept.csv, the other file
+ * left as it is": the caller stops taking cases (the rows of those under way
+ * go on into *fd). The other file is never written. GW_EIO (*restored 0)
+ * also when the journal cannot be read, written back or kept. */
 int gw_sweep_journal_held(int dirfd, int *fd, const char *dir, int *restored, gw_err *err);
 /* What a resume would find (`granwave sweep CONFIG --check`): DIR/journal.csv
  * read and checked by the code of gw_sweep_journal_open, with its refusals

@@ -72,4 +72,9 @@ char *gw_sweep_slurp_fd(int fd, const char *path, size_t *len, gw_err *err);
  * O_PATH where it may be searched but not read), -1 with errno set. */
 int gw_sweep_dir_open(const char *dir);
 
+/* How long gw_sweep_journal_held watches a journal's free name before it puts
+ * the journal back: an editor's save through a rename (the journal renamed
+ * to a backup, or removed, and the new file written) takes milliseconds. */
+#define GW_SWEEP_GRACE_MS 200.0
+
 #endif

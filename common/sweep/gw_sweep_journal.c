@@ -19,6 +19,7 @@
 #include <fcntl.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 #include <unistd.h>
 
 #include "gw_sweep.h"
@@ -128,14 +129,39 @@ int gw_sweep_dir_held(int dirfd, const char *dir, gw_err *err)
     return GW_OK;
 }
 
+/* n bytes of buf written to fd whole: 0, or -1 with errno set. A short
+ * write (a disk that fills inside a row: write() returns the bytes it took,
+ * errno untouched) is continued, so that the write that fails says why: the
+ * sweep said "write failed: Success" on a full disk, leaving a torn row. */
+static int write_all(int fd, const char *buf, size_t n)
+{
+    size_t off = 0;
+    while (off < n) {
+        const ssize_t w = write(fd, buf + off, n - off);
+        if (w < 0 && errno == EINTR)
+            continue;
+        if (w < 0)
+            return -1;
+        if (w == 0) { /* nothing taken and no error: no room */
+            errno = ENOSPC;
+            return -1;
+        }
+        off += (size_t)w;
+    }
+    return 0;
+}
+
 /* A new journal, whole (its head and input lines) or not at all, and never
  * over one another sweep made meanwhile: written under a temporary name and
  * linked into place, which fails when the name exists. The atomic write
  * before renamed over it: two sweeps started at once into one directory each
  * made a journal, the second replaced the first's, and the first appended its
  * rows to a file no longer in the directory and wrote its table from the
- * other sweep's rows (exit 0 for both). */
-static int journal_create(int dfd, const char *path, const char *text, int *fdp, gw_err *err)
+ * other sweep's rows (exit 0 for both). path names the journal for messages
+ * (DIR/journal.csv); name is the file's name in dfd (journal.csv, or the
+ * name a journal replaced mid-sweep is kept under). *fdp -1 and GW_OK when
+ * the name was taken. */
+static int journal_create_as(int dfd, const char *path, const char *name, const char *text, int *fdp, gw_err *err)
 {
     char tmp[4200];
     *fdp = -1;
@@ -158,16 +184,21 @@ static int journal_create(int dfd, const char *path, const char *text, int *fdp,
      * locked (a sweep that locked it first would refuse it as another
      * config's, and this one then find it locked: neither ran) */
     const size_t n = strlen(text);
-    int bad = flock(fd, LOCK_EX) != 0 || write(fd, text, n) != (ssize_t)n || fsync(fd) != 0 ||
+    int bad = flock(fd, LOCK_EX) != 0 || write_all(fd, text, n) != 0 || fsync(fd) != 0 ||
               fcntl(fd, F_SETFL, O_APPEND) != 0;
     e = errno;
     int placed = 0;
-    if (!bad && linkat(dfd, tmp + rel, dfd, "journal.csv", 0) == 0) {
+    if (!bad && linkat(dfd, tmp + rel, dfd, name, 0) == 0) {
         placed = 1;
     } else if (!bad && errno != EEXIST) {
-        placed = renameat(dfd, tmp + rel, dfd, "journal.csv") == 0; /* a file system without hard links: by rename, as before */
-        bad = !placed;
-        e = errno;
+        /* a file system without hard links: by rename, as before, only
+         * while the name is free (a journal kept aside never replaces a file) */
+        struct stat st;
+        if (fstatat(dfd, name, &st, AT_SYMLINK_NOFOLLOW) != 0 && errno == ENOENT) {
+            placed = renameat(dfd, tmp + rel, dfd, name) == 0;
+            bad = !placed;
+            e = errno;
+        }
     }
     unlinkat(dfd, tmp + rel, 0);
     gw_temps_drop(tmp);
@@ -179,6 +210,50 @@ static int journal_create(int dfd, const char *path, const char *text, int *fdp,
     return bad ? gw_err_set(err, GW_EIO, "%s: cannot create: %s", path, strerror(e ? e : EIO)) : GW_OK;
 }
 
+static int journal_create(int dfd, const char *path, const char *text, int *fdp, gw_err *err)
+{
+    return journal_create_as(dfd, path, "journal.csv", text, fdp, err);
+}
+
+/* The sweep's journal (held open in *fdp) kept whole under a free name in
+ * dirfd, DIR/journal.kept.csv (journal.kept.2.csv, ... when taken), made as
+ * a journal is (locked, linked into place, never over a file), *fdp then
+ * the kept file's (*kept 1): its name (journal.csv) holds another file now,
+ * which is left as it is. GW_EIO with the message the caller says. */
+static int journal_keep(int dirfd, int *fdp, const char *dir, const char *path, int *kept, gw_err *err)
+{
+    size_t len = 0;
+    char *text = gw_sweep_slurp_fd(*fdp, path, &len, err);
+    if (!text)
+        return errno == ENOMEM ? GW_ENOMEM : GW_EIO;
+    char name[64];
+    int nfd = -1, rc = GW_OK;
+    for (int i = 1; i <= 1000 && nfd < 0 && rc == GW_OK; i++) {
+        if (i == 1)
+            gw_snprintf(name, sizeof name, "journal.kept.csv");
+        else
+            gw_snprintf(name, sizeof name, "journal.kept.%d.csv", i);
+        rc = journal_create_as(dirfd, path, name, text, &nfd, err);
+    }
+    free(text);
+    if (rc == GW_OK && nfd < 0)
+        rc = gw_err_set(err, GW_EIO, "%s: cannot keep this sweep's journal: %s/journal.kept.csv to "
+                        "journal.kept.1000.csv are all taken", path, dir);
+    if (rc != GW_OK) {
+        char why[sizeof err->msg];
+        gw_snprintf(why, sizeof why, "%s", err ? err->msg : "a failure");
+        return gw_err_set(err, rc == GW_ENOMEM ? GW_ENOMEM : GW_EIO, "%s was replaced by another file while the "
+                          "sweep ran, and this sweep's journal could not be kept beside it (%s): its rows since "
+                          "the replacement are lost, the other file is left as it is", path, why);
+    }
+    close(*fdp);
+    *fdp = nfd;
+    *kept = 1;
+    return gw_err_set(err, GW_EIO, "%s was replaced by another file while the sweep ran (an editor saving "
+                      "through a rename?): this sweep's journal is kept whole as %s/%s, the other file left as "
+                      "it is", path, dir, name);
+}
+
 static int journal_check(const char *path, int dfd, const char *dir, const char *head, const gw_sweep_config *cfg,
                          char *done, long *ndone, int fd, size_t *torn, int *torn_head, gw_err *err);
 
@@ -188,8 +263,13 @@ static int journal_check(const char *path, int dfd, const char *dir, const char 
  * file or directory"), its rows lost with the file. It is put back now, at
  * the next row, whole (its head and every row so far, read through the
  * held descriptor), by journal_create: locked, linked into place only while
- * the name is free. A journal replaced by another file keeps that file (the
- * table's check refuses it at the end). */
+ * the name is free; moved away within the directory alike.
+ * A journal replaced by another file (an editor saving through a rename, a
+ * copy moved over it) was found only by the table's check at the end, the
+ * cases after the swap run for nothing, their rows in a file in no directory
+ * or under the name the editor gave the old one: now it is kept whole under a
+ * new name (journal_keep) at once, the other file left as it is, and the
+ * caller told (*restored 2, GW_EIO) to stop. */
 int gw_sweep_journal_held(int dirfd, int *fdp, const char *dir, int *restored, gw_err *err)
 {
     if (restored)
@@ -199,35 +279,58 @@ int gw_sweep_journal_held(int dirfd, int *fdp, const char *dir, int *restored, g
     struct stat a, b;
     if (fstat(*fdp, &a) != 0)
         return gw_err_set(err, GW_EIO, "%s/journal.csv: %s", dir, strerror(errno));
-    if (a.st_nlink > 0)
+    /* its name, followed as the sweep opened it (a symbolic link to the
+     * journal is the journal) */
+    if (fstatat(dirfd, "journal.csv", &b, 0) == 0 && a.st_dev == b.st_dev && a.st_ino == b.st_ino)
         return GW_OK;
     if (gw_sweep_dir_held(dirfd, dir, err) != GW_OK) /* the directory removed, the journal with it */
         return GW_EIO;
-    if (fstatat(dirfd, "journal.csv", &b, AT_SYMLINK_NOFOLLOW) == 0 || errno != ENOENT)
-        return GW_OK; /* replaced: the name is another file's */
     char path[4200];
     if (gw_snprintf(path, sizeof path, "%s/journal.csv", dir) >= (int)sizeof path)
         return gw_err_set(err, GW_EINVAL, "%s: path too long", dir);
-    size_t len = 0;
-    char *text = gw_sweep_slurp_fd(*fdp, path, &len, err);
-    if (!text)
-        return errno == ENOMEM ? GW_ENOMEM : GW_EIO;
-    if (len == 0 || text[len - 1] != '\n') {
+    int named = fstatat(dirfd, "journal.csv", &b, AT_SYMLINK_NOFOLLOW) == 0;
+    if (!named && errno != ENOENT)
+        return GW_OK; /* cannot be told (the directory not searchable now): left to the table's check */
+    /* A free name may be an editor's save under way: the journal renamed to
+     * a backup (journal.csv~) or removed, the new file written next. Put back
+     * at once, the journal took the name first and the editor then wrote its
+     * text into the sweep's file, over the rows since it read it. The name is
+     * watched a moment (GW_SWEEP_GRACE_MS, once per such event): a file that
+     * comes is a replacement, kept apart from. */
+    for (double t0 = gw_clock_ms(); !named && gw_clock_ms() - t0 < GW_SWEEP_GRACE_MS;) {
+        nanosleep(&(struct timespec){.tv_sec = 0, .tv_nsec = 2000000L}, NULL);
+        named = fstatat(dirfd, "journal.csv", &b, AT_SYMLINK_NOFOLLOW) == 0;
+    }
+    if (named && fstatat(dirfd, "journal.csv", &b, 0) == 0 && a.st_dev == b.st_dev && a.st_ino == b.st_ino)
+        return GW_OK; /* moved back meanwhile */
+    if (!named) { /* removed, or moved away: put back */
+        size_t len = 0;
+        char *text = gw_sweep_slurp_fd(*fdp, path, &len, err);
+        if (!text)
+            return errno == ENOMEM ? GW_ENOMEM : GW_EIO;
+        if (len == 0 || text[len - 1] != '\n') {
+            free(text);
+            return GW_OK; /* a torn last row: left to the table's check */
+        }
+        int nfd = -1;
+        const int rc = journal_create(dirfd, path, text, &nfd, err);
         free(text);
-        return GW_OK; /* a torn last row: left to the table's check */
+        if (rc != GW_OK)
+            return rc;
+        if (nfd >= 0) {
+            close(*fdp);
+            *fdp = nfd;
+            if (restored)
+                *restored = 1;
+            return GW_OK;
+        }
+        /* the name taken meanwhile: another file's */
     }
-    int nfd = -1;
-    const int rc = journal_create(dirfd, path, text, &nfd, err);
-    free(text);
-    if (rc != GW_OK)
-        return rc;
-    if (nfd >= 0) {
-        close(*fdp);
-        *fdp = nfd;
-        if (restored)
-            *restored = 1;
-    }
-    return GW_OK;
+    int kept = 0;
+    const int rc = journal_keep(dirfd, fdp, dir, path, &kept, err);
+    if (kept && restored)
+        *restored = 2;
+    return rc;
 }
 
 static int journal_find(const char *path, int dfd, const char *dir, const gw_sweep_config *cfg, char *done,
@@ -633,9 +736,7 @@ int gw_sweep_journal_append(int fd, const char *row, double *synced_ms, gw_err *
 {
     if (!row)
         return gw_err_set(err, GW_EINVAL, "gw_sweep_journal_append: row is NULL");
-    size_t n = strlen(row);
-    ssize_t w = write(fd, row, n);
-    if (w != (ssize_t)n)
+    if (write_all(fd, row, strlen(row)) != 0) /* a torn row then: cut by the resume, its case run again */
         return gw_err_set(err, GW_EIO, "sweep journal: write failed: %s", strerror(errno));
     const double now = gw_clock_ms();
     if (!synced_ms || now - *synced_ms >= GW_SWEEP_SYNC_MS)

@@ -30,6 +30,12 @@ void gw_thornton_init(gw_thornton *t, double estar, double radius, double p_y)
 {
     if (!t) /* nothing to set: a void call's NULL is a no-op, as the _free calls' */
         return;
+    /* A law from a yield pressure, E* or radius not finite and > 0 is none:
+     * its fields NaN, so every force it gives is NaN (a negative p_y gave a
+     * negative force, E* = 0 a yield overlap of inf), the wall's own check
+     * refuses such values before this */
+    if (!(estar > 0 && radius > 0 && p_y > 0) || !isfinite(estar) || !isfinite(radius) || !isfinite(p_y))
+        estar = radius = p_y = NAN;
     t->estar = estar;
     t->radius = radius;
     t->p_y = p_y;

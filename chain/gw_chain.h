@@ -148,7 +148,8 @@ typedef struct gw_thornton {
     double d_y, f_y;           /* m, N */
 } gw_thornton;
 
-/* t from E* (Pa), the radius R (m) and the yield pressure p_y (Pa); t NULL: nothing. */
+/* t from E* (Pa), the radius R (m) and the yield pressure p_y (Pa); t NULL: nothing.
+ * Any of the three not finite and > 0: every force of t is NaN. */
 void gw_thornton_init(gw_thornton *t, double estar, double radius, double p_y);
 /* Force at overlap d after a largest overlap dmax (the force uses max(d, dmax)):
  * *stiffness dF/dd, *residual d_p, *energy the elastic energy recovered on

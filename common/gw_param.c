@@ -60,6 +60,22 @@ static const void *cfield(const void *obj, const gw_param *p)
     return (const char *)obj + p->offset;
 }
 
+/* The bytes a row's field takes in its struct. */
+static size_t param_field_size(const gw_param *p)
+{
+    switch (p->type) {
+    case GW_PARAM_DOUBLE: return sizeof(double);
+    case GW_PARAM_LONG: return sizeof(long);
+    case GW_PARAM_TEXT: return sizeof(char *);
+    case GW_PARAM_LIST: return sizeof(gw_param_list);
+    case GW_PARAM_RANGE: return 2 * sizeof(long);
+    case GW_PARAM_DARRAY: return sizeof(double *);
+    case GW_PARAM_IARRAY:
+    case GW_PARAM_FARRAY: return sizeof(int *);
+    default: return sizeof(int); /* INT, FLAG, CHOICE */
+    }
+}
+
 /* an optional int or long row's field f at "not given" */
 static int unset(const gw_param *p, const void *f)
 {
@@ -604,6 +620,15 @@ int gw_param_copy(const gw_param *t, size_t size, void *dst, const void *src, gw
 {
     if (!dst || !src)
         return gw_err_set(err, GW_EINVAL, "gw_param_copy: %s is NULL", !dst ? "dst" : "src");
+    /* dst over src: the detach below cleared src's own texts and lists (they
+     * leaked, and the copy had none) */
+    const char *d = dst, *sc = src;
+    if (d < sc + size && sc < d + size)
+        return gw_err_set(err, GW_EINVAL, "gw_param_copy: dst and src overlap (a copy needs another struct)");
+    for (int i = 0; t && t[i].name; i++)
+        if (t[i].offset + param_field_size(&t[i]) > size)
+            return gw_err_set(err, GW_EINVAL, "gw_param_copy: size %zu is below the table's row '%s' (offset %zu)",
+                              size, t[i].name, t[i].offset);
     memcpy(dst, src, size);
     for (int i = 0; t && t[i].name; i++) { /* detach, then duplicate what src owns */
         void *f = field(dst, &t[i]);

@@ -29,6 +29,15 @@
  *     had set, leaving SIGINT, SIGTERM and SIGHUP blocked in the thread for
  *     good; gw_afile_open("") made its temporary in the working directory and
  *     only the commit failed.
+ * And the lead's, from what the pass left: a solver scale of 0, NaN, a
+ * negative or an infinite one was taken (cvode failed at t = 0 on an
+ * absolute tolerance of 0, rk4 ran on); rk4 asked for a time before its own
+ * returned GW_OK where it stood; gw_stats_binary_loss was NaN past r =
+ * 1.3e154 (discs) and at infinity, where the loss tends to 0;
+ * gw_sweep_undecided_warning wrote "5 of 3 cases" and a first case -1 as
+ * given; gw_param_copy onto itself detached the struct's own texts (lost and
+ * leaked, GW_OK), and a size short of the table's rows copied past it;
+ * gw_thornton_init took a negative yield pressure (a negative force).
  * Each refusal has a control: the valid call next to it still gives its value
  * (a journal row the sweep's own check takes, the Hertz coefficient of steel
  * against its closed form to 1e-15, the layer law's thick-layer limit equal to
@@ -386,6 +395,151 @@ static int solver_nonfinite_times(void)
     return 0;
 }
 
+/* ---- the lead's, from what the pass left: solver scales, fixed steps
+ * backwards, the binary loss at huge ratios, the undecided warning's counts,
+ * a parameter copy onto itself ---- */
+
+static int solver_scale_invalid(void)
+{
+    static const char *const names[] = {"cvode", "arkode", "rk4"};
+    gw_system sys;
+    memset(&sys, 0, sizeof sys);
+    sys.dim = 2;
+    sys.rhs = osc;
+    sys.mu = sys.ml = 1;
+    const double y0[2] = {1, 0};
+    const double bad[][2] = {{0, 1}, {1, NAN}, {-1, 1}, {1, INFINITY}};
+    for (int b = 0; b < 3; b++) {
+        const gw_solver_type *type = gw_solver_type_find(names[b]);
+        gw_solver_params sp = gw_solver_params_default();
+        sp.dt = 1e-3;
+        for (int i = 0; i < 4; i++) {
+            gw_solver *s = (gw_solver *)&sys;
+            gw_err e = {{0}};
+            sys.scale = bad[i];
+            if (!refused(gw_solver_create(type, &sys, &sp, 0, y0, &s, &e), &e, "scale["))
+                return 1;
+            EXPECT(s == NULL);
+        }
+        /* control: unit scales give the oscillator at t = 1 */
+        static const double one[2] = {1, 1};
+        sys.scale = one;
+        gw_solver *s = NULL;
+        gw_err e = {{0}};
+        EXPECT(gw_solver_create(type, &sys, &sp, 0, y0, &s, &e) == GW_OK);
+        double t = 0, y[2] = {1, 0};
+        EXPECT(gw_solver_advance(s, 1.0, &t, y, NULL) == GW_OK && fabs(y[0] - cos(1.0)) < 1e-6);
+        gw_solver_free(s);
+        sys.scale = NULL;
+    }
+    return 0;
+}
+
+static int fixed_step_backwards(void)
+{
+    gw_system sys;
+    memset(&sys, 0, sizeof sys);
+    sys.dim = 2;
+    sys.rhs = osc;
+    sys.mu = sys.ml = 1;
+    const double y0[2] = {1, 0};
+    gw_solver_params sp = gw_solver_params_default();
+    sp.dt = 1e-3;
+    gw_solver *s = NULL;
+    gw_err e = {{0}};
+    EXPECT(gw_solver_create(gw_solver_type_find("rk4"), &sys, &sp, 0, y0, &s, &e) == GW_OK);
+    double t = 0, y[2] = {1, 0};
+    EXPECT(gw_solver_advance(s, 1.0, &t, y, NULL) == GW_OK && t == 1.0);
+    const double y1[2] = {y[0], y[1]};
+    /* backwards: refused where it stood (GW_OK with *t = 1 before) */
+    EXPECT(gw_solver_advance(s, 0.5, &t, y, NULL) == GW_EINVAL);
+    EXPECT(t == 1.0 && y[0] == y1[0] && y[1] == y1[1] && strstr(gw_solver_error(s), "forward only"));
+    /* control: the same time again is no step, and on to 2 s still cos(2) */
+    EXPECT(gw_solver_advance(s, 1.0, &t, y, NULL) == GW_OK && t == 1.0);
+    EXPECT(gw_solver_advance(s, 2.0, &t, y, NULL) == GW_OK && fabs(y[0] - cos(2.0)) < 1e-9);
+    gw_solver_free(s);
+    return 0;
+}
+
+static int binary_loss_huge(void)
+{
+    /* 4 m / (1 + m)^2 with m = r^2 (discs) or r^3 (spheres): past the
+     * overflow of (1 + m)^2 it was NaN, where the loss tends to 0 as 4 / m */
+    const double r[] = {1e120, 1e154, 1.4e154, 1e200, 1e300};
+    for (size_t i = 0; i < sizeof r / sizeof r[0]; i++) {
+        const double l = gw_stats_binary_loss(r[i], 0), m = r[i] * r[i];
+        EXPECT(isfinite(l) && l >= 0 && (isinf(m) ? l == 0 : fabs(l - 4 / m) <= 1e-12 * (4 / m)));
+        EXPECT(isfinite(gw_stats_binary_loss(r[i], 1)) && gw_stats_binary_loss(r[i], 1) >= 0);
+    }
+    EXPECT(gw_stats_binary_loss(INFINITY, 0) == 0 && gw_stats_binary_loss(INFINITY, 1) == 0);
+    EXPECT(isnan(gw_stats_binary_loss(NAN, 0)) && isnan(gw_stats_binary_loss(-2, 1)));
+    /* control: r = 2 (discs, m = 4): 16 / 25; either side of m = 1e100 the
+     * two forms agree to 1e-15 */
+    EXPECT(fabs(gw_stats_binary_loss(2, 0) - 0.64) < 1e-15 && gw_stats_binary_loss(0.5, 0) == 1.0);
+    const double lo = gw_stats_binary_loss(0.99e50, 0), hi = gw_stats_binary_loss(1.01e50, 0);
+    EXPECT(fabs(lo * 0.99e50 * 0.99e50 / 4 - 1) < 1e-15 && fabs(hi * 1.01e50 * 1.01e50 / 4 - 1) < 1e-15);
+    return 0;
+}
+
+static int undecided_counts(void)
+{
+    int nm;
+    const gw_sweep_model *const *ms = gw_sweep_models(&nm);
+    EXPECT(nm > 0);
+    char *list = NULL;
+    /* 5 of 3 cases, a first case before 0 or past the last: refused, nothing written */
+    EXPECT(gw_sweep_undecided_warning(ms[0], 5, 3, 0, &list) == GW_EINVAL && list == NULL);
+    EXPECT(gw_sweep_undecided_warning(ms[0], 1, 3, -1, &list) == GW_EINVAL && list == NULL);
+    EXPECT(gw_sweep_undecided_warning(ms[0], 1, 3, 3, &list) == GW_EINVAL && list == NULL);
+    /* control: 2 of 3, the first case 1 */
+    EXPECT(gw_sweep_undecided_warning(ms[0], 2, 3, 1, &list) == GW_OK && list && strstr(list, "2 of 3 cases") &&
+           strstr(list, "case 1"));
+    free(list);
+    return 0;
+}
+
+static int param_copy_onto_itself(void)
+{
+    const gw_param *t = gw_layer_make_setup_params();
+    gw_layer_make_setup a, b;
+    gw_layer_make_setup_init(&a);
+    gw_err e = {{0}};
+    EXPECT(gw_param_set(t, &a, "out", "pile.h5", &e) == GW_OK && a.out);
+    /* onto itself: its own text was detached (lost, leaked) with GW_OK */
+    if (!refused(gw_param_copy(t, sizeof a, &a, &a, &e), &e, "overlap"))
+        return 1;
+    EXPECT(a.out && strcmp(a.out, "pile.h5") == 0);
+    /* a size that ends before the table's rows: refused naming the row */
+    gw_layer_make_setup_init(&b);
+    if (!refused(gw_param_copy(t, 8, &b, &a, &e), &e, "size 8"))
+        return 1;
+    /* control: a copy of its own */
+    EXPECT(gw_param_copy(t, sizeof a, &b, &a, &e) == GW_OK && b.out && b.out != a.out && strcmp(b.out, "pile.h5") == 0);
+    gw_layer_make_setup_clear(&a);
+    gw_layer_make_setup_clear(&b);
+    return 0;
+}
+
+static int thornton_invalid(void)
+{
+    /* a yield pressure, E* or radius not finite and > 0: every force NaN (a
+     * negative p_y gave a negative force at GW_OK's void) */
+    const double bad[][3] = {{1e11, 1e-3, -1e8}, {1e11, 1e-3, 0}, {1e11, 1e-3, NAN},
+                             {0, 1e-3, 1e8},     {1e11, -1e-3, 1e8}, {INFINITY, 1e-3, 1e8}};
+    for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
+        gw_thornton th;
+        gw_thornton_init(&th, bad[i][0], bad[i][1], bad[i][2]);
+        EXPECT(isnan(gw_thornton_force(&th, 1e-6, 1e-6, NULL, NULL, NULL)));
+    }
+    /* control: below its yield overlap the law is Hertz's, 4/3 E* sqrt(R) d^1.5 */
+    gw_thornton th;
+    gw_thornton_init(&th, 1e11, 1e-3, 1e9);
+    const double d = 1e-3 * th.d_y;
+    EXPECT(fabs(gw_thornton_force(&th, d, d, NULL, NULL, NULL) / (4.0 / 3.0 * 1e11 * sqrt(1e-3) * d * sqrt(d)) - 1) <
+           1e-14);
+    return 0;
+}
+
 int main(void)
 {
     static const struct {
@@ -402,6 +556,12 @@ int main(void)
         {"gw_sheet_apply: bead, wall and sheet materials filled by hand", sheet_apply_invalid_material},
         {"gw_chain_create: Maxwell arms at 1e-200 s", wall_arms_tiny_times},
         {"gw_solver_create/advance/reset: NaN and infinite times", solver_nonfinite_times},
+        {"gw_solver_create: scales not finite and > 0", solver_scale_invalid},
+        {"gw_solver_advance: rk4 asked to go back", fixed_step_backwards},
+        {"gw_stats_binary_loss: ratios past the overflow", binary_loss_huge},
+        {"gw_sweep_undecided_warning: counts that cannot be", undecided_counts},
+        {"gw_param_copy: onto itself, a size short of the table", param_copy_onto_itself},
+        {"gw_thornton_init: a law from values no wall has", thornton_invalid},
     };
     for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++)
         in_child(cases[k].label, cases[k].fn);

@@ -296,6 +296,11 @@ static int rk4_advance(gw_solver *s, double tout, double *t, double *y, int *roo
     const double dt = s->p.dt;
     long taken = 0;
     int rc = 0;
+    if (tout < r->t) { /* a fixed-step method runs forward only: it returned GW_OK where it stood */
+        gw_solver_set_error(s, "rk4: tout = %.9g s is before the solver's time %.9g s (rk4 runs forward only)",
+                            tout, r->t);
+        return GW_EINVAL;
+    }
     while (r->t < tout) {
         double h = tout - r->t;
         if (h > dt)

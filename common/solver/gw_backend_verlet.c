@@ -272,6 +272,11 @@ static int verlet_advance(gw_solver *s, double tout, double *t, double *y, int *
     const double dt = s->p.dt;
     long taken = 0;
     int rc = 0, found = 0;
+    if (tout < v->t) { /* a fixed-step method runs forward only: it returned GW_OK where it stood */
+        gw_solver_set_error(s, "verlet: tout = %.9g s is before the solver's time %.9g s (verlet runs forward "
+                            "only)", tout, v->t);
+        return GW_EINVAL;
+    }
     while (v->t < tout && !found) {
         /* the step is dt itself whenever tout lies a step away or more (within
          * 1e-9 dt): landing on a sample time with h = tout - t, a value a few

@@ -148,6 +148,13 @@ int gw_solver_create(const gw_solver_type *type, const gw_system *sys,
      * state untouched, cvode and arkode failed at t = nan */
     if (!isfinite(t0))
         return gw_err_set(err, GW_EINVAL, "solver: t0 = %g is not a finite time", t0);
+    /* a component's scale is its absolute tolerance's factor: 0 gave cvode an
+     * absolute tolerance of 0 (a failure at t = 0), NaN or a negative one ran
+     * on rk4 unread */
+    for (long i = 0; sys->scale && i < sys->dim; i++)
+        if (!(sys->scale[i] > 0) || !isfinite(sys->scale[i]))
+            return gw_err_set(err, GW_EINVAL, "solver: scale[%ld] = %g must be finite and > 0 (the component's "
+                              "typical magnitude)", i, sys->scale[i]);
 
     gw_solver *s = calloc(1, sizeof *s);
     if (!s)

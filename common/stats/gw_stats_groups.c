@@ -330,6 +330,8 @@ double gw_stats_binary_loss(double r, int sphere)
         return NAN;
     double m = sphere ? r * r * r : r * r;
     /* a block no heavier than its target stops and turns back inside the
-     * contact: its smallest energy there is 0 */
-    return m <= 1 ? 1.0 : 4 * m / ((1 + m) * (1 + m));
+     * contact: its smallest energy there is 0. Past 1e100, 4 m / (1 + m)^2 is
+     * 4 / m to 1e-100: (1 + m)^2 overflowed above r = 1.3e154 (discs) and an
+     * infinite ratio gave inf / inf, NaN where the loss tends to 0 */
+    return m <= 1 ? 1.0 : m > 1e100 ? 4 / m : 4 * m / ((1 + m) * (1 + m));
 }

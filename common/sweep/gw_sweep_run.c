@@ -180,6 +180,8 @@ int gw_sweep_undecided_warning(const gw_sweep_model *m, long n, long total, long
 {
     if (!m || !list || n <= 0)
         return GW_OK;
+    if (n > total || first < 0 || first >= total) /* 5 of 3 cases, or a first case outside them, was written as given */
+        return GW_EINVAL;
     /* the chain's column: converged 0 is a collision held by gravity (its
      * row nan) or not ended at t-max (its values those there), the texts
      * gw_chain_result_warnings gives a single run */

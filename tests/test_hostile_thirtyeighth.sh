@@ -13,6 +13,16 @@
 #    acts on its other columns), two beads, a sheet under a law that takes the
 #    bead's material, and a block whose radii give its mass from the material,
 #    still run.
+#  2 layer-impact --other-settling where it lets nothing through. The flag runs
+#    a sample whose settings line puts its pile away from rest under the
+#    impact's material (or a lower friction than the settling's); on a pile of
+#    layer-make's defaults hit with the defaults, on one whose contacts carry
+#    0.75 of their weight (shear modulus 3e10 against 4e10: a warning, run
+#    without the flag too), or on a sample without a settings line, it had no
+#    effect, exit 0, nothing said. Refused naming --other-settling (exit 2,
+#    nothing written), in the program and Python's layer_impact; where it lets
+#    a pile through (friction 20 on a pile settled at 30, shear modulus 4e9)
+#    it still runs with its warning, and a sweep's key over samples is kept.
 # Checks that fail on the code before: see docs/tests.md.
 # shellcheck source=refusal_lib.sh
 . "$2/tests/refusal_lib.sh"
@@ -69,6 +79,39 @@ r = granwave.chain(n=2, k=1e9)
 check(r["f_max"] > 0, "Python chain(n=2, k=1e9) runs: F_max %.6g N" % r["f_max"])
 r = granwave.sweep("chain", {"n": [1, 2]}, k=1e9)
 check(len(r["f_max"]) == 2, "Python sweep over n = 1, 2 with k=1e9 runs both cases")
+PYEOF
+
+# --- 2 other-settling with nothing to let through ---
+make_sample s.txt --n 20 --width-rm 8
+grep -v '^# settings' s.txt >bare.txt
+IDLE="^granwave layer-impact --other-settling: has no effect: sample '(s|bare)\.txt' runs without it"
+refused "layer-impact --other-settling on a pile settled under the impact's material: refused, nothing written" \
+    "$IDLE \(the settling its settings line records is within" layer-impact --sample s.txt --other-settling --out o
+refused "layer-impact --other-settling --shear-modulus 3e10 (q 0.75: runs with a warning without it): refused" \
+    "$IDLE" layer-impact --sample s.txt --shear-modulus 3e10 --other-settling --out o
+refused "layer-impact --other-settling on a sample without a settings line: refused" \
+    "$IDLE \(it has no settings line" layer-impact --sample bare.txt --other-settling --out o
+# controls: where the flag lets the pile through, it runs (with its warning)
+refused "layer-impact --friction 20 on a pile settled at 30, without the flag: refused (the control's premise)" \
+    "^granwave layer-impact: sample 's\.txt': it settled with friction 30 deg" layer-impact --sample s.txt --friction 20 --out o
+for args in "--friction 20" "--shear-modulus 4e9"; do
+    # shellcheck disable=SC2086
+    timeout -s KILL 60 "$GW" layer-impact --sample s.txt $args --other-settling --t-max 0.002 --quiet --json \
+        >os.json 2>"$tmp/stderr" </dev/null &&
+        jq_py os.json "any('run by other-settling' in w for w in d['warnings'])" | grep -q True &&
+        ok "layer-impact $args --other-settling: runs, its warning in the JSON" ||
+        ko "layer-impact $args --other-settling: exit $? ($(head -c 200 "$tmp/stderr"))"
+done
+printf '[sweep]\nmodel = layer\nout = o\n[grid]\nx = 0, 0.3\n[params]\nsample = s.txt\nother-settling = 1\nt-max = 0.002\n' >os.ini
+timeout -s KILL 60 "$GW" sweep os.ini --check --quiet >/dev/null 2>"$tmp/stderr" </dev/null &&
+    ok "layer sweep with other-settling = 1: valid" || ko "layer sweep with other-settling: exit $? ($(head -c 200 "$tmp/stderr"))"
+py_checks 3 <<'PYEOF'
+refused("Python layer_impact(other_settling=True) on a pile settled under its material",
+        ["settling", "no effect"], granwave.layer_impact, sample="s.txt", other_settling=True, t_max=0.002)
+refused("Python layer_impact(other_settling=True) on a sample without a settings line",
+        ["settling", "no settings line"], granwave.layer_impact, sample="bare.txt", other_settling=True)
+warned("Python layer_impact(friction=20, other_settling=True) runs", "settled with friction 30 deg",
+       granwave.layer_impact, sample="s.txt", friction=20, other_settling=True, t_max=0.002)
 PYEOF
 
 test_summary test_hostile_thirtyeighth

@@ -512,6 +512,18 @@ static int other_settling_idle_check(const gw_layer_impact_setup *s, gw_err *err
                           : "it has no settings line to compare with the impact's material");
 }
 
+/* zero-springs starts every contact's tangential spring at zero instead of
+ * from the springs the sample carries; a sample without springs (no springs
+ * section, or one of none) starts them at zero as it is, and the flag ran
+ * with exit 0 and no effect. A single run's check, as other-settling's. */
+static int single_run_idle_check(const gw_layer_impact_setup *s, const gw_layer_impact_plan *p, gw_err *err)
+{
+    if (s && p && s->zero_springs && p->sample.n_springs == 0)
+        return gw_err_set(err, GW_EINVAL, "zero-springs: has no effect: sample '%s' carries no springs (every "
+                          "contact's tangential spring starts at zero without it)", s->sample);
+    return other_settling_idle_check(s, err);
+}
+
 int layer_impact_plan_make_memo(const gw_layer_impact_setup *s, gw_layer_impact_plan *p, layer_settling_memo *memo,
                                 gw_err *err)
 {
@@ -526,7 +538,7 @@ int layer_impact_plan_make_found(const gw_layer_impact_setup *s, gw_layer_impact
     found->q = NAN;
     found->warning[0] = '\0';
     int rc = plan_make(s, p, NULL, found, err);
-    return rc == GW_OK ? other_settling_idle_check(s, err) : rc; /* the program's single run */
+    return rc == GW_OK ? single_run_idle_check(s, p, err) : rc; /* the program's single run */
 }
 
 int gw_layer_impact_plan_make(const gw_layer_impact_setup *s, gw_layer_impact_plan *p, gw_err *err)
@@ -572,12 +584,12 @@ int gw_layer_impact_run(const gw_layer_impact_setup *s, gw_layer_impact_outcome 
 int gw_layer_impact_run_progress(const gw_layer_impact_setup *s, gw_progress_fn progress, void *pctx,
                                  gw_layer_impact_outcome *out, gw_err *err)
 {
-    if (s && out && s->other_settling) { /* a single run (a sweep's case: layer_impact_run_part) */
+    if (s && out && (s->other_settling || s->zero_springs)) { /* a single run (a sweep's case: layer_impact_run_part) */
         gw_layer_impact_plan p;
         int rc = plan_make(s, &p, NULL, NULL, err);
-        gw_layer_impact_plan_free(&p);
         if (rc == GW_OK)
-            rc = other_settling_idle_check(s, err);
+            rc = single_run_idle_check(s, &p, err);
+        gw_layer_impact_plan_free(&p);
         if (rc != GW_OK) {
             memset(out, 0, sizeof *out);
             out->block_index = -1;

@@ -23,6 +23,11 @@
 #    nothing written), in the program and Python's layer_impact; where it lets
 #    a pile through (friction 20 on a pile settled at 30, shear modulus 4e9)
 #    it still runs with its warning, and a sweep's key over samples is kept.
+#  3 layer-impact --zero-springs on a sample that carries no springs (no
+#    springs section: an older or hand-written sample) starts every spring at
+#    zero as it is: the flag ran with exit 0 and no effect. Refused naming
+#    --zero-springs (exit 2, nothing written), in the program and Python; on a
+#    sample with springs it still runs, and a layer sweep's key is kept.
 # Checks that fail on the code before: see docs/tests.md.
 # shellcheck source=refusal_lib.sh
 . "$2/tests/refusal_lib.sh"
@@ -112,6 +117,28 @@ refused("Python layer_impact(other_settling=True) on a sample without a settings
         ["settling", "no settings line"], granwave.layer_impact, sample="bare.txt", other_settling=True)
 warned("Python layer_impact(friction=20, other_settling=True) runs", "settled with friction 30 deg",
        granwave.layer_impact, sample="s.txt", friction=20, other_settling=True, t_max=0.002)
+PYEOF
+
+# --- 3 zero-springs on a sample without springs ---
+awk '/^springs /{exit} {print}' s.txt | grep -v "^# lines after 'springs'" >nos.txt
+refused "layer-impact --zero-springs on a sample without springs: refused, nothing written" \
+    "^granwave layer-impact --zero-springs: has no effect: sample 'nos\.txt' carries no springs" \
+    layer-impact --sample nos.txt --zero-springs --out o
+for smp in s.txt nos.txt; do
+    a=--zero-springs
+    [ "$smp" = nos.txt ] && a=
+    # shellcheck disable=SC2086
+    timeout -s KILL 60 "$GW" layer-impact --sample "$smp" $a --t-max 0.002 --quiet >/dev/null 2>"$tmp/stderr" </dev/null &&
+        ok "layer-impact --sample $smp ${a:-(no flag)}: runs" || ko "layer-impact --sample $smp $a: exit $? ($(head -c 200 "$tmp/stderr"))"
+done
+printf '[sweep]\nmodel = layer\nout = o\n[grid]\nx = 0, 0.3\n[params]\nsample = nos.txt\nzero-springs = 1\nt-max = 0.002\n' >zs.ini
+timeout -s KILL 60 "$GW" sweep zs.ini --check --quiet >/dev/null 2>"$tmp/stderr" </dev/null &&
+    ok "layer sweep with zero-springs = 1: valid" || ko "layer sweep with zero-springs: exit $? ($(head -c 200 "$tmp/stderr"))"
+py_checks 2 <<'PYEOF'
+refused("Python layer_impact(zero_springs=True) on a sample without springs", ["springs", "no effect"],
+        granwave.layer_impact, sample="nos.txt", zero_springs=True, t_max=0.002)
+r = granwave.layer_impact(sample="s.txt", zero_springs=True, t_max=0.002)
+check(r is not None, "Python layer_impact(zero_springs=True) on a sample with springs runs")
 PYEOF
 
 test_summary test_hostile_thirtyeighth

@@ -98,6 +98,12 @@ void gw_chain_collision_free(gw_chain_collision *out)
 
 int gw_chain_collision_run(const gw_chain_setup *s, gw_chain_collision *out, gw_err *err)
 {
+    /* a single run: what acts only on bead contacts is refused on one bead, as
+     * by granwave chain (a sweep's case, run by the progress variant, keeps it) */
+    if (s && out && s->n == 1 && chain_one_body_check(s, 1, err) != GW_OK) {
+        memset(out, 0, sizeof *out);
+        return GW_EINVAL;
+    }
     return chain_collision_run_progress(s, out, NULL, NULL, err);
 }
 

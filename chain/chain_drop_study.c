@@ -353,7 +353,7 @@ int gw_chain_drop_study_run(const gw_chain_drop_setup *s, gw_progress_fn progres
     gw_chain_params *p = &res.params;
     if (s->block)
         gw_chain_drop_block_params(p);
-    if ((rc = chain_damping_check(p, err)) != GW_OK) {
+    if ((rc = chain_damping_check(p, err)) != GW_OK || (rc = chain_one_body_check(&s->col, p->n, err)) != GW_OK) {
         gw_chain_resolved_free(&res);
         return rc;
     }

@@ -414,6 +414,28 @@ int chain_damping_check(const gw_chain_params *p, gw_err *err)
                       "or viscoelastic law " DAMPING_WHY ": give more beads, sheet-law fitted or hertz, or no damping");
 }
 
+/* One body has no bead contact: chain --n 1 --k 1e9 ran with exit 0 and F_max
+ * 66.3889 N, as without it (and so did drop --n 1 and drop --block --n 3, whose
+ * block is one body); --material glass with --mass and --kwall given changed
+ * only that k. A study over N from 1 or a sweep's case of n = 1 keeps them (a
+ * key of a grid acts on its other cases). */
+int chain_one_body_check(const gw_chain_setup *s, int n_bodies, gw_err *err)
+{
+    if (!s || n_bodies != 1)
+        return GW_OK;
+    if (!isnan(s->k))
+        return gw_err_set(err, GW_EINVAL, "k: has no effect on one body (n = 1, or a drop's block): k is the "
+                          "bead-bead contact's coefficient and one body has no bead contact (the wall's is kwall)");
+    const int fitted = s->sheet_law < 0 || s->sheet_law == GW_SHEET_FITTED;
+    const int wall_given = !isnan(s->kwall) || ((s->sheet >= 0 || s->sheets) && fitted);
+    if (!isnan(s->mass) && wall_given && s->radii.n == 0 &&
+        gw_param_given(gw_param_find(setup_params, "material"), s))
+        return gw_err_set(err, GW_EINVAL, "material: has no effect on one body (n = 1, or a drop's block) with "
+                          "mass and the wall's coefficient given: it would give only k, the bead-bead contact's "
+                          "coefficient, and one body has no bead contact");
+    return GW_OK;
+}
+
 /* A study's sizes from n_lo: its one-bead column ran undamped by its wall's law
  * among damped columns, exit 0 (falcon --n 1:5 --damping kk --sheet brass
  * --sheet-law layer); the single run's rule, chain_damping_check, applied to

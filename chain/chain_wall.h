@@ -39,5 +39,13 @@ int chain_damping_check(const gw_chain_params *p, gw_err *err);
  * GW_EINVAL naming damping when n_lo is 1 and p's wall (any n) is such a wall;
  * sheet (may be NULL) names the wall in the message. */
 int chain_damping_study_check(const gw_chain_params *p, long n_lo, const char *sheet, gw_err *err);
+/* GW_EINVAL naming k, or material, when a single run's setup s gives one body
+ * (n_bodies = 1: chain --n 1, a drop of one bead or its block) what acts only on
+ * bead contacts: k (the bead-bead coefficient), or the bead material where it
+ * would give k alone (mass and the wall's coefficient given, no radii). A
+ * study's or a sweep's one-bead column keeps them: they act on its other
+ * columns or cases (chain_setup.c). */
+struct gw_chain_setup;
+int chain_one_body_check(const struct gw_chain_setup *s, int n_bodies, gw_err *err);
 
 #endif

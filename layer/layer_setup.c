@@ -483,6 +483,47 @@ static int plan_make(const gw_layer_impact_setup *s, gw_layer_impact_plan *p, la
     return resolve(s, &p->sample, &p->lp, &p->ip, &p->type, &p->sp, memo, found, err);
 }
 
+/* other-settling runs a sample whose recorded settling puts its pile away from
+ * rest, or a floor load that settling explains; on a sample that runs without
+ * it (settled under the impact's material and gravity, or with no settings
+ * line to compare) it had no effect and the run said nothing: layer-impact
+ * --other-settling on a pile of layer-make's defaults ran with exit 0, its
+ * result the run's without the flag. A single run's check (the program and
+ * gw_layer_impact_run): a sweep's case keeps it, as a grid's key acts on its
+ * other samples. Called once the plan with the flag is made: the plan without
+ * it is made again from the file. */
+static int other_settling_idle_check(const gw_layer_impact_setup *s, gw_err *err)
+{
+    if (!s || !s->other_settling)
+        return GW_OK;
+    gw_layer_impact_setup t = *s; /* shallow: read only */
+    t.other_settling = 0;
+    gw_layer_impact_plan p;
+    gw_err e = {{0}};
+    const int rc = plan_make(&t, &p, NULL, NULL, &e);
+    const int rec = rc == GW_OK && p.sample.settled.recorded;
+    gw_layer_impact_plan_free(&p);
+    if (rc != GW_OK)
+        return GW_OK;
+    return gw_err_set(err, GW_EINVAL, "other-settling: has no effect: sample '%s' runs without it (%s)", s->sample,
+                      rec ? "the settling its settings line records is within what a run takes without it: "
+                            "contacts carrying 0.5 to 1.5 times the weight they carried at rest, a friction angle "
+                            "at least the settling's"
+                          : "it has no settings line to compare with the impact's material");
+}
+
+/* zero-springs starts every contact's tangential spring at zero instead of
+ * from the springs the sample carries; a sample without springs (no springs
+ * section, or one of none) starts them at zero as it is, and the flag ran
+ * with exit 0 and no effect. A single run's check, as other-settling's. */
+static int single_run_idle_check(const gw_layer_impact_setup *s, const gw_layer_impact_plan *p, gw_err *err)
+{
+    if (s && p && s->zero_springs && p->sample.n_springs == 0)
+        return gw_err_set(err, GW_EINVAL, "zero-springs: has no effect: sample '%s' carries no springs (every "
+                          "contact's tangential spring starts at zero without it)", s->sample);
+    return other_settling_idle_check(s, err);
+}
+
 int layer_impact_plan_make_memo(const gw_layer_impact_setup *s, gw_layer_impact_plan *p, layer_settling_memo *memo,
                                 gw_err *err)
 {
@@ -496,7 +537,8 @@ int layer_impact_plan_make_found(const gw_layer_impact_setup *s, gw_layer_impact
         return gw_err_set(err, GW_EINVAL, "layer_impact_plan_make_found: found is NULL");
     found->q = NAN;
     found->warning[0] = '\0';
-    return plan_make(s, p, NULL, found, err);
+    int rc = plan_make(s, p, NULL, found, err);
+    return rc == GW_OK ? single_run_idle_check(s, p, err) : rc; /* the program's single run */
 }
 
 int gw_layer_impact_plan_make(const gw_layer_impact_setup *s, gw_layer_impact_plan *p, gw_err *err)
@@ -542,6 +584,18 @@ int gw_layer_impact_run(const gw_layer_impact_setup *s, gw_layer_impact_outcome 
 int gw_layer_impact_run_progress(const gw_layer_impact_setup *s, gw_progress_fn progress, void *pctx,
                                  gw_layer_impact_outcome *out, gw_err *err)
 {
+    if (s && out && (s->other_settling || s->zero_springs)) { /* a single run (a sweep's case: layer_impact_run_part) */
+        gw_layer_impact_plan p;
+        int rc = plan_make(s, &p, NULL, NULL, err);
+        if (rc == GW_OK)
+            rc = single_run_idle_check(s, &p, err);
+        gw_layer_impact_plan_free(&p);
+        if (rc != GW_OK) {
+            memset(out, 0, sizeof *out);
+            out->block_index = -1;
+            return rc;
+        }
+    }
     return layer_impact_run_part(s, progress, pctx, NULL, NULL, out, err);
 }
 

@@ -93,8 +93,8 @@ with_warning() {
     local what=$1; shift
     if runs_json "$what" w.json "$@" --quiet; then json_warns "$what" w.json; fi
 }
-with_warning "chain at an overlap of 6.87e4 radii (--vimp 1000 --mass 1e3 --k 1e3 --kwall 1e3)" \
-    chain --vimp 1000 --mass 1e3 --k 1e3 --kwall 1e3
+with_warning "chain at an overlap of 6.87e4 radii (--vimp 1000 --mass 1e3 --kwall 1e3)" \
+    chain --vimp 1000 --mass 1e3 --kwall 1e3
 with_warning "chain --dt 1e-3 (above the step taken)" chain --dt 1e-3
 with_warning "drop cut at t-max with bead 1 on the sensor" drop --t-max 1 --damping kk --restitution 0.5
 with_warning "falcon --dt 1e-3" falcon --n 1:2 --dt 1e-3

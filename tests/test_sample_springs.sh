@@ -117,7 +117,7 @@ print(1e-5 * M * 9.81 * rm)
 EOF
 )
 ksoil() { # ARGS...: the soil's kinetic energy 10 ms after the block was set on the pile, J
-    "$GW" layer-impact --sample s.txt --vi 0.01 --gap 1e-8 --t-max 0.01 --full --other-settling --json --quiet "$@" \
+    "$GW" layer-impact --sample s.txt --vi 0.01 --gap 1e-8 --t-max 0.01 --full --json --quiet "$@" \
         2>/dev/null | $PY -c "import json, sys; print(json.load(sys.stdin)['ledger_end']['kinetic_soil'])" 2>/dev/null || echo nan
 }
 k1=$(ksoil) k0=$(ksoil --zero-springs)

@@ -86,7 +86,11 @@ EOF
 mk p600.txt --n 600
 soil() { # FRICTION: "kinetic potential_lost" of the soil (J) at t = 100 ms, the block resting on it
     rm -rf "$tmp/m"
-    "$GW" layer-impact --sample p600.txt --vi 0.01 --gap 1e-8 --t-max 0.1 --full --other-settling \
+    # other-settling below the settling's 30 deg only: at 30 it has no effect (refused)
+    local os=--other-settling
+    [ "$1" = 30 ] && os=
+    # shellcheck disable=SC2086
+    "$GW" layer-impact --sample p600.txt --vi 0.01 --gap 1e-8 --t-max 0.1 --full $os \
         --friction "$1" --out "$tmp/m" >/dev/null 2>&1 || { echo nan nan; return; }
     /usr/bin/python3 - "$tmp/m/ledger.csv" <<'PY'
 import csv, sys

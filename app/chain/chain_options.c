@@ -194,6 +194,8 @@ int chain_cli_resolve(chain_cli *c, const gw_opt *opts, const char *cmd, gw_err 
     rc = cli_setup(c, opts, &s, err);
     if (rc == GW_OK)
         rc = gw_chain_setup_resolve(&s, &r, err);
+    if (rc == GW_OK && strcmp(cmd, "chain") == 0) /* a single run's one bead (the drop's: its study) */
+        rc = chain_one_body_check(&s, r.params.n, err);
     if (rc == GW_OK && s.radii.n > 0) { /* the radii for the settings JSON */
         c->radii_v = s.radii.v;
         s.radii.v = NULL;

@@ -163,7 +163,8 @@ cJSON *gw_param_json(const gw_param *t, const void *obj);
 void gw_param_clear(const gw_param *t, void *obj);
 
 /* Deep copy of the input rows of src into dst (dst's owned fields must be
- * clear); other bytes are copied as they are. GW_ENOMEM (dst then clear). */
+ * clear); other bytes are copied as they are. GW_ENOMEM (dst then clear);
+ * GW_EINVAL when dst and src overlap or size ends before a row of t. */
 int gw_param_copy(const gw_param *t, size_t size, void *dst, const void *src, gw_err *err);
 
 /* Row constructors (off: the field's offsetof in its struct). Input rows: a

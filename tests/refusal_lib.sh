@@ -81,6 +81,14 @@ refused() {
     ok "$what"
 }
 
+# runs_quiet WHAT ARGS...: the program with ARGS and --quiet exits 0 within 60 s
+runs_quiet() {
+    local what=$1
+    shift
+    timeout -s KILL 60 "$GW" "$@" --quiet >/dev/null 2>"$tmp/stderr" </dev/null &&
+        ok "$what" || ko "$what: exit $? ($(head -c 200 "$tmp/stderr"))"
+}
+
 runs_json() {
     local what=$1 out=$2; shift 2
     timeout -s KILL 60 "$GW" "$@" --json >"$out" 2>"$tmp/stderr" </dev/null
@@ -173,6 +181,13 @@ mpi_setup() {
 # (rk4, 60 to 90 beads)
 chain_sweep8_ini() {
     printf '[sweep]\nmodel = chain\n[grid]\nn = 60, 70, 80, 90\nvimp = 0.1, 0.2\n[params]\nsolver = rk4\n' >"$1"
+}
+
+# the eight-case chain grid in $tmp/a.ini and its undisturbed table in $tmp/ref
+# (one thread), which the sweep tests' disturbed runs are held to
+chain_sweep8_reference() {
+    chain_sweep8_ini "$tmp/a.ini"
+    "$GW" sweep "$tmp/a.ini" --out "$tmp/ref" --quiet --jobs 1 || ko "reference sweep"
 }
 
 settling_sweep_ini() {

@@ -47,6 +47,28 @@ static inline int child_run(case_fn body, int *st, char *buf, size_t n)
     return pid > 0 ? 0 : -1;
 }
 
+/* child_case: BODY as one case of a test (child_run), counted in *NCASES,
+ * and in *NFAIL with a FAIL line on stdout naming LABEL when it crashed,
+ * exited non-zero or printed anything (the library prints nothing). */
+static inline void child_case(const char *label, case_fn body, int *nfail, int *ncases)
+{
+    int st = 0;
+    char buf[2048];
+    ++*ncases;
+    if (child_run(body, &st, buf, sizeof buf) != 0) {
+        ++*nfail;
+        printf("FAIL: %s: no child (mkstemp or fork)\n", label);
+        return;
+    }
+    if (!WIFEXITED(st) || WEXITSTATUS(st) != 0 || buf[0]) {
+        ++*nfail;
+        if (WIFSIGNALED(st))
+            printf("FAIL: %s: killed by signal %d (%s)\n", label, WTERMSIG(st), buf);
+        else
+            printf("FAIL: %s: exit %d, printed \"%s\"\n", label, WEXITSTATUS(st), buf);
+    }
+}
+
 /* In a child: report a failed expectation on stdout (which fails the case). */
 #define EXPECT(cond)                                                                                  \
     do {                                                                                              \

@@ -18,8 +18,7 @@ tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 # shellcheck source=tests/refusal_lib.sh
 . "$(dirname "${BASH_SOURCE[0]}")/refusal_lib.sh"
 mpi_setup
-chain_sweep8_ini "$tmp/a.ini"
-"$GW" sweep "$tmp/a.ini" --out "$tmp/ref" --quiet --jobs 1 || ko "reference sweep"
+chain_sweep8_reference
 
 # each case journaled once, all 8
 once() { [ "$(grep -v '^#' "$1" 2>/dev/null | cut -d, -f1 | sort -u | wc -l)" -eq 8 ] && [ "$(journal_rows "$1")" -eq 8 ]; }

@@ -37,8 +37,7 @@ tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 # shellcheck source=tests/refusal_lib.sh
 . "$(dirname "${BASH_SOURCE[0]}")/refusal_lib.sh"
 mpi_setup
-chain_sweep8_ini "$tmp/a.ini"
-"$GW" sweep "$tmp/a.ini" --out "$tmp/ref" --quiet --jobs 1 || ko "reference sweep"
+chain_sweep8_reference
 
 # each case of FILE's rows at most once, their count printed
 rows_once() {

@@ -67,13 +67,11 @@ for args in "chain --n 2 --k 1e9" "chain --n 1 --mass 2e-3 --material glass" \
     "drop --n 2 --k 1e9" "drop --block --n 3 --radii 4e-3,3e-3,4e-3 --kwall 1e10 --material glass" \
     "falcon --n 1:3 --k 1e9 --heights none" "softwall --n 1:3 --k 1e9"; do
     # shellcheck disable=SC2086
-    timeout -s KILL 60 "$GW" $args --quiet >/dev/null 2>"$tmp/stderr" </dev/null &&
-        ok "$args: runs" || ko "$args: exit $? ($(head -c 200 "$tmp/stderr"))"
+    runs_quiet "$args: runs" $args
 done
 # a chain sweep's case of n = 1 keeps a k that the grid's other cases take
 printf '[sweep]\nmodel = chain\nout = o\n[grid]\nn = 1, 2\n[params]\nk = 1e9\n' >k.ini
-timeout -s KILL 60 "$GW" sweep k.ini --check --quiet >/dev/null 2>"$tmp/stderr" </dev/null &&
-    ok "chain sweep over n = 1, 2 with k: valid" || ko "chain sweep n = 1, 2 with k: exit $? ($(head -c 200 "$tmp/stderr"))"
+runs_quiet "chain sweep over n = 1, 2 with k: valid" sweep k.ini --check
 py_checks 6 <<'PYEOF'
 refused("Python chain(n=1, k=1e9)", ["k:", "no effect on one body"], granwave.chain, n=1, k=1e9)
 refused("Python drop(n=1, k=1e9)", ["k:", "no effect on one body"], granwave.drop, n=1, k=1e9)
@@ -108,8 +106,7 @@ for args in "--friction 20" "--shear-modulus 4e9"; do
         ko "layer-impact $args --other-settling: exit $? ($(head -c 200 "$tmp/stderr"))"
 done
 printf '[sweep]\nmodel = layer\nout = o\n[grid]\nx = 0, 0.3\n[params]\nsample = s.txt\nother-settling = 1\nt-max = 0.002\n' >os.ini
-timeout -s KILL 60 "$GW" sweep os.ini --check --quiet >/dev/null 2>"$tmp/stderr" </dev/null &&
-    ok "layer sweep with other-settling = 1: valid" || ko "layer sweep with other-settling: exit $? ($(head -c 200 "$tmp/stderr"))"
+runs_quiet "layer sweep with other-settling = 1: valid" sweep os.ini --check
 py_checks 3 <<'PYEOF'
 refused("Python layer_impact(other_settling=True) on a pile settled under its material",
         ["settling", "no effect"], granwave.layer_impact, sample="s.txt", other_settling=True, t_max=0.002)
@@ -128,12 +125,10 @@ for smp in s.txt nos.txt; do
     a=--zero-springs
     [ "$smp" = nos.txt ] && a=
     # shellcheck disable=SC2086
-    timeout -s KILL 60 "$GW" layer-impact --sample "$smp" $a --t-max 0.002 --quiet >/dev/null 2>"$tmp/stderr" </dev/null &&
-        ok "layer-impact --sample $smp ${a:-(no flag)}: runs" || ko "layer-impact --sample $smp $a: exit $? ($(head -c 200 "$tmp/stderr"))"
+    runs_quiet "layer-impact --sample $smp ${a:-(no flag)}: runs" layer-impact --sample "$smp" $a --t-max 0.002
 done
 printf '[sweep]\nmodel = layer\nout = o\n[grid]\nx = 0, 0.3\n[params]\nsample = nos.txt\nzero-springs = 1\nt-max = 0.002\n' >zs.ini
-timeout -s KILL 60 "$GW" sweep zs.ini --check --quiet >/dev/null 2>"$tmp/stderr" </dev/null &&
-    ok "layer sweep with zero-springs = 1: valid" || ko "layer sweep with zero-springs: exit $? ($(head -c 200 "$tmp/stderr"))"
+runs_quiet "layer sweep with zero-springs = 1: valid" sweep zs.ini --check
 py_checks 2 <<'PYEOF'
 refused("Python layer_impact(zero_springs=True) on a sample without springs", ["springs", "no effect"],
         granwave.layer_impact, sample="nos.txt", zero_springs=True, t_max=0.002)

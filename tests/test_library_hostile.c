@@ -54,21 +54,7 @@ static int nfail, ncases;
  * prints only why it failed). */
 static void in_child(const char *label, case_fn body)
 {
-    int st = 0;
-    char buf[2048];
-    ncases++;
-    if (child_run(body, &st, buf, sizeof buf) != 0) {
-        nfail++;
-        printf("FAIL: %s: no child (mkstemp or fork)\n", label);
-        return;
-    }
-    if (!WIFEXITED(st) || WEXITSTATUS(st) != 0 || buf[0]) {
-        nfail++;
-        if (WIFSIGNALED(st))
-            printf("FAIL: %s: killed by signal %d (%s)\n", label, WTERMSIG(st), buf);
-        else
-            printf("FAIL: %s: exit %d, printed \"%s\"\n", label, WEXITSTATUS(st), buf);
-    }
+    child_case(label, body, &nfail, &ncases);
 }
 
 static int exists(const char *path)

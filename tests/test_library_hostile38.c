@@ -65,21 +65,7 @@ static int nfail, ncases;
 
 static void in_child(const char *label, case_fn body)
 {
-    int st = 0;
-    char buf[2048];
-    ncases++;
-    if (child_run(body, &st, buf, sizeof buf) != 0) {
-        nfail++;
-        printf("FAIL: %s: no child (mkstemp or fork)\n", label);
-        return;
-    }
-    if (!WIFEXITED(st) || WEXITSTATUS(st) != 0 || buf[0]) {
-        nfail++;
-        if (WIFSIGNALED(st))
-            printf("FAIL: %s: killed by signal %d (%s)\n", label, WTERMSIG(st), buf);
-        else
-            printf("FAIL: %s: exit %d, printed \"%s\"\n", label, WEXITSTATUS(st), buf);
-    }
+    child_case(label, body, &nfail, &ncases);
 }
 
 /* ---- the sweep's journal rows ---- */
@@ -354,14 +340,21 @@ static int osc(double t, const double *y, double *yd, void *p)
     return 0;
 }
 
-static int solver_nonfinite_times(void)
+/* The oscillator y'' = -y as a system of two states, banded. */
+static gw_system osc_system(void)
 {
-    static const char *const names[] = {"cvode", "arkode", "rk4"};
     gw_system sys;
     memset(&sys, 0, sizeof sys);
     sys.dim = 2;
     sys.rhs = osc;
     sys.mu = sys.ml = 1;
+    return sys;
+}
+
+static int solver_nonfinite_times(void)
+{
+    static const char *const names[] = {"cvode", "arkode", "rk4"};
+    gw_system sys = osc_system();
     const double y0[2] = {1, 0}, bad[] = {NAN, INFINITY, -INFINITY};
     for (int b = 0; b < 3; b++) {
         const gw_solver_type *type = gw_solver_type_find(names[b]);
@@ -402,11 +395,7 @@ static int solver_nonfinite_times(void)
 static int solver_scale_invalid(void)
 {
     static const char *const names[] = {"cvode", "arkode", "rk4"};
-    gw_system sys;
-    memset(&sys, 0, sizeof sys);
-    sys.dim = 2;
-    sys.rhs = osc;
-    sys.mu = sys.ml = 1;
+    gw_system sys = osc_system();
     const double y0[2] = {1, 0};
     const double bad[][2] = {{0, 1}, {1, NAN}, {-1, 1}, {1, INFINITY}};
     for (int b = 0; b < 3; b++) {
@@ -437,11 +426,7 @@ static int solver_scale_invalid(void)
 
 static int fixed_step_backwards(void)
 {
-    gw_system sys;
-    memset(&sys, 0, sizeof sys);
-    sys.dim = 2;
-    sys.rhs = osc;
-    sys.mu = sys.ml = 1;
+    gw_system sys = osc_system();
     const double y0[2] = {1, 0};
     gw_solver_params sp = gw_solver_params_default();
     sp.dt = 1e-3;

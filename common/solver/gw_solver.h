@@ -104,7 +104,8 @@ typedef struct gw_system {
     gw_root_fn roots;    /* event functions (optional) */
     int nroots;
     const double *scale; /* typical magnitude of each component, or NULL (= 1):
-                            absolute tolerance of component i is atol * scale[i] */
+                            absolute tolerance of component i is atol * scale[i];
+                            each finite and > 0 (gw_solver_create refuses others) */
     void *params;        /* passed to every callback, owned by the model */
     /* Second-order structure, used by the verlet backend (required there, ignored
      * by the others): drift[i] = j >= 0 says dy_i/dt = y_j (a coordinate and its
@@ -201,8 +202,9 @@ int gw_solver_create(const gw_solver_type *type, const gw_system *sys,
  * stopped it at *t (rootsfound[k] = +1 for a rising and -1 for a falling zero of
  * g_k, 0 for components without a root; rootsfound may be NULL), or GW_ESOLVER /
  * GW_ELIMIT with the backend's message and the time in gw_solver_error(). After a
- * failure *t and y hold the last successful state. A tout that is not finite is
- * GW_EINVAL (message in gw_solver_error(), nothing integrated). */
+ * failure *t and y hold the last successful state. A tout that is not finite,
+ * or for the fixed-step rk4 and verlet (forward only) one before the solver's
+ * time, is GW_EINVAL (message in gw_solver_error(), nothing integrated). */
 int gw_solver_advance(gw_solver *s, double tout, double *t, double *y,
                       int *rootsfound);
 

@@ -347,7 +347,8 @@ long gw_sweep_undecided_rows(const gw_sweep_model *m, const double *values, long
 
 /* The warning for n such cases of total, the first case first, appended to
  * *list (nothing when n <= 0): the one text of the program's sweep and of
- * gw_sweep_run_warned. GW_OK or GW_ENOMEM. */
+ * gw_sweep_run_warned. GW_OK, GW_ENOMEM, or GW_EINVAL (nothing appended) for
+ * n above total or a first case outside [0, total). */
 int gw_sweep_undecided_warning(const gw_sweep_model *m, long n, long total, long first, char **list);
 
 GW_END_DECLS

@@ -20,14 +20,14 @@ sweep="$SRC/common/sweep/gw_sweep_config.c $SRC/common/sweep/gw_sweep_inputs.c $
  $SRC/common/sweep/gw_sweep_table.c"
 # the build a journal records names the numerical libraries' versions
 sweeplibs="-lsundials_cvode -lgsl -lgslcblas -lfftw3"
-common="$SRC/common/gw_common.c $SRC/common/gw_io_afile.c $SRC/common/gw_io_outset.c $SRC/common/gw_io_temps.c $SRC/common/gw_io_paths.c $SRC/common/gw_io_input.c $SRC/common/gw_io_hash.c $SRC/app/gw_cli.c $SRC/common/gw_json.c $SRC/common/gw_param.c $SRC/common/gw_locale.c"
+common="$SRC/common/gw_common.c $SRC/common/gw_io_afile.c $SRC/common/gw_io_outset.c $SRC/common/gw_io_temps.c $SRC/common/gw_io_paths.c $SRC/common/gw_io_input.c $SRC/common/gw_io_hash.c $SRC/app/gw_cli.c $SRC/common/gw_json.c $SRC/common/gw_param.c $SRC/common/gw_locale.c $SRC/common/gw_forklock.c"
 clang $CF -o "$out/fuzz_sweep_config" "$SRC/tests/fuzz/fuzz_sweep_config.c" $sweep $common $sweeplibs -linih -lcjson -lm
 clang $CF -o "$out/fuzz_cli" "$SRC/tests/fuzz/fuzz_cli.c" $common -lcjson -lm
 # the sweep journal a resumed sweep reads back, and the table written from it
 clang $CF -o "$out/fuzz_sweep_journal" "$SRC/tests/fuzz/fuzz_sweep_journal.c" $sweep $common \
     $sweeplibs -linih -lcjson -lm
 # the sweep table layer-stats reads, and the whole analysis after it (B.31 fit: GSL)
-clang $CF -o "$out/fuzz_stats_table" "$SRC/tests/fuzz/fuzz_stats_table.c" "$SRC"/common/stats/*.c "$SRC/common/gw_fit.c" "$SRC/common/gw_forklock.c" \
+clang $CF -o "$out/fuzz_stats_table" "$SRC/tests/fuzz/fuzz_stats_table.c" "$SRC"/common/stats/*.c "$SRC/common/gw_fit.c" \
     $common -lcjson -lgsl -lgslcblas -lm
 # The layer sample reader (text, and HDF5 when the build has it: inputs up to
 # 16 kB so that the seed HDF5 samples fit). Without HDF5 flags for clang the
@@ -42,7 +42,7 @@ if [ -f "$SRC/layer/layer_sample.c" ]; then
     fi
     clang -I"$GEN" -I"$SRC/layer" $CF -o "$out/fuzz_layer_sample" "$SRC/tests/fuzz/fuzz_layer_sample.c" \
         "$SRC/layer/layer_sample.c" "$SRC/layer/layer_sample_check.c" "$SRC/layer/layer_sample_h5.c" \
-        "$SRC/layer/layer_sample_porosity.c" "$SRC/layer/layer_sample_settings.c" "$SRC/layer/layer_sample_springs.c" "$SRC/layer/layer_clump_check.c" "$SRC/common/gw_h5.c" "$SRC/common/gw_forklock.c" \
+        "$SRC/layer/layer_sample_porosity.c" "$SRC/layer/layer_sample_settings.c" "$SRC/layer/layer_sample_springs.c" "$SRC/layer/layer_clump_check.c" "$SRC/common/gw_h5.c" \
         $common $H5 -lcjson -lm
     targets="sweep_config cli sweep_journal stats_table layer_sample"
 else

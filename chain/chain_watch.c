@@ -317,7 +317,16 @@ static void report(chain_watch *w)
         w->done_hi = done;
     }
     w->busy = w->nrun;
-    const double left = time_left(w, c);
+    double left;
+    if (w->left_known && done - w->done_at < 1e-3 * total) {
+        left = fmax(w->left_at - (w->elapsed - w->elapsed_at), 0);
+    } else {
+        left = time_left(w, c);
+        w->left_at = left;
+        w->elapsed_at = w->elapsed;
+        w->done_at = done;
+        w->left_known = left >= 0;
+    }
     double part;
     if (left >= 0 && w->elapsed > 0)
         part = w->elapsed / (w->elapsed + left);
@@ -357,6 +366,7 @@ void chain_watch_begin(chain_watch *w, chain_watch_running *run, double weight, 
     run->next = w->running;
     w->running = run;
     w->nrun++;
+    w->left_known = 0; /* the schedule changed */
     if (w->nrun > w->busy)
         w->busy = w->nrun;
     pthread_mutex_unlock(&w->lock);
@@ -380,6 +390,7 @@ void chain_watch_end(chain_watch_running *run, int ok)
             break;
         }
     w->nrun--;
+    w->left_known = 0; /* the schedule changed */
     /* its length against the expected one: the study's correction */
     w->w_ended += run->weight;
     if (ok && run->x > 0) {

@@ -53,6 +53,12 @@ typedef struct chain_watch {
     int unplanned;        /* the schedule is not known (out of memory): the share of the work instead */
     double elapsed;       /* the time elapsed, in work per busy thread */
     double done_hi;       /* the most work counted done */
+    /* the time left scheduled last (time_left walks every collision to come,
+     * and a report comes at every sample of a collision): between schedules
+     * it runs down with the time elapsed; scheduled again when a collision
+     * begins or ends, or a thousandth of the study's work after the last */
+    double left_at, elapsed_at, done_at;
+    int left_known;
 } chain_watch;
 
 /* rho(N): a collision of N beads' expected length over its t_expect (the run

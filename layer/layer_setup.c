@@ -490,23 +490,20 @@ static int plan_make(const gw_layer_impact_setup *s, gw_layer_impact_plan *p, la
  * --other-settling on a pile of layer-make's defaults ran with exit 0, its
  * result the run's without the flag. A single run's check (the program and
  * gw_layer_impact_run): a sweep's case keeps it, as a grid's key acts on its
- * other samples. Called once the plan with the flag is made: the plan without
- * it is made again from the file. */
-static int other_settling_idle_check(const gw_layer_impact_setup *s, gw_err *err)
+ * other samples. Called once the plan with the flag is made, on the plan's
+ * sample: the setup without the flag is resolved against it, not read again. */
+static int other_settling_idle_check(const gw_layer_impact_setup *s, const gw_layer_sample *smp, gw_err *err)
 {
-    if (!s || !s->other_settling)
+    if (!s || !smp || !s->other_settling)
         return GW_OK;
     gw_layer_impact_setup t = *s; /* shallow: read only */
     t.other_settling = 0;
-    gw_layer_impact_plan p;
     gw_err e = {{0}};
-    const int rc = plan_make(&t, &p, NULL, NULL, &e);
-    const int rec = rc == GW_OK && p.sample.settled.recorded;
-    gw_layer_impact_plan_free(&p);
-    if (rc != GW_OK)
+    if (layer_impact_setup_check_sample(&t, smp, NULL, &e) != GW_OK)
         return GW_OK;
     return gw_err_set(err, GW_EINVAL, "other-settling: has no effect: sample '%s' runs without it (%s)", s->sample,
-                      rec ? "the settling its settings line records is within what a run takes without it: "
+                      smp->settled.recorded
+                          ? "the settling its settings line records is within what a run takes without it: "
                             "contacts carrying 0.5 to 1.5 times the weight they carried at rest, a friction angle "
                             "at least the settling's"
                           : "it has no settings line to compare with the impact's material");
@@ -521,7 +518,7 @@ static int single_run_idle_check(const gw_layer_impact_setup *s, const gw_layer_
     if (s && p && s->zero_springs && p->sample.n_springs == 0)
         return gw_err_set(err, GW_EINVAL, "zero-springs: has no effect: sample '%s' carries no springs (every "
                           "contact's tangential spring starts at zero without it)", s->sample);
-    return other_settling_idle_check(s, err);
+    return p ? other_settling_idle_check(s, &p->sample, err) : GW_OK;
 }
 
 int layer_impact_plan_make_memo(const gw_layer_impact_setup *s, gw_layer_impact_plan *p, layer_settling_memo *memo,
@@ -581,27 +578,29 @@ int gw_layer_impact_run(const gw_layer_impact_setup *s, gw_layer_impact_outcome 
     return gw_layer_impact_run_progress(s, NULL, NULL, out, err);
 }
 
+static int impact_run(const gw_layer_impact_setup *s, gw_progress_fn progress, void *pctx,
+                      void (*part)(void *part_ctx, double x), void *part_ctx, int single,
+                      gw_layer_impact_outcome *out, gw_err *err);
+
 int gw_layer_impact_run_progress(const gw_layer_impact_setup *s, gw_progress_fn progress, void *pctx,
                                  gw_layer_impact_outcome *out, gw_err *err)
 {
-    if (s && out && (s->other_settling || s->zero_springs)) { /* a single run (a sweep's case: layer_impact_run_part) */
-        gw_layer_impact_plan p;
-        int rc = plan_make(s, &p, NULL, NULL, err);
-        if (rc == GW_OK)
-            rc = single_run_idle_check(s, &p, err);
-        gw_layer_impact_plan_free(&p);
-        if (rc != GW_OK) {
-            memset(out, 0, sizeof *out);
-            out->block_index = -1;
-            return rc;
-        }
-    }
-    return layer_impact_run_part(s, progress, pctx, NULL, NULL, out, err);
+    return impact_run(s, progress, pctx, NULL, NULL, 1, out, err); /* a single run: its idle flags refused */
 }
 
+/* A sweep's case: other-settling and zero-springs kept where idle, as a
+ * grid's key acts on its other samples. */
 int layer_impact_run_part(const gw_layer_impact_setup *s, gw_progress_fn progress, void *pctx,
                           void (*part)(void *part_ctx, double x), void *part_ctx, gw_layer_impact_outcome *out,
                           gw_err *err)
+{
+    return impact_run(s, progress, pctx, part, part_ctx, 0, out, err);
+}
+
+/* The run from the setup, its plan made once (single: with its idle-flag check). */
+static int impact_run(const gw_layer_impact_setup *s, gw_progress_fn progress, void *pctx,
+                      void (*part)(void *part_ctx, double x), void *part_ctx, int single,
+                      gw_layer_impact_outcome *out, gw_err *err)
 {
     if (!s || !out)
         return gw_err_set(err, GW_EINVAL, "gw_layer_impact_run: %s is NULL", !s ? "setup" : "out");
@@ -610,6 +609,8 @@ int layer_impact_run_part(const gw_layer_impact_setup *s, gw_progress_fn progres
     gw_layer_impact_plan plan;
     layer_settling_found found = {.q = NAN}; /* the plan's verdict: the run does not find it again */
     int rc = plan_make(s, &plan, NULL, &found, err);
+    if (rc == GW_OK && single)
+        rc = single_run_idle_check(s, &plan, err);
     const gw_layer_sample smp = plan.sample; /* a view: freed with the plan */
     const gw_layer_params lp = plan.lp;
     gw_layer_impact_params ip = plan.ip;

@@ -23,6 +23,7 @@
 #include <unistd.h>
 
 #include "gw_cli.h"
+#include "gw_pool_impl.h"
 #include "sweep_cmd.h"
 #if GW_HAVE_MPI
 #include <mpi.h>
@@ -77,6 +78,10 @@ typedef struct sweep_run {
     long nslots;
     double end_sum; /* the last part of the cases ended (their typical end), summed */
     long end_n;
+    /* the time left scheduled over the pool's threads (sweep_part), and the
+     * share done of each case under way, scratch for it */
+    gw_pool_eta eta;
+    double *share;
 } sweep_run;
 
 /* A case under way: its part (gw_sweep_part_fn's x, in millionths; -1 none
@@ -105,23 +110,29 @@ static case_slot *slot_take(const sweep_run *s)
     return NULL;
 }
 
-/* The share of the sweep's work done: the cases ended, and those under way
- * by their parts, each over the part the cases ended reached at their end
- * (their typical end: an impact ends at T_f, long before its t-max; 1 before
- * any ended); one near or past that end is expected to go on a tenth longer
- * than it has, so that a case under way never counts whole (counted whole,
- * a chain sweep said 100 % and ~0 s left while its last case ran). Caller
+/* The part of the sweep done, for its line: the share of its time, as a
+ * study's on several threads (gw_pool_eta: time counted in work per thread at
+ * work, the cases left scheduled over the pool's threads as it hands them
+ * out, threads beyond the CPUs sharing them, so the last cases, run on fewer
+ * threads, count at their own pace; on one thread the share of the work).
+ * The cases weigh alike: the cases ended count whole, and those under way by
+ * their parts, each over the part the cases ended reached at their end (their
+ * typical end: an impact ends at T_f, long before its t-max; 1 before any
+ * ended); one near or past that end is expected to go on a tenth longer than
+ * it has, so that a case under way never counts whole (counted whole, a chain
+ * sweep said 100 % and ~0 s left while its last case ran). Called at every
+ * line due or not (the time elapsed is counted as the work goes). Caller
  * holds s->lock. */
-static double sweep_part(const sweep_run *s, long done)
+static double sweep_part(sweep_run *s, long done)
 {
     const double end = s->end_n > 0 && s->end_sum > 0 ? s->end_sum / (double)s->end_n : 1.0;
-    double part = (double)done;
+    int nrun = 0;
     for (long i = 0; i < s->nslots; i++) {
         const long x = atomic_load_explicit(&s->slots[i].x_micro, memory_order_relaxed);
-        if (atomic_load(&s->slots[i].busy) && x > 0)
-            part += 1e-6 * (double)x / fmax(end, 1.1e-6 * (double)x);
+        if (atomic_load(&s->slots[i].busy))
+            s->share[nrun++] = x > 0 ? 1e-6 * (double)x / fmax(end, 1.1e-6 * (double)x) : 0;
     }
-    return s->ntodo > 0 ? fmin(part / (double)s->ntodo, 1.0) : 1.0;
+    return gw_pool_eta_part(&s->eta, done, s->share, nrun, s->ntodo - done - nrun);
 }
 
 /* The sweep's line when its cases are seen inside (threads): "sweep: k/n
@@ -133,10 +144,12 @@ static void sweep_line(sweep_run *s, int last)
 {
     gw_cli_progress *p = &s->prog;
     const double now = gw_clock_ms(), el_ms = now - p->t0;
-    if (p->quiet || (!last && now - p->last < gw_cli_progress_gap(p, el_ms)))
+    if (p->quiet)
         return;
     const long done = s->done + s->nfailed;
     const double part = last ? 1.0 : sweep_part(s, done), el = el_ms / 1e3;
+    if (!last && now - p->last < gw_cli_progress_gap(p, el_ms))
+        return;
     char line[320], before[64] = "", left[64] = "";
     if (p->before > 0)
         snprintf(before, sizeof before, " (%ld done before)", p->before);
@@ -282,7 +295,12 @@ static int pool_case(void *ctx, long i, gw_err *err)
     if (!row)
         return gw_err_set(err, GW_ENOMEM, "case %ld: out of memory", s->todo[i]);
     case_slot *slot = slot_take(s);
-    atomic_fetch_add(&s->running, 1);
+    const long under_way = atomic_fetch_add(&s->running, 1) + 1;
+    if (slot) { /* the threads at work since the last line: the time elapsed (sweep_part) */
+        pthread_mutex_lock(&s->lock);
+        gw_pool_eta_begun(&s->eta, (int)under_way);
+        pthread_mutex_unlock(&s->lock);
+    }
     int rc = run_case(s, s->todo[i], row, slot, err);
     pthread_mutex_lock(&s->lock);
     /* the slot freed with the case counted ended, under the lock the
@@ -342,11 +360,11 @@ static void *tick_loop(void *arg)
 static void run_threads(sweep_run *s, long jobs)
 {
     gw_err err = {{0}};
-    if (!s->prog.quiet && s->run_part) { /* a slot for each thread of the pool (gw_cases_run's count) */
-        long c = jobs > 0 ? jobs : sysconf(_SC_NPROCESSORS_ONLN);
-        c = c > 0 ? (c < 1024 ? c : 1024) : 1;
-        s->nslots = c < s->ntodo ? c : s->ntodo;
-        if (s->nslots > 0 && (s->slots = calloc((size_t)s->nslots, sizeof *s->slots)))
+    if (!s->prog.quiet && s->run_part && s->ntodo > 0) { /* a slot for each thread of the pool */
+        s->nslots = gw_pool_threads(s->ntodo, (int)jobs); /* gw_cases_run's count: every case has one */
+        if (gw_pool_eta_init(&s->eta, s->ntodo, (int)jobs) == GW_OK &&
+            (s->share = malloc((size_t)s->nslots * sizeof *s->share)) &&
+            (s->slots = calloc((size_t)s->nslots, sizeof *s->slots)))
             for (long i = 0; i < s->nslots; i++) {
                 atomic_init(&s->slots[i].busy, 0);
                 atomic_init(&s->slots[i].x_micro, -1);
@@ -366,7 +384,10 @@ static void run_threads(sweep_run *s, long jobs)
         pthread_join(th, NULL);
     }
     free(s->slots);
+    free(s->share);
+    gw_pool_eta_free(&s->eta);
     s->slots = NULL;
+    s->share = NULL;
     s->nslots = 0;
     if (rc != GW_OK && rc != GW_ECANCELED) {
         s->failed = rc;

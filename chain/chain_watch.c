@@ -56,12 +56,13 @@
  * thread free (of its group's threads, gw_pool_threads), the threads of a
  * group beyond the CPUs sharing them, and each group (a sweep, then a run on
  * the study's own thread, ...) begins when the one before has ended. part = T_e / (T_e + T_l); on one thread T_e is the work
- * done and T_l the work left: the share of the work as before.
+ * done and T_l the work left: the share of the work as before. The clock and
+ * the schedule's steps are the pool's (gw_pool_impl.h), which `granwave
+ * sweep`'s line schedules its cases with too (gw_pool_eta).
  */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-#include <unistd.h>
 
 #include "chain_collide_impl.h"
 #include "chain_model.h"
@@ -97,8 +98,7 @@ void chain_watch_init(chain_watch *w, gw_chain_watch_fn fn, void *ctx)
     memset(w, 0, sizeof *w);
     w->fn = fn;
     w->ctx = ctx;
-    const long c = sysconf(_SC_NPROCESSORS_ONLN);
-    w->cpus = c > 0 ? (int)(c < 1024 ? c : 1024) : 1;
+    w->cpus = gw_pool_cpus();
     pthread_mutex_init(&w->lock, NULL);
 }
 
@@ -229,44 +229,6 @@ static double correction(const chain_watch *w)
     return w->c_den > 0 ? w->c_num / w->c_den : 1.0;
 }
 
-/* The min-heap h[0..m-1] with its top replaced by v. */
-static void heap_replace_top(double *h, int m, double v)
-{
-    int i = 0;
-    for (;;) {
-        int c = 2 * i + 1;
-        if (c >= m)
-            break;
-        if (c + 1 < m && h[c + 1] < h[c])
-            c++;
-        if (!(h[c] < v))
-            break;
-        h[i] = h[c];
-        i = c;
-    }
-    h[i] = v;
-}
-
-static int by_end_down(const void *a, const void *b)
-{
-    const double x = *(const double *)a, y = *(const double *)b;
-    return (x < y) - (x > y);
-}
-
-/* The time a group takes whose threads end their last collisions at e[0..m-1]
- * (work per thread): every thread under way works at the same pace, a whole
- * CPU's while they are no more than the CPUs, a share of one beyond (k threads
- * on cpus CPUs: cpus / k), so while k threads remain the work goes at
- * max(1, k / cpus) times the time; sorts e. */
-static double group_time(double *e, int m, int cpus)
-{
-    qsort(e, (size_t)m, sizeof *e, by_end_down);
-    double t = 0;
-    for (int k = 1; k <= m; k++) /* k threads at work from e[k] to e[k - 1] */
-        t += (e[k - 1] - (k < m ? e[k] : 0)) * fmax(1.0, (double)k / (cpus > 0 ? cpus : 1));
-    return t;
-}
-
 /* The time left, in work per thread: the collisions under way hold their
  * threads for what is left of their work (weight times 1 - f), those to come
  * go, in order, to the first thread free of their group, a group begins when
@@ -292,11 +254,11 @@ static double time_left(chain_watch *w, double c)
             w->slot[k] = 0;
         if (grp == g) /* the collisions under way hold threads of this group */
             for (const chain_watch_running *r = w->running; r; r = r->next)
-                heap_replace_top(w->slot, th, w->slot[0] + r->weight * (1 - chain_watch_share(r->x, c * r->rho)));
+                gw_pool_give(w->slot, th, r->weight * (1 - chain_watch_share(r->x, c * r->rho)));
         for (; i < w->ntask && w->task[i].group <= grp; i++)
             if (!w->task[i].begun)
-                heap_replace_top(w->slot, th, w->slot[0] + w->task[i].weight);
-        left += group_time(w->slot, th, w->cpus);
+                gw_pool_give(w->slot, th, w->task[i].weight);
+        left += gw_pool_span(w->slot, th, w->cpus);
     }
     return left;
 }
@@ -312,24 +274,20 @@ static void report(chain_watch *w)
     }
     /* the time elapsed: the work done since the last report went on the
      * collisions under way since, each on its thread */
-    if (done > w->done_hi) {
-        w->elapsed += (done - w->done_hi) / fmin(fmax(w->busy, 1), fmax(w->cpus, 1));
-        w->done_hi = done;
-    }
-    w->busy = w->nrun;
+    gw_pool_clock_count(&w->clock, done, w->nrun, w->cpus);
     double left;
     if (w->left_known && done - w->done_at < 1e-3 * total) {
-        left = fmax(w->left_at - (w->elapsed - w->elapsed_at), 0);
+        left = fmax(w->left_at - (w->clock.elapsed - w->elapsed_at), 0);
     } else {
         left = time_left(w, c);
         w->left_at = left;
-        w->elapsed_at = w->elapsed;
+        w->elapsed_at = w->clock.elapsed;
         w->done_at = done;
         w->left_known = left >= 0;
     }
     double part;
-    if (left >= 0 && w->elapsed > 0)
-        part = w->elapsed / (w->elapsed + left);
+    if (left >= 0 && w->clock.elapsed > 0)
+        part = w->clock.elapsed / (w->clock.elapsed + left);
     else /* nothing done yet, or no schedule: the share of the work */
         part = total > 0 ? done / total : 0;
     /* held where a longer correction would take it back: a display whose
@@ -367,8 +325,7 @@ void chain_watch_begin(chain_watch *w, chain_watch_running *run, double weight, 
     w->running = run;
     w->nrun++;
     w->left_known = 0; /* the schedule changed */
-    if (w->nrun > w->busy)
-        w->busy = w->nrun;
+    gw_pool_clock_busy(&w->clock, w->nrun);
     pthread_mutex_unlock(&w->lock);
 }
 

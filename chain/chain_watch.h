@@ -14,6 +14,7 @@
 
 #include "gw_chain.h"
 #include "gw_chain_study.h"
+#include "gw_pool_impl.h"
 
 /* One collision under way (on its thread's stack, listed under the lock). */
 typedef struct chain_watch_running {
@@ -41,7 +42,7 @@ typedef struct chain_watch {
     double c_num, c_den;  /* the correction of the expected lengths learnt: sum w r / rho, sum w */
     double shown;         /* the largest share reported */
     chain_watch_running *running;
-    int nrun, busy;       /* collisions under way; the most under way since the last report */
+    int nrun;             /* collisions under way */
     int cpus;             /* the CPUs online (chain_watch_init): threads beyond them share them */
     /* the schedule: the collisions planned in the order they run, each group's threads */
     chain_watch_task *task;
@@ -51,8 +52,7 @@ typedef struct chain_watch {
     double *slot;         /* scratch: when each thread of a group comes free (a heap) */
     int slot_cap;
     int unplanned;        /* the schedule is not known (out of memory): the share of the work instead */
-    double elapsed;       /* the time elapsed, in work per busy thread */
-    double done_hi;       /* the most work counted done */
+    gw_pool_clock clock;  /* the time elapsed, in work per busy thread (gw_pool_impl.h) */
     /* the time left scheduled last (time_left walks every collision to come,
      * and a report comes at every sample of a collision): between schedules
      * it runs down with the time elapsed; scheduled again when a collision

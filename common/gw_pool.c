@@ -4,6 +4,7 @@
  * mutex orders the bookkeeping (first failure, count of finished cases, the
  * progress call). No physics, no units: cases are counted.
  */
+#include <math.h>
 #include <pthread.h>
 #include <stdatomic.h>
 #include <stdlib.h>
@@ -57,15 +58,150 @@ static void *worker(void *arg)
     return NULL;
 }
 
+int gw_pool_cpus(void)
+{
+    const long c = sysconf(_SC_NPROCESSORS_ONLN);
+    return c > 0 ? (int)(c < 1024 ? c : 1024) : 1;
+}
+
 int gw_pool_threads(long n, int jobs)
 {
-    if (jobs <= 0) {
-        long c = sysconf(_SC_NPROCESSORS_ONLN);
-        jobs = c > 0 ? (int)(c < 1024 ? c : 1024) : 1;
-    }
+    if (jobs <= 0)
+        jobs = gw_pool_cpus();
     if (jobs > n)
         jobs = n > 1 ? (int)n : 1;
     return jobs;
+}
+
+void gw_pool_give(double *h, int m, double w)
+{
+    if (m < 1)
+        return;
+    const double v = h[0] + w; /* the top (the first free) replaced, sifted down */
+    int i = 0;
+    for (;;) {
+        int c = 2 * i + 1;
+        if (c >= m)
+            break;
+        if (c + 1 < m && h[c + 1] < h[c])
+            c++;
+        if (!(h[c] < v))
+            break;
+        h[i] = h[c];
+        i = c;
+    }
+    h[i] = v;
+}
+
+void gw_pool_give_each(double *h, int m, long n, double w)
+{
+    if (m < 1 || n <= 0)
+        return;
+    double top = h[0];
+    for (int k = 1; k < m; k++)
+        top = fmax(top, h[k]);
+    while (n > 0) {
+        if (n >= m && top - h[0] <= w) {
+            /* every thread comes free within w of the others: each takes
+             * one in turn, the first free first (it is then free no sooner
+             * than the last), so whole rounds add to each alike and keep the
+             * heap; the rest go one at a time */
+            const double add = (double)(n / m) * w;
+            for (int k = 0; k < m; k++)
+                h[k] += add;
+            top += add;
+            n %= m;
+            continue;
+        }
+        top = fmax(top, h[0] + w);
+        gw_pool_give(h, m, w);
+        n--;
+    }
+}
+
+static int by_end_down(const void *a, const void *b)
+{
+    const double x = *(const double *)a, y = *(const double *)b;
+    return (x < y) - (x > y);
+}
+
+double gw_pool_span(double *e, int m, int cpus)
+{
+    if (m < 1)
+        return 0;
+    qsort(e, (size_t)m, sizeof *e, by_end_down);
+    double t = 0;
+    for (int k = 1; k <= m; k++) /* k threads at work from e[k] to e[k - 1] */
+        t += (e[k - 1] - (k < m ? e[k] : 0)) * fmax(1.0, (double)k / (cpus > 0 ? cpus : 1));
+    return t;
+}
+
+void gw_pool_clock_busy(gw_pool_clock *c, int under_way)
+{
+    if (under_way > c->busy)
+        c->busy = under_way;
+}
+
+void gw_pool_clock_count(gw_pool_clock *c, double done, int under_way, int cpus)
+{
+    /* the work done since the last count went on the threads under way since */
+    if (done > c->done_hi) {
+        c->elapsed += (done - c->done_hi) / fmin(fmax(c->busy, 1), fmax(cpus, 1));
+        c->done_hi = done;
+    }
+    c->busy = under_way;
+}
+
+int gw_pool_eta_init(gw_pool_eta *e, long n, int jobs)
+{
+    memset(e, 0, sizeof *e);
+    const int th = gw_pool_threads(n, jobs);
+    if (!(e->free_at = malloc((size_t)th * sizeof *e->free_at)))
+        return GW_ENOMEM;
+    e->threads = th;
+    e->cpus = gw_pool_cpus();
+    return GW_OK;
+}
+
+void gw_pool_eta_free(gw_pool_eta *e)
+{
+    if (!e)
+        return;
+    free(e->free_at);
+    e->free_at = NULL;
+}
+
+void gw_pool_eta_begun(gw_pool_eta *e, int under_way)
+{
+    gw_pool_clock_busy(&e->clock, under_way);
+}
+
+double gw_pool_eta_part(gw_pool_eta *e, long ended, const double *share, int nrun, long to_come)
+{
+    double done = (double)ended;
+    for (int i = 0; i < nrun; i++)
+        done += fmin(fmax(share[i], 0), 1);
+    const double total = (double)ended + nrun + (double)(to_come > 0 ? to_come : 0);
+    gw_pool_clock_count(&e->clock, done, nrun, e->cpus);
+    const int th = e->threads;
+    double part;
+    if (e->clock.elapsed > 0 && e->free_at && nrun <= th) {
+        /* the time left: the cases under way hold their threads for their
+         * share left, those to come go to the first thread free */
+        for (int k = 0; k < th; k++)
+            e->free_at[k] = 0;
+        for (int i = 0; i < nrun; i++)
+            gw_pool_give(e->free_at, th, 1 - fmin(fmax(share[i], 0), 1));
+        gw_pool_give_each(e->free_at, th, to_come, 1.0);
+        const double left = gw_pool_span(e->free_at, th, e->cpus);
+        part = e->clock.elapsed / (e->clock.elapsed + left);
+    } else { /* nothing done yet (or no schedule): the share of the work */
+        part = total > 0 ? done / total : 0;
+    }
+    /* held where it would fall (a case under way slower than the ones
+     * before): a display whose share fell would read as work undone */
+    e->shown = fmax(e->shown, fmin(fmax(part, 0), 1));
+    return e->shown;
 }
 
 int gw_cases_run(long n, int jobs, gw_case_fn fn, void *ctx, gw_progress_fn progress, void *pctx,

@@ -1,13 +1,72 @@
 /*
- * gw_pool_impl.h: the worker pool's thread count (gw_pool.c), inside the
- * library only: a study's progress schedules the work left over the threads
- * that will run it (chain/chain_watch.c), the count gw_cases_run starts.
+ * gw_pool_impl.h: the worker pool's thread count and its schedule (gw_pool.c),
+ * inside the library and the program only. A progress display's time left
+ * schedules the work left over the threads that will run it, as the pool
+ * hands it out: a study's (chain/chain_watch.c, its collisions weighed) and
+ * `granwave sweep`'s (app/sweep_cmd.c, its cases weighed alike, gw_pool_eta).
+ * Time is counted in work per thread at work: every thread under way goes at
+ * the same pace, a whole CPU's while they are no more than the CPUs, a share
+ * of one beyond (k threads on c CPUs: c / k each).
  */
 #ifndef GW_POOL_IMPL_H
 #define GW_POOL_IMPL_H
 
+/* The CPUs online (sysconf), in [1, 1024]: 1 where the count is not known. */
+int gw_pool_cpus(void);
+
 /* The threads gw_cases_run(n, jobs, ...) runs n cases on: jobs, or one per
- * online CPU when jobs <= 0 (at most 1024), never more than n; 1 when n <= 1. */
+ * online CPU when jobs <= 0 (gw_pool_cpus), never more than n; 1 when n <= 1. */
 int gw_pool_threads(long n, int jobs);
+
+/* A schedule: free_at[0..m-1], a min-heap (all zeros is one), the time, in
+ * work per thread from now, when each of m threads comes free. The first
+ * thread free takes a case of work w (gw_pool_give), or n such cases one
+ * after another (gw_pool_give_each: n may be large, it takes O(m) while the
+ * threads come free within w of each other). */
+void gw_pool_give(double *free_at, int m, double w);
+void gw_pool_give_each(double *free_at, int m, long n, double w);
+/* The time the m threads take to end the work given them, on cpus CPUs:
+ * while k threads are at work the work goes at max(1, k / cpus) times the
+ * time. Sorts free_at (no longer a heap). */
+double gw_pool_span(double *free_at, int m, int cpus);
+
+/* The time elapsed, in work per thread at work: each call adds the work done
+ * since the last (done, the work done so far, counted when it grows) over the
+ * threads at work since (busy: the most under way, at least 1, at most the
+ * CPUs); busy is then the threads under way now. Raise busy as a case begins
+ * (gw_pool_clock_busy). All zeros to start. */
+typedef struct gw_pool_clock {
+    double elapsed; /* work per thread at work */
+    double done_hi; /* the most work counted done */
+    int busy;       /* the most threads under way since the last count */
+} gw_pool_clock;
+void gw_pool_clock_busy(gw_pool_clock *c, int under_way);
+void gw_pool_clock_count(gw_pool_clock *c, double done, int under_way, int cpus);
+
+/* The progress of n cases of alike work run on the pool (gw_cases_run(n,
+ * jobs)): the part of its time done, the time elapsed over the whole time,
+ * each in work per thread at work, a case's work 1. The time elapsed counts
+ * the work done (the cases ended, and the share done of those under way);
+ * the time left is the work left scheduled as the pool hands it out: each
+ * case under way holds its thread for its share left, each case to come goes
+ * to the first thread free. So the last cases, run on fewer threads than
+ * the pool's, count at their own pace. On one thread it is the share of the
+ * work done. The part reported never decreases. */
+typedef struct gw_pool_eta {
+    int threads, cpus;   /* the pool's threads; the CPUs they run on */
+    gw_pool_clock clock;
+    double shown;        /* the largest part reported */
+    double *free_at;     /* scratch: threads doubles */
+} gw_pool_eta;
+/* For gw_cases_run(n, jobs) on this machine's CPUs; GW_ENOMEM (e untouched
+ * but zeroed) or GW_OK. Free with gw_pool_eta_free. */
+int gw_pool_eta_init(gw_pool_eta *e, long n, int jobs);
+void gw_pool_eta_free(gw_pool_eta *e);
+/* A case begun, under_way now under way (the clock's busy). */
+void gw_pool_eta_begun(gw_pool_eta *e, int under_way);
+/* The part now: ended, the cases ended; share[0..nrun-1], the share done of
+ * each case under way (in [0, 1)); to_come, the cases not begun. In [0, 1]:
+ * the share of the work before any work is counted. */
+double gw_pool_eta_part(gw_pool_eta *e, long ended, const double *share, int nrun, long to_come);
 
 #endif

@@ -13,6 +13,7 @@
 #include "gw_sweep.h"
 #include "gw_sweep_impl.h"
 #include "gw_locale.h"
+#include "gw_pool_impl.h"
 
 double gw_memory_available(const char **what)
 {
@@ -38,10 +39,8 @@ int gw_sweep_memory_check(const gw_sweep_config *cfg, const gw_sweep_model *m, l
         *most = cfg->ncases;
     if (!m->memory || cfg->ncases <= 0)
         return GW_OK;
-    if (jobs <= 0) {
-        long c = sysconf(_SC_NPROCESSORS_ONLN);
-        jobs = c > 0 ? (c < 1024 ? c : 1024) : 1;
-    }
+    if (jobs <= 0)
+        jobs = gw_pool_cpus();
     if (jobs > cfg->ncases)
         jobs = cfg->ncases;
     /* the jobs largest estimates, in decreasing order (jobs <= 4096) */

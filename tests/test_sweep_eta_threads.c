@@ -1,0 +1,160 @@
+/*
+ * test_sweep_eta_threads.c: `granwave sweep`'s time left on several threads
+ * (issue 18), without a clock. A sweep runs its cases on J threads, but once
+ * fewer cases are left than threads the last run alone, and there the work
+ * goes at a fraction of the pace so far. Its progress line's time left is
+ * (1 - P) / P of the time elapsed; by the share of the cases done (P before),
+ * five alike cases on 2 threads said 0.57 of the true time left at 90 % of the
+ * sweep (the fifth case alone) and 0.81 at 10 %.
+ *
+ * The sweep's part (gw_pool_eta, gw_pool_impl.h, what app/sweep_cmd.c's line
+ * calls) is driven here as the pool drives it, in work units: each thread
+ * does one unit of a case's work per unit of time, k threads at work on c
+ * CPUs each at min(1, c / k) of that pace (threads beyond the CPUs share
+ * them), each thread takes the next case as its own ends, and a case under
+ * way reports the share of its work done (its part over the cases' typical
+ * end, sweep_part); the part is taken after every step, as the sweep's
+ * ticker and each case's end do. The true time left is counted in those
+ * units; where the true time passes 10, 25, 50, 75 and 90 % of the sweep's,
+ * the time left the part implies is within 10 % of it, the part never
+ * decreases and ends at 1. Sweeps: 5 and 3 alike cases on 2 threads (the last
+ * alone), 7 on 3 threads on 2 CPUs (three threads sharing two CPUs, then one
+ * case alone at a whole CPU's pace), 41 on 2 threads, 40 on 4 threads on 2
+ * CPUs; on one thread, where the part is the share of the work, a control.
+ * The sweep weighs its cases alike: of cases of unequal cost it knows only
+ * their count (a chain sweep of N = 100..400 by 50, its cost as N^2, in the
+ * grid's order on 2 threads, reads 0.21 to 0.47 of the true time left: the
+ * short cases first), so the cases here are alike. And the schedule's steps:
+ * 1000 cases given to 3 threads at once as one at a time, 3 threads sharing
+ * 2 CPUs.
+ */
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "gw_common.h"
+#include "gw_pool_impl.h"
+#include "gw_test.h"
+
+#define MAX_REC 200000
+#define MAX_CASES 64
+#define MAX_THREADS 8
+
+typedef struct rec {
+    long n;
+    double t[MAX_REC], part[MAX_REC];
+} rec;
+
+/* Cases of cost cost[0..n-1] (work units) on threads threads on cpus CPUs,
+ * run in steps of a 4000th of the whole work; checks the time left the
+ * part implies at the marks within tol. */
+static void sweep(const char *name, const double *cost, int n, int threads, int cpus, double tol)
+{
+    static rec r;
+    memset(&r, 0, sizeof r);
+    gw_pool_eta e;
+    if (gw_pool_eta_init(&e, n, threads) != GW_OK) {
+        GW_TEST_OK(0, "%s: gw_pool_eta_init", name);
+        return;
+    }
+    e.cpus = cpus; /* the machine's, here the sweep's own */
+    GW_TEST_OK(e.threads == threads, "%s: the pool's threads (%d)", name, e.threads);
+    double work = 0;
+    for (int k = 0; k < n; k++)
+        work += cost[k];
+    const double step = work / 4000;
+    double u[MAX_THREADS] = {0}, now = 0;
+    int idx[MAX_THREADS], on[MAX_THREADS] = {0}, next = 0, monotone = 1;
+    long ended = 0;
+    for (;;) {
+        int busy = 0;
+        for (int j = 0; j < threads; j++) { /* a thread free takes the next case */
+            if (!on[j] && next < n) {
+                idx[j] = next++;
+                u[j] = 0;
+                on[j] = 1;
+                int under_way = 0;
+                for (int i = 0; i < threads; i++)
+                    under_way += on[i];
+                gw_pool_eta_begun(&e, under_way);
+            }
+            busy += on[j];
+        }
+        if (!busy)
+            break;
+        now += step;
+        const double pace = fmin(1.0, (double)cpus / busy);
+        double share[MAX_THREADS];
+        int nrun = 0;
+        for (int j = 0; j < threads; j++) {
+            if (!on[j])
+                continue;
+            u[j] += step * pace;
+            if (u[j] >= cost[idx[j]]) {
+                on[j] = 0;
+                ended++;
+            } else {
+                share[nrun++] = u[j] / cost[idx[j]];
+            }
+        }
+        const double part = gw_pool_eta_part(&e, ended, share, nrun, n - next);
+        if (r.n > 0 && part < r.part[r.n - 1])
+            monotone = 0;
+        if (r.n < MAX_REC) {
+            r.t[r.n] = now;
+            r.part[r.n] = part;
+            r.n++;
+        }
+    }
+    gw_pool_eta_free(&e);
+    const double end = now;
+    GW_TEST_OK(r.n > 0 && r.part[r.n - 1] == 1.0, "%s: the part ends at 1 (%.4f)", name, r.n ? r.part[r.n - 1] : 0);
+    GW_TEST_OK(monotone, "%s: the part never decreases", name);
+    const double marks[] = {0.10, 0.25, 0.50, 0.75, 0.90};
+    int m = 0;
+    for (long i = 0; i < r.n && m < 5; i++) {
+        if (r.t[i] < marks[m] * end || !(r.part[i] > 0))
+            continue;
+        const double est = r.t[i] * (1 - r.part[i]) / r.part[i], truth = end - r.t[i];
+        GW_TEST_OK(fabs(est / truth - 1) <= tol,
+                   "%s: at %.0f %% of its time (part %.3f) the time left %.3f of the true one (within %.0f %%)", name,
+                   100 * marks[m], r.part[i], est / truth, 100 * tol);
+        m++;
+    }
+    GW_TEST_OK(m == 5, "%s: every mark reached (%d)", name, m);
+}
+
+static void alike(const char *name, int n, int threads, int cpus)
+{
+    double c[MAX_CASES];
+    for (int k = 0; k < n; k++)
+        c[k] = 1;
+    sweep(name, c, n, threads, cpus, 0.10);
+}
+
+int main(void)
+{
+    alike("5 cases on 2 threads", 5, 2, 2);
+    alike("3 cases on 2 threads", 3, 2, 2);
+    alike("7 cases on 3 threads, 2 CPUs", 7, 3, 2);
+    alike("41 cases on 2 threads", 41, 2, 2);
+    alike("40 cases on 4 threads, 2 CPUs", 40, 4, 2);
+    alike("4 cases on one thread", 4, 1, 2); /* the share of the work (a control) */
+    /* the schedule's own steps: n alike cases given in whole rounds as one
+     * at a time would, and the span with threads sharing the CPUs */
+    {
+        double a[3] = {0.2, 0.7, 0.5}, b[3] = {0.2, 0.7, 0.5}; /* heaps: a one at a time, b at once */
+        for (int k = 0; k < 1000; k++)
+            gw_pool_give(a, 3, 1.0);
+        gw_pool_give_each(b, 3, 1000, 1.0);
+        const double sa = gw_pool_span(a, 3, 3), sb = gw_pool_span(b, 3, 3);
+        GW_TEST_OK(sa == sb && fabs(sa - 334.2) < 1e-9, "1000 cases on 3 threads free at 0.2, 0.7, 0.5: %.9g and %.9g (334.2)",
+                   sa, sb);
+        double h[3] = {0, 0, 0};
+        gw_pool_give_each(h, 3, 3, 1.0);
+        /* three threads on 2 CPUs, each at 2/3 of a CPU's pace: 1.5 */
+        GW_TEST_OK(fabs(gw_pool_span(h, 3, 2) - 1.5) < 1e-12, "3 alike cases on 3 threads on 2 CPUs: %.6g (1.5)",
+                   gw_pool_span(h, 3, 2));
+    }
+    return gw_test_summary("test_sweep_eta_threads");
+}

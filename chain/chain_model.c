@@ -351,6 +351,14 @@ int gw_chain_params_validate(const gw_chain_params *p, gw_err *err)
         (rc = gw_check_range(w->tau_min, "wall tau_min (s)", 0, 1e3, err)) != GW_OK ||
         (rc = gw_check_range(w->tau_max, "wall tau_max (s)", 0, 1e3, err)) != GW_OK)
         return rc;
+    /* a relaxation time is 0 (the default arms) or physical (gw_chain.h) */
+    for (int k = 0; k < 2; k++) {
+        const double tau = k ? w->tau_max : w->tau_min;
+        if (tau > 0 && tau < GW_CHAIN_WALL_TAU_MIN)
+            return gw_err_set(err, GW_EINVAL, "wall %s (s): a Maxwell arm of %g s, faster than any relaxation of a "
+                              "solid (atomic vibrations take 0.01-1 ps): give 0 for the default arms (1e-5 to 1e-3 s) "
+                              "or a time in [%g, 1e3] s", k ? "tau_max" : "tau_min", tau, GW_CHAIN_WALL_TAU_MIN);
+    }
     if (w->yield_pressure > 0 && (w->layer || w->loss > 0))
         return gw_err_set(err, GW_EINVAL, "wall: the plastic law (yield_pressure) works on the Hertz "
                           "law alone, not with a layer or a loss");

@@ -181,8 +181,19 @@ typedef struct gw_chain_wall {
     double loss;               /* > 0: viscoelastic wall, loss factor tan(delta) at
                                   the band centre (see tau_min) */
     double tau_min, tau_max;   /* relaxation times of the Maxwell arms, s, one per
-                                  decade between them (0: 1e-5 and 1e-3) */
+                                  decade between them (0: 1e-5 and 1e-3); each 0
+                                  or in [GW_CHAIN_WALL_TAU_MIN, 1e3] */
 } gw_chain_wall;
+
+/* The shortest relaxation time a wall's Maxwell arm may have, s: a picosecond,
+ * the scale of the atomic vibrations (0.01-1 ps) below which a solid's
+ * relaxation is no viscoelastic one. An arm far faster than the contact (10 us
+ * to 1 ms) is relaxed through it and gives it no loss (arms at 1e-12 to 1e-10 s
+ * and tan(delta) 0.3: one bead rebounds at 0.99999); one of 1e-300 s, below the
+ * spacing of doubles at the collision's times (about 1e-20 s), ran as a wall
+ * relaxed at once whatever the loss asked. gw_chain_params_validate refuses a
+ * time above 0 and below it, naming the arm. */
+#define GW_CHAIN_WALL_TAU_MIN 1e-12
 
 /* The force sensor as a body: a mass on a spring (and dashpot) to the ground,
  * under the wall contact; it reads the force through its spring and dashpot,

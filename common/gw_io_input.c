@@ -15,6 +15,7 @@
 #include "gw_common.h"
 #include "gw_locale.h"
 #include "gw_io_impl.h"
+#include "gw_io_lines.h"
 
 const char *gw_io_file_kind(mode_t m)
 {
@@ -119,4 +120,21 @@ int gw_input_read(const char *path, const char *what, size_t max, char **out, si
     if (len)
         *len = n;
     return GW_OK;
+}
+
+long gw_input_unended_line(const char *text, size_t len, long first, size_t *start)
+{
+    if (start)
+        *start = 0;
+    if (!text || len == 0 || text[len - 1] == '\n' || text[len - 1] == '\r')
+        return 0;
+    size_t s = len;
+    while (s > 0 && text[s - 1] != '\n')
+        s--;
+    long line = first;
+    for (size_t q = 0; q < s; q++)
+        line += text[q] == '\n';
+    if (start)
+        *start = s;
+    return line;
 }

@@ -32,6 +32,7 @@
 #include <strings.h>
 
 #include "layer_sample_impl.h"
+#include "gw_io_lines.h"
 #include "gw_locale.h"
 
 #define SAMPLE_LINE_MAX 1024  /* longest header or particle line; comments may be longer */
@@ -155,6 +156,7 @@ typedef struct text_in {
     unsigned char pre[8];
     size_t npre, ipre;
     long line;
+    int last; /* the last byte read */
     char buf[SAMPLE_LINE_MAX + 1];
     /* layer-make's settings line, a comment "# settings: {JSON}": its JSON
      * (owned, NUL-terminated; NULL: none) and line */
@@ -191,7 +193,10 @@ static int settings_put(text_in *t, int c, gw_err *err)
 
 static int text_getc(text_in *t)
 {
-    return t->ipre < t->npre ? t->pre[t->ipre++] : getc(t->fp);
+    const int c = t->ipre < t->npre ? t->pre[t->ipre++] : getc(t->fp);
+    if (c != EOF)
+        t->last = c;
+    return c;
 }
 
 /* Next line that is neither blank nor a comment into t->buf, without its LF or
@@ -201,7 +206,7 @@ static int text_next(text_in *t, gw_err *err)
 {
     static const char set_key[] = "settings:";
     for (;;) {
-        int c, any = 0, lead = 1, comment = 0, nul = 0, cr_end = 0;
+        int c, any = 0, lead = 1, comment = 0, nul = 0;
         /* in a comment: -1 after '#' (blanks), k >= 0 the characters of
          * "settings:" matched, sizeof set_key - 1 the key whole (the rest is
          * the JSON), -2 another comment */
@@ -217,8 +222,6 @@ static int text_next(text_in *t, gw_err *err)
                 return gw_err_set(err, GW_EFORMAT, "sample '%s': line %ld: a carriage return inside the line: "
                                   "lines that end in CR alone are one line to the reader; convert them to LF "
                                   "(CR LF is read too)", t->path, t->line + 1);
-            if (c == EOF) /* a CR, then the end: the line's end (CR LF without its LF) */
-                cr_end = 1;
             if (c == '\n' || c == EOF)
                 break;
             if (lead && (c == ' ' || c == '\t'))
@@ -278,7 +281,8 @@ static int text_next(text_in *t, gw_err *err)
          * in its digits still reads
          * (the last radius of a 40-disc sample cut from 0.2296 to 0.22 m ran
          * with exit 0, its penetration 53 % deeper) */
-        if (c == EOF && !cr_end && !comment && len > 0)
+        const char lastc = (char)t->last; /* the line's last byte: a stream is not held whole */
+        if (c == EOF && !comment && len > 0 && gw_input_unended_line(&lastc, 1, t->line, NULL) > 0)
             return gw_err_set(err, GW_EFORMAT, "sample '%s': line %ld: the file ends inside this line (no newline "
                               "after it): cut short? layer-make ends every line with one", t->path, t->line);
         t->buf[len] = '\0';

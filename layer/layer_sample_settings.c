@@ -26,6 +26,7 @@
 #include <string.h>
 
 #include "layer_sample_impl.h"
+#include "gw_locale.h"
 
 /* unsettled (gw_layer.h) sits in what was the padding after clump_mass: the
  * struct's size, and gw_layer_sample's, stay those that callers compiled
@@ -72,6 +73,25 @@ static int bad(const char *path, const char *where, gw_err *err, const char *why
                       key ? " " : "", key ? key : "");
 }
 
+/* The first name an object within x holds twice (NULL: none). JSON leaves a
+ * repeated name to the reader: cJSON's lookup takes the first value, Python's
+ * json and jq the last, so '"friction_deg":30,"friction_deg":5' was a settling
+ * at 30 degrees here and at 5 to those tools. Depth is bounded by cJSON's
+ * nesting limit. */
+static const char *json_twice(const cJSON *x)
+{
+    for (const cJSON *a = x ? x->child : NULL; a; a = a->next) {
+        if (cJSON_IsObject(x) && a->string)
+            for (const cJSON *b = a->next; b; b = b->next)
+                if (b->string && strcmp(a->string, b->string) == 0)
+                    return a->string;
+        const char *inner = json_twice(a);
+        if (inner)
+            return inner;
+    }
+    return NULL;
+}
+
 int layer_sample_settings_parse(const char *text, const char *path, const char *where, gw_layer_settled *out,
                                 gw_err *err)
 {
@@ -83,6 +103,13 @@ int layer_sample_settings_parse(const char *text, const char *path, const char *
     if (!j || !cJSON_IsObject(j)) {
         cJSON_Delete(j);
         return bad(path, where, err, "is not a JSON object", NULL);
+    }
+    const char *twice = json_twice(j);
+    if (twice) {
+        char key[80];
+        gw_snprintf(key, sizeof key, "'%.60s'%s", twice, strlen(twice) > 60 ? "..." : "");
+        cJSON_Delete(j);
+        return bad(path, where, err, "holds a name twice (JSON readers differ on which value counts):", key);
     }
     const cJSON *mat = cJSON_GetObjectItemCaseSensitive(j, "material");
     const dialect *d = mat ? &program_keys : &library_keys;

@@ -318,14 +318,19 @@ static int arms(double loss, double a, double b, gw_err *e)
 static int wall_arms_tiny_times(void)
 {
     gw_err e1, e2;
-    /* the arms are scale-free: 1e-200 to 1e-195 s is 1e-5 to 1 s, 6 arms */
-    EXPECT(arms(0.3, 1e-200, 1e-195, &e1) == GW_EINVAL && arms(0.3, 1e-5, 1, &e2) == GW_EINVAL);
+    /* arms below GW_CHAIN_WALL_TAU_MIN (a picosecond, the thirty-third
+     * session) are refused by name before the band centre is formed */
+    EXPECT(arms(0.3, 1e-200, 1e-195, &e1) == GW_EINVAL && !strstr(e1.msg, "nan") &&
+           strstr(e1.msg, "wall tau_min (s): a Maxwell arm of 1e-200 s"));
+    EXPECT(arms(10, 1e-300, 1e-300, &e1) == GW_EINVAL && !strstr(e1.msg, "nan") && strstr(e1.msg, "[1e-12, 1e3]"));
+    /* within the range the arms are scale-free: 1e-12 to 1e-7 s is 1e-5 to 1 s, 6 arms */
+    EXPECT(arms(0.3, 1e-12, 1e-7, &e1) == GW_EINVAL && arms(0.3, 1e-5, 1, &e2) == GW_EINVAL);
     EXPECT(!strstr(e1.msg, "nan") && strstr(e1.msg, "6 Maxwell arm(s) give (< 0.211)"));
     EXPECT(strcmp(e1.msg, e2.msg) == 0);
-    EXPECT(arms(10, 1e-300, 1e-300, &e1) == GW_EINVAL && arms(10, 1e-3, 1e-3, &e2) == GW_EINVAL);
+    EXPECT(arms(10, 1e-12, 1e-12, &e1) == GW_EINVAL && arms(10, 1e-3, 1e-3, &e2) == GW_EINVAL);
     EXPECT(!strstr(e1.msg, "nan") && strcmp(e1.msg, e2.msg) == 0 && strstr(e1.msg, "(< 0.98)"));
-    /* a loss the arms give is taken at any scale, as at 1e-5 to 1 s */
-    EXPECT(arms(0.2, 1e-200, 1e-195, &e1) == GW_OK && arms(0.2, 1e-5, 1, &e2) == GW_OK);
+    /* a loss the arms give is taken at any scale of the range, as at 1e-5 to 1 s */
+    EXPECT(arms(0.2, 1e-12, 1e-7, &e1) == GW_OK && arms(0.2, 1e-5, 1, &e2) == GW_OK);
     return 0;
 }
 

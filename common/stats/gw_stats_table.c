@@ -17,6 +17,7 @@
 #include <string.h>
 
 #include "gw_stats.h"
+#include "gw_io_lines.h"
 #include "gw_locale.h"
 #include "gw_stats_impl.h"
 
@@ -586,14 +587,10 @@ int gw_stats_table_read(const char *path, gw_stats_table *t, gw_err *err)
      * cut in the row's hashes, but a table without them (written before
      * them, or made by hand) read its last e_n 0.734 cut to 0.7 into the
      * means with exit 0. A comment line may end the file so. */
-    if (rc == GW_OK && len > 0 && buf[len - 1] != '\n' && buf[len - 1] != '\r') {
-        size_t s = len, lead;
-        long ln = 1;
-        while (s > 0 && buf[s - 1] != '\n')
-            s--;
-        for (size_t q = 0; q < s; q++)
-            ln += buf[q] == '\n';
-        lead = s + (ln == 1 && len - s >= 3 && memcmp(buf, "\xEF\xBB\xBF", 3) == 0 ? 3 : 0);
+    size_t s = 0;
+    const long ln = rc == GW_OK ? gw_input_unended_line(buf, len, 1, &s) : 0;
+    if (ln > 0) {
+        size_t lead = s + (ln == 1 && len - s >= 3 && memcmp(buf, "\xEF\xBB\xBF", 3) == 0 ? 3 : 0);
         while (lead < len && (buf[lead] == ' ' || buf[lead] == '\t'))
             lead++;
         if (lead < len && buf[lead] != '#')

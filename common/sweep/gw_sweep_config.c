@@ -20,6 +20,7 @@
 #include <ini.h>
 
 #include "gw_sweep.h"
+#include "gw_io_lines.h"
 #include "gw_locale.h"
 #include "gw_sweep_impl.h"
 
@@ -451,6 +452,8 @@ static int scan_lines(const char *text, const char *name, int whole, parse_ctx *
     char key[64] = "", sect[64] = "";
     long key_ln = 0, ln = 1, cap = 0;
     int in_grid = 0, comma = 0; /* the last value line of the key ends with ',' */
+    /* the last line of a file when it has no newline after it (0: none) */
+    const long cut = whole ? gw_input_unended_line(text, strlen(text), 1, NULL) : 0;
     for (const char *p = text; *p; ln++) {
         const char *e = strchr(p, '\n');
         size_t len = e ? (size_t)(e - p) : strlen(p);
@@ -541,7 +544,7 @@ static int scan_lines(const char *text, const char *name, int whole, parse_ctx *
              * 't-max = 0.00' was refused only as a bad value. A comment or a
              * section header cut short changes nothing read (or is a syntax
              * error). The rule of text samples (layer_sample.c). */
-            if (!e && whole && !(len > 0 && p[len - 1] == '\r'))
+            if (ln == cut)
                 return gw_err_set(err, GW_EINVAL, "%s:%ld: the file ends inside this line (no newline after it): "
                                   "cut short? '%.*s' may hold a value cut short (0.25 cut to 0.2 still reads); end the file "
                                   "with a newline",

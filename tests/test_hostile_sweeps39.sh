@@ -12,7 +12,7 @@
 # changed) and, found otherwise, keeps its journal whole beside it
 # (DIR/journal.kept.csv), hands out no case after it and exits 1 in one line
 # naming both files; the file written into is left as it is.
-#  1 threads (--jobs 1, --jobs 2), the journal cut to nothing (`: >`) after
+#  1 threads (--jobs 2), the journal cut to nothing (`: >`) after
 #    its first row: exit 1, one line naming journal.csv and journal.kept.csv,
 #    no table, journal.csv empty still, the kept journal holding the rows of
 #    before and after the cut, each case once, fewer than the grid's (no case
@@ -28,6 +28,9 @@
 #    into it again, keeps its rows whole, exit 1 (after the put-back's
 #    warning line); resumed (threads on --jobs 2, MPI on --jobs 1),
 #    byte-identical
+#  6 a journal of 24 rows before the sweep resumed (5 kB), a row outside
+#    its last 4096 bytes edited in place, its length kept: found by the
+#    file's times, alike; resumed, byte-identical
 #  5 kept: the journal touched (its times changed) and its mode changed mid-
 #    sweep, the bytes the sweep's: exit 0, the undisturbed table, nothing said
 set -u
@@ -59,8 +62,9 @@ written() {
     local what=$1 d=$2 total=$3 warn=$4 disturb=$5 pa rc n
     shift 5
     rm -rf "$d" "$d.err" "$d.left"
+    ${prep:-true} "$d" # (a journal to resume: the rows it holds, and one more awaited)
     "$@" >/dev/null 2>"$d.err" & pa=$!
-    wait_rows "$d/journal.csv" 1 60 || ko "$what: the sweep journaled nothing"
+    wait_rows "$d/journal.csv" $(($(journal_rows "$d/journal.csv") + 1)) 60 || ko "$what: the sweep journaled nothing"
     $disturb "$d"
     wait $pa; rc=$?
     # (mpirun adds its block of lines on a rank's exit status 1, after the program's)
@@ -131,12 +135,10 @@ late_save() {
 }
 
 # --- 1: threads, the journal cut to nothing
-for j in 1 2; do
-    d=$tmp/t$j
-    written "1 --jobs $j" "$d" 8 0 cut_out "$GW" sweep "$tmp/a.ini" --out "$d" --quiet --jobs $j
-    # shellcheck disable=SC2046
-    resumed "1 --jobs $j" "$d" "$tmp/ref" $(other_way threads) sweep "$tmp/a.ini" --out "$d"
-done
+d=$tmp/t2
+written "1 --jobs 2" "$d" 8 0 cut_out "$GW" sweep "$tmp/a.ini" --out "$d" --quiet --jobs 2
+# shellcheck disable=SC2046
+resumed "1 --jobs 2" "$d" "$tmp/ref" $(other_way threads) sweep "$tmp/a.ini" --out "$d"
 
 # --- 2: MPI, a row edited in place (its length kept)
 d=$tmp/m
@@ -167,6 +169,19 @@ if [ $have_mpi = 1 ]; then
 else
     echo "SKIP: 4 under MPI (no mpirun or not an MPI build)"
 fi
+
+# --- 6: a journal longer than the 4096 bytes compared at each row, a row
+# before them edited in place, the length kept: found by the file's times
+printf '[sweep]\nmodel = chain\n[grid]\nn = %s\n[params]\nsolver = rk4\nvimp = 0.1\n' \
+    "$(seq -s ', ' 10 33), 150, 151, 152" >"$tmp/c.ini"
+"$GW" sweep "$tmp/c.ini" --out "$tmp/refc" --quiet --jobs 1 || ko "reference sweep of 27 cases"
+# its head and first 24 rows (cases 10 to 33 beads, about 5 kB): the three
+# long cases left to run
+first24() { mkdir -p "$1" && head -n 29 "$tmp/refc/journal.csv" >"$1/journal.csv"; }
+d=$tmp/l
+prep=first24 written "6 --jobs 1" "$d" 27 0 edit_row "$GW" sweep "$tmp/c.ini" --out "$d" --quiet --jobs 1
+[ "$(stat -c %s "$d.left")" -gt 5000 ] || ko "6: the journal was $(stat -c %s "$d.left") bytes: the edit inside the last 4096"
+resumed "6" "$d" "$tmp/refc" "$GW" sweep "$tmp/c.ini" --out "$d" --jobs 1
 
 # --- 5 (kept): touched and its mode changed, the bytes the sweep's
 d=$tmp/k

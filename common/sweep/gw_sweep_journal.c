@@ -447,7 +447,8 @@ static int journal_check(const char *path, int dfd, const char *dir, const char 
  * cases after the swap run for nothing, their rows in a file in no directory
  * or under the name the editor gave the old one: now it is kept whole under a
  * new name (journal_keep) at once, the other file left as it is, and the
- * caller told (*restored 2, GW_EIO) to stop. */
+ * caller told (*restored 2, GW_EIO) to stop. The journal's own file written
+ * into (found by its copy, jshadow above) is kept alike, from the copy. */
 int gw_sweep_journal_held(int dirfd, int *fdp, const char *dir, int *restored, gw_err *err)
 {
     if (restored)

@@ -240,8 +240,20 @@ int gw_sweep_dir_held(int dirfd, const char *dir, gw_err *err);
  * "DIR/journal.csv was replaced by another file while the sweep ran ...:
  * this sweep's journal is kept whole as DIR/journal.kept.csv, the other file
  * left as it is": the caller stops taking cases (the rows of those under way
- * go on into *fd). The other file is never written. GW_EIO (*restored 0)
- * also when the journal cannot be read, written back or kept. */
+ * go on into *fd). The other file is never written. A journal opened by
+ * gw_sweep_journal_open_at is also checked to hold what the sweep wrote into
+ * it (the text at the open and every row gw_sweep_journal_append wrote since,
+ * kept in memory beside the descriptor): its size, its last 4096 bytes, and
+ * the whole file when its times are not those the sweep's last write left.
+ * Found written into (rewritten in place: `> DIR/journal.csv`, an editor
+ * writing into the file; cut; a line added by another program), the journal
+ * is kept alike from that copy, *restored 2, GW_EIO "DIR/journal.csv was
+ * written into while the sweep ran (...): this sweep's journal is kept whole
+ * as DIR/journal.kept.csv, the file left as it is". A journal put back is
+ * checked alike, so a file written into it later (an editor's save that
+ * deleted the journal and wrote its text after GW_SWEEP_GRACE_MS) is found
+ * at the next row, never appended to. GW_EIO (*restored 0) also when the
+ * journal cannot be read, written back or kept. */
 int gw_sweep_journal_held(int dirfd, int *fd, const char *dir, int *restored, gw_err *err);
 /* What a resume would find (`granwave sweep CONFIG --check`): DIR/journal.csv
  * read and checked by the code of gw_sweep_journal_open, with its refusals
@@ -270,7 +282,10 @@ int gw_sweep_inputs_check(const gw_sweep_config *cfg, gw_err *err);
  * sample, the extra time growing with the samples' size and number. */
 int gw_sweep_case_inputs_check(const gw_sweep_config *cfg, long k, gw_err *err);
 
-/* Append one row to DIR/journal.csv with a single write; fsync it when
+/* Append one row to DIR/journal.csv with a single write (and to the copy
+ * gw_sweep_journal_held checks the file against, when the journal was opened
+ * by gw_sweep_journal_open_at: GW_ENOMEM, nothing written, when the copy
+ * cannot grow); fsync it when
  * *synced_ms (gw_clock_ms of the last fsync, updated; NULL: every row) is
  * GW_SWEEP_SYNC_MS old or more. A killed process loses no written row; a power
  * cut at most the rows of the last GW_SWEEP_SYNC_MS, which a rerun runs again. */
@@ -313,8 +328,9 @@ int gw_sweep_memory_check(const gw_sweep_config *cfg, const gw_sweep_model *m, l
  * write (its grid values, ncolumns numbers of at most 24 characters, the
  * hashes and the checksum) times the cases must stay within
  * GW_SWEEP_JOURNAL_MAX (the journal is read back whole to resume and to
- * write the table), and with the writer's bookkeeping (48 bytes a case)
- * within 80 % of gw_memory_available. A grid of 1e9 chain cases (about 330
+ * write the table), and twice that with the writer's bookkeeping (48 bytes
+ * a case) within 80 % of gw_memory_available (the journal read back beside
+ * the copy a sweep keeps of what it wrote, gw_sweep_journal_held). A grid of 1e9 chain cases (about 330
  * GB of journal) was checked case by case for 80 minutes, ran, and could
  * never be read back. GW_OK, or GW_EINVAL "the grid has C cases: ...". */
 int gw_sweep_size_check(const gw_sweep_config *cfg, const gw_sweep_model *m, gw_err *err);

@@ -74,7 +74,10 @@ int gw_sweep_dir_open(const char *dir);
 
 /* How long gw_sweep_journal_held watches a journal's free name before it puts
  * the journal back: an editor's save through a rename (the journal renamed
- * to a backup, or removed, and the new file written) takes milliseconds. */
+ * to a backup, or removed, and the new file written) takes milliseconds.
+ * A save slower than that writes into the journal put back: found at the
+ * next row by the check of what the journal holds (gw_sweep_journal_held),
+ * which a longer watch would only have delayed. */
 #define GW_SWEEP_GRACE_MS 200.0
 
 #endif

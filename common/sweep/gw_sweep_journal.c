@@ -13,6 +13,7 @@
 #define _GNU_SOURCE /* O_PATH (gw_sweep_dir_open) */
 #include <errno.h>
 #include <math.h>
+#include <pthread.h>
 #include <stdio.h>
 #include <sys/file.h>
 #include <sys/stat.h>
@@ -129,6 +130,158 @@ int gw_sweep_dir_held(int dirfd, const char *dir, gw_err *err)
     return GW_OK;
 }
 
+/* ---- what the sweep wrote: its journal's copy, for checking and keeping ----
+ * A journal rewritten in place while the sweep ran (`> DIR/journal.csv`, an
+ * editor writing into the file, a tool that cuts it) is the same file: its
+ * name and inode checks passed, the sweep appended its rows to the other
+ * content (or to nothing) and found the rows lost only at the end. The sweep
+ * now keeps what it wrote into its journal (the text read at the open and
+ * each row appended since) beside the descriptor, and before each row checks
+ * that the file holds it: its size the bytes the sweep wrote (a cut, a
+ * rewrite of another length, a line added by another program), and, while
+ * its times are those the sweep's own last write left, its last
+ * JOURNAL_TAIL bytes; its times changed by anyone else (a rewrite of the same
+ * length), the whole file compared. A file found otherwise is another's
+ * content: the journal is kept whole from the copy (journal_keep), the file
+ * never written again. The copy is the journal's size in memory
+ * (gw_sweep_size_check counts it); the check per row is one fstat and one
+ * read of JOURNAL_TAIL bytes. Kept by descriptor (the callers' API passes
+ * the descriptor alone), with the file's device and inode: a descriptor
+ * closed and reused for another file is not taken for the journal. */
+#define JOURNAL_TAIL 4096
+#define NSHADOWS 16
+typedef struct jshadow {
+    int used, fd;
+    dev_t dev;
+    ino_t ino;
+    char *text; /* what the journal should hold */
+    size_t len, cap;
+    struct timespec mtim, ctim; /* the file's after the sweep's last write (times_ok) */
+    int times_ok;
+} jshadow;
+static jshadow shadows[NSHADOWS];
+static pthread_mutex_t shadows_lock = PTHREAD_MUTEX_INITIALIZER;
+
+static void shadow_free(jshadow *h)
+{
+    free(h->text);
+    memset(h, 0, sizeof *h);
+}
+
+/* the file's times as the sweep left them, when its size is len (else
+ * unknown: the next check compares it whole) */
+static void shadow_times(jshadow *h, int fd)
+{
+    struct stat st;
+    h->times_ok = fstat(fd, &st) == 0 && (unsigned long long)st.st_size == (unsigned long long)h->len;
+    if (h->times_ok)
+        h->mtim = st.st_mtim, h->ctim = st.st_ctim;
+}
+
+/* the copy of fd's journal, NULL when there is none (a descriptor the sweep
+ * did not open through gw_sweep_journal_open_at, or closed and reused for
+ * another file: that entry dropped). Entries do not move: the caller uses
+ * it without the lock (one thread at a time per journal: the caller's). */
+static jshadow *shadow_get(int fd)
+{
+    struct stat st;
+    jshadow *r = NULL;
+    const int known = fd >= 0 && fstat(fd, &st) == 0;
+    pthread_mutex_lock(&shadows_lock);
+    for (int i = 0; i < NSHADOWS && !r; i++)
+        if (shadows[i].used && shadows[i].fd == fd) {
+            if (known && shadows[i].dev == st.st_dev && shadows[i].ino == st.st_ino)
+                r = &shadows[i];
+            else
+                shadow_free(&shadows[i]);
+        }
+    pthread_mutex_unlock(&shadows_lock);
+    return r;
+}
+
+/* text (len bytes, taken over) recorded as what the journal fd holds;
+ * without a free entry (16 journals open in one process) it is not kept, and
+ * that journal is checked by its name alone, as before */
+static void shadow_set(int fd, char *text, size_t len)
+{
+    struct stat st;
+    jshadow *h = NULL;
+    if (fstat(fd, &st) != 0) {
+        free(text);
+        return;
+    }
+    pthread_mutex_lock(&shadows_lock);
+    for (int i = 0; i < NSHADOWS; i++)
+        if (shadows[i].used && shadows[i].fd == fd)
+            shadow_free(&shadows[i]);
+    for (int i = 0; i < NSHADOWS && !h; i++)
+        if (!shadows[i].used)
+            h = &shadows[i];
+    if (h) {
+        *h = (jshadow){.used = 1, .fd = fd, .dev = st.st_dev, .ino = st.st_ino, .text = text, .len = len, .cap = len};
+        shadow_times(h, fd);
+    } else {
+        free(text);
+    }
+    pthread_mutex_unlock(&shadows_lock);
+}
+
+/* the copy of *fd's journal now that of nfd (a journal put back or kept) */
+static void shadow_move(jshadow *h, int nfd)
+{
+    struct stat st;
+    pthread_mutex_lock(&shadows_lock);
+    for (int i = 0; i < NSHADOWS; i++)
+        if (shadows[i].used && shadows[i].fd == nfd && &shadows[i] != h)
+            shadow_free(&shadows[i]);
+    if (fstat(nfd, &st) == 0) {
+        h->fd = nfd, h->dev = st.st_dev, h->ino = st.st_ino;
+        shadow_times(h, nfd);
+    } else {
+        shadow_free(h);
+    }
+    pthread_mutex_unlock(&shadows_lock);
+}
+
+static void shadow_drop(jshadow *h)
+{
+    pthread_mutex_lock(&shadows_lock);
+    shadow_free(h);
+    pthread_mutex_unlock(&shadows_lock);
+}
+
+static int ts_same(struct timespec a, struct timespec b)
+{
+    return a.tv_sec == b.tv_sec && a.tv_nsec == b.tv_nsec;
+}
+
+/* 1 when the journal fd no longer holds what the sweep wrote (h), its size
+ * in *size; 0 when it does; -1 when that cannot be told (fstat failed) */
+static int shadow_differs(jshadow *h, int fd, long long *size)
+{
+    struct stat st;
+    if (fstat(fd, &st) != 0)
+        return -1;
+    *size = (long long)st.st_size;
+    if ((unsigned long long)st.st_size != (unsigned long long)h->len)
+        return 1;
+    const int same_times = h->times_ok && ts_same(st.st_mtim, h->mtim) && ts_same(st.st_ctim, h->ctim);
+    size_t pos = same_times && h->len > JOURNAL_TAIL ? h->len - JOURNAL_TAIL : 0;
+    char buf[JOURNAL_TAIL];
+    while (pos < h->len) {
+        const size_t want = h->len - pos < sizeof buf ? h->len - pos : sizeof buf;
+        const ssize_t r = pread(fd, buf, want, (off_t)pos);
+        if (r < 0 && errno == EINTR)
+            continue;
+        if (r <= 0 || memcmp(buf, h->text + pos, (size_t)r) != 0)
+            return 1; /* cut meanwhile, or other bytes */
+        pos += (size_t)r;
+    }
+    if (!same_times) /* touched, or written with the same bytes: the sweep's still */
+        shadow_times(h, fd);
+    return 0;
+}
+
 /* n bytes of buf written to fd whole: 0, or -1 with errno set. A short
  * write (a disk that fills inside a row: write() returns the bytes it took,
  * errno untouched) is continued, so that the write that fails says why: the
@@ -218,40 +371,65 @@ static int journal_create(int dfd, const char *path, const char *text, int *fdp,
 /* The sweep's journal (held open in *fdp) kept whole under a free name in
  * dirfd, DIR/journal.kept.csv (journal.kept.2.csv, ... when taken), made as
  * a journal is (locked, linked into place, never over a file), *fdp then
- * the kept file's (*kept 1): its name (journal.csv) holds another file now,
- * which is left as it is. GW_EIO with the message the caller says. */
-static int journal_keep(int dirfd, int *fdp, const char *dir, const char *path, int *kept, gw_err *err)
+ * the kept file's (*kept 1): its name (journal.csv) holds another file now
+ * (written 0), or the journal's own file holds another content (written 1:
+ * rewritten in place, cut or added to; *size its bytes now), either left as
+ * it is. What is kept is what the sweep wrote (its copy h), or, without one,
+ * what the file held open holds. GW_EIO with the message the caller says. */
+static int journal_keep(int dirfd, int *fdp, const char *dir, const char *path, jshadow *h, int written,
+                        long long size, int *kept, gw_err *err)
 {
     size_t len = 0;
-    char *text = gw_sweep_slurp_fd(*fdp, path, &len, err);
+    char *text = h ? h->text : gw_sweep_slurp_fd(*fdp, path, &len, err);
     if (!text)
         return errno == ENOMEM ? GW_ENOMEM : GW_EIO;
+    if (h)
+        len = h->len;
     char name[64];
     int nfd = -1, rc = GW_OK;
+    /* journal_create_as writes a text up to its NUL */
+    char *z = h ? malloc(len + 1) : text;
+    if (!z)
+        return gw_err_set(err, GW_ENOMEM, "%s: out of memory keeping the sweep's journal", path);
+    if (h) {
+        memcpy(z, text, len);
+        z[len] = '\0';
+    }
     for (int i = 1; i <= 1000 && nfd < 0 && rc == GW_OK; i++) {
         if (i == 1)
             gw_snprintf(name, sizeof name, "journal.kept.csv");
         else
             gw_snprintf(name, sizeof name, "journal.kept.%d.csv", i);
-        rc = journal_create_as(dirfd, path, name, text, &nfd, err);
+        rc = journal_create_as(dirfd, path, name, z, &nfd, err);
     }
-    free(text);
+    free(z);
+    char what[200];
+    if (written)
+        gw_snprintf(what, sizeof what, "was written into while the sweep ran (rewritten in place, cut or added to: "
+                    "it holds %lld bytes%s where the sweep wrote %zu)", size,
+                    size == (long long)len ? " of other content" : "", len);
+    else
+        gw_snprintf(what, sizeof what, "was replaced by another file while the sweep ran");
     if (rc == GW_OK && nfd < 0)
         rc = gw_err_set(err, GW_EIO, "%s: cannot keep this sweep's journal: %s/journal.kept.csv to "
                         "journal.kept.1000.csv are all taken", path, dir);
     if (rc != GW_OK) {
         char why[sizeof err->msg];
         gw_snprintf(why, sizeof why, "%s", err ? err->msg : "a failure");
-        return gw_err_set(err, rc == GW_ENOMEM ? GW_ENOMEM : GW_EIO, "%s was replaced by another file while the "
-                          "sweep ran, and this sweep's journal could not be kept beside it (%s): its rows since "
-                          "the replacement are lost, the other file is left as it is", path, why);
+        return gw_err_set(err, rc == GW_ENOMEM ? GW_ENOMEM : GW_EIO, "%s %s, and this sweep's journal could not "
+                          "be kept beside it (%s): its rows since are lost, the %s is left as it is", path, what,
+                          why, written ? "file" : "other file");
     }
     close(*fdp);
     *fdp = nfd;
+    if (h)
+        shadow_move(h, nfd);
     *kept = 1;
-    return gw_err_set(err, GW_EIO, "%s was replaced by another file while the sweep ran (an editor saving "
-                      "through a rename?): this sweep's journal is kept whole as %s/%s, the other file left as "
-                      "it is", path, dir, name);
+    if (written)
+        return gw_err_set(err, GW_EIO, "%s %s: this sweep's journal is kept whole as %s/%s, the file left as it "
+                          "is", path, what, dir, name);
+    return gw_err_set(err, GW_EIO, "%s %s (an editor saving through a rename?): this sweep's journal is kept "
+                      "whole as %s/%s, the other file left as it is", path, what, dir, name);
 }
 
 static int journal_check(const char *path, int dfd, const char *dir, const char *head, const gw_sweep_config *cfg,
@@ -269,7 +447,8 @@ static int journal_check(const char *path, int dfd, const char *dir, const char 
  * cases after the swap run for nothing, their rows in a file in no directory
  * or under the name the editor gave the old one: now it is kept whole under a
  * new name (journal_keep) at once, the other file left as it is, and the
- * caller told (*restored 2, GW_EIO) to stop. */
+ * caller told (*restored 2, GW_EIO) to stop. The journal's own file written
+ * into (found by its copy, jshadow above) is kept alike, from the copy. */
 int gw_sweep_journal_held(int dirfd, int *fdp, const char *dir, int *restored, gw_err *err)
 {
     if (restored)
@@ -279,15 +458,28 @@ int gw_sweep_journal_held(int dirfd, int *fdp, const char *dir, int *restored, g
     struct stat a, b;
     if (fstat(*fdp, &a) != 0)
         return gw_err_set(err, GW_EIO, "%s/journal.csv: %s", dir, strerror(errno));
-    /* its name, followed as the sweep opened it (a symbolic link to the
-     * journal is the journal) */
-    if (fstatat(dirfd, "journal.csv", &b, 0) == 0 && a.st_dev == b.st_dev && a.st_ino == b.st_ino)
-        return GW_OK;
-    if (gw_sweep_dir_held(dirfd, dir, err) != GW_OK) /* the directory removed, the journal with it */
-        return GW_EIO;
     char path[4200];
     if (gw_snprintf(path, sizeof path, "%s/journal.csv", dir) >= (int)sizeof path)
         return gw_err_set(err, GW_EINVAL, "%s: path too long", dir);
+    /* what the sweep wrote into it (none: a descriptor not opened by
+     * gw_sweep_journal_open_at, checked by its name alone) */
+    jshadow *h = shadow_get(*fdp);
+    /* its name, followed as the sweep opened it (a symbolic link to the
+     * journal is the journal), and the file holding what the sweep wrote */
+    if (fstatat(dirfd, "journal.csv", &b, 0) == 0 && a.st_dev == b.st_dev && a.st_ino == b.st_ino) {
+        long long size = 0;
+        if (!h || shadow_differs(h, *fdp, &size) != 1)
+            return GW_OK;
+        if (gw_sweep_dir_held(dirfd, dir, err) != GW_OK)
+            return GW_EIO;
+        int kept = 0;
+        const int rc = journal_keep(dirfd, fdp, dir, path, h, 1, size, &kept, err);
+        if (kept && restored)
+            *restored = 2;
+        return rc;
+    }
+    if (gw_sweep_dir_held(dirfd, dir, err) != GW_OK) /* the directory removed, the journal with it */
+        return GW_EIO;
     int named = fstatat(dirfd, "journal.csv", &b, AT_SYMLINK_NOFOLLOW) == 0;
     if (!named && errno != ENOENT)
         return GW_OK; /* cannot be told (the directory not searchable now): left to the table's check */
@@ -303,11 +495,17 @@ int gw_sweep_journal_held(int dirfd, int *fdp, const char *dir, int *restored, g
     }
     if (named && fstatat(dirfd, "journal.csv", &b, 0) == 0 && a.st_dev == b.st_dev && a.st_ino == b.st_ino)
         return GW_OK; /* moved back meanwhile */
-    if (!named) { /* removed, or moved away: put back */
+    if (!named) { /* removed, or moved away: put back, with what the sweep wrote */
         size_t len = 0;
-        char *text = gw_sweep_slurp_fd(*fdp, path, &len, err);
-        if (!text)
+        char *text = NULL;
+        if (h && (text = malloc(h->len + 1)) != NULL) {
+            memcpy(text, h->text, h->len);
+            text[len = h->len] = '\0';
+        } else if (h) {
+            return gw_err_set(err, GW_ENOMEM, "%s: out of memory putting the journal back", path);
+        } else if (!(text = gw_sweep_slurp_fd(*fdp, path, &len, err))) {
             return errno == ENOMEM ? GW_ENOMEM : GW_EIO;
+        }
         if (len == 0 || text[len - 1] != '\n') {
             free(text);
             return GW_OK; /* a torn last row: left to the table's check */
@@ -320,6 +518,12 @@ int gw_sweep_journal_held(int dirfd, int *fdp, const char *dir, int *restored, g
         if (nfd >= 0) {
             close(*fdp);
             *fdp = nfd;
+            /* the new file checked as the old one was: one written into
+             * later (an editor's save that deleted the journal and wrote its
+             * text more than GW_SWEEP_GRACE_MS after) is found at the next
+             * row, not appended to */
+            if (h)
+                shadow_move(h, nfd);
             if (restored)
                 *restored = 1;
             return GW_OK;
@@ -327,7 +531,7 @@ int gw_sweep_journal_held(int dirfd, int *fdp, const char *dir, int *restored, g
         /* the name taken meanwhile: another file's */
     }
     int kept = 0;
-    const int rc = journal_keep(dirfd, fdp, dir, path, &kept, err);
+    const int rc = journal_keep(dirfd, fdp, dir, path, h, 0, 0, &kept, err);
     if (kept && restored)
         *restored = 2;
     return rc;
@@ -389,10 +593,21 @@ static int journal_access(const char *dir, const gw_sweep_config *cfg, char *don
     }
     if (fdp)
         *fdp = fd;
-    if (rc == GW_OK && dirfdp && fd >= 0)
+    if (rc == GW_OK && dirfdp && fd >= 0) {
+        /* a sweep's: what its journal holds kept, checked before each row */
+        size_t len = 0;
+        char *text = gw_sweep_slurp_fd(fd, path, &len, err);
+        if (!text) {
+            close(fd);
+            close(dfd);
+            *fdp = -1;
+            return errno == ENOMEM ? GW_ENOMEM : GW_EIO;
+        }
+        shadow_set(fd, text, len);
         *dirfdp = dfd;
-    else
+    } else {
         close(dfd);
+    }
     return rc;
 }
 
@@ -736,8 +951,26 @@ int gw_sweep_journal_append(int fd, const char *row, double *synced_ms, gw_err *
 {
     if (!row)
         return gw_err_set(err, GW_EINVAL, "gw_sweep_journal_append: row is NULL");
-    if (write_all(fd, row, strlen(row)) != 0) /* a torn row then: cut by the resume, its case run again */
-        return gw_err_set(err, GW_EIO, "sweep journal: write failed: %s", strerror(errno));
+    const size_t n = strlen(row);
+    jshadow *h = shadow_get(fd);
+    if (h && h->len + n > h->cap) { /* room in the journal's copy first: the row written is in it */
+        const size_t cap = h->len + n > 2 * h->cap ? h->len + n : 2 * h->cap;
+        char *t = realloc(h->text, cap);
+        if (!t)
+            return gw_err_set(err, GW_ENOMEM, "sweep journal: out of memory for its copy (%zu bytes)", cap);
+        h->text = t, h->cap = cap;
+    }
+    if (write_all(fd, row, n) != 0) { /* a torn row then: cut by the resume, its case run again */
+        const int e = errno;
+        if (h) /* what the file holds now is not known: checked by its name alone */
+            shadow_drop(h);
+        return gw_err_set(err, GW_EIO, "sweep journal: write failed: %s", strerror(e));
+    }
+    if (h) {
+        memcpy(h->text + h->len, row, n);
+        h->len += n;
+        shadow_times(h, fd); /* another's write between the check and this one: compared whole next */
+    }
     const double now = gw_clock_ms();
     if (!synced_ms || now - *synced_ms >= GW_SWEEP_SYNC_MS)
         return gw_sweep_journal_sync(fd, synced_ms, err);

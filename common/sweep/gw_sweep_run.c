@@ -121,7 +121,10 @@ int gw_sweep_size_check(const gw_sweep_config *cfg, const gw_sweep_model *m, gw_
     }
     /* "%.17g": a sign, 17 digits, the point and e-308 */
     row += 25.0 * m->ncolumns + 17.0 * (cfg->read_key ? 2 : 1) + 10; /* the hashes, ",checksum\n" */
-    const double journal = row * (double)cfg->ncases, need = (row + 48) * (double)cfg->ncases;
+    /* need: the journal read back and the table built from it, while the
+     * sweep still holds its copy of what it wrote (gw_sweep_journal.c: a
+     * journal rewritten in place is kept from it) */
+    const double journal = row * (double)cfg->ncases, need = (2 * row + 48) * (double)cfg->ncases;
     const char *what = "";
     const double avail = gw_memory_available(&what);
     if (journal > (double)GW_SWEEP_JOURNAL_MAX)
@@ -132,8 +135,8 @@ int gw_sweep_size_check(const gw_sweep_config *cfg, const gw_sweep_model *m, gw_
     if (need > 0.8 * avail)
         return gw_err_set(err, GW_EINVAL, "the grid has %ld cases: its journal read back and the table built from it "
                           "need about %.3g GB (%.0f bytes a case), above 80 %% of the %.3g GB available (%s): split "
-                          "the grid into sweeps of at most %.0f cases", cfg->ncases, need / 1e9, row + 48,
-                          avail / 1e9, what, floor(0.8 * avail / (row + 48)));
+                          "the grid into sweeps of at most %.0f cases", cfg->ncases, need / 1e9, 2 * row + 48,
+                          avail / 1e9, what, floor(0.8 * avail / (2 * row + 48)));
     return GW_OK;
 }
 

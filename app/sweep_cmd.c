@@ -830,11 +830,12 @@ int gw_cmd_sweep(int argc, char **argv, const gw_sweep_model *const *models, con
         }
         if (rank == 0) {
             if (s.kept) {
-                /* the rows are in the kept file: a rerun as it is resumes
-                 * from the other file, which may hold fewer of them */
+                /* the rows are in the kept file: a rerun as it is reads
+                 * the other file, which may hold fewer of them, or none
+                 * (cut to nothing: the rerun refuses it, naming it) */
                 gw_err_set(&err, GW_EIO, "%s; the sweep stopped taking cases after %ld new: %ld of its %ld cases "
                            "are journaled there; to resume with them, move it over journal.csv and rerun (a rerun "
-                           "as it is resumes from the file now named journal.csv)", s.kept_err.msg, s.done,
+                           "as it is reads the file now named journal.csv)", s.kept_err.msg, s.done,
                            s.ndone0 + s.done, cfg.ncases);
                 code = 1;
             } else if (s.failed) {

@@ -18,7 +18,12 @@
 #    "1e-07 is outside [1e-06, 1]" for a value inside the range just given.
 #    The option is now the table's row: its help gives the range, and every
 #    refusal names the same one.
-#  3 Held (they pass on the code before too): Hertz's scaling of the column
+#  3 A drop in which no peak reaches --peak-threshold has f_max, t_fmax, its
+#    peaks and impacts empty (null since the thirty-sixth pass), and said
+#    nothing of why (drop --n 3 --peak-threshold 80, a first collision of
+#    72.48 N: warnings []). A warning now names --peak-threshold and the first
+#    collision's F_max (stderr, the JSON, Python's GranwaveWarning).
+#  4 Held (they pass on the code before too): Hertz's scaling of the column
 #    (F_max x 10^1.2 and tau_max x 10^-0.2 a decade of v_imp), tau_N linear in
 #    N, the drop's energy ledger closed in four configurations, --json and the
 #    --out JSON identical (chain, drop, falcon, wavespeed, softwall,
@@ -93,7 +98,24 @@ refused "wavespeed --threshold 5e-7 (inside (0, 1], outside [1e-6, 1]): refused,
     '^granwave wavespeed --threshold: 5e-07 is outside \[1e-06, 1\]$' wavespeed --n 5:8 --vimp 0.3 --threshold 5e-7 --out o
 runs_quiet "wavespeed --threshold 1e-6 (the bound): runs" wavespeed --n 5:8 --vimp 0.3 --threshold 1e-6
 
-# --- 3 held: the physics a user checks ---
+# --- 3 a drop whose threshold no peak reaches says so ---
+if runs_json "drop --n 3 --peak-threshold 80" pt.json drop --n 3 --peak-threshold 80 --quiet; then
+    jq_py pt.json "d['n_peaks'] == 0 and d['f_max'] is None and d['first_collision']['f_max'] < 80 and any('peak-threshold' in w and 'no wall-force peak' in w for w in d['warnings'])" | grep -q True &&
+        ok "drop --peak-threshold 80 (above the first collision's $(jq_py pt.json "'%.4g' % d['first_collision']['f_max']") N): no peak, a warning naming --peak-threshold in the JSON" ||
+        ko "drop --peak-threshold 80: warnings $(jq_py pt.json "d['warnings']") n_peaks $(jq_py pt.json "d['n_peaks']")"
+    grep -q "^granwave drop: warning: no wall-force peak reached --peak-threshold = 80 N" "$tmp/stderr" &&
+        ok "drop --peak-threshold 80: the warning on stderr" || ko "drop --peak-threshold 80: stderr $(head -c 300 "$tmp/stderr")"
+fi
+runs_json "drop --n 3 --peak-threshold 50" pt.json drop --n 3 --peak-threshold 50 --quiet &&
+    jq_py pt.json "d['n_peaks'] >= 1 and d['warnings'] == []" | grep -q True &&
+    ok "drop --peak-threshold 50 (below the first collision's F_max): peaks, no warning" ||
+    ko "drop --peak-threshold 50: $(jq_py pt.json "(d['n_peaks'], d['warnings'])")"
+py_checks 1 <<'PYEOF'
+warned("Python drop(n=3, peak_threshold=80)", "no wall-force peak reached peak_threshold = 80 N", granwave.drop, n=3,
+       peak_threshold=80)
+PYEOF
+
+# --- 4 held: the physics a user checks ---
 for v in 0.01 0.1 1; do runs_json "chain --n 10 --vimp $v" "h$v.json" chain --n 10 --vimp $v --quiet || true; done
 $PY - <<'EOF' >phys.out
 import json

@@ -108,7 +108,8 @@ int gw_cli_progress_report(void *ctx, long done, long total);
  * (a collision: gw_chain_progress_fn's t, t_expect, t_max, s). One line when
  * due ("PREFIXt = T ms of ~E ms expected (P%), X s elapsed, ~L s left"; past
  * t_expect "... (P%, t-max M ms), X s elapsed, at most ~L s left"), or, last 1,
- * the run's end at t ("... (P%): ended, X s elapsed"). Due: the first at
+ * the run's end at t ("... (P%): ended, X s elapsed"); at t = 0, no pace yet,
+ * the line ends at "X s elapsed" without L. Due: the first at
  * after_ms, then every max(every_ms, a twentieth of the time elapsed) up to
  * GW_CLI_PROGRESS_GAP_MAX_MS, so an hours-long run says where it is without a
  * line every few seconds, nor goes silent for minutes. */
@@ -124,8 +125,9 @@ void gw_cli_progress_time(gw_cli_progress *p, double t, double t_expect, double 
  * GW_CLI_PROGRESS_GAP_MAX_MS (or every_ms if that is longer). */
 double gw_cli_progress_gap(const gw_cli_progress *p, double el_ms);
 /* A study's progress within its collisions (gw_chain_watch_fn's done, total,
- * part): "PREFIXk/n UNIT, P% of the work, E s elapsed, ~L s left", the header
- * before the first, each line one write. Due as gw_cli_progress_time's: the
+ * part): "PREFIXk/n UNIT, P% of the work, E s elapsed, ~L s left" (without
+ * ", ~L s left" while part is 0: no work measured, no time left to give), the
+ * header before the first, each line one write. Due as gw_cli_progress_time's: the
  * first once every_ms has passed, then every gw_cli_progress_gap; last 1: the
  * line now, at 100%. Not locked: the caller calls it one call at a time (the
  * study's lock, then the main thread once the study has returned). */

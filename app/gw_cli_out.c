@@ -197,10 +197,17 @@ void gw_cli_progress_part(gw_cli_progress *p, long done, long total, double part
         len = snprintf(line, sizeof line, "%s\n", p->header);
     const double el = el_ms / 1e3;
     part = last ? 1.0 : fmin(fmax(part, 0.0), 1.0);
+    /* no time left before any work is measured: a study's first line can come
+     * while it builds its walls and calibrations, before its first collision
+     * (softwall --sheets --sheet-law layer --restitution 0.5: "0/47 collisions,
+     * 0.0% of the work, 2.2 s elapsed, ~0.0 s left", the end announced before
+     * the start); the line then ends at the time elapsed, as a sweep's does */
     if (len >= 0 && (size_t)len < sizeof line)
-        snprintf(line + len, sizeof line - (size_t)len,
-                 "%s%ld/%ld %s, %.1f%% of the work, %.1f s elapsed, ~%.1f s left\n", p->prefix, done, total,
-                 p->unit, 100.0 * part, el, part > 0 ? el / part * (1.0 - part) : 0.0);
+        len += snprintf(line + len, sizeof line - (size_t)len, "%s%ld/%ld %s, %.1f%% of the work, %.1f s elapsed",
+                        p->prefix, done, total, p->unit, 100.0 * part, el);
+    if (len >= 0 && (size_t)len < sizeof line)
+        snprintf(line + len, sizeof line - (size_t)len, part > 0 ? ", ~%.1f s left\n" : "\n",
+                 part > 0 ? el / part * (1.0 - part) : 0.0);
     /* one fputs of the whole line: stderr is unbuffered, and a line written in
      * pieces could take another writer's text between them */
     fputs(line, p->fp);
@@ -239,8 +246,10 @@ void gw_cli_progress_time(gw_cli_progress *p, double t, double t_expect, double 
     fprintf(p->fp, "%st = %.4g %s of ~%.4g %s expected (%.1f%%", p->prefix, t * sc, u, t_expect * sc, u, 100.0 * frac);
     if (last)
         fprintf(p->fp, "): ended, %.1f s elapsed\n", el);
+    else if (t <= 0) /* no pace yet: no time left (it said ~0.0 s) */
+        fprintf(p->fp, "), %.1f s elapsed\n", el);
     else if (t < t_expect) /* at the pace so far */
-        fprintf(p->fp, "), %.1f s elapsed, ~%.1f s left\n", el, t > 0 ? el / t * (t_expect - t) : 0.0);
+        fprintf(p->fp, "), %.1f s elapsed, ~%.1f s left\n", el, el / t * (t_expect - t));
     else /* the end comes when every contact has opened: at the latest at t_max */
         fprintf(p->fp, ", t-max %.4g %s), %.1f s elapsed, at most ~%.1f s left\n", t_max * sc, u, el,
                 el / t * fmax(t_max - t, 0.0));

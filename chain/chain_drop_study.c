@@ -414,6 +414,18 @@ int gw_chain_drop_study_run(const gw_chain_drop_setup *s, gw_progress_fn progres
         rc = rc2;
     if (rc == GW_OK && (rc = gw_chain_drop_result_warnings(&out->r, &out->warnings)) != GW_OK)
         rc = gw_err_set(err, rc, "drop: out of memory");
+    /* a threshold above every peak: f_max, t_fmax, the peaks and the impacts
+     * are empty (null), which said nothing of why (drop --peak-threshold 1e9:
+     * f_max null, warnings [], a first collision of 72.5 N) */
+    if (rc == GW_OK && out->r.n_peaks == 0) {
+        char first[96] = "";
+        if (isfinite(out->r.first.f_max))
+            gw_snprintf(first, sizeof first, " (the first collision's F_max is %.6g N)", out->r.first.f_max);
+        if ((rc = gw_warnings_add(&out->warnings, "no wall-force peak reached --peak-threshold = %g N%s: f_max, "
+                                  "t_fmax, the peaks and the impacts are empty; lower --peak-threshold",
+                                  out->peak_threshold, first)) != GW_OK)
+            rc = gw_err_set(err, rc, "drop: out of memory");
+    }
     gw_chain_resolved_free(&res);
     out->wall_time_ms = gw_clock_ms() - t0;
     return rc;

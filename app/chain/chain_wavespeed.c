@@ -49,8 +49,12 @@ int gw_cmd_wavespeed(int argc, char **argv)
                          .help = "impact velocities, m/s [0.075,0.15,0.3,0.5]"};
     opts[k++] = (gw_opt){.name = "n", .kind = GW_OPT_STRING, .dest = &nrange, .metavar = "A:B",
                          .help = "column sizes for the tau_N fit; B is the front column [5:40]"};
-    opts[k++] = (gw_opt){.name = "threshold", .kind = GW_OPT_DOUBLE, .dest = &frac, .metavar = "F",
-                         .help = "front threshold as a fraction of F_max(1) [0.1]", .lo = 0, .hi = 1, .open_lo = 1};
+    /* --threshold is the table's row: its range [1e-6, 1] and help. The option
+     * had its own range, (0, 1], and help without one: "0 is outside (0, 1]",
+     * then "1e-07 is outside [1e-06, 1]" from the library for a value inside */
+    if (gw_cli_opt_param(gw_param_find(gw_chain_wavespeed_setup_params(), "threshold"), &frac, &opts[k++], NULL) !=
+        GW_OK)
+        return chain_cli_fail("wavespeed --threshold: not an option row (a bug)");
     chain_cli_sweep_opts(opts, &k, &jobs, &quiet);
     opts[k] = (gw_opt){0};
     int done = chain_cli_parse("wavespeed", "granwave wavespeed [options]", ws_summary, opts, argc, argv);

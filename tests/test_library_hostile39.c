@@ -22,6 +22,13 @@
  *     time GW_OK where it stood (as rk4's solver did before the thirty-eighth
  *     pass); gw_layer_set_block kept a particle index the layer has not, which
  *     the block watch then took;
+ *   - a gw_layer_sample built in memory: gw_layer_impact, gw_layer_impact_check
+ *     and gw_layer_impact_dem_dt read NULL coordinates (SIGSEGV), and a body
+ *     id outside [0, n) was written past the run's arrays (heap overflow
+ *     under the sanitizer); a gw_layer_impact_result filled by hand:
+ *     gw_layer_crowns and gw_layer_impact_write_h5 read series it had not
+ *     (SIGSEGV), and gw_layer_impact_result_warnings read a settling or
+ *     undecided text without its NUL on into the fields after it;
  *   - gw_chain_unfinished_warnings and gw_chain_softwall_warnings wrote
  *     "9 of 5 collisions ..." with GW_OK;
  *   - a gw_stats_table filled by hand: gw_stats_groups_make read rows of
@@ -284,6 +291,97 @@ static int layer_block_out_of_range(void)
     return 0;
 }
 
+/* ---- samples and impact results filled by hand ---- */
+
+static double SX[3] = {0.3, 0.5, 0.7}, SY[3] = {0.1, 0.1, 0.1}, SR[3] = {0.1, 0.1, 0.1};
+
+static gw_layer_sample three_discs(void)
+{
+    gw_layer_sample s;
+    memset(&s, 0, sizeof s);
+    s.n = 3, s.width = 1, s.rm = 0.1, s.volume_ratio = 1, s.porosity = NAN;
+    s.x = SX, s.y = SY, s.r = SR;
+    return s;
+}
+
+static int impact_sample_hand(void)
+{
+    gw_err e = {{0}};
+    gw_layer_params lp = gw_layer_params_default();
+    gw_layer_impact_params ip = gw_layer_impact_params_default();
+    gw_solver_params sp = gw_solver_params_default();
+    gw_layer_impact_result r;
+    gw_layer_sample s = three_discs();
+    s.y = NULL; /* read: SIGSEGV before */
+    EXPECT(refused(gw_layer_impact(&s, &lp, &ip, gw_solver_cvode, &sp, &r, &e), &e, "y NULL"));
+    gw_layer_impact_result_free(&r);
+    EXPECT(refused(gw_layer_impact_check(&s, &ip, &e), &e, "y NULL"));
+    s = three_discs();
+    s.r = NULL;
+    EXPECT(isnan(gw_layer_impact_dem_dt(&s, &lp, &ip)));
+    s = three_discs();
+    int body[3] = {0, 99, -5}; /* written past the run's arrays before */
+    s.body = body;
+    EXPECT(refused(gw_layer_impact(&s, &lp, &ip, gw_solver_cvode, &sp, &r, &e), &e, "body id 99"));
+    gw_layer_impact_result_free(&r);
+    body[1] = 1;
+    EXPECT(refused(gw_layer_impact_check(&s, &ip, &e), &e, "body id -5"));
+    /* control: the sample as built passes the check, and its step is the same
+     * with a body per disc given or not */
+    s = three_discs();
+    EXPECT(gw_layer_impact_check(&s, &ip, &e) == GW_OK);
+    const double dt = gw_layer_impact_dem_dt(&s, &lp, &ip);
+    int own[3] = {0, 1, 2};
+    s.body = own;
+    EXPECT(dt > 0 && gw_layer_impact_dem_dt(&s, &lp, &ip) == dt && gw_layer_impact_check(&s, &ip, &e) == GW_OK);
+    return 0;
+}
+
+static int impact_result_hand(void)
+{
+    gw_err e = {{0}};
+    gw_layer_impact_result r;
+    memset(&r, 0, sizeof r);
+    r.ns = r.cap = 10, r.nrings = 4; /* no series: SIGSEGV before */
+    EXPECT(gw_layer_crowns(&r) == GW_EINVAL);
+    char dir[] = "/tmp/gw_hostile39r.XXXXXX", path[64];
+    EXPECT(mkdtemp(dir) != NULL);
+    snprintf(path, sizeof path, "%s/impact.h5", dir);
+    const int rc = gw_layer_impact_write_h5(&r, path, "h", &e);
+    EXPECT(rc == GW_EUNSUPPORTED || refused(rc, &e, "10 samples, 4 rings"));
+    struct stat st;
+    EXPECT(stat(path, &st) != 0);
+    r.ns = -1, r.nrings = 0;
+    EXPECT(gw_layer_crowns(&r) == GW_EINVAL);
+    /* control: a zeroed result has nothing to analyse */
+    memset(&r, 0, sizeof r);
+    EXPECT(gw_layer_crowns(&r) == GW_OK);
+    rmdir(dir);
+    return 0;
+}
+
+static int impact_warning_texts(void)
+{
+    gw_layer_impact_result r;
+    memset(&r, 0, sizeof r);
+    memset(r.settling, 'B', sizeof r.settling); /* no NUL within the field */
+    memset(r.undecided, 'A', sizeof r.undecided);
+    r.energy_error = r.settled_load_ratio = 0.1; /* the fields after them: no zero byte */
+    char *list = NULL;
+    EXPECT(gw_layer_impact_result_warnings(&r, &list) == GW_OK && list);
+    /* each text is its field, no more: "B"x768 "\n" "A"x320 "\n" (it read on) */
+    EXPECT(strlen(list) == sizeof r.settling + sizeof r.undecided + 2);
+    EXPECT(list[sizeof r.settling] == '\n' && list[sizeof r.settling + 1] == 'A');
+    free(list);
+    /* control: terminated texts as written */
+    strcpy(r.settling, "settled elsewhere");
+    strcpy(r.undecided, "undecided");
+    list = NULL;
+    EXPECT(gw_layer_impact_result_warnings(&r, &list) == GW_OK && strcmp(list, "settled elsewhere\nundecided\n") == 0);
+    free(list);
+    return 0;
+}
+
 /* ---- warning counts ---- */
 
 static int warning_counts(void)
@@ -353,6 +451,9 @@ int main(void)
         {"gw_layer_start/gw_solver_create: NULL settings", layer_start_null},
         {"gw_layer_advance: NaN, infinite and earlier times", layer_advance_times},
         {"gw_layer_set_block: a particle the layer has not", layer_block_out_of_range},
+        {"gw_layer_impact/_check/_dem_dt: samples filled by hand", impact_sample_hand},
+        {"gw_layer_crowns/gw_layer_impact_write_h5: results filled by hand", impact_result_hand},
+        {"gw_layer_impact_result_warnings: texts without their NUL", impact_warning_texts},
         {"gw_chain_unfinished/softwall_warnings: counts beyond the total", warning_counts},
         {"gw_stats_groups_make: tables filled by hand", stats_table_hand},
         {"gw_check_positive: a NULL name", check_positive_null_name},

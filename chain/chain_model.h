@@ -305,4 +305,9 @@ struct gw_chain_collision;
 int chain_collision_run_progress(const struct gw_chain_setup *s, struct gw_chain_collision *out,
                                  gw_chain_progress_fn progress, void *pctx, gw_err *err);
 
+/* chain_trace.c: a gw_chain_trace as the calls that read it need it (tr
+ * given, n >= 0, len <= cap, t and f given when len > 0, x and v too when n >
+ * 0): GW_OK, or GW_EINVAL "CALL: ..." naming the fields. */
+int chain_trace_check(const gw_chain_trace *tr, const char *call, gw_err *err);
+
 #endif

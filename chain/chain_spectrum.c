@@ -13,6 +13,7 @@
 #include <fftw3.h>
 
 #include "gw_chain.h"
+#include "chain_model.h"
 #include "gw_chain_study.h"
 #include "gw_global.h"
 
@@ -55,7 +56,9 @@ int gw_chain_wall_spectrum(const gw_chain_trace *tr, double t0, double t1, doubl
     if (!sp)
         return gw_err_set(err, GW_EINVAL, "gw_chain_wall_spectrum: sp is NULL");
     memset(sp, 0, sizeof *sp);
-    if (!tr || tr->len < 2 || !(t1 > t0) || !isfinite(t1) || t0 < tr->t[0] || t1 > tr->t[tr->len - 1])
+    if (chain_trace_check(tr, "gw_chain_wall_spectrum", err) != GW_OK)
+        return GW_EINVAL;
+    if (tr->len < 2 || !(t1 > t0) || !isfinite(t1) || t0 < tr->t[0] || t1 > tr->t[tr->len - 1])
         return gw_err_set(err, GW_EINVAL, "wall spectrum: interval [%g, %g] s not inside the trace", t0, t1);
     /* a force or time that is not finite in the interval made every bin NaN
      * and the peak a bin of no meaning (a NaN at one of 64 samples: f_peak

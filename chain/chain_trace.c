@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "gw_chain.h"
+#include "chain_model.h"
 #include "gw_locale.h"
 #if GW_HAVE_HDF5
 #include <hdf5.h>
@@ -20,6 +21,20 @@ void gw_chain_trace_init(gw_chain_trace *tr, int n)
         return;
     memset(tr, 0, sizeof *tr);
     tr->n = n;
+}
+
+int chain_trace_check(const gw_chain_trace *tr, const char *call, gw_err *err)
+{
+    if (!tr)
+        return gw_err_set(err, GW_EINVAL, "%s: tr is NULL", call);
+    /* a trace filled by hand: its arrays were read over len rows whatever
+     * they held (SIGSEGV for NULL ones), and a sample was stored past cap */
+    if (tr->n < 0 || tr->len > tr->cap || (tr->len > 0 && (!tr->t || !tr->f)) ||
+        (tr->len > 0 && tr->n > 0 && (!tr->x || !tr->v)))
+        return gw_err_set(err, GW_EINVAL, "%s: not a trace (n %d, len %zu, cap %zu, t%s f%s x%s v%s: n >= 0, len <= cap, "
+                          "the arrays of len rows given)", call, tr->n, tr->len, tr->cap, tr->t ? "" : " NULL",
+                          tr->f ? "" : " NULL", tr->x ? "" : " NULL", tr->v ? "" : " NULL");
+    return GW_OK;
 }
 
 void gw_chain_trace_free(gw_chain_trace *tr)
@@ -39,6 +54,8 @@ int gw_chain_trace_sample(void *ctx, double t, const double *y, double f_wall, i
         return GW_EINVAL;
     (void)is_event;
     gw_chain_trace *tr = ctx;
+    if (chain_trace_check(tr, "gw_chain_trace_sample", NULL) != GW_OK)
+        return GW_EINVAL;
     const int n = tr->n;
     if (tr->len == tr->cap) {
         size_t cap = tr->cap ? 2 * tr->cap : 1024;
@@ -228,7 +245,12 @@ static int write_h5(const gw_chain_trace *tr, const char *dir, const char *stem,
 int gw_chain_trace_write(const gw_chain_trace *tr, const char *dir, const char *stem,
                          const char *header, gw_err *err)
 {
-    int rc = write_csv(tr, dir, stem, header, err);
+    int rc = chain_trace_check(tr, "gw_chain_trace_write", err);
+    if (rc != GW_OK)
+        return rc;
+    if (!dir || !stem) /* (dir was printed as "(null)", stem read) */
+        return gw_err_set(err, GW_EINVAL, "gw_chain_trace_write: %s is NULL", !dir ? "dir" : "stem");
+    rc = write_csv(tr, dir, stem, header, err);
 #if GW_HAVE_HDF5
     if (rc == GW_OK)
         rc = write_h5(tr, dir, stem, header, err);

@@ -133,9 +133,18 @@ int gw_chain_result_warnings(const gw_chain_result *r, char **list)
                                         : "F_max, tau_N, the final velocities and the restitution");
 }
 
+/* a count no study gives ("9 of 5 collisions", a negative total): written as
+ * given with GW_OK before the thirty-ninth pass */
+static int counts_bad(int unfinished, int total)
+{
+    return unfinished < 0 || total < 0 || unfinished > total;
+}
+
 int gw_chain_unfinished_warnings(int unfinished, int total, char **list)
 {
-    if (unfinished <= 0)
+    if (counts_bad(unfinished, total))
+        return GW_EINVAL;
+    if (unfinished == 0)
         return GW_OK;
     return gw_warnings_add(list,
                            "%d of %d collisions had not ended at t_max (a contact still closed or closing): their "
@@ -169,7 +178,9 @@ void chain_list_speed(char *buf, size_t size, int *count, double v)
 
 int gw_chain_softwall_warnings(int unfinished, int total, char **list)
 {
-    if (unfinished <= 0) /* F_max and tau_max: the wall's contact, the column's own may still be busy */
+    if (counts_bad(unfinished, total))
+        return GW_EINVAL;
+    if (unfinished == 0) /* F_max and tau_max: the wall's contact, the column's own may still be busy */
         return GW_OK;
     return gw_warnings_add(list,
                            "%d of %d collisions were still at the wall at t_max: their F_max and tau_max may not "

@@ -322,9 +322,12 @@ int gw_chain_falcon_sizes_check(long a, long b, gw_err *err);
 void gw_chain_falcon_outcome_free(gw_chain_falcon_outcome *out);
 /* The warning of a study over columns (falcon, wavespeed) with unfinished of
  * its total collisions not ended at t_max, appended to *list
- * (gw_warnings_add); nothing when unfinished is 0. GW_OK or GW_ENOMEM. */
+ * (gw_warnings_add); nothing when unfinished is 0. GW_OK or GW_ENOMEM;
+ * GW_EINVAL, nothing added, for counts no study has (unfinished or total
+ * negative, unfinished above total). */
 int gw_chain_unfinished_warnings(int unfinished, int total, char **list);
-/* The softwall's: unfinished of total collisions still at the wall at t_max. */
+/* The softwall's: unfinished of total collisions still at the wall at t_max
+ * (the same counts refused). */
 int gw_chain_softwall_warnings(int unfinished, int total, char **list);
 
 /* ---- the studies of `granwave wavespeed`, `softwall`, `drop`, `dispersion` ----

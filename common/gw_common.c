@@ -265,6 +265,8 @@ int gw_check_range(double x, const char *name, double lo, double hi, gw_err *err
 
 int gw_check_positive(double x, const char *name, gw_err *err)
 {
+    if (!name) /* as gw_check_range ("(null): must be ..." before) */
+        name = "value";
     if (!isfinite(x) || !(x > 0))
         return gw_err_set(err, GW_EINVAL, "%s: must be a positive finite number, got %g", name, x);
     return GW_OK;

@@ -28,6 +28,9 @@ unsigned long long gw_case_config_hash(const char *model, int n, const char *con
         return 0;
     unsigned long long h = gw_fnv1a64(GW_FNV1A64_INIT, "model ", 6);
     h = gw_fnv1a64(gw_fnv1a64(h, model, strlen(model)), "\n", 1);
+    for (int i = 0; i < n; i++)
+        if (!names[i] || !values[i]) /* (a NULL pair was read: SIGSEGV) */
+            return 0;
     for (int i = 0; i < n; i++) {
         h = gw_fnv1a64(gw_fnv1a64(h, names[i], strlen(names[i])), " = ", 3);
         h = gw_fnv1a64(gw_fnv1a64(h, values[i], strlen(values[i])), "\n", 1);

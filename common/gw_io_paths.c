@@ -109,6 +109,8 @@ void gw_path_parent(char *buf)
 
 int gw_out_check(const char *dir, const char *what, gw_err *err)
 {
+    if (!what) /* (printed as "(null)") */
+        what = "output";
     char buf[4096];
     size_t n = dir ? strlen(dir) : 0;
     if (n == 0 || n >= sizeof buf)
@@ -175,6 +177,8 @@ static int temp_name_fits(const char *path, const char *dir, const char *what, g
 
 int gw_out_file_check(const char *path, const char *what, gw_err *err)
 {
+    if (!what) /* (printed as "(null)") */
+        what = "output";
     char dir[4096];
     size_t n = path ? strlen(path) : 0;
     if (n == 0 || n >= sizeof dir)

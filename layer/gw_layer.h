@@ -124,7 +124,7 @@ void gw_layer_free(gw_layer *L);
 
 /* Build the contact list, the state and a solver of the given backend at t = 0.
  * Must be called once before gw_layer_advance. The solver is re-created by
- * every contact-list rebuild. */
+ * every contact-list rebuild. L or sp NULL: GW_EINVAL naming it. */
 int gw_layer_start(gw_layer *L, const gw_solver_type *type, const gw_solver_params *sp,
                    gw_err *err);
 
@@ -132,7 +132,8 @@ int gw_layer_start(gw_layer *L, const gw_solver_type *type, const gw_solver_para
  * and restarts the solver there; when a particle has moved more than half the
  * skin since the last list, rebuilds the contact list, resizes the state and
  * re-creates the solver. GW_ESOLVER/GW_ELIMIT with the solver's message in err;
- * the layer then holds the last good state. */
+ * the layer then holds the last good state. A tout that is not finite, or
+ * before the layer's time, is GW_EINVAL (the layer unchanged). */
 int gw_layer_advance(gw_layer *L, double tout, gw_err *err);
 
 /* Called at every contact event found by the solver's root finder: dir = +1
@@ -205,7 +206,8 @@ void gw_layer_body_state(const gw_layer *L, int k, double s[6]);
 const gw_layer_params *gw_layer_get_params(const gw_layer *L);
 /* Number of closed contacts (u_n > 0) of particle i, walls included. */
 int gw_layer_contact_count(const gw_layer *L, int i);
-/* Mark particle i as the block: its kinetic energy is booked as E_k,b. */
+/* Mark particle i as the block: its kinetic energy is booked as E_k,b. An i
+ * outside [0, n) marks none (-1: the way to unmark). */
 void gw_layer_set_block(gw_layer *L, int i);
 
 /* Energy ledger (B.7-B.14), J. */

@@ -282,6 +282,8 @@ void gw_layer_set_block(gw_layer *L, int i)
 {
     if (!L)
         return;
+    if (i < 0 || i >= L->n) /* no such particle: no block (99 of 2 was kept and its body read past bid) */
+        i = -1;
     L->block = i;
     L->block_body = i >= 0 ? layer_body(L, i) : -1;
 }

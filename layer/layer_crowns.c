@@ -47,6 +47,7 @@
 #include <string.h>
 
 #include "gw_layer.h"
+#include "layer_impl.h"
 #include "gw_xcorr.h"
 
 /* Time of the first arrival peak of series v[k * stride] (k < ns): the first
@@ -224,9 +225,24 @@ static void resolved(const gw_layer_impact_result *r, double *c, double *cerr)
         *c = *cerr = NAN;
 }
 
+int layer_result_shape(const gw_layer_impact_result *r, int whole, gw_err *err)
+{
+    /* a result filled by hand: its series were read over ns samples and
+     * nrings rings whatever arrays it held (NULL: SIGSEGV) */
+    const int rows = r->ns > 0, rings = r->nrings > 0, spec = whole && r->xcorr_delay && r->spec_len > 0;
+    if (r->ns < 0 || r->nrings < 0 || r->spec_len < 0 || (rows && !r->t) ||
+        (whole && rows && (!r->ledger || !r->block)) || (rows && rings && (!r->ring_kin || !r->ring_strain)) ||
+        (whole && rows && rings && (!r->ring_coord || !r->ring_diss)) ||
+        (rings && (!r->peak_strain_t || !r->peak_kin_t || !r->ring_r)) ||
+        (whole && r->xcorr_delay && rings && !r->xcorr_rho) || (spec && rings && (!r->spec_strain || !r->spec_kin)))
+        return gw_err_set(err, GW_EINVAL, "impact result: %d samples, %d rings and %d spectrum bins without the "
+                          "arrays that hold them (a result filled by hand)", r->ns, r->nrings, r->spec_len);
+    return GW_OK;
+}
+
 int gw_layer_crowns(gw_layer_impact_result *r)
 {
-    if (!r)
+    if (!r || layer_result_shape(r, 0, NULL) != GW_OK)
         return GW_EINVAL;
     const double thr = 1e-4 * r->e_incident;
     for (int k = 0; k < r->nrings; k++) {

@@ -31,6 +31,7 @@
 #include <string.h>
 
 #include "gw_layer.h"
+#include "layer_impl.h"
 
 #if GW_HAVE_HDF5
 #include <hdf5.h>
@@ -81,6 +82,8 @@ int gw_layer_impact_write_h5(const gw_layer_impact_result *r, const char *path, 
 {
     if (!r || !path)
         return gw_err_set(err, GW_EINVAL, "gw_layer_impact_write_h5: %s is NULL", !r ? "res" : "path");
+    if (layer_result_shape(r, 1, err) != GW_OK)
+        return GW_EINVAL;
     const size_t ns = (size_t)r->ns, nr = (size_t)r->nrings, nf = r->xcorr_delay ? (size_t)r->spec_len : 0;
     double *led = malloc((8 * ns + nf + 1) * sizeof *led);
     if (!led)

@@ -527,6 +527,13 @@ int layer_clump_key_cmp(const void *pa, const void *pb);
 int layer_members_connected(const double *x, const double *y, const double *r, int *m, int k,
                             int *stack);
 
+/* A gw_layer_impact_result whose series have their arrays (ns, nrings and
+ * spec_len >= 0, each array of a nonzero count given): GW_OK, else GW_EINVAL
+ * "impact result: ..." (layer_crowns.c). whole 0: the arrays gw_layer_crowns
+ * reads (t, the ring strain and kinetic series, the peaks, ring_r); 1: every
+ * series gw_layer_impact_write_h5 writes. */
+int layer_result_shape(const gw_layer_impact_result *r, int whole, gw_err *err);
+
 /* The checks a sample read from a file passes (layer_sample_check of
  * layer_sample_check.c and layer_overlaps_check): GW_EFORMAT with a message starting
  * "sample 'WHAT'" when s would be refused on reading. */

@@ -156,6 +156,8 @@ static int make_solver(gw_layer *L, gw_err *err)
 int gw_layer_start(gw_layer *L, const gw_solver_type *type, const gw_solver_params *sp,
                    gw_err *err)
 {
+    if (!L || !sp) /* (sp was copied from NULL: SIGSEGV) */
+        return gw_err_set(err, GW_EINVAL, "gw_layer_start: %s is NULL", !L ? "L" : "sp");
     if (!type)
         return gw_err_set(err, GW_EINVAL, "layer: no solver backend given");
     L->type = type;
@@ -290,6 +292,12 @@ int gw_layer_advance(gw_layer *L, double tout, gw_err *err)
         return gw_err_set(err, GW_EINVAL, "gw_layer_advance: L is NULL");
     if (!L->solver)
         return gw_err_set(err, GW_EINVAL, "layer: gw_layer_start was not called");
+    /* a NaN tout ran nothing and returned GW_OK at t = 0, an earlier one
+     * stayed where the layer was with GW_OK (as rk4's solver did before the
+     * thirty-eighth pass) */
+    if (!isfinite(tout) || tout < L->t)
+        return gw_err_set(err, GW_EINVAL, "layer: tout %g s is %s", tout,
+                          !isfinite(tout) ? "not a finite time" : "before the layer's own time");
     while (L->t < tout) {
         if (L->quiet_until > 0 && L->t >= L->quiet_until) { /* end of a Zeno guard */
             L->quiet_until = 0;

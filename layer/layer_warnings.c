@@ -54,8 +54,10 @@ int gw_layer_impact_result_warnings(const gw_layer_impact_result *r, char **list
     if (!r)
         return GW_OK;
     /* a sample settled under another material or gravity (layer_settled.c) */
-    int rc = r->settling[0] ? gw_warnings_add(list, "%s", r->settling) : GW_OK;
+    /* each text within its field: one filled by hand without its NUL was read
+     * on into the fields after it */
+    int rc = r->settling[0] ? gw_warnings_add(list, "%.*s", (int)sizeof r->settling, r->settling) : GW_OK;
     if (rc != GW_OK || !r->undecided[0]) /* decided, or stopped at the verdict on purpose */
         return rc;
-    return gw_warnings_add(list, "%s", r->undecided);
+    return gw_warnings_add(list, "%.*s", (int)sizeof r->undecided, r->undecided);
 }

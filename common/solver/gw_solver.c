@@ -121,6 +121,8 @@ int gw_solver_create(const gw_solver_type *type, const gw_system *sys,
     *out = NULL;
     if (!type)
         return gw_err_set(err, GW_EINVAL, "solver: unknown backend");
+    if (!p) /* (its tolerances were read: SIGSEGV) */
+        return gw_err_set(err, GW_EINVAL, "gw_solver_create: p is NULL");
     if (!sys || !sys->rhs || sys->dim <= 0 || !y0)
         return gw_err_set(err, GW_EINVAL, "solver: system has no right-hand side or dimension");
     if (sys->nroots < 0 || (sys->nroots > 0 && !sys->roots))

@@ -236,7 +236,8 @@ void gw_stats_groups_free(gw_stats_groups *gs)
 
 int gw_stats_table_same(const gw_stats_table *t, long ra, long rb, int key)
 {
-    if (!t || key < 0 || key >= t->ngrid || ra < 0 || rb < 0 || ra >= t->nrows || rb >= t->nrows)
+    if (!t || key < 0 || key >= t->ngrid || ra < 0 || rb < 0 || ra >= t->nrows || rb >= t->nrows ||
+        !t->grid_num || !t->grid_value) /* (a table filled by hand without its arrays) */
         return 0;
     const double a = t->grid_num[ra * t->ngrid + key], b = t->grid_num[rb * t->ngrid + key];
     if (!isnan(a) || !isnan(b))
@@ -266,6 +267,37 @@ static char *row_key_string(const gw_stats_table *t, const gw_stats_groups *gs, 
     return s;
 }
 
+/* A table as the groups read it: a table filled by hand with rows and no
+ * arrays, more grid keys than the struct holds or a negative row count read
+ * past them (SIGSEGV) or asked calloc for SIZE_MAX ("out of memory"). */
+static int table_shape(const gw_stats_table *t, gw_err *err)
+{
+    if (t->ngrid < 0 || t->ngrid > GW_STATS_MAX_KEYS || t->nparams < 0 || t->nparams > GW_STATS_MAX_KEYS ||
+        t->ncols < 0 || t->nrows < 0)
+        return gw_err_set(err, GW_EINVAL, "stats table: %d grid keys, %d params, %d columns and %ld rows (keys and "
+                          "params in [0, %d], columns and rows >= 0)", t->ngrid, t->nparams, t->ncols, t->nrows,
+                          GW_STATS_MAX_KEYS);
+    const int rows = t->nrows > 0;
+    if ((t->ncols > 0 && !t->col_name) || (rows && !t->case_id) || (rows && t->ncols > 0 && !t->val) ||
+        (rows && t->ngrid > 0 && (!t->grid_value || !t->grid_num)))
+        return gw_err_set(err, GW_EINVAL, "stats table: %ld rows of %d grid keys and %d columns without their arrays",
+                          t->nrows, t->ngrid, t->ncols);
+    for (int k = 0; k < t->ngrid; k++)
+        if (!t->grid_name[k])
+            return gw_err_set(err, GW_EINVAL, "stats table: grid key %d has no name", k);
+    for (int k = 0; k < t->nparams; k++)
+        if (!t->param_name[k] || !t->param_value[k])
+            return gw_err_set(err, GW_EINVAL, "stats table: param %d has no name or value", k);
+    for (int c = 0; c < t->ncols; c++)
+        if (!t->col_name[c])
+            return gw_err_set(err, GW_EINVAL, "stats table: column %d has no name", c);
+    for (long i = 0; i < t->nrows * t->ngrid; i++)
+        if (!t->grid_value[i])
+            return gw_err_set(err, GW_EINVAL, "stats table: row %ld has no value of grid key %ld", i / t->ngrid,
+                              i % t->ngrid);
+    return GW_OK;
+}
+
 int gw_stats_groups_make(const gw_stats_table *t, double criterion, gw_stats_groups *gs,
                          gw_err *err)
 {
@@ -277,6 +309,9 @@ int gw_stats_groups_make(const gw_stats_table *t, double criterion, gw_stats_gro
     memset(gs, 0, sizeof *gs);
     if (!(criterion > 0 && criterion <= 1))
         return gw_err_set(err, GW_EINVAL, "criterion: %g is not in (0, 1]", criterion);
+    const int shape = table_shape(t, err);
+    if (shape != GW_OK)
+        return shape;
     gs->criterion = criterion;
     gs->point_key = gw_stats_table_key(t, "point");
     for (int k = 0; k < t->ngrid; k++)

@@ -762,20 +762,77 @@ void gw_sweep_config_free(gw_sweep_config *cfg)
     memset(cfg, 0, sizeof *cfg);
 }
 
+/* The shape of a config (counts, arrays, the case count), without its values:
+ * what gw_sweep_case reads at every case. */
+static int config_shape(const gw_sweep_config *cfg, gw_err *err)
+{
+    if (cfg->ngrid < 0 || cfg->ngrid > GW_SWEEP_MAX_KEYS || cfg->nparams < 0 || cfg->nparams > GW_SWEEP_MAX_KEYS)
+        return gw_err_set(err, GW_EINVAL, "sweep config: %d grid keys and %d params (each in [0, %d])", cfg->ngrid,
+                          cfg->nparams, GW_SWEEP_MAX_KEYS);
+    long prod = 1;
+    for (int i = 0; i < cfg->ngrid + cfg->nparams; i++) {
+        const int grid = i < cfg->ngrid;
+        const gw_sweep_key *key = grid ? &cfg->grid[i] : &cfg->params[i - cfg->ngrid];
+        if (!key->name || !key->values || key->nvalues < 1)
+            return gw_err_set(err, GW_EINVAL, "sweep config: %s %d ('%s') has %d values%s%s", grid ? "grid key" : "param",
+                              grid ? i : i - cfg->ngrid, key->name ? key->name : "(NULL name)", key->nvalues,
+                              key->values ? "" : " and no array", key->nvalues < 1 ? " (at least 1)" : "");
+        if (grid) {
+            prod *= key->nvalues;
+            if (prod > 1000000000L)
+                return gw_err_set(err, GW_EINVAL, "sweep config: the grid has more than 1e9 cases");
+        }
+    }
+    /* a zeroed config (no grid) has no case */
+    if (cfg->ncases != prod && !(cfg->ngrid == 0 && cfg->ncases == 0))
+        return gw_err_set(err, GW_EINVAL, "sweep config: ncases %ld is not the grid's %ld cases (the product of its "
+                          "keys' value counts)", cfg->ncases, cfg->ngrid ? prod : 0L);
+    return GW_OK;
+}
+
+int gw_sweep_config_check(const gw_sweep_config *cfg, gw_err *err)
+{
+    if (!cfg)
+        return gw_err_set(err, GW_EINVAL, "sweep config is NULL");
+    int rc = config_shape(cfg, err);
+    for (int i = 0; rc == GW_OK && i < cfg->ngrid + cfg->nparams; i++) {
+        const int grid = i < cfg->ngrid;
+        const gw_sweep_key *key = grid ? &cfg->grid[i] : &cfg->params[i - cfg->ngrid];
+        for (int j = 0; j < key->nvalues; j++)
+            if (!key->values[j])
+                return gw_err_set(err, GW_EINVAL, "sweep config: %s '%s': value %d is NULL", grid ? "grid key" : "param",
+                                  key->name, j);
+    }
+    if (rc == GW_OK && (cfg->ninputs < 0 || (cfg->ninputs > 0 && !cfg->inputs)))
+        return gw_err_set(err, GW_EINVAL, "sweep config: %d inputs%s", cfg->ninputs,
+                          cfg->ninputs < 0 ? " (a negative count)" : " and no array");
+    for (int i = 0; rc == GW_OK && i < cfg->ninputs; i++)
+        if (!cfg->inputs[i].key || !cfg->inputs[i].value)
+            return gw_err_set(err, GW_EINVAL, "sweep config: input %d has a NULL key or value", i);
+    return rc;
+}
+
 int gw_sweep_case(const gw_sweep_config *cfg, long k, const char **names, const char **values)
 {
     if (!cfg || !names || !values)
         return GW_EINVAL;
-    if (k < 0 || k >= cfg->ncases)
+    /* a config filled by hand: a key of no values divided by zero (SIGFPE), a
+     * NULL array or more keys than the struct holds were read, a case count
+     * beyond the grid's gave its cases again */
+    if (k < 0 || k >= cfg->ncases || config_shape(cfg, NULL) != GW_OK)
         return GW_EINVAL;
     for (int i = cfg->ngrid - 1; i >= 0; i--) {
         names[i] = cfg->grid[i].name;
         values[i] = cfg->grid[i].values[k % cfg->grid[i].nvalues];
         k /= cfg->grid[i].nvalues;
+        if (!values[i])
+            return GW_EINVAL;
     }
     for (int i = 0; i < cfg->nparams; i++) {
         names[cfg->ngrid + i] = cfg->params[i].name;
         values[cfg->ngrid + i] = cfg->params[i].values[0];
+        if (!values[cfg->ngrid + i])
+            return GW_EINVAL;
     }
     return GW_OK;
 }

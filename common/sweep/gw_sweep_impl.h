@@ -20,6 +20,12 @@
 int gw_sweep_pairs_check(const char *call, int nk, const char *const *names, const char *const *values,
                          gw_err *err);
 
+/* gw_sweep_config.c: a config filled by hand is consistent: grid keys and
+ * params within GW_SWEEP_MAX_KEYS, each with a name and at least one value
+ * (none NULL), ncases the grid's product (0 for a zeroed config), the inputs
+ * given when counted. GW_EINVAL "sweep config: ..." otherwise. */
+int gw_sweep_config_check(const gw_sweep_config *cfg, gw_err *err);
+
 /* gw_sweep_config.c: a copy of s (malloc'd), NULL on ENOMEM. */
 char *gw_sweep_strdup(const char *s);
 

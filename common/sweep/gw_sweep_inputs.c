@@ -244,6 +244,9 @@ int gw_sweep_case_inputs_check(const gw_sweep_config *cfg, long k, gw_err *err)
 {
     if (!cfg)
         return gw_err_set(err, GW_EINVAL, "gw_sweep_case_inputs_check: cfg is NULL");
+    const int rc = gw_sweep_config_check(cfg, err);
+    if (rc != GW_OK)
+        return rc;
     for (int i = 0; i < cfg->ninputs; i++) {
         const struct gw_sweep_input *in = &cfg->inputs[i];
         if (!case_reads(cfg, k, in))

@@ -35,6 +35,9 @@ int gw_sweep_memory_check(const gw_sweep_config *cfg, const gw_sweep_model *m, l
 {
     if (!cfg || !m)
         return gw_err_set(err, GW_EINVAL, "gw_sweep_memory_check: %s is NULL", !cfg ? "cfg" : "m");
+    int rc = gw_sweep_config_check(cfg, err);
+    if (rc != GW_OK)
+        return rc;
     if (most)
         *most = cfg->ncases;
     if (!m->memory || cfg->ncases <= 0)
@@ -53,7 +56,6 @@ int gw_sweep_memory_check(const gw_sweep_config *cfg, const gw_sweep_model *m, l
     }
     long ntop = 0;
     const int nk = cfg->ngrid + cfg->nparams;
-    int rc = GW_OK;
     for (long k = 0; k < cfg->ncases && rc == GW_OK; k++) {
         const char *names[2 * GW_SWEEP_MAX_KEYS], *vals[2 * GW_SWEEP_MAX_KEYS];
         double b = 0;
@@ -110,6 +112,9 @@ int gw_sweep_size_check(const gw_sweep_config *cfg, const gw_sweep_model *m, gw_
 {
     if (!cfg || !m)
         return gw_err_set(err, GW_EINVAL, "gw_sweep_size_check: %s is NULL", !cfg ? "cfg" : "m");
+    const int rc = gw_sweep_config_check(cfg, err);
+    if (rc != GW_OK)
+        return rc;
     double row = 1 + (double)gw_snprintf(NULL, 0, "%ld", cfg->ncases > 0 ? cfg->ncases - 1 : 0);
     for (int i = 0; i < cfg->ngrid; i++) {
         size_t w = 0;
@@ -242,6 +247,11 @@ int gw_sweep_run_warned(const gw_sweep_config *cfg, const gw_sweep_model *m, int
 {
     if (!cfg || !m || !values) /* as gw_sweep_run_text (they were dereferenced: SIGSEGV) */
         return gw_err_set(err, GW_EINVAL, "gw_sweep_run: %s is NULL", !cfg ? "cfg" : !m ? "m" : "values");
+    /* a config filled by hand with more cases than its grid ran its first
+     * cases again (GW_OK), one with a key of no values divided by zero */
+    int crc = gw_sweep_config_check(cfg, err);
+    if (crc != GW_OK)
+        return crc;
     const int nk = cfg->ngrid + cfg->nparams;
     if (jobs < 0 || jobs > GW_SWEEP_JOBS_MAX) /* the range of granwave sweep --jobs */
         return gw_err_set(err, GW_EINVAL, "jobs: %d is outside [0, %d] (0: one per CPU)", jobs, GW_SWEEP_JOBS_MAX);

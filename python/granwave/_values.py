@@ -6,6 +6,7 @@ is no such value. Separate from the studies that call it (_core.py) and the
 sweeps (_sweep.py), which convert their values the same way.
 """
 import itertools
+import decimal
 import math
 import numbers
 import os
@@ -57,6 +58,54 @@ def read_table(fn):
     return t, rows
 
 
+class _Beyond(float):
+    """A real number no double holds (nonzero below the smallest subnormal, or
+    above the largest double: an np.longdouble, a Fraction): its float (0 or
+    an infinity) with repr() its own value in decimal, so that the library
+    refuses the digits as the program refuses them ("'1e-4000' is too small in
+    magnitude"). float() made it 0 (refused as "0 is outside [1e-09, 1000]",
+    a value not given) or raised OverflowError (a Fraction: "cannot use")."""
+
+    def __new__(cls, f, text):
+        o = float.__new__(cls, f)
+        o.text = text
+        return o
+
+    def __repr__(self):
+        return self.text
+
+    __str__ = __repr__
+
+
+def _beyond(v):
+    """v (numbers.Real, not Integral) as a float, or a _Beyond when no double
+    holds it; None when it has no ratio (an odd subclass)."""
+    try:
+        f = float(v)
+    except OverflowError:
+        f = None
+    if f is not None and (f != 0 or v == 0) and (math.isfinite(f) or not _finite_real(v)):
+        return f
+    try:
+        num, den = v.as_integer_ratio()
+    except (AttributeError, TypeError, ValueError, OverflowError):
+        try:
+            num, den = v.numerator, v.denominator
+        except AttributeError:
+            return None
+    with decimal.localcontext() as ctx:
+        ctx.prec, ctx.Emax, ctx.Emin = 17, decimal.MAX_EMAX, decimal.MIN_EMIN
+        text = format((decimal.Decimal(num) / decimal.Decimal(den)).normalize(), "e")
+    return _Beyond(-math.inf if num < 0 else math.inf if f is None or not math.isfinite(f) else f, text)
+
+
+def _finite_real(v):
+    try:
+        return bool(np.isfinite(v))
+    except (TypeError, ValueError, OverflowError):
+        return True  # a Fraction: always finite
+
+
 def _scalar(v):
     """v as a plain Python bool, int or float when it is one number: a Python or
     numpy number (numbers.Real) or a 0-d array of one (a numpy reduction with
@@ -74,7 +123,7 @@ def _scalar(v):
         if isinstance(v, numbers.Integral):
             return int(v)
         if isinstance(v, numbers.Real):
-            return float(v)
+            return _beyond(v)
     except (TypeError, ValueError, OverflowError):  # a Fraction beyond a double, an odd subclass
         return None
     return None

@@ -1,8 +1,11 @@
 /*
  * gw_pool.c: the worker pool (gw_pool.h). Case k is taken by an atomic
  * fetch-and-add on a shared counter, so each k is handed out exactly once; a
- * mutex orders the bookkeeping (first failure, count of finished cases, the
- * progress call). No physics, no units: cases are counted.
+ * mutex orders the bookkeeping (the failure kept, count of finished cases,
+ * the progress call). The failure kept is the lowest case's: every case below
+ * a failed one was handed out before it and runs to its end, so the error a
+ * caller gets is the one --jobs 1 gives (it was the first in time: a study
+ * failing at N = 5 and 6 named either, by the threads' timing). No physics, no units: cases are counted.
  */
 #include <math.h>
 #include <pthread.h>
@@ -24,6 +27,7 @@ typedef struct pool {
     atomic_int stop;
     long done;
     int status;
+    long failed_k; /* the case whose failure is kept, -1: none (or a cancel) */
     gw_err err;
     pthread_mutex_t lock;
 } pool;
@@ -40,9 +44,10 @@ static void *worker(void *arg)
         gw_err err = {{0}};
         int rc = w->fn(w->ctx, k, &err);
         pthread_mutex_lock(&w->lock);
-        if (rc != GW_OK && w->status == GW_OK) {
+        if (rc != GW_OK && (w->status == GW_OK || (w->failed_k >= 0 && k < w->failed_k))) {
             w->status = rc;
             w->err = err;
+            w->failed_k = k;
         }
         if (rc == GW_OK) {
             w->done++;
@@ -218,6 +223,7 @@ int gw_cases_run(long n, int jobs, gw_case_fn fn, void *ctx, gw_progress_fn prog
     w.ctx = ctx;
     w.progress = progress;
     w.pctx = pctx;
+    w.failed_k = -1;
     atomic_init(&w.next, 0);
     atomic_init(&w.stop, 0);
     pthread_mutex_init(&w.lock, NULL);

@@ -26,8 +26,10 @@ typedef int (*gw_case_fn)(void *ctx, long k, gw_err *err);
  * order). Each case is run at most once, and every case is run when all
  * succeed. progress (may be NULL) is called after every successful case with
  * the number finished so far and n, one call at a time (under the pool's
- * lock), from any of the threads. Stops taking new cases at the first failure
- * (returns its status, message in err: later failures are dropped) or when
+ * lock), from any of the threads. Stops taking new cases at a failure, and
+ * returns the status and message of the lowest case that failed (every case
+ * below a failed one was handed out before it and runs to its end: the same
+ * failure as on one job, whatever the threads' timing), or when
  * progress returns non-zero (GW_ECANCELED, "canceled by the caller after D of
  * N cases"); cases under way finish first (their results stand, but progress
  * is not called for them). n <= 0: GW_OK at once. If no thread can be

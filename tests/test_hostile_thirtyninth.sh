@@ -29,6 +29,15 @@
 #    --out JSON identical (chain, drop, falcon, wavespeed, softwall,
 #    dispersion), --jobs 1 and 2 identical, F_max the same at any --dt-out,
 #    and refusals of this pass that held (nothing written).
+#  5 (the lead, from what the pass reported) A study's error named by the
+#    threads' timing: wavespeed --n 5:10 --vimp 0.3 --t-max 1e-4 fails at
+#    every N; --jobs 1 named N = 5, --jobs 2 or 0 N = 6 (the pool kept the
+#    first failure in time). gw_cases_run now keeps the lowest failing case's.
+#  6 (the lead) layer-stats' B.31 options on a table with a boundary crossing
+#    but no fit made (1 crossing for 2 free parameters: the stored
+#    layer_diagram_B_union): --gamma-deg 5, --delta-rm 3 or a --fit list
+#    changed no number and said nothing (exit 0, warnings []). A warning now
+#    names them and the fit's reason; without them, none.
 # Checks that fail on the code before: see docs/tests.md.
 # shellcheck source=refusal_lib.sh
 . "$2/tests/refusal_lib.sh"
@@ -196,5 +205,42 @@ refused "dispersion --column-n 5 --f0 5: no effect, refused" '^granwave dispersi
     dispersion --column-n 5 --f0 5 --out o
 refused "drop --n 3 --block --gap 1e-3: no effect, refused" '^granwave drop --gap: has no effect with block' \
     drop --n 3 --block --gap 1e-3 --out o
+
+# --- 5 a study's failure the same on any number of threads ---
+for j in 1 2 0 2 0; do
+    timeout -s KILL 60 "$GW" wavespeed --n 5:10 --vimp 0.3 --t-max 1e-4 --jobs $j --quiet >/dev/null 2>"fail$j.err"
+    rc=$?
+    [ $rc -eq 1 ] && [ "$(wc -l <"fail$j.err")" -eq 1 ] &&
+        grep -q "^granwave wavespeed: N = 5, v_imp = 0.3 m/s: chain: bead 1 still on the wall at t_max" "fail$j.err" &&
+        ok "wavespeed failing at every N, --jobs $j: exit 1, N = 5 named (the lowest case)" ||
+        ko "wavespeed failing at every N, --jobs $j: exit $rc: $(head -c 200 "fail$j.err")"
+done
+
+# --- 6 layer-stats' fit options where no fit could be made ---
+B="$2/data/measured/layer_diagram_B_union/results.csv"
+runs_json "layer-stats B_union" st0.json layer-stats "$B" &&
+    jq_py st0.json "d['warnings'] == [] and all(not x['fit_ok'] for x in d['diagrams'] if 'fit_ok' in x)" |
+    grep -q True && ok "layer-stats B_union: no fit made, no option given: no warning" ||
+    ko "layer-stats B_union: $(jq_py st0.json "d['warnings']" 2>&1 | head -c 300)"
+for o in "--gamma-deg 5" "--delta-rm 3" "--fit beta,a_over_b,offset,tan_gamma"; do
+    f=st$(echo "$o" | tr -dc 'a-z0-9').json name=${o%% *}
+    # shellcheck disable=SC2086
+    runs_json "layer-stats B_union $o" "$f" layer-stats "$B" $o &&
+        grep -q "^granwave layer-stats: warning: ${name#--}: has no effect on any number: no diagram's B.31 fit could be made (B.31 fit: 1 boundary point" "$tmp/stderr" &&
+        $PY - "$f" st0.json <<'PYEOF' && ok "layer-stats B_union $o: warned, in the JSON too, every number as without it" ||
+import json, sys
+a, b = (json.load(open(p)) for p in sys.argv[1:3])
+w = a.pop('warnings')
+b.pop('warnings')
+def nums(x):  # every number of the result, in order
+    if isinstance(x, dict):
+        return [v for k in sorted(x) if k not in ('command', 'settings', 'params') for v in nums(x[k])]
+    if isinstance(x, list):
+        return [v for e in x for v in nums(e)]
+    return [x] if isinstance(x, (int, float)) and not isinstance(x, bool) else []
+sys.exit(0 if len(w) == 1 and 'no effect on any number' in w[0] and json.dumps(nums(a)) == json.dumps(nums(b)) else 1)  # NaN as text
+PYEOF
+        ko "layer-stats B_union $o: not warned, or numbers moved: $(head -c 300 "$tmp/stderr")"
+done
 
 test_summary test_hostile_thirtyninth

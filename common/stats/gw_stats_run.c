@@ -402,10 +402,13 @@ static int warnings_make(gw_stats_analysis *A)
         gw_snprintf(given + strlen(given), sizeof given - strlen(given), "%sgamma-deg", *given ? ", " : "");
     if (!isnan(A->delta_rm))
         gw_snprintf(given + strlen(given), sizeof given - strlen(given), "%sdelta-rm", *given ? ", " : "");
-    int crossings = 0, built = 0;
+    int crossings = 0, built = 0, fitted = 0, failed = -1;
     for (int q = 0; q < A->ndia; q++) {
         crossings += A->dia[q].ok ? A->dia[q].d.ncross : 0;
         built += A->dia[q].ok;
+        fitted += A->dia[q].ok && A->dia[q].fit_ok;
+        if (failed < 0 && A->dia[q].ok && A->dia[q].d.ncross > 0 && !A->dia[q].fit_ok)
+            failed = q;
     }
     if (rc == GW_OK && *given && A->ndia > 0 && crossings == 0)
         rc = gw_warnings_add(&A->warnings, "%s: %s no effect: no diagram has a B.31 fit (%s%s)", given,
@@ -413,6 +416,13 @@ static int warnings_make(gw_stats_analysis *A)
                              built ? "no R_b/R_m column changes from bouncing to not along H: no boundary crossing "
                                      "to fit" : "no diagram could be built: ",
                              built ? "" : A->dia[0].reason);
+    /* crossings, but no diagram's fit made (fewer crossings than free
+     * parameters, a fit that did not converge): the options chose at most
+     * the failure's reason, and changed no number; exit 0 with no warning
+     * before (a 1-crossing table with --gamma-deg 5) */
+    else if (rc == GW_OK && *given && crossings > 0 && fitted == 0 && failed >= 0)
+        rc = gw_warnings_add(&A->warnings, "%s: %s no effect on any number: no diagram's B.31 fit could be made "
+                             "(%s)", given, strchr(given, ',') ? "have" : "has", A->dia[failed].fit_reason);
     return rc;
 }
 

@@ -499,7 +499,8 @@ int gw_layer_make_result_warnings(const gw_layer_make_result *r, double t_max, c
  * (window area), the area exact up to rounding (Green's theorem on the
  * union's boundary; before session 21 a 600 x 600 sampling grid, which
  * aliased on lattices). In [0, 1]; NaN when the window is empty (width or h
- * not positive and finite) or an allocation fails. */
+ * not positive and finite), the sample counts discs without its x, y or r,
+ * or an allocation fails. */
 double gw_layer_sample_porosity(const gw_layer_sample *s);
 
 /* --------------------------------------------------------------- impact ---- */

@@ -184,7 +184,8 @@ static int circle_arcs(const double *x, const double *y, const double *r, const 
 
 double gw_layer_sample_porosity(const gw_layer_sample *s)
 {
-    if (!s)
+    /* a sample counted without its arrays (filled by hand): NaN, not a NULL read */
+    if (!s || s->n < 0 || (s->n > 0 && (!s->x || !s->y || !s->r)))
         return NAN;
     double h = 0;
     for (int i = 0; i < s->n; i++)

@@ -428,6 +428,45 @@ static int stats_table_hand(void)
     return 0;
 }
 
+/* the table's accessors on tables filled by hand (the lead, from what the
+ * library pass reported): 1000 grid keys or params overran grid_name[32] and
+ * param_name[32] (a stack buffer overflow under the sanitizer), columns
+ * counted without their names and a row without its values: SIGSEGV */
+static int stats_table_accessors_hand(void)
+{
+    gw_stats_table t;
+    memset(&t, 0, sizeof t);
+    t.ngrid = 1000, t.nparams = 1000;
+    EXPECT(gw_stats_table_key(&t, "vi") == -1 && gw_stats_table_param(&t, "vi") == NULL);
+    memset(&t, 0, sizeof t);
+    t.ncols = 5; /* no col_name */
+    EXPECT(gw_stats_table_col(&t, "e_n") == -1);
+    memset(&t, 0, sizeof t);
+    t.nrows = 3, t.ngrid = 1;
+    t.grid_name[0] = "vi"; /* no grid_num */
+    EXPECT(gw_stats_table_value(&t, 1, "vi", 7.5) == 7.5);
+    /* control: the same table with its values reads them */
+    double num[3] = {10, 20, 30};
+    t.grid_num = num;
+    EXPECT(gw_stats_table_key(&t, "vi") == 0 && gw_stats_table_value(&t, 1, "vi", 7.5) == 20);
+    return 0;
+}
+
+/* gw_layer_sample_porosity on a sample counting discs without their arrays
+ * (the lead, from the library pass's report): a NULL read (SIGSEGV) */
+static int porosity_hand(void)
+{
+    gw_layer_sample s = three_discs();
+    const double p = gw_layer_sample_porosity(&s);
+    EXPECT(p > 0 && p < 1); /* control */
+    s.x = NULL;
+    EXPECT(isnan(gw_layer_sample_porosity(&s)));
+    s = three_discs();
+    s.r = NULL;
+    EXPECT(isnan(gw_layer_sample_porosity(&s)));
+    return 0;
+}
+
 static int check_positive_null_name(void)
 {
     gw_err e = {{0}};
@@ -456,6 +495,8 @@ int main(void)
         {"gw_layer_impact_result_warnings: texts without their NUL", impact_warning_texts},
         {"gw_chain_unfinished/softwall_warnings: counts beyond the total", warning_counts},
         {"gw_stats_groups_make: tables filled by hand", stats_table_hand},
+        {"gw_stats_table_key/param/col/value: tables filled by hand", stats_table_accessors_hand},
+        {"gw_layer_sample_porosity: a sample without its arrays", porosity_hand},
         {"gw_check_positive: a NULL name", check_positive_null_name},
     };
     for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++)

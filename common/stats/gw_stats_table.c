@@ -607,32 +607,36 @@ int gw_stats_table_read(const char *path, gw_stats_table *t, gw_err *err)
     return rc;
 }
 
+/* The accessors below take tables filled by hand too: counts beyond the
+ * arrays (ngrid or nparams above GW_STATS_MAX_KEYS overran them: a stack
+ * buffer overflow), columns counted without their names and rows without
+ * their values (SIGSEGV) find nothing, as a name the table has not. */
 int gw_stats_table_col(const gw_stats_table *t, const char *name)
 {
-    if (!t || !name)
+    if (!t || !name || !t->col_name)
         return -1;
     for (int i = 0; i < t->ncols; i++)
-        if (strcmp(t->col_name[i], name) == 0)
+        if (t->col_name[i] && strcmp(t->col_name[i], name) == 0)
             return i;
     return -1;
 }
 
 int gw_stats_table_key(const gw_stats_table *t, const char *name)
 {
-    if (!t || !name)
+    if (!t || !name || t->ngrid > GW_STATS_MAX_KEYS)
         return -1;
     for (int i = 0; i < t->ngrid; i++)
-        if (gw_stats_same_key(t->grid_name[i], name))
+        if (t->grid_name[i] && gw_stats_same_key(t->grid_name[i], name))
             return i;
     return -1;
 }
 
 const char *gw_stats_table_param(const gw_stats_table *t, const char *name)
 {
-    if (!t || !name)
+    if (!t || !name || t->nparams > GW_STATS_MAX_KEYS)
         return NULL;
     for (int i = 0; i < t->nparams; i++)
-        if (gw_stats_same_key(t->param_name[i], name))
+        if (t->param_name[i] && gw_stats_same_key(t->param_name[i], name))
             return t->param_value[i];
     return NULL;
 }
@@ -643,7 +647,7 @@ double gw_stats_table_value(const gw_stats_table *t, long i, const char *name, d
         return dflt;
     int k = gw_stats_table_key(t, name);
     if (k >= 0)
-        return t->grid_num[i * t->ngrid + k];
+        return t->grid_num ? t->grid_num[i * t->ngrid + k] : dflt;
     const char *s = gw_stats_table_param(t, name);
     double v;
     if (s && cell_number(s, &v))

@@ -38,6 +38,9 @@
 #    layer_diagram_B_union): --gamma-deg 5, --delta-rm 3 or a --fit list
 #    changed no number and said nothing (exit 0, warnings []). A warning now
 #    names them and the fit's reason; without them, none.
+#  7 (the lead) A table's first line counting past a long ("99999999999999999999
+#    cases") was refused later as "of the sweep's 9223372036854775807 cases":
+#    a number the file does not hold. Refused now at that line, as given.
 # Checks that fail on the code before: see docs/tests.md.
 # shellcheck source=refusal_lib.sh
 . "$2/tests/refusal_lib.sh"
@@ -242,5 +245,11 @@ sys.exit(0 if len(w) == 1 and 'no effect on any number' in w[0] and json.dumps(n
 PYEOF
         ko "layer-stats B_union $o: not warned, or numbers moved: $(head -c 300 "$tmp/stderr")"
 done
+
+# --- 7 a table's counts past a long, named as given ---
+sed '1s/ of [0-9]* cases$/ of 99999999999999999999 cases/' "$B" >big.csv
+refused "layer-stats: a first line counting 99999999999999999999 cases, named as given" \
+    "^granwave layer-stats: big.csv:1: the sweep's first line counts '70 of 99999999999999999999 cases', beyond any sweep's" \
+    layer-stats big.csv --out o
 
 test_summary test_hostile_thirtyninth

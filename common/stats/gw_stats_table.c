@@ -12,6 +12,7 @@
  */
 #define _POSIX_C_SOURCE 200809L
 #include <errno.h>
+#include <limits.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -452,6 +453,11 @@ static int sweep_line(gw_stats_table *t, const char *line, long ln, gw_err *err)
         total < 1 || n > total)
         return gw_err_set(err, GW_EFORMAT, "%s:%ld: the sweep's first line does not end 'N of C cases' with "
                           "0 <= N <= C (an edited header)", t->path, ln);
+    /* a count past a long reads as LONG_MAX (glibc's sscanf): the refusals
+     * after it named 9223372036854775807 for "99999999999999999999 cases" */
+    if (n == LONG_MAX || total == LONG_MAX)
+        return gw_err_set(err, GW_EFORMAT, "%s:%ld: the sweep's first line counts '%.40s', beyond any sweep's (an "
+                          "edited header)", t->path, ln, c + 1 + strspn(c + 1, " "));
     t->sweep_rows = n;
     t->sweep_cases = total;
     return GW_OK;

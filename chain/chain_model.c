@@ -469,10 +469,17 @@ int chain_blown_up(const gw_chain *c, const double *y, double energy_error, cons
         gw_snprintf(what, sizeof what, "relative energy error %.3g", energy_error);
     if (!what[0])
         return GW_OK;
-    /* the advice is the backend's: an adaptive one is not helped by dt, nor by "use cvode" */
+    /* the advice is the backend's: an adaptive one is not helped by dt, nor by
+     * "use cvode". A viscoelastic wall's arms are time scales too, which rk4's
+     * default step does not follow (gw_chain_step_scale: the contacts only):
+     * arms of 1e-8 to 1e-6 s blew up with advice that did not name them */
+    char arms[96] = "";
+    if (c->p.wall.loss > 0)
+        gw_snprintf(arms, sizeof arms, "the wall's Maxwell arms (the fastest %.3g s), ",
+                    c->p.wall.tau_min > 0 ? c->p.wall.tau_min : 1e-5);
     return gw_err_set(err, GW_ESOLVER, "%s: the solution blew up at t = %.9g s (%s): the step is too long for the "
-                      "model's fastest time scale (a contact, the sensor body, damping or friction); %s", who, t,
-                      what, type == gw_solver_rk4 ? "lower dt (or dt-max), or use cvode" : "lower dt-max, rtol or atol");
+                      "model's fastest time scale (a contact, the sensor body, %sdamping or friction); %s", who, t,
+                      what, arms, type == gw_solver_rk4 ? "lower dt (or dt-max), or use cvode" : "lower dt-max, rtol or atol");
 }
 
 double chain_contact_tau_min(const gw_chain_params *p, double v)

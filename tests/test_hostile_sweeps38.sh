@@ -39,15 +39,6 @@ tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 mpi_setup
 chain_sweep8_reference
 
-# each case of FILE's rows at most once, their count printed
-rows_once() {
-    local n u
-    n=$(journal_rows "$1")
-    u=$(grep -v '^#' "$1" 2>/dev/null | cut -d, -f1 | sort -u | wc -l)
-    echo "$n"
-    [ "$n" -eq "$u" ]
-}
-
 # replaced WHAT DIR SWAP CMD...: CMD (a sweep into DIR) started, SWAP (a
 # function of DIR) run once its journal holds a row; checks what it left
 replaced() {

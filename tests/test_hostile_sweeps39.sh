@@ -45,15 +45,6 @@ chain_sweep8_reference
 printf '[sweep]\nmodel = chain\n[grid]\nn = 60, 70, 80, 90\nvimp = 0.1, 0.2, 0.3, 0.4\n[params]\nsolver = rk4\n' >"$tmp/b.ini"
 "$GW" sweep "$tmp/b.ini" --out "$tmp/refb" --quiet --jobs 1 || ko "reference sweep of 16 cases"
 
-# each case of FILE's rows at most once, their count printed
-rows_once() {
-    local n u
-    n=$(journal_rows "$1")
-    u=$(grep -v '^#' "$1" 2>/dev/null | cut -d, -f1 | sort -u | wc -l)
-    echo "$n"
-    [ "$n" -eq "$u" ]
-}
-
 # written WHAT DIR TOTAL WARN DISTURB CMD...: CMD (a sweep of TOTAL cases into
 # DIR) started, DISTURB (a function of DIR that leaves what it wrote into the
 # journal in DIR.left) run once its journal holds a row; checks what it left:

@@ -53,6 +53,15 @@ journal_rows() {
     echo "${n:-0}"
 }
 
+# rows_once FILE: each case of FILE's rows at most once, their count printed
+rows_once() {
+    local n u
+    n=$(journal_rows "$1")
+    u=$(grep -v '^#' "$1" 2>/dev/null | cut -d, -f1 | sort -u | wc -l)
+    echo "$n"
+    [ "$n" -eq "$u" ]
+}
+
 wait_rows() {
     local end=$((SECONDS + ${3:-120}))
     while [ "$(journal_rows "$1")" -lt "$2" ]; do

@@ -416,14 +416,15 @@ int gw_chain_drop_study_run(const gw_chain_drop_setup *s, gw_progress_fn progres
         rc = gw_err_set(err, rc, "drop: out of memory");
     /* a threshold above every peak: f_max, t_fmax, the peaks and the impacts
      * are empty (null), which said nothing of why (drop --peak-threshold 1e9:
-     * f_max null, warnings [], a first collision of 72.5 N) */
-    if (rc == GW_OK && out->r.n_peaks == 0) {
-        char first[96] = "";
-        if (isfinite(out->r.first.f_max))
-            gw_snprintf(first, sizeof first, " (the first collision's F_max is %.6g N)", out->r.first.f_max);
-        if ((rc = gw_warnings_add(&out->warnings, "no wall-force peak reached --peak-threshold = %g N%s: f_max, "
-                                  "t_fmax, the peaks and the impacts are empty; lower --peak-threshold",
-                                  out->peak_threshold, first)) != GW_OK)
+     * f_max null, warnings [], a first collision of 72.5 N). Only where the
+     * first collision stays below it: one cut by t-max before its force fell
+     * has no peak at any threshold, and its own warning says why (this one
+     * said "lower --peak-threshold" at 0.7 N of a first collision of 48 N) */
+    if (rc == GW_OK && out->r.n_peaks == 0 && !out->r.first_cut && isfinite(out->r.first.f_max) &&
+        out->r.first.f_max < out->peak_threshold) {
+        if ((rc = gw_warnings_add(&out->warnings, "no wall-force peak reached --peak-threshold = %g N (the first "
+                                  "collision's F_max is %.6g N): f_max, t_fmax, the peaks and the impacts are empty; "
+                                  "lower --peak-threshold", out->peak_threshold, out->r.first.f_max)) != GW_OK)
             rc = gw_err_set(err, rc, "drop: out of memory");
     }
     gw_chain_resolved_free(&res);

@@ -46,17 +46,6 @@
 #include "granwave.h"
 #include "test_child.h"
 
-static int nfail, ncases;
-
-
-/* body in a child (120 s: the sanitizer build is ~10x slower); it passes when
- * it returns 0 and prints nothing (the library must print nothing; the body
- * prints only why it failed). */
-static void in_child(const char *label, case_fn body)
-{
-    child_case(label, body, &nfail, &ncases);
-}
-
 static int exists(const char *path)
 {
     struct stat st;
@@ -731,10 +720,7 @@ static int x_check_large_sample(void)
 
 int main(void)
 {
-    static const struct {
-        const char *label;
-        case_fn fn;
-    } cases[] = {
+    static const child_row cases[] = {
         {"gw_parse_long/int_range: NULL result", parse_long_null_out},
         {"gw_parse_long/int_range: control", parse_long_control},
         {"gw_fnv1a64_parse: NULL, 16 digits without a NUL", hash_parse_null},
@@ -769,8 +755,5 @@ int main(void)
         {"gw_stats_write_files: a NULL analysis", stats_write_null},
         {"layer sweep check: x = 0, 1e-300 on a 100001-disc sample", x_check_large_sample},
     };
-    for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++)
-        in_child(cases[k].label, cases[k].fn);
-    printf("%d of %d cases failed\n", nfail, ncases);
-    return nfail ? 1 : 0;
+    return child_cases_run(cases, sizeof cases / sizeof cases[0]);
 }

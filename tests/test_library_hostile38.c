@@ -61,12 +61,6 @@
 #include "granwave.h"
 #include "test_child.h"
 
-static int nfail, ncases;
-
-static void in_child(const char *label, case_fn body)
-{
-    child_case(label, body, &nfail, &ncases);
-}
 
 /* ---- the sweep's journal rows ---- */
 
@@ -532,10 +526,7 @@ static int thornton_invalid(void)
 
 int main(void)
 {
-    static const struct {
-        const char *label;
-        case_fn fn;
-    } cases[] = {
+    static const child_row cases[] = {
         {"gw_sweep_format_row: a case the config has not, ncol < 0", sweep_row_case_range},
         {"gw_json_bools: NULL values", json_bools_null},
         {"gw_path_join: NULL buf, dir, name", path_join_null},
@@ -553,8 +544,5 @@ int main(void)
         {"gw_param_copy: onto itself, a size short of the table", param_copy_onto_itself},
         {"gw_thornton_init: a law from values no wall has", thornton_invalid},
     };
-    for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++)
-        in_child(cases[k].label, cases[k].fn);
-    printf("%d of %d cases failed\n", nfail, ncases);
-    return nfail ? 1 : 0;
+    return child_cases_run(cases, sizeof cases / sizeof cases[0]);
 }

@@ -54,12 +54,6 @@
 #include "granwave.h"
 #include "test_child.h"
 
-static int nfail, ncases;
-
-static void in_child(const char *label, case_fn body)
-{
-    child_case(label, body, &nfail, &ncases);
-}
 
 /* ---- sweep configs filled by hand ---- */
 
@@ -478,10 +472,7 @@ static int check_positive_null_name(void)
 
 int main(void)
 {
-    static const struct {
-        const char *label;
-        case_fn fn;
-    } cases[] = {
+    static const child_row cases[] = {
         {"gw_sweep_case: a config of a key of no values, too many keys, a NULL array", sweep_case_shape},
         {"gw_sweep_run/size/memory checks: a case count not the grid's", sweep_run_ncases},
         {"gw_sweep_inputs_check: inputs counted without their array", sweep_inputs_without_array},
@@ -499,8 +490,5 @@ int main(void)
         {"gw_layer_sample_porosity: a sample without its arrays", porosity_hand},
         {"gw_check_positive: a NULL name", check_positive_null_name},
     };
-    for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++)
-        in_child(cases[k].label, cases[k].fn);
-    printf("%d of %d cases failed\n", nfail, ncases);
-    return nfail ? 1 : 0;
+    return child_cases_run(cases, sizeof cases / sizeof cases[0]);
 }

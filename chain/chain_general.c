@@ -315,18 +315,8 @@ static double wall_stored_energy(const gw_chain *c, const double *y)
 
 void chain_general_energy(const gw_chain *c, const double *y, gw_chain_energy *e)
 {
-    const int n = c->n;
-    double ke = 0, el = 0, pg = 0, dis = c->i_diss >= 0 ? y[c->i_diss] : 0.0;
-    for (int i = 0; i < n; i++) {
-        double v = y[2 * i + 1];
-        ke += 0.5 * c->m[i] * v * v;
-        pg -= c->m[i] * c->p.gravity * y[2 * i];
-        if (i < n - 1) {
-            double d = y[2 * i + 2] - y[2 * i];
-            if (d > 0)
-                el += 0.4 * c->kc[i] * d * d * sqrt(d);
-        }
-    }
+    double ke, el, pg, dis = c->i_diss >= 0 ? y[c->i_diss] : 0.0;
+    chain_beads_energy(c, y, &ke, &el, &pg);
     if (c->i_work >= 0) {
         double u = wall_stored_energy(c, y);
         el += u;

@@ -782,6 +782,21 @@ double gw_chain_wall_force(const gw_chain *c, const double *y)
     return damped_force(c, c->kwall, c->gwall, x, y[1], &pd);
 }
 
+void chain_beads_energy(const gw_chain *c, const double *y, double *ke, double *el, double *pg)
+{
+    *ke = *el = *pg = 0;
+    for (int i = 0; i < c->n; i++) {
+        double v = y[2 * i + 1];
+        *ke += 0.5 * c->m[i] * v * v;
+        *pg -= c->m[i] * c->p.gravity * y[2 * i];
+        if (i < c->n - 1) {
+            double d = y[2 * i + 2] - y[2 * i];
+            if (d > 0)
+                *el += 0.4 * c->kc[i] * d * d * sqrt(d);
+        }
+    }
+}
+
 void gw_chain_energy_of(const gw_chain *c, const double *y, gw_chain_energy *e)
 {
     if (!e)
@@ -795,17 +810,8 @@ void gw_chain_energy_of(const gw_chain *c, const double *y, gw_chain_energy *e)
         return;
     }
     const int n = c->n;
-    double ke = 0, el = 0, pg = 0;
-    for (int i = 0; i < n; i++) {
-        double v = y[2 * i + 1];
-        ke += 0.5 * c->m[i] * v * v;
-        pg -= c->m[i] * c->p.gravity * y[2 * i];
-        if (i < n - 1) {
-            double d = y[2 * i + 2] - y[2 * i];
-            if (d > 0)
-                el += 0.4 * c->kc[i] * d * d * sqrt(d);
-        }
-    }
+    double ke, el, pg;
+    chain_beads_energy(c, y, &ke, &el, &pg);
     if (y[0] > 0)
         el += 0.4 * c->kwall * y[0] * y[0] * sqrt(y[0]);
     e->kinetic = ke;

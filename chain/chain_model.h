@@ -84,6 +84,9 @@ double chain_force_rate(const gw_chain *c, double t, const double *y);
  * smooth there as on either side. See chain_model.c. */
 int chain_roots_need_reset(const gw_chain *c, double t, const double *y, const int *roots);
 void chain_general_energy(const gw_chain *c, const double *y, gw_chain_energy *e);
+/* The beads' own energies at state Y: kinetic, Hertz elastic of the bead
+ * contacts, gravitational (the walls and sensor are the caller's). */
+void chain_beads_energy(const gw_chain *c, const double *y, double *ke, double *el, double *pg);
 
 /* The decay rates c/m, 1/s, of the column's linear drags, each on the body it
  * slows (r[CHAIN_DRAG_SENSOR]: the sensor body's damping c_s/M; the guide's

@@ -325,24 +325,39 @@ static void spectrum_body(FILE *fp, const void *ctx)
         fprintf(fp, "%.8g,%.6g\n", sp->freq[l], sp->power[l]);
 }
 
+/* The study the flags set (gw_cli_study_setup) run with the progress line:
+ * *OUT filled (freed by gw_chain_dispersion_outcome_free whatever the
+ * status), a refusal named in ERR ("NAME:" -> "--NAME:",
+ * gw_cli_study_error); GW_ENOMEM with ERR empty when no setup could be made. */
+static int disp_study_run(const disp_cli *c, const gw_opt *opts, int argc, char **argv,
+                          gw_chain_dispersion_outcome *out, gw_err *err)
+{
+    memset(out, 0, sizeof *out);
+    err->msg[0] = '\0';
+    gw_chain_dispersion_setup ds;
+    if (gw_chain_dispersion_setup_init(&ds) != GW_OK) {
+        gw_chain_dispersion_setup_clear(&ds);
+        return GW_ENOMEM;
+    }
+    int rc = gw_cli_study_setup(gw_chain_dispersion_setup_params(), &ds, opts, argc, argv, "dispersion", err);
+    disp_progress prog;
+    disp_progress_start(&prog, c);
+    if (rc == GW_OK && (rc = gw_chain_dispersion_run_progress(&ds, c->quiet ? NULL : disp_progress_report, &prog,
+                                                              out, err)) != GW_OK)
+        gw_cli_study_error(gw_chain_dispersion_setup_params(), "dispersion", rc, err);
+    gw_chain_dispersion_setup_clear(&ds);
+    return rc;
+}
+
 /* --column-n: one column collision, then the wall-force spectrum over the
  * contact [0, tau_N] against 1/P from the maxima of the wall force. */
 static int disp_column(const disp_cli *c, const gw_opt *opts, int argc, char **argv)
 {
     gw_err err = {{0}};
-    gw_chain_dispersion_setup ds;
-    if (gw_chain_dispersion_setup_init(&ds) != GW_OK) {
-        gw_chain_dispersion_setup_clear(&ds);
-        return gw_cli_nomem("dispersion");
-    }
     gw_chain_dispersion_outcome out;
-    memset(&out, 0, sizeof out);
-    int rc = gw_cli_study_setup(gw_chain_dispersion_setup_params(), &ds, opts, argc, argv, "dispersion", &err);
-    disp_progress prog;
-    disp_progress_start(&prog, c);
-    if (rc == GW_OK && (rc = gw_chain_dispersion_run_progress(&ds, c->quiet ? NULL : disp_progress_report, &prog,
-                                                              &out, &err)) != GW_OK)
-        gw_cli_study_error(gw_chain_dispersion_setup_params(), "dispersion", rc, &err);
+    int rc = disp_study_run(c, opts, argc, argv, &out, &err);
+    if (rc == GW_ENOMEM && !err.msg[0])
+        return gw_cli_nomem("dispersion");
     int code = 0;
     gw_chain_params p = gw_chain_params_default();
     p.n = out.column_n;
@@ -429,7 +444,6 @@ static int disp_column(const disp_cli *c, const gw_opt *opts, int argc, char **a
         cJSON_Delete(js);
     }
     gw_chain_dispersion_outcome_free(&out);
-    gw_chain_dispersion_setup_clear(&ds);
     return code;
 }
 
@@ -527,20 +541,10 @@ int gw_cmd_dispersion(int argc, char **argv)
             disp_export_wisdom(c.wisdom);
         return code;
     }
-    gw_chain_dispersion_setup ds;
-    if (gw_chain_dispersion_setup_init(&ds) != GW_OK) {
-        gw_chain_dispersion_setup_clear(&ds);
-        return gw_cli_nomem("dispersion");
-    }
     gw_chain_dispersion_outcome out;
-    memset(&out, 0, sizeof out);
-    int rc = gw_cli_study_setup(gw_chain_dispersion_setup_params(), &ds, opts, argc, argv, "dispersion", &err);
-    disp_progress prog;
-    disp_progress_start(&prog, &c);
-    if (rc == GW_OK && (rc = gw_chain_dispersion_run_progress(&ds, c.quiet ? NULL : disp_progress_report, &prog,
-                                                              &out, &err)) != GW_OK)
-        gw_cli_study_error(gw_chain_dispersion_setup_params(), "dispersion", rc, &err); /* "NAME:" -> "--NAME:" */
-    gw_chain_dispersion_setup_clear(&ds);
+    int rc = disp_study_run(&c, opts, argc, argv, &out, &err);
+    if (rc == GW_ENOMEM && !err.msg[0])
+        return gw_cli_nomem("dispersion");
     const gw_chain_disp_result r = out.r;
     double wall_ms = out.wall_time_ms;
     int code = 0;

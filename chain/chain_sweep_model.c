@@ -5,6 +5,7 @@
  * gw_param_set and resolved by gw_chain_setup_resolve as the command's are; no
  * command line is built. The row holds the collision's observables (SI units).
  */
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -128,6 +129,26 @@ static int run(int nk, const char *const *names, const char *const *values, doub
 {
     return gw_chain_sweep_run_part(nk, names, values, out, read_hash, NULL, NULL, err);
 }
+
+/* A case's weight before it runs: its column's as a study plans it
+ * (chain_watch_weight); NaN for a case its checks refuse. */
+static double weigh(void **memo, int nk, const char *const *names, const char *const *values)
+{
+    (void)memo;
+    gw_chain_setup s;
+    gw_err e = {{0}};
+    double w = NAN;
+    if (prepare(&s, nk, names, values, &e) == GW_OK) {
+        gw_chain_resolved r;
+        if (gw_chain_setup_resolve(&s, &r, &e) == GW_OK)
+            w = chain_watch_weight(&r.params, &r.run);
+        gw_chain_resolved_free(&r);
+    }
+    gw_chain_setup_clear(&s);
+    return w;
+}
+
+const gw_sweep_weigh gw_chain_sweep_weigh = {weigh, NULL};
 
 const gw_sweep_model gw_chain_sweep_model = {"chain", (int)(sizeof columns / sizeof columns[0]), columns,
                                              has_key, run, check, NULL /* memory: not estimated */,

@@ -117,12 +117,13 @@ static void case_part(void *pctx, double x)
         atomic_store_explicit(&c->x_micro, (long)(x * 1e6), memory_order_relaxed);
 }
 
-/* A free slot for a case starting (NULL: none, or no slots). */
-static case_slot *slot_take(const sweep_run *s)
+/* A free slot for case k of todo starting (NULL: none, or no slots). */
+static case_slot *slot_take(const sweep_run *s, long k)
 {
     for (long i = 0; i < s->nslots; i++)
         if (!atomic_exchange(&s->slots[i].busy, 1)) {
             atomic_store(&s->slots[i].x_micro, -1);
+            atomic_store(&s->slots[i].i, k);
             return &s->slots[i];
         }
     return NULL;
@@ -133,7 +134,8 @@ static case_slot *slot_take(const sweep_run *s)
  * work, the cases left scheduled over the pool's threads as it hands them
  * out, threads beyond the CPUs sharing them, so the last cases, run on fewer
  * threads, count at their own pace; on one thread the share of the work).
- * The cases weigh alike: the cases ended count whole, and those under way by
+ * The cases weigh what their model expects of them (s->w, weigh_cases; alike
+ * without): the cases ended count whole, and those under way by
  * their parts, each over the part the cases ended reached at their end (their
  * typical end: an impact ends at T_f, long before its t-max; 1 before any
  * ended); one near or past that end is expected to go on a tenth longer than
@@ -345,11 +347,10 @@ static int pool_case(void *ctx, long i, gw_err *err)
     char *row = malloc(ROW_MAX);
     if (!row)
         return gw_err_set(err, GW_ENOMEM, "case %ld: out of memory", s->todo[i]);
-    case_slot *slot = slot_take(s);
+    case_slot *slot = slot_take(s, i);
     const long under_way = atomic_fetch_add(&s->running, 1) + 1;
     if (slot) { /* the threads at work since the last line: the time elapsed (sweep_part) */
         pthread_mutex_lock(&s->lock);
-        atomic_store(&slot->i, i);
         if (i + 1 > s->next_i)
             s->next_i = i + 1;
         gw_pool_eta_begun(&s->eta, (int)under_way);

@@ -13,7 +13,7 @@
 # way) says under 90 % of the work (about 20 to 60 % now); under mpirun -np 2
 # (where installed; not in a sanitizer build) the first line with 25 cases
 # ended gives a time left above a quarter of the time elapsed (0.04 before).
-# The table is the same either way. About 6 s; 2 of its 3 checks fail on the
+# The table is the same either way. About 6 s (15 s on a loaded machine); 2 of its 3 checks fail on the
 # code before (1 of 1 without mpirun).
 # shellcheck source=tests/test_lib.sh
 . "$(dirname "${BASH_SOURCE[0]}")/test_lib.sh"

@@ -94,7 +94,8 @@ typedef struct sweep_run {
     double *wrun;
     /* MPI: rank r's case (its place in todo, -1: none) since rank_t0[r] (ms);
      * the time the cases ended took over their weight (the pace a case under
-     * way is taken to go at); the schedule over the ranks (mpi_eta 1) */
+     * way is taken to go at); the schedule over the ranks in use (mpi_eta:
+     * the ranks, 0 without it) */
     long *rank_i;
     double *rank_t0;
     double pace_ms, pace_w;

@@ -21,12 +21,18 @@
  * alone), 7 on 3 threads on 2 CPUs (three threads sharing two CPUs, then one
  * case alone at a whole CPU's pace), 41 on 2 threads, 40 on 4 threads on 2
  * CPUs; on one thread, where the part is the share of the work, a control.
- * The sweep weighs its cases alike: of cases of unequal cost it knows only
- * their count (a chain sweep of N = 100..400 by 50, its cost as N^2, in the
- * grid's order on 2 threads, reads 0.21 to 0.47 of the true time left: the
- * short cases first), so the cases here are alike. And the schedule's steps:
- * 1000 cases given to 3 threads at once as one at a time, 3 threads sharing
- * 2 CPUs.
+ * Cases of unequal cost counted alike, by their count (a chain sweep of
+ * N = 100..400 by 50, its cost as N^2, in the grid's order on 2 threads,
+ * read 0.21 to 0.47 of the true time left: the short cases first), so the
+ * sweep now weighs each case before it runs (gw_pool_eta_weigh, its model's
+ * expected cost) and counts the work in weight (gw_pool_eta_part_weighed):
+ * chain-like sweeps (cost N^2) in either order on 1 and 2 threads, 25 short
+ * cases then a long one, cases of costs 1 to 9 on 3 threads on 2 CPUs, 6000
+ * cases (the first filled level) with a long last one, the weights the costs
+ * in another unit; each within 10 % (2 % on one thread). A case that ends
+ * within a step hands the rest of the step to the next case. And the
+ * schedule's steps: 1000 cases given to 3 threads at once as one at a time,
+ * 3 threads sharing 2 CPUs.
  */
 #include <math.h>
 #include <stdio.h>

@@ -46,7 +46,13 @@ static int cmd_sweep(int argc, char **argv)
         gw_layer_sweep_run_part,
 #endif
     };
-    return gw_cmd_sweep(argc, argv, models, parts, (int)(sizeof models / sizeof models[0]));
+    const gw_sweep_weigh *const weighs[] = {
+        &gw_chain_sweep_weigh,
+#if GW_HAVE_LAYER && defined(GW_LAYER_SWEEP_MODEL)
+        &gw_layer_sweep_weigh,
+#endif
+    };
+    return gw_cmd_sweep(argc, argv, models, parts, weighs, (int)(sizeof models / sizeof models[0]));
 }
 
 typedef struct command {

@@ -24,6 +24,7 @@
 
 #include "gw_cli.h"
 #include "gw_pool_impl.h"
+#include "gw_sweep_impl.h"
 #include "sweep_cmd.h"
 #if GW_HAVE_MPI
 #include <mpi.h>
@@ -82,6 +83,23 @@ typedef struct sweep_run {
      * share done of each case under way, scratch for it */
     gw_pool_eta eta;
     double *share;
+    /* The cases' weights (gw_sweep_weigh: each case's cost as its model
+     * expects it, w[i] of todo[i]; NULL: alike), the weight of the cases
+     * ended, the first case not yet begun (threads: the pool hands them out
+     * in order), and the weight of each case under way (scratch) */
+    const gw_sweep_weigh *weigh;
+    double *w;
+    double w_ended;
+    long next_i;
+    double *wrun;
+    /* MPI: rank r's case (its place in todo, -1: none) since rank_t0[r] (ms);
+     * the time the cases ended took over their weight (the pace a case under
+     * way is taken to go at); the schedule over the ranks in use (mpi_eta:
+     * the ranks, 0 without it) */
+    long *rank_i;
+    double *rank_t0;
+    double pace_ms, pace_w;
+    int mpi_eta;
 } sweep_run;
 
 /* A case under way: its part (gw_sweep_part_fn's x, in millionths; -1 none
@@ -90,6 +108,7 @@ typedef struct sweep_run {
 typedef struct case_slot {
     atomic_int busy;
     atomic_long x_micro;
+    atomic_long i; /* the case's place in todo (its weight) */
 } case_slot;
 
 static void case_part(void *pctx, double x)
@@ -99,12 +118,13 @@ static void case_part(void *pctx, double x)
         atomic_store_explicit(&c->x_micro, (long)(x * 1e6), memory_order_relaxed);
 }
 
-/* A free slot for a case starting (NULL: none, or no slots). */
-static case_slot *slot_take(const sweep_run *s)
+/* A free slot for case k of todo starting (NULL: none, or no slots). */
+static case_slot *slot_take(const sweep_run *s, long k)
 {
     for (long i = 0; i < s->nslots; i++)
         if (!atomic_exchange(&s->slots[i].busy, 1)) {
             atomic_store(&s->slots[i].x_micro, -1);
+            atomic_store(&s->slots[i].i, k);
             return &s->slots[i];
         }
     return NULL;
@@ -115,7 +135,8 @@ static case_slot *slot_take(const sweep_run *s)
  * work, the cases left scheduled over the pool's threads as it hands them
  * out, threads beyond the CPUs sharing them, so the last cases, run on fewer
  * threads, count at their own pace; on one thread the share of the work).
- * The cases weigh alike: the cases ended count whole, and those under way by
+ * The cases weigh what their model expects of them (s->w, weigh_cases; alike
+ * without): the cases ended count whole, and those under way by
  * their parts, each over the part the cases ended reached at their end (their
  * typical end: an impact ends at T_f, long before its t-max; 1 before any
  * ended); one near or past that end is expected to go on a tenth longer than
@@ -129,11 +150,39 @@ static double sweep_part(sweep_run *s, long done)
     int nrun = 0;
     for (long i = 0; i < s->nslots; i++) {
         const long x = atomic_load_explicit(&s->slots[i].x_micro, memory_order_relaxed);
-        if (atomic_load(&s->slots[i].busy))
+        if (atomic_load(&s->slots[i].busy)) {
+            s->wrun[nrun] = gw_pool_eta_weight(&s->eta, atomic_load(&s->slots[i].i));
             s->share[nrun++] = x > 0 ? 1e-6 * (double)x / fmax(end, 1.1e-6 * (double)x) : 0;
+        }
     }
+    /* cases of unequal cost: counted by their weights (gw_pool_eta_weigh) */
+    if (s->eta.cum)
+        return gw_pool_eta_part_weighed(&s->eta, s->w_ended, s->wrun, s->share, nrun, s->next_i);
     return gw_pool_eta_part(&s->eta, done, s->share, nrun, s->ntodo - done - nrun);
 }
+
+#if GW_HAVE_MPI
+/* The part under MPI (rank 0 hands out the cases one at a time, in order):
+ * as sweep_part, scheduled over the ranks that run cases, but a case under
+ * way is not seen inside: its share is the time it has run over the time
+ * its weight takes at the pace of the cases ended (their time over their
+ * weight; 0 before any), expected to go on a tenth longer than it has once
+ * past it. The cases alike (no weights) weigh 1 each. Caller is the master. */
+static double mpi_part(sweep_run *s, int size)
+{
+    const double now = gw_clock_ms(), pace = s->pace_w > 0 ? s->pace_ms / s->pace_w : 0;
+    int nrun = 0;
+    for (int r = 1; r < size && nrun < s->eta.threads; r++) {
+        if (s->rank_i[r] < 0)
+            continue;
+        const double wr = gw_pool_eta_weight(&s->eta, s->rank_i[r]);
+        const double x = pace > 0 ? (now - s->rank_t0[r]) / (pace * wr) : 0;
+        s->wrun[nrun] = wr;
+        s->share[nrun++] = x / fmax(1.0, 1.1 * x);
+    }
+    return gw_pool_eta_part_weighed(&s->eta, s->w_ended, s->wrun, s->share, nrun, s->next_i);
+}
+#endif
 
 /* The sweep's line when its cases are seen inside (threads): "sweep: k/n
  * cases[ (b done before)], J under way, P% of the work, E s elapsed[, ~L s
@@ -147,7 +196,12 @@ static void sweep_line(sweep_run *s, int last)
     if (p->quiet)
         return;
     const long done = s->done + s->nfailed;
-    const double part = last ? 1.0 : sweep_part(s, done), el = el_ms / 1e3;
+#if GW_HAVE_MPI
+    const double part = last ? 1.0 : s->mpi_eta ? mpi_part(s, s->mpi_eta) : sweep_part(s, done);
+#else
+    const double part = last ? 1.0 : sweep_part(s, done);
+#endif
+    const double el = el_ms / 1e3;
     if (!last && now - p->last < gw_cli_progress_gap(p, el_ms))
         return;
     char line[320], before[64] = "", left[64] = "";
@@ -171,7 +225,7 @@ static void sweep_line(sweep_run *s, int last)
  * the only thread (the MPI master). */
 static void sweep_tick(sweep_run *s)
 {
-    if (s->slots) {
+    if (s->slots || s->mpi_eta) {
         sweep_line(s, 0);
         return;
     }
@@ -294,10 +348,12 @@ static int pool_case(void *ctx, long i, gw_err *err)
     char *row = malloc(ROW_MAX);
     if (!row)
         return gw_err_set(err, GW_ENOMEM, "case %ld: out of memory", s->todo[i]);
-    case_slot *slot = slot_take(s);
+    case_slot *slot = slot_take(s, i);
     const long under_way = atomic_fetch_add(&s->running, 1) + 1;
     if (slot) { /* the threads at work since the last line: the time elapsed (sweep_part) */
         pthread_mutex_lock(&s->lock);
+        if (i + 1 > s->next_i)
+            s->next_i = i + 1;
         gw_pool_eta_begun(&s->eta, (int)under_way);
         pthread_mutex_unlock(&s->lock);
     }
@@ -306,8 +362,10 @@ static int pool_case(void *ctx, long i, gw_err *err)
     /* the slot freed with the case counted ended, under the lock the
      * ticker's lines take: never counted both ways */
     const long x = slot ? atomic_load_explicit(&slot->x_micro, memory_order_relaxed) : -1;
-    if (slot)
+    if (slot) {
         atomic_store(&slot->busy, 0);
+        s->w_ended += gw_pool_eta_weight(&s->eta, i);
+    }
     atomic_fetch_sub(&s->running, 1);
     if (rc == GW_OK) {
         if (x > 0) /* where its part ended: the cases' typical end (sweep_part) */
@@ -364,13 +422,18 @@ static void run_threads(sweep_run *s, long jobs)
         s->nslots = gw_pool_threads(s->ntodo, (int)jobs); /* gw_cases_run's count: every case has one */
         if (gw_pool_eta_init(&s->eta, s->ntodo, (int)jobs) == GW_OK &&
             (s->share = malloc((size_t)s->nslots * sizeof *s->share)) &&
-            (s->slots = calloc((size_t)s->nslots, sizeof *s->slots)))
+            (s->wrun = malloc((size_t)s->nslots * sizeof *s->wrun)) &&
+            (s->slots = calloc((size_t)s->nslots, sizeof *s->slots))) {
             for (long i = 0; i < s->nslots; i++) {
                 atomic_init(&s->slots[i].busy, 0);
                 atomic_init(&s->slots[i].x_micro, -1);
+                atomic_init(&s->slots[i].i, -1);
             }
-        else
+            if (s->w) /* out of memory for them: the cases alike */
+                gw_pool_eta_weigh(&s->eta, s->w, s->ntodo);
+        } else {
             s->nslots = 0; /* without them: the lines as before */
+        }
     }
     ticker t = {.s = s};
     atomic_init(&t.stop, 0);
@@ -385,9 +448,11 @@ static void run_threads(sweep_run *s, long jobs)
     }
     free(s->slots);
     free(s->share);
+    free(s->wrun);
     gw_pool_eta_free(&s->eta);
     s->slots = NULL;
     s->share = NULL;
+    s->wrun = NULL;
     s->nslots = 0;
     if (rc != GW_OK && rc != GW_ECANCELED) {
         s->failed = rc;
@@ -419,11 +484,55 @@ static void mpi_idle_wait(MPI_Request *req, MPI_Status *st, sweep_run *ticks)
     }
 }
 
+/* The master's schedule for its lines (mpi_part), when it can be made: the
+ * ranks but the master run the cases; on one node they share its CPUs, over
+ * several each has its own. */
+static void mpi_eta_start(sweep_run *s, int size)
+{
+    if (s->prog.quiet || s->ntodo < 1 || size < 2)
+        return;
+    const char *local = getenv("OMPI_COMM_WORLD_LOCAL_SIZE");
+    s->rank_i = malloc((size_t)size * sizeof *s->rank_i);
+    s->rank_t0 = malloc((size_t)size * sizeof *s->rank_t0);
+    s->share = malloc((size_t)size * sizeof *s->share);
+    s->wrun = malloc((size_t)size * sizeof *s->wrun);
+    if (!s->rank_i || !s->rank_t0 || !s->share || !s->wrun || gw_pool_eta_init(&s->eta, s->ntodo, size - 1) != GW_OK)
+        return; /* without it: the lines of the rate at which cases end, as before */
+    if (!(local && atol(local) == size))
+        s->eta.cpus = s->eta.threads;
+    for (int r = 0; r < size; r++)
+        s->rank_i[r] = -1;
+    if (s->w)
+        gw_pool_eta_weigh(&s->eta, s->w, s->ntodo);
+    s->mpi_eta = size;
+}
+
+static void mpi_eta_end(sweep_run *s)
+{
+    gw_pool_eta_free(&s->eta);
+    free(s->rank_i);
+    free(s->rank_t0);
+    free(s->share);
+    free(s->wrun);
+    s->rank_i = NULL, s->rank_t0 = NULL, s->share = NULL, s->wrun = NULL;
+    s->mpi_eta = 0;
+}
+
+/* A line of the master: the schedule's, or the rate's without it. */
+static void mpi_line(sweep_run *s)
+{
+    if (s->mpi_eta)
+        sweep_line(s, s->done + s->nfailed >= s->ntodo);
+    else
+        gw_cli_progress_report(&s->prog, s->done + s->nfailed, s->ntodo);
+}
+
 static void mpi_master(sweep_run *s, int size)
 {
     char *buf = malloc(ROW_MAX + 16);
     int active = size - 1;
     long next = 0;
+    mpi_eta_start(s, size);
     while (active > 0 && buf) {
         MPI_Status st;
         /* Wait without spinning (mpi_idle_wait): an idle master would take a
@@ -433,11 +542,19 @@ static void mpi_master(sweep_run *s, int size)
         mpi_idle_wait(&req, &st, s);
         if (st.MPI_TAG == TAG_ROW || st.MPI_TAG == TAG_FAIL)
             atomic_fetch_sub(&s->running, 1);
+        const int src = st.MPI_SOURCE;
+        if (s->mpi_eta && src > 0 && src < size && s->rank_i[src] >= 0) { /* its case ended: weighed */
+            const double wr = gw_pool_eta_weight(&s->eta, s->rank_i[src]);
+            s->w_ended += wr;
+            if (st.MPI_TAG == TAG_ROW) /* the pace: of the cases run to their end */
+                s->pace_ms += gw_clock_ms() - s->rank_t0[src], s->pace_w += wr;
+            s->rank_i[src] = -1;
+        }
         gw_err err = {{0}};
         if (st.MPI_TAG == TAG_ROW) {
             int rc = journal(s, buf, &err);
             if (rc == GW_OK)
-                gw_cli_progress_report(&s->prog, s->done + s->nfailed, s->ntodo);
+                mpi_line(s);
             if (rc != GW_OK && !s->failed) {
                 s->failed = rc;
                 s->err = err;
@@ -447,7 +564,7 @@ static void mpi_master(sweep_run *s, int size)
             const char *msg = strchr(buf + 1, ' ');
             gw_err_set(&err, GW_ESOLVER, "%s", msg ? msg + 1 : buf + 1);
             case_failed(s, k, &err);
-            gw_cli_progress_report(&s->prog, s->done + s->nfailed, s->ntodo);
+            mpi_line(s);
         } else if (st.MPI_TAG == TAG_FAIL && !s->failed) {
             s->failed = buf[0] == 'I' ? GW_EINVAL : GW_ESOLVER;
             gw_err_set(&s->err, s->failed, "%s", buf + 1);
@@ -455,13 +572,20 @@ static void mpi_master(sweep_run *s, int size)
         long k = -1;
         if (next < s->ntodo && !s->failed && !stop_requested && !s->kept) {
             k = s->todo[next++];
-            atomic_fetch_add(&s->running, 1);
+            const long under_way = atomic_fetch_add(&s->running, 1) + 1;
+            if (s->mpi_eta && src > 0 && src < size) {
+                s->rank_i[src] = next - 1;
+                s->rank_t0[src] = gw_clock_ms();
+                s->next_i = next;
+                gw_pool_eta_begun(&s->eta, (int)under_way);
+            }
         } else {
             active--;
         }
         MPI_Send(&k, 1, MPI_LONG, st.MPI_SOURCE, TAG_WORK, MPI_COMM_WORLD);
     }
     free(buf);
+    mpi_eta_end(s);
 }
 
 static void mpi_worker(sweep_run *s)
@@ -606,6 +730,27 @@ static void undecided_warning(int dirfd, const gw_sweep_model *m, long ncases)
     free(w);
 }
 
+/* The cases to run weighed before they run, for the progress lines' time
+ * left (s->w, by the model's gw_sweep_weigh; left NULL, the cases alike, for
+ * a model without one, above SWEEP_WEIGH_MAX cases, or out of memory). By
+ * the share of the cases, a sweep of unequal cases (a chain over n = 150 to
+ * 300, the costliest last) said 0.34 to 0.86 of its true time left. */
+#define SWEEP_WEIGH_MAX 1000000L
+static void weigh_cases(sweep_run *s, const gw_sweep_config *cfg, const gw_sweep_weigh *wg)
+{
+    if (!wg || !wg->weight || s->ntodo < 1 || s->ntodo > SWEEP_WEIGH_MAX ||
+        !(s->w = malloc((size_t)s->ntodo * sizeof *s->w)))
+        return;
+    const char *names[2 * GW_SWEEP_MAX_KEYS], *values[2 * GW_SWEEP_MAX_KEYS];
+    void *memo = NULL;
+    for (long i = 0; i < s->ntodo; i++) {
+        gw_sweep_case(cfg, s->todo[i], names, values);
+        s->w[i] = wg->weight(&memo, cfg->ngrid + cfg->nparams, names, values);
+    }
+    if (wg->memo_free)
+        wg->memo_free(memo);
+}
+
 /* A refusal's exit code: 2 for the config or a case (bad input), 1 when the
  * check itself ran out of memory (a run failure: the input is not at fault). */
 static int exit_code(int rc)
@@ -614,7 +759,7 @@ static int exit_code(int rc)
 }
 
 int gw_cmd_sweep(int argc, char **argv, const gw_sweep_model *const *models, const gw_sweep_run_part_fn *parts,
-                 int nmodels)
+                 const gw_sweep_weigh *const *weighs, int nmodels)
 {
     const char *out = NULL;
     long jobs = 0;
@@ -791,9 +936,13 @@ int gw_cmd_sweep(int argc, char **argv, const gw_sweep_model *const *models, con
     if (code == 0) {
         s.cfg = &cfg;
         s.m = m;
-        for (int i = 0; parts && i < nmodels; i++)
-            if (models[i] == m)
-                s.run_part = parts[i];
+        for (int i = 0; i < nmodels; i++)
+            if (models[i] == m) {
+                s.run_part = parts ? parts[i] : NULL;
+                s.weigh = weighs ? weighs[i] : NULL;
+            }
+        if (rank == 0 && !quiet)
+            weigh_cases(&s, &cfg, s.weigh);
         gw_cli_progress_init(&s.prog, "sweep: ", "cases", 2000);
         s.prog.before = s.ndone0;
         s.prog.quiet = quiet;
@@ -880,12 +1029,13 @@ finish:
             fprintf(stderr, "granwave sweep: %s\n", e2.msg);
             code = 1;
         }
-        close(s.fd);
+        gw_sweep_journal_close(s.fd); /* and the copy of it kept for its checks */
     }
     if (s.dirfd >= 0)
         close(s.dirfd);
     free(done);
     free(s.todo);
+    free(s.w);
     gw_sweep_config_free(&cfg);
 #if GW_HAVE_MPI
     if (use_mpi) { /* idle while rank 0 writes the table: MPI_Finalize's own wait spins */

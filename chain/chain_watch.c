@@ -189,7 +189,7 @@ void chain_watch_plan_one(chain_watch *w, double weight)
  * columns on the rigid steel wall weighed far more than their share of its
  * time, and its lines said 35 % done at 2 s of a 19 s study). 1 where the
  * plan refuses (the run then fails at once, with its message). */
-static double weight(const gw_chain_params *p, const gw_chain_run_opts *o)
+double chain_watch_weight(const gw_chain_params *p, const gw_chain_run_opts *o)
 {
     collide_plan pl;
     gw_err e = {{0}};
@@ -205,7 +205,7 @@ void chain_watch_plan(chain_watch *w, const gw_chain_params *p, const gw_chain_r
     if (!w || !w->fn)
         return;
     chain_watch_group(w, 1); /* on the study's own thread, after what was planned before */
-    chain_watch_plan_one(w, weight(p, o));
+    chain_watch_plan_one(w, chain_watch_weight(p, o));
 }
 
 void chain_watch_plan_sweep(chain_watch *w, const gw_chain_params *tmpl, const gw_chain_run_opts *o,
@@ -219,7 +219,7 @@ void chain_watch_plan_sweep(chain_watch *w, const gw_chain_params *tmpl, const g
             gw_chain_params p = *tmpl;
             p.n = n;
             p.v_imp = v[i];
-            chain_watch_plan_one(w, weight(&p, o));
+            chain_watch_plan_one(w, chain_watch_weight(&p, o));
         }
 }
 
@@ -371,7 +371,7 @@ int chain_watch_collide(chain_watch *w, const gw_chain *c, const gw_chain_params
     if (!w || !w->fn)
         return gw_chain_collide(c, o, r, err);
     chain_watch_running run;
-    chain_watch_begin(w, &run, weight(p, o), chain_watch_tail(p->n));
+    chain_watch_begin(w, &run, chain_watch_weight(p, o), chain_watch_tail(p->n));
     int rc = gw_chain_collide_progress(c, o, at_sample, &run, r, err);
     chain_watch_end(&run, rc == GW_OK);
     return rc;

@@ -61,6 +61,10 @@ typedef struct chain_watch {
     int left_known;
 } chain_watch;
 
+/* A collision's weight (its beads times its steps and samples over its
+ * expected length, chain_watch.c): what a study plans and `granwave sweep`
+ * weighs a chain case by (gw_chain_sweep_weigh); 1 where the plan refuses. */
+double chain_watch_weight(const gw_chain_params *p, const gw_chain_run_opts *o);
 /* rho(N): a collision of N beads' expected length over its t_expect (the run
  * goes on until every contact is open and separating; chain_watch.c). */
 double chain_watch_tail(int n);

@@ -165,6 +165,7 @@ int gw_pool_eta_init(gw_pool_eta *e, long n, int jobs)
         return GW_ENOMEM;
     e->threads = th;
     e->cpus = gw_pool_cpus();
+    e->n = n > 0 ? n : 0;
     return GW_OK;
 }
 
@@ -173,7 +174,9 @@ void gw_pool_eta_free(gw_pool_eta *e)
     if (!e)
         return;
     free(e->free_at);
+    free(e->cum);
     e->free_at = NULL;
+    e->cum = NULL;
 }
 
 void gw_pool_eta_begun(gw_pool_eta *e, int under_way)
@@ -181,12 +184,67 @@ void gw_pool_eta_begun(gw_pool_eta *e, int under_way)
     gw_pool_clock_busy(&e->clock, under_way);
 }
 
-double gw_pool_eta_part(gw_pool_eta *e, long ended, const double *share, int nrun, long to_come)
+static int by_end_up(const void *a, const void *b)
 {
-    double done = (double)ended;
-    for (int i = 0; i < nrun; i++)
-        done += fmin(fmax(share[i], 0), 1);
-    const double total = (double)ended + nrun + (double)(to_come > 0 ? to_come : 0);
+    const double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+/* Weight sum given to the m threads of heap h as many small cases are by the
+ * first-free rule: the threads freest filled up to one level (sorted
+ * ascending after, which is a min-heap). */
+static void give_level(double *h, int m, double sum)
+{
+    if (m < 1 || !(sum > 0))
+        return;
+    qsort(h, (size_t)m, sizeof *h, by_end_up);
+    /* the level L with sum over k of max(0, L - h[k]) = sum: the first k + 1
+     * threads raised to one level, while it stays below the next one's */
+    double acc = 0, level = h[0] + sum;
+    for (int k = 0; k < m; k++) {
+        acc += h[k];
+        level = (sum + acc) / (k + 1);
+        if (k + 1 == m || level <= h[k + 1])
+            break;
+    }
+    for (int j = 0; j < m; j++)
+        if (h[j] < level)
+            h[j] = level;
+}
+
+int gw_pool_eta_weigh(gw_pool_eta *e, const double *w, long n)
+{
+    if (!e || !w || n < 1)
+        return GW_OK;
+    double *cum = malloc(((size_t)n + 1) * sizeof *cum);
+    if (!cum)
+        return GW_ENOMEM;
+    double sum = 0;
+    long known = 0;
+    for (long i = 0; i < n; i++)
+        if (isfinite(w[i]) && w[i] > 0)
+            sum += w[i], known++;
+    const double mean = known > 0 ? sum / (double)known : 1.0;
+    cum[0] = 0;
+    for (long i = 0; i < n; i++)
+        cum[i + 1] = cum[i] + (isfinite(w[i]) && w[i] > 0 ? w[i] : mean);
+    free(e->cum);
+    e->cum = cum;
+    e->n = n;
+    return GW_OK;
+}
+
+double gw_pool_eta_weight(const gw_pool_eta *e, long i)
+{
+    return e && e->cum && i >= 0 && i < e->n ? e->cum[i + 1] - e->cum[i] : 1.0;
+}
+
+/* The part, the work counted in weight: done and total; the cases under way
+ * (wrun, share), those to come: to_come alike ones (cum NULL) or the cases
+ * next..n-1 of cum. */
+static double eta_part(gw_pool_eta *e, double done, double total, const double *wrun, const double *share, int nrun,
+                       long to_come, long next)
+{
     gw_pool_clock_count(&e->clock, done, nrun, e->cpus);
     const int th = e->threads;
     double part;
@@ -196,8 +254,19 @@ double gw_pool_eta_part(gw_pool_eta *e, long ended, const double *share, int nru
         for (int k = 0; k < th; k++)
             e->free_at[k] = 0;
         for (int i = 0; i < nrun; i++)
-            gw_pool_give(e->free_at, th, 1 - fmin(fmax(share[i], 0), 1));
-        gw_pool_give_each(e->free_at, th, to_come, 1.0);
+            gw_pool_give(e->free_at, th, (wrun ? wrun[i] : 1.0) * (1 - fmin(fmax(share[i], 0), 1)));
+        if (!e->cum) {
+            gw_pool_give_each(e->free_at, th, to_come, 1.0);
+        } else {
+            long a = next < 0 ? 0 : next;
+            if (e->n - a > GW_POOL_ETA_ONE_BY_ONE) {
+                const long b = e->n - GW_POOL_ETA_ONE_BY_ONE;
+                give_level(e->free_at, th, e->cum[b] - e->cum[a]);
+                a = b;
+            }
+            for (long i = a; i < e->n; i++)
+                gw_pool_give(e->free_at, th, e->cum[i + 1] - e->cum[i]);
+        }
         const double left = gw_pool_span(e->free_at, th, e->cpus);
         part = e->clock.elapsed / (e->clock.elapsed + left);
     } else { /* nothing done yet (or no schedule): the share of the work */
@@ -207,6 +276,35 @@ double gw_pool_eta_part(gw_pool_eta *e, long ended, const double *share, int nru
      * before): a display whose share fell would read as work undone */
     e->shown = fmax(e->shown, fmin(fmax(part, 0), 1));
     return e->shown;
+}
+
+double gw_pool_eta_part(gw_pool_eta *e, long ended, const double *share, int nrun, long to_come)
+{
+    double done = (double)ended;
+    for (int i = 0; i < nrun; i++)
+        done += fmin(fmax(share[i], 0), 1);
+    if (to_come < 0)
+        to_come = 0;
+    const double total = (double)ended + nrun + (double)to_come;
+    return eta_part(e, done, total, NULL, share, nrun, to_come, 0);
+}
+
+double gw_pool_eta_part_weighed(gw_pool_eta *e, double w_ended, const double *wrun, const double *share, int nrun,
+                                long next)
+{
+    double done = w_ended > 0 ? w_ended : 0, total = done;
+    for (int i = 0; i < nrun; i++) {
+        done += wrun[i] * fmin(fmax(share[i], 0), 1);
+        total += wrun[i];
+    }
+    if (next < 0)
+        next = 0;
+    long to_come = 0;
+    if (e->cum && next < e->n)
+        total += e->cum[e->n] - e->cum[next];
+    else if (!e->cum)
+        to_come = e->n - next > 0 ? e->n - next : 0;
+    return eta_part(e, done, total, wrun, share, nrun, to_come, next);
 }
 
 int gw_cases_run(long n, int jobs, gw_case_fn fn, void *ctx, gw_progress_fn progress, void *pctx,

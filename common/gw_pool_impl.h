@@ -3,7 +3,8 @@
  * inside the library and the program only. A progress display's time left
  * schedules the work left over the threads that will run it, as the pool
  * hands it out: a study's (chain/chain_watch.c, its collisions weighed) and
- * `granwave sweep`'s (app/sweep_cmd.c, its cases weighed alike, gw_pool_eta).
+ * `granwave sweep`'s (app/sweep_cmd.c, gw_pool_eta: its cases weighed by the
+ * cost each model expects of them, gw_sweep_weigh, or alike).
  * Time is counted in work per thread at work: every thread under way goes at
  * the same pace, a whole CPU's while they are no more than the CPUs, a share
  * of one beyond (k threads on c CPUs: c / k each).
@@ -57,6 +58,10 @@ typedef struct gw_pool_eta {
     gw_pool_clock clock;
     double shown;        /* the largest part reported */
     double *free_at;     /* scratch: threads doubles */
+    /* the cases' weights when known (gw_pool_eta_weigh): cum[i] the weight
+     * of cases 0..i-1, n + 1 of them; NULL: the cases alike */
+    double *cum;
+    long n;
 } gw_pool_eta;
 /* For gw_cases_run(n, jobs) on this machine's CPUs; GW_ENOMEM (e untouched
  * but zeroed) or GW_OK. Free with gw_pool_eta_free. */
@@ -68,5 +73,31 @@ void gw_pool_eta_begun(gw_pool_eta *e, int under_way);
  * each case under way (in [0, 1)); to_come, the cases not begun. In [0, 1]:
  * the share of the work before any work is counted. */
 double gw_pool_eta_part(gw_pool_eta *e, long ended, const double *share, int nrun, long to_come);
+
+/* Cases of unequal cost: their weights known before they run, w[0..n-1] in
+ * the order the pool hands them out (case i's cost over the others', any
+ * unit: a chain case's bead-steps, a layer case's body-steps). A weight not
+ * finite or not above 0 (not known) counts as the mean of the others (1 when
+ * none is known). Then the work is counted in weight: the time elapsed adds
+ * the weight done (of the cases ended, and each case under way's weight
+ * times its share done), and the time left schedules the weight left, each
+ * case under way holding its thread for its weight times its share left,
+ * each case to come, in order, going to the first thread free. So on one
+ * thread the part is the weight done over the whole weight, and the time
+ * left the time elapsed times the weight left over the weight done. Of more
+ * than GW_POOL_ETA_ONE_BY_ONE cases to come, all but the last that many fill
+ * the threads level first (their sum spread as the pool's greedy order
+ * spreads many small cases), the last given one at a time. GW_OK, or
+ * GW_ENOMEM (e's cases stay alike). */
+#define GW_POOL_ETA_ONE_BY_ONE 4096
+int gw_pool_eta_weigh(gw_pool_eta *e, const double *w, long n);
+/* The weight of case i (1 when the cases are alike, or i outside [0, n)). */
+double gw_pool_eta_weight(const gw_pool_eta *e, long i);
+/* The part now, cases weighed: w_ended, the weight of the cases ended;
+ * wrun[0..nrun-1] and share[0..nrun-1], the weight of each case under way
+ * and its share done (in [0, 1)); the cases to come are next..n-1. The same
+ * part as gw_pool_eta_part when the cases are alike (weights 1). */
+double gw_pool_eta_part_weighed(gw_pool_eta *e, double w_ended, const double *wrun, const double *share, int nrun,
+                                long next);
 
 #endif

@@ -59,6 +59,7 @@
  */
 #include <math.h>
 #include <stddef.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -575,6 +576,119 @@ static int run(int nk, const char *const *names, const char *const *values, doub
 {
     return gw_layer_sweep_run_part(nk, names, values, out, read_hash, NULL, NULL, err);
 }
+
+/* ---- a case's weight before it runs (gw_sweep_weigh) ----
+ * Its bodies times its steps over the simulated time it is expected to run:
+ * the discs and the block are stepped together at a fixed step (verlet's the
+ * shortest contact time / 100, rk4's 1e-6 s, or dt), or an adaptive step
+ * that the contacts bound alike. A run to the rebound ends at the block's
+ * first free-flight maximum T_f, about REBOUND_E v_i / g after the impact
+ * (its rebound speed over g; e measured below), or at t-max; a run to the
+ * verdict, a full run or one without gravity runs to t-max (an upper bound
+ * for the verdict). The sample's bodies and the step depend on the sample,
+ * its materials and the solver, not on the speed, the point or the times:
+ * found by a plan (the sample read) once per such case in the pass's memo. */
+#define REBOUND_E 0.15
+#define WEIGH_SLOTS 8
+
+typedef struct weigh_slot {
+    char *key; /* the case's pairs but those of the speed, the point and the times */
+    double bodies, step;
+} weigh_slot;
+
+typedef struct weigh_memo {
+    weigh_slot slot[WEIGH_SLOTS];
+    int next;
+} weigh_memo;
+
+static int weigh_ignored(const char *name)
+{
+    static const char *const ignored[] = {"vi", "x", "alpha", "t_max", "dt_out", "until", "full", "rings",
+                                          "ring_width", "energy_tol", "spacing", "point", "points"};
+    char n[64];
+    snprintf(n, sizeof n, "%s", name);
+    for (char *c = n; *c; c++)
+        if (*c == '-')
+            *c = '_';
+    for (size_t i = 0; i < sizeof ignored / sizeof ignored[0]; i++)
+        if (strcmp(n, ignored[i]) == 0)
+            return 1;
+    return 0;
+}
+
+static char *weigh_key(int nk, const char *const *names, const char *const *values)
+{
+    size_t len = 1;
+    for (int i = 0; i < nk; i++)
+        if (!weigh_ignored(names[i]))
+            len += strlen(names[i]) + strlen(values[i]) + 2;
+    char *k = malloc(len), *p = k;
+    if (!k)
+        return NULL;
+    *p = '\0';
+    for (int i = 0; i < nk; i++)
+        if (!weigh_ignored(names[i]))
+            p += sprintf(p, "%s=%s\n", names[i], values[i]);
+    return k;
+}
+
+static void weigh_memo_free(void *memo)
+{
+    weigh_memo *w = memo;
+    if (!w)
+        return;
+    for (int i = 0; i < WEIGH_SLOTS; i++)
+        free(w->slot[i].key);
+    free(w);
+}
+
+static double weigh(void **memo, int nk, const char *const *names, const char *const *values)
+{
+    gw_layer_impact_setup s;
+    gw_err e = {{0}};
+    double w = NAN;
+    if (prepare(&s, nk, names, values, NULL, &e) != GW_OK) {
+        gw_layer_impact_setup_clear(&s);
+        return NAN;
+    }
+    weigh_memo *m = memo ? *memo : NULL;
+    if (memo && !m)
+        m = *memo = calloc(1, sizeof *m);
+    char *key = m ? weigh_key(nk, names, values) : NULL;
+    weigh_slot *hit = NULL;
+    for (int i = 0; key && i < WEIGH_SLOTS && !hit; i++)
+        if (m->slot[i].key && strcmp(m->slot[i].key, key) == 0)
+            hit = &m->slot[i];
+    weigh_slot found = {NULL, NAN, NAN};
+    if (!hit) {
+        gw_layer_impact_plan p;
+        if (gw_layer_impact_plan_make(&s, &p, &e) == GW_OK) {
+            const double dem = gw_layer_impact_dem_dt(&p.sample, &p.lp, &p.ip);
+            found.bodies = p.sample.n + 1.0;
+            found.step = p.type == gw_solver_rk4 ? (p.sp.dt > 0 ? p.sp.dt : 1e-6)
+                                                 : p.type == gw_solver_verlet && p.sp.dt > 0 ? p.sp.dt : dem;
+        }
+        gw_layer_impact_plan_free(&p);
+        if (key) { /* kept, the oldest replaced */
+            weigh_slot *k = &m->slot[m->next];
+            m->next = (m->next + 1) % WEIGH_SLOTS;
+            free(k->key);
+            *k = (weigh_slot){key, found.bodies, found.step};
+            key = NULL;
+        }
+        hit = &found;
+    }
+    free(key);
+    double end = s.t_max;
+    if (!s.full && s.until != GW_LAYER_UNTIL_VERDICT && s.gravity > 0 && s.vi > 0)
+        end = fmin(s.t_max, REBOUND_E * s.vi / s.gravity);
+    if (hit->bodies > 0 && hit->step > 0 && end > 0)
+        w = hit->bodies * end / hit->step;
+    gw_layer_impact_setup_clear(&s);
+    return isfinite(w) && w > 0 ? w : NAN;
+}
+
+const gw_sweep_weigh gw_layer_sweep_weigh = {weigh, weigh_memo_free};
 
 const gw_sweep_model gw_layer_sweep_model = {"layer",  NCOLUMNS, columns,       has_key,  run,
                                              check,    memory,   "sample",      check_memo_fn, memo_free,

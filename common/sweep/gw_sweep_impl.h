@@ -78,6 +78,33 @@ char *gw_sweep_slurp_fd(int fd, const char *path, size_t *len, gw_err *err);
  * O_PATH where it may be searched but not read), -1 with errno set. */
 int gw_sweep_dir_open(const char *dir);
 
+/* gw_sweep_journal.c: close a sweep's journal fd (gw_sweep_journal_open_at's)
+ * and free the copy of what it holds that the sweep kept beside it (the
+ * shadow gw_sweep_journal_held checks the file against). The copies were
+ * freed only at exit: a process that opened journals in turn (each closed by
+ * close()) kept every copy, and once 16 were held a new journal got none and
+ * went unchecked for a rewrite in place. fd < 0: nothing. */
+void gw_sweep_journal_close(int fd);
+
+/* A model's case cost, known before it runs, for `granwave sweep`'s time
+ * left (app/sweep_cmd.c, gw_pool_eta_weigh): weight returns case's expected
+ * run time in the model's own unit (only the ratio between a sweep's cases
+ * counts), NaN where it cannot tell (a bad value: the run says so). A pass
+ * over the cases keeps *memo (NULL at its first call; one thread), freed by
+ * memo_free (NULL-safe; NULL: the model keeps none). Internal: the program's
+ * only, neither in gw_sweep_model (a public struct) nor exported. */
+typedef struct gw_sweep_weigh {
+    double (*weight)(void **memo, int nkeys, const char *const *names, const char *const *values);
+    void (*memo_free)(void *memo);
+} gw_sweep_weigh;
+/* chain/chain_sweep_model.c: chain_watch_weight of the case's column (its
+ * beads times its steps and samples over its expected length, as a study's
+ * collisions are planned). */
+extern const gw_sweep_weigh gw_chain_sweep_weigh;
+/* layer/layer_sweep_model.c: the bodies times the steps over the run's
+ * expected simulated length (layer_sweep_model.c). */
+extern const gw_sweep_weigh gw_layer_sweep_weigh;
+
 /* How long gw_sweep_journal_held watches a journal's free name before it puts
  * the journal back: an editor's save through a rename (the journal renamed
  * to a backup, or removed, and the new file written) takes milliseconds.

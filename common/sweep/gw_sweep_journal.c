@@ -250,6 +250,20 @@ static void shadow_drop(jshadow *h)
     pthread_mutex_unlock(&shadows_lock);
 }
 
+void gw_sweep_journal_close(int fd)
+{
+    if (fd < 0)
+        return;
+    /* by descriptor alone: the file may be gone from its name, or be another
+     * file's under it; the entry is this descriptor's whatever it holds */
+    pthread_mutex_lock(&shadows_lock);
+    for (int i = 0; i < NSHADOWS; i++)
+        if (shadows[i].used && shadows[i].fd == fd)
+            shadow_free(&shadows[i]);
+    pthread_mutex_unlock(&shadows_lock);
+    close(fd);
+}
+
 static int ts_same(struct timespec a, struct timespec b)
 {
     return a.tv_sec == b.tv_sec && a.tv_nsec == b.tv_nsec;

@@ -80,8 +80,8 @@ int chain_steps_check(const gw_solver_type *type, const gw_solver_params *sp, co
         return gw_err_set(err, GW_EINVAL, "%s: a step of %g s needs about %.3g steps over %s (about %.3g s); "
                           "at most %.0e: %s", is_dt ? "dt" : "dt-max", step, t_len / step, over, t_len, max_steps_run,
                           !chosen ? "raise it"
-                          : is_dt ? "the default step resolves the stiffest contact or the sensor body's oscillation "
-                                    "(a longer one loses the run): use cvode or arkode"
+                          : is_dt ? "the default step resolves the stiffest contact, the sensor body's oscillation or "
+                                    "the wall's fastest Maxwell arm (a longer one loses the run): use cvode or arkode"
                                   : "the default largest step is a quarter of the shortest contact (a longer one can "
                                     "step over a contact): fewer beads or a shorter run");
     return GW_OK;
@@ -208,6 +208,15 @@ double chain_rk4_default_dt(const gw_chain_params *p, double steps_per_tc)
     chain_drag_rates(p, r);
     if (r[CHAIN_DRAG_SENSOR] > 0)
         dt = fmin(dt, 1.0 / r[CHAIN_DRAG_SENSOR]);
+    /* A viscoelastic wall's Maxwell arm relaxes as dq/dt = ... - q/tau: RK4 is
+     * stable on it while h < 2.79 tau, and the arms are not in the step scale
+     * (the contacts): arms of 1e-8 to 1e-6 s blew up at T_c/400. The fastest
+     * arm bounds the step at h = tau (h r = 1, as the sensor's drag) only where
+     * it is shorter than the contacts' step, so runs on slower arms (the
+     * default 1e-5 to 1e-3 s) keep their step bit for bit. */
+    double tau_arm;
+    if (p->wall.loss > 0 && chain_wall_arms(&p->wall, &tau_arm, NULL) > 0 && tau_arm > 0)
+        dt = fmin(dt, tau_arm);
     return dt;
 }
 

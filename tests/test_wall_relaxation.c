@@ -179,7 +179,7 @@ int main(void)
      * (chain_rk4_default_dt), only where that is shorter than the contacts'
      * step. Measured F_max against cvode bdf at 1e-12: 6.3e-8 relative (1e-8
      * to 1e-6 s, the default 4 mm bead; 1e-7 to 1e-5 s, 4 cm), 7.4e-10 (one arm of 1e-7
-     * s, 4 cm); eps_eff within 1.1e-8 */
+     * s, 4 cm); eps_eff within 4.6e-8 */
     rc = visco_rk4_vs_bdf(1e-8, 1e-6, 0, &e);
     gw_test_true(rc == GW_OK, "rk4 with arms of 1e-8 to 1e-6 s runs (it blew up at the contacts' step)");
     rc = visco_rk4_vs_bdf(1e-7, 1e-5, 0.04, &e);

@@ -17,6 +17,7 @@
 #include "gw_chain.h"
 #include "chain_model.h"
 #include "chain_collide_impl.h"
+#include "gw_locale.h"
 
 gw_chain_run_opts gw_chain_run_opts_default(void)
 {
@@ -80,8 +81,8 @@ int chain_steps_check(const gw_solver_type *type, const gw_solver_params *sp, co
         return gw_err_set(err, GW_EINVAL, "%s: a step of %g s needs about %.3g steps over %s (about %.3g s); "
                           "at most %.0e: %s", is_dt ? "dt" : "dt-max", step, t_len / step, over, t_len, max_steps_run,
                           !chosen ? "raise it"
-                          : is_dt ? "the default step resolves the stiffest contact or the sensor body's oscillation "
-                                    "(a longer one loses the run): use cvode or arkode"
+                          : is_dt ? "the default step resolves the stiffest contact, the sensor body's oscillation or "
+                                    "the wall's fastest Maxwell arm (a longer one loses the run): use cvode or arkode"
                                   : "the default largest step is a quarter of the shortest contact (a longer one can "
                                     "step over a contact): fewer beads or a shorter run");
     return GW_OK;
@@ -98,12 +99,39 @@ int chain_steps_check(const gw_solver_type *type, const gw_solver_params *sp, co
  * idle machine) into the run's own bound and exited 1. */
 #define SENSOR_STEPS_PER_RAD 20.0
 
+/* A damped body under cvode bdf or arkode dirk (its whole state implicit):
+ * the ring that a contact event excites decays as exp(-zeta omega t), zeta =
+ * c_s / (2 M omega), and the solver need follow it only until it is below the
+ * tolerance, ln(1/tol) / (zeta omega), at per_rad steps a radian: per_rad
+ * ln(1/tol) / zeta steps an excitation. After that its steps follow the
+ * collision, not omega. The excitations are the contacts' events, at most
+ * 4 (n + 1). That holds from zeta = 0.2: BDF of orders 1 to 3 steps over a
+ * damped mode at any step only when the mode's angle from the negative axis,
+ * arccos(zeta), is within their A(alpha) wedge (86.0 degrees for order 3:
+ * zeta > 0.07; 73.4 for order 4: zeta > 0.29), and below 0.2 cvode bdf still
+ * followed the ring over most of the collision. Measured at rtol = atol =
+ * 1e-12, n = 5, 1e-7 kg on 1e12 N/m (the undamped estimate 1.06e7), bdf's
+ * steps: zeta 0 2,785,549; 0.01 679,726; 0.02 596,611; 0.05 652,288; 0.1
+ * 149,908; 0.15 42,303; 0.2 3,965; 0.3 3,142; 0.5 3,038; 1 2,944; 2 2,805;
+ * 10 2,980. 1e-9 kg (1.06e8 undamped): 0.02 6,702,218; 0.1 16,895; 0.15
+ * 8,711; 0.2 8,926; 1 7,244. n = 1 at 0.15: 59,264 (the estimate at 0.15
+ * would be 29,493, too low), at 0.2 1,792; n = 20 at 0.2 10,760. arkode dirk
+ * steps over even the undamped ring (94,680 at zeta 0, 7,578 to 8,527 from
+ * 0.02 to 1). Not taken for arkode imex (179,704 to 248,774 steps at zeta 0 to
+ * 1, whatever the damping), cvode adams or arkode erk, which stability holds
+ * to the ring whatever the damping (erk on 1e11 N/m: 453,461 steps at zeta 0,
+ * 99,861 at 0.2, 985,925 at 1): they keep the undamped estimate. */
+#define SENSOR_ZETA_STEP_OVER 0.2
+
 /* The steps cvode or arkode take over t_len on the sensor body's oscillation
- * (its rate in *omega, the steps a radian in *per_rad); 0 without a body. */
-static double sensor_steps(const gw_chain_params *p, const gw_solver_params *sp, double t_len, double *omega,
-                           double *per_rad)
+ * (its rate in *omega, the steps a radian in *per_rad, its damping ratio in
+ * *zeta, whether the damped estimate was taken in *damped); 0 without a
+ * body. type NULL: the undamped estimate. */
+static double sensor_steps(const gw_chain_params *p, const gw_solver_type *type, const gw_solver_params *sp,
+                           double t_len, double *omega, double *per_rad, double *zeta, int *damped)
 {
-    *omega = *per_rad = 0;
+    *omega = *per_rad = *zeta = 0;
+    *damped = 0;
     if (!(p->sensor.mass > 0 && p->sensor.stiffness > 0))
         return 0;
     /* The body rings between its spring and bead 1's contact, which adds the
@@ -115,11 +143,25 @@ static double sensor_steps(const gw_chain_params *p, const gw_solver_params *sp,
                  kc = p->kwall > 0 && m1 > 0 && p->v_imp > 0 ? 1.5 * p->kwall * sqrt(gw_chain_dmax1(m1, p->kwall, p->v_imp))
                                                                 : 0.0;
     *omega = sqrt((p->sensor.stiffness + (isfinite(kc) ? kc : 0.0)) / p->sensor.mass);
+    /* the damping ratio on that stiffness (the contact's counted: a lower
+     * ratio, the safe side) */
+    *zeta = p->sensor.damping > 0 ? p->sensor.damping / (2.0 * p->sensor.mass * *omega) : 0.0;
     double tol = sp ? fmax(sp->rtol, sp->atol) : 1e-12;
     if (!(tol > 0))
         tol = 1e-12;
     *per_rad = fmax(2.0, SENSOR_STEPS_PER_RAD * pow(fmax(tol, 1e-12) / 1e-12, -0.2));
-    return *per_rad * *omega * t_len;
+    const double undamped = *per_rad * *omega * t_len;
+    const char *used = type && type != gw_solver_rk4 ? gw_solver_method_used(type, sp ? sp->method : GW_METHOD_DEFAULT)
+                                                     : "";
+    if (!(*zeta >= SENSOR_ZETA_STEP_OVER) || (strcmp(used, "bdf") != 0 && strcmp(used, "dirk") != 0))
+        return undamped;
+    const double decay = *per_rad * log(1.0 / fmin(fmax(tol, 1e-15), 0.1)) / *zeta,
+                 excitations = 4.0 * ((double)p->n + 1.0), steps = excitations * decay;
+    if (steps < undamped) {
+        *damped = 1;
+        return steps;
+    }
+    return undamped;
 }
 
 int chain_sensor_steps_check(const gw_chain_params *p, const gw_solver_type *type, const gw_solver_params *sp,
@@ -127,13 +169,28 @@ int chain_sensor_steps_check(const gw_chain_params *p, const gw_solver_type *typ
 {
     if (type == gw_solver_rk4)
         return GW_OK; /* rk4: its step is bounded by chain_steps_check */
-    double omega, per_rad;
-    const double steps = sensor_steps(p, sp, t_len, &omega, &per_rad);
-    if (!(steps <= 1e8))
+    double omega, per_rad, zeta;
+    int damped;
+    const double steps = sensor_steps(p, type, sp, t_len, &omega, &per_rad, &zeta, &damped);
+    if (!(steps <= 1e8)) {
+        const char *used = gw_solver_method_used(type, sp ? sp->method : GW_METHOD_DEFAULT);
+        const int implicit = strcmp(used, "bdf") == 0 || strcmp(used, "dirk") == 0;
+        char why[256];
+        if (damped)
+            gw_snprintf(why, sizeof why, "damped at %.4g of critical: %.0f contact events, each ringing until its "
+                        "decay is below the tolerance", zeta, 4.0 * ((double)p->n + 1.0));
+        else if (implicit)
+            gw_snprintf(why, sizeof why, "%.3g a radian at this tolerance, measured 7-37 at 1e-12; damped at %.4g of "
+                        "critical, below the %.1f (c_s = %.3g N s/m) from which %s steps over the ring", per_rad, zeta,
+                        SENSOR_ZETA_STEP_OVER, SENSOR_ZETA_STEP_OVER * 2.0 * p->sensor.mass * omega, used);
+        else
+            gw_snprintf(why, sizeof why, "%.3g a radian at this tolerance, measured 7-37 at 1e-12, whatever the "
+                        "damping under %s", per_rad, used);
         return gw_err_set(err, GW_EINVAL, "sensor-stiffness: a sensor body oscillating at %.3g rad/s (sqrt((k_s + the "
-                          "contact's stiffness)/M)) needs about %.3g steps over %s (about %.3g s; %.3g a radian at "
-                          "this tolerance, measured 7-37 at 1e-12); at most 1e+08: a softer or heavier sensor body, "
-                          "looser tolerances or a shorter run", omega, steps, over, t_len, per_rad);
+                          "contact's stiffness)/M)) needs about %.3g steps over %s (about %.3g s; %s); at most 1e+08: "
+                          "a softer or heavier sensor body, looser tolerances or a shorter run", omega, steps, over,
+                          t_len, why);
+    }
     return GW_OK;
 }
 
@@ -178,8 +235,9 @@ int chain_ring_explicit_check(const gw_chain_params *p, const gw_solver_type *ty
     const int adams = strcmp(used, "adams") == 0, erk = strcmp(used, "erk") == 0;
     if (!adams && !erk)
         return GW_OK; /* bdf, dirk, imex step over the ring */
-    double omega, per_rad;
-    sensor_steps(p, sp, t_len, &omega, &per_rad);
+    double omega, per_rad, zeta;
+    int damped;
+    sensor_steps(p, NULL, sp, t_len, &omega, &per_rad, &zeta, &damped); /* omega only */
     /* the beads' contacts, bead 1's on a rigid sensor (on the body itself it
      * is as short as the body is light) */
     gw_chain_params rigid = *p;
@@ -208,6 +266,15 @@ double chain_rk4_default_dt(const gw_chain_params *p, double steps_per_tc)
     chain_drag_rates(p, r);
     if (r[CHAIN_DRAG_SENSOR] > 0)
         dt = fmin(dt, 1.0 / r[CHAIN_DRAG_SENSOR]);
+    /* A viscoelastic wall's Maxwell arm relaxes as dq/dt = ... - q/tau: RK4 is
+     * stable on it while h < 2.79 tau, and the arms are not in the step scale
+     * (the contacts): arms of 1e-8 to 1e-6 s blew up at T_c/400. The fastest
+     * arm bounds the step at h = tau (h r = 1, as the sensor's drag) only where
+     * it is shorter than the contacts' step, so runs on slower arms (the
+     * default 1e-5 to 1e-3 s) keep their step bit for bit. */
+    double tau_arm;
+    if (p->wall.loss > 0 && chain_wall_arms(&p->wall, &tau_arm, NULL) > 0 && tau_arm > 0)
+        dt = fmin(dt, tau_arm);
     return dt;
 }
 
@@ -730,9 +797,10 @@ int chain_run_steps(const gw_chain_params *p, const gw_chain_run_opts *o, double
     double s = pl.t_expect / step;
     /* the sensor body's oscillation as a single run counts it (2 a radian
      * before: a tenth of the 7-37 measured) */
-    double omega, per_rad;
+    double omega, per_rad, zeta;
+    int damped;
     if (pl.type != gw_solver_rk4)
-        s = fmax(s, sensor_steps(p, &pl.sp, pl.t_expect, &omega, &per_rad));
+        s = fmax(s, sensor_steps(p, pl.type, &pl.sp, pl.t_expect, &omega, &per_rad, &zeta, &damped));
     int k = 0;
     double rate = 0, t_used = 0;
     s = fmax(s, drag_steps(p, pl.type, &pl.sp, &o->sp, o->steps_per_tc, pl.t_expect, pl.t_max, &k, &rate, &t_used));

@@ -470,9 +470,9 @@ int chain_blown_up(const gw_chain *c, const double *y, double energy_error, cons
     if (!what[0])
         return GW_OK;
     /* the advice is the backend's: an adaptive one is not helped by dt, nor by
-     * "use cvode". A viscoelastic wall's arms are time scales too, which rk4's
-     * default step does not follow (gw_chain_step_scale: the contacts only):
-     * arms of 1e-8 to 1e-6 s blew up with advice that did not name them */
+     * "use cvode". A viscoelastic wall's arms are time scales too (rk4's
+     * default step follows the fastest, chain_rk4_default_dt; a given dt may
+     * not): arms of 1e-8 to 1e-6 s blew up with advice that did not name them */
     char arms[96] = "";
     if (c->p.wall.loss > 0)
         gw_snprintf(arms, sizeof arms, "the wall's Maxwell arms (the fastest %.3g s), ",

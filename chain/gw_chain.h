@@ -368,7 +368,8 @@ typedef struct gw_chain_run_opts {
                                between observations, at the wall linearly */
     double steps_per_tc; /* rk4 with sp.dt == 0: dt = T_c / steps_per_tc, T_c the
                             chain's time scale (gw_chain_time_scale) of this run's
-                            v_imp; 0 = 400 */
+                            v_imp; 0 = 400 (and at most a sensor body's M/c_s
+                            and a viscoelastic wall's fastest arm tau_min) */
     const double *y0;    /* optional initial state [dim] (caller-owned), e.g. a
                             column with gaps; NULL = gw_chain_initial_state. The
                             contacts start closed where the overlap is >= 0. The

@@ -232,11 +232,13 @@ static void test_sensor(void)
     gw_chain_result r0, r1;
     int ok = test_collide(&p, &o, &r0) == GW_OK;
     /* light (5e-5 of a bead), stiff (x_s/d ~ 1e-5) and critically damped; 1e-7
-     * kg, the program's lightest: 1e-9 kg (the test's before) is refused by
-     * the sensor's step bound since 2026-11-30 (1.06e8 steps estimated at 20 a
+     * kg, the program's lightest: 1e-9 kg (the test's before) was refused by
+     * the sensor's step bound from 2026-11-30 (1.06e8 steps estimated at 20 a
      * radian of its undamped frequency, where bdf takes about 3000 on the
      * critically damped body), and the five checks below were skipped with
-     * the test passing (test_collide only printed its failure then) */
+     * the test passing (test_collide only printed its failure then); the
+     * bound counts the damping since the thirty-fourth session, and
+     * test_sensor_damping_steps runs the 1e-9 kg body */
     p.sensor.mass = 1e-7;
     p.sensor.stiffness = 1e12;
     p.sensor.damping = 2 * sqrt(p.sensor.mass * p.sensor.stiffness);

@@ -503,7 +503,9 @@ int gw_layer_make_result_warnings(const gw_layer_make_result *r, double t_max, c
  * union's boundary; before session 21 a 600 x 600 sampling grid, which
  * aliased on lattices). In [0, 1]; NaN when the window is empty (width or h
  * not positive and finite), the sample counts discs without its x, y or r,
- * or an allocation fails. */
+ * holds a disc of a coordinate not finite or a radius not > 0 (such a disc
+ * was left out before session 34: the porosity of the others), or an
+ * allocation fails. */
 double gw_layer_sample_porosity(const gw_layer_sample *s);
 
 /* --------------------------------------------------------------- impact ---- */

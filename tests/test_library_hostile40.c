@@ -27,7 +27,9 @@
  *     each other, and a negative count as "vimp and heights both empty";
  *   - gw_solver_tolerances_check, gw_out_names_check and
  *     gw_outset_check_input given no name wrote "(null): ..."; gw_fnv1a64_file
- *     with h NULL read the file and said "read failed" (GW_EIO).
+ *     with h NULL read the file and said "read failed" (GW_EIO);
+ *   - gw_layer_sample_porosity left a disc of a NaN or infinite coordinate or
+ *     radius, or of r <= 0, out and gave the porosity of the others.
  * Each refusal has a control: the valid call next to it gives its value
  * (the same hash with a body per disc given or not, work = the integral of
  * the force, the fall speed sqrt(2 g h), the scalings of the closed forms).
@@ -100,6 +102,37 @@ static int pile_hash_hand(void)
     EXPECT(refused(gw_layer_impact_check(&s, &ip, &e), &e, "n_springs = 2 with springs NULL"));
     s.n_springs = 0;
     EXPECT(gw_layer_impact_check(&s, &ip, &e) == GW_OK);
+    return 0;
+}
+
+/* gw_layer_sample_porosity left such a disc out of the window's test and gave
+ * the porosity of the others (0.548 for the three discs' 0.322) */
+static int porosity_bad_disc(void)
+{
+    double x[3] = {0.3, 0.5, 0.7}, y[3] = {0.1, 0.1, 0.1}, r[3] = {0.1, 0.1, 0.1};
+    gw_layer_sample s = three_discs();
+    s.x = x, s.y = y, s.r = r;
+    const double p = gw_layer_sample_porosity(&s);
+    EXPECT(p > 0 && p < 1);
+    const double bad[] = {NAN, INFINITY};
+    for (size_t k = 0; k < 2; k++) {
+        x[1] = bad[k];
+        EXPECT(isnan(gw_layer_sample_porosity(&s)));
+        x[1] = 0.5, y[1] = bad[k];
+        EXPECT(isnan(gw_layer_sample_porosity(&s)));
+        y[1] = 0.1, r[1] = bad[k];
+        EXPECT(isnan(gw_layer_sample_porosity(&s)));
+        r[1] = 0.1;
+    }
+    r[1] = -0.1;
+    EXPECT(isnan(gw_layer_sample_porosity(&s)));
+    r[1] = 0;
+    EXPECT(isnan(gw_layer_sample_porosity(&s)));
+    r[1] = 0.1; /* control: the same discs, the same porosity; one raised, another window and porosity */
+    EXPECT(gw_layer_sample_porosity(&s) == p);
+    y[1] = 0.3;
+    const double q = gw_layer_sample_porosity(&s);
+    EXPECT(q > 0 && q < 1 && q != p);
     return 0;
 }
 
@@ -314,6 +347,7 @@ int main(void)
         case_fn fn;
     } cases[] = {
         {"gw_layer_sample_pile_hash/gw_layer_impact_check: samples filled by hand", pile_hash_hand},
+        {"gw_layer_sample_porosity: a disc of NaN or infinite coordinates or radius, or r <= 0", porosity_bad_disc},
         {"gw_stats_json/gw_stats_write_files: analyses filled by hand", stats_analysis_hand},
         {"gw_thornton_force/_loading_work: NULL and NaN overlaps", thornton_nan},
         {"gw_layer_law_force/_energy/_overlap/_contact_radius: NULL and NaN", layer_law_nan},

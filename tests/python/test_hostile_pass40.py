@@ -33,7 +33,7 @@ def test_fit_takes_text_only(table, value):
     with pytest.raises(TypeError) as ei:
         granwave.layer_stats(table, fit=value)
     m = str(ei.value)
-    assert m.startswith("fit: expected a str (comma-separated names") and "path" not in m, m
+    assert m.startswith("layer_stats: fit: expected a str (comma-separated names") and "path" not in m, m
 
 
 def test_fit_as_text_and_paths_as_paths(table):

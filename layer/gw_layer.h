@@ -724,7 +724,9 @@ double gw_layer_settled_load_ratio(const gw_layer_sample *s, const gw_layer_para
  * trajectory, hence the outcome, does not depend on dt_out. When ip->dt_out is
  * not a multiple of that step (gw_layer_impact_dt_divides), the largest divisor
  * of it below: dt_out / ceil(dt_out / step), so that every sample still ends a
- * step and the steps stay equal. s. */
+ * step and the steps stay equal. s. NaN for a sample no run takes
+ * (gw_layer_impact_check's form) or a radius not finite and > 0 (a NaN
+ * radius gave the other discs' step before session 34). */
 #define GW_LAYER_DEM_STEPS 100
 #define GW_LAYER_DEM_BASE 1e-5
 double gw_layer_impact_dem_dt(const gw_layer_sample *s, const gw_layer_params *lp,

@@ -380,8 +380,11 @@ double gw_layer_impact_dem_dt(const gw_layer_sample *s, const gw_layer_params *l
     if (!s || !lp || !ip || layer_sample_shape_check(s, "s", NULL) != GW_OK)
         return NAN;
     double rmin = INFINITY;
-    for (int i = 0; i < s->n; i++)
+    for (int i = 0; i < s->n; i++) {
+        if (!(s->r[i] > 0) || !isfinite(s->r[i])) /* fmin passed over a NaN radius: the others' step */
+            return NAN;
         rmin = fmin(rmin, s->r[i]);
+    }
     rmin = fmin(rmin, ip->rb_rm * s->rm);
     const double ms = 0.5 * gw_layer_mass(lp, rmin), K = gw_layer_kn(lp, rmin);
     const double beta = tgamma(0.4) * tgamma(0.5) / tgamma(0.9); /* B(2/5, 1/2) */

@@ -29,7 +29,8 @@
  *     gw_outset_check_input given no name wrote "(null): ..."; gw_fnv1a64_file
  *     with h NULL read the file and said "read failed" (GW_EIO);
  *   - gw_layer_sample_porosity left a disc of a NaN or infinite coordinate or
- *     radius, or of r <= 0, out and gave the porosity of the others.
+ *     radius, or of r <= 0, out and gave the porosity of the others, and
+ *     gw_layer_impact_dem_dt the step of the others for a NaN radius.
  * Each refusal has a control: the valid call next to it gives its value
  * (the same hash with a body per disc given or not, work = the integral of
  * the force, the fall speed sqrt(2 g h), the scalings of the closed forms).
@@ -124,6 +125,17 @@ static int porosity_bad_disc(void)
         EXPECT(isnan(gw_layer_sample_porosity(&s)));
         r[1] = 0.1;
     }
+    /* the impact's step likewise: a NaN radius gave the others' 5e-6 s */
+    gw_layer_params lp = gw_layer_params_default();
+    gw_layer_impact_params ip = gw_layer_impact_params_default();
+    const double dt = gw_layer_impact_dem_dt(&s, &lp, &ip);
+    EXPECT(dt > 0);
+    r[1] = NAN;
+    EXPECT(isnan(gw_layer_impact_dem_dt(&s, &lp, &ip)));
+    r[1] = INFINITY;
+    EXPECT(isnan(gw_layer_impact_dem_dt(&s, &lp, &ip)));
+    r[1] = 1e-3; /* control: a smaller disc, a shorter step */
+    EXPECT(gw_layer_impact_dem_dt(&s, &lp, &ip) < dt);
     r[1] = -0.1;
     EXPECT(isnan(gw_layer_sample_porosity(&s)));
     r[1] = 0;
@@ -347,7 +359,8 @@ int main(void)
         case_fn fn;
     } cases[] = {
         {"gw_layer_sample_pile_hash/gw_layer_impact_check: samples filled by hand", pile_hash_hand},
-        {"gw_layer_sample_porosity: a disc of NaN or infinite coordinates or radius, or r <= 0", porosity_bad_disc},
+        {"gw_layer_sample_porosity/gw_layer_impact_dem_dt: a disc of NaN or infinite values, or r <= 0",
+         porosity_bad_disc},
         {"gw_stats_json/gw_stats_write_files: analyses filled by hand", stats_analysis_hand},
         {"gw_thornton_force/_loading_work: NULL and NaN overlaps", thornton_nan},
         {"gw_layer_law_force/_energy/_overlap/_contact_radius: NULL and NaN", layer_law_nan},

@@ -28,6 +28,12 @@
  *   - gw_solver_tolerances_check, gw_out_names_check and
  *     gw_outset_check_input given no name wrote "(null): ..."; gw_fnv1a64_file
  *     with h NULL read the file and said "read failed" (GW_EIO);
+ *   - the sweep journal's scan, open and resume check, gw_sweep_write_table
+ *     and gw_sweep_out_inputs_check read a gw_sweep_config of 33 keys or
+ *     inputs counted without their array (SIGSEGV) and took a key of no
+ *     values or a case count not the grid's (GW_OK), where the sweep's run
+ *     and case calls refuse them (gw_sweep_config_check, the thirty-ninth
+ *     pass);
  *   - gw_layer_sample_porosity left a disc of a NaN or infinite coordinate or
  *     radius, or of r <= 0, out and gave the porosity of the others, and
  *     gw_layer_impact_dem_dt the step of the others for a NaN radius.
@@ -318,6 +324,61 @@ static int falcon_speeds(void)
     return 0;
 }
 
+/* ---- a sweep config filled by hand, at the journal and the table ---- */
+
+static const char cfg_text[] = "[sweep]\nmodel = chain\n[grid]\nn = 1:3\nvimp = 0.1, 0.2\n[params]\nt-max = 1e-3\n";
+
+/* the journal's scan, open and resume check, the table's writer and the
+ * outputs' check read a config of 33 keys or inputs counted without their
+ * array past its struct or through NULL (SIGSEGV), and took a key of no
+ * values or a case count not the grid's (GW_OK; the table "lost rows") */
+static int sweep_journal_hand(void)
+{
+    int nm;
+    const gw_sweep_model *const *ms = gw_sweep_models(&nm);
+    char dir[] = "/tmp/gw_hostile40s.XXXXXX", path[64];
+    EXPECT(mkdtemp(dir) != NULL);
+    for (int mode = 0; mode < 5; mode++) {
+        gw_sweep_config cfg;
+        const gw_sweep_model *m = NULL;
+        gw_err e = {{0}};
+        memset(&cfg, 0, sizeof cfg);
+        EXPECT(gw_sweep_config_read_string(cfg_text, "t", ms, nm, &cfg, &m, &e) == GW_OK && cfg.ncases == 6);
+        const int ng = cfg.ngrid, nv = cfg.grid[1].nvalues;
+        const char *named = "";
+        if (mode == 0)
+            cfg.ngrid = GW_SWEEP_MAX_KEYS + 1, named = "33 grid keys";
+        else if (mode == 1)
+            cfg.grid[1].nvalues = 0, named = "has 0 values";
+        else if (mode == 2)
+            cfg.ninputs = 3, named = "3 inputs and no array";
+        else if (mode == 3)
+            cfg.ncases = 7, named = "ncases 7";
+        char done[8] = {0};
+        long nd = 5;
+        int fd = 7, dfd = 7, ex = 0, th = 0;
+        size_t torn = 0;
+        if (mode < 4) {
+            EXPECT(refused(gw_sweep_journal_scan(dir, &cfg, done, &nd, &e), &e, named) && nd == 0);
+            EXPECT(refused(gw_sweep_journal_open(dir, &cfg, done, &nd, &fd, &e), &e, named) && fd == -1);
+            EXPECT(refused(gw_sweep_journal_open_at(dir, &cfg, done, &nd, &fd, &dfd, &e), &e, named) && fd == -1);
+            EXPECT(refused(gw_sweep_journal_resume_check(dir, &cfg, done, &nd, &ex, &torn, &th, &e), &e, named));
+            EXPECT(refused(gw_sweep_out_inputs_check(dir, &cfg, &e), &e, named));
+            EXPECT(refused(gw_sweep_write_table(dir, &cfg, m, &e), &e, named));
+            snprintf(path, sizeof path, "%s/journal.csv", dir);
+            struct stat st;
+            EXPECT(stat(path, &st) != 0); /* nothing made */
+        } else { /* control: the config as read scans an empty directory */
+            EXPECT(gw_sweep_journal_scan(dir, &cfg, done, &nd, &e) == GW_OK && nd == 0);
+            EXPECT(gw_sweep_out_inputs_check(dir, &cfg, &e) == GW_OK);
+        }
+        cfg.ngrid = ng, cfg.grid[1].nvalues = nv, cfg.ninputs = 0;
+        gw_sweep_config_free(&cfg);
+    }
+    rmdir(dir);
+    return 0;
+}
+
 /* ---- messages of checks given no name, a hash with nowhere to go ---- */
 
 static int unnamed_messages(void)
@@ -368,6 +429,9 @@ int main(void)
         {"gw_layer_kt_factor/gw_chain_kc/gw_chain_disp_kappa: off their domain", closed_forms},
         {"gw_chain_falcon_speeds: NaN and infinite gravity, negative counts", falcon_speeds},
         {"gw_solver_tolerances_check/gw_out_names_check/gw_outset_check_input/gw_fnv1a64_file", unnamed_messages},
+        {"gw_sweep_journal_scan/_open/_open_at/_resume_check/gw_sweep_write_table/gw_sweep_out_inputs_check: "
+         "configs filled by hand",
+         sweep_journal_hand},
     };
     for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++)
         child_case(cases[k].label, cases[k].fn, &nfail, &ncases);

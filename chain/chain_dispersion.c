@@ -56,6 +56,8 @@ gw_chain_disp_params gw_chain_disp_params_default(void)
 
 double gw_chain_disp_kappa(double k, double f0)
 {
+    if (!(k >= 0) || !(f0 >= 0)) /* cbrt of a negative f0: a negative stiffness */
+        return NAN;
     return 1.5 * pow(k, 2.0 / 3.0) * cbrt(f0);
 }
 

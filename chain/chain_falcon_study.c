@@ -403,8 +403,17 @@ int gw_chain_falcon_sizes_check(long a, long b, gw_err *err)
 int gw_chain_falcon_speeds(const double *vimp, int n_vimp, const double *heights_mm, int n_heights, double gravity,
                            double *v, double *h_mm, gw_err *err)
 {
+    /* a negative count was "both empty" (n_vimp -1 with a height given);
+     * gravity NaN fell as Earth's and infinite gave speeds of inf m/s, refused
+     * as two speeds "within a relative -nan" of each other */
+    if (n_vimp < 0 || n_heights < 0)
+        return gw_err_set(err, GW_EINVAL, "gw_chain_falcon_speeds: %s = %d is negative",
+                          n_vimp < 0 ? "n_vimp" : "n_heights", n_vimp < 0 ? n_vimp : n_heights);
+    if (!(gravity >= 0 && gravity <= 1e4))
+        return gw_err_set(err, GW_EINVAL, "gravity: %g m/s^2 is outside [0, 10000]",
+                          gravity);
     int nv = n_vimp + n_heights;
-    if (nv <= 0 || n_vimp < 0 || n_heights < 0)
+    if (nv <= 0)
         return gw_err_set(err, GW_EINVAL, "vimp: no impact velocity (vimp and heights both empty)");
     if (!v || (n_vimp && !vimp) || (n_heights && !heights_mm))
         return gw_err_set(err, GW_EINVAL, "gw_chain_falcon_speeds: a list is NULL");

@@ -505,6 +505,11 @@ void gw_layer_law_free(gw_layer_law *l)
 
 double gw_layer_law_force(const gw_layer_law *l, double d, double *stiffness)
 {
+    if (!l || isnan(d)) { /* NULL was read (SIGSEGV), a NaN overlap gave 0 N */
+        if (stiffness)
+            *stiffness = NAN;
+        return NAN;
+    }
     if (!(d > 0)) {
         if (stiffness)
             *stiffness = 0.0;
@@ -518,6 +523,8 @@ double gw_layer_law_force(const gw_layer_law *l, double d, double *stiffness)
 
 double gw_layer_law_energy(const gw_layer_law *l, double d)
 {
+    if (!l || isnan(d))
+        return NAN;
     if (!(d > 0))
         return 0.0;
     double s = log(d / l->dscale), u;
@@ -537,6 +544,8 @@ double gw_layer_law_energy(const gw_layer_law *l, double d)
 
 double gw_layer_law_overlap(const gw_layer_law *l, double f)
 {
+    if (!l || isnan(f))
+        return NAN;
     if (!(f > 0))
         return 0.0;
     double target = log(f / l->fscale), lo = l->s0 - 40.0, hi = l->s0 + N_GRID * l->ds + 40.0, sl;
@@ -552,6 +561,8 @@ double gw_layer_law_overlap(const gw_layer_law *l, double f)
 
 double gw_layer_law_contact_radius(const gw_layer_law *l, double d)
 {
+    if (!l || isnan(d))
+        return NAN;
     if (!(d > 0))
         return 0.0;
     double s = log(d / l->dscale), x = (s - l->s0) / l->ds;

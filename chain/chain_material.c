@@ -110,6 +110,8 @@ double gw_chain_tq_theory(double m, double k, double v)
 
 double gw_chain_kc(double k)
 {
+    if (!(k >= 0)) /* a negative k gave a negative K_c */
+        return NAN;
     return pow(gw_chain_tau_constant() / 4.0, 2.5) * 1.25 * k;
 }
 

@@ -55,8 +55,15 @@ static double thornton_loading(const gw_thornton *t, double dm)
 double gw_thornton_force(const gw_thornton *t, double d, double dmax, double *stiffness,
                          double *residual, double *energy)
 {
-    if (!t)
+    if (!t || isnan(d) || isnan(dmax)) { /* a NaN overlap fell to the unloaded branch: force 0 */
+        if (stiffness)
+            *stiffness = NAN;
+        if (residual)
+            *residual = NAN;
+        if (energy)
+            *energy = NAN;
         return NAN;
+    }
     double dm = d > dmax ? d : dmax, rp = t->radius, dp = 0.0, f = 0.0, kd = 0.0;
     if (dm > t->d_y) {
         double fs = thornton_loading(t, dm);
@@ -83,6 +90,8 @@ double gw_thornton_force(const gw_thornton *t, double d, double dmax, double *st
 
 double gw_thornton_loading_work(const gw_thornton *t, double dmax)
 {
+    if (!t || isnan(dmax)) /* NULL was read (SIGSEGV), NaN was no loading: 0 J */
+        return NAN;
     if (!(dmax > 0))
         return 0.0;
     double c = 4.0 / 3.0 * t->estar * sqrt(t->radius);

@@ -53,7 +53,8 @@ double gw_chain_fmax1(double m, double K, double v);
 /* Analytic deformation-wave time T_q = 2 (m/k)^(2/5) v^(-1/5) (F.17 with C3 = 2),
  * and speed v = 4R/T_q (F.27). */
 double gw_chain_tq_theory(double m, double k, double v);
-/* Critical wall coefficient K_c = (tau_c/4)^(5/2) (5k/4) (F.22), tau_c = 2.943. */
+/* Critical wall coefficient K_c = (tau_c/4)^(5/2) (5k/4) (F.22), tau_c = 2.943;
+ * NaN for k negative or NaN (a negative K_c before session 34). */
 double gw_chain_kc(double k);
 
 /* Sheets of the paper's Table 2 (soft walls; names: none, brass, tape, pvc,
@@ -119,7 +120,9 @@ int gw_layer_law_create(double radius, const gw_material *bead, double thickness
 /* Drop the reference a create gave (each create is paired with one free, in any
  * order across holders and threads); NULL is nothing. */
 void gw_layer_law_free(gw_layer_law *l);
-/* Force (N) at overlap d (m), 0 for d <= 0; *stiffness = dF/dd (may be NULL). */
+/* Each of these four is NaN for l NULL or a NaN d or f (before session 34 they
+ * read NULL, SIGSEGV, and gave 0 for NaN, no contact).
+ * Force (N) at overlap d (m), 0 for d <= 0; *stiffness = dF/dd (may be NULL). */
 double gw_layer_law_force(const gw_layer_law *l, double d, double *stiffness);
 /* Stored energy int_0^d F (J). */
 double gw_layer_law_energy(const gw_layer_law *l, double d);
@@ -153,10 +156,12 @@ typedef struct gw_thornton {
 void gw_thornton_init(gw_thornton *t, double estar, double radius, double p_y);
 /* Force at overlap d after a largest overlap dmax (the force uses max(d, dmax)):
  * *stiffness dF/dd, *residual d_p, *energy the elastic energy recovered on
- * unloading from d (each may be NULL). */
+ * unloading from d (each may be NULL). t NULL, d or dmax NaN: NaN, and NaN
+ * into each (a NaN overlap gave 0 N before session 34). */
 double gw_thornton_force(const gw_thornton *t, double d, double dmax, double *stiffness,
                          double *residual, double *energy);
-/* Work of loading from 0 to dmax, J. */
+/* Work of loading from 0 to dmax, J; 0 for dmax <= 0, NaN for t NULL (read
+ * before session 34: SIGSEGV) or dmax NaN (0 J before). */
 double gw_thornton_loading_work(const gw_thornton *t, double dmax);
 
 /* ---- model ---- */
@@ -634,7 +639,8 @@ double gw_chain_disp_dt_sample(const gw_chain_disp_params *p);
 
 int gw_chain_disp_params_validate(const gw_chain_disp_params *p, gw_err *err);
 
-/* Linear contact stiffness kappa = (3/2) k^(2/3) f0^(1/3), N/m. */
+/* Linear contact stiffness kappa = (3/2) k^(2/3) f0^(1/3), N/m; NaN for k or
+ * f0 negative or NaN (a negative f0 gave a negative kappa before session 34). */
 double gw_chain_disp_kappa(double k, double f0);
 /* omega(q) = 2 sqrt(kappa/m) |sin(qa/2)|, rad/s, for qa in rad per bead. */
 double gw_chain_disp_omega(double kappa, double m, double qa);

@@ -66,7 +66,9 @@ int gw_chain_study_speeds_check(const double *v, int n, int n_speeds, gw_err *er
 /* The impact velocities of the falcon study, one rule for the program, the
  * library's gw_chain_falcon_run and Python: v[0..n_vimp) the speeds vimp as
  * given, then v[n_vimp + j] = sqrt(2 g h) of the drop height heights_mm[j] (mm),
- * g = gravity (the run's, m/s^2) when > 0, else GW_CHAIN_G_EARTH; h_mm (may be
+ * g = gravity (the run's, m/s^2, the row's [0, 1e4]: NaN, infinite or negative
+ * GW_EINVAL "gravity: ...", and a negative n_vimp or n_heights GW_EINVAL naming
+ * it, since session 34) when > 0, else GW_CHAIN_G_EARTH; h_mm (may be
  * NULL) the heights, NaN for a speed given directly. v and h_mm hold n_vimp +
  * n_heights. Checks, in this order: at least one velocity (GW_EINVAL "vimp: no
  * impact velocity ..."); each value > 0, vimp first ("vimp: X must be > 0",

@@ -140,8 +140,8 @@ int gw_parse_flag(const char *v);
 #define GW_TOL_MIN 1e-15
 #define GW_TOL_MAX 1e-4
 /* Check rtol and atol against [GW_TOL_MIN, GW_TOL_MAX]; rname and aname name the
- * inputs ("chain --rtol"). Used by gw_solver_create and by every command before
- * any work. GW_EINVAL with one line naming the input. */
+ * inputs ("chain --rtol"; NULL: "rtol", "atol"). Used by gw_solver_create and by
+ * every command before any work. GW_EINVAL with one line naming the input. */
 int gw_solver_tolerances_check(double rtol, double atol, const char *rname, const char *aname,
                                gw_err *err);
 
@@ -235,7 +235,8 @@ int gw_outset_begin(gw_outset *s, const char *dir, const char *const *names, gw_
 /* GW_EINVAL (one line naming what and both paths) when the file input is one of
  * the set's names in dir (the same file, by device and inode; for a file not
  * made yet, the same directory and name): the run would replace the file it
- * reads, or write two things under one name. GW_OK otherwise. */
+ * reads, or write two things under one name (what NULL: named "input"). GW_OK
+ * otherwise. */
 int gw_outset_check_input(const char *dir, const char *const *names, const char *input, const char *what,
                           gw_err *err);
 /* Rename the staged files into place and remove the set's names not written,
@@ -314,7 +315,7 @@ int gw_input_read(const char *path, const char *what, size_t max, char **out, si
  * of a file's bytes, printed as 16 lowercase hex digits: a result records the
  * content of its input files besides their names (a file changed later no
  * longer matches). gw_fnv1a64_stream hashes fp from its current position to
- * the end (GW_EIO on a read error); gw_fnv1a64_file opens path as an input
+ * the end (GW_EIO on a read error); gw_fnv1a64_file (h NULL: GW_EINVAL) opens path as an input
  * (gw_input_open: a regular file only). */
 #define GW_FNV1A64_INIT 14695981039346656037ULL
 unsigned long long gw_fnv1a64(unsigned long long h, const void *p, size_t n);
@@ -349,7 +350,7 @@ int gw_out_file_check(const char *path, const char *what, gw_err *err);
  * line naming what and the file. The atomic write refuses them too
  * (gw_afile_open), but only after the run's work. So is a dir whose files,
  * under their temporary names (".tmp.HOST.PID.XXXXXX" longer), would exceed
- * PATH_MAX (mkstemp failed after the run). */
+ * PATH_MAX (mkstemp failed after the run). what NULL: "output", as gw_out_check. */
 int gw_out_names_check(const char *dir, const char *const *names, const char *what, gw_err *err);
 
 /* ---- fits (GSL) ---- */

@@ -74,6 +74,8 @@ int gw_fnv1a64_stream(FILE *fp, unsigned long long *h)
 int gw_fnv1a64_file(const char *path, const char *what, unsigned long long *h, gw_err *err)
 {
     FILE *fp = NULL;
+    if (!h) /* the file was read and its hash refused as "read failed" (GW_EIO) */
+        return gw_err_set(err, GW_EINVAL, "gw_fnv1a64_file: h is NULL");
     int rc = gw_input_open(path, what, &fp, err);
     if (rc != GW_OK)
         return rc;

@@ -154,6 +154,7 @@ int gw_outset_check_input(const char *dir, const char *const *names, const char 
     struct stat in, st;
     if (!dir || !names || !input || !*input)
         return GW_OK;
+    what = what ? what : "input"; /* as gw_input_check; "(null): ..." before session 34 */
     if (stat(input, &in) != 0) { /* a file still to make (wisdom): the same directory and name */
         char d[4096];
         if (gw_snprintf(d, sizeof d, "%s", input) >= (int)sizeof d)

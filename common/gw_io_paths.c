@@ -258,6 +258,7 @@ int gw_out_names_check(const char *dir, const char *const *names, const char *wh
 {
     if (!dir || !names)
         return GW_OK;
+    what = what ? what : "output"; /* as gw_out_check; "(null): ..." before session 34 */
     for (int k = 0; names[k]; k++) {
         char p[4096 + 256], target[4096];
         struct stat st;

@@ -84,13 +84,16 @@ gw_layer_params gw_layer_params_default(void);
 int gw_layer_params_validate(const gw_layer_params *p, gw_err *err);
 
 /* Hertz normal coefficient K_n (B.3) and Mindlin factor k_t with
- * K_t = k_t F_n^(1/3) (B.4) for the mean radius R_p (m). */
+ * K_t = k_t F_n^(1/3) (B.4) for the mean radius R_p (m); NaN for p NULL or
+ * R_p negative or NaN (k_t was negative there before session 34). */
 double gw_layer_kn(const gw_layer_params *p, double rp);
 double gw_layer_kt_factor(const gw_layer_params *p, double rp);
 /* Mass (kg) and moment of inertia (kg m^2) of a particle of radius r. */
 double gw_layer_mass(const gw_layer_params *p, double r);
 double gw_layer_inertia(const gw_layer_params *p, double r);
-/* "disc (unit thickness)" or "sphere"; "sum" or "union". */
+/* "disc (unit thickness)" or "sphere"; "sum" or "union"; "unknown" for a
+ * value that is none of them (before session 34 it was named "disc" or "sum",
+ * the law a run does not take). */
 const char *gw_layer_mass_law_name(int mass_law);
 const char *gw_layer_clump_mass_name(int clump_mass);
 /* The GW_LAYER_CLUMP_MASS_* that gw_layer_clump_mass_name names ("sum",
@@ -500,7 +503,9 @@ int gw_layer_make_result_warnings(const gw_layer_make_result *r, double t_max, c
  * union's boundary; before session 21 a 600 x 600 sampling grid, which
  * aliased on lattices). In [0, 1]; NaN when the window is empty (width or h
  * not positive and finite), the sample counts discs without its x, y or r,
- * or an allocation fails. */
+ * holds a disc of a coordinate not finite or a radius not > 0 (such a disc
+ * was left out before session 34: the porosity of the others), or an
+ * allocation fails. */
 double gw_layer_sample_porosity(const gw_layer_sample *s);
 
 /* --------------------------------------------------------------- impact ---- */
@@ -547,7 +552,8 @@ typedef struct gw_layer_impact_params {
 
 gw_layer_impact_params gw_layer_impact_params_default(void);
 enum { GW_LAYER_UNTIL_REBOUND = 0, GW_LAYER_UNTIL_VERDICT = 1 };
-/* "rebound" or "verdict"; and back (-1 for any other string). */
+/* "rebound" or "verdict" ("unknown" for another value: "rebound" before
+ * session 34); and back (-1 for any other string). */
 const char *gw_layer_until_name(int until);
 int gw_layer_until_parse(const char *name);
 
@@ -718,7 +724,9 @@ double gw_layer_settled_load_ratio(const gw_layer_sample *s, const gw_layer_para
  * trajectory, hence the outcome, does not depend on dt_out. When ip->dt_out is
  * not a multiple of that step (gw_layer_impact_dt_divides), the largest divisor
  * of it below: dt_out / ceil(dt_out / step), so that every sample still ends a
- * step and the steps stay equal. s. */
+ * step and the steps stay equal. s. NaN for a sample no run takes
+ * (gw_layer_impact_check's form) or a radius not finite and > 0 (a NaN
+ * radius gave the other discs' step before session 34). */
 #define GW_LAYER_DEM_STEPS 100
 #define GW_LAYER_DEM_BASE 1e-5
 double gw_layer_impact_dem_dt(const gw_layer_sample *s, const gw_layer_params *lp,
@@ -794,8 +802,12 @@ int gw_layer_sweep_run_part(int nkeys, const char *const *names, const char *con
  * lists the particles, nor the numbers it gives its clumps, which change a
  * run only to rounding (the summation order of the contact forces); but the
  * same discs grouped into other clumps are another pile. Nor the records a
- * run does not read (seed, porosity, volume_ratio). 0 for s NULL, or when the
- * bodies of a clump sample cannot be gathered (out of memory for 9 bytes a
+ * run does not read (seed, porosity, volume_ratio). 0 for s NULL, for a
+ * sample no run takes (gw_layer_impact_check's form: n < 1, x, y or r NULL, a
+ * body id outside [0, n), a negative n_springs, springs counted without their
+ * array or a spring's pair out of range; before session 34 such a sample was
+ * read through its NULL arrays or hashed as another one), or when the bodies
+ * of a clump sample cannot be gathered (out of memory for 9 bytes a
  * particle); never fails otherwise. */
 unsigned long long gw_layer_sample_pile_hash(const gw_layer_sample *s);
 

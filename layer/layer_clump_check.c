@@ -85,7 +85,8 @@ int layer_bodies_check(int n, const double *x, const double *y, const double *r,
 
 const char *gw_layer_clump_mass_name(int clump_mass)
 {
-    return clump_mass == GW_LAYER_CLUMP_MASS_UNION ? "union" : "sum";
+    return clump_mass == GW_LAYER_CLUMP_MASS_UNION ? "union" : clump_mass == GW_LAYER_CLUMP_MASS_SUM ? "sum"
+                                                                                                 : "unknown";
 }
 
 int gw_layer_clump_mass_parse(const char *name)

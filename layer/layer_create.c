@@ -67,14 +67,14 @@ int gw_layer_params_validate(const gw_layer_params *p, gw_err *err)
 
 double gw_layer_kn(const gw_layer_params *p, double rp)
 {
-    if (!p)
+    if (!p || !(rp >= 0))
         return NAN;
     return 2.0 * sqrt(2.0 * rp) * p->shear_modulus / (3.0 * (1.0 - p->poisson));
 }
 
 double gw_layer_kt_factor(const gw_layer_params *p, double rp)
 {
-    if (!p)
+    if (!p || !(rp >= 0)) /* cbrt of a negative rp gave a negative factor, where K_n is NaN */
         return NAN;
     double G = p->shear_modulus, nu = p->poisson;
     return 2.0 * cbrt(3.0 * G * G * (1.0 - nu) * rp) / (2.0 - nu);
@@ -99,7 +99,8 @@ double gw_layer_inertia(const gw_layer_params *p, double r)
 
 const char *gw_layer_mass_law_name(int mass_law)
 {
-    return mass_law == GW_LAYER_MASS_SPHERE ? "sphere" : "disc (unit thickness)";
+    return mass_law == GW_LAYER_MASS_SPHERE ? "sphere" : mass_law == GW_LAYER_MASS_DISC ? "disc (unit thickness)"
+                                                                                      : "unknown";
 }
 
 int gw_layer_create(const gw_layer_params *p, int n, const gw_layer_body *b, gw_layer **out,

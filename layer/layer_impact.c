@@ -55,7 +55,7 @@ gw_layer_impact_params gw_layer_impact_params_default(void)
 
 const char *gw_layer_until_name(int until)
 {
-    return until == GW_LAYER_UNTIL_VERDICT ? "verdict" : "rebound";
+    return until == GW_LAYER_UNTIL_VERDICT ? "verdict" : until == GW_LAYER_UNTIL_REBOUND ? "rebound" : "unknown";
 }
 
 int gw_layer_until_parse(const char *name)
@@ -149,28 +149,11 @@ static double ceil4(double v)
     return ceil(v / step * (1 + 1e-12)) * step;
 }
 
-/* A sample built in memory as the impact reads it: particles with their
- * arrays, body ids in [0, n) (a NULL x was read, SIGSEGV; a body id 99 of 3
- * particles was written past the run's arrays), no negative spring count. */
-static int sample_shape(const gw_layer_sample *smp, gw_err *err)
-{
-    if (smp->n < 1 || !smp->x || !smp->y || !smp->r)
-        return gw_err_set(err, GW_EINVAL, "sample 's': n = %d particles%s%s%s (at least one, with x, y and r)",
-                          smp->n, smp->x ? "" : ", x NULL", smp->y ? "" : ", y NULL", smp->r ? "" : ", r NULL");
-    for (int i = 0; smp->body && i < smp->n; i++)
-        if (smp->body[i] < 0 || smp->body[i] >= smp->n)
-            return gw_err_set(err, GW_EINVAL, "sample 's': particle %d: body id %d is outside [0, %d)", i,
-                              smp->body[i], smp->n);
-    if (smp->n_springs < 0)
-        return gw_err_set(err, GW_EINVAL, "sample 's': n_springs = %d is negative", smp->n_springs);
-    return GW_OK;
-}
-
 int gw_layer_impact_check(const gw_layer_sample *smp, const gw_layer_impact_params *p, gw_err *err)
 {
     if (!smp || !p)
         return gw_err_set(err, GW_EINVAL, "gw_layer_impact_check: %s is NULL", !smp ? "s" : "ip");
-    int rc = sample_shape(smp, err);
+    int rc = layer_sample_shape_check(smp, "s", err);
     if (rc != GW_OK)
         return rc;
     if (!(p->rb_rm > 0) || !isfinite(p->rb_rm))
@@ -394,11 +377,14 @@ int layer_rest_check(const gw_layer_sample *smp, const gw_layer_params *lp, int 
 double gw_layer_impact_dem_dt(const gw_layer_sample *s, const gw_layer_params *lp,
                               const gw_layer_impact_params *ip)
 {
-    if (!s || !lp || !ip || sample_shape(s, NULL) != GW_OK)
+    if (!s || !lp || !ip || layer_sample_shape_check(s, "s", NULL) != GW_OK)
         return NAN;
     double rmin = INFINITY;
-    for (int i = 0; i < s->n; i++)
+    for (int i = 0; i < s->n; i++) {
+        if (!(s->r[i] > 0) || !isfinite(s->r[i])) /* fmin passed over a NaN radius: the others' step */
+            return NAN;
         rmin = fmin(rmin, s->r[i]);
+    }
     rmin = fmin(rmin, ip->rb_rm * s->rm);
     const double ms = 0.5 * gw_layer_mass(lp, rmin), K = gw_layer_kn(lp, rmin);
     const double beta = tgamma(0.4) * tgamma(0.5) / tgamma(0.9); /* B(2/5, 1/2) */

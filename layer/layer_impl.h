@@ -539,8 +539,9 @@ int layer_result_shape(const gw_layer_impact_result *r, int whole, gw_err *err);
  * "sample 'WHAT'" when s would be refused on reading. */
 int layer_sample_readable(const gw_layer_sample *s, const char *what, gw_err *err);
 
-/* gw_layer_sample_pile_hash of s into *h, GW_OK; GW_ENOMEM (*h 0) when the
- * bodies of a clump sample cannot be gathered (layer_sample_pile.c). */
+/* gw_layer_sample_pile_hash of s into *h, GW_OK; GW_EINVAL (*h 0) for a
+ * sample layer_sample_shape_check refuses, GW_ENOMEM (*h 0) when the bodies
+ * of a clump sample cannot be gathered (layer_sample_pile.c). */
 int layer_sample_pile_hash(const gw_layer_sample *s, unsigned long long *h);
 
 /* A sample's settling verdicts under the materials it was checked under (lp
@@ -652,6 +653,14 @@ int layer_clump_shape(double req, double aspect, double angle, double *ox, doubl
  * "sample 'PATH': line L: ..." (lines[k] the file's line of spring k; NULL:
  * "spring at index k"), GW_ENOMEM. */
 int layer_springs_check(const gw_layer_sample *s, const char *path, const long *lines, int status, gw_err *err);
+/* A sample built in memory as a run reads it, before any of it is read
+ * (layer_sample_check.c): n >= 1 particles with their x, y and r, body ids in
+ * [0, n), n_springs >= 0 and, above 0, its springs array with each pair in
+ * range (a in [0, n), b in [0, n) or a wall, a != b). GW_EINVAL naming the
+ * field, "sample 'PATH': ...". Shared by the impact's checks and the pile's
+ * hash (which hashed what it found: ids outside [0, n) as bodies of their
+ * own, springs counted without their array as none). */
+int layer_sample_shape_check(const gw_layer_sample *s, const char *path, gw_err *err);
 /* The springs of L's contacts (its state's F_t, clamped to the cap) as
  * displacements at the overlaps of the discs x, y, r of a box of width
  * width (the positions a sample is written with; contacts open there are

@@ -103,6 +103,28 @@ int layer_sample_particle_check(double width, double rm, double x, double y, dou
     return GW_OK;
 }
 
+int layer_sample_shape_check(const gw_layer_sample *s, const char *path, gw_err *err)
+{
+    if (s->n < 1 || !s->x || !s->y || !s->r)
+        return gw_err_set(err, GW_EINVAL, "sample '%s': n = %d particles%s%s%s (at least one, with x, y and r)",
+                          path, s->n, s->x ? "" : ", x NULL", s->y ? "" : ", y NULL", s->r ? "" : ", r NULL");
+    for (int i = 0; s->body && i < s->n; i++)
+        if (s->body[i] < 0 || s->body[i] >= s->n)
+            return gw_err_set(err, GW_EINVAL, "sample '%s': particle %d: body id %d is outside [0, %d)", path, i,
+                              s->body[i], s->n);
+    if (s->n_springs < 0)
+        return gw_err_set(err, GW_EINVAL, "sample '%s': n_springs = %d is negative", path, s->n_springs);
+    if (s->n_springs > 0 && !s->springs)
+        return gw_err_set(err, GW_EINVAL, "sample '%s': n_springs = %d with springs NULL", path, s->n_springs);
+    for (int k = 0; k < s->n_springs; k++) {
+        const int a = s->springs[k].a, b = s->springs[k].b;
+        if (a < 0 || a >= s->n || b >= s->n || b < GW_LAYER_SPRING_BOTTOM || a == b)
+            return gw_err_set(err, GW_EINVAL, "sample '%s': spring at index %d: spring %d %d: the pair must be two "
+                              "particles in [0, %d) or a particle and a wall", path, k, a, b, s->n);
+    }
+    return GW_OK;
+}
+
 /* The body ids of a clump sample (none: GW_OK), the message naming the sample. */
 static int check_bodies(const gw_layer_sample *s, const char *path, int status, gw_err *err)
 {

@@ -72,8 +72,7 @@ static unsigned long long disc_hash(const gw_layer_sample *s, int i)
 }
 
 /* The sum of the bodies' B_b into *sum; GW_ENOMEM when the bodies of a clump
- * sample cannot be gathered. A body id outside [0, n) (no sample read from a
- * file has one) makes its disc a body of its own. */
+ * sample cannot be gathered. Body ids in [0, n) (layer_sample_shape_check). */
 static int bodies_sum(const gw_layer_sample *s, unsigned long long *sum)
 {
     *sum = 0;
@@ -89,13 +88,8 @@ static int bodies_sum(const gw_layer_sample *s, unsigned long long *sum)
         free(has);
         return GW_ENOMEM;
     }
-    for (int i = 0; i < s->n; i++) {
-        const int b = s->body[i];
-        if (b >= 0 && b < s->n)
-            acc[b] += disc_hash(s, i), has[b] = 1;
-        else
-            *sum += mix(disc_hash(s, i));
-    }
+    for (int i = 0; i < s->n; i++)
+        acc[s->body[i]] += disc_hash(s, i), has[s->body[i]] = 1;
     for (int b = 0; b < s->n; b++)
         if (has[b])
             *sum += mix(acc[b]);
@@ -111,9 +105,7 @@ static unsigned long long springs_sum(const gw_layer_sample *s)
 {
     unsigned long long sum = 0;
     for (int k = 0; k < s->n_springs; k++) {
-        const gw_layer_spring *q = &s->springs[k];
-        if (q->a < 0 || q->a >= s->n || q->b >= s->n) /* (no sample read or written has one) */
-            continue;
+        const gw_layer_spring *q = &s->springs[k]; /* pairs in range (layer_sample_shape_check) */
         const unsigned long long eb = q->b >= 0 ? disc_hash(s, q->b) : mix(hash_long(GW_FNV1A64_INIT, q->b));
         sum += mix(hash_double(mix(disc_hash(s, q->a) + eb), q->u));
     }
@@ -125,8 +117,13 @@ int layer_sample_pile_hash(const gw_layer_sample *s, unsigned long long *out)
     *out = 0;
     if (!s)
         return GW_OK;
+    /* a sample no run takes is no pile: its x, y or r NULL was read (SIGSEGV),
+     * a body id outside [0, n) hashed as a body of its own and springs counted
+     * without their array as none, each the hash of another sample */
+    if (layer_sample_shape_check(s, "s", NULL) != GW_OK)
+        return GW_EINVAL;
     unsigned long long sum = 0;
-    if (s->x && s->n > 0 && bodies_sum(s, &sum) != GW_OK)
+    if (bodies_sum(s, &sum) != GW_OK)
         return GW_ENOMEM;
     unsigned long long h = GW_FNV1A64_INIT;
     h = hash_long(h, s->n);
@@ -146,7 +143,7 @@ int layer_sample_pile_hash(const gw_layer_sample *s, unsigned long long *out)
         h = hash_long(h, st->clump_mass);
     }
     h = gw_fnv1a64(h, &sum, sizeof sum);
-    if (s->n_springs > 0 && s->springs && s->x) { /* none: the hash of a sample before springs */
+    if (s->n_springs > 0) { /* none: the hash of a sample before springs */
         const unsigned long long ss = springs_sum(s);
         h = gw_fnv1a64(h, &ss, sizeof ss);
     }
@@ -156,6 +153,6 @@ int layer_sample_pile_hash(const gw_layer_sample *s, unsigned long long *out)
 
 unsigned long long gw_layer_sample_pile_hash(const gw_layer_sample *s)
 {
-    unsigned long long h;
+    unsigned long long h = 0;
     return layer_sample_pile_hash(s, &h) == GW_OK ? h : 0;
 }

@@ -188,8 +188,14 @@ double gw_layer_sample_porosity(const gw_layer_sample *s)
     if (!s || s->n < 0 || (s->n > 0 && (!s->x || !s->y || !s->r)))
         return NAN;
     double h = 0;
-    for (int i = 0; i < s->n; i++)
+    for (int i = 0; i < s->n; i++) {
+        /* a disc of a NaN or infinite coordinate or a radius not > 0 is no
+         * disc: it fell out of the window's test and the porosity of the
+         * others was given (a NaN x of 3 discs: 0.548 for 0.322) */
+        if (!isfinite(s->x[i]) || !isfinite(s->y[i]) || !isfinite(s->r[i]) || !(s->r[i] > 0))
+            return NAN;
         h = fmax(h, s->y[i] + s->r[i]);
+    }
     const double x0 = 0.1 * s->width, x1 = 0.9 * s->width, y0 = 0.1 * h, y1 = 0.8 * h;
     const double win[4] = {x0, x1, y0, y1}, xc = (x0 + x1) / 2, area = (x1 - x0) * (y1 - y0);
     if (!(x1 > x0) || !(y1 > y0) || !isfinite(area) || !(area > 0))

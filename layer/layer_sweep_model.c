@@ -335,8 +335,10 @@ static int pile_note(check_memo *c, const char *path, unsigned long long file_ha
     gw_layer_sample bare = *s; /* shallow: the pile the run reads */
     if (zero_springs)
         bare.n_springs = 0;
-    if (layer_sample_pile_hash(&bare, &h) != GW_OK)
-        return gw_err_set(err, GW_ENOMEM, "out of memory");
+    const int hrc = layer_sample_pile_hash(&bare, &h);
+    if (hrc != GW_OK) /* (a sample read from a file has its arrays: only out of memory) */
+        return hrc == GW_ENOMEM ? gw_err_set(err, GW_ENOMEM, "out of memory")
+                                : layer_sample_shape_check(&bare, path, err);
     for (long i = 0; i < c->npiles; i++)
         if (c->piles[i].pile_hash == h && strcmp(c->piles[i].path, path) != 0)
             return gw_err_set(err, GW_EINVAL, "sample: '%s' and '%s' hold the same pile (the same particles, in "

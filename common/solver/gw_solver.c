@@ -78,6 +78,8 @@ int gw_solver_tolerances_check(double rtol, double atol, const char *rname, cons
                                gw_err *err)
 {
     char xs[32];
+    rname = rname ? rname : "rtol"; /* NULL names: "(null): ..." before session 34 */
+    aname = aname ? aname : "atol";
     if (!(rtol >= GW_TOL_MIN && rtol <= GW_TOL_MAX)) /* also refuses NaN */
         return gw_err_set(err, GW_EINVAL, "%s: %s is outside [%g, %g]", rname, gw_num_text(xs, sizeof xs, rtol),
                           GW_TOL_MIN, GW_TOL_MAX);

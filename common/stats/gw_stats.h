@@ -390,7 +390,11 @@ typedef struct gw_stats_analysis {
 int gw_stats_analyse(const gw_stats_setup *s, gw_stats_analysis *A, gw_err *err);
 void gw_stats_analysis_free(gw_stats_analysis *A);
 /* Everything as JSON (full = 0: the header and the diagrams only); the
- * command's --json. NULL on ENOMEM. */
+ * command's --json. NULL on ENOMEM, and for an analysis filled by hand whose
+ * counts and arrays do not agree (groups, walls, diagrams counted without
+ * their arrays or naming groups or rows it has not; gw_stats_write_files
+ * refuses it with GW_EINVAL naming the field, writing nothing; both read it
+ * through NULL before session 34). */
 cJSON *gw_stats_json(const gw_stats_analysis *A, int full);
 /* The files of --out DIR (groups.csv, convergence.csv, binary.csv, walls.csv,
  * diagram.csv, boundary_fit.json), placed together (gw_outset): a write that

@@ -270,7 +270,7 @@ static char *row_key_string(const gw_stats_table *t, const gw_stats_groups *gs, 
 /* A table as the groups read it: a table filled by hand with rows and no
  * arrays, more grid keys than the struct holds or a negative row count read
  * past them (SIGSEGV) or asked calloc for SIZE_MAX ("out of memory"). */
-static int table_shape(const gw_stats_table *t, gw_err *err)
+int stats_table_shape(const gw_stats_table *t, gw_err *err)
 {
     if (t->ngrid < 0 || t->ngrid > GW_STATS_MAX_KEYS || t->nparams < 0 || t->nparams > GW_STATS_MAX_KEYS ||
         t->ncols < 0 || t->nrows < 0)
@@ -309,7 +309,7 @@ int gw_stats_groups_make(const gw_stats_table *t, double criterion, gw_stats_gro
     memset(gs, 0, sizeof *gs);
     if (!(criterion > 0 && criterion <= 1))
         return gw_err_set(err, GW_EINVAL, "criterion: %g is not in (0, 1]", criterion);
-    const int shape = table_shape(t, err);
+    const int shape = stats_table_shape(t, err);
     if (shape != GW_OK)
         return shape;
     gs->criterion = criterion;

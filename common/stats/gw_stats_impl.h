@@ -31,4 +31,9 @@ int gw_stats_table_check_hashes(const gw_stats_table *t, gw_err *err);
  * checks that need them are skipped). GW_ENOMEM for a warning not added. */
 int gw_stats_table_bounds(const gw_stats_table *t, const gw_stats_defaults *df, char **warnings, gw_err *err);
 
+/* A table's counts and arrays agree (gw_stats_groups.c): key and param counts
+ * within GW_STATS_MAX_KEYS, the arrays of its rows, keys and columns given,
+ * each named; GW_EINVAL "stats table: ..." otherwise. */
+int stats_table_shape(const gw_stats_table *t, gw_err *err);
+
 #endif

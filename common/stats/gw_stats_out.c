@@ -15,6 +15,7 @@
 
 #include "gw_stats.h"
 #include "gw_locale.h"
+#include "gw_stats_impl.h"
 
 static const char *placement =
     "bouncing lies below the boundary; in each R_b/R_m column H* is placed between the lowest "
@@ -263,9 +264,78 @@ static cJSON *walls_json(const gw_stats_analysis *R)
     return a;
 }
 
+/* An analysis as the JSON and the files read it: its table's shape
+ * (stats_table_shape), the groups' keys and rows within the table, the
+ * binary, walls and diagram lists with their arrays, each wall pair and panel
+ * naming groups it has, a panel's texts ended within their fields and a built
+ * diagram's arrays given. An analysis filled by hand with counts and no arrays
+ * (3 diagrams, 2 groups, 3 walls) was read through NULL (SIGSEGV) before
+ * session 34. GW_EINVAL naming the field. */
+static int analysis_shape(const gw_stats_analysis *R, gw_err *err)
+{
+    const gw_stats_table *t = &R->t;
+    const gw_stats_groups *gs = &R->gs;
+    int rc = stats_table_shape(t, err);
+    if (rc != GW_OK)
+        return rc;
+    if (gs->nkeys < 0 || gs->nkeys > GW_STATS_MAX_KEYS || gs->n < 0 || (gs->n > 0 && !gs->g) ||
+        (gs->n > 0 && gs->point_key >= t->ngrid)) /* (a zeroed analysis: point key 0 of no keys, unread) */
+        return gw_err_set(err, GW_EINVAL, "stats analysis: gs: %d groups%s, %d keys, point key %d (keys in [0, %d], "
+                          "the table's %d)", gs->n, gs->n > 0 && !gs->g ? " without their array" : "", gs->nkeys,
+                          gs->point_key, GW_STATS_MAX_KEYS, t->ngrid);
+    for (int k = 0; k < gs->nkeys; k++)
+        if (gs->key[k] < 0 || gs->key[k] >= t->ngrid)
+            return gw_err_set(err, GW_EINVAL, "stats analysis: gs.key[%d] = %d is not a grid key of the table's %d",
+                              k, gs->key[k], t->ngrid);
+    for (int k = 0; gs->n > 0 && k < gw_stats_table_nrequired; k++)
+        if (gw_stats_table_col(t, gw_stats_table_required[k]) < 0)
+            return gw_err_set(err, GW_EINVAL, "stats analysis: groups of a table without its column '%s'",
+                              gw_stats_table_required[k]);
+    for (int a = 0; a < gs->n; a++) {
+        const gw_stats_group *g = &gs->g[a];
+        if (g->first < 0 || g->first >= t->nrows || g->n < 0 ||
+            (g->n > 0 && (!g->rows || !g->run_e_n || !g->run_e || !g->run_share)))
+            return gw_err_set(err, GW_EINVAL, "stats analysis: group %d: first row %ld, %d rows%s (rows in [0, %ld))",
+                              a, g->first, g->n, g->n > 0 && !g->rows ? " without their array" : "", t->nrows);
+        for (int k = 0; k < g->n; k++)
+            if (g->rows[k] < 0 || g->rows[k] >= t->nrows)
+                return gw_err_set(err, GW_EINVAL, "stats analysis: group %d: row %ld is outside [0, %ld)", a,
+                                  g->rows[k], t->nrows);
+    }
+    if (R->nbin < 0 || (R->nbin > 0 && !R->bin) || R->nwalls < 0 || (R->nwalls > 0 && !R->walls) || R->ndia < 0 ||
+        (R->ndia > 0 && !R->dia))
+        return gw_err_set(err, GW_EINVAL, "stats analysis: nbin %d, nwalls %d, ndia %d (>= 0, with their arrays: "
+                          "bin %s, walls %s, dia %s)", R->nbin, R->nwalls, R->ndia, R->bin ? "given" : "NULL",
+                          R->walls ? "given" : "NULL", R->dia ? "given" : "NULL");
+    for (int k = 0; k < R->nwalls; k++)
+        for (int w = 0; w < 2; w++)
+            if (R->walls[k][w] < 0 || R->walls[k][w] >= gs->n)
+                return gw_err_set(err, GW_EINVAL, "stats analysis: walls[%d][%d] = %d is not one of the %d groups", k,
+                                  w, R->walls[k][w], gs->n);
+    for (int q = 0; q < R->ndia; q++) {
+        const gw_stats_panel *D = &R->dia[q];
+        if (D->ngroups < 1 || !D->groups)
+            return gw_err_set(err, GW_EINVAL, "stats analysis: diagram %d: %d groups%s (at least one)", q,
+                              D->ngroups, D->groups ? "" : ", groups NULL");
+        for (int k = 0; k < D->ngroups; k++)
+            if (D->groups[k] < 0 || D->groups[k] >= gs->n)
+                return gw_err_set(err, GW_EINVAL, "stats analysis: diagram %d: group %d is not one of the %d groups",
+                                  q, D->groups[k], gs->n);
+        if (!memchr(D->reason, '\0', sizeof D->reason) || !memchr(D->fit_reason, '\0', sizeof D->fit_reason))
+            return gw_err_set(err, GW_EINVAL, "stats analysis: diagram %d: its %s has no NUL within its %zu bytes", q,
+                              memchr(D->reason, '\0', sizeof D->reason) ? "fit_reason" : "reason",
+                              sizeof D->reason);
+        const gw_stats_diagram *d = &D->d;
+        if (D->ok && (d->nx < 1 || d->nh < 0 || !d->xs || !d->pts || (d->nh > 0 && (!d->hs || !d->share || !d->pen))))
+            return gw_err_set(err, GW_EINVAL, "stats analysis: diagram %d: built (ok) with %d x %d cells%s", q, d->nx,
+                              d->nh, d->nx < 1 || d->nh < 0 ? "" : " without their arrays");
+    }
+    return GW_OK;
+}
+
 cJSON *gw_stats_json(const gw_stats_analysis *R, int full)
 {
-    if (!R)
+    if (!R || analysis_shape(R, NULL) != GW_OK)
         return NULL;
     const gw_stats_table *t = &R->t;
     cJSON *o = cJSON_CreateObject();
@@ -528,7 +598,9 @@ int gw_stats_write_files(const gw_stats_analysis *R, const char *dir, gw_err *er
         return gw_err_set(err, GW_EINVAL, "gw_stats_write_files: %s is NULL", !R ? "A" : "dir");
     gw_outset set;
     memset(&set, 0, sizeof set);
-    int rc = gw_mkdir_p(dir, err);
+    int rc = analysis_shape(R, err); /* before the directory is made */
+    if (rc == GW_OK)
+        rc = gw_mkdir_p(dir, err);
     if (rc == GW_OK)
         rc = gw_outset_begin(&set, dir, stats_files, err);
     char path[4096];

@@ -274,6 +274,9 @@ int gw_sweep_out_inputs_check(const char *dir, const gw_sweep_config *cfg, gw_er
     static const char *const outs[] = {"journal.csv", "results.csv", NULL};
     if (!dir || !cfg)
         return gw_err_set(err, GW_EINVAL, "gw_sweep_out_inputs_check: %s is NULL", !dir ? "dir" : "cfg");
+    const int shape = gw_sweep_config_check(cfg, err); /* inputs counted without their array: SIGSEGV before */
+    if (shape != GW_OK)
+        return shape;
     if (cfg->path && gw_outset_check_input(dir, outs, cfg->path, "sweep CONFIG", err) != GW_OK)
         return GW_EINVAL;
     for (int i = 0; i < cfg->ninputs; i++)

@@ -588,6 +588,14 @@ static int journal_access(const char *dir, const gw_sweep_config *cfg, char *don
     *ndone = 0;
     if (fdp)
         *fdp = -1;
+    /* a config filled by hand (33 grid keys, inputs counted without their
+     * array) was read past its struct or through NULL (SIGSEGV) by the
+     * journal's scan, open and resume check before session 34 */
+    const int shape = gw_sweep_config_check(cfg, err);
+    if (shape != GW_OK)
+        return shape;
+    if (fdp)
+        *fdp = -1;
     if (exists)
         *exists = 1;
     if (gw_path_join(path, sizeof path, dir, "journal.csv") != GW_OK)

@@ -48,6 +48,9 @@ int gw_sweep_write_table_at(int dfd, const char *dir, const gw_sweep_config *cfg
 {
     if (!dir || !cfg || !m)
         return gw_err_set(err, GW_EINVAL, "gw_sweep_write_table_at: %s is NULL", !dir ? "dir" : !cfg ? "cfg" : "m");
+    const int shape = gw_sweep_config_check(cfg, err); /* (as the journal's calls) */
+    if (shape != GW_OK)
+        return shape;
     char path[4096];
     if (gw_path_join(path, sizeof path, dir, "journal.csv") != GW_OK)
         return gw_err_set(err, GW_EINVAL, "%s: path too long", dir);

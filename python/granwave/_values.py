@@ -41,6 +41,10 @@ class Param:
         self.choices = row.choices.decode().split(",") if row.choices else None
         self.rows = row.rows.decode() if row.rows else None
         self.cols = row.cols.decode() if row.cols else None
+        # a text row names a file (sample, out, input: metavar FILE,
+        # RESULTS.csv) unless it holds a list of names (layer_stats' fit:
+        # metavar LIST), which no path object or bytes spells
+        self.is_file = self.type == TEXT and (row.metavar or b"").decode() != "LIST"
 
     def doc(self):
         kind = "one of " + ", ".join(self.choices) if self.type == CHOICE else _TYPE_NAMES[self.type]
@@ -262,6 +266,10 @@ def _text(p, value, most=(_INT_MAX, "")):
     list row takes in this call and why (list_most)."""
     if p.type == FLAG:  # every bool keyword, of every study and sweep, here
         return _flag(p, value)
+    if p.type == TEXT and not p.is_file and not isinstance(value, str):
+        # fit=pathlib.Path("beta,a_over_b") and fit=b"beta" ran as the text;
+        # fit=["beta", "a_over_b"] was told "expected a str or a path"
+        raise TypeError(f"{p.keyword}: expected a str (comma-separated names, \"beta,a_over_b\"), got {_kind(value)}")
     value = _fspath(p.keyword, value)
     if isinstance(value, bytes) and p.type == TEXT:  # a file name as the OS gives it
         value = os.fsdecode(value)

@@ -54,7 +54,6 @@
 #include "granwave.h"
 #include "test_child.h"
 
-static int nfail, ncases;
 
 /* ---- the pile's hash of a sample built in memory ---- */
 
@@ -415,10 +414,7 @@ static int unnamed_messages(void)
 
 int main(void)
 {
-    static const struct {
-        const char *label;
-        case_fn fn;
-    } cases[] = {
+    static const child_row cases[] = {
         {"gw_layer_sample_pile_hash/gw_layer_impact_check: samples filled by hand", pile_hash_hand},
         {"gw_layer_sample_porosity/gw_layer_impact_dem_dt: a disc of NaN or infinite values, or r <= 0",
          porosity_bad_disc},
@@ -433,8 +429,5 @@ int main(void)
          "configs filled by hand",
          sweep_journal_hand},
     };
-    for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++)
-        child_case(cases[k].label, cases[k].fn, &nfail, &ncases);
-    printf("%d of %d cases failed\n", nfail, ncases);
-    return nfail ? 1 : 0;
+    return child_cases_run(cases, sizeof cases / sizeof cases[0]);
 }

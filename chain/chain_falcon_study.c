@@ -116,9 +116,9 @@ static const gw_param falcon_params[] = {
      * every tau_1/10 (the program takes these three from here) */
     GW_CHAIN_MODEL_ROWS_HELP("cvode, arkode or rk4 [rk4 by --accuracy; cvode when a solver option is given or "
                              "the column is outside the step study]",
-                             "RK4 step, s [T_c/M by --accuracy, M = 37 at 1e-6; T_c/400 with --solver rk4]; "
+                             "RK4 step, s, in [0, 1] [0 = T_c/M by --accuracy, M = 37 at 1e-6; T_c/400 with --solver rk4]; "
                              "initial step for cvode/arkode",
-                             "sampling interval for the energy check, s [tau_1/10 of the fastest impact by "
+                             "sampling interval for the energy check, s, in [0, 1] [0 = tau_1/10 of the fastest impact by "
                              "--accuracy, else tau_1/200; the traces every tau_1/50]")
     GW_PARAM_END};
 

@@ -31,7 +31,7 @@ static const gw_param disp_params[] = {
     OCHOICE("ends", ends, "periodic,fixed", "periodic", "KIND", "periodic or fixed [periodic]"),
     OROW("t-samples", GW_PARAM_LONG, t_samples, "", 64, 1 << 24, 0, "2048", "T",
         "velocity samples in time, even [2048]"),
-    OROW("dt-out", GW_PARAM_DOUBLE, dt_out, "s", 0, 1, 0, "0", "DT", "sampling interval, s [pi / (1.25 omega_c)]"),
+    OROW("dt-out", GW_PARAM_DOUBLE, dt_out, "s", 0, 1, 0, "0", "DT", "sampling interval, s, in [0, 1] [0 = pi / (1.25 omega_c)]"),
     OROW("steps-per-sample", GW_PARAM_LONG, steps_per_sample, "", 1, 100000, 0, "16", "K",
         "RK4 steps per sampling interval (rk4 only) [16]"),
     OROW("amp", GW_PARAM_DOUBLE, amp, "", GW_CHAIN_DISP_AMP_MIN, 0.1, 0, "1e-3", "A",

@@ -116,9 +116,9 @@ static const gw_param falcon_params[] = {
      * every tau_1/10 (the program takes these three from here) */
     GW_CHAIN_MODEL_ROWS_HELP("cvode, arkode or rk4 [rk4 by --accuracy; cvode when a solver option is given or "
                              "the column is outside the step study]",
-                             "RK4 step, s [T_c/M by --accuracy, M = 37 at 1e-6; T_c/400 with --solver rk4]; "
+                             "RK4 step, s, in [0, 1] [0 = T_c/M by --accuracy, M = 37 at 1e-6; T_c/400 with --solver rk4]; "
                              "initial step for cvode/arkode",
-                             "sampling interval for the energy check, s [tau_1/10 of the fastest impact by "
+                             "sampling interval for the energy check, s, in [0, 1] [0 = tau_1/10 of the fastest impact by "
                              "--accuracy, else tau_1/200; the traces every tau_1/50]")
     GW_PARAM_END};
 
@@ -430,11 +430,10 @@ int gw_chain_falcon_speeds(const double *vimp, int n_vimp, const double *heights
             h_mm[i] = is_h ? x : NAN;
         v[i] = is_h ? sqrt(2 * g_fall * x * 1e-3) : x;
     }
-    int rc = gw_chain_study_speeds_check(v, nv, n_vimp, err);
-    if (rc != GW_OK)
-        return rc;
-    /* the ranges (after the checks above, the order the command's messages have
-     * always come in): the table's rows (speeds as every chain command takes
+    /* the ranges, before the velocities are compared (a height beyond its row
+     * named as given: --heights 1e308 fell at 2 g h = inf, and the comparison
+     * said "the impact velocity inf m/s, within a relative -nan of item 1 of
+     * vimp"): the table's rows (speeds as every chain command takes
      * them; heights GW_CHAIN_HEIGHT_MIN_MM to GW_CHAIN_HEIGHT_MAX_MM, those
      * speeds at 9.81), and under another gravity each height's fall within the
      * speeds of the row (the smallest height's at 9.81, 0.99e-9 m/s, to
@@ -454,7 +453,7 @@ int gw_chain_falcon_speeds(const double *vimp, int n_vimp, const double *heights
                               "sqrt(2 g h) = %g m/s, outside the impact speeds [%g, %g] m/s", k, x, g_fall, v[i], vlo,
                               GW_CHAIN_VIMP_MAX);
     }
-    return GW_OK;
+    return gw_chain_study_speeds_check(v, nv, n_vimp, err);
 }
 
 static int falcon_run(const gw_chain_falcon_setup *s, gw_progress_fn progress, void *pctx, chain_watch *watch,

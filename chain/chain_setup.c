@@ -131,7 +131,11 @@ int gw_chain_study_speeds_check(const double *v, int n, int n_speeds, gw_err *er
     qsort(s, (size_t)n, sizeof *s, speed_cmp);
     int i = -1, j = n;
     for (int k = 1; k < n; k++) {
-        if (!(s[k].v - s[k - 1].v <= GW_CHAIN_SPEEDS_REL_MIN * s[k].v))
+        /* only finite speeds are near one another: an infinite one (a height
+         * whose 2 g h overflowed) was within inf of every finite one, named as
+         * "within a relative -nan"; the ranges refuse it */
+        if (!isfinite(s[k].v) || !isfinite(s[k - 1].v) ||
+            !(s[k].v - s[k - 1].v <= GW_CHAIN_SPEEDS_REL_MIN * s[k].v))
             continue;
         const int lo = s[k - 1].i < s[k].i ? s[k - 1].i : s[k].i, hi = s[k - 1].i ^ s[k].i ^ lo;
         if (hi < j)
@@ -150,11 +154,15 @@ int gw_chain_study_speeds_check(const double *v, int n, int n_speeds, gw_err *er
      * difference they cannot measure: 0.3 and 0.3 + 1 ulp gave beta -278424
      * and C3 0 with exit 0, a relative 3.3e-9 apart beta 0.179, 3.3e-7 apart
      * 0.1998 (0.2 from speeds far apart) */
-    return gw_err_set(err, GW_EINVAL, "%s: item %d gives the impact velocity %.17g m/s, within a relative %.2g of "
-                      "item %d%s (%.17g m/s): the collisions cannot tell them apart (they resolve a wave speed to "
+    /* each speed in the fewest digits that read back as it (%.17g showed a
+     * given 0.3 as 0.29999999999999999 beside 0.3000000001) */
+    char vj[32], vi[32];
+    return gw_err_set(err, GW_EINVAL, "%s: item %d gives the impact velocity %s m/s, within a relative %.2g of "
+                      "item %d%s (%s m/s): the collisions cannot tell them apart (they resolve a wave speed to "
                       "about 1e-10), it would count twice in the fits and their exponent over v_imp rest on the "
-                      "difference; give speeds at least a relative %g apart", what, jj, v[j],
-                      fabs(v[j] - v[i]) / fmax(v[i], v[j]), ii, of, v[i], GW_CHAIN_SPEEDS_REL_MIN);
+                      "difference; give speeds at least a relative %g apart", what, jj, gw_num_text(vj, sizeof vj, v[j]),
+                      fabs(v[j] - v[i]) / fmax(v[i], v[j]), ii, of, gw_num_text(vi, sizeof vi, v[i]),
+                      GW_CHAIN_SPEEDS_REL_MIN);
 }
 
 void gw_chain_resolved_free(gw_chain_resolved *r)

@@ -47,16 +47,16 @@ _Static_assert(GW_SHEET_FITTED == 0 && GW_SHEET_HERTZ == 1 && GW_SHEET_LAYER == 
     ROW("gravity", GW_PARAM_DOUBLE, gravity, "m/s^2", 0, 1e4, 0, "0", "G", "gravity toward the wall, m/s^2 [0 = off]"), \
     GW_CHAIN_SOLVER_ROWS_HELP(solver_help, dt_help) \
     ROW("t-max", GW_PARAM_DOUBLE, t_max, "s", 0, 1e6, 0, "0", "T", \
-        "stop after T seconds [20 (n T_q + tau_1), of the heaviest bead]"), \
+        "stop after T seconds, in [0, 1e6] [0 = 20 (n T_q + tau_1), of the heaviest bead]"), \
     ROW("dt-out", GW_PARAM_DOUBLE, dt_out, "s", 0, 1, 0, "0", "DT", dtout_help), \
     GW_CHAIN_ENERGY_ROW \
     GW_CHAIN_WALL_ROWS
 
 #define GW_CHAIN_SOLVER_HELP "cvode, arkode or rk4 [cvode]"
-#define GW_CHAIN_DT_HELP "RK4 step, s [T_c/400]; initial step for cvode/arkode"
+#define GW_CHAIN_DT_HELP "RK4 step, s, in [0, 1] [0 = T_c/400]; initial step for cvode/arkode"
 #define GW_CHAIN_MODEL_ROWS \
     GW_CHAIN_MODEL_ROWS_HELP(GW_CHAIN_SOLVER_HELP, GW_CHAIN_DT_HELP, \
-                             "sampling interval for traces, energy and F_max, s [tau_1/200]")
+                             "sampling interval for traces, energy and F_max, s, in [0, 1] [0 = tau_1/200]")
 
 /* material .. mass */
 /* material, radius and wall-material are optional (gw_param.h): given at
@@ -110,7 +110,7 @@ _Static_assert(GW_SHEET_FITTED == 0 && GW_SHEET_HERTZ == 1 && GW_SHEET_LAYER == 
      * binary contact at 2 v_imp (chain_collide_plan.c, chain_drop.c; the settings \
      * record it), which the help said nothing of until the fifteenth pass */ \
     ROW("dt-max", GW_PARAM_DOUBLE, dt_max, "s", 0, 1, 0, "0", "DT", \
-        "largest step, s [a quarter of the shortest binary contact time at 2 v_imp]"), \
+        "largest step, s, in [0, 1] [0 = a quarter of the shortest binary contact time at 2 v_imp]"), \
     ROW("max-steps", GW_PARAM_LONG, max_steps, "", 1, 1e12, 0, "10000000", "N", \
         "internal steps allowed between outputs [1e7]"),
 

@@ -55,7 +55,8 @@ int gw_chain_study_work_check(long a, long b, int runs, gw_err *err);
  * twice and counted them twice in the fits (a spurious standard error with two
  * distinct speeds), and no two lie within GW_CHAIN_SPEEDS_REL_MIN of each
  * other. GW_EINVAL "vimp: ..." (or "heights: ..." for an index >=
- * n_speeds) otherwise. */
+ * n_speeds) otherwise. Only finite speeds are compared (a non-finite one is
+ * left to the ranges, which refuse it). */
 int gw_chain_study_speeds_check(const double *v, int n, int n_speeds, gw_err *err);
 /* Two speeds closer than this, relative, are refused by the same check, named
  * as such: the fits over v_imp would rest on their difference (0.3 and the
@@ -72,14 +73,14 @@ int gw_chain_study_speeds_check(const double *v, int n, int n_speeds, gw_err *er
  * NULL) the heights, NaN for a speed given directly. v and h_mm hold n_vimp +
  * n_heights. Checks, in this order: at least one velocity (GW_EINVAL "vimp: no
  * impact velocity ..."); each value > 0, vimp first ("vimp: X must be > 0",
- * "heights: X must be > 0"); the velocities distinct
- * (gw_chain_study_speeds_check); the speeds in [GW_CHAIN_VIMP_MIN,
+ * "heights: X must be > 0"); the speeds in [GW_CHAIN_VIMP_MIN,
  * GW_CHAIN_VIMP_MAX] and the heights in [GW_CHAIN_HEIGHT_MIN_MM,
  * GW_CHAIN_HEIGHT_MAX_MM] ("vimp: item K is X, outside [A, B]", the rows of
  * gw_chain_falcon_setup_params); under another gravity than Earth's, each
  * height's fall within the speeds of those heights at 9.81 m/s^2, [0.99e-9,
  * GW_CHAIN_VIMP_MAX] m/s ("heights: item K is H mm: at gravity G m/s^2 it falls
- * to v = ... m/s, outside the impact speeds [..] m/s"). */
+ * to v = ... m/s, outside the impact speeds [..] m/s"); then the velocities
+ * distinct (gw_chain_study_speeds_check, which compares finite speeds only). */
 int gw_chain_falcon_speeds(const double *vimp, int n_vimp, const double *heights_mm, int n_heights, double gravity,
                            double *v, double *h_mm, gw_err *err);
 

@@ -635,27 +635,27 @@ def _rel(a, b, tol=1e-9):
 CHAIN3 = ["chain", "--n", "3", "--json"]
 # (command, flag, text in its --help line, run, check: None or what is wrong)
 HELP_DEFAULTS = [
-    ("chain", "--dt-max", "[a quarter of the shortest binary contact time at 2 v_imp]", CHAIN3,
+    ("chain", "--dt-max", "[0 = a quarter of the shortest binary contact time at 2 v_imp]", CHAIN3,
      lambda j: None if _rel(j["settings"]["solver"]["dt_max"], 0.25 * _pair_tau(j, 0.3))
      else f"dt_max {j['settings']['solver']['dt_max']!r}, a quarter of the shortest contact is {0.25 * _pair_tau(j, 0.3)!r}"),
-    ("drop", "--dt-max", "[a quarter of the shortest binary contact time at 2 v_imp]", ["drop", "--n", "3", "--json"],
+    ("drop", "--dt-max", "[0 = a quarter of the shortest binary contact time at 2 v_imp]", ["drop", "--n", "3", "--json"],
      lambda j: None if _rel(j["settings"]["solver"]["dt_max"], 0.25 * _pair_tau(j, j["v_imp"]))
      else f"dt_max {j['settings']['solver']['dt_max']!r}"),
-    ("chain", "--dt", "[T_c/400]", ["chain", "--n", "3", "--solver", "rk4", "--json"],
+    ("chain", "--dt", "[0 = T_c/400]", ["chain", "--n", "3", "--solver", "rk4", "--json"],
      lambda j: None if _rel(j["settings"]["solver"]["dt"], j["closed_forms"]["t_q"] / 2 / 400)
      else f"dt {j['settings']['solver']['dt']!r}, T_c/400 = {j['closed_forms']['t_q'] / 800!r}"),
-    ("chain", "--dt-out", "[tau_1/200]", CHAIN3,
+    ("chain", "--dt-out", "[0 = tau_1/200]", CHAIN3,
      lambda j: None if _rel(j["settings"]["solver"]["dt_out"], j["closed_forms"]["tau_1"] / 200)
      else f"dt_out {j['settings']['solver']['dt_out']!r}"),
-    ("chain", "--t-max", "[20 (n T_q + tau_1), of the heaviest bead]", CHAIN3,
+    ("chain", "--t-max", "[0 = 20 (n T_q + tau_1), of the heaviest bead]", CHAIN3,
      lambda j: None if _rel(j["settings"]["solver"]["t_max"], 20 * (3 * j["closed_forms"]["t_q"] + j["closed_forms"]["tau_1"]))
      else f"t_max {j['settings']['solver']['t_max']!r}"),
     ("falcon", "--solver", "[rk4 by --accuracy;", FALCON, lambda j: None if j["settings"]["solver"]["name"] == "rk4"
      else f"solver {j['settings']['solver']['name']}"),
-    ("falcon", "--dt", "[T_c/M by --accuracy, M = 37 at 1e-6;", FALCON,
+    ("falcon", "--dt", "[0 = T_c/M by --accuracy, M = 37 at 1e-6;", FALCON,
      lambda j: None if j["settings"]["solver"]["steps_per_tc"] == 37 and j["accuracy_target"] == 1e-6
      else f"steps_per_tc {j['settings']['solver']['steps_per_tc']}"),
-    ("falcon", "--dt-out", "[tau_1/10 of the fastest impact by --accuracy,", FALCON,
+    ("falcon", "--dt-out", "[0 = tau_1/10 of the fastest impact by --accuracy,", FALCON,
      lambda j: None if _rel(j["settings"]["solver"]["dt_out"], min(v["tau_1_theory"] for v in j["velocities"]) / 10)
      else f"dt_out {j['settings']['solver']['dt_out']!r}"),
     ("drop", "--peak-threshold", "[1 % of F_max(1) (F.13) at v_imp;", ["drop", "--n", "3", "--json"],
@@ -722,7 +722,7 @@ def self_test(program, srcdir):
         # a --help default the run does not use, and a help line that does not say it
         c.help_default("chain", "--rtol", "NUMBER", ["chain", "--n", "2", "--json"], lambda j: 1e-6)
         c.help_default("chain", "--dt-max", "[unlimited]", ["chain", "--n", "2", "--json"], lambda j: None)
-        c.help_default("chain", "--dt-out", "[tau_1/200]", ["chain", "--n", "2", "--json"], lambda j: "made-up fault")
+        c.help_default("chain", "--dt-out", "[0 = tau_1/200]", ["chain", "--n", "2", "--json"], lambda j: "made-up fault")
         want = ("chain_beads.csv, which docs/cli.md", "chain.h5, which docs/cli.md", "chain_beads.csv has the columns",
             "the docs list ['t_s', 'f_N']", "says 'F_max is 99.9 N'", "--rtol says", "records 1e-06, not 1e-12",
             "--dt-max says", "made-up fault")

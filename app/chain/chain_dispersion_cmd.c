@@ -73,7 +73,7 @@ static void disp_options(disp_cli *c, gw_opt *o)
     o[i++] = DOPT_D("f0", &c->f0, "F", "static precompression, N [10]", 0, 1e9, 1);
     o[i++] = DOPT_S("ends", &c->ends, "KIND", "periodic or fixed [periodic]");
     o[i++] = DOPT_L("t-samples", &c->t_samples, "T", "velocity samples in time, even [2048]", 64, 1 << 24);
-    o[i++] = DOPT_D("dt-out", &c->dt_out, "DT", "sampling interval, s [pi / (1.25 omega_c)]", 0, 1, 0);
+    o[i++] = DOPT_D("dt-out", &c->dt_out, "DT", "sampling interval, s, in [0, 1] [0 = pi / (1.25 omega_c)]", 0, 1, 0);
     o[i++] = DOPT_L("steps-per-sample", &c->steps, "K", "RK4 steps per sampling interval (rk4 only) [16]", 1, 100000);
     o[i++] = DOPT_D("amp", &c->amp, "A", "rms overlap perturbation / d0 of the initial velocities, in [1e-12, 0.1] "
                     "(smaller nears the rounding of d0) [1e-3]", GW_CHAIN_DISP_AMP_MIN, 0.1, 0);

@@ -1,0 +1,85 @@
+#!/bin/bash
+# test_hostile_fortieth.sh GRANWAVE SRCDIR: what the fortieth hostile pass
+# found, fixed at its root and asserted here, and the strongest of its checks
+# that held (regressions).
+#  1 A drop height beyond the table's row, named by a comparison it was never
+#    part of. falcon --heights 1e308: its fall 2 g h overflowed to inf, and the
+#    velocities were compared for twins before the ranges were checked, so the
+#    refusal read "heights: item 1 gives the impact velocity inf m/s, within a
+#    relative -nan of item 1 of vimp (0.29999999999999999 m/s): the collisions
+#    cannot tell them apart" (also with --heights 1,1e308, --gravity 1e4, and
+#    through Python). gw_chain_falcon_speeds now checks the ranges before it
+#    compares the velocities, and gw_chain_study_speeds_check compares finite
+#    speeds only: "heights: item 1 is 1e+308, outside [5e-17, 5.09684e+07]".
+#    Twins in range are still refused as such, and a pair too close to tell
+#    apart shows each speed in the digits that read back as it: the refusal
+#    of --vimp 0.3,0.3000000001 named item 1 as 0.29999999999999999 m/s.
+#  2 A value 0 that means the default, unsaid. chain's --t-max, --dt-out,
+#    --dt-max and --dt (and the studies' same rows, drop's --dt and --dt-max,
+#    dispersion's --dt-out) take 0 as "not given": --t-max 0 ran the whole
+#    collision to 20 (n T_q + tau_1) with exit 0, where the help said only
+#    "stop after T seconds [20 (n T_q + tau_1), ...]" and a refusal of
+#    --t-max 1e308 named the range [0, 1e+06], 0 inside it. Each help line now
+#    gives its range and "0 = " its default, as drop's --dt-out did; the runs
+#    with 0 are checked here to be the defaults' runs, number for number.
+# Checks that fail on the code before: see docs/tests.md.
+# shellcheck source=refusal_lib.sh
+. "$2/tests/refusal_lib.sh"
+hostile_setup "$@"
+export LC_ALL=C
+PY=/usr/bin/python3
+
+# --- 1 a height beyond its row named as given, not as an infinite twin ---
+refused "falcon --heights 1e308: the height's range, as given" \
+    '^granwave falcon --heights: item 1 is 1e\+308, outside \[5e-17, 5\.09684e\+07\]$' \
+    falcon --n 1:2 --heights 1e308 --quiet --out o
+refused "falcon --heights 1,1e308 (the second beyond the row): item 2's range" \
+    '^granwave falcon --heights: item 2 is 1e\+308, outside \[5e-17, 5\.09684e\+07\]$' \
+    falcon --n 1:2 --heights 1,1e308 --quiet --out o
+refused "falcon --heights 1e308 --gravity 1e4: the height's range" \
+    '^granwave falcon --heights: item 1 is 1e\+308, outside \[5e-17, 5\.09684e\+07\]$' \
+    falcon --n 1:2 --heights 1e308 --gravity 1e4 --quiet --out o
+refused "falcon --heights 1e300,1.0000000001e300 (two finite twins, both beyond the row): the range first" \
+    '^granwave falcon --heights: item 1 is 1e\+300, outside \[5e-17, 5\.09684e\+07\]$' \
+    falcon --n 1:2 --heights 1e300,1.0000000001e300 --quiet --out o
+# twins inside the range: still refused as twins
+refused "falcon --heights 1,1 (in range): still the same collisions twice" \
+    '^granwave falcon --heights: item 2 gives the impact velocity 0\.1400714104 m/s of item 1: the same collisions' \
+    falcon --n 1:2 --heights 1,1 --quiet --out o
+refused "falcon --vimp 0.3,0.3000000001 (in range): still too close to tell apart, each speed as given" \
+    '^granwave falcon --vimp: item 2 gives the impact velocity 0\.3000000001 m/s, within a relative 3\.3e-10 of item 1 \(0\.3 m/s\): the collisions cannot tell them apart' \
+    falcon --n 1:2 --vimp 0.3,0.3000000001 --heights none --quiet --out o
+py_checks 3 <<'PYEOF'
+refused("Python falcon(heights=[1e308]): the range, not an infinite twin", ["heights: item 1 is 1e+308, outside"],
+        granwave.falcon, n="1:2", heights=[1e308])
+refused("Python falcon(heights=[1, 1e308])", ["heights: item 2 is 1e+308, outside"],
+        granwave.falcon, n="1:2", heights=[1, 1e308])
+refused("Python falcon(vimp=[0.3, 0.3]): twins in range still refused", ["item 2 gives the impact velocity 0.3 m/s"],
+        granwave.falcon, n="1:2", vimp=[0.3, 0.3], heights=[])
+PYEOF
+
+# --- 2 a 0 that means the default says so ---
+for c in chain falcon wavespeed softwall drop dispersion; do
+    "$GW" $c --help >"help_$c.txt" || ko "$c --help: exit $?"
+done
+for cf in chain:t-max chain:dt-out chain:dt-max chain:dt falcon:t-max falcon:dt-out falcon:dt falcon:dt-max \
+    wavespeed:t-max wavespeed:dt-out softwall:t-max softwall:dt-max drop:dt drop:dt-max drop:dt-out dispersion:dt-out; do
+    c=${cf%%:*} f=${cf#*:}
+    line=$(grep -E -- "^  --$f [A-Z]+ " "help_$c.txt")
+    case $line in *"[0 = "*) ok "$c --help: --$f says what 0 is" ;; *) ko "$c --help: --$f leaves 0 unsaid: $line" ;; esac
+done
+runs_json "chain --n 3 (the defaults)" d0.json chain --n 3 --quiet
+for f in t-max dt-out dt-max dt; do
+    runs_json "chain --n 3 --$f 0" "z$f.json" chain --n 3 --$f 0 --quiet &&
+        $PY - d0.json "z$f.json" <<'PYEOF' && ok "chain --$f 0: the default's run, every number and setting alike" ||
+import json, sys
+a, b = (json.load(open(p)) for p in sys.argv[1:3])
+for d in (a, b):
+    d.pop('wall_time_ms')
+    d.pop('command', None)
+sys.exit(0 if json.dumps(a, sort_keys=True) == json.dumps(b, sort_keys=True) else 1)
+PYEOF
+        ko "chain --$f 0: not the default's run"
+done
+
+test_summary test_hostile_fortieth

@@ -697,8 +697,11 @@ static int plan_make(const gw_chain_params *p0, const gw_chain_run_opts *o, coll
     if (gw_chain_memory_check(p, pl->type, pl->sp.method, &e[1]) != GW_OK)
         n_ok[1] = memory_n_ok(p, pl->type, pl->sp.method);
     if (!(pl->t_expect / pl->dt_out <= max_samples)) {
-        gw_err_set(&e[2], GW_EINVAL, "dt-out: %g s gives about %.3g samples over the collision (about %.3g s); "
-                   "at most %.0e: raise dt-out", pl->dt_out, pl->t_expect / pl->dt_out, pl->t_expect, max_samples);
+        gw_err_set(&e[2], GW_EINVAL, "dt-out: %s%g s gives about %.3g samples over the collision (about %.3g s); "
+                   "at most %.0e: raise dt-out%s", o->dt_out > 0 ? "" : "the default tau_1/200 = ", pl->dt_out,
+                   pl->t_expect / pl->dt_out, pl->t_expect, max_samples,
+                   o->dt_out > 0 ? "" : " (bead 1's wall contact is far shorter than the column's collision: unequal "
+                                        "radii or masses, or a stiff wall)");
         n_ok[2] = n * max_samples / (pl->t_expect / pl->dt_out);
     }
     int worst = -1;

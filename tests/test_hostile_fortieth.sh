@@ -22,6 +22,14 @@
 #    --t-max 1e308 named the range [0, 1e+06], 0 inside it. Each help line now
 #    gives its range and "0 = " its default, as drop's --dt-out did; the runs
 #    with 0 are checked here to be the defaults' runs, number for number.
+#  3 (the lead, from the pass's notes) A default the user never gave, refused
+#    as if given. chain --n 2 --radii 1e-6,1: the default dt-out (tau_1/200 of
+#    the 1 um bead on the wall, 4.4e-11 s) over the 1 m bead's collision
+#    (0.31 s) is 7e9 samples, refused as "dt-out: 4.37335e-11 s gives about
+#    7.11e+09 samples ...: raise dt-out" with no word that the value was the
+#    default nor why it is so small. The refusal now says "the default
+#    tau_1/200 = " and names the cause (bead 1's wall contact far shorter than
+#    the column's collision); a given --dt-out is refused as before.
 # Checks that fail on the code before: see docs/tests.md.
 # shellcheck source=refusal_lib.sh
 . "$2/tests/refusal_lib.sh"
@@ -81,5 +89,13 @@ sys.exit(0 if json.dumps(a, sort_keys=True) == json.dumps(b, sort_keys=True) els
 PYEOF
         ko "chain --$f 0: not the default's run"
 done
+
+# --- 3 a default dt-out refused as the default, with its cause ---
+refused "chain --n 2 --radii 1e-6,1: the default dt-out named as the default" \
+    "^granwave chain --dt-out: the default tau_1/200 = 4\.37[0-9]*e-11 s gives about 7\.1[0-9]e\+09 samples .*at most 1e\+09: raise dt-out \(bead 1's wall contact is far shorter than the column's collision: unequal radii or masses, or a stiff wall\)$" \
+    chain --n 2 --radii 1e-6,1 --out o
+refused "chain --n 2 --radii 1e-6,1 --dt-out 1e-12: a given dt-out named as given" \
+    '^granwave chain --dt-out: 1e-12 s gives about 3\.11e\+11 samples over the collision \(about 0\.311 s\); at most 1e\+09: raise dt-out$' \
+    chain --n 2 --radii 1e-6,1 --dt-out 1e-12 --out o
 
 test_summary test_hostile_fortieth

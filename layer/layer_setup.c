@@ -598,6 +598,36 @@ int layer_impact_run_part(const gw_layer_impact_setup *s, gw_progress_fn progres
 }
 
 /* The run from the setup, its plan made once (single: with its idle-flag check). */
+/* The crowns as set against the sample: the wave speeds fit the peak times
+ * of rings 1 .. nrings - 1 and need 3 of them (layer_crowns.c), so crowns too
+ * narrow to reach a particle (--ring-width 1e-9: every speed null, "0 rings"),
+ * too wide to part them (1e6: all in ring 0) or too few (--rings 3) made a
+ * run whose speeds could never be read, said nowhere but in "unresolved". A
+ * ring counts here when a particle's centre lies in it (the contacts the
+ * crowns sum lie between centres); the run itself is unchanged. */
+int layer_crowns_warning(const gw_layer_sample *smp, const gw_layer_impact_params *ip,
+                         const gw_layer_impact_result *r, char **list)
+{
+    const double w = ip->ring_width > 0 ? ip->ring_width : 2 * smp->rm;
+    if (ip->nrings < 4)
+        return gw_warnings_add(list, "rings: %d crowns leave %d beyond the first, where the wave speeds need 3: "
+                               "no wave speed can be read (give --rings 4 or more)", ip->nrings, ip->nrings - 1);
+    int held = 0;
+    for (int k = 1; k < ip->nrings && held < 3; k++) {
+        int any = 0;
+        for (int i = 0; i < smp->n && !any; i++) {
+            const double d = hypot(smp->x[i] - r->impact_x, smp->y[i] - r->impact_y) / w;
+            any = d >= k && d < k + 1;
+        }
+        held += any;
+    }
+    if (held >= 3)
+        return GW_OK;
+    return gw_warnings_add(list, "ring-width: crowns %g m wide around the impact point hold particle centres in %d "
+                           "of rings 1 to %d, where the wave speeds need 3: no wave speed can be read (the default "
+                           "is 2 R_m = %g m)", w, held, ip->nrings - 1, 2 * smp->rm);
+}
+
 static int impact_run(const gw_layer_impact_setup *s, gw_progress_fn progress, void *pctx,
                       void (*part)(void *part_ctx, double x), void *part_ctx, int single,
                       gw_layer_impact_outcome *out, gw_err *err)
@@ -678,7 +708,8 @@ static int impact_run(const gw_layer_impact_setup *s, gw_progress_fn progress, v
             memcpy(out->undecided, out->r.undecided, nu + 1);
         else if (nu > 0 && rc == GW_OK)
             rc = gw_err_set(err, GW_ENOMEM, "layer-impact: out of memory");
-        if (rc == GW_OK && (rc = gw_layer_impact_result_warnings(&out->r, &out->warnings)) != GW_OK)
+        if (rc == GW_OK && ((rc = gw_layer_impact_result_warnings(&out->r, &out->warnings)) != GW_OK ||
+                            (rc = layer_crowns_warning(&smp, &ip, &out->r, &out->warnings)) != GW_OK))
             rc = gw_err_set(err, rc, "layer-impact: out of memory");
     }
     gw_layer_impact_plan_free(&plan);

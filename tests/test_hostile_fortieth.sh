@@ -30,6 +30,13 @@
 #    default nor why it is so small. The refusal now says "the default
 #    tau_1/200 = " and names the cause (bead 1's wall contact far shorter than
 #    the column's collision); a given --dt-out is refused as before.
+#  4 (the lead, from the pass's notes) Crowns that can never give a wave
+#    speed, unsaid. layer-impact --ring-width 1e-9 or 1e6 (or --rings 3) ran
+#    with exit 0 and no warning, its wave speeds null ("0 rings"): the speeds
+#    fit the peak times of rings 1 .. rings - 1 and need 3, and crowns of 1 nm
+#    reach no particle, of 1e6 m hold them all in ring 0, 3 of them leave 2.
+#    A warning now names --ring-width (or --rings), on stderr, in --json's
+#    warnings and through Python; the default crowns and 4 rings say nothing.
 # Checks that fail on the code before: see docs/tests.md.
 # shellcheck source=refusal_lib.sh
 . "$2/tests/refusal_lib.sh"
@@ -97,5 +104,35 @@ refused "chain --n 2 --radii 1e-6,1: the default dt-out named as the default" \
 refused "chain --n 2 --radii 1e-6,1 --dt-out 1e-12: a given dt-out named as given" \
     '^granwave chain --dt-out: 1e-12 s gives about 3\.11e\+11 samples over the collision \(about 0\.311 s\); at most 1e\+09: raise dt-out$' \
     chain --n 2 --radii 1e-6,1 --dt-out 1e-12 --out o
+
+# --- 4 crowns that can give no wave speed, said ---
+make_sample s4.txt --n 60 --width-rm 14 --seed 2
+crowns() { # WHAT NEEDLE(empty: no crowns warning) ARGS...: stderr and --json's warnings
+    local what=$1 needle=$2; shift 2
+    runs_json "$what" c4.json layer-impact --sample s4.txt --t-max 0.002 "$@" || return
+    $PY - c4.json "$tmp/stderr" "$needle" <<'PYEOF' && ok "$what" || ko "$what: $(head -c 400 "$tmp/stderr")"
+import json, sys
+d, err, needle = json.load(open(sys.argv[1])), open(sys.argv[2]).read(), sys.argv[3]
+ours = [w for w in d["warnings"] if w.startswith(("ring-width:", "rings:"))]
+lines = [l for l in err.splitlines() if l.startswith("granwave layer-impact: warning: ring")]
+if not needle:
+    sys.exit(0 if not ours and not lines else 1)
+sys.exit(0 if len(ours) == 1 and needle in ours[0] and lines == ["granwave layer-impact: warning: " + ours[0]]
+         and d["wave_speed"] is None else 1)
+PYEOF
+}
+crowns "layer-impact --ring-width 1e-9: warned, no particle in any ring" \
+    "ring-width: crowns 1e-09 m wide around the impact point hold particle centres in 0 of rings 1 to 11" --ring-width 1e-9
+crowns "layer-impact --ring-width 1e6: warned, every particle in ring 0" \
+    "ring-width: crowns 1e+06 m wide around the impact point hold particle centres in 0 of rings 1 to 11" --ring-width 1e6
+crowns "layer-impact --rings 3: warned, two rings beyond the first" "rings: 3 crowns leave 2 beyond the first" --rings 3
+crowns "layer-impact, the default crowns: no crowns warning" ""
+crowns "layer-impact --rings 4: no crowns warning" "" --rings 4
+py_checks 2 <<'PYEOF'
+warned("Python layer_impact(ring_width=1e6)", "ring_width: crowns 1e+06 m wide", granwave.layer_impact,
+       sample="s4.txt", t_max=0.002, ring_width=1e6)
+r, ws = caught(granwave.layer_impact, sample="s4.txt", t_max=0.002)
+check(not [w for w in ws if "crowns" in w], "Python layer_impact, the default crowns: none")
+PYEOF
 
 test_summary test_hostile_fortieth

@@ -697,6 +697,9 @@ int gw_cmd_layer_impact(int argc, char **argv)
         c.ip.sample_ctx = &vc;
     }
     int rc = layer_impact_run(&s, &c.m.lp, &c.ip, type, &sp, &found, &r, &err);
+    char *w = NULL; /* the warnings: the crowns' against the sample first, while it is here */
+    if (rc == GW_OK)
+        (void)layer_crowns_warning(&s, &c.ip, &r, &w);
     if (vc.failed) /* the writer's own message, not the run's "the hook stopped it" */
         err = vc.err;
     else if (rc != GW_OK && vc.failure_file[0]) {
@@ -721,7 +724,6 @@ int gw_cmd_layer_impact(int argc, char **argv)
     /* the library's texts, one line each (out of memory for them: no line): a
      * sample settled under another material, an undecided outcome (the JSON
      * says null); the JSON's "warnings" and the outputs' headers record them */
-    char *w = NULL;
     (void)gw_layer_impact_result_warnings(&r, &w);
     gw_cli_warnings("layer-impact", w);
     cJSON *j = impact_json(&c, &r, &sp);

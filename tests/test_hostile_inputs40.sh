@@ -13,6 +13,12 @@
 #    (exit 0). Now refused naming the file, the settings line and the field
 #    (and the header's line), by layer-impact, sweep --check, Python and for
 #    HDF5 samples (the seed attribute edited).
+#  3 A sweep journal whose "# grid" or "# param" line was edited under its
+#    first line (the config's hash: the same config writes the same lines)
+#    was resumed and checked with exit 0 ("# param t-max = 2e-4" over rows
+#    that ran at 1e-4). Refused now naming the journal's line and the line
+#    the config writes; a journal as written, and one whose head was torn
+#    (cut and resumed: fewer lines), pass.
 #  2 What stays legitimate: a pile trimmed by --height-rm holds fewer
 #    bodies than the line's n (text and HDF5, discs and clumps, the
 #    library's dialect too), and a hand-made sample (no settings line) may
@@ -92,6 +98,39 @@ r = caught(granwave.layer_make, n=30, seed=3, width_rm=12, height_rm=3, out="lib
 res = caught(granwave.layer_impact, sample="lib.txt", t_max=1e-4)[0]
 check(r is not None and res is not None, "the library's trimmed pile (its dialect, height-rm) runs")
 PYEOF
+
+# --- 3 a sweep journal's head edited ---
+# the journal's "# grid" and "# param" lines under a first line holding the
+# config's hash: a line that differs was edited by hand (resumed and checked
+# as it was, exit 0)
+printf '[sweep]\nmodel = chain\nout = jo\n[grid]\nn = 2, 3\n[params]\nt-max = 1e-4\n' >j.ini
+timeout 60 "$GW" sweep j.ini --quiet >/dev/null 2>&1 && [ -s jo/journal.csv ] || ko "the chain sweep for its journal"
+cp jo/journal.csv j.orig
+grep -q '^# param t-max = 1e-4$' j.orig || ko "the journal has no '# param t-max = 1e-4' line"
+jtry() { # WHAT EDIT (a sed script over the journal) EXIT PATTERN: sweep --check, then the resume
+    sed "$2" j.orig >jo/journal.csv
+    cp jo/journal.csv j.before
+    local rc
+    for mode in --check --quiet; do
+        timeout 30 "$GW" sweep j.ini $mode >"$tmp/stdout" 2>"$tmp/stderr" </dev/null
+        rc=$?
+        if [ "$3" = 0 ]; then
+            [ $rc -eq 0 ] && ok "$1 ($mode): exit 0" || ko "$1 ($mode): exit $rc ($(head -c 300 "$tmp/stderr"))"
+        elif [ $rc -eq 2 ] && [ "$(wc -l <"$tmp/stderr")" -eq 1 ] && grep -qE -- "$4" "$tmp/stderr" &&
+            cmp -s jo/journal.csv j.before; then
+            ok "$1 ($mode): refused in one line naming the line, the journal left as it is"
+        else
+            ko "$1 ($mode): exit $rc ($(head -c 300 "$tmp/stderr"))"
+        fi
+    done
+}
+EDITED="the journal's first line holds that config's hash: the journal was edited by hand"
+jtry "a journal whose '# param t-max' line says 2e-4 under the hash of 1e-4" 's/^# param t-max = 1e-4$/# param t-max = 2e-4/' 2 \
+    "^granwave sweep: .*jo/journal.csv:4: '# param t-max = 2e-4' is not the line this sweep's config writes there \\('# param t-max = 1e-4'\\), and $EDITED"
+jtry "a journal with a second, other '# param t-max' line" 's/^# param t-max = 1e-4$/&\n# param t-max = 2e-4/' 2 \
+    "^granwave sweep: .*jo/journal.csv:5: '# param t-max = 2e-4' is not the line .*\\(none: its keys end before\\), and $EDITED"
+jtry "a journal as the sweep wrote it" '' 0
+jtry "a journal whose head was torn in its '# param' line (cut, its cases resumed)" '/^# param t-max/,$d' 0
 
 if ! $PY -c 'import h5py' 2>/dev/null || ! "$GW" version --json 2>/dev/null | grep -q hdf5; then
     echo "SKIP: h5py or an HDF5 build missing"

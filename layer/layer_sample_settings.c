@@ -205,9 +205,12 @@ static int pluviation_check(const cJSON *j, int library, const gw_layer_sample *
         const char *what = s->body ? "clumps" : "particles";
         const int trimmed = !have[5] || v[5] > 0;
         if ((double)bodies > v[0] || (!trimmed && (double)bodies != v[0])) {
-            if (trimmed)
+            if (trimmed && have[5])
                 gw_snprintf(why, sizeof why, "says n %.0f where the file holds %ld %s: a trim to %s %g keeps at "
                             "most n", v[0], bodies, what, kh, v[5]);
+            else if (trimmed)
+                gw_snprintf(why, sizeof why, "says n %.0f where the file holds %ld %s: a pile holds at most n",
+                            v[0], bodies, what);
             else
                 gw_snprintf(why, sizeof why, "says n %.0f and %s 0 (no trim) where the file holds %ld %s (%s)",
                             v[0], kh, bodies, what, hdr_place(src, K_N, "n", place));

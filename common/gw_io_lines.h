@@ -1,8 +1,9 @@
 /*
  * gw_io_lines.h (internal, not installed): the line rule the text inputs
- * share (gw_io_input.c): the text sample reader (layer_sample.c), the sweep
- * config scanner (gw_sweep_config.c) and the sweep table reader
- * (gw_stats_table.c).
+ * share (gw_io_input.c): the sweep config scanner (gw_sweep_config.c) and
+ * the sweep table reader (gw_stats_table.c). The text sample reader
+ * (layer_sample.c), which reads a stream and never holds the file whole,
+ * checks its last byte against the same rule directly.
  */
 #ifndef GW_IO_LINES_H
 #define GW_IO_LINES_H

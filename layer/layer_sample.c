@@ -32,7 +32,6 @@
 #include <strings.h>
 
 #include "layer_sample_impl.h"
-#include "gw_io_lines.h"
 #include "gw_locale.h"
 
 #define SAMPLE_LINE_MAX 1024  /* longest header or particle line; comments may be longer */
@@ -281,8 +280,8 @@ static int text_next(text_in *t, gw_err *err)
          * in its digits still reads
          * (the last radius of a 40-disc sample cut from 0.2296 to 0.22 m ran
          * with exit 0, its penetration 53 % deeper) */
-        const char lastc = (char)t->last; /* the line's last byte: a stream is not held whole */
-        if (c == EOF && !comment && len > 0 && gw_input_unended_line(&lastc, 1, t->line, NULL) > 0)
+        /* ended: its last byte an LF, or the CR of a CR LF (gw_io_lines.h's rule) */
+        if (c == EOF && !comment && len > 0 && t->last != '\n' && t->last != '\r')
             return gw_err_set(err, GW_EFORMAT, "sample '%s': line %ld: the file ends inside this line (no newline "
                               "after it): cut short? layer-make ends every line with one", t->path, t->line);
         t->buf[len] = '\0';
@@ -567,7 +566,7 @@ static int read_text(text_in *t, gw_layer_sample *s, gw_err *err)
     if (rc == GW_OK && t->set) { /* the settling's record, once the sample is whole */
         char where[32];
         gw_snprintf(where, sizeof where, "line %ld", t->set_line);
-        if ((rc = layer_sample_settings_parse(t->set, t->path, where, &s->settled, err)) == GW_OK &&
+        if ((rc = layer_sample_settings_parse(t->set, t->path, where, s, &src, &s->settled, err)) == GW_OK &&
             s->settled.recorded)
             s->settled.line = t->set_line;
     }

@@ -446,7 +446,10 @@ static int h5_settings_read(hid_t f, gw_layer_sample *s, const char *path, gw_er
         *nl = '\0';
     const int cut = line && !nl && strlen(h) >= 16384;
     if (line && !cut)
-        rc = layer_sample_settings_parse(line, path, "HDF5 attribute header", &s->settled, err);
+        {
+        const hdr_src src = {.h5 = 1};
+        rc = layer_sample_settings_parse(line, path, "HDF5 attribute header", s, &src, &s->settled, err);
+    }
     if (rc == GW_OK) /* after the settings' parse, which zeroes the record */
         s->settled.unsettled = unsettled;
     free(h);

@@ -46,11 +46,14 @@ int layer_sample_check(const gw_layer_sample *s, const char *path, const hdr_src
 /* The settings line's JSON text (layer_sample_settings.c) into *out: recorded
  * 1 with the settling's material, or recorded 0 when the object has no
  * material; GW_EFORMAT "sample 'PATH': WHERE: ..." when it is not a JSON
- * object or its material is incomplete, of the wrong type or out of range;
- * GW_ENOMEM. *out is zeroed first. */
+ * object or its material is incomplete, of the wrong type or out of range,
+ * or (a line with material, layer-make's) when its pluviation's fields (n, rm,
+ * volume ratio, width, seed, clumps, mass law, clump mass) disagree with the
+ * sample s's header and body (src: where the header came from; s NULL: not
+ * compared); GW_ENOMEM. *out is zeroed first. */
 #define SAMPLE_SETTINGS_MAX 65536 /* longest settings line read, characters (layer-make's: under 30000) */
-int layer_sample_settings_parse(const char *text, const char *path, const char *where, gw_layer_settled *out,
-                                gw_err *err);
+int layer_sample_settings_parse(const char *text, const char *path, const char *where, const gw_layer_sample *s,
+                                const hdr_src *src, gw_layer_settled *out, gw_err *err);
 
 /* 1 when text, a header line without its '#' and leading blanks, is
  * layer-make's "settled: ..." line and says "converged 0": the pile was

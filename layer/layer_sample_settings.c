@@ -23,6 +23,7 @@
  */
 #include <ctype.h>
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "layer_sample_impl.h"
@@ -92,8 +93,136 @@ static const char *json_twice(const cJSON *x)
     return NULL;
 }
 
-int layer_sample_settings_parse(const char *text, const char *path, const char *where, gw_layer_settled *out,
-                                gw_err *err)
+/* v in the fewest of 15 to 17 digits that read back as v (a message's number) */
+static const char *exact(double v, char out[32])
+{
+    for (int d = 15; d <= 17; d++) {
+        gw_snprintf(out, 32, "%.*g", d, v);
+        if (gw_strtod(out, NULL) == v)
+            break;
+    }
+    return out;
+}
+
+/* Where the header's value of key came from, for a message: a text line, an
+ * HDF5 attribute, or a line the file does not have. */
+static const char *hdr_place(const hdr_src *src, int key, const char *name, char out[64])
+{
+    if (src && src->h5)
+        gw_snprintf(out, 64, "HDF5 attribute '%s'", name);
+    else if (src && src->line[key] > 0)
+        gw_snprintf(out, 64, "header line %ld '%s'", src->line[key], name);
+    else
+        gw_snprintf(out, 64, "header (no '%s' line)", name);
+    return out;
+}
+
+/* The pluviation's own fields of layer-make's settings line against the
+ * sample's header and body. layer-make writes both from one value (the
+ * header's rm, width = width_rm rm, volume_ratio and seed are the settings'
+ * doubles; mass law and clump mass the material's), so a disagreement is a
+ * file altered after it was written: an rm or a seed edited in one place
+ * only, a cut file's n fixed up by hand. Only the particle count may
+ * legitimately differ: a trim to height_rm > 0 keeps the bodies wholly below
+ * it (at most n of them, n when it took nothing away), so the bodies are n
+ * exactly without a trim and at most n with one (height_rm not given: an
+ * older line, at most n). A clump sample (clumps true) counts its bodies by
+ * their ids and carries a body column; a disc sample carries none. A field
+ * the line does not hold is not compared (older or partial lines). */
+static int pluviation_check(const cJSON *j, int library, const gw_layer_sample *s, const hdr_src *src,
+                            const char *path, const char *where, gw_err *err)
+{
+    char why[400], place[64], a[32], b[32], c[32];
+    const char *kvr = library ? "volume-ratio" : "volume_ratio", *kw = library ? "width-rm" : "width_rm",
+               *kh = library ? "height-rm" : "height_rm";
+    const char *numkeys[6] = {"n", "rm", kvr, kw, "seed", kh};
+    double v[6];
+    int have[6];
+    for (int k = 0; k < 6; k++) {
+        const cJSON *x = cJSON_GetObjectItemCaseSensitive(j, numkeys[k]);
+        have[k] = x != NULL;
+        if (x && (!cJSON_IsNumber(x) || !isfinite(x->valuedouble)))
+            return bad(path, where, err, "has a value that is not a finite number:", numkeys[k]);
+        v[k] = x ? x->valuedouble : 0;
+    }
+    const cJSON *cl = cJSON_GetObjectItemCaseSensitive(j, "clumps");
+    if (cl && !cJSON_IsBool(cl))
+        return bad(path, where, err, "has a value that is not true or false:", "clumps");
+    /* a relative 1e-12: the same double, whichever digits a JSON printer chose */
+#define SAME(a, b) (fabs((a) - (b)) <= 1e-12 * fmax(fabs(a), fabs(b)))
+    if (have[1] && !SAME(v[1], s->rm)) {
+        gw_snprintf(why, sizeof why, "says rm %s m where the %s says %s m", exact(v[1], a),
+                    hdr_place(src, K_RM, "rm", place), exact(s->rm, b));
+        return bad(path, where, err, why, NULL);
+    }
+    if (have[2] && !SAME(v[2], s->volume_ratio)) {
+        gw_snprintf(why, sizeof why, "says %s %s where the %s says %s", kvr, exact(v[2], a),
+                    hdr_place(src, K_VR, "volume_ratio", place), exact(s->volume_ratio, b));
+        return bad(path, where, err, why, NULL);
+    }
+    if (have[3] && have[1] && !SAME(v[3] * v[1], s->width)) {
+        gw_snprintf(why, sizeof why, "says %s %s and rm %s m, a box %.6g m wide, where the %s says %s m", kw,
+                    exact(v[3], a), exact(v[1], b), v[3] * v[1], hdr_place(src, K_WIDTH, "width", place),
+                    exact(s->width, c));
+        return bad(path, where, err, why, NULL);
+    }
+    /* the seed is written as a JSON number (a double): the header's integer
+     * is compared as the double it rounds to */
+    if (have[4] && v[4] != (double)s->seed) {
+        if (v[4] == floor(v[4]))
+            gw_snprintf(a, sizeof a, "%.0f", v[4]);
+        else
+            exact(v[4], a);
+        gw_snprintf(why, sizeof why, "says seed %s where the %s says %ld", a,
+                    hdr_place(src, K_SEED, "seed", place), s->seed);
+        return bad(path, where, err, why, NULL);
+    }
+    const int clumps = cl && cJSON_IsTrue(cl);
+    if (cl && clumps != (s->body != NULL)) {
+        gw_snprintf(why, sizeof why, "says clumps %s where the file %s", clumps ? "true" : "false",
+                    clumps ? (src && src->h5 ? "has no dataset 'body' (a disc sample)"
+                                             : "has no body column (format version 1, a disc sample)")
+                           : (src && src->h5 ? "has a dataset 'body' (a clump sample)"
+                                             : "has a body column (format version 2, a clump sample)"));
+        return bad(path, where, err, why, NULL);
+    }
+    if (have[5] && v[5] < 0)
+        return bad(path, where, err, "has a negative value:", kh);
+    if (have[0]) {
+        if (!(v[0] >= 1 && v[0] == floor(v[0])))
+            return bad(path, where, err, "has a value that is not an integer >= 1:", "n");
+        long bodies = s->n; /* discs, or the clumps' distinct ids */
+        if (s->body) {
+            unsigned char *seen = calloc((size_t)s->n, 1);
+            if (!seen)
+                return gw_err_set(err, GW_ENOMEM, "sample '%s': out of memory for its body ids", path);
+            bodies = 0;
+            for (int i = 0; i < s->n; i++)
+                if (s->body[i] >= 0 && s->body[i] < s->n && !seen[s->body[i]])
+                    seen[s->body[i]] = 1, bodies++;
+            free(seen);
+        }
+        const char *what = s->body ? "clumps" : "particles";
+        const int trimmed = !have[5] || v[5] > 0;
+        if ((double)bodies > v[0] || (!trimmed && (double)bodies != v[0])) {
+            if (trimmed && have[5])
+                gw_snprintf(why, sizeof why, "says n %.0f where the file holds %ld %s: a trim to %s %g keeps at "
+                            "most n", v[0], bodies, what, kh, v[5]);
+            else if (trimmed)
+                gw_snprintf(why, sizeof why, "says n %.0f where the file holds %ld %s: a pile holds at most n",
+                            v[0], bodies, what);
+            else
+                gw_snprintf(why, sizeof why, "says n %.0f and %s 0 (no trim) where the file holds %ld %s (%s)",
+                            v[0], kh, bodies, what, hdr_place(src, K_N, "n", place));
+            return bad(path, where, err, why, NULL);
+        }
+    }
+#undef SAME
+    return GW_OK;
+}
+
+int layer_sample_settings_parse(const char *text, const char *path, const char *where, const gw_layer_sample *s,
+                                const hdr_src *from, gw_layer_settled *out, gw_err *err)
 {
     memset(out, 0, sizeof *out);
     const char *end = NULL;
@@ -158,6 +287,21 @@ int layer_sample_settings_parse(const char *text, const char *path, const char *
     else if (rc == GW_OK && clump == GW_LAYER_CLUMP_MASS_UNION && sphere)
         rc = bad(path, where, err, "has clump mass union with mass law sphere (union is of discs):",
                  mat ? "clump_mass" : "clump-mass");
+    /* the material's mass law and clump mass, as the header's (one value each) */
+    if (rc == GW_OK && s && (sphere ? GW_LAYER_MASS_SPHERE : GW_LAYER_MASS_DISC) != s->mass_law) {
+        char why[200], place[64];
+        gw_snprintf(why, sizeof why, "says mass law %s where the %s says %s", sphere ? "sphere" : "disc",
+                    hdr_place(from, K_LAW, "mass_law", place), s->mass_law == GW_LAYER_MASS_SPHERE ? "sphere" : "disc");
+        rc = bad(path, where, err, why, NULL);
+    }
+    if (rc == GW_OK && s && clump >= 0 && clump != s->clump_mass) {
+        char why[200], place[64];
+        gw_snprintf(why, sizeof why, "says clump mass %s where the %s says %s", gw_layer_clump_mass_name(clump),
+                    hdr_place(from, K_CMASS, "clump_mass", place), gw_layer_clump_mass_name(s->clump_mass));
+        rc = bad(path, where, err, why, NULL);
+    }
+    if (rc == GW_OK && s)
+        rc = pluviation_check(j, !mat, s, from, path, where, err);
     cJSON_Delete(j);
     if (rc != GW_OK)
         return rc;

@@ -193,8 +193,9 @@ refused "softwall --wall-material (the wall is --kwall)" 'softwall --wall-materi
 # (before the sample is read for the first, before the run for the others)
 "$GW" layer-make --n 20 --width-rm 10 --seed 4 --t-max 0.3 --out "$tmp/L.txt" >/dev/null 2>&1 || ko "layer-make for the layer refusals"
 # class 5: a sample with two discs deep inside each other (here one disc twice)
-# is refused when read, naming the pair; the sample itself is accepted
-awk '/^n /{print "n", $2 + 1; next} {print} /^[0-9]/ && NF == 3 && !d {print; d = 1}' "$tmp/L.txt" >"$tmp/Ldup.txt"
+# is refused when read, naming the pair; the sample itself is accepted (the
+# copy made by hand: without layer-make's settings line, whose n it breaks)
+awk '/^# settings:/ {next} /^n /{print "n", $2 + 1; next} {print} /^[0-9]/ && NF == 3 && !d {print; d = 1}' "$tmp/L.txt" >"$tmp/Ldup.txt"
 refused "a sample with two coincident discs" "overlap by 2 R_p, above 0.05 R_p" layer-impact --sample "$tmp/Ldup.txt" --t-max 1e-4 --out "$tmp/o"
 "$GW" layer-impact --sample "$tmp/L.txt" --t-max 1e-4 >/dev/null 2>&1 && ok "the same sample without the copy runs" || ko "the sample without the copy refused"
 refused "layer-impact --method bdf with verlet" "layer-impact --method: 'bdf' has no effect with the verlet solver" layer-impact --sample "$tmp/L.txt" --method bdf --out "$tmp/o"

@@ -13,8 +13,8 @@
 #    sample, no --out), by a layer sweep's --check, by Python's layer_impact
 #    (GranwaveValueError) and as HDF5 (the rm attribute edited);
 #  2 what stays legitimate still runs with the same numbers: the sample as
-#    written, rm edited within the bounds (0.4), volume_ratio 0 (unknown) or
-#    raised (20), a sample trimmed by --height-rm, a monodisperse sample at
+#    written, a hand-made header (no settings line) with rm edited within the
+#    bounds (0.4), volume_ratio 0 (unknown) or raised (20), a sample trimmed by --height-rm, a monodisperse sample at
 #    volume_ratio 1, a clump sample (members smaller than their bodies).
 # Before the fix (the header's rm and volume_ratio never compared with the
 # radii) every refusal of part 1 ran: rm 0.5 gave a 2081 kg block instead of
@@ -36,9 +36,13 @@ edit rm 0.1 rm01.txt
 edit rm 0.65 rmdiam.txt
 edit volume_ratio 1 vr1.txt
 edit volume_ratio 5 vr5.txt
-edit rm 0.4 rm04.txt
-edit volume_ratio 0 vr0.txt
-edit volume_ratio 20 vr20.txt
+# a header edited by hand within the bounds is a hand-made sample: without
+# layer-make's settings line (kept, the line's rm and volume_ratio disagree
+# with the header's and the file is refused: test_hostile_inputs40)
+hand() { sed "s/^$1 .*/$1 $2/; /^# settings:/d" s.txt >"$3"; }
+hand rm 0.4 rm04.txt
+hand volume_ratio 0 vr0.txt
+hand volume_ratio 20 vr20.txt
 
 # 1: refusals, naming the sample and what in it disagrees
 imp() { echo layer-impact --sample "$1" --t-max 0.002 --out "$tmp/o"; }

@@ -41,7 +41,7 @@ static const char *program_line =
     "\"clump_mass\":\"sum\"}}";
 static const char *library_line =
     "# settings: {\"friction\":12,\"shear-modulus\":3e9,\"poisson\":0.1,\"density\":7800,\"gravity\":3.71,"
-    "\"mass-law\":\"sphere\",\"out\":\"x.txt\"}";
+    "\"mass-law\":\"sphere\",\"out\":\"x.txt\"}\nmass_law sphere"; /* the header's mass law, the line's */
 
 /* A one-disc sample (the reader's checks pass it) with the lines pre before
  * its header, mid between "n 1" and the disc, and CRLF ends when crlf. */

@@ -789,6 +789,47 @@ static int build_check(const char *path, const char *buf, size_t len, size_t *po
                       "two builds are not mixed: the same form may hold other numbers)", path, was, now);
 }
 
+/* The journal's "# grid" and "# param" lines, buf[at, end), against those
+ * its config writes (gw_sweep_head_lines): the journal's first line holds the
+ * config's hash, so a journal of this config holds these very lines, and a
+ * line that differs was edited by hand ("# param t-max = 2e-4" under a hash
+ * of 1e-4: the rows ran at 1e-4, the head said 2e-4, and it was resumed and
+ * checked as it was). Fewer lines pass: a torn head is cut (below) and its
+ * sweep resumed, its rows after the lines it kept. */
+static int head_keys_check(const gw_sweep_config *cfg, const char *buf, size_t at, size_t end, const char *path,
+                           gw_err *err)
+{
+    char *want = gw_sweep_head_lines(cfg);
+    if (!want)
+        return gw_err_set(err, GW_ENOMEM, "%s: out of memory", path);
+    const char *w = want;
+    while (strncmp(w, "# input ", 8) == 0) /* the input lines: checked before, by their files */
+        w = strchr(w, '\n') + 1;
+    long line = 1;
+    for (size_t q = 0; q < at; q++)
+        line += buf[q] == '\n';
+    int rc = GW_OK;
+    for (size_t p = at; p < end && rc == GW_OK; line++) {
+        const char *nl = memchr(buf + p, '\n', end - p);
+        const size_t l = (size_t)(nl - (buf + p)), wl = *w ? strcspn(w, "\n") : 0;
+        if (!*w || wl != l || memcmp(w, buf + p, l) != 0) {
+            char was[128];
+            if (*w)
+                gw_snprintf(was, sizeof was, "'%.*s%s'", (int)(wl < 100 ? wl : 100), w, wl > 100 ? "..." : "");
+            else
+                gw_snprintf(was, sizeof was, "none: its keys end before");
+            rc = gw_err_set(err, GW_EINVAL, "%s:%ld: '%.*s%s' is not the line this sweep's config writes there "
+                            "(%s), and the journal's first line holds that config's hash: the journal was edited by "
+                            "hand; put the line back as the config gives it, or choose another output", path, line,
+                            (int)(l < 100 ? l : 100), buf + p, l > 100 ? "..." : "", was);
+        }
+        p += l + 1;
+        w += *w ? wl + 1 : 0;
+    }
+    free(want);
+    return rc;
+}
+
 /* The journal at path, read (under the caller's lock on fd) and checked;
  * a torn last line cut (torn NULL) or its bytes counted in *torn, *torn_head
  * 1 when it is a line of the head (# input, # grid, # param), not a row. */
@@ -885,6 +926,7 @@ static int journal_check(const char *path, int dfd, const char *dir, const char 
         }
         pos = good = (size_t)(nl - buf) + 1;
     }
+    const size_t keys_at = pos;
     while (pos < len && (strncmp(buf + pos, "# grid ", 7) == 0 || strncmp(buf + pos, "# param ", 8) == 0)) {
         const char *nl = memchr(buf + pos, '\n', len - pos); /* the config's keys (input_lines) */
         if (!nl)
@@ -894,6 +936,10 @@ static int journal_check(const char *path, int dfd, const char *dir, const char 
     long line = 1;
     for (size_t q = 0; q < pos; q++)
         line += buf[q] == '\n';
+    if (pos > keys_at && (rc = head_keys_check(cfg, buf, keys_at, pos, path, err)) != GW_OK) {
+        free(buf);
+        return rc;
+    }
     /* Rows are appended whole (one write each), so only the last line can be
      * torn (no newline: kill -9, a full disk); it is cut and its case reruns.
      * A complete line that is not a row of this sweep was edited or pasted by

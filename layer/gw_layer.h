@@ -494,7 +494,9 @@ int gw_layer_make(const gw_layer_params *lp, const gw_layer_make_params *mp,
  * below t_judge, or E_k still above the threshold at t_max; out, may be NULL,
  * the file the sample was written to, named in the text), and a height_rm
  * that took nothing away (untrimmed_top_rm > 0). Nothing else. The texts
- * `granwave layer-make` prints and Python issues. GW_OK or GW_ENOMEM. */
+ * `granwave layer-make` prints and Python issues. GW_OK or GW_ENOMEM;
+ * GW_EINVAL, nothing added, for an unsettled r and a t_max not positive and
+ * finite. */
 int gw_layer_make_result_warnings(const gw_layer_make_result *r, double t_max, const char *out, char **list);
 
 /* Porosity of the sample in the window x in [0.1, 0.9] W, y in [0.1, 0.8] h,

@@ -34,9 +34,10 @@ int layer_impact_run(const gw_layer_sample *smp, const gw_layer_params *lp0, con
                      const gw_solver_type *type, const gw_solver_params *sp, const layer_settling_found *found,
                      gw_layer_impact_result *res, gw_err *err);
 
-/* A warning into *list (gw_warnings_add) when the crowns of ip (ring width and
- * count) around res's impact point leave fewer than 3 of rings 1 .. nrings - 1
- * holding a particle centre of smp: no wave speed can be read (layer_setup.c). */
+/* A warning into *list (gw_warnings_add) when the crowns of ip (a ring width
+ * given, or fewer than 4 rings) around res's impact point leave fewer than 3
+ * of rings 1 .. nrings - 1 holding a particle centre of smp: no wave speed can
+ * be read (layer_setup.c). */
 int layer_crowns_warning(const gw_layer_sample *smp, const gw_layer_impact_params *ip,
                          const gw_layer_impact_result *res, char **list);
 

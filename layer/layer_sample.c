@@ -156,6 +156,10 @@ typedef struct text_in {
     size_t npre, ipre;
     long line;
     int last; /* the last byte read */
+    /* FNV-1a 64 of every byte read (text_getc): the sample's content hash is
+     * that of the bytes parsed. Read again from byte 0 after the parse, a file
+     * grown or rewritten in between was hashed over bytes never parsed. */
+    unsigned long long hash;
     char buf[SAMPLE_LINE_MAX + 1];
     /* layer-make's settings line, a comment "# settings: {JSON}": its JSON
      * (owned, NUL-terminated; NULL: none) and line */
@@ -193,8 +197,11 @@ static int settings_put(text_in *t, int c, gw_err *err)
 static int text_getc(text_in *t)
 {
     const int c = t->ipre < t->npre ? t->pre[t->ipre++] : getc(t->fp);
-    if (c != EOF)
+    if (c != EOF) {
+        const unsigned char b = (unsigned char)c;
         t->last = c;
+        t->hash = gw_fnv1a64(t->hash, &b, 1);
+    }
     return c;
 }
 
@@ -637,7 +644,7 @@ int gw_layer_sample_read(const char *path, gw_layer_sample *s, gw_err *err)
         return gw_err_set(err, GW_EINVAL, "gw_layer_sample_read: %s is NULL", !s ? "s" : "path");
     memset(s, 0, sizeof *s);
     s->mass_law = GW_LAYER_MASS_DISC;
-    text_in t = {.path = path};
+    text_in t = {.path = path, .hash = GW_FNV1A64_INIT};
     /* a regular file only: a FIFO or a device is refused before any read */
     int orc = gw_input_open(path, "sample", &t.fp, err);
     if (orc != GW_OK)
@@ -648,7 +655,18 @@ int gw_layer_sample_read(const char *path, gw_layer_sample *s, gw_err *err)
     if (t.npre == sizeof t.pre && h5_signature_at(t.fp, t.pre, &sb)) {
         fclose(t.fp);
 #if GW_HAVE_HDF5
-        rc = layer_sample_h5_read(path, sb, s, err);
+        /* read by the library through its own open: hashed before and after,
+         * a file changed in between refused (it was hashed after alone, over
+         * bytes the read may not have seen) */
+        unsigned long long h0 = 0;
+        rc = gw_fnv1a64_file(path, "sample", &h0, err);
+        if (rc == GW_OK)
+            rc = layer_sample_h5_read(path, sb, s, err);
+        if (rc == GW_OK && (rc = gw_fnv1a64_file(path, "sample", &s->content_hash, err)) == GW_OK &&
+            s->content_hash != h0)
+            rc = gw_err_set(err, GW_EIO, "sample '%s': the file changed while it was read (its content hash "
+                            "%016llx before, %016llx after): read it again once it is written", path, h0,
+                            s->content_hash);
 #else
         (void)sb;
         rc = gw_err_set(err, GW_EUNSUPPORTED, "sample '%s': an HDF5 file, and this granwave was built "
@@ -658,13 +676,17 @@ int gw_layer_sample_read(const char *path, gw_layer_sample *s, gw_err *err)
         rc = read_text(&t, s, err);
         free(t.set);
         spr_lines = t.spr_lines;
-        /* the content hash from the same open file: what was read */
-        if (rc == GW_OK && (fseek(t.fp, 0, SEEK_SET) != 0 || gw_fnv1a64_stream(t.fp, &s->content_hash) != GW_OK))
-            rc = gw_err_set(err, GW_EIO, "sample '%s': cannot read it again for its content hash", path);
+        /* the content hash of the bytes read, to the end the parse reached
+         * (read on to it where the parse stopped short, as the whole file
+         * was hashed before) */
+        while (rc == GW_OK && text_getc(&t) != EOF)
+            ;
+        if (rc == GW_OK && ferror(t.fp))
+            rc = gw_err_set(err, GW_EIO, "sample '%s': read failed", path);
+        if (rc == GW_OK)
+            s->content_hash = t.hash;
         fclose(t.fp);
     }
-    if (rc == GW_OK && !s->content_hash) /* an HDF5 sample: read by the library, hashed here */
-        rc = gw_fnv1a64_file(path, "sample", &s->content_hash, err);
     if (rc == GW_OK) {
         char what[4200];
         gw_snprintf(what, sizeof what, "sample '%s'", path);

@@ -604,7 +604,9 @@ int layer_impact_run_part(const gw_layer_impact_setup *s, gw_progress_fn progres
  * too wide to part them (1e6: all in ring 0) or too few (--rings 3) made a
  * run whose speeds could never be read, said nowhere but in "unresolved". A
  * ring counts here when a particle's centre lies in it (the contacts the
- * crowns sum lie between centres); the run itself is unchanged. */
+ * crowns sum lie between centres); the run itself is unchanged. The default
+ * width (2 R_m) is not judged: on a pile too small for 3 rings (60 discs,
+ * 14 R_m wide: 2) the speeds' "unresolved" is the pile's size, not a flag's. */
 int layer_crowns_warning(const gw_layer_sample *smp, const gw_layer_impact_params *ip,
                          const gw_layer_impact_result *r, char **list)
 {
@@ -612,6 +614,8 @@ int layer_crowns_warning(const gw_layer_sample *smp, const gw_layer_impact_param
     if (ip->nrings < 4)
         return gw_warnings_add(list, "rings: %d crowns leave %d beyond the first, where the wave speeds need 3: "
                                "no wave speed can be read (give --rings 4 or more)", ip->nrings, ip->nrings - 1);
+    if (!(ip->ring_width > 0))
+        return GW_OK;
     int held = 0;
     for (int k = 1; k < ip->nrings && held < 3; k++) {
         int any = 0;

@@ -608,7 +608,7 @@ static int weigh_ignored(const char *name)
     static const char *const ignored[] = {"vi", "x", "alpha", "t_max", "dt_out", "until", "full", "rings",
                                           "ring_width", "energy_tol", "spacing", "point", "points"};
     char n[64];
-    snprintf(n, sizeof n, "%s", name);
+    gw_snprintf(n, sizeof n, "%s", name);
     for (char *c = n; *c; c++)
         if (*c == '-')
             *c = '_';
@@ -630,7 +630,7 @@ static char *weigh_key(int nk, const char *const *names, const char *const *valu
     *p = '\0';
     for (int i = 0; i < nk; i++)
         if (!weigh_ignored(names[i]))
-            p += sprintf(p, "%s=%s\n", names[i], values[i]);
+            p += gw_snprintf(p, len - (size_t)(p - k), "%s=%s\n", names[i], values[i]);
     return k;
 }
 

@@ -10,6 +10,8 @@
  * GranwaveWarning, a C caller reads them from the outcome's `warnings`.
  * Parameters are named as the program's flags (--t-max). Units: s, J.
  */
+#include <math.h>
+
 #include "gw_layer.h"
 #include "layer_impl.h"
 
@@ -26,6 +28,8 @@ int gw_layer_make_result_warnings(const gw_layer_make_result *r, double t_max, c
     }
     if (!r || r->converged)
         return GW_OK;
+    if (!(t_max > 0 && t_max < INFINITY)) /* the run's t_max, never NaN: it printed "t-max = nan s" */
+        return GW_EINVAL;
     const char *sep = out ? "; written to " : "", *path = out ? out : "", *end = out ? " with 'converged 0'" : "";
     if (t_max < r->t_judge) /* it could not settle: not "E_k above the threshold" */
         return gw_warnings_add(list,

@@ -1,11 +1,13 @@
 /*
  * layer_test_util.h: a synthetic impact result for the crowns' tests: ns samples
  * every dt s over nr rings, the series zero, for the test to fill, and its free;
- * and a small pile settled by layer-make for the tests that run impacts on one.
+ * a small pile settled by layer-make for the tests that run impacts on one;
+ * and three discs in a row, a sample built in memory for the hostile tests.
  */
 #ifndef GW_LAYER_TEST_UTIL_H
 #define GW_LAYER_TEST_UTIL_H
 
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -64,6 +66,19 @@ static inline int test_make_pile(const char *path, int npairs, const char *const
     }
     gw_layer_make_setup_clear(&m);
     return rc;
+}
+
+/* Three discs of radius 0.1 m at y = 0.1 m, x = 0.3, 0.5, 0.7 m, in a box 1 m
+ * wide: a sample built in memory (no springs, no bodies, porosity unknown),
+ * its arrays static, for a test to spoil one field at a time. */
+static inline gw_layer_sample test_three_discs(void)
+{
+    static double x[3] = {0.3, 0.5, 0.7}, y[3] = {0.1, 0.1, 0.1}, r[3] = {0.1, 0.1, 0.1};
+    gw_layer_sample s;
+    memset(&s, 0, sizeof s);
+    s.n = 3, s.width = 1, s.rm = 0.1, s.volume_ratio = 1, s.porosity = NAN;
+    s.x = x, s.y = y, s.r = r;
+    return s;
 }
 
 #endif

@@ -36,7 +36,17 @@
 #    fit the peak times of rings 1 .. rings - 1 and need 3, and crowns of 1 nm
 #    reach no particle, of 1e6 m hold them all in ring 0, 3 of them leave 2.
 #    A warning now names --ring-width (or --rings), on stderr, in --json's
-#    warnings and through Python; the default crowns and 4 rings say nothing.
+#    warnings and through Python; the default crowns and 4 rings say nothing
+#    (the default width is not judged: a pile too small for 3 rings of 2 R_m,
+#    as this 60-disc one, is the pile's size, not a flag's).
+#  5 (the lead) A sample's content hash is that of the bytes parsed: a text
+#    sample was hashed by reading it again from byte 0 after the parse, and
+#    an HDF5 one through a second open after the library's read, so a file
+#    grown or rewritten in between was hashed over bytes never read. The text
+#    reader now hashes what it reads; an HDF5 sample is hashed before and
+#    after its read and refused when they differ. The race itself is not made
+#    to happen here; these are controls: the hash of an untouched file (text,
+#    CRLF, HDF5) is still the FNV-1a 64 of its bytes, as layer-make records it.
 # Checks that fail on the code before: see docs/tests.md.
 # shellcheck source=refusal_lib.sh
 . "$2/tests/refusal_lib.sh"
@@ -134,5 +144,20 @@ warned("Python layer_impact(ring_width=1e6)", "ring_width: crowns 1e+06 m wide",
 r, ws = caught(granwave.layer_impact, sample="s4.txt", t_max=0.002)
 check(not [w for w in ws if "crowns" in w], "Python layer_impact, the default crowns: none")
 PYEOF
+
+# --- 5 the content hash: the bytes parsed (controls) ---
+make_sample s5.h5 --n 40 --width-rm 12 --seed 5
+sed 's/$/\r/' s4.txt >s4crlf.txt
+for f in s4.txt s4crlf.txt s5.h5; do
+    runs_json "layer-impact --sample $f" h5.json layer-impact --sample "$f" --t-max 1e-4 &&
+        $PY - h5.json "$f" <<'PYEOF' && ok "$f: sample_fnv1a64 is the FNV-1a 64 of the file's bytes" ||
+import json, sys
+h = 0xcbf29ce484222325
+for b in open(sys.argv[2], "rb").read():
+    h = ((h ^ b) * 0x100000001b3) & 0xffffffffffffffff
+sys.exit(0 if json.load(open(sys.argv[1]))["sample_fnv1a64"] == "%016x" % h else 1)
+PYEOF
+        ko "$f: sample_fnv1a64 not the file's hash"
+done
 
 test_summary test_hostile_fortieth

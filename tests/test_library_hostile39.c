@@ -52,6 +52,7 @@
 #include <unistd.h>
 
 #include "granwave.h"
+#include "layer_test_util.h"
 #include "test_child.h"
 
 
@@ -287,17 +288,6 @@ static int layer_block_out_of_range(void)
 
 /* ---- samples and impact results filled by hand ---- */
 
-static double SX[3] = {0.3, 0.5, 0.7}, SY[3] = {0.1, 0.1, 0.1}, SR[3] = {0.1, 0.1, 0.1};
-
-static gw_layer_sample three_discs(void)
-{
-    gw_layer_sample s;
-    memset(&s, 0, sizeof s);
-    s.n = 3, s.width = 1, s.rm = 0.1, s.volume_ratio = 1, s.porosity = NAN;
-    s.x = SX, s.y = SY, s.r = SR;
-    return s;
-}
-
 static int impact_sample_hand(void)
 {
     gw_err e = {{0}};
@@ -305,15 +295,15 @@ static int impact_sample_hand(void)
     gw_layer_impact_params ip = gw_layer_impact_params_default();
     gw_solver_params sp = gw_solver_params_default();
     gw_layer_impact_result r;
-    gw_layer_sample s = three_discs();
+    gw_layer_sample s = test_three_discs();
     s.y = NULL; /* read: SIGSEGV before */
     EXPECT(refused(gw_layer_impact(&s, &lp, &ip, gw_solver_cvode, &sp, &r, &e), &e, "y NULL"));
     gw_layer_impact_result_free(&r);
     EXPECT(refused(gw_layer_impact_check(&s, &ip, &e), &e, "y NULL"));
-    s = three_discs();
+    s = test_three_discs();
     s.r = NULL;
     EXPECT(isnan(gw_layer_impact_dem_dt(&s, &lp, &ip)));
-    s = three_discs();
+    s = test_three_discs();
     int body[3] = {0, 99, -5}; /* written past the run's arrays before */
     s.body = body;
     EXPECT(refused(gw_layer_impact(&s, &lp, &ip, gw_solver_cvode, &sp, &r, &e), &e, "body id 99"));
@@ -322,7 +312,7 @@ static int impact_sample_hand(void)
     EXPECT(refused(gw_layer_impact_check(&s, &ip, &e), &e, "body id -5"));
     /* control: the sample as built passes the check, and its step is the same
      * with a body per disc given or not */
-    s = three_discs();
+    s = test_three_discs();
     EXPECT(gw_layer_impact_check(&s, &ip, &e) == GW_OK);
     const double dt = gw_layer_impact_dem_dt(&s, &lp, &ip);
     int own[3] = {0, 1, 2};
@@ -450,12 +440,12 @@ static int stats_table_accessors_hand(void)
  * (the lead, from the library pass's report): a NULL read (SIGSEGV) */
 static int porosity_hand(void)
 {
-    gw_layer_sample s = three_discs();
+    gw_layer_sample s = test_three_discs();
     const double p = gw_layer_sample_porosity(&s);
     EXPECT(p > 0 && p < 1); /* control */
     s.x = NULL;
     EXPECT(isnan(gw_layer_sample_porosity(&s)));
-    s = three_discs();
+    s = test_three_discs();
     s.r = NULL;
     EXPECT(isnan(gw_layer_sample_porosity(&s)));
     return 0;

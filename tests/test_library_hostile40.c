@@ -52,33 +52,22 @@
 #include <unistd.h>
 
 #include "granwave.h"
+#include "layer_test_util.h"
 #include "test_child.h"
-
 
 /* ---- the pile's hash of a sample built in memory ---- */
 
-static double SX[3] = {0.3, 0.5, 0.7}, SY[3] = {0.1, 0.1, 0.1}, SR[3] = {0.1, 0.1, 0.1};
-
-static gw_layer_sample three_discs(void)
-{
-    gw_layer_sample s;
-    memset(&s, 0, sizeof s);
-    s.n = 3, s.width = 1, s.rm = 0.1, s.volume_ratio = 1, s.porosity = NAN;
-    s.x = SX, s.y = SY, s.r = SR;
-    return s;
-}
-
 static int pile_hash_hand(void)
 {
-    gw_layer_sample s = three_discs();
+    gw_layer_sample s = test_three_discs();
     const unsigned long long h0 = gw_layer_sample_pile_hash(&s);
     EXPECT(h0 != 0);
     s.y = NULL; /* SIGSEGV before */
     EXPECT(gw_layer_sample_pile_hash(&s) == 0);
-    s = three_discs();
+    s = test_three_discs();
     s.r = NULL;
     EXPECT(gw_layer_sample_pile_hash(&s) == 0);
-    s = three_discs();
+    s = test_three_discs();
     int bad[3] = {0, 99, 2}; /* hashed as {0, 1, 2} before: h0 */
     s.body = bad;
     EXPECT(gw_layer_sample_pile_hash(&s) == 0);
@@ -87,7 +76,7 @@ static int pile_hash_hand(void)
     int own[3] = {0, 1, 2};
     s.body = own; /* control: a body per disc is the pile without a body column */
     EXPECT(gw_layer_sample_pile_hash(&s) == h0);
-    s = three_discs();
+    s = test_three_discs();
     s.n_springs = 4; /* no array: h0 before, the pile without springs */
     EXPECT(gw_layer_sample_pile_hash(&s) == 0);
     s.n_springs = -4;
@@ -103,7 +92,7 @@ static int pile_hash_hand(void)
     /* the impact's check: springs counted without their array (taken before) */
     gw_layer_impact_params ip = gw_layer_impact_params_default();
     gw_err e = {{0}};
-    s = three_discs();
+    s = test_three_discs();
     s.n_springs = 2;
     EXPECT(refused(gw_layer_impact_check(&s, &ip, &e), &e, "n_springs = 2 with springs NULL"));
     s.n_springs = 0;
@@ -116,7 +105,7 @@ static int pile_hash_hand(void)
 static int porosity_bad_disc(void)
 {
     double x[3] = {0.3, 0.5, 0.7}, y[3] = {0.1, 0.1, 0.1}, r[3] = {0.1, 0.1, 0.1};
-    gw_layer_sample s = three_discs();
+    gw_layer_sample s = test_three_discs();
     s.x = x, s.y = y, s.r = r;
     const double p = gw_layer_sample_porosity(&s);
     EXPECT(p > 0 && p < 1);
@@ -412,6 +401,34 @@ static int unnamed_messages(void)
     return 0;
 }
 
+/* ---- the lead's: a method no backend runs, a pluviation's warning at a NaN t_max ---- */
+
+static int method_used_and_make_warnings(void)
+{
+    /* "bdf" for no backend, "erk" for cvode with erk, before */
+    EXPECT(strcmp(gw_solver_method_used(NULL, GW_METHOD_DEFAULT), "unknown") == 0);
+    EXPECT(strcmp(gw_solver_method_used(gw_solver_cvode, GW_ARKODE_ERK), "unknown") == 0);
+    EXPECT(strcmp(gw_solver_method_used(gw_solver_arkode, GW_CVODE_ADAMS), "unknown") == 0);
+    EXPECT(strcmp(gw_solver_method_used(gw_solver_cvode, 99), "unknown") == 0);
+    /* controls: each backend's own */
+    EXPECT(strcmp(gw_solver_method_used(gw_solver_cvode, GW_METHOD_DEFAULT), "bdf") == 0);
+    EXPECT(strcmp(gw_solver_method_used(gw_solver_cvode, GW_CVODE_ADAMS), "adams") == 0);
+    EXPECT(strcmp(gw_solver_method_used(gw_solver_arkode, GW_METHOD_DEFAULT), "erk") == 0);
+    EXPECT(strcmp(gw_solver_method_used(gw_solver_arkode, GW_ARKODE_DIRK), "dirk") == 0);
+    EXPECT(strcmp(gw_solver_method_used(gw_solver_rk4, GW_CVODE_BDF), "none") == 0);
+    /* an unsettled pluviation at t_max NaN or inf: "t-max = nan s" with GW_OK before */
+    gw_layer_make_result r;
+    memset(&r, 0, sizeof r);
+    r.t_judge = 0.1, r.ke_final = 1;
+    char *list = NULL;
+    EXPECT(gw_layer_make_result_warnings(&r, NAN, NULL, &list) == GW_EINVAL && list == NULL);
+    EXPECT(gw_layer_make_result_warnings(&r, INFINITY, NULL, &list) == GW_EINVAL && list == NULL);
+    EXPECT(gw_layer_make_result_warnings(&r, 0.05, NULL, &list) == GW_OK && list &&
+           strstr(list, "t-max = 0.05 s ends before the settling is judged")); /* control */
+    free(list);
+    return 0;
+}
+
 int main(void)
 {
     static const child_row cases[] = {
@@ -428,6 +445,8 @@ int main(void)
         {"gw_sweep_journal_scan/_open/_open_at/_resume_check/gw_sweep_write_table/gw_sweep_out_inputs_check: "
          "configs filled by hand",
          sweep_journal_hand},
+        {"gw_solver_method_used: no backend, a variant not the backend's; gw_layer_make_result_warnings: NaN t_max",
+         method_used_and_make_warnings},
     };
     return child_cases_run(cases, sizeof cases / sizeof cases[0]);
 }

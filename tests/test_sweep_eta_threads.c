@@ -51,6 +51,19 @@ typedef struct rec {
     double t[MAX_REC], part[MAX_REC];
 } rec;
 
+/* Thread j takes case *next (its work from 0), and the estimator hears of the
+ * cases now under way. */
+static void case_begin(gw_pool_eta *e, int j, int threads, int *idx, double *u, int *on, int *next)
+{
+    idx[j] = (*next)++;
+    u[j] = 0;
+    on[j] = 1;
+    int under_way = 0;
+    for (int i = 0; i < threads; i++)
+        under_way += on[i];
+    gw_pool_eta_begun(e, under_way);
+}
+
 /* Cases of cost cost[0..n-1] (work units) on threads threads on cpus CPUs,
  * run in steps of a 4000th of the whole work; checks the time left the
  * part implies at the marks within tol. weight (NULL: the cases alike, the
@@ -81,15 +94,8 @@ static void sweep_w(const char *name, const double *cost, const double *weight, 
     for (;;) {
         int busy = 0;
         for (int j = 0; j < threads; j++) { /* a thread free takes the next case */
-            if (!on[j] && next < n) {
-                idx[j] = next++;
-                u[j] = 0;
-                on[j] = 1;
-                int under_way = 0;
-                for (int i = 0; i < threads; i++)
-                    under_way += on[i];
-                gw_pool_eta_begun(&e, under_way);
-            }
+            if (!on[j] && next < n)
+                case_begin(&e, j, threads, idx, u, on, &next);
             busy += on[j];
         }
         if (!busy)
@@ -111,15 +117,8 @@ static void sweep_w(const char *name, const double *cost, const double *weight, 
                 ended++;
                 w_ended += gw_pool_eta_weight(&e, idx[j]);
                 last_end = fmax(last_end, now + (step * pace - budget) / pace);
-                if (next < n) {
-                    idx[j] = next++;
-                    u[j] = 0;
-                    on[j] = 1;
-                    int under_way = 0;
-                    for (int i = 0; i < threads; i++)
-                        under_way += on[i];
-                    gw_pool_eta_begun(&e, under_way);
-                }
+                if (next < n)
+                    case_begin(&e, j, threads, idx, u, on, &next);
             }
             if (on[j]) {
                 wrun[nrun] = gw_pool_eta_weight(&e, idx[j]);

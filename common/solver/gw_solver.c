@@ -69,9 +69,15 @@ const char *gw_solver_method_used(const gw_solver_type *type, int method)
 {
     if (type == gw_solver_rk4 || type == gw_solver_verlet)
         return "none";
-    if (method == GW_METHOD_DEFAULT)
-        return type == gw_solver_arkode ? gw_solver_method_name(GW_ARKODE_ERK) : gw_solver_method_name(GW_CVODE_BDF);
-    return gw_solver_method_name(method);
+    /* no backend, or a variant the backend has not: what would run is not
+     * known (NULL and 0 said "bdf", cvode with erk "erk") */
+    const int cv = type == gw_solver_cvode, ark = type == gw_solver_arkode;
+    if (method == GW_METHOD_DEFAULT && (cv || ark))
+        return gw_solver_method_name(cv ? GW_CVODE_BDF : GW_ARKODE_ERK);
+    if ((cv && (method == GW_CVODE_BDF || method == GW_CVODE_ADAMS)) ||
+        (ark && (method == GW_ARKODE_ERK || method == GW_ARKODE_DIRK || method == GW_ARKODE_IMEX)))
+        return gw_solver_method_name(method);
+    return "unknown";
 }
 
 int gw_solver_tolerances_check(double rtol, double atol, const char *rname, const char *aname,

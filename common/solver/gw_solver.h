@@ -178,7 +178,8 @@ int gw_solver_tolerances_unused_check(const gw_solver_type *type, const struct g
 int gw_solver_method_find(const char *name);
 const char *gw_solver_method_name(int method);
 /* The variant a backend runs for method (GW_METHOD_DEFAULT resolved: cvode
- * "bdf", arkode "erk"; "none" for rk4 and verlet), for provenance. */
+ * "bdf", arkode "erk"; "none" for rk4 and verlet), for provenance; "unknown"
+ * for no backend or a variant the backend has not (cvode with erk). */
 const char *gw_solver_method_used(const gw_solver_type *type, int method);
 
 typedef struct gw_solver_stats {

@@ -155,7 +155,7 @@ import json, sys
 h = 0xcbf29ce484222325
 for b in open(sys.argv[2], "rb").read():
     h = ((h ^ b) * 0x100000001b3) & 0xffffffffffffffff
-sys.exit(0 if json.load(open(sys.argv[1]))["sample_fnv1a64"] == "%016x" % h else 1)
+sys.exit(0 if json.load(open(sys.argv[1]))["settings"]["sample_fnv1a64"] == "%016x" % h else 1)
 PYEOF
         ko "$f: sample_fnv1a64 not the file's hash"
 done

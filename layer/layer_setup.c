@@ -597,7 +597,6 @@ int layer_impact_run_part(const gw_layer_impact_setup *s, gw_progress_fn progres
     return impact_run(s, progress, pctx, part, part_ctx, 0, out, err);
 }
 
-/* The run from the setup, its plan made once (single: with its idle-flag check). */
 /* The crowns as set against the sample: the wave speeds fit the peak times
  * of rings 1 .. nrings - 1 and need 3 of them (layer_crowns.c), so crowns too
  * narrow to reach a particle (--ring-width 1e-9: every speed null, "0 rings"),
@@ -632,6 +631,7 @@ int layer_crowns_warning(const gw_layer_sample *smp, const gw_layer_impact_param
                            "is 2 R_m = %g m)", w, held, ip->nrings - 1, 2 * smp->rm);
 }
 
+/* The run from the setup, its plan made once (single: with its idle-flag check). */
 static int impact_run(const gw_layer_impact_setup *s, gw_progress_fn progress, void *pctx,
                       void (*part)(void *part_ctx, double x), void *part_ctx, int single,
                       gw_layer_impact_outcome *out, gw_err *err)

@@ -93,17 +93,6 @@ static const char *json_twice(const cJSON *x)
     return NULL;
 }
 
-/* v in the fewest of 15 to 17 digits that read back as v (a message's number) */
-static const char *exact(double v, char out[32])
-{
-    for (int d = 15; d <= 17; d++) {
-        gw_snprintf(out, 32, "%.*g", d, v);
-        if (gw_strtod(out, NULL) == v)
-            break;
-    }
-    return out;
-}
-
 /* Where the header's value of key came from, for a message: a text line, an
  * HDF5 attribute, or a line the file does not have. */
 static const char *hdr_place(const hdr_src *src, int key, const char *name, char out[64])
@@ -151,19 +140,19 @@ static int pluviation_check(const cJSON *j, int library, const gw_layer_sample *
     /* a relative 1e-12: the same double, whichever digits a JSON printer chose */
 #define SAME(a, b) (fabs((a) - (b)) <= 1e-12 * fmax(fabs(a), fabs(b)))
     if (have[1] && !SAME(v[1], s->rm)) {
-        gw_snprintf(why, sizeof why, "says rm %s m where the %s says %s m", exact(v[1], a),
-                    hdr_place(src, K_RM, "rm", place), exact(s->rm, b));
+        gw_snprintf(why, sizeof why, "says rm %s m where the %s says %s m", gw_num_text(a, sizeof a, v[1]),
+                    hdr_place(src, K_RM, "rm", place), gw_num_text(b, sizeof b, s->rm));
         return bad(path, where, err, why, NULL);
     }
     if (have[2] && !SAME(v[2], s->volume_ratio)) {
-        gw_snprintf(why, sizeof why, "says %s %s where the %s says %s", kvr, exact(v[2], a),
-                    hdr_place(src, K_VR, "volume_ratio", place), exact(s->volume_ratio, b));
+        gw_snprintf(why, sizeof why, "says %s %s where the %s says %s", kvr, gw_num_text(a, sizeof a, v[2]),
+                    hdr_place(src, K_VR, "volume_ratio", place), gw_num_text(b, sizeof b, s->volume_ratio));
         return bad(path, where, err, why, NULL);
     }
     if (have[3] && have[1] && !SAME(v[3] * v[1], s->width)) {
         gw_snprintf(why, sizeof why, "says %s %s and rm %s m, a box %.6g m wide, where the %s says %s m", kw,
-                    exact(v[3], a), exact(v[1], b), v[3] * v[1], hdr_place(src, K_WIDTH, "width", place),
-                    exact(s->width, c));
+                    gw_num_text(a, sizeof a, v[3]), gw_num_text(b, sizeof b, v[1]), v[3] * v[1],
+                    hdr_place(src, K_WIDTH, "width", place), gw_num_text(c, sizeof c, s->width));
         return bad(path, where, err, why, NULL);
     }
     /* the seed is written as a JSON number (a double): the header's integer
@@ -172,7 +161,7 @@ static int pluviation_check(const cJSON *j, int library, const gw_layer_sample *
         if (v[4] == floor(v[4]))
             gw_snprintf(a, sizeof a, "%.0f", v[4]);
         else
-            exact(v[4], a);
+            gw_num_text(a, sizeof a, v[4]);
         gw_snprintf(why, sizeof why, "says seed %s where the %s says %ld", a,
                     hdr_place(src, K_SEED, "seed", place), s->seed);
         return bad(path, where, err, why, NULL);

@@ -238,17 +238,6 @@ typedef struct check_memo {
     size_t nx, cap_x;
 } check_memo;
 
-/* The shortest %g text of v that reads back as v (1e-300, not
- * 1.0000000000000001e-300), into buf. */
-static void shortest(char *buf, size_t n, double v)
-{
-    for (int d = 1; d <= 17; d++) {
-        gw_snprintf(buf, n, "%.*g", d, v);
-        if (gw_strtod(buf, NULL) == v)
-            return;
-    }
-}
-
 static unsigned long long x_key(const struct x_seen *e)
 {
     unsigned long long h = gw_fnv1a64(GW_FNV1A64_INIT, &e->sample, sizeof e->sample);
@@ -297,8 +286,9 @@ static int x_note(check_memo *c, unsigned long long sample, const placement *pl,
         if (o->x0 == e.x0) /* the same x with other values of the other keys */
             return GW_OK;
         char a[32], b[32];
-        shortest(a, sizeof a, o->x0);
-        shortest(b, sizeof b, e.x0);
+        /* the fewest digits that read back (1e-300, not 1.0000000000000001e-300) */
+        gw_num_text(a, sizeof a, o->x0);
+        gw_num_text(b, sizeof b, e.x0);
         return gw_err_set(err, GW_EINVAL, "x: %s and %s m put the block at one position (its centre %.17g m from the "
                           "box's left wall, width %g m%s): each impact would run twice, as two groups of layer-stats; "
                           "list one of them", a, b, e.pos, width, e.points > 1 ? ", at the same impact point" : "");

@@ -850,9 +850,7 @@ int gw_cmd_sweep(int argc, char **argv, const gw_sweep_model *const *models, con
                 gw_cli_progress_report(&chk, k, cfg.ncases);
             gw_sweep_case(&cfg, k, names, values);
             if ((rc = gw_sweep_case_check(m, &memo, cfg.ngrid + cfg.nparams, names, values, &err)) != GW_OK) {
-                char tmp[sizeof err.msg];
-                snprintf(tmp, sizeof tmp, "%s", err.msg);
-                gw_err_set(&err, rc, "case %ld: %s", k, tmp);
+                gw_sweep_case_refused(&cfg, m, k, rc, &err);
                 code = exit_code(rc);
             }
         }

@@ -20,6 +20,14 @@
 int gw_sweep_pairs_check(const char *call, int nk, const char *const *names, const char *const *values,
                          gw_err *err);
 
+/* gw_sweep_run.c: case k's check refused it (rc, err->msg naming the key
+ * first, "rtol: has no effect with ..."): err becomes "case k: ...", and when
+ * that key is a [params] key another case takes (the cases before k, then at
+ * most 1000 after it, checked), the message names that case: [params] hold for
+ * every case, so a key that fits only some goes in a sweep of those (a key
+ * inert in a case is refused, never run as if it acted). Returns rc. */
+int gw_sweep_case_refused(const gw_sweep_config *cfg, const gw_sweep_model *m, long k, int rc, gw_err *err);
+
 /* gw_sweep_config.c: a config filled by hand is consistent: grid keys and
  * params within GW_SWEEP_MAX_KEYS, each with a name and at least one value
  * (none NULL), ncases the grid's product (0 for a zeroed config), the inputs

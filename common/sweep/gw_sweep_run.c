@@ -218,6 +218,47 @@ static int same_key(const char *a, const char *b)
     return *a == *b;
 }
 
+/* same_key over the first n bytes of a against the whole of b */
+static int same_key_n(const char *a, size_t n, const char *b)
+{
+    for (size_t i = 0; i < n; i++, b++)
+        if (!*b || (a[i] != *b && !((a[i] == '_' || a[i] == '-') && (*b == '_' || *b == '-'))))
+            return 0;
+    return *b == 0;
+}
+
+int gw_sweep_case_refused(const gw_sweep_config *cfg, const gw_sweep_model *m, long k, int rc, gw_err *err)
+{
+    if (!err)
+        return rc;
+    char tmp[sizeof err->msg];
+    gw_snprintf(tmp, sizeof tmp, "%s", err->msg);
+    const size_t len = strcspn(tmp, ":");
+    const char *key = NULL;
+    for (int i = 0; cfg && tmp[len] == ':' && i < cfg->nparams && !key; i++)
+        if (cfg->params[i].name && same_key_n(tmp, len, cfg->params[i].name))
+            key = cfg->params[i].name;
+    long other = -1;
+    if (key && m && cfg->ncases > 1) {
+        /* the cases before k passed; past them, at most 1000 are tried */
+        const char *names[2 * GW_SWEEP_MAX_KEYS], *vals[2 * GW_SWEEP_MAX_KEYS];
+        void *memo = NULL;
+        gw_err scratch = {0};
+        for (long j = k > 0 ? 0 : 1; j < cfg->ncases && j <= k + 1000 && other < 0; j++) {
+            if (j == k)
+                continue;
+            gw_sweep_case(cfg, j, names, vals);
+            if (gw_sweep_case_check(m, &memo, cfg->ngrid + cfg->nparams, names, vals, &scratch) == GW_OK)
+                other = j;
+        }
+        gw_sweep_checks_end(m, memo);
+    }
+    if (other >= 0)
+        return gw_err_set(err, rc, "case %ld: %s (case %ld takes it: a [params] key holds for every case, so the "
+                          "cases it fits go in a sweep of their own)", k, tmp, other);
+    return gw_err_set(err, rc, "case %ld: %s", k, tmp);
+}
+
 int gw_sweep_pairs_check(const char *call, int nk, const char *const *names, const char *const *values,
                          gw_err *err)
 {
@@ -264,9 +305,7 @@ int gw_sweep_run_warned(const gw_sweep_config *cfg, const gw_sweep_model *m, int
         int rc = gw_sweep_case_check(m, &memo, nk, names, vals, err);
         if (rc != GW_OK) {
             gw_sweep_checks_end(m, memo);
-            char tmp[sizeof err->msg];
-            gw_snprintf(tmp, sizeof tmp, "%s", err ? err->msg : "");
-            return gw_err_set(err, rc, "case %ld: %s", k, tmp);
+            return gw_sweep_case_refused(cfg, m, k, rc, err);
         }
     }
     /* the check pass's warnings, as the program prints them (the caller's

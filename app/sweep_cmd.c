@@ -213,8 +213,13 @@ static void sweep_line(sweep_run *s, int last)
     char line[320], before[64] = "", left[64] = "";
     if (p->before > 0)
         snprintf(before, sizeof before, " (%ld done before)", p->before);
-    if (part > 0)
-        snprintf(left, sizeof left, ", ~%.1f s left", el / part * (1.0 - part));
+    /* the time left from the part estimated now, not the part shown: held
+     * where the estimate fell (cases found slower than their kind's weight
+     * said, gw_pool_eta_ended), the shown part gave too short a time left
+     * until the work caught up with it */
+    const double est = !last && s->eta.now > 0 ? s->eta.now : part;
+    if (est > 0)
+        snprintf(left, sizeof left, ", ~%.1f s left", el / est * (1.0 - est));
     snprintf(line, sizeof line, "%s%ld/%ld %s%s, %ld under way, %.1f%% of the work, %.1f s elapsed%s\n", p->prefix,
              done, s->ntodo, p->unit, before, last ? 0L : atomic_load(&s->running), 100.0 * part, el, left);
     fputs(line, p->fp); /* one write: the ticker's and a worker's lines never mix */

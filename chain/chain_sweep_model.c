@@ -139,7 +139,9 @@ static int run(int nk, const char *const *names, const char *const *values, doub
  * s (12.5 to 15 times), arkode 1.8e-8 to 2.7e-8 s (about 2.5 times); a
  * sweep of n = 40, 80, 120, 160 on each, cvode 10.6 times rk4 (rk4's n = 80
  * runs 4.8 times its expected length). Another backend counts as rk4. NaN
- * for a case its checks refuse. */
+ * for a case its checks refuse. These factors are a prior only: the case's
+ * kind (its backend and method) lets the time left take each kind's cost
+ * per weight from its cases ended (gw_pool_eta_kinds). */
 static double step_cost(const gw_solver_type *t)
 {
     return t == gw_solver_cvode ? 10.0 : t == gw_solver_arkode ? 2.5 : 1.0;

@@ -332,7 +332,8 @@ static double eta_part(gw_pool_eta *e, double done, double learned, double total
     }
     /* held where it would fall (a case under way slower than the ones
      * before): a display whose share fell would read as work undone */
-    e->shown = fmax(e->shown, fmin(fmax(part, 0), 1));
+    e->now = fmin(fmax(part, 0), 1);
+    e->shown = fmax(e->shown, e->now);
     return e->shown;
 }
 

@@ -58,6 +58,7 @@ typedef struct gw_pool_eta {
     int threads, cpus;   /* the pool's threads; the CPUs they run on */
     gw_pool_clock clock;
     double shown;        /* the largest part reported */
+    double now;          /* the part estimated at the last call, not held (the time left's) */
     double *free_at;     /* scratch: threads doubles */
     /* the cases' weights when known (gw_pool_eta_weigh): cum[i] the weight
      * of cases 0..i-1, n + 1 of them; NULL: the cases alike */

@@ -31,7 +31,12 @@
  * 12 % at one mark at least. And the factors themselves: one kind whose
  * ended cases took 3 times their weight's time beside one at 1 reads 1.5
  * and 0.5 of the mean (their ended weights alike), a kind with none ended
- * 1, a kind out of range none.
+ * 1, a kind out of range none. And the part estimated now (gw_pool_eta's
+ * now, the line's time left) beside the part shown, which never decreases:
+ * a case under way whose share done falls from 0.5 to 0.2 (one thread, one
+ * case of weight 1 ended) leaves the part shown at 0.75 and the part now at
+ * 1.5 / 2.3 (the line's time left took the part shown, held: too short
+ * until the work caught up with it).
  */
 #include <math.h>
 #include <stdio.h>
@@ -203,6 +208,26 @@ int main(void)
                        gw_pool_eta_weight_learned(&e, 2), gw_pool_eta_weight_learned(&e, 4));
         } else {
             GW_TEST_OK(0, "the factors: set up");
+        }
+        gw_pool_eta_free(&e);
+    }
+    /* the part estimated now beside the part shown: a case under way found
+     * slower (its share done falls from 0.5 to 0.2) lowers the estimate,
+     * which the line's time left takes, while the part shown holds */
+    {
+        gw_pool_eta e;
+        const double ww[2] = {1, 1};
+        if (gw_pool_eta_init(&e, 2, 1) == GW_OK && gw_pool_eta_weigh(&e, ww, 2) == GW_OK) {
+            const long ir = 1;
+            double sh = 0.5;
+            const double p1 = gw_pool_eta_part_cases(&e, 1, &ir, &sh, 1, 2);
+            sh = 0.2;
+            const double p2 = gw_pool_eta_part_cases(&e, 1, &ir, &sh, 1, 2);
+            GW_TEST_OK(p1 == 0.75 && p2 == p1 && e.now < p1 && fabs(e.now - 1.5 / 2.3) < 1e-12,
+                       "the part shown held at %.4f (0.75), the part now %.4f (1.5 / 2.3: the time done 1.5, left 0.8)",
+                       p2, e.now);
+        } else {
+            GW_TEST_OK(0, "the part now: set up");
         }
         gw_pool_eta_free(&e);
     }

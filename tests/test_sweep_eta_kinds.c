@@ -23,8 +23,9 @@
  * grid whose last key is `solver`), on 2 threads on 2 CPUs, on 3 threads on
  * 2 CPUs, and with each case's cost off its kind's by up to 25 % (a
  * deterministic spread). Where a quarter, a half and three quarters of the
- * cases have ended, the time left the part implies ((1 - P) / P of the time
- * elapsed) is within 12 % of the true one (exact kind factors: the
+ * cases have ended, the time left the line gives ((1 - P) / P of the time
+ * elapsed, P the part estimated now, gw_pool_eta's now) is within 12 % of
+ * the true one (exact kind factors: the
  * schedule's granularity, 3 to 5 %; the spread adds up to its mean over the
  * kinds' few ended cases); the part never decreases and ends at 1. As a
  * control, the same sweeps without kinds (the estimate before) read outside
@@ -60,7 +61,7 @@ typedef struct sim {
 static sim run(const double *cost, const double *w, const int *kind, int n, int threads, int cpus)
 {
     sim s = {{NAN, NAN, NAN}, 0, 1, 0};
-    static double tt[200000], pp[200000];
+    static double tt[200000], pp[200000], pn[200000];
     static long nd[200000];
     long nr = 0;
     gw_pool_eta e;
@@ -124,15 +125,16 @@ static sim run(const double *cost, const double *w, const int *kind, int n, int 
         if (nr > 0 && part < pp[nr - 1])
             s.monotone = 0;
         if (nr < 200000)
-            tt[nr] = now, pp[nr] = part, nd[nr] = ended, nr++;
+            tt[nr] = now, pp[nr] = part, pn[nr] = e.now, nd[nr] = ended, nr++;
     }
     gw_pool_eta_free(&e);
     s.last_part = nr > 0 ? pp[nr - 1] : 0;
     const double q[3] = {0.25, 0.50, 0.75};
     for (long i = 0; i < nr && s.marks < 3; i++) {
-        if ((double)nd[i] < q[s.marks] * n || !(pp[i] > 0))
+        if ((double)nd[i] < q[s.marks] * n || !(pn[i] > 0))
             continue;
-        s.ratio[s.marks++] = tt[i] * (1 - pp[i]) / pp[i] / (last_end - tt[i]);
+        /* the line's time left: from the part estimated now */
+        s.ratio[s.marks++] = tt[i] * (1 - pn[i]) / pn[i] / (last_end - tt[i]);
     }
     return s;
 }
@@ -170,13 +172,13 @@ int main(void)
             kind[i] = i % 3;
             w[i] = N * N;
             /* a case's own cost off its kind's by up to 25 %, alike for no kind */
-            cost[i] = w[i] * f[kind[i]] * (spread ? 1 + 0.10 * sin(2.3 * i + 0.7) : 1.0);
+            cost[i] = w[i] * f[kind[i]] * (spread == 1 ? 1 + 0.10 * sin(2.3 * i + 0.7) : 1.0);
         }
+        const char *how[] = {"", ", costs spread 10 %"};
         char name[96];
-        snprintf(name, sizeof name, "27 cases of 3 kinds on 2 threads%s", spread ? ", costs spread 10 %" : "");
+        snprintf(name, sizeof name, "27 cases of 3 kinds on 2 threads%s", how[spread]);
         grid(name, cost, w, kind, n, 2, 2, 0.12);
-        snprintf(name, sizeof name, "27 cases of 3 kinds on 3 threads, 2 CPUs%s",
-                    spread ? ", costs spread 10 %" : "");
+        snprintf(name, sizeof name, "27 cases of 3 kinds on 3 threads, 2 CPUs%s", how[spread]);
         grid(name, cost, w, kind, n, 3, 2, 0.12);
     }
     /* the factors: kind 0's ended cases took 3 per weight, kind 1's 1 per

@@ -370,6 +370,7 @@ static int pool_case(void *ctx, long i, gw_err *err)
         pthread_mutex_unlock(&s->lock);
     }
     int rc = run_case(s, s->todo[i], row, slot, err);
+    const double took = gw_clock_ms() - t_begin; /* its run alone: not the wait for the lock below */
     pthread_mutex_lock(&s->lock);
     /* the slot freed with the case counted ended, under the lock the
      * ticker's lines take: never counted both ways */
@@ -383,7 +384,7 @@ static int pool_case(void *ctx, long i, gw_err *err)
         if (x > 0) /* where its part ended: the cases' typical end (sweep_part) */
             s->end_sum += 1e-6 * (double)x, s->end_n++;
         if (slot) /* the time it took: its kind's pace (sweep_part) */
-            gw_pool_eta_ended(&s->eta, i, gw_clock_ms() - t_begin);
+            gw_pool_eta_ended(&s->eta, i, took);
         rc = journal(s, row, err);
     } else if (case_failure(rc)) {
         case_failed(s, s->todo[i], err), rc = GW_OK;

@@ -86,12 +86,16 @@ typedef struct sweep_run {
     /* The cases' weights (gw_sweep_weigh: each case's cost as its model
      * expects it, w[i] of todo[i]; NULL: alike), the weight of the cases
      * ended, the first case not yet begun (threads: the pool hands them out
-     * in order), and the weight of each case under way (scratch) */
+     * in order) */
     const gw_sweep_weigh *weigh;
     double *w;
     double w_ended;
     long next_i;
-    double *wrun;
+    /* each case's kind (kind[i] of todo[i], its model's: the time left learns
+     * each kind's cost from its ended cases, gw_pool_eta_kinds; NULL: one
+     * kind), and the place of each case under way (scratch) */
+    int *kind;
+    long *irun;
     /* MPI: rank r's case (its place in todo, -1: none) since rank_t0[r] (ms);
      * the time the cases ended took over their weight (the pace a case under
      * way is taken to go at); the schedule over the ranks in use (mpi_eta:
@@ -151,13 +155,14 @@ static double sweep_part(sweep_run *s, long done)
     for (long i = 0; i < s->nslots; i++) {
         const long x = atomic_load_explicit(&s->slots[i].x_micro, memory_order_relaxed);
         if (atomic_load(&s->slots[i].busy)) {
-            s->wrun[nrun] = gw_pool_eta_weight(&s->eta, atomic_load(&s->slots[i].i));
+            s->irun[nrun] = atomic_load(&s->slots[i].i);
             s->share[nrun++] = x > 0 ? 1e-6 * (double)x / fmax(end, 1.1e-6 * (double)x) : 0;
         }
     }
-    /* cases of unequal cost: counted by their weights (gw_pool_eta_weigh) */
+    /* cases of unequal cost: counted by their weights (gw_pool_eta_weigh),
+     * the cases left of a kind at the pace its ended cases went at */
     if (s->eta.cum)
-        return gw_pool_eta_part_weighed(&s->eta, s->w_ended, s->wrun, s->share, nrun, s->next_i);
+        return gw_pool_eta_part_cases(&s->eta, s->w_ended, s->irun, s->share, nrun, s->next_i);
     return gw_pool_eta_part(&s->eta, done, s->share, nrun, s->ntodo - done - nrun);
 }
 
@@ -165,9 +170,10 @@ static double sweep_part(sweep_run *s, long done)
 /* The part under MPI (rank 0 hands out the cases one at a time, in order):
  * as sweep_part, scheduled over the ranks that run cases, but a case under
  * way is not seen inside: its share is the time it has run over the time
- * its weight takes at the pace of the cases ended (their time over their
- * weight; 0 before any), expected to go on a tenth longer than it has once
- * past it. The cases alike (no weights) weigh 1 each. Caller is the master. */
+ * its learned weight (gw_pool_eta_weight_learned: its kind's pace) takes at
+ * the pace of the cases ended (their time over their weight; 0 before any),
+ * expected to go on a tenth longer than it has once past it. The cases alike
+ * (no weights) weigh 1 each. Caller is the master. */
 static double mpi_part(sweep_run *s, int size)
 {
     const double now = gw_clock_ms(), pace = s->pace_w > 0 ? s->pace_ms / s->pace_w : 0;
@@ -175,12 +181,12 @@ static double mpi_part(sweep_run *s, int size)
     for (int r = 1; r < size && nrun < s->eta.threads; r++) {
         if (s->rank_i[r] < 0)
             continue;
-        const double wr = gw_pool_eta_weight(&s->eta, s->rank_i[r]);
+        const double wr = gw_pool_eta_weight_learned(&s->eta, s->rank_i[r]);
         const double x = pace > 0 ? (now - s->rank_t0[r]) / (pace * wr) : 0;
-        s->wrun[nrun] = wr;
+        s->irun[nrun] = s->rank_i[r];
         s->share[nrun++] = x / fmax(1.0, 1.1 * x);
     }
-    return gw_pool_eta_part_weighed(&s->eta, s->w_ended, s->wrun, s->share, nrun, s->next_i);
+    return gw_pool_eta_part_cases(&s->eta, s->w_ended, s->irun, s->share, nrun, s->next_i);
 }
 #endif
 
@@ -207,8 +213,13 @@ static void sweep_line(sweep_run *s, int last)
     char line[320], before[64] = "", left[64] = "";
     if (p->before > 0)
         snprintf(before, sizeof before, " (%ld done before)", p->before);
-    if (part > 0)
-        snprintf(left, sizeof left, ", ~%.1f s left", el / part * (1.0 - part));
+    /* the time left from the part estimated now, not the part shown: held
+     * where the estimate fell (cases found slower than their kind's weight
+     * said, gw_pool_eta_ended), the shown part gave too short a time left
+     * until the work caught up with it */
+    const double est = !last && s->eta.now > 0 ? s->eta.now : part;
+    if (est > 0)
+        snprintf(left, sizeof left, ", ~%.1f s left", el / est * (1.0 - est));
     snprintf(line, sizeof line, "%s%ld/%ld %s%s, %ld under way, %.1f%% of the work, %.1f s elapsed%s\n", p->prefix,
              done, s->ntodo, p->unit, before, last ? 0L : atomic_load(&s->running), 100.0 * part, el, left);
     fputs(line, p->fp); /* one write: the ticker's and a worker's lines never mix */
@@ -350,6 +361,7 @@ static int pool_case(void *ctx, long i, gw_err *err)
         return gw_err_set(err, GW_ENOMEM, "case %ld: out of memory", s->todo[i]);
     case_slot *slot = slot_take(s, i);
     const long under_way = atomic_fetch_add(&s->running, 1) + 1;
+    const double t_begin = gw_clock_ms();
     if (slot) { /* the threads at work since the last line: the time elapsed (sweep_part) */
         pthread_mutex_lock(&s->lock);
         if (i + 1 > s->next_i)
@@ -358,6 +370,7 @@ static int pool_case(void *ctx, long i, gw_err *err)
         pthread_mutex_unlock(&s->lock);
     }
     int rc = run_case(s, s->todo[i], row, slot, err);
+    const double took = gw_clock_ms() - t_begin; /* its run alone: not the wait for the lock below */
     pthread_mutex_lock(&s->lock);
     /* the slot freed with the case counted ended, under the lock the
      * ticker's lines take: never counted both ways */
@@ -370,6 +383,8 @@ static int pool_case(void *ctx, long i, gw_err *err)
     if (rc == GW_OK) {
         if (x > 0) /* where its part ended: the cases' typical end (sweep_part) */
             s->end_sum += 1e-6 * (double)x, s->end_n++;
+        if (slot) /* the time it took: its kind's pace (sweep_part) */
+            gw_pool_eta_ended(&s->eta, i, took);
         rc = journal(s, row, err);
     } else if (case_failure(rc)) {
         case_failed(s, s->todo[i], err), rc = GW_OK;
@@ -422,15 +437,15 @@ static void run_threads(sweep_run *s, long jobs)
         s->nslots = gw_pool_threads(s->ntodo, (int)jobs); /* gw_cases_run's count: every case has one */
         if (gw_pool_eta_init(&s->eta, s->ntodo, (int)jobs) == GW_OK &&
             (s->share = malloc((size_t)s->nslots * sizeof *s->share)) &&
-            (s->wrun = malloc((size_t)s->nslots * sizeof *s->wrun)) &&
+            (s->irun = malloc((size_t)s->nslots * sizeof *s->irun)) &&
             (s->slots = calloc((size_t)s->nslots, sizeof *s->slots))) {
             for (long i = 0; i < s->nslots; i++) {
                 atomic_init(&s->slots[i].busy, 0);
                 atomic_init(&s->slots[i].x_micro, -1);
                 atomic_init(&s->slots[i].i, -1);
             }
-            if (s->w) /* out of memory for them: the cases alike */
-                gw_pool_eta_weigh(&s->eta, s->w, s->ntodo);
+            if (s->w && gw_pool_eta_weigh(&s->eta, s->w, s->ntodo) == GW_OK && s->kind) /* else alike */
+                gw_pool_eta_kinds(&s->eta, s->kind, s->ntodo); /* out of memory: one kind */
         } else {
             s->nslots = 0; /* without them: the lines as before */
         }
@@ -448,11 +463,11 @@ static void run_threads(sweep_run *s, long jobs)
     }
     free(s->slots);
     free(s->share);
-    free(s->wrun);
+    free(s->irun);
     gw_pool_eta_free(&s->eta);
     s->slots = NULL;
     s->share = NULL;
-    s->wrun = NULL;
+    s->irun = NULL;
     s->nslots = 0;
     if (rc != GW_OK && rc != GW_ECANCELED) {
         s->failed = rc;
@@ -495,15 +510,16 @@ static void mpi_eta_start(sweep_run *s, int size)
     s->rank_i = malloc((size_t)size * sizeof *s->rank_i);
     s->rank_t0 = malloc((size_t)size * sizeof *s->rank_t0);
     s->share = malloc((size_t)size * sizeof *s->share);
-    s->wrun = malloc((size_t)size * sizeof *s->wrun);
-    if (!s->rank_i || !s->rank_t0 || !s->share || !s->wrun || gw_pool_eta_init(&s->eta, s->ntodo, size - 1) != GW_OK)
+    s->irun = malloc((size_t)size * sizeof *s->irun);
+    if (!s->rank_i || !s->rank_t0 || !s->share || !s->irun ||
+        gw_pool_eta_init(&s->eta, s->ntodo, size - 1) != GW_OK)
         return; /* without it: the lines of the rate at which cases end, as before */
     if (!(local && atol(local) == size))
         s->eta.cpus = s->eta.threads;
     for (int r = 0; r < size; r++)
         s->rank_i[r] = -1;
-    if (s->w)
-        gw_pool_eta_weigh(&s->eta, s->w, s->ntodo);
+    if (s->w && gw_pool_eta_weigh(&s->eta, s->w, s->ntodo) == GW_OK && s->kind)
+        gw_pool_eta_kinds(&s->eta, s->kind, s->ntodo);
     s->mpi_eta = size;
 }
 
@@ -513,8 +529,8 @@ static void mpi_eta_end(sweep_run *s)
     free(s->rank_i);
     free(s->rank_t0);
     free(s->share);
-    free(s->wrun);
-    s->rank_i = NULL, s->rank_t0 = NULL, s->share = NULL, s->wrun = NULL;
+    free(s->irun);
+    s->rank_i = NULL, s->rank_t0 = NULL, s->share = NULL, s->irun = NULL;
     s->mpi_eta = 0;
 }
 
@@ -546,8 +562,10 @@ static void mpi_master(sweep_run *s, int size)
         if (s->mpi_eta && src > 0 && src < size && s->rank_i[src] >= 0) { /* its case ended: weighed */
             const double wr = gw_pool_eta_weight(&s->eta, s->rank_i[src]);
             s->w_ended += wr;
-            if (st.MPI_TAG == TAG_ROW) /* the pace: of the cases run to their end */
+            if (st.MPI_TAG == TAG_ROW) { /* the pace: of the cases run to their end, and of their kind */
                 s->pace_ms += gw_clock_ms() - s->rank_t0[src], s->pace_w += wr;
+                gw_pool_eta_ended(&s->eta, s->rank_i[src], gw_clock_ms() - s->rank_t0[src]);
+            }
             s->rank_i[src] = -1;
         }
         gw_err err = {{0}};
@@ -741,11 +759,15 @@ static void weigh_cases(sweep_run *s, const gw_sweep_config *cfg, const gw_sweep
     if (!wg || !wg->weight || s->ntodo < 1 || s->ntodo > SWEEP_WEIGH_MAX ||
         !(s->w = malloc((size_t)s->ntodo * sizeof *s->w)))
         return;
+    s->kind = malloc((size_t)s->ntodo * sizeof *s->kind); /* NULL: the cases of one kind */
     const char *names[2 * GW_SWEEP_MAX_KEYS], *values[2 * GW_SWEEP_MAX_KEYS];
     void *memo = NULL;
     for (long i = 0; i < s->ntodo; i++) {
         gw_sweep_case(cfg, s->todo[i], names, values);
-        s->w[i] = wg->weight(&memo, cfg->ngrid + cfg->nparams, names, values);
+        int kind = -1;
+        s->w[i] = wg->weight(&memo, cfg->ngrid + cfg->nparams, names, values, &kind);
+        if (s->kind)
+            s->kind[i] = kind;
     }
     if (wg->memo_free)
         wg->memo_free(memo);
@@ -1034,6 +1056,7 @@ finish:
     free(done);
     free(s.todo);
     free(s.w);
+    free(s.kind);
     gw_sweep_config_free(&cfg);
 #if GW_HAVE_MPI
     if (use_mpi) { /* idle while rank 0 writes the table: MPI_Finalize's own wait spins */

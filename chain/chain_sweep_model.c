@@ -139,22 +139,30 @@ static int run(int nk, const char *const *names, const char *const *values, doub
  * s (12.5 to 15 times), arkode 1.8e-8 to 2.7e-8 s (about 2.5 times); a
  * sweep of n = 40, 80, 120, 160 on each, cvode 10.6 times rk4 (rk4's n = 80
  * runs 4.8 times its expected length). Another backend counts as rk4. NaN
- * for a case its checks refuse. */
+ * for a case its checks refuse. These factors are a prior only: the case's
+ * kind (its backend and method) lets the time left take each kind's cost
+ * per weight from its cases ended (gw_pool_eta_kinds). */
 static double step_cost(const gw_solver_type *t)
 {
     return t == gw_solver_cvode ? 10.0 : t == gw_solver_arkode ? 2.5 : 1.0;
 }
 
-static double weigh(void **memo, int nk, const char *const *names, const char *const *values)
+static double weigh(void **memo, int nk, const char *const *names, const char *const *values, int *kind)
 {
     (void)memo;
     gw_chain_setup s;
     gw_err e = {{0}};
     double w = NAN;
+    if (kind)
+        *kind = -1;
     if (prepare(&s, nk, names, values, &e) == GW_OK) {
         gw_chain_resolved r;
-        if (gw_chain_setup_resolve(&s, &r, &e) == GW_OK)
-            w = chain_watch_weight(&r.params, &r.run) * step_cost(r.run.solver ? r.run.solver : gw_solver_cvode);
+        if (gw_chain_setup_resolve(&s, &r, &e) == GW_OK) {
+            const gw_solver_type *t = r.run.solver ? r.run.solver : gw_solver_cvode;
+            w = chain_watch_weight(&r.params, &r.run) * step_cost(t);
+            if (kind) /* its backend and method: the time left learns their cost (gw_pool_eta_kinds) */
+                *kind = GW_SWEEP_KIND(t, r.run.sp.method, 0);
+        }
         gw_chain_resolved_free(&r);
     }
     gw_chain_setup_clear(&s);

@@ -166,6 +166,8 @@ int gw_pool_eta_init(gw_pool_eta *e, long n, int jobs)
     e->threads = th;
     e->cpus = gw_pool_cpus();
     e->n = n > 0 ? n : 0;
+    for (int k = 0; k < GW_POOL_ETA_KINDS; k++)
+        e->gain[k] = 1.0;
     return GW_OK;
 }
 
@@ -175,8 +177,10 @@ void gw_pool_eta_free(gw_pool_eta *e)
         return;
     free(e->free_at);
     free(e->cum);
+    free(e->kind);
     e->free_at = NULL;
     e->cum = NULL;
+    e->kind = NULL;
 }
 
 void gw_pool_eta_begun(gw_pool_eta *e, int under_way)
@@ -231,6 +235,8 @@ int gw_pool_eta_weigh(gw_pool_eta *e, const double *w, long n)
     free(e->cum);
     e->cum = cum;
     e->n = n;
+    free(e->kind); /* another set of cases: their kinds given anew */
+    e->kind = NULL;
     return GW_OK;
 }
 
@@ -239,42 +245,95 @@ double gw_pool_eta_weight(const gw_pool_eta *e, long i)
     return e && e->cum && i >= 0 && i < e->n ? e->cum[i + 1] - e->cum[i] : 1.0;
 }
 
+int gw_pool_eta_kinds(gw_pool_eta *e, const int *kind, long n)
+{
+    if (!e || !kind || !e->cum || n != e->n || n < 1)
+        return GW_EINVAL;
+    for (long i = 0; i < n; i++)
+        if (kind[i] < -1 || kind[i] >= GW_POOL_ETA_KINDS)
+            return GW_EINVAL;
+    int *k = malloc((size_t)n * sizeof *k);
+    if (!k)
+        return GW_ENOMEM;
+    memcpy(k, kind, (size_t)n * sizeof *k);
+    free(e->kind);
+    e->kind = k;
+    return GW_OK;
+}
+
+void gw_pool_eta_ended(gw_pool_eta *e, long i, double t)
+{
+    if (!e || i < 0 || i >= e->n || !isfinite(t) || !(t > 0))
+        return;
+    const double w = gw_pool_eta_weight(e, i);
+    const int k = e->kind ? e->kind[i] : -1;
+    e->d_all += t;
+    e->w_all += w;
+    if (k >= 0) {
+        e->kd[k] += t;
+        e->kw[k] += w;
+    }
+    /* each kind's time per weight over all ended cases' (their pace) */
+    const double pace = e->d_all / e->w_all;
+    for (int j = 0; j < GW_POOL_ETA_KINDS; j++)
+        e->gain[j] = e->kw[j] > 0 && e->kd[j] > 0 && pace > 0 ? e->kd[j] / e->kw[j] / pace : 1.0;
+}
+
+double gw_pool_eta_weight_learned(const gw_pool_eta *e, long i)
+{
+    const double w = gw_pool_eta_weight(e, i);
+    return e && e->kind && i >= 0 && i < e->n && e->kind[i] >= 0 ? w * e->gain[e->kind[i]] : w;
+}
+
 /* The part, the work counted in weight: done and total; the cases under way
  * (wrun, share), those to come: to_come alike ones (cum NULL) or the cases
  * next..n-1 of cum. */
-static double eta_part(gw_pool_eta *e, double done, double total, const double *wrun, const double *share, int nrun,
-                       long to_come, long next)
+static double eta_part(gw_pool_eta *e, double done, double learned, double total, const double *wrun,
+                       const long *irun, const double *share, int nrun, long to_come, long next)
 {
     gw_pool_clock_count(&e->clock, done, nrun, e->cpus);
+    /* the time elapsed in learned weight: the clock's (its work per thread
+     * at work, counted in weight, which only grows) scaled by the work done
+     * learned over the work done in weight */
+    const double elapsed = e->clock.elapsed * (done > 0 && learned > 0 ? learned / done : 1.0);
     const int th = e->threads;
     double part;
-    if (e->clock.elapsed > 0 && e->free_at && nrun <= th) {
+    if (elapsed > 0 && e->free_at && nrun <= th) {
         /* the time left: the cases under way hold their threads for their
          * share left, those to come go to the first thread free */
         for (int k = 0; k < th; k++)
             e->free_at[k] = 0;
         for (int i = 0; i < nrun; i++)
-            gw_pool_give(e->free_at, th, (wrun ? wrun[i] : 1.0) * (1 - fmin(fmax(share[i], 0), 1)));
+            gw_pool_give(e->free_at, th,
+                         (irun ? gw_pool_eta_weight_learned(e, irun[i]) : wrun ? wrun[i] : 1.0) *
+                             (1 - fmin(fmax(share[i], 0), 1)));
         if (!e->cum) {
             gw_pool_give_each(e->free_at, th, to_come, 1.0);
         } else {
             long a = next < 0 ? 0 : next;
             if (e->n - a > GW_POOL_ETA_ONE_BY_ONE) {
                 const long b = e->n - GW_POOL_ETA_ONE_BY_ONE;
-                give_level(e->free_at, th, e->cum[b] - e->cum[a]);
+                double sum = 0;
+                if (!e->kind)
+                    sum = e->cum[b] - e->cum[a];
+                else /* each at its kind's pace */
+                    for (long i = a; i < b; i++)
+                        sum += gw_pool_eta_weight_learned(e, i);
+                give_level(e->free_at, th, sum);
                 a = b;
             }
             for (long i = a; i < e->n; i++)
-                gw_pool_give(e->free_at, th, e->cum[i + 1] - e->cum[i]);
+                gw_pool_give(e->free_at, th, gw_pool_eta_weight_learned(e, i));
         }
         const double left = gw_pool_span(e->free_at, th, e->cpus);
-        part = e->clock.elapsed / (e->clock.elapsed + left);
+        part = elapsed / (elapsed + left);
     } else { /* nothing done yet (or no schedule): the share of the work */
         part = total > 0 ? done / total : 0;
     }
     /* held where it would fall (a case under way slower than the ones
      * before): a display whose share fell would read as work undone */
-    e->shown = fmax(e->shown, fmin(fmax(part, 0), 1));
+    e->now = fmin(fmax(part, 0), 1);
+    e->shown = fmax(e->shown, e->now);
     return e->shown;
 }
 
@@ -286,7 +345,7 @@ double gw_pool_eta_part(gw_pool_eta *e, long ended, const double *share, int nru
     if (to_come < 0)
         to_come = 0;
     const double total = (double)ended + nrun + (double)to_come;
-    return eta_part(e, done, total, NULL, share, nrun, to_come, 0);
+    return eta_part(e, done, done, total, NULL, NULL, share, nrun, to_come, 0);
 }
 
 double gw_pool_eta_part_weighed(gw_pool_eta *e, double w_ended, const double *wrun, const double *share, int nrun,
@@ -304,7 +363,30 @@ double gw_pool_eta_part_weighed(gw_pool_eta *e, double w_ended, const double *wr
         total += e->cum[e->n] - e->cum[next];
     else if (!e->cum)
         to_come = e->n - next > 0 ? e->n - next : 0;
-    return eta_part(e, done, total, wrun, share, nrun, to_come, next);
+    return eta_part(e, done, done, total, wrun, NULL, share, nrun, to_come, next);
+}
+
+double gw_pool_eta_part_cases(gw_pool_eta *e, double w_ended, const long *irun, const double *share, int nrun,
+                              long next)
+{
+    /* the work done in weight (the clock's) and in learned weight: the
+     * cases ended count the same in both (their learned weights sum to
+     * their weights, the factors being over their mean pace) */
+    double done = w_ended > 0 ? w_ended : 0, learned = done, total = done;
+    for (int i = 0; i < nrun; i++) {
+        const double w = gw_pool_eta_weight(e, irun[i]), sh = fmin(fmax(share[i], 0), 1);
+        done += w * sh;
+        learned += gw_pool_eta_weight_learned(e, irun[i]) * sh;
+        total += w;
+    }
+    if (next < 0)
+        next = 0;
+    long to_come = 0;
+    if (e->cum && next < e->n)
+        total += e->cum[e->n] - e->cum[next];
+    else if (!e->cum)
+        to_come = e->n - next > 0 ? e->n - next : 0;
+    return eta_part(e, done, learned, total, NULL, irun, share, nrun, to_come, next);
 }
 
 int gw_cases_run(long n, int jobs, gw_case_fn fn, void *ctx, gw_progress_fn progress, void *pctx,

@@ -53,15 +53,23 @@ void gw_pool_clock_count(gw_pool_clock *c, double done, int under_way, int cpus)
  * to the first thread free. So the last cases, run on fewer threads than
  * the pool's, count at their own pace. On one thread it is the share of the
  * work done. The part reported never decreases. */
+#define GW_POOL_ETA_KINDS 64 /* the kinds of cases told apart (gw_pool_eta_kinds) */
 typedef struct gw_pool_eta {
     int threads, cpus;   /* the pool's threads; the CPUs they run on */
     gw_pool_clock clock;
     double shown;        /* the largest part reported */
+    double now;          /* the part estimated at the last call, not held (the time left's) */
     double *free_at;     /* scratch: threads doubles */
     /* the cases' weights when known (gw_pool_eta_weigh): cum[i] the weight
      * of cases 0..i-1, n + 1 of them; NULL: the cases alike */
     double *cum;
     long n;
+    /* the cases' kinds when known (gw_pool_eta_kinds): kind[i] in [0,
+     * GW_POOL_ETA_KINDS) or -1 (none); NULL: one kind. The time the ended
+     * cases took and their weight, of each kind (kd, kw) and of all (d_all,
+     * w_all), and each kind's factor (gain) from them */
+    int *kind;
+    double kd[GW_POOL_ETA_KINDS], kw[GW_POOL_ETA_KINDS], gain[GW_POOL_ETA_KINDS], d_all, w_all;
 } gw_pool_eta;
 /* For gw_cases_run(n, jobs) on this machine's CPUs; GW_ENOMEM (e untouched
  * but zeroed) or GW_OK. Free with gw_pool_eta_free. */
@@ -99,5 +107,32 @@ double gw_pool_eta_weight(const gw_pool_eta *e, long i);
  * part as gw_pool_eta_part when the cases are alike (weights 1). */
 double gw_pool_eta_part_weighed(gw_pool_eta *e, double w_ended, const double *wrun, const double *share, int nrun,
                                 long next);
+
+/* Cases of kinds whose cost per weight differs by a factor their weights do
+ * not hold (a chain sweep over `solver`: a backend's step costs what its
+ * model guesses only roughly, 0.3 to 5 times, and a kind's cases share it):
+ * kind[0..n-1], in the pool's order, each in [0, GW_POOL_ETA_KINDS) or -1
+ * (of no kind). Each case ended reports the time it took
+ * (gw_pool_eta_ended, in any unit, the same for all), and from then on the
+ * cases left of a kind count, in the time left, their weight times the
+ * kind's factor: the time its ended cases took per weight over the time all
+ * ended cases took per weight (1 for a kind none of which ended, and for
+ * cases of no kind). The time elapsed still counts the weights (the factor
+ * is relative to the pace they went at), so on one thread the time left is
+ * the time elapsed times the weight left, each case at its kind's pace, over
+ * the weight done. GW_OK, GW_ENOMEM (e's cases of one kind), GW_EINVAL (no
+ * weights yet, n not theirs, or a kind out of range: e unchanged). */
+int gw_pool_eta_kinds(gw_pool_eta *e, const int *kind, long n);
+/* Case i ended after time t (not counted unless finite and above 0, or i
+ * outside [0, n)). */
+void gw_pool_eta_ended(gw_pool_eta *e, long i, double t);
+/* Case i's weight times its kind's factor (gw_pool_eta_weight's without kinds). */
+double gw_pool_eta_weight_learned(const gw_pool_eta *e, long i);
+/* gw_pool_eta_part_weighed with the cases under way given by their place
+ * irun[0..nrun-1] (their weights looked up): the time elapsed counts each
+ * by its weight times its share done, the time left by its learned weight
+ * times its share left; the cases to come next..n-1 by their learned weights. */
+double gw_pool_eta_part_cases(gw_pool_eta *e, double w_ended, const long *irun, const double *share, int nrun,
+                              long next);
 
 #endif

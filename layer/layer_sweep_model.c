@@ -586,6 +586,7 @@ static int run(int nk, const char *const *names, const char *const *values, doub
 typedef struct weigh_slot {
     char *key; /* the case's pairs but those of the speed, the point and the times */
     double bodies, step;
+    int kind; /* its backend, method and mode (GW_SWEEP_KIND; -1: none) */
 } weigh_slot;
 
 typedef struct weigh_memo {
@@ -634,11 +635,13 @@ static void weigh_memo_free(void *memo)
     free(w);
 }
 
-static double weigh(void **memo, int nk, const char *const *names, const char *const *values)
+static double weigh(void **memo, int nk, const char *const *names, const char *const *values, int *kind)
 {
     gw_layer_impact_setup s;
     gw_err e = {{0}};
     double w = NAN;
+    if (kind)
+        *kind = -1;
     if (prepare(&s, nk, names, values, NULL, &e) != GW_OK) {
         gw_layer_impact_setup_clear(&s);
         return NAN;
@@ -651,7 +654,7 @@ static double weigh(void **memo, int nk, const char *const *names, const char *c
     for (int i = 0; key && i < WEIGH_SLOTS && !hit; i++)
         if (m->slot[i].key && strcmp(m->slot[i].key, key) == 0)
             hit = &m->slot[i];
-    weigh_slot found = {NULL, NAN, NAN};
+    weigh_slot found = {NULL, NAN, NAN, -1};
     if (!hit) {
         gw_layer_impact_plan p;
         if (gw_layer_impact_plan_make(&s, &p, &e) == GW_OK) {
@@ -659,13 +662,15 @@ static double weigh(void **memo, int nk, const char *const *names, const char *c
             found.bodies = p.sample.n + 1.0;
             found.step = p.type == gw_solver_rk4 ? (p.sp.dt > 0 ? p.sp.dt : 1e-6)
                                                  : p.type == gw_solver_verlet && p.sp.dt > 0 ? p.sp.dt : dem;
+            /* the exact mode stops at every event: its steps cost another pace */
+            found.kind = GW_SWEEP_KIND(p.type, p.sp.method, s.exact);
         }
         gw_layer_impact_plan_free(&p);
         if (key) { /* kept, the oldest replaced */
             weigh_slot *k = &m->slot[m->next];
             m->next = (m->next + 1) % WEIGH_SLOTS;
             free(k->key);
-            *k = (weigh_slot){key, found.bodies, found.step};
+            *k = (weigh_slot){key, found.bodies, found.step, found.kind};
             key = NULL;
         }
         hit = &found;
@@ -676,6 +681,8 @@ static double weigh(void **memo, int nk, const char *const *names, const char *c
         end = fmin(s.t_max, REBOUND_E * s.vi / s.gravity);
     if (hit->bodies > 0 && hit->step > 0 && end > 0)
         w = hit->bodies * end / hit->step;
+    if (kind)
+        *kind = hit->kind;
     gw_layer_impact_setup_clear(&s);
     return isfinite(w) && w > 0 ? w : NAN;
 }

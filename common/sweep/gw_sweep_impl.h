@@ -102,9 +102,19 @@ void gw_sweep_journal_close(int fd);
  * memo_free (NULL-safe; NULL: the model keeps none). Internal: the program's
  * only, neither in gw_sweep_model (a public struct) nor exported. */
 typedef struct gw_sweep_weigh {
-    double (*weight)(void **memo, int nkeys, const char *const *names, const char *const *values);
+    double (*weight)(void **memo, int nkeys, const char *const *names, const char *const *values, int *kind);
     void (*memo_free)(void *memo);
 } gw_sweep_weigh;
+/* weight's *kind (set to -1 first: none): the case's kind, in [0, 64), the
+ * cases of one kind sharing a cost per weight the weight does not hold (its
+ * backend and method, a layer case's mode): the time left learns each
+ * kind's from its ended cases (gw_pool_eta_kinds). GW_SWEEP_KIND gives one
+ * from a backend (NULL, cvode, arkode, rk4, verlet, another), its method
+ * (GW_METHOD_*, 0 to 5) and a flag (0, 1). */
+#define GW_SWEEP_KIND(type, method, flag)                                                                   \
+    ((((type) == gw_solver_cvode ? 1 : (type) == gw_solver_arkode ? 2 : (type) == gw_solver_rk4 ? 3       \
+       : (type) == gw_solver_verlet ? 4 : 0) * 6 + ((method) >= 0 && (method) < 6 ? (method) : 0)) * 2 +   \
+     ((flag) ? 1 : 0))
 /* chain/chain_sweep_model.c: chain_watch_weight of the case's column (its
  * beads times its steps and samples over its expected length, as a study's
  * collisions are planned). */

@@ -117,10 +117,11 @@ typedef struct gw_layer_body {
 
 typedef struct gw_layer gw_layer;
 
-/* Build a layer of n particles (copied). Validates the parameters, the radii
- * (positive, finite), the positions (finite, inside the walls) and the clump
- * ids (>= 0; members of a clump must overlap or touch each other: connected;
- * at most 64 members). */
+/* Build a layer of n particles (copied). Validates the parameters, bodies
+ * (not NULL), each particle's x, y, r, vx, vy and w (finite; r > 0; the
+ * centre inside the walls p keeps), GW_EINVAL "particle I: FIELD = V ..."
+ * naming its index and field, and the clump ids (>= 0; members of a clump
+ * must overlap or touch each other: connected; at most 64 members). */
 int gw_layer_create(const gw_layer_params *p, int n, const gw_layer_body *bodies,
                     gw_layer **out, gw_err *err);
 void gw_layer_free(gw_layer *L);
@@ -652,7 +653,15 @@ typedef struct gw_layer_impact_result {
 void gw_layer_impact_result_free(gw_layer_impact_result *r);
 
 /* Check impact parameters against a sample (block radius, speed, incidence,
- * gap >= 0, block inside the box, ...): GW_EINVAL naming the input. */
+ * gap >= 0, block inside the box, ...): GW_EINVAL naming the input. The
+ * sample as the run takes it is checked first, by the run's own checks, so
+ * that the two never disagree: its form (gw_layer_sample_pile_hash lists it),
+ * each particle's x, y and r finite and r > 0 (GW_EINVAL "sample 's':
+ * particle I: FIELD = V m ..." naming the index and the field), its centre
+ * inside the walls unless ip->remove_walls, its clumps connected and its
+ * springs (unless ip->zero_springs) as the sample reader takes them. Before
+ * session 35 a particle of a NaN or infinite coordinate or radius passed the
+ * check and was refused by the run only. */
 int gw_layer_impact_check(const gw_layer_sample *s, const gw_layer_impact_params *ip,
                           gw_err *err);
 
@@ -679,7 +688,9 @@ int gw_layer_impact_gap_check(const gw_layer_sample *s, const gw_layer_impact_pa
  * gw_layer_impact runs it with ip->other_settling, which allows the load the
  * recorded settling explains, 1.5 q times the weight (q of
  * gw_layer_settled_load_ratio, when above 1); a sample without a record, or
- * a load beyond that (a pile that did not settle), stays refused. */
+ * a load beyond that (a pile that did not settle), stays refused. A sample
+ * of gw_layer_impact_check's form, with finite particles, comes first
+ * (GW_EINVAL naming the field or the particle: a NULL y was read before). */
 int gw_layer_impact_rest_check(const gw_layer_sample *s, const gw_layer_params *lp, const char *name,
                                gw_err *err);
 
@@ -708,14 +719,16 @@ int gw_layer_impact_rest_check(const gw_layer_sample *s, const gw_layer_params *
  * friction is refused whatever the ratio (GW_LAYER_SETTLED_FRICTION_MIN 1):
  * the 300-disc pile settled at 30 degrees rests at 19.2, the 600-disc one
  * flows there (37 kJ of potential energy in 100 ms), the 1000-disc one at
- * 24 (layer_settled.c). */
+ * 24 (layer_settled.c). A sample of gw_layer_impact_check's form, with finite
+ * particles, comes first (GW_EINVAL; a NULL r was read before session 35). */
 #define GW_LAYER_SETTLED_LOAD_MIN 0.5
 #define GW_LAYER_SETTLED_LOAD_MAX 1.5
 #define GW_LAYER_SETTLED_FRICTION_MIN 1.0
 int gw_layer_impact_settled_check(const gw_layer_sample *s, const gw_layer_params *lp, int other_settling,
                                   const char *name, char *warning, size_t n, gw_err *err);
 /* q above for the sample s under lp; NaN when s->settled is not recorded (or
- * out of memory weighing union clumps), an infinity when lp has no gravity. */
+ * out of memory weighing union clumps, or s is no sample a run takes: NULL
+ * arrays, a particle not finite), an infinity when lp has no gravity. */
 double gw_layer_settled_load_ratio(const gw_layer_sample *s, const gw_layer_params *lp);
 
 /* The verlet step gw_layer_impact takes when sp->dt is 0: the Hertz contact
@@ -806,6 +819,7 @@ int gw_layer_sweep_run_part(int nkeys, const char *const *names, const char *con
  * same discs grouped into other clumps are another pile. Nor the records a
  * run does not read (seed, porosity, volume_ratio). 0 for s NULL, for a
  * sample no run takes (gw_layer_impact_check's form: n < 1, x, y or r NULL, a
+ * particle of x, y or r not finite or r <= 0 (hashed before session 35), a
  * body id outside [0, n), a negative n_springs, springs counted without their
  * array or a spring's pair out of range; before session 34 such a sample was
  * read through its NULL arrays or hashed as another one), or when the bodies

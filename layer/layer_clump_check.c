@@ -48,6 +48,24 @@ int layer_members_connected(const double *x, const double *y, const double *r, i
     return nseen == k;
 }
 
+int layer_particle_check(const gw_layer_body *b, int i, int walls, double width, const char *what, gw_err *err)
+{
+    static const char *const name[6] = {"x", "y", "r", "vx", "vy", "w"};
+    static const char *const unit[6] = {"m", "m", "m", "m/s", "m/s", "rad/s"};
+    const double v[6] = {b->x, b->y, b->r, b->vx, b->vy, b->w};
+    for (int k = 0; k < 6; k++)
+        if (!isfinite(v[k]))
+            return gw_err_set(err, GW_EINVAL, "%s %d: %s = %g %s is not a finite number", what, i, name[k], v[k],
+                              unit[k]);
+    if (!(b->r > 0))
+        return gw_err_set(err, GW_EINVAL, "%s %d: radius r = %g m must be positive", what, i, b->r);
+    if (((walls & GW_LAYER_WALL_LEFT) && b->x < 0) || ((walls & GW_LAYER_WALL_RIGHT) && b->x > width) ||
+        ((walls & GW_LAYER_WALL_BOTTOM) && b->y < 0))
+        return gw_err_set(err, GW_EINVAL, "%s %d: centre (%g, %g) m outside the walls (0 <= x <= %g, y >= 0)", what,
+                          i, b->x, b->y, width);
+    return GW_OK;
+}
+
 int layer_bodies_check(int n, const double *x, const double *y, const double *r, const int *body,
                        const char *what, int status, gw_err *err)
 {

@@ -118,21 +118,15 @@ int gw_layer_create(const gw_layer_params *p, int n, const gw_layer_body *b, gw_
         return rc;
     if (n < 1)
         return gw_err_set(err, GW_EINVAL, "layer: at least one particle needed, got %d", n);
+    if (!b)
+        return gw_err_set(err, GW_EINVAL, "gw_layer_create: bodies is NULL");
     for (int i = 0; i < n; i++) {
-        if (!(b[i].r > 0) || !isfinite(b[i].r))
-            return gw_err_set(err, GW_EINVAL, "particle %d: radius %g m must be positive and finite",
-                              i, b[i].r);
+        /* (the check the impact's check reads a sample's particles with) */
+        if ((rc = layer_particle_check(&b[i], i, p->walls, p->width, "particle", err)) != GW_OK)
+            return rc;
         if (b[i].clump < 0)
             return gw_err_set(err, GW_EINVAL, "particle %d: clump id %d must be >= 0 (0: no clump)",
                               i, b[i].clump);
-        if (!isfinite(b[i].x) || !isfinite(b[i].y) || !isfinite(b[i].vx) ||
-            !isfinite(b[i].vy) || !isfinite(b[i].w))
-            return gw_err_set(err, GW_EINVAL, "particle %d: position and velocity must be finite", i);
-        if (((p->walls & GW_LAYER_WALL_LEFT) && b[i].x < 0) ||
-            ((p->walls & GW_LAYER_WALL_RIGHT) && b[i].x > p->width) ||
-            ((p->walls & GW_LAYER_WALL_BOTTOM) && b[i].y < 0))
-            return gw_err_set(err, GW_EINVAL, "particle %d: centre (%g, %g) m outside the walls "
-                              "(0 <= x <= %g, y >= 0)", i, b[i].x, b[i].y, p->width);
     }
     gw_layer *L = calloc(1, sizeof *L);
     if (!L)

@@ -156,6 +156,21 @@ int gw_layer_impact_check(const gw_layer_sample *smp, const gw_layer_impact_para
     int rc = layer_sample_shape_check(smp, "s", err);
     if (rc != GW_OK)
         return rc;
+    /* the sample as the run builds its layer from it (gw_layer_create: the
+     * walls it keeps, the clumps) and starts its springs: the check passed a
+     * centre outside the walls, a clump of discs apart and a NaN spring that
+     * the run refused only later (a sweep's check passed the cases its run
+     * stopped on) */
+    for (int i = 0; !p->remove_walls && i < smp->n; i++) {
+        const gw_layer_body b = {.x = smp->x[i], .y = smp->y[i], .r = smp->r[i]};
+        if ((rc = layer_particle_check(&b, i, GW_LAYER_WALLS_ALL, smp->width, "sample 's': particle", err)) !=
+            GW_OK)
+            return rc;
+    }
+    if ((rc = layer_bodies_check(smp->n, smp->x, smp->y, smp->r, smp->body, "sample 's'", GW_EINVAL, err)) != GW_OK)
+        return rc;
+    if (!p->zero_springs && smp->n_springs != 0 && (rc = layer_springs_check(smp, "s", NULL, GW_EINVAL, err)) != GW_OK)
+        return rc;
     if (!(p->rb_rm > 0) || !isfinite(p->rb_rm))
         return gw_err_set(err, GW_EINVAL, "rb-rm: block radius %g R_m must be positive", p->rb_rm);
     /* (1 km/s: beyond it the grains' sound speed is near and Hertz contacts
@@ -308,6 +323,11 @@ int gw_layer_impact_rest_check(const gw_layer_sample *smp, const gw_layer_params
 {
     if (!smp || !lp)
         return gw_err_set(err, GW_EINVAL, "gw_layer_impact_rest_check: %s is NULL", !smp ? "s" : "lp");
+    /* the floor's load was read through a NULL y or r (SIGSEGV), and a NaN y
+     * gave a NaN load, passed as none above the weight */
+    const int rc = layer_sample_shape_check(smp, name ? name : "s", err);
+    if (rc != GW_OK)
+        return rc;
     return layer_rest_check(smp, lp, 0, name, smp->settled.recorded ? gw_layer_settled_load_ratio(smp, lp) : NAN,
                             err);
 }
@@ -528,10 +548,9 @@ int layer_impact_run(const gw_layer_sample *smp, const gw_layer_params *lp0, con
         rc = gw_layer_impact_gap_check(smp, ip, lp0->gravity, err);
     if (rc == GW_OK)
         rc = gw_layer_impact_step_check(ip, type, sp, err);
-    /* a sample built in memory: its springs pass the reader's checks (a NaN
-     * was clipped to the cap, an index beyond the sample ignored, in silence) */
-    if (rc == GW_OK && !ip->zero_springs && smp->n_springs != 0)
-        rc = layer_springs_check(smp, "s", NULL, GW_EINVAL, err);
+    /* (a sample built in memory: gw_layer_impact_check holds its springs to
+     * the reader's checks; a NaN was clipped to the cap, an index beyond the
+     * sample ignored, in silence) */
     if (rc != GW_OK)
         return rc;
     const int n = smp->n;

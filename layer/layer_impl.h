@@ -629,6 +629,16 @@ void layer_grid_free(layer_grid *g);
 int layer_overlaps_check(int n, const double *x, const double *y, const double *r, const int *body,
                          const char *what, gw_err *err);
 
+/* One particle as a layer takes it (gw_layer_create) and as a run takes a
+ * sample's (layer_sample_shape_check, gw_layer_impact_check): x, y, r, vx, vy
+ * and w finite, r > 0, and with walls (GW_LAYER_WALL_* bits; 0: none) its
+ * centre inside those of a box of width width (0 <= x <= width, y >= 0).
+ * GW_EINVAL "WHAT I: FIELD = V UNIT ..." naming the index i and the field. The
+ * impact's check and its run both read a sample's particles through it: the
+ * check passed a NaN coordinate, a radius <= 0 or a centre outside the walls
+ * that the run then refused (session 35). */
+int layer_particle_check(const gw_layer_body *b, int i, int walls, double width, const char *what, gw_err *err);
+
 /* Body ids of a sample (NULL: none): in [0, n), members of one body connected by
  * overlap or touch, at most LAYER_CLUMP_MEMBERS per body. status (GW_EINVAL or GW_EFORMAT) with a message starting
  * with what. */
@@ -654,7 +664,8 @@ int layer_clump_shape(double req, double aspect, double angle, double *ox, doubl
  * "spring at index k"), GW_ENOMEM. */
 int layer_springs_check(const gw_layer_sample *s, const char *path, const long *lines, int status, gw_err *err);
 /* A sample built in memory as a run reads it, before any of it is read
- * (layer_sample_check.c): n >= 1 particles with their x, y and r, body ids in
+ * (layer_sample_check.c): width and rm finite and > 0, n >= 1 particles with
+ * their x, y and r, each finite with r > 0 (layer_particle_check), body ids in
  * [0, n), n_springs >= 0 and, above 0, its springs array with each pair in
  * range (a in [0, n), b in [0, n) or a wall, a != b). GW_EINVAL naming the
  * field, "sample 'PATH': ...". Shared by the impact's checks and the pile's

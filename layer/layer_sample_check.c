@@ -108,6 +108,25 @@ int layer_sample_shape_check(const gw_layer_sample *s, const char *path, gw_err 
     if (s->n < 1 || !s->x || !s->y || !s->r)
         return gw_err_set(err, GW_EINVAL, "sample '%s': n = %d particles%s%s%s (at least one, with x, y and r)",
                           path, s->n, s->x ? "" : ", x NULL", s->y ? "" : ", y NULL", s->r ? "" : ", r NULL");
+    /* the box and the block's scale (rb-rm R_m): an rm of 0 passed the
+     * impact's check and the run refused its block of radius 0; a NaN or
+     * negative rm, or a NaN or infinite width, was told "x: no soil particle
+     * lies under the block" */
+    if (!isfinite(s->width) || !(s->width > 0))
+        return gw_err_set(err, GW_EINVAL, "sample '%s': width %g m must be finite and positive", path, s->width);
+    if (!isfinite(s->rm) || !(s->rm > 0))
+        return gw_err_set(err, GW_EINVAL, "sample '%s': rm %g m must be finite and positive", path, s->rm);
+    /* each particle as gw_layer_create takes it (no walls here: the impact's
+     * check adds those the run keeps): a NaN coordinate passed the impact's
+     * check, which the run refused later, and was hashed as a pile */
+    char what[4200];
+    gw_snprintf(what, sizeof what, "sample '%s': particle", path);
+    for (int i = 0; i < s->n; i++) {
+        const gw_layer_body b = {.x = s->x[i], .y = s->y[i], .r = s->r[i]};
+        const int rc = layer_particle_check(&b, i, 0, s->width, what, err);
+        if (rc != GW_OK)
+            return rc;
+    }
     for (int i = 0; s->body && i < s->n; i++)
         if (s->body[i] < 0 || s->body[i] >= s->n)
             return gw_err_set(err, GW_EINVAL, "sample '%s': particle %d: body id %d is outside [0, %d)", path, i,

@@ -131,7 +131,7 @@ double gw_layer_settled_load_ratio(const gw_layer_sample *smp, const gw_layer_pa
 {
     double q = NAN;
     gw_err e = {{0}};
-    if (smp && lp)
+    if (smp && lp && layer_sample_shape_check(smp, "s", &e) == GW_OK) /* (a NULL r was read: SIGSEGV) */
         load_ratio(smp, lp, &q, &e);
     return q;
 }
@@ -170,6 +170,10 @@ int layer_settled_check_q(const gw_layer_sample *smp, const gw_layer_params *lp,
     *q_out = NAN;
     if (!smp || !lp)
         return gw_err_set(err, GW_EINVAL, "gw_layer_impact_settled_check: %s is NULL", !smp ? "s" : "lp");
+    /* the pile was weighed through a NULL r (SIGSEGV) */
+    const int src = layer_sample_shape_check(smp, name ? name : "s", err);
+    if (src != GW_OK)
+        return src;
     /* a pile written before it settled (its "settled:" line says converged
      * 0): the file keeps positions, not velocities, so the run starts it at
      * rest where it was moving, grains in the air among them. Measured on

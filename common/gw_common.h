@@ -280,7 +280,9 @@ int gw_temps_on_signals(void);
  * header of the program's tables goes to files through this. */
 void gw_write_comment(FILE *fp, const char *text);
 
-/* Create directory (and parents) if missing. */
+/* Create directory (and parents) if missing. A path that names a missing
+ * component and then ".." ("o/../o2" with no o) is GW_EINVAL, nothing made
+ * (mkdir -p made o and left it behind). */
 int gw_mkdir_p(const char *path, gw_err *err);
 /* Join dir and name into buf (size n); GW_EINVAL if it does not fit, or for a
  * NULL buf, dir or name (buf then unchanged; a NULL dir was joined as

@@ -36,6 +36,41 @@ static void remove_made(char *buf, size_t first, size_t stop)
         }
 }
 
+/* GW_EINVAL when a component of path that does not exist is followed, later
+ * in path, by "..": "o/../o2" with no o. mkdir -p makes o to walk through it
+ * and leaves it behind (a stray empty directory, on success and on refusal);
+ * the path names o2 only through a directory that is not there, so it is
+ * refused before anything is made, naming what and the missing component. */
+static int dotdot_after_missing(const char *path, const char *what, gw_err *err)
+{
+    char buf[4096];
+    size_t n = strlen(path);
+    if (n >= sizeof buf)
+        return GW_OK; /* (the callers refuse it as too long) */
+    memcpy(buf, path, n + 1);
+    size_t missing = 0; /* the end of the first missing component (0: none yet) */
+    for (size_t i = 0, start = 0; i <= n; i++) {
+        if (buf[i] != '/' && buf[i] != '\0')
+            continue;
+        const size_t len = i - start;
+        if (len == 2 && buf[start] == '.' && buf[start + 1] == '.' && missing) {
+            buf[missing] = '\0';
+            return gw_err_set(err, GW_EINVAL, "%s: '%s': '%s' does not exist and '..' follows it; give the path "
+                              "without '..' after a directory still to make", what, path, buf);
+        }
+        if (!missing && len > 0 && !(len == 1 && buf[start] == '.')) {
+            char c = buf[i];
+            struct stat st;
+            buf[i] = '\0';
+            if (stat(buf, &st) != 0 && errno == ENOENT)
+                missing = i;
+            buf[i] = c;
+        }
+        start = i + 1;
+    }
+    return GW_OK;
+}
+
 int gw_mkdir_p(const char *path, gw_err *err)
 {
     if (!path)
@@ -44,6 +79,8 @@ int gw_mkdir_p(const char *path, gw_err *err)
     size_t n = strlen(path);
     if (n == 0 || n >= sizeof buf)
         return gw_err_set(err, GW_EINVAL, "output directory: bad path '%s'", path);
+    if (dotdot_after_missing(path, "output directory", err) != GW_OK)
+        return GW_EINVAL;
     memcpy(buf, path, n + 1);
     size_t first = 0; /* the end of the first component made here (0: none) */
     for (size_t i = 1; i <= n; i++) {
@@ -115,6 +152,8 @@ int gw_out_check(const char *dir, const char *what, gw_err *err)
     size_t n = dir ? strlen(dir) : 0;
     if (n == 0 || n >= sizeof buf)
         return gw_err_set(err, GW_EINVAL, "%s: bad path '%s'", what, dir ? dir : "");
+    if (dotdot_after_missing(dir, what, err) != GW_OK)
+        return GW_EINVAL;
     memcpy(buf, dir, n + 1);
     struct stat st;
     int walked = 0;

@@ -63,6 +63,69 @@ int gw_stats_table_check_hashes(const gw_stats_table *t, gw_err *err)
     return GW_OK;
 }
 
+/* A row's file named by a KEY_fnv1a64 column, for sorting by (file, row). */
+typedef struct file_row {
+    const char *file;
+    long r;
+    unsigned long long h;
+} file_row;
+
+static int file_row_cmp(const void *pa, const void *pb)
+{
+    const file_row *a = pa, *b = pb;
+    const int c = strcmp(a->file, b->file);
+    return c ? c : (a->r > b->r) - (a->r < b->r);
+}
+
+/* The rows that name one file carry one content hash: a sweep reads one
+ * version of each file (a file changed while it ran stops it, a rerun over a
+ * changed one is refused). Checked against the '# input' line above when the
+ * table has one; without it (the line removed, a table joined by hand from
+ * sweeps over two versions of a sample under one name) the rows of both
+ * versions were grouped as one sample, their points counted together. */
+int gw_stats_table_check_file_hashes(const gw_stats_table *t, gw_err *err)
+{
+    if (t->nhash < 2 || t->nrows < 2)
+        return GW_OK;
+    file_row *fr = malloc((size_t)t->nrows * sizeof *fr);
+    if (!fr)
+        return gw_err_set(err, GW_ENOMEM, "%s: out of memory", t->path);
+    int rc = GW_OK;
+    for (int j = 1; j < t->nhash && rc == GW_OK; j++) {
+        const char *col = t->hash_name[j];
+        const size_t kl = strlen(col) - 8;
+        int gi = -1, pi = -1;
+        for (int i = 0; i < t->ngrid && gi < 0; i++)
+            if (strlen(t->grid_name[i]) == kl && strncmp(t->grid_name[i], col, kl) == 0)
+                gi = i;
+        for (int i = 0; gi < 0 && i < t->nparams && pi < 0; i++)
+            if (strlen(t->param_name[i]) == kl && strncmp(t->param_name[i], col, kl) == 0)
+                pi = i;
+        if (gi < 0 && pi < 0)
+            continue;
+        for (long r = 0; r < t->nrows; r++)
+            fr[r] = (file_row){gi >= 0 ? t->grid_value[r * t->ngrid + gi] : t->param_value[pi], r,
+                               t->row_hash[r * t->nhash + j]};
+        qsort(fr, (size_t)t->nrows, sizeof *fr, file_row_cmp);
+        for (long q = 1, first = 0; q < t->nrows && rc == GW_OK; q++) {
+            if (strcmp(fr[q].file, fr[first].file) != 0) {
+                first = q;
+                continue;
+            }
+            if (fr[q].h != fr[first].h) {
+                const long a = fr[first].r, b = fr[q].r;
+                rc = gw_err_set(err, GW_EFORMAT, "%s:%ld: case %ld read %.*s '%s' with content fnv1a64 %016llx, but "
+                                "case %ld (line %ld) read it with %016llx: a sweep reads one version of each file "
+                                "(rows of sweeps over two versions of it, joined?)", t->path, t->row_line[b],
+                                t->case_id[b], (int)kl, col, fr[q].file, fr[q].h, t->case_id[a], t->row_line[a],
+                                fr[first].h);
+            }
+        }
+    }
+    free(fr);
+    return rc;
+}
+
 static int cmp_case(const void *a, const void *b)
 {
     long x = *(const long *)a, y = *(const long *)b;

@@ -29,6 +29,11 @@
 #    Python's layer_stats), naming the line and both cases; a second
 #    '# input' line for one file (its rows were checked against the last
 #    alone) is refused naming its line.
+#  5 A sweep config's section header without its ']' ('[grid') was named by
+#    what the INI reader did next: "c.ini:4: unknown key 'n' in [sweep]"
+#    (the key of the next line, in the section before), '[sweep' as
+#    "unknown section []". Refused now at its line: "the section header
+#    '[grid' has no ']'".
 # Checks that fail on the code before: see docs/tests.md.
 # shellcheck source=refusal_lib.sh
 . "$2/tests/refusal_lib.sh"
@@ -109,6 +114,17 @@ refused("Python layer_stats on the joined table without its '# input' line", ["j
 refused("Python layer_stats on the table with its '# input' line twice", ["input_twice.csv", "given twice"],
         granwave.layer_stats, "input_twice.csv")
 PYEOF
+
+# --- 5 a config's section header without its ']' ---
+printf '[sweep]\nmodel = chain\nout = o\n[grid\nn = 1:2\n' >nobr.ini
+printf '[sweep\nmodel = chain\nout = o\n[grid]\nn = 1:2\n' >nobr1.ini
+sed 's/^\[grid$/[grid]/' nobr.ini >br.ini
+refused "a config's '[grid' without its ']': refused naming line 4 and the header" \
+    "^granwave sweep: nobr.ini:4: the section header '\\[grid' has no '\\]'$" sweep nobr.ini --check
+refused "a config's '[sweep' without its ']': refused naming line 1 and the header" \
+    "^granwave sweep: nobr1.ini:1: the section header '\\[sweep' has no '\\]'$" sweep nobr1.ini --check
+timeout 60 "$GW" sweep br.ini --check >/dev/null 2>"$tmp/stderr" && ok "the same config with its ']' is valid" ||
+    ko "the config with its ']': $(head -c 200 "$tmp/stderr")"
 
 # --- 2 an HDF5 sample's n against its datasets, under a memory limit ---
 if ! $PY -c 'import h5py' 2>/dev/null || ! "$GW" version --json 2>/dev/null | grep -q hdf5; then

@@ -29,6 +29,12 @@
 #    Python's layer_stats), naming the line and both cases; a second
 #    '# input' line for one file (its rows were checked against the last
 #    alone) is refused naming its line.
+#  6 A table row whose penetration_rm was edited (by 0.1 %) was read: it is
+#    penetration over the sample's one R_m, and the diagram reads it (and
+#    x_span_rm divides by the first row's ratio). The rows of one sample must
+#    now give one R_m (to 1e-9), the row that differs from the others
+#    refused naming its line (layer-stats, Python's layer_stats); a table
+#    that names no sample is not checked.
 #  5 A sweep config's section header without its ']' ('[grid') was named by
 #    what the INI reader did next: "c.ini:4: unknown key 'n' in [sweep]"
 #    (the key of the next line, in the section before), '[sweep' as
@@ -93,6 +99,11 @@ open("asis_noinput.csv", "w").write("\n".join(l for l in a if not l.startswith("
 inp = [l for l in a if l.startswith("# input")][0]
 k = a.index(inp)
 open("input_twice.csv", "w").write("\n".join(a[:k + 1] + [inp] + a[k + 1:]))
+c = a[[i for i, l in enumerate(a) if l.startswith("case,")][0]].split(",")
+k = ra[0]
+v = a[k].split(",")
+v[c.index("penetration_rm")] = repr(float(v[c.index("penetration_rm")]) * 1.001)
+open("penrm.csv", "w").write("\n".join(a[:k] + [",".join(v)] + a[k + 1:]))
 PYEOF
 TWO="case 1 read sample '.*/s.txt' with content fnv1a64 [0-9a-f]{16}, but case 0 \\(line [0-9]+\\) read it with [0-9a-f]{16}: a sweep reads one version"
 refused "the joined table without its '# input' line: refused naming the line and both cases" \
@@ -108,7 +119,12 @@ runs_json "the table without its '# input' line" noinput.json layer-stats asis_n
     cmp -s <(grep -v '"input\|"command' ta.json) <(grep -v '"input\|"command' noinput.json) &&
     ok "the table without its '# input' line, its rows agreeing, is read, its statistics the same" ||
     ko "the table without its '# input' line: not read as the whole table"
-py_checks 2 <<'PYEOF'
+refused "a table row's penetration_rm edited by 0.1 %: refused naming the line and the R_m of the other rows" \
+    "^granwave layer-stats: penrm.csv:[0-9]+: column penetration_rm: [0-9.e-]+ with penetration [0-9.e-]+ gives the sample's R_m as 0.32467[0-9]* m, where 3 other row\\(s\\) of sample '.*/s.txt' give 0.325 m" \
+    layer-stats penrm.csv --out o
+py_checks 3 <<'PYEOF'
+refused("Python layer_stats on the table with a penetration_rm edited", ["penrm.csv", "column penetration_rm", "0.325 m"],
+        granwave.layer_stats, "penrm.csv")
 refused("Python layer_stats on the joined table without its '# input' line", ["joined.csv", "case 1 read sample", "case 0"],
         granwave.layer_stats, "joined.csv")
 refused("Python layer_stats on the table with its '# input' line twice", ["input_twice.csv", "given twice"],

@@ -570,6 +570,8 @@ int gw_stats_table_parse(const char *text, const char *name, gw_stats_table *t, 
     /* the rows naming one file carry one hash: with or without the head */
     if (rc == GW_OK && header_line && t->nrows > 0)
         rc = gw_stats_table_check_file_hashes(t, err);
+    if (rc == GW_OK && header_line && t->nrows > 0)
+        rc = gw_stats_table_check_rm(t, err);
     if (rc == GW_OK && !header_line)
         rc = gw_err_set(err, GW_EFORMAT, "%s:%ld: no header line (an empty table)", name, ln);
     else if (rc == GW_OK && t->nrows == 0)

@@ -29,17 +29,17 @@
 #    Python's layer_stats), naming the line and both cases; a second
 #    '# input' line for one file (its rows were checked against the last
 #    alone) is refused naming its line.
+#  5 A sweep config's section header without its ']' ('[grid') was named by
+#    what the INI reader did next: "c.ini:4: unknown key 'n' in [sweep]"
+#    (the key of the next line, in the section before), '[sweep' as
+#    "unknown section []". Refused now at its line: "the section header
+#    '[grid' has no ']'".
 #  6 A table row whose penetration_rm was edited (by 0.1 %) was read: it is
 #    penetration over the sample's one R_m, and the diagram reads it (and
 #    x_span_rm divides by the first row's ratio). The rows of one sample must
 #    now give one R_m (to 1e-9), the row that differs from the others
 #    refused naming its line (layer-stats, Python's layer_stats); a table
 #    that names no sample is not checked.
-#  5 A sweep config's section header without its ']' ('[grid') was named by
-#    what the INI reader did next: "c.ini:4: unknown key 'n' in [sweep]"
-#    (the key of the next line, in the section before), '[sweep' as
-#    "unknown section []". Refused now at its line: "the section header
-#    '[grid' has no ']'".
 # Checks that fail on the code before: see docs/tests.md.
 # shellcheck source=refusal_lib.sh
 . "$2/tests/refusal_lib.sh"

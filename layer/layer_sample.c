@@ -35,6 +35,11 @@
 #include "gw_locale.h"
 
 #define SAMPLE_LINE_MAX 1024  /* longest header or particle line; comments may be longer */
+/* longest line of any kind, a comment too, in bytes: layer-make's longest is
+ * its settings line (under 30000 characters, SAMPLE_SETTINGS_MAX), and a line
+ * that never ends (a '#' and then a sparse file's zeros, or gigabytes of text
+ * without a newline) was read to its end before anything was said */
+#define SAMPLE_RAW_LINE_MAX (1L << 20)
 static const unsigned char h5_signature[8] = {0x89, 'H', 'D', 'F', '\r', '\n', 0x1a, '\n'};
 
 void gw_layer_sample_free(gw_layer_sample *s)
@@ -212,7 +217,8 @@ static int text_next(text_in *t, gw_err *err)
 {
     static const char set_key[] = "settings:";
     for (;;) {
-        int c, any = 0, lead = 1, comment = 0, nul = 0;
+        int c, any = 0, lead = 1, comment = 0;
+        long raw = 0; /* the bytes of the line so far */
         /* in a comment: -1 after '#' (blanks), k >= 0 the characters of
          * "settings:" matched, sizeof set_key - 1 the key whole (the rest is
          * the JSON), -2 another comment */
@@ -221,7 +227,16 @@ static int text_next(text_in *t, gw_err *err)
         t->ncom = 0;
         while ((c = text_getc(t)) != EOF && c != '\n') {
             any = 1;
-            nul |= c == 0;
+            /* said at once: a NUL inside a comment was found at the line's end
+             * only, and a '#' before a 200 GB sparse file's zeros read them all
+             * (killed at the time limit, nothing said) */
+            if (c == 0)
+                return gw_err_set(err, GW_EFORMAT, "sample '%s': line %ld: NUL byte (binary data, not a text sample)",
+                                  t->path, t->line + 1);
+            if (++raw > SAMPLE_RAW_LINE_MAX)
+                return gw_err_set(err, GW_EFORMAT, "sample '%s': line %ld: longer than %ld bytes, a comment too (the "
+                                  "longest line layer-make writes, its settings line, is under %d): not a text sample",
+                                  t->path, t->line + 1, SAMPLE_RAW_LINE_MAX, SAMPLE_SETTINGS_MAX);
             /* a CR not before the LF: lines that end in CR alone were one line,
              * refused as "longer than 1024 characters" (or, short, as a header) */
             if (c == '\r' && (c = text_getc(t)) != '\n' && c != EOF)
@@ -271,9 +286,6 @@ static int text_next(text_in *t, gw_err *err)
         if (c == EOF && !any)
             return 0;
         t->line++;
-        if (nul)
-            return gw_err_set(err, GW_EFORMAT, "sample '%s': line %ld: NUL byte (binary data, not a text sample)",
-                              t->path, t->line);
         if (comment) { /* a pile written before it settled: an impact on it warns */
             t->com[t->ncom] = '\0';
             t->unsettled |= layer_sample_settled_unsettled(t->com);
@@ -414,8 +426,9 @@ static int text_header(text_in *t, gw_layer_sample *s, long *n, int *version, hd
             s->porosity = v;
         else if (key == K_N) {
             if (!(v >= 1 && v <= SAMPLE_NMAX && v == floor(v)))
-                return gw_err_set(err, GW_EFORMAT, "sample '%s': line %ld: n = %g must be an integer in "
-                                  "[1, %ld]", t->path, t->line, v, SAMPLE_NMAX);
+                /* as given: %g showed n 10000001 as "n = 1e+07", a value inside the range it named */
+                return gw_err_set(err, GW_EFORMAT, "sample '%s': line %ld: n = %s must be an integer in "
+                                  "[1, %ld]", t->path, t->line, layer_sample_shown(tok[1], show), SAMPLE_NMAX);
             *n = (long)v;
             break;
         }

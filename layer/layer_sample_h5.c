@@ -307,8 +307,9 @@ static int h5_units_check(hid_t loc, const char *name, const char *want, const c
                       "granwave writes them (convert them, and their units)", path, what, layer_sample_shown(str, show), want);
 }
 
-/* Dataset name: one dimension of n numbers, read as doubles into v; its units
- * attribute, when it has one, must be units (NULL: not checked). */
+/* Dataset name: one dimension of n numbers, read as doubles into v (NULL:
+ * checked only, nothing read); its units attribute, when it has one, must be
+ * units (NULL: not checked). */
 static int h5_column_read(hid_t f, const char *name, long n, double *v, const char *units, const char *path,
                           const char *why, gw_err *err)
 {
@@ -335,7 +336,7 @@ static int h5_column_read(hid_t f, const char *name, long n, double *v, const ch
                         (unsigned long long)dim, n);
     else if (units && h5_units_check(d, name, units, path, err) != GW_OK)
         rc = GW_EFORMAT;
-    else if (H5Dread(d, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, v) < 0)
+    else if (v && H5Dread(d, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, v) < 0)
         rc = gw_err_set(err, GW_EFORMAT, "sample '%s': HDF5 dataset '%s' unreadable: %s", path, name, why);
     if (t >= 0)
         H5Tclose(t);
@@ -579,13 +580,23 @@ static int h5_fields(hid_t f, gw_layer_sample *s, const char *path, const char *
     int rc = layer_sample_header_check(s, path, GW_EFORMAT, err);
     if (rc != GW_OK)
         return rc;
+    /* the columns' lengths against n before n is allocated: a 7 kB file whose
+     * n was edited to 1e7 took 240 MB first, and under a memory limit was
+     * "out of memory for 10000000 particles" (exit 1) rather than a file whose
+     * x holds 40 values */
+    if ((rc = h5_units_check(f, NULL, SAMPLE_H5_UNITS, path, err)) != GW_OK ||
+        (rc = h5_column_read(f, "x", (long)n, NULL, SAMPLE_H5_COLUMN_UNITS, path, why, err)) != GW_OK ||
+        (rc = h5_column_read(f, "y", (long)n, NULL, SAMPLE_H5_COLUMN_UNITS, path, why, err)) != GW_OK ||
+        (rc = h5_column_read(f, "r", (long)n, NULL, SAMPLE_H5_COLUMN_UNITS, path, why, err)) != GW_OK ||
+        (H5Lexists(f, "body", H5P_DEFAULT) > 0 &&
+         (rc = h5_column_read(f, "body", (long)n, NULL, NULL, path, why, err)) != GW_OK))
+        return rc;
     s->x = malloc(3 * (size_t)n * sizeof *s->x);
     if (!s->x)
         return gw_err_set(err, GW_ENOMEM, "sample '%s': out of memory for %lld particles", path, n);
     s->y = s->x + n, s->r = s->x + 2 * n;
     s->n = (int)n;
-    if ((rc = h5_units_check(f, NULL, SAMPLE_H5_UNITS, path, err)) != GW_OK ||
-        (rc = h5_column_read(f, "x", (long)n, s->x, SAMPLE_H5_COLUMN_UNITS, path, why, err)) != GW_OK ||
+    if ((rc = h5_column_read(f, "x", (long)n, s->x, SAMPLE_H5_COLUMN_UNITS, path, why, err)) != GW_OK ||
         (rc = h5_column_read(f, "y", (long)n, s->y, SAMPLE_H5_COLUMN_UNITS, path, why, err)) != GW_OK ||
         (rc = h5_column_read(f, "r", (long)n, s->r, SAMPLE_H5_COLUMN_UNITS, path, why, err)) != GW_OK)
         return rc;

@@ -19,6 +19,8 @@
 int gw_stats_table_check_rows(const gw_stats_table *t, gw_err *err);
 int gw_stats_table_check_complete(const gw_stats_table *t, gw_err *err);
 int gw_stats_table_check_hashes(const gw_stats_table *t, gw_err *err);
+int gw_stats_table_check_file_hashes(const gw_stats_table *t, gw_err *err);
+int gw_stats_table_check_rm(const gw_stats_table *t, gw_err *err);
 
 /* The rows of t against the definitions of e_n, e, alpha_r (B.16-B.18) and
  * the energy ledger (gw_stats_bounds.c says per column why; run

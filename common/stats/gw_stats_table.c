@@ -326,7 +326,7 @@ static int nonnegative(const char *col)
 
 /* "# input KEY = VALUE fnv1a64 HEX": the content hash of a file the sweep's
  * cases read. */
-static int add_input(gw_stats_table *t, const char *text, gw_err *err)
+static int add_input(gw_stats_table *t, const char *text, long ln, gw_err *err)
 {
     const char *eq = strstr(text, " = ");
     const size_t len = strlen(text);
@@ -334,6 +334,14 @@ static int add_input(gw_stats_table *t, const char *text, gw_err *err)
     if (!eq || len < 26 || (size_t)(eq - text) + 3 + 25 > len || strncmp(text + len - 25, " fnv1a64 ", 9) != 0 ||
         !gw_fnv1a64_parse(text + len - 16, 16, &h))
         return GW_OK; /* another comment (a table made by hand): it names no file's hash */
+    /* a sweep writes one line per file: a second one (with another hash, the
+     * rows were checked against the last line alone and named it) is an edit */
+    const size_t kl = (size_t)(eq - text), vl = len - 25 - (kl + 3);
+    for (int i = 0; i < t->ninputs; i++)
+        if (strlen(t->input_key[i]) == kl && strncmp(t->input_key[i], text, kl) == 0 &&
+            strlen(t->input_value[i]) == vl && strncmp(t->input_value[i], eq + 3, vl) == 0)
+            return gw_err_set(err, GW_EFORMAT, "%s:%ld: input %.*s = %.*s given twice (a sweep writes one '# input' "
+                              "line per file: an edited header)", t->path, ln, (int)kl, text, (int)vl, eq + 3);
     char **k = realloc(t->input_key, (size_t)(t->ninputs + 1) * sizeof *k);
     if (k)
         t->input_key = k;
@@ -532,7 +540,7 @@ int gw_stats_table_parse(const char *text, const char *name, gw_stats_table *t, 
             else if (!header_line && strncmp(line, "grid ", 5) == 0)
                 rc = add_grid_list(t, line + 5, ln, err);
             else if (!header_line && strncmp(line, "input ", 6) == 0)
-                rc = add_input(t, line + 6, err);
+                rc = add_input(t, line + 6, ln, err);
             else if (!header_line && ln == 1 && strncmp(line, "granwave ", 9) == 0)
                 rc = sweep_line(t, line, ln, err);
             continue;
@@ -559,6 +567,11 @@ int gw_stats_table_parse(const char *text, const char *name, gw_stats_table *t, 
      * for a hash taken over lines it did not have. */
     if (rc == GW_OK && header_line && t->nrows > 0 && t->nhash > 0 && t->model[0])
         rc = gw_stats_table_check_hashes(t, err);
+    /* the rows naming one file carry one hash: with or without the head */
+    if (rc == GW_OK && header_line && t->nrows > 0)
+        rc = gw_stats_table_check_file_hashes(t, err);
+    if (rc == GW_OK && header_line && t->nrows > 0)
+        rc = gw_stats_table_check_rm(t, err);
     if (rc == GW_OK && !header_line)
         rc = gw_err_set(err, GW_EFORMAT, "%s:%ld: no header line (an empty table)", name, ln);
     else if (rc == GW_OK && t->nrows == 0)

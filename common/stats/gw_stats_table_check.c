@@ -63,6 +63,153 @@ int gw_stats_table_check_hashes(const gw_stats_table *t, gw_err *err)
     return GW_OK;
 }
 
+/* A row's file named by a KEY_fnv1a64 column, for sorting by (file, row). */
+typedef struct file_row {
+    const char *file;
+    long r;
+    unsigned long long h;
+} file_row;
+
+static int file_row_cmp(const void *pa, const void *pb)
+{
+    const file_row *a = pa, *b = pb;
+    const int c = strcmp(a->file, b->file);
+    return c ? c : (a->r > b->r) - (a->r < b->r);
+}
+
+/* The rows that name one file carry one content hash: a sweep reads one
+ * version of each file (a file changed while it ran stops it, a rerun over a
+ * changed one is refused). Checked against the '# input' line above when the
+ * table has one; without it (the line removed, a table joined by hand from
+ * sweeps over two versions of a sample under one name) the rows of both
+ * versions were grouped as one sample, their points counted together. */
+int gw_stats_table_check_file_hashes(const gw_stats_table *t, gw_err *err)
+{
+    if (t->nhash < 2 || t->nrows < 2)
+        return GW_OK;
+    file_row *fr = malloc((size_t)t->nrows * sizeof *fr);
+    if (!fr)
+        return gw_err_set(err, GW_ENOMEM, "%s: out of memory", t->path);
+    int rc = GW_OK;
+    for (int j = 1; j < t->nhash && rc == GW_OK; j++) {
+        const char *col = t->hash_name[j];
+        const size_t kl = strlen(col) - 8;
+        int gi = -1, pi = -1;
+        for (int i = 0; i < t->ngrid && gi < 0; i++)
+            if (strlen(t->grid_name[i]) == kl && strncmp(t->grid_name[i], col, kl) == 0)
+                gi = i;
+        for (int i = 0; gi < 0 && i < t->nparams && pi < 0; i++)
+            if (strlen(t->param_name[i]) == kl && strncmp(t->param_name[i], col, kl) == 0)
+                pi = i;
+        if (gi < 0 && pi < 0)
+            continue;
+        for (long r = 0; r < t->nrows; r++)
+            fr[r] = (file_row){gi >= 0 ? t->grid_value[r * t->ngrid + gi] : t->param_value[pi], r,
+                               t->row_hash[r * t->nhash + j]};
+        qsort(fr, (size_t)t->nrows, sizeof *fr, file_row_cmp);
+        for (long q = 1, first = 0; q < t->nrows && rc == GW_OK; q++) {
+            if (strcmp(fr[q].file, fr[first].file) != 0) {
+                first = q;
+                continue;
+            }
+            if (fr[q].h != fr[first].h) {
+                const long a = fr[first].r, b = fr[q].r;
+                rc = gw_err_set(err, GW_EFORMAT, "%s:%ld: case %ld read %.*s '%s' with content fnv1a64 %016llx, but "
+                                "case %ld (line %ld) read it with %016llx: a sweep reads one version of each file "
+                                "(rows of sweeps over two versions of it, joined?)", t->path, t->row_line[b],
+                                t->case_id[b], (int)kl, col, fr[q].file, fr[q].h, t->case_id[a], t->row_line[a],
+                                fr[first].h);
+            }
+        }
+    }
+    free(fr);
+    return rc;
+}
+
+/* A row of one sample and its penetration / penetration_rm, for sorting by
+ * (sample, ratio). */
+typedef struct rm_row {
+    const char *file;
+    long r;
+    double rm;
+} rm_row;
+
+static int rm_row_cmp(const void *pa, const void *pb)
+{
+    const rm_row *a = pa, *b = pb;
+    const int c = strcmp(a->file, b->file);
+    return c ? c : (a->rm > b->rm) - (a->rm < b->rm);
+}
+
+/* penetration_rm is penetration over the sample's R_m (layer_setup.c), one
+ * R_m for every row of one sample: the rows that name one sample (its value
+ * in the grid or a '# param' line; a table that names none is not checked,
+ * its rows may be of several) give one penetration / penetration_rm, to
+ * 1e-9 (both written with 17 digits: rounding is 1e-16; the stored diagrams
+ * agree to 1e-15). One of the two cells edited was read: the diagram reads
+ * penetration_rm and x_span_rm divides by the first row's ratio, so the edit
+ * of one cell moved the diagram or every group's span silently. The R_m most
+ * rows of the sample give is its own; the first row (in the table's order)
+ * giving another is refused. */
+int gw_stats_table_check_rm(const gw_stats_table *t, gw_err *err)
+{
+    const int cp = gw_stats_table_col(t, "penetration"), cq = gw_stats_table_col(t, "penetration_rm");
+    int gi = -1, pi = -1;
+    for (int i = 0; i < t->ngrid && gi < 0; i++)
+        if (strcmp(t->grid_name[i], "sample") == 0)
+            gi = i;
+    for (int i = 0; gi < 0 && i < t->nparams && pi < 0; i++)
+        if (strcmp(t->param_name[i], "sample") == 0)
+            pi = i;
+    if (cp < 0 || cq < 0 || (gi < 0 && pi < 0) || t->nrows < 1)
+        return GW_OK;
+    char what[384];
+    for (long r = 0; r < t->nrows; r++) { /* one of the two zero */
+        const double pen = t->val[r * t->ncols + cp], prm = t->val[r * t->ncols + cq];
+        if (isfinite(pen) && isfinite(prm) && (pen == 0) != (prm == 0))
+            return gw_err_set(err, GW_EFORMAT, "%s:%ld: column penetration_rm: %.17g where penetration is %.17g: "
+                              "penetration_rm is penetration over the sample's R_m (case %ld; a row no run writes: "
+                              "edited by hand?)", t->path, t->row_line[r], prm, pen, t->case_id[r]);
+    }
+    rm_row *fr = malloc((size_t)t->nrows * sizeof *fr);
+    if (!fr)
+        return gw_err_set(err, GW_ENOMEM, "%s: out of memory", t->path);
+    long m = 0;
+    for (long r = 0; r < t->nrows; r++) {
+        const double pen = t->val[r * t->ncols + cp], prm = t->val[r * t->ncols + cq];
+        if (isfinite(pen) && isfinite(prm) && pen > 0 && prm > 0)
+            fr[m++] = (rm_row){gi >= 0 ? t->grid_value[r * t->ngrid + gi] : t->param_value[pi], r, pen / prm};
+    }
+    qsort(fr, (size_t)m, sizeof *fr, rm_row_cmp);
+    long bad = -1, bad_ref = -1, bad_n = 0;
+    for (long g0 = 0, g1; g0 < m; g0 = g1) { /* each sample's rows [g0, g1), by ratio */
+        for (g1 = g0 + 1; g1 < m && strcmp(fr[g1].file, fr[g0].file) == 0; g1++)
+            ;
+        long best = g0, best_n = 0; /* the largest run of one R_m */
+        for (long a = g0, b; a < g1; a = b) {
+            for (b = a + 1; b < g1 && fr[b].rm - fr[a].rm <= 1e-9 * fr[a].rm; b++)
+                ;
+            if (b - a > best_n)
+                best = a, best_n = b - a;
+        }
+        for (long q = g0; q < g1; q++) /* the first row outside it, in the table's order */
+            if ((q < best || q >= best + best_n) && (bad < 0 || fr[q].r < fr[bad].r))
+                bad = q, bad_ref = best, bad_n = best_n;
+    }
+    int rc = GW_OK;
+    if (bad >= 0) {
+        const long r = fr[bad].r;
+        gw_snprintf(what, sizeof what, "%.17g with penetration %.17g gives the sample's R_m as %.9g m, where %ld "
+                    "other row(s) of sample '%s' give %.9g m", t->val[r * t->ncols + cq], t->val[r * t->ncols + cp],
+                    fr[bad].rm, bad_n, fr[bad].file, fr[bad_ref].rm);
+        rc = gw_err_set(err, GW_EFORMAT, "%s:%ld: column penetration_rm: %s: penetration_rm is penetration over the "
+                        "sample's R_m (case %ld; a row no run writes: edited by hand?)", t->path, t->row_line[r], what,
+                        t->case_id[r]);
+    }
+    free(fr);
+    return rc;
+}
+
 static int cmp_case(const void *a, const void *b)
 {
     long x = *(const long *)a, y = *(const long *)b;

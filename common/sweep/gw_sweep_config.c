@@ -487,7 +487,14 @@ static int scan_lines(const char *text, const char *name, int whole, parse_ctx *
             } else if (p[i] == '[') {
                 key[0] = '\0';
                 const char *q = memchr(p + i, ']', len - i);
-                in_grid = q && q - (p + i) == 5 && memcmp(p + i, "[grid", 5) == 0;
+                /* the reader keeps the section before and reports a syntax
+                 * error at this line only after the keys below it were taken
+                 * in it: '[grid' was "unknown key 'n' in [sweep]", '[sweep'
+                 * first "unknown section []" */
+                if (!q)
+                    return gw_err_set(err, GW_EINVAL, "%s:%ld: the section header '%.*s' has no ']'", name, ln,
+                                      (int)(end - i), p + i);
+                in_grid = q - (p + i) == 5 && memcmp(p + i, "[grid", 5) == 0;
                 gw_snprintf(sect, sizeof sect, "%.*s ", q ? (int)(q - (p + i) + 1) : 0, p + i);
                 /* The reader drops whatever follows the ']': '[grid] n = 1:2'
                  * ran without n (one case, exit 0), '[params] solver = rk4'

@@ -119,7 +119,7 @@ int chain_steps_check(const gw_solver_type *type, const gw_solver_params *sp, co
  * arccos(zeta), is within their A(alpha) wedge (order 3: zeta > 0.07),
  * counted as a factor w = 1 + (0.08 / zeta)^3. Light damping keeps bdf on the
  * ring over the whole collision: the undamped estimate U = per_rad omega
- * t_len, falling with the damping as g = exp(-zeta / 0.028) (dirk, which
+ * t_len, falling with the damping as g = exp(-zeta / 0.033) (dirk, which
  * steps over even the undamped ring, as exp(-zeta / 0.008)). The ring's steps
  * are min(F w / min(zeta, 1), max(F, U g)): U at zeta = 0, continuous in
  * zeta. Measured steps at rtol = atol = 1e-12, n = 5, 1e12 N/m, bdf (zeta 0,
@@ -130,7 +130,7 @@ int chain_steps_check(const gw_solver_type *type, const gw_solver_params *sp, co
  *   1e-6 kg  1.01e6 210,826 15,756 5,615 7,679 2,957 2,771 2,994 3,133
  *   1e-5 kg  364,111 66,837 5,675 5,100 3,627 3,080 2,928 2,839 3,206
  * and dirk 4,700 to 13,500 from 0.05 to 2 (18,589 to 133,750 undamped). The
- * estimate over them, damped: 1.2 to 12.5 for bdf, 1.3 to 16 for dirk (before:
+ * estimate over them, damped: 1.3 to 17 for bdf, 1.5 to 16 for dirk (before:
  * 70.6, 250 and 2,670 for bdf on 1e-7 kg at 0.1, 0.15 and 0.2, 0.41 to 0.99
  * at 2 and 10; dirk 1,340 at 0.1 and 0.13 to 0.96 at 2 and 10). At rtol 1e-8
  * bdf steps over the ring sooner (1,368 steps on 1e-7 kg at 0.05: the
@@ -142,7 +142,8 @@ int chain_steps_check(const gw_solver_type *type, const gw_solver_params *sp, co
  * estimate (measured 47,236 to 1,257,986 steps whatever the damping, 12 to
  * 120 times below it). */
 #define SENSOR_WEDGE_ZETA 0.08
-#define SENSOR_FOLLOW_ZETA_BDF 0.028
+#define SENSOR_FOLLOW_ZETA_BDF 0.033
+#define SENSOR_FOLLOW_ZETA_BEYOND 0.05
 #define SENSOR_FOLLOW_ZETA_DIRK 0.008
 #define SENSOR_FAST_STEPS 20.0
 
@@ -152,7 +153,7 @@ int chain_steps_check(const gw_solver_type *type, const gw_solver_params *sp, co
  * 0.02) (the ring followed for accuracy while it lasts) and a stability bound
  * that does not fall with the tolerance, SENSOR_FAST_STEPS max(floor,
  * zeta^2) a radian (floor 0.05 for erk, 0.1 for adams); beyond critical
- * (fast != 0) SENSOR_FAST_STEPS zeta^(-1/3) a unit of the overdamped pair's
+ * (fast != 0) SENSOR_FAST_STEPS zeta^(-1/2) a unit of the overdamped pair's
  * fast root omega (zeta + sqrt(zeta^2 - 1)), about c_s / M (erk's drag,
  * drag_steps), else SENSOR_FAST_STEPS a radian of omega. Measured a radian at
  * 1e-12 (erk / adams, 1e-6 and 1e-5 kg on 1e12 N/m): undamped 2.7-3.0 /
@@ -160,7 +161,8 @@ int chain_steps_check(const gw_solver_type *type, const gw_solver_params *sp, co
  * critical 5.9-6.3 / 1.3-1.9 (erk 5.4 at 1e-8); a unit of the fast root at
  * 10, 5.4 / 1.3 (erk on 1e-6 kg: 17.9 million steps, 65 s, where the
  * undamped estimate had 3.35 million); erk on 1e-3 kg and 1e9 N/m 2.3, 0.93,
- * 0.41 and 0.29 a unit at 10, 100, 1000 and 5000. */
+ * 0.41 and 0.29 a unit at 10, 100, 1000 and 5000 (the count 6.3, 2, 0.63 and,
+ * with DRAG_STEPS_ERK, 0.3). */
 static double sensor_fast_steps(double omega, double zeta, double per_rad, int adams, int fast, double t_len)
 {
     if (!(zeta > 1) || !fast) {
@@ -168,7 +170,7 @@ static double sensor_fast_steps(double omega, double zeta, double per_rad, int a
         return fmax(per_rad * exp(-z / 0.02), SENSOR_FAST_STEPS * fmax(floor_rad, z * z)) * omega * t_len;
     }
     const double root = omega * (zeta + sqrt((zeta - 1) * (zeta + 1)));
-    return SENSOR_FAST_STEPS * cbrt(1.0 / zeta) * root * t_len;
+    return SENSOR_FAST_STEPS / sqrt(zeta) * root * t_len;
 }
 
 /* The steps cvode or arkode take over t_len on the sensor body's oscillation
@@ -211,12 +213,28 @@ static double sensor_steps(const gw_chain_params *p, const gw_solver_type *type,
         return base + sensor_fast_steps(*omega, *zeta, *per_rad, strcmp(used, "adams") == 0, 0, t_len);
     if (!bdf && !dirk)
         return base + undamped; /* imex: about the same steps whatever the damping */
+    /* The collision's span, two expected collision lengths at most; beyond it
+     * (a drop, a run to t-max) the contacts' events recur and bdf follows a
+     * lightly damped ring all the time: a drop of 3 beads on 1e-7 kg and
+     * 1e12 N/m took 1.76 and 1.51 million steps over 0.5 ms at 0.05 and 0.1
+     * of critical (about 1 a radian), 6,450 at 0.2 and 5,068 at 0.5; counted
+     * there as per_rad a radian falling as exp(-zeta / 0.05) */
+    gw_chain_params q = *p;
+    q.v_imp = chain_speed_scale(p);
+    double tc_col = 0, tau1_col = 0;
+    chain_column_scales(&q, &tc_col, &tau1_col);
+    const double t_span = 2.0 * (p->n * 2.0 * tc_col + tau1_col),
+                 t_c = t_span > 0 && t_span < t_len ? t_span : t_len, t_b = t_len - t_c,
+                 u_c = *per_rad * *omega * t_c, u_b = *per_rad * *omega * t_b;
     const double z = *zeta, events = 4.0 * ((double)(p->n > 5 ? p->n : 5) + 1.0),
                  floor_steps = events * *per_rad * log(1.0 / fmin(fmax(tol, 1e-15), 0.1)),
                  wedge = bdf ? 1.0 + pow(SENSOR_WEDGE_ZETA / z, 3) : 1.0,
                  decay = floor_steps * wedge / fmin(z, 1.0),
-                 follow = undamped * exp(-z / (bdf ? SENSOR_FOLLOW_ZETA_BDF : SENSOR_FOLLOW_ZETA_DIRK)),
-                 ring = fmin(decay, fmax(floor_steps, follow));
+                 follow = u_c * exp(-z / (bdf ? SENSOR_FOLLOW_ZETA_BDF : SENSOR_FOLLOW_ZETA_DIRK)),
+                 beyond = t_b > 0 ? fmax(floor_steps * t_b / t_span,
+                                         u_b * exp(-z / (bdf ? SENSOR_FOLLOW_ZETA_BEYOND : SENSOR_FOLLOW_ZETA_DIRK)))
+                                  : 0.0,
+                 ring = fmin(decay, fmax(floor_steps, follow)) + beyond;
     if (!(ring < undamped))
         return base + undamped;
     *damped = 1;
@@ -238,14 +256,14 @@ int chain_sensor_steps_check(const gw_chain_params *p, const gw_solver_type *typ
         if (damped)
             gw_snprintf(why, sizeof why, "damped at %.4g of critical: %.0f contact events, each ringing until its "
                         "decay is below the tolerance, and %s following the lightly damped ring", zeta,
-                        4.0 * ((double)p->n + 1.0), used);
+                        4.0 * ((double)(p->n > 5 ? p->n : 5) + 1.0), used);
         else if (implicit)
             gw_snprintf(why, sizeof why, "%.3g a radian at this tolerance, measured 7-37 at 1e-12; %s%.4g of "
                         "critical (c_s = %.3g N s/m is critical), too lightly for %s to step over the ring", per_rad,
                         zeta > 0 ? "damped at " : "undamped: ", zeta, 2.0 * p->sensor.mass * omega, used);
         else
-            gw_snprintf(why, sizeof why, "%.3g a radian at this tolerance, measured 7-37 at 1e-12, and beyond critical "
-                        "damping the overdamped body's fast root: %s follows it whatever the damping", per_rad, used);
+            gw_snprintf(why, sizeof why, "%.3g a radian at this tolerance, measured 7-37 at 1e-12; damped at %.4g of "
+                        "critical, which %s follows at its stability's pace", per_rad, zeta, used);
         return gw_err_set(err, GW_EINVAL, "sensor-stiffness: a sensor body oscillating at %.3g rad/s (sqrt((k_s + the "
                           "contact's stiffness)/M)) needs about %.3g steps over %s (about %.3g s; %s); at most 1e+08: "
                           "a softer or heavier sensor body, looser tolerances or a shorter run", omega, steps, over,

@@ -99,34 +99,84 @@ int chain_steps_check(const gw_solver_type *type, const gw_solver_params *sp, co
  * idle machine) into the run's own bound and exited 1. */
 #define SENSOR_STEPS_PER_RAD 20.0
 
-/* A damped body under cvode bdf or arkode dirk (its whole state implicit):
- * the ring that a contact event excites decays as exp(-zeta omega t), zeta =
- * c_s / (2 M omega), and the solver need follow it only until it is below the
- * tolerance, ln(1/tol) / (zeta omega), at per_rad steps a radian: per_rad
- * ln(1/tol) / zeta steps an excitation. After that its steps follow the
- * collision, not omega. The excitations are the contacts' events, at most
- * 4 (n + 1). That holds from zeta = 0.2: BDF of orders 1 to 3 steps over a
- * damped mode at any step only when the mode's angle from the negative axis,
- * arccos(zeta), is within their A(alpha) wedge (86.0 degrees for order 3:
- * zeta > 0.07; 73.4 for order 4: zeta > 0.29), and below 0.2 cvode bdf still
- * followed the ring over most of the collision. Measured at rtol = atol =
- * 1e-12, n = 5, 1e-7 kg on 1e12 N/m (the undamped estimate 1.06e7), bdf's
- * steps: zeta 0 2,785,549; 0.01 679,726; 0.02 596,611; 0.05 652,288; 0.1
- * 149,908; 0.15 42,303; 0.2 3,965; 0.3 3,142; 0.5 3,038; 1 2,944; 2 2,805;
- * 10 2,980. 1e-9 kg (1.06e8 undamped): 0.02 6,702,218; 0.1 16,895; 0.15
- * 8,711; 0.2 8,926; 1 7,244. n = 1 at 0.15: 59,264 (the estimate at 0.15
- * would be 29,493, too low), at 0.2 1,792; n = 20 at 0.2 10,760. arkode dirk
- * steps over even the undamped ring (94,680 at zeta 0, 7,578 to 8,527 from
- * 0.02 to 1). Not taken for arkode imex (179,704 to 248,774 steps at zeta 0 to
- * 1, whatever the damping), cvode adams or arkode erk, which stability holds
- * to the ring whatever the damping (erk on 1e11 N/m: 453,461 steps at zeta 0,
- * 99,861 at 0.2, 985,925 at 1): they keep the undamped estimate. */
-#define SENSOR_ZETA_STEP_OVER 0.2
+/* A damped body: the estimate is continuous in its damping ratio zeta =
+ * c_s / (2 M omega), for every backend that uses it (cvode bdf and adams,
+ * arkode dirk, imex and erk; rk4's step is chain_steps_check's): the
+ * collision's own steps at the largest step (t_len / dt_max) plus the ring's.
+ * Before, it was piecewise: the undamped estimate below 0.2 of critical and a
+ * decay count from 0.2 under bdf and dirk, with nothing for the collision's
+ * own steps, the undamped one for the others whatever the damping.
+ *
+ * cvode bdf and arkode dirk (the body implicit): each of the contacts' events,
+ * 4 (n + 1) and counted at least 24 (a short column's steps on the ring did
+ * not fall with n: 1e-7 kg at 0.1 of critical, 135,594 steps at n = 1,
+ * 149,908 at 5), excites a ring that decays as exp(-zeta omega t) (an
+ * overdamped body, zeta > 1, relaxes no faster than omega), followed at
+ * per_rad steps a radian until it is below the tolerance: F / min(zeta, 1)
+ * steps, F = events per_rad ln(1/tol) (the floor: every event resolved).
+ * Below about 0.1 of critical bdf follows it longer: its orders 3 to 5 are
+ * stable on the ring only when the mode's angle from the negative axis,
+ * arccos(zeta), is within their A(alpha) wedge (order 3: zeta > 0.07),
+ * counted as a factor w = 1 + (0.08 / zeta)^3. Light damping keeps bdf on the
+ * ring over the whole collision: the undamped estimate U = per_rad omega
+ * t_len, falling with the damping as g = exp(-zeta / 0.033) (dirk, which
+ * steps over even the undamped ring, as exp(-zeta / 0.008)). The ring's steps
+ * are min(F w / min(zeta, 1), max(F, U g)): U at zeta = 0, continuous in
+ * zeta. Measured steps at rtol = atol = 1e-12, n = 5, 1e12 N/m, bdf (zeta 0,
+ * 0.05, 0.1, 0.15, 0.2, 0.5, 1, 2, 10):
+ *   1e-9 kg  6.89e6 1,016,686 16,895 8,711 8,926 7,369 7,244 7,190 7,388
+ *   1e-8 kg  2.59e6 1,022,411 51,576 19,401 4,417 3,600 3,570 3,588 3,949
+ *   1e-7 kg  2.79e6 652,288 149,908 42,303 3,965 3,038 2,944 2,805 2,980
+ *   1e-6 kg  1.01e6 210,826 15,756 5,615 7,679 2,957 2,771 2,994 3,133
+ *   1e-5 kg  364,111 66,837 5,675 5,100 3,627 3,080 2,928 2,839 3,206
+ * and dirk 4,700 to 13,500 from 0.05 to 2 (18,589 to 133,750 undamped). The
+ * estimate over them, damped: 1.3 to 17 for bdf, 1.5 to 16 for dirk (before:
+ * 70.6, 250 and 2,670 for bdf on 1e-7 kg at 0.1, 0.15 and 0.2, 0.41 to 0.99
+ * at 2 and 10; dirk 1,340 at 0.1 and 0.13 to 0.96 at 2 and 10). At rtol 1e-8
+ * bdf steps over the ring sooner (1,368 steps on 1e-7 kg at 0.05: the
+ * estimate 90 times).
+ *
+ * cvode adams and arkode erk are held to the body's fastest mode by their
+ * stability whatever the damping (sensor_fast_steps; beyond critical damping
+ * its fast root, counted with erk's drag); arkode imex keeps the undamped
+ * estimate (measured 47,236 to 1,257,986 steps whatever the damping, 12 to
+ * 120 times below it). */
+#define SENSOR_WEDGE_ZETA 0.08
+#define SENSOR_FOLLOW_ZETA_BDF 0.033
+#define SENSOR_FOLLOW_ZETA_BEYOND 0.05
+#define SENSOR_FOLLOW_ZETA_DIRK 0.008
+#define SENSOR_FAST_STEPS 20.0
+
+/* The steps an explicit method (cvode adams, arkode erk) takes over t_len on
+ * a body of rate omega and damping ratio zeta, continuous in zeta: up to
+ * critical damping the larger of per_rad a radian falling as exp(-zeta /
+ * 0.02) (the ring followed for accuracy while it lasts) and a stability bound
+ * that does not fall with the tolerance, SENSOR_FAST_STEPS max(floor,
+ * zeta^2) a radian (floor 0.05 for erk, 0.1 for adams); beyond critical
+ * (fast != 0) SENSOR_FAST_STEPS zeta^(-1/2) a unit of the overdamped pair's
+ * fast root omega (zeta + sqrt(zeta^2 - 1)), about c_s / M (erk's drag,
+ * drag_steps), else SENSOR_FAST_STEPS a radian of omega. Measured a radian at
+ * 1e-12 (erk / adams, 1e-6 and 1e-5 kg on 1e12 N/m): undamped 2.7-3.0 /
+ * 5.3-4.5; 0.05 to 0.5 of critical 0.45-0.76 / 0.96-1.5 (erk 0.30 at 1e-8);
+ * critical 5.9-6.3 / 1.3-1.9 (erk 5.4 at 1e-8); a unit of the fast root at
+ * 10, 5.4 / 1.3 (erk on 1e-6 kg: 17.9 million steps, 65 s, where the
+ * undamped estimate had 3.35 million); erk on 1e-3 kg and 1e9 N/m 2.3, 0.93,
+ * 0.41 and 0.29 a unit at 10, 100, 1000 and 5000 (the count 6.3, 2, 0.63 and,
+ * with DRAG_STEPS_ERK, 0.3). */
+static double sensor_fast_steps(double omega, double zeta, double per_rad, int adams, int fast, double t_len)
+{
+    if (!(zeta > 1) || !fast) {
+        const double z = fmin(fmax(zeta, 0.0), 1.0), floor_rad = adams ? 0.1 : 0.05;
+        return fmax(per_rad * exp(-z / 0.02), SENSOR_FAST_STEPS * fmax(floor_rad, z * z)) * omega * t_len;
+    }
+    const double root = omega * (zeta + sqrt((zeta - 1) * (zeta + 1)));
+    return SENSOR_FAST_STEPS / sqrt(zeta) * root * t_len;
+}
 
 /* The steps cvode or arkode take over t_len on the sensor body's oscillation
  * (its rate in *omega, the steps a radian in *per_rad, its damping ratio in
- * *zeta, whether the damped estimate was taken in *damped); 0 without a
- * body. type NULL: the undamped estimate. */
+ * *zeta, whether the damping lowered the estimate below the undamped one in
+ * *damped); 0 without a body. type NULL: the undamped estimate. */
 static double sensor_steps(const gw_chain_params *p, const gw_solver_type *type, const gw_solver_params *sp,
                            double t_len, double *omega, double *per_rad, double *zeta, int *damped)
 {
@@ -153,15 +203,42 @@ static double sensor_steps(const gw_chain_params *p, const gw_solver_type *type,
     const double undamped = *per_rad * *omega * t_len;
     const char *used = type && type != gw_solver_rk4 ? gw_solver_method_used(type, sp ? sp->method : GW_METHOD_DEFAULT)
                                                      : "";
-    if (!(*zeta >= SENSOR_ZETA_STEP_OVER) || (strcmp(used, "bdf") != 0 && strcmp(used, "dirk") != 0))
+    const int bdf = strcmp(used, "bdf") == 0, dirk = strcmp(used, "dirk") == 0;
+    if (!type)
         return undamped;
-    const double decay = *per_rad * log(1.0 / fmin(fmax(tol, 1e-15), 0.1)) / *zeta,
-                 excitations = 4.0 * ((double)p->n + 1.0), steps = excitations * decay;
-    if (steps < undamped) {
-        *damped = 1;
-        return steps;
-    }
-    return undamped;
+    const double base = sp && sp->dt_max > 0 ? t_len / sp->dt_max : 0.0;
+    if (!(*zeta > 0))
+        return base + undamped;
+    if (strcmp(used, "erk") == 0 || strcmp(used, "adams") == 0)
+        return base + sensor_fast_steps(*omega, *zeta, *per_rad, strcmp(used, "adams") == 0, 0, t_len);
+    if (!bdf && !dirk)
+        return base + undamped; /* imex: about the same steps whatever the damping */
+    /* The collision's span, two expected collision lengths at most; beyond it
+     * (a drop, a run to t-max) the contacts' events recur and bdf follows a
+     * lightly damped ring all the time: a drop of 3 beads on 1e-7 kg and
+     * 1e12 N/m took 1.76 and 1.51 million steps over 0.5 ms at 0.05 and 0.1
+     * of critical (about 1 a radian), 6,450 at 0.2 and 5,068 at 0.5; counted
+     * there as per_rad a radian falling as exp(-zeta / 0.05) */
+    gw_chain_params q = *p;
+    q.v_imp = chain_speed_scale(p);
+    double tc_col = 0, tau1_col = 0;
+    chain_column_scales(&q, &tc_col, &tau1_col);
+    const double t_span = 2.0 * (p->n * 2.0 * tc_col + tau1_col),
+                 t_c = t_span > 0 && t_span < t_len ? t_span : t_len, t_b = t_len - t_c,
+                 u_c = *per_rad * *omega * t_c, u_b = *per_rad * *omega * t_b;
+    const double z = *zeta, events = 4.0 * ((double)(p->n > 5 ? p->n : 5) + 1.0),
+                 floor_steps = events * *per_rad * log(1.0 / fmin(fmax(tol, 1e-15), 0.1)),
+                 wedge = bdf ? 1.0 + pow(SENSOR_WEDGE_ZETA / z, 3) : 1.0,
+                 decay = floor_steps * wedge / fmin(z, 1.0),
+                 follow = u_c * exp(-z / (bdf ? SENSOR_FOLLOW_ZETA_BDF : SENSOR_FOLLOW_ZETA_DIRK)),
+                 beyond = t_b > 0 ? fmax(floor_steps * t_b / t_span,
+                                         u_b * exp(-z / (bdf ? SENSOR_FOLLOW_ZETA_BEYOND : SENSOR_FOLLOW_ZETA_DIRK)))
+                                  : 0.0,
+                 ring = fmin(decay, fmax(floor_steps, follow)) + beyond;
+    if (!(ring < undamped))
+        return base + undamped;
+    *damped = 1;
+    return base + ring;
 }
 
 int chain_sensor_steps_check(const gw_chain_params *p, const gw_solver_type *type, const gw_solver_params *sp,
@@ -175,17 +252,18 @@ int chain_sensor_steps_check(const gw_chain_params *p, const gw_solver_type *typ
     if (!(steps <= 1e8)) {
         const char *used = gw_solver_method_used(type, sp ? sp->method : GW_METHOD_DEFAULT);
         const int implicit = strcmp(used, "bdf") == 0 || strcmp(used, "dirk") == 0;
-        char why[256];
+        char why[320];
         if (damped)
             gw_snprintf(why, sizeof why, "damped at %.4g of critical: %.0f contact events, each ringing until its "
-                        "decay is below the tolerance", zeta, 4.0 * ((double)p->n + 1.0));
+                        "decay is below the tolerance, and %s following the lightly damped ring", zeta,
+                        4.0 * ((double)(p->n > 5 ? p->n : 5) + 1.0), used);
         else if (implicit)
-            gw_snprintf(why, sizeof why, "%.3g a radian at this tolerance, measured 7-37 at 1e-12; damped at %.4g of "
-                        "critical, below the %.1f (c_s = %.3g N s/m) from which %s steps over the ring", per_rad, zeta,
-                        SENSOR_ZETA_STEP_OVER, SENSOR_ZETA_STEP_OVER * 2.0 * p->sensor.mass * omega, used);
+            gw_snprintf(why, sizeof why, "%.3g a radian at this tolerance, measured 7-37 at 1e-12; %s%.4g of "
+                        "critical (c_s = %.3g N s/m is critical), too lightly for %s to step over the ring", per_rad,
+                        zeta > 0 ? "damped at " : "undamped: ", zeta, 2.0 * p->sensor.mass * omega, used);
         else
-            gw_snprintf(why, sizeof why, "%.3g a radian at this tolerance, measured 7-37 at 1e-12, whatever the "
-                        "damping under %s", per_rad, used);
+            gw_snprintf(why, sizeof why, "%.3g a radian at this tolerance, measured 7-37 at 1e-12; damped at %.4g of "
+                        "critical, which %s follows at its stability's pace", per_rad, zeta, used);
         return gw_err_set(err, GW_EINVAL, "sensor-stiffness: a sensor body oscillating at %.3g rad/s (sqrt((k_s + the "
                           "contact's stiffness)/M)) needs about %.3g steps over %s (about %.3g s; %s); at most 1e+08: "
                           "a softer or heavier sensor body, looser tolerances or a shorter run", omega, steps, over,
@@ -355,6 +433,19 @@ static double drag_steps(const gw_chain_params *p, const gw_solver_type *type, c
             m_min = fmin(m_min, p->masses[i]);
         if ((p->guide.coulomb + p->guide.viscous * p->v_imp) / m_min * t_len > p->v_imp)
             *t_used = fmax(t_len, t_run);
+    }
+    if (erk && *k == CHAIN_DRAG_SENSOR) {
+        /* an overdamped body excited by the contacts holds erk to its fast root
+         * at more than DRAG_STEPS_ERK a unit below about zeta = 1000
+         * (sensor_fast_steps): 1e-5 kg on 1e12 N/m at zeta 10 took 5.65
+         * million steps (26 s) at rtol 1e-8, 5.3 a unit of c_s/M, where 0.3
+         * was counted; 1e-3 kg on 1e9 N/m 2.3 a unit at 10, 0.93 at 100,
+         * 0.41 at 1000, 0.29 at 5000 (rtol 1e-12) */
+        double omega, per_rad, zeta;
+        int damped;
+        sensor_steps(p, NULL, sp, *t_used, &omega, &per_rad, &zeta, &damped);
+        if (zeta > 1)
+            return fmax(DRAG_STEPS_ERK * *rate * *t_used, sensor_fast_steps(omega, zeta, per_rad, 0, 1, *t_used));
     }
     if (*k == CHAIN_DRAG_GUIDE_COULOMB)
         return (adams ? DRAG_STEPS_ADAMS_COULOMB : DRAG_STEPS_ERK_COULOMB) * *rate * *t_used;

@@ -10,6 +10,7 @@
 
 #include "gw_cli.h"
 #include "gw_common.h"
+#include "gw_number_impl.h"
 #include "gw_param.h"
 
 const gw_opt *gw_cli_find(const gw_opt *opts, const char *name)
@@ -82,8 +83,9 @@ static int set_value(const char *cmd, gw_opt *o, const char *val, gw_err *err)
         return set_by_row(cmd, o, val, err);
     switch (o->kind) {
     case GW_OPT_DOUBLE: {
-        double v;
-        if ((rc = gw_parse_double(val, name, &v, err)) != GW_OK)
+        double v; /* a subnormal refused naming the option's range */
+        const gw_num_range r = {o->lo, o->hi, o->open_lo, o->open_hi, 0};
+        if ((rc = gw_parse_double_in(val, name, &r, &v, err)) != GW_OK)
             return rc;
         if (v < o->lo || v > o->hi || (o->open_lo && !(v > o->lo)) || (o->open_hi && !(v < o->hi))) {
             if (o->open_lo && !isfinite(o->hi))

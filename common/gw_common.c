@@ -14,6 +14,7 @@
 
 #include "gw_common.h"
 #include "gw_locale.h"
+#include "gw_number_impl.h"
 
 const char *gw_strerror(int status)
 {
@@ -207,7 +208,80 @@ static int number_ends(const char *s, const char *end)
     return *end == '\0';
 }
 
-int gw_parse_double(const char *s, const char *name, double *out, gw_err *err)
+/* One end of an interval as text: %g, as the range messages print bounds */
+static void bound_text(char *buf, size_t n, double x)
+{
+    gw_snprintf(buf, n, "%g", x);
+}
+
+/* Interval [a, b] ("(" / ")" for open ends) as "a value in [a, b]", or
+ * ">= a", "< b" when the other end is unbounded, appended to buf. */
+static void interval_text(char *buf, size_t n, double a, int open_a, double b, int open_b)
+{
+    char as[32], bs[32];
+    size_t used = strlen(buf);
+    bound_text(as, sizeof as, a);
+    bound_text(bs, sizeof bs, b);
+    if (isinf(a) && isinf(b))
+        gw_snprintf(buf + used, n - used, "any value");
+    else if (isinf(b))
+        gw_snprintf(buf + used, n - used, "a value %s %s", open_a ? ">" : ">=", as);
+    else if (isinf(a))
+        gw_snprintf(buf + used, n - used, "a value %s %s", open_b ? "<" : "<=", bs);
+    else if (a == b)
+        gw_snprintf(buf + used, n - used, "%s", as);
+    else
+        gw_snprintf(buf + used, n - used, "a value in %s%s, %s%s", open_a ? "(" : "[", as, bs, open_b ? ")" : "]");
+}
+
+char *gw_num_allowed(char *buf, size_t n, const gw_num_range *r)
+{
+    if (!buf || n == 0)
+        return buf;
+    buf[0] = '\0';
+    const gw_num_range any = {-INFINITY, INFINITY, 0, 0, 0};
+    if (!r)
+        r = &any;
+    const double m = DBL_MIN, lo = r->lo, hi = r->hi;
+    /* the parts of [lo, hi] a double holds normally: x <= -m, 0, x >= m */
+    const int zero = r->or_zero || ((lo < 0 || (lo == 0 && !r->open_lo)) && (hi > 0 || (hi == 0 && !r->open_hi)));
+    const int neg = lo <= -m && !(lo == -m && r->open_lo), pos = hi >= m && !(hi == m && r->open_hi);
+    char ms[32];
+    gw_snprintf(ms, sizeof ms, "%.5g", m); /* 2.2251e-308: above DBL_MIN, a normal double */
+    if (neg && pos) { /* both signs: the range, its magnitudes from m up */
+        char range[80] = "";
+        if (!isinf(lo) || !isinf(hi)) {
+            interval_text(range, sizeof range, lo, r->open_lo, hi, r->open_hi);
+            memmove(range, range + strlen("a value"), strlen(range) - strlen("a value") + 1);
+        }
+        gw_snprintf(buf, n, "%sa value%s of magnitude at least %s", zero ? "0 or " : "", range, ms);
+        return buf;
+    }
+    if (neg) /* [lo, min(hi, -m)] */
+        interval_text(buf, n, lo, r->open_lo, hi > -m ? -gw_strtod(ms, NULL) : hi, hi > -m ? 0 : r->open_hi);
+    if (zero) {
+        size_t used = strlen(buf);
+        gw_snprintf(buf + used, n - used, "%s0", neg ? " or " : "");
+    }
+    if (pos) { /* [max(lo, m), hi] */
+        size_t used = strlen(buf);
+        gw_snprintf(buf + used, n - used, "%s", zero ? " or " : "");
+        interval_text(buf, n, lo < m ? gw_strtod(ms, NULL) : lo, lo < m ? 0 : r->open_lo, hi, r->open_hi);
+    }
+    if (!neg && !zero && !pos) /* a range of subnormals alone: no input has one */
+        gw_snprintf(buf, n, "no value: the range is below %s", ms);
+    return buf;
+}
+
+int gw_num_subnormal_refused(const char *name, const char *what, const gw_num_range *r, gw_err *err)
+{
+    char allowed[160];
+    return gw_err_set(err, GW_EINVAL, "%s: %s is too small in magnitude: nonzero values lie at or above %.5g, "
+                      "the smallest normal double (give %s)", name ? name : "value", what, DBL_MIN,
+                      gw_num_allowed(allowed, sizeof allowed, r));
+}
+
+int gw_parse_double_in(const char *s, const char *name, const gw_num_range *r, double *out, gw_err *err)
 {
     if (!out)
         return gw_err_set(err, GW_EINVAL, "gw_parse_double: out is NULL");
@@ -220,11 +294,18 @@ int gw_parse_double(const char *s, const char *name, double *out, gw_err *err)
         return gw_err_set(err, GW_EINVAL, "%s: '%s' is not a number", name, s);
     if (!isfinite(v) || (errno == ERANGE && fabs(v) >= 1.0))
         return gw_err_set(err, GW_EINVAL, "%s: '%s' is not a finite number", name, s);
-    if (errno == ERANGE) /* strtod's underflow: a finite value that is no normal double */
-        return gw_err_set(err, GW_EINVAL, "%s: '%s' is too small in magnitude: nonzero values lie at or above "
-                          "%.5g, the smallest normal double (give 0 or a larger value)", name, s, DBL_MIN);
+    if (errno == ERANGE || (v != 0 && fabs(v) < DBL_MIN)) { /* strtod's underflow: no normal double */
+        char what[96];
+        gw_snprintf(what, sizeof what, "'%s'", s);
+        return gw_num_subnormal_refused(name, what, r, err);
+    }
     *out = v;
     return GW_OK;
+}
+
+int gw_parse_double(const char *s, const char *name, double *out, gw_err *err)
+{
+    return gw_parse_double_in(s, name, NULL, out, err);
 }
 
 int gw_parse_long(const char *s, const char *name, long lo, long hi, long *out, gw_err *err)
@@ -274,12 +355,24 @@ int gw_check_positive(double x, const char *name, gw_err *err)
 
 int gw_parse_double_list(const char *s, const char *name, double **out, int *n, gw_err *err)
 {
-    return gw_parse_double_list_in(s, name, -INFINITY, INFINITY, 0, out, n, err);
+    return gw_parse_double_list_range(s, name, NULL, out, n, err);
 }
 
 int gw_parse_double_list_in(const char *s, const char *name, double lo, double hi, int open_lo,
                             double **out, int *n, gw_err *err)
 {
+    const gw_num_range r = {lo, hi, open_lo, 0, 0};
+    return gw_parse_double_list_range(s, name, &r, out, n, err);
+}
+
+int gw_parse_double_list_range(const char *s, const char *name, const gw_num_range *r, double **out, int *n,
+                               gw_err *err)
+{
+    const gw_num_range any = {-INFINITY, INFINITY, 0, 0, 0};
+    if (!r)
+        r = &any;
+    const double lo = r->lo, hi = r->hi;
+    const int open_lo = r->open_lo;
     if (!out || !n)
         return gw_err_set(err, GW_EINVAL, "gw_parse_double_list: %s is NULL", !out ? "out" : "n");
     *out = NULL;
@@ -304,7 +397,7 @@ int gw_parse_double_list_in(const char *s, const char *name, double lo, double h
         char *comma = strchr(p, ',');
         if (comma)
             *comma = '\0';
-        if ((rc = gw_parse_double(p, name, &v[count], err)) != GW_OK)
+        if ((rc = gw_parse_double_in(p, name, r, &v[count], err)) != GW_OK)
             break;
         double x = v[count];
         if (x < lo || x > hi || (open_lo && !(x > lo))) {

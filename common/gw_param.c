@@ -11,6 +11,7 @@
 
 #include "gw_param.h"
 #include "gw_locale.h"
+#include "gw_number_impl.h"
 
 int gw_param_count(const gw_param *t)
 {
@@ -146,16 +147,27 @@ static int choice_name(const char *choices, int i, char *buf, size_t n)
     return (int)len;
 }
 
+/* The values row p takes (its range, open ends and or_zero), for the words
+ * of a subnormal's refusal (gw_number_impl.h). */
+static gw_num_range row_range(const gw_param *p)
+{
+    return (gw_num_range){p->min, p->max, p->open_min, p->open_max, p->or_zero};
+}
+
 /* A subnormal double (nonzero, below DBL_MIN in magnitude): the text path
- * (gw_parse_double) refuses it, so a value set as a double or written into
+ * (gw_parse_double_in) refuses it, so a value set as a double or written into
  * the struct is refused too, with the same words: every accepted value can be
- * given again as the text gw_param_format and gw_param_json write. */
+ * given again as the text gw_param_format and gw_param_json write. The
+ * refusal names the values the row takes (it said "give 0 or a larger value"
+ * of rows that do not take 0). */
 static int subnormal_bad(const gw_param *p, double v, gw_err *err, const char *what)
 {
     if (v == 0 || !(fabs(v) < DBL_MIN))
         return GW_OK;
-    return gw_err_set(err, GW_EINVAL, "%s: %s%.17g is too small in magnitude: nonzero values lie at or above "
-                      "%.5g, the smallest normal double (give 0 or a larger value)", p->name, what, v, DBL_MIN);
+    char text[96];
+    const gw_num_range r = row_range(p);
+    gw_snprintf(text, sizeof text, "%s%.17g", what, v);
+    return gw_num_subnormal_refused(p->name, text, &r, err);
 }
 
 static int set_number(const gw_param *p, void *obj, double v, const char *text, gw_err *err)
@@ -238,7 +250,8 @@ static int set_text(const gw_param *t, const gw_param *p, void *obj, const char 
     switch (p->type) {
     case GW_PARAM_DOUBLE: {
         double v;
-        int rc = gw_parse_double(value, p->name, &v, err);
+        const gw_num_range r = row_range(p);
+        int rc = gw_parse_double_in(value, p->name, &r, &v, err);
         return rc == GW_OK ? set_number(p, obj, v, value, err) : rc;
     }
     case GW_PARAM_INT:
@@ -292,7 +305,8 @@ static int set_text(const gw_param *t, const gw_param *p, void *obj, const char 
             items += *c == ',';
         if (items > most)
             return gw_err_set(err, GW_EINVAL, "%s: %ld items, at most %ld", p->name, items, most);
-        int rc = gw_parse_double_list_in(value, p->name, p->min, p->max, p->open_min, &v, &n, err);
+        const gw_num_range r = row_range(p);
+        int rc = gw_parse_double_list_range(value, p->name, &r, &v, &n, err);
         if (rc != GW_OK)
             return rc;
         for (int k = 0; p->open_max && k < n; k++) /* the parser's upper end is closed */

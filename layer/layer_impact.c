@@ -262,6 +262,33 @@ int gw_layer_impact_check(const gw_layer_sample *smp, const gw_layer_impact_para
     return GW_OK;
 }
 
+/* Whether a block of incident speed vi at alpha_deg falling gap under g meets
+ * the layer at most 0.1 % faster than its normal speed (the fall check). */
+static int fall_passes(double vi, double alpha_deg, double gap, double g)
+{
+    const double vn = vi * cos(alpha_deg * M_PI / 180), vc = sqrt(vn * vn + 2 * g * gap);
+    return !(g > 0) || gap == 0 || vc <= 1.001 * vn;
+}
+
+/* x rounded to 3 significant digits, up (dir > 0) or down, into buf; more
+ * digits while the text does not pass the fall check as vi (is_vi) or as
+ * gap: the value named in a refusal runs when given as printed (0.099 m/s
+ * at the default gap was told "lower gap to 1e-06 m", the gap it had). */
+static const char *passing_text(char *buf, size_t n, double x, int dir, int is_vi, const gw_layer_impact_params *ip,
+                                double g)
+{
+    for (int d = 3; d <= 17; d++) {
+        const double e = pow(10, floor(log10(x)) - (d - 1));
+        const double y = (dir > 0 ? ceil(x / e) : floor(x / e)) * e;
+        gw_snprintf(buf, n, "%.*g", d, y);
+        const double t = gw_strtod(buf, NULL);
+        if (is_vi ? fall_passes(t, ip->alpha_deg, ip->gap, g) : fall_passes(ip->vi, ip->alpha_deg, t, g))
+            return buf;
+    }
+    gw_snprintf(buf, n, "%.17g", x);
+    return buf;
+}
+
 int gw_layer_impact_fall_check(const gw_layer_impact_params *ip, double g, gw_err *err)
 {
     if (!ip)
@@ -272,12 +299,29 @@ int gw_layer_impact_fall_check(const gw_layer_impact_params *ip, double g, gw_er
      * a penetration of 1.06 m counted from the start, against e_n 0.179 and
      * 0.064 m for the same impact given as --vi 4.54 */
     const double vn = ip->vi * cos(ip->alpha_deg * M_PI / 180), vc = sqrt(vn * vn + 2 * g * ip->gap);
-    if (!(g > 0) || ip->gap == 0 || vc <= 1.001 * vn)
+    if (fall_passes(ip->vi, ip->alpha_deg, ip->gap, g))
         return GW_OK;
+    const double k = 1.001 * 1.001 - 1; /* vc <= 1.001 vn: 2 g gap <= k vn^2 */
+    char gs[32], vs[32];
+    passing_text(gs, sizeof gs, k * vn * vn / (2 * g), -1, 0, ip, g);
+    passing_text(vs, sizeof vs, sqrt(2 * g * ip->gap / k) / cos(ip->alpha_deg * M_PI / 180), 1, 1, ip, g);
+    /* the default gap (1 um, not given): the speed is what the caller gave,
+     * and the refusal is of it, naming the default and the smallest speed
+     * that runs with it (it said "gap: falling 1e-06 m ... lower gap", of a
+     * gap never given) */
+    if (ip->gap == gw_layer_impact_params_default().gap) {
+        char vis[32];
+        return gw_err_set(err, GW_EINVAL, "vi: %s m/s is too slow for the default gap of %g m: "
+                          "falling it (g = %g m/s^2) the block meets the layer at %.4g m/s normal speed, not %.4g "
+                          "(+%.2g %%, at most 0.1 %%: e_n, e, E_incident and the penetration take V_i as given): "
+                          "give vi at least %s m/s with the default gap, or a gap of at most %s m (0: the block "
+                          "starts touching the layer)", gw_num_text(vis, sizeof vis, ip->vi), ip->gap, g, vc, vn,
+                          100 * (vc / vn - 1), vs, gs);
+    }
     return gw_err_set(err, GW_EINVAL, "gap: falling %g m (g = %g m/s^2), the block meets the layer at %.4g m/s "
                       "normal speed, not %.4g (+%.2g %%, at most 0.1 %%: e_n, e, E_incident and the penetration "
-                      "take V_i as given): lower gap to %.3g m, or give vi the speed at contact", ip->gap, g, vc, vn,
-                      100 * (vc / vn - 1), (1.001 * 1.001 - 1) * vn * vn / (2 * g));
+                      "take V_i as given): lower gap to %s m, or give vi the speed at contact (at least %s m/s "
+                      "with this gap)", ip->gap, g, vc, vn, 100 * (vc / vn - 1), gs, vs);
 }
 
 int gw_layer_impact_gap_check(const gw_layer_sample *smp, const gw_layer_impact_params *p, double g,

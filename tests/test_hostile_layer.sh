@@ -501,12 +501,12 @@ done
 
 # --- 15: the gap's fall ---------------------------------------------------------
 refused "layer-impact --vi 1 --gap 1 (met the layer at 4.54 m/s: e = 1.83)" \
-    "^granwave layer-impact --gap: falling 1 m \(g = 9.81 m/s\^2\), the block meets the layer at 4.541 m/s normal speed, not 1 .*lower gap to 0.000102 m" \
+    "^granwave layer-impact --gap: falling 1 m \(g = 9.81 m/s\^2\), the block meets the layer at 4.541 m/s normal speed, not 1 .*lower gap to 0.000101 m" \
     layer-impact --sample "$S" --vi 1 --gap 1 --out "$tmp/o"
-refused "layer-impact --alpha 89.999 (normal speed 3.5e-4 m/s, 4.4e-3 after the default gap)" "^granwave layer-impact --gap: falling 1e-06 m" \
+refused "layer-impact --alpha 89.999 (normal speed 3.5e-4 m/s, 4.4e-3 after the default gap)" "^granwave layer-impact --vi: 20 m/s is too slow for the default gap of 1e-06 m: " \
     layer-impact --sample "$S" --alpha 89.999 --t-max 1e-3 --out "$tmp/o"
 printf '[sweep]\nmodel = layer\n[grid]\nvi = 20, 0.05\n[params]\nsample = %s\nt-max = 1e-3\n' "$S" >"$tmp/g.ini"
-refused "sweep --check: a case at vi 0.05 with the default gap" "g.ini: case 1: gap: falling 1e-06 m .* not 0.05 " sweep "$tmp/g.ini" --out "$tmp/o" --check
+refused "sweep --check: a case at vi 0.05 with the default gap" "g.ini: case 1: vi: 0.05 m/s is too slow for the default gap of 1e-06 m: .* not 0.05 " sweep "$tmp/g.ini" --out "$tmp/o" --check
 runs "layer-impact --vi 0.05 --gap 2.5e-7 (the gap suggested)" layer-impact --sample "$S" --vi 0.05 --gap 2.5e-7 --t-max 1e-3
 # (a settled sample without gravity is refused since section 20: the free disc of 13)
 runs "layer-impact --vi 0.05 --gravity 0 (no fall)" layer-impact --sample "$tmp/one.txt" --vi 0.05 --gravity 0 --t-max 1e-3

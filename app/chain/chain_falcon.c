@@ -220,10 +220,15 @@ int gw_cmd_falcon(int argc, char **argv)
     double *vv = NULL, *hh = NULL, *v = NULL;
     int nvv = 0, nhh = 0;
     int prc;
+    /* the lists in their rows' ranges, as the library's table reads them (a
+     * subnormal item was refused naming no range: "give 0 or a larger value") */
+    const gw_param *vrow = gw_param_find(rows, "vimp"), *hrow = gw_param_find(rows, "heights");
     if ((prc = gw_parse_int_range(nrange, "falcon --n", 1, 100000, &a, &b, &err)) != GW_OK ||
-        (prc = gw_parse_double_list(vlist, "falcon --vimp", &vv, &nvv, &err)) != GW_OK ||
+        (prc = gw_parse_double_list_in(vlist, "falcon --vimp", vrow->min, vrow->max, vrow->open_min, &vv, &nvv,
+                                       &err)) != GW_OK ||
         (strcmp(hlist, "none") != 0 &&
-         (prc = gw_parse_double_list(hlist, "falcon --heights", &hh, &nhh, &err)) != GW_OK)) {
+         (prc = gw_parse_double_list_in(hlist, "falcon --heights", hrow->min, hrow->max, hrow->open_min, &hh, &nhh,
+                                        &err)) != GW_OK)) {
         free(vv);
         return chain_cli_fail_rc(prc, err.msg);
     }

@@ -114,8 +114,13 @@ char *gw_sweep_slurp_fd(int fd, const char *path, size_t max, size_t *len, gw_er
     size_t n = 0, cap = 0;
     for (;;) {
         if (n + SLURP_CHUNK + 1 > cap) {
-            const size_t nc = cap ? 2 * cap : SLURP_CHUNK + 1;
-            char *nb = realloc(buf, nc > n + SLURP_CHUNK + 1 ? nc : n + SLURP_CHUNK + 1);
+            /* doubled, never past what max needs */
+            size_t nc = cap ? 2 * cap : SLURP_CHUNK + 1;
+            if (nc > max + SLURP_CHUNK + 1)
+                nc = max + SLURP_CHUNK + 1;
+            if (nc < n + SLURP_CHUNK + 1)
+                nc = n + SLURP_CHUNK + 1;
+            char *nb = realloc(buf, nc);
             if (!nb) {
                 free(buf);
                 gw_err_set(err, GW_ENOMEM, "sweep journal: out of memory reading '%s'", path);
@@ -123,7 +128,7 @@ char *gw_sweep_slurp_fd(int fd, const char *path, size_t max, size_t *len, gw_er
                 return NULL;
             }
             buf = nb;
-            cap = nc > n + SLURP_CHUNK + 1 ? nc : n + SLURP_CHUNK + 1;
+            cap = nc;
         }
         errno = 0;
         const ssize_t r = pread(fd, buf + n, SLURP_CHUNK, (off_t)n);

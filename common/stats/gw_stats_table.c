@@ -365,9 +365,8 @@ static int add_input(gw_stats_table *t, const char *text, long ln, gw_err *err)
 
 /* A case number as a sweep writes it ("%ld" of a case >= 0): decimal digits,
  * no leading zero but "0" itself, no sign, blank or other text. strtol took
- * "00", "+0", " 0" and "0x" as well, all for case 0: two rows of one case
- * under two spellings passed as two cases (their duplicate never found), and
- * the counts of the table's cases were wrong. 1 with *k, else 0. */
+ * "00", "+0", " 0" and "0x" as well, all silently as case 0: a cell no sweep
+ * writes (an edited or hand-made table) read as a sweep's. 1 with *k, else 0. */
 static int case_number(const char *s, long *k)
 {
     if (!(s[0] >= '0' && s[0] <= '9') || (s[0] == '0' && s[1] != '\0'))

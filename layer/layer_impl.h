@@ -539,6 +539,17 @@ int layer_result_shape(const gw_layer_impact_result *r, int whole, gw_err *err);
  * "sample 'WHAT'" when s would be refused on reading. */
 int layer_sample_readable(const gw_layer_sample *s, const char *what, gw_err *err);
 
+/* The rules every sample file meets before a byte of it is parsed or hashed
+ * (gw_layer_sample_read applies them first): a regular file (gw_input_open),
+ * at most LAYER_SAMPLE_FILE_MAX bytes, and either HDF5 (its signature at 0 or
+ * after a user block; GW_EUNSUPPORTED in a build without HDF5) or text with
+ * no NUL byte in its first 64 KiB. GW_OK, or the reader's status and message
+ * ("sample 'PATH': ..."). The sweep (the rule layer_sweep_model.c registers,
+ * gw_sweep_input_rule) and the layer model's check memo hash a sample only
+ * after it. */
+#define LAYER_SAMPLE_FILE_MAX ((unsigned long long)1 << 32) /* bytes: 4 GiB */
+int layer_sample_file_check(const char *path, gw_err *err);
+
 /* gw_layer_sample_pile_hash of s into *h, GW_OK; GW_EINVAL (*h 0) for a
  * sample layer_sample_shape_check refuses, GW_ENOMEM (*h 0) when the bodies
  * of a clump sample cannot be gathered (layer_sample_pile.c). */

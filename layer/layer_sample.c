@@ -24,12 +24,14 @@
  * layer_sample_porosity.c).
  * Units: SI (m).
  */
+#define _POSIX_C_SOURCE 200809L /* fileno, fstat */
 #include <errno.h>
 #include <limits.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include <strings.h>
+#include <sys/stat.h>
 
 #include "layer_sample_impl.h"
 #include "gw_locale.h"
@@ -651,6 +653,74 @@ static int h5_signature_at(FILE *fp, const unsigned char pre[8], int *sb)
     return fseek(fp, 8, SEEK_SET) == 0 && found;
 }
 
+/* A sample file opened for reading: a regular file only (a FIFO or a device
+ * is refused before any read), at most LAYER_SAMPLE_FILE_MAX bytes (a sparse
+ * 200 GB file was hashed whole, for minutes, before its first byte was
+ * refused), its first bytes in pre (*npre of them), *h5 1 when it is HDF5
+ * (*sb its superblock version). The stream is left at offset *npre. */
+static int sample_open(const char *path, FILE **fp, unsigned char pre[8], size_t *npre, int *h5, int *sb,
+                       gw_err *err)
+{
+    *h5 = 0, *sb = -1, *npre = 0;
+    int rc = gw_input_open(path, "sample", fp, err);
+    if (rc != GW_OK)
+        return rc;
+    struct stat st;
+    if (fstat(fileno(*fp), &st) == 0 && (unsigned long long)st.st_size > LAYER_SAMPLE_FILE_MAX) {
+        fclose(*fp);
+        *fp = NULL;
+        return gw_err_set(err, GW_EFORMAT, "sample '%s': %llu bytes, larger than a sample file may be (%llu "
+                          "bytes, 4 GiB): not a sample",
+                          path, (unsigned long long)st.st_size, LAYER_SAMPLE_FILE_MAX);
+    }
+    *npre = fread(pre, 1, 8, *fp);
+    *h5 = *npre == 8 && h5_signature_at(*fp, pre, sb);
+    return GW_OK;
+}
+
+int layer_sample_file_check(const char *path, gw_err *err)
+{
+    if (!path)
+        return gw_err_set(err, GW_EINVAL, "layer_sample_file_check: path is NULL");
+    FILE *fp = NULL;
+    unsigned char pre[8];
+    size_t npre;
+    int h5, sb;
+    int rc = sample_open(path, &fp, pre, &npre, &h5, &sb, err);
+    if (rc != GW_OK)
+        return rc;
+    if (h5) {
+        fclose(fp);
+#if GW_HAVE_HDF5
+        return GW_OK;
+#else
+        return gw_err_set(err, GW_EUNSUPPORTED, "sample '%s': an HDF5 file, and this granwave was built "
+                          "without HDF5", path);
+#endif
+    }
+    /* text: the reader refuses a NUL byte wherever it is; the first 64 KiB
+     * are looked at here (the whole file is read by the reader alone) */
+    unsigned char buf[4096];
+    long line = 1, left = 16;
+    size_t got = npre;
+    memcpy(buf, pre, npre);
+    got += fread(buf + npre, 1, sizeof buf - npre, fp);
+    while (got > 0) {
+        for (size_t i = 0; i < got; i++) {
+            if (buf[i] == 0) {
+                fclose(fp);
+                return gw_err_set(err, GW_EFORMAT, "sample '%s': line %ld: NUL byte (binary data, not a text "
+                                  "sample)", path, line);
+            }
+            line += buf[i] == '\n';
+        }
+        got = --left > 0 ? fread(buf, 1, sizeof buf, fp) : 0;
+    }
+    rc = ferror(fp) ? gw_err_set(err, GW_EIO, "sample '%s': read failed", path) : GW_OK;
+    fclose(fp);
+    return rc;
+}
+
 int gw_layer_sample_read(const char *path, gw_layer_sample *s, gw_err *err)
 {
     if (!s || !path)
@@ -658,14 +728,12 @@ int gw_layer_sample_read(const char *path, gw_layer_sample *s, gw_err *err)
     memset(s, 0, sizeof *s);
     s->mass_law = GW_LAYER_MASS_DISC;
     text_in t = {.path = path, .hash = GW_FNV1A64_INIT};
-    /* a regular file only: a FIFO or a device is refused before any read */
-    int orc = gw_input_open(path, "sample", &t.fp, err);
+    int rc, sb = -1, h5 = 0;
+    int orc = sample_open(path, &t.fp, t.pre, &t.npre, &h5, &sb, err);
     if (orc != GW_OK)
         return orc;
-    t.npre = fread(t.pre, 1, sizeof t.pre, t.fp);
-    int rc, sb = -1;
     long *spr_lines = NULL;
-    if (t.npre == sizeof t.pre && h5_signature_at(t.fp, t.pre, &sb)) {
+    if (h5) {
         fclose(t.fp);
 #if GW_HAVE_HDF5
         /* read by the library through its own open: hashed before and after,

@@ -221,7 +221,7 @@ static int h5_attr_read(hid_t f, const char *name, H5T_class_t want, hid_t memty
     hid_t a = ex > 0 ? H5Aopen(f, name, H5P_DEFAULT) : -1;
     hid_t t = a >= 0 ? H5Aget_type(a) : -1, sp = a >= 0 ? H5Aget_space(a) : -1;
     H5T_class_t cls = t >= 0 ? H5Tget_class(t) : H5T_NO_CLASS;
-    int ok = sp >= 0 && H5Sget_simple_extent_npoints(sp) == 1 &&
+    int ok = sp >= 0 && H5Sget_simple_extent_type(sp) == H5S_SCALAR &&
              (cls == want || (want == H5T_FLOAT && cls == H5T_INTEGER));
     if (ok && want == H5T_STRING) { /* fixed or variable length */
         char *vs = NULL;
@@ -288,9 +288,12 @@ static int h5_in_file(hid_t f, const char *name, const char **what)
  * converted to millimetres with its units attribute saying "mm" ran as metres
  * (a 1000 times larger box, block and particles), exit 0. Absent: the values
  * are taken as SI, as the format says. */
+static int h5_attrs_scalar(hid_t loc, const char *name, const char *path, gw_err *err);
 static int h5_units_check(hid_t loc, const char *name, const char *want, const char *path, gw_err *err)
 {
     char str[64], show[48];
+    if (name && h5_attrs_scalar(loc, name, path, err) != GW_OK)
+        return GW_EFORMAT;
     const int got = h5_attr_read(loc, "units", H5T_STRING, -1, str);
     if (got == 0 || (got == 1 && strcmp(str, want) == 0))
         return GW_OK;
@@ -358,7 +361,7 @@ static int h5_header_read(hid_t f, char **out, const char *path, gw_err *err)
     hid_t t = a >= 0 ? H5Aget_type(a) : -1, sp = a >= 0 ? H5Aget_space(a) : -1;
     htri_t var = t >= 0 ? H5Tis_variable_str(t) : -1;
     size_t size = t >= 0 ? H5Tget_size(t) : 0;
-    int ok = sp >= 0 && H5Sget_simple_extent_npoints(sp) == 1 && H5Tget_class(t) == H5T_STRING && var >= 0 &&
+    int ok = sp >= 0 && H5Sget_simple_extent_type(sp) == H5S_SCALAR && H5Tget_class(t) == H5T_STRING && var >= 0 &&
              (var > 0 || (size > 0 && size <= 65536));
     char *vs = NULL, *buf = ok && var == 0 ? malloc(size + 1) : NULL;
     int nomem = ok && var == 0 && !buf;
@@ -523,10 +526,51 @@ static int h5_springs_read(hid_t f, gw_layer_sample *s, const char *path, const 
     return rc;
 }
 
+/* The attributes the reader takes (the file's; dataset name's units when name
+ * is not NULL) are scalars, as granwave writes them. A one-element array (shape
+ * (1,), or (1, 1)) was read as its element, so n = [5] ran as n = 5 while the
+ * format says a scalar: refused, naming the attribute and its shape. */
+static int h5_attrs_scalar(hid_t loc, const char *name, const char *path, gw_err *err)
+{
+    static const char *const root[] = {"format", "format_version", "width", "rm", "volume_ratio", "porosity",
+                                       "seed", "mass_law", "clump_mass", "n", "header", "units", NULL};
+    static const char *const dset[] = {"units", NULL};
+    for (const char *const *a = name ? dset : root; *a; a++) {
+        if (H5Aexists(loc, *a) <= 0)
+            continue; /* absent (or unreadable: the read names it) */
+        hid_t at = H5Aopen(loc, *a, H5P_DEFAULT), sp = at >= 0 ? H5Aget_space(at) : -1;
+        const H5S_class_t cls = sp >= 0 ? H5Sget_simple_extent_type(sp) : H5S_NO_CLASS;
+        hsize_t dims[4] = {0};
+        const int rank = cls == H5S_SIMPLE ? H5Sget_simple_extent_dims(sp, dims, NULL) : 0;
+        if (sp >= 0)
+            H5Sclose(sp);
+        if (at >= 0)
+            H5Aclose(at);
+        if (cls == H5S_SCALAR || sp < 0)
+            continue;
+        char shape[96] = "no value (a null dataspace)";
+        if (cls == H5S_SIMPLE && rank >= 1 && rank <= 4) {
+            size_t at_c = (size_t)gw_snprintf(shape, sizeof shape, "an array of shape (");
+            for (int d = 0; d < rank && at_c < sizeof shape; d++)
+                at_c += (size_t)gw_snprintf(shape + at_c, sizeof shape - at_c, "%llu%s",
+                                            (unsigned long long)dims[d], rank == 1 ? ",)" : d + 1 < rank ? ", " : ")");
+        } else if (cls == H5S_SIMPLE) {
+            gw_snprintf(shape, sizeof shape, "an array of rank %d", rank);
+        }
+        return gw_err_set(err, GW_EFORMAT, "sample '%s': HDF5 attribute '%s'%s%s%s is %s, not a scalar (granwave "
+                          "writes and reads its attributes as scalars: store the value itself, not a list of one)",
+                          path, *a, name ? " of dataset '" : "", name ? name : "", name ? "'" : "", shape);
+    }
+    return GW_OK;
+}
+
 static int h5_fields(hid_t f, gw_layer_sample *s, const char *path, const char *why, gw_err *err)
 {
     char str[64], show[48];
     long long ver = 0, n = 0, seed = 0;
+    int shape = h5_attrs_scalar(f, NULL, path, err);
+    if (shape != GW_OK)
+        return shape;
     int got = h5_attr_read(f, "format", H5T_STRING, -1, str);
     if (got < 0 && why[0])
         return gw_err_set(err, GW_EFORMAT, "sample '%s': corrupt HDF5 file (%s)", path, why);

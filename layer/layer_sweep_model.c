@@ -428,7 +428,9 @@ static int setup_check(void **memo, const gw_layer_impact_setup *s, double *widt
     if (memo && !*memo)
         *memo = calloc(1, sizeof(check_memo));
     check_memo *c = memo ? *memo : NULL;
-    if (!c || !s->sample || gw_fnv1a64_file(s->sample, "sample", &h, &e) != GW_OK)
+    /* hashed only after the reader's rules (a sparse 200 GB file was hashed whole first) */
+    if (!c || !s->sample || layer_sample_file_check(s->sample, &e) != GW_OK ||
+        gw_fnv1a64_file(s->sample, "sample", &h, &e) != GW_OK)
         return gw_layer_impact_setup_check(s, err); /* its own message for a missing or odd file */
     memo_slot *old = &c->slot[0];
     for (int k = 0; k < MEMO_SLOTS; k++) {
@@ -692,3 +694,10 @@ const gw_sweep_weigh gw_layer_sweep_weigh = {weigh, weigh_memo_free};
 const gw_sweep_model gw_layer_sweep_model = {"layer",  NCOLUMNS, columns,       has_key,  run,
                                              check,    memory,   "sample",      check_memo_fn, memo_free,
                                              memo_warnings};
+
+/* The sweep's rules for the samples it hashes: the sample reader's
+ * (layer_sample_file_check), registered when the library is loaded */
+__attribute__((constructor)) static void input_rule(void)
+{
+    gw_sweep_input_rule_set(gw_layer_sweep_model.name, layer_sample_file_check);
+}

@@ -480,7 +480,15 @@ static int disp_import_wisdom(disp_cli *c, gw_err *err)
 {
     const char *path = c->wisdom;
     struct stat st;
-    if ((stat(path, &st) != 0 && errno == ENOENT) || (S_ISREG(st.st_mode) && st.st_size == 0))
+    if (stat(path, &st) != 0) {
+        /* st is not filled then: its mode was read, and a file stat could not
+         * reach (EACCES, ENOTDIR, EIO, ELOOP) taken by chance as an empty one */
+        const int e = errno;
+        if (e == ENOENT)
+            return gw_out_file_check(path, "dispersion --wisdom", err);
+        return gw_err_set(err, GW_EINVAL, "dispersion --wisdom: '%s': cannot read: %s", path, strerror(e));
+    }
+    if (S_ISREG(st.st_mode) && st.st_size == 0)
         return gw_out_file_check(path, "dispersion --wisdom", err);
     char *text = NULL;
     size_t len = 0;

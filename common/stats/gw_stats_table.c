@@ -363,19 +363,43 @@ static int add_input(gw_stats_table *t, const char *text, long ln, gw_err *err)
     return GW_OK;
 }
 
-static int parse_row(gw_stats_table *t, char *line, long ln, int ncells, int cb, gw_err *err)
+/* A case number as a sweep writes it ("%ld" of a case >= 0): decimal digits,
+ * no leading zero but "0" itself, no sign, blank or other text. strtol took
+ * "00", "+0", " 0" and "0x" as well, all silently as case 0: a cell no sweep
+ * writes (an edited or hand-made table) read as a sweep's. 1 with *k, else 0. */
+static int case_number(const char *s, long *k)
+{
+    if (!(s[0] >= '0' && s[0] <= '9') || (s[0] == '0' && s[1] != '\0'))
+        return 0;
+    for (const char *p = s; *p; p++)
+        if (!(*p >= '0' && *p <= '9'))
+            return 0;
+    char *end;
+    errno = 0;
+    const long v = strtol(s, &end, 10);
+    if (errno || *end)
+        return 0;
+    *k = v;
+    return 1;
+}
+
+/* line: the row, trimmed; raw: the same line as the file has it (its case
+ * field with any blanks before it) */
+static int parse_row(gw_stats_table *t, char *line, const char *raw, long ln, int ncells, int cb, gw_err *err)
 {
     char *cells[GW_STATS_MAX_KEYS + 256];
+    const size_t raw0 = strcspn(raw, ","); /* the case field as written, blanks and all */
+    char shown[48];
+    gw_snprintf(shown, sizeof shown, "%.*s%s", (int)(raw0 < 40 ? raw0 : 40), raw, raw0 > 40 ? "..." : "");
     int n = split(line, cells, ncells);
     if (n != ncells)
         return gw_err_set(err, GW_EFORMAT, "%s:%ld: %s%d cells, header has %d", t->path, ln,
                           n > ncells ? "more than " : "", n > ncells ? ncells : n, ncells);
     long r = t->nrows;
-    char *end;
-    errno = 0;
-    long k = strtol(cells[0], &end, 10);
-    if (!*cells[0] || *end || errno || k < 0)
-        return gw_err_set(err, GW_EFORMAT, "%s:%ld: case '%s' is not a case number", t->path, ln, cells[0]);
+    long k;
+    if (strlen(cells[0]) != raw0 || !case_number(cells[0], &k))
+        return gw_err_set(err, GW_EFORMAT, "%s:%ld: case '%s' is not a case number as a sweep writes it (decimal "
+                          "digits, no sign, blank or leading zero)", t->path, ln, shown);
     t->case_id[r] = k;
     for (int i = 0; i < t->ngrid; i++) {
         if (!*cells[1 + i])
@@ -554,7 +578,7 @@ int gw_stats_table_parse(const char *text, const char *name, gw_stats_table *t, 
         if (t->nrows == cap && grow(t, &cap) != GW_OK)
             rc = gw_err_set(err, GW_ENOMEM, "%s: out of memory", name);
         else
-            rc = parse_row(t, line, ln, ncells, cb, err);
+            rc = parse_row(t, line, p, ln, ncells, cb, err);
     }
     free(buf);
     if (rc == GW_OK && header_line && t->nrows > 0)

@@ -716,6 +716,12 @@ static int config_finish(const char *path, const char *base, const gw_sweep_mode
         gw_sweep_config_free(cfg);
         return rc;
     }
+    /* the files the cases read pass their reader's rules before any byte of
+     * them is hashed (the config's hash, the inputs' hashes) */
+    if ((rc = gw_sweep_inputs_readable(cfg, path, err)) != GW_OK) {
+        gw_sweep_config_free(cfg);
+        return rc;
+    }
     cfg->ncases = 1;
     int nomem = 0;
     unsigned long h = fnv64(14695981039346656037UL, cfg->model);

@@ -44,6 +44,24 @@ char *gw_sweep_config_dir(const char *path, int *status, gw_err *err);
 int gw_sweep_resolve_paths(gw_sweep_config *cfg, const char *base, const char *path, gw_err *err);
 int gw_sweep_names_file(const gw_sweep_config *cfg, const char *name);
 int gw_sweep_find_inputs(const char *path, gw_sweep_config *cfg, gw_err *err);
+/* The rules of a model's own reader for the file its read_key names (the
+ * layer's: a sample's, layer_sample_file_check), registered by the model
+ * under its name (gw_sweep_model.name) from its object's constructor, before
+ * main and any thread: the sweep applies them to each such file before it
+ * reads a byte of it to hash it (the config's hash, the inputs' hashes, the
+ * check after each case), since common/ does not know the models' readers. A
+ * sparse 200 GB file named as the sample was hashed whole, for minutes,
+ * before the case's reader refused its first byte. GW_OK, or the reader's
+ * status and message naming the file. At most 8 models; NULL: none. */
+typedef int (*gw_sweep_input_rule)(const char *path, gw_err *err);
+void gw_sweep_input_rule_set(const char *model, gw_sweep_input_rule fn);
+gw_sweep_input_rule gw_sweep_input_rule_of(const char *model);
+/* Every value of cfg's read_key that names something passes its model's
+ * gw_sweep_input_rule, before the config hashes it: GW_OK, or
+ * GW_EINVAL (GW_ENOMEM, GW_EUNSUPPORTED as the check said) "PATH: [SECTION]
+ * KEY: <the check's message>" (path: the config, for the message). Values
+ * naming nothing are left to the model's check. */
+int gw_sweep_inputs_readable(const gw_sweep_config *cfg, const char *path, gw_err *err);
 
 /* gw_sweep_rows.c: a complete journal line's case number (-1: not a row of
  * ncases with a good checksum); why a line is not one of this sweep's rows
@@ -76,12 +94,23 @@ void gw_sweep_head_first_line(const char *buf, size_t len, char *out, size_t n);
 #define GW_SWEEP_BUILD_MAX 384
 const char *gw_sweep_build(void);
 
-/* gw_sweep_journal.c: the journal or table read whole (a regular file only),
- * NULL with errno set (ENOENT absent, ENOMEM) and err filled. */
-char *gw_sweep_slurp(const char *path, size_t *len, gw_err *err);
+/* gw_sweep_journal.c: the journal read whole (a regular file only), in
+ * chunks of 1 MiB into a buffer grown as they come, at most max bytes
+ * (GW_SWEEP_JOURNAL_MAX at most) and no NUL byte: NULL with errno set (ENOENT
+ * absent, ENOMEM, EINVAL for a journal above max or holding a NUL byte, said
+ * naming it and its line) and err filled. */
+char *gw_sweep_slurp(const char *path, size_t max, size_t *len, gw_err *err);
 /* The same through fd (open on a regular file; read from its start, path
  * naming it in messages): a directory moved meanwhile is read still. */
-char *gw_sweep_slurp_fd(int fd, const char *path, size_t *len, gw_err *err);
+char *gw_sweep_slurp_fd(int fd, const char *path, size_t max, size_t *len, gw_err *err);
+/* The most bytes cfg's journal can hold: its head (every name and value,
+ * twice over) and twice the longest row (gw_sweep_row_bound) for each case,
+ * at most GW_SWEEP_JOURNAL_MAX (also when cfg->ncolumns is not known). A
+ * journal above it is not this sweep's. */
+size_t gw_sweep_journal_bound(const gw_sweep_config *cfg);
+/* gw_sweep_run.c: the longest journal row of cfg with ncolumns numbers, bytes
+ * (its case number, grid values, numbers, hashes and checksum). */
+double gw_sweep_row_bound(const gw_sweep_config *cfg, int ncolumns);
 /* The sweep's directory opened for the *at calls (O_DIRECTORY, O_CLOEXEC; by
  * O_PATH where it may be searched but not read), -1 with errno set. */
 int gw_sweep_dir_open(const char *dir);

@@ -111,6 +111,71 @@ int gw_sweep_resolve_paths(gw_sweep_config *cfg, const char *base, const char *p
     return GW_OK;
 }
 
+/* The registered rules: written by the models' constructors alone, before
+ * main (one thread), read after. */
+#define RULES_MAX 8
+static struct {
+    const char *model;
+    gw_sweep_input_rule fn;
+} rules[RULES_MAX];
+static int nrules;
+
+void gw_sweep_input_rule_set(const char *model, gw_sweep_input_rule fn)
+{
+    if (!model)
+        return;
+    for (int i = 0; i < nrules; i++)
+        if (strcmp(rules[i].model, model) == 0) {
+            rules[i].fn = fn;
+            return;
+        }
+    if (nrules < RULES_MAX) {
+        rules[nrules].model = model;
+        rules[nrules++].fn = fn;
+    }
+}
+
+gw_sweep_input_rule gw_sweep_input_rule_of(const char *model)
+{
+    for (int i = 0; model && i < nrules; i++)
+        if (strcmp(rules[i].model, model) == 0)
+            return rules[i].fn;
+    return NULL;
+}
+
+/* value (of key read_key) through its model's rules when it names something */
+static int input_readable(const gw_sweep_config *cfg, const char *value, gw_err *e)
+{
+    struct stat sb;
+    const gw_sweep_input_rule fn = gw_sweep_input_rule_of(cfg->model);
+    if (!fn || stat(value, &sb) != 0)
+        return GW_OK;
+    return fn(value, e);
+}
+
+int gw_sweep_inputs_readable(const gw_sweep_config *cfg, const char *path, gw_err *err)
+{
+    if (!cfg->read_key || !gw_sweep_input_rule_of(cfg->model))
+        return GW_OK;
+    for (int s = 0; s < 2; s++) {
+        const gw_sweep_key *keys = s ? cfg->params : cfg->grid;
+        const int nk = s ? cfg->nparams : cfg->ngrid;
+        for (int i = 0; i < nk; i++) {
+            if (!gw_sweep_names_file(cfg, keys[i].name))
+                continue;
+            for (int j = 0; j < keys[i].nvalues; j++) {
+                gw_err e = {{0}};
+                const int rc = input_readable(cfg, keys[i].values[j], &e);
+                if (rc != GW_OK)
+                    return gw_err_set(err, rc == GW_ENOMEM || rc == GW_EUNSUPPORTED ? rc : GW_EINVAL,
+                                      "%s: [%s] %s: %s", path ? path : "sweep", s ? "params" : "grid",
+                                      keys[i].name, e.msg);
+            }
+        }
+    }
+    return GW_OK;
+}
+
 /* A value naming a regular file: its content hash into cfg->inputs (once per
  * key and value). */
 static int add_input(gw_sweep_config *cfg, const char *key, const char *value, long *cap)
@@ -252,8 +317,10 @@ int gw_sweep_case_inputs_check(const gw_sweep_config *cfg, long k, gw_err *err)
         if (!case_reads(cfg, k, in))
             continue;
         unsigned long long fh = 0;
-        gw_err e;
-        if (gw_fnv1a64_file(in->value, in->key, &fh, &e) != GW_OK)
+        gw_err e = {{0}};
+        /* the reader's rules first: a file replaced by a sparse 200 GB one
+         * while the sweep ran was hashed whole after the next case */
+        if (input_readable(cfg, in->value, &e) != GW_OK || gw_fnv1a64_file(in->value, in->key, &fh, &e) != GW_OK)
             return gw_err_set(err, GW_EINVAL, "%s '%s' cannot be read any more while the sweep runs (%s)", in->key,
                               in->value, e.msg);
         if (fh != in->hash)

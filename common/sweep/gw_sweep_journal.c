@@ -44,27 +44,55 @@ static int jrow_cmp(const void *pa, const void *pb)
     return (a->line > b->line) - (a->line < b->line);
 }
 
-/* The journal or table: a regular file only (gw_input_read), NULL with errno set
- * (ENOENT when absent). */
-char *gw_sweep_slurp(const char *path, size_t *len, gw_err *err)
+/* The bytes a journal is read in: the buffer grows as they come, never to the
+ * size fstat claims at once (a 10 GB sparse journal had 10 GB allocated and
+ * read before a byte was looked at) */
+#define SLURP_CHUNK ((size_t)1 << 20)
+
+size_t gw_sweep_journal_bound(const gw_sweep_config *cfg)
+{
+    if (!cfg || cfg->ncolumns <= 0 || cfg->ncases <= 0)
+        return GW_SWEEP_JOURNAL_MAX;
+    /* the head: its lines, the "# grid" and "# param" lines (every name and
+     * value), the "# input" lines (the read_key values again, and a hash) */
+    double head = 4096.0 + GW_SWEEP_BUILD_MAX;
+    for (int s = 0; s < 2; s++) {
+        const gw_sweep_key *keys = s ? cfg->params : cfg->grid;
+        const int nk = s ? cfg->nparams : cfg->ngrid;
+        for (int i = 0; i < nk; i++)
+            for (int j = 0; keys[i].values && j < keys[i].nvalues; j++)
+                head += 2.0 * ((double)strlen(keys[i].name) + (keys[i].values[j] ? strlen(keys[i].values[j]) : 0) +
+                               64.0);
+    }
+    /* each case's row twice over (a row run again after its first copy was
+     * torn by a kill is one more), and the head twice */
+    const double b = 2.0 * head + 2.0 * gw_sweep_row_bound(cfg, cfg->ncolumns) * (double)cfg->ncases + SLURP_CHUNK;
+    return b < (double)GW_SWEEP_JOURNAL_MAX ? (size_t)b : GW_SWEEP_JOURNAL_MAX;
+}
+
+char *gw_sweep_slurp(const char *path, size_t max, size_t *len, gw_err *err)
 {
     struct stat st;
     if (stat(path, &st) != 0) {
         gw_err_set(err, GW_EIO, "%s: cannot read: %s", path, strerror(errno));
         return NULL;
     }
-    char *buf = NULL;
-    int rc = gw_input_read(path, "sweep journal", GW_SWEEP_JOURNAL_MAX, &buf, len, err);
+    FILE *fp = NULL;
+    int rc = gw_input_open(path, "sweep journal", &fp, err);
     if (rc != GW_OK) {
         /* what it is (a FIFO, a directory) is in err: it said "Invalid argument";
          * ENOMEM tells the caller it was memory, not the journal */
         errno = rc == GW_ENOMEM ? ENOMEM : EINVAL;
         return NULL;
     }
+    char *buf = gw_sweep_slurp_fd(fileno(fp), path, max, len, err);
+    const int e = errno;
+    fclose(fp);
+    errno = e;
     return buf;
 }
 
-char *gw_sweep_slurp_fd(int fd, const char *path, size_t *len, gw_err *err)
+char *gw_sweep_slurp_fd(int fd, const char *path, size_t max, size_t *len, gw_err *err)
 {
     struct stat st;
     errno = 0;
@@ -73,33 +101,70 @@ char *gw_sweep_slurp_fd(int fd, const char *path, size_t *len, gw_err *err)
         errno = EIO;
         return NULL;
     }
-    if ((unsigned long long)st.st_size > (unsigned long long)GW_SWEEP_JOURNAL_MAX) {
-        gw_err_set(err, GW_EINVAL, "sweep journal: '%s' is larger than %zu bytes", path, GW_SWEEP_JOURNAL_MAX);
+    if (max > GW_SWEEP_JOURNAL_MAX)
+        max = GW_SWEEP_JOURNAL_MAX;
+    if ((unsigned long long)st.st_size > (unsigned long long)max) {
+        gw_err_set(err, GW_EINVAL, "sweep journal '%s' is %llu bytes, more than this sweep's journal can hold (%zu "
+                   "bytes, its head and every case's row twice over): not its journal; move it away to start the "
+                   "sweep afresh", path, (unsigned long long)st.st_size, max);
         errno = EINVAL;
         return NULL;
     }
-    const size_t n = (size_t)st.st_size;
-    char *buf = malloc(n + 1);
-    if (!buf) {
-        gw_err_set(err, GW_ENOMEM, "sweep journal: out of memory reading '%s'", path);
-        errno = ENOMEM;
-        return NULL;
-    }
-    size_t got = 0;
-    errno = 0;
-    while (got < n) {
-        const ssize_t r = pread(fd, buf + got, n - got, (off_t)got);
+    char *buf = NULL;
+    size_t n = 0, cap = 0;
+    for (;;) {
+        if (n + SLURP_CHUNK + 1 > cap) {
+            /* doubled, never past what max needs */
+            size_t nc = cap ? 2 * cap : SLURP_CHUNK + 1;
+            if (nc > max + SLURP_CHUNK + 1)
+                nc = max + SLURP_CHUNK + 1;
+            if (nc < n + SLURP_CHUNK + 1)
+                nc = n + SLURP_CHUNK + 1;
+            char *nb = realloc(buf, nc);
+            if (!nb) {
+                free(buf);
+                gw_err_set(err, GW_ENOMEM, "sweep journal: out of memory reading '%s'", path);
+                errno = ENOMEM;
+                return NULL;
+            }
+            buf = nb;
+            cap = nc;
+        }
+        errno = 0;
+        const ssize_t r = pread(fd, buf + n, SLURP_CHUNK, (off_t)n);
         if (r < 0 && errno == EINTR)
             continue;
-        if (r <= 0)
+        if (r < 0) {
+            const int e = errno;
+            free(buf);
+            gw_err_set(err, GW_EIO, "%s: cannot read: %s", path, strerror(e));
+            errno = EIO;
+            return NULL;
+        }
+        if (r == 0)
             break;
-        got += (size_t)r;
-    }
-    if (got < n) {
-        free(buf);
-        gw_err_set(err, GW_EIO, "%s: cannot read: %s", path, errno ? strerror(errno) : "cut short");
-        errno = EIO;
-        return NULL;
+        /* a NUL byte: C strings end there, and the rows after it were
+         * misread (cut off as a torn row, or the journal refused as edited) */
+        const char *z = memchr(buf + n, '\0', (size_t)r);
+        if (z) {
+            long line = 1;
+            for (const char *q = buf; q < z; q++)
+                line += *q == '\n';
+            gw_err_set(err, GW_EINVAL, "sweep journal '%s': line %ld (byte %zu): a NUL byte, which no journal "
+                       "holds (binary data, or a file whose end a crash left zeroed); move it away to start the "
+                       "sweep afresh", path, line, (size_t)(z - buf) + 1);
+            free(buf);
+            errno = EINVAL;
+            return NULL;
+        }
+        n += (size_t)r;
+        if (n > max) { /* grown since fstat */
+            free(buf);
+            gw_err_set(err, GW_EINVAL, "sweep journal '%s' is more than %zu bytes, more than this sweep's journal "
+                       "can hold: not its journal; move it away to start the sweep afresh", path, max);
+            errno = EINVAL;
+            return NULL;
+        }
     }
     buf[n] = '\0';
     *len = n;
@@ -394,7 +459,7 @@ static int journal_keep(int dirfd, int *fdp, const char *dir, const char *path, 
                         long long size, int *kept, gw_err *err)
 {
     size_t len = 0;
-    char *text = h ? h->text : gw_sweep_slurp_fd(*fdp, path, &len, err);
+    char *text = h ? h->text : gw_sweep_slurp_fd(*fdp, path, GW_SWEEP_JOURNAL_MAX, &len, err);
     if (!text)
         return errno == ENOMEM ? GW_ENOMEM : GW_EIO;
     if (h)
@@ -517,7 +582,7 @@ int gw_sweep_journal_held(int dirfd, int *fdp, const char *dir, int *restored, g
             text[len = h->len] = '\0';
         } else if (h) {
             return gw_err_set(err, GW_ENOMEM, "%s: out of memory putting the journal back", path);
-        } else if (!(text = gw_sweep_slurp_fd(*fdp, path, &len, err))) {
+        } else if (!(text = gw_sweep_slurp_fd(*fdp, path, GW_SWEEP_JOURNAL_MAX, &len, err))) {
             return errno == ENOMEM ? GW_ENOMEM : GW_EIO;
         }
         if (len == 0 || text[len - 1] != '\n') {
@@ -618,7 +683,7 @@ static int journal_access(const char *dir, const gw_sweep_config *cfg, char *don
     if (rc == GW_OK && dirfdp && fd >= 0) {
         /* a sweep's: what its journal holds kept, checked before each row */
         size_t len = 0;
-        char *text = gw_sweep_slurp_fd(fd, path, &len, err);
+        char *text = gw_sweep_slurp_fd(fd, path, gw_sweep_journal_bound(cfg), &len, err);
         if (!text) {
             close(fd);
             close(dfd);
@@ -838,7 +903,8 @@ static int journal_check(const char *path, int dfd, const char *dir, const char 
 {
     size_t len = 0;
     /* through the journal opened (fd), or what is there instead named */
-    char *buf = fd >= 0 ? gw_sweep_slurp_fd(fd, path, &len, err) : gw_sweep_slurp(path, &len, err);
+    const size_t max = gw_sweep_journal_bound(cfg);
+    char *buf = fd >= 0 ? gw_sweep_slurp_fd(fd, path, max, &len, err) : gw_sweep_slurp(path, max, &len, err);
     if (!buf) /* a FIFO, a directory, gone: named in err; or out of memory */
         return errno == ENOMEM ? GW_ENOMEM : GW_EINVAL;
     struct stat a, b;

@@ -62,7 +62,7 @@ int gw_sweep_write_table_at(int dfd, const char *dir, const gw_sweep_config *cfg
     if (jfd < 0)
         return gw_err_set(err, GW_EIO, "%s: cannot read: %s", path, strerror(errno));
     size_t len = 0;
-    char *buf = gw_sweep_slurp_fd(jfd, path, &len, err);
+    char *buf = gw_sweep_slurp_fd(jfd, path, gw_sweep_journal_bound(cfg), &len, err);
     close(jfd);
     if (!buf)
         return errno == ENOMEM ? GW_ENOMEM : GW_EIO;

@@ -107,7 +107,7 @@ int layer_sample_particle_check(double width, double rm, double x, double y, dou
     if (rc != GW_OK)
         return rc;
     if (!(r >= SAMPLE_R_LO * rm && r <= SAMPLE_R_HI * rm))
-        return gw_err_set(err, status, "sample '%s': %s: radius r = %g m is outside [%g, %g] R_m (R_m = %g m)",
+        return gw_err_set(err, status, "sample '%s': %s: radius %g m is outside [%g, %g] R_m (R_m = %g m)",
                           path, where, r, SAMPLE_R_LO, SAMPLE_R_HI, rm);
     if (x - r < -2e-2 * r || x + r > width + 2e-2 * r || y - r < -2e-2 * r)
         return gw_err_set(err, status, "sample '%s': %s: particle outside the box (0 <= x <= %g, y >= 0) "

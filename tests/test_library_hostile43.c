@@ -55,8 +55,8 @@ typedef struct bad_row {
 static const bad_row rows[] = {
     {"the discs as built (control)", -1, 0, 0, 0, NULL, NULL},
     {"n = 2e7 over arrays of 3", 3, 0, 2e7, 0, "n = 20000000 particles (in [1, 10000000]", "20000000"},
-    {"r of 1e-5 R_m", 2, 1, 1e-6, 0, "particle 1: radius r = 1e-06 m is outside [0.001, 1000] R_m",
-     "radius r = 1e-06 m is outside [0.001, 1000] R_m"},
+    {"r of 1e-5 R_m", 2, 1, 1e-6, 0, "particle 1: radius 1e-06 m is outside [0.001, 1000] R_m",
+     "radius 1e-06 m is outside [0.001, 1000] R_m"},
     {"r NaN (a guard)", 2, 2, NAN, 0, "particle 2: r = nan m is not a finite number", "line"},
     {"y 1e7 R_m high", 1, 2, 1e6, 0, "particle 2: y = 1e+06 m is above 1e+06 R_m", "y = 1e+06 m is above 1e+06 R_m"},
     {"x outside the box, walls removed", 0, 2, 2.0, 1, "particle 2: particle outside the box (0 <= x <= 1, y >= 0)",

@@ -31,7 +31,7 @@ GW_EINVAL, GW_EFORMAT = -1, -4
 ROWS = [
     ("control", None, 0, 0, None),
     ("n 2e7", "n", 0, 20000000, "20000000"),
-    ("r 1e-5 R_m", "r", 1, 1e-6, "radius r = 1e-06 m is outside [0.001, 1000] R_m"),
+    ("r 1e-5 R_m", "r", 1, 1e-6, "radius 1e-06 m is outside [0.001, 1000] R_m"),
     ("y 1e7 R_m", "y", 2, 1e6, "y = 1e+06 m is above 1e+06 R_m"),
     ("discs at one place", "x", 1, 0.3, "particles 0 and 1 overlap by 2 R_p"),
     ("half a radius inside", "x", 1, 0.45, "particles 0 and 1 overlap by 0.5 R_p"),

@@ -404,7 +404,7 @@ double gw_layer_impact_dem_dt(const gw_layer_sample *s, const gw_layer_params *l
 {
     /* any sample or impact the run refuses (gw_layer_impact_check: before
      * session 43 the sample's form only, and a disc outside the box, two discs
-     * at one place or a speed of 0 got a step) */
+     * at one place got a step, a speed of 0 an infinite one) */
     if (!s || !lp || !ip || gw_layer_impact_check(s, ip, NULL) != GW_OK)
         return NAN;
     double rmin = INFINITY;

@@ -672,8 +672,9 @@ int layer_springs_check(const gw_layer_sample *s, const char *path, const long *
  * no two particles of different bodies overlapping by more than 0.05 R_p.
  * status naming the field and the index, "sample 'PATH': particle 17: r =
  * nan m is not a finite number". layer_sample_shape_check is it with
- * GW_EINVAL: the impact's checks, its step, the pile's hash, the porosity
- * and the settling's checks take it, as the reader and the writer do. */
+ * GW_EINVAL: the impact's checks, its step, the porosity and the settling's
+ * checks take it, as the reader and the writer do (the pile's hash its form
+ * only, layer_sample_form_check). */
 int layer_sample_limits_check(const gw_layer_sample *s, const char *path, int status, gw_err *err);
 /* Its first part, the form of a sample (n and its arrays, width and rm
  * finite and > 0, each particle finite with r > 0, body ids in [0, n), the

@@ -507,8 +507,10 @@ int gw_layer_make_result_warnings(const gw_layer_make_result *r, double t_max, c
  * aliased on lattices). In [0, 1]; NaN when the window is empty (width or h
  * not positive and finite), the sample counts discs without its x, y or r,
  * holds a disc of a coordinate not finite or a radius not > 0 (such a disc
- * was left out before session 34: the porosity of the others), or an
- * allocation fails. */
+ * was left out before session 34: the porosity of the others), fails any
+ * other limit the sample reader applies (n above 1e7, a radius outside
+ * [1e-3, 1e3] R_m, a disc outside the box or deep inside another: a number
+ * before session 43), or an allocation fails. */
 double gw_layer_sample_porosity(const gw_layer_sample *s);
 
 /* --------------------------------------------------------------- impact ---- */
@@ -661,7 +663,12 @@ void gw_layer_impact_result_free(gw_layer_impact_result *r);
  * inside the walls unless ip->remove_walls, its clumps connected and its
  * springs (unless ip->zero_springs) as the sample reader takes them. Before
  * session 35 a particle of a NaN or infinite coordinate or radius passed the
- * check and was refused by the run only. */
+ * check and was refused by the run only. Since session 43 the sample is held
+ * to every limit the reader applies (n in [1, 1e7], rm and width within their
+ * scales, each radius within [1e-3, 1e3] R_m, each disc inside the box to
+ * 0.02 r and at most 1e6 R_m high, no two discs more than 0.05 R_p inside
+ * each other), walls or none, the message naming the field and the index;
+ * gw_layer_impact_rest_check and gw_layer_impact_gap_check take it too. */
 int gw_layer_impact_check(const gw_layer_sample *s, const gw_layer_impact_params *ip,
                           gw_err *err);
 
@@ -739,9 +746,10 @@ double gw_layer_settled_load_ratio(const gw_layer_sample *s, const gw_layer_para
  * trajectory, hence the outcome, does not depend on dt_out. When ip->dt_out is
  * not a multiple of that step (gw_layer_impact_dt_divides), the largest divisor
  * of it below: dt_out / ceil(dt_out / step), so that every sample still ends a
- * step and the steps stay equal. s. NaN for a sample no run takes
- * (gw_layer_impact_check's form) or a radius not finite and > 0 (a NaN
- * radius gave the other discs' step before session 34). */
+ * step and the steps stay equal. s. NaN for a sample or an impact that
+ * gw_layer_impact_check refuses (before session 43 the sample's form only: a
+ * disc outside the box or two discs at one place got a step) or a radius not
+ * finite and > 0 (a NaN radius gave the other discs' step before session 34). */
 #define GW_LAYER_DEM_STEPS 100
 #define GW_LAYER_DEM_BASE 1e-5
 double gw_layer_impact_dem_dt(const gw_layer_sample *s, const gw_layer_params *lp,
@@ -818,7 +826,8 @@ int gw_layer_sweep_run_part(int nkeys, const char *const *names, const char *con
  * run only to rounding (the summation order of the contact forces); but the
  * same discs grouped into other clumps are another pile. Nor the records a
  * run does not read (seed, porosity, volume_ratio). 0 for s NULL, for a
- * sample no run takes (gw_layer_impact_check's form: n < 1, x, y or r NULL, a
+ * sample no run takes (the form of gw_layer_impact_check's sample, not its
+ * other limits: n < 1 or above 1e7, x, y or r NULL, a
  * particle of x, y or r not finite or r <= 0 (hashed before session 35), a
  * body id outside [0, n), a negative n_springs, springs counted without their
  * array or a spring's pair out of range; before session 34 such a sample was

@@ -153,6 +153,8 @@ int gw_layer_impact_check(const gw_layer_sample *smp, const gw_layer_impact_para
 {
     if (!smp || !p)
         return gw_err_set(err, GW_EINVAL, "gw_layer_impact_check: %s is NULL", !smp ? "s" : "ip");
+    /* the limits every sample is held to (the reader's: a disc outside the
+     * box, of a radius 1e6 R_m, or two at one place ran before session 43) */
     int rc = layer_sample_shape_check(smp, "s", err);
     if (rc != GW_OK)
         return rc;
@@ -329,7 +331,10 @@ int gw_layer_impact_gap_check(const gw_layer_sample *smp, const gw_layer_impact_
 {
     if (!smp || !p)
         return gw_err_set(err, GW_EINVAL, "gw_layer_impact_gap_check: %s is NULL", !smp ? "s" : "ip");
-    int rc = gw_layer_impact_fall_check(p, g, err);
+    /* (its rm, read below: a NaN rm passed every gap before session 43) */
+    int rc = layer_sample_shape_check(smp, "s", err);
+    if (rc == GW_OK)
+        rc = gw_layer_impact_fall_check(p, g, err);
     if (rc != GW_OK)
         return rc;
     /* The block is lowered vertically onto its target at x, then sent along
@@ -441,7 +446,10 @@ int layer_rest_check(const gw_layer_sample *smp, const gw_layer_params *lp, int 
 double gw_layer_impact_dem_dt(const gw_layer_sample *s, const gw_layer_params *lp,
                               const gw_layer_impact_params *ip)
 {
-    if (!s || !lp || !ip || layer_sample_shape_check(s, "s", NULL) != GW_OK)
+    /* any sample or impact the run refuses (gw_layer_impact_check: before
+     * session 43 the sample's form only, and a disc outside the box, two discs
+     * at one place got a step, a speed of 0 an infinite one) */
+    if (!s || !lp || !ip || gw_layer_impact_check(s, ip, NULL) != GW_OK)
         return NAN;
     double rmin = INFINITY;
     for (int i = 0; i < s->n; i++) {

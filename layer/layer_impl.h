@@ -674,14 +674,27 @@ int layer_clump_shape(double req, double aspect, double angle, double *ox, doubl
  * "sample 'PATH': line L: ..." (lines[k] the file's line of spring k; NULL:
  * "spring at index k"), GW_ENOMEM. */
 int layer_springs_check(const gw_layer_sample *s, const char *path, const long *lines, int status, gw_err *err);
-/* A sample built in memory as a run reads it, before any of it is read
- * (layer_sample_check.c): width and rm finite and > 0, n >= 1 particles with
- * their x, y and r, each finite with r > 0 (layer_particle_check), body ids in
- * [0, n), n_springs >= 0 and, above 0, its springs array with each pair in
- * range (a in [0, n), b in [0, n) or a wall, a != b). GW_EINVAL naming the
- * field, "sample 'PATH': ...". Shared by the impact's checks and the pile's
- * hash (which hashed what it found: ids outside [0, n) as bodies of their
- * own, springs counted without their array as none). */
+/* The limits every sample is held to, read from a file, written or built in
+ * memory (layer_sample_check.c): n in [1, 1e7] with its x, y and r, the
+ * header's fields (width, rm and their scales, volume_ratio, porosity, seed,
+ * mass laws), each particle finite, of radius within [1e-3, 1e3] R_m, inside
+ * the box to 0.02 r and at most 1e6 R_m high, body ids in [0, n) with each
+ * clump connected, n_springs >= 0 with its array and each pair in range, and
+ * no two particles of different bodies overlapping by more than 0.05 R_p.
+ * status naming the field and the index, "sample 'PATH': particle 17: r =
+ * nan m is not a finite number". layer_sample_shape_check is it with
+ * GW_EINVAL: the impact's checks, its step, the porosity and the settling's
+ * checks take it, as the reader and the writer do (the pile's hash its form
+ * only, layer_sample_form_check). */
+int layer_sample_limits_check(const gw_layer_sample *s, const char *path, int status, gw_err *err);
+/* Its first part, the form of a sample (n and its arrays, width and rm
+ * finite and > 0, each particle finite with r > 0, body ids in [0, n), the
+ * springs' pairs in range): what the pile's hash needs to read a sample. */
+int layer_sample_form_check(const gw_layer_sample *s, const char *path, int status, gw_err *err);
+/* The porosity of s without its checks (gw_layer_sample_porosity checks s
+ * first): for the reader's porosity check and for layer-make, whose sample
+ * is checked after. */
+double layer_sample_porosity_of(const gw_layer_sample *s);
 int layer_sample_shape_check(const gw_layer_sample *s, const char *path, gw_err *err);
 /* The springs of L's contacts (its state's F_t, clamped to the cap) as
  * displacements at the overlaps of the discs x, y, r of a box of width

@@ -528,7 +528,7 @@ static void finish(const gw_layer_params *lp, const gw_layer_make_params *m, con
                                       .gravity = lp->gravity, .mass_law = lp->mass_law,
                                       .clump_mass = lp->clump_mass, .unsettled = !conv};
     res->max_overlap = max_overlap(b, n, lp->width, NULL);
-    out->porosity = gw_layer_sample_porosity(out);
+    out->porosity = layer_sample_porosity_of(out); /* (checked with the sample, settled_readable) */
     res->porosity = out->porosity;
     res->t_settle = t;
     res->ke_final = ke;

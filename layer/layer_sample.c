@@ -609,16 +609,14 @@ int gw_layer_sample_write(const gw_layer_sample *s, const char *path, const char
     if (!s || !path) /* as gw_layer_sample_read (the path's name was read: SIGSEGV) */
         return gw_err_set(err, GW_EINVAL, "gw_layer_sample_write: %s is NULL", !s ? "s" : "path");
     int rc = gw_layer_sample_format_check(path, err);
+    /* the limits every sample is held to (the reader's and the in-memory
+     * calls' one check: two discs deep inside each other were written, and
+     * the file then refused on reading), then the header against its
+     * particles (grading, box, porosity) */
+    if (rc == GW_OK)
+        rc = layer_sample_limits_check(s, path, GW_EINVAL, err);
     if (rc == GW_OK)
         rc = layer_sample_check(s, path, NULL, GW_EINVAL, err);
-    if (rc == GW_OK) { /* the reader's last check too: two discs deep inside each
-                          other were written, and the file then refused on reading */
-        char what[4200];
-        gw_snprintf(what, sizeof what, "sample '%s'", path);
-        rc = layer_overlaps_check(s->n, s->x, s->y, s->r, s->body, what, err);
-        if (rc == GW_EFORMAT)
-            rc = GW_EINVAL;
-    }
     if (rc == GW_OK) /* and its springs, as the reader would find them */
         rc = layer_springs_check(s, path, NULL, GW_EINVAL, err);
     if (rc != GW_OK)
@@ -768,11 +766,8 @@ int gw_layer_sample_read(const char *path, gw_layer_sample *s, gw_err *err)
             s->content_hash = t.hash;
         fclose(t.fp);
     }
-    if (rc == GW_OK) {
-        char what[4200];
-        gw_snprintf(what, sizeof what, "sample '%s'", path);
-        rc = layer_overlaps_check(s->n, s->x, s->y, s->r, s->body, what, err);
-    }
+    if (rc == GW_OK) /* the limits every sample is held to, in memory too: its deep overlaps last */
+        rc = layer_sample_limits_check(s, path, GW_EFORMAT, err);
     /* the springs last, under the settling's record (its Coulomb bound): a
      * file whose particles are refused says so first */
     if (rc == GW_OK)

@@ -80,68 +80,119 @@ int layer_sample_header_check(const gw_layer_sample *s, const char *path, int st
     return GW_OK;
 }
 
+/* x, y and r finite, r > 0: the message names the field. */
+static int particle_form(double x, double y, double r, const char *path, const char *where, int status, gw_err *err)
+{
+    static const char *const name[3] = {"x", "y", "r"};
+    const double v[3] = {x, y, r};
+    for (int k = 0; k < 3; k++)
+        if (!isfinite(v[k]))
+            return gw_err_set(err, status, "sample '%s': %s: %s = %g m is not a finite number", path, where,
+                              name[k], v[k]);
+    if (!(r > 0))
+        return gw_err_set(err, status, "sample '%s': %s: radius r = %g m must be positive", path, where, r);
+    return GW_OK;
+}
+
 /* One particle: finite, r > 0 and within [1e-3, 1e3] R_m, inside the box
  * (0 <= x <= width, 0 <= y <= 1e6 R_m) up to the 0.02 R overlap that settling
- * under gravity leaves against the walls. where: "line 12" or "particle 3". */
+ * under gravity leaves against the walls; the message names the field. where:
+ * "line 12", "particle at index 3" (HDF5) or "particle 3" (in memory). The
+ * one particle check of the readers, the writers and every call that takes a
+ * sample built in memory (layer_sample_limits_check). */
 int layer_sample_particle_check(double width, double rm, double x, double y, double r, const char *path,
                           const char *where, int status, gw_err *err)
 {
-    if (!isfinite(x) || !isfinite(y) || !isfinite(r))
-        return gw_err_set(err, status, "sample '%s': %s: x, y, r must be finite numbers (got %g %g %g)",
-                          path, where, x, y, r);
-    if (!(r > 0))
-        return gw_err_set(err, status, "sample '%s': %s: radius %g m must be positive", path, where, r);
+    int rc = particle_form(x, y, r, path, where, status, err);
+    if (rc != GW_OK)
+        return rc;
     if (!(r >= SAMPLE_R_LO * rm && r <= SAMPLE_R_HI * rm))
-        return gw_err_set(err, status, "sample '%s': %s: radius %g m is outside [%g, %g] R_m (R_m = %g m)", path,
-                          where, r, SAMPLE_R_LO, SAMPLE_R_HI, rm);
+        return gw_err_set(err, status, "sample '%s': %s: radius %g m is outside [%g, %g] R_m (R_m = %g m)",
+                          path, where, r, SAMPLE_R_LO, SAMPLE_R_HI, rm);
     if (x - r < -2e-2 * r || x + r > width + 2e-2 * r || y - r < -2e-2 * r)
         return gw_err_set(err, status, "sample '%s': %s: particle outside the box (0 <= x <= %g, y >= 0) "
-                          "beyond the 0.02 R overlap tolerance", path, where, width);
+                          "beyond the 0.02 R overlap tolerance (x = %g, y = %g, r = %g m)", path, where, width, x,
+                          y, r);
     if (!(y <= SAMPLE_EXTENT_RM * rm))
         return gw_err_set(err, status, "sample '%s': %s: y = %g m is above %g R_m (R_m = %g m)", path, where, y,
                           SAMPLE_EXTENT_RM, rm);
     return GW_OK;
 }
 
-int layer_sample_shape_check(const gw_layer_sample *s, const char *path, gw_err *err)
+/* The form of a sample, what must hold before any of it is read: n in
+ * [1, SAMPLE_NMAX] with its arrays, width and rm finite and positive, each
+ * particle finite with r > 0, body ids in [0, n), the springs' pairs in range
+ * (n_springs >= 0, its array when above 0). */
+int layer_sample_form_check(const gw_layer_sample *s, const char *path, int status, gw_err *err)
 {
-    if (s->n < 1 || !s->x || !s->y || !s->r)
-        return gw_err_set(err, GW_EINVAL, "sample '%s': n = %d particles%s%s%s (at least one, with x, y and r)",
-                          path, s->n, s->x ? "" : ", x NULL", s->y ? "" : ", y NULL", s->r ? "" : ", r NULL");
+    if (s->n < 1 || s->n > SAMPLE_NMAX || !s->x || !s->y || !s->r)
+        return gw_err_set(err, status, "sample '%s': n = %d particles%s%s%s (in [1, %ld], with x, y and r)",
+                          path, s->n, s->x ? "" : ", x NULL", s->y ? "" : ", y NULL", s->r ? "" : ", r NULL",
+                          SAMPLE_NMAX);
     /* the box and the block's scale (rb-rm R_m): an rm of 0 passed the
      * impact's check and the run refused its block of radius 0; a NaN or
      * negative rm, or a NaN or infinite width, was told "x: no soil particle
      * lies under the block" */
     if (!isfinite(s->width) || !(s->width > 0))
-        return gw_err_set(err, GW_EINVAL, "sample '%s': width %g m must be finite and positive", path, s->width);
+        return gw_err_set(err, status, "sample '%s': width %g m must be finite and positive", path, s->width);
     if (!isfinite(s->rm) || !(s->rm > 0))
-        return gw_err_set(err, GW_EINVAL, "sample '%s': rm %g m must be finite and positive", path, s->rm);
-    /* each particle as gw_layer_create takes it (no walls here: the impact's
-     * check adds those the run keeps): a NaN coordinate passed the impact's
-     * check, which the run refused later, and was hashed as a pile */
-    char what[4200];
-    gw_snprintf(what, sizeof what, "sample '%s': particle", path);
+        return gw_err_set(err, status, "sample '%s': rm %g m must be finite and positive", path, s->rm);
+    char where[48];
     for (int i = 0; i < s->n; i++) {
-        const gw_layer_body b = {.x = s->x[i], .y = s->y[i], .r = s->r[i]};
-        const int rc = layer_particle_check(&b, i, 0, s->width, what, err);
+        gw_snprintf(where, sizeof where, "particle %d", i);
+        const int rc = particle_form(s->x[i], s->y[i], s->r[i], path, where, status, err);
         if (rc != GW_OK)
             return rc;
     }
     for (int i = 0; s->body && i < s->n; i++)
         if (s->body[i] < 0 || s->body[i] >= s->n)
-            return gw_err_set(err, GW_EINVAL, "sample '%s': particle %d: body id %d is outside [0, %d)", path, i,
+            return gw_err_set(err, status, "sample '%s': particle %d: body id %d is outside [0, %d)", path, i,
                               s->body[i], s->n);
     if (s->n_springs < 0)
-        return gw_err_set(err, GW_EINVAL, "sample '%s': n_springs = %d is negative", path, s->n_springs);
+        return gw_err_set(err, status, "sample '%s': n_springs = %d is negative", path, s->n_springs);
     if (s->n_springs > 0 && !s->springs)
-        return gw_err_set(err, GW_EINVAL, "sample '%s': n_springs = %d with springs NULL", path, s->n_springs);
+        return gw_err_set(err, status, "sample '%s': n_springs = %d with springs NULL", path, s->n_springs);
     for (int k = 0; k < s->n_springs; k++) {
         const int a = s->springs[k].a, b = s->springs[k].b;
         if (a < 0 || a >= s->n || b >= s->n || b < GW_LAYER_SPRING_BOTTOM || a == b)
-            return gw_err_set(err, GW_EINVAL, "sample '%s': spring at index %d: spring %d %d: the pair must be two "
+            return gw_err_set(err, status, "sample '%s': spring at index %d: spring %d %d: the pair must be two "
                               "particles in [0, %d) or a particle and a wall", path, k, a, b, s->n);
     }
     return GW_OK;
+}
+
+/* The limits every sample is held to, read from a file, written or built in
+ * memory: its form (layer_sample_form_check), the header's fields
+ * (layer_sample_header_check), each particle (layer_sample_particle_check:
+ * its radius's scale, inside the box), the clumps of a clump sample
+ * (layer_bodies_check), and no two particles of different bodies deep
+ * inside each other (layer_overlaps_check). Before session 43 a sample built
+ * in memory was held to its form only: a disc outside the box, of a radius
+ * of 1e6 R_m, or two discs at one place ran (the overlap injecting energy)
+ * or had a porosity, where the same sample written to a file was refused. */
+int layer_sample_limits_check(const gw_layer_sample *s, const char *path, int status, gw_err *err)
+{
+    int rc = layer_sample_form_check(s, path, status, err);
+    if (rc == GW_OK)
+        rc = layer_sample_header_check(s, path, status, err);
+    char where[48];
+    for (int i = 0; i < s->n && rc == GW_OK; i++) {
+        gw_snprintf(where, sizeof where, "particle %d", i);
+        rc = layer_sample_particle_check(s->width, s->rm, s->x[i], s->y[i], s->r[i], path, where, status, err);
+    }
+    if (rc != GW_OK)
+        return rc;
+    char what[4200];
+    gw_snprintf(what, sizeof what, "sample '%s'", path);
+    if ((rc = layer_bodies_check(s->n, s->x, s->y, s->r, s->body, what, status, err)) != GW_OK)
+        return rc;
+    rc = layer_overlaps_check(s->n, s->x, s->y, s->r, s->body, what, err);
+    return rc == GW_EFORMAT ? status : rc; /* (the message is the check's) */
+}
+
+int layer_sample_shape_check(const gw_layer_sample *s, const char *path, gw_err *err)
+{
+    return layer_sample_limits_check(s, path, GW_EINVAL, err);
 }
 
 /* The body ids of a clump sample (none: GW_OK), the message naming the sample. */
@@ -367,7 +418,7 @@ static int check_porosity(const gw_layer_sample *s, const char *path, const hdr_
 {
     if (isnan(s->porosity))
         return GW_OK;
-    const double tol = 2e-3, p = gw_layer_sample_porosity(s);
+    const double tol = 2e-3, p = layer_sample_porosity_of(s);
     if (isnan(p)) /* an allocation failed: the window is never empty here */
         return gw_err_set(err, GW_ENOMEM, "sample '%s': out of memory measuring its porosity", path);
     if (fabs(p - s->porosity) <= tol)
@@ -413,6 +464,6 @@ int layer_sample_readable(const gw_layer_sample *s, const char *what, gw_err *er
 {
     int rc = layer_sample_check(s, what, NULL, GW_EFORMAT, err);
     if (rc == GW_OK)
-        rc = layer_overlaps_check(s->n, s->x, s->y, s->r, s->body, what, err);
+        rc = layer_sample_limits_check(s, what, GW_EFORMAT, err);
     return rc == GW_OK ? layer_springs_check(s, what, NULL, GW_EFORMAT, err) : rc;
 }

@@ -72,7 +72,7 @@ static unsigned long long disc_hash(const gw_layer_sample *s, int i)
 }
 
 /* The sum of the bodies' B_b into *sum; GW_ENOMEM when the bodies of a clump
- * sample cannot be gathered. Body ids in [0, n) (layer_sample_shape_check). */
+ * sample cannot be gathered. Body ids in [0, n) (layer_sample_form_check). */
 static int bodies_sum(const gw_layer_sample *s, unsigned long long *sum)
 {
     *sum = 0;
@@ -120,7 +120,7 @@ int layer_sample_pile_hash(const gw_layer_sample *s, unsigned long long *out)
     /* a sample no run takes is no pile: its x, y or r NULL was read (SIGSEGV),
      * a body id outside [0, n) hashed as a body of its own and springs counted
      * without their array as none, each the hash of another sample */
-    if (layer_sample_shape_check(s, "s", NULL) != GW_OK)
+    if (layer_sample_form_check(s, "s", GW_EINVAL, NULL) != GW_OK)
         return GW_EINVAL;
     unsigned long long sum = 0;
     if (bodies_sum(s, &sum) != GW_OK)

@@ -184,7 +184,16 @@ static int circle_arcs(const double *x, const double *y, const double *r, const 
 
 double gw_layer_sample_porosity(const gw_layer_sample *s)
 {
-    /* a sample counted without its arrays (filled by hand): NaN, not a NULL read */
+    /* a sample counted without its arrays (filled by hand): NaN, not a NULL
+     * read; and any sample the reader would refuse (before session 43 a disc
+     * outside the box, or two discs at one place, gave a number) */
+    if (!s || layer_sample_limits_check(s, "s", GW_EINVAL, NULL) != GW_OK)
+        return NAN;
+    return layer_sample_porosity_of(s);
+}
+
+double layer_sample_porosity_of(const gw_layer_sample *s)
+{
     if (!s || s->n < 0 || (s->n > 0 && (!s->x || !s->y || !s->r)))
         return NAN;
     double h = 0;

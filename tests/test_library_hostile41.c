@@ -79,9 +79,15 @@ static const bad_row bad_rows[] = {
     {"r inf", 2, INFINITY, 0, "particle 1: r = inf m is not a finite number"},
     {"r 0", 2, 0, 0, "particle 1: radius r = 0 m must be positive"},
     {"r < 0", 2, -0.1, 0, "particle 1: radius r = -0.1 m must be positive"},
-    {"x < 0 inside walls", 0, -0.05, 0, "particle 1: centre (-0.05, 0.1) m outside the walls"},
-    {"x > width inside walls", 0, 1.05, 0, "particle 1: centre (1.05, 0.1) m outside the walls"},
-    {"y < 0 inside walls", 1, -0.05, 0, "particle 1: centre (0.5, -0.05) m outside the walls"},
+    /* (the walls' message before session 43: now the box every sample is
+     * held to, as the reader's, walls or none) */
+    {"x < 0 inside walls", 0, -0.05, 0, "particle 1: particle outside the box (0 <= x <= 1, y >= 0) beyond the "
+                                        "0.02 R overlap tolerance (x = -0.05, y = 0.1, r = 0.1 m)"},
+    {"x > width inside walls", 0, 1.05, 0, "particle 1: particle outside the box (0 <= x <= 1, y >= 0) beyond the "
+                                           "0.02 R overlap tolerance (x = 1.05, y = 0.1, r = 0.1 m)"},
+    {"y < 0 inside walls", 1, -0.05, 0, "particle 1: particle outside the box (0 <= x <= 1, y >= 0) beyond the "
+                                        "0.02 R overlap tolerance (x = 0.5, y = -0.05, r = 0.1 m)"},
+    {"x < 0, walls removed", 0, -0.05, 1, "particle 1: particle outside the box"},
     {"clump of discs apart", 3, 0, 0, "body 0: its 2 particles do not overlap or touch"},
     {"spring of NaN displacement", 4, NAN, 0, "spring 0 1: displacement nan is not a finite number"},
     /* the header: rm 0 passed the check, the run refused its block of radius
@@ -140,8 +146,9 @@ static int check_and_run_agree(void)
         }
     }
     EXPECT(bad == 0);
-    /* controls: the sample as built runs; a centre outside the box runs when
-     * the run keeps no walls (gw_layer_create checks the walls it has) */
+    /* controls: the sample as built runs; a disc against a wall within the
+     * 0.02 r the reader allows runs with the walls removed (a centre outside
+     * the box ran so before session 43: now refused as the reader refuses it) */
     hand_sample h;
     hand_init(&h);
     gw_layer_impact_params ip = short_impact();
@@ -150,7 +157,7 @@ static int check_and_run_agree(void)
     EXPECT(gw_layer_impact_check(&h.s, &ip, &e) == GW_OK);
     EXPECT(gw_layer_impact(&h.s, &lp, &ip, gw_solver_verlet, &sp, &res, &e) == GW_OK && res.ns > 0);
     gw_layer_impact_result_free(&res);
-    h.x[0] = -0.05;
+    h.x[0] = 0.099;
     ip.remove_walls = 1;
     EXPECT(gw_layer_impact_check(&h.s, &ip, &e) == GW_OK);
     EXPECT(gw_layer_impact(&h.s, &lp, &ip, gw_solver_verlet, &sp, &res, &e) == GW_OK && res.ns > 0);

@@ -15,6 +15,15 @@
 #    layer (its gap of 1e-06 m takes at least 5e-08 s at 20 m/s ...)", exit
 #    2, nothing written. Controls: a t-max after the arrival runs (exit 0),
 #    an oblique one between gap/v and gap/v_n too (its target off x).
+#  2 A bead its guide stops on the wall. chain with a guide friction that
+#    stops bead 1 inside its overlap (--guide-friction 1 or --guide-viscous
+#    100 at --vimp 1e-3: the drag, the Coulomb term regularised near rest,
+#    lets the overlap creep back without end) failed at every t-max with
+#    "bead 1 still on the wall at t_max = ... s", naming no input. The run's
+#    end (collide_after, shared by chain, the studies, sweeps and Python) now
+#    names the guide's friction and its values when the bead has stopped
+#    there, exit 1 as before; a t-max that cuts a moving bead short keeps the
+#    plain line (a longer t-max does end that one).
 # Checks that fail on the code before: see docs/tests.md.
 # shellcheck source=refusal_lib.sh
 . "$2/tests/refusal_lib.sh"
@@ -61,5 +70,30 @@ refused("Python layer_impact(t_max=1e-8): before the block reaches the layer",
 refused("Python layer_impact(gap=0.03, t_max=0.001)", ["t_max: 0.001 s ends before the block can reach the layer"],
         granwave.layer_impact, sample="s20.txt", gap=0.03, t_max=0.001)
 PYEOF
+
+# --- 2 a bead its guide stops on the wall ---
+# failed WHAT PATTERN CMD...: exit 1 within 60 s, one stderr line matching PATTERN
+failed() {
+    local what=$1 pat=$2; shift 2
+    timeout -s KILL 60 "$GW" "$@" >stdout 2>stderr </dev/null
+    local rc=$?
+    if [ $rc -ne 1 ]; then ko "$what: exit $rc, expected 1 ($(head -c 300 stderr))"; return; fi
+    if [ "$(wc -l <stderr)" -ne 1 ]; then ko "$what: $(wc -l <stderr) stderr lines"; return; fi
+    grep -qE -- "$pat" stderr && ok "$what" || ko "$what: message does not match '$pat': $(cat stderr)"
+}
+guide="still on the wall at t_max = [0-9.e+-]+ s: the guide's friction"
+failed "chain --n 1 --guide-friction 1 --vimp 1e-3: names the guide" \
+    "^granwave chain: bead 1 $guide \\(guide-friction 1 N, guide-viscous 0 N s/m\\) stopped it" \
+    chain --n 1 --guide-friction 1 --vimp 1e-3 --quiet
+failed "chain --n 1 --guide-viscous 100 --vimp 1e-3 --t-max 0.05: names the guide" \
+    "^granwave chain: bead 1 $guide \\(guide-friction 0 N, guide-viscous 100 N s/m\\).*lower guide-friction or guide-viscous" \
+    chain --n 1 --guide-viscous 100 --vimp 1e-3 --t-max 0.05 --quiet
+failed "chain --n 5 --guide-viscous 100 --vimp 1e-2: names the guide" "^granwave chain: bead 1 $guide" \
+    chain --n 5 --guide-viscous 100 --vimp 1e-2 --quiet
+# controls: a t-max that cuts a moving bead short keeps the plain line; a
+# lighter guide lets the bead leave
+failed "chain --n 2 --guide-friction 1e-3 --t-max 1e-5: cut short, the plain line" \
+    "^granwave chain: bead 1 still on the wall at t_max = 1e-05 s\$" chain --n 2 --guide-friction 1e-3 --t-max 1e-5 --quiet
+runs_quiet "chain --n 1 --guide-viscous 1 --vimp 1e-3 (the bead leaves)" chain --n 1 --guide-viscous 1 --vimp 1e-3
 
 test_summary test_hostile_fortyfourth

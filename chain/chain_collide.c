@@ -520,8 +520,24 @@ static int collide_after(void *ctx, double t, const double *y, gw_err *err)
             r->converged = 1;
             return GW_DRIVE_STOP;
         }
-        if (!isfinite(r->tau_n))
+        if (!isfinite(r->tau_n)) {
+            /* A guide's friction that stops the bead inside its overlap
+             * holds it there: the Hertz force pushes it out against a drag
+             * (the Coulomb term regularised: coulomb / v_reg near rest) and
+             * the overlap creeps back without end (--guide-viscous 100 or
+             * --guide-friction 1 at --vimp 1e-3 said only this, whatever
+             * t-max, naming no input): name the guide as the cause when
+             * the bead has stopped (a t-max that cuts the collision short
+             * leaves it moving) */
+            const gw_chain_params *p = gw_chain_get_params(st->c);
+            if ((p->guide.coulomb > 0 || p->guide.viscous > 0) && fabs(y[1]) < 1e-3 * st->v_scale)
+                return gw_err_set(err, GW_ELIMIT, "chain: bead 1 still on the wall at t_max = %.6g s: the guide's "
+                                  "friction (guide-friction %g N, guide-viscous %g N s/m) stopped it inside its "
+                                  "overlap, which creeps back without end (an overdamped contact; a longer t-max "
+                                  "does not end it): lower guide-friction or guide-viscous, or raise the impact "
+                                  "speed", st->t_max, p->guide.coulomb, p->guide.viscous);
             return gw_err_set(err, GW_ELIMIT, "chain: bead 1 still on the wall at t_max = %.6g s", st->t_max);
+        }
         return GW_DRIVE_STOP;
     }
     return GW_DRIVE_ON;

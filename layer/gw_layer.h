@@ -682,7 +682,11 @@ int gw_layer_impact_fall_check(const gw_layer_impact_params *ip, double g, gw_er
 /* The gap's checks: gw_layer_impact_fall_check, then the sideways drift. The
  * block is lowered vertically onto its target at x but flies along the
  * incidence, so it meets the layer gap tan(alpha) off x: at most 1e-3 R_m of
- * the sample s, else GW_EINVAL "gap: ..." naming the largest gap that passes. */
+ * the sample s, else GW_EINVAL "gap: ..." naming the largest gap that passes.
+ * Last, the block must be able to cross the gap (at its speed vi, gravity
+ * added) before ip->t_max: GW_EINVAL "t-max: ..."
+ * naming its arrival time (a run that ended first measured nothing and
+ * recorded a penetration of 0). */
 int gw_layer_impact_gap_check(const gw_layer_sample *s, const gw_layer_impact_params *ip, double g,
                               gw_err *err);
 

@@ -326,6 +326,27 @@ int gw_layer_impact_fall_check(const gw_layer_impact_params *ip, double g, gw_er
                       "with this gap)", ip->gap, g, vc, vn, 100 * (vc / vn - 1), gs, vs);
 }
 
+/* The block must be able to reach the layer before the run ends. Its gap is
+ * the surface distance to its target, which no contact can close faster than
+ * the block's speed: at least t = 2 gap / (v + sqrt(v^2 + 2 g gap)) (v the
+ * incident speed, g at most adding to it), whatever the incidence and the
+ * target's place. A t-max at or before that ran with exit 0 and measured
+ * nothing: the bounce undecided but the penetration written 0 (a number, not
+ * null), which a sweep's table carried into layer-stats' penetration means
+ * (--t-max 1e-8, or --gap 0.03 --t-max 0.001 at 20 m/s: no contact). */
+static int impact_reach_check(const gw_layer_impact_params *p, double g, gw_err *err)
+{
+    const double v = p->vi;
+    if (!(p->gap > 0) || !(v > 0) || !isfinite(p->t_max) || !(g >= 0))
+        return GW_OK; /* no gap to cross; the other checks name the speed and gravity */
+    const double t_reach = 2 * p->gap / (v + sqrt(v * v + 2 * g * p->gap));
+    if (p->t_max > t_reach)
+        return GW_OK;
+    return gw_err_set(err, GW_EINVAL, "t-max: %g s ends before the block can reach the layer (its gap of %g m "
+                      "takes at least %.4g s at %g m/s, g = %g m/s^2): nothing would be measured; raise t-max "
+                      "above %.4g s or lower gap", p->t_max, p->gap, t_reach, v, g, t_reach);
+}
+
 int gw_layer_impact_gap_check(const gw_layer_sample *smp, const gw_layer_impact_params *p, double g,
                               gw_err *err)
 {
@@ -349,7 +370,7 @@ int gw_layer_impact_gap_check(const gw_layer_sample *smp, const gw_layer_impact_
                           "(%.3g R_m) sideways before it touches and meets the layer off x (at most 1e-3 R_m): "
                           "lower gap to %.3g m", p->alpha_deg, drift, drift / smp->rm,
                           1e-3 * smp->rm / tan(p->alpha_deg * M_PI / 180));
-    return GW_OK;
+    return impact_reach_check(p, g, err);
 }
 
 void layer_floor_load(const gw_layer_params *lp, int n, const double *y, const double *r, size_t stride, double *f,

@@ -108,7 +108,7 @@ char *gw_sweep_slurp_fd(int fd, const char *path, size_t max, size_t *len, gw_er
  * at most GW_SWEEP_JOURNAL_MAX (also when cfg->ncolumns is not known). A
  * journal above it is not this sweep's. */
 size_t gw_sweep_journal_bound(const gw_sweep_config *cfg);
-/* gw_sweep_run.c: the longest journal row of cfg with ncolumns numbers, bytes
+/* gw_sweep_rows.c: the longest journal row of cfg with ncolumns numbers, bytes
  * (its case number, grid values, numbers, hashes and checksum). */
 double gw_sweep_row_bound(const gw_sweep_config *cfg, int ncolumns);
 /* The sweep's directory opened for the *at calls (O_DIRECTORY, O_CLOEXEC; by

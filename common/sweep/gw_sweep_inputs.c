@@ -166,10 +166,15 @@ int gw_sweep_inputs_readable(const gw_sweep_config *cfg, const char *path, gw_er
             for (int j = 0; j < keys[i].nvalues; j++) {
                 gw_err e = {{0}};
                 const int rc = input_readable(cfg, keys[i].values[j], &e);
-                if (rc != GW_OK)
-                    return gw_err_set(err, rc == GW_ENOMEM || rc == GW_EUNSUPPORTED ? rc : GW_EINVAL,
-                                      "%s: [%s] %s: %s", path ? path : "sweep", s ? "params" : "grid",
-                                      keys[i].name, e.msg);
+                if (rc == GW_OK)
+                    continue;
+                /* the rule's text names the key itself ("sample: P is a
+                 * FIFO", "sample 'P': ..."): said once */
+                const size_t kl = strlen(keys[i].name);
+                const int named = strncmp(e.msg, keys[i].name, kl) == 0 && (e.msg[kl] == ':' || e.msg[kl] == ' ');
+                return gw_err_set(err, rc == GW_ENOMEM || rc == GW_EUNSUPPORTED ? rc : GW_EINVAL, "%s: [%s] %s%s%s",
+                                  path ? path : "sweep", s ? "params" : "grid", named ? "" : keys[i].name,
+                                  named ? "" : ": ", e.msg);
             }
         }
     }

@@ -277,3 +277,18 @@ int gw_sweep_row_check(const gw_sweep_config *cfg, const char *row, gw_err *err)
                           "rows before are kept), or start a new sweep", why);
     return GW_OK;
 }
+
+double gw_sweep_row_bound(const gw_sweep_config *cfg, int ncolumns)
+{
+    double row = 1 + (double)gw_snprintf(NULL, 0, "%ld", cfg->ncases > 0 ? cfg->ncases - 1 : 0);
+    for (int i = 0; i < cfg->ngrid; i++) {
+        size_t w = 0;
+        for (int j = 0; cfg->grid[i].values && j < cfg->grid[i].nvalues; j++) {
+            const size_t l = cfg->grid[i].values[j] ? strlen(cfg->grid[i].values[j]) : 0;
+            w = l > w ? l : w;
+        }
+        row += 1 + (double)w;
+    }
+    /* "%.17g": a sign, 17 digits, the point and e-308 */
+    return row + 25.0 * ncolumns + 17.0 * (cfg->read_key ? 2 : 1) + 10; /* the hashes, ",checksum\n" */
+}

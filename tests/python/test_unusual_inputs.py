@@ -110,7 +110,7 @@ REFUSED = [
     ("sweep", dict(model="chain", grid={"vimp": [float("nan")]}), ValueError, "sweep: case 0: vimp: 'nan' is not"),
     ("sweep", dict(model="chain", grid=[("n", [2])]), TypeError, "sweep(): grid must be a dict"),
     ("sweep", dict(model="layer", grid={"vi": [10]}, sample="{d}/fifo"), ValueError,
-     "sweep: case 0: sample: {d}/fifo is a FIFO"),
+     "sweep: [params] sample: {d}/fifo is a FIFO"),
 ]
 
 

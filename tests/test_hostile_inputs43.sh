@@ -67,11 +67,11 @@ printf '[sweep]\nmodel = layer\n[grid]\nsample = s.txt, big.sample\n[params]\nvi
 printf '[sweep]\nmodel = layer\n[grid]\nvi = 10, 20\n[params]\nsample = s.txt\nt-max = 0.002\n' >l.ini
 LIMIT="214748364800 bytes, larger than a sample file may be \\(4294967296 bytes, 4 GiB\\)"
 refused "sweep: a sparse 200 GB [params] sample refused by its size, not hashed" \
-    "^granwave sweep: big.ini: \\[params\\] sample: sample '$tmp/big.sample': $LIMIT" sweep big.ini --out o
+    "^granwave sweep: big.ini: \\[params\\] sample '$tmp/big.sample': $LIMIT" sweep big.ini --out o
 refused "sweep --check: the same" \
-    "^granwave sweep: big.ini: \\[params\\] sample: sample '$tmp/big.sample': $LIMIT" sweep big.ini --check --out o
+    "^granwave sweep: big.ini: \\[params\\] sample '$tmp/big.sample': $LIMIT" sweep big.ini --check --out o
 refused "sweep: a sparse 200 GB sample in the [grid] refused by its size" \
-    "^granwave sweep: bigg.ini: \\[grid\\] sample: sample '$tmp/big.sample': $LIMIT" sweep bigg.ini --out o
+    "^granwave sweep: bigg.ini: \\[grid\\] sample '$tmp/big.sample': $LIMIT" sweep bigg.ini --out o
 refused "layer-impact: the sample reader says the limit too" \
     "^granwave layer-impact: sample 'big.sample': $LIMIT" layer-impact --sample big.sample --t-max 1e-4 --out o
 timeout -s KILL 60 "$GW" sweep l.ini --check --out ck >/dev/null 2>"$tmp/stderr" </dev/null &&

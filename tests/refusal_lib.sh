@@ -149,7 +149,12 @@ py_checks() {
         return
     fi
     { py_prelude; cat; } >"$tmp/py.in"
-    pyenv /usr/bin/python3 "$tmp/py.in" >"$tmp/py.out" 2>&1
+    # PY_TIMEOUT (seconds) given: the script killed after it (a hang is a failed check)
+    if [ -n "${PY_TIMEOUT:-}" ]; then
+        pyenv timeout -s KILL "$PY_TIMEOUT" /usr/bin/python3 "$tmp/py.in" >"$tmp/py.out" 2>&1
+    else
+        pyenv /usr/bin/python3 "$tmp/py.in" >"$tmp/py.out" 2>&1
+    fi
     local rc=$? line n=0
     while read -r line; do
         case $line in
@@ -158,7 +163,7 @@ py_checks() {
             *) echo "$line" ;;
         esac
     done <"$tmp/py.out"
-    [ $rc -eq 0 ] || ko "the Python checks ended with status $rc: $(tail -1 "$tmp/py.out")"
+    [ $rc -eq 0 ] || ko "the Python checks ended with status $rc${PY_TIMEOUT:+ (137: killed at $PY_TIMEOUT s)}: $(tail -1 "$tmp/py.out")"
     [ -z "${1:-}" ] || [ "$n" -eq "$1" ] || ko "the Python checks: $n of $1 ran"
 }
 

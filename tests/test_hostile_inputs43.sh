@@ -38,25 +38,7 @@ export LC_ALL=C
 PY=/usr/bin/python3
 
 # py_timed N: py_checks, the script killed after 60 s (a hang is a failed check)
-py_timed() {
-    if sanitizer_build; then
-        cat >/dev/null
-        echo "SKIP: the Python checks (a sanitizer build's library does not load into Python)"
-        return
-    fi
-    { py_prelude; cat; } >"$tmp/py.in"
-    pyenv timeout -s KILL 60 /usr/bin/python3 "$tmp/py.in" >"$tmp/py.out" 2>&1
-    local rc=$? line n=0
-    while read -r line; do
-        case $line in
-            PASS:*) ok "${line#PASS: }"; n=$((n+1)) ;;
-            FAIL:*) ko "${line#FAIL: }"; n=$((n+1)) ;;
-            *) echo "$line" ;;
-        esac
-    done <"$tmp/py.out"
-    [ $rc -eq 0 ] || ko "the Python checks ended with status $rc (137: killed at 60 s): $(tail -1 "$tmp/py.out")"
-    [ "$n" -eq "$1" ] || ko "the Python checks: $n of $1 ran"
-}
+py_timed() { PY_TIMEOUT=60 py_checks "$1"; }
 
 make_sample s.txt --n 40 --width-rm 12 --seed 1
 

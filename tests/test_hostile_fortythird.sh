@@ -156,11 +156,11 @@ refused("Python layer_impact(x=-5e-324)", ["x", "too small in magnitude", "(give
 EOF
 
 # --- 2 layer-impact: a small --vi with the default gap ---
-# runs_ok WHAT ARGS...: layer-impact on s20.txt exits 0 (a short run)
+# runs_ok WHAT ARGS...: layer-impact on s20.txt exits 0 (a short run; t-max 20 ms: the block at the gaps and speeds named reaches the layer before it)
 runs_ok() {
     local what=$1
     shift
-    timeout -s KILL 60 "$GW" layer-impact --sample s20.txt --t-max 1e-4 --quiet "$@" >/dev/null 2>"$tmp/stderr" </dev/null &&
+    timeout -s KILL 60 "$GW" layer-impact --sample s20.txt --t-max 0.02 --quiet "$@" >/dev/null 2>"$tmp/stderr" </dev/null &&
         ok "$what" || ko "$what: exit $? ($(head -c 300 "$tmp/stderr"))"
 }
 for vi in 1e-6 1e-3 0.01 0.05 0.099; do

@@ -121,6 +121,8 @@ static const char *ark_configure(gw_solver *s, ark_impl *a, int method, int *fla
     if (s->p.dt > 0) {
         a->first_step = 1;
         ARK_CHECK(ARKStepSetMaxErrTestFails(a->mem, GW_SUN_GIVEN_STEP_ERR_FAILS));
+    } else { /* ARKStep: dirk or imex (gw_sundials.h says why) */
+        ARK_CHECK(ARKStepSetMaxErrTestFails(a->mem, GW_SUN_ARK_IMPLICIT_ERR_FAILS));
     }
     if (s->p.dt_max > 0)
         ARK_CHECK(ARKStepSetMaxStep(a->mem, s->p.dt_max));
@@ -261,7 +263,7 @@ static int ark_reset(gw_solver *s, double t, const double *y)
         flag = a->erk ? ERKStepSetInitStep(a->mem, 0.0) : ARKStepSetInitStep(a->mem, 0.0);
     if (flag >= 0 && s->p.dt > 0) /* ARKode's own limit again, with its own step */
         flag = a->erk ? ERKStepSetMaxErrTestFails(a->mem, GW_SUN_OWN_STEP_ERR_FAILS)
-                      : ARKStepSetMaxErrTestFails(a->mem, GW_SUN_OWN_STEP_ERR_FAILS);
+                      : ARKStepSetMaxErrTestFails(a->mem, GW_SUN_ARK_IMPLICIT_ERR_FAILS);
     if (flag < 0) {
         char name[64];
         ark_flag_name(flag, name, sizeof name);

@@ -136,16 +136,53 @@ int chain_steps_check(const gw_solver_type *type, const gw_solver_params *sp, co
  * bdf steps over the ring sooner (1,368 steps on 1e-7 kg at 0.05: the
  * estimate 90 times).
  *
+ * dirk steps over the undamped ring: its steps did not grow with omega as U
+ * (estimate over steps 25 to 5,700 with U, 1,450 at rtol 1e-8). Measured
+ * undamped at 1e-12, n = 5, 1e12 N/m: 18,589, 29,521, 94,680, 83,311,
+ * 133,750, 141,295, 91,713, 56,540, 35,398 and 14,759 steps on 1e-9, 1e-8,
+ * 1e-7, 3e-7, 1e-6, 3e-6, 1e-5, 3e-5, 1e-4 and 1e-3 kg (0.7 to 10.7 F, F =
+ * 13,260 there); n = 1, 3 and 20: 20,884 (1e-9 kg), 81,150 (1e-7), 139,741
+ * (1e-6), 81,397 (1e-7) and 90,986 (1e-6); 7,239 and 3,703 at 1e-10 on 1e-9
+ * and 1e-6 kg (1.6 and 0.84 F), 11,587, 1,451, 671 and 742 at 1e-8 on 1e-9,
+ * 1e-7, 1e-6, 1e-5 kg (8.3 to 0.48 F). Its U is held to SENSOR_DIRK_OVER F
+ * (beyond the collision's span, in proportion). Heavily overdamped, its steps
+ * grow with the fast root r = omega (zeta + sqrt(zeta^2 - 1)), about c_s / M:
+ * 30,602, 85,860 and 257,152 on 1e-9 kg at 100, 300 and 1000 of critical
+ * (below 15,000 up to 30), 77,836 on 1e-8 kg and 23,528 on 1e-7 kg at 1000,
+ * 17,963 and 8,954 at rtol 1e-8 and 1e-10 on 1e-9 kg at 1000: about 4e-5 a
+ * unit of r t_len, counted as SENSOR_DIRK_FAST (per_rad / 20) r t_len.
+ * (Up to 30 of critical on 1e-9 kg and 10 on 1e-7 kg it failed its error
+ * test before, gw_sundials.h.) The estimate over these steps: 1.5 to 11.8
+ * undamped at 1e-12 (16 to 34 at 1e-8 on 1e-7 to 1e-5 kg), 4.9 and 7.2 at
+ * 0.01, 1.35 to 5.1 beyond critical (9.8 and 48 at 1e-8 and 1e-10 on 1e-9
+ * kg at 1000); 3-bead drops over 1 ms on 1e-7 kg, 6.8 undamped (145,492
+ * steps), 4.9 and 4.4 at 0.1 and 10 of critical.
+ *
  * cvode adams and arkode erk are held to the body's fastest mode by their
  * stability whatever the damping (sensor_fast_steps; beyond critical damping
- * its fast root, counted with erk's drag); arkode imex keeps the undamped
- * estimate (measured 47,236 to 1,257,986 steps whatever the damping, 12 to
- * 120 times below it). */
+ * its fast root, counted with erk's drag). arkode imex (the body's forces
+ * implicit, the pair's explicit part) steps over the ring too but more slowly
+ * as the ring is faster, and more with the damping. Measured at 1e-12, n = 5,
+ * 1e12 N/m (zeta 0, 0.1, 1, 10): 1e-9 kg 894,177, -, 945,381, 1,257,986;
+ * 1e-8 kg 376,610; 1e-7 kg 240,271, 182,805, 248,774, 579,921; 1e-6 kg
+ * 138,600; 1e-5 kg 84,147, 46,554, 71,545, 241,899 (368,551 and 597,999 at
+ * 30 and 100); 1e-3 kg 14,891; on 1e-7 kg at n = 1 and 20: 108,356 and
+ * 448,955; 60,868 at 1e-10; at 1e-8 12,828 (1e-7 kg), 72,085 (1e-9) and 5,021
+ * (1e-5); at 1e-8 on 1e-7 kg at 1 and 10 of critical 13,904 and 27,401, on
+ * 1e-9 kg at 10 67,621. U over them was 12 to 233: about U (omega / W)^-1/2,
+ * W = 1e7 rad/s, times sqrt(1 + zeta / 2) for the damping; counted as U
+ * min(1, (omega / SENSOR_IMEX_RATE)^-1/2) sqrt(1 + zeta / 2),
+ * SENSOR_IMEX_RATE = 3 W: the estimate over the steps 3.3 to 7.7 at 1e-12,
+ * 6.8 to 18.8 at 1e-10 and 1e-8 (a 3-bead drop over 1 ms on 1e-7 kg, 200,643
+ * steps undamped: 31). */
 #define SENSOR_WEDGE_ZETA 0.08
 #define SENSOR_FOLLOW_ZETA_BDF 0.033
 #define SENSOR_FOLLOW_ZETA_BEYOND 0.05
 #define SENSOR_FOLLOW_ZETA_DIRK 0.008
 #define SENSOR_FAST_STEPS 20.0
+#define SENSOR_DIRK_OVER 16.0
+#define SENSOR_DIRK_FAST 1e-4
+#define SENSOR_IMEX_RATE 3e7
 
 /* The steps an explicit method (cvode adams, arkode erk) takes over t_len on
  * a body of rate omega and damping ratio zeta, continuous in zeta: up to
@@ -175,8 +212,9 @@ static double sensor_fast_steps(double omega, double zeta, double per_rad, int a
 
 /* The steps cvode or arkode take over t_len on the sensor body's oscillation
  * (its rate in *omega, the steps a radian in *per_rad, its damping ratio in
- * *zeta, whether the damping lowered the estimate below the undamped one in
- * *damped); 0 without a body. type NULL: the undamped estimate. */
+ * *zeta; in *damped 1 where the damping lowered the estimate below the
+ * undamped one, 2 where the method's stepping over the ring did, else 0); 0
+ * without a body. type NULL: the undamped estimate. */
 static double sensor_steps(const gw_chain_params *p, const gw_solver_type *type, const gw_solver_params *sp,
                            double t_len, double *omega, double *per_rad, double *zeta, int *damped)
 {
@@ -207,12 +245,18 @@ static double sensor_steps(const gw_chain_params *p, const gw_solver_type *type,
     if (!type)
         return undamped;
     const double base = sp && sp->dt_max > 0 ? t_len / sp->dt_max : 0.0;
-    if (!(*zeta > 0))
+    if (strcmp(used, "imex") == 0) {
+        /* steps over the ring, more slowly than dirk (SENSOR_IMEX_RATE) */
+        const double imex = undamped * fmin(1.0, sqrt(SENSOR_IMEX_RATE / *omega)) * sqrt(1.0 + *zeta / 2.0);
+        *damped = imex < undamped ? 2 : 0;
+        return base + imex;
+    }
+    if (!(*zeta > 0) && !dirk)
         return base + undamped;
     if (strcmp(used, "erk") == 0 || strcmp(used, "adams") == 0)
         return base + sensor_fast_steps(*omega, *zeta, *per_rad, strcmp(used, "adams") == 0, 0, t_len);
     if (!bdf && !dirk)
-        return base + undamped; /* imex: about the same steps whatever the damping */
+        return base + undamped;
     /* The collision's span, two expected collision lengths at most; beyond it
      * (a drop, a run to t-max) the contacts' events recur and bdf follows a
      * lightly damped ring all the time: a drop of 3 beads on 1e-7 kg and
@@ -228,16 +272,26 @@ static double sensor_steps(const gw_chain_params *p, const gw_solver_type *type,
                  u_c = *per_rad * *omega * t_c, u_b = *per_rad * *omega * t_b;
     const double z = *zeta, events = 4.0 * ((double)(p->n > 5 ? p->n : 5) + 1.0),
                  floor_steps = events * *per_rad * log(1.0 / fmin(fmax(tol, 1e-15), 0.1)),
+                 /* dirk steps over even the undamped ring (no more than
+                  * SENSOR_DIRK_OVER times the floor), bdf does not */
+                 over_c = dirk ? SENSOR_DIRK_OVER * floor_steps : INFINITY,
+                 over_b = t_b > 0 ? over_c * t_b / t_span : 0.0,
                  wedge = bdf ? 1.0 + pow(SENSOR_WEDGE_ZETA / z, 3) : 1.0,
-                 decay = floor_steps * wedge / fmin(z, 1.0),
-                 follow = u_c * exp(-z / (bdf ? SENSOR_FOLLOW_ZETA_BDF : SENSOR_FOLLOW_ZETA_DIRK)),
+                 decay = z > 0 ? floor_steps * wedge / fmin(z, 1.0) : INFINITY,
+                 follow = fmin(u_c, over_c) * exp(-z / (bdf ? SENSOR_FOLLOW_ZETA_BDF : SENSOR_FOLLOW_ZETA_DIRK)),
                  beyond = t_b > 0 ? fmax(floor_steps * t_b / t_span,
-                                         u_b * exp(-z / (bdf ? SENSOR_FOLLOW_ZETA_BEYOND : SENSOR_FOLLOW_ZETA_DIRK)))
+                                         fmin(u_b, over_b) *
+                                             exp(-z / (bdf ? SENSOR_FOLLOW_ZETA_BEYOND : SENSOR_FOLLOW_ZETA_DIRK)))
                                   : 0.0,
-                 ring = fmin(decay, fmax(floor_steps, follow)) + beyond;
+                 /* dirk on a heavily overdamped body: steps growing with its
+                  * fast root omega (zeta + sqrt(zeta^2 - 1)), about c_s / M */
+                 fast = dirk ? SENSOR_DIRK_FAST * *per_rad / SENSOR_STEPS_PER_RAD * *omega *
+                                   (z + sqrt(fmax(z * z - 1.0, 0.0))) * t_len
+                             : 0.0,
+                 ring = fmin(decay, fmax(floor_steps, follow)) + beyond + fast;
     if (!(ring < undamped))
         return base + undamped;
-    *damped = 1;
+    *damped = z > 0 ? 1 : 2;
     return base + ring;
 }
 
@@ -253,7 +307,10 @@ int chain_sensor_steps_check(const gw_chain_params *p, const gw_solver_type *typ
         const char *used = gw_solver_method_used(type, sp ? sp->method : GW_METHOD_DEFAULT);
         const int implicit = strcmp(used, "bdf") == 0 || strcmp(used, "dirk") == 0;
         char why[320];
-        if (damped)
+        if (damped == 2)
+            gw_snprintf(why, sizeof why, "%.3g a radian at this tolerance; %s steps over the ring, counted as the "
+                        "measured steps it takes on it (%.4g of critical)", per_rad, used, zeta);
+        else if (damped)
             gw_snprintf(why, sizeof why, "damped at %.4g of critical: %.0f contact events, each ringing until its "
                         "decay is below the tolerance, and %s following the lightly damped ring", zeta,
                         4.0 * ((double)(p->n > 5 ? p->n : 5) + 1.0), used);

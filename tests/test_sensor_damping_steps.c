@@ -20,11 +20,23 @@
  * wedge and its following the lightly damped ring), for erk and adams the
  * body's fastest mode.
  *
- * Asserted, at rtol = atol = 1e-12 (one case at 1e-8) on a 5-bead column:
+ * The thirty-eighth session: dirk's and imex's estimate was U, far above
+ * their steps (dirk 25 to 5,700 times, refusing a 1e-9 kg body it runs in
+ * 18,589 steps; imex 12 to 233 times), and dirk failed its error test on a
+ * stiff overdamped body (1e-7 kg at 10 of critical, 1e-9 kg from 3), where
+ * beyond 100 of critical its steps grew past the estimate. dirk's estimate is
+ * now capped at 16 times the floor of its ring count with a term in the
+ * overdamped fast root, imex's falls as omega^-1/2 (chain_collide_plan.c),
+ * and arkode's implicit methods are allowed 30 failed error tests a step.
+ *
+ * Asserted, at rtol = atol = 1e-12 (some cases at 1e-8) on a 5-bead column:
  *   - the plan's estimate (chain_run_steps) within [1, 20] of the steps the
  *     solver reports over a grid of masses (1e-9, 1e-7, 1e-5 kg on 1e12 N/m;
  *     erk also 1e-3 kg on 1e9 N/m up to 1000 of critical) and damping ratios
- *     (0 to 10) for bdf, dirk, erk and adams, each run allowed;
+ *     (0 to 10) for bdf, dirk, erk and adams, each run allowed; dirk also
+ *     undamped (1e-9 kg; 1e-7 kg at 1e-8), at 0.01 and on stiff overdamped
+ *     bodies (1e-7 kg at 10, 1e-9 kg at 5 and 100), imex at 1e-8 (1e-9 and
+ *     1e-5 kg undamped, 1e-7 kg at 10);
  *   - the estimate continuous in zeta: over 1e-3 to 100 of critical in steps
  *     of 0.5 %, each estimate within 20 % of the one before, per backend
  *     (bdf's and dirk's jumped 160 times at 0.2);
@@ -145,6 +157,23 @@ int main(void)
     const double adams5[] = {0.1, 1, 2};
     for (int i = 0; i < 3; i++)
         ratio_check("cvode", "adams", 1e-5, 1e12, adams5[i], 1e-12);
+    /* dirk steps over the undamped and barely damped ring (its estimate was
+     * U: refused on 1e-9 kg, 18,589 steps; 1,160 times 1,451 steps at 1e-8
+     * on 1e-7 kg; 96 times on 1e-9 kg at 0.01) */
+    ratio_check("arkode", "dirk", 1e-9, 1e12, 0, 1e-12);
+    ratio_check("arkode", "dirk", 1e-7, 1e12, 0, 1e-8);
+    ratio_check("arkode", "dirk", 1e-9, 1e12, 0.01, 1e-12);
+    /* dirk on a stiff overdamped body ran out of its 7 failed error tests
+     * (1e-7 kg at 10, 1e-9 kg from 3 of critical); 100 of critical on 1e-9
+     * kg takes 30,602 steps (the estimate had 20,370) */
+    ratio_check("arkode", "dirk", 1e-7, 1e12, 10, 1e-12);
+    ratio_check("arkode", "dirk", 1e-9, 1e12, 5, 1e-12);
+    ratio_check("arkode", "dirk", 1e-9, 1e12, 100, 1e-12);
+    /* imex steps over the ring, more slowly on a faster one (its estimate, U,
+     * was 233, 61 and 33.5 times the steps taken) */
+    ratio_check("arkode", "imex", 1e-9, 1e12, 0, 1e-8);
+    ratio_check("arkode", "imex", 1e-7, 1e12, 10, 1e-8);
+    ratio_check("arkode", "imex", 1e-5, 1e12, 0, 1e-8);
 
     /* no jump in zeta */
     continuity_check("cvode", "bdf", 1e-7);

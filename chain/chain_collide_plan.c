@@ -308,8 +308,9 @@ int chain_sensor_steps_check(const gw_chain_params *p, const gw_solver_type *typ
         const int implicit = strcmp(used, "bdf") == 0 || strcmp(used, "dirk") == 0;
         char why[320];
         if (damped == 2)
-            gw_snprintf(why, sizeof why, "%.3g a radian at this tolerance; %s steps over the ring, counted as the "
-                        "measured steps it takes on it (%.4g of critical)", per_rad, used, zeta);
+            gw_snprintf(why, sizeof why, "%.3g a radian at this tolerance; %s steps over the ring, counted at the "
+                        "pace measured on it, %s%.4g of critical", per_rad, used, zeta > 0 ? "damped at " : "undamped: ",
+                        zeta);
         else if (damped)
             gw_snprintf(why, sizeof why, "damped at %.4g of critical: %.0f contact events, each ringing until its "
                         "decay is below the tolerance, and %s following the lightly damped ring", zeta,

@@ -36,7 +36,8 @@
  *     (0 to 10) for bdf, dirk, erk and adams, each run allowed; dirk also
  *     undamped (1e-9 kg; 1e-7 kg at 1e-8), at 0.01 and on stiff overdamped
  *     bodies (1e-7 kg at 10, 1e-9 kg at 5 and 100), imex at 1e-8 (1e-9 and
- *     1e-5 kg undamped, 1e-7 kg at 10);
+ *     1e-5 kg undamped, 1e-7 kg at 10); dirk's F_max on 1e-7 kg at 10 of
+ *     critical within 1e-8 of bdf's;
  *   - the estimate continuous in zeta: over 1e-3 to 100 of critical in steps
  *     of 0.5 %, each estimate within 20 % of the one before, per backend
  *     (bdf's and dirk's jumped 160 times at 0.2);
@@ -190,6 +191,21 @@ int main(void)
     printf("  (erk, 1e-6 kg at 10 of critical: %s)\n", rc == GW_OK ? "allowed" : err.msg);
     gw_test_true(rc == GW_EINVAL && strstr(err.msg, "sensor-damping:") != NULL,
                  "arkode erk on a 1e-6 kg body at 10 of critical refused, naming sensor-damping");
+
+    /* dirk on the overdamped 1e-7 kg body (10 of critical) reads bdf's F_max
+     * (measured 4e-11 apart at n = 5; the run failed before) */
+    {
+        gw_chain_params pz = sensor_params(1e-7, 1e12, 10);
+        gw_chain_run_opts ob = test_opts("cvode", "bdf"), od = test_opts("arkode", "dirk");
+        gw_chain_result rb, rd;
+        if (test_collide(&pz, &ob, &rb) == GW_OK) {
+            if (test_collide(&pz, &od, &rd) == GW_OK) {
+                gw_test_rel(rd.f_max, rb.f_max, 1e-8, "arkode dirk on 1e-7 kg at 10 of critical: F_max = cvode bdf's");
+                gw_chain_result_free(&rd);
+            }
+            gw_chain_result_free(&rb);
+        }
+    }
 
     /* the critically damped 1e-9 kg body runs and reads the rigid wall */
     gw_chain_run_opts o = test_opts("cvode", "bdf");

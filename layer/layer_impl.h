@@ -615,7 +615,8 @@ int layer_settling_verdict_found(const gw_layer_sample *smp, const gw_layer_para
  * (and checked) into smp by gw_layer_sample_read: the rows and the resolution
  * against smp, for the sweep's check pass, which checks many setups of one
  * sample file (layer_setup.c; smp is only read); its settling verdict through
- * memo (may be NULL: found here). */
+ * memo (may be NULL: found here). The reader's check is the shared sample
+ * check (layer_sample_limits_check): the resolution does not take it again. */
 struct gw_layer_impact_setup;
 int layer_impact_setup_check_sample(const struct gw_layer_impact_setup *s, const gw_layer_sample *smp,
                                     layer_settling_memo *memo, gw_err *err);

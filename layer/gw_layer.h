@@ -659,16 +659,22 @@ void gw_layer_impact_result_free(gw_layer_impact_result *r);
  * sample as the run takes it is checked first, by the run's own checks, so
  * that the two never disagree: its form (gw_layer_sample_pile_hash lists it),
  * each particle's x, y and r finite and r > 0 (GW_EINVAL "sample 's':
- * particle I: FIELD = V m ..." naming the index and the field), its centre
- * inside the walls unless ip->remove_walls, its clumps connected and its
- * springs (unless ip->zero_springs) as the sample reader takes them. Before
- * session 35 a particle of a NaN or infinite coordinate or radius passed the
- * check and was refused by the run only. Since session 43 the sample is held
- * to every limit the reader applies (n in [1, 1e7], rm and width within their
- * scales, each radius within [1e-3, 1e3] R_m, each disc inside the box to
- * 0.02 r and at most 1e6 R_m high, no two discs more than 0.05 R_p inside
- * each other), walls or none, the message naming the field and the index;
- * gw_layer_impact_rest_check and gw_layer_impact_gap_check take it too. */
+ * particle I: FIELD = V m ..." naming the index and the field), its clumps
+ * connected and its springs (unless ip->zero_springs) as the sample reader
+ * takes them. Before session 35 a particle of a NaN or infinite coordinate or
+ * radius passed the check and was refused by the run only. Since session 43
+ * the sample is held to every limit the reader applies (n in [1, 1e7], rm and
+ * width within their scales, each radius within [1e-3, 1e3] R_m, each disc
+ * inside the box to 0.02 r and at most 1e6 R_m high, no two discs more than
+ * 0.05 R_p inside each other), walls or none, the message naming the field
+ * and the index. The walls' rule is that one: a disc may reach 0.02 r beyond
+ * the box's side or floor (the overlap settling leaves against a wall), its
+ * centre then inside the walls the run keeps; 0.03 r beyond is refused, with
+ * the walls or without (until session 44 the check also held the centres to
+ * the walls, which the box rule already does). gw_layer_impact_rest_check,
+ * gw_layer_impact_gap_check, gw_layer_impact_dem_dt,
+ * gw_layer_impact_settled_check and gw_layer_impact take the same check, with
+ * the same message; gw_layer_impact takes it once a run. */
 int gw_layer_impact_check(const gw_layer_sample *s, const gw_layer_impact_params *ip,
                           gw_err *err);
 
@@ -676,7 +682,12 @@ int gw_layer_impact_check(const gw_layer_sample *s, const gw_layer_impact_params
  * normal speed at contact is sqrt(V_ni^2 + 2 g gap). The outcome (e_n, e,
  * alpha_r, E_incident, the Froude number, the penetration)
  * takes V_i as given, so the fall may change the normal speed by at most
- * 0.1 %: GW_EINVAL "gap: ..." naming the largest gap that passes. */
+ * 0.1 %: GW_EINVAL "gap: ..." naming the largest gap that passes, or, at the
+ * default gap (ip->gap at gw_layer_impact_params_default's value, which the
+ * struct cannot tell from a gap set to that value), "vi: ... too slow for the
+ * default gap ..." naming the smallest speed. The setup
+ * (gw_layer_impact_setup: the program, a sweep's case, Python) knows whether
+ * the gap was given, and gives a gap given at 1e-6 m the gap's refusal. */
 int gw_layer_impact_fall_check(const gw_layer_impact_params *ip, double g, gw_err *err);
 
 /* The gap's checks: gw_layer_impact_fall_check, then the sideways drift. The
@@ -830,14 +841,17 @@ int gw_layer_sweep_run_part(int nkeys, const char *const *names, const char *con
  * run only to rounding (the summation order of the contact forces); but the
  * same discs grouped into other clumps are another pile. Nor the records a
  * run does not read (seed, porosity, volume_ratio). 0 for s NULL, for a
- * sample no run takes (the form of gw_layer_impact_check's sample, not its
- * other limits: n < 1 or above 1e7, x, y or r NULL, a
- * particle of x, y or r not finite or r <= 0 (hashed before session 35), a
- * body id outside [0, n), a negative n_springs, springs counted without their
- * array or a spring's pair out of range; before session 34 such a sample was
- * read through its NULL arrays or hashed as another one), or when the bodies
- * of a clump sample cannot be gathered (out of memory for 9 bytes a
- * particle); never fails otherwise. */
+ * sample no run takes (every limit gw_layer_impact_check holds its sample to,
+ * the reader's: n < 1 or above 1e7, x, y or r NULL, a particle of x, y or r
+ * not finite or r <= 0 (hashed before session 35), a body id outside [0, n),
+ * a negative n_springs, springs counted without their array or a spring's
+ * pair out of range (before session 34 such a sample was read through its
+ * NULL arrays or hashed as another one); rm or width outside their scales, a
+ * radius outside [1e-3, 1e3] R_m, a disc outside the box beyond 0.02 r or
+ * above 1e6 R_m, a clump not connected, two discs more than 0.05 R_p inside
+ * each other (hashed, the form alone checked, before session 44)), or out of
+ * memory (gathering the bodies of a clump sample, 9 bytes a particle, or the
+ * overlap check's grid); never fails otherwise. */
 unsigned long long gw_layer_sample_pile_hash(const gw_layer_sample *s);
 
 GW_END_DECLS

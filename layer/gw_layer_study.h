@@ -45,7 +45,8 @@ typedef struct gw_layer_impact_setup {
     double alpha;          /* incidence from the normal, deg [0] */
     double x;              /* impact abscissa from the box centre, m [0] */
     double height_rm;      /* mobile layer height in R_m [0 = all] */
-    double gap;            /* initial block-target gap, m [1e-6] */
+    double gap;            /* initial block-target gap, m (optional: NaN not given, so that a
+                              gap given at the default's value is told from none) [1e-6] */
     double t_max;          /* s [2] */
     double dt_out;         /* s [2e-5] */
     double ring_width;     /* crown width, m [0 = 2 R_m] */

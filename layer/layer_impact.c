@@ -155,22 +155,21 @@ int gw_layer_impact_check(const gw_layer_sample *smp, const gw_layer_impact_para
         return gw_err_set(err, GW_EINVAL, "gw_layer_impact_check: %s is NULL", !smp ? "s" : "ip");
     /* the limits every sample is held to (the reader's: a disc outside the
      * box, of a radius 1e6 R_m, or two at one place ran before session 43) */
-    int rc = layer_sample_shape_check(smp, "s", err);
-    if (rc != GW_OK)
-        return rc;
-    /* the sample as the run builds its layer from it (gw_layer_create: the
-     * walls it keeps, the clumps) and starts its springs: the check passed a
-     * centre outside the walls, a clump of discs apart and a NaN spring that
-     * the run refused only later (a sweep's check passed the cases its run
-     * stopped on) */
-    for (int i = 0; !p->remove_walls && i < smp->n; i++) {
-        const gw_layer_body b = {.x = smp->x[i], .y = smp->y[i], .r = smp->r[i]};
-        if ((rc = layer_particle_check(&b, i, GW_LAYER_WALLS_ALL, smp->width, "sample 's': particle", err)) !=
-            GW_OK)
-            return rc;
-    }
-    if ((rc = layer_bodies_check(smp->n, smp->x, smp->y, smp->r, smp->body, "sample 's'", GW_EINVAL, err)) != GW_OK)
-        return rc;
+    const int rc = layer_sample_shape_check(smp, "s", err);
+    return rc == GW_OK ? layer_impact_params_check(smp, p, err) : rc;
+}
+
+int layer_impact_params_check(const gw_layer_sample *smp, const gw_layer_impact_params *p, gw_err *err)
+{
+    /* The sample as the run builds its layer from it (gw_layer_create) is the
+     * shared check's (layer_sample_limits_check), one rule per property: each
+     * disc inside the box to 0.02 r, walls or none, so its centre inside the
+     * walls gw_layer_create keeps; its clumps connected. (Until session 44 a
+     * second loop held the centres to the walls exactly and the clumps were
+     * checked again: neither could refuse what the shared check passed.) Its
+     * springs as the run starts them: a NaN spring was refused by the run
+     * only (a sweep's check passed the cases its run stopped on). */
+    int rc;
     if (!p->zero_springs && smp->n_springs != 0 && (rc = layer_springs_check(smp, "s", NULL, GW_EINVAL, err)) != GW_OK)
         return rc;
     if (!(p->rb_rm > 0) || !isfinite(p->rb_rm))
@@ -295,6 +294,13 @@ int gw_layer_impact_fall_check(const gw_layer_impact_params *ip, double g, gw_er
 {
     if (!ip)
         return gw_err_set(err, GW_EINVAL, "gw_layer_impact_fall_check: ip is NULL");
+    /* (the struct cannot tell a gap set to the default's value from one left
+     * at it: the default's wording for both; the setup knows, layer_setup.c) */
+    return layer_impact_fall_rule(ip, g, ip->gap == gw_layer_impact_params_default().gap, err);
+}
+
+int layer_impact_fall_rule(const gw_layer_impact_params *ip, double g, int gap_default, gw_err *err)
+{
     if (!(isfinite(g) && g >= 0)) /* a NaN g passed as no gravity */
         return gw_err_set(err, GW_EINVAL, "gravity: %g m/s^2 is not a finite number >= 0", g);
     /* --gap 1 --vi 1 arrived at 4.54 m/s: e_n 0.86 and e 1.83 over V_i = 1,
@@ -310,8 +316,9 @@ int gw_layer_impact_fall_check(const gw_layer_impact_params *ip, double g, gw_er
     /* the default gap (1 um, not given): the speed is what the caller gave,
      * and the refusal is of it, naming the default and the smallest speed
      * that runs with it (it said "gap: falling 1e-06 m ... lower gap", of a
-     * gap never given) */
-    if (ip->gap == gw_layer_impact_params_default().gap) {
+     * gap never given). A gap given, at the default's value too, is the
+     * gap's refusal (--gap 1e-6 was told "the default gap" until session 44) */
+    if (gap_default) {
         char vis[32];
         return gw_err_set(err, GW_EINVAL, "vi: %s m/s is too slow for the default gap of %g m: "
                           "falling it (g = %g m/s^2) the block meets the layer at %.4g m/s normal speed, not %.4g "
@@ -353,9 +360,14 @@ int gw_layer_impact_gap_check(const gw_layer_sample *smp, const gw_layer_impact_
     if (!smp || !p)
         return gw_err_set(err, GW_EINVAL, "gw_layer_impact_gap_check: %s is NULL", !smp ? "s" : "ip");
     /* (its rm, read below: a NaN rm passed every gap before session 43) */
-    int rc = layer_sample_shape_check(smp, "s", err);
-    if (rc == GW_OK)
-        rc = gw_layer_impact_fall_check(p, g, err);
+    const int rc = layer_sample_shape_check(smp, "s", err);
+    return rc == GW_OK ? layer_impact_gap_rules(smp, p, g, p->gap == gw_layer_impact_params_default().gap, err) : rc;
+}
+
+int layer_impact_gap_rules(const gw_layer_sample *smp, const gw_layer_impact_params *p, double g, int gap_default,
+                           gw_err *err)
+{
+    const int rc = layer_impact_fall_rule(p, g, gap_default, err);
     if (rc != GW_OK)
         return rc;
     /* The block is lowered vertically onto its target at x, then sent along
@@ -398,8 +410,7 @@ int gw_layer_impact_rest_check(const gw_layer_sample *smp, const gw_layer_params
     const int rc = layer_sample_shape_check(smp, name ? name : "s", err);
     if (rc != GW_OK)
         return rc;
-    return layer_rest_check(smp, lp, 0, name, smp->settled.recorded ? gw_layer_settled_load_ratio(smp, lp) : NAN,
-                            err);
+    return layer_rest_check(smp, lp, 0, name, layer_settled_load_ratio(smp, lp), err);
 }
 
 int layer_rest_check(const gw_layer_sample *smp, const gw_layer_params *lp, int other_settling, const char *name,
@@ -472,6 +483,11 @@ double gw_layer_impact_dem_dt(const gw_layer_sample *s, const gw_layer_params *l
      * at one place got a step, a speed of 0 an infinite one) */
     if (!s || !lp || !ip || gw_layer_impact_check(s, ip, NULL) != GW_OK)
         return NAN;
+    return layer_impact_dem_dt(s, lp, ip);
+}
+
+double layer_impact_dem_dt(const gw_layer_sample *s, const gw_layer_params *lp, const gw_layer_impact_params *ip)
+{
     double rmin = INFINITY;
     for (int i = 0; i < s->n; i++) {
         if (!(s->r[i] > 0) || !isfinite(s->r[i])) /* fmin passed over a NaN radius: the others' step */
@@ -616,9 +632,17 @@ int layer_impact_run(const gw_layer_sample *smp, const gw_layer_params *lp0, con
                           !smp ? "s" : !lp0 ? "lp" : !ip ? "ip" : !type ? "type" : !sp ? "sp" : "res");
     }
     memset(res, 0, sizeof *res);
-    int rc = gw_layer_impact_check(smp, ip, err);
+    /* the sample checked once (layer_sample_shape_check; a plan's, found
+     * given, by the reader that read it), then the rules of
+     * gw_layer_impact_check, gw_layer_impact_gap_check, the step and the
+     * settling on it: each of those took the O(n) check again, 3 times a
+     * call of gw_layer_impact and 6 a run of the program until session 44,
+     * the overlap grid built each time */
+    int rc = found ? GW_OK : layer_sample_shape_check(smp, "s", err);
     if (rc == GW_OK)
-        rc = gw_layer_impact_gap_check(smp, ip, lp0->gravity, err);
+        rc = layer_impact_params_check(smp, ip, err);
+    if (rc == GW_OK)
+        rc = layer_impact_gap_rules(smp, ip, lp0->gravity, ip->gap == gw_layer_impact_params_default().gap, err);
     if (rc == GW_OK)
         rc = gw_layer_impact_step_check(ip, type, sp, err);
     /* (a sample built in memory: gw_layer_impact_check holds its springs to
@@ -711,7 +735,7 @@ int layer_impact_run(const gw_layer_sample *smp, const gw_layer_params *lp0, con
      * the same trajectory, and a contact shorter than three samples had none. */
     gw_solver_params spu = *sp;
     if (type == gw_solver_verlet && !(spu.dt > 0)) {
-        spu.dt = gw_layer_impact_dem_dt(smp, &lp, ip);
+        spu.dt = layer_impact_dem_dt(smp, &lp, ip);
         /* a block so small that its mass, and with it the shortest contact
          * time, underflows (--rb-rm 1e-300): the step came out 0 and the
          * solver's set-up said "verlet: the fixed step dt must be set" */

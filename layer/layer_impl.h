@@ -355,13 +355,35 @@ void layer_floor_load(const gw_layer_params *lp, int n, const double *y, const d
  * gw_layer_impact_settled_check records); 0 is gw_layer_impact_rest_check. */
 int layer_rest_check(const gw_layer_sample *smp, const gw_layer_params *lp, int other_settling, const char *name,
                      double q, gw_err *err);
-/* gw_layer_impact_settled_check, and into *q gw_layer_settled_load_ratio of
- * smp under lp, found once (NaN: nothing recorded, or a refusal before it
- * was found): the ratio weighs a union-clump pile hit under clump-mass sum
- * (or the reverse) by building its model, 0.014 s for 150 clumps, and a run
- * needs it for the check, its result and the rest check. */
+/* gw_layer_impact_settled_check on a sample that passed the shared check
+ * (layer_sample_limits_check: smp and lp not NULL; the public call checks
+ * them, a run, the plan and the sweep's tally took it before), and into *q
+ * gw_layer_settled_load_ratio of smp under lp, found once (NaN: nothing
+ * recorded, or a refusal before it was found): the ratio weighs a union-clump
+ * pile hit under clump-mass sum (or the reverse) by building its model, 0.014
+ * s for 150 clumps, and a run needs it for the check, its result and the rest
+ * check. */
 int layer_settled_check_q(const gw_layer_sample *smp, const gw_layer_params *lp, int other_settling,
                           const char *name, char *warning, size_t n, double *q, gw_err *err);
+/* gw_layer_settled_load_ratio of a sample that passed the shared check. */
+double layer_settled_load_ratio(const gw_layer_sample *smp, const gw_layer_params *lp);
+
+/* The rules of the impact's public checks on a sample that passed the shared
+ * check (layer_sample_shape_check), so that a run takes that O(n) check once
+ * (layer_impact_run), each public check taking it first:
+ * layer_impact_params_check is gw_layer_impact_check's rules of the impact
+ * (springs unless zero_springs, block, speed, gap's range, times, x, height);
+ * layer_impact_gap_rules gw_layer_impact_gap_check's (the fall, the drift,
+ * the reach), layer_impact_fall_rule gw_layer_impact_fall_check's, with
+ * gap_default 1 when the gap is the default's, not given (the refusal of a
+ * slow impact then names vi and the default gap, else the gap): the public
+ * calls take a gap at the default's value as not given, the setup knows
+ * (layer_setup.c); layer_impact_dem_dt gw_layer_impact_dem_dt's step. */
+int layer_impact_params_check(const gw_layer_sample *smp, const gw_layer_impact_params *p, gw_err *err);
+int layer_impact_gap_rules(const gw_layer_sample *smp, const gw_layer_impact_params *p, double g, int gap_default,
+                           gw_err *err);
+int layer_impact_fall_rule(const gw_layer_impact_params *ip, double g, int gap_default, gw_err *err);
+double layer_impact_dem_dt(const gw_layer_sample *s, const gw_layer_params *lp, const gw_layer_impact_params *ip);
 /* layer_settling_found and layer_impact_run: layer_plan_run.h (the program
  * runs them too) */
 
@@ -593,7 +615,8 @@ int layer_settling_verdict_found(const gw_layer_sample *smp, const gw_layer_para
  * (and checked) into smp by gw_layer_sample_read: the rows and the resolution
  * against smp, for the sweep's check pass, which checks many setups of one
  * sample file (layer_setup.c; smp is only read); its settling verdict through
- * memo (may be NULL: found here). */
+ * memo (may be NULL: found here). The reader's check is the shared sample
+ * check (layer_sample_limits_check): the resolution does not take it again. */
 struct gw_layer_impact_setup;
 int layer_impact_setup_check_sample(const struct gw_layer_impact_setup *s, const gw_layer_sample *smp,
                                     layer_settling_memo *memo, gw_err *err);

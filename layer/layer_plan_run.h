@@ -29,7 +29,9 @@ int layer_impact_plan_make_found(const gw_layer_impact_setup *s, gw_layer_impact
 
 /* gw_layer_impact, its sample's settling under lp0 taken from found when the
  * plan found it (found NULL: checked here, once; gw_layer_impact is this with
- * NULL). */
+ * NULL). With found, smp is the plan's sample, as gw_layer_sample_read read
+ * it: the shared sample check (layer_sample_limits_check) is the reader's,
+ * not taken again; without, taken once here. */
 int layer_impact_run(const gw_layer_sample *smp, const gw_layer_params *lp0, const gw_layer_impact_params *ip,
                      const gw_solver_type *type, const gw_solver_params *sp, const layer_settling_found *found,
                      gw_layer_impact_result *res, gw_err *err);

@@ -119,9 +119,15 @@ int layer_sample_pile_hash(const gw_layer_sample *s, unsigned long long *out)
         return GW_OK;
     /* a sample no run takes is no pile: its x, y or r NULL was read (SIGSEGV),
      * a body id outside [0, n) hashed as a body of its own and springs counted
-     * without their array as none, each the hash of another sample */
-    if (layer_sample_form_check(s, "s", GW_EINVAL, NULL) != GW_OK)
-        return GW_EINVAL;
+     * without their array as none, each the hash of another sample. Since
+     * session 44 every limit of the shared check (layer_sample_limits_check,
+     * which each call that takes a sample applies), not the form alone: a
+     * disc outside the box, an rm of 1e-7 m or two discs at one place had a
+     * hash, which a caller could key results on, of a sample refused by
+     * every run, by the writer and by the reader */
+    const int rc = layer_sample_limits_check(s, "s", GW_EINVAL, NULL);
+    if (rc != GW_OK)
+        return rc == GW_ENOMEM ? GW_ENOMEM : GW_EINVAL;
     unsigned long long sum = 0;
     if (bodies_sum(s, &sum) != GW_OK)
         return GW_ENOMEM;

@@ -129,10 +129,17 @@ static int load_ratio(const gw_layer_sample *smp, const gw_layer_params *lp, dou
 
 double gw_layer_settled_load_ratio(const gw_layer_sample *smp, const gw_layer_params *lp)
 {
-    double q = NAN;
     gw_err e = {{0}};
     if (smp && lp && layer_sample_shape_check(smp, "s", &e) == GW_OK) /* (a NULL r was read: SIGSEGV) */
-        load_ratio(smp, lp, &q, &e);
+        return layer_settled_load_ratio(smp, lp);
+    return NAN;
+}
+
+double layer_settled_load_ratio(const gw_layer_sample *smp, const gw_layer_params *lp)
+{
+    double q = NAN;
+    gw_err e = {{0}};
+    load_ratio(smp, lp, &q, &e);
     return q;
 }
 
@@ -158,6 +165,14 @@ static double friction_ratio(double settled_deg, double impact_deg)
 int gw_layer_impact_settled_check(const gw_layer_sample *smp, const gw_layer_params *lp, int other_settling,
                                   const char *name, char *warning, size_t n, gw_err *err)
 {
+    if (warning && n > 0)
+        warning[0] = '\0';
+    if (!smp || !lp)
+        return gw_err_set(err, GW_EINVAL, "gw_layer_impact_settled_check: %s is NULL", !smp ? "s" : "lp");
+    /* the pile was weighed through a NULL r (SIGSEGV) */
+    const int src = layer_sample_shape_check(smp, name ? name : "s", err);
+    if (src != GW_OK)
+        return src;
     double q;
     return layer_settled_check_q(smp, lp, other_settling, name, warning, n, &q, err);
 }
@@ -168,12 +183,6 @@ int layer_settled_check_q(const gw_layer_sample *smp, const gw_layer_params *lp,
     if (warning && n > 0)
         warning[0] = '\0';
     *q_out = NAN;
-    if (!smp || !lp)
-        return gw_err_set(err, GW_EINVAL, "gw_layer_impact_settled_check: %s is NULL", !smp ? "s" : "lp");
-    /* the pile was weighed through a NULL r (SIGSEGV) */
-    const int src = layer_sample_shape_check(smp, name ? name : "s", err);
-    if (src != GW_OK)
-        return src;
     /* a pile written before it settled (its "settled:" line says converged
      * 0): the file keeps positions, not velocities, so the run starts it at
      * rest where it was moving, grains in the air among them. Measured on

@@ -37,8 +37,11 @@ static const gw_param impact_params[] = {
     ROW("height-rm", GW_PARAM_DOUBLE, height_rm, "", 0, 1e6, 0, 0, "0", "H",
         "mobile layer height in R_m; particles whose centre lies deeper are frozen (a clump with one such "
         "member whole), at least one left mobile [0 = all]"),
-    ROW("gap", GW_PARAM_DOUBLE, gap, "m", 0, 1e3, 0, 0, "1e-6", "G",
-        "initial block-target gap, m in [0, 1000] (< 0 would overlap the layer) [1e-6]"),
+    /* optional: a gap given at the default's value is told from none (a slow
+     * impact's refusal names vi and the default gap, or the gap given: an
+     * explicit --gap 1e-6 was told "the default gap" until session 44) */
+    GW_PARAM_OPT_ROW("gap", GW_PARAM_DOUBLE, OFF(gap), "m", 0, 1e3, 0, 0, "1e-6", "G",
+                     "initial block-target gap, m in [0, 1000] (< 0 would overlap the layer) [1e-6]"),
     /* an impact lasts milliseconds: 1000 s bounds a block that falls 1000 m
      * (gap) at the smallest speed, and a run's steps with it. The default
      * decides e_n (physics.md 2.3: the run ends at T_f, when the block's normal
@@ -434,7 +437,9 @@ static int resolve(const gw_layer_impact_setup *s, const gw_layer_sample *smp, g
     ip->alpha_deg = s->alpha;
     ip->x = s->x;
     ip->height_rm = s->height_rm;
-    ip->gap = s->gap;
+    const int gap_given = gw_param_given(gw_param_find(impact_params, "gap"), s);
+    if (gap_given)
+        ip->gap = s->gap;
     ip->t_max = s->t_max;
     ip->dt_out = s->dt_out;
     ip->ring_width = s->ring_width;
@@ -448,9 +453,12 @@ static int resolve(const gw_layer_impact_setup *s, const gw_layer_sample *smp, g
     if (ip->full && s->until >= 0)
         return gw_err_set(err, GW_EINVAL, "until: %s has no effect with full (which runs to t-max)",
                           gw_layer_until_name(s->until));
-    rc = gw_layer_impact_check(smp, ip, err);
+    /* the sample was read (gw_layer_sample_read: the shared check,
+     * layer_sample_limits_check, which gw_layer_impact_check and
+     * gw_layer_impact_gap_check take first): their rules alone */
+    rc = layer_impact_params_check(smp, ip, err);
     if (rc == GW_OK)
-        rc = gw_layer_impact_gap_check(smp, ip, s->gravity, err);
+        rc = layer_impact_gap_rules(smp, ip, s->gravity, !gap_given, err);
     if (rc == GW_OK)
         rc = gw_layer_impact_step_check(ip, *type, sp, err);
     /* the warning is the run's (gw_layer_impact keeps it in its result) */

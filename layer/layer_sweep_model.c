@@ -660,7 +660,7 @@ static double weigh(void **memo, int nk, const char *const *names, const char *c
     if (!hit) {
         gw_layer_impact_plan p;
         if (gw_layer_impact_plan_make(&s, &p, &e) == GW_OK) {
-            const double dem = gw_layer_impact_dem_dt(&p.sample, &p.lp, &p.ip);
+            const double dem = layer_impact_dem_dt(&p.sample, &p.lp, &p.ip); /* (the plan checked it) */
             found.bodies = p.sample.n + 1.0;
             found.step = p.type == gw_solver_rk4 ? (p.sp.dt > 0 ? p.sp.dt : 1e-6)
                                                  : p.type == gw_solver_verlet && p.sp.dt > 0 ? p.sp.dt : dem;

@@ -10,9 +10,15 @@
  *    box width: each hashes apart;
  *  3 what a run does not read hashes alike: seed, porosity, volume_ratio; -0
  *    as 0; a body column giving each disc its own id as none;
- *  4 NULL gives 0.
+ *  4 NULL gives 0, and so does a sample the sample check refuses (two discs
+ *    at one place, a disc 0.1 r into the floor; since session 44: hashed
+ *    before, the form alone checked).
+ * The samples are piles a run takes (a row of discs on the floor, each
+ * touching the next): until session 44 they were discs at random places,
+ * deep inside each other, which the hash took.
  * Units: m (the values are arbitrary: only their bits matter).
  */
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -21,19 +27,25 @@
 
 #define N 64
 
-/* A sample of N discs at random places and radii, clumps of 1 to 3 discs when
- * clumps (ids 0, 1, ...), the settling record set. */
+/* A sample of N discs of random radii on the floor, a row in which each disc
+ * overlaps the one before it by a random fraction of 0.002 of their radii'
+ * sum (at most 0.006 R_p: a settled pile's, within the sample limits' 0.05
+ * R_p, which the hash holds a sample to since session 44), so that any
+ * grouping of consecutive discs is a connected clump; clumps of 1 to 3 discs
+ * when clumps (ids 0, 1, ...), the settling record set. */
 static gw_layer_sample make(uint64_t seed, int clumps)
 {
     gw_layer_sample s;
     memset(&s, 0, sizeof s);
-    s.n = N, s.width = 1.5, s.rm = 0.01, s.volume_ratio = 2, s.porosity = 0.2, s.seed = 7;
+    s.n = N, s.width = 2.0, s.rm = 0.01, s.volume_ratio = 2, s.porosity = 0.2, s.seed = 7;
     s.x = malloc(3 * N * sizeof *s.x);
     s.y = s.x + N, s.r = s.x + 2 * N;
     for (int i = 0; i < N; i++) {
-        s.x[i] = (double)(gw_test_xorshift(&seed) % 1000000) * 1e-6;
-        s.y[i] = (double)(gw_test_xorshift(&seed) % 1000000) * 1e-6;
         s.r[i] = 0.005 + (double)(gw_test_xorshift(&seed) % 1000) * 1e-5;
+        s.y[i] = s.r[i];
+        const double f = (double)(gw_test_xorshift(&seed) % 1000) * 2e-6; /* in [0, 0.002) */
+        const double d = (s.r[i - (i > 0)] + s.r[i]) * (1 - f), dy = s.y[i] - s.y[i - (i > 0)];
+        s.x[i] = i == 0 ? s.r[0] + f : s.x[i - 1] + sqrt(d * d - dy * dy); /* centres d apart */
     }
     if (clumps) {
         s.body = malloc(N * sizeof *s.body);
@@ -124,16 +136,18 @@ int main(void)
     memcpy(e.x, d.x, 3 * N * sizeof *e.x);
     e.settled.density = 2000;
     GW_TEST_OK(gw_layer_sample_pile_hash(&e) != hd, "settled at another density: another pile");
-    e.settled = d.settled, e.width = 1.6;
+    e.settled = d.settled, e.width = 2.1;
     GW_TEST_OK(gw_layer_sample_pile_hash(&e) != hd, "another box width: another pile");
 
     /* 3 */
     e.width = d.width, e.seed = 8, e.porosity = 0.3, e.volume_ratio = 3;
     GW_TEST_OK(gw_layer_sample_pile_hash(&e) == hd, "seed, porosity, volume_ratio: not the pile");
-    e.x[0] = 0.0;
+    /* (no coordinate of a sample can be 0: a disc there lies outside the box;
+     * the settling's friction can) */
+    e.settled.friction_deg = 0.0;
     const unsigned long long h0 = gw_layer_sample_pile_hash(&e);
-    e.x[0] = -0.0;
-    GW_TEST_OK(gw_layer_sample_pile_hash(&e) == h0, "x -0 as 0");
+    e.settled.friction_deg = -0.0;
+    GW_TEST_OK(h0 != 0 && gw_layer_sample_pile_hash(&e) == h0, "the settling's friction -0 as 0");
     drop(&e);
     gw_layer_sample o = copy(&d);
     o.body = malloc(N * sizeof *o.body);
@@ -144,6 +158,14 @@ int main(void)
 
     /* 4 */
     gw_test_true(gw_layer_sample_pile_hash(NULL) == 0, "NULL: 0");
+    /* and a sample no run takes (session 44: the form alone was checked) */
+    gw_layer_sample b = copy(&d);
+    b.x[N / 2] = b.x[N / 2 - 1]; /* two discs at one place */
+    GW_TEST_OK(gw_layer_sample_pile_hash(&b) == 0, "two discs at one place: 0");
+    memcpy(b.x, d.x, 3 * N * sizeof *b.x);
+    b.y[3] = 0.9 * b.r[3]; /* 0.1 r into the floor */
+    GW_TEST_OK(gw_layer_sample_pile_hash(&b) == 0, "a disc 0.1 r into the floor: 0");
+    drop(&b);
     drop(&d), drop(&c);
     return gw_test_summary("test_layer_pile_hash");
 }

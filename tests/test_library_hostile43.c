@@ -24,6 +24,17 @@
  * and the same sample written to a text file by hand is refused by
  * gw_layer_sample_read with a message naming the same (the file route
  * agrees). A control row (the discs as built) passes every case.
+ * Session 44 (one sample check, one rule per property): the walls' rule is
+ * the box's, 0.02 r: a disc 0.01 r beyond the left or the right wall passes
+ * every call (and runs), 0.03 r beyond is refused by every call, walls kept
+ * or removed, with the one message of gw_layer_impact_check, byte for byte
+ * (the check held the centres to the walls too, a second rule that never
+ * refused what the box passed); gw_layer_impact_settled_check refuses what
+ * the others refuse (its check is now its own, the run's body taking the
+ * run's) and gw_layer_settled_load_ratio is NaN; gw_layer_sample_pile_hash
+ * is 0 for every refused row (it checked the form only and hashed a disc
+ * outside the box, an rm of 1e-7 m or two discs at one place), non-zero for
+ * the passing ones.
  */
 #define _POSIX_C_SOURCE 200809L
 #include <math.h>
@@ -67,6 +78,22 @@ static const bad_row rows[] = {
      "particles 0 and 1 overlap by 0.5 R_p, above 0.05 R_p", "particles 0 and 1 overlap by 0.5 R_p, above 0.05 R_p"},
     {"rm 1e-7 m", 4, 0, 1e-7, 0, "rm 1e-07 m is outside [1e-05, 1000] m", "rm 1e-07 m is outside [1e-05, 1000] m"},
     {"width 1e7 R_m", 5, 0, 1e6, 1, "width 1e+06 m is above 1e+06 R_m", "width 1e+06 m is above 1e+06 R_m"},
+    /* the walls' one rule, the box's 0.02 r (disc 0 at x 0.3, disc 2 at 0.7, r 0.1, box 1 wide) */
+    {"disc 0 0.01 r beyond the left wall (passes)", 0, 0, 0.099, 0, NULL, NULL},
+    {"disc 2 0.01 r beyond the right wall (passes)", 0, 2, 0.901, 0, NULL, NULL},
+    {"disc 2 0.01 r beyond the right wall, walls removed (passes)", 0, 2, 0.901, 1, NULL, NULL},
+    {"disc 0 0.03 r beyond the left wall", 0, 0, 0.097, 0,
+     "particle 0: particle outside the box (0 <= x <= 1, y >= 0) beyond the 0.02 R overlap tolerance",
+     "particle outside the box (0 <= x <= 1, y >= 0)"},
+    {"disc 2 0.03 r beyond the right wall", 0, 2, 0.903, 0,
+     "particle 2: particle outside the box (0 <= x <= 1, y >= 0) beyond the 0.02 R overlap tolerance",
+     "particle outside the box (0 <= x <= 1, y >= 0)"},
+    {"disc 2 0.03 r beyond the right wall, walls removed", 0, 2, 0.903, 1,
+     "particle 2: particle outside the box (0 <= x <= 1, y >= 0) beyond the 0.02 R overlap tolerance",
+     "particle outside the box (0 <= x <= 1, y >= 0)"},
+    {"disc 1 0.03 r into the floor", 1, 1, 0.097, 0,
+     "particle 1: particle outside the box (0 <= x <= 1, y >= 0) beyond the 0.02 R overlap tolerance",
+     "particle outside the box (0 <= x <= 1, y >= 0)"},
 };
 #define NROWS (sizeof rows / sizeof rows[0])
 
@@ -159,15 +186,59 @@ static int c_porosity(void)
     return 0;
 }
 
+/* rc and e the row's refusal with gw_layer_impact_check's message to the
+ * byte (ec), or GW_OK for a row that passes */
+static int as_check(int rc, const gw_err *e, const gw_err *ec)
+{
+    if (!as_row(rc, e))
+        return 0;
+    if (row->named && strcmp(e->msg, ec->msg) != 0) {
+        printf("message '%s', the check's '%s'\n", e->msg, ec->msg);
+        return 0;
+    }
+    return 1;
+}
+
 static int c_rest_gap(void)
 {
     hand_sample h;
     hand(&h);
     gw_layer_impact_params ip = impact();
     gw_layer_params lp = gw_layer_params_default();
-    gw_err e = {{0}};
-    EXPECT(as_row(gw_layer_impact_rest_check(&h.s, &lp, "s", &e), &e));
-    EXPECT(as_row(gw_layer_impact_gap_check(&h.s, &ip, lp.gravity, &e), &e));
+    gw_err e = {{0}}, ec = {{0}};
+    (void)gw_layer_impact_check(&h.s, &ip, &ec);
+    EXPECT(as_check(gw_layer_impact_rest_check(&h.s, &lp, "s", &e), &e, &ec));
+    EXPECT(as_check(gw_layer_impact_gap_check(&h.s, &ip, lp.gravity, &e), &e, &ec));
+    return 0;
+}
+
+/* the settling's checks on a sample recording the default material's settling */
+static int c_settled(void)
+{
+    hand_sample h;
+    hand(&h);
+    gw_layer_impact_params ip = impact();
+    gw_layer_params lp = gw_layer_params_default();
+    h.s.settled = (gw_layer_settled){.recorded = 1, .shear_modulus = lp.shear_modulus, .poisson = lp.poisson,
+                                     .friction_deg = lp.friction_deg, .density = lp.density, .gravity = lp.gravity,
+                                     .mass_law = lp.mass_law, .clump_mass = -1};
+    gw_err e = {{0}}, ec = {{0}};
+    char w[768];
+    (void)gw_layer_impact_check(&h.s, &ip, &ec);
+    EXPECT(as_check(gw_layer_impact_settled_check(&h.s, &lp, 0, "s", w, sizeof w, &e), &e, &ec));
+    const double q = gw_layer_settled_load_ratio(&h.s, &lp);
+    if (row->named ? !isnan(q) : !(fabs(q - 1) < 1e-12))
+        printf("load ratio %g\n", q);
+    return 0;
+}
+
+static int c_pile_hash(void)
+{
+    hand_sample h;
+    hand(&h);
+    const unsigned long long hs = gw_layer_sample_pile_hash(&h.s);
+    if (row->named ? hs != 0 : hs == 0)
+        printf("pile hash %016llx\n", hs);
     return 0;
 }
 
@@ -220,6 +291,8 @@ int main(void)
         {"gw_layer_impact_dem_dt", c_dem_dt},
         {"gw_layer_sample_porosity", c_porosity},
         {"gw_layer_impact_rest_check, gw_layer_impact_gap_check", c_rest_gap},
+        {"gw_layer_impact_settled_check, gw_layer_settled_load_ratio", c_settled},
+        {"gw_layer_sample_pile_hash", c_pile_hash},
         {"gw_layer_sample_write", c_write},
         {"the file route: gw_layer_sample_read", c_file},
     };

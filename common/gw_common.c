@@ -228,21 +228,14 @@ char *gw_num_bound(char *buf, size_t n, double x, int upper)
     return buf;
 }
 
-/* One end of an interval as text, as the range messages print bounds: a
- * number the range holds (gw_num_bound) */
-static void bound_text(char *buf, size_t n, double x, int upper)
-{
-    gw_num_bound(buf, n, x, upper);
-}
-
 /* Interval [a, b] ("(" / ")" for open ends) as "a value in [a, b]", or
  * ">= a", "< b" when the other end is unbounded, appended to buf. */
 static void interval_text(char *buf, size_t n, double a, int open_a, double b, int open_b)
 {
     char as[32], bs[32];
     size_t used = strlen(buf);
-    bound_text(as, sizeof as, a, 0);
-    bound_text(bs, sizeof bs, b, 1);
+    gw_num_bound(as, sizeof as, a, 0); /* as the range messages print bounds */
+    gw_num_bound(bs, sizeof bs, b, 1);
     if (isinf(a) && isinf(b))
         gw_snprintf(buf + used, n - used, "any value");
     else if (isinf(b))

@@ -88,10 +88,13 @@ static int set_value(const char *cmd, gw_opt *o, const char *val, gw_err *err)
         if ((rc = gw_parse_double_in(val, name, &r, &v, err)) != GW_OK)
             return rc;
         if (v < o->lo || v > o->hi || (o->open_lo && !(v > o->lo)) || (o->open_hi && !(v < o->hi))) {
+            char ls[32], hs[32]; /* numbers the range holds (gw_num_bound) */
+            gw_num_bound(ls, sizeof ls, o->lo, 0);
+            gw_num_bound(hs, sizeof hs, o->hi, 1);
             if (o->open_lo && !isfinite(o->hi))
-                return gw_err_set(err, GW_EINVAL, "%s: %s must be > %g", name, val, o->lo);
-            return gw_err_set(err, GW_EINVAL, "%s: %s is outside %s%g, %g%s", name, val,
-                              o->open_lo ? "(" : "[", o->lo, o->hi, o->open_hi ? ")" : "]");
+                return gw_err_set(err, GW_EINVAL, "%s: %s must be > %s", name, val, ls);
+            return gw_err_set(err, GW_EINVAL, "%s: %s is outside %s%s, %s%s", name, val,
+                              o->open_lo ? "(" : "[", ls, hs, o->open_hi ? ")" : "]");
         }
         *(double *)o->dest = v;
         break;

@@ -658,7 +658,8 @@ static void say_error(const gw_err *err)
 
 /* What a run would do now, after `--check` read the journal in out: start,
  * resume (ndone of ncases done; a torn last row of torn bytes cut and its case
- * run again, or a torn line of the head, torn_head, cut), or write the table
+ * run again, or a torn line of the head, torn_head 1, or a zeroed end,
+ * torn_head 2, cut), or write the table
  * only. */
 static void check_report(const char *out, long ncases, int exists, long ndone, size_t torn, int torn_head)
 {
@@ -669,7 +670,10 @@ static void check_report(const char *out, long ncases, int exists, long ndone, s
     printf("sweep: %s/journal.csv: %ld of %ld cases done", out, ndone, ncases);
     if (ndone < ncases)
         printf(", %ld to run on a resume", ncases - ndone);
-    if (torn && torn_head)
+    if (torn && torn_head == 2)
+        printf("; its zeroed end (%zu NUL byte%s after its last line, a power cut's) is cut then, no case to run "
+               "again for it", torn, torn == 1 ? "" : "s");
+    else if (torn && torn_head)
         printf("; the torn last line of its head (%zu byte%s) is cut then, no case to run again for it", torn,
                torn == 1 ? "" : "s");
     else if (torn)

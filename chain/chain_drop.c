@@ -30,6 +30,7 @@
 #include "gw_chain.h"
 #include "chain_model.h"
 #include "gw_locale.h"
+#include "gw_number_impl.h"
 
 gw_chain_drop_params gw_chain_drop_params_default(void)
 {
@@ -75,9 +76,9 @@ int gw_chain_drop_params_validate(const gw_chain_drop_params *p, gw_err *err)
         return rc;
     for (int i = 0; p->gaps && i < p->chain.n - 1; i++)
         if (!(p->gaps[i] >= 0 && p->gaps[i] <= GW_CHAIN_DROP_GAP_MAX)) {
-            char xs[32];
-            return gw_err_set(err, GW_EINVAL, "gap %d (m): %s is outside [0, %g]", i + 1,
-                              gw_num_text(xs, sizeof xs, p->gaps[i]), GW_CHAIN_DROP_GAP_MAX);
+            char xs[32], hs[32];
+            return gw_err_set(err, GW_EINVAL, "gap %d (m): %s is outside [0, %s]", i + 1,
+                              gw_num_text(xs, sizeof xs, p->gaps[i]), gw_num_bound(hs, sizeof hs, GW_CHAIN_DROP_GAP_MAX, 1));
         }
     gw_chain_params q = p->chain;
     q.v_imp = sqrt(2.0 * q.gravity * p->height);

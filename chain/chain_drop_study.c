@@ -24,6 +24,7 @@
 #include "chain_model.h"
 #include "chain_wall.h"
 #include "gw_locale.h"
+#include "gw_number_impl.h"
 
 /* ---- the table of the inputs: the drop's rows, then the column's with the
  * drop's gravity, t-max and dt-out ---- */
@@ -364,10 +365,11 @@ int gw_chain_drop_study_run(const gw_chain_drop_setup *s, gw_progress_fn progres
     const double t_max = res.run.t_max;
     const double dt_out = s->col.dt_out > 0 ? s->col.dt_out : fmin(1e-6, t_max);
     if (dt_out < t_max * 1e-7 || dt_out > t_max) {
-        char xs[32];
+        char xs[32], ls[32], hs[32];
         gw_chain_resolved_free(&res);
-        return gw_err_set(err, GW_EINVAL, "dt-out: %s s is outside [t-max/1e7, t-max] = [%g, %g]",
-                          gw_num_text(xs, sizeof xs, dt_out), t_max * 1e-7, t_max);
+        return gw_err_set(err, GW_EINVAL, "dt-out: %s s is outside [t-max/1e7, t-max] = [%s, %s]",
+                          gw_num_text(xs, sizeof xs, dt_out), gw_num_bound(ls, sizeof ls, t_max * 1e-7, 0),
+                          gw_num_bound(hs, sizeof hs, t_max, 1));
     }
     /* with trace = 1 (the program: --out) every bead's x and v are kept at each
      * sample and event: --n 1000 --t-max 1 --dt-out 1e-7 --out grew past 1.3 GB

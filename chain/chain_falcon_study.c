@@ -22,6 +22,7 @@
 #include "chain_model.h"
 #include "chain_watch.h"
 #include "gw_locale.h"
+#include "gw_number_impl.h"
 
 int gw_chain_falcon_analyse(const gw_chain_params *p, double v, const gw_chain_result *res, int n_lo,
                              int n_hi, gw_chain_falcon_fit *a)
@@ -444,14 +445,15 @@ int gw_chain_falcon_speeds(const double *vimp, int n_vimp, const double *heights
         int is_h = i >= n_vimp, k = is_h ? i - n_vimp + 1 : i + 1;
         double x = is_h ? heights_mm[i - n_vimp] : vimp[i];
         double lo = is_h ? GW_CHAIN_HEIGHT_MIN_MM : GW_CHAIN_VIMP_MIN, hi = is_h ? GW_CHAIN_HEIGHT_MAX_MM : GW_CHAIN_VIMP_MAX;
-        char xs[32];
+        char xs[32], ls[32], hs[32];
         if (!(x >= lo && x <= hi)) /* the list parser's message (gw_parse_double_list_in) */
-            return gw_err_set(err, GW_EINVAL, "%s: item %d is %s, outside [%g, %g]", is_h ? "heights" : "vimp", k,
-                              gw_num_text(xs, sizeof xs, x), lo, hi);
+            return gw_err_set(err, GW_EINVAL, "%s: item %d is %s, outside [%s, %s]", is_h ? "heights" : "vimp", k,
+                              gw_num_text(xs, sizeof xs, x), gw_num_bound(ls, sizeof ls, lo, 0),
+                              gw_num_bound(hs, sizeof hs, hi, 1));
         if (is_h && g_fall != GW_CHAIN_G_EARTH && !(v[i] >= vlo && v[i] <= GW_CHAIN_VIMP_MAX))
             return gw_err_set(err, GW_EINVAL, "heights: item %d is %g mm: at gravity %g m/s^2 it falls to v = "
-                              "sqrt(2 g h) = %g m/s, outside the impact speeds [%g, %g] m/s", k, x, g_fall, v[i], vlo,
-                              GW_CHAIN_VIMP_MAX);
+                              "sqrt(2 g h) = %g m/s, outside the impact speeds [%s, %s] m/s", k, x, g_fall, v[i],
+                              gw_num_bound(ls, sizeof ls, vlo, 0), gw_num_bound(hs, sizeof hs, GW_CHAIN_VIMP_MAX, 1));
     }
     return gw_chain_study_speeds_check(v, nv, n_vimp, err);
 }

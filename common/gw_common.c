@@ -208,10 +208,24 @@ static int number_ends(const char *s, const char *end)
     return *end == '\0';
 }
 
-/* One end of an interval as text: %g, as the range messages print bounds */
-static void bound_text(char *buf, size_t n, double x)
+char *gw_num_bound(char *buf, size_t n, double x, int upper)
 {
-    gw_snprintf(buf, n, "%g", x);
+    if (!buf || n == 0)
+        return buf;
+    /* %g when the value it reads back lies on the range's side of x (x
+     * itself, or inside); else the six-digit value one step inside of it
+     * (x near a power of ten may need a second step); else every digit */
+    double c = x;
+    const double step = isfinite(x) && x != 0 ? pow(10.0, floor(log10(fabs(x))) - 5) : 0;
+    for (int i = 0; i < 3; i++) {
+        gw_snprintf(buf, n, "%g", c);
+        const double y = gw_strtod(buf, NULL);
+        if (!isfinite(x) || (upper ? y <= x : y >= x))
+            return buf;
+        c = upper ? y - step : y + step;
+    }
+    gw_snprintf(buf, n, "%.17g", x);
+    return buf;
 }
 
 /* Interval [a, b] ("(" / ")" for open ends) as "a value in [a, b]", or
@@ -220,8 +234,8 @@ static void interval_text(char *buf, size_t n, double a, int open_a, double b, i
 {
     char as[32], bs[32];
     size_t used = strlen(buf);
-    bound_text(as, sizeof as, a);
-    bound_text(bs, sizeof bs, b);
+    gw_num_bound(as, sizeof as, a, 0); /* as the range messages print bounds */
+    gw_num_bound(bs, sizeof bs, b, 1);
     if (isinf(a) && isinf(b))
         gw_snprintf(buf + used, n - used, "any value");
     else if (isinf(b))
@@ -308,7 +322,17 @@ int gw_parse_double(const char *s, const char *name, double *out, gw_err *err)
     return gw_parse_double_in(s, name, NULL, out, err);
 }
 
-int gw_parse_long(const char *s, const char *name, long lo, long hi, long *out, gw_err *err)
+char *gw_int_give(char *buf, size_t n, long lo, long hi, int or_zero)
+{
+    if (!buf || n == 0)
+        return buf;
+    buf[0] = '\0';
+    if (lo > LONG_MIN || hi < LONG_MAX)
+        gw_snprintf(buf, n, " (give %san integer in [%ld, %ld])", or_zero ? "0 or " : "", lo, hi);
+    return buf;
+}
+
+int gw_parse_long_in(const char *s, const char *name, long lo, long hi, int or_zero, long *out, gw_err *err)
 {
     if (!out) /* as gw_parse_double (it was written through: SIGSEGV) */
         return gw_err_set(err, GW_EINVAL, "gw_parse_long: out is NULL");
@@ -317,12 +341,23 @@ int gw_parse_long(const char *s, const char *name, long lo, long hi, long *out, 
     char *end = NULL;
     errno = 0;
     long v = strtol(s, &end, 10);
-    if (!number_ends(s, end))
-        return gw_err_set(err, GW_EINVAL, "%s: '%s' is not an integer", name, s);
+    if (!number_ends(s, end)) {
+        /* the values the input takes, as a real number's refusal gives them
+         * (1e-310 was "not an integer", naming no range) */
+        char give[96];
+        return gw_err_set(err, GW_EINVAL, "%s: '%s' is not an integer%s", name, s, gw_int_give(give, sizeof give, lo, hi, or_zero));
+    }
+    if (or_zero && errno == 0 && v == 0)
+        return *out = 0, GW_OK;
     if (errno == ERANGE || v < lo || v > hi)
         return gw_err_set(err, GW_EINVAL, "%s: %s is outside [%ld, %ld]", name, s, lo, hi);
     *out = v;
     return GW_OK;
+}
+
+int gw_parse_long(const char *s, const char *name, long lo, long hi, long *out, gw_err *err)
+{
+    return gw_parse_long_in(s, name, lo, hi, 0, out, err);
 }
 
 int gw_check_range(double x, const char *name, double lo, double hi, gw_err *err)
@@ -339,7 +374,9 @@ int gw_check_range(double x, const char *name, double lo, double hi, gw_err *err
     if (x < lo || x > hi)
     {
         char xs[32];
-        return gw_err_set(err, GW_EINVAL, "%s: %s is outside [%g, %g]", name, gw_num_text(xs, sizeof xs, x), lo, hi);
+        char ls[32], hs[32];
+        return gw_err_set(err, GW_EINVAL, "%s: %s is outside [%s, %s]", name, gw_num_text(xs, sizeof xs, x),
+                          gw_num_bound(ls, sizeof ls, lo, 0), gw_num_bound(hs, sizeof hs, hi, 1));
     }
     return GW_OK;
 }
@@ -401,13 +438,15 @@ int gw_parse_double_list_range(const char *s, const char *name, const gw_num_ran
             break;
         double x = v[count];
         if (x < lo || x > hi || (open_lo && !(x > lo))) {
-            char xs[32];
+            char xs[32], ls[32], hs[32];
             gw_num_text(xs, sizeof xs, x);
+            gw_num_bound(ls, sizeof ls, lo, 0);
+            gw_num_bound(hs, sizeof hs, hi, 1);
             if (open_lo && !isfinite(hi))
-                rc = gw_err_set(err, GW_EINVAL, "%s: item %d is %s, must be > %g", name, count + 1, xs, lo);
+                rc = gw_err_set(err, GW_EINVAL, "%s: item %d is %s, must be > %s", name, count + 1, xs, ls);
             else
-                rc = gw_err_set(err, GW_EINVAL, "%s: item %d is %s, outside %s%g, %g]", name,
-                                count + 1, xs, open_lo ? "(" : "[", lo, hi);
+                rc = gw_err_set(err, GW_EINVAL, "%s: item %d is %s, outside %s%s, %s]", name,
+                                count + 1, xs, open_lo ? "(" : "[", ls, hs);
             break;
         }
         count++;

@@ -101,7 +101,9 @@ int gw_warnings_add(char **list, const char *fmt, ...) __attribute__((format(pri
 
 /* Parse a whole string as a finite double; GW_EINVAL with a message otherwise. */
 int gw_parse_double(const char *s, const char *name, double *out, gw_err *err);
-/* Parse a whole string as an integer in [lo, hi]. */
+/* Parse a whole string as an integer in [lo, hi]; a text that is no integer
+ * is refused naming [lo, hi] ("n: '1.5' is not an integer (give an integer in
+ * [1, 100])"; no range when [lo, hi] is every long). */
 int gw_parse_long(const char *s, const char *name, long lo, long hi, long *out,
                   gw_err *err);
 /* Check that x is finite and lo <= x <= hi (use -INFINITY/INFINITY for open).

@@ -93,13 +93,15 @@ static int range_bad(const gw_param *p, double x, gw_err *err, const char *what)
     if (p->or_zero && x == 0)
         return GW_OK;
     const char *zero = p->or_zero ? " (or 0)" : "";
-    char xs[32];
+    char xs[32], ls[32], hs[32]; /* the ends as numbers the range holds (5.09684e+07 was above it) */
     gw_num_text(xs, sizeof xs, x);
+    gw_num_bound(ls, sizeof ls, p->min, 0);
+    gw_num_bound(hs, sizeof hs, p->max, 1);
     if (!isfinite(p->max))
-        return gw_err_set(err, GW_EINVAL, "%s: %s%s must be %s %g%s", p->name, what, xs,
-                          p->open_min ? ">" : ">=", p->min, zero);
-    return gw_err_set(err, GW_EINVAL, "%s: %s%s is outside %s%g, %g%s%s", p->name, what, xs,
-                      p->open_min ? "(" : "[", p->min, p->max, p->open_max ? ")" : "]", zero);
+        return gw_err_set(err, GW_EINVAL, "%s: %s%s must be %s %s%s", p->name, what, xs,
+                          p->open_min ? ">" : ">=", ls, zero);
+    return gw_err_set(err, GW_EINVAL, "%s: %s%s is outside %s%s, %s%s%s", p->name, what, xs,
+                      p->open_min ? "(" : "[", ls, hs, p->open_max ? ")" : "]", zero);
 }
 
 /* index of value in the comma-separated choices, -1 if absent */
@@ -170,6 +172,18 @@ static int subnormal_bad(const gw_param *p, double v, gw_err *err, const char *w
     return gw_num_subnormal_refused(p->name, text, &r, err);
 }
 
+/* The integers an int or long row takes: [*lo, *hi] (its open ends moved in,
+ * an int row's within int) */
+static void int_bounds(const gw_param *p, long *lo, long *hi)
+{
+    *lo = p->min <= (double)LONG_MIN ? LONG_MIN : (long)ceil(p->min) + (p->open_min && p->min == ceil(p->min));
+    *hi = p->max >= (double)LONG_MAX ? LONG_MAX : (long)floor(p->max) - (p->open_max && p->max == floor(p->max));
+    if (p->type == GW_PARAM_INT) {
+        *lo = *lo < INT_MIN ? INT_MIN : *lo;
+        *hi = *hi > INT_MAX ? INT_MAX : *hi;
+    }
+}
+
 static int set_number(const gw_param *p, void *obj, double v, const char *text, gw_err *err)
 {
     if (!isfinite(v))
@@ -192,9 +206,15 @@ static int set_number(const gw_param *p, void *obj, double v, const char *text, 
     case GW_PARAM_INT:
     case GW_PARAM_LONG:
         if (v != floor(v) || fabs(v) > (p->type == GW_PARAM_INT ? (double)INT_MAX : 9.0e18)) {
+            long lo, hi; /* the integers the row takes, as the text path names them (gw_parse_long_in) */
+            int_bounds(p, &lo, &hi);
+            char give[96];
+            gw_int_give(give, sizeof give, lo, hi, p->or_zero);
             if (text)
-                return gw_err_set(err, GW_EINVAL, "%s: '%s' is not an integer", p->name, text);
-            return gw_err_set(err, GW_EINVAL, "%s: %g is not an integer", p->name, v);
+                return gw_err_set(err, GW_EINVAL, "%s: '%s' is not an integer%s", p->name, text, give);
+            char xs[32];
+            return gw_err_set(err, GW_EINVAL, "%s: %s is not an integer%s", p->name, gw_num_text(xs, sizeof xs, v),
+                              give);
         }
         if (p->type == GW_PARAM_INT)
             *(int *)field(obj, p) = (int)v;
@@ -208,16 +228,9 @@ static int set_number(const gw_param *p, void *obj, double v, const char *text, 
 
 static int set_integer_text(const gw_param *p, void *obj, const char *value, gw_err *err)
 {
-    long lo = p->min <= (double)LONG_MIN ? LONG_MIN : (long)ceil(p->min) + (p->open_min && p->min == ceil(p->min));
-    long hi = p->max >= (double)LONG_MAX ? LONG_MAX : (long)floor(p->max) - (p->open_max && p->max == floor(p->max));
-    if (p->type == GW_PARAM_INT) {
-        lo = lo < INT_MIN ? INT_MIN : lo;
-        hi = hi > INT_MAX ? INT_MAX : hi;
-    }
-    long v;
-    int rc = gw_parse_long(value, p->name, lo, hi, &v, err);
-    if (rc != GW_OK && p->or_zero && gw_parse_long(value, p->name, 0, 0, &v, NULL) == GW_OK)
-        rc = GW_OK; /* 0 besides the range */
+    long lo, hi, v;
+    int_bounds(p, &lo, &hi);
+    const int rc = gw_parse_long_in(value, p->name, lo, hi, p->or_zero, &v, err); /* 0 besides the range: or_zero */
     if (rc != GW_OK)
         return rc;
     if (p->type == GW_PARAM_INT)
@@ -311,10 +324,11 @@ static int set_text(const gw_param *t, const gw_param *p, void *obj, const char 
             return rc;
         for (int k = 0; p->open_max && k < n; k++) /* the parser's upper end is closed */
             if (!(v[k] < p->max)) {
-                char xs[32]; /* the item (the bound was printed as the item) */
+                char xs[32], hs[32]; /* the item (the bound was printed as the item) */
                 gw_num_text(xs, sizeof xs, v[k]);
                 free(v);
-                return gw_err_set(err, GW_EINVAL, "%s: item %d is %s, must be < %g", p->name, k + 1, xs, p->max);
+                return gw_err_set(err, GW_EINVAL, "%s: item %d is %s, must be < %s", p->name, k + 1, xs,
+                                  gw_num_bound(hs, sizeof hs, p->max, 1));
             }
         gw_param_list *l = field(obj, p);
         free(l->v);

@@ -24,7 +24,7 @@
  * layer_sample_porosity.c).
  * Units: SI (m).
  */
-#define _POSIX_C_SOURCE 200809L /* fileno, fstat */
+#define _GNU_SOURCE /* fileno, fstat, pread; SEEK_HOLE (layer_sample_file_check) */
 #include <errno.h>
 #include <limits.h>
 #include <math.h>
@@ -32,6 +32,7 @@
 #include <string.h>
 #include <strings.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include "layer_sample_impl.h"
 #include "gw_locale.h"
@@ -676,6 +677,41 @@ static int sample_open(const char *path, FILE **fp, unsigned char pre[8], size_t
     return GW_OK;
 }
 
+/* A text sample's zeros past the first 64 KiB, found without reading up to
+ * them: a hole (SEEK_HOLE: bytes never written, a sparse file's) or a NUL
+ * byte in its last ZEROS_TAIL bytes (a file extended or zero-filled after its
+ * text). A valid header and particles over 64 KiB, then 4 GiB of sparse zeros,
+ * passed the look at its head, were hashed whole by a sweep (seconds) and
+ * refused by the reader only then. GW_OK, or GW_EFORMAT naming the file, its
+ * size and the byte; the read offset of fd is left as it was. */
+#define ZEROS_TAIL 4096
+static int text_zeros_check(int fd, const char *path, gw_err *err)
+{
+    struct stat st;
+    if (fstat(fd, &st) != 0 || !S_ISREG(st.st_mode) || st.st_size <= 0)
+        return GW_OK;
+    const unsigned long long size = (unsigned long long)st.st_size;
+#ifdef SEEK_HOLE
+    const off_t was = lseek(fd, 0, SEEK_CUR);
+    const off_t hole = was >= 0 ? lseek(fd, 0, SEEK_HOLE) : -1;
+    if (was >= 0)
+        lseek(fd, was, SEEK_SET);
+    if (hole >= 0 && (unsigned long long)hole < size)
+        return gw_err_set(err, GW_EFORMAT, "sample '%s': %llu bytes, and its bytes from %llu on are a hole (never "
+                          "written, read as NUL bytes: a sparse file): not a text sample", path, size,
+                          (unsigned long long)hole + 1);
+#endif
+    unsigned char tail[ZEROS_TAIL];
+    const off_t from = st.st_size > ZEROS_TAIL ? st.st_size - ZEROS_TAIL : 0;
+    const ssize_t got = pread(fd, tail, sizeof tail, from);
+    const unsigned char *z = got > 0 ? memchr(tail, 0, (size_t)got) : NULL;
+    if (z)
+        return gw_err_set(err, GW_EFORMAT, "sample '%s': %llu bytes, and its byte %llu is a NUL byte, near its end "
+                          "(zeros after its text, or binary data): not a text sample", path, size,
+                          (unsigned long long)from + (unsigned long long)(z - tail) + 1);
+    return GW_OK;
+}
+
 int layer_sample_file_check(const char *path, gw_err *err)
 {
     if (!path)
@@ -697,7 +733,8 @@ int layer_sample_file_check(const char *path, gw_err *err)
 #endif
     }
     /* text: the reader refuses a NUL byte wherever it is; the first 64 KiB
-     * are looked at here (the whole file is read by the reader alone) */
+     * are looked at here, then its holes and its last bytes
+     * (text_zeros_check); the whole file is read by the reader alone */
     unsigned char buf[4096];
     long line = 1, left = 16;
     size_t got = npre;
@@ -715,6 +752,8 @@ int layer_sample_file_check(const char *path, gw_err *err)
         got = --left > 0 ? fread(buf, 1, sizeof buf, fp) : 0;
     }
     rc = ferror(fp) ? gw_err_set(err, GW_EIO, "sample '%s': read failed", path) : GW_OK;
+    if (rc == GW_OK)
+        rc = text_zeros_check(fileno(fp), path, err);
     fclose(fp);
     return rc;
 }

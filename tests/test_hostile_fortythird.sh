@@ -35,38 +35,14 @@
 hostile_setup "$@"
 export LC_ALL=C
 
-make_sample s20.txt --n 20 --width-rm 8
-cp "$SRC/data/measured/layer_walls/results.csv" results.csv
+# shellcheck source=flags_lib.sh
+. "$2/tests/flags_lib.sh"
+flags_setup
 M=2.2251e-308
 
 # ere TEXT: TEXT as an extended regular expression matching it literally
 ere() { printf '%s' "$1" | sed 's/[][().*^$+?{}|\\]/\\&/g'; }
 
-# base CMD: a command line of CMD that runs (or reaches its checks) quickly
-base() {
-    case $1 in
-        chain) echo "chain --n 2 --out o" ;;
-        falcon) echo "falcon --n 1:2 --heights none --quiet --jobs 1 --out o" ;;
-        wavespeed) echo "wavespeed --n 6:8 --vimp 0.3 --quiet --jobs 1 --out o" ;;
-        softwall) echo "softwall --n 1:3 --quiet --jobs 1 --out o" ;;
-        drop) echo "drop --n 2 --t-max 2e-4 --out o" ;;
-        dispersion) echo "dispersion --n 16 --t-samples 64 --out o" ;;
-        layer-make) echo "layer-make --n 10 --out o" ;;
-        layer-impact) echo "layer-impact --sample s20.txt --t-max 0.001 --quiet --out o" ;;
-        layer-stats) echo "layer-stats results.csv --out o" ;;
-        sweep) echo "sweep sw.ini --check --out o" ;;
-    esac
-}
-# without FLAG ARGS...: ARGS with FLAG and its value left out
-without() {
-    local f=$1 skip=0 a
-    shift
-    for a in "$@"; do
-        if [ $skip = 1 ]; then skip=0; continue; fi
-        if [ "$a" = "$f" ]; then skip=1; continue; fi
-        printf '%s\n' "$a"
-    done
-}
 # allowed RANGE: the values a range of a refusal ("outside [A, B]", "(A, B]",
 # "... (or 0)") takes that are 0 or normal doubles, in the words the refusal
 # of a subnormal gives them; status 1 for a RANGE not of that form
@@ -83,44 +59,35 @@ allowed() {
     esac
 }
 
-printf '[sweep]\nmodel = chain\n[grid]\nn = 1:2\n[params]\nsolver = rk4\n' >sw.ini
-
 # --- 1 a subnormal given to every numeric flag of every command ---
 declare -A hint
-for c in chain falcon wavespeed softwall drop dispersion layer-make layer-impact layer-stats sweep; do
-    mapfile -t b < <(base "$c" | tr ' ' '\n')
-    # the flags that take a value other than a name, a file or a directory
-    "$GW" "$c" --help >"$tmp/help" 2>&1
-    for f in $(grep -E '^ +--[a-z-]+ [A-Z]' "$tmp/help" |
-        grep -vE '^ +--[a-z-]+ (NAME|FILE|DIR|LAW|MODEL|HOW|KIND|WHAT|LIST) ' | awk '{print $1}'); do
-        # the studies take no --radii at all (refused whatever its value)
-        case "$c $f" in falcon\ --radii | wavespeed\ --radii | softwall\ --radii) continue ;; esac
-        mapfile -t args < <(without "$f" "${b[@]}")
-        list=0
-        grep -qE "^ +$f [A-Z]+,[A-Z]+\.\." "$tmp/help" && list=1
-        # the flag's range, from its refusal of 1e300
-        timeout -s KILL 20 "$GW" "${args[@]}" "$f" 1e300 >/dev/null 2>"$tmp/big" </dev/null
-        range=$(grep -oE 'outside [][(][^],)]+, [^])]+[])]( \(or 0\))?' "$tmp/big")
-        if want=$(allowed "$range"); then
-            hint["$c $f"]=$want
-            pat="^granwave $c $f: '-?[0-9.e-]+' is too small in magnitude: .*\\(give $(ere "$want")\\)$"
-        elif grep -qE "^granwave $c $f: '1e300' is not an integer" "$tmp/big"; then
-            pat="^granwave $c $f: '-?[0-9.e-]+' is not an integer" # the controls
-        else
-            ko "$c $f: no range found in its refusal of 1e300: $(head -c 200 "$tmp/big")"
-            continue
-        fi
-        for v in 1e-310 -1e-310; do
-            refused "$c $f $v" "$pat" "${args[@]}" "$f" "$v"
-        done
-        re_ab='([^][(, ]+), ([^])]+)]$'
-        if [ $list = 1 ] && [[ $range =~ $re_ab ]]; then # a list's second item (its first 1, or the upper bound)
-            first=$(awk -v a="${BASH_REMATCH[1]}" -v b="${BASH_REMATCH[2]}" 'BEGIN { print (a <= 1 && 1 <= b) ? 1 : b }')
-            refused "$c $f $first,-1e-320" "$pat" "${args[@]}" "$f" "$first,-1e-320"
-            refused "$c $f 4.9e-324" "$pat" "${args[@]}" "$f" 4.9e-324
-        fi
+# the flags that take a value other than a name, a file or a directory (flags_lib.sh)
+numeric_flags >"$tmp/flags"
+while read -r c f list; do
+    mapfile -t b < <(flag_base "$c")
+    mapfile -t args < <(flag_without "$f" "${b[@]}")
+    # the flag's range, from its refusal of 1e300
+    timeout -s KILL 20 "$GW" "${args[@]}" "$f" 1e300 >/dev/null 2>"$tmp/big" </dev/null
+    range=$(grep -oE 'outside [][(][^],)]+, [^])]+[])]( \(or 0\))?' "$tmp/big")
+    if want=$(allowed "$range"); then
+        hint["$c $f"]=$want
+        pat="^granwave $c $f: '-?[0-9.e-]+' is too small in magnitude: .*\\(give $(ere "$want")\\)$"
+    elif grep -qE "^granwave $c $f: '1e300' is not an integer" "$tmp/big"; then
+        pat="^granwave $c $f: '-?[0-9.e-]+' is not an integer" # the controls
+    else
+        ko "$c $f: no range found in its refusal of 1e300: $(head -c 200 "$tmp/big")"
+        continue
+    fi
+    for v in 1e-310 -1e-310; do
+        refused "$c $f $v" "$pat" "${args[@]}" "$f" "$v"
     done
-done
+    re_ab='([^][(, ]+), ([^])]+)]$'
+    if [ $list = 1 ] && [[ $range =~ $re_ab ]]; then # a list's second item (its first 1, or the upper bound)
+        first=$(awk -v a="${BASH_REMATCH[1]}" -v b="${BASH_REMATCH[2]}" 'BEGIN { print (a <= 1 && 1 <= b) ? 1 : b }')
+        refused "$c $f $first,-1e-320" "$pat" "${args[@]}" "$f" "$first,-1e-320"
+        refused "$c $f 4.9e-324" "$pat" "${args[@]}" "$f" 4.9e-324
+    fi
+done <"$tmp/flags"
 [ ${#hint[@]} -gt 80 ] && ok "real-number flags found: ${#hint[@]}" || ko "only ${#hint[@]} real-number flags found"
 
 # a sweep's values: the same words as the flag's

@@ -63,6 +63,12 @@ static int write_text(const char *path, const char *text)
     return fclose(f) == 0 && ok;
 }
 
+/* the layer sweep's config the parts read: two cases on sample */
+static void layer_config_text(char *text, size_t n, const char *sample)
+{
+    snprintf(text, n, "[sweep]\nmodel = layer\n[grid]\nvi = 10, 20\n[params]\nsample = %s\nt-max = 0.002\n", sample);
+}
+
 static void part_config(const char *dir)
 {
     char big[256], ini[256], text[1024];
@@ -75,8 +81,7 @@ static void part_config(const char *dir)
     FILE *f = fopen(big, "w");
     const int made = f && fclose(f) == 0 && truncate(big, 200LL << 30) == 0;
     gw_test_true(made, "a sparse 200 GB file");
-    snprintf(text, sizeof text, "[sweep]\nmodel = layer\n[grid]\nvi = 10, 20\n[params]\nsample = %s\nt-max = 0.002\n",
-             big);
+    layer_config_text(text, sizeof text, big);
     gw_test_true(write_text(ini, text), "the config written");
     int rc = gw_sweep_config_read(ini, layer, 1, &cfg, &m, &e);
     GW_TEST_OK(rc == GW_EINVAL && strstr(e.msg, big) && strstr(e.msg, "214748364800 bytes") &&
@@ -93,8 +98,7 @@ static void part_config_string(const char *dir)
     const gw_sweep_model *layer[] = {&gw_layer_sweep_model}, *m = NULL;
     gw_sweep_config cfg;
     gw_err e = {{0}};
-    snprintf(text, sizeof text, "[sweep]\nmodel = layer\n[grid]\nvi = 10, 20\n[params]\nsample = %s\nt-max = 0.002\n",
-             big);
+    layer_config_text(text, sizeof text, big);
     const int rc = gw_sweep_config_read_string(text, "sweep", layer, 1, &cfg, &m, &e);
     GW_TEST_OK(rc == GW_EINVAL && strstr(e.msg, big) && strstr(e.msg, "4294967296 bytes"),
                "gw_sweep_config_read_string (Python's sweep): the same (%d: %s)", rc, e.msg);
@@ -112,8 +116,7 @@ static void part_inputs_check(const char *dir)
     gw_sweep_config cfg;
     gw_err e = {{0}};
     gw_test_true(write_text(small, "granwave-layer-sample 1\n"), "a small text file as the sample");
-    snprintf(text, sizeof text, "[sweep]\nmodel = layer\n[grid]\nvi = 10, 20\n[params]\nsample = %s\nt-max = 0.002\n",
-             small);
+    layer_config_text(text, sizeof text, small);
     gw_test_true(write_text(sini, text), "its config written");
     int rc = gw_sweep_config_read(sini, layer, 1, &cfg, &m, &e);
     GW_TEST_OK(rc == GW_OK && cfg.ninputs == 1, "the config on the small sample is read, its sample an input (%d: %s)",

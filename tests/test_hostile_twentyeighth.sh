@@ -83,7 +83,7 @@ msg_ends "dispersion --wisdom (a 3990-character path to another file)" "not FFTW
 rm -rf hhh*
 msg_ends "chain --material (3000 two-byte characters)" "\\(steel brass aluminium glass pmma pvc\\)$" \
     "$GW" chain --material "$(printf '\303\251%.0s' $(seq 3000))"
-msg_ends "chain --n (a value of 100000 digits and a letter)" "is not an integer$" \
+msg_ends "chain --n (a value of 100000 digits and a letter)" "is not an integer \\(give an integer in \\[1, [0-9]+\\]\\)$" \
     "$GW" chain --n "$(head -c 100000 /dev/zero | tr '\0' 7)x"
 
 # --- 3 --dt above a --dt-max given ---

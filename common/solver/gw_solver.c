@@ -10,6 +10,7 @@
 
 #include "gw_param.h"
 #include "gw_locale.h"
+#include "gw_number_impl.h"
 #include "gw_solver_impl.h"
 
 gw_solver_params gw_solver_params_default(void)
@@ -83,15 +84,17 @@ const char *gw_solver_method_used(const gw_solver_type *type, int method)
 int gw_solver_tolerances_check(double rtol, double atol, const char *rname, const char *aname,
                                gw_err *err)
 {
-    char xs[32];
+    char xs[32], ls[32], hs[32];
     rname = rname ? rname : "rtol"; /* NULL names: "(null): ..." before session 34 */
     aname = aname ? aname : "atol";
+    gw_num_bound(ls, sizeof ls, GW_TOL_MIN, 0);
+    gw_num_bound(hs, sizeof hs, GW_TOL_MAX, 1);
     if (!(rtol >= GW_TOL_MIN && rtol <= GW_TOL_MAX)) /* also refuses NaN */
-        return gw_err_set(err, GW_EINVAL, "%s: %s is outside [%g, %g]", rname, gw_num_text(xs, sizeof xs, rtol),
-                          GW_TOL_MIN, GW_TOL_MAX);
+        return gw_err_set(err, GW_EINVAL, "%s: %s is outside [%s, %s]", rname, gw_num_text(xs, sizeof xs, rtol),
+                          ls, hs);
     if (!(atol >= GW_TOL_MIN && atol <= GW_TOL_MAX))
-        return gw_err_set(err, GW_EINVAL, "%s: %s is outside [%g, %g]", aname, gw_num_text(xs, sizeof xs, atol),
-                          GW_TOL_MIN, GW_TOL_MAX);
+        return gw_err_set(err, GW_EINVAL, "%s: %s is outside [%s, %s]", aname, gw_num_text(xs, sizeof xs, atol),
+                          ls, hs);
     return GW_OK;
 }
 

@@ -190,7 +190,9 @@ unsigned long long gw_sweep_case_hash(const gw_sweep_config *cfg, long k);
 int gw_sweep_row_check(const gw_sweep_config *cfg, const char *row, gw_err *err);
 
 /* Read DIR/journal.csv: done[k] = 1 for every complete row with a valid checksum.
- * A torn last line (no newline or bad checksum) is cut off the file. A new
+ * A torn last line (no newline or bad checksum) is cut off the file, and so
+ * is a zeroed end (NUL bytes alone after the last newline: a power cut's); a
+ * NUL byte anywhere else is refused (GW_EINVAL naming its line). A new
  * journal gets the config's hash, its input lines and its keys ("# grid" and
  * "# param" lines); an existing one of another config is refused (GW_EINVAL),
  * naming the input file whose content changed when its "# input" line says
@@ -265,8 +267,9 @@ int gw_sweep_journal_held(int dirfd, int *fd, const char *dir, int *restored, gw
  * *exists (may be NULL) 0 when there is no journal yet (then *ndone = 0),
  * *torn (may be NULL) the bytes of a torn last line a resume would cut: a
  * row, whose case runs again, or, *torn_head (may be NULL) 1, a line of the
- * journal's head (# input, # grid, # param lines), which holds no case. Read
- * under a shared lock, closed on return. */
+ * journal's head (# input, # grid, # param lines), which holds no case, or 2,
+ * a zeroed end (NUL bytes alone after its last newline, as a power cut leaves
+ * it), which holds none either. Read under a shared lock, closed on return. */
 int gw_sweep_journal_resume_check(const char *dir, const gw_sweep_config *cfg, char *done, long *ndone, int *exists,
                                   size_t *torn, int *torn_head, gw_err *err);
 

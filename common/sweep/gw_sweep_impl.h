@@ -103,6 +103,13 @@ char *gw_sweep_slurp(const char *path, size_t max, size_t *len, gw_err *err);
 /* The same through fd (open on a regular file; read from its start, path
  * naming it in messages): a directory moved meanwhile is read still. */
 char *gw_sweep_slurp_fd(int fd, const char *path, size_t max, size_t *len, gw_err *err);
+/* gw_sweep_slurp_fd, a zeroed end taken (zeros non-NULL): when every byte
+ * after the last newline is NUL (and one newline at least comes before them:
+ * a power cut's end, which ext4's delayed allocation leaves as zeros), the
+ * text up to that newline is returned, *len its bytes, and *zeros the NUL
+ * bytes after it (0: none); a NUL anywhere else is refused as by
+ * gw_sweep_slurp_fd. The caller cuts them (a resume) or counts them. */
+char *gw_sweep_slurp_fd_zeros(int fd, const char *path, size_t max, size_t *len, size_t *zeros, gw_err *err);
 /* The most bytes cfg's journal can hold: its head (every name and value,
  * twice over) and twice the longest row (gw_sweep_row_bound) for each case,
  * at most GW_SWEEP_JOURNAL_MAX (also when cfg->ncolumns is not known). A

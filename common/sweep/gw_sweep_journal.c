@@ -92,9 +92,37 @@ char *gw_sweep_slurp(const char *path, size_t max, size_t *len, gw_err *err)
     return buf;
 }
 
+/* the refusal of a journal's NUL byte (line, byte at: the first), buf freed;
+ * taking says the caller takes a zeroed end (other bytes came after this one) */
+static char *slurp_nul(char *buf, const char *path, long line, size_t at, int taking, gw_err *err)
+{
+    gw_err_set(err, GW_EINVAL, "sweep journal '%s': line %ld (byte %zu): a NUL byte, which no journal holds (binary "
+               "data, or a file whose end a crash left zeroed%s); move it away to start the sweep afresh", path, line,
+               at, taking ? ": here inside a line, or with other bytes after it" : "");
+    free(buf);
+    errno = EINVAL;
+    return NULL;
+}
+
+/* 1 when one of the n bytes at p is not NUL */
+static int memchr_nonzero(const char *p, size_t n)
+{
+    for (size_t i = 0; i < n; i++)
+        if (p[i])
+            return 1;
+    return 0;
+}
+
 char *gw_sweep_slurp_fd(int fd, const char *path, size_t max, size_t *len, gw_err *err)
 {
+    return gw_sweep_slurp_fd_zeros(fd, path, max, len, NULL, err);
+}
+
+char *gw_sweep_slurp_fd_zeros(int fd, const char *path, size_t max, size_t *len, size_t *zeros, gw_err *err)
+{
     struct stat st;
+    if (zeros)
+        *zeros = 0;
     errno = 0;
     if (fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
         gw_err_set(err, GW_EIO, "%s: cannot read: %s", path, strerror(errno ? errno : EIO));
@@ -112,6 +140,13 @@ char *gw_sweep_slurp_fd(int fd, const char *path, size_t max, size_t *len, gw_er
     }
     char *buf = NULL;
     size_t n = 0, cap = 0;
+    /* a zeroed end (zeros given): the text's bytes kept (n), then the NUL
+     * bytes after its last newline read past them into buf + n, counted in
+     * nz; z_line and z_at the first NUL's line and byte, for the refusal of a
+     * byte other than NUL after it */
+    size_t nz = 0, z_at = 0;
+    long z_line = 0;
+    int in_zeros = 0;
     for (;;) {
         if (n + SLURP_CHUNK + 1 > cap) {
             /* doubled, never past what max needs */
@@ -131,7 +166,7 @@ char *gw_sweep_slurp_fd(int fd, const char *path, size_t max, size_t *len, gw_er
             cap = nc;
         }
         errno = 0;
-        const ssize_t r = pread(fd, buf + n, SLURP_CHUNK, (off_t)n);
+        const ssize_t r = pread(fd, buf + n, SLURP_CHUNK, (off_t)(n + nz));
         if (r < 0 && errno == EINTR)
             continue;
         if (r < 0) {
@@ -144,18 +179,36 @@ char *gw_sweep_slurp_fd(int fd, const char *path, size_t max, size_t *len, gw_er
         if (r == 0)
             break;
         /* a NUL byte: C strings end there, and the rows after it were
-         * misread (cut off as a torn row, or the journal refused as edited) */
-        const char *z = memchr(buf + n, '\0', (size_t)r);
-        if (z) {
-            long line = 1;
-            for (const char *q = buf; q < z; q++)
-                line += *q == '\n';
-            gw_err_set(err, GW_EINVAL, "sweep journal '%s': line %ld (byte %zu): a NUL byte, which no journal "
-                       "holds (binary data, or a file whose end a crash left zeroed); move it away to start the "
-                       "sweep afresh", path, line, (size_t)(z - buf) + 1);
-            free(buf);
-            errno = EINVAL;
-            return NULL;
+         * misread (cut off as a torn row, or the journal refused as edited);
+         * NUL bytes alone after the last newline, a power cut's zeroed end,
+         * are counted for the caller to cut when it takes them (zeros) */
+        size_t got = (size_t)r;
+        if (!in_zeros) {
+            const char *z = memchr(buf + n, '\0', got);
+            if (z) {
+                z_line = 1;
+                for (const char *q = buf; q < z; q++)
+                    z_line += *q == '\n';
+                z_at = (size_t)(z - buf) + 1;
+                in_zeros = zeros && z > buf && z[-1] == '\n';
+                const size_t keep = (size_t)(z - (buf + n)); /* the text before it */
+                n += keep, got -= keep;                    /* the rest: at buf + n */
+            }
+            if (z && !in_zeros)
+                return slurp_nul(buf, path, z_line, z_at, zeros != NULL, err);
+        }
+        if (in_zeros) { /* got bytes at buf + n, after the kept text: zeros all */
+            if (memchr_nonzero(buf + n, got))
+                return slurp_nul(buf, path, z_line, z_at, 1, err);
+            nz += got;
+            if (n + nz > max) { /* grown since fstat */
+                free(buf);
+                gw_err_set(err, GW_EINVAL, "sweep journal '%s' is more than %zu bytes, more than this sweep's "
+                           "journal can hold: not its journal; move it away to start the sweep afresh", path, max);
+                errno = EINVAL;
+                return NULL;
+            }
+            continue;
         }
         n += (size_t)r;
         if (n > max) { /* grown since fstat */
@@ -168,6 +221,8 @@ char *gw_sweep_slurp_fd(int fd, const char *path, size_t max, size_t *len, gw_er
     }
     buf[n] = '\0';
     *len = n;
+    if (zeros)
+        *zeros = nz;
     return buf;
 }
 
@@ -901,10 +956,14 @@ static int head_keys_check(const gw_sweep_config *cfg, const char *buf, size_t a
 static int journal_check(const char *path, int dfd, const char *dir, const char *head, const gw_sweep_config *cfg,
                          char *done, long *ndone, int fd, size_t *torn, int *torn_head, gw_err *err)
 {
-    size_t len = 0;
-    /* through the journal opened (fd), or what is there instead named */
+    size_t len = 0, zeros = 0;
+    /* through the journal opened (fd), or what is there instead named; its
+     * zeroed end (NUL bytes alone after its last newline: a power cut's, which
+     * ext4's delayed allocation leaves) taken and cut as a torn row is (it was
+     * refused as binary data, the journal to be moved away by hand) */
     const size_t max = gw_sweep_journal_bound(cfg);
-    char *buf = fd >= 0 ? gw_sweep_slurp_fd(fd, path, max, &len, err) : gw_sweep_slurp(path, max, &len, err);
+    char *buf = fd >= 0 ? gw_sweep_slurp_fd_zeros(fd, path, max, &len, &zeros, err)
+                        : gw_sweep_slurp(path, max, &len, err);
     if (!buf) /* a FIFO, a directory, gone: named in err; or out of memory */
         return errno == ENOMEM ? GW_ENOMEM : GW_EINVAL;
     struct stat a, b;
@@ -1071,12 +1130,12 @@ static int journal_check(const char *path, int dfd, const char *dir, const char 
     if (rc != GW_OK)
         return rc;
     if (torn) {
-        *torn = len - good;
+        *torn = len - good + zeros;
         if (torn_head)
-            *torn_head = head_torn;
+            *torn_head = head_torn ? 1 : zeros && good == len ? 2 : 0;
         return GW_OK;
     }
-    if (good < len && ftruncate(fd, (off_t)good) != 0)
+    if (good < len + zeros && ftruncate(fd, (off_t)good) != 0)
         return gw_err_set(err, GW_EIO, "%s: cannot cut a torn row: %s", path, strerror(errno));
     return GW_OK;
 }

@@ -466,8 +466,8 @@ typedef struct gw_layer_make_result {
     double ke_final;      /* J */
     double max_overlap;   /* largest u_n / R_p at the end */
     int converged;        /* the kinetic energy, with the fall of the grains in flight (touching
-                             nothing: m g times their straight drop), went below the threshold,
-                             the floor carrying at most 1.5 times the pile's weight */
+                             nothing: m g times their straight drop), went below the threshold
+                             (ke_limit), the floor carrying 0.5 to 1.5 times the pile's weight */
     double wall_ms;
     long steps, rebuilds;
     int n_removed;        /* particles (clumps: grains) above height_rm R_m taken away */
@@ -479,6 +479,8 @@ typedef struct gw_layer_make_result {
     double floor_load;    /* the floor's Hertz forces over the pile's weight at the end (at rest:
                              about 1; gw_layer_impact_rest_check refuses above 1.5) */
     double fall_energy;   /* J: what the grains in flight at the end (touching nothing) land with */
+    double ke_limit;      /* J: the threshold ke_threshold M g R_m the verdict held E_k + fall_energy
+                             below (M: the sample's mass, after a trim) */
 } gw_layer_make_result;
 
 /* Pluviate a sample (lp: material, friction; width and mass law are taken from
@@ -492,7 +494,10 @@ int gw_layer_make(const gw_layer_params *lp, const gw_layer_make_params *mp,
                   gw_layer_sample *out, gw_layer_make_result *res, gw_err *err);
 /* The warnings of a pluviation, appended to *list (gw_warnings_add,
  * gw_common.h): one that did not settle (converged 0: t_max, s, the run's,
- * below t_judge, or E_k still above the threshold at t_max; out, may be NULL,
+ * below t_judge, or at t_max E_k still above the threshold, the floor carrying
+ * less than 0.5 or more than 1.5 of the pile's weight, or both, each said;
+ * a ke_limit of 0 is taken as unknown: E_k named above the threshold when the
+ * floor's load is within [0.5, 1.5]; out, may be NULL,
  * the file the sample was written to, named in the text), and a height_rm
  * that took nothing away (untrimmed_top_rm > 0). Nothing else. The texts
  * `granwave layer-make` prints and Python issues. GW_OK or GW_ENOMEM;

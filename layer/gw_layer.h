@@ -496,8 +496,8 @@ int gw_layer_make(const gw_layer_params *lp, const gw_layer_make_params *mp,
  * gw_common.h): one that did not settle (converged 0: t_max, s, the run's,
  * below t_judge, or at t_max E_k still above the threshold, the floor carrying
  * less than 0.5 or more than 1.5 of the pile's weight, or both, each said;
- * a ke_limit of 0 is taken as unknown: E_k named above the threshold when the
- * floor's load is within [0.5, 1.5]; out, may be NULL,
+ * a ke_limit of 0 is taken as unknown: E_k named above the threshold unless
+ * the floor's load is above 1.5; out, may be NULL,
  * the file the sample was written to, named in the text), and a height_rm
  * that took nothing away (untrimmed_top_rm > 0). Nothing else. The texts
  * `granwave layer-make` prints and Python issues. GW_OK or GW_ENOMEM;

@@ -42,12 +42,12 @@ int gw_layer_make_result_warnings(const gw_layer_make_result *r, double t_max, c
      * floor not carrying the pile (in the air or bouncing below
      * LAYER_FLOOR_LOAD_MIN of its weight, swinging on its contacts above
      * LAYER_FLOOR_LOAD_MAX). A result without ke_limit (0: filled before it
-     * was added) names E_k when the floor's load does not explain the verdict,
+     * was added) names E_k whenever the floor's load is not above the bound,
      * as before; so does one where neither holds (an allocation failed). */
     const double ld = r->floor_load;
     const int low = ld < LAYER_FLOOR_LOAD_MIN, high = ld > LAYER_FLOOR_LOAD_MAX;
     const int known = r->ke_limit > 0 && r->ke_limit < INFINITY;
-    const int above = !(low || high) || (known && !(r->ke_final + r->fall_energy < r->ke_limit));
+    const int above = known ? !(r->ke_final + r->fall_energy < r->ke_limit) || !(low || high) : !high;
     char ek[200] = "", on_floor[240] = "", lim[48] = "";
     if (known)
         gw_snprintf(lim, sizeof lim, "%.4g J", r->ke_limit);
@@ -57,9 +57,9 @@ int gw_layer_make_result_warnings(const gw_layer_make_result *r, double t_max, c
     else if (above)
         gw_snprintf(ek, sizeof ek, "E_k = %.4g J still above --ke-threshold at t-max = %g s", r->ke_final, t_max);
     if (low)
-        gw_snprintf(on_floor, sizeof on_floor, "its floor carries %.3g of the pile's weight (at rest: about 1; below %g "
-                    "the pile is in the air or bouncing, or the side walls' friction holds a column far taller "
-                    "than wide)", ld, LAYER_FLOOR_LOAD_MIN);
+        gw_snprintf(on_floor, sizeof on_floor, "its floor carries %.3g of the pile's weight (at rest: about 1; "
+                    "below %g the pile is in the air or bouncing, or the side walls' friction holds a column far "
+                    "taller than wide)", ld, LAYER_FLOOR_LOAD_MIN);
     else if (high)
         gw_snprintf(on_floor, sizeof on_floor, "its floor carries %.3g times the pile's weight (at rest: about 1; "
                     "layer-impact refuses above %g)", ld, LAYER_FLOOR_LOAD_MAX);
@@ -69,8 +69,11 @@ int gw_layer_make_result_warnings(const gw_layer_make_result *r, double t_max, c
     if (ek[0])
         return gw_warnings_add(list, "the sample did not settle: %s%s%s%s, and %s (raise --t-max)%s%s%s", ek,
                                known ? " (" : "", lim, known ? ")" : "", on_floor, sep, path, end);
-    return gw_warnings_add(list, "the sample did not settle: at t-max = %g s %s, E_k = %.4g J%s%s%s%s (raise "
-                           "--t-max)%s%s%s", t_max, on_floor, r->ke_final, known ? " below --ke-threshold" : "",
+    char fall[64] = ""; /* E_k and the grains' fall below the threshold: the floor alone held the pile */
+    if (r->fall_energy > 0)
+        gw_snprintf(fall, sizeof fall, " and %.4g J of grains in flight", r->fall_energy);
+    return gw_warnings_add(list, "the sample did not settle: at t-max = %g s %s, E_k = %.4g J%s%s%s%s%s (raise "
+                           "--t-max)%s%s%s", t_max, on_floor, r->ke_final, fall, known ? " below --ke-threshold" : "",
                            known ? " (" : "", lim, known ? ")" : "", sep, path, end);
 }
 

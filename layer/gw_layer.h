@@ -343,6 +343,11 @@ typedef struct gw_layer_sample {
     gw_layer_spring *springs;   /* [n_springs], owned by the sample (NULL when none); each
                                    pair at most once, in contact (u_n > 0), discs of
                                    different bodies. ABI 2 */
+    int settled_converged;      /* 1: layer-make's "settled:" line says converged 1 (text and HDF5
+                                   samples; gw_layer_make's sample when it converged); 0: no such
+                                   line, or converged 0 (settled.unsettled). An impact on a pile so
+                                   marked whose floor carries less than half its weight under its
+                                   recorded material warns that it did not settle. ABI 3 */
 } gw_layer_sample;
 
 void gw_layer_sample_free(gw_layer_sample *s);

@@ -534,6 +534,7 @@ static void finish(const gw_layer_params *lp, const gw_layer_make_params *m, con
                                       .friction_deg = lp->friction_deg, .density = lp->density,
                                       .gravity = lp->gravity, .mass_law = lp->mass_law,
                                       .clump_mass = lp->clump_mass, .unsettled = !conv};
+    out->settled_converged = conv;
     res->max_overlap = max_overlap(b, n, lp->width, NULL);
     out->porosity = layer_sample_porosity_of(out); /* (checked with the sample, settled_readable) */
     res->porosity = out->porosity;

@@ -169,11 +169,13 @@ int gw_layer_impact_settled_check(const gw_layer_sample *smp, const gw_layer_par
  * 0; layer-impact ran it with nothing said). The text into buf (n bytes),
  * else nothing. A warning, as for a pile written with converged 0 (below): the
  * file holds positions only, and a hand-written pile resting on the floor at
- * y = r carries nothing either. Samples without a settings line (hand-written,
- * older) are not judged: nothing says which material to weigh them under. */
+ * y = r carries nothing either. Only a pile whose settled line says converged
+ * 1 and whose settings line gives its material is judged (settled_converged,
+ * settled.recorded): a hand-written sample or one built in memory is a
+ * geometry, its discs at y = r carrying nothing. */
 static void floor_unsettled(const gw_layer_sample *smp, const gw_layer_params *lp, char *buf, size_t n)
 {
-    if (!smp->settled.recorded)
+    if (!smp->settled.recorded || !smp->settled_converged)
         return;
     const gw_layer_settled *st = &smp->settled;
     gw_layer_params sp = *lp; /* the settling's material: the load layer-make judged */

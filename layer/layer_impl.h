@@ -352,7 +352,8 @@ enum { LAYER_DEM_W = 8 };
  * tall; only taller and narrower columns fall below half, and layer-make then
  * warns that the pile did not settle, naming the floor's load. Half the
  * weight: every measured pile at rest (0.54 to 1.006) passes, the piles in
- * the air above (0 to 0.47) do not. */
+ * the air above (0 to 0.47) do not. An impact on a pile whose settled line
+ * says converged 1 and whose floor carries less warns (layer_settled.c). */
 #define LAYER_FLOOR_LOAD_MIN 0.5
 
 /* The floor's Hertz forces (N, *f) and the weight (N, *w) of n discs under

@@ -175,7 +175,7 @@ typedef struct text_in {
     long set_line;
     /* the start of the comment line being read, from its first character
      * after '#' and the blanks (layer-make's "settled: ..., converged N"
-     * comes within it), and whether a "settled:" line said converged 0 */
+     * comes within it), and whether a "settled:" line said converged 0 or 1 */
     char com[128];
     size_t ncom;
     int unsettled, converged; /* the settled line's converged 0, 1 */

@@ -730,7 +730,9 @@ int gw_layer_impact_rest_check(const gw_layer_sample *s, const gw_layer_params *
  * or clump mass, another friction angle), GW_OK with the warning text in
  * warning[n] ("" when the same, or nothing is recorded: hand-written samples
  * pass as before). A pile that did not settle (s->settled.unsettled, with or
- * without a record) is a warning too, after the material's. When its clumps cannot be weighed as unions (out of
+ * without a record; or s->settled_converged with a record whose floor carries
+ * less than half the pile's weight under the recorded material: a pile in the
+ * air an older layer-make called settled) is a warning too, after the material's. When its clumps cannot be weighed as unions (out of
  * memory), gw_layer_create's status, "sample 'name': weighing its clumps: ...". The
  * thresholds (docs/cli.md, layer-impact; layer_settled.c has the numbers):
  * the Hertz drop from overlap q^(2/3) d to d releases about 0.19 of the

@@ -343,6 +343,11 @@ typedef struct gw_layer_sample {
     gw_layer_spring *springs;   /* [n_springs], owned by the sample (NULL when none); each
                                    pair at most once, in contact (u_n > 0), discs of
                                    different bodies. ABI 2 */
+    int settled_converged;      /* 1: layer-make's "settled:" line says converged 1 (text and HDF5
+                                   samples; gw_layer_make's sample when it converged); 0: no such
+                                   line, or converged 0 (settled.unsettled). An impact on a pile so
+                                   marked whose floor carries less than half its weight under its
+                                   recorded material warns that it did not settle. ABI 3 */
 } gw_layer_sample;
 
 void gw_layer_sample_free(gw_layer_sample *s);
@@ -466,8 +471,8 @@ typedef struct gw_layer_make_result {
     double ke_final;      /* J */
     double max_overlap;   /* largest u_n / R_p at the end */
     int converged;        /* the kinetic energy, with the fall of the grains in flight (touching
-                             nothing: m g times their straight drop), went below the threshold,
-                             the floor carrying at most 1.5 times the pile's weight */
+                             nothing: m g times their straight drop), went below the threshold
+                             (ke_limit), the floor carrying 0.5 to 1.5 times the pile's weight */
     double wall_ms;
     long steps, rebuilds;
     int n_removed;        /* particles (clumps: grains) above height_rm R_m taken away */
@@ -479,6 +484,8 @@ typedef struct gw_layer_make_result {
     double floor_load;    /* the floor's Hertz forces over the pile's weight at the end (at rest:
                              about 1; gw_layer_impact_rest_check refuses above 1.5) */
     double fall_energy;   /* J: what the grains in flight at the end (touching nothing) land with */
+    double ke_limit;      /* J: the threshold ke_threshold M g R_m the verdict held E_k + fall_energy
+                             below (M: the sample's mass, after a trim) */
 } gw_layer_make_result;
 
 /* Pluviate a sample (lp: material, friction; width and mass law are taken from
@@ -492,7 +499,10 @@ int gw_layer_make(const gw_layer_params *lp, const gw_layer_make_params *mp,
                   gw_layer_sample *out, gw_layer_make_result *res, gw_err *err);
 /* The warnings of a pluviation, appended to *list (gw_warnings_add,
  * gw_common.h): one that did not settle (converged 0: t_max, s, the run's,
- * below t_judge, or E_k still above the threshold at t_max; out, may be NULL,
+ * below t_judge, or at t_max E_k still above the threshold, the floor carrying
+ * less than 0.5 or more than 1.5 of the pile's weight, or both, each said;
+ * a ke_limit of 0 is taken as unknown: E_k named above the threshold unless
+ * the floor's load is above 1.5; out, may be NULL,
  * the file the sample was written to, named in the text), and a height_rm
  * that took nothing away (untrimmed_top_rm > 0). Nothing else. The texts
  * `granwave layer-make` prints and Python issues. GW_OK or GW_ENOMEM;
@@ -731,7 +741,9 @@ int gw_layer_impact_rest_check(const gw_layer_sample *s, const gw_layer_params *
  * or clump mass, another friction angle), GW_OK with the warning text in
  * warning[n] ("" when the same, or nothing is recorded: hand-written samples
  * pass as before). A pile that did not settle (s->settled.unsettled, with or
- * without a record) is a warning too, after the material's. When its clumps cannot be weighed as unions (out of
+ * without a record; or s->settled_converged with a record whose floor carries
+ * less than half the pile's weight under the recorded material: a pile in the
+ * air an older layer-make called settled) is a warning too, after the material's. When its clumps cannot be weighed as unions (out of
  * memory), gw_layer_create's status, "sample 'name': weighing its clumps: ...". The
  * thresholds (docs/cli.md, layer-impact; layer_settled.c has the numbers):
  * the Hertz drop from overlap q^(2/3) d to d releases about 0.19 of the

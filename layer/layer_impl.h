@@ -342,6 +342,19 @@ enum { LAYER_DEM_W = 8 };
  * (layer_make.c) and layer-impact refuses the sample
  * (gw_layer_impact_rest_check). */
 #define LAYER_FLOOR_LOAD_MAX 1.5
+/* Below this many times the weight the floor does not carry the pile: a pile
+ * with a small E_k at the top of a bounce is in the air (layer-make --n 20 at
+ * --ke-threshold 0.1 to 1 was called settled with a floor load of 0, at 0.01
+ * with 0.47, landing), and layer-make goes on settling. A pile at rest that
+ * the floor carries less than this of is one the side walls' friction holds
+ * (Janssen): 0.88 in a 12 R_m box, 0.84 for 300 discs in an 8 R_m box
+ * still settling at 6 s, 0.54 for 100 discs settled in a 4 R_m column 114 R_m
+ * tall; only taller and narrower columns fall below half, and layer-make then
+ * warns that the pile did not settle, naming the floor's load. Half the
+ * weight: every measured pile at rest (0.54 to 1.006) passes, the piles in
+ * the air above (0 to 0.47) do not. An impact on a pile whose settled line
+ * says converged 1 and whose floor carries less warns (layer_settled.c). */
+#define LAYER_FLOOR_LOAD_MIN 0.5
 
 /* The floor's Hertz forces (N, *f) and the weight (N, *w) of n discs under
  * lp's material and gravity, with centre heights y and radii r, the i-th of

@@ -76,9 +76,10 @@ static const gw_param make_fields[] = {
     RD("t_settle", r.t_settle, "s", "simulated settling time"),
     RD("ke_final", r.ke_final, "J", "kinetic energy at the end"),
     RF("converged", r.converged, "1: the kinetic energy, with the fall of the grains in flight, went below the "
-       "threshold, the floor carrying at most 1.5 times the weight"),
+       "threshold (ke_limit), the floor carrying 0.5 to 1.5 times the weight"),
     RD("floor_load", r.floor_load, "", "the floor's Hertz forces over the pile's weight at the end (at rest: about 1)"),
     RD("fall_energy", r.fall_energy, "J", "what the grains in flight at the end (touching nothing) land with"),
+    RD("ke_limit", r.ke_limit, "J", "the settling threshold ke-threshold M g R_m (M: the sample's mass)"),
     RD("t_judge", r.t_judge, "s", "the settling is judged from this time on (a t-max below it cannot converge)"),
     RD("max_overlap_over_rp", r.max_overlap, "", "largest u_n / R_p at the end"),
     RI("n_removed_above_height", r.n_removed, "particles (clumps: grains) above height-rm taken away"),

@@ -176,10 +176,10 @@ typedef struct text_in {
     long set_line;
     /* the start of the comment line being read, from its first character
      * after '#' and the blanks (layer-make's "settled: ..., converged N"
-     * comes within it), and whether a "settled:" line said converged 0 */
+     * comes within it), and whether a "settled:" line said converged 0 or 1 */
     char com[128];
     size_t ncom;
-    int unsettled;
+    int unsettled, converged; /* the settled line's converged 0, 1 */
     long spr_said; /* the line of the writer's "# lines after 'springs' ..." (0: none) */
     long *spr_lines; /* the line of each spring read (owned) */
 } text_in;
@@ -292,6 +292,7 @@ static int text_next(text_in *t, gw_err *err)
         if (comment) { /* a pile written before it settled: an impact on it warns */
             t->com[t->ncom] = '\0';
             t->unsettled |= layer_sample_settled_unsettled(t->com);
+            t->converged |= layer_sample_settled_converged(t->com);
             if (!t->spr_said && strncmp(t->com, SPRINGS_SAID, sizeof SPRINGS_SAID - 1) == 0)
                 t->spr_said = t->line;
         }
@@ -594,7 +595,7 @@ static int read_text(text_in *t, gw_layer_sample *s, gw_err *err)
             s->settled.line = t->set_line;
     }
     if (rc == GW_OK) /* after the settings' parse, which zeroes the record */
-        s->settled.unsettled = t->unsettled;
+        s->settled.unsettled = t->unsettled, s->settled_converged = t->converged && !t->unsettled;
     if (rc == GW_OK) /* checked by the caller, last (gw_layer_sample_read) */
         t->spr_lines = lines;
     else

@@ -430,12 +430,13 @@ static int h5_settings_read(hid_t f, gw_layer_sample *s, const char *path, gw_er
         return rc;
     static const char key[] = "settings:";
     char *line = NULL;
-    int unsettled = 0;
+    int unsettled = 0, converged = 0;
     for (char *p = h; p && *p; p = strchr(p, '\n'), p = p ? p + 1 : NULL) {
         char one[128]; /* the line alone, as far as "converged N" (the text reader's too) */
         const size_t l = strcspn(p, "\n");
         gw_snprintf(one, sizeof one, "%.*s", (int)(l < sizeof one - 1 ? l : sizeof one - 1), p);
         unsettled |= layer_sample_settled_unsettled(one); /* the "settled:" line: converged 0 */
+        converged |= layer_sample_settled_converged(one);
         if (strncmp(p, key, sizeof key - 1) != 0)
             continue;
         if (line) {
@@ -455,7 +456,7 @@ static int h5_settings_read(hid_t f, gw_layer_sample *s, const char *path, gw_er
         rc = layer_sample_settings_parse(line, path, "HDF5 attribute header", s, &src, &s->settled, err);
     }
     if (rc == GW_OK) /* after the settings' parse, which zeroes the record */
-        s->settled.unsettled = unsettled;
+        s->settled.unsettled = unsettled, s->settled_converged = converged && !unsettled;
     free(h);
     return rc;
 }

@@ -59,6 +59,9 @@ int layer_sample_settings_parse(const char *text, const char *path, const char *
  * layer-make's "settled: ..." line and says "converged 0": the pile was
  * written before it settled (gw_layer_settled.unsettled); else 0. */
 int layer_sample_settled_unsettled(const char *text);
+/* 1 when text is layer-make's "settled:" line of a pile that settled
+ * ("converged 1": gw_layer_sample.settled_converged); else 0. */
+int layer_sample_settled_converged(const char *text);
 
 #if GW_HAVE_HDF5
 /* The HDF5 sample (layer_sample_h5.c): s, already checked, written

@@ -41,7 +41,8 @@ struct settled_before {
 };
 _Static_assert(sizeof(gw_layer_settled) == sizeof(struct settled_before), "gw_layer_settled grew");
 
-int layer_sample_settled_unsettled(const char *text)
+/* The digit of a "settled:" line's "converged N" ('0' or '1'), else 0. */
+static char settled_digit(const char *text)
 {
     /* both writers (the program's layer-make, gw_layer_make_run) print
      * "settled: t = %.4g s, E_k = %.4g J, converged %d, ..." */
@@ -49,7 +50,18 @@ int layer_sample_settled_unsettled(const char *text)
     if (!text || strncmp(text, key, sizeof key - 1) != 0)
         return 0;
     const char *c = strstr(text, conv);
-    return c && c[sizeof conv - 1] == '0' && !isdigit((unsigned char)c[sizeof conv]);
+    return c && (c[sizeof conv - 1] == '0' || c[sizeof conv - 1] == '1') && !isdigit((unsigned char)c[sizeof conv])
+               ? c[sizeof conv - 1] : 0;
+}
+
+int layer_sample_settled_unsettled(const char *text)
+{
+    return settled_digit(text) == '0';
+}
+
+int layer_sample_settled_converged(const char *text)
+{
+    return settled_digit(text) == '1';
 }
 
 /* One dialect: the keys of G, nu, phi, rho, g and the mass law, in that order. */

@@ -177,6 +177,38 @@ int gw_layer_impact_settled_check(const gw_layer_sample *smp, const gw_layer_par
     return layer_settled_check_q(smp, lp, other_settling, name, warning, n, &q, err);
 }
 
+/* A pile layer-make recorded as settled (converged 1) whose floor, under the
+ * material it settled with, carries less than LAYER_FLOOR_LOAD_MIN of its
+ * weight: it was in the air or bouncing when written, which layer-make before
+ * session 38 called settled (--n 20 --ke-threshold 0.1 to 1: a floor load of
+ * 0; layer-impact ran it with nothing said). The text into buf (n bytes),
+ * else nothing. A warning, as for a pile written with converged 0 (below): the
+ * file holds positions only, and a hand-written pile resting on the floor at
+ * y = r carries nothing either. Only a pile whose settled line says converged
+ * 1 and whose settings line gives its material is judged (settled_converged,
+ * settled.recorded): a hand-written sample or one built in memory is a
+ * geometry, its discs at y = r carrying nothing. */
+static void floor_unsettled(const gw_layer_sample *smp, const gw_layer_params *lp, char *buf, size_t n)
+{
+    if (!smp->settled.recorded || !smp->settled_converged)
+        return;
+    const gw_layer_settled *st = &smp->settled;
+    gw_layer_params sp = *lp; /* the settling's material: the load layer-make judged */
+    sp.shear_modulus = st->shear_modulus;
+    sp.poisson = st->poisson;
+    sp.density = st->density;
+    sp.gravity = st->gravity;
+    sp.mass_law = st->mass_law;
+    double f, w;
+    layer_floor_load(&sp, smp->n, smp->y, smp->r, sizeof *smp->y, &f, &w);
+    if (w > 0 && f < LAYER_FLOOR_LOAD_MIN * w)
+        gw_snprintf(buf, n, "the sample did not settle: its floor carries %.3g of the pile's weight under the "
+                    "material it settled with (at rest: about 1; below %g the pile was in the air or bouncing when "
+                    "written, though its settled line says converged 1, as a layer-make before session 38 wrote "
+                    "such piles): it starts at rest there, so the outcome holds the pile's own motion as well as "
+                    "the block's; make it again", f / w, LAYER_FLOOR_LOAD_MIN);
+}
+
 int layer_settled_check_q(const gw_layer_sample *smp, const gw_layer_params *lp, int other_settling,
                           const char *name, char *warning, size_t n, double *q_out, gw_err *err)
 {
@@ -193,12 +225,14 @@ int layer_settled_check_q(const gw_layer_sample *smp, const gw_layer_params *lp,
      * warning, not a refusal: layer-make's own exit is 0 with its warning,
      * and a pile cut late is nearly at rest (the default 20 discs of seed 3
      * stop at 14.6 J, 26 times the threshold). */
-    const char *unsettled = smp->settled.unsettled
-                                ? "the sample did not settle (its settled line says converged 0: layer-make's t-max "
-                                  "came first): it was written in motion, grains perhaps in the air, and starts at "
-                                  "rest there, so the outcome holds the pile's own motion as well as the block's; "
-                                  "make it again with a longer t-max"
-                                : "";
+    char unsettled[512] = "";
+    if (smp->settled.unsettled)
+        gw_snprintf(unsettled, sizeof unsettled, "the sample did not settle (its settled line says converged 0: "
+                    "layer-make's t-max came first): it was written in motion, grains perhaps in the air, and starts "
+                    "at rest there, so the outcome holds the pile's own motion as well as the block's; make it again "
+                    "with a longer t-max");
+    else
+        floor_unsettled(smp, lp, unsettled, sizeof unsettled);
     if (!smp->settled.recorded) { /* hand-written, older, or in memory: nothing to compare */
         if (warning && n > 0)
             gw_snprintf(warning, n, "%s", unsettled);

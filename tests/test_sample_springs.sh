@@ -278,7 +278,8 @@ class Sample(ctypes.Structure):
                 ("mass_law", ctypes.c_int), ("clump_mass", ctypes.c_int), ("x", ctypes.POINTER(ctypes.c_double)),
                 ("y", ctypes.POINTER(ctypes.c_double)), ("r", ctypes.POINTER(ctypes.c_double)),
                 ("body", ctypes.POINTER(ctypes.c_int)), ("content_hash", ctypes.c_ulonglong),
-                ("settled", Settled), ("n_springs", ctypes.c_int), ("springs", ctypes.POINTER(Spring))]
+                ("settled", Settled), ("n_springs", ctypes.c_int), ("springs", ctypes.POINTER(Spring)),
+                ("settled_converged", ctypes.c_int)]
 lib = ctypes.CDLL(granwave.library_path)
 lib.gw_layer_sample_size.restype = ctypes.c_size_t
 check(ctypes.sizeof(Sample) == lib.gw_layer_sample_size(), "the mirror of gw_layer_sample with its springs: %d bytes, "

@@ -38,7 +38,8 @@ class _Sample(ctypes.Structure):
                 ("mass_law", ctypes.c_int), ("clump_mass", ctypes.c_int), ("x", ctypes.POINTER(ctypes.c_double)),
                 ("y", ctypes.POINTER(ctypes.c_double)), ("r", ctypes.POINTER(ctypes.c_double)),
                 ("body", ctypes.POINTER(ctypes.c_int)), ("content_hash", ctypes.c_ulonglong),
-                ("settled", _Settled), ("n_springs", ctypes.c_int), ("springs", ctypes.c_void_p)]
+                ("settled", _Settled), ("n_springs", ctypes.c_int), ("springs", ctypes.c_void_p),
+                ("settled_converged", ctypes.c_int)]
 
 
 def _opaque(lib, name):

@@ -25,6 +25,7 @@
 #include "gw_chain.h"
 #include "chain_model.h"
 #include "chain_collide_impl.h"
+#include "gw_locale.h"
 
 typedef struct run_state {
     const gw_chain *c;
@@ -666,7 +667,7 @@ static int collide_run(const gw_chain *c, const gw_chain_run_opts *o, int drop, 
     }
     gw_drive drive = {.t_end = t_max, .dt_out = dt_out, .k_out = 1, .on_root = collide_root,
                       .on_output = collide_output, .after = collide_after, .ctx = &st};
-    rc = gw_solver_drive(s, &drive, &t, y, roots, err);
+    rc = chain_step_limit_named(gw_solver_drive(s, &drive, &t, y, roots, err), s, &pl.sp, err);
 stopped:
     r->t_end = t;
     /* The wall's impulse from the momentum balance d/dt (sum m_i v_i + M_s v_s) =
@@ -700,4 +701,15 @@ void gw_chain_result_free(gw_chain_result *r)
         return;
     free(r->final_v);
     r->final_v = r->detach_t = r->v_tau_n = r->front_t = NULL;
+}
+
+int chain_step_limit_named(int rc, const gw_solver *s, const gw_solver_params *sp, gw_err *err)
+{
+    const char *m = s ? gw_solver_error(s) : "";
+    if (rc != GW_ELIMIT || !err || !sp || !m[0] || !strstr(err->msg, m))
+        return rc;
+    char first[sizeof err->msg];
+    gw_snprintf(first, sizeof first, "%s", err->msg);
+    return gw_err_set(err, rc, "%s (the step limit max-steps = %ld steps between two outputs or events: raise "
+                      "--max-steps)", first, sp->max_steps);
 }

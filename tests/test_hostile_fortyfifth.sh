@@ -27,6 +27,12 @@
 #  4 The --dt and --dt-max rule (controls: one rule under rk4, cvode and
 #    arkode, for chain, drop, falcon and a sweep: a --dt above a --dt-max
 #    given is refused naming --dt; above the automatic one it runs, warned).
+#  5 The solver's step limit named. A --max-steps too small for the run
+#    failed (exit 1) with the backend's text alone ("mxstep steps taken
+#    before reaching tout", "rk4: more than 5 steps before ..."), naming no
+#    input, in chain, drop, falcon and Python: the message now adds "the step
+#    limit max-steps = N steps between two outputs or events: raise
+#    --max-steps". Control: a run cut at --t-max keeps its own line.
 # Checks that fail on the code before: see docs/tests.md.
 # shellcheck source=refusal_lib.sh
 . "$2/tests/refusal_lib.sh"
@@ -153,5 +159,35 @@ refused "falcon --dt 1e-5 --dt-max 1e-6" "^granwave falcon $above" falcon --dt 1
 printf '[sweep]\nmodel = chain\nout = o\n[params]\nn = 3\nsolver = cvode\ndt-max = 1e-6\n[grid]\ndt = 1e-7, 1e-5\n' >dt.ini
 refused "sweep over dt = 1e-7, 1e-5 at dt-max = 1e-6 (cvode)" "^granwave sweep: dt\\.ini: case 1: dt: 1e-05 s is above dt-max" \
     sweep dt.ini --check
+
+# --- 5 the solver's step limit named ---
+named="\\(the step limit max-steps = 5 steps between two outputs or events: raise --max-steps\\)\$"
+# failed_with WHAT PATTERN CMD...: exit 1 within 60 s, one stderr line matching PATTERN
+failed_with() {
+    local what=$1 pat=$2; shift 2
+    timeout -s KILL 60 "$GW" "$@" >/dev/null 2>stderr </dev/null
+    local rc=$?
+    if [ $rc -ne 1 ]; then ko "$what: exit $rc, expected 1 ($(head -c 300 stderr))"; return; fi
+    if [ "$(wc -l <stderr)" -ne 1 ]; then ko "$what: $(wc -l <stderr) stderr lines"; return; fi
+    grep -qE -- "$pat" stderr && ok "$what" || ko "$what: message does not match '$pat': $(cat stderr)"
+}
+failed_with "chain --max-steps 5 (cvode)" "^granwave chain: cvode failed at t = .*mxstep.* $named" \
+    chain --n 3 --max-steps 5 --quiet
+failed_with "chain --max-steps 5 --solver arkode" "^granwave chain: arkode failed at t = .* $named" \
+    chain --n 3 --max-steps 5 --solver arkode --quiet
+failed_with "drop --max-steps 5 --solver rk4" "^granwave drop: rk4: more than 5 steps before .* $named" \
+    drop --n 3 --max-steps 5 --solver rk4 --quiet
+failed_with "falcon --max-steps 5" "^granwave falcon: N = 1, v_imp = 0\\.3 m/s: rk4: more than 5 steps .* $named" \
+    falcon --n 1:3 --max-steps 5 --quiet
+failed_with "chain --t-max 1e-12: the run's own line, kept" "^granwave chain: bead 1 still on the wall at t_max = 1e-12 s\$" \
+    chain --n 3 --t-max 1e-12 --quiet
+py_checks 1 <<'PYEOF'
+try:
+    granwave.chain(n=3, max_steps=5)
+    print("FAIL: Python chain(max_steps=5): ran")
+except RuntimeError as e:
+    check("raise max_steps" in str(e) or "raise --max-steps" in str(e) or "max-steps" in str(e),
+          "Python chain(max_steps=5): names max-steps: %s" % str(e)[:200])
+PYEOF
 
 test_summary test_hostile_fortyfifth

@@ -33,6 +33,12 @@
 #    input, in chain, drop, falcon and Python: the message now adds "the step
 #    limit max-steps = N steps between two outputs or events: raise
 #    --max-steps". Control: a run cut at --t-max keeps its own line.
+#  6 A bead an overdamped contact holds on the wall. chain --damping hc
+#    --alpha 1e8 (or kk --gamma 1e14) failed with "bead 1 still on the wall
+#    at t_max = ... s" alone, naming no input, as a stopping guide did before
+#    the forty-fourth pass: the run's end (chain, the studies, Python) now
+#    names the damping and its constant when the bead has stopped in its
+#    overlap. Controls: a t-max that cuts a moving bead keeps the plain line.
 # Checks that fail on the code before: see docs/tests.md.
 # shellcheck source=refusal_lib.sh
 . "$2/tests/refusal_lib.sh"
@@ -189,5 +195,18 @@ except RuntimeError as e:
     check("raise max_steps" in str(e) or "raise --max-steps" in str(e) or "max-steps" in str(e),
           "Python chain(max_steps=5): names max-steps: %s" % str(e)[:200])
 PYEOF
+
+# --- 6 a bead an overdamped contact holds on the wall ---
+held="^granwave chain: bead 1 still on the wall at t_max = [0-9.e+-]+ s: the contact damping"
+failed_with "chain --damping hc --alpha 1e8: names the damping" \
+    "$held \\(damping hc, alpha 1e\\+08 s/m\\) stopped it inside its overlap.*lower alpha" \
+    chain --n 3 --damping hc --alpha 1e8 --quiet
+failed_with "chain --damping kk --gamma 1e14: names the damping" \
+    "$held \\(damping kk, gamma 1e\\+14 N s/m\\^1\\.5\\).*lower gamma" chain --n 3 --damping kk --gamma 1e14 --quiet
+failed_with "falcon --damping kk --gamma 1e14: names the damping" \
+    "^granwave falcon: N = 1, v_imp = 0\\.3 m/s: chain: bead 1 still on the wall .*the contact damping \\(damping kk" \
+    falcon --n 1:3 --damping kk --gamma 1e14 --quiet
+failed_with "chain --damping kk --gamma 1e3 --t-max 1e-6 (cut moving): the plain line" \
+    "^granwave chain: bead 1 still on the wall at t_max = 1e-06 s\$" chain --n 3 --damping kk --gamma 1e3 --t-max 1e-6 --quiet
 
 test_summary test_hostile_fortyfifth

@@ -25,6 +25,7 @@
 #include "gw_chain.h"
 #include "chain_model.h"
 #include "chain_collide_impl.h"
+#include "gw_locale.h"
 
 typedef struct run_state {
     const gw_chain *c;
@@ -530,12 +531,21 @@ static int collide_after(void *ctx, double t, const double *y, gw_err *err)
              * the bead has stopped (a t-max that cuts the collision short
              * leaves it moving) */
             const gw_chain_params *p = gw_chain_get_params(st->c);
-            if ((p->guide.coulomb > 0 || p->guide.viscous > 0) && fabs(y[1]) < 1e-3 * st->v_scale)
+            const int stopped = fabs(y[1]) < 1e-3 * st->v_scale;
+            if ((p->guide.coulomb > 0 || p->guide.viscous > 0) && stopped)
                 return gw_err_set(err, GW_ELIMIT, "chain: bead 1 still on the wall at t_max = %.6g s: the guide's "
                                   "friction (guide-friction %g N, guide-viscous %g N s/m) stopped it inside its "
                                   "overlap, which creeps back without end (an overdamped contact; a longer t-max "
                                   "does not end it): lower guide-friction or guide-viscous, or raise the impact "
                                   "speed", st->t_max, p->guide.coulomb, p->guide.viscous);
+            /* so does a contact damping far above critical (--damping hc
+             * --alpha 1e8, kk --gamma 1e14: the same line, naming nothing) */
+            const int kk = p->damping == GW_DAMP_KUWABARA_KONO, hc = p->damping == GW_DAMP_HUNT_CROSSLEY;
+            if ((kk || hc) && !chain_damping_zero(p) && stopped)
+                return gw_err_set(err, GW_ELIMIT, "chain: bead 1 still on the wall at t_max = %.6g s: the contact "
+                                  "damping (damping %s, %s %g %s) stopped it inside its overlap, from which it creeps "
+                                  "back (an overdamped contact): lower %s, or raise the impact speed", st->t_max, kk ? "kk" : "hc", kk ? "gamma" : "alpha",
+                                  kk ? p->gamma : p->alpha, kk ? "N s/m^1.5" : "s/m", kk ? "gamma" : "alpha");
             return gw_err_set(err, GW_ELIMIT, "chain: bead 1 still on the wall at t_max = %.6g s", st->t_max);
         }
         return GW_DRIVE_STOP;
@@ -666,7 +676,7 @@ static int collide_run(const gw_chain *c, const gw_chain_run_opts *o, int drop, 
     }
     gw_drive drive = {.t_end = t_max, .dt_out = dt_out, .k_out = 1, .on_root = collide_root,
                       .on_output = collide_output, .after = collide_after, .ctx = &st};
-    rc = gw_solver_drive(s, &drive, &t, y, roots, err);
+    rc = chain_step_limit_named(gw_solver_drive(s, &drive, &t, y, roots, err), s, &pl.sp, err);
 stopped:
     r->t_end = t;
     /* The wall's impulse from the momentum balance d/dt (sum m_i v_i + M_s v_s) =
@@ -700,4 +710,15 @@ void gw_chain_result_free(gw_chain_result *r)
         return;
     free(r->final_v);
     r->final_v = r->detach_t = r->v_tau_n = r->front_t = NULL;
+}
+
+int chain_step_limit_named(int rc, const gw_solver *s, const gw_solver_params *sp, gw_err *err)
+{
+    const char *m = s ? gw_solver_error(s) : "";
+    if (rc != GW_ELIMIT || !err || !sp || !m[0] || !strstr(err->msg, m))
+        return rc;
+    char first[sizeof err->msg];
+    gw_snprintf(first, sizeof first, "%s", err->msg);
+    return gw_err_set(err, rc, "%s (the step limit max-steps = %ld steps between two outputs or events: raise "
+                      "--max-steps)", first, sp->max_steps);
 }

@@ -636,7 +636,7 @@ int gw_chain_drop_run_progress(const gw_chain_drop_params *p, const gw_chain_run
     st.type = type;
     if ((rc = gw_solver_create(type, &d.sys, &sp, 0.0, y, &s, err)) != GW_OK)
         goto done;
-    rc = drop_loop(&st, s, y, roots, err);
+    rc = chain_step_limit_named(drop_loop(&st, s, y, roots, err), s, &sp, err);
     gw_solver_get_stats(s, &r->stats);
     st.base = st.total / 2;
     if (rc == GW_OK && !st.canceled)

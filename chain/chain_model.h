@@ -187,6 +187,14 @@ void chain_dt_tally_results(chain_dt_tally *t, const gw_chain_result *res, long 
  * counting in *count. */
 void chain_list_speed(char *buf, size_t size, int *count, double v);
 
+/* rc, and err's message naming max-steps when rc is the solver's own step
+ * limit (GW_ELIMIT from s: more than sp->max_steps steps between two outputs
+ * or events), which the backends' texts ("mxstep steps taken before reaching
+ * tout", "rk4: more than 5 steps before ...") said without naming the input
+ * (chain --max-steps 5, drop, the studies and Python alike). A limit of the
+ * run's own (t_max, its step bound: their own texts) is left as it is. */
+int chain_step_limit_named(int rc, const gw_solver *s, const gw_solver_params *sp, gw_err *err);
+
 /* GW_ESOLVER when the run has blown up (a step too long for the stiffest
  * contact): a state not finite, or a relative energy error above 1; the message
  * starts "WHO: the solution blew up at t = ..." and says which. GW_OK otherwise.

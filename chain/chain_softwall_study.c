@@ -546,7 +546,8 @@ static int sw_run(const gw_chain_softwall_setup *s, gw_progress_fn progress, voi
     if (rc == GW_OK &&
         ((rc = gw_chain_softwall_warnings(out->unfinished - held, out->ncase, &out->warnings)) != GW_OK ||
          (rc = sw_held_warnings(out, held, where, &out->warnings)) != GW_OK ||
-         (rc = chain_dt_tally_warnings(&dt_tally, "--dt", "collisions", &out->warnings)) != GW_OK))
+         (rc = chain_dt_tally_warnings(&dt_tally, "--dt", "collisions", &out->warnings)) != GW_OK ||
+         (rc = chain_damping_zero_warnings(&rs.params, 0, 1, &out->warnings)) != GW_OK))
         rc = gw_err_set(err, rc, "softwall: out of memory");
     for (int i = 0; res && i < nw * per; i++)
         gw_chain_result_free(&res[i]);

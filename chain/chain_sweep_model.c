@@ -38,8 +38,16 @@ static int prepare(gw_chain_setup *s, int nk, const char *const *names, const ch
     return rc == GW_OK ? GW_OK : GW_EINVAL;
 }
 
-/* tally (may be NULL): the case's dt given against the step it will take */
-static int check_tally(chain_dt_tally *tally, int nk, const char *const *names, const char *const *values,
+/* What a pass of checks tallies over the cases (the memo), each said in one
+ * warning line over the sweep: the dt given above the step the case takes,
+ * and a damping model with a constant of 0 (chain_damping_zero). */
+typedef struct sweep_memo {
+    chain_dt_tally dt;
+    int zero, total;
+} sweep_memo;
+
+/* tally (may be NULL): the case's dt given against the step it will take, and its damping */
+static int check_tally(sweep_memo *tally, int nk, const char *const *names, const char *const *values,
                        gw_err *err)
 {
     gw_chain_setup s;
@@ -54,8 +62,11 @@ static int check_tally(chain_dt_tally *tally, int nk, const char *const *names, 
                      chain_run_step(&r.params, &r.run, &dt, &dt_max, err) == GW_OK
                  ? GW_OK
                  : GW_EINVAL;
-        if (rc == GW_OK && tally)
-            chain_dt_tally_add(tally, r.run.sp.dt > 0 ? r.run.sp.dt : 0.0, dt, dt_max);
+        if (rc == GW_OK && tally) {
+            chain_dt_tally_add(&tally->dt, r.run.sp.dt > 0 ? r.run.sp.dt : 0.0, dt, dt_max);
+            tally->zero += chain_damping_zero(&r.params);
+            tally->total++;
+        }
         gw_chain_resolved_free(&r);
     }
     gw_chain_setup_clear(&s);
@@ -72,14 +83,16 @@ static int check(int nk, const char *const *names, const char *const *values, gw
  * that step, and its row says nothing of it (granwave sweep warned of none). */
 static int check_memo(void **memo, int nk, const char *const *names, const char *const *values, gw_err *err)
 {
-    if (!*memo && !(*memo = calloc(1, sizeof(chain_dt_tally))))
+    if (!*memo && !(*memo = calloc(1, sizeof(sweep_memo))))
         return gw_err_set(err, GW_ENOMEM, "out of memory");
     return check_tally(*memo, nk, names, values, err);
 }
 
 static int memo_warnings(const void *memo, char **list)
 {
-    return chain_dt_tally_warnings(memo, "dt", "cases", list);
+    const sweep_memo *m = memo;
+    int rc = m ? chain_dt_tally_warnings(&m->dt, "dt", "cases", list) : GW_OK;
+    return rc == GW_OK && m ? chain_damping_zero_warnings(NULL, m->zero, m->total, list) : rc;
 }
 
 /* A case's part: the share of its collision's work done (chain_watch_share,

@@ -35,6 +35,16 @@ int chain_wall_arms(const gw_chain_wall *wall, double *tau_min, double *tau_max)
  * the damping leaves to its own law (chain_setup.c). A single run's check: a
  * study over a range of N has bead contacts from N = 2. */
 int chain_damping_check(const gw_chain_params *p, gw_err *err);
+/* 1 when p's damping model has a constant of 0 (kk with gamma 0, hc with
+ * alpha 0): no damping at all, the column of damping none. Kept (a sweep over
+ * gamma from 0), as restitution 1 is not (refused), but said: a run, study or
+ * sweep that names a damping model and damps nothing warns, on stderr and in
+ * its warnings. */
+int chain_damping_zero(const gw_chain_params *p);
+/* Its warning for a run or a study of p's one damping (nothing when p damps,
+ * or is NULL), or for zero of a sweep's total cases (p NULL); GW_OK or
+ * GW_ENOMEM (gw_warnings_add). */
+int chain_damping_zero_warnings(const gw_chain_params *p, int zero, int total, char **list);
 /* The same rule over a study's sizes from n_lo (falcon, wavespeed, softwall):
  * GW_EINVAL naming damping when n_lo is 1 and p's wall (any n) is such a wall;
  * sheet (may be NULL) names the wall in the message. */

@@ -34,6 +34,30 @@ static int overlap_warning(const gw_chain_result *r, char **list)
                            r->overlap_max_rel);
 }
 
+int chain_damping_zero(const gw_chain_params *p)
+{
+    return p && ((p->damping == GW_DAMP_KUWABARA_KONO && p->gamma == 0) ||
+                 (p->damping == GW_DAMP_HUNT_CROSSLEY && p->alpha == 0));
+}
+
+/* chain --damping kk --gamma 0 ran the elastic column, recorded damping kk
+ * and said nothing (the forty-fourth pass) */
+int chain_damping_zero_warnings(const gw_chain_params *p, int zero, int total, char **list)
+{
+    if (p) {
+        if (!chain_damping_zero(p))
+            return GW_OK;
+        const int kk = p->damping == GW_DAMP_KUWABARA_KONO;
+        const char *c = kk ? "gamma" : "alpha";
+        return gw_warnings_add(list, "--damping %s with --%s 0 is no damping: the results are those of --damping none "
+                               "(give --%s above 0, or --restitution)", kk ? "kk" : "hc", c, c);
+    }
+    if (zero <= 0)
+        return GW_OK;
+    return gw_warnings_add(list, "damping kk with gamma 0, or hc with alpha 0, is no damping: %d of %d cases, whose rows "
+                           "are those of damping none", zero, total);
+}
+
 /* A dt given above the step the run could take ran at that step: the
  * results are the step's (chain --dt 1e-3 byte for byte those of the
  * automatic dt-max 6.6e-6 s); refusing would refuse the dt that earlier

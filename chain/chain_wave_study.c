@@ -479,7 +479,8 @@ static int ws_run(const gw_chain_wavespeed_setup *s, gw_progress_fn progress, vo
         ((rc = gw_chain_unfinished_warnings(out->unfinished - held, out->ncase, &out->warnings)) != GW_OK ||
          (rc = chain_held_warnings(out->n_held, out->ncase + nv, "the fits over N and over v_imp, the front and "
                                    "group speeds", where, &out->warnings)) != GW_OK ||
-         (rc = chain_dt_tally_warnings(&dt_tally, "--dt", "collisions", &out->warnings)) != GW_OK))
+         (rc = chain_dt_tally_warnings(&dt_tally, "--dt", "collisions", &out->warnings)) != GW_OK ||
+         (rc = chain_damping_zero_warnings(&r.params, 0, 1, &out->warnings)) != GW_OK))
         rc = gw_err_set(err, rc, "wavespeed: out of memory");
     for (int i = 0; i < nv * per_v; i++)
         gw_chain_result_free(&res[i]);

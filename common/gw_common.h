@@ -340,7 +340,9 @@ int gw_fnv1a64_parse(const char *p, size_t len, unsigned long long *h);
 /* ---- output locations, checked before any work ----
  * gw_out_check: dir is an existing writable directory, or does not exist and its
  * nearest existing ancestor is a writable directory (it creates nothing; the
- * caller makes the directory with gw_mkdir_p when it has something to write).
+ * caller makes the directory with gw_mkdir_p when it has something to write);
+ * not the file system's root directory, by any spelling (its files would go
+ * among the system's; gw_outset_begin refuses it too).
  * gw_out_file_check: path is absent or a regular file, in an existing writable
  * directory; a symbolic link is checked as the file it leads to (in its
  * directory), and refused when it leads nowhere. GW_EINVAL with one line

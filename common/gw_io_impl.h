@@ -23,6 +23,14 @@ void gw_io_sig_release(unsigned char *old, int *masked);
  * errno of resolving it; ENOENT: it leads to nothing), naming the target. */
 int gw_io_link_refused(const char *path, const char *what, int e, gw_err *err);
 
+/* GW_EINVAL when dir names the file system's root directory, by any
+ * spelling ("/", "//.", "/tmp/..", a link to it): a run's files would go
+ * among the system's, and the set's commit would remove any of its names
+ * the run did not write from "/" (chain --out / as root wrote chain.json
+ * and its traces there). The one rule of every --out (gw_out_check) and of
+ * every output set (gw_outset_begin); GW_OK otherwise (a dir not there). */
+int gw_io_root_refused(const char *dir, const char *what, gw_err *err);
+
 /* The file a write to path replaces (path, or a symbolic link's target) into
  * out (n bytes); GW_EINVAL for a link to nothing or a path too long. */
 int gw_io_write_target(const char *path, char *out, size_t n, const char *what, gw_err *err);

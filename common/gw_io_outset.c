@@ -139,6 +139,8 @@ int gw_outset_begin(gw_outset *s, const char *dir, const char *const *names, gw_
                               dir);
     if (cur_set)
         return gw_err_set(err, GW_EINVAL, "%s: an output set is already open on this thread", dir);
+    if (gw_io_root_refused(dir, "gw_outset_begin: dir", err) != GW_OK)
+        return GW_EINVAL;
     if (gw_snprintf(s->dir, sizeof s->dir, "%s", dir) >= (int)sizeof s->dir)
         return gw_err_set(err, GW_EINVAL, "%s: output path too long", dir);
     s->names = names;

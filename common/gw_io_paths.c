@@ -144,7 +144,19 @@ void gw_path_parent(char *buf)
         *slash = '\0';
 }
 
-int gw_out_check(const char *dir, const char *what, gw_err *err)
+int gw_io_root_refused(const char *dir, const char *what, gw_err *err)
+{
+    struct stat d, r;
+    if (!dir || stat(dir, &d) != 0 || stat("/", &r) != 0 || d.st_dev != r.st_dev || d.st_ino != r.st_ino)
+        return GW_OK;
+    return gw_err_set(err, GW_EINVAL, "%s: '%s' is the file system's root directory: give a directory of the "
+                      "run's own (its files would go among the system's)", what ? what : "output", dir);
+}
+
+/* gw_out_check, for a directory of the run's files (root_ok 0) or the
+ * directory of one file named in full (root_ok 1: layer-make --out /s.txt is
+ * that one file, not a set of the run's files in "/") */
+static int out_dir_check(const char *dir, const char *what, int root_ok, gw_err *err)
 {
     if (!what) /* (printed as "(null)") */
         what = "output";
@@ -152,7 +164,7 @@ int gw_out_check(const char *dir, const char *what, gw_err *err)
     size_t n = dir ? strlen(dir) : 0;
     if (n == 0 || n >= sizeof buf)
         return gw_err_set(err, GW_EINVAL, "%s: bad path '%s'", what, dir ? dir : "");
-    if (dotdot_after_missing(dir, what, err) != GW_OK)
+    if (dotdot_after_missing(dir, what, err) != GW_OK || (!root_ok && gw_io_root_refused(dir, what, err) != GW_OK))
         return GW_EINVAL;
     memcpy(buf, dir, n + 1);
     struct stat st;
@@ -192,6 +204,11 @@ int gw_out_check(const char *dir, const char *what, gw_err *err)
         gw_path_parent(buf);
         n = strlen(buf);
     }
+}
+
+int gw_out_check(const char *dir, const char *what, gw_err *err)
+{
+    return out_dir_check(dir, what, 0, err);
 }
 
 /* GW_EINVAL when target (the file path writes, gw_io_write_target) belongs to
@@ -241,7 +258,7 @@ int gw_out_file_check(const char *path, const char *what, gw_err *err)
     /* a file is written into an existing directory (nothing makes its parents) */
     if (stat(dir, &st) != 0)
         return gw_err_set(err, GW_EINVAL, "%s: directory '%s' of '%s': %s", what, dir, path, strerror(errno));
-    rc = gw_out_check(dir, what, err);
+    rc = out_dir_check(dir, what, 1, err);
     return rc == GW_OK ? temp_name_fits(path, dir, what, err) : rc;
 }
 

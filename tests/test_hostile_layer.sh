@@ -373,7 +373,7 @@ runs "layer-impact --rings 1000 --t-max 1e-3 --dt-out 1e-5 (small series)" \
 
 # --- 9: implicit methods without a matrix -----------------------------------
 S9=$SRC/data/measured/restitution_full/sample.txt
-pen() { /usr/bin/python3 -c "import json,sys; d=json.load(open(sys.argv[1])); print(d['penetration'], d['dissipated_first_contact'])" "$1"; }
+pen() { /usr/bin/python3 -c "import json,sys; d=json.load(open(sys.argv[1])); print(d['penetration'], 'nan' if d['dissipated_first_contact'] is None else d['dissipated_first_contact'])" "$1"; }
 runs "layer-impact --solver cvode (adams) --t-max 1e-4: the reference" layer-impact --sample "$S9" --solver cvode --t-max 1e-4 --json &&
     ref=$(pen "$tmp/stdout")
 for sm in "cvode bdf" "arkode dirk"; do
@@ -382,9 +382,12 @@ for sm in "cvode bdf" "arkode dirk"; do
         layer-impact --sample "$S9" --solver "$1" --method "$2" --t-max 1e-4 --json; then
         got=$(pen "$tmp/stdout")
         # penetration to 1e-7 (the tolerances 1e-8: the methods agree to 4e-10),
-        # first-contact loss to 1e-4 (sampled at dt-out: they agree to 1e-6)
-        /usr/bin/python3 -c "import sys; a=list(map(float,sys.argv[1].split())); b=list(map(float,sys.argv[2].split()));
-sys.exit(not (abs(a[0]-b[0]) <= 1e-7*abs(b[0]) and abs(a[1]-b[1]) <= 1e-4*abs(b[1])))" "$got" "$ref" &&
+        # first-contact loss to 1e-4 (sampled at dt-out: they agree to 1e-6), or
+        # undecided in both (None: the run ends at t-max inside the contact, whose
+        # end is still to come: test_hostile_fortyfifth)
+        /usr/bin/python3 -c "import sys; a=[float(x) for x in sys.argv[1].split()]; b=[float(x) for x in sys.argv[2].split()];
+import math; same=(math.isnan(a[1]) and math.isnan(b[1])) or abs(a[1]-b[1]) <= 1e-4*abs(b[1])
+sys.exit(not (abs(a[0]-b[0]) <= 1e-7*abs(b[0]) and same))" "$got" "$ref" &&
             ok "  $2: penetration and first-contact loss ($got) equal adams' ($ref)" || ko "  $2: $got against adams' $ref"
     fi
 done

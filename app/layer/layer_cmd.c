@@ -614,6 +614,17 @@ static const char *const impact_files[] = {"ledger.csv", "crowns.csv", "crowns_p
                                            "impact.json", "impact.h5", "snapshot_0.vtk", "snapshot_end.vtk",
                                            "snapshots.pvd", "snapshot_failure.vtk", NULL};
 
+/* What sets the step ends of an impact run under type, as advice to have
+ * more of them in the first contact: verlet's and rk4's fixed step, or
+ * cvode's and arkode's own steps, which follow their tolerances (they refuse
+ * --dt: "lower --dt" was told under every solver) */
+static const char *step_control(const gw_solver_type *type)
+{
+    return type == gw_solver_cvode || type == gw_solver_arkode
+               ? "fewer than 3 step ends in it: lower --rtol and --atol, the solver chooses its steps"
+               : "fewer than 3 step ends in it: lower --dt";
+}
+
 int gw_cmd_layer_impact(int argc, char **argv)
 {
     impact_cli c;
@@ -778,7 +789,10 @@ int gw_cmd_layer_impact(int argc, char **argv)
             printf("  penetration %s m (%s R_m)\n", gw_cli_num(v[0], sizeof v[0], "%.4g", r.penetration),
                    gw_cli_num(v[1], sizeof v[1], "%.3g", r.penetration / c.rm));
             if (isnan(r.t_first_contact))
-                printf("  first contact: unresolved (fewer than 3 steps in it: lower --dt)\n");
+                printf("  first contact: unresolved (%s)\n",
+                       !(r.bounced >= 0) && r.t_end >= c.ip.t_max && isnan(r.t_contact_open)
+                           ? "the run ended at t-max inside it: raise --t-max"
+                           : step_control(c.type));
             else
                 printf("  first contact: E_d = %.3g of E_incident, block loss %.3g (ends at %.4g ms); at its opening "
                        "block loss %s (B.28)\n", r.dissipated_first_contact, r.block_loss_first_contact,

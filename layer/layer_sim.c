@@ -23,7 +23,9 @@
  * - Zeno guard: more than LAYER_ZENO_COUNT events within L->zeno_dt of each
  *   other (seen with CVODE when a contact grazes u_n = 0) switch the event roots
  *   off for L->zeno_quiet s (1e-12 and 1e-7 s, or 1e-6 and 0.1 rk4 steps in the
- *   exact mode); counted in gw_layer_stats.zeno_guards.
+ *   exact mode), or more than LAYER_ZENO_WIDE_COUNT within 100 times that
+ *   window (a contact chattering just past it); counted in
+ *   gw_layer_stats.zeno_guards.
  * Units: SI.
  */
 #include <math.h>
@@ -262,6 +264,7 @@ static int layer_on_root(void *ctx, double t, double *y, const int *roots, gw_er
         return GW_DRIVE_ON; /* only the block watch's roots: nothing to project or restart */
     L->st.events++;
     L->storm = L->t - L->t_event < L->zeno_dt ? L->storm + 1 : 0;
+    L->storm_wide = L->t - L->t_event < LAYER_ZENO_WIDE * L->zeno_dt ? L->storm_wide + 1 : 0;
     L->t_event = L->t;
     const int r0 = layer_root_rebuild(L), s0 = layer_root_slip(L);
     for (int k = 0; L->hook && !L->p.no_events && k < L->nc; k++)
@@ -272,7 +275,7 @@ static int layer_on_root(void *ctx, double t, double *y, const int *roots, gw_er
         rebuild |= roots[r0 + i] != 0;
     project(L, L->p.no_events ? NULL : roots, s0 >= 0 ? roots + s0 : NULL);
     layer_tmode_update(L, roots);
-    if (L->storm > LAYER_ZENO_COUNT && L->quiet_until == 0) {
+    if ((L->storm > LAYER_ZENO_COUNT || L->storm_wide > LAYER_ZENO_WIDE_COUNT) && L->quiet_until == 0) {
         /* Zeno guard: the root finder keeps stopping at the same instant (a
          * contact grazing u_n = 0 with CVODE's zero-at-restart rule). Step
          * over L->zeno_quiet s with only the rebuild roots, then resume. */
@@ -280,7 +283,7 @@ static int layer_on_root(void *ctx, double t, double *y, const int *roots, gw_er
         L->p.no_events = 1;
         L->quiet_until = L->t + L->zeno_quiet;
         L->st.zeno_guards++;
-        L->storm = 0;
+        L->storm = L->storm_wide = 0;
         return GW_DRIVE_YIELD;
     }
     return rebuild ? GW_DRIVE_YIELD : GW_DRIVE_RESET;

@@ -53,15 +53,16 @@ int gw_parse_double_list_range(const char *s, const char *name, const gw_num_ran
  * read back is accepted where the end is closed. Returns buf. */
 char *gw_num_bound(char *buf, size_t n, double x, int upper);
 
+/* " (give an integer in [lo, hi])" ("0 or an integer" when or_zero; empty
+ * when [lo, hi] is every long) into buf: the words gw_parse_long_in's
+ * refusal of a text that is no integer ends in. Returns buf. */
+char *gw_int_give(char *buf, size_t n, long lo, long hi, int or_zero);
+
 /* gw_parse_long, and 0 besides [lo, hi] when or_zero; a text that is no
  * integer (1.5, 1e-310) is refused naming the values the input takes
  * ("'1e-310' is not an integer (give an integer in [1, 100])", "0 or" when
  * or_zero; no range when [lo, hi] is every long), as a real number's
  * refusal of a subnormal names them. */
-/* " (give an integer in [lo, hi])" ("0 or an integer" when or_zero; empty
- * when [lo, hi] is every long) into buf: the words gw_parse_long_in's
- * refusal of a text that is no integer ends in. Returns buf. */
-char *gw_int_give(char *buf, size_t n, long lo, long hi, int or_zero);
 int gw_parse_long_in(const char *s, const char *name, long lo, long hi, int or_zero, long *out, gw_err *err);
 
 #endif

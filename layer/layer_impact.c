@@ -290,13 +290,18 @@ static const char *passing_text(char *buf, size_t n, double x, int dir, int is_v
     return buf;
 }
 
+/* A gap at the default's value, taken as not given: the struct cannot tell a
+ * gap set to it from one left at it (the setup knows, layer_setup.c). */
+static int gap_at_default(const gw_layer_impact_params *ip)
+{
+    return ip->gap == gw_layer_impact_params_default().gap;
+}
+
 int gw_layer_impact_fall_check(const gw_layer_impact_params *ip, double g, gw_err *err)
 {
     if (!ip)
         return gw_err_set(err, GW_EINVAL, "gw_layer_impact_fall_check: ip is NULL");
-    /* (the struct cannot tell a gap set to the default's value from one left
-     * at it: the default's wording for both; the setup knows, layer_setup.c) */
-    return layer_impact_fall_rule(ip, g, ip->gap == gw_layer_impact_params_default().gap, err);
+    return layer_impact_fall_rule(ip, g, gap_at_default(ip), err);
 }
 
 int layer_impact_fall_rule(const gw_layer_impact_params *ip, double g, int gap_default, gw_err *err)
@@ -361,7 +366,7 @@ int gw_layer_impact_gap_check(const gw_layer_sample *smp, const gw_layer_impact_
         return gw_err_set(err, GW_EINVAL, "gw_layer_impact_gap_check: %s is NULL", !smp ? "s" : "ip");
     /* (its rm, read below: a NaN rm passed every gap before session 43) */
     const int rc = layer_sample_shape_check(smp, "s", err);
-    return rc == GW_OK ? layer_impact_gap_rules(smp, p, g, p->gap == gw_layer_impact_params_default().gap, err) : rc;
+    return rc == GW_OK ? layer_impact_gap_rules(smp, p, g, gap_at_default(p), err) : rc;
 }
 
 int layer_impact_gap_rules(const gw_layer_sample *smp, const gw_layer_impact_params *p, double g, int gap_default,
@@ -642,7 +647,7 @@ int layer_impact_run(const gw_layer_sample *smp, const gw_layer_params *lp0, con
     if (rc == GW_OK)
         rc = layer_impact_params_check(smp, ip, err);
     if (rc == GW_OK)
-        rc = layer_impact_gap_rules(smp, ip, lp0->gravity, ip->gap == gw_layer_impact_params_default().gap, err);
+        rc = layer_impact_gap_rules(smp, ip, lp0->gravity, gap_at_default(ip), err);
     if (rc == GW_OK)
         rc = gw_layer_impact_step_check(ip, type, sp, err);
     /* (a sample built in memory: gw_layer_impact_check holds its springs to

@@ -97,16 +97,26 @@ static int union_weight(const gw_layer_sample *smp, const gw_layer_params *lp, d
 
 /* q of the header comment for smp under lp into *q (NaN: nothing recorded);
  * GW_OK, or the status of weighing union clumps (err: why). */
+/* lp with the material a sample's settling record gives (its contact law,
+ * density, mass law and gravity): the pile as layer-make settled it */
+static gw_layer_params settling_material(const gw_layer_params *lp, const gw_layer_settled *st)
+{
+    gw_layer_params sp = *lp;
+    sp.shear_modulus = st->shear_modulus;
+    sp.poisson = st->poisson;
+    sp.density = st->density;
+    sp.gravity = st->gravity;
+    sp.mass_law = st->mass_law;
+    return sp;
+}
+
 static int load_ratio(const gw_layer_sample *smp, const gw_layer_params *lp, double *q, gw_err *err)
 {
     *q = NAN;
     if (!smp->settled.recorded)
         return GW_OK;
     const gw_layer_settled *st = &smp->settled;
-    gw_layer_params sp = *lp; /* the settling's material, for its masses */
-    sp.density = st->density;
-    sp.mass_law = st->mass_law;
-    sp.gravity = st->gravity;
+    const gw_layer_params sp = settling_material(lp, st); /* for its masses */
     double ws = 0, wi = 0;
     for (int i = 0; i < smp->n; i++) {
         ws += gw_layer_mass(&sp, smp->r[i]);
@@ -192,13 +202,7 @@ static void floor_unsettled(const gw_layer_sample *smp, const gw_layer_params *l
 {
     if (!smp->settled.recorded || !smp->settled_converged)
         return;
-    const gw_layer_settled *st = &smp->settled;
-    gw_layer_params sp = *lp; /* the settling's material: the load layer-make judged */
-    sp.shear_modulus = st->shear_modulus;
-    sp.poisson = st->poisson;
-    sp.density = st->density;
-    sp.gravity = st->gravity;
-    sp.mass_law = st->mass_law;
+    const gw_layer_params sp = settling_material(lp, &smp->settled); /* the load layer-make judged */
     double f, w;
     layer_floor_load(&sp, smp->n, smp->y, smp->r, sizeof *smp->y, &f, &w);
     if (w > 0 && f < LAYER_FLOOR_LOAD_MIN * w)

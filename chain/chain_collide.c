@@ -531,7 +531,7 @@ static int collide_after(void *ctx, double t, const double *y, gw_err *err)
              * the bead has stopped (a t-max that cuts the collision short
              * leaves it moving) */
             const gw_chain_params *p = gw_chain_get_params(st->c);
-            const int stopped = fabs(y[1]) < 1e-3 * st->v_scale;
+            const int stopped = chain_bead_stopped(y[1], st->v_scale);
             if ((p->guide.coulomb > 0 || p->guide.viscous > 0) && stopped)
                 return gw_err_set(err, GW_ELIMIT, "chain: bead 1 still on the wall at t_max = %.6g s: the guide's "
                                   "friction (guide-friction %g N, guide-viscous %g N s/m) stopped it inside its "
@@ -540,12 +540,9 @@ static int collide_after(void *ctx, double t, const double *y, gw_err *err)
                                   "speed", st->t_max, p->guide.coulomb, p->guide.viscous);
             /* so does a contact damping far above critical (--damping hc
              * --alpha 1e8, kk --gamma 1e14: the same line, naming nothing) */
-            const int kk = p->damping == GW_DAMP_KUWABARA_KONO, hc = p->damping == GW_DAMP_HUNT_CROSSLEY;
-            if ((kk || hc) && !chain_damping_zero(p) && stopped)
-                return gw_err_set(err, GW_ELIMIT, "chain: bead 1 still on the wall at t_max = %.6g s: the contact "
-                                  "damping (damping %s, %s %g %s) stopped it inside its overlap, from which it creeps "
-                                  "back (an overdamped contact): lower %s, or raise the impact speed", st->t_max, kk ? "kk" : "hc", kk ? "gamma" : "alpha",
-                                  kk ? p->gamma : p->alpha, kk ? "N s/m^1.5" : "s/m", kk ? "gamma" : "alpha");
+            if (chain_damping_holds(p, y[1], st->v_scale))
+                return chain_damping_held_error(p, "chain", "wall", st->t_max, "from which it creeps back (an "
+                                                "overdamped contact)", ", or raise the impact speed", err);
             return gw_err_set(err, GW_ELIMIT, "chain: bead 1 still on the wall at t_max = %.6g s", st->t_max);
         }
         return GW_DRIVE_STOP;

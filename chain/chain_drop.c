@@ -148,6 +148,11 @@ typedef struct drop_state {
     long total, next, step, base; /* base: samples before the pass under way */
     double reported_ms;      /* gw_clock_ms of the last report */
     int canceled;            /* the callback asked to stop */
+    /* the column's momentum toward the sensor in the first impact, and 1 once
+     * it turned back toward it after the impact had turned it away: gravity,
+     * not the damping, then holds bead 1 (chain_collide.c, held_by_gravity) */
+    double q_prev;
+    int fell_back;
 } drop_state;
 
 /* Wall time after which the run reports even short of a hundredth of its
@@ -482,9 +487,23 @@ static int drop_output(void *ctx, double t, double *y, gw_err *err)
     return rc == GW_DRIVE_ON && drop_progress(st, t) ? GW_DRIVE_STOP : rc;
 }
 
+/* Record whether the column's momentum, turned away from the sensor by the
+ * first impact, came back toward it while bead 1 was still on the sensor. */
+static void first_impact_momentum(drop_state *st, const double *y)
+{
+    if (!st->in_episode || st->r->n_episodes != 1 || st->fell_back)
+        return;
+    double q = 0;
+    for (int i = 0; i < st->n; i++)
+        q += gw_chain_bead_mass(st->d->c, i) * y[2 * i + 1];
+    st->fell_back = st->q_prev < 0 && q >= 0;
+    st->q_prev = q;
+}
+
 static int drop_after(void *ctx, double t, const double *y, gw_err *err)
 {
-    const drop_state *st = ctx;
+    drop_state *st = ctx;
+    first_impact_momentum(st, y);
     if (chain_blown_up(st->d->c, y, st->r->energy_error, st->type, "drop", t, err) != GW_OK)
         return GW_ESOLVER;
     if (st->o->energy_tol > 0 && st->r->energy_error > st->o->energy_tol)
@@ -513,6 +532,20 @@ static int drop_loop(drop_state *st, gw_solver *s, double *y, int *roots, gw_err
         if (rc == GW_OK && rc2 != GW_OK)
             rc = gw_err_set(err, rc2, "drop: out of memory for the impacts");
     }
+    /* Bead 1 stopped inside its first impact by a contact damping far above
+     * critical (drop --damping kk --gamma 1e14, hc --alpha 1e8): the run said
+     * "raise --t-max", naming nothing, though no t-max ends that impact. It
+     * is the collision that granwave chain fails on (exit 1, the damping
+     * named): the drop's first, whose tau_N and restitution are undecided at
+     * any t-max; the same failure here, for every caller of the drop. A bead
+     * that came to rest after a bounce is not this (its impacts are final),
+     * nor one whose column gravity turned back onto the sensor (chain under
+     * the same gravity warns "gravity holds the column" and exits 0). */
+    if (rc == GW_OK && r->open_at_t_max && r->n_episodes == 1 && !st->fell_back && t >= st->p->t_max &&
+        chain_damping_holds(gw_chain_get_params(st->d->c), y[1], st->d->c->scale[1]))
+        rc = chain_damping_held_error(gw_chain_get_params(st->d->c), "drop", "sensor", t, "in its first impact, "
+                                      "and it never rebounds (an overdamped contact: a longer t-max does not end it)",
+                                      "", err);
     return rc;
 }
 

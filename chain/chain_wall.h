@@ -41,6 +41,20 @@ int chain_damping_check(const gw_chain_params *p, gw_err *err);
  * sweep that names a damping model and damps nothing warns, on stderr and in
  * its warnings. */
 int chain_damping_zero(const gw_chain_params *p);
+/* 1 when p's contact damping (kk or hc, its constant above 0) is on and bead
+ * 1, at velocity v1, has stopped (|v1| below a thousandth of the velocity
+ * scale v_scale): a contact damping far above critical holds it inside its
+ * overlap, which no longer t-max ends (chain --damping kk --gamma 1e14; the
+ * drop's first impact alike). */
+int chain_damping_holds(const gw_chain_params *p, double v1, double v_scale);
+/* 1 when |v| is below a thousandth of v_scale: bead 1 stopped */
+int chain_bead_stopped(double v, double v_scale);
+/* The failure of a run whose bead 1 the contact damping holds (GW_ELIMIT, as
+ * chain's): "WHO: bead 1 still on the WALL at t_max = T s: the contact damping
+ * (damping kk, gamma G N s/m^1.5) stopped it inside its overlap, WHY: lower
+ * gamma[ADVICE]" (hc: alpha in s/m). One text for the chain and the drop. */
+int chain_damping_held_error(const gw_chain_params *p, const char *who, const char *wall, double t_max,
+                             const char *why, const char *advice, gw_err *err);
 /* Its warning for a run or a study of p's one damping (nothing when p damps,
  * or is NULL), or for zero of a sweep's total cases (p NULL); GW_OK or
  * GW_ENOMEM (gw_warnings_add). */

@@ -40,6 +40,27 @@ int chain_damping_zero(const gw_chain_params *p)
                  (p->damping == GW_DAMP_HUNT_CROSSLEY && p->alpha == 0));
 }
 
+int chain_bead_stopped(double v, double v_scale)
+{
+    return fabs(v) < 1e-3 * v_scale;
+}
+
+int chain_damping_holds(const gw_chain_params *p, double v1, double v_scale)
+{
+    const int on = p && (p->damping == GW_DAMP_KUWABARA_KONO || p->damping == GW_DAMP_HUNT_CROSSLEY);
+    return on && !chain_damping_zero(p) && chain_bead_stopped(v1, v_scale);
+}
+
+int chain_damping_held_error(const gw_chain_params *p, const char *who, const char *wall, double t_max,
+                             const char *why, const char *advice, gw_err *err)
+{
+    const int kk = p->damping == GW_DAMP_KUWABARA_KONO;
+    const char *c = kk ? "gamma" : "alpha";
+    return gw_err_set(err, GW_ELIMIT, "%s: bead 1 still on the %s at t_max = %.6g s: the contact damping (damping %s, "
+                      "%s %g %s) stopped it inside its overlap, %s: lower %s%s", who, wall, t_max, kk ? "kk" : "hc", c,
+                      kk ? p->gamma : p->alpha, kk ? "N s/m^1.5" : "s/m", why, c, advice ? advice : "");
+}
+
 /* chain --damping kk --gamma 0 ran the elastic column, recorded damping kk
  * and said nothing (the forty-fourth pass) */
 int chain_damping_zero_warnings(const gw_chain_params *p, int zero, int total, char **list)

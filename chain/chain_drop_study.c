@@ -415,7 +415,7 @@ int gw_chain_drop_study_run(const gw_chain_drop_setup *s, gw_progress_fn progres
     if (rc == GW_OK)
         rc = rc2;
     if (rc == GW_OK && ((rc = chain_damping_zero_warnings(p, 0, 1, &out->warnings)) != GW_OK ||
-                        (rc = gw_chain_drop_result_warnings(&out->r, &out->warnings)) != GW_OK))
+                        (rc = chain_drop_warnings(&out->r, p, &out->warnings)) != GW_OK))
         rc = gw_err_set(err, rc, "drop: out of memory");
     /* a threshold above every peak: f_max, t_fmax, the peaks and the impacts
      * are empty (null), which said nothing of why (drop --peak-threshold 1e9:

@@ -160,6 +160,12 @@ static inline int chain_result_held(const gw_chain_result *r)
  * Their unfinished count includes them: the studies' "raise --t-max" warning
  * counts the others only. */
 int chain_held_warnings(int held, int total, const char *left_out, const char *undecided, char **list);
+/* gw_chain_drop_result_warnings with the drop's column p (NULL: not named):
+ * a bead 1 at rest on the sensor at t_max (the column's kinetic energy below
+ * a millionth of e0, bead 1 stopped as chain_bead_stopped has it) is held
+ * there by its weight, and no t-max ends its last contact: said so, naming p's
+ * contact damping (which took its rebound), instead of "raise --t-max". */
+int chain_drop_warnings(const gw_chain_drop_result *r, const gw_chain_params *p, char **list);
 /* Runs whose step was below the dt given (gw_chain_result's run_dt under
  * run_dt_given: above dt_max, or rk4's dt_out), tallied over the runs of one
  * command, a study or a sweep, so that one warning line says how many: a

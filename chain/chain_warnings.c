@@ -243,6 +243,22 @@ int gw_chain_dispersion_warnings(const gw_chain_disp_result *r, char **list)
 
 int gw_chain_drop_result_warnings(const gw_chain_drop_result *r, char **list)
 {
+    return chain_drop_warnings(r, NULL, list);
+}
+
+/* Bead 1 at rest on the sensor at the run's end: the column's kinetic energy
+ * below a millionth of e0 (the drop's 1/2 M v_imp^2), its speeds a thousandth
+ * of v_imp as chain_bead_stopped's. A bead that came to rest after its
+ * bounces (drop --damping kk --gamma 1e6), or that gravity turned back onto
+ * the sensor in its first impact (hc --alpha 1e3), was told "raise --t-max",
+ * which never ends that contact. */
+static int drop_at_rest(const gw_chain_drop_result *r)
+{
+    return r->open_at_t_max && r->e0 > 0 && r->e_end.kinetic < 1e-6 * r->e0;
+}
+
+int chain_drop_warnings(const gw_chain_drop_result *r, const gw_chain_params *p, char **list)
+{
     if (!r)
         return GW_OK;
     int rc = dt_warning(r->run_dt_given, r->run_dt, r->run_dt_max, list);
@@ -250,6 +266,19 @@ int gw_chain_drop_result_warnings(const gw_chain_drop_result *r, char **list)
         rc = overlap_warning(&r->first, list); /* the first collision, the drop's hardest */
     if (rc != GW_OK || !(r->first_cut || r->open_at_t_max))
         return rc;
+    if (drop_at_rest(r)) {
+        char damp[160] = "";
+        const int kk = p && p->damping == GW_DAMP_KUWABARA_KONO;
+        if (p && (kk || p->damping == GW_DAMP_HUNT_CROSSLEY) && !chain_damping_zero(p))
+            gw_snprintf(damp, sizeof damp, ", the contact damping (damping %s, %s %g %s) having taken its rebound",
+                        kk ? "kk" : "hc", kk ? "gamma" : "alpha", kk ? p->gamma : p->alpha,
+                        kk ? "N s/m^1.5" : "s/m");
+        return gw_warnings_add(list, "bead 1 was at rest on the sensor at t_max = %.6g s%s: its weight holds it "
+                               "there, and no t-max ends that contact (the last impact's t_end and v_out are NaN, "
+                               "its peaks final)%s", r->t_end, damp,
+                               r->first_cut ? "; the first collision never ended: its tau_N and restitution are "
+                                              "those at t_max" : "");
+    }
     /* NaN in the result, null in the program's JSON: "NaN" is what the result holds for every caller */
     return gw_warnings_add(list, "the run was cut at t_max = %.6g s: %s%s%s; raise --t-max", r->t_end,
                            r->first_cut ? "the first collision had not ended (its F_max, tau_N and restitution are "

@@ -10,6 +10,13 @@
 #  - The drop fails exactly where chain at v_imp = sqrt(2 g h) under the same
 #    gravity fails (hc alpha 1e4, kk gamma 1e7: the damping holds bead 1), and
 #    runs where chain says gravity holds the column (hc alpha 1e3: exit 0).
+#  - A bead that came to rest on the sensor (kk gamma 1e6 after one bounce;
+#    hc alpha 1e3, which gravity turned back in its first impact) was told
+#    "raise --t-max" too: its warning (stderr and the JSON's) now says bead 1
+#    is at rest, held by its weight, names the damping, and advises no
+#    t-max; Python's sensor force at the end is then the column's weight
+#    n m g (static equilibrium, to 1e-9). Control: a t-max inside the first
+#    collision (2e-5 s) keeps "raise --t-max".
 #  - Controls: a calibrated kk drop (restitution 0.5) runs, its first
 #    collision's eps_eff 0.5 to 0.02, bead 1 back on the sensor; Python's drop
 #    raises GranwaveRunError naming the damping, and runs hc alpha 100.
@@ -64,7 +71,26 @@ if runs_json "drop --damping kk --restitution 0.5 --t-max 0.05" r.json drop --da
         ko "drop --restitution 0.5: eps_eff $(jq_py r.json "d['first_collision']['eps_eff']"), $(jq_py r.json "d['n_contact_episodes']") episodes"
 fi
 
-py_checks 2 <<'PYEOF'
+# at rest on the sensor: said so, the damping named, no t-max advised
+rest="bead 1 was at rest on the sensor at t_max = 0.01 s, the contact damping"
+rest_warned() { # WHAT NEEDLE ARGS...
+    local what=$1 needle=$2; shift 2
+    runs_json "$what" w.json drop "$@" --quiet || return
+    grep -qF -- "warning: $rest" "$tmp/stderr" && grep -qF -- "$needle" "$tmp/stderr" &&
+        ! grep -q -- "--t-max" "$tmp/stderr" && ok "$what: at rest, on stderr" ||
+        ko "$what: stderr $(head -c 300 "$tmp/stderr")"
+    [ "$(jq_py w.json "any('''$rest''' in x and '''$needle''' in x for x in d['warnings']) and not any('raise --t-max' in x for x in d['warnings'])")" = True ] &&
+        ok "$what: at rest, in the JSON warnings" || ko "$what: JSON warnings $(jq_py w.json "d['warnings']")"
+}
+rest_warned "drop --damping kk --gamma 1e6" "(damping kk, gamma 1e+06 N s/m^1.5) having taken its rebound" \
+    --damping kk --gamma 1e6
+rest_warned "drop --damping hc --alpha 1e3 --n 3" "the first collision never ended" --damping hc --alpha 1e3 --n 3
+if runs_json "drop --t-max 2e-5 (inside the first collision)" c.json drop --t-max 2e-5 --quiet; then
+    grep -q "warning: the run was cut at t_max = 2e-05 s: the first collision had not ended.*; raise --t-max\$" \
+        "$tmp/stderr" && ok "drop --t-max 2e-5: cut, raise --t-max kept" || ko "drop --t-max 2e-5: $(cat "$tmp/stderr")"
+fi
+
+py_checks 3 <<'PYEOF'
 try:
     granwave.drop(damping="kk", gamma=1e14)
     print("FAIL: Python drop(damping='kk', gamma=1e14): ran")
@@ -79,6 +105,11 @@ try:
           "Python drop(damping='hc', alpha=100): runs, bead 1 rebounds (eps_eff %.3g)" % r["first_collision"]["eps_eff"])
 except Exception as e:  # noqa: BLE001
     print("FAIL: Python drop(damping='hc', alpha=100): raised %s: %s" % (type(e).__name__, str(e)[:160]))
+r, ws = caught(granwave.drop, n=3, damping="hc", alpha=1e3)
+w = r["n"] * r["mass"] * r["gravity"]
+check(abs(r["f_wall"][-1] / w - 1) < 1e-9 and any("at rest on the sensor" in m and "alpha 1000" in m for m in ws),
+      "Python drop(n=3, hc alpha 1e3): at rest, the sensor reads the column's weight (%.12g N of %.12g), "
+      "warned %s" % (r["f_wall"][-1], w, [m[:80] for m in ws]))
 PYEOF
 
 test_summary test_drop_overdamped

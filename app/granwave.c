@@ -118,22 +118,52 @@ static int refuse(const char *what, const char *fmt, const char *arg)
 /* The own --help of the two top-level commands, as every command has one
  * (`granwave version --help` and `granwave help --help` exited 2, "unexpected
  * argument" / "unknown command '--help'"); `help version` and `help help`
- * print the same, as `help COMMAND` is `COMMAND --help` for every command. */
-static int version_usage(void)
+ * print the same, as `help COMMAND` is `COMMAND --help` for every command.
+ * Both through gw_cli_help from an option table, so that --json with --help
+ * prints it as JSON, as every command's. */
+static int json_flag; /* the tables' dest: read by nobody, the parse is by hand */
+
+static int version_usage(int help)
 {
-    printf("usage: granwave version [--json]\n\n"
-           "Print the program's version. --json: one JSON object with the version and\n"
-           "those of the libraries as loaded at run time (sundials, gsl, fftw, cjson,\n"
-           "hdf5; null without HDF5).\n");
-    return stdout_checked(NULL, 0);
+    gw_opt opts[] = {{.name = "json", .kind = GW_OPT_FLAG, .dest = &json_flag,
+                      .help = "one JSON object with the version and those of the libraries as loaded at run time "
+                              "(sundials, gsl, fftw, cjson, hdf5; null without HDF5)"},
+                     {0}};
+    return stdout_checked(NULL, gw_cli_help(stdout, "version", "granwave version [--json]",
+                                            "Print the program's version.", opts, help));
 }
 
-static int help_usage(void)
+static int help_usage(int help)
 {
-    printf("usage: granwave help [COMMAND]\n\n"
-           "Without COMMAND the list of commands (as granwave --help); with COMMAND that\n"
-           "command's options, as granwave COMMAND --help.\n");
-    return stdout_checked(NULL, 0);
+    gw_opt opts[] = {{.name = "json", .kind = GW_OPT_FLAG, .dest = &json_flag,
+                      .help = "with COMMAND: that command's options as JSON (COMMAND --help --json); without: the "
+                              "list of commands as JSON"},
+                     {0}};
+    return stdout_checked(NULL, gw_cli_help(stdout, "help", "granwave help [COMMAND] [--json]",
+                                            "Without COMMAND the list of commands (as granwave --help); with COMMAND "
+                                            "that\ncommand's options, as granwave COMMAND --help.", opts, help));
+}
+
+/* granwave --help --json: the commands as JSON, those of usage() */
+static int usage_json(void)
+{
+    cJSON *o = cJSON_CreateObject(), *list = NULL;
+    int ok = o && cJSON_AddStringToObject(o, "program", "granwave") &&
+             cJSON_AddStringToObject(o, "version", gw_version()) &&
+             cJSON_AddStringToObject(o, "usage", "granwave <command> [options]") &&
+             (list = cJSON_AddArrayToObject(o, "commands")) != NULL;
+    const command top[] = {{"version", NULL, "print the version (--json: also the libraries', as loaded)"},
+                           {"help", NULL, "this list; help COMMAND: that command's options"}};
+    const size_t nc = sizeof commands / sizeof commands[0];
+    for (size_t i = 0; ok && i < nc + 2; i++) {
+        const command *c = i < nc ? &commands[i] : &top[i - nc];
+        cJSON *e = cJSON_CreateObject();
+        ok = e && cJSON_AddItemToArray(list, e) && cJSON_AddStringToObject(e, "name", c->name) &&
+             cJSON_AddStringToObject(e, "summary", c->summary);
+    }
+    const int code = gw_cli_json_stdout(NULL, ok ? o : NULL);
+    cJSON_Delete(o);
+    return stdout_checked(NULL, code);
 }
 
 static int is_help_flag(const char *a)
@@ -145,6 +175,15 @@ static int is_help_flag(const char *a)
  * --help; anything more is refused, never ignored */
 static int help(int argc, char **argv)
 {
+    /* --json anywhere but after "--": that help as JSON (taken out of argv) */
+    int json = 0;
+    for (int i = 2; i < argc && strcmp(argv[i], "--") != 0; i++)
+        if (strcmp(argv[i], "--json") == 0 && !json) {
+            json = GW_CLI_HELP_JSON;
+            memmove(argv + i, argv + i + 1, (size_t)(argc - i) * sizeof *argv); /* argv[argc] (NULL) too */
+            argc--;
+            break;
+        }
     int ended = argc > 2 && strcmp(argv[2], "--") == 0; /* "help -- COMMAND": COMMAND is no flag */
     if (ended) {
         argv[2] = argv[1];
@@ -152,18 +191,20 @@ static int help(int argc, char **argv)
         argc--;
     }
     if (argc > 3)
-        return refuse(argv[1], "unexpected argument '%s' (usage: granwave help [COMMAND])", argv[3]);
+        return refuse(argv[1], "unexpected argument '%s' (usage: granwave help [COMMAND] [--json])", argv[3]);
     if (argc == 3) {
         const command *c = find_command(argv[2]);
         if (!c && strcmp(argv[2], "version") == 0)
-            return version_usage();
+            return version_usage(json ? json : 1);
         if (!c && (strcmp(argv[2], "help") == 0 || (!ended && is_help_flag(argv[2]))))
-            return help_usage();
+            return help_usage(json ? json : 1);
         if (!c)
             return refuse(argv[1], "unknown command '%s' (see granwave --help)", argv[2]);
-        char *h[] = {"--help", NULL};
-        return stdout_checked(c->name, c->run(1, h));
+        char *h[] = {"--help", "--json", NULL};
+        return stdout_checked(c->name, c->run(json ? 2 : 1, h));
     }
+    if (json)
+        return usage_json();
     usage(stdout);
     return stdout_checked(NULL, 0);
 }
@@ -189,7 +230,7 @@ static int version(int argc, char **argv)
         json = 1;
     }
     if (want_help)
-        return version_usage();
+        return version_usage(json ? GW_CLI_HELP_JSON : 1);
     if (!json) {
         printf("granwave %s\n", gw_version());
         return stdout_checked(NULL, 0);

@@ -10,6 +10,7 @@
 
 #include "gw_cli.h"
 #include "gw_common.h"
+#include "gw_locale.h"
 #include "gw_number_impl.h"
 #include "gw_param.h"
 
@@ -144,6 +145,7 @@ int gw_cli_parse(const char *cmd, gw_opt *opts, int argc, char **argv, int *help
     *help = 0;
     *npos = 0;
     int ended = 0; /* "--" seen: what follows is positional (POSIX guideline 10) */
+    int json_help = 0; /* the argument index of a --json that opts lacks (0: none) */
     for (int i = 0; i < argc; i++) {
         const char *a = argv[i];
         if (!ended && strcmp(a, "--") == 0) { /* was "unknown option '--'" */
@@ -170,6 +172,10 @@ int gw_cli_parse(const char *cmd, gw_opt *opts, int argc, char **argv, int *help
         memcpy(name, a + 2, len);
         name[len] = '\0';
         gw_opt *o = (gw_opt *)gw_cli_find(opts, name);
+        if (!o && !eq && strcmp(name, "json") == 0 && !json_help) { /* a table without --json: with --help only */
+            json_help = i + 1;
+            continue;
+        }
         if (!o && strcmp(name, "help") == 0) /* "--help=1": the option is known, its value is not */
             return gw_err_set(err, GW_EINVAL, "%s: option '--help' takes no value", cmd);
         if (!o)
@@ -200,12 +206,156 @@ int gw_cli_parse(const char *cmd, gw_opt *opts, int argc, char **argv, int *help
         if (rc != GW_OK)
             return rc;
     }
+    if (json_help && !*help) /* --json is no option of this command's run */
+        return gw_err_set(err, GW_EINVAL, "%s: unknown option '--json' (see %s --help)", cmd, cmd);
+    const gw_opt *json = gw_cli_find(opts, "json");
+    if (*help && (json_help || (json && json->kind == GW_OPT_FLAG && json->seen)))
+        *help = GW_CLI_HELP_JSON;
     return GW_OK;
 }
 
-void gw_cli_help(FILE *fp, const char *cmd, const char *usage, const char *summary,
-                 const gw_opt *opts)
+/* The text of a help line from its "[" or "(" at from to the first "]" or ")"
+ * after it, brackets included, as a new cJSON string; NULL when not closed. */
+static cJSON *help_span(const char *from)
 {
+    const char *close = strpbrk(from + 1, "])");
+    if (!close)
+        return NULL;
+    char buf[256];
+    gw_snprintf(buf, sizeof buf, "%.*s", (int)(close + 1 - from), from);
+    return cJSON_CreateString(buf);
+}
+
+/* The range the help prints ("in [LO, HI]", "in (LO, HI)"), brackets included,
+ * or NULL; *at its opening bracket. */
+static cJSON *help_range(const char *help, const char **at)
+{
+    *at = NULL;
+    for (const char *p = help; p && (p = strstr(p, "in ")) != NULL; p++) {
+        if ((p == help || p[-1] == ' ') && (p[3] == '[' || p[3] == '(')) {
+            cJSON *r = help_span(p + 3);
+            if (r)
+                *at = p + 3;
+            return r;
+        }
+    }
+    return NULL;
+}
+
+/* The default the help prints: the text of its last "[...]" that is not the
+ * range (at), or NULL. */
+static cJSON *help_default(const char *help, const char *at)
+{
+    const char *last = NULL, *last_end = NULL;
+    for (const char *p = help ? strchr(help, '[') : NULL; p; p = strchr(p + 1, '[')) {
+        const char *close = strchr(p, ']');
+        if (!close)
+            break;
+        if (p != at) {
+            last = p;
+            last_end = close;
+        }
+        p = close;
+    }
+    if (!last)
+        return NULL;
+    char buf[256];
+    gw_snprintf(buf, sizeof buf, "%.*s", (int)(last_end - last - 1), last + 1);
+    return cJSON_CreateString(buf);
+}
+
+/* The unit the help prints before its range ("bead radius, m, in [...]": "m"),
+ * or NULL: the short field between ", " and ", in " (at: the range's bracket). */
+static cJSON *help_unit(const char *help, const char *at)
+{
+    if (!at || at - help < 6 || strncmp(at - 5, ", in ", 5) != 0)
+        return NULL;
+    const char *end = at - 5, *start = end;
+    while (start > help && !(start[-1] == ' ' && start - 1 > help && start[-2] == ','))
+        start--;
+    if (start == help || end - start < 1 || end - start > 12)
+        return NULL;
+    char buf[16];
+    gw_snprintf(buf, sizeof buf, "%.*s", (int)(end - start), start);
+    return cJSON_CreateString(buf);
+}
+
+static const char *opt_kind_name(const gw_opt *o)
+{
+    if (o->kind == GW_OPT_STRING && o->param && o->param->type == GW_PARAM_CHOICE)
+        return "choice";
+    return o->kind == GW_OPT_FLAG     ? "flag"
+           : o->kind == GW_OPT_DOUBLE ? "number"
+           : o->kind == GW_OPT_LONG   ? "integer"
+                                      : "text";
+}
+
+static cJSON *num_or_null(double v)
+{
+    return isfinite(v) ? cJSON_CreateNumber(v) : cJSON_CreateNull();
+}
+
+static cJSON *str_or_null(const char *s)
+{
+    return s && *s ? cJSON_CreateString(s) : cJSON_CreateNull();
+}
+
+/* One option of the help as JSON: what its help line says, field by field. */
+static cJSON *opt_json(const char *name, const char *help, const gw_opt *o)
+{
+    cJSON *j = cJSON_CreateObject();
+    if (!j)
+        return NULL;
+    const gw_param *p = o ? o->param : NULL;
+    const char *at;
+    cJSON *range = help_range(help, &at), *def = help_default(help, at);
+    if (!def && p && p->def && o->kind != GW_OPT_FLAG)
+        def = cJSON_CreateString(p->def);
+    cJSON_AddItemToObject(j, "name", cJSON_CreateString(name));
+    cJSON_AddItemToObject(j, "metavar", str_or_null(o ? o->metavar : NULL));
+    cJSON_AddItemToObject(j, "kind", cJSON_CreateString(o ? opt_kind_name(o) : "flag"));
+    cJSON *unit = p && p->unit && *p->unit ? cJSON_CreateString(p->unit) : help_unit(help, at);
+    cJSON_AddItemToObject(j, "unit", unit ? unit : cJSON_CreateNull());
+    cJSON_AddItemToObject(j, "range", range ? range : cJSON_CreateNull());
+    const int num = o && (o->kind == GW_OPT_DOUBLE || o->kind == GW_OPT_LONG);
+    cJSON_AddItemToObject(j, "min", num ? num_or_null(o->lo) : cJSON_CreateNull());
+    cJSON_AddItemToObject(j, "max", num ? num_or_null(o->hi) : cJSON_CreateNull());
+    cJSON_AddItemToObject(j, "default", def ? def : !o || o->kind == GW_OPT_FLAG ? cJSON_CreateFalse()
+                                                                                : cJSON_CreateNull());
+    cJSON *ch = cJSON_CreateArray();
+    for (const char *c = p && p->type == GW_PARAM_CHOICE ? p->choices : NULL; ch && c && *c;) {
+        size_t len = strcspn(c, ",");
+        char buf[64];
+        gw_snprintf(buf, sizeof buf, "%.*s", (int)len, c);
+        cJSON_AddItemToArray(ch, cJSON_CreateString(buf));
+        c += len + (c[len] == ',');
+    }
+    cJSON_AddItemToObject(j, "choices", p && p->type == GW_PARAM_CHOICE ? ch : (cJSON_Delete(ch), cJSON_CreateNull()));
+    cJSON_AddItemToObject(j, "help", cJSON_CreateString(help ? help : ""));
+    return j;
+}
+
+static int help_json(const char *cmd, const char *usage, const char *summary, const gw_opt *opts)
+{
+    cJSON *o = cJSON_CreateObject(), *list = NULL;
+    int ok = o && cJSON_AddStringToObject(o, "command", cmd) &&
+             cJSON_AddStringToObject(o, "usage", usage) && cJSON_AddStringToObject(o, "summary", summary) &&
+             (list = cJSON_AddArrayToObject(o, "options")) != NULL;
+    for (const gw_opt *p = opts; ok && p->name; p++) {
+        cJSON *one = opt_json(p->name, p->help, p);
+        ok = one && cJSON_AddItemToArray(list, one);
+    }
+    cJSON *h = ok ? opt_json("help", GW_CLI_HELP_TEXT, NULL) : NULL;
+    ok = ok && h && cJSON_AddItemToArray(list, h);
+    const int code = gw_cli_json_stdout(cmd, ok ? o : NULL);
+    cJSON_Delete(o);
+    return code;
+}
+
+int gw_cli_help(FILE *fp, const char *cmd, const char *usage, const char *summary, const gw_opt *opts, int help)
+{
+    if (help == GW_CLI_HELP_JSON)
+        return help_json(cmd, usage, summary, opts);
     fprintf(fp, "usage: %s\n\n%s\n\noptions:\n", usage, summary);
     for (const gw_opt *o = opts; o->name; o++) {
         char left[64];
@@ -213,8 +363,8 @@ void gw_cli_help(FILE *fp, const char *cmd, const char *usage, const char *summa
                  o->metavar ? o->metavar : "");
         fprintf(fp, "  %-22s %s\n", left, o->help);
     }
-    fprintf(fp, "  %-22s %s\n", "--help", "show this help and exit");
-    (void)cmd;
+    fprintf(fp, "  %-22s %s\n", "--help", GW_CLI_HELP_TEXT);
+    return 0;
 }
 
 int gw_cli_study_error(const gw_param *t, const char *cmd, int rc, gw_err *err)

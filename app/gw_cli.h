@@ -37,7 +37,8 @@ typedef struct gw_opt {
 
 /* Parse argv[0..argc) against opts (terminated by name == NULL). Accepts
  * "--name value" and "--name=value"; "--help"/"-h" sets *help; "--" ends the
- * options (every argument after it is positional, "--help" too). Positional
+ * options (every argument after it is positional, "--help" too); "--json"
+ * with --help makes *help GW_CLI_HELP_JSON. Positional
  * arguments go to pos (at most maxpos; more is an error). Returns GW_EINVAL with
  * a message naming the option on unknown options, missing or bad values, and on
  * an option given twice ("CMD --NAME: given twice"; --help may repeat). */
@@ -52,9 +53,20 @@ int gw_cli_parse(const char *cmd, gw_opt *opts, int argc, char **argv, int *help
  * GW_PARAM_UNSET_LONG, NULL). Int rows are not supported (GW_EINVAL, a table
  * bug). */
 int gw_cli_opt_param(const struct gw_param *p, void *dest, gw_opt *o, gw_err *err);
-/* Print usage and every option's help. */
-void gw_cli_help(FILE *fp, const char *cmd, const char *usage, const char *summary,
-                 const gw_opt *opts);
+/* gw_cli_parse's *help when --json came with --help (in either order; for a
+ * table without a --json option too, where --json alone stays unknown) */
+#define GW_CLI_HELP_JSON 2
+/* the help line of --help, which every command has */
+#define GW_CLI_HELP_TEXT "show this help and exit"
+/* Print usage and every option's help (help: gw_cli_parse's *help). With
+ * help GW_CLI_HELP_JSON, one JSON object on stdout instead, from the same
+ * table: {"command", "usage", "summary", "options": [{"name", "metavar",
+ * "kind" (flag, number, integer, text, choice), "unit" (the row's), "range"
+ * (as the help prints it, "[1e-6, 1]"), "min", "max" (the accepted bounds),
+ * "default" (as the help prints it, else the row's; a flag's false),
+ * "choices", "help"}]}, --help last (docs/cli.md). Returns the exit status:
+ * 0, or 1 when the JSON could not be printed (gw_cli_json_stdout). */
+int gw_cli_help(FILE *fp, const char *cmd, const char *usage, const char *summary, const gw_opt *opts, int help);
 /* The option named name, or NULL. */
 const gw_opt *gw_cli_find(const gw_opt *opts, const char *name);
 

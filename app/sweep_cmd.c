@@ -821,7 +821,7 @@ int gw_cmd_sweep(int argc, char **argv, const gw_sweep_model *const *models, con
         code = 2;
     } else if (help) {
         if (rank == 0)
-            gw_cli_help(stdout, "sweep", "granwave sweep CONFIG [--out DIR] [options]", summary, opts);
+            code = gw_cli_help(stdout, "sweep", "granwave sweep CONFIG [--out DIR] [options]", summary, opts, help);
         goto finish;
     } else if (npos != 1) {
         gw_err_set(&err, GW_EINVAL, "a config file is required (see granwave sweep --help)");

@@ -91,10 +91,10 @@ own_help() {
 }
 own_help "version [--json]" version --help
 own_help "version [--json]" version -h
-own_help "version [--json]" version --json --help
-own_help "help [COMMAND]" help --help
-own_help "help [COMMAND]" help -h
-own_help "help [COMMAND]" --help --help
+# version --json --help: the help as JSON (test_help_json)
+own_help "help [COMMAND] [--json]" help --help
+own_help "help [COMMAND] [--json]" help -h
+own_help "help [COMMAND] [--json]" --help --help
 "$GW" help version >"$tmp/a" 2>&1; "$GW" version --help >"$tmp/b" 2>&1
 [ -s "$tmp/a" ] && cmp -s "$tmp/a" "$tmp/b" && ok "4 help version is 'version --help'" ||
     bad "4 help version differs from 'version --help'"

@@ -533,10 +533,8 @@ int gw_cmd_dispersion(int argc, char **argv)
     const char *pos[1];
     if (gw_cli_parse("dispersion", opts, argc, argv, &help, pos, 0, &npos, &err) != GW_OK)
         return chain_cli_fail(err.msg);
-    if (help) {
-        gw_cli_help(stdout, "dispersion", "granwave dispersion [options]", disp_summary, opts);
-        return 0;
-    }
+    if (help)
+        return gw_cli_help(stdout, "dispersion", "granwave dispersion [options]", disp_summary, opts, help);
     /* inputs and output locations before any work: a refused run writes nothing */
     if ((c.out && gw_out_check(c.out, "dispersion --out", &err) != GW_OK) ||
         (c.out && gw_out_names_check(c.out, disp_files, "dispersion --out", &err) != GW_OK) ||

@@ -365,10 +365,8 @@ int chain_cli_parse(const char *cmd, const char *usage, const char *summary, gw_
     const char *pos[1];
     if (gw_cli_parse(cmd, opts, argc, argv, &help, pos, 0, &npos, &err) != GW_OK)
         return chain_cli_fail(err.msg);
-    if (help) {
-        gw_cli_help(stdout, cmd, usage, summary, opts);
-        return 0;
-    }
+    if (help)
+        return gw_cli_help(stdout, cmd, usage, summary, opts, help);
     return -1;
 }
 

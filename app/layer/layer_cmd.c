@@ -145,10 +145,8 @@ int gw_cmd_layer_make(int argc, char **argv)
     const char *pos[1];
     if (layer_opts_ok(o, &err) != GW_OK || gw_cli_parse("layer-make", o, argc, argv, &help, pos, 0, &npos, &err) != GW_OK)
         return fail("layer-make", err.msg);
-    if (help) {
-        gw_cli_help(stdout, "layer-make", "granwave layer-make --out FILE [options]", make_summary, o);
-        return 0;
-    }
+    if (help)
+        return gw_cli_help(stdout, "layer-make", "granwave layer-make --out FILE [options]", make_summary, o, help);
     /* the library's setup from the same command line, checked and resolved by
      * the library (gw_layer_make_plan): what Python's layer_make does */
     if (!c.out)
@@ -641,10 +639,9 @@ int gw_cmd_layer_impact(int argc, char **argv)
     const char *pos[1];
     if (layer_opts_ok(o, &err) != GW_OK || gw_cli_parse("layer-impact", o, argc, argv, &help, pos, 0, &npos, &err) != GW_OK)
         return fail("layer-impact", err.msg);
-    if (help) {
-        gw_cli_help(stdout, "layer-impact", "granwave layer-impact --sample FILE [options]", impact_summary, o);
-        return 0;
-    }
+    if (help)
+        return gw_cli_help(stdout, "layer-impact", "granwave layer-impact --sample FILE [options]", impact_summary, o,
+                           help);
     /* --out before the sample is read, as every other command checks it: its
      * directory was made only after the plan, and a file, a symbolic link to
      * nothing or a loop there was refused as "X: not a directory" */

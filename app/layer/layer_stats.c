@@ -176,9 +176,10 @@ int gw_cmd_layer_stats(int argc, char **argv)
     if (gw_cli_parse("layer-stats", o, argc, argv, &help, pos, 1, &npos, &err) != GW_OK)
         return gw_stats_setup_clear(&S), fail(err.msg);
     if (help) {
-        gw_cli_help(stdout, "layer-stats", "granwave layer-stats RESULTS.csv [options]", summary, o);
+        const int code = gw_cli_help(stdout, "layer-stats", "granwave layer-stats RESULTS.csv [options]", summary, o,
+                                     help);
         gw_stats_setup_clear(&S);
-        return 0;
+        return code;
     }
     if (npos != 1)
         return gw_stats_setup_clear(&S), fail("a results table is required: granwave layer-stats RESULTS.csv");

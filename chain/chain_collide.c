@@ -51,7 +51,7 @@ typedef struct run_state {
                                 caller's next impact (chain_collide_drop) */
     int watch_fall;          /* gravity, no guide friction and not a drop's
                                 collision: held_by_gravity applies */
-    double q_prev;           /* the beads' momentum at the previous observation, kg m/s */
+    double q_min;            /* the beads' lowest momentum toward the wall so far, kg m/s (chain_fell_back) */
     int held;                /* the column fell back on the wall (held_by_gravity) */
     gw_chain_progress_fn progress; /* gw_chain_collide_progress's, or NULL */
     void *pctx;
@@ -439,16 +439,33 @@ static int sampled(int sr, int go_on, double t, gw_err *err)
  * --gravity 1e4: 6 to 40 s, then a failure). Needs gravity; guide friction
  * (which can slow beads toward the wall) and the drop's collision (whose
  * bounces are its subject) are not watched. */
+double chain_momentum(const gw_chain *c, const double *y, double *mass)
+{
+    double q = 0, m = 0;
+    for (int i = 0; i < gw_chain_get_params(c)->n; i++) {
+        q += gw_chain_bead_mass(c, i) * y[2 * i + 1];
+        m += gw_chain_bead_mass(c, i);
+    }
+    if (mass)
+        *mass = m;
+    return q;
+}
+
+int chain_fell_back(double *q_min, double q, double q_scale)
+{
+    const int fell = *q_min < -1e-3 * q_scale && q >= 0;
+    if (q < *q_min)
+        *q_min = q;
+    return fell;
+}
+
 static int held_by_gravity(run_state *st, const double *y)
 {
     if (!st->watch_fall)
         return 0;
-    double q = 0;
-    for (int i = 0; i < st->n; i++)
-        q += gw_chain_bead_mass(st->c, i) * y[2 * i + 1];
-    const int fell = st->q_prev < 0 && q >= 0;
-    st->q_prev = q;
-    return fell;
+    double m;
+    const double q = chain_momentum(st->c, y, &m);
+    return chain_fell_back(&st->q_min, q, m * st->v_scale);
 }
 
 /* What to change when a run reaches CHAIN_RUN_STEPS_MAX, by the solver it ran:
@@ -634,7 +651,7 @@ static int collide_run(const gw_chain *c, const gw_chain_run_opts *o, int drop, 
     }
     r->wall_contacts = st.closed[0];
     st.watch_fall = !drop && p->gravity > 0 && !(p->guide.coulomb > 0 || p->guide.viscous > 0);
-    st.q_prev = INFINITY;
+    st.q_min = 0;
 
     const double dt_out = pl.dt_out, t_max = pl.t_max;
     /* the first contact's position scale, gw_chain_dmax1 at the column's

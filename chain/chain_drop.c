@@ -148,10 +148,11 @@ typedef struct drop_state {
     long total, next, step, base; /* base: samples before the pass under way */
     double reported_ms;      /* gw_clock_ms of the last report */
     int canceled;            /* the callback asked to stop */
-    /* the column's momentum toward the sensor in the first impact, and 1 once
-     * it turned back toward it after the impact had turned it away: gravity,
-     * not the damping, then holds bead 1 (chain_collide.c, held_by_gravity) */
-    double q_prev;
+    /* the column's lowest momentum toward the sensor in the first impact,
+     * and 1 once it turned back toward it after the impact had turned it
+     * away: gravity, not the damping, then holds bead 1 (chain_fell_back, as
+     * chain_collide.c's held_by_gravity) */
+    double q_min;
     int fell_back;
 } drop_state;
 
@@ -493,11 +494,9 @@ static void first_impact_momentum(drop_state *st, const double *y)
 {
     if (!st->in_episode || st->r->n_episodes != 1 || st->fell_back)
         return;
-    double q = 0;
-    for (int i = 0; i < st->n; i++)
-        q += gw_chain_bead_mass(st->d->c, i) * y[2 * i + 1];
-    st->fell_back = st->q_prev < 0 && q >= 0;
-    st->q_prev = q;
+    double m;
+    const double q = chain_momentum(st->d->c, y, &m);
+    st->fell_back = chain_fell_back(&st->q_min, q, m * st->d->c->scale[1]);
 }
 
 static int drop_after(void *ctx, double t, const double *y, gw_err *err)

@@ -140,6 +140,18 @@ int chain_sensor_steps_check(const gw_chain_params *p, const gw_solver_type *typ
 int chain_ring_explicit_check(const gw_chain_params *p, const gw_solver_type *type, const gw_solver_params *sp,
                               double t_len, const char *over, gw_err *err);
 
+/* The beads' momentum toward the wall at state y, kg m/s; *mass (may be
+ * NULL) their total mass, kg. */
+double chain_momentum(const gw_chain *c, const double *y, double *mass);
+/* A column fallen back onto the wall, watched from one state to the next: 1
+ * when q, its momentum toward the wall, is at or above 0 after it was below
+ * -1e-3 q_scale (turned away by the impact beyond the solver's noise about
+ * rest: arkode dirk's momentum of a bead an overdamped contact stopped
+ * crossed 0 by 1e-12 of its scale, and read as a fall back, where cvode's
+ * stayed positive); *q_min: the lowest q so far (start at 0). q_scale: the
+ * column's mass times its speed scale. */
+int chain_fell_back(double *q_min, double q, double q_scale);
+
 /* A collision's wall_pending (gw_chain_result) when the run stopped because the
  * column fell back onto the wall before its collision ended (chain_collide.c,
  * held_by_gravity); its warning (chain_warnings.c) names gravity and vimp. */

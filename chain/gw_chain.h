@@ -835,7 +835,9 @@ int gw_chain_drop_impact_rises(const gw_chain_drop_result *r);
  * must be freed with gw_chain_drop_result_free, also after a failure. Returns
  * GW_OK, GW_EINVAL (parameters), GW_ENOMEM, GW_ESOLVER / GW_ELIMIT / GW_EENERGY
  * with the backend's message and the time in err (r then holds what was
- * measured up to the failure). */
+ * measured up to the failure). GW_ELIMIT too, naming the damping and its
+ * constant, when a contact damping far above critical held bead 1 inside its
+ * first impact to t_max (as gw_chain_collide fails on that collision). */
 int gw_chain_drop_run(const gw_chain_drop_params *p, const gw_chain_run_opts *o,
                       gw_chain_drop_result *r, gw_err *err);
 /* The same with progress(pctx, done, total) (may be NULL) in output samples of
@@ -851,7 +853,10 @@ int gw_chain_drop_run_progress(const gw_chain_drop_params *p, const gw_chain_run
 void gw_chain_drop_result_free(gw_chain_drop_result *r);
 /* The warning of a drop cut at t_max (first_cut: inside the first collision;
  * open_at_t_max: bead 1 still on the sensor), appended to *list as
- * gw_chain_result_warnings; nothing otherwise. */
+ * gw_chain_result_warnings; nothing otherwise. A column at rest at t_max
+ * (kinetic energy below a millionth of e0) is said to be held on the sensor
+ * by its weight, which no t-max ends, instead of "raise --t-max" (the drop
+ * study's text also names the contact damping). */
 int gw_chain_drop_result_warnings(const gw_chain_drop_result *r, char **list);
 
 /* ---- the chain as a sweep model (chain_sweep_model.c, see gw_sweep.h) ---- */

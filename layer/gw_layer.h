@@ -494,7 +494,8 @@ typedef struct gw_layer_make_result {
  * jitter of the initial grid. With mp->clumps (type B soil) it draws per clump
  * the equivalent radius from the same grading, the aspect ratio (uniform in
  * [1, aspect_max]) and the orientation; out->body then holds the clump of each disc and
- * out->n counts discs (res->n_bodies the clumps). */
+ * out->n counts discs (res->n_bodies the clumps). A disc grid more than 100
+ * times as high as the box is wide is refused (GW_EINVAL) before any work. */
 int gw_layer_make(const gw_layer_params *lp, const gw_layer_make_params *mp,
                   gw_layer_sample *out, gw_layer_make_result *res, gw_err *err);
 /* The warnings of a pluviation, appended to *list (gw_warnings_add,

@@ -15,6 +15,15 @@
 #    a run without --full stops: the program, a sweep and Python give the
 #    same crowns with and without it. Control: a run whose block has not
 #    reached T_f (t-max 0.05) keeps its whole record.
+#  2 A pile hit without gravity. `layer-impact --gravity 0` on a settled pile
+#    was refused saying its contacts "carry inf times the weight they carried
+#    at rest" and to give "other-settling to run it anyway"; with
+#    --other-settling the floor check then refused it whatever the flag. The
+#    settling check (the program, sweeps, Python) now says that without
+#    gravity the contacts hold their settling's forces with no weight to
+#    carry, names the gravity the pile was made with, and offers
+#    other-settling only for a pile whose floor carries nothing (which it
+#    runs: test_hostile_thirtyfifth).
 # Checks that fail on the code before: see docs/tests.md.
 # shellcheck source=refusal_lib.sh
 . "$2/tests/refusal_lib.sh"
@@ -93,5 +102,23 @@ same = lambda x, y: x == y or (x != x and y != y)  # NaN: a ring without an arri
 check(len(a.peak_strain_t) == len(b.peak_strain_t) and all(same(x, y) for x, y in zip(a.peak_strain_t, b.peak_strain_t)),
       "Python full=True: the default's ring arrivals")
 PYEOF
+
+# --- 2 a pile hit without gravity ---
+g0="without gravity in the impact its contacts hold the forces of its settling with no weight to carry.*give the gravity it was made with \\(9\\.81 m/s\\^2\\) \\(other-settling does not run a pile whose floor carries a load"
+refused "layer-impact --gravity 0: names the settling's gravity, offers no other-settling" \
+    "^granwave layer-impact: sample 's40\\.txt': it settled with gravity 9\\.81 m/s\\^2 against the impact's 0 .*$g0" \
+    layer-impact --sample s40.txt --gravity 0 --out o
+grep -q "inf times" "$tmp/stderr" && ko "layer-impact --gravity 0: says 'inf times'" || ok "layer-impact --gravity 0: no 'inf times'"
+printf '[sweep]\nmodel = layer\nout = o\n[grid]\nvi = 10, 20\n[params]\nsample = s40.txt\ngravity = 0\n' >g0.ini
+refused "sweep --check, gravity = 0: the same" "g0\\.ini: case 0: sample .*$g0" sweep g0.ini --check
+py_checks 1 <<'PYEOF'
+refused("Python layer_impact(gravity=0): the same", ["without gravity in the impact", "give the gravity it was made with",
+        "does not run a pile whose floor carries a load"], granwave.layer_impact, sample="s40.txt",
+        gravity=0)
+PYEOF
+# control: the floor check's own line under other-settling, as before
+refused "layer-impact --gravity 0 --other-settling: the floor check's line" \
+    "^granwave layer-impact: sample 's40\\.txt': its floor contacts hold .* and gravity is 0" \
+    layer-impact --sample s40.txt --gravity 0 --other-settling --out o
 
 test_summary test_hostile_fortysixth

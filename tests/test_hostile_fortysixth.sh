@@ -24,6 +24,16 @@
 #    carry, names the gravity the pile was made with, and offers
 #    other-settling only for a pile whose floor carries nothing (which it
 #    runs: test_hostile_thirtyfifth).
+#  3 The long-wave speed undecided in silence. `dispersion --n 128
+#    --t-samples 512 --dt-out 1e-6` (the ridge resolved from qa = 1.47 only)
+#    or `--n 8` (no wavenumber at qa <= 0.5) printed "long-wave fit nan m/s"
+#    and wrote c0_measured and c0_rel_err null, exit 0, with no warning
+#    (the only dispersion warning was for no ridge at all). The study's
+#    warnings (stderr, --json, dispersion.json, Python) now say that c0 is
+#    undecided and why: too few wavenumbers at qa <= 0.5 in the chain (give
+#    more beads) or a ridge resolved from qa = X up (a longer record, a lower
+#    --min-bins). The no-ridge warning names --min-bins too. Control: a run
+#    that measures c0 says nothing.
 # Checks that fail on the code before: see docs/tests.md.
 # shellcheck source=refusal_lib.sh
 . "$2/tests/refusal_lib.sh"
@@ -120,5 +130,41 @@ PYEOF
 refused "layer-impact --gravity 0 --other-settling: the floor check's line" \
     "^granwave layer-impact: sample 's40\\.txt': its floor contacts hold .* and gravity is 0" \
     layer-impact --sample s40.txt --gravity 0 --other-settling --out o
+
+# --- 3 the long-wave speed undecided in silence ---
+c0w="the long-wave speed c0 is undecided \\(c0_measured and c0_rel_err null\\): its fit needs 3 resolved wavenumbers at qa <= 0\\.5"
+# warned_c0 WHAT PATTERN ARGS...: exit 0, c0_measured null, the warning on
+# stderr and in the JSON's warnings
+warned_c0() {
+    local what=$1 pat=$2; shift 2
+    rm -rf o
+    if runs_json "$what" c0.json dispersion "$@" --quiet --out o; then
+        [ "$(jq_py c0.json 'd["c0_measured"]')" = None ] || ko "$what: c0_measured $(jq_py c0.json 'd["c0_measured"]')"
+        grep -qE -- "^granwave dispersion: warning: $c0w, $pat" "$tmp/stderr" && ok "$what: warned on stderr" ||
+            ko "$what: stderr: $(head -c 300 "$tmp/stderr")"
+        [ "$(jq_py c0.json 'sum("the long-wave speed c0 is undecided" in w for w in d["warnings"])')" = 1 ] &&
+            [ "$(jq_py o/dispersion.json 'sum("the long-wave speed c0 is undecided" in w for w in d["warnings"])')" = 1 ] &&
+            ok "$what: warned in --json and dispersion.json" || ko "$what: warnings $(jq_py c0.json 'd["warnings"]')"
+    fi
+}
+warned_c0 "dispersion --dt-out 1e-6 (ridge from qa = 1.47)" \
+    "and the ridge is resolved from qa = 1\\.473 up; give a longer record .*--min-bins" \
+    --n 128 --t-samples 512 --dt-out 1e-6
+warned_c0 "dispersion --n 8" "and the chain's wavenumbers hold 0 there; give more beads \\(--n\\)" --n 8 --t-samples 64
+warned_c0 "dispersion --n 16 --ends fixed" "and the chain's wavenumbers hold 2 there" --n 16 --ends fixed --t-samples 64
+if runs_json "dispersion --n 128 --t-samples 512 (c0 measured)" c1.json dispersion --n 128 --t-samples 512 --quiet; then
+    [ "$(jq_py c1.json 'd["c0_measured"] is not None and abs(d["c0_rel_err"]) < 1e-3 and d["warnings"] == []')" = True ] &&
+        [ ! -s "$tmp/stderr" ] && ok "control: c0 measured (within 1e-3 of theory), nothing said" ||
+        ko "control: c0 $(jq_py c1.json 'd["c0_measured"], d["warnings"]')"
+fi
+if runs_json "dispersion --min-bins 126" nb.json dispersion --n 64 --t-samples 256 --min-bins 126 --quiet; then
+    grep -q "no wavenumber resolved: .* or a --min-bins near t-samples/2" "$tmp/stderr" &&
+        ok "dispersion --min-bins 126: the no-ridge warning names --min-bins" || ko "no-ridge warning: $(cat "$tmp/stderr")"
+fi
+py_checks 1 <<'PYEOF'
+r, w = caught(granwave.dispersion, n=8, t_samples=64)
+check(r.c0_measured != r.c0_measured and any("the long-wave speed c0 is undecided" in x for x in w),
+      "Python dispersion(n=8): c0 NaN and warned: %s" % w)
+PYEOF
 
 test_summary test_hostile_fortysixth

@@ -251,7 +251,8 @@ int layer_result_shape(const gw_layer_impact_result *r, int whole, gw_err *err)
  * wave speed from 98 +- 45 to 6.2 +- 1.3 m/s. */
 static int first_impact_samples(const gw_layer_impact_result *r)
 {
-    if (!isfinite(r->t_f))
+    /* (a result filled by hand holds t_f 0 and bounced 0: all its samples) */
+    if (r->bounced != 1 || !isfinite(r->t_f) || r->ns < 1 || !(r->t_f > r->t[0]))
         return r->ns;
     int k = 0;
     while (k < r->ns && r->t[k] < r->t_f)

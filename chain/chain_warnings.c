@@ -235,10 +235,29 @@ int gw_chain_softwall_warnings(int unfinished, int total, char **list)
 
 int gw_chain_dispersion_warnings(const gw_chain_disp_result *r, char **list)
 {
-    if (!r || r->n_resolved > 0) /* the ridge error is NaN (JSON null): say why */
+    if (!r)
         return GW_OK;
-    return gw_warnings_add(list, "no wavenumber resolved: the spectrum shows no ridge (an --f0 so small that it "
-                                 "underflows, or a --dt-out too fine for --t-samples)");
+    if (r->n_resolved == 0) /* the ridge error is NaN (JSON null): say why */
+        return gw_warnings_add(list, "no wavenumber resolved: the spectrum shows no ridge (an --f0 so small that it "
+                                     "underflows, a --dt-out too fine for --t-samples, or a --min-bins near "
+                                     "t-samples/2)");
+    if (!isnan(r->c0_measured))
+        return GW_OK;
+    /* c0_measured (and c0_rel_err) NaN, JSON null, said nowhere: the
+     * long-wave fit needs three resolved wavenumbers at qa <= 0.5, which a
+     * short record (--dt-out 1e-6 at 512 samples: resolved from qa = 1.47)
+     * or a short ring (n = 8: qa >= 0.785) does not give */
+    int small = 0;
+    for (int k = 0; r->qa && k < r->nq; k++)
+        small += r->qa[k] <= 0.5;
+    if (small < 3)
+        return gw_warnings_add(list, "the long-wave speed c0 is undecided (c0_measured and c0_rel_err null): its "
+                                     "fit needs 3 resolved wavenumbers at qa <= 0.5, and the chain's wavenumbers hold "
+                                     "%d there; give more beads (--n)", small);
+    return gw_warnings_add(list, "the long-wave speed c0 is undecided (c0_measured and c0_rel_err null): its fit "
+                                 "needs 3 resolved wavenumbers at qa <= 0.5, and the ridge is resolved from qa = %.4g "
+                                 "up; give a longer record (more --t-samples, or a larger --dt-out) or a lower "
+                                 "--min-bins", r->qa_resolved_min);
 }
 
 int gw_chain_drop_result_warnings(const gw_chain_drop_result *r, char **list)

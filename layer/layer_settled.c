@@ -283,6 +283,21 @@ int layer_settled_check_q(const gw_layer_sample *smp, const gw_layer_params *lp,
     const double mu = friction_ratio(st->friction_deg, lp->friction_deg);
     const int flows = mu < GW_LAYER_SETTLED_FRICTION_MIN * (1 - 1e-9);
     const char *motion = q < 1 ? "sags into the impact" : "springs up into the impact";
+    /* no gravity in the impact (q infinite): no weight to weigh the load
+     * against. It said "its contacts carry inf times the weight" and offered
+     * other-settling, which the floor check then refuses for a pile whose
+     * floor carries a load, whatever the flag (layer_impact.c: the strain is
+     * all released); a pile touching nothing (cut in the air) it runs */
+    if (away && !other_settling && !isfinite(q)) {
+        double f, w;
+        layer_floor_load(lp, smp->n, smp->y, smp->r, sizeof *smp->y, &f, &w);
+        return gw_err_set(err, GW_EINVAL, "sample%s: it settled with %s (its settings line%s): without gravity in "
+                          "the impact its contacts hold the forces of its settling with no weight to carry, so the "
+                          "pile springs apart into the impact; give the gravity it was made with (%g m/s^2)%s", nm,
+                          diff, at, st->gravity, f > 0 ? " (other-settling does not run a pile whose floor carries "
+                          "a load without gravity)" : ", or other-settling to run it anyway (the result then records "
+                          "a warning)");
+    }
     if (away && !other_settling)
         return gw_err_set(err, GW_EINVAL, "sample%s: it settled with %s (its settings line%s): under the impact's "
                           "material its contacts carry %.3g times the weight they carried at rest (at least %g, at "

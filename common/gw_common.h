@@ -310,7 +310,10 @@ int gw_input_open(const char *path, const char *what, FILE **out, gw_err *err);
 /* gw_input_open and close again: for libraries that open the file by name. */
 int gw_input_check(const char *path, const char *what, gw_err *err);
 /* Read the whole file, at most max bytes, into a new NUL-terminated buffer
- * (caller frees; *len without the NUL; len may be NULL). */
+ * (caller frees; *len without the NUL; len may be NULL). A file that gives
+ * more bytes than its size at open is refused (GW_EINVAL) after one byte more:
+ * it grew while read, or it is no file on disk (a /proc file, 0 bytes: a
+ * sweep table linked to /proc/self/pagemap was read until memory ran out). */
 int gw_input_read(const char *path, const char *what, size_t max, char **out, size_t *len,
                   gw_err *err);
 
@@ -324,7 +327,8 @@ int gw_input_read(const char *path, const char *what, size_t max, char **out, si
  * gw_fnv1a64_file_max (h NULL: GW_EINVAL) opens path as an input
  * (gw_input_open: a regular file only) and refuses it (GW_EINVAL, naming it and
  * its size) when it is larger than max bytes, before a byte is read, or when it
- * grows past max while read (max + 8 KiB read at most); text nonzero: a NUL
+ * gives more bytes than that size (it grew while read, or a /proc file: 0
+ * bytes, and /proc/self/pagemap gave 256 GiB; 8 KiB more read at most); text nonzero: a NUL
  * byte refuses it (GW_EFORMAT, naming its line), the read stopped there, so
  * that a text input is checked for binary data in the pass that hashes it.
  * gw_fnv1a64_file is gw_fnv1a64_file_max with max GW_INPUT_HASH_MAX, not text:

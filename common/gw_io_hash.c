@@ -11,6 +11,7 @@
 #include <sys/stat.h>
 
 #include "gw_common.h"
+#include "gw_io_impl.h"
 unsigned long long gw_fnv1a64(unsigned long long h, const void *p, size_t n)
 {
     if (!p)
@@ -65,7 +66,7 @@ static int hash_bounded(FILE *fp, unsigned long long max, int text, unsigned lon
                         long *nul_line)
 {
     unsigned char buf[8192]; /* 64 KiB here overflowed a 64 KiB stack (ulimit -s 64) */
-    unsigned long long v = GW_FNV1A64_INIT, total = 0;
+    unsigned long long v = *h, total = 0;
     long line = 1;
     size_t got;
     *over = 0, *nul_line = 0;
@@ -99,7 +100,7 @@ int gw_fnv1a64_stream(FILE *fp, unsigned long long *h)
         return GW_EINVAL;
     int over;
     long nul;
-    unsigned long long v = 0;
+    unsigned long long v = GW_FNV1A64_INIT;
     const int rc = hash_bounded(fp, GW_INPUT_HASH_MAX, 0, &v, &over, &nul);
     if (rc != GW_OK || over)
         return rc != GW_OK ? rc : GW_EINVAL;
@@ -109,6 +110,12 @@ int gw_fnv1a64_stream(FILE *fp, unsigned long long *h)
 
 int gw_fnv1a64_file_max(const char *path, const char *what, unsigned long long max, int text,
                         unsigned long long *h, gw_err *err)
+{
+    return gw_io_fnv1a64_file_from(GW_FNV1A64_INIT, path, what, max, text, h, err);
+}
+
+int gw_io_fnv1a64_file_from(unsigned long long h0, const char *path, const char *what, unsigned long long max,
+                            int text, unsigned long long *h, gw_err *err)
 {
     FILE *fp = NULL;
     if (!h) /* the file was read and its hash refused as "read failed" (GW_EIO) */
@@ -120,21 +127,25 @@ int gw_fnv1a64_file_max(const char *path, const char *what, unsigned long long m
         return rc;
     /* its size before a byte is read: a sparse 200 GB file was hashed whole */
     struct stat st;
-    if (fstat(fileno(fp), &st) == 0 && (unsigned long long)st.st_size > max) {
+    if (fstat(fileno(fp), &st) != 0) {
+        fclose(fp);
+        return gw_err_set(err, GW_EIO, "%s: %s: read failed", what, path);
+    }
+    const unsigned long long size = st.st_size > 0 ? (unsigned long long)st.st_size : 0;
+    if (size > max) {
         fclose(fp);
         return gw_err_set(err, GW_EINVAL, "%s: %s: %llu bytes, more than the %llu bytes it may have", what, path,
-                          (unsigned long long)st.st_size, max);
+                          size, max);
     }
     int over;
     long nul;
-    unsigned long long v = 0;
-    rc = hash_bounded(fp, max, text, &v, &over, &nul);
+    unsigned long long v = h0;
+    rc = hash_bounded(fp, size, text, &v, &over, &nul); /* its size: it may not grow */
     fclose(fp);
     if (rc != GW_OK)
         return gw_err_set(err, GW_EIO, "%s: %s: read failed", what, path);
-    if (over) /* it grew while it was read */
-        return gw_err_set(err, GW_EINVAL, "%s: %s: more than the %llu bytes it may have (it grew while it was read)",
-                          what, path, max);
+    if (over) /* /proc/self/pagemap (0 bytes, giving 256 GiB) was read on and on */
+        return gw_io_grew(what, path, size, err);
     if (nul)
         return gw_err_set(err, GW_EFORMAT, "%s: %s: line %ld: NUL byte (binary data, not text)", what, path, nul);
     *h = v;

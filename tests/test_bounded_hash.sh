@@ -12,6 +12,12 @@
 #    text and a last line, past the rules' look at its head and its end: the
 #    sweep refuses it naming the line of the NUL (it is read up to it in the
 #    pass that hashes it), nothing written.
+#  3 Inputs that are no files on disk: a sweep table linked to
+#    /proc/self/pagemap (a regular file of 0 bytes that gives 256 GiB) was
+#    read by layer-stats until memory ran out (exit 1 under a 2 GB limit), a
+#    sweep config linked to /proc/self/maps read as a config. Now an input
+#    that gives more bytes than its size said is refused after one byte more
+#    (gw_input_read): exit 2 naming it, within 10 s, under the same limit.
 # Controls: layer-make's HDF5 sample, and the text sample without its NUL
 # bytes, are taken by sweep --check.
 # Checks that fail on the code before: see docs/tests.md.
@@ -67,5 +73,23 @@ for mode in run check; do
         "^granwave sweep: .*mid\\.txt'?: line $nul_line: NUL byte" \
         sweep mid.ini "${extra[@]}" --out o
 done
+
+# --- 3 /proc files as inputs ---
+ln -s /proc/self/pagemap pm.csv
+ln -s /proc/self/maps maps.ini
+grew="more bytes than the 0 its size said when it was opened: it grew while it was read, or it is no file on disk"
+if [ -r /proc/self/pagemap ]; then
+    # the program under a 2 GB address-space limit: the read ran out of memory
+    printf '#!/bin/bash\nulimit -v 2000000\nexec "%s" "$@"\n' "$GW" >limited.sh
+    chmod +x limited.sh
+    real_gw=$GW GW=$tmp/limited.sh
+    REFUSE_TIMEOUT=10 refused "layer-stats: a table linked to /proc/self/pagemap, under a 2 GB memory limit" \
+        "^granwave layer-stats: sweep table: pm\\.csv: $grew" layer-stats pm.csv
+    GW=$real_gw
+else
+    echo "SKIP: /proc/self/pagemap not readable"
+fi
+REFUSE_TIMEOUT=10 refused "sweep --check: a config linked to /proc/self/maps" \
+    "^granwave sweep CONFIG: maps\\.ini: $grew" sweep maps.ini --check --out o
 
 test_summary test_bounded_hash

@@ -3,6 +3,9 @@
  * (test_bounded_hash.sh runs the program's):
  *  - gw_fnv1a64_file on a sparse 200 GB file: GW_EINVAL naming its size and
  *    the 4 GiB bound, before a byte is read (it was hashed whole: minutes);
+ *  - gw_fnv1a64_file on /proc/self/pagemap (a regular file of 0 bytes that
+ *    gives 256 GiB): GW_EINVAL at once, naming the 0 bytes its size said (it
+ *    was read on and on);
  *  - gw_fnv1a64_file_max: a 3000-byte file refused at max 2999 naming its
  *    size, hashed at max 3000 as gw_fnv1a64 of its bytes; text: a NUL byte
  *    on line 3 refused naming the line, the same bytes hashed when not text;
@@ -81,6 +84,16 @@ static void part_big(const char *dir)
     GW_TEST_OK(rc == GW_EINVAL && h == 7 && strstr(e.msg, big) && strstr(e.msg, "214748364800 bytes") &&
                    strstr(e.msg, "4294967296 bytes"),
                "gw_fnv1a64_file: a sparse 200 GB file refused naming it, its size and the bound (%d: %s)", rc, e.msg);
+}
+
+static void part_proc(const char *dir)
+{
+    (void)dir;
+    unsigned long long h = 7;
+    gw_err e = {{0}};
+    const int rc = gw_fnv1a64_file("/proc/self/pagemap", "input", &h, &e);
+    GW_TEST_OK(rc == GW_EINVAL && h == 7 && strstr(e.msg, "/proc/self/pagemap") && strstr(e.msg, "more bytes than the 0"),
+               "gw_fnv1a64_file: /proc/self/pagemap refused, more bytes than its size said (%d: %s)", rc, e.msg);
 }
 
 static void part_max(const char *dir)
@@ -180,6 +193,10 @@ int main(void)
         return 1;
     }
     run_part("the 200 GB file", part_big, dir);
+    if (access("/proc/self/pagemap", R_OK) == 0)
+        run_part("/proc/self/pagemap", part_proc, dir);
+    else
+        printf("SKIP: /proc/self/pagemap not readable\n");
     run_part("the bound and the text", part_max, dir);
     run_part("the HDF5 sample's hole", part_h5_hole, dir);
     run_part("the NUL bytes put in the sample", part_inputs_nul, dir);

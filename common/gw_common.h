@@ -309,8 +309,17 @@ int gw_write_text(const char *path, const char *text, gw_err *err);
 int gw_input_open(const char *path, const char *what, FILE **out, gw_err *err);
 /* gw_input_open and close again: for libraries that open the file by name. */
 int gw_input_check(const char *path, const char *what, gw_err *err);
-/* Read the whole file, at most max bytes, into a new NUL-terminated buffer
- * (caller frees; *len without the NUL; len may be NULL). A file that gives
+/* 1 when the regular file open as fd has a hole before its end (SEEK_HOLE:
+ * bytes never written, a sparse file's, read as NUL bytes), the hole's first
+ * byte's offset (from 0) in *at (at may be NULL); 0 without one, or where the
+ * system cannot tell. The read offset of fd is left as it was. A text input
+ * with a hole is binary: its readers refuse it before reading up to it. */
+int gw_input_hole(int fd, unsigned long long *at);
+/* Read the whole text file, at most max bytes, into a new NUL-terminated buffer
+ * (caller frees; *len without the NUL; len may be NULL). A file with a hole
+ * (gw_input_hole) is refused (GW_EINVAL) before it is read: a sweep table
+ * made a sparse 3 GB file was read into memory (out of memory, exit 1, under
+ * a 2 GB limit). A file that gives
  * more bytes than its size at open is refused (GW_EINVAL) after one byte more:
  * it grew while read, or it is no file on disk (a /proc file, 0 bytes: a
  * sweep table linked to /proc/self/pagemap was read until memory ran out). */

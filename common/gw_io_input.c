@@ -4,7 +4,7 @@
  * whole files read bounded in size. Separate from the outputs (gw_io_afile.c,
  * gw_io_outset.c, gw_io_paths.c): an input is never written.
  */
-#define _POSIX_C_SOURCE 200809L
+#define _GNU_SOURCE /* SEEK_HOLE (gw_input_hole) */
 #include <errno.h>
 #include <fcntl.h>
 #include <stdlib.h>
@@ -89,6 +89,13 @@ int gw_input_read(const char *path, const char *what, size_t max, char **out, si
         fclose(fp);
         return gw_err_set(err, GW_EIO, "%s: %s: cannot read: %s", what, path, strerror(e));
     }
+    unsigned long long hole = 0;
+    if ((unsigned long long)st.st_size <= (unsigned long long)max && gw_input_hole(fileno(fp), &hole)) {
+        fclose(fp);
+        return gw_err_set(err, GW_EINVAL, "%s: %s: %llu bytes, and its bytes from %llu on are a hole (never written, "
+                          "read as NUL bytes: a sparse file): not text", what, path,
+                          (unsigned long long)st.st_size, hole + 1);
+    }
     if ((unsigned long long)st.st_size > (unsigned long long)max) {
         fclose(fp);
         return gw_err_set(err, GW_EINVAL, "%s: '%s' is larger than %zu bytes", what, path, max);
@@ -115,6 +122,27 @@ int gw_input_read(const char *path, const char *what, size_t max, char **out, si
     if (len)
         *len = n;
     return GW_OK;
+}
+
+int gw_input_hole(int fd, unsigned long long *at)
+{
+#ifdef SEEK_HOLE
+    struct stat st;
+    if (fd < 0 || fstat(fd, &st) != 0 || !S_ISREG(st.st_mode) || st.st_size <= 0)
+        return 0;
+    const off_t was = lseek(fd, 0, SEEK_CUR);
+    const off_t hole = was >= 0 ? lseek(fd, 0, SEEK_HOLE) : -1;
+    if (was >= 0)
+        lseek(fd, was, SEEK_SET);
+    if (hole < 0 || hole >= st.st_size)
+        return 0;
+    if (at)
+        *at = (unsigned long long)hole;
+    return 1;
+#else
+    (void)fd, (void)at;
+    return 0;
+#endif
 }
 
 int gw_io_grew(const char *what, const char *path, unsigned long long size, gw_err *err)

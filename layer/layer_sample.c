@@ -660,22 +660,13 @@ static int h5_signature_at(FILE *fp, const unsigned char pre[8], int *sb)
  * offset of fd is left as it was. */
 static int hole_check(int fd, const char *path, const char *what, gw_err *err)
 {
-#ifdef SEEK_HOLE
     struct stat st;
-    if (fstat(fd, &st) != 0 || !S_ISREG(st.st_mode) || st.st_size <= 0)
+    unsigned long long hole = 0;
+    if (fstat(fd, &st) != 0 || !gw_input_hole(fd, &hole))
         return GW_OK;
-    const off_t was = lseek(fd, 0, SEEK_CUR);
-    const off_t hole = was >= 0 ? lseek(fd, 0, SEEK_HOLE) : -1;
-    if (was >= 0)
-        lseek(fd, was, SEEK_SET);
-    if (hole >= 0 && hole < st.st_size)
-        return gw_err_set(err, GW_EFORMAT, "sample '%s': %llu bytes, and its bytes from %llu on are a hole (never "
-                          "written, read as NUL bytes: a sparse file): %s", path, (unsigned long long)st.st_size,
-                          (unsigned long long)hole + 1, what);
-#else
-    (void)fd, (void)path, (void)what, (void)err;
-#endif
-    return GW_OK;
+    return gw_err_set(err, GW_EFORMAT, "sample '%s': %llu bytes, and its bytes from %llu on are a hole (never "
+                      "written, read as NUL bytes: a sparse file): %s", path, (unsigned long long)st.st_size,
+                      hole + 1, what);
 }
 
 /* A sample file opened for reading: a regular file only (a FIFO or a device

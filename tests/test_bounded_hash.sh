@@ -18,6 +18,10 @@
 #    sweep config linked to /proc/self/maps read as a config. Now an input
 #    that gives more bytes than its size said is refused after one byte more
 #    (gw_input_read): exit 2 naming it, within 10 s, under the same limit.
+#  4 A sweep table made a sparse 3 GB file (a line, then zeros) was read
+#    whole into memory by layer-stats (out of memory, exit 1, under a 2 GB
+#    limit). Now a text input with a hole is refused before it is read: exit
+#    2 naming the file, its size and the hole, within 10 s.
 # Controls: layer-make's HDF5 sample, and the text sample without its NUL
 # bytes, are taken by sweep --check.
 # Checks that fail on the code before: see docs/tests.md.
@@ -78,17 +82,24 @@ done
 ln -s /proc/self/pagemap pm.csv
 ln -s /proc/self/maps maps.ini
 grew="more bytes than the 0 its size said when it was opened: it grew while it was read, or it is no file on disk"
+# the program under a 2 GB address-space limit: the reads ran out of memory
+printf '#!/bin/bash\nulimit -v 2000000\nexec "%s" "$@"\n' "$GW" >limited.sh
+chmod +x limited.sh
+real_gw=$GW
+sanitizer_build || GW=$tmp/limited.sh # (a sanitizer's shadow memory needs more address space)
 if [ -r /proc/self/pagemap ]; then
-    # the program under a 2 GB address-space limit: the read ran out of memory
-    printf '#!/bin/bash\nulimit -v 2000000\nexec "%s" "$@"\n' "$GW" >limited.sh
-    chmod +x limited.sh
-    real_gw=$GW GW=$tmp/limited.sh
     REFUSE_TIMEOUT=10 refused "layer-stats: a table linked to /proc/self/pagemap, under a 2 GB memory limit" \
         "^granwave layer-stats: sweep table: pm\\.csv: $grew" layer-stats pm.csv
-    GW=$real_gw
 else
     echo "SKIP: /proc/self/pagemap not readable"
 fi
+# --- 4 a sparse 3 GB table ---
+printf 'x\n' >sparse.csv
+truncate -s 3000000000 sparse.csv
+REFUSE_TIMEOUT=10 refused "layer-stats: a sparse 3 GB table, under a 2 GB memory limit" \
+    "^granwave layer-stats: sweep table: sparse\\.csv: 3000000000 bytes, and its bytes from 4097 on are a hole" \
+    layer-stats sparse.csv
+GW=$real_gw
 REFUSE_TIMEOUT=10 refused "sweep --check: a config linked to /proc/self/maps" \
     "^granwave sweep CONFIG: maps\\.ini: $grew" sweep maps.ini --check --out o
 

@@ -32,6 +32,8 @@
 #include "gw_chain.h"
 #include "gw_chain_study.h"
 #include "gw_global.h"
+#include "gw_locale.h"
+#include "gw_number_impl.h"
 
 gw_chain_disp_params gw_chain_disp_params_default(void)
 {
@@ -107,10 +109,13 @@ int gw_chain_disp_params_validate(const gw_chain_disp_params *p, gw_err *err)
                           p->f0, disp_d0(p), p->radius);
     if (p->ends != GW_CHAIN_DISP_PERIODIC && p->ends != GW_CHAIN_DISP_FIXED)
         return gw_err_set(err, GW_EINVAL, "ends: unknown end condition %d", (int)p->ends);
-    if (!(p->amp >= GW_CHAIN_DISP_AMP_MIN && p->amp <= 0.1))
-        return gw_err_set(err, GW_EINVAL, "amp: %g outside [%g, 0.1] (the analysis is linear; below %g the "
+    if (!(p->amp >= GW_CHAIN_DISP_AMP_MIN && p->amp <= 0.1)) {
+        char xs[40], ls[40], hs[40];
+        gw_num_bound(ls, sizeof ls, GW_CHAIN_DISP_AMP_MIN, 0);
+        return gw_err_set(err, GW_EINVAL, "amp: %s outside [%s, %s] (the analysis is linear; below %s the "
                           "perturbation nears the rounding of the overlap d0 and the ridge moves, by 12 %% at 1e-16)",
-                          p->amp, GW_CHAIN_DISP_AMP_MIN, GW_CHAIN_DISP_AMP_MIN);
+                          gw_num_text(xs, sizeof xs, p->amp), ls, gw_num_bound(hs, sizeof hs, 0.1, 1), ls);
+    }
     if (p->t_samples < 64 || p->t_samples > (1 << 24) || p->t_samples % 2)
         return gw_err_set(err, GW_EINVAL, "t-samples: %d must be even and in [64, %d]", p->t_samples, 1 << 24);
     if ((double)disp_nx(p) * p->t_samples > (double)(1L << 27))

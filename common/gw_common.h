@@ -309,8 +309,20 @@ int gw_write_text(const char *path, const char *text, gw_err *err);
 int gw_input_open(const char *path, const char *what, FILE **out, gw_err *err);
 /* gw_input_open and close again: for libraries that open the file by name. */
 int gw_input_check(const char *path, const char *what, gw_err *err);
-/* Read the whole file, at most max bytes, into a new NUL-terminated buffer
- * (caller frees; *len without the NUL; len may be NULL). */
+/* 1 when the regular file open as fd has a hole before its end (SEEK_HOLE:
+ * bytes never written, a sparse file's, read as NUL bytes), the hole's first
+ * byte's offset (from 0) in *at (at may be NULL); 0 without one, or where the
+ * system cannot tell. The read offset of fd is left as it was. A text input
+ * with a hole is binary: its readers refuse it before reading up to it. */
+int gw_input_hole(int fd, unsigned long long *at);
+/* Read the whole text file, at most max bytes, into a new NUL-terminated buffer
+ * (caller frees; *len without the NUL; len may be NULL). A file with a hole
+ * (gw_input_hole) is refused (GW_EINVAL) before it is read: a sweep table
+ * made a sparse 3 GB file was read into memory (out of memory, exit 1, under
+ * a 2 GB limit). A file that gives
+ * more bytes than its size at open is refused (GW_EINVAL) after one byte more:
+ * it grew while read, or it is no file on disk (a /proc file, 0 bytes: a
+ * sweep table linked to /proc/self/pagemap was read until memory ran out). */
 int gw_input_read(const char *path, const char *what, size_t max, char **out, size_t *len,
                   gw_err *err);
 
@@ -318,13 +330,25 @@ int gw_input_read(const char *path, const char *what, size_t max, char **out, si
  * FNV-1a, 64 bits (offset basis 14695981039346656037, prime 1099511628211),
  * of a file's bytes, printed as 16 lowercase hex digits: a result records the
  * content of its input files besides their names (a file changed later no
- * longer matches). gw_fnv1a64_stream hashes fp from its current position to
- * the end (GW_EIO on a read error); gw_fnv1a64_file (h NULL: GW_EINVAL) opens path as an input
- * (gw_input_open: a regular file only). */
+ * longer matches). None reads more than a bound: gw_fnv1a64_stream hashes fp
+ * from its current position to the end, at most GW_INPUT_HASH_MAX bytes
+ * (GW_EINVAL past it, *h unchanged; GW_EIO on a read error);
+ * gw_fnv1a64_file_max (h NULL: GW_EINVAL) opens path as an input
+ * (gw_input_open: a regular file only) and refuses it (GW_EINVAL, naming it and
+ * its size) when it is larger than max bytes, before a byte is read, or when it
+ * gives more bytes than that size (it grew while read, or a /proc file: 0
+ * bytes, and /proc/self/pagemap gave 256 GiB; 8 KiB more read at most); text nonzero: a NUL
+ * byte refuses it (GW_EFORMAT, naming its line), the read stopped there, so
+ * that a text input is checked for binary data in the pass that hashes it.
+ * gw_fnv1a64_file is gw_fnv1a64_file_max with max GW_INPUT_HASH_MAX, not text:
+ * a sparse 200 GB file was hashed whole (minutes) before its reader refused it. */
 #define GW_FNV1A64_INIT 14695981039346656037ULL
+#define GW_INPUT_HASH_MAX ((unsigned long long)1 << 32) /* bytes: 4 GiB */
 unsigned long long gw_fnv1a64(unsigned long long h, const void *p, size_t n);
 int gw_fnv1a64_stream(FILE *fp, unsigned long long *h);
 int gw_fnv1a64_file(const char *path, const char *what, unsigned long long *h, gw_err *err);
+int gw_fnv1a64_file_max(const char *path, const char *what, unsigned long long max, int text,
+                        unsigned long long *h, gw_err *err);
 /* The hash of one sweep case's configuration: FNV-1a 64 of "model M\n" and
  * then "NAME = VALUE\n" for each of the n pairs in order (a sweep's grid keys
  * in the config's order with the case's values, then its [params]). A sweep

@@ -5,10 +5,13 @@
  * hash read back from its 16 hex digits. Separate from the files: it reads
  * through gw_input_open only.
  */
+#define _POSIX_C_SOURCE 200809L /* fileno */
 #include <stdio.h>
 #include <string.h>
+#include <sys/stat.h>
 
 #include "gw_common.h"
+#include "gw_io_impl.h"
 unsigned long long gw_fnv1a64(unsigned long long h, const void *p, size_t n)
 {
     if (!p)
@@ -56,30 +59,100 @@ int gw_fnv1a64_parse(const char *p, size_t len, unsigned long long *h)
     return 1;
 }
 
-int gw_fnv1a64_stream(FILE *fp, unsigned long long *h)
+/* fp hashed from its current position, at most max bytes (*over set when
+ * there were more); text: stopped at the first NUL byte (*nul_line its line,
+ * counted from 1; 0: none). GW_OK or GW_EIO (a read error). */
+static int hash_bounded(FILE *fp, unsigned long long max, int text, unsigned long long *h, int *over,
+                        long *nul_line)
 {
-    if (!fp || !h)
-        return GW_EINVAL;
     unsigned char buf[8192]; /* 64 KiB here overflowed a 64 KiB stack (ulimit -s 64) */
+    unsigned long long v = *h, total = 0;
+    long line = 1;
     size_t got;
-    unsigned long long v = GW_FNV1A64_INIT;
-    while ((got = fread(buf, 1, sizeof buf, fp)) > 0)
+    *over = 0, *nul_line = 0;
+    while ((got = fread(buf, 1, sizeof buf, fp)) > 0) {
+        if (got > max - total) { /* more than max: refused, the rest never read */
+            *over = 1;
+            return GW_OK;
+        }
+        total += got;
+        if (text) {
+            const unsigned char *z = memchr(buf, 0, got);
+            const size_t upto = z ? (size_t)(z - buf) : got;
+            for (size_t i = 0; i < upto; i++)
+                line += buf[i] == '\n';
+            if (z) {
+                *nul_line = line;
+                return GW_OK;
+            }
+        }
         v = gw_fnv1a64(v, buf, got);
+    }
     if (ferror(fp))
         return GW_EIO;
     *h = v;
     return GW_OK;
 }
 
-int gw_fnv1a64_file(const char *path, const char *what, unsigned long long *h, gw_err *err)
+int gw_fnv1a64_stream(FILE *fp, unsigned long long *h)
+{
+    if (!fp || !h)
+        return GW_EINVAL;
+    int over;
+    long nul;
+    unsigned long long v = GW_FNV1A64_INIT;
+    const int rc = hash_bounded(fp, GW_INPUT_HASH_MAX, 0, &v, &over, &nul);
+    if (rc != GW_OK || over)
+        return rc != GW_OK ? rc : GW_EINVAL;
+    *h = v;
+    return GW_OK;
+}
+
+int gw_fnv1a64_file_max(const char *path, const char *what, unsigned long long max, int text,
+                        unsigned long long *h, gw_err *err)
+{
+    return gw_io_fnv1a64_file_from(GW_FNV1A64_INIT, path, what, max, text, h, err);
+}
+
+int gw_io_fnv1a64_file_from(unsigned long long h0, const char *path, const char *what, unsigned long long max,
+                            int text, unsigned long long *h, gw_err *err)
 {
     FILE *fp = NULL;
     if (!h) /* the file was read and its hash refused as "read failed" (GW_EIO) */
         return gw_err_set(err, GW_EINVAL, "gw_fnv1a64_file: h is NULL");
+    if (!what)
+        what = "input";
     int rc = gw_input_open(path, what, &fp, err);
     if (rc != GW_OK)
         return rc;
-    rc = gw_fnv1a64_stream(fp, h);
+    /* its size before a byte is read: a sparse 200 GB file was hashed whole */
+    struct stat st;
+    if (fstat(fileno(fp), &st) != 0) {
+        fclose(fp);
+        return gw_err_set(err, GW_EIO, "%s: %s: read failed", what, path);
+    }
+    const unsigned long long size = st.st_size > 0 ? (unsigned long long)st.st_size : 0;
+    if (size > max) {
+        fclose(fp);
+        return gw_err_set(err, GW_EINVAL, "%s: %s: %llu bytes, more than the %llu bytes it may have", what, path,
+                          size, max);
+    }
+    int over;
+    long nul;
+    unsigned long long v = h0;
+    rc = hash_bounded(fp, size, text, &v, &over, &nul); /* its size: it may not grow */
     fclose(fp);
-    return rc == GW_OK ? GW_OK : gw_err_set(err, GW_EIO, "%s: %s: read failed", what, path);
+    if (rc != GW_OK)
+        return gw_err_set(err, GW_EIO, "%s: %s: read failed", what, path);
+    if (over) /* /proc/self/pagemap (0 bytes, giving 256 GiB) was read on and on */
+        return gw_io_grew(what, path, size, err);
+    if (nul)
+        return gw_err_set(err, GW_EFORMAT, "%s: %s: line %ld: NUL byte (binary data, not text)", what, path, nul);
+    *h = v;
+    return GW_OK;
+}
+
+int gw_fnv1a64_file(const char *path, const char *what, unsigned long long *h, gw_err *err)
+{
+    return gw_fnv1a64_file_max(path, what, GW_INPUT_HASH_MAX, 0, h, err);
 }

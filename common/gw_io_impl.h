@@ -64,6 +64,20 @@ int gw_io_status(int e);
 /* What a file of mode m is, for a message ("a FIFO", "a directory", ...). */
 const char *gw_io_file_kind(mode_t m);
 
+/* The refusal (GW_EINVAL) of an input path (what: its name in messages) that
+ * gave more bytes than the size its fstat said at open (size): it grew while
+ * it was read, or it is no file on disk (a /proc file says 0 bytes and gives
+ * many: /proc/self/pagemap, 256 GiB, was read until memory ran out). The
+ * readers of whole inputs (gw_input_read, gw_fnv1a64_file_max) read at most
+ * size + 1 bytes. */
+int gw_io_grew(const char *what, const char *path, unsigned long long size, gw_err *err);
+
+/* gw_fnv1a64_file_max going on from the hash h0 of what came before (its
+ * bytes hashed after them): the sweep config's hash, which holds the bytes
+ * of the files it names after their names. */
+int gw_io_fnv1a64_file_from(unsigned long long h0, const char *path, const char *what, unsigned long long max,
+                            int text, unsigned long long *h, gw_err *err);
+
 /* A temporary made (path) for gw_temps_remove to find until it is placed
  * or removed (gw_io_temps.c): the slot taken, or -1 when no slot could be
  * had (out of memory for a new block of the table; the caller then removes

@@ -4,7 +4,7 @@
  * whole files read bounded in size. Separate from the outputs (gw_io_afile.c,
  * gw_io_outset.c, gw_io_paths.c): an input is never written.
  */
-#define _POSIX_C_SOURCE 200809L
+#define _GNU_SOURCE /* SEEK_HOLE (gw_input_hole) */
 #include <errno.h>
 #include <fcntl.h>
 #include <stdlib.h>
@@ -84,42 +84,72 @@ int gw_input_read(const char *path, const char *what, size_t max, char **out, si
     if (rc != GW_OK)
         return rc;
     struct stat st;
-    if (fstat(fileno(fp), &st) == 0 && (unsigned long long)st.st_size > (unsigned long long)max) {
+    if (fstat(fileno(fp), &st) != 0) {
+        const int e = errno;
+        fclose(fp);
+        return gw_err_set(err, GW_EIO, "%s: %s: cannot read: %s", what, path, strerror(e));
+    }
+    unsigned long long hole = 0;
+    if ((unsigned long long)st.st_size <= (unsigned long long)max && gw_input_hole(fileno(fp), &hole)) {
+        fclose(fp);
+        return gw_err_set(err, GW_EINVAL, "%s: %s: %llu bytes, and its bytes from %llu on are a hole (never written, "
+                          "read as NUL bytes: a sparse file): not text", what, path,
+                          (unsigned long long)st.st_size, hole + 1);
+    }
+    if ((unsigned long long)st.st_size > (unsigned long long)max) {
         fclose(fp);
         return gw_err_set(err, GW_EINVAL, "%s: '%s' is larger than %zu bytes", what, path, max);
     }
-    size_t cap = st.st_size > 0 ? (size_t)st.st_size + 1 : 4096, n = 0;
+    /* its size and one byte more: a file that gives more grew while it was
+     * read, or is no file on disk (a /proc file's 0 bytes gave 256 GiB, read
+     * until memory ran out) */
+    const size_t size = st.st_size > 0 ? (size_t)st.st_size : 0, cap = size + 1;
+    size_t n = 0, got;
     char *buf = malloc(cap + 1);
-    while (buf) {
-        size_t got = fread(buf + n, 1, cap - n, fp);
+    while (buf && n < cap && (got = fread(buf + n, 1, cap - n, fp)) > 0)
         n += got;
-        if (got == 0 || n > max)
-            break;
-        if (n == cap) { /* the file grew since fstat: read on, still bounded by max */
-            char *nb = realloc(buf, 2 * cap + 1);
-            if (!nb) {
-                free(buf);
-                buf = NULL;
-                break;
-            }
-            buf = nb;
-            cap *= 2;
-        }
-    }
     int bad = ferror(fp);
     fclose(fp);
     if (!buf)
         return gw_err_set(err, GW_ENOMEM, "%s: out of memory reading '%s'", what, path);
-    if (bad || n > max) {
+    if (bad || n > size) {
         free(buf);
-        return n > max ? gw_err_set(err, GW_EINVAL, "%s: '%s' is larger than %zu bytes", what, path, max)
-                       : gw_err_set(err, GW_EIO, "%s: cannot read '%s'", what, path);
+        return n > size ? gw_io_grew(what, path, size, err)
+                        : gw_err_set(err, GW_EIO, "%s: cannot read '%s'", what, path);
     }
     buf[n] = '\0';
     *out = buf;
     if (len)
         *len = n;
     return GW_OK;
+}
+
+int gw_input_hole(int fd, unsigned long long *at)
+{
+#ifdef SEEK_HOLE
+    struct stat st;
+    if (fd < 0 || fstat(fd, &st) != 0 || !S_ISREG(st.st_mode) || st.st_size <= 0)
+        return 0;
+    const off_t was = lseek(fd, 0, SEEK_CUR);
+    const off_t hole = was >= 0 ? lseek(fd, 0, SEEK_HOLE) : -1;
+    if (was >= 0)
+        lseek(fd, was, SEEK_SET);
+    if (hole < 0 || hole >= st.st_size)
+        return 0;
+    if (at)
+        *at = (unsigned long long)hole;
+    return 1;
+#else
+    (void)fd, (void)at;
+    return 0;
+#endif
+}
+
+int gw_io_grew(const char *what, const char *path, unsigned long long size, gw_err *err)
+{
+    return gw_err_set(err, GW_EINVAL, "%s: %s: more bytes than the %llu its size said when it was opened: it grew "
+                      "while it was read, or it is no file on disk (a /proc file); read it again once it is written",
+                      what, path, size);
 }
 
 long gw_input_unended_line(const char *text, size_t len, long first, size_t *start)

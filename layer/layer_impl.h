@@ -589,9 +589,13 @@ int layer_sample_readable(const gw_layer_sample *s, const char *what, gw_err *er
  * no NUL byte in its first 64 KiB. GW_OK, or the reader's status and message
  * ("sample 'PATH': ..."). The sweep (the rule layer_sweep_model.c registers,
  * gw_sweep_input_rule) and the layer model's check memo hash a sample only
- * after it. */
+ * through it: h not NULL, the file is then read whole once more, at most
+ * LAYER_SAMPLE_FILE_MAX bytes, its hash into *h, a text sample refused at a
+ * NUL byte anywhere (read up to it, not hashed whole first), and a sample
+ * with a hole (a sparse file's never written bytes) is refused, HDF5 too,
+ * before that read. */
 #define LAYER_SAMPLE_FILE_MAX ((unsigned long long)1 << 32) /* bytes: 4 GiB */
-int layer_sample_file_check(const char *path, gw_err *err);
+int layer_sample_file_check(const char *path, unsigned long long *h, gw_err *err);
 
 /* gw_layer_sample_pile_hash of s into *h, GW_OK; GW_EINVAL (*h 0) for a
  * sample layer_sample_shape_check refuses, GW_ENOMEM (*h 0) when the bodies

@@ -653,6 +653,22 @@ static int h5_signature_at(FILE *fp, const unsigned char pre[8], int *sb)
     return fseek(fp, 8, SEEK_SET) == 0 && found;
 }
 
+/* A sample file's first hole (SEEK_HOLE: bytes never written, a sparse
+ * file's, read as NUL bytes) before its end: GW_EFORMAT naming the file, its
+ * size and the hole's first byte, what ending the message ("not a text
+ * sample"); GW_OK without one (or where the system cannot tell). The read
+ * offset of fd is left as it was. */
+static int hole_check(int fd, const char *path, const char *what, gw_err *err)
+{
+    struct stat st;
+    unsigned long long hole = 0;
+    if (fstat(fd, &st) != 0 || !gw_input_hole(fd, &hole))
+        return GW_OK;
+    return gw_err_set(err, GW_EFORMAT, "sample '%s': %llu bytes, and its bytes from %llu on are a hole (never "
+                      "written, read as NUL bytes: a sparse file): %s", path, (unsigned long long)st.st_size,
+                      hole + 1, what);
+}
+
 /* A sample file opened for reading: a regular file only (a FIFO or a device
  * is refused before any read), at most LAYER_SAMPLE_FILE_MAX bytes (a sparse
  * 200 GB file was hashed whole, for minutes, before its first byte was
@@ -675,7 +691,15 @@ static int sample_open(const char *path, FILE **fp, unsigned char pre[8], size_t
     }
     *npre = fread(pre, 1, 8, *fp);
     *h5 = *npre == 8 && h5_signature_at(*fp, pre, sb);
-    return GW_OK;
+    /* an HDF5 sample with a hole: 4 GiB of sparse zeros after a superblock
+     * were hashed whole twice (a minute, three times by a sweep) before the
+     * library refused the file (a text sample's holes: text_zeros_check) */
+    rc = *h5 ? hole_check(fileno(*fp), path, "not a sample granwave wrote", err) : GW_OK;
+    if (rc != GW_OK) {
+        fclose(*fp);
+        *fp = NULL;
+    }
+    return rc;
 }
 
 /* A text sample's zeros past the first 64 KiB, found without reading up to
@@ -692,16 +716,9 @@ static int text_zeros_check(int fd, const char *path, gw_err *err)
     if (fstat(fd, &st) != 0 || !S_ISREG(st.st_mode) || st.st_size <= 0)
         return GW_OK;
     const unsigned long long size = (unsigned long long)st.st_size;
-#ifdef SEEK_HOLE
-    const off_t was = lseek(fd, 0, SEEK_CUR);
-    const off_t hole = was >= 0 ? lseek(fd, 0, SEEK_HOLE) : -1;
-    if (was >= 0)
-        lseek(fd, was, SEEK_SET);
-    if (hole >= 0 && (unsigned long long)hole < size)
-        return gw_err_set(err, GW_EFORMAT, "sample '%s': %llu bytes, and its bytes from %llu on are a hole (never "
-                          "written, read as NUL bytes: a sparse file): not a text sample", path, size,
-                          (unsigned long long)hole + 1);
-#endif
+    const int rc = hole_check(fd, path, "not a text sample", err);
+    if (rc != GW_OK)
+        return rc;
     unsigned char tail[ZEROS_TAIL];
     const off_t from = st.st_size > ZEROS_TAIL ? st.st_size - ZEROS_TAIL : 0;
     const ssize_t got = pread(fd, tail, sizeof tail, from);
@@ -713,10 +730,9 @@ static int text_zeros_check(int fd, const char *path, gw_err *err)
     return GW_OK;
 }
 
-int layer_sample_file_check(const char *path, gw_err *err)
+/* layer_sample_file_check's rules, before any hash (*text: 1 for a text sample) */
+static int sample_rules(const char *path, int *text, gw_err *err)
 {
-    if (!path)
-        return gw_err_set(err, GW_EINVAL, "layer_sample_file_check: path is NULL");
     FILE *fp = NULL;
     unsigned char pre[8];
     size_t npre;
@@ -724,6 +740,7 @@ int layer_sample_file_check(const char *path, gw_err *err)
     int rc = sample_open(path, &fp, pre, &npre, &h5, &sb, err);
     if (rc != GW_OK)
         return rc;
+    *text = !h5;
     if (h5) {
         fclose(fp);
 #if GW_HAVE_HDF5
@@ -757,6 +774,20 @@ int layer_sample_file_check(const char *path, gw_err *err)
         rc = text_zeros_check(fileno(fp), path, err);
     fclose(fp);
     return rc;
+}
+
+int layer_sample_file_check(const char *path, unsigned long long *h, gw_err *err)
+{
+    if (!path)
+        return gw_err_set(err, GW_EINVAL, "layer_sample_file_check: path is NULL");
+    int text = 0;
+    const int rc = sample_rules(path, &text, err);
+    if (rc != GW_OK || !h)
+        return rc;
+    /* the rest of a text sample read for a NUL byte in the pass that hashes
+     * it: written zeros between its text and a last line (no hole) were hashed
+     * whole, 4 GiB, and refused by the reader only then */
+    return gw_fnv1a64_file_max(path, "sample", LAYER_SAMPLE_FILE_MAX, text, h, err);
 }
 
 int gw_layer_sample_read(const char *path, gw_layer_sample *s, gw_err *err)

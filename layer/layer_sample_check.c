@@ -20,6 +20,7 @@
 
 #include "layer_sample_impl.h"
 #include "gw_locale.h"
+#include "gw_number_impl.h"
 
 /* Up to 40 characters of untrusted text for a message, non-printables as '?'. */
 const char *layer_sample_shown(const char *s, char out[48])
@@ -60,12 +61,14 @@ int layer_sample_header_check(const gw_layer_sample *s, const char *path, int st
         return gw_err_set(err, status, "sample '%s': width %g m must be finite and positive", path, s->width);
     if (!isfinite(s->rm) || !(s->rm > 0))
         return gw_err_set(err, status, "sample '%s': rm %g m must be finite and positive", path, s->rm);
+    char ls[40], hs[40];
     if (!(s->rm >= SAMPLE_RM_MIN && s->rm <= SAMPLE_RM_MAX))
-        return gw_err_set(err, status, "sample '%s': rm %g m is outside [%g, %g] m (layer-make's rm range)",
-                          path, s->rm, SAMPLE_RM_MIN, SAMPLE_RM_MAX);
+        return gw_err_set(err, status, "sample '%s': rm %g m is outside [%s, %s] m (layer-make's rm range)",
+                          path, s->rm, gw_num_bound(ls, sizeof ls, SAMPLE_RM_MIN, 0),
+                          gw_num_bound(hs, sizeof hs, SAMPLE_RM_MAX, 1));
     if (!(s->width <= SAMPLE_EXTENT_RM * s->rm))
-        return gw_err_set(err, status, "sample '%s': width %g m is above %g R_m (R_m = %g m)", path, s->width,
-                          SAMPLE_EXTENT_RM, s->rm);
+        return gw_err_set(err, status, "sample '%s': width %g m is above %s R_m (R_m = %g m)", path, s->width,
+                          gw_num_bound(hs, sizeof hs, SAMPLE_EXTENT_RM, 1), s->rm);
     if (!isfinite(s->volume_ratio) || (s->volume_ratio != 0 && !(s->volume_ratio >= 1)))
         return gw_err_set(err, status, "sample '%s': volume_ratio %g must be >= 1", path, s->volume_ratio);
     if (!isnan(s->porosity) && !(s->porosity >= 0 && s->porosity <= 1))
@@ -106,16 +109,18 @@ int layer_sample_particle_check(double width, double rm, double x, double y, dou
     int rc = particle_form(x, y, r, path, where, status, err);
     if (rc != GW_OK)
         return rc;
+    char ls[40], hs[40];
     if (!(r >= SAMPLE_R_LO * rm && r <= SAMPLE_R_HI * rm))
-        return gw_err_set(err, status, "sample '%s': %s: radius %g m is outside [%g, %g] R_m (R_m = %g m)",
-                          path, where, r, SAMPLE_R_LO, SAMPLE_R_HI, rm);
+        return gw_err_set(err, status, "sample '%s': %s: radius %g m is outside [%s, %s] R_m (R_m = %g m)",
+                          path, where, r, gw_num_bound(ls, sizeof ls, SAMPLE_R_LO, 0),
+                          gw_num_bound(hs, sizeof hs, SAMPLE_R_HI, 1), rm);
     if (x - r < -2e-2 * r || x + r > width + 2e-2 * r || y - r < -2e-2 * r)
-        return gw_err_set(err, status, "sample '%s': %s: particle outside the box (0 <= x <= %g, y >= 0) "
-                          "beyond the 0.02 R overlap tolerance (x = %g, y = %g, r = %g m)", path, where, width, x,
-                          y, r);
+        return gw_err_set(err, status, "sample '%s': %s: particle outside the box (0 <= x <= %s, y >= 0) "
+                          "beyond the 0.02 R overlap tolerance (x = %g, y = %g, r = %g m)", path, where,
+                          gw_num_bound(hs, sizeof hs, width, 1), x, y, r);
     if (!(y <= SAMPLE_EXTENT_RM * rm))
-        return gw_err_set(err, status, "sample '%s': %s: y = %g m is above %g R_m (R_m = %g m)", path, where, y,
-                          SAMPLE_EXTENT_RM, rm);
+        return gw_err_set(err, status, "sample '%s': %s: y = %g m is above %s R_m (R_m = %g m)", path, where, y,
+                          gw_num_bound(hs, sizeof hs, SAMPLE_EXTENT_RM, 1), rm);
     return GW_OK;
 }
 
@@ -395,12 +400,12 @@ static int check_box(const gw_layer_sample *s, const body_scan *b, const char *p
     const double gap = fmax(lo, s->width - hi), fill = 1.5;
     if (!(area > (hi - lo) * size) || !(gap > fill * size))
         return GW_OK;
-    char w[64];
+    char w[64], fs[40];
     return gw_err_set(err, status, "sample '%s': %s: %.6g m leaves %.6g m between the %s wall and the packing, "
-                      "more than %g particle sizes (%.6g m): a packing more than one particle high fills its box "
+                      "more than %s particle sizes (%.6g m): a packing more than one particle high fills its box "
                       "(its particles span x in [%.6g, %.6g] m; was the width edited?)", path,
                       hdr_where(src, K_WIDTH, "width", w), s->width, gap, lo >= s->width - hi ? "left" : "right",
-                      fill, size, lo, hi);
+                      gw_num_bound(fs, sizeof fs, fill, 1), size, lo, hi);
 }
 
 /* The header's porosity (NaN: absent, not checked) against the particles'
@@ -423,10 +428,11 @@ static int check_porosity(const gw_layer_sample *s, const char *path, const hdr_
         return gw_err_set(err, GW_ENOMEM, "sample '%s': out of memory measuring its porosity", path);
     if (fabs(p - s->porosity) <= tol)
         return GW_OK;
-    char w[64];
+    char w[64], ts[40];
     return gw_err_set(err, status, "sample '%s': %s: %.6g, but its particles and width give %.6g (window x in "
-                      "[0.1, 0.9] W, y in [0.1, 0.8] h), more than %g apart: the header is not these particles' "
-                      "(a hand-made sample may leave porosity out)", path, hdr_where(src, K_POR, "porosity", w), s->porosity, p, tol);
+                      "[0.1, 0.9] W, y in [0.1, 0.8] h), more than %s apart: the header is not these particles' "
+                      "(a hand-made sample may leave porosity out)", path, hdr_where(src, K_POR, "porosity", w),
+                      s->porosity, p, gw_num_bound(ts, sizeof ts, tol, 1));
 }
 
 /* The checks that need the whole sample: its bodies, its grading, its box,

@@ -59,6 +59,7 @@
 
 #include "layer_impl.h"
 #include "gw_locale.h"
+#include "gw_number_impl.h"
 
 /* The clump mass law the sample's bodies settled under: the settings line's,
  * else the sample's own clump_mass line. */
@@ -159,7 +160,9 @@ static void differ(char *buf, size_t n, const char *name, double a, double b, co
     if (a == b)
         return;
     const size_t k = strlen(buf);
-    gw_snprintf(buf + k, n - k, "%s%s %g%s against the impact's %g", k ? ", " : "", name, a, unit, b);
+    char as[40], bs[40];
+    gw_snprintf(buf + k, n - k, "%s%s %s%s against the impact's %s", k ? ", " : "", name,
+                gw_num_text(as, sizeof as, a), unit, gw_num_text(bs, sizeof bs, b));
 }
 
 /* The impact's friction coefficient over the settling's (1 when the same;
@@ -205,12 +208,13 @@ static void floor_unsettled(const gw_layer_sample *smp, const gw_layer_params *l
     const gw_layer_params sp = settling_material(lp, &smp->settled); /* the load layer-make judged */
     double f, w;
     layer_floor_load(&sp, smp->n, smp->y, smp->r, sizeof *smp->y, &f, &w);
+    char ls[40];
     if (w > 0 && f < LAYER_FLOOR_LOAD_MIN * w)
         gw_snprintf(buf, n, "the sample did not settle: its floor carries %.3g of the pile's weight under the "
-                    "material it settled with (at rest: about 1; below %g the pile was in the air or bouncing when "
+                    "material it settled with (at rest: about 1; below %s the pile was in the air or bouncing when "
                     "written, though its settled line says converged 1, as a layer-make before session 38 wrote "
                     "such piles): it starts at rest there, so the outcome holds the pile's own motion as well as "
-                    "the block's; make it again", f / w, LAYER_FLOOR_LOAD_MIN);
+                    "the block's; make it again", f / w, gw_num_bound(ls, sizeof ls, LAYER_FLOOR_LOAD_MIN, 0));
 }
 
 int layer_settled_check_q(const gw_layer_sample *smp, const gw_layer_params *lp, int other_settling,
@@ -290,27 +294,34 @@ int layer_settled_check_q(const gw_layer_sample *smp, const gw_layer_params *lp,
      * all released); a pile touching nothing (cut in the air) it runs */
     if (away && !other_settling && !isfinite(q)) {
         double f, w;
+        char gs[40];
         layer_floor_load(lp, smp->n, smp->y, smp->r, sizeof *smp->y, &f, &w);
         return gw_err_set(err, GW_EINVAL, "sample%s: it settled with %s (its settings line%s): without gravity in "
                           "the impact its contacts hold the forces of its settling with no weight to carry, so the "
-                          "pile springs apart into the impact; give the gravity it was made with (%g m/s^2)%s", nm,
-                          diff, at, st->gravity, f > 0 ? " (other-settling does not run a pile whose floor carries "
-                          "a load without gravity)" : ", or other-settling to run it anyway (the result then records "
-                          "a warning)");
+                          "pile springs apart into the impact; give the gravity it was made with (%s m/s^2)%s", nm,
+                          diff, at, gw_num_text(gs, sizeof gs, st->gravity),
+                          f > 0 ? " (other-settling does not run a pile whose floor carries a load without gravity)"
+                                : ", or other-settling to run it anyway (the result then records a warning)");
     }
+    /* the bounds as a value given back is taken (gw_num_bound): the
+     * settling's friction 30.0000001 printed by %g as 30, which was refused */
+    char qlo[40], qhi[40], fmin[40], fis[40];
+    gw_num_bound(qlo, sizeof qlo, GW_LAYER_SETTLED_LOAD_MIN, 0);
+    gw_num_bound(qhi, sizeof qhi, GW_LAYER_SETTLED_LOAD_MAX, 1);
+    gw_num_bound(fmin, sizeof fmin, st->friction_deg, 0);
     if (away && !other_settling)
         return gw_err_set(err, GW_EINVAL, "sample%s: it settled with %s (its settings line%s): under the impact's "
-                          "material its contacts carry %.3g times the weight they carried at rest (at least %g, at "
-                          "most %g), so the pile %s and the run measures its motion too; give the settling's "
+                          "material its contacts carry %.3g times the weight they carried at rest (at least %s, at "
+                          "most %s), so the pile %s and the run measures its motion too; give the settling's "
                           "values, or other-settling to run it anyway (the result then records a warning)", nm,
-                          diff, at, q, GW_LAYER_SETTLED_LOAD_MIN, GW_LAYER_SETTLED_LOAD_MAX, motion);
+                          diff, at, q, qlo, qhi, motion);
     if (flows && !other_settling)
         return gw_err_set(err, GW_EINVAL, "sample%s: it settled with %s (its settings line%s): the impact's "
                           "friction coefficient tan(%g deg) is %.3g of the settling's tan(%g deg), and a pile leaning "
                           "on friction it no longer has may flow (how far below depends on the pile); give the "
-                          "settling's friction (%g deg) or more, settle the pile at this one (layer-make --friction "
-                          "%g), or other-settling to run it anyway", nm, diff, at, lp->friction_deg, mu,
-                          st->friction_deg, st->friction_deg, lp->friction_deg);
+                          "settling's friction (%s deg) or more, settle the pile at this one (layer-make --friction "
+                          "%s), or other-settling to run it anyway", nm, diff, at, lp->friction_deg, mu,
+                          st->friction_deg, fmin, gw_num_text(fis, sizeof fis, lp->friction_deg));
     if (!warning || n == 0)
         return GW_OK;
     char slide[160] = "";
@@ -319,17 +330,15 @@ int layer_settled_check_q(const gw_layer_sample *smp, const gw_layer_params *lp,
                     "other-settling): the pile may flow on it", mu);
     if (away)
         gw_snprintf(warning, n, "the sample settled with %s: its contacts carry %.3g times the weight they carried "
-                    "at rest (outside [%g, %g], run by other-settling): the pile %s%s, and the outcome holds its "
-                    "motion as well as the block's", diff, q, GW_LAYER_SETTLED_LOAD_MIN, GW_LAYER_SETTLED_LOAD_MAX,
-                    motion, slide);
+                    "at rest (outside [%s, %s], run by other-settling): the pile %s%s, and the outcome holds its "
+                    "motion as well as the block's", diff, q, qlo, qhi, motion, slide);
     else if (flows)
         gw_snprintf(warning, n, "the sample settled with %s: its contacts carry %.3g times the weight they carried "
-                    "at rest (within [%g, %g])%s, and the outcome holds its motion as well as the block's", diff, q,
-                    GW_LAYER_SETTLED_LOAD_MIN, GW_LAYER_SETTLED_LOAD_MAX, slide);
+                    "at rest (within [%s, %s])%s, and the outcome holds its motion as well as the block's", diff, q,
+                    qlo, qhi, slide);
     else if (fabs(q - 1) > 1e-9)
         gw_snprintf(warning, n, "the sample settled with %s: its contacts carry %.3g times the weight they carried "
-                    "at rest (within [%g, %g]): the pile %s a little%s", diff, q, GW_LAYER_SETTLED_LOAD_MIN,
-                    GW_LAYER_SETTLED_LOAD_MAX, motion, slide);
+                    "at rest (within [%s, %s]): the pile %s a little%s", diff, q, qlo, qhi, motion, slide);
     else
         gw_snprintf(warning, n, "the sample settled with %s: its contacts carry its weight as at rest%s", diff,
                     slide[0] ? slide : law || clump ? ", though its bodies' shares of it differ" : "");

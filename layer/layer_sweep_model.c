@@ -428,9 +428,8 @@ static int setup_check(void **memo, const gw_layer_impact_setup *s, double *widt
     if (memo && !*memo)
         *memo = calloc(1, sizeof(check_memo));
     check_memo *c = memo ? *memo : NULL;
-    /* hashed only after the reader's rules (a sparse 200 GB file was hashed whole first) */
-    if (!c || !s->sample || layer_sample_file_check(s->sample, &e) != GW_OK ||
-        gw_fnv1a64_file(s->sample, "sample", &h, &e) != GW_OK)
+    /* hashed in the pass of the reader's rules (a sparse 200 GB file was hashed whole first) */
+    if (!c || !s->sample || layer_sample_file_check(s->sample, &h, &e) != GW_OK)
         return gw_layer_impact_setup_check(s, err); /* its own message for a missing or odd file */
     memo_slot *old = &c->slot[0];
     for (int k = 0; k < MEMO_SLOTS; k++) {

@@ -22,6 +22,7 @@
 #include "gw_sweep.h"
 #include "gw_io_lines.h"
 #include "gw_locale.h"
+#include "gw_io_impl.h"
 #include "gw_sweep_impl.h"
 
 typedef struct parse_ctx {
@@ -392,22 +393,15 @@ static unsigned long fnv64_file(unsigned long h, const char *path, int *nomem)
     struct stat sb;
     if (stat(path, &sb) != 0 || !S_ISREG(sb.st_mode))
         return h;
-    FILE *f = NULL;
+    /* bounded as every input's hash (it read a file that grew while read, or
+     * a /proc file, on and on); never blocks on a FIFO (gw_input_open). A file
+     * it refuses is left out, for the model's check to name. */
+    unsigned long long v = 0;
     gw_err err;
-    int rc = gw_input_open(path, "sweep", &f, &err); /* never blocks on a FIFO */
+    const int rc = gw_io_fnv1a64_file_from(h, path, "sweep", GW_INPUT_HASH_MAX, 0, &v, &err);
     if (rc == GW_ENOMEM) /* the file left out of the hash: another sweep's identity */
         *nomem = 1;
-    if (rc != GW_OK)
-        return h;
-    unsigned char buf[8192]; /* 64 KiB here overflowed a 64 KiB stack (ulimit -s 64) */
-    size_t got;
-    while ((got = fread(buf, 1, sizeof buf, f)) > 0)
-        for (size_t i = 0; i < got; i++) {
-            h ^= buf[i];
-            h *= 1099511628211UL;
-        }
-    fclose(f);
-    return h ^ 0xfe;
+    return rc == GW_OK ? (unsigned long)(v ^ 0xfe) : h;
 }
 
 static int config_finish(const char *path, const char *base, const gw_sweep_model *const *models, int nmodels,

@@ -52,8 +52,13 @@ int gw_sweep_find_inputs(const char *path, gw_sweep_config *cfg, gw_err *err);
  * check after each case), since common/ does not know the models' readers. A
  * sparse 200 GB file named as the sample was hashed whole, for minutes,
  * before the case's reader refused its first byte. GW_OK, or the reader's
- * status and message naming the file. At most 8 models; NULL: none. */
-typedef int (*gw_sweep_input_rule)(const char *path, gw_err *err);
+ * status and message naming the file. h not NULL: the file is then read whole
+ * and its content hash put in *h, in the pass that checks the rest of it
+ * (a text sample for a NUL byte anywhere, bounded as the reader is), so that a
+ * file the reader would refuse is read once, up to its fault, not hashed whole
+ * first (a text sample with 4 GiB of written zeros between its text and a
+ * last line). At most 8 models; NULL: none. */
+typedef int (*gw_sweep_input_rule)(const char *path, unsigned long long *h, gw_err *err);
 void gw_sweep_input_rule_set(const char *model, gw_sweep_input_rule fn);
 gw_sweep_input_rule gw_sweep_input_rule_of(const char *model);
 /* Every value of cfg's read_key that names something passes its model's

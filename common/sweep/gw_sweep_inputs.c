@@ -150,7 +150,17 @@ static int input_readable(const gw_sweep_config *cfg, const char *value, gw_err 
     const gw_sweep_input_rule fn = gw_sweep_input_rule_of(cfg->model);
     if (!fn || stat(value, &sb) != 0)
         return GW_OK;
-    return fn(value, e);
+    return fn(value, NULL, e);
+}
+
+/* The content hash of input value (key: what it is, for a message) into *h:
+ * through its model's rule, which reads it once (a file it refuses read up to
+ * its fault), or bounded (gw_fnv1a64_file) for a model without one. */
+static int input_hash(const gw_sweep_config *cfg, const char *key, const char *value, unsigned long long *h,
+                      gw_err *e)
+{
+    const gw_sweep_input_rule fn = gw_sweep_input_rule_of(cfg->model);
+    return fn ? fn(value, h, e) : gw_fnv1a64_file(value, key, h, e);
 }
 
 int gw_sweep_inputs_readable(const gw_sweep_config *cfg, const char *path, gw_err *err)
@@ -190,7 +200,7 @@ static int add_input(gw_sweep_config *cfg, const char *key, const char *value, l
         return GW_OK;
     unsigned long long fh;
     gw_err e;
-    int rc = gw_fnv1a64_file(value, "sweep", &fh, &e);
+    int rc = input_hash(cfg, "sweep", value, &fh, &e);
     if (rc != GW_OK) /* unreadable: the model's check names it; out of memory: said here */
         return rc == GW_ENOMEM ? rc : GW_OK;
     for (int i = 0; i < cfg->ninputs; i++)
@@ -323,9 +333,10 @@ int gw_sweep_case_inputs_check(const gw_sweep_config *cfg, long k, gw_err *err)
             continue;
         unsigned long long fh = 0;
         gw_err e = {{0}};
-        /* the reader's rules first: a file replaced by a sparse 200 GB one
-         * while the sweep ran was hashed whole after the next case */
-        if (input_readable(cfg, in->value, &e) != GW_OK || gw_fnv1a64_file(in->value, in->key, &fh, &e) != GW_OK)
+        /* the reader's rules with the hash, in one pass: a file replaced by
+         * a sparse 200 GB one while the sweep ran was hashed whole after the
+         * next case */
+        if (input_hash(cfg, in->key, in->value, &fh, &e) != GW_OK)
             return gw_err_set(err, GW_EINVAL, "%s '%s' cannot be read any more while the sweep runs (%s)", in->key,
                               in->value, e.msg);
         if (fh != in->hash)

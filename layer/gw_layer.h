@@ -274,7 +274,12 @@ int gw_layer_write_pvd(const char *path, int n, const char *const *files, const 
  * recorded (a hand-written sample, a file from before the settings line, a
  * sample built in memory, a settings line without material): the fields are
  * then unused and no check compares them. --modulus-factor settles with
- * F x G, then relaxes with G: G is recorded. */
+ * F x G, then relaxes with G: G is recorded. A record set in memory
+ * (recorded 1) is held by every call that takes the sample to what the
+ * reader holds a settings line to (G, nu, phi, rho, g finite and within the
+ * material's ranges, g > 0; mass_law the sample's; clump_mass the sample's
+ * or -1): GW_EINVAL "sample 's': settled.FIELD ..." (before session 46 it was
+ * taken as set: a NaN modulus gave a load ratio of NaN). */
 typedef struct gw_layer_settled {
     int recorded;          /* 1: the fields below were read */
     double shear_modulus;  /* G, Pa */

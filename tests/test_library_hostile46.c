@@ -1,0 +1,230 @@
+/*
+ * test_library_hostile46.c: the forty-sixth hostile pass over the library's C
+ * interface (docs/library.md "The contract of every call"), at the settling
+ * record of a sample built in memory (gw_layer_settled). The file reader
+ * holds a settings line to the material's ranges (G in [1e-3, 1e15] Pa, nu
+ * in [0, 0.499999], phi in [0, 90) deg, rho in [1e-6, 1e6] kg/m^3, g in
+ * (0, 1e4] m/s^2, all finite), its mass law to the header's and its clump
+ * mass to the header's; a record set in memory (recorded = 1) was taken as
+ * it was, so that:
+ *   - a NaN, zero, negative or infinite modulus, density or gravity, or a
+ *     Poisson ratio of 1, gave a load ratio of NaN, inf, 0 or -40
+ *     (gw_layer_settled_load_ratio) and a refusal telling the pile "carries
+ *     nan times" (or -40 times) its weight; under other_settling the impact
+ *     ran with that text as its warning;
+ *   - a NaN, negative or 100-degree friction passed the friction bound (a
+ *     NaN compares false) with a warning only;
+ *   - a mass law of 7 was told "mass-law disc against the impact's disc",
+ *     a clump mass of 9 passed without a word;
+ *   - the porosity, the DEM step and the pile hash took each of them, and
+ *     gw_layer_sample_write wrote the sample.
+ * Each row spoils the record of test_three_discs one way (a control row
+ * records the impact's own material, another a different material within
+ * the ranges); each entry point that takes a sample is one case in its own
+ * child process (test_child.h): gw_layer_impact_check refuses (GW_EINVAL)
+ * naming the field ("settled.FIELD"), gw_layer_impact (other_settling 1)
+ * gives the same status and message, gw_layer_impact_settled_check
+ * (other_settling 1) refuses with the same message, the load ratio, the
+ * porosity and the DEM step are NaN, the pile hash 0, and the writer
+ * refuses naming the same and leaves no file. The controls pass every call.
+ */
+#define _POSIX_C_SOURCE 200809L
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include "granwave.h"
+#include "layer_test_util.h"
+#include "test_child.h"
+
+enum { F_G, F_NU, F_PHI, F_RHO, F_GRAV, F_LAW, F_CLUMP, F_NONE };
+
+typedef struct rec_row {
+    const char *label;
+    int field;         /* F_*: the record's field spoiled (F_NONE: the control) */
+    double v;          /* its value (an int field: cast) */
+    const char *named; /* in every refusal (NULL: the row passes) */
+} rec_row;
+
+static const rec_row rows[] = {
+    {"the impact's own material (control)", F_NONE, 0, NULL},
+    {"another material within the ranges (control)", F_NU, 0.3, NULL},
+    {"shear modulus NaN", F_G, NAN, "settled.shear_modulus = nan Pa is outside [0.001, 1e+15]"},
+    {"shear modulus 0", F_G, 0, "settled.shear_modulus = 0 Pa"},
+    {"shear modulus -1e9", F_G, -1e9, "settled.shear_modulus = -1e+09 Pa"},
+    {"shear modulus inf", F_G, INFINITY, "settled.shear_modulus = inf Pa"},
+    {"Poisson ratio 1", F_NU, 1, "settled.poisson = 1 is outside [0, 0.499999]"},
+    {"Poisson ratio NaN", F_NU, NAN, "settled.poisson = nan"},
+    {"friction NaN", F_PHI, NAN, "settled.friction_deg = nan deg is outside [0, 90)"},
+    {"friction -30 deg", F_PHI, -30, "settled.friction_deg = -30 deg"},
+    {"friction 90 deg (open end)", F_PHI, 90, "settled.friction_deg = 90 deg"},
+    {"density 0", F_RHO, 0, "settled.density = 0 kg/m^3 is outside [1e-06, 1e+06]"},
+    {"gravity 0 (open end)", F_GRAV, 0, "settled.gravity = 0 m/s^2 is outside (0, 10000]"},
+    {"gravity NaN", F_GRAV, NAN, "settled.gravity = nan m/s^2"},
+    {"mass law 7", F_LAW, 7, "settled.mass_law = 7 where the sample's mass_law is 0"},
+    {"mass law sphere on a disc sample", F_LAW, GW_LAYER_MASS_SPHERE, "settled.mass_law = 1"},
+    {"clump mass 9", F_CLUMP, 9, "settled.clump_mass = 9 where the sample's clump_mass is 0"},
+    {"clump mass union on a sum sample", F_CLUMP, GW_LAYER_CLUMP_MASS_UNION, "settled.clump_mass = 1"},
+};
+#define NROWS (sizeof rows / sizeof rows[0])
+
+static const rec_row *row; /* the row of the case the next child runs */
+static char dir[64];
+
+/* the three discs recording the default material's settling, spoiled by the row */
+static gw_layer_sample hand(void)
+{
+    gw_layer_sample s = test_three_discs();
+    const gw_layer_params lp = gw_layer_params_default();
+    s.settled = (gw_layer_settled){.recorded = 1, .shear_modulus = lp.shear_modulus, .poisson = lp.poisson,
+                                   .friction_deg = lp.friction_deg, .density = lp.density, .gravity = lp.gravity,
+                                   .mass_law = lp.mass_law, .clump_mass = -1};
+    double *f[5] = {&s.settled.shear_modulus, &s.settled.poisson, &s.settled.friction_deg, &s.settled.density,
+                    &s.settled.gravity};
+    if (row->field <= F_GRAV)
+        *f[row->field] = row->v;
+    else if (row->field == F_LAW)
+        s.settled.mass_law = (int)row->v;
+    else if (row->field == F_CLUMP)
+        s.settled.clump_mass = (int)row->v;
+    return s;
+}
+
+static gw_layer_impact_params impact(void)
+{
+    gw_layer_impact_params ip = gw_layer_impact_params_default();
+    ip.t_max = 1e-4;
+    ip.other_settling = 1; /* a record away from rest runs with a warning: the record's own fault is refused */
+    return ip;
+}
+
+static int as_row(int rc, const gw_err *e)
+{
+    if (!row->named) {
+        if (rc != GW_OK)
+            printf("control: status %d '%s'\n", rc, e->msg);
+        return rc == GW_OK;
+    }
+    return refused(rc, e, row->named);
+}
+
+static int c_check(void)
+{
+    gw_layer_sample s = hand();
+    gw_layer_impact_params ip = impact();
+    gw_err e = {{0}};
+    EXPECT(as_row(gw_layer_impact_check(&s, &ip, &e), &e));
+    return 0;
+}
+
+static int c_run(void)
+{
+    gw_layer_sample s = hand();
+    gw_layer_impact_params ip = impact();
+    gw_layer_params lp = gw_layer_params_default();
+    gw_solver_params sp = gw_solver_params_default();
+    gw_layer_impact_result res;
+    gw_err ec = {{0}}, er = {{0}};
+    const int rc = gw_layer_impact_check(&s, &ip, &ec);
+    const int rr = gw_layer_impact(&s, &lp, &ip, gw_solver_verlet, &sp, &res, &er);
+    if (rr == GW_OK)
+        gw_layer_impact_result_free(&res);
+    EXPECT(as_row(rr, &er));
+    EXPECT(rr == rc && strcmp(ec.msg, er.msg) == 0);
+    return 0;
+}
+
+static int c_settled(void)
+{
+    gw_layer_sample s = hand();
+    gw_layer_impact_params ip = impact();
+    gw_layer_params lp = gw_layer_params_default();
+    gw_err e = {{0}}, ec = {{0}};
+    char w[768];
+    (void)gw_layer_impact_check(&s, &ip, &ec);
+    const int rc = gw_layer_impact_settled_check(&s, &lp, 1, "s", w, sizeof w, &e);
+    EXPECT(as_row(rc, &e));
+    if (row->named && strcmp(e.msg, ec.msg) != 0)
+        printf("message '%s', the check's '%s'\n", e.msg, ec.msg);
+    return 0;
+}
+
+/* the load ratio: NaN for a refused record; for the controls q of the
+ * header's law, [G/(1 - nu)]_impact / [G/(1 - nu)]_settled (same weights) */
+static int c_ratio(void)
+{
+    gw_layer_sample s = hand();
+    gw_layer_params lp = gw_layer_params_default();
+    const double q = gw_layer_settled_load_ratio(&s, &lp);
+    const double want = (1 - s.settled.poisson) / (1 - lp.poisson);
+    if (row->named ? !isnan(q) : !(fabs(q - want) < 1e-12))
+        printf("load ratio %g (want %g)\n", q, row->named ? NAN : want);
+    return 0;
+}
+
+static int c_porosity_dt(void)
+{
+    gw_layer_sample s = hand();
+    gw_layer_impact_params ip = impact();
+    gw_layer_params lp = gw_layer_params_default();
+    const double p = gw_layer_sample_porosity(&s), dt = gw_layer_impact_dem_dt(&s, &lp, &ip);
+    if (row->named ? !isnan(p) : !(p >= 0 && p <= 1))
+        printf("porosity %g\n", p);
+    if (row->named ? !isnan(dt) : !(dt > 0))
+        printf("dem_dt %g\n", dt);
+    return 0;
+}
+
+static int c_pile_hash(void)
+{
+    gw_layer_sample s = hand();
+    const unsigned long long h = gw_layer_sample_pile_hash(&s);
+    if (row->named ? h != 0 : h == 0)
+        printf("pile hash %016llx\n", h);
+    return 0;
+}
+
+static int c_write(void)
+{
+    gw_layer_sample s = hand();
+    char path[128];
+    struct stat st;
+    snprintf(path, sizeof path, "%s/w%d.txt", dir, (int)(row - rows));
+    gw_err e = {{0}};
+    EXPECT(as_row(gw_layer_sample_write(&s, path, NULL, &e), &e));
+    EXPECT((stat(path, &st) == 0) == (row->named == NULL)); /* nothing written when refused */
+    unlink(path);
+    return 0;
+}
+
+int main(void)
+{
+    snprintf(dir, sizeof dir, "/tmp/gw_hostile46.XXXXXX");
+    if (!mkdtemp(dir)) {
+        perror("mkdtemp");
+        return 1;
+    }
+    static const child_row calls[] = {
+        {"gw_layer_impact_check", c_check},
+        {"gw_layer_impact", c_run},
+        {"gw_layer_impact_settled_check", c_settled},
+        {"gw_layer_settled_load_ratio", c_ratio},
+        {"gw_layer_sample_porosity and gw_layer_impact_dem_dt", c_porosity_dt},
+        {"gw_layer_sample_pile_hash", c_pile_hash},
+        {"gw_layer_sample_write", c_write},
+    };
+    int nfail = 0, ncases = 0;
+    for (size_t r = 0; r < NROWS; r++)
+        for (size_t c = 0; c < sizeof calls / sizeof calls[0]; c++) {
+            char label[256];
+            row = &rows[r];
+            snprintf(label, sizeof label, "%s: %s", rows[r].label, calls[c].label);
+            child_case(label, calls[c].fn, &nfail, &ncases);
+        }
+    rmdir(dir);
+    printf("%d of %d cases failed\n", nfail, ncases);
+    return nfail ? 1 : 0;
+}

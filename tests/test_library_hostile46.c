@@ -27,6 +27,11 @@
  * (other_settling 1) refuses with the same message, the load ratio, the
  * porosity and the DEM step are NaN, the pile hash 0, and the writer
  * refuses naming the same and leaves no file. The controls pass every call.
+ * Also gw_chain_memory_check on a bead count outside [1, 5e7]: n = -1 and 0
+ * passed (the sizes of a negative column are below any limit) and n = INT_MIN
+ * was refused as needing 4.4e11 GB, "at most 0 beads here"; each is now
+ * refused as gw_chain_params_validate refuses it, naming n (a control of 1
+ * and 2e6 beads passes, 3e6 under cvode is still the memory refusal).
  */
 #define _POSIX_C_SOURCE 200809L
 #include <math.h>
@@ -200,6 +205,34 @@ static int c_write(void)
     return 0;
 }
 
+/* gw_chain_memory_check on a bead count: its message like
+ * gw_chain_params_validate's, or the memory refusal, or GW_OK */
+static int memory_n(int n, const char *want)
+{
+    gw_chain_params p = gw_chain_params_default();
+    p.n = n;
+    gw_err e = {{0}}, ev = {{0}};
+    const int rc = gw_chain_memory_check(&p, gw_solver_cvode, 0, &e);
+    if (!want) {
+        EXPECT(rc == GW_OK);
+        return 0;
+    }
+    EXPECT(refused(rc, &e, want));
+    if (n < 1 || n > 50000000) { /* the validation's own words */
+        EXPECT(gw_chain_params_validate(&p, &ev) == GW_EINVAL);
+        EXPECT(strcmp(e.msg, ev.msg) == 0);
+    }
+    return 0;
+}
+
+static int c_mem_neg1(void) { return memory_n(-1, "n: number of beads must be >= 1, got -1"); }
+static int c_mem_zero(void) { return memory_n(0, "n: number of beads must be >= 1, got 0"); }
+static int c_mem_intmin(void) { return memory_n(-2147483647 - 1, "got -2147483648"); }
+static int c_mem_6e7(void) { return memory_n(60000000, "n: 60000000 beads exceed the supported 5e7"); }
+static int c_mem_one(void) { return memory_n(1, NULL); }
+static int c_mem_2e6(void) { return memory_n(2000000, NULL); }
+static int c_mem_3e6(void) { return memory_n(3000000, "GB for its state"); }
+
 int main(void)
 {
     snprintf(dir, sizeof dir, "/tmp/gw_hostile46.XXXXXX");
@@ -224,6 +257,17 @@ int main(void)
             snprintf(label, sizeof label, "%s: %s", rows[r].label, calls[c].label);
             child_case(label, calls[c].fn, &nfail, &ncases);
         }
+    static const child_row mem[] = {
+        {"gw_chain_memory_check: n = -1", c_mem_neg1},
+        {"gw_chain_memory_check: n = 0", c_mem_zero},
+        {"gw_chain_memory_check: n = INT_MIN", c_mem_intmin},
+        {"gw_chain_memory_check: n = 6e7", c_mem_6e7},
+        {"gw_chain_memory_check: n = 1 (control)", c_mem_one},
+        {"gw_chain_memory_check: n = 2e6 (control)", c_mem_2e6},
+        {"gw_chain_memory_check: n = 3e6, the memory bound (control)", c_mem_3e6},
+    };
+    for (size_t k = 0; k < sizeof mem / sizeof mem[0]; k++)
+        child_case(mem[k].label, mem[k].fn, &nfail, &ncases);
     rmdir(dir);
     printf("%d of %d cases failed\n", nfail, ncases);
     return nfail ? 1 : 0;

@@ -416,7 +416,12 @@ size_t gw_layer_sample_size(void);
  * second such line, or one that is not a JSON object, or material values of
  * the wrong type, missing or outside the material rows' ranges, are
  * GW_EFORMAT naming the file and line (an altered file: remove the line to
- * read the sample as hand-written). HDF5 files are opened only in the 1.8 format or
+ * read the sample as hand-written). The writer holds its header to what the
+ * readers take back (since session 46; before, such files were written and
+ * then refused): at most one settings line (after blanks), JSON the record's
+ * parse takes against s, at most 65536 characters; no line over 1 MiB and no
+ * carriage return inside a line (one before its newline is read as CR LF);
+ * GW_EINVAL "sample 'PATH': header line K: ...", nothing written. HDF5 files are opened only in the 1.8 format or
  * later (metadata checksums; libhdf5 can crash on corrupt files without them).
  * HDF5's own error printing is silenced during both calls (under the
  * library's HDF5 lock: calls from several threads run one at a time) and

@@ -32,6 +32,15 @@
  * was refused as needing 4.4e11 GB, "at most 0 beads here"; each is now
  * refused as gw_chain_params_validate refuses it, naming n (a control of 1
  * and 2e6 beads passes, 3e6 under cvode is still the memory refusal).
+ * And gw_layer_sample_write's header, as the readers take it back: a header
+ * "settings: not json", a settings line without its material's keys, with a
+ * modulus of -5, two settings lines, a settings line over 65536 characters or
+ * a carriage return inside a line was written (text and HDF5) and the file
+ * then refused by gw_layer_sample_read; each is now refused (GW_EINVAL naming
+ * the header's line) and no file is left. Controls (no settings line, a
+ * layer-make settings line of the sample's material, a "settled: ...
+ * converged 0" line, a line ending in CR) are written and read back, the
+ * record as written.
  */
 #define _POSIX_C_SOURCE 200809L
 #include <math.h>
@@ -233,6 +242,71 @@ static int c_mem_one(void) { return memory_n(1, NULL); }
 static int c_mem_2e6(void) { return memory_n(2000000, NULL); }
 static int c_mem_3e6(void) { return memory_n(3000000, "GB for its state"); }
 
+typedef struct hdr_row {
+    const char *label;
+    const char *header; /* NULL: the long settings line (built) */
+    const char *named;  /* in the refusal (NULL: written and read back) */
+    int recorded;       /* the record read back (a control) */
+} hdr_row;
+
+#define MAT "\"shear-modulus\":4e10,\"poisson\":0.25,\"friction\":30,\"density\":2650,\"gravity\":9.81,\"mass-law\":\"disc\""
+static const hdr_row hdrs[] = {
+    {"no settings line (control)", "made by hand\nsecond line", NULL, 0},
+    {"the sample's material (control)", "made by hand\nsettings: {" MAT "}", NULL, 1},
+    {"a settled line, converged 0 (control)", "settled: t = 1 s, E_k = 1 J, converged 0", NULL, 0},
+    {"a line ending in CR (control)", "one\r\nsettings: {" MAT "}\r", NULL, 1},
+    {"settings not JSON", "settings: not json", "header line 1: layer-make's settings line is not a JSON object", 0},
+    {"settings without its keys", "x\nsettings: {\"material\":{}}", "header line 2: layer-make's settings line lacks", 0},
+    {"a modulus of -5", "settings: {\"shear-modulus\":-5,\"poisson\":0.25,\"friction\":30,\"density\":2650,"
+                        "\"gravity\":9.81,\"mass-law\":\"disc\"}", "outside the material's range: shear-modulus", 0},
+    {"a sphere record on a disc sample", "settings: {\"shear-modulus\":4e10,\"poisson\":0.25,\"friction\":30,"
+                                         "\"density\":2650,\"gravity\":9.81,\"mass-law\":\"sphere\"}", "mass law sphere", 0},
+    {"two settings lines", "settings: {" MAT "}\n  settings: {" MAT "}", "header line 2: a second settings line", 0},
+    {"a settings line of 70000 characters", NULL, "header line 1: a settings line longer than 65536", 0},
+    {"a CR inside a line", "one\rtwo", "header line 1: a carriage return inside the line", 0},
+};
+#define NHDRS (sizeof hdrs / sizeof hdrs[0])
+static const hdr_row *hrow;
+static const char *hext; /* ".txt" or ".h5" */
+
+static int c_header(void)
+{
+    gw_layer_sample s = test_three_discs();
+    char path[128], *big = NULL;
+    const char *header = hrow->header;
+    if (!header) {
+        big = malloc(70100);
+        if (!big)
+            return 1;
+        strcpy(big, "settings: {\"x\":\"");
+        memset(big + 16, 'a', 70000);
+        strcpy(big + 70016, "\"}");
+        header = big;
+    }
+    snprintf(path, sizeof path, "%s/h%d%s", dir, (int)(hrow - hdrs), hext);
+    gw_err e = {{0}};
+    const int rc = gw_layer_sample_write(&s, path, header, &e);
+    free(big);
+    struct stat st;
+    if (hrow->named) {
+        EXPECT(refused(rc, &e, hrow->named));
+        EXPECT(stat(path, &st) != 0); /* nothing written */
+        return 0;
+    }
+    EXPECT(rc == GW_OK);
+    gw_layer_sample t;
+    memset(&t, 0, sizeof t);
+    const int rr = gw_layer_sample_read(path, &t, &e);
+    if (rr != GW_OK)
+        printf("read back: %d %s\n", rr, e.msg);
+    EXPECT(rr == GW_OK);
+    EXPECT(t.settled.recorded == hrow->recorded);
+    EXPECT(!hrow->recorded || (t.settled.shear_modulus == 4e10 && t.settled.friction_deg == 30));
+    gw_layer_sample_free(&t);
+    unlink(path);
+    return 0;
+}
+
 int main(void)
 {
     snprintf(dir, sizeof dir, "/tmp/gw_hostile46.XXXXXX");
@@ -268,6 +342,18 @@ int main(void)
     };
     for (size_t k = 0; k < sizeof mem / sizeof mem[0]; k++)
         child_case(mem[k].label, mem[k].fn, &nfail, &ncases);
+#if GW_HAVE_HDF5
+    static const char *const exts[] = {".txt", ".h5"};
+#else
+    static const char *const exts[] = {".txt"};
+#endif
+    for (size_t x = 0; x < sizeof exts / sizeof exts[0]; x++)
+        for (size_t k = 0; k < NHDRS; k++) {
+            char label[256];
+            hrow = &hdrs[k], hext = exts[x];
+            snprintf(label, sizeof label, "gw_layer_sample_write (%s) header: %s", hext, hdrs[k].label);
+            child_case(label, c_header, &nfail, &ncases);
+        }
     rmdir(dir);
     printf("%d of %d cases failed\n", nfail, ncases);
     return nfail ? 1 : 0;

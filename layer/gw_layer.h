@@ -708,6 +708,8 @@ int gw_layer_impact_check(const gw_layer_sample *s, const gw_layer_impact_params
  * default gap ..." naming the smallest speed. The setup
  * (gw_layer_impact_setup: the program, a sweep's case, Python) knows whether
  * the gap was given, and gives a gap given at 1e-6 m the gap's refusal. */
+/* g is held to gravity's range [0, 1e4] m/s^2 first (gw_layer_params_validate's
+ * rule and message; before session 46 g = 1e300 was told vi is too slow). */
 int gw_layer_impact_fall_check(const gw_layer_impact_params *ip, double g, gw_err *err);
 
 /* The gap's checks: gw_layer_impact_fall_check, then the sideways drift. The
@@ -733,6 +735,9 @@ int gw_layer_impact_gap_check(const gw_layer_sample *s, const gw_layer_impact_pa
  * a load beyond that (a pile that did not settle), stays refused. A sample
  * of gw_layer_impact_check's form, with finite particles, comes first
  * (GW_EINVAL naming the field or the particle: a NULL y was read before). */
+/* lp is held to gw_layer_params_validate first, as the run holds it (since
+ * session 46: a NaN gravity passed), here and in
+ * gw_layer_impact_settled_check; gw_layer_settled_load_ratio is then NaN. */
 int gw_layer_impact_rest_check(const gw_layer_sample *s, const gw_layer_params *lp, const char *name,
                                gw_err *err);
 

@@ -41,6 +41,14 @@
  * layer-make settings line of the sample's material, a "settled: ...
  * converged 0" line, a line ending in CR) are written and read back, the
  * record as written.
+ * And the impact's material given to the public settling, rest and gap
+ * checks: a gravity of NaN, inf, -1 or 1e300 (gw_layer_params_validate and
+ * the run refuse each) passed gw_layer_impact_settled_check under
+ * other_settling ("against the impact's nan"), gw_layer_impact_rest_check,
+ * gave a load ratio of inf or 9.81e-300, and g = 1e300 was told by
+ * gw_layer_impact_fall_check and _gap_check that vi is too slow for the
+ * default gap: each now refuses naming gravity and its range, as the
+ * validation does (the load ratio NaN); 9.81 and 0 pass.
  */
 #define _POSIX_C_SOURCE 200809L
 #include <math.h>
@@ -307,6 +315,47 @@ static int c_header(void)
     return 0;
 }
 
+static const double gravities[] = {NAN, INFINITY, -1, 1e300, 9.81, 0};
+static double grav;
+
+/* the checks given the impact's material lp with gravity grav (g too) */
+static int c_gravity(void)
+{
+    gw_layer_sample s = test_three_discs();
+    gw_layer_params lp = gw_layer_params_default();
+    lp.gravity = grav;
+    s.settled = (gw_layer_settled){.recorded = 1, .shear_modulus = lp.shear_modulus, .poisson = lp.poisson,
+                                   .friction_deg = lp.friction_deg, .density = lp.density, .gravity = 9.81,
+                                   .mass_law = lp.mass_law, .clump_mass = -1};
+    gw_layer_impact_params ip = gw_layer_impact_params_default();
+    ip.t_max = 1;
+    const int bad = !(grav >= 0 && grav <= 1e4);
+    gw_err e = {{0}}, ev = {{0}};
+    char w[768];
+    const int vrc = gw_layer_params_validate(&lp, &ev);
+    EXPECT((vrc != GW_OK) == bad);
+    const int rs = gw_layer_impact_settled_check(&s, &lp, 1, "s", w, sizeof w, &e);
+    if (bad) {
+        EXPECT(refused(rs, &e, "gravity (m/s^2)") && strcmp(e.msg, ev.msg) == 0);
+    } else {
+        EXPECT(rs == GW_OK);
+    }
+    const int rr = gw_layer_impact_rest_check(&s, &lp, "s", &e);
+    if (bad) {
+        EXPECT(refused(rr, &e, "gravity (m/s^2)") && strcmp(e.msg, ev.msg) == 0);
+    }
+    (void)rr; /* (a pile without floor load under gravity may be refused: not this check's subject) */
+    const double q = gw_layer_settled_load_ratio(&s, &lp);
+    EXPECT(bad ? isnan(q) : !isnan(q));
+    EXPECT((gw_layer_impact_fall_check(&ip, grav, &e) != GW_OK) == bad);
+    if (bad)
+        EXPECT(refused(GW_EINVAL, &e, "gravity (m/s^2)"));
+    EXPECT((gw_layer_impact_gap_check(&s, &ip, grav, &e) != GW_OK) == bad);
+    if (bad)
+        EXPECT(refused(GW_EINVAL, &e, "gravity (m/s^2)"));
+    return 0;
+}
+
 int main(void)
 {
     snprintf(dir, sizeof dir, "/tmp/gw_hostile46.XXXXXX");
@@ -342,6 +391,12 @@ int main(void)
     };
     for (size_t k = 0; k < sizeof mem / sizeof mem[0]; k++)
         child_case(mem[k].label, mem[k].fn, &nfail, &ncases);
+    for (size_t k = 0; k < sizeof gravities / sizeof gravities[0]; k++) {
+        char label[128];
+        grav = gravities[k];
+        snprintf(label, sizeof label, "the impact's gravity %g at the settling, rest and gap checks", grav);
+        child_case(label, c_gravity, &nfail, &ncases);
+    }
 #if GW_HAVE_HDF5
     static const char *const exts[] = {".txt", ".h5"};
 #else

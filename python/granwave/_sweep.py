@@ -18,7 +18,8 @@ from ._core import Interruptible, Progress, issue
 from ._errors import GW_EINVAL, GranwaveError, GranwaveValueError, _raise, keyword_text
 from ._lib import lib
 from ._result import Result
-from ._values import FLAG, TEXT, _BYTES, _digits, _fspath, _items, _kind, _plain, _scalar, _show, _text, _texts, read_table
+from ._values import (FLAG, TEXT, _BYTES, _digits, _fspath, _items, _kind, _plain, _scalar, _show, _text, _texts,
+                      read_table)
 
 
 def sweep_models():

@@ -599,6 +599,9 @@ int gw_chain_memory_check(const gw_chain_params *p, const gw_solver_type *type, 
 {
     if (!p)
         return gw_err_set(err, GW_EINVAL, "gw_chain_memory_check: p is NULL");
+    const int nrc = chain_n_check(p->n, err);
+    if (nrc != GW_OK)
+        return nrc;
     const double limit = GW_CHAIN_MEMORY_MAX;
     double need = memory_bytes(p, type, method);
     if (need <= limit)

@@ -304,15 +304,22 @@ gw_chain_params gw_chain_params_default(void)
     return p;
 }
 
+int chain_n_check(int n, gw_err *err)
+{
+    if (n < 1)
+        return gw_err_set(err, GW_EINVAL, "n: number of beads must be >= 1, got %d", n);
+    if (n > 50000000)
+        return gw_err_set(err, GW_EINVAL, "n: %d beads exceed the supported 5e7", n);
+    return GW_OK;
+}
+
 int gw_chain_params_validate(const gw_chain_params *p, gw_err *err)
 {
     if (!p)
         return gw_err_set(err, GW_EINVAL, "gw_chain_params_validate: p is NULL");
     int rc;
-    if (p->n < 1)
-        return gw_err_set(err, GW_EINVAL, "n: number of beads must be >= 1, got %d", p->n);
-    if (p->n > 50000000)
-        return gw_err_set(err, GW_EINVAL, "n: %d beads exceed the supported 5e7", p->n);
+    if ((rc = chain_n_check(p->n, err)) != GW_OK)
+        return rc;
     if ((rc = gw_check_positive(p->v_imp, "v_imp (impact velocity, m/s)", err)) != GW_OK)
         return rc;
     if (!p->masses && (rc = gw_check_positive(p->mass, "mass (kg)", err)) != GW_OK)

@@ -525,7 +525,9 @@ int gw_chain_trace_check(int n, double span, double dt_out, double events, gw_er
  * (the model's and result's arrays, the solver's vectors and, for cvode bdf and
  * arkode dirk/imex, its band matrices) is bounded before anything is allocated at
  * GW_CHAIN_MEMORY_MAX bytes (2 GiB): GW_EINVAL "n: a column of N beads needs
- * about X GB ...: at most M beads here" otherwise. */
+ * about X GB ...: at most M beads here" otherwise. A bead count outside
+ * [1, 5e7] is GW_EINVAL naming n as gw_chain_params_validate does (before
+ * session 46 n = -1 passed and n = INT_MIN was told it needs 4.4e11 GB). */
 #define GW_CHAIN_MEMORY_MAX 2147483648.0
 int gw_chain_memory_check(const gw_chain_params *p, const gw_solver_type *type, int method, gw_err *err);
 /* Every bound gw_chain_collide checks before its run, in order, from p and o

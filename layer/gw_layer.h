@@ -274,7 +274,12 @@ int gw_layer_write_pvd(const char *path, int n, const char *const *files, const 
  * recorded (a hand-written sample, a file from before the settings line, a
  * sample built in memory, a settings line without material): the fields are
  * then unused and no check compares them. --modulus-factor settles with
- * F x G, then relaxes with G: G is recorded. */
+ * F x G, then relaxes with G: G is recorded. A record set in memory
+ * (recorded 1) is held by every call that takes the sample to what the
+ * reader holds a settings line to (G, nu, phi, rho, g finite and within the
+ * material's ranges, g > 0; mass_law the sample's; clump_mass the sample's
+ * or -1): GW_EINVAL "sample 's': settled.FIELD ..." (before session 46 it was
+ * taken as set: a NaN modulus gave a load ratio of NaN). */
 typedef struct gw_layer_settled {
     int recorded;          /* 1: the fields below were read */
     double shear_modulus;  /* G, Pa */
@@ -411,7 +416,12 @@ size_t gw_layer_sample_size(void);
  * second such line, or one that is not a JSON object, or material values of
  * the wrong type, missing or outside the material rows' ranges, are
  * GW_EFORMAT naming the file and line (an altered file: remove the line to
- * read the sample as hand-written). HDF5 files are opened only in the 1.8 format or
+ * read the sample as hand-written). The writer holds its header to what the
+ * readers take back (since session 46; before, such files were written and
+ * then refused): at most one settings line (after blanks), JSON the record's
+ * parse takes against s, at most 65536 characters; no line over 1 MiB and no
+ * carriage return inside a line (one before its newline is read as CR LF);
+ * GW_EINVAL "sample 'PATH': header line K: ...", nothing written. HDF5 files are opened only in the 1.8 format or
  * later (metadata checksums; libhdf5 can crash on corrupt files without them).
  * HDF5's own error printing is silenced during both calls (under the
  * library's HDF5 lock: calls from several threads run one at a time) and
@@ -699,6 +709,8 @@ int gw_layer_impact_check(const gw_layer_sample *s, const gw_layer_impact_params
  * default gap ..." naming the smallest speed. The setup
  * (gw_layer_impact_setup: the program, a sweep's case, Python) knows whether
  * the gap was given, and gives a gap given at 1e-6 m the gap's refusal. */
+/* g is held to gravity's range [0, 1e4] m/s^2 first (gw_layer_params_validate's
+ * rule and message; before session 46 g = 1e300 was told vi is too slow). */
 int gw_layer_impact_fall_check(const gw_layer_impact_params *ip, double g, gw_err *err);
 
 /* The gap's checks: gw_layer_impact_fall_check, then the sideways drift. The
@@ -724,6 +736,9 @@ int gw_layer_impact_gap_check(const gw_layer_sample *s, const gw_layer_impact_pa
  * a load beyond that (a pile that did not settle), stays refused. A sample
  * of gw_layer_impact_check's form, with finite particles, comes first
  * (GW_EINVAL naming the field or the particle: a NULL y was read before). */
+/* lp is held to gw_layer_params_validate first, as the run holds it (since
+ * session 46: a NaN gravity passed), here and in
+ * gw_layer_impact_settled_check; gw_layer_settled_load_ratio is then NaN. */
 int gw_layer_impact_rest_check(const gw_layer_sample *s, const gw_layer_params *lp, const char *name,
                                gw_err *err);
 

@@ -306,8 +306,12 @@ int gw_layer_impact_fall_check(const gw_layer_impact_params *ip, double g, gw_er
 
 int layer_impact_fall_rule(const gw_layer_impact_params *ip, double g, int gap_default, gw_err *err)
 {
-    if (!(isfinite(g) && g >= 0)) /* a NaN g passed as no gravity */
-        return gw_err_set(err, GW_EINVAL, "gravity: %g m/s^2 is not a finite number >= 0", g);
+    /* gravity's own range, gw_layer_params_validate's rule (a NaN g passed
+     * as no gravity; g = 1e300, which the run refuses, was told "vi: ... too
+     * slow for the default gap") */
+    const int grc = gw_check_range(g, "gravity (m/s^2)", 0, 1e4, err);
+    if (grc != GW_OK)
+        return grc;
     /* --gap 1 --vi 1 arrived at 4.54 m/s: e_n 0.86 and e 1.83 over V_i = 1,
      * a penetration of 1.06 m counted from the start, against e_n 0.179 and
      * 0.064 m for the same impact given as --vi 4.54 */
@@ -410,6 +414,11 @@ int gw_layer_impact_rest_check(const gw_layer_sample *smp, const gw_layer_params
 {
     if (!smp || !lp)
         return gw_err_set(err, GW_EINVAL, "gw_layer_impact_rest_check: %s is NULL", !smp ? "s" : "lp");
+    /* the impact's material as the run holds it (a NaN or infinite gravity
+     * passed: no floor load is above a NaN weight) */
+    const int prc = gw_layer_params_validate(lp, err);
+    if (prc != GW_OK)
+        return prc;
     /* the floor's load was read through a NULL y or r (SIGSEGV), and a NaN y
      * gave a NaN load, passed as none above the weight */
     const int rc = layer_sample_shape_check(smp, name ? name : "s", err);

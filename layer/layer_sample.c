@@ -603,6 +603,59 @@ static int read_text(text_in *t, gw_layer_sample *s, gw_err *err)
     return rc;
 }
 
+/* The header a writer is given, as the readers will take it back: its lines
+ * become comments ("# LINE"), so a carriage return inside one (not before
+ * its newline) makes the text reader see one line where the header had two
+ * and refuse it, a line over SAMPLE_RAW_LINE_MAX is refused, and a line that
+ * reads as layer-make's "settings: {JSON}" (after blanks) is parsed as the
+ * sample's settling record: one such line at most, JSON the record's parse
+ * takes (layer_sample_settings_parse) against s. Before session 46 a header
+ * "settings: not json", a settings line with a modulus of -5, two of them or
+ * a CR inside a line were written and the file refused by the reader.
+ * GW_EINVAL naming the header's line, GW_ENOMEM. */
+static int header_check(const gw_layer_sample *s, const char *path, const char *header, gw_err *err)
+{
+    static const char key[] = "settings:";
+    long k = 0, seen = 0;
+    for (const char *p = header; p && *p; k++) {
+        const size_t len = strcspn(p, "\n");
+        const char *cr = memchr(p, '\r', len);
+        if (cr && cr != p + len - 1)
+            return gw_err_set(err, GW_EINVAL, "sample '%s': header line %ld: a carriage return inside the line, "
+                              "which the reader takes for no line end (the line and the next read as one)",
+                              path, k + 1);
+        if (len + 2 > (size_t)SAMPLE_RAW_LINE_MAX)
+            return gw_err_set(err, GW_EINVAL, "sample '%s': header line %ld: longer than %ld bytes, the longest "
+                              "line the reader takes", path, k + 1, SAMPLE_RAW_LINE_MAX - 2);
+        size_t b = 0;
+        while (b < len && (p[b] == ' ' || p[b] == '\t'))
+            b++;
+        if (len - b >= sizeof key - 1 && strncmp(p + b, key, sizeof key - 1) == 0) {
+            if (seen)
+                return gw_err_set(err, GW_EINVAL, "sample '%s': header line %ld: a second settings line (the "
+                                  "first at line %ld): the reader takes one", path, k + 1, seen);
+            seen = k + 1;
+            const size_t n = len - b - (sizeof key - 1) - (cr != NULL);
+            if (n > SAMPLE_SETTINGS_MAX)
+                return gw_err_set(err, GW_EINVAL, "sample '%s': header line %ld: a settings line longer than %d "
+                                  "characters", path, k + 1, SAMPLE_SETTINGS_MAX);
+            char *text = malloc(n + 1), where[48];
+            if (!text)
+                return gw_err_set(err, GW_ENOMEM, "sample '%s': out of memory for its header's settings line", path);
+            memcpy(text, p + b + sizeof key - 1, n);
+            text[n] = '\0';
+            gw_layer_settled rec;
+            gw_snprintf(where, sizeof where, "header line %ld", k + 1);
+            const int rc = layer_sample_settings_parse(text, path, where, s, NULL, &rec, err);
+            free(text);
+            if (rc != GW_OK)
+                return rc == GW_EFORMAT ? GW_EINVAL : rc; /* (the message is the parse's) */
+        }
+        p += len + (p[len] == '\n');
+    }
+    return GW_OK;
+}
+
 /* -------------------------------------------------------- public API ---- */
 
 int gw_layer_sample_write(const gw_layer_sample *s, const char *path, const char *header,
@@ -621,6 +674,8 @@ int gw_layer_sample_write(const gw_layer_sample *s, const char *path, const char
         rc = layer_sample_check(s, path, NULL, GW_EINVAL, err);
     if (rc == GW_OK) /* and its springs, as the reader would find them */
         rc = layer_springs_check(s, path, NULL, GW_EINVAL, err);
+    if (rc == GW_OK) /* and the header, as the reader will take it back */
+        rc = header_check(s, path, header, err);
     if (rc != GW_OK)
         return rc;
 #if GW_HAVE_HDF5

@@ -180,6 +180,8 @@ int layer_sample_limits_check(const gw_layer_sample *s, const char *path, int st
     int rc = layer_sample_form_check(s, path, status, err);
     if (rc == GW_OK)
         rc = layer_sample_header_check(s, path, status, err);
+    if (rc == GW_OK)
+        rc = layer_settled_record_check(s, path, status, err);
     char where[48];
     for (int i = 0; i < s->n && rc == GW_OK; i++) {
         gw_snprintf(where, sizeof where, "particle %d", i);

@@ -55,6 +55,17 @@ int layer_sample_check(const gw_layer_sample *s, const char *path, const hdr_src
 int layer_sample_settings_parse(const char *text, const char *path, const char *where, const gw_layer_sample *s,
                                 const hdr_src *src, gw_layer_settled *out, gw_err *err);
 
+/* The settling record of s (gw_layer_settled; recorded 0: GW_OK) held to
+ * what the reader holds a settings line to: G, nu, phi, rho and g finite and
+ * within the material's ranges (g > 0), the mass law the sample's, the clump
+ * mass the sample's or -1. A record built in memory was taken as it was: a
+ * NaN or negative modulus or density gave a load ratio of NaN or -40 and a
+ * refusal saying the pile "carries nan times" its weight (a run under
+ * other-settling), a NaN or negative friction passed the friction bound, a
+ * mass law of 7 was told "disc against the impact's disc". status and the
+ * message as the other sample checks ("sample 'PATH': settled.FIELD ..."). */
+int layer_settled_record_check(const gw_layer_sample *s, const char *path, int status, gw_err *err);
+
 /* 1 when text, a header line without its '#' and leading blanks, is
  * layer-make's "settled: ..." line and says "converged 0": the pile was
  * written before it settled (gw_layer_settled.unsettled); else 0. */

@@ -28,6 +28,7 @@
 
 #include "layer_sample_impl.h"
 #include "gw_locale.h"
+#include "gw_number_impl.h"
 
 /* unsettled (gw_layer.h) sits in what was the padding after clump_mass: the
  * struct's size, and gw_layer_sample's, stay those that callers compiled
@@ -78,6 +79,40 @@ static const struct {
     double lo, hi;
     int lo_open, hi_open;
 } ranges[5] = {{1e-3, 1e15, 0, 0}, {0, 0.499999, 0, 0}, {0, 90, 0, 1}, {1e-6, 1e6, 0, 0}, {0, 1e4, 1, 0}};
+
+/* 1 when v, the settling's value k (G, nu, phi, rho, g), lies in its range
+ * (not NaN) */
+static int in_range(int k, double v)
+{
+    return v >= ranges[k].lo && !(ranges[k].lo_open && v == ranges[k].lo) && v <= ranges[k].hi &&
+           !(ranges[k].hi_open && v == ranges[k].hi);
+}
+
+int layer_settled_record_check(const gw_layer_sample *s, const char *path, int status, gw_err *err)
+{
+    const gw_layer_settled *st = &s->settled;
+    if (!st->recorded)
+        return GW_OK;
+    static const char *const names[5] = {"shear_modulus", "poisson", "friction_deg", "density", "gravity"};
+    static const char *const units[5] = {" Pa", "", " deg", " kg/m^3", " m/s^2"};
+    const double v[5] = {st->shear_modulus, st->poisson, st->friction_deg, st->density, st->gravity};
+    for (int k = 0; k < 5; k++)
+        if (!in_range(k, v[k])) {
+            char lo[32], hi[32];
+            return gw_err_set(err, status, "sample '%s': settled.%s = %g%s is outside %s%s, %s%s (the settling "
+                              "record a settings line may hold; recorded 0 for none)", path, names[k], v[k],
+                              units[k], ranges[k].lo_open ? "(" : "[", gw_num_bound(lo, sizeof lo, ranges[k].lo, 0),
+                              gw_num_bound(hi, sizeof hi, ranges[k].hi, 1), ranges[k].hi_open ? ")" : "]");
+        }
+    if (st->mass_law != s->mass_law)
+        return gw_err_set(err, status, "sample '%s': settled.mass_law = %d where the sample's mass_law is %d "
+                          "(a settings line gives the header's)", path, st->mass_law, s->mass_law);
+    if (st->clump_mass != -1 && st->clump_mass != s->clump_mass)
+        return gw_err_set(err, status, "sample '%s': settled.clump_mass = %d where the sample's clump_mass is %d "
+                          "(a settings line gives the header's, or -1: not said)", path, st->clump_mass,
+                          s->clump_mass);
+    return GW_OK;
+}
 
 static int bad(const char *path, const char *where, gw_err *err, const char *why, const char *key)
 {
@@ -263,8 +298,7 @@ int layer_sample_settings_parse(const char *text, const char *path, const char *
             rc = bad(path, where, err, "lacks", d->keys[k]);
         else if (!cJSON_IsNumber(x) || !isfinite(x->valuedouble))
             rc = bad(path, where, err, "has a value that is not a finite number:", d->keys[k]);
-        else if ((v[k] = x->valuedouble) < ranges[k].lo || (ranges[k].lo_open && v[k] == ranges[k].lo) ||
-                 v[k] > ranges[k].hi || (ranges[k].hi_open && v[k] == ranges[k].hi))
+        else if (!in_range(k, v[k] = x->valuedouble))
             rc = bad(path, where, err, "has a value outside the material's range:", d->keys[k]);
     }
     const cJSON *law = cJSON_GetObjectItemCaseSensitive(src, d->keys[5]);

@@ -141,7 +141,9 @@ static int load_ratio(const gw_layer_sample *smp, const gw_layer_params *lp, dou
 double gw_layer_settled_load_ratio(const gw_layer_sample *smp, const gw_layer_params *lp)
 {
     gw_err e = {{0}};
-    if (smp && lp && layer_sample_shape_check(smp, "s", &e) == GW_OK) /* (a NULL r was read: SIGSEGV) */
+    /* (a NULL r was read: SIGSEGV; a NaN gravity gave inf, a gravity of
+     * 1e300 9.81e-300: the impact's material as the run holds it) */
+    if (smp && lp && layer_sample_shape_check(smp, "s", &e) == GW_OK && gw_layer_params_validate(lp, &e) == GW_OK)
         return layer_settled_load_ratio(smp, lp);
     return NAN;
 }
@@ -186,6 +188,11 @@ int gw_layer_impact_settled_check(const gw_layer_sample *smp, const gw_layer_par
     const int src = layer_sample_shape_check(smp, name ? name : "s", err);
     if (src != GW_OK)
         return src;
+    /* the impact's material as the run holds it: a NaN gravity was told
+     * "against the impact's nan" and run under other_settling */
+    const int prc = gw_layer_params_validate(lp, err);
+    if (prc != GW_OK)
+        return prc;
     double q;
     return layer_settled_check_q(smp, lp, other_settling, name, warning, n, &q, err);
 }

@@ -171,7 +171,9 @@ static void made(void)
 static gw_layer_sample three(double rho, double g, double G, double nu, int law)
 {
     static double x[3] = {1, 2, 3}, y[3] = {0.2, 0.3, 0.4}, r[3] = {0.2, 0.3, 0.4};
-    gw_layer_sample s = {.n = 3, .width = 4, .rm = 0.3, .x = x, .y = y, .r = r};
+    /* the sample's mass law the record's, as a file's header and settings
+     * line must agree (the shared sample check holds a record so) */
+    gw_layer_sample s = {.n = 3, .width = 4, .rm = 0.3, .mass_law = law, .x = x, .y = y, .r = r};
     s.settled = (gw_layer_settled){.recorded = 1, .shear_modulus = G, .poisson = nu, .friction_deg = 30,
                                    .density = rho, .gravity = g, .mass_law = law};
     return s;

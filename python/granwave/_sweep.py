@@ -18,7 +18,8 @@ from ._core import Interruptible, Progress, issue
 from ._errors import GW_EINVAL, GranwaveError, GranwaveValueError, _raise, keyword_text
 from ._lib import lib
 from ._result import Result
-from ._values import FLAG, TEXT, _BYTES, _fspath, _items, _kind, _plain, _scalar, _show, _text, _texts, read_table
+from ._values import (FLAG, TEXT, _BYTES, _digits, _fspath, _items, _kind, _plain, _scalar, _show, _text, _texts,
+                      read_table)
 
 
 def sweep_models():
@@ -58,7 +59,7 @@ def _ini_value(key, v, rows=()):
             raise TypeError(str(e).split(": ", 1)[-1]) from None
     if not isinstance(v, (str, os.PathLike)) and isinstance(_scalar(v), bool):
         raise TypeError(f"expected a number, got {_show(v)}")
-    s = _text_plain(v)
+    s = _text_plain(v, key)
     if any(c in s for c in "\n\r;#\0") or not s.strip():
         raise GranwaveValueError(f"{key}: value {_show(s)} cannot go into a sweep (empty, or holds ';', '#', NUL or a "
                                  "newline)", GW_EINVAL)
@@ -85,7 +86,7 @@ def _ini_value(key, v, rows=()):
 _INI_BLANKS = " \t\v\f"  # what libinih's strip takes (isspace; newlines are refused above)
 
 
-def _text_plain(v):
+def _text_plain(v, key="value"):
     if isinstance(v, os.PathLike):
         v = _fspath("", v)
         return os.fsdecode(v) if isinstance(v, bytes) else _plain(v)
@@ -95,7 +96,7 @@ def _text_plain(v):
     if isinstance(x, bool):
         return "1" if x else "0"
     if isinstance(x, int):
-        return str(x)
+        return _digits(key, x)
     if isinstance(x, float):
         return repr(x)
     raise TypeError(f"cannot use a {_kind(v)} as a sweep value")
@@ -183,7 +184,8 @@ def run_sweep(model, grid, params, jobs, progress):
     if isinstance(jobs, bool) or not isinstance(jobs, numbers.Integral):
         raise TypeError(f"sweep(): jobs must be an integer, not {type(jobs).__name__}")
     if not -2**31 <= jobs < 2**31:  # the library's message for what does not fit its int
-        raise GranwaveValueError(f"sweep: jobs: {jobs} is outside [0, 4096] (0: one per CPU)", GW_EINVAL)
+        raise GranwaveValueError(f"sweep: jobs: {_digits('sweep: jobs', jobs)} is outside [0, 4096] (0: one per CPU)",
+                                 GW_EINVAL)
     if not isinstance(grid, dict):
         raise TypeError(f"sweep(): grid must be a dict {{keyword: values}}, not {type(grid).__name__}")
     cb = Progress(progress)

@@ -133,6 +133,21 @@ def _scalar(v):
     return None
 
 
+def _digits(what, v):
+    """An int's decimal digits, for the library to parse and hold to its row's
+    range. str() of an int of more than Python's 4300 digits raises Python's
+    own ValueError ("Exceeds the limit (4300 digits) for integer string
+    conversion"), which named no keyword (chain(vimp=10**5000), an item of a
+    list, a range's end, a sweep's grid value); no input's range comes near
+    such a number, so it is refused here naming what."""
+    try:
+        return str(v)
+    except ValueError:
+        n = int(v.bit_length() * math.log10(2)) + 1
+        raise GranwaveValueError(f"{what}: an integer of about {n} digits is beyond every input's range",
+                                 GW_EINVAL) from None
+
+
 # A caller's value quoted in a message: at most about a line, and never an
 # exception of its own. repr() of a list of 10**6 numbers given for vimp made a
 # TypeError of 7.9 MB, and a value whose __repr__ raised replaced the refusal
@@ -302,7 +317,7 @@ def _text(p, value, most=(_INT_MAX, "")):
             # an integer by its digits, as a scalar's: float() of one beyond the
             # largest double raised OverflowError naming nothing (radii=[1e-3,
             # 2**2000]); the library refuses it as not finite, naming the keyword
-            items.append(str(v) if isinstance(v, int) else repr(v))
+            items.append(_digits(f"{p.keyword}: item {k + 1}", v) if isinstance(v, int) else repr(v))
         if any("," in x for x in items):
             raise GranwaveValueError(f"{p.keyword}: an item holds ',' ({_show(items)})", GW_EINVAL)
         return ",".join(items) if items else "none"
@@ -312,10 +327,10 @@ def _text(p, value, most=(_INT_MAX, "")):
             if value.step != 1 or value.stop <= value.start:
                 raise GranwaveValueError(f"{p.keyword}: a range of step 1 with at least one value, got {_show(value)}",
                                          GW_EINVAL)
-            return f"{value.start}:{value.stop - 1}"
+            return f"{_digits(p.keyword, value.start)}:{_digits(p.keyword, value.stop - 1)}"
         x = _scalar(value)
         if isinstance(x, int) and not isinstance(x, bool):  # 7, np.int64(7), np.array(7)
-            return str(x)
+            return _digits(p.keyword, x)
         # (A, B): exactly two ends; a fractional end goes to C as written, which
         # refuses it ("'1.5' is not an integer"), instead of being cut by int()
         if isinstance(value, (str,) + _BYTES) or not hasattr(value, "__len__") or \
@@ -326,13 +341,13 @@ def _text(p, value, most=(_INT_MAX, "")):
             v = _scalar(x)
             if v is None or isinstance(v, bool):
                 raise TypeError(f"{p.keyword}: a range end must be a number, got {_show(x)}")
-            ends.append(str(v) if isinstance(v, int) else repr(v))
+            ends.append(_digits(p.keyword, v) if isinstance(v, int) else repr(v))
         return ":".join(ends)
     x = _scalar(value)
     if isinstance(x, bool):
         raise TypeError(f"{p.keyword}: expected a number, got {_show(value)}")
     if isinstance(x, int):
-        return str(x)
+        return _digits(p.keyword, x)
     if isinstance(x, float):
         return repr(x)
     raise TypeError(f"{p.keyword}: cannot use a {_kind(value)}")

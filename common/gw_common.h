@@ -315,6 +315,10 @@ int gw_input_check(const char *path, const char *what, gw_err *err);
  * system cannot tell. The read offset of fd is left as it was. A text input
  * with a hole is binary: its readers refuse it before reading up to it. */
 int gw_input_hole(int fd, unsigned long long *at);
+/* gw_input_hole, and with bytes not NULL the holes' bytes in all in *bytes
+ * (0 without a hole): an HDF5 file may hold holes of its own right (a sample
+ * copied with cp --sparse=always or rsync -S keeps its zero runs as holes) */
+int gw_input_holes(int fd, unsigned long long *at, unsigned long long *bytes);
 /* Read the whole text file, at most max bytes, into a new NUL-terminated buffer
  * (caller frees; *len without the NUL; len may be NULL). A file with a hole
  * (gw_input_hole) is refused (GW_EINVAL) before it is read: a sweep table

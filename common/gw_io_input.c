@@ -126,19 +126,41 @@ int gw_input_read(const char *path, const char *what, size_t max, char **out, si
 
 int gw_input_hole(int fd, unsigned long long *at)
 {
+    return gw_input_holes(fd, at, NULL);
+}
+
+int gw_input_holes(int fd, unsigned long long *at, unsigned long long *bytes)
+{
+    if (bytes)
+        *bytes = 0;
 #ifdef SEEK_HOLE
     struct stat st;
     if (fd < 0 || fstat(fd, &st) != 0 || !S_ISREG(st.st_mode) || st.st_size <= 0)
         return 0;
     const off_t was = lseek(fd, 0, SEEK_CUR);
-    const off_t hole = was >= 0 ? lseek(fd, 0, SEEK_HOLE) : -1;
-    if (was >= 0)
-        lseek(fd, was, SEEK_SET);
-    if (hole < 0 || hole >= st.st_size)
+    if (was < 0)
         return 0;
-    if (at)
-        *at = (unsigned long long)hole;
-    return 1;
+    /* hole after data after hole: one extent a turn, at most the file's
+     * blocks (a million turns for 4 GiB of 4 KiB blocks, well under a second) */
+    off_t pos = 0;
+    int found = 0;
+    while (pos < st.st_size) {
+        const off_t hole = lseek(fd, pos, SEEK_HOLE);
+        if (hole < 0 || hole >= st.st_size)
+            break;
+        if (!found && at)
+            *at = (unsigned long long)hole;
+        found = 1;
+        if (!bytes)
+            break;
+        off_t data = lseek(fd, hole, SEEK_DATA);
+        if (data < 0 || data > st.st_size) /* ENXIO: a hole to the end */
+            data = st.st_size;
+        *bytes += (unsigned long long)(data - hole);
+        pos = data;
+    }
+    lseek(fd, was, SEEK_SET);
+    return found;
 #else
     (void)fd, (void)at;
     return 0;

@@ -708,17 +708,28 @@ static int h5_signature_at(FILE *fp, const unsigned char pre[8], int *sb)
     return fseek(fp, 8, SEEK_SET) == 0 && found;
 }
 
-/* A sample file's first hole (SEEK_HOLE: bytes never written, a sparse
- * file's, read as NUL bytes) before its end: GW_EFORMAT naming the file, its
- * size and the hole's first byte, what ending the message ("not a text
- * sample"); GW_OK without one (or where the system cannot tell). The read
- * offset of fd is left as it was. */
-static int hole_check(int fd, const char *path, const char *what, gw_err *err)
+/* A sample file's holes (SEEK_HOLE: bytes never written, a sparse file's,
+ * read as NUL bytes): GW_EFORMAT naming the file, its size and the first
+ * hole's first byte, what ending the message ("not a text sample"); GW_OK
+ * without one (or where the system cannot tell). A text sample holds no NUL
+ * byte, so any hole refuses it; an HDF5 sample may hold zero runs as holes
+ * (a sample granwave wrote, copied by cp --sparse=always, was refused for
+ * its last 16 bytes), so only holes over half its bytes and over
+ * LAYER_SAMPLE_HOLE_MIN refuse one: 4 GiB of sparse zeros after a superblock.
+ * The read offset of fd is left as it was. */
+#define LAYER_SAMPLE_HOLE_MIN (1ULL << 20)
+static int hole_check(int fd, const char *path, int h5, const char *what, gw_err *err)
 {
     struct stat st;
-    unsigned long long hole = 0;
-    if (fstat(fd, &st) != 0 || !gw_input_hole(fd, &hole))
+    unsigned long long hole = 0, bytes = 0;
+    if (fstat(fd, &st) != 0 || !gw_input_holes(fd, &hole, h5 ? &bytes : NULL))
         return GW_OK;
+    if (h5 && !(bytes > LAYER_SAMPLE_HOLE_MIN && bytes > (unsigned long long)st.st_size / 2))
+        return GW_OK;
+    if (h5)
+        return gw_err_set(err, GW_EFORMAT, "sample '%s': %llu bytes, %llu of them holes (never written, read as "
+                          "NUL bytes: a sparse file) from byte %llu on: %s", path, (unsigned long long)st.st_size,
+                          bytes, hole + 1, what);
     return gw_err_set(err, GW_EFORMAT, "sample '%s': %llu bytes, and its bytes from %llu on are a hole (never "
                       "written, read as NUL bytes: a sparse file): %s", path, (unsigned long long)st.st_size,
                       hole + 1, what);
@@ -746,10 +757,10 @@ static int sample_open(const char *path, FILE **fp, unsigned char pre[8], size_t
     }
     *npre = fread(pre, 1, 8, *fp);
     *h5 = *npre == 8 && h5_signature_at(*fp, pre, sb);
-    /* an HDF5 sample with a hole: 4 GiB of sparse zeros after a superblock
+    /* an HDF5 sample mostly holes: 4 GiB of sparse zeros after a superblock
      * were hashed whole twice (a minute, three times by a sweep) before the
      * library refused the file (a text sample's holes: text_zeros_check) */
-    rc = *h5 ? hole_check(fileno(*fp), path, "not a sample granwave wrote", err) : GW_OK;
+    rc = *h5 ? hole_check(fileno(*fp), path, 1, "not a sample granwave wrote", err) : GW_OK;
     if (rc != GW_OK) {
         fclose(*fp);
         *fp = NULL;
@@ -771,7 +782,7 @@ static int text_zeros_check(int fd, const char *path, gw_err *err)
     if (fstat(fd, &st) != 0 || !S_ISREG(st.st_mode) || st.st_size <= 0)
         return GW_OK;
     const unsigned long long size = (unsigned long long)st.st_size;
-    const int rc = hole_check(fd, path, "not a text sample", err);
+    const int rc = hole_check(fd, path, 0, "not a text sample", err);
     if (rc != GW_OK)
         return rc;
     unsigned char tail[ZEROS_TAIL];

@@ -143,7 +143,8 @@ static void part_h5_hole(const char *dir)
     gw_sweep_config cfg;
     gw_err e = {{0}};
     const int rc = gw_sweep_config_read(ini, layer, 1, &cfg, &m, &e);
-    GW_TEST_OK(rc == GW_EINVAL && strstr(e.msg, s) && strstr(e.msg, "4294967296 bytes") && strstr(e.msg, "a hole"),
+    GW_TEST_OK(rc == GW_EINVAL && strstr(e.msg, s) && strstr(e.msg, "4294967296 bytes") &&
+                   strstr(e.msg, "of them holes"),
                "gw_sweep_config_read: the sample's hole named before it is hashed (%d: %s)", rc,
                rc == GW_OK ? "taken" : e.msg);
     if (rc == GW_OK)

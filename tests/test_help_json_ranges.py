@@ -22,6 +22,7 @@ max, an open end the parser takes) and fails if any goes unnoticed. Exit 0 when 
 import json
 import os
 import re
+import shutil
 import subprocess
 import sys
 import tempfile
@@ -88,7 +89,6 @@ def runner(program, work):
         for f in os.listdir(work):
             p2 = os.path.join(work, f)
             if os.path.isdir(p2):
-                import shutil
                 shutil.rmtree(p2)
             else:
                 os.remove(p2)

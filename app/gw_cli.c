@@ -280,6 +280,33 @@ static cJSON *help_unit(const char *help, const char *at)
     return cJSON_CreateString(buf);
 }
 
+/* The range the parser checks, in its refusal's notation ("(0, 1e+06]",
+ * "[1e-09, 0.01] (or 0)", "(0, inf)"), for a number option whose help line
+ * prints none; NULL when the option is no number or has no bound. */
+static cJSON *parser_range(const gw_opt *o)
+{
+    if (!o || (o->kind != GW_OPT_DOUBLE && o->kind != GW_OPT_LONG) || (!isfinite(o->lo) && !isfinite(o->hi)))
+        return NULL;
+    char ls[32], hs[32], buf[96]; /* an integer's ends in full, as its refusal prints them */
+    const int whole = o->kind == GW_OPT_LONG;
+    if (!isfinite(o->lo))
+        gw_snprintf(ls, sizeof ls, "-inf");
+    else if (whole)
+        gw_snprintf(ls, sizeof ls, "%.0f", o->lo);
+    else
+        gw_num_bound(ls, sizeof ls, o->lo, 0);
+    if (!isfinite(o->hi))
+        gw_snprintf(hs, sizeof hs, "inf");
+    else if (whole)
+        gw_snprintf(hs, sizeof hs, "%.0f", o->hi);
+    else
+        gw_num_bound(hs, sizeof hs, o->hi, 1);
+    const int or_zero = o->param && o->param->or_zero;
+    gw_snprintf(buf, sizeof buf, "%s%s, %s%s%s", o->open_lo || !isfinite(o->lo) ? "(" : "[", ls, hs,
+                o->open_hi || !isfinite(o->hi) ? ")" : "]", or_zero ? " (or 0)" : "");
+    return cJSON_CreateString(buf);
+}
+
 static const char *opt_kind_name(const gw_opt *o)
 {
     if (o->kind == GW_OPT_STRING && o->param && o->param->type == GW_PARAM_CHOICE)
@@ -316,6 +343,8 @@ static cJSON *opt_json(const char *name, const char *help, const gw_opt *o)
     cJSON_AddItemToObject(j, "kind", cJSON_CreateString(o ? opt_kind_name(o) : "flag"));
     cJSON *unit = p && p->unit && *p->unit ? cJSON_CreateString(p->unit) : help_unit(help, at);
     cJSON_AddItemToObject(j, "unit", unit ? unit : cJSON_CreateNull());
+    if (!range)
+        range = parser_range(o);
     cJSON_AddItemToObject(j, "range", range ? range : cJSON_CreateNull());
     const int num = o && (o->kind == GW_OPT_DOUBLE || o->kind == GW_OPT_LONG);
     cJSON_AddItemToObject(j, "min", num ? num_or_null(o->lo) : cJSON_CreateNull());

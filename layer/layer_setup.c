@@ -59,7 +59,7 @@ static const gw_param impact_params[] = {
     CHOICE("solver", solver, "verlet,rk4,cvode,arkode", NULL, "NAME",
            "verlet (explicit DEM, no located events), rk4, cvode or arkode [verlet; rk4 with exact]"),
     CHOICE("method", method, "default,bdf,adams,erk,dirk,imex", "default", "NAME",
-           "cvode: bdf|adams; arkode: erk|dirk [default]"),
+           "cvode: bdf|adams; arkode: erk|dirk [adams / erk]"),
     ROW("dt", GW_PARAM_DOUBLE, dt, "s", 0, 1, 0, 0, "0", "DT",
         "fixed step of verlet or rk4, s [0 = auto: verlet the shortest binary contact time / 100, rk4 1e-6]"),
     FLAG("exact", exact, "exact mode: RK4 (or solver cvode|arkode) stopping at every contact and stick/slip "

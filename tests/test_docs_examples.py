@@ -12,9 +12,19 @@ A new user copies the documentation's commands. Over README.md and docs/*.md:
      checked by 1 (wavespeed, softwall, the 300-disc pluviation, --full impacts,
      sweeps and their statistics: minutes);
   3. every `$ granwave ...` example of a ```text block (docs/reliability.md) prints
-     on stderr exactly the line the page shows under it, and exits 2.
-First it checks itself on a made-up page with a removed flag, a failing command
-and a wrong message, and fails if any goes unnoticed. Exit 0 when all hold, 1
+     on stderr exactly the line the page shows under it, and exits 2;
+  4. every default or range the prose of README.md and the user's pages (cli.md,
+     layer.md, column.md, drop.md, sheets.md, crowns.md, outcomes.md, formats.md,
+     library.md) quotes for a flag is the one `granwave CMD --help --json` gives
+     (`default`, `range`) for a command that has the flag (those the paragraph names
+     in backticks, when it names any). The forms read: "`--flag` (UNIT, VALUE)",
+     "`--flag` (VALUE)", "`--flag` (default VALUE ...", "`--flag` defaults to VALUE",
+     "`--flag` ... (default VALUE", "the default `--flag` is VALUE", "`--flag VALUE`
+     (the default" / "(default", "`--flag` ... must be in RANGE"; a VALUE of numbers
+     with a unit (us, ms, s, ...) is compared as a number, a formula (T_c/400) as
+     text inside the help's default.
+First it checks itself on a made-up page with a removed flag, a failing command,
+a wrong message, a wrong default and a wrong range, and fails if any goes unnoticed. Exit 0 when all hold, 1
 otherwise (each fault printed as file:line: message), 2 on bad usage.
 """
 import json
@@ -143,6 +153,105 @@ class Checker:
         return self.faults
 
 
+# 4. the defaults and ranges the prose quotes, against `--help --json`
+CLAIM_PAGES = ["README.md"] + ["docs/" + f for f in (
+    "cli.md", "layer.md", "column.md", "drop.md", "sheets.md", "crowns.md", "outcomes.md",
+    "formats.md", "library.md")]
+UNITS = {"ns": 1e-9, "us": 1e-6, "ms": 1e-3}
+NUM = r"-?\d[\d.]*(?:e[-+]?\d+)?"
+VALUE = NUM + r"(?: ?(?:ns|us|ms|m/s\^2|m/s|kg/m\^3|s|m|deg|Pa|N)\b)?"
+FLAG = r"`--([a-z][\w-]*)`"
+CLAIM_FORMS = [  # (regex, group of the flag, group of the value, kind)
+    (re.compile(FLAG + r"\s\((?:[\w/^.]+, )?(" + VALUE + r")[);]"), "default"),
+    (re.compile(FLAG + r"(?:[^`.;]|\.\d){0,60}?\((?:[^()`;]{0,30}?,\s)?default\s(" + VALUE + r"|[\w/]+)[\s,;)]"), "default"),
+    (re.compile(FLAG + r"\sdefaults to (" + VALUE + r")"), "default"),
+    (re.compile(r"[Dd]efault\s" + FLAG + r"\sis\s(" + VALUE + r"|[\w/]+)"), "default"),
+    (re.compile(r"`--([a-z][\w-]*) ([\w.-]+)`\s+\((?:the )?default\b"), "default"),
+    (re.compile(FLAG + r"(?:[^`.;]|\.\d){0,60}?must be in ([\[(][^\])]*[\])])"), "range"),
+]
+# the commands a page is about, besides those a paragraph names
+PAGE_COMMANDS = {"docs/drop.md": {"drop"}, "docs/outcomes.md": {"layer-impact"},
+                 "docs/crowns.md": {"layer-impact"},
+                 "docs/layer.md": {"layer-make", "layer-impact", "layer-stats"},
+                 "docs/column.md": {"chain", "falcon", "wavespeed", "softwall", "dispersion"},
+                 "docs/sheets.md": {"chain", "drop", "softwall"}}
+COMMAND_NAME = re.compile(r"`(?:granwave )?([a-z][a-z-]+)(?: [^`]*)?`")
+
+
+def as_number(text):
+    """A value with its unit as a number in SI (20 us -> 2e-5), else None."""
+    m = re.fullmatch(r"(" + NUM + r") ?([a-zA-Z/^\d]*)", text.strip())
+    if not m:
+        return None
+    try:
+        v = float(m.group(1))
+    except ValueError:
+        return None
+    return v * UNITS.get(m.group(2), 1.0)
+
+
+def default_holds(claim, default):
+    if default is None:
+        return False
+    d = default[4:] if default.startswith("0 = ") else default
+    c = as_number(claim)
+    if c is not None:
+        head = re.match(NUM, d.replace(" ", ""))
+        return head is not None and as_number(head.group(0)) is not None and \
+            abs(as_number(head.group(0)) - c) <= 1e-9 * abs(c)
+    return claim in d.split(" / ") or claim in re.split(r"[ ;,]+", d)
+
+
+def range_holds(claim, rng):
+    return rng is not None and claim.replace(" ", "") == rng.replace(" ", "")
+
+
+def help_tables(program):
+    """{command: {flag: option object}} from `granwave CMD --help --json`."""
+    p = subprocess.run([program, "--help", "--json"], capture_output=True, text=True, timeout=60)
+    out = {}
+    for c in json.loads(p.stdout)["commands"]:
+        q = subprocess.run([program, c["name"], "--help", "--json"], capture_output=True, text=True, timeout=60)
+        if q.returncode == 0:
+            out[c["name"]] = {o["name"]: o for o in json.loads(q.stdout)["options"]}
+    return out
+
+
+def prose_claims(rel, text):
+    """(where, flag, kind, value, paragraph) of each default or range a page quotes,
+    outside code blocks."""
+    text = re.sub(r"^```.*?^```", lambda m: "\n" * m.group(0).count("\n"), text, flags=re.S | re.M)
+    out = []
+    for rx, kind in CLAIM_FORMS:
+        for m in rx.finditer(text):
+            a = text.rfind("\n\n", 0, m.start())
+            b = text.find("\n\n", m.end())
+            para = text[a + 1:b if b >= 0 else len(text)]
+            out.append((f"{rel}:{text.count(chr(10), 0, m.start()) + 1}", m.group(1), kind,
+                        m.group(2), para))
+    return out
+
+
+def check_claims(claims, tables):
+    faults = []
+    for where, flag, kind, value, para in claims:
+        having = {c: t[flag] for c, t in tables.items() if flag in t}
+        if not having:
+            continue  # a flag of no command (or of sweep's keys): check 1's business
+        page = PAGE_COMMANDS.get(where.split(":")[0], set())
+        named = {c for c in set(COMMAND_NAME.findall(para)) | page if c in having}
+        cands = {c: having[c] for c in named} or having
+        if kind == "default":
+            ok = any(default_holds(value, o["default"]) for o in cands.values())
+            got = "; ".join(f"{c}: {o['default']!r}" for c, o in sorted(cands.items()))
+        else:
+            ok = any(range_holds(value, o["range"]) for o in cands.values())
+            got = "; ".join(f"{c}: {o['range']!r}" for c, o in sorted(cands.items()))
+        if not ok:
+            faults.append(f"{where}: the page quotes --{flag}'s {kind} as {value!r}; --help --json says {got}")
+    return faults
+
+
 def self_test(program):
     page = ("```sh\n"
             "build/granwave chain --n 3 --no-such-flag 1\n"
@@ -156,6 +265,19 @@ def self_test(program):
                   ("self", 11, "text", "granwave chain --n: not what it says")]
         faults = Checker(program, d).check(lines)
     want = ["'--no-such-flag' is not in", "exit 2", "not_written.csv", "the page says"]
+    # 4: a default and a range that drifted, a choice's default, and claims that hold
+    page = ("For `drop`: `--gravity` defaults to 9.8 m/s^2 and must be in [1e-3, 1e5].\n"
+            "`--solver rk4` (the default) and `--t-max` (default 10 ms).\n\n"
+            "`--friction` (deg, 30), `--dt-out` (20 us).\n")
+    tables = help_tables(program)
+    claims = prose_claims("self.md", page)
+    faults += check_claims(claims, tables)
+    want += ["--gravity's default as '9.8 m/s^2'", "--gravity's range as '[1e-3, 1e5]'",
+             "--solver's default as 'rk4'"]
+    if len(claims) != 6 or sum("the page quotes" in f for f in faults) != 3:
+        print(f"self-test: {len(claims)} claims read of 6, "
+              f"{sum('the page quotes' in f for f in faults)} faults of 3:\n" + "\n".join(faults))
+        return False
     missed = [w for w in want if not any(w in f for f in faults)]
     if missed:
         print("self-test: faults not noticed: " + ", ".join(missed) + "\n" + "\n".join(faults))
@@ -174,10 +296,14 @@ def main():
     with tempfile.TemporaryDirectory() as d:
         c = Checker(program, d)
         faults = c.check(lines)
+    claims = []
+    for rel in CLAIM_PAGES:
+        claims += prose_claims(rel, open(os.path.join(srcdir, rel), encoding="utf-8").read())
+    faults += check_claims(claims, help_tables(program))
     ncmd = sum(1 for _, _, k, l in lines if l.strip().startswith(("build/granwave ", "$ granwave ")))
     for f in faults:
         print(f)
-    print(f"{ncmd} documented commands, {len(faults)} fault(s)")
+    print(f"{ncmd} documented commands, {len(claims)} quoted defaults and ranges, {len(faults)} fault(s)")
     return 1 if faults else 0
 
 

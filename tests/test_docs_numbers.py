@@ -661,6 +661,11 @@ HELP_DEFAULTS = [
     ("falcon", "--dt-out", "[0 = tau_1/10 of the fastest impact by --accuracy,", FALCON,
      lambda j: None if _rel(j["settings"]["solver"]["dt_out"], min(v["tau_1_theory"] for v in j["velocities"]) / 10)
      else f"dt_out {j['settings']['solver']['dt_out']!r}"),
+    # the layer's method: its help said "[default]", which names none; cvode runs adams there
+    ("layer-impact", "--method", "[adams / erk]", VERDICT300 + ["--solver", "cvode"],
+     lambda j: None if j["settings"]["solver"]["method"] == "adams" else f"method {j['settings']['solver']['method']}"),
+    ("layer-impact", "--method", "[adams / erk]", VERDICT300 + ["--solver", "arkode"],
+     lambda j: None if j["settings"]["solver"]["method"] == "erk" else f"method {j['settings']['solver']['method']}"),
     ("drop", "--peak-threshold", "[1 % of F_max(1) (F.13) at v_imp;", ["drop", "--n", "3", "--json"],
      lambda j: None if _rel(j["peak_threshold"], 0.01 * j["first_collision"]["closed_forms"]["f_max_1"])
      else f"peak_threshold {j['peak_threshold']!r}"),

@@ -240,7 +240,7 @@ int gw_chain_dispersion_warnings(const gw_chain_disp_result *r, char **list)
     if (r->n_resolved == 0) /* the ridge error is NaN (JSON null): say why */
         return gw_warnings_add(list, "no wavenumber resolved: the spectrum shows no ridge (an --f0 so small that it "
                                      "underflows, a --dt-out too fine for --t-samples, or a --min-bins near "
-                                     "t-samples/2)");
+                                     "half of --t-samples)");
     if (!isnan(r->c0_measured))
         return GW_OK;
     /* c0_measured (and c0_rel_err) NaN, JSON null, said nowhere: the

@@ -292,6 +292,19 @@ static void ws_power_fit(const gw_chain_wavespeed_outcome *o, const double *val,
     power_fit(buf, buf + o->nv, *m, scale, f);
 }
 
+/* The largest relative difference of tq, front and group/sqrt(3/2) at speed
+ * iv; NaN where one of them is undecided (held columns). */
+static double ws_disagreement(const gw_chain_wavespeed_outcome *o, int iv)
+{
+    double s3[3] = {o->v_tq[iv], o->v_front[iv], o->v_group_front[iv]}, d = 0;
+    if (!(isfinite(s3[0]) && isfinite(s3[1]) && isfinite(s3[2])))
+        return NAN;
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++)
+            d = fmax(d, fabs(s3[i] - s3[j]) / s3[j]);
+    return d;
+}
+
 /* The fits over v_imp; *undecided: those that the held columns left without
  * two decided speeds (nv >= 2). GW_ENOMEM. */
 static int ws_fits(const gw_chain_params *p, gw_chain_wavespeed_outcome *o, int *undecided)
@@ -328,13 +341,11 @@ static int ws_fits(const gw_chain_params *p, gw_chain_wavespeed_outcome *o, int 
     for (int iv = 0; iv < nv; iv++) {
         if (!ws_skip(o, o->period, iv))
             o->c2 += o->period[iv] * pow(v[iv], 0.2) / pow(p->mass / p->k, 0.4) / n2;
-        double s3[3] = {o->v_tq[iv], o->v_front[iv], o->v_group_front[iv]};
-        if (!(isfinite(s3[0]) && isfinite(s3[1]) && isfinite(s3[2])))
+        const double d = ws_disagreement(o, iv);
+        if (isnan(d))
             continue; /* an estimator undecided at this speed (held columns) */
         n3++;
-        for (int i = 0; i < 3; i++)
-            for (int j = 0; j < 3; j++)
-                o->max_disagreement = fmax(o->max_disagreement, fabs(s3[i] - s3[j]) / s3[j]);
+        o->max_disagreement = fmax(o->max_disagreement, d);
     }
     if (n2 == 0)
         o->c2 = NAN;
@@ -354,13 +365,8 @@ static chain_ws_cause ws_cause(const gw_chain_params *p, const gw_chain_result *
     chain_ws_cause c = {.iv = -1, .plateau = -1, .f_lo = NAN, .f_hi = NAN, .tq_scatter = NAN};
     double worst = -1;
     for (int iv = 0; iv < o->nv; iv++) {
-        double s3[3] = {o->v_tq[iv], o->v_front[iv], o->v_group_front[iv]}, d = 0;
-        if (!(isfinite(s3[0]) && isfinite(s3[1]) && isfinite(s3[2])))
-            continue;
-        for (int i = 0; i < 3; i++)
-            for (int j = 0; j < 3; j++)
-                d = fmax(d, fabs(s3[i] - s3[j]) / s3[j]);
-        if (d > worst) {
+        const double d = ws_disagreement(o, iv);
+        if (d > worst) { /* NaN: undecided, never the worst */
             worst = d;
             c.iv = iv;
         }

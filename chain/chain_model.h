@@ -176,6 +176,29 @@ static inline int chain_result_held(const gw_chain_result *r)
  * Their unfinished count includes them: the studies' "raise --t-max" warning
  * counts the others only. */
 int chain_held_warnings(int held, int total, const char *left_out, const char *undecided, char **list);
+/* The first size of the F_max plateau of the columns r[0..n_hi-n_lo] (sizes
+ * n_lo..n_hi), by the soft-wall study's rule (N_d, or the first size run when
+ * the plateau reaches back to it); -1 when F_max is not on a plateau by n_hi
+ * or held columns leave it undecided. */
+int chain_plateau_first(const gw_chain_result *r, int n_lo, int n_hi, double tol);
+/* Why the wave-speed estimators may disagree, at the speed where they
+ * disagree most (chain_wave_study.c fills it, chain_wavespeed_warnings words
+ * it): iv that speed (-1: none decided); soft 1 when the wall is softer than
+ * K_c and columns lie below the F_max plateau (plateau its first size, -1 not
+ * reached by n_hi; f_lo, f_hi F_max of the shortest and longest column;
+ * n_d_min the F.8 bound ceil(tau_max(n_hi)/T_q) at the analytic T_q);
+ * tq_scatter the rms residual of tau_N about its line over T_q. */
+struct gw_chain_wavespeed_outcome;
+typedef struct chain_ws_cause {
+    int iv, soft, plateau, n_d_min;
+    double f_lo, f_hi, k_c, tq_scatter;
+} chain_ws_cause;
+/* The wave-speed study's own warnings, appended to *list: the period null at
+ * speeds whose columns were not held (none of 10 beads or more, or none with
+ * two wall-force maxima), and estimators disagreeing beyond what a rigid wall
+ * shows, naming the cause c where known. GW_OK or GW_ENOMEM. */
+int chain_wavespeed_warnings(const struct gw_chain_wavespeed_outcome *o, const gw_chain_params *p, const chain_ws_cause *c,
+                             char **list);
 /* gw_chain_drop_result_warnings with the drop's column p (NULL: not named):
  * a bead 1 at rest on the sensor at t_max (the column's kinetic energy below
  * a millionth of e0, bead 1 stopped as chain_bead_stopped has it) is held

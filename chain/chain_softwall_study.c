@@ -202,6 +202,12 @@ static sw_result analyse(const gw_chain_result *r, int n_lo, int n_hi, double to
     return s;
 }
 
+int chain_plateau_first(const gw_chain_result *r, int n_lo, int n_hi, double tol)
+{
+    sw_result s = analyse(r, n_lo, n_hi, tol, NAN);
+    return s.n_d > 0 ? s.n_d : s.at_most > 0 ? s.at_most : -1;
+}
+
 /* Rigid-wall T_q of the beads at v: slope of tau_N over N = 1..20, over the
  * columns not held by gravity (*held of the 20; NaN with fewer than two). */
 static gw_chain_params rigid_params(const gw_chain_resolved *rs)

@@ -240,7 +240,7 @@ int gw_chain_dispersion_warnings(const gw_chain_disp_result *r, char **list)
     if (r->n_resolved == 0) /* the ridge error is NaN (JSON null): say why */
         return gw_warnings_add(list, "no wavenumber resolved: the spectrum shows no ridge (an --f0 so small that it "
                                      "underflows, a --dt-out too fine for --t-samples, or a --min-bins near "
-                                     "t-samples/2)");
+                                     "half of --t-samples)");
     if (!isnan(r->c0_measured))
         return GW_OK;
     /* c0_measured (and c0_rel_err) NaN, JSON null, said nowhere: the
@@ -305,4 +305,79 @@ int chain_drop_warnings(const gw_chain_drop_result *r, const gw_chain_params *p,
                            r->first_cut && r->open_at_t_max ? "; " : "",
                            r->open_at_t_max ? "bead 1 was still on the sensor (the last impact's t_end and v_out are "
                                               "NaN, its peaks those so far)" : "");
+}
+
+/* Of a steel column on a steel wall (the default), max_disagreement measured
+ * over --vimp 0.01 to 5 (the same at every speed: Hertz scaling): N = 3..8
+ * 0.006, 5..12 0.014, 8..12 0.009, 5..20 0.034, 5..40 0.098, 20..60 0.108,
+ * 5..80 0.112, 100..120 0.115 (4R/T_q drifting down in long columns,
+ * physics.md 1.3); kk restitution 0.9 0.031 and 0.3 0.110, hc 0.5 0.170
+ * (N = 5..20). Twice the long columns' drift: beyond it the estimators
+ * measure different things (a soft wall's columns below N_d 0.64, a wall
+ * stiffer than the bead contacts over N = 8..12 0.29, hc 0.2 0.43). */
+#define WS_DISAGREE_MAX 0.2
+/* rms residual of tau_N about its line, over T_q: steel on steel 0.03 over
+ * N = 8..12 and 5..20, 0.19 over 5..40 (its curvature); on a rigid wall
+ * (the --wall-material rigid steel column) 0.88 over 8..12, 0.73 over
+ * 5..20: tau_N jumps by about T_q from size to size */
+#define WS_TQ_SCATTER_MAX 0.5
+
+int chain_wavespeed_warnings(const gw_chain_wavespeed_outcome *o, const gw_chain_params *p, const chain_ws_cause *c,
+                             char **list)
+{
+    if (!o)
+        return GW_OK;
+    /* period null (and c2, beta_period with it) at speeds whose columns were
+     * not held (the held columns' warning names those): said by the text
+     * only, the JSON and Python had null and no reason */
+    char list_v[128] = "";
+    int n_list = 0;
+    for (int iv = 0; iv < o->nv; iv++) {
+        if (!isnan(o->period[iv]))
+            continue;
+        int held = 0;
+        for (int j = 0; j < o->nn; j++)
+            held |= o->held[iv * o->nn + j];
+        if (!held)
+            chain_list_speed(list_v, sizeof list_v, &n_list, o->v_imp[iv]);
+    }
+    int rc = GW_OK;
+    if (n_list && o->n_max < 10)
+        rc = gw_warnings_add(list, "the wall-force period is not measured (period, c2 and beta_period null): it is "
+                             "read on columns of 10 beads or more, and the longest here has %d; give --n up to 10 "
+                             "or more", o->n_max);
+    else if (n_list)
+        rc = gw_warnings_add(list, "the wall-force period is not measured at v_imp = %s m/s (period null, and c2 "
+                             "and beta_period with it): no column of %d to %d beads showed two wall-force maxima",
+                             list_v, o->n_min > 10 ? o->n_min : 10, o->n_max);
+    if (rc != GW_OK || !c || c->iv < 0 || !(o->max_disagreement > WS_DISAGREE_MAX))
+        return rc;
+    const int iv = c->iv;
+    char why[400];
+    if (c->soft && c->plateau < 0)
+        gw_snprintf(why, sizeof why, "the wall is soft (K = %.3g N/m^1.5, below K_c = %.3g) and every column is "
+                    "below its saturation number N_d: F_max still grows, %.4g N at N = %d to %.4g N at N = %d, so "
+                    "tau_N measures the wall more than the wave; by F.8, N_d >= %d beads (tau_max(%d)/T_q), run "
+                    "the fit over columns from N_d (granwave softwall locates it)",
+                    p->kwall, c->k_c, c->f_lo, o->n_min, c->f_hi, o->n_max, c->n_d_min, o->n_max);
+    else if (c->soft)
+        gw_snprintf(why, sizeof why, "the wall is soft (K = %.3g N/m^1.5, below K_c = %.3g) and the columns "
+                    "N = %d..%d lie below its saturation number N_d = %d, where F_max is still growing: tau_N "
+                    "measures the wall more than the wave there; give --n from %d", p->kwall, c->k_c, o->n_min,
+                    c->plateau - 1, c->plateau, c->plateau);
+    else if (c->tq_scatter > WS_TQ_SCATTER_MAX)
+        gw_snprintf(why, sizeof why, "tau_N is not a line over N = %d..%d (its rms residual is %.2g T_q: the last "
+                    "contact opens at times that jump from size to size, as on a wall much stiffer than the bead "
+                    "contacts, K/k = %.3g), so 4R/T_q is that scatter's; fit over more sizes",
+                    o->n_min, o->n_max, c->tq_scatter, p->kwall / p->k);
+    else if (p->damping == GW_DAMP_KUWABARA_KONO || p->damping == GW_DAMP_HUNT_CROSSLEY)
+        gw_snprintf(why, sizeof why, "the contact damping (damping %s) weakens the front along the column, and "
+                    "each estimator reads it at another place", p->damping == GW_DAMP_KUWABARA_KONO ? "kk" : "hc");
+    else
+        gw_snprintf(why, sizeof why, "the cause is not one the study recognises (not a soft wall's columns below "
+                    "N_d, nor a scattered tau_N)");
+    return gw_warnings_add(list, "the front-speed estimators disagree by %.3g (max_disagreement; at v_imp = %g m/s "
+                           "4R/T_q %.4g, front %.4g, group/sqrt(3/2) %.4g m/s), beyond %.2g (twice the 0.115 of a "
+                           "steel column on a steel wall up to N = 120): %s", o->max_disagreement, o->v_imp[iv], o->v_tq[iv],
+                           o->v_front[iv], o->v_group_front[iv], WS_DISAGREE_MAX, why);
 }

@@ -292,6 +292,19 @@ static void ws_power_fit(const gw_chain_wavespeed_outcome *o, const double *val,
     power_fit(buf, buf + o->nv, *m, scale, f);
 }
 
+/* The largest relative difference of tq, front and group/sqrt(3/2) at speed
+ * iv; NaN where one of them is undecided (held columns). */
+static double ws_disagreement(const gw_chain_wavespeed_outcome *o, int iv)
+{
+    double s3[3] = {o->v_tq[iv], o->v_front[iv], o->v_group_front[iv]}, d = 0;
+    if (!(isfinite(s3[0]) && isfinite(s3[1]) && isfinite(s3[2])))
+        return NAN;
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++)
+            d = fmax(d, fabs(s3[i] - s3[j]) / s3[j]);
+    return d;
+}
+
 /* The fits over v_imp; *undecided: those that the held columns left without
  * two decided speeds (nv >= 2). GW_ENOMEM. */
 static int ws_fits(const gw_chain_params *p, gw_chain_wavespeed_outcome *o, int *undecided)
@@ -328,13 +341,11 @@ static int ws_fits(const gw_chain_params *p, gw_chain_wavespeed_outcome *o, int 
     for (int iv = 0; iv < nv; iv++) {
         if (!ws_skip(o, o->period, iv))
             o->c2 += o->period[iv] * pow(v[iv], 0.2) / pow(p->mass / p->k, 0.4) / n2;
-        double s3[3] = {o->v_tq[iv], o->v_front[iv], o->v_group_front[iv]};
-        if (!(isfinite(s3[0]) && isfinite(s3[1]) && isfinite(s3[2])))
+        const double d = ws_disagreement(o, iv);
+        if (isnan(d))
             continue; /* an estimator undecided at this speed (held columns) */
         n3++;
-        for (int i = 0; i < 3; i++)
-            for (int j = 0; j < 3; j++)
-                o->max_disagreement = fmax(o->max_disagreement, fabs(s3[i] - s3[j]) / s3[j]);
+        o->max_disagreement = fmax(o->max_disagreement, d);
     }
     if (n2 == 0)
         o->c2 = NAN;
@@ -345,6 +356,52 @@ static int ws_fits(const gw_chain_params *p, gw_chain_wavespeed_outcome *o, int 
 
 static int ws_run(const gw_chain_wavespeed_setup *s, gw_progress_fn progress, void *pctx, chain_watch *watch,
                   gw_chain_wavespeed_outcome *out, gw_err *err);
+
+/* What chain_wavespeed_warnings needs to name why the estimators disagree, at
+ * the speed where they disagree most (res: the tau_N sweep's columns). */
+static chain_ws_cause ws_cause(const gw_chain_params *p, const gw_chain_result *res, int a, int per_v,
+                               const gw_chain_wavespeed_outcome *o)
+{
+    chain_ws_cause c = {.iv = -1, .plateau = -1, .f_lo = NAN, .f_hi = NAN, .tq_scatter = NAN};
+    double worst = -1;
+    for (int iv = 0; iv < o->nv; iv++) {
+        const double d = ws_disagreement(o, iv);
+        if (d > worst) { /* NaN: undecided, never the worst */
+            worst = d;
+            c.iv = iv;
+        }
+    }
+    if (c.iv < 0)
+        return c;
+    const gw_chain_result *rv = res + (size_t)c.iv * per_v;
+    const int b = a + per_v - 1;
+    c.k_c = gw_chain_kc(p->k);
+    c.plateau = chain_plateau_first(rv, a, b, 0.01);
+    c.soft = p->kwall < c.k_c && (c.plateau < 0 || c.plateau > a);
+    c.f_lo = rv[0].f_max;
+    c.f_hi = rv[per_v - 1].f_max;
+    c.n_d_min = (int)ceil(rv[per_v - 1].tau_max / gw_chain_tq_theory(p->mass, p->k, o->v_imp[c.iv]) - 1e-9);
+    if (c.n_d_min <= b)
+        c.n_d_min = b + 1;
+    /* tau_N about its line (t_q, intercept through the decided columns' mean) */
+    double sx = 0, sy = 0, ss = 0;
+    int m = 0;
+    for (int j = 0; j < per_v; j++)
+        if (!chain_result_held(&rv[j])) {
+            sx += a + j;
+            sy += rv[j].tau_n;
+            m++;
+        }
+    const double tq = o->t_q[c.iv];
+    for (int j = 0; m >= 3 && j < per_v; j++)
+        if (!chain_result_held(&rv[j])) {
+            double e = rv[j].tau_n - (sy / m + tq * (a + j - sx / m));
+            ss += e * e;
+        }
+    if (m >= 3 && tq > 0)
+        c.tq_scatter = sqrt(ss / m) / tq;
+    return c;
+}
 
 int gw_chain_wavespeed_run(const gw_chain_wavespeed_setup *s, gw_progress_fn progress, void *pctx,
                            gw_chain_wavespeed_outcome *out, gw_err *err)
@@ -482,6 +539,11 @@ static int ws_run(const gw_chain_wavespeed_setup *s, gw_progress_fn progress, vo
          (rc = chain_dt_tally_warnings(&dt_tally, "--dt", "collisions", &out->warnings)) != GW_OK ||
          (rc = chain_damping_zero_warnings(&r.params, 0, 1, &out->warnings)) != GW_OK))
         rc = gw_err_set(err, rc, "wavespeed: out of memory");
+    if (rc == GW_OK) {
+        chain_ws_cause cause = ws_cause(&r.params, res, (int)a, per_v, out);
+        if ((rc = chain_wavespeed_warnings(out, &r.params, &cause, &out->warnings)) != GW_OK)
+            rc = gw_err_set(err, rc, "wavespeed: out of memory");
+    }
     for (int i = 0; i < nv * per_v; i++)
         gw_chain_result_free(&res[i]);
     free(res);

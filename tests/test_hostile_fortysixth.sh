@@ -158,7 +158,7 @@ if runs_json "dispersion --n 128 --t-samples 512 (c0 measured)" c1.json dispersi
         ko "control: c0 $(jq_py c1.json 'd["c0_measured"], d["warnings"]')"
 fi
 if runs_json "dispersion --min-bins 126" nb.json dispersion --n 64 --t-samples 256 --min-bins 126 --quiet; then
-    grep -q "no wavenumber resolved: .* or a --min-bins near t-samples/2" "$tmp/stderr" &&
+    grep -q "no wavenumber resolved: .* or a --min-bins near half of --t-samples)" "$tmp/stderr" &&
         ok "dispersion --min-bins 126: the no-ridge warning names --min-bins" || ko "no-ridge warning: $(cat "$tmp/stderr")"
 fi
 py_checks 1 <<'PYEOF'

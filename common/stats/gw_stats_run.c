@@ -361,6 +361,46 @@ static int settling_warning(gw_stats_analysis *A)
                            nw, t->nrows, qs);
 }
 
+/* A diagram's B.31 fit stopped by its box (at_bound): no free minimum, its
+ * parameters there the box's and its errors (0 where the Jacobian is flat:
+ * beta_err 0 at the edge) not a free fit's. layer-stats --delta-rm 1e6 held
+ * the offset at 5e5 R_m over crossings at H* 5 to 13 R_m: beta 0 and a/b
+ * 1e-6 on their edges, rms residual 5e5 R_m, beta_err 0, exit 0 and no
+ * warning; --gamma-deg 89 put beta on its edge (beta_err 957), --fit with
+ * tan_gamma put it at 1e-6 deg and --fit with offset the offset at 0, each
+ * said by the text's "at the edge" only. The default fit of the measured
+ * diagram is inside the box. */
+static int fit_edge_warning(const gw_stats_analysis *A, int q, char **list)
+{
+    const gw_stats_panel *D = &A->dia[q];
+    const gw_stats_b31_fit *f = &D->fit;
+    if (!D->ok || !D->fit_ok || !f->at_bound)
+        return GW_OK;
+    static const struct {
+        int bit;
+        const char *name;
+    } bits[] = {{GW_STATS_B31_OFFSET, "offset at 0"}, {GW_STATS_B31_BETA, "beta at an end of [0, the smallest R_b/R_m]"},
+                {GW_STATS_B31_AB, "a/b at an end of [1e-6, 1e6]"},
+                {GW_STATS_B31_TANG, "tan_gamma at an end of [tan 1e-6 deg, tan 89 deg]"}};
+    char edge[200] = "";
+    for (int k = 0; k < 4; k++)
+        if (f->at_bound & bits[k].bit)
+            gw_snprintf(edge + strlen(edge), sizeof edge - strlen(edge), "%s%s", *edge ? ", " : "", bits[k].name);
+    double hmax = -INFINITY;
+    for (int i = 0; i < D->d.nx; i++)
+        if (D->d.pts[i].kind == GW_STATS_BND_CROSS)
+            hmax = fmax(hmax, D->d.pts[i].h);
+    char why[200] = "";
+    if (!(A->fit_mask & GW_STATS_B31_OFFSET) && D->offset > hmax) /* B.31 lies above its offset */
+        gw_snprintf(why, sizeof why, ": the offset held at %.4g R_m (%s) lies above every boundary crossing (H* up "
+                    "to %.4g R_m), where B.31, never below its offset, cannot reach them",
+                    D->offset, isfinite(A->delta_rm) ? "delta-rm / 2" : "the measured penetration / 2", hmax);
+    return gw_warnings_add(list, "diagram %d: the B.31 fit stopped at the edge of its box (%s), not at a free "
+                           "minimum: those parameters are the box's and the fit's errors are not a free fit's "
+                           "(beta_err %.3g, a_over_b_err %.3g); rms residual %.3g R_m%s", q, edge, f->err.beta,
+                           f->err.a_over_b, f->rms, why);
+}
+
 /* The analysis's warnings, from the counts groups.csv records: points whose
  * bounce is undecided (n_points - n_valid) and bouncing points without e
  * (n_bounced - n_e: the run ended before T_f, or stopped at the verdict);
@@ -388,6 +428,8 @@ static int warnings_make(gw_stats_analysis *A)
                              cut);
     if (rc == GW_OK)
         rc = settling_warning(A);
+    for (int q = 0; rc == GW_OK && q < A->ndia; q++)
+        rc = fit_edge_warning(A, q, &A->warnings);
     /* the B.31 options act on the fits alone: given (other than their
      * defaults) on a table whose diagrams have no boundary crossing, no fit
      * can be made whatever they say, and they changed nothing (with crossings,

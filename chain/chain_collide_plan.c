@@ -44,7 +44,7 @@ int gw_chain_rk4_steps_per_tc(double rel_acc)
 
 int gw_chain_rk4_study_covers(const gw_chain_params *p, long n_max)
 {
-    if (!p)
+    if (!p || n_max < 1) /* a column of no bead (n_max -5 was covered) */
         return 0;
     int general = p->wall.layer || p->wall.yield_pressure > 0 || p->wall.loss > 0 || p->sensor.mass > 0 ||
                   p->guide.coulomb > 0 || p->guide.viscous > 0;
@@ -602,6 +602,11 @@ int gw_chain_memory_check(const gw_chain_params *p, const gw_solver_type *type, 
     const int nrc = chain_n_check(p->n, err);
     if (nrc != GW_OK)
         return nrc;
+    /* a method no backend has (-5, 11) was sized as an explicit one; one its
+     * backend lacks (cvode erk) is gw_solver_create's GW_EUNSUPPORTED */
+    if (strcmp(gw_solver_method_name(method), "unknown") == 0)
+        return gw_check_range(method, "method (GW_METHOD_DEFAULT 0 or a variant, GW_CVODE_BDF 1 to GW_ARKODE_IMEX 5)",
+                              GW_METHOD_DEFAULT, GW_ARKODE_IMEX, err);
     const double limit = GW_CHAIN_MEMORY_MAX;
     double need = memory_bytes(p, type, method);
     if (need <= limit)

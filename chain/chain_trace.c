@@ -95,11 +95,12 @@ static double ceil_2digits(double v)
 int gw_chain_trace_check(int n, double span, double dt_out, double events, gw_err *err)
 {
     /* CSV "%.12e," is 19-20 B a value (measured 19.8 on drop --n 100); HDF5 8 */
-    /* a NaN passed every bound below (span, dt_out or events NaN: GW_OK) */
-    if (n < 0 || !(isfinite(span) && span >= 0) || !(isfinite(dt_out) && dt_out > 0) ||
+    /* a NaN passed every bound below (span, dt_out or events NaN: GW_OK), and
+     * so did a trace of 0 beads (of no column) */
+    if (n < 1 || !(isfinite(span) && span >= 0) || !(isfinite(dt_out) && dt_out > 0) ||
         !(isfinite(events) && events >= 0))
         return gw_err_set(err, GW_EINVAL, "gw_chain_trace_check: n %d, span %g s, dt-out %g s, events %g: not a trace "
-                          "(n, span, events >= 0, dt-out > 0, all finite)", n, span, dt_out, events);
+                          "(n >= 1; span, events >= 0; dt-out > 0; all finite)", n, span, dt_out, events);
     const double per_value = 20.0 + (GW_HAVE_HDF5 ? 8.0 : 0.0), limit = 5e9;
     const double values = 2.0 * n + 2, rows = span / dt_out + 1 + events;
     const double files = rows * values * per_value;

@@ -396,7 +396,8 @@ int gw_chain_rk4_steps_per_tc(double rel_acc);
 /* Whether that study covers the column p run up to n_max beads: undamped, no
  * gravity, N <= 40, a Hertz wall on a rigid sensor (no sheet layer, yield or
  * loss), no guide friction. 1 or 0. The falcon study picks its solver by an
- * accuracy target only there (gw_chain_falcon_run and `granwave falcon`). */
+ * accuracy target only there (gw_chain_falcon_run and `granwave falcon`).
+ * 0 for a NULL p and an n_max below 1 (no column: -5 was covered). */
 int gw_chain_rk4_study_covers(const gw_chain_params *p, long n_max);
 /* The study's choice into run: RK4 (default method) with
  * M = gw_chain_rk4_steps_per_tc(rel_acc) steps per T_c and, unless keep_dt_out,
@@ -518,7 +519,9 @@ void gw_chain_trace_free(gw_chain_trace *tr);
  * (8 B a value in memory; written, 20 B a value as CSV and 8 B as HDF5). GW_OK
  * when its files stay within 5 GB (1.4 GB in memory, and as much again for the
  * HDF5 file's buffer while it is written); else GW_EINVAL naming
- * dt-out and a value that passes, or n when the events alone exceed it. */
+ * dt-out and a value that passes, or n when the events alone exceed it;
+ * GW_EINVAL naming every argument for n below 1 (0 passed), span or events
+ * negative, dt-out not positive, or any of them not finite. */
 int gw_chain_trace_check(int n, double span, double dt_out, double events, gw_err *err);
 
 /* The memory a run of column p needs with solver type (NULL: cvode) and method
@@ -527,7 +530,10 @@ int gw_chain_trace_check(int n, double span, double dt_out, double events, gw_er
  * GW_CHAIN_MEMORY_MAX bytes (2 GiB): GW_EINVAL "n: a column of N beads needs
  * about X GB ...: at most M beads here" otherwise. A bead count outside
  * [1, 5e7] is GW_EINVAL naming n as gw_chain_params_validate does (before
- * session 46 n = -1 passed and n = INT_MIN was told it needs 4.4e11 GB). */
+ * session 46 n = -1 passed and n = INT_MIN was told it needs 4.4e11 GB); a
+ * method outside GW_METHOD_DEFAULT .. GW_ARKODE_IMEX is GW_EINVAL naming
+ * method and that range (-5 and 11 passed); a variant the backend has not
+ * (cvode with erk) is left to gw_solver_create (GW_EUNSUPPORTED). */
 #define GW_CHAIN_MEMORY_MAX 2147483648.0
 int gw_chain_memory_check(const gw_chain_params *p, const gw_solver_type *type, int method, gw_err *err);
 /* Every bound gw_chain_collide checks before its run, in order, from p and o

@@ -505,19 +505,32 @@ typedef struct gw_layer_make_result {
  * the equivalent radius from the same grading, the aspect ratio (uniform in
  * [1, aspect_max]) and the orientation; out->body then holds the clump of each disc and
  * out->n counts discs (res->n_bodies the clumps). A disc grid more than 100
- * times as high as the box is wide is refused (GW_EINVAL) before any work. */
+ * times as high as the box is wide is refused (GW_EINVAL) before any work.
+ * *out and *res are overwritten: zeroed first, whatever the call then returns
+ * (a failure leaves them zeroed). A sample still holding the arrays of an
+ * earlier gw_layer_make or gw_layer_sample_read must be freed
+ * (gw_layer_sample_free) before it is passed as out again, else they leak:
+ * nothing in the struct says who owns its arrays (one built in memory points
+ * at its caller's), so the call never frees them. */
 int gw_layer_make(const gw_layer_params *lp, const gw_layer_make_params *mp,
                   gw_layer_sample *out, gw_layer_make_result *res, gw_err *err);
 /* The warnings of a pluviation, appended to *list (gw_warnings_add,
  * gw_common.h): one that did not settle (converged 0: t_max, s, the run's,
  * below t_judge, or at t_max E_k still above the threshold, the floor carrying
  * less than 0.5 or more than 1.5 of the pile's weight, or both, each said;
- * a ke_limit of 0 is taken as unknown: E_k named above the threshold unless
- * the floor's load is above 1.5; out, may be NULL,
+ * a ke_limit of 0 is taken as unknown: E_k (above 0) named above the
+ * threshold unless the floor's load is above 1.5; out, may be NULL,
  * the file the sample was written to, named in the text), and a height_rm
- * that took nothing away (untrimmed_top_rm > 0). Nothing else. The texts
+ * that took nothing away (untrimmed_top_rm > 0). Nothing else. An unsettled
+ * r whose E_k (with the grains in flight) lies below ke_limit (or is 0, the
+ * limit unknown) and whose floor carries 0.5 to 1.5 of the weight says just
+ * that: the run did
+ * not call it settled (it was told "E_k = 0 J still above"). The texts
  * `granwave layer-make` prints and Python issues. GW_OK or GW_ENOMEM;
- * GW_EINVAL, nothing added, for an unsettled r and a t_max not positive and
+ * GW_EINVAL, nothing added, for a result no run gives (filled by hand):
+ * converged other than 0 or 1 (-3 was taken as settled), or an unsettled r
+ * with ke_final, floor_load, t_judge or ke_limit NaN, infinite or negative or
+ * fall_energy NaN; and for an unsettled r and a t_max not positive and
  * finite. */
 int gw_layer_make_result_warnings(const gw_layer_make_result *r, double t_max, const char *out, char **list);
 

@@ -225,6 +225,9 @@ int gw_layer_make_run_progress(const gw_layer_make_setup *s, gw_progress_fn prog
             rc = gw_err_set(err, hrc, "%s: out of memory", s->out);
     }
     if (rc == GW_OK && (rc = gw_layer_make_result_warnings(&out->r, mp.t_max, s->out, &out->warnings)) != GW_OK)
-        rc = gw_err_set(err, rc, "layer-make: out of memory");
+        rc = rc == GW_ENOMEM ? gw_err_set(err, rc, "layer-make: out of memory")
+                             : gw_err_set(err, rc, "layer-make: the result (converged %d, E_k %g J, floor load %g, "
+                                          "t-max %g s) is not one a pluviation gives", out->r.converged,
+                                          out->r.ke_final, out->r.floor_load, mp.t_max);
     return rc;
 }

@@ -16,8 +16,32 @@
 #include "layer_impl.h"
 #include "gw_locale.h"
 
+/* Whether r could come from gw_layer_make: converged 0 or 1 and, for an
+ * unsettled pile, the numbers its warning states finite (or an unknown
+ * ke_limit of 0) and not negative. A result filled by hand was read as it
+ * was: converged -3 counted as settled, an E_k of NaN was "still above the
+ * threshold". (fall_energy is -1 when a run could not count the grains in
+ * flight: out of memory; any other sign is taken as it comes.) */
+static int finite_nonneg(double v)
+{
+    return v >= 0 && v < INFINITY;
+}
+
+static int make_result_plausible(const gw_layer_make_result *r)
+{
+    if (r->converged != 0 && r->converged != 1)
+        return 0;
+    return r->converged || (finite_nonneg(r->ke_final) && !isnan(r->fall_energy) && finite_nonneg(r->floor_load) &&
+                            finite_nonneg(r->ke_limit) && finite_nonneg(r->t_judge));
+}
+
 int gw_layer_make_result_warnings(const gw_layer_make_result *r, double t_max, const char *out, char **list)
 {
+    if (r && !make_result_plausible(r)) /* before any text: nothing added */
+        return GW_EINVAL;
+    /* the run's t_max, never NaN: it printed "t-max = nan s" */
+    if (r && !r->converged && !(t_max > 0 && t_max < INFINITY))
+        return GW_EINVAL;
     if (r && r->untrimmed_top_rm > 0) { /* --height-rm asked a trim that took nothing away */
         int rc = gw_warnings_add(list,
                                  "--height-rm took nothing away: the settled pile's top lies at %.4g R_m, at or "
@@ -29,8 +53,6 @@ int gw_layer_make_result_warnings(const gw_layer_make_result *r, double t_max, c
     }
     if (!r || r->converged)
         return GW_OK;
-    if (!(t_max > 0 && t_max < INFINITY)) /* the run's t_max, never NaN: it printed "t-max = nan s" */
-        return GW_EINVAL;
     const char *sep = out ? "; written to " : "", *path = out ? out : "", *end = out ? " with 'converged 0'" : "";
     if (t_max < r->t_judge) /* it could not settle: not "E_k above the threshold" */
         return gw_warnings_add(list,
@@ -43,11 +65,14 @@ int gw_layer_make_result_warnings(const gw_layer_make_result *r, double t_max, c
      * LAYER_FLOOR_LOAD_MIN of its weight, swinging on its contacts above
      * LAYER_FLOOR_LOAD_MAX). A result without ke_limit (0: filled before it
      * was added) names E_k whenever the floor's load is not above the bound,
-     * as before; so does one where neither holds (an allocation failed). */
-    const double ld = r->floor_load;
+     * as before. One where neither holds (grains in flight the run could not
+     * count, or filled by hand) says so: it was told "E_k = 0 J still above
+     * --ke-threshold (1 J)". */
+    const double ld = r->floor_load, fall = r->fall_energy > 0 ? r->fall_energy : 0;
     const int low = ld < LAYER_FLOOR_LOAD_MIN, high = ld > LAYER_FLOOR_LOAD_MAX;
-    const int known = r->ke_limit > 0 && r->ke_limit < INFINITY;
-    const int above = known ? !(r->ke_final + r->fall_energy < r->ke_limit) || !(low || high) : !high;
+    const int known = r->ke_limit > 0;
+    /* (unknown: no E_k of 0 is above a threshold, which is positive) */
+    const int above = known ? !(r->ke_final + fall < r->ke_limit) : !high && r->ke_final + fall > 0;
     char ek[200] = "", on_floor[240] = "", lim[48] = "";
     if (known)
         gw_snprintf(lim, sizeof lim, "%.4g J", r->ke_limit);
@@ -63,17 +88,23 @@ int gw_layer_make_result_warnings(const gw_layer_make_result *r, double t_max, c
     else if (high)
         gw_snprintf(on_floor, sizeof on_floor, "its floor carries %.3g times the pile's weight (at rest: about 1; "
                     "layer-impact refuses above %g)", ld, LAYER_FLOOR_LOAD_MAX);
+    char fell[64] = ""; /* the grains' fall, when below the threshold with E_k */
+    if (r->fall_energy > 0)
+        gw_snprintf(fell, sizeof fell, " and %.4g J of grains in flight", r->fall_energy);
+    if (!ek[0] && !on_floor[0]) /* E_k below the threshold, the floor carrying the pile: the verdict alone */
+        return gw_warnings_add(list, "the sample did not settle: its run did not call it settled (converged 0), "
+                               "though at t-max = %g s E_k = %.4g J%s lies below --ke-threshold%s%s%s and its floor "
+                               "carries %.3g of the pile's weight (at rest: about 1; raise --t-max)%s%s%s", t_max,
+                               r->ke_final, fell, known ? " (" : "", lim, known ? ")" : "", ld, sep, path, end);
     if (!on_floor[0])
         return gw_warnings_add(list, "the sample did not settle: %s (%s%sraise --t-max)%s%s%s", ek, lim,
                                known ? "; " : "", sep, path, end);
     if (ek[0])
         return gw_warnings_add(list, "the sample did not settle: %s%s%s%s, and %s (raise --t-max)%s%s%s", ek,
                                known ? " (" : "", lim, known ? ")" : "", on_floor, sep, path, end);
-    char fall[64] = ""; /* E_k and the grains' fall below the threshold: the floor alone held the pile */
-    if (r->fall_energy > 0)
-        gw_snprintf(fall, sizeof fall, " and %.4g J of grains in flight", r->fall_energy);
+    /* E_k and the grains' fall below the threshold: the floor alone held the pile */
     return gw_warnings_add(list, "the sample did not settle: at t-max = %g s %s, E_k = %.4g J%s%s%s%s%s (raise "
-                           "--t-max)%s%s%s", t_max, on_floor, r->ke_final, fall, known ? " below --ke-threshold" : "",
+                           "--t-max)%s%s%s", t_max, on_floor, r->ke_final, fell, known ? " below --ke-threshold" : "",
                            known ? " (" : "", lim, known ? ")" : "", sep, path, end);
 }
 

@@ -108,6 +108,30 @@ refused "--wisdom naming a file that is not wisdom" 'not FFTW wisdom' dispersion
 "$GW" dispersion --n 16 --t-samples 64 --wisdom "$tmp/w.wis" >/dev/null 2>&1 && head -c 7 "$tmp/w.wis" | grep -q '(fftw-3' &&
     "$GW" dispersion --n 16 --t-samples 64 --wisdom "$tmp/w.wis" >/dev/null 2>&1 &&
     ok "--wisdom writes wisdom and reads it back" || ko "--wisdom round trip"
+# wisdom of another FFTW (version, precision) or of another configuration of
+# this one: said so, naming both, where it was told "is not FFTW wisdom"; still
+# refused and left as it was. This build's preamble is the first line of the
+# wisdom it just wrote ("(fftw-3.3.10 fftw_wisdom #x.. #x.. #x.. #x..").
+own=$(head -n 1 "$tmp/w.wis")
+own_ver=$(printf '%s' "$own" | cut -d' ' -f1 | tr -d '(')
+sig=$(printf '%s' "$own" | cut -d' ' -f3-)
+other_ver=fftw-3.3.9; [ "$own_ver" = fftw-3.3.9 ] && other_ver=fftw-3.3.8
+printf '(%s fftw_wisdom %s\n)\n' "$other_ver" "$sig" >"$tmp/old.wis"
+printf '(%s fftwf_wisdom %s\n)\n' "$own_ver" "$sig" >"$tmp/single.wis"
+printf '(%s fftw_wisdom #x1 #x2 #x3 #x4\n)\n' "$own_ver" >"$tmp/config.wis"
+for f in old single config; do cp "$tmp/$f.wis" "$tmp/$f.keep"; done
+refused "--wisdom of $other_ver (another version), both versions named" \
+    "^granwave dispersion --wisdom: '$tmp/old.wis' is FFTW wisdom of another FFTW version or precision \($other_ver, double precision\) than this build's \($own_ver, double precision\); refusing to overwrite it\$" \
+    dispersion --n 16 --t-samples 64 --wisdom "$tmp/old.wis"
+refused "--wisdom of single precision (fftwf_wisdom), both precisions named" \
+    "is FFTW wisdom of another FFTW version or precision \($own_ver, single precision\) than this build's \($own_ver, double precision\)" \
+    dispersion --n 16 --t-samples 64 --wisdom "$tmp/single.wis"
+refused "--wisdom of this version from another configuration (its planner's signature)" \
+    "is FFTW wisdom of $own_ver \(double precision\) from another configuration of it \(its planner's signature '#x1 #x2 #x3 #x4', this build's" \
+    dispersion --n 16 --t-samples 64 --wisdom "$tmp/config.wis"
+cmp -s "$tmp/old.wis" "$tmp/old.keep" && cmp -s "$tmp/single.wis" "$tmp/single.keep" &&
+    cmp -s "$tmp/config.wis" "$tmp/config.keep" && ok "  the three wisdom files are unchanged" ||
+    ko "  --wisdom overwrote another FFTW's wisdom"
 # a name too long for its temporary (NAME.tmp.HOST.PID.XXXXXX above the
 # directory's 255): refused before the run, where dispersion ran and then said
 # "cannot create: File name too long" (exit 0, nothing saved); 200 characters

@@ -471,6 +471,75 @@ static size_t wisdom_end(const char *text, size_t len)
     return i;
 }
 
+/* The preamble of FFTW wisdom in text[0, len): "(fftw-3.3.10 fftw_wisdom #x.. #x.. #x.. #x..",
+ * the library's version, its precision (fftw_ double, fftwf_ single, fftwl_
+ * long double, fftwq_ quad) and its planner's signature, into ver, kind and sig
+ * (each NUL-terminated, at most 63 characters); 0 when text does not begin so. */
+typedef struct wisdom_head {
+    char ver[64], kind[64], sig[64];
+} wisdom_head;
+
+static int wisdom_preamble(const char *text, size_t len, wisdom_head *h)
+{
+    memset(h, 0, sizeof *h);
+    size_t i = 1;
+    if (len < 7 || strncmp(text, "(fftw-", 6) != 0)
+        return 0;
+    char *tok[2] = {h->ver, h->kind};
+    for (int k = 0; k < 2; k++) {
+        size_t n = 0;
+        for (; i < len && n < sizeof h->ver - 1 && (text[i] == '.' || text[i] == '-' || text[i] == '_' ||
+                                                     (text[i] >= '0' && text[i] <= '9') ||
+                                                     (text[i] >= 'a' && text[i] <= 'z')); i++)
+            tok[k][n++] = text[i];
+        if (n == 0 || i >= len || text[i] != ' ')
+            return 0;
+        i++;
+    }
+    size_t n = 0; /* the signature: the rest of the line, its blanks kept */
+    for (; i < len && n < sizeof h->sig - 1 && text[i] != '\n' && text[i] != '(' && text[i] != ')' &&
+           text[i] != '\0'; i++)
+        h->sig[n++] = text[i];
+    while (n > 0 && (h->sig[n - 1] == ' ' || h->sig[n - 1] == '\r'))
+        h->sig[--n] = '\0';
+    const size_t kl = strlen(h->kind); /* fftw_wisdom, fftwf_wisdom, ... */
+    return kl >= 11 && strncmp(h->kind, "fftw", 4) == 0 && strcmp(h->kind + kl - 7, "_wisdom") == 0;
+}
+
+static const char *wisdom_precision(const char *kind)
+{
+    return strcmp(kind, "fftw_wisdom") == 0    ? "double precision"
+           : strcmp(kind, "fftwf_wisdom") == 0 ? "single precision"
+           : strcmp(kind, "fftwl_wisdom") == 0 ? "long-double precision"
+           : strcmp(kind, "fftwq_wisdom") == 0 ? "quad precision"
+                                               : "unknown precision";
+}
+
+/* Why wisdom that this build's FFTW did not import is refused: it is another
+ * FFTW's (version or precision, both named), or this version's from another
+ * configuration of it (its planner's signature differs), else not wisdom. It
+ * was told "is not FFTW wisdom" for a file of fftw-3.3.9's wisdom. */
+static int wisdom_refusal(const char *path, const char *text, size_t len, gw_err *err)
+{
+    wisdom_head f, o;
+    char *own = fftw_export_wisdom_to_string(); /* this build's preamble (nothing planned yet) */
+    const int ok_f = wisdom_preamble(text, len, &f), ok_o = own && wisdom_preamble(own, strlen(own), &o);
+    free(own);
+    if (ok_f && ok_o && (strcmp(f.ver, o.ver) != 0 || strcmp(f.kind, o.kind) != 0))
+        return gw_err_set(err, GW_EINVAL, "dispersion --wisdom: '%s' is FFTW wisdom of another FFTW version or "
+                          "precision (%s, %s) than this build's (%s, %s); refusing to overwrite it", path, f.ver,
+                          wisdom_precision(f.kind), o.ver, wisdom_precision(o.kind));
+    if (ok_f && ok_o && strcmp(f.sig, o.sig) != 0)
+        return gw_err_set(err, GW_EINVAL, "dispersion --wisdom: '%s' is FFTW wisdom of %s (%s) from another "
+                          "configuration of it (its planner's signature '%s', this build's '%s'); refusing to "
+                          "overwrite it", path, f.ver, wisdom_precision(f.kind), f.sig, o.sig);
+    if (ok_f && !ok_o)
+        return gw_err_set(err, GW_EINVAL, "dispersion --wisdom: '%s' is FFTW wisdom of %s (%s) that this build's "
+                          "FFTW (%s) does not import; refusing to overwrite it", path, f.ver,
+                          wisdom_precision(f.kind), fftw_version);
+    return gw_err_set(err, GW_EINVAL, "dispersion --wisdom: '%s' is not FFTW wisdom; refusing to overwrite it", path);
+}
+
 /* Wisdom is read through gw_input_read (a regular file, at most 64 MiB: a FIFO or
  * /dev/zero is refused, never read forever). An absent file, or an empty
  * regular one (made by touch or mktemp: nothing in it to lose), is planned
@@ -497,7 +566,7 @@ static int disp_import_wisdom(disp_cli *c, gw_err *err)
         return GW_EINVAL;
     const size_t end = wisdom_end(text, len);
     if (strncmp(text, "(fftw-3", 7) != 0 || !end || !fftw_import_wisdom_from_string(text)) {
-        rc = gw_err_set(err, GW_EINVAL, "dispersion --wisdom: '%s' is not FFTW wisdom; refusing to overwrite it", path);
+        rc = wisdom_refusal(path, text, len, err);
     } else if (end < len) {
         rc = gw_err_set(err, GW_EINVAL, "dispersion --wisdom: '%s' holds more than FFTW wisdom (byte %zu on: %s); "
                         "refusing to overwrite it", path, end + 1, memchr(text + end, '\0', len - end) ? "a NUL byte"

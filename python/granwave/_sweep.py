@@ -18,8 +18,8 @@ from ._core import Interruptible, Progress, issue
 from ._errors import GW_EINVAL, GranwaveError, GranwaveValueError, _raise, keyword_text
 from ._lib import lib
 from ._result import Result
-from ._values import (FLAG, TEXT, _BYTES, _digits, _fspath, _items, _kind, _plain, _scalar, _show, _text, _texts,
-                      read_table)
+from ._values import (FLAG, TEXT, _BYTES, _digits, _fspath, _integer, _items, _kind, _plain, _scalar, _show, _text,
+                      _texts, read_table)
 
 
 def sweep_models():
@@ -180,9 +180,12 @@ _SWEEP_LINE_MAX = 198  # the longest line the library's config reader takes (lib
 
 def run_sweep(model, grid, params, jobs, progress):
     # jobs reaches C as an int: a float, a bool or a str was cut or read
-    # silently (1.5 ran 1 thread, 10**12 wrapped to a negative int: one per CPU)
-    if isinstance(jobs, bool) or not isinstance(jobs, numbers.Integral):
-        raise TypeError(f"sweep(): jobs must be an integer, not {type(jobs).__name__}")
+    # silently (1.5 ran 1 thread, 10**12 wrapped to a negative int: one per
+    # CPU); an integer as every integer keyword takes one (_integer: a 0-d
+    # array np.array(2) too, as n takes np.array(5))
+    given, jobs = jobs, _integer(jobs)
+    if jobs is None:
+        raise TypeError(f"sweep(): jobs must be an integer, not {type(given).__name__}")
     if not -2**31 <= jobs < 2**31:  # the library's message for what does not fit its int
         raise GranwaveValueError(f"sweep: jobs: {_digits('sweep: jobs', jobs)} is outside [0, 4096] (0: one per CPU)",
                                  GW_EINVAL)

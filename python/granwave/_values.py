@@ -133,6 +133,16 @@ def _scalar(v):
     return None
 
 
+def _integer(v):
+    """v as a plain Python int when it is one integer, the one rule of every
+    integer keyword (a table's row, a range's end, sweep's jobs): an int, a
+    numpy integer or a 0-d array of one (np.array(5)); None for anything else,
+    a bool, a float (5.0) or a str among them. sweep(jobs=np.array(2)) was
+    refused where n=np.array(5) ran."""
+    x = _scalar(v)
+    return x if isinstance(x, int) and not isinstance(x, bool) else None
+
+
 def _digits(what, v):
     """An int's decimal digits, for the library to parse and hold to its row's
     range. str() of an int of more than Python's 4300 digits raises Python's
@@ -270,8 +280,8 @@ def list_most(p, rows, kwargs):
         return _INT_MAX, ""
     if r.type in (INT, LONG):
         given = kwargs.get(r.keyword)
-        v = _scalar(given) if given is not None else int(r.default) if (r.default or "").isdigit() else None
-        if isinstance(v, int) and not isinstance(v, bool) and r.min <= v <= r.max:
+        v = _integer(given) if given is not None else int(r.default) if (r.default or "").isdigit() else None
+        if v is not None and r.min <= v <= r.max:
             return min(v, _INT_MAX), f" ({r.keyword} = {v}{'' if given is not None else ', its default'})"
     return int(min(max(r.max, 0), _INT_MAX)), f" (the most {r.keyword} takes)"
 
@@ -328,8 +338,8 @@ def _text(p, value, most=(_INT_MAX, "")):
                 raise GranwaveValueError(f"{p.keyword}: a range of step 1 with at least one value, got {_show(value)}",
                                          GW_EINVAL)
             return f"{_digits(p.keyword, value.start)}:{_digits(p.keyword, value.stop - 1)}"
-        x = _scalar(value)
-        if isinstance(x, int) and not isinstance(x, bool):  # 7, np.int64(7), np.array(7)
+        x = _integer(value)
+        if x is not None:  # 7, np.int64(7), np.array(7)
             return _digits(p.keyword, x)
         # (A, B): exactly two ends; a fractional end goes to C as written, which
         # refuses it ("'1.5' is not an integer"), instead of being cut by int()

@@ -50,7 +50,8 @@ def test_a_cut_collision_says_raise_t_max():
 
 def test_the_dispersion_warning_names_f0_dt_out_t_samples():
     (t,) = _warnings(granwave.dispersion, n=64, f0=1e-300)
-    assert "(an f0 so small that it underflows, or a dt_out too fine for t_samples)" in t, t
+    assert ("(an f0 so small that it underflows, a dt_out too fine for t_samples, or a min_bins near half of "
+            "t_samples)") in t, t
     _no_flags(t, "dispersion")
 
 

@@ -8,6 +8,7 @@
 #ifndef GW_TEST_CALLS_H
 #define GW_TEST_CALLS_H
 
+#include <signal.h>
 #include <stdio.h>
 #include <string.h>
 #include <sys/wait.h>
@@ -48,6 +49,35 @@ static inline void gw_test_each_call(const gw_test_call *calls, size_t n)
                      WEXITSTATUS(st) == 0 ? "refused or nothing done, no crash" : "no crash, but the wrong value");
         gw_test_true(WIFEXITED(st) && WEXITSTATUS(st) == 0, what);
     }
+}
+
+/* Run fn(dir) in a child process killed by SIGALRM after 60 s: a crash or a
+ * hang is one failed check named by name, and the parts after it still run;
+ * the child's failed checks are added to this process's count. (Not a
+ * timing: each part's calls return at once.) */
+typedef void gw_test_part_fn(const char *dir);
+
+static inline void gw_test_part(const char *name, gw_test_part_fn *fn, const char *dir)
+{
+    fflush(stdout);
+    const pid_t pid = fork();
+    if (pid == 0) {
+        signal(SIGALRM, SIG_DFL);
+        alarm(60);
+        gw_test_failures = 0; /* the parent's count is not this part's */
+        fn(dir);
+        fflush(stdout);
+        _exit(gw_test_failures > 100 ? 100 : gw_test_failures);
+    }
+    int st = 0;
+    if (pid < 0 || waitpid(pid, &st, 0) != pid) {
+        GW_TEST_OK(0, "%s: fork or wait failed", name);
+        return;
+    }
+    if (WIFSIGNALED(st))
+        GW_TEST_OK(0, "%s: did not return within 60 s (a hang): killed by signal %d", name, WTERMSIG(st));
+    else
+        gw_test_failures += WEXITSTATUS(st);
 }
 
 #endif

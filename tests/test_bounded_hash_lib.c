@@ -32,31 +32,7 @@
 #include "gw_layer.h"
 #include "gw_sweep.h"
 #include "gw_test.h"
-
-typedef void part_fn(const char *dir);
-
-static void run_part(const char *name, part_fn *fn, const char *dir)
-{
-    fflush(stdout);
-    const pid_t pid = fork();
-    if (pid == 0) {
-        signal(SIGALRM, SIG_DFL);
-        alarm(60);
-        gw_test_failures = 0; /* the parent's count is not this part's */
-        fn(dir);
-        fflush(stdout);
-        _exit(gw_test_failures > 100 ? 100 : gw_test_failures);
-    }
-    int st = 0;
-    if (pid < 0 || waitpid(pid, &st, 0) != pid) {
-        GW_TEST_OK(0, "%s: fork or wait failed", name);
-        return;
-    }
-    if (WIFSIGNALED(st))
-        GW_TEST_OK(0, "%s: did not return within 60 s (a hang): killed by signal %d", name, WTERMSIG(st));
-    else
-        gw_test_failures += WEXITSTATUS(st);
-}
+#include "gw_test_calls.h"
 
 static int write_bytes(const char *path, const void *p, size_t n)
 {
@@ -193,14 +169,14 @@ int main(void)
         printf("FAIL: mkdtemp\n");
         return 1;
     }
-    run_part("the 200 GB file", part_big, dir);
+    gw_test_part("the 200 GB file", part_big, dir);
     if (access("/proc/self/pagemap", R_OK) == 0)
-        run_part("/proc/self/pagemap", part_proc, dir);
+        gw_test_part("/proc/self/pagemap", part_proc, dir);
     else
         printf("SKIP: /proc/self/pagemap not readable\n");
-    run_part("the bound and the text", part_max, dir);
-    run_part("the HDF5 sample's hole", part_h5_hole, dir);
-    run_part("the NUL bytes put in the sample", part_inputs_nul, dir);
+    gw_test_part("the bound and the text", part_max, dir);
+    gw_test_part("the HDF5 sample's hole", part_h5_hole, dir);
+    gw_test_part("the NUL bytes put in the sample", part_inputs_nul, dir);
     static const char *const files[] = {"big.bin", "small.bin", "nul.txt", "hole.h5", "hole.ini", "s.txt", "s.ini",
                                         NULL};
     char p[300];

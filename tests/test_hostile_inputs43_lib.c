@@ -27,32 +27,7 @@
 #include "gw_chain.h"
 #include "gw_sweep.h"
 #include "gw_test.h"
-
-/* Each part runs in a child of its own, killed by SIGALRM after 60 s: a hang
- * is one failed check, and the parts after it still run. */
-typedef void part_fn(const char *dir);
-
-static void run_part(const char *name, part_fn *fn, const char *dir)
-{
-    fflush(stdout);
-    const pid_t pid = fork();
-    if (pid == 0) {
-        signal(SIGALRM, SIG_DFL);
-        alarm(60);
-        fn(dir);
-        fflush(stdout);
-        _exit(gw_test_failures > 100 ? 100 : gw_test_failures);
-    }
-    int st = 0;
-    if (pid < 0 || waitpid(pid, &st, 0) != pid) {
-        GW_TEST_OK(0, "%s: fork or wait failed", name);
-        return;
-    }
-    if (WIFSIGNALED(st))
-        GW_TEST_OK(0, "%s: did not return within 60 s (a hang): killed by signal %d", name, WTERMSIG(st));
-    else
-        gw_test_failures += WEXITSTATUS(st);
-}
+#include "gw_test_calls.h"
 
 static int write_text(const char *path, const char *text)
 {
@@ -169,10 +144,10 @@ int main(void)
         printf("FAIL: mkdtemp\n");
         return 1;
     }
-    run_part("the config naming a 200 GB sample", part_config, dir);
-    run_part("the config as text naming it", part_config_string, dir);
-    run_part("the sample replaced while the sweep runs", part_inputs_check, dir);
-    run_part("the 10 GB journal", part_journal, dir);
+    gw_test_part("the config naming a 200 GB sample", part_config, dir);
+    gw_test_part("the config as text naming it", part_config_string, dir);
+    gw_test_part("the sample replaced while the sweep runs", part_inputs_check, dir);
+    gw_test_part("the 10 GB journal", part_journal, dir);
     static const char *const files[] = {"big.sample", "big.ini", "small.sample", "small.ini", "ch.ini",
                                         "j/journal.csv", NULL};
     char p[300];

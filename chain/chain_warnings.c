@@ -45,20 +45,36 @@ int chain_bead_stopped(double v, double v_scale)
     return fabs(v) < 1e-3 * v_scale;
 }
 
+/* 1 when p's contact damping is kk or hc with its constant above 0 */
+static int damping_on(const gw_chain_params *p)
+{
+    return p && (p->damping == GW_DAMP_KUWABARA_KONO || p->damping == GW_DAMP_HUNT_CROSSLEY) &&
+           !chain_damping_zero(p);
+}
+
+/* "damping kk, gamma G N s/m^1.5" (hc: alpha in s/m) into buf: the damping
+ * named in the held chain's failure and the drop's at-rest warning */
+static const char *damping_named(char *buf, size_t n, const gw_chain_params *p)
+{
+    const int kk = p->damping == GW_DAMP_KUWABARA_KONO;
+    gw_snprintf(buf, n, "damping %s, %s %g %s", kk ? "kk" : "hc", kk ? "gamma" : "alpha", kk ? p->gamma : p->alpha,
+                kk ? "N s/m^1.5" : "s/m");
+    return buf;
+}
+
 int chain_damping_holds(const gw_chain_params *p, double v1, double v_scale)
 {
-    const int on = p && (p->damping == GW_DAMP_KUWABARA_KONO || p->damping == GW_DAMP_HUNT_CROSSLEY);
-    return on && !chain_damping_zero(p) && chain_bead_stopped(v1, v_scale);
+    return damping_on(p) && chain_bead_stopped(v1, v_scale);
 }
 
 int chain_damping_held_error(const gw_chain_params *p, const char *who, const char *wall, double t_max,
                              const char *why, const char *advice, gw_err *err)
 {
-    const int kk = p->damping == GW_DAMP_KUWABARA_KONO;
-    const char *c = kk ? "gamma" : "alpha";
-    return gw_err_set(err, GW_ELIMIT, "%s: bead 1 still on the %s at t_max = %.6g s: the contact damping (damping %s, "
-                      "%s %g %s) stopped it inside its overlap, %s: lower %s%s", who, wall, t_max, kk ? "kk" : "hc", c,
-                      kk ? p->gamma : p->alpha, kk ? "N s/m^1.5" : "s/m", why, c, advice ? advice : "");
+    char named[128];
+    return gw_err_set(err, GW_ELIMIT, "%s: bead 1 still on the %s at t_max = %.6g s: the contact damping (%s) "
+                      "stopped it inside its overlap, %s: lower %s%s", who, wall, t_max,
+                      damping_named(named, sizeof named, p), why,
+                      p->damping == GW_DAMP_KUWABARA_KONO ? "gamma" : "alpha", advice ? advice : "");
 }
 
 /* chain --damping kk --gamma 0 ran the elastic column, recorded damping kk
@@ -286,12 +302,10 @@ int chain_drop_warnings(const gw_chain_drop_result *r, const gw_chain_params *p,
     if (rc != GW_OK || !(r->first_cut || r->open_at_t_max))
         return rc;
     if (drop_at_rest(r)) {
-        char damp[160] = "";
-        const int kk = p && p->damping == GW_DAMP_KUWABARA_KONO;
-        if (p && (kk || p->damping == GW_DAMP_HUNT_CROSSLEY) && !chain_damping_zero(p))
-            gw_snprintf(damp, sizeof damp, ", the contact damping (damping %s, %s %g %s) having taken its rebound",
-                        kk ? "kk" : "hc", kk ? "gamma" : "alpha", kk ? p->gamma : p->alpha,
-                        kk ? "N s/m^1.5" : "s/m");
+        char damp[160] = "", named[128];
+        if (damping_on(p))
+            gw_snprintf(damp, sizeof damp, ", the contact damping (%s) having taken its rebound",
+                        damping_named(named, sizeof named, p));
         return gw_warnings_add(list, "bead 1 was at rest on the sensor at t_max = %.6g s%s: its weight holds it "
                                "there, and no t-max ends that contact (the last impact's t_end and v_out are NaN, "
                                "its peaks final)%s", r->t_end, damp,

@@ -60,13 +60,13 @@ static inline double damped_force(const gw_chain *c, double k, double gam, doubl
 /* The default model's undamped right-hand side (chain_rhs_lean.c): whole
  * (kinematics 0: the forces' part only, for the implicit split), by beads
  * [j0, j1), and whether the CPU runs its AVX loop. */
+void chain_lean_rhs(const gw_chain *c, const double *y, double *yd, double g, int kinematics);
+void chain_lean_range(const gw_chain *c, const double *y, double *yd, int j0, int j1, double g);
+int chain_lean_avx(void);
 /* The bead count's range, [1, 5e7] (gw_chain_params_validate's first rule,
  * and gw_chain_memory_check's, whose sizes hold for such a count only: n =
  * INT_MIN was told it needs 4.4e11 GB, "at most 0 beads", n = -1 passed). */
 int chain_n_check(int n, gw_err *err);
-void chain_lean_rhs(const gw_chain *c, const double *y, double *yd, double g, int kinematics);
-void chain_lean_range(const gw_chain *c, const double *y, double *yd, int j0, int j1, double g);
-int chain_lean_avx(void);
 
 /* General model (chain_general.c). */
 double chain_general_wall_force(const gw_chain *c, const double *y, double *kd, double *kv, double *pd);

@@ -280,6 +280,19 @@ static cJSON *help_unit(const char *help, const char *at)
     return cJSON_CreateString(buf);
 }
 
+/* One end of an option's range as its refusal prints it: -inf or inf when
+ * unbounded, an integer's in full, a real's rounded toward the inside
+ * (gw_num_bound: the printed bound is taken when given back). */
+static void range_end(char *buf, size_t n, double x, int whole, int upper)
+{
+    if (!isfinite(x))
+        gw_snprintf(buf, n, "%s", upper ? "inf" : "-inf");
+    else if (whole)
+        gw_snprintf(buf, n, "%.0f", x);
+    else
+        gw_num_bound(buf, n, x, upper);
+}
+
 /* The range the parser checks, in its refusal's notation ("(0, 1e+06]",
  * "[1e-09, 0.01] (or 0)", "(0, inf)"), for a number option whose help line
  * prints none; NULL when the option is no number or has no bound. */
@@ -287,20 +300,10 @@ static cJSON *parser_range(const gw_opt *o)
 {
     if (!o || (o->kind != GW_OPT_DOUBLE && o->kind != GW_OPT_LONG) || (!isfinite(o->lo) && !isfinite(o->hi)))
         return NULL;
-    char ls[32], hs[32], buf[96]; /* an integer's ends in full, as its refusal prints them */
+    char ls[32], hs[32], buf[96];
     const int whole = o->kind == GW_OPT_LONG;
-    if (!isfinite(o->lo))
-        gw_snprintf(ls, sizeof ls, "-inf");
-    else if (whole)
-        gw_snprintf(ls, sizeof ls, "%.0f", o->lo);
-    else
-        gw_num_bound(ls, sizeof ls, o->lo, 0);
-    if (!isfinite(o->hi))
-        gw_snprintf(hs, sizeof hs, "inf");
-    else if (whole)
-        gw_snprintf(hs, sizeof hs, "%.0f", o->hi);
-    else
-        gw_num_bound(hs, sizeof hs, o->hi, 1);
+    range_end(ls, sizeof ls, o->lo, whole, 0);
+    range_end(hs, sizeof hs, o->hi, whole, 1);
     const int or_zero = o->param && o->param->or_zero;
     gw_snprintf(buf, sizeof buf, "%s%s, %s%s%s", o->open_lo || !isfinite(o->lo) ? "(" : "[", ls, hs,
                 o->open_hi || !isfinite(o->hi) ? ")" : "]", or_zero ? " (or 0)" : "");

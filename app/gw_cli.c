@@ -214,58 +214,78 @@ int gw_cli_parse(const char *cmd, gw_opt *opts, int argc, char **argv, int *help
     return GW_OK;
 }
 
+/* what a range that also takes 0 prints after its brackets, as the parameter
+ * table's refusals do (gw_param.c) */
+#define OR_ZERO " (or 0)"
+
 /* The text of a help line from its "[" or "(" at from to the first "]" or ")"
- * after it, brackets included, as a new cJSON string; NULL when not closed. */
+ * after it, brackets included, and the OR_ZERO that follows it, if
+ * any, as a new cJSON string; NULL when not closed. */
 static cJSON *help_span(const char *from)
 {
     const char *close = strpbrk(from + 1, "])");
     if (!close)
         return NULL;
+    const size_t z = strlen(OR_ZERO);
+    int len = (int)(close + 1 - from) + (strncmp(close + 1, OR_ZERO, z) == 0 ? (int)z : 0);
     char buf[256];
-    gw_snprintf(buf, sizeof buf, "%.*s", (int)(close + 1 - from), from);
+    gw_snprintf(buf, sizeof buf, "%.*s", len, from);
     return cJSON_CreateString(buf);
 }
 
-/* The range the help prints ("in [LO, HI]", "in (LO, HI)"), brackets included,
- * or NULL; *at its opening bracket. */
+/* The opening bracket of the range a help prints ("in [LO, HI]", "in (LO,
+ * HI)": its first, closed), or NULL. */
+static const char *range_at(const char *help)
+{
+    for (const char *p = help; p && (p = strstr(p, "in ")) != NULL; p++)
+        if ((p == help || p[-1] == ' ') && (p[3] == '[' || p[3] == '('))
+            return strpbrk(p + 4, "])") ? p + 3 : NULL;
+    return NULL;
+}
+
+/* The range the help prints (range_at), brackets included, or NULL; *at its
+ * opening bracket. */
 static cJSON *help_range(const char *help, const char **at)
 {
-    *at = NULL;
-    for (const char *p = help; p && (p = strstr(p, "in ")) != NULL; p++) {
-        if ((p == help || p[-1] == ' ') && (p[3] == '[' || p[3] == '(')) {
-            cJSON *r = help_span(p + 3);
-            if (r)
-                *at = p + 3;
-            return r;
+    *at = range_at(help);
+    return *at ? help_span(*at) : NULL;
+}
+
+/* The last "[...]" of a help line that does not open at skip (the range's
+ * bracket, or NULL): its "[", *end its "]"; NULL when none. The default's. */
+static const char *last_brackets(const char *help, const char *skip, const char **end)
+{
+    const char *last = NULL;
+    *end = NULL;
+    for (const char *p = help ? strchr(help, '[') : NULL; p; p = strchr(p + 1, '[')) {
+        const char *close = strchr(p, ']');
+        if (!close)
+            break;
+        if (p != skip) {
+            last = p;
+            *end = close;
         }
+        p = close;
     }
-    return NULL;
+    return last;
 }
 
 /* The default the help prints: the text of its last "[...]" that is not the
  * range (at), or NULL. */
 static cJSON *help_default(const char *help, const char *at)
 {
-    const char *last = NULL, *last_end = NULL;
-    for (const char *p = help ? strchr(help, '[') : NULL; p; p = strchr(p + 1, '[')) {
-        const char *close = strchr(p, ']');
-        if (!close)
-            break;
-        if (p != at) {
-            last = p;
-            last_end = close;
-        }
-        p = close;
-    }
+    const char *end, *last = last_brackets(help, at, &end);
     if (!last)
         return NULL;
     char buf[256];
-    gw_snprintf(buf, sizeof buf, "%.*s", (int)(last_end - last - 1), last + 1);
+    gw_snprintf(buf, sizeof buf, "%.*s", (int)(end - last - 1), last + 1);
     return cJSON_CreateString(buf);
 }
 
 /* The unit the help prints before its range ("bead radius, m, in [...]": "m"),
- * or NULL: the short field between ", " and ", in " (at: the range's bracket). */
+ * or NULL: the short field between ", " and ", in " (at: the range's bracket).
+ * Read where the row's own text prints its range only: before one help_line
+ * adds, the field is whatever the text ends with ("even", "cvode/arkode"). */
 static cJSON *help_unit(const char *help, const char *at)
 {
     if (!at || at - help < 6 || strncmp(at - 5, ", in ", 5) != 0)
@@ -293,21 +313,49 @@ static void range_end(char *buf, size_t n, double x, int whole, int upper)
         gw_num_bound(buf, n, x, upper);
 }
 
-/* The range the parser checks, in its refusal's notation ("(0, 1e+06]",
- * "[1e-09, 0.01] (or 0)", "(0, inf)"), for a number option whose help line
- * prints none; NULL when the option is no number or has no bound. */
-static cJSON *parser_range(const gw_opt *o)
+/* The range the parser checks into buf, in its refusal's notation ("(0,
+ * 1e+06]", "[1e-09, 0.01] (or 0)", "(0, inf)"): 1, or 0 (buf "") when o is no
+ * number option or has no bound. */
+static int parser_range(const gw_opt *o, char *buf, size_t n)
 {
+    buf[0] = '\0';
     if (!o || (o->kind != GW_OPT_DOUBLE && o->kind != GW_OPT_LONG) || (!isfinite(o->lo) && !isfinite(o->hi)))
-        return NULL;
-    char ls[32], hs[32], buf[96];
+        return 0;
+    char ls[32], hs[32];
     const int whole = o->kind == GW_OPT_LONG;
     range_end(ls, sizeof ls, o->lo, whole, 0);
     range_end(hs, sizeof hs, o->hi, whole, 1);
     const int or_zero = o->param && o->param->or_zero;
-    gw_snprintf(buf, sizeof buf, "%s%s, %s%s%s", o->open_lo || !isfinite(o->lo) ? "(" : "[", ls, hs,
-                o->open_hi || !isfinite(o->hi) ? ")" : "]", or_zero ? " (or 0)" : "");
-    return cJSON_CreateString(buf);
+    gw_snprintf(buf, n, "%s%s, %s%s%s", o->open_lo || !isfinite(o->lo) ? "(" : "[", ls, hs,
+                o->open_hi || !isfinite(o->hi) ? ")" : "]", or_zero ? OR_ZERO : "");
+    return 1;
+}
+
+/* The help line of option o (help: its text; o NULL: --help's) as the text
+ * help and the JSON's "help" print it: the text, and where it prints no range
+ * ("in [...]") and the parser checks one (parser_range), ", in RANGE" put
+ * before the default's brackets (the last "[...]"), else at the end, as the
+ * lines that print theirs do ("impact velocity, m/s, in [1e-09, 1000]
+ * [0.3]"); *added (may be NULL) 1 when it did. A new string the caller
+ * frees; NULL when out of memory. */
+static char *help_line(const gw_opt *o, const char *help, int *added)
+{
+    const char *end;
+    char range[96] = "";
+    help = help ? help : "";
+    const int add = !range_at(help) && parser_range(o, range, sizeof range);
+    if (added)
+        *added = add;
+    const char *def = add ? last_brackets(help, NULL, &end) : NULL;
+    size_t cut = def ? (size_t)(def - help) : strlen(help);
+    const int space = def && cut > 0 && help[cut - 1] == ' ';
+    cut -= space; /* ", in RANGE" after the text, the blank before the default kept */
+    const size_t n = strlen(help) + strlen(range) + 8;
+    char *line = malloc(n);
+    if (line)
+        gw_snprintf(line, n, "%.*s%s%s%s%s", (int)cut, help, add ? ", in " : "", add ? range : "",
+                    def && !space ? " " : "", help + cut);
+    return line;
 }
 
 static const char *opt_kind_name(const gw_opt *o)
@@ -330,12 +378,17 @@ static cJSON *str_or_null(const char *s)
     return s && *s ? cJSON_CreateString(s) : cJSON_CreateNull();
 }
 
-/* One option of the help as JSON: what its help line says, field by field. */
-static cJSON *opt_json(const char *name, const char *help, const gw_opt *o)
+/* One option of the help as JSON: what its help line (help_line: the text
+ * help's) says, field by field; NULL when out of memory. */
+static cJSON *opt_json(const char *name, const char *text, const gw_opt *o)
 {
-    cJSON *j = cJSON_CreateObject();
-    if (!j)
+    int added;
+    char *help = help_line(o, text, &added);
+    cJSON *j = help ? cJSON_CreateObject() : NULL;
+    if (!j) {
+        free(help);
         return NULL;
+    }
     const gw_param *p = o ? o->param : NULL;
     const char *at;
     cJSON *range = help_range(help, &at), *def = help_default(help, at);
@@ -344,10 +397,8 @@ static cJSON *opt_json(const char *name, const char *help, const gw_opt *o)
     cJSON_AddItemToObject(j, "name", cJSON_CreateString(name));
     cJSON_AddItemToObject(j, "metavar", str_or_null(o ? o->metavar : NULL));
     cJSON_AddItemToObject(j, "kind", cJSON_CreateString(o ? opt_kind_name(o) : "flag"));
-    cJSON *unit = p && p->unit && *p->unit ? cJSON_CreateString(p->unit) : help_unit(help, at);
+    cJSON *unit = p && p->unit && *p->unit ? cJSON_CreateString(p->unit) : added ? NULL : help_unit(help, at);
     cJSON_AddItemToObject(j, "unit", unit ? unit : cJSON_CreateNull());
-    if (!range)
-        range = parser_range(o);
     cJSON_AddItemToObject(j, "range", range ? range : cJSON_CreateNull());
     const int num = o && (o->kind == GW_OPT_DOUBLE || o->kind == GW_OPT_LONG);
     cJSON_AddItemToObject(j, "min", num ? num_or_null(o->lo) : cJSON_CreateNull());
@@ -363,7 +414,8 @@ static cJSON *opt_json(const char *name, const char *help, const gw_opt *o)
         c += len + (c[len] == ',');
     }
     cJSON_AddItemToObject(j, "choices", p && p->type == GW_PARAM_CHOICE ? ch : (cJSON_Delete(ch), cJSON_CreateNull()));
-    cJSON_AddItemToObject(j, "help", cJSON_CreateString(help ? help : ""));
+    cJSON_AddItemToObject(j, "help", cJSON_CreateString(help));
+    free(help);
     return j;
 }
 
@@ -393,7 +445,11 @@ int gw_cli_help(FILE *fp, const char *cmd, const char *usage, const char *summar
         char left[64];
         snprintf(left, sizeof left, "--%s%s%s", o->name, o->metavar ? " " : "",
                  o->metavar ? o->metavar : "");
-        fprintf(fp, "  %-22s %s\n", left, o->help);
+        char *line = help_line(o, o->help, NULL);
+        if (!line)
+            return gw_cli_nomem(cmd);
+        fprintf(fp, "  %-22s %s\n", left, line);
+        free(line);
     }
     fprintf(fp, "  %-22s %s\n", "--help", GW_CLI_HELP_TEXT);
     return 0;

@@ -58,13 +58,17 @@ int gw_cli_opt_param(const struct gw_param *p, void *dest, gw_opt *o, gw_err *er
 #define GW_CLI_HELP_JSON 2
 /* the help line of --help, which every command has */
 #define GW_CLI_HELP_TEXT "show this help and exit"
-/* Print usage and every option's help (help: gw_cli_parse's *help). With
+/* Print usage and every option's help (help: gw_cli_parse's *help), a
+ * number option with a bound with its range: its text's ("in [1e-6, 1]"), or
+ * where the text states none, the parser's put in before the default's
+ * brackets (", in [1, 50000000] [1]"). With
  * help GW_CLI_HELP_JSON, one JSON object on stdout instead, from the same
  * table: {"command", "usage", "summary", "options": [{"name", "metavar",
  * "kind" (flag, number, integer, text, choice), "unit" (the row's), "range"
- * (as the help prints it, "[1e-6, 1]"), "min", "max" (the accepted bounds),
+ * (as the help line prints it, "[1e-6, 1]"), "min", "max" (the accepted bounds),
  * "default" (as the help prints it, else the row's; a flag's false),
- * "choices", "help"}]}, --help last (docs/cli.md). Returns the exit status:
+ * "choices", "help" (the text help's line)}]}, --help last (docs/cli.md).
+ * Returns the exit status:
  * 0, or 1 when the JSON could not be printed (gw_cli_json_stdout). */
 int gw_cli_help(FILE *fp, const char *cmd, const char *usage, const char *summary, const gw_opt *opts, int help);
 /* The option named name, or NULL. */

@@ -267,9 +267,7 @@ static double sensor_steps(const gw_chain_params *p, const gw_solver_type *type,
      * 8.4e7 (2.3 times); over 1 ms 3,410,409, estimated 6.9e6 */
     gw_chain_params q = *p;
     q.v_imp = chain_speed_scale(p);
-    double tc_col = 0, tau1_col = 0;
-    chain_column_scales(&q, &tc_col, &tau1_col);
-    const double t_span = 2.0 * (p->n * 2.0 * tc_col + tau1_col),
+    const double t_span = 2.0 * chain_collision_length(&q, NULL),
                  t_c = t_span > 0 && t_span < t_len ? t_span : t_len, t_b = t_len - t_c,
                  u_c = *per_rad * *omega * t_c, u_b = *per_rad * *omega * t_b;
     const double z = *zeta, events = 4.0 * ((double)(p->n > 5 ? p->n : 5) + 1.0),
@@ -755,7 +753,8 @@ int chain_held_check(const gw_chain_params *p, double t_max, double t_col, doubl
 #define SAMPLING_MAX 3e6
 #define SAMPLING_PER_TRANSIT_MAX 1e4
 
-int chain_sampling_check(int n, double t_expect, double dt_out, int given, gw_err *err)
+int chain_sampling_check(int n, double t_expect, double dt_out, int given, const char *over, const char *why,
+                         gw_err *err)
 {
     const double samples = t_expect / dt_out, transits = 2.0 * n + 1;
     if (!(samples > SAMPLING_MAX) || !(samples / transits > SAMPLING_PER_TRANSIT_MAX))
@@ -764,11 +763,13 @@ int chain_sampling_check(int n, double t_expect, double dt_out, int given, gw_er
     const double lim = t_expect / fmax(SAMPLING_MAX, SAMPLING_PER_TRANSIT_MAX * transits),
                  q = pow(10, floor(log10(lim)) - 1);
     return gw_err_set(err, GW_EINVAL,
-                      "dt-out: %s%g s gives about %.3g samples over the collision (about %.3g s), %.3g per bead "
+                      "dt-out: %s%g s gives about %.3g samples over %s (about %.3g s), %.3g per bead "
                       "transit of %d beads; at most %.0e when above %.0e a transit: raise dt-out to %.2g s or more%s",
-                      given ? "" : "the default tau_1/200 = ", dt_out, samples, t_expect, samples / transits, n,
+                      given ? "" : "the default tau_1/200 = ", dt_out, samples, over, t_expect, samples / transits, n,
                       SAMPLING_MAX, SAMPLING_PER_TRANSIT_MAX, ceil(lim / q) * q,
-                      given ? "" : " (the wall's contact is far shorter than the column's: a stiff wall on soft contacts)");
+                      given ? ""
+                      : why ? why
+                            : " (the wall's contact is far shorter than the column's: a stiff wall on soft contacts)");
 }
 
 /* The run options' numbers whose 0 is "the default" or "off": each finite
@@ -809,13 +810,23 @@ static int plan_make(const gw_chain_params *p0, const gw_chain_run_opts *o, coll
     pl->dt_out = o->dt_out > 0 ? o->dt_out : pl->tau1 / 200.0;
     /* The collision's expected length: n bead-to-bead transits of 2 T_c plus
      * the wall contact, each on the scale of the heaviest bead it can involve
-     * (chain_column_scales; bead 1's for equal beads). Bead 1's alone made a
-     * light bead under a heavy one end at the default t-max still on the wall
-     * (--radii 5e-4,1e-2: t-max 0.197 ms, the collision 0.248 ms, exit 1). */
-    double tc_col = 0, tau1_col = 0;
-    chain_column_scales(p, &tc_col, &tau1_col);
-    const double t_col = n * 2.0 * tc_col + tau1_col; /* the ring, held and t-max bounds' too */
+     * (bead 1's for equal beads), plus the column's ride on a sensor body's
+     * spring (chain_collision_length). Bead 1's alone made a light bead under
+     * a heavy one end at the default t-max still on the wall (--radii
+     * 5e-4,1e-2: t-max 0.197 ms, the collision 0.248 ms, exit 1). */
+    double tc_col = 0;
+    const double t_col = chain_collision_length(p, &tc_col), /* the ring, held and t-max bounds' too */
+                 t_ride = chain_sensor_carry_time(p);
     pl->tc = tc_col;
+    /* the bounds over a collision that is mostly the column's ride on a soft
+     * sensor spring say so, and the default dt-out's refusal names the ride
+     * (its other advice, a stiff wall on soft contacts, is about the wall) */
+    const int rides = t_ride > 0.5 * t_col;
+    const char *over = rides ? "the collision on the sensor body's spring" : "the collision";
+    char why[160] = "";
+    if (rides)
+        gw_snprintf(why, sizeof why, " (the column rides the sensor body's spring for pi sqrt((sum m + M)/k_s) = %.3g "
+                    "s: a stiffer spring shortens it)", t_ride);
     pl->t_max = o->t_max > 0 ? o->t_max : 20.0 * t_col;
     /* Every sample costs O(n) (energy, contacts): bound the samples over the
      * collision's expected length (or t_max when shorter). The
@@ -840,27 +851,29 @@ static int plan_make(const gw_chain_params *p0, const gw_chain_run_opts *o, coll
     const double max_samples = 1e9, step = pl->type == gw_solver_rk4 ? fmin(pl->sp.dt, pl->sp.dt_max) : pl->sp.dt_max;
     gw_err e[3] = {{{0}}};
     double n_ok[3] = {INFINITY, INFINITY, INFINITY};
-    if (chain_steps_check(pl->type, &pl->sp, &o->sp, pl->t_expect, "the collision", &e[0]) != GW_OK)
+    if (chain_steps_check(pl->type, &pl->sp, &o->sp, pl->t_expect, over, &e[0]) != GW_OK)
         n_ok[0] = n * 1e8 / (pl->t_expect / step);
     /* cvode and arkode follow a sensor body's oscillation too (8 s for 0.1 ms at
      * 1e-7 kg on 1e14 N/m, 5.8e7 steps) */
-    if ((rc = chain_sensor_steps_check(p, pl->type, &pl->sp, pl->t_expect, "the collision", err)) != GW_OK)
+    if ((rc = chain_sensor_steps_check(p, pl->type, &pl->sp, pl->t_expect, over, err)) != GW_OK)
         return rc;
     /* and the explicit methods its ring, where it is far faster than the collision */
-    if ((rc = chain_ring_explicit_check(p, pl->type, &pl->sp, pl->t_expect, "the collision", err)) != GW_OK)
+    if ((rc = chain_ring_explicit_check(p, pl->type, &pl->sp, pl->t_expect, over, err)) != GW_OK)
         return rc;
     /* and the explicit methods a drag's decay (chain_drag_steps_check) */
     if ((rc = chain_drag_steps_check(p, pl->type, &pl->sp, &o->sp, o->steps_per_tc, pl->t_expect, pl->t_max,
-                                     "the collision", err)) != GW_OK)
+                                     over, err)) != GW_OK)
         return rc;
     if (gw_chain_memory_check(p, pl->type, pl->sp.method, &e[1]) != GW_OK)
         n_ok[1] = memory_n_ok(p, pl->type, pl->sp.method);
     if (!(pl->t_expect / pl->dt_out <= max_samples)) {
-        gw_err_set(&e[2], GW_EINVAL, "dt-out: %s%g s gives about %.3g samples over the collision (about %.3g s); "
+        gw_err_set(&e[2], GW_EINVAL, "dt-out: %s%g s gives about %.3g samples over %s (about %.3g s); "
                    "at most %.0e: raise dt-out%s", o->dt_out > 0 ? "" : "the default tau_1/200 = ", pl->dt_out,
-                   pl->t_expect / pl->dt_out, pl->t_expect, max_samples,
-                   o->dt_out > 0 ? "" : " (bead 1's wall contact is far shorter than the column's collision: unequal "
-                                        "radii or masses, or a stiff wall)");
+                   pl->t_expect / pl->dt_out, over, pl->t_expect, max_samples,
+                   o->dt_out > 0 ? ""
+                   : rides       ? why
+                                 : " (bead 1's wall contact is far shorter than the column's collision: unequal "
+                                   "radii or masses, or a stiff wall)");
         n_ok[2] = n * max_samples / (pl->t_expect / pl->dt_out);
     }
     int worst = -1;
@@ -871,7 +884,7 @@ static int plan_make(const gw_chain_params *p0, const gw_chain_run_opts *o, coll
         return gw_err_set(err, GW_EINVAL, "%s", e[worst].msg);
     /* cvode and arkode follow a light bead that heavy beads hold, all the time
      * they hold it (chain_ring_check) */
-    if ((rc = chain_ring_check(p, pl->type, &pl->sp, pl->t_expect, t_col, "the collision", err)) != GW_OK)
+    if ((rc = chain_ring_check(p, pl->type, &pl->sp, pl->t_expect, t_col, over, err)) != GW_OK)
         return rc;
     /* A stored trace (gw_chain_trace_sample) keeps t, the wall force and every
      * bead's x and v at each sample and event (about 4 events per bead): bound
@@ -882,7 +895,7 @@ static int plan_make(const gw_chain_params *p0, const gw_chain_run_opts *o, coll
         return rc;
     /* sampling far finer than the column's own scale (chain_sampling_check;
      * after the stored trace's bound, which names what --out would write) */
-    if ((rc = chain_sampling_check(n, pl->t_expect, pl->dt_out, o->dt_out > 0, err)) != GW_OK)
+    if ((rc = chain_sampling_check(n, pl->t_expect, pl->dt_out, o->dt_out > 0, over, rides ? why : NULL, err)) != GW_OK)
         return rc;
     if (!whole)
         return GW_OK;

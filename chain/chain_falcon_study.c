@@ -171,7 +171,7 @@ static const gw_param falcon_fields[] = {
     CASE("e_rel_over_e_k", e_rel_over_e_k, "", "E_rel/E_K at tau_N (F.20)"),
     CASE("n_s", n_s, "", "beads leaving from the top before the cluster"),
     CASE("energy_error", energy_error, "", "max relative energy error"),
-    CASE("t_max", t_max, "s", "time limit of the collision (default 20 (N T_q + tau_1))"),
+    CASE("t_max", t_max, "s", "time limit of the collision (default 20 (N T_q + tau_1 + t_s), t_s the column's ride on a sensor spring)"),
     CASE("dt_out", dt_out, "s", "its sampling interval"),
     CASE("dt", dt, "s", "its RK4 step (0: cvode, arkode)"),
     CASE("dt_max", dt_max, "s", "its largest step"),

@@ -408,7 +408,9 @@ double gw_chain_time_scale(const gw_chain_params *p)
     return pow(m / k, 0.4) * pow(p->v_imp, -0.2);
 }
 
-void chain_column_scales(const gw_chain_params *p, double *tc, double *tau1)
+/* The column's scales for its expected length (chain_collision_length): the
+ * largest bead-to-bead T_c and the heaviest bead's wall contact time */
+static void column_scales(const gw_chain_params *p, double *tc, double *tau1)
 {
     const double v = p->v_imp, m0 = p->masses ? p->masses[0] : p->mass;
     double t = gw_chain_time_scale(p), mmax = m0;
@@ -423,6 +425,25 @@ void chain_column_scales(const gw_chain_params *p, double *tc, double *tau1)
         }
     *tc = t;
     *tau1 = gw_chain_tau1(mmax, p->kwall, v);
+}
+
+double chain_sensor_carry_time(const gw_chain_params *p)
+{
+    if (!(p->sensor.mass > 0 && p->sensor.stiffness > 0))
+        return 0.0;
+    double mt = p->sensor.mass;
+    for (int i = 0; i < p->n; i++)
+        mt += p->masses ? p->masses[i] : p->mass;
+    return M_PI * sqrt(mt / p->sensor.stiffness);
+}
+
+double chain_collision_length(const gw_chain_params *p, double *tc)
+{
+    double tc_col = 0, tau1_col = 0;
+    column_scales(p, &tc_col, &tau1_col);
+    if (tc)
+        *tc = tc_col;
+    return p->n * 2.0 * tc_col + tau1_col + chain_sensor_carry_time(p);
 }
 
 /* The reduced mass of bead 1 on the wall: the bead's own on a rigid sensor, with

@@ -300,8 +300,11 @@ int chain_held_check(const gw_chain_params *p, double t_max, double t_col, doubl
 /* Samples over the collision's expected length t_expect at dt_out: more than
  * 3e6 and more than 1e4 per bead transit (2n + 1 over the collision) is
  * GW_EINVAL naming dt-out (given: 1 when the caller chose it, 0 for the
- * default tau_1/200) and the interval that passes (chain_collide_plan.c). */
-int chain_sampling_check(int n, double t_expect, double dt_out, int given, gw_err *err);
+ * default tau_1/200) and the interval that passes (chain_collide_plan.c);
+ * over names the span ("the collision"), why (NULL: a stiff wall on soft
+ * contacts) says what makes the default's collision long. */
+int chain_sampling_check(int n, double t_expect, double dt_out, int given, const char *over, const char *why,
+                         gw_err *err);
 
 /* The run's steps bounded before it starts (chain_collide_plan.c): the RK4 step
  * (the smaller of dt and dt_max), or cvode's and arkode's largest step dt_max,
@@ -342,11 +345,30 @@ int chain_collide_drop(const gw_chain *c, const gw_chain_run_opts *o, int flight
  * 4e-3,1e-6,4e-3. GW_EINVAL naming the bound. */
 int chain_collide_drop_check(const gw_chain *c, const gw_chain_run_opts *o, gw_err *err);
 
-/* The column's time scales for its expected length (chain_collide_plan.c): tc the
- * largest bead-to-bead T_c = (m/k)^(2/5) v^(-1/5) over the contacts, each with
- * the heavier of its two beads, and tau1 the wall contact time (F.2) of the
- * heaviest bead; for equal beads gw_chain_time_scale and bead 1's tau_1. */
-void chain_column_scales(const gw_chain_params *p, double *tc, double *tau1);
+/* Half the period of the column's mass and a sensor body's M on the sensor's
+ * spring, pi sqrt((sum m + M) / k_s), s: the time a column heavier than the
+ * body rides the spring (the bead contacts and the wall's are stiff beside a
+ * soft spring, so the column moves as one on it); 0 on a rigid sensor. Measured
+ * at n = 3 (6.3 g) on 1e3 N/m: bead 1's last wall contact ended at 7.893 ms
+ * against 7.894 ms on 1e-7 kg, at 0.57 to 0.97 of it on 1e-4 to 3e-2 kg (the
+ * run's end, the beads' own contacts parted, up to 15 times later: within the
+ * default t_max's 20; beads leaving nearly together that meet again later
+ * still are not counted: n = 10 on 0.03 kg and 1e4 N/m ends at 39 times it);
+ * a body of 0.1 kg and more sends the column back at
+ * once, and the run ends at its reading's peak, a quarter of its period, half
+ * of this time. */
+double chain_sensor_carry_time(const gw_chain_params *p);
+
+/* The collision's expected length, s: n bead-to-bead transits of 2 T_c (the
+ * largest T_c = (m/k)^(2/5) v^(-1/5) over the contacts, each with the heavier
+ * of its two beads), the wall contact time tau_1 (F.2) of the heaviest bead
+ * (for equal beads gw_chain_time_scale and bead 1's tau_1) and the
+ * column's ride on a sensor body's spring (chain_sensor_carry_time; 0 on a
+ * rigid sensor). The default t_max is 20 of it (chain_collide_plan.c); the
+ * column's largest T_c in *tc (may be NULL). Before the ride was counted, a
+ * column on a soft sensor spring (--n 3 --sensor-mass 1e-7 --sensor-stiffness
+ * 1e3, 7.9 ms) was cut at the default t-max 2.2 ms with eps_eff -0.64. */
+double chain_collision_length(const gw_chain_params *p, double *tc);
 
 /* The drop's fall to the first contact is free fall in closed form: guide
  * friction (Coulomb or viscous, N and N s/m per bead) would slow it and is

@@ -29,6 +29,8 @@ hostile_setup "$@"
 export LC_ALL=C
 
 # --- 1 wavespeed's period: the text, the JSON and the warning agree ---
+# jq_py with os imported (the warnings compared with texts in the environment)
+jq_os() { /usr/bin/python3 -c "import json, os; d = json.load(open('$1')); print($2)"; }
 ws() { timeout -s KILL 60 "$GW" wavespeed "$@" --quiet --jobs 1 </dev/null; }
 na="  period: n/a (period, c2 and beta_period null: the warning says why); "
 if ws --n 5:9 --vimp 0.3,0.5 >t1.txt 2>e1.txt && ws --n 5:9 --vimp 0.3,0.5 --json >j1.json 2>/dev/null; then
@@ -39,8 +41,9 @@ if ws --n 5:9 --vimp 0.3,0.5 >t1.txt 2>e1.txt && ws --n 5:9 --vimp 0.3,0.5 --jso
         grep -q "read on columns of 10 beads or more, and the longest here has 9" e1.txt &&
         ok "1 wavespeed --n 5:9: one warning says why (the longest column has 9 beads)" ||
         ko "1 wavespeed --n 5:9: stderr $(cat e1.txt)"
-    w=$(sed -n 's/^granwave wavespeed: warning: //p' e1.txt)
-    [ "$(W="$w" jq_py j1.json "d['period'], d['c2'], d['beta_period'], d['warnings'] == [__import__('os').environ['W']]")" = \
+    # the JSON: null where the text says n/a, its one warning the stderr's
+    W=$(sed -n 's/^granwave wavespeed: warning: //p' e1.txt) && export W
+    [ "$(jq_os j1.json "d['period'], d['c2'], d['beta_period'], d['warnings'] == [os.environ['W']]")" = \
         "[None, None] None None True" ] &&
         ok "1 wavespeed --n 5:9 --json: period, c2, beta_period null, the warning the text's" ||
         ko "1 wavespeed --n 5:9 --json: $(jq_py j1.json "d['period'], d['c2'], d['warnings']")"
@@ -52,9 +55,10 @@ if ws --n 5:12 --vimp 0.01 --gravity 1e3 >t2.txt 2>e2.txt &&
     grep -qF -- "$na" t2.txt && ! grep -q 'period: undecided' t2.txt &&
         ok "1 wavespeed under gravity 1e3: the text's period n/a, the reason left to the warning" ||
         ko "1 wavespeed under gravity 1e3: $(grep period t2.txt)"
-    needle="the wall-force period at v_imp = 0.01 m/s (no decided column of 10 beads or more showed two maxima)"
-    [ "$(N="$needle" jq_py j2.json "d['period'], d['c2'], d['n_held'] > 0, sum(__import__('os').environ['N'] in w for w in d['warnings'])")" = \
-        "[None] None True 1" ] && grep -qF "$needle" e2.txt &&
+    N="the wall-force period at v_imp = 0.01 m/s (no decided column of 10 beads or more showed two maxima)"
+    export N
+    [ "$(jq_os j2.json "d['period'], d['c2'], d['n_held'] > 0, sum(os.environ['N'] in w for w in d['warnings'])")" = \
+        "[None] None True 1" ] && grep -qF "$N" e2.txt &&
         ok "1 wavespeed under gravity 1e3: period null, the held columns' warning names it (stderr, --json)" ||
         ko "1 wavespeed under gravity 1e3: $(jq_py j2.json "d['period'], d['c2'], d['warnings']")"
 else
@@ -64,8 +68,10 @@ fi
 # C2 = P v^(1/5) / (m/k)^(2/5) of the period measured, and no warning
 if ws --n 8:12 --vimp 0.3 >t3.txt 2>e3.txt && ws --n 8:12 --vimp 0.3 --json >j3.json 2>/dev/null; then
     c2=$(sed -n 's/^  period: C2 \([0-9.]*\), beta not fitted; .*/\1/p' t3.txt)
+    f15="d['period'][0] * 0.3 ** 0.2 / (d['settings']['model']['mass'] / d['settings']['model']['k']) ** 0.4"
     [ -n "$c2" ] && [ ! -s e3.txt ] &&
-        [ "$(jq_py j3.json "(lambda m, p: abs(d['c2'] - p * 0.3 ** 0.2 / (m['mass'] / m['k']) ** 0.4) < 1e-9 * d['c2'])(d['settings']['model'], d['period'][0]) and '%.4f' % d['c2'] == '$c2' and d['warnings'] == []")" = True ] &&
+        [ "$(jq_py j3.json "abs(d['c2'] - $f15) < 1e-9 * d['c2'], '%.4f' % d['c2'], d['warnings']")" = \
+            "True $c2 []" ] &&
         ok "1 wavespeed --n 8:12 (control): C2 $c2 in the text, the JSON's, P v^(1/5) / (m/k)^(2/5), no warning" ||
         ko "1 wavespeed --n 8:12 (control): '$c2' $(jq_py j3.json "d['c2'], d['period'], d['warnings']") $(cat e3.txt)"
 else

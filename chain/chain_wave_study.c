@@ -507,15 +507,19 @@ static int ws_run(const gw_chain_wavespeed_setup *s, gw_progress_fn progress, vo
         rc = gw_err_set(err, GW_ENOMEM, "wavespeed: out of memory");
     /* the speeds at which the held columns left an estimator undecided, and
      * the fits over v_imp they left without two decided speeds */
-    static const char *const why[3] = {"4R/T_q at v_imp = %s m/s (fewer than two decided columns)",
+    /* (the period too: null at a held speed with nothing said, where the
+     * text printed "undecided"; chain_wavespeed_warnings names the others) */
+    static const char *const why[4] = {"4R/T_q at v_imp = %s m/s (fewer than two decided columns)",
                                        "the group speeds at v_imp = %s m/s (the longest column held)",
-                                       "v_front at v_imp = %s m/s (its column held before the front's end)"};
-    const double *est[3] = {out->v_tq, out->v_group, out->v_front};
-    char where[600] = "";
+                                       "v_front at v_imp = %s m/s (its column held before the front's end)",
+                                       "the wall-force period at v_imp = %s m/s (no decided column of 10 beads "
+                                       "or more showed two maxima)"};
+    const double *est[4] = {out->v_tq, out->v_group, out->v_front, out->period};
+    char where[800] = "";
     out->n_held = held;
     for (int iv = 0; rc == GW_OK && iv < nv; iv++)
         out->n_held += out->front_held[iv];
-    for (int e = 0; rc == GW_OK && e < 3; e++) {
+    for (int e = 0; rc == GW_OK && e < 4; e++) {
         char list[128] = "";
         int n_list = 0;
         for (int iv = 0; iv < nv; iv++)

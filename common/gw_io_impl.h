@@ -1,11 +1,13 @@
 /*
- * gw_io_impl.h (private to common/, not installed): what the parts of the
+ * gw_io_impl.h (private to the library, not installed): what the parts of the
  * file layer share: the atomic file's (gw_io_afile.c) signal hold, symbolic
  * link target, umask and open status, used by the output sets
  * (gw_io_outset.c), the output locations' checks (gw_io_paths.c) and the
  * inputs (gw_io_input.c); the inputs' file kind, used by the checks; the
  * open set's staging of a committed file (gw_io_outset.c); and the table of
- * temporaries a signal handler removes (gw_io_temps.c).
+ * temporaries a signal handler removes (gw_io_temps.c); and the refusal of
+ * an input that grew while it was read (gw_io_grew), which the text sample
+ * reader (layer_sample.c) shares.
  */
 #ifndef GW_IO_IMPL_H
 #define GW_IO_IMPL_H

@@ -528,11 +528,18 @@ int gw_layer_make(const gw_layer_params *lp, const gw_layer_make_params *mp,
  * not call it settled (it was told "E_k = 0 J still above"). The texts
  * `granwave layer-make` prints and Python issues. GW_OK or GW_ENOMEM;
  * GW_EINVAL, nothing added, for a result no run gives (filled by hand):
- * converged other than 0 or 1 (-3 was taken as settled), or an unsettled r
- * with ke_final, floor_load, t_judge or ke_limit NaN, infinite or negative or
- * fall_energy NaN; and for an unsettled r and a t_max not positive and
- * finite. */
+ * one gw_layer_make_result_check refuses, which names why. */
 int gw_layer_make_result_warnings(const gw_layer_make_result *r, double t_max, const char *out, char **list);
+/* Whether r (with t_max, s, the run's) could come from gw_layer_make, as
+ * gw_layer_make_result_warnings takes it: GW_OK, or GW_EINVAL with one line
+ * naming the field, its value and its range ("gw_layer_make_result: ke_final =
+ * nan J is outside [0, inf) ..."): r NULL, converged other than 0 or 1 (-3 was
+ * taken as settled), untrimmed_top_rm NaN, infinite or negative, or an
+ * unsettled r with ke_final, floor_load, ke_limit or t_judge NaN, infinite or
+ * negative, fall_energy NaN, or a t_max not positive and finite. A settled r
+ * is held to converged and untrimmed_top_rm alone (its warnings state no other
+ * number). */
+int gw_layer_make_result_check(const gw_layer_make_result *r, double t_max, gw_err *err);
 
 /* Porosity of the sample in the window x in [0.1, 0.9] W, y in [0.1, 0.8] h,
  * with h = max(y + r): 1 - (area of the union of the discs in the window) /

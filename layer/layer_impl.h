@@ -722,12 +722,21 @@ int layer_clump_shape(double req, double aspect, double angle, double *ox, doubl
  * "sample 'PATH': line L: ..." (lines[k] the file's line of spring k; NULL:
  * "spring at index k"), GW_ENOMEM. */
 int layer_springs_check(const gw_layer_sample *s, const char *path, const long *lines, int status, gw_err *err);
+/* Spring k of s as a record: its pair two particles in [0, n) or a particle
+ * and a wall, its displacement u finite (a sign is a direction along t: any
+ * finite u is a form, the Coulomb bound is layer_springs_check's). status
+ * with "sample 'PATH': spring at index k: spring 0 1: displacement u = nan m
+ * is not a finite number" (lines as layer_springs_check's). The form check's
+ * and layer_springs_check's first rule. */
+int layer_spring_form_check(const gw_layer_sample *s, int k, const char *path, const long *lines, int status,
+                            gw_err *err);
 /* The limits every sample is held to, read from a file, written or built in
  * memory (layer_sample_check.c): n in [1, 1e7] with its x, y and r, the
  * header's fields (width, rm and their scales, volume_ratio, porosity, seed,
  * mass laws), each particle finite, of radius within [1e-3, 1e3] R_m, inside
  * the box to 0.02 r and at most 1e6 R_m high, body ids in [0, n) with each
- * clump connected, n_springs >= 0 with its array and each pair in range, and
+ * clump connected, n_springs >= 0 with its array and each spring's pair in
+ * range and displacement finite, and
  * no two particles of different bodies overlapping by more than 0.05 R_p.
  * status naming the field and the index, "sample 'PATH': particle 17: r =
  * nan m is not a finite number". layer_sample_shape_check is it with
@@ -736,8 +745,9 @@ int layer_springs_check(const gw_layer_sample *s, const char *path, const long *
  * only, layer_sample_form_check). */
 int layer_sample_limits_check(const gw_layer_sample *s, const char *path, int status, gw_err *err);
 /* Its first part, the form of a sample (n and its arrays, width and rm
- * finite and > 0, each particle finite with r > 0, body ids in [0, n), the
- * springs' pairs in range): what the pile's hash needs to read a sample. */
+ * finite and > 0, each particle finite with r > 0, body ids in [0, n), each
+ * spring's pair in range and its displacement finite,
+ * layer_spring_form_check): what the pile's hash needs to read a sample. */
 int layer_sample_form_check(const gw_layer_sample *s, const char *path, int status, gw_err *err);
 /* The porosity of s without its checks (gw_layer_sample_porosity checks s
  * first): for the reader's porosity check and for layer-make, whose sample

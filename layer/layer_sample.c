@@ -35,6 +35,7 @@
 #include <unistd.h>
 
 #include "layer_sample_impl.h"
+#include "gw_io_impl.h"
 #include "gw_locale.h"
 
 #define SAMPLE_LINE_MAX 1024  /* longest header or particle line; comments may be longer */
@@ -168,6 +169,12 @@ typedef struct text_in {
      * that of the bytes parsed. Read again from byte 0 after the parse, a file
      * grown or rewritten in between was hashed over bytes never parsed. */
     unsigned long long hash;
+    /* the file's size at open and the bytes read (pre included): a byte past
+     * that size ends the read (grew set; gw_layer_sample_read refuses the
+     * file). It read to the file's end, so a file appended to while it was
+     * read (a comment line a millisecond) kept it reading without bound. */
+    unsigned long long size, nread;
+    int grew;
     char buf[SAMPLE_LINE_MAX + 1];
     /* layer-make's settings line, a comment "# settings: {JSON}": its JSON
      * (owned, NUL-terminated; NULL: none) and line */
@@ -204,8 +211,15 @@ static int settings_put(text_in *t, int c, gw_err *err)
 
 static int text_getc(text_in *t)
 {
+    if (t->grew)
+        return EOF;
     const int c = t->ipre < t->npre ? t->pre[t->ipre++] : getc(t->fp);
+    if (c != EOF && t->nread >= t->size) { /* one byte past the size at open: no more */
+        t->grew = 1;
+        return EOF;
+    }
     if (c != EOF) {
+        t->nread++;
         const unsigned char b = (unsigned char)c;
         t->last = c;
         t->hash = gw_fnv1a64(t->hash, &b, 1);
@@ -689,9 +703,11 @@ int gw_layer_sample_write(const gw_layer_sample *s, const char *path, const char
  * bytes) or, after a user block, at 512, 1024, 2048, ... (HDF5 looks there
  * too; a valid sample written by h5py with userblock_size=512 was read as
  * text and refused as "NUL byte"); *sb: the superblock version, the byte
- * after the signature (-1: none). The stream is left at offset 8. */
-static int h5_signature_at(FILE *fp, const unsigned char pre[8], int *sb)
+ * after the signature (-1: none); *at: the signature's offset. The stream is
+ * left at offset 8. */
+static int h5_signature_at(FILE *fp, const unsigned char pre[8], int *sb, unsigned long long *at)
 {
+    *at = 0;
     if (memcmp(pre, h5_signature, 8) == 0) {
         *sb = getc(fp);
         return fseek(fp, 8, SEEK_SET) == 0;
@@ -703,9 +719,76 @@ static int h5_signature_at(FILE *fp, const unsigned char pre[8], int *sb)
             break;
         found = memcmp(b, h5_signature, 8) == 0;
         if (found)
-            *sb = getc(fp);
+            *sb = getc(fp), *at = (unsigned long long)off;
     }
     return fseek(fp, 8, SEEK_SET) == 0 && found;
+}
+
+/* An HDF5 sample's superblock (version sb at byte at, after the signature)
+ * against the file's size, before any of it is hashed or opened: a sample
+ * granwave reads has a version 2 or 3 superblock (the 1.8 format and later,
+ * metadata checksummed), whose end-of-file address less its base address
+ * (both absolute as written: the base is the superblock's own offset, 512
+ * behind a user block) is the length from the superblock to where the file
+ * HDF5 wrote ends. The signature and then zeros (written, not sparse: no hole
+ * to find) up to 4 GiB were hashed whole, twice, before the HDF5 library
+ * refused them (a superblock version 0); a real superblock followed by
+ * gigabytes of zeros was hashed whole and then read. Refused here: no
+ * superblock after the signature, a version other than 2 or 3, an address
+ * size HDF5 does not write, an end before the base, a file shorter than its
+ * end (cut short), and bytes past the end over LAYER_SAMPLE_HOLE_MIN and over
+ * half the file (the hole rule's bounds: HDF5 reads past a few, as a copy
+ * with 8 KiB of sparse zeros after its end). GW_EFORMAT naming the file. */
+#define LAYER_SAMPLE_HOLE_MIN (1ULL << 20)
+static int h5_superblock_check(int fd, const char *path, int sb, unsigned long long at, unsigned long long size,
+                               gw_err *err)
+{
+    if (sb < 0)
+        return gw_err_set(err, GW_EFORMAT, "sample '%s': truncated HDF5 file (signature only)", path);
+    if (sb < 2)
+        /* granwave writes its samples in the 1.8 format (layer-make, gw_h5_mem_create
+         * with v18) and its other HDF5 outputs in the default one: a superblock
+         * below 2 is another program's sample or an output that is no sample
+         * (layer-impact's impact.h5 given as --sample said only "write it with
+         * the 1.8 format") */
+        return gw_err_set(err, GW_EFORMAT, "sample '%s': HDF5 file without metadata checksums (superblock "
+                          "version %d): not a sample granwave wrote (layer-make writes the 1.8 format; "
+                          "impact.h5 and granwave's other HDF5 outputs are not samples); a sample written "
+                          "elsewhere needs the 1.8 format or later, e.g. h5py libver='v108'", path, sb);
+    if (sb > 3)
+        return gw_err_set(err, GW_EFORMAT, "sample '%s': HDF5 superblock version %d, not one a sample is read in "
+                          "(2 or 3, the 1.8 format and later): not a sample granwave wrote", path, sb);
+    /* versions 2 and 3: signature, version, size of offsets, size of
+     * lengths, flags, then the base, extension, end-of-file and root
+     * addresses, little-endian */
+    unsigned char b[12 + 3 * 32];
+    const ssize_t got = pread(fd, b, sizeof b, (off_t)at);
+    const int so = got >= 12 ? b[9] : 0;
+    if (so != 2 && so != 4 && so != 8 && so != 16 && so != 32)
+        return gw_err_set(err, GW_EFORMAT, "sample '%s': HDF5 superblock with %d-byte addresses (HDF5 writes 2, 4, "
+                          "8, 16 or 32): corrupt, not a sample granwave wrote", path, so);
+    unsigned long long addr[3] = {0, 0, 0}; /* base, extension, end of file */
+    int big = got < 12 + 3 * so;            /* the superblock cut short: no end to read */
+    for (int a = 0; a < 3 && !big; a++)
+        for (int k = so - 1; k >= 0 && !big; k--) {
+            const unsigned char v = b[12 + a * so + k];
+            big = k >= 8 && v != 0;
+            addr[a] = k >= 8 ? addr[a] : addr[a] << 8 | v;
+        }
+    const unsigned long long base = addr[0], eof = addr[2];
+    if (big || eof < base || eof - base > ~0ULL - at)
+        return gw_err_set(err, GW_EFORMAT, "sample '%s': HDF5 superblock of base address %llu and end-of-file "
+                          "address %llu%s: corrupt, not a sample granwave wrote", path, base, eof,
+                          big ? " (or beyond 2^64)" : "");
+    const unsigned long long end = at + (eof - base);
+    if (end > size)
+        return gw_err_set(err, GW_EFORMAT, "sample '%s': %llu bytes, but its HDF5 superblock says the file ends at "
+                          "byte %llu: cut short (a copy not finished?)", path, size, end);
+    if (size - end > LAYER_SAMPLE_HOLE_MIN && size - end > size / 2)
+        return gw_err_set(err, GW_EFORMAT, "sample '%s': %llu bytes, but its HDF5 superblock says the file ends at "
+                          "byte %llu, and %llu bytes follow it: not a sample granwave wrote", path, size, end,
+                          size - end);
+    return GW_OK;
 }
 
 /* A sample file's holes (SEEK_HOLE: bytes never written, a sparse file's,
@@ -717,7 +800,6 @@ static int h5_signature_at(FILE *fp, const unsigned char pre[8], int *sb)
  * its last 16 bytes), so only holes over half its bytes and over
  * LAYER_SAMPLE_HOLE_MIN refuse one: 4 GiB of sparse zeros after a superblock.
  * The read offset of fd is left as it was. */
-#define LAYER_SAMPLE_HOLE_MIN (1ULL << 20)
 static int hole_check(int fd, const char *path, int h5, const char *what, gw_err *err)
 {
     struct stat st;
@@ -738,29 +820,37 @@ static int hole_check(int fd, const char *path, int h5, const char *what, gw_err
 /* A sample file opened for reading: a regular file only (a FIFO or a device
  * is refused before any read), at most LAYER_SAMPLE_FILE_MAX bytes (a sparse
  * 200 GB file was hashed whole, for minutes, before its first byte was
- * refused), its first bytes in pre (*npre of them), *h5 1 when it is HDF5
- * (*sb its superblock version). The stream is left at offset *npre. */
+ * refused), its size at open in *size (LAYER_SAMPLE_FILE_MAX when fstat
+ * fails: the most any read of it takes), its first bytes in pre (*npre of
+ * them), *h5 1 when it is HDF5 (*sb its superblock version). The stream is
+ * left at offset *npre. */
 static int sample_open(const char *path, FILE **fp, unsigned char pre[8], size_t *npre, int *h5, int *sb,
-                       gw_err *err)
+                       unsigned long long *size, gw_err *err)
 {
-    *h5 = 0, *sb = -1, *npre = 0;
+    *h5 = 0, *sb = -1, *npre = 0, *size = LAYER_SAMPLE_FILE_MAX;
     int rc = gw_input_open(path, "sample", fp, err);
     if (rc != GW_OK)
         return rc;
     struct stat st;
-    if (fstat(fileno(*fp), &st) == 0 && (unsigned long long)st.st_size > LAYER_SAMPLE_FILE_MAX) {
+    if (fstat(fileno(*fp), &st) == 0)
+        *size = st.st_size > 0 ? (unsigned long long)st.st_size : 0;
+    if (*size > LAYER_SAMPLE_FILE_MAX) {
         fclose(*fp);
         *fp = NULL;
         return gw_err_set(err, GW_EFORMAT, "sample '%s': %llu bytes, larger than a sample file may be (%llu "
                           "bytes, 4 GiB): not a sample",
-                          path, (unsigned long long)st.st_size, LAYER_SAMPLE_FILE_MAX);
+                          path, *size, LAYER_SAMPLE_FILE_MAX);
     }
     *npre = fread(pre, 1, 8, *fp);
-    *h5 = *npre == 8 && h5_signature_at(*fp, pre, sb);
+    unsigned long long at = 0;
+    *h5 = *npre == 8 && h5_signature_at(*fp, pre, sb, &at);
     /* an HDF5 sample mostly holes: 4 GiB of sparse zeros after a superblock
      * were hashed whole twice (a minute, three times by a sweep) before the
-     * library refused the file (a text sample's holes: text_zeros_check) */
+     * library refused the file (a text sample's holes: text_zeros_check);
+     * then its superblock against its size, the same zeros written */
     rc = *h5 ? hole_check(fileno(*fp), path, 1, "not a sample granwave wrote", err) : GW_OK;
+    if (rc == GW_OK && *h5)
+        rc = h5_superblock_check(fileno(*fp), path, *sb, at, *size, err);
     if (rc != GW_OK) {
         fclose(*fp);
         *fp = NULL;
@@ -803,7 +893,8 @@ static int sample_rules(const char *path, int *text, gw_err *err)
     unsigned char pre[8];
     size_t npre;
     int h5, sb;
-    int rc = sample_open(path, &fp, pre, &npre, &h5, &sb, err);
+    unsigned long long size;
+    int rc = sample_open(path, &fp, pre, &npre, &h5, &sb, &size, err);
     if (rc != GW_OK)
         return rc;
     *text = !h5;
@@ -864,7 +955,7 @@ int gw_layer_sample_read(const char *path, gw_layer_sample *s, gw_err *err)
     s->mass_law = GW_LAYER_MASS_DISC;
     text_in t = {.path = path, .hash = GW_FNV1A64_INIT};
     int rc, sb = -1, h5 = 0;
-    int orc = sample_open(path, &t.fp, t.pre, &t.npre, &h5, &sb, err);
+    int orc = sample_open(path, &t.fp, t.pre, &t.npre, &h5, &sb, &t.size, err);
     if (orc != GW_OK)
         return orc;
     long *spr_lines = NULL;
@@ -877,7 +968,7 @@ int gw_layer_sample_read(const char *path, gw_layer_sample *s, gw_err *err)
         unsigned long long h0 = 0;
         rc = gw_fnv1a64_file(path, "sample", &h0, err);
         if (rc == GW_OK)
-            rc = layer_sample_h5_read(path, sb, s, err);
+            rc = layer_sample_h5_read(path, s, err);
         if (rc == GW_OK && (rc = gw_fnv1a64_file(path, "sample", &s->content_hash, err)) == GW_OK &&
             s->content_hash != h0)
             rc = gw_err_set(err, GW_EIO, "sample '%s': the file changed while it was read (its content hash "
@@ -899,6 +990,11 @@ int gw_layer_sample_read(const char *path, gw_layer_sample *s, gw_err *err)
             ;
         if (rc == GW_OK && ferror(t.fp))
             rc = gw_err_set(err, GW_EIO, "sample '%s': read failed", path);
+        /* more bytes than its size at open: whatever the parse said of the
+         * bytes it saw (cut at that size, or read on), the file is still
+         * being written (or no file on disk) */
+        if (t.grew)
+            rc = gw_io_grew("sample", path, t.size, err);
         if (rc == GW_OK)
             s->content_hash = t.hash;
         fclose(t.fp);

@@ -676,7 +676,8 @@ static int h5_fields(hid_t f, gw_layer_sample *s, const char *path, const char *
  * it (memory errors found by fuzzing 1.10.8 with superblock-0 files).
  * Superblocks from version 2 on (HDF5 1.8 format and later) come with
  * checksums on all metadata, which HDF5 verifies before decoding: only those
- * files are opened (read_h5, given sb: the superblock version, byte 8 of the file). */
+ * files are opened (the superblock's version is checked where the file is
+ * opened, before it is hashed: h5_superblock_check, layer_sample.c). */
 static int read_h5_locked(const char *path, gw_layer_sample *s, const h5_quiet *q, gw_err *err)
 {
     int rc;
@@ -696,20 +697,9 @@ static int read_h5_locked(const char *path, gw_layer_sample *s, const h5_quiet *
     return rc;
 }
 
-int layer_sample_h5_read(const char *path, int sb, gw_layer_sample *s, gw_err *err)
+int layer_sample_h5_read(const char *path, gw_layer_sample *s, gw_err *err)
 {
-    if (sb < 0)
-        return gw_err_set(err, GW_EFORMAT, "sample '%s': truncated HDF5 file (signature only)", path);
-    if (sb < 2)
-        /* granwave writes its samples in the 1.8 format (layer-make, gw_h5_mem_create
-         * with v18) and its other HDF5 outputs in the default one: a superblock
-         * below 2 is another program's sample or an output that is no sample
-         * (layer-impact's impact.h5 given as --sample said only "write it with
-         * the 1.8 format") */
-        return gw_err_set(err, GW_EFORMAT, "sample '%s': HDF5 file without metadata checksums (superblock "
-                          "version %d): not a sample granwave wrote (layer-make writes the 1.8 format; "
-                          "impact.h5 and granwave's other HDF5 outputs are not samples); a sample written "
-                          "elsewhere needs the 1.8 format or later, e.g. h5py libver='v108'", path, sb);
+    /* (its superblock, version 2 or 3, checked at open: layer_sample.c) */
     gw_h5_section sec;
     h5_quiet q;
     h5_enter(&sec, &q);

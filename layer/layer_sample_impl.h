@@ -76,10 +76,10 @@ int layer_sample_settled_converged(const char *text);
 
 #if GW_HAVE_HDF5
 /* The HDF5 sample (layer_sample_h5.c): s, already checked, written
- * atomically; read (sb: the superblock version, the byte after the
- * signature, -1 when none) into s, which the caller frees on failure. */
+ * atomically; read (its superblock, version 2 or 3, checked at open by
+ * layer_sample.c) into s, which the caller frees on failure. */
 int layer_sample_h5_write(const gw_layer_sample *s, const char *path, const char *header, gw_err *err);
-int layer_sample_h5_read(const char *path, int sb, gw_layer_sample *s, gw_err *err);
+int layer_sample_h5_read(const char *path, gw_layer_sample *s, gw_err *err);
 #endif
 
 #endif

@@ -116,6 +116,21 @@ static const char *spring_where(const long *lines, int k, char out[48])
     return out;
 }
 
+int layer_spring_form_check(const gw_layer_sample *s, int k, const char *path, const long *lines, int status,
+                            gw_err *err)
+{
+    const gw_layer_spring *q = &s->springs[k];
+    const int a = q->a, b = q->b;
+    char where[48], pair[40], us[40];
+    if (a < 0 || a >= s->n || b >= s->n || b < GW_LAYER_SPRING_BOTTOM || a == b)
+        return gw_err_set(err, status, "sample '%s': %s: spring %d %d: the pair must be two particles in [0, %d) "
+                          "or a particle and a wall", path, spring_where(lines, k, where), a, b, s->n);
+    if (!isfinite(q->u))
+        return gw_err_set(err, status, "sample '%s': %s: spring %s: displacement u = %s m is not a finite number",
+                          path, spring_where(lines, k, where), pair_text(a, b, pair), gw_num_text(us, sizeof us, q->u));
+    return GW_OK;
+}
+
 int layer_springs_check(const gw_layer_sample *s, const char *path, const long *lines, int status, gw_err *err)
 {
     if (s->n_springs == 0) /* springs not NULL then: an empty list, as NULL */
@@ -135,15 +150,12 @@ int layer_springs_check(const gw_layer_sample *s, const char *path, const long *
     for (int k = 0; k < s->n_springs; k++) {
         const gw_layer_spring *q = &s->springs[k];
         const int a = q->a, b = q->b;
+        const int rc = layer_spring_form_check(s, k, path, lines, status, err);
+        if (rc != GW_OK)
+            return rc;
         spring_where(lines, k, where);
-        if (a < 0 || a >= s->n || b >= s->n || b < GW_LAYER_SPRING_BOTTOM || a == b)
-            return gw_err_set(err, status, "sample '%s': %s: spring %d %d: the pair must be two particles "
-                              "in [0, %d) or a particle and a wall", path, where, a, b, s->n);
         char pair[40];
         pair_text(a, b, pair);
-        if (!isfinite(q->u))
-            return gw_err_set(err, status, "sample '%s': %s: spring %s: displacement %g is not a finite number",
-                              path, where, pair, q->u);
         if (b >= 0 && s->body && s->body[a] == s->body[b])
             return gw_err_set(err, status, "sample '%s': %s: spring %s: the two discs are one clump (body %d): "
                               "discs of a clump have no contact", path, where, pair, s->body[a]);

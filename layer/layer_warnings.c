@@ -16,31 +16,57 @@
 #include "layer_impl.h"
 #include "gw_locale.h"
 
-/* Whether r could come from gw_layer_make: converged 0 or 1 and, for an
- * unsettled pile, the numbers its warning states finite (or an unknown
- * ke_limit of 0) and not negative. A result filled by hand was read as it
- * was: converged -3 counted as settled, an E_k of NaN was "still above the
- * threshold". (fall_energy is -1 when a run could not count the grains in
- * flight: out of memory; any other sign is taken as it comes.) */
-static int finite_nonneg(double v)
+/* Whether r could come from gw_layer_make: converged 0 or 1, an untrimmed
+ * top finite and not negative (0: none) and, for an unsettled pile, the
+ * numbers its warning states finite (or an unknown ke_limit of 0) and not
+ * negative, with the run's t_max positive and finite. A result filled by hand
+ * was read as it was: converged -3 counted as settled, an E_k of NaN was
+ * "still above the threshold". (fall_energy is -1 when a run could not count
+ * the grains in flight: out of memory; any other sign is taken as it comes.)
+ * Each refusal names the field, its value and the range it is held to, as
+ * the sample's checks name theirs (the warnings' refusal named nothing: the
+ * call has no error argument). */
+static int make_field_check(const char *field, double v, const char *unit, gw_err *err)
 {
-    return v >= 0 && v < INFINITY;
+    if (v >= 0 && v < INFINITY)
+        return GW_OK;
+    char vs[40];
+    return gw_err_set(err, GW_EINVAL, "gw_layer_make_result: %s = %s%s is outside [0, inf) (a finite number, not "
+                      "negative: gw_layer_make gives no other)", field, gw_num_text(vs, sizeof vs, v), unit);
 }
 
-static int make_result_plausible(const gw_layer_make_result *r)
+int gw_layer_make_result_check(const gw_layer_make_result *r, double t_max, gw_err *err)
 {
+    if (!r)
+        return gw_err_set(err, GW_EINVAL, "gw_layer_make_result_check: r is NULL");
     if (r->converged != 0 && r->converged != 1)
-        return 0;
-    return r->converged || (finite_nonneg(r->ke_final) && !isnan(r->fall_energy) && finite_nonneg(r->floor_load) &&
-                            finite_nonneg(r->ke_limit) && finite_nonneg(r->t_judge));
+        return gw_err_set(err, GW_EINVAL, "gw_layer_make_result: converged = %d is neither 0 (not settled) nor 1 "
+                          "(settled)", r->converged);
+    int rc = make_field_check("untrimmed_top_rm", r->untrimmed_top_rm, " R_m", err);
+    if (rc != GW_OK || r->converged) /* a settled result states none of the numbers below */
+        return rc;
+    static const char *const names[4] = {"ke_final", "floor_load", "ke_limit", "t_judge"};
+    static const char *const units[4] = {" J", "", " J", " s"};
+    const double v[4] = {r->ke_final, r->floor_load, r->ke_limit, r->t_judge};
+    for (int k = 0; k < 4 && rc == GW_OK; k++)
+        rc = make_field_check(names[k], v[k], units[k], err);
+    if (rc != GW_OK)
+        return rc;
+    char vs[40];
+    if (isnan(r->fall_energy))
+        return gw_err_set(err, GW_EINVAL, "gw_layer_make_result: fall_energy = nan J is not a number (-1: the "
+                          "grains in flight not counted)");
+    /* the run's t_max, never NaN: it printed "t-max = nan s" */
+    if (!(t_max > 0 && t_max < INFINITY))
+        return gw_err_set(err, GW_EINVAL, "gw_layer_make_result: t_max = %s s is outside (0, inf) (the run's, "
+                          "which the warning of an unsettled result states)", gw_num_text(vs, sizeof vs, t_max));
+    return GW_OK;
 }
 
 int gw_layer_make_result_warnings(const gw_layer_make_result *r, double t_max, const char *out, char **list)
 {
-    if (r && !make_result_plausible(r)) /* before any text: nothing added */
-        return GW_EINVAL;
-    /* the run's t_max, never NaN: it printed "t-max = nan s" */
-    if (r && !r->converged && !(t_max > 0 && t_max < INFINITY))
+    /* before any text: nothing added (gw_layer_make_result_check names why) */
+    if (r && gw_layer_make_result_check(r, t_max, NULL) != GW_OK)
         return GW_EINVAL;
     if (r && r->untrimmed_top_rm > 0) { /* --height-rm asked a trim that took nothing away */
         int rc = gw_warnings_add(list,

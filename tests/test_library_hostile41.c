@@ -89,7 +89,7 @@ static const bad_row bad_rows[] = {
                                         "0.02 R overlap tolerance (x = 0.5, y = -0.05, r = 0.1 m)"},
     {"x < 0, walls removed", 0, -0.05, 1, "particle 1: particle outside the box"},
     {"clump of discs apart", 3, 0, 0, "body 0: its 2 particles do not overlap or touch"},
-    {"spring of NaN displacement", 4, NAN, 0, "spring 0 1: displacement nan is not a finite number"},
+    {"spring of NaN displacement", 4, NAN, 0, "spring 0 1: displacement u = nan m is not a finite number"},
     /* the header: rm 0 passed the check, the run refused its block of radius
      * 0; the others were "x: no soil particle lies under the block" */
     {"rm 0", 6, 0, 0, "sample 's': rm 0 m must be finite and positive"},

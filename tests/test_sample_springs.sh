@@ -158,7 +158,7 @@ with h5py.File("bad.h5", "r+") as f:
     u[3] = math.nan
     f["spring_u"][...] = u
 EOF
-    refused "5 HDF5 spring_u with a NaN" "^granwave layer-impact: sample 'bad.h5': spring at index 3: spring .*: displacement nan is not a finite number" \
+    refused "5 HDF5 spring_u with a NaN" "^granwave layer-impact: sample 'bad.h5': spring at index 3: spring .*: displacement u = nan m is not a finite number" \
         layer-impact --sample bad.h5 --out "$tmp/o"
 else
     echo "(no HDF5 in this build: its round trip skipped)"

@@ -232,13 +232,15 @@ int gw_cmd_wavespeed(int argc, char **argv)
                        : all_err ? "" : " (two speeds: each fit goes through both, no standard error)");
                 printf("  C3: tq %s, front %s, group %s, group/sqrt(3/2) %s (F.27: 2)\n", c[0], c[1], c[2], c[3]);
             }
-            if (!isfinite(c2) && wo.n_held > 0) /* every speed's period left undecided */
-                printf("  period: undecided (columns held by gravity); ");
-            else if (!isfinite(c2)) /* the period is read on columns of 10 beads and more (ws_velocity) */
-                printf("  period: not measured (at some speed no column of 10 beads or more shows two wall-force "
-                       "maxima); ");
+            /* the period null: why is the warning's, printed once (stderr,
+             * and the JSON's warnings): the line said its own reason beside
+             * it, "no column of 10 beads or more shows two maxima" for a
+             * longest column of 9, "held by gravity" for a speed whose
+             * columns were not held */
+            if (!isfinite(c2))
+                printf("  period: n/a (period, c2 and beta_period null: the warning says why); ");
             else if (wo.fitted && !isfinite(wo.beta_period))
-                printf("  period: C2 %.4f, beta undecided (columns held by gravity); ", c2);
+                printf("  period: C2 %.4f, beta n/a (beta_period null: the warning says why); ", c2);
             else if (wo.fitted && isfinite(wo.beta_period_err)) /* its error as the JSON's: damping
                                                                   moved beta to -0.076 +- 0.043 */
                 printf("  period: C2 %.4f, beta %.5f +- %.5f; ", c2, wo.beta_period, wo.beta_period_err);

@@ -30,6 +30,13 @@
 #    body (--sensor-mass, --sensor-stiffness and its period against T_q), in
 #    stderr and --json alike. Control: the rigid wall (K/k = 2.83, no sensor
 #    body) still gets the stiff-wall cause.
+#  4 `dispersion --column-n` ran its collision without the collision's
+#    warnings (chain's: a step above dt-max, an overlap beyond the radius, a
+#    collision cut at t_max) and its JSON, --json and dispersion.json, had no
+#    "warnings" at all, where every command's has the array ([] when none):
+#    a script reading d["warnings"] failed on it. The library's column run
+#    now gives the collision's warnings (gw_chain_result_warnings), printed
+#    and listed as the study mode's.
 # Checks that fail on the code before: see docs/tests.md.
 # shellcheck source=refusal_lib.sh
 . "$2/tests/refusal_lib.sh"
@@ -163,5 +170,15 @@ timeout -s KILL 120 "$GW" wavespeed --n 8:12 --vimp 0.1,0.3 --wall-material rigi
     [ "$(jq_py wr.json '[x for x in d["warnings"] if "much stiffer than the bead contacts, K/k = 2.83" in x] != []')" = True ] &&
     ok "control: the rigid wall's warning names the stiff wall" ||
     ko "control: the rigid wall's warning: $(jq_py wr.json 'd["warnings"]' 2>&1 | head -c 300)"
+
+# --- 4 dispersion --column-n's warnings ---
+rm -rf N
+if timeout -s KILL 120 "$GW" dispersion --column-n 5 --quiet --json --out N >cj.json 2>cj.err; then
+    [ "$(jq_py cj.json 'd.get("warnings")')" = "[]" ] && [ "$(jq_py N/dispersion.json 'd.get("warnings")')" = "[]" ] &&
+        [ ! -s cj.err ] && ok "dispersion --column-n 5: warnings [] in --json and dispersion.json, none on stderr" ||
+        ko "dispersion --column-n 5: warnings $(jq_py cj.json 'd.get("warnings")') / $(jq_py N/dispersion.json 'd.get("warnings")'), stderr: $(head -c 200 cj.err)"
+else
+    ko "dispersion --column-n 5 --json --out N: exit $? ($(head -c 200 cj.err))"
+fi
 
 test_summary test_hostile_fortyseventh

@@ -37,6 +37,14 @@
 #    a script reading d["warnings"] failed on it. The library's column run
 #    now gives the collision's warnings (gw_chain_result_warnings), printed
 #    and listed as the study mode's.
+#  5 layer-make at a --dt of 1e-9 s or less. Its settling advances in chunks
+#    of 0.01 s, each under the solver's default bound of 1e7 steps per call,
+#    while the validation bounds the whole settling at 1e9 steps: `--dt 1e-9
+#    --t-max 0.0102` (1.02e7 steps) ran 1e7 steps and failed, exit 1, "rk4:
+#    more than 10000000 steps before t = 0.01 s", naming no input. A chunk's
+#    bound now covers its steps: the run ends (the pile unsettled at that
+#    t-max: a warning, 'converged 0') with the porosity of the same run at
+#    --dt 1e-8 to 1e-4.
 # Checks that fail on the code before: see docs/tests.md.
 # shellcheck source=refusal_lib.sh
 . "$2/tests/refusal_lib.sh"
@@ -179,6 +187,27 @@ if timeout -s KILL 120 "$GW" dispersion --column-n 5 --quiet --json --out N >cj.
         ko "dispersion --column-n 5: warnings $(jq_py cj.json 'd.get("warnings")') / $(jq_py N/dispersion.json 'd.get("warnings")'), stderr: $(head -c 200 cj.err)"
 else
     ko "dispersion --column-n 5 --json --out N: exit $? ($(head -c 200 cj.err))"
+fi
+
+# --- 5 layer-make at --dt 1e-9 ---
+mk=(layer-make --n 2 --width-rm 5 --rm 1e-5 --t-max 0.0102 --quiet)
+if timeout -s KILL 120 "$GW" "${mk[@]}" --dt 1e-9 --out p9.txt >/dev/null 2>p9.err &&
+    timeout -s KILL 120 "$GW" "${mk[@]}" --dt 1e-8 --out p8.txt >/dev/null 2>/dev/null; then
+    res=$(/usr/bin/python3 - p9.txt p8.txt <<'PYEOF'
+import sys
+def por(f):
+    for l in open(f):
+        if l.startswith("porosity "):
+            return float(l.split()[1])
+a, b = por(sys.argv[1]), por(sys.argv[2])
+conv = any(l.startswith("# settled:") and "converged 0" in l for l in open(sys.argv[1]))
+print(("PASS" if conv and abs(a / b - 1) < 1e-4 else "FAIL") +
+      ": layer-make --dt 1e-9: the sample written (converged 0), porosity %r against %r at dt 1e-8" % (a, b))
+PYEOF
+)
+    case $res in PASS:*) ok "${res#PASS: }" ;; *) ko "${res#FAIL: }" ;; esac
+else
+    ko "layer-make --dt 1e-9 --t-max 0.0102: exit $? ($(head -c 200 p9.err))"
 fi
 
 test_summary test_hostile_fortyseventh

@@ -17,6 +17,7 @@
 #include <unistd.h>
 
 #include "gw_cli.h"
+#include "gw_io_impl.h"
 
 /* arg as a POSIX shell reads it back: as it is when it holds only characters
  * no shell treats specially, else in single quotes ('\'' for a quote), and in
@@ -282,22 +283,16 @@ static void first_missing(const char *path, char *made, size_t n)
 }
 
 /* Remove the empty directories from path up to made (what this run created). */
-void gw_cli_unmake(const char *path, const char *made)
-{
-    char p[4096];
-    size_t lm = strlen(made);
-    if (snprintf(p, sizeof p, "%s", path) >= (int)sizeof p)
-        return;
-    while (strlen(p) >= lm && rmdir(p) == 0) {
-        char *sl = strrchr(p, '/');
-        if (!sl || strlen(p) == lm)
-            return;
-        *sl = '\0';
-    }
-}
+void gw_cli_unmake(const char *path, const char *made) { gw_temps_unmake(path, made); }
 
+/* What it made is also handed to the signal handler's table: a run ended by
+ * SIGINT, SIGTERM or SIGHUP takes it back (if still empty) with its
+ * temporaries; before, it stayed, empty (layer-impact --out NEW). */
 int gw_cli_mkdir_out(const char *path, char *made, size_t n, gw_err *err)
 {
     first_missing(path, made, n);
-    return gw_mkdir_p(path, err);
+    const int rc = gw_mkdir_p(path, err);
+    if (rc == GW_OK && made[0])
+        (void)gw_temps_add_dirs(path, made); /* no slot (out of memory): a signal leaves it, as before */
+    return rc;
 }

@@ -282,6 +282,11 @@ static int run_column(const gw_chain_dispersion_setup *s, const gw_solver_type *
     out->inv_period = 1.0 / r.period;
     out->f_peak_rel_diff = out->sp.f_peak * r.period - 1;
     out->n_maxima = r.n_maxima;
+    /* the collision's own warnings, as chain's (a step above dt-max, an
+     * overlap beyond the radius, a collision cut at t_max): the column mode
+     * had none, and its JSON no "warnings" */
+    if (rc == GW_OK && gw_chain_result_warnings(&r, &out->warnings) != GW_OK)
+        rc = gw_err_set(err, GW_ENOMEM, "dispersion: out of memory");
     gw_chain_result_free(&r);
     gw_chain_trace_free(&tr);
     gw_chain_free(ch);

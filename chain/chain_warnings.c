@@ -367,7 +367,7 @@ int chain_wavespeed_warnings(const gw_chain_wavespeed_outcome *o, const gw_chain
     if (rc != GW_OK || !c || c->iv < 0 || !(o->max_disagreement > WS_DISAGREE_MAX))
         return rc;
     const int iv = c->iv;
-    char why[400];
+    char why[512];
     if (c->soft && c->plateau < 0)
         gw_snprintf(why, sizeof why, "the wall is soft (K = %.3g N/m^1.5, below K_c = %.3g) and every column is "
                     "below its saturation number N_d: F_max still grows, %.4g N at N = %d to %.4g N at N = %d, so "
@@ -379,6 +379,17 @@ int chain_wavespeed_warnings(const gw_chain_wavespeed_outcome *o, const gw_chain
                     "N = %d..%d lie below its saturation number N_d = %d, where F_max is still growing: tau_N "
                     "measures the wall more than the wave there; give --n from %d", p->kwall, c->k_c, o->n_min,
                     c->plateau - 1, c->plateau, c->plateau);
+    else if (c->tq_scatter > WS_TQ_SCATTER_MAX && p->sensor.mass > 0)
+        /* not the wall's stiffness: --sensor-mass 1e-3 --sensor-stiffness 1e6
+         * over N = 8..12 scatters by 0.94 T_q on the default steel wall
+         * (K/k = 1.41, 0.03 without the body), and the text said "as on a
+         * wall much stiffer than the bead contacts, K/k = 1.41" */
+        gw_snprintf(why, sizeof why, "tau_N is not a line over N = %d..%d (its rms residual is %.2g T_q: the last "
+                    "contact opens at times that jump from size to size) with the sensor as a body under the wall "
+                    "(--sensor-mass %.3g kg on --sensor-stiffness %.3g N/m, its own period %.3g T_q), which moves "
+                    "with the column; 4R/T_q is that scatter's: measure the wave speed on the rigid sensor (no "
+                    "--sensor-mass)", o->n_min, o->n_max, c->tq_scatter, p->sensor.mass, p->sensor.stiffness,
+                    2.0 * M_PI * sqrt(p->sensor.mass / p->sensor.stiffness) / o->t_q[iv]);
     else if (c->tq_scatter > WS_TQ_SCATTER_MAX)
         gw_snprintf(why, sizeof why, "tau_N is not a line over N = %d..%d (its rms residual is %.2g T_q: the last "
                     "contact opens at times that jump from size to size, as on a wall much stiffer than the bead "

@@ -517,7 +517,7 @@ typedef struct gw_chain_dispersion_outcome {
     int column_n, n_maxima;
     double inv_period;        /* column mode: 1/P, Hz (NaN: fewer than two maxima) */
     double f_peak_rel_diff;   /* column mode: f_peak P - 1 */
-    char *warnings;           /* gw_chain_dispersion_warnings (dispersion mode; owned; NULL: none) */
+    char *warnings;           /* gw_chain_dispersion_warnings, or the column's gw_chain_result_warnings (owned; NULL: none) */
     /* what ran, resolved from the setup (its defaults filled in): the backend
      * and its settings (method as given, GW_METHOD_DEFAULT when not given;
      * rtol, atol), and in dispersion mode the study's parameters */

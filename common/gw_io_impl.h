@@ -98,6 +98,16 @@ void gw_temps_drop(const char *path);
  * fall back to their paths (called before dirfd is closed). */
 int gw_temps_add_at(const char *path, int dirfd);
 void gw_temps_unbind(int dirfd);
+/* The directory path, which this process made from made (a prefix of path
+ * naming the shallowest directory it made), for gw_temps_remove to take back
+ * after the temporaries: each directory from path up to made is removed if
+ * empty, path only while it is the same directory (device and inode) as when
+ * added. gw_temps_drop(path) forgets it. -1: not added (made not a prefix
+ * of path, path not a directory, no slot). */
+int gw_temps_add_dirs(const char *path, const char *made);
+/* Forget path (gw_temps_drop) and remove now what the handler would: the
+ * empty directories from path up to made. */
+void gw_temps_unmake(const char *path, const char *made);
 
 /* The placing of an output set (gw_outset_commit), a critical section for
  * the handler of gw_temps_on_signals: a signal that comes meanwhile, on any

@@ -42,6 +42,7 @@
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <time.h>
 #include <unistd.h>
 
@@ -62,6 +63,10 @@ typedef struct temp_slot {
     atomic_uint gen;   /* changed at every fill: a reader's copy is checked against it */
     atomic_uint hash;  /* of path: a drop compares it first (a set of thousands of files) */
     atomic_int dirfd;  /* the directory it is in, held open by its output set, or -1 (by path) */
+    atomic_int made;   /* 0: a temporary file; > 0: path is a directory this process made, made the
+                        * length of the shallowest one it made (gw_temps_add_dirs) */
+    dev_t dev;         /* a made directory's identity, set before the slot is live */
+    ino_t ino;
     char path[TEMP_PATH_MAX];
 } temp_slot;
 
@@ -96,6 +101,7 @@ static temp_block *next_block(temp_block *b)
         atomic_init(&nb->slot[i].gen, 0u);
         atomic_init(&nb->slot[i].hash, 0u);
         atomic_init(&nb->slot[i].dirfd, -1);
+        atomic_init(&nb->slot[i].made, 0);
         nb->slot[i].path[0] = '\0';
     }
     atomic_init(&nb->next, NULL);
@@ -108,7 +114,21 @@ static temp_block *next_block(temp_block *b)
 
 int gw_temps_add(const char *path) { return gw_temps_add_at(path, -1); }
 
-int gw_temps_add_at(const char *path, int dirfd)
+static int temps_add(const char *path, int dirfd, size_t made, const struct stat *st);
+
+int gw_temps_add_at(const char *path, int dirfd) { return temps_add(path, dirfd, 0, NULL); }
+
+int gw_temps_add_dirs(const char *path, const char *made)
+{
+    const size_t lm = made ? strlen(made) : 0;
+    struct stat st;
+    if (!path || lm == 0 || strncmp(path, made, lm) != 0 || (path[lm] != '\0' && path[lm] != '/') ||
+        stat(path, &st) != 0 || !S_ISDIR(st.st_mode))
+        return -1;
+    return temps_add(path, -1, lm, &st);
+}
+
+static int temps_add(const char *path, int dirfd, size_t made, const struct stat *st)
 {
     const size_t n = path ? strlen(path) : 0;
     if (n == 0 || n >= TEMP_PATH_MAX)
@@ -125,6 +145,9 @@ int gw_temps_add_at(const char *path, int dirfd)
             memcpy(t->path, path, n + 1);
             atomic_store(&t->hash, h);
             atomic_store(&t->dirfd, dirfd < 0 ? -1 : dirfd);
+            atomic_store(&t->made, (int)made);
+            t->dev = st ? st->st_dev : 0;
+            t->ino = st ? st->st_ino : 0;
             atomic_fetch_add(&t->gen, 1);
             atomic_store(&t->state, SLOT_LIVE);
             return base + i;
@@ -176,16 +199,62 @@ void gw_temps_unbind(int dirfd)
  * it was made under, and a SIGINT, SIGTERM or SIGHUP that came after --out
  * was moved (mv D D.old) or replaced left every staged temporary in D.old and
  * looked for them in whatever D was now. */
+/* Then the directories made for them (gw_temps_add_dirs), emptied by the
+ * first pass: each removed from the deepest up to the shallowest made, by
+ * rmdir (only an empty one goes), the deepest only while it is still the
+ * directory that was made (lstat: one moved away and another in its place
+ * stays). Before, a command that made --out (layer-impact, whose run
+ * stages its snapshots there) and was ended by a signal left it empty. */
+static void rmdirs_up(char *copy, size_t len, size_t made)
+{
+    while (rmdir(copy) == 0) {
+        const size_t prev = len;
+        while (len > made && copy[len - 1] == '/') /* its trailing slashes, its last name, the slashes before */
+            len--;
+        while (len > made && copy[len - 1] != '/')
+            len--;
+        while (len > made && copy[len - 1] == '/')
+            len--;
+        if (len < made || len == prev || len == 0)
+            return;
+        copy[len] = '\0';
+    }
+}
+
+static void remove_made_dir(char *copy, size_t len, size_t made, dev_t dev, ino_t ino)
+{
+    struct stat st;
+    if (lstat(copy, &st) == 0 && S_ISDIR(st.st_mode) && st.st_dev == dev && st.st_ino == ino)
+        rmdirs_up(copy, len, made);
+}
+
+void gw_temps_unmake(const char *path, const char *made)
+{
+    char copy[TEMP_PATH_MAX];
+    const size_t n = path ? strlen(path) : 0, lm = made ? strlen(made) : 0;
+    if (!path)
+        return;
+    gw_temps_drop(path);
+    if (lm == 0 || n >= sizeof copy || strncmp(path, made, lm) != 0)
+        return;
+    memcpy(copy, path, n + 1);
+    rmdirs_up(copy, n, lm);
+}
+
 void gw_temps_remove(void)
 {
     char copy[TEMP_PATH_MAX];
+    for (int dirs = 0; dirs <= 1; dirs++)
     for (temp_block *b = &first; b; b = atomic_load(&b->next))
         for (int i = 0; i < TEMPS_BLOCK; i++) {
             temp_slot *t = &b->slot[i];
-            if (atomic_load(&t->state) != SLOT_LIVE)
+            if (atomic_load(&t->state) != SLOT_LIVE || (atomic_load(&t->made) > 0) != dirs)
                 continue;
             const unsigned g = atomic_load(&t->gen);
             const int dfd = atomic_load(&t->dirfd);
+            const size_t made = (size_t)atomic_load(&t->made);
+            const dev_t dev = t->dev;
+            const ino_t ino = t->ino;
             size_t k = 0, base = 0;
             for (; k + 1 < sizeof copy && t->path[k]; k++) { /* no memcpy: a byte loop is safe in a handler */
                 copy[k] = t->path[k];
@@ -195,7 +264,9 @@ void gw_temps_remove(void)
             copy[k] = '\0';
             if (atomic_load(&t->state) != SLOT_LIVE || atomic_load(&t->gen) != g)
                 continue;
-            if (dfd >= 0)
+            if (dirs)
+                remove_made_dir(copy, k, made, dev, ino);
+            else if (dfd >= 0)
                 unlinkat(dfd, copy + base, 0);
             else
                 unlink(copy);

@@ -355,6 +355,13 @@ static int settle(const gw_layer_params *lp, const gw_layer_make_params *m, doub
         return rc;
     gw_solver_params sp = gw_solver_params_default();
     sp.dt = m->dt;
+    /* the steps of one chunk (an advance call): the solver's default bound,
+     * 1e7 per call, failed every dt at or below 1e-9 s in the first chunk,
+     * after 1e7 steps and naming no input, where the validation's bound on
+     * the whole settling (1e9 steps to t-max) let the run through */
+    const double chunk_steps = ceil(fmin(SETTLE_CHUNK, t_max) / m->dt) + 2;
+    if (chunk_steps > (double)sp.max_steps)
+        sp.max_steps = (long)chunk_steps;
     rc = gw_layer_start(L, m->solver, &sp, err);
     *conv = 0;
     /* the lowest body falls freely for t_land = sqrt(2 gap / g) before anything

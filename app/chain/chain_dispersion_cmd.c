@@ -407,6 +407,8 @@ static int disp_column(const disp_cli *c, const gw_opt *opts, int argc, char **a
         cJSON_AddNumberToObject(js, "n_maxima", r.n_maxima);
         cJSON_AddStringToObject(js, "fftw_planner", c->measure ? "measure" : "estimate");
         disp_wisdom_json(js, c);
+        gw_cli_warnings("dispersion", out.warnings);   /* the column's collision's, as chain's */
+        gw_cli_json_warnings(js, out.warnings);        /* and in dispersion.json and --json, [] when none */
         { /* "settings", as every command's JSON (formats.md): the run's settings above, again */
             static const char *const keys[] = {"column_n", "v_imp", "solver", "method", "rtol", "atol", "mass", "k",
                                                "kwall", "radius", "dt_out", "fftw_planner"};

@@ -264,12 +264,9 @@ int gw_cmd_falcon(int argc, char **argv)
         code = chain_cli_fail_rc(rc0, err.msg);
         goto out;
     }
-    char made[4096] = ""; /* what --out this run creates, taken back on a refusal */
-    if (f.c.out && gw_cli_mkdir_out(f.c.out, made, sizeof made, &err) != GW_OK) {
-        fprintf(stderr, "granwave falcon --out: %s\n", err.msg); /* the library's message names the path only */
-        code = 2;
-        goto out;
-    }
+    /* --out was checked by chain_cli_resolve, before the work, and is made
+     * only to write (as chain's): a run that fails or is interrupted leaves
+     * no directory it made */
     int ncase = nv * (f.n_hi - f.n_lo + 1);
     /* progress within the collisions (the study's watch): the first line at
      * 2 s however long the first collision, then at a bounded interval, the
@@ -301,8 +298,6 @@ int gw_cmd_falcon(int argc, char **argv)
             fprintf(stderr, "granwave falcon: %s\n", err.msg);
         }
         code = rc == GW_EINVAL ? 2 : 1;
-        if (rc == GW_EINVAL && made[0])
-            gw_cli_unmake(f.c.out, made);
         goto out;
     }
     if (f.o.accuracy > 0) { /* what the library ran, for the settings reported */
@@ -325,7 +320,9 @@ int gw_cmd_falcon(int argc, char **argv)
         char path[4096];
         gw_outset oset; /* all of this run's files in place, or none (and the earlier run's as they were) */
         memset(&oset, 0, sizeof oset);
-        rc = hdr ? gw_outset_begin(&oset, f.c.out, falcon_files, &err) : gw_err_set(&err, GW_ENOMEM, "out of memory");
+        rc = hdr ? gw_mkdir_p(f.c.out, &err) : gw_err_set(&err, GW_ENOMEM, "out of memory");
+        if (rc == GW_OK)
+            rc = gw_outset_begin(&oset, f.c.out, falcon_files, &err);
         if (rc == GW_OK)
             rc = write_tables(&f, f.c.out, hdr, &err);
         if (rc == GW_OK)

@@ -119,10 +119,9 @@ int gw_cmd_softwall(int argc, char **argv)
         return chain_cli_study_fail("softwall", src, err.msg);
     c.params.n = (int)a;
     c.params.v_imp = vimp;
-    char made[4096] = ""; /* what --out this run creates, taken back on a refusal */
+    /* --out checked here, before the work, and made only to write (as chain's):
+     * a run that fails or is interrupted leaves no directory it made */
     int rrc = chain_cli_resolve(&c, opts, "softwall", &err);
-    if (rrc == GW_OK && c.out)
-        rrc = gw_cli_mkdir_out(c.out, made, sizeof made, &err);
     if (rrc != GW_OK) {
         chain_cli_free(&c);
         return chain_cli_fail_rc(rrc, err.msg);
@@ -155,8 +154,6 @@ int gw_cmd_softwall(int argc, char **argv)
         gw_cli_study_error(gw_chain_softwall_setup_params(), "softwall", rc, &err);
         fprintf(stderr, "granwave %s\n", err.msg);
         code = rc == GW_EINVAL ? 2 : 1;
-        if (rc == GW_EINVAL && made[0])
-            gw_cli_unmake(c.out, made);
     } else {
         cJSON *o = cJSON_CreateObject();
         cJSON_AddStringToObject(o, "version", gw_version());
@@ -213,7 +210,7 @@ int gw_cmd_softwall(int argc, char **argv)
         chain_cli_settings_runs(set, so.ncase, so.t_max, so.dt_out, so.dt, so.dt_max);
         cJSON_AddItemToObject(o, "settings", set);
         char path[4096];
-        if (c.out && (gw_path_join(path, sizeof path, c.out, sw_files[0]) != GW_OK ||
+        if (c.out && (gw_mkdir_p(c.out, &err) != GW_OK || gw_path_join(path, sizeof path, c.out, sw_files[0]) != GW_OK ||
                       gw_json_write(path, o, &err) != GW_OK)) {
             fprintf(stderr, "granwave softwall --out: %s\n", err.msg);
             code = 1;

@@ -82,10 +82,9 @@ int gw_cmd_wavespeed(int argc, char **argv)
     }
     c.params.n = (int)b;
     c.params.v_imp = v[0];
-    char made[4096] = ""; /* what --out this run creates, taken back on a refusal */
+    /* --out checked here, before the work, and made only to write (as chain's):
+     * a run that fails or is interrupted leaves no directory it made */
     int rrc = chain_cli_resolve(&c, opts, "wavespeed", &err);
-    if (rrc == GW_OK && c.out)
-        rrc = gw_cli_mkdir_out(c.out, made, sizeof made, &err);
     if (rrc != GW_OK) {
         free(v);
         chain_cli_free(&c);
@@ -117,8 +116,6 @@ int gw_cmd_wavespeed(int argc, char **argv)
             gw_cli_study_error(gw_chain_wavespeed_setup_params(), "wavespeed", rc, &err);
         fprintf(stderr, "granwave %s\n", err.msg);
         code = rc == GW_EINVAL ? 2 : 1;
-        if (rc == GW_EINVAL && made[0])
-            gw_cli_unmake(c.out, made);
     } else {
         const double *v_tq = wo.v_tq, *v_front = wo.v_front, *v_group = wo.v_group, *v_gf = wo.v_group_front;
         const double *t_q = wo.t_q, *fbar = wo.mean_wall_force, *period = wo.period;
@@ -172,7 +169,7 @@ int gw_cmd_wavespeed(int argc, char **argv)
             memset(&oset, 0, sizeof oset);
             char *hdr = gw_cli_one_line(gw_cli_provenance("wavespeed", argc, argv, set), ' ');
             if ((!hdr && gw_err_set(&err, GW_ENOMEM, "out of memory") != GW_OK) ||
-                gw_outset_begin(&oset, c.out, ws_files, &err) != GW_OK ||
+                gw_mkdir_p(c.out, &err) != GW_OK || gw_outset_begin(&oset, c.out, ws_files, &err) != GW_OK ||
                 gw_path_join(path, sizeof path, c.out, "wavespeed.csv") != GW_OK ||
                 gw_afile_open(&af, path, &err) != GW_OK) {
                 code = 1;

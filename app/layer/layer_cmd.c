@@ -725,7 +725,11 @@ int gw_cmd_layer_impact(int argc, char **argv)
         gw_err cerr = {{0}};
         if (oset.active && gw_outset_commit(&oset, &cerr) != GW_OK) /* the snapshots of the failed run */
             fprintf(stderr, "granwave layer-impact --out: %s\n", cerr.msg);
-        fprintf(stderr, "granwave layer-impact: %s\n", err.msg);
+        if ((rc == GW_EINVAL || rc == GW_EUNSUPPORTED) && !vc.failed) { /* "dt: ..." -> "layer-impact --dt: ...", as the plan's */
+            gw_cli_study_error(gw_layer_impact_setup_params(), "layer-impact", rc, &err);
+            fprintf(stderr, "granwave %s\n", err.msg);
+        } else
+            fprintf(stderr, "granwave layer-impact: %s\n", err.msg);
         return rc == GW_EINVAL || rc == GW_EUNSUPPORTED ? 2 : 1;
     }
     c.settled_q = r.settled_load_ratio;

@@ -1,0 +1,451 @@
+/*
+ * test_library_hostile47.c: the forty-seventh hostile pass over the library's
+ * C interface (docs/library.md "The contract of every call"): the snapshot
+ * writers, a count sum, the closed forms and the boundary fit.
+ *   - gw_layer_write_vtk wrote its title as given into the format's one-line
+ *     header: a newline in it made the file's third line the title's rest
+ *     where VTK's readers want "ASCII"; a NULL title was written "(null)";
+ *     a title cut at 120 bytes could end inside a UTF-8 character. The title
+ *     is now one line (\n, \r, \t, \xHH as in messages), cut between
+ *     characters, and a NULL title refused naming it, nothing written.
+ *   - gw_layer_write_pvd wrote file names into an XML attribute as given: a
+ *     '"', '&' or '<' made the collection no XML. They are written as
+ *     entities; a name with a control character or a byte of no whole UTF-8
+ *     character (no XML file holds them) is refused naming the snapshot,
+ *     nothing written. Controls: plain and UTF-8 names as before.
+ *   - gw_chain_falcon_speeds summed its two counts in an int: INT_MAX + 1
+ *     overflowed (undefined; the sanitizer's report) and a wrapped total was
+ *     told "no impact velocity (vimp and heights both empty)". A total above
+ *     INT_MAX is refused naming n_vimp + n_heights; gw_chain_falcon_run
+ *     summed its lists' counts before its range check the same way.
+ *   - The closed forms of one bead on a wall (gw_chain_tau1, _dmax1, _fmax1)
+ *     and gw_chain_tq_theory gave finite values outside their domain (a
+ *     negative mass and K: their ratio is positive; v = -1 the overlap and
+ *     force of +1 where tau_1 was NaN; a mass of 0 a zero overlap);
+ *     gw_sheet_kwall a negative wall coefficient for a negative mass;
+ *     gw_chain_disp_omega inf for a mass of 0. Each is NaN now, as
+ *     gw_chain_kc of a negative k. Controls: the forms against their laws
+ *     (the peak's elastic energy (2/5) K d^(5/2) equal to (1/2) m v^2, F =
+ *     K d^(3/2), the sheet's tau_1/2 its measured tau_max(N = 1), K_eff in
+ *     proportion to m).
+ *   - gw_stats_b31_fit_points took a free_mask with bits of no parameter (-1,
+ *     0xff: as its low four); refused naming it. Control: the fit of test
+ *     points as before.
+ * Each case runs in its own child process (test_child.h).
+ */
+#define _POSIX_C_SOURCE 200809L
+#include <limits.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "granwave.h"
+#include "test_child.h"
+
+static char dir[64];
+
+static void path_of(char *buf, size_t n, const char *name)
+{
+    snprintf(buf, n, "%s/%s", dir, name);
+}
+
+/* the file's text (caller frees), NULL when it is not there */
+static char *slurp(const char *path)
+{
+    FILE *fp = fopen(path, "rb");
+    if (!fp)
+        return NULL;
+    char *buf = calloc(1 << 16, 1);
+    size_t got = buf ? fread(buf, 1, (1 << 16) - 1, fp) : 0;
+    (void)got;
+    fclose(fp);
+    return buf;
+}
+
+/* the n-th line (from 1) of text into out, without its newline */
+static int line_of(const char *text, int n, char *out, size_t size)
+{
+    const char *p = text;
+    for (int i = 1; i < n && p; i++) {
+        p = strchr(p, '\n');
+        p = p ? p + 1 : NULL;
+    }
+    if (!p)
+        return 0;
+    size_t len = strcspn(p, "\n");
+    if (len >= size)
+        return 0;
+    memcpy(out, p, len);
+    out[len] = '\0';
+    return 1;
+}
+
+/* ---------------------------------------------------------------- VTK ---- */
+
+static gw_layer *three_discs(void)
+{
+    gw_layer_body b[3] = {
+        {.x = 0.5, .y = 0.3, .r = 0.3}, {.x = 1.2, .y = 0.3, .r = 0.3}, {.x = 0.85, .y = 0.9, .r = 0.3}};
+    gw_layer_params p = gw_layer_params_default();
+    gw_layer *L = NULL;
+    gw_err e = {0};
+    if (gw_layer_create(&p, 3, b, &L, &e) != GW_OK)
+        printf("gw_layer_create: %s\n", e.msg);
+    return L;
+}
+
+/* the snapshot of title: GW_OK, its second line wanted (the title's part
+ * before " (granwave"), its third "ASCII" and the points' count after */
+static int vtk_title(const char *title, const char *want)
+{
+    gw_layer *L = three_discs();
+    EXPECT(L);
+    char path[128], line[512];
+    path_of(path, sizeof path, "t.vtk");
+    gw_err e = {0};
+    const int rc = gw_layer_write_vtk(L, path, title, &e);
+    gw_layer_free(L);
+    if (rc != GW_OK) {
+        printf("status %d: %s\n", rc, e.msg);
+        return 1;
+    }
+    char *text = slurp(path);
+    unlink(path);
+    EXPECT(text);
+    int ok = line_of(text, 2, line, sizeof line);
+    char *mark = ok ? strstr(line, " (granwave ") : NULL;
+    if (mark)
+        *mark = '\0';
+    if (!mark || strcmp(line, want) != 0) {
+        printf("title line '%s', wanted '%s'\n", line, want);
+        free(text);
+        return 1;
+    }
+    ok = line_of(text, 3, line, sizeof line) && strcmp(line, "ASCII") == 0 && line_of(text, 8, line, sizeof line) &&
+         strcmp(line, "POINTS 3 double") == 0;
+    free(text);
+    EXPECT(ok);
+    return 0;
+}
+
+static int c_vtk_title_newline(void)
+{
+    return vtk_title("run 1\nrun 2\r\tend", "run 1\\nrun 2\\r\\tend");
+}
+
+static int c_vtk_title_escape(void)
+{
+    return vtk_title("a\x1b[31mred", "a\\x1b[31mred");
+}
+
+/* "a" and 100 two-byte characters: 201 bytes, cut at 120 inside the 60th */
+static int c_vtk_title_utf8_cut(void)
+{
+    char title[256] = "a", want[256] = "a";
+    for (int i = 0; i < 100; i++)
+        strcat(title, "\xc3\xa9");
+    for (int i = 0; i < 59; i++)
+        strcat(want, "\xc3\xa9");
+    return vtk_title(title, want);
+}
+
+static int c_vtk_title_plain(void) /* control */
+{
+    return vtk_title("layer impact, t = 0", "layer impact, t = 0");
+}
+
+static int c_vtk_title_null(void)
+{
+    gw_layer *L = three_discs();
+    EXPECT(L);
+    char path[128];
+    path_of(path, sizeof path, "n.vtk");
+    gw_err e = {0};
+    const int rc = gw_layer_write_vtk(L, path, NULL, &e);
+    gw_layer_free(L);
+    EXPECT(refused(rc, &e, "title is NULL"));
+    EXPECT(access(path, F_OK) != 0);
+    return 0;
+}
+
+/* ---------------------------------------------------------------- PVD ---- */
+
+static int pvd_written(const char *name, const char *attr)
+{
+    char path[128], want[512];
+    path_of(path, sizeof path, "s.pvd");
+    const char *files[2] = {"snapshot_0.vtk", name};
+    const double times[2] = {0, 0.25};
+    gw_err e = {0};
+    const int rc = gw_layer_write_pvd(path, 2, files, times, &e);
+    if (rc != GW_OK) {
+        printf("status %d: %s\n", rc, e.msg);
+        return 1;
+    }
+    char *text = slurp(path);
+    unlink(path);
+    EXPECT(text);
+    snprintf(want, sizeof want, "    <DataSet timestep=\"0.25\" group=\"\" part=\"0\" file=\"%s\"/>\n", attr);
+    const int ok = strstr(text, want) != NULL && strstr(text, "file=\"snapshot_0.vtk\"/>\n") != NULL;
+    if (!ok)
+        printf("pvd '%s' has no line '%s'\n", text, want);
+    free(text);
+    return ok ? 0 : 1;
+}
+
+static int c_pvd_entities(void)
+{
+    return pvd_written("a&b<\"c\">'d'.vtk", "a&amp;b&lt;&quot;c&quot;&gt;&apos;d&apos;.vtk");
+}
+
+static int c_pvd_plain(void) /* control */
+{
+    return pvd_written("snapshot_end.vtk", "snapshot_end.vtk");
+}
+
+static int c_pvd_utf8(void) /* control: a UTF-8 name as it is */
+{
+    return pvd_written("caf\xc3\xa9/end.vtk", "caf\xc3\xa9/end.vtk");
+}
+
+static int pvd_refused(const char *name, const char *what)
+{
+    char path[128];
+    path_of(path, sizeof path, "r.pvd");
+    const char *files[2] = {"snapshot_0.vtk", name};
+    const double times[2] = {0, 0.25};
+    gw_err e = {0};
+    const int rc = gw_layer_write_pvd(path, 2, files, times, &e);
+    EXPECT(refused(rc, &e, "snapshot 1"));
+    EXPECT(refused(rc, &e, what));
+    EXPECT(access(path, F_OK) != 0);
+    return 0;
+}
+
+static int c_pvd_newline(void)
+{
+    return pvd_refused("b\n.vtk", "a control character at byte 2");
+}
+
+static int c_pvd_latin1(void)
+{
+    return pvd_refused("caf\xe9.vtk", "no whole UTF-8 character at byte 4");
+}
+
+/* ------------------------------------------------------------- counts ---- */
+
+static int speeds_overflow(int nv, int nh)
+{
+    double vimp[1] = {0.3}, heights[1] = {5.1}, v[2], h[2];
+    gw_err e = {0};
+    const int rc = gw_chain_falcon_speeds(vimp, nv, heights, nh, 9.81, v, h, &e);
+    EXPECT(refused(rc, &e, "n_vimp + n_heights"));
+    return 0;
+}
+
+static int c_speeds_max_max(void)
+{
+    return speeds_overflow(INT_MAX, INT_MAX);
+}
+
+static int c_speeds_max_one(void)
+{
+    return speeds_overflow(INT_MAX, 1);
+}
+
+static int c_speeds_one_max(void)
+{
+    return speeds_overflow(1, INT_MAX);
+}
+
+static int c_speeds_control(void)
+{
+    double vimp[1] = {0.3}, heights[1] = {5.1}, v[2], h[2];
+    gw_err e = {0};
+    EXPECT(gw_chain_falcon_speeds(vimp, 1, heights, 1, 9.81, v, h, &e) == GW_OK);
+    EXPECT(v[0] == 0.3 && isnan(h[0]) && h[1] == 5.1);
+    EXPECT(fabs(v[1] - sqrt(2 * 9.81 * 5.1e-3)) <= 1e-15);
+    return 0;
+}
+
+static int c_falcon_run_counts(void)
+{
+    gw_chain_falcon_setup s;
+    EXPECT(gw_chain_falcon_setup_init(&s) == GW_OK);
+    const int keep = s.heights.n;
+    s.heights.n = INT_MAX;
+    gw_chain_falcon_outcome o = {0};
+    gw_err e = {0};
+    const int rc = gw_chain_falcon_run(&s, NULL, NULL, &o, &e);
+    s.heights.n = keep;
+    gw_chain_falcon_outcome_free(&o);
+    gw_chain_falcon_setup_clear(&s);
+    EXPECT(refused(rc, &e, "heights"));
+    return 0;
+}
+
+/* -------------------------------------------------------- closed forms ---- */
+
+static int c_closed_forms_domain(void)
+{
+    const double bad[][3] = {{-1, -1, 0.3}, {0, 1e9, 0.3}, {1e-3, 1e9, -1}, {1e-3, -1e9, 0.3}, {1e-3, 0, 0.3},
+                             {NAN, 1e9, 0.3}, {1e-3, NAN, 0.3}, {1e-3, 1e9, NAN}, {INFINITY, 1e9, 0.3}};
+    for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
+        const double m = bad[i][0], K = bad[i][1], v = bad[i][2];
+        const double t = gw_chain_tau1(m, K, v), d = gw_chain_dmax1(m, K, v), f = gw_chain_fmax1(m, K, v),
+                     q = gw_chain_tq_theory(m, K, v);
+        if (!isnan(t) || !isnan(d) || !isnan(f) || !isnan(q)) {
+            printf("m %g K %g v %g: tau1 %g dmax1 %g fmax1 %g t_q %g (wanted NaN)\n", m, K, v, t, d, f, q);
+            return 1;
+        }
+    }
+    return 0;
+}
+
+/* steel bead of 1 mm on a Hertz wall: the peak's elastic energy is the
+ * kinetic one, F = K d^(3/2), tau_1 = 2.943 (5 m / 4 K)^(2/5) v^(-1/5) */
+static int c_closed_forms_laws(void)
+{
+    const double m = 3.27e-5, K = 1.33e10;
+    for (double v = 1e-3; v < 10; v *= 7.3) {
+        const double d = gw_chain_dmax1(m, K, v), f = gw_chain_fmax1(m, K, v), t = gw_chain_tau1(m, K, v);
+        EXPECT(fabs(0.4 * K * pow(d, 2.5) - 0.5 * m * v * v) <= 1e-12 * 0.5 * m * v * v);
+        EXPECT(fabs(f - K * pow(d, 1.5)) <= 1e-12 * f);
+        EXPECT(fabs(t - gw_chain_tau_constant() * pow(1.25 * m / K, 0.4) * pow(v, -0.2)) <= 1e-12 * t);
+        const double tq = 2 * pow(m / K, 0.4) * pow(v, -0.2);
+        EXPECT(fabs(gw_chain_tq_theory(m, K, v) - tq) <= 1e-12 * tq);
+    }
+    EXPECT(fabs(gw_chain_tau_constant() - 2.9432) <= 1e-4); /* (4/5) B(2/5, 1/2) */
+    EXPECT(gw_chain_dmax1(m, K, 0) == 0 && isinf(gw_chain_tau1(m, K, 0))); /* at rest: the forms' limits */
+    return 0;
+}
+
+static int c_sheet_kwall_domain(void)
+{
+    const gw_sheet *s = gw_sheet_find("brass");
+    EXPECT(s);
+    const double bad[] = {-1, 0, -0.0, NAN, INFINITY, -INFINITY};
+    for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++)
+        if (!isnan(gw_sheet_kwall(s, bad[i]))) {
+            printf("gw_sheet_kwall(brass, %g) = %g (wanted NaN)\n", bad[i], gw_sheet_kwall(s, bad[i]));
+            return 1;
+        }
+    return 0;
+}
+
+/* control: every sheet's K_eff gives its measured tau_max(N = 1) as tau_1 / 2
+ * at v = sqrt(2 g 2.9 mm), and grows in proportion to m */
+static int c_sheet_kwall_law(void)
+{
+    const double m = 3.27e-5, v = sqrt(2 * GW_CHAIN_G_EARTH * 2.9e-3);
+    int seen = 0;
+    for (int i = 0; i < gw_sheet_count(); i++) {
+        const gw_sheet *s = gw_sheet_get(i);
+        if (!s || !(s->tau_max1_us > 0))
+            continue;
+        const double K = gw_sheet_kwall(s, m);
+        EXPECT(K > 0);
+        EXPECT(fabs(0.5 * gw_chain_tau1(m, K, v) - 1e-6 * s->tau_max1_us) <= 1e-12 * 1e-6 * s->tau_max1_us);
+        EXPECT(fabs(gw_sheet_kwall(s, 2 * m) - 2 * K) <= 1e-14 * K);
+        seen++;
+    }
+    EXPECT(seen >= 3);
+    return 0;
+}
+
+static int c_disp_omega(void)
+{
+    EXPECT(isnan(gw_chain_disp_omega(1e6, 0, 1)));
+    EXPECT(isnan(gw_chain_disp_omega(1e6, -1, 1)));
+    EXPECT(isnan(gw_chain_disp_omega(-1e6, 1e-3, 1)));
+    EXPECT(isnan(gw_chain_disp_omega(1e6, NAN, 1)));
+    /* control: the zone edge qa = pi at 2 sqrt(kappa/m) */
+    EXPECT(fabs(gw_chain_disp_omega(1e6, 1e-3, acos(-1.0)) - 2 * sqrt(1e9)) <= 1e-12 * 2 * sqrt(1e9));
+    return 0;
+}
+
+/* ------------------------------------------------------------- B.31 fit ---- */
+
+static const double fx[6] = {1, 1.5, 2, 3, 4, 5}, fh[6] = {9, 4.2, 3.1, 2.6, 2.7, 3};
+static const gw_stats_b31 fstart = {.offset = 0, .beta = 1, .a_over_b = 1, .tan_gamma = 1};
+
+static int fit_refused(int mask, const char *what)
+{
+    gw_stats_b31_fit f;
+    gw_err e = {0};
+    const int rc = gw_stats_b31_fit_points(fx, fh, 6, &fstart, mask, &f, &e);
+    EXPECT(refused(rc, &e, what));
+    return 0;
+}
+
+static int c_fit_mask_all_bits(void)
+{
+    return fit_refused(-1, "free_mask 0xffffffff");
+}
+
+static int c_fit_mask_byte(void)
+{
+    return fit_refused(0xff, "free_mask 0xff");
+}
+
+static int c_fit_mask_high(void)
+{
+    return fit_refused(16 | GW_STATS_B31_BETA | GW_STATS_B31_AB, "free_mask 0x16");
+}
+
+static int c_fit_control(void)
+{
+    gw_stats_b31_fit f;
+    gw_err e = {0};
+    EXPECT(gw_stats_b31_fit_points(fx, fh, 6, &fstart, GW_STATS_B31_BETA | GW_STATS_B31_AB, &f, &e) == GW_OK);
+    EXPECT(f.converged && f.p.beta >= 0 && f.p.beta <= 1 && f.p.a_over_b > 0 && isfinite(f.rms));
+    /* the fitted curve's residuals: their rms as reported */
+    double ss = 0;
+    for (int i = 0; i < 6; i++) {
+        const double r = gw_stats_b31_eval(&f.p, fx[i]) - fh[i];
+        ss += r * r;
+    }
+    EXPECT(fabs(sqrt(ss / 6) - f.rms) <= 1e-9 * (1 + f.rms));
+    return 0;
+}
+
+static const child_row rows[] = {
+    {"vtk title with a newline, CR and tab: one line", c_vtk_title_newline},
+    {"vtk title with an escape sequence: one line", c_vtk_title_escape},
+    {"vtk title cut between UTF-8 characters", c_vtk_title_utf8_cut},
+    {"vtk plain title (control)", c_vtk_title_plain},
+    {"vtk NULL title refused, nothing written", c_vtk_title_null},
+    {"pvd name with & < > \" ': entities", c_pvd_entities},
+    {"pvd plain name (control)", c_pvd_plain},
+    {"pvd UTF-8 name (control)", c_pvd_utf8},
+    {"pvd name with a newline refused", c_pvd_newline},
+    {"pvd Latin-1 name refused", c_pvd_latin1},
+    {"falcon speeds INT_MAX + INT_MAX", c_speeds_max_max},
+    {"falcon speeds INT_MAX + 1", c_speeds_max_one},
+    {"falcon speeds 1 + INT_MAX", c_speeds_one_max},
+    {"falcon speeds 1 + 1 (control)", c_speeds_control},
+    {"falcon run with heights.n INT_MAX", c_falcon_run_counts},
+    {"closed forms outside their domain: NaN", c_closed_forms_domain},
+    {"closed forms against their laws (control)", c_closed_forms_laws},
+    {"sheet K_eff of a mass not > 0: NaN", c_sheet_kwall_domain},
+    {"sheet K_eff against tau_max(N = 1) (control)", c_sheet_kwall_law},
+    {"dispersion omega of a mass not > 0: NaN", c_disp_omega},
+    {"B.31 fit mask -1", c_fit_mask_all_bits},
+    {"B.31 fit mask 0xff", c_fit_mask_byte},
+    {"B.31 fit mask with bit 16", c_fit_mask_high},
+    {"B.31 fit of test points (control)", c_fit_control},
+};
+
+int main(void)
+{
+    snprintf(dir, sizeof dir, "/tmp/gw_hostile47.XXXXXX");
+    if (!mkdtemp(dir)) {
+        printf("mkdtemp failed\n");
+        return 1;
+    }
+    const int rc = child_cases_run(rows, sizeof rows / sizeof rows[0]);
+    rmdir(dir);
+    return rc;
+}

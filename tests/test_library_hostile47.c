@@ -31,6 +31,11 @@
  *   - gw_stats_b31_fit_points took a free_mask with bits of no parameter (-1,
  *     0xff: as its low four); refused naming it. Control: the fit of test
  *     points as before.
+ *   - gw_param_set_double on a row that takes no number (a choice, a list, a
+ *     range, a text) said so only for a value inside the row's [min, max]:
+ *     "material: 1 is outside [0, 0]", "sample: 5 is outside [0, 0]",
+ *     "radii: 1e+09 is outside [1e-06, 1]". Each value is now refused as
+ *     "ROW: takes a KIND, not a number". Control: number rows as before.
  * Each case runs in its own child process (test_child.h).
  */
 #define _POSIX_C_SOURCE 200809L
@@ -411,6 +416,80 @@ static int c_fit_control(void)
     return 0;
 }
 
+/* ------------------------------------------------- gw_param_set_double ---- */
+
+/* each v refused as the row's kind: "ROW: takes a KIND, not a number" */
+static int set_double_refused(const gw_param *t, void *obj, const char *row, const char *kind, const double *vs,
+                              int nv)
+{
+    char want[128];
+    snprintf(want, sizeof want, "%s: takes a %s, not a number", row, kind);
+    for (int i = 0; i < nv; i++) {
+        gw_err e = {0};
+        const int rc = gw_param_set_double(t, obj, row, vs[i], &e);
+        if (!refused(rc, &e, want)) {
+            printf("  (v = %g)\n", vs[i]);
+            return 1;
+        }
+    }
+    return 0;
+}
+
+static int c_set_double_choice(void)
+{
+    gw_chain_setup s;
+    EXPECT(gw_chain_setup_init(&s) == GW_OK);
+    const double vs[] = {0, 1, 1e9};
+    const int rc = set_double_refused(gw_chain_setup_params(), &s, "material", "choice", vs, 3);
+    gw_chain_setup_clear(&s);
+    return rc;
+}
+
+static int c_set_double_list(void)
+{
+    gw_chain_setup s;
+    EXPECT(gw_chain_setup_init(&s) == GW_OK);
+    const double vs[] = {0, 1e-3, 1e9};
+    const int rc = set_double_refused(gw_chain_setup_params(), &s, "radii", "list", vs, 3);
+    gw_chain_setup_clear(&s);
+    return rc;
+}
+
+static int c_set_double_range(void)
+{
+    gw_chain_falcon_setup s;
+    EXPECT(gw_chain_falcon_setup_init(&s) == GW_OK);
+    const double vs[] = {5, 1e12};
+    const int rc = set_double_refused(gw_chain_falcon_setup_params(), &s, "n", "range", vs, 2);
+    gw_chain_falcon_setup_clear(&s);
+    return rc;
+}
+
+static int c_set_double_text(void)
+{
+    gw_layer_impact_setup s;
+    EXPECT(gw_layer_impact_setup_init(&s) == GW_OK);
+    const double vs[] = {0, 5};
+    const int rc = set_double_refused(gw_layer_impact_setup_params(), &s, "sample", "text", vs, 2);
+    gw_layer_impact_setup_clear(&s);
+    return rc;
+}
+
+static int c_set_double_numbers(void) /* control: the number rows take their numbers */
+{
+    gw_chain_setup s;
+    EXPECT(gw_chain_setup_init(&s) == GW_OK);
+    gw_err e = {0};
+    const gw_param *t = gw_chain_setup_params();
+    int ok = gw_param_set_double(t, &s, "vimp", 0.25, &e) == GW_OK && s.vimp == 0.25 &&
+             gw_param_set_double(t, &s, "n", 7, &e) == GW_OK && s.n == 7 &&
+             gw_param_set_double(t, &s, "trace", 1, &e) == GW_OK && s.trace == 1 &&
+             refused(gw_param_set_double(t, &s, "vimp", 1e9, &e), &e, "vimp: 1e+09 is outside");
+    gw_chain_setup_clear(&s);
+    EXPECT(ok);
+    return 0;
+}
+
 static const child_row rows[] = {
     {"vtk title with a newline, CR and tab: one line", c_vtk_title_newline},
     {"vtk title with an escape sequence: one line", c_vtk_title_escape},
@@ -436,6 +515,11 @@ static const child_row rows[] = {
     {"B.31 fit mask 0xff", c_fit_mask_byte},
     {"B.31 fit mask with bit 16", c_fit_mask_high},
     {"B.31 fit of test points (control)", c_fit_control},
+    {"set_double on a choice row", c_set_double_choice},
+    {"set_double on a list row", c_set_double_list},
+    {"set_double on a range row", c_set_double_range},
+    {"set_double on a text row", c_set_double_text},
+    {"set_double on number rows (control)", c_set_double_numbers},
 };
 
 int main(void)

@@ -36,6 +36,11 @@
  *     "material: 1 is outside [0, 0]", "sample: 5 is outside [0, 0]",
  *     "radii: 1e+09 is outside [1e-06, 1]". Each value is now refused as
  *     "ROW: takes a KIND, not a number". Control: number rows as before.
+ *   - gw_sweep_journal_append wrote a row without its newline (the next row
+ *     joined it: a line no resume takes), one holding a newline (two lines)
+ *     and an empty one; each is refused, nothing written. A last fsync's time
+ *     (synced_ms) of NaN or after now was never synced again; it is taken as
+ *     long past. Control: a row synced just now is not synced again.
  * Each case runs in its own child process (test_child.h).
  */
 #define _POSIX_C_SOURCE 200809L
@@ -44,6 +49,8 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include "granwave.h"
@@ -490,6 +497,67 @@ static int c_set_double_numbers(void) /* control: the number rows take their num
     return 0;
 }
 
+/* -------------------------------------------------- the journal's append ---- */
+
+static long file_size(const char *path)
+{
+    struct stat st;
+    return stat(path, &st) == 0 ? (long)st.st_size : -1;
+}
+
+/* each row refused naming why, the file as it was; then a row of its own */
+static int c_append_not_one_line(void)
+{
+    char path[128];
+    path_of(path, sizeof path, "journal.csv");
+    const int fd = open(path, O_WRONLY | O_CREAT | O_TRUNC, 0600);
+    EXPECT(fd >= 0);
+    const char *rows[] = {"0,0.1,1,2,0123456789abcdef,01234567", "0,0.1\n1,2\n", "", "\n"};
+    const char *why[] = {"(no newline)", "(a newline inside it)", "(empty)", "(an empty line)"};
+    int bad = 0;
+    for (int i = 0; i < 4 && !bad; i++) {
+        gw_err e = {0};
+        bad = !refused(gw_sweep_journal_append(fd, rows[i], NULL, &e), &e, why[i]) || file_size(path) != 0;
+    }
+    gw_err e = {0};
+    const int rc = bad ? GW_OK : gw_sweep_journal_append(fd, "0,0.1,1\n", NULL, &e);
+    close(fd);
+    char *text = slurp(path);
+    unlink(path);
+    EXPECT(!bad && rc == GW_OK && text && strcmp(text, "0,0.1,1\n") == 0);
+    free(text);
+    return 0;
+}
+
+/* a last fsync's time that is NaN or after now is no time: the row synced
+ * (the time then now's), where a NaN was never synced again */
+static int c_append_sync_time(void)
+{
+    char path[128];
+    path_of(path, sizeof path, "journal.csv");
+    const int fd = open(path, O_WRONLY | O_CREAT | O_TRUNC, 0600);
+    EXPECT(fd >= 0);
+    const double odd[] = {NAN, 1e300, -INFINITY};
+    int ok = 1;
+    for (int i = 0; i < 3 && ok; i++) {
+        double t = odd[i];
+        gw_err e = {0};
+        const double before = gw_clock_ms();
+        ok = gw_sweep_journal_append(fd, "1,0.2,3\n", &t, &e) == GW_OK && t >= before && t <= gw_clock_ms();
+        if (!ok)
+            printf("synced_ms %g: now %g (at %g)\n", odd[i], t, before);
+    }
+    /* control: synced just now, not again */
+    double t = gw_clock_ms();
+    const double t0 = t;
+    gw_err e = {0};
+    ok = ok && gw_sweep_journal_append(fd, "2,0.3,4\n", &t, &e) == GW_OK && t == t0;
+    close(fd);
+    unlink(path);
+    EXPECT(ok);
+    return 0;
+}
+
 static const child_row rows[] = {
     {"vtk title with a newline, CR and tab: one line", c_vtk_title_newline},
     {"vtk title with an escape sequence: one line", c_vtk_title_escape},
@@ -520,6 +588,8 @@ static const child_row rows[] = {
     {"set_double on a range row", c_set_double_range},
     {"set_double on a text row", c_set_double_text},
     {"set_double on number rows (control)", c_set_double_numbers},
+    {"journal append of a row that is not one line", c_append_not_one_line},
+    {"journal append with a last fsync of NaN, 1e300, -inf", c_append_sync_time},
 };
 
 int main(void)

@@ -41,6 +41,10 @@
  *     and an empty one; each is refused, nothing written. A last fsync's time
  *     (synced_ms) of NaN or after now was never synced again; it is taken as
  *     long past. Control: a row synced just now is not synced again.
+ *   - gw_chain_trace_write formatted each file's name into 512 bytes and cut
+ *     it there: a stem of 501 characters wrote "xstem_wall_forc" with GW_OK.
+ *     The names are built in the path's room; a stem the path cannot hold is
+ *     refused before any file is written. Control: a plain stem.
  * Each case runs in its own child process (test_child.h).
  */
 #define _POSIX_C_SOURCE 200809L
@@ -558,6 +562,83 @@ static int c_append_sync_time(void)
     return 0;
 }
 
+/* ------------------------------------------------------ the trace's names ---- */
+
+/* a one-bead trace of 20 samples written under stem into a fresh dir: the
+ * status, and in *names the directory's entries as "a|b|c" sorted */
+static int trace_written(const char *stem, char *names, size_t n, gw_err *e)
+{
+    char sub[128];
+    path_of(sub, sizeof sub, "tr");
+    mkdir(sub, 0700);
+    gw_chain_trace tr;
+    gw_chain_trace_init(&tr, 1);
+    const double y[2] = {0, 0};
+    for (int k = 0; k < 20; k++)
+        gw_chain_trace_sample(&tr, k * 1e-6, y, 1.0, 0);
+    const int rc = gw_chain_trace_write(&tr, sub, stem, "a header", e);
+    gw_chain_trace_free(&tr);
+    char cmd[512];
+    snprintf(cmd, sizeof cmd, "ls %s | sort | tr '\\n' '|'; rm -rf %s", sub, sub);
+    FILE *p = popen(cmd, "r");
+    names[0] = '\0';
+    if (p) {
+        size_t got = fread(names, 1, n - 1, p);
+        names[got] = '\0';
+        pclose(p);
+    }
+    return rc;
+}
+
+/* 501 characters ("./" 248 times and "xstem"): the wall force was written as
+ * "xstem_wall_forc" with GW_OK (the name cut at 512 bytes) */
+static int c_trace_long_stem(void)
+{
+    char stem[600] = "", names[512];
+    for (int i = 0; i < 248; i++)
+        strcat(stem, "./");
+    strcat(stem, "xstem");
+    gw_err e = {0};
+    EXPECT(trace_written(stem, names, sizeof names, &e) == GW_OK);
+    const char *want = GW_HAVE_HDF5 ? "xstem.h5|xstem_beads.csv|xstem_wall_force.csv|"
+                                    : "xstem_beads.csv|xstem_wall_force.csv|";
+    if (strcmp(names, want) != 0) {
+        printf("files '%s', wanted '%s'\n", names, want);
+        return 1;
+    }
+    return 0;
+}
+
+/* a stem the path cannot hold: refused naming it, nothing written (the
+ * files were written under names cut at 512 bytes) */
+static int c_trace_stem_beyond_path(void)
+{
+    static char stem[4200];
+    stem[0] = '\0';
+    for (int i = 0; i < 2040; i++)
+        strcat(stem, "./");
+    strcat(stem, "x");
+    char names[512];
+    gw_err e = {0};
+    const int rc = trace_written(stem, names, sizeof names, &e);
+    EXPECT(refused(rc, &e, "output path too long for the trace's file"));
+    if (names[0]) {
+        printf("files '%s' written\n", names);
+        return 1;
+    }
+    return 0;
+}
+
+static int c_trace_plain_stem(void) /* control */
+{
+    char names[512];
+    gw_err e = {0};
+    EXPECT(trace_written("chain", names, sizeof names, &e) == GW_OK);
+    EXPECT(strcmp(names, GW_HAVE_HDF5 ? "chain.h5|chain_beads.csv|chain_wall_force.csv|"
+                                      : "chain_beads.csv|chain_wall_force.csv|") == 0);
+    return 0;
+}
+
 static const child_row rows[] = {
     {"vtk title with a newline, CR and tab: one line", c_vtk_title_newline},
     {"vtk title with an escape sequence: one line", c_vtk_title_escape},
@@ -590,6 +671,9 @@ static const child_row rows[] = {
     {"set_double on number rows (control)", c_set_double_numbers},
     {"journal append of a row that is not one line", c_append_not_one_line},
     {"journal append with a last fsync of NaN, 1e300, -inf", c_append_sync_time},
+    {"trace written under a stem of 501 characters", c_trace_long_stem},
+    {"trace stem beyond the path's room refused", c_trace_stem_beyond_path},
+    {"trace under a plain stem (control)", c_trace_plain_stem},
 };
 
 int main(void)

@@ -45,6 +45,8 @@
  *     it there: a stem of 501 characters wrote "xstem_wall_forc" with GW_OK.
  *     The names are built in the path's room; a stem the path cannot hold is
  *     refused before any file is written. Control: a plain stem.
+ *   - gw_layer_sample_format_check(NULL) was refused as
+ *     "gw_layer_sample_out_check: path is NULL", naming another call.
  * Each case runs in its own child process (test_child.h).
  */
 #define _POSIX_C_SOURCE 200809L
@@ -639,6 +641,14 @@ static int c_trace_plain_stem(void) /* control */
     return 0;
 }
 
+static int c_format_check_null(void)
+{
+    gw_err e = {0};
+    EXPECT(refused(gw_layer_sample_format_check(NULL, &e), &e, "gw_layer_sample_format_check: path is NULL"));
+    EXPECT(refused(gw_layer_sample_out_check(NULL, "out", &e), &e, "gw_layer_sample_out_check: path is NULL"));
+    return 0;
+}
+
 static const child_row rows[] = {
     {"vtk title with a newline, CR and tab: one line", c_vtk_title_newline},
     {"vtk title with an escape sequence: one line", c_vtk_title_escape},
@@ -674,6 +684,7 @@ static const child_row rows[] = {
     {"trace written under a stem of 501 characters", c_trace_long_stem},
     {"trace stem beyond the path's room refused", c_trace_stem_beyond_path},
     {"trace under a plain stem (control)", c_trace_plain_stem},
+    {"sample format check of NULL named as itself", c_format_check_null},
 };
 
 int main(void)

@@ -47,6 +47,11 @@
  *     refused before any file is written. Control: a plain stem.
  *   - gw_layer_sample_format_check(NULL) was refused as
  *     "gw_layer_sample_out_check: path is NULL", naming another call.
+ *   - gw_sweep_memory_check kept the jobs largest estimates by insertion
+ *     into a sorted array: jobs = 1e6 over a layer grid of 1.2e6 cases ran
+ *     for minutes (killed at 300 s; 5.4 s now, jobs = 4 took 6 s). A guard
+ *     only (no check here may time a run): the check's answers at 1 to 1e6
+ *     jobs.
  * Each case runs in its own child process (test_child.h).
  */
 #define _POSIX_C_SOURCE 200809L
@@ -60,6 +65,7 @@
 #include <unistd.h>
 
 #include "granwave.h"
+#include "layer_test_util.h"
 #include "test_child.h"
 
 static char dir[64];
@@ -649,6 +655,85 @@ static int c_format_check_null(void)
     return 0;
 }
 
+/* ----------------------------------------------------- the memory check ---- */
+
+/* A guard (the fault was time: a layer grid of 1.2e6 cases checked for jobs =
+ * 1e6 ran for minutes, the largest estimates kept by insertion into a sorted
+ * array; they are kept in a heap now): over 6200 cases of three discs, given
+ * in an order whose estimates rise and fall, the check at jobs 1, 7, 900,
+ * 6200 and 1e6 gives the jobs that fit and names the largest case as the
+ * estimates sorted here do. */
+typedef struct est_at {
+    double b;
+    long k;
+} est_at;
+
+static int est_cmp(const void *pa, const void *pb)
+{
+    const est_at *a = pa, *c = pb;
+    return a->b > c->b ? -1 : a->b < c->b ? 1 : (a->k > c->k) - (a->k < c->k);
+}
+
+static int c_memory_check_jobs(void)
+{
+    char path[128];
+    path_of(path, sizeof path, "three.txt");
+    gw_layer_sample smp = test_three_discs();
+    gw_err e = {0};
+    EXPECT(gw_layer_sample_write(&smp, path, NULL, &e) == GW_OK);
+    int nm = 0;
+    const gw_sweep_model *const *ms = gw_sweep_models(&nm), *m = NULL;
+    for (int i = 0; i < nm; i++)
+        if (strcmp(ms[i]->name, "layer") == 0)
+            m = ms[i];
+    EXPECT(m && m->memory);
+    char text[1024];
+    snprintf(text, sizeof text, "[sweep]\nmodel = layer\n[grid]\nrb-rm = 16, 1, 1.5, 2, 2.5, 3, 3.5, 4, 4.5, 5, "
+             "5.5, 6, 6.5, 7, 7.5, 8, 8.5, 9, 9.5, 10, 10.5, 11, 11.5, 12, 12.5, 13, 13.5, 14, 14.5, 15, 15.5\n"
+             "rings = 1:200\n[params]\nsample = %s\nt-max = 0.01\n", path);
+    gw_sweep_config cfg = {0};
+    const gw_sweep_model *got = NULL;
+    EXPECT(gw_sweep_config_read_string(text, "grid", &m, 1, &cfg, &got, &e) == GW_OK);
+    EXPECT(cfg.ncases == 6200);
+    /* the reference: every case's estimate, sorted by size then case, and
+     * the jobs whose largest estimates fit 80 % of the memory available */
+    static est_at est[6200];
+    const int nk = cfg.ngrid + cfg.nparams;
+    for (long k = 0; k < 6200; k++) {
+        const char *names[2 * GW_SWEEP_MAX_KEYS], *vals[2 * GW_SWEEP_MAX_KEYS];
+        gw_sweep_case(&cfg, k, names, vals);
+        est[k].k = k;
+        EXPECT(m->memory(nk, names, vals, &est[k].b, &e) == GW_OK);
+    }
+    qsort(est, 6200, sizeof est[0], est_cmp);
+    const char *what = "";
+    const double avail = gw_memory_available(&what);
+    const long jobs[] = {1, 7, 900, 6200, 1000000};
+    int ok = est[0].b > est[6199].b; /* estimates that differ */
+    for (int i = 0; i < 5 && ok; i++) {
+        const long n = jobs[i] < 6200 ? jobs[i] : 6200;
+        long fit = 0;
+        double sum = 0;
+        for (long j = 0; j < n; j++) {
+            sum += est[j].b;
+            if (sum <= 0.8 * avail && est[0].b <= 0.8 * avail)
+                fit = j + 1;
+        }
+        long most = -1;
+        e.msg[0] = '\0';
+        const int rc = gw_sweep_memory_check(&cfg, m, jobs[i], 0, &most, &e);
+        char largest[64];
+        snprintf(largest, sizeof largest, "(the largest, case %ld,", est[0].k);
+        ok = most == fit && (fit == n ? rc == GW_OK : rc == GW_EINVAL && strstr(e.msg, largest) != NULL);
+        if (!ok)
+            printf("jobs %ld: status %d, most %ld (wanted %ld, %s): %s\n", jobs[i], rc, most, fit, largest, e.msg);
+    }
+    gw_sweep_config_free(&cfg);
+    unlink(path);
+    EXPECT(ok);
+    return 0;
+}
+
 static const child_row rows[] = {
     {"vtk title with a newline, CR and tab: one line", c_vtk_title_newline},
     {"vtk title with an escape sequence: one line", c_vtk_title_escape},
@@ -685,6 +770,7 @@ static const child_row rows[] = {
     {"trace stem beyond the path's room refused", c_trace_stem_beyond_path},
     {"trace under a plain stem (control)", c_trace_plain_stem},
     {"sample format check of NULL named as itself", c_format_check_null},
+    {"memory check at jobs 1 to 1e6 against the sorted estimates (guard)", c_memory_check_jobs},
 };
 
 int main(void)

@@ -65,6 +65,8 @@ double gw_chain_disp_kappa(double k, double f0)
 
 double gw_chain_disp_omega(double kappa, double m, double qa)
 {
+    if (!(kappa >= 0) || !(m > 0)) /* a mass of 0 gave inf rad/s, a negative one or kappa -nan */
+        return NAN;
     return 2.0 * sqrt(kappa / m) * fabs(sin(0.5 * qa));
 }
 

@@ -413,6 +413,12 @@ int gw_chain_falcon_speeds(const double *vimp, int n_vimp, const double *heights
     if (!(gravity >= 0 && gravity <= 1e4))
         return gw_err_set(err, GW_EINVAL, "gravity: %g m/s^2 is outside [0, 10000]",
                           gravity);
+    /* two counts near INT_MAX overflowed their int sum (undefined; a
+     * negative total was told "both empty"): summed as longs, a total no int
+     * holds refused naming both */
+    if ((long)n_vimp + n_heights > INT_MAX)
+        return gw_err_set(err, GW_EINVAL, "gw_chain_falcon_speeds: n_vimp + n_heights = %d + %d impact velocities, "
+                          "above %d", n_vimp, n_heights, INT_MAX);
     int nv = n_vimp + n_heights;
     if (nv <= 0)
         return gw_err_set(err, GW_EINVAL, "vimp: no impact velocity (vimp and heights both empty)");
@@ -483,10 +489,13 @@ static int falcon_run(const gw_chain_falcon_setup *s, gw_progress_fn progress, v
     if (!s || !out)
         return gw_err_set(err, GW_EINVAL, "gw_chain_falcon_run: %s is NULL", !s ? "setup" : "out");
     memset(out, 0, sizeof *out);
-    int rc = chain_study_range_check(falcon_params, s, &s->col, s->vimp.n + s->heights.n, err);
+    /* the lists' counts summed as longs: vimp.n or heights.n set by hand near
+     * INT_MAX overflowed the int sum before the range check refused them */
+    const long nvl = (long)s->vimp.n + s->heights.n;
+    int rc = chain_study_range_check(falcon_params, s, &s->col, nvl > INT_MAX ? INT_MAX : (int)nvl, err);
     if (rc != GW_OK)
         return rc;
-    int nv = s->vimp.n + s->heights.n, nn = (int)(s->n[1] - s->n[0] + 1);
+    int nv = (int)nvl, nn = (int)(s->n[1] - s->n[0] + 1);
     if ((rc = gw_chain_falcon_sizes_check(s->n[0], s->n[1], err)) != GW_OK)
         return rc;
     if ((rc = alloc_outcome(out, nv, (int)s->n[0], nn, err)) != GW_OK)

@@ -87,13 +87,28 @@ double gw_chain_tau_constant(void)
     return 0.8 * gsl_sf_beta(0.4, 0.5);
 }
 
+/* The closed forms' domain: a mass in (0, inf), a Hertz coefficient in
+ * (0, inf] and a speed in [0, inf]. A negative mass with a negative K gave a
+ * finite contact time, peak overlap and force (their ratio is positive), a
+ * speed of -1 m/s the peak overlap and force of +1 m/s where tau_1 was NaN,
+ * and a mass of 0 a zero overlap; each is NaN now, as gw_chain_kc of a
+ * negative k. */
+static int closed_form_domain(double m, double K, double v)
+{
+    return m > 0 && isfinite(m) && K > 0 && v >= 0;
+}
+
 double gw_chain_tau1(double m, double K, double v)
 {
+    if (!closed_form_domain(m, K, v))
+        return NAN;
     return gw_chain_tau_constant() * pow(5.0 * m / (4.0 * K), 0.4) * pow(v, -0.2);
 }
 
 double gw_chain_dmax1(double m, double K, double v)
 {
+    if (!closed_form_domain(m, K, v))
+        return NAN;
     return pow(5.0 * m * v * v / (4.0 * K), 0.4);
 }
 
@@ -105,6 +120,8 @@ double gw_chain_fmax1(double m, double K, double v)
 
 double gw_chain_tq_theory(double m, double k, double v)
 {
+    if (!closed_form_domain(m, k, v))
+        return NAN;
     return 2.0 * pow(m / k, 0.4) * pow(v, -0.2);
 }
 
@@ -156,7 +173,10 @@ const gw_sheet *gw_sheet_find(const char *name)
 
 double gw_sheet_kwall(const gw_sheet *s, double m)
 {
-    if (!s)
+    /* K_eff is proportional to m: a negative mass gave a negative wall
+     * coefficient (-4.3e11 N/m^1.5 at -1 kg on brass), a mass of 0 a wall of
+     * no stiffness */
+    if (!s || !(m > 0) || !isfinite(m))
         return NAN;
     double v = sqrt(2 * GW_CHAIN_G_EARTH * 2.9e-3);
     return 1.25 * m * pow(gw_chain_tau_constant() / (2e-6 * s->tau_max1_us * pow(v, 0.2)), 2.5);

@@ -116,15 +116,27 @@ int gw_chain_trace_check(int n, double span, double dt_out, double events, gw_er
                       n, dt_out, rows, span, files / 1e9, rows * values * 8 / 1e9, ceil_2digits(span / free_rows));
 }
 
+/* DIR/<stem><suffix> into path (4096 bytes). The name was formatted into 512
+ * bytes and cut there without a word: a stem of 501 characters ("./" 248
+ * times and "xstem") wrote its wall force as "xstem_wall_forc", with GW_OK.
+ * GW_EINVAL naming the stem when the name or the path does not fit. */
+static int trace_path(char *path, const char *dir, const char *stem, const char *suffix, gw_err *err)
+{
+    char name[4096];
+    if (gw_snprintf(name, sizeof name, "%s%s", stem, suffix) >= (int)sizeof name ||
+        gw_path_join(path, 4096, dir, name) != GW_OK)
+        return gw_err_set(err, GW_EINVAL, "%s: output path too long for the trace's file '%s%s'", dir, stem, suffix);
+    return GW_OK;
+}
+
 static int write_csv(const gw_chain_trace *tr, const char *dir, const char *stem,
                      const char *header, gw_err *err)
 {
-    char path[4096], name[512];
+    char path[4096];
     gw_afile f;
     int rc;
-    gw_snprintf(name, sizeof name, "%s_wall_force.csv", stem);
-    if (gw_path_join(path, sizeof path, dir, name) != GW_OK)
-        return gw_err_set(err, GW_EINVAL, "%s: output path too long", dir);
+    if ((rc = trace_path(path, dir, stem, "_wall_force.csv", err)) != GW_OK)
+        return rc;
     if ((rc = gw_afile_open(&f, path, err)) != GW_OK)
         return rc;
     gw_write_comment(f.fp, header);
@@ -136,9 +148,8 @@ static int write_csv(const gw_chain_trace *tr, const char *dir, const char *stem
     if (tr->n == 0) /* wall force only: no bead table (it would hold t_s alone) */
         return GW_OK;
 
-    gw_snprintf(name, sizeof name, "%s_beads.csv", stem);
-    if (gw_path_join(path, sizeof path, dir, name) != GW_OK)
-        return gw_err_set(err, GW_EINVAL, "%s: output path too long", dir);
+    if ((rc = trace_path(path, dir, stem, "_beads.csv", err)) != GW_OK)
+        return rc;
     if ((rc = gw_afile_open(&f, path, err)) != GW_OK)
         return rc;
     gw_write_comment(f.fp, header);
@@ -187,11 +198,10 @@ static int h5_dataset(hid_t file, const char *name, const double *data, int rank
 static int write_h5_locked(const gw_chain_trace *tr, const char *dir, const char *stem,
                            const char *header, gw_err *err)
 {
-    char path[4096], name[512];
-    gw_snprintf(name, sizeof name, "%s.h5", stem);
-    if (gw_path_join(path, sizeof path, dir, name) != GW_OK)
-        return gw_err_set(err, GW_EINVAL, "%s: output path too long", dir);
-    int rc = GW_OK;
+    char path[4096];
+    int rc = trace_path(path, dir, stem, ".h5", err);
+    if (rc != GW_OK)
+        return rc;
     /* built in memory, written as one image through gw_afile (gw_h5.h) */
     gw_h5_mem mem;
     hid_t file = gw_h5_mem_create(&mem, path, 0);
@@ -251,6 +261,9 @@ int gw_chain_trace_write(const gw_chain_trace *tr, const char *dir, const char *
         return rc;
     if (!dir || !stem) /* (dir was printed as "(null)", stem read) */
         return gw_err_set(err, GW_EINVAL, "gw_chain_trace_write: %s is NULL", !dir ? "dir" : "stem");
+    char path[4096]; /* the longest of its names first: all of them, or nothing written */
+    if ((rc = trace_path(path, dir, stem, "_wall_force.csv", err)) != GW_OK)
+        return rc;
     rc = write_csv(tr, dir, stem, header, err);
 #if GW_HAVE_HDF5
     if (rc == GW_OK)

@@ -46,7 +46,9 @@ double gw_hertz_coefficient(double r1, const gw_material *m1, double r2,
 /* (4/5) B(2/5, 1/2) = 2.94322..., the constant of (F.2), from GSL's Beta. */
 double gw_chain_tau_constant(void);
 /* Single bead on a wall of stiffness K: contact time (F.2), peak overlap, peak
- * force (F.13) and its time tau_1/2 (F.21). */
+ * force (F.13) and its time tau_1/2 (F.21). These and gw_chain_tq_theory are
+ * NaN outside their domain: m in (0, inf), K (k) in (0, inf], v in [0, inf]
+ * (a negative m and K gave finite values, v = -1 the overlap of +1). */
 double gw_chain_tau1(double m, double K, double v);
 double gw_chain_dmax1(double m, double K, double v);
 double gw_chain_fmax1(double m, double K, double v);
@@ -96,7 +98,8 @@ const gw_sheet *gw_sheet_get(int i);
 const gw_sheet *gw_sheet_find(const char *name);
 /* Effective wall coefficient of a sheet for beads of mass m (N/m^1.5): the
  * Hertz K whose single-bead tau_max = tau_1/2 (F.2, F.21) equals the measured
- * tau_max(N = 1) at v_imp = sqrt(2 g 2.9 mm). */
+ * tau_max(N = 1) at v_imp = sqrt(2 g 2.9 mm). NaN for a NULL sheet and an m
+ * not finite and > 0 (a negative m gave a negative K). */
 double gw_sheet_kwall(const gw_sheet *s, double m);
 
 /* ---- thin elastic layer on a rigid base (chain_layer.c) ----
@@ -651,7 +654,8 @@ int gw_chain_disp_params_validate(const gw_chain_disp_params *p, gw_err *err);
 /* Linear contact stiffness kappa = (3/2) k^(2/3) f0^(1/3), N/m; NaN for k or
  * f0 negative or NaN (a negative f0 gave a negative kappa before session 34). */
 double gw_chain_disp_kappa(double k, double f0);
-/* omega(q) = 2 sqrt(kappa/m) |sin(qa/2)|, rad/s, for qa in rad per bead. */
+/* omega(q) = 2 sqrt(kappa/m) |sin(qa/2)|, rad/s, for qa in rad per bead; NaN
+ * for kappa negative or NaN and for m not > 0 (m = 0 gave inf). */
 double gw_chain_disp_omega(double kappa, double m, double qa);
 
 typedef struct gw_chain_disp_result {

@@ -68,7 +68,7 @@ double gw_clock_ms(void)
  * is one line that shows every byte it quotes. A message cut at the end of dst
  * is cut between characters. Backslashes are kept as they are, so a message
  * that quotes another message is escaped once. */
-static void gw_err_one_line(char *dst, size_t n, const char *src)
+void gw_one_line(char *dst, size_t n, const char *src)
 {
     static const char hex[] = "0123456789abcdef";
     size_t o = 0;
@@ -143,7 +143,7 @@ int gw_err_set(gw_err *err, int status, const char *fmt, ...)
     va_start(ap, fmt);
     gw_vsnprintf(raw, raw == raw_h ? (size_t)want + 1 : sizeof raw_s, fmt, ap);
     va_end(ap);
-    gw_err_one_line(line, room, raw);
+    gw_one_line(line, room, raw);
     const size_t len = strlen(line), n = sizeof err->msg;
     if (len < n) {
         memcpy(err->msg, line, len + 1);
@@ -177,7 +177,7 @@ int gw_warnings_add(char **list, const char *fmt, ...)
         va_start(ap, fmt);
         gw_vsnprintf(raw, (size_t)len + 1, fmt, ap);
         va_end(ap);
-        gw_err_one_line(line, room, raw); /* one text, one line, as an error message */
+        gw_one_line(line, room, raw); /* one text, one line, as an error message */
     }
     char *grown = raw && line ? realloc(*list, have + strlen(line) + 2) : NULL;
     if (grown) {

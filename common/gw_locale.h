@@ -33,6 +33,13 @@ int gw_fprintf(FILE *fp, const char *fmt, ...) GW_FMT(2, 3);
  * 1000.0000001). Returns buf (n >= 32 holds every double). */
 const char *gw_num_text(char *buf, size_t n, double x);
 
+/* src as one line of UTF-8 into dst (n >= 1 bytes): a control character
+ * written \n, \r, \t or \xHH, and so a byte of no whole UTF-8 character;
+ * cut between characters where dst ends. Every gw_err message and warning
+ * text goes through it, and so does a title the library writes into a
+ * file's one-line header (gw_layer_write_vtk). Defined in gw_common.c. */
+void gw_one_line(char *dst, size_t n, const char *src);
+
 /* The permissions of a file the library creates in place of `replaces`: the
  * replaced regular file's, or 0666 less the process's umask (what a shell's >
  * gives; the temporary that mkstemp made is 0600). Defined in gw_io_afile.c. */

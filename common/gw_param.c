@@ -186,6 +186,12 @@ static void int_bounds(const gw_param *p, long *lo, long *hi)
 
 static int set_number(const gw_param *p, void *obj, double v, const char *text, gw_err *err)
 {
+    /* a row that takes no number said so only when v lay in its [min, max]:
+     * gw_param_set_double(chain, "material", 1) was told "1 is outside [0,
+     * 0]", and 0 "takes a choice, not a number" */
+    if (p->type != GW_PARAM_DOUBLE && p->type != GW_PARAM_FLAG && p->type != GW_PARAM_INT &&
+        p->type != GW_PARAM_LONG)
+        return gw_err_set(err, GW_EINVAL, "%s: takes a %s, not a number", p->name, gw_param_type_name(p->type));
     if (!isfinite(v))
         return gw_err_set(err, GW_EINVAL, "%s: must be a finite number, got %g", p->name, v);
     int rc = subnormal_bad(p, v, err, "");

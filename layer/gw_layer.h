@@ -258,11 +258,16 @@ void gw_layer_rings(const gw_layer *L, double cx, double cy, double w, int nring
 
 /* Write a VTK legacy POLYDATA snapshot: points with radius, velocity, omega
  * (one vertex cell each); contacts with u_n > 0 as lines carrying F_n and F_t;
- * field data TIME (s); units in the title line. */
+ * field data TIME (s); units in the title line. The title (not NULL) is
+ * written as one line, a control character as \n or \xHH as in messages,
+ * cut between characters at 120 bytes (a newline in it broke the format). */
 int gw_layer_write_vtk(const gw_layer *L, const char *path, const char *title,
                        gw_err *err);
 /* Write a ParaView collection (.pvd) of n snapshot files (names relative to
- * the .pvd's directory, no XML special characters) at times[k] s. */
+ * the .pvd's directory, UTF-8; '&', '<', '>', '"' and '\'' written as XML
+ * entities) at times[k] s. GW_EINVAL naming the snapshot, nothing written,
+ * for a name holding a control character or a byte of no whole UTF-8
+ * character (no XML file holds them) and a time that is not finite. */
 int gw_layer_write_pvd(const char *path, int n, const char *const *files, const double *times, gw_err *err);
 
 /* -------------------------------------------------------------- samples ---- */

@@ -110,6 +110,8 @@ int gw_layer_sample_out_check(const char *path, const char *what, gw_err *err)
 
 int gw_layer_sample_format_check(const char *path, gw_err *err)
 {
+    if (!path) /* named as the other call ("gw_layer_sample_out_check: path is NULL") */
+        return gw_err_set(err, GW_EINVAL, "gw_layer_sample_format_check: path is NULL");
     return gw_layer_sample_out_check(path, "sample", err);
 }
 

@@ -21,8 +21,15 @@
 
 int gw_layer_write_vtk(const gw_layer *L, const char *path, const char *title, gw_err *err)
 {
-    if (!L) /* it was read after the file was opened (SIGSEGV) */
-        return gw_err_set(err, GW_EINVAL, "gw_layer_write_vtk: L is NULL");
+    if (!L || !title) /* L was read after the file was opened (SIGSEGV); a NULL title was written "(null)" */
+        return gw_err_set(err, GW_EINVAL, "gw_layer_write_vtk: %s is NULL", !L ? "L" : "title");
+    /* The title is the format's second line, one line of at most 255
+     * characters: a newline in it ended that line early, and the file's
+     * "ASCII" line was then the title's rest, which VTK's readers refuse. The
+     * title made one line (a newline written \n, as in messages) and cut
+     * between characters at 120 bytes. */
+    char line[121];
+    gw_one_line(line, sizeof line, title);
     gw_afile f;
     int rc = gw_afile_open(&f, path, err);
     if (rc != GW_OK)
@@ -34,9 +41,8 @@ int gw_layer_write_vtk(const gw_layer *L, const char *path, const char *title, g
     int nl = 0;
     for (int k = 0; k < L->nc; k++)
         nl += CLOSED_PAIR(k);
-    /* (the title line holds at most 255 characters) */
-    gw_fprintf(fp, "# vtk DataFile Version 3.0\n%.120s (granwave %s); units: m, m/s, rad/s, N, TIME s\n"
-            "ASCII\nDATASET POLYDATA\nFIELD FieldData 1\nTIME 1 1 double\n%.17g\n", title, gw_version(), L->t);
+    gw_fprintf(fp, "# vtk DataFile Version 3.0\n%s (granwave %s); units: m, m/s, rad/s, N, TIME s\n"
+            "ASCII\nDATASET POLYDATA\nFIELD FieldData 1\nTIME 1 1 double\n%.17g\n", line, gw_version(), L->t);
     gw_fprintf(fp, "POINTS %d double\n", n);
     for (int i = 0; i < n; i++) {
         double s[6];
@@ -91,24 +97,56 @@ int gw_layer_write_vtk(const gw_layer *L, const char *path, const char *title, g
     return gw_afile_commit(&f, err);
 }
 
+/* name as an XML attribute's value: '&', '<', '>', '"' and '\'' as entities */
+static void pvd_name(FILE *fp, const char *name)
+{
+    for (const char *c = name; *c; c++) {
+        const char *ent = *c == '&' ? "&amp;" : *c == '<' ? "&lt;" : *c == '>' ? "&gt;" : *c == '"' ? "&quot;"
+                        : *c == '\'' ? "&apos;" : NULL;
+        if (ent)
+            fputs(ent, fp);
+        else
+            fputc(*c, fp);
+    }
+}
+
 int gw_layer_write_pvd(const char *path, int n, const char *const *files, const double *times, gw_err *err)
 {
     /* NULL lists were read (SIGSEGV), n < 0 wrote an empty collection */
     if (n < 0 || (n > 0 && (!files || !times)))
         return gw_err_set(err, GW_EINVAL, "gw_layer_write_pvd: %s", n < 0 ? "n < 0" : !files ? "files is NULL" :
                           "times is NULL");
-    for (int k = 0; k < n; k++)
+    /* A file name is an XML attribute's value: a '"', '&' or '<' in it was
+     * written as it is, and the collection was no XML (ParaView refuses it);
+     * they are written as entities now (pvd_name). A control character or a
+     * byte of no whole UTF-8 character has no place in an XML 1.0 document
+     * (a newline in an attribute reads back as a space): refused, naming the
+     * snapshot, nothing written. */
+    for (int k = 0; k < n; k++) {
         if (!files[k] || !isfinite(times[k]))
             return gw_err_set(err, GW_EINVAL, "gw_layer_write_pvd: snapshot %d: %s", k,
                               !files[k] ? "file is NULL" : "time not finite");
+        for (const char *c = files[k]; *c;) {
+            const size_t len = gw_utf8_len(c);
+            if (len == 0 || (unsigned char)*c < 0x20 || *c == 0x7f)
+                return gw_err_set(err, GW_EINVAL, "gw_layer_write_pvd: snapshot %d: file '%s' holds %s at byte %ld, "
+                                  "which an XML file cannot hold", k, files[k],
+                                  len == 0 ? "no whole UTF-8 character" : "a control character",
+                                  (long)(c - files[k]) + 1);
+            c += len;
+        }
+    }
     gw_afile f;
     int rc = gw_afile_open(&f, path, err);
     if (rc != GW_OK)
         return rc;
     gw_fprintf(f.fp, "<?xml version=\"1.0\"?>\n<!-- granwave %s: layer snapshots (legacy VTK), time in s -->\n"
             "<VTKFile type=\"Collection\" version=\"0.1\">\n  <Collection>\n", gw_version());
-    for (int k = 0; k < n; k++)
-        gw_fprintf(f.fp, "    <DataSet timestep=\"%.17g\" group=\"\" part=\"0\" file=\"%s\"/>\n", times[k], files[k]);
+    for (int k = 0; k < n; k++) {
+        gw_fprintf(f.fp, "    <DataSet timestep=\"%.17g\" group=\"\" part=\"0\" file=\"", times[k]);
+        pvd_name(f.fp, files[k]);
+        fputs("\"/>\n", f.fp);
+    }
     gw_fprintf(f.fp, "  </Collection>\n</VTKFile>\n");
     if (ferror(f.fp)) {
         gw_afile_abort(&f);

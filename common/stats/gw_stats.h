@@ -287,8 +287,8 @@ typedef struct gw_stats_b31_fit {
  * the box. Standard errors from (J^T J)^-1 at the minimum (a/b and tan gamma
  * as logarithms) scaled by chi^2 / dof; at_bound names parameters the box
  * stops (their errors are not those of a free minimum). GW_EINVAL when beta
- * or a/b is not free, n < number of free parameters, a point is not finite
- * or x_lo <= 0. */
+ * or a/b is not free, free_mask holds another bit than the four above, n <
+ * number of free parameters, a point is not finite or x_lo <= 0. */
 int gw_stats_b31_fit_points(const double *x, const double *h, int n, const gw_stats_b31 *start,
                             int free_mask, gw_stats_b31_fit *fit, gw_err *err);
 

@@ -494,6 +494,10 @@ enum { B31_NB = 65, B31_PER_DECADE = 8, B31_STARTS = 6 };
 static int b31_fit(const double *x, const double *h, int n, const gw_stats_b31 *start, int free_mask,
                    gw_stats_b31_fit *fit, gw_err *err)
 {
+    /* a mask with bits no parameter has (-1, 0xff) was taken as its low four */
+    if (free_mask & ~15)
+        return gw_err_set(err, GW_EINVAL, "B.31 fit: free_mask %#x holds bits of no parameter (GW_STATS_B31_OFFSET, "
+                          "_BETA, _AB and _TANG are 1, 2, 4, 8)", (unsigned)free_mask);
     const int mask = free_mask & 15, p = popcount4(mask);
     if (!(mask & GW_STATS_B31_BETA) || !(mask & GW_STATS_B31_AB))
         return gw_err_set(err, GW_EINVAL, "B.31 fit: beta and a/b must be free (nothing gives them a value to hold)");

@@ -290,8 +290,11 @@ int gw_sweep_case_inputs_check(const gw_sweep_config *cfg, long k, gw_err *err);
  * by gw_sweep_journal_open_at: GW_ENOMEM, nothing written, when the copy
  * cannot grow); fsync it when
  * *synced_ms (gw_clock_ms of the last fsync, updated; NULL: every row) is
- * GW_SWEEP_SYNC_MS old or more. A killed process loses no written row; a power
- * cut at most the rows of the last GW_SWEEP_SYNC_MS, which a rerun runs again. */
+ * GW_SWEEP_SYNC_MS old or more, or is no such time (NaN, or after now). A
+ * killed process loses no written row; a power
+ * cut at most the rows of the last GW_SWEEP_SYNC_MS, which a rerun runs again.
+ * A row is one line ending in its newline (gw_sweep_format_row's): GW_EINVAL,
+ * nothing written, for another (no newline, a newline inside, empty). */
 #define GW_SWEEP_SYNC_MS 250.0
 int gw_sweep_journal_append(int fd, const char *row, double *synced_ms, gw_err *err);
 /* fsync the journal now (the sweep's end, or a stop): *synced_ms updated. */

@@ -1145,6 +1145,15 @@ int gw_sweep_journal_append(int fd, const char *row, double *synced_ms, gw_err *
     if (!row)
         return gw_err_set(err, GW_EINVAL, "gw_sweep_journal_append: row is NULL");
     const size_t n = strlen(row);
+    /* A row is one line with its newline: one without it was written as it
+     * was and the next row joined it (a line no resume takes: the sweep
+     * refused its own journal), one holding a newline wrote two lines, an
+     * empty one a line of nothing; each refused, nothing written. */
+    const char *nl = memchr(row, '\n', n);
+    if (n < 2 || nl != row + n - 1)
+        return gw_err_set(err, GW_EINVAL, "gw_sweep_journal_append: row '%s' is not one line ending in a newline "
+                          "(%s)", row, n == 0 ? "empty" : !nl ? "no newline" : nl == row ? "an empty line" :
+                          "a newline inside it");
     jshadow *h = shadow_get(fd);
     if (h && h->len + n > h->cap) { /* room in the journal's copy first: the row written is in it */
         const size_t cap = h->len + n > 2 * h->cap ? h->len + n : 2 * h->cap;
@@ -1164,8 +1173,10 @@ int gw_sweep_journal_append(int fd, const char *row, double *synced_ms, gw_err *
         h->len += n;
         shadow_times(h, fd); /* another's write between the check and this one: compared whole next */
     }
-    const double now = gw_clock_ms();
-    if (!synced_ms || now - *synced_ms >= GW_SWEEP_SYNC_MS)
+    /* a time of the last fsync that is none (NaN: never synced again) or
+     * after now (never GW_SWEEP_SYNC_MS old) is taken as long past */
+    const double now = gw_clock_ms(), age = synced_ms ? now - *synced_ms : NAN;
+    if (!(age >= 0 && age < GW_SWEEP_SYNC_MS))
         return gw_sweep_journal_sync(fd, synced_ms, err);
     return GW_OK;
 }

@@ -30,6 +30,47 @@ double gw_memory_available(const char **what)
     return avail;
 }
 
+/* (b, k) ranks after (b2, k2) among the largest estimates: a smaller b, or
+ * the same b of a later case (a heap's root is the one ranked last) */
+static int topk_before(double b2, long k2, double b, long k)
+{
+    return b < b2 || (b == b2 && k > k2);
+}
+
+typedef struct top_pair {
+    double b;
+    long k;
+} top_pair;
+
+static int top_cmp(const void *pa, const void *pb)
+{
+    const top_pair *a = pa, *c = pb;
+    return a->b > c->b ? -1 : a->b < c->b ? 1 : (a->k > c->k) - (a->k < c->k);
+}
+
+/* top and topk (n entries) sorted by estimate, decreasing, then by case */
+static void sort_top(double *top, long *topk, long n)
+{
+    top_pair *t = malloc((size_t)(n > 0 ? n : 1) * sizeof *t);
+    if (t) {
+        for (long i = 0; i < n; i++)
+            t[i] = (top_pair){top[i], topk[i]};
+        qsort(t, (size_t)n, sizeof *t, top_cmp);
+        for (long i = 0; i < n; i++)
+            top[i] = t[i].b, topk[i] = t[i].k;
+        free(t);
+        return;
+    }
+    for (long i = 1; i < n; i++) /* no memory for the pairs: in place */
+        for (long j = i; j > 0 && top_cmp(&(top_pair){top[j - 1], topk[j - 1]}, &(top_pair){top[j], topk[j]}) > 0;
+             j--) {
+            const double tb = top[j];
+            const long tk = topk[j];
+            top[j] = top[j - 1], topk[j] = topk[j - 1];
+            top[j - 1] = tb, topk[j - 1] = tk;
+        }
+}
+
 int gw_sweep_memory_check(const gw_sweep_config *cfg, const gw_sweep_model *m, long jobs, int processes,
                           long *most, gw_err *err)
 {
@@ -66,13 +107,34 @@ int gw_sweep_memory_check(const gw_sweep_config *cfg, const gw_sweep_model *m, l
             gw_err_set(err, rc, "case %ld: %s", k, tmp);
             break;
         }
-        if (ntop == jobs && !(b > top[ntop - 1]))
+        /* kept as a heap whose root is the smallest kept estimate (the
+         * latest case among equal ones): an insertion into a sorted array
+         * moved up to jobs entries per case, and a layer grid of 1.2e6 cases
+         * checked for jobs = 1e6 (every case's estimate growing) ran for
+         * minutes where jobs = 4 took 9 s */
+        if (ntop == jobs && !(b > top[0]))
             continue;
-        long i = ntop < jobs ? ntop++ : ntop - 1;
-        for (; i > 0 && top[i - 1] < b; i--)
-            top[i] = top[i - 1], topk[i] = topk[i - 1];
+        long i = ntop < jobs ? ntop++ : 0;
+        if (i > 0) { /* sift up the new leaf */
+            for (; i > 0 && topk_before(top[(i - 1) / 2], topk[(i - 1) / 2], b, k); i = (i - 1) / 2)
+                top[i] = top[(i - 1) / 2], topk[i] = topk[(i - 1) / 2];
+        } else if (ntop > 1 || ntop == jobs) { /* the root replaced: sift down */
+            for (;;) {
+                long c = 2 * i + 1;
+                if (c >= ntop)
+                    break;
+                if (c + 1 < ntop && topk_before(top[c], topk[c], top[c + 1], topk[c + 1]))
+                    c++;
+                if (!topk_before(b, k, top[c], topk[c]))
+                    break;
+                top[i] = top[c], topk[i] = topk[c];
+                i = c;
+            }
+        }
         top[i] = b, topk[i] = k;
     }
+    /* the kept estimates in decreasing order, the first case first among equal ones */
+    sort_top(top, topk, ntop);
     if (rc == GW_OK) {
         /* one case within this process's limits; the jobs together within
          * them too, or within the physical memory when they are processes

@@ -621,19 +621,23 @@ static int settled_readable(gw_layer_sample *out, gw_err *err)
  * clumps lean on the walls and wedge between them far more readily than
  * discs. The rule of the discs (COLUMN_ASPECT_MAX) on the rows' top over the
  * box's width, with the clumps' own bound. Measured at the defaults (V 10,
- * aspect-max 4, t-max 6 s): `--clumps --width-rm 8 --n 600` (rows 223 m high,
- * 86 times the width; the top falls longer than t-max) and width-rm 4 at n
- * 100 (54 times) and 40 (23 times) ended outside the box (a member disc 2.3
- * to 2.9 % of its radius into a wall: wedged); width-rm 5 at n 100 (35 times),
- * 6 at n 80 (20 times) and 8 at n 300 (44 times) ended unsettled, the walls'
- * friction holding 75, 63 and 58 % of the weight, and 8 at n 140 (20 times)
- * held a wedged clump 1.9 % into a wall; width-rm 5 at n 40 (15 times) and 6
- * at n 30 (8 times) settled, their floors carrying 0.67 and 0.76 of the
- * weight (one seed each: the runs take minutes). */
+ * aspect-max 4, t-max 6 s, seed 1): `--clumps --width-rm 8 --n 600` (rows
+ * 223 m high, 86 times the width; its top falls longer than t-max) and
+ * width-rm 4 at n 100 (54 times) and 40 (23 times) ended outside the box (a
+ * member disc 2.3 to 2.9 % of its radius into a wall: wedged); every pile
+ * measured at most 44 times as high as wide in a box of width-rm 5 or more
+ * stayed within 2 %: 8 at n 140 (20 times) settled with a wedged clump 1.9 %
+ * into a wall, 8 at n 300 (44 times) 1.8 % at 5.5 s (stopped there after 20
+ * minutes of wall time under load); width-rm 5 at n 40 (15
+ * times) and 6 at n 30 (8 times) settled (floors carrying 0.67 and 0.76 of the
+ * weight), while 6 at n 60 and 80 (16 and 20 times), 5 at n 100 (35 times)
+ * and 8 at n 300 ended unsettled, the walls' friction holding 56, 63, 75 and
+ * 58 % of the weight (a warning names the floor's load). The bound keeps
+ * below the 20 where a wedged clump came within 0.1 % of the reader's 2 %. */
 #define CLUMP_ASPECT_MAX 16
 
 /* The clumps of m in a box of width w m (tops: their rows' tops, as
- * clumps_initial gives them; scratch for as many more) refused when the rows
+ * clumps_initial gives them; overwritten) refused when the rows
  * stand more than CLUMP_ASPECT_MAX times as high as the box is wide, naming
  * the n and the width that pass (each checked: the first clumps drawn are the
  * same whatever n, and the width is read back from its text). */

@@ -558,8 +558,10 @@ static void finish(const gw_layer_params *lp, const gw_layer_make_params *m, con
 }
 
 /* Initial clumps: shapes drawn per clump, packed in rows of bounding boxes.
- * Returns the number of discs (members) in *nd; b (NULL: count only) has room for them. */
-static void clumps_initial(const gw_layer_make_params *m, double width, gw_layer_body *b, int *nd)
+ * Returns the number of discs (members) in *nd, and in tops[j] (tops may be
+ * NULL) the top of the rows (m) once clump j is placed; b (NULL: count only)
+ * has room for them. */
+static void clumps_initial(const gw_layer_make_params *m, double width, gw_layer_body *b, int *nd, double *tops)
 {
     const double cv = cbrt(m->volume_ratio), rmin = 2 * m->rm / (1 + cv), rmax = cv * rmin;
     const double gap = 0.1 * rmax;
@@ -596,6 +598,8 @@ static void clumps_initial(const gw_layer_make_params *m, double width, gw_layer
                 k++;
         cx += (x1 - x0) + gap;
         rowh = fmax(rowh, y1 - y0);
+        if (tops)
+            tops[j] = ry + rowh;
     }
     *nd = k;
 }
@@ -618,6 +622,60 @@ static int settled_readable(gw_layer_sample *out, gw_err *err)
                       "soft for their load (raise shear-modulus, lower density or gravity)", why);
 }
 
+/* A clump pile far taller than its box is wide: the clumps start in rows of
+ * their bounding boxes (clumps_initial), one or two a row in a box a few
+ * grains wide; the top rows fall the rows' height, and the rigid, elongated
+ * clumps lean on the walls and wedge between them far more readily than
+ * discs. The rule of the discs (COLUMN_ASPECT_MAX) on the rows' top over the
+ * box's width, with the clumps' own bound. Measured at the defaults (V 10,
+ * aspect-max 4, t-max 6 s, seed 1): `--clumps --width-rm 8 --n 600` (rows
+ * 223 m high, 86 times the width; its top falls longer than t-max) and
+ * width-rm 4 at n 100 (54 times) and 40 (23 times) ended outside the box (a
+ * member disc 2.3 to 2.9 % of its radius into a wall: wedged); every pile
+ * measured at most 44 times as high as wide in a box of width-rm 5 or more
+ * stayed within 2 %: 8 at n 140 (20 times) settled with a wedged clump 1.9 %
+ * into a wall, 8 at n 300 (44 times) 1.8 % at 5.5 s (stopped there after 20
+ * minutes of wall time under load); width-rm 5 at n 40 (15
+ * times) and 6 at n 30 (8 times) settled (floors carrying 0.67 and 0.76 of the
+ * weight), while 6 at n 60 and 80 (16 and 20 times), 5 at n 100 (35 times)
+ * and 8 at n 300 ended unsettled, the walls' friction holding 56, 63, 75 and
+ * 58 % of the weight (a warning names the floor's load). The bound keeps
+ * below the 20 where a wedged clump came within 0.1 % of the reader's 2 %. */
+#define CLUMP_ASPECT_MAX 16
+
+/* The clumps of m in a box of width w m (tops: their rows' tops, as
+ * clumps_initial gives them; overwritten) refused when the rows
+ * stand more than CLUMP_ASPECT_MAX times as high as the box is wide, naming
+ * the n and the width that pass (each checked: the first clumps drawn are the
+ * same whatever n, and the width is read back from its text). */
+static int check_clump_column(const gw_layer_make_params *m, double w, double *tops, gw_err *err)
+{
+    const double top = tops[m->n - 1];
+    if (top <= CLUMP_ASPECT_MAX * w)
+        return GW_OK;
+    int fit = 0; /* the most clumps that pass: the first ones whose rows stay within the bound */
+    while (fit < m->n && tops[fit] <= CLUMP_ASPECT_MAX * w)
+        fit++;
+    /* the width: up by 1 % from 0.9 of the estimate of an aspect falling as
+     * 1/w^2 (rows of w / size clumps: a top as 1/w), until a width of three
+     * digits passes (the top is not monotonic in w: the rows repack) */
+    char wt[40], wb[40];
+    double wr = w / m->rm * fmax(1, 0.9 * sqrt(top / (CLUMP_ASPECT_MAX * w)));
+    for (int k = 0; k < 2000; k++, wr *= 1.01) {
+        gw_snprintf(wb, sizeof wb, "%.3g", wr);
+        const double c = gw_strtod(wb, NULL);
+        int nd;
+        if (c * m->rm > w && (clumps_initial(m, c * m->rm, NULL, &nd, tops),
+                              tops[m->n - 1] <= CLUMP_ASPECT_MAX * c * m->rm))
+            break;
+    }
+    return gw_err_set(err, GW_EINVAL, "n: %d clumps in a box of --width-rm %s start in rows %.4g m high (their "
+                      "bounding boxes packed from the floor), %.4g times as high as the box is wide, above %d: a "
+                      "pile so tall in a box so narrow does not settle; lower --n to %d, or widen the box to "
+                      "--width-rm %s or more", m->n, gw_num_text(wt, sizeof wt, m->width_rm), top, top / w,
+                      CLUMP_ASPECT_MAX, fit, wb);
+}
+
 /* t0: gw_clock_ms() at the start of gw_layer_make (for res->wall_ms). */
 static int make_clumps(const gw_layer_params *lp0, const gw_layer_make_params *m, double t0,
                        gw_layer_sample *out, gw_layer_make_result *res, gw_err *err)
@@ -631,16 +689,24 @@ static int make_clumps(const gw_layer_params *lp0, const gw_layer_make_params *m
      * the discs' pluviation did) before anything is allocated (the library's
      * n = 1e6 held 6e6 bodies, 336 MB, before it was refused) */
     int nd = 0;
-    clumps_initial(m, lp.width, NULL, &nd);
+    double *tops = malloc((size_t)m->n * sizeof *tops);
+    if (!tops)
+        return gw_err_set(err, GW_ENOMEM, "layer-make: out of memory");
+    clumps_initial(m, lp.width, NULL, &nd, tops);
     const double steps = m->t_max / m->dt;
     if (steps * nd > 1e10)
-        return gw_err_set(err, GW_EINVAL, "n: %d clumps (%d discs) over %.3g steps to t-max = %g s are about %.3g "
-                          "particle-steps, more than 1e10: lower n to %.0f, or t-max, or raise dt", m->n, nd, steps,
-                          m->t_max, steps * nd, floor(1e10 / steps * m->n / nd));
+        rc = gw_err_set(err, GW_EINVAL, "n: %d clumps (%d discs) over %.3g steps to t-max = %g s are about %.3g "
+                        "particle-steps, more than 1e10: lower n to %.0f, or t-max, or raise dt", m->n, nd, steps,
+                        m->t_max, steps * nd, floor(1e10 / steps * m->n / nd));
+    else
+        rc = check_clump_column(m, lp.width, tops, err);
+    free(tops);
+    if (rc != GW_OK)
+        return rc;
     gw_layer_body *b = calloc((size_t)nd, sizeof *b);
     if (!b)
         return gw_err_set(err, GW_ENOMEM, "layer-make: out of memory");
-    clumps_initial(m, lp.width, b, &nd);
+    clumps_initial(m, lp.width, b, &nd, NULL);
     double t, ke;
     int conv;
     if ((rc = check_step(&lp, m, b, nd, err)) != GW_OK) {

@@ -19,6 +19,14 @@
 #   the reference for the points of wait_cpu on this machine;
 #   stop_mid_sweep SIG DIR TOTAL CMD...: CMD (a sweep into DIR of TOTAL cases)
 #   sent SIG once its journal holds a row; asserts nothing, sets rows and rc.
+# A run bounded in time is bounded in CPU seconds, the same work whatever the
+# machine's load (a wall-clock `timeout 3` was hit by a refusal of a few ms on a
+# loaded machine, or let a run that should have been refused pass as "still
+# running"):
+#   cpu_run SECONDS CMD...: CMD with SECONDS of CPU (RLIMIT_CPU: killed at it,
+#   exit 137), its status; a wall-clock guard of CPU_RUN_WALL seconds (300, or
+#   10 SECONDS when more) against a run that hangs using no CPU (exit 137 too). No "Killed"
+#   line: CMD's stderr is the caller's, the waiting shell's goes nowhere.
 # Background jobs of a script ignore SIGINT (bash sets it so): a run that is to
 # see SIGINT is started under `env --default-signal=INT`.
 fails=0; passes=0
@@ -104,6 +112,13 @@ wait_cpu() {
         sleep 0.01
     done
     return 1
+}
+
+cpu_run() {
+    local secs=$1 wall=${CPU_RUN_WALL:-300}
+    shift
+    [ $((10 * secs)) -le "$wall" ] || wall=$((10 * secs))
+    timeout -s KILL "$wall" bash -c 'ulimit -t "$0"; "$@" 2>&3 3>&-' "$secs" "$@" 3>&2 2>/dev/null
 }
 
 cpu_of() {

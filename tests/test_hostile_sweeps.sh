@@ -45,13 +45,12 @@ hb=$(head -1 "$tmp/refb/results.csv" | sed 's/.*config \([0-9a-f]*\),.*/\1/')
 [ "$ha" != "$hb" ] || ko "the two configs have one hash"
 
 # under_way DIR K CMD: a sweep of a.ini into DIR (--jobs 1) that runs CMD (sh)
-# right before its K-th row is appended (the move shim), without the shim;
-# sets pa_rc. The sweep is under way when CMD runs, on any machine (a second
-# sweep started once the first row showed raced the first sweep's end).
+# right before its K-th row is appended (at_row); sets pa_rc. The sweep is
+# under way when CMD runs, on any machine (a second sweep started once the first
+# row showed raced the first sweep's end).
 MOVE_SHIM=$(shim_path "" move) || MOVE_SHIM=
 under_way() {
-    GW_MOVE_AT=$2 GW_MOVE_RUN="env -u LD_PRELOAD $3" LD_PRELOAD=$MOVE_SHIM \
-        "$GW" sweep "$tmp/a.ini" --out "$1" --quiet --jobs 1 >/dev/null 2>"$1.err"
+    at_row "$2" "$3" "$GW" sweep "$tmp/a.ini" --out "$1" --quiet --jobs 1 >/dev/null 2>"$1.err"
     pa_rc=$?
 }
 

@@ -27,6 +27,14 @@
 #   exit 137), its status; a wall-clock guard of CPU_RUN_WALL seconds (300, or
 #   10 SECONDS when more) against a run that hangs using no CPU (exit 137 too). No "Killed"
 #   line: CMD's stderr is the caller's, the waiting shell's goes nowhere.
+#   at_row K SH CMD...: CMD (a sweep, or mpirun running one) with SH, a sh
+#   command, run right before the K-th row is appended to its journal (the
+#   move shim, tests/move_shim.c; SH and what it starts run without it), the
+#   sweep waiting for it: CMD's status. 77 and nothing run in a build without
+#   the shim (the caller says SKIP). A journal or directory disturbed "once the
+#   first row shows" from the script raced the end of a sweep of a second or
+#   two on a loaded machine; at a row it is mid-sweep on any. Shell functions
+#   SH calls: exported by the caller (export -f, and the variables they read).
 # Background jobs of a script ignore SIGINT (bash sets it so): a run that is to
 # see SIGINT is started under `env --default-signal=INT`.
 fails=0; passes=0
@@ -112,6 +120,13 @@ wait_cpu() {
         sleep 0.01
     done
     return 1
+}
+
+at_row() {
+    local k=$1 sh=$2 shim
+    shift 2
+    shim=$(shim_path "" move) || return 77
+    GW_MOVE_AT=$k GW_MOVE_RUN="unset LD_PRELOAD GW_MOVE_AT GW_MOVE_RUN; $sh" LD_PRELOAD=$shim "$@"
 }
 
 cpu_run() {

@@ -33,8 +33,10 @@
 #   sweep waiting for it: CMD's status. 77 and nothing run in a build without
 #   the shim (the caller says SKIP). A journal or directory disturbed "once the
 #   first row shows" from the script raced the end of a sweep of a second or
-#   two on a loaded machine; at a row it is mid-sweep on any. Shell functions
-#   SH calls: exported by the caller (export -f, and the variables they read).
+#   two on a loaded machine; at a row it is mid-sweep on any.
+#   at_row_fn K FN ARG CMD...: at_row, SH the script's shell function FN called
+#   with ARG (in bash, with the script's functions and its variables tmp and d,
+#   which the sh of the shim would not pass on as exported functions).
 # Background jobs of a script ignore SIGINT (bash sets it so): a run that is to
 # see SIGINT is started under `env --default-signal=INT`.
 fails=0; passes=0
@@ -127,6 +129,13 @@ at_row() {
     shift 2
     shim=$(shim_path "" move) || return 77
     GW_MOVE_AT=$k GW_MOVE_RUN="unset LD_PRELOAD GW_MOVE_AT GW_MOVE_RUN; $sh" LD_PRELOAD=$shim "$@"
+}
+
+at_row_fn() {
+    local k=$1 fn=$2 arg=$3
+    shift 3
+    { declare -f; declare -p tmp d 2>/dev/null; } >"$tmp/at_row_fns.sh"
+    at_row "$k" "bash -c '. \"\$0\"; $fn \"\$1\"' '$tmp/at_row_fns.sh' '$arg'" "$@"
 }
 
 cpu_run() {

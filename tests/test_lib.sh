@@ -151,12 +151,27 @@ cpu_of() {
 }
 
 # stop_mid_sweep SIG DIR TOTAL CMD...: the caller asserts 1 <= rows < TOTAL and
-# no DIR/results.csv (the signal landed mid-sweep). A sweep that ended before
-# the signal (rows = TOTAL, a table) is started again, three times at most;
-# attempt says which one landed.
+# no DIR/results.csv (the signal landed mid-sweep). SIGKILL or SIGTERM to a
+# sweep of the program: sent right before its second row (at_row), once. Else
+# (SIGINT, mpirun, no shim) once its journal holds a row: a sweep that ended
+# before the signal (rows = TOTAL, a table) is started again, three times at
+# most; attempt says which one landed.
 stop_mid_sweep() {
     local sig=$1 dir=$2 total=$3 pid
     shift 3
+    # a signal other than SIGINT (which the sweep ignores while the shim's
+    # command runs, as system(3) has it): sent by the sweep's own row (at_row),
+    # mid-sweep on any machine; CMD a sweep, not mpirun (whose $PPID is not it)
+    if [ "$sig" != INT ] && [ "$1" = "$GW" ]; then
+        attempt=1
+        rm -rf "$dir"
+        at_row 2 "kill -$sig \$PPID" "$@" 2>/dev/null; rc=$?
+        if [ $rc -ne 77 ]; then
+            rows=$(journal_rows "$dir/journal.csv")
+            [ ! -e "$dir/results.csv" ] && [ "$rows" -ge 1 ] && [ "$rows" -lt "$total" ]
+            return
+        fi
+    fi
     for attempt in 1 2 3; do
         rm -rf "$dir"
         env --default-signal=INT "$@" & pid=$!

@@ -9,7 +9,7 @@
 #   one stderr line matching PATTERN, no sanitizer report, nothing printed on
 #   stdout and nothing at $tmp/o (the --out the cases name): exits_refused's
 #   checks, which tests with other leftovers to check call themselves.
-#   runs_json WHAT FILE CMD...: exit 0 within 60 s, the JSON in FILE.
+#   runs_json WHAT FILE CMD...: exit 0 within 60 s of CPU, the JSON in FILE.
 #   jq_py FILE EXPR: EXPR over the JSON d of FILE, printed (Debian's python3).
 #   py_checks [N]: the Python script on stdin run against this build's module
 #   and library, each line it prints "PASS: ..." or "FAIL: ..." counted as a
@@ -84,17 +84,17 @@ refused() {
     ok "$what"
 }
 
-# runs_quiet WHAT ARGS...: the program with ARGS and --quiet exits 0 within 60 s
+# runs_quiet WHAT ARGS...: the program with ARGS and --quiet exits 0 within 60 s of CPU
 runs_quiet() {
     local what=$1
     shift
-    timeout -s KILL 60 "$GW" "$@" --quiet >/dev/null 2>"$tmp/stderr" </dev/null &&
+    cpu_run 60 "$GW" "$@" --quiet >/dev/null 2>"$tmp/stderr" </dev/null &&
         ok "$what" || ko "$what: exit $? ($(head -c 200 "$tmp/stderr"))"
 }
 
 runs_json() {
     local what=$1 out=$2; shift 2
-    timeout -s KILL 60 "$GW" "$@" --json >"$out" 2>"$tmp/stderr" </dev/null
+    cpu_run 60 "$GW" "$@" --json >"$out" 2>"$tmp/stderr" </dev/null
     local rc=$?
     if [ $rc -ne 0 ]; then ko "$what: exit $rc ($(head -c 300 "$tmp/stderr"))"; return 1; fi
     return 0

@@ -220,10 +220,10 @@ tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 # shellcheck source=tests/refusal_lib.sh
 . "$(dirname "${BASH_SOURCE[0]}")/refusal_lib.sh"
 
-# runs WHAT CMD...: exit 0 within 120 s, no sanitizer report
+# runs WHAT CMD...: exit 0 within 120 s of CPU (cpu_run), no sanitizer report
 runs() {
     local what=$1; shift
-    timeout -s KILL 120 "$GW" "$@" >"$tmp/stdout" 2>"$tmp/stderr" </dev/null
+    cpu_run 120 "$GW" "$@" >"$tmp/stdout" 2>"$tmp/stderr" </dev/null
     local rc=$?
     if [ $rc -ne 0 ]; then ko "$what: exit $rc ($(head -c 300 "$tmp/stderr"))"; return 1; fi
     if grep -qE 'Sanitizer|runtime error' "$tmp/stderr"; then ko "$what: sanitizer report"; return 1; fi

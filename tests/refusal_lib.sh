@@ -3,11 +3,13 @@
 # test_hostile_chain.sh, test_hostile_layer.sh) after they set GW (the program),
 # SRC (the source tree) and tmp (a scratch directory removed on exit). Gives the
 # counters (test_lib.sh's) and the refusal check they share:
-#   refused WHAT PATTERN CMD...: exit 2 within REFUSE_TIMEOUT seconds (20), exactly
+#   refused WHAT PATTERN CMD...: exit 2 within REFUSE_TIMEOUT seconds of CPU
+#   (20; cpu_run: the same work on a loaded machine, a hang caught by its wall
+#   guard), exactly
 #   one stderr line matching PATTERN, no sanitizer report, nothing printed on
 #   stdout and nothing at $tmp/o (the --out the cases name): exits_refused's
 #   checks, which tests with other leftovers to check call themselves.
-#   runs_json WHAT FILE CMD...: exit 0 within 60 s, the JSON in FILE.
+#   runs_json WHAT FILE CMD...: exit 0 within 60 s of CPU, the JSON in FILE.
 #   jq_py FILE EXPR: EXPR over the JSON d of FILE, printed (Debian's python3).
 #   py_checks [N]: the Python script on stdin run against this build's module
 #   and library, each line it prints "PASS: ..." or "FAIL: ..." counted as a
@@ -47,7 +49,8 @@
 
 # exits_refused WHAT PATTERN SECONDS CMD...: CMD (stdin /dev/null, its output
 # in $tmp/stdout and $tmp/stderr) exits 2 within SECONDS, one stderr line
-# matching PATTERN, no sanitizer report, nothing on stdout. A failed check is
+# matching PATTERN, no sanitizer report, nothing on stdout (SECONDS of CPU:
+# cpu_run). A failed check is
 # counted (ko) and returns 1; a pass counts nothing and returns 0, for the
 # caller to check what CMD left behind and count the refusal.
 # hostile_setup "$@": test_setup, SRC made absolute, the scratch directory
@@ -63,7 +66,7 @@ hostile_setup() {
 
 exits_refused() {
     local what=$1 pat=$2 secs=$3; shift 3
-    timeout -s KILL "$secs" "$@" >"$tmp/stdout" 2>"$tmp/stderr" </dev/null
+    cpu_run "$secs" "$@" >"$tmp/stdout" 2>"$tmp/stderr" </dev/null
     local rc=$?
     if [ $rc -ne 2 ]; then ko "$what: exit $rc, expected 2 ($(head -c 300 "$tmp/stderr"))"; return 1; fi
     if [ "$(wc -l <"$tmp/stderr")" -ne 1 ]; then ko "$what: $(wc -l <"$tmp/stderr") stderr lines"; cat "$tmp/stderr"; return 1; fi
@@ -81,17 +84,17 @@ refused() {
     ok "$what"
 }
 
-# runs_quiet WHAT ARGS...: the program with ARGS and --quiet exits 0 within 60 s
+# runs_quiet WHAT ARGS...: the program with ARGS and --quiet exits 0 within 60 s of CPU
 runs_quiet() {
     local what=$1
     shift
-    timeout -s KILL 60 "$GW" "$@" --quiet >/dev/null 2>"$tmp/stderr" </dev/null &&
+    cpu_run 60 "$GW" "$@" --quiet >/dev/null 2>"$tmp/stderr" </dev/null &&
         ok "$what" || ko "$what: exit $? ($(head -c 200 "$tmp/stderr"))"
 }
 
 runs_json() {
     local what=$1 out=$2; shift 2
-    timeout -s KILL 60 "$GW" "$@" --json >"$out" 2>"$tmp/stderr" </dev/null
+    cpu_run 60 "$GW" "$@" --json >"$out" 2>"$tmp/stderr" </dev/null
     local rc=$?
     if [ $rc -ne 0 ]; then ko "$what: exit $rc ($(head -c 300 "$tmp/stderr"))"; return 1; fi
     return 0

@@ -234,7 +234,7 @@ int main(void)
         usleep(3000);
         pid_t pid = fork();
         if (pid == 0) {
-            alarm(20);
+            alarm(60); /* a hang guard: 20 s could end a child on a loaded machine */
             gw_chain_params p = base_params();
             gw_chain_run_opts o = gw_chain_run_opts_default();
             double c = calib(&p, &o, targets[i % 8], NULL);

@@ -357,7 +357,7 @@ int main(void)
             usleep(7000 + 3000 * i);
             pid_t pid = fork();
             if (pid == 0) {
-                alarm(20);
+                alarm(60); /* a hang guard (20 s could end a child under load) */
                 inputs in = pair_inputs(i % 2);
                 gw_layer_law *l = make(&in), *m = make(&in);
                 _exit(l && l == m && gw_layer_law_force(l, 1e-6, NULL) > 0 ? 0 : 1);

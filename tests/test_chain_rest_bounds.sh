@@ -34,7 +34,7 @@ refused "a chain sweep's case with n = 300, gravity = 100, vimp = 1e-3 (before O
     "^granwave sweep: .*s.ini: case 0: gravity: 100 m/s\^2 takes back .* above the bound 1e\+07" sweep "$tmp/s.ini" --out "$tmp/o"
 
 # Python: the same check in the library
-if out=$(pyenv timeout -s KILL 20 $PY -c "
+if out=$(pyenv cpu_run 20 $PY -c "
 import granwave
 try:
     granwave.chain(n=300, gravity=100, vimp=1e-3)
@@ -47,15 +47,15 @@ else:
 else ko "Python chain(n=300, gravity=100, vimp=1e-3): ${out:0:300}"; fi
 
 # --- the suggested t-max is accepted (60 beads: suggested 0.038 s of 0.0404 s)
-timeout -s KILL 5 "$GW" chain --n 60 --gravity 100 --vimp 1e-3 >/dev/null 2>"$tmp/e60" </dev/null
+cpu_run 5 "$GW" chain --n 60 --gravity 100 --vimp 1e-3 >/dev/null 2>"$tmp/e60" </dev/null
 lim=$(sed -n 's/.*lower t-max to \([0-9.e+-]*\) s or less.*/\1/p' "$tmp/e60")
 if [ -z "$lim" ]; then ko "chain --n 60 --gravity 100 --vimp 1e-3: no suggested t-max ($(head -c 300 "$tmp/e60"))"
 else
-    # accepted: not refused at once (still running when killed at 3 s, or done)
-    rc=$( (timeout -s KILL 3 "$GW" chain --n 60 --gravity 100 --vimp 1e-3 --t-max "$lim" >/dev/null 2>"$tmp/e" </dev/null
+    # accepted: not refused at once (still running when killed at 3 s of CPU, or done)
+    rc=$( (cpu_run 3 "$GW" chain --n 60 --gravity 100 --vimp 1e-3 --t-max "$lim" >/dev/null 2>"$tmp/e" </dev/null
            echo $?) 2>/dev/null)
     if [ $rc -eq 2 ]; then ko "the suggested --t-max $lim is refused: $(head -c 300 "$tmp/e")"
-    else ok "the suggested --t-max $lim is accepted (exit $rc, 137 = still running at 3 s)"; fi
+    else ok "the suggested --t-max $lim is accepted (exit $rc, 137 = still running at 3 s of CPU)"; fi
 fi
 
 # --- what the bound leaves alone

@@ -33,7 +33,7 @@ refused "a chain sweep's case with k = 1e3, kwall = 1e14 (before OUT is made)" \
     "^granwave sweep: .*s.ini: case 0: dt-out: the default" sweep "$tmp/s.ini" --out "$tmp/o"
 
 # the suggested interval runs; the events do not depend on it
-timeout -s KILL 5 "$GW" chain --n 2 --k 1e3 --kwall 1e14 >/dev/null 2>"$tmp/e" </dev/null
+cpu_run 5 "$GW" chain --n 2 --k 1e3 --kwall 1e14 >/dev/null 2>"$tmp/e" </dev/null
 lim=$(sed -n 's/.*raise dt-out to \([0-9.e+-]*\) s or more.*/\1/p' "$tmp/e")
 if [ -z "$lim" ]; then ko "no suggested dt-out ($(head -c 300 "$tmp/e"))"
 else

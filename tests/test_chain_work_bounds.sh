@@ -33,7 +33,7 @@ refused "a chain sweep's case with radii 1e-3, 1 (before OUT is made)" \
     "^granwave sweep: .*s.ini: case 0: radii: bead 1 .* above the bound 2e\+07" sweep "$tmp/s.ini" --out "$tmp/o"
 
 # Python: the same check in the library, named by keyword
-if out=$(pyenv timeout -s KILL 20 $PY -c "
+if out=$(pyenv cpu_run 20 $PY -c "
 import granwave
 try:
     granwave.chain(n=2, radii=[1e-3, 1.0])

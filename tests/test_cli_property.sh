@@ -9,9 +9,10 @@
 # each is given, on top of a short valid run of that command (small n, short
 # t-max), each of the values
 #     nan  inf  -inf  -1  0  1e-308  1e308  99999999999999999999  junk  ""
-# What is asserted for each case, run under `timeout` (20 s) and, outside the
-# sanitizer build, a memory limit (ulimit -v 4 GiB):
-#   - it ends (no hang: timeout kills it and the case fails) and does not crash
+# What is asserted for each case, run with 20 s of CPU (ulimit -t: the same work
+# on a loaded machine; a wall-clock guard of 300 s against a hang) and, outside
+# the sanitizer build, a memory limit (ulimit -v 4 GiB):
+#   - it ends (no hang: the limit kills it and the case fails) and does not crash
 #     (exit code 0, 1 or 2 only; no signal);
 #   - nan, inf, -inf, junk and the empty value are refused: exit 2; so is 99999999999999999999
 #     for an integer flag (A:B lists and ranges too);
@@ -179,7 +180,7 @@ run_cmd() {
         # integer flags: the parser says so for a fractional value
         intflag=0
         out1="$tmp/probe"; rm -rf "$out1"
-        if [ "$mv" != "@row" ] && timeout -s KILL 3 "$GW" "$cmd" $(base_args "$cmd" "$out1") "--$flag" 1.5 2>&1 >/dev/null </dev/null |
+        if [ "$mv" != "@row" ] && bash -c 'ulimit -t 3; exec timeout -s KILL 300 "$@"' _ "$GW" "$cmd" $(base_args "$cmd" "$out1") "--$flag" 1.5 2>&1 >/dev/null </dev/null |
                 grep -q "not an integer"; then
             intflag=1
         fi
@@ -190,7 +191,7 @@ run_cmd() {
             mkdir "$out" # an existing, empty --out: it must stay empty on exit 2
             args=$(base_args "$cmd" "$out")
             arg=$val; [ "$val" = "@empty" ] && arg="" # an empty value
-            bash -c "$MEMLIM exec timeout -s KILL 20 \"\$@\"" _ "$GW" "$cmd" $args "--$flag" "$arg" \
+            bash -c "$MEMLIM ulimit -t 20; exec timeout -s KILL 300 \"\$@\"" _ "$GW" "$cmd" $args "--$flag" "$arg" \
                 >"$tmp/stdout" 2>"$tmp/stderr" </dev/null
             rc=$?
             what="$cmd --$flag $val"
@@ -252,9 +253,10 @@ run_cmd() {
                 [ "$val" = "-" ] && continue
                 ncase=$((ncase+1))
                 out="$tmp/in_$ncase"; mkdir "$out"
-                # a refusal comes before any work: a run still going after 3 s
-                # (killed: 137) has taken the value, as a legitimate long run
-                bash -c "$MEMLIM exec timeout -s KILL 3 \"\$@\"" _ "$GW" "$cmd" $(base_args "$cmd" "$out") \
+                # a refusal comes before any work: a run still going after 3 s of
+                # CPU (killed: 137) has taken the value, as a legitimate long run
+                # (3 s of the clock were hit by a slow start on a loaded machine)
+                bash -c "$MEMLIM ulimit -t 3; exec timeout -s KILL 300 \"\$@\"" _ "$GW" "$cmd" $(base_args "$cmd" "$out") \
                     "--$flag" "$val" >"$tmp/stdout" 2>"$tmp/stderr" </dev/null
                 rc=$?
                 if [ $rc -gt 2 ] && [ $rc -ne 137 ]; then
@@ -275,6 +277,7 @@ run_cmd() {
 base=$tmp
 # at most GW_PROPERTY_JOBS (2) commands at a time: the machine's two cores; ten at
 # once made a sanitizer build's legitimate 4 s runs pass the 20 s timeout under load
+# (a wall-clock one then; each command's cases are its own, in its own directory)
 njobs=0
 for cmd in $CMDS; do
     if [ $njobs -ge "${GW_PROPERTY_JOBS:-2}" ]; then wait -n; njobs=$((njobs-1)); fi

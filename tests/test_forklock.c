@@ -35,13 +35,14 @@ static void reset_guarded(void)
 static gw_forklock plain = GW_FORKLOCK(reset_guarded);
 static gw_forklock rec = GW_FORKLOCK_RECURSIVE;
 
-/* fork; the child runs f with a 5 s alarm; 1 when it exited 0 */
+/* fork; the child runs f with a 60 s alarm (a guard against a hang: 5 s could
+ * end a child on a loaded machine); 1 when it exited 0 */
 static int in_child(int (*f)(void))
 {
     fflush(stdout);
     pid_t pid = fork();
     if (pid == 0) {
-        alarm(5);
+        alarm(60);
         _exit(f() ? 0 : 1);
     }
     int st = 0;

@@ -183,7 +183,7 @@ for g in "g1:6: an indented line: the config reader takes it as more of the valu
          "g4:6: an indented line: the config reader takes it as more of the value of 'vimp' (line 5)" \
          "g5:5: vimp: empty value in list"; do
     f=${g%%:*}
-    timeout -s KILL 30 "$GW" sweep "$tmp/$f.ini" >/dev/null 2>"$tmp/err"
+    cpu_run 30 "$GW" sweep "$tmp/$f.ini" >/dev/null 2>"$tmp/err"
     rc=$?
     [ $rc -eq 2 ] && [ "$(wc -l <"$tmp/err")" -eq 1 ] && grep -qF "$tmp/$f.ini:${g#*:}" "$tmp/err" && [ ! -e "$tmp/x" ] &&
         ok "g: $f refused: $(cut -c1-110 "$tmp/err")" || ko "g: $f: exit $rc $(cat "$tmp/err")"

@@ -67,7 +67,7 @@ while read -r c f list; do
     mapfile -t b < <(flag_base "$c")
     mapfile -t args < <(flag_without "$f" "${b[@]}")
     # the flag's range, from its refusal of 1e300
-    timeout -s KILL 20 "$GW" "${args[@]}" "$f" 1e300 >/dev/null 2>"$tmp/big" </dev/null
+    cpu_run 20 "$GW" "${args[@]}" "$f" 1e300 >/dev/null 2>"$tmp/big" </dev/null
     range=$(grep -oE 'outside [][(][^],)]+, [^])]+[])]( \(or 0\))?' "$tmp/big")
     if want=$(allowed "$range"); then
         hint["$c $f"]=$want

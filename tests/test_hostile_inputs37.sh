@@ -111,7 +111,7 @@ refused "sweep over that sample: refused before any case, nothing written, no ha
 if sanitizer_build; then
     echo "SKIP: the Python check (a sanitizer build's library does not load into Python)"
 else
-    pyenv timeout -s KILL 10 $PY - >py.out 2>&1 <<'EOF'
+    pyenv cpu_run 10 $PY - >py.out 2>&1 <<'EOF'
 import granwave
 try:
     granwave.layer_impact(sample="ext.h5", t_max=0.002)

@@ -112,7 +112,7 @@ jtry() { # WHAT EDIT (a sed script over the journal) EXIT PATTERN: sweep --check
     cp jo/journal.csv j.before
     local rc
     for mode in --check --quiet; do
-        timeout 30 "$GW" sweep j.ini $mode >"$tmp/stdout" 2>"$tmp/stderr" </dev/null
+        cpu_run 30 "$GW" sweep j.ini $mode >"$tmp/stdout" 2>"$tmp/stderr" </dev/null
         rc=$?
         if [ "$3" = 0 ]; then
             [ $rc -eq 0 ] && ok "$1 ($mode): exit 0" || ko "$1 ($mode): exit $rc ($(head -c 300 "$tmp/stderr"))"

@@ -156,14 +156,20 @@ rc=$?
 d=$tmp/l4
 "$GW" layer-impact --sample "$S" --t-max 0.01 --out "$d" >/dev/null 2>&1 || ko "4: layer-impact --out"
 cp -r "$d" "$tmp/l4.before"
-# another impact point (its snapshot_0.vtk differs), killed once its first snapshot is made
-"$GW" layer-impact --sample "$S" --x 0.3 --full --t-max 1 --out "$d" >/dev/null 2>&1 &
-pid=$!
-for _ in $(seq 200); do
-    [ -n "$(find "$d" -name 'snapshot_0.vtk*' -newer "$tmp/l4.before" 2>/dev/null)" ] && break
-    sleep 0.05
-done
-kill -9 $pid 2>/dev/null; wait $pid 2>/dev/null
+# another impact point (its snapshot_0.vtk differs), killed (SIGKILL) right before
+# its first file is made durable, its first snapshot's temporary written: by the
+# signal shim, the same point on any machine (a kill from the script after polls
+# of 50 ms, 10 s at most, could come before the snapshot or after the next one);
+# without the shim, once that temporary shows (wait_file)
+if SIGSHIM=$(shim_path "" signal); then
+    ( GW_SIGNAL_FSYNC=1:9 LD_PRELOAD=$SIGSHIM "$GW" layer-impact --sample "$S" --x 0.3 --full --t-max 1 --out "$d" \
+        >/dev/null 2>&1; : ) 2>/dev/null
+else
+    "$GW" layer-impact --sample "$S" --x 0.3 --full --t-max 1 --out "$d" >/dev/null 2>&1 &
+    pid=$!
+    wait_file $pid "$d/snapshot_0.vtk.tmp.*"
+    kill -9 $pid 2>/dev/null; wait $pid 2>/dev/null
+fi
 left=$(ls "$d" | grep '\.tmp\.' | tr '\n' ' ')
 diff -r "$d" "$tmp/l4.before" 2>&1 | grep -v '^Only in .*: snapshot_0\.vtk\.tmp\.' | grep -q . &&
     ko "4: a run killed during its run changed the earlier run's files: $(diff -rq "$d" "$tmp/l4.before" | head -3)" ||
@@ -405,7 +411,7 @@ cmp -s "$tmp/d10x/results.csv" "$S" && [ "$(ls "$tmp/d10x")" = "results.csv" ] &
 # process's, another host's and other names alone.
 host11=$(hostname | tr -cd 'A-Za-z0-9-' | cut -c1-24); host11=${host11:-host}
 sh -c 'exit 0' & dead11=$!; wait "$dead11"   # a PID no process holds now
-sleep 30 </dev/null >/dev/null 2>&1 & live11=$!
+sleep infinity </dev/null >/dev/null 2>&1 & live11=$!   # (alive until killed: 30 s could end on a slow machine)
 mkdir -p "$tmp/d11"
 : >"$tmp/d11/chain.json.tmp.$host11.$dead11.aB3dE9"
 : >"$tmp/d11/chain.json.tmp.$host11.$live11.Xy7Q2w"

@@ -92,7 +92,7 @@ refused "layer-impact --height-rm $below_c on the clump pile (no clump whole wit
     "^granwave layer-impact --height-rm: a mobile layer of .* R_m holds no clump whole" \
     layer-impact --sample clumps.txt --height-rm "$below_c" --out o
 # the least height the message gives runs, with a particle mobile
-at=$(timeout 20 "$GW" layer-impact --sample clumps.txt --height-rm "$below_c" 2>&1 | sed -n 's/.*give at least \([0-9.e+-]*\),.*/\1/p')
+at=$(cpu_run 20 "$GW" layer-impact --sample clumps.txt --height-rm "$below_c" 2>&1 | sed -n 's/.*give at least \([0-9.e+-]*\),.*/\1/p')
 if [ -n "$at" ] && runs_json "layer-impact --height-rm $at (the least the message gives)" at.json \
     layer-impact --sample clumps.txt --height-rm "$at"; then
     v=$(jq_py at.json "d['n_mobile'] > 0 and d['n_mobile'] + d['n_frozen'] == 42")

@@ -19,6 +19,24 @@
 #   the reference for the points of wait_cpu on this machine;
 #   stop_mid_sweep SIG DIR TOTAL CMD...: CMD (a sweep into DIR of TOTAL cases)
 #   sent SIG once its journal holds a row; asserts nothing, sets rows and rc.
+# A run bounded in time is bounded in CPU seconds, the same work whatever the
+# machine's load (a wall-clock `timeout 3` was hit by a refusal of a few ms on a
+# loaded machine, or let a run that should have been refused pass as "still
+# running"):
+#   cpu_run SECONDS CMD...: CMD with SECONDS of CPU (RLIMIT_CPU: killed at it,
+#   exit 137), its status; a wall-clock guard of CPU_RUN_WALL seconds (300, or
+#   10 SECONDS when more) against a run that hangs using no CPU (exit 137 too). No "Killed"
+#   line: CMD's stderr is the caller's, the waiting shell's goes nowhere.
+#   at_row K SH CMD...: CMD (a sweep, or mpirun running one) with SH, a sh
+#   command, run right before the K-th row is appended to its journal (the
+#   move shim, tests/move_shim.c; SH and what it starts run without it), the
+#   sweep waiting for it: CMD's status. 77 and nothing run in a build without
+#   the shim (the caller says SKIP). A journal or directory disturbed "once the
+#   first row shows" from the script raced the end of a sweep of a second or
+#   two on a loaded machine; at a row it is mid-sweep on any.
+#   at_row_fn K FN ARG CMD...: at_row, SH the script's shell function FN called
+#   with ARG (in bash, with the script's functions and its variables tmp and d,
+#   which the sh of the shim would not pass on as exported functions).
 # Background jobs of a script ignore SIGINT (bash sets it so): a run that is to
 # see SIGINT is started under `env --default-signal=INT`.
 fails=0; passes=0
@@ -106,18 +124,54 @@ wait_cpu() {
     return 1
 }
 
+at_row() {
+    local k=$1 sh=$2 shim
+    shift 2
+    shim=$(shim_path "" move) || return 77
+    GW_MOVE_AT=$k GW_MOVE_RUN="unset LD_PRELOAD GW_MOVE_AT GW_MOVE_RUN; $sh" LD_PRELOAD=$shim "$@"
+}
+
+at_row_fn() {
+    local k=$1 fn=$2 arg=$3
+    shift 3
+    { declare -f; declare -p tmp d 2>/dev/null; } >"$tmp/at_row_fns.sh"
+    at_row "$k" "bash -c '. \"\$0\"; $fn \"\$1\"' '$tmp/at_row_fns.sh' '$arg'" "$@"
+}
+
+cpu_run() {
+    local secs=$1 wall=${CPU_RUN_WALL:-300}
+    shift
+    [ $((10 * secs)) -le "$wall" ] || wall=$((10 * secs))
+    timeout -s KILL "$wall" bash -c 'ulimit -t "$0"; "$@" 2>&3 3>&-' "$secs" "$@" 3>&2 2>/dev/null
+}
+
 cpu_of() {
     ( "$@" >/dev/null 2>&1; times ) | tail -1 |
         awk '{ for (i = 1; i <= 2; i++) { split($i, a, "m"); t += a[1] * 60 + a[2] } } END { printf "%.3f\n", t }'
 }
 
 # stop_mid_sweep SIG DIR TOTAL CMD...: the caller asserts 1 <= rows < TOTAL and
-# no DIR/results.csv (the signal landed mid-sweep). A sweep that ended before
-# the signal (rows = TOTAL, a table) is started again, three times at most;
-# attempt says which one landed.
+# no DIR/results.csv (the signal landed mid-sweep). SIGKILL or SIGTERM to a
+# sweep of the program: sent right before its second row (at_row), once. Else
+# (SIGINT, mpirun, no shim) once its journal holds a row: a sweep that ended
+# before the signal (rows = TOTAL, a table) is started again, three times at
+# most; attempt says which one landed.
 stop_mid_sweep() {
     local sig=$1 dir=$2 total=$3 pid
     shift 3
+    # a signal other than SIGINT (which the sweep ignores while the shim's
+    # command runs, as system(3) has it): sent by the sweep's own row (at_row),
+    # mid-sweep on any machine; CMD a sweep, not mpirun (whose $PPID is not it)
+    if [ "$sig" != INT ] && [ "$1" = "$GW" ]; then
+        attempt=1
+        rm -rf "$dir"
+        at_row 2 "kill -$sig \$PPID" "$@" 2>/dev/null; rc=$?
+        if [ $rc -ne 77 ]; then
+            rows=$(journal_rows "$dir/journal.csv")
+            [ ! -e "$dir/results.csv" ] && [ "$rows" -ge 1 ] && [ "$rows" -lt "$total" ]
+            return
+        fi
+    fi
     for attempt in 1 2 3; do
         rm -rf "$dir"
         env --default-signal=INT "$@" & pid=$!

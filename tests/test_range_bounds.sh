@@ -53,7 +53,7 @@ while read -r c f list; do
     big=1e300 quick=1 int=0
     refusal() {
         [ $quick = 1 ] && set -- --help "$@"
-        timeout -s KILL 20 "$GW" "${args[@]}" "$@" >/dev/null 2>"$tmp/big" </dev/null
+        cpu_run 20 "$GW" "${args[@]}" "$@" >/dev/null 2>"$tmp/big" </dev/null
     }
     refusal "$f" "$big"
     [ $? = 2 ] || { quick=0; refusal "$f" "$big"; }
@@ -73,9 +73,9 @@ while read -r c f list; do
         [ "$closed" = 1 ] && [ "$v" != - ] || continue
         nends=$((nends + 1))
         if [ $quick = 1 ]; then
-            timeout -s KILL 20 "$GW" "${args[@]}" --help "$f" "$v" >/dev/null 2>"$tmp/end" </dev/null
+            cpu_run 20 "$GW" "${args[@]}" --help "$f" "$v" >/dev/null 2>"$tmp/end" </dev/null
         else
-            timeout -s KILL 20 "$GW" "${args[@]}" "$f" "$v" >/dev/null 2>"$tmp/end" </dev/null
+            cpu_run 20 "$GW" "${args[@]}" "$f" "$v" >/dev/null 2>"$tmp/end" </dev/null
         fi
         if grep -qE "^granwave $c $f: .*(outside [][(]|must be >)" "$tmp/end"; then
             ko "$c $f $v (its range's printed $end end, $range): refused as outside it: $(head -c 200 "$tmp/end")"

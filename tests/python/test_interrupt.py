@@ -11,9 +11,9 @@ call returns (KeyboardInterrupt by default; a handler of the program's runs
 instead; a SIGINT the program ignores stays ignored).
 
 Each case runs in a child process (signals and pytest do not mix): a thread
-sends SIGINT 0.5 s into a call that takes more than 25 s uninterrupted
-(measured: the calls below did not finish in 25 s), and the child reports what
-was raised and when, whether the same short run gives the same result before and
+sends SIGINT once a call that takes more than 25 s uninterrupted has used 0.5 s
+of CPU (measured: the calls below did not finish in 25 s), and the child reports
+what was raised and after how much CPU, whether the same short run gives the same result before and
 after (the request is cleared), and whether Python's own Ctrl-C handling is back
 (SIGINT during time.sleep raises KeyboardInterrupt at once).
 """
@@ -32,6 +32,14 @@ CHILD = textwrap.dedent("""
     def fire():
         os.kill(os.getpid(), signal.SIGINT)
 
+    def fire_in_call(cpu0):
+        # once the call has used 0.5 s of CPU (process time, every thread): in
+        # the call whatever the load, where a timer of 0.5 s of the clock could
+        # fire before it began
+        while time.process_time() < cpu0 + 0.5:
+            time.sleep(0.01)
+        fire()
+
     # called, not eval'd: a KeyboardInterrupt out of eval() makes CPython
     # end the process with SIGINT at exit, even when it was caught
     calls = {
@@ -43,8 +51,8 @@ CHILD = textwrap.dedent("""
     }
 
     before = granwave.chain(n=3, solver="cvode")["f_max"]
-    threading.Timer(0.5, fire).start()
-    t0 = time.monotonic()
+    t0 = time.process_time()
+    threading.Thread(target=fire_in_call, args=(t0,), daemon=True).start()
     out = {}
     try:
         calls[sys.argv[1]]()
@@ -53,12 +61,14 @@ CHILD = textwrap.dedent("""
         out["raised"] = "KeyboardInterrupt"
     except BaseException as e:
         out["raised"] = type(e).__name__ + ": " + str(e)
-    out["elapsed"] = time.monotonic() - t0
+    out["elapsed"] = time.process_time() - t0
     out["same_after"] = granwave.chain(n=3, solver="cvode")["f_max"] == before
-    threading.Timer(0.2, fire).start()
     t1 = time.monotonic()
     try:
-        time.sleep(20)
+        # (the timer started in the try: a SIGINT before the sleep began is
+        # Python's KeyboardInterrupt too, caught here)
+        threading.Timer(0.2, fire).start()
+        time.sleep(600)
         out["sleep"] = "not interrupted"
     except KeyboardInterrupt:
         out["sleep"] = "KeyboardInterrupt"
@@ -77,11 +87,13 @@ def test_ctrl_c_stops_the_call(call):
     assert p.returncode == 0, p.stderr
     out = json.loads(p.stdout.strip().splitlines()[-1])
     assert out["raised"] == "KeyboardInterrupt", out
-    # SIGINT at 0.5 s; the steps check it every step: back within a few seconds
-    # on a loaded machine, where the call takes more than 25 s uninterrupted
+    # SIGINT at 0.5 s of the call's CPU; the steps check it every step: back
+    # within a few seconds of CPU (the clock's on a loaded machine ran longer),
+    # where the call takes more than 25 s uninterrupted
     assert out["elapsed"] < 6.0, out
     assert out["same_after"], out
-    assert out["sleep"] == "KeyboardInterrupt" and out["sleep_elapsed"] < 5.0, out
+    # a sleep of 600 s: interrupted, not ended (60 s: a guard, not a measure)
+    assert out["sleep"] == "KeyboardInterrupt" and out["sleep_elapsed"] < 60.0, out
 
 
 HANDLERS = textwrap.dedent("""
@@ -91,19 +103,27 @@ HANDLERS = textwrap.dedent("""
     def fire():
         os.kill(os.getpid(), signal.SIGINT)
 
+    def fire_in_call(cpu0):
+        # once the call has used 0.5 s of CPU (process time, every thread): in
+        # the call whatever the load, where a timer of 0.5 s of the clock could
+        # fire before it began
+        while time.process_time() < cpu0 + 0.5:
+            time.sleep(0.01)
+        fire()
+
     out = {}
     # a handler of the program's own: it runs (once), no KeyboardInterrupt, and
     # the stopped call fails with status -9
     got = []
     signal.signal(signal.SIGINT, lambda s, f: got.append(s))
-    threading.Timer(0.5, fire).start()
-    t0 = time.monotonic()
+    t0 = time.process_time()
+    threading.Thread(target=fire_in_call, args=(t0,), daemon=True).start()
     try:
         granwave.chain(n=20000, solver="rk4")
         out["custom"] = "returned"
     except granwave.GranwaveError as e:
         out["custom"] = "status %d: %s" % (e.status, e)
-    out["custom_elapsed"] = time.monotonic() - t0
+    out["custom_elapsed"] = time.process_time() - t0
     out["custom_calls"] = len(got)
     # SIGINT ignored by the program: ignored during the call too (the run goes on)
     signal.signal(signal.SIGINT, signal.SIG_IGN)

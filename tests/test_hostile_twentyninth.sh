@@ -168,7 +168,7 @@ sanitizer_build || lim="ulimit -v 2000000;"
 bash -c "$lim exec timeout -s KILL 120 \"$GW\" layer-impact --sample fine.txt --t-max 1e-4 --until verdict --out o" \
     >stdout 2>stderr </dev/null
 rc=$?
-if [ $rc -eq 2 ] && [ "$(wc -l <stderr)" -eq 1 ] && grep -q "^granwave layer-impact: skin: 0.1 m lists more than 10000000 pairs of the 20001 particles" stderr; then
+if [ $rc -eq 2 ] && [ "$(wc -l <stderr)" -eq 1 ] && grep -q "^granwave layer-impact --skin: 0.1 m lists more than 10000000 pairs of the 20001 particles" stderr; then
     ok "fine grains at the default skin: exit 2 naming the skin, before the list took the memory"
 else
     ko "fine grains at the default skin: exit $rc ($(head -c 200 stderr))"

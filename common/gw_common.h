@@ -358,7 +358,8 @@ int gw_fnv1a64_file_max(const char *path, const char *what, unsigned long long m
  * in the config's order with the case's values, then its [params]). A sweep
  * journals it with each row and writes it in its table (column
  * case_config_fnv1a64), so that a row of a sweep with other [params] or
- * another model is told apart from the sweep's own (docs/formats.md). */
+ * another model is told apart from the sweep's own (docs/formats.md). 0 (no
+ * hash) for a NULL model, n < 0, or a NULL names, values or pair. */
 unsigned long long gw_case_config_hash(const char *model, int n, const char *const *names,
                                        const char *const *values);
 /* A hash as results print it: exactly len = 16 lowercase hex digits at p into

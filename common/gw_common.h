@@ -99,7 +99,9 @@ int gw_warnings_add(char **list, const char *fmt, ...) __attribute__((format(pri
 
 /* ---- validation of numbers (name is the input's name for the message) ---- */
 
-/* Parse a whole string as a finite double; GW_EINVAL with a message otherwise. */
+/* Parse a whole string as a finite decimal double (blanks around it; no
+ * hexadecimal "0x1p-2", as gw_parse_long takes base 10 alone); GW_EINVAL with
+ * a message otherwise. */
 int gw_parse_double(const char *s, const char *name, double *out, gw_err *err);
 /* Parse a whole string as an integer in [lo, hi]; a text that is no integer
  * is refused naming [lo, hi] ("n: '1.5' is not an integer (give an integer in

@@ -141,3 +141,18 @@ def test_hexadecimal_text_is_refused_as_for_integers():
         with pytest.raises(granwave.GranwaveValueError) as e:
             granwave.chain(**{"n": 3, "vimp": 0.25, "t_max": 1e-3, **kw})
         assert str(e.value).startswith(word), str(e.value)
+
+
+@pytest.mark.parametrize("call", [
+    lambda: granwave.sweep(model="chain", grid={"vimp\nn": [0.1]}),
+    lambda: granwave.sweep(model="chain", grid={"n": [3]}, **{"t\rmax\x1b": 1e-3}),
+    lambda: granwave.chain(**{"vimp\nn": 0.1}),
+])
+def test_a_key_with_control_characters_is_quoted_on_one_line(call):
+    # quoted as the library quotes a text (\n, \r, \xHH): the key was quoted
+    # raw, a TypeError of two lines
+    with pytest.raises(TypeError) as e:
+        call()
+    msg = str(e.value)
+    assert "\n" not in msg and "\r" not in msg and "\x1b" not in msg, msg
+    assert "'vimp\\nn'" in msg or "'t\\rmax\\x1b'" in msg, msg

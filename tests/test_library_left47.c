@@ -11,7 +11,8 @@
  *     is refused naming it, whatever the backend. Controls: rk4 with rtol
  *     given refused, cvode with it and rk4 without it GW_OK.
  *   - gw_chain_falcon_analyse was GW_OK for n_lo > n_hi (a fit of no column)
- *     and for sizes below 1 (N = 0 and -3 fitted); each is GW_EINVAL, a
+ *     and for sizes below 1 (N = 0 and -3 fitted), and read past res for
+ *     n_hi = INT_MAX (its n++ overflowed: SIGSEGV); each is GW_EINVAL, a
  *     untouched. Control: tau_N = tau_1 + (N - 1) T_q fitted to T_q.
  *   - gw_chain_disp_dt_sample gave the automatic interval for a dt_sample of
  *     NaN, -1 or inf (which gw_chain_disp_params_validate refuses); NaN now.
@@ -161,6 +162,12 @@ static int c_falcon_zero(void)
 static int c_falcon_negative(void)
 {
     return falcon_refused(-3, -1);
+}
+
+/* INT_MAX: the loop's n++ overflowed (and read far past res) */
+static int c_falcon_int_max(void)
+{
+    return falcon_refused(1, 2147483647);
 }
 
 static int c_falcon_control(void)
@@ -339,6 +346,7 @@ static const child_row rows[] = {
     {"falcon analyse n_lo > n_hi", c_falcon_reversed},
     {"falcon analyse N = 0", c_falcon_zero},
     {"falcon analyse negative sizes", c_falcon_negative},
+    {"falcon analyse n_hi = INT_MAX", c_falcon_int_max},
     {"falcon analyse of a linear tau_N (control)", c_falcon_control},
     {"dispersion dt_sample NaN, negative, infinite: NaN", c_disp_dt_bad},
     {"dispersion dt_sample 0 and 2e-6 (control)", c_disp_dt_control},

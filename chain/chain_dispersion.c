@@ -83,7 +83,9 @@ static double disp_omega_c(const gw_chain_disp_params *p)
 /* Sampling interval: the given one or omega_c at 80 % of Nyquist. */
 double gw_chain_disp_dt_sample(const gw_chain_disp_params *p)
 {
-    if (!p)
+    /* 0 is automatic; a NaN, negative or infinite interval is none (it was
+     * given the automatic value, as gw_chain_disp_params_validate refuses it) */
+    if (!p || !(p->dt_sample >= 0) || !isfinite(p->dt_sample))
         return NAN;
     return p->dt_sample > 0 ? p->dt_sample : M_PI / (1.25 * disp_omega_c(p));
 }

@@ -29,6 +29,11 @@ int gw_chain_falcon_analyse(const gw_chain_params *p, double v, const gw_chain_r
 {
     if (!p || !res || !a)
         return GW_EINVAL;
+    /* sizes N are bead counts >= 1, n_lo .. n_hi a range: n_lo > n_hi or a
+     * size below 1 gave GW_OK with a fit of no column (or read res[-1]), and
+     * n_hi = INT_MAX overflowed the loop's n++ */
+    if (n_lo < 1 || n_hi < n_lo || n_hi == INT_MAX)
+        return GW_EINVAL;
     /* Only the decided columns: one held by gravity (chain_held_pending) was
      * stopped when it fell back onto the wall, its tau_N and F_max those of
      * that time, not its collision's (softwall --gravity 1e4 fitted them). The

@@ -646,7 +646,9 @@ gw_chain_disp_params gw_chain_disp_params_default(void);
 
 /* Check every field; GW_EINVAL with a message naming the field by its option
  * name in `granwave dispersion` (--n, --f0, --t-samples, ...). */
-/* Default sampling interval pi / (1.25 omega_c) when dt_sample is 0, s. */
+/* The sampling interval, s: dt_sample when > 0, the default pi / (1.25
+ * omega_c) when it is 0; NaN for a NULL p and a dt_sample that is NaN,
+ * negative or infinite (refused by gw_chain_disp_params_validate as dt-out). */
 double gw_chain_disp_dt_sample(const gw_chain_disp_params *p);
 
 int gw_chain_disp_params_validate(const gw_chain_disp_params *p, gw_err *err);

@@ -200,7 +200,8 @@ typedef struct gw_chain_falcon_fit {
  * extremes are those of the decided columns alone, NaN where fewer than two
  * (a fit) or none (a mean) remain. GW_OK, or GW_ENOMEM (no memory for the fit:
  * a filled, its fits undefined, NaN; it was void, and an allocation that
- * failed gave t_q and the wave speed null with exit 0). */
+ * failed gave t_q and the wave speed null with exit 0). GW_EINVAL (a not
+ * touched) for a NULL argument, n_lo < 1, n_lo > n_hi or n_hi = INT_MAX. */
 int gw_chain_falcon_analyse(const gw_chain_params *p, double v, const gw_chain_result *res, int n_lo,
                              int n_hi, gw_chain_falcon_fit *a);
 

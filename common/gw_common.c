@@ -308,6 +308,12 @@ int gw_parse_double_in(const char *s, const char *name, const gw_num_range *r, d
         return gw_err_set(err, GW_EINVAL, "%s: '%s' is not a number", name, s);
     if (!isfinite(v) || (errno == ERANGE && fabs(v) >= 1.0))
         return gw_err_set(err, GW_EINVAL, "%s: '%s' is not a finite number", name, s);
+    /* one rule for numbers in text: decimal, as integers (gw_parse_long_in,
+     * base 10) are; strtod's hexadecimal ("0x1p-2") was taken for a real
+     * input where "0x3" was refused for an integer */
+    if (memchr(s, 'x', (size_t)(end - s)) || memchr(s, 'X', (size_t)(end - s)))
+        return gw_err_set(err, GW_EINVAL, "%s: '%s' is not a decimal number (no hexadecimal, as for integers)",
+                          name, s);
     if (errno == ERANGE || (v != 0 && fabs(v) < DBL_MIN)) { /* strtod's underflow: no normal double */
         char what[96];
         gw_snprintf(what, sizeof what, "'%s'", s);

@@ -99,7 +99,9 @@ int gw_warnings_add(char **list, const char *fmt, ...) __attribute__((format(pri
 
 /* ---- validation of numbers (name is the input's name for the message) ---- */
 
-/* Parse a whole string as a finite double; GW_EINVAL with a message otherwise. */
+/* Parse a whole string as a finite decimal double (blanks around it; no
+ * hexadecimal "0x1p-2", as gw_parse_long takes base 10 alone); GW_EINVAL with
+ * a message otherwise. */
 int gw_parse_double(const char *s, const char *name, double *out, gw_err *err);
 /* Parse a whole string as an integer in [lo, hi]; a text that is no integer
  * is refused naming [lo, hi] ("n: '1.5' is not an integer (give an integer in
@@ -358,7 +360,8 @@ int gw_fnv1a64_file_max(const char *path, const char *what, unsigned long long m
  * in the config's order with the case's values, then its [params]). A sweep
  * journals it with each row and writes it in its table (column
  * case_config_fnv1a64), so that a row of a sweep with other [params] or
- * another model is told apart from the sweep's own (docs/formats.md). */
+ * another model is told apart from the sweep's own (docs/formats.md). 0 (no
+ * hash) for a NULL model, n < 0, or a NULL names, values or pair. */
 unsigned long long gw_case_config_hash(const char *model, int n, const char *const *names,
                                        const char *const *values);
 /* A hash as results print it: exactly len = 16 lowercase hex digits at p into

@@ -27,7 +27,8 @@ unsigned long long gw_fnv1a64(unsigned long long h, const void *p, size_t n)
 unsigned long long gw_case_config_hash(const char *model, int n, const char *const *names,
                                        const char *const *values)
 {
-    if (!model || (n > 0 && (!names || !values))) /* (no case: the hash of none) */
+    /* (no case: the hash of none; n < 0 hashed the model alone) */
+    if (!model || n < 0 || (n > 0 && (!names || !values)))
         return 0;
     unsigned long long h = gw_fnv1a64(GW_FNV1A64_INIT, "model ", 6);
     h = gw_fnv1a64(gw_fnv1a64(h, model, strlen(model)), "\n", 1);

@@ -101,6 +101,11 @@ int gw_solver_tolerances_check(double rtol, double atol, const char *rname, cons
 int gw_solver_tolerances_unused_check(const gw_solver_type *type, const struct gw_param *t, const void *obj,
                                       gw_err *err)
 {
+    /* a NULL table or object has no rows to check: it was GW_OK, as if the
+     * tolerances were not given; every backend refuses it now */
+    if (!type || !t || !obj)
+        return gw_err_set(err, GW_EINVAL, "gw_solver_tolerances_unused_check: %s is NULL",
+                          !type ? "type" : !t ? "t" : "obj");
     if (type != gw_solver_rk4 && type != gw_solver_verlet)
         return GW_OK;
     static const char *const rows[2] = {"rtol", "atol"};

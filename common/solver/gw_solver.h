@@ -170,7 +170,8 @@ const char *gw_solver_type_name(const gw_solver_type *type);
 /* The tolerances are cvode's and arkode's: for a fixed-step backend (rk4,
  * verlet), GW_EINVAL "rtol: has no effect with the fixed-step NAME solver ..."
  * when row rtol or atol of table t differs in obj from the row's default
- * (NaN when the row has none: not given); GW_OK otherwise. */
+ * (NaN when the row has none: not given); GW_OK otherwise. A NULL type, t
+ * or obj is refused (GW_EINVAL naming it) whatever the backend. */
 struct gw_param;
 int gw_solver_tolerances_unused_check(const gw_solver_type *type, const struct gw_param *t, const void *obj,
                                       gw_err *err);

@@ -230,7 +230,8 @@ typedef struct gw_stats_diagram {
 
 /* Build the diagram from n cells (x, h, share, mean penetration_rm; pen may
  * be NULL). Cells with h <= 0 (the full sample) or a NaN share are skipped.
- * GW_EINVAL for duplicate cells or fewer than 2 distinct x or h. */
+ * GW_EINVAL for duplicate cells, fewer than 2 distinct x or h, a share
+ * outside [0, 1] or an x (R_b/R_m) not > 0 (NaN marks no cell), naming it. */
 int gw_stats_diagram_make(int n, const double *x, const double *h, const double *share,
                           const double *pen, double criterion, gw_stats_diagram *d,
                           gw_err *err);

@@ -26,6 +26,7 @@
 #include <gsl/gsl_multifit_nlinear.h>
 
 #include "gw_global.h"
+#include "gw_locale.h"
 #include "gw_stats.h"
 
 /* ---------------------------------------------------------------- diagram --- */
@@ -127,6 +128,17 @@ int gw_stats_diagram_make(int n, const double *x, const double *h, const double 
         return gw_err_set(err, GW_EINVAL, "diagram: %d cells (a count, >= 0)", n);
     if (!(criterion > 0 && criterion <= 1))
         return gw_err_set(err, GW_EINVAL, "criterion: %g is not in (0, 1]", criterion);
+    /* a share is a fraction of cases and x = R_b/R_m a ratio of radii: a
+     * share of 7 or -1 and an x <= 0 drew a boundary of no physical cell */
+    for (int i = 0; i < n; i++) {
+        char vb[32];
+        if (!isnan(share[i]) && !(share[i] >= 0 && share[i] <= 1))
+            return gw_err_set(err, GW_EINVAL, "diagram: share[%d] = %s is not in [0, 1]", i,
+                              gw_num_text(vb, sizeof vb, share[i]));
+        if (!isnan(x[i]) && !(x[i] > 0 && isfinite(x[i])))
+            return gw_err_set(err, GW_EINVAL, "diagram: x[%d] (R_b/R_m) = %s is not > 0 and finite", i,
+                              gw_num_text(vb, sizeof vb, x[i]));
+    }
     d->criterion = criterion;
     char *keep = malloc((size_t)n + 1);
     d->xs = malloc(((size_t)n + 1) * sizeof *d->xs);

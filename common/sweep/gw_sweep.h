@@ -326,7 +326,8 @@ double gw_memory_available(const char **what);
  * "jobs: J cases at once need about X GB (the largest, case K, Y GB), above
  * 80 % of the Z GB available (W): at most M jobs" (or, when a single case does
  * not fit, "case K needs about Y GB alone ...: no number of jobs fits"); *most (may be NULL) gets the
- * most jobs that fit (0: none). A bad value: GW_EINVAL "case K: ...". */
+ * most jobs that fit (0: none). A bad value: GW_EINVAL "case K: ...";
+ * processes other than 0 or 1: GW_EINVAL naming it. */
 int gw_sweep_memory_check(const gw_sweep_config *cfg, const gw_sweep_model *m, long jobs, int processes,
                           long *most, gw_err *err);
 

@@ -76,6 +76,9 @@ int gw_sweep_memory_check(const gw_sweep_config *cfg, const gw_sweep_model *m, l
 {
     if (!cfg || !m)
         return gw_err_set(err, GW_EINVAL, "gw_sweep_memory_check: %s is NULL", !cfg ? "cfg" : "m");
+    /* processes is a flag (0 threads, 1 processes): -1 was taken as true */
+    if (processes != 0 && processes != 1)
+        return gw_err_set(err, GW_EINVAL, "processes: %d is not 0 (threads) or 1 (processes)", processes);
     int rc = gw_sweep_config_check(cfg, err);
     if (rc != GW_OK)
         return rc;

@@ -20,7 +20,7 @@ from ._errors import (GW_ECANCELED, GW_EENERGY, GW_EFORMAT, GW_EINVAL, GW_EIO, G
                       keyword_text)
 from ._result import CLOCK_KEYS, Result, read_result  # noqa: F401
 from ._values import (_TYPE_NAMES, CHOICE, DARRAY, DOUBLE, FARRAY, FLAG, IARRAY, INT, LIST,  # noqa: F401
-                      LONG, RANGE, TEXT, _flag, _items, _show, _text, _texts, list_most, read_table)
+                      LONG, RANGE, TEXT, _flag, _items, _line, _show, _text, _texts, list_most, read_table)
 
 
 def warn(what, text, stacklevel=3):
@@ -65,7 +65,7 @@ class Study:
             for k, v in kwargs.items():
                 p = self.by_keyword.get(k)
                 if p is None:
-                    raise TypeError(f"{self.func}() got an unexpected keyword argument '{k}'{self.hint(k)}")
+                    raise TypeError(f"{self.func}() got an unexpected keyword argument '{_line(k)}'{self.hint(k)}")
                 if v is None:
                     continue
                 try:  # named as the library's messages are: the study, then the keyword

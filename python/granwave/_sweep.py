@@ -18,8 +18,8 @@ from ._core import Interruptible, Progress, issue
 from ._errors import GW_EINVAL, GranwaveError, GranwaveValueError, _raise, keyword_text
 from ._lib import lib
 from ._result import Result
-from ._values import (FLAG, TEXT, _BYTES, _digits, _fspath, _integer, _items, _kind, _plain, _scalar, _show, _text,
-                      _texts, read_table)
+from ._values import (FLAG, TEXT, _BYTES, _digits, _fspath, _integer, _items, _kind, _line, _plain, _scalar, _show,
+                      _text, _texts, read_table)
 
 
 def sweep_models():
@@ -210,30 +210,30 @@ def run_sweep(model, grid, params, jobs, progress):
             raise TypeError(f"sweep() grid: a key is a keyword name (str), got {type(k).__name__} ({_show(k)})")
         name = k.replace("_", "-")
         if name in seen and seen[name] != k:
-            raise TypeError(f"sweep(): '{seen[name]}' and '{k}' name the same parameter")
+            raise TypeError(f"sweep(): '{_line(seen[name])}' and '{_line(k)}' name the same parameter")
         seen.setdefault(name, k)
     for k, v in grid.items():
         name = k.replace("_", "-")
         if not _model_has(m, name):
-            raise TypeError(f"sweep() grid: '{k}' is not a parameter of model {model}{_sweep_hint(model, m, k)}")
+            raise TypeError(f"sweep() grid: '{_line(k)}' is not a parameter of model {model}{_sweep_hint(model, m, k)}")
         if v is None or isinstance(v, (set, frozenset, dict) + _BYTES) or \
                 (isinstance(v, np.ndarray) and v.ndim != 1):
-            raise TypeError(f"sweep() grid: '{k}': expected a list, a range, a 1-D array or a string, "
+            raise TypeError(f"sweep() grid: '{_line(k)}': expected a list, a range, a 1-D array or a string, "
                             f"got {type(v).__name__}")
         vals = _grid_values(k, v)
         if not vals:
-            raise GranwaveValueError(f"{k}: empty list of grid values", GW_EINVAL)
+            raise GranwaveValueError(f"{_line(k)}: empty list of grid values", GW_EINVAL)
         axes[k] = vals
         try:
             texts = [_ini_value(k, x, _sweep_rows(model, m, k)) for x in vals]
         except TypeError as e:
-            raise TypeError(f"sweep() grid: '{k}': {e}") from None
+            raise TypeError(f"sweep() grid: '{_line(k)}': {e}") from None
         if any("," in t for t in texts):  # the list's separator: 'a,b' ran two cases
-            raise GranwaveValueError(f"{k}: a grid value holds ',' (the list separator of a sweep)", GW_EINVAL)
+            raise GranwaveValueError(f"{_line(k)}: a grid value holds ',' (the list separator of a sweep)", GW_EINVAL)
         # a list item 'A:B' alone on its line is the library's range: grid={"n": ["1:3"]}
         # ran 3 cases where the result's n had one entry (its columns 3)
         if not isinstance(v, str) and any(_looks_like_range(t) for t in texts):
-            raise GranwaveValueError(f"sweep() grid: '{k}': a list item "
+            raise GranwaveValueError(f"sweep() grid: '{_line(k)}': a list item "
                                      f"{next(t for t in texts if _looks_like_range(t))!r} is a range, not one value: give "
                                      f"the string 'A:B' or range(A, B + 1)", GW_EINVAL)
         n_lines = len(lines)
@@ -254,7 +254,8 @@ def run_sweep(model, grid, params, jobs, progress):
             lines.append(line.rstrip())
         key_bytes[k] = sum(len(x) + 1 for x in lines[n_lines:])
         if any(len(x) > _SWEEP_LINE_MAX for x in lines):  # one value longer than a line
-            raise GranwaveValueError(f"sweep() grid: '{k}': a value takes {max(len(t) for t in texts)} characters, "
+            raise GranwaveValueError(f"sweep() grid: '{_line(k)}': a value takes "
+                                     f"{max(len(t) for t in texts)} characters, "
                                      f"above the {_SWEEP_LINE_MAX} of a line of the library's config reader", GW_EINVAL)
     lines.append("[params]")
     for k, v in params.items():
@@ -262,16 +263,18 @@ def run_sweep(model, grid, params, jobs, progress):
             continue
         name = k.replace("_", "-")
         if not _model_has(m, name):
-            raise TypeError(f"sweep() got an unexpected keyword argument '{k}' (not a parameter of model {model})"
+            raise TypeError(f"sweep() got an unexpected keyword argument '{_line(k)}' "
+                            f"(not a parameter of model {model})"
                             f"{_sweep_hint(model, m, k)}")
         if k in grid:
-            raise TypeError(f"sweep(): '{k}' given both in grid and as a keyword")
+            raise TypeError(f"sweep(): '{_line(k)}' given both in grid and as a keyword")
         try:
             lines.append(f"{name} = {_ini_value(k, v, _sweep_rows(model, m, k))}")
         except TypeError as e:
-            raise TypeError(f"sweep(): '{k}': {e}") from None
+            raise TypeError(f"sweep(): '{_line(k)}': {e}") from None
         if len(lines[-1]) > _SWEEP_LINE_MAX:  # a long path: "sweep:6: a line of ..." before
-            raise GranwaveValueError(f"sweep(): '{k}': its value takes {len(lines[-1])} characters on the sweep's "
+            raise GranwaveValueError(f"sweep(): '{_line(k)}': its value takes {len(lines[-1])} "
+                                     f"characters on the sweep's "
                                      f"config line, above the {_SWEEP_LINE_MAX} the library's reader takes (a shorter "
                                      f"path, relative to the working directory)", GW_EINVAL)
     text = "\n".join(lines) + "\n"

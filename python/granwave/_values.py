@@ -178,6 +178,27 @@ def _show(value):
         return f"<{type(value).__name__} object>"
 
 
+def _line(text):
+    """A caller's text (a keyword name) quoted in a message as the library
+    quotes one (gw_one_line): one line, a newline, CR and tab written \\n, \\r,
+    \\t and another control character, or a byte of no UTF-8 character (a
+    lone surrogate), \\xHH. sweep(grid={"vimp\\nn": ...}) raised a TypeError
+    of two lines, the key quoted raw."""
+    out = []
+    for c in str(text):
+        o = ord(c)
+        if c in "\n\r\t":
+            out.append({"\n": "\\n", "\r": "\\r", "\t": "\\t"}[c])
+        elif o < 0x20 or o == 0x7f:
+            out.append(f"\\x{o:02x}")
+        elif 0xd800 <= o <= 0xdfff:  # a byte read with surrogateescape, else the surrogate's bytes
+            out.extend(f"\\x{b:02x}" for b in c.encode("utf-8", "surrogateescape" if o >= 0xdc80 and o <= 0xdcff
+                                                       else "surrogatepass"))
+        else:
+            out.append(c)
+    return "".join(out)
+
+
 def _kind(value):
     return f"{type(value).__name__} ({_show(value)})"
 

@@ -129,6 +129,30 @@ def test_refused_naming_the_keyword(odd_files, fn, kw, exc, start):
 
 def test_numbers_in_other_forms_run_as_their_value():
     ref = granwave.chain(n=3, vimp=0.25, t_max=1e-3)
-    for n, v in ((np.int64(3), "0x1p-2"), (np.array(3, dtype=">i8"), fractions.Fraction(1, 4)),
+    for n, v in ((np.int64(3), "2.5e-1"), (np.array(3, dtype=">i8"), fractions.Fraction(1, 4)),
                  (np.str_("3"), np.array(0.25, dtype=">f8")), (" 3 ", np.float64(0.25))):
         assert granwave.chain(n=n, vimp=v, t_max=1e-3) == ref, (n, v)
+
+
+def test_hexadecimal_text_is_refused_as_for_integers():
+    # numbers in text are decimal, for a real as for an integer (the flags and
+    # config files read them through the same parser): "0x1p-2" ran as 0.25
+    for kw, word in (({"vimp": "0x1p-2"}, "chain: vimp: '0x1p-2' is not a decimal number"), ({"n": "0x3"}, "chain: n: '0x3'")):
+        with pytest.raises(granwave.GranwaveValueError) as e:
+            granwave.chain(**{"n": 3, "vimp": 0.25, "t_max": 1e-3, **kw})
+        assert str(e.value).startswith(word), str(e.value)
+
+
+@pytest.mark.parametrize("call", [
+    lambda: granwave.sweep(model="chain", grid={"vimp\nn": [0.1]}),
+    lambda: granwave.sweep(model="chain", grid={"n": [3]}, **{"t\rmax\x1b": 1e-3}),
+    lambda: granwave.chain(**{"vimp\nn": 0.1}),
+])
+def test_a_key_with_control_characters_is_quoted_on_one_line(call):
+    # quoted as the library quotes a text (\n, \r, \xHH): the key was quoted
+    # raw, a TypeError of two lines
+    with pytest.raises(TypeError) as e:
+        call()
+    msg = str(e.value)
+    assert "\n" not in msg and "\r" not in msg and "\x1b" not in msg, msg
+    assert "'vimp\\nn'" in msg or "'t\\rmax\\x1b'" in msg, msg

@@ -106,15 +106,15 @@ lsw() { # what pattern needle args...: stderr, --json and boundary_fit.json
     fi
     return 1
 }
-if lsw "layer-stats --delta-rm 1e6" "beta at an end .*a/b at an end .*rms residual 5e\\+05 R_m: the offset held at 5e\\+05 R_m \\(delta-rm / 2\\) lies above every boundary crossing" \
+if lsw "layer-stats --delta-rm 1e6" "beta at its lower end, 0, .*a/b at its lower end, 1e-6, .*rms residual 5e\\+05 R_m: the offset held at 5e\\+05 R_m \\(delta-rm / 2\\) lies above every boundary crossing" \
     --delta-rm 1e6; then
     # the value: B.31 never below its offset, so the residual is about offset - H* (H* <= 13 R_m)
     [ "$(jq_py l.json 'd["diagrams"][0]["fit"]["at_bound"], abs(d["diagrams"][0]["fit"]["rms_residual"] - 5e5) < 20')" = "['beta', 'a_over_b'] True" ] &&
         ok "layer-stats --delta-rm 1e6: at_bound beta, a_over_b; rms residual 5e5 - H*" ||
         ko "layer-stats --delta-rm 1e6: $(jq_py l.json 'd["diagrams"][0]["fit"]["at_bound"], d["diagrams"][0]["fit"]["rms_residual"]')"
 fi
-lsw "layer-stats --gamma-deg 89" "beta at an end" --gamma-deg 89
-lsw "layer-stats --fit beta,a_over_b,tan_gamma" "tan_gamma at an end" --fit beta,a_over_b,tan_gamma
+lsw "layer-stats --gamma-deg 89" "beta at its upper end, the smallest R_b/R_m \\(2\\)" --gamma-deg 89
+lsw "layer-stats --fit beta,a_over_b,tan_gamma" "tan_gamma at its lower end, tan 1e-6 deg," --fit beta,a_over_b,tan_gamma
 lsw "layer-stats --fit beta,a_over_b,offset" "offset at 0\\)" --fit beta,a_over_b,offset
 if runs_json "layer-stats (control)" l.json layer-stats "$tab"; then
     [ "$(jq_py l.json 'd["warnings"], d["diagrams"][0]["fit"]["at_bound"]')" = "[] []" ] && [ ! -s "$tmp/stderr" ] &&

@@ -225,7 +225,7 @@ int gw_cmd_wavespeed(int argc, char **argv)
                     gw_cli_num(c[i], sizeof c[i], "%.4f", cs[i][3]);
                 }
                 printf("  beta: tq %s, front %s, group %s%s\n", b[0], b[1], b[2],
-                       !all_val ? (wo.n_held > 0 ? " (n/a: undecided, columns held by gravity)" : " (n/a: not finite)")
+                       !all_val ? (wo.n_held > 0 ? " (n/a: the warning says why)" : " (n/a: not finite)")
                        : all_err ? "" : " (two speeds: each fit goes through both, no standard error)");
                 printf("  C3: tq %s, front %s, group %s, group/sqrt(3/2) %s (F.27: 2)\n", c[0], c[1], c[2], c[3]);
             }

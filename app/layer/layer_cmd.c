@@ -697,6 +697,8 @@ int gw_cmd_layer_impact(int argc, char **argv)
     memset(&oset, 0, sizeof oset);
     if (c.out && gw_outset_begin(&oset, c.out, impact_files, &err) != GW_OK) {
         gw_layer_sample_free(&s);
+        if (made[0])
+            gw_cli_unmake(c.out, made);
         return fail("layer-impact", err.msg);
     }
     gw_layer_impact_result r;
@@ -719,12 +721,15 @@ int gw_cmd_layer_impact(int argc, char **argv)
     gw_layer_sample_free(&s);
     if (rc == GW_EINVAL || rc == GW_EUNSUPPORTED || vc.failed)
         gw_outset_abort(&oset); /* refused, or a snapshot not written: nothing of this run */
-    if ((rc == GW_EINVAL || rc == GW_EUNSUPPORTED) && made[0])
-        gw_cli_unmake(c.out, made); /* a refused input leaves nothing behind */
     if (rc != GW_OK) {
         gw_err cerr = {{0}};
         if (oset.active && gw_outset_commit(&oset, &cerr) != GW_OK) /* the snapshots of the failed run */
             fprintf(stderr, "granwave layer-impact --out: %s\n", cerr.msg);
+        /* a refused input leaves nothing behind, and a run that failed (exit 1)
+         * before a snapshot of it was placed no empty directory it made (the
+         * directories go only while empty: a failure's snapshots keep them) */
+        if (made[0])
+            gw_cli_unmake(c.out, made);
         if ((rc == GW_EINVAL || rc == GW_EUNSUPPORTED) && !vc.failed) { /* "dt: ..." -> "layer-impact --dt: ...", as the plan's */
             gw_cli_study_error(gw_layer_impact_setup_params(), "layer-impact", rc, &err);
             fprintf(stderr, "granwave %s\n", err.msg);
@@ -762,6 +767,8 @@ int gw_cmd_layer_impact(int argc, char **argv)
             gw_path_join(path, sizeof path, c.out, "impact.json") != GW_OK ||
             gw_json_write(path, j, &err) != GW_OK || gw_outset_commit(&oset, &err) != GW_OK) {
             gw_outset_abort(&oset);
+            if (made[0]) /* nothing of this run placed: no empty directory it made */
+                gw_cli_unmake(c.out, made);
             fprintf(stderr, "granwave layer-impact --out: %s\n", err.msg);
             code = 1;
         }

@@ -376,20 +376,37 @@ static int fit_edge_warning(const gw_stats_analysis *A, int q, char **list)
     const gw_stats_b31_fit *f = &D->fit;
     if (!D->ok || !D->fit_ok || !f->at_bound)
         return GW_OK;
+    /* each parameter on its edge named with the end it is at: its value
+     * against the middle of its range (at_bound is set only within 1e-6 of an
+     * end); beta's upper end is the smallest boundary R_b/R_m, the fit's x_lo */
+    double hmax = -INFINITY, xlo = INFINITY;
+    for (int i = 0; i < D->d.nx; i++)
+        if (D->d.pts[i].kind == GW_STATS_BND_CROSS) {
+            hmax = fmax(hmax, D->d.pts[i].h);
+            xlo = fmin(xlo, D->d.pts[i].x);
+        }
+    const int lo[4] = {1, f->p.beta < xlo / 2, f->p.a_over_b < 1, f->p.tan_gamma < 1};
     static const struct {
         int bit;
-        const char *name;
-    } bits[] = {{GW_STATS_B31_OFFSET, "offset at 0"}, {GW_STATS_B31_BETA, "beta at an end of [0, the smallest R_b/R_m]"},
-                {GW_STATS_B31_AB, "a/b at an end of [1e-6, 1e6]"},
-                {GW_STATS_B31_TANG, "tan_gamma at an end of [tan 1e-6 deg, tan 89 deg]"}};
-    char edge[200] = "";
-    for (int k = 0; k < 4; k++)
-        if (f->at_bound & bits[k].bit)
-            gw_snprintf(edge + strlen(edge), sizeof edge - strlen(edge), "%s%s", *edge ? ", " : "", bits[k].name);
-    double hmax = -INFINITY;
-    for (int i = 0; i < D->d.nx; i++)
-        if (D->d.pts[i].kind == GW_STATS_BND_CROSS)
-            hmax = fmax(hmax, D->d.pts[i].h);
+        const char *name, *low, *high, *range;
+    } bits[] = {{GW_STATS_B31_OFFSET, "offset", "0", "", ""},
+                {GW_STATS_B31_BETA, "beta", "0", "", "[0, the smallest R_b/R_m]"},
+                {GW_STATS_B31_AB, "a/b", "1e-6", "1e6", "[1e-6, 1e6]"},
+                {GW_STATS_B31_TANG, "tan_gamma", "tan 1e-6 deg", "tan 89 deg", "[tan 1e-6 deg, tan 89 deg]"}};
+    char edge[400] = "";
+    for (int k = 0; k < 4; k++) {
+        if (!(f->at_bound & bits[k].bit))
+            continue;
+        const size_t u = strlen(edge);
+        if (k == 0) /* offset >= 0: one end */
+            gw_snprintf(edge + u, sizeof edge - u, "%soffset at 0", *edge ? ", " : "");
+        else if (k == 1 && !lo[k]) /* the smallest R_b/R_m, its value too */
+            gw_snprintf(edge + u, sizeof edge - u, "%sbeta at its upper end, the smallest R_b/R_m (%.4g), of %s",
+                        *edge ? ", " : "", f->p.beta, bits[k].range);
+        else
+            gw_snprintf(edge + u, sizeof edge - u, "%s%s at its %s end, %s, of %s", *edge ? ", " : "", bits[k].name,
+                        lo[k] ? "lower" : "upper", lo[k] ? bits[k].low : bits[k].high, bits[k].range);
+    }
     char why[200] = "";
     if (!(A->fit_mask & GW_STATS_B31_OFFSET) && D->offset > hmax) /* B.31 lies above its offset */
         gw_snprintf(why, sizeof why, ": the offset held at %.4g R_m (%s) lies above every boundary crossing (H* up "

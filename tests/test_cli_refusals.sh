@@ -67,7 +67,7 @@ refused "chain --radii with a zero radius" 'radii: item 2 is 0' chain --n 3 --ra
 
 # --- 2: physical ranges (the parameter tables) and the work of a study over N,
 # refused before anything is written and before any column runs
-refused "dispersion --min-bins absurd" 'dispersion --min-bins: 1000000000 is outside' dispersion --n 16 --t-samples 64 --min-bins 1000000000 --out "$tmp/o"
+refused "dispersion --min-bins absurd" 'dispersion --min-bins: 1e9 is outside' dispersion --n 16 --t-samples 64 --min-bins 1e9 --out "$tmp/o"
 refused "dispersion --min-bins above T/2 - 2 (nothing resolvable)" 'dispersion --min-bins: 31 is above 30, .* t-samples 64' dispersion --n 16 --t-samples 64 --min-bins 31 --out "$tmp/o"
 "$GW" dispersion --n 16 --t-samples 64 --min-bins 30 >/dev/null 2>&1 && ok "dispersion --min-bins T/2 - 2 accepted" || ko "dispersion --min-bins 30 at 64 samples refused"
 for cmd in "chain --n 2" "falcon --n 1:3 --heights none" "wavespeed --n 6:8 --vimp 0.3" "softwall --n 1:3" "drop --n 2 --t-max 2e-4"; do

@@ -30,8 +30,8 @@ static const char *disp_summary =
     "collision (granwave chain) and reports the wall-force spectrum peak against 1/P.";
 
 typedef struct disp_cli {
-    long n, t_samples, steps, seed, column_n, min_bins; /* min_bins: a count of bins, taken as an integer */
-    double f0, dt_out, amp, rtol, atol, vimp;
+    long n, t_samples, steps, seed, column_n;
+    double f0, dt_out, amp, min_bins, rtol, atol, vimp;
     int measure, json, quiet;
     const char *ends, *solver, *method, *out, *wisdom;
     /* the FFTW wisdom imported before planning, as FNV-1a 64 of its bytes (set
@@ -62,7 +62,7 @@ static void disp_options(disp_cli *c, gw_opt *o)
     c->steps = d.steps_per_sample;
     c->amp = d.amp;
     c->seed = (long)d.seed;
-    c->min_bins = (long)d.min_bins;
+    c->min_bins = d.min_bins;
     c->rtol = c->atol = 1e-10;
     c->vimp = 0.3;
     c->ends = "periodic";
@@ -78,7 +78,7 @@ static void disp_options(disp_cli *c, gw_opt *o)
     o[i++] = DOPT_D("amp", &c->amp, "A", "rms overlap perturbation / d0 of the initial velocities, in [1e-12, 0.1] "
                     "(smaller nears the rounding of d0) [1e-3]", GW_CHAIN_DISP_AMP_MIN, 0.1, 0);
     o[i++] = DOPT_L("seed", &c->seed, "S", "seed of the random mode phases of the initial velocities [1]", 0, 9.0e18);
-    o[i++] = DOPT_L("min-bins", &c->min_bins, "B", "ridge resolved from B frequency bins up, B <= T/2 - 2 [8]", 1, GW_CHAIN_DISP_MIN_BINS_MAX);
+    o[i++] = DOPT_D("min-bins", &c->min_bins, "B", "ridge resolved from B frequency bins up, B <= T/2 - 2 [8]", 1, GW_CHAIN_DISP_MIN_BINS_MAX, 0);
     o[i++] = DOPT_S("solver", &c->solver, "NAME", "rk4, cvode or arkode [rk4; column-n: cvode]");
     o[i++] = DOPT_S("method", &c->method, "NAME", "cvode: adams|bdf; arkode: erk|dirk (bdf, dirk: fixed ends) [adams / erk; column-n: bdf / erk]");
     o[i++] = DOPT_D("rtol", &c->rtol, "R", "relative tolerance, cvode/arkode [1e-10]", GW_TOL_MIN, GW_TOL_MAX, 0);

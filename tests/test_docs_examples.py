@@ -13,6 +13,12 @@ A new user copies the documentation's commands. Over README.md and docs/*.md:
      sweeps and their statistics: minutes);
   3. every `$ granwave ...` example of a ```text block (docs/reliability.md) prints
      on stderr exactly the line the page shows under it, and exits 2;
+  3b. the Python a page shows (with GRANWAVE_LIB, the library to load, in the
+     environment: not in a sanitizer build): every `PYTHONPATH=python /usr/bin/python3
+     -c "..."` line of a ```sh block (README.md, library.md) runs from the scratch
+     directory with the checkout's module, exits 0 and prints, and every `>>> granwave.CALL`
+     of a ```text block raises the exception the line under it shows, with its message
+     exactly (`granwave.GranwaveValueError: layer_impact: vi: ...`);
   4. every default or range the prose of README.md and the user's pages (cli.md,
      layer.md, column.md, drop.md, sheets.md, crowns.md, outcomes.md, formats.md,
      library.md) quotes for a flag is the one `granwave CMD --help --json` gives
@@ -62,10 +68,16 @@ def split_comment(line):
     return (line[:i], line[i + 3:]) if i >= 0 else (line, "")
 
 
+PY_LINE = re.compile(r"^PYTHONPATH=python /usr/bin/python3 -c ")
+
+
 class Checker:
-    def __init__(self, program, workdir):
+    def __init__(self, program, workdir, srcdir=None):
         self.program = program
         self.work = workdir
+        self.srcdir = os.path.abspath(srcdir or os.path.join(os.path.dirname(__file__), ".."))
+        self.lib = os.environ.get("GRANWAVE_LIB")
+        self.python_run = 0
         self.faults = []
         self.helps = {}
         self.sample = None
@@ -140,16 +152,58 @@ class Checker:
         if p.returncode != 2 or p.stderr.strip() != expected:
             self.fault(where, f"exit {p.returncode}, stderr {p.stderr.strip()!r}; the page says {expected!r}")
 
+    def python_env(self):
+        env = dict(os.environ, PYTHONPATH=os.path.join(self.srcdir, "python"), PYTHONDONTWRITEBYTECODE="1")
+        env["GRANWAVE_LIB"] = self.lib
+        return env
+
+    def python_line(self, where, line):
+        """3b: a `PYTHONPATH=python /usr/bin/python3 -c "..."` line, run as written from the
+        scratch directory with the checkout's module."""
+        if not self.lib:
+            return
+        code, _ = split_comment(line)
+        args = shlex.split(code)[1:]
+        p = subprocess.run(args, capture_output=True, text=True, timeout=120, cwd=self.work, env=self.python_env())
+        self.python_run += 1
+        if p.returncode != 0 or not p.stdout.strip():
+            self.fault(where, f"exit {p.returncode}, stdout {p.stdout.strip()[:80]!r}: {p.stderr.strip()[-300:]}")
+
+    def python_refusal(self, where, line, expected):
+        """3b: `>>> granwave.CALL(...)` raises the exception shown under it."""
+        if not self.lib:
+            return
+        if "s.txt" in line:
+            self.make_sample()
+        prog = ("import granwave\n"
+                "try:\n"
+                f"    {line[4:].strip()}\n"
+                "except Exception as e:\n"
+                "    print(f'{type(e).__module__.split(\".\")[0]}.{type(e).__name__}: {e}')\n"
+                "else:\n"
+                "    print('no exception')\n")
+        p = subprocess.run(["/usr/bin/python3", "-c", prog], capture_output=True, text=True, timeout=120,
+                           cwd=self.work, env=self.python_env())
+        self.python_run += 1
+        if p.returncode != 0 or p.stdout.strip() != expected:
+            self.fault(where, f"Python printed {p.stdout.strip()!r} (exit {p.returncode}{': ' + p.stderr.strip()[-200:] if p.stderr.strip() else ''}); "
+                              f"the page says {expected!r}")
+
     def check(self, lines):
         for i, (rel, n, kind, line) in enumerate(lines):
             where = f"{rel}:{n}"
             s = line.strip()
             if kind == "sh" and s.startswith("build/granwave "):
                 self.command(where, s)
-            elif kind == "text" and s.startswith("$ granwave "):
+            elif kind == "sh" and PY_LINE.match(s):
+                self.python_line(where, s)
+            elif kind == "text" and s.startswith(("$ granwave ", ">>> granwave.")):
                 nxt = lines[i + 1] if i + 1 < len(lines) else None
                 if nxt and nxt[0] == rel and nxt[1] == n + 1:
-                    self.refusal(where, split_comment(s)[0].strip(), nxt[3].strip())
+                    if s.startswith("$"):
+                        self.refusal(where, split_comment(s)[0].strip(), nxt[3].strip())
+                    else:
+                        self.python_refusal(where, s, nxt[3].strip())
         return self.faults
 
 
@@ -265,6 +319,13 @@ def self_test(program):
                   ("self", 11, "text", "granwave chain --n: not what it says")]
         faults = Checker(program, d).check(lines)
     want = ["'--no-such-flag' is not in", "exit 2", "not_written.csv", "the page says"]
+    if os.environ.get("GRANWAVE_LIB"):  # 3b: a Python line that fails, a refusal of another text
+        with tempfile.TemporaryDirectory() as d:
+            faults += Checker(program, d).check([
+                ("self", 20, "sh", 'PYTHONPATH=python /usr/bin/python3 -c "import granwave; print(granwave.chain(n=0))"'),
+                ("self", 30, "text", ">>> granwave.chain(n=2, vimp=2000)"),
+                ("self", 31, "text", "granwave.GranwaveValueError: chain: vimp: 2000 is outside (0, 1]")])
+        want += ["self:20: exit 1", "self:30: Python printed 'granwave.GranwaveValueError: chain: vimp"]
     # 4: a default and a range that drifted, a choice's default, and claims that hold
     page = ("For `drop`: `--gravity` defaults to 9.8 m/s^2 and must be in [1e-3, 1e5].\n"
             "`--solver rk4` (the default) and `--t-max` (default 10 ms).\n\n"
@@ -294,7 +355,7 @@ def main():
         return 1
     lines = doc_lines(srcdir)
     with tempfile.TemporaryDirectory() as d:
-        c = Checker(program, d)
+        c = Checker(program, d, srcdir)
         faults = c.check(lines)
     claims = []
     for rel in CLAIM_PAGES:
@@ -303,7 +364,10 @@ def main():
     ncmd = sum(1 for _, _, k, l in lines if l.strip().startswith(("build/granwave ", "$ granwave ")))
     for f in faults:
         print(f)
-    print(f"{ncmd} documented commands, {len(claims)} quoted defaults and ranges, {len(faults)} fault(s)")
+    npy = sum(1 for _, _, k, l in lines if PY_LINE.match(l.strip()) or l.strip().startswith(">>> granwave."))
+    pyrun = (f"{c.python_run} of {npy} Python lines run" if c.lib
+             else f"{npy} Python lines not run (no GRANWAVE_LIB)")
+    print(f"{ncmd} documented commands, {pyrun}, {len(claims)} quoted defaults and ranges, {len(faults)} fault(s)")
     return 1 if faults else 0
 
 

@@ -434,6 +434,19 @@ CLAIMS += [
      lambda x: f"{x[0]} steps of {x[1] * 1e6:.0f} us and 0.01 s of CPU, against {x[2] // 1000} {x[2] % 1000:03d} steps "
                f"and 0.8 s to T_f = {x[3]:.3f} s;"),
 ]
+# docs/cli.md: the default pile under a lower friction than it settled at, and the pile settled
+# again at that friction (a packing of its own), hit at 2 m/s
+_F20 = ["--vi", "2", "--friction", "20", "--json"]
+CLAIMS.append(("docs/cli.md", "At 2 m/s the 300-disc pile's e_n at 20 degrees is 0.1065 from zero springs (0.1013 with "
+               "its springs) against 0.2236 on the pile settled again at 20",
+               [SAMPLE300, ["layer-make", "--n", "300", "--seed", "1", "--friction", "20", "--out", "s300_f20.txt", "--json"],
+                ["layer-impact", "--sample", "sample300.txt", "--other-settling", "--zero-springs", *_F20],
+                ["layer-impact", "--sample", "sample300.txt", "--other-settling", *_F20],
+                ["layer-impact", "--sample", "s300_f20.txt", *_F20],
+                ["layer-impact", "--sample", "s300_f20.txt", "--zero-springs", *_F20]],
+               lambda j: (j[2]["e_n"], j[3]["e_n"], j[4]["e_n"], j[5]["e_n"]),
+               lambda x: (f"is {x[0]:.4f} from zero springs ({x[1]:.4f} with its springs) against {x[2]:.4f} on the pile"
+                          if f"{x[2]:.4f}" == f"{x[3]:.4f}" else f"the pile settled at 20 gives {x[2]:.4f} and {x[3]:.4f}")))
 # docs/column.md: the calibration's one-bead run has its own end time and sampling
 _KK20 = ["chain", "--n", "20", "--damping", "kk", "--restitution", "0.9", "--json"]
 CLAIMS.append(("docs/column.md", "gamma 7035.97 for N = 20 at every `--dt-out`",

@@ -447,6 +447,39 @@ CLAIMS.append(("docs/cli.md", "At 2 m/s the 300-disc pile's e_n at 20 degrees is
                lambda j: (j[2]["e_n"], j[3]["e_n"], j[4]["e_n"], j[5]["e_n"]),
                lambda x: (f"is {x[0]:.4f} from zero springs ({x[1]:.4f} with its springs) against {x[2]:.4f} on the pile"
                           if f"{x[2]:.4f}" == f"{x[3]:.4f}" else f"the pile settled at 20 gives {x[2]:.4f} and {x[3]:.4f}")))
+# docs/layer.md: the default block set down on the 300-disc pile for 100 ms, with its springs and
+# from zero, run with the flags the page gives (read from it): the soil's potential energy lost
+# (the block's fall taken out) and its E_k at 10 ms
+def _rest_flags():
+    page = open(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "docs", "layer.md"),
+                encoding="utf-8").read()
+    m = re.search(r"set down on the piles of `layer-make --seed 1` \(30\s+degrees; `([^`]*)`", page)
+    return m.group(1).split() if m else ["--page-gives-no-flags"]
+
+
+_REST = ["layer-impact", "--sample", "sample300.txt", *_rest_flags()]
+
+
+def _soil(d):
+    """(soil PE lost by 100 ms, soil E_k at 10 ms) from a run's ledger.csv and impact.json."""
+    import csv
+    m = json.load(open(os.path.join(d, "impact.json")))["block_mass"]
+    with open(os.path.join(d, "ledger.csv")) as f:
+        rows = list(csv.DictReader(ln for ln in f if not ln.startswith("#")))
+    at = lambda t: min(rows, key=lambda r: abs(float(r["t"]) - t))
+    pe = float(at(0.1)["potential"]) - m * 9.81 * (float(at(0.1)["block_y"]) - float(rows[0]["block_y"]))
+    return -pe, float(at(0.01)["kinetic_soil"])
+
+
+CLAIMS.append(("docs/layer.md", "| 300 discs | -4 J against 36 J | 4.9 J against 26 J | 8.6 J |",
+               [SAMPLE300, _REST + ["--out", "o_rest"], _REST + ["--zero-springs", "--out", "o_rest0"]],
+               lambda j: (_soil(j[1]), _soil(j[2])),
+               lambda x: f"| {x[0][0]:.0f} J against {x[1][0]:.0f} J | {x[0][1]:.1f} J against {x[1][1]:.0f} J |"))
+# docs/column.md: the sampling plan's refusal of a wall far stiffer than the bead contacts
+CLAIMS.append(("docs/column.md", "today's plan expects 27.3 ms, 6.24e6 samples, and its refusal says so",
+               ["REFUSED", "chain", "--n", "2", "--k", "1e3", "--kwall", "1e14"],
+               lambda t: re.search(r"about (\S+) samples over the collision \(about (\S+) s\)", t).groups(),
+               lambda x: f"plan expects {float(x[1]) * 1e3:.1f} ms, {x[0].replace('e+0', 'e')} samples"))
 # docs/column.md: the calibration's one-bead run has its own end time and sampling
 _KK20 = ["chain", "--n", "20", "--damping", "kk", "--restitution", "0.9", "--json"]
 CLAIMS.append(("docs/column.md", "gamma 7035.97 for N = 20 at every `--dt-out`",

@@ -19,6 +19,9 @@ A new user copies the documentation's commands. Over README.md and docs/*.md:
      directory with the checkout's module, exits 0 and prints, and every `>>> granwave.CALL`
      of a ```text block raises the exception the line under it shows, with its message
      exactly (`granwave.GranwaveValueError: layer_impact: vi: ...`);
+  1b. every `granwave CMD ...` the prose of README.md and docs/ quotes in backticks (outside
+     code blocks) names only flags that `granwave CMD --help` lists (those before a `--`
+     that ends the options);
   4. every default or range the prose of README.md and the user's pages (cli.md,
      layer.md, column.md, drop.md, sheets.md, crowns.md, outcomes.md, formats.md,
      library.md) quotes for a flag is the one `granwave CMD --help --json` gives
@@ -207,6 +210,30 @@ class Checker:
         return self.faults
 
 
+# 1b. the commands the prose quotes inline
+INLINE = re.compile(r"`(?:build/)?granwave ([a-z][a-z-]*)((?: [^`]*)?)`")
+
+
+def inline_faults(checker, rel, text):
+    """Flags of an inline `granwave CMD ...` that CMD's --help does not list."""
+    text = re.sub(r"^```.*?^```", lambda m: "\n" * m.group(0).count("\n"), text, flags=re.S | re.M)
+    out = []
+    for m in INLINE.finditer(text):
+        cmd = m.group(1)
+        if cmd in ("help", "version"):
+            continue
+        h = checker.help(cmd)
+        where = f"{rel}:{text.count(chr(10), 0, m.start()) + 1}"
+        if h is None:
+            out.append(f"{where}: 'granwave {cmd} --help' fails: no such command")
+            continue
+        rest = m.group(2).replace("\n", " ").split(" -- ")[0]
+        for flag in re.findall(r"(?<![\w-])(--[a-z][\w-]*)", rest):
+            if not re.search(re.escape(flag) + r"(?![\w-])", h):
+                out.append(f"{where}: '{flag}' is not in 'granwave {cmd} --help' (inline `granwave {cmd}{m.group(2)[:60]}`)")
+    return out
+
+
 # 4. the defaults and ranges the prose quotes, against `--help --json`
 CLAIM_PAGES = ["README.md"] + ["docs/" + f for f in (
     "cli.md", "layer.md", "column.md", "drop.md", "sheets.md", "crowns.md", "outcomes.md",
@@ -319,6 +346,13 @@ def self_test(program):
                   ("self", 11, "text", "granwave chain --n: not what it says")]
         faults = Checker(program, d).check(lines)
     want = ["'--no-such-flag' is not in", "exit 2", "not_written.csv", "the page says"]
+    with tempfile.TemporaryDirectory() as d:  # 1b: an inline command with a removed flag, one after `--`
+        faults += inline_faults(Checker(program, d), "self.md",
+                                "Run `granwave chain --n 3 --no-such-inline 1` or `granwave sweep --out D -- --odd.ini`.\n")
+    want += ["self.md:1: '--no-such-inline' is not in"]
+    if any("--odd.ini" in f for f in faults):
+        print("self-test: a name after `--` taken for a flag")
+        return False
     if os.environ.get("GRANWAVE_LIB"):  # 3b: a Python line that fails, a refusal of another text
         with tempfile.TemporaryDirectory() as d:
             faults += Checker(program, d).check([
@@ -357,6 +391,14 @@ def main():
     with tempfile.TemporaryDirectory() as d:
         c = Checker(program, d, srcdir)
         faults = c.check(lines)
+    with tempfile.TemporaryDirectory() as d:
+        c1 = Checker(program, d, srcdir)
+        ninline = 0
+        for rel in ["README.md"] + sorted("docs/" + f for f in os.listdir(os.path.join(srcdir, "docs"))
+                                          if f.endswith(".md")):
+            text = open(os.path.join(srcdir, rel), encoding="utf-8").read()
+            ninline += len(INLINE.findall(text))
+            faults += inline_faults(c1, rel, text)
     claims = []
     for rel in CLAIM_PAGES:
         claims += prose_claims(rel, open(os.path.join(srcdir, rel), encoding="utf-8").read())
@@ -367,7 +409,7 @@ def main():
     npy = sum(1 for _, _, k, l in lines if PY_LINE.match(l.strip()) or l.strip().startswith(">>> granwave."))
     pyrun = (f"{c.python_run} of {npy} Python lines run" if c.lib
              else f"{npy} Python lines not run (no GRANWAVE_LIB)")
-    print(f"{ncmd} documented commands, {pyrun}, {len(claims)} quoted defaults and ranges, {len(faults)} fault(s)")
+    print(f"{ncmd} documented commands, {ninline} inline ones, {pyrun}, {len(claims)} quoted defaults and ranges, {len(faults)} fault(s)")
     return 1 if faults else 0
 
 

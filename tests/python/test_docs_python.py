@@ -20,7 +20,7 @@ import pytest
 import granwave
 
 DOC = Path(__file__).resolve().parents[2] / "docs" / "library.md"
-SLOW = ("softwall(sheets=True",)   # about 100 s of CPU
+SLOW = ("softwall(sheets=True",)   # about 18 s of CPU
 NUMBER = re.compile(r"^\s*([-+]?\d+(?:\.\d*)?(?:[eE][-+]?\d+)?)\s*(us|ms|s|N|Hz|m)?\b")
 UNIT = {"us": 1e-6, "ms": 1e-3, None: 1.0, "s": 1.0, "N": 1.0, "Hz": 1.0, "m": 1.0}
 

@@ -16,15 +16,19 @@ scratch directory:
      first line (version, model, config hash, cases), its `# param`, `# grid` and column
      lines and the row shown (with its `...`) are the page's; of the `# build` line only
      the part before the commit (the rest is the machine's);
+  5. every top-level key of `chain --json`, `layer-impact --json` (the 300-disc sample)
+     and `layer-make --json` is named in the page's table of that command (the text for
+     layer-make), `version`, `settings` and `warnings` aside (said for all of them);
   4. every ```ini block passes `sweep CONFIG --check` (exit 0): a block without
      `[sweep]` (a `[grid]` fragment) under `[sweep] model = chain`; the diagram config,
      which names `sample.txt`, beside the sample of the command the page gives for it
      (`layer-make --n 300 --seed 1`).
 First it checks itself on made-up blocks (a changed number, a missing header line, a
 wrong spring count, a wrong config hash) and fails if any goes unnoticed. About 10 s of
-CPU (the 300-disc pluviation: 6 s). Exit 0 when all hold, 1 otherwise (each fault
+CPU (the 300-disc pluviation: 6 s). 5 of its 9 checks fail on the page before. Exit 0 when all hold, 1 otherwise (each fault
 printed), 2 on bad usage.
 """
+import json
 import os
 import re
 import shlex
@@ -155,13 +159,47 @@ def check_ini(program, work, where, lines, sample300, faults):
         faults.append(f"{where}: `sweep --check` exit {p.returncode}: {p.stderr.strip()[-200:]}")
 
 
+JSON_DOCS = (  # (command run, the page's text that names its keys: from, to)
+    (["chain", "--n", "5", "--json"], "`granwave chain --json`:", "`granwave layer-impact --json`:"),
+    (["layer-impact", "--sample", "sample300.txt", "--json"], "`granwave layer-impact --json`:",
+     "`granwave layer-make --json`"),
+    (None, "`granwave layer-make --json` gives", "\n\n"))  # the 300-disc sample's own run
+SAMPLE300 = ["layer-make", "--n", "300", "--seed", "1", "--out", "sample300.txt", "--json", "--quiet"]
+
+
+def check_json_keys(program, work, rel, text, sample300, faults):
+    """5: the keys a command's --json prints are named on the page."""
+    for args, start, end in JSON_DOCS:
+        if start not in text:
+            faults.append(f"{rel}: no longer holds {start!r} (update this test with the page)")
+            continue
+        sec = text.split(start, 1)[1].split(end, 1)[0]
+        named = set(re.findall(r"`(\w+)`", sec))
+        if args is None:
+            args = SAMPLE300
+            p = made(program, args, work)
+        else:
+            if "sample300.txt" in args and not sample300():
+                faults.append(f"{rel}: could not make the 300-disc sample")
+                continue
+            p = run(program, args + ["--quiet"], work)
+        if p.returncode != 0:
+            faults.append(f"{rel}: granwave {' '.join(args)}: exit {p.returncode}: {p.stderr.strip()[-200:]}")
+            continue
+        keys = set(json.loads(p.stdout)) - {"version", "settings", "warnings"}
+        missing = sorted(keys - named)
+        if missing:
+            faults.append(f"{rel}: `granwave {args[0]} --json` prints {', '.join(missing)}, which the page's "
+                          f"text after {start!r} does not name")
+
+
 def check_page(program, work, rel, text):
     faults = []
 
     def sample300():
-        p = made(program, ["layer-make", "--n", "300", "--seed", "1", "--out", "sample300.txt", "--quiet"], work)
-        return p.returncode == 0
+        return made(program, SAMPLE300, work).returncode == 0
 
+    check_json_keys(program, work, rel, text, sample300, faults)
     bl = blocks(text)
     seen = set()
     for i, (kind, n, lines) in enumerate(bl):
@@ -207,6 +245,7 @@ def self_test(program, page, work):
         "spring count": (r"springs (\d+)", "springs 9999"),
         "config hash": (r"config [0-9a-f]{16}", "config 0123456789abcdef"),
         "ini": (r"n = 1:40", "n = 0:40"),
+        "json key": (r"\| `t_f`, `undecided` \|", "| `t_ff`, `undecided` |"),
     }
     missed = []
     for name, (rx, new) in cases.items():

@@ -286,7 +286,8 @@ static int arrivals_undersampled(const gw_layer_impact_result *r, const double *
 /* The speeds the sampling left unresolved: an estimator whose speed is NaN
  * while its arrivals (or its pairs' delays) put the wave across a crown in
  * fewer than two sampling intervals, or the first impact holds fewer than 4
- * samples (*few: their count, else 0), where no arrival is a local maximum.
+ * samples (*few: their count, else 0), where no arrival is a local maximum,
+ * over a time the default interval (2e-5 s) samples 4 times.
  * Bits 1, 2, 4 (strain peaks, kinetic peaks, cross-correlation) into the
  * return value, the sampling interval into *dt_s and the crown width into
  * *dc_s. A --dt-out of 5 ms on the 40-disc pile
@@ -301,9 +302,18 @@ unsigned layer_crowns_undersampled(const gw_layer_impact_result *r, double *dt_s
     const double dt = r->t[1] - r->t[0], dc = r->ring_r[1] - r->ring_r[0];
     if (!(dt > 0) || !(dc > 0))
         return 0;
-    if ((*few = first_impact_samples(r)) < 4) /* no arrival can be a sample's local maximum */
-        return (*dt_s = dt, *dc_s = dc,
-                (isnan(r->wave_speed) ? 1u : 0u) | (isnan(r->wave_speed_kin) ? 2u : 0u) | (isnan(r->wave_speed_xcorr) ? 4u : 0u));
+    /* no arrival can be a sample's local maximum; put to the sampling when the
+     * default interval (2e-5 s) would have given the first impact 4 samples,
+     * else to the run's length (--t-max 3e-5 s) */
+    const int nw = first_impact_samples(r);
+    if (nw < 4) {
+        if (!(r->t[nw - 1] - r->t[0] >= 3 * 2e-5))
+            return 0;
+        *few = nw;
+        *dt_s = dt, *dc_s = dc;
+        return (isnan(r->wave_speed) ? 1u : 0u) | (isnan(r->wave_speed_kin) ? 2u : 0u) |
+               (isnan(r->wave_speed_xcorr) ? 4u : 0u);
+    }
     unsigned which = 0;
     double c, cerr;
     int m;

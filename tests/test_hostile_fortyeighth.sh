@@ -13,8 +13,8 @@
 #    by the program, a sweep's case and Python) now names dt-out and each
 #    speed the sampling nulled; the speeds themselves are unchanged (the
 #    strain speed at 1e-3 s is still given, within 2 % of the default's).
-#    Controls: the default and 1e-4 s warn of nothing; a run cut by --t-max
-#    (5e-5 s) and a stiff impact (--shear-modulus 4e12, strain speed null
+#    Controls: the default and 1e-4 s warn of nothing; runs cut by --t-max
+#    (5e-5, 3e-5 s: 3 samples at the default interval) and a stiff impact (--shear-modulus 4e12, strain speed null
 #    from its scatter at the default sampling) are not put to dt-out.
 # Checks that fail on the code before: see docs/tests.md.
 # shellcheck source=test_lib.sh
@@ -89,6 +89,12 @@ read -r st kt xt nt wt <<<"$(speeds dt)"
 [ $rc -eq 0 ] && [ "$nt" = - ] && ! grep -q "dt-out" dt.err &&
     ok "control: a run cut by --t-max 5e-5 is not put to dt-out" ||
     ko "control: --t-max 5e-5: exit $rc, dt-out warning [$nt], stderr: $(head -c 300 dt.err)"
+
+impact dt3 --t-max 3e-5
+read -r st kt xt nt wt <<<"$(speeds dt3)"
+[ $rc -eq 0 ] && [ "$nt" = - ] && ! grep -q "dt-out" dt3.err &&
+    ok "control: a run of 3e-5 s (3 samples at the default interval) is put to its length, not to dt-out" ||
+    ko "control: --t-max 3e-5: exit $rc, dt-out warning [$nt], stderr: $(head -c 300 dt3.err)"
 
 impact dg --shear-modulus 4e12 --other-settling
 read -r sg kg xg ng wg <<<"$(speeds dg)"

@@ -16,6 +16,17 @@
 #    Controls: the default and 1e-4 s warn of nothing; runs cut by --t-max
 #    (5e-5, 3e-5 s: 3 samples at the default interval) and a stiff impact (--shear-modulus 4e12, strain speed null
 #    from its scatter at the default sampling) are not put to dt-out.
+#  2 Collisions pressed through the beads without a word in the studies.
+#    chain and drop warn when a contact's overlap passes the bead radius (the
+#    Hertz law far outside its range): `chain --n 3 --mass 1000 --radius
+#    1e-5` reached 309 radii and said so, but falcon, softwall and wavespeed
+#    ran such collisions (322, 446, 533 radii) with exit 0 and warnings [],
+#    Python's studies alike. The studies' tally of their collisions (the one
+#    that counts a --dt above the step taken) now also holds the largest
+#    overlap, and their warnings say it with how many collisions passed one
+#    radius (falcon's largest at least chain's for the N = 3 column it also
+#    runs). Controls: the default falcon says nothing of overlaps; chain keeps
+#    its one-run line.
 # Checks that fail on the code before: see docs/tests.md.
 # shellcheck source=test_lib.sh
 . "$(dirname "${BASH_SOURCE[0]}")/test_lib.sh"
@@ -102,6 +113,45 @@ read -r sg kg xg ng wg <<<"$(speeds dg)"
     ok "control: a stiff impact's strain speed, null from its scatter, is not put to dt-out" ||
     ko "control: --shear-modulus 4e12: exit $rc, strain speed $sg, dt-out warning [$ng]"
 
+# --- 2 the studies' collisions beyond one radius ---
+heavy=(--mass 1000 --radius 1e-5)
+cpu_run 60 "$GW" chain --n 3 "${heavy[@]}" --json --quiet >c.json 2>/dev/null
+chain_ov=$($PY -c '
+import json, re
+d = json.load(open("c.json"))
+m = [re.match(r"the largest contact overlap was ([0-9.e+]+) bead radii:", w) for w in d["warnings"]]
+print(next((x.group(1) for x in m if x), "-"))')
+[ "$chain_ov" != - ] && ok "control: chain --n 3 ${heavy[*]} warns of its overlap ($chain_ov radii), one-run line" ||
+    ko "control: chain --n 3 ${heavy[*]}: no one-run overlap line"
+cat >ov.py <<'EOF'
+import json, re, sys
+d = json.load(open("st.json"))
+pat = r"the largest contact overlap was ([0-9.e+]+) bead radii \(([0-9]+) of ([0-9]+) collisions beyond one radius\)"
+m = [x for x in (re.match(pat, w) for w in d["warnings"]) if x]
+if len(m) != 1:
+    print("no line")
+    sys.exit()
+ov, k, n = float(m[0].group(1)), int(m[0].group(2)), int(m[0].group(3))
+# falcon runs chain's N = 3 column at 0.3 m/s among its columns: its largest overlap is at least chain's
+good = ov > 1 and 1 <= k <= n and (sys.argv[2] != "falcon" or ov >= float(sys.argv[1]) * (1 - 1e-3))
+print("ok" if good else "bad %g %d of %d" % (ov, k, n))
+EOF
+studies=("falcon --n 1:3 --vimp 0.3 --heights none"
+         "softwall --n 1:4 --kwall 1e8"
+         "wavespeed --n 4:9 --vimp 0.3,0.5")
+for st in "${studies[@]}"; do
+    read -r -a args <<<"$st"
+    cpu_run 120 "$GW" "${args[@]}" "${heavy[@]}" --json --quiet >st.json 2>/dev/null; rc=$?
+    cpu_run 120 "$GW" "${args[@]}" "${heavy[@]}" --quiet >/dev/null 2>st.err
+    got=$($PY ov.py "$chain_ov" "${args[0]}" 2>&1)
+    [ $rc -eq 0 ] && [ "$got" = ok ] && grep -q "warning: the largest contact overlap was .* collisions beyond one radius" st.err &&
+        ok "${args[0]} ${heavy[*]}: the overlap beyond one radius warned, with its count, --json and stderr" ||
+        ko "${args[0]} ${heavy[*]}: exit $rc, $got, stderr: $(head -c 200 st.err)"
+done
+cpu_run 120 "$GW" falcon --n 1:3 --vimp 0.3 --heights none --json --quiet >st.json 2>/dev/null
+[ "$($PY -c 'import json; print(sum("overlap" in w for w in json.load(open("st.json"))["warnings"]))')" = 0 ] &&
+    ok "control: the default falcon column says nothing of overlaps" || ko "control: the default falcon warns of an overlap"
+
 # Python: the same warning through the library (GranwaveWarning naming dt_out)
 lib=$(dirname "$GW")/lib/libgranwave.so
 if [ -f "$lib" ] && [ -d "$SRC/python/granwave" ]; then
@@ -112,9 +162,15 @@ with warnings.catch_warnings(record=True) as w:
     r = granwave.layer_impact(sample="s40", dt_out=5e-3)
 m = [str(x.message) for x in w if "dt_out" in str(x.message) and "wave_speed_kinetic" in str(x.message)]
 print(len(m), r["wave_speed"] is None or r["wave_speed"] != r["wave_speed"])
-' 2>&1)
-    [ "$out" = "1 True" ] && ok "Python layer_impact(dt_out=5e-3): one warning naming dt_out and the speeds" ||
+with warnings.catch_warnings(record=True) as w:
+    warnings.simplefilter("always")
+    granwave.falcon(n=(1, 3), vimp=[0.3], heights=[], mass=1000, radius=1e-5)
+print(sum("overlap" in str(x.message) and "collisions beyond one radius" in str(x.message) for x in w))
+' 2>&1 | tr '\n' ' ')
+    [ "${out#1 True }" != "$out" ] && ok "Python layer_impact(dt_out=5e-3): one warning naming dt_out and the speeds" ||
         ko "Python layer_impact(dt_out=5e-3): $out"
+    [ "${out#* * }" = "1 " ] && ok "Python falcon(mass=1000, radius=1e-5): the overlap warned with its count" ||
+        ko "Python falcon(mass=1000, radius=1e-5): $out"
 else
     echo "SKIP: Python check (no $lib)"
 fi

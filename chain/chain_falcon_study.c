@@ -340,7 +340,7 @@ static int run_traces(gw_chain_falcon_outcome *out, const gw_chain_params *p0, c
         t->dt = r.run_dt;
         t->dt_max = r.run_dt_max;
         if (rc == GW_OK) /* its own run: the step it took, as the study's (the --dt warning) */
-            chain_dt_tally_add(dt_tally, r.run_dt_given, r.run_dt, r.run_dt_max);
+            chain_dt_tally_results(dt_tally, &r, 1);
         gw_chain_result_free(&r);
         gw_chain_free(c);
         if (rc != GW_OK) {

@@ -214,6 +214,8 @@ typedef struct chain_dt_tally {
     double taken_lo, taken_hi; /* the steps they took, s */
     int over, total;           /* runs above their step, of the runs tallied */
     int at_out;                /* of over, those whose step was rk4's dt_out (below dt_max) */
+    int overlap_over;          /* runs whose largest overlap passed the bead radius */
+    double overlap_hi;         /* the largest of their overlaps, in bead radii */
 } chain_dt_tally;
 /* One run into t: given the dt given (0: none), taken the step it took,
  * dt_max its largest step (s). t starts zeroed. */
@@ -227,6 +229,11 @@ int chain_dt_tally_warnings(const chain_dt_tally *t, const char *name, const cha
 /* The tally of the collisions res[0..n-1] (their run_dt_given, run_dt,
  * run_dt_max) added to t. */
 void chain_dt_tally_results(chain_dt_tally *t, const gw_chain_result *res, long n);
+/* A run's largest contact overlap (overlap_max_rel, bead radii) into t, whose
+ * warnings then also say how many of its runs passed one radius (chain and
+ * drop say it of their one run; falcon, wavespeed and softwall said nothing
+ * of collisions pressed 300 radii deep). chain_dt_tally_results adds it. */
+void chain_dt_tally_overlap(chain_dt_tally *t, double overlap_rel);
 
 /* Append speed v to the list in buf ("0.3, 6.16"; "..." once it is full),
  * counting in *count. */

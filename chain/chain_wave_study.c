@@ -185,7 +185,7 @@ static int front_speed(const gw_chain_params *p, const gw_chain_run_opts *run, d
         rc = chain_watch_collide(watch, c, p, &o, &r, err);
     *held = rc == GW_OK && chain_result_held(&r);
     if (rc == GW_OK) /* its finer sampling may cut rk4's step below a --dt the columns took */
-        chain_dt_tally_add(dt_tally, r.run_dt_given, r.run_dt, r.run_dt_max);
+        chain_dt_tally_results(dt_tally, &r, 1);
     int reached = 1;
     for (int k = 2; rc == GW_OK && *held && k <= p->n - 2; k++)
         reached &= isfinite(r.front_t[k]);

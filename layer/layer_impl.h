@@ -577,6 +577,13 @@ int layer_members_connected(const double *x, const double *y, const double *r, i
  * series gw_layer_impact_write_h5 writes. */
 int layer_result_shape(const gw_layer_impact_result *r, int whole, gw_err *err);
 
+/* The wave speeds of r left NaN by its sampling (the arrivals or the pairs'
+ * delays put the wave across a crown in fewer than two sampling intervals, or
+ * the first impact holds fewer than 4 samples: their count into *few, else 0):
+ * bits 1 strain peaks, 2 kinetic peaks, 4 cross-correlation; the sampling
+ * interval and the crown width into *dt_s, *dc_s (layer_crowns.c). */
+unsigned layer_crowns_undersampled(const gw_layer_impact_result *r, double *dt_s, double *dc_s, int *few);
+
 /* The checks a sample read from a file passes (layer_sample_check of
  * layer_sample_check.c and layer_overlaps_check): GW_EFORMAT with a message starting
  * "sample 'WHAT'" when s would be refused on reading. */

@@ -75,26 +75,13 @@ else ko "300 discs: widths against '6.01028 or more' (width:exit):$bad"; fi
 
 # --- 5 within the bound: a valid settled pile in the narrow box ---
 if "$GW" layer-make --n 20 --width-rm 5 --seed 1 --json --out n20.txt >n20.json 2>n20.err; then
-    /usr/bin/python3 - n20.txt n20.json <<'EOF'
+    /usr/bin/python3 - n20.json $(discs_outside n20.txt) <<'EOF'
 import json, sys
-d = json.load(open(sys.argv[2]))
-width, n, rows = None, None, []
-for line in open(sys.argv[1]):
-    f = line.split()
-    if not f or line.startswith("#"):
-        continue
-    if f[0] == "width":
-        width = float(f[1])
-    elif f[0] == "n":
-        n = int(f[1])
-    elif f[0] == "springs":
-        break
-    elif n is not None and len(f) == 3:
-        rows.append(tuple(map(float, f)))
-out = [i for i, (x, y, r) in enumerate(rows) if x - r < -0.02 * r or x + r > width + 0.02 * r or y - r < -0.02 * r]
-ok = d["converged"] is True and len(rows) == 20 and not out and 0.5 <= d["floor_load"] <= 1.5
+d = json.load(open(sys.argv[1]))
+n, rows, out = map(int, sys.argv[2:5])
+ok = d["converged"] is True and rows == 20 and not out and 0.5 <= d["floor_load"] <= 1.5
 print(("PASS" if ok else "FAIL") + ": --n 20 --width-rm 5: converged %s, %d discs, %d outside the box, floor load %g"
-      % (d["converged"], len(rows), len(out), d["floor_load"]))
+      % (d["converged"], rows, out, d["floor_load"]))
 EOF
 else
     echo "FAIL: --n 20 --width-rm 5: $(head -c 300 n20.err)"

@@ -37,6 +37,9 @@
 #   at_row_fn K FN ARG CMD...: at_row, SH the script's shell function FN called
 #   with ARG (in bash, with the script's functions and its variables tmp and d,
 #   which the sh of the shim would not pass on as exported functions).
+# A layer sample's discs read once for every test that checks them:
+#   sample_discs FILE: "WIDTH RM N", then "x y r" for each disc;
+#   discs_outside FILE: "N ROWS OUT", the discs reaching out of the box.
 # Background jobs of a script ignore SIGINT (bash sets it so): a run that is to
 # see SIGINT is started under `env --default-signal=INT`.
 fails=0; passes=0
@@ -182,4 +185,26 @@ stop_mid_sweep() {
         [ ! -e "$dir/results.csv" ] && [ "$rows" -ge 1 ] && [ "$rows" -lt "$total" ] && return 0
     done
     return 1
+}
+
+# sample_discs FILE: a layer sample's discs (the rows after its 'n' line, at
+# most n, with 3 fields or a clump member's 4; the springs after them not
+# read), as a first line "WIDTH RM N" and one "x y r" line each, the numbers
+# as the file writes them (test_layer_make_column, _rest, _clump_column)
+sample_discs() {
+    awk 'NF == 0 || /^#/ { next }
+         n == "" && $1 == "width" { w = $2 }
+         n == "" && $1 == "rm" { rm = $2 }
+         n == "" && $1 == "n" { n = $2; print w, rm, n; next }
+         n != "" && $1 == "springs" { exit }
+         n != "" && (NF == 3 || NF == 4) && k < n { print $1, $2, $3; k++ }' "$1"
+}
+
+# discs_outside FILE: "N ROWS OUT" of a layer sample: its n, its discs
+# (sample_discs) and how many reach out of the box (its walls and floor) by
+# more than 0.02 of their radius
+discs_outside() {
+    sample_discs "$1" | awk 'NR == 1 { w = $1; n = $3; next }
+        { k++; if ($1 - $3 < -0.02 * $3 || $1 + $3 > w + 0.02 * $3 || $2 - $3 < -0.02 * $3) out++ }
+        END { print n + 0, k + 0, out + 0 }'
 }

@@ -40,6 +40,9 @@
 # A layer sample's discs read once for every test that checks them:
 #   sample_discs FILE: "WIDTH RM N", then "x y r" for each disc;
 #   discs_outside FILE: "N ROWS OUT", the discs reaching out of the box.
+# A sweep stopped mid-way by a disturbance of its journal (at_row):
+#   sweep_stopped WHAT RC ERR LINES PATTERN: exit 1, LINES lines, PATTERN;
+#   kept_rows WHAT KEPT BEFORE TOTAL ERR: the journal kept aside, counted.
 # Background jobs of a script ignore SIGINT (bash sets it so): a run that is to
 # see SIGINT is started under `env --default-signal=INT`.
 fails=0; passes=0
@@ -207,4 +210,32 @@ discs_outside() {
     sample_discs "$1" | awk 'NR == 1 { w = $1; n = $3; next }
         { k++; if ($1 - $3 < -0.02 * $3 || $1 + $3 > w + 0.02 * $3 || $2 - $3 < -0.02 * $3) out++ }
         END { print n + 0, k + 0, out + 0 }'
+}
+
+# sweep_stopped WHAT RC ERR LINES PATTERN: a sweep stopped by a disturbance of
+# its journal (test_hostile_sweeps38, 39): exit 1 and LINES lines on ERR (the
+# block mpirun adds after them not counted), one matching PATTERN: one check
+sweep_stopped() {
+    local what=$1 rc=$2 err=$3 lines=$4 pattern=$5
+    if [ "$rc" -eq 1 ] && [ "$(sed '/^-\{20,\}$/,$d' "$err" | wc -l)" -eq "$lines" ] && grep -q "$pattern" "$err"; then
+        ok "$what: exit 1, one line: $(sed -n "${lines}p" "$err" | cut -c1-170)..."
+    else
+        ko "$what: journal disturbed mid-sweep: exit $rc: $(head -3 "$err")"
+    fi
+}
+
+# kept_rows WHAT KEPT BEFORE TOTAL ERR: the journal the sweep kept aside
+# (KEPT) holds each case once, more rows than BEFORE (the journal as it was
+# disturbed) and fewer than TOTAL (no case handed out after), and the line on
+# ERR counts them: one check, and a failure more when the line does not
+kept_rows() {
+    local what=$1 kept=$2 before=$3 total=$4 err=$5 n b
+    b=$(journal_rows "$before")
+    if n=$(rows_once "$kept") && [ "$n" -gt "$b" ] && [ "$n" -lt "$total" ]; then
+        ok "$what: $(basename "$kept") holds $n rows, each case once, $b from before, no case handed out after"
+    else
+        ko "$what: the kept journal $kept: ${n:-none} rows ($b before)"
+    fi
+    grep -q "stopped taking cases after .*: $n of its $total cases are journaled there" "$err" ||
+        ko "$what: the line does not count the $n kept rows"
 }

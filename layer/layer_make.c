@@ -560,8 +560,10 @@ static void finish(const gw_layer_params *lp, const gw_layer_make_params *m, con
 /* Initial clumps: shapes drawn per clump, packed in rows of bounding boxes.
  * Returns the number of discs (members) in *nd, and in tops[j] (tops may be
  * NULL) the top of the rows (m) once clump j is placed; b (NULL: count only)
- * has room for them. */
-static void clumps_initial(const gw_layer_make_params *m, double width, gw_layer_body *b, int *nd, double *tops)
+ * has room for them. Returns the rows' top; stops early (b NULL) once it is
+ * above stop (INFINITY: never), the top never falling as clumps are placed. */
+static double clumps_initial(const gw_layer_make_params *m, double width, gw_layer_body *b, int *nd, double *tops,
+                             double stop)
 {
     const double cv = cbrt(m->volume_ratio), rmin = 2 * m->rm / (1 + cv), rmax = cv * rmin;
     const double gap = 0.1 * rmax;
@@ -600,8 +602,11 @@ static void clumps_initial(const gw_layer_make_params *m, double width, gw_layer
         rowh = fmax(rowh, y1 - y0);
         if (tops)
             tops[j] = ry + rowh;
+        if (!b && ry + rowh > stop)
+            break;
     }
     *nd = k;
+    return ry + rowh;
 }
 
 /* The settled pile must be a sample the reader takes: discs sunk into a wall
@@ -643,11 +648,37 @@ static int settled_readable(gw_layer_sample *out, gw_err *err)
  * below the 20 where a wedged clump came within 0.1 % of the reader's 2 %. */
 #define CLUMP_ASPECT_MAX 16
 
+/* 1 when the clumps of m start in rows within CLUMP_ASPECT_MAX times the
+ * width w (m) of their box */
+static int clumps_fit(const gw_layer_make_params *m, double w)
+{
+    int nd;
+    return clumps_initial(m, w, NULL, &nd, NULL, CLUMP_ASPECT_MAX * w) <= CLUMP_ASPECT_MAX * w;
+}
+
+/* The width of three significant digits (in R_m) after wr: its text in
+ * buf, its value returned (read back from the text, as the flag is read). */
+static double width_next(double wr, char *buf, size_t size)
+{
+    const double step = pow(10, floor(log10(wr)) - 2);
+    double v = (floor(wr / step + 1e-6) + 1) * step;
+    gw_snprintf(buf, size, "%.3g", v);
+    v = gw_strtod(buf, NULL);
+    if (!(v > wr)) { /* a decade's edge rounded down: one step further */
+        gw_snprintf(buf, size, "%.3g", v + 1.5 * step);
+        v = gw_strtod(buf, NULL);
+    }
+    return v;
+}
+
 /* The clumps of m in a box of width w m (tops: their rows' tops, as
- * clumps_initial gives them; overwritten) refused when the rows
- * stand more than CLUMP_ASPECT_MAX times as high as the box is wide, naming
- * the n and the width that pass (each checked: the first clumps drawn are the
- * same whatever n, and the width is read back from its text). */
+ * clumps_initial gives them) refused when the rows stand more than
+ * CLUMP_ASPECT_MAX times as high as the box is wide, naming the n and the
+ * widths that pass, each checked: the first clumps drawn are the same
+ * whatever n; the rows' top is not monotonic in the width (the rows repack:
+ * n 1500 in width-rm 30.7 passes, 30.8 not, 30.9 again), so a width is named
+ * with the range of three-digit widths above it found to pass, never as "W or
+ * more" (which 30.7 would not have been). */
 static int check_clump_column(const gw_layer_make_params *m, double w, double *tops, gw_err *err)
 {
     const double top = tops[m->n - 1];
@@ -656,24 +687,45 @@ static int check_clump_column(const gw_layer_make_params *m, double w, double *t
     int fit = 0; /* the most clumps that pass: the first ones whose rows stay within the bound */
     while (fit < m->n && tops[fit] <= CLUMP_ASPECT_MAX * w)
         fit++;
-    /* the width: up by 1 % from 0.9 of the estimate of an aspect falling as
-     * 1/w^2 (rows of w / size clumps: a top as 1/w), until a width of three
-     * digits passes (the top is not monotonic in w: the rows repack) */
-    char wt[40], wb[40];
-    double wr = w / m->rm * fmax(1, 0.9 * sqrt(top / (CLUMP_ASPECT_MAX * w)));
-    for (int k = 0; k < 2000; k++, wr *= 1.01) {
-        gw_snprintf(wb, sizeof wb, "%.3g", wr);
-        const double c = gw_strtod(wb, NULL);
-        int nd;
-        if (c * m->rm > w && (clumps_initial(m, c * m->rm, NULL, &nd, tops),
-                              tops[m->n - 1] <= CLUMP_ASPECT_MAX * c * m->rm))
+    /* the width: from 0.9 of the estimate of an aspect falling as 1/w^2 (rows
+     * of w / size clumps: a top as 1/w), up the widths of three digits to
+     * the first that passes, W; then every one from W to hi (1.25 W, at most
+     * 50 widths on) checked, W moved above any refused (the search ends at
+     * the flag's bound, 1e6 R_m: then no width is named) */
+    char wt[40], wb[40] = "", wn[40], wh[40] = "";
+    const double wmax = 1e6;
+    double wr = width_next(fmax(w / m->rm, 0.9 * w / m->rm * sqrt(top / (CLUMP_ASPECT_MAX * w))), wn, sizeof wn);
+    while (wr <= wmax && !wb[0]) {
+        while (wr <= wmax && !clumps_fit(m, wr * m->rm))
+            wr = width_next(wr, wn, sizeof wn);
+        if (wr > wmax)
             break;
+        const double lo = wr;
+        gw_snprintf(wb, sizeof wb, "%s", wn);
+        double hi = fmin(1.25 * lo, wmax);
+        for (int k = 0; k < 50; k++) {
+            const double nx = width_next(wr, wn, sizeof wn);
+            if (nx > hi)
+                break;
+            wr = nx;
+            gw_snprintf(wh, sizeof wh, "%s", wn);
+            if (!clumps_fit(m, wr * m->rm)) { /* refused above W: search again above it */
+                wb[0] = wh[0] = '\0';
+                wr = width_next(wr, wn, sizeof wn);
+                break;
+            }
+        }
+        if (wb[0] && !wh[0]) /* W the flag's bound itself */
+            gw_snprintf(wh, sizeof wh, "%s", wb);
     }
+    char widen[160] = "";
+    if (wb[0])
+        gw_snprintf(widen, sizeof widen, ", or widen the box to --width-rm %s (each width of three digits from %s to %s "
+                    "passes; the rows repack as the width changes: one below or above may not)", wb, wb, wh);
     return gw_err_set(err, GW_EINVAL, "n: %d clumps in a box of --width-rm %s start in rows %.4g m high (their "
                       "bounding boxes packed from the floor), %.4g times as high as the box is wide, above %d: a "
-                      "pile so tall in a box so narrow does not settle; lower --n to %d, or widen the box to "
-                      "--width-rm %s or more", m->n, gw_num_text(wt, sizeof wt, m->width_rm), top, top / w,
-                      CLUMP_ASPECT_MAX, fit, wb);
+                      "pile so tall in a box so narrow does not settle; lower --n to %d%s", m->n,
+                      gw_num_text(wt, sizeof wt, m->width_rm), top, top / w, CLUMP_ASPECT_MAX, fit, widen);
 }
 
 /* t0: gw_clock_ms() at the start of gw_layer_make (for res->wall_ms). */
@@ -692,7 +744,7 @@ static int make_clumps(const gw_layer_params *lp0, const gw_layer_make_params *m
     double *tops = malloc((size_t)m->n * sizeof *tops);
     if (!tops)
         return gw_err_set(err, GW_ENOMEM, "layer-make: out of memory");
-    clumps_initial(m, lp.width, NULL, &nd, tops);
+    clumps_initial(m, lp.width, NULL, &nd, tops, INFINITY);
     const double steps = m->t_max / m->dt;
     if (steps * nd > 1e10)
         rc = gw_err_set(err, GW_EINVAL, "n: %d clumps (%d discs) over %.3g steps to t-max = %g s are about %.3g "
@@ -706,7 +758,7 @@ static int make_clumps(const gw_layer_params *lp0, const gw_layer_make_params *m
     gw_layer_body *b = calloc((size_t)nd, sizeof *b);
     if (!b)
         return gw_err_set(err, GW_ENOMEM, "layer-make: out of memory");
-    clumps_initial(m, lp.width, b, &nd, NULL);
+    clumps_initial(m, lp.width, b, &nd, NULL, INFINITY);
     double t, ke;
     int conv;
     if ((rc = check_step(&lp, m, b, nd, err)) != GW_OK) {
@@ -796,7 +848,11 @@ static double lattice_aspect(int n, double w, double p)
 
 /* The narrowest box (m) whose lattice of n discs at pitch p is at most
  * COLUMN_ASPECT_MAX times as high as wide: ncol columns fill widths in
- * [ncol p, (ncol + 1) p), at the height ceil(n / ncol) p. */
+ * [ncol p, (ncol + 1) p), at the height ceil(n / ncol) p. The aspect never
+ * rises with the width (within a count of columns the height holds while the
+ * width grows; a column more never adds a row), so every wider box passes
+ * too: check_column's "--width-rm W or more" holds, unlike the clumps' rows
+ * (check_clump_column). */
 static double column_width_min(int n, double p)
 {
     for (long c = 1;; c++) {

@@ -5,6 +5,7 @@
 #ifndef GW_TEST_CHILD_H
 #define GW_TEST_CHILD_H
 
+#include <stdarg.h>
 #include <stdio.h>
 #include <string.h>
 #include <stdlib.h>
@@ -79,13 +80,34 @@ typedef struct child_row {
     case_fn fn;
 } child_row;
 
+/* child_casef: child_case with its label made as printf makes it (a table's
+ * rows run over one body, a row chosen before each, or one body over a
+ * table of calls: "ROW: CALL") */
+static inline void child_casef(case_fn body, int *nfail, int *ncases, const char *fmt, ...)
+    __attribute__((format(printf, 4, 5)));
+static inline void child_casef(case_fn body, int *nfail, int *ncases, const char *fmt, ...)
+{
+    char label[512];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(label, sizeof label, fmt, ap);
+    va_end(ap);
+    child_case(label, body, nfail, ncases);
+}
+
+/* The tally of a test's cases and its exit status. */
+static inline int child_cases_end(int nfail, int ncases)
+{
+    printf("%d of %d cases failed\n", nfail, ncases);
+    return nfail ? 1 : 0;
+}
+
 static inline int child_cases_run(const child_row *rows, size_t n)
 {
     int nfail = 0, ncases = 0;
     for (size_t k = 0; k < n; k++)
         child_case(rows[k].label, rows[k].fn, &nfail, &ncases);
-    printf("%d of %d cases failed\n", nfail, ncases);
-    return nfail ? 1 : 0;
+    return child_cases_end(nfail, ncases);
 }
 
 /* In a child: report a failed expectation on stdout (which fails the case). */

@@ -21,29 +21,15 @@ max, an open end the parser takes) and fails if any goes unnoticed. Exit 0 when 
 1 otherwise (each fault printed), 2 on bad usage.
 """
 import json
-import os
 import re
-import shutil
 import subprocess
 import sys
 import tempfile
 
+import help_ranges
+from help_ranges import close, num, runner, value_text
+
 RANGE = re.compile(r"([\[(])\s*([^,\s]+),\s*([^\])\s]+)([\])])( \(or 0\))?")
-
-
-def num(text):
-    try:
-        return float(text)
-    except ValueError:
-        return None
-
-
-def close(a, b):
-    if a is None or b is None:
-        return a is b
-    if a == b:
-        return True
-    return abs(a - b) <= 1e-5 * max(abs(a), abs(b))
 
 
 REFUSED = re.compile(r"(?:outside|integer in) ([\[(])([^,\s]+), ([^\])\s]+)([\])])")
@@ -57,10 +43,6 @@ def same_range(err, m):
     r = REFUSED.search(err)
     return r is not None and r.group(1) == m.group(1) and r.group(4) == m.group(4) and \
         all(close(num(a), num(b)) for a, b in ((r.group(2), m.group(2)), (r.group(3), m.group(3))))
-
-
-def value_text(o, x):
-    return str(int(x)) if o["kind"] == "integer" else repr(x)
 
 
 def check_option(cmd, o, run, faults):
@@ -95,52 +77,26 @@ def check_option(cmd, o, run, faults):
                           f"where --help --json says {rng!r}")
 
 
-def runner(program, work):
-    def run(args):
-        p = subprocess.run([program, *args], capture_output=True, text=True, timeout=60, cwd=work)
-        wrote = ", ".join(sorted(os.listdir(work)))
-        for f in os.listdir(work):
-            p2 = os.path.join(work, f)
-            if os.path.isdir(p2):
-                shutil.rmtree(p2)
-            else:
-                os.remove(p2)
-        return p.returncode, p.stderr, wrote
-    return run
-
-
 def self_test(program):
     opts = [  # chain's --n is [1, 5e7]; dispersion's --f0 is (0, 1e9]
         {"name": "n", "kind": "integer", "min": 1, "max": 50000000, "range": None, "help": ""},
         {"name": "n", "kind": "integer", "min": 1, "max": 50000000, "range": "[1, 6e7]", "help": ""},
         {"name": "vimp", "kind": "number", "min": 1e-9, "max": 1000, "range": "(1e-09, 1000]", "help": ""},
     ]
-    faults = []
-    with tempfile.TemporaryDirectory() as d:
-        run = runner(program, d)
-        for o in opts:
-            check_option("chain", o, run, faults)
-    want = ["chain --n: range null", "range '[1, 6e7]'", "the range '(1e-09, 1000]' is open there"]
-    missed = [w for w in want if not any(w in f for f in faults)]
-    if missed:
-        print("self-test: faults not noticed: " + ", ".join(missed) + "\n" + "\n".join(faults))
-        return False
-    return True
+    return help_ranges.self_test(program, opts, lambda run, o, faults: check_option("chain", o, run, faults),
+                                 ["chain --n: range null", "range '[1, 6e7]'", "the range '(1e-09, 1000]' is open there"])
 
 
 def main():
-    if len(sys.argv) != 2:
-        print(__doc__.split("\n")[0], file=sys.stderr)
+    program = help_ranges.program_arg(__doc__)
+    if program is None:
         return 2
-    program = os.path.abspath(sys.argv[1])
     if not self_test(program):
         return 1
-    p = subprocess.run([program, "--help", "--json"], capture_output=True, text=True, timeout=60)
-    cmds = [c["name"] for c in json.loads(p.stdout)["commands"]]
     faults, n = [], 0
     with tempfile.TemporaryDirectory() as d:
         run = runner(program, d)
-        for cmd in cmds:
+        for cmd in help_ranges.commands(program):
             q = subprocess.run([program, cmd, "--help", "--json"], capture_output=True, text=True, timeout=60)
             for o in json.loads(q.stdout)["options"]:
                 if o["kind"] in ("number", "integer"):

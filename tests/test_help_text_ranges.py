@@ -24,11 +24,13 @@ short runs of the parser, a few seconds. Exit 0 when all hold, 1 otherwise (each
 printed), 2 on bad usage.
 """
 import json
-import os
 import re
 import subprocess
 import sys
 import tempfile
+
+import help_ranges
+from help_ranges import close, num, runner, value_text
 
 # a help line's range as help_range (app/gw_cli.c) reads it: the first " in [" or
 # " in (" (or at the start) to the first "]" or ")", and " (or 0)" after it
@@ -41,17 +43,6 @@ REFUSED_RANGE = re.compile(r"(?:outside|integer in) ([\[(])([^,\s]+), ([^\])\s]+
 REFUSED_BELOW = re.compile(r"must be (>=?) (\S+)")
 
 
-def num(text):
-    try:
-        return float(text)
-    except ValueError:
-        return None
-
-
-def close(a, b):
-    return a == b or abs(a - b) <= 1e-5 * max(abs(a), abs(b))
-
-
 def text_ranges(text):
     """{flag: the range its line prints, or None} of a text help."""
     lines = text.splitlines()
@@ -62,10 +53,6 @@ def text_ranges(text):
             r = TEXT_RANGE.search(m.group(2))
             out[m.group(1)] = r.group(1) if r else None
     return out
-
-
-def value_text(o, x):
-    return str(int(x)) if o["kind"] == "integer" else repr(x)
 
 
 def outside(o, x, upper):
@@ -146,16 +133,6 @@ def check_option(cmd, o, printed, run, faults):
     return checks
 
 
-def runner(program, work):
-    def run(args):
-        p = subprocess.run([program, *args], capture_output=True, text=True, timeout=60, cwd=work)
-        wrote = ", ".join(sorted(os.listdir(work)))
-        for f in os.listdir(work):
-            subprocess.run(["rm", "-rf", "--", os.path.join(work, f)], check=False)
-        return p.returncode, p.stderr, wrote
-    return run
-
-
 def self_test(program):
     n = {"name": "n", "kind": "integer", "min": 1, "max": 50000000, "range": "[1, 50000000]"}
     vimp = {"name": "vimp", "kind": "number", "min": 1e-9, "max": 1000, "range": "(1e-09, 1000]"}
@@ -167,29 +144,19 @@ def self_test(program):
     faults = []
     if parsed != {"n": None, "rtol": "[1e-15, 0.0001] (or 0)"}:
         faults.append(f"text_ranges read {parsed!r}")
-    with tempfile.TemporaryDirectory() as d:
-        run = runner(program, d)
-        for o, printed in cases:
-            check_option("chain", o, printed, run, faults)
     want = ["chain --n: the text help prints None", "prints '[1, 6e7]'", "the end 60000000",
             "chain --vimp 1e-09: the open end"]
-    missed = [w for w in want if not any(w in f for f in faults)]
-    wrong = [f for f in faults if "--rtol" in f or "text_ranges" in f]  # rtol's line holds
-    if missed or wrong:
-        print("self-test: faults not noticed: " + ", ".join(missed) + "\n" + "\n".join(faults))
-        return False
-    return True
+    return help_ranges.self_test(program, cases, lambda run, c, faults: check_option("chain", c[0], c[1], run, faults),
+                                 want, faults, wrong=lambda f: "--rtol" in f or "text_ranges" in f)  # rtol's line holds
 
 
 def main():
-    if len(sys.argv) != 2:
-        print(__doc__.split("\n")[0], file=sys.stderr)
+    program = help_ranges.program_arg(__doc__)
+    if program is None:
         return 2
-    program = os.path.abspath(sys.argv[1])
     if not self_test(program):
         return 1
-    p = subprocess.run([program, "--help", "--json"], capture_output=True, text=True, timeout=60)
-    cmds = [c["name"] for c in json.loads(p.stdout)["commands"]]
+    cmds = help_ranges.commands(program)
     faults, nopt, nbounded, nchecks = [], 0, 0, 0
     with tempfile.TemporaryDirectory() as d:
         run = runner(program, d)

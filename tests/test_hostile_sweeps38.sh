@@ -47,26 +47,18 @@ chain_sweep8_reference
 # is appended (at_row: mid-sweep on any machine; once the first row showed, it
 # raced the end of the sweep); checks what it left
 replaced() {
-    local what=$1 d=$2 swap=$3 rc n
+    local what=$1 d=$2 swap=$3 rc
     shift 3
     rm -rf "$d" "$d.err"
     at_row_fn 2 "$swap" "$d" "$@" >/dev/null 2>"$d.err"; rc=$?
     if [ $rc -eq 77 ]; then echo "SKIP: $what (no move shim in this build)"; return; fi
     # (mpirun adds its block of lines on a rank's exit status 1, after the program's)
-    [ $rc -eq 1 ] && [ "$(sed '/^-\{20,\}$/,$d' "$d.err" | wc -l)" -eq 1 ] &&
-        grep -q "^granwave sweep: $d/journal.csv was replaced by another file while the sweep ran.*kept whole as $d/$kept_name" "$d.err" &&
-        ok "$what: exit 1, one line: $(head -1 "$d.err" | cut -c1-160)..." ||
-        ko "$what: journal replaced mid-sweep: exit $rc: $(head -3 "$d.err")"
+    sweep_stopped "$what" $rc "$d.err" 1 \
+        "^granwave sweep: $d/journal.csv was replaced by another file while the sweep ran.*kept whole as $d/$kept_name"
     [ ! -e "$d/results.csv" ] && cmp -s "$d/journal.csv" "$d.swapped" &&
         ok "$what: no table, the file moved in left as it is" ||
         ko "$what: table $(ls "$d" | tr '\n' ' '), the other file $(cmp "$d/journal.csv" "$d.swapped" 2>&1)"
-    if n=$(rows_once "$d/$kept_name") && [ "$n" -gt "$(journal_rows "$d.swapped")" ] && [ "$n" -lt 8 ]; then
-        ok "$what: $d/$kept_name holds $n rows, $(journal_rows "$d.swapped") from before the swap, no case after it"
-    else
-        ko "$what: the kept journal: ${n:-none} rows ($(journal_rows "$d.swapped") before the swap)"
-    fi
-    grep -q "stopped taking cases after .*: $n of its 8 cases are journaled there" "$d.err" ||
-        ko "$what: the line does not count the $n kept rows"
+    kept_rows "$what" "$d/$kept_name" "$d.swapped" 8 "$d.err"
 }
 # a copy of the journal moved over it (a tool's atomic save), kept in DIR.swapped
 copy_over() { cp "$1/journal.csv" "$1.swapped" && cp "$1.swapped" "$1/j.tmp" && mv "$1/j.tmp" "$1/journal.csv"; }

@@ -63,7 +63,7 @@ printf '[sweep]\nmodel = chain\n[grid]\nn = 60, 70, 80, 90\nvimp = 0.1, 0.2, 0.3
 # late write from the script after the put-back and a row: a sweep that ended
 # before it (a table) is run again, three times at most.
 written() {
-    local what=$1 d=$2 total=$3 warn=$4 disturb=$5 pa rc n attempt
+    local what=$1 d=$2 total=$3 warn=$4 disturb=$5 pa rc attempt
     shift 5
     for attempt in 1 2 3; do
         rm -rf "$d" "$d.err" "$d.left" "$d.removed"
@@ -87,10 +87,8 @@ written() {
     done
     if [ $rc -eq 77 ]; then echo "SKIP: $what (no move shim in this build)"; return; fi
     # (mpirun adds its block of lines on a rank's exit status 1, after the program's)
-    [ $rc -eq 1 ] && [ "$(sed '/^-\{20,\}$/,$d' "$d.err" | wc -l)" -eq $((warn + 1)) ] &&
-        grep -q "^granwave sweep: $d/journal.csv was written into while the sweep ran.*kept whole as $d/journal.kept.csv, the file left as it is" "$d.err" &&
-        ok "$what: exit 1, one line: $(sed -n "$((warn + 1))p" "$d.err" | cut -c1-170)..." ||
-        ko "$what: journal written into mid-sweep: exit $rc: $(head -3 "$d.err")"
+    sweep_stopped "$what" $rc "$d.err" $((warn + 1)) \
+        "^granwave sweep: $d/journal.csv was written into while the sweep ran.*kept whole as $d/journal.kept.csv, the file left as it is"
     # at_row's disturbance comes inside the second row's write, which then
     # appends that row (the sweep checked before it): what was written, then
     # that one row of the kept journal, nothing of the sweep's after it
@@ -103,13 +101,7 @@ written() {
     [ ! -e "$d/results.csv" ] && cmp -s "$d/journal.csv" "$d.expected" &&
         ok "$what: no table, the file written into left as it is (and the row written as it was written into)" ||
         ko "$what: table $(ls "$d" | tr '\n' ' '), journal.csv against what was written: $(cmp "$d/journal.csv" "$d.expected" 2>&1)"
-    if n=$(rows_once "$d/journal.kept.csv") && [ "$n" -gt "$(journal_rows "$d.left")" ] && [ "$n" -lt "$total" ]; then
-        ok "$what: journal.kept.csv holds $n rows, each case once, no case handed out after"
-    else
-        ko "$what: the kept journal: ${n:-none} rows (journal.csv now $(journal_rows "$d.left"))"
-    fi
-    grep -q "stopped taking cases after .*: $n of its $total cases are journaled there" "$d.err" ||
-        ko "$what: the line does not count the $n kept rows"
+    kept_rows "$what" "$d/journal.kept.csv" "$d.left" "$total" "$d.err"
 }
 
 # resumed WHAT DIR REF CMD...: the kept journal moved over journal.csv, CMD

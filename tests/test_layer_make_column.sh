@@ -16,7 +16,10 @@
 #  3 Python's layer_make(width_rm=5, t_max=12) raises GranwaveValueError in
 #    its keywords (n, width_rm), nothing written;
 #  4 the n the message names (166) and the width (for 300 discs) pass the
-#    check: short runs (t-max 0.01) exit 0 and write their samples;
+#    check: short runs (t-max 0.01) exit 0 and write their samples; the
+#    width's "or more" holds (the lattice's aspect never rises with the
+#    width, unlike the clumps' rows): 6.01 is refused, 6.5, 9, 12.1 and 60
+#    run;
 #  5 within the bound the narrow box makes a valid settled pile: --n 20 at
 #    --width-rm 5 is converged, every disc inside the box to 0.02 r (read from
 #    the file), and the floor carries 0.5 to 1.5 of the weight (the JSON).
@@ -60,28 +63,25 @@ for args in "--n 166 --width-rm 5" "--n 300 --width-rm 6.01028"; do
     fi
 done
 
+bad=""
+for w in 6.01 6.5 9 12.1 60; do
+    "$GW" layer-make --width-rm "$w" --t-max 0.01 --quiet --out s4.txt >/dev/null 2>"$tmp/w.err"
+    rc=$?
+    if [ "$w" = 6.01 ]; then [ $rc = 2 ] && grep -q "start as a lattice 300 rows high" "$tmp/w.err" || bad="$bad $w:$rc"
+    elif [ $rc != 0 ]; then bad="$bad $w:$rc"; fi
+done
+if [ -z "$bad" ]; then ok "300 discs: --width-rm 6.01 refused, 6.5, 9, 12.1 and 60 (wider than 6.01028) run"
+else ko "300 discs: widths against '6.01028 or more' (width:exit):$bad"; fi
+
 # --- 5 within the bound: a valid settled pile in the narrow box ---
 if "$GW" layer-make --n 20 --width-rm 5 --seed 1 --json --out n20.txt >n20.json 2>n20.err; then
-    /usr/bin/python3 - n20.txt n20.json <<'EOF'
+    /usr/bin/python3 - n20.json $(discs_outside n20.txt) <<'EOF'
 import json, sys
-d = json.load(open(sys.argv[2]))
-width, n, rows = None, None, []
-for line in open(sys.argv[1]):
-    f = line.split()
-    if not f or line.startswith("#"):
-        continue
-    if f[0] == "width":
-        width = float(f[1])
-    elif f[0] == "n":
-        n = int(f[1])
-    elif f[0] == "springs":
-        break
-    elif n is not None and len(f) == 3:
-        rows.append(tuple(map(float, f)))
-out = [i for i, (x, y, r) in enumerate(rows) if x - r < -0.02 * r or x + r > width + 0.02 * r or y - r < -0.02 * r]
-ok = d["converged"] is True and len(rows) == 20 and not out and 0.5 <= d["floor_load"] <= 1.5
+d = json.load(open(sys.argv[1]))
+n, rows, out = map(int, sys.argv[2:5])
+ok = d["converged"] is True and rows == 20 and not out and 0.5 <= d["floor_load"] <= 1.5
 print(("PASS" if ok else "FAIL") + ": --n 20 --width-rm 5: converged %s, %d discs, %d outside the box, floor load %g"
-      % (d["converged"], len(rows), len(out), d["floor_load"]))
+      % (d["converged"], rows, out, d["floor_load"]))
 EOF
 else
     echo "FAIL: --n 20 --width-rm 5: $(head -c 300 n20.err)"

@@ -34,25 +34,13 @@ json() { /usr/bin/python3 -c 'import json, sys; print(json.load(open(sys.argv[1]
 # disc) gain falling straight down until they touch, over 1e-5 M g R_m, from the
 # sample's lines
 fall_over_threshold() {
-    /usr/bin/python3 - "$1" "$2" <<'EOF'
+    /usr/bin/python3 - "$2" <(sample_discs "$1") <<'EOF'
 import math, sys
-width, rows, n, rm = None, [], None, None
-for line in open(sys.argv[1]):
-    f = line.split()
-    if not f or line.startswith("#"):
-        continue
-    if f[0] == "width":
-        width = float(f[1])
-    elif f[0] == "rm":
-        rm = float(f[1])
-    elif f[0] == "n":
-        n = int(f[1])
-    elif f[0] == "springs": # the contacts' springs follow the particles
-        break
-    elif n is not None and len(f) in (3, 4): # x y r, and a clump's number
-        rows.append(tuple(map(float, f[:3])))
+head, *body = open(sys.argv[2]).read().splitlines()
+width, rm = float(head.split()[0]), float(head.split()[1])
+rows = [tuple(map(float, line.split())) for line in body]
 g, mass = 9.81, lambda r: math.pi * r * r * 2650
-fall = float(sys.argv[2])
+fall = float(sys.argv[1])
 for i, (x, y, r) in enumerate(rows):
     touch = y < r or x < r or width - x < r
     for j, (u, v, s) in enumerate(rows):
@@ -90,13 +78,7 @@ pile() { # WHAT, then layer-make options
     fi
     # an impact on the first disc (x from the box centre), run for one step
     local x
-    x=$(/usr/bin/python3 -c 'import sys
-w = x = None
-for l in open(sys.argv[1]):
-    f = l.split()
-    if f and f[0] == "width": w = float(f[1])
-    elif f and f[0] == "n": x = True
-    elif x is True and len(f) in (3, 4): print(float(f[0]) - w / 2); break' "$tmp/s.txt")
+    x=$(sample_discs "$tmp/s.txt" | awk 'NR == 1 { w = $1 } NR == 2 { printf "%.17g\n", $1 - w / 2; exit }')
     if "$GW" layer-impact --sample "$tmp/s.txt" --x "$x" --t-max 1e-5 --json >"$tmp/i.json" 2>"$tmp/i.err"; then
         ok "$what: layer-impact takes the sample"
     else

@@ -37,6 +37,12 @@
 #   at_row_fn K FN ARG CMD...: at_row, SH the script's shell function FN called
 #   with ARG (in bash, with the script's functions and its variables tmp and d,
 #   which the sh of the shim would not pass on as exported functions).
+# A layer sample's discs read once for every test that checks them:
+#   sample_discs FILE: "WIDTH RM N", then "x y r" for each disc;
+#   discs_outside FILE: "N ROWS OUT", the discs reaching out of the box.
+# A sweep stopped mid-way by a disturbance of its journal (at_row):
+#   sweep_stopped WHAT RC ERR LINES PATTERN: exit 1, LINES lines, PATTERN;
+#   kept_rows WHAT KEPT BEFORE TOTAL ERR: the journal kept aside, counted.
 # Background jobs of a script ignore SIGINT (bash sets it so): a run that is to
 # see SIGINT is started under `env --default-signal=INT`.
 fails=0; passes=0
@@ -182,4 +188,54 @@ stop_mid_sweep() {
         [ ! -e "$dir/results.csv" ] && [ "$rows" -ge 1 ] && [ "$rows" -lt "$total" ] && return 0
     done
     return 1
+}
+
+# sample_discs FILE: a layer sample's discs (the rows after its 'n' line, at
+# most n, with 3 fields or a clump member's 4; the springs after them not
+# read), as a first line "WIDTH RM N" and one "x y r" line each, the numbers
+# as the file writes them (test_layer_make_column, _rest, _clump_column)
+sample_discs() {
+    awk 'NF == 0 || /^#/ { next }
+         n == "" && $1 == "width" { w = $2 }
+         n == "" && $1 == "rm" { rm = $2 }
+         n == "" && $1 == "n" { n = $2; print w, rm, n; next }
+         n != "" && $1 == "springs" { exit }
+         n != "" && (NF == 3 || NF == 4) && k < n { print $1, $2, $3; k++ }' "$1"
+}
+
+# discs_outside FILE: "N ROWS OUT" of a layer sample: its n, its discs
+# (sample_discs) and how many reach out of the box (its walls and floor) by
+# more than 0.02 of their radius
+discs_outside() {
+    sample_discs "$1" | awk 'NR == 1 { w = $1; n = $3; next }
+        { k++; if ($1 - $3 < -0.02 * $3 || $1 + $3 > w + 0.02 * $3 || $2 - $3 < -0.02 * $3) out++ }
+        END { print n + 0, k + 0, out + 0 }'
+}
+
+# sweep_stopped WHAT RC ERR LINES PATTERN: a sweep stopped by a disturbance of
+# its journal (test_hostile_sweeps38, 39): exit 1 and LINES lines on ERR (the
+# block mpirun adds after them not counted), one matching PATTERN: one check
+sweep_stopped() {
+    local what=$1 rc=$2 err=$3 lines=$4 pattern=$5
+    if [ "$rc" -eq 1 ] && [ "$(sed '/^-\{20,\}$/,$d' "$err" | wc -l)" -eq "$lines" ] && grep -q "$pattern" "$err"; then
+        ok "$what: exit 1, one line: $(sed -n "${lines}p" "$err" | cut -c1-170)..."
+    else
+        ko "$what: journal disturbed mid-sweep: exit $rc: $(head -3 "$err")"
+    fi
+}
+
+# kept_rows WHAT KEPT BEFORE TOTAL ERR: the journal the sweep kept aside
+# (KEPT) holds each case once, more rows than BEFORE (the journal as it was
+# disturbed) and fewer than TOTAL (no case handed out after), and the line on
+# ERR counts them: one check, and a failure more when the line does not
+kept_rows() {
+    local what=$1 kept=$2 before=$3 total=$4 err=$5 n b
+    b=$(journal_rows "$before")
+    if n=$(rows_once "$kept") && [ "$n" -gt "$b" ] && [ "$n" -lt "$total" ]; then
+        ok "$what: $(basename "$kept") holds $n rows, each case once, $b from before, no case handed out after"
+    else
+        ko "$what: the kept journal $kept: ${n:-none} rows ($b before)"
+    fi
+    grep -q "stopped taking cases after .*: $n of its $total cases are journaled there" "$err" ||
+        ko "$what: the line does not count the $n kept rows"
 }

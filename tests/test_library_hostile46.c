@@ -375,10 +375,8 @@ int main(void)
     int nfail = 0, ncases = 0;
     for (size_t r = 0; r < NROWS; r++)
         for (size_t c = 0; c < sizeof calls / sizeof calls[0]; c++) {
-            char label[256];
             row = &rows[r];
-            snprintf(label, sizeof label, "%s: %s", rows[r].label, calls[c].label);
-            child_case(label, calls[c].fn, &nfail, &ncases);
+            child_casef(calls[c].fn, &nfail, &ncases, "%s: %s", rows[r].label, calls[c].label);
         }
     static const child_row mem[] = {
         {"gw_chain_memory_check: n = -1", c_mem_neg1},
@@ -392,10 +390,8 @@ int main(void)
     for (size_t k = 0; k < sizeof mem / sizeof mem[0]; k++)
         child_case(mem[k].label, mem[k].fn, &nfail, &ncases);
     for (size_t k = 0; k < sizeof gravities / sizeof gravities[0]; k++) {
-        char label[128];
         grav = gravities[k];
-        snprintf(label, sizeof label, "the impact's gravity %g at the settling, rest and gap checks", grav);
-        child_case(label, c_gravity, &nfail, &ncases);
+        child_casef(c_gravity, &nfail, &ncases, "the impact's gravity %g at the settling, rest and gap checks", grav);
     }
 #if GW_HAVE_HDF5
     static const char *const exts[] = {".txt", ".h5"};
@@ -404,12 +400,9 @@ int main(void)
 #endif
     for (size_t x = 0; x < sizeof exts / sizeof exts[0]; x++)
         for (size_t k = 0; k < NHDRS; k++) {
-            char label[256];
             hrow = &hdrs[k], hext = exts[x];
-            snprintf(label, sizeof label, "gw_layer_sample_write (%s) header: %s", hext, hdrs[k].label);
-            child_case(label, c_header, &nfail, &ncases);
+            child_casef(c_header, &nfail, &ncases, "gw_layer_sample_write (%s) header: %s", hext, hdrs[k].label);
         }
     rmdir(dir);
-    printf("%d of %d cases failed\n", nfail, ncases);
-    return nfail ? 1 : 0;
+    return child_cases_end(nfail, ncases);
 }

@@ -454,44 +454,55 @@ static int set_double_refused(const gw_param *t, void *obj, const char *row, con
     return 0;
 }
 
+/* set_double_refused over a setup of kind k (made, then cleared) */
+typedef enum { SETUP_CHAIN, SETUP_FALCON, SETUP_IMPACT } setup_kind;
+
+static int set_double_case(setup_kind k, const char *row, const char *kind, const double *vs, int nv)
+{
+    union {
+        gw_chain_setup chain;
+        gw_chain_falcon_setup falcon;
+        gw_layer_impact_setup impact;
+    } s;
+    const gw_param *t = NULL;
+    switch (k) {
+    case SETUP_CHAIN: EXPECT(gw_chain_setup_init(&s.chain) == GW_OK); t = gw_chain_setup_params(); break;
+    case SETUP_FALCON:
+        EXPECT(gw_chain_falcon_setup_init(&s.falcon) == GW_OK);
+        t = gw_chain_falcon_setup_params();
+        break;
+    case SETUP_IMPACT:
+        EXPECT(gw_layer_impact_setup_init(&s.impact) == GW_OK);
+        t = gw_layer_impact_setup_params();
+        break;
+    }
+    const int rc = set_double_refused(t, &s, row, kind, vs, nv);
+    switch (k) {
+    case SETUP_CHAIN: gw_chain_setup_clear(&s.chain); break;
+    case SETUP_FALCON: gw_chain_falcon_setup_clear(&s.falcon); break;
+    case SETUP_IMPACT: gw_layer_impact_setup_clear(&s.impact); break;
+    }
+    return rc;
+}
+
 static int c_set_double_choice(void)
 {
-    gw_chain_setup s;
-    EXPECT(gw_chain_setup_init(&s) == GW_OK);
-    const double vs[] = {0, 1, 1e9};
-    const int rc = set_double_refused(gw_chain_setup_params(), &s, "material", "choice", vs, 3);
-    gw_chain_setup_clear(&s);
-    return rc;
+    return set_double_case(SETUP_CHAIN, "material", "choice", (const double[]){0, 1, 1e9}, 3);
 }
 
 static int c_set_double_list(void)
 {
-    gw_chain_setup s;
-    EXPECT(gw_chain_setup_init(&s) == GW_OK);
-    const double vs[] = {0, 1e-3, 1e9};
-    const int rc = set_double_refused(gw_chain_setup_params(), &s, "radii", "list", vs, 3);
-    gw_chain_setup_clear(&s);
-    return rc;
+    return set_double_case(SETUP_CHAIN, "radii", "list", (const double[]){0, 1e-3, 1e9}, 3);
 }
 
 static int c_set_double_range(void)
 {
-    gw_chain_falcon_setup s;
-    EXPECT(gw_chain_falcon_setup_init(&s) == GW_OK);
-    const double vs[] = {5, 1e12};
-    const int rc = set_double_refused(gw_chain_falcon_setup_params(), &s, "n", "range", vs, 2);
-    gw_chain_falcon_setup_clear(&s);
-    return rc;
+    return set_double_case(SETUP_FALCON, "n", "range", (const double[]){5, 1e12}, 2);
 }
 
 static int c_set_double_text(void)
 {
-    gw_layer_impact_setup s;
-    EXPECT(gw_layer_impact_setup_init(&s) == GW_OK);
-    const double vs[] = {0, 5};
-    const int rc = set_double_refused(gw_layer_impact_setup_params(), &s, "sample", "text", vs, 2);
-    gw_layer_impact_setup_clear(&s);
-    return rc;
+    return set_double_case(SETUP_IMPACT, "sample", "text", (const double[]){0, 5}, 2);
 }
 
 static int c_set_double_numbers(void) /* control: the number rows take their numbers */

@@ -507,11 +507,9 @@ int main(void)
         return 1;
     }
     int nfail = 0, ncases = 0;
-    char label[256];
     for (size_t r = 0; r < NRES; r++) {
         rrow = &res_rows[r];
-        snprintf(label, sizeof label, "gw_layer_make_result_check: %s", rrow->label);
-        child_case(label, c_result, &nfail, &ncases);
+        child_casef(c_result, &nfail, &ncases, "gw_layer_make_result_check: %s", rrow->label);
     }
     child_case("gw_layer_make_result_check: a settled result, two real pluviations (controls)", c_result_real, &nfail,
                &ncases);
@@ -523,8 +521,7 @@ int main(void)
     for (size_t r = 0; r < NSPR; r++)
         for (size_t c = 0; c < sizeof spr_calls / sizeof spr_calls[0]; c++) {
             srow = &spr_rows[r];
-            snprintf(label, sizeof label, "spring %s: %s", srow->label, spr_calls[c].label);
-            child_case(label, spr_calls[c].fn, &nfail, &ncases);
+            child_casef(spr_calls[c].fn, &nfail, &ncases, "spring %s: %s", srow->label, spr_calls[c].label);
         }
     child_case("gw_layer_sample_read: a text sample appended to while it is read", c_text_grows, &nfail, &ncases);
     child_case("gw_layer_sample_read: the text sample still, and appended before it is opened (controls)",
@@ -532,16 +529,13 @@ int main(void)
 #if GW_HAVE_HDF5
     for (size_t r = 0; r < NH5; r++) {
         hrow = &h5_rows[r];
-        snprintf(label, sizeof label, "gw_layer_sample_read: %s", hrow->label);
-        child_case(label, c_h5_read, &nfail, &ncases);
-        snprintf(label, sizeof label, "gw_sweep_config_read: %s", hrow->label);
-        child_case(label, c_h5_sweep, &nfail, &ncases);
+        child_casef(c_h5_read, &nfail, &ncases, "gw_layer_sample_read: %s", hrow->label);
+        child_casef(c_h5_sweep, &nfail, &ncases, "gw_sweep_config_read: %s", hrow->label);
     }
 #else
     (void)c_h5_read, (void)c_h5_sweep, (void)NH5;
     printf("(no HDF5 in this build: its samples' cases skipped)\n");
 #endif
-    printf("%d of %d cases failed\n", nfail, ncases);
     rmdir(dir);
-    return nfail ? 1 : 0;
+    return child_cases_end(nfail, ncases);
 }

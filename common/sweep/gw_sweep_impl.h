@@ -28,6 +28,14 @@ int gw_sweep_pairs_check(const char *call, int nk, const char *const *names, con
  * inert in a case is refused, never run as if it acted). Returns rc. */
 int gw_sweep_case_refused(const gw_sweep_config *cfg, const gw_sweep_model *m, long k, int rc, gw_err *err);
 
+/* gw_sweep_run.c: top and topk (n pairs: an estimate, its case) sorted by
+ * estimate, decreasing, the first case first among equal ones (the memory
+ * check's jobs largest estimates). gw_sweep_top_sort sorts a copy of the
+ * pairs with qsort, or, when there is no memory for the copy, calls
+ * gw_sweep_top_heapsort: the same order in place, O(n log n), no allocation. */
+void gw_sweep_top_sort(double *top, long *topk, long n);
+void gw_sweep_top_heapsort(double *top, long *topk, long n);
+
 /* gw_sweep_config.c: a config filled by hand is consistent: grid keys and
  * params within GW_SWEEP_MAX_KEYS, each with a name and at least one value
  * (none NULL), ncases the grid's product (0 for a zeroed config), the inputs

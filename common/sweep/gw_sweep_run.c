@@ -48,27 +48,62 @@ static int top_cmp(const void *pa, const void *pb)
     return a->b > c->b ? -1 : a->b < c->b ? 1 : (a->k > c->k) - (a->k < c->k);
 }
 
-/* top and topk (n entries) sorted by estimate, decreasing, then by case */
-static void sort_top(double *top, long *topk, long n)
+/* pair i ranks after pair j: top_cmp's order */
+static int top_after(const double *top, const long *topk, long i, long j)
+{
+    return top_cmp(&(top_pair){top[i], topk[i]}, &(top_pair){top[j], topk[j]}) > 0;
+}
+
+static void top_swap(double *top, long *topk, long i, long j)
+{
+    const double tb = top[i];
+    const long tk = topk[i];
+    top[i] = top[j], topk[i] = topk[j];
+    top[j] = tb, topk[j] = tk;
+}
+
+/* the subtree at i of the first n pairs made a heap again: each pair ranked
+ * no earlier than its children (the root is the pair ranked last) */
+static void top_sift(double *top, long *topk, long i, long n)
+{
+    for (;;) {
+        long c = 2 * i + 1;
+        if (c >= n)
+            break;
+        if (c + 1 < n && top_after(top, topk, c + 1, c))
+            c++;
+        if (!top_after(top, topk, c, i))
+            break;
+        top_swap(top, topk, i, c);
+        i = c;
+    }
+}
+
+void gw_sweep_top_heapsort(double *top, long *topk, long n)
+{
+    /* in place, O(n log n): the quadratic insertion sort that stood here
+     * when the pairs had no memory would take hours for a million jobs */
+    for (long i = n / 2 - 1; i >= 0; i--)
+        top_sift(top, topk, i, n);
+    for (long end = n - 1; end > 0; end--) {
+        top_swap(top, topk, 0, end);
+        top_sift(top, topk, 0, end);
+    }
+}
+
+void gw_sweep_top_sort(double *top, long *topk, long n)
 {
     top_pair *t = malloc((size_t)(n > 0 ? n : 1) * sizeof *t);
-    if (t) {
-        for (long i = 0; i < n; i++)
-            t[i] = (top_pair){top[i], topk[i]};
-        qsort(t, (size_t)n, sizeof *t, top_cmp);
-        for (long i = 0; i < n; i++)
-            top[i] = t[i].b, topk[i] = t[i].k;
-        free(t);
+    if (!t) { /* no memory for the pairs: in place */
+        gw_sweep_top_heapsort(top, topk, n);
         return;
     }
-    for (long i = 1; i < n; i++) /* no memory for the pairs: in place */
-        for (long j = i; j > 0 && top_cmp(&(top_pair){top[j - 1], topk[j - 1]}, &(top_pair){top[j], topk[j]}) > 0;
-             j--) {
-            const double tb = top[j];
-            const long tk = topk[j];
-            top[j] = top[j - 1], topk[j] = topk[j - 1];
-            top[j - 1] = tb, topk[j - 1] = tk;
-        }
+    for (long i = 0; i < n; i++)
+        t[i] = (top_pair){top[i], topk[i]};
+    qsort(t, (size_t)n, sizeof *t, top_cmp);
+    for (long i = 0; i < n; i++)
+        top[i] = t[i].b, topk[i] = t[i].k;
+    free(t);
 }
 
 int gw_sweep_memory_check(const gw_sweep_config *cfg, const gw_sweep_model *m, long jobs, int processes,
@@ -137,7 +172,7 @@ int gw_sweep_memory_check(const gw_sweep_config *cfg, const gw_sweep_model *m, l
         top[i] = b, topk[i] = k;
     }
     /* the kept estimates in decreasing order, the first case first among equal ones */
-    sort_top(top, topk, ntop);
+    gw_sweep_top_sort(top, topk, ntop);
     if (rc == GW_OK) {
         /* one case within this process's limits; the jobs together within
          * them too, or within the physical memory when they are processes

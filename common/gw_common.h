@@ -400,10 +400,12 @@ typedef struct gw_linfit {
     int n;
 } gw_linfit;
 
-/* Least-squares line through (x[i], y[i]), n >= 2 (errors need n >= 3).
- * GW_EINVAL, with every number of *fit NaN, for a NULL pointer, n < 2, a
- * point that is not finite or abscissas all equal (gw_fit_power also for a
- * value <= 0). */
+/* Least-squares line through (x[i], y[i]), n >= 2 (errors need n >= 3),
+ * fitted on x and y scaled by powers of two (any finite magnitudes: points
+ * near 1e300 gave NaN with GW_OK before session 41). GW_EINVAL, with every
+ * number of *fit NaN, for a NULL pointer, n < 2, a point that is not finite,
+ * abscissas all equal, or a slope or intercept beyond the doubles (gw_fit_power
+ * also for a value <= 0). GW_ENOMEM. */
 int gw_fit_linear(const double *x, const double *y, int n, gw_linfit *fit);
 
 /* Power law y = A x^beta by a line in log-log; c0 = ln A, c1 = beta. */

@@ -193,7 +193,8 @@ int gw_afile_open_named(gw_afile *f, const char *path, gw_err *err);
  * it has been moved or renamed since it was opened (a sweep's table beside its
  * journal). A symbolic link at name is written through (a relative target
  * from the link's directory); no output set takes the file (it is placed at
- * its commit). */
+ * its commit). An empty name is GW_EINVAL, nothing made (it made a temporary
+ * before session 41, and its commit failed once the write was done). */
 int gw_afile_openat(gw_afile *f, int dirfd, const char *dir, const char *name, gw_err *err);
 /* Flush (stream), fsync and rename into place. On failure the temporary is
  * removed and the previous file at path, if any, is left as it was. */

@@ -26,6 +26,11 @@
  *     said "case 2: ". Each now says which case, the status and that the
  *     case (or the model's run or check) gave no message. Control: a case's
  *     own message is kept as it was.
+ *   - gw_afile_openat took an empty name: it made its temporary in the
+ *     directory, and the commit failed once the caller's write was done
+ *     ("DIR/: write failed: No such file or directory"). Refused at the open
+ *     as gw_afile_open refuses an empty path, nothing made. Control: a plain
+ *     name written and committed.
  *   - gw_chain_drop_impact_rises read a hand-filled result's impacts through
  *     NULL (SIGSEGV) when it had a count and no array: 0 rises now, as for a
  *     count below 2. Control: three impacts of 1, 2, 1.5 N give one rise.
@@ -37,6 +42,9 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <dirent.h>
+#include <fcntl.h>
+#include <unistd.h>
 
 #include "granwave.h"
 #include "test_child.h"
@@ -381,6 +389,70 @@ static int c_sweep_check_silent(void)
     return 0;
 }
 
+/* ----------------------------------------------------- afile at dir ---- */
+
+/* the entries of directory path but . and .. (-1: cannot read it) */
+static int entries(const char *path)
+{
+    DIR *d = opendir(path);
+    if (!d)
+        return -1;
+    int n = 0;
+    for (struct dirent *e; (e = readdir(d));)
+        n += strcmp(e->d_name, ".") != 0 && strcmp(e->d_name, "..") != 0;
+    closedir(d);
+    return n;
+}
+
+static int c_openat_empty_name(void)
+{
+    char dir[] = "/tmp/gw_hostile48.XXXXXX";
+    EXPECT(mkdtemp(dir));
+    const int fd = open(dir, O_RDONLY | O_DIRECTORY);
+    gw_afile f;
+    memset(&f, 0, sizeof f);
+    gw_err e = {0};
+    const int rc = gw_afile_openat(&f, fd, dir, "", &e);
+    const int n = entries(dir);
+    gw_afile_abort(&f);
+    close(fd);
+    rmdir(dir);
+    EXPECT(refused(rc, &e, "an empty name names no file") && strstr(e.msg, dir));
+    EXPECT(n == 0); /* no temporary made */
+    return 0;
+}
+
+static int c_openat_plain(void) /* control: a name written and committed */
+{
+    char dir[] = "/tmp/gw_hostile48.XXXXXX", path[64];
+    EXPECT(mkdtemp(dir));
+    const int fd = open(dir, O_RDONLY | O_DIRECTORY);
+    gw_afile f;
+    memset(&f, 0, sizeof f);
+    gw_err e = {0};
+    int rc = gw_afile_openat(&f, fd, dir, "t.txt", &e);
+    if (rc == GW_OK) {
+        fputs("row\n", f.fp);
+        rc = gw_afile_commit(&f, &e);
+    }
+    snprintf(path, sizeof path, "%s/t.txt", dir);
+    char buf[16] = "";
+    FILE *fp = fopen(path, "r");
+    if (fp) {
+        if (!fgets(buf, sizeof buf, fp))
+            buf[0] = '\0';
+        fclose(fp);
+    }
+    const int n = entries(dir);
+    unlink(path);
+    close(fd);
+    rmdir(dir);
+    if (rc != GW_OK)
+        printf("status %d: %s\n", rc, e.msg);
+    EXPECT(rc == GW_OK && strcmp(buf, "row\n") == 0 && n == 1);
+    return 0;
+}
+
 /* ---------------------------------------------------- drop result ---- */
 
 static int c_rises_no_array(void)
@@ -432,6 +504,8 @@ static const child_row rows[] = {
     {"pool: a case's own message kept (control)", c_pool_message_kept},
     {"sweep: a model's run failing without a message", c_sweep_run_silent},
     {"sweep: a model's check refusing without a message", c_sweep_check_silent},
+    {"afile at a directory: an empty name", c_openat_empty_name},
+    {"afile at a directory: a plain name (control)", c_openat_plain},
     {"drop: impacts counted without their array", c_rises_no_array},
     {"drop: rises of 1, 2, 1.5 N (control)", c_rises_control},
 };

@@ -31,6 +31,13 @@
  *     ("DIR/: write failed: No such file or directory"). Refused at the open
  *     as gw_afile_open refuses an empty path, nothing made. Control: a plain
  *     name written and committed.
+ *   - Values refused just outside a closed end were printed with %g,
+ *     rounded onto the end they are outside of: a criterion of 1.0000001
+ *     "1 is not in (0, 1]" (gw_stats_groups_make, gw_stats_diagram_make),
+ *     falcon's gravity 10000.0000001 "10000 ... is outside [0, 10000]", a
+ *     Poisson ratio 0.5000001 "0.5 is not in (-1, 0.5]", a flag
+ *     0.9999999999 "1 is not a flag". They are shown as given (gw_num_text), as the
+ *     parameter rows' refusals show them.
  *   - gw_chain_drop_impact_rises read a hand-filled result's impacts through
  *     NULL (SIGSEGV) when it had a count and no array: 0 rises now, as for a
  *     count below 2. Control: three impacts of 1, 2, 1.5 N give one rise.
@@ -453,6 +460,74 @@ static int c_openat_plain(void) /* control: a name written and committed */
     return 0;
 }
 
+/* ------------------------------------------ values shown as given ---- */
+
+/* GW_EINVAL whose message holds want (the value with its digits) */
+static int shown(int rc, const gw_err *e, const char *want)
+{
+    if (rc != GW_EINVAL || !strstr(e->msg, want)) {
+        printf("status %d, message '%s' (wanted GW_EINVAL with '%s')\n", rc, e->msg, want);
+        return 0;
+    }
+    return 1;
+}
+
+static int c_shown_criterion(void)
+{
+    gw_stats_table t;
+    memset(&t, 0, sizeof t);
+    gw_err e = {0};
+    char *text = table_text("", "1", "2", "1");
+    EXPECT(text && gw_stats_table_parse(text, "hand.csv", &t, &e) == GW_OK);
+    free(text);
+    gw_stats_groups gs;
+    memset(&gs, 0, sizeof gs);
+    const int rc = gw_stats_groups_make(&t, 1.0000001, &gs, &e);
+    gw_stats_groups_free(&gs);
+    gw_stats_table_free(&t);
+    EXPECT(shown(rc, &e, "criterion: 1.0000001 is not in (0, 1]"));
+    const double x[4] = {1, 1, 2, 2}, h[4] = {1, 2, 1, 2}, share[4] = {1, 0, 1, 0};
+    gw_stats_diagram d;
+    memset(&d, 0, sizeof d);
+    const int rd = gw_stats_diagram_make(4, x, h, share, NULL, 1.0000001, &d, &e);
+    gw_stats_diagram_free(&d);
+    EXPECT(shown(rd, &e, "criterion: 1.0000001 is not in (0, 1]"));
+    return 0;
+}
+
+static int c_shown_gravity(void)
+{
+    const double vimp[1] = {0.3};
+    double v[1], hmm[1];
+    gw_err e = {0};
+    const int rc = gw_chain_falcon_speeds(vimp, 1, NULL, 0, 10000.0000001, v, hmm, &e);
+    EXPECT(shown(rc, &e, "gravity: 10000.0000001 m/s^2 is outside [0, 10000]"));
+    return 0;
+}
+
+static int c_shown_poisson(void)
+{
+    gw_material m = *gw_material_find("steel");
+    m.poisson = 0.5000001;
+    gw_layer_law *law = NULL;
+    gw_err e = {0};
+    const int rc = gw_layer_law_create(0.004, &m, 1e-3, 1e9, 0.3, &law, &e);
+    gw_layer_law_free(law);
+    EXPECT(shown(rc, &e, "Poisson ratio 0.5000001 is not in (-1, 0.5]"));
+    return 0;
+}
+
+static int c_shown_flag(void)
+{
+    gw_chain_setup s;
+    EXPECT(gw_chain_setup_init(&s) == GW_OK);
+    gw_err e = {0};
+    const int rc = gw_param_set_double(gw_chain_setup_params(), &s, "trace", 0.9999999999, &e);
+    gw_chain_setup_clear(&s);
+    EXPECT(shown(rc, &e, "trace: 0.9999999999 is not a flag"));
+    return 0;
+}
+
 /* ---------------------------------------------------- drop result ---- */
 
 static int c_rises_no_array(void)
@@ -506,6 +581,10 @@ static const child_row rows[] = {
     {"sweep: a model's check refusing without a message", c_sweep_check_silent},
     {"afile at a directory: an empty name", c_openat_empty_name},
     {"afile at a directory: a plain name (control)", c_openat_plain},
+    {"criterion 1.0000001 shown as given (groups, diagram)", c_shown_criterion},
+    {"falcon gravity 10000.0000001 shown as given", c_shown_gravity},
+    {"a Poisson ratio 0.5000001 shown as given", c_shown_poisson},
+    {"a flag set to 0.9999999999 shown as given", c_shown_flag},
     {"drop: impacts counted without their array", c_rises_no_array},
     {"drop: rises of 1, 2, 1.5 N (control)", c_rises_control},
 };

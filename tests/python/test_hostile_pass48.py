@@ -10,6 +10,10 @@ setting to the layer model's own rows (the ones a sweep's case is set with):
 GranwaveValueError naming the line, the key and the row's range. Controls:
 the table as written and its settings at the rows' closed ends run.
 
+A grid value given twice was refused naming a line of the config the
+module writes ("sweep: sweep:4: n: ..."), which the caller never sees: the
+line is left out, the key named.
+
 Through ctypes: gw_fit_linear of points near 1e300 gave a NaN line with GW_OK
 (now the plain fit's line scaled), and gw_cases_run returned a case that
 failed without a message with an empty one (now naming the case and the
@@ -119,3 +123,22 @@ def test_pool_case_failing_without_a_message():
     rc = lib.gw_cases_run(5, 1, case, None, None, None, err)
     assert rc == -1
     assert "case 2 of 5" in err.value.decode() and "no message" in err.value.decode(), err.value
+
+
+SAME_VALUES = [
+    ({"n": [3, 3]}, "sweep: n: '3' and '3' in list '3, 3' are the same value"),
+    ({"vimp": [0.1, 0.10]}, "sweep: vimp: '0.1' and '0.1'"),
+    ({"material": ["steel", "steel"]}, "sweep: material: 'steel' and 'steel'"),
+]
+
+
+@pytest.mark.parametrize("grid, said", SAME_VALUES, ids=["n", "vimp", "material"])
+def test_sweep_refusal_names_no_line_of_its_config(grid, said):
+    """A grid value given twice was refused as "sweep: sweep:4: n: ...", a line
+    of the config the module writes and the caller never sees; the key it
+    names is the caller's."""
+    with pytest.raises(granwave.GranwaveValueError) as ei:
+        granwave.sweep("chain", grid)
+    msg = str(ei.value)
+    assert msg.startswith(said), msg
+    assert "sweep:4" not in msg and "sweep: sweep" not in msg

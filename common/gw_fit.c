@@ -55,8 +55,10 @@ int gw_fit_linear(const double *x, const double *y, int n, gw_linfit *fit)
     if (ymax > 0)
         (void)frexp(ymax, &ey);
     double *xs = malloc(2 * (size_t)n * sizeof *xs);
-    if (!xs)
+    if (!xs) {
+        no_fit(fit, n); /* NaN, as every refused fit */
         return GW_ENOMEM;
+    }
     double *ys = xs + n;
     for (int i = 0; i < n; i++) {
         xs[i] = ldexp(x[i], -ex);

@@ -706,7 +706,9 @@ void gw_chain_drop_result_free(gw_chain_drop_result *r)
 
 int gw_chain_drop_impact_rises(const gw_chain_drop_result *r)
 {
-    if (!r)
+    /* a result filled by hand with a count and no array (read through NULL:
+     * SIGSEGV) holds no impacts, as one of a count below 2 */
+    if (!r || !r->impacts)
         return 0;
     int rises = 0;
     for (int j = 1; j < r->n_impacts; j++)

@@ -415,9 +415,10 @@ int gw_chain_falcon_speeds(const double *vimp, int n_vimp, const double *heights
     if (n_vimp < 0 || n_heights < 0)
         return gw_err_set(err, GW_EINVAL, "gw_chain_falcon_speeds: %s = %d is negative",
                           n_vimp < 0 ? "n_vimp" : "n_heights", n_vimp < 0 ? n_vimp : n_heights);
-    if (!(gravity >= 0 && gravity <= 1e4))
-        return gw_err_set(err, GW_EINVAL, "gravity: %g m/s^2 is outside [0, 10000]",
-                          gravity);
+    char gs[32];
+    if (!(gravity >= 0 && gravity <= 1e4)) /* as given: 10000.0000001 was "10000 ... is outside [0, 10000]" */
+        return gw_err_set(err, GW_EINVAL, "gravity: %s m/s^2 is outside [0, 10000]",
+                          gw_num_text(gs, sizeof gs, gravity));
     /* two counts near INT_MAX overflowed their int sum (undefined; a
      * negative total was told "both empty"): summed as longs, a total no int
      * holds refused naming both */

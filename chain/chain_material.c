@@ -18,6 +18,7 @@
 
 #include "chain_material.h"
 #include "gw_chain.h"
+#include "gw_locale.h"
 
 /* The experiment's steel is from docs/physics.md; the others are handbook values
  * (room temperature, order-of-magnitude accuracy) for exploring soft walls. */
@@ -54,11 +55,13 @@ int chain_material_check(const gw_material *m, const char *what, gw_err *err)
     if (!m)
         return gw_err_set(err, GW_EINVAL, "%s: no material (NULL)", what);
     const char *name = m->name ? m->name : "(unnamed)";
+    char xs[32]; /* the value as given, not rounded onto an end (a Poisson ratio 0.5000001 was "0.5") */
     if (!(m->young > 0))
-        return gw_err_set(err, GW_EINVAL, "%s '%s': Young modulus %g Pa is not in (0, inf] (inf: rigid)", what,
-                          name, m->young);
+        return gw_err_set(err, GW_EINVAL, "%s '%s': Young modulus %s Pa is not in (0, inf] (inf: rigid)", what,
+                          name, gw_num_text(xs, sizeof xs, m->young));
     if (!(m->poisson > -1 && m->poisson <= 0.5))
-        return gw_err_set(err, GW_EINVAL, "%s '%s': Poisson ratio %g is not in (-1, 0.5]", what, name, m->poisson);
+        return gw_err_set(err, GW_EINVAL, "%s '%s': Poisson ratio %s is not in (-1, 0.5]", what, name,
+                          gw_num_text(xs, sizeof xs, m->poisson));
     return GW_OK;
 }
 

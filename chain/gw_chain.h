@@ -841,7 +841,8 @@ typedef struct gw_chain_drop_result {
 /* Impacts whose largest force exceeds the previous impact's by more than
  * GW_CHAIN_DROP_RISE_REL of it. Two impacts equal in exact arithmetic (a lone
  * elastic bead bouncing) differ by the integration's error, 1e-10 to 1e-9: counted
- * as they fell, cvode gave 4 rises in 5 impacts and rk4 none. */
+ * as they fell, cvode gave 4 rises in 5 impacts and rk4 none. 0 for r NULL or
+ * r->impacts NULL (a result filled by hand: read through NULL before session 41). */
 #define GW_CHAIN_DROP_RISE_REL 1e-6
 int gw_chain_drop_impact_rises(const gw_chain_drop_result *r);
 /* Run the drop with run options o (solver and its settings, dt_out = signal

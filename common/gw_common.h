@@ -193,7 +193,8 @@ int gw_afile_open_named(gw_afile *f, const char *path, gw_err *err);
  * it has been moved or renamed since it was opened (a sweep's table beside its
  * journal). A symbolic link at name is written through (a relative target
  * from the link's directory); no output set takes the file (it is placed at
- * its commit). */
+ * its commit). An empty name is GW_EINVAL, nothing made (it made a temporary
+ * before session 41, and its commit failed once the write was done). */
 int gw_afile_openat(gw_afile *f, int dirfd, const char *dir, const char *name, gw_err *err);
 /* Flush (stream), fsync and rename into place. On failure the temporary is
  * removed and the previous file at path, if any, is left as it was. */
@@ -400,10 +401,12 @@ typedef struct gw_linfit {
     int n;
 } gw_linfit;
 
-/* Least-squares line through (x[i], y[i]), n >= 2 (errors need n >= 3).
- * GW_EINVAL, with every number of *fit NaN, for a NULL pointer, n < 2, a
- * point that is not finite or abscissas all equal (gw_fit_power also for a
- * value <= 0). */
+/* Least-squares line through (x[i], y[i]), n >= 2 (errors need n >= 3),
+ * fitted on x and y scaled by powers of two (any finite magnitudes: points
+ * near 1e300 gave NaN with GW_OK before session 41). GW_EINVAL, with every
+ * number of *fit NaN, for a NULL pointer, n < 2, a point that is not finite,
+ * abscissas all equal, or a slope or intercept beyond the doubles (gw_fit_power
+ * also for a value <= 0). GW_ENOMEM. */
 int gw_fit_linear(const double *x, const double *y, int n, gw_linfit *fit);
 
 /* Power law y = A x^beta by a line in log-log; c0 = ln A, c1 = beta. */

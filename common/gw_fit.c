@@ -37,22 +37,55 @@ int gw_fit_linear(const double *x, const double *y, int n, gw_linfit *fit)
     }
     if (!apart)
         return no_fit(fit, n);
+    /* The fit of x / 2^ex and y / 2^ey, each scaled to a largest magnitude in
+     * [0.5, 1): by powers of two, so that every sum, product and quotient of
+     * the fit is the unscaled one's times a power of two, exactly (the same
+     * numbers, bit for bit, as long as no sum overflowed), and scaled back.
+     * GSL's sums of squares overflowed from |x| near 1e154: abscissas of
+     * 1e300 gave a NaN line with GW_OK, and abscissas near 1e-160 underflowed
+     * to a slope of inf or NaN. A line that cannot be held in doubles (its
+     * slope or intercept beyond them once scaled back) is refused. */
+    double xmax = 0, ymax = 0;
+    for (int i = 0; i < n; i++) {
+        xmax = fmax(xmax, fabs(x[i]));
+        ymax = fmax(ymax, fabs(y[i]));
+    }
+    int ex = 0, ey = 0;
+    (void)frexp(xmax, &ex);
+    if (ymax > 0)
+        (void)frexp(ymax, &ey);
+    double *xs = malloc(2 * (size_t)n * sizeof *xs);
+    if (!xs) {
+        no_fit(fit, n); /* NaN, as every refused fit */
+        return GW_ENOMEM;
+    }
+    double *ys = xs + n;
+    for (int i = 0; i < n; i++) {
+        xs[i] = ldexp(x[i], -ex);
+        ys[i] = ldexp(y[i], -ey);
+    }
     double c0, c1, cov00, cov01, cov11, sumsq;
-    if (gsl_fit_linear(x, 1, y, 1, (size_t)n, &c0, &c1, &cov00, &cov01, &cov11, &sumsq) != 0)
-        return GW_EINVAL;
+    if (gsl_fit_linear(xs, 1, ys, 1, (size_t)n, &c0, &c1, &cov00, &cov01, &cov11, &sumsq) != 0) {
+        free(xs);
+        return no_fit(fit, n);
+    }
     double mean = 0, sst = 0, maxrel = 0;
     for (int i = 0; i < n; i++)
-        mean += y[i] / n;
+        mean += ys[i] / n;
     for (int i = 0; i < n; i++) {
-        double f = c0 + c1 * x[i];
-        sst += (y[i] - mean) * (y[i] - mean);
-        if (f != 0 && fabs(y[i] - f) / fabs(f) > maxrel)
-            maxrel = fabs(y[i] - f) / fabs(f);
+        double f = c0 + c1 * xs[i];
+        sst += (ys[i] - mean) * (ys[i] - mean);
+        if (f != 0 && fabs(ys[i] - f) / fabs(f) > maxrel)
+            maxrel = fabs(ys[i] - f) / fabs(f);
     }
-    fit->c0 = c0;
-    fit->c1 = c1;
-    fit->c0_err = n > 2 ? sqrt(cov00) : NAN;
-    fit->c1_err = n > 2 ? sqrt(cov11) : NAN;
+    free(xs);
+    const double a = ldexp(c0, ey), b = ldexp(c1, ey - ex);
+    if (!isfinite(a) || !isfinite(b) || !isfinite(sumsq) || !isfinite(sst))
+        return no_fit(fit, n);
+    fit->c0 = a;
+    fit->c1 = b;
+    fit->c0_err = n > 2 ? ldexp(sqrt(cov00), ey) : NAN;
+    fit->c1_err = n > 2 ? ldexp(sqrt(cov11), ey - ex) : NAN;
     fit->r2 = sst > 0 ? 1.0 - sumsq / sst : 1.0;
     fit->max_rel_resid = maxrel;
     fit->n = n;

@@ -457,6 +457,11 @@ int gw_afile_openat(gw_afile *f, int dirfd, const char *dir, const char *name, g
         return gw_err_set(err, GW_EINVAL, "gw_afile_openat: %s is NULL", !f ? "f" : !dir ? "dir" : "name");
     if (afile_is_open(f))
         return refuse_open(f, "gw_afile_openat", err);
+    /* "" names no file, as gw_afile_open says: the temporary was made in the
+     * directory and the caller's whole write ran before the commit failed
+     * ("DIR/: write failed: No such file or directory") */
+    if (!*name)
+        return gw_err_set(err, GW_EINVAL, "%s: an empty name names no file", dir);
     memset(f, 0, sizeof *f);
     hold_signals(f);
     char rel[4096];

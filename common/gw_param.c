@@ -205,8 +205,10 @@ static int set_number(const gw_param *p, void *obj, double v, const char *text, 
         *(double *)field(obj, p) = v;
         return GW_OK;
     case GW_PARAM_FLAG:
-        if (v != 0 && v != 1)
-            return gw_err_set(err, GW_EINVAL, "%s: %g is not a flag (0 or 1)", p->name, v);
+        if (v != 0 && v != 1) { /* as given: 0.9999999999 was "1 is not a flag" */
+            char vs[32];
+            return gw_err_set(err, GW_EINVAL, "%s: %s is not a flag (0 or 1)", p->name, gw_num_text(vs, sizeof vs, v));
+        }
         *(int *)field(obj, p) = (int)v;
         return GW_OK;
     case GW_PARAM_INT:

@@ -43,6 +43,12 @@ static void *worker(void *arg)
             break;
         gw_err err = {{0}};
         int rc = w->fn(w->ctx, k, &err);
+        /* a case that failed without a word (its status alone, or a status
+         * that is none of the library's) was returned with an empty message:
+         * the caller had nothing to show but the status */
+        if (rc != GW_OK && !err.msg[0])
+            gw_err_set(&err, rc, "case %ld of %ld failed (%s, status %d) and gave no message", k, w->n,
+                       gw_strerror(rc), rc);
         pthread_mutex_lock(&w->lock);
         if (rc != GW_OK && (w->status == GW_OK || (w->failed_k >= 0 && k < w->failed_k))) {
             w->status = rc;

@@ -15,7 +15,10 @@
 
 GW_BEGIN_DECLS /* the exported interface, C linkage (gw_api.h) */
 
-/* One case k of a set; GW_OK or a status with a message in err. Called from
+/* One case k of a set; GW_OK or a status with a message in err (a case that
+ * fails without one is given "case K of N failed (REASON, status S) and gave
+ * no message": its status alone was returned with an empty message before
+ * session 41). Called from
  * any of the pool's threads, several cases at a time: a case must not write
  * state another case reads (each case builds its own solver, hence its own
  * SUNDIALS context); shared output (a journal) needs the caller's own lock. */

@@ -14,6 +14,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "gw_locale.h"
 #include "layer_impl.h"
 
 gw_layer_params gw_layer_params_default(void)
@@ -48,9 +49,10 @@ int gw_layer_params_validate(const gw_layer_params *p, gw_err *err)
         (rc = gw_check_range(p->damping, "normal damping alpha (s/m)", 0, 1e3, err)) != GW_OK ||
         (rc = gw_check_range(p->skin, "contact-list skin (m)", GW_LAYER_SKIN_MIN, 1e6, err)) != GW_OK)
         return rc;
+    char fs[32]; /* as given, not rounded onto 90 or 0 */
     if (!(p->friction_deg >= 0 && p->friction_deg < 90))
-        return gw_err_set(err, GW_EINVAL, "friction angle phi: %g deg is outside [0, 90)",
-                          p->friction_deg);
+        return gw_err_set(err, GW_EINVAL, "friction angle phi: %s deg is outside [0, 90)",
+                          gw_num_text(fs, sizeof fs, p->friction_deg));
     if (p->mass_law != GW_LAYER_MASS_DISC && p->mass_law != GW_LAYER_MASS_SPHERE)
         return gw_err_set(err, GW_EINVAL, "mass law: unknown value %d", p->mass_law);
     if (p->clump_mass != GW_LAYER_CLUMP_MASS_SUM && p->clump_mass != GW_LAYER_CLUMP_MASS_UNION)

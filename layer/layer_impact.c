@@ -179,8 +179,10 @@ int layer_impact_params_check(const gw_layer_sample *smp, const gw_layer_impact_
     if ((rc = gw_check_positive(p->vi, "vi (incident speed, m/s)", err)) != GW_OK ||
         (rc = gw_check_range(p->vi, "vi (incident speed, m/s)", 0, 1e3, err)) != GW_OK)
         return rc;
+    char as[32]; /* as given: -1e-7 was "-1e-07", 89.99999999 inside */
     if (!(p->alpha_deg >= 0 && p->alpha_deg < 90))
-        return gw_err_set(err, GW_EINVAL, "alpha: incidence %g deg is outside [0, 90)", p->alpha_deg);
+        return gw_err_set(err, GW_EINVAL, "alpha: incidence %s deg is outside [0, 90)",
+                          gw_num_text(as, sizeof as, p->alpha_deg));
     if (!(p->gap >= 0) || !isfinite(p->gap))
         return gw_err_set(err, GW_EINVAL, "gap: %g m < 0 puts the block inside the layer (overlapping)",
                           p->gap);

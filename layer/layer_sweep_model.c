@@ -694,9 +694,44 @@ const gw_sweep_model gw_layer_sweep_model = {"layer",  NCOLUMNS, columns,       
                                              check,    memory,   "sample",      check_memo_fn, memo_free,
                                              memo_warnings};
 
+/* One value of a key as a case takes it (gw_sweep_value_rule: what
+ * layer-stats holds a table's settings to): a number row of the placement or
+ * of the impact, set as prepare() sets it (gw_param_set's checks: range,
+ * integer, no subnormal); any other name is not this rule's. */
+static int value_rule(const char *name, const char *value, gw_err *err)
+{
+    if (!name || !value)
+        return GW_OK;
+    const gw_param *p = gw_param_find(placement_params, name);
+    if (!p && has_key(name))
+        p = gw_param_find(gw_layer_impact_setup_params(), name);
+    if (!p)
+        return GW_OK;
+    switch (p->type) {
+    case GW_PARAM_DOUBLE: {
+        double v;
+        return gw_param_set_value(p, &v, value, err);
+    }
+    case GW_PARAM_LONG: {
+        long v;
+        return gw_param_set_value(p, &v, value, err);
+    }
+    case GW_PARAM_INT:
+    case GW_PARAM_FLAG:
+    case GW_PARAM_CHOICE: {
+        int v;
+        return gw_param_set_value(p, &v, value, err);
+    }
+    default:
+        return GW_OK;
+    }
+}
+
 /* The sweep's rules for the samples it hashes: the sample reader's
- * (layer_sample_file_check), registered when the library is loaded */
+ * (layer_sample_file_check), and for one value of a key (value_rule),
+ * registered when the library is loaded */
 __attribute__((constructor)) static void input_rule(void)
 {
     gw_sweep_input_rule_set(gw_layer_sweep_model.name, layer_sample_file_check);
+    gw_sweep_value_rule_set(gw_layer_sweep_model.name, value_rule);
 }

@@ -126,8 +126,9 @@ int gw_stats_diagram_make(int n, const double *x, const double *h, const double 
     memset(d, 0, sizeof *d);
     if (n < 0)
         return gw_err_set(err, GW_EINVAL, "diagram: %d cells (a count, >= 0)", n);
+    char xs[32]; /* the value as given: 1.0000001 was "1 is not in (0, 1]" */
     if (!(criterion > 0 && criterion <= 1))
-        return gw_err_set(err, GW_EINVAL, "criterion: %g is not in (0, 1]", criterion);
+        return gw_err_set(err, GW_EINVAL, "criterion: %s is not in (0, 1]", gw_num_text(xs, sizeof xs, criterion));
     /* a share is a fraction of cases and x = R_b/R_m a ratio of radii: a
      * share of 7 or -1 and an x <= 0 drew a boundary of no physical cell */
     for (int i = 0; i < n; i++) {

@@ -307,8 +307,9 @@ int gw_stats_groups_make(const gw_stats_table *t, double criterion, gw_stats_gro
         return gw_err_set(err, GW_EINVAL, "gw_stats_groups_make: %s is NULL", !t ? "t" : "gs");
     }
     memset(gs, 0, sizeof *gs);
+    char xs[32]; /* the value as given: 1.0000001 was "1 is not in (0, 1]" */
     if (!(criterion > 0 && criterion <= 1))
-        return gw_err_set(err, GW_EINVAL, "criterion: %g is not in (0, 1]", criterion);
+        return gw_err_set(err, GW_EINVAL, "criterion: %s is not in (0, 1]", gw_num_text(xs, sizeof xs, criterion));
     const int shape = stats_table_shape(t, err);
     if (shape != GW_OK)
         return shape;

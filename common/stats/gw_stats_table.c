@@ -21,6 +21,7 @@
 #include "gw_io_lines.h"
 #include "gw_locale.h"
 #include "gw_stats_impl.h"
+#include "gw_sweep_impl.h"
 
 const char *const gw_stats_table_required[] = {
     "x_impact", "bounced", "e_n", "e", "alpha_r", "penetration", "penetration_rm",
@@ -95,7 +96,8 @@ static int cell_number(const char *s, double *v)
 }
 
 static int numeric_setting(const char *name);
-static const char *setting_domain(const char *name, double v);
+static int setting_domain(const gw_stats_table *t, const char *name, const char *text, double v, char *why,
+                          size_t n);
 
 /* Two names of one option: a sweep takes '_' for '-' in a key (rb_rm is
  * rb-rm), so a table's grid keys and params are matched the same way. Read
@@ -129,10 +131,10 @@ static int add_param(gw_stats_table *t, char *text, long ln, gw_err *err)
     double v = 0;
     if (numeric_setting(name) && !(cell_number(value, &v) && isfinite(v)))
         return gw_err_set(err, GW_EFORMAT, "%s:%ld: param %s: '%s' is not a finite number", t->path, ln, name, value);
-    const char *dom = numeric_setting(name) ? setting_domain(name, v) : NULL;
-    if (dom)
-        return gw_err_set(err, GW_EFORMAT, "%s:%ld: param %s: '%s' is not a value a sweep runs (%s must be %s)",
-                          t->path, ln, name, value, name, dom);
+    char why[sizeof(gw_err)];
+    if (setting_domain(t, name, value, v, why, sizeof why))
+        return gw_err_set(err, GW_EFORMAT, "%s:%ld: param %s: '%s' is not a value a sweep runs (%s)", t->path, ln,
+                          name, value, why);
     t->param_name[t->nparams] = strdup(name);
     t->param_value[t->nparams] = strdup(value);
     if (!t->param_name[t->nparams] || !t->param_value[t->nparams]) {
@@ -157,12 +159,25 @@ static int numeric_setting(const char *name)
     return 0;
 }
 
-/* The domain of each numeric setting, as the layer model takes it (a sweep
- * refuses any other value): NULL when v is in it, else what it must be.
- * R_b/R_m = 0 or -1 gave a diagram with R_crit -2 and a binary row of mass
- * ratio 0, H/R_m = -4 a group of its own (exit 0). */
-static const char *setting_domain(const char *name, double v)
+/* Whether the setting name = text (v: its number, NaN for none) is outside what a sweep of the
+ * table's model runs: 1 with why (n bytes) saying what it must be, else 0.
+ * The model's own rule for its rows (gw_sweep_value_rule, the layer's
+ * parameter table: rb-rm and density in [1e-06, 1e+06], vi in (0, 1000], ...)
+ * where it registered one; a table of no known model keeps the analysis's own
+ * domain. R_b/R_m = 0 or -1 gave a diagram with R_crit -2 and a binary row of
+ * mass ratio 0, H/R_m = -4 a group of its own (exit 0); rb-rm = 1e308, vi =
+ * 1e308 or a subnormal height, which no sweep runs, were analysed. */
+static int setting_domain(const gw_stats_table *t, const char *name, const char *text, double v, char *why,
+                          size_t n)
 {
+    const gw_sweep_value_rule rule = gw_sweep_value_rule_of(t->model[0] ? t->model : "layer");
+    if (rule) {
+        gw_err e = {{0}};
+        if (rule(name, text, &e) == GW_OK)
+            return 0;
+        gw_snprintf(why, n, "%s", e.msg);
+        return 1;
+    }
     static const struct {
         const char *name;
         double lo, hi;
@@ -175,9 +190,11 @@ static const char *setting_domain(const char *name, double v)
         if (gw_stats_same_key(name, dom[k].name)) {
             int ok = (dom[k].open_lo ? v > dom[k].lo : v >= dom[k].lo) &&
                      (dom[k].open_hi ? v < dom[k].hi : v <= dom[k].hi);
-            return ok ? NULL : dom[k].what;
+            if (!ok)
+                gw_snprintf(why, n, "%s must be %s", name, dom[k].what);
+            return !ok;
         }
-    return NULL;
+    return 0;
 }
 
 /* Whether s is a number as a whole, in range or not (strtod reads all of it). */
@@ -415,10 +432,10 @@ static int parse_row(gw_stats_table *t, char *line, const char *raw, long ln, in
         if (!num && numeric_setting(t->grid_name[i]))
             return gw_err_set(err, GW_EFORMAT, "%s:%ld: grid key %s: '%s' is not a number", t->path, ln,
                               t->grid_name[i], cells[1 + i]);
-        const char *dom = num ? setting_domain(t->grid_name[i], v) : NULL;
-        if (dom)
-            return gw_err_set(err, GW_EFORMAT, "%s:%ld: grid key %s: '%s' is not a value a sweep runs (%s must be %s)",
-                              t->path, ln, t->grid_name[i], cells[1 + i], t->grid_name[i], dom);
+        char why[sizeof(gw_err)];
+        if (setting_domain(t, t->grid_name[i], cells[1 + i], num ? v : NAN, why, sizeof why))
+            return gw_err_set(err, GW_EFORMAT, "%s:%ld: grid key %s: '%s' is not a value a sweep runs (%s)", t->path,
+                              ln, t->grid_name[i], cells[1 + i], why);
         t->grid_num[r * t->ngrid + i] = num ? v : NAN;
         t->grid_value[r * t->ngrid + i] = NULL;
     }

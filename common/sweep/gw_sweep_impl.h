@@ -76,6 +76,19 @@ gw_sweep_input_rule gw_sweep_input_rule_of(const char *model);
  * naming nothing are left to the model's check. */
 int gw_sweep_inputs_readable(const gw_sweep_config *cfg, const char *path, gw_err *err);
 
+/* The rule of a model's own parameter rows for one value given as text (the
+ * layer's: its impact and placement rows, as gw_param_set takes them in a
+ * case), registered as gw_sweep_input_rule is: GW_OK for a value a case of
+ * that model takes (and for a name the model has no number row for), or
+ * GW_EINVAL "NAME: reason" for one it refuses. layer-stats holds the
+ * settings it reads from a table (its grid cells and "# param" lines) to it,
+ * so that a table says only what a sweep of that model can have run: it
+ * held them to a domain of its own, which took rb-rm = 1e308, vi = 1e308 or
+ * a subnormal height that no sweep runs. At most 8 models; NULL: none. */
+typedef int (*gw_sweep_value_rule)(const char *name, const char *value, gw_err *err);
+void gw_sweep_value_rule_set(const char *model, gw_sweep_value_rule fn);
+gw_sweep_value_rule gw_sweep_value_rule_of(const char *model);
+
 /* gw_sweep_rows.c: a complete journal line's case number (-1: not a row of
  * ncases with a good checksum); why a line is not one of this sweep's rows
  * (static text, or msg filled; NULL: it is). */

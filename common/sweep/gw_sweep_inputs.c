@@ -143,6 +143,35 @@ gw_sweep_input_rule gw_sweep_input_rule_of(const char *model)
     return NULL;
 }
 
+static struct {
+    const char *model;
+    gw_sweep_value_rule fn;
+} value_rules[RULES_MAX];
+static int nvalue_rules;
+
+void gw_sweep_value_rule_set(const char *model, gw_sweep_value_rule fn)
+{
+    if (!model)
+        return;
+    for (int i = 0; i < nvalue_rules; i++)
+        if (strcmp(value_rules[i].model, model) == 0) {
+            value_rules[i].fn = fn;
+            return;
+        }
+    if (nvalue_rules < RULES_MAX) {
+        value_rules[nvalue_rules].model = model;
+        value_rules[nvalue_rules++].fn = fn;
+    }
+}
+
+gw_sweep_value_rule gw_sweep_value_rule_of(const char *model)
+{
+    for (int i = 0; model && i < nvalue_rules; i++)
+        if (strcmp(value_rules[i].model, model) == 0)
+            return value_rules[i].fn;
+    return NULL;
+}
+
 /* value (of key read_key) through its model's rules when it names something */
 static int input_readable(const gw_sweep_config *cfg, const char *value, gw_err *e)
 {

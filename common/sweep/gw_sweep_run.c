@@ -250,6 +250,9 @@ static int run_one(void *arg, long k, gw_err *err)
     if (rc != GW_OK) {
         char tmp[sizeof err->msg];
         gw_snprintf(tmp, sizeof tmp, "%s", err->msg);
+        if (!tmp[0]) /* a caller's model that failed without a word: "case 3: " */
+            gw_snprintf(tmp, sizeof tmp, "model %s's run failed (%s, status %d) and gave no message",
+                        s->m->name ? s->m->name : "(unnamed)", gw_strerror(rc), rc);
         gw_err_set(err, rc, "case %ld: %s", k, tmp);
     }
     return rc;
@@ -260,9 +263,18 @@ int gw_sweep_case_check(const gw_sweep_model *m, void **memo, int nkeys, const c
 {
     if (!m)
         return gw_err_set(err, GW_EINVAL, "gw_sweep_case_check: m is NULL");
-    if (m->check_memo)
-        return m->check_memo(memo, nkeys, names, values, err);
-    return m->check ? m->check(nkeys, names, values, err) : GW_OK;
+    gw_err e = {{0}};
+    const int rc = m->check_memo ? m->check_memo(memo, nkeys, names, values, &e)
+                 : m->check      ? m->check(nkeys, names, values, &e)
+                                 : GW_OK;
+    if (rc == GW_OK)
+        return GW_OK;
+    if (!e.msg[0]) /* a caller's model that refused without a word */
+        gw_err_set(&e, rc, "model %s's check refused the case (%s, status %d) and gave no message",
+                   m->name ? m->name : "(unnamed)", gw_strerror(rc), rc);
+    if (err)
+        *err = e;
+    return rc;
 }
 
 void gw_sweep_checks_end(const gw_sweep_model *m, void *memo)

@@ -10,6 +10,7 @@ import itertools
 import math
 import numbers
 import os
+import re
 
 import numpy as np
 
@@ -298,6 +299,12 @@ def run_sweep(model, grid, params, jobs, progress):
         lib.gw_free(wtext)
         cb.reraise()
         if rc != 0:
+            # "sweep:4: n: '3' and '3' in list '3, 3' are the same value" named
+            # a line of the config this module wrote, which the caller never
+            # saw: the key the message names after it is the caller's input
+            line = re.match(rb"sweep:[0-9]+: ", err.msg)
+            if line:
+                err.msg = err.msg[line.end():]
             _raise(rc, err, "sweep", _sweep_names(model, m), _texts(list(params.values()) + [
                 x for v in axes.values() for x in v]))
         cases = list(itertools.product(*axes.values()))  # the C order: last key fastest

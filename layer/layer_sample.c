@@ -821,14 +821,15 @@ static int h5_superblock_check(int fd, const char *path, int sb, unsigned long l
      * else), and the zeros were hashed whole before HDF5 found no root group.
      * A sample's root (the 1.8 format) is a version 2 header, "OHDR"; a
      * version 1 header (version byte 1, then 0) is taken too */
+    /* its address is relative to the superblock (behind a user block of 512
+     * bytes, a base of 512 and a root at 48 put the header at byte 560) */
     const unsigned long long root = addr[3];
     unsigned char oh[4] = {0, 0, 0, 0};
-    const int inside = root >= base && root - base <= eof - base && eof - root >= 4;
-    const ssize_t ohn = inside ? pread(fd, oh, sizeof oh, (off_t)(at + (root - base))) : 0;
+    const int inside = root < eof - base && eof - base - root >= 4;
+    const ssize_t ohn = inside ? pread(fd, oh, sizeof oh, (off_t)(at + root)) : 0;
     if (ohn != (ssize_t)sizeof oh || !(memcmp(oh, "OHDR", 4) == 0 || (oh[0] == 1 && oh[1] == 0)))
         return gw_err_set(err, GW_EFORMAT, "sample '%s': its HDF5 superblock puts the root group at byte %llu, "
-                          "where %s: corrupt, not a sample granwave wrote", path,
-                          at + (root >= base ? root - base : 0ULL),
+                          "where %s: corrupt, not a sample granwave wrote", path, at + root,
                           !inside ? "the file it describes has no room for one"
                                   : "no object header begins (no HDF5 metadata)");
     return GW_OK;

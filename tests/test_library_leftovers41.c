@@ -28,6 +28,10 @@
  *     whole before HDF5 refused it: refused at open, naming the root group
  *     the superblock points to, under 1 MiB read. Control: a sample
  *     gw_layer_sample_write wrote is read.
+ *   - gw_solver_drive with a NaN t_end returned GW_OK having run nothing, a
+ *     NaN dt_out ran as 0: each is GW_EINVAL naming the field. Control: a
+ *     decay y' = -y driven to t = 1 with outputs every 0.25 s ends at
+ *     exp(-1) to 1e-6.
  * Built with -DGW_TEST_BEFORE, the new checks are given the parent's
  * behaviour (the status of the old call, no message) so that the test can
  * run against the code before.
@@ -518,6 +522,57 @@ static int c_h5_control(void)
 }
 #endif
 
+/* ------------------------------------------------------- solver drive ---- */
+
+static int decay(double t, const double *y, double *f, void *ctx)
+{
+    (void)t, (void)ctx;
+    f[0] = -y[0];
+    return 0;
+}
+
+static int drive(double t_end, double dt_out, double *y_end, long *outputs, gw_err *e)
+{
+    static gw_system sys = {.dim = 1, .rhs = decay};
+    gw_solver_params p = gw_solver_params_default();
+    p.rtol = p.atol = 1e-9;
+    double t = 0, y[1] = {1};
+    gw_solver *s = NULL;
+    int rc = gw_solver_create(gw_solver_cvode, &sys, &p, t, y, &s, e);
+    if (rc != GW_OK)
+        return rc;
+    gw_drive d = {.t_end = t_end, .dt_out = dt_out};
+    rc = gw_solver_drive(s, &d, &t, y, NULL, e);
+    *y_end = y[0];
+    *outputs = d.k_out - 1;
+    gw_solver_free(s);
+    return rc;
+}
+
+static int c_drive_nan(void)
+{
+    double y;
+    long k;
+    gw_err e = {0};
+    EXPECT(refused(drive(NAN, 0.1, &y, &k, &e), &e, "t_end = nan"));
+    EXPECT(refused(drive(INFINITY, 0.1, &y, &k, &e), &e, "t_end = inf"));
+    EXPECT(refused(drive(1, NAN, &y, &k, &e), &e, "dt_out = nan"));
+    EXPECT(refused(drive(1, -0.25, &y, &k, &e), &e, "dt_out = -0.25"));
+    return 0;
+}
+
+static int c_drive_control(void)
+{
+    double y;
+    long k;
+    gw_err e = {0};
+    const int rc = drive(1, 0.25, &y, &k, &e);
+    if (rc != GW_OK)
+        printf("drive: %s\n", e.msg);
+    EXPECT(rc == GW_OK && fabs(y - exp(-1.0)) <= 1e-6 && k == 4);
+    return 0;
+}
+
 static const child_row rows[] = {
     {"falcon analyse check: a NULL p, res or a named", c_falcon_null},
     {"falcon analyse check: N = 0, negative, reversed, INT_MAX named", c_falcon_sizes},
@@ -543,6 +598,8 @@ static const child_row rows[] = {
     {"rings of width 0.15 m (control)", c_rings_control},
     {"stream hash of /dev/zero", c_stream_dev_zero},
     {"stream hash of a regular file (control)", c_stream_control},
+    {"solver drive to a NaN or infinite t_end, a NaN or negative dt_out", c_drive_nan},
+    {"solver drive of a decay with outputs (control)", c_drive_control},
 #if GW_HAVE_HDF5
     {"HDF5 superblock claiming 64 MiB in front of 64 MiB of zeros", c_h5_root_zeros},
     {"HDF5 sample as written (control)", c_h5_control},

@@ -32,6 +32,10 @@
  *     NaN dt_out ran as 0: each is GW_EINVAL naming the field. Control: a
  *     decay y' = -y driven to t = 1 with outputs every 0.25 s ends at
  *     exp(-1) to 1e-6.
+ *   - gw_chain_wall_spectrum took a NaN dt as "the median spacing" and a NaN
+ *     or infinite f_min as no peak (f_peak NaN, GW_OK): each is GW_EINVAL
+ *     naming it. Control: a 1 kHz sine sampled every 10 us over 20 ms peaks
+ *     at 1 kHz to 1 %.
  * Built with -DGW_TEST_BEFORE, the new checks are given the parent's
  * behaviour (the status of the old call, no message) so that the test can
  * run against the code before.
@@ -573,6 +577,41 @@ static int c_drive_control(void)
     return 0;
 }
 
+/* ------------------------------------------------------ wall spectrum ---- */
+
+static double sp_t[2001], sp_f[2001];
+
+static int spectrum(double dt, double f_min, gw_chain_spectrum *sp, gw_err *e)
+{
+    for (int k = 0; k < 2001; k++)
+        sp_t[k] = k * 1e-5, sp_f[k] = 1 + sin(2 * M_PI * 1e3 * sp_t[k]);
+    gw_chain_trace tr = {.n = 0, .len = 2001, .cap = 2001, .t = sp_t, .f = sp_f};
+    return gw_chain_wall_spectrum(&tr, 0, 0.02, dt, f_min, 0, sp, e);
+}
+
+static int c_spectrum_nan(void)
+{
+    gw_chain_spectrum sp;
+    gw_err e = {0};
+    EXPECT(refused(spectrum(NAN, 0, &sp, &e), &e, "dt = nan"));
+    EXPECT(refused(spectrum(1e-5, NAN, &sp, &e), &e, "f_min = nan"));
+    EXPECT(refused(spectrum(1e-5, INFINITY, &sp, &e), &e, "f_min = inf"));
+    return 0;
+}
+
+static int c_spectrum_control(void)
+{
+    gw_chain_spectrum sp;
+    gw_err e = {0};
+    const int rc = spectrum(1e-5, 0, &sp, &e);
+    if (rc != GW_OK)
+        printf("spectrum: %s\n", e.msg);
+    const double f = sp.f_peak;
+    gw_chain_spectrum_free(&sp);
+    EXPECT(rc == GW_OK && fabs(f - 1e3) <= 10);
+    return 0;
+}
+
 static const child_row rows[] = {
     {"falcon analyse check: a NULL p, res or a named", c_falcon_null},
     {"falcon analyse check: N = 0, negative, reversed, INT_MAX named", c_falcon_sizes},
@@ -600,6 +639,8 @@ static const child_row rows[] = {
     {"stream hash of a regular file (control)", c_stream_control},
     {"solver drive to a NaN or infinite t_end, a NaN or negative dt_out", c_drive_nan},
     {"solver drive of a decay with outputs (control)", c_drive_control},
+    {"wall spectrum of a NaN dt, a NaN or infinite f_min", c_spectrum_nan},
+    {"wall spectrum of a 1 kHz sine (control)", c_spectrum_control},
 #if GW_HAVE_HDF5
     {"HDF5 superblock claiming 64 MiB in front of 64 MiB of zeros", c_h5_root_zeros},
     {"HDF5 sample as written (control)", c_h5_control},

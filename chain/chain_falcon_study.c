@@ -24,15 +24,30 @@
 #include "gw_locale.h"
 #include "gw_number_impl.h"
 
-int gw_chain_falcon_analyse(const gw_chain_params *p, double v, const gw_chain_result *res, int n_lo,
-                             int n_hi, gw_chain_falcon_fit *a)
+int gw_chain_falcon_analyse_check(const gw_chain_params *p, const gw_chain_result *res, int n_lo, int n_hi,
+                                  const gw_chain_falcon_fit *a, gw_err *err)
 {
+    static const char who[] = "gw_chain_falcon_analyse";
     if (!p || !res || !a)
-        return GW_EINVAL;
+        return gw_err_set(err, GW_EINVAL, "%s: %s is NULL", who, !p ? "p" : !res ? "res" : "a");
     /* sizes N are bead counts >= 1, n_lo .. n_hi a range: n_lo > n_hi or a
      * size below 1 gave GW_OK with a fit of no column (or read res[-1]), and
      * n_hi = INT_MAX overflowed the loop's n++ */
-    if (n_lo < 1 || n_hi < n_lo || n_hi == INT_MAX)
+    if (n_lo < 1)
+        return gw_err_set(err, GW_EINVAL, "%s: n_lo = %d: column sizes are bead counts >= 1", who, n_lo);
+    if (n_hi < n_lo)
+        return gw_err_set(err, GW_EINVAL, "%s: n_lo = %d > n_hi = %d: no column (res holds n_hi - n_lo + 1)", who,
+                          n_lo, n_hi);
+    if (n_hi == INT_MAX)
+        return gw_err_set(err, GW_EINVAL, "%s: n_hi = %d (INT_MAX): the largest column size is INT_MAX - 1", who,
+                          n_hi);
+    return GW_OK;
+}
+
+int gw_chain_falcon_analyse(const gw_chain_params *p, double v, const gw_chain_result *res, int n_lo,
+                             int n_hi, gw_chain_falcon_fit *a)
+{
+    if (gw_chain_falcon_analyse_check(p, res, n_lo, n_hi, a, NULL) != GW_OK)
         return GW_EINVAL;
     /* Only the decided columns: one held by gravity (chain_held_pending) was
      * stopped when it fell back onto the wall, its tau_N and F_max those of
@@ -550,8 +565,10 @@ static int falcon_run(const gw_chain_falcon_setup *s, gw_progress_fn progress, v
     for (int iv = 0; rc == GW_OK && iv < nv; iv++) {
         gw_chain_falcon_fit a;
         const gw_chain_result *rv = &res[iv * nn];
-        if (gw_chain_falcon_analyse(&r.params, out->v_imp[iv], rv, (int)s->n[0], (int)s->n[1], &a) != GW_OK) {
-            rc = gw_err_set(err, GW_ENOMEM, "out of memory for the fits");
+        const int arc = gw_chain_falcon_analyse(&r.params, out->v_imp[iv], rv, (int)s->n[0], (int)s->n[1], &a);
+        if (arc != GW_OK) { /* a refusal named by the check (the sizes are the table's: none seen) */
+            rc = arc == GW_ENOMEM ? gw_err_set(err, GW_ENOMEM, "out of memory for the fits")
+                                  : gw_chain_falcon_analyse_check(&r.params, rv, (int)s->n[0], (int)s->n[1], &a, err);
             break;
         }
         for (int k = 0; k < nn; k++) {

@@ -67,6 +67,13 @@ int gw_chain_wall_spectrum(const gw_chain_trace *tr, double t0, double t1, doubl
         if (tr->t[k] >= t0 && tr->t[k] <= t1 && (!isfinite(tr->f[k]) || !isfinite(tr->t[k])))
             return gw_err_set(err, GW_EINVAL, "wall spectrum: the trace's force at sample %zu (t = %g s) is not "
                               "finite", k, tr->t[k]);
+    /* dt NaN took the median spacing as if it were <= 0, f_min NaN or inf
+     * gave no peak (NaN) with GW_OK: neither is a choice the call offers */
+    if (isnan(dt) || isinf(dt))
+        return gw_err_set(err, GW_EINVAL, "wall spectrum: dt = %g s is not finite (<= 0: the median spacing)", dt);
+    if (isnan(f_min) || isinf(f_min))
+        return gw_err_set(err, GW_EINVAL, "wall spectrum: f_min = %g Hz is not finite (<= 0: 4 / (t1 - t0))",
+                          f_min);
     if (!(dt > 0))
         dt = median_spacing(tr);
     double span = (t1 - t0) / dt;

@@ -731,7 +731,8 @@ typedef struct gw_chain_spectrum {
  * non-uniform), remove the mean, apply a Hann window, zero-pad 8x and take the
  * r2c FFT. dt <= 0: the median trace spacing; f_min <= 0: 4 / (t1 - t0) (above
  * the envelope of the contact). GW_EINVAL for fewer than 16 samples, a force
- * not finite in [t0, t1] or a bad interval, GW_ENOMEM. sp is zeroed first; free with gw_chain_spectrum_free. */
+ * not finite in [t0, t1], a bad interval, or a dt or f_min NaN or infinite
+ * (naming it), GW_ENOMEM. sp is zeroed first; free with gw_chain_spectrum_free. */
 int gw_chain_wall_spectrum(const gw_chain_trace *tr, double t0, double t1, double dt,
                            double f_min, int fftw_measure, gw_chain_spectrum *sp,
                            gw_err *err);

@@ -201,9 +201,18 @@ typedef struct gw_chain_falcon_fit {
  * (a fit) or none (a mean) remain. GW_OK, or GW_ENOMEM (no memory for the fit:
  * a filled, its fits undefined, NaN; it was void, and an allocation that
  * failed gave t_q and the wave speed null with exit 0). GW_EINVAL (a not
- * touched) for a NULL argument, n_lo < 1, n_lo > n_hi or n_hi = INT_MAX. */
+ * touched) for a NULL argument, n_lo < 1, n_lo > n_hi or n_hi = INT_MAX: the
+ * refusals of gw_chain_falcon_analyse_check, which names the argument (this
+ * call has no error argument: its refusals said nothing). */
 int gw_chain_falcon_analyse(const gw_chain_params *p, double v, const gw_chain_result *res, int n_lo,
                              int n_hi, gw_chain_falcon_fit *a);
+/* The arguments gw_chain_falcon_analyse refuses, each with one line naming
+ * it: GW_OK, or GW_EINVAL "gw_chain_falcon_analyse: res is NULL", "...: n_lo
+ * = 0: column sizes are bead counts >= 1", "...: n_lo = 5 > n_hi = 3: no
+ * column", "...: n_hi = 2147483647 (INT_MAX): ...". a is the fit to be
+ * filled (only its being NULL is checked). */
+int gw_chain_falcon_analyse_check(const gw_chain_params *p, const gw_chain_result *res, int n_lo, int n_hi,
+                                  const gw_chain_falcon_fit *a, gw_err *err);
 
 /* A study's progress within its collisions (the gw_chain_*_run_watch calls),
  * for a display that must speak however long one collision runs: watch(ctx,

@@ -311,7 +311,7 @@ int gw_parse_double_in(const char *s, const char *name, const gw_num_range *r, d
     /* one rule for numbers in text: decimal, as integers (gw_parse_long_in,
      * base 10) are; strtod's hexadecimal ("0x1p-2") was taken for a real
      * input where "0x3" was refused for an integer */
-    if (memchr(s, 'x', (size_t)(end - s)) || memchr(s, 'X', (size_t)(end - s)))
+    if (gw_num_is_hex(s, end))
         return gw_err_set(err, GW_EINVAL, "%s: '%s' is not a decimal number (no hexadecimal, as for integers)",
                           name, s);
     if (errno == ERANGE || (v != 0 && fabs(v) < DBL_MIN)) { /* strtod's underflow: no normal double */
@@ -321,6 +321,47 @@ int gw_parse_double_in(const char *s, const char *name, const gw_num_range *r, d
     }
     *out = v;
     return GW_OK;
+}
+
+int gw_num_is_hex(const char *s, const char *end)
+{
+    return s && end > s && (memchr(s, 'x', (size_t)(end - s)) || memchr(s, 'X', (size_t)(end - s)));
+}
+
+int gw_data_number(const char *s, double *v)
+{
+    double x = 0;
+    char *end = NULL;
+    if (!s || !*s) {
+        if (v)
+            *v = 0;
+        return GW_DATA_NONE;
+    }
+    errno = 0;
+    x = gw_strtod(s, &end);
+    if (v)
+        *v = x;
+    if (end == s || *end != '\0')
+        return GW_DATA_NONE;
+    if (gw_num_is_hex(s, end))
+        return GW_DATA_HEX;
+    if (errno == ERANGE && fabs(x) > 1)
+        return GW_DATA_HUGE;
+    return GW_DATA_NUMBER;
+}
+
+const char *gw_data_number_why(int code)
+{
+    switch (code) {
+    case GW_DATA_NUMBER:
+        return "";
+    case GW_DATA_HEX:
+        return "not a decimal number (no hexadecimal, as the program's options)";
+    case GW_DATA_HUGE:
+        return "not a finite number";
+    default:
+        return "not a number";
+    }
 }
 
 int gw_parse_double(const char *s, const char *name, double *out, gw_err *err)

@@ -338,8 +338,11 @@ int gw_input_read(const char *path, const char *what, size_t max, char **out, si
  * of a file's bytes, printed as 16 lowercase hex digits: a result records the
  * content of its input files besides their names (a file changed later no
  * longer matches). None reads more than a bound: gw_fnv1a64_stream hashes fp
- * from its current position to the end, at most GW_INPUT_HASH_MAX bytes
- * (GW_EINVAL past it, *h unchanged; GW_EIO on a read error);
+ * from its current position to the end of a regular file of at most
+ * GW_INPUT_HASH_MAX bytes, at most its size at the call (GW_EINVAL, *h
+ * unchanged, for a stream of no regular file, /dev/zero or a pipe, before a
+ * byte is read, for a larger file, and for one that gives more bytes than
+ * that size; GW_EIO on a read error);
  * gw_fnv1a64_file_max (h NULL: GW_EINVAL) opens path as an input
  * (gw_input_open: a regular file only) and refuses it (GW_EINVAL, naming it and
  * its size) when it is larger than max bytes, before a byte is read, or when it

@@ -99,10 +99,21 @@ int gw_fnv1a64_stream(FILE *fp, unsigned long long *h)
 {
     if (!fp || !h)
         return GW_EINVAL;
+    /* a regular file alone, read up to its size at the call: /dev/zero was
+     * read for 4 GiB (the bound) before it was refused, a pipe until it ended */
+    struct stat st;
+    const int fd = fileno(fp);
+    if (fd < 0 || fstat(fd, &st) != 0 || !S_ISREG(st.st_mode))
+        return GW_EINVAL;
+    const off_t at = ftello(fp);
+    const unsigned long long size = st.st_size > 0 ? (unsigned long long)st.st_size : 0;
+    if (at < 0 || size > GW_INPUT_HASH_MAX)
+        return GW_EINVAL;
     int over;
     long nul;
     unsigned long long v = GW_FNV1A64_INIT;
-    const int rc = hash_bounded(fp, GW_INPUT_HASH_MAX, 0, &v, &over, &nul);
+    const unsigned long long left = (unsigned long long)at < size ? size - (unsigned long long)at : 0;
+    const int rc = hash_bounded(fp, left, 0, &v, &over, &nul); /* more than that: it grew, refused */
     if (rc != GW_OK || over)
         return rc != GW_OK ? rc : GW_EINVAL;
     *h = v;

@@ -65,4 +65,26 @@ char *gw_int_give(char *buf, size_t n, long lo, long hi, int or_zero);
  * refusal of a subnormal names them. */
 int gw_parse_long_in(const char *s, const char *name, long lo, long hi, int or_zero, long *out, gw_err *err);
 
+/* Whether the number strtod read from s up to end is written in hexadecimal
+ * ("0x1p-2", " -0X.8P1"): an 'x' or 'X' among its characters. Numbers in text
+ * are decimal, as integers are (base 10): the options (gw_parse_double_in)
+ * and the data files (gw_data_number) refuse one. */
+int gw_num_is_hex(const char *s, const char *end);
+
+/* A number of a data file, the whole of the field s (a text sample's header
+ * values, particles and springs; a layer-stats table's cells and params),
+ * by the rule of the program's options: decimal, no hexadecimal. nan and inf
+ * are numbers here (*v set), for the caller to judge by its format.
+ * GW_DATA_NUMBER (*v set), GW_DATA_NONE (empty, other text, characters after
+ * the number), GW_DATA_HEX (hexadecimal, which strtod reads: a table's
+ * 0x1p-2 was read as 0.25 where `--vimp 0x1p-2` is refused) or GW_DATA_HUGE
+ * (beyond a double: 1e999; *v the infinity). The callers name the file, the
+ * line and the field (gw_data_number_why gives the words of a refusal). */
+enum { GW_DATA_NUMBER = 0, GW_DATA_NONE = 1, GW_DATA_HEX = 2, GW_DATA_HUGE = 3 };
+int gw_data_number(const char *s, double *v);
+/* "not a number", "not a decimal number (no hexadecimal, as the program's
+ * options)", "not a finite number" for gw_data_number's codes ("" for
+ * GW_DATA_NUMBER). */
+const char *gw_data_number_why(int code);
+
 #endif

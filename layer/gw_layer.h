@@ -137,7 +137,14 @@ int gw_layer_start(gw_layer *L, const gw_solver_type *type, const gw_solver_para
  * skin since the last list, rebuilds the contact list, resizes the state and
  * re-creates the solver. GW_ESOLVER/GW_ELIMIT with the solver's message in err;
  * the layer then holds the last good state. A tout that is not finite, or
- * before the layer's time, is GW_EINVAL (the layer unchanged). */
+ * before the layer's time, is GW_EINVAL (the layer unchanged). One call is
+ * bounded as the program's runs are: a tout more than 1e4 s after the layer's
+ * time (layer-make's longest t-max), or a fixed step (verlet, rk4) taking
+ * more than 1e9 steps or 1e10 particle-steps (steps times particles and
+ * listed contacts) to it, is GW_EINVAL before any step (the layer unchanged;
+ * advance in parts); an adaptive backend past those counts within the call
+ * stops with GW_ELIMIT naming them (gw_layer_advance(L, 1e300) ran for
+ * hours). */
 int gw_layer_advance(gw_layer *L, double tout, gw_err *err);
 
 /* Called at every contact event found by the solver's root finder: dir = +1
@@ -252,9 +259,18 @@ int gw_layer_region_ledger(const gw_layer *L, gw_layer_energy *out);
  * Kinetic energy by particle centre (block excluded), strain energy (normal +
  * tangential state function) by contact point, coordination = contacts with
  * u_n > 0 counted per particle / particles. Arrays of nring entries (nring
- * <= 0: nothing done). */
+ * <= 0: nothing done). What gw_layer_rings_check refuses (a width w not
+ * finite or <= 0, a centre not finite, L or an array NULL) fills the arrays
+ * given with NaN: this call has no error argument (a width of 0 gave zeros,
+ * every particle outside the rings, and NaN gave NaN, without a word). */
 void gw_layer_rings(const gw_layer *L, double cx, double cy, double w, int nring,
                     double *kinetic, double *strain, double *coord);
+/* The arguments of gw_layer_rings, each refusal one line naming it: GW_OK, or
+ * GW_EINVAL for L NULL, cx or cy not finite, w not finite or <= 0 ("ring
+ * width w = 0 m must be finite and > 0"), nring < 0, or an array NULL when
+ * nring > 0. */
+int gw_layer_rings_check(const gw_layer *L, double cx, double cy, double w, int nring, const double *kinetic,
+                         const double *strain, const double *coord, gw_err *err);
 
 /* Write a VTK legacy POLYDATA snapshot: points with radius, velocity, omega
  * (one vertex cell each); contacts with u_n > 0 as lines carrying F_n and F_t;

@@ -149,6 +149,8 @@ struct gw_layer {
     double v_scale, u_scale, f_scale, e_scale;
     gw_layer_stats st;
     double t_event, quiet_until; /* Zeno guard (layer_sim.c) */
+    long adv_steps0;             /* the steps taken when gw_layer_advance was called (its bound) */
+    int adv_over;                /* 1: that call went past its bound (layer_sim.c) */
     double zeno_dt, zeno_quiet;  /* its window and quiet time, s (gw_layer_start) */
     double cap_rate;             /* the sliding margin's restoring rate, 1/s (gw_layer_start) */
     int storm, storm_wide, no_events_user;

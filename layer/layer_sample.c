@@ -37,6 +37,7 @@
 #include "layer_sample_impl.h"
 #include "gw_io_impl.h"
 #include "gw_locale.h"
+#include "gw_number_impl.h"
 
 #define SAMPLE_LINE_MAX 1024  /* longest header or particle line; comments may be longer */
 /* longest line of any kind, a comment too, in bytes: layer-make's longest is
@@ -349,12 +350,18 @@ static int split(char *s, char **tok, int max)
     }
 }
 
-/* The whole token as a finite double (underflow to a subnormal is fine). */
-static int parse_num(const char *s, double *v)
+/* The whole token as a finite double (underflow to a subnormal is fine), by
+ * the data files' rule (gw_data_number: decimal, as the program's options;
+ * strtod's hexadecimal "0x1p-2" was read as 0.25): 1, or 0 with *why its
+ * gw_data_number code (GW_DATA_HUGE for nan and inf) when why is not NULL. */
+static int parse_num(const char *s, double *v, int *why)
 {
-    char *end;
-    *v = gw_strtod(s, &end);
-    return end != s && *end == '\0' && isfinite(*v);
+    int c = gw_data_number(s, v);
+    if (c == GW_DATA_NUMBER && !isfinite(*v))
+        c = GW_DATA_HUGE;
+    if (why)
+        *why = c;
+    return c == GW_DATA_NUMBER;
 }
 
 static int parse_long(const char *s, long *v)
@@ -419,7 +426,7 @@ static int text_header(text_in *t, gw_layer_sample *s, long *n, int *version, hd
         seen |= 1 << key;
         src->line[key] = t->line;
         double v = 0;
-        int ok = 1;
+        int ok = 1, why = GW_DATA_NUMBER;
         if (key == K_LAW) {
             ok = strcmp(tok[1], "disc") == 0 || strcmp(tok[1], "sphere") == 0;
             s->mass_law = strcmp(tok[1], "sphere") == 0 ? GW_LAYER_MASS_SPHERE : GW_LAYER_MASS_DISC;
@@ -429,13 +436,15 @@ static int text_header(text_in *t, gw_layer_sample *s, long *n, int *version, hd
         } else if (key == K_SEED) { /* layer-make's seeds are >= 0: "-1" was taken */
             ok = parse_long(tok[1], &s->seed) && s->seed >= 0;
         } else {
-            ok = parse_num(tok[1], &v);
+            ok = parse_num(tok[1], &v, &why);
         }
         if (!ok)
             return gw_err_set(err, GW_EFORMAT, "sample '%s': line %ld: %s '%s' is not %s", t->path, t->line,
                               header_keys[key], layer_sample_shown(tok[1], show),
                               key == K_LAW ? "disc or sphere" : key == K_CMASS ? "sum or union"
-                              : key == K_SEED ? "an integer >= 0" : "a finite number");
+                              : key == K_SEED ? "an integer >= 0"
+                              : why == GW_DATA_HEX ? "a decimal number (no hexadecimal, as the program's options)"
+                              : "a finite number");
         if (key == K_WIDTH)
             s->width = v;
         else if (key == K_RM)
@@ -496,7 +505,7 @@ static int grow(gw_layer_sample *s, long *cap, long want, int bodies)
  * settling's record is read. */
 static int read_springs(text_in *t, gw_layer_sample *s, long n, long **lines, gw_err *err)
 {
-    char *tok[3];
+    char *tok[3], show[48];
     long m = 0;
     const long most = LAYER_SPRINGS_MOST(n);
     int k = split(t->buf, tok, 2);
@@ -528,7 +537,12 @@ static int read_springs(text_in *t, gw_layer_sample *s, long n, long **lines, gw
         double u = 0;
         const int ntok = split(t->buf, tok, 3), wall = ntok == 3 ? layer_spring_wall(tok[1]) : 0;
         (*lines)[i] = t->line;
-        if (ntok != 3 || !parse_long(tok[0], &a) || (!wall && !parse_long(tok[1], &b)) || !parse_num(tok[2], &u))
+        int why = GW_DATA_NUMBER;
+        if (ntok == 3 && parse_long(tok[0], &a) && (wall || parse_long(tok[1], &b)) &&
+            !parse_num(tok[2], &u, &why) && why == GW_DATA_HEX)
+            return gw_err_set(err, GW_EFORMAT, "sample '%s': line %ld: u '%s' of spring %ld of %ld is %s", t->path,
+                              t->line, layer_sample_shown(tok[2], show), i + 1, m, gw_data_number_why(why));
+        if (ntok != 3 || !parse_long(tok[0], &a) || (!wall && !parse_long(tok[1], &b)) || why != GW_DATA_NUMBER)
             return gw_err_set(err, GW_EFORMAT, "sample '%s': line %ld: expected 'a b u' (spring %ld of %ld: two "
                               "particle indices, or an index and left, right or bottom, and a finite number)",
                               t->path, t->line, i + 1, m);
@@ -563,9 +577,20 @@ static int read_text(text_in *t, gw_layer_sample *s, gw_err *err)
             rc = gw_err_set(err, GW_ENOMEM, "sample '%s': out of memory for %ld particles", t->path, n);
             break;
         }
-        if (split(t->buf, tok, ncol) != ncol || !parse_num(tok[0], &s->x[i]) ||
-            !parse_num(tok[1], &s->y[i]) || !parse_num(tok[2], &s->r[i]) ||
-            (ncol == 4 && !parse_long(tok[3], &id))) {
+        const int ntok = split(t->buf, tok, ncol);
+        int why[3] = {GW_DATA_NONE, GW_DATA_NONE, GW_DATA_NONE};
+        if (ntok == ncol && !(parse_num(tok[0], &s->x[i], &why[0]) & parse_num(tok[1], &s->y[i], &why[1]) &
+                              parse_num(tok[2], &s->r[i], &why[2]))) {
+            const int f = why[0] == GW_DATA_HEX ? 0 : why[1] == GW_DATA_HEX ? 1 : why[2] == GW_DATA_HEX ? 2 : -1;
+            if (f >= 0) { /* the field named: a hexadecimal number is a number, in another base */
+                char show[48];
+                rc = gw_err_set(err, GW_EFORMAT, "sample '%s': line %ld: %s '%s' of particle %ld of %ld is %s",
+                                t->path, t->line, f == 0 ? "x" : f == 1 ? "y" : "r",
+                                layer_sample_shown(tok[f], show), i + 1, n, gw_data_number_why(GW_DATA_HEX));
+                break;
+            }
+        }
+        if (ntok != ncol || why[0] || why[1] || why[2] || (ncol == 4 && !parse_long(tok[3], &id))) {
             rc = gw_err_set(err, GW_EFORMAT, "sample '%s': line %ld: expected %s (particle %ld of %ld)",
                             t->path, t->line, ncol == 4 ? "three finite numbers and an integer 'x y r body'"
                             : "three finite numbers 'x y r'", i + 1, n);
@@ -763,15 +788,15 @@ static int h5_superblock_check(int fd, const char *path, int sb, unsigned long l
     /* versions 2 and 3: signature, version, size of offsets, size of
      * lengths, flags, then the base, extension, end-of-file and root
      * addresses, little-endian */
-    unsigned char b[12 + 3 * 32];
+    unsigned char b[12 + 4 * 32];
     const ssize_t got = pread(fd, b, sizeof b, (off_t)at);
     const int so = got >= 12 ? b[9] : 0;
     if (so != 2 && so != 4 && so != 8 && so != 16 && so != 32)
         return gw_err_set(err, GW_EFORMAT, "sample '%s': HDF5 superblock with %d-byte addresses (HDF5 writes 2, 4, "
                           "8, 16 or 32): corrupt, not a sample granwave wrote", path, so);
-    unsigned long long addr[3] = {0, 0, 0}; /* base, extension, end of file */
-    int big = got < 12 + 3 * so;            /* the superblock cut short: no end to read */
-    for (int a = 0; a < 3 && !big; a++)
+    unsigned long long addr[4] = {0, 0, 0, 0}; /* base, extension, end of file, root group's object header */
+    int big = got < 12 + 4 * so;               /* the superblock cut short: no end to read */
+    for (int a = 0; a < 4 && !big; a++)
         for (int k = so - 1; k >= 0 && !big; k--) {
             const unsigned char v = b[12 + a * so + k];
             big = k >= 8 && v != 0;
@@ -790,6 +815,23 @@ static int h5_superblock_check(int fd, const char *path, int sb, unsigned long l
         return gw_err_set(err, GW_EFORMAT, "sample '%s': %llu bytes, but its HDF5 superblock says the file ends at "
                           "byte %llu, and %llu bytes follow it: not a sample granwave wrote", path, size, end,
                           size - end);
+    /* the root group's object header, where the superblock says it is: a
+     * superblock that claims a 4 GiB end in front of 4 GiB of written zeros
+     * agrees with its size (the rules above compare the two and nothing
+     * else), and the zeros were hashed whole before HDF5 found no root group.
+     * A sample's root (the 1.8 format) is a version 2 header, "OHDR"; a
+     * version 1 header (version byte 1, then 0) is taken too */
+    /* its address is relative to the superblock (behind a user block of 512
+     * bytes, a base of 512 and a root at 48 put the header at byte 560) */
+    const unsigned long long root = addr[3];
+    unsigned char oh[4] = {0, 0, 0, 0};
+    const int inside = root < eof - base && eof - base - root >= 4;
+    const ssize_t ohn = inside ? pread(fd, oh, sizeof oh, (off_t)(at + root)) : 0;
+    if (ohn != (ssize_t)sizeof oh || !(memcmp(oh, "OHDR", 4) == 0 || (oh[0] == 1 && oh[1] == 0)))
+        return gw_err_set(err, GW_EFORMAT, "sample '%s': its HDF5 superblock puts the root group at byte %llu, "
+                          "where %s: corrupt, not a sample granwave wrote", path, at + root,
+                          !inside ? "the file it describes has no room for one"
+                                  : "no object header begins (no HDF5 metadata)");
     return GW_OK;
 }
 

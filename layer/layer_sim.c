@@ -35,6 +35,16 @@
 #include "layer_impl.h"
 #include "gw_locale.h"
 
+/* The bounds of one gw_layer_advance call, the program's: at most
+ * LAYER_ADVANCE_SPAN s (layer-make's longest t-max; layer-impact's is 1e3 s),
+ * at most LAYER_ADVANCE_STEPS steps and LAYER_ADVANCE_WORK particle-steps
+ * (steps times particles and listed contacts, layer-impact's bound on its
+ * fixed step). gw_layer_advance(L, 1e300) ran until the solver's step limit
+ * of one stretch between events (1e7 by default, none past an event: hours). */
+#define LAYER_ADVANCE_SPAN 1e4
+#define LAYER_ADVANCE_STEPS 1e9
+#define LAYER_ADVANCE_WORK 1e10
+
 /* Project F_t; closing[k] > 0 marks contacts that just closed, slipping[k] > 0
  * contacts that just reached the Coulomb cap (both may be NULL).
  * Returns the number of components changed. */
@@ -164,6 +174,9 @@ int gw_layer_start(gw_layer *L, const gw_solver_type *type, const gw_solver_para
         return gw_err_set(err, GW_EINVAL, "layer: no solver backend given");
     L->type = type;
     L->sp = *sp;
+    /* one stretch between events within gw_layer_advance's bound on steps */
+    if (L->sp.max_steps > (long)LAYER_ADVANCE_STEPS)
+        L->sp.max_steps = (long)LAYER_ADVANCE_STEPS;
     L->dem = type == gw_solver_verlet;
     /* rk4 without contact events or a block watch (the pluviation) need not
      * locate the list rebuild: checked at the steps' ends with a margin, as
@@ -289,6 +302,26 @@ static int layer_on_root(void *ctx, double t, double *y, const int *roots, gw_er
     return rebuild ? GW_DRIVE_YIELD : GW_DRIVE_RESET;
 }
 
+
+/* An adaptive backend's steps within the call, counted after every root and
+ * output (between them, the solver's own step limit holds, at most
+ * LAYER_ADVANCE_STEPS: gw_layer_start): GW_ELIMIT past the bounds. */
+static int layer_after_bound(void *ctx, double t, const double *y, gw_err *err)
+{
+    (void)y;
+    gw_layer *L = ctx;
+    gw_layer_stats st;
+    gw_layer_get_stats(L, &st);
+    const double steps = (double)(st.steps - L->adv_steps0), work = steps * ((double)L->n + (double)L->nc);
+    if (steps <= LAYER_ADVANCE_STEPS && work <= LAYER_ADVANCE_WORK)
+        return GW_DRIVE_ON;
+    L->adv_over = 1;
+    return gw_err_set(err, GW_ELIMIT, "layer: %s took %.3g steps of %d particles and %d listed contacts in one "
+                      "gw_layer_advance call, to t = %.9g s: more than %.3g steps or %.3g particle-steps",
+                      gw_solver_type_name(L->type), steps, L->n, L->nc, t, LAYER_ADVANCE_STEPS,
+                      LAYER_ADVANCE_WORK);
+}
+
 int gw_layer_advance(gw_layer *L, double tout, gw_err *err)
 {
     if (!L)
@@ -301,6 +334,30 @@ int gw_layer_advance(gw_layer *L, double tout, gw_err *err)
     if (!isfinite(tout) || tout < L->t)
         return gw_err_set(err, GW_EINVAL, "layer: tout %g s is %s", tout,
                           !isfinite(tout) ? "not a finite time" : "before the layer's own time");
+    /* bounded before any step (the layer unchanged): the span, and a fixed
+     * step's count and work to tout */
+    const double span = tout - L->t;
+    if (span > LAYER_ADVANCE_SPAN)
+        return gw_err_set(err, GW_EINVAL, "layer: tout %g s is %g s after the layer's time %g s, more than the "
+                          "%g s one call advances (the longest t-max the program takes)", tout, span, L->t,
+                          LAYER_ADVANCE_SPAN);
+    const int fixed = L->type == gw_solver_verlet || L->type == gw_solver_rk4;
+    const double dt = L->sp.dt_max > 0 && L->sp.dt_max < L->sp.dt ? L->sp.dt_max : L->sp.dt;
+    const int bounded = fixed && dt > 0; /* up front; else counted as it runs (layer_after_bound) */
+    if (bounded) {
+        const double steps = span / dt, work = steps * ((double)L->n + (double)L->nc);
+        if (steps > LAYER_ADVANCE_STEPS || work > LAYER_ADVANCE_WORK)
+            return gw_err_set(err, GW_EINVAL, "layer: tout %g s is %.3g %s steps of %g s from t = %g s, of %d "
+                              "particles and %d listed contacts: %.3g particle-steps, more than %.3g steps or "
+                              "%.3g particle-steps in one call", tout, steps, gw_solver_type_name(L->type), dt, L->t,
+                              L->n, L->nc, work, LAYER_ADVANCE_STEPS, LAYER_ADVANCE_WORK);
+    }
+    {
+        gw_layer_stats st0;
+        gw_layer_get_stats(L, &st0);
+        L->adv_steps0 = st0.steps;
+        L->adv_over = 0;
+    }
     while (L->t < tout) {
         if (L->quiet_until > 0 && L->t >= L->quiet_until) { /* end of a Zeno guard */
             L->quiet_until = 0;
@@ -311,8 +368,14 @@ int gw_layer_advance(gw_layer *L, double tout, gw_err *err)
                 return rc;
         }
         double t = L->t, target = L->quiet_until > 0 && L->quiet_until < tout ? L->quiet_until : tout;
-        gw_drive drive = {.t_end = target, .on_root = layer_on_root, .on_output = layer_on_output, .ctx = L};
+        gw_drive drive = {.t_end = target, .on_root = layer_on_root, .on_output = layer_on_output,
+                          .after = bounded ? NULL : layer_after_bound, .ctx = L};
         int rc = gw_solver_drive(L->solver, &drive, &t, L->y, L->roots, err);
+        if (rc < 0 && L->adv_over) { /* the bound's own message (layer_after_bound) */
+            L->stamp++;
+            L->t = t;
+            return rc;
+        }
         if (rc < 0) {
             L->stamp++;
             L->t = t;

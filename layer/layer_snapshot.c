@@ -70,12 +70,33 @@ const double *layer_snapshot(const gw_layer *L)
     return L->snap;
 }
 
+int gw_layer_rings_check(const gw_layer *L, double cx, double cy, double w, int nring, const double *kinetic,
+                         const double *strain, const double *coord, gw_err *err)
+{
+    static const char who[] = "gw_layer_rings";
+    if (!L)
+        return gw_err_set(err, GW_EINVAL, "%s: L is NULL", who);
+    if (!isfinite(cx) || !isfinite(cy))
+        return gw_err_set(err, GW_EINVAL, "%s: centre %s = %g m must be finite", who, !isfinite(cx) ? "cx" : "cy",
+                          !isfinite(cx) ? cx : cy);
+    /* w = 0 put every particle outside the rings (zeros), NaN gave NaN, a
+     * negative width counted none: each without a word */
+    if (!(w > 0) || !isfinite(w))
+        return gw_err_set(err, GW_EINVAL, "%s: ring width w = %g m must be finite and > 0", who, w);
+    if (nring < 0)
+        return gw_err_set(err, GW_EINVAL, "%s: nring = %d rings must be >= 0", who, nring);
+    if (nring > 0 && (!kinetic || !strain || !coord))
+        return gw_err_set(err, GW_EINVAL, "%s: %s is NULL (%d rings)", who,
+                          !kinetic ? "kinetic" : !strain ? "strain" : "coord", nring);
+    return GW_OK;
+}
+
 void gw_layer_rings(const gw_layer *L, double cx, double cy, double w, int nring,
                     double *kin, double *strain, double *coord)
 {
     if (nring <= 0) /* no ring: a negative count asked realloc for SIZE_MAX bytes (an abort under ASan) */
         return;
-    if (!L || !kin || !strain || !coord) {
+    if (gw_layer_rings_check(L, cx, cy, w, nring, kin, strain, coord, NULL) != GW_OK) {
         for (int k = 0; k < nring; k++) {
             if (kin)
                 kin[k] = NAN;

@@ -246,6 +246,13 @@ int gw_solver_drive(gw_solver *s, gw_drive *d, double *t, double *y, int *roots,
 {
     if (!s || !d || !t || !y)
         return gw_err_set(err, GW_EINVAL, "gw_solver_drive: %s is NULL", !s ? "s" : !d ? "d" : !t ? "t" : "y");
+    /* a NaN t_end returned GW_OK having run nothing, a NaN dt_out ran as 0
+     * (no output before t_end): neither is a choice the drive offers */
+    if (isnan(d->t_end) || isinf(d->t_end))
+        return gw_err_set(err, GW_EINVAL, "gw_solver_drive: t_end = %g s is not a finite time", d->t_end);
+    if (isnan(d->dt_out) || isinf(d->dt_out) || d->dt_out < 0)
+        return gw_err_set(err, GW_EINVAL, "gw_solver_drive: dt_out = %g s must be finite and >= 0 (0: t_end only)",
+                          d->dt_out);
     if (d->k_out < 1)
         d->k_out = 1;
     while (*t < d->t_end) {

@@ -250,7 +250,9 @@ typedef struct gw_drive {
 /* Run s from (*t, y) as d says; *t and y follow the run. Returns GW_OK (t_end
  * reached or a hook stopped), GW_ROOT (a hook yielded; roots holds the roots),
  * the solver's failure (GW_ESOLVER, GW_ELIMIT: "what: backend message", which
- * names the time) or a hook's negative status. roots: sys.nroots entries. */
+ * names the time) or a hook's negative status. roots: sys.nroots entries.
+ * GW_EINVAL naming the field for a t_end that is not finite (NaN returned
+ * GW_OK having run nothing) or a dt_out NaN, infinite or negative. */
 int gw_solver_drive(gw_solver *s, gw_drive *d, double *t, double *y, int *roots, gw_err *err);
 
 void gw_solver_get_stats(const gw_solver *s, gw_solver_stats *st);

@@ -20,6 +20,7 @@
 #include "gw_stats.h"
 #include "gw_io_lines.h"
 #include "gw_locale.h"
+#include "gw_number_impl.h"
 #include "gw_stats_impl.h"
 #include "gw_sweep_impl.h"
 
@@ -84,15 +85,20 @@ static int split(char *line, char **cells, int max)
     }
 }
 
-/* A whole cell as a double; nan and inf are accepted. */
+/* A whole cell as a double by the data files' rule (gw_data_number: decimal,
+ * as the program's options; a table's 0x1p-2 was read as 0.25); nan and inf
+ * are accepted. */
 static int cell_number(const char *s, double *v)
 {
-    if (!*s)
-        return 0;
-    char *end;
-    errno = 0;
-    *v = gw_strtod(s, &end);
-    return *end == '\0' && !(errno == ERANGE && fabs(*v) > 1);
+    return gw_data_number(s, v) == GW_DATA_NUMBER;
+}
+
+/* The words of a cell's refusal: "not a decimal number (...)" for a
+ * hexadecimal one, else dflt. */
+static const char *cell_why(const char *s, const char *dflt)
+{
+    double v;
+    return gw_data_number(s, &v) == GW_DATA_HEX ? gw_data_number_why(GW_DATA_HEX) : dflt;
 }
 
 static int numeric_setting(const char *name);
@@ -130,7 +136,8 @@ static int add_param(gw_stats_table *t, char *text, long ln, gw_err *err)
     /* "# param rb-rm = abc" (or nan) was read as no value: the default 1 */
     double v = 0;
     if (numeric_setting(name) && !(cell_number(value, &v) && isfinite(v)))
-        return gw_err_set(err, GW_EFORMAT, "%s:%ld: param %s: '%s' is not a finite number", t->path, ln, name, value);
+        return gw_err_set(err, GW_EFORMAT, "%s:%ld: param %s: '%s' is %s", t->path, ln, name, value,
+                          cell_why(value, "not a finite number"));
     char why[sizeof(gw_err)];
     if (setting_domain(t, name, value, v, why, sizeof why))
         return gw_err_set(err, GW_EFORMAT, "%s:%ld: param %s: '%s' is not a value a sweep runs (%s)", t->path, ln,
@@ -197,13 +204,12 @@ static int setting_domain(const gw_stats_table *t, const char *name, const char 
     return 0;
 }
 
-/* Whether s is a number as a whole, in range or not (strtod reads all of it). */
+/* Whether s is a number as a whole, in range or not, in any base strtod
+ * reads (gw_data_number: one beyond a double or in hexadecimal). */
 static int numeric_text(const char *s)
 {
-    char *end;
-    errno = 0;
-    (void)gw_strtod(s, &end);
-    return *s && *end == '\0';
+    double v;
+    return gw_data_number(s, &v) != GW_DATA_NONE;
 }
 
 static int parse_header(gw_stats_table *t, char *line, long ln, int *ncells, gw_err *err)
@@ -427,8 +433,8 @@ static int parse_row(gw_stats_table *t, char *line, const char *raw, long ln, in
          * was taken for a name, as a sample file's, and its rows left out of
          * the diagram); R_b/R_m 'abc' gave binary rows of NaN with no points */
         if ((num && !isfinite(v)) || (!num && numeric_text(cells[1 + i])))
-            return gw_err_set(err, GW_EFORMAT, "%s:%ld: grid key %s: '%s' is not a finite number", t->path, ln,
-                              t->grid_name[i], cells[1 + i]);
+            return gw_err_set(err, GW_EFORMAT, "%s:%ld: grid key %s: '%s' is %s", t->path, ln,
+                              t->grid_name[i], cells[1 + i], cell_why(cells[1 + i], "not a finite number"));
         if (!num && numeric_setting(t->grid_name[i]))
             return gw_err_set(err, GW_EFORMAT, "%s:%ld: grid key %s: '%s' is not a number", t->path, ln,
                               t->grid_name[i], cells[1 + i]);
@@ -443,8 +449,8 @@ static int parse_row(gw_stats_table *t, char *line, const char *raw, long ln, in
         double v;
         const char *c = cells[1 + t->ngrid + i];
         if (!cell_number(c, &v))
-            return gw_err_set(err, GW_EFORMAT, "%s:%ld: column %s: '%s' is not a number", t->path, ln,
-                              t->col_name[i], c);
+            return gw_err_set(err, GW_EFORMAT, "%s:%ld: column %s: '%s' is %s", t->path, ln,
+                              t->col_name[i], c, cell_why(c, "not a number"));
         if (i == cb && !(v == 0 || v == 1 || isnan(v)))
             return gw_err_set(err, GW_EFORMAT, "%s:%ld: column bounced: '%s' is not 0 or 1", t->path, ln, c);
         /* a flag the sweep writes 0 or 1 (never nan): 7, 0.5 or nan counted as

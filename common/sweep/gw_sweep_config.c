@@ -22,6 +22,7 @@
 #include "gw_sweep.h"
 #include "gw_io_lines.h"
 #include "gw_locale.h"
+#include "gw_number_impl.h"
 #include "gw_io_impl.h"
 #include "gw_sweep_impl.h"
 
@@ -116,12 +117,12 @@ static int first_duplicate(const gw_sweep_key *k, long *jp, long *ip)
     for (int kind = 0; kind < 3; kind++) {
         long m = 0;
         for (long q = 0; q < n; q++) {
-            char *e;
             double v = 0;
             int keep = 1;
             if (kind == 1) {
-                v = gw_strtod(k->values[q], &e);
-                keep = !*e && e != k->values[q] && !isnan(v); /* NaN equals nothing, as before */
+                /* by the data files' rule: a hexadecimal value is no number
+                 * (refused by its row), not the duplicate of a decimal one */
+                keep = gw_data_number(k->values[q], &v) == GW_DATA_NUMBER && !isnan(v); /* NaN equals nothing */
             } else if (kind == 2) {
                 const int f = gw_parse_flag(k->values[q]);
                 keep = f >= 0;

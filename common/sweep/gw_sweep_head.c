@@ -19,6 +19,7 @@
 
 #include "gw_sweep.h"
 #include "gw_locale.h"
+#include "gw_number_impl.h"
 #include "gw_sweep_impl.h"
 
 /* "# input KEY = VALUE fnv1a64 HEX" lines of cfg, then its "# grid KEY = v1,
@@ -101,14 +102,13 @@ static int same_numbers(const char *a, size_t al, char *const *b, int nb)
     copy[al] = '\0';
     int i = 0, same = 1;
     for (char *t = strtok_r(copy, ",", &save); same && t; t = strtok_r(NULL, ",", &save), i++) {
-        char *e1, *e2;
         t = gw_str_trim(t);
         if (i >= nb) {
             same = 0;
             break;
         }
-        double x = gw_strtod(t, &e1), y = gw_strtod(b[i], &e2);
-        same = e1 != t && !*e1 && e2 != b[i] && !*e2 && x == y;
+        double x, y; /* by the data files' rule: 0x1p-2 is no number, as in the config */
+        same = gw_data_number(t, &x) == GW_DATA_NUMBER && gw_data_number(b[i], &y) == GW_DATA_NUMBER && x == y;
     }
     free(copy);
     return same && i == nb;

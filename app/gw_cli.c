@@ -28,6 +28,7 @@ int gw_cli_opt_param(const gw_param *p, void *dest, gw_opt *o, gw_err *err)
                   .hi = p->max, .open_lo = p->open_min, .open_hi = p->open_max, .param = p};
     switch (p->type) {
     case GW_PARAM_DOUBLE: o->kind = GW_OPT_DOUBLE; break;
+    case GW_PARAM_COUNT: o->kind = GW_OPT_COUNT; break;
     case GW_PARAM_LONG: o->kind = GW_OPT_LONG; break;
     case GW_PARAM_FLAG: o->kind = GW_OPT_FLAG; break;
     case GW_PARAM_CHOICE:
@@ -44,7 +45,7 @@ int gw_cli_opt_param(const gw_param *p, void *dest, gw_opt *o, gw_err *err)
         return p->def && strcmp(p->def, "0") != 0
                    ? gw_err_set(err, GW_EINVAL, "%s: a flag option is off by default", p->name) : GW_OK;
     }
-    if (p->type == GW_PARAM_DOUBLE)
+    if (p->type == GW_PARAM_DOUBLE || p->type == GW_PARAM_COUNT)
         *(double *)dest = NAN;
     else
         *(long *)dest = p->optional ? GW_PARAM_UNSET_LONG : 0;
@@ -75,6 +76,20 @@ static int set_by_row(const char *cmd, gw_opt *o, const char *val, gw_err *err)
     return GW_OK;
 }
 
+/* One end of an option's range as its refusal prints it: -inf or inf when
+ * unbounded, an integer's or a count's in full (a count's 8388606 was
+ * 8.3886e+06), a real's rounded toward the inside (gw_num_bound: the printed
+ * bound is taken when given back). */
+static void range_end(char *buf, size_t n, double x, int whole, int upper)
+{
+    if (!isfinite(x))
+        gw_snprintf(buf, n, "%s", upper ? "inf" : "-inf");
+    else if (whole)
+        gw_snprintf(buf, n, "%.0f", upper ? floor(x) : ceil(x));
+    else
+        gw_num_bound(buf, n, x, upper);
+}
+
 static int set_value(const char *cmd, gw_opt *o, const char *val, gw_err *err)
 {
     char name[128];
@@ -83,20 +98,25 @@ static int set_value(const char *cmd, gw_opt *o, const char *val, gw_err *err)
     if (o->param && o->kind != GW_OPT_FLAG)
         return set_by_row(cmd, o, val, err);
     switch (o->kind) {
-    case GW_OPT_DOUBLE: {
+    case GW_OPT_DOUBLE:
+    case GW_OPT_COUNT: {
         double v; /* a subnormal refused naming the option's range */
         const gw_num_range r = {o->lo, o->hi, o->open_lo, o->open_hi, 0};
+        const int count = o->kind == GW_OPT_COUNT;
         if ((rc = gw_parse_double_in(val, name, &r, &v, err)) != GW_OK)
             return rc;
+        char ls[32], hs[32]; /* numbers the range holds (range_end) */
+        range_end(ls, sizeof ls, o->lo, count, 0);
+        range_end(hs, sizeof hs, o->hi, count, 1);
         if (v < o->lo || v > o->hi || (o->open_lo && !(v > o->lo)) || (o->open_hi && !(v < o->hi))) {
-            char ls[32], hs[32]; /* numbers the range holds (gw_num_bound) */
-            gw_num_bound(ls, sizeof ls, o->lo, 0);
-            gw_num_bound(hs, sizeof hs, o->hi, 1);
             if (o->open_lo && !isfinite(o->hi))
                 return gw_err_set(err, GW_EINVAL, "%s: %s must be > %s", name, val, ls);
             return gw_err_set(err, GW_EINVAL, "%s: %s is outside %s%s, %s%s", name, val,
                               o->open_lo ? "(" : "[", ls, hs, o->open_hi ? ")" : "]");
         }
+        if (count && v != floor(v)) /* a count as the library's count rows take it (gw_param.h) */
+            return gw_err_set(err, GW_EINVAL, "%s: '%s' is not a whole number (give an integer in [%s, %s])", name,
+                              val, ls, hs);
         *(double *)o->dest = v;
         break;
     }
@@ -300,29 +320,17 @@ static cJSON *help_unit(const char *help, const char *at)
     return cJSON_CreateString(buf);
 }
 
-/* One end of an option's range as its refusal prints it: -inf or inf when
- * unbounded, an integer's in full, a real's rounded toward the inside
- * (gw_num_bound: the printed bound is taken when given back). */
-static void range_end(char *buf, size_t n, double x, int whole, int upper)
-{
-    if (!isfinite(x))
-        gw_snprintf(buf, n, "%s", upper ? "inf" : "-inf");
-    else if (whole)
-        gw_snprintf(buf, n, "%.0f", x);
-    else
-        gw_num_bound(buf, n, x, upper);
-}
-
 /* The range the parser checks into buf, in its refusal's notation ("(0,
  * 1e+06]", "[1e-09, 0.01] (or 0)", "(0, inf)"): 1, or 0 (buf "") when o is no
  * number option or has no bound. */
 static int parser_range(const gw_opt *o, char *buf, size_t n)
 {
     buf[0] = '\0';
-    if (!o || (o->kind != GW_OPT_DOUBLE && o->kind != GW_OPT_LONG) || (!isfinite(o->lo) && !isfinite(o->hi)))
+    if (!o || (o->kind != GW_OPT_DOUBLE && o->kind != GW_OPT_LONG && o->kind != GW_OPT_COUNT) ||
+        (!isfinite(o->lo) && !isfinite(o->hi)))
         return 0;
     char ls[32], hs[32];
-    const int whole = o->kind == GW_OPT_LONG;
+    const int whole = o->kind == GW_OPT_LONG || o->kind == GW_OPT_COUNT;
     range_end(ls, sizeof ls, o->lo, whole, 0);
     range_end(hs, sizeof hs, o->hi, whole, 1);
     const int or_zero = o->param && o->param->or_zero;
@@ -362,10 +370,10 @@ static const char *opt_kind_name(const gw_opt *o)
 {
     if (o->kind == GW_OPT_STRING && o->param && o->param->type == GW_PARAM_CHOICE)
         return "choice";
-    return o->kind == GW_OPT_FLAG     ? "flag"
-           : o->kind == GW_OPT_DOUBLE ? "number"
-           : o->kind == GW_OPT_LONG   ? "integer"
-                                      : "text";
+    return o->kind == GW_OPT_FLAG                                ? "flag"
+           : o->kind == GW_OPT_DOUBLE                            ? "number"
+           : o->kind == GW_OPT_LONG || o->kind == GW_OPT_COUNT ? "integer" /* a count: a whole number */
+                                                                 : "text";
 }
 
 static cJSON *num_or_null(double v)
@@ -400,7 +408,7 @@ static cJSON *opt_json(const char *name, const char *text, const gw_opt *o)
     cJSON *unit = p && p->unit && *p->unit ? cJSON_CreateString(p->unit) : added ? NULL : help_unit(help, at);
     cJSON_AddItemToObject(j, "unit", unit ? unit : cJSON_CreateNull());
     cJSON_AddItemToObject(j, "range", range ? range : cJSON_CreateNull());
-    const int num = o && (o->kind == GW_OPT_DOUBLE || o->kind == GW_OPT_LONG);
+    const int num = o && (o->kind == GW_OPT_DOUBLE || o->kind == GW_OPT_LONG || o->kind == GW_OPT_COUNT);
     cJSON_AddItemToObject(j, "min", num ? num_or_null(o->lo) : cJSON_CreateNull());
     cJSON_AddItemToObject(j, "max", num ? num_or_null(o->hi) : cJSON_CreateNull());
     cJSON_AddItemToObject(j, "default", def ? def : !o || o->kind == GW_OPT_FLAG ? cJSON_CreateFalse()

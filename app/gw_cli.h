@@ -16,12 +16,16 @@
 
 struct gw_param; /* gw_param.h */
 
-typedef enum { GW_OPT_FLAG, GW_OPT_DOUBLE, GW_OPT_LONG, GW_OPT_STRING } gw_opt_kind;
+/* GW_OPT_COUNT: a count held as a double (a library field of that type,
+ * min-bins): a real as GW_OPT_DOUBLE's ("30", "30.0", "3e1", as Python's
+ * keyword gives it), taken only when a whole number in [lo, hi] (whole
+ * ends), its range printed as integers and its help's kind "integer". */
+typedef enum { GW_OPT_FLAG, GW_OPT_DOUBLE, GW_OPT_LONG, GW_OPT_STRING, GW_OPT_COUNT } gw_opt_kind;
 
 typedef struct gw_opt {
     const char *name;    /* option "--name" */
     gw_opt_kind kind;
-    void *dest;          /* int* (flag), double*, long*, const char** */
+    void *dest;          /* int* (flag), double* (double, count), long*, const char** */
     const char *metavar; /* shown in --help, e.g. "N" */
     const char *help;    /* one line, with units and default */
     double lo, hi;       /* accepted range for numbers (inclusive) */
@@ -46,7 +50,7 @@ int gw_cli_parse(const char *cmd, gw_opt *opts, int argc, char **argv, int *help
                  const char **pos, int maxpos, int *npos, gw_err *err);
 /* The option of table row p (gw_param.h) writing into dest: name, metavar,
  * help, range and kind from the row (double -> GW_OPT_DOUBLE into a double,
- * long -> GW_OPT_LONG into a long, flag -> GW_OPT_FLAG into an int, choice and
+ * count -> GW_OPT_COUNT into a double, long -> GW_OPT_LONG into a long, flag -> GW_OPT_FLAG into an int, choice and
  * text -> GW_OPT_STRING into a const char *), the value checked by the row; the
  * row's default is written into dest (a choice or text default as the row's
  * static text, NULL when it has none; an optional row's "not given": NaN,

@@ -319,6 +319,17 @@ static void journal_put_back(sweep_run *s, gw_err *err, int *rc)
                 "its %ld row%s; the sweep goes on\n", s->out, s->ndone0 + s->done, s->ndone0 + s->done == 1 ? "" : "s");
 }
 
+/* The kept journal's message (s->kept_err) with the row at which the file
+ * was found written into: "before" the row was written (it went into the
+ * kept journal) or "as" it was written (into the file, then kept with it). */
+static void kept_at_row(sweep_run *s, const char *when, const char *row)
+{
+    char tmp[sizeof s->kept_err.msg];
+    snprintf(tmp, sizeof tmp, "%s", s->kept_err.msg);
+    gw_err_set(&s->kept_err, GW_EIO, "%s (found %s the row of case %ld was written)", tmp, when,
+               strtol(row, NULL, 10));
+}
+
 /* Append a finished row to the journal (caller holds the lock or is the only
  * writer). */
 static int journal(sweep_run *s, const char *row, gw_err *err)
@@ -336,8 +347,11 @@ static int journal(sweep_run *s, const char *row, gw_err *err)
         rc = gw_sweep_dir_held(s->dirfd, s->out, err);
     /* and its journal is still there: removed (rm DIR/journal.csv), every
      * row went on into a file in no directory and was lost at the end */
+    const int was_kept = s->kept;
     if (rc == GW_OK)
         journal_put_back(s, err, &rc);
+    if (s->kept && !was_kept)
+        kept_at_row(s, "before", row);
     if (rc == GW_OK && (rc = gw_sweep_journal_append(s->fd, row, &s->synced_ms, err)) != GW_OK) {
         /* said naming the journal, and what a rerun does with it (a full
          * disk: the row torn inside, cut by the resume) */
@@ -349,6 +363,16 @@ static int journal(sweep_run *s, const char *row, gw_err *err)
     }
     if (rc == GW_OK)
         s->done++;
+    /* and the journal held what the sweep wrote up to this row: a file
+     * written into between the check above and the row's write (an editor's
+     * save, `: >`) had the row appended to it and was found at the next row,
+     * or only at the end ("lost rows") when it kept its length; checked now,
+     * it is kept at this row, and no case is handed out after it */
+    if (rc == GW_OK && !s->kept) {
+        journal_put_back(s, err, &rc);
+        if (s->kept)
+            kept_at_row(s, "as", row);
+    }
     return rc;
 }
 

@@ -39,7 +39,7 @@ static const gw_param disp_params[] = {
         "of d0) [1e-3]"),
     OROW("seed", GW_PARAM_LONG, seed, "", 0, 9.0e18, 0, "1", "S",
         "seed of the random mode phases of the initial velocities [1]"),
-    OROW("min-bins", GW_PARAM_DOUBLE, min_bins, "", 1, GW_CHAIN_DISP_MIN_BINS_MAX, 0, "8", "B",
+    OROW("min-bins", GW_PARAM_COUNT, min_bins, "", 1, GW_CHAIN_DISP_MIN_BINS_MAX, 0, "8", "B",
         "ridge resolved from B frequency bins up, B <= T/2 - 2 [8]"),
     CHOICE("solver", solver, "rk4,cvode,arkode", NULL, "NAME", "rk4, cvode or arkode [rk4; column-n: cvode]"),
     CHOICE("method", method, "default,adams,bdf,erk,dirk", NULL, "NAME",

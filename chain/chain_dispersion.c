@@ -149,11 +149,15 @@ int gw_chain_disp_params_validate(const gw_chain_disp_params *p, gw_err *err)
                           p->steps_per_sample, wc * dts / p->steps_per_sample, (int)ceil(wc * dts));
     if (!(p->min_bins >= 1) || !isfinite(p->min_bins))
         return gw_err_set(err, GW_EINVAL, "min-bins: %g must be >= 1", p->min_bins);
+    /* a count held as a double (ABI 3): 1.5 bins ran as a ridge from 2 bins up */
+    if (p->min_bins != floor(p->min_bins))
+        return gw_err_set(err, GW_EINVAL, "min-bins: %.17g is not a whole number (a count of frequency bins)",
+                          p->min_bins);
     /* the ridge search (disp_analyse below) takes the peak bin lm in [1, T/2 - 2] and
      * refines it by at most half a bin: a ridge above T/2 - 2 bins is never found */
     if (p->min_bins > p->t_samples / 2 - 2)
         return gw_err_set(err, GW_EINVAL,
-                          "min-bins: %g is above %d, the highest frequency bin a ridge can be found in "
+                          "min-bins: %.0f is above %d, the highest frequency bin a ridge can be found in "
                           "with t-samples %d (T/2 - 2): nothing would be resolved",
                           p->min_bins, p->t_samples / 2 - 2, p->t_samples);
     return GW_OK;

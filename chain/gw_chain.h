@@ -622,7 +622,8 @@ typedef struct gw_chain_disp_params {
                              omega_c at 80 % of the Nyquist frequency */
     int steps_per_sample; /* RK4 steps per sampling interval (fixed step) */
     double min_bins;      /* a ridge is resolved when its frequency is at least
-                             this many frequency bins (2 pi / T) above zero; in
+                             this many frequency bins (2 pi / T) above zero; a
+                             whole number (a count the ABI holds as a double) in
                              [1, t_samples/2 - 2]: the ridge is looked for in the
                              bins below t_samples/2 - 1 (the last bins of the
                              one-sided spectrum have no neighbour to refine the

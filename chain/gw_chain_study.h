@@ -506,7 +506,7 @@ typedef struct gw_chain_dispersion_setup {
     long steps_per_sample;/* RK4 steps per sample [16] */
     double amp;           /* rms overlap perturbation / d0 [1e-3] */
     long seed;            /* [1] */
-    double min_bins;      /* [8] */
+    double min_bins;      /* a count held as a double: a whole number [8] */
     int solver;           /* rk4, cvode, arkode (choice) [-1: rk4; column: cvode] */
     int method;           /* default, adams, bdf, erk, dirk (choice) [-1: default] */
     double rtol, atol;    /* [NaN: 1e-10; column: 1e-12] */

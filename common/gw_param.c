@@ -47,7 +47,7 @@ const char *gw_param_type_name(gw_param_type type)
 {
     static const char *const names[] = {"double", "int", "long", "flag", "choice",
                                         "text", "list", "range", "double array", "int array",
-                                        "flag array"};
+                                        "flag array", "count"};
     return (unsigned)type < sizeof names / sizeof names[0] ? names[type] : "unknown";
 }
 
@@ -65,7 +65,8 @@ static const void *cfield(const void *obj, const gw_param *p)
 static size_t param_field_size(const gw_param *p)
 {
     switch (p->type) {
-    case GW_PARAM_DOUBLE: return sizeof(double);
+    case GW_PARAM_DOUBLE:
+    case GW_PARAM_COUNT: return sizeof(double);
     case GW_PARAM_LONG: return sizeof(long);
     case GW_PARAM_TEXT: return sizeof(char *);
     case GW_PARAM_LIST: return sizeof(gw_param_list);
@@ -84,6 +85,18 @@ static int unset(const gw_param *p, const void *f)
                            (p->type == GW_PARAM_LONG && *(const long *)f == GW_PARAM_UNSET_LONG));
 }
 
+/* One end x of row p's range as its refusals print it: a count's in full
+ * (8388606, where %g's six digits gave 8.3886e+06), a real's rounded toward
+ * the inside (gw_num_bound: the printed end is taken when given back). */
+static char *row_end(char *buf, size_t n, const gw_param *p, double x, int upper)
+{
+    if (p->type == GW_PARAM_COUNT && isfinite(x) && fabs(x) < 9.0e15) {
+        gw_snprintf(buf, n, "%.0f", upper ? floor(x) : ceil(x));
+        return buf;
+    }
+    return gw_num_bound(buf, n, x, upper);
+}
+
 /* within [min, max], "(" / ")" for open ends, or 0 for an or_zero row;
  * messages "(0, 1000]", "> 0", "[1e-09, 0.01] (or 0)" */
 static int range_bad(const gw_param *p, double x, gw_err *err, const char *what)
@@ -95,8 +108,8 @@ static int range_bad(const gw_param *p, double x, gw_err *err, const char *what)
     const char *zero = p->or_zero ? " (or 0)" : "";
     char xs[32], ls[32], hs[32]; /* the ends as numbers the range holds (5.09684e+07 was above it) */
     gw_num_text(xs, sizeof xs, x);
-    gw_num_bound(ls, sizeof ls, p->min, 0);
-    gw_num_bound(hs, sizeof hs, p->max, 1);
+    row_end(ls, sizeof ls, p, p->min, 0);
+    row_end(hs, sizeof hs, p, p->max, 1);
     if (!isfinite(p->max))
         return gw_err_set(err, GW_EINVAL, "%s: %s%s must be %s %s%s", p->name, what, xs,
                           p->open_min ? ">" : ">=", ls, zero);
@@ -184,13 +197,29 @@ static void int_bounds(const gw_param *p, long *lo, long *hi)
     }
 }
 
+/* A count row's value v (in its range) that is no whole number: "NAME: '1.5'
+ * is not a whole number (give an integer in [1, 8388606])", text the value as
+ * given (NULL: v printed). A count held as a double took 1.5 bins before. */
+static int count_bad(const gw_param *p, double v, const char *text, gw_err *err)
+{
+    if (v == floor(v))
+        return GW_OK;
+    long lo, hi; /* the whole numbers the row takes */
+    int_bounds(p, &lo, &hi);
+    char give[96], xs[32];
+    gw_int_give(give, sizeof give, lo, hi, p->or_zero);
+    if (text)
+        return gw_err_set(err, GW_EINVAL, "%s: '%s' is not a whole number%s", p->name, text, give);
+    return gw_err_set(err, GW_EINVAL, "%s: %s is not a whole number%s", p->name, gw_num_text(xs, sizeof xs, v), give);
+}
+
 static int set_number(const gw_param *p, void *obj, double v, const char *text, gw_err *err)
 {
     /* a row that takes no number said so only when v lay in its [min, max]:
      * gw_param_set_double(chain, "material", 1) was told "1 is outside [0,
      * 0]", and 0 "takes a choice, not a number" */
     if (p->type != GW_PARAM_DOUBLE && p->type != GW_PARAM_FLAG && p->type != GW_PARAM_INT &&
-        p->type != GW_PARAM_LONG)
+        p->type != GW_PARAM_LONG && p->type != GW_PARAM_COUNT)
         return gw_err_set(err, GW_EINVAL, "%s: takes a %s, not a number", p->name, gw_param_type_name(p->type));
     if (!isfinite(v))
         return gw_err_set(err, GW_EINVAL, "%s: must be a finite number, got %g", p->name, v);
@@ -202,6 +231,11 @@ static int set_number(const gw_param *p, void *obj, double v, const char *text, 
         return rc;
     switch (p->type) {
     case GW_PARAM_DOUBLE:
+        *(double *)field(obj, p) = v;
+        return GW_OK;
+    case GW_PARAM_COUNT:
+        if ((rc = count_bad(p, v, text, err)) != GW_OK)
+            return rc;
         *(double *)field(obj, p) = v;
         return GW_OK;
     case GW_PARAM_FLAG:
@@ -259,7 +293,8 @@ static long list_most(const gw_param *t, const gw_param *p)
     long m = strtol(p->rows, &end, 10);
     if (end == p->rows) { /* a row's name */
         const gw_param *r = gw_param_find(t, p->rows);
-        return r && (r->type == GW_PARAM_INT || r->type == GW_PARAM_LONG || r->type == GW_PARAM_RANGE) && r->max >= 0 && r->max <= INT_MAX
+        return r && (r->type == GW_PARAM_INT || r->type == GW_PARAM_LONG || r->type == GW_PARAM_RANGE ||
+                     r->type == GW_PARAM_COUNT) && r->max >= 0 && r->max <= INT_MAX
                    ? (long)r->max
                    : INT_MAX;
     }
@@ -269,7 +304,8 @@ static long list_most(const gw_param *t, const gw_param *p)
 static int set_text(const gw_param *t, const gw_param *p, void *obj, const char *value, gw_err *err)
 {
     switch (p->type) {
-    case GW_PARAM_DOUBLE: {
+    case GW_PARAM_DOUBLE:
+    case GW_PARAM_COUNT: { /* a count as a real ("30.0" as Python's 30.0 gives it), then whole */
         double v;
         const gw_num_range r = row_range(p);
         int rc = gw_parse_double_in(value, p->name, &r, &v, err);
@@ -404,7 +440,8 @@ int gw_param_check(const gw_param *t, const void *obj, gw_err *err)
         const void *f = cfield(obj, p);
         int rc = GW_OK;
         switch (p->type) {
-        case GW_PARAM_DOUBLE: {
+        case GW_PARAM_DOUBLE:
+        case GW_PARAM_COUNT: {
             double v = *(const double *)f;
             if (isnan(v) && (!p->def || p->optional))
                 break;
@@ -413,6 +450,8 @@ int gw_param_check(const gw_param *t, const void *obj, gw_err *err)
             rc = subnormal_bad(p, v, err, "");
             if (rc == GW_OK)
                 rc = range_bad(p, v, err, "");
+            if (rc == GW_OK && p->type == GW_PARAM_COUNT)
+                rc = count_bad(p, v, NULL, err);
             break;
         }
         case GW_PARAM_INT:
@@ -478,7 +517,8 @@ int gw_param_init(const gw_param *t, void *obj, gw_err *err)
         const gw_param *p = &t[i];
         void *f = field(obj, p);
         switch (p->type) {
-        case GW_PARAM_DOUBLE: *(double *)f = NAN; break;
+        case GW_PARAM_DOUBLE:
+        case GW_PARAM_COUNT: *(double *)f = NAN; break;
         case GW_PARAM_INT: *(int *)f = p->optional ? GW_PARAM_UNSET_INT : 0; break;
         case GW_PARAM_FLAG: *(int *)f = 0; break;
         case GW_PARAM_LONG: *(long *)f = p->optional ? GW_PARAM_UNSET_LONG : 0; break;
@@ -506,7 +546,8 @@ int gw_param_given(const gw_param *p, const void *obj)
     const void *f = cfield(obj, p);
     if (p->optional || !p->def) {
         switch (p->type) {
-        case GW_PARAM_DOUBLE: return !isnan(*(const double *)f);
+        case GW_PARAM_DOUBLE:
+        case GW_PARAM_COUNT: return !isnan(*(const double *)f);
         case GW_PARAM_INT: return !unset(p, f) && (p->optional || *(const int *)f != 0);
         case GW_PARAM_LONG: return !unset(p, f) && (p->optional || *(const long *)f != 0);
         case GW_PARAM_FLAG: return *(const int *)f != 0;
@@ -559,6 +600,7 @@ int gw_param_format(const gw_param *p, const void *obj, char *buf, size_t n)
     buf[0] = '\0';
     switch (p->type) {
     case GW_PARAM_DOUBLE:
+    case GW_PARAM_COUNT:
         w = isnan(*(const double *)f) ? 0 : gw_snprintf(buf, n, "%.17g", *(const double *)f);
         break;
     case GW_PARAM_INT:
@@ -601,6 +643,7 @@ cJSON *gw_param_json(const gw_param *t, const void *obj)
         char buf[256];
         switch (p->type) {
         case GW_PARAM_DOUBLE:
+        case GW_PARAM_COUNT:
             v = isfinite(*(const double *)f) ? cJSON_CreateNumber(*(const double *)f) : cJSON_CreateNull();
             break;
         case GW_PARAM_INT:

@@ -43,10 +43,17 @@ typedef enum gw_param_type {
     GW_PARAM_RANGE = 7,  /* long[2] {a, b}, a <= b; text "A:B" or "A" */
     GW_PARAM_DARRAY = 8, /* result: double *, rows x cols, row-major */
     GW_PARAM_IARRAY = 9, /* result: int *, rows x cols */
-    GW_PARAM_FARRAY = 10 /* result: int * of flags 0 or 1, rows x cols (Python: a
+    GW_PARAM_FARRAY = 10, /* result: int * of flags 0 or 1, rows x cols (Python: a
                             bool array, as the JSON's true/false); -1 where the
                             row's help says undecided (JSON null, Python a
                             masked array, masked there) */
+    GW_PARAM_COUNT = 11  /* a count a struct holds as a double (its field's type
+                            is fixed by the ABI): set and read as a double row
+                            ("30", "30.0", "3e1"; NaN = not given), and taken
+                            only when a whole number within [min, max], whose
+                            ends are whole numbers and are printed as integers
+                            ("min-bins: 1.5 is not a whole number (give an
+                            integer in [1, 8388606])") */
 } gw_param_type;
 
 /* A list of numbers held by a parameter struct (GW_PARAM_LIST). */
@@ -105,7 +112,7 @@ const gw_param *gw_param_find(const gw_param *t, const char *name);
 int gw_param_is_input(const gw_param *p);
 
 /* Type name ("double", "int", "long", "flag", "choice", "text", "list",
- * "range", "double array", "int array", "flag array"). */
+ * "range", "double array", "int array", "flag array", "count"). */
 const char *gw_param_type_name(gw_param_type type);
 
 /* Fill obj's fields from t's defaults: a row's def is set as if by gw_param_set;
@@ -146,8 +153,8 @@ int gw_param_set_value(const gw_param *p, void *fieldp, const char *value, gw_er
  * ranges. GW_EINVAL "NAME: reason" for the first bad row. */
 int gw_param_check(const gw_param *t, const void *obj, gw_err *err);
 
-/* Set a number row (double, int, long, flag) of obj from v with the same
- * checks (an integer row needs an integral v). */
+/* Set a number row (double, int, long, flag, count) of obj from v with the
+ * same checks (an integer or count row needs an integral v). */
 int gw_param_set_double(const gw_param *t, void *obj, const char *name, double v, gw_err *err);
 
 /* Current value of row p in obj as text ("" for not given; numbers with 17

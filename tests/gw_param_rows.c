@@ -6,7 +6,8 @@
  *
  *   STUDY NAME TYPE MIN MAX OPEN_MIN OPEN_MAX BELOW ABOVE DEFAULT OR_ZERO INSIDE_MIN INSIDE_MAX
  *
- * TYPE is the row's type (double, long, int, flag, choice, text, list, range);
+ * TYPE is the row's type (double, long, int, flag, choice, text, list, range,
+ * count: a whole number held as a double, its ends moved as an integer's);
  * MIN and MAX its accepted numbers (inf for none); BELOW and ABOVE the nearest
  * numbers just outside the range that a command must refuse ("-" when the side
  * is unbounded): an open end itself, a closed end moved by 1e-9 of its size
@@ -28,7 +29,8 @@
 
 static void outside(const gw_param *p, double end, int open, int dir, char *buf, size_t n)
 {
-    int integer = p->type == GW_PARAM_INT || p->type == GW_PARAM_LONG || p->type == GW_PARAM_RANGE;
+    int integer = p->type == GW_PARAM_INT || p->type == GW_PARAM_LONG || p->type == GW_PARAM_RANGE ||
+                  p->type == GW_PARAM_COUNT;
     if (!isfinite(end) || (integer && fabs(end) >= 9e18)) {
         snprintf(buf, n, "-");
         return;
@@ -43,7 +45,8 @@ static void outside(const gw_param *p, double end, int open, int dir, char *buf,
 
 static void inside(const gw_param *p, double end, int open, int dir, char *buf, size_t n)
 {
-    int integer = p->type == GW_PARAM_INT || p->type == GW_PARAM_LONG || p->type == GW_PARAM_RANGE;
+    int integer = p->type == GW_PARAM_INT || p->type == GW_PARAM_LONG || p->type == GW_PARAM_RANGE ||
+                  p->type == GW_PARAM_COUNT;
     if (!isfinite(end) || (integer && fabs(end) >= 9e18)) {
         snprintf(buf, n, "-");
         return;
@@ -69,6 +72,7 @@ int main(int argc, char **argv)
             inside(p, p->min, p->open_min, -1, ilo, sizeof ilo);
             inside(p, p->max, p->open_max, +1, ihi, sizeof ihi);
             int number = p->type == GW_PARAM_DOUBLE || p->type == GW_PARAM_INT || p->type == GW_PARAM_LONG ||
+                         p->type == GW_PARAM_COUNT ||
                          p->type == GW_PARAM_LIST || p->type == GW_PARAM_RANGE;
             printf("%s %s %s %.17g %.17g %d %d %s %s %s %d %s %s\n", s->name, p->name,
                    gw_param_type_name(p->type),

@@ -36,7 +36,7 @@
 #
 # The commands with a parameter table (layer-make, layer-impact) are driven by
 # their table instead of their --help (third argument: the gw_param_rows
-# program, which prints each study's rows): every number row (double, long) is
+# program, which prints each study's rows): every number row (double, long, count) is
 # a flag, tried with the values above plus the two numbers just outside its
 # range (an open end itself, a closed end moved by 1e-9 of its size, an
 # integer end by 1); a number inside the row's range may exit 0, 1 or 2, one
@@ -129,7 +129,7 @@ table_cmd() { [ -n "$ROWS" ] && case "$TABLE_CMDS" in *" $1 "*) return 0;; esac;
 # command without a table the range fields are "-"
 numeric_flags() {
     if table_cmd "$1"; then
-        "$ROWS" "$1" | awk '$3 == "double" || $3 == "long" || $3 == "int" {print $2, "@row", $4, $5, $6, $7, $8, $9, $11}'
+        "$ROWS" "$1" | awk '$3 == "double" || $3 == "long" || $3 == "int" || $3 == "count" {print $2, "@row", $4, $5, $6, $7, $8, $9, $11}'
         return
     fi
     "$GW" "$1" --help | awk '/^  --/ {print $1, $2}' |
@@ -270,7 +270,7 @@ run_cmd() {
                 fi
                 rm -rf "$out"
             done
-        done < <("$ROWS" "$cmd" | awk '$3 == "double" || $3 == "long" || $3 == "int" {print $2, $12, $13, $11}')
+        done < <("$ROWS" "$cmd" | awk '$3 == "double" || $3 == "long" || $3 == "int" || $3 == "count" {print $2, $12, $13, $11}')
     fi
     echo "$ncase $passes $fails $known" >"$tmp/counts"
 }

@@ -9,7 +9,8 @@ integer, range, list or choice row of its table that is also an option of the
 command, the same values go to the front-ends, each over a small baseline run:
 
   the row's documented min and max (from the table) and just outside each end,
-  0, nan and 1.5 (integer rows); with --full also -1, 1e308, -1e308, 1e-308
+  0, nan and 1.5 (integer rows; every count row, a whole number the library
+  holds as a double, also its whole minimum written as a real, 1.0); with --full also -1, 1e308, -1e308, 1e-308
   (subnormal), 3e-308, inf, -inf, 2^63 and -0.5; every name of a choice row
   and an unknown one; an optional text row (granwave.params "optional") at its
   default's text, given (layer-stats' fit, on a table without a diagram where
@@ -138,7 +139,8 @@ def num(v):
     return None
 import ctypes
 from granwave import _core, _lib
-C_TYPES = {_core.DOUBLE: ctypes.c_double, _core.LONG: ctypes.c_long, _core.INT: ctypes.c_int}
+C_TYPES = {_core.DOUBLE: ctypes.c_double, _core.COUNT: ctypes.c_double, _core.LONG: ctypes.c_long,
+           _core.INT: ctypes.c_int}
 def c_value(p, value):
     """value as a C caller writes it into the struct field of row p; None where
     no C value is that one (1.5 into a long)."""
@@ -148,7 +150,7 @@ def c_value(p, value):
         return value if isinstance(value, str) else None
     if isinstance(value, list) or isinstance(value, str):
         return None
-    if p.type == _core.DOUBLE:
+    if p.type in (_core.DOUBLE, _core.COUNT):  # a count is a double field (1.5 written as it is)
         return float(value)
     if p.type in (_core.LONG, _core.INT, _core.RANGE):
         v = float(value)
@@ -276,7 +278,7 @@ WORK = Worker()
 
 # the module's type names (granwave.params) as the driver's
 TYPES = {"float": "double", "int": "int", "bool": "flag", "choice": "choice", "str": "text",
-         "list of float": "list", "range A:B": "range"}
+         "list of float": "list", "range A:B": "range", "count": "count"}
 
 
 def py_value(text, ptype):
@@ -307,12 +309,12 @@ CURRENT = [None]
 def values(p):
     """The values tried for row p: (value, why). Numbers as Python numbers
     (the program gets their repr)."""
-    integer = p["type"] in ("int", "long", "range")
+    integer = p["type"] in ("int", "long", "range", "count")  # a count: a whole number held as a double
     lo, hi = p["min"], p["max"]
     out = []
 
-    def add(v, why):
-        if isinstance(v, float) and integer and math.isfinite(v) and v == int(v) and abs(v) < 2 ** 63:
+    def add(v, why, real=False):
+        if not real and isinstance(v, float) and integer and math.isfinite(v) and v == int(v) and abs(v) < 2 ** 63:
             v = int(v)
         if all(not (type(v) is type(w) and (v == w or (v != v and w != w))) for w, _ in out):
             out.append((v, why))
@@ -332,9 +334,11 @@ def values(p):
     if FULL or ("nan", CURRENT[0]) not in GENERIC:
         GENERIC.add(("nan", CURRENT[0]))
         add(float("nan"), "nan")
-    if integer and (FULL or ("int", CURRENT[0]) not in GENERIC):
+    if integer and (FULL or (p["type"] == "count" or ("int", CURRENT[0]) not in GENERIC)):
         GENERIC.add(("int", CURRENT[0]))
-        add(1.5, "not an integer")
+        add(1.5, "not an integer")  # every count row: its own rule of whole numbers
+    if p["type"] == "count":  # a whole number written as a real: taken by all three (Python's 30.0)
+        add(float(math.ceil(lo)) if math.isfinite(lo) else 1.0, "a whole number as a real", real=True)
     if FULL:
         add(-1, "negative")
         add(1e308, "huge")

@@ -285,7 +285,7 @@ static int doubles_given_again(void)
         const gw_param *t = st->params();
         for (const gw_param *p = t; p->name; p++) {
             if (p->type != GW_PARAM_DOUBLE && p->type != GW_PARAM_INT && p->type != GW_PARAM_LONG &&
-                p->type != GW_PARAM_FLAG)
+                p->type != GW_PARAM_FLAG && p->type != GW_PARAM_COUNT)
                 continue;
             for (size_t k = 0; k < sizeof values / sizeof values[0]; k++) {
                 void *obj = calloc(1, st->params_size), *again = calloc(1, st->params_size);

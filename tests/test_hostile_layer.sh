@@ -729,7 +729,7 @@ fi
 cp "$S300" "$tmp/s26.txt"
 printf '[sweep]\nmodel = layer\n[grid]\npoint = 0:11\n[params]\nsample = %s\npoints = 12\nspacing = 0.01\nt-max = 0.02\n' "$tmp/s26.txt" >"$tmp/w26.ini"
 if MOVE_SHIM=$(shim_path "" move); then
-    timeout -s KILL 300 env GW_MOVE_AT=1 GW_MOVE_RUN="echo '# edited while the sweep runs' >>'$tmp/s26.txt'" LD_PRELOAD="$MOVE_SHIM" \
+    timeout -s KILL 300 env GW_MOVE_AT=1 GW_MOVE_RUN="echo '# edited while the sweep runs' >>'$tmp/s26.txt'" LD_PRELOAD="$(preload_list "$MOVE_SHIM")" \
         "$GW" sweep "$tmp/w26.ini" --out "$tmp/w26" --quiet --jobs 1 >"$tmp/stdout" 2>"$tmp/stderr" </dev/null; rc=$?
     n26=$(journal_rows "$tmp/w26/journal.csv")
     if [ $rc -eq 2 ] && [ "$(wc -l <"$tmp/stderr")" -eq 1 ] && [ ! -e "$tmp/w26/results.csv" ] && [ "$n26" -eq 1 ] &&
@@ -910,7 +910,7 @@ cp "$S300" "$tmp/a33.txt"; other_pile "$S300" "$tmp/b33.txt"
 # sweep: an edit after case 6's check stopped it at 7 rows or more)
 printf '[sweep]\nmodel = layer\n[grid]\nsample = %s, %s\nvi = 10, 12, 14, 16, 18, 20\n[params]\nt-max = 0.02\n' "$tmp/a33.txt" "$tmp/b33.txt" >"$tmp/w33.ini"
 if MOVE_SHIM=$(shim_path "" move); then
-    timeout -s KILL 300 env GW_MOVE_AT=1 GW_MOVE_RUN="echo '# edited while the sweep runs' >>'$tmp/b33.txt'" LD_PRELOAD="$MOVE_SHIM" \
+    timeout -s KILL 300 env GW_MOVE_AT=1 GW_MOVE_RUN="echo '# edited while the sweep runs' >>'$tmp/b33.txt'" LD_PRELOAD="$(preload_list "$MOVE_SHIM")" \
         "$GW" sweep "$tmp/w33.ini" --out "$tmp/w33" --quiet --jobs 1 >"$tmp/stdout" 2>"$tmp/stderr" </dev/null; rc=$?
     n33=$(journal_rows "$tmp/w33/journal.csv")
     if [ $rc -eq 2 ] && [ "$n33" -eq 6 ] && [ "$(wc -l <"$tmp/stderr")" -eq 1 ] && [ ! -e "$tmp/w33/results.csv" ] &&
@@ -993,12 +993,12 @@ hb35=$(fnv "$tmp/b35.txt")
 hc35=$(fnv "$tmp/b35.edited")
 printf '[sweep]\nmodel = layer\n[grid]\nsample = %s, %s\n[params]\nt-max = 0.5\nfull = true\n' "$tmp/a35.txt" "$tmp/b35.txt" >"$tmp/w35.ini"
 # the shim's command: b35 edited, then "PID TICKS" of the sweep (its parent)
-edit35="cp '$tmp/b35.edited' '$tmp/b35.txt' && awk '{ print \$1, \$14 + \$15 }' /proc/\$PPID/stat >'$tmp/k35.new' && mv '$tmp/k35.new' '$tmp/k35'"
+edit35="unset LD_PRELOAD; cp '$tmp/b35.edited' '$tmp/b35.txt' && awk '{ print \$1, \$14 + \$15 }' /proc/\$PPID/stat >'$tmp/k35.new' && mv '$tmp/k35.new' '$tmp/k35'"
 hz35=$(getconf CLK_TCK)
 if MOVE_SHIM=$(shim_path "" move); then
     for attempt35 in 1 2 3; do
         rm -rf "$tmp/w35" "$tmp/k35"; cp "$tmp/b35.orig" "$tmp/b35.txt"; proven35=0
-        timeout -s KILL 600 env GW_MOVE_AT=1 GW_MOVE_RUN="$edit35" LD_PRELOAD="$MOVE_SHIM" \
+        timeout -s KILL 600 env GW_MOVE_AT=1 GW_MOVE_RUN="$edit35" LD_PRELOAD="$(preload_list "$MOVE_SHIM")" \
             "$GW" sweep "$tmp/w35.ini" --out "$tmp/w35" --quiet --jobs 1 >"$tmp/stdout" 2>"$tmp/stderr" </dev/null &
         pid35=$!
         if wait_file $pid35 "$tmp/k35" && read -r gpid35 t1 <"$tmp/k35" &&

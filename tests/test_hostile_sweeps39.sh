@@ -30,18 +30,19 @@
 #    byte-identical
 #  6 a journal of 24 rows before the sweep resumed (5 kB), a row outside
 #    its last 4096 bytes edited in place, its length kept: found by the
-#    file's times, alike; resumed, byte-identical
+#    file's events (inside the row's write), alike; resumed, byte-identical
 #  5 kept: the journal touched (its times changed) and its mode changed mid-
 #    sweep, the bytes the sweep's: exit 0, the undisturbed table, nothing said
-# Each disturbance but 6's is made right before the second row of the run is
+# Each disturbance is made right before the second row of the run is
 # written (at_row, the move shim): mid-sweep on any machine, where one made once
 # the first row showed raced the end of the sweep. That row is then appended
 # after it (the sweep checked before it): the file is what was written and that
 # row. The late save's write comes from the script, after the put-back and a
 # row; a sweep that ended before it is run again. SKIP without the shim. 6's
-# edit, found by the file's times only, comes from the script once a row shows
-# (an edit inside the row's write is covered by the times of the sweep's own
-# append, which it records: found only at the end, "lost rows").
+# edit is made inside the second row's write too: found since the file's
+# events are watched (test_journal_window; the times the sweep recorded after
+# its own append covered it, and only the end found the rows lost), where it
+# came from the script once a row showed, racing the sweep's three cases.
 set -u
 GW=$1
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
@@ -198,10 +199,9 @@ printf '[sweep]\nmodel = chain\n[grid]\nn = %s\n[params]\nsolver = rk4\nvimp = 0
 # long cases left to run
 first24() { mkdir -p "$1" && head -n 29 "$tmp/refc/journal.csv" >"$1/journal.csv"; }
 d=$tmp/l
-# (edited from the script once a row of this run shows, not by at_row: made
-# inside the row's write, the edit comes before the sweep's own append, whose
-# file times the sweep then records, and only the end finds the rows lost)
-prep=first24 async=1 written "6 --jobs 1" "$d" 27 0 edit_row "$GW" sweep "$tmp/c.ini" --out "$d" --quiet --jobs 1
+# (inside the second row's write, at_row: the file's events say another wrote
+# it, and the check after the row compares the whole file)
+prep=first24 written "6 --jobs 1" "$d" 27 0 edit_row "$GW" sweep "$tmp/c.ini" --out "$d" --quiet --jobs 1
 [ "$(stat -c %s "$d.left")" -gt 5000 ] || ko "6: the journal was $(stat -c %s "$d.left") bytes: the edit inside the last 4096"
 resumed "6" "$d" "$tmp/refc" "$GW" sweep "$tmp/c.ini" --out "$d" --jobs 1
 

@@ -2,9 +2,9 @@
 # test_left47.sh GRANWAVE SRCDIR: what the forty-seventh pass left, asserted
 # through the program.
 #  1 `dispersion --min-bins` (a control): a run keeps its resolved ridges at B
-#    bins up. The option stays a real one: as an integer option the program
-#    refused '1.0', which Python's keyword (a double in the library's table and
-#    its public struct) takes.
+#    bins up. The option is a count held as a real (test_count_options): as an
+#    integer option the program refused '1.0', which Python's keyword (a double
+#    in the library's table and its public struct) takes.
 #  2 `layer-stats --fit ...,tan_gamma` warned "tan_gamma at an end of [tan
 #    1e-6 deg, tan 89 deg]" without saying which; beta and a/b likewise. The
 #    warning now names the end of every parameter on its edge, checked against

@@ -31,7 +31,8 @@
 #   command, run right before the K-th row is appended to its journal (the
 #   move shim, tests/move_shim.c; SH and what it starts run without it), the
 #   sweep waiting for it: CMD's status. 77 and nothing run in a build without
-#   the shim (the caller says SKIP). A journal or directory disturbed "once the
+#   the shim (the caller says SKIP). In a sanitizer build the sanitizer's
+#   runtime is preloaded before the shim (sanitizer_runtime). A journal or directory disturbed "once the
 #   first row shows" from the script raced the end of a sweep of a second or
 #   two on a loaded machine; at a row it is mid-sweep on any.
 #   at_row_fn K FN ARG CMD...: at_row, SH the script's shell function FN called
@@ -130,11 +131,27 @@ wait_cpu() {
     return 1
 }
 
+# sanitizer_runtime: the AddressSanitizer runtime the program GW is linked
+# against (ldd's path), or nothing: a preloaded shim in front of it is refused
+# ("ASan runtime does not come first in initial library list"), so at_row
+# preloads it first, the shim after it
+sanitizer_runtime() {
+    ldd "$GW" 2>/dev/null | awk '$1 ~ /^libasan\.so/ && $3 ~ /^\// {print $3; exit}'
+}
+
+# preload_list SHIM...: the LD_PRELOAD value that puts SHIMs in front of the
+# program GW: the sanitizer's runtime first in a sanitizer build
+preload_list() {
+    local rt
+    rt=$(sanitizer_runtime)
+    echo "${rt:+$rt }$*"
+}
+
 at_row() {
     local k=$1 sh=$2 shim
     shift 2
     shim=$(shim_path "" move) || return 77
-    GW_MOVE_AT=$k GW_MOVE_RUN="unset LD_PRELOAD GW_MOVE_AT GW_MOVE_RUN; $sh" LD_PRELOAD=$shim "$@"
+    GW_MOVE_AT=$k GW_MOVE_RUN="unset LD_PRELOAD GW_MOVE_AT GW_MOVE_RUN; $sh" LD_PRELOAD="$(preload_list "$shim")" "$@"
 }
 
 at_row_fn() {

@@ -244,6 +244,38 @@ int main(void)
     dp.min_bins = 30.5;
     gw_test_true(ok30 && gw_chain_disp_params_validate(&dp, &err) == GW_EINVAL && strstr(err.msg, "min-bins"),
                  "dispersion: min-bins 30 accepted at 64 samples, 30.5 refused naming min-bins");
+    /* min-bins is a count the ABI holds as a double (a GW_PARAM_COUNT row):
+     * 1.5 bins ran as a ridge from 2 bins up; now refused by the model, by
+     * gw_param_set, gw_param_set_double and gw_param_check, and "30.0" (as
+     * Python's 30.0 gives it) taken as 30; its range printed as integers */
+    dp.min_bins = 1.5;
+    const int model_refused = gw_chain_disp_params_validate(&dp, &err) == GW_EINVAL &&
+                              strstr(err.msg, "min-bins: 1.5 is not a whole number") != NULL;
+    dp.min_bins = 2;
+    gw_test_true(model_refused && gw_chain_disp_params_validate(&dp, &err) == GW_OK,
+                 "dispersion model: min-bins 1.5 refused as not a whole number, 2 accepted");
+    const gw_param *dt = gw_chain_dispersion_setup_params(), *mb = gw_param_find(dt, "min-bins");
+    gw_chain_dispersion_setup ds;
+    gw_chain_dispersion_setup_init(&ds);
+    gw_test_true(mb && mb->type == GW_PARAM_COUNT && strcmp(gw_param_type_name(mb->type), "count") == 0,
+                 "dispersion setup: min-bins is a count row");
+    gw_err e1 = {{0}}, e2 = {{0}}, e3 = {{0}}, e4 = {{0}};
+    const int set_15 = gw_param_set(dt, &ds, "min-bins", "1.5", &e1);
+    const int setd_15 = gw_param_set_double(dt, &ds, "min-bins", 30.5, &e2);
+    const int set_30 = gw_param_set(dt, &ds, "min-bins", "30.0", &e3);
+    gw_test_true(set_15 == GW_EINVAL && strcmp(e1.msg, "min-bins: '1.5' is not a whole number (give an integer in "
+                                                       "[1, 8388606])") == 0 &&
+                     setd_15 == GW_EINVAL && strstr(e2.msg, "min-bins: 30.5 is not a whole number") == e2.msg &&
+                     set_30 == GW_OK && ds.min_bins == 30,
+                 "dispersion setup: min-bins '1.5' and 30.5 refused naming min-bins, '30.0' taken as 30");
+    const int set_big = gw_param_set(dt, &ds, "min-bins", "8388607", &e4);
+    gw_test_true(set_big == GW_EINVAL && strcmp(e4.msg, "min-bins: 8388607 is outside [1, 8388606]") == 0, e4.msg);
+    ds.min_bins = 2.5; /* written directly, as a C caller may */
+    gw_test_true(gw_param_check(dt, &ds, &err) == GW_EINVAL && strstr(err.msg, "min-bins: 2.5 is not a whole number"),
+                 "dispersion setup: min_bins 2.5 written into the struct refused by gw_param_check");
+    ds.min_bins = 8;
+    gw_test_true(gw_param_check(dt, &ds, &err) == GW_OK, "dispersion setup: min_bins 8 written into the struct passes");
+    gw_chain_dispersion_setup_clear(&ds);
 
     cJSON *js = gw_param_json(t, &s);
     int keys = 0;

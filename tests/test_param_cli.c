@@ -8,7 +8,8 @@
  * For each row, values at and around its range: each closed end, the number
  * just outside each end (an open end itself; a closed end moved by 1e-9 of its
  * size, or of 1; an integer end by 1), the middle, nan, inf, junk, an empty
- * value, a fractional value for an integer row. Asserted: the parser's verdict
+ * value, a fractional value for an integer or count row (and a count's
+ * whole minimum written as a real, "1.0"). Asserted: the parser's verdict
  * equals gw_param_set's; an accepted value is stored bit-equal in both; a
  * refusal names "CMD --NAME" on the command line and "NAME" in the library,
  * with the same reason after it. Choice rows: every choice accepted, a
@@ -49,7 +50,7 @@ static void one(const gw_study *s, const gw_param *p, const char *value)
     gw_test_true(rc_cli == rc_lib, what);
     if (rc_cli == GW_OK && rc_lib == GW_OK) {
         const char *f = (const char *)obj + p->offset;
-        if (p->type == GW_PARAM_DOUBLE)
+        if (p->type == GW_PARAM_DOUBLE || p->type == GW_PARAM_COUNT)
             gw_test_true(memcmp(f, &dest.d, sizeof(double)) == 0, what);
         else if (p->type == GW_PARAM_LONG)
             gw_test_true(*(const long *)f == dest.l, what);
@@ -71,7 +72,7 @@ static void one(const gw_study *s, const gw_param *p, const char *value)
 /* the number just outside end (dir -1: below the minimum, +1: above the maximum) */
 static int outside(const gw_param *p, double end, int open, int dir, char *buf, size_t n)
 {
-    int integer = p->type == GW_PARAM_LONG;
+    int integer = p->type == GW_PARAM_LONG || p->type == GW_PARAM_COUNT;
     if (!isfinite(end) || (integer && fabs(end) >= 9e18))
         return 0;
     double v = integer ? (open ? end : (dir < 0 ? ceil(end) - 1 : floor(end) + 1))
@@ -88,16 +89,17 @@ int main(void)
         for (int k = 0; t[k].name; k++) {
             const gw_param *p = &t[k];
             char b[64];
-            if (p->type == GW_PARAM_DOUBLE || p->type == GW_PARAM_LONG) {
+            if (p->type == GW_PARAM_DOUBLE || p->type == GW_PARAM_LONG || p->type == GW_PARAM_COUNT) {
+                const int real = p->type != GW_PARAM_LONG; /* a count is held as a double */
                 /* the option's default is the table's (gw_param_init) */
                 void *obj = calloc(1, s->params_size);
                 s->init(obj);
                 double dd;
                 long dl;
                 gw_opt o;
-                gw_cli_opt_param(p, p->type == GW_PARAM_DOUBLE ? (void *)&dd : (void *)&dl, &o, NULL);
+                gw_cli_opt_param(p, real ? (void *)&dd : (void *)&dl, &o, NULL);
                 const char *f = (const char *)obj + p->offset;
-                gw_test_true(p->type == GW_PARAM_DOUBLE ? memcmp(f, &dd, sizeof dd) == 0 || (isnan(dd) && isnan(*(const double *)f))
+                gw_test_true(real ? memcmp(f, &dd, sizeof dd) == 0 || (isnan(dd) && isnan(*(const double *)f))
                                                         : *(const long *)f == dl,
                              p->name);
                 gw_param_clear(t, obj);
@@ -110,19 +112,23 @@ int main(void)
                 if (outside(p, p->max, p->open_max, +1, b, sizeof b))
                     one(s, p, b);
                 if (isfinite(p->min) && !p->open_min) {
-                    snprintf(b, sizeof b, p->type == GW_PARAM_LONG ? "%.0f" : "%.17g", p->min);
+                    snprintf(b, sizeof b, p->type != GW_PARAM_DOUBLE ? "%.0f" : "%.17g", p->min);
                     one(s, p, b);
                 }
                 if (isfinite(p->max) && !p->open_max && fabs(p->max) < 9e18) {
-                    snprintf(b, sizeof b, p->type == GW_PARAM_LONG ? "%.0f" : "%.17g", p->max);
+                    snprintf(b, sizeof b, p->type != GW_PARAM_DOUBLE ? "%.0f" : "%.17g", p->max);
                     one(s, p, b);
                 }
                 if (isfinite(p->min) && isfinite(p->max)) {
                     snprintf(b, sizeof b, "%.17g", 0.5 * (p->min + p->max));
                     one(s, p, b);
                 }
-                if (p->type == GW_PARAM_LONG)
+                if (p->type == GW_PARAM_LONG || p->type == GW_PARAM_COUNT)
                     one(s, p, "1.5");
+                if (p->type == GW_PARAM_COUNT && isfinite(p->min)) { /* a whole number written as a real */
+                    snprintf(b, sizeof b, "%.1f", ceil(p->min));
+                    one(s, p, b);
+                }
             } else if (p->type == GW_PARAM_CHOICE) {
                 char list[512];
                 snprintf(list, sizeof list, "%s", p->choices);

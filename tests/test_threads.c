@@ -86,7 +86,8 @@ static uint64_t digest_out(const gw_study *st, const void *out)
             continue;
         h = mix(h, p->name, strlen(p->name));
         switch (p->type) {
-        case GW_PARAM_DOUBLE: h = mix(h, f, sizeof(double)); break;
+        case GW_PARAM_DOUBLE:
+        case GW_PARAM_COUNT: h = mix(h, f, sizeof(double)); break;
         case GW_PARAM_INT:
         case GW_PARAM_FLAG:
         case GW_PARAM_CHOICE: h = mix(h, f, sizeof(int)); break;

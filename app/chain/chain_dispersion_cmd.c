@@ -49,6 +49,10 @@ enum { DISP_NOPTS = 21 };
 #define DOPT_D(nm, dst, mv, hl, lo_, hi_, open_)                                           \
     (gw_opt) { .name = nm, .kind = GW_OPT_DOUBLE, .dest = dst, .metavar = mv, .help = hl, \
                .lo = lo_, .hi = hi_, .open_lo = open_ }
+/* a count held as a double (the library's min_bins): whole numbers only */
+#define DOPT_C(nm, dst, mv, hl, lo_, hi_)                                                  \
+    (gw_opt) { .name = nm, .kind = GW_OPT_COUNT, .dest = dst, .metavar = mv, .help = hl, \
+               .lo = lo_, .hi = hi_ }
 #define DOPT_S(nm, dst, mv, hl) \
     (gw_opt) { .name = nm, .kind = GW_OPT_STRING, .dest = dst, .metavar = mv, .help = hl }
 
@@ -78,7 +82,8 @@ static void disp_options(disp_cli *c, gw_opt *o)
     o[i++] = DOPT_D("amp", &c->amp, "A", "rms overlap perturbation / d0 of the initial velocities, in [1e-12, 0.1] "
                     "(smaller nears the rounding of d0) [1e-3]", GW_CHAIN_DISP_AMP_MIN, 0.1, 0);
     o[i++] = DOPT_L("seed", &c->seed, "S", "seed of the random mode phases of the initial velocities [1]", 0, 9.0e18);
-    o[i++] = DOPT_D("min-bins", &c->min_bins, "B", "ridge resolved from B frequency bins up, B <= T/2 - 2 [8]", 1, GW_CHAIN_DISP_MIN_BINS_MAX, 0);
+    o[i++] = DOPT_C("min-bins", &c->min_bins, "B", "ridge resolved from B frequency bins up, B <= T/2 - 2 [8]", 1,
+                    GW_CHAIN_DISP_MIN_BINS_MAX);
     o[i++] = DOPT_S("solver", &c->solver, "NAME", "rk4, cvode or arkode [rk4; column-n: cvode]");
     o[i++] = DOPT_S("method", &c->method, "NAME", "cvode: adams|bdf; arkode: erk|dirk (bdf, dirk: fixed ends) [adams / erk; column-n: bdf / erk]");
     o[i++] = DOPT_D("rtol", &c->rtol, "R", "relative tolerance, cvode/arkode [1e-10]", GW_TOL_MIN, GW_TOL_MAX, 0);

@@ -54,12 +54,13 @@ static gw_opt opt_row(const char *name, gw_opt_kind kind, void *dest)
 {
     const gw_param *p = gw_param_find(gw_chain_drop_setup_params(), name);
     gw_opt o = {.name = p->name, .kind = kind, .dest = dest, .metavar = p->metavar, .help = p->help};
-    if (kind == GW_OPT_DOUBLE || kind == GW_OPT_LONG) {
+    if (kind == GW_OPT_DOUBLE || kind == GW_OPT_LONG || kind == GW_OPT_COUNT) {
         o.lo = p->min;
         o.hi = p->max;
         o.open_lo = p->open_min;
         o.open_hi = p->open_max;
-        if ((kind == GW_OPT_DOUBLE && p->type == GW_PARAM_DOUBLE) || (kind == GW_OPT_LONG && p->type == GW_PARAM_LONG))
+        if ((kind == GW_OPT_DOUBLE && p->type == GW_PARAM_DOUBLE) || (kind == GW_OPT_LONG && p->type == GW_PARAM_LONG) ||
+            (kind == GW_OPT_COUNT && p->type == GW_PARAM_COUNT))
             o.param = p;
     }
     return o;

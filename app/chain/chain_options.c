@@ -94,8 +94,8 @@ void chain_cli_options(chain_cli *c, gw_opt *o)
         *x = (gw_opt){.name = p->name, .dest = dest, .metavar = p->metavar, .help = p->help,
                       .lo = p->min, .hi = p->max, .open_lo = p->open_min,
                       .open_hi = p->open_max};
-        if (p->type == GW_PARAM_DOUBLE) {
-            x->kind = GW_OPT_DOUBLE;
+        if (p->type == GW_PARAM_DOUBLE || p->type == GW_PARAM_COUNT) {
+            x->kind = p->type == GW_PARAM_COUNT ? GW_OPT_COUNT : GW_OPT_DOUBLE;
             *(double *)dest = p->def ? strtod(p->def, NULL) : 0;
         } else if (p->type == GW_PARAM_LONG) {
             x->kind = GW_OPT_LONG;
@@ -167,7 +167,7 @@ static int cli_setup(const chain_cli *c, const gw_opt *opts, gw_chain_setup *s, 
         const void *src = (const char *)c + cli_dest[i].off;
         void *dst = (char *)s + p->offset;
         int rc = GW_OK;
-        if (p->type == GW_PARAM_DOUBLE) {
+        if (p->type == GW_PARAM_DOUBLE || p->type == GW_PARAM_COUNT) {
             if (o->seen)
                 *(double *)dst = *(const double *)src;
         } else if (p->type == GW_PARAM_LONG) {

@@ -294,7 +294,13 @@ int gw_sweep_case_inputs_check(const gw_sweep_config *cfg, long k, gw_err *err);
  * killed process loses no written row; a power
  * cut at most the rows of the last GW_SWEEP_SYNC_MS, which a rerun runs again.
  * A row is one line ending in its newline (gw_sweep_format_row's): GW_EINVAL,
- * nothing written, for another (no newline, a newline inside, empty). */
+ * nothing written, for another (no newline, a newline inside, empty).
+ * The journal's file is watched (inotify, where its limits allow): a write,
+ * open, cut or attribute change by anyone between gw_sweep_journal_held's
+ * check and this row's write makes the next gw_sweep_journal_held compare
+ * the whole file (the times after this write are not the sweep's alone); a
+ * sweep calls gw_sweep_journal_held right after each row too, so such a file
+ * is kept at that row. */
 #define GW_SWEEP_SYNC_MS 250.0
 int gw_sweep_journal_append(int fd, const char *row, double *synced_ms, gw_err *err);
 /* fsync the journal now (the sweep's end, or a stop): *synced_ms updated. */

@@ -16,6 +16,7 @@
 #include <pthread.h>
 #include <stdio.h>
 #include <sys/file.h>
+#include <sys/inotify.h>
 #include <sys/stat.h>
 #include <fcntl.h>
 #include <stdlib.h>
@@ -267,9 +268,27 @@ int gw_sweep_dir_held(int dirfd, const char *dir, gw_err *err)
  * (gw_sweep_size_check counts it); the check per row is one fstat and one
  * read of JOURNAL_TAIL bytes. Kept by descriptor (the callers' API passes
  * the descriptor alone), with the file's device and inode: a descriptor
- * closed and reused for another file is not taken for the journal. */
+ * closed and reused for another file is not taken for the journal.
+ *
+ * The window between that check and the row's write: a file written into
+ * there (an editor's save, `: >`, `echo >>`) had the row appended to it, and
+ * the times the sweep recorded after its own write covered the other write
+ * too; a rewrite of the same length outside the last JOURNAL_TAIL bytes was
+ * then found only by the table's check at the end ("lost rows"), and any
+ * other at the next row, the row of this one in the file. The file's events
+ * are watched (inotify, on the descriptor's file wherever its name went):
+ * the check empties their queue before it reads the file, and after the
+ * row's write the queue must hold that write's one IN_MODIFY and nothing
+ * else; anything more (another's open, write, close, truncation, attribute
+ * change) makes the sweep's recorded times unknown, so the check that
+ * follows (gw_sweep_journal_held, which the sweep calls right after each
+ * row too) compares the whole file. A writer that opened the file before
+ * the check and writes inside the window without closing it adds only an
+ * IN_MODIFY, merged with the sweep's by the kernel: found by size and tail
+ * only. Without inotify (its limits reached), the check is as before. */
 #define JOURNAL_TAIL 4096
 #define NSHADOWS 16
+#define JOURNAL_EVENTS (IN_MODIFY | IN_ATTRIB | IN_OPEN | IN_CLOSE_WRITE | IN_MOVE_SELF | IN_DELETE_SELF)
 typedef struct jshadow {
     int used, fd;
     dev_t dev;
@@ -278,14 +297,62 @@ typedef struct jshadow {
     size_t len, cap;
     struct timespec mtim, ctim; /* the file's after the sweep's last write (times_ok) */
     int times_ok;
+    int ifd; /* inotify descriptor watching the journal's file; -1: none */
 } jshadow;
 static jshadow shadows[NSHADOWS];
 static pthread_mutex_t shadows_lock = PTHREAD_MUTEX_INITIALIZER;
 
 static void shadow_free(jshadow *h)
 {
+    if (h->used && h->ifd >= 0)
+        close(h->ifd);
     free(h->text);
     memset(h, 0, sizeof *h);
+    h->ifd = -1;
+}
+
+/* the journal's file (fd's, wherever its name went) watched for events, on
+ * a new queue: h->ifd, or -1 when inotify cannot (its limits) */
+static void shadow_watch(jshadow *h, int fd)
+{
+    if (h->ifd >= 0)
+        close(h->ifd);
+    char link[64];
+    snprintf(link, sizeof link, "/proc/self/fd/%d", fd);
+    h->ifd = inotify_init1(IN_NONBLOCK | IN_CLOEXEC);
+    if (h->ifd >= 0 && inotify_add_watch(h->ifd, link, JOURNAL_EVENTS) < 0) {
+        close(h->ifd);
+        h->ifd = -1;
+    }
+}
+
+/* The events queued on h's watch, read and dropped: -1 without a watch (or a
+ * read that failed), else the number of events and in *modify_only 1 when
+ * they are exactly one IN_MODIFY (the sweep's own row) */
+static int shadow_events(jshadow *h, int *modify_only)
+{
+    *modify_only = 0;
+    if (h->ifd < 0)
+        return -1;
+    int n = 0, mods = 0;
+    _Alignas(struct inotify_event) char buf[4096];
+    for (;;) {
+        const ssize_t r = read(h->ifd, buf, sizeof buf);
+        if (r < 0 && errno == EINTR)
+            continue;
+        if (r < 0 && errno == EAGAIN)
+            break;
+        if (r <= 0)
+            return -1;
+        for (ssize_t at = 0; at + (ssize_t)sizeof(struct inotify_event) <= r;) {
+            const struct inotify_event *e = (const struct inotify_event *)(buf + at);
+            n++;
+            mods += (e->mask & ~(uint32_t)IN_ISDIR) == IN_MODIFY;
+            at += (ssize_t)sizeof *e + e->len;
+        }
+    }
+    *modify_only = n == 1 && mods == 1;
+    return n;
 }
 
 /* the file's times as the sweep left them, when its size is len (else
@@ -338,7 +405,9 @@ static void shadow_set(int fd, char *text, size_t len)
         if (!shadows[i].used)
             h = &shadows[i];
     if (h) {
-        *h = (jshadow){.used = 1, .fd = fd, .dev = st.st_dev, .ino = st.st_ino, .text = text, .len = len, .cap = len};
+        *h = (jshadow){.used = 1, .fd = fd, .dev = st.st_dev, .ino = st.st_ino, .text = text, .len = len, .cap = len,
+                       .ifd = -1};
+        shadow_watch(h, fd);
         shadow_times(h, fd);
     } else {
         free(text);
@@ -356,6 +425,7 @@ static void shadow_move(jshadow *h, int nfd)
             shadow_free(&shadows[i]);
     if (fstat(nfd, &st) == 0) {
         h->fd = nfd, h->dev = st.st_dev, h->ino = st.st_ino;
+        shadow_watch(h, nfd);
         shadow_times(h, nfd);
     } else {
         shadow_free(h);
@@ -394,6 +464,11 @@ static int ts_same(struct timespec a, struct timespec b)
 static int shadow_differs(jshadow *h, int fd, long long *size)
 {
     struct stat st;
+    int one;
+    /* the events so far, dropped: what they did is what is read below; one
+     * after it is the row's write's to tell (gw_sweep_journal_append) */
+    if (shadow_events(h, &one) < 0 && h->ifd >= 0)
+        h->times_ok = 0; /* the queue unreadable: compared whole */
     if (fstat(fd, &st) != 0)
         return -1;
     *size = (long long)st.st_size;
@@ -1171,7 +1246,17 @@ int gw_sweep_journal_append(int fd, const char *row, double *synced_ms, gw_err *
     if (h) {
         memcpy(h->text + h->len, row, n);
         h->len += n;
-        shadow_times(h, fd); /* another's write between the check and this one: compared whole next */
+        /* the file's events since the check before this row (shadow_differs
+         * emptied the queue): this write's one IN_MODIFY and nothing else,
+         * or another wrote, cut or opened it meanwhile, and the times now
+         * are not the sweep's alone: the next check (gw_sweep_journal_held)
+         * compares the whole file */
+        int one;
+        const int nev = shadow_events(h, &one);
+        if (nev >= 0 && !one)
+            h->times_ok = 0;
+        else
+            shadow_times(h, fd); /* without a watch: a same-length write meanwhile looks like this one's */
     }
     /* a time of the last fsync that is none (NaN: never synced again) or
      * after now (never GW_SWEEP_SYNC_MS old) is taken as long past */

@@ -19,7 +19,7 @@ from ._errors import (GW_ECANCELED, GW_EENERGY, GW_EFORMAT, GW_EINVAL, GW_EIO, G
                       GranwaveRunError, GranwaveUnsupported, GranwaveValueError, GranwaveWarning, _raise,
                       keyword_text)
 from ._result import CLOCK_KEYS, Result, read_result  # noqa: F401
-from ._values import (_TYPE_NAMES, CHOICE, DARRAY, DOUBLE, FARRAY, FLAG, IARRAY, INT, LIST,  # noqa: F401
+from ._values import (_TYPE_NAMES, CHOICE, COUNT, DARRAY, DOUBLE, FARRAY, FLAG, IARRAY, INT, LIST,  # noqa: F401
                       LONG, RANGE, TEXT, _flag, _items, _line, _show, _text, _texts, list_most, read_table)
 
 

@@ -17,10 +17,11 @@ import numpy as np
 from ._errors import GW_EINVAL, GranwaveValueError
 
 
-# gw_param_type (common/gw_param.h)
-DOUBLE, INT, LONG, FLAG, CHOICE, TEXT, LIST, RANGE, DARRAY, IARRAY, FARRAY = range(11)
+# gw_param_type (common/gw_param.h); COUNT: a whole number the library holds as a
+# double (dispersion's min_bins): 30 and 30.0 are taken, 1.5 is refused by the library
+DOUBLE, INT, LONG, FLAG, CHOICE, TEXT, LIST, RANGE, DARRAY, IARRAY, FARRAY, COUNT = range(12)
 _TYPE_NAMES = ["float", "int", "int", "bool", "choice", "str", "list of float", "range A:B",
-               "array", "int array", "bool array"]
+               "array", "int array", "bool array", "count"]
 
 
 class Param:
@@ -299,7 +300,7 @@ def list_most(p, rows, kwargs):
     r = rows.get(p.rows)
     if r is None:
         return _INT_MAX, ""
-    if r.type in (INT, LONG):
+    if r.type in (INT, LONG, COUNT):
         given = kwargs.get(r.keyword)
         v = _integer(given) if given is not None else int(r.default) if (r.default or "").isdigit() else None
         if v is not None and r.min <= v <= r.max:

@@ -39,12 +39,12 @@ static void fail_if(int bad)
 static int is_number_row(const gw_param *p)
 {
     return p->type == GW_PARAM_DOUBLE || p->type == GW_PARAM_INT || p->type == GW_PARAM_LONG ||
-           p->type == GW_PARAM_FLAG || p->type == GW_PARAM_CHOICE;
+           p->type == GW_PARAM_FLAG || p->type == GW_PARAM_CHOICE || p->type == GW_PARAM_COUNT;
 }
 
 static size_t field_size(const gw_param *p)
 {
-    return p->type == GW_PARAM_DOUBLE ? sizeof(double) : p->type == GW_PARAM_LONG ? sizeof(long) : sizeof(int);
+    return p->type == GW_PARAM_DOUBLE || p->type == GW_PARAM_COUNT ? sizeof(double) : p->type == GW_PARAM_LONG ? sizeof(long) : sizeof(int);
 }
 
 /* the message names the row, or says the name is unknown */

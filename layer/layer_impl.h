@@ -873,6 +873,10 @@ double layer_contact_vt(const gw_layer *L, const layer_contact *c, const double 
  * (all contacts with idx NULL) in state y, as the right-hand side applies it
  * (the fast mode's F_t: the state clamped to the cap; the exact mode's: its
  * held branch), N. */
+/* The vertical force (N, up positive) the left and right walls exert on the
+ * bodies in state y: their contacts' friction (and damping) along the walls.
+ * With the floor's load it carries a pile at rest in a narrow box (Janssen). */
+double layer_side_walls_fy(const gw_layer *L, const double *y);
 double layer_body_contact_fy(const gw_layer *L, const double *y, int q, const int *idx, int n_idx);
 
 /* Fill sys (rhs, roots, dim, scale, drift) for the current list. */

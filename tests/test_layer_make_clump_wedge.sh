@@ -42,7 +42,7 @@ msg() { # msg W: the refusal's line as a pattern
 # --- 1 refused before any work, nothing written ---
 refused "layer-make --clumps --width-rm 4 --n 20 (the longest clump 5.11 R_m)" "$(msg 4)" \
     layer-make --clumps --width-rm 4 --n 20 --out "$tmp/o"
-refused "layer-make --clumps --width-rm 5.38 --n 20 (below 5.381)" "$(msg 5\\.38)" \
+refused "layer-make --clumps --width-rm 5.38 --n 20 (below 5.382)" "$(msg 5\\.38)" \
     layer-make --clumps --width-rm 5.38 --n 20 --out "$tmp/o"
 py_checks 2 <<'PYEOF'
 import os

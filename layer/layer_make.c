@@ -702,7 +702,10 @@ static int settled_readable(gw_layer_sample *out, gw_err *err)
  * weight), while 6 at n 60 and 80 (16 and 20 times), 5 at n 100 (35 times)
  * and 8 at n 300 ended unsettled, the walls' friction holding 56, 63, 75 and
  * 58 % of the weight (a warning names the floor's load). The bound keeps
- * below the 20 where a wedged clump came within 0.1 % of the reader's 2 %. */
+ * below the 20 where a wedged clump came within 0.1 % of the reader's 2 %.
+ * (A box of 5 R_m or less is now refused first, check_clump_flat; of the piles
+ * within the bound that ended unsettled, those whose side walls hold what the
+ * floor does not are now settled, held_by_walls.) */
 #define CLUMP_ASPECT_MAX 16
 
 /* The clumps of m in a box of width w m (tops: their rows' tops, as

@@ -360,7 +360,10 @@ enum { LAYER_DEM_W = 8 };
  * (Janssen): 0.88 in a 12 R_m box, 0.84 for 300 discs in an 8 R_m box
  * still settling at 6 s, 0.54 for 100 discs settled in a 4 R_m column 114 R_m
  * tall; only taller and narrower columns fall below half, and layer-make then
- * warns that the pile did not settle, naming the floor's load. Half the
+ * calls the pile settled when the floor and the side walls together carry half
+ * its weight or more (held_by_walls, layer_make.c; a narrow clump pile rests
+ * with 0.2 on its floor), else warns that it did not settle, naming the
+ * floor's load. Half the
  * weight: every measured pile at rest (0.54 to 1.006) passes, the piles in
  * the air above (0 to 0.47) do not. An impact on a pile whose settled line
  * says converged 1 and whose floor carries less warns (layer_settled.c). */
@@ -882,6 +885,10 @@ double layer_contact_vt(const gw_layer *L, const layer_contact *c, const double 
  * (all contacts with idx NULL) in state y, as the right-hand side applies it
  * (the fast mode's F_t: the state clamped to the cap; the exact mode's: its
  * held branch), N. */
+/* The vertical force (N, up positive) the left and right walls exert on the
+ * bodies in state y: their contacts' friction (and damping) along the walls.
+ * With the floor's load it carries a pile at rest in a narrow box (Janssen). */
+double layer_side_walls_fy(const gw_layer *L, const double *y);
 double layer_body_contact_fy(const gw_layer *L, const double *y, int q, const int *idx, int n_idx);
 
 /* Fill sys (rhs, roots, dim, scale, drift) for the current list. */

@@ -75,6 +75,48 @@ gw_layer_make_params gw_layer_make_params_default(void)
     return m;
 }
 
+/* A box in which the longest clump cannot lie flat: clumps_initial lays a
+ * clump on its side when its bounding box fits between the walls with a gap of
+ * 0.1 R_max on each side, and stands it on end otherwise; clumps standing on
+ * end in a box narrower than they are long topple, jam across it and lean on
+ * both walls. `layer-make --clumps --width-rm 4 --n 20` (the longest clump
+ * 5.11 R_m at the defaults) ended unsettled at t-max 6 s for seeds 1 and 2,
+ * the floor carrying 6.57 and 0.054 of the weight (wedged clumps pressing it,
+ * or held off it by the walls); in boxes of 5.2, 5.6, 6 and 7 R_m the same 20
+ * clumps settled for seeds 1 to 4 (floors 0.75 to 1.14 of the weight). The
+ * longest clump a draw can give is the one of R_eq = R_max at the largest
+ * aspect ratio (its length 2 A r grows with A: layer_clump_shape), so the
+ * bound does not depend on the seed or n: the box must be at least that long
+ * plus the two gaps, the width at which the initial lay-out puts every clump
+ * flat. The width named is rounded up to three digits. */
+#define CLUMP_FLAT_GAPS 0.2 /* R_max: the lay-out's gap of 0.1 R_max on each side */
+
+static int check_clump_flat(const gw_layer_make_params *m, double rmax, gw_err *err)
+{
+    double ox[LAYER_CLUMP_MAX], oy[LAYER_CLUMP_MAX], r[LAYER_CLUMP_MAX];
+    const int k = layer_clump_shape(rmax, m->aspect_max, 0, ox, oy, r);
+    double x0 = INFINITY, x1 = -INFINITY;
+    for (int q = 0; q < k; q++)
+        x0 = fmin(x0, ox[q] - r[q]), x1 = fmax(x1, ox[q] + r[q]);
+    const double len = x1 - x0, need = len + CLUMP_FLAT_GAPS * rmax;
+    if (m->width_rm * m->rm >= need)
+        return GW_OK;
+    /* the smallest width of three digits at or above need / R_m, read back */
+    const double v = need / m->rm, p = pow(10, floor(log10(v)) - 2);
+    char wb[40], wt[40], as[40];
+    double c = ceil(v / p) * p;
+    for (int i = 0; i < 4; i++, c += p) {
+        gw_snprintf(wb, sizeof wb, "%.3g", c);
+        if (gw_strtod(wb, NULL) * m->rm >= need)
+            break;
+    }
+    return gw_err_set(err, GW_EINVAL, "width-rm: a box of %s R_m is narrower than the longest clump lies flat in "
+                      "(%.3g R_m long at R_eq = R_max and aspect ratio %s, with a gap of 0.1 R_max each side: "
+                      "%.4g R_m): the clumps stand on end, topple and wedge across the box; give --width-rm %s or "
+                      "more, or a smaller --aspect-max", gw_num_text(wt, sizeof wt, m->width_rm), len / m->rm,
+                      gw_num_text(as, sizeof as, m->aspect_max), need / m->rm, wb);
+}
+
 static int check_make(const gw_layer_make_params *m, gw_err *err)
 {
     int rc;
@@ -97,7 +139,7 @@ static int check_make(const gw_layer_make_params *m, gw_err *err)
     double rmax = m->rm * 2 * cbrt(m->volume_ratio) / (1 + cbrt(m->volume_ratio));
     if (m->width_rm * m->rm < 2.2 * rmax)
         return gw_err_set(err, GW_EINVAL, "width-rm: %g R_m is narrower than one particle", m->width_rm);
-    return GW_OK;
+    return m->clumps ? check_clump_flat(m, rmax, err) : GW_OK;
 }
 
 /* The step against the pile's shortest contact: two of the smallest discs
@@ -345,6 +387,22 @@ static int keep_springs(const gw_layer *L, double width, int n, const gw_layer_b
     return rc == GW_OK ? GW_OK : gw_err_set(err, rc, "layer-make: out of memory");
 }
 
+/* A pile whose floor carries f of its weight w (N) below LAYER_FLOOR_LOAD_MIN w
+ * (layer_impl.h) is at rest when the side walls' friction holds the rest: the
+ * floor and the side walls together carry between LAYER_FLOOR_LOAD_MIN and
+ * LAYER_FLOOR_LOAD_MAX times the weight (layer_side_walls_fy: their contact
+ * forces in L's state, upward). In the air or at the top of a bounce neither
+ * carries anything. Narrow clump piles within CLUMP_ASPECT_MAX ended unsettled
+ * at t-max 6 s, E_k 1e-4 to 1e-2 of the threshold, only for want of this:
+ * `layer-make --clumps --width-rm 6 --n 60` seeds 1 and 2, floors at 0.447 and
+ * 0.203 of the weight and the side walls holding 0.539 and 0.811 of it (0.985
+ * and 1.014 together). */
+static int held_by_walls(const gw_layer *L, double f, double w)
+{
+    const double s = f + layer_side_walls_fy(L, L->y);
+    return s >= LAYER_FLOOR_LOAD_MIN * w && !(s > LAYER_FLOOR_LOAD_MAX * w);
+}
+
 static int settle(const gw_layer_params *lp, const gw_layer_make_params *m, double t0, double t_max, int n,
                   gw_layer_body *b, double thr, double *t, double *ke, int *conv,
                   long *steps, long *rebuilds, make_springs *ks, gw_err *err)
@@ -399,7 +457,11 @@ static int settle(const gw_layer_params *lp, const gw_layer_make_params *m, doub
             take_positions(L, n, b);
             double f, w;
             layer_floor_load(lp, n, &b[0].y, &b[0].r, sizeof *b, &f, &w);
-            const int rests = !(f > LAYER_FLOOR_LOAD_MAX * w) && f >= LAYER_FLOOR_LOAD_MIN * w;
+            /* (a floor carrying less than LAYER_FLOOR_LOAD_MIN: the side
+             * walls' friction holding the rest, as in a narrow box, is a pile
+             * at rest too, the two carrying its weight: wall_hold) */
+            const int rests = !(f > LAYER_FLOOR_LOAD_MAX * w) &&
+                              (f >= LAYER_FLOOR_LOAD_MIN * w || held_by_walls(L, f, w));
             /* and the bodies in flight counted with the energy they will
              * land with: a disc at the top of a bounce has E_k near 0 too
              * (`--n 1` was next caught 3 mm above the floor, 26 J of fall
@@ -645,7 +707,10 @@ static int settled_readable(gw_layer_sample *out, gw_err *err)
  * weight), while 6 at n 60 and 80 (16 and 20 times), 5 at n 100 (35 times)
  * and 8 at n 300 ended unsettled, the walls' friction holding 56, 63, 75 and
  * 58 % of the weight (a warning names the floor's load). The bound keeps
- * below the 20 where a wedged clump came within 0.1 % of the reader's 2 %. */
+ * below the 20 where a wedged clump came within 0.1 % of the reader's 2 %.
+ * (A box of 5 R_m or less is now refused first, check_clump_flat; of the piles
+ * within the bound that ended unsettled, those whose side walls hold what the
+ * floor does not are now settled, held_by_walls.) */
 #define CLUMP_ASPECT_MAX 16
 
 /* 1 when the clumps of m start in rows within CLUMP_ASPECT_MAX times the

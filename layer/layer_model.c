@@ -176,6 +176,27 @@ double layer_body_contact_fy(const gw_layer *L, const double *y, int q, const in
     return fy;
 }
 
+double layer_side_walls_fy(const gw_layer *L, const double *y)
+{
+    const unsigned char *held;
+    const int ftm = layer_ft_modes(L, &held);
+    double fy = 0;
+    for (int k = 0; k < L->nc; k++) {
+        const layer_contact *c = &L->c[k];
+        if (c->b != LAYER_LEFT && c->b != LAYER_RIGHT)
+            continue;
+        double un, nn[2], und, vt, arma[2], armb[2], lev[2];
+        contact_kinematics(L, c, y, &un, nn, &und, &vt, arma, armb, lev);
+        const double su = un > 0 ? sqrt(un) : 0, fel = c->kn * un * su;
+        if (!(un > 0) || !(fel > 0))
+            continue;
+        const layer_cforce o = layer_contact_force(c, su, fel, und, vt, y[6 * L->nb + k], L->p.damping, L->tan_phi,
+                                                   L->cap_rate, held ? held[k] : ftm);
+        fy += -o.fn * nn[1] + o.ft * nn[0];
+    }
+    return fy;
+}
+
 double layer_contact_vt(const gw_layer *L, const layer_contact *c, const double *y, double *un)
 {
     double nn[2], und, vt, arma[2], armb[2], lev[2];

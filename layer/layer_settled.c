@@ -208,6 +208,30 @@ int gw_layer_impact_settled_check(const gw_layer_sample *smp, const gw_layer_par
  * 1 and whose settings line gives its material is judged (settled_converged,
  * settled.recorded): a hand-written sample or one built in memory is a
  * geometry, its discs at y = r carrying nothing. */
+/* The upward force (N) the side walls' friction exerts on the sample's pile
+ * under lp's material and the friction angle it settled with (deg) through the tangential springs it keeps against the left
+ * and right walls, as an impact loads them (layer_springs_load: F_t = K_t u_t,
+ * B.4 at R_p = r, clipped to tan(phi) F_n), along t = (-n_y, n_x): the disc
+ * gets F_t n_x upward. */
+static double wall_hold(const gw_layer_sample *smp, const gw_layer_params *lp, double friction_deg)
+{
+    const double tp = tan(friction_deg * M_PI / 180);
+    double up = 0;
+    for (int k = 0; smp->springs && k < smp->n_springs; k++) {
+        const int a = smp->springs[k].a, wall = smp->springs[k].b;
+        if (a < 0 || a >= smp->n || (wall != GW_LAYER_SPRING_LEFT && wall != GW_LAYER_SPRING_RIGHT))
+            continue;
+        const double ra = smp->r[a];
+        const double un = wall == GW_LAYER_SPRING_LEFT ? ra - smp->x[a] : ra - (smp->width - smp->x[a]);
+        if (!(un > 0))
+            continue;
+        const double kn = gw_layer_kn(lp, ra), kt = gw_layer_kt_factor(lp, ra) * cbrt(kn) * sqrt(un);
+        const double cap = tp * kn * un * sqrt(un), ft = fmax(-cap, fmin(cap, kt * smp->springs[k].u));
+        up += wall == GW_LAYER_SPRING_LEFT ? -ft : ft;
+    }
+    return up;
+}
+
 static void floor_unsettled(const gw_layer_sample *smp, const gw_layer_params *lp, char *buf, size_t n)
 {
     if (!smp->settled.recorded || !smp->settled_converged)
@@ -216,7 +240,9 @@ static void floor_unsettled(const gw_layer_sample *smp, const gw_layer_params *l
     double f, w;
     layer_floor_load(&sp, smp->n, smp->y, smp->r, sizeof *smp->y, &f, &w);
     char ls[40];
-    if (w > 0 && f < LAYER_FLOOR_LOAD_MIN * w)
+    /* (a floor carrying less, the side walls' friction holding the rest: a pile
+     * at rest in a narrow box, as layer-make calls it settled) */
+    if (w > 0 && f < LAYER_FLOOR_LOAD_MIN * w && f + wall_hold(smp, &sp, smp->settled.friction_deg) < LAYER_FLOOR_LOAD_MIN * w)
         gw_snprintf(buf, n, "the sample did not settle: its floor carries %.3g of the pile's weight under the "
                     "material it settled with (at rest: about 1; below %s the pile was in the air or bouncing when "
                     "written, though its settled line says converged 1, as a layer-make before session 38 wrote "

@@ -11,10 +11,12 @@
 # wide before any work, exit 2, naming --n, --width-rm, the bound, an n and a
 # width that pass; nothing is written. Checks:
 #  1 the fault's commands are refused: exit 2, one line naming --n, the
-#    width, the bound 16, "lower --n to 115" / "41" and "--width-rm 19.1" /
+#    width, the bound 16, "lower --n to 115" / "61" and "--width-rm 19.1" /
 #    "13.4" with the range of widths checked to pass ("from 19.1 to 23.8",
 #    "13.4 to 16.7"), no --out file; the message said "--width-rm 19.2 or
-#    more", but the rows' top is not monotonic in the width;
+#    more", but the rows' top is not monotonic in the width (`--width-rm 6
+#    --n 300`, 77 times: a box of 5 R_m is now refused first, narrower than
+#    the longest clump lies flat in: test_layer_make_clump_wedge);
 #  2 an existing sample at --out is left as it was (byte for byte);
 #  3 Python's layer_make(clumps=True, width_rm=8, n=600) raises
 #    GranwaveValueError in its keywords (n, width_rm), nothing written;
@@ -44,8 +46,8 @@ msg() { # msg N W NFIT WFIT WHI: the refusal's line as a pattern
 # --- 1 the fault's commands refused before any work, nothing written ---
 refused "layer-make --clumps --width-rm 8 --n 600 (rows 86 times the width)" "$(msg 600 8 115 '19\.1' '23\.8')" \
     layer-make --clumps --width-rm 8 --n 600 --out "$tmp/o"
-refused "layer-make --clumps --width-rm 5 --n 300 (rows 108 times the width)" "$(msg 300 5 41 '13\.4' '16\.7')" \
-    layer-make --clumps --width-rm 5 --n 300 --out "$tmp/o"
+refused "layer-make --clumps --width-rm 6 --n 300 (rows 77 times the width)" "$(msg 300 6 61 '13\.4' '16\.7')" \
+    layer-make --clumps --width-rm 6 --n 300 --out "$tmp/o"
 
 # --- 2 an existing sample at --out left as it was ---
 make_sample keep.txt --n 10 --width-rm 8 --t-max 0.05
@@ -65,7 +67,7 @@ check(not os.path.exists("py.txt"), "layer_make(clumps=True, width_rm=8, n=600):
 PYEOF
 
 # --- 4 the n and the width the messages name pass; one clump more does not ---
-for args in "--n 115 --width-rm 8" "--n 600 --width-rm 19.1" "--n 41 --width-rm 5" "--n 300 --width-rm 13.4"; do
+for args in "--n 115 --width-rm 8" "--n 600 --width-rm 19.1" "--n 61 --width-rm 6" "--n 300 --width-rm 13.4"; do
     rm -f s4.txt
     # shellcheck disable=SC2086
     if timeout -s KILL 60 "$GW" layer-make --clumps $args --t-max 0.01 --quiet --out s4.txt >/dev/null 2>"$tmp/s4.err" &&

@@ -318,7 +318,7 @@ static void shadow_watch(jshadow *h, int fd)
     if (h->ifd >= 0)
         close(h->ifd);
     char link[64];
-    snprintf(link, sizeof link, "/proc/self/fd/%d", fd);
+    gw_snprintf(link, sizeof link, "/proc/self/fd/%d", fd);
     h->ifd = inotify_init1(IN_NONBLOCK | IN_CLOEXEC);
     if (h->ifd >= 0 && inotify_add_watch(h->ifd, link, JOURNAL_EVENTS) < 0) {
         close(h->ifd);

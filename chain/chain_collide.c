@@ -327,6 +327,8 @@ static void on_roots(run_state *st, double t, const double *y, const int *roots)
 /* What keeps the wall's side of the run from its end at state y: NULL when
  * nothing does (bead 1 off the wall, separating and beyond a sensor body's
  * reach, the reading no longer rising), else the reason, as the warnings say it. */
+static const char reading_rising[] = "bead 1 left the wall, the sensor's reading still rising";
+
 static const char *wall_pending(const run_state *st, const double *y, double dtol)
 {
     /* a run cut in bead 1's flight whose return is the caller's next impact
@@ -355,7 +357,7 @@ static const char *wall_pending(const run_state *st, const double *y, double dto
          * comes after bead 1 left (a 1000 kg sensor on 1e12 N/m ended at 20.7 N,
          * rising, of a peak near J omega = 40 N) */
         if (vs > 0)
-            return "bead 1 left the wall, the sensor's reading still rising";
+            return reading_rising;
     }
     return NULL;
 }
@@ -411,7 +413,8 @@ static int finished(const run_state *st, double t, const double *y, double dtol)
  * "the column's own contacts still closed or closing", or "bead 1 still at the
  * wall" with bead 1 12 mm beyond the sensor body's swing and the pair of beads
  * 5 and 6 closing at 0.5 mm/s (--n 10 --sensor-mass 0.03 --sensor-stiffness 1e4). */
-static void column_pending(const run_state *st, double t, const double *y, char *buf, size_t size)
+/* Returns the picked contact's meeting time (t when closed; NaN when none acts). */
+static double column_pending(const run_state *st, double t, const double *y, char *buf, size_t size)
 {
     const double vtol = resolved_speed(st);
     int count = 0, pick = 0, pick_closed = 0;
@@ -429,9 +432,10 @@ static void column_pending(const run_state *st, double t, const double *y, char 
             pick_meet = meet;
         }
     }
-    buf[0] = '\0';
-    if (!pick)
-        return;
+    if (buf)
+        buf[0] = '\0';
+    if (!pick || !buf)
+        return pick ? pick_meet : NAN;
     int len = pick_closed ? gw_snprintf(buf, size, "bead %d still against bead %d", pick, pick + 1)
               : isfinite(pick_meet) ? gw_snprintf(buf, size, "beads %d and %d closing, to meet at about t = %.4g s",
                                                   pick, pick + 1, pick_meet)
@@ -439,6 +443,7 @@ static void column_pending(const run_state *st, double t, const double *y, char 
     if (count > 1 && len > 0 && (size_t)len < size)
         gw_snprintf(buf + len, size - (size_t)len, ", and %d more of the column's contacts closed or closing",
                     count - 1);
+    return pick_meet;
 }
 
 /* A default run (no t_max given) that has not ended by its t_max, 20 expected
@@ -451,9 +456,20 @@ static void column_pending(const run_state *st, double t, const double *y, char 
  * --sensor-stiffness 1e4 at 0.093 s, ending at 1.36 s, 291 expected
  * lengths), as does a light bead between heavy ones on a rigid wall (--n 3
  * --radii 4e-3,1e-3,4e-3: cut at 2.5 ms, ends at 4.8 ms). 1 when it goes on. */
-static int extend_run(run_state *st, double t)
+static int extend_run(run_state *st, double t, const double *y)
 {
     if (!(st->t_default > 0) || !st->drive || !(t < st->t_bound))
+        return 0;
+    /* Nothing but beads in free flight that meet after the bound (their
+     * relative motion is uniform, gravity acting on all alike; not under a
+     * guide's friction), bead 1 off the wall and beyond a sensor body's swing
+     * (its reading may still rise): the run stops here, not at the bound
+     * (--n 20 --sensor-mass 0.1 --sensor-stiffness 1e3 ran on to 20.5 s, its
+     * beads 17 and 18 to meet at 758 s) */
+    const gw_chain_params *p = gw_chain_get_params(st->c);
+    const char *wp = wall_pending(st, y, st->dtol);
+    if ((!wp || wp == reading_rising) && !(p->guide.coulomb > 0 || p->guide.viscous > 0) &&
+        column_pending(st, t, y, NULL, 0) > st->t_bound)
         return 0;
     st->t_max = fmin(st->t_bound, t + st->t_default);
     st->drive->t_end = st->t_max;
@@ -645,7 +661,7 @@ static int collide_after(void *ctx, double t, const double *y, gw_err *err)
                                                 "overdamped contact)", ", or raise the impact speed", err);
             return gw_err_set(err, GW_ELIMIT, "chain: bead 1 still on the wall at t_max = %.6g s", st->t_max);
         }
-        return extend_run(st, t) ? GW_DRIVE_ON : GW_DRIVE_STOP;
+        return extend_run(st, t, y) ? GW_DRIVE_ON : GW_DRIVE_STOP;
     }
     return GW_DRIVE_ON;
 }

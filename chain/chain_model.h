@@ -171,9 +171,9 @@ extern const char chain_held_pending[];
 const char *chain_result_column_pending(const gw_chain_result *r);
 /* How far a run at the default t_max t_default (20 expected lengths) goes on
  * when it has not ended there (chain_collide.c, extend_run), sampled at dt_ext
- * past it, for n beads: t_default plus at most 49 t_default, 5e6 samples and
- * 1.25e8 values of a stored trace (2 n + 2 a sample), s. */
-double chain_extend_bound(double t_default, double dt_ext, int n);
+ * past it, for n beads: t_default plus at most 49 t_default, 5e6 samples and,
+ * stored (a sample callback), 1.25e8 values of the trace (2 n + 2 a sample), s. */
+double chain_extend_bound(double t_default, double dt_ext, int n, int stored);
 
 /* A collision stopped so (its wall_pending is chain_held_pending): its values
  * are those of that time, and the studies leave it out of what they derive. */

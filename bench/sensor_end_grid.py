@@ -14,6 +14,15 @@ The last contact is the reference's latest opening (its detach times and
 tau_N). A default run fails when it did not converge (cut at its t-max) or
 ended before that last contact. Prints one line a case and the tally.
 The grid: GRID_N, GRID_M, GRID_K (comma lists) in the environment override it.
+
+Measured (n 1, 2, 3, 5, 10, 20, 40 x M 1e-4, 1e-3, 1e-2, 3e-2, 0.1 kg x k_s 1e3,
+1e4, 1e6 N/m): the code before, 25 of 105 default runs cut before their last
+contact (one case refused at the reference's t-max; the latest last contact
+355 expected lengths, 17 default t-max). Now 23 of those 25 end at the
+reference's last contact (three past what the reference reached); 2 stop at
+their t-max with a warning naming the pair and its meeting, beyond the bound
+(--n 20 --sensor-mass 0.1 --sensor-stiffness 1e3: beads 17 and 18 at 758 s;
+--n 40 --sensor-mass 0.1 --sensor-stiffness 1e4: beads 13 and 14 at 32 s).
 """
 import concurrent.futures
 import json

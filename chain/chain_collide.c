@@ -55,12 +55,29 @@ typedef struct run_state {
     int held;                /* the column fell back on the wall (held_by_gravity) */
     gw_chain_progress_fn progress; /* gw_chain_collide_progress's, or NULL */
     void *pctx;
+    gw_drive *drive;         /* the run's drive (its end and sampling move on when the run goes on) */
+    double t_default;        /* the default t_max, 20 expected lengths, when no t_max was given; else 0, s */
+    double t_bound;          /* how far a default run goes on (chain_extend_bound), s */
+    double dt_ext;           /* its sampling past the default t_max, s */
 } run_state;
 
 /* Steps a whole run may take: the plan bounds them at 1e8 over the expected
  * length, and a run that goes on past it (a default t_max is 20 expected lengths:
  * an overdamped bead held on the wall under rk4 ran 5e8 steps) stops here. */
 #define CHAIN_RUN_STEPS_MAX 2e8
+
+/* A run at the default t_max that has not ended there goes on (extend_run):
+ * at most this many samples past it, and at most CHAIN_EXTEND_VALUES values of
+ * a stored trace (2 n + 2 a row: 1 GB of doubles), and 50 default t_max in
+ * all (the trace's values when a sample callback takes the rows: --out, a
+ * trace; --n 40 --sensor-mass 1e-3 --sensor-stiffness 1e3, whose beads 23 and 24
+ * meet at 10.67 s, stopped at 7.98 s by it without one). Past the default t_max the run samples at dt_max (the cvode and arkode
+ * step bound, a quarter of the shortest contact; rk4 at dt_out), so these rows
+ * bound its steps there as well: 5e6 free-flight steps of a 10-bead column,
+ * about 10 s of CPU. */
+#define CHAIN_EXTEND_ROWS 5e6
+#define CHAIN_EXTEND_VALUES 1.25e8
+#define CHAIN_EXTEND_FACTOR 50.0
 
 /* Elastic force of contact k (0 = wall, k = contact between beads k-1, k). */
 static double contact_force(const run_state *st, const double *y, int k)
@@ -312,6 +329,8 @@ static void on_roots(run_state *st, double t, const double *y, const int *roots)
 /* What keeps the wall's side of the run from its end at state y: NULL when
  * nothing does (bead 1 off the wall, separating and beyond a sensor body's
  * reach, the reading no longer rising), else the reason, as the warnings say it. */
+static const char reading_rising[] = "bead 1 left the wall, the sensor's reading still rising";
+
 static const char *wall_pending(const run_state *st, const double *y, double dtol)
 {
     /* a run cut in bead 1's flight whose return is the caller's next impact
@@ -320,10 +339,17 @@ static const char *wall_pending(const run_state *st, const double *y, double dto
      * flight, where bead 1 turns: its velocity there is zero but for the
      * integration's error, +4.3e-11 m/s (cvode at 1e-12, "still at the wall")
      * or -1.3e-12 (1e-13, done) for N = 40 at h = 5.1 mm. */
-    int moving_in = !st->flight_cut && gw_chain_wall_gap_rate(st->c, y) > 0;
-    if (st->closed[0] || moving_in || gw_chain_wall_gap(st->c, y) > dtol)
+    if (st->closed[0] || gw_chain_wall_gap(st->c, y) > dtol)
         return "bead 1 still at the wall";
     long is = gw_chain_sensor_index(st->c);
+    /* Off the wall: on a sensor body the gap closes whenever the body swings
+     * toward bead 1 faster than the bead leaves, which says nothing while the
+     * bead is beyond the swing (the gap's rate made --n 10 --sensor-mass 0.03
+     * --sensor-stiffness 1e4, bead 1 12 mm beyond a swing of 0.26 mm, say
+     * "bead 1 still at the wall" at t-max, and kept its run going): there the
+     * bead's own velocity and the swing decide, below. */
+    if (is < 0 && !st->flight_cut && gw_chain_wall_gap_rate(st->c, y) > 0)
+        return "bead 1 off the wall but moving back toward it";
     if (is >= 0) {
         const gw_chain_sensor *s = &gw_chain_get_params(st->c)->sensor;
         double xs = y[is], vs = y[is + 1], a = sqrt(xs * xs + s->mass * vs * vs / s->stiffness);
@@ -333,7 +359,7 @@ static const char *wall_pending(const run_state *st, const double *y, double dto
          * comes after bead 1 left (a 1000 kg sensor on 1e12 N/m ended at 20.7 N,
          * rising, of a peak near J omega = 40 N) */
         if (vs > 0)
-            return "bead 1 left the wall, the sensor's reading still rising";
+            return reading_rising;
     }
     return NULL;
 }
@@ -379,6 +405,81 @@ static int finished(const run_state *st, double t, const double *y, double dtol)
         ahead |= opening_ahead(st, t, y, k, vtol);
     }
     return ahead ? 2 : 1;
+}
+
+/* What keeps the column's own side of a run cut at t_max going, into buf
+ * (size bytes; "" when nothing does): the contact that acts (contact_acting), a
+ * closed one first, else the pair that meets first (its beads close at w over a
+ * gap g: they meet at t + g / w, the bodies in free flight; about, a guide's
+ * friction aside), and how many more act. The run's warning names it: it said
+ * "the column's own contacts still closed or closing", or "bead 1 still at the
+ * wall" with bead 1 12 mm beyond the sensor body's swing and the pair of beads
+ * 5 and 6 closing at 0.5 mm/s (--n 10 --sensor-mass 0.03 --sensor-stiffness 1e4). */
+/* Returns the picked contact's meeting time (t when closed; NaN when none acts). */
+static double column_pending(const run_state *st, double t, const double *y, char *buf, size_t size)
+{
+    const double vtol = resolved_speed(st);
+    int count = 0, pick = 0, pick_closed = 0;
+    double pick_meet = INFINITY;
+    for (int k = 1; k < st->n; k++) {
+        if (!contact_acting(st, y, k, vtol))
+            continue;
+        count++;
+        const double d = y[2 * k] - y[2 * k - 2], w = y[2 * k + 1] - y[2 * k - 1];
+        const int closed = st->closed[k] || d > st->dtol;
+        const double meet = closed ? t : w > 0 ? t + fmax(0.0, -d) / w : INFINITY;
+        if ((closed && !pick_closed) || (!pick_closed && meet < pick_meet) || !pick) {
+            pick = k;
+            pick_closed = closed;
+            pick_meet = meet;
+        }
+    }
+    if (buf)
+        buf[0] = '\0';
+    if (!pick || !buf)
+        return pick ? pick_meet : NAN;
+    int len = pick_closed ? gw_snprintf(buf, size, "bead %d still against bead %d", pick, pick + 1)
+              : isfinite(pick_meet) ? gw_snprintf(buf, size, "beads %d and %d closing, to meet at about t = %.4g s",
+                                                  pick, pick + 1, pick_meet)
+                                    : gw_snprintf(buf, size, "beads %d and %d closing", pick, pick + 1);
+    if (count > 1 && len > 0 && (size_t)len < size)
+        gw_snprintf(buf + len, size - (size_t)len, ", and %d more of the column's contacts closed or closing",
+                    count - 1);
+    return pick_meet;
+}
+
+/* A default run (no t_max given) that has not ended by its t_max, 20 expected
+ * lengths, goes on: another 20 lengths at a time, while contacts act, up to
+ * st->t_bound (chain_extend_bound), sampled at st->dt_ext from there. The
+ * collision's length is not bounded by its expected length: beads that leave
+ * a soft sensor spring out of order meet again after the ride (--n 10
+ * --sensor-mass 0.03 --sensor-stiffness 1e4 cut at the default 0.148 s, its
+ * beads 5 and 6 meeting at 0.278 s; --n 5 --sensor-mass 0.01
+ * --sensor-stiffness 1e4 at 0.093 s, ending at 1.36 s, 291 expected
+ * lengths), as does a light bead between heavy ones on a rigid wall (--n 3
+ * --radii 4e-3,1e-3,4e-3: cut at 2.5 ms, ends at 4.8 ms). 1 when it goes on. */
+static int extend_run(run_state *st, double t, const double *y)
+{
+    if (!(st->t_default > 0) || !st->drive || !(t < st->t_bound))
+        return 0;
+    /* Nothing but beads in free flight that meet after the bound (their
+     * relative motion is uniform, gravity acting on all alike; not under a
+     * guide's friction), bead 1 off the wall and beyond a sensor body's swing
+     * (its reading may still rise): the run stops here, not at the bound
+     * (--n 20 --sensor-mass 0.1 --sensor-stiffness 1e3 ran on to 20.5 s, its
+     * beads 17 and 18 to meet at 758 s) */
+    const gw_chain_params *p = gw_chain_get_params(st->c);
+    const char *wp = wall_pending(st, y, st->dtol);
+    if ((!wp || wp == reading_rising) && !(p->guide.coulomb > 0 || p->guide.viscous > 0) &&
+        column_pending(st, t, y, NULL, 0) > st->t_bound)
+        return 0;
+    st->t_max = fmin(st->t_bound, t + st->t_default);
+    st->drive->t_end = st->t_max;
+    if (st->dt_ext > st->drive->dt_out) {
+        st->drive->dt_out = st->dt_ext;
+        st->drive->k_out = (long)floor(t / st->dt_ext) + 1;
+    }
+    return 1;
 }
 
 static void finish_result(run_state *st, const double *y)
@@ -562,7 +663,7 @@ static int collide_after(void *ctx, double t, const double *y, gw_err *err)
                                                 "overdamped contact)", ", or raise the impact speed", err);
             return gw_err_set(err, GW_ELIMIT, "chain: bead 1 still on the wall at t_max = %.6g s", st->t_max);
         }
-        return GW_DRIVE_STOP;
+        return extend_run(st, t, y) ? GW_DRIVE_ON : GW_DRIVE_STOP;
     }
     return GW_DRIVE_ON;
 }
@@ -619,7 +720,8 @@ static int collide_run(const gw_chain *c, const gw_chain_run_opts *o, int drop, 
     int prc = chain_collide_plan_make(&pc, o, &pl, err);
     if (prc != GW_OK)
         return prc;
-    r->final_v = calloc(4 * (size_t)n, sizeof *r->final_v);
+    /* the velocities' arrays, then the column's pending text (chain_result_column_pending) */
+    r->final_v = calloc(1, 4 * (size_t)n * sizeof *r->final_v + CHAIN_PENDING_TEXT);
     double *y = malloc((size_t)sys->dim * sizeof *y);
     int *roots = calloc((size_t)sys->nroots, sizeof *roots);
     run_state st = {.c = c, .o = o, .r = r, .n = n, .t_sampled = -INFINITY, .flight_cut = flight_cut,
@@ -690,6 +792,12 @@ static int collide_run(const gw_chain *c, const gw_chain_run_opts *o, int drop, 
     }
     gw_drive drive = {.t_end = t_max, .dt_out = dt_out, .k_out = 1, .on_root = collide_root,
                       .on_output = collide_output, .after = collide_after, .ctx = &st};
+    st.drive = &drive;
+    if (!(o->t_max > 0) && !drop) { /* the default t_max: the run goes on past it (extend_run) */
+        st.t_default = t_max;
+        st.dt_ext = type == gw_solver_rk4 ? dt_out : fmax(dt_out, sp.dt_max);
+        st.t_bound = chain_extend_bound(t_max, st.dt_ext, n, o->sample != NULL);
+    }
     rc = chain_step_limit_named(gw_solver_drive(s, &drive, &t, y, roots, err), s, &pl.sp, err);
 stopped:
     r->t_end = t;
@@ -704,8 +812,11 @@ stopped:
             mg += gw_chain_bead_mass(c, i) * p->gravity;
         r->impulse = p0 - momentum(c, y) + mg * t;
     }
+    r->run_t_max = st.t_max; /* where a default run that went on stopped (extend_run) */
     r->wall_pending = r->converged ? NULL : st.held ? chain_held_pending : wall_pending(&st, y, st.dtol);
     r->wall_done = r->wall_pending == NULL;
+    if (!r->converged && !st.held)
+        column_pending(&st, t, y, (char *)(r->final_v + 4 * (size_t)n), CHAIN_PENDING_TEXT);
     finish_result(&st, y);
     gw_solver_get_stats(s, &r->stats);
 done:
@@ -716,6 +827,20 @@ done:
     free(st.last_open);
     free(st.fc_prev);
     return rc;
+}
+
+double chain_extend_bound(double t_default, double dt_ext, int n, int stored)
+{
+    /* a run that stores nothing holds O(n) whatever its length: its rows bound its steps only */
+    const double rows = stored ? fmin(CHAIN_EXTEND_ROWS, CHAIN_EXTEND_VALUES / (2.0 * n + 2)) : CHAIN_EXTEND_ROWS;
+    return t_default + fmin((CHAIN_EXTEND_FACTOR - 1) * t_default, rows * dt_ext);
+}
+
+const char *chain_result_column_pending(const gw_chain_result *r)
+{
+    if (!r || !r->final_v || r->n < 1 || r->converged)
+        return "";
+    return (const char *)(r->final_v + 4 * (size_t)r->n);
 }
 
 void gw_chain_result_free(gw_chain_result *r)

@@ -45,7 +45,7 @@ static const gw_param collision_fields[] = {
     {.name = "wall_pending", .type = GW_PARAM_TEXT, .offset = OFF(r.wall_pending), .unit = "",
      .help = "wall_done 0: what kept the wall's contact going at t_end (None: done)"},
     RD("t_end", r.t_end, "s", "end of the run"),
-    RD("t_max", r.run_t_max, "s", "time limit the run used (default 20 (n T_q + tau_1 + t_s), t_s the column's ride on a sensor spring)"),
+    RD("t_max", r.run_t_max, "s", "time limit the run used (default 20 (n T_q + tau_1 + t_s), t_s the column's ride on a sensor spring; where a default run that went on stopped)"),
     RD("dt_out", r.run_dt_out, "s", "sampling interval the run used (default tau_1/200)"),
     RD("dt", r.run_dt, "s", "step the run used: RK4's (default T_c/400, at most dt_max and dt_out), cvode's and arkode's first (0: their own)"),
     RD("dt_given", r.run_dt_given, "s", "the dt given (0: none); dt differs when it was above dt_max or rk4's dt_out"),

@@ -161,6 +161,20 @@ int chain_fell_back(double *q_min, double q, double q_scale);
  * held_by_gravity); its warning (chain_warnings.c) names gravity and vimp. */
 extern const char chain_held_pending[];
 
+/* Room for the column's pending text kept after a result's velocity arrays
+ * (gw_chain_collide allocates final_v with 4 n doubles and this many bytes). */
+#define CHAIN_PENDING_TEXT 192
+/* What kept the column's own contacts from ending a run cut at t_max ("bead 3
+ * still against bead 4", "beads 5 and 6 closing, to meet at about t = 0.278 s",
+ * and how many more act); "" when nothing did, or for a result that converged or
+ * that gw_chain_collide did not fill. Valid until gw_chain_result_free. */
+const char *chain_result_column_pending(const gw_chain_result *r);
+/* How far a run at the default t_max t_default (20 expected lengths) goes on
+ * when it has not ended there (chain_collide.c, extend_run), sampled at dt_ext
+ * past it, for n beads: t_default plus at most 49 t_default, 5e6 samples and,
+ * stored (a sample callback), 1.25e8 values of the trace (2 n + 2 a sample), s. */
+double chain_extend_bound(double t_default, double dt_ext, int n, int stored);
+
 /* A collision stopped so (its wall_pending is chain_held_pending): its values
  * are those of that time, and the studies leave it out of what they derive. */
 static inline int chain_result_held(const gw_chain_result *r)

@@ -48,7 +48,7 @@ _Static_assert(GW_SHEET_FITTED == 0 && GW_SHEET_HERTZ == 1 && GW_SHEET_LAYER == 
     GW_CHAIN_SOLVER_ROWS_HELP(solver_help, dt_help) \
     ROW("t-max", GW_PARAM_DOUBLE, t_max, "s", 0, 1e6, 0, "0", "T", \
         "stop after T seconds, in [0, 1e6] [0 = 20 (n T_q + tau_1), of the heaviest bead, + 20 pi sqrt((n m + M)/k_s) " \
-        "on a sensor body]"), \
+        "on a sensor body, going on while contacts still act, up to 50 times that]"), \
     ROW("dt-out", GW_PARAM_DOUBLE, dt_out, "s", 0, 1, 0, "0", "DT", dtout_help), \
     GW_CHAIN_ENERGY_ROW \
     GW_CHAIN_WALL_ROWS

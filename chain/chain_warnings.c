@@ -220,10 +220,15 @@ int gw_chain_result_warnings(const gw_chain_result *r, char **list)
                                "was back toward it at t = %.6g s, before the collision ended: F_max, tau_N, the "
                                "final velocities and the restitution are undecided, those at that time; raise "
                                "--vimp or lower --gravity", r->t_end);
+    /* the wall's side (wall_pending) and the column's contact that still acts
+     * (chain_result_column_pending), each when it keeps the run going */
+    const char *col = chain_result_column_pending(r);
+    const char *wall = r->wall_done ? "" : r->wall_pending ? r->wall_pending : "bead 1 still at the wall";
+    if (r->wall_done && !col[0])
+        col = "the column's own contacts still closed or closing";
     return gw_warnings_add(list,
-                           "the collision had not ended at t_max = %.6g s (%s): %s are those at t_max; raise --t-max",
-                           r->t_end, r->wall_done ? "the column's own contacts still closed or closing" :
-                           r->wall_pending ? r->wall_pending : "bead 1 still at the wall",
+                           "the collision had not ended at t_max = %.6g s (%s%s%s): %s are those at t_max; raise --t-max",
+                           r->t_end, wall, wall[0] && col[0] ? "; " : "", col,
                            r->wall_done ? "the final velocities, eps_eff, eps_col and N_s"
                                         : "F_max, tau_N, the final velocities and the restitution");
 }

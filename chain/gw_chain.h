@@ -366,7 +366,10 @@ typedef struct gw_chain_run_opts {
     gw_solver_params sp;          /* dt == 0 for rk4: T_c / steps_per_tc, see below */
     double dt_out;     /* sampling interval, s; 0 = tau_1/200 (energy and F_max) */
     double t_max;      /* give up after this time, s; 0 = 20 (n T_q + tau_1), T_q and tau_1 of the heaviest bead,
-                        * + 20 pi sqrt((sum m + M)/k_s) on a sensor body (the column riding its spring) */
+                        * + 20 pi sqrt((sum m + M)/k_s) on a sensor body (the column riding its spring); a
+                        * run at that default that has not ended there goes on while contacts act, up to
+                        * 50 times it (5e6 samples at dt_max past it at most), and records where it stopped
+                        * as its run_t_max */
     double energy_tol; /* stop with GW_EENERGY when the relative energy error
                           exceeds this (0 = off) */
     gw_chain_sample_fn sample;

@@ -108,7 +108,8 @@ typedef struct gw_chain_setup {
     double dt, dt_max;    /* s [dt NaN: not given = 0; 0: auto: T_c/400 (rk4); dt_max 0: a quarter of the
                            * shortest binary contact at 2 v_imp] */
     long max_steps;       /* steps between outputs [1e7] */
-    double t_max;         /* s [0: 20 (n T_q + tau_1), + 20 pi sqrt((sum m + M)/k_s) on a sensor body] */
+    double t_max;         /* s [0: 20 (n T_q + tau_1), + 20 pi sqrt((sum m + M)/k_s) on a sensor body,
+                             going on while contacts act (gw_chain_run_opts.t_max)] */
     double dt_out;        /* sampling interval, s [0: tau_1/200] */
     double energy_tol;    /* stop when the energy error exceeds it [0: off] */
     int sheet_law;        /* fitted, hertz, layer, material (choice) [-1: fitted] */

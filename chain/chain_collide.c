@@ -26,6 +26,7 @@
 #include "chain_model.h"
 #include "chain_collide_impl.h"
 #include "gw_locale.h"
+#include "gw_global.h"
 
 typedef struct run_state {
     const gw_chain *c;
@@ -60,6 +61,51 @@ typedef struct run_state {
     double t_bound;          /* how far a default run goes on (chain_extend_bound), s */
     double dt_ext;           /* its sampling past the default t_max, s */
 } run_state;
+
+/* The final_v allocations a run made (they hold the column's pending text
+ * after their 4n values), until gw_chain_result_free: the text is read only
+ * from these. A result filled by hand, or copied with its own final_v array of
+ * n values, has no such room, and reading past it was a heap over-read; its
+ * warning keeps the generic text. A table of the live results' pointers, under
+ * a fork-safe lock (a forked child keeps its parent's table). */
+static gw_forklock made_lock = GW_FORKLOCK(NULL);
+typedef struct made_run {
+    const double *v; /* final_v */
+    int n;           /* its beads: the text after 4n values */
+} made_run;
+static made_run *made;
+static size_t n_made, cap_made;
+
+static void made_add(const double *v, int n)
+{
+    gw_forklock_take(&made_lock);
+    if (n_made == cap_made) {
+        size_t cap = cap_made ? 2 * cap_made : 16;
+        made_run *m = realloc(made, cap * sizeof *m);
+        if (m)
+            made = m, cap_made = cap;
+    }
+    if (n_made < cap_made) /* out of memory: the text is not kept, the generic one said */
+        made[n_made++] = (made_run){v, n};
+    gw_forklock_give(&made_lock);
+}
+
+/* whether v is one of the runs' allocations, made for n beads (n < 0: any);
+ * removed too when drop */
+static int made_find(const double *v, int n, int drop)
+{
+    int found = 0;
+    gw_forklock_take(&made_lock);
+    for (size_t k = n_made; k-- > 0;)
+        if (made[k].v == v) {
+            found = n < 0 || made[k].n == n;
+            if (drop)
+                made[k] = made[--n_made];
+            break;
+        }
+    gw_forklock_give(&made_lock);
+    return found;
+}
 
 /* Steps a whole run may take: the plan bounds them at 1e8 over the expected
  * length, and a run that goes on past it (a default t_max is 20 expected lengths:
@@ -471,8 +517,10 @@ static int extend_run(run_state *st, double t, const double *y)
     const gw_chain_params *p = gw_chain_get_params(st->c);
     const char *wp = wall_pending(st, y, st->dtol);
     if ((!wp || wp == reading_rising) && !(p->guide.coulomb > 0 || p->guide.viscous > 0) &&
-        column_pending(st, t, y, NULL, 0) > st->t_bound)
-        return 0;
+        !(column_pending(st, t, y, NULL, 0) <= st->t_bound))
+        return 0; /* (NaN: no contact of the column acts, only the sensor's reading
+                   * still rising: a critically damped 1e-5 kg body on 1e12 N/m ran
+                   * on to the bound, 0.16 s and 14 million erk steps, to end as it was) */
     st->t_max = fmin(st->t_bound, t + st->t_default);
     st->drive->t_end = st->t_max;
     if (st->dt_ext > st->drive->dt_out) {
@@ -735,6 +783,7 @@ static int collide_run(const gw_chain *c, const gw_chain_run_opts *o, int drop, 
         rc = gw_err_set(err, GW_ENOMEM, "chain: out of memory for %d beads", n);
         goto done;
     }
+    made_add(r->final_v, n);
     r->detach_t = r->final_v + n;
     r->v_tau_n = r->final_v + 2 * n;
     if (o->front_threshold > 0) {
@@ -838,15 +887,18 @@ double chain_extend_bound(double t_default, double dt_ext, int n, int stored)
 
 const char *chain_result_column_pending(const gw_chain_result *r)
 {
-    if (!r || !r->final_v || r->n < 1 || r->converged)
+    if (!r || !r->final_v || r->n < 1 || r->converged || !made_find(r->final_v, r->n, 0))
         return "";
-    return (const char *)(r->final_v + 4 * (size_t)r->n);
+    const char *text = (const char *)(r->final_v + 4 * (size_t)r->n);
+    return memchr(text, '\0', CHAIN_PENDING_TEXT) ? text : "";
 }
 
 void gw_chain_result_free(gw_chain_result *r)
 {
     if (!r)
         return;
+    if (r->final_v)
+        made_find(r->final_v, -1, 1);
     free(r->final_v);
     r->final_v = r->detach_t = r->v_tau_n = r->front_t = NULL;
 }

@@ -1147,7 +1147,7 @@ fi
 # --- 42: a skin too small for the explicit step -------------------------------------------
 refused "layer-impact --skin 1e-5 (pairs came into contact between two list checks)" \
     "^granwave layer-impact --skin: 1e-05 m is too small for this run: at t = [0-9.e-]+ s (particles [0-9]+ and [0-9]+|the block and particle [0-9]+) overlapped by .* raise --skin to [0-9.e-]+ m or more$" \
-    layer-impact --sample "$S300" --t-max 0.03 --skin 1e-5 --out "$tmp/o"
+    layer-impact --sample "$S300" --t-max 0.03 --skin 1e-5 --quiet --out "$tmp/o"
 sug42=$(sed -n 's/.*raise --skin to \([0-9.e-]*\) m or more$/\1/p' "$tmp/stderr")
 e42=()
 for s42 in 0.1 1e-4 "$sug42"; do

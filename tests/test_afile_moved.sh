@@ -30,7 +30,7 @@ test_setup "$@"
 SHIM=$(shim_path "${3:-}" signal) || { echo "SKIP: no signal shim (not built here)"; exit 0; }
 cd "$tmp" || exit 1
 export LC_ALL=C
-MAKE="layer-make --n 40 --out D/s.txt"
+MAKE="layer-make --n 40 --quiet --out D/s.txt" # (--quiet: its stderr lines are counted, and past 3 s the progress display writes there)
 
 # run SIG MOVE ARGS...: ARGS with D (or W) made empty, MOVE run and SIG (0:
 # none) raised before the first fsync; sets rc

@@ -108,17 +108,18 @@ fix=$tmp
 cp "$SRC/data/measured/layer_walls/results.csv" "$tmp/results.csv"
 printf '[sweep]\nmodel = chain\n[grid]\nn = 1:2\n[params]\nsolver = rk4\n' >"$tmp/sweep.ini"
 
-base_args() { # cmd outdir -> the short valid run of cmd
+base_args() { # cmd outdir -> the short valid run of cmd (--quiet: an exit 2 is checked
+    # for one stderr line, and a run past 2 s of the clock shows the progress display)
     case "$1" in
-    chain) echo "--n 2 --out $2";;
+    chain) echo "--n 2 --quiet --out $2";;
     falcon) echo "--n 1:2 --heights none --quiet --jobs 1 --out $2";;
     wavespeed) echo "--n 6:8 --vimp 0.3 --quiet --jobs 1 --out $2";;
     softwall) echo "--n 1:3 --quiet --jobs 1 --out $2";;
-    dispersion) echo "--n 16 --t-samples 64 --out $2";;
-    drop) echo "--n 2 --t-max 2e-4 --out $2";;
+    dispersion) echo "--n 16 --t-samples 64 --quiet --out $2";;
+    drop) echo "--n 2 --t-max 2e-4 --quiet --out $2";;
     sweep) echo "$fix/sweep.ini --quiet --out $2";;
-    layer-make) echo "--n 10 --width-rm 6 --t-max 0.05 --out $2/sample.txt";;
-    layer-impact) echo "--sample $fix/s20.txt --t-max 0.001 --out $2";;
+    layer-make) echo "--n 10 --width-rm 6 --t-max 0.05 --quiet --out $2/sample.txt";;
+    layer-impact) echo "--sample $fix/s20.txt --t-max 0.001 --quiet --out $2";;
     layer-stats) echo "$fix/results.csv --out $2";;
     esac
 }

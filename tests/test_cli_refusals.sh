@@ -154,7 +154,7 @@ refused "layer-make without --out" '^granwave layer-make --out: the sample file 
 # (64 beads over 256 samples: enough wavenumbers below qa = 0.5 for c0, so
 # the run says nothing on stderr)
 : >"$tmp/empty.wis"
-"$GW" dispersion --n 64 --t-samples 256 --wisdom "$tmp/empty.wis" --json >"$tmp/ew.json" 2>"$tmp/ew.err" &&
+"$GW" dispersion --n 64 --t-samples 256 --wisdom "$tmp/empty.wis" --quiet --json >"$tmp/ew.json" 2>"$tmp/ew.err" &&
     [ ! -s "$tmp/ew.err" ] && head -c 7 "$tmp/empty.wis" | grep -q '(fftw-3' &&
     /usr/bin/python3 -c 'import json, sys; sys.exit(json.load(open(sys.argv[1]))["settings"].get("fftw_wisdom_fnv1a64") is not None)' "$tmp/ew.json" &&
     ok "--wisdom on an empty file: no wisdom read, wisdom written" || ko "--wisdom on an empty file: $(head -c 200 "$tmp/ew.err")"
@@ -236,7 +236,7 @@ printf '[sweep]\nmodel = layer\n[grid]\npoint = 0:1\n[params]\nsample = %s\npoin
 refused "layer sweep with rtol and the verlet default" 'rtol: has no effect' sweep "$tmp/ltol.ini" --out "$tmp/o"
 "$GW" layer-impact --sample "$tmp/L.txt" --solver cvode --rtol 1e-6 --t-max 1e-4 >/dev/null 2>&1 && ok "layer-impact --solver cvode --rtol accepted" || ko "layer-impact --solver cvode --rtol refused"
 # a layer-make that does not settle still writes its sample, recorded as such, and says so on one stderr line
-"$GW" layer-make --n 20 --width-rm 10 --seed 4 --t-max 0.01 --out "$tmp/U.txt" --json >"$tmp/U.json" 2>"$tmp/U.err"; rc=$?
+"$GW" layer-make --n 20 --width-rm 10 --seed 4 --t-max 0.01 --out "$tmp/U.txt" --quiet --json >"$tmp/U.json" 2>"$tmp/U.err"; rc=$?
 if [ $rc -eq 0 ] && [ "$(wc -l <"$tmp/U.err")" -eq 1 ] && grep -q 'warning: the sample did not settle' "$tmp/U.err" \
     && grep -q 'converged 0' "$tmp/U.txt" && grep -q '"converged":[[:space:]]*false' "$tmp/U.json"; then
     ok "layer-make not settled: exit 0, sample written with converged 0, one warning line"

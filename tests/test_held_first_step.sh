@@ -48,7 +48,7 @@ elif ! grep -qE '^granwave softwall: warning: (2[0-9]) of 30 collisions were hel
 else ok "softwall --n 1:30 --gravity 1e4: exit 0, a warning counting the held columns, naming --gravity and --vimp"; fi
 
 # chain at N = 17, softwall's v_imp: stops at the fall, before t_max
-if runs_json "chain --n 17 --gravity 1e4" c17.json chain --n 17 --gravity 1e4 --vimp 0.238533; then
+if runs_json "chain --n 17 --gravity 1e4" c17.json chain --n 17 --gravity 1e4 --vimp 0.238533 --quiet; then
     r=$($PY - <<'EOF'
 import json
 d = json.load(open("c17.json"))
@@ -77,7 +77,7 @@ fi
 # runs that end are not stopped: one and two beads under 1e4, 17 under 9.81
 for args in "--n 1 --gravity 1e4" "--n 2 --gravity 1e4" "--n 17 --gravity 9.81"; do
     # shellcheck disable=SC2086
-    if runs_json "chain $args" e.json chain $args --vimp 0.238533 &&
+    if runs_json "chain $args" e.json chain $args --vimp 0.238533 --quiet &&
        [ "$(jq_py e.json "d['converged'] and d['wall_done'] and d['wall_pending'] is None and d['eps_eff'] > 0")" = True ] &&
        ! [ -s "$tmp/stderr" ]; then
         ok "chain $args: ends as before (converged, eps_eff > 0, no warning)"

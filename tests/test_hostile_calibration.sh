@@ -45,7 +45,7 @@ fails_with() {
 # --- 1: t-max shorter than the contact
 for d in kk hc; do
     fails_with "1: chain --damping $d --restitution 0.9 --t-max 1e-6" 1 'still on the wall at t_max = 1e-06 s' \
-        'restitution|overdamped' chain --n 3 --damping $d --restitution 0.9 --t-max 1e-6
+        'restitution|overdamped' chain --n 3 --damping $d --restitution 0.9 --t-max 1e-6 --quiet
 done
 # drop runs a cut run to its end and warns (exit 0)
 "$GW" drop --n 3 --height 5e-3 --damping kk --restitution 0.9 --t-max 1e-6 >/dev/null 2>"$tmp/err1"; rc=$?

@@ -271,7 +271,7 @@ runs "drop --solver rk4 --dt 1e-10 --t-max 1e-3 (1e7 steps) runs" "$tmp/d.json" 
 # --- 4: the end of a collision on a sensor body; unfinished runs said
 # (cut at a t_max of 2.2 ms given, the default before it counted the column's
 # ride on the spring, 8.5 ms; at the default it now ends: test_sensor_spring_tmax)
-if runs "chain on a 1 g sensor on 1e3 N/m at t_max 2.2 ms" "$tmp/u.json" chain --n 3 --sensor-mass 1e-3 --sensor-stiffness 1e3 --t-max 2.2e-3 --json; then
+if runs "chain on a 1 g sensor on 1e3 N/m at t_max 2.2 ms" "$tmp/u.json" chain --n 3 --sensor-mass 1e-3 --sensor-stiffness 1e3 --t-max 2.2e-3 --quiet --json; then
     jcheck "  not declared over (converged false, wall_done false)" "$tmp/u.json" "j['converged'] is False and j['wall_done'] is False"
     grep -q "^granwave chain: warning: the collision had not ended at t_max = .* (bead 1 off the wall but within the sensor body's swing[;)]" "$tmp/stderr" &&
         [ "$(wc -l <"$tmp/stderr")" -eq 1 ] && ok "  one warning line on stderr" || ko "  no warning: $(cat "$tmp/stderr")"
@@ -317,7 +317,7 @@ refused "dispersion --column-n with rk4 tolerances: named once" '^granwave dispe
 runs "dispersion --column-n 20 --vimp 0.5 --solver cvode --fftw-measure (the column's own options)" "$tmp/c.json" \
     dispersion --column-n 20 --vimp 0.5 --solver cvode --fftw-measure --json &&
     jcheck "  its spectrum peak within 5 % of 1/P" "$tmp/c.json" "abs(j['f_peak_rel_diff']) < 0.05 and j['v_imp'] == 0.5"
-if runs "dispersion sampled too finely to resolve a ridge (dt-out 1e-6 s, 64 samples)" "$tmp/d.json" dispersion --n 16 --t-samples 64 --dt-out 1e-6 --json; then
+if runs "dispersion sampled too finely to resolve a ridge (dt-out 1e-6 s, 64 samples)" "$tmp/d.json" dispersion --n 16 --t-samples 64 --dt-out 1e-6 --quiet --json; then
     jcheck "  nothing resolved: the ridge error is null, not 0" "$tmp/d.json" "j['n_resolved'] == 0 and j['ridge_max_rel_err'] is None"
     if [ "$(wc -l <"$tmp/stderr")" -eq 1 ] && grep -q '^granwave dispersion: warning: no wavenumber resolved' "$tmp/stderr"; then
         ok "  and one warning line says so"
@@ -652,7 +652,7 @@ REFUSE_TIMEOUT=5 refused "chain --sensor-mass 1e-7 --sensor-stiffness 1e14 --sol
 
 # --- 27: a blown-up run fails (exit 1, the time), it never exits 0
 for cmd in chain drop; do
-    cpu_run 20 "$GW" $cmd --n 3 --radii 4e-3,3e-5,4e-3 --solver rk4 --dt 7e-8 --json >"$tmp/s" 2>"$tmp/e" </dev/null; rc=$?
+    cpu_run 20 "$GW" $cmd --n 3 --radii 4e-3,3e-5,4e-3 --solver rk4 --dt 7e-8 --quiet --json >"$tmp/s" 2>"$tmp/e" </dev/null; rc=$?
     [ $rc -eq 1 ] && [ "$(wc -l <"$tmp/e")" -eq 1 ] && [ ! -s "$tmp/s" ] &&
         grep -qE "^granwave $cmd: the solution blew up at t = [0-9.e-]+ s \((relative energy error|state)" "$tmp/e" &&
         ok "$cmd with an RK4 step 260 times the small bead's: exit 1 at the time it blew up" ||
@@ -660,7 +660,7 @@ for cmd in chain drop; do
 done
 
 # --- 28: a drop cut by t-max says so (stderr) and records it (JSON)
-cpu_run 20 "$GW" drop --n 3 --t-max 1e-5 --json >"$tmp/d.json" 2>"$tmp/e" </dev/null; rc=$?
+cpu_run 20 "$GW" drop --n 3 --t-max 1e-5 --quiet --json >"$tmp/d.json" 2>"$tmp/e" </dev/null; rc=$?
 [ $rc -eq 0 ] && [ "$(wc -l <"$tmp/e")" -eq 1 ] && grep -q '^granwave drop: warning: the run was cut at t_max = 1e-05 s: the first collision had not ended' "$tmp/e" &&
     ok "drop --t-max 1e-5 (inside the first collision): exit 0, one warning line" || ko "drop --t-max 1e-5: exit $rc, $(cat "$tmp/e")"
 jcheck "  recorded: cut_first_collision, open_at_t_max, the last impact's t_end null" "$tmp/d.json" \

@@ -109,10 +109,10 @@ if [ -z "$loc" ] && command -v localedef >/dev/null && mkdir -p "$tmp/loc" && lo
     loc=de_DE.UTF-8; export LOCPATH=$tmp/loc
 fi
 if [ -n "$loc" ]; then
-    LC_ALL=C "$GW" chain --n 3 --vimp 0.25 --restitution 0.9 --damping kk --out "$tmp/lc" --json >"$tmp/lc.json" 2>&1
-    LC_ALL=$loc "$GW" chain --n 3 --vimp 0.25 --restitution 0.9 --damping kk --out "$tmp/lc" --json >"$tmp/ld.json" 2>&1
+    LC_ALL=C "$GW" chain --n 3 --vimp 0.25 --restitution 0.9 --damping kk --out "$tmp/lc" --quiet --json >"$tmp/lc.json" 2>&1
+    LC_ALL=$loc "$GW" chain --n 3 --vimp 0.25 --restitution 0.9 --damping kk --out "$tmp/lc" --quiet --json >"$tmp/ld.json" 2>&1
     cp "$tmp/lc/chain_wall_force.csv" "$tmp/lc.csv"
-    LC_ALL=C "$GW" chain --n 3 --vimp 0.25 --restitution 0.9 --damping kk --out "$tmp/lc" --json >/dev/null 2>&1
+    LC_ALL=C "$GW" chain --n 3 --vimp 0.25 --restitution 0.9 --damping kk --out "$tmp/lc" --quiet --json >/dev/null 2>&1
     if cmp -s <(grep -v wall_time "$tmp/lc.json") <(grep -v wall_time "$tmp/ld.json") &&
         cmp -s "$tmp/lc.csv" "$tmp/lc/chain_wall_force.csv" && grep -q '"v_imp":	0.25' "$tmp/ld.json"; then
         ok "7 LC_ALL=$loc: same JSON and CSV (kept)"

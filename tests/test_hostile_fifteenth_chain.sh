@@ -157,7 +157,7 @@ done
 
 
 # 4: the reason of a cut run
-timeout -s KILL 60 "$GW" chain --n 3 --sensor-mass 1 --sensor-stiffness 1e3 --t-max 2.2e-3 --json >"$tmp/s4.json" 2>"$tmp/s4.err" </dev/null
+timeout -s KILL 60 "$GW" chain --n 3 --sensor-mass 1 --sensor-stiffness 1e3 --t-max 2.2e-3 --quiet --json >"$tmp/s4.json" 2>"$tmp/s4.err" </dev/null
 rc=$?
 [ $rc -eq 0 ] && [ "$(wc -l <"$tmp/s4.err")" -eq 1 ] && grep -q "(bead 1 left the wall, the sensor's reading still rising)" "$tmp/s4.err" &&
     [ "$(jq_py "$tmp/s4.json" "(d['converged'], d['wall_done'], 0 < d['detach_times'][0] < d['t_end'])")" = "(False, False, True)" ] &&

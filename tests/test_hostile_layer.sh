@@ -288,7 +288,7 @@ refused "layer-make --density 1e-6 at the default step" "layer-make --dt: a step
 refused "layer-make --shear-modulus 1e15 at the default step" "layer-make --dt: a step of 2e-05 s is above" \
     layer-make --n 20 --width-rm 10 --shear-modulus 1e15 --out "$tmp/m3.txt"
 runs "layer-make --rm 1e-4 with a step it resolves" layer-make --n 20 --width-rm 10 --rm 1e-4 --dt 2e-6 --t-max 0.05 --out "$tmp/m3.txt"
-timeout -s KILL 60 "$GW" layer-make --n 60 --width-rm 12 --shear-modulus 1e-3 --t-max 0.3 --out "$tmp/m4.txt" \
+timeout -s KILL 60 "$GW" layer-make --n 60 --width-rm 12 --shear-modulus 1e-3 --t-max 0.3 --quiet --out "$tmp/m4.txt" \
     >"$tmp/stdout" 2>"$tmp/stderr" </dev/null; rc=$?
 if [ $rc -eq 1 ] && [ "$(wc -l <"$tmp/stderr")" -eq 1 ] && [ ! -e "$tmp/m4.txt" ] &&
    grep -q "did not settle into a valid sample.*too soft for their load" "$tmp/stderr" && ! grep -q -- "--out" "$tmp/stderr"; then
@@ -522,7 +522,7 @@ if runs "layer-make --modulus-factor 0.5 --t-max 0.05" layer-make --n 20 --width
         ko "  steps $(jnum steps "$tmp/stdout"), t_settle $(jnum t_settle "$tmp/stdout")"
 fi
 rm -f "$tmp/mf.txt"
-timeout -s KILL 60 "$GW" layer-make --n 30 --width-rm 10 --modulus-factor 1e-9 --t-max 1 --out "$tmp/mf.txt" >"$tmp/stdout" 2>"$tmp/stderr" </dev/null; rc=$?
+timeout -s KILL 60 "$GW" layer-make --n 30 --width-rm 10 --modulus-factor 1e-9 --t-max 1 --quiet --out "$tmp/mf.txt" >"$tmp/stdout" 2>"$tmp/stderr" </dev/null; rc=$?
 [ $rc -eq 1 ] && [ ! -e "$tmp/mf.txt" ] && [ "$(wc -l <"$tmp/stderr")" -eq 1 ] &&
     grep -q "at modulus-factor 1e-09 the soft pile sank into a wall .* raise modulus-factor" "$tmp/stderr" &&
     ok "layer-make --modulus-factor 1e-9: the sunk soft pile fails as a run (exit 1) naming modulus-factor" ||
@@ -1147,7 +1147,7 @@ fi
 # --- 42: a skin too small for the explicit step -------------------------------------------
 refused "layer-impact --skin 1e-5 (pairs came into contact between two list checks)" \
     "^granwave layer-impact --skin: 1e-05 m is too small for this run: at t = [0-9.e-]+ s (particles [0-9]+ and [0-9]+|the block and particle [0-9]+) overlapped by .* raise --skin to [0-9.e-]+ m or more$" \
-    layer-impact --sample "$S300" --t-max 0.03 --skin 1e-5 --out "$tmp/o"
+    layer-impact --sample "$S300" --t-max 0.03 --skin 1e-5 --quiet --out "$tmp/o"
 sug42=$(sed -n 's/.*raise --skin to \([0-9.e-]*\) m or more$/\1/p' "$tmp/stderr")
 e42=()
 for s42 in 0.1 1e-4 "$sug42"; do

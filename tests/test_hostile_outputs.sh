@@ -320,7 +320,7 @@ grep -q 'GW_HAVE_HDF5 0' "$(dirname "$GW")/generated/gw_version.h" 2>/dev/null &
 if [ "$h5" = 1 ]; then
     d=$tmp/h8
     # chain.h5 (5 kB) over a 4 KiB limit, the CSVs (2-3 kB) under it
-    (trap '' XFSZ; ulimit -f 4; exec "$GW" chain --n 1 --dt-out 1e-6 --out "$d") >/dev/null 2>"$tmp/stderr"
+    (trap '' XFSZ; ulimit -f 4; exec "$GW" chain --n 1 --dt-out 1e-6 --quiet --out "$d") >/dev/null 2>"$tmp/stderr"
     rc=$?
     [ $rc -eq 1 ] && [ "$(wc -l <"$tmp/stderr")" -eq 1 ] &&
         grep -q "^granwave chain --out: $d/chain.h5: write failed: File too large$" "$tmp/stderr" &&

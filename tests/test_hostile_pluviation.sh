@@ -64,7 +64,7 @@ same_at_skins "kept: verlet discs" --n 30 --t-max 0.4 --solver verlet
 # 2 ----------------------------------------------------------------------------
 rm -f "$tmp/tiny.txt"
 start=$(date +%s)
-timeout -s KILL 60 "$GW" layer-make --n 30 --t-max 0.4 --skin 1e-6 --out "$tmp/tiny.txt" >"$tmp/stdout" 2>"$tmp/stderr"
+timeout -s KILL 60 "$GW" layer-make --n 30 --t-max 0.4 --skin 1e-6 --quiet --out "$tmp/tiny.txt" >"$tmp/stdout" 2>"$tmp/stderr"
 rc=$? el=$(( $(date +%s) - start ))
 sug=$(sed -n 's/.*raise --skin to \([0-9.e+-]*\) m or more.*/\1/p' "$tmp/stderr")
 if [ $rc -eq 2 ] && [ "$el" -le 30 ] && [ ! -e "$tmp/tiny.txt" ] && [ "$(wc -l <"$tmp/stderr")" -eq 1 ] &&
@@ -84,7 +84,7 @@ fi
 # 3 ----------------------------------------------------------------------------
 for tm in 1e-300 0.05; do
     rm -f "$tmp/u.txt"
-    "$GW" layer-make --n 5 --t-max "$tm" --out "$tmp/u.txt" --json >"$tmp/u.json" 2>"$tmp/u.err"
+    "$GW" layer-make --n 5 --t-max "$tm" --out "$tmp/u.txt" --quiet --json >"$tmp/u.json" 2>"$tmp/u.err"
     rc=$?
     if [ $rc -eq 0 ] && [ -s "$tmp/u.txt" ] && grep -q "converged 0" "$tmp/u.txt" && [ "$(wc -l <"$tmp/u.err")" -eq 1 ] &&
        grep -q "t-max = $tm s ends before the settling is judged" "$tmp/u.err" && ! grep -q "still above" "$tmp/u.err" &&

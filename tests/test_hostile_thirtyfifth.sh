@@ -91,7 +91,7 @@ if runs_json "layer-impact on the settled pile" s.json layer-impact --sample set
 fi
 
 # with another material too: both said, in one warning line
-timeout -s KILL 60 "$GW" layer-impact --sample cut.txt --density 2500 --json >i.json 2>"$tmp/stderr" </dev/null
+timeout -s KILL 60 "$GW" layer-impact --sample cut.txt --density 2500 --quiet --json >i.json 2>"$tmp/stderr" </dev/null
 rc=$?
 [ $rc -eq 0 ] && [ "$(wc -l <"$tmp/stderr")" -eq 1 ] &&
     grep -qE "warning: the sample settled with density 2650 .*; $WARN" "$tmp/stderr" &&

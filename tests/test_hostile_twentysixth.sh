@@ -147,7 +147,7 @@ for pair in "w1 w1" "w2 ./w2/sub" "./w3 $tmp/w3/"; do
     ok "dispersion --wisdom $1 --out $2: exit 2 before the run, nothing made"
 done
 rm -rf w4 w4.wisdom
-if "$GW" dispersion --n 64 --t-samples 256 --wisdom w4.wisdom --out w4 >/dev/null 2>"$tmp/err" && [ -d w4 ] &&
+if "$GW" dispersion --n 64 --t-samples 256 --wisdom w4.wisdom --quiet --out w4 >/dev/null 2>"$tmp/err" && [ -d w4 ] &&
     head -c 7 w4.wisdom | grep -q '(fftw-3' && [ ! -s "$tmp/err" ]; then
     ok "dispersion --wisdom w4.wisdom --out w4: both written"
 else

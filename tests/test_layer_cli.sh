@@ -38,7 +38,7 @@ check "layer-make deterministic for a seed (same particle lines)" \
 check "layer-make JSON has n = 60 and a porosity" \
   "python3 -c 'import json,sys; d=json.load(open(\"$tmp/make.json\")); sys.exit(0 if d[\"n\"]==60 and 0<d[\"porosity\"]<1 else 1)'"
 # a pluviation cut before it settles: the sample is kept, but never silently
-"$gw" layer-make --n 60 --width-rm 16 --seed 4 --t-max 0.02 --out "$tmp/u.txt" --json > "$tmp/makeu.json" 2> "$tmp/makeu.err"
+"$gw" layer-make --n 60 --width-rm 16 --seed 4 --t-max 0.02 --out "$tmp/u.txt" --quiet --json > "$tmp/makeu.json" 2> "$tmp/makeu.err"
 check "layer-make not settled at --t-max: exit 0, one warning line naming t-max, JSON converged false" \
   "[ $? -eq 0 ] && [ \$(wc -l < '$tmp/makeu.err') -eq 1 ] && grep -q 'did not settle.*t-max = 0.02' '$tmp/makeu.err' && python3 -c 'import json,sys; sys.exit(0 if json.load(open(\"$tmp/makeu.json\"))[\"converged\"] is False else 1)'"
 check "layer-make that settles: no warning" "[ ! -s '$tmp/make.err' ]"
@@ -108,7 +108,7 @@ PY"
 # verdict and the first free-flight maximum, reports e_n as null and warns on one
 # line; cut before the take-off, bounced is null (undecided), never false
 undecided() { # t-max, python condition on the JSON d
-  "$gw" layer-impact --sample "$tmp/a.txt" --rb-rm 1 --vi 10 --x 0.3 --t-max "$1" --json > "$tmp/und.json" 2> "$tmp/und.err" || return 1
+  "$gw" layer-impact --sample "$tmp/a.txt" --rb-rm 1 --vi 10 --x 0.3 --t-max "$1" --quiet --json > "$tmp/und.json" 2> "$tmp/und.err" || return 1
   [ $(wc -l < "$tmp/und.err") -eq 1 ] && grep -q 'warning: .*undecided' "$tmp/und.err" || return 1
   python3 -c "import json,sys; d=json.load(open('$tmp/und.json')); sys.exit(0 if $2 else 1)"
 }
@@ -116,7 +116,7 @@ check "cut after the take-off, before T_f: bounced true, e_n null, e_n_first giv
   "undecided 0.005 \"d['bounced'] is True and d['e_n'] is None and d['t_f'] is None and d['e_n_first'] > 0 and 'T_f' in d['undecided']\""
 check "cut before the take-off: bounced null (undecided, not false), e_n and e_n_first null, one warning line" \
   "undecided 0.002 \"d['bounced'] is None and d['e_n'] is None and d['e_n_first'] is None and d['undecided']\""
-"$gw" layer-impact --sample "$tmp/a.txt" --rb-rm 1 --vi 10 --x 0.3 --t-max 0.005 --until verdict --json > "$tmp/ver.json" 2> "$tmp/ver.err"
+"$gw" layer-impact --sample "$tmp/a.txt" --rb-rm 1 --vi 10 --x 0.3 --t-max 0.005 --until verdict --quiet --json > "$tmp/ver.json" 2> "$tmp/ver.err"
 check "--until verdict: stops at the take-off, no warning, e_n null, e_n_first as without it" \
   "[ ! -s '$tmp/ver.err' ] && python3 -c \"import json,sys; v=json.load(open('$tmp/ver.json')); f=json.load(open('$tmp/fast.json')); sys.exit(0 if v['bounced'] is True and v['e_n'] is None and v['e_n_first'] == f['e_n_first'] and v['t_end'] < f['t_end'] and v['settings']['until'] == 'verdict' else 1)\""
 # the default impact (no --t-max: the table's 2 s) is decided: it runs to T_f
@@ -124,7 +124,7 @@ check "--until verdict: stops at the take-off, no warning, e_n null, e_n_first a
 # from the maximum normal velocity at t_rebound the block flies freely, so
 # T_f = t_rebound + v_nr / g (to 1e-4 s: five samples of dt-out 2e-5 s) and
 # e_n, the maximum, is at least e_n_first
-"$gw" layer-impact --sample "$tmp/a.txt" --json > "$tmp/def.json" 2> "$tmp/def.err"
+"$gw" layer-impact --sample "$tmp/a.txt" --quiet --json > "$tmp/def.json" 2> "$tmp/def.err"
 check "default layer-impact: t-max 2 s, decided (bounced true, e_n a number >= e_n_first), stopped at T_f = t_rebound + v_nr/g, no warning" \
   "[ ! -s '$tmp/def.err' ] && python3 -c \"import json,sys; d=json.load(open('$tmp/def.json')); print('e_n', d['e_n'], 't_f', d['t_f'], 't_end', d['t_end']); sys.exit(0 if d['settings']['t_max'] == 2 and d['bounced'] is True and d['e_n'] is not None and 0 < d['e_n'] < 1 and d['e_n'] >= d['e_n_first'] and d['undecided'] is None and abs(d['t_f'] - d['t_rebound'] - d['v_nr'] / 9.81) < 1e-4 and d['t_end'] - d['t_f'] < 1e-4 else 1)\""
 bad_until() { # args...

@@ -93,7 +93,7 @@ pile "12 discs" --n 12 --width-rm 6
 pile "12 one-disc clumps" --n 12 --clumps --aspect-max 1
 
 # 4: not settled by t-max
-if "$GW" layer-make --n 5 --width-rm 50 --t-max 0.3 --out "$tmp/u.txt" --json >"$tmp/u.json" 2>"$tmp/u.err" &&
+if "$GW" layer-make --n 5 --width-rm 50 --t-max 0.3 --out "$tmp/u.txt" --quiet --json >"$tmp/u.json" 2>"$tmp/u.err" &&
     grep -q "^# settled: .*converged 0" "$tmp/u.txt" && [ "$(json "$tmp/u.json" converged)" = False ] &&
     [ "$(wc -l <"$tmp/u.err")" -eq 1 ] && grep -q "did not settle" "$tmp/u.err"; then
     ok "a pile not settled by t-max: converged 0, one warning line"

@@ -31,7 +31,7 @@ export LC_ALL=C
 swap() {
     rm -rf D D.old T
     mkdir D && echo keep >D/mine.txt
-    "$GW" layer-impact --sample s.txt --t-max 0.5 --full --out D >/dev/null 2>err.txt &
+    "$GW" layer-impact --sample s.txt --t-max 0.5 --full --quiet --out D >/dev/null 2>err.txt &
     local pid=$!
     if wait_file $pid 'D/*.tmp.*'; then
         eval "$2"

@@ -108,11 +108,11 @@ unset GW_FAIL_LINK_ALL
 
 # 2: chain over an earlier chain
 rm -rf ref && "$GW" chain --n 5 --out ref >/dev/null 2>&1 || ko "chain --n 5 (the earlier run)"
-sweep_k "chain --n 6" chain --n 6 --out d
+sweep_k "chain --n 6" chain --n 6 --quiet --out d
 
 # 3: no earlier run: nothing is left
 rm -rf ref && mkdir ref
-sweep_k "chain --n 6 into an empty directory" chain --n 6 --out d
+sweep_k "chain --n 6 into an empty directory" chain --n 6 --quiet --out d
 
 # 4: an immutable earlier file (root, a file system with chattr)
 rm -rf ref && "$GW" falcon --n 1:16 --quiet --out ref >/dev/null 2>&1

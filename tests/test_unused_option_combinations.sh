@@ -103,7 +103,7 @@ refused "3d layer sweep --check: height-rm 1000" "^granwave sweep: .*h.ini: case
 
 # 4: layer-make --height-rm that takes nothing away
 LM=(layer-make --n 12 --width-rm 8 --seed 2 --ke-threshold 1e-2 --t-max 2 --solver verlet)
-"$GW" "${LM[@]}" --height-rm 100 --out T.txt --json >t.json 2>t.err
+"$GW" "${LM[@]}" --height-rm 100 --out T.txt --quiet --json >t.json 2>t.err
 rc=$?
 if [ $rc -eq 0 ] && [ -s T.txt ] && [ "$(wc -l <t.err)" -eq 1 ] &&
     grep -q "^granwave layer-make: warning: --height-rm took nothing away" t.err &&
@@ -112,7 +112,7 @@ if [ $rc -eq 0 ] && [ -s T.txt ] && [ "$(wc -l <t.err)" -eq 1 ] &&
 else
     ko "4a layer-make --height-rm 100: exit $rc, stderr: $(cat t.err)"
 fi
-"$GW" "${LM[@]}" --height-rm 6 --out U.txt --json >u.json 2>u.err
+"$GW" "${LM[@]}" --height-rm 6 --out U.txt --quiet --json >u.json 2>u.err
 rc=$?
 if [ $rc -eq 0 ] && [ ! -s u.err ] && [ "$(jq_py u.json 'd["n_removed_above_height"] > 0')" = "True" ]; then
     ok "4b layer-make --height-rm 6 trims $(jq_py u.json 'd["n_removed_above_height"]') particles, no warning"

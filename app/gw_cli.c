@@ -101,7 +101,7 @@ static int set_value(const char *cmd, gw_opt *o, const char *val, gw_err *err)
     case GW_OPT_DOUBLE:
     case GW_OPT_COUNT: {
         double v; /* a subnormal refused naming the option's range */
-        const gw_num_range r = {o->lo, o->hi, o->open_lo, o->open_hi, 0};
+        const gw_num_range r = {o->lo, o->hi, o->open_lo, o->open_hi, 0, o->kind == GW_OPT_COUNT};
         const int count = o->kind == GW_OPT_COUNT;
         if ((rc = gw_parse_double_in(val, name, &r, &v, err)) != GW_OK)
             return rc;

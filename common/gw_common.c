@@ -230,12 +230,20 @@ char *gw_num_bound(char *buf, size_t n, double x, int upper)
 
 /* Interval [a, b] ("(" / ")" for open ends) as "a value in [a, b]", or
  * ">= a", "< b" when the other end is unbounded, appended to buf. */
-static void interval_text(char *buf, size_t n, double a, int open_a, double b, int open_b)
+static void interval_text(char *buf, size_t n, double a, int open_a, double b, int open_b, int whole)
 {
     char as[32], bs[32];
     size_t used = strlen(buf);
-    gw_num_bound(as, sizeof as, a, 0); /* as the range messages print bounds */
-    gw_num_bound(bs, sizeof bs, b, 1);
+    if (whole && fabs(a) < 9007199254740992.0 && fabs(b) < 9007199254740992.0) {
+        /* a count's bounds as the whole numbers it takes ([1, 8388606], not
+         * 8.3886e+06: the help's and the other refusals' text) */
+        gw_snprintf(as, sizeof as, "%.0f", open_a ? floor(a) + 1 : ceil(a));
+        gw_snprintf(bs, sizeof bs, "%.0f", open_b ? ceil(b) - 1 : floor(b));
+        open_a = open_b = 0;
+    } else {
+        gw_num_bound(as, sizeof as, a, 0); /* as the range messages print bounds */
+        gw_num_bound(bs, sizeof bs, b, 1);
+    }
     if (isinf(a) && isinf(b))
         gw_snprintf(buf + used, n - used, "any value");
     else if (isinf(b))
@@ -253,7 +261,7 @@ char *gw_num_allowed(char *buf, size_t n, const gw_num_range *r)
     if (!buf || n == 0)
         return buf;
     buf[0] = '\0';
-    const gw_num_range any = {-INFINITY, INFINITY, 0, 0, 0};
+    const gw_num_range any = {-INFINITY, INFINITY, 0, 0, 0, 0};
     if (!r)
         r = &any;
     const double m = DBL_MIN, lo = r->lo, hi = r->hi;
@@ -265,14 +273,14 @@ char *gw_num_allowed(char *buf, size_t n, const gw_num_range *r)
     if (neg && pos) { /* both signs: the range, its magnitudes from m up */
         char range[80] = "";
         if (!isinf(lo) || !isinf(hi)) {
-            interval_text(range, sizeof range, lo, r->open_lo, hi, r->open_hi);
+            interval_text(range, sizeof range, lo, r->open_lo, hi, r->open_hi, r->whole);
             memmove(range, range + strlen("a value"), strlen(range) - strlen("a value") + 1);
         }
         gw_snprintf(buf, n, "%sa value%s of magnitude at least %s", zero ? "0 or " : "", range, ms);
         return buf;
     }
     if (neg) /* [lo, min(hi, -m)] */
-        interval_text(buf, n, lo, r->open_lo, hi > -m ? -gw_strtod(ms, NULL) : hi, hi > -m ? 0 : r->open_hi);
+        interval_text(buf, n, lo, r->open_lo, hi > -m ? -gw_strtod(ms, NULL) : hi, hi > -m ? 0 : r->open_hi, r->whole);
     if (zero) {
         size_t used = strlen(buf);
         gw_snprintf(buf + used, n - used, "%s0", neg ? " or " : "");
@@ -280,7 +288,7 @@ char *gw_num_allowed(char *buf, size_t n, const gw_num_range *r)
     if (pos) { /* [max(lo, m), hi] */
         size_t used = strlen(buf);
         gw_snprintf(buf + used, n - used, "%s", zero ? " or " : "");
-        interval_text(buf, n, lo < m ? gw_strtod(ms, NULL) : lo, lo < m ? 0 : r->open_lo, hi, r->open_hi);
+        interval_text(buf, n, lo < m ? gw_strtod(ms, NULL) : lo, lo < m ? 0 : r->open_lo, hi, r->open_hi, r->whole);
     }
     if (!neg && !zero && !pos) /* a range of subnormals alone: no input has one */
         gw_snprintf(buf, n, "no value: the range is below %s", ms);
@@ -445,14 +453,14 @@ int gw_parse_double_list(const char *s, const char *name, double **out, int *n, 
 int gw_parse_double_list_in(const char *s, const char *name, double lo, double hi, int open_lo,
                             double **out, int *n, gw_err *err)
 {
-    const gw_num_range r = {lo, hi, open_lo, 0, 0};
+    const gw_num_range r = {lo, hi, open_lo, 0, 0, 0};
     return gw_parse_double_list_range(s, name, &r, out, n, err);
 }
 
 int gw_parse_double_list_range(const char *s, const char *name, const gw_num_range *r, double **out, int *n,
                                gw_err *err)
 {
-    const gw_num_range any = {-INFINITY, INFINITY, 0, 0, 0};
+    const gw_num_range any = {-INFINITY, INFINITY, 0, 0, 0, 0};
     if (!r)
         r = &any;
     const double lo = r->lo, hi = r->hi;

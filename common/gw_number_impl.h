@@ -20,6 +20,7 @@
 typedef struct gw_num_range {
     double lo, hi;
     int open_lo, open_hi, or_zero;
+    int whole; /* 1: a count (whole numbers): its bounds printed as integers */
 } gw_num_range;
 
 /* The values r takes that are normal doubles or 0, as text into buf (n

@@ -166,7 +166,7 @@ static int choice_name(const char *choices, int i, char *buf, size_t n)
  * of a subnormal's refusal (gw_number_impl.h). */
 static gw_num_range row_range(const gw_param *p)
 {
-    return (gw_num_range){p->min, p->max, p->open_min, p->open_max, p->or_zero};
+    return (gw_num_range){p->min, p->max, p->open_min, p->open_max, p->or_zero, p->type == GW_PARAM_COUNT};
 }
 
 /* A subnormal double (nonzero, below DBL_MIN in magnitude): the text path

@@ -54,6 +54,12 @@ def _text(v):
     return str(v)
 
 
+def _grid_text(v):
+    """A grid value as the program's sweep writes it: an integral one without its '.0' (the module's
+    arrays hold floats; layer_stats refuses point '0.0' as a sweep config does, an integer key)."""
+    return int(v) if isinstance(v, float) and v.is_integer() and abs(v) < 1e15 else v
+
+
 def write_sweep_table(path, res, grid, params, model="layer"):
     """Write res (granwave.sweep(model, grid, **params)) to path with the columns of
     `granwave sweep`: '# param' lines for params (layer_stats reads rb-rm and alpha
@@ -69,7 +75,7 @@ def write_sweep_table(path, res, grid, params, model="layer"):
             f.write(f"# param {k.replace('_', '-')} = {_text(v)}\n")
         f.write(",".join(["case"] + [k.replace("_", "-") for k in keys] + cols) + "\n")
         for i in range(res["ncases"]):
-            cells = [str(i)] + [_text(res[k][i].item()) for k in keys] + [_text(float(res[c][i])) for c in cols]
+            cells = [str(i)] + [_text(_grid_text(res[k][i].item())) for k in keys] + [_text(float(res[c][i])) for c in cols]
             f.write(",".join(cells) + "\n")
     return path
 

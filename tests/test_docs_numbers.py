@@ -696,7 +696,7 @@ HELP_DEFAULTS = [
     ("chain", "--dt-out", "[0 = tau_1/200]", CHAIN3,
      lambda j: None if _rel(j["settings"]["solver"]["dt_out"], j["closed_forms"]["tau_1"] / 200)
      else f"dt_out {j['settings']['solver']['dt_out']!r}"),
-    ("chain", "--t-max", "[0 = 20 (n T_q + tau_1), of the heaviest bead, + 20 pi sqrt((n m + M)/k_s) on a sensor body]", CHAIN3,
+    ("chain", "--t-max", "[0 = 20 (n T_q + tau_1), of the heaviest bead, + 20 pi sqrt((n m + M)/k_s) on a sensor body, going on while contacts still act, up to 50 times that]", CHAIN3,
      lambda j: None if _rel(j["settings"]["solver"]["t_max"], 20 * (3 * j["closed_forms"]["t_q"] + j["closed_forms"]["tau_1"]))
      else f"t_max {j['settings']['solver']['t_max']!r}"),
     ("falcon", "--solver", "[rk4 by --accuracy;", FALCON, lambda j: None if j["settings"]["solver"]["name"] == "rk4"

@@ -26,9 +26,11 @@ clang $CF -o "$out/fuzz_cli" "$SRC/tests/fuzz/fuzz_cli.c" $common -lcjson -lm
 # the sweep journal a resumed sweep reads back, and the table written from it
 clang $CF -o "$out/fuzz_sweep_journal" "$SRC/tests/fuzz/fuzz_sweep_journal.c" $sweep $common \
     $sweeplibs -linih -lcjson -lm
-# the sweep table layer-stats reads, and the whole analysis after it (B.31 fit: GSL)
+# the sweep table layer-stats reads, and the whole analysis after it (B.31 fit: GSL);
+# the sweep module for the models' value rules the table's cells are held to (no
+# model is linked here: the rule's absence is the path taken)
 clang $CF -o "$out/fuzz_stats_table" "$SRC/tests/fuzz/fuzz_stats_table.c" "$SRC"/common/stats/*.c "$SRC/common/gw_fit.c" \
-    $common -lcjson -lgsl -lgslcblas -lm
+    $sweep $common $sweeplibs -linih -lcjson -lm
 # The layer sample reader (text, and HDF5 when the build has it: inputs up to
 # 16 kB so that the seed HDF5 samples fit). Without HDF5 flags for clang the
 # target is built text-only, with a gw_version.h that says so.

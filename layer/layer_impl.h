@@ -319,7 +319,10 @@ static inline int layer_body_region_near(const gw_layer *L, int i, const double 
 static inline int layer_contact_region_pt(const gw_layer *L, const layer_contact *c, double px,
                                           double py)
 {
-    if (c->qa == L->block_body || c->qb == L->block_body)
+    /* (the block's region only where there is a block: without one block_body
+     * is -1, the left wall's body code, and a library layer with regions
+     * counted its left-wall contacts in the block's region) */
+    if (L->block_body >= 0 && (c->qa == L->block_body || c->qb == L->block_body))
         return L->reg_n + 1;
     double dx = px - L->reg_cx, dy = py - L->reg_cy;
     double d2 = (dx * dx + dy * dy) / (L->reg_w * L->reg_w);
@@ -333,7 +336,7 @@ static inline int layer_contact_region_pt(const gw_layer *L, const layer_contact
 static inline int layer_contact_region_near(const gw_layer *L, const layer_contact *c, double px,
                                             double py, int q0)
 {
-    if (q0 >= 0 && q0 < L->reg_n && c->qa != L->block_body && c->qb != L->block_body) {
+    if (q0 >= 0 && q0 < L->reg_n && ((c->qa != L->block_body && c->qb != L->block_body) || L->block_body < 0)) {
         double dx = px - L->reg_cx, dy = py - L->reg_cy;
         double d2 = (dx * dx + dy * dy) * L->reg_iw2;
         if ((double)q0 * q0 <= d2 && d2 < (double)(q0 + 1) * (q0 + 1))

@@ -26,9 +26,11 @@
  *    impact in the equilibrium it settled in.
  * Before, the left wall's springs were never saved (the block index -1 of a
  * layer without a block is LAYER_LEFT): the left wall's sum and the layer
- * started from the springs missed that wall's friction (measured: the saved
- * side walls held ... of the live ...), and the pile started out of
- * equilibrium. Runs in about a second.
+ * started from the springs missed that wall's friction (measured: the discs'
+ * side walls held 2.31 of the weight started from the springs against 0.263
+ * live, a body's acceleration off by 33 g; the clumps' 0.055 against 0.156,
+ * 0.44 g), and the pile started out of equilibrium (8 of the 20 checks fail).
+ * Runs in about 1.5 s.
  */
 #include <math.h>
 #include <stdio.h>

@@ -36,7 +36,10 @@ int layer_springs_take(const gw_layer *L, const double *x, const double *y, cons
     int j = 0;
     for (int k = 0; k < L->nc; k++) {
         const layer_contact *c = &L->c[k];
-        if (f[k] == 0 || c->a == L->block || c->b == L->block)
+        /* (the block's contacts only where there is a block: without one
+         * L->block is -1, LAYER_LEFT, and every left-wall spring was left out
+         * of layer-make's samples) */
+        if (f[k] == 0 || (L->block >= 0 && (c->a == L->block || c->b == L->block)))
             continue;
         /* the overlap of the positions written (the reader's), K_t and the cap
          * there: the force used (the state clamped to the cap) as u_t */

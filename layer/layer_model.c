@@ -152,9 +152,23 @@ void layer_contact_rates(const gw_layer *L, const layer_contact *c, const double
     contact_kinematics(L, c, y, un, nn, und, vt, arma, armb, lev);
 }
 
+/* The vertical force contact k exerts on its body qa (the reverse on qb), N:
+ * 0 when it does not press */
+static double contact_fy(const gw_layer *L, const double *y, int k, const unsigned char *held, int ftm)
+{
+    const layer_contact *c = &L->c[k];
+    double un, nn[2], und, vt, arma[2], armb[2], lev[2];
+    contact_kinematics(L, c, y, &un, nn, &und, &vt, arma, armb, lev);
+    const double su = un > 0 ? sqrt(un) : 0, fel = c->kn * un * su;
+    if (!(un > 0) || !(fel > 0))
+        return 0;
+    const layer_cforce o = layer_contact_force(c, su, fel, und, vt, y[6 * L->nb + k], L->p.damping, L->tan_phi,
+                                               L->cap_rate, held ? held[k] : ftm);
+    return -o.fn * nn[1] + o.ft * nn[0];
+}
+
 double layer_body_contact_fy(const gw_layer *L, const double *y, int q, const int *idx, int n_idx)
 {
-    const int n = L->nb;
     const unsigned char *held;
     const int ftm = layer_ft_modes(L, &held);
     double fy = 0;
@@ -163,14 +177,7 @@ double layer_body_contact_fy(const gw_layer *L, const double *y, int q, const in
         const layer_contact *c = &L->c[k];
         if (c->qa != q && c->qb != q)
             continue;
-        double un, nn[2], und, vt, arma[2], armb[2], lev[2];
-        contact_kinematics(L, c, y, &un, nn, &und, &vt, arma, armb, lev);
-        const double su = un > 0 ? sqrt(un) : 0, fel = c->kn * un * su;
-        if (!(un > 0) || !(fel > 0))
-            continue;
-        const layer_cforce o = layer_contact_force(c, su, fel, und, vt, y[6 * n + k], L->p.damping, L->tan_phi,
-                                                   L->cap_rate, held ? held[k] : ftm);
-        const double f = -o.fn * nn[1] + o.ft * nn[0];
+        const double f = contact_fy(L, y, k, held, ftm);
         fy += c->qa == q ? f : -f;
     }
     return fy;
@@ -181,19 +188,9 @@ double layer_side_walls_fy(const gw_layer *L, const double *y)
     const unsigned char *held;
     const int ftm = layer_ft_modes(L, &held);
     double fy = 0;
-    for (int k = 0; k < L->nc; k++) {
-        const layer_contact *c = &L->c[k];
-        if (c->b != LAYER_LEFT && c->b != LAYER_RIGHT)
-            continue;
-        double un, nn[2], und, vt, arma[2], armb[2], lev[2];
-        contact_kinematics(L, c, y, &un, nn, &und, &vt, arma, armb, lev);
-        const double su = un > 0 ? sqrt(un) : 0, fel = c->kn * un * su;
-        if (!(un > 0) || !(fel > 0))
-            continue;
-        const layer_cforce o = layer_contact_force(c, su, fel, und, vt, y[6 * L->nb + k], L->p.damping, L->tan_phi,
-                                                   L->cap_rate, held ? held[k] : ftm);
-        fy += -o.fn * nn[1] + o.ft * nn[0];
-    }
+    for (int k = 0; k < L->nc; k++)
+        if (L->c[k].b == LAYER_LEFT || L->c[k].b == LAYER_RIGHT)
+            fy += contact_fy(L, y, k, held, ftm);
     return fy;
 }
 

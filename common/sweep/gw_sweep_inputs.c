@@ -114,62 +114,59 @@ int gw_sweep_resolve_paths(gw_sweep_config *cfg, const char *base, const char *p
 /* The registered rules: written by the models' constructors alone, before
  * main (one thread), read after. */
 #define RULES_MAX 8
-static struct {
-    const char *model;
-    gw_sweep_input_rule fn;
-} rules[RULES_MAX];
-static int nrules;
+/* A table of one kind of rule by model: the function held as void (*)(void),
+ * the one function pointer type any other converts to and back from */
+typedef void (*any_rule)(void);
+typedef struct rule_table {
+    struct {
+        const char *model;
+        any_rule fn;
+    } r[RULES_MAX];
+    int n;
+} rule_table;
+static rule_table input_rules, value_rules;
 
-void gw_sweep_input_rule_set(const char *model, gw_sweep_input_rule fn)
+static void rule_set(rule_table *t, const char *model, any_rule fn)
 {
     if (!model)
         return;
-    for (int i = 0; i < nrules; i++)
-        if (strcmp(rules[i].model, model) == 0) {
-            rules[i].fn = fn;
+    for (int i = 0; i < t->n; i++)
+        if (strcmp(t->r[i].model, model) == 0) {
+            t->r[i].fn = fn;
             return;
         }
-    if (nrules < RULES_MAX) {
-        rules[nrules].model = model;
-        rules[nrules++].fn = fn;
+    if (t->n < RULES_MAX) {
+        t->r[t->n].model = model;
+        t->r[t->n++].fn = fn;
     }
+}
+
+static any_rule rule_of(const rule_table *t, const char *model)
+{
+    for (int i = 0; model && i < t->n; i++)
+        if (strcmp(t->r[i].model, model) == 0)
+            return t->r[i].fn;
+    return NULL;
+}
+
+void gw_sweep_input_rule_set(const char *model, gw_sweep_input_rule fn)
+{
+    rule_set(&input_rules, model, (any_rule)fn);
 }
 
 gw_sweep_input_rule gw_sweep_input_rule_of(const char *model)
 {
-    for (int i = 0; model && i < nrules; i++)
-        if (strcmp(rules[i].model, model) == 0)
-            return rules[i].fn;
-    return NULL;
+    return (gw_sweep_input_rule)rule_of(&input_rules, model);
 }
-
-static struct {
-    const char *model;
-    gw_sweep_value_rule fn;
-} value_rules[RULES_MAX];
-static int nvalue_rules;
 
 void gw_sweep_value_rule_set(const char *model, gw_sweep_value_rule fn)
 {
-    if (!model)
-        return;
-    for (int i = 0; i < nvalue_rules; i++)
-        if (strcmp(value_rules[i].model, model) == 0) {
-            value_rules[i].fn = fn;
-            return;
-        }
-    if (nvalue_rules < RULES_MAX) {
-        value_rules[nvalue_rules].model = model;
-        value_rules[nvalue_rules++].fn = fn;
-    }
+    rule_set(&value_rules, model, (any_rule)fn);
 }
 
 gw_sweep_value_rule gw_sweep_value_rule_of(const char *model)
 {
-    for (int i = 0; model && i < nvalue_rules; i++)
-        if (strcmp(value_rules[i].model, model) == 0)
-            return value_rules[i].fn;
-    return NULL;
+    return (gw_sweep_value_rule)rule_of(&value_rules, model);
 }
 
 /* value (of key read_key) through its model's rules when it names something */

@@ -214,6 +214,7 @@ double gw_layer_particle_inertia(const gw_layer *L, int i);
 int gw_layer_body_count(const gw_layer *L);
 int gw_layer_body_of(const gw_layer *L, int i);
 void gw_layer_body_state(const gw_layer *L, int k, double s[6]);
+/* The layer's parameters: NULL for a NULL L. */
 const gw_layer_params *gw_layer_get_params(const gw_layer *L);
 /* Number of closed contacts (u_n > 0) of particle i, walls included. */
 int gw_layer_contact_count(const gw_layer *L, int i);

@@ -765,12 +765,14 @@ void gw_chain_free(gw_chain *c)
 
 const gw_system *gw_chain_system(const gw_chain *c)
 {
-    return &c->sys;
+    /* NULL: NULL (&c->sys of a NULL c was undefined behaviour, a sanitizer report) */
+    return c ? &c->sys : NULL;
 }
 
 const gw_chain_params *gw_chain_get_params(const gw_chain *c)
 {
-    return &c->p;
+    /* NULL: NULL (&c->p of a NULL c was undefined behaviour, a sanitizer report) */
+    return c ? &c->p : NULL;
 }
 
 double gw_chain_bead_mass(const gw_chain *c, int i)

@@ -26,6 +26,22 @@ static int has_key(const char *name)
     return p && gw_param_is_input(p) && strcmp(p->name, "trace") != 0;
 }
 
+/* One value of a key as a case takes it (gw_sweep_value_rule): a number
+ * row's checks (range, integer, no subnormal), which a sweep config's
+ * [params] value is read by ('n = 3:5' was refused only at the first case's
+ * check); any other row is its reader's. */
+static int value_rule(const char *name, const char *value, gw_err *err)
+{
+    if (!name || !value || !has_key(name))
+        return GW_OK;
+    return gw_sweep_number_check(gw_param_find(gw_chain_setup_params(), name), value, err);
+}
+
+__attribute__((constructor)) static void chain_value_rule(void)
+{
+    gw_sweep_value_rule_set("chain", value_rule);
+}
+
 /* The case's setup from its pairs; GW_EINVAL "NAME: reason" for a bad value. */
 static int prepare(gw_chain_setup *s, int nk, const char *const *names, const char *const *values, gw_err *err)
 {

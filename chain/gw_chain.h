@@ -314,6 +314,7 @@ void gw_chain_free(gw_chain *c);
  * dissipated energy before the beads (gw_system.lead0, nlead): they couple only
  * to bead 1, and the Jacobian stays banded (finite differences); the
  * dissipated energy is a ledger (nledger). */
+/* The column's system and parameters: NULL for a NULL c. */
 const gw_system *gw_chain_system(const gw_chain *c);
 const gw_chain_params *gw_chain_get_params(const gw_chain *c);
 double gw_chain_bead_mass(const gw_chain *c, int i);

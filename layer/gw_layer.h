@@ -214,6 +214,7 @@ double gw_layer_particle_inertia(const gw_layer *L, int i);
 int gw_layer_body_count(const gw_layer *L);
 int gw_layer_body_of(const gw_layer *L, int i);
 void gw_layer_body_state(const gw_layer *L, int k, double s[6]);
+/* The layer's parameters: NULL for a NULL L. */
 const gw_layer_params *gw_layer_get_params(const gw_layer *L);
 /* Number of closed contacts (u_n > 0) of particle i, walls included. */
 int gw_layer_contact_count(const gw_layer *L, int i);
@@ -243,7 +244,9 @@ double gw_layer_energy_initial(const gw_layer *L);
  * energy go by particle centre, strain energy, friction dissipation and W_K by
  * contact point; dissipation and W_K are integrated per region as part of the
  * ODE state. Must be called before gw_layer_start (GW_EINVAL otherwise; the
- * layer is unchanged on failure). */
+ * layer is unchanged on failure). cx, cy finite; w finite, a normal double
+ * whose square is one too (w >= 1.49167e-154 m: a subnormal is refused as
+ * the program's options refuse one); nring in [1, 10000]. */
 int gw_layer_set_regions(gw_layer *L, double cx, double cy, double w, int nring, gw_err *err);
 /* Number of regions (nring + 2, or 0 when none were set). */
 int gw_layer_region_count(const gw_layer *L);

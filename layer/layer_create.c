@@ -272,7 +272,8 @@ double gw_layer_particle_inertia(const gw_layer *L, int i)
 
 const gw_layer_params *gw_layer_get_params(const gw_layer *L)
 {
-    return &L->p;
+    /* NULL: NULL (&L->p of a NULL L was undefined behaviour, a sanitizer report) */
+    return L ? &L->p : NULL;
 }
 
 void gw_layer_set_block(gw_layer *L, int i)

@@ -14,11 +14,13 @@
  * ledger (to rounding), which the tests check.
  * Units: SI (m, J).
  */
+#include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "layer_impl.h"
+#include "gw_number_impl.h"
 
 int layer_contact_region_at(const gw_layer *L, const layer_contact *c, const double *y,
                             double un, const double nn[2])
@@ -48,6 +50,19 @@ int gw_layer_set_regions(gw_layer *L, double cx, double cy, double w, int nring,
         return gw_err_set(err, GW_EINVAL, "layer regions: centre (%g, %g) m must be finite", cx, cy);
     if (!(w > 0) || !isfinite(w))
         return gw_err_set(err, GW_EINVAL, "layer regions: ring width %g m must be positive", w);
+    /* A subnormal width (4.9e-324 m) was taken: 1/w^2 overflowed to inf, a
+     * disc at the centre fell in ring 0 * inf = NaN (cast to a ring index).
+     * The program's rule for a subnormal, and a width whose square is no
+     * normal double (below 1.4917e-154 m) refused with it: every ring
+     * lookup divides by w^2. A subnormal centre is a coordinate of 0 m in
+     * effect (cx, cy are where a run computed its impact): taken. */
+    if (w < DBL_MIN) {
+        const gw_num_range r = {0, INFINITY, 1, 0, 0};
+        return gw_num_subnormal_refused("layer regions", "ring width w", &r, err);
+    }
+    if (!(w * w >= DBL_MIN))
+        return gw_err_set(err, GW_EINVAL, "layer regions: ring width w = %g m is too small: its square is no normal "
+                          "double (give a width of at least 1.49167e-154 m)", w);
     if (nring < 1 || nring > 10000)
         return gw_err_set(err, GW_EINVAL, "layer regions: %d rings (1 .. 10000)", nring);
     const long n6 = 6L * L->nb;

@@ -9,11 +9,13 @@
  * (layer_model.c): it reads a state between steps, never within one.
  * Units: SI (m, N, J).
  */
+#include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "layer_impl.h"
+#include "gw_number_impl.h"
 
 const double *layer_snapshot(const gw_layer *L)
 {
@@ -83,6 +85,10 @@ int gw_layer_rings_check(const gw_layer *L, double cx, double cy, double w, int 
      * negative width counted none: each without a word */
     if (!(w > 0) || !isfinite(w))
         return gw_err_set(err, GW_EINVAL, "%s: ring width w = %g m must be finite and > 0", who, w);
+    if (w < DBL_MIN) { /* subnormal: every disc outside the rings, zeros without a word */
+        const gw_num_range r = {0, INFINITY, 1, 0, 0};
+        return gw_num_subnormal_refused(who, "ring width w", &r, err);
+    }
     if (nring < 0)
         return gw_err_set(err, GW_EINVAL, "%s: nring = %d rings must be >= 0", who, nring);
     if (nring > 0 && (!kinetic || !strain || !coord))

@@ -707,24 +707,7 @@ static int value_rule(const char *name, const char *value, gw_err *err)
         p = gw_param_find(gw_layer_impact_setup_params(), name);
     if (!p)
         return GW_OK;
-    switch (p->type) {
-    case GW_PARAM_DOUBLE: {
-        double v;
-        return gw_param_set_value(p, &v, value, err);
-    }
-    case GW_PARAM_LONG: {
-        long v;
-        return gw_param_set_value(p, &v, value, err);
-    }
-    case GW_PARAM_INT:
-    case GW_PARAM_FLAG:
-    case GW_PARAM_CHOICE: {
-        int v;
-        return gw_param_set_value(p, &v, value, err);
-    }
-    default:
-        return GW_OK;
-    }
+    return gw_sweep_number_check(p, value, err);
 }
 
 /* The sweep's rules for the samples it hashes: the sample reader's

@@ -126,6 +126,12 @@ int gw_layer_write_pvd(const char *path, int n, const char *const *files, const 
         if (!files[k] || !isfinite(times[k]))
             return gw_err_set(err, GW_EINVAL, "gw_layer_write_pvd: snapshot %d: %s", k,
                               !files[k] ? "file is NULL" : "time not finite");
+        /* a collection is one series in time: times out of order (1, 0) or
+         * repeated were written as given, and ParaView played them in the
+         * order of their times, not of the list */
+        if (k > 0 && !(times[k] > times[k - 1]))
+            return gw_err_set(err, GW_EINVAL, "gw_layer_write_pvd: snapshot %d: time %.17g s is not after snapshot "
+                              "%d's %.17g s (times must increase)", k, times[k], k - 1, times[k - 1]);
         for (const char *c = files[k]; *c;) {
             const size_t len = gw_utf8_len(c);
             if (len == 0 || (unsigned char)*c < 0x20 || *c == 0x7f)

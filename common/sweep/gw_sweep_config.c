@@ -41,6 +41,7 @@ typedef struct parse_ctx {
     long ncalls, call;
     char *pending;
     int nomem; /* the failed call was out of memory (not a mistake of the file) */
+    const char *data_section; /* "grid" or "params" once a key of one was read */
 } parse_ctx;
 
 char *gw_sweep_strdup(const char *s)
@@ -292,6 +293,13 @@ static int handler_one(parse_ctx *pc, const char *section, const char *name, con
 {
     gw_sweep_config *cfg = pc->cfg;
     if (strcmp(section, "sweep") == 0) {
+        /* a second [sweep] after [grid] set its keys as the first one's
+         * (out = x there was the sweep's output directory) */
+        if (pc->data_section) {
+            gw_snprintf(pc->msg, sizeof pc->msg, "'%s' in a [sweep] section after [%s]: the config has one [sweep] "
+                        "section, before [grid] and [params]", name, pc->data_section);
+            return 0;
+        }
         char **dst = strcmp(name, "model") == 0 ? &cfg->model : strcmp(name, "out") == 0 ? &cfg->out : NULL;
         if (!dst) {
             gw_snprintf(pc->msg, sizeof pc->msg, "unknown key '%s' in [sweep] (model, out)", name);
@@ -326,6 +334,7 @@ static int handler_one(parse_ctx *pc, const char *section, const char *name, con
         gw_snprintf(pc->msg, sizeof pc->msg, "[sweep] model must come before [%s]", section);
         return 0;
     }
+    pc->data_section = is_grid ? "grid" : "params";
     const gw_sweep_model *m = NULL;
     for (int i = 0; i < pc->nmodels; i++)
         if (strcmp(pc->models[i]->name, cfg->model) == 0)
@@ -374,6 +383,15 @@ static int handler_one(parse_ctx *pc, const char *section, const char *name, con
     if (!k->values || !(k->values[0] = gw_sweep_strdup(value)))
         return parse_nomem(pc);
     k->nvalues = 1;
+    /* One value, by the model's rule for it: a range 'n = 3:5' or a list
+     * 'vimp = 1, 2' in [params] was read as one text and refused only by the
+     * first case's check, without its line ([grid] takes lists and ranges). */
+    const gw_sweep_value_rule rule = gw_sweep_value_rule_of(cfg->model);
+    gw_err e;
+    if (rule && rule(canon, value, &e) != GW_OK) {
+        gw_snprintf(pc->msg, sizeof pc->msg, "[params] %s (one value: lists and ranges go in [grid])", e.msg);
+        return 0;
+    }
     return 1;
 }
 
@@ -604,7 +622,7 @@ int gw_sweep_config_read(const char *path, const gw_sweep_model *const *models, 
                           !cfg ? "cfg" : !model ? "model" : !path ? "path" : "models");
     memset(cfg, 0, sizeof *cfg);
     *model = NULL;
-    parse_ctx pc = {cfg, models, nmodels, "", 0, 0, NULL, 0, 0, NULL, 0};
+    parse_ctx pc = {cfg, models, nmodels, "", 0, 0, NULL, 0, 0, NULL, 0, NULL};
     char *text = NULL;
     size_t len = 0;
     int rc = gw_input_read(path, "sweep CONFIG", GW_SWEEP_CONFIG_MAX, &text, &len, err);
@@ -660,7 +678,7 @@ int gw_sweep_config_read_string(const char *text, const char *name, const gw_swe
     if (len > (size_t)GW_SWEEP_CONFIG_MAX)
         return gw_err_set(err, GW_EINVAL, "%s: the config takes %zu bytes, above the %ld of a sweep config", name,
                           len, GW_SWEEP_CONFIG_MAX);
-    parse_ctx pc = {cfg, models, nmodels, "", 0, 0, NULL, 0, 0, NULL, 0};
+    parse_ctx pc = {cfg, models, nmodels, "", 0, 0, NULL, 0, 0, NULL, 0, NULL};
     int lrc = lines_fit(text, name, 0, &pc, err);
     if (lrc != GW_OK) {
         free(pc.calls);

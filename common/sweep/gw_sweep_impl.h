@@ -89,6 +89,13 @@ typedef int (*gw_sweep_value_rule)(const char *name, const char *value, gw_err *
 void gw_sweep_value_rule_set(const char *model, gw_sweep_value_rule fn);
 gw_sweep_value_rule gw_sweep_value_rule_of(const char *model);
 
+/* Whether value is one value that number row p (double, long, int, flag,
+ * choice) takes, by gw_param_set_value's checks, nothing set ("n: '3:5' is
+ * not an integer"); GW_OK for the other kinds of row (text, list, range:
+ * their own readers judge a comma or a colon) and for p NULL. */
+struct gw_param;
+int gw_sweep_number_check(const struct gw_param *p, const char *value, gw_err *err);
+
 /* gw_sweep_rows.c: a complete journal line's case number (-1: not a row of
  * ncases with a good checksum); why a line is not one of this sweep's rows
  * (static text, or msg filled; NULL: it is). */

@@ -16,6 +16,7 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "gw_param.h"
 #include "gw_sweep.h"
 #include "gw_locale.h"
 #include "gw_sweep_impl.h"
@@ -392,4 +393,28 @@ int gw_sweep_out_inputs_check(const char *dir, const gw_sweep_config *cfg, gw_er
         if (gw_outset_check_input(dir, outs, cfg->inputs[i].value, "sweep", err) != GW_OK)
             return GW_EINVAL;
     return GW_OK;
+}
+
+int gw_sweep_number_check(const struct gw_param *p, const char *value, gw_err *err)
+{
+    if (!p || !value)
+        return GW_OK;
+    switch (p->type) {
+    case GW_PARAM_DOUBLE: {
+        double v;
+        return gw_param_set_value(p, &v, value, err);
+    }
+    case GW_PARAM_LONG: {
+        long v;
+        return gw_param_set_value(p, &v, value, err);
+    }
+    case GW_PARAM_INT:
+    case GW_PARAM_FLAG:
+    case GW_PARAM_CHOICE: {
+        int v;
+        return gw_param_set_value(p, &v, value, err);
+    }
+    default:
+        return GW_OK;
+    }
 }

@@ -11,6 +11,8 @@ import os
 import signal
 import threading
 
+import numpy
+
 from . import _lib
 from ._lib import lib
 # the parts' names are _core's too: the package and the tests reach them as _core.X
@@ -169,7 +171,10 @@ class Interruptible:
 class Progress:
     """A Python progress callback f(done, total) as a C gw_progress_fn: an
     exception in f (KeyboardInterrupt included) stops the call and is raised
-    again once the library has returned."""
+    again once the library has returned. f returns None or False to go on,
+    True (a numpy bool too) to stop; anything else stops the call with a
+    TypeError naming f and what it returned (any truthy value stopped it:
+    "no", 1, a list)."""
 
     def __init__(self, fn, what="sweep"):
         if fn is not None and not callable(fn):
@@ -177,6 +182,7 @@ class Progress:
             raise TypeError(f"{what}: progress must be a callable f(done, total) or None, got "
                             f"{type(fn).__name__} ({_show(fn)})")
         self.fn = fn
+        self.what = what
         self.exc = None
         self.interruptible = False  # set by the call, under Interruptible
         self.interrupted = False
@@ -196,13 +202,27 @@ class Progress:
                 self.interrupted = True
                 signal.raise_signal(signal.SIGINT)  # KeyboardInterrupt, or the program's own handler
                 return 1
-            return 1 if self.fn(done, total) else 0
+            return self._verdict(self.fn(done, total))
         except BaseException as e:  # noqa: B902 - handed back to the caller
             self.exc = e
             return 1
         finally:
             if swap:
                 lib.gw_interrupt_begin()
+
+    def _verdict(self, r):
+        # None and False go on, True stops (numpy's bool_ alike: d >= 50 on a
+        # numpy number); a string, a number or a container was taken by its
+        # truth ("no" stopped the run, 0.0 did not)
+        if r is None or r is False:
+            return 0
+        if r is True:
+            return 1
+        if isinstance(r, numpy.bool_):
+            return 1 if bool(r) else 0
+        name = getattr(self.fn, "__qualname__", None) or type(self.fn).__name__
+        raise TypeError(f"{self.what}: progress callback {name} returned {type(r).__name__} ({_show(r)}): "
+                        f"return None or False to go on, True to stop")
 
     def reraise(self, what="sweep"):
         # the C callback holds this object (c_fn -> _call -> self) and the

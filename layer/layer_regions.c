@@ -57,7 +57,7 @@ int gw_layer_set_regions(gw_layer *L, double cx, double cy, double w, int nring,
      * lookup divides by w^2. A subnormal centre is a coordinate of 0 m in
      * effect (cx, cy are where a run computed its impact): taken. */
     if (w < DBL_MIN) {
-        const gw_num_range r = {0, INFINITY, 1, 0, 0};
+        const gw_num_range r = {0, INFINITY, 1, 0, 0, 0};
         return gw_num_subnormal_refused("layer regions", "ring width w", &r, err);
     }
     if (!(w * w >= DBL_MIN))

@@ -86,7 +86,7 @@ int gw_layer_rings_check(const gw_layer *L, double cx, double cy, double w, int 
     if (!(w > 0) || !isfinite(w))
         return gw_err_set(err, GW_EINVAL, "%s: ring width w = %g m must be finite and > 0", who, w);
     if (w < DBL_MIN) { /* subnormal: every disc outside the rings, zeros without a word */
-        const gw_num_range r = {0, INFINITY, 1, 0, 0};
+        const gw_num_range r = {0, INFINITY, 1, 0, 0, 0};
         return gw_num_subnormal_refused(who, "ring width w", &r, err);
     }
     if (nring < 0)

@@ -1,6 +1,10 @@
 #!/bin/bash
 # test_left48.sh GRANWAVE SRCDIR: what the forty-eighth pass left, asserted
 # through the program.
+#  1 `chain --n 20 --rtol 1e-4 --atol 1e-4` ended at a relative energy error of
+#    0.6 % with no warning while --energy-tol was off: above 1e-3 it is warned
+#    (stderr, the JSON's warnings, Python), naming rtol and atol; the default
+#    tolerances (5.4e-10) and --energy-tol given warn nothing.
 #  3 A range-valued option (falcon, wavespeed, softwall --n A:B) refused
 #    '1:3:1' as "'3:1' is not an integer", quoting a fragment: the refusal now
 #    quotes the whole value given and the form a range takes (A:B, A <= B),
@@ -18,6 +22,32 @@
 . "$2/tests/refusal_lib.sh"
 hostile_setup "$@"
 export LC_ALL=C
+
+# --- 1 chain: a large energy error under loose tolerances is warned ---
+# rtol = atol = 1e-4 ends at 0.6 % (the default tolerances: 5.4e-10); the bound 1e-3
+if runs_json "chain --rtol 1e-4 --atol 1e-4" c.json chain --n 20 --rtol 1e-4 --atol 1e-4; then
+    res=$(jq_py c.json '(d["energy_error"] > 1e-3, sum("energy error reached" in w and "rtol = 0.0001, atol = 0.0001" in w for w in d["warnings"]))')
+    nerr=$(grep -c "granwave chain: warning: the relative energy error reached 0.006 .* rtol = 0.0001, atol = 0.0001" "$tmp/stderr")
+    [ "$res" = "(True, 1)" ] && [ "$nerr" = 1 ] && ok "chain --rtol 1e-4 --atol 1e-4: energy error above 1e-3 warned once on stderr and in the JSON, naming rtol and atol" ||
+        ko "chain --rtol 1e-4 --atol 1e-4: $res, $nerr stderr warnings: $(head -c 300 "$tmp/stderr")"
+fi
+# controls: the default run and a run with --energy-tol on (it stops at its bound instead) warn nothing
+cpu_run 60 "$GW" chain --n 20 --quiet --json >d.json 2>"$tmp/stderr"
+[ $? = 0 ] && [ ! -s "$tmp/stderr" ] && [ "$(jq_py d.json 'd["warnings"]')" = "[]" ] &&
+    ok "control: chain --n 20 at the default tolerances: no warning" || ko "control: chain --n 20: $(head -c 300 "$tmp/stderr")"
+cpu_run 60 "$GW" chain --n 20 --rtol 1e-4 --atol 1e-4 --energy-tol 1 --quiet --json >e.json 2>"$tmp/stderr"
+[ $? = 0 ] && [ "$(jq_py e.json 'd["warnings"]')" = "[]" ] &&
+    ok "control: --energy-tol 1 given: no energy warning" || ko "control: --energy-tol 1: $(jq_py e.json 'd["warnings"]')"
+# Python: the same warning from granwave.chain
+if ! sanitizer_build; then
+    got=$(pyenv /usr/bin/python3 -c "
+import warnings, granwave
+with warnings.catch_warnings(record=True) as w:
+    warnings.simplefilter('always')
+    granwave.chain(n=20, rtol=1e-4, atol=1e-4)
+print(sum('energy error reached' in str(x.message) and 'rtol = 0.0001' in str(x.message) for x in w))" 2>&1)
+    [ "$got" = 1 ] && ok "Python chain(rtol=1e-4, atol=1e-4): the energy warning" || ko "Python chain: $got"
+fi
 
 # --- 3 a range option's refusal quotes the whole value and the form A:B ---
 refused "falcon --n 1:3:1" "^granwave falcon --n: '1:3:1' is not a range A:B of integers, A <= B" falcon --n 1:3:1

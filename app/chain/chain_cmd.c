@@ -233,8 +233,9 @@ int gw_cmd_chain(int argc, char **argv)
          * library's text (out of memory for it: none), said on stderr and
          * listed in chain.json and --json */
         char *w = NULL;
-        if (chain_damping_zero_warnings(&c.params, 0, 1, &w) == GW_OK)
-            (void)gw_chain_result_warnings(&r, &w);
+        if (chain_damping_zero_warnings(&c.params, 0, 1, &w) == GW_OK &&
+            gw_chain_result_warnings(&r, &w) == GW_OK)
+            (void)chain_energy_warning(r.energy_error, &c.run, &w);
         if (c.out) {
             char *hdr = run_header(&c, &r, argc, argv);
             char path[4096];

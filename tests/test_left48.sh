@@ -4,7 +4,8 @@
 #  1 `chain --n 20 --rtol 1e-4 --atol 1e-4` ended at a relative energy error of
 #    0.6 % with no warning while --energy-tol was off: above 1e-3 it is warned
 #    (stderr, the JSON's warnings, Python), naming rtol and atol; the default
-#    tolerances (5.4e-10) and --energy-tol given warn nothing.
+#    tolerances (5.4e-10) and --energy-tol given warn nothing. The same for
+#    layer-impact (--solver cvode --rtol 1e-4 --atol 1e-4: 1.55 %).
 #  3 A range-valued option (falcon, wavespeed, softwall --n A:B) refused
 #    '1:3:1' as "'3:1' is not an integer", quoting a fragment: the refusal now
 #    quotes the whole value given and the form a range takes (A:B, A <= B),
@@ -38,15 +39,33 @@ cpu_run 60 "$GW" chain --n 20 --quiet --json >d.json 2>"$tmp/stderr"
 cpu_run 60 "$GW" chain --n 20 --rtol 1e-4 --atol 1e-4 --energy-tol 1 --quiet --json >e.json 2>"$tmp/stderr"
 [ $? = 0 ] && [ "$(jq_py e.json 'd["warnings"]')" = "[]" ] &&
     ok "control: --energy-tol 1 given: no energy warning" || ko "control: --energy-tol 1: $(jq_py e.json 'd["warnings"]')"
-# Python: the same warning from granwave.chain
+# layer-impact --solver cvode --rtol 1e-4 --atol 1e-4 on a 40-disc pile: 1.55 % (defaults: 3.4e-5 rk4, 1.4e-6 CVODE)
+make_sample pile.txt --n 40 --quiet
+if runs_json "layer-impact --solver cvode --rtol 1e-4 --atol 1e-4" l.json layer-impact --sample pile.txt --solver cvode --rtol 1e-4 --atol 1e-4; then
+    res=$(jq_py l.json '(d["energy_error"] > 1e-3, sum("energy error reached" in w and "rtol = 0.0001, atol = 0.0001" in w for w in d["warnings"]))')
+    nerr=$(grep -c "granwave layer-impact: warning: the relative energy error reached .* rtol = 0.0001, atol = 0.0001" "$tmp/stderr")
+    [ "$res" = "(True, 1)" ] && [ "$nerr" = 1 ] && ok "layer-impact cvode at 1e-4: energy error above 1e-3 warned on stderr and in the JSON, naming rtol and atol" ||
+        ko "layer-impact cvode at 1e-4: $res, $nerr stderr warnings: $(head -c 300 "$tmp/stderr")"
+fi
+for a in "" "--solver cvode" "--solver cvode --rtol 1e-4 --atol 1e-4 --energy-tol 1"; do
+    # shellcheck disable=SC2086
+    cpu_run 60 "$GW" layer-impact --sample pile.txt $a --quiet --json >m.json 2>"$tmp/stderr"
+    [ $? = 0 ] && [ ! -s "$tmp/stderr" ] && [ "$(jq_py m.json 'd["warnings"]')" = "[]" ] &&
+        ok "control: layer-impact ${a:-(default)}: no warning" || ko "control: layer-impact $a: $(head -c 300 "$tmp/stderr")"
+done
+# Python: the same warning from granwave.chain and granwave.layer_impact
 if ! sanitizer_build; then
     got=$(pyenv /usr/bin/python3 -c "
 import warnings, granwave
 with warnings.catch_warnings(record=True) as w:
     warnings.simplefilter('always')
     granwave.chain(n=20, rtol=1e-4, atol=1e-4)
-print(sum('energy error reached' in str(x.message) and 'rtol = 0.0001' in str(x.message) for x in w))" 2>&1)
-    [ "$got" = 1 ] && ok "Python chain(rtol=1e-4, atol=1e-4): the energy warning" || ko "Python chain: $got"
+print(sum('energy error reached' in str(x.message) and 'rtol = 0.0001' in str(x.message) for x in w))
+with warnings.catch_warnings(record=True) as w:
+    warnings.simplefilter('always')
+    granwave.layer_impact(sample='pile.txt', solver='cvode', rtol=1e-4, atol=1e-4)
+print(sum('energy error reached' in str(x.message) and 'rtol = 0.0001' in str(x.message) for x in w))" 2>&1 | tr '\n' ' ')
+    [ "$got" = "1 1 " ] && ok "Python chain and layer_impact at rtol = atol = 1e-4: the energy warning" || ko "Python: $got"
 fi
 
 # --- 3 a range option's refusal quotes the whole value and the form A:B ---
@@ -59,7 +78,6 @@ grep -q "range '3:1' is empty" "$tmp/stderr" && ok "control: falcon --n 3:1 refu
     ko "control: falcon --n 3:1: $(cat "$tmp/stderr")"
 
 # --- 4 layer-impact: a steep incidence named with vi, and the largest that runs ---
-make_sample pile.txt --n 40 --quiet
 rm -rf o
 if exits_refused "layer-impact --alpha 89.9" "^granwave layer-impact --vi: 20 m/s at incidence alpha 89.9 deg is too slow" 30 \
     "$GW" layer-impact --sample pile.txt --alpha 89.9; then

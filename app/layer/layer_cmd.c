@@ -743,7 +743,8 @@ int gw_cmd_layer_impact(int argc, char **argv)
     /* the library's texts, one line each (out of memory for them: no line): a
      * sample settled under another material, an undecided outcome (the JSON
      * says null); the JSON's "warnings" and the outputs' headers record them */
-    (void)gw_layer_impact_result_warnings(&r, &w);
+    if (gw_layer_impact_result_warnings(&r, &w) == GW_OK)
+        (void)layer_energy_warning(&r, &c.ip, type, &sp, &w);
     gw_cli_warnings("layer-impact", w);
     cJSON *j = impact_json(&c, &r, &sp);
     gw_cli_json_warnings(j, w);

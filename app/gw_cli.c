@@ -478,6 +478,12 @@ int gw_cli_study_error(const gw_param *t, const char *cmd, int rc, gw_err *err)
     return gw_err_set(err, rc, named ? "%s --%s" : "%s: %s", cmd, tmp);
 }
 
+const char *gw_cli_path(char *buf, size_t n, const char *path)
+{
+    gw_one_line(buf, n, path ? path : "");
+    return buf;
+}
+
 int gw_cli_nomem(const char *cmd)
 {
     fprintf(stderr, "granwave %s: out of memory\n", cmd);

@@ -191,6 +191,11 @@ int gw_cli_stdout_failed(const char *cmd, int e);
 /* "granwave CMD: out of memory" on stderr; returns 1 (a run failure, not bad
  * input: the command line was not read wrong). */
 int gw_cli_nomem(const char *cmd);
+/* A path the program echoes (a file written, a directory), as one line
+ * (gw_one_line: a newline in an --out name printed \n, not a raw line
+ * break); into buf (n bytes, GW_CLI_PATH_TEXT holds any), returns buf. */
+#define GW_CLI_PATH_TEXT 4096
+const char *gw_cli_path(char *buf, size_t n, const char *path);
 
 
 /* --out made only as far as needed and taken back on a refusal:

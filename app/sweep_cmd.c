@@ -685,8 +685,10 @@ static void say_error(const gw_err *err)
  * run again, or a torn line of the head, torn_head 1, or a zeroed end,
  * torn_head 2, cut), or write the table
  * only. */
-static void check_report(const char *out, long ncases, int exists, long ndone, size_t torn, int torn_head)
+static void check_report(const char *out_given, long ncases, int exists, long ndone, size_t torn, int torn_head)
 {
+    char out[GW_CLI_PATH_TEXT];
+    gw_cli_path(out, sizeof out, out_given);
     if (!exists) {
         printf("sweep: %s: no journal yet: a run starts all %ld cases\n", out, ncases);
         return;
@@ -1063,8 +1065,11 @@ int gw_cmd_sweep(int argc, char **argv, const gw_sweep_model *const *models, con
                     fprintf(stderr, "granwave sweep: warning: %s was moved while the sweep ran: its journal and "
                             "table are in %s\n", out, where);
                 if (!quiet)
+                {
+                    char q[GW_CLI_PATH_TEXT];
                     fprintf(stderr, "sweep: %ld cases in %.1f s; table %s/results.csv\n", s.done,
-                            (gw_clock_ms() - s.prog.t0) / 1e3, now);
+                            (gw_clock_ms() - s.prog.t0) / 1e3, gw_cli_path(q, sizeof q, now));
+                }
             }
         }
     }

@@ -59,6 +59,12 @@ int chain_damping_held_error(const gw_chain_params *p, const char *who, const ch
  * or is NULL), or for zero of a sweep's total cases (p NULL); GW_OK or
  * GW_ENOMEM (gw_warnings_add). */
 int chain_damping_zero_warnings(const gw_chain_params *p, int zero, int total, char **list);
+/* A run's energy error above GW_CHAIN_ENERGY_WARN with energy_tol off (0):
+ * a warning naming the error and the solver's rtol and atol (rk4: its step),
+ * the integration too loose to trust the column's numbers. Nothing when
+ * energy_tol is on (the run stops at it instead). GW_OK or GW_ENOMEM. */
+#define GW_CHAIN_ENERGY_WARN 1e-3
+int chain_energy_warning(double energy_error, const gw_chain_run_opts *o, char **list);
 /* The same rule over a study's sizes from n_lo (falcon, wavespeed, softwall):
  * GW_EINVAL naming damping when n_lo is 1 and p's wall (any n) is such a wall;
  * sheet (may be NULL) names the wall in the message. */

@@ -15,6 +15,7 @@
 #include "gw_chain.h"
 #include "gw_chain_study.h"
 #include "chain_model.h"
+#include "chain_wall.h"
 #include "gw_locale.h"
 
 const char chain_held_pending[] = "held by gravity: the column fell back onto the wall before its collision ended";
@@ -444,4 +445,25 @@ int chain_wavespeed_warnings(const gw_chain_wavespeed_outcome *o, const gw_chain
                            "4R/T_q %.4g, front %.4g, group/sqrt(3/2) %.4g m/s), beyond %.2g (twice the 0.115 of a "
                            "steel column on a steel wall up to N = 120): %s", o->max_disagreement, o->v_imp[iv], o->v_tq[iv],
                            o->v_front[iv], o->v_group_front[iv], WS_DISAGREE_MAX, why);
+}
+
+/* chain --n 20 --rtol 1e-4 --atol 1e-4 ended with a relative energy error of
+ * 0.6 % and said nothing while energy-tol was off (its default). The bound:
+ * the default tolerances give 5.4e-10 (chain --n 20, rtol 1e-12), and the
+ * layer's runs 3.4e-5 (rk4) and 1.4e-6 (CVODE); 1e-3 (0.1 %) stands 30 times
+ * above the largest of them and below what a loose tolerance gives (6e-3 at
+ * rtol = atol = 1e-4, 9.9e-4 at 1e-5). */
+int chain_energy_warning(double energy_error, const gw_chain_run_opts *o, char **list)
+{
+    if (!o || o->energy_tol > 0 || !(energy_error > GW_CHAIN_ENERGY_WARN))
+        return GW_OK;
+    const char *name = o->solver ? gw_solver_type_name(o->solver) : "cvode";
+    if (name && strcmp(name, "rk4") == 0)
+        return gw_warnings_add(list, "the relative energy error reached %.3g (%.3g %%, above %g): the rk4 step dt = "
+                               "%g s is too coarse to trust the run's numbers: lower --dt, or set --energy-tol to "
+                               "stop at a bound", energy_error, 100 * energy_error, GW_CHAIN_ENERGY_WARN, o->sp.dt);
+    return gw_warnings_add(list, "the relative energy error reached %.3g (%.3g %%, above %g) at rtol = %g, atol = %g: "
+                           "the tolerances are too loose to trust the run's numbers: tighten --rtol and --atol, or "
+                           "set --energy-tol to stop at a bound", energy_error, 100 * energy_error,
+                           GW_CHAIN_ENERGY_WARN, o->sp.rtol, o->sp.atol);
 }

@@ -535,12 +535,27 @@ int gw_parse_int_range(const char *s, const char *name, long lo, long hi, long *
     char left[64];
     size_t ln = (size_t)(colon - s);
     if (ln >= sizeof left)
-        return gw_err_set(err, GW_EINVAL, "%s: '%s' is not a range A:B", name, s);
+        return gw_err_set(err, GW_EINVAL, "%s: '%s' is not a range A:B (give an integer or a range A:B of "
+                          "integers in [%ld, %ld], A <= B)", name, s, lo, hi);
     memcpy(left, s, ln);
     left[ln] = '\0';
     int rc = gw_parse_long(left, name, lo, hi, a, err);
+    const int at_end = rc == GW_OK;
     if (rc == GW_OK)
         rc = gw_parse_long(colon + 1, name, lo, hi, b, err);
+    if (rc != GW_OK && err) {
+        /* an end's refusal ("'3:1' is not an integer") quoted a fragment of the
+         * value: quote the whole value given and the form a range takes, then
+         * the end's own reason (after its "NAME: ") */
+        char why[sizeof err->msg];
+        const size_t nl = strlen(name);
+        const char *r = strncmp(err->msg, name, nl) == 0 && err->msg[nl] == ':' ? err->msg + nl + 1 : err->msg;
+        while (*r == ' ')
+            r++;
+        snprintf(why, sizeof why, "%s", r);
+        return gw_err_set(err, rc, "%s: '%s' is not a range A:B of integers, A <= B (its %s: %s)", name, s,
+                          at_end ? "end" : "start", why);
+    }
     if (rc == GW_OK && *a > *b)
         rc = gw_err_set(err, GW_EINVAL, "%s: range '%s' is empty (start > end)", name, s);
     return rc;

@@ -329,19 +329,33 @@ int layer_impact_fall_rule(const gw_layer_impact_params *ip, double g, int gap_d
      * that runs with it (it said "gap: falling 1e-06 m ... lower gap", of a
      * gap never given). A gap given, at the default's value too, is the
      * gap's refusal (--gap 1e-6 was told "the default gap" until session 44) */
+    /* an oblique incidence is a driver of the normal speed as much as vi
+     * (--alpha 89.9 at 20 m/s meets the layer at 0.035 m/s normal speed, and
+     * the refusal named vi only): name alpha, and the largest incidence that
+     * runs at this speed when one does */
+    char at[64] = "", al[96] = "";
+    if (ip->alpha_deg != 0) {
+        char as[32];
+        gw_snprintf(at, sizeof at, " at incidence alpha %s deg", gw_num_text(as, sizeof as, ip->alpha_deg));
+        const double c = sqrt(2 * g * ip->gap / k) / ip->vi; /* cos(alpha) at least this */
+        if (c < 1)
+            gw_snprintf(al, sizeof al, ", an incidence alpha of at most %.10g deg", floor(acos(c) * 180 / M_PI * 1e4) / 1e4);
+        else
+            gw_snprintf(al, sizeof al, " (no incidence alpha runs at this vi)");
+    }
     if (gap_default) {
         char vis[32];
-        return gw_err_set(err, GW_EINVAL, "vi: %s m/s is too slow for the default gap of %g m: "
+        return gw_err_set(err, GW_EINVAL, "vi: %s m/s%s is too slow for the default gap of %g m: "
                           "falling it (g = %g m/s^2) the block meets the layer at %.4g m/s normal speed, not %.4g "
                           "(+%.2g %%, at most 0.1 %%: e_n, e, E_incident and the penetration take V_i as given): "
-                          "give vi at least %s m/s with the default gap, or a gap of at most %s m (0: the block "
-                          "starts touching the layer)", gw_num_text(vis, sizeof vis, ip->vi), ip->gap, g, vc, vn,
-                          100 * (vc / vn - 1), vs, gs);
+                          "give vi at least %s m/s with the default gap%s, or a gap of at most %s m (0: the block "
+                          "starts touching the layer)", gw_num_text(vis, sizeof vis, ip->vi), at, ip->gap, g, vc, vn,
+                          100 * (vc / vn - 1), vs, al, gs);
     }
     return gw_err_set(err, GW_EINVAL, "gap: falling %g m (g = %g m/s^2), the block meets the layer at %.4g m/s "
                       "normal speed, not %.4g (+%.2g %%, at most 0.1 %%: e_n, e, E_incident and the penetration "
-                      "take V_i as given): lower gap to %s m, or give vi the speed at contact (at least %s m/s "
-                      "with this gap)", ip->gap, g, vc, vn, 100 * (vc / vn - 1), gs, vs);
+                      "take V_i as given)%s: lower gap to %s m, or give vi the speed at contact (at least %s m/s "
+                      "with this gap)%s", ip->gap, g, vc, vn, 100 * (vc / vn - 1), at, gs, vs, al);
 }
 
 /* The block must be able to reach the layer before the run ends. Its gap is

@@ -752,7 +752,8 @@ static int impact_run(const gw_layer_impact_setup *s, gw_progress_fn progress, v
         else if (nu > 0 && rc == GW_OK)
             rc = gw_err_set(err, GW_ENOMEM, "layer-impact: out of memory");
         if (rc == GW_OK && ((rc = gw_layer_impact_result_warnings(&out->r, &out->warnings)) != GW_OK ||
-                            (rc = layer_crowns_warning(&smp, &ip, &out->r, &out->warnings)) != GW_OK))
+                            (rc = layer_crowns_warning(&smp, &ip, &out->r, &out->warnings)) != GW_OK ||
+                            (rc = layer_energy_warning(&out->r, &ip, type, &sp, &out->warnings)) != GW_OK))
             rc = gw_err_set(err, rc, "layer-impact: out of memory");
     }
     gw_layer_impact_plan_free(&plan);

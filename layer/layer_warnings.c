@@ -11,9 +11,11 @@
  * Parameters are named as the program's flags (--t-max). Units: s, J.
  */
 #include <math.h>
+#include <string.h>
 
 #include "gw_layer.h"
 #include "layer_impl.h"
+#include "layer_plan_run.h"
 #include "gw_locale.h"
 
 /* Whether r could come from gw_layer_make: converged 0 or 1, an untrimmed
@@ -145,4 +147,21 @@ int gw_layer_impact_result_warnings(const gw_layer_impact_result *r, char **list
     if (rc != GW_OK || !r->undecided[0]) /* decided, or stopped at the verdict on purpose */
         return rc;
     return gw_warnings_add(list, "%.*s", (int)sizeof r->undecided, r->undecided);
+}
+
+int layer_energy_warning(const gw_layer_impact_result *res, const gw_layer_impact_params *ip,
+                         const gw_solver_type *type, const gw_solver_params *sp, char **list)
+{
+    if (!res || !ip || !sp || ip->energy_tol > 0 || !(res->energy_error > GW_LAYER_ENERGY_WARN))
+        return GW_OK;
+    const char *name = type ? gw_solver_type_name(type) : NULL;
+    if (!name || strcmp(name, "rk4") == 0 || strcmp(name, "verlet") == 0)
+        return gw_warnings_add(list, "the relative energy error reached %.3g (%.3g %%, above %g) at the %s step dt = "
+                               "%g s: too coarse to trust the run's numbers: lower dt, or set energy-tol to stop at "
+                               "a bound", res->energy_error, 100 * res->energy_error, GW_LAYER_ENERGY_WARN,
+                               name ? name : "solver's", sp->dt);
+    return gw_warnings_add(list, "the relative energy error reached %.3g (%.3g %%, above %g) at rtol = %g, atol = %g: "
+                           "the tolerances are too loose to trust the run's numbers: tighten rtol and atol, or set "
+                           "energy-tol to stop at a bound", res->energy_error, 100 * res->energy_error,
+                           GW_LAYER_ENERGY_WARN, sp->rtol, sp->atol);
 }

@@ -144,7 +144,7 @@ for vi in 1e-6 1e-3 0.01 0.05 0.099; do
 done
 # the same at an incidence: the speed named is the incident one
 refused "layer-impact --vi 0.05 --alpha 60, default gap" \
-    "^granwave layer-impact --vi: 0\\.05 m/s is too slow for the default gap of 1e-06 m: .* give vi at least [0-9.e-]+ m/s" \
+    "^granwave layer-impact --vi: 0\\.05 m/s at incidence alpha 60 deg is too slow for the default gap of 1e-06 m: .* give vi at least [0-9.e-]+ m/s" \
     layer-impact --sample s20.txt --t-max 1e-3 --vi 0.05 --alpha 60 --out o
 vmin=$(sed -nE 's/.* give vi at least ([0-9.e-]+) m\/s .*/\1/p' "$tmp/stderr")
 [ -n "$vmin" ] && runs_ok "--vi $vmin --alpha 60 (named) runs" --vi "$vmin" --alpha 60

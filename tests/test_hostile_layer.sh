@@ -506,7 +506,7 @@ done
 refused "layer-impact --vi 1 --gap 1 (met the layer at 4.54 m/s: e = 1.83)" \
     "^granwave layer-impact --gap: falling 1 m \(g = 9.81 m/s\^2\), the block meets the layer at 4.541 m/s normal speed, not 1 .*lower gap to 0.000101 m" \
     layer-impact --sample "$S" --vi 1 --gap 1 --out "$tmp/o"
-refused "layer-impact --alpha 89.999 (normal speed 3.5e-4 m/s, 4.4e-3 after the default gap)" "^granwave layer-impact --vi: 20 m/s is too slow for the default gap of 1e-06 m: " \
+refused "layer-impact --alpha 89.999 (normal speed 3.5e-4 m/s, 4.4e-3 after the default gap)" "^granwave layer-impact --vi: 20 m/s at incidence alpha 89.999 deg is too slow for the default gap of 1e-06 m: .*an incidence alpha of at most 89.7163 deg" \
     layer-impact --sample "$S" --alpha 89.999 --t-max 1e-3 --out "$tmp/o"
 printf '[sweep]\nmodel = layer\n[grid]\nvi = 20, 0.05\n[params]\nsample = %s\nt-max = 1e-3\n' "$S" >"$tmp/g.ini"
 refused "sweep --check: a case at vi 0.05 with the default gap" "g.ini: case 1: vi: 0.05 m/s is too slow for the default gap of 1e-06 m: .* not 0.05 " sweep "$tmp/g.ini" --out "$tmp/o" --check

@@ -220,8 +220,11 @@ int gw_cmd_chain(int argc, char **argv)
                 gw_json_write(path, o, &werr) != GW_OK || gw_outset_commit(&set, &werr) != GW_OK) {
                 gw_outset_abort(&set);
                 fprintf(stderr, "granwave chain --out: %s\n", werr.msg);
-            } else
-                fprintf(stderr, "granwave chain: state at t = %.9g s and the trace so far are in %s\n", r.t_end, c.out);
+            } else {
+                char q[GW_CLI_PATH_TEXT];
+                fprintf(stderr, "granwave chain: state at t = %.9g s and the trace so far are in %s\n", r.t_end,
+                        gw_cli_path(q, sizeof q, c.out));
+            }
             cJSON_Delete(o);
             free(hdr);
         }
@@ -230,8 +233,9 @@ int gw_cmd_chain(int argc, char **argv)
          * library's text (out of memory for it: none), said on stderr and
          * listed in chain.json and --json */
         char *w = NULL;
-        if (chain_damping_zero_warnings(&c.params, 0, 1, &w) == GW_OK)
-            (void)gw_chain_result_warnings(&r, &w);
+        if (chain_damping_zero_warnings(&c.params, 0, 1, &w) == GW_OK &&
+            gw_chain_result_warnings(&r, &w) == GW_OK)
+            (void)chain_energy_warning(r.energy_error, &c.run, &w);
         if (c.out) {
             char *hdr = run_header(&c, &r, argc, argv);
             char path[4096];

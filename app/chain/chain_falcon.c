@@ -356,8 +356,10 @@ int gw_cmd_falcon(int argc, char **argv)
                        gw_cli_num(ws, sizeof ws, "%.1f", f.o.wave_speed[iv]), f.o.wave_speed_theory[iv],
                        gw_cli_num(per, sizeof per, "%.2f", f.o.period_mean[iv] * 1e6));
             }
-            if (f.c.out)
-                printf("  report: %s/report.md\n", f.c.out);
+            if (f.c.out) {
+                char q[GW_CLI_PATH_TEXT];
+                printf("  report: %s/report.md\n", gw_cli_path(q, sizeof q, f.c.out));
+            }
         }
     }
     cJSON_Delete(sum);

@@ -274,8 +274,9 @@ int gw_cmd_layer_make(int argc, char **argv)
                r.max_overlap, r.floor_load);
         printf("  mass law %s; settling: Hunt-Crossley alpha %g s/m, modulus factor %g; %s dt %g s\n",
                gw_layer_mass_law_name(m.lp.mass_law), mp.damping, mp.modulus_factor, solver, mp.dt);
+        char q[GW_CLI_PATH_TEXT];
         printf("  wall time %.0f ms, %ld steps, %ld list rebuilds; written to %s\n", r.wall_ms, r.steps,
-               r.rebuilds, out);
+               r.rebuilds, gw_cli_path(q, sizeof q, out));
     }
     free(mw);
     gw_layer_sample_free(&s);
@@ -742,7 +743,8 @@ int gw_cmd_layer_impact(int argc, char **argv)
     /* the library's texts, one line each (out of memory for them: no line): a
      * sample settled under another material, an undecided outcome (the JSON
      * says null); the JSON's "warnings" and the outputs' headers record them */
-    (void)gw_layer_impact_result_warnings(&r, &w);
+    if (gw_layer_impact_result_warnings(&r, &w) == GW_OK)
+        (void)layer_energy_warning(&r, &c.ip, type, &sp, &w);
     gw_cli_warnings("layer-impact", w);
     cJSON *j = impact_json(&c, &r, &sp);
     gw_cli_json_warnings(j, w);

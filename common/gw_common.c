@@ -552,7 +552,7 @@ int gw_parse_int_range(const char *s, const char *name, long lo, long hi, long *
         const char *r = strncmp(err->msg, name, nl) == 0 && err->msg[nl] == ':' ? err->msg + nl + 1 : err->msg;
         while (*r == ' ')
             r++;
-        snprintf(why, sizeof why, "%s", r);
+        gw_snprintf(why, sizeof why, "%s", r);
         return gw_err_set(err, rc, "%s: '%s' is not a range A:B of integers, A <= B (its %s: %s)", name, s,
                           at_end ? "end" : "start", why);
     }

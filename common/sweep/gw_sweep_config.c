@@ -389,7 +389,9 @@ static int handler_one(parse_ctx *pc, const char *section, const char *name, con
     const gw_sweep_value_rule rule = gw_sweep_value_rule_of(cfg->model);
     gw_err e;
     if (rule && rule(canon, value, &e) != GW_OK) {
-        gw_snprintf(pc->msg, sizeof pc->msg, "[params] %s (one value: lists and ranges go in [grid])", e.msg);
+        /* the hint where the value is a list or a range, not on a subnormal */
+        gw_snprintf(pc->msg, sizeof pc->msg, "[params] %s%s", e.msg,
+                    strpbrk(value, ":,") ? " (one value: lists and ranges go in [grid])" : "");
         return 0;
     }
     return 1;

@@ -146,7 +146,7 @@ def test_a_speed_given_twice_is_refused():
 def test_a_range_keyword_takes_two_integer_ends():
     # n=(1.5, 3) was cut to 1:3 by int() (a silent change of the input) and
     # n=(1, 2, 3) raised a bare "too many values to unpack"
-    with pytest.raises(granwave.GranwaveValueError, match=r"n: '1.5' is not an integer"):
+    with pytest.raises(granwave.GranwaveValueError, match=r"n: '1.5:3' is not a range A:B of integers, A <= B \(its start: '1.5' is not an integer"):
         granwave.falcon(n=(1.5, 3), heights=[])
     with pytest.raises(TypeError, match=r"n: expected \(A, B\), an integer or a range"):
         granwave.falcon(n=(1, 2, 3), heights=[])

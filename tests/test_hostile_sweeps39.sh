@@ -126,22 +126,6 @@ other_way() {
     fi
 }
 
-cut_out() { : >"$1/journal.csv"; : >"$1.left"; }
-# a digit of the first row changed in place, the file's length kept
-edit_row() {
-    /usr/bin/python3 -c 'import sys
-p = sys.argv[1]
-lines = open(p, "rb").read().split(b"\n")
-for i, l in enumerate(lines):
-    if l and not l.startswith(b"#"):
-        j = l.index(b",") + 1
-        lines[i] = l[:j] + (b"8" if l[j:j + 1] == b"7" else b"7") + l[j + 1:]
-        break
-with open(p, "r+b") as f:
-    f.write(b"\n".join(lines))' "$1/journal.csv"
-    cp "$1/journal.csv" "$1.left"
-}
-add_line() { echo "# a note" >>"$1/journal.csv"; cp "$1/journal.csv" "$1.left"; }
 # late_save: an editor's save that removes the file and writes the text it
 # read more than 0.2 s later: the copy taken and the journal removed (written),
 # then late_write: its put-back awaited and a row appended to it, then the
@@ -156,23 +140,23 @@ late_write() {
 
 # --- 1: threads, the journal cut to nothing
 d=$tmp/t2
-written "1 --jobs 2" "$d" 8 0 cut_out "$GW" sweep "$tmp/a.ini" --out "$d" --quiet --jobs 2
+written "1 --jobs 2" "$d" 8 0 journal_cut "$GW" sweep "$tmp/a.ini" --out "$d" --quiet --jobs 2
 # shellcheck disable=SC2046
 resumed "1 --jobs 2" "$d" "$tmp/ref" $(other_way threads) sweep "$tmp/a.ini" --out "$d"
 
 # --- 2: MPI, a row edited in place (its length kept)
 d=$tmp/m
 if [ $have_mpi = 1 ]; then
-    written "2 mpirun -np 2" "$d" 8 0 edit_row mpirun --oversubscribe -np 2 "$GW" sweep "$tmp/a.ini" --out "$d" --quiet
+    written "2 mpirun -np 2" "$d" 8 0 journal_edit_row mpirun --oversubscribe -np 2 "$GW" sweep "$tmp/a.ini" --out "$d" --quiet
 else
     echo "SKIP: 2 under MPI (no mpirun or not an MPI build): on threads"
-    written "2 --jobs 1" "$d" 8 0 edit_row "$GW" sweep "$tmp/a.ini" --out "$d" --quiet --jobs 1
+    written "2 --jobs 1" "$d" 8 0 journal_edit_row "$GW" sweep "$tmp/a.ini" --out "$d" --quiet --jobs 1
 fi
 resumed "2" "$d" "$tmp/ref" "$GW" sweep "$tmp/a.ini" --out "$d" --jobs 2
 
 # --- 3: a line added by another program
 d=$tmp/a
-written "3 --jobs 1" "$d" 8 0 add_line "$GW" sweep "$tmp/a.ini" --out "$d" --quiet --jobs 1
+written "3 --jobs 1" "$d" 8 0 journal_add_line "$GW" sweep "$tmp/a.ini" --out "$d" --quiet --jobs 1
 # shellcheck disable=SC2046
 resumed "3" "$d" "$tmp/ref" $(other_way threads) sweep "$tmp/a.ini" --out "$d"
 
@@ -201,7 +185,7 @@ first24() { mkdir -p "$1" && head -n 29 "$tmp/refc/journal.csv" >"$1/journal.csv
 d=$tmp/l
 # (inside the second row's write, at_row: the file's events say another wrote
 # it, and the check after the row compares the whole file)
-prep=first24 written "6 --jobs 1" "$d" 27 0 edit_row "$GW" sweep "$tmp/c.ini" --out "$d" --quiet --jobs 1
+prep=first24 written "6 --jobs 1" "$d" 27 0 journal_edit_row "$GW" sweep "$tmp/c.ini" --out "$d" --quiet --jobs 1
 [ "$(stat -c %s "$d.left")" -gt 5000 ] || ko "6: the journal was $(stat -c %s "$d.left") bytes: the edit inside the last 4096"
 resumed "6" "$d" "$tmp/refc" "$GW" sweep "$tmp/c.ini" --out "$d" --jobs 1
 

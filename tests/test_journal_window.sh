@@ -40,22 +40,6 @@ printf '[sweep]\nmodel = chain\n[grid]\nn = %s\n[params]\nsolver = rk4\nvimp = 0
     "$(seq -s ', ' 10 33), 150, 151, 152" >"$tmp/c.ini"
 "$GW" sweep "$tmp/c.ini" --out "$tmp/refc" --quiet --jobs 1 || ko "reference sweep of 27 cases"
 
-# a digit of the first row changed in place, the file's length kept
-edit_row() {
-    /usr/bin/python3 -c 'import sys
-p = sys.argv[1]
-lines = open(p, "rb").read().split(b"\n")
-for i, l in enumerate(lines):
-    if l and not l.startswith(b"#"):
-        j = l.index(b",") + 1
-        lines[i] = l[:j] + (b"8" if l[j:j + 1] == b"7" else b"7") + l[j + 1:]
-        break
-with open(p, "r+b") as f:
-    f.write(b"\n".join(lines))' "$1/journal.csv"
-    cp "$1/journal.csv" "$1.left"
-}
-add_line() { echo "# a note" >>"$1/journal.csv"; cp "$1/journal.csv" "$1.left"; }
-cut_out() { : >"$1/journal.csv"; : >"$1.left"; }
 
 # window WHAT DIR K DISTURB CASE ROWS CMD...: CMD (a sweep into DIR, one thread)
 # with DISTURB (a function of DIR leaving what it wrote in DIR.left) run inside
@@ -88,7 +72,7 @@ window() {
 d=$tmp/l
 mkdir -p "$d" && head -n 29 "$tmp/refc/journal.csv" >"$d/journal.csv"
 [ "$(stat -c %s "$d/journal.csv")" -gt 5000 ] || ko "1: the journal was $(stat -c %s "$d/journal.csv") bytes"
-if window "1 a row edited in place, 4 kB before the end" "$d" 1 edit_row 24 25 "$GW" sweep "$tmp/c.ini" --out "$d" --quiet --jobs 1; then
+if window "1 a row edited in place, 4 kB before the end" "$d" 1 journal_edit_row 24 25 "$GW" sweep "$tmp/c.ini" --out "$d" --quiet --jobs 1; then
     mv "$d/journal.kept.csv" "$d/journal.csv"
     "$GW" sweep "$tmp/c.ini" --out "$d" --quiet --jobs 1 2>"$d.err2" && cmp -s "$d/results.csv" "$tmp/refc/results.csv" &&
         ok "1: the kept journal moved back resumed to the undisturbed table" ||
@@ -97,11 +81,11 @@ fi
 
 # --- 2: a line added at the last row ---
 d=$tmp/a
-window "2 a line added at the last row" "$d" 8 add_line 7 8 "$GW" sweep "$tmp/a.ini" --out "$d" --quiet --jobs 1
+window "2 a line added at the last row" "$d" 8 journal_add_line 7 8 "$GW" sweep "$tmp/a.ini" --out "$d" --quiet --jobs 1
 
 # --- 3: cut to nothing at the third row ---
 d=$tmp/c
-window "3 cut to nothing at the third row" "$d" 3 cut_out 2 3 "$GW" sweep "$tmp/a.ini" --out "$d" --quiet --jobs 1
+window "3 cut to nothing at the third row" "$d" 3 journal_cut 2 3 "$GW" sweep "$tmp/a.ini" --out "$d" --quiet --jobs 1
 
 # --- 4: controls: the bytes the sweep's ---
 nk=0

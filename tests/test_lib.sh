@@ -256,3 +256,23 @@ kept_rows() {
     grep -q "stopped taking cases after .*: $n of its $total cases are journaled there" "$err" ||
         ko "$what: the line does not count the $n kept rows"
 }
+
+# Edits of a sweep's journal DIR/journal.csv for at_row_fn, each leaving a copy
+# of what it left in DIR.left (test_journal_window, test_hostile_sweeps39):
+# journal_edit_row changes a digit of the first row in place, the file's length
+# kept; journal_add_line appends a comment line; journal_cut cuts it to nothing.
+journal_edit_row() {
+    /usr/bin/python3 -c 'import sys
+p = sys.argv[1]
+lines = open(p, "rb").read().split(b"\n")
+for i, l in enumerate(lines):
+    if l and not l.startswith(b"#"):
+        j = l.index(b",") + 1
+        lines[i] = l[:j] + (b"8" if l[j:j + 1] == b"7" else b"7") + l[j + 1:]
+        break
+with open(p, "r+b") as f:
+    f.write(b"\n".join(lines))' "$1/journal.csv"
+    cp "$1/journal.csv" "$1.left"
+}
+journal_add_line() { echo "# a note" >>"$1/journal.csv"; cp "$1/journal.csv" "$1.left"; }
+journal_cut() { : >"$1/journal.csv"; : >"$1.left"; }

@@ -22,7 +22,7 @@
 #    1e-8 m) for 10 ms: the soil's kinetic energy stays below E_th, the
 #    settling's own threshold (1e-5 M g R_m, 8.5 J: the pile was called at rest
 #    with up to this much motion), and from zero springs it is above 2 E_th
-#    (measured 4.9 J against 26 J; the 600-disc pile 15 J against 313 J);
+#    (measured 4.4 J against 26 J; the 600-disc pile 8.9 J against 313 J);
 #  4 round trip and identity (a 40-disc pile): the same pile written as text
 #    and as HDF5 gives the same impact to the bit (the penetration,
 #    energy_error, dissipated_first_contact) and is refused by sweep --check as one pile; the text file

@@ -28,8 +28,8 @@
 #    session 28 ran with a warning that it "may slide a little", the soil holds
 #    more than 2 kJ of kinetic energy at 100 ms and has lost more than 10 kJ
 #    of potential energy (7.4 and 27 kJ measured with its springs, 9.1 and
-#    37 kJ from zero springs: it flows); at 30 less than 500 J and 5 kJ (11 J
-#    and 0.21 kJ with its springs, 75 J and 2.1 kJ from zero: it rests).
+#    37 kJ from zero springs: it flows); at 30 less than 500 J and 5 kJ (8.3 J
+#    and 0.20 kJ with its springs, 75 J and 2.1 kJ from zero: it rests).
 # On the code before: 19.2 and 29 degrees ran, the messages named 0.6 and
 # "flows".
 # shellcheck source=tests/refusal_lib.sh

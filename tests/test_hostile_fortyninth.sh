@@ -34,6 +34,10 @@ refused "a layer sweep's case of ring-width 1e-160 names the key (--check)" \
     '^granwave sweep: rw.ini: case 1: ring-width: 1e-160 m is too small' sweep rw.ini --check
 refused "a layer sweep's case of ring-width 1e-160 names the key (run)" \
     '^granwave sweep: rw.ini: case 1: ring-width: 1e-160 m is too small' sweep rw.ini --quiet
+py_checks 1 <<PYEOF
+refused("Python layer_impact(ring_width=1e-160) names ring_width", ["ring_width: 1e-160 m is too small"],
+        granwave.layer_impact, sample="$tmp/s20", ring_width=1e-160)
+PYEOF
 cpu_run 60 "$GW" layer-impact --sample s20 --ring-width 1.5e-154 --t-max 0.002 --quiet >/dev/null 2>rw.err
 rc=$?
 [ $rc -eq 0 ] && grep -q "warning: ring-width: crowns 1.5e-154 m wide" rw.err &&

@@ -71,6 +71,17 @@ static int dotdot_after_missing(const char *path, const char *what, gw_err *err)
     return GW_OK;
 }
 
+/* a path empty, or of N bytes that its buffer of CAP cannot hold: refused
+ * saying which, the reason before the path (a long path is cut in the middle
+ * of the message; "bad path '...'" alone, its reason cut away, said nothing) */
+static int path_length_refused(const char *what, const char *path, size_t n, size_t cap, gw_err *err)
+{
+    if (n == 0)
+        return gw_err_set(err, GW_EINVAL, "%s: empty path", what);
+    return gw_err_set(err, GW_EINVAL, "%s: the path is %zu bytes long, more than the %zu a path may hold: '%s'", what,
+                      n, cap - 1, path);
+}
+
 int gw_mkdir_p(const char *path, gw_err *err)
 {
     if (!path)
@@ -78,7 +89,7 @@ int gw_mkdir_p(const char *path, gw_err *err)
     char buf[4096];
     size_t n = strlen(path);
     if (n == 0 || n >= sizeof buf)
-        return gw_err_set(err, GW_EINVAL, "output directory: bad path '%s'", path);
+        return path_length_refused("output directory", path, n, sizeof buf, err);
     if (dotdot_after_missing(path, "output directory", err) != GW_OK)
         return GW_EINVAL;
     memcpy(buf, path, n + 1);
@@ -163,7 +174,7 @@ static int out_dir_check(const char *dir, const char *what, int root_ok, gw_err 
     char buf[4096];
     size_t n = dir ? strlen(dir) : 0;
     if (n == 0 || n >= sizeof buf)
-        return gw_err_set(err, GW_EINVAL, "%s: bad path '%s'", what, dir ? dir : "");
+        return path_length_refused(what, dir, n, sizeof buf, err);
     if (dotdot_after_missing(dir, what, err) != GW_OK || (!root_ok && gw_io_root_refused(dir, what, err) != GW_OK))
         return GW_EINVAL;
     memcpy(buf, dir, n + 1);
@@ -238,7 +249,7 @@ int gw_out_file_check(const char *path, const char *what, gw_err *err)
     char dir[4096];
     size_t n = path ? strlen(path) : 0;
     if (n == 0 || n >= sizeof dir)
-        return gw_err_set(err, GW_EINVAL, "%s: bad path '%s'", what, path ? path : "");
+        return path_length_refused(what, path, n, sizeof dir, err);
     struct stat st;
     if (stat(path, &st) == 0 && !S_ISREG(st.st_mode))
         return gw_err_set(err, GW_EINVAL, "%s: '%s' is %s; give a regular file", what, path,

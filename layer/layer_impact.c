@@ -196,6 +196,12 @@ int layer_impact_params_check(const gw_layer_sample *smp, const gw_layer_impact_
         (rc = gw_check_range(p->ring_width, "ring-width (m)", 0, 1e6, err)) != GW_OK ||
         (rc = gw_check_range(p->energy_tol, "energy-tol", 0, 1, err)) != GW_OK)
         return rc;
+    /* every ring lookup divides by the width's square: a width whose square
+     * is no normal double was refused only by the regions' setup, naming
+     * "layer regions", not the input (--ring-width 1e-160) */
+    if (p->ring_width > 0 && !(p->ring_width * p->ring_width >= DBL_MIN))
+        return gw_err_set(err, GW_EINVAL, "ring-width: %g m is too small: its square is no normal double (give 0 "
+                          "for 2 R_m, or a width of at least 1.49167e-154 m)", p->ring_width);
     if (p->until != GW_LAYER_UNTIL_REBOUND && p->until != GW_LAYER_UNTIL_VERDICT)
         return gw_err_set(err, GW_EINVAL, "until: %d is neither rebound (0) nor verdict (1)", p->until);
     if (p->nrings < 1 || p->nrings > 1000)

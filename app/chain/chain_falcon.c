@@ -347,14 +347,17 @@ int gw_cmd_falcon(int argc, char **argv)
             printf("granwave %s falcon: %d collisions in %.2f s\n", gw_version(), ncase, f.o.wall_time_s);
             for (int iv = 0; iv < nv; iv++) { /* n/a: undecided, the columns held (the warning says) */
                 char per[32], fm[32], f0[32], f1[32], tq[32], ws[32];
-                printf("  v_imp %.4f m/s: F_max %s N (%s..%s), T_q %s us, v = 4R/T_q %s m/s "
-                       "(F.27: %.1f), P %s us\n",
-                       f.o.v_imp[iv], gw_cli_num(fm, sizeof fm, "%.2f", f.o.f_max_mean[iv]),
-                       gw_cli_num(f0, sizeof f0, "%.2f", f.o.f_max_min[iv]),
-                       gw_cli_num(f1, sizeof f1, "%.2f", f.o.f_max_max[iv]),
-                       gw_cli_num(tq, sizeof tq, "%.3f", f.o.t_q[iv] * 1e6),
-                       gw_cli_num(ws, sizeof ws, "%.1f", f.o.wave_speed[iv]), f.o.wave_speed_theory[iv],
-                       gw_cli_num(per, sizeof per, "%.2f", f.o.period_mean[iv] * 1e6));
+                /* four significant digits, not fixed decimals: a legal slow
+                 * impact (--heights 1e-7, 1.4e-6 m/s) printed v_imp 0.0000
+                 * m/s and F_max 0.00 N */
+                printf("  v_imp %.4g m/s: F_max %s N (%s..%s), T_q %s us, v = 4R/T_q %s m/s "
+                       "(F.27: %.4g), P %s us\n",
+                       f.o.v_imp[iv], gw_cli_num(fm, sizeof fm, "%.4g", f.o.f_max_mean[iv]),
+                       gw_cli_num(f0, sizeof f0, "%.4g", f.o.f_max_min[iv]),
+                       gw_cli_num(f1, sizeof f1, "%.4g", f.o.f_max_max[iv]),
+                       gw_cli_num(tq, sizeof tq, "%.5g", f.o.t_q[iv] * 1e6),
+                       gw_cli_num(ws, sizeof ws, "%.4g", f.o.wave_speed[iv]), f.o.wave_speed_theory[iv],
+                       gw_cli_num(per, sizeof per, "%.4g", f.o.period_mean[iv] * 1e6));
             }
             if (f.c.out) {
                 char q[GW_CLI_PATH_TEXT];

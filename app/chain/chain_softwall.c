@@ -257,7 +257,7 @@ int gw_cmd_softwall(int argc, char **argv)
                 }
                 char fp[32]; /* n/a: every column held */
                 printf("  %-14s %11.4g %6s %9s %8s %9s N %14s%s\n", use_sheets ? gw_sheet_get(w)->name : c.sheet ? c.sheet : "--kwall",
-                       kw[w], so.rigid[w] ? "rigid" : "soft", nd, np, gw_cli_num(fp, sizeof fp, "%.2f", so.f_plateau[w]),
+                       kw[w], so.rigid[w] ? "rigid" : "soft", nd, np, gw_cli_num(fp, sizeof fp, "%.4g", so.f_plateau[w]),
                        meas, taus);
             }
         }

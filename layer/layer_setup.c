@@ -609,7 +609,7 @@ int layer_impact_run_part(const gw_layer_impact_setup *s, gw_progress_fn progres
  * `--dt-out 5e-3` on the 40-disc pile of `layer-make --n 40` gave every speed
  * null (98 +- 45 m/s by the strain peaks at the default 2e-5 s) with no
  * warning, in the program, a sweep's case and Python alike. */
-static int crowns_sampling_warning(const gw_layer_impact_result *r, char **list)
+static int crowns_sampling_warning(const gw_layer_impact_params *ip, const gw_layer_impact_result *r, char **list)
 {
     double dt, dc;
     int few;
@@ -624,6 +624,31 @@ static int crowns_sampling_warning(const gw_layer_impact_result *r, char **list)
             strcat(names, name[k]);
             first = 0;
         }
+    /* The first impact not closed by T_f: the run ended before it, and that
+     * end, not the sampling, is named. `--until verdict --dt-out 0.2` (the
+     * bounce verdict at 1.56 ms on the 40-disc pile) was told "give a smaller
+     * --dt-out" while the default sampling of the same run leaves every speed
+     * null too, and `--t-max 0.001 --dt-out 0.2` alike. At t-max a --dt-out
+     * above a third of the run is named besides: it left the run fewer than 4
+     * samples (`--t-max 0.01`: 651 m/s at the default sampling). */
+    if (few > 0 && (r->bounced != 1 || !isfinite(r->t_f))) {
+        const double span = r->t[r->ns - 1] - r->t[0];
+        const int verdict = r->bounced == 1 && ip && ip->until == GW_LAYER_UNTIL_VERDICT && !r->undecided[0];
+        const int nobounce = !verdict && r->bounced == 0;
+        char fix[160] = "raise --t-max";
+        if (!verdict && !nobounce && ip && ip->dt_out > span / 3 * (1 + 1e-9))
+            gw_snprintf(fix, sizeof fix, "give a --dt-out of at most %.3g s (a third of the run) or raise --t-max",
+                        span / 3);
+        return gw_warnings_add(list, "%s: the run ended at t = %.6g s %s, with %d samples of the first impact: %s "
+                               "%s null (unresolved): the crowns' arrivals need that impact up to its end sampled "
+                               "4 times or more; %s", verdict ? "until" : nobounce ? "no bounce" : "t-max",
+                               r->t[r->ns - 1],
+                               verdict ? "at the bounce verdict (the block left the layer; --until verdict), before T_f"
+                               : nobounce ? "when the block was found not to bounce (its rebound ended inside the layer)"
+                                          : "at t-max, before T_f",
+                               few, names, (which & (which - 1)) ? "are" : "is",
+                               verdict ? "--until rebound runs on to T_f" : nobounce ? "--full runs on to t-max" : fix);
+    }
     if (few > 0)
         return gw_warnings_add(list, "dt-out: the first impact holds %d samples %g s apart, where a crown's arrival "
                                "is a sample between two others: %s %s null (unresolved); give a smaller --dt-out "
@@ -645,7 +670,7 @@ static int crowns_sampling_warning(const gw_layer_impact_result *r, char **list)
 int layer_crowns_warning(const gw_layer_sample *smp, const gw_layer_impact_params *ip,
                          const gw_layer_impact_result *r, char **list)
 {
-    int rc = crowns_sampling_warning(r, list);
+    int rc = crowns_sampling_warning(ip, r, list);
     if (rc != GW_OK)
         return rc;
     const double w = ip->ring_width > 0 ? ip->ring_width : 2 * smp->rm;

@@ -92,23 +92,24 @@ done <"$tmp/flags"
 
 # a sweep's values: the same words as the flag's
 # (a [params] value is checked when the config is read since the forty-first
-# session: its refusal names the line, "sv.ini:7: [params] t-max:", a grid value its case)
+# session: its refusal names the line, "sv.ini:7: [params] t-max:"; a grid value since the forty-second,
+# "sv.ini:5: [grid] vimp:")
 s_chain() { printf '[sweep]\nmodel = chain\n[grid]\n%s\n[params]\nsolver = rk4\n%s\n' "$1" "$2" >sv.ini; }
 for kv in "vimp|n = 1:2\nvimp = 0.3, 1e-310|chain --vimp" "t-max|n = 1:2|chain --t-max|t-max = -1e-310" \
     "guide-friction|n = 2\nguide-friction = 0, 4.9e-324|chain --guide-friction"; do
     IFS='|' read -r key grid flag params <<<"$kv"
     s_chain "$(printf "$grid")" "${params:-}"
     refused "sweep (chain): $key subnormal" \
-        "^granwave sweep: .*sv\\.ini(: case [0-9]+:|:[0-9]+: \\[params\\]) $key: '-?[0-9.e-]+' is too small in magnitude: .*\\(give $(ere "${hint[$flag]:-?}")\\)$" \
+        "^granwave sweep: .*sv\\.ini:[0-9]+: \\[(grid|params)\\] $key: '-?[0-9.e-]+' is too small in magnitude: .*\\(give $(ere "${hint[$flag]:-?}")\\)$" \
         sweep sv.ini --check --out o
 done
 printf '[sweep]\nmodel = layer\n[grid]\nvi = 20, 1e-320\n[params]\nsample = s20.txt\nt-max = 1e-3\n' >sv.ini
 refused "sweep (layer): vi = 20, 1e-320" \
-    "^granwave sweep: .*sv\\.ini: case 1: vi: '1e-320' is too small in magnitude: .*\\(give $(ere "${hint[layer-impact --vi]:-?}")\\)$" \
+    "^granwave sweep: .*sv\\.ini:4: \\[grid\\] vi: '1e-320' is too small in magnitude: .*\\(give $(ere "${hint[layer-impact --vi]:-?}")\\)$" \
     sweep sv.ini --check --out o
 printf '[sweep]\nmodel = layer\n[grid]\nx = 0, -1e-310\n[params]\nsample = s20.txt\nt-max = 1e-3\n' >sv.ini
 refused "sweep (layer): x = 0, -1e-310" \
-    "^granwave sweep: .*sv\\.ini: case 1: x: '-1e-310' is too small in magnitude: .*\\(give $(ere "${hint[layer-impact --x]:-?}")\\)$" \
+    "^granwave sweep: .*sv\\.ini:4: \\[grid\\] x: '-1e-310' is too small in magnitude: .*\\(give $(ere "${hint[layer-impact --x]:-?}")\\)$" \
     sweep sv.ini --check --out o
 
 # the Python module (the library's tables, a keyword's value as a double and

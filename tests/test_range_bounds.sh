@@ -97,7 +97,7 @@ done <"$tmp/flags"
 # a sweep's integer key and the Python module's keyword: the same words
 printf '[sweep]\nmodel = chain\n[grid]\nn = 2, 1e-310\n[params]\nsolver = rk4\n' >sv.ini
 refused "sweep (chain): n = 2, 1e-310" \
-    "^granwave sweep: .*sv\\.ini: case 1: n: '1e-310' is not an integer \\(give an integer in \\[1, [0-9]+\\]\\)$" \
+    "^granwave sweep: .*sv\\.ini:4: \\[grid\\] n: '1e-310' is not an integer \\(give an integer in \\[1, [0-9]+\\]\\)$" \
     sweep sv.ini --check --out o
 py_checks 1 <<'EOF'
 refused("Python chain(n=1.5)", ["n:", "is not an integer (give an integer in [1, "], granwave.chain, n=1.5, t_max=1e-4)

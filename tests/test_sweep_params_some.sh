@@ -22,9 +22,10 @@ printf '[sweep]\nmodel = chain\n[grid]\nn = 1, 2\n[params]\nsolver = rk4\nrtol =
 refused "rtol acting on no case" 'case 0: rtol: .*rk4' sweep none.ini --out o
 grep -q 'takes it' "$tmp/stderr" && ko "  a case named where none takes the key: $(cat "$tmp/stderr")" ||
     ok "  no case named where none takes the key"
-# a key of the grid that fails is not a [params] key: no case named
+# a key of the grid that fails is not a [params] key: no case named (its
+# value is refused as the config is read, naming the line)
 printf '[sweep]\nmodel = chain\n[grid]\nn = 2, -1\n' >grid.ini
-refused "a bad grid value" 'case 1: n: ' sweep grid.ini --out o
+refused "a bad grid value" 'grid.ini:4: \[grid\] n: ' sweep grid.ini --out o
 printf '[sweep]\nmodel = chain\n[grid]\nsolver = cvode\nn = 2\n[params]\nrtol = 1e-8\n' >split.ini
 runs_quiet "the split sweep (cvode alone)" sweep split.ini --out split
 

@@ -244,6 +244,24 @@ static int split_values(const char *value, gw_sweep_key *k, parse_ctx *pc)
     return k->values != NULL;
 }
 
+/* Each value of a [grid] key by the model's rule for one value (the table of
+ * the model's options, as [params] is read): a misspelt choice or a number
+ * out of its row's range in a list ('solver = rk4, cvod', 'n = 0:3') was
+ * refused only by the check of every case, as "case 1: solver: ...", without
+ * the config's line. 1, or 0 with the message naming the key and the value. */
+static int grid_values_rule(parse_ctx *pc, const gw_sweep_key *k)
+{
+    const gw_sweep_value_rule rule = gw_sweep_value_rule_of(pc->cfg->model);
+    for (int j = 0; rule && j < k->nvalues; j++) {
+        gw_err e;
+        if (rule(k->name, k->values[j], &e) != GW_OK) {
+            gw_snprintf(pc->msg, sizeof pc->msg, "[grid] %s", e.msg);
+            return 0;
+        }
+    }
+    return 1;
+}
+
 static int find_key(const gw_sweep_key *keys, int n, const char *name)
 {
     for (int i = 0; i < n; i++)
@@ -305,8 +323,9 @@ static int handler_one(parse_ctx *pc, const char *section, const char *name, con
             gw_snprintf(pc->msg, sizeof pc->msg, "unknown key '%s' in [sweep] (model, out)", name);
             return 0;
         }
-        if (*dst) {
-            gw_snprintf(pc->msg, sizeof pc->msg, "duplicate key '%s'", name);
+        if (*dst) { /* the first value kept would run silently; either */
+            gw_snprintf(pc->msg, sizeof pc->msg, "duplicate key '%s' in [sweep] (given before in [sweep]: each key "
+                        "once)", name);
             return 0;
         }
         if (!*value) {
@@ -358,12 +377,14 @@ static int handler_one(parse_ctx *pc, const char *section, const char *name, con
     for (char *c = canon; *c; c++)
         if (*c == '_')
             *c = '-';
-    if (find_key(cfg->grid, cfg->ngrid, canon) >= 0 || find_key(cfg->params, cfg->nparams, canon) >= 0) {
+    const int in_grid = find_key(cfg->grid, cfg->ngrid, canon) >= 0;
+    if (in_grid || find_key(cfg->params, cfg->nparams, canon) >= 0) {
         if (strcmp(canon, name) != 0)
-            gw_snprintf(pc->msg, sizeof pc->msg, "duplicate key '%s' (the option '%s': '_' and '-' are one)", name,
-                        canon);
+            gw_snprintf(pc->msg, sizeof pc->msg, "duplicate key '%s' in [%s] (the option '%s', given before in [%s]: "
+                        "'_' and '-' are one)", name, section, canon, in_grid ? "grid" : "params");
         else
-            gw_snprintf(pc->msg, sizeof pc->msg, "duplicate key '%s'", name);
+            gw_snprintf(pc->msg, sizeof pc->msg, "duplicate key '%s' in [%s] (given before in [%s]: each key once)",
+                        name, section, in_grid ? "grid" : "params");
         free(canon);
         return 0;
     }
@@ -378,7 +399,7 @@ static int handler_one(parse_ctx *pc, const char *section, const char *name, con
     memset(k, 0, sizeof *k);
     k->name = canon;
     if (is_grid)
-        return split_values(value, k, pc);
+        return split_values(value, k, pc) && grid_values_rule(pc, k);
     k->values = calloc(1, sizeof *k->values);
     if (!k->values || !(k->values[0] = gw_sweep_strdup(value)))
         return parse_nomem(pc);

@@ -76,7 +76,7 @@ def test_an_error_names_every_input_by_its_keyword(sample):
 
 
 def test_a_sweep_names_its_keys_by_their_keywords():
-    with pytest.raises(granwave.GranwaveValueError, match=r"^sweep: case 0: t_max: -1 is outside \[0, 1e\+06\]$"):
+    with pytest.raises(granwave.GranwaveValueError, match=r"^sweep: \[grid\] t_max: -1 is outside \[0, 1e\+06\]$"):
         granwave.sweep("chain", {"t_max": [-1]})
     with pytest.raises(granwave.GranwaveValueError, match=r"^sweep: case 0: dt_out: .*: raise dt_out$"):
         granwave.sweep("chain", {"n": [2]}, dt_out=1e-30, t_max=1)
@@ -96,7 +96,7 @@ def test_the_program_still_names_its_flags(program, tmp_path):
     p = subprocess.run([program, "sweep", str(tmp_path / "c.ini"), "--check", "--out", str(tmp_path / "o")],
                        capture_output=True, text=True,
                        timeout=60)
-    assert p.returncode == 2 and "case 0: t-max: -1 is outside" in p.stderr, p.stderr
+    assert p.returncode == 2 and "c.ini:4: [grid] t-max: -1 is outside" in p.stderr, p.stderr
 
 
 def test_a_value_quoted_back_stays_as_given(tmp_path, monkeypatch):

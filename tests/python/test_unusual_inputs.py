@@ -107,7 +107,7 @@ REFUSED = [
     ("sweep", dict(model="chain", grid={"vimp": ["0.3;x"]}), ValueError, "vimp: value '0.3;x' cannot go into"),
     ("sweep", dict(model="chain", grid={"n": [2]}, solver="rk4\n[grid]\nn=9"), ValueError, "solver: value"),
     ("sweep", dict(model="chain", grid={"n": [2, 2.0]}), ValueError, "sweep: n: '2' and '2.0'"),
-    ("sweep", dict(model="chain", grid={"vimp": [float("nan")]}), ValueError, "sweep: case 0: vimp: 'nan' is not"),
+    ("sweep", dict(model="chain", grid={"vimp": [float("nan")]}), ValueError, "sweep: [grid] vimp: 'nan' is not"),
     ("sweep", dict(model="chain", grid=[("n", [2])]), TypeError, "sweep(): grid must be a dict"),
     ("sweep", dict(model="layer", grid={"vi": [10]}, sample="{d}/fifo"), ValueError,
      "sweep: [params] sample: {d}/fifo is a FIFO"),

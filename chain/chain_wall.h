@@ -67,6 +67,9 @@ int chain_damping_zero_warnings(const gw_chain_params *p, int zero, int total, c
 double chain_damping_effect(const gw_chain_params *p);
 int chain_damping_small(const gw_chain_params *p, double rtol);
 int chain_damping_small_warning(const gw_chain_params *p, double rtol, char **list);
+/* The same for a study over nv speeds v (falcon, wavespeed): p at the
+ * largest of them, its bead contacts counted. */
+int chain_damping_small_study_warning(const gw_chain_params *p, double rtol, const double *v, int nv, char **list);
 int chain_damping_small_cases_warning(int n, int total, double hi, char **list);
 /* A run's energy error above GW_CHAIN_ENERGY_WARN with energy_tol off (0):
  * a warning naming the error and the solver's rtol and atol (rk4: its step),

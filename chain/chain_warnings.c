@@ -143,6 +143,18 @@ int chain_damping_small_warning(const gw_chain_params *p, double rtol, char **li
                            rtol, kk ? "gamma" : "alpha");
 }
 
+int chain_damping_small_study_warning(const gw_chain_params *p, double rtol, const double *v, int nv, char **list)
+{
+    if (!p || !v || nv < 1)
+        return GW_OK;
+    gw_chain_params q = *p; /* at the study's largest speed, bead contacts counted: its largest effect */
+    q.v_imp = v[0];
+    for (int i = 1; i < nv; i++)
+        q.v_imp = fmax(q.v_imp, v[i]);
+    q.n = 2;
+    return chain_damping_small_warning(&q, rtol, list);
+}
+
 int chain_damping_small_cases_warning(int n, int total, double hi, char **list)
 {
     if (n <= 0)

@@ -10,7 +10,8 @@
 #  2 `chain --damping kk --gamma 1e-30` ran undamped in silence: a damping
 #    whose predicted relative effect on the restitution (hc: alpha v_imp; kk:
 #    gamma v_imp/(k d_max)) is below rtol is warned of, naming the constant
-#    and the estimate (chain, its --json, drop, a chain sweep once); eps_eff
+#    and the estimate (chain, its --json, drop, falcon and wavespeed at their
+#    largest speed, a chain sweep once, Python); eps_eff
 #    measured on both sides of the bound (warned: within rtol of the constant
 #    1e-30's; an effect of 1e-4 not warned, and eps_eff moved by it).
 #  3 The sweep's stderr lines printed paths raw: a config, an --out and a
@@ -61,7 +62,7 @@ fi
 # resumed with every case journaled: the table rewritten, the line from it
 rm -f O/results.csv
 "$GW" sweep o.ini --quiet 2>o2.err; rc=$?
-[ $rc -eq 0 ] && cmp -s o.err o2.err && ok "  resumed (no case run): the same line from the table" ||
+[ $rc -eq 0 ] && [ -s o2.err ] && cmp -s o.err o2.err && ok "  resumed (no case run): the same line from the table" ||
     ko "  resumed: exit $rc, $(head -c 300 o2.err)"
 printf '[sweep]\nmodel = chain\nout = E\n[grid]\nrtol = 1e-4, 1e-12\n[params]\nn = 20\natol = 1e-4\n' >e.ini
 "$GW" sweep e.ini --quiet 2>e.err; rc=$?
@@ -87,6 +88,12 @@ grep -qF "(damping hc, alpha 1e-30 s/m) has no effect: its predicted relative ef
 "$GW" drop --damping kk --gamma 1e-30 --quiet >/dev/null 2>dr.err
 grep -q "^granwave drop: warning: the contact damping (damping kk, gamma 1e-30 N s/m^1.5) has no effect" dr.err &&
     ok "2 drop --damping kk --gamma 1e-30: warned" || ko "2 drop: $(head -c 300 dr.err)"
+"$GW" falcon --damping kk --gamma 1e-30 --n 2:3 --quiet >/dev/null 2>fa.err
+grep -q "^granwave falcon: warning: the contact damping (damping kk, gamma 1e-30 N s/m^1.5) has no effect" fa.err &&
+    ok "2 falcon --damping kk --gamma 1e-30: warned" || ko "2 falcon: $(head -c 300 fa.err)"
+"$GW" wavespeed --damping hc --alpha 1e-30 --n 8:10 --quiet >/dev/null 2>ws.err
+grep -q "^granwave wavespeed: warning: the contact damping (damping hc, alpha 1e-30 s/m) has no effect: .* alpha v_imp = 5e-31" ws.err &&
+    ok "2 wavespeed --damping hc --alpha 1e-30: warned at its largest speed" || ko "2 wavespeed: $(head -c 300 ws.err)"
 # eps_eff on both sides of the bound (one bead, v_imp 0.3): hc alpha 3e-13
 # (effect 9e-14, warned) within rtol of alpha 1e-30's; alpha 3.3e-4 and kk
 # gamma 8.3 (effect 1e-4 predicted) not warned, eps_eff lower by 1e-4 (hc

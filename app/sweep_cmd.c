@@ -23,6 +23,7 @@
 #include <unistd.h>
 
 #include "gw_cli.h"
+#include "gw_locale.h"
 #include "gw_pool_impl.h"
 #include "gw_sweep_impl.h"
 #include "sweep_cmd.h"
@@ -314,9 +315,11 @@ static void journal_put_back(sweep_run *s, gw_err *err, int *rc)
         s->kept_err = *err;
         *rc = GW_OK;
     }
+    char q[GW_CLI_PATH_TEXT];
     if (back == 1)
         fprintf(stderr, "granwave sweep: warning: %s/journal.csv was removed while the sweep ran: put back with "
-                "its %ld row%s; the sweep goes on\n", s->out, s->ndone0 + s->done, s->ndone0 + s->done == 1 ? "" : "s");
+                "its %ld row%s; the sweep goes on\n", gw_cli_path(q, sizeof q, s->out), s->ndone0 + s->done,
+                s->ndone0 + s->done == 1 ? "" : "s");
 }
 
 /* The kept journal's message (s->kept_err) with the row at which the file
@@ -733,48 +736,74 @@ static int dir_moved(const char *out, int dirfd, char *where, size_t n)
  * column converged 0, a collision held by gravity or cut at t-max), said in
  * one warning line, with --quiet too: a chain sweep wrote their nan rows, or
  * the values at t-max, with nothing said, where `granwave chain` warns of
- * each. Read back from the table, it counts the cases of a resume and of MPI
- * ranks as well. */
-static void undecided_warning(int dirfd, const gw_sweep_model *m, long ncases)
+ * each. Then the model's warnings over its rows (gw_sweep_rows_rule: a chain
+ * case pressed beyond one radius, or with a large energy error), one line
+ * each over the cases. Read back from the table, they count the cases of a
+ * resume and of MPI ranks as well. */
+static void rows_warnings(int dirfd, const gw_sweep_config *cfg, const gw_sweep_model *m)
 {
     int col = -1;
     for (int j = 0; j < m->ncolumns; j++)
         if (strcmp(m->columns[j], "converged") == 0)
             col = j;
-    const int fd = col < 0 ? -1 : openat(dirfd, "results.csv", O_RDONLY | O_CLOEXEC);
+    const gw_sweep_rows_rule *rule = gw_sweep_rows_rule_of(m->name);
+    const int fd = col < 0 && !rule ? -1 : openat(dirfd, "results.csv", O_RDONLY | O_CLOEXEC);
     FILE *fp = fd >= 0 ? fdopen(fd, "r") : NULL;
-    if (!fp) {
-        if (fd >= 0)
+    double *row = malloc((size_t)m->ncolumns * sizeof *row);
+    void *acc = rule ? calloc(1, rule->acc_size) : NULL;
+    if (!fp || !row || (rule && !acc)) {
+        if (fp)
+            fclose(fp);
+        else if (fd >= 0)
             close(fd);
+        free(row);
+        free(acc);
         return;
     }
     char *line = NULL;
     size_t cap = 0;
     long n = 0, first = -1;
-    int at = -1; /* the column's place among the table's cells */
+    int head = 0; /* the header line passed: the rows follow */
+    /* a row: case, the grid's values (no comma in them), the model's columns, the hashes */
+    const int at = 1 + cfg->ngrid;
     while (getline(&line, &cap, fp) > 0) {
         line[strcspn(line, "\r\n")] = '\0';
         if (line[0] == '#')
             continue;
-        int k = 0;
+        if (!head) {
+            head = 1;
+            continue;
+        }
+        int k = 0, got = 0;
         const char *cell = line;
         for (const char *p = line;; p++)
             if (*p == ',' || *p == '\0') {
-                const size_t len = (size_t)(p - cell);
-                if (at < 0 && len == strlen("converged") && strncmp(cell, "converged", len) == 0)
-                    at = k;
-                else if (at >= 0 && k == at && len == 1 && cell[0] == '0' && n++ == 0)
-                    first = strtol(line, NULL, 10);
-                if (*p == '\0' || (at >= 0 && k >= at))
+                if (k >= at && k < at + m->ncolumns) {
+                    row[k - at] = gw_strtod(cell, NULL);
+                    got++;
+                }
+                if (*p == '\0' || got == m->ncolumns)
                     break;
                 k++, cell = p + 1;
             }
+        if (got != m->ncolumns)
+            continue; /* not a row the table writes: written by this sweep, it has none */
+        const long kc = strtol(line, NULL, 10);
+        if (col >= 0 && row[col] == 0 && n++ == 0)
+            first = kc;
+        if (rule)
+            rule->row(acc, cfg, kc, row);
     }
     free(line);
+    free(row);
     fclose(fp);
     char *w = NULL;
-    if (n > 0 && gw_sweep_undecided_warning(m, n, ncases, first, &w) == GW_OK)
-        gw_cli_warnings("sweep", w);
+    if (n > 0)
+        (void)gw_sweep_undecided_warning(m, n, cfg->ncases, first, &w);
+    if (rule)
+        (void)rule->warnings(acc, cfg, &w);
+    free(acc);
+    gw_cli_warnings("sweep", w);
     free(w);
 }
 
@@ -817,6 +846,7 @@ int gw_cmd_sweep(int argc, char **argv, const gw_sweep_model *const *models, con
     long jobs = 0;
     int quiet = 0, help = 0, npos = 0, check_only = 0;
     const char *pos[1] = {NULL};
+    char cq[GW_CLI_PATH_TEXT], wq[GW_CLI_PATH_TEXT]; /* a path as printed (gw_cli_path) */
     gw_opt opts[] = {
         {.name = "out", .kind = GW_OPT_STRING, .dest = &out, .metavar = "DIR", .help = "output directory [config's [sweep] out]"},
         {.name = "jobs", .kind = GW_OPT_LONG, .dest = &jobs, .metavar = "J", .help = "threads without MPI [0 = one per CPU]", .lo = 0, .hi = GW_SWEEP_JOBS_MAX},
@@ -884,7 +914,7 @@ int gw_cmd_sweep(int argc, char **argv, const gw_sweep_model *const *models, con
     }
     /* The journal and table of the whole grid fit, before a case is checked */
     if (code == 0 && rank == 0 && (rc = gw_sweep_size_check(&cfg, m, &err)) != GW_OK) {
-        fprintf(stderr, "granwave sweep: %s: %s\n", pos[0], err.msg);
+        fprintf(stderr, "granwave sweep: %s: %s\n", gw_cli_path(cq, sizeof cq, pos[0]), err.msg);
         err.msg[0] = '\0';
         code = exit_code(rc);
     }
@@ -915,7 +945,7 @@ int gw_cmd_sweep(int argc, char **argv, const gw_sweep_model *const *models, con
         free(warn);
         gw_sweep_checks_end(m, memo);
         if (code)
-            fprintf(stderr, "granwave sweep: %s: %s\n", pos[0], err.msg);
+            fprintf(stderr, "granwave sweep: %s: %s\n", gw_cli_path(cq, sizeof cq, pos[0]), err.msg);
         err.msg[0] = '\0';
     }
     /* The cases under way at once hold their memory together: bounded before
@@ -929,13 +959,14 @@ int gw_cmd_sweep(int argc, char **argv, const gw_sweep_model *const *models, con
         if ((rc = gw_sweep_memory_check(&cfg, m, workers, use_mpi && size > 1, &most, &err)) != GW_OK) {
             code = exit_code(rc);
             if (strncmp(err.msg, "jobs: ", 6) == 0 && use_mpi && size > 1)
-                fprintf(stderr, "granwave sweep: %s: the MPI ranks: %s (mpirun -np %ld or fewer)\n", pos[0],
+                fprintf(stderr, "granwave sweep: %s: the MPI ranks: %s (mpirun -np %ld or fewer)\n",
+                        gw_cli_path(cq, sizeof cq, pos[0]),
                         err.msg + 6, most + 1);
             else if (strncmp(err.msg, "jobs: ", 6) == 0)
                 fprintf(stderr, "granwave sweep --jobs: %s%s\n", err.msg + 6,
                         jobs == 0 ? " (--jobs 0 is one per CPU)" : "");
             else
-                fprintf(stderr, "granwave sweep: %s: %s\n", pos[0], err.msg);
+                fprintf(stderr, "granwave sweep: %s: %s\n", gw_cli_path(cq, sizeof cq, pos[0]), err.msg);
             err.msg[0] = '\0';
         }
     }
@@ -952,7 +983,8 @@ int gw_cmd_sweep(int argc, char **argv, const gw_sweep_model *const *models, con
         else if ((rc = gw_sweep_journal_resume_check(out, &cfg, done, &ndone, &exists, &torn, &torn_head, &err)) != GW_OK)
             code = rc == GW_EIO ? 1 : exit_code(rc);
         if (code == 0) {
-            printf("sweep: %s is valid: model %s, %ld cases\n", pos[0], cfg.model, cfg.ncases);
+            printf("sweep: %s is valid: model %s, %ld cases\n", gw_cli_path(cq, sizeof cq, pos[0]), cfg.model,
+                   cfg.ncases);
             check_report(out, cfg.ncases, exists, ndone, torn, torn_head);
         }
     }
@@ -1044,7 +1076,7 @@ int gw_cmd_sweep(int argc, char **argv, const gw_sweep_model *const *models, con
                 if (moved)
                     fprintf(stderr, "sweep: interrupted after %ld new cases; %s was moved to %s while the sweep "
                             "ran: move it back and rerun the same command to resume (or rerun with --out %s)\n",
-                            s.done, out, where, where);
+                            s.done, gw_cli_path(cq, sizeof cq, out), gw_cli_path(wq, sizeof wq, where), wq);
                 else
                     fprintf(stderr, "sweep: interrupted after %ld new cases; rerun the same command to resume\n",
                             s.done);
@@ -1059,11 +1091,11 @@ int gw_cmd_sweep(int argc, char **argv, const gw_sweep_model *const *models, con
                        gw_sweep_write_table_at(s.dirfd, now, &cfg, m, &err) != GW_OK) {
                 code = 1;
             } else {
-                undecided_warning(s.dirfd, m, cfg.ncases);
+                rows_warnings(s.dirfd, &cfg, m);
                 /* finished where the directory went: said even with --quiet */
                 if (moved)
                     fprintf(stderr, "granwave sweep: warning: %s was moved while the sweep ran: its journal and "
-                            "table are in %s\n", out, where);
+                            "table are in %s\n", gw_cli_path(cq, sizeof cq, out), gw_cli_path(wq, sizeof wq, where));
                 if (!quiet)
                 {
                     char q[GW_CLI_PATH_TEXT];

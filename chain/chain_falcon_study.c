@@ -647,7 +647,9 @@ static int falcon_run(const gw_chain_falcon_setup *s, gw_progress_fn progress, v
         (rc = run_traces(out, &r.params, &r.run, (int)s->n[1], &dt_tally, watch, err)) != GW_OK)
         out->trace_failed = 1;
     if (rc == GW_OK && ((rc = chain_dt_tally_warnings(&dt_tally, "--dt", "collisions", &out->warnings)) != GW_OK ||
-                        (rc = chain_damping_zero_warnings(&r.params, 0, 1, &out->warnings)) != GW_OK))
+                        (rc = chain_damping_zero_warnings(&r.params, 0, 1, &out->warnings)) != GW_OK ||
+                        (rc = chain_damping_small_study_warning(&r.params, r.run.sp.rtol, out->v_imp, out->nv,
+                                                                &out->warnings)) != GW_OK))
         rc = gw_err_set(err, rc, "falcon: out of memory");
     for (int i = 0; res && i < out->ncase; i++)
         gw_chain_result_free(&res[i]);

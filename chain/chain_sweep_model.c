@@ -17,7 +17,9 @@
 #include "gw_sweep_impl.h"
 
 static const char *const columns[] = {"f_max", "tau_max", "tau_n", "period", "eps_eff", "eps_col",
-                                      "e_rel_over_e_k", "n_s", "energy_error", "steps", "converged"};
+                                      "e_rel_over_e_k", "n_s", "energy_error", "steps", "converged",
+                                      "overlap_max_rel"};
+enum { COL_ENERGY = 8, COL_OVERLAP = 11 }; /* their places in columns */
 
 static int has_key(const char *name)
 {
@@ -60,6 +62,8 @@ static int prepare(gw_chain_setup *s, int nk, const char *const *names, const ch
 typedef struct sweep_memo {
     chain_dt_tally dt;
     int zero, total;
+    int small;      /* cases whose damping's predicted effect is below their rtol */
+    double small_hi; /* the largest such effect */
 } sweep_memo;
 
 /* tally (may be NULL): the case's dt given against the step it will take, and its damping */
@@ -82,6 +86,10 @@ static int check_tally(sweep_memo *tally, int nk, const char *const *names, cons
             chain_dt_tally_add(&tally->dt, r.run.sp.dt > 0 ? r.run.sp.dt : 0.0, dt, dt_max);
             tally->zero += chain_damping_zero(&r.params);
             tally->total++;
+            if (chain_damping_small(&r.params, r.run.sp.rtol)) { /* the single run's test */
+                const double e = chain_damping_effect(&r.params);
+                tally->small_hi = tally->small++ ? fmax(tally->small_hi, e) : e;
+            }
         }
         gw_chain_resolved_free(&r);
     }
@@ -108,7 +116,8 @@ static int memo_warnings(const void *memo, char **list)
 {
     const sweep_memo *m = memo;
     int rc = m ? chain_dt_tally_warnings(&m->dt, "dt", "cases", list) : GW_OK;
-    return rc == GW_OK && m ? chain_damping_zero_warnings(NULL, m->zero, m->total, list) : rc;
+    rc = rc == GW_OK && m ? chain_damping_zero_warnings(NULL, m->zero, m->total, list) : rc;
+    return rc == GW_OK && m ? chain_damping_small_cases_warning(m->small, m->total, m->small_hi, list) : rc;
 }
 
 /* A case's part: the share of its collision's work done (chain_watch_share,
@@ -145,7 +154,7 @@ int gw_chain_sweep_run_part(int nk, const char *const *names, const char *const 
     if (rc == GW_OK) {
         const gw_chain_result *r = &c.r;
         double v[] = {r->f_max, r->tau_max, r->tau_n, r->period, r->eps_eff, r->eps_col, r->e_rel_over_e_k,
-                      r->n_s, r->energy_error, (double)r->stats.steps, r->converged};
+                      r->n_s, r->energy_error, (double)r->stats.steps, r->converged, r->overlap_max_rel};
         memcpy(out, v, sizeof v);
     }
     gw_chain_collision_free(&c);
@@ -157,6 +166,63 @@ static int run(int nk, const char *const *names, const char *const *values, doub
                unsigned long long *read_hash, gw_err *err)
 {
     return gw_chain_sweep_run_part(nk, names, values, out, read_hash, NULL, NULL, err);
+}
+
+/* The single run's warnings that a case's row holds the numbers of, said
+ * over the sweep's rows (gw_sweep_rows_rule): the overlap beyond one radius
+ * (overlap_max_rel) and the energy error above GW_CHAIN_ENERGY_WARN with
+ * energy-tol off (energy_error). A sweep of such cases said neither. */
+typedef struct rows_acc {
+    long total, over, over_first, energy, energy_first;
+    double over_hi, energy_hi;
+} rows_acc;
+
+/* case k's energy-tol, as its run took it (0: off; the default) */
+static double case_energy_tol(const gw_sweep_config *cfg, long k)
+{
+    const char *names[2 * GW_SWEEP_MAX_KEYS], *values[2 * GW_SWEEP_MAX_KEYS];
+    if (!cfg || gw_sweep_case(cfg, k, names, values) != GW_OK)
+        return 0;
+    gw_chain_setup s;
+    gw_err e = {{0}};
+    double tol = 0;
+    if (prepare(&s, cfg->ngrid + cfg->nparams, names, values, &e) == GW_OK)
+        tol = s.energy_tol;
+    gw_chain_setup_clear(&s);
+    return tol;
+}
+
+static void rows_row(void *acc, const gw_sweep_config *cfg, long k, const double *row)
+{
+    rows_acc *a = acc;
+    a->total++;
+    const double ov = row[COL_OVERLAP], ee = row[COL_ENERGY];
+    if (ov > 1) {
+        if (a->over++ == 0)
+            a->over_first = k, a->over_hi = ov;
+        a->over_hi = fmax(a->over_hi, ov);
+    }
+    /* a case with energy-tol on stopped at its bound; one below it ran on */
+    if (ee > GW_CHAIN_ENERGY_WARN && !(case_energy_tol(cfg, k) > 0)) {
+        if (a->energy++ == 0)
+            a->energy_first = k, a->energy_hi = ee;
+        a->energy_hi = fmax(a->energy_hi, ee);
+    }
+}
+
+static int rows_warnings(const void *acc, const gw_sweep_config *cfg, char **list)
+{
+    (void)cfg;
+    const rows_acc *a = acc;
+    int rc = chain_overlap_cases_warning(a->over, a->total, a->over_hi, a->over_first, list);
+    return rc == GW_OK ? chain_energy_cases_warning(a->energy, a->total, a->energy_hi, a->energy_first, list) : rc;
+}
+
+static const gw_sweep_rows_rule rows_rule = {sizeof(rows_acc), rows_row, rows_warnings};
+
+__attribute__((constructor)) static void chain_rows_rule(void)
+{
+    gw_sweep_rows_rule_set("chain", &rows_rule);
 }
 
 /* A case's weight before it runs: its column's as a study plans it

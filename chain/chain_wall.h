@@ -59,12 +59,30 @@ int chain_damping_held_error(const gw_chain_params *p, const char *who, const ch
  * or is NULL), or for zero of a sweep's total cases (p NULL); GW_OK or
  * GW_ENOMEM (gw_warnings_add). */
 int chain_damping_zero_warnings(const gw_chain_params *p, int zero, int total, char **list);
+/* The predicted relative effect of p's contact damping on the restitution
+ * at its v_imp (kk: gamma v_imp/(k d_max), hc: alpha v_imp; 0 undamped), and
+ * the warning of a run whose damping is predicted below its rtol (nothing
+ * otherwise), or of n of a sweep's total cases (hi: the largest effect among
+ * them). GW_OK or GW_ENOMEM. */
+double chain_damping_effect(const gw_chain_params *p);
+int chain_damping_small(const gw_chain_params *p, double rtol);
+int chain_damping_small_warning(const gw_chain_params *p, double rtol, char **list);
+/* The same for a study over nv speeds v (falcon, wavespeed): p at the
+ * largest of them, its bead contacts counted. */
+int chain_damping_small_study_warning(const gw_chain_params *p, double rtol, const double *v, int nv, char **list);
+int chain_damping_small_cases_warning(int n, int total, double hi, char **list);
 /* A run's energy error above GW_CHAIN_ENERGY_WARN with energy_tol off (0):
  * a warning naming the error and the solver's rtol and atol (rk4: its step),
  * the integration too loose to trust the column's numbers. Nothing when
  * energy_tol is on (the run stops at it instead). GW_OK or GW_ENOMEM. */
 #define GW_CHAIN_ENERGY_WARN 1e-3
 int chain_energy_warning(double energy_error, const gw_chain_run_opts *o, char **list);
+/* A sweep's n of total cases (the first, case first) whose rows say an
+ * overlap beyond one radius (hi: the largest, in radii), or an energy error
+ * above GW_CHAIN_ENERGY_WARN with energy-tol off (hi: the largest): the
+ * single run's warnings, one line over the cases; nothing for n <= 0. */
+int chain_overlap_cases_warning(long n, long total, double hi, long first, char **list);
+int chain_energy_cases_warning(long n, long total, double hi, long first, char **list);
 /* The same rule over a study's sizes from n_lo (falcon, wavespeed, softwall):
  * GW_EINVAL naming damping when n_lo is 1 and p's wall (any n) is such a wall;
  * sheet (may be NULL) names the wall in the message. */

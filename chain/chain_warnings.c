@@ -96,6 +96,74 @@ int chain_damping_zero_warnings(const gw_chain_params *p, int zero, int total, c
                            "are those of damping none", zero, total);
 }
 
+/* The damping's predicted relative effect on the restitution at p's impact
+ * speed (physics.md 1.5): Hunt-Crossley's 1 - e is about alpha v;
+ * Kuwabara-Kono's about gamma v / (k d_max) (Schwager and Poeschel's 1.153 A
+ * (3k/2m)^(2/5) v^(1/5) with gamma = 3/2 A k, d_max the Hertz overlap
+ * gw_chain_dmax1: 0.99 gamma v / (k d_max)), the larger of the wall's
+ * contact (gamma K/k on K, at mass m) and the beads' (gamma on k, at m/2).
+ * 0 when p does not damp. */
+double chain_damping_effect(const gw_chain_params *p)
+{
+    if (!damping_on(p) || !(p->v_imp > 0))
+        return 0;
+    const double v = p->v_imp;
+    if (p->damping == GW_DAMP_HUNT_CROSSLEY)
+        return p->alpha * v;
+    double e = 0;
+    const double dw = gw_chain_dmax1(p->mass, p->kwall, v); /* the wall's: gamma K/k over K */
+    if (dw > 0)
+        e = p->gamma * v / (p->k * dw);
+    const double db = p->n > 1 ? gw_chain_dmax1(0.5 * p->mass, p->k, v) : NAN;
+    if (db > 0)
+        e = fmax(e, p->gamma * v / (p->k * db));
+    return e;
+}
+
+/* chain --damping kk --gamma 1e-30 ran the elastic column and said nothing
+ * (the forty-eighth pass): a damping whose predicted effect is below the
+ * solver's relative tolerance cannot change a digit the run resolves. */
+int chain_damping_small(const gw_chain_params *p, double rtol)
+{
+    const double e = chain_damping_effect(p);
+    return e > 0 && rtol > 0 && e < rtol;
+}
+
+int chain_damping_small_warning(const gw_chain_params *p, double rtol, char **list)
+{
+    if (!chain_damping_small(p, rtol))
+        return GW_OK;
+    const double e = chain_damping_effect(p);
+    char named[128];
+    const int kk = p->damping == GW_DAMP_KUWABARA_KONO;
+    return gw_warnings_add(list, "the contact damping (%s) has no effect: its predicted relative effect on the "
+                           "restitution, %s = %.3g, is below the solver's rtol %g, and the results are those of "
+                           "--damping none (give a larger --%s, or a --restitution further below 1)",
+                           damping_named(named, sizeof named, p), kk ? "gamma v_imp/(k d_max)" : "alpha v_imp", e,
+                           rtol, kk ? "gamma" : "alpha");
+}
+
+int chain_damping_small_study_warning(const gw_chain_params *p, double rtol, const double *v, int nv, char **list)
+{
+    if (!p || !v || nv < 1)
+        return GW_OK;
+    gw_chain_params q = *p; /* at the study's largest speed, bead contacts counted: its largest effect */
+    q.v_imp = v[0];
+    for (int i = 1; i < nv; i++)
+        q.v_imp = fmax(q.v_imp, v[i]);
+    q.n = 2;
+    return chain_damping_small_warning(&q, rtol, list);
+}
+
+int chain_damping_small_cases_warning(int n, int total, double hi, char **list)
+{
+    if (n <= 0)
+        return GW_OK;
+    return gw_warnings_add(list, "the contact damping has no effect in %d of %d cases: its predicted relative effect "
+                           "on the restitution (kk: gamma v_imp/(k d_max), hc: alpha v_imp; at most %.3g there) is "
+                           "below the case's rtol, and their rows are those of damping none", n, total, hi);
+}
+
 /* A dt given above the step the run could take ran at that step: the
  * results are the step's (chain --dt 1e-3 byte for byte those of the
  * automatic dt-max 6.6e-6 s); refusing would refuse the dt that earlier
@@ -138,16 +206,47 @@ void chain_dt_tally_results(chain_dt_tally *t, const gw_chain_result *res, long 
 
 /* The runs of a study pressed beyond one radius (overlap_warning's line, with
  * how many of them): `falcon --n 1:3 --mass 1000 --radius 1e-5` reached 309
- * radii, as chain does on its one run, and said nothing. */
+ * radii, as chain does on its one run, and said nothing. first: "" or the
+ * first of them ("; the first, case 4" of a sweep). */
+static int overlap_many_warning(double hi, long n, long total, const char *what, const char *first, char **list)
+{
+    return gw_warnings_add(list,
+                           "the largest contact overlap was %.3g bead radii (%ld of %ld %s beyond one radius%s): the "
+                           "Hertz law holds for overlaps much smaller than the radius, and their results are the "
+                           "law's far outside its range (a lower --vimp or --gravity, or stiffer or lighter beads)",
+                           hi, n, total, what, first);
+}
+
 static int tally_overlap_warning(const chain_dt_tally *t, const char *what, char **list)
 {
     if (t->overlap_over <= 0)
         return GW_OK;
-    return gw_warnings_add(list,
-                           "the largest contact overlap was %.3g bead radii (%d of %d %s beyond one radius): the "
-                           "Hertz law holds for overlaps much smaller than the radius, and their results are the "
-                           "law's far outside its range (a lower --vimp or --gravity, or stiffer or lighter beads)",
-                           t->overlap_hi, t->overlap_over, t->total, what);
+    return overlap_many_warning(t->overlap_hi, t->overlap_over, t->total, what, "", list);
+}
+
+/* A sweep's cases pressed beyond one radius (their rows' overlap_max_rel
+ * above 1): `granwave chain` warns of its one run, a chain sweep wrote such
+ * rows and said nothing (the forty-eighth pass) */
+int chain_overlap_cases_warning(long n, long total, double hi, long first, char **list)
+{
+    if (n <= 0)
+        return GW_OK;
+    char f[48];
+    gw_snprintf(f, sizeof f, "; the first, case %ld", first);
+    return overlap_many_warning(hi, n, total, "cases", f, list);
+}
+
+/* A sweep's cases whose relative energy error passed GW_CHAIN_ENERGY_WARN
+ * with energy-tol off (chain_energy_warning's, which a sweep case lost: its
+ * row's energy_error alone said it) */
+int chain_energy_cases_warning(long n, long total, double hi, long first, char **list)
+{
+    if (n <= 0)
+        return GW_OK;
+    return gw_warnings_add(list, "the relative energy error reached %.3g (%.3g %%, above %g) in %ld of %ld cases (the "
+                           "first, case %ld; their energy_error column) with energy-tol off: their tolerances are "
+                           "too loose to trust their numbers: tighten rtol and atol (rk4: lower dt), or set "
+                           "energy-tol to stop at a bound", hi, 100 * hi, GW_CHAIN_ENERGY_WARN, n, total, first);
 }
 
 /* "A s" or "A to B s" */

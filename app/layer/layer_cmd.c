@@ -716,8 +716,10 @@ int gw_cmd_layer_impact(int argc, char **argv)
         err = vc.err;
     else if (rc != GW_OK && vc.failure_file[0]) {
         const size_t k = strlen(err.msg), room = sizeof err.msg - k;
-        if (room > 24 + strlen(vc.failure_file))
-            snprintf(err.msg + k, room, "; state at failure in %.*s", (int)(room - 24), vc.failure_file);
+        char q[GW_CLI_PATH_TEXT]; /* one line: the message is printed as it is */
+        gw_cli_path(q, sizeof q, vc.failure_file);
+        if (room > 24 + strlen(q))
+            snprintf(err.msg + k, room, "; state at failure in %.*s", (int)(room - 24), q);
     }
     gw_layer_sample_free(&s);
     if (rc == GW_EINVAL || rc == GW_EUNSUPPORTED || vc.failed)

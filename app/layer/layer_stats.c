@@ -85,8 +85,9 @@ static const char *mean_of(char *b, size_t n, const char *fmt, gw_stats_moment m
 static void print_text(const gw_stats_analysis *R)
 {
     const gw_stats_table *t = &R->t;
+    char q[GW_CLI_PATH_TEXT];
     printf("granwave %s layer-stats: %s: %ld rows, %d groups, criterion %.3g\n", gw_version(),
-           R->input, t->nrows, R->gs.n, R->gs.criterion);
+           gw_cli_path(q, sizeof q, R->input), t->nrows, R->gs.n, R->gs.criterion);
     for (int a = 0; a < R->gs.n; a++) {
         const gw_stats_group *g = &R->gs.g[a];
         printf("  ");

@@ -364,7 +364,9 @@ int gw_sweep_run(const gw_sweep_config *cfg, const gw_sweep_model *m, int jobs, 
  * gw_warnings_add, freed by the caller; NULL: none kept), the program's
  * lines: the check pass's (m->memo_warnings: a chain dt above the step the
  * cases take, layer cases on a sample settled under another material or not
- * settled), then the cases that did not end (gw_sweep_undecided_rows). */
+ * settled), then the cases that did not end (gw_sweep_undecided_rows), then
+ * the model's over its rows (a chain case's overlap beyond one radius, its
+ * energy error above 1e-3 with energy-tol off; gw_sweep_rows_rule). */
 int gw_sweep_run_warned(const gw_sweep_config *cfg, const gw_sweep_model *m, int jobs, gw_progress_fn progress,
                         void *pctx, double *values, char **warnings, gw_err *err);
 

@@ -89,6 +89,23 @@ typedef int (*gw_sweep_value_rule)(const char *name, const char *value, gw_err *
 void gw_sweep_value_rule_set(const char *model, gw_sweep_value_rule fn);
 gw_sweep_value_rule gw_sweep_value_rule_of(const char *model);
 
+/* A model's rule over its finished rows, for the warnings a single run of a
+ * case gives that its row alone does not say (a chain case pressed beyond
+ * one radius, or ending with a large energy error): acc_size bytes of
+ * zeroed tally, row() called on each finished row (case k, its model
+ * columns), then warnings() once, lines appended to *list saying how many of
+ * the cases each concerns (gw_warnings_add; GW_OK or GW_ENOMEM). The
+ * program's sweep calls it on the table it wrote (a resume's rows and MPI
+ * ranks' too), gw_sweep_run_warned on its values. Registered by the model's
+ * constructor (at most 8 models); NULL: none. */
+typedef struct gw_sweep_rows_rule {
+    size_t acc_size;
+    void (*row)(void *acc, const gw_sweep_config *cfg, long k, const double *row);
+    int (*warnings)(const void *acc, const gw_sweep_config *cfg, char **list);
+} gw_sweep_rows_rule;
+void gw_sweep_rows_rule_set(const char *model, const gw_sweep_rows_rule *rule);
+const gw_sweep_rows_rule *gw_sweep_rows_rule_of(const char *model);
+
 /* Whether value is one value that number row p (double, long, int, flag,
  * choice) takes, by gw_param_set_value's checks, nothing set ("n: '3:5' is
  * not an integer"); GW_OK for the other kinds of row (text, list, range:

@@ -170,6 +170,37 @@ gw_sweep_value_rule gw_sweep_value_rule_of(const char *model)
     return (gw_sweep_value_rule)rule_of(&value_rules, model);
 }
 
+/* the models' rules over their finished rows (gw_sweep_rows_rule), held as
+ * the other rules are: by the models' constructors, before main */
+static struct {
+    const char *model;
+    const gw_sweep_rows_rule *rule;
+} rows_rules[RULES_MAX];
+static int n_rows_rules;
+
+void gw_sweep_rows_rule_set(const char *model, const gw_sweep_rows_rule *rule)
+{
+    if (!model)
+        return;
+    for (int i = 0; i < n_rows_rules; i++)
+        if (strcmp(rows_rules[i].model, model) == 0) {
+            rows_rules[i].rule = rule;
+            return;
+        }
+    if (n_rows_rules < RULES_MAX) {
+        rows_rules[n_rows_rules].model = model;
+        rows_rules[n_rows_rules++].rule = rule;
+    }
+}
+
+const gw_sweep_rows_rule *gw_sweep_rows_rule_of(const char *model)
+{
+    for (int i = 0; model && i < n_rows_rules; i++)
+        if (strcmp(rows_rules[i].model, model) == 0)
+            return rows_rules[i].rule;
+    return NULL;
+}
+
 /* value (of key read_key) through its model's rules when it names something */
 static int input_readable(const gw_sweep_config *cfg, const char *value, gw_err *e)
 {

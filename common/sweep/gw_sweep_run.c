@@ -423,5 +423,14 @@ int gw_sweep_run_warned(const gw_sweep_config *cfg, const gw_sweep_model *m, int
     long first = 0, n = rc == GW_OK && warnings ? gw_sweep_undecided_rows(m, values, cfg->ncases, &first) : 0;
     if (n > 0)
         (void)gw_sweep_undecided_warning(m, n, cfg->ncases, first, warnings);
+    /* the model's warnings over its rows (a chain case pressed beyond one
+     * radius), as the program says them from its table */
+    const gw_sweep_rows_rule *rule = rc == GW_OK && warnings ? gw_sweep_rows_rule_of(m->name) : NULL;
+    void *acc = rule ? calloc(1, rule->acc_size) : NULL;
+    for (long k = 0; acc && k < cfg->ncases; k++)
+        rule->row(acc, cfg, k, values + k * m->ncolumns);
+    if (acc)
+        (void)rule->warnings(acc, cfg, warnings);
+    free(acc);
     return rc;
 }

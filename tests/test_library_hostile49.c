@@ -15,10 +15,17 @@
  *     parameter 'n'", a NULL name "unknown parameter '(null)'", and
  *     gw_param_set_value a NULL row "(null): a result, not a parameter":
  *     each now names the call and the argument, as every other entry point.
+ *   - gw_chain_params_validate took a subnormal v_imp, mass, k, kwall or
+ *     radius (and masses[i], kc[i]) and a v_imp of 1e-160 m/s or below
+ *     (steel), whose overlap scale underflows to 0: gw_chain_create then
+ *     failed as "solver: scale[0] = 0 must be finite and > 0", naming no
+ *     input. Each is refused naming the field. Control: v_imp 1e-150 and a
+ *     mass of 1e-300 kg still run (the column is scale-free down there).
  * Each case runs in its own child process (test_child.h).
  */
 #define _POSIX_C_SOURCE 200809L
 #include <math.h>
+#include <stddef.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -156,6 +163,87 @@ static int c_set_nulls(void)
     return 0;
 }
 
+/* ------------------------------------ a column's scales below the doubles ---- */
+
+static int c_model_subnormal(void)
+{
+    const double sub = 4.9e-324;
+    const struct {
+        const char *name;
+        size_t off;
+    } f[] = {{"v_imp", offsetof(gw_chain_params, v_imp)}, {"mass", offsetof(gw_chain_params, mass)},
+             {"k (", offsetof(gw_chain_params, k)},         {"kwall", offsetof(gw_chain_params, kwall)},
+             {"radius", offsetof(gw_chain_params, radius)}};
+    gw_err e = {0};
+    for (size_t i = 0; i < sizeof f / sizeof f[0]; i++) {
+        gw_chain_params p = gw_chain_params_default();
+        p.n = 2;
+        *(double *)((char *)&p + f[i].off) = sub;
+        gw_chain *c = NULL;
+        const int rc = gw_chain_create(&p, &c, &e);
+        gw_chain_free(c);
+        if (!refused(rc, &e, f[i].name) || !strstr(e.msg, "subnormal")) {
+            printf("%s subnormal: status %d (%s)\n", f[i].name, rc, e.msg);
+            return 1;
+        }
+    }
+    double masses[2] = {1e-3, sub}, kc[1] = {sub};
+    gw_chain_params p = gw_chain_params_default();
+    p.n = 2;
+    p.masses = masses;
+    EXPECT(refused(gw_chain_params_validate(&p, &e), &e, "masses[1]") && strstr(e.msg, "subnormal"));
+    p.masses = NULL;
+    p.kc = kc;
+    EXPECT(refused(gw_chain_params_validate(&p, &e), &e, "kc[0]") && strstr(e.msg, "subnormal"));
+    return 0;
+}
+
+/* run a 3-bead steel column at v_imp with mass m (0: the default); GW_OK and f_max, or the status */
+static int column_at(double v_imp, double m, double *f_max, gw_err *e)
+{
+    gw_chain_params p = gw_chain_params_default();
+    p.n = 3;
+    p.v_imp = v_imp;
+    if (m > 0)
+        p.mass = m;
+    gw_chain *c = NULL;
+    int rc = gw_chain_create(&p, &c, e);
+    gw_chain_result r;
+    memset(&r, 0, sizeof r);
+    gw_chain_run_opts o = gw_chain_run_opts_default();
+    if (rc == GW_OK)
+        rc = gw_chain_collide(c, &o, &r, e);
+    *f_max = r.f_max;
+    gw_chain_result_free(&r);
+    gw_chain_free(c);
+    return rc;
+}
+
+static int c_vimp_underflow(void)
+{
+    gw_err e = {0};
+    double f;
+    EXPECT(refused(column_at(1e-160, 0, &f, &e), &e, "v_imp (impact velocity, m/s): 1e-160"));
+    EXPECT(strstr(e.msg, "overlap scale of 0 m") != NULL);
+    EXPECT(refused(column_at(1e-300, 0, &f, &e), &e, "v_imp (impact velocity, m/s): 1e-300"));
+    return 0;
+}
+
+/* control: F_max of a Hertz column scales as v^(6/5) (F.13): from 0.3 m/s to
+ * 1e-150 m/s and at a mass of 1e-300 kg (F ~ m^(3/5)) the runs hold it */
+static int c_scale_free_control(void)
+{
+    gw_err e = {0};
+    double f0, f1, f2;
+    EXPECT(column_at(0.3, 0, &f0, &e) == GW_OK);
+    EXPECT(column_at(1e-150, 0, &f1, &e) == GW_OK);
+    EXPECT(fabs(f1 / (f0 * pow(1e-150 / 0.3, 1.2)) - 1) < 1e-3);
+    const double m = gw_chain_params_default().mass;
+    EXPECT(column_at(0.3, 1e-300, &f2, &e) == GW_OK);
+    EXPECT(fabs(f2 / (f0 * pow(1e-300 / m, 0.6)) - 1) < 1e-3);
+    return 0;
+}
+
 static const child_row rows[] = {
     {"collide: sp.dt -1, NaN, -inf refused (rk4, cvode, arkode)", c_collide_dt},
     {"collide: sp.dt_max -1, NaN, -inf refused (rk4, cvode, arkode)", c_collide_dt_max},
@@ -163,6 +251,9 @@ static const child_row rows[] = {
     {"calibrate: an rk4 dt of -1 refused", c_calibrate_dt},
     {"collide: dt 0 and dt given run (control)", c_steps_control},
     {"param set calls: a NULL table, name or row named", c_set_nulls},
+    {"chain params: subnormal v_imp, mass, k, kwall, radius, masses[i], kc[i]", c_model_subnormal},
+    {"chain params: v_imp 1e-160 and 1e-300 (overlap scale 0) named", c_vimp_underflow},
+    {"chain: v_imp 1e-150 and mass 1e-300 run, F_max as v^1.2 and m^0.6 (control)", c_scale_free_control},
 };
 
 int main(void)

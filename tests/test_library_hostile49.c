@@ -21,6 +21,8 @@
  *     failed as "solver: scale[0] = 0 must be finite and > 0", naming no
  *     input. Each is refused naming the field. Control: v_imp 1e-150 and a
  *     mass of 1e-300 kg still run (the column is scale-free down there).
+ *   - gw_sheet_law_name gave "?" for a value outside the enum, where the
+ *     other enums' names say "unknown": "unknown" now.
  * Each case runs in its own child process (test_child.h).
  */
 #define _POSIX_C_SOURCE 200809L
@@ -244,6 +246,17 @@ static int c_scale_free_control(void)
     return 0;
 }
 
+/* ------------------------------------------------ a sheet law's name ---- */
+
+static int c_sheet_law_name(void)
+{
+    EXPECT(strcmp(gw_sheet_law_name((gw_sheet_law)-1), "unknown") == 0);
+    EXPECT(strcmp(gw_sheet_law_name((gw_sheet_law)4), "unknown") == 0);
+    EXPECT(strcmp(gw_solver_method_name(-1), "unknown") == 0); /* the other enums' word */
+    EXPECT(strcmp(gw_sheet_law_name(GW_SHEET_MATERIAL), "material") == 0); /* control */
+    return 0;
+}
+
 static const child_row rows[] = {
     {"collide: sp.dt -1, NaN, -inf refused (rk4, cvode, arkode)", c_collide_dt},
     {"collide: sp.dt_max -1, NaN, -inf refused (rk4, cvode, arkode)", c_collide_dt_max},
@@ -253,6 +266,7 @@ static const child_row rows[] = {
     {"param set calls: a NULL table, name or row named", c_set_nulls},
     {"chain params: subnormal v_imp, mass, k, kwall, radius, masses[i], kc[i]", c_model_subnormal},
     {"chain params: v_imp 1e-160 and 1e-300 (overlap scale 0) named", c_vimp_underflow},
+    {"sheet law name outside the enum: unknown (as the other enums)", c_sheet_law_name},
     {"chain: v_imp 1e-150 and mass 1e-300 run, F_max as v^1.2 and m^0.6 (control)", c_scale_free_control},
 };
 

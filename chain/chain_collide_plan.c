@@ -775,15 +775,21 @@ int chain_sampling_check(int n, double t_expect, double dt_out, int given, const
 /* The run options' numbers whose 0 is "the default" or "off": each finite
  * and >= 0. A NaN or negative value failed every "> 0" test and ran as that
  * default (dt_out -1 sampled every tau_1/200, steps_per_tc NaN took 400 RK4
- * steps per T_c, t_max NaN the default t-max), with GW_OK. GW_EINVAL naming
- * the member, or GW_OK. */
+ * steps per T_c, t_max NaN the default t-max), with GW_OK; so did the solver
+ * settings' dt and dt_max (sp.dt, sp.dt_max). GW_EINVAL naming the member,
+ * or GW_OK. */
 static int opts_numbers_check(const gw_chain_run_opts *o, gw_err *err)
 {
     const struct {
         const char *name;
         double v;
     } f[] = {{"dt_out", o->dt_out}, {"t_max", o->t_max}, {"energy_tol", o->energy_tol},
-             {"front_threshold", o->front_threshold}, {"steps_per_tc", o->steps_per_tc}};
+             {"front_threshold", o->front_threshold}, {"steps_per_tc", o->steps_per_tc},
+             /* the solver's steps, 0 the default as well: rk4 ran a dt of -1, NaN
+              * or -inf, and every backend a dt_max of -1 or NaN, as that default
+              * with GW_OK (cvode and arkode refused the dt at their create, after
+              * gw_chain_run_check had passed it) */
+             {"sp.dt", o->sp.dt}, {"sp.dt_max", o->sp.dt_max}};
     for (size_t i = 0; i < sizeof f / sizeof f[0]; i++)
         if (!(isfinite(f[i].v) && f[i].v >= 0))
             return gw_err_set(err, GW_EINVAL, "gw_chain_run_opts.%s: %g is not a finite number >= 0 (0: the default)",

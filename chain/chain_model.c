@@ -20,6 +20,7 @@
  *                 wall (its stored part is the law's recoverable energy)
  * Units: SI (m, s, kg, N, N/m^1.5, J).
  */
+#include <float.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -313,6 +314,19 @@ int chain_n_check(int n, gw_err *err)
     return GW_OK;
 }
 
+/* A model value that must be positive and finite, and a normal double: a
+ * subnormal mass (4.9e-324 kg) or speed passed gw_check_positive and failed
+ * at the run as "solver: scale[0] = 0 must be finite and > 0", naming no
+ * input (the parameter rows refuse subnormals as well). */
+#define SUBNORMAL_TEXT " (a subnormal number, below 2.2251e-308, the smallest normal double)"
+static int model_positive(double x, const char *name, gw_err *err)
+{
+    int rc = gw_check_positive(x, name, err);
+    if (rc == GW_OK && x < DBL_MIN)
+        rc = gw_err_set(err, GW_EINVAL, "%s: must be a positive finite number, got %g%s", name, x, SUBNORMAL_TEXT);
+    return rc;
+}
+
 int gw_chain_params_validate(const gw_chain_params *p, gw_err *err)
 {
     if (!p)
@@ -320,24 +334,26 @@ int gw_chain_params_validate(const gw_chain_params *p, gw_err *err)
     int rc;
     if ((rc = chain_n_check(p->n, err)) != GW_OK)
         return rc;
-    if ((rc = gw_check_positive(p->v_imp, "v_imp (impact velocity, m/s)", err)) != GW_OK)
+    if ((rc = model_positive(p->v_imp, "v_imp (impact velocity, m/s)", err)) != GW_OK)
         return rc;
-    if (!p->masses && (rc = gw_check_positive(p->mass, "mass (kg)", err)) != GW_OK)
+    if (!p->masses && (rc = model_positive(p->mass, "mass (kg)", err)) != GW_OK)
         return rc;
-    if (!p->kc && (rc = gw_check_positive(p->k, "k (bead-bead Hertz coefficient, N/m^1.5)", err)) != GW_OK)
+    if (!p->kc && (rc = model_positive(p->k, "k (bead-bead Hertz coefficient, N/m^1.5)", err)) != GW_OK)
         return rc;
-    if ((rc = gw_check_positive(p->kwall, "kwall (wall Hertz coefficient, N/m^1.5)", err)) != GW_OK)
+    if ((rc = model_positive(p->kwall, "kwall (wall Hertz coefficient, N/m^1.5)", err)) != GW_OK)
         return rc;
-    if ((rc = gw_check_positive(p->radius, "radius (m)", err)) != GW_OK)
+    if ((rc = model_positive(p->radius, "radius (m)", err)) != GW_OK)
         return rc;
     if ((rc = gw_check_range(p->gravity, "gravity (m/s^2)", -1e4, 1e4, err)) != GW_OK)
         return rc;
     for (int i = 0; p->masses && i < p->n; i++)
-        if (!(p->masses[i] > 0) || !isfinite(p->masses[i]))
-            return gw_err_set(err, GW_EINVAL, "masses[%d]: must be positive and finite", i);
+        if (!(p->masses[i] >= DBL_MIN) || !isfinite(p->masses[i]))
+            return gw_err_set(err, GW_EINVAL, "masses[%d]: must be positive and finite%s", i,
+                              p->masses[i] > 0 && p->masses[i] < DBL_MIN ? SUBNORMAL_TEXT : "");
     for (int i = 0; p->kc && i < p->n - 1; i++)
-        if (!(p->kc[i] > 0) || !isfinite(p->kc[i]))
-            return gw_err_set(err, GW_EINVAL, "kc[%d]: must be positive and finite", i);
+        if (!(p->kc[i] >= DBL_MIN) || !isfinite(p->kc[i]))
+            return gw_err_set(err, GW_EINVAL, "kc[%d]: must be positive and finite%s", i,
+                              p->kc[i] > 0 && p->kc[i] < DBL_MIN ? SUBNORMAL_TEXT : "");
     switch (p->damping) {
     case GW_DAMP_NONE:
         break;
@@ -390,6 +406,18 @@ int gw_chain_params_validate(const gw_chain_params *p, gw_err *err)
         (rc = gw_check_range(g->viscous, "guide viscous friction (N s/m)", 0, 1e9, err)) != GW_OK ||
         (rc = gw_check_range(g->v_reg, "guide v_reg (m/s)", 0, 1e3, err)) != GW_OK)
         return rc;
+    /* The solvers' absolute tolerance is atol times the states' scales
+     * (gw_chain_create): bead 1's overlap scale (m/K)^(2/5) v^(4/5) at the
+     * column's speed scale. Below the normal doubles it is 0 or loses its
+     * digits: v_imp 1e-160 (steel) passed here and failed at the run as
+     * "solver: scale[0] = 0 must be finite and > 0", naming no input (the
+     * column runs, scale-free, down to 1e-150 m/s; the commands take 1e-9). */
+    const double vs = chain_speed_scale(p), xs = gw_chain_dmax1(p->masses ? p->masses[0] : p->mass, p->kwall, vs);
+    if (!(xs >= DBL_MIN))
+        return gw_err_set(err, GW_EINVAL, "v_imp (impact velocity, m/s): %g gives bead 1 an overlap scale of %g m "
+                          "(mass %g kg, kwall %g N/m^1.5), below the normal doubles (2.2251e-308): the solvers' "
+                          "error weights underflow; give a faster impact (the commands take at least %g m/s)",
+                          p->v_imp, xs, p->masses ? p->masses[0] : p->mass, p->kwall, GW_CHAIN_VIMP_MIN);
     return GW_OK;
 }
 

@@ -89,7 +89,9 @@ typedef enum {
  * fully plastic mean pressure, Tabor's constraint factor; Johnson 1985, 6.2). */
 #define GW_SHEET_TABOR 2.8
 
-/* Law by name ("fitted", "hertz", "layer", "material"); -1 if unknown. */
+/* Law by name ("fitted", "hertz", "layer", "material"); -1 if unknown. The
+ * name of a law: "unknown" for a value outside the enum ("?" before the
+ * forty-ninth pass), as the other enums' names. */
 int gw_sheet_law_find(const char *name);
 const char *gw_sheet_law_name(gw_sheet_law law);
 

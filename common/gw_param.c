@@ -396,8 +396,21 @@ static int set_text(const gw_param *t, const gw_param *p, void *obj, const char 
     }
 }
 
+/* The NULL table or name of a set call, named with the call ("unknown parameter
+ * 'n'" for a NULL table, "unknown parameter '(null)'" for a NULL name, where
+ * every other entry point names the argument); GW_OK when both are given. */
+static int set_args_check(const char *call, const gw_param *t, const char *name, gw_err *err)
+{
+    if (!t || !name)
+        return gw_err_set(err, GW_EINVAL, "%s: %s is NULL", call, !t ? "table" : "name");
+    return GW_OK;
+}
+
 int gw_param_set(const gw_param *t, void *obj, const char *name, const char *value, gw_err *err)
 {
+    int arc = set_args_check("gw_param_set", t, name, err);
+    if (arc != GW_OK)
+        return arc;
     const gw_param *p = gw_param_find(t, name);
     if (!p)
         return gw_err_set(err, GW_EINVAL, "unknown parameter '%s'", name ? name : "(null)");
@@ -410,8 +423,10 @@ int gw_param_set(const gw_param *t, void *obj, const char *name, const char *val
 
 int gw_param_set_value(const gw_param *p, void *fieldp, const char *value, gw_err *err)
 {
-    if (!p || !gw_param_is_input(p))
-        return gw_err_set(err, GW_EINVAL, "%s: a result, not a parameter", p ? p->name : "(null)");
+    if (!p) /* "(null): a result, not a parameter" before the forty-ninth pass */
+        return gw_err_set(err, GW_EINVAL, "gw_param_set_value: p is NULL");
+    if (!gw_param_is_input(p))
+        return gw_err_set(err, GW_EINVAL, "%s: a result, not a parameter", p->name);
     if (!value)
         return gw_err_set(err, GW_EINVAL, "%s: no value", p->name);
     if (!fieldp)
@@ -423,6 +438,9 @@ int gw_param_set_value(const gw_param *p, void *fieldp, const char *value, gw_er
 
 int gw_param_set_double(const gw_param *t, void *obj, const char *name, double v, gw_err *err)
 {
+    int arc = set_args_check("gw_param_set_double", t, name, err);
+    if (arc != GW_OK)
+        return arc;
     const gw_param *p = gw_param_find(t, name);
     if (!p)
         return gw_err_set(err, GW_EINVAL, "unknown parameter '%s'", name ? name : "(null)");

@@ -72,7 +72,9 @@ def _study(name):
         known = [_clib.gw_study_get(i).contents.name.decode() for i in range(_clib.gw_study_count())]
         name = name.replace("_", "-") if name.replace("_", "-") in known else name
         if name not in known:
-            raise GranwaveValueError(f"no study '{name}' (one of {', '.join(known)})", _core.GW_EINVAL)
+            # quoted as the library quotes a caller's text (_line): params("chain\0")
+            # and params("ch\x1bain") put the NUL and the ESC raw into the message
+            raise GranwaveValueError(f"no study '{_core._line(name)}' (one of {', '.join(known)})", _core.GW_EINVAL)
     if name not in _studies:
         _studies[name] = _core.Study(name)
     return _studies[name]

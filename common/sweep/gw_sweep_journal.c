@@ -493,8 +493,10 @@ static int shadow_differs(jshadow *h, int fd, long long *size)
 {
     struct stat st;
     int one;
-    /* the events so far, dropped: what they did is what is read below; one
-     * after it is the row's write's to tell (gw_sweep_journal_append) */
+    /* the events so far, read and dropped: the sweep's own row's were read
+     * after its write (gw_sweep_journal_append), so any here are another's,
+     * and the whole file is read below (a write in the clock tick of the
+     * sweep's left the times as they were) */
     const int nev = shadow_events(h, &one);
     if (nev != 0 && h->ifd >= 0)
         h->times_ok = 0; /* the queue unreadable, or another's events since the sweep's write: compared whole */

@@ -697,6 +697,70 @@ static int read_h5_locked(const char *path, gw_layer_sample *s, const h5_quiet *
     return rc;
 }
 
+/* The file's metadata as HDF5 itself takes it, before a byte of the file is
+ * hashed: its superblock (HDF5 verifies its checksum and its end-of-file
+ * address against the file's size at the open), the root group's object
+ * header, and the object headers of the datasets x, y and r where they are
+ * hard links (each header's checksum verified as it is loaded). A few kB are
+ * read. The superblock check of layer_sample.c compares addresses and sizes
+ * and looks at 4 bytes of the root header: a copied superblock and root
+ * header with an end-of-file address edited to a size of written zeros
+ * (64 MiB) passed it, and the zeros were hashed whole (twice by a read,
+ * three times by a sweep) before HDF5 refused the checksum. Refused with the
+ * reader's own messages (corrupt HDF5 file, dataset unreadable). */
+static int open_check_locked(const char *path, const h5_quiet *q, gw_err *err)
+{
+    hid_t fapl = H5Pcreate(H5P_FILE_ACCESS);
+    hid_t f = fapl < 0 || H5Pset_fclose_degree(fapl, H5F_CLOSE_STRONG) < 0 ? -1 :
+              H5Fopen(path, H5F_ACC_RDONLY, fapl);
+    if (fapl >= 0)
+        H5Pclose(fapl);
+    if (f < 0)
+        return gw_err_set(err, GW_EFORMAT, "sample '%s': corrupt or truncated HDF5 file (%s)", path, q->why);
+    int rc = GW_OK;
+    hid_t o = H5Oopen(f, "/", H5P_DEFAULT); /* the root group's header, loaded */
+    if (o < 0)
+        rc = gw_err_set(err, GW_EFORMAT, "sample '%s': corrupt HDF5 file (%s)", path, q->why);
+    else
+        H5Oclose(o);
+    static const char *const names[] = {"x", "y", "r"};
+    for (size_t k = 0; k < sizeof names / sizeof names[0] && rc == GW_OK; k++) {
+        H5L_info_t li;
+        const htri_t ex = H5Lexists(f, names[k], H5P_DEFAULT); /* the root group's links read */
+        if (ex < 0 || (ex > 0 && H5Lget_info(f, names[k], &li, H5P_DEFAULT) < 0)) {
+            rc = gw_err_set(err, GW_EFORMAT, "sample '%s': corrupt HDF5 file (%s)", path,
+                            q->why[0] ? q->why : "HDF5 call failed");
+            break;
+        }
+        if (ex == 0 || li.type != H5L_TYPE_HARD)
+            continue; /* missing, or not in the file: the reader says which */
+        o = H5Oopen(f, names[k], H5P_DEFAULT);
+        if (o < 0)
+            rc = gw_err_set(err, GW_EFORMAT, "sample '%s': HDF5 dataset '%s' unreadable: %s", path, names[k],
+                            q->why[0] ? q->why : "HDF5 call failed");
+        else
+            H5Oclose(o);
+    }
+    if (H5Fclose(f) < 0 && rc == GW_OK)
+        rc = gw_err_set(err, GW_EFORMAT, "sample '%s': corrupt HDF5 file (%s)", path, q->why);
+    return rc;
+}
+
+int layer_sample_h5_open_check(const char *path, gw_err *err)
+{
+    gw_h5_section sec;
+    h5_quiet q;
+    h5_enter(&sec, &q);
+    int rc = open_check_locked(path, &q, err);
+    if (rc != GW_OK && q.nomem)
+        rc = gw_err_set(err, GW_ENOMEM, "sample '%s': out of memory (in HDF5: %s)", path, q.why);
+    if (rc == GW_OK)
+        gw_h5_leave(&sec);
+    else
+        gw_h5_leave_failed_read(&sec);
+    return rc;
+}
+
 int layer_sample_h5_read(const char *path, gw_layer_sample *s, gw_err *err)
 {
     /* (its superblock, version 2 or 3, checked at open: layer_sample.c) */

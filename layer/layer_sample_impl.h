@@ -80,6 +80,10 @@ int layer_sample_settled_converged(const char *text);
  * layer_sample.c) into s, which the caller frees on failure. */
 int layer_sample_h5_write(const gw_layer_sample *s, const char *path, const char *header, gw_err *err);
 int layer_sample_h5_read(const char *path, gw_layer_sample *s, gw_err *err);
+/* The file opened by HDF5 and its root group's and datasets x, y, r's object
+ * headers loaded (their checksums verified), a few kB read: GW_OK, or the
+ * reader's GW_EFORMAT; before the file is hashed (sample_open). */
+int layer_sample_h5_open_check(const char *path, gw_err *err);
 #endif
 
 #endif

@@ -24,6 +24,9 @@
 #    the row
 #  3 the journal cut to nothing at the third row: the kept journal holds
 #    exactly 3 rows (the check before the fourth row kept 4: one case more)
+#  5 as 1, the edit made by a writer that opened the journal before the run
+#    and writes through that descriptor alone (no open or close inside the
+#    window: one IN_MODIFY, merged by the kernel with the row's own)
 #  4 controls, exit 0 and the undisturbed table, no kept journal: the journal
 #    touched and chmod-ed at the second row (its bytes the sweep's), and read
 #    (cat) at the second row
@@ -77,6 +80,26 @@ if window "1 a row edited in place, 4 kB before the end" "$d" 1 journal_edit_row
     "$GW" sweep "$tmp/c.ini" --out "$d" --quiet --jobs 1 2>"$d.err2" && cmp -s "$d/results.csv" "$tmp/refc/results.csv" &&
         ok "1: the kept journal moved back resumed to the undisturbed table" ||
         ko "1: resume: $(head -2 "$d.err2")"
+fi
+
+# --- 5: the same edit by a writer that opened the journal before the run ---
+# (its write inside the window is one IN_MODIFY, which the kernel merges with
+# the row's own: before, every case ran into the edited file, "lost rows")
+d=$tmp/h
+mkdir -p "$d" && head -n 29 "$tmp/refc/journal.csv" >"$d/journal.csv"
+journal_held_writer "$d" &
+held=$!
+if window "5 a row edited in place by a writer holding the journal open since before the run" "$d" 1 \
+    journal_held_edit 24 25 "$GW" sweep "$tmp/c.ini" --out "$d" --quiet --jobs 1; then
+    : >"$d.end"
+    wait $held || ko "5: the held writer failed"
+    mv "$d/journal.kept.csv" "$d/journal.csv"
+    "$GW" sweep "$tmp/c.ini" --out "$d" --quiet --jobs 1 2>"$d.err2" && cmp -s "$d/results.csv" "$tmp/refc/results.csv" &&
+        ok "5: the kept journal moved back resumed to the undisturbed table" ||
+        ko "5: resume: $(head -2 "$d.err2")"
+else
+    : >"$d.end"
+    wait $held
 fi
 
 # --- 2: a line added at the last row ---

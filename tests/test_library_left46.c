@@ -36,12 +36,20 @@
  *     naming the superblock, having read under 1 MiB. Controls: the sample as
  *     written, with 8 KiB of sparse zeros after its end (as cp
  *     --sparse=always leaves one), and with 64 KiB of written zeros after it
- *     are read.
+ *     are read. (Session 42) A sample whose superblock's end-of-file address
+ *     was edited to 64 MiB, written zeros up to there (the superblock's
+ *     checksum then wrong), and the same with the checksum made right and
+ *     all after the root header zeroed passed those rules (sizes, "OHDR" at
+ *     the root) and were hashed whole, 64 MiB a time, before HDF5 refused
+ *     them (a sweep's config took them): HDF5 itself now opens the file and
+ *     loads the root's and datasets x, y, r's headers first, refused under
+ *     1 MiB read naming the checksum or dataset x.
  */
 #define _GNU_SOURCE
 #include <dlfcn.h>
 #include <fcntl.h>
 #include <math.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -392,7 +400,7 @@ static int append_zeros(const char *path, long n, int sparse)
     return f && fclose(f) == 0;
 }
 
-enum { H_SIG_ZEROS, H_ZEROS_AFTER, H_CUT, H_AS_WRITTEN, H_SPARSE_AFTER, H_FEW_ZEROS };
+enum { H_SIG_ZEROS, H_ZEROS_AFTER, H_CUT, H_SB_EOF, H_SB_RESUMMED, H_AS_WRITTEN, H_SPARSE_AFTER, H_FEW_ZEROS };
 typedef struct h5_row {
     const char *label;
     int kind;
@@ -404,12 +412,71 @@ static const h5_row h5_rows[] = {
                                                                   "version 0)"},
     {"a sample and 8 MiB of written zeros after its end", H_ZEROS_AFTER, "bytes follow it: not a sample granwave"},
     {"a sample cut short", H_CUT, "its HDF5 superblock says the file ends at byte"},
+    /* (session 42) the superblock and root header copied, its end-of-file
+     * address edited to 64 MiB, written zeros up to there: past the checks of
+     * sizes and the root's "OHDR", hashed whole before HDF5 refused the
+     * superblock's checksum; then with the checksum made right again and all
+     * after the root header zeroed (the datasets' headers gone) */
+    {"its superblock's end edited to 64 MiB, written zeros up to there", H_SB_EOF, "corrupt or truncated HDF5 "
+                                                                                   "file"},
+    {"the same with the superblock's checksum made right, all after the root header zeroed", H_SB_RESUMMED,
+     "HDF5 dataset 'x' unreadable"},
     {"the sample as written (control)", H_AS_WRITTEN, NULL},
     {"8 KiB of sparse zeros after its end, as cp --sparse=always may leave (control)", H_SPARSE_AFTER, NULL},
     {"64 KiB of written zeros after its end (control)", H_FEW_ZEROS, NULL},
 };
 #define NH5 (sizeof h5_rows / sizeof h5_rows[0])
 static const h5_row *hrow;
+
+/* HDF5's metadata checksum (Jenkins' lookup3, the file format
+ * specification's; exported by libhdf5, not in its headers) */
+uint32_t H5_checksum_metadata(const void *data, size_t len, uint32_t initval);
+
+/* path's version 2 or 3 superblock given an end-of-file address of eof, its
+ * checksum left as it was (resum 0) or made right (1); with resum, the bytes
+ * after the root group's object header (a version 2 header) zeroed up to the
+ * file's old end, then written zeros up to eof: 1, or 0 on a failure */
+static int h5_superblock_eof(const char *path, unsigned long long eof, int resum)
+{
+    static unsigned char b[65536];
+    struct stat st;
+    FILE *f = fopen(path, "r+b");
+    if (!f || stat(path, &st) != 0 || st.st_size > (off_t)sizeof b || fread(b, 1, sizeof b, f) < 64 || (b[8] != 2 && b[8] != 3) || b[9] != 8) {
+        if (f)
+            fclose(f);
+        return 0;
+    }
+    for (int k = 0; k < 8; k++) /* little-endian, after base and extension */
+        b[28 + k] = (unsigned char)(eof >> (8 * k));
+    size_t end = 0;
+    if (resum) {
+        const uint32_t c = H5_checksum_metadata(b, 44, 0);
+        memcpy(b + 44, &c, 4); /* (x86: little-endian, as the file) */
+        unsigned long long root = 0;
+        for (int k = 7; k >= 0; k--)
+            root = root << 8 | b[36 + k];
+        /* "OHDR", version, flags, [times 16], [phase 4], chunk size (1 << (flags & 3) bytes), chunk, checksum */
+        size_t at = (size_t)root + 6, w = (size_t)1 << (b[root + 5] & 3), size = 0;
+        if (root + 64 > sizeof b || memcmp(b + root, "OHDR", 4) != 0) {
+            fclose(f);
+            return 0;
+        }
+        at += (b[root + 5] & 0x20 ? 16 : 0) + (b[root + 5] & 0x10 ? 4 : 0);
+        for (size_t k = w; k-- > 0;)
+            size = size << 8 | b[at + k];
+        end = at + w + size + 4;
+        if (end >= (size_t)st.st_size || end >= sizeof b) {
+            fclose(f);
+            return 0;
+        }
+        memset(b + end, 0, (size_t)st.st_size - end);
+    }
+    const size_t n = resum ? (size_t)st.st_size : 48;
+    const int ok = fseek(f, 0, SEEK_SET) == 0 && fwrite(b, 1, n, f) == n;
+    if (fclose(f) != 0 || !ok)
+        return 0;
+    return stat(path, &st) == 0 && append_zeros(path, (long)(eof - (unsigned long long)st.st_size), 0);
+}
 
 /* the row's file into path: GW_OK or a failure said */
 static int h5_file(const char *path)
@@ -433,6 +500,9 @@ static int h5_file(const char *path)
         return append_zeros(path, 8L << 20, 0);
     case H_CUT:
         return stat(path, &st) == 0 && truncate(path, st.st_size - 100) == 0;
+    case H_SB_EOF:
+    case H_SB_RESUMMED:
+        return h5_superblock_eof(path, 64ULL << 20, hrow->kind == H_SB_RESUMMED);
     case H_SPARSE_AFTER:
         return append_zeros(path, 8192, 1);
     case H_FEW_ZEROS:

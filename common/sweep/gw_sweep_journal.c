@@ -14,6 +14,7 @@
 #include <errno.h>
 #include <math.h>
 #include <pthread.h>
+#include <signal.h>
 #include <stdio.h>
 #include <sys/file.h>
 #include <sys/inotify.h>
@@ -284,8 +285,18 @@ int gw_sweep_dir_held(int dirfd, const char *dir, gw_err *err)
  * follows (gw_sweep_journal_held, which the sweep calls right after each
  * row too) compares the whole file. A writer that opened the file before
  * the check and writes inside the window without closing it adds only an
- * IN_MODIFY, merged with the sweep's by the kernel: found by size and tail
- * only. Without inotify (its limits reached), the check is as before. */
+ * IN_MODIFY, merged with the sweep's by the kernel (a same-length edit
+ * outside the last JOURNAL_TAIL bytes was found only at the end): after the
+ * row's write the sweep asks whether any other open file holds the journal
+ * (a write lease, taken and given back at once, is refused while one does:
+ * others_open), before it reads the queue, so such a writer either still
+ * holds it (the whole file compared) or closed it (its IN_CLOSE_WRITE in the
+ * queue). Events found in the queue at the check before a row (another's,
+ * since the sweep read it after its last write) compare the whole file too:
+ * a write in the same clock tick as the sweep's leaves the times as they
+ * were. Without inotify (its limits reached), the check is as before; where
+ * a lease cannot be taken (another user's journal, a file system without
+ * leases), by the events alone. */
 #define JOURNAL_TAIL 4096
 #define NSHADOWS 16
 #define JOURNAL_EVENTS (IN_MODIFY | IN_ATTRIB | IN_OPEN | IN_CLOSE_WRITE | IN_MOVE_SELF | IN_DELETE_SELF)
@@ -353,6 +364,23 @@ static int shadow_events(jshadow *h, int *modify_only)
     }
     *modify_only = n == 1 && mods == 1;
     return n;
+}
+
+/* 1 when an open file other than fd's holds the journal's file open (a
+ * reader's or a writer's, in this process or another), 0 when none does, -1
+ * when that cannot be told. Asked with a write lease, which the kernel
+ * refuses (EAGAIN) while another open file holds the file, given back at
+ * once: an open by another in between waits for the give-back (the break
+ * is signalled with SIGURG, ignored by default, instead of SIGIO, whose
+ * default ends the process). */
+static int others_open(int fd)
+{
+    if (fcntl(fd, F_SETSIG, SIGURG) != 0)
+        return -1;
+    if (fcntl(fd, F_SETLEASE, F_WRLCK) != 0)
+        return errno == EAGAIN || errno == EBUSY ? 1 : -1;
+    (void)fcntl(fd, F_SETLEASE, F_UNLCK);
+    return 0;
 }
 
 /* the file's times as the sweep left them, when its size is len (else
@@ -465,10 +493,13 @@ static int shadow_differs(jshadow *h, int fd, long long *size)
 {
     struct stat st;
     int one;
-    /* the events so far, dropped: what they did is what is read below; one
-     * after it is the row's write's to tell (gw_sweep_journal_append) */
-    if (shadow_events(h, &one) < 0 && h->ifd >= 0)
-        h->times_ok = 0; /* the queue unreadable: compared whole */
+    /* the events so far, read and dropped: the sweep's own row's were read
+     * after its write (gw_sweep_journal_append), so any here are another's,
+     * and the whole file is read below (a write in the clock tick of the
+     * sweep's left the times as they were) */
+    const int nev = shadow_events(h, &one);
+    if (nev != 0 && h->ifd >= 0)
+        h->times_ok = 0; /* the queue unreadable, or another's events since the sweep's write: compared whole */
     if (fstat(fd, &st) != 0)
         return -1;
     *size = (long long)st.st_size;
@@ -1252,8 +1283,9 @@ int gw_sweep_journal_append(int fd, const char *row, double *synced_ms, gw_err *
          * are not the sweep's alone: the next check (gw_sweep_journal_held)
          * compares the whole file */
         int one;
+        const int others = others_open(fd); /* before the queue is read: see JOURNAL_TAIL */
         const int nev = shadow_events(h, &one);
-        if (nev >= 0 && !one)
+        if ((nev >= 0 && !one) || others == 1)
             h->times_ok = 0;
         else
             shadow_times(h, fd); /* without a watch: a same-length write meanwhile looks like this one's */

@@ -65,6 +65,10 @@ int chain_damping_zero_warnings(const gw_chain_params *p, int zero, int total, c
  * energy_tol is on (the run stops at it instead). GW_OK or GW_ENOMEM. */
 #define GW_CHAIN_ENERGY_WARN 1e-3
 int chain_energy_warning(double energy_error, const gw_chain_run_opts *o, char **list);
+/* A stored trace that stopped at its bound (5 GB of files) while the run went
+ * on past its last row (chain_trace_cut, chain_trace.c): a warning giving where
+ * it stops and naming dt_name (NULL: "--dt-out"); nothing when not cut. */
+int chain_trace_cut_warnings(const gw_chain_trace *tr, double t_end, const char *dt_name, char **list);
 /* The same rule over a study's sizes from n_lo (falcon, wavespeed, softwall):
  * GW_EINVAL naming damping when n_lo is 1 and p's wall (any n) is such a wall;
  * sheet (may be NULL) names the wall in the message. */

@@ -377,6 +377,7 @@ static void on_roots(run_state *st, double t, const double *y, const int *roots)
  * reach, the reading no longer rising), else the reason, as the warnings say it. */
 static const char reading_rising[] = "bead 1 left the wall, the sensor's reading still rising";
 
+
 static const char *wall_pending(const run_state *st, const double *y, double dtol)
 {
     /* a run cut in bead 1's flight whose return is the caller's next impact
@@ -716,25 +717,27 @@ static int collide_after(void *ctx, double t, const double *y, gw_err *err)
     return GW_DRIVE_ON;
 }
 
-static int collide_run(const gw_chain *c, const gw_chain_run_opts *o, int drop, int flight_cut,
+static int collide_run(const gw_chain *c, const gw_chain_run_opts *o, int drop, int flight_cut, int rerun,
                        gw_chain_progress_fn progress, void *pctx, gw_chain_result *r, gw_err *err);
+static void chatter_spread(const gw_chain *c, const gw_chain_run_opts *o, const collide_plan *pl,
+                           gw_chain_result *r);
 
 int gw_chain_collide(const gw_chain *c, const gw_chain_run_opts *o, gw_chain_result *r,
                      gw_err *err)
 {
-    return collide_run(c, o, 0, 0, NULL, NULL, r, err);
+    return collide_run(c, o, 0, 0, 0, NULL, NULL, r, err);
 }
 
 int gw_chain_collide_progress(const gw_chain *c, const gw_chain_run_opts *o, gw_chain_progress_fn progress,
                               void *pctx, gw_chain_result *r, gw_err *err)
 {
-    return collide_run(c, o, 0, 0, progress, pctx, r, err);
+    return collide_run(c, o, 0, 0, 0, progress, pctx, r, err);
 }
 
 int chain_collide_drop(const gw_chain *c, const gw_chain_run_opts *o, int flight_cut, gw_chain_result *r,
                        gw_err *err)
 {
-    return collide_run(c, o, 1, flight_cut, NULL, NULL, r, err);
+    return collide_run(c, o, 1, flight_cut, 0, NULL, NULL, r, err);
 }
 
 int chain_collide_drop_check(const gw_chain *c, const gw_chain_run_opts *o, gw_err *err)
@@ -747,7 +750,7 @@ int chain_collide_drop_check(const gw_chain *c, const gw_chain_run_opts *o, gw_e
     return chain_collide_plan_early(&pc, o, err);
 }
 
-static int collide_run(const gw_chain *c, const gw_chain_run_opts *o, int drop, int flight_cut,
+static int collide_run(const gw_chain *c, const gw_chain_run_opts *o, int drop, int flight_cut, int rerun,
                        gw_chain_progress_fn progress, void *pctx, gw_chain_result *r, gw_err *err)
 {
     if (r)
@@ -769,7 +772,7 @@ static int collide_run(const gw_chain *c, const gw_chain_run_opts *o, int drop, 
     if (prc != GW_OK)
         return prc;
     /* the velocities' arrays, then the column's pending text (chain_result_column_pending) */
-    r->final_v = calloc(1, 4 * (size_t)n * sizeof *r->final_v + CHAIN_PENDING_TEXT);
+    r->final_v = calloc(1, 4 * (size_t)n * sizeof *r->final_v + CHAIN_PENDING_TEXT + CHAIN_CHATTER_TEXT);
     double *y = malloc((size_t)sys->dim * sizeof *y);
     int *roots = calloc((size_t)sys->nroots, sizeof *roots);
     run_state st = {.c = c, .o = o, .r = r, .n = n, .t_sampled = -INFINITY, .flight_cut = flight_cut,
@@ -868,6 +871,8 @@ stopped:
         column_pending(&st, t, y, (char *)(r->final_v + 4 * (size_t)n), CHAIN_PENDING_TEXT);
     finish_result(&st, y);
     gw_solver_get_stats(s, &r->stats);
+    if (rc == GW_OK && !drop && !rerun && r->converged)
+        chatter_spread(c, o, &pl, r);
 done:
     gw_solver_free(s);
     free(y);
@@ -883,6 +888,79 @@ double chain_extend_bound(double t_default, double dt_ext, int n, int stored)
     /* a run that stores nothing holds O(n) whatever its length: its rows bound its steps only */
     const double rows = stored ? fmin(CHAIN_EXTEND_ROWS, CHAIN_EXTEND_VALUES / (2.0 * n + 2)) : CHAIN_EXTEND_ROWS;
     return t_default + fmin((CHAIN_EXTEND_FACTOR - 1) * t_default, rows * dt_ext);
+}
+
+/* Bead 1 that chatters on a light sensor body (its wall contact closing and
+ * opening again many times: 61 times at --n 5 --sensor-mass 1e-4
+ * --sensor-stiffness 1e3) amplifies any difference between two runs: the
+ * integration's error and the rounding of the located roots' times, which the
+ * output times move (CVODE locates a root from its last return), so that
+ * eps_eff was 0.9923 by default, 0.9947 at --dt-out 1.5e-6 and 0.9894 at 3e-8,
+ * and 0.9945, 0.9985, 0.9968, 0.9923, 0.9943 and 0.9965 at rtol = atol = 1e-8,
+ * 1e-10, 1e-11, 1e-12, 1e-13 and 1e-14 (at 1e-14, four samplings agreed within
+ * 1.5e-4). No sampling decides it: the result is one of the chatter's outcomes.
+ * A run with CHAIN_CHATTER_CONTACTS wall contacts or more is run again, cheap
+ * ones (steps times beads at most CHAIN_CHATTER_WORK; the rerun costs about 1.3
+ * times the run) with rtol and atol 10 times tighter (rk4: half its step), and
+ * a difference of eps_eff above CHAIN_CHATTER_SPREAD is said in the result's
+ * warnings with both values (chain_result_chatter). A chatter whose rerun
+ * agrees (--n 2 --sensor-mass 1e-4 --sensor-stiffness 1e3: 24 contacts) says
+ * nothing. */
+#define CHAIN_CHATTER_CONTACTS 10
+#define CHAIN_CHATTER_WORK 1e6
+#define CHAIN_CHATTER_SPREAD 1e-6
+
+static void chatter_spread(const gw_chain *c, const gw_chain_run_opts *o, const collide_plan *pl,
+                           gw_chain_result *r)
+{
+    const int n = r->n;
+    char *text = (char *)(r->final_v + 4 * (size_t)n) + CHAIN_PENDING_TEXT;
+    text[0] = '\0';
+    if (gw_chain_sensor_index(c) < 0 || r->wall_contacts < CHAIN_CHATTER_CONTACTS)
+        return;
+    /* a costly run is not run again (--n 3 --sensor-mass 1e-7 --sensor-stiffness 1e3:
+     * 6707 contacts, 4.8 million steps, a minute) */
+    if (!((double)r->stats.steps * n <= CHAIN_CHATTER_WORK))
+        return;
+    gw_chain_run_opts o2 = *o;
+    o2.sample = NULL;
+    o2.sample_ctx = NULL;
+    o2.sp = pl->sp; /* the plan's step bounds, and the tolerances tightened */
+    char how[64];
+    if (pl->type == gw_solver_rk4) {
+        o2.sp.dt = 0.5 * chain_plan_step(pl);
+        gw_snprintf(how, sizeof how, "rk4's step halved, %g s", o2.sp.dt);
+    } else {
+        o2.sp.rtol = fmax(0.1 * pl->sp.rtol, 1e-15);
+        o2.sp.atol = fmax(0.1 * pl->sp.atol, 1e-15);
+        gw_snprintf(how, sizeof how, "rtol %g, atol %g", o2.sp.rtol, o2.sp.atol);
+    }
+    gw_chain_result r2;
+    gw_err e2 = {{0}};
+    const int rc = collide_run(c, &o2, 0, 0, 1, NULL, NULL, &r2, &e2);
+    const double d = fabs(r2.eps_eff - r->eps_eff);
+    if (rc == GW_OK && r2.converged && !(d > CHAIN_CHATTER_SPREAD)) {
+        gw_chain_result_free(&r2);
+        return;
+    }
+    if (rc == GW_OK)
+        gw_snprintf(text, CHAIN_CHATTER_TEXT, "bead 1 chattered on the sensor body (its wall contact closed %d "
+                    "times; %d at %s): the chatter amplifies the integration's error, and a rerun there gave eps_eff "
+                    "%.6g against %.6g, tau_N %.6g s against %.6g s: the final velocities and the restitution are "
+                    "uncertain by that much, and move with dt-out and the tolerances", r->wall_contacts, r2.wall_contacts, how,
+                    r2.eps_eff, r->eps_eff, r2.tau_n, r->tau_n);
+    else
+        gw_snprintf(text, CHAIN_CHATTER_TEXT, "bead 1 chattered on the sensor body (its wall contact closed %d "
+                    "times): its rerun at %s failed (%s), the spread unmeasured", r->wall_contacts, how, e2.msg);
+    gw_chain_result_free(&r2);
+}
+
+const char *chain_result_chatter(const gw_chain_result *r)
+{
+    if (!r || !r->final_v || r->n < 1 || !made_find(r->final_v, r->n, 0))
+        return "";
+    const char *text = (const char *)(r->final_v + 4 * (size_t)r->n) + CHAIN_PENDING_TEXT;
+    return memchr(text, '\0', CHAIN_CHATTER_TEXT) ? text : "";
 }
 
 const char *chain_result_column_pending(const gw_chain_result *r)

@@ -169,6 +169,11 @@ extern const char chain_held_pending[];
  * and how many more act); "" when nothing did, or for a result that converged or
  * that gw_chain_collide did not fill. Valid until gw_chain_result_free. */
 const char *chain_result_column_pending(const gw_chain_result *r);
+/* Room for the chatter's text after the pending text (CHAIN_CHATTER_TEXT
+ * bytes): bead 1 that chattered on a sensor body and the spread a rerun at
+ * tighter tolerances measured (chain_collide.c, chatter_spread); "" when none. */
+#define CHAIN_CHATTER_TEXT 512
+const char *chain_result_chatter(const gw_chain_result *r);
 /* How far a run at the default t_max t_default (20 expected lengths) goes on
  * when it has not ended there (chain_collide.c, extend_run), sampled at dt_ext
  * past it, for n beads: t_default plus at most 49 t_default, 5e6 samples and,
@@ -408,5 +413,15 @@ int chain_collision_run_progress(const struct gw_chain_setup *s, struct gw_chain
  * given, n >= 0, len <= cap, t and f given when len > 0, x and v too when n >
  * 0): GW_OK, or GW_EINVAL "CALL: ..." naming the fields. */
 int chain_trace_check(const gw_chain_trace *tr, const char *call, gw_err *err);
+/* The stored trace's bound, 5 GB of files (gw_chain_trace_check before the run;
+ * gw_chain_trace_sample stores no row past it during the run): bytes <= 0
+ * restores 5e9. For tests, which reach it in a small run; not thread-safe. */
+void chain_trace_limit_set(double bytes);
+/* The rows of n beads within that bound. */
+double chain_trace_rows_max(int n);
+/* 1 when tr holds that many rows and its last is before t_end: the run went on
+ * past the rows stored (a default run that has not ended goes on past its
+ * expected length, which the check before the run covers). */
+int chain_trace_cut(const gw_chain_trace *tr, double t_end);
 
 #endif

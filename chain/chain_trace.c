@@ -9,6 +9,7 @@
 
 #include "gw_chain.h"
 #include "chain_model.h"
+#include "chain_wall.h"
 #include "gw_locale.h"
 #if GW_HAVE_HDF5
 #include <hdf5.h>
@@ -48,6 +49,45 @@ void gw_chain_trace_free(gw_chain_trace *tr)
     memset(tr, 0, sizeof *tr);
 }
 
+/* The written trace's bound, bytes (gw_chain_trace_check); a test lowers it
+ * (chain_trace_limit_set) to reach it in a small run. */
+static double trace_limit = 5e9;
+
+/* CSV "%.12e," is 19-20 B a value (measured 19.8 on drop --n 100); HDF5 8 */
+static double trace_per_value(void)
+{
+    return 20.0 + (GW_HAVE_HDF5 ? 8.0 : 0.0);
+}
+
+void chain_trace_limit_set(double bytes)
+{
+    trace_limit = bytes > 0 ? bytes : 5e9;
+}
+
+double chain_trace_rows_max(int n)
+{
+    return floor(trace_limit / ((2.0 * (n > 0 ? n : 0) + 2) * trace_per_value()));
+}
+
+int chain_trace_cut(const gw_chain_trace *tr, double t_end)
+{
+    return tr && tr->len > 0 && tr->t && (double)tr->len >= chain_trace_rows_max(tr->n) &&
+           tr->t[tr->len - 1] < t_end;
+}
+
+int chain_trace_cut_warnings(const gw_chain_trace *tr, double t_end, const char *dt_name, char **list)
+{
+    if (!chain_trace_cut(tr, t_end))
+        return GW_OK;
+    const double span = tr->t[tr->len - 1];
+    return gw_warnings_add(list,
+                           "the stored trace stops at t = %.6g s, at its %.3g GB limit (%zu rows of %d beads), "
+                           "and the run went on to t = %.6g s (the collision had not ended by its expected length): "
+                           "the results are the whole run's, the written trace %.3g of it; raise %s to store it all",
+                           span, trace_limit / 1e9, tr->len, tr->n, t_end, t_end > 0 ? span / t_end : 0.0,
+                           dt_name ? dt_name : "--dt-out");
+}
+
 int gw_chain_trace_sample(void *ctx, double t, const double *y, double f_wall, int is_event)
 {
     if (!ctx || !y) /* nowhere to store it, or nothing to store */
@@ -56,6 +96,12 @@ int gw_chain_trace_sample(void *ctx, double t, const double *y, double f_wall, i
     gw_chain_trace *tr = ctx;
     if (chain_trace_check(tr, "gw_chain_trace_sample", NULL) != GW_OK)
         return GW_EINVAL;
+    /* Its files within the limit whatever the run's length: the check before
+     * the run covers the collision's expected length, and a default run that
+     * has not ended there goes on, up to 50 default t-max (chain_extend_bound):
+     * the rows past the limit are not stored (chain_trace_cut says so) */
+    if ((double)tr->len >= chain_trace_rows_max(tr->n))
+        return 0;
     const int n = tr->n;
     if (tr->len == tr->cap) {
         size_t cap = tr->cap ? 2 * tr->cap : 1024;
@@ -94,14 +140,13 @@ static double ceil_2digits(double v)
 
 int gw_chain_trace_check(int n, double span, double dt_out, double events, gw_err *err)
 {
-    /* CSV "%.12e," is 19-20 B a value (measured 19.8 on drop --n 100); HDF5 8 */
     /* a NaN passed every bound below (span, dt_out or events NaN: GW_OK), and
      * so did a trace of 0 beads (of no column) */
     if (n < 1 || !(isfinite(span) && span >= 0) || !(isfinite(dt_out) && dt_out > 0) ||
         !(isfinite(events) && events >= 0))
         return gw_err_set(err, GW_EINVAL, "gw_chain_trace_check: n %d, span %g s, dt-out %g s, events %g: not a trace "
                           "(n >= 1; span, events >= 0; dt-out > 0; all finite)", n, span, dt_out, events);
-    const double per_value = 20.0 + (GW_HAVE_HDF5 ? 8.0 : 0.0), limit = 5e9;
+    const double per_value = trace_per_value(), limit = trace_limit;
     const double values = 2.0 * n + 2, rows = span / dt_out + 1 + events;
     const double files = rows * values * per_value;
     if (files <= limit)
@@ -109,11 +154,12 @@ int gw_chain_trace_check(int n, double span, double dt_out, double events, gw_er
     const double free_rows = limit / (values * per_value) - events; /* samples left for dt-out */
     if (free_rows < 16) /* the events and 16 samples: 2^31 beads said "about 0 GB" with no events */
         return gw_err_set(err, GW_EINVAL, "n: the trace of %d beads would write about %.3g GB at any dt-out (its "
-                          "contact events and 16 samples), above the 5 GB limit: run without storing it (the program: "
-                          "without --out)", n, (events + 16) * values * per_value / 1e9);
+                          "contact events and 16 samples), above the %.3g GB limit: run without storing it (the program: "
+                          "without --out)", n, (events + 16) * values * per_value / 1e9, limit / 1e9);
     return gw_err_set(err, GW_EINVAL, "dt-out: the trace of %d beads at %g s (about %.3g samples over %.3g s) would "
-                      "write about %.3g GB (%.3g GB in memory), above the 5 GB limit: raise dt-out to %.2g s or more",
-                      n, dt_out, rows, span, files / 1e9, rows * values * 8 / 1e9, ceil_2digits(span / free_rows));
+                      "write about %.3g GB (%.3g GB in memory), above the %.3g GB limit: raise dt-out to %.2g s or more",
+                      n, dt_out, rows, span, files / 1e9, rows * values * 8 / 1e9, limit / 1e9,
+                      ceil_2digits(span / free_rows));
 }
 
 /* DIR/<stem><suffix> into path (4096 bytes). The name was formatted into 512

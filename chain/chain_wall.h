@@ -83,6 +83,10 @@ int chain_energy_warning(double energy_error, const gw_chain_run_opts *o, char *
  * single run's warnings, one line over the cases; nothing for n <= 0. */
 int chain_overlap_cases_warning(long n, long total, double hi, long first, char **list);
 int chain_energy_cases_warning(long n, long total, double hi, long first, char **list);
+/* A stored trace that stopped at its bound (5 GB of files) while the run went
+ * on past its last row (chain_trace_cut, chain_trace.c): a warning giving where
+ * it stops and naming dt_name (NULL: "--dt-out"); nothing when not cut. */
+int chain_trace_cut_warnings(const gw_chain_trace *tr, double t_end, const char *dt_name, char **list);
 /* The same rule over a study's sizes from n_lo (falcon, wavespeed, softwall):
  * GW_EINVAL naming damping when n_lo is 1 and p's wall (any n) is such a wall;
  * sheet (may be NULL) names the wall in the message. */

@@ -312,6 +312,9 @@ int gw_chain_result_warnings(const gw_chain_result *r, char **list)
     int rc = dt_warning(r->run_dt_given, r->run_dt, r->run_dt_max, list);
     if (rc == GW_OK)
         rc = overlap_warning(r, list);
+    const char *chatter = chain_result_chatter(r); /* a converged run's: "" otherwise */
+    if (rc == GW_OK && chatter[0])
+        rc = gw_warnings_add(list, "%s", chatter);
     if (rc != GW_OK || r->converged)
         return rc;
     if (r->wall_pending == chain_held_pending) /* a longer run does not decide it */

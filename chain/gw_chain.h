@@ -520,7 +520,10 @@ typedef struct gw_chain_trace {
 
 /* An empty trace of n beads (nothing allocated yet); tr NULL: nothing. */
 void gw_chain_trace_init(gw_chain_trace *tr, int n);
-/* gw_chain_sample_fn storing every sample (ctx = gw_chain_trace*). */
+/* gw_chain_sample_fn storing every sample (ctx = gw_chain_trace*) up to the
+ * bound of gw_chain_trace_check (5 GB of files for tr->n beads): the rows past
+ * it are not stored and the run goes on (a default run that has not ended by
+ * its expected length goes on past it; the program warns where the trace stops). */
 int gw_chain_trace_sample(void *ctx, double t, const double *y, double f_wall,
                           int is_event);
 void gw_chain_trace_free(gw_chain_trace *tr);

@@ -62,7 +62,10 @@ rows = [m for m in rows if m]
 check(len(rows) >= 2, "%d progress lines (one during the run and the last, at least)" % len(rows))
 if rows:
     fr = [float(m.group(4)) for m in rows]
-    check(all(b > a for a, b in zip(fr, fr[1:])), "the fraction grows from line to line: %s" % fr)
+    ts = [float(m.group(1)) * scale[m.group(2)] for m in rows]
+    # (at delay 0 lines come a twentieth of the time elapsed apart: P, to 0.1 %, may repeat; T grows)
+    check(all(b > a for a, b in zip(ts, ts[1:])) and all(b >= a for a, b in zip(fr, fr[1:])),
+          "the fraction grows from line to line (T rises, P never falls): %s" % fr)
     for m in rows:  # the percentage is T over E
         t, e = float(m.group(1)), float(m.group(3))
         check(abs(100 * t / e - float(m.group(4))) <= 0.06 + 1e-3 * float(m.group(4)),

@@ -49,7 +49,9 @@ GW = sys.argv[1]
 def check(cond, what):
     print(("PASS: " if cond else "FAIL: ") + what, flush=True)
 
-LINE = re.compile(r"  (\d+)/(\d+) collisions, ([0-9.]+)% of the work, ([0-9.]+) s elapsed, ~([0-9.]+) s left")
+# (a line before any work is measured, P = 0, ends at "E s elapsed": at GW_PROGRESS_MS=0 the
+# first lines of a study come then)
+LINE = re.compile(r"  (\d+)/(\d+) collisions, ([0-9.]+)% of the work, ([0-9.]+) s elapsed(?:, ~([0-9.]+) s left)?")
 # a sweep's line: the cases ended and under way, the share of the work (the
 # cases under way by their parts), the time left once the share is above 0
 SWEEP = re.compile(r"sweep: (\d+)/(\d+) cases, (\d+) under way, ([0-9.]+)% of the work, ([0-9.]+) s elapsed"

@@ -351,6 +351,10 @@ int main(int argc, char **argv)
     if (strcmp(cmd, "version") == 0 || (!ended && strcmp(cmd, "--version") == 0))
         return version(argc, argv);
     const command *c = find_command(cmd);
+    /* the progress displays' delay set for tests (GW_PROGRESS_MS): a
+     * malformed value refused before anything is done */
+    if (c && gw_cli_progress_env() != 0)
+        return 2;
     if (c)
         return stdout_checked(cmd, c->run(argc - 2, argv + 2));
     return refuse(NULL, "unknown command '%s' (see granwave --help)", cmd);

@@ -120,7 +120,22 @@ typedef struct gw_cli_progress {
     double t0, last;     /* gw_clock_ms at init and at the last line */
 } gw_cli_progress;
 
-/* A display starting now, writing to stderr, before = -1, not quiet. */
+/* The environment variable that sets every progress display's delay and
+ * period, in ms, for tests and scripts whose output must not depend on the
+ * machine's speed: 0 prints at once (every_ms and after_ms 0: a line each
+ * tenth of a count, each report of a run or study), a large value (1e9) never
+ * before the run's end (and then nothing where after_ms applies). Unset: the
+ * commands' own (2 s, layer-make's 3 s). */
+#define GW_CLI_PROGRESS_ENV "GW_PROGRESS_MS"
+/* Read GW_CLI_PROGRESS_ENV once, before any command runs: 0 when unset or a
+ * number of ms >= 0; -1, with one line on stderr naming it, when malformed
+ * (the program then exits 2). */
+int gw_cli_progress_env(void);
+/* The delay or period ms a command asks for, or GW_CLI_PROGRESS_ENV's value
+ * when set: every display's every_ms and after_ms are taken through it. */
+double gw_cli_progress_ms(double ms);
+/* A display starting now, writing to stderr, before = -1, not quiet;
+ * every_ms through gw_cli_progress_ms. */
 void gw_cli_progress_init(gw_cli_progress *p, const char *prefix, const char *unit, double every_ms);
 /* gw_progress_fn: a line after the last unit and when due; returns 0. */
 int gw_cli_progress_report(void *ctx, long done, long total);

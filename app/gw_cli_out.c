@@ -9,6 +9,7 @@
  * Progress: after d of n units at t seconds elapsed, rate = d / t units/s and
  * the time left is (n - d) / rate seconds.
  */
+#include <errno.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -143,13 +144,38 @@ char *gw_cli_one_line(char *text, char sep)
 
 /* ---- progress ---- */
 
+/* GW_PROGRESS_MS as read by gw_cli_progress_env (< 0: unset, the commands' own
+ * delays and periods) */
+static double progress_env_ms = -1.0;
+
+int gw_cli_progress_env(void)
+{
+    const char *v = getenv(GW_CLI_PROGRESS_ENV);
+    if (!v)
+        return 0;
+    char *end = NULL;
+    errno = 0;
+    const double ms = strtod(v, &end);
+    /* a plain decimal number: no "inf", "nan" or hexadecimal, no blank around it */
+    const int plain = v[0] != '\0' && strspn(v, "0123456789.eE+-") == strlen(v);
+    if (!plain || end == v || *end != '\0' || errno == ERANGE || !isfinite(ms) || ms < 0) {
+        fprintf(stderr, "granwave: %s '%s' is not a delay in milliseconds (a number, 0 or more: 0 prints at once, "
+                        "a large value never)\n", GW_CLI_PROGRESS_ENV, v);
+        return -1;
+    }
+    progress_env_ms = ms;
+    return 0;
+}
+
+double gw_cli_progress_ms(double ms) { return progress_env_ms >= 0 ? progress_env_ms : ms; }
+
 void gw_cli_progress_init(gw_cli_progress *p, const char *prefix, const char *unit, double every_ms)
 {
     memset(p, 0, sizeof *p);
     p->prefix = prefix;
     p->unit = unit;
     p->before = -1;
-    p->every_ms = every_ms;
+    p->every_ms = gw_cli_progress_ms(every_ms);
     p->fp = stderr;
     p->t0 = p->last = gw_clock_ms();
 }

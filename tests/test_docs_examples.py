@@ -44,8 +44,8 @@ import subprocess
 import sys
 import tempfile
 
-SH_BLOCK = re.compile(r"^```sh\n(.*?)^```", re.S | re.M)
-TEXT_BLOCK = re.compile(r"^```text\n(.*?)^```", re.S | re.M)
+from docs_runner import Runner, command_args, fenced, split_comment
+
 # run as written (each well below a second, the drops about one)
 FAST = ("chain", "falcon", "dispersion", "drop", "layer-impact")
 SLOW_MARKS = ("--full", "--sheets")
@@ -59,44 +59,28 @@ def doc_lines(srcdir):
     out = []
     for rel in files:
         text = open(os.path.join(srcdir, rel), encoding="utf-8").read()
-        for kind, rx in (("sh", SH_BLOCK), ("text", TEXT_BLOCK)):
-            for m in rx.finditer(text):
-                first = text.count("\n", 0, m.start(1)) + 1
-                out.extend((rel, first + i, kind, line) for i, line in enumerate(m.group(1).splitlines()))
+        for kind in ("sh", "text"):  # the sh blocks first, as before
+            for _, first, lines in fenced(text, (kind,)):
+                out.extend((rel, first + i, kind, line) for i, line in enumerate(lines))
     return out
-
-
-def split_comment(line):
-    i = line.find("  #")
-    return (line[:i], line[i + 3:]) if i >= 0 else (line, "")
 
 
 PY_LINE = re.compile(r"^PYTHONPATH=python /usr/bin/python3 -c ")
 
 
-class Checker:
+class Checker(Runner):
+    """The shared runner (docs_runner.Runner: run, help, fault, refused_as) with the
+    checks of this page's lines."""
+
     def __init__(self, program, workdir, srcdir=None):
-        self.program = program
-        self.work = workdir
+        super().__init__(program, workdir)
         self.srcdir = os.path.abspath(srcdir or os.path.join(os.path.dirname(__file__), ".."))
         self.lib = os.environ.get("GRANWAVE_LIB")
         self.python_run = 0
-        self.faults = []
-        self.helps = {}
         self.sample = None
 
-    def fault(self, where, msg):
-        self.faults.append(f"{where}: {msg}")
-
-    def help(self, cmd):
-        if cmd not in self.helps:
-            p = subprocess.run([self.program, cmd, "--help"], capture_output=True, text=True, timeout=60)
-            self.helps[cmd] = p.stdout + p.stderr if p.returncode == 0 else None
-        return self.helps[cmd]
-
-    def run(self, args, timeout=120):
-        return subprocess.run([self.program, *args], capture_output=True, text=True, timeout=timeout,
-                              cwd=self.work)
+    def run(self, args, timeout=120, cwd=None, env=None):
+        return super().run(args, timeout, cwd, env)
 
     def make_sample(self):
         if self.sample is None:
@@ -109,8 +93,8 @@ class Checker:
         return self.sample
 
     def command(self, where, line):
-        code, comment = split_comment(line)
-        args = shlex.split(code)[1:]
+        comment = split_comment(line)[1]
+        args = command_args(line, "build/granwave ")
         if not args:
             return
         cmd = args[0]
@@ -145,15 +129,13 @@ class Checker:
                     self.fault(where, f"the comment names {name}, not written under {out}")
 
     def refusal(self, where, line, expected):
-        args = shlex.split(line[2:])[1:]
+        args = command_args(line, "$ granwave ")
         if args[:2] == ["sweep", "bad.ini"]:  # the page's config: a key of no model on line 5
             with open(os.path.join(self.work, "bad.ini"), "w") as f:
                 f.write("[sweep]\nmodel = chain\n[grid]\nn = 1:2\nfoo = 1\n")
         if "s.txt" in args:
             self.make_sample()
-        p = self.run(args)
-        if p.returncode != 2 or p.stderr.strip() != expected:
-            self.fault(where, f"exit {p.returncode}, stderr {p.stderr.strip()!r}; the page says {expected!r}")
+        self.refused_as(where, args, expected)
 
     def python_env(self):
         env = dict(os.environ, PYTHONPATH=os.path.join(self.srcdir, "python"), PYTHONDONTWRITEBYTECODE="1")

@@ -32,52 +32,27 @@ import json
 import os
 import re
 import shlex
-import subprocess
 import sys
 import tempfile
 
-BLOCK = re.compile(r"^```(text|ini)\n(.*?)^```", re.S | re.M)
+from docs_runner import Runner, first_difference, fenced, line_holds, run
 
 
 def blocks(text):
     """[(kind, first line number, [lines])] of the ```text and ```ini blocks."""
-    return [(m.group(1), text.count("\n", 0, m.start(2)) + 1, m.group(2).splitlines())
-            for m in BLOCK.finditer(text)]
-
-
-def line_holds(shown, got):
-    """The page's line against the file's: equal, or with `...` standing for any text."""
-    if "..." not in shown:
-        return shown == got
-    parts = shown.split("...")
-    if not got.startswith(parts[0]) or not got.endswith(parts[-1]):
-        return False
-    at = len(parts[0])
-    for p in parts[1:-1]:
-        i = got.find(p, at)
-        if i < 0:
-            return False
-        at = i + len(p)
-    return at <= len(got) - len(parts[-1])
+    return fenced(text, ("text", "ini"))
 
 
 def annotation(line):
     return "<-" in line
 
 
-def run(program, args, cwd):
-    return subprocess.run([program, *args], capture_output=True, text=True, cwd=cwd, timeout=600)
-
-
-_MADE = {}
+_RUNNERS = {}
 
 
 def made(program, args, cwd):
     """A pluviation run once per scratch directory (the self-test reuses the pages' samples)."""
-    key = (cwd, tuple(args))
-    if key not in _MADE:
-        _MADE[key] = run(program, args, cwd)
-    return _MADE[key]
+    return _RUNNERS.setdefault((program, cwd), Runner(program, cwd)).made(args)
 
 
 def check_sample(program, work, where, shown, springs, faults):
@@ -86,19 +61,17 @@ def check_sample(program, work, where, shown, springs, faults):
     if cmd is None:
         faults.append(f"{where}: the sample example names no `# command:` line")
         return
-    args = shlex.split(cmd[len("# command: granwave "):])
+    args = shlex.split(cmd[len("# command: granwave "):])  # as written (a `  #` in it is no comment)
     p = made(program, args, work)  # as written: the file records its command line
     out = args[args.index("--out") + 1] if "--out" in args else None
     if p.returncode != 0 or out is None:
         faults.append(f"{where}: `{cmd[11:]}` exit {p.returncode}: {p.stderr.strip()[-200:]}")
         return
     got = open(os.path.join(work, out), encoding="utf-8").read().splitlines()
-    head = [l for l in shown if not annotation(l)]
-    for i, s in enumerate(head):
-        g = got[i] if i < len(got) else "(end of file)"
-        if not line_holds(s, g):
-            faults.append(f"{where + i}: the page shows {s[:90]!r}; line {i + 1} of {out} is {g[:90]!r}")
-            break
+    d = first_difference([l for l in shown if not annotation(l)], got)
+    if d:
+        i, sh, g = d
+        faults.append(f"{where + i}: the page shows {sh[:90]!r}; line {i + 1} of {out} is {g[:90]!r}")
     if springs is None:
         return
     swhere, slines = springs
@@ -108,12 +81,11 @@ def check_sample(program, work, where, shown, springs, faults):
         faults.append(f"{swhere}: the page shows a springs section; {out} has none")
         return
     want = [f"springs {m.group(1)}"] + [l for l in slines[1:] if not annotation(l) and not l.startswith(" ")]
-    for i, s in enumerate(want):
-        g = got[at + i] if at + i < len(got) else "(end of file)"
-        if not line_holds(s, g):
-            faults.append(f"{swhere + i}: the page shows {s!r} (after the sample's particles); "
-                          f"{out} has {g!r}")
-            break
+    d = first_difference(want, got[at:])
+    if d:
+        i, sh, g = d
+        faults.append(f"{swhere + i}: the page shows {sh!r} (after the sample's particles); "
+                      f"{out} has {g!r}")
 
 
 def check_table(program, work, where, shown, faults):

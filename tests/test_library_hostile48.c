@@ -101,77 +101,37 @@ static int not_run(int rc, const gw_err *e, const char *line, const char *key, c
     return 1;
 }
 
-static int c_rb_huge(void)
-{
-    gw_err e = {0};
-    EXPECT(not_run(parse("", "1e308", "2", "1", &e), &e, "hand.csv:2:", "grid key rb-rm", "[1e-06, 1e+06]"));
-    return 0;
-}
+/* a hand table's settings refused as no sweep runs them: its "# param"
+ * lines, rb-rm, height-rm and the second row's point, then the line, the key
+ * and the range the refusal names */
+typedef struct setting_row {
+    const char *label, *params, *rb, *h, *p1, *line, *key, *range;
+} setting_row;
 
-static int c_rb_below(void)
-{
-    gw_err e = {0};
-    EXPECT(not_run(parse("", "1e-7", "2", "1", &e), &e, "hand.csv:2:", "grid key rb-rm", "[1e-06, 1e+06]"));
-    return 0;
-}
+static const setting_row setting_rows[] = {
+    {"table: grid rb-rm 1e308", "", "1e308", "2", "1", "hand.csv:2:", "grid key rb-rm", "[1e-06, 1e+06]"},
+    {"table: grid rb-rm 1e-7", "", "1e-7", "2", "1", "hand.csv:2:", "grid key rb-rm", "[1e-06, 1e+06]"},
+    {"table: grid height-rm 1e-320 (subnormal)", "", "1", "1e-320", "1", "hand.csv:2:", "grid key height-rm",
+     "too small"},
+    {"table: grid height-rm 2e6", "", "1", "2e6", "1", "hand.csv:2:", "grid key height-rm", "[0, 1e+06]"},
+    {"table: grid point 1.5", "", "1", "2", "1.5", "hand.csv:3:", "grid key point", "not an integer"},
+    {"table: param vi 1e308", "# param vi = 1e308\n", "1", "2", "1", "hand.csv:1:", "param vi", "(0, 1000]"},
+    {"table: param density 1e7", "# param density = 1e7\n", "1", "2", "1", "hand.csv:1:", "param density",
+     "[1e-06, 1e+06]"},
+    {"table: param points 2147483648", "# param points = 2147483648\n", "1", "2", "1", "hand.csv:1:",
+     "param points", "[1, 1000000000]"},
+    /* refused before too, now in the row's words */
+    {"table: param alpha 90", "# param alpha = 90\n", "1", "2", "1", "hand.csv:1:", "param alpha", "[0, 90)"},
+    /* the sweep's first line names the layer model */
+    {"table with the sweep's line: param vi 2000", "# granwave 0.1.0 sweep, model layer\n# param vi = 2000\n", "1",
+     "2", "1", "hand.csv:2:", "param vi", "(0, 1000]"},
+};
+static const setting_row *setr;
 
-static int c_height_subnormal(void)
+static int c_setting(void)
 {
     gw_err e = {0};
-    EXPECT(not_run(parse("", "1", "1e-320", "1", &e), &e, "hand.csv:2:", "grid key height-rm", "too small"));
-    return 0;
-}
-
-static int c_height_huge(void)
-{
-    gw_err e = {0};
-    EXPECT(not_run(parse("", "1", "2e6", "1", &e), &e, "hand.csv:2:", "grid key height-rm", "[0, 1e+06]"));
-    return 0;
-}
-
-static int c_point_fraction(void)
-{
-    gw_err e = {0};
-    EXPECT(not_run(parse("", "1", "2", "1.5", &e), &e, "hand.csv:3:", "grid key point", "not an integer"));
-    return 0;
-}
-
-static int c_param_vi(void)
-{
-    gw_err e = {0};
-    EXPECT(not_run(parse("# param vi = 1e308\n", "1", "2", "1", &e), &e, "hand.csv:1:", "param vi", "(0, 1000]"));
-    return 0;
-}
-
-static int c_param_density(void)
-{
-    gw_err e = {0};
-    EXPECT(not_run(parse("# param density = 1e7\n", "1", "2", "1", &e), &e, "hand.csv:1:", "param density",
-                   "[1e-06, 1e+06]"));
-    return 0;
-}
-
-static int c_param_points(void)
-{
-    gw_err e = {0};
-    EXPECT(not_run(parse("# param points = 2147483648\n", "1", "2", "1", &e), &e, "hand.csv:1:", "param points",
-                   "[1, 1000000000]"));
-    return 0;
-}
-
-static int c_param_alpha(void) /* refused before too, now in the row's words */
-{
-    gw_err e = {0};
-    EXPECT(not_run(parse("# param alpha = 90\n", "1", "2", "1", &e), &e, "hand.csv:1:", "param alpha", "[0, 90)"));
-    return 0;
-}
-
-static int c_sweep_table(void) /* the sweep's first line names the layer model */
-{
-    gw_err e = {0};
-    char params[256];
-    snprintf(params, sizeof params, "# granwave 0.1.0 sweep, model layer\n# param vi = 2000\n");
-    EXPECT(not_run(parse(params, "1", "2", "1", &e), &e, "hand.csv:2:", "param vi", "(0, 1000]"));
+    EXPECT(not_run(parse(setr->params, setr->rb, setr->h, setr->p1, &e), &e, setr->line, setr->key, setr->range));
     return 0;
 }
 
@@ -226,24 +186,23 @@ static int fit_scaled(double xs, double ys)
     return 0;
 }
 
-static int c_fit_x_1e300(void)
-{
-    return fit_scaled(1e300, 1);
-}
+/* points (x xs, y ys) whose fit is the plain one's scaled */
+typedef struct fit_row {
+    const char *label;
+    double xs, ys;
+} fit_row;
 
-static int c_fit_y_1e300(void)
-{
-    return fit_scaled(1, 1e300);
-}
+static const fit_row fit_rows[] = {
+    {"fit: abscissas near 1e300", 1e300, 1},
+    {"fit: ordinates near 1e300", 1, 1e300},
+    {"fit: abscissas near 1e-160", 1e-160, 1},
+    {"fit: abscissas near 1e-100, ordinates near 1e200", 1e-100, 1e200}, /* a slope near 1.9e300 */
+};
+static const fit_row *fitr;
 
-static int c_fit_x_1e_160(void)
+static int c_fit(void)
 {
-    return fit_scaled(1e-160, 1);
-}
-
-static int c_fit_both(void)
-{
-    return fit_scaled(1e-100, 1e200); /* a slope near 1.9e300 */
+    return fit_scaled(fitr->xs, fitr->ys);
 }
 
 static int c_fit_beyond(void) /* a slope of about 1e320: refused, every number NaN */
@@ -557,21 +516,7 @@ static int c_rises_control(void)
 }
 
 static const child_row rows[] = {
-    {"table: grid rb-rm 1e308", c_rb_huge},
-    {"table: grid rb-rm 1e-7", c_rb_below},
-    {"table: grid height-rm 1e-320 (subnormal)", c_height_subnormal},
-    {"table: grid height-rm 2e6", c_height_huge},
-    {"table: grid point 1.5", c_point_fraction},
-    {"table: param vi 1e308", c_param_vi},
-    {"table: param density 1e7", c_param_density},
-    {"table: param points 2147483648", c_param_points},
-    {"table: param alpha 90", c_param_alpha},
-    {"table with the sweep's line: param vi 2000", c_sweep_table},
     {"table: the rows' closed ends taken (control)", c_ends_taken},
-    {"fit: abscissas near 1e300", c_fit_x_1e300},
-    {"fit: ordinates near 1e300", c_fit_y_1e300},
-    {"fit: abscissas near 1e-160", c_fit_x_1e_160},
-    {"fit: abscissas near 1e-100, ordinates near 1e200", c_fit_both},
     {"fit: a slope beyond the doubles refused", c_fit_beyond},
     {"fit: powers of two exact, the line of test points (control)", c_fit_exact},
     {"pool: a case failing without a message", c_pool_silent},
@@ -591,5 +536,17 @@ static const child_row rows[] = {
 
 int main(void)
 {
-    return child_cases_run(rows, sizeof rows / sizeof rows[0]);
+    int nfail = 0, ncases = 0;
+    for (size_t r = 0; r < sizeof setting_rows / sizeof setting_rows[0]; r++) {
+        setr = &setting_rows[r];
+        child_casef(c_setting, &nfail, &ncases, "%s", setr->label);
+    }
+    child_case(rows[0].label, rows[0].fn, &nfail, &ncases); /* the control after them */
+    for (size_t r = 0; r < sizeof fit_rows / sizeof fit_rows[0]; r++) {
+        fitr = &fit_rows[r];
+        child_casef(c_fit, &nfail, &ncases, "%s", fitr->label);
+    }
+    for (size_t r = 1; r < sizeof rows / sizeof rows[0]; r++)
+        child_case(rows[r].label, rows[r].fn, &nfail, &ncases);
+    return child_cases_end(nfail, ncases);
 }

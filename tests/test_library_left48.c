@@ -32,6 +32,7 @@
 #include <unistd.h>
 
 #include "granwave.h"
+#include "gw_test_cases.h"
 #include "test_child.h"
 
 #ifdef GW_TEST_BEFORE
@@ -61,7 +62,7 @@ static int pvd_refused(const double *times, int n, const char *what)
     unlink(path);
     gw_err e = {0};
     const int rc = gw_layer_write_pvd(path, n, files, times, &e);
-    EXPECT(refused(rc, &e, what));
+    EXPECT(test_refused_or_ok(rc, &e, what));
     EXPECT(!exists(path));
     return 0;
 }
@@ -105,22 +106,11 @@ static int c_pvd_control(void)
 
 /* ---------------------------------------------------------- regions ---- */
 
-/* three discs at rest on the floor of a box 1 m wide, not started */
+/* three discs at rest on the floor of a box 1 m wide, moving at 0.1, 0.2 and
+ * 0.3 m/s, not started (gw_test_cases.h) */
 static gw_layer *three(void)
 {
-    gw_layer_params p = gw_layer_params_default();
-    p.width = 1;
-    gw_layer_body b[3];
-    memset(b, 0, sizeof b);
-    for (int i = 0; i < 3; i++)
-        b[i].x = 0.3 + 0.2 * i, b[i].y = 0.1 - 1e-6, b[i].r = 0.1 - 1e-9, b[i].vx = 0.1 * (i + 1);
-    gw_layer *L = NULL;
-    gw_err e = {0};
-    if (gw_layer_create(&p, 3, b, &L, &e) != GW_OK) {
-        printf("create: %s\n", e.msg);
-        return NULL;
-    }
-    return L;
+    return test_three_layer(0.1, NULL, 0);
 }
 
 static int regions_refused(double w, const char *what)
@@ -129,7 +119,7 @@ static int regions_refused(double w, const char *what)
     EXPECT(L != NULL);
     gw_err e = {0};
     const int rc = gw_layer_set_regions(L, 0.5, 0.1, w, 3, &e);
-    const int ok = refused(rc, &e, what) && gw_layer_region_count(L) == 0;
+    const int ok = test_refused_or_ok(rc, &e, what) && gw_layer_region_count(L) == 0;
     if (!ok)
         printf("%d regions after the call\n", gw_layer_region_count(L));
     gw_layer_free(L);
@@ -188,15 +178,9 @@ static int c_regions_control(void)
 
 static int config_refused(const char *text, const char *what)
 {
-    int nm = 0;
-    const gw_sweep_model *const *models = gw_sweep_models(&nm);
-    gw_sweep_config cfg;
-    memset(&cfg, 0, sizeof cfg);
-    const gw_sweep_model *m = NULL;
     gw_err e = {0};
-    const int rc = gw_sweep_config_read_string(text, "cfg", models, nm, &cfg, &m, &e);
-    gw_sweep_config_free(&cfg);
-    EXPECT(refused(rc, &e, what));
+    const int rc = test_config_read(text, &e);
+    EXPECT(test_refused_or_ok(rc, &e, what));
     return 0;
 }
 
@@ -279,13 +263,6 @@ static const child_row rows[] = {
 
 int main(void)
 {
-    snprintf(dir, sizeof dir, "/tmp/gw_left48.XXXXXX");
-    if (!mkdtemp(dir))
-        return 1;
-    const int rc = child_cases_run(rows, sizeof rows / sizeof rows[0]);
-    char path[128];
-    snprintf(path, sizeof path, "%s/s.pvd", dir);
-    unlink(path);
-    rmdir(dir);
-    return rc;
+    static const char *const files[] = {"s.pvd", NULL};
+    return test_cases_in_dir(dir, sizeof dir, "left48", rows, sizeof rows / sizeof rows[0], files);
 }

@@ -51,6 +51,7 @@
 #include <unistd.h>
 
 #include "granwave.h"
+#include "gw_test_cases.h"
 #include "test_child.h"
 
 #ifdef GW_TEST_BEFORE
@@ -191,24 +192,22 @@ static int hex_refused(const char *token, const char *by, const char *line, cons
     return 0;
 }
 
-static int c_hex_header(void)
-{
-    return hex_refused("width 1\n", "width 0x1p0\n", "line 2", "width '0x1p0'");
-}
+/* the sample's TOKEN written BY, refused naming the line and the field */
+typedef struct hex_row {
+    const char *label, *token, *by, *line, *field;
+} hex_row;
 
-static int c_hex_x(void)
-{
-    return hex_refused("0.5 0.1 0.1", "0x1p-1 0.1 0.1", "line 7", "x '0x1p-1' of particle 2");
-}
+static const hex_row hex_rows[] = {
+    {"text sample: hexadecimal width", "width 1\n", "width 0x1p0\n", "line 2", "width '0x1p0'"},
+    {"text sample: hexadecimal x", "0.5 0.1 0.1", "0x1p-1 0.1 0.1", "line 7", "x '0x1p-1' of particle 2"},
+    {"text sample: hexadecimal y", "0.7 0.125 0.1", "0.7 0x1p-3 0.1", "line 8", "y '0x1p-3' of particle 3"},
+    {"text sample: hexadecimal r", "0.3 0.1 0.1", "0.3 0.1 0X.CCCCCCCCCCCD0P-3", "line 6", "r '0X.CCCCCCCCCCCD0P-3'"},
+};
+static const hex_row *hexr;
 
-static int c_hex_y(void)
+static int c_hex(void)
 {
-    return hex_refused("0.7 0.125 0.1", "0.7 0x1p-3 0.1", "line 8", "y '0x1p-3' of particle 3");
-}
-
-static int c_hex_r(void)
-{
-    return hex_refused("0.3 0.1 0.1", "0.3 0.1 0X.CCCCCCCCCCCD0P-3", "line 6", "r '0X.CCCCCCCCCCCD0P-3'");
+    return hex_refused(hexr->token, hexr->by, hexr->line, hexr->field);
 }
 
 static int c_hex_control(void)
@@ -269,52 +268,31 @@ static int table_case(const char *param, const char *rb, const char *col, const 
     return 0;
 }
 
-static int c_table_hex_param(void)
-{
-    return table_case("0x14", "2", "0.3", ":1: param vi: '0x14'");
-}
+/* the table with its param vi, rb-rm of case 2 and e_n of case 1 as given:
+ * refused naming NAMED, or read (NULL: the control) */
+typedef struct table_row {
+    const char *label, *param, *rb, *col, *named;
+} table_row;
 
-static int c_table_hex_grid(void)
-{
-    return table_case("20", "0x1p1", "0.3", ":5: grid key rb-rm: '0x1p1'");
-}
+static const table_row table_rows[] = {
+    {"layer-stats table: hexadecimal param", "0x14", "2", "0.3", ":1: param vi: '0x14'"},
+    {"layer-stats table: hexadecimal grid cell", "20", "0x1p1", "0.3", ":5: grid key rb-rm: '0x1p1'"},
+    {"layer-stats table: hexadecimal column cell", "20", "2", "0x1.3333333333333p-2", ":4: column e_n"},
+    {"layer-stats table in decimal (control)", "20", "2", "0.3", NULL},
+};
+static const table_row *tabr;
 
-static int c_table_hex_column(void)
+static int c_table(void)
 {
-    return table_case("20", "2", "0x1.3333333333333p-2", ":4: column e_n");
-}
-
-static int c_table_control(void)
-{
-    return table_case("20", "2", "0.3", NULL);
+    return table_case(tabr->param, tabr->rb, tabr->col, tabr->named);
 }
 
 /* --------------------------------------------------------- layer advance ---- */
 
-/* three discs at rest on the floor of a box 1 m wide, started */
+/* three discs at rest on the floor of a box 1 m wide, started (gw_test_cases.h) */
 static gw_layer *three_started(const gw_solver_type *type, double dt)
 {
-    gw_layer_params p = gw_layer_params_default();
-    p.width = 1;
-    gw_layer_body b[3];
-    memset(b, 0, sizeof b);
-    for (int i = 0; i < 3; i++)
-        b[i].x = 0.3 + 0.2 * i, b[i].y = 0.1 - 1e-6, b[i].r = 0.1 - 1e-9; /* on the floor */
-    gw_layer *L = NULL;
-    gw_err e = {0};
-    if (gw_layer_create(&p, 3, b, &L, &e) != GW_OK) {
-        printf("create: %s\n", e.msg);
-        return NULL;
-    }
-    gw_solver_params sp = gw_solver_params_default();
-    sp.dt = dt;
-    sp.rtol = sp.atol = 1e-6;
-    if (gw_layer_start(L, type, &sp, &e) != GW_OK) {
-        printf("start: %s\n", e.msg);
-        gw_layer_free(L);
-        return NULL;
-    }
-    return L;
+    return test_three_layer(0, type, dt);
 }
 
 static int advance_refused(const gw_solver_type *type, double dt, double tout, const char *what)
@@ -323,7 +301,7 @@ static int advance_refused(const gw_solver_type *type, double dt, double tout, c
     EXPECT(L != NULL);
     gw_err e = {0};
     const int rc = gw_layer_advance(L, tout, &e);
-    const int ok = refused(rc, &e, what) && gw_layer_time(L) == 0;
+    const int ok = test_refused_or_ok(rc, &e, what) && gw_layer_time(L) == 0;
     if (!ok)
         printf("t = %g s after the call\n", gw_layer_time(L));
     gw_layer_free(L);
@@ -331,25 +309,26 @@ static int advance_refused(const gw_solver_type *type, double dt, double tout, c
     return 0;
 }
 
-static int c_advance_1e300_verlet(void)
-{
-    return advance_refused(gw_solver_verlet, 1e-5, 1e300, "tout 1e+300 s");
-}
+/* the layer started with a solver at a step, advanced to tout: refused naming WHAT, t still 0 */
+typedef struct advance_row {
+    const char *label;
+    const gw_solver_type *const *type; /* the library's solver variable (not a constant) */
+    double dt, tout;
+    const char *what;
+} advance_row;
 
-static int c_advance_1e300_cvode(void)
-{
-    return advance_refused(gw_solver_cvode, 0, 1e300, "more than the 10000 s one call advances");
-}
+static const advance_row advance_rows[] = {
+    {"layer advance to 1e300 s (verlet)", &gw_solver_verlet, 1e-5, 1e300, "tout 1e+300 s"},
+    {"layer advance to 1e300 s (cvode)", &gw_solver_cvode, 0, 1e300, "more than the 10000 s one call advances"},
+    {"layer advance 2e4 s ahead (rk4)", &gw_solver_rk4, 1e-3, 2e4, "more than the 10000 s one call advances"},
+    /* rk4 at 1e-9 s to 2 s: 2e9 steps */
+    {"layer advance of 2e9 rk4 steps", &gw_solver_rk4, 1e-9, 2, "2e+09 rk4 steps"},
+};
+static const advance_row *advr;
 
-static int c_advance_span(void)
+static int c_advance(void)
 {
-    return advance_refused(gw_solver_rk4, 1e-3, 2e4, "more than the 10000 s one call advances");
-}
-
-/* rk4 at 1e-9 s to 2 s: 2e9 steps */
-static int c_advance_steps(void)
-{
-    return advance_refused(gw_solver_rk4, 1e-9, 2, "2e+09 rk4 steps");
+    return advance_refused(*advr->type, advr->dt, advr->tout, advr->what);
 }
 
 static int c_advance_control(void)
@@ -378,7 +357,7 @@ static int rings_refused(double w)
     gw_err e = {0};
     char what[64];
     snprintf(what, sizeof what, "ring width w = %g m", w);
-    const int ok = refused(gw_layer_rings_check(L, 0.5, 0.1, w, 4, k, s, c, &e), &e, what);
+    const int ok = test_refused_or_ok(gw_layer_rings_check(L, 0.5, 0.1, w, 4, k, s, c, &e), &e, what);
     gw_layer_rings(L, 0.5, 0.1, w, 4, k, s, c);
     gw_layer_free(L);
     EXPECT(ok);
@@ -387,24 +366,19 @@ static int rings_refused(double w)
     return 0;
 }
 
-static int c_rings_zero(void)
-{
-    return rings_refused(0);
-}
+typedef struct rings_row {
+    const char *label;
+    double w;
+} rings_row;
 
-static int c_rings_negative(void)
-{
-    return rings_refused(-1);
-}
+static const rings_row rings_rows[] = {
+    {"rings of width 0", 0}, {"rings of width -1", -1}, {"rings of width NaN", NAN}, {"rings of width inf", INFINITY},
+};
+static const rings_row *ringr;
 
-static int c_rings_nan(void)
+static int c_rings(void)
 {
-    return rings_refused(NAN);
-}
-
-static int c_rings_inf(void)
-{
-    return rings_refused(INFINITY);
+    return rings_refused(ringr->w);
 }
 
 static int c_rings_control(void)
@@ -612,29 +586,20 @@ static int c_spectrum_control(void)
     return 0;
 }
 
-static const child_row rows[] = {
+#define ROWS(t) (sizeof(t) / sizeof((t)[0]))
+/* each table's rows over its one body, then the control after it */
+#define TABLE_CASES(t, cur, body)                                                                                  \
+    for (size_t r = 0; r < ROWS(t); r++) {                                                                         \
+        cur = &(t)[r];                                                                                              \
+        child_casef(body, &nfail, &ncases, "%s", cur->label);                                                      \
+    }
+
+static const child_row falcon_rows[] = {
     {"falcon analyse check: a NULL p, res or a named", c_falcon_null},
     {"falcon analyse check: N = 0, negative, reversed, INT_MAX named", c_falcon_sizes},
     {"falcon analyse check of a linear tau_N (control)", c_falcon_control},
-    {"text sample: hexadecimal width", c_hex_header},
-    {"text sample: hexadecimal x", c_hex_x},
-    {"text sample: hexadecimal y", c_hex_y},
-    {"text sample: hexadecimal r", c_hex_r},
-    {"text sample in decimal (control)", c_hex_control},
-    {"layer-stats table: hexadecimal param", c_table_hex_param},
-    {"layer-stats table: hexadecimal grid cell", c_table_hex_grid},
-    {"layer-stats table: hexadecimal column cell", c_table_hex_column},
-    {"layer-stats table in decimal (control)", c_table_control},
-    {"layer advance to 1e300 s (verlet)", c_advance_1e300_verlet},
-    {"layer advance to 1e300 s (cvode)", c_advance_1e300_cvode},
-    {"layer advance 2e4 s ahead (rk4)", c_advance_span},
-    {"layer advance of 2e9 rk4 steps", c_advance_steps},
-    {"layer advance by 1 ms (control)", c_advance_control},
-    {"rings of width 0", c_rings_zero},
-    {"rings of width -1", c_rings_negative},
-    {"rings of width NaN", c_rings_nan},
-    {"rings of width inf", c_rings_inf},
-    {"rings of width 0.15 m (control)", c_rings_control},
+};
+static const child_row rest_rows[] = {
     {"stream hash of /dev/zero", c_stream_dev_zero},
     {"stream hash of a regular file (control)", c_stream_control},
     {"solver drive to a NaN or infinite t_end, a NaN or negative dt_out", c_drive_nan},
@@ -649,10 +614,20 @@ static const child_row rows[] = {
 
 int main(void)
 {
-    snprintf(dir, sizeof dir, "/tmp/gw_left41.XXXXXX");
-    if (!mkdtemp(dir))
+    if (test_scratch_dir(dir, sizeof dir, "left41") != 0)
         return 1;
-    const int rc = child_cases_run(rows, sizeof rows / sizeof rows[0]);
+    int nfail = 0, ncases = 0;
+    for (size_t r = 0; r < ROWS(falcon_rows); r++)
+        child_case(falcon_rows[r].label, falcon_rows[r].fn, &nfail, &ncases);
+    TABLE_CASES(hex_rows, hexr, c_hex)
+    child_case("text sample in decimal (control)", c_hex_control, &nfail, &ncases);
+    TABLE_CASES(table_rows, tabr, c_table)
+    TABLE_CASES(advance_rows, advr, c_advance)
+    child_case("layer advance by 1 ms (control)", c_advance_control, &nfail, &ncases);
+    TABLE_CASES(rings_rows, ringr, c_rings)
+    child_case("rings of width 0.15 m (control)", c_rings_control, &nfail, &ncases);
+    for (size_t r = 0; r < ROWS(rest_rows); r++)
+        child_case(rest_rows[r].label, rest_rows[r].fn, &nfail, &ncases);
     rmdir(dir);
-    return rc;
+    return child_cases_end(nfail, ncases);
 }

@@ -189,7 +189,7 @@ int gw_cmd_chain(int argc, char **argv)
     gw_chain_result r;
     chain_progress prog = {.n = c.params.n};
     gw_cli_progress_init(&prog.p, "  ", "", CHAIN_PROGRESS_MS);
-    prog.p.after_ms = CHAIN_PROGRESS_MS;
+    prog.p.after_ms = gw_cli_progress_ms(CHAIN_PROGRESS_MS);
     double t0 = gw_clock_ms();
     int rc = gw_chain_collide_progress(chain, &c.run, quiet ? NULL : chain_progress_report, &prog, &r, &err);
     double wall_ms = gw_clock_ms() - t0;

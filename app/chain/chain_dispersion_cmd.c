@@ -134,7 +134,7 @@ static void disp_progress_start(disp_progress *dp, const disp_cli *c)
     dp->n = c->n;
     dp->column_n = c->column_n;
     gw_cli_progress_init(&dp->p, "  ", "samples", DISP_PROGRESS_MS);
-    dp->p.after_ms = DISP_PROGRESS_MS;
+    dp->p.after_ms = gw_cli_progress_ms(DISP_PROGRESS_MS);
 }
 
 /* the wisdom a run planned over: its FNV-1a 64 (hex), or null when none was read */

@@ -382,7 +382,7 @@ int gw_cmd_drop(int argc, char **argv)
     ds.col.trace = d.c.out != NULL; /* the bead series for drop_beads.csv */
     drop_progress prog = {.n = d.c.params.n, .t_max = d.c.run.t_max};
     gw_cli_progress_init(&prog.p, "  ", "samples", DROP_PROGRESS_MS);
-    prog.p.after_ms = DROP_PROGRESS_MS;
+    prog.p.after_ms = gw_cli_progress_ms(DROP_PROGRESS_MS);
     if ((rc = gw_chain_drop_study_run(&ds, d.quiet ? NULL : drop_progress_report, &prog, &o, &err)) ==
         GW_EINVAL) /* "NAME:" -> "--NAME:" */
         gw_cli_study_error(gw_chain_drop_setup_params(), "drop", rc, &err);

@@ -62,7 +62,8 @@ static int fail_rc(const char *cmd, int rc, const char *msg)
  * lasted that long: the simulated time reached (layer-make, layer-impact;
  * --quiet: none). Printed on a terminal only before, so a pluviation of 300
  * discs in a pipe or a log (18 s on a loaded machine, a thousand discs
- * minutes) said nothing until its end, where every chain command speaks. */
+ * minutes) said nothing until its end, where every chain command speaks.
+ * GW_PROGRESS_MS, when set, replaces it (gw_cli_progress_ms). */
 #define PROGRESS_MS 3000.0
 typedef struct sim_progress {
     const char *cmd, *until; /* "layer-make", "until the pile settles" */
@@ -78,7 +79,7 @@ static sim_progress sim_progress_start(const char *cmd, const char *until, doubl
 static void sim_progress_report(sim_progress *p, double t)
 {
     const double now = gw_clock_ms();
-    if (now - p->last < PROGRESS_MS)
+    if (now - p->last < gw_cli_progress_ms(PROGRESS_MS))
         return;
     fprintf(stderr, "granwave %s: t = %.4g s simulated (%s, at most t-max %g s), %.0f s elapsed\n", p->cmd, t,
             p->until, p->t_max, (now - p->wall0) / 1e3);

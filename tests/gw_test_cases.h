@@ -1,0 +1,107 @@
+/* gw_test_cases.h: the set-up the library's "left over" tests share
+ * (test_library_leftovers41, test_library_left46, test_library_left48): each
+ * case a child (test_child.h) that builds a small input from the library's
+ * defaults, makes one call and expects either its refusal naming a field or,
+ * for a control, GW_OK; a scratch directory under /tmp for the files the
+ * cases write; the same three discs in a box 1 m wide as a layer. */
+#ifndef GW_TEST_CASES_H
+#define GW_TEST_CASES_H
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "granwave.h"
+#include "test_child.h"
+
+/* A call's status against what a row expects: NAMED NULL (a control) wants
+ * GW_OK, else says what came ("control: status S 'MESSAGE'"); otherwise a
+ * refusal (GW_EINVAL, one line) naming NAMED (test_child.h's refused). 1
+ * when it holds. */
+static inline int test_refused_or_ok(int rc, const gw_err *e, const char *named)
+{
+    if (named)
+        return refused(rc, e, named);
+    if (rc != GW_OK)
+        printf("control: status %d '%s'\n", rc, e->msg);
+    return rc == GW_OK;
+}
+
+/* A scratch directory /tmp/gw_NAME.XXXXXX into dir (n bytes): 0, or -1 with
+ * the reason on stderr. */
+static inline int test_scratch_dir(char *dir, size_t n, const char *name)
+{
+    snprintf(dir, n, "/tmp/gw_%s.XXXXXX", name);
+    if (!mkdtemp(dir)) {
+        perror("mkdtemp");
+        return -1;
+    }
+    return 0;
+}
+
+/* A test's main over a table of cases (child_cases_run) with its scratch
+ * directory made first (test_scratch_dir) and removed after, each FILES
+ * (NULL-ended, names under it, or NULL) unlinked first. */
+static inline int test_cases_in_dir(char *dir, size_t n, const char *name, const child_row *rows, size_t count,
+                                    const char *const *files)
+{
+    if (test_scratch_dir(dir, n, name) != 0)
+        return 1;
+    const int rc = child_cases_run(rows, count);
+    for (size_t k = 0; files && files[k]; k++) {
+        char path[512];
+        snprintf(path, sizeof path, "%s/%s", dir, files[k]);
+        unlink(path);
+    }
+    rmdir(dir);
+    return rc;
+}
+
+/* Three discs of radius 0.1 m (less 1e-9 m: no two touch) on the floor of a
+ * box 1 m wide, at x = 0.3, 0.5, 0.7 m, the k-th moving at vx = k vx_step
+ * (k = 1, 2, 3), from the library's default layer; started with TYPE at step
+ * DT (rtol = atol = 1e-6) unless TYPE is NULL. NULL, with the reason on
+ * stdout (which fails the case), when a call fails. */
+static inline gw_layer *test_three_layer(double vx_step, const gw_solver_type *type, double dt)
+{
+    gw_layer_params p = gw_layer_params_default();
+    p.width = 1;
+    gw_layer_body b[3];
+    memset(b, 0, sizeof b);
+    for (int i = 0; i < 3; i++)
+        b[i].x = 0.3 + 0.2 * i, b[i].y = 0.1 - 1e-6, b[i].r = 0.1 - 1e-9, b[i].vx = vx_step * (i + 1);
+    gw_layer *L = NULL;
+    gw_err e = {0};
+    if (gw_layer_create(&p, 3, b, &L, &e) != GW_OK) {
+        printf("create: %s\n", e.msg);
+        return NULL;
+    }
+    if (!type)
+        return L;
+    gw_solver_params sp = gw_solver_params_default();
+    sp.dt = dt;
+    sp.rtol = sp.atol = 1e-6;
+    if (gw_layer_start(L, type, &sp, &e) != GW_OK) {
+        printf("start: %s\n", e.msg);
+        gw_layer_free(L);
+        return NULL;
+    }
+    return L;
+}
+
+/* A sweep configuration TEXT (named "cfg") read with the library's models:
+ * its status, the message in *e; the configuration freed. */
+static inline int test_config_read(const char *text, gw_err *e)
+{
+    int nm = 0;
+    const gw_sweep_model *const *models = gw_sweep_models(&nm);
+    gw_sweep_config cfg;
+    memset(&cfg, 0, sizeof cfg);
+    const gw_sweep_model *m = NULL;
+    const int rc = gw_sweep_config_read_string(text, "cfg", models, nm, &cfg, &m, e);
+    gw_sweep_config_free(&cfg);
+    return rc;
+}
+
+#endif

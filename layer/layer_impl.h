@@ -377,6 +377,11 @@ enum { LAYER_DEM_W = 8 };
  * each stride bytes after the first. */
 void layer_floor_load(const gw_layer_params *lp, int n, const double *y, const double *r, size_t stride, double *f,
                       double *w);
+/* The upward force (N, negative: downward) the side walls' friction exerts on
+ * the pile of smp through the tangential springs it keeps against the left and
+ * right walls, under lp's material and a friction angle of friction_deg, as
+ * an impact loads them (layer_settled.c). */
+double layer_sample_wall_hold(const gw_layer_sample *smp, const gw_layer_params *lp, double friction_deg);
 /* gw_layer_impact_rest_check with other_settling: 1 allows the floor load the
  * sample's recorded settling explains, LAYER_FLOOR_LOAD_MAX q times the weight
  * (q = gw_layer_settled_load_ratio above 1), as other-settling allows the

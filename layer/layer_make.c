@@ -75,46 +75,77 @@ gw_layer_make_params gw_layer_make_params_default(void)
     return m;
 }
 
-/* A box in which the longest clump cannot lie flat: clumps_initial lays a
- * clump on its side when its bounding box fits between the walls with a gap of
+/* A box in which a clump drawn cannot lie flat: clumps_initial lays a clump
+ * on its side when its bounding box fits between the walls with a gap of
  * 0.1 R_max on each side, and stands it on end otherwise; clumps standing on
  * end in a box narrower than they are long topple, jam across it and lean on
  * both walls. `layer-make --clumps --width-rm 4 --n 20` (the longest clump
  * 5.11 R_m at the defaults) ended unsettled at t-max 6 s for seeds 1 and 2,
  * the floor carrying 6.57 and 0.054 of the weight (wedged clumps pressing it,
  * or held off it by the walls); in boxes of 5.2, 5.6, 6 and 7 R_m the same 20
- * clumps settled for seeds 1 to 4 (floors 0.75 to 1.14 of the weight). The
- * longest clump a draw can give is the one of R_eq = R_max at the largest
- * aspect ratio (its length 2 A r grows with A: layer_clump_shape), so the
- * bound does not depend on the seed or n: the box must be at least that long
- * plus the two gaps, the width at which the initial lay-out puts every clump
- * flat. The width named is rounded up to three digits. */
+ * clumps settled for seeds 1 to 4 (floors 0.75 to 1.14 of the weight). A
+ * clump's length 2 A r grows with its R_eq and aspect ratio A
+ * (layer_clump_shape); the draw is seeded and does not depend on the box
+ * (clump_draw: the same clumps at every width), so the bound is the longest
+ * clump the seed's n draws give, lying flat, plus the two gaps: the width at
+ * which the initial lay-out puts every clump flat (it was the longest any
+ * draw could give, R_eq = R_max at the largest aspect ratio, 5.38 R_m at the
+ * defaults: `--n 1`, one clump 2.31 R_m long at seed 1, was refused below
+ * 5.39). The width named is rounded up to three digits. */
 #define CLUMP_FLAT_GAPS 0.2 /* R_max: the lay-out's gap of 0.1 R_max on each side */
 
-static int check_clump_flat(const gw_layer_make_params *m, double rmax, gw_err *err)
+/* The next clump of the seeded draw g: its R_eq (m) from the grading
+ * [rmin, rmax], its aspect ratio in [1, aspect_max], its angle in [0, pi). */
+static void clump_draw(splitmix64 *g, double rmin, double rmax, double aspect_max, double *req, double *aspect,
+                       double *angle)
+{
+    *req = rmin + (rmax - rmin) * sm_uniform(g);
+    *aspect = 1 + (aspect_max - 1) * sm_uniform(g);
+    *angle = M_PI * sm_uniform(g);
+}
+
+/* The length (m) of a clump of R_eq req and aspect ratio aspect lying flat. */
+static double clump_flat_length(double req, double aspect)
 {
     double ox[LAYER_CLUMP_MAX], oy[LAYER_CLUMP_MAX], r[LAYER_CLUMP_MAX];
-    const int k = layer_clump_shape(rmax, m->aspect_max, 0, ox, oy, r);
+    const int k = layer_clump_shape(req, aspect, 0, ox, oy, r);
     double x0 = INFINITY, x1 = -INFINITY;
     for (int q = 0; q < k; q++)
         x0 = fmin(x0, ox[q] - r[q]), x1 = fmax(x1, ox[q] + r[q]);
-    const double len = x1 - x0, need = len + CLUMP_FLAT_GAPS * rmax;
+    return x1 - x0;
+}
+
+static int check_clump_flat(const gw_layer_make_params *m, gw_err *err)
+{
+    /* the grading as clumps_initial computes it, to the bit */
+    const double cv = cbrt(m->volume_ratio), rmin = 2 * m->rm / (1 + cv), rmax = cv * rmin;
+    splitmix64 g = {(unsigned long long)m->seed}; /* clumps_initial's draw */
+    double len = 0, lreq = 0, lasp = 1;
+    int lj = 0;
+    for (int j = 0; j < m->n; j++) {
+        double req, aspect, angle;
+        clump_draw(&g, rmin, rmax, m->aspect_max, &req, &aspect, &angle);
+        const double l = clump_flat_length(req, aspect);
+        if (l > len)
+            len = l, lreq = req, lasp = aspect, lj = j;
+    }
+    const double need = len + CLUMP_FLAT_GAPS * rmax;
     if (m->width_rm * m->rm >= need)
         return GW_OK;
     /* the smallest width of three digits at or above need / R_m, read back */
     const double v = need / m->rm, p = pow(10, floor(log10(v)) - 2);
-    char wb[40], wt[40], as[40];
+    char wb[40], wt[40];
     double c = ceil(v / p) * p;
     for (int i = 0; i < 4; i++, c += p) {
         gw_snprintf(wb, sizeof wb, "%.3g", c);
         if (gw_strtod(wb, NULL) * m->rm >= need)
             break;
     }
-    return gw_err_set(err, GW_EINVAL, "width-rm: a box of %s R_m is narrower than the longest clump lies flat in "
-                      "(%.3g R_m long at R_eq = R_max and aspect ratio %s, with a gap of 0.1 R_max each side: "
-                      "%.4g R_m): the clumps stand on end, topple and wedge across the box; give --width-rm %s or "
-                      "more, or a smaller --aspect-max", gw_num_text(wt, sizeof wt, m->width_rm), len / m->rm,
-                      gw_num_text(as, sizeof as, m->aspect_max), need / m->rm, wb);
+    return gw_err_set(err, GW_EINVAL, "width-rm: a box of %s R_m is narrower than the longest clump drawn lies flat "
+                      "in (clump %d of %d at seed %ld: %.3g R_m long, R_eq %.3g R_m, aspect ratio %.3g, with a gap "
+                      "of 0.1 R_max each side: %.4g R_m): the clumps stand on end, topple and wedge across the box; "
+                      "give --width-rm %s or more, or a smaller --aspect-max", gw_num_text(wt, sizeof wt, m->width_rm),
+                      lj + 1, m->n, m->seed, len / m->rm, lreq / m->rm, lasp, need / m->rm, wb);
 }
 
 static int check_make(const gw_layer_make_params *m, gw_err *err)
@@ -139,7 +170,7 @@ static int check_make(const gw_layer_make_params *m, gw_err *err)
     double rmax = m->rm * 2 * cbrt(m->volume_ratio) / (1 + cbrt(m->volume_ratio));
     if (m->width_rm * m->rm < 2.2 * rmax)
         return gw_err_set(err, GW_EINVAL, "width-rm: %g R_m is narrower than one particle", m->width_rm);
-    return m->clumps ? check_clump_flat(m, rmax, err) : GW_OK;
+    return m->clumps ? check_clump_flat(m, err) : GW_OK;
 }
 
 /* The step against the pile's shortest contact: two of the smallest discs
@@ -387,16 +418,25 @@ static int keep_springs(const gw_layer *L, double width, int n, const gw_layer_b
     return rc == GW_OK ? GW_OK : gw_err_set(err, rc, "layer-make: out of memory");
 }
 
-/* A pile whose floor carries f of its weight w (N) below LAYER_FLOOR_LOAD_MIN w
- * (layer_impl.h) is at rest when the side walls' friction holds the rest: the
- * floor and the side walls together carry between LAYER_FLOOR_LOAD_MIN and
- * LAYER_FLOOR_LOAD_MAX times the weight (layer_side_walls_fy: their contact
- * forces in L's state, upward). In the air or at the top of a bounce neither
- * carries anything. Narrow clump piles within CLUMP_ASPECT_MAX ended unsettled
- * at t-max 6 s, E_k 1e-4 to 1e-2 of the threshold, only for want of this:
+/* A pile whose floor carries f of its weight w (N) outside [LAYER_FLOOR_LOAD_MIN,
+ * LAYER_FLOOR_LOAD_MAX] w (layer_impl.h) is at rest when the side walls'
+ * friction makes up the difference: the floor and the side walls together
+ * carry between LAYER_FLOOR_LOAD_MIN and LAYER_FLOOR_LOAD_MAX times the weight
+ * (layer_side_walls_fy: their contact forces in L's state, upward), as a pile
+ * whose centre of mass does not accelerate does (their sum is its weight). In
+ * the air or at the top of a bounce neither carries anything; swinging on its
+ * contacts, the floor's excess is not the walls'. Narrow clump piles within
+ * CLUMP_ASPECT_MAX ended unsettled at t-max 6 s, E_k 1e-4 to 1e-2 of the
+ * threshold, only for want of this:
  * `layer-make --clumps --width-rm 6 --n 60` seeds 1 and 2, floors at 0.447 and
  * 0.203 of the weight and the side walls holding 0.539 and 0.811 of it (0.985
- * and 1.014 together). */
+ * and 1.014 together). The walls hold down as well as up: a pile thrown up
+ * by its landing and caught by the walls' friction on its way back rests
+ * pressed onto its floor, the walls pulling it down. `--clumps --width-rm 6
+ * --n 40 --seed 3` (and `--width-rm 8 --n 80 --seed 1`) ended unsettled at
+ * t-max with E_k 1e-2 of the threshold from 2.5 s on, the floor at 1.60 of the
+ * weight (1.56) and the walls at -0.60 (0.999 together, steady from 2.5 to
+ * 6 s): at rest, refused for the floor's load alone. */
 static int held_by_walls(const gw_layer *L, double f, double w)
 {
     const double s = f + layer_side_walls_fy(L, L->y);
@@ -457,11 +497,12 @@ static int settle(const gw_layer_params *lp, const gw_layer_make_params *m, doub
             take_positions(L, n, b);
             double f, w;
             layer_floor_load(lp, n, &b[0].y, &b[0].r, sizeof *b, &f, &w);
-            /* (a floor carrying less than LAYER_FLOOR_LOAD_MIN: the side
-             * walls' friction holding the rest, as in a narrow box, is a pile
-             * at rest too, the two carrying its weight: wall_hold) */
-            const int rests = !(f > LAYER_FLOOR_LOAD_MAX * w) &&
-                              (f >= LAYER_FLOOR_LOAD_MIN * w || held_by_walls(L, f, w));
+            /* (a floor carrying less than LAYER_FLOOR_LOAD_MIN or more than
+             * LAYER_FLOOR_LOAD_MAX: the side walls' friction holding the rest
+             * up or pulling the pile down, as in a narrow box, is a pile at
+             * rest too, the two carrying its weight: held_by_walls) */
+            const int rests = (f >= LAYER_FLOOR_LOAD_MIN * w && !(f > LAYER_FLOOR_LOAD_MAX * w)) ||
+                              held_by_walls(L, f, w);
             /* and the bodies in flight counted with the energy they will
              * land with: a disc at the top of a bounce has E_k near 0 too
              * (`--n 1` was next caught 3 mm above the floor, 26 J of fall
@@ -633,8 +674,8 @@ static double clumps_initial(const gw_layer_make_params *m, double width, gw_lay
     double cx = gap, ry = gap, rowh = 0;
     int k = 0;
     for (int j = 0; j < m->n; j++) {
-        double req = rmin + (rmax - rmin) * sm_uniform(&g);
-        double aspect = 1 + (m->aspect_max - 1) * sm_uniform(&g), angle = M_PI * sm_uniform(&g);
+        double req, aspect, angle;
+        clump_draw(&g, rmin, rmax, m->aspect_max, &req, &aspect, &angle);
         double ox[LAYER_CLUMP_MAX], oy[LAYER_CLUMP_MAX], r[LAYER_CLUMP_MAX];
         int km = 0;
         double x0, x1, y0, y1;
@@ -1064,3 +1105,4 @@ int gw_layer_make(const gw_layer_params *lp0, const gw_layer_make_params *m,
     res->n_bodies = n;
     return settled_readable(out, err);
 }
+

@@ -213,7 +213,7 @@ int gw_layer_impact_settled_check(const gw_layer_sample *smp, const gw_layer_par
  * and right walls, as an impact loads them (layer_springs_load: F_t = K_t u_t,
  * B.4 at R_p = r, clipped to tan(phi) F_n), along t = (-n_y, n_x): the disc
  * gets F_t n_x upward. */
-static double wall_hold(const gw_layer_sample *smp, const gw_layer_params *lp, double friction_deg)
+double layer_sample_wall_hold(const gw_layer_sample *smp, const gw_layer_params *lp, double friction_deg)
 {
     const double tp = tan(friction_deg * M_PI / 180);
     double up = 0;
@@ -241,8 +241,8 @@ static void floor_unsettled(const gw_layer_sample *smp, const gw_layer_params *l
     layer_floor_load(&sp, smp->n, smp->y, smp->r, sizeof *smp->y, &f, &w);
     char ls[40];
     /* (a floor carrying less, the side walls' friction holding the rest: a pile
-     * at rest in a narrow box, as layer-make calls it settled) */
-    if (w > 0 && f < LAYER_FLOOR_LOAD_MIN * w && f + wall_hold(smp, &sp, smp->settled.friction_deg) < LAYER_FLOOR_LOAD_MIN * w)
+     * at rest in a narrow box, as layer-make calls it settled: layer_sample_wall_hold) */
+    if (w > 0 && f < LAYER_FLOOR_LOAD_MIN * w && f + layer_sample_wall_hold(smp, &sp, smp->settled.friction_deg) < LAYER_FLOOR_LOAD_MIN * w)
         gw_snprintf(buf, n, "the sample did not settle: its floor carries %.3g of the pile's weight under the "
                     "material it settled with (at rest: about 1; below %s the pile was in the air or bouncing when "
                     "written, though its settled line says converged 1, as a layer-make before session 38 wrote "

@@ -44,7 +44,9 @@ int gw_chain_rk4_steps_per_tc(double rel_acc)
 
 int gw_chain_rk4_study_covers(const gw_chain_params *p, long n_max)
 {
-    if (!p || n_max < 1) /* a column of no bead (n_max -5 was covered) */
+    /* a column of no bead (n_max -5 was covered), or none at all (a NaN mass
+     * was covered: chain_scales_domain) */
+    if (!p || n_max < 1 || !chain_scales_domain(p))
         return 0;
     int general = p->wall.layer || p->wall.yield_pressure > 0 || p->wall.loss > 0 || p->sensor.mass > 0 ||
                   p->guide.coulomb > 0 || p->guide.viscous > 0;

@@ -213,6 +213,13 @@ int gw_layer_solve_point(double alpha, double poisson, double lambda, double *dh
         return gw_err_set(err, GW_EINVAL, "layer law: a/h in (0, 100], Poisson ratio in [0, 0.5], "
                                           "compliance share in [0, 1] (got %g, %g, %g)",
                           alpha, poisson, lambda);
+    /* fhat ~ (4/3) alpha^3 and dhat ~ alpha^2 (Hertz, a << h): below
+     * GW_LAYER_ALPHA_MIN fhat is no normal double. alpha = 1e-300 failed as
+     * "no contact solution" (fhat underflowed to 0), naming no input. */
+    if (alpha < GW_LAYER_ALPHA_MIN)
+        return gw_err_set(err, GW_EINVAL, "gw_layer_solve_point: alpha (a/h) = %g is below %g: fhat (about "
+                          "(4/3) alpha^3) would fall below the normal doubles; give alpha in [%g, 100]", alpha,
+                          GW_LAYER_ALPHA_MIN, GW_LAYER_ALPHA_MIN);
     qtab t = {0, NULL};
     int rc = qtab_build(poisson, 2.0 * alpha + 0.1, &t, err);
     if (rc == GW_OK)

@@ -115,10 +115,16 @@ double gw_chain_dmax1(double m, double K, double v)
     return pow(5.0 * m * v * v / (4.0 * K), 0.4);
 }
 
+/* F_max = K d_max^(3/2) = K^(2/5) (5 m v^2 / 4)^(3/5): written so, a rigid wall
+ * (K = inf) gives the limit, inf for v > 0 and 0 at v = 0 (K d^(3/2) was
+ * inf * 0 = NaN there, session 42) */
 double gw_chain_fmax1(double m, double K, double v)
 {
-    double d = gw_chain_dmax1(m, K, v);
-    return K * d * sqrt(d);
+    if (!closed_form_domain(m, K, v))
+        return NAN;
+    if (v == 0)
+        return 0.0;
+    return pow(K, 0.4) * pow(1.25 * m * v * v, 0.6);
 }
 
 double gw_chain_tq_theory(double m, double k, double v)

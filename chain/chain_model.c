@@ -427,9 +427,39 @@ static int is_general(const gw_chain_params *p)
            p->guide.coulomb > 0 || p->guide.viscous > 0;
 }
 
+/* The column the scales are of: n in [1, 5e7] beads, each mass and bead-bead
+ * coefficient positive and finite, a wall coefficient above 0 (inf: rigid)
+ * and an impact speed positive and finite, as gw_chain_params_validate asks.
+ * Without it the scales were finite for no column: masses {1, -1, NaN} gave
+ * a step scale of 1.47e-4 s, n = 0 a time scale, a NaN mass was covered by
+ * the RK4 study (session 42). */
+static int pos_finite(double x)
+{
+    return x > 0 && isfinite(x);
+}
+
+int chain_scales_domain(const gw_chain_params *p)
+{
+    if (!p || chain_n_check(p->n, NULL) != GW_OK || !pos_finite(p->v_imp) || !(p->kwall > 0))
+        return 0;
+    if (p->masses) {
+        for (int i = 0; i < p->n; i++)
+            if (!pos_finite(p->masses[i]))
+                return 0;
+    } else if (!pos_finite(p->mass))
+        return 0;
+    if (p->kc) {
+        for (int i = 0; i + 1 < p->n; i++)
+            if (!pos_finite(p->kc[i]))
+                return 0;
+        return p->n > 1 || pos_finite(p->k);
+    }
+    return pos_finite(p->k);
+}
+
 double gw_chain_time_scale(const gw_chain_params *p)
 {
-    if (!p)
+    if (!chain_scales_domain(p))
         return NAN;
     double m = p->masses ? p->masses[0] : p->mass;
     double k = p->kc && p->n > 1 ? p->kc[0] : p->k;
@@ -592,7 +622,7 @@ double chain_ring_period(const gw_chain_params *p, int *fastest)
 
 double gw_chain_step_scale(const gw_chain_params *p)
 {
-    if (!p)
+    if (!chain_scales_domain(p))
         return NAN;
     const double v = p->v_imp, tc = gw_chain_time_scale(p);
     double s = tc;

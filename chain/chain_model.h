@@ -67,6 +67,9 @@ int chain_lean_avx(void);
  * and gw_chain_memory_check's, whose sizes hold for such a count only: n =
  * INT_MIN was told it needs 4.4e11 GB, "at most 0 beads", n = -1 passed). */
 int chain_n_check(int n, gw_err *err);
+/* 1 when p is a column gw_chain_time_scale and gw_chain_step_scale have a
+ * value for (chain_model.c), else 0 (their NaN, the RK4 study's not covered) */
+int chain_scales_domain(const gw_chain_params *p);
 
 /* General model (chain_general.c). */
 double chain_general_wall_force(const gw_chain *c, const double *y, double *kd, double *kv, double *pd);

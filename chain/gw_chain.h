@@ -48,7 +48,9 @@ double gw_chain_tau_constant(void);
 /* Single bead on a wall of stiffness K: contact time (F.2), peak overlap, peak
  * force (F.13) and its time tau_1/2 (F.21). These and gw_chain_tq_theory are
  * NaN outside their domain: m in (0, inf), K (k) in (0, inf], v in [0, inf]
- * (a negative m and K gave finite values, v = -1 the overlap of +1). */
+ * (a negative m and K gave finite values, v = -1 the overlap of +1). A rigid
+ * wall, K = inf, gives the limits: tau_1 = 0, d_max = 0, F_max = inf for v > 0
+ * (0 at v = 0; F_max was NaN before session 42). */
 double gw_chain_tau1(double m, double K, double v);
 double gw_chain_dmax1(double m, double K, double v);
 double gw_chain_fmax1(double m, double K, double v);
@@ -139,9 +141,12 @@ double gw_layer_law_contact_radius(const gw_layer_law *l, double d);
  * the layer's material (the law's thick-layer limit), N/m^1.5. */
 double gw_layer_law_hertz_k(const gw_layer_law *l);
 double gw_layer_law_thickness(const gw_layer_law *l);
-/* One dimensionless solution: contact radius alpha = a/h in (0, 100], layer
- * Poisson ratio, share lambda in [0, 1] of the layer in the contact compliance
+/* One dimensionless solution: contact radius alpha = a/h in [1e-100, 100]
+ * (GW_LAYER_ALPHA_MIN: below it fhat ~ (4/3) alpha^3 is no normal double;
+ * smaller alpha is refused naming alpha, GW_EINVAL), layer Poisson ratio in
+ * [0, 0.5], share lambda in [0, 1] of the layer in the contact compliance
  * (1 for a rigid sphere): dhat = d R/h^2, fhat = F R/(E* h^3). */
+#define GW_LAYER_ALPHA_MIN 1e-100
 int gw_layer_solve_point(double alpha, double poisson, double lambda, double *dhat,
                          double *fhat, gw_err *err);
 
@@ -407,7 +412,8 @@ int gw_chain_rk4_steps_per_tc(double rel_acc);
  * gravity, N <= 40, a Hertz wall on a rigid sensor (no sheet layer, yield or
  * loss), no guide friction. 1 or 0. The falcon study picks its solver by an
  * accuracy target only there (gw_chain_falcon_run and `granwave falcon`).
- * 0 for a NULL p and an n_max below 1 (no column: -5 was covered). */
+ * 0 for a NULL p, an n_max below 1 (no column: -5 was covered) and a p that
+ * is no column (gw_chain_time_scale: a NaN mass was covered). */
 int gw_chain_rk4_study_covers(const gw_chain_params *p, long n_max);
 /* The study's choice into run: RK4 (default method) with
  * M = gw_chain_rk4_steps_per_tc(rel_acc) steps per T_c and, unless keep_dt_out,
@@ -501,7 +507,12 @@ int gw_chain_result_warnings(const gw_chain_result *r, char **list);
  * 0); the warnings (gw_chain_result_warnings) are the same before and after. */
 int gw_chain_result_held_blank(gw_chain_result *r);
 
-/* Characteristic time (m/k)^(2/5) v^(-1/5) of the chain, s. */
+/* Characteristic time (m/k)^(2/5) v^(-1/5) of the chain, s (m and k those of
+ * bead 1 and its upper contact). These two are NaN, and
+ * gw_chain_rk4_study_covers is 0, for p NULL or no column: n outside
+ * [1, 5e7], a mass or bead-bead coefficient not positive and finite, kwall
+ * not above 0, v_imp not positive and finite (before session 42 masses
+ * {1, -1, NaN} had a step scale of 1.47e-4 s and n = 0 a time scale). */
 double gw_chain_time_scale(const gw_chain_params *p);
 /* The time scale the steps resolve, s: T_c (gw_chain_time_scale) of a uniform
  * column; shorter when a contact is (unequal beads, a light sensor body: each

@@ -384,8 +384,16 @@ int gw_fnv1a64_parse(const char *p, size_t len, unsigned long long *h);
  * naming what. */
 int gw_out_check(const char *dir, const char *what, gw_err *err);
 int gw_out_file_check(const char *path, const char *what, gw_err *err);
-/* gw_out_names_check: each of the files a run writes into dir (names,
- * NULL-terminated; NULL: none) that is already there is a regular file or a
+/* These checks, gw_out_names_check and gw_mkdir_p refuse a name the run
+ * would make that holds a control character (a byte below 0x20, such as a
+ * newline or ESC, or 0x7f): a component of the path that does not exist yet,
+ * GW_EINVAL with one line naming what, the path and the byte; an existing
+ * one (a directory the user made) is written into, as before. */
+/* gw_out_names_check: dir and names (NULL-terminated) are not NULL (refused
+ * naming the argument), each name is a plain file name (not empty, no '/',
+ * not "." or "..") holding no control character unless the file is there
+ * (gw_io_new_name_check), and each of the files a run writes into dir
+ * that is already there is a regular file or a
  * symbolic link to one: a directory, FIFO, socket or device there (or behind a
  * link, or a link to nothing) is refused before the run, GW_EINVAL with one
  * line naming what and the file. The atomic write refuses them too

@@ -134,4 +134,9 @@ int gw_outset_active(void);
  * target elsewhere, a directory moved before the temporary was made). */
 int gw_outset_temp_dir(const char *tmp, int fd);
 
+/* The rule for the names a run makes (gw_io_paths.c; gw_common.h, the output
+ * checks): a component of path that does not exist yet and holds a control
+ * character is refused, naming what. NULL: GW_OK. */
+int gw_io_new_name_check(const char *path, const char *what, gw_err *err);
+
 #endif

@@ -82,6 +82,54 @@ static int path_length_refused(const char *what, const char *path, size_t n, siz
                       n, cap - 1, path);
 }
 
+/* The one rule for the names a run makes: no control character (a byte below
+ * 0x20, such as a newline or ESC, or 0x7f). Such a name breaks every listing,
+ * log and one-line message that shows it, and the pvd writer refuses it
+ * (gw_layer_write_pvd); gw_out_file_check("/tmp/x\n") and layer-make --out
+ * 'o<ESC>k.txt' wrote one (session 42). A component of path that holds one and
+ * does not exist yet (the file, or a directory still to make) is refused,
+ * naming what, the path and the byte; one that exists already (a directory
+ * the user made) is written into, as before, its name quoted in messages and
+ * headers. GW_OK otherwise. */
+static long ctrl_byte(const char *s, size_t n)
+{
+    for (size_t i = 0; i < n; i++)
+        if ((unsigned char)s[i] < 0x20 || (unsigned char)s[i] == 0x7f)
+            return (long)i;
+    return -1;
+}
+
+int gw_io_new_name_check(const char *path, const char *what, gw_err *err)
+{
+    if (!path)
+        return GW_OK; /* (the callers refuse it) */
+    what = what ? what : "output";
+    const size_t n = strlen(path);
+    char buf[4096];
+    if (n >= sizeof buf || ctrl_byte(path, n) < 0)
+        return GW_OK;
+    memcpy(buf, path, n + 1);
+    for (size_t i = 0, start = 0; i <= n; i++) {
+        if (buf[i] != '/' && buf[i] != '\0')
+            continue;
+        const long b = ctrl_byte(buf + start, i - start);
+        if (b >= 0) {
+            char c = buf[i];
+            struct stat st;
+            buf[i] = '\0';
+            const int there = lstat(buf, &st) == 0;
+            buf[i] = c;
+            if (!there)
+                return gw_err_set(err, GW_EINVAL, "%s: '%s': the name it would make, '%.*s', holds a control "
+                                  "character (byte 0x%02x at %ld of the path): give a name of printable characters",
+                                  what, path, (int)(i - start), path + start,
+                                  (unsigned)(unsigned char)buf[start + (size_t)b], (long)(start + (size_t)b) + 1);
+        }
+        start = i + 1;
+    }
+    return GW_OK;
+}
+
 int gw_mkdir_p(const char *path, gw_err *err)
 {
     if (!path)
@@ -90,7 +138,8 @@ int gw_mkdir_p(const char *path, gw_err *err)
     size_t n = strlen(path);
     if (n == 0 || n >= sizeof buf)
         return path_length_refused("output directory", path, n, sizeof buf, err);
-    if (dotdot_after_missing(path, "output directory", err) != GW_OK)
+    if (dotdot_after_missing(path, "output directory", err) != GW_OK ||
+        gw_io_new_name_check(path, "output directory", err) != GW_OK)
         return GW_EINVAL;
     memcpy(buf, path, n + 1);
     size_t first = 0; /* the end of the first component made here (0: none) */
@@ -175,7 +224,8 @@ static int out_dir_check(const char *dir, const char *what, int root_ok, gw_err 
     size_t n = dir ? strlen(dir) : 0;
     if (n == 0 || n >= sizeof buf)
         return path_length_refused(what, dir, n, sizeof buf, err);
-    if (dotdot_after_missing(dir, what, err) != GW_OK || (!root_ok && gw_io_root_refused(dir, what, err) != GW_OK))
+    if (dotdot_after_missing(dir, what, err) != GW_OK || gw_io_new_name_check(dir, what, err) != GW_OK ||
+        (!root_ok && gw_io_root_refused(dir, what, err) != GW_OK))
         return GW_EINVAL;
     memcpy(buf, dir, n + 1);
     struct stat st;
@@ -250,6 +300,8 @@ int gw_out_file_check(const char *path, const char *what, gw_err *err)
     size_t n = path ? strlen(path) : 0;
     if (n == 0 || n >= sizeof dir)
         return path_length_refused(what, path, n, sizeof dir, err);
+    if (gw_io_new_name_check(path, what, err) != GW_OK)
+        return GW_EINVAL;
     struct stat st;
     if (stat(path, &st) == 0 && !S_ISREG(st.st_mode))
         return gw_err_set(err, GW_EINVAL, "%s: '%s' is %s; give a regular file", what, path,
@@ -323,18 +375,24 @@ static int temp_name_fits(const char *path, const char *dir, const char *what, g
 
 int gw_out_names_check(const char *dir, const char *const *names, const char *what, gw_err *err)
 {
-    if (!dir || !names)
-        return GW_OK;
     what = what ? what : "output"; /* as gw_out_check; "(null): ..." before session 34 */
+    /* NULL was GW_OK: no directory and no list checked nothing (session 42) */
+    if (!dir || !names)
+        return gw_err_set(err, GW_EINVAL, "gw_out_names_check: %s is NULL", !dir ? "dir" : "names");
     for (int k = 0; names[k]; k++) {
         char p[4096 + 256], target[4096];
         struct stat st;
+        /* a plain file name, in dir: "a/../b", "..", "" or "x/y" named a file
+         * elsewhere, or dir itself, and passed (session 42) */
+        if (!*names[k] || strchr(names[k], '/') || strcmp(names[k], ".") == 0 || strcmp(names[k], "..") == 0)
+            return gw_err_set(err, GW_EINVAL, "%s: names[%d] '%s' is not a plain file name (no '/', not '', '.' "
+                              "or '..')", what, k, names[k]);
         if (gw_snprintf(p, sizeof p, "%s/%s", dir, names[k]) >= (int)sizeof p) {
             char cut[128];
             return gw_err_set(err, GW_EINVAL, "%s: '%s' (%zu characters): path too long for %s", what,
                               path_cut(dir, cut, sizeof cut), strlen(dir), names[k]);
         }
-        if (temp_fits(p, dir, names[k], what, err) != GW_OK)
+        if (temp_fits(p, dir, names[k], what, err) != GW_OK || gw_io_new_name_check(p, what, err) != GW_OK)
             return GW_EINVAL;
         if (lstat(p, &st) != 0) /* nothing there (or no directory yet): the run makes it */
             continue;

@@ -93,7 +93,7 @@ fi
 # 6 the command line in the headers, as a shell reads it back
 for name in "a b" $'nl\nx' "it's" "-lead" "é ✓"; do
     d="$tmp/q/$name"
-    mkdir -p "$tmp/q"
+    mkdir -p "$d" # made here: a name to make with a newline is refused (session 42)
     "$GW" chain --n 2 --out "$d" >/dev/null 2>&1
     line=$(grep -m1 -h '^# command: ' "$d/chain_wall_force.csv" 2>/dev/null | sed 's/^# command: //')
     lines=$(grep -c '^# ' "$d/chain_wall_force.csv" 2>/dev/null)

@@ -18,6 +18,8 @@
 #  5 layer-make's text output printed a raw newline of an --out name holding
 #    one ("written to s<newline>t.txt"): every path the program echoes goes
 #    through gw_one_line (gw_cli_path), the name printed s\nt.txt on one line.
+#    Since session 42 such a name to make is refused; a directory the user
+#    made with a newline (s<newline>d/t.txt) is written into and echoed so.
 # Checks that fail on the code before: see docs/tests.md.
 # shellcheck source=refusal_lib.sh
 . "$2/tests/refusal_lib.sh"
@@ -97,13 +99,23 @@ if exits_refused "layer-impact --alpha 89.9" "^granwave layer-impact --vi: 20 m/
 fi
 
 # --- 5 layer-make: an --out name with a newline echoed on one line ---
+# (session 42: a name to make that holds a control character is refused, exit
+# 2, one line, nothing written; a directory the user made with one is written
+# into, and its name echoed on one line)
 name=$(printf 's\nt.txt')
-cpu_run 60 "$GW" layer-make --n 40 --out "$name" >"$tmp/lm.out" 2>"$tmp/stderr" </dev/null
+cpu_run 60 "$GW" layer-make --n 40 --out "$name" --quiet >"$tmp/lm.out" 2>"$tmp/stderr" </dev/null
+rc=$?
+[ $rc = 2 ] && [ ! -e "$name" ] && [ "$(wc -l <"$tmp/stderr")" -eq 1 ] && grep -q 'control character' "$tmp/stderr" &&
+    ok "layer-make --out 's<newline>t.txt': refused (exit 2, one line), nothing written" ||
+    ko "layer-make --out 's<newline>t.txt': exit $rc, $(tr '\n' '|' <"$tmp/stderr")"
+d=$(printf 's\nd')
+mkdir -p "$d"
+cpu_run 60 "$GW" layer-make --n 40 --out "$d/t.txt" >"$tmp/lm.out" 2>"$tmp/stderr" </dev/null
 rc=$?
 last=$(tail -n 1 "$tmp/lm.out")
-[ $rc = 0 ] && [ -s "$name" ] && [ "$last" = "${last%written to s\\nt.txt}written to s\\nt.txt" ] &&
-    ! grep -qx 't.txt' "$tmp/lm.out" &&
-    ok "layer-make --out 's<newline>t.txt': written, its name printed s\\nt.txt on one line" ||
-    ko "layer-make --out 's<newline>t.txt': exit $rc, output ends: $(tail -n 2 "$tmp/lm.out" | tr '\n' '|')"
+[ $rc = 0 ] && [ -s "$d/t.txt" ] && [ "$last" = "${last%written to s\\nd/t.txt}written to s\\nd/t.txt" ] &&
+    ! grep -qx 'd/t.txt' "$tmp/lm.out" &&
+    ok "layer-make --out 's<newline>d/t.txt' (a directory the user made): written, its name printed s\\nd/t.txt on one line" ||
+    ko "layer-make --out 's<newline>d/t.txt': exit $rc, output ends: $(tail -n 2 "$tmp/lm.out" | tr '\n' '|')"
 
 test_summary test_left48

@@ -224,7 +224,7 @@ int chain_cli_resolve(chain_cli *c, const gw_opt *opts, const char *cmd, gw_err 
         char name[96];
         snprintf(name, sizeof name, "%s --out", cmd);
         int rc = gw_out_check(c->out, name, err);
-        return rc == GW_OK ? gw_out_names_check(c->out, c->out_names, name, err) : rc;
+        return rc == GW_OK && c->out_names ? gw_out_names_check(c->out, c->out_names, name, err) : rc;
     }
     return GW_OK;
 }

@@ -402,7 +402,8 @@ cJSON *gw_stats_json(const gw_stats_analysis *A, int full);
  * fails leaves the earlier ones as they were. */
 int gw_stats_write_files(const gw_stats_analysis *A, const char *dir, gw_err *err);
 /* GW_EINVAL naming both when the table input is one of the files
- * gw_stats_write_files would write into dir (gw_outset_check_input). */
+ * gw_stats_write_files would write into dir (gw_outset_check_input); dir or
+ * input NULL is refused naming it. */
 int gw_stats_out_check_input(const char *dir, const char *input, gw_err *err);
 /* Whether gw_stats_write_files could write into dir, before any work: what
  * gw_out_check says (what names the flag in its message), then a file is made

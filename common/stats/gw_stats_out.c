@@ -583,6 +583,9 @@ static const char *const stats_files[] = {"groups.csv", "convergence.csv", "bina
 
 int gw_stats_out_check_input(const char *dir, const char *input, gw_err *err)
 {
+    /* NULL was GW_OK (gw_outset_check_input takes NULL as "no input") */
+    if (!dir || !input)
+        return gw_err_set(err, GW_EINVAL, "gw_stats_out_check_input: %s is NULL", !dir ? "dir" : "input");
     return gw_outset_check_input(dir, stats_files, input, "layer-stats RESULTS.csv", err);
 }
 

@@ -340,7 +340,7 @@ static int nonnegative(const char *col)
                                         "penetration_rm", "energy_error",
                                         "t_end", "steps", "e_n_first", "e_first", "alpha_r_first",
                                         "v_nr_first", "v_r_first", "t_leave", "t_rebound", "t_f",
-                                        "settled_load_ratio", "settling_warning"};
+                                        "settled_load_ratio", "settling_warning", "fell_off"};
     for (size_t k = 0; k < sizeof names / sizeof names[0]; k++)
         if (strcmp(col, names[k]) == 0)
             return 1;
@@ -455,9 +455,10 @@ static int parse_row(gw_stats_table *t, char *line, const char *raw, long ln, in
             return gw_err_set(err, GW_EFORMAT, "%s:%ld: column bounced: '%s' is not 0 or 1", t->path, ln, c);
         /* a flag the sweep writes 0 or 1 (never nan): 7, 0.5 or nan counted as
          * no warning, where the row was edited to say something else */
-        if (!(v == 0 || v == 1) && strcmp(t->col_name[i], "settling_warning") == 0)
-            return gw_err_set(err, GW_EFORMAT, "%s:%ld: column settling_warning: '%s' is not 0 or 1", t->path, ln,
-                              c);
+        if (!(v == 0 || v == 1) && (strcmp(t->col_name[i], "settling_warning") == 0 ||
+                                    strcmp(t->col_name[i], "fell_off") == 0))
+            return gw_err_set(err, GW_EFORMAT, "%s:%ld: column %s: '%s' is not 0 or 1", t->path, ln,
+                              t->col_name[i], c);
         /* a sweep writes finite numbers or nan, and these columns are never
          * negative: e_n = -3 or 1e300... entered the means silently. One
          * exception: settled_load_ratio is q = W_settled / W_impact, +inf for a

@@ -573,6 +573,7 @@ int gw_stats_table_parse(const char *text, const char *name, gw_stats_table *t, 
         return gw_err_set(err, GW_ENOMEM, "%s: out of memory", name);
     int rc = GW_OK, ncells = 0, cb = -1;
     long ln = 0, cap = 0, header_line = 0;
+    int journal = 0; /* the first line is a sweep journal's: rows without a header */
     for (char *p = buf, *next; p && rc == GW_OK; p = next) {
         next = strchr(p, '\n');
         if (next)
@@ -589,9 +590,20 @@ int gw_stats_table_parse(const char *text, const char *name, gw_stats_table *t, 
                 rc = add_grid_list(t, line + 5, ln, err);
             else if (!header_line && strncmp(line, "input ", 6) == 0)
                 rc = add_input(t, line + 6, ln, err);
+            else if (ln == 1 && strncmp(line, "granwave sweep journal ", 23) == 0)
+                journal = 1;
             else if (!header_line && ln == 1 && strncmp(line, "granwave ", 9) == 0)
                 rc = sweep_line(t, line, ln, err);
             continue;
+        }
+        if (!header_line && journal) {
+            /* it was "header must start with 'case'", of a file that has no
+             * header: the sweep's record of its runs, beside its table */
+            const char *slash = strrchr(name, '/');
+            rc = gw_err_set(err, GW_EFORMAT, "%s: a sweep's journal (its first line '# granwave sweep journal ...'), "
+                            "not its table: give the table the sweep wrote beside it, %.*sresults.csv",
+                            name, slash ? (int)(slash - name + 1) : 0, name);
+            break;
         }
         if (!header_line) {
             header_line = ln;

@@ -217,7 +217,8 @@ int gw_chain_drop_setup_gaps(const gw_chain_drop_setup *s, double **gaps, gw_err
     if (n < 2 || s->block)
         return gw_err_set(err, GW_EINVAL, "gap: has no effect with %s", s->block ? "block" : "one bead");
     if (ng != 1 && ng != n - 1)
-        return gw_err_set(err, GW_EINVAL, "gap: %d values for %d pairs (give 1 or %d)", ng, n - 1, n - 1);
+        return n == 2 ? gw_err_set(err, GW_EINVAL, "gap: %d values for the 1 pair of 2 beads (give 1)", ng)
+                      : gw_err_set(err, GW_EINVAL, "gap: %d values for %d pairs (give 1 or %d)", ng, n - 1, n - 1);
     double *g = malloc((size_t)(n - 1) * sizeof *g);
     if (!g)
         return gw_err_set(err, GW_ENOMEM, "gap: out of memory");

@@ -244,7 +244,10 @@ static int resolve_model(const gw_chain_setup *s, gw_chain_resolved *r, gw_err *
     const int n = p->n;
     if (s->radii.n > 0) {
         if (s->radii.n != n)
-            return gw_err_set(err, GW_EINVAL, "radii: %d radii for %d beads", s->radii.n, n);
+            /* it was "2 radii for 1 beads": what was given, and the two ways out */
+            return gw_err_set(err, GW_EINVAL, "radii: gives %d radi%s but n is %d%s: give n = %d, or %d radi%s",
+                              s->radii.n, s->radii.n == 1 ? "us" : "i", n, n == 1 ? " (1 is the default)" : "",
+                              s->radii.n, n, n == 1 ? "us" : "i");
         r->masses = malloc((size_t)n * sizeof *r->masses);
         r->kc = malloc((size_t)n * sizeof *r->kc);
         if (!r->masses || !r->kc)

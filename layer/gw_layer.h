@@ -175,10 +175,17 @@ void gw_layer_set_event_hook(gw_layer *L, gw_layer_event_fn fn, void *ctx);
  * the same solution).
  * Must be called before gw_layer_start, after gw_layer_set_block; GW_EINVAL
  * otherwise (the layer unchanged). fn may be NULL (extremes only). */
-enum { GW_LAYER_BLOCK_VN = 0, GW_LAYER_BLOCK_TOUCH = 1 };
+/* GW_LAYER_BLOCK_GONE is no root: reported once, at the first evaluation of
+ * the event functions at which the block has left the layer for good (below
+ * the lowest point of every other body with no bottom wall, or beyond a side
+ * of them with neither that side's wall nor the bottom one; touching nothing
+ * and moving away from them at least as fast as any of their points; dir =
+ * GW_LAYER_GONE_*). Only a layer with a wall missing can see it. */
+enum { GW_LAYER_BLOCK_VN = 0, GW_LAYER_BLOCK_TOUCH = 1, GW_LAYER_BLOCK_GONE = 2 };
+enum { GW_LAYER_GONE_BELOW = 1, GW_LAYER_GONE_LEFT = 2, GW_LAYER_GONE_RIGHT = 3 };
 typedef struct gw_layer_block_event {
-    int kind;             /* GW_LAYER_BLOCK_VN or GW_LAYER_BLOCK_TOUCH */
-    int dir;              /* +1 rising, -1 falling through zero */
+    int kind;             /* GW_LAYER_BLOCK_VN, _TOUCH or _GONE */
+    int dir;              /* +1 rising, -1 falling through zero (_GONE: GW_LAYER_GONE_*) */
     double t;             /* s */
     double x, y, vx, vy;  /* block centre (m) and velocity (m/s) at t */
     int located;          /* 1: solver-located root; 0: interpolated in a verlet step */
@@ -629,12 +636,19 @@ int gw_layer_until_parse(const char *name);
 
 /* Time series recorded every dt_out (allocated by the run, freed with
  * gw_layer_impact_result_free). */
+/* "below its lowest point", "beyond its left side", "beyond its right side"
+ * for GW_LAYER_GONE_*, "no" for 0 (gw_layer_impact_result.fell_off). */
+const char *gw_layer_fell_off_name(int fell_off);
+
 typedef struct gw_layer_impact_result {
     /* Outcome, from events on the block (layer_outcome.c documents the rules). */
     int bounced;            /* 1: the block left the layer moving up; 0: its normal
                                velocity turned upward and came back to zero while it
                                still touched the layer; -1: undecided (the run ended
                                before either) */
+    int fell_off;           /* 0, or GW_LAYER_GONE_* (then bounced = 0): the block left
+                               the layer for good (gw_layer_watch_block) before a
+                               verdict, and the run ended there */
     double v_ni;            /* V_i cos alpha_i, m/s */
     double v_nr, v_r, e_n, e, alpha_r_deg; /* at T_i, the largest v_y up to T_f
                                               (physics.md 2.3, B.16-B.18); NaN unless

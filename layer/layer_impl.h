@@ -161,6 +161,7 @@ struct gw_layer {
      * probe[0] at the one before (in DEM mode: the end and the start of the
      * last step); ext the running extremes. */
     int watch;
+    int gone;          /* the block left the layer for good: GW_LAYER_BLOCK_GONE reported */
     gw_layer_block_fn watch_fn;
     void *watch_ctx;
     layer_probe probe[2];

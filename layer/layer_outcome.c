@@ -11,7 +11,14 @@
  *   - No bounce (verdict 0): v_y turned upward while the block touched the
  *     layer (VN+) and came back to zero (VN-) before the block left: its
  *     rebound ended inside the layer.
- *   - Undecided (verdict -1): the run ended before either (the block still
+ *   - Fell off the layer (verdict 0, gone = GW_LAYER_GONE_*): before either,
+ *     the block left the layer for good (GW_LAYER_BLOCK_GONE: below its lowest
+ *     point, or beyond a side, with no wall there, touching nothing and moving
+ *     away; only without walls). It never left its contacts moving up and never
+ *     will: not a bounce by the rule above, decided, but not the no-bounce
+ *     either (its rebound did not end inside the layer): reported apart
+ *     (fell_off), and the run ends there.
+ *   - Undecided (verdict -1): the run ended before any of these (the block still
  *     going down, falling, sliding, or at rest without v_y changing sign).
  *   - T_i and T_f: after the bounce, T_f is the first VN- (v_y back to zero,
  *     under gravity unless a grain pushes it); T_i the time of the largest
@@ -49,6 +56,16 @@ void layer_outcome_init(layer_outcome *o, gw_layer *L, int until, int touching)
 void layer_outcome_event(void *ctx, const gw_layer_block_event *ev)
 {
     layer_outcome *o = ctx;
+    if (ev->kind == GW_LAYER_BLOCK_GONE) {
+        if (o->verdict < 0) {
+            o->verdict = 0;
+            o->gone = ev->dir;
+            o->t_verdict = ev->t;
+            gw_layer_block_extremes_get(o->L, &o->at_end);
+            layer_watch_first_contact_freeze(o->L);
+        }
+        return;
+    }
     if (ev->kind == GW_LAYER_BLOCK_TOUCH) {
         o->contact = ev->dir > 0;
         if (ev->dir < 0 && o->verdict < 0 && ev->vy > 0) {
@@ -102,6 +119,7 @@ void layer_outcome_finish(const layer_outcome *o, double y0, double vi, double t
     gw_layer_block_extremes now;
     gw_layer_block_extremes_get(o->L, &now);
     res->bounced = o->verdict;
+    res->fell_off = o->gone;
     res->t_f = o->t_f;
     res->t_leave = o->verdict == 1 ? o->leave.t : NAN;
     res->v_nr = res->v_r = res->e_n = res->e = res->alpha_r_deg = res->t_rebound = NAN;

@@ -13,6 +13,8 @@ typedef struct layer_outcome {
     int contact;          /* the block touches a particle or a wall */
     int rose;             /* v_y turned upward while touching, not yet back to zero */
     int verdict;          /* -1 undecided, 0 no bounce, 1 bounced */
+    int gone;             /* 0, or GW_LAYER_GONE_*: the block left the layer for good
+                             before a verdict (verdict 0, the run ends there) */
     double t_verdict;     /* s */
     gw_layer_block_event leave; /* the bounce: the block leaving the layer moving up */
     gw_layer_block_extremes at_leave; /* extremes then (first free-flight maximum) */

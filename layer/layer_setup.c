@@ -118,6 +118,7 @@ void gw_layer_impact_setup_clear(gw_layer_impact_setup *s)
 
 static const gw_param outcome_fields[] = {
     RF("bounced", r.bounced, "1: vy changed sign and the block left all contacts; 0: not; -1: undecided (see undecided)"),
+    RI("fell_off", r.fell_off, "0; else bounced 0 as the block left the layer for good: 1 below it, 2 beyond its left side, 3 its right (no wall there)"),
     RD("e_n", r.e_n, "", "normal restitution V_nr/V_ni (B.16)"),
     RD("e", r.e, "", "restitution V_r/V_i (B.17)"),
     RD("alpha_r", r.alpha_r_deg, "deg", "rebound angle arccos(V_nr/V_r) (B.18)"),

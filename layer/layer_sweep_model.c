@@ -74,7 +74,7 @@ static const char *const columns[] = {
     "x_impact", "bounced", "e_n", "e", "alpha_r", "v_ni", "v_nr", "v_r", "penetration", "penetration_rm",
     "dissipated_first_contact", "block_loss_first_contact", "energy_error", "wave_speed", "t_end", "steps",
     "e_n_first", "e_first", "alpha_r_first", "v_nr_first", "v_r_first", "t_leave", "t_rebound", "t_f",
-    "settled_load_ratio", "settling_warning"};
+    "settled_load_ratio", "settling_warning", "fell_off"};
 #define NCOLUMNS ((int)(sizeof columns / sizeof columns[0]))
 
 /* The impact point among points (the sweep's own keys). */
@@ -548,7 +548,8 @@ int gw_layer_sweep_run_part(int nk, const char *const *names, const char *const 
                                     r->dissipated_first_contact, r->block_loss_first_contact, r->energy_error,
                                     r->wave_speed, r->t_end, (double)r->stats.steps, r->e_n_first, r->e_first,
                                     r->alpha_r_first_deg, r->v_nr_first, r->v_r_first, r->t_leave,
-                                    r->t_rebound, r->t_f, r->settled_load_ratio, r->settling[0] ? 1 : 0};
+                                    r->t_rebound, r->t_f, r->settled_load_ratio, r->settling[0] ? 1 : 0,
+                                    r->fell_off > 0 ? 1 : 0};
         for (int i = 0; i < NCOLUMNS; i++)
             out[i] = canon(v[i]);
         /* the content hash of the sample bytes this run read (the sweep

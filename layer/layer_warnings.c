@@ -136,6 +136,16 @@ int gw_layer_make_result_warnings(const gw_layer_make_result *r, double t_max, c
                            known ? " (" : "", lim, known ? ")" : "", sep, path, end);
 }
 
+const char *gw_layer_fell_off_name(int fell_off)
+{
+    switch (fell_off) {
+    case GW_LAYER_GONE_BELOW: return "below its lowest point";
+    case GW_LAYER_GONE_LEFT: return "beyond its left side";
+    case GW_LAYER_GONE_RIGHT: return "beyond its right side";
+    default: return fell_off ? "unknown" : "no";
+    }
+}
+
 int gw_layer_impact_result_warnings(const gw_layer_impact_result *r, char **list)
 {
     if (!r)
@@ -144,6 +154,12 @@ int gw_layer_impact_result_warnings(const gw_layer_impact_result *r, char **list
     /* each text within its field: one filled by hand without its NUL was read
      * on into the fields after it */
     int rc = r->settling[0] ? gw_warnings_add(list, "%.*s", (int)sizeof r->settling, r->settling) : GW_OK;
+    /* a block that left the layer for good (layer_outcome.c): decided, its own
+     * verdict; never "raise --t-max" (it ran to t-max before, falling on) */
+    if (rc == GW_OK && r->fell_off > 0)
+        rc = gw_warnings_add(list, "the block fell off the layer (%s, touching nothing and moving away, no wall "
+                             "there): bounced false, no rebound; the run ended at t = %.6g s",
+                             gw_layer_fell_off_name(r->fell_off), r->t_end);
     if (rc != GW_OK || !r->undecided[0]) /* decided, or stopped at the verdict on purpose */
         return rc;
     return gw_warnings_add(list, "%.*s", (int)sizeof r->undecided, r->undecided);

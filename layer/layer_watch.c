@@ -38,6 +38,7 @@ int gw_layer_watch_block(gw_layer *L, gw_layer_block_fn fn, void *ctx, gw_err *e
     if (L->solver)
         return gw_err_set(err, GW_EINVAL, "layer: the block watch must be set before gw_layer_start");
     L->watch = 1;
+    L->gone = 0;
     L->fc.target = -1;
     L->watch_fn = fn;
     L->watch_ctx = ctx;
@@ -217,6 +218,37 @@ void layer_watch_first_contact_min(const gw_layer *L, double *t, double *kb, dou
     *edb = quad_at(r, eb, u);
 }
 
+/* The block has left the layer for good (GW_LAYER_BLOCK_GONE, gw_layer.h) in
+ * state y, touching nothing: GW_LAYER_GONE_* or 0. Every other body is bounded
+ * by its disc (or clump) radius brad about its centre, and its points move at
+ * most |w| brad faster than its centre; no wall lies on the block's side; so,
+ * with the same gravity on every body, nothing can reach the block again.
+ * Only with a wall missing (never in the walled box: runs with all walls are
+ * unchanged), O(bodies) per evaluation while the block flies. */
+static int block_gone(const gw_layer *L, const double *y)
+{
+    const int w = L->p.walls, bb = L->block_body;
+    if (w & GW_LAYER_WALL_BOTTOM)
+        return 0;
+    const double *s = y + 6 * bb, rb = L->brad[bb];
+    double lo = INFINITY, vlo = INFINITY, left = INFINITY, vleft = INFINITY, right = -INFINITY, vright = -INFINITY;
+    for (int b = 0; b < L->nb; b++) {
+        if (b == bb)
+            continue;
+        const double *q = y + 6 * b, spin = fabs(q[5]) * L->brad[b];
+        lo = fmin(lo, q[1] - L->brad[b]), vlo = fmin(vlo, q[4] - spin);
+        left = fmin(left, q[0] - L->brad[b]), vleft = fmin(vleft, q[3] - spin);
+        right = fmax(right, q[0] + L->brad[b]), vright = fmax(vright, q[3] + spin);
+    }
+    if (s[1] + rb < lo && s[4] < 0 && s[4] <= vlo)
+        return GW_LAYER_GONE_BELOW;
+    if (!(w & GW_LAYER_WALL_LEFT) && s[0] + rb < left && s[3] < 0 && s[3] <= vleft)
+        return GW_LAYER_GONE_LEFT;
+    if (!(w & GW_LAYER_WALL_RIGHT) && s[0] - rb > right && s[3] > 0 && s[3] >= vright)
+        return GW_LAYER_GONE_RIGHT;
+    return 0;
+}
+
 void layer_watch_roots(gw_layer *L, double t, const double *y, double *g)
 {
     const int bb = L->block_body;
@@ -282,6 +314,16 @@ void layer_watch_roots(gw_layer *L, double t, const double *y, double *g)
     e->n++;
     if (L->fc.target >= 0)
         first_contact(L, t, y);
+    int gone;
+    if (!L->gone && gc < 0 && (L->p.walls & GW_LAYER_WALLS_ALL) != GW_LAYER_WALLS_ALL && (gone = block_gone(L, y))) {
+        /* reported once, at this evaluation (no root: nothing to locate, the
+         * state only moves further away) */
+        L->gone = 1;
+        const gw_layer_block_event ev = {.kind = GW_LAYER_BLOCK_GONE, .dir = gone, .t = t, .x = s[0], .y = s[1],
+                                         .vx = s[3], .vy = s[4], .located = 0};
+        if (L->watch_fn)
+            L->watch_fn(L->watch_ctx, &ev);
+    }
 }
 
 int layer_watch_dispatch(gw_layer *L)

@@ -208,13 +208,13 @@ EOF
 printf '[sweep]\nmodel = layer\nout = g0\n[grid]\nvi = 5, 6\n[params]\nsample = cut.txt\ngravity = 0\nother-settling = 1\nt-max = 0.01\n' >g0.ini
 timeout -s KILL 120 "$GW" sweep g0.ini --quiet >/dev/null 2>&1 </dev/null
 rc=$?
-if [ $rc -eq 0 ] && grep -q ',inf,1,[0-9a-f]*,[0-9a-f]*$' g0/results.csv; then
+if [ $rc -eq 0 ] && grep -q ',inf,1,0,[0-9a-f]*,[0-9a-f]*$' g0/results.csv; then
     timeout -s KILL 60 "$GW" layer-stats g0/results.csv --json >g0.json 2>"$tmp/stderr" </dev/null
     rc=$?
     [ $rc -eq 0 ] && grep -q "settled_load_ratio inf to inf" "$tmp/stderr" &&
         ok "layer-stats reads the sweep's table of q = inf (no gravity) and counts its rows" ||
         ko "layer-stats on the sweep's table of q = inf: exit $rc, $(head -c 300 "$tmp/stderr")"
-    sed 's/,inf,1,\([0-9a-f]*,[0-9a-f]*\)$/,-inf,1,\1/' g0/results.csv >neg.csv
+    sed 's/,inf,1,0,\([0-9a-f]*,[0-9a-f]*\)$/,-inf,1,0,\1/' g0/results.csv >neg.csv
     refused "layer-stats: a settled_load_ratio of -inf still refused" \
         "^granwave layer-stats: neg.csv:[0-9]+: column settled_load_ratio: '-inf' is not a value a sweep writes" layer-stats neg.csv --out o
 else

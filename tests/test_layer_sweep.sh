@@ -2,7 +2,7 @@
 # test_layer_sweep.sh GRANWAVE SRCDIR: `granwave sweep` with the layer model
 # (issue 5; docs/physics.md 2.3, impact-point statistics).
 #  - a 2 x 3 grid (rb-rm x point) on a 40-disc sample runs with exit 0; the
-#    table has the grid keys and the 26 columns in the documented order, then
+#    table has the grid keys and the 27 columns in the documented order, then
 #    case_config_fnv1a64 and sample_fnv1a64 (each row's case config hash, as
 #    recomputed here from the grid values and the '# param' lines, and the
 #    hash of the sample file), one row per case; x_impact = x + (point - (points - 1)/2) spacing; e = v_r/V_i,
@@ -50,7 +50,7 @@ $PY - "$tmp/ref/results.csv" "$tmp/S.txt" <<'PY' && ok "table: header, 6 rows, x
 import csv, math, sys
 cols = ("x_impact,bounced,e_n,e,alpha_r,v_ni,v_nr,v_r,penetration,penetration_rm,dissipated_first_contact,"
         "block_loss_first_contact,energy_error,wave_speed,t_end,steps,e_n_first,e_first,alpha_r_first,"
-        "v_nr_first,v_r_first,t_leave,t_rebound,t_f,settled_load_ratio,settling_warning").split(",")
+        "v_nr_first,v_r_first,t_leave,t_rebound,t_f,settled_load_ratio,settling_warning,fell_off").split(",")
 lines = [l for l in open(sys.argv[1]) if not l.startswith("#")]
 head = lines[0].strip().split(",")
 bad = []

@@ -306,6 +306,8 @@ static cJSON *impact_json(const impact_cli *c, const gw_layer_impact_result *r,
         cJSON_AddNullToObject(o, "bounced");
     else
         cJSON_AddBoolToObject(o, "bounced", r->bounced);
+    if (r->fell_off > 0) /* only then, so that every other run's JSON is unchanged */
+        cJSON_AddStringToObject(o, "fell_off", gw_layer_fell_off_name(r->fell_off));
     cJSON_AddNumberToObject(o, "e_n", r->e_n);
     cJSON_AddNumberToObject(o, "e", r->e);
     cJSON_AddNumberToObject(o, "alpha_r", r->alpha_r_deg);
@@ -790,7 +792,7 @@ int gw_cmd_layer_impact(int argc, char **argv)
             /* what the JSON gives as null (undecided, not reached) reads n/a */
             char v[6][32];
             printf("  bounced %s: e_n = %s, e = %s, alpha_r = %s deg (V_nr = %s m/s at T_i = %s ms, "
-                   "T_f = %s ms)\n", r.bounced > 0 ? "yes" : r.bounced == 0 ? "no" : "undecided",
+                   "T_f = %s ms)\n", r.bounced > 0 ? "yes" : r.fell_off > 0 ? "no (fell off the layer)" : r.bounced == 0 ? "no" : "undecided",
                    gw_cli_num(v[0], sizeof v[0], "%.4g", r.e_n), gw_cli_num(v[1], sizeof v[1], "%.4g", r.e),
                    gw_cli_num(v[2], sizeof v[2], "%.4g", r.alpha_r_deg), gw_cli_num(v[3], sizeof v[3], "%.4g", r.v_nr),
                    gw_cli_num(v[4], sizeof v[4], "%.4g", r.t_rebound * 1e3), gw_cli_num(v[5], sizeof v[5], "%.4g", r.t_f * 1e3));

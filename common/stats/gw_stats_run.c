@@ -361,6 +361,26 @@ static int settling_warning(gw_stats_analysis *A)
                            nw, t->nrows, qs);
 }
 
+/* The rows of a layer sweep whose block fell off the layer (column fell_off
+ * = 1, tables since session 42; layer_outcome.c): bounced 0, a decided verdict
+ * (the block can never come back), but not a rebound that ended inside the
+ * layer: counted apart here, as not bounced in the shares. */
+static int fell_off_warning(gw_stats_analysis *A)
+{
+    const gw_stats_table *t = &A->t;
+    const int cf = gw_stats_table_col(t, "fell_off");
+    long nf = 0;
+    for (long r = 0; cf >= 0 && r < t->nrows; r++)
+        nf += t->val[r * t->ncols + cf] == 1;
+    if (nf == 0)
+        return GW_OK;
+    return gw_warnings_add(&A->warnings,
+                           "%ld of %ld rows fell off the layer (column fell_off = 1: the block left it for good, "
+                           "with no wall there, before a verdict): bounced 0, decided, they count as not bounced in "
+                           "bounce_share and bounce_share_decided; not rebounds that ended inside the layer",
+                           nf, t->nrows);
+}
+
 /* A diagram's B.31 fit stopped by its box (at_bound): no free minimum, its
  * parameters there the box's and its errors (0 where the Jacobian is flat:
  * beta_err 0 at the edge) not a free fit's. layer-stats --delta-rm 1e6 held
@@ -445,6 +465,8 @@ static int warnings_make(gw_stats_analysis *A)
                              cut);
     if (rc == GW_OK)
         rc = settling_warning(A);
+    if (rc == GW_OK)
+        rc = fell_off_warning(A);
     for (int q = 0; rc == GW_OK && q < A->ndia; q++)
         rc = fit_edge_warning(A, q, &A->warnings);
     /* the B.31 options act on the fits alone: given (other than their

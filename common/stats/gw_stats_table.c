@@ -340,7 +340,7 @@ static int nonnegative(const char *col)
                                         "penetration_rm", "energy_error",
                                         "t_end", "steps", "e_n_first", "e_first", "alpha_r_first",
                                         "v_nr_first", "v_r_first", "t_leave", "t_rebound", "t_f",
-                                        "settled_load_ratio", "settling_warning"};
+                                        "settled_load_ratio", "settling_warning", "fell_off"};
     for (size_t k = 0; k < sizeof names / sizeof names[0]; k++)
         if (strcmp(col, names[k]) == 0)
             return 1;
@@ -455,9 +455,10 @@ static int parse_row(gw_stats_table *t, char *line, const char *raw, long ln, in
             return gw_err_set(err, GW_EFORMAT, "%s:%ld: column bounced: '%s' is not 0 or 1", t->path, ln, c);
         /* a flag the sweep writes 0 or 1 (never nan): 7, 0.5 or nan counted as
          * no warning, where the row was edited to say something else */
-        if (!(v == 0 || v == 1) && strcmp(t->col_name[i], "settling_warning") == 0)
-            return gw_err_set(err, GW_EFORMAT, "%s:%ld: column settling_warning: '%s' is not 0 or 1", t->path, ln,
-                              c);
+        if (!(v == 0 || v == 1) && (strcmp(t->col_name[i], "settling_warning") == 0 ||
+                                    strcmp(t->col_name[i], "fell_off") == 0))
+            return gw_err_set(err, GW_EFORMAT, "%s:%ld: column %s: '%s' is not 0 or 1", t->path, ln,
+                              t->col_name[i], c);
         /* a sweep writes finite numbers or nan, and these columns are never
          * negative: e_n = -3 or 1e300... entered the means silently. One
          * exception: settled_load_ratio is q = W_settled / W_impact, +inf for a
@@ -572,6 +573,7 @@ int gw_stats_table_parse(const char *text, const char *name, gw_stats_table *t, 
         return gw_err_set(err, GW_ENOMEM, "%s: out of memory", name);
     int rc = GW_OK, ncells = 0, cb = -1;
     long ln = 0, cap = 0, header_line = 0;
+    int journal = 0; /* the first line is a sweep journal's: rows without a header */
     for (char *p = buf, *next; p && rc == GW_OK; p = next) {
         next = strchr(p, '\n');
         if (next)
@@ -588,9 +590,20 @@ int gw_stats_table_parse(const char *text, const char *name, gw_stats_table *t, 
                 rc = add_grid_list(t, line + 5, ln, err);
             else if (!header_line && strncmp(line, "input ", 6) == 0)
                 rc = add_input(t, line + 6, ln, err);
+            else if (ln == 1 && strncmp(line, "granwave sweep journal ", 23) == 0)
+                journal = 1;
             else if (!header_line && ln == 1 && strncmp(line, "granwave ", 9) == 0)
                 rc = sweep_line(t, line, ln, err);
             continue;
+        }
+        if (!header_line && journal) {
+            /* it was "header must start with 'case'", of a file that has no
+             * header: the sweep's record of its runs, beside its table */
+            const char *slash = strrchr(name, '/');
+            rc = gw_err_set(err, GW_EFORMAT, "%s: a sweep's journal (its first line '# granwave sweep journal ...'), "
+                            "not its table: give the table the sweep wrote beside it, %.*sresults.csv",
+                            name, slash ? (int)(slash - name + 1) : 0, name);
+            break;
         }
         if (!header_line) {
             header_line = ln;

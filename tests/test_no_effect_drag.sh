@@ -10,6 +10,10 @@
 #    t_col/m) they are warned of, on stderr and in --json; eps_eff measured on
 #    both sides: warned, within 1e-11 of the constant 1e-30's (any dashpot or friction at all moves the integration by up to 1.1e-10); a small value
 #    not warned moves eps_eff by more than the solver's noise (5e-11).
+#  3 A chain sweep whose every case is one body (n = 1) given k ran (chain
+#    --n 1 --k 1e3 is refused): its --check and run refuse it, exit 2, one
+#    line naming the config, the key and the first case, nothing written; a
+#    grid where k acts on the cases of n 3 runs.
 # Checks that fail on the code before: see docs/tests.md.
 # shellcheck source=test_lib.sh
 . "$2/tests/test_lib.sh"
@@ -77,5 +81,24 @@ if [ "$(wc -l <g.err)" -eq 1 ] && grep -q "^granwave chain: warning: the guide's
     ok "  stderr: $(cut -c1-100 g.err)"
 else
     ko "  chain --guide-friction 1e-12 stderr: '$(head -c 300 g.err)'"
+fi
+# --- 3 a chain sweep's k on one body ---
+printf '[sweep]\nmodel = chain\nout = O\n[grid]\nk = 1e3, 2e3\n[params]\nn = 1\n' >one.ini
+printf '[sweep]\nmodel = chain\nout = P\n[grid]\nn = 1, 3\n[params]\nk = 1e9\n' >mixed.ini
+want="granwave sweep: one.ini: k: has no effect on one body (n = 1) in any case (2 of 2 cases; the first, case 0)"
+for how in --check run; do
+    [ "$how" = run ] && how=
+    timeout 120 "$GW" sweep one.ini $how --quiet >/dev/null 2>one.err; rc=$?
+    if [ $rc -eq 2 ] && [ "$(wc -l <one.err)" -eq 1 ] && grep -qF "$want" one.err && [ ! -e O ]; then
+        ok "3 sweep ${how:-run} of n = 1 given k: exit 2, $(cut -c1-110 one.err)"
+    else
+        ko "3 sweep ${how:-run} of n = 1 given k: exit $rc, O $( [ -e O ] && echo made || echo absent), '$(head -c 300 one.err)'"
+    fi
+done
+timeout 300 "$GW" sweep mixed.ini --quiet >/dev/null 2>mixed.err; rc=$?
+if [ $rc -eq 0 ] && [ "$(grep -vc '^#' P/results.csv)" -eq 3 ]; then
+    ok "  a grid over n = 1, 3 given k runs its 2 cases"
+else
+    ko "  grid over n = 1, 3 given k: exit $rc, '$(head -c 300 mixed.err)'"
 fi
 test_summary test_no_effect_drag

@@ -412,8 +412,24 @@ int gw_sweep_run_warned(const gw_sweep_config *cfg, const gw_sweep_model *m, int
     }
     /* the check pass's warnings, as the program prints them (the caller's
      * out of memory for them: none kept) */
-    if (warnings && memo && m->memo_warnings)
-        (void)m->memo_warnings(memo, warnings);
+    if (memo && m->memo_warnings) {
+        char *w = NULL, **list = warnings ? warnings : &w;
+        const size_t len = *list ? strlen(*list) : 0; /* a refusal (GW_EINVAL): the one line appended */
+        if (m->memo_warnings(memo, list) == GW_EINVAL && *list) {
+            const char *line = *list + len;
+            gw_err_set(err, GW_EINVAL, "%.*s", (int)strcspn(line, "\n"), line);
+            if (warnings && len == 0) {
+                free(*list);
+                *list = NULL;
+            } else if (warnings) {
+                (*list)[len] = '\0';
+            }
+            free(w);
+            gw_sweep_checks_end(m, memo);
+            return GW_EINVAL;
+        }
+        free(w);
+    }
     gw_sweep_checks_end(m, memo);
     int rc = gw_sweep_memory_check(cfg, m, jobs, 0, NULL, err);
     if (rc != GW_OK)

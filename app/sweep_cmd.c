@@ -803,6 +803,7 @@ static void rows_warnings(int dirfd, const gw_sweep_config *cfg, const gw_sweep_
     if (rule)
         (void)rule->warnings(acc, cfg, &w);
     free(acc);
+    gw_sweep_warnings_keys(m, w);
     gw_cli_warnings("sweep", w);
     free(w);
 }
@@ -947,6 +948,7 @@ int gw_cmd_sweep(int argc, char **argv, const gw_sweep_model *const *models, con
             free(warn);
             warn = NULL;
         }
+        gw_sweep_warnings_keys(m, warn);
         gw_cli_warnings("sweep", warn);
         free(warn);
         gw_sweep_checks_end(m, memo);

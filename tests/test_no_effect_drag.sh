@@ -14,6 +14,9 @@
 #    --n 1 --k 1e3 is refused): its --check and run refuse it, exit 2, one
 #    line naming the config, the key and the first case, nothing written; a
 #    grid where k acts on the cases of n 3 runs.
+#  4 A sweep's warnings named the single run's flags (--vimp) where its
+#    config has keys (vimp): a chain sweep's overlap warning says "a lower
+#    vimp or gravity", no "--" left of a key.
 # Checks that fail on the code before: see docs/tests.md.
 # shellcheck source=test_lib.sh
 . "$2/tests/test_lib.sh"
@@ -100,5 +103,13 @@ if [ $rc -eq 0 ] && [ "$(grep -vc '^#' P/results.csv)" -eq 3 ]; then
     ok "  a grid over n = 1, 3 given k runs its 2 cases"
 else
     ko "  grid over n = 1, 3 given k: exit $rc, '$(head -c 300 mixed.err)'"
+fi
+# --- 4 a sweep's warnings name its keys ---
+printf '[sweep]\nmodel = chain\nout = V\n[grid]\nvimp = 1e-6, 1000\n[params]\nmass = 1e3\nkwall = 1e3\n' >v.ini
+timeout 300 "$GW" sweep v.ini --quiet >/dev/null 2>v.err; rc=$?
+if [ $rc -eq 0 ] && grep -q "the largest contact overlap was .*(a lower vimp or gravity," v.err && ! grep -q -- '--' v.err; then
+    ok "4 sweep warning names keys: $(grep -o '(a lower vimp[^)]*)' v.err)"
+else
+    ko "4 sweep warning: exit $rc, '$(head -c 400 v.err)'"
 fi
 test_summary test_no_effect_drag

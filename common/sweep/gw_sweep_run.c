@@ -4,6 +4,7 @@
  * model and solver (one SUNDIALS context per solver, hence per thread).
  */
 #define _POSIX_C_SOURCE 200809L
+#include <ctype.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -329,6 +330,34 @@ static int same_key_n(const char *a, size_t n, const char *b)
     return *b == 0;
 }
 
+/* The single run's warning texts name its flags (--vimp); a sweep's config
+ * has keys (vimp): each "--NAME" whose NAME is a key of the model's options
+ * table (has_key, the one mapping) loses its dashes, in place. */
+void gw_sweep_warnings_keys(const gw_sweep_model *m, char *list)
+{
+    if (!m || !m->has_key || !list)
+        return;
+    char *out = list;
+    for (const char *p = list; *p;) {
+        if (p[0] == '-' && p[1] == '-' && (p == list || !(isalnum((unsigned char)p[-1]) || p[-1] == '-'))) {
+            size_t n = 0;
+            char name[64];
+            while (n + 1 < sizeof name && (islower((unsigned char)p[2 + n]) || isdigit((unsigned char)p[2 + n]) ||
+                                           p[2 + n] == '-'))
+                name[n] = p[2 + n], n++;
+            while (n > 0 && name[n - 1] == '-') /* "--vimp-" of a dash after the name: the name alone */
+                n--;
+            name[n] = '\0';
+            if (n > 0 && m->has_key(name)) {
+                p += 2;
+                continue;
+            }
+        }
+        *out++ = *p++;
+    }
+    *out = '\0';
+}
+
 int gw_sweep_case_refused(const gw_sweep_config *cfg, const gw_sweep_model *m, long k, int rc, gw_err *err)
 {
     if (!err)
@@ -448,5 +477,7 @@ int gw_sweep_run_warned(const gw_sweep_config *cfg, const gw_sweep_model *m, int
     if (acc)
         (void)rule->warnings(acc, cfg, warnings);
     free(acc);
+    if (warnings)
+        gw_sweep_warnings_keys(m, *warnings);
     return rc;
 }

@@ -171,8 +171,8 @@ int chain_damping_small_cases_warning(int n, int total, double hi, char **list)
  * it gives (one steel bead at 0.3 m/s, m_s 1e-2 kg: k_s 1e7, 0.19 zeta; k_s
  * 1e10, 7e-4 zeta); the guide's friction its impulse over the collision's
  * expected length t_col against the lightest bead's momentum, (F_c/v + c_g)
- * t_col / m, its work against the impact energy (measured 0.6 to 0.7 of it on
- * 1 and 5 beads). 0 when absent. */
+ * t_col / m, its work against the impact energy (measured 0.3 to 0.4 of it on
+ * one bead, cli.md's table). 0 when absent. */
 double chain_sensor_damping_effect(const gw_chain_params *p)
 {
     if (!p || !(p->sensor.mass > 0) || !(p->sensor.stiffness > 0) || !(p->sensor.damping > 0))

@@ -803,6 +803,7 @@ static void rows_warnings(int dirfd, const gw_sweep_config *cfg, const gw_sweep_
     if (rule)
         (void)rule->warnings(acc, cfg, &w);
     free(acc);
+    gw_sweep_warnings_keys(m, w);
     gw_cli_warnings("sweep", w);
     free(w);
 }
@@ -939,8 +940,15 @@ int gw_cmd_sweep(int argc, char **argv, const gw_sweep_model *const *models, con
         /* what the cases will run other than given (a chain case's dt above
          * its step): one line over the pass, how many cases it concerns */
         char *warn = NULL;
-        if (code == 0 && m->memo_warnings && memo && m->memo_warnings(memo, &warn) != GW_OK)
-            code = 1, gw_err_set(&err, GW_ENOMEM, "out of memory");
+        if (code == 0 && m->memo_warnings && memo && (rc = m->memo_warnings(memo, &warn)) != GW_OK) {
+            if (rc == GW_EINVAL && warn) /* a key of no effect on any case: warn holds the refusal */
+                code = 2, gw_err_set(&err, GW_EINVAL, "%.*s", (int)strcspn(warn, "\n"), warn);
+            else
+                code = 1, gw_err_set(&err, GW_ENOMEM, "out of memory");
+            free(warn);
+            warn = NULL;
+        }
+        gw_sweep_warnings_keys(m, warn);
         gw_cli_warnings("sweep", warn);
         free(warn);
         gw_sweep_checks_end(m, memo);

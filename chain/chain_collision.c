@@ -167,6 +167,7 @@ int chain_collision_run_progress(const gw_chain_setup *s, gw_chain_collision *ou
     }
     if (rc == GW_OK && ((rc = chain_damping_zero_warnings(p, 0, 1, &out->warnings)) != GW_OK ||
                         (rc = chain_damping_small_warning(p, res.run.sp.rtol, &out->warnings)) != GW_OK ||
+                        (rc = chain_drag_small_warnings(p, res.run.sp.rtol, &out->warnings)) != GW_OK ||
                         (rc = gw_chain_result_warnings(&out->r, &out->warnings)) != GW_OK ||
                         (rc = chain_energy_warning(out->r.energy_error, &res.run, &out->warnings)) != GW_OK))
         rc = gw_err_set(err, rc, "chain: out of memory");

@@ -419,6 +419,7 @@ int gw_chain_drop_study_run(const gw_chain_drop_setup *s, gw_progress_fn progres
     at_impact.v_imp = out->v_imp;
     if (rc == GW_OK && ((rc = chain_damping_zero_warnings(p, 0, 1, &out->warnings)) != GW_OK ||
                         (rc = chain_damping_small_warning(&at_impact, res.run.sp.rtol, &out->warnings)) != GW_OK ||
+                        (rc = chain_drag_small_warnings(&at_impact, res.run.sp.rtol, &out->warnings)) != GW_OK ||
                         (rc = chain_drop_warnings(&out->r, p, &out->warnings)) != GW_OK))
         rc = gw_err_set(err, rc, "drop: out of memory");
     /* a threshold above every peak: f_max, t_fmax, the peaks and the impacts

@@ -64,6 +64,9 @@ typedef struct sweep_memo {
     int zero, total;
     int small;      /* cases whose damping's predicted effect is below their rtol */
     double small_hi; /* the largest such effect */
+    long cases;      /* the cases checked so far (the next one's index) */
+    long k_one, k_first; /* cases of one body (n = 1) given the key k, the first of them */
+    int k_acts;      /* a case of two beads or more given k */
 } sweep_memo;
 
 /* tally (may be NULL): the case's dt given against the step it will take, and its damping */
@@ -83,6 +86,14 @@ static int check_tally(sweep_memo *tally, int nk, const char *const *names, cons
                  ? GW_OK
                  : GW_EINVAL;
         if (rc == GW_OK && tally) {
+            /* k on one body (chain --n 1 --k 1e3 is refused, chain_one_body_check): a
+               case of n = 1 keeps it, refused by memo_warnings when no case acts on it */
+            int k_given = 0;
+            for (int i = 0; i < nk && !k_given; i++)
+                k_given = strcmp(names[i], "k") == 0;
+            if (k_given && r.params.n == 1 && tally->k_one++ == 0)
+                tally->k_first = tally->cases;
+            tally->k_acts |= k_given && r.params.n > 1;
             chain_dt_tally_add(&tally->dt, r.run.sp.dt > 0 ? r.run.sp.dt : 0.0, dt, dt_max);
             tally->zero += chain_damping_zero(&r.params);
             tally->total++;
@@ -94,6 +105,8 @@ static int check_tally(sweep_memo *tally, int nk, const char *const *names, cons
         gw_chain_resolved_free(&r);
     }
     gw_chain_setup_clear(&s);
+    if (tally)
+        tally->cases++;
     return rc;
 }
 
@@ -115,6 +128,12 @@ static int check_memo(void **memo, int nk, const char *const *names, const char 
 static int memo_warnings(const void *memo, char **list)
 {
     const sweep_memo *m = memo;
+    if (m && m->k_one > 0 && !m->k_acts) /* the single run's refusal (chain_one_body_check) */
+        return gw_warnings_add(list, "k: has no effect on one body (n = 1) in any case (%ld of %ld cases; the first, "
+                               "case %ld): k is the bead-bead contact's coefficient and one body has no bead "
+                               "contact (the wall's is kwall)", m->k_one, m->cases, m->k_first) == GW_OK
+                   ? GW_EINVAL
+                   : GW_ENOMEM;
     int rc = m ? chain_dt_tally_warnings(&m->dt, "dt", "cases", list) : GW_OK;
     rc = rc == GW_OK && m ? chain_damping_zero_warnings(NULL, m->zero, m->total, list) : rc;
     return rc == GW_OK && m ? chain_damping_small_cases_warning(m->small, m->total, m->small_hi, list) : rc;

@@ -71,6 +71,13 @@ int chain_damping_small_warning(const gw_chain_params *p, double rtol, char **li
  * largest of them, its bead contacts counted. */
 int chain_damping_small_study_warning(const gw_chain_params *p, double rtol, const double *v, int nv, char **list);
 int chain_damping_small_cases_warning(int n, int total, double hi, char **list);
+/* The sensor body's dashpot (its damping ratio) and the guide's friction
+ * (its impulse over the collision against the lightest bead's momentum):
+ * their predicted relative effects (0 when absent), and the warnings of a
+ * run where one is below its rtol. GW_OK or GW_ENOMEM. */
+double chain_sensor_damping_effect(const gw_chain_params *p);
+double chain_guide_effect(const gw_chain_params *p);
+int chain_drag_small_warnings(const gw_chain_params *p, double rtol, char **list);
 /* A run's energy error above GW_CHAIN_ENERGY_WARN with energy_tol off (0):
  * a warning naming the error and the solver's rtol and atol (rk4: its step),
  * the integration too loose to trust the column's numbers. Nothing when

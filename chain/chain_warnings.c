@@ -164,6 +164,59 @@ int chain_damping_small_cases_warning(int n, int total, double hi, char **list)
                            "below the case's rtol, and their rows are those of damping none", n, total, hi);
 }
 
+/* The sensor body's dashpot and the guide's friction had no "no effect"
+ * check: chain --sensor-damping 1e-12 ran the undamped sensor and said
+ * nothing. Their scales (cli.md, "no effect"): the dashpot's damping ratio
+ * zeta = c / (2 sqrt(k_s m_s)), measured above the relative change of eps_eff
+ * it gives (one steel bead at 0.3 m/s, m_s 1e-2 kg: k_s 1e7, 0.19 zeta; k_s
+ * 1e10, 7e-4 zeta); the guide's friction its impulse over the collision's
+ * expected length t_col against the lightest bead's momentum, (F_c/v + c_g)
+ * t_col / m, its work against the impact energy (measured 0.3 to 0.4 of it on
+ * one bead, cli.md's table). 0 when absent. */
+double chain_sensor_damping_effect(const gw_chain_params *p)
+{
+    if (!p || !(p->sensor.mass > 0) || !(p->sensor.stiffness > 0) || !(p->sensor.damping > 0))
+        return 0;
+    return p->sensor.damping / (2 * sqrt(p->sensor.stiffness * p->sensor.mass));
+}
+
+double chain_guide_effect(const gw_chain_params *p)
+{
+    if (!p || !(p->guide.coulomb > 0 || p->guide.viscous > 0) || p->n < 1)
+        return 0;
+    gw_chain_params q = *p; /* the time scales at the plan's speed (chain_collide_plan.c) */
+    q.v_imp = chain_speed_scale(p);
+    if (!(q.v_imp > 0))
+        return 0;
+    double m = p->mass;
+    for (int i = 0; p->masses && i < p->n; i++)
+        m = i ? fmin(m, p->masses[i]) : p->masses[0];
+    const double t = chain_collision_length(&q, NULL);
+    if (!(m > 0) || !(t > 0))
+        return 0;
+    return (fmax(p->guide.coulomb, 0) / q.v_imp + fmax(p->guide.viscous, 0)) * t / m;
+}
+
+int chain_drag_small_warnings(const gw_chain_params *p, double rtol, char **list)
+{
+    if (!p || !(rtol > 0))
+        return GW_OK;
+    const double z = chain_sensor_damping_effect(p);
+    int rc = GW_OK;
+    if (z > 0 && z < rtol)
+        rc = gw_warnings_add(list, "the sensor body's dashpot (--sensor-damping %g N s/m) has no effect: its damping "
+                             "ratio c/(2 sqrt(k_s m_s)) = %.3g is below the solver's rtol %g, and the results are "
+                             "those of --sensor-damping 0 (give a larger --sensor-damping)", p->sensor.damping, z, rtol);
+    const double g = chain_guide_effect(p);
+    if (rc == GW_OK && g > 0 && g < rtol)
+        rc = gw_warnings_add(list, "the guide's friction (--guide-friction %g N, --guide-viscous %g N s/m) has no "
+                             "effect: its predicted relative effect on the impact, (F_c/v + c_g) t_col/m = %.3g, is "
+                             "below the solver's rtol %g, and the results are those of a column without friction "
+                             "(give a larger --guide-friction or --guide-viscous)", p->guide.coulomb, p->guide.viscous,
+                             g, rtol);
+    return rc;
+}
+
 /* A dt given above the step the run could take ran at that step: the
  * results are the step's (chain --dt 1e-3 byte for byte those of the
  * automatic dt-max 6.6e-6 s); refusing would refuse the dt that earlier

@@ -116,7 +116,10 @@ typedef struct gw_sweep_model {
      * NULL: none), called with its memo before memo_free: lines appended to
      * *list (gw_warnings_add), each saying how many of the cases checked it
      * concerns (a chain case whose dt is above the step it will take), one
-     * line for a thousand cases, not one each. GW_OK or GW_ENOMEM. */
+     * line for a thousand cases, not one each. GW_OK or GW_ENOMEM; GW_EINVAL
+     * when the pass refuses the config as a whole (a chain key of no effect on
+     * any case: k where every case is one body), its one line appended to
+     * *list being the refusal's text. */
     int (*memo_warnings)(const void *memo, char **list);
 } gw_sweep_model;
 

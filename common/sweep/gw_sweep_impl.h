@@ -20,6 +20,10 @@
 int gw_sweep_pairs_check(const char *call, int nk, const char *const *names, const char *const *values,
                          gw_err *err);
 
+/* gw_sweep_run.c: the warnings of a sweep name its config's keys: "--NAME"
+ * in list, NAME a key of m (has_key), written NAME, in place. */
+void gw_sweep_warnings_keys(const gw_sweep_model *m, char *list);
+
 /* gw_sweep_run.c: case k's check refused it (rc, err->msg naming the key
  * first, "rtol: has no effect with ..."): err becomes "case k: ...", and when
  * that key is a [params] key another case takes (the cases before k, then at

@@ -4,6 +4,7 @@
  * model and solver (one SUNDIALS context per solver, hence per thread).
  */
 #define _POSIX_C_SOURCE 200809L
+#include <ctype.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -329,6 +330,34 @@ static int same_key_n(const char *a, size_t n, const char *b)
     return *b == 0;
 }
 
+/* The single run's warning texts name its flags (--vimp); a sweep's config
+ * has keys (vimp): each "--NAME" whose NAME is a key of the model's options
+ * table (has_key, the one mapping) loses its dashes, in place. */
+void gw_sweep_warnings_keys(const gw_sweep_model *m, char *list)
+{
+    if (!m || !m->has_key || !list)
+        return;
+    char *out = list;
+    for (const char *p = list; *p;) {
+        if (p[0] == '-' && p[1] == '-' && (p == list || !(isalnum((unsigned char)p[-1]) || p[-1] == '-'))) {
+            size_t n = 0;
+            char name[64];
+            while (n + 1 < sizeof name && (islower((unsigned char)p[2 + n]) || isdigit((unsigned char)p[2 + n]) ||
+                                           p[2 + n] == '-'))
+                name[n] = p[2 + n], n++;
+            while (n > 0 && name[n - 1] == '-') /* "--vimp-" of a dash after the name: the name alone */
+                n--;
+            name[n] = '\0';
+            if (n > 0 && m->has_key(name)) {
+                p += 2;
+                continue;
+            }
+        }
+        *out++ = *p++;
+    }
+    *out = '\0';
+}
+
 int gw_sweep_case_refused(const gw_sweep_config *cfg, const gw_sweep_model *m, long k, int rc, gw_err *err)
 {
     if (!err)
@@ -412,8 +441,24 @@ int gw_sweep_run_warned(const gw_sweep_config *cfg, const gw_sweep_model *m, int
     }
     /* the check pass's warnings, as the program prints them (the caller's
      * out of memory for them: none kept) */
-    if (warnings && memo && m->memo_warnings)
-        (void)m->memo_warnings(memo, warnings);
+    if (memo && m->memo_warnings) {
+        char *w = NULL, **list = warnings ? warnings : &w;
+        const size_t len = *list ? strlen(*list) : 0; /* a refusal (GW_EINVAL): the one line appended */
+        if (m->memo_warnings(memo, list) == GW_EINVAL && *list) {
+            const char *line = *list + len;
+            gw_err_set(err, GW_EINVAL, "%.*s", (int)strcspn(line, "\n"), line);
+            if (warnings && len == 0) {
+                free(*list);
+                *list = NULL;
+            } else if (warnings) {
+                (*list)[len] = '\0';
+            }
+            free(w);
+            gw_sweep_checks_end(m, memo);
+            return GW_EINVAL;
+        }
+        free(w);
+    }
     gw_sweep_checks_end(m, memo);
     int rc = gw_sweep_memory_check(cfg, m, jobs, 0, NULL, err);
     if (rc != GW_OK)
@@ -432,5 +477,7 @@ int gw_sweep_run_warned(const gw_sweep_config *cfg, const gw_sweep_model *m, int
     if (acc)
         (void)rule->warnings(acc, cfg, warnings);
     free(acc);
+    if (warnings)
+        gw_sweep_warnings_keys(m, *warnings);
     return rc;
 }

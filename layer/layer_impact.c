@@ -643,13 +643,20 @@ static int alloc_series(gw_layer_impact_result *r, int cap, int nr)
  * energy closure): the default sampling interval (2e-5 s) or dt_out when
  * finer; a fixed step's multiple when the step divides dt_out (a check off
  * the step grid would add a shorter step and change the trajectory), dt_out
- * itself (no check between samples) when it does not. */
+ * itself (no check between samples) when it does not. For a fixed step the
+ * interval is at least as many steps as the default sampling holds at the
+ * default step (verlet 2 of 1e-5 s on the default pile, rk4 20 of 1e-6 s), so
+ * a problem scaled in time with its step and dt_out is checked at the same
+ * steps (test_layer_invariance: lengths x 4 with rk4's step x 4 and dt_out
+ * 8e-5 had been checked every 5 steps, the original never, and the exact
+ * mode's outcome moved by up to 3e-6 relative). */
 static double check_interval(double dt_out, const gw_solver_type *type, double step)
 {
-    const double base = 2e-5;
+    const int fixed = type == gw_solver_verlet || type == gw_solver_rk4;
+    const double base = fixed && step > 0 ? fmax(2e-5, step * (type == gw_solver_rk4 ? 20 : 2)) : 2e-5;
     if (!(dt_out > base))
         return dt_out;
-    if (type == gw_solver_verlet || type == gw_solver_rk4) {
+    if (fixed) {
         if (!(step > 0) || !gw_layer_impact_dt_divides(step, dt_out))
             return dt_out;
         return fmin(dt_out, step * fmax(1, floor(base / step * (1 + 1e-9))));

@@ -746,13 +746,22 @@ static int open_check_locked(const char *path, const h5_quiet *q, gw_err *err)
     return rc;
 }
 
-int layer_sample_h5_open_check(const char *path, gw_err *err)
+/* One HDF5 call on a sample under the library's lock, with HDF5's own
+ * printing off (s NULL: the open check, else the read). A call that failed
+ * because an allocation inside HDF5 did (its stack holds a resource error) is
+ * out of memory, not a bad sample: the dataset's sizes were checked against n
+ * before it was read. After some corrupt files HDF5 1.10 loses track of a
+ * block (a leak inside the library) and at exit prints "infinite loop closing
+ * library" unless automatic error printing is off: after a failed call it
+ * stays off, here and in the exiting thread (granwave reports HDF5 errors
+ * through gw_err). */
+static int h5_sample_call(const char *path, gw_layer_sample *s, gw_err *err)
 {
     gw_h5_section sec;
     h5_quiet q;
     h5_enter(&sec, &q);
-    int rc = open_check_locked(path, &q, err);
-    if (rc != GW_OK && q.nomem)
+    int rc = s ? read_h5_locked(path, s, &q, err) : open_check_locked(path, &q, err);
+    if (rc != GW_OK && rc != GW_ENOMEM && q.nomem)
         rc = gw_err_set(err, GW_ENOMEM, "sample '%s': out of memory (in HDF5: %s)", path, q.why);
     if (rc == GW_OK)
         gw_h5_leave(&sec);
@@ -761,26 +770,14 @@ int layer_sample_h5_open_check(const char *path, gw_err *err)
     return rc;
 }
 
+int layer_sample_h5_open_check(const char *path, gw_err *err)
+{
+    return h5_sample_call(path, NULL, err);
+}
+
 int layer_sample_h5_read(const char *path, gw_layer_sample *s, gw_err *err)
 {
     /* (its superblock, version 2 or 3, checked at open: layer_sample.c) */
-    gw_h5_section sec;
-    h5_quiet q;
-    h5_enter(&sec, &q);
-    int rc = read_h5_locked(path, s, &q, err);
-    /* a read that failed because an allocation inside HDF5 did (its stack
-     * holds a resource error) is out of memory, not a bad sample: the
-     * dataset's sizes were checked against n before it was read */
-    if (rc != GW_OK && rc != GW_ENOMEM && q.nomem)
-        rc = gw_err_set(err, GW_ENOMEM, "sample '%s': out of memory (in HDF5: %s)", path, q.why);
-    /* After some corrupt files HDF5 1.10 loses track of a block (a leak inside
-     * the library) and at exit prints "infinite loop closing library" unless
-     * automatic error printing is off: after a failed read it stays off, here
-     * and in the exiting thread (granwave reports HDF5 errors through gw_err). */
-    if (rc == GW_OK)
-        gw_h5_leave(&sec);
-    else
-        gw_h5_leave_failed_read(&sec);
-    return rc;
+    return h5_sample_call(path, s, err);
 }
 #endif

@@ -38,6 +38,7 @@ cJSON *chain_result_json(const chain_cli *c, const gw_chain_result *r, double wa
     cJSON_AddNumberToObject(o, "eps_eff", r->eps_eff);
     cJSON_AddNumberToObject(o, "eps_col", r->eps_col);
     cJSON_AddNumberToObject(o, "wall_contacts", r->wall_contacts);
+    cJSON_AddNumberToObject(o, "overlap_max_rel", r->overlap_max_rel);
     cJSON_AddBoolToObject(o, "converged", r->converged);
     cJSON_AddBoolToObject(o, "wall_done", r->wall_done);
     /* why the wall's side is not done (the warning line's reason), null when done */

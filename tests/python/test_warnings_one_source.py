@@ -142,6 +142,9 @@ def workdir(tmp_path_factory):
     subprocess.run([PROGRAM, "layer-make", "--n", "60", "--width-rm", "16", "--seed", "3", "--out", "s.txt"],
                    check=True, capture_output=True)
     _table(d / "t.csv")
+    # a name with a newline is refused where the run would make it (session 42);
+    # one the user made is written to, and named on one line
+    (d / "m\nx.txt").write_text("")
     yield d
     os.chdir(here)
 

@@ -43,6 +43,13 @@
 #    1.5 of the weight (the case fixed), every member disc inside the box to
 #    0.02 r; layer-impact on it runs (exit 0, no refusal, no "did not
 #    settle").
+#  7 a narrow pile rocking between its walls is not called settled at a dip
+#    of its E_k: `--width-rm 6 --n 40 --seed 4` (floor 2.25, walls -1.24 of
+#    the weight) was called settled at 4.47 s, E_k 0.88 of the threshold,
+#    below it for 10 checks (4.47 to 4.56 s) and 84 times it at 4.96 s; a
+#    pile the walls help hold must now pass the rest rules at 20 successive
+#    checks (0.2 s). Run to --t-max 4.7 s: exit 0, converged false, a warning
+#    on stderr and in the JSON's "warnings".
 # Checks that fail on the code before: see docs/tests.md.
 # shellcheck source=refusal_lib.sh
 . "$2/tests/refusal_lib.sh"
@@ -132,5 +139,17 @@ narrow_pile() {
 narrow_pile 60 2 "f < 0.5" "below 0.5: the walls hold the rest"
 # --- 6 a narrow pile pressed onto its floor by its walls settles ---
 narrow_pile 40 3 "f > 1.5" "above 1.5: the walls pull the pile down"
+# --- 7 a pile rocking between its walls is not settled at a dip of its E_k ---
+if cpu_run 200 "$GW" layer-make --clumps --width-rm 6 --n 40 --seed 4 --t-max 4.7 --json --quiet --out n40s4.txt \
+    >n40s4.json 2>n40s4.err; then
+    v=$(jq_py n40s4.json 'd["converged"] is False and len(d.get("warnings", [])) == 1')
+    if [ "$v" = True ] && [ "$(wc -l <n40s4.err)" = 1 ]; then
+        ok "--clumps --n 40 --width-rm 6 --seed 4 to t-max 4.7 s (E_k below the threshold 4.47 to 4.56 s only): unsettled, warned: $(head -c 200 n40s4.err)"
+    else
+        ko "--clumps --n 40 --width-rm 6 --seed 4 to t-max 4.7 s: converged $(jq_py n40s4.json 'd["converged"]') at t $(jq_py n40s4.json 'd["t_settle"]'), stderr: $(head -c 200 n40s4.err)"
+    fi
+else
+    ko "--clumps --n 40 --width-rm 6 --seed 4 --t-max 4.7: $(head -c 300 n40s4.err)"
+fi
 
 test_summary test_layer_make_clump_wedge

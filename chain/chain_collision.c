@@ -40,6 +40,7 @@ static const gw_param collision_fields[] = {
     RD("eps_eff", r.eps_eff, "", "momentum restitution of the column (F.7)"),
     RD("eps_col", r.eps_col, "", "energy restitution of the column (F.30)"),
     RI("wall_contacts", r.wall_contacts, "separate wall contacts (> 1: re-contact)"),
+    RD("overlap_max_rel", r.overlap_max_rel, "", "largest contact overlap over the run, in bead radii (> 1: warned)"),
     RF("converged", r.converged, "1: all contacts open and separating at t_end"),
     RF("wall_done", r.wall_done, "1: bead 1 off the wall and separating at t_end (f_max, tau_n final)"),
     {.name = "wall_pending", .type = GW_PARAM_TEXT, .offset = OFF(r.wall_pending), .unit = "",

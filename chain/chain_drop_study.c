@@ -130,6 +130,7 @@ static const gw_param drop_fields[] = {
     RD("first_eps_eff", r.first.eps_eff, "", "first collision: momentum restitution (F.7)"),
     RD("first_eps_col", r.first.eps_col, "", "first collision: energy restitution (F.30)"),
     RI("first_wall_contacts", r.first.wall_contacts, "first collision: separate wall contacts"),
+    RD("first_overlap_max_rel", r.first.overlap_max_rel, "", "first collision: largest contact overlap, in bead radii"),
     RF("first_converged", r.first.converged, "first collision: 1 = ended at the chain's end"),
     RF("first_wall_done", r.first.wall_done,
        "first collision: 1 = bead 1 off the wall and separating at its end, or off it at the cut half way through its flight"),

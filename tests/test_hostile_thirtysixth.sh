@@ -131,7 +131,7 @@ refused "layer-impact --t-max 1000.00000001: shown as given" \
     "^granwave layer-impact --t-max: 1000\.00000001 is outside \(0, 1000\]" layer-impact --sample s.txt --t-max 1000.00000001 --out o
 printf '[sweep]\nmodel = layer\nout = o\n[grid]\nalpha = 10, 90.0000000001\n[params]\nsample = s.txt\n' >a.ini
 refused "sweep --check, alpha = 90.0000000001: shown as given" \
-    "^granwave sweep: a.ini: case 1: alpha: 90\.0000000001 is outside \[0, 90\)" sweep a.ini --check
+    "^granwave sweep: a.ini:5: \[grid\] alpha: 90\.0000000001 is outside \[0, 90\)" sweep a.ini --check
 # and a value of few digits as before
 refused "drop --height 2: as before" "^granwave drop --height: 2 is outside \[1e-06, 1\]" drop --height 2 --out o
 

@@ -82,6 +82,24 @@ done
 got=$(differ d100 d0 1e-12 e_n t_f t_end energy_error penetration)
 [ "$got" = ok ] && ok "control: --dt-out 2e-3 gives the default's outcome and end" || ko "--dt-out 2e-3: $got"
 
+# Python: the same run through the library
+lib=$(dirname "$GW")/lib/libgranwave.so
+if [ -f "$lib" ] && [ -d "$SRC/python/granwave" ]; then
+    out=$(GRANWAVE_LIB=$lib PYTHONPATH=$SRC/python PYTHONDONTWRITEBYTECODE=1 cpu_run 120 $PY -c '
+import json, sys, warnings, granwave
+d0 = json.load(open("d0.json"))
+with warnings.catch_warnings(record=True) as w:
+    warnings.simplefilter("always")
+    r = granwave.layer_impact(sample=sys.argv[1], dt_out=2e-3)
+keys = ("wave_speed", "wave_speed_kinetic", "wave_speed_xcorr")
+print(all(abs(r[k] - d0[k]) <= 1e-12 * abs(d0[k]) for k in keys), sum("dt_out" in str(x.message) for x in w))
+' "$SAMPLE" 2>&1 | tr '\n' ' ')
+    [ "$out" = "True 0 " ] && ok "Python layer_impact(dt_out=2e-3): the default's three speeds, no warning" ||
+        ko "Python layer_impact(dt_out=2e-3): $out"
+else
+    echo "SKIP: Python check (no $lib)"
+fi
+
 # --- 2 cvode: e_n at --dt-out 0.2 ---
 cpu_run 120 "$GW" layer-make --n 40 --out s40 --quiet >/dev/null 2>&1 ||
     { ko "layer-make --n 40 (the pile the cvode checks impact)"; test_summary test_wave_speed_dt_out; exit; }

@@ -297,17 +297,20 @@ unsigned layer_crowns_undersampled(const gw_layer_impact_result *r, double *dt_s
 {
     *dt_s = *dc_s = NAN;
     *few = 0;
-    if (!r || r->ns < 2 || r->nrings < 2 || !r->t || !r->ring_r || !r->peak_strain_t || !r->peak_kin_t)
+    if (!r || r->nrings < 2 || !r->ring_r || !r->peak_strain_t || !r->peak_kin_t)
         return 0;
-    const double dt = r->t[1] - r->t[0], dc = r->ring_r[1] - r->ring_r[0];
-    if (!(dt > 0) || !(dc > 0))
+    /* the series the crowns were read from (layer_crowns_series): the run's
+     * checks, not the written samples, when --dt-out is coarser than them */
+    const double *g = r->peak_strain_t + 3 * (size_t)r->nrings;
+    const double dt = g[0], dc = r->ring_r[1] - r->ring_r[0], span = g[2];
+    const int nw = (int)g[1];
+    if (!(dt > 0) || !(dc > 0) || nw < 1)
         return 0;
     /* no arrival can be a sample's local maximum; put to the sampling when the
      * default interval (2e-5 s) would have given the first impact 4 samples,
      * else to the run's length (--t-max 3e-5 s) */
-    const int nw = first_impact_samples(r);
     if (nw < 4) {
-        if (!(r->t[nw - 1] - r->t[0] >= 3 * 2e-5))
+        if (!(span >= 3 * 2e-5))
             return 0;
         *few = nw;
         *dt_s = dt, *dc_s = dc;
@@ -363,5 +366,21 @@ int gw_layer_crowns(gw_layer_impact_result *r)
     resolved(r, &r->wave_speed, &r->wave_speed_err);
     resolved(r, &r->wave_speed_kin, &r->wave_speed_kin_err);
     resolved(r, &r->wave_speed_xcorr, &r->wave_speed_xcorr_err);
+    return rc;
+}
+
+int layer_crowns_series(gw_layer_impact_result *r, double *t, double *strain, double *kin, int n)
+{
+    double *const t0 = r->t, *const s0 = r->ring_strain, *const k0 = r->ring_kin;
+    const int ns0 = r->ns;
+    if (t)
+        r->t = t, r->ring_strain = strain, r->ring_kin = kin, r->ns = n;
+    const int rc = gw_layer_crowns(r);
+    double *g = r->peak_strain_t + 3 * (size_t)r->nrings;
+    const int nw = rc == GW_OK ? first_impact_samples(r) : 0;
+    g[0] = r->ns >= 2 ? r->t[1] - r->t[0] : NAN;
+    g[1] = nw;
+    g[2] = nw >= 1 ? r->t[nw - 1] - r->t[0] : 0;
+    r->t = t0, r->ring_strain = s0, r->ring_kin = k0, r->ns = ns0;
     return rc;
 }

@@ -598,6 +598,15 @@ int layer_result_shape(const gw_layer_impact_result *r, int whole, gw_err *err);
  * interval and the crown width into *dt_s, *dc_s (layer_crowns.c). */
 unsigned layer_crowns_undersampled(const gw_layer_impact_result *r, double *dt_s, double *dc_s, int *few);
 
+/* gw_layer_crowns of r over the series t[n], strain[n * nrings] and
+ * kin[n * nrings] (the run's checks: layer_impact.c) in place of r's written
+ * ones (t NULL: r's own), which r keeps. The series' interval, its samples of
+ * the first impact and their span go to peak_strain_t[3 nrings .. 3 nrings + 2]
+ * (LAYER_CROWN_GRID doubles after the peaks and ring_r, allocated by the run
+ * only), where layer_crowns_undersampled reads them. */
+#define LAYER_CROWN_GRID 3
+int layer_crowns_series(gw_layer_impact_result *r, double *t, double *strain, double *kin, int n);
+
 /* The checks a sample read from a file passes (layer_sample_check of
  * layer_sample_check.c and layer_overlaps_check): GW_EFORMAT with a message starting
  * "sample 'WHAT'" when s would be refused on reading. */

@@ -13,7 +13,11 @@
 #  2 The crowns' warning said "give a smaller --dt-out" where the run ended
 #    before the first impact was closed by T_f: --until verdict --dt-out 0.2,
 #    and --t-max 0.001 --dt-out 0.2, whose speeds are null at the default
-#    sampling too. It now names the run's end (the verdict, t-max).
+#    sampling too. It now names the run's end (the verdict, t-max). Since the
+#    crowns are read at the run's checks (test_wave_speed_dt_out), a coarse
+#    --dt-out gives the default's speeds, null here without a warning as the
+#    default; the warning is seen where the samples are the checks (rk4 at a
+#    step that does not divide --dt-out).
 #  3 A [grid] value was checked only by the check of every case ("case 1:
 #    solver: unknown value 'cvod'", no line); now as the config is read
 #    ("c.ini:5: [grid] solver: ..."), as a [params] value already was.
@@ -63,9 +67,9 @@ done
 [ -z "$bad" ] && ok "control: --dt-out 0.2 gives the default's outcome (e_n $(field d0 e_n))" ||
     ko "--dt-out 0.2 changes the outcome:$bad"
 w=$(warned d2 "dt-out:")
-[ "$(field d2 wave_speed)" = None ] && [[ $w == *"give a smaller --dt-out"* ]] &&
-    ok "control: the speeds --dt-out 0.2 cannot resolve are null, said naming --dt-out" ||
-    ko "--dt-out 0.2: wave_speed $(field d2 wave_speed), warning '$w'"
+same d2 d0 wave_speed 1e-12 && same d2 d0 wave_speed_kinetic 1e-12 && [ "$(field d0 wave_speed)" != None ] &&
+    [ -z "$w" ] && ok "--dt-out 0.2 gives the default's wave speeds, read at the run's checks, no dt-out warning" ||
+    ko "--dt-out 0.2: wave_speed $(field d2 wave_speed) (default $(field d0 wave_speed)), warning '$w'"
 
 impact v0 --until verdict && impact v2 --until verdict --dt-out 0.2 || ko "--until verdict runs (exit $?)"
 same v2 v0 t_end 1e-9 && ok "--until verdict --dt-out 0.2 stops at the verdict's check (t_end $(field v0 t_end) s)" ||
@@ -77,16 +81,22 @@ same v2 v0 e_n_first 1e-9 && ok "control: --until verdict --dt-out 0.2 gives the
 [ "$(field v0 wave_speed)" = None ] && [ "$(warned v0 '')" = "" ] &&
     ok "control: --until verdict at the default sampling: speeds null, no warning" ||
     ko "--until verdict at the default sampling: wave_speed $(field v0 wave_speed), warnings '$(warned v0 '')'"
-w=$(warned v2 "")
-[[ $w == "until: the run ended at t = 0.00156 s at the bounce verdict"*"--until verdict"* ]] &&
-    [[ $w != *"smaller --dt-out"* ]] && grep -q "^granwave layer-impact: warning: until: " v2.err &&
-    ok "--until verdict --dt-out 0.2: the null speeds put to the verdict, not to --dt-out" ||
-    ko "--until verdict --dt-out 0.2: warning '$w'"
-impact t2 --t-max 0.001 --dt-out 0.2 || ko "--t-max 0.001 --dt-out 0.2 runs (exit $?)"
-w=$(warned t2 "t-max: ")
-[[ $w == "t-max: the run ended at t = 0.001 s at t-max"*"raise --t-max" ]] && [ -z "$(warned t2 'dt-out:')" ] &&
-    ok "--t-max 0.001 --dt-out 0.2: the null speeds put to t-max" ||
-    ko "--t-max 0.001 --dt-out 0.2: warnings '$(warned t2 '')'"
+[ "$(field v2 wave_speed)" = None ] && [ "$(warned v2 '')" = "" ] &&
+    ok "--until verdict --dt-out 0.2: speeds null, no warning, as the default sampling" ||
+    ko "--until verdict --dt-out 0.2: wave_speed $(field v2 wave_speed), warnings '$(warned v2 '')'"
+# the samples are the checks: rk4 at a step (3e-6 s) that does not divide 0.2 s
+rk=(--solver rk4 --dt 3e-6)
+impact v3 "${rk[@]}" --until verdict --dt-out 0.2 || ko "${rk[*]} --until verdict --dt-out 0.2 runs (exit $?)"
+w=$(warned v3 "")
+[[ $w == "until: the run ended at t = "*" at the bounce verdict"*"--until verdict"* ]] &&
+    [[ $w != *"smaller --dt-out"* ]] && grep -q "^granwave layer-impact: warning: until: " v3.err &&
+    ok "${rk[*]} --until verdict --dt-out 0.2: the null speeds put to the verdict, not to --dt-out" ||
+    ko "${rk[*]} --until verdict --dt-out 0.2: warning '$w'"
+impact t3 "${rk[@]}" --t-max 0.001 --dt-out 0.2 || ko "${rk[*]} --t-max 0.001 --dt-out 0.2 runs (exit $?)"
+w=$(warned t3 "t-max: ")
+[[ $w == "t-max: the run ended at t = 0.001 s at t-max"*"raise --t-max" ]] && [ -z "$(warned t3 'dt-out:')" ] &&
+    ok "${rk[*]} --t-max 0.001 --dt-out 0.2: the null speeds put to t-max" ||
+    ko "${rk[*]} --t-max 0.001 --dt-out 0.2: warnings '$(warned t3 '')'"
 
 # chain: its outcome from events (a control: it was already)
 cpu_run 60 "$GW" chain --n 10 --quiet --json >c0.json 2>/dev/null &&

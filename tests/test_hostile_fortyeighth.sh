@@ -13,6 +13,11 @@
 #    by the program, a sweep's case and Python) now names dt-out and each
 #    speed the sampling nulled; the speeds themselves are unchanged (the
 #    strain speed at 1e-3 s is still given, within 2 % of the default's).
+#    Since the crowns are read at the run's checks (every 2e-5 s whatever
+#    dt-out, test_wave_speed_dt_out), 1e-3, 5e-3 and 1000 s give the
+#    default's speeds without a warning; the warning is seen where the
+#    samples are the checks: rk4 at a step (3e-6 s) that does not divide
+#    --dt-out, the same nulls at 1e-3 and 5e-3 s, 3 samples at 0.2 s.
 #    Controls: the default and 1e-4 s warn of nothing; runs cut by --t-max
 #    (5e-5, 3e-5 s: 3 samples at the default interval) and a stiff impact (--shear-modulus 4e12, strain speed null
 #    from its scatter at the default sampling) are not put to dt-out.
@@ -73,27 +78,38 @@ read -r s4 k4 x4 n4 w4 <<<"$(speeds d4)"
     ok "control: --dt-out 1e-4 resolves the speeds ($s4, $k4 m/s), no warning" ||
     ko "control: --dt-out 1e-4: exit $rc, speeds $s4 $k4, dt-out warning [$n4]"
 
-impact d3 --dt-out 1e-3
+# a coarse --dt-out: the default's speeds (read at the run's checks), no warning
+for d in 1e-3 5e-3 1000; do
+    impact dc --dt-out $d
+    read -r sc kc xc nc wc <<<"$(speeds dc)"
+    [ $rc -eq 0 ] && [ "$sc $kc $xc" = "$s0 $k0 $x0" ] && [ "$nc" = - ] && ! grep -q "dt-out" dc.err &&
+        ok "--dt-out $d: the default's speeds ($sc, $kc m/s), no dt-out warning" ||
+        ko "--dt-out $d: exit $rc, speeds $sc $kc $xc (default $s0 $k0 $x0), dt-out warning [$nc], stderr: $(head -c 300 dc.err)"
+done
+
+# the samples are the checks: rk4 at a step that does not divide --dt-out
+rk=(--solver rk4 --dt 3e-6)
+impact d3 "${rk[@]}" --dt-out 1e-3
 read -r s3 k3 x3 n3 w3 <<<"$(speeds d3)"
 close=$(awk -v a="$s3" -v b="$s0" 'BEGIN { print (a != "null" && b != "null" && (a - b) / b < 0.02 && (b - a) / b < 0.02) }')
 [ $rc -eq 0 ] && [ "$k3" = null ] && [ "$close" = 1 ] && [ "$n3" = wave_speed_kinetic ] &&
     grep -q "warning: dt-out: .*wave_speed_kinetic is null.*--dt-out" d3.err &&
-    ok "--dt-out 1e-3: wave_speed_kinetic null, warned naming it and --dt-out; wave_speed $s3 kept (default $s0)" ||
-    ko "--dt-out 1e-3: exit $rc, speeds $s3 $k3 (default $s0), dt-out warning [$n3], stderr: $(head -c 300 d3.err)"
+    ok "${rk[*]} --dt-out 1e-3: wave_speed_kinetic null, warned naming it and --dt-out; wave_speed $s3 kept (default $s0)" ||
+    ko "${rk[*]} --dt-out 1e-3: exit $rc, speeds $s3 $k3 (default $s0), dt-out warning [$n3], stderr: $(head -c 300 d3.err)"
 
-impact d5 --dt-out 5e-3
+impact d5 "${rk[@]}" --dt-out 5e-3
 read -r s5 k5 x5 n5 w5 <<<"$(speeds d5)"
 [ $rc -eq 0 ] && [ "$s5" = null ] && [ "$k5" = null ] && [ "$n5" = wave_speed,wave_speed_kinetic ] &&
     grep -q "warning: dt-out: samples 0.005 s apart .*--dt-out" d5.err &&
-    ok "--dt-out 5e-3: wave_speed and wave_speed_kinetic null, warned in --json and on stderr" ||
-    ko "--dt-out 5e-3: exit $rc, speeds $s5 $k5, dt-out warning [$n5], stderr: $(head -c 300 d5.err)"
+    ok "${rk[*]} --dt-out 5e-3: wave_speed and wave_speed_kinetic null, warned in --json and on stderr" ||
+    ko "${rk[*]} --dt-out 5e-3: exit $rc, speeds $s5 $k5, dt-out warning [$n5], stderr: $(head -c 300 d5.err)"
 
-impact dk --dt-out 1000
+impact dk "${rk[@]}" --dt-out 0.2
 read -r sk kk xk nk wk <<<"$(speeds dk)"
 [ $rc -eq 0 ] && [ "$sk $kk $xk" = "null null null" ] && [ "$nk" = wave_speed,wave_speed_kinetic,wave_speed_xcorr ] &&
-    grep -q "warning: dt-out: the first impact holds 2 samples" dk.err &&
-    ok "--dt-out 1000 (beyond the run): every speed null, warned (2 samples)" ||
-    ko "--dt-out 1000: exit $rc, speeds $sk $kk $xk, dt-out warning [$nk], stderr: $(head -c 300 dk.err)"
+    grep -q "warning: dt-out: the first impact holds 3 samples" dk.err &&
+    ok "${rk[*]} --dt-out 0.2 (3 samples of the first impact): every speed null, warned" ||
+    ko "${rk[*]} --dt-out 0.2: exit $rc, speeds $sk $kk $xk, dt-out warning [$nk], stderr: $(head -c 300 dk.err)"
 
 impact dt --t-max 5e-5
 read -r st kt xt nt wt <<<"$(speeds dt)"
@@ -159,7 +175,7 @@ if [ -f "$lib" ] && [ -d "$SRC/python/granwave" ]; then
 import warnings, granwave
 with warnings.catch_warnings(record=True) as w:
     warnings.simplefilter("always")
-    r = granwave.layer_impact(sample="s40", dt_out=5e-3)
+    r = granwave.layer_impact(sample="s40", solver="rk4", dt=3e-6, dt_out=5e-3)
 m = [str(x.message) for x in w if "dt_out" in str(x.message) and "wave_speed_kinetic" in str(x.message)]
 print(len(m), r["wave_speed"] is None or r["wave_speed"] != r["wave_speed"])
 with warnings.catch_warnings(record=True) as w:
@@ -167,8 +183,8 @@ with warnings.catch_warnings(record=True) as w:
     granwave.falcon(n=(1, 3), vimp=[0.3], heights=[], mass=1000, radius=1e-5)
 print(sum("overlap" in str(x.message) and "collisions beyond one radius" in str(x.message) for x in w))
 ' 2>&1 | tr '\n' ' ')
-    [ "${out#1 True }" != "$out" ] && ok "Python layer_impact(dt_out=5e-3): one warning naming dt_out and the speeds" ||
-        ko "Python layer_impact(dt_out=5e-3): $out"
+    [ "${out#1 True }" != "$out" ] && ok "Python layer_impact(solver=rk4, dt=3e-6, dt_out=5e-3): one warning naming dt_out and the speeds" ||
+        ko "Python layer_impact(solver=rk4, dt=3e-6, dt_out=5e-3): $out"
     [ "${out#* * }" = "1 " ] && ok "Python falcon(mass=1000, radius=1e-5): the overlap warned with its count" ||
         ko "Python falcon(mass=1000, radius=1e-5): $out"
 else

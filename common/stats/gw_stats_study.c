@@ -129,6 +129,7 @@ void gw_stats_group_row(const gw_stats_group *g, double row[GW_STATS_GROUP_NCOLS
                                    &g->dissipated, &g->rebound_energy, &g->e_n_first, &g->alpha_r_first};
     for (int k = 0; k < 9; k++)
         row[i++] = m4[k]->n;
+    row[i++] = g->n_fell_off; /* after the counts (session 43) */
 }
 
 static double *table(int rows, int cols)

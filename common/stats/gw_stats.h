@@ -434,7 +434,7 @@ int gw_stats_out_check(const char *dir, const char *what, gw_err *err);
     "alpha_r_first_std,n_e_first,bounce_share_decided,bounce_share_high,verdict_certain,n_e_n,"        \
     "n_alpha_r,n_penetration,n_penetration_rm,n_block_loss_first_contact,n_dissipated_first_contact,"  \
     "n_rebound_energy,n_e_n_first,n_alpha_r_first,n_fell_off"
-#define GW_STATS_GROUP_NCOLS 46
+#define GW_STATS_GROUP_NCOLS 46 /* (the study's field "groups" states it as text: gw_stats_study.c) */
 /* One group's row of that table. */
 void gw_stats_group_row(const gw_stats_group *g, double row[GW_STATS_GROUP_NCOLS]);
 

@@ -556,6 +556,9 @@ int gw_layer_make(const gw_layer_params *lp, const gw_layer_make_params *mp,
  * gw_common.h): one that did not settle (converged 0: t_max, s, the run's,
  * below t_judge, or at t_max E_k still above the threshold, the floor carrying
  * less than 0.5 or more than 1.5 of the pile's weight, or both, each said;
+ * a wall_load other than 0 is named with the floor's and their sum, which
+ * the bounds then apply to, and a pile within them by the walls' share with
+ * E_k below the threshold is told it still rocks (20 successive checks);
  * a ke_limit of 0 is taken as unknown: E_k (above 0) named above the
  * threshold unless the floor's load is above 1.5; out, may be NULL,
  * the file the sample was written to, named in the text), and a height_rm

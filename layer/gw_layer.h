@@ -177,10 +177,11 @@ void gw_layer_set_event_hook(gw_layer *L, gw_layer_event_fn fn, void *ctx);
  * otherwise (the layer unchanged). fn may be NULL (extremes only). */
 /* GW_LAYER_BLOCK_GONE is no root: reported once, at the first evaluation of
  * the event functions at which the block has left the layer for good (below
- * the lowest point of every other body with no bottom wall, or beyond a side
- * of them with neither that side's wall nor the bottom one; touching nothing
- * and moving away from them at least as fast as any of their points; dir =
- * GW_LAYER_GONE_*). Only a layer with a wall missing can see it. */
+ * the lowest point of every other body with no bottom wall, touching nothing;
+ * or beyond a side of them without that side's wall, touching nothing but the
+ * bottom wall, on it or in the air; moving away from them at least as fast as
+ * any of their points; dir = GW_LAYER_GONE_*). Only a layer with a wall
+ * missing can see it. */
 enum { GW_LAYER_BLOCK_VN = 0, GW_LAYER_BLOCK_TOUCH = 1, GW_LAYER_BLOCK_GONE = 2 };
 enum { GW_LAYER_GONE_BELOW = 1, GW_LAYER_GONE_LEFT = 2, GW_LAYER_GONE_RIGHT = 3 };
 typedef struct gw_layer_block_event {
@@ -513,7 +514,9 @@ typedef struct gw_layer_make_result {
     double max_overlap;   /* largest u_n / R_p at the end */
     int converged;        /* the kinetic energy, with the fall of the grains in flight (touching
                              nothing: m g times their straight drop), went below the threshold
-                             (ke_limit), the floor carrying 0.5 to 1.5 times the pile's weight */
+                             (ke_limit), the floor carrying 0.5 to 1.5 times the pile's weight
+                             (or the floor and the side walls together, at 20 successive
+                             checks 0.01 s apart: wall_load) */
     double wall_ms;
     long steps, rebuilds;
     int n_removed;        /* particles (clumps: grains) above height_rm R_m taken away */
@@ -527,6 +530,10 @@ typedef struct gw_layer_make_result {
     double fall_energy;   /* J: what the grains in flight at the end (touching nothing) land with */
     double ke_limit;      /* J: the threshold ke_threshold M g R_m the verdict held E_k + fall_energy
                              below (M: the sample's mass, after a trim) */
+    double wall_load;     /* the side walls' friction (upward; negative: pulling down) over the pile's
+                             weight at the end, from the springs the sample keeps against them: a pile
+                             rests when floor_load or floor_load + wall_load lies in [0.5, 1.5] (the
+                             rule gw_layer_impact_rest_check applies) */
 } gw_layer_make_result;
 
 /* Pluviate a sample (lp: material, friction; width and mass law are taken from
@@ -549,6 +556,9 @@ int gw_layer_make(const gw_layer_params *lp, const gw_layer_make_params *mp,
  * gw_common.h): one that did not settle (converged 0: t_max, s, the run's,
  * below t_judge, or at t_max E_k still above the threshold, the floor carrying
  * less than 0.5 or more than 1.5 of the pile's weight, or both, each said;
+ * a wall_load other than 0 is named with the floor's and their sum, which
+ * the bounds then apply to, and a pile within them by the walls' share with
+ * E_k below the threshold is told it still rocks (20 successive checks);
  * a ke_limit of 0 is taken as unknown: E_k (above 0) named above the
  * threshold unless the floor's load is above 1.5; out, may be NULL,
  * the file the sample was written to, named in the text), and a height_rm

@@ -431,6 +431,13 @@ void layer_floor_load(const gw_layer_params *lp, int n, const double *y, const d
     }
 }
 
+int layer_load_rests(double f, double walls, double w)
+{
+    const double s = f + walls;
+    return (f >= LAYER_FLOOR_LOAD_MIN * w && f <= LAYER_FLOOR_LOAD_MAX * w) ||
+           (s >= LAYER_FLOOR_LOAD_MIN * w && s <= LAYER_FLOOR_LOAD_MAX * w);
+}
+
 int gw_layer_impact_rest_check(const gw_layer_sample *smp, const gw_layer_params *lp, const char *name,
                                gw_err *err)
 {
@@ -482,8 +489,8 @@ int layer_rest_check(const gw_layer_sample *smp, const gw_layer_params *lp, int 
      * into the impact: the two together are held to within the bound of
      * its weight (with both side walls in the impact, which hold it). */
     const int sides = (lp->walls & GW_LAYER_WALL_LEFT) && (lp->walls & GW_LAYER_WALL_RIGHT);
-    if (f > LAYER_FLOOR_LOAD_MAX * w && w > 0 && sides && smp->springs &&
-        fabs(f + layer_sample_wall_hold(smp, lp, lp->friction_deg) - w) <= (LAYER_FLOOR_LOAD_MAX - 1) * w)
+    const double hold = sides && smp->springs ? layer_sample_wall_hold(smp, lp, lp->friction_deg) : 0;
+    if (f > LAYER_FLOOR_LOAD_MAX * w && w > 0 && layer_load_rests(f, hold, w))
         return GW_OK;
     const double allowed = q > 1 ? LAYER_FLOOR_LOAD_MAX * q : LAYER_FLOOR_LOAD_MAX; /* NaN: 1.5 */
     /* (no gravity in the impact: q infinite, nothing to weigh the load
@@ -514,13 +521,20 @@ int layer_rest_check(const gw_layer_sample *smp, const gw_layer_params *lp, int 
                           "gravity is %g: the pile was settled under gravity and its strain energy would be "
                           "released into the impact (give the gravity it was made with%s)", nm, f, lp->gravity,
                           todo);
-    return gw_err_set(err, GW_EINVAL, "sample%s: at t = 0 its floor carries %.3g times the weight of the pile with "
-                      "shear-modulus %g Pa, poisson %g, density %g kg/m^3, gravity %g m/s^2 and mass-law %s (a "
-                      "settled pile: at most 1): it was settled with another material or gravity, or did not "
-                      "settle (its header records layer-make's settings and 'converged'), and its excess strain "
-                      "energy would go into the impact; give those values%s", nm, f / w, lp->shear_modulus,
-                      lp->poisson, lp->density, lp->gravity, lp->mass_law == GW_LAYER_MASS_SPHERE ? "sphere" : "disc",
-                      todo);
+    /* the side walls' share named with the floor's when they hold any (the
+     * rule: layer_load_rests) */
+    char sides_txt[96] = "", rest[40] = " (a settled pile: at most 1)";
+    if (hold != 0) {
+        gw_snprintf(sides_txt, sizeof sides_txt, " and its side walls %.3g (together %.3g; at rest: %g to %g),",
+                    hold / w, (f + hold) / w, LAYER_FLOOR_LOAD_MIN, LAYER_FLOOR_LOAD_MAX);
+        rest[0] = '\0';
+    }
+    return gw_err_set(err, GW_EINVAL, "sample%s: at t = 0 its floor carries %.3g times the weight of the pile%s "
+                      "with shear-modulus %g Pa, poisson %g, density %g kg/m^3, gravity %g m/s^2 and mass-law %s%s: "
+                      "it was settled with another material or gravity, or did not settle (its header records "
+                      "layer-make's settings and 'converged'), and its excess strain energy would go into the "
+                      "impact; give those values%s", nm, f / w, sides_txt, lp->shear_modulus, lp->poisson,
+                      lp->density, lp->gravity, lp->mass_law == GW_LAYER_MASS_SPHERE ? "sphere" : "disc", rest, todo);
 }
 
 double gw_layer_impact_dem_dt(const gw_layer_sample *s, const gw_layer_params *lp,

@@ -372,6 +372,44 @@ enum { LAYER_DEM_W = 8 };
  * the air above (0 to 0.47) do not. An impact on a pile whose settled line
  * says converged 1 and whose floor carries less warns (layer_settled.c). */
 #define LAYER_FLOOR_LOAD_MIN 0.5
+/* layer-make's settling (layer_make.c) looks at the pile every
+ * LAYER_SETTLE_CHUNK s (a check). A pile the side walls help hold
+ * (layer_load_rests by the walls' share, held_by_walls) must pass the rest
+ * rules at LAYER_WALL_CALM_CHECKS successive checks to be called settled: one
+ * instant is not a pile at rest. `--clumps --width-rm 6 --n 40 --seed 4` was
+ * called settled at 4.47 s at a dip of its E_k to 0.88 of the threshold, its
+ * floor carrying 2.25 of the weight and the walls -1.24; run on, the pile
+ * rocks between its walls, E_k below the threshold for 5 to 10 checks at a
+ * time (4.47 to 4.56 s, 5.15 to 5.21, 5.52 to 5.56, 5.76 to 5.80, 5.93 to
+ * 5.97) and 5 to 84 times it in between. A pile its floor alone carries is
+ * judged at one check, as before (the default pile's sample unchanged; at 2
+ * checks for every pile the default pile settled one check later, 4.18 s for
+ * 4.17, a sample of its own).
+ * The span, 20 checks (0.2 s), is fixed, not the pile's own period: measured
+ * (session 43) on the wall-held piles `--clumps --width-rm W --n N --seed S`
+ * (W N S = 6 40 3, 6 40 4, 6 40 5, 6 60 1, 6 60 2, 8 80 1; t-max 6 s), it
+ * is 4.5 to 9 of the pile's elastic periods on its floor contacts,
+ * T = 2 pi sqrt(M / sum 1.5 K_n sqrt(u)): 0.033, 0.023, 0.023, 0.044, 0.042
+ * and 0.042 s (the walls' contacts only stiffen it), and twice the longest
+ * calm spell of a pile that went on rocking: seed 4's E_k passed the rules
+ * for 10, 7, 5, 5 and 5 checks between 4.47 and 6 s (below the threshold
+ * again every 0.16 s at the median, its log E_k correlated again at 1.1 s),
+ * 8 80 1's for 1, 1, 1 and 3 before it settled at 3.65 s, 6 60 1's for 2;
+ * every pile that settled passed its 20 checks in its first or second spell
+ * after 2.5 s (6 40 3 at 2.66 s, 6 40 5 at 3.10, 6 60 1 at 3.75, 6 60 2 at
+ * 2.78). A span of a few elastic periods (0.07 to 0.13 s at 3) would take
+ * seed 4's spell of 10 checks (0.1 s) for rest. */
+#define LAYER_SETTLE_CHUNK 0.01
+#define LAYER_WALL_CALM_CHECKS 20
+/* Whether a pile whose floor carries f and whose side walls carry walls
+ * (upward; negative: pulling it down; 0 without side walls or springs) of a
+ * weight w (any one unit) rests on its supports: the floor alone, or the floor
+ * and the side walls together, carry between LAYER_FLOOR_LOAD_MIN and
+ * LAYER_FLOOR_LOAD_MAX times w. The one rule layer-make settles by
+ * (held_by_walls, layer_make.c), its did-not-settle warning states
+ * (gw_layer_make_result_warnings, from floor_load and wall_load) and
+ * layer-impact's rest check refuses by (layer_rest_check). NaN: 0. */
+int layer_load_rests(double f, double walls, double w);
 
 /* The floor's Hertz forces (N, *f) and the weight (N, *w) of n discs under
  * lp's material and gravity, with centre heights y and radii r, the i-th of

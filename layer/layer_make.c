@@ -380,20 +380,10 @@ static void take_positions(const gw_layer *L, int n, gw_layer_body *b)
 
 /* Settle bodies b (positions updated, velocities zeroed) with the given G.
  * Returns the simulated time in *t and the final kinetic energy in *ke. */
-#define SETTLE_CHUNK 0.01 /* s: the energy is looked at every chunk */
+#define SETTLE_CHUNK LAYER_SETTLE_CHUNK /* s: the energy is looked at every chunk */
 #define SETTLE_CHUNKS_MIN 10 /* chunks before the pile may be called settled */
-/* Successive checks (chunk ends) at which a pile the side walls help hold
- * (held_by_walls) must pass the rest rules to be called settled: one instant
- * is not a pile at rest. `--clumps --width-rm 6 --n 40 --seed 4` was called
- * settled at 4.47 s at a dip of its E_k to 0.88 of the threshold, its floor
- * carrying 2.25 of the weight and the walls -1.24; run on, the pile rocks
- * between its walls, E_k below the threshold for 5 to 10 checks at a time
- * (4.47 to 4.56 s, 5.15 to 5.21, 5.52 to 5.56, 5.76 to 5.80, 5.93 to 5.97)
- * and 5 to 84 times it in between. A pile its floor alone carries is judged
- * at one check, as before (the default pile's sample unchanged; at 2 checks
- * for every pile the default pile settled one check later, 4.18 s for 4.17,
- * a sample of its own). */
-#define SETTLE_WALL_CALM_CHECKS 20
+/* (successive checks for a pile the side walls help hold: LAYER_WALL_CALM_CHECKS, layer_impl.h) */
+#define SETTLE_WALL_CALM_CHECKS LAYER_WALL_CALM_CHECKS
 
 /* When settle() may first call the pile settled: SETTLE_CHUNKS_MIN chunks, and
  * the lowest body's free fall t_land = sqrt(2 gap / g) to the floor. */
@@ -451,8 +441,7 @@ static int keep_springs(const gw_layer *L, double width, int n, const gw_layer_b
  * 6 s): at rest, refused for the floor's load alone. */
 static int held_by_walls(const gw_layer *L, double f, double w)
 {
-    const double s = f + layer_side_walls_fy(L, L->y);
-    return s >= LAYER_FLOOR_LOAD_MIN * w && !(s > LAYER_FLOOR_LOAD_MAX * w);
+    return layer_load_rests(f, layer_side_walls_fy(L, L->y), w);
 }
 
 static int settle(const gw_layer_params *lp, const gw_layer_make_params *m, double t0, double t_max, int n,
@@ -671,6 +660,9 @@ static void finish(const gw_layer_params *lp, const gw_layer_make_params *m, con
     double f, w;
     layer_floor_load(lp, n, &b[0].y, &b[0].r, sizeof *b, &f, &w);
     res->floor_load = f / w;
+    /* the side walls' share as layer-impact's rest check finds it: from the
+     * springs the sample keeps against them (layer_sample_wall_hold) */
+    res->wall_load = out->springs ? layer_sample_wall_hold(out, lp, lp->friction_deg) / w : 0;
     res->fall_energy = airborne(lp, b, n, INFINITY);
     res->n_discs = n;
     res->wall_ms = gw_clock_ms() - t0;

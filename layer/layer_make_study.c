@@ -78,6 +78,8 @@ static const gw_param make_fields[] = {
     RF("converged", r.converged, "1: the kinetic energy, with the fall of the grains in flight, went below the "
        "threshold (ke_limit), the floor carrying 0.5 to 1.5 times the weight"),
     RD("floor_load", r.floor_load, "", "the floor's Hertz forces over the pile's weight at the end (at rest: about 1)"),
+    RD("wall_load", r.wall_load, "", "the side walls' friction over the pile's weight at the end (upward; negative: "
+       "pulling it down); the pile rests when floor_load or floor_load + wall_load lies in [0.5, 1.5]"),
     RD("fall_energy", r.fall_energy, "J", "what the grains in flight at the end (touching nothing) land with"),
     RD("ke_limit", r.ke_limit, "J", "the settling threshold ke-threshold M g R_m (M: the sample's mass)"),
     RD("t_judge", r.t_judge, "s", "the settling is judged from this time on (a t-max below it cannot converge)"),

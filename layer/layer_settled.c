@@ -242,7 +242,8 @@ static void floor_unsettled(const gw_layer_sample *smp, const gw_layer_params *l
     char ls[40];
     /* (a floor carrying less, the side walls' friction holding the rest: a pile
      * at rest in a narrow box, as layer-make calls it settled: layer_sample_wall_hold) */
-    if (w > 0 && f < LAYER_FLOOR_LOAD_MIN * w && f + layer_sample_wall_hold(smp, &sp, smp->settled.friction_deg) < LAYER_FLOOR_LOAD_MIN * w)
+    if (w > 0 && f < LAYER_FLOOR_LOAD_MIN * w &&
+        !layer_load_rests(f, layer_sample_wall_hold(smp, &sp, smp->settled.friction_deg), w))
         gw_snprintf(buf, n, "the sample did not settle: its floor carries %.3g of the pile's weight under the "
                     "material it settled with (at rest: about 1; below %s the pile was in the air or bouncing when "
                     "written, though its settled line says converged 1, as a layer-make before session 38 wrote "

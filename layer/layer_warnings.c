@@ -58,6 +58,10 @@ int gw_layer_make_result_check(const gw_layer_make_result *r, double t_max, gw_e
     if (isnan(r->fall_energy))
         return gw_err_set(err, GW_EINVAL, "gw_layer_make_result: fall_energy = nan J is not a number (-1: the "
                           "grains in flight not counted)");
+    /* the side walls' share, either sign, counted with the floor's */
+    if (!isfinite(r->wall_load))
+        return gw_err_set(err, GW_EINVAL, "gw_layer_make_result: wall_load = %s is not a finite number (the side "
+                          "walls' share of the weight, either sign; 0 without)", gw_num_text(vs, sizeof vs, r->wall_load));
     /* the run's t_max, never NaN: it printed "t-max = nan s" */
     if (!(t_max > 0 && t_max < INFINITY))
         return gw_err_set(err, GW_EINVAL, "gw_layer_make_result: t_max = %s s is outside (0, inf) (the run's, "
@@ -97,11 +101,22 @@ int gw_layer_make_result_warnings(const gw_layer_make_result *r, double t_max, c
      * count, or filled by hand) says so: it was told "E_k = 0 J still above
      * --ke-threshold (1 J)". */
     const double ld = r->floor_load, fall = r->fall_energy > 0 ? r->fall_energy : 0;
-    const int low = ld < LAYER_FLOOR_LOAD_MIN, high = ld > LAYER_FLOOR_LOAD_MAX;
+    /* the side walls' share counts with the floor's (layer_load_rests, the
+     * rule layer-make settles by and layer-impact's rest check applies): a
+     * pile its walls help hold was told "its floor carries 2.25 times the
+     * pile's weight (... layer-impact refuses above 1.5)", the walls pulling
+     * down 1.24 of it and layer-impact taking the sample (`layer-make --clumps
+     * --width-rm 6 --n 40 --seed 4 --t-max 4.7`) */
+    const double wl = r->wall_load, both = ld + wl;
+    const int walls = wl != 0, rests = layer_load_rests(ld, wl, 1);
+    const int low = !rests && (walls ? both : ld) < LAYER_FLOOR_LOAD_MIN;
+    const int high = !rests && (walls ? both : ld) > LAYER_FLOOR_LOAD_MAX;
+    /* resting by the walls' share alone: the floor's own load out of the bounds */
+    const int by_walls = rests && !layer_load_rests(ld, 0, 1);
     const int known = r->ke_limit > 0;
     /* (unknown: no E_k of 0 is above a threshold, which is positive) */
     const int above = known ? !(r->ke_final + fall < r->ke_limit) : !high && r->ke_final + fall > 0;
-    char ek[200] = "", on_floor[240] = "", lim[48] = "";
+    char ek[200] = "", on_floor[400] = "", lim[48] = "";
     if (known)
         gw_snprintf(lim, sizeof lim, "%.4g J", r->ke_limit);
     if (above && r->fall_energy > 0)
@@ -109,7 +124,16 @@ int gw_layer_make_result_warnings(const gw_layer_make_result *r, double t_max, c
                     "--ke-threshold at t-max = %g s", r->ke_final, r->fall_energy, t_max);
     else if (above)
         gw_snprintf(ek, sizeof ek, "E_k = %.4g J still above --ke-threshold at t-max = %g s", r->ke_final, t_max);
-    if (low)
+    if (low && walls)
+        gw_snprintf(on_floor, sizeof on_floor, "its floor carries %.3g of the pile's weight and its side walls "
+                    "%.3g (together %.3g; at rest: about 1; below %g the pile is in the air or bouncing)", ld, wl,
+                    both, LAYER_FLOOR_LOAD_MIN);
+    else if (high && walls)
+        gw_snprintf(on_floor, sizeof on_floor, "its floor carries %.3g times the pile's weight and its side walls "
+                    "%.3g (together %.3g; at rest: about 1; layer-impact refuses a floor above %g unless the floor "
+                    "and the side walls together carry %g to %g of the weight)", ld, wl, both,
+                    LAYER_FLOOR_LOAD_MAX, LAYER_FLOOR_LOAD_MIN, LAYER_FLOOR_LOAD_MAX);
+    else if (low)
         gw_snprintf(on_floor, sizeof on_floor, "its floor carries %.3g of the pile's weight (at rest: about 1; "
                     "below %g the pile is in the air or bouncing, or the side walls' friction holds a column far "
                     "taller than wide)", ld, LAYER_FLOOR_LOAD_MIN);
@@ -119,6 +143,15 @@ int gw_layer_make_result_warnings(const gw_layer_make_result *r, double t_max, c
     char fell[64] = ""; /* the grains' fall, when below the threshold with E_k */
     if (r->fall_energy > 0)
         gw_snprintf(fell, sizeof fell, " and %.4g J of grains in flight", r->fall_energy);
+    if (!ek[0] && by_walls) /* E_k below the threshold, floor and walls carrying the pile: still rocking */
+        return gw_warnings_add(list, "the sample did not settle: at t-max = %g s E_k = %.4g J%s lies below "
+                               "--ke-threshold%s%s%s and its floor carries %.3g of the pile's weight and its side "
+                               "walls %.3g (together %.3g: at rest, %g to %g, which layer-impact's check asks), but "
+                               "a pile its walls help hold is called settled only once it passes these rules at %d "
+                               "successive checks %g s apart, and this one still rocks between its walls (raise "
+                               "--t-max)%s%s%s", t_max, r->ke_final, fell, known ? " (" : "", lim, known ? ")" : "",
+                               ld, wl, both, LAYER_FLOOR_LOAD_MIN, LAYER_FLOOR_LOAD_MAX, LAYER_WALL_CALM_CHECKS,
+                               LAYER_SETTLE_CHUNK, sep, path, end);
     if (!ek[0] && !on_floor[0]) /* E_k below the threshold, the floor carrying the pile: the verdict alone */
         return gw_warnings_add(list, "the sample did not settle: its run did not call it settled (converged 0), "
                                "though at t-max = %g s E_k = %.4g J%s lies below --ke-threshold%s%s%s and its floor "

@@ -219,17 +219,17 @@ void layer_watch_first_contact_min(const gw_layer *L, double *t, double *kb, dou
 }
 
 /* The block has left the layer for good (GW_LAYER_BLOCK_GONE, gw_layer.h) in
- * state y, touching nothing: GW_LAYER_GONE_* or 0. Every other body is bounded
+ * state y, touching nothing (touching: one of its contacts closed), or
+ * beyond a side touching nothing but the floor: GW_LAYER_GONE_* or 0. Every
+ * other body is bounded
  * by its disc (or clump) radius brad about its centre, and its points move at
  * most |w| brad faster than its centre; no wall lies on the block's side; so,
  * with the same gravity on every body, nothing can reach the block again.
  * Only with a wall missing (never in the walled box: runs with all walls are
  * unchanged), O(bodies) per evaluation while the block flies. */
-static int block_gone(const gw_layer *L, const double *y)
+static int block_gone(const gw_layer *L, const double *y, int touching)
 {
-    const int w = L->p.walls, bb = L->block_body;
-    if (w & GW_LAYER_WALL_BOTTOM)
-        return 0;
+    const int w = L->p.walls, bb = L->block_body, floor = (w & GW_LAYER_WALL_BOTTOM) != 0;
     const double *s = y + 6 * bb, rb = L->brad[bb];
     double lo = INFINITY, vlo = INFINITY, left = INFINITY, vleft = INFINITY, right = -INFINITY, vright = -INFINITY;
     for (int b = 0; b < L->nb; b++) {
@@ -240,8 +240,16 @@ static int block_gone(const gw_layer *L, const double *y)
         left = fmin(left, q[0] - L->brad[b]), vleft = fmin(vleft, q[3] - spin);
         right = fmax(right, q[0] + L->brad[b]), vright = fmax(vright, q[3] + spin);
     }
-    if (s[1] + rb < lo && s[4] < 0 && s[4] <= vlo)
+    if (!floor && !touching && s[1] + rb < lo && s[4] < 0 && s[4] <= vlo)
         return GW_LAYER_GONE_BELOW;
+    /* beyond a side with the floor kept: the block may roll or slide on the
+     * floor (its only contact: beyond every other body's extent it touches
+     * none of them), the same rule across the side (a side wall removed at
+     * impact time over a floor: the block that rolled off the pile rolled on
+     * beyond it to t-max, never declared gone). Without the floor, touching
+     * nothing, as before. */
+    if (touching && !floor)
+        return 0;
     if (!(w & GW_LAYER_WALL_LEFT) && s[0] + rb < left && s[3] < 0 && s[3] <= vleft)
         return GW_LAYER_GONE_LEFT;
     if (!(w & GW_LAYER_WALL_RIGHT) && s[0] - rb > right && s[3] > 0 && s[3] >= vright)
@@ -315,7 +323,7 @@ void layer_watch_roots(gw_layer *L, double t, const double *y, double *g)
     if (L->fc.target >= 0)
         first_contact(L, t, y);
     int gone;
-    if (!L->gone && gc < 0 && (L->p.walls & GW_LAYER_WALLS_ALL) != GW_LAYER_WALLS_ALL && (gone = block_gone(L, y))) {
+    if (!L->gone && (L->p.walls & GW_LAYER_WALLS_ALL) != GW_LAYER_WALLS_ALL && (gone = block_gone(L, y, gc >= 0))) {
         /* reported once, at this evaluation (no root: nothing to locate, the
          * state only moves further away) */
         L->gone = 1;

@@ -8,7 +8,8 @@
 #  - the same impact with the walls: no "fell_off" key (the other runs' JSON
 #    is unchanged);
 #  - a sweep over that point and one that bounces: column fell_off 0 / 1,
-#    bounced 1 / 0, and layer-stats counts the fell-off row apart;
+#    bounced 1 / 0, and layer-stats counts the fell-off row apart, in its
+#    warning and in groups.csv's column n_fell_off (1 of the group's 2);
 #  - layer-stats on the sweep's journal names results.csv, writes nothing;
 #  - chain --radii with 2 radii and the default n: says what was given, no
 #    "1 beads"; drop --gap with 3 values for 2 beads: no "1 pairs".
@@ -73,6 +74,15 @@ PY
 "$GW" layer-stats "$tmp/sw/results.csv" --out "$tmp/st" >/dev/null 2>"$tmp/st.err"; rc=$?
 [ $rc -eq 0 ] && grep -q "1 of 2 rows fell off the layer" "$tmp/st.err" && ok "layer-stats: the fell-off row counted apart" ||
     ko "layer-stats: exit $rc, $(head -c 400 "$tmp/st.err")"
+# groups.csv counts it per group (column n_fell_off, session 43: the count was in the warning alone)
+got=$($PY - "$tmp/st/groups.csv" <<'PY' 2>&1
+import csv, sys
+rows = list(csv.DictReader(l for l in open(sys.argv[1]) if not l.startswith("#")))
+print(" ".join("%s/%s/%s" % (r["n_points"], r["n_bounced"], r.get("n_fell_off")) for r in rows))
+PY
+)
+[ "$got" = "2/1/1" ] && ok "groups.csv: n_points/n_bounced/n_fell_off 2/1/1" ||
+    ko "groups.csv: n_points/n_bounced/n_fell_off '$got' (wanted 2/1/1)"
 
 # --- layer-stats on the journal ---
 "$GW" layer-stats "$tmp/sw/journal.csv" --out "$tmp/stj" >/dev/null 2>"$tmp/j.err"; rc=$?

@@ -409,8 +409,10 @@ static void test_run(void)
         gw_test_abs(g0[col_index(gc, "n_e_n")], 3, 0, "group 0: 3 values of e_n");
         gw_test_abs(g0[col_index(gc, "n_penetration")], 4, 0, "group 0: 4 penetrations");
         gw_test_abs(g0[col_index(gc, "verdict_certain")], 1, 0, "group 0 verdict certain");
-        gw_test_true(col_index(gc, "verdict_certain") == 35 && col_index(gc, "n_alpha_r_first") == GW_STATS_GROUP_NCOLS - 1,
-                     "45 group columns: the 36 of the tables before, then the counts");
+        gw_test_true(col_index(gc, "verdict_certain") == 35 && col_index(gc, "n_alpha_r_first") == GW_STATS_GROUP_NCOLS - 2 &&
+                     col_index(gc, "n_fell_off") == GW_STATS_GROUP_NCOLS - 1 && GW_STATS_GROUP_NCOLS == 46,
+                     "46 group columns: the 36 of the tables before, then the counts, then n_fell_off");
+        gw_test_abs(g0[col_index(gc, "n_fell_off")], 0, 0, "group 0: no fell_off column, none fell off");
         gw_test_true(out.nbinary == 1 && out.nconvergence == 7 && out.nwalls == 0, "1 binary row, 7 convergence rows");
         gw_test_abs(out.binary[0], 2, 0, "binary rb_rm from the grid");
         gw_test_abs(out.binary[1], 7, 0, "binary alpha from the caller's default");

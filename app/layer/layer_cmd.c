@@ -250,6 +250,7 @@ int gw_cmd_layer_make(int argc, char **argv)
         cJSON_AddNumberToObject(j, "t_judge", r.t_judge);
         cJSON_AddNumberToObject(j, "max_overlap_over_rp", r.max_overlap);
         cJSON_AddNumberToObject(j, "floor_load", r.floor_load);
+        cJSON_AddNumberToObject(j, "wall_load", r.wall_load);
         cJSON_AddNumberToObject(j, "fall_energy", r.fall_energy);
         cJSON_AddNumberToObject(j, "ke_limit", r.ke_limit);
         cJSON_AddNumberToObject(j, "steps", (double)r.steps);

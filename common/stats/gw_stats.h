@@ -141,6 +141,8 @@ typedef struct gw_stats_group {
     long *rows;           /* [n] row indices, by point */
     int n_valid;          /* rows with bounced 0 or 1 (decided) */
     int n_bounced;
+    int n_fell_off;       /* rows whose block fell off the layer (column fell_off 1: decided,
+                             bounced 0; 0 for a table without the column) */
     /* Undecided rows (bounced NaN: the run ended before the verdict) count as
      * not bounced in share, the share of points that bounced before the end of
      * their run (the meaning of the share of tables made before undecided
@@ -421,7 +423,8 @@ int gw_stats_out_check(const char *dir, const char *what, gw_err *err);
  * docs/formats.md, layer-stats outputs). The moments block_loss and dissipated
  * of gw_stats_group are block_loss_first_contact and dissipated_first_contact
  * there, as the sweep table's columns they average. The counts n_X of the
- * moments other than e and e_first follow the first 36 columns. */
+ * moments other than e and e_first follow the first 36 columns, and the
+ * count of rows whose block fell off the layer (n_fell_off) the counts. */
 #define GW_STATS_GROUP_COLUMNS                                                                         \
     "n_points,n_valid,n_bounced,bounce_share,bouncing,e_n_mean,e_n_std,e_mean,e_std,alpha_r_mean,"     \
     "alpha_r_std,n_e,penetration_mean,penetration_std,penetration_rm_mean,penetration_rm_std,"         \
@@ -430,8 +433,8 @@ int gw_stats_out_check(const char *dir, const char *what, gw_err *err);
     "x_span,x_span_rm,e_n_first_mean,e_n_first_std,e_first_mean,e_first_std,alpha_r_first_mean,"      \
     "alpha_r_first_std,n_e_first,bounce_share_decided,bounce_share_high,verdict_certain,n_e_n,"        \
     "n_alpha_r,n_penetration,n_penetration_rm,n_block_loss_first_contact,n_dissipated_first_contact,"  \
-    "n_rebound_energy,n_e_n_first,n_alpha_r_first"
-#define GW_STATS_GROUP_NCOLS 45
+    "n_rebound_energy,n_e_n_first,n_alpha_r_first,n_fell_off"
+#define GW_STATS_GROUP_NCOLS 46 /* (the study's field "groups" states it as text: gw_stats_study.c) */
 /* One group's row of that table. */
 void gw_stats_group_row(const gw_stats_group *g, double row[GW_STATS_GROUP_NCOLS]);
 

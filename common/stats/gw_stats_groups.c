@@ -132,7 +132,7 @@ static int group_stats(const gw_stats_table *t, double criterion, gw_stats_group
               cl = gw_stats_table_col(t, "block_loss_first_contact"),
               cd = gw_stats_table_col(t, "dissipated_first_contact"),
               cee = gw_stats_table_col(t, "energy_error"),
-              cx = gw_stats_table_col(t, "x_impact"),
+              cx = gw_stats_table_col(t, "x_impact"), cfo = gw_stats_table_col(t, "fell_off"),
               cf[3] = {gw_stats_table_col(t, "e_n_first"), gw_stats_table_col(t, "e_first"),
                        gw_stats_table_col(t, "alpha_r_first")};
     int n = g->n;
@@ -148,7 +148,7 @@ static int group_stats(const gw_stats_table *t, double criterion, gw_stats_group
            *loss = w + 5 * n, *dis = w + 6 * n, *reb = w + 7 * n, *fst = w + 8 * n;
     double sen = 0, se = 0, men = 0, me = 0;
     int nen = 0, ne = 0;
-    g->n_valid = g->n_bounced = 0;
+    g->n_valid = g->n_bounced = g->n_fell_off = 0;
     g->energy_error_max = NAN;
     double xlo = INFINITY, xhi = -INFINITY, rm = NAN;
     for (int k = 0; k < n; k++) {
@@ -162,6 +162,7 @@ static int group_stats(const gw_stats_table *t, double criterion, gw_stats_group
         int bounced = b == 1;
         g->n_valid += !isnan(b);
         g->n_bounced += bounced;
+        g->n_fell_off += cfo >= 0 && cell(t, r, cfo) == 1; /* (no column: none recorded) */
         en[k] = bounced ? cell(t, r, cen) : NAN;
         e[k] = bounced ? cell(t, r, ce) : NAN;
         al[k] = bounced ? cell(t, r, ca) : NAN;

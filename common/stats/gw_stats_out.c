@@ -77,6 +77,7 @@ static cJSON *group_json(const gw_stats_analysis *R, const gw_stats_group *g)
     cJSON_AddNumberToObject(o, "n_points", g->n);
     cJSON_AddNumberToObject(o, "n_valid", g->n_valid);
     cJSON_AddNumberToObject(o, "n_bounced", g->n_bounced);
+    cJSON_AddNumberToObject(o, "n_fell_off", g->n_fell_off);
     cJSON_AddNumberToObject(o, "bounce_share", g->share);
     cJSON_AddNumberToObject(o, "bounce_share_decided", g->share_decided);
     cJSON_AddNumberToObject(o, "bounce_share_high", g->share_high);
@@ -448,7 +449,8 @@ static void write_groups(FILE *fp, const gw_stats_analysis *R)
                 "such columns); n_e < n_bounced when runs ended before T_f; n_points - n_valid points are "
                 "undecided (the run ended before the verdict): bounce_share counts them as not bounced (bounced "
                 "before the end of the run), bounce_share_decided leaves them out, bounce_share_high counts them "
-                "as bounced; verdict_certain = 1 when no outcome of theirs could change the verdict");
+                "as bounced; verdict_certain = 1 when no outcome of theirs could change the verdict; n_fell_off = "
+                "points whose block fell off the layer (column fell_off 1: decided, not bounced)");
     gw_fprintf(fp, "group");
     key_names(fp, R, -1, -1);
     gw_fprintf(fp, ",%s\n", GW_STATS_GROUP_COLUMNS);

@@ -51,7 +51,7 @@ static const gw_param outcome_fields[] = {
     {.name = "group_keys", .type = GW_PARAM_TEXT, .offset = OFF(group_keys), .unit = "",
      .help = "the grouping keys' names, comma-separated (columns of keys)"},
     RA("keys", keys, "ngroups", "nkeys", NULL, "each group's values of the grouping keys (NaN: not a number)"),
-    RA("groups", groups, "ngroups", "45", GW_STATS_GROUP_COLUMNS,
+    RA("groups", groups, "ngroups", "46", GW_STATS_GROUP_COLUMNS, /* GW_STATS_GROUP_NCOLS */
        "per group, as groups.csv: moments of e_n, e, alpha_r (bouncing points), penetration (m, R_m), shares; "
        "X_mean, X_std and n_X of the JSON's X"),
     RI("nconvergence", nconvergence, "rows of convergence"),
@@ -129,6 +129,7 @@ void gw_stats_group_row(const gw_stats_group *g, double row[GW_STATS_GROUP_NCOLS
                                    &g->dissipated, &g->rebound_energy, &g->e_n_first, &g->alpha_r_first};
     for (int k = 0; k < 9; k++)
         row[i++] = m4[k]->n;
+    row[i++] = g->n_fell_off; /* after the counts (session 43) */
 }
 
 static double *table(int rows, int cols)

@@ -649,7 +649,9 @@ static int falcon_run(const gw_chain_falcon_setup *s, gw_progress_fn progress, v
     if (rc == GW_OK && ((rc = chain_dt_tally_warnings(&dt_tally, "--dt", "collisions", &out->warnings)) != GW_OK ||
                         (rc = chain_damping_zero_warnings(&r.params, 0, 1, &out->warnings)) != GW_OK ||
                         (rc = chain_damping_small_study_warning(&r.params, r.run.sp.rtol, out->v_imp, out->nv,
-                                                                &out->warnings)) != GW_OK))
+                                                                &out->warnings)) != GW_OK ||
+                        (rc = chain_drag_small_study_warnings(&r.params, r.run.sp.rtol, out->v_imp, out->nv,
+                                                              (int)s->n[0], (int)s->n[1], &out->warnings)) != GW_OK))
         rc = gw_err_set(err, rc, "falcon: out of memory");
     for (int i = 0; res && i < out->ncase; i++)
         gw_chain_result_free(&res[i]);

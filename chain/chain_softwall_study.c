@@ -505,6 +505,7 @@ static int sw_run(const gw_chain_softwall_setup *s, gw_progress_fn progress, voi
     int small = 0; /* cases whose contact damping is predicted below rtol, the largest effect among them */
     double small_hi = 0;
     chain_dt_tally dt_tally = {0}; /* a --dt above the step taken: the rigid wall's 20 columns and the walls' */
+    chain_drag_tally drag = {0};   /* the sensor's dashpot and the guide's friction over the walls' columns */
     rc = res && sr && lay && wall ? GW_OK : gw_err_set(err, GW_ENOMEM, "softwall: out of memory");
     char name[32];
     const gw_material *bm = gw_material_find(
@@ -541,6 +542,7 @@ static int sw_run(const gw_chain_softwall_setup *s, gw_progress_fn progress, voi
             gw_chain_params qi = q; /* the case's damping at its wall's stiffness and its size (the single run's
                                        test: softwall --damping kk --gamma 1e-8 said nothing of it) */
             qi.n = (int)a + i;
+            chain_drag_tally_add(&drag, &qi);
             if (chain_damping_small(&qi, rs.run.sp.rtol)) {
                 const double e = chain_damping_effect(&qi);
                 small_hi = small++ ? fmax(small_hi, e) : e;
@@ -563,7 +565,8 @@ static int sw_run(const gw_chain_softwall_setup *s, gw_progress_fn progress, voi
          (rc = sw_held_warnings(out, held, where, &out->warnings)) != GW_OK ||
          (rc = chain_dt_tally_warnings(&dt_tally, "--dt", "collisions", &out->warnings)) != GW_OK ||
          (rc = chain_damping_zero_warnings(&rs.params, 0, 1, &out->warnings)) != GW_OK ||
-         (rc = chain_damping_small_cases_warning(small, nw * per, small_hi, &out->warnings)) != GW_OK))
+         (rc = chain_damping_small_cases_warning(small, nw * per, small_hi, &out->warnings)) != GW_OK ||
+         (rc = chain_drag_tally_warnings(&drag, rs.run.sp.rtol, &out->warnings)) != GW_OK))
         rc = gw_err_set(err, rc, "softwall: out of memory");
     for (int i = 0; res && i < nw * per; i++)
         gw_chain_result_free(&res[i]);

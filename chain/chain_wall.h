@@ -78,6 +78,22 @@ int chain_damping_small_cases_warning(int n, int total, double hi, char **list);
 double chain_sensor_damping_effect(const gw_chain_params *p);
 double chain_guide_effect(const gw_chain_params *p);
 int chain_drag_small_warnings(const gw_chain_params *p, double rtol, char **list);
+/* The same rule for a study's columns (falcon, wavespeed, softwall: they
+ * said nothing of --sensor-damping 1e-12 before session 43): each column's
+ * effects tallied (chain_drag_tally_add: the largest of each, over the
+ * columns where the option acts), and a warning when even the largest is
+ * below rtol, naming how many columns; a single run's warning is a tally of
+ * one (chain_drag_small_warnings). _study_warnings: the columns of sizes
+ * n_lo..n_hi at each of nv speeds v from p. GW_OK or GW_ENOMEM. */
+typedef struct chain_drag_tally {
+    int n_sensor, n_guide;        /* columns where each acts */
+    double sensor_hi, guide_hi;   /* the largest effect of each */
+    double damping, coulomb, viscous; /* the options, as given */
+} chain_drag_tally;
+void chain_drag_tally_add(chain_drag_tally *t, const gw_chain_params *p);
+int chain_drag_tally_warnings(const chain_drag_tally *t, double rtol, char **list);
+int chain_drag_small_study_warnings(const gw_chain_params *p, double rtol, const double *v, int nv, int n_lo,
+                                    int n_hi, char **list);
 /* A run's energy error above GW_CHAIN_ENERGY_WARN with energy_tol off (0):
  * a warning naming the error and the solver's rtol and atol (rk4: its step),
  * the integration too loose to trust the column's numbers. Nothing when

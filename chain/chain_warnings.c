@@ -197,24 +197,70 @@ double chain_guide_effect(const gw_chain_params *p)
     return (fmax(p->guide.coulomb, 0) / q.v_imp + fmax(p->guide.viscous, 0)) * t / m;
 }
 
+void chain_drag_tally_add(chain_drag_tally *t, const gw_chain_params *p)
+{
+    if (!t || !p)
+        return;
+    const double z = chain_sensor_damping_effect(p), g = chain_guide_effect(p);
+    if (z > 0)
+        t->sensor_hi = t->n_sensor++ ? fmax(t->sensor_hi, z) : z;
+    if (g > 0)
+        t->guide_hi = t->n_guide++ ? fmax(t->guide_hi, g) : g;
+    t->damping = p->sensor.damping;
+    t->coulomb = p->guide.coulomb;
+    t->viscous = p->guide.viscous;
+}
+
+int chain_drag_tally_warnings(const chain_drag_tally *t, double rtol, char **list)
+{
+    if (!t || !(rtol > 0))
+        return GW_OK;
+    char over[96] = ""; /* a study's: the largest effect over its columns */
+    int rc = GW_OK;
+    if (t->n_sensor > 0 && t->sensor_hi < rtol) {
+        if (t->n_sensor > 1)
+            gw_snprintf(over, sizeof over, " (the largest over the study's %d columns)", t->n_sensor);
+        rc = gw_warnings_add(list, "the sensor body's dashpot (--sensor-damping %g N s/m) has no effect: its damping "
+                             "ratio c/(2 sqrt(k_s m_s)) = %.3g%s is below the solver's rtol %g, and the results are "
+                             "those of --sensor-damping 0 (give a larger --sensor-damping)", t->damping, t->sensor_hi,
+                             over, rtol);
+    }
+    over[0] = '\0';
+    if (rc == GW_OK && t->n_guide > 0 && t->guide_hi < rtol) {
+        if (t->n_guide > 1)
+            gw_snprintf(over, sizeof over, " (the largest over the study's %d columns)", t->n_guide);
+        rc = gw_warnings_add(list, "the guide's friction (--guide-friction %g N, --guide-viscous %g N s/m) has no "
+                             "effect: its predicted relative effect on the impact, (F_c/v + c_g) t_col/m = %.3g%s, is "
+                             "below the solver's rtol %g, and the results are those of a column without friction "
+                             "(give a larger --guide-friction or --guide-viscous)", t->coulomb, t->viscous,
+                             t->guide_hi, over, rtol);
+    }
+    return rc;
+}
+
 int chain_drag_small_warnings(const gw_chain_params *p, double rtol, char **list)
 {
-    if (!p || !(rtol > 0))
+    if (!p)
         return GW_OK;
-    const double z = chain_sensor_damping_effect(p);
-    int rc = GW_OK;
-    if (z > 0 && z < rtol)
-        rc = gw_warnings_add(list, "the sensor body's dashpot (--sensor-damping %g N s/m) has no effect: its damping "
-                             "ratio c/(2 sqrt(k_s m_s)) = %.3g is below the solver's rtol %g, and the results are "
-                             "those of --sensor-damping 0 (give a larger --sensor-damping)", p->sensor.damping, z, rtol);
-    const double g = chain_guide_effect(p);
-    if (rc == GW_OK && g > 0 && g < rtol)
-        rc = gw_warnings_add(list, "the guide's friction (--guide-friction %g N, --guide-viscous %g N s/m) has no "
-                             "effect: its predicted relative effect on the impact, (F_c/v + c_g) t_col/m = %.3g, is "
-                             "below the solver's rtol %g, and the results are those of a column without friction "
-                             "(give a larger --guide-friction or --guide-viscous)", p->guide.coulomb, p->guide.viscous,
-                             g, rtol);
-    return rc;
+    chain_drag_tally t = {0};
+    chain_drag_tally_add(&t, p);
+    return chain_drag_tally_warnings(&t, rtol, list);
+}
+
+int chain_drag_small_study_warnings(const gw_chain_params *p, double rtol, const double *v, int nv, int n_lo,
+                                    int n_hi, char **list)
+{
+    if (!p || !v || nv < 1 || n_lo < 1 || n_hi < n_lo)
+        return GW_OK;
+    chain_drag_tally t = {0};
+    for (int i = 0; i < nv; i++)
+        for (int n = n_lo; n <= n_hi; n++) {
+            gw_chain_params q = *p; /* each column of the study: its size and speed */
+            q.v_imp = v[i];
+            q.n = n;
+            chain_drag_tally_add(&t, &q);
+        }
+    return chain_drag_tally_warnings(&t, rtol, list);
 }
 
 /* A dt given above the step the run could take ran at that step: the

@@ -543,7 +543,9 @@ static int ws_run(const gw_chain_wavespeed_setup *s, gw_progress_fn progress, vo
          (rc = chain_dt_tally_warnings(&dt_tally, "--dt", "collisions", &out->warnings)) != GW_OK ||
          (rc = chain_damping_zero_warnings(&r.params, 0, 1, &out->warnings)) != GW_OK ||
          (rc = chain_damping_small_study_warning(&r.params, r.run.sp.rtol, out->v_imp, out->nv, &out->warnings)) !=
-             GW_OK))
+             GW_OK ||
+         (rc = chain_drag_small_study_warnings(&r.params, r.run.sp.rtol, out->v_imp, out->nv, (int)a, (int)b,
+                                               &out->warnings)) != GW_OK))
         rc = gw_err_set(err, rc, "wavespeed: out of memory");
     if (rc == GW_OK) {
         chain_ws_cause cause = ws_cause(&r.params, res, (int)a, per_v, out);

@@ -303,6 +303,21 @@ int gw_num_subnormal_refused(const char *name, const char *what, const gw_num_ra
                       gw_num_allowed(allowed, sizeof allowed, r));
 }
 
+/* A number's text as a refusal quotes it: whole up to 40 characters; a longer
+ * one (2**1100's 331 digits, given from Python or on the command line) by its
+ * first 20 characters and its length, QUOTE around the part shown ("'" or
+ * ""). The refusal stays one short line naming the input (it quoted every
+ * digit before session 43). */
+static const char *num_shown(char *buf, size_t n, const char *s, const char *quote)
+{
+    const size_t len = strlen(s);
+    if (len <= 40)
+        gw_snprintf(buf, n, "%s%s%s", quote, s, quote);
+    else
+        gw_snprintf(buf, n, "%s%.20s...%s (%zu characters)", quote, s, quote, len);
+    return buf;
+}
+
 int gw_parse_double_in(const char *s, const char *name, const gw_num_range *r, double *out, gw_err *err)
 {
     if (!out)
@@ -314,8 +329,9 @@ int gw_parse_double_in(const char *s, const char *name, const gw_num_range *r, d
     double v = gw_strtod(s, &end);
     if (!number_ends(s, end))
         return gw_err_set(err, GW_EINVAL, "%s: '%s' is not a number", name, s);
+    char shown[96];
     if (!isfinite(v) || (errno == ERANGE && fabs(v) >= 1.0))
-        return gw_err_set(err, GW_EINVAL, "%s: '%s' is not a finite number", name, s);
+        return gw_err_set(err, GW_EINVAL, "%s: %s is not a finite number", name, num_shown(shown, sizeof shown, s, "'"));
     /* one rule for numbers in text: decimal, as integers (gw_parse_long_in,
      * base 10) are; strtod's hexadecimal ("0x1p-2") was taken for a real
      * input where "0x3" was refused for an integer */
@@ -323,9 +339,7 @@ int gw_parse_double_in(const char *s, const char *name, const gw_num_range *r, d
         return gw_err_set(err, GW_EINVAL, "%s: '%s' is not a decimal number (no hexadecimal, as for integers)",
                           name, s);
     if (errno == ERANGE || (v != 0 && fabs(v) < DBL_MIN)) { /* strtod's underflow: no normal double */
-        char what[96];
-        gw_snprintf(what, sizeof what, "'%s'", s);
-        return gw_num_subnormal_refused(name, what, r, err);
+        return gw_num_subnormal_refused(name, num_shown(shown, sizeof shown, s, "'"), r, err);
     }
     *out = v;
     return GW_OK;
@@ -404,8 +418,10 @@ int gw_parse_long_in(const char *s, const char *name, long lo, long hi, int or_z
     }
     if (or_zero && errno == 0 && v == 0)
         return *out = 0, GW_OK;
+    char shown[96];
     if (errno == ERANGE || v < lo || v > hi)
-        return gw_err_set(err, GW_EINVAL, "%s: %s is outside [%ld, %ld]", name, s, lo, hi);
+        return gw_err_set(err, GW_EINVAL, "%s: %s is outside [%ld, %ld]", name, num_shown(shown, sizeof shown, s, ""),
+                          lo, hi);
     *out = v;
     return GW_OK;
 }

@@ -241,7 +241,9 @@ int gw_outset_begin(gw_outset *s, const char *dir, const char *const *names, gw_
  * the set's names in dir (the same file, by device and inode; for a file not
  * made yet, the same directory and name): the run would replace the file it
  * reads, or write two things under one name (what NULL: named "input"). GW_OK
- * otherwise. */
+ * otherwise, and for input NULL or "" (no input: a command run without its
+ * --wisdom or --sample). dir or names NULL is a caller's error: GW_EINVAL
+ * naming it (it was GW_OK, checking nothing, before session 43). */
 int gw_outset_check_input(const char *dir, const char *const *names, const char *input, const char *what,
                           gw_err *err);
 /* Rename the staged files into place and remove the set's names not written,

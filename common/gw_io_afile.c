@@ -373,7 +373,13 @@ int gw_afile_open(gw_afile *f, const char *path, gw_err *err)
         return gw_err_set(err, GW_EINVAL, "gw_afile_open: %s is NULL", !f ? "f" : "path");
     if (afile_is_open(f))
         return refuse_open(f, "gw_afile_open", err);
-    memset(f, 0, sizeof *f);
+    /* the rule the output checks apply before a run (a name to make that
+     * holds a control character), here for every writer: a C caller of
+     * gw_layer_sample_write, gw_json_write or this call itself wrote
+     * "/tmp/x\n" without any check (session 42) */
+    memset(f, 0, sizeof *f); /* (safe to abort after a refusal) */
+    if (gw_io_new_name_check(path, "output", err) != GW_OK)
+        return GW_EINVAL;
     hold_signals(f);
     int rc = gw_io_write_target(path, f->path, sizeof f->path, path, err);
     if (rc != GW_OK) { /* nothing made: give the signals back */
@@ -463,6 +469,8 @@ int gw_afile_openat(gw_afile *f, int dirfd, const char *dir, const char *name, g
     if (!*name)
         return gw_err_set(err, GW_EINVAL, "%s: an empty name names no file", dir);
     memset(f, 0, sizeof *f);
+    if (gw_io_new_name_check_at(dirfd, name, "output", err) != GW_OK) /* as gw_afile_open */
+        return GW_EINVAL;
     hold_signals(f);
     char rel[4096];
     int rc = at_target(dirfd, dir, name, rel, sizeof rel, err);

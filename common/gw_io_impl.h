@@ -136,7 +136,12 @@ int gw_outset_temp_dir(const char *tmp, int fd);
 
 /* The rule for the names a run makes (gw_io_paths.c; gw_common.h, the output
  * checks): a component of path that does not exist yet and holds a control
- * character is refused, naming what. NULL: GW_OK. */
+ * character is refused, naming what. NULL: GW_OK. The checks of output
+ * locations apply it before a run, and the writers at their open
+ * (gw_afile_open, gw_afile_openat: the same rule for a C caller that writes
+ * without the checks); _at: path relative to the directory at (AT_FDCWD: the
+ * working directory). */
 int gw_io_new_name_check(const char *path, const char *what, gw_err *err);
+int gw_io_new_name_check_at(int at, const char *path, const char *what, gw_err *err);
 
 #endif

@@ -154,7 +154,12 @@ int gw_outset_check_input(const char *dir, const char *const *names, const char 
                           gw_err *err)
 {
     struct stat in, st;
-    if (!dir || !names || !input || !*input)
+    /* dir and names are the set's: NULL is a caller's error, refused naming
+     * it (GW_OK before session 43, as if nothing were written); input NULL
+     * or "" is a command without that input (no --wisdom, no --sample) */
+    if (!dir || !names)
+        return gw_err_set(err, GW_EINVAL, "gw_outset_check_input: %s is NULL", !dir ? "dir" : "names");
+    if (!input || !*input)
         return GW_OK;
     what = what ? what : "input"; /* as gw_input_check; "(null): ..." before session 34 */
     if (stat(input, &in) != 0) { /* a file still to make (wisdom): the same directory and name */

@@ -10,6 +10,7 @@
  */
 #define _POSIX_C_SOURCE 200809L
 #include <errno.h>
+#include <fcntl.h>
 #include <limits.h>
 #include <stdlib.h>
 #include <string.h>
@@ -99,7 +100,7 @@ static long ctrl_byte(const char *s, size_t n)
     return -1;
 }
 
-int gw_io_new_name_check(const char *path, const char *what, gw_err *err)
+int gw_io_new_name_check_at(int at, const char *path, const char *what, gw_err *err)
 {
     if (!path)
         return GW_OK; /* (the callers refuse it) */
@@ -117,7 +118,7 @@ int gw_io_new_name_check(const char *path, const char *what, gw_err *err)
             char c = buf[i];
             struct stat st;
             buf[i] = '\0';
-            const int there = lstat(buf, &st) == 0;
+            const int there = fstatat(at, buf, &st, AT_SYMLINK_NOFOLLOW) == 0;
             buf[i] = c;
             if (!there)
                 return gw_err_set(err, GW_EINVAL, "%s: '%s': the name it would make, '%.*s', holds a control "
@@ -128,6 +129,11 @@ int gw_io_new_name_check(const char *path, const char *what, gw_err *err)
         start = i + 1;
     }
     return GW_OK;
+}
+
+int gw_io_new_name_check(const char *path, const char *what, gw_err *err)
+{
+    return gw_io_new_name_check_at(AT_FDCWD, path, what, err);
 }
 
 int gw_mkdir_p(const char *path, gw_err *err)

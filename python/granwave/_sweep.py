@@ -179,6 +179,66 @@ def _model_has(m, name):
 _SWEEP_LINE_MAX = 198  # the longest line the library's config reader takes (libinih's buffer less 2)
 
 
+def _in_section(e, section):
+    """A refusal of a grid or params value, "KEY: ...", as the library words
+    its own for a sweep's values: "sweep: [grid] KEY: ..." ("n: empty list of
+    grid values" named no call before session 43). One that names its call
+    already ("sweep: ...", "sweep() grid: ...") is kept."""
+    text = str(e)
+    if text.startswith("sweep"):
+        return e
+    return GranwaveValueError(f"sweep: [{section}] {text}", e.status)
+
+
+def _grid_lines(model, m, k, v, lines, axes, key_bytes):
+    """The config lines of grid key k (values v) appended to lines, its
+    values to axes and its lines' bytes to key_bytes; refused naming k."""
+    name = k.replace("_", "-")
+    if not _model_has(m, name):
+        raise TypeError(f"sweep() grid: '{_line(k)}' is not a parameter of model {model}{_sweep_hint(model, m, k)}")
+    if v is None or isinstance(v, (set, frozenset, dict) + _BYTES) or \
+            (isinstance(v, np.ndarray) and v.ndim != 1):
+        raise TypeError(f"sweep() grid: '{_line(k)}': expected a list, a range, a 1-D array or a string, "
+                        f"got {type(v).__name__}")
+    vals = _grid_values(k, v)
+    if not vals:
+        raise GranwaveValueError(f"{_line(k)}: empty list of grid values", GW_EINVAL)
+    axes[k] = vals
+    try:
+        texts = [_ini_value(k, x, _sweep_rows(model, m, k)) for x in vals]
+    except TypeError as e:
+        raise TypeError(f"sweep() grid: '{_line(k)}': {e}") from None
+    if any("," in t for t in texts):  # the list's separator: 'a,b' ran two cases
+        raise GranwaveValueError(f"{_line(k)}: a grid value holds ',' (the list separator of a sweep)", GW_EINVAL)
+    # a list item 'A:B' alone on its line is the library's range: grid={"n": ["1:3"]}
+    # ran 3 cases where the result's n had one entry (its columns 3)
+    if not isinstance(v, str) and any(_looks_like_range(t) for t in texts):
+        raise GranwaveValueError(f"sweep() grid: '{_line(k)}': a list item "
+                                 f"{next(t for t in texts if _looks_like_range(t))!r} is a range, not one value: give "
+                                 f"the string 'A:B' or range(A, B + 1)", GW_EINVAL)
+    n_lines = len(lines)
+    # consecutive integers as the range A:B; a longer list goes on over
+    # indented lines after a line ending with a comma (each line of the
+    # config at most 198 characters, the library's reader's buffer)
+    ints = [x for x in vals if isinstance(x, numbers.Integral) and not isinstance(x, bool)]
+    if len(vals) > 2 and len(ints) == len(vals) and all(b - a == 1 for a, b in zip(ints, ints[1:])):
+        lines.append(f"{name} = {int(ints[0])}:{int(ints[-1])}")
+    else:
+        line = f"{name} = "
+        for j, t in enumerate(texts):
+            item = t + ("," if j < len(texts) - 1 else "")
+            if len(line) + len(item) + 1 > _SWEEP_LINE_MAX and line.strip() and not line.endswith("= "):
+                lines.append(line.rstrip())
+                line = "    "
+            line += item + " "
+        lines.append(line.rstrip())
+    key_bytes[k] = sum(len(x) + 1 for x in lines[n_lines:])
+    if any(len(x) > _SWEEP_LINE_MAX for x in lines):  # one value longer than a line
+        raise GranwaveValueError(f"sweep() grid: '{_line(k)}': a value takes "
+                                 f"{max(len(t) for t in texts)} characters, "
+                                 f"above the {_SWEEP_LINE_MAX} of a line of the library's config reader", GW_EINVAL)
+
+
 def run_sweep(model, grid, params, jobs, progress):
     # jobs reaches C as an int: a float, a bool or a str was cut or read
     # silently (1.5 ran 1 thread, 10**12 wrapped to a negative int: one per
@@ -214,50 +274,10 @@ def run_sweep(model, grid, params, jobs, progress):
             raise TypeError(f"sweep(): '{_line(seen[name])}' and '{_line(k)}' name the same parameter")
         seen.setdefault(name, k)
     for k, v in grid.items():
-        name = k.replace("_", "-")
-        if not _model_has(m, name):
-            raise TypeError(f"sweep() grid: '{_line(k)}' is not a parameter of model {model}{_sweep_hint(model, m, k)}")
-        if v is None or isinstance(v, (set, frozenset, dict) + _BYTES) or \
-                (isinstance(v, np.ndarray) and v.ndim != 1):
-            raise TypeError(f"sweep() grid: '{_line(k)}': expected a list, a range, a 1-D array or a string, "
-                            f"got {type(v).__name__}")
-        vals = _grid_values(k, v)
-        if not vals:
-            raise GranwaveValueError(f"{_line(k)}: empty list of grid values", GW_EINVAL)
-        axes[k] = vals
         try:
-            texts = [_ini_value(k, x, _sweep_rows(model, m, k)) for x in vals]
-        except TypeError as e:
-            raise TypeError(f"sweep() grid: '{_line(k)}': {e}") from None
-        if any("," in t for t in texts):  # the list's separator: 'a,b' ran two cases
-            raise GranwaveValueError(f"{_line(k)}: a grid value holds ',' (the list separator of a sweep)", GW_EINVAL)
-        # a list item 'A:B' alone on its line is the library's range: grid={"n": ["1:3"]}
-        # ran 3 cases where the result's n had one entry (its columns 3)
-        if not isinstance(v, str) and any(_looks_like_range(t) for t in texts):
-            raise GranwaveValueError(f"sweep() grid: '{_line(k)}': a list item "
-                                     f"{next(t for t in texts if _looks_like_range(t))!r} is a range, not one value: give "
-                                     f"the string 'A:B' or range(A, B + 1)", GW_EINVAL)
-        n_lines = len(lines)
-        # consecutive integers as the range A:B; a longer list goes on over
-        # indented lines after a line ending with a comma (each line of the
-        # config at most 198 characters, the library's reader's buffer)
-        ints = [x for x in vals if isinstance(x, numbers.Integral) and not isinstance(x, bool)]
-        if len(vals) > 2 and len(ints) == len(vals) and all(b - a == 1 for a, b in zip(ints, ints[1:])):
-            lines.append(f"{name} = {int(ints[0])}:{int(ints[-1])}")
-        else:
-            line = f"{name} = "
-            for j, t in enumerate(texts):
-                item = t + ("," if j < len(texts) - 1 else "")
-                if len(line) + len(item) + 1 > _SWEEP_LINE_MAX and line.strip() and not line.endswith("= "):
-                    lines.append(line.rstrip())
-                    line = "    "
-                line += item + " "
-            lines.append(line.rstrip())
-        key_bytes[k] = sum(len(x) + 1 for x in lines[n_lines:])
-        if any(len(x) > _SWEEP_LINE_MAX for x in lines):  # one value longer than a line
-            raise GranwaveValueError(f"sweep() grid: '{_line(k)}': a value takes "
-                                     f"{max(len(t) for t in texts)} characters, "
-                                     f"above the {_SWEEP_LINE_MAX} of a line of the library's config reader", GW_EINVAL)
+            _grid_lines(model, m, k, v, lines, axes, key_bytes)
+        except GranwaveValueError as e:
+            raise _in_section(e, "grid") from None
     lines.append("[params]")
     for k, v in params.items():
         if v is None:
@@ -273,6 +293,8 @@ def run_sweep(model, grid, params, jobs, progress):
             lines.append(f"{name} = {_ini_value(k, v, _sweep_rows(model, m, k))}")
         except TypeError as e:
             raise TypeError(f"sweep(): '{_line(k)}': {e}") from None
+        except GranwaveValueError as e:
+            raise _in_section(e, "params") from None
         if len(lines[-1]) > _SWEEP_LINE_MAX:  # a long path: "sweep:6: a line of ..." before
             raise GranwaveValueError(f"sweep(): '{_line(k)}': its value takes {len(lines[-1])} "
                                      f"characters on the sweep's "

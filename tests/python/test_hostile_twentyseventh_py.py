@@ -41,7 +41,7 @@ def test_sweep_runs_a_sample_whose_name_is_not_utf8(sample, tmp_path):
 @pytest.mark.parametrize("grid, params, key", [({"vimp": ["0.3\udcff"]}, {}, "vimp"),
                                                ({"n": [2]}, {"solver": "rk4\udcff"}, "solver")])
 def test_sweep_value_that_cannot_be_encoded_is_named(grid, params, key):
-    with pytest.raises(granwave.GranwaveValueError, match=rf"^{key}: .* cannot be encoded"):
+    with pytest.raises(granwave.GranwaveValueError, match=rf"^sweep: \[(grid|params)\] {key}: .* cannot be encoded"):
         granwave.sweep("chain", grid=grid, **params)
 
 
@@ -51,9 +51,9 @@ def test_sweep_sample_with_blanks_around_it_is_refused(sample, tmp_path, spelt):
     # sweep ran it before
     name = spelt.format(sample)
     assert not os.path.exists(name) and os.path.exists(name.strip())
-    with pytest.raises(ValueError, match=r"^sample: value .* begins or ends with a blank"):
+    with pytest.raises(ValueError, match=r"^sweep: \[params\] sample: value .* begins or ends with a blank"):
         granwave.sweep("layer", grid={"vi": [20]}, sample=name, t_max=2e-3, jobs=1)
-    with pytest.raises(ValueError, match=r"^sample: value .* begins or ends with a blank"):
+    with pytest.raises(ValueError, match=r"^sweep: \[grid\] sample: value .* begins or ends with a blank"):
         granwave.sweep("layer", grid={"sample": [name]}, vi=20, t_max=2e-3, jobs=1)
     with pytest.raises(granwave.GranwaveIOError, match="cannot open"):  # the study opens the name as given
         granwave.layer_impact(sample=name, vi=20, t_max=2e-3)

@@ -26,9 +26,9 @@ import granwave
 
 
 def test_a_list_item_beyond_a_double_is_refused_by_keyword():
-    with pytest.raises(granwave.GranwaveValueError, match=r"^chain: radii: '1148130695274254524232833201177"):
+    with pytest.raises(granwave.GranwaveValueError, match=r"^chain: radii: '11481306952742545242\.\.\.' \(603 characters\) is not a finite"):
         granwave.chain(n=2, radii=[1e-3, 2**2000])
-    with pytest.raises(granwave.GranwaveValueError, match=r"^falcon: vimp: '-1797693134862315907729305190789"):
+    with pytest.raises(granwave.GranwaveValueError, match=r"^falcon: vimp: '-1797693134862315907\.\.\.' \(310 characters\) is not a finite"):
         granwave.falcon(n=(2, 3), vimp=[0.3, -(2**1024)], heights=[])
     # integers in a list still run as their value (an exact float: the same digits)
     a = granwave.chain(n=2, radii=[np.int64(1), 1e-3])
@@ -100,12 +100,12 @@ REFUSED = [
     ("layer_make", dict(n=20, seed=2**64), ValueError, "layer_make: seed: 18446744073709551616 is outside"),
     ("layer_stats", dict(input="{d}/fifo"), ValueError, "layer_stats: sweep table: {d}/fifo is a FIFO"),
     ("layer_stats", dict(input=3), TypeError, "layer_stats: input: expected a str or a path"),
-    ("sweep", dict(model="chain", grid={"n": np.array([])}), ValueError, "n: empty list of grid values"),
+    ("sweep", dict(model="chain", grid={"n": np.array([])}), ValueError, "sweep: [grid] n: empty list of grid values"),
     ("sweep", dict(model="chain", grid={"n": np.array(2)}), TypeError, "sweep() grid: 'n': expected a list"),
     ("sweep", dict(model="chain", grid={"n": [2]}, jobs=1.0), TypeError, "sweep(): jobs must be an integer"),
     ("sweep", dict(model="chain", grid={"n": [2]}, jobs=np.int64(2**40)), ValueError, "sweep: jobs: 1099511627776"),
-    ("sweep", dict(model="chain", grid={"vimp": ["0.3;x"]}), ValueError, "vimp: value '0.3;x' cannot go into"),
-    ("sweep", dict(model="chain", grid={"n": [2]}, solver="rk4\n[grid]\nn=9"), ValueError, "solver: value"),
+    ("sweep", dict(model="chain", grid={"vimp": ["0.3;x"]}), ValueError, "sweep: [grid] vimp: value '0.3;x' cannot go into"),
+    ("sweep", dict(model="chain", grid={"n": [2]}, solver="rk4\n[grid]\nn=9"), ValueError, "sweep: [params] solver: value"),
     ("sweep", dict(model="chain", grid={"n": [2, 2.0]}), ValueError, "sweep: n: '2' and '2.0'"),
     ("sweep", dict(model="chain", grid={"vimp": [float("nan")]}), ValueError, "sweep: [grid] vimp: 'nan' is not"),
     ("sweep", dict(model="chain", grid=[("n", [2])]), TypeError, "sweep(): grid must be a dict"),

@@ -1009,6 +1009,14 @@ int chain_result_chatter_info(const gw_chain_result *r, chain_chatter_info *info
     return i.kind;
 }
 
+double chain_result_chatter_value(const gw_chain_result *r)
+{
+    chain_chatter_info c;
+    const int kind = chain_result_chatter_info(r, &c);
+    return kind == CHAIN_CHATTER_MOVED ? c.spread : kind == CHAIN_CHATTER_COSTLY ? -1.0
+                                                  : kind == CHAIN_CHATTER_FAILED ? -2.0 : 0.0;
+}
+
 const char *chain_result_column_pending(const gw_chain_result *r)
 {
     if (!r || !r->final_v || r->n < 1 || r->converged || !made_find(r->final_v, r->n, 0))

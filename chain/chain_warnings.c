@@ -285,22 +285,27 @@ int chain_chatter_cases_warning(long moved, long costly, long failed, long total
     const long n = moved + costly + failed;
     if (n <= 0)
         return GW_OK;
-    char a[160] = "", b[200] = "", c[64] = "";
+    char a[160] = "", b[200] = "", c[64] = "", up[48] = "";
+    if (contacts > 0) /* a sweep's rows hold no count of contacts */
+        gw_snprintf(up, sizeof up, "up to %d wall contacts", contacts);
     if (moved > 0)
         gw_snprintf(a, sizeof a, "; in %ld a rerun at 10 times tighter tolerances (rk4: half the step) moved "
                     "eps_eff by up to %.3g", moved, spread);
-    if (costly > 0)
+    if (costly > 0 && work > 0)
         gw_snprintf(b, sizeof b, "; %ld too costly to run again (up to %.3g steps times beads, above %.3g), their "
                     "spread unmeasured", costly, work, CHAIN_CHATTER_WORK);
+    else if (costly > 0) /* a sweep's rows: the steps alone */
+        gw_snprintf(b, sizeof b, "; %ld too costly to run again (steps times beads above %.3g), their spread "
+                    "unmeasured", costly, CHAIN_CHATTER_WORK);
     if (failed > 0)
         gw_snprintf(c, sizeof c, "; %ld whose rerun failed", failed);
     return gw_warnings_add(list,
-                           "bead 1 chattered on the sensor body in %ld of %ld %s (up to %d wall contacts%s)%s%s%s: "
+                           "bead 1 chattered on the sensor body in %ld of %ld %s (%s%s%s)%s%s%s: "
                            "the chatter amplifies the integration's error, and their final velocities, restitution "
                            "and tau_N, and what is fitted over them, move with dt-out and the tolerances; a "
                            "stiffer, heavier or damped sensor body (--sensor-stiffness, --sensor-mass, "
                            "--sensor-damping) chatters less",
-                           n, total, what, contacts, first, a, b, c);
+                           n, total, what, up, up[0] && first[0] ? "; " : "", first[0] ? first + 2 : "", a, b, c);
 }
 
 static int tally_chatter_warning(const chain_dt_tally *t, const char *what, char **list)

@@ -15,7 +15,8 @@
 #    says nothing.
 #  3 A chain sweep's cases: a chatter column (the spread a rerun measured, -1
 #    not run again) and one warning line over the rows.
-#  4 Python: chain's result and a study's carry the line (their keywords).
+#  4 Python: chain's result and a study's carry the line (their keywords), a
+#    sweep's result the chatter column and the line.
 # About 16 s of CPU (softwall's 23 collisions the most).
 # Checks that fail on the code before: see docs/tests.md.
 # shellcheck source=refusal_lib.sh
@@ -104,7 +105,7 @@ else
 fi
 
 # --- 4 Python
-py_checks 2 <<'PY'
+py_checks 3 <<'PY'
 r, ws = caught(granwave.chain, n=5, sensor_mass=1e-4, sensor_stiffness=1e3, solver="rk4")
 w = [m for m in ws if "chattered on the sensor body" in m]
 check(len(w) == 1 and "was not run again" in w[0] and "sensor_stiffness" in w[0] and
@@ -114,6 +115,11 @@ r, ws = caught(granwave.falcon, n="4:5", heights="none", sensor_mass=1e-4, senso
 w = [m for m in ws if "chattered on the sensor body" in m]
 check(len(w) == 1 and "in 2 of 2 collisions" in w[0] and len([m for m in r["warnings"] if "chattered" in m]) == 1,
       "4 Python falcon: one line with the count: %s" % [m[:100] for m in w])
+r, ws = caught(granwave.sweep, "chain", grid={"n": [2, 5]}, solver="rk4", sensor_mass=1e-4, sensor_stiffness=1e3,
+               jobs=1)
+w = [m for m in r["warnings"] if "chattered on the sensor body" in m]
+check(list(r.get("chatter", [])) == [-1, -1] and len(w) == 1 and "in 2 of 2 cases" in w[0],
+      "4 Python sweep: the chatter column %s, one line: %s" % (list(r.get("chatter", [])), [m[:100] for m in w]))
 PY
 
 test_summary test_chatter_warned

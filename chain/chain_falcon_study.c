@@ -356,6 +356,15 @@ static int run_traces(gw_chain_falcon_outcome *out, const gw_chain_params *p0, c
         t->dt_max = r.run_dt_max;
         if (rc == GW_OK) /* its own run: the step it took, as the study's (the --dt warning) */
             chain_dt_tally_results(dt_tally, &r, 1);
+        /* a trace stopped at its 5 GB bound while its run went on (cut without a
+           word before); under --accuracy the traces sample every tau_1/50 */
+        if (rc == GW_OK &&
+            chain_trace_cut_warnings(&t->tr, r.t_end,
+                                     out->accuracy > 0 ? "--dt-out (given with --accuracy 0: under --accuracy the "
+                                                         "traces sample every tau_1/50)"
+                                                       : "--dt-out",
+                                     &out->warnings) != GW_OK)
+            rc = gw_err_set(err, GW_ENOMEM, "falcon: out of memory");
         gw_chain_result_free(&r);
         gw_chain_free(c);
         if (rc != GW_OK) {

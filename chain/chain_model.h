@@ -177,6 +177,25 @@ const char *chain_result_column_pending(const gw_chain_result *r);
  * tighter tolerances measured (chain_collide.c, chatter_spread); "" when none. */
 #define CHAIN_CHATTER_TEXT 512
 const char *chain_result_chatter(const gw_chain_result *r);
+/* What chatter_spread found of a run, kept after the chatter's text (a
+ * study's and a sweep's count of their chattering columns): bead 1's wall
+ * contacts, and the spread a rerun measured or why none was measured. */
+enum {
+    CHAIN_CHATTER_NONE,   /* no chatter, or a rerun that agreed within 1e-6 */
+    CHAIN_CHATTER_MOVED,  /* a rerun at tighter tolerances moved eps_eff by spread */
+    CHAIN_CHATTER_COSTLY, /* too costly to run again (work: steps times beads above 1e6) */
+    CHAIN_CHATTER_FAILED  /* its rerun failed */
+};
+typedef struct chain_chatter_info {
+    int kind;      /* CHAIN_CHATTER_* */
+    int contacts;  /* bead 1's wall contacts */
+    double spread; /* |eps_eff - the rerun's| (MOVED) */
+    double work;   /* the run's steps times beads */
+} chain_chatter_info;
+/* r's chatter into *info (zeroed: none); its kind. */
+int chain_result_chatter_info(const gw_chain_result *r, chain_chatter_info *info);
+/* The work (steps times beads) up to which a chattering run is run again. */
+#define CHAIN_CHATTER_WORK 1e6
 /* How far a run at the default t_max t_default (20 expected lengths) goes on
  * when it has not ended there (chain_collide.c, extend_run), sampled at dt_ext
  * past it, for n beads: t_default plus at most 49 t_default, 5e6 samples and,
@@ -238,6 +257,10 @@ typedef struct chain_dt_tally {
     int at_out;                /* of over, those whose step was rk4's dt_out (below dt_max) */
     int overlap_over;          /* runs whose largest overlap passed the bead radius */
     double overlap_hi;         /* the largest of their overlaps, in bead radii */
+    int chatter[4];            /* runs by their chatter's kind (CHAIN_CHATTER_*; [0] unused) */
+    int chatter_contacts;      /* the most wall contacts of a chattering run */
+    double chatter_spread;     /* the largest spread a rerun measured */
+    double chatter_work;       /* the largest work of a run too costly to run again */
 } chain_dt_tally;
 /* One run into t: given the dt given (0: none), taken the step it took,
  * dt_max its largest step (s). t starts zeroed. */
@@ -256,6 +279,13 @@ void chain_dt_tally_results(chain_dt_tally *t, const gw_chain_result *res, long 
  * drop say it of their one run; falcon, wavespeed and softwall said nothing
  * of collisions pressed 300 radii deep). chain_dt_tally_results adds it. */
 void chain_dt_tally_overlap(chain_dt_tally *t, double overlap_rel);
+/* Runs whose bead 1 chattered on a sensor body, in one line with their count
+ * (chain_dt_tally_warnings says it of a study's tally, a sweep of its rows'
+ * chatter column): moved, costly, failed by kind (chain_chatter_info) of total
+ * runs named what, the most wall contacts, the largest spread measured and
+ * the largest work not run again; first "" or "; the first, case K". */
+int chain_chatter_cases_warning(long moved, long costly, long failed, long total, int contacts, double spread,
+                                double work, const char *what, const char *first, char **list);
 
 /* Append speed v to the list in buf ("0.3, 6.16"; "..." once it is full),
  * counting in *count. */

@@ -13,13 +13,14 @@
 #include "chain_wall.h"
 #include "chain_watch.h"
 #include "gw_chain_study.h"
+#include "gw_locale.h"
 #include "gw_sweep.h"
 #include "gw_sweep_impl.h"
 
 static const char *const columns[] = {"f_max", "tau_max", "tau_n", "period", "eps_eff", "eps_col",
                                       "e_rel_over_e_k", "n_s", "energy_error", "steps", "converged",
-                                      "overlap_max_rel"};
-enum { COL_ENERGY = 8, COL_OVERLAP = 11 }; /* their places in columns */
+                                      "overlap_max_rel", "chatter"};
+enum { COL_ENERGY = 8, COL_OVERLAP = 11, COL_CHATTER = 12 }; /* their places in columns */
 
 static int has_key(const char *name)
 {
@@ -173,7 +174,8 @@ int gw_chain_sweep_run_part(int nk, const char *const *names, const char *const 
     if (rc == GW_OK) {
         const gw_chain_result *r = &c.r;
         double v[] = {r->f_max, r->tau_max, r->tau_n, r->period, r->eps_eff, r->eps_col, r->e_rel_over_e_k,
-                      r->n_s, r->energy_error, (double)r->stats.steps, r->converged, r->overlap_max_rel};
+                      r->n_s, r->energy_error, (double)r->stats.steps, r->converged, r->overlap_max_rel,
+                      chain_result_chatter_value(r)};
         memcpy(out, v, sizeof v);
     }
     gw_chain_collision_free(&c);
@@ -194,6 +196,8 @@ static int run(int nk, const char *const *names, const char *const *values, doub
 typedef struct rows_acc {
     long total, over, over_first, energy, energy_first;
     double over_hi, energy_hi;
+    long moved, costly, failed, chatter_first; /* bead 1 chattered on the sensor body (chatter column) */
+    double spread_hi;
 } rows_acc;
 
 /* case k's energy-tol, as its run took it (0: off; the default) */
@@ -221,6 +225,17 @@ static void rows_row(void *acc, const gw_sweep_config *cfg, long k, const double
             a->over_first = k, a->over_hi = ov;
         a->over_hi = fmax(a->over_hi, ov);
     }
+    /* the chatter column: the spread a rerun measured, -1 not run again, -2 its rerun failed */
+    const double ch = row[COL_CHATTER];
+    if (ch > 0 || ch == -1 || ch == -2) {
+        if (a->moved + a->costly + a->failed == 0)
+            a->chatter_first = k;
+        a->moved += ch > 0;
+        a->costly += ch == -1;
+        a->failed += ch == -2;
+        if (ch > 0)
+            a->spread_hi = fmax(a->spread_hi, ch);
+    }
     /* a case with energy-tol on stopped at its bound; one below it ran on */
     if (ee > GW_CHAIN_ENERGY_WARN && !(case_energy_tol(cfg, k) > 0)) {
         if (a->energy++ == 0)
@@ -234,7 +249,12 @@ static int rows_warnings(const void *acc, const gw_sweep_config *cfg, char **lis
     (void)cfg;
     const rows_acc *a = acc;
     int rc = chain_overlap_cases_warning(a->over, a->total, a->over_hi, a->over_first, list);
-    return rc == GW_OK ? chain_energy_cases_warning(a->energy, a->total, a->energy_hi, a->energy_first, list) : rc;
+    rc = rc == GW_OK ? chain_energy_cases_warning(a->energy, a->total, a->energy_hi, a->energy_first, list) : rc;
+    char first[80];
+    gw_snprintf(first, sizeof first, "; the first, case %ld; their chatter column", a->chatter_first);
+    return rc == GW_OK ? chain_chatter_cases_warning(a->moved, a->costly, a->failed, a->total, 0, a->spread_hi, 0,
+                                                     "cases", first, list)
+                       : rc;
 }
 
 static const gw_sweep_rows_rule rows_rule = {sizeof(rows_acc), rows_row, rows_warnings};

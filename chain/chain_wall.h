@@ -106,6 +106,11 @@ int chain_energy_warning(double energy_error, const gw_chain_run_opts *o, char *
  * single run's warnings, one line over the cases; nothing for n <= 0. */
 int chain_overlap_cases_warning(long n, long total, double hi, long first, char **list);
 int chain_energy_cases_warning(long n, long total, double hi, long first, char **list);
+/* r's chatter on a sensor body as a number (a sweep's chatter column, chain
+ * --json "chatter"): 0 none (or a rerun that agreed within 1e-6), the change
+ * of eps_eff a rerun at tighter tolerances measured, -1 a run too costly to
+ * run again (its spread unmeasured), -2 one whose rerun failed. */
+double chain_result_chatter_value(const gw_chain_result *r);
 /* A stored trace that stopped at its bound (5 GB of files) while the run went
  * on past its last row (chain_trace_cut, chain_trace.c): a warning giving where
  * it stops and naming dt_name (NULL: "--dt-out"); nothing when not cut. */

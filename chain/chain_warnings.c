@@ -295,12 +295,70 @@ void chain_dt_tally_overlap(chain_dt_tally *t, double overlap_rel)
     t->overlap_over++;
 }
 
+/* A run's chatter on a sensor body (chain_result_chatter_info) into t */
+static void tally_chatter(chain_dt_tally *t, const gw_chain_result *r)
+{
+    chain_chatter_info c;
+    const int kind = chain_result_chatter_info(r, &c);
+    if (kind == CHAIN_CHATTER_NONE)
+        return;
+    t->chatter[kind]++;
+    t->chatter_contacts = c.contacts > t->chatter_contacts ? c.contacts : t->chatter_contacts;
+    if (kind == CHAIN_CHATTER_MOVED)
+        t->chatter_spread = fmax(t->chatter_spread, c.spread);
+    if (kind == CHAIN_CHATTER_COSTLY)
+        t->chatter_work = fmax(t->chatter_work, c.work);
+}
+
 void chain_dt_tally_results(chain_dt_tally *t, const gw_chain_result *res, long n)
 {
     for (long i = 0; res && i < n; i++) {
         chain_dt_tally_add(t, res[i].run_dt_given, res[i].run_dt, res[i].run_dt_max);
         chain_dt_tally_overlap(t, res[i].overlap_max_rel);
+        tally_chatter(t, &res[i]);
     }
+}
+
+/* The runs of a study whose bead 1 chattered on the sensor body, in one line
+ * with their count (each said its own in the single run's warnings, which a
+ * study dropped: falcon, wavespeed and softwall ran the cheap ones again and
+ * said nothing of what the reruns measured, nor of the costly ones). first:
+ * "" or "; the first, case K" of a sweep; moved, costly, failed: the counts
+ * by kind. GW_OK or GW_ENOMEM. */
+int chain_chatter_cases_warning(long moved, long costly, long failed, long total, int contacts, double spread,
+                                double work, const char *what, const char *first, char **list)
+{
+    const long n = moved + costly + failed;
+    if (n <= 0)
+        return GW_OK;
+    char a[160] = "", b[200] = "", c[64] = "", up[48] = "";
+    if (contacts > 0) /* a sweep's rows hold no count of contacts */
+        gw_snprintf(up, sizeof up, "up to %d wall contacts", contacts);
+    if (moved > 0)
+        gw_snprintf(a, sizeof a, "; in %ld a rerun at 10 times tighter tolerances (rk4: half the step) moved "
+                    "eps_eff by up to %.3g", moved, spread);
+    if (costly > 0 && work > 0)
+        gw_snprintf(b, sizeof b, "; %ld too costly to run again (up to %.3g steps times beads, above %.3g), their "
+                    "spread unmeasured", costly, work, CHAIN_CHATTER_WORK);
+    else if (costly > 0) /* a sweep's rows: the steps alone */
+        gw_snprintf(b, sizeof b, "; %ld too costly to run again (steps times beads above %.3g), their spread "
+                    "unmeasured", costly, CHAIN_CHATTER_WORK);
+    if (failed > 0)
+        gw_snprintf(c, sizeof c, "; %ld whose rerun failed", failed);
+    return gw_warnings_add(list,
+                           "bead 1 chattered on the sensor body in %ld of %ld %s (%s%s%s)%s%s%s: "
+                           "the chatter amplifies the integration's error, and their final velocities, restitution "
+                           "and tau_N, and what is fitted over them, move with dt-out and the tolerances; a "
+                           "stiffer, heavier or damped sensor body (--sensor-stiffness, --sensor-mass, "
+                           "--sensor-damping) chatters less",
+                           n, total, what, up, up[0] && first[0] ? "; " : "", first[0] ? first + 2 : "", a, b, c);
+}
+
+static int tally_chatter_warning(const chain_dt_tally *t, const char *what, char **list)
+{
+    return chain_chatter_cases_warning(t->chatter[CHAIN_CHATTER_MOVED], t->chatter[CHAIN_CHATTER_COSTLY],
+                                       t->chatter[CHAIN_CHATTER_FAILED], t->total, t->chatter_contacts,
+                                       t->chatter_spread, t->chatter_work, what, "", list);
 }
 
 /* The runs of a study pressed beyond one radius (overlap_warning's line, with
@@ -363,8 +421,9 @@ int chain_dt_tally_warnings(const chain_dt_tally *t, const char *name, const cha
 {
     if (!t || !name)
         return GW_OK;
-    const int rc = dt_tally_line(t, name, what, list);
-    return rc == GW_OK ? tally_overlap_warning(t, what, list) : rc;
+    int rc = dt_tally_line(t, name, what, list);
+    rc = rc == GW_OK ? tally_overlap_warning(t, what, list) : rc;
+    return rc == GW_OK ? tally_chatter_warning(t, what, list) : rc;
 }
 
 static int dt_tally_line(const chain_dt_tally *t, const char *name, const char *what, char **list)

@@ -13,6 +13,10 @@
  *    bound lowered (chain_trace_limit_set) to rows that the check passes, the
  *    trace now stops at the bound, the run goes on to its end, and the warning
  *    says where the trace stops and names --dt-out.
+ * 3. falcon's stored force traces (N = 7, 15, 30) were bounded the same way
+ *    and cut there without a word: with the bound lowered below the N = 7
+ *    trace's rows, the study's warnings say where it stops (none at the 5 GB
+ *    bound, where the whole trace is kept).
  */
 #include <math.h>
 #include <stdlib.h>
@@ -21,6 +25,8 @@
 #include "chain_test_util.h"
 #include "chain_model.h"
 #include "chain_wall.h"
+#include "gw_chain_study.h"
+#include "gw_param.h"
 #include "gw_test.h"
 
 static int run(gw_chain_params p, gw_chain_run_opts *o, gw_chain_result *r, char **w)
@@ -51,6 +57,27 @@ static double rerun_eps(const char *w)
 {
     const char *s = w ? strstr(w, "gave eps_eff ") : NULL;
     return s ? strtod(s + 13, NULL) : NAN;
+}
+
+/* falcon --n 6:7 --heights none on a 1e-3 kg body, its N = 7 trace kept (C
+ * only: setup.traces); GW_OK or the run's code */
+static int falcon_traces(gw_chain_falcon_outcome *o)
+{
+    const gw_param *t = gw_chain_falcon_setup_params();
+    gw_chain_falcon_setup s;
+    gw_err err = {{0}};
+    int rc = gw_chain_falcon_setup_init(&s);
+    const char *set[][2] = {{"n", "6:7"},           {"vimp", "0.3"}, {"heights", "none"},
+                            {"sensor_mass", "1e-3"}, {"sensor_stiffness", "1e3"}, {"jobs", "1"}};
+    for (size_t i = 0; rc == GW_OK && i < sizeof set / sizeof set[0]; i++)
+        rc = gw_param_set(t, &s, set[i][0], set[i][1], &err);
+    s.traces = 1;
+    if (rc == GW_OK)
+        rc = gw_chain_falcon_run(&s, NULL, NULL, o, &err);
+    if (rc != GW_OK)
+        printf("  falcon: %s\n", err.msg);
+    gw_chain_falcon_setup_clear(&s);
+    return rc;
 }
 
 int main(void)
@@ -142,5 +169,24 @@ int main(void)
     free(w);
     gw_chain_trace_free(&tr);
     gw_chain_trace_free(&full);
+
+    /* 3: falcon's N = 7 trace at the 5 GB bound (whole), then below its rows */
+    gw_chain_falcon_outcome fo;
+    int frc = falcon_traces(&fo);
+    const size_t flen = frc == GW_OK && fo.ntrace == 1 ? fo.trace[0].tr.len : 0;
+    GW_TEST_OK(frc == GW_OK && fo.ntrace == 1 && flen > 1000, "falcon: the N = 7 trace, %zu rows", flen);
+    GW_TEST_OK(frc == GW_OK && !(fo.warnings && strstr(fo.warnings, "stored trace stops")),
+               "falcon: no cut trace at the 5 GB bound");
+    gw_chain_falcon_outcome_free(&fo);
+    const double frows = floor(0.8 * (double)flen);
+    chain_trace_limit_set(frows * (2.0 * 7 + 2) * (GW_HAVE_HDF5 ? 28.0 : 20.0));
+    frc = falcon_traces(&fo);
+    GW_TEST_OK(frc == GW_OK && fo.ntrace == 1 && fo.trace[0].tr.len == (size_t)frows,
+               "falcon: the trace stops at a bound of %g rows", frows);
+    const char *fw = frc == GW_OK && fo.warnings ? strstr(fo.warnings, "the stored trace stops at t = ") : NULL;
+    GW_TEST_OK(fw && strstr(fw, "rows of 7 beads") && strstr(fw, "--dt-out"),
+               "falcon: the warning says where the N = 7 trace stops, naming --dt-out: %.120s", fw ? fw : "(none)");
+    gw_chain_falcon_outcome_free(&fo);
+    chain_trace_limit_set(0);
     return gw_test_summary("test_sensor_chatter");
 }

@@ -39,6 +39,8 @@ cJSON *chain_result_json(const chain_cli *c, const gw_chain_result *r, double wa
     cJSON_AddNumberToObject(o, "eps_col", r->eps_col);
     cJSON_AddNumberToObject(o, "wall_contacts", r->wall_contacts);
     cJSON_AddNumberToObject(o, "overlap_max_rel", r->overlap_max_rel);
+    /* bead 1's chatter on a sensor body, as a sweep's chatter column */
+    cJSON_AddNumberToObject(o, "chatter", chain_result_chatter_value(r));
     cJSON_AddBoolToObject(o, "converged", r->converged);
     cJSON_AddBoolToObject(o, "wall_done", r->wall_done);
     /* why the wall's side is not done (the warning line's reason), null when done */

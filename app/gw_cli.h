@@ -219,5 +219,16 @@ const char *gw_cli_path(char *buf, size_t n, const char *path);
  * directories from path up to made. */
 int gw_cli_mkdir_out(const char *path, char *made, size_t n, gw_err *err);
 void gw_cli_unmake(const char *path, const char *made);
+/* An output set in --out dir, dir made first (gw_cli_mkdir_out; s zeroed,
+ * made "" on a failure, which leaves nothing made), and its end:
+ * gw_cli_outset_end aborts the set (nothing after its commit) and, unless
+ * placed (the commit succeeded), removes the empty directories the begin made,
+ * as a refused run leaves none. Every command's --out set goes through the
+ * pair: chain, drop, dispersion, falcon and wavespeed left an empty --out
+ * NEW (NEW/a/b: three) when a write failed (a full disk, ulimit -f), which
+ * layer-impact alone took back. */
+int gw_cli_outset_begin(gw_outset *s, const char *dir, const char *const *names, char *made, size_t n,
+                        gw_err *err);
+void gw_cli_outset_end(gw_outset *s, const char *dir, const char *made, int placed);
 
 #endif

@@ -284,30 +284,6 @@ void gw_cli_progress_time(gw_cli_progress *p, double t, double t_expect, double 
     p->last = now;
 }
 
-/* Into made: the shallowest directory of path (or path itself) that does not
- * exist yet, "" when path exists. */
-static void first_missing(const char *path, char *made, size_t n)
-{
-    char p[4096];
-    struct stat st;
-    made[0] = '\0';
-    if (snprintf(p, sizeof p, "%s", path) >= (int)sizeof p)
-        return;
-    for (;;) {
-        if (stat(p, &st) == 0)
-            return;
-        snprintf(made, n, "%s", p);
-        char *sl = strrchr(p, '/');
-        while (sl && sl > p && sl[1] == '\0') { /* trailing slashes */
-            *sl = '\0';
-            sl = strrchr(p, '/');
-        }
-        if (!sl || sl == p)
-            return;
-        *sl = '\0';
-    }
-}
-
 /* Remove the empty directories from path up to made (what this run created). */
 void gw_cli_unmake(const char *path, const char *made) { gw_temps_unmake(path, made); }
 
@@ -316,9 +292,28 @@ void gw_cli_unmake(const char *path, const char *made) { gw_temps_unmake(path, m
  * temporaries; before, it stayed, empty (layer-impact --out NEW). */
 int gw_cli_mkdir_out(const char *path, char *made, size_t n, gw_err *err)
 {
-    first_missing(path, made, n);
-    const int rc = gw_mkdir_p(path, err);
-    if (rc == GW_OK && made[0])
-        (void)gw_temps_add_dirs(path, made); /* no slot (out of memory): a signal leaves it, as before */
+    return gw_mkdir_made(path, made, n, err);
+}
+
+int gw_cli_outset_begin(gw_outset *s, const char *dir, const char *const *names, char *made, size_t n,
+                        gw_err *err)
+{
+    memset(s, 0, sizeof *s);
+    int rc = gw_mkdir_made(dir, made, n, err);
+    if (rc == GW_OK && (rc = gw_outset_begin(s, dir, names, err)) != GW_OK && made[0])
+        gw_cli_unmake(dir, made);
+    if (rc != GW_OK)
+        made[0] = '\0';
     return rc;
+}
+
+void gw_cli_outset_end(gw_outset *s, const char *dir, const char *made, int placed)
+{
+    gw_outset_abort(s); /* nothing after a commit: the set is closed */
+    if (dir && made && made[0]) {
+        if (placed)
+            gw_temps_drop(dir); /* it holds this run's files now: no signal takes it */
+        else
+            gw_cli_unmake(dir, made);
+    }
 }

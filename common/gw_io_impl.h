@@ -105,6 +105,14 @@ void gw_temps_unbind(int dirfd);
  * added. gw_temps_drop(path) forgets it. -1: not added (made not a prefix
  * of path, path not a directory, no slot). */
 int gw_temps_add_dirs(const char *path, const char *made);
+/* gw_mkdir_p(path), and into made (n bytes) the shallowest directory of path
+ * that this call created ("" when path existed, or on a failure, which takes
+ * back what it made), handed to the signal handler's table (gw_temps_add_dirs):
+ * a run that then fails or is refused takes it back with gw_temps_unmake(path,
+ * made), empty, where a bare gw_mkdir_p left it (chain, drop, dispersion,
+ * falcon, wavespeed, softwall and layer-stats --out NEW, on a write that
+ * failed: an empty NEW, up to three levels of them for --out NEW/a/b). */
+int gw_mkdir_made(const char *path, char *made, size_t n, gw_err *err);
 /* Forget path (gw_temps_drop) and remove now what the handler would: the
  * empty directories from path up to made. */
 void gw_temps_unmake(const char *path, const char *made);

@@ -189,6 +189,46 @@ int gw_mkdir_p(const char *path, gw_err *err)
     return GW_OK;
 }
 
+/* Into made: the shallowest directory of path (or path itself) that does not
+ * exist yet, "" when path exists (or is too long to look at). */
+static void first_missing(const char *path, char *made, size_t n)
+{
+    char p[4096];
+    struct stat st;
+    made[0] = '\0';
+    if (gw_snprintf(p, sizeof p, "%s", path) >= (int)sizeof p)
+        return;
+    for (;;) {
+        if (stat(p, &st) == 0)
+            return;
+        gw_snprintf(made, n, "%s", p);
+        char *sl = strrchr(p, '/');
+        while (sl && sl > p && sl[1] == '\0') { /* trailing slashes */
+            *sl = '\0';
+            sl = strrchr(p, '/');
+        }
+        if (!sl || sl == p)
+            return;
+        *sl = '\0';
+    }
+}
+
+int gw_mkdir_made(const char *path, char *made, size_t n, gw_err *err)
+{
+    if (!made || n == 0)
+        return gw_err_set(err, GW_EINVAL, "gw_mkdir_made: made is %s", made ? "empty" : "NULL");
+    made[0] = '\0';
+    if (!path)
+        return gw_mkdir_p(path, err);
+    first_missing(path, made, n);
+    const int rc = gw_mkdir_p(path, err);
+    if (rc != GW_OK)
+        made[0] = '\0'; /* gw_mkdir_p took back what it made */
+    else if (made[0])
+        (void)gw_temps_add_dirs(path, made); /* no slot (out of memory): a signal leaves it */
+    return rc;
+}
+
 int gw_path_join(char *buf, size_t n, const char *dir, const char *name)
 {
     if (!buf || !dir || !name)

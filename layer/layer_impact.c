@@ -141,6 +141,16 @@ static double least_mobile_height(const gw_layer_sample *smp, double top)
 
 /* v rounded up to 4 significant digits: a bound a message gives, that the
  * value printed passes */
+/* x over the incident energy e: NaN (null, n/a) when e is no positive normal
+ * double. An impact speed whose (1/2) M V_i^2 underflows (--gap 0 --vi
+ * 1e-300, a block set down on the layer) gave E_d / E_incident = NaN and a
+ * block loss of -inf, printed "-nan" and "-inf" in the text where the JSON
+ * said null. */
+static double over_incident(double x, double e)
+{
+    return e >= DBL_MIN ? x / e : NAN;
+}
+
 static double ceil4(double v)
 {
     if (!(v > 0) || !isfinite(v))
@@ -1124,12 +1134,12 @@ int layer_impact_run(const gw_layer_sample *smp, const gw_layer_params *lp0, con
     if (fc->n_touch < 3 || cut_inside)
         t_min = kb_min = ed_min = edb_min = NAN;
     res->t_first_contact = t_min;
-    res->dissipated_first_contact = ed_min / res->e_incident;
-    res->dissipated_first_contact_block = edb_min / res->e_incident;
-    res->block_loss_first_contact = (res->ledger[0].kinetic_block - kb_min) / res->e_incident;
+    res->dissipated_first_contact = over_incident(ed_min, res->e_incident);
+    res->dissipated_first_contact_block = over_incident(edb_min, res->e_incident);
+    res->block_loss_first_contact = over_incident(res->ledger[0].kinetic_block - kb_min, res->e_incident);
     res->t_contact_open = t_open;
-    res->dissipated_contact_open = ed_open / res->e_incident;
-    res->block_loss_contact_open = (res->ledger[0].kinetic_block - kb_open) / res->e_incident;
+    res->dissipated_contact_open = over_incident(ed_open, res->e_incident);
+    res->block_loss_contact_open = over_incident(res->ledger[0].kinetic_block - kb_open, res->e_incident);
     gw_layer_free(L);
     /* the crowns from the checks' series when dt-out is coarser (crown_series) */
     rc = grid ? layer_crowns_series(res, crowns.t, crowns.strain, crowns.kin, crowns.n)

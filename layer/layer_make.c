@@ -148,6 +148,13 @@ static int check_clump_flat(const gw_layer_make_params *m, gw_err *err)
                       lj + 1, m->n, m->seed, len / m->rm, lreq / m->rm, lasp, need / m->rm, wb);
 }
 
+/* v rounded up to four significant digits: a bound printed as one to give */
+static double ceil_sig4(double v)
+{
+    const double e = pow(10, floor(log10(v)) - 3);
+    return ceil(v / e) * e;
+}
+
 static int check_make(const gw_layer_make_params *m, gw_err *err)
 {
     int rc;
@@ -168,8 +175,13 @@ static int check_make(const gw_layer_make_params *m, gw_err *err)
         return gw_err_set(err, GW_EINVAL, "dt: a step of %g s takes %.3g steps to t-max = %g s, more than 1e9 "
                           "(raise dt or lower t-max)", m->dt, m->t_max / m->dt, m->t_max);
     double rmax = m->rm * 2 * cbrt(m->volume_ratio) / (1 + cbrt(m->volume_ratio));
+    /* the bound said "narrower than one particle" from 2.2 R_m down, where
+     * one disc of --volume-ratio 1 (2 R_m across) fits, and printed 2.0000001
+     * as "2": the rule and the value given, as they are */
     if (m->width_rm * m->rm < 2.2 * rmax)
-        return gw_err_set(err, GW_EINVAL, "width-rm: %g R_m is narrower than one particle", m->width_rm);
+        return gw_err_set(err, GW_EINVAL, "width-rm: %.9g R_m is narrower than 1.1 times the largest particle's "
+                          "diameter (%.4g R_m at volume-ratio %g): give at least %.4g", m->width_rm,
+                          2 * rmax / m->rm, m->volume_ratio, ceil_sig4(2.2 * rmax / m->rm));
     return m->clumps ? check_clump_flat(m, err) : GW_OK;
 }
 

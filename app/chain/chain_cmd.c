@@ -216,14 +216,16 @@ int gw_cmd_chain(int argc, char **argv)
             cJSON_AddStringToObject(o, "error", err.msg);
             gw_outset set; /* the earlier run's chain.json goes: these are this run's files */
             memset(&set, 0, sizeof set);
+            char made[4096] = ""; /* the first directory of --out this run creates */
             if ((!hdr && gw_err_set(&werr, GW_ENOMEM, "out of memory") != GW_OK) ||
-                gw_mkdir_p(c.out, &werr) != GW_OK || gw_outset_begin(&set, c.out, chain_files, &werr) != GW_OK ||
+                gw_cli_outset_begin(&set, c.out, chain_files, made, sizeof made, &werr) != GW_OK ||
                 gw_chain_trace_write(&tr, c.out, "chain", hdr, &werr) != GW_OK ||
                 gw_path_join(path, sizeof path, c.out, "chain_failure.json") != GW_OK ||
                 gw_json_write(path, o, &werr) != GW_OK || gw_outset_commit(&set, &werr) != GW_OK) {
-                gw_outset_abort(&set);
+                gw_cli_outset_end(&set, c.out, made, 0);
                 fprintf(stderr, "granwave chain --out: %s\n", werr.msg);
             } else {
+                gw_cli_outset_end(&set, c.out, made, 1);
                 char q[GW_CLI_PATH_TEXT];
                 fprintf(stderr, "granwave chain: state at t = %.9g s and the trace so far are in %s\n", r.t_end,
                         gw_cli_path(q, sizeof q, c.out));
@@ -249,15 +251,17 @@ int gw_cmd_chain(int argc, char **argv)
             gw_cli_json_warnings(o, w);
             gw_outset set; /* all of this run's files, or (a write failed) the earlier run's as they were */
             memset(&set, 0, sizeof set);
+            char made[4096] = ""; /* the first directory of --out this run creates, taken back on a failure */
             if ((!hdr && gw_err_set(&err, GW_ENOMEM, "out of memory") != GW_OK) ||
-                gw_mkdir_p(c.out, &err) != GW_OK || gw_outset_begin(&set, c.out, chain_files, &err) != GW_OK ||
+                gw_cli_outset_begin(&set, c.out, chain_files, made, sizeof made, &err) != GW_OK ||
                 gw_chain_trace_write(&tr, c.out, "chain", hdr, &err) != GW_OK ||
                 gw_path_join(path, sizeof path, c.out, "chain.json") != GW_OK ||
                 gw_json_write(path, o, &err) != GW_OK || gw_outset_commit(&set, &err) != GW_OK) {
-                gw_outset_abort(&set);
+                gw_cli_outset_end(&set, c.out, made, 0);
                 fprintf(stderr, "granwave chain --out: %s\n", err.msg);
                 code = 1;
-            }
+            } else
+                gw_cli_outset_end(&set, c.out, made, 1);
             cJSON_Delete(o);
             free(hdr);
         }

@@ -304,10 +304,8 @@ static int disp_write_out(const char *dir, const char *hdr, const cJSON *o,
 {
     char path[4096];
     gw_outset oset; /* this run's files, all (the --column-n run's wall_spectrum.csv goes), or none */
-    memset(&oset, 0, sizeof oset);
-    int rc = gw_mkdir_p(dir, err);
-    if (rc == GW_OK)
-        rc = gw_outset_begin(&oset, dir, disp_files, err);
+    char made[4096] = ""; /* the first directory of --out this run creates, taken back on a failure */
+    int rc = gw_cli_outset_begin(&oset, dir, disp_files, made, sizeof made, err);
     if (rc == GW_OK)
         rc = write_csv(dir, "dispersion_ridge.csv", hdr, ridge_body, r, err);
     if (rc == GW_OK)
@@ -318,7 +316,7 @@ static int disp_write_out(const char *dir, const char *hdr, const cJSON *o,
         rc = gw_json_write(path, o, err);
     if (rc == GW_OK)
         rc = gw_outset_commit(&oset, err);
-    gw_outset_abort(&oset);
+    gw_cli_outset_end(&oset, dir, made, rc == GW_OK);
     return rc;
 }
 
@@ -427,17 +425,19 @@ static int disp_column(const disp_cli *c, const gw_opt *opts, int argc, char **a
         gw_outset oset; /* the study's files of an earlier run go when this one is placed */
         memset(&oset, 0, sizeof oset);
         char jpath[4096]; /* dispersion.json: the --json object, as every command's --out */
+        char made[4096] = ""; /* the first directory of --out this run creates, taken back on a failure */
         if (c->out && (!hdr ? gw_err_set(&err, GW_ENOMEM, "out of memory") != GW_OK :
-                       gw_mkdir_p(c->out, &err) != GW_OK || gw_outset_begin(&oset, c->out, disp_files, &err) != GW_OK ||
+                       gw_cli_outset_begin(&oset, c->out, disp_files, made, sizeof made, &err) != GW_OK ||
                        write_csv(c->out, "wall_spectrum.csv", hdr ? hdr : "", spectrum_body, &sp, &err) != GW_OK ||
                        (gw_path_join(jpath, sizeof jpath, c->out, "dispersion.json") != GW_OK &&
                         gw_err_set(&err, GW_EINVAL, "%s: path too long", c->out) != GW_OK) ||
                        gw_json_write(jpath, js, &err) != GW_OK ||
                        gw_outset_commit(&oset, &err) != GW_OK)) {
-            gw_outset_abort(&oset);
+            gw_cli_outset_end(&oset, c->out, made, 0);
             fprintf(stderr, "granwave dispersion --out: %s\n", err.msg);
             code = 1;
-        }
+        } else if (c->out)
+            gw_cli_outset_end(&oset, c->out, made, 1);
         if (code == 0 && c->json)
             code = gw_cli_json_stdout("dispersion", js);
         else if (code == 0) {

@@ -300,11 +300,8 @@ static int write_outputs(const drop_cli *d, const gw_chain_drop_result *r, const
     char path[4096];
     /* this run's files all in place, or (a write failed) the earlier run's as they were */
     gw_outset oset;
-    int rc = gw_mkdir_p(d->c.out, err);
-    if (rc == GW_OK)
-        rc = gw_outset_begin(&oset, d->c.out, drop_files, err);
-    else
-        memset(&oset, 0, sizeof oset);
+    char made[4096] = ""; /* the first directory of --out this run creates, taken back on a failure */
+    int rc = gw_cli_outset_begin(&oset, d->c.out, drop_files, made, sizeof made, err);
     if (rc == GW_OK)
         rc = gw_chain_trace_write(tr, d->c.out, "drop", hdr, err);
     if (rc == GW_OK)
@@ -320,7 +317,7 @@ static int write_outputs(const drop_cli *d, const gw_chain_drop_result *r, const
     }
     if (rc == GW_OK)
         rc = gw_outset_commit(&oset, err);
-    gw_outset_abort(&oset);
+    gw_cli_outset_end(&oset, d->c.out, made, rc == GW_OK);
     free(hdr);
     return rc;
 }

@@ -320,9 +320,9 @@ int gw_cmd_falcon(int argc, char **argv)
         char path[4096];
         gw_outset oset; /* all of this run's files in place, or none (and the earlier run's as they were) */
         memset(&oset, 0, sizeof oset);
-        rc = hdr ? gw_mkdir_p(f.c.out, &err) : gw_err_set(&err, GW_ENOMEM, "out of memory");
-        if (rc == GW_OK)
-            rc = gw_outset_begin(&oset, f.c.out, falcon_files, &err);
+        char made[4096] = ""; /* the first directory of --out this run creates, taken back on a failure */
+        rc = hdr ? gw_cli_outset_begin(&oset, f.c.out, falcon_files, made, sizeof made, &err)
+                 : gw_err_set(&err, GW_ENOMEM, "out of memory");
         if (rc == GW_OK)
             rc = write_tables(&f, f.c.out, hdr, &err);
         if (rc == GW_OK)
@@ -333,7 +333,7 @@ int gw_cmd_falcon(int argc, char **argv)
             rc = falcon_write_report(&f, path, &err);
         if (rc == GW_OK)
             rc = gw_outset_commit(&oset, &err);
-        gw_outset_abort(&oset);
+        gw_cli_outset_end(&oset, f.c.out, made, rc == GW_OK);
         free(hdr);
         if (rc != GW_OK) {
             fprintf(stderr, "granwave falcon --out: %s\n", err.msg);

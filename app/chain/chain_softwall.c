@@ -210,11 +210,16 @@ int gw_cmd_softwall(int argc, char **argv)
         chain_cli_settings_runs(set, so.ncase, so.t_max, so.dt_out, so.dt, so.dt_max);
         cJSON_AddItemToObject(o, "settings", set);
         char path[4096];
-        if (c.out && (gw_mkdir_p(c.out, &err) != GW_OK || gw_path_join(path, sizeof path, c.out, sw_files[0]) != GW_OK ||
+        char made[4096] = ""; /* the first directory of --out this run creates, taken back on a failure */
+        if (c.out && (gw_cli_mkdir_out(c.out, made, sizeof made, &err) != GW_OK ||
+                      gw_path_join(path, sizeof path, c.out, sw_files[0]) != GW_OK ||
                       gw_json_write(path, o, &err) != GW_OK)) {
+            if (made[0])
+                gw_cli_unmake(c.out, made);
             fprintf(stderr, "granwave softwall --out: %s\n", err.msg);
             code = 1;
-        }
+        } else if (c.out && made[0])
+            gw_cli_outset_end(NULL, c.out, made, 1);
         if (code == 0 && c.json) {
             code = gw_cli_json_stdout("softwall", o);
         } else if (code == 0) {

@@ -168,8 +168,9 @@ int gw_cmd_wavespeed(int argc, char **argv)
             gw_outset oset; /* the table and the JSON of one run, or (a write failed) the earlier run's */
             memset(&oset, 0, sizeof oset);
             char *hdr = gw_cli_one_line(gw_cli_provenance("wavespeed", argc, argv, set), ' ');
+            char made[4096] = ""; /* the first directory of --out this run creates, taken back on a failure */
             if ((!hdr && gw_err_set(&err, GW_ENOMEM, "out of memory") != GW_OK) ||
-                gw_mkdir_p(c.out, &err) != GW_OK || gw_outset_begin(&oset, c.out, ws_files, &err) != GW_OK ||
+                gw_cli_outset_begin(&oset, c.out, ws_files, made, sizeof made, &err) != GW_OK ||
                 gw_path_join(path, sizeof path, c.out, "wavespeed.csv") != GW_OK ||
                 gw_afile_open(&af, path, &err) != GW_OK) {
                 code = 1;
@@ -187,7 +188,7 @@ int gw_cmd_wavespeed(int argc, char **argv)
                 code = 1;
             if (code == 0 && gw_outset_commit(&oset, &err) != GW_OK)
                 code = 1;
-            gw_outset_abort(&oset);
+            gw_cli_outset_end(&oset, c.out, made, code == 0);
             if (code)
                 fprintf(stderr, "granwave wavespeed --out: %s\n", err.msg);
             free(hdr);

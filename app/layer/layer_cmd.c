@@ -810,9 +810,10 @@ int gw_cmd_layer_impact(int argc, char **argv)
                            ? "the run ended at t-max inside it: raise --t-max"
                            : step_control(c.type));
             else
-                printf("  first contact: E_d = %.3g of E_incident, block loss %.3g (ends at %.4g ms); at its opening "
-                       "block loss %s (B.28)\n", r.dissipated_first_contact, r.block_loss_first_contact,
-                       r.t_first_contact * 1e3, gw_cli_num(v[0], sizeof v[0], "%.3g", r.block_loss_contact_open));
+                printf("  first contact: E_d = %s of E_incident, block loss %s (ends at %.4g ms); at its opening "
+                       "block loss %s (B.28)\n", gw_cli_num(v[1], sizeof v[1], "%.3g", r.dissipated_first_contact),
+                       gw_cli_num(v[2], sizeof v[2], "%.3g", r.block_loss_first_contact), r.t_first_contact * 1e3,
+                       gw_cli_num(v[0], sizeof v[0], "%.3g", r.block_loss_contact_open));
             char ws[3][64]; /* a crown speed the samples do not resolve is null in JSON: "unresolved" here */
             const double wv[3] = {r.wave_speed, r.wave_speed_kin, r.wave_speed_xcorr};
             const double we[3] = {r.wave_speed_err, r.wave_speed_kin_err, r.wave_speed_xcorr_err};

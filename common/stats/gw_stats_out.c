@@ -16,6 +16,7 @@
 #include "gw_stats.h"
 #include "gw_locale.h"
 #include "gw_stats_impl.h"
+#include "gw_io_impl.h"
 
 static const char *placement =
     "bouncing lies below the boundary; in each R_b/R_m column H* is placed between the lowest "
@@ -604,8 +605,9 @@ int gw_stats_write_files(const gw_stats_analysis *R, const char *dir, gw_err *er
     gw_outset set;
     memset(&set, 0, sizeof set);
     int rc = analysis_shape(R, err); /* before the directory is made */
+    char made[4096] = ""; /* the first directory of dir this call creates: taken back on a failure */
     if (rc == GW_OK)
-        rc = gw_mkdir_p(dir, err);
+        rc = gw_mkdir_made(dir, made, sizeof made, err);
     if (rc == GW_OK)
         rc = gw_outset_begin(&set, dir, stats_files, err);
     char path[4096];
@@ -630,6 +632,10 @@ int gw_stats_write_files(const gw_stats_analysis *R, const char *dir, gw_err *er
     if (rc == GW_OK)
         rc = gw_outset_commit(&set, err);
     gw_outset_abort(&set);
+    if (made[0] && rc != GW_OK) /* an empty directory it made goes, as a refused run leaves none */
+        gw_temps_unmake(dir, made);
+    else if (made[0])
+        gw_temps_drop(dir);
     return rc;
 }
 

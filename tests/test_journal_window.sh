@@ -30,6 +30,12 @@
 #  4 controls, exit 0 and the undisturbed table, no kept journal: the journal
 #    touched and chmod-ed at the second row (its bytes the sweep's), and read
 #    (cat) at the second row
+# What the check-then-write window ("the journal's microsecond race") still
+# allows, and these checks pin down: the row written inside it lands in the
+# other content (a file offers no append that fails when its bytes changed),
+# that one row alone, and it is found at that row, the sweep's journal kept
+# whole (the journal.csv and journal.kept.csv checks of parts 1, 2, 3 and 5).
+# Release and sanitizer builds (setup.sh's sanitizer list since session 43).
 # SKIP without the shim. Checks that fail on the code before: docs/tests.md.
 # shellcheck source=refusal_lib.sh
 . "$2/tests/refusal_lib.sh"

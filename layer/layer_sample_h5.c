@@ -697,6 +697,117 @@ static int read_h5_locked(const char *path, gw_layer_sample *s, const h5_quiet *
     return rc;
 }
 
+/* What a sample file's HDF5 objects hold, counted at the open check: the
+ * superblock and its extension, the shared-message tables and tracked free
+ * space (H5Fget_info2), and for each object reached from the root (H5Ovisit)
+ * its header, its links' and attributes' indexes and heaps, and a dataset's
+ * stored data (H5Dget_storage_size). A file past that by more than
+ * H5_HELD_SLACK and more than as much again is refused before it is hashed:
+ * a valid sample holding 100 MB of zeros that no object holds (a dataset
+ * written and deleted, its space never reused) was hashed whole, twice by a
+ * read and three times by a sweep. The bound is the file's size against
+ * these counts only: bytes HDF5 does not count (a global heap of
+ * variable-length strings, a user block) fit in the slack for any sample. */
+#define H5_HELD_SLACK (1ULL << 20)
+typedef struct h5_held {
+    unsigned long long bytes;
+    long objects;
+    int failed;
+} h5_held;
+
+static void h5_held_add(h5_held *h, unsigned long long v)
+{
+    h->bytes = v > ~0ULL - h->bytes ? ~0ULL : h->bytes + v;
+}
+
+static herr_t h5_held_object(hid_t loc, const char *name, H5O_type_t type, h5_held *h)
+{
+    h->objects++;
+#if H5_VERSION_GE(1, 12, 0)
+    H5O_native_info_t ni;
+    if (H5Oget_native_info_by_name(loc, name, &ni, H5O_NATIVE_INFO_HDR | H5O_NATIVE_INFO_META_SIZE,
+                                   H5P_DEFAULT) < 0) {
+        h->failed = 1;
+        return -1;
+    }
+    h5_held_add(h, ni.hdr.space.total);
+    h5_held_add(h, ni.meta_size.obj.index_size);
+    h5_held_add(h, ni.meta_size.obj.heap_size);
+    h5_held_add(h, ni.meta_size.attr.index_size);
+    h5_held_add(h, ni.meta_size.attr.heap_size);
+#else
+    H5O_info_t oi;
+    if (H5Oget_info_by_name2(loc, name, &oi, H5O_INFO_HDR | H5O_INFO_META_SIZE, H5P_DEFAULT) < 0) {
+        h->failed = 1;
+        return -1;
+    }
+    h5_held_add(h, oi.hdr.space.total);
+    h5_held_add(h, oi.meta_size.obj.index_size);
+    h5_held_add(h, oi.meta_size.obj.heap_size);
+    h5_held_add(h, oi.meta_size.attr.index_size);
+    h5_held_add(h, oi.meta_size.attr.heap_size);
+#endif
+    if (type == H5O_TYPE_DATASET) {
+        hid_t d = H5Dopen2(loc, name, H5P_DEFAULT);
+        if (d < 0) {
+            h->failed = 1;
+            return -1;
+        }
+        h5_held_add(h, H5Dget_storage_size(d));
+        H5Dclose(d);
+    }
+    return 0;
+}
+
+#if H5_VERSION_GE(1, 12, 0)
+static herr_t h5_held_visit(hid_t loc, const char *name, const H5O_info2_t *info, void *data)
+#else
+static herr_t h5_held_visit(hid_t loc, const char *name, const H5O_info_t *info, void *data)
+#endif
+{
+    return h5_held_object(loc, name, info->type, data);
+}
+
+/* GW_OK when f's size is within what its objects hold (above), else
+ * GW_EFORMAT naming the file and both sizes */
+static int h5_held_check(hid_t f, const char *path, const h5_quiet *q, gw_err *err)
+{
+    h5_held h = {0, 0, 0};
+    H5F_info2_t fi;
+    hsize_t size = 0, ub = 0;
+    hid_t fcpl = H5Fget_create_plist(f);
+    int bad = fcpl < 0 || H5Pget_userblock(fcpl, &ub) < 0 || H5Fget_filesize(f, &size) < 0 ||
+              H5Fget_info2(f, &fi) < 0;
+    if (fcpl >= 0)
+        H5Pclose(fcpl);
+    if (!bad) {
+        h5_held_add(&h, ub);
+        h5_held_add(&h, fi.super.super_size);
+        h5_held_add(&h, fi.super.super_ext_size);
+        h5_held_add(&h, fi.free.meta_size);
+        h5_held_add(&h, fi.free.tot_space);
+        h5_held_add(&h, fi.sohm.hdr_size);
+        h5_held_add(&h, fi.sohm.msgs_info.index_size);
+        h5_held_add(&h, fi.sohm.msgs_info.heap_size);
+#if H5_VERSION_GE(1, 12, 0)
+        bad = H5Ovisit3(f, H5_INDEX_NAME, H5_ITER_NATIVE, h5_held_visit, &h, H5O_INFO_BASIC) < 0 || h.failed;
+#else
+        bad = H5Ovisit2(f, H5_INDEX_NAME, H5_ITER_NATIVE, h5_held_visit, &h, H5O_INFO_BASIC) < 0 || h.failed;
+#endif
+    }
+    if (bad)
+        return gw_err_set(err, GW_EFORMAT, "sample '%s': corrupt HDF5 file (%s)", path,
+                          q->why[0] ? q->why : "HDF5 call failed");
+    const unsigned long long held = h.bytes, fsize = (unsigned long long)size;
+    if (fsize > held && fsize - held > H5_HELD_SLACK && fsize - held > held)
+        return gw_err_set(err, GW_EFORMAT, "sample '%s': %llu bytes, of which its %ld HDF5 objects hold %llu "
+                          "(headers, indexes, datasets' data): %llu bytes that no object holds (space freed "
+                          "and never reused, or zeros) are more than 1 MiB and more than the objects hold, "
+                          "so it is not hashed (h5repack copies the objects alone)",
+                          path, fsize, h.objects, held, fsize - held);
+    return GW_OK;
+}
+
 /* The file's metadata as HDF5 itself takes it, before a byte of the file is
  * hashed: its superblock (HDF5 verifies its checksum and its end-of-file
  * address against the file's size at the open), the root group's object
@@ -741,6 +852,8 @@ static int open_check_locked(const char *path, const h5_quiet *q, gw_err *err)
         else
             H5Oclose(o);
     }
+    if (rc == GW_OK) /* then its size against what its objects hold, before it is hashed */
+        rc = h5_held_check(f, path, q, err);
     if (H5Fclose(f) < 0 && rc == GW_OK)
         rc = gw_err_set(err, GW_EFORMAT, "sample '%s': corrupt HDF5 file (%s)", path, q->why);
     return rc;

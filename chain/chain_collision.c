@@ -41,6 +41,7 @@ static const gw_param collision_fields[] = {
     RD("eps_col", r.eps_col, "", "energy restitution of the column (F.30)"),
     RI("wall_contacts", r.wall_contacts, "separate wall contacts (> 1: re-contact)"),
     RD("overlap_max_rel", r.overlap_max_rel, "", "largest contact overlap over the run, in bead radii (> 1: warned)"),
+    RD("chatter", chatter, "", "bead 1's chatter on a sensor body: 0 none, the eps_eff spread a rerun measured, -1 not run again (costly), -2 the rerun failed"),
     RF("converged", r.converged, "1: all contacts open and separating at t_end"),
     RF("wall_done", r.wall_done, "1: bead 1 off the wall and separating at t_end (f_max, tau_n final)"),
     {.name = "wall_pending", .type = GW_PARAM_TEXT, .offset = OFF(r.wall_pending), .unit = "",
@@ -155,6 +156,7 @@ int chain_collision_run_progress(const gw_chain_setup *s, gw_chain_collision *ou
     out->wall_time_ms = gw_clock_ms() - t0;
     if (rc == GW_OK) /* held by gravity: what its warning calls undecided is NaN */
         gw_chain_result_held_blank(&out->r);
+    out->chatter = chain_result_chatter_value(&out->r);
     if (s->trace) { /* hand the series over (also after a failure: the run so far) */
         out->trace_len = (int)tr.len;
         out->t = tr.t;

@@ -168,6 +168,9 @@ typedef struct gw_chain_collision {
     double gamma, alpha;                  /* the damping constants run (calibrated with
                                              restitution): N s/m^1.5, s/m */
     char *warnings;                       /* gw_chain_result_warnings of r (owned; NULL: none) */
+    double chatter;                       /* bead 1's chatter on a sensor body, as chain --json's
+                                             "chatter": 0 none, the eps_eff spread a rerun
+                                             measured, -1 not run again, -2 the rerun failed */
 } gw_chain_collision;
 
 /* The table of gw_chain_collision's results. */

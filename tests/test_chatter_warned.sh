@@ -15,8 +15,9 @@
 #    says nothing.
 #  3 A chain sweep's cases: a chatter column (the spread a rerun measured, -1
 #    not run again) and one warning line over the rows.
-#  4 Python: chain's result and a study's carry the line (their keywords), a
-#    sweep's result the chatter column and the line.
+#    drop's first collision is not checked: its --json has no chatter key.
+#  4 Python: chain's result and a study's carry the line (their keywords) and
+#    chain's the chatter value, a sweep's result the chatter column and the line.
 # About 16 s of CPU (softwall's 23 collisions the most).
 # Checks that fail on the code before: see docs/tests.md.
 # shellcheck source=refusal_lib.sh
@@ -104,13 +105,23 @@ else
     ko "  sweep: $(nlines s.err) lines: $(head -c 300 s.err)"
 fi
 
+# --- 3b drop: its first collision is not checked for chatter, so its --json
+# first_collision has no chatter key (a 0 there would say "none" unlooked)
+cpu_run 60 "$GW" drop --n 2 --json --quiet >d.json 2>d.err
+if /usr/bin/python3 -c "import json,sys; f=json.load(open('d.json'))['first_collision']; sys.exit(not ('chatter' not in f and 'wall_contacts' in f))"; then
+    ok "3 drop: first_collision has wall_contacts but no chatter key"
+else
+    ko "3 drop: first_collision: $(head -c 300 d.json) $(head -c 200 d.err)"
+fi
+
 # --- 4 Python
 py_checks 3 <<'PY'
 r, ws = caught(granwave.chain, n=5, sensor_mass=1e-4, sensor_stiffness=1e3, solver="rk4")
 w = [m for m in ws if "chattered on the sensor body" in m]
 check(len(w) == 1 and "was not run again" in w[0] and "sensor_stiffness" in w[0] and
-      len([m for m in r["warnings"] if "chattered" in m]) == 1,
-      "4 Python chain: one chatter warning, in the result too, naming sensor_stiffness: %s" % [m[:80] for m in w])
+      len([m for m in r["warnings"] if "chattered" in m]) == 1 and r.get("chatter") == -1,
+      "4 Python chain: one chatter warning, in the result too, naming sensor_stiffness, chatter %s as --json's -1: %s"
+      % (r.get("chatter"), [m[:80] for m in w]))
 r, ws = caught(granwave.falcon, n="4:5", heights="none", sensor_mass=1e-4, sensor_stiffness=1e3)
 w = [m for m in ws if "chattered on the sensor body" in m]
 check(len(w) == 1 and "in 2 of 2 collisions" in w[0] and len([m for m in r["warnings"] if "chattered" in m]) == 1,

@@ -199,7 +199,11 @@ static cJSON *result_json(const drop_cli *d, const gw_chain_drop_result *r, doub
         cJSON_AddStringToObject(e, "contacts", buf);
         cJSON_AddItemToArray(pk, e);
     }
-    cJSON_AddItemToObject(o, "first_collision", chain_result_json(c, &r->first, NAN));
+    cJSON *first = chain_result_json(c, &r->first, NAN);
+    /* the drop's first collision is not checked for chatter on a sensor body:
+     * its chatter key would read "none" (0) without having looked */
+    cJSON_DeleteItemFromObject(first, "chatter");
+    cJSON_AddItemToObject(o, "first_collision", first);
     cJSON_AddNumberToObject(o, "energy_error", r->energy_error);
     cJSON *en = cJSON_AddObjectToObject(o, "energy");
     cJSON_AddNumberToObject(en, "e0", r->e0);

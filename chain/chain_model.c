@@ -335,7 +335,7 @@ static int model_positive(double x, const char *name, gw_err *err)
  * v^2 overflows) as "solver: scale[0] = inf must be finite" or "solver:
  * dt_max must be >= 0, got inf", k = 1.8e308 as "dt-max: a step of 0 s
  * needs about inf steps ... fewer beads or a shorter run", 1000 beads of
- * 1e300 kg at 1 m/s with an energy of inf J. The scale-free column still runs
+ * 1e306 kg at 1 m/s with an energy of inf J. The scale-free column still runs
  * wherever they are doubles (v_imp 1e-150, masses 1e-300 or 1e200 kg). */
 static int chain_scales_check(const gw_chain_params *p, double vs, double xs, gw_err *err)
 {

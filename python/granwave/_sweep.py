@@ -223,14 +223,20 @@ def run_sweep(model, grid, params, jobs, progress):
                             f"got {type(v).__name__}")
         vals = _grid_values(k, v)
         if not vals:
-            raise GranwaveValueError(f"{_line(k)}: empty list of grid values", GW_EINVAL)
+            # named as the call's other refusals, and a reversed range "A:B" as the
+            # library names one (grid={"n": "5:1"} said "n: empty list of grid values")
+            if isinstance(v, str):
+                raise GranwaveValueError(f"sweep() grid: {_line(k)}: range '{_line(_plain(v))}' is empty "
+                                         f"(start > end)", GW_EINVAL)
+            raise GranwaveValueError(f"sweep() grid: {_line(k)}: empty list of grid values", GW_EINVAL)
         axes[k] = vals
         try:
             texts = [_ini_value(k, x, _sweep_rows(model, m, k)) for x in vals]
         except TypeError as e:
             raise TypeError(f"sweep() grid: '{_line(k)}': {e}") from None
         if any("," in t for t in texts):  # the list's separator: 'a,b' ran two cases
-            raise GranwaveValueError(f"{_line(k)}: a grid value holds ',' (the list separator of a sweep)", GW_EINVAL)
+            raise GranwaveValueError(f"sweep() grid: {_line(k)}: a grid value holds ',' (the list separator of a "
+                                     f"sweep)", GW_EINVAL)
         # a list item 'A:B' alone on its line is the library's range: grid={"n": ["1:3"]}
         # ran 3 cases where the result's n had one entry (its columns 3)
         if not isinstance(v, str) and any(_looks_like_range(t) for t in texts):

@@ -226,7 +226,7 @@ def run_sweep(model, grid, params, jobs, progress):
             # named as the call's other refusals, and a reversed range "A:B" as the
             # library names one (grid={"n": "5:1"} said "n: empty list of grid values")
             if isinstance(v, str):
-                raise GranwaveValueError(f"sweep() grid: {_line(k)}: range '{_line(_plain(v))}' is empty "
+                raise GranwaveValueError(f"sweep() grid: {_line(k)}: range '{_line(_plain(v).strip())}' is empty "
                                          f"(start > end)", GW_EINVAL)
             raise GranwaveValueError(f"sweep() grid: {_line(k)}: empty list of grid values", GW_EINVAL)
         axes[k] = vals

@@ -100,7 +100,7 @@ REFUSED = [
     ("layer_make", dict(n=20, seed=2**64), ValueError, "layer_make: seed: 18446744073709551616 is outside"),
     ("layer_stats", dict(input="{d}/fifo"), ValueError, "layer_stats: sweep table: {d}/fifo is a FIFO"),
     ("layer_stats", dict(input=3), TypeError, "layer_stats: input: expected a str or a path"),
-    ("sweep", dict(model="chain", grid={"n": np.array([])}), ValueError, "n: empty list of grid values"),
+    ("sweep", dict(model="chain", grid={"n": np.array([])}), ValueError, "sweep() grid: n: empty list of grid values"),
     ("sweep", dict(model="chain", grid={"n": np.array(2)}), TypeError, "sweep() grid: 'n': expected a list"),
     ("sweep", dict(model="chain", grid={"n": [2]}, jobs=1.0), TypeError, "sweep(): jobs must be an integer"),
     ("sweep", dict(model="chain", grid={"n": [2]}, jobs=np.int64(2**40)), ValueError, "sweep: jobs: 1099511627776"),

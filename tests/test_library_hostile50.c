@@ -42,8 +42,9 @@
  *   - gw_layer_make took rm 1e-200 m ("give dt -nan or less"), 1e200 m
  *     ("solver: scale[120] = inf"), a width-rm of 1e200 (refused after the
  *     settling as a sample wider than 1e6 R_m) and a height-rm of NaN, -1 or
- *     inf (the whole pile kept, as 0): each refused before any work, naming
- *     it, as the make table's rows do.
+ *     inf (the whole pile kept, as 0), a ke-threshold of 1e200 or 4.9e-324
+ *     and a t-max of 4.9e-324 s (run, unsettled): each refused before any
+ *     work, naming it, as the make table's rows do.
  *   - gw_chain_disp_params_validate passed f0 4.9e-324 N (the overlap d0 0 m:
  *     "solver: scale[0] = 0") and a subnormal dt_sample (rk4's step 0: "rk4:
  *     the fixed step dt must be set"): each refused naming it.
@@ -320,8 +321,9 @@ static int c_layer_rb_rm(void)
 static int c_layer_make_ranges(void)
 {
     const gw_layer_params lp = gw_layer_params_default();
-    const char *const names[] = {"rm", "rm", "width-rm", "height-rm", "height-rm", "height-rm", "clumps"};
-    for (int i = 0; i < 7; i++) {
+    const char *const names[] = {"rm",     "rm",     "width-rm",     "height-rm",    "height-rm",
+                                 "height-rm", "clumps", "ke-threshold", "ke-threshold", "t-max"};
+    for (int i = 0; i < 10; i++) {
         gw_layer_make_params mp = gw_layer_make_params_default();
         mp.n = 10;
         mp.width_rm = 8;
@@ -345,8 +347,17 @@ static int c_layer_make_ranges(void)
         case 5:
             mp.height_rm = INFINITY;
             break;
-        default:
+        case 6:
             mp.clumps = 2;
+            break;
+        case 7:
+            mp.ke_threshold = 1e200;
+            break;
+        case 8:
+            mp.ke_threshold = 4.9e-324;
+            break;
+        default:
+            mp.t_max = 4.9e-324;
         }
         gw_layer_sample s;
         gw_layer_make_result r;
@@ -403,7 +414,7 @@ static const child_row rows[] = {
     {"layer impact: a verlet dt of NaN refused (ran as the automatic step)", c_layer_impact_dt_nan},
     {"layer: yes/no members other than 0 and 1 refused", c_layer_flags},
     {"layer impact: rb-rm outside [1e-6, 1e6] refused", c_layer_rb_rm},
-    {"layer make: rm, width-rm, height-rm, clumps outside their rows refused before work", c_layer_make_ranges},
+    {"layer make: rm, width-rm, height-rm, clumps, ke-threshold, t-max outside their rows refused", c_layer_make_ranges},
     {"dispersion: f0 of a subnormal d0, a subnormal dt-out, fftw_measure 2", c_dispersion},
 };
 

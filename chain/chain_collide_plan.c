@@ -10,6 +10,7 @@
  * their own, before one (gw_chain_run_check, chain_run_steps).
  * Units: SI (s, m, kg, bytes).
  */
+#include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -792,11 +793,24 @@ static int opts_numbers_check(const gw_chain_run_opts *o, gw_err *err)
               * with GW_OK (cvode and arkode refused the dt at their create, after
               * gw_chain_run_check had passed it) */
              {"sp.dt", o->sp.dt}, {"sp.dt_max", o->sp.dt_max}};
-    for (size_t i = 0; i < sizeof f / sizeof f[0]; i++)
+    for (size_t i = 0; i < sizeof f / sizeof f[0]; i++) {
         if (!(isfinite(f[i].v) && f[i].v >= 0))
             return gw_err_set(err, GW_EINVAL, "gw_chain_run_opts.%s: %g is not a finite number >= 0 (0: the default)",
                               f[i].name, f[i].v);
-    return GW_OK;
+        /* a subnormal is no time, tolerance or count: t_max 4.9e-324 s "blew
+         * up" under cvode and arkode ("lower dt-max, rtol or atol"),
+         * steps_per_tc 4.9e-324 made rk4's step T_c / it inf ("solver: dt must
+         * be >= 0, got inf"), naming neither (the fiftieth pass) */
+        if (f[i].v > 0 && f[i].v < DBL_MIN)
+            return gw_err_set(err, GW_EINVAL, "gw_chain_run_opts.%s: %g is a subnormal number (below 2.2251e-308, "
+                              "the smallest normal double): give 0 for the default or a normal number",
+                              f[i].name, f[i].v);
+    }
+    /* the tolerances, which every backend's create refuses outside [1e-15,
+     * 1e-4]: this check passed rtol NaN or atol -1 and the run refused them
+     * only when it was started ("solver: rtol: nan ...") */
+    return gw_solver_tolerances_check(o->sp.rtol, o->sp.atol, "gw_chain_run_opts.sp.rtol",
+                                      "gw_chain_run_opts.sp.atol", err);
 }
 
 /* The plan; whole 0: only the bounds that hold whatever t_max the run is cut

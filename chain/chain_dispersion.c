@@ -22,6 +22,7 @@
  * maximum power refined by a parabola through log P at l-1, l, l+1.
  * Units: SI (m, s, kg, N, rad/s; wall spectrum in Hz).
  */
+#include <float.h>
 #include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
@@ -108,6 +109,13 @@ int gw_chain_disp_params_validate(const gw_chain_disp_params *p, gw_err *err)
         (rc = gw_check_positive(p->k, "k (Hertz coefficient, N/m^1.5)", err)) != GW_OK ||
         (rc = gw_check_positive(p->radius, "radius (m)", err)) != GW_OK)
         return rc;
+    /* the overlap d0 sets the solver's scales: a subnormal one (f0 4.9e-324 N:
+     * 0 m) failed at the run as "solver: scale[0] = 0 must be finite", naming
+     * no input (the fiftieth pass) */
+    if (!(disp_d0(p) >= DBL_MIN))
+        return gw_err_set(err, GW_EINVAL, "f0: %g N gives an overlap d0 = %g m below the normal doubles "
+                          "(2.2251e-308): the solver's scales underflow; give a larger precompression", p->f0,
+                          disp_d0(p));
     if (!(disp_d0(p) < p->radius))
         return gw_err_set(err, GW_EINVAL, "f0: %g N gives an overlap d0 = %g m beyond the bead radius %g m (Hertz invalid)",
                           p->f0, disp_d0(p), p->radius);
@@ -127,6 +135,14 @@ int gw_chain_disp_params_validate(const gw_chain_disp_params *p, gw_err *err)
                           p->t_samples, disp_nx(p));
     if (!(p->dt_sample >= 0) || !isfinite(p->dt_sample))
         return gw_err_set(err, GW_EINVAL, "dt-out: %g must be >= 0 (0 = auto)", p->dt_sample);
+    /* a subnormal interval made rk4's step 0 ("rk4: the fixed step dt must be
+     * set (> 0)", naming no input; the fiftieth pass) */
+    if (p->dt_sample > 0 && p->dt_sample < DBL_MIN)
+        return gw_err_set(err, GW_EINVAL, "dt-out: %g s is a subnormal number (below 2.2251e-308, the smallest "
+                          "normal double): give 0 (auto) or a normal number", p->dt_sample);
+    if (p->fftw_measure != 0 && p->fftw_measure != 1)
+        return gw_err_set(err, GW_EINVAL, "fftw_measure: %d is not a flag (0: FFTW_ESTIMATE, 1: FFTW_MEASURE)",
+                          p->fftw_measure);
     double wc = disp_omega_c(p), dts = gw_chain_disp_dt_sample(p);
     if (!(wc * dts < M_PI))
         return gw_err_set(err, GW_EINVAL, "dt-out: %g s puts the cutoff omega_c = %g rad/s above Nyquist pi/dt = %g rad/s",

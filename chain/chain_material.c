@@ -101,18 +101,34 @@ static int closed_form_domain(double m, double K, double v)
     return m > 0 && isfinite(m) && K > 0 && v >= 0;
 }
 
+/* 5 m / (4 K) as written where 4 K and 5 m are doubles (bit for bit as
+ * before), else as 1.25 (m / K): a finite K above 4.5e307 made 4 K inf and
+ * tau_1 0 s (k = 1.8e308 was refused as "dt-max: a step of 0 s ... fewer
+ * beads or a shorter run"), and a mass above 3.6e307 kg 5 m inf (the
+ * fiftieth pass). A rigid K = inf still gives 0. */
+static double mass_ratio(double m, double K)
+{
+    return isfinite(4.0 * K) && isfinite(5.0 * m) ? 5.0 * m / (4.0 * K) : 1.25 * (m / K);
+}
+
 double gw_chain_tau1(double m, double K, double v)
 {
     if (!closed_form_domain(m, K, v))
         return NAN;
-    return gw_chain_tau_constant() * pow(5.0 * m / (4.0 * K), 0.4) * pow(v, -0.2);
+    return gw_chain_tau_constant() * pow(mass_ratio(m, K), 0.4) * pow(v, -0.2);
 }
 
 double gw_chain_dmax1(double m, double K, double v)
 {
     if (!closed_form_domain(m, K, v))
         return NAN;
-    return pow(5.0 * m * v * v / (4.0 * K), 0.4);
+    const double x = 5.0 * m * v * v / (4.0 * K);
+    /* v^2 or 5 m v^2 beyond the doubles, or 4 K: v^(4/5) apart (v_imp 1e200
+     * m/s of a steel bead: 1.6e155 m, was inf); an underflow stays 0 (the
+     * column's check names it) */
+    if (isfinite(x) && isfinite(4.0 * K))
+        return pow(x, 0.4);
+    return pow(mass_ratio(m, K), 0.4) * pow(v, 0.8);
 }
 
 /* F_max = K d_max^(3/2) = K^(2/5) (5 m v^2 / 4)^(3/5): written so, a rigid wall

@@ -327,6 +327,55 @@ static int model_positive(double x, const char *name, gw_err *err)
     return rc;
 }
 
+/* The column's other scales, each a finite normal double: its kinetic energy
+ * (sum m v^2 / 2 at the speed scale), bead 1's wall force K x^(3/2) and
+ * overlap, and the time scales the run's steps follow (T_c, the step scale).
+ * Above or below the doubles, finite inputs failed at the run naming none or
+ * another (the fiftieth pass): v_imp 1e200 m/s or a mass of 1.8e308 kg (5 m
+ * v^2 overflows) as "solver: scale[0] = inf must be finite" or "solver:
+ * dt_max must be >= 0, got inf", k = 1.8e308 as "dt-max: a step of 0 s
+ * needs about inf steps ... fewer beads or a shorter run", 1000 beads of
+ * 1e306 kg at 1 m/s with an energy of inf J. The scale-free column still runs
+ * wherever they are doubles (v_imp 1e-150, masses 1e-300 or 1e200 kg). */
+static int chain_scales_check(const gw_chain_params *p, double vs, double xs, gw_err *err)
+{
+    const double m0 = p->masses ? p->masses[0] : p->mass;
+    double e0 = 0;
+    for (int i = 0; i < p->n; i++)
+        e0 += 0.5 * (p->masses ? p->masses[i] : p->mass) * vs * vs;
+    const struct {
+        const char *what, *unit;
+        double v;
+    } s[] = {{"bead 1's overlap scale (5 m v^2 / 4 kwall)^(2/5)", "m", xs},
+             {"the column's kinetic energy", "J", e0},
+             {"bead 1's wall force scale kwall x^(3/2)", "N", p->kwall * xs * sqrt(xs)},
+             {"the bead-bead time scale (m/k)^(2/5) v^(-1/5)", "s", gw_chain_time_scale(p)},
+             {"the time scale the steps resolve (gw_chain_step_scale)", "s", gw_chain_step_scale(p)}};
+    for (size_t i = 0; i < sizeof s / sizeof s[0]; i++)
+        if (!(s[i].v >= DBL_MIN && isfinite(s[i].v)))
+            return gw_err_set(err, GW_EINVAL, "v_imp, mass, k, kwall: %s is %g %s (v_imp %g m/s, mass %g kg, k %g "
+                              "N/m^1.5, kwall %g N/m^1.5, %d beads), outside the normal doubles (2.2251e-308 to "
+                              "1.7977e+308): the column cannot be run in doubles; give values nearer the commands' "
+                              "ranges (granwave chain --help)",
+                              s[i].what, s[i].v, s[i].unit, p->v_imp, m0, p->kc && p->n > 1 ? p->kc[0] : p->k,
+                              p->kwall, p->n);
+    return GW_OK;
+}
+
+/* A value of a closed range, and a normal double or 0: a subnormal yield
+ * pressure (4.9e-324 Pa) ran as a wall of no strength, a subnormal sensor
+ * mass was refused as a sensor body ringing at inf rad/s naming the stiffness
+ * (the fiftieth pass); the model's positive values were held so in the
+ * forty-ninth (model_positive). */
+static int model_range(double x, const char *name, double lo, double hi, gw_err *err)
+{
+    int rc = gw_check_range(x, name, lo, hi, err);
+    if (rc == GW_OK && x != 0 && fabs(x) < DBL_MIN)
+        rc = gw_err_set(err, GW_EINVAL, "%s: %g is a subnormal number (below 2.2251e-308, the smallest normal "
+                        "double): give 0 or a normal number", name, x);
+    return rc;
+}
+
 int gw_chain_params_validate(const gw_chain_params *p, gw_err *err)
 {
     if (!p)
@@ -344,7 +393,7 @@ int gw_chain_params_validate(const gw_chain_params *p, gw_err *err)
         return rc;
     if ((rc = model_positive(p->radius, "radius (m)", err)) != GW_OK)
         return rc;
-    if ((rc = gw_check_range(p->gravity, "gravity (m/s^2)", -1e4, 1e4, err)) != GW_OK)
+    if ((rc = model_range(p->gravity, "gravity (m/s^2)", -1e4, 1e4, err)) != GW_OK)
         return rc;
     for (int i = 0; p->masses && i < p->n; i++)
         if (!(p->masses[i] >= DBL_MIN) || !isfinite(p->masses[i]))
@@ -358,21 +407,21 @@ int gw_chain_params_validate(const gw_chain_params *p, gw_err *err)
     case GW_DAMP_NONE:
         break;
     case GW_DAMP_KUWABARA_KONO:
-        if ((rc = gw_check_range(p->gamma, "gamma (Kuwabara-Kono, N s/m^1.5)", 0, GW_CHAIN_GAMMA_MAX, err)) != GW_OK)
+        if ((rc = model_range(p->gamma, "gamma (Kuwabara-Kono, N s/m^1.5)", 0, GW_CHAIN_GAMMA_MAX, err)) != GW_OK)
             return rc;
         break;
     case GW_DAMP_HUNT_CROSSLEY:
-        if ((rc = gw_check_range(p->alpha, "alpha (Hunt-Crossley, s/m)", 0, GW_CHAIN_ALPHA_MAX, err)) != GW_OK)
+        if ((rc = model_range(p->alpha, "alpha (Hunt-Crossley, s/m)", 0, GW_CHAIN_ALPHA_MAX, err)) != GW_OK)
             return rc;
         break;
     default:
         return gw_err_set(err, GW_EINVAL, "damping: unknown model %d", (int)p->damping);
     }
     const gw_chain_wall *w = &p->wall;
-    if ((rc = gw_check_range(w->yield_pressure, "wall yield_pressure (Pa)", 0, 1e12, err)) != GW_OK ||
-        (rc = gw_check_range(w->loss, "wall loss (tan delta)", 0, 10, err)) != GW_OK ||
-        (rc = gw_check_range(w->tau_min, "wall tau_min (s)", 0, 1e3, err)) != GW_OK ||
-        (rc = gw_check_range(w->tau_max, "wall tau_max (s)", 0, 1e3, err)) != GW_OK)
+    if ((rc = model_range(w->yield_pressure, "wall yield_pressure (Pa)", 0, 1e12, err)) != GW_OK ||
+        (rc = model_range(w->loss, "wall loss (tan delta)", 0, 10, err)) != GW_OK ||
+        (rc = model_range(w->tau_min, "wall tau_min (s)", 0, 1e3, err)) != GW_OK ||
+        (rc = model_range(w->tau_max, "wall tau_max (s)", 0, 1e3, err)) != GW_OK)
         return rc;
     /* a relaxation time is 0 (the default arms) or physical (gw_chain.h) */
     for (int k = 0; k < 2; k++) {
@@ -393,18 +442,18 @@ int gw_chain_params_validate(const gw_chain_params *p, gw_err *err)
                               "tau_min (got %g, %g s)", a, b);
     }
     const gw_chain_sensor *sn = &p->sensor;
-    if ((rc = gw_check_range(sn->mass, "sensor mass (kg)", 0, 1e3, err)) != GW_OK ||
-        (rc = gw_check_range(sn->stiffness, "sensor stiffness (N/m)", 0, 1e16, err)) != GW_OK ||
-        (rc = gw_check_range(sn->damping, "sensor damping (N s/m)", 0, 1e12, err)) != GW_OK)
+    if ((rc = model_range(sn->mass, "sensor mass (kg)", 0, 1e3, err)) != GW_OK ||
+        (rc = model_range(sn->stiffness, "sensor stiffness (N/m)", 0, 1e16, err)) != GW_OK ||
+        (rc = model_range(sn->damping, "sensor damping (N s/m)", 0, 1e12, err)) != GW_OK)
         return rc;
     if (sn->mass > 0 && !(sn->stiffness > 0))
         return gw_err_set(err, GW_EINVAL, "sensor stiffness: a sensor body (mass > 0) needs a stiffness > 0");
     if (!(sn->mass > 0) && (sn->stiffness > 0 || sn->damping > 0))
         return gw_err_set(err, GW_EINVAL, "sensor mass: stiffness and damping need a sensor mass > 0");
     const gw_chain_guide *g = &p->guide;
-    if ((rc = gw_check_range(g->coulomb, "guide coulomb friction (N)", 0, 1e6, err)) != GW_OK ||
-        (rc = gw_check_range(g->viscous, "guide viscous friction (N s/m)", 0, 1e9, err)) != GW_OK ||
-        (rc = gw_check_range(g->v_reg, "guide v_reg (m/s)", 0, 1e3, err)) != GW_OK)
+    if ((rc = model_range(g->coulomb, "guide coulomb friction (N)", 0, 1e6, err)) != GW_OK ||
+        (rc = model_range(g->viscous, "guide viscous friction (N s/m)", 0, 1e9, err)) != GW_OK ||
+        (rc = model_range(g->v_reg, "guide v_reg (m/s)", 0, 1e3, err)) != GW_OK)
         return rc;
     /* The solvers' absolute tolerance is atol times the states' scales
      * (gw_chain_create): bead 1's overlap scale (m/K)^(2/5) v^(4/5) at the
@@ -418,7 +467,7 @@ int gw_chain_params_validate(const gw_chain_params *p, gw_err *err)
                           "(mass %g kg, kwall %g N/m^1.5), below the normal doubles (2.2251e-308): the solvers' "
                           "error weights underflow; give a faster impact (the commands take at least %g m/s)",
                           p->v_imp, xs, p->masses ? p->masses[0] : p->mass, p->kwall, GW_CHAIN_VIMP_MIN);
-    return GW_OK;
+    return chain_scales_check(p, vs, xs, err);
 }
 
 static int is_general(const gw_chain_params *p)

@@ -476,6 +476,11 @@ int gw_layer_sample_out_check(const char *path, const char *what, gw_err *err);
 /* The smallest modulus_factor a pluviation takes (the table's row and
  * gw_layer_make's check alike). */
 #define GW_LAYER_MODULUS_FACTOR_MIN 1e-9
+/* The mean radius R_m a pluviation takes, m (the make table's row; the
+ * fiftieth pass held gw_layer_make to it: 1e-200 and 1e200 m failed later
+ * naming no input). */
+#define GW_LAYER_MAKE_RM_MIN 1e-5
+#define GW_LAYER_MAKE_RM_MAX 1e3
 
 typedef struct gw_layer_make_params {
     int n;                 /* particles [300] */

@@ -64,6 +64,11 @@ int gw_layer_params_validate(const gw_layer_params *p, gw_err *err)
                           "area of its members' union (the disc law): give mass-law disc, or clump-mass sum");
     if (p->walls < 0 || p->walls > GW_LAYER_WALLS_ALL)
         return gw_err_set(err, GW_EINVAL, "walls: bad mask %d", p->walls);
+    /* the yes/no members: -1 or 2 ran as 1 with GW_OK (the fiftieth pass) */
+    if (p->no_events != 0 && p->no_events != 1)
+        return gw_err_set(err, GW_EINVAL, "no_events: %d is not a flag (0 or 1)", p->no_events);
+    if (p->potential_from_start != 0 && p->potential_from_start != 1)
+        return gw_err_set(err, GW_EINVAL, "potential_from_start: %d is not a flag (0 or 1)", p->potential_from_start);
     return GW_OK;
 }
 

@@ -184,6 +184,12 @@ int layer_impact_params_check(const gw_layer_sample *smp, const gw_layer_impact_
         return rc;
     if (!(p->rb_rm > 0) || !isfinite(p->rb_rm))
         return gw_err_set(err, GW_EINVAL, "rb-rm: block radius %g R_m must be positive", p->rb_rm);
+    /* and within the row's [1e-6, 1e6] (the radii a sample's discs may have,
+     * 1e-3 to 1e3 R_m, and a block far beyond both): 1e-310 failed at the
+     * solver's set-up ("scale[245] = inf"), 4.9e-324 as "particle 40: radius
+     * r = 0 m", 1e-200 ran a block of 3e-201 m (the fiftieth pass) */
+    if ((rc = gw_check_range(p->rb_rm, "rb-rm (block radius, R_m)", 1e-6, 1e6, err)) != GW_OK)
+        return rc;
     /* (1 km/s: beyond it the grains' sound speed is near and Hertz contacts
      * are no model; the verlet step falls as V_i^(-1/5)) */
     if ((rc = gw_check_positive(p->vi, "vi (incident speed, m/s)", err)) != GW_OK ||
@@ -214,6 +220,16 @@ int layer_impact_params_check(const gw_layer_sample *smp, const gw_layer_impact_
                           "for 2 R_m, or a width of at least 1.49167e-154 m)", p->ring_width);
     if (p->until != GW_LAYER_UNTIL_REBOUND && p->until != GW_LAYER_UNTIL_VERDICT)
         return gw_err_set(err, GW_EINVAL, "until: %d is neither rebound (0) nor verdict (1)", p->until);
+    /* the yes/no members: -1, 2 or INT_MIN ran as 1 with GW_OK, where until
+     * names its two values (the fiftieth pass) */
+    const struct {
+        const char *name;
+        int v;
+    } fl[] = {{"full", p->full}, {"remove-walls", p->remove_walls}, {"other-settling", p->other_settling},
+              {"zero-springs", p->zero_springs}};
+    for (size_t i = 0; i < sizeof fl / sizeof fl[0]; i++)
+        if (fl[i].v != 0 && fl[i].v != 1)
+            return gw_err_set(err, GW_EINVAL, "%s: %d is not a flag (0 or 1)", fl[i].name, fl[i].v);
     if (p->nrings < 1 || p->nrings > 1000)
         return gw_err_set(err, GW_EINVAL, "rings: %d is outside [1, 1000]", p->nrings);
     if (p->t_max / p->dt_out > 2e6)
@@ -606,6 +622,24 @@ int gw_layer_impact_step_check(const gw_layer_impact_params *ip, const gw_solver
     /* NULL ip passed (GW_OK, nothing checked), NULL sp was read (SIGSEGV) */
     if (!ip || !sp)
         return gw_err_set(err, GW_EINVAL, "gw_layer_impact_step_check: %s is NULL", !ip ? "ip" : "sp");
+    /* the solver's steps, 0 the automatic step or no limit: a dt of NaN, -1 or
+     * -inf failed every "> 0" and ran as the automatic step with GW_OK (the
+     * chain's run options refuse them since the forty-ninth pass), an inf or
+     * subnormal dt was told to give "a dt that divides it such as -inf s" or
+     * "0 s", a dt_max of NaN failed only at the solver's set-up; and the
+     * tolerances every backend's create refuses, after the layer was built
+     * (the fiftieth pass) */
+    const struct {
+        const char *name;
+        double v;
+    } st[] = {{"dt", sp->dt}, {"dt-max", sp->dt_max}};
+    for (size_t i = 0; i < 2; i++)
+        if (!(isfinite(st[i].v) && st[i].v >= 0) || (st[i].v > 0 && st[i].v < DBL_MIN))
+            return gw_err_set(err, GW_EINVAL, "%s: %g s is not 0 (%s) or a normal finite number > 0", st[i].name,
+                              st[i].v, i ? "no limit" : "the automatic step");
+    int trc = gw_solver_tolerances_check(sp->rtol, sp->atol, "rtol", "atol", err);
+    if (trc != GW_OK)
+        return trc;
     /* a fixed verlet step given by the caller that dt_out is not a multiple of
      * would be shortened before every sample (an uneven grid, not the dt the
      * settings record); the automatic step adapts (gw_layer_impact_dem_dt).
@@ -623,8 +657,12 @@ int gw_layer_impact_step_check(const gw_layer_impact_params *ip, const gw_solver
     if (type != gw_solver_verlet || !(sp->dt > 0) || gw_layer_impact_dt_divides(sp->dt, ip->dt_out))
         return GW_OK;
     /* the values named, with the fewest digits that pass as given */
-    const double mult = fmax(1, nearbyint(ip->dt_out / sp->dt)) * sp->dt;
-    const double div = ip->dt_out / ceil(ip->dt_out / sp->dt - 1e-9);
+    double mult = fmax(1, nearbyint(ip->dt_out / sp->dt)) * sp->dt;
+    /* a dt above dt_out divided it by ceil(-1e-9) = -0: "such as -inf s";
+     * dt_out itself divides it then. A multiple beyond the doubles: dt */
+    const double div = ip->dt_out / fmax(1, ceil(ip->dt_out / sp->dt - 1e-9));
+    if (!isfinite(mult))
+        mult = sp->dt;
     char ms[32], ds[32];
     for (int d = 6; d <= 17; d++) {
         gw_snprintf(ms, sizeof ms, "%.*g", d, mult);

@@ -29,6 +29,7 @@
  * and settle like the discs; the trim to height_rm removes whole clumps.
  * Units: SI.
  */
+#include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <stdio.h>
@@ -160,10 +161,29 @@ static int check_make(const gw_layer_make_params *m, gw_err *err)
     int rc;
     if (m->n < 1 || m->n > 1000000)
         return gw_err_set(err, GW_EINVAL, "n: %d particles is outside [1, 1e6]", m->n);
+    /* rm, width-rm and height-rm within the rows of the make table (the
+     * ranges the sample's reader holds a sample to), clumps a flag: rm 1e-200
+     * m was told "give dt -nan or less", 1e200 m failed at the solver's set-up
+     * ("scale[120] = inf"), 1.8e308 m named the box width; width-rm 1e200 was
+     * refused only after its settling ("width 3.25e+199 m is above 1e+06
+     * R_m"); a height-rm of NaN, -1 or inf kept the whole pile (as 0) and
+     * clumps = -1 or 2 made clumps, a ke-threshold of 1e200 or 4.9e-324 and a
+     * t-max of 4.9e-324 s ran, with GW_OK (the fiftieth pass) */
     if ((rc = gw_check_positive(m->rm, "rm (mean radius, m)", err)) != GW_OK ||
+        (rc = gw_check_range(m->rm, "rm (mean radius, m)", GW_LAYER_MAKE_RM_MIN, GW_LAYER_MAKE_RM_MAX, err)) !=
+            GW_OK ||
+        (rc = isfinite(m->width_rm) && m->width_rm <= 1e6
+              ? GW_OK
+              : gw_err_set(err, GW_EINVAL, "width-rm: %g R_m is outside (0, 1e+06]", m->width_rm)) != GW_OK ||
+        (rc = gw_check_range(m->height_rm, "height-rm", 0, 1e6, err)) != GW_OK ||
+        (rc = m->clumps == 0 || m->clumps == 1
+              ? GW_OK
+              : gw_err_set(err, GW_EINVAL, "clumps: %d is not a flag (0: discs, 1: clumps)", m->clumps)) != GW_OK ||
         (rc = gw_check_range(m->volume_ratio, "volume-ratio", 1, 1e6, err)) != GW_OK ||
         (rc = gw_check_positive(m->ke_threshold, "ke-threshold", err)) != GW_OK ||
+        (rc = gw_check_range(m->ke_threshold, "ke-threshold", DBL_MIN, 1, err)) != GW_OK ||
         (rc = gw_check_positive(m->t_max, "t-max (s)", err)) != GW_OK ||
+        (rc = gw_check_range(m->t_max, "t-max (s)", DBL_MIN, 1e4, err)) != GW_OK ||
         (rc = gw_check_range(m->damping, "damping (s/m)", 0, 1e3, err)) != GW_OK ||
         (rc = gw_check_range(m->modulus_factor, "modulus-factor", GW_LAYER_MODULUS_FACTOR_MIN, 1, err)) != GW_OK ||
         (rc = gw_check_positive(m->dt, "dt (s)", err)) != GW_OK ||

@@ -20,7 +20,7 @@
 static const gw_param make_params[] = {
     GW_LAYER_MATERIAL_ROWS("disc", "sum", "[disc]", "[sum]")
     ROW("n", GW_PARAM_LONG, n, "", 1, 100000, 0, 0, "300", "N", "number of particles [300]"),
-    ROW("rm", GW_PARAM_DOUBLE, rm, "m", 1e-5, 1e3, 0, 0, "0.325", "R", "mean particle radius R_m, m in [1e-5, 1e3] [0.325]"),
+    ROW("rm", GW_PARAM_DOUBLE, rm, "m", GW_LAYER_MAKE_RM_MIN, GW_LAYER_MAKE_RM_MAX, 0, 0, "0.325", "R", "mean particle radius R_m, m in [1e-5, 1e3] [0.325]"),
     ROW("volume-ratio", GW_PARAM_DOUBLE, volume_ratio, "", 1, 1e6, 0, 0, "10", "V", "largest/smallest particle volume [10]"),
     ROW("width-rm", GW_PARAM_DOUBLE, width_rm, "", 0, 1e6, 1, 0, "50", "W", "box width in R_m [50]"),
     ROW("seed", GW_PARAM_LONG, seed, "", 0, 9e18, 0, 0, "1", "S", "random seed [1]"),

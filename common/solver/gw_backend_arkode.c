@@ -223,7 +223,7 @@ static int ark_advance(gw_solver *s, double tout, double *t, double *y, int *roo
     }
     int flag = ARK_SUCCESS;
     if (a->first_step) {
-        const double h0 = gw_sun_init_step(s->p.dt, a->t, tout);
+        const double h0 = gw_sun_init_step(s->p.dt, s->p.dt_max, a->t, tout);
         a->first_step = 0;
         flag = a->erk ? ERKStepSetInitStep(a->mem, h0) : ARKStepSetInitStep(a->mem, h0);
     }

@@ -209,7 +209,7 @@ static int cv_advance(gw_solver *s, double tout, double *t, double *y, int *root
     int flag = CV_SUCCESS;
     if (c->first_step) {
         c->first_step = 0;
-        flag = CVodeSetInitStep(c->mem, gw_sun_init_step(s->p.dt, c->t, tout));
+        flag = CVodeSetInitStep(c->mem, gw_sun_init_step(s->p.dt, s->p.dt_max, c->t, tout));
     }
     /* CVodeReInit leaves the linear solver's counters; its interface zeroes
      * them when the next CVode call sets it up again. cv_carry's comparison

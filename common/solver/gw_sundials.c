@@ -312,9 +312,15 @@ int gw_sun_ewt(N_Vector y, N_Vector w, void *ud)
     return gw_sun_nv_ewt(y, w, s->p.rtol, s->p.atol, s->sys.scale);
 }
 
-double gw_sun_init_step(double dt, double t, double tout)
+double gw_sun_init_step(double dt, double dt_max, double t, double tout)
 {
     const double floor = 100 * DBL_EPSILON * fmax(fabs(t), fabs(tout));
+    /* never above the largest step, which bounds every step: a first step of
+     * 1.8e308 s under a dt_max overflowed the solvers' own bound (h / hmax)
+     * and every run failed at its first output, "Trouble interpolating at
+     * tout ... too far back" (the fiftieth pass; 1e200 was taken as dt_max) */
+    if (dt_max > 0 && dt > dt_max)
+        dt = dt_max;
     return dt > 0 && dt < floor ? floor : dt;
 }
 

@@ -103,8 +103,9 @@ enum { GW_SUN_GIVEN_STEP_ERR_FAILS = 30, GW_SUN_OWN_STEP_ERR_FAILS = 7, GW_SUN_A
  *   bdf and dirk failed and chain --sheet pvc --sheet-law material --dt 1e-300
  *   exited 1 at t = 0 ("the corrector convergence test failed repeatedly").
  * The raised step is one the solver could have estimated itself; the result
- * is the default run's to the tolerances (test_chain_limits). */
-double gw_sun_init_step(double dt, double t, double tout);
+ * is the default run's to the tolerances (test_chain_limits). A step above
+ * dt_max (> 0) is lowered to it. */
+double gw_sun_init_step(double dt, double dt_max, double t, double tout);
 
 /* 1 if every component of the absolute tolerance vector is > 0, else 0. */
 int gw_sun_abstol_positive(N_Vector abstol);

@@ -202,6 +202,11 @@ def _grid_lines(model, m, k, v, lines, axes, key_bytes):
                         f"got {type(v).__name__}")
     vals = _grid_values(k, v)
     if not vals:
+        # a reversed range "A:B" as the library names one (grid={"n": "5:1"}
+        # said "n: empty list of grid values")
+        if isinstance(v, str):
+            raise GranwaveValueError(f"{_line(k)}: range '{_line(_plain(v).strip())}' is empty (start > end)",
+                                     GW_EINVAL)
         raise GranwaveValueError(f"{_line(k)}: empty list of grid values", GW_EINVAL)
     axes[k] = vals
     try:

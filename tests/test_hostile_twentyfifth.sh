@@ -19,7 +19,7 @@
 #    twentieth of the hundredth, 20000, at which the library reported before:
 #    its half-second gate is what brings the line), nothing on stdout, the
 #    run then ended by SIGINT with nothing written; --quiet stays silent
-#    over 2 s of its CPU (the line came within 0.3 s of it). Without the shim
+#    over 1 s of its CPU (the line came within 0.3 s of it). Without the shim
 #    (its third argument missing) the line is waited for by the wall's
 #    clock: before 15 s of CPU, the line due at 2.5 s coming first whatever
 #    the load.
@@ -52,7 +52,7 @@ long_drop() {
     set +m
     # until the line, or 15 s of the drop's CPU (without the shim its clock
     # runs at least as fast: the line due at 2.5 s of it comes before, whatever
-    # the load); drop_cpu=2 (--quiet, where no line comes): 2 s of its CPU
+    # the load); drop_cpu=1 (--quiet, where no line comes): 1 s of its CPU
     # (with the shim the line comes within 0.3 s of it; without, drop_wall=5
     # adds 5 s of the clock, past the line's 2.5 s)
     local t end=$((SECONDS + ${drop_wall:-0}))
@@ -99,7 +99,7 @@ for run in "10 1000 --n 1000 --t-max 1" "10 1000 --n 1000 --t-max 1 --dt-out 1e-
         ok "drop $args: nothing written after SIGINT"
 done
 if [ -n "$clock_shim" ]; then
-    step_ms=10 drop_cpu=2 long_drop "drop --quiet" --n 1000 --t-max 1 --quiet --json
+    step_ms=10 drop_cpu=1 long_drop "drop --quiet" --n 1000 --t-max 1 --quiet --json
 else
     drop_cpu=1 drop_wall=5 long_drop "drop --quiet" --n 1000 --t-max 1 --quiet --json
 fi

@@ -13,8 +13,8 @@ import sys
 
 
 def registered(cmake_text):
-    """Test names of gw_add_test(NAME, gw_add_script_test(NAME, gw_add_py_program_test(NAME and add_test(NAME NAME."""
-    names = re.findall(r"^\s*(?:gw_add_test|gw_add_script_test|gw_add_py_program_test)\((\w+)", cmake_text, re.M)
+    """Test names of gw_add_test(NAME, gw_add_script_test(NAME, gw_add_clock_test(NAME, gw_add_py_program_test(NAME and add_test(NAME NAME."""
+    names = re.findall(r"^\s*(?:gw_add_test|gw_add_script_test|gw_add_clock_test|gw_add_py_program_test)\((\w+)", cmake_text, re.M)
     names += re.findall(r"^\s*add_test\(NAME (\w+)", cmake_text, re.M)
     return {n for n in names if not n.startswith("$")}
 

@@ -43,9 +43,19 @@ test_setup "$@"
 PY=/usr/bin/python3
 cd "$tmp" || exit 1
 
-$PY - "$GW" >"$tmp/checks.out" 2>&1 <<'EOF'
+# the clock that counts its reads (tests/clock_shim.c), when given: the long
+# runs' lines then come on their own steps, not the wall's seconds
+clock_preload=
+if clock_shim=$(shim_path "${3:-}" clock); then
+    clock_preload=$(preload_list "$clock_shim")
+else
+    echo "NOTE: no clock shim: the long runs' lines waited for by the wall's clock"
+fi
+$PY - "$GW" "$clock_preload" >"$tmp/checks.out" 2>&1 <<'EOF'
 import json, os, re, subprocess, sys, threading, time
 GW = sys.argv[1]
+# LD_PRELOAD for the clock shim ("" without it): GW_CLOCK_STEP_MS ms a read
+SHIM = sys.argv[2]
 def check(cond, what):
     print(("PASS: " if cond else "FAIL: ") + what, flush=True)
 
@@ -59,13 +69,18 @@ SWEEP = re.compile(r"sweep: (\d+)/(\d+) cases, (\d+) under way, ([0-9.]+)% of th
 
 class Run:
     """A run of the program whose stderr lines are stamped as they arrive."""
-    def __init__(self, args, delay_ms=None):
-        """delay_ms: GW_PROGRESS_MS, the display's delay and period (None: unset, the program's own)"""
+    def __init__(self, args, delay_ms=None, step_ms=None):
+        """delay_ms: GW_PROGRESS_MS, the display's delay and period (None: unset, the program's own);
+        step_ms: with the clock shim, its clock's step a read (None: the wall's clock)"""
         self.args = args
         env = dict(os.environ)
-        env.pop("GW_PROGRESS_MS", None)
+        for k in ("GW_PROGRESS_MS", "GW_CLOCK_STEP_MS", "LD_PRELOAD"):
+            env.pop(k, None)
         if delay_ms is not None:
             env["GW_PROGRESS_MS"] = delay_ms
+        if step_ms is not None and SHIM:
+            env["GW_CLOCK_STEP_MS"] = step_ms
+            env["LD_PRELOAD"] = SHIM
         self.t0 = time.monotonic()
         self.p = subprocess.Popen([GW] + args, stdout=subprocess.PIPE, stderr=subprocess.PIPE, env=env)
         self.lines, self.out = [], b""
@@ -94,6 +109,20 @@ class Run:
 def name(r):
     return " ".join(r.args[:4])
 
+def when(t, m, g):
+    """A line's time: as it arrived on the pipe (t, s), or with the clock shim
+    the time the line says (group g of m), that clock's: its reads, not the wall"""
+    return float(m.group(g)) if SHIM else t
+
+# the shim's step a read, ms: a study's watch call (a sample of a collision)
+# and a layer-make step read it once, a sweep's ticker each 100 ms of the
+# wall, layer-make's report once a step of its pluviation, so 2 s of the
+# shim's clock is a thousand samples, 8 ticks, 4 reports
+STUDY_STEP, SWEEP_STEP, LM_STEP = "2", "250", "500"
+# the long runs' window (s of the wall): a failure's bound with the shim,
+# where the lines come within about a second
+WINDOW = 60 if SHIM else 12
+
 # --- the long studies, at once, each with its --quiet twin ---
 LONG = [
     (["falcon", "--n", "400:401", "--heights", "none", "--vimp", "0.3", "--jobs", "2"], 2, "granwave falcon: 2 collisions"),
@@ -103,12 +132,13 @@ LONG = [
 # a sweep of two such columns on 2 threads: its cases end after the window
 for o in ("sw", "swq"):
     open(o + ".ini", "w").write("[sweep]\nmodel = chain\nout = %s\n[grid]\nn = 400, 401\n" % o)
-runs = [(Run(a), Run(a + ["--quiet"]), n, h) for a, n, h in LONG]
-sw, swq = Run(["sweep", "sw.ini", "--jobs", "2"]), Run(["sweep", "swq.ini", "--jobs", "2", "--quiet"])
+runs = [(Run(a, step_ms=STUDY_STEP), Run(a + ["--quiet"], step_ms=STUDY_STEP), n, h) for a, n, h in LONG]
+sw, swq = Run(["sweep", "sw.ini", "--jobs", "2"], step_ms=SWEEP_STEP), \
+    Run(["sweep", "swq.ini", "--jobs", "2", "--quiet"], step_ms=SWEEP_STEP)
 # a pluviation of 300 discs (16 s here) in a pipe: it spoke on a terminal only
-lm, lmq = Run(["layer-make", "--n", "300", "--seed", "1", "--out", "lm.txt"]), \
-    Run(["layer-make", "--n", "300", "--seed", "1", "--out", "lmq.txt", "--quiet"])
-deadline = time.monotonic() + 12
+lm, lmq = Run(["layer-make", "--n", "300", "--seed", "1", "--out", "lm.txt"], step_ms=LM_STEP), \
+    Run(["layer-make", "--n", "300", "--seed", "1", "--out", "lmq.txt", "--quiet"], step_ms=LM_STEP)
+deadline = time.monotonic() + WINDOW
 while time.monotonic() < deadline and any(len(r.progress()) < 3 and r.p.poll() is None for r, _, _, _ in runs) or \
         (time.monotonic() < deadline and len(sw.progress(SWEEP)) < 3 and sw.p.poll() is None):
     time.sleep(0.05)
@@ -116,9 +146,10 @@ while time.monotonic() < deadline and not lm.lines and lm.p.poll() is None:
     time.sleep(0.05)
 el, el_q = lm.stop(), lmq.stop()
 LM = re.compile(r"granwave layer-make: t = [0-9.e+-]+ s simulated \(until the pile settles, at most t-max 6 s\), "
-                r"[0-9]+ s elapsed")
-check(len(lm.lines) >= 1 and lm.lines[0][0] <= 6.0 and all(LM.fullmatch(l) for _, l in lm.lines),
-      "layer-make --n 300 in a pipe: a line within 6 s, whole lines: %r" % lm.lines[:2])
+                r"([0-9]+) s elapsed")
+check(len(lm.lines) >= 1 and all(LM.fullmatch(l) for _, l in lm.lines)
+      and 2 <= when(lm.lines[0][0], LM.fullmatch(lm.lines[0][1]), 1) <= 6.0,
+      "layer-make --n 300 in a pipe: a line within 6 s, not before 2 s, whole lines: %r" % lm.lines[:2])
 check(not lmq.lines, "layer-make --quiet: nothing on stderr in %.1f s: %r" % (el_q, lmq.lines[:2]))
 el, el_q = sw.stop(), swq.stop()
 prog = sw.progress(SWEEP)
@@ -126,19 +157,26 @@ check(len(sw.lines) >= 1 and sw.lines[0][1].startswith("sweep: 2 cases, 0 alread
       "sweep: its header first: %r" % sw.lines[:1])
 check(len(prog) == len(sw.lines) - 1, "sweep: every other line a whole progress line: %r"
       % [l for _, l in sw.lines[1:] if not SWEEP.fullmatch(l)])
-check(len(prog) >= 3, "sweep: three lines within 12 s (%d in %.1f s)" % (len(prog), el))
+check(len(prog) >= 3, "sweep: three lines within %d s (%d in %.1f s)" % (WINDOW, len(prog), el))
 if prog:
-    check(prog[0][0] <= 6.0 and prog[0][1].group(1) == "0" and prog[0][1].group(3) == "2",
-          "sweep: the first line within 6 s, before any case ended, its cases under way: %.2f s %s"
-          % (prog[0][0], prog[0][1].group(0)))
+    t0 = when(prog[0][0], prog[0][1], 5)
+    check(2.0 <= float(prog[0][1].group(5)) and t0 <= 6.0 and prog[0][1].group(1) == "0"
+          and prog[0][1].group(3) == "2",
+          "sweep: the first line within 6 s and not before 2 s, before any case ended, its cases under way: "
+          "%.2f s %s" % (t0, prog[0][1].group(0)))
     inside = [x for _, x in prog if x.group(1) == "0"]
     ps = [float(x.group(4)) for x in inside]
     check(len(ps) >= 2 and ps[0] > 0 and all(b > a for a, b in zip(ps, ps[1:])) and ps[-1] < 100
           and all(x.group(6) is not None for x in inside),
           "sweep: inside its cases (0/2 ended) the share of the work above 0 and rising, under 100 %%, with a "
           "time left: %s" % ps)
-    gaps = [b[0] - a[0] for a, b in zip(prog, prog[1:])]
-    check(all(g <= 4.5 for g in gaps), "sweep: lines at most 4.5 s apart: %s" % ["%.2f" % g for g in gaps])
+    # at most 4.5 s apart (as they arrive, or by the shim's clock), and at
+    # least the period (2 s, by the times they say): no line repeated
+    gaps = [when(b[0], b[1], 5) - when(a[0], a[1], 5) for a, b in zip(prog, prog[1:])]
+    said = [float(b[1].group(5)) - float(a[1].group(5)) for a, b in zip(prog, prog[1:])]
+    check(all(g <= max(4.5, float(a[1].group(5)) / 20 + 1) for g, a in zip(gaps, prog)) and all(g >= 1.9 for g in said),
+          "sweep: lines at most 4.5 s apart, and 2 s or more by the times they say: %s %s"
+          % (["%.2f" % g for g in gaps], ["%.1f" % g for g in said]))
     check(all(x.group(2) == "2" for _, x in prog), "sweep: n = 2 cases in every line")
 check(not swq.lines, "sweep --quiet: nothing on stderr in %.1f s: %r" % (el_q, swq.lines[:2]))
 
@@ -150,18 +188,28 @@ for r, q, n, head in runs:
     check(len(lines) >= 1 and lines[0][1].startswith(head), "%s: the header first: %r" % (what, lines[:1]))
     check(len(prog) == len(lines) - 1, "%s: every other line a whole progress line: %r"
           % (what, [l for _, l in lines[1:] if not LINE.fullmatch(l)]))
-    check(len(prog) >= 3, "%s: three lines within 12 s (%d in %.1f s)" % (what, len(prog), el))
+    check(len(prog) >= 3, "%s: three lines within %d s (%d in %.1f s)" % (what, WINDOW, len(prog), el))
     if prog:
-        check(prog[0][0] <= 6.0, "%s: the first line %.2f s after the start (at most 6 s)" % (what, prog[0][0]))
+        t0 = when(prog[0][0], prog[0][1], 4)
+        check(t0 <= 6.0 and float(prog[0][1].group(4)) >= 2.0,
+              "%s: the first line %.2f s after the start (at most 6 s), saying %s s (not before 2 s)"
+              % (what, t0, prog[0][1].group(4)))
         m = prog[0][1]
         if what.startswith("softwall"):  # the rigid wall's 20 short columns may be done, no 300-bead one
-            check(int(m.group(1)) <= 20 and float(m.group(3)) > 0,
+            # (its work begun: a column ended, or a share above 0; with the
+            # shim the first line comes after a thousand samples, 0.0 %)
+            check(int(m.group(1)) <= 20 and (float(m.group(3)) > 0 or int(m.group(1)) > 0),
                   "%s: the first line within the walls' columns: %s" % (what, m.group(0).strip()))
         else:
             check(int(m.group(1)) == 0 and float(m.group(3)) > 0,
                   "%s: the first line before any collision ended, its work begun: %s" % (what, m.group(0).strip()))
-        gaps = [b[0] - a[0] for a, b in zip(prog, prog[1:])]
-        check(all(g <= 4.5 for g in gaps), "%s: lines at most 4.5 s apart: %s" % (what, ["%.2f" % g for g in gaps]))
+        gaps = [when(b[0], b[1], 4) - when(a[0], a[1], 4) for a, b in zip(prog, prog[1:])]
+        said = [float(b[1].group(4)) - float(a[1].group(4)) for a, b in zip(prog, prog[1:])]
+        # (a twentieth of the time elapsed past 90 s: the lines of a run
+        # that went on while the others came to their third)
+        check(all(g <= max(4.5, float(a[1].group(4)) / 20 + 1) for g, a in zip(gaps, prog)) and all(g >= 1.9 for g in said),
+              "%s: lines at most 4.5 s apart, and 2 s or more by the times they say: %s %s"
+              % (what, ["%.2f" % g for g in gaps], ["%.1f" % g for g in said]))
         ks = [int(x.group(1)) for _, x in prog]
         ps = [float(x.group(3)) for _, x in prog]
         check(all(b >= a for a, b in zip(ks, ks[1:])) and all(b >= a for a, b in zip(ps, ps[1:])),

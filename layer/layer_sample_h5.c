@@ -720,6 +720,17 @@ static void h5_held_add(h5_held *h, unsigned long long v)
     h->bytes = v > ~0ULL - h->bytes ? ~0ULL : h->bytes + v;
 }
 
+/* An object's header and its link and attribute indexes and heaps: the same
+ * members in HDF5 1.10's H5O_info_t and 1.12's H5O_native_info_t */
+#define H5_HELD_ADD_META(h, info)                                                                  \
+    do {                                                                                           \
+        h5_held_add(h, (info).hdr.space.total);                                                    \
+        h5_held_add(h, (info).meta_size.obj.index_size);                                           \
+        h5_held_add(h, (info).meta_size.obj.heap_size);                                            \
+        h5_held_add(h, (info).meta_size.attr.index_size);                                          \
+        h5_held_add(h, (info).meta_size.attr.heap_size);                                           \
+    } while (0)
+
 static herr_t h5_held_object(hid_t loc, const char *name, H5O_type_t type, h5_held *h)
 {
     h->objects++;
@@ -730,22 +741,14 @@ static herr_t h5_held_object(hid_t loc, const char *name, H5O_type_t type, h5_he
         h->failed = 1;
         return -1;
     }
-    h5_held_add(h, ni.hdr.space.total);
-    h5_held_add(h, ni.meta_size.obj.index_size);
-    h5_held_add(h, ni.meta_size.obj.heap_size);
-    h5_held_add(h, ni.meta_size.attr.index_size);
-    h5_held_add(h, ni.meta_size.attr.heap_size);
+    H5_HELD_ADD_META(h, ni);
 #else
     H5O_info_t oi;
     if (H5Oget_info_by_name2(loc, name, &oi, H5O_INFO_HDR | H5O_INFO_META_SIZE, H5P_DEFAULT) < 0) {
         h->failed = 1;
         return -1;
     }
-    h5_held_add(h, oi.hdr.space.total);
-    h5_held_add(h, oi.meta_size.obj.index_size);
-    h5_held_add(h, oi.meta_size.obj.heap_size);
-    h5_held_add(h, oi.meta_size.attr.index_size);
-    h5_held_add(h, oi.meta_size.attr.heap_size);
+    H5_HELD_ADD_META(h, oi);
 #endif
     if (type == H5O_TYPE_DATASET) {
         hid_t d = H5Dopen2(loc, name, H5P_DEFAULT);

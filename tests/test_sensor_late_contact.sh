@@ -44,7 +44,10 @@ SENSOR="--n 10 --sensor-mass 0.03 --sensor-stiffness 1e4"
 for a in "$SENSOR" "--n 5 --sensor-mass 0.01 --sensor-stiffness 1e4" "--n 3 --radii 4e-3,1e-3,4e-3"; do
     # shellcheck disable=SC2086
     runs_json "1: chain $a" "$tmp/d.json" chain $a --quiet || continue
-    [ ! -s "$tmp/stderr" ] && ok "1: chain $a: nothing on stderr" || ko "1: chain $a: stderr $(head -c 300 "$tmp/stderr")"
+    # nothing on stderr but a chatter on the sensor body (--n 5 on 0.01 kg: its
+    # wall contact closes 10 times, too costly to run again: test_chatter_warned)
+    ! grep -v "^granwave chain: warning: bead 1 chattered on the sensor body" "$tmp/stderr" | grep -q . &&
+        ok "1: chain $a: nothing on stderr but a chatter" || ko "1: chain $a: stderr $(head -c 300 "$tmp/stderr")"
     tm=$(jq_py "$tmp/d.json" "20 * d['settings']['solver']['t_max']")
     # shellcheck disable=SC2086
     runs_json "1: chain $a --t-max $tm" "$tmp/r.json" chain $a --quiet --t-max "$tm" || continue
@@ -52,7 +55,7 @@ for a in "$SENSOR" "--n 5 --sensor-mass 0.01 --sensor-stiffness 1e4" "--n 3 --ra
 import json, sys
 d, r = (json.load(open(f)) for f in sys.argv[1:3])
 why = []
-if not (d["converged"] and d["wall_done"] and d["warnings"] == []):
+if not (d["converged"] and d["wall_done"] and [w for w in d["warnings"] if not w.startswith("bead 1 chattered")] == []):
     why.append("not ended: converged %s, %s" % (d["converged"], d["warnings"]))
 if not r["converged"]:
     why.append("the long run did not end")

@@ -809,6 +809,9 @@ static int opts_numbers_check(const gw_chain_run_opts *o, gw_err *err)
     /* the tolerances, which every backend's create refuses outside [1e-15,
      * 1e-4]: this check passed rtol NaN or atol -1 and the run refused them
      * only when it was started ("solver: rtol: nan ...") */
+    if (o->sp.use_jac != 0 && o->sp.use_jac != 1) /* any int ran as 1 (the fiftieth pass) */
+        return gw_err_set(err, GW_EINVAL, "gw_chain_run_opts.sp.use_jac: %d is not 0 (difference quotients) or 1 "
+                          "(the model's Jacobian)", o->sp.use_jac);
     return gw_solver_tolerances_check(o->sp.rtol, o->sp.atol, "gw_chain_run_opts.sp.rtol",
                                       "gw_chain_run_opts.sp.atol", err);
 }

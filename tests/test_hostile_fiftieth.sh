@@ -21,6 +21,9 @@
 #    largest diameter), and 2.0000001 was printed "2". The refusal now states
 #    the rule, the value as given and the least width to give; control: that
 #    width (2.2) runs.
+#  4 (after the pass) a [grid] list 'vimp = 0.3, 0.30000000000000004' ran
+#    the same case twice; numbers within 1e-12 relative are one value now,
+#    refused as exact repeats are, "the same value to 12 digits".
 # Checks that fail on the code before: see docs/tests.md.
 # shellcheck source=refusal_lib.sh
 . "$(dirname "${BASH_SOURCE[0]}")/refusal_lib.sh"
@@ -109,5 +112,15 @@ least=$("$GW" layer-make --n 2 --width-rm 3 --out "$tmp/o" --quiet 2>&1 | sed -n
 cpu_run 60 "$GW" layer-make --n 2 --width-rm "${least:-none}" --t-max 0.01 --out w.txt --quiet >/dev/null 2>&1 && [ -s w.txt ] &&
     ok "control: the least width printed at volume-ratio 10 ($least) runs" ||
     ko "control: the least width printed ('$least') at volume-ratio 10"
+
+# 4 grid values apart only by their last digits (found after the pass): one
+# case twice, where falcon refuses speeds within 1e-6 of each other
+printf '[sweep]\nmodel = chain\nout = %s/o\n[grid]\nn = 2\nvimp = 0.3, 0.30000000000000004\n' "$tmp" >near.ini
+refused "sweep: vimp 0.3 and 0.30000000000000004 are one case, said so" \
+    "^granwave sweep: near\.ini:6: vimp: '0\.3' and '0\.30000000000000004' in list '.*' are the same value to 12 digits \(each case would run twice\)$" \
+    sweep near.ini --check
+printf '[sweep]\nmodel = chain\nout = %s/o\n[grid]\nn = 2\nvimp = 0.3, 0.3000001\n' "$tmp" >near2.ini
+"$GW" sweep near2.ini --check >near2.out 2>&1 && grep -q "2 cases" near2.out &&
+    ok "control: vimp 0.3 and 0.3000001 are two cases" || ko "control: 0.3, 0.3000001: $(head -c 200 near2.out)"
 
 test_summary test_hostile_fiftieth

@@ -48,10 +48,14 @@
  *   - gw_chain_disp_params_validate passed f0 4.9e-324 N (the overlap d0 0 m:
  *     "solver: scale[0] = 0") and a subnormal dt_sample (rk4's step 0: "rk4:
  *     the fixed step dt must be set"): each refused naming it.
+ *   - gw_solver_params.use_jac took any int as 1 (-1, 2, INT_MIN ran with
+ *     GW_OK): gw_chain_run_check and the solver's create refuse it naming
+ *     use_jac (the forty-third session, after the pass); 0 and 1 agree.
  * Each case runs in its own child process (test_child.h).
  */
 #define _POSIX_C_SOURCE 200809L
 #include <float.h>
+#include <limits.h>
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
@@ -180,6 +184,37 @@ static int c_first_step_huge(void)
         const double f = column_fmax(0, o);
         EXPECT(f > 0 && fabs(f - f0) < 1e-6 * f0);
     }
+    return 0;
+}
+
+/* sp.use_jac other than 0 and 1 ran as 1 with GW_OK (-1, 2, INT_MIN): refused
+ * by gw_chain_run_check and the run naming it; 0 and 1 run alike (control) */
+static int c_use_jac(void)
+{
+    const int bad[] = {-1, 2, INT_MIN};
+    gw_chain_params p = gw_chain_params_default();
+    p.n = 3;
+    for (int i = 0; i < 3; i++) {
+        gw_chain_run_opts o = gw_chain_run_opts_default();
+        o.solver = gw_solver_cvode;
+        o.sp.use_jac = bad[i];
+        gw_err e = {0};
+        EXPECT(gw_chain_run_check(&p, &o, &e) == GW_EINVAL && strstr(e.msg, "use_jac"));
+        gw_chain *c = NULL; /* the run refuses it too */
+        EXPECT(gw_chain_create(&p, &c, &e) == GW_OK);
+        gw_chain_result r;
+        memset(&r, 0, sizeof r);
+        e.msg[0] = '\0';
+        EXPECT(gw_chain_collide(c, &o, &r, &e) == GW_EINVAL && strstr(e.msg, "use_jac"));
+        gw_chain_result_free(&r);
+        gw_chain_free(c);
+    }
+    gw_chain_run_opts o = gw_chain_run_opts_default();
+    o.solver = gw_solver_cvode;
+    const double f1 = column_fmax(0, o);
+    o.sp.use_jac = 0;
+    const double f0 = column_fmax(0, o);
+    EXPECT(f1 > 0 && fabs(f0 - f1) < 1e-6 * f1);
     return 0;
 }
 
@@ -409,6 +444,7 @@ static const child_row rows[] = {
     {"chain: a mass of 1.8e308 kg runs, F_max as m^0.6 (control)", c_heavy_control},
     {"run options: subnormal t_max and steps_per_tc, rtol NaN, atol -1 refused by the check", c_opts_subnormal},
     {"cvode, arkode: a first step of 1.8e308 s runs as the default", c_first_step_huge},
+    {"solver: sp.use_jac -1, 2, INT_MIN refused by the check and the run; 0 and 1 agree", c_use_jac},
     {"chain params: subnormal yield pressure, sensor mass, guide, gravity, gamma", c_chain_subnormal_ranges},
     {"layer step check: dt, dt_max NaN/-1/-inf/inf/subnormal, rtol NaN; no -inf advice", c_layer_steps},
     {"layer impact: a verlet dt of NaN refused (ran as the automatic step)", c_layer_impact_dt_nan},

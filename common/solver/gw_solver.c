@@ -159,6 +159,8 @@ int gw_solver_create(const gw_solver_type *type, const gw_system *sys,
         return gw_err_set(err, GW_EINVAL, "solver: dt_max must be >= 0, got %g", p->dt_max);
     if (p->max_steps <= 0)
         return gw_err_set(err, GW_EINVAL, "solver: max_steps must be positive");
+    if (p->use_jac != 0 && p->use_jac != 1) /* -1, 2 or INT_MIN ran as 1 */
+        return gw_err_set(err, GW_EINVAL, "solver: use_jac must be 0 or 1, got %d", p->use_jac);
     for (long i = 0; i < sys->dim; i++)
         if (!isfinite(y0[i]))
             return gw_err_set(err, GW_EINVAL, "solver: initial state component %ld is not finite", i);

@@ -97,6 +97,16 @@ static int dup_cmp_value(const void *pa, const void *pb)
     return (a->idx > b->idx) - (a->idx < b->idx);
 }
 
+/* Numbers a and b as one grid value: equal, or for numbers (kind 1) within
+ * GW_SWEEP_SAME_REL of each other, a difference only printing makes
+ * ('vimp = 0.3, 0.30000000000000004' ran the same case twice, where falcon
+ * refuses speeds within 1e-6 of each other) */
+#define GW_SWEEP_SAME_REL 1e-12
+static int same_number(double a, double b, int kind)
+{
+    return a == b || (kind == 1 && fabs(a - b) <= GW_SWEEP_SAME_REL * fmax(fabs(a), fabs(b)));
+}
+
 /* The first pair (j < i, i smallest, then j) of k's values that are the same
  * value: the same text, the same number ("1", "1.0", "1e0") or the same flag
  * ("1", "true"): 1 and *j, *i; 0 when there is none; -1 out of memory. Each
@@ -137,7 +147,7 @@ static int first_duplicate(const gw_sweep_key *k, long *jp, long *ip)
          * head holds its smallest index */
         long head = 0;
         for (long q = 0; q < m; q++) {
-            if (q > 0 && !(kind ? it[q].v == it[q - 1].v : strcmp(it[q].s, it[q - 1].s) == 0))
+            if (q > 0 && !(kind ? same_number(it[q].v, it[q - 1].v, kind) : strcmp(it[q].s, it[q - 1].s) == 0))
                 head = q;
             if (it[head].idx < first[it[q].idx])
                 first[it[q].idx] = it[head].idx;
@@ -233,12 +243,17 @@ static int split_values(const char *value, gw_sweep_key *k, parse_ctx *pc)
     if (dup < 0)
         return parse_nomem(pc);
     if (dup) { /* a long list quoted whole cut the message before its reason */
+        double a = 0, b = 0; /* two numbers apart by their last digits: said so */
+        const int near = gw_data_number(k->values[j], &a) == GW_DATA_NUMBER &&
+                         gw_data_number(k->values[i], &b) == GW_DATA_NUMBER && a != b;
+        const char *same = near ? "are the same value to 12 digits" : "are the same value";
         if (strlen(value) <= 120)
-            gw_snprintf(msg, mlen, "%s: '%s' and '%s' in list '%s' are the same value (each case would run twice)",
-                     k->name, k->values[j], k->values[i], value);
+            gw_snprintf(msg, mlen, "%s: '%s' and '%s' in list '%s' %s (each case would run twice)",
+                     k->name, k->values[j], k->values[i], value, same);
         else
-            gw_snprintf(msg, mlen, "%s: '%s' and '%s' (values %ld and %ld of its list of %d) are the same value "
-                     "(each case would run twice)", k->name, k->values[j], k->values[i], j + 1, i + 1, k->nvalues);
+            gw_snprintf(msg, mlen, "%s: '%s' and '%s' (values %ld and %ld of its list of %d) %s "
+                     "(each case would run twice)", k->name, k->values[j], k->values[i], j + 1, i + 1, k->nvalues,
+                     same);
         return 0;
     }
     return k->values != NULL;

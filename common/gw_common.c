@@ -303,12 +303,9 @@ int gw_num_subnormal_refused(const char *name, const char *what, const gw_num_ra
                       gw_num_allowed(allowed, sizeof allowed, r));
 }
 
-/* A number's text as a refusal quotes it: whole up to 40 characters; a longer
- * one (2**1100's 331 digits, given from Python or on the command line) by its
- * first 20 characters and its length, QUOTE around the part shown ("'" or
- * ""). The refusal stays one short line naming the input (it quoted every
- * digit before session 43). */
-static const char *num_shown(char *buf, size_t n, const char *s, const char *quote)
+/* gw_number_impl.h: a refusal's quote of a number's text (2**1100's 332
+ * digits were quoted whole before session 43), a choice's and a flag's too */
+const char *gw_text_shown(char *buf, size_t n, const char *s, const char *quote)
 {
     const size_t len = strlen(s);
     if (len <= 40)
@@ -331,7 +328,7 @@ int gw_parse_double_in(const char *s, const char *name, const gw_num_range *r, d
         return gw_err_set(err, GW_EINVAL, "%s: '%s' is not a number", name, s);
     char shown[96];
     if (!isfinite(v) || (errno == ERANGE && fabs(v) >= 1.0))
-        return gw_err_set(err, GW_EINVAL, "%s: %s is not a finite number", name, num_shown(shown, sizeof shown, s, "'"));
+        return gw_err_set(err, GW_EINVAL, "%s: %s is not a finite number", name, gw_text_shown(shown, sizeof shown, s, "'"));
     /* one rule for numbers in text: decimal, as integers (gw_parse_long_in,
      * base 10) are; strtod's hexadecimal ("0x1p-2") was taken for a real
      * input where "0x3" was refused for an integer */
@@ -339,7 +336,7 @@ int gw_parse_double_in(const char *s, const char *name, const gw_num_range *r, d
         return gw_err_set(err, GW_EINVAL, "%s: '%s' is not a decimal number (no hexadecimal, as for integers)",
                           name, s);
     if (errno == ERANGE || (v != 0 && fabs(v) < DBL_MIN)) { /* strtod's underflow: no normal double */
-        return gw_num_subnormal_refused(name, num_shown(shown, sizeof shown, s, "'"), r, err);
+        return gw_num_subnormal_refused(name, gw_text_shown(shown, sizeof shown, s, "'"), r, err);
     }
     *out = v;
     return GW_OK;
@@ -420,7 +417,7 @@ int gw_parse_long_in(const char *s, const char *name, long lo, long hi, int or_z
         return *out = 0, GW_OK;
     char shown[96];
     if (errno == ERANGE || v < lo || v > hi)
-        return gw_err_set(err, GW_EINVAL, "%s: %s is outside [%ld, %ld]", name, num_shown(shown, sizeof shown, s, ""),
+        return gw_err_set(err, GW_EINVAL, "%s: %s is outside [%ld, %ld]", name, gw_text_shown(shown, sizeof shown, s, ""),
                           lo, hi);
     *out = v;
     return GW_OK;

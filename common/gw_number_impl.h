@@ -34,6 +34,13 @@ char *gw_num_allowed(char *buf, size_t n, const gw_num_range *r);
  * gw_num_allowed gives it. */
 int gw_num_subnormal_refused(const char *name, const char *what, const gw_num_range *r, gw_err *err);
 
+/* A value's text as a refusal quotes it, into buf (n bytes, 80 at least):
+ * whole up to 40 characters; a longer one (2**1100's 332 digits, given from
+ * Python or on the command line) by its first 20 characters and its length,
+ * QUOTE around the part shown ("'" or ""), so that the refusal stays one
+ * short line naming the input. Returns buf. */
+const char *gw_text_shown(char *buf, size_t n, const char *s, const char *quote);
+
 /* gw_parse_double, a subnormal refused naming the values r takes (r NULL:
  * any finite number). The range itself is not checked here: the callers
  * check it with their own words. */

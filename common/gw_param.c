@@ -206,10 +206,11 @@ static int count_bad(const gw_param *p, double v, const char *text, gw_err *err)
         return GW_OK;
     long lo, hi; /* the whole numbers the row takes */
     int_bounds(p, &lo, &hi);
-    char give[96], xs[32];
+    char give[96], xs[80];
     gw_int_give(give, sizeof give, lo, hi, p->or_zero);
     if (text)
-        return gw_err_set(err, GW_EINVAL, "%s: '%s' is not a whole number%s", p->name, text, give);
+        return gw_err_set(err, GW_EINVAL, "%s: %s is not a whole number%s", p->name,
+                          gw_text_shown(xs, sizeof xs, text, "'"), give);
     return gw_err_set(err, GW_EINVAL, "%s: %s is not a whole number%s", p->name, gw_num_text(xs, sizeof xs, v), give);
 }
 
@@ -252,9 +253,10 @@ static int set_number(const gw_param *p, void *obj, double v, const char *text, 
             int_bounds(p, &lo, &hi);
             char give[96];
             gw_int_give(give, sizeof give, lo, hi, p->or_zero);
+            char xs[80];
             if (text)
-                return gw_err_set(err, GW_EINVAL, "%s: '%s' is not an integer%s", p->name, text, give);
-            char xs[32];
+                return gw_err_set(err, GW_EINVAL, "%s: %s is not an integer%s", p->name,
+                                  gw_text_shown(xs, sizeof xs, text, "'"), give);
             return gw_err_set(err, GW_EINVAL, "%s: %s is not an integer%s", p->name, gw_num_text(xs, sizeof xs, v),
                               give);
         }
@@ -316,8 +318,11 @@ static int set_text(const gw_param *t, const gw_param *p, void *obj, const char 
         return set_integer_text(p, obj, value, err);
     case GW_PARAM_FLAG: {
         int f = gw_parse_flag(value);
-        if (f < 0)
-            return gw_err_set(err, GW_EINVAL, "%s: '%s' is not a flag (1, 0, true, false)", p->name, value);
+        if (f < 0) {
+            char shown[80];
+            return gw_err_set(err, GW_EINVAL, "%s: %s is not a flag (1, 0, true, false)", p->name,
+                              gw_text_shown(shown, sizeof shown, value, "'"));
+        }
         *(int *)field(obj, p) = f;
         return GW_OK;
     }
@@ -329,7 +334,9 @@ static int set_text(const gw_param *t, const gw_param *p, void *obj, const char 
             for (char *c = list; *c; c++)
                 if (*c == ',')
                     *c = ' ';
-            return gw_err_set(err, GW_EINVAL, "%s: unknown value '%s' (%s)", p->name, value, list);
+            char shown[80];
+            return gw_err_set(err, GW_EINVAL, "%s: unknown value %s (%s)", p->name,
+                              gw_text_shown(shown, sizeof shown, value, "'"), list);
         }
         *(int *)field(obj, p) = i;
         return GW_OK;

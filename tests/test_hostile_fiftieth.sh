@@ -24,6 +24,8 @@
 #  4 (after the pass) a [grid] list 'vimp = 0.3, 0.30000000000000004' ran
 #    the same case twice; numbers within 1e-12 relative are one value now,
 #    refused as exact repeats are, "the same value to 12 digits".
+#  5 (after the pass) a choice's value of 301 characters was quoted whole;
+#    choices, flags and integers quote a long text as numbers do.
 # Checks that fail on the code before: see docs/tests.md.
 # shellcheck source=refusal_lib.sh
 . "$(dirname "${BASH_SOURCE[0]}")/refusal_lib.sh"
@@ -122,5 +124,15 @@ refused "sweep: vimp 0.3 and 0.30000000000000004 are one case, said so" \
 printf '[sweep]\nmodel = chain\nout = %s/o\n[grid]\nn = 2\nvimp = 0.3, 0.3000001\n' "$tmp" >near2.ini
 "$GW" sweep near2.ini --check >near2.out 2>&1 && grep -q "2 cases" near2.out &&
     ok "control: vimp 0.3 and 0.3000001 are two cases" || ko "control: 0.3, 0.3000001: $(head -c 200 near2.out)"
+
+# 5 a choice's long value quoted short, as a number's (found after the pass:
+# `--mass-law` of 301 digits was quoted whole)
+long=$(printf '1%.0s' $(seq 1 301))
+refused "layer-make --mass-law of 301 characters quoted by its first 20 and its length" \
+    "^granwave layer-make --mass-law: unknown value '1{20}\.\.\.' \(301 characters\) \(disc sphere\)$" \
+    layer-make --mass-law "$long" --out "$tmp/o" --quiet
+refused "control: a short unknown choice quoted whole" \
+    "^granwave layer-make --mass-law: unknown value 'disc2' \(disc sphere\)$" \
+    layer-make --mass-law disc2 --out "$tmp/o" --quiet
 
 test_summary test_hostile_fiftieth

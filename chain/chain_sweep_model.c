@@ -59,7 +59,9 @@ static int prepare(gw_chain_setup *s, int nk, const char *const *names, const ch
 
 /* What a pass of checks tallies over the cases (the memo), each said in one
  * warning line over the sweep: the dt given above the step the case takes,
- * and a damping model with a constant of 0 (chain_damping_zero). */
+ * a damping model with a constant of 0 (chain_damping_zero), and a contact
+ * damping, sensor dashpot or guide friction too small to act (the single
+ * run's no-effect rules against the case's rtol). */
 typedef struct sweep_memo {
     chain_dt_tally dt;
     int zero, total;
@@ -68,6 +70,7 @@ typedef struct sweep_memo {
     long cases;      /* the cases checked so far (the next one's index) */
     long k_one, k_first; /* cases of one body (n = 1) given the key k, the first of them */
     int k_acts;      /* a case of two beads or more given k */
+    chain_drag_cases drag; /* the sensor's dashpot and the guide's friction of no effect */
 } sweep_memo;
 
 /* tally (may be NULL): the case's dt given against the step it will take, and its damping */
@@ -102,6 +105,7 @@ static int check_tally(sweep_memo *tally, int nk, const char *const *names, cons
                 const double e = chain_damping_effect(&r.params);
                 tally->small_hi = tally->small++ ? fmax(tally->small_hi, e) : e;
             }
+            chain_drag_cases_add(&tally->drag, &r.params, r.run.sp.rtol, tally->cases);
         }
         gw_chain_resolved_free(&r);
     }
@@ -137,7 +141,8 @@ static int memo_warnings(const void *memo, char **list)
                    : GW_ENOMEM;
     int rc = m ? chain_dt_tally_warnings(&m->dt, "dt", "cases", list) : GW_OK;
     rc = rc == GW_OK && m ? chain_damping_zero_warnings(NULL, m->zero, m->total, list) : rc;
-    return rc == GW_OK && m ? chain_damping_small_cases_warning(m->small, m->total, m->small_hi, list) : rc;
+    rc = rc == GW_OK && m ? chain_damping_small_cases_warning(m->small, m->total, m->small_hi, list) : rc;
+    return rc == GW_OK && m ? chain_drag_cases_warnings(&m->drag, m->total, list) : rc;
 }
 
 /* A case's part: the share of its collision's work done (chain_watch_share,

@@ -94,6 +94,19 @@ void chain_drag_tally_add(chain_drag_tally *t, const gw_chain_params *p);
 int chain_drag_tally_warnings(const chain_drag_tally *t, double rtol, char **list);
 int chain_drag_small_study_warnings(const gw_chain_params *p, double rtol, const double *v, int nv, int n_lo,
                                     int n_hi, char **list);
+/* The same rule over a sweep's cases (a chain sweep given sensor-damping =
+ * 1e-12 on a 1e-2 kg, 1e7 N/m sensor ran in silence before session 44): each
+ * case's effects against its own rtol (chain_drag_cases_add, k the case's
+ * index), and one warning line for each of the two, counting the cases where
+ * it has no effect among total, the largest such effect and the first such
+ * case. GW_OK or GW_ENOMEM. */
+typedef struct chain_drag_cases {
+    long sensor, guide;             /* cases where each has no effect */
+    long sensor_first, guide_first; /* the first of them */
+    double sensor_hi, guide_hi;     /* the largest effect among them */
+} chain_drag_cases;
+void chain_drag_cases_add(chain_drag_cases *c, const gw_chain_params *p, double rtol, long k);
+int chain_drag_cases_warnings(const chain_drag_cases *c, long total, char **list);
 /* A run's energy error above GW_CHAIN_ENERGY_WARN with energy_tol off (0):
  * a warning naming the error and the solver's rtol and atol (rk4: its step),
  * the integration too loose to trust the column's numbers. Nothing when

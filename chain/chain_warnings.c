@@ -263,6 +263,44 @@ int chain_drag_small_study_warnings(const gw_chain_params *p, double rtol, const
     return chain_drag_tally_warnings(&t, rtol, list);
 }
 
+/* A sweep's case: its dashpot and its friction each tallied when present
+ * and below the case's rtol (the single run's test) */
+void chain_drag_cases_add(chain_drag_cases *c, const gw_chain_params *p, double rtol, long k)
+{
+    if (!c || !p || !(rtol > 0))
+        return;
+    const double z = chain_sensor_damping_effect(p), g = chain_guide_effect(p);
+    if (z > 0 && z < rtol) {
+        if (c->sensor++ == 0)
+            c->sensor_first = k, c->sensor_hi = z;
+        c->sensor_hi = fmax(c->sensor_hi, z);
+    }
+    if (g > 0 && g < rtol) {
+        if (c->guide++ == 0)
+            c->guide_first = k, c->guide_hi = g;
+        c->guide_hi = fmax(c->guide_hi, g);
+    }
+}
+
+int chain_drag_cases_warnings(const chain_drag_cases *c, long total, char **list)
+{
+    if (!c)
+        return GW_OK;
+    int rc = GW_OK;
+    if (c->sensor > 0)
+        rc = gw_warnings_add(list, "the sensor body's dashpot has no effect in %ld of %ld cases (the first, case %ld): "
+                             "its damping ratio c/(2 sqrt(k_s m_s)), at most %.3g there, is below the case's rtol, "
+                             "and their rows are those of --sensor-damping 0 (give a larger --sensor-damping)",
+                             c->sensor, total, c->sensor_first, c->sensor_hi);
+    if (rc == GW_OK && c->guide > 0)
+        rc = gw_warnings_add(list, "the guide's friction has no effect in %ld of %ld cases (the first, case %ld): its "
+                             "predicted relative effect on the impact, (F_c/v + c_g) t_col/m, at most %.3g there, is "
+                             "below the case's rtol, and their rows are those of a column without friction (give a "
+                             "larger --guide-friction or --guide-viscous)", c->guide, total, c->guide_first,
+                             c->guide_hi);
+    return rc;
+}
+
 /* A dt given above the step the run could take ran at that step: the
  * results are the step's (chain --dt 1e-3 byte for byte those of the
  * automatic dt-max 6.6e-6 s); refusing would refuse the dt that earlier

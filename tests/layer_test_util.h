@@ -2,7 +2,8 @@
  * layer_test_util.h: a synthetic impact result for the crowns' tests: ns samples
  * every dt s over nr rings, the series zero, for the test to fill, and its free;
  * a small pile settled by layer-make for the tests that run impacts on one;
- * and three discs in a row, a sample built in memory for the hostile tests.
+ * and three discs in a row, a sample built in memory for the hostile tests
+ * (test_library_hostile39, test_library_leftovers41, test_library_left43).
  */
 #ifndef GW_LAYER_TEST_UTIL_H
 #define GW_LAYER_TEST_UTIL_H

@@ -56,14 +56,11 @@ impact() {
 # speeds NAME: "strain kinetic xcorr" (null or rounded m/s), then the dt-out
 # warning's speed list ("-" when there is none), then the number of warnings
 speeds() {
-    $PY - "$1.json" <<'EOF'
-import json, re, sys
-d = json.load(open(sys.argv[1]))
-v = [("null" if d[k] is None else "%.0f" % d[k]) for k in ("wave_speed", "wave_speed_kinetic", "wave_speed_xcorr")]
-w = [x for x in d["warnings"] if x.startswith("dt-out:")]
-names = re.search(r"(?:so|:) (wave_speed[^:]*?) (?:is|are) null", w[0]) if w else None
-print(" ".join(v), (names.group(1).replace(" ", "") if names else "-"), len(d["warnings"]))
-EOF
+    local names
+    names=$(json_warnings "$1.json" dt-out: | head -1 |
+                grep -oP '(?:so|:) \Kwave_speed[^:]*?(?= (?:is|are) null)' | head -1 | tr -d ' ')
+    echo "$(json_fields "$1.json" %.0f wave_speed wave_speed_kinetic wave_speed_xcorr) ${names:--}" \
+        "$(json_warnings "$1.json" | wc -l)"
 }
 
 impact d0
@@ -132,11 +129,9 @@ read -r sg kg xg ng wg <<<"$(speeds dg)"
 # --- 2 the studies' collisions beyond one radius ---
 heavy=(--mass 1000 --radius 1e-5)
 cpu_run 60 "$GW" chain --n 3 "${heavy[@]}" --json --quiet >c.json 2>/dev/null
-chain_ov=$($PY -c '
-import json, re
-d = json.load(open("c.json"))
-m = [re.match(r"the largest contact overlap was ([0-9.e+]+) bead radii:", w) for w in d["warnings"]]
-print(next((x.group(1) for x in m if x), "-"))')
+chain_ov=$(json_warnings c.json "the largest contact overlap was " |
+               sed -n 's/^the largest contact overlap was \([0-9.e+]*\) bead radii:.*/\1/p' | head -1)
+chain_ov=${chain_ov:--}
 [ "$chain_ov" != - ] && ok "control: chain --n 3 ${heavy[*]} warns of its overlap ($chain_ov radii), one-run line" ||
     ko "control: chain --n 3 ${heavy[*]}: no one-run overlap line"
 cat >ov.py <<'EOF'
@@ -165,7 +160,7 @@ for st in "${studies[@]}"; do
         ko "${args[0]} ${heavy[*]}: exit $rc, $got, stderr: $(head -c 200 st.err)"
 done
 cpu_run 120 "$GW" falcon --n 1:3 --vimp 0.3 --heights none --json --quiet >st.json 2>/dev/null
-[ "$($PY -c 'import json; print(sum("overlap" in w for w in json.load(open("st.json"))["warnings"]))')" = 0 ] &&
+[ "$(json_warnings st.json | grep -c overlap)" = 0 ] &&
     ok "control: the default falcon column says nothing of overlaps" || ko "control: the default falcon warns of an overlap"
 
 # Python: the same warning through the library (GranwaveWarning naming dt_out)

@@ -44,6 +44,12 @@
 # A sweep stopped mid-way by a disturbance of its journal (at_row):
 #   sweep_stopped WHAT RC ERR LINES PATTERN: exit 1, LINES lines, PATTERN;
 #   kept_rows WHAT KEPT BEFORE TOTAL ERR: the journal kept aside, counted.
+# A command's --json read back (test_wave_speed_dt_out, test_hostile_fortyeighth):
+#   json_fields FILE FMT KEY...: the top-level KEYs of FILE's JSON object on one
+#   line, blank-separated, each as Python's FMT % value ("%.0f", "%r"), "null"
+#   for a null or a missing key;
+#   json_warnings FILE [PREFIX]: the entries of its "warnings" that begin with
+#   PREFIX (all when none is given), one line each.
 # Background jobs of a script ignore SIGINT (bash sets it so): a run that is to
 # see SIGINT is started under `env --default-signal=INT`.
 fails=0; passes=0
@@ -299,3 +305,21 @@ journal_held_edit() {
 }
 journal_add_line() { echo "# a note" >>"$1/journal.csv"; cp "$1/journal.csv" "$1.left"; }
 journal_cut() { : >"$1/journal.csv"; : >"$1.left"; }
+
+json_fields() {
+    /usr/bin/python3 - "$@" <<'EOF'
+import json, sys
+d = json.load(open(sys.argv[1]))
+print(" ".join("null" if d.get(k) is None else sys.argv[2] % d[k] for k in sys.argv[3:]))
+EOF
+}
+
+json_warnings() {
+    /usr/bin/python3 - "$@" <<'EOF'
+import json, sys
+start = sys.argv[2] if len(sys.argv) > 2 else ""
+for w in json.load(open(sys.argv[1]))["warnings"]:
+    if w.startswith(start):
+        print(w)
+EOF
+}

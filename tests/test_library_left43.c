@@ -28,6 +28,7 @@
 
 #include "granwave.h"
 #include "gw_test_cases.h"
+#include "layer_test_util.h"
 #include "test_child.h"
 
 static char dir[64];
@@ -137,11 +138,7 @@ static int c_sample_newline(void)
 {
     char path[128];
     snprintf(path, sizeof path, "%s/s\n.txt", dir);
-    static double x[3] = {0.3, 0.5, 0.7}, y[3] = {0.1, 0.1, 0.1}, r[3] = {0.1, 0.1, 0.1};
-    gw_layer_sample s;
-    memset(&s, 0, sizeof s);
-    s.n = 3, s.width = 1, s.rm = 0.1, s.volume_ratio = 1, s.porosity = NAN;
-    s.x = x, s.y = y, s.r = r;
+    gw_layer_sample s = test_three_discs(); /* layer_test_util.h */
     gw_err e = {0};
     return refused_ctrl(gw_layer_sample_write(&s, path, NULL, &e), &e, "byte 0x0a");
 }

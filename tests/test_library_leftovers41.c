@@ -52,6 +52,7 @@
 
 #include "granwave.h"
 #include "gw_test_cases.h"
+#include "layer_test_util.h"
 #include "test_child.h"
 
 #ifdef GW_TEST_BEFORE
@@ -482,11 +483,7 @@ static int c_h5_control(void)
 {
     char path[128];
     snprintf(path, sizeof path, "%s/w.h5", dir);
-    static double x[3] = {0.3, 0.5, 0.7}, y[3] = {0.1, 0.1, 0.1}, r[3] = {0.1, 0.1, 0.1};
-    gw_layer_sample s;
-    memset(&s, 0, sizeof s);
-    s.n = 3, s.width = 1, s.rm = 0.1, s.volume_ratio = 1, s.porosity = NAN;
-    s.x = x, s.y = y, s.r = r;
+    gw_layer_sample s = test_three_discs(); /* layer_test_util.h */
     gw_err e = {0};
     EXPECT(gw_layer_sample_write(&s, path, NULL, &e) == GW_OK);
     gw_layer_sample t;

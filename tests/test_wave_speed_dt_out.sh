@@ -61,7 +61,7 @@ print("ok" if not bad else " ".join(bad))
 EOF
 }
 # warned NAME: the --json warnings starting "dt-out:" (empty when none)
-warned() { $PY -c "import json; print(''.join(w for w in json.load(open('$1.json'))['warnings'] if w.startswith('dt-out:')))"; }
+warned() { json_warnings "$1.json" dt-out:; }
 
 speeds=(wave_speed wave_speed_kinetic wave_speed_xcorr wave_speed_err crowns.peak_strain_t crowns.peak_kinetic_t
         crowns.xcorr_delay)

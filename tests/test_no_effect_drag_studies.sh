@@ -72,6 +72,7 @@ PY
 study 1 "$F $SB" "--sensor-damping 1e-12" "--sensor-damping 10" \
     "granwave falcon: warning: the sensor body's dashpot (--sensor-damping 1e-12 N s/m) has no effect: its damping ratio c/(2 sqrt(k_s m_s)) = 1.58e-15 (the largest over the study's 3 columns) is below the solver's rtol" \
     "sensor body's dashpot"
+# shellcheck disable=SC2086
 timeout 300 "$GW" $F $SB --sensor-damping 1e-30 --json >f0.json 2>/dev/null
 if /usr/bin/python3 - 1.json f0.json <<'PY'
 import json, sys

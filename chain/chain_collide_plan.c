@@ -824,7 +824,8 @@ static double steps_at_k(const gw_chain_params *p, const gw_chain_run_opts *o, c
     gw_chain_params q = *p;
     q.k = k;
     q.kc = NULL; /* (k_steps_refusal: each of them p's k) */
-    const double t_col = chain_collision_length(&q, NULL), t_expect = fmin(o->t_max > 0 ? o->t_max : 20.0 * t_col, t_col);
+    const double t_col = chain_collision_length(&q, NULL);
+    const double t_expect = fmin(o->t_max > 0 ? o->t_max : 20.0 * t_col, t_col);
     gw_solver_params sp = o->sp;
     if (!(sp.dt_max > 0))
         sp.dt_max = 0.25 * chain_contact_tau_min(&q, 2 * q.v_imp);
@@ -915,7 +916,8 @@ static int k_steps_refusal(const gw_chain_params *p, const gw_chain_run_opts *o,
     const double q0 = pow(10, floor(log10(ends[0])) - 1), q1 = pow(10, floor(log10(ends[1])) - 1);
     const double lo = ends[0] > DBL_MIN ? ceil(ends[0] / q0) * q0 : ends[0],
                  hi = ends[1] < DBL_MAX ? floor(ends[1] / q1) * q1 : ends[1];
-    const double t_col = chain_collision_length(&q, NULL), t_expect = fmin(o->t_max > 0 ? o->t_max : 20.0 * t_col, t_col);
+    const double t_col = chain_collision_length(&q, NULL);
+    const double t_expect = fmin(o->t_max > 0 ? o->t_max : 20.0 * t_col, t_col);
     return gw_err_set(err, GW_EINVAL, "k: %g N/m^1.5 is outside [%.2g, %.2g], where this column's run stays within "
                       "%.0e steps (%d beads, kwall %g N/m^1.5, masses, radii and v_imp as given): at this k its "
                       "shortest contact lasts %.3g s, and the step chosen to resolve it needs about %.3g steps over %s "

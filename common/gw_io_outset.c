@@ -178,14 +178,7 @@ int gw_outset_check_input(const char *dir, const char *const *names, const char 
                                   "--out or another name", what, input, cd[k] ? "a directory above the one" :
                                   "the directory", dir);
         }
-        /* the same directory: by device and inode where both are there, else
-         * (the --out still to make, the file's directory in it: --wisdom
-         * od/dispersion.json --out od, passed before session 44 and the
-         * run's dispersion.json then overwritten by the wisdom) by their paths */
-        const int d_there = stat(d, &in) == 0, dir_there = stat(dir, &st) == 0;
-        if (d_there && dir_there ? in.st_dev != st.st_dev || in.st_ino != st.st_ino
-            : d_there || dir_there || gw_io_path_canon(d, ci, sizeof ci) != 0 ||
-                  gw_io_path_canon(dir, cd, sizeof cd) != 0 || strcmp(ci, cd) != 0)
+        if (stat(d, &in) != 0 || stat(dir, &st) != 0 || in.st_dev != st.st_dev || in.st_ino != st.st_ino)
             return GW_OK;
         for (int k = 0; names[k]; k++)
             if (strcmp(base, names[k]) == 0)

@@ -849,8 +849,10 @@ static double steps_at_k(const gw_chain_params *p, const gw_chain_run_opts *o, c
  * their least found by golden section, each end of the range by bisection, to
  * 1e-7 decades, given to two digits inside it; about 130 evaluations, each
  * O(1) for equal beads, O(n) otherwise. GW_OK (err untouched) where k is not
- * the cause: a k within the bound, kc other than k at a contact, a step
- * given, or no k within the bound (too many beads: the message as it was). */
+ * the cause: a k within the bound, a bead-bead contact that is not the
+ * column's shortest (a stiff wall's is: kwall the cause), kc other than k at
+ * a contact, a step given, or no k within the bound (too many beads: the
+ * message as it was). */
 static int k_steps_refusal(const gw_chain_params *p, const gw_chain_run_opts *o, const gw_solver_type *type,
                            const char *over, gw_err *err)
 {
@@ -871,6 +873,16 @@ static int k_steps_refusal(const gw_chain_params *p, const gw_chain_run_opts *o,
 #define K_STEPS(x) steps_at_k(&q, o, type, pow(10, (x)))
 #define K_OK(x) (K_STEPS(x) <= max_steps)
     if (K_OK(lk))
+        return GW_OK;
+    /* k the cause: its bead-bead contact the shortest, shorter than every
+     * other (the wall's, a sensor's) as with the softest k. A column on a wall
+     * of kwall 1.8e308 was otherwise told to take k above 3.9e290. */
+    gw_chain_params soft = q;
+    soft.kc = NULL;
+    soft.k = DBL_MIN;
+    gw_chain_params given = soft;
+    given.k = k;
+    if (!(chain_contact_tau_min(&given, 2 * q.v_imp) < chain_contact_tau_min(&soft, 2 * q.v_imp) * (1 - 1e-9)))
         return GW_OK;
     /* the least steps (NaN, beyond the doubles, as more than any) */
     const double g = 0.5 * (sqrt(5.0) - 1);

@@ -143,7 +143,9 @@ static int c_heavy_control(void)
  * beads or a shorter run", the step derived from k; now named k with the
  * range within the steps' bound, whose top end runs the check and 10 % above
  * it does not. Controls: k and kwall both 1e200 pass (the column is
- * scale-free); a step given is still the step's refusal. */
+ * scale-free); a step given is still the step's refusal; a wall of kwall
+ * 1.8e308, whose contact is the shortest, is not put on k (it was told to
+ * take k above 3.9e290 before k's cause was checked). */
 static int k_named(const gw_chain_params *p, const gw_chain_run_opts *o, double *hi)
 {
     gw_err e = {0};
@@ -193,6 +195,11 @@ static int c_k_huge_named(void)
     p.n = 3;
     o.sp.dt_max = 1e-15;
     EXPECT(refused(gw_chain_run_check(&p, &o, &e), &e, "dt-max: a step of 1e-15 s"));
+    /* and a wall of kwall 1.8e308 (its contact the shortest) does not blame k */
+    o = gw_chain_run_opts_default();
+    o.dt_out = 1e-6;
+    p.kwall = DBL_MAX;
+    EXPECT(refused(gw_chain_run_check(&p, &o, &e), &e, "dt-max: a step of") && strncmp(e.msg, "k: ", 3) != 0);
     return 0;
 }
 

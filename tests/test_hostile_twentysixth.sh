@@ -38,8 +38,9 @@
 #    makes), the run writes od's files and od/w, and the next run reads it; a
 #    wisdom path under od/sub (never made) or in a directory that exists
 #    nowhere stays refused, so does od/dispersion.json (one of the run's own
-#    files, which passed the check while od was missing), and a run refused
-#    for another input makes nothing.
+#    files: the check of the run's files knows them by the directory's inode,
+#    which od still to make has not), and a run refused for another input
+#    makes nothing.
 #  5 A file of DIR that this user cannot replace: another user's file in a
 #    sticky directory (/tmp). The rename failed after the run ("write failed:
 #    Operation not permitted", exit 1), and the set's other files were placed

@@ -816,6 +816,128 @@ static int opts_numbers_check(const gw_chain_run_opts *o, gw_err *err)
                                       "gw_chain_run_opts.sp.atol", err);
 }
 
+/* The run's steps over its expected collision (as plan_make counts them)
+ * with the bead-bead coefficient k in place of p's, every other input p's
+ * and o's: NaN where the column's scales leave the doubles. */
+static double steps_at_k(const gw_chain_params *p, const gw_chain_run_opts *o, const gw_solver_type *type, double k)
+{
+    gw_chain_params q = *p;
+    q.k = k;
+    q.kc = NULL; /* (k_steps_refusal: each of them p's k) */
+    const double t_col = chain_collision_length(&q, NULL);
+    const double t_expect = fmin(o->t_max > 0 ? o->t_max : 20.0 * t_col, t_col);
+    gw_solver_params sp = o->sp;
+    if (!(sp.dt_max > 0))
+        sp.dt_max = 0.25 * chain_contact_tau_min(&q, 2 * q.v_imp);
+    if (type == gw_solver_rk4 && !(sp.dt > 0))
+        sp.dt = chain_rk4_default_dt(&q, o->steps_per_tc);
+    const double r = t_expect / (type == gw_solver_rk4 ? fmin(sp.dt, sp.dt_max) : sp.dt_max);
+    return isfinite(r) && r > 0 ? r : NAN;
+}
+
+/* The steps' bound refused a step the run chose itself from the column's
+ * contacts: k = 1.8e308 N/m^1.5 (with the default kwall, masses and v_imp;
+ * the library's struct, whose k has no range of its own, the column being
+ * scale-free) was refused as "dt-max: a step of 2.86e-125 s needs about
+ * 1.22e+120 steps ... fewer beads or a shorter run", naming a quantity
+ * derived from k and advice beside the point (the fiftieth pass; left after
+ * session 43). Where the bound holds for some k (one k at every contact, the
+ * other inputs as given) and not for the k given, the refusal names k, its
+ * value and the range of k within the bound, and what the steps came to. The
+ * steps are one-humped in log k (falling while the wall's contact sets the
+ * step and the transits shorten, rising once the bead-bead contact sets it):
+ * their least found by golden section, each end of the range by bisection, to
+ * 1e-7 decades, given to two digits inside it; about 130 evaluations, each
+ * O(1) for equal beads, O(n) otherwise. GW_OK (err untouched) where k is not
+ * the cause: a k within the bound, a bead-bead contact that is not the
+ * column's shortest (a stiff wall's is: kwall the cause), kc other than k at
+ * a contact, a step given, or no k within the bound (too many beads: the
+ * message as it was). */
+static int k_steps_refusal(const gw_chain_params *p, const gw_chain_run_opts *o, const gw_solver_type *type,
+                           const char *over, gw_err *err)
+{
+    if (p->n < 2 || o->sp.dt_max > 0 || (type == gw_solver_rk4 && o->sp.dt > 0))
+        return GW_OK;
+    for (int i = 0; p->kc && i < p->n - 1; i++) /* the chain's own kc: each k, unless given per contact */
+        if (p->kc[i] != p->k)
+            return GW_OK;
+    gw_chain_params q = *p;
+    int equal = q.masses != NULL; /* equal beads: the scalar mass (each evaluation O(1)) */
+    for (int i = 1; equal && i < q.n; i++)
+        equal = q.masses[i] == q.masses[0];
+    if (equal) {
+        q.mass = q.masses[0];
+        q.masses = NULL;
+    }
+    const double max_steps = 1e8, k = p->k, lk = log10(k), lo_end = log10(DBL_MIN), hi_end = log10(DBL_MAX);
+#define K_STEPS(x) steps_at_k(&q, o, type, pow(10, (x)))
+#define K_OK(x) (K_STEPS(x) <= max_steps)
+    if (K_OK(lk))
+        return GW_OK;
+    /* k the cause: its bead-bead contact the shortest, shorter than every
+     * other (the wall's, a sensor's) as with the softest k. A column on a wall
+     * of kwall 1.8e308 was otherwise told to take k above 3.9e290. */
+    gw_chain_params soft = q;
+    soft.kc = NULL;
+    soft.k = DBL_MIN;
+    gw_chain_params given = soft;
+    given.k = k;
+    if (!(chain_contact_tau_min(&given, 2 * q.v_imp) < chain_contact_tau_min(&soft, 2 * q.v_imp) * (1 - 1e-9)))
+        return GW_OK;
+    /* the least steps (NaN, beyond the doubles, as more than any) */
+    const double g = 0.5 * (sqrt(5.0) - 1);
+    double a = lo_end, b = hi_end, c = b - g * (b - a), d = a + g * (b - a);
+    double fc = K_STEPS(c), fd = K_STEPS(d);
+    for (int it = 0; it < 70 && b - a > 1e-6; it++) {
+        if (!(fc >= fd) && !isnan(fc)) { /* fc < fd, or fd NaN */
+            b = d;
+            d = c;
+            fd = fc;
+            c = b - g * (b - a);
+            fc = K_STEPS(c);
+        } else {
+            a = c;
+            c = d;
+            fc = fd;
+            d = a + g * (b - a);
+            fd = K_STEPS(d);
+        }
+    }
+    const double best = 0.5 * (a + b);
+    if (!K_OK(best))
+        return GW_OK;
+    double ends[2];
+    for (int side = 0; side < 2; side++) {
+        double in = best, out = side ? hi_end : lo_end;
+        if (K_OK(out)) { /* within the bound to the doubles' end */
+            ends[side] = side ? DBL_MAX : DBL_MIN;
+            continue;
+        }
+        for (int it = 0; it < 60 && fabs(out - in) > 1e-7; it++) {
+            const double mid = 0.5 * (in + out);
+            if (K_OK(mid))
+                in = mid;
+            else
+                out = mid;
+        }
+        ends[side] = pow(10, in);
+    }
+#undef K_OK
+#undef K_STEPS
+    /* two digits, inside the range */
+    const double q0 = pow(10, floor(log10(ends[0])) - 1), q1 = pow(10, floor(log10(ends[1])) - 1);
+    const double lo = ends[0] > DBL_MIN ? ceil(ends[0] / q0) * q0 : ends[0],
+                 hi = ends[1] < DBL_MAX ? floor(ends[1] / q1) * q1 : ends[1];
+    const double t_col = chain_collision_length(&q, NULL);
+    const double t_expect = fmin(o->t_max > 0 ? o->t_max : 20.0 * t_col, t_col);
+    return gw_err_set(err, GW_EINVAL, "k: %g N/m^1.5 is outside [%.2g, %.2g], where this column's run stays within "
+                      "%.0e steps (%d beads, kwall %g N/m^1.5, masses, radii and v_imp as given): at this k its "
+                      "shortest contact lasts %.3g s, and the step chosen to resolve it needs about %.3g steps over %s "
+                      "(about %.3g s)",
+                      k, lo, hi, max_steps, p->n, p->kwall, chain_contact_tau_min(&q, 2 * q.v_imp),
+                      steps_at_k(&q, o, type, k), over, t_expect);
+}
+
 /* The plan; whole 0: only the bounds that hold whatever t_max the run is cut
  * at (t_max above the collision's expected length), not those of a run going
  * on to t_max (chain_collide_plan_early) */
@@ -876,8 +998,10 @@ static int plan_make(const gw_chain_params *p0, const gw_chain_run_opts *o, coll
     const double max_samples = 1e9, step = pl->type == gw_solver_rk4 ? fmin(pl->sp.dt, pl->sp.dt_max) : pl->sp.dt_max;
     gw_err e[3] = {{{0}}};
     double n_ok[3] = {INFINITY, INFINITY, INFINITY};
-    if (chain_steps_check(pl->type, &pl->sp, &o->sp, pl->t_expect, over, &e[0]) != GW_OK)
+    if (chain_steps_check(pl->type, &pl->sp, &o->sp, pl->t_expect, over, &e[0]) != GW_OK) {
         n_ok[0] = n * 1e8 / (pl->t_expect / step);
+        k_steps_refusal(p, o, pl->type, over, &e[0]); /* k the cause: named, with its range */
+    }
     /* cvode and arkode follow a sensor body's oscillation too (8 s for 0.1 ms at
      * 1e-7 kg on 1e14 N/m, 5.8e7 steps) */
     if ((rc = chain_sensor_steps_check(p, pl->type, &pl->sp, pl->t_expect, over, err)) != GW_OK)

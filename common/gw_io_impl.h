@@ -44,6 +44,15 @@ int gw_io_write_target(const char *path, char *out, size_t n, const char *what, 
  * be made with another. */
 int gw_io_path_canon(const char *path, char *out, size_t n);
 
+/* gw_out_file_check for a file the run writes once it has made its --out
+ * directory out: path directly in out, which is still to make, passes when
+ * its name does, is none of names (NULL-terminated, the run's own files in
+ * out; NULL: none) and out could be made (gw_out_check); every other path is
+ * gw_out_file_check's (out NULL: that alone). GW_EINVAL with one line naming
+ * what. */
+int gw_io_out_file_check_in(const char *path, const char *out, const char *const *names, const char *what,
+                            gw_err *err);
+
 /* What a write adds to a file's path for its temporary on this host and in
  * this process (gw_afile_open: ".tmp.HOST.PID.XXXXXX", HOST at most 24
  * characters): a path this much below PATH_MAX can be written; one nearer

@@ -371,6 +371,43 @@ int gw_out_file_check(const char *path, const char *what, gw_err *err)
     return rc == GW_OK ? temp_name_fits(path, dir, what, err) : rc;
 }
 
+/* A file written after the run has made its --out directory (dispersion
+ * --wisdom od/w --out od, od not there yet): refused as "directory 'od' of
+ * 'od/w': No such file or directory" before session 44, though the run makes
+ * od before it writes the file. A path whose directory is missing and is out
+ * itself (the same path once made, by gw_io_path_canon) is checked as far as
+ * it can be before out is there: its name (no control byte; short enough,
+ * with the temporary's suffix, for NAME_MAX and PATH_MAX) and out as
+ * gw_out_check checks it, and not one of names (the files the run writes
+ * into out: --wisdom od/dispersion.json --out od would overwrite the run's
+ * own; gw_outset_check_input tells them by the directory's inode, which a
+ * directory still to make has not). Any other path, and a directory that is
+ * a symbolic link to nothing, as gw_out_file_check (a directory that exists
+ * nowhere and is not out stays refused). */
+int gw_io_out_file_check_in(const char *path, const char *out, const char *const *names, const char *what,
+                            gw_err *err)
+{
+    char dir[4096], cd[4096], co[4096];
+    const size_t n = path ? strlen(path) : 0;
+    if (!out || !*out || n == 0 || n >= sizeof dir)
+        return gw_out_file_check(path, what, err);
+    memcpy(dir, path, n + 1);
+    gw_path_parent(dir);
+    struct stat st;
+    if (stat(dir, &st) == 0 || errno != ENOENT || lstat(dir, &st) == 0 ||
+        gw_io_path_canon(dir, cd, sizeof cd) != 0 || gw_io_path_canon(out, co, sizeof co) != 0 || strcmp(cd, co) != 0)
+        return gw_out_file_check(path, what, err);
+    what = what ? what : "output";
+    const char *slash = strrchr(path, '/'), *base = slash ? slash + 1 : path;
+    for (int k = 0; names && names[k]; k++)
+        if (strcmp(base, names[k]) == 0)
+            return gw_err_set(err, GW_EINVAL, "%s: '%s' is the file this run writes as %s/%s: give another --out or "
+                              "another name", what, path, out, names[k]);
+    if (gw_io_new_name_check(path, what, err) != GW_OK || out_dir_check(out, what, 0, err) != GW_OK)
+        return GW_EINVAL;
+    return temp_name_fits(path, dir, what, err);
+}
+
 /* path quoted for a one-line message: itself, or its first and last 48
  * characters around "..." (a path near PATH_MAX filled the message's 512
  * bytes and cut off the reason after it) */

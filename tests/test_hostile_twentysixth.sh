@@ -31,6 +31,16 @@
 #    make that is the --out directory or one above it is now refused before
 #    the run (exit 2, nothing made), by the check that already refused it as
 #    one of the files in DIR (gw_outset_check_input).
+#  4b A wisdom file inside an --out still to make (`--wisdom od/w --out od`,
+#    od not there) was refused as "directory 'od' of 'od/w': No such file or
+#    directory" (session 44), though the run makes od before it saves the
+#    wisdom: it is now taken (checked as a name in the directory the run
+#    makes), the run writes od's files and od/w, and the next run reads it; a
+#    wisdom path under od/sub (never made) or in a directory that exists
+#    nowhere stays refused, so does od/dispersion.json (one of the run's own
+#    files: the check of the run's files knows them by the directory's inode,
+#    which od still to make has not), and a run refused for another input
+#    makes nothing.
 #  5 A file of DIR that this user cannot replace: another user's file in a
 #    sticky directory (/tmp). The rename failed after the run ("write failed:
 #    Operation not permitted", exit 1), and the set's other files were placed
@@ -153,6 +163,45 @@ if "$GW" dispersion --n 64 --t-samples 256 --wisdom w4.wisdom --quiet --out w4 >
 else
     ko "dispersion --wisdom w4.wisdom --out w4: $(head -c 300 "$tmp/err")"
 fi
+
+# --- 4b a wisdom file inside the --out directory still to make ---
+rm -rf od
+if "$GW" dispersion --n 64 --t-samples 64 --wisdom od/w --out od --quiet >/dev/null 2>"$tmp/err" &&
+    [ -s od/dispersion.json ] && [ -s od/dispersion_ridge.csv ] && head -c 7 od/w | grep -q '(fftw-3'; then
+    ok "dispersion --wisdom od/w --out od (od still to make): runs, od's files and the wisdom written"
+else
+    ko "dispersion --wisdom od/w --out od: $(head -c 300 "$tmp/err")"
+fi
+if "$GW" dispersion --n 64 --t-samples 64 --wisdom od/w --out od --quiet >/dev/null 2>"$tmp/err" &&
+    [ "$(jq_py od/dispersion.json "d['settings']['spectrum']['fftw_wisdom_fnv1a64'] is not None")" = True ]; then
+    ok "dispersion --wisdom od/w --out od again: the wisdom the first run saved is read"
+else
+    ko "dispersion --wisdom od/w --out od again: $(head -c 300 "$tmp/err")"
+fi
+rm -rf od od2
+if "$GW" dispersion --n 64 --t-samples 64 --wisdom ./od2//w --out od2/ --quiet >/dev/null 2>"$tmp/err" &&
+    head -c 7 od2/w | grep -q '(fftw-3' && [ -s od2/dispersion.json ]; then
+    ok "dispersion --wisdom ./od2//w --out od2/: the same directory spelled otherwise, taken"
+else
+    ko "dispersion --wisdom ./od2//w --out od2/: $(head -c 300 "$tmp/err")"
+fi
+# wisdom_refused WHAT PATTERN ARGS...: exit 2 naming --wisdom, od and nod not made
+wisdom_refused() {
+    local what=$1 pat=$2; shift 2
+    rm -rf od nod
+    exits_refused "$what" "$pat" 20 "$GW" dispersion --t-samples 64 "$@" || return
+    if [ -e od ] || [ -e nod ]; then ko "$what: made $(ls -d od nod 2>/dev/null)"; return; fi
+    ok "$what: exit 2, nothing made"
+}
+wisdom_refused "dispersion --wisdom od/dispersion.json --out od (od still to make)" \
+    "dispersion --wisdom: 'od/dispersion.json' is the file this run writes as od/dispersion.json" \
+    --n 64 --wisdom od/dispersion.json --out od
+wisdom_refused "dispersion --wisdom od/sub/w --out od (od/sub never made)" \
+    "dispersion --wisdom: directory 'od/sub' of 'od/sub/w': No such file" --n 64 --wisdom od/sub/w --out od
+wisdom_refused "dispersion --wisdom nod/w --out od (nod exists nowhere)" \
+    "dispersion --wisdom: directory 'nod' of 'nod/w': No such file" --n 64 --wisdom nod/w --out od
+wisdom_refused "dispersion --n 7 --wisdom od/w --out od (refused for --n)" "dispersion --n: 7 is outside" \
+    --n 7 --wisdom od/w --out od
 
 # --- 6 --until given with --full, whatever its value ---
 REFUSE_TIMEOUT=60 refused "layer-impact --full --until rebound" "layer-impact --until: rebound has no effect with full" \

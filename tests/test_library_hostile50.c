@@ -14,6 +14,11 @@
  *     is a double, and the column's overlap, energy, force, T_c and step
  *     scales must each be a normal double, else GW_EINVAL naming v_imp, mass,
  *     k, kwall. Control: a mass of 1.8e308 kg runs, F_max as m^(3/5).
+ *   - k = 1.8e308 N/m^1.5 with the default kwall (left after session 43) was
+ *     still refused as "dt-max: a step of 2.86e-125 s needs about 1.22e+120
+ *     steps ... fewer beads or a shorter run": now named k, with the range
+ *     of k within the steps' bound (its top end passes, 10 % above it is
+ *     refused), by the check and the run, under cvode and rk4.
  *   - the run options took subnormals: t_max 4.9e-324 s "blew up" under
  *     cvode and arkode ("lower dt-max, rtol or atol"), steps_per_tc 4.9e-324
  *     made rk4's step inf ("solver: dt must be >= 0, got inf"); and
@@ -130,6 +135,71 @@ static int c_heavy_control(void)
     const double m0 = gw_chain_params_default().mass;
     EXPECT(f0 > 60 && f1 > 0);
     EXPECT(fabs(f1 / (f0 * (pow(DBL_MAX, 0.6) / pow(m0, 0.6))) - 1) < 1e-6);
+    return 0;
+}
+
+/* k = 1.8e308 N/m^1.5 with the default kwall (left after session 43): refused
+ * as "dt-max: a step of 2.86e-125 s needs about 1.22e+120 steps ... fewer
+ * beads or a shorter run", the step derived from k; now named k with the
+ * range within the steps' bound, whose top end runs the check and 10 % above
+ * it does not. Controls: k and kwall both 1e200 pass (the column is
+ * scale-free); a step given is still the step's refusal; a wall of kwall
+ * 1.8e308, whose contact is the shortest, is not put on k (it was told to
+ * take k above 3.9e290 before k's cause was checked). */
+static int k_named(const gw_chain_params *p, const gw_chain_run_opts *o, double *hi)
+{
+    gw_err e = {0};
+    const int rc = gw_chain_run_check(p, o, &e);
+    double lo = 0;
+    if (!refused(rc, &e, "k: ") || strncmp(e.msg, "k: ", 3) != 0 || !strstr(e.msg, "N/m^1.5 is outside [") ||
+        sscanf(strstr(e.msg, "outside [") + 9, "%lg, %lg]", &lo, hi) != 2 || !(lo > 0 && lo < *hi)) {
+        printf("k %g: '%s'\n", p->k, e.msg);
+        return 0;
+    }
+    return 1;
+}
+
+static int c_k_huge_named(void)
+{
+    gw_chain_params p = gw_chain_params_default();
+    p.n = 3;
+    p.k = DBL_MAX;
+    gw_chain_run_opts o = gw_chain_run_opts_default();
+    double hi = 0;
+    EXPECT(k_named(&p, &o, &hi) && hi < 1e40 && hi > p.kwall);
+    /* the run itself refuses it the same way (the chain's own kc, each k) */
+    gw_chain *c = NULL;
+    gw_err e = {0};
+    EXPECT(gw_chain_create(&p, &c, &e) == GW_OK);
+    gw_chain_result r;
+    memset(&r, 0, sizeof r);
+    const int rc = gw_chain_collide(c, &o, &r, &e);
+    gw_chain_result_free(&r);
+    gw_chain_free(c);
+    EXPECT(refused(rc, &e, "k: 1.79769e+308 N/m^1.5 is outside ["));
+    /* the range's top end runs the check, 10 % above it is refused naming k */
+    p.k = hi;
+    EXPECT(gw_chain_run_check(&p, &o, &e) == GW_OK);
+    p.k = 1.1 * hi;
+    double hi2 = 0;
+    EXPECT(k_named(&p, &o, &hi2) && hi2 == hi);
+    /* rk4's own step as well */
+    p.k = DBL_MAX;
+    o.solver = gw_solver_rk4;
+    EXPECT(k_named(&p, &o, &hi2));
+    /* controls: k and kwall both 1e200 pass; a dt_max given is its own refusal */
+    o = gw_chain_run_opts_default();
+    p.k = p.kwall = 1e200;
+    EXPECT(gw_chain_run_check(&p, &o, &e) == GW_OK);
+    p = gw_chain_params_default();
+    p.n = 3;
+    o.sp.dt_max = 1e-15;
+    EXPECT(refused(gw_chain_run_check(&p, &o, &e), &e, "dt-max: a step of 1e-15 s"));
+    /* and a wall of kwall 1.8e308 (its contact the shortest) does not blame k */
+    o = gw_chain_run_opts_default();
+    o.dt_out = 1e-6;
+    p.kwall = DBL_MAX;
+    EXPECT(refused(gw_chain_run_check(&p, &o, &e), &e, "dt-max: a step of") && strncmp(e.msg, "k: ", 3) != 0);
     return 0;
 }
 
@@ -442,6 +512,7 @@ static const child_row rows[] = {
     {"chain: v_imp 1e200 and 1000 beads of 1e306 kg named (energy inf)", c_chain_scales},
     {"closed forms: tau_1 at K = 1.8e308 and d_max at v = 1e200 are their values", c_closed_forms_overflow},
     {"chain: a mass of 1.8e308 kg runs, F_max as m^0.6 (control)", c_heavy_control},
+    {"chain: k = 1.8e308 with the default kwall named k with its range (was dt-max)", c_k_huge_named},
     {"run options: subnormal t_max and steps_per_tc, rtol NaN, atol -1 refused by the check", c_opts_subnormal},
     {"cvode, arkode: a first step of 1.8e308 s runs as the default", c_first_step_huge},
     {"solver: sp.use_jac -1, 2, INT_MIN refused by the check and the run; 0 and 1 agree", c_use_jac},

@@ -20,11 +20,16 @@
 #    nothing until a case ended; P > 0 and rising while no case has ended
 #    (the cases seen inside: before, "0/2 cases, 2 under way" and no P);
 #  - a layer sweep of two exact impacts on a 40-disc pile at 20 and 21 m/s,
-#    rk4 at 4e-7 s, one thread (each about 5 s to T_f = 0.31 s): a line "sweep: 0/2 cases, 1 under way, P% ..." with
-#    P > 0 inside the first case, and one with P above 10 % (a case's part
-#    its simulated time over the end its block's flight gives: over t-max,
-#    P stayed under 7.7 % until a case ended), a line at 100 % at the end, exit 0, and
-#    the table of its --quiet twin (results bit for bit);
+#    rk4, one thread, to T_f = 0.31 s: a line "sweep: 0/2 cases, 1 under
+#    way, P% ..." with P > 0 inside the first case, and one with P above 10 %
+#    (a case's part its simulated time over the end its block's flight
+#    gives: over t-max, P stayed under 7.7 % until a case ended), a line at
+#    100 % at the end, exit 0, and the table of its --quiet twin (results bit
+#    for bit). On the clock shim (20 s a read: the ticker's every read, each
+#    100 ms, is a line) the cases are rk4 at 2e-6 s, about 1 s each; without
+#    it at 4e-7 s, about 5 s each on an idle machine, for the wall's 2 s
+#    between lines (up to a minute under load before session 44, when it
+#    waited on the wall's clock with the shim too);
 #  - layer-make --n 300 (16 s on a loaded machine) in a pipe: its line
 #    within 6 s, where it spoke on a terminal only;
 #  - --quiet: nothing on stderr over the same time;
@@ -36,7 +41,7 @@
 #    machine): the header and the last line only, stdout's JSON that of
 #    --quiet but for the wall time, and nothing with --quiet.
 # About 30 s (the three long studies at once, the layer sweep, then falcon
-# --n 140:141).
+# --n 140:141); the layer sweep about 3 s of it with the shim.
 # shellcheck source=tests/test_lib.sh
 . "$(dirname "${BASH_SOURCE[0]}")/test_lib.sh"
 test_setup "$@"
@@ -119,6 +124,10 @@ def when(t, m, g):
 # wall, layer-make's report once a step of its pluviation, so 2 s of the
 # shim's clock is a thousand samples, 8 ticks, 4 reports
 STUDY_STEP, SWEEP_STEP, LM_STEP = "2", "250", "500"
+# the layer sweep's: each ticker read 20 s, past the gap between lines (2 s,
+# then a twentieth of the time elapsed, at most 30 s): a line at every read
+# of the ticker, every 100 ms of the wall, however short or loaded the case
+LAYER_STEP = "20000"
 # the long runs' window (s of the wall): a failure's bound with the shim,
 # where the lines come within about a second
 WINDOW = 60 if SHIM else 12
@@ -222,13 +231,20 @@ for r, q, n, head in runs:
 # --- a layer sweep of two exact impacts, one at a time, each several seconds ---
 subprocess.run([GW, "layer-make", "--n", "40", "--seed", "1", "--out", "s40.txt", "--quiet"], check=True,
                stdout=subprocess.DEVNULL)
+# rk4's step: with the shim the lines come on the ticker's reads, and cases of
+# about a second each (2e-6 s) hold several; on the wall's clock, cases of
+# about 5 s each (4e-7 s) for lines 2 s apart
+LAYER_DT = "2e-6" if SHIM else "4e-7"
 for o in ("ly", "lyq"):
     open(o + ".ini", "w").write("[sweep]\nmodel = layer\nout = %s\n[grid]\nsample = s40.txt\nvi = 20, 21\n"
-                                "[params]\nexact = 1\ndt = 4e-7\n" % o)
-ly, lyq = Run(["sweep", "ly.ini", "--jobs", "1"]), Run(["sweep", "lyq.ini", "--jobs", "1", "--quiet"])
+                                "[params]\nexact = 1\ndt = %s\n" % (o, LAYER_DT))
+ly_t0 = time.monotonic()
+ly, lyq = Run(["sweep", "ly.ini", "--jobs", "1"], step_ms=LAYER_STEP), Run(["sweep", "lyq.ini", "--jobs", "1", "--quiet"])
 ly.p.wait(timeout=300)
 lyq.p.wait(timeout=300)
 ly.stop(), lyq.stop()
+print("NOTE: layer sweep (rk4 at %s s, %s): %.1f s" % (LAYER_DT, "clock shim" if SHIM else "wall's clock",
+                                                     time.monotonic() - ly_t0), flush=True)
 prog = ly.progress(SWEEP)
 check(ly.p.returncode == 0 and lyq.p.returncode == 0 and len(prog) == len(ly.lines) - 2,
       "layer sweep: exit 0 (%s, --quiet %s), the header, whole progress lines and the last line: %r"
@@ -300,7 +316,7 @@ for a, n in SHORT:
     check(q.p.returncode == 0 and not q.lines, "%s --quiet: nothing on stderr: %r" % (what, q.lines[:2]))
 EOF
 while IFS= read -r l; do
-    case $l in PASS:*) ok "${l#PASS: }" ;; FAIL:*) ko "${l#FAIL: }" ;; *) ko "checker: $l" ;; esac
+    case $l in PASS:*) ok "${l#PASS: }" ;; FAIL:*) ko "${l#FAIL: }" ;; NOTE:*) echo "$l" ;; *) ko "checker: $l" ;; esac
 done <"$tmp/checks.out"
 [ "$passes" -gt 0 ] || ko "no check ran"
 

@@ -18,6 +18,7 @@
 
 #include "gw_cli.h"
 #include "chain_options.h"
+#include "gw_io_impl.h"
 
 /* ---- `granwave dispersion` ---- */
 
@@ -560,8 +561,8 @@ static int disp_import_wisdom(disp_cli *c, gw_err *err)
         /* st is not filled then: its mode was read, and a file stat could not
          * reach (EACCES, ENOTDIR, EIO, ELOOP) taken by chance as an empty one */
         const int e = errno;
-        if (e == ENOENT)
-            return gw_out_file_check(path, "dispersion --wisdom", err);
+        if (e == ENOENT) /* in --out, still to make: it is made before the wisdom is saved */
+            return gw_io_out_file_check_in(path, c->out, disp_files, "dispersion --wisdom", err);
         return gw_err_set(err, GW_EINVAL, "dispersion --wisdom: '%s': cannot read: %s", path, strerror(e));
     }
     if (S_ISREG(st.st_mode) && st.st_size == 0)

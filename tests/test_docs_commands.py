@@ -3,12 +3,13 @@
 
 A new user who runs a command the prose of docs/ names and compares what it prints
 with the quote beside it. test_docs_examples holds the ```sh and ```text blocks; this
-test holds what they leave (about 3 s, in a scratch directory):
+test holds what they leave (about 12 s of CPU, in a scratch directory):
   1. MESSAGES: each refusal or line the prose quotes (cli.md, formats.md: a flag given
      twice, a value that is an option, a hexadecimal number, a path too long, a sweep
      config's `#` comment, a relative sample that names nothing, a sparse 200 GB sample,
      a file cut inside its last line, `k` on one body, `sweep --check`'s lines before a
-     run, on a resume and after the last case) is still on the page, and the command
+     run, on a resume and after the last case; outcomes.md's warning of an undecided
+     bounce, on the default 300-disc sample: 8 s of CPU) is still on the page, and the command
      prints it (exit code as the page says; a `...` on the page stands for any text, a
      `/home/me/` for the scratch directory);
   2. DROP_KEYS: every top-level key of `drop --json` is named in docs/drop.md's
@@ -62,9 +63,10 @@ def cut_journal(work, path, rows):
     os.remove(os.path.join(os.path.dirname(p), "results.csv"))
 
 
+SAMPLE300 = ["layer-make", "--n", "300", "--seed", "1", "--out", "sample300.txt", "--quiet"]
 STUDY = "[sweep]\nmodel = chain\nout = results/study\n[grid]\nn = 1:40\n"
 # (page, the quote as the page has it (line breaks as blanks), setup steps, arguments,
-#  exit code, which line of the output (stderr for a refusal, else stdout), quoted)
+#  exit code, which line of the output (stderr for a refusal, else stdout, or "stderr" after it), quoted)
 MESSAGES = [
     ("docs/cli.md", "granwave chain --n: given twice", [],
      ["chain", "--n", "3", "--vimp", "0.3", "--n", "30"], 2, 0),
@@ -102,6 +104,11 @@ MESSAGES = [
     ("docs/cli.md", "`... N of N cases done: a rerun writes the table only`",
      [("write", "study.ini", STUDY), ("run", ["sweep", "study.ini", "--jobs", "1", "--quiet"])],
      ["sweep", "study.ini", "--check"], 0, 1),
+    # outcomes.md's undecided bounce, on the default 300-disc sample (8 s of CPU, made once)
+    ("docs/outcomes.md", "granwave layer-impact: warning: bounce undecided: the run ended at t-max = 0.02 s before the "
+                         "block left the layer moving up or its rebound ended inside it (block in free flight, "
+                         "v_y = -1.655 m/s); raise --t-max",
+     [("sample300",)], ["layer-impact", "--sample", "sample.txt", "--t-max", "0.02", "--json"], 0, 0, "stderr"),
     ("docs/cli.md", "sweep: /home/me/results/study/journal.csv: 25 of 40 cases done, 15 to run on a resume",
      [("write", "study.ini", STUDY), ("run", ["sweep", "study.ini", "--jobs", "1", "--quiet"]),
       ("cut", "results/study/journal.csv", 25)],
@@ -122,7 +129,7 @@ def template(quote, work):
 def check_messages(program, work, pages, messages=MESSAGES):
     faults = []
     made = 0
-    for page, quote, setup, args, code, line in messages:
+    for page, quote, setup, args, code, line, *stream in messages:
         if flat(quote) not in flat(pages[page]):
             faults.append(f"{page}: no longer quotes {quote[:70]!r} (update this test with the page)")
             continue
@@ -136,10 +143,15 @@ def check_messages(program, work, pages, messages=MESSAGES):
                 sparse(d, step[1], step[2])
             elif step[0] == "cut":
                 cut_journal(d, step[1], step[2])
+            elif step[0] == "sample300":
+                if not os.path.exists(os.path.join(work, "sample300.txt")):
+                    subprocess.run([program, *SAMPLE300], capture_output=True, timeout=300, cwd=work)
+                if os.path.exists(os.path.join(work, "sample300.txt")):
+                    os.symlink(os.path.join(work, "sample300.txt"), os.path.join(d, "sample.txt"))
             else:
                 subprocess.run([program, *step[1]], capture_output=True, timeout=120, cwd=d)
         p = subprocess.run([program, *args], capture_output=True, text=True, timeout=120, cwd=d)
-        out = (p.stderr if code else p.stdout).splitlines()
+        out = (p.stderr if code or stream == ["stderr"] else p.stdout).splitlines()
         got = out[line] if line < len(out) else "(no such line)"
         want = template(quote, os.path.realpath(d))
         if p.returncode != code or not line_holds(want, got):
@@ -285,7 +297,7 @@ def main():
         return 2
     program, srcdir = os.path.abspath(sys.argv[1]), sys.argv[2]
     pages = {rel: open(os.path.join(srcdir, rel), encoding="utf-8").read()
-             for rel in ("docs/cli.md", "docs/formats.md", "docs/drop.md", "docs/library.md")}
+             for rel in ("docs/cli.md", "docs/formats.md", "docs/drop.md", "docs/library.md", "docs/outcomes.md")}
     with tempfile.TemporaryDirectory() as work:
         faults = check(program, work, pages)
     ok = self_test(program, pages)

@@ -18,14 +18,19 @@ test holds what they leave (about 12 s of CPU, in a scratch directory):
      `wall_peaks`, `energy` {...}, settings' `drop`: ...) are exactly the ones listed;
   3. NUMBERS: the results docs/library.md's C examples quote in their comments
      (`gw_chain_collision_run` on 7 glass beads, `gw_chain_falcon_run` over N = 1..20),
-     recomputed by the same runs through the program, to the digits shown.
-First it checks itself on the real pages with one quote, one key and one number changed
+     recomputed by the same runs through the program, to the digits shown;
+  4. the VTK snapshots: formats.md's "VTK snapshots" names every .vtk and .pvd file
+     `layer-impact --out` writes (on a 40-disc sample) and every field of its
+     snapshot_end.vtk (SCALARS, VECTORS and the field data TIME).
+First it checks itself on the real pages with one quote, three keys, one number and three
+VTK names changed
 and fails if any goes unnoticed. Exit 0 when all hold, 1 otherwise (each fault printed
 as page: message), 2 on bad usage.
 """
 import json
 import os
 import re
+import shutil
 import subprocess
 import sys
 import tempfile
@@ -33,6 +38,16 @@ import tempfile
 from docs_runner import line_holds
 
 HOME = "/home/me/"
+_RUNS = {}
+
+
+def run_once(program, args, cwd):
+    """A run that reads and writes no file of its directory (--json alone), once per
+    program and arguments (the self-test asks for the same runs again)."""
+    key = (program, tuple(args))
+    if key not in _RUNS:
+        _RUNS[key] = subprocess.run([program, *args], capture_output=True, text=True, timeout=120, cwd=cwd)
+    return _RUNS[key]
 
 
 def flat(text):
@@ -116,6 +131,9 @@ MESSAGES = [
 ]
 
 
+_SWEPT = {}
+
+
 def template(quote, work):
     """A quote that stands for a form (`DIR: ... N cases`) as the line it stands for here."""
     q = quote.strip("`")
@@ -148,8 +166,13 @@ def check_messages(program, work, pages, messages=MESSAGES):
                     subprocess.run([program, *SAMPLE300], capture_output=True, timeout=300, cwd=work)
                 if os.path.exists(os.path.join(work, "sample300.txt")):
                     os.symlink(os.path.join(work, "sample300.txt"), os.path.join(d, "sample.txt"))
-            else:
-                subprocess.run([program, *step[1]], capture_output=True, timeout=120, cwd=d)
+            else:  # a sweep in the config's directory: once, copied for the next lines
+                key = (program, tuple(step[1]), open(os.path.join(d, step[1][1])).read())
+                if key not in _SWEPT:
+                    subprocess.run([program, *step[1]], capture_output=True, timeout=120, cwd=d)
+                    _SWEPT[key] = d
+                else:
+                    shutil.copytree(os.path.join(_SWEPT[key], "results"), os.path.join(d, "results"))
         p = subprocess.run([program, *args], capture_output=True, text=True, timeout=120, cwd=d)
         out = (p.stderr if code or stream == ["stderr"] else p.stdout).splitlines()
         got = out[line] if line < len(out) else "(no such line)"
@@ -181,7 +204,7 @@ def check_drop_keys(program, work, page):
         text = drop_outputs(page)
     except IndexError:
         return ["docs/drop.md: no \"`--json` prints one object:\" paragraph under Outputs (update this test)"]
-    p = subprocess.run([program, *DROP_ARGS], capture_output=True, text=True, timeout=120, cwd=work)
+    p = run_once(program, DROP_ARGS, work)
     if p.returncode != 0:
         return [f"docs/drop.md: granwave {' '.join(DROP_ARGS)}: exit {p.returncode}: {p.stderr.strip()[-200:]}"]
     j = json.loads(p.stdout)
@@ -202,6 +225,41 @@ def check_drop_keys(program, work, page):
     if listed != set(j["settings"]["drop"]):
         faults.append(f"docs/drop.md: settings' `drop` lists {sorted(listed or [])}; `drop --json` has "
                       f"{sorted(j['settings']['drop'])}")
+    return faults
+
+
+SAMPLE40 = ["layer-make", "--n", "40", "--seed", "1", "--out", "s40.txt", "--quiet"]
+_VTK = {}
+
+
+def check_vtk(program, work, page):
+    """4: formats.md's "VTK snapshots" names every file of them an impact writes and every
+    field (point and cell data, the field data) of its snapshot_end.vtk."""
+    try:
+        sec = page.split("## VTK snapshots", 1)[1].split("\n## ", 1)[0]
+    except IndexError:
+        return ["docs/formats.md: no \"## VTK snapshots\" section (update this test)"]
+    named = set(re.findall(r"`([\w.]+)`", sec))
+    d = _VTK.get(program)
+    if d is None:  # once per program (the self-test reads the same files)
+        d = _VTK[program] = os.path.join(work, "vtk")
+        os.makedirs(d)
+        for args in (SAMPLE40, ["layer-impact", "--sample", "s40.txt", "--out", "imp", "--quiet"]):
+            p = subprocess.run([program, *args], capture_output=True, text=True, timeout=120, cwd=d)
+            if p.returncode != 0:
+                return [f"docs/formats.md: granwave {' '.join(args)}: exit {p.returncode}: {p.stderr.strip()[-200:]}"]
+    faults = []
+    files = sorted(f for f in os.listdir(os.path.join(d, "imp")) if f.endswith((".vtk", ".pvd")))
+    unnamed = [f for f in files if f not in named]
+    if unnamed or not files:
+        faults.append(f"docs/formats.md: `layer-impact --out` writes {', '.join(unnamed) or 'no snapshot'}, "
+                      f"which the VTK section does not name")
+    vtk = open(os.path.join(d, "imp", "snapshot_end.vtk"), encoding="utf-8").read()
+    fields = re.findall(r"^(?:SCALARS|VECTORS) (\w+)", vtk, re.M) + re.findall(r"^(\w+) 1 1 double$", vtk, re.M)
+    unnamed = [f for f in fields if f not in named]
+    if unnamed or not fields:
+        faults.append(f"docs/formats.md: snapshot_end.vtk holds {', '.join(unnamed) or 'no field'}, "
+                      f"which the VTK section does not name")
     return faults
 
 
@@ -231,7 +289,7 @@ def check_numbers(program, work, pages, numbers=NUMBERS):
         if text not in pages[page]:
             faults.append(f"{page}: no longer holds {text!r} (update this test with the page)")
             continue
-        p = subprocess.run([program, *args], capture_output=True, text=True, timeout=120, cwd=work)
+        p = run_once(program, args, work)
         if p.returncode != 0:
             faults.append(f"{page}: granwave {' '.join(args)}: exit {p.returncode}: {p.stderr.strip()[-200:]}")
             continue
@@ -245,6 +303,7 @@ def check(program, work, pages):
     faults = check_messages(program, os.path.join(work, "msg"), pages)
     faults += check_drop_keys(program, work, pages["docs/drop.md"])
     faults += check_numbers(program, work, pages)
+    faults += check_vtk(program, work, pages["docs/formats.md"])
     return faults
 
 
@@ -257,6 +316,9 @@ def self_test(program, pages):
         ("docs/drop.md", "v_in, v_out, n_peaks", "v_in, v_exit, n_peaks", "`impacts` lists"),
         ("docs/drop.md", "gaps, t_max, dt_out", "gaps, t_max", "settings' `drop` lists"),
         ("docs/library.md", "24.4476 N at 15.75 us", "24.4477 N at 15.75 us", "no longer holds 'c.r.f_max"),
+        ("docs/formats.md", "and `snapshots.pvd`", "and `snapshots.xml`", "writes snapshots.pvd, which"),
+        ("docs/formats.md", "point data `radius` (m)", "point data `radii` (m)", "holds radius, which"),
+        ("docs/formats.md", "field data\n`TIME` (s)", "field data\n`T` (s)", "holds TIME, which"),
     ]
     missed = []
     for page, old, new, want in cases:
@@ -267,6 +329,7 @@ def self_test(program, pages):
         bad[page] = pages[page].replace(old, new, 1)
         with tempfile.TemporaryDirectory() as d:
             faults = (check_drop_keys(program, d, bad[page]) if page == "docs/drop.md" else
+                      check_vtk(program, d, bad[page]) if page == "docs/formats.md" else
                       check_numbers(program, d, bad) if page == "docs/library.md" else
                       check_messages(program, d, bad, MESSAGES[:1]))
         if not any(want in f for f in faults):
@@ -300,10 +363,10 @@ def main():
              for rel in ("docs/cli.md", "docs/formats.md", "docs/drop.md", "docs/library.md", "docs/outcomes.md")}
     with tempfile.TemporaryDirectory() as work:
         faults = check(program, work, pages)
-    ok = self_test(program, pages)
+        ok = self_test(program, pages)  # reads the VTK run made in work
     for f in faults:
         print(f)
-    print(f"test_docs_commands: {len(MESSAGES)} quoted lines, drop's JSON keys, {len(NUMBERS)} quoted results, "
+    print(f"test_docs_commands: {len(MESSAGES)} quoted lines, drop's JSON keys, {len(NUMBERS)} quoted results, the VTK fields, "
           f"{len(faults)} fault(s)")
     return 1 if faults or not ok else 0
 

@@ -18,7 +18,8 @@ test holds what they leave (about 12 s of CPU, in a scratch directory):
      `wall_peaks`, `energy` {...}, settings' `drop`: ...) are exactly the ones listed;
   3. NUMBERS: the results docs/library.md's C examples quote in their comments
      (`gw_chain_collision_run` on 7 glass beads, `gw_chain_falcon_run` over N = 1..20),
-     recomputed by the same runs through the program, to the digits shown;
+     and drop.md's step count of the 10 ms CVODE drop, recomputed by the same runs through
+     the program, to the digits shown;
   4. the VTK snapshots: formats.md's "VTK snapshots" names every .vtk and .pvd file
      `layer-impact --out` writes (on a 40-disc sample) and every field of its
      snapshot_end.vtk (SCALARS, VECTORS and the field data TIME).
@@ -280,6 +281,9 @@ NUMBERS = [
      ["chain", "--n", "7", "--material", "glass", "--vimp", "0.3", "--json"], _chain7),
     ("docs/library.md", "o.t_q[0] = 25.68 us, o.wave_speed[0] = 623.0 m/s against 640.6 m/s (F.27)",
      ["falcon", "--n", "1:20", "--heights", "none", "--json", "--quiet"], _falcon20),
+    ("docs/drop.md", "14 858 with the forty-fourth session's build",
+     ["drop", "--n", "40", "--height", "5.1e-3", "--damping", "kk", "--restitution", "0.9", "--json", "--quiet"],
+     lambda j: f"{j['steps'] // 1000} {j['steps'] % 1000:03d} with the forty-fourth session's build"),
 ]
 
 

@@ -319,6 +319,8 @@ int gw_parse_double_in(const char *s, const char *name, const gw_num_range *r, d
 {
     if (!out)
         return gw_err_set(err, GW_EINVAL, "gw_parse_double: out is NULL");
+    if (!name) /* as gw_check_range (it was printed "(null)") */
+        name = "value";
     if (!s || !*s)
         return gw_err_set(err, GW_EINVAL, "%s: expected a number, got an empty value", name);
     char *end = NULL;
@@ -402,6 +404,13 @@ int gw_parse_long_in(const char *s, const char *name, long lo, long hi, int or_z
 {
     if (!out) /* as gw_parse_double (it was written through: SIGSEGV) */
         return gw_err_set(err, GW_EINVAL, "gw_parse_long: out is NULL");
+    if (!name) /* as gw_check_range (it was printed "(null)") */
+        name = "value";
+    /* bounds that are no range are the caller's error, as gw_check_range's: a
+     * value was told "5 is outside [10, 0]", blamed on the input */
+    if (lo > hi)
+        return gw_err_set(err, GW_EINVAL, "gw_parse_long: %s: the bounds [%ld, %ld] are no range (lo > hi)", name, lo,
+                          hi);
     if (!s || !*s)
         return gw_err_set(err, GW_EINVAL, "%s: expected an integer, got an empty value", name);
     char *end = NULL;
@@ -482,9 +491,17 @@ int gw_parse_double_list_range(const char *s, const char *name, const gw_num_ran
         return gw_err_set(err, GW_EINVAL, "gw_parse_double_list: %s is NULL", !out ? "out" : "n");
     *out = NULL;
     *n = 0;
+    if (!name) /* as gw_check_range (it was printed "(null)") */
+        name = "list";
     if (isnan(lo) || isnan(hi)) /* as gw_check_range: no bound is -INFINITY/INFINITY, never NaN */
-        return gw_err_set(err, GW_EINVAL, "gw_parse_double_list_in: %s: the bound %s is NaN", name ? name : "list",
+        return gw_err_set(err, GW_EINVAL, "gw_parse_double_list_in: %s: the bound %s is NaN", name,
                           isnan(lo) ? "lo" : "hi");
+    /* lo > hi, or open_lo other than 0 and 1: the caller's error, as
+     * gw_check_range's (every item was told "outside [3, 0]", and open_lo 2
+     * ran as 1) */
+    if (lo > hi || (open_lo != 0 && open_lo != 1))
+        return gw_err_set(err, GW_EINVAL, "gw_parse_double_list_in: %s: %s", name,
+                          lo > hi ? "the bounds are no range (lo > hi)" : "open_lo is not a flag (0 or 1)");
     if (!s || !*s)
         return gw_err_set(err, GW_EINVAL, "%s: empty list", name);
     size_t len = strlen(s);
@@ -535,6 +552,12 @@ int gw_parse_double_list_range(const char *s, const char *name, const gw_num_ran
 int gw_parse_int_range(const char *s, const char *name, long lo, long hi, long *a, long *b,
                        gw_err *err)
 {
+    /* a NULL name was read by strlen when an end was refused (SIGSEGV) */
+    if (!name)
+        name = "value";
+    if (lo > hi) /* the caller's error, as gw_parse_long's */
+        return gw_err_set(err, GW_EINVAL, "gw_parse_int_range: %s: the bounds [%ld, %ld] are no range (lo > hi)", name,
+                          lo, hi);
     if (!s || !*s)
         return gw_err_set(err, GW_EINVAL, "%s: empty value", name);
     const char *colon = strchr(s, ':');

@@ -105,7 +105,11 @@ int gw_warnings_add(char **list, const char *fmt, ...) __attribute__((format(pri
 int gw_parse_double(const char *s, const char *name, double *out, gw_err *err);
 /* Parse a whole string as an integer in [lo, hi]; a text that is no integer
  * is refused naming [lo, hi] ("n: '1.5' is not an integer (give an integer in
- * [1, 100])"; no range when [lo, hi] is every long). */
+ * [1, 100])"; no range when [lo, hi] is every long). lo > hi is the caller's
+ * error, named as gw_check_range names it, whatever s (the value was told
+ * "outside [10, 0]"). name NULL: "value" (here, in gw_parse_double and
+ * gw_parse_int_range; it was printed "(null)", and gw_parse_int_range read it
+ * through strlen: SIGSEGV). */
 int gw_parse_long(const char *s, const char *name, long lo, long hi, long *out,
                   gw_err *err);
 /* Check that x is finite and lo <= x <= hi (use -INFINITY/INFINITY for open).
@@ -118,14 +122,17 @@ int gw_check_positive(double x, const char *name, gw_err *err);
 /* Parse a comma-separated list of finite doubles into a new array (caller frees).
  * Every item is checked inside the parser (lo <= x <= hi, x > lo when open_lo), so
  * a caller never has to check the items, or name one, after freeing the list. On
- * failure *out is NULL, *n is 0 and the message names the item. A NaN lo or hi
- * is GW_EINVAL naming it, as in gw_check_range. */
+ * failure *out is NULL, *n is 0 and the message names the item. A NaN lo or hi,
+ * lo > hi or an open_lo other than 0 and 1 is GW_EINVAL naming it, as in
+ * gw_check_range (lo > hi told each item "outside [3, 0]", open_lo 2 ran as
+ * 1); name NULL: "list". */
 int gw_parse_double_list_in(const char *s, const char *name, double lo, double hi,
                             int open_lo, double **out, int *n, gw_err *err);
 /* gw_parse_double_list_in with no bounds (any finite number). */
 int gw_parse_double_list(const char *s, const char *name, double **out, int *n,
                          gw_err *err);
-/* Parse "A:B" or "A" (integers, A <= B, both in [lo, hi]). */
+/* Parse "A:B" or "A" (integers, A <= B, both in [lo, hi]; lo > hi as
+ * gw_parse_long). */
 int gw_parse_int_range(const char *s, const char *name, long lo, long hi, long *a,
                        long *b, gw_err *err);
 /* Strip leading blanks/tabs and trailing blanks/tabs/CR in place; returns the
@@ -293,7 +300,8 @@ void gw_write_comment(FILE *fp, const char *text);
 int gw_mkdir_p(const char *path, gw_err *err);
 /* Join dir and name into buf (size n); GW_EINVAL if it does not fit, or for a
  * NULL buf, dir or name (buf then unchanged; a NULL dir was joined as
- * "(null)/name" with GW_OK, a NULL buf written to). */
+ * "(null)/name" with GW_OK, a NULL buf written to), or an empty dir (buf
+ * unchanged: "" and "b" gave "/b", a file in the root directory). */
 int gw_path_join(char *buf, size_t n, const char *dir, const char *name);
 /* Cut the path in buf (at least 2 bytes) to its directory, in place: "a/b" ->
  * "a", "/b" -> "/", "b" -> "." (trailing slashes are the caller's). */

@@ -231,7 +231,10 @@ int gw_mkdir_made(const char *path, char *made, size_t n, gw_err *err)
 
 int gw_path_join(char *buf, size_t n, const char *dir, const char *name)
 {
-    if (!buf || !dir || !name)
+    /* an empty dir is no directory: "" and "b" were joined as "/b", a file in
+     * the root directory (gw_sweep_journal_open, gw_sweep_write_table,
+     * gw_chain_trace_write and gw_stats_write_files build their paths here) */
+    if (!buf || !dir || !name || !dir[0])
         return GW_EINVAL;
     int w = gw_snprintf(buf, n, "%s/%s", dir, name);
     return (w < 0 || (size_t)w >= n) ? GW_EINVAL : GW_OK;

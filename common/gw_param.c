@@ -641,6 +641,10 @@ int gw_param_format(const gw_param *p, const void *obj, char *buf, size_t n)
     }
     case GW_PARAM_LIST: {
         const gw_param_list *l = f;
+        /* a list counted without its values, or a negative count (gw_param_check
+         * refuses both): its NULL v was read (SIGSEGV) */
+        if (l->n < 0 || (l->n > 0 && !l->v))
+            return -1;
         w = 0;
         for (int i = 0; i < l->n && w >= 0 && (size_t)w < n; i++)
             w += gw_snprintf(buf + w, n - (size_t)w, "%s%.17g", i ? "," : "", l->v[i]);
@@ -679,9 +683,16 @@ cJSON *gw_param_json(const gw_param *t, const void *obj)
             break;
         case GW_PARAM_FLAG: v = cJSON_CreateBool(*(const int *)f); break;
         case GW_PARAM_CHOICE:
-        case GW_PARAM_TEXT:
             v = gw_param_format(p, obj, buf, sizeof buf) > 0 ? cJSON_CreateString(buf) : cJSON_CreateNull();
             break;
+        case GW_PARAM_TEXT: {
+            /* the text as held: it went through a buffer of 256 bytes, and a
+             * longer one (a sample's path of 300 characters) was written null,
+             * a value given recorded as none */
+            const char *s = *(char *const *)f;
+            v = s && s[0] ? cJSON_CreateString(s) : cJSON_CreateNull();
+            break;
+        }
         case GW_PARAM_LIST: {
             const gw_param_list *l = f;
             v = l->n ? gw_json_doubles(l->v, l->n) : cJSON_CreateNull();

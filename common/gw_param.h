@@ -159,11 +159,14 @@ int gw_param_set_double(const gw_param *t, void *obj, const char *name, double v
 
 /* Current value of row p in obj as text ("" for not given; numbers with 17
  * significant digits; lists comma-separated). Returns the length written,
- * or -1 when buf (size n) is too small or p is a result array. */
+ * or -1 when buf (size n) is too small, p is a result array or a list row
+ * holds a negative count or a count without its values (gw_param_check's
+ * refusals; its NULL values were read: SIGSEGV). */
 int gw_param_format(const gw_param *p, const void *obj, char *buf, size_t n);
 
 /* A JSON object {name: value} of t's input rows in obj (not given: null;
- * choices by name; lists as arrays; ranges as [a, b]). NULL on ENOMEM. */
+ * choices by name; lists as arrays; ranges as [a, b]; texts whole, of any
+ * length: one over 255 bytes was null, as not given). NULL on ENOMEM. */
 cJSON *gw_param_json(const gw_param *t, const void *obj);
 
 /* Free what obj's text and list rows own and reset them to not given. */

@@ -38,7 +38,10 @@ typedef struct gw_study {
     void (*clear)(void *setup);        /* free what the inputs own */
     const gw_param *(*fields)(void); /* results */
     size_t fields_size;      /* bytes of the result struct */
-    /* Run: out zeroed first, free it with free_out also after a failure.
+    /* Run: out zeroed first, free it with free_out also after a failure;
+     * a NULL setup or out is refused (GW_EINVAL) writing nothing, as every
+     * call that refuses a NULL argument (docs/library.md): out then holds
+     * what the caller put there (free it only when that was zeroes).
      * progress may be NULL; studies without progress ignore it. */
     int (*run)(const void *setup, void *out, gw_progress_fn progress, void *pctx, gw_err *err);
     void (*free_out)(void *out);

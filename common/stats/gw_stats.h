@@ -255,8 +255,12 @@ typedef struct gw_stats_b31 {
     double tan_gamma;
 } gw_stats_b31;
 
+/* NaN for p NULL, a/b or tan gamma not > 0, a parameter or x not finite (the
+ * curves the fit gives); any finite x has its value (from |x| = 1e154 up it
+ * was NaN: u^2 overflowed). */
 double gw_stats_b31_eval(const gw_stats_b31 *p, double x);
-/* Position and value of the minimum. */
+/* Position and value of the minimum; both NaN where gw_stats_b31_eval is NaN
+ * for every x (tan gamma 0 gave a minimum, a/b < 0 one at +-inf). */
 void gw_stats_b31_min(const gw_stats_b31 *p, double *x_min, double *f_min);
 
 /* Parameters to fit (the others stay at the values given). */
@@ -336,7 +340,8 @@ const gw_param *gw_stats_setup_params(void);
 int gw_stats_setup_init(gw_stats_setup *s);
 void gw_stats_setup_clear(gw_stats_setup *s);
 
-/* --fit text to a mask of GW_STATS_B31_*: GW_EINVAL "fit: unknown parameter
+/* --fit text to a mask of GW_STATS_B31_* (blanks around an item are
+ * ignored: "beta, a_over_b"): GW_EINVAL "fit: unknown parameter
  * 'X' (offset, beta, a_over_b, tan_gamma)", "fit: no parameter given", an
  * empty item or a name listed twice, or a list without beta and a_over_b
  * (the analysis has no value to hold either of them at; the offset and

@@ -217,19 +217,38 @@ int gw_stats_diagram_make(int n, const double *x, const double *h, const double 
 
 /* -------------------------------------------------------------------- B.31 --- */
 
+/* The curves B.31 describes: a/b and tan gamma > 0 (the fit holds them as
+ * their logarithms), all four finite. Outside, the minimum was a number of a
+ * curve that is NaN everywhere (tan gamma 0: x_min 2 beta) or +-inf (a/b < 0,
+ * K = -1), where gw_stats_b31_eval gave NaN */
+static int b31_curve(const gw_stats_b31 *p)
+{
+    return p && isfinite(p->offset) && isfinite(p->beta) && p->a_over_b > 0 && isfinite(p->a_over_b) &&
+           p->tan_gamma > 0 && isfinite(p->tan_gamma) && isfinite(p->a_over_b * p->tan_gamma);
+}
+
 double gw_stats_b31_eval(const gw_stats_b31 *p, double x)
 {
-    if (!p)
+    if (!b31_curve(p) || !isfinite(x))
         return NAN;
     double T = p->tan_gamma, K = p->a_over_b * T, u = x - p->beta;
     double r = sqrt(u * u + K * x * x);
-    double g = u > 0 ? K * x * x / (r + u) : r - u;
+    double g;
+    if (isfinite(r) && isfinite(K * x * x))
+        g = u > 0 ? K * x * x / (r + u) : r - u;
+    else {
+        /* u^2 or K x^2 beyond the doubles (|x| from 1e154; the value was NaN
+         * where B.31's is a number): the same with x and u scaled by s */
+        const double s = fmax(fabs(u), fabs(x)), us = u / s, xs = x / s;
+        const double rs = sqrt(us * us + K * xs * xs);
+        g = u > 0 ? K * xs * (x / (rs + us)) : s * (rs - us);
+    }
     return p->offset + g / (2 * T);
 }
 
 void gw_stats_b31_min(const gw_stats_b31 *p, double *x_min, double *f_min)
 {
-    if (!p || !x_min || !f_min) {
+    if (!b31_curve(p) || !x_min || !f_min) {
         if (x_min)
             *x_min = NAN;
         if (f_min)

@@ -79,9 +79,19 @@ int gw_stats_fit_parse(const char *s, int *mask, gw_err *err)
         size_t len = strcspn(p, ",");
         if (len == 0 || (p[len] == ',' && !p[len + 1])) /* "beta,": an item left out, as a sweep list refuses */
             return gw_err_set(err, GW_EINVAL, "fit: '%s' has an empty item", s);
+        /* blanks around an item, as every other list takes them ("0.3, 0.4"):
+         * "beta, a_over_b" was "unknown parameter ' a_over_b'" */
+        const char *q = p;
+        size_t qlen = len;
+        while (qlen && (*q == ' ' || *q == '\t'))
+            q++, qlen--;
+        while (qlen && (q[qlen - 1] == ' ' || q[qlen - 1] == '\t'))
+            qlen--;
+        if (qlen == 0)
+            return gw_err_set(err, GW_EINVAL, "fit: '%s' has an empty item", s);
         int found = 0;
         for (size_t i = 0; i < sizeof names / sizeof names[0]; i++)
-            if (strlen(names[i].name) == len && strncmp(p, names[i].name, len) == 0) {
+            if (strlen(names[i].name) == qlen && strncmp(q, names[i].name, qlen) == 0) {
                 if (*mask & names[i].bit) /* "beta,beta" fitted beta alone, silently */
                     return gw_err_set(err, GW_EINVAL, "fit: '%s' is listed twice in '%s'", names[i].name, s);
                 *mask |= names[i].bit;
@@ -89,7 +99,7 @@ int gw_stats_fit_parse(const char *s, int *mask, gw_err *err)
             }
         if (!found)
             return gw_err_set(err, GW_EINVAL, "fit: unknown parameter '%.*s' (offset, beta, a_over_b, tan_gamma)",
-                              (int)len, p);
+                              (int)qlen, q);
         p += len + (p[len] == ',');
     }
     if (!*mask)

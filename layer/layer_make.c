@@ -480,10 +480,10 @@ static int held_by_walls(const gw_layer *L, double f, double w)
  * body (clump or disc) of L with the most holds, in [0, 1] (0: nothing
  * moves). A pile that did not settle is told apart from one grain moving on a
  * pile at rest: `--clumps --width-rm 6 --n 40 --seed 4` from 3 s on has its
- * centre of mass still within 0.1 mm, its floor at 2.25 of its weight and its
- * walls at -1.25 (together 0.97 to 1.03), and 0.5 to 1.0 of its E_k (the
- * median of each 0.25 s) in its last clump dropped, which rolls to and fro on
- * the pile's top until 6.41 s (settled then, at t-max 8). */
+ * centre of mass within 3 mm (0.1 mm from 4.3 s), its floor at 2.25 of its
+ * weight and its walls at -1.25 (together 0.999 at the median), and a median
+ * 0.82 of its E_k in its last clump dropped, which rolls to and fro on the
+ * pile's top until 6.41 s (settled then, at t-max 8). */
 static double top_grain_share(const gw_layer *L)
 {
     double sum = 0, top = 0;

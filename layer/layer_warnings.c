@@ -164,8 +164,8 @@ int gw_layer_make_result_warnings(const gw_layer_make_result *r, double t_max, c
     /* E_k above the threshold on supports that carry the pile, most of it in
      * one grain: one clump (or disc) rolling or rocking on a pile at rest, not
      * a pile that did not settle (`--clumps --width-rm 6 --n 40 --seed 4
-     * --t-max 6`: 0.5 to 1.0 of E_k in its last clump from 3 s on, the pile's
-     * centre of mass still, settled at 6.41 s; ke_top_share, layer_make.c) */
+     * --t-max 6`: a median 0.82 of E_k in its last clump from 3 s on, the
+     * pile's centre of mass still, settled at 6.41 s; ke_top_share, layer_make.c) */
     if (!on_floor[0] && ek[0] && r->ke_top_share >= 0.5 && rests)
         return gw_warnings_add(list, "the sample did not settle: %s%s%s%s, %.2g of it in the one grain that moves "
                                "most, while %s carry %.3g of the pile's weight (at rest: about 1): one clump or disc "

@@ -176,12 +176,14 @@ void gw_layer_set_event_hook(gw_layer *L, gw_layer_event_fn fn, void *ctx);
  * Must be called before gw_layer_start, after gw_layer_set_block; GW_EINVAL
  * otherwise (the layer unchanged). fn may be NULL (extremes only). */
 /* GW_LAYER_BLOCK_GONE is no root: reported once, at the first evaluation of
- * the event functions at which the block has left the layer for good (below
- * the lowest point of every other body with no bottom wall, touching nothing;
- * or beyond a side of them without that side's wall, touching nothing but the
- * bottom wall, on it or in the air; moving away from them at least as fast as
- * any of their points; dir = GW_LAYER_GONE_*). Only a layer with a wall
- * missing can see it. */
+ * the event functions at which the block has left the layer for good; dir =
+ * GW_LAYER_GONE_*. Without the bottom wall, touching nothing and moving away
+ * from every other body at least as fast as any of their points: below the
+ * lowest point of them all, or beyond a side of them without that side's wall.
+ * With the bottom wall, by geometry alone (session 44): its whole body beyond
+ * where a missing side wall would be (x = 0 or the width) and beyond every
+ * other body, so touching none of them, moving or at rest on the floor. Only
+ * a layer with a wall missing can see it. */
 enum { GW_LAYER_BLOCK_VN = 0, GW_LAYER_BLOCK_TOUCH = 1, GW_LAYER_BLOCK_GONE = 2 };
 enum { GW_LAYER_GONE_BELOW = 1, GW_LAYER_GONE_LEFT = 2, GW_LAYER_GONE_RIGHT = 3 };
 typedef struct gw_layer_block_event {

@@ -184,8 +184,8 @@ static int impact_walls(const gw_layer_impact_params *ip)
  * Refused, naming side-walls, the floor's and the walls' shares; the floor
  * alone within [LAYER_FLOOR_LOAD_MIN, LAYER_FLOOR_LOAD_MAX] of the weight
  * (layer_load_rests without walls) passes. */
-static int side_walls_rest_check(const gw_layer_sample *smp, const gw_layer_params *lp,
-                                 const gw_layer_impact_params *ip, gw_err *err)
+int layer_side_walls_rest_check(const gw_layer_sample *smp, const gw_layer_params *lp,
+                                const gw_layer_impact_params *ip, gw_err *err)
 {
     if (ip->remove_walls || ip->side_walls == GW_LAYER_SIDES_BOTH || !(lp->gravity > 0))
         return GW_OK;
@@ -940,7 +940,7 @@ int layer_impact_run(const gw_layer_sample *smp, const gw_layer_params *lp0, con
     lp.potential_from_start = 1;
     lp.no_events = 0;
     lp.walls = impact_walls(ip);
-    if ((rc = side_walls_rest_check(smp, &lp, ip, err)) != GW_OK)
+    if ((rc = layer_side_walls_rest_check(smp, &lp, ip, err)) != GW_OK)
         return rc;
     double yb = -INFINITY;
     int target = -1;

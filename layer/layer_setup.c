@@ -471,6 +471,9 @@ static int resolve(const gw_layer_impact_setup *s, const gw_layer_sample *smp, g
         rc = layer_impact_gap_rules(smp, ip, s->gravity, !gap_given, err);
     if (rc == GW_OK)
         rc = gw_layer_impact_step_check(ip, *type, sp, err);
+    /* (the side walls kept: a sweep's check refuses the case before any runs) */
+    if (rc == GW_OK)
+        rc = layer_side_walls_rest_check(smp, lp, ip, err);
     /* the warning is the run's (gw_layer_impact keeps it in its result) */
     return rc == GW_OK ? layer_settling_verdict_found(smp, lp, s->other_settling, s->sample, memo, found, NULL, 0, err)
                        : rc;

@@ -176,12 +176,14 @@ void gw_layer_set_event_hook(gw_layer *L, gw_layer_event_fn fn, void *ctx);
  * Must be called before gw_layer_start, after gw_layer_set_block; GW_EINVAL
  * otherwise (the layer unchanged). fn may be NULL (extremes only). */
 /* GW_LAYER_BLOCK_GONE is no root: reported once, at the first evaluation of
- * the event functions at which the block has left the layer for good (below
- * the lowest point of every other body with no bottom wall, touching nothing;
- * or beyond a side of them without that side's wall, touching nothing but the
- * bottom wall, on it or in the air; moving away from them at least as fast as
- * any of their points; dir = GW_LAYER_GONE_*). Only a layer with a wall
- * missing can see it. */
+ * the event functions at which the block has left the layer for good; dir =
+ * GW_LAYER_GONE_*. Without the bottom wall, touching nothing and moving away
+ * from every other body at least as fast as any of their points: below the
+ * lowest point of them all, or beyond a side of them without that side's wall.
+ * With the bottom wall, by geometry alone (session 44): its whole body beyond
+ * where a missing side wall would be (x = 0 or the width) and beyond every
+ * other body, so touching none of them, moving or at rest on the floor. Only
+ * a layer with a wall missing can see it. */
 enum { GW_LAYER_BLOCK_VN = 0, GW_LAYER_BLOCK_TOUCH = 1, GW_LAYER_BLOCK_GONE = 2 };
 enum { GW_LAYER_GONE_BELOW = 1, GW_LAYER_GONE_LEFT = 2, GW_LAYER_GONE_RIGHT = 3 };
 typedef struct gw_layer_block_event {
@@ -539,6 +541,10 @@ typedef struct gw_layer_make_result {
                              weight at the end, from the springs the sample keeps against them: a pile
                              rests when floor_load or floor_load + wall_load lies in [0.5, 1.5] (the
                              rule gw_layer_impact_rest_check applies) */
+    double ke_top_share;  /* the share of ke_final the one grain (clump or disc) that moves most
+                             holds at the end, in [0, 1] (0: none moves). Near 1 on a pile that
+                             did not settle: one grain rolling or rocking on a pile at rest (the
+                             did-not-settle warning says so from 0.5 on) */
 } gw_layer_make_result;
 
 /* Pluviate a sample (lp: material, friction; width and mass law are taken from
@@ -619,6 +625,9 @@ typedef struct gw_layer_impact_params {
                            GW_LAYER_UNTIL_VERDICT: stop once the bounce verdict is
                            decided (e_n, e, alpha_r then NaN) [rebound] */
     int remove_walls;   /* 1: no left/right/bottom walls from the impact on [0] */
+    int side_walls;     /* GW_LAYER_SIDES_*: the side walls the impact keeps over its
+                           floor (a pile leaning on its walls refused without one,
+                           and with remove_walls any but both) [GW_LAYER_SIDES_BOTH] */
     double energy_tol;  /* > 0: stop with GW_ESOLVER when the ledger closure
                            |sum - A|/A exceeds it at a sample [0 = off] */
     /* on_sample (may be NULL) [NULL]: called with sample_ctx at every recorded
@@ -643,6 +652,9 @@ typedef struct gw_layer_impact_params {
 } gw_layer_impact_params;
 
 gw_layer_impact_params gw_layer_impact_params_default(void);
+/* gw_layer_impact_params.side_walls: both side walls (the default, 0), the left
+ * or the right one alone, or none (the floor kept in each). */
+enum { GW_LAYER_SIDES_BOTH = 0, GW_LAYER_SIDES_LEFT = 1, GW_LAYER_SIDES_RIGHT = 2, GW_LAYER_SIDES_NONE = 3 };
 enum { GW_LAYER_UNTIL_REBOUND = 0, GW_LAYER_UNTIL_VERDICT = 1 };
 /* "rebound" or "verdict" ("unknown" for another value: "rebound" before
  * session 34); and back (-1 for any other string). */

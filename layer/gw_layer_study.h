@@ -58,6 +58,8 @@ typedef struct gw_layer_impact_setup {
     double rtol, atol;     /* cvode/arkode tolerances [1e-8] */
     double energy_tol;     /* stop when the ledger closure exceeds it [0 = off] */
     int remove_walls;      /* no walls from the impact on [0] */
+    int side_walls;        /* both, left, right, none (choice, GW_LAYER_SIDES_*): the side
+                              walls kept over the floor [both] */
     int full;              /* run to t-max after the outcome is decided [0] */
     int until;             /* rebound, verdict (choice, GW_LAYER_UNTIL_*; optional: -1 not given) [rebound] */
     gw_param_list snapshots; /* times, s, of particle snapshots (library only, no

@@ -159,6 +159,50 @@ static double ceil4(double v)
     return ceil(v / step * (1 + 1e-12)) * step;
 }
 
+static const char *side_walls_name(int s)
+{
+    return s == GW_LAYER_SIDES_BOTH ? "both" : s == GW_LAYER_SIDES_LEFT ? "left" : s == GW_LAYER_SIDES_RIGHT ? "right"
+           : s == GW_LAYER_SIDES_NONE ? "none" : "unknown";
+}
+
+/* The walls an impact keeps (GW_LAYER_WALL_* mask): none with remove_walls,
+ * else the floor and the side walls of side_walls. */
+static int impact_walls(const gw_layer_impact_params *ip)
+{
+    if (ip->remove_walls)
+        return 0;
+    const int s = ip->side_walls;
+    return GW_LAYER_WALL_BOTTOM | (s == GW_LAYER_SIDES_BOTH || s == GW_LAYER_SIDES_LEFT ? GW_LAYER_WALL_LEFT : 0) |
+           (s == GW_LAYER_SIDES_BOTH || s == GW_LAYER_SIDES_RIGHT ? GW_LAYER_WALL_RIGHT : 0);
+}
+
+/* A pile the impact keeps without a side wall must rest on its floor alone:
+ * one whose side walls help hold it (their friction carrying part of its
+ * weight, or pulling it down onto a floor that carries more than it: the
+ * narrow clump piles layer-make calls settled by the walls' share) falls
+ * apart at t = 0 once a wall is gone, the block hitting a collapsing pile.
+ * Refused, naming side-walls, the floor's and the walls' shares; the floor
+ * alone within [LAYER_FLOOR_LOAD_MIN, LAYER_FLOOR_LOAD_MAX] of the weight
+ * (layer_load_rests without walls) passes. */
+int layer_side_walls_rest_check(const gw_layer_sample *smp, const gw_layer_params *lp,
+                                const gw_layer_impact_params *ip, gw_err *err)
+{
+    if (ip->remove_walls || ip->side_walls == GW_LAYER_SIDES_BOTH || !(lp->gravity > 0))
+        return GW_OK;
+    double f, w;
+    layer_floor_load(lp, smp->n, smp->y, smp->r, sizeof *smp->y, &f, &w);
+    if (!(w > 0) || layer_load_rests(f, 0, w))
+        return GW_OK;
+    const double hold = smp->springs ? layer_sample_wall_hold(smp, lp, lp->friction_deg) : 0;
+    const char *gone = ip->side_walls == GW_LAYER_SIDES_LEFT ? "its right wall"
+                       : ip->side_walls == GW_LAYER_SIDES_RIGHT ? "its left wall" : "its side walls";
+    return gw_err_set(err, GW_EINVAL, "side-walls: %s: the sample's pile does not rest on its floor alone (at t = 0 "
+                      "the floor carries %.3g of its weight and the side walls %.3g; at rest on the floor: %g to %g): "
+                      "its side walls help hold it, and without %s it is not at rest (give side-walls both, or a "
+                      "sample settled on its floor)", side_walls_name(ip->side_walls), f / w, hold / w,
+                      LAYER_FLOOR_LOAD_MIN, LAYER_FLOOR_LOAD_MAX, gone);
+}
+
 int gw_layer_impact_check(const gw_layer_sample *smp, const gw_layer_impact_params *p, gw_err *err)
 {
     if (!smp || !p)
@@ -232,6 +276,14 @@ int layer_impact_params_check(const gw_layer_sample *smp, const gw_layer_impact_
             return gw_err_set(err, GW_EINVAL, "%s: %d is not a flag (0 or 1)", fl[i].name, fl[i].v);
     if (p->nrings < 1 || p->nrings > 1000)
         return gw_err_set(err, GW_EINVAL, "rings: %d is outside [1, 1000]", p->nrings);
+    if (p->side_walls < GW_LAYER_SIDES_BOTH || p->side_walls > GW_LAYER_SIDES_NONE)
+        return gw_err_set(err, GW_EINVAL, "side-walls: %d is none of both (0), left (1), right (2), none (3)",
+                          p->side_walls);
+    /* remove-walls takes every wall away, the floor too: no side wall is left
+     * to keep */
+    if (p->remove_walls && p->side_walls != GW_LAYER_SIDES_BOTH)
+        return gw_err_set(err, GW_EINVAL, "side-walls: %s is given with remove-walls, which takes every wall away "
+                          "(the floor too): give one or the other", side_walls_name(p->side_walls));
     if (p->t_max / p->dt_out > 2e6)
         return gw_err_set(err, GW_EINVAL, "dt-out: %g s gives more than 2e6 samples up to t-max", p->dt_out);
     /* the series are held in memory (alloc_series): time, ledger (8), block (4)
@@ -887,7 +939,9 @@ int layer_impact_run(const gw_layer_sample *smp, const gw_layer_params *lp0, con
     lp.width = smp->width;
     lp.potential_from_start = 1;
     lp.no_events = 0;
-    lp.walls = ip->remove_walls ? 0 : GW_LAYER_WALLS_ALL;
+    lp.walls = impact_walls(ip);
+    if ((rc = layer_side_walls_rest_check(smp, &lp, ip, err)) != GW_OK)
+        return rc;
     double yb = -INFINITY;
     int target = -1;
     for (int i = 0; i < n; i++) {

@@ -426,6 +426,12 @@ double layer_sample_wall_hold(const gw_layer_sample *smp, const gw_layer_params 
  * (q = gw_layer_settled_load_ratio above 1), as other-settling allows the
  * settling check's q (layer-impact and a layer sweep, with the warning
  * gw_layer_impact_settled_check records); 0 is gw_layer_impact_rest_check. */
+/* A pile an impact keeps without a side wall (ip->side_walls other than
+ * both, the floor kept) must rest on its floor alone under lp's material:
+ * GW_EINVAL naming side-walls, the floor's and the walls' shares, otherwise
+ * (layer_impact.c; the run, and a plan's or a sweep case's check). */
+int layer_side_walls_rest_check(const gw_layer_sample *smp, const gw_layer_params *lp,
+                                const gw_layer_impact_params *ip, gw_err *err);
 int layer_rest_check(const gw_layer_sample *smp, const gw_layer_params *lp, int other_settling, const char *name,
                      double q, gw_err *err);
 /* gw_layer_impact_settled_check on a sample that passed the shared check

@@ -14,7 +14,8 @@
  *   - Fell off the layer (verdict 0, gone = GW_LAYER_GONE_*): before either,
  *     the block left the layer for good (GW_LAYER_BLOCK_GONE: below its lowest
  *     point, or beyond a side, with no wall there, touching nothing and moving
- *     away; only without walls). It never left its contacts moving up and never
+ *     away; over the floor, beyond where a missing side wall would be and
+ *     every other body, moving or at rest; only with a wall missing). It never left its contacts moving up and never
  *     will: not a bounce by the rule above, decided, but not the no-bounce
  *     either (its rebound did not end inside the layer): reported apart
  *     (fell_off), and the run ends there.

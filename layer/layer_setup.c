@@ -18,6 +18,8 @@
 #include "gw_locale.h"
 
 _Static_assert(GW_LAYER_UNTIL_REBOUND == 0 && GW_LAYER_UNTIL_VERDICT == 1, "until choices rebound,verdict");
+_Static_assert(GW_LAYER_SIDES_BOTH == 0 && GW_LAYER_SIDES_LEFT == 1 && GW_LAYER_SIDES_RIGHT == 2 &&
+                   GW_LAYER_SIDES_NONE == 3, "side-walls choices both,left,right,none");
 
 #define OFF(f) offsetof(gw_layer_impact_setup, f)
 
@@ -71,6 +73,12 @@ static const gw_param impact_params[] = {
     ROW("energy-tol", GW_PARAM_DOUBLE, energy_tol, "", 0, 1, 0, 0, "0", "E",
         "stop (an error; the command exits 1) when the ledger closure |sum - A|/A exceeds E [0 = off]"),
     FLAG("remove-walls", remove_walls, "take the left, right and bottom walls away at the start of the impact"),
+    /* one side wall taken away over the floor (the library's walls mask:
+     * until session 44 no option removed one alone) */
+    CHOICE("side-walls", side_walls, "both,left,right,none", "both", "WHICH",
+           "the side walls kept from the start of the impact, the floor kept: both, left (the right one taken "
+           "away), right or none; a pile whose side walls help hold it is refused without both, and so is any "
+           "but both with remove-walls [both]"),
     FLAG("full", full, "run to t-max even after the outcome is decided (for the crowns)"),
     /* layer-make's settings line records the pile's settling material: far
      * from it the pile is not at rest at t = 0 (layer_settled.c) */
@@ -447,6 +455,7 @@ static int resolve(const gw_layer_impact_setup *s, const gw_layer_sample *smp, g
     ip->nrings = (int)s->rings;
     ip->energy_tol = s->energy_tol;
     ip->remove_walls = s->remove_walls;
+    ip->side_walls = s->side_walls;
     ip->full = s->full;
     ip->other_settling = s->other_settling;
     ip->zero_springs = s->zero_springs;
@@ -462,6 +471,9 @@ static int resolve(const gw_layer_impact_setup *s, const gw_layer_sample *smp, g
         rc = layer_impact_gap_rules(smp, ip, s->gravity, !gap_given, err);
     if (rc == GW_OK)
         rc = gw_layer_impact_step_check(ip, *type, sp, err);
+    /* (the side walls kept: a sweep's check refuses the case before any runs) */
+    if (rc == GW_OK)
+        rc = layer_side_walls_rest_check(smp, lp, ip, err);
     /* the warning is the run's (gw_layer_impact keeps it in its result) */
     return rc == GW_OK ? layer_settling_verdict_found(smp, lp, s->other_settling, s->sample, memo, found, NULL, 0, err)
                        : rc;

@@ -219,14 +219,24 @@ void layer_watch_first_contact_min(const gw_layer *L, double *t, double *kb, dou
 }
 
 /* The block has left the layer for good (GW_LAYER_BLOCK_GONE, gw_layer.h) in
- * state y, touching nothing (touching: one of its contacts closed), or
- * beyond a side touching nothing but the floor: GW_LAYER_GONE_* or 0. Every
- * other body is bounded
- * by its disc (or clump) radius brad about its centre, and its points move at
- * most |w| brad faster than its centre; no wall lies on the block's side; so,
- * with the same gravity on every body, nothing can reach the block again.
- * Only with a wall missing (never in the walled box: runs with all walls are
- * unchanged), O(bodies) per evaluation while the block flies. */
+ * state y (touching: one of its contacts closed, the floor's among them):
+ * GW_LAYER_GONE_* or 0. Every other body is bounded by its disc (or clump)
+ * radius brad about its centre, and its points move at most |w| brad faster
+ * than its centre. Only with a wall missing (never in the walled box: runs
+ * with all walls are unchanged), O(bodies) per evaluation.
+ *  - Without the floor, touching nothing: below every other body's lowest
+ *    point moving down at least as fast as any of their points, or beyond
+ *    the left or right side of them all (that wall missing) moving away at
+ *    least as fast: with the same gravity on every body and no wall on the
+ *    block's side, nothing can reach it again.
+ *  - With the floor kept, beyond a missing side wall: by geometry alone, the
+ *    block's whole body beyond where that wall would be (x = 0 or the width)
+ *    and beyond every other body's extent (so out of contact with every
+ *    disc; the floor its only possible contact), whether it still moves or
+ *    lies on the floor. Until session 44 the rule asked it to move away at
+ *    least as fast as every other body: a block that came to rest on the
+ *    floor beyond the layer was never declared gone and ran to t-max
+ *    undecided, and one rolling away inside the box was declared gone at once. */
 static int block_gone(const gw_layer *L, const double *y, int touching)
 {
     const int w = L->p.walls, bb = L->block_body, floor = (w & GW_LAYER_WALL_BOTTOM) != 0;
@@ -240,16 +250,17 @@ static int block_gone(const gw_layer *L, const double *y, int touching)
         left = fmin(left, q[0] - L->brad[b]), vleft = fmin(vleft, q[3] - spin);
         right = fmax(right, q[0] + L->brad[b]), vright = fmax(vright, q[3] + spin);
     }
-    if (!floor && !touching && s[1] + rb < lo && s[4] < 0 && s[4] <= vlo)
-        return GW_LAYER_GONE_BELOW;
-    /* beyond a side with the floor kept: the block may roll or slide on the
-     * floor (its only contact: beyond every other body's extent it touches
-     * none of them), the same rule across the side (a side wall removed at
-     * impact time over a floor: the block that rolled off the pile rolled on
-     * beyond it to t-max, never declared gone). Without the floor, touching
-     * nothing, as before. */
-    if (touching && !floor)
+    if (floor) {
+        if (!(w & GW_LAYER_WALL_LEFT) && s[0] + rb < fmin(left, 0.0))
+            return GW_LAYER_GONE_LEFT;
+        if (!(w & GW_LAYER_WALL_RIGHT) && s[0] - rb > fmax(right, L->p.width))
+            return GW_LAYER_GONE_RIGHT;
         return 0;
+    }
+    if (touching)
+        return 0;
+    if (s[1] + rb < lo && s[4] < 0 && s[4] <= vlo)
+        return GW_LAYER_GONE_BELOW;
     if (!(w & GW_LAYER_WALL_LEFT) && s[0] + rb < left && s[3] < 0 && s[3] <= vleft)
         return GW_LAYER_GONE_LEFT;
     if (!(w & GW_LAYER_WALL_RIGHT) && s[0] - rb > right && s[3] > 0 && s[3] >= vright)

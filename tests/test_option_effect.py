@@ -85,7 +85,7 @@ VALUE = {
     "skin": "0.05", "mass-law": "sphere", "clump-mass": "union", "rm": "0.3", "volume-ratio": "5",
     "width-rm": "10", "ke-threshold": "5e-2", "modulus-factor": "0.5", "height-rm": "6",
     "clumps": None, "aspect-max": "2", "rb-rm": "2", "vi": "8", "x": "0.1", "ring-width": "0.5",
-    "rings": "6", "exact": None, "remove-walls": None, "full": None, "until": "verdict",
+    "rings": "6", "exact": None, "remove-walls": None, "side-walls": "left", "full": None, "until": "verdict",
     "check": None, "criterion": "0.5", "fit": "beta,a_over_b,offset", "gamma-deg": "0.5", "delta-rm": "0.5",
 }
 PER_CMD = {

@@ -79,6 +79,7 @@ int layer_impact_options(layer_impact_cli *c, gw_opt *o)
     row_opt(t, "atol", &c->atol, &o[i++]);
     row_opt(t, "energy-tol", &c->ip.energy_tol, &o[i++]);
     row_opt(t, "remove-walls", &c->ip.remove_walls, &o[i++]);
+    row_opt(t, "side-walls", &c->ip.side_walls, &o[i++]);
     row_opt(t, "full", &c->ip.full, &o[i++]);
     row_opt(t, "other-settling", &c->ip.other_settling, &o[i++]);
     row_opt(t, "zero-springs", &c->ip.zero_springs, &o[i++]);

@@ -61,7 +61,7 @@ typedef struct layer_impact_cli {
 } layer_impact_cli;
 
 /* Number of options layer_impact_options writes (materials included). */
-#define LAYER_IMPACT_NOPTS (LAYER_MAT_NOPTS + 23)
+#define LAYER_IMPACT_NOPTS (LAYER_MAT_NOPTS + 24)
 
 /* Zero c, fill the defaults and write the impact option table (the rows of
  * gw_layer_impact_setup_params: materials, sample, block, run, solver, flags

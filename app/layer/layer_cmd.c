@@ -420,6 +420,9 @@ static cJSON *impact_json(const impact_cli *c, const gw_layer_impact_result *r,
     cJSON_AddBoolToObject(s, "full", c->ip.full);
     cJSON_AddStringToObject(s, "until", gw_layer_until_name(c->ip.until));
     cJSON_AddBoolToObject(s, "remove_walls", c->ip.remove_walls);
+    static const char *const side_names[] = {"both", "left", "right", "none"}; /* GW_LAYER_SIDES_* */
+    if (c->ip.side_walls != GW_LAYER_SIDES_BOTH) /* only then: every other run's JSON unchanged */
+        cJSON_AddStringToObject(s, "side_walls", side_names[c->ip.side_walls & 3]);
     cJSON_AddBoolToObject(s, "other_settling", c->ip.other_settling);
     cJSON_AddBoolToObject(s, "zero_springs", c->ip.zero_springs);
     /* the tangential springs the sample carries, from which the run started

@@ -303,6 +303,7 @@ static int rk4_peek(gw_solver *s, rk4_impl *r, double p, double tend, double *t,
         yp = r->ytry;
     }
     s->peek = 0;
+    r->steps--; /* (made again at the next call; its evaluations were made) */
     *t = p;
     memcpy(y, yp, (size_t)n * sizeof *y);
     return GW_SOLVER_PEEK;

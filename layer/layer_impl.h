@@ -151,6 +151,7 @@ struct gw_layer {
     double t_event, quiet_until; /* Zeno guard (layer_sim.c) */
     long adv_steps0;             /* the steps taken when gw_layer_advance was called (its bound) */
     int adv_over;                /* 1: that call went past its bound (layer_sim.c) */
+    double peek;                 /* layer_advance_peek's time while it runs, else 0 */
     double zeno_dt, zeno_quiet;  /* its window and quiet time, s (gw_layer_start) */
     double cap_rate;             /* the sliding margin's restoring rate, 1/s (gw_layer_start) */
     int storm, storm_wide, no_events_user;
@@ -462,6 +463,14 @@ int layer_impact_params_check(const gw_layer_sample *smp, const gw_layer_impact_
 int layer_impact_gap_rules(const gw_layer_sample *smp, const gw_layer_impact_params *p, double g, int gap_default,
                            gw_err *err);
 int layer_impact_fall_rule(const gw_layer_impact_params *ip, double g, int gap_default, gw_err *err);
+/* The state at tpeek (L->t, L->y), on the way to tout, without a stop there:
+ * the solver (cvode, rk4) makes the steps and roots of gw_layer_advance(L, tout),
+ * and the next gw_layer_advance(L, tout) goes on from where it is (its roots
+ * and outputs as if no peek had been made). Another backend stops at tpeek
+ * (gw_layer_advance(L, tpeek)). GW_OK, or gw_layer_advance's failures. */
+int layer_advance_peek(gw_layer *L, double tpeek, double tout, gw_err *err);
+/* 1 when layer_advance_peek does not stop the run at tpeek (cvode, rk4) */
+int layer_can_peek(const gw_solver_type *type);
 double layer_impact_dem_dt(const gw_layer_sample *s, const gw_layer_params *lp, const gw_layer_impact_params *ip);
 /* layer_settling_found and layer_impact_run: layer_plan_run.h (the program
  * runs them too) */

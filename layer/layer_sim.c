@@ -368,9 +368,16 @@ int gw_layer_advance(gw_layer *L, double tout, gw_err *err)
                 return rc;
         }
         double t = L->t, target = L->quiet_until > 0 && L->quiet_until < tout ? L->quiet_until : tout;
+        gw_solver_set_peek(L->solver, L->peek > L->t && L->peek < target ? L->peek : 0);
         gw_drive drive = {.t_end = target, .on_root = layer_on_root, .on_output = layer_on_output,
                           .after = bounded ? NULL : layer_after_bound, .ctx = L};
         int rc = gw_solver_drive(L->solver, &drive, &t, L->y, L->roots, err);
+        gw_solver_set_peek(L->solver, 0);
+        if (rc == GW_SOLVER_PEEK) { /* L->y the state there; the solver on its way to target */
+            L->stamp++;
+            L->t = t;
+            return GW_OK;
+        }
         if (rc < 0 && L->adv_over) { /* the bound's own message (layer_after_bound) */
             L->stamp++;
             L->t = t;
@@ -402,6 +409,26 @@ int gw_layer_advance(gw_layer *L, double tout, gw_err *err)
             return rc;
     }
     return GW_OK;
+}
+
+int layer_can_peek(const gw_solver_type *type)
+{
+    return type == gw_solver_cvode || type == gw_solver_rk4;
+}
+
+int layer_advance_peek(gw_layer *L, double tpeek, double tout, gw_err *err)
+{
+    if (!L || !layer_can_peek(L->type) || !(tpeek < tout))
+        return gw_layer_advance(L, tpeek, err);
+    if (!(tpeek > L->t)) /* (the layer is there) */
+        return tpeek == L->t ? GW_OK : gw_layer_advance(L, tpeek, err);
+    L->peek = tpeek;
+    int rc = gw_layer_advance(L, tout, err);
+    L->peek = 0;
+    if (rc == GW_OK && L->t != tpeek) /* (tout reached first: cannot be, tpeek < tout) */
+        return gw_err_set(err, GW_ESOLVER, "layer: the state at t = %.9g s was not reached (t = %.9g s)", tpeek,
+                          L->t);
+    return rc;
 }
 
 void gw_layer_set_event_hook(gw_layer *L, gw_layer_event_fn fn, void *ctx)

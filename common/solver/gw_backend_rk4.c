@@ -288,6 +288,27 @@ static int rk4_locate(gw_solver *s, double h, double *hland)
     return 0;
 }
 
+/* A peek at p in the step from r->t that ends at tend (its end state in
+ * r->ynew): that state when p is the end within rounding, else a step of
+ * p - r->t; the solver where it was. GW_SOLVER_PEEK. */
+static int rk4_peek(gw_solver *s, rk4_impl *r, double p, double tend, double *t, double *y)
+{
+    const long n = s->sys.dim;
+    const double *yp = r->ynew;
+    if (fabs(tend - p) > 1e-9 * s->p.dt) {
+        if (rk4_step(s, r->t, r->y, p - r->t, r->ytry) != 0) {
+            gw_solver_set_error(s, "rk4: model callback failed at t = %.9g s", p);
+            return GW_ESOLVER;
+        }
+        yp = r->ytry;
+    }
+    s->peek = 0;
+    r->steps--; /* (made again at the next call; its evaluations were made) */
+    *t = p;
+    memcpy(y, yp, (size_t)n * sizeof *y);
+    return GW_SOLVER_PEEK;
+}
+
 static int rk4_advance(gw_solver *s, double tout, double *t, double *y, int *roots)
 {
     rk4_impl *r = s->impl;
@@ -321,6 +342,12 @@ static int rk4_advance(gw_solver *s, double tout, double *t, double *y, int *roo
         const int at_end = s->sys.roots_at_step_end;
         if (at_end && s->sys.project && (rc = s->sys.project(tend, h, r->ynew, NULL, s->sys.params)) != 0)
             break;
+        /* a peek in this step (gw_solver_set_peek), the step and its root
+         * not taken: the state there by a step of rk4 from the step's start
+         * (what a stop there gave), and the step made again at the next call
+         * (the same values: the run does not see the peek) */
+        const double p = s->peek;
+        int peek = p > r->t && p < tout && p <= tend + 1e-9 * dt;
         if (nr > 0) {
             if ((rc = rk4_roots(s, r->t + h, r->ynew, r->g)) != 0)
                 break;
@@ -329,11 +356,14 @@ static int rk4_advance(gw_solver *s, double tout, double *t, double *y, int *roo
                 if (!at_end) {
                     if ((rc = rk4_locate(s, h, &hl)) != 0)
                         break;
-                    if ((rc = rk4_step(s, r->t, r->y, hl, r->ynew)) != 0)
+                    peek = peek && p <= r->t + hl;
+                    if (!peek && (rc = rk4_step(s, r->t, r->y, hl, r->ynew)) != 0)
                         break;
-                    if ((rc = rk4_roots(s, r->t + hl, r->ynew, r->g)) != 0)
+                    if (!peek && (rc = rk4_roots(s, r->t + hl, r->ynew, r->g)) != 0)
                         break;
                 }
+                if (peek)
+                    return rk4_peek(s, r, p, tend, t, y);
                 r->t = at_end ? tend : (hl == h && r->t + h >= tout) ? tout : r->t + hl;
                 memcpy(r->y, r->ynew, (size_t)n * sizeof *y);
                 memcpy(r->g0, r->g, (size_t)nr * sizeof *r->g);
@@ -349,6 +379,8 @@ static int rk4_advance(gw_solver *s, double tout, double *t, double *y, int *roo
                 memcpy(y, r->y, (size_t)n * sizeof *y);
                 return GW_ROOT;
             }
+            if (peek) /* (no root in the step; the roots' references as they were) */
+                return rk4_peek(s, r, p, tend, t, y);
             double *g0 = r->g0; /* g becomes the next step's g0 (no copy) */
             r->g0 = r->g;
             r->g = g0;
@@ -359,6 +391,8 @@ static int rk4_advance(gw_solver *s, double tout, double *t, double *y, int *roo
                 signs_changed(r, nr);
             }
         }
+        if (peek)
+            return rk4_peek(s, r, p, tend, t, y);
         r->t = tend;
         double *y0 = r->y; /* the step's end becomes the next step's start (no copy) */
         r->y = r->ynew;

@@ -233,6 +233,17 @@ int gw_solver_reset(gw_solver *s, double t, const double *y)
     return s->type->reset(s, t, y);
 }
 
+int gw_solver_set_peek(gw_solver *s, double tpeek)
+{
+    if (!s || (s->type != gw_solver_cvode && s->type != gw_solver_rk4) || !(tpeek > 0) || !isfinite(tpeek)) {
+        if (s)
+            s->peek = 0;
+        return 0;
+    }
+    s->peek = tpeek;
+    return 1;
+}
+
 const double *gw_solver_rates(const gw_solver *s)
 {
     return s && s->type->rates ? s->type->rates(s) : NULL;
@@ -263,6 +274,8 @@ int gw_solver_drive(gw_solver *s, gw_drive *d, double *t, double *y, int *roots,
         int rc = gw_solver_advance(s, tnext, t, y, roots);
         if (rc < 0)
             return drive_failed(s, d, rc, err);
+        if (rc == GW_SOLVER_PEEK) /* (gw_solver_set_peek) no output, the solver as it is */
+            return rc;
         int act;
         if (rc == GW_ROOT) {
             act = d->on_root ? d->on_root(d->ctx, *t, y, roots, err) : GW_DRIVE_RESET;

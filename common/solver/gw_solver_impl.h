@@ -25,6 +25,7 @@ struct gw_solver {
     gw_system sys;
     gw_solver_params p;
     long restarts;
+    double peek; /* gw_solver_set_peek's time, 0: none */
     char errmsg[1024];
     void *impl;
 };

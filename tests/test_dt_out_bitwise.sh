@@ -1,0 +1,88 @@
+#!/bin/bash
+# test_dt_out_bitwise.sh GRANWAVE SRCDIR: layer-impact's outcome does not
+# depend on --dt-out under cvode and rk4, bit for bit.
+#  1 cvode stopped at every sample: a --dt-out that is not a multiple of the
+#    run's checks (2e-5 s), or finer, added stops between them, where the
+#    layer projects the state and restarts cvode, CVODE's first step after a
+#    restart knows the next stop and its root search ends there. On the
+#    40-disc pile of `layer-make --n 40`, e_n moved by 1.7e-10 at --dt-out
+#    3e-5 and by 7.5e-9 at 1e-5, and the run ended at a sample (t_end 0.30603
+#    s against 0.30604). The samples between the checks are now read on the
+#    way (layer_advance_peek): cvode integrates towards the next check and
+#    the state at the sample is interpolated in the step that passed it.
+#  2 rk4 stopped at its samples too (the last step to a sample shortened, the
+#    state projected there): e_n moved by 1.6e-15 at 3e-5 and 1e-4 s and 1e-14
+#    at 1e-5. At a step that does not divide --dt-out (--dt 3e-6) the
+#    samples were its only checks: e_n moved by 4e-9 between --dt-out 2e-5,
+#    3e-5, 1e-5 and 2e-3 and the crowns were read from the samples (96.7 m/s
+#    and a dt-out warning at 2e-3, 98.06 at 2e-5). Its checks are now every
+#    20 steps (on the step grid) whatever --dt-out, its samples between them
+#    a step of rk4 from the start of the step that holds them, made aside;
+#    the crowns are read at the checks when the samples are coarser.
+# Checks that fail on the code before: see docs/tests.md.
+# shellcheck source=refusal_lib.sh
+. "$(dirname "$0")/refusal_lib.sh"
+hostile_setup "$@"
+export LC_ALL=C
+PY=/usr/bin/python3
+
+cpu_run 120 "$GW" layer-make --n 40 --out s40 --quiet >/dev/null 2>&1 ||
+    { ko "layer-make --n 40 (the pile the checks impact)"; test_summary test_dt_out_bitwise; exit; }
+
+# impact NAME ARGS...: layer-impact on s40, --json into NAME.json
+impact() {
+    local name=$1
+    shift
+    cpu_run 120 "$GW" layer-impact --sample s40 --quiet --json "$@" >"$name.json" 2>"$name.err"
+}
+# differ NAME1 NAME2 [speeds]: the outcome fields of NAME1 (and with speeds
+# its wave speeds) that are not NAME2's bit for bit (repr of the doubles),
+# empty when all are
+differ() {
+    $PY - "$1.json" "$2.json" "${3:-}" <<'EOF'
+import json, sys
+a, b = (json.load(open(f)) for f in sys.argv[1:3])
+keys = ["bounced", "e_n", "e", "alpha_r", "e_n_first", "t_f", "penetration", "t_end", "dissipated_first_contact",
+        "t_contact_open"]
+if sys.argv[3] == "speeds":
+    keys += ["wave_speed", "wave_speed_kinetic", "wave_speed_xcorr"]
+print(" ".join("%s (%r vs %r)" % (k, a.get(k), b.get(k)) for k in keys if repr(a.get(k)) != repr(b.get(k))))
+EOF
+}
+field() { $PY -c "import json; print(repr(json.load(open('$1.json')).get('$2')))"; }
+warned() { $PY -c "import json; print(''.join(w for w in json.load(open('$1.json'))['warnings'] if 'dt-out' in w))"; }
+
+# same BASE NAME WHAT [speeds]: NAME's outcome (and wave speeds) is BASE's bit for bit
+same() {
+    local d
+    d=$(differ "$2" "$1" "${4:-}")
+    [ -z "$d" ] && ok "$3: the default's outcome bit for bit (e_n $(field "$1" e_n), t_end $(field "$1" t_end))" ||
+        ko "$3 moves the outcome: $d"
+}
+
+# 1: cvode; the wave speeds too where the crowns are read at the checks (a
+# --dt-out finer than them reads its own samples, which resolve them better)
+impact c0 --solver cvode || ko "cvode at the default --dt-out ran (exit $?)"
+for d in 3e-5 1e-5 1e-4 2e-3; do
+    impact "c_$d" --solver cvode --dt-out "$d" || ko "cvode at --dt-out $d ran (exit $?)"
+    if [ "$d" = 1e-5 ]; then same c0 "c_$d" "cvode --dt-out $d"; else same c0 "c_$d" "cvode --dt-out $d" speeds; fi
+done
+[ "$(field c0 wave_speed)" != None ] && ok "control: cvode's default gives a wave speed" ||
+    ko "cvode's default gives no wave speed"
+
+# 2: rk4 at its default step (1e-6 s) and at a step that does not divide
+# --dt-out (3e-6 s: checks every 6e-5 s, finer samples read the crowns)
+impact r0 --solver rk4 --dt-out 2e-5 --t-max 0.004 --until verdict || ko "rk4 at the default --dt-out ran (exit $?)"
+impact r3 --solver rk4 --dt-out 3e-5 --t-max 0.004 --until verdict || ko "rk4 at --dt-out 3e-5 ran (exit $?)"
+same r0 r3 "rk4 --until verdict --dt-out 3e-5"
+impact q0 --solver rk4 --dt 3e-6 || ko "rk4 --dt 3e-6 at the default --dt-out ran (exit $?)"
+for d in 3e-5 1e-5 2e-3; do
+    impact "q_$d" --solver rk4 --dt 3e-6 --dt-out "$d" || ko "rk4 --dt 3e-6 at --dt-out $d ran (exit $?)"
+    same q0 "q_$d" "rk4 --dt 3e-6 --dt-out $d"
+done
+w=$(warned q_2e-3)
+[ -z "$w" ] && [ "$(field q_2e-3 wave_speed_kinetic)" != None ] &&
+    ok "rk4 --dt 3e-6 --dt-out 2e-3: wave speeds from the checks, no dt-out warning" ||
+    ko "rk4 --dt 3e-6 --dt-out 2e-3: wave_speed_kinetic $(field q_2e-3 wave_speed_kinetic), warning '$w'"
+
+test_summary test_dt_out_bitwise

@@ -719,8 +719,8 @@ static int collide_after(void *ctx, double t, const double *y, gw_err *err)
 
 static int collide_run(const gw_chain *c, const gw_chain_run_opts *o, int drop, int flight_cut, int rerun,
                        gw_chain_progress_fn progress, void *pctx, gw_chain_result *r, gw_err *err);
-static void chatter_spread(const gw_chain *c, const gw_chain_run_opts *o, const collide_plan *pl,
-                           gw_chain_result *r);
+static void chatter_spread(const gw_chain *c, const gw_chain_run_opts *o, int drop, int flight_cut,
+                           const collide_plan *pl, gw_chain_result *r);
 
 int gw_chain_collide(const gw_chain *c, const gw_chain_run_opts *o, gw_chain_result *r,
                      gw_err *err)
@@ -772,8 +772,7 @@ static int collide_run(const gw_chain *c, const gw_chain_run_opts *o, int drop, 
     if (prc != GW_OK)
         return prc;
     /* the velocities' arrays, then the column's pending text (chain_result_column_pending) */
-    r->final_v = calloc(1, 4 * (size_t)n * sizeof *r->final_v + CHAIN_PENDING_TEXT + CHAIN_CHATTER_TEXT +
-                                  sizeof(chain_chatter_info));
+    r->final_v = calloc(1, 4 * (size_t)n * sizeof *r->final_v + CHAIN_PENDING_TEXT + CHAIN_CHATTER_TEXT);
     double *y = malloc((size_t)sys->dim * sizeof *y);
     int *roots = calloc((size_t)sys->nroots, sizeof *roots);
     run_state st = {.c = c, .o = o, .r = r, .n = n, .t_sampled = -INFINITY, .flight_cut = flight_cut,
@@ -872,8 +871,8 @@ stopped:
         column_pending(&st, t, y, (char *)(r->final_v + 4 * (size_t)n), CHAIN_PENDING_TEXT);
     finish_result(&st, y);
     gw_solver_get_stats(s, &r->stats);
-    if (rc == GW_OK && !drop && !rerun && r->converged)
-        chatter_spread(c, o, &pl, r);
+    if (rc == GW_OK && !rerun && (r->converged || drop))
+        chatter_spread(c, o, drop, flight_cut, &pl, r);
 done:
     gw_solver_free(s);
     free(y);
@@ -900,92 +899,92 @@ double chain_extend_bound(double t_default, double dt_ext, int n, int stored)
  * and 0.9945, 0.9985, 0.9968, 0.9923, 0.9943 and 0.9965 at rtol = atol = 1e-8,
  * 1e-10, 1e-11, 1e-12, 1e-13 and 1e-14 (at 1e-14, four samplings agreed within
  * 1.5e-4). No sampling decides it: the result is one of the chatter's outcomes.
- * A run with CHAIN_CHATTER_CONTACTS wall contacts or more is run again, cheap
- * ones (steps times beads at most CHAIN_CHATTER_WORK; the rerun costs about 1.3
+ * A run with GW_CHAIN_CHATTER_CONTACTS wall contacts or more is run again, cheap
+ * ones (steps times beads at most GW_CHAIN_CHATTER_WORK; the rerun costs about 1.3
  * times the run) with rtol and atol 10 times tighter (rk4: half its step), and
- * a difference of eps_eff above CHAIN_CHATTER_SPREAD is said in the result's
- * warnings with both values (chain_result_chatter). A chatter whose rerun
+ * a difference of eps_eff above GW_CHAIN_CHATTER_SPREAD is said in the result's
+ * warnings with both values (chain_result_chatter), its kind and spread in the
+ * result's chatter_kind and chatter_spread. A chatter whose rerun
  * agrees (--n 2 --sensor-mass 1e-4 --sensor-stiffness 1e3: 24 contacts) says
  * nothing. A costly one is not run again (--n 3 --sensor-mass 1e-7
  * --sensor-stiffness 1e3: 6707 contacts, 4.8 million steps, 76 s on a loaded
  * machine) but said to be unmeasured, naming what to change: it returned
- * without a word before. A study or sweep counts its columns' kinds
- * (chain_result_chatter_info) into one line. */
-#define CHAIN_CHATTER_CONTACTS 10
-#define CHAIN_CHATTER_SPREAD 1e-6
+ * without a word before. A study or sweep counts its columns' kinds into one
+ * line. A drop's first collision (drop) is checked alike, its rerun the drop's
+ * own (cut where the first was: flight_cut); it ends at the drop's next
+ * impact, so its contacts are rarely more than one (the drop's own chatter,
+ * over its impacts, is chain_drop.c's). */
 
-/* where the chatter's text and its info are kept, after the pending text */
+/* where the chatter's text is kept, after the pending text */
 static char *chatter_text(const gw_chain_result *r)
 {
     return (char *)(r->final_v + 4 * (size_t)r->n) + CHAIN_PENDING_TEXT;
 }
 
-static void chatter_info_set(const gw_chain_result *r, int kind, double spread)
+void chain_chatter_rerun(const gw_solver_type *type, double step, gw_solver_params *sp, char *how, size_t how_size,
+                         char *flags, size_t flags_size)
 {
-    const chain_chatter_info info = {.kind = kind, .contacts = r->wall_contacts, .spread = spread,
-                                     .work = (double)r->stats.steps * r->n};
-    memcpy(chatter_text(r) + CHAIN_CHATTER_TEXT, &info, sizeof info);
+    if (type == gw_solver_rk4) {
+        sp->dt = 0.5 * step;
+        gw_snprintf(how, how_size, "rk4's step halved, %g s", sp->dt);
+        gw_snprintf(flags, flags_size, "--dt %g (half the step)", sp->dt);
+    } else {
+        sp->rtol = fmax(0.1 * sp->rtol, 1e-15);
+        sp->atol = fmax(0.1 * sp->atol, 1e-15);
+        gw_snprintf(how, how_size, "rtol %g, atol %g", sp->rtol, sp->atol);
+        gw_snprintf(flags, flags_size, "--rtol %g --atol %g", sp->rtol, sp->atol);
+    }
 }
 
-static void chatter_spread(const gw_chain *c, const gw_chain_run_opts *o, const collide_plan *pl,
-                           gw_chain_result *r)
+static void chatter_spread(const gw_chain *c, const gw_chain_run_opts *o, int drop, int flight_cut,
+                           const collide_plan *pl, gw_chain_result *r)
 {
     const int n = r->n;
     char *text = chatter_text(r);
     text[0] = '\0';
-    if (gw_chain_sensor_index(c) < 0 || r->wall_contacts < CHAIN_CHATTER_CONTACTS)
+    r->chatter_kind = GW_CHAIN_CHATTER_NONE;
+    r->chatter_spread = 0;
+    if (gw_chain_sensor_index(c) < 0 || r->wall_contacts < GW_CHAIN_CHATTER_CONTACTS)
         return;
-    /* a costly run is not run again (--n 3 --sensor-mass 1e-7 --sensor-stiffness 1e3:
-     * 6707 contacts, 4.8 million steps, a minute), and says so */
-    const double work = (double)r->stats.steps * n;
-    if (!(work <= CHAIN_CHATTER_WORK)) {
-        char tighter[80];
-        if (pl->type == gw_solver_rk4)
-            gw_snprintf(tighter, sizeof tighter, "--dt %g (half the step)", 0.5 * chain_plan_step(pl));
-        else
-            gw_snprintf(tighter, sizeof tighter, "--rtol %g --atol %g", fmax(0.1 * pl->sp.rtol, 1e-15),
-                        fmax(0.1 * pl->sp.atol, 1e-15));
-        chatter_info_set(r, CHAIN_CHATTER_COSTLY, 0);
-        gw_snprintf(text, CHAIN_CHATTER_TEXT, "bead 1 chattered on the sensor body (its wall contact closed %d "
-                    "times): the chatter amplifies the integration's error, so that the final velocities and the "
-                    "restitution move with dt-out and the tolerances, and this run (%.3g steps times %d beads, "
-                    "above the %.3g a rerun is made within) was not run again to measure by how much: compare a "
-                    "run at %s; a stiffer, heavier or damped sensor body (--sensor-stiffness, --sensor-mass, "
-                    "--sensor-damping) chatters less",
-                    r->wall_contacts, (double)r->stats.steps, n, CHAIN_CHATTER_WORK, tighter);
-        return;
-    }
     gw_chain_run_opts o2 = *o;
     o2.sample = NULL;
     o2.sample_ctx = NULL;
     o2.sp = pl->sp; /* the plan's step bounds, and the tolerances tightened */
-    char how[64];
-    if (pl->type == gw_solver_rk4) {
-        o2.sp.dt = 0.5 * chain_plan_step(pl);
-        gw_snprintf(how, sizeof how, "rk4's step halved, %g s", o2.sp.dt);
-    } else {
-        o2.sp.rtol = fmax(0.1 * pl->sp.rtol, 1e-15);
-        o2.sp.atol = fmax(0.1 * pl->sp.atol, 1e-15);
-        gw_snprintf(how, sizeof how, "rtol %g, atol %g", o2.sp.rtol, o2.sp.atol);
+    char how[64], flags[80], ending[CHAIN_CHATTER_TEXT];
+    chain_chatter_rerun(pl->type, chain_plan_step(pl), &o2.sp, how, sizeof how, flags, sizeof flags);
+    /* a costly run is not run again (--n 3 --sensor-mass 1e-7 --sensor-stiffness 1e3:
+     * 6707 contacts, 4.8 million steps, a minute), and says so */
+    const double work = (double)r->stats.steps * n;
+    if (!(work <= GW_CHAIN_CHATTER_WORK)) {
+        r->chatter_kind = GW_CHAIN_CHATTER_COSTLY;
+        gw_snprintf(ending, sizeof ending, "so that the final velocities and the restitution move with dt-out and "
+                    "the tolerances, and this run (%.3g steps times %d beads, above the %.3g a rerun is made "
+                    "within) was not run again to measure by how much: compare a run at %s; a stiffer, heavier or "
+                    "damped sensor body (--sensor-stiffness, --sensor-mass, --sensor-damping) chatters less",
+                    (double)r->stats.steps, n, GW_CHAIN_CHATTER_WORK, flags);
+        chain_chatter_text(text, CHAIN_CHATTER_TEXT, r->wall_contacts, "", ending);
+        return;
     }
     gw_chain_result r2;
     gw_err e2 = {{0}};
-    const int rc = collide_run(c, &o2, 0, 0, 1, NULL, NULL, &r2, &e2);
+    const int rc = collide_run(c, &o2, drop, flight_cut, 1, NULL, NULL, &r2, &e2);
     const double d = fabs(r2.eps_eff - r->eps_eff);
-    if (rc == GW_OK && r2.converged && !(d > CHAIN_CHATTER_SPREAD)) {
+    /* a drop's first collision ends where the drop cut it (converged 0): its rerun agrees or not alike */
+    if (rc == GW_OK && (r2.converged || drop) && !(d > GW_CHAIN_CHATTER_SPREAD)) {
         gw_chain_result_free(&r2);
         return;
     }
-    chatter_info_set(r, rc == GW_OK ? CHAIN_CHATTER_MOVED : CHAIN_CHATTER_FAILED, rc == GW_OK ? d : 0);
+    r->chatter_kind = rc == GW_OK ? GW_CHAIN_CHATTER_MOVED : GW_CHAIN_CHATTER_FAILED;
+    r->chatter_spread = rc == GW_OK ? d : 0;
+    char where[48];
+    gw_snprintf(where, sizeof where, "; %d at %s", r2.wall_contacts, how);
     if (rc == GW_OK)
-        gw_snprintf(text, CHAIN_CHATTER_TEXT, "bead 1 chattered on the sensor body (its wall contact closed %d "
-                    "times; %d at %s): the chatter amplifies the integration's error, and a rerun there gave eps_eff "
-                    "%.6g against %.6g, tau_N %.6g s against %.6g s: the final velocities and the restitution are "
-                    "uncertain by that much, and move with dt-out and the tolerances", r->wall_contacts, r2.wall_contacts, how,
-                    r2.eps_eff, r->eps_eff, r2.tau_n, r->tau_n);
+        gw_snprintf(ending, sizeof ending, "and a rerun there gave eps_eff %.6g against %.6g, tau_N %.6g s against "
+                    "%.6g s: the final velocities and the restitution are uncertain by that much, and move with "
+                    "dt-out and the tolerances", r2.eps_eff, r->eps_eff, r2.tau_n, r->tau_n);
     else
-        gw_snprintf(text, CHAIN_CHATTER_TEXT, "bead 1 chattered on the sensor body (its wall contact closed %d "
-                    "times): its rerun at %s failed (%s), the spread unmeasured", r->wall_contacts, how, e2.msg);
+        gw_snprintf(ending, sizeof ending, "and its rerun at %s failed (%s), the spread unmeasured", how, e2.msg);
+    chain_chatter_text(text, CHAIN_CHATTER_TEXT, r->wall_contacts, rc == GW_OK ? where : "", ending);
     gw_chain_result_free(&r2);
 }
 
@@ -997,24 +996,15 @@ const char *chain_result_chatter(const gw_chain_result *r)
     return memchr(text, '\0', CHAIN_CHATTER_TEXT) ? text : "";
 }
 
-int chain_result_chatter_info(const gw_chain_result *r, chain_chatter_info *info)
+double chain_chatter_value(int kind, double spread)
 {
-    chain_chatter_info i = {.kind = CHAIN_CHATTER_NONE, .contacts = 0, .spread = 0, .work = 0};
-    if (r && r->final_v && r->n >= 1 && made_find(r->final_v, r->n, 0) && chain_result_chatter(r)[0])
-        memcpy(&i, chatter_text(r) + CHAIN_CHATTER_TEXT, sizeof i);
-    if (i.kind < CHAIN_CHATTER_NONE || i.kind > CHAIN_CHATTER_FAILED)
-        i.kind = CHAIN_CHATTER_NONE;
-    if (info)
-        *info = i;
-    return i.kind;
+    return kind == GW_CHAIN_CHATTER_MOVED ? spread : kind == GW_CHAIN_CHATTER_COSTLY ? -1.0
+                                                   : kind == GW_CHAIN_CHATTER_FAILED ? -2.0 : 0.0;
 }
 
 double chain_result_chatter_value(const gw_chain_result *r)
 {
-    chain_chatter_info c;
-    const int kind = chain_result_chatter_info(r, &c);
-    return kind == CHAIN_CHATTER_MOVED ? c.spread : kind == CHAIN_CHATTER_COSTLY ? -1.0
-                                                  : kind == CHAIN_CHATTER_FAILED ? -2.0 : 0.0;
+    return r ? chain_chatter_value(r->chatter_kind, r->chatter_spread) : 0.0;
 }
 
 const char *chain_result_column_pending(const gw_chain_result *r)

@@ -143,6 +143,8 @@ static const gw_param drop_fields[] = {
     RL("first_rhs_evals", r.first.stats.rhs_evals, "first collision: right-hand side evaluations"),
     RL("first_jac_evals", r.first.stats.jac_evals, "first collision: Jacobian evaluations"),
     RL("first_restarts", r.first.stats.restarts, "first collision: solver restarts"),
+    RD("first_chatter", first_chatter, "", "first collision: bead 1's chatter on a sensor body, as chain's (NaN: not checked, cut at t_max)"),
+    RD("chatter", chatter, "", "bead 1's chatter on a sensor body over the drop: 0 none, the impacts' largest relative F_max change a rerun measured, -1 not run again (costly), -2 the rerun failed"),
     RD("energy_error", r.energy_error, "", "max |E(t) - E(0)| / E(0) over every sample and event"),
     RD("e0", r.e0, "J", "E(0): N m g h for touching beads"),
     RD("energy_kinetic", e_kinetic, "J", "kinetic energy at t_end"),
@@ -277,6 +279,8 @@ static int fill_tables(gw_chain_drop_outcome *o, gw_err *err)
     const gw_chain_drop_result *r = &o->r;
     const int np = r->n_peaks, ni = r->n_impacts, n = r->n;
     o->n_first = r->first.n;
+    o->chatter = chain_chatter_value(r->chatter_kind, r->chatter_spread);
+    o->first_chatter = r->first_status == GW_OK ? chain_result_chatter_value(&r->first) : NAN;
     o->impact_rises = gw_chain_drop_impact_rises(r);
     o->impacts_monotone = o->impact_rises == 0;
     o->e_kinetic = r->e_end.kinetic;
@@ -421,7 +425,7 @@ int gw_chain_drop_study_run(const gw_chain_drop_setup *s, gw_progress_fn progres
     if (rc == GW_OK && ((rc = chain_damping_zero_warnings(p, 0, 1, &out->warnings)) != GW_OK ||
                         (rc = chain_damping_small_warning(&at_impact, res.run.sp.rtol, &out->warnings)) != GW_OK ||
                         (rc = chain_drag_small_warnings(&at_impact, res.run.sp.rtol, &out->warnings)) != GW_OK ||
-                        (rc = chain_drop_warnings(&out->r, p, &out->warnings)) != GW_OK))
+                        (rc = chain_drop_warnings(&out->r, p, &res.run, &out->warnings)) != GW_OK))
         rc = gw_err_set(err, rc, "drop: out of memory");
     /* a threshold above every peak: f_max, t_fmax, the peaks and the impacts
      * are empty (null), which said nothing of why (drop --peak-threshold 1e9:

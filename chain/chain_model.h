@@ -174,28 +174,20 @@ extern const char chain_held_pending[];
 const char *chain_result_column_pending(const gw_chain_result *r);
 /* Room for the chatter's text after the pending text (CHAIN_CHATTER_TEXT
  * bytes): bead 1 that chattered on a sensor body and the spread a rerun at
- * tighter tolerances measured (chain_collide.c, chatter_spread); "" when none. */
+ * tighter tolerances measured (chain_collide.c, chatter_spread); "" when none.
+ * Its kind and spread are the result's chatter_kind and chatter_spread. */
 #define CHAIN_CHATTER_TEXT 512
 const char *chain_result_chatter(const gw_chain_result *r);
-/* What chatter_spread found of a run, kept after the chatter's text (a
- * study's and a sweep's count of their chattering columns): bead 1's wall
- * contacts, and the spread a rerun measured or why none was measured. */
-enum {
-    CHAIN_CHATTER_NONE,   /* no chatter, or a rerun that agreed within 1e-6 */
-    CHAIN_CHATTER_MOVED,  /* a rerun at tighter tolerances moved eps_eff by spread */
-    CHAIN_CHATTER_COSTLY, /* too costly to run again (work: steps times beads above 1e6) */
-    CHAIN_CHATTER_FAILED  /* its rerun failed */
-};
-typedef struct chain_chatter_info {
-    int kind;      /* CHAIN_CHATTER_* */
-    int contacts;  /* bead 1's wall contacts */
-    double spread; /* |eps_eff - the rerun's| (MOVED) */
-    double work;   /* the run's steps times beads */
-} chain_chatter_info;
-/* r's chatter into *info (zeroed: none); its kind. */
-int chain_result_chatter_info(const gw_chain_result *r, chain_chatter_info *info);
-/* The work (steps times beads) up to which a chattering run is run again. */
-#define CHAIN_CHATTER_WORK 1e6
+/* The one text of bead 1's chatter on a sensor body into buf: "bead 1
+ * chattered on the sensor body (its wall contact closed CONTACTS times WHERE):
+ * the chatter amplifies the integration's error, ENDING" (where "" or, say,
+ * "over the drop"; ending the run's: a rerun's spread, or why none). */
+void chain_chatter_text(char *buf, size_t size, int contacts, const char *where, const char *ending);
+/* The rerun of a chattering run, for its text: "rtol R, atol A" (how) and
+ * "--rtol R --atol A" (flags), or rk4's step halved ("rk4's step halved, DT
+ * s", "--dt DT (half the step)"); the tighter settings into *sp. */
+void chain_chatter_rerun(const gw_solver_type *type, double step, gw_solver_params *sp, char *how, size_t how_size,
+                         char *flags, size_t flags_size);
 /* How far a run at the default t_max t_default (20 expected lengths) goes on
  * when it has not ended there (chain_collide.c, extend_run), sampled at dt_ext
  * past it, for n beads: t_default plus at most 49 t_default, 5e6 samples and,
@@ -244,8 +236,11 @@ int chain_wavespeed_warnings(const struct gw_chain_wavespeed_outcome *o, const g
  * a bead 1 at rest on the sensor at t_max (the column's kinetic energy below
  * a millionth of e0, bead 1 stopped as chain_bead_stopped has it) is held
  * there by its weight, and no t-max ends its last contact: said so, naming p's
- * contact damping (which took its rebound), instead of "raise --t-max". */
-int chain_drop_warnings(const gw_chain_drop_result *r, const gw_chain_params *p, char **list);
+ * contact damping (which took its rebound), instead of "raise --t-max". The
+ * drop's chatter on a sensor body (chatter_kind) names its rerun by o's solver
+ * and tolerances (NULL: by the rule, rk4's step or the tolerances). */
+int chain_drop_warnings(const gw_chain_drop_result *r, const gw_chain_params *p, const gw_chain_run_opts *o,
+                        char **list);
 /* Runs whose step was below the dt given (gw_chain_result's run_dt under
  * run_dt_given: above dt_max, or rk4's dt_out), tallied over the runs of one
  * command, a study or a sweep, so that one warning line says how many: a
@@ -257,10 +252,12 @@ typedef struct chain_dt_tally {
     int at_out;                /* of over, those whose step was rk4's dt_out (below dt_max) */
     int overlap_over;          /* runs whose largest overlap passed the bead radius */
     double overlap_hi;         /* the largest of their overlaps, in bead radii */
-    int chatter[4];            /* runs by their chatter's kind (CHAIN_CHATTER_*; [0] unused) */
+    int chatter[4];            /* runs by their chatter's kind (GW_CHAIN_CHATTER_*; [0] unused) */
     int chatter_contacts;      /* the most wall contacts of a chattering run */
     double chatter_spread;     /* the largest spread a rerun measured */
     double chatter_work;       /* the largest work of a run too costly to run again */
+    const gw_solver_type *solver; /* the runs' solver (the reruns' wording: rk4's step or the
+                                     tolerances), set by the study; NULL: not known */
 } chain_dt_tally;
 /* One run into t: given the dt given (0: none), taken the step it took,
  * dt_max its largest step (s). t starts zeroed. */
@@ -281,11 +278,14 @@ void chain_dt_tally_results(chain_dt_tally *t, const gw_chain_result *res, long 
 void chain_dt_tally_overlap(chain_dt_tally *t, double overlap_rel);
 /* Runs whose bead 1 chattered on a sensor body, in one line with their count
  * (chain_dt_tally_warnings says it of a study's tally, a sweep of its rows'
- * chatter column): moved, costly, failed by kind (chain_chatter_info) of total
+ * chatter column): moved, costly, failed by kind (GW_CHAIN_CHATTER_*) of total
  * runs named what, the most wall contacts, the largest spread measured and
- * the largest work not run again; first "" or "; the first, case K". */
+ * the largest work not run again; first "" or "; the first, case K". The
+ * reruns of the moved ones: rk4 CHAIN_RERUN_TOL (10 times tighter
+ * tolerances), CHAIN_RERUN_STEP (rk4's step halved) or CHAIN_RERUN_BOTH. */
+enum { CHAIN_RERUN_TOL = 1, CHAIN_RERUN_STEP = 2, CHAIN_RERUN_BOTH = 3 };
 int chain_chatter_cases_warning(long moved, long costly, long failed, long total, int contacts, double spread,
-                                double work, const char *what, const char *first, char **list);
+                                double work, int rerun, const char *what, const char *first, char **list);
 
 /* Append speed v to the list in buf ("0.3, 6.16"; "..." once it is full),
  * counting in *count. */

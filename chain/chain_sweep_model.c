@@ -202,8 +202,26 @@ typedef struct rows_acc {
     long total, over, over_first, energy, energy_first;
     double over_hi, energy_hi;
     long moved, costly, failed, chatter_first; /* bead 1 chattered on the sensor body (chatter column) */
+    int rerun;                                  /* the moved ones' reruns (CHAIN_RERUN_*: rk4's or the tolerances) */
     double spread_hi;
 } rows_acc;
+
+/* 1 when case k runs rk4 (its chatter's rerun halves the step; the others tighten the tolerances) */
+static int case_rk4(const gw_sweep_config *cfg, long k)
+{
+    const char *names[2 * GW_SWEEP_MAX_KEYS], *values[2 * GW_SWEEP_MAX_KEYS];
+    if (!cfg || gw_sweep_case(cfg, k, names, values) != GW_OK)
+        return 0;
+    gw_chain_setup s;
+    gw_err e = {{0}};
+    char name[16] = "";
+    int rk4 = 0;
+    if (prepare(&s, cfg->ngrid + cfg->nparams, names, values, &e) == GW_OK && s.solver >= 0 &&
+        gw_param_format(gw_param_find(gw_chain_setup_params(), "solver"), &s, name, sizeof name) > 0)
+        rk4 = strcmp(name, "rk4") == 0;
+    gw_chain_setup_clear(&s);
+    return rk4;
+}
 
 /* case k's energy-tol, as its run took it (0: off; the default) */
 static double case_energy_tol(const gw_sweep_config *cfg, long k)
@@ -238,8 +256,10 @@ static void rows_row(void *acc, const gw_sweep_config *cfg, long k, const double
         a->moved += ch > 0;
         a->costly += ch == -1;
         a->failed += ch == -2;
-        if (ch > 0)
+        if (ch > 0) {
             a->spread_hi = fmax(a->spread_hi, ch);
+            a->rerun |= case_rk4(cfg, k) ? CHAIN_RERUN_STEP : CHAIN_RERUN_TOL;
+        }
     }
     /* a case with energy-tol on stopped at its bound; one below it ran on */
     if (ee > GW_CHAIN_ENERGY_WARN && !(case_energy_tol(cfg, k) > 0)) {
@@ -258,7 +278,7 @@ static int rows_warnings(const void *acc, const gw_sweep_config *cfg, char **lis
     char first[80];
     gw_snprintf(first, sizeof first, "; the first, case %ld; their chatter column", a->chatter_first);
     return rc == GW_OK ? chain_chatter_cases_warning(a->moved, a->costly, a->failed, a->total, 0, a->spread_hi, 0,
-                                                     "cases", first, list)
+                                                     a->rerun, "cases", first, list)
                        : rc;
 }
 

@@ -124,6 +124,9 @@ int chain_energy_cases_warning(long n, long total, double hi, long first, char *
  * of eps_eff a rerun at tighter tolerances measured, -1 a run too costly to
  * run again (its spread unmeasured), -2 one whose rerun failed. */
 double chain_result_chatter_value(const gw_chain_result *r);
+/* A chatter's kind (GW_CHAIN_CHATTER_*) and spread as that number (a drop's
+ * own, gw_chain_drop_result's chatter_kind and chatter_spread). */
+double chain_chatter_value(int kind, double spread);
 /* A stored trace that stopped at its bound (5 GB of files) while the run went
  * on past its last row (chain_trace_cut, chain_trace.c): a warning giving where
  * it stops and naming dt_name (NULL: "--dt-out"); nothing when not cut. */

@@ -333,19 +333,18 @@ void chain_dt_tally_overlap(chain_dt_tally *t, double overlap_rel)
     t->overlap_over++;
 }
 
-/* A run's chatter on a sensor body (chain_result_chatter_info) into t */
+/* A run's chatter on a sensor body (its chatter_kind) into t */
 static void tally_chatter(chain_dt_tally *t, const gw_chain_result *r)
 {
-    chain_chatter_info c;
-    const int kind = chain_result_chatter_info(r, &c);
-    if (kind == CHAIN_CHATTER_NONE)
+    const int kind = r->chatter_kind;
+    if (kind <= GW_CHAIN_CHATTER_NONE || kind > GW_CHAIN_CHATTER_FAILED)
         return;
     t->chatter[kind]++;
-    t->chatter_contacts = c.contacts > t->chatter_contacts ? c.contacts : t->chatter_contacts;
-    if (kind == CHAIN_CHATTER_MOVED)
-        t->chatter_spread = fmax(t->chatter_spread, c.spread);
-    if (kind == CHAIN_CHATTER_COSTLY)
-        t->chatter_work = fmax(t->chatter_work, c.work);
+    t->chatter_contacts = r->wall_contacts > t->chatter_contacts ? r->wall_contacts : t->chatter_contacts;
+    if (kind == GW_CHAIN_CHATTER_MOVED)
+        t->chatter_spread = fmax(t->chatter_spread, r->chatter_spread);
+    if (kind == GW_CHAIN_CHATTER_COSTLY)
+        t->chatter_work = fmax(t->chatter_work, (double)r->stats.steps * r->n);
 }
 
 void chain_dt_tally_results(chain_dt_tally *t, const gw_chain_result *res, long n)
@@ -357,14 +356,21 @@ void chain_dt_tally_results(chain_dt_tally *t, const gw_chain_result *res, long 
     }
 }
 
+void chain_chatter_text(char *buf, size_t size, int contacts, const char *where, const char *ending)
+{
+    gw_snprintf(buf, size, "bead 1 chattered on the sensor body (its wall contact closed %d times%s): the chatter "
+                "amplifies the integration's error, %s", contacts, where ? where : "", ending ? ending : "");
+}
+
 /* The runs of a study whose bead 1 chattered on the sensor body, in one line
  * with their count (each said its own in the single run's warnings, which a
  * study dropped: falcon, wavespeed and softwall ran the cheap ones again and
  * said nothing of what the reruns measured, nor of the costly ones). first:
  * "" or "; the first, case K" of a sweep; moved, costly, failed: the counts
- * by kind. GW_OK or GW_ENOMEM. */
+ * by kind; rerun: what the moved ones' reruns changed (CHAIN_RERUN_*: a
+ * study under cvode was told "(rk4: half the step)" too). GW_OK or GW_ENOMEM. */
 int chain_chatter_cases_warning(long moved, long costly, long failed, long total, int contacts, double spread,
-                                double work, const char *what, const char *first, char **list)
+                                double work, int rerun, const char *what, const char *first, char **list)
 {
     const long n = moved + costly + failed;
     if (n <= 0)
@@ -373,14 +379,17 @@ int chain_chatter_cases_warning(long moved, long costly, long failed, long total
     if (contacts > 0) /* a sweep's rows hold no count of contacts */
         gw_snprintf(up, sizeof up, "up to %d wall contacts", contacts);
     if (moved > 0)
-        gw_snprintf(a, sizeof a, "; in %ld a rerun at 10 times tighter tolerances (rk4: half the step) moved "
-                    "eps_eff by up to %.3g", moved, spread);
+        gw_snprintf(a, sizeof a, "; in %ld a rerun at %s moved eps_eff by up to %.3g", moved,
+                    rerun == CHAIN_RERUN_STEP  ? "half rk4's step"
+                    : rerun == CHAIN_RERUN_TOL ? "10 times tighter tolerances"
+                                               : "10 times tighter tolerances (under rk4: half the step)",
+                    spread);
     if (costly > 0 && work > 0)
         gw_snprintf(b, sizeof b, "; %ld too costly to run again (up to %.3g steps times beads, above %.3g), their "
-                    "spread unmeasured", costly, work, CHAIN_CHATTER_WORK);
+                    "spread unmeasured", costly, work, GW_CHAIN_CHATTER_WORK);
     else if (costly > 0) /* a sweep's rows: the steps alone */
         gw_snprintf(b, sizeof b, "; %ld too costly to run again (steps times beads above %.3g), their spread "
-                    "unmeasured", costly, CHAIN_CHATTER_WORK);
+                    "unmeasured", costly, GW_CHAIN_CHATTER_WORK);
     if (failed > 0)
         gw_snprintf(c, sizeof c, "; %ld whose rerun failed", failed);
     return gw_warnings_add(list,
@@ -394,9 +403,10 @@ int chain_chatter_cases_warning(long moved, long costly, long failed, long total
 
 static int tally_chatter_warning(const chain_dt_tally *t, const char *what, char **list)
 {
-    return chain_chatter_cases_warning(t->chatter[CHAIN_CHATTER_MOVED], t->chatter[CHAIN_CHATTER_COSTLY],
-                                       t->chatter[CHAIN_CHATTER_FAILED], t->total, t->chatter_contacts,
-                                       t->chatter_spread, t->chatter_work, what, "", list);
+    const int rerun = !t->solver ? CHAIN_RERUN_BOTH : t->solver == gw_solver_rk4 ? CHAIN_RERUN_STEP : CHAIN_RERUN_TOL;
+    return chain_chatter_cases_warning(t->chatter[GW_CHAIN_CHATTER_MOVED], t->chatter[GW_CHAIN_CHATTER_COSTLY],
+                                       t->chatter[GW_CHAIN_CHATTER_FAILED], t->total, t->chatter_contacts,
+                                       t->chatter_spread, t->chatter_work, rerun, what, "", list);
 }
 
 /* The runs of a study pressed beyond one radius (overlap_warning's line, with
@@ -616,7 +626,46 @@ int gw_chain_dispersion_warnings(const gw_chain_disp_result *r, char **list)
 
 int gw_chain_drop_result_warnings(const gw_chain_drop_result *r, char **list)
 {
-    return chain_drop_warnings(r, NULL, list);
+    return chain_drop_warnings(r, NULL, NULL, list);
+}
+
+/* The drop's chatter on a sensor body (gw_chain_drop_result's chatter_kind),
+ * in chain's one text; o the run's settings (NULL: the rerun named by its
+ * rule, rk4's or the tolerances') */
+static int drop_chatter_warning(const gw_chain_drop_result *r, const gw_chain_run_opts *o, char **list)
+{
+    const int kind = r->chatter_kind;
+    if (kind <= GW_CHAIN_CHATTER_NONE || kind > GW_CHAIN_CHATTER_FAILED)
+        return GW_OK;
+    char how[96] = "10 times tighter tolerances (under rk4: half the step)",
+         flags[96] = "10 times tighter --rtol and --atol (under rk4: half the step)";
+    if (o) {
+        gw_solver_params sp = o->sp;
+        chain_chatter_rerun(o->solver ? o->solver : gw_solver_cvode, r->run_dt, &sp, how, sizeof how, flags,
+                            sizeof flags);
+    }
+    char where[48], ending[512], text[CHAIN_CHATTER_TEXT + 64];
+    gw_snprintf(where, sizeof where, " in %.6g ms", r->t_end * 1e3);
+    const char *less = "a stiffer, heavier or damped sensor body (--sensor-stiffness, --sensor-mass, --sensor-damping) "
+                       "chatters less";
+    if (kind == GW_CHAIN_CHATTER_COSTLY)
+        gw_snprintf(ending, sizeof ending, "so that the impacts, their peaks and the energy ledger move with dt-out "
+                    "and the tolerances, and this drop (%.3g steps times %d bodies, above the %.3g a rerun is made "
+                    "within) was not run again to measure by how much: compare a run at %s; %s",
+                    (double)r->stats.steps, r->n, GW_CHAIN_CHATTER_WORK, flags, less);
+    else if (kind == GW_CHAIN_CHATTER_MOVED && r->chatter_spread >= 1)
+        gw_snprintf(ending, sizeof ending, "and a rerun at %s gave other impacts (their count or contact episodes "
+                    "differ): the impacts, their peaks and the energy ledger are one of the chatter's outcomes, "
+                    "and move with dt-out and the tolerances (each impact's chatter: the change of its F_max); %s",
+                    how, less);
+    else if (kind == GW_CHAIN_CHATTER_MOVED)
+        gw_snprintf(ending, sizeof ending, "and a rerun at %s changed the impacts' F_max by up to %.3g of their "
+                    "value (each impact's chatter): the impacts, their peaks and the energy ledger are uncertain "
+                    "by that much, and move with dt-out and the tolerances; %s", how, r->chatter_spread, less);
+    else
+        gw_snprintf(ending, sizeof ending, "and its rerun at %s failed, the spread unmeasured; %s", how, less);
+    chain_chatter_text(text, sizeof text, r->n_episodes, where, ending);
+    return gw_warnings_add(list, "%s", text);
 }
 
 /* Bead 1 at rest on the sensor at the run's end: the column's kinetic energy
@@ -630,13 +679,19 @@ static int drop_at_rest(const gw_chain_drop_result *r)
     return r->open_at_t_max && r->e0 > 0 && r->e_end.kinetic < 1e-6 * r->e0;
 }
 
-int chain_drop_warnings(const gw_chain_drop_result *r, const gw_chain_params *p, char **list)
+int chain_drop_warnings(const gw_chain_drop_result *r, const gw_chain_params *p, const gw_chain_run_opts *o,
+                        char **list)
 {
     if (!r)
         return GW_OK;
     int rc = dt_warning(r->run_dt_given, r->run_dt, r->run_dt_max, list);
     if (rc == GW_OK)
         rc = overlap_warning(&r->first, list); /* the first collision, the drop's hardest */
+    const char *first = chain_result_chatter(&r->first); /* the first collision's, checked as chain's */
+    if (rc == GW_OK && first[0])
+        rc = gw_warnings_add(list, "the first collision: %s", first);
+    if (rc == GW_OK)
+        rc = drop_chatter_warning(r, o, list);
     if (rc != GW_OK || !(r->first_cut || r->open_at_t_max))
         return rc;
     if (drop_at_rest(r)) {

@@ -168,7 +168,7 @@ typedef struct gw_chain_collision {
     double gamma, alpha;                  /* the damping constants run (calibrated with
                                              restitution): N s/m^1.5, s/m */
     char *warnings;                       /* gw_chain_result_warnings of r (owned; NULL: none) */
-    double chatter;                       /* bead 1's chatter on a sensor body, as chain --json's
+    double chatter;                       /* r.chatter_kind and r.chatter_spread as chain --json's
                                              "chatter": 0 none, the eps_eff spread a rerun
                                              measured, -1 not run again, -2 the rerun failed */
 } gw_chain_collision;
@@ -601,6 +601,10 @@ typedef struct gw_chain_drop_outcome {
     double *x, *v;           /* [trace_len x n] m, m/s (setup trace = 1), else NULL */
     int canceled;            /* 1: stopped by the progress callback (at r.t_end, or in the first collision's own run) */
     char *warnings;          /* gw_chain_drop_result_warnings of r (owned; NULL: none) */
+    double chatter;          /* r.chatter_kind and r.chatter_spread as drop --json's "chatter": 0 none,
+                                the impacts' largest F_max change a rerun measured, -1 not run again,
+                                -2 the rerun failed */
+    double first_chatter;    /* the first collision's, as chain's (NaN: not checked, cut at t_max) */
 } gw_chain_drop_outcome;
 
 const gw_param *gw_chain_drop_setup_params(void);

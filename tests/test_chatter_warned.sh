@@ -15,9 +15,15 @@
 #    says nothing.
 #  3 A chain sweep's cases: a chatter column (the spread a rerun measured, -1
 #    not run again) and one warning line over the rows.
-#    drop's first collision is not checked: its --json has no chatter key.
+#    drop's contact episodes were not checked (44 in 10 ms on 1e-4 kg, no
+#    word): they are, as chain's collisions (a rerun at 10 times tighter
+#    tolerances, the impacts' F_max compared; rk4's costly drop named), with a
+#    chatter key at the top, in first_collision and in each impact run again.
+#    A study's and a sweep's line names the rerun of the solver run (under
+#    cvode it said "(rk4: half the step)" too).
 #  4 Python: chain's result and a study's carry the line (their keywords) and
-#    chain's the chatter value, a sweep's result the chatter column and the line.
+#    chain's the chatter value, a sweep's result the chatter column and the line,
+#    drop's the line and its chatter values.
 # About 16 s of CPU (softwall's 23 collisions the most).
 # Checks that fail on the code before: see docs/tests.md.
 # shellcheck source=refusal_lib.sh
@@ -105,17 +111,64 @@ else
     ko "  sweep: $(nlines s.err) lines: $(head -c 300 s.err)"
 fi
 
-# --- 3b drop: its first collision is not checked for chatter, so its --json
-# first_collision has no chatter key (a 0 there would say "none" unlooked)
+# --- 3b drop: its contact episodes checked as chain's collisions (44 in 10 ms
+# on 1e-4 kg said nothing); its first collision checked as chain's, with the
+# chatter key in first_collision, at the top and in each impact run again
 cpu_run 60 "$GW" drop --n 2 --json --quiet >d.json 2>d.err
-if /usr/bin/python3 -c "import json,sys; f=json.load(open('d.json'))['first_collision']; sys.exit(not ('chatter' not in f and 'wall_contacts' in f))"; then
-    ok "3 drop: first_collision has wall_contacts but no chatter key"
+if /usr/bin/python3 -c "import json,sys; d=json.load(open('d.json')); f=d['first_collision']
+sys.exit(not (f.get('chatter') == 0 and d.get('chatter') == 0 and all('chatter' not in i for i in d['impacts'])))" &&
+    [ "$(nlines d.err)" = 0 ]; then
+    ok "3 drop on a rigid sensor: chatter 0 at the top and in first_collision (checked), none in the impacts, no line"
 else
-    ko "3 drop: first_collision: $(head -c 300 d.json) $(head -c 200 d.err)"
+    ko "3 drop on a rigid sensor: $(head -c 300 d.json) $(head -c 200 d.err)"
+fi
+# shellcheck disable=SC2086
+cpu_run 60 "$GW" drop --n 3 $S --json --quiet >d4.json 2>d4.err
+dch=$(/usr/bin/python3 -c "
+import json
+d = json.load(open('d4.json'))
+c = [i.get('chatter') for i in d['impacts']]
+w = [x for x in d.get('warnings', []) if 'chattered on the sensor body' in x]
+print(d.get('chatter'), d['first_collision'].get('chatter'), len(c), sum(x is not None for x in c),
+      max([x for x in c if x is not None] or [0]), len(w), d['n_contact_episodes'])" 2>/dev/null)
+read -r dtop dfirst nimp nchk dmax dw neps <<<"$dch"
+if [ "$(nlines d4.err)" = 1 ] && [ "$dw" = 1 ] && grep -qF "its wall contact closed $neps times in 10 ms" d4.err &&
+    grep -qF "a rerun at rtol 1e-13, atol 1e-13 changed the impacts' F_max by up to" d4.err &&
+    grep -qF -- "--sensor-stiffness, --sensor-mass, --sensor-damping" d4.err; then
+    ok "3 drop on 1e-4 kg: one chatter line on stderr and in --json: $(grep -o 'closed [0-9]* times[^:]*' d4.err)"
+else
+    ko "3 drop on 1e-4 kg: $(nlines d4.err) lines on stderr, '$dw' in --json: $(head -c 300 d4.err)"
+fi
+if awk -v t="$dtop" -v m="$dmax" -v f="$dfirst" -v n="$nimp" -v c="$nchk" \
+    'BEGIN { exit !(t > 1e-6 && t == m && f == 0 && n > 10 && c == n) }'; then
+    ok "  drop --json: chatter $dtop (the largest of the $nchk impacts' chatter), first_collision's $dfirst"
+else
+    ko "  drop --json: chatter '$dtop', impacts' largest '$dmax', $nchk of $nimp impacts with the key, first '$dfirst'"
+fi
+# shellcheck disable=SC2086
+cpu_run 60 "$GW" drop --n 3 $S --solver rk4 --json --quiet >d5.json 2>d5.err
+if [ "$(nlines d5.err)" = 1 ] && grep -qF "was not run again" d5.err && grep -qF "compare a run at --dt " d5.err &&
+    [ "$(jwarn d5.json | sed -n 1p)" = "1 -1" ]; then
+    ok "3 drop rk4 on 1e-4 kg (costly): one line naming --dt, --json chatter -1"
+else
+    ko "3 drop rk4: $(nlines d5.err) lines, --json '$(jwarn d5.json | sed -n 1p)': $(head -c 300 d5.err)"
+fi
+
+# --- 3c the reruns named by the solver run: a study under cvode was told
+# "(rk4: half the step)" too
+if grep -qF "a rerun at 10 times tighter tolerances moved eps_eff" falcon.err && ! grep -q "rk4" falcon.err; then
+    ok "3 falcon under cvode: 'a rerun at 10 times tighter tolerances', no rk4"
+else
+    ko "3 falcon under cvode: $(grep -o 'in [0-9]* a rerun at[^;]*' falcon.err)"
+fi
+if grep -qF "in 1 a rerun at 10 times tighter tolerances moved eps_eff" s.err && ! grep -q "rk4" s.err; then
+    ok "3 sweep (the moved case under cvode): no rk4 in its rerun"
+else
+    ko "3 sweep: $(grep -o 'in [0-9]* a rerun at[^;]*' s.err)"
 fi
 
 # --- 4 Python
-py_checks 3 <<'PY'
+py_checks 4 <<'PY'
 r, ws = caught(granwave.chain, n=5, sensor_mass=1e-4, sensor_stiffness=1e3, solver="rk4")
 w = [m for m in ws if "chattered on the sensor body" in m]
 check(len(w) == 1 and "was not run again" in w[0] and "sensor_stiffness" in w[0] and
@@ -131,6 +184,12 @@ r, ws = caught(granwave.sweep, "chain", grid={"n": [2, 5]}, solver="rk4", sensor
 w = [m for m in r["warnings"] if "chattered on the sensor body" in m]
 check(list(r.get("chatter", [])) == [-1, -1] and len(w) == 1 and "in 2 of 2 cases" in w[0],
       "4 Python sweep: the chatter column %s, one line: %s" % (list(r.get("chatter", [])), [m[:100] for m in w]))
+r, ws = caught(granwave.drop, n=3, sensor_mass=1e-4, sensor_stiffness=1e3)
+w = [m for m in ws if "chattered on the sensor body" in m]
+check(len(w) == 1 and "times in 10 ms" in w[0] and r.get("chatter", 0) > 1e-6 and
+      r["first_collision"].get("chatter") == 0,
+      "4 Python drop: one chatter warning, chatter %s as --json's, first_collision's %s: %s"
+      % (r.get("chatter"), r["first_collision"].get("chatter"), [m[:100] for m in w]))
 PY
 
 test_summary test_chatter_warned

@@ -6,7 +6,9 @@
  *    word. The result's warnings now name the chatter (its wall contacts) and
  *    the eps_eff of a rerun at tolerances 10 times tighter beside the run's,
  *    whose difference is the spread measured; a column on a rigid sensor, and
- *    a body whose rerun agrees, say nothing.
+ *    a body whose rerun agrees, say nothing. The kind and the spread are the
+ *    result's public members chatter_kind and chatter_spread (they were kept
+ *    in a hidden tail after the velocities, freed with them).
  * 2. The stored trace's bound (5 GB of files) was checked before the run over
  *    the collision's expected length, but a default run that has not ended
  *    there goes on (up to 50 default t-max) and stored every row: with the
@@ -103,14 +105,28 @@ int main(void)
     gw_test_rel(e_rerun, r13.eps_eff, 1e-5, "chatter: the warning's rerun eps_eff is the run at 1e-13's");
     GW_TEST_OK(fabs(r13.eps_eff - r.eps_eff) > 1e-4,
                  "chatter: the spread is real (eps_eff %.6g at 1e-12, %.6g at 1e-13)", r.eps_eff, r13.eps_eff);
+    /* the kind and spread are the result's public members (they were kept in
+     * a hidden tail of the velocities' allocation, read by internal calls) */
+    GW_TEST_OK(r.chatter_kind == GW_CHAIN_CHATTER_MOVED, "chatter: the result's chatter_kind is MOVED (%d)",
+               r.chatter_kind);
+    gw_test_rel(r.chatter_spread, fabs(r13.eps_eff - r.eps_eff), 1e-6,
+                "chatter: the result's chatter_spread is |eps_eff - the rerun's|");
     gw_chain_result_free(&r13);
     gw_chain_result_free(&r);
+    GW_TEST_OK(r.chatter_kind == GW_CHAIN_CHATTER_MOVED && chain_result_chatter_value(&r) == r.chatter_spread,
+               "chatter: the kind and spread outlive gw_chain_result_free (members, not the freed tail): %g",
+               chain_result_chatter_value(&r));
+    /* a result filled by hand: its members are what it says */
+    gw_chain_result hand = {.n = 1, .chatter_kind = GW_CHAIN_CHATTER_COSTLY};
+    GW_TEST_OK(chain_result_chatter_value(&hand) == -1, "a result filled by hand, kind COSTLY: chatter -1 (%g)",
+               chain_result_chatter_value(&hand));
     free(w);
     w = NULL;
 
     /* a rigid sensor (one wall contact) and a chatter whose rerun agrees: nothing */
-    GW_TEST_OK(run(test_params(5, 0.3), &o, &r, &w) == GW_OK && !(w && strstr(w, "chattered")),
-                 "rigid sensor: no chatter warning");
+    GW_TEST_OK(run(test_params(5, 0.3), &o, &r, &w) == GW_OK && !(w && strstr(w, "chattered")) &&
+                   r.chatter_kind == GW_CHAIN_CHATTER_NONE && r.chatter_spread == 0,
+                 "rigid sensor: no chatter warning, chatter_kind NONE");
     gw_chain_result_free(&r);
     free(w);
     w = NULL;

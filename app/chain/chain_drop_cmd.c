@@ -16,6 +16,7 @@
 
 #include "gw_cli.h"
 #include "chain_options.h"
+#include "chain_wall.h"
 
 static const char *drop_summary =
     "The whole drop (Falcon et al. 1998, Fig. 12): a column of N beads released from\n"
@@ -185,6 +186,8 @@ static cJSON *result_json(const drop_cli *d, const gw_chain_drop_result *r, doub
         cJSON_AddNumberToObject(e, "n_peaks", im->n_peaks);
         cJSON_AddNumberToObject(e, "cluster", im->cluster);
         cJSON_AddBoolToObject(e, "located", im->located);
+        if (!isnan(im->chatter)) /* the drop's chatter check ran it again: its F_max's relative change */
+            cJSON_AddNumberToObject(e, "chatter", im->chatter);
         cJSON_AddItemToArray(imp, e);
     }
     cJSON *pk = cJSON_AddArrayToObject(o, "wall_peaks");
@@ -200,10 +203,15 @@ static cJSON *result_json(const drop_cli *d, const gw_chain_drop_result *r, doub
         cJSON_AddItemToArray(pk, e);
     }
     cJSON *first = chain_result_json(c, &r->first, NAN);
-    /* the drop's first collision is not checked for chatter on a sensor body:
-     * its chatter key would read "none" (0) without having looked */
-    cJSON_DeleteItemFromObject(first, "chatter");
+    /* the first collision is checked for chatter on a sensor body as chain's
+     * when it ran to its end (first_status GW_OK); cut at t_max it was not,
+     * and its chatter key would read "none" (0) without having looked */
+    if (r->first_status != GW_OK)
+        cJSON_DeleteItemFromObject(first, "chatter");
     cJSON_AddItemToObject(o, "first_collision", first);
+    /* the drop's own, over its contact episodes: 0 none, the impacts' largest
+     * F_max change a rerun measured, -1 not run again (costly), -2 its rerun failed */
+    cJSON_AddNumberToObject(o, "chatter", chain_chatter_value(r->chatter_kind, r->chatter_spread));
     cJSON_AddNumberToObject(o, "energy_error", r->energy_error);
     cJSON *en = cJSON_AddObjectToObject(o, "energy");
     cJSON_AddNumberToObject(en, "e0", r->e0);

@@ -261,6 +261,8 @@ def drop(*, progress=None, **kwargs):
     first = {"n": r.pop("n_first"), "v_imp": r["v_imp"]}
     for k in [k for k in r if k.startswith("first_")]:
         first[k[len("first_"):]] = r.pop(k)
+    if _np.isnan(first.get("chatter", 0.0)):  # not checked (cut at t_max): no key, as drop --json
+        del first["chatter"]
     r["first_collision"] = first
     r["energy"] = {"e0": r.pop("e0")}
     for k in ("kinetic", "elastic", "gravity", "dissipated", "total"):

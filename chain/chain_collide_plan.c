@@ -16,7 +16,6 @@
 #include <string.h>
 
 #include "gw_chain.h"
-#include "gw_chain_study.h"
 #include "chain_model.h"
 #include "chain_collide_impl.h"
 #include "gw_locale.h"
@@ -923,21 +922,6 @@ static int plan_make(const gw_chain_params *p0, const gw_chain_run_opts *o, coll
      * after the stored trace's bound, which names what --out would write) */
     if ((rc = chain_sampling_check(n, pl->t_expect, pl->dt_out, o->dt_out > 0, over, rides ? why : NULL, err)) != GW_OK)
         return rc;
-    /* A column's work grows as N^2 (N beads, steps over a collision of N
-     * transits): the studies' bound (GW_CHAIN_STUDY_WORK_MAX, N = 1414 over
-     * a whole collision, 8 to 15 min) holds for one column too, over the
-     * share of its collision the run covers (t_expect / t_col: a short
-     * t-max runs the start of a long column); after the bounds that name
-     * dt-out and the trace, which a smaller N would not lift. Before the
-     * fifty-first pass one column was bounded by its memory alone: chain --n
-     * 100000 (a collision of 2.5 s) ran, its progress saying 6e5 s left
-     * (N = 400 took 15.5 s of CPU, 1000 more than 120 s) */
-    const double share = t_col > 0 ? fmin(1.0, pl->t_expect / t_col) : 1.0, work = (double)n * n * share;
-    if (!(work <= GW_CHAIN_STUDY_WORK_MAX))
-        return gw_err_set(err, GW_EINVAL, "n: a column of %d beads over %s (about %.3g s) is %.4g bead^2 of work (N^2 "
-                          "times the share of the collision run), above the bound %.0e of the studies (N = %.0f over a "
-                          "whole collision, 8 to 15 min): lower n, or t-max to run only the collision's start",
-                          n, over, pl->t_expect, work, GW_CHAIN_STUDY_WORK_MAX, floor(sqrt(GW_CHAIN_STUDY_WORK_MAX)));
     if (!whole)
         return GW_OK;
     /* A run that does not end (a column held on the wall by gravity and damping,

@@ -19,11 +19,6 @@
 #    while files are placed and handled to remove the temporaries and the
 #    directories made, the process still ending by the signal. Controls:
 #    SIGTERM (handled before) leaves nothing, and a run left alone writes.
-#  3 One column's work was bounded by its memory alone (chain --n 100000:
-#    days, its progress saying 6e5 s left; N = 400 took 15.5 s of CPU): the
-#    studies' bound, N^2 at most 2e6, holds for one column over the share of
-#    its collision it runs (the plan's check: chain, drop's first collision,
-#    sweeps, Python). Control: --n 100000 --t-max 1e-5 runs.
 # Checks that fail on the code before: see docs/tests.md.
 # shellcheck source=refusal_lib.sh
 . "$(dirname "${BASH_SOURCE[0]}")/refusal_lib.sh"
@@ -127,27 +122,5 @@ rm -rf NEW
 cpu_run 60 "$GW" layer-impact --sample s40 --out NEW/a --quiet >/dev/null 2>&1 && [ -s NEW/a/snapshot_0.vtk ] &&
     [ -z "$(compgen -G 'NEW/a/*.tmp.*')" ] && ok "control: the run left alone writes NEW/a" ||
     ko "control: layer-impact --out NEW/a"
-
-# 3 one column's work: bounded as a study's (N^2 at most 2e6 over the share
-# of its collision run); chain --n 100000 ran for days (its progress line said
-# 6e5 s left), bounded by its memory alone
-refused "chain --n 100000 refused by the column's work, naming n" \
-    "^granwave chain --n: a column of 100000 beads over the collision \\(about 2\\.5 s\\) is 1e\\+10 bead\\^2 of work" \
-    chain --n 100000 --quiet
-refused "chain --n 1415 (just above N = 1414) refused" "^granwave chain --n: a column of 1415 beads" chain --n 1415 --quiet
-py_checks 1 <<'PYEOF'
-import signal
-def alarm(*_):
-    raise TimeoutError("still running after 20 s")
-signal.signal(signal.SIGALRM, alarm)
-signal.alarm(20)  # the code before ran it for days
-refused("Python chain(n=100000) refused naming n", ("n: a column of 100000 beads", "bead^2 of work"), granwave.chain,
-        n=100000)
-PYEOF
-cpu_run 20 "$GW" chain --n 100000 --t-max 1e-5 --quiet >/dev/null 2>long.err </dev/null
-rc=$?
-[ $rc -eq 1 ] && grep -q "still on the wall at t_max = 1e-05 s" long.err &&
-    ok "control: chain --n 100000 --t-max 1e-5 (the collision's start) runs, to its t-max" ||
-    ko "control: chain --n 100000 --t-max 1e-5: exit $rc, $(head -c 300 long.err)"
 
 test_summary test_hostile_fiftyfirst

@@ -279,7 +279,9 @@ void gw_outset_abort(gw_outset *s);
  * directory then holds the complete new set, and before it, the earlier
  * files as they were. */
 void gw_temps_remove(void);
-/* Install, for SIGINT, SIGTERM and SIGHUP where each has its default action
+/* Install, for SIGHUP, SIGINT, SIGQUIT, SIGTERM, SIGUSR1, SIGUSR2, SIGALRM,
+ * SIGVTALRM, SIGPROF and SIGXCPU (the signals that end a process by default
+ * and that a user or the system sends it) where each has its default action
  * (a signal ignored, or with a handler of the program's, is left as it is), a
  * handler that calls gw_temps_remove and then ends the process by the signal's
  * default action (the exit status still says "killed by SIGINT"); while an

@@ -33,15 +33,16 @@
 
 _Static_assert(sizeof(sigset_t) <= sizeof(((gw_afile *)0)->oldmask), "sigset_t does not fit");
 
-/* SIGINT, SIGTERM and SIGHUP held on this thread (the mask before in old,
- * *masked set when it was), and given back */
+/* The signals that end the process (gw_io_end_signals) held on this thread
+ * (the mask before in old, *masked set when it was), and given back */
 void gw_io_sig_hold(unsigned char *old, int *masked)
 {
     sigset_t s;
+    size_t n;
+    const int *sigs = gw_io_end_signals(&n);
     sigemptyset(&s);
-    sigaddset(&s, SIGINT);
-    sigaddset(&s, SIGTERM);
-    sigaddset(&s, SIGHUP);
+    for (size_t k = 0; k < n; k++)
+        sigaddset(&s, sigs[k]);
     *masked = pthread_sigmask(SIG_BLOCK, &s, (sigset_t *)(void *)old) == 0;
 }
 

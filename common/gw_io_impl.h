@@ -16,7 +16,17 @@
 
 #include "gw_common.h"
 
-/* SIGINT, SIGTERM and SIGHUP held on this thread (the mask before in old, a
+/* The signals whose default action ends the process and that a user or the
+ * system sends a run (the terminal's, kill's, timers', the CPU limit's):
+ * SIGHUP, SIGINT, SIGQUIT, SIGTERM, SIGUSR1, SIGUSR2, SIGALRM, SIGVTALRM,
+ * SIGPROF and SIGXCPU, *n of them. The file layer holds them while it
+ * places files (gw_io_sig_hold) and gw_temps_on_signals handles them. Before
+ * the fifty-first pass this was SIGINT, SIGTERM and SIGHUP alone: `kill
+ * -USR1` or SIGALRM left layer-impact's staged snapshot_0.vtk.tmp.HOST.PID.X
+ * and the --out it had made. */
+const int *gw_io_end_signals(size_t *n);
+
+/* The signals of gw_io_end_signals held on this thread (the mask before in old, a
  * sigset_t; *masked set when it was), and given back. */
 void gw_io_sig_hold(unsigned char *old, int *masked);
 void gw_io_sig_release(unsigned char *old, int *masked);

@@ -339,6 +339,27 @@ static int sticky_refused(const char *path, const char *target, const char *what
     return GW_OK;
 }
 
+/* GW_EINVAL when target (the file path writes) is the file the process's
+ * standard output or standard error writes to (one inode; a link such as
+ * /dev/stdout, /proc/self/fd/1 or a hard link leads there too): the run's
+ * rename would replace it, and its summary and warnings, written after,
+ * went to the replaced file and were lost with exit 0 (`chain --out d >
+ * d/chain.json`, `layer-make --out /dev/stdout > s.txt`; the fifty-first
+ * pass). A stream that is closed or no regular file is no such file. */
+static int std_stream_refused(const char *path, const char *target, const char *what, gw_err *err)
+{
+    struct stat st, ss;
+    if (stat(target, &st) != 0 || !S_ISREG(st.st_mode))
+        return GW_OK;
+    static const char *const names[] = {"standard output", "standard error"};
+    for (int fd = 1; fd <= 2; fd++)
+        if (fstat(fd, &ss) == 0 && S_ISREG(ss.st_mode) && ss.st_dev == st.st_dev && ss.st_ino == st.st_ino)
+            return gw_err_set(err, GW_EINVAL, "%s: '%s' is the file this run's %s is written to: the run would "
+                              "replace it, and what it prints there would be lost; give another file or send "
+                              "the %s elsewhere", what, path, names[fd - 1], names[fd - 1]);
+    return GW_OK;
+}
+
 static int temp_name_fits(const char *path, const char *dir, const char *what, gw_err *err);
 
 int gw_out_file_check(const char *path, const char *what, gw_err *err)
@@ -361,6 +382,8 @@ int gw_out_file_check(const char *path, const char *what, gw_err *err)
     int rc = gw_io_write_target(path, target, sizeof target, what, err);
     if (rc == GW_OK)
         rc = sticky_refused(path, target, what, err);
+    if (rc == GW_OK)
+        rc = std_stream_refused(path, target, what, err);
     if (rc != GW_OK)
         return rc;
     path = target;
@@ -488,7 +511,8 @@ int gw_out_names_check(const char *dir, const char *const *names, const char *wh
         /* a link: the temporary goes beside its target */
         if (strcmp(target, p) != 0 && temp_fits(target, p, names[k], what, err) != GW_OK)
             return GW_EINVAL;
-        if ((rc = sticky_refused(p, target, what, err)) != GW_OK)
+        if ((rc = sticky_refused(p, target, what, err)) != GW_OK ||
+            (rc = std_stream_refused(p, target, what, err)) != GW_OK)
             return rc;
     }
     return GW_OK;

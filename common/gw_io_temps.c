@@ -367,13 +367,23 @@ static void temps_once(void)
     pthread_atfork(NULL, NULL, placing_fork_child);
 }
 
+static const int end_signals[] = {SIGHUP,  SIGINT,    SIGQUIT, SIGTERM, SIGUSR1,
+                                  SIGUSR2, SIGALRM, SIGVTALRM, SIGPROF, SIGXCPU};
+
+const int *gw_io_end_signals(size_t *n)
+{
+    *n = sizeof end_signals / sizeof end_signals[0];
+    return end_signals;
+}
+
 int gw_temps_on_signals(void)
 {
-    static const int sigs[] = {SIGINT, SIGTERM, SIGHUP};
+    size_t nsigs;
+    const int *sigs = gw_io_end_signals(&nsigs);
     static pthread_once_t once = PTHREAD_ONCE_INIT;
     pthread_once(&once, temps_once);
     int rc = GW_OK;
-    for (size_t k = 0; k < sizeof sigs / sizeof sigs[0]; k++) {
+    for (size_t k = 0; k < nsigs; k++) {
         struct sigaction old;
         if (sigaction(sigs[k], NULL, &old) != 0) {
             rc = GW_EIO;
@@ -387,7 +397,7 @@ int gw_temps_on_signals(void)
         memset(&sa, 0, sizeof sa);
         sa.sa_handler = on_signal;
         sigemptyset(&sa.sa_mask);
-        for (size_t j = 0; j < sizeof sigs / sizeof sigs[0]; j++) /* one removal at a time */
+        for (size_t j = 0; j < nsigs; j++) /* one removal at a time */
             if (j != k)
                 sigaddset(&sa.sa_mask, sigs[j]);
         /* SA_RESTART: a deferred signal returns to the thread it came to,

@@ -75,7 +75,7 @@ static const gw_param impact_params[] = {
     FLAG("remove-walls", remove_walls, "take the left, right and bottom walls away at the start of the impact"),
     /* one side wall taken away over the floor (the library's walls mask:
      * until session 44 no option removed one alone) */
-    CHOICE("side-walls", side_walls, "both,left,right,none", "both", "WHICH",
+    CHOICE("side-walls", side_walls, "both,left,right,none", "both", "KIND",
            "the side walls kept from the start of the impact, the floor kept: both, left (the right one taken "
            "away), right or none; a pile whose side walls help hold it is refused without both, and so is any "
            "but both with remove-walls [both]"),

@@ -206,36 +206,27 @@ typedef struct rows_acc {
     double spread_hi;
 } rows_acc;
 
-/* 1 when case k runs rk4 (its chatter's rerun halves the step; the others tighten the tolerances) */
-static int case_rk4(const gw_sweep_config *cfg, long k)
+/* Case k's solver and energy-tol as its run took them: *rk4 1 when it runs
+ * rk4 (its chatter's rerun halves the step; the others tighten the
+ * tolerances), *energy_tol 0 when off (the default). Read when a row needs
+ * them (a chatter moved, an energy error above the bound). */
+static void case_settings(const gw_sweep_config *cfg, long k, int *rk4, double *energy_tol)
 {
     const char *names[2 * GW_SWEEP_MAX_KEYS], *values[2 * GW_SWEEP_MAX_KEYS];
+    *rk4 = 0;
+    *energy_tol = 0;
     if (!cfg || gw_sweep_case(cfg, k, names, values) != GW_OK)
-        return 0;
+        return;
     gw_chain_setup s;
     gw_err e = {{0}};
     char name[16] = "";
-    int rk4 = 0;
-    if (prepare(&s, cfg->ngrid + cfg->nparams, names, values, &e) == GW_OK && s.solver >= 0 &&
-        gw_param_format(gw_param_find(gw_chain_setup_params(), "solver"), &s, name, sizeof name) > 0)
-        rk4 = strcmp(name, "rk4") == 0;
+    if (prepare(&s, cfg->ngrid + cfg->nparams, names, values, &e) == GW_OK) {
+        *energy_tol = s.energy_tol;
+        if (s.solver >= 0 &&
+            gw_param_format(gw_param_find(gw_chain_setup_params(), "solver"), &s, name, sizeof name) > 0)
+            *rk4 = strcmp(name, "rk4") == 0;
+    }
     gw_chain_setup_clear(&s);
-    return rk4;
-}
-
-/* case k's energy-tol, as its run took it (0: off; the default) */
-static double case_energy_tol(const gw_sweep_config *cfg, long k)
-{
-    const char *names[2 * GW_SWEEP_MAX_KEYS], *values[2 * GW_SWEEP_MAX_KEYS];
-    if (!cfg || gw_sweep_case(cfg, k, names, values) != GW_OK)
-        return 0;
-    gw_chain_setup s;
-    gw_err e = {{0}};
-    double tol = 0;
-    if (prepare(&s, cfg->ngrid + cfg->nparams, names, values, &e) == GW_OK)
-        tol = s.energy_tol;
-    gw_chain_setup_clear(&s);
-    return tol;
 }
 
 static void rows_row(void *acc, const gw_sweep_config *cfg, long k, const double *row)
@@ -243,6 +234,8 @@ static void rows_row(void *acc, const gw_sweep_config *cfg, long k, const double
     rows_acc *a = acc;
     a->total++;
     const double ov = row[COL_OVERLAP], ee = row[COL_ENERGY];
+    int rk4 = -1; /* (case_settings not read yet) */
+    double energy_tol = 0;
     if (ov > 1) {
         if (a->over++ == 0)
             a->over_first = k, a->over_hi = ov;
@@ -258,11 +251,14 @@ static void rows_row(void *acc, const gw_sweep_config *cfg, long k, const double
         a->failed += ch == -2;
         if (ch > 0) {
             a->spread_hi = fmax(a->spread_hi, ch);
-            a->rerun |= case_rk4(cfg, k) ? CHAIN_RERUN_STEP : CHAIN_RERUN_TOL;
+            case_settings(cfg, k, &rk4, &energy_tol);
+            a->rerun |= rk4 ? CHAIN_RERUN_STEP : CHAIN_RERUN_TOL;
         }
     }
     /* a case with energy-tol on stopped at its bound; one below it ran on */
-    if (ee > GW_CHAIN_ENERGY_WARN && !(case_energy_tol(cfg, k) > 0)) {
+    if (ee > GW_CHAIN_ENERGY_WARN && rk4 < 0)
+        case_settings(cfg, k, &rk4, &energy_tol);
+    if (ee > GW_CHAIN_ENERGY_WARN && !(energy_tol > 0)) {
         if (a->energy++ == 0)
             a->energy_first = k, a->energy_hi = ee;
         a->energy_hi = fmax(a->energy_hi, ee);

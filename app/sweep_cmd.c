@@ -731,83 +731,6 @@ static int dir_moved(const char *out, int dirfd, char *where, size_t n)
     return 1;
 }
 
-/* The cases of the table just written (results.csv in the sweep's held
- * directory dirfd) that did not end (gw_sweep_undecided_rows: the chain's
- * column converged 0, a collision held by gravity or cut at t-max), said in
- * one warning line, with --quiet too: a chain sweep wrote their nan rows, or
- * the values at t-max, with nothing said, where `granwave chain` warns of
- * each. Then the model's warnings over its rows (gw_sweep_rows_rule: a chain
- * case pressed beyond one radius, or with a large energy error), one line
- * each over the cases. Read back from the table, they count the cases of a
- * resume and of MPI ranks as well. */
-static void rows_warnings(int dirfd, const gw_sweep_config *cfg, const gw_sweep_model *m)
-{
-    int col = -1;
-    for (int j = 0; j < m->ncolumns; j++)
-        if (strcmp(m->columns[j], "converged") == 0)
-            col = j;
-    const gw_sweep_rows_rule *rule = gw_sweep_rows_rule_of(m->name);
-    const int fd = col < 0 && !rule ? -1 : openat(dirfd, "results.csv", O_RDONLY | O_CLOEXEC);
-    FILE *fp = fd >= 0 ? fdopen(fd, "r") : NULL;
-    double *row = malloc((size_t)m->ncolumns * sizeof *row);
-    void *acc = rule ? calloc(1, rule->acc_size) : NULL;
-    if (!fp || !row || (rule && !acc)) {
-        if (fp)
-            fclose(fp);
-        else if (fd >= 0)
-            close(fd);
-        free(row);
-        free(acc);
-        return;
-    }
-    char *line = NULL;
-    size_t cap = 0;
-    long n = 0, first = -1;
-    int head = 0; /* the header line passed: the rows follow */
-    /* a row: case, the grid's values (no comma in them), the model's columns, the hashes */
-    const int at = 1 + cfg->ngrid;
-    while (getline(&line, &cap, fp) > 0) {
-        line[strcspn(line, "\r\n")] = '\0';
-        if (line[0] == '#')
-            continue;
-        if (!head) {
-            head = 1;
-            continue;
-        }
-        int k = 0, got = 0;
-        const char *cell = line;
-        for (const char *p = line;; p++)
-            if (*p == ',' || *p == '\0') {
-                if (k >= at && k < at + m->ncolumns) {
-                    row[k - at] = gw_strtod(cell, NULL);
-                    got++;
-                }
-                if (*p == '\0' || got == m->ncolumns)
-                    break;
-                k++, cell = p + 1;
-            }
-        if (got != m->ncolumns)
-            continue; /* not a row the table writes: written by this sweep, it has none */
-        const long kc = strtol(line, NULL, 10);
-        if (col >= 0 && row[col] == 0 && n++ == 0)
-            first = kc;
-        if (rule)
-            rule->row(acc, cfg, kc, row);
-    }
-    free(line);
-    free(row);
-    fclose(fp);
-    char *w = NULL;
-    if (n > 0)
-        (void)gw_sweep_undecided_warning(m, n, cfg->ncases, first, &w);
-    if (rule)
-        (void)rule->warnings(acc, cfg, &w);
-    free(acc);
-    gw_sweep_warnings_keys(m, w);
-    gw_cli_warnings("sweep", w);
-    free(w);
-}
-
 /* The cases to run weighed before they run, for the progress lines' time
  * left (s->w, by the model's gw_sweep_weigh; left NULL, the cases alike, for
  * a model without one, above SWEEP_WEIGH_MAX cases, or out of memory). By
@@ -874,6 +797,7 @@ int gw_cmd_sweep(int argc, char **argv, const gw_sweep_model *const *models, con
     s.dirfd = -1;
     int rc = GW_OK;
     char *done = NULL;
+    char *check_warn = NULL, *rows_warn = NULL; /* the sweep's warnings, said and written into its table */
     if (gw_cli_parse("sweep", opts, argc, argv, &help, pos, 1, &npos, &err) != GW_OK) {
         code = 2;
     } else if (help) {
@@ -950,7 +874,7 @@ int gw_cmd_sweep(int argc, char **argv, const gw_sweep_model *const *models, con
         }
         gw_sweep_warnings_keys(m, warn);
         gw_cli_warnings("sweep", warn);
-        free(warn);
+        check_warn = warn; /* the table's "# warning:" lines too */
         gw_sweep_checks_end(m, memo);
         if (code)
             fprintf(stderr, "granwave sweep: %s: %s\n", gw_cli_path(cq, sizeof cq, pos[0]), err.msg);
@@ -1096,10 +1020,17 @@ int gw_cmd_sweep(int argc, char **argv, const gw_sweep_model *const *models, con
                            s.ndone0 + s.done, cfg.ncases, now);
                 code = 1;
             } else if (gw_sweep_journal_sync(s.fd, &s.synced_ms, &err) != GW_OK ||
-                       gw_sweep_write_table_at(s.dirfd, now, &cfg, m, &err) != GW_OK) {
+                       gw_sweep_write_table_warned(s.dirfd, now, &cfg, m, check_warn, &rows_warn, &err) != GW_OK) {
                 code = 1;
             } else {
-                rows_warnings(s.dirfd, &cfg, m);
+                /* the cases that did not end (the chain's converged 0: a
+                 * collision held by gravity or cut at t-max), with --quiet
+                 * too, then the model's rule over the rows (a chain case
+                 * pressed beyond one radius, a large energy error, a
+                 * chatter): one line each over the cases, of the journal's
+                 * rows (a resume's and the MPI ranks' too), as the table's
+                 * "# warning:" lines write them */
+                gw_cli_warnings("sweep", rows_warn);
                 /* finished where the directory went: said even with --quiet */
                 if (moved)
                     fprintf(stderr, "granwave sweep: warning: %s was moved while the sweep ran: its journal and "
@@ -1127,6 +1058,8 @@ finish:
     if (s.dirfd >= 0)
         close(s.dirfd);
     free(done);
+    free(check_warn);
+    free(rows_warn);
     free(s.todo);
     free(s.w);
     free(s.kind);

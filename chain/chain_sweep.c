@@ -4,10 +4,12 @@
  * solver (one SUNDIALS context per solver, hence per thread), so cases share
  * nothing but the case counter.
  */
+#include <math.h>
 #include <stdio.h>
 #include <string.h>
 
 #include "chain_model.h"
+#include "chain_wall.h"
 #include "chain_watch.h"
 #include "gw_chain.h"
 #include "gw_pool.h"
@@ -115,9 +117,11 @@ static int one(void *arg, long k, gw_err *err)
     return rc;
 }
 
-int chain_sweep_watch(const gw_chain_params *tmpl, const gw_chain_run_opts *o, const double *v, int nv, int n_lo,
-                      int n_hi, int jobs, gw_progress_fn progress, void *pctx, chain_watch *watch,
-                      gw_chain_result *res, gw_err *err)
+/* The grid's checks before any case runs (its arguments, the largest
+ * column's bounds at each speed, the study's steps); res zeroed once the
+ * grid's shape passed. */
+static int sweep_check(const gw_chain_params *tmpl, const gw_chain_run_opts *o, const double *v, int nv, int n_lo,
+                       int n_hi, gw_chain_result *res, gw_err *err)
 {
     if (!tmpl || !o || !v || !res)
         return gw_err_set(err, GW_EINVAL, "gw_chain_sweep_n: %s is NULL",
@@ -125,9 +129,7 @@ int chain_sweep_watch(const gw_chain_params *tmpl, const gw_chain_run_opts *o, c
     if (nv < 1 || n_lo < 1 || n_hi < n_lo)
         return gw_err_set(err, GW_EINVAL, "gw_chain_sweep_n: empty grid (nv = %d speeds, N = n_lo %d .. n_hi %d)",
                           nv, n_lo, n_hi);
-    sweep w = {tmpl, o, v, n_lo, n_hi - n_lo + 1, res, watch};
-    long ncase = (long)nv * w.per_v;
-    memset(res, 0, (size_t)ncase * sizeof *res);
+    memset(res, 0, (size_t)nv * (size_t)(n_hi - n_lo + 1) * sizeof *res);
     /* the largest column's bounds (steps, memory, samples grow with n) at each
      * speed before any runs: a study was refused only when its run reached that
      * column (softwall --solver rk4 --dt 1e-12 spent minutes on N = 1 first) */
@@ -139,10 +141,26 @@ int chain_sweep_watch(const gw_chain_params *tmpl, const gw_chain_run_opts *o, c
         if (rc != GW_OK)
             return rc;
     }
-    int rc = study_steps_check(tmpl, o, v, nv, n_lo, n_hi, err);
+    return study_steps_check(tmpl, o, v, nv, n_lo, n_hi, err);
+}
+
+/* the grid's cases, checked */
+static int sweep_cases(const gw_chain_params *tmpl, const gw_chain_run_opts *o, const double *v, int nv, int n_lo,
+                       int n_hi, int jobs, gw_progress_fn progress, void *pctx, chain_watch *watch,
+                       gw_chain_result *res, gw_err *err)
+{
+    sweep w = {tmpl, o, v, n_lo, n_hi - n_lo + 1, res, watch};
+    return gw_cases_run((long)nv * w.per_v, jobs, one, &w, progress, pctx, err);
+}
+
+int chain_sweep_watch(const gw_chain_params *tmpl, const gw_chain_run_opts *o, const double *v, int nv, int n_lo,
+                      int n_hi, int jobs, gw_progress_fn progress, void *pctx, chain_watch *watch,
+                      gw_chain_result *res, gw_err *err)
+{
+    int rc = sweep_check(tmpl, o, v, nv, n_lo, n_hi, res, err);
     if (rc != GW_OK)
         return rc;
-    return gw_cases_run(ncase, jobs, one, &w, progress, pctx, err);
+    return sweep_cases(tmpl, o, v, nv, n_lo, n_hi, jobs, progress, pctx, watch, res, err);
 }
 
 int gw_chain_sweep_n_progress(const gw_chain_params *tmpl, const gw_chain_run_opts *o, const double *v,
@@ -157,4 +175,47 @@ int gw_chain_sweep_n(const gw_chain_params *tmpl, const gw_chain_run_opts *o, co
 {
     (void)progress; /* the library prints nothing: progress goes through gw_chain_sweep_n_progress */
     return gw_chain_sweep_n_progress(tmpl, o, v, nv, n_lo, n_hi, jobs, NULL, NULL, res, err);
+}
+
+/* The grid's cases as a chain sweep's check pass tallies them (a damping
+ * model with a constant of 0, a contact damping, sensor dashpot or guide
+ * friction below the case's rtol), in its texts and count form ("in 2 of 4
+ * cases (the first, case 0)", case k the result's index). The grid said
+ * none: the studies on it (falcon, wavespeed, softwall) said them. */
+static int sweep_n_warnings(const gw_chain_params *tmpl, const gw_chain_run_opts *o, const double *v, int nv,
+                            int n_lo, int n_hi, char **list)
+{
+    const int per_v = n_hi - n_lo + 1;
+    const long total = (long)nv * per_v;
+    const double rtol = o->sp.rtol; /* the run's own (chain_collide's), as the sweep's case_settings read it */
+    int zero = 0, small = 0;
+    double small_hi = 0;
+    chain_drag_cases drag = {0, 0, 0, 0, 0, 0};
+    for (long k = 0; k < total; k++) {
+        gw_chain_params p = *tmpl;
+        p.v_imp = v[k / per_v];
+        p.n = n_lo + (int)(k % per_v);
+        zero += chain_damping_zero(&p);
+        if (chain_damping_small(&p, rtol)) { /* the single run's test */
+            const double e = chain_damping_effect(&p);
+            small_hi = small++ ? fmax(small_hi, e) : e;
+        }
+        chain_drag_cases_add(&drag, &p, rtol, k);
+    }
+    int rc = chain_damping_zero_warnings(NULL, zero, (int)total, list);
+    rc = rc == GW_OK ? chain_damping_small_cases_warning(small, (int)total, small_hi, list) : rc;
+    return rc == GW_OK ? chain_drag_cases_warnings(&drag, total, list) : rc;
+}
+
+int gw_chain_sweep_n_warned(const gw_chain_params *tmpl, const gw_chain_run_opts *o, const double *v, int nv,
+                            int n_lo, int n_hi, int jobs, gw_progress_fn progress, void *pctx, gw_chain_result *res,
+                            char **warnings, gw_err *err)
+{
+    int rc = sweep_check(tmpl, o, v, nv, n_lo, n_hi, res, err);
+    if (rc != GW_OK) /* a grid refused: nothing appended (as gw_sweep_run_warned's check pass) */
+        return rc;
+    /* the check pass's warnings, before the cases run: kept when one fails */
+    if (warnings && sweep_n_warnings(tmpl, o, v, nv, n_lo, n_hi, warnings) != GW_OK)
+        return gw_err_set(err, GW_ENOMEM, "gw_chain_sweep_n: out of memory");
+    return sweep_cases(tmpl, o, v, nv, n_lo, n_hi, jobs, progress, pctx, NULL, res, err);
 }

@@ -627,6 +627,19 @@ int gw_chain_sweep_n_progress(const gw_chain_params *tmpl, const gw_chain_run_op
                               const double *v, int nv, int n_lo, int n_hi, int jobs,
                               gw_progress_fn progress, void *pctx, gw_chain_result *res,
                               gw_err *err);
+/* The same, with the grid's "no effect" warnings appended to *warnings (a
+ * gw_warnings_add list, freed by the caller; NULL: none kept), as a chain
+ * sweep's check pass gives them (gw_sweep_run_warned), one line each over
+ * the grid's cases, the case k the result's index iv * (n_hi - n_lo + 1) +
+ * (N - n_lo): a damping kk with gamma 0 or hc with alpha 0 ("is no damping:
+ * 4 of 4 cases"), a contact damping, sensor dashpot or guide friction whose
+ * predicted effect is below o's rtol ("the sensor body's dashpot has no
+ * effect in 2 of 4 cases (the first, case 0): ..."). Appended once the grid
+ * passed its checks, before its cases run (a case that fails keeps them); a
+ * grid refused appends nothing. gw_chain_sweep_n and _progress give none. */
+int gw_chain_sweep_n_warned(const gw_chain_params *tmpl, const gw_chain_run_opts *o, const double *v, int nv,
+                            int n_lo, int n_hi, int jobs, gw_progress_fn progress, void *pctx, gw_chain_result *res,
+                            char **warnings, gw_err *err);
 
 /* ---- dispersion (chain_dispersion.c) ---- */
 

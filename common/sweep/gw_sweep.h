@@ -317,6 +317,18 @@ int gw_sweep_write_table(const char *dir, const gw_sweep_config *cfg, const gw_s
  * wherever it was moved. */
 int gw_sweep_write_table_at(int dirfd, const char *dir, const gw_sweep_config *cfg, const gw_sweep_model *m,
                             gw_err *err);
+/* The same with the sweep's warnings in the table, one "# warning: TEXT"
+ * line each after the "# grid" lines (docs/formats.md): first each line of
+ * warnings (a gw_warnings_add list, may be NULL: the check pass's, as the
+ * caller said them, m->memo_warnings with gw_sweep_warnings_keys), then the
+ * rows' (the cases that did not end, column converged 0, and the model's
+ * rule over its rows, as gw_sweep_run_warned gives them), taken from the
+ * journal's rows, so a resumed sweep's table is an uninterrupted one's byte
+ * for byte. The rows' lines written are appended to *rows_warnings (may be
+ * NULL) for the caller to say. gw_sweep_write_table(_at) write the rows'
+ * alone. */
+int gw_sweep_write_table_warned(int dirfd, const char *dir, const gw_sweep_config *cfg, const gw_sweep_model *m,
+                                const char *warnings, char **rows_warnings, gw_err *err);
 
 /* ---- running cases in memory (gw_sweep_run.c) ---- */
 

@@ -2,7 +2,9 @@
  * gw_sweep_table.c: the sweep's table (DIR/results.csv), written once every
  * case has run from this sweep's journal alone: its first line (version,
  * model, config hash, N of C cases), the "# param", "# input" and "# grid"
- * lines, the header and the rows sorted by case number. Units: the model's.
+ * lines, the "# warning:" lines (the sweep's warnings: the check pass's,
+ * given by the caller, and its rows', taken here from the journal's rows),
+ * the header and the rows sorted by case number. Units: the model's.
  */
 #define _POSIX_C_SOURCE 200809L
 #include <errno.h>
@@ -31,6 +33,80 @@ static int cmp_rows(const void *a, const void *b)
     return (x > y) - (x < y);
 }
 
+/* The warnings of the model's rows (each row's text, no newline: its case,
+ * its grid values, its model columns, its hashes), appended to *list as the
+ * program says them (the config's keys for the single run's flags): the
+ * cases that did not end their collision (the column converged 0) and the
+ * model's rule over its rows (gw_sweep_rows_rule). They were said on stderr
+ * alone, from the table read back: a table kept alone lost them. GW_OK or
+ * GW_ENOMEM. */
+static int table_rows_warnings(const gw_sweep_config *cfg, const gw_sweep_model *m, const row_ref *rows, long nr,
+                               char **list)
+{
+    int col = -1;
+    for (int j = 0; m->columns && j < m->ncolumns; j++)
+        if (m->columns[j] && strcmp(m->columns[j], "converged") == 0)
+            col = j;
+    const gw_sweep_rows_rule *rule = gw_sweep_rows_rule_of(m->name);
+    if ((col < 0 && !rule) || m->ncolumns < 1)
+        return GW_OK;
+    double *row = malloc((size_t)m->ncolumns * sizeof *row);
+    void *acc = rule ? calloc(1, rule->acc_size) : NULL;
+    if (!row || (rule && !acc)) {
+        free(row);
+        free(acc);
+        return GW_ENOMEM;
+    }
+    const int at = 1 + cfg->ngrid; /* case, the grid's values (no comma in them), then the model's columns */
+    long n = 0, first = -1;
+    for (long i = 0; i < nr; i++) {
+        const char *s = rows[i].s, *cell = s;
+        int k = 0, got = 0;
+        for (size_t j = 0; j <= rows[i].len && got < m->ncolumns; j++)
+            if (j == rows[i].len || s[j] == ',') {
+                if (k >= at && k < at + m->ncolumns) /* (a cell ends at a comma: the row's hashes follow) */
+                    row[k - at] = gw_strtod(cell, NULL), got++;
+                k++, cell = s + j + 1;
+            }
+        if (got != m->ncolumns)
+            continue; /* not a row this granwave writes: the journal's rows were checked as read */
+        if (col >= 0 && row[col] == 0 && n++ == 0)
+            first = rows[i].k;
+        if (rule)
+            rule->row(acc, cfg, rows[i].k, row);
+    }
+    char *w = NULL;
+    int rc = n > 0 ? gw_sweep_undecided_warning(m, n, cfg->ncases, first, &w) : GW_OK;
+    if (rc == GW_OK && rule)
+        rc = rule->warnings(acc, cfg, &w);
+    free(acc);
+    free(row);
+    gw_sweep_warnings_keys(m, w);
+    if (rc == GW_OK && w) {
+        const size_t have = *list ? strlen(*list) : 0;
+        char *grown = realloc(*list, have + strlen(w) + 1);
+        if (grown) {
+            strcpy(grown + have, w);
+            *list = grown;
+        } else {
+            rc = GW_ENOMEM;
+        }
+    }
+    free(w);
+    return rc;
+}
+
+/* "# warning: TEXT" for each line of list (a gw_warnings_add list) */
+static void write_warnings(FILE *fp, const char *list)
+{
+    for (const char *p = list; p && *p;) {
+        const size_t len = strcspn(p, "\n");
+        if (len > 0)
+            gw_fprintf(fp, "# warning: %.*s\n", (int)len, p);
+        p += len + (p[len] == '\n');
+    }
+}
+
 int gw_sweep_write_table(const char *dir, const gw_sweep_config *cfg, const gw_sweep_model *m, gw_err *err)
 {
     if (!dir)
@@ -48,6 +124,14 @@ int gw_sweep_write_table_at(int dfd, const char *dir, const gw_sweep_config *cfg
 {
     if (!dir || !cfg || !m)
         return gw_err_set(err, GW_EINVAL, "gw_sweep_write_table_at: %s is NULL", !dir ? "dir" : !cfg ? "cfg" : "m");
+    return gw_sweep_write_table_warned(dfd, dir, cfg, m, NULL, NULL, err);
+}
+
+int gw_sweep_write_table_warned(int dfd, const char *dir, const gw_sweep_config *cfg, const gw_sweep_model *m,
+                                const char *warnings, char **rows_warnings, gw_err *err)
+{
+    if (!dir || !cfg || !m)
+        return gw_err_set(err, GW_EINVAL, "gw_sweep_write_table_warned: %s is NULL", !dir ? "dir" : !cfg ? "cfg" : "m");
     const int shape = gw_sweep_config_check(cfg, err); /* (as the journal's calls) */
     if (shape != GW_OK)
         return shape;
@@ -96,7 +180,11 @@ int gw_sweep_write_table_at(int dfd, const char *dir, const gw_sweep_config *cfg
     } else {
         qsort(rows, (size_t)nr, sizeof *rows, cmp_rows);
         gw_afile f;
-        if ((rc = gw_afile_openat(&f, dfd, dir, "results.csv", err)) == GW_OK) {
+        char *rw = NULL; /* the rows' warnings, as the check pass's from the journal alone: a resume's table is
+                            byte for byte an uninterrupted sweep's */
+        if (table_rows_warnings(cfg, m, rows, nr, &rw) != GW_OK)
+            rc = gw_err_set(err, GW_ENOMEM, "sweep: out of memory");
+        else if ((rc = gw_afile_openat(&f, dfd, dir, "results.csv", err)) == GW_OK) {
             gw_fprintf(f.fp, "# granwave %s sweep, model %s, config %016lx, %ld of %ld cases\n", gw_version(),
                     cfg->model, cfg->hash, nr, cfg->ncases);
             gw_fprintf(f.fp, "# build %s\n", gw_sweep_build()); /* the journal's: it computed every row */
@@ -112,6 +200,8 @@ int gw_sweep_write_table_at(int dfd, const char *dir, const gw_sweep_config *cfg
                     gw_fprintf(f.fp, "%s%s", j ? ", " : "", cfg->grid[i].values[j]);
                 fputc('\n', f.fp);
             }
+            write_warnings(f.fp, warnings);
+            write_warnings(f.fp, rw);
             gw_fprintf(f.fp, "case");
             for (int i = 0; i < cfg->ngrid; i++)
                 gw_fprintf(f.fp, ",%s", cfg->grid[i].name);
@@ -127,6 +217,13 @@ int gw_sweep_write_table_at(int dfd, const char *dir, const gw_sweep_config *cfg
             }
             rc = gw_afile_commit(&f, err);
         }
+        if (rc == GW_OK && rows_warnings && rw) { /* said by the caller: the lines it wrote */
+            const size_t have = *rows_warnings ? strlen(*rows_warnings) : 0;
+            char *grown = realloc(*rows_warnings, have + strlen(rw) + 1);
+            if (grown)
+                strcpy(grown + have, rw), *rows_warnings = grown;
+        }
+        free(rw);
     }
     free(rows);
     free(seen);

@@ -1,0 +1,127 @@
+#!/bin/bash
+# test_sweep_warnings_table.sh GRANWAVE SRCDIR: a sweep's warnings in its
+# results.csv. They were said on stderr alone (and by the library and Python):
+# a user who kept the table lost them. The table now holds one "# warning:
+# TEXT" line for each, after its "# grid" lines, TEXT the stderr line's after
+# "granwave sweep: warning: ", from the config and the journal's rows alone.
+#  1 a chain sweep whose sensor dashpot has no effect in 2 of 4 cases (the
+#    check pass's warning): the line in the table, between the "# grid" lines
+#    and the header, the stderr's text; stderr says it once, as before.
+#  2 a chain sweep with a case cut at t-max (the rows' warning, "1 of 2
+#    cases did not end their collision"): the line in the table.
+#  3 each of them killed (kill -9) before its second row and resumed: the
+#    table byte for byte the uninterrupted one's, warning lines included (the
+#    rows' warning of a row run before the kill, the check pass's of the rerun).
+#  4 a layer sweep on a sample settled at density 2000 and hit at 2650 (the
+#    settling warning of the check pass): the line in the table; layer-stats
+#    reads the table (exit 0) and says what it says of the table without the
+#    warning lines (its stdout, stderr and groups.csv the same, but for the
+#    table's path and hash).
+#  Control: a sweep without warnings writes no "# warning:" line, its header
+#  right after its "# grid" lines (its table is the build before's, but for
+#  the "# build" line's commit: checked by hand, see docs/tests.md).
+# Checks that fail on the code before: see docs/tests.md.
+# shellcheck source=refusal_lib.sh
+. "$(dirname "${BASH_SOURCE[0]}")/refusal_lib.sh"
+hostile_setup "$@"
+cd "$tmp" || exit 1
+export LC_ALL=C
+
+# config NAME MODEL GRID PARAMS: NAME.ini, GRID and PARAMS its sections' lines ("key = values", ';' between)
+config() {
+    { echo "[sweep]"; echo "model = $2"; echo "[grid]"; tr ';' '\n' <<<"$3"
+      echo "[params]"; tr ';' '\n' <<<"$4"; } >"$1.ini"
+}
+# sweep NAME [FLAGS]: NAME.ini into NAME.out, stderr in NAME.err; sets rc
+sweep() {
+    local name=$1
+    shift
+    cpu_run 120 "$GW" sweep "$name.ini" --out "$name.out" --jobs 1 --quiet "$@" >/dev/null 2>"$name.err"; rc=$?
+}
+# table_warnings NAME: the texts of NAME.out/results.csv's "# warning:" lines
+table_warnings() { sed -n 's/^# warning: //p' "$1.out/results.csv" 2>/dev/null; }
+# said NAME: the texts of NAME.err's warning lines
+said() { sed -n 's/^granwave sweep: warning: //p' "$1.err"; }
+# placed NAME: the warning lines sit right after the "# grid" lines, the header right after them
+placed() {
+    awk '/^# grid / { g = NR } /^# warning: / { if (!g || (w ? NR != w + 1 : NR != g + 1)) bad = 1; w = NR }
+         /^case,/ { h = NR; exit } END { exit !(g && h == (w ? w : g) + 1 && !bad) }' "$1.out/results.csv"
+}
+# resumed NAME TOTAL: NAME.ini killed (kill -9) before its second row into
+# NAME.k, then run again there: its table against NAME.out's, byte for byte
+resumed() {
+    local name=$1 total=$2
+    if ! stop_mid_sweep KILL "$name.k" "$total" "$GW" sweep "$name.ini" --out "$name.k" --jobs 1 --quiet; then
+        ko "3 $name: kill -9 mid-sweep did not land (rc $rc, rows ${rows:-?})"
+        return
+    fi
+    local before=$rows
+    cpu_run 120 "$GW" sweep "$name.ini" --out "$name.k" --jobs 1 --quiet >/dev/null 2>"$name.k.err"; rc=$?
+    if [ $rc -eq 0 ] && [ -n "$(table_warnings "$name")" ] && cmp -s "$name.out/results.csv" "$name.k/results.csv"; then
+        ok "3 $name killed at $before of $total rows and resumed: the table byte for byte, its $(table_warnings "$name" | wc -l) warning line(s) too"
+    else
+        ko "3 $name resumed: exit $rc, $(diff "$name.out/results.csv" "$name.k/results.csv" 2>&1 | head -c 400)"
+    fi
+}
+
+# --- 1 the check pass's warning: a sensor dashpot of no effect ---
+config d chain "n = 1, 3;sensor-damping = 1e-12, 10" "sensor-mass = 1e-2;sensor-stiffness = 1e7;vimp = 0.3"
+sweep d
+w=$(table_warnings d)
+if [ $rc -eq 0 ] && [ "$(grep -c "^granwave sweep: warning: the sensor body's dashpot" d.err)" -eq 1 ] &&
+    grep -q "^the sensor body's dashpot has no effect in 2 of 4 cases (the first, case 0): " <<<"$w" &&
+    [ "$w" = "$(said d)" ] && placed d; then
+    ok "1 chain sweep, dashpot of no effect in 2 of 4 cases: the table's line, the stderr's text, before the header"
+else
+    ko "1 dashpot: exit $rc, table '$w', stderr '$(head -c 400 d.err)'"
+fi
+
+# --- 2 the rows' warning: a case cut at t-max ---
+config u chain "n = 6:7" "t-max = 1.94e-4"
+sweep u
+w=$(table_warnings u)
+if [ $rc -eq 0 ] && [ "$w" = "$(said u)" ] && placed u &&
+    grep -q "^1 of 2 cases did not end their collision (column converged = 0; the first, case 1)" <<<"$w"; then
+    ok "2 chain sweep with n 7 cut at t-max: the table's line, 1 of 2 cases, the first case 1"
+else
+    ko "2 undecided: exit $rc, table '$w', stderr '$(head -c 400 u.err)'"
+fi
+
+# --- 3 killed and resumed: the same table ---
+resumed d 4
+resumed u 2
+
+# --- 4 a layer sweep's settling warning; layer-stats reads the table ---
+make_sample d2000.txt --n 40 --seed 1 --density 2000
+settling_sweep_ini l.ini "$tmp/d2000.txt"
+sweep l
+w=$(table_warnings l)
+if [ $rc -eq 0 ] && [ "$w" = "$(said l)" ] && placed l &&
+    grep -q "^2 of 2 cases run on a sample settled under another material or not settled" <<<"$w"; then
+    ok "4 layer sweep on a pile settled at density 2000: the table's line, 2 of 2 cases"
+else
+    ko "4 layer settling: exit $rc, table '$w', stderr '$(head -c 400 l.err)'"
+fi
+grep -v '^# warning: ' l.out/results.csv >plain.csv
+cpu_run 60 "$GW" layer-stats l.out/results.csv --out ls1 >ls1.out 2>ls1.err; rc1=$?
+cpu_run 60 "$GW" layer-stats plain.csv --out ls2 >ls2.out 2>ls2.err; rc2=$?
+if [ -n "$w" ] && [ $rc1 -eq 0 ] && [ $rc2 -eq 0 ] &&
+    cmp -s <(sed 's|l.out/results.csv|T|g' ls1.err) <(sed 's|plain.csv|T|g' ls2.err) &&
+    cmp -s <(sed 's|l.out/results.csv|T|g' ls1.out) <(sed 's|plain.csv|T|g' ls2.out) &&
+    [ -s ls1/groups.csv ] && cmp -s <(grep -v '^# \(input\|command\)' ls1/groups.csv) <(grep -v '^# \(input\|command\)' ls2/groups.csv); then
+    ok "4 layer-stats reads the table with its warning lines as without them (exit 0, the same output and groups.csv)"
+else
+    ko "4 layer-stats: warned '$w', exit $rc1 and $rc2, $(head -c 300 ls1.err)"
+fi
+
+# --- control: a sweep without warnings has no such line ---
+config c chain "n = 1:2" ""
+sweep c
+if [ $rc -eq 0 ] && [ ! -s c.err ] && [ -z "$(table_warnings c)" ] && ! grep -q '^# warning' c.out/results.csv &&
+    placed c; then
+    ok "control: a sweep without warnings: no '# warning:' line, the header after the '# grid' line"
+else
+    ko "control: exit $rc, $(head -c 300 c.err), $(grep -c '^# warning' c.out/results.csv) warning lines"
+fi
+
+test_summary test_sweep_warnings_table

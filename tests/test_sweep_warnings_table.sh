@@ -11,7 +11,9 @@
 #    cases did not end their collision"): the line in the table.
 #  3 each of them killed (kill -9) before its second row and resumed: the
 #    table byte for byte the uninterrupted one's, warning lines included (the
-#    rows' warning of a row run before the kill, the check pass's of the rerun).
+#    rows' warning of a row run before the kill, the check pass's of the rerun);
+#    the first on 2 threads and on 2 MPI ranks (when the build links MPI): the
+#    same table.
 #  4 a layer sweep on a sample settled at density 2000 and hit at 2650 (the
 #    settling warning of the check pass): the line in the table; layer-stats
 #    reads the table (exit 0) and says what it says of the table without the
@@ -90,6 +92,20 @@ fi
 # --- 3 killed and resumed: the same table ---
 resumed d 4
 resumed u 2
+# on 2 threads and 2 MPI ranks (rank 0 checks the cases and writes): the same table
+cpu_run 120 "$GW" sweep d.ini --out d.j2 --jobs 2 --quiet >/dev/null 2>d.j2.err; rc=$?
+mpi_setup
+if [ $have_mpi -eq 1 ]; then
+    cpu_run 120 mpirun --oversubscribe -n 2 "$GW" sweep d.ini --out d.mpi --quiet >/dev/null 2>d.mpi.err; rcm=$?
+else
+    rcm=0; cp -r d.j2 d.mpi
+fi
+if [ $rc -eq 0 ] && [ $rcm -eq 0 ] && [ -n "$(table_warnings d)" ] && cmp -s d.out/results.csv d.j2/results.csv &&
+    cmp -s d.out/results.csv d.mpi/results.csv; then
+    ok "3 d on --jobs 2$([ $have_mpi -eq 1 ] && echo " and 2 MPI ranks"): the same table, its warning line too"
+else
+    ko "3 d on --jobs 2 / MPI: exit $rc, $rcm, $(head -c 300 d.mpi.err)"
+fi
 
 # --- 4 a layer sweep's settling warning; layer-stats reads the table ---
 make_sample d2000.txt --n 40 --seed 1 --density 2000

@@ -169,6 +169,8 @@ int gw_chain_trace_check(int n, double span, double dt_out, double events, gw_er
 static int trace_path(char *path, const char *dir, const char *stem, const char *suffix, gw_err *err)
 {
     char name[4096];
+    if (!dir[0]) /* it was "output path too long for the trace's file" */
+        return gw_err_set(err, GW_EINVAL, "gw_chain_trace_write: dir is empty ('' names no directory; '.' is this one)");
     if (gw_snprintf(name, sizeof name, "%s%s", stem, suffix) >= (int)sizeof name ||
         gw_path_join(path, 4096, dir, name) != GW_OK)
         return gw_err_set(err, GW_EINVAL, "%s: output path too long for the trace's file '%s%s'", dir, stem, suffix);

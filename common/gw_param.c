@@ -662,7 +662,7 @@ int gw_param_format(const gw_param *p, const void *obj, char *buf, size_t n)
 
 cJSON *gw_param_json(const gw_param *t, const void *obj)
 {
-    if (!obj)
+    if (!t || !obj) /* a NULL table was written {}: settings of no rows */
         return NULL;
     cJSON *o = cJSON_CreateObject();
     for (int i = 0; o && t && t[i].name; i++) {

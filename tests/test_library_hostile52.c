@@ -14,7 +14,8 @@
  *   - gw_param_json wrote a choice index outside its names as null (a value
  *     given recorded as none), a flag of 7 as true and a list of a negative
  *     count as []: it is NULL for each, as gw_param_format is -1 (the
- *     refusals are gw_param_check's, which names the row).
+ *     refusals are gw_param_check's, which names the row). A NULL table
+ *     was written {}: NULL too.
  *   - gw_stats_table_parse with a NULL (or "") name named nothing in its
  *     messages (":1: lines end in CR alone"): "<table>:1: ...", as the
  *     parsers say "value" for a NULL name.
@@ -23,7 +24,12 @@
  *   - the journal, the sweep's table and the chain's traces given an empty
  *     directory "" refused it as "path too long" (the table's
  *     gw_sweep_write_table as "cannot open the sweep's directory: No such
- *     file or directory"): each names an empty directory now.
+ *     file or directory"), gw_sweep_out_inputs_check passed it): each
+ *     names an empty directory now.
+ *   - gw_chain_trace_write given a NULL header read it through strlen in the
+ *     HDF5 writer (SIGSEGV; the CSV files took it as none): none now. A stem
+ *     "" wrote _wall_force.csv, _beads.csv and the hidden .h5, and one
+ *     holding '/' wrote into a subdirectory of dir: both refused naming stem.
  * Each case runs in its own child process (test_child.h).
  */
 #define _POSIX_C_SOURCE 200809L
@@ -125,6 +131,13 @@ static int c_param_json_outside(void)
         free(obj);
     }
     EXPECT(rows >= 10);
+    /* a NULL table was written {} (settings of no rows) */
+    const gw_study *st = gw_study_find("chain");
+    void *obj = calloc(1, st->params_size);
+    EXPECT(obj && st->init(obj) == GW_OK);
+    EXPECT(gw_param_json(NULL, obj) == NULL && gw_param_json(st->params(), NULL) == NULL);
+    st->clear(obj);
+    free(obj);
     return 0;
 }
 
@@ -197,6 +210,7 @@ static int c_empty_dir_sweep(void)
     EXPECT(refused(gw_sweep_journal_open_at("", &cfg, done, &nd, &fd, &dfd, &e), &e, "the directory is empty"));
     EXPECT(refused(gw_sweep_write_table("", &cfg, m, &e), &e, "the directory is empty"));
     EXPECT(!strstr(e.msg, "No such file"));
+    EXPECT(refused(gw_sweep_out_inputs_check("", &cfg, &e), &e, "the directory is empty")); /* GW_OK */
     /* control: a directory too long for a path is still "path too long" */
     char lng[5000];
     memset(lng, 'd', sizeof lng - 1);
@@ -213,12 +227,27 @@ static int c_empty_dir_trace(void)
     gw_err e = {{0}};
     EXPECT(refused(gw_chain_trace_write(&tr, "", "x", "h", &e), &e, "dir is empty"));
     EXPECT(!strstr(e.msg, "too long"));
-    /* control: into a directory made */
     char dir[] = "/tmp/gw_hostile52t.XXXXXX", path[64];
     EXPECT(mkdtemp(dir) != NULL);
+    /* an empty stem wrote _wall_force.csv and .h5, one with '/' into a/ */
+    EXPECT(refused(gw_chain_trace_write(&tr, dir, "", "h", &e), &e, "stem '' is no start of a file name (empty)"));
+    EXPECT(refused(gw_chain_trace_write(&tr, dir, "a/b", "h", &e), &e, "it holds '/'"));
+    snprintf(path, sizeof path, "%s/_wall_force.csv", dir);
+    struct stat st;
+    EXPECT(stat(path, &st) != 0);
+    /* a NULL header: none (the HDF5 writer's strlen read it: SIGSEGV) */
+    EXPECT(gw_chain_trace_write(&tr, dir, "n", NULL, &e) == GW_OK);
+    snprintf(path, sizeof path, "%s/n_wall_force.csv", dir);
+    FILE *fp = fopen(path, "r");
+    char line[64] = "";
+    EXPECT(fp && fgets(line, sizeof line, fp) && strcmp(line, "t_s,f_wall_N\n") == 0);
+    fclose(fp);
+    unlink(path);
+    snprintf(path, sizeof path, "%s/n.h5", dir);
+    unlink(path);
+    /* control: into a directory made */
     EXPECT(gw_chain_trace_write(&tr, dir, "x", "h", &e) == GW_OK);
     snprintf(path, sizeof path, "%s/x_wall_force.csv", dir);
-    struct stat st;
     EXPECT(stat(path, &st) == 0);
     unlink(path);
     snprintf(path, sizeof path, "%s/x.h5", dir);
@@ -305,12 +334,14 @@ static int c_chatter_hand(void)
 }
 
 static const child_row rows[] = {
-    {"gw_param_json: a choice outside its names, a flag of 7, a list of -2 items refused (null, true, [])",
+    {"gw_param_json: a choice outside its names, a flag of 7, a list of -2 items, a NULL table refused (null, "
+     "true, [], {})",
      c_param_json_outside},
     {"gw_stats_table_parse: a NULL or empty name is '<table>' (':1: ...')", c_table_parse_no_name},
     {"gw_fnv1a64_file_max: a text flag other than 0 and 1 refused (7 was yes)", c_hash_text_flag},
     {"journal and sweep table: an empty dir named as such ('path too long')", c_empty_dir_sweep},
-    {"gw_chain_trace_write: an empty dir named as such ('path too long')", c_empty_dir_trace},
+    {"gw_chain_trace_write: an empty dir named ('path too long'), stem '' and 'a/b' refused, header NULL none (SIGSEGV)",
+     c_empty_dir_trace},
     {"gw_stats_write_files: an empty dir refused in one line", c_empty_dir_stats},
     {"gw_solver_set_peek: behind, at, beyond t, subnormal, NaN (held)", c_peek_times},
     {"chatter members: kinds outside the enum said nothing, results freed twice (held)", c_chatter_hand},

@@ -307,15 +307,15 @@ int gw_chain_trace_write(const gw_chain_trace *tr, const char *dir, const char *
     int rc = chain_trace_check(tr, "gw_chain_trace_write", err);
     if (rc != GW_OK)
         return rc;
-    if (!dir || !stem) /* (dir was printed as "(null)", stem read) */
-        return gw_err_set(err, GW_EINVAL, "gw_chain_trace_write: %s is NULL", !dir ? "dir" : "stem");
+    /* (dir was printed as "(null)", stem read; a NULL header was read through
+     * strlen by the HDF5 writer, SIGSEGV, after the CSV files were written) */
+    if (!dir || !stem || !header)
+        return gw_err_set(err, GW_EINVAL, "gw_chain_trace_write: %s is NULL", !dir ? "dir" : !stem ? "stem" : "header");
     /* an empty stem wrote _wall_force.csv, _beads.csv and the hidden .h5; one
      * holding '/' wrote into another directory than dir */
     if (!stem[0] || strchr(stem, '/'))
         return gw_err_set(err, GW_EINVAL, "gw_chain_trace_write: stem '%s' is no start of a file name (%s)", stem,
                           stem[0] ? "it holds '/': give the directory as dir" : "empty");
-    if (!header) /* none, as the CSV files took it (the HDF5 file's strlen read NULL: SIGSEGV) */
-        header = "";
     char path[4096]; /* the longest of its names first: all of them, or nothing written */
     if ((rc = trace_path(path, dir, stem, "_wall_force.csv", err)) != GW_OK)
         return rc;

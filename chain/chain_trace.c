@@ -311,11 +311,9 @@ int gw_chain_trace_write(const gw_chain_trace *tr, const char *dir, const char *
      * strlen by the HDF5 writer, SIGSEGV, after the CSV files were written) */
     if (!dir || !stem || !header)
         return gw_err_set(err, GW_EINVAL, "gw_chain_trace_write: %s is NULL", !dir ? "dir" : !stem ? "stem" : "header");
-    /* an empty stem wrote _wall_force.csv, _beads.csv and the hidden .h5; one
-     * holding '/' wrote into another directory than dir */
-    if (!stem[0] || strchr(stem, '/'))
-        return gw_err_set(err, GW_EINVAL, "gw_chain_trace_write: stem '%s' is no start of a file name (%s)", stem,
-                          stem[0] ? "it holds '/': give the directory as dir" : "empty");
+    /* an empty stem wrote _wall_force.csv, _beads.csv and the hidden .h5 */
+    if (!stem[0])
+        return gw_err_set(err, GW_EINVAL, "gw_chain_trace_write: stem is empty (the start of its files' names)");
     char path[4096]; /* the longest of its names first: all of them, or nothing written */
     if ((rc = trace_path(path, dir, stem, "_wall_force.csv", err)) != GW_OK)
         return rc;

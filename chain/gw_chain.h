@@ -588,9 +588,8 @@ int gw_chain_run_check(const gw_chain_params *p, const gw_chain_run_opts *o, gw_
  * built with HDF5); header lines record version and parameters. A trace with
  * tr->n == 0 (a copy whose bead series are to be left out) writes the wall force
  * only: no _beads.csv and no x, v datasets. A NULL dir, stem or header (the
- * HDF5 file's run attribute read it: SIGSEGV), dir "", or a stem "" or holding
- * '/' is GW_EINVAL naming it, nothing written (stem "" wrote .h5 and
- * _wall_force.csv). */
+ * HDF5 file's run attribute read it: SIGSEGV), dir "" or stem "" is GW_EINVAL
+ * naming it, nothing written (stem "" wrote .h5 and _wall_force.csv). */
 int gw_chain_trace_write(const gw_chain_trace *tr, const char *dir, const char *stem,
                          const char *header, gw_err *err);
 

@@ -29,6 +29,10 @@
  *   - gw_chain_trace_write given a NULL header read it through strlen in the
  *     HDF5 writer (SIGSEGV, the CSV files written): refused naming it. A stem
  *     "" wrote _wall_force.csv, _beads.csv and the hidden .h5: refused.
+ *   - gw_chain_collide told a caller's sample callback failing (-1) as
+ *     "chain: the trace at t = ...: invalid input", a trace the caller never
+ *     asked for: "the sample callback failed at t = ...", as the drop says
+ *     (the stored trace's own failure keeps its words).
  * Each case runs in its own child process (test_child.h).
  */
 #define _POSIX_C_SOURCE 200809L
@@ -325,6 +329,46 @@ static int c_chatter_hand(void)
     return 0;
 }
 
+/* ------------------------------------------------------ callbacks ---- */
+
+static int cb_ret, cb_count;
+static int sample_cb(void *ctx, double t, const double *y, double f, int is_event)
+{
+    (void)ctx, (void)t, (void)y, (void)f, (void)is_event;
+    return ++cb_count >= 3 ? cb_ret : 0;
+}
+
+/* a caller's sample callback failing (-1, -999, INT_MIN) was told "chain: the
+ * trace at t = ...: invalid input", a trace the caller never asked for */
+static int c_sample_cb_named(void)
+{
+    const int rets[] = {-1, -999, INT_MIN};
+    const gw_solver_type *types[2] = {gw_solver_cvode, gw_solver_rk4};
+    for (size_t k = 0; k < sizeof rets / sizeof rets[0]; k++)
+        for (int i = 0; i < 2; i++) {
+            gw_chain_params p = gw_chain_params_default();
+            p.n = 3;
+            gw_chain *c = NULL;
+            gw_err e = {{0}};
+            EXPECT(gw_chain_create(&p, &c, &e) == GW_OK);
+            gw_chain_run_opts o = gw_chain_run_opts_default();
+            o.solver = types[i];
+            o.sample = sample_cb;
+            cb_ret = rets[k], cb_count = 0;
+            gw_chain_result r;
+            EXPECT(gw_chain_collide(c, &o, &r, &e) == rets[k]);
+            EXPECT(strncmp(e.msg, "chain: the sample callback failed at t = ", 41) == 0 && !strstr(e.msg, "trace"));
+            gw_chain_result_free(&r);
+            /* control: a stop (> 0) ends the run without an error, as documented */
+            cb_ret = 1, cb_count = 0;
+            memset(&e, 0, sizeof e);
+            EXPECT(gw_chain_collide(c, &o, &r, &e) == GW_OK && e.msg[0] == '\0');
+            gw_chain_result_free(&r);
+            gw_chain_free(c);
+        }
+    return 0;
+}
+
 static const child_row rows[] = {
     {"gw_param_json: a choice outside its names, a flag of 7, a list of -2 items, a NULL table refused (null, "
      "true, [], {})",
@@ -337,6 +381,7 @@ static const child_row rows[] = {
     {"gw_stats_write_files: an empty dir refused in one line", c_empty_dir_stats},
     {"gw_solver_set_peek: behind, at, beyond t, subnormal, NaN (held)", c_peek_times},
     {"chatter members: kinds outside the enum said nothing, results freed twice (held)", c_chatter_hand},
+    {"gw_chain_collide: a caller's sample callback failing named as such ('the trace at t')", c_sample_cb_named},
 };
 
 int main(void)

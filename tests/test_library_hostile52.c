@@ -3,14 +3,17 @@
  * C interface (docs/library.md "The contract of every call"): the details
  * the fifty-first left, and the entry points added since (the chatter
  * members of the chain's and the drop's results, gw_solver_set_peek, the
- * impact's side_walls). About 180 calls (every study's choice and flag rows
- * written directly with indices outside their names, 7 and -5; a list of a
- * negative count; sweep tables without a name; the bounded hash with text
- * flags 7, -1, 2, INT_MIN; the journal, the sweep table, the trace and the
- * statistics' files given ""; the peek behind, at and beyond the solver's
- * time, subnormal and NaN; the drop's parameters NaN, +-inf, -0, subnormal,
- * 1e300; hand results of chatter kinds 99 and INT_MIN freed twice). What it
- * found:
+ * impact's side_walls) and the least tested calls. About 350 calls (every
+ * study's choice and flag rows written directly with indices outside their
+ * names and 7; a list of a negative count; sweep tables without a name; the
+ * bounded hash with text flags 7, -1, 2, INT_MIN; the journal, the sweep
+ * table, the trace and the statistics' files given ""; the peek behind, at
+ * and beyond the solver's time, subnormal and NaN; the drop's parameters
+ * NaN, +-inf, -0, subnormal, 1e300; hand results of chatter kinds 99 and
+ * INT_MIN freed twice; the chain's, the drop's and the impact's sample and
+ * progress callbacks returning 1, 7, -1, -999, INT_MIN, INT_MAX; solvers
+ * of dimension 0 and -1, failing rhs and root functions, NaN rates; the
+ * uncalled getters and checks given NULL, -1, 99 and NaN). What it found:
  *   - gw_param_json wrote a choice index outside its names as null (a value
  *     given recorded as none), a flag of 7 as true and a list of a negative
  *     count as []: it is NULL for each, as gw_param_format is -1 (the

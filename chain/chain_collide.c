@@ -570,10 +570,14 @@ int gw_chain_result_held_blank(gw_chain_result *r)
  * was taken for a stop, so a trace that could not grow ended the run as if it
  * were complete: exit 0 with F_max 0 and the beads' initial velocities as their
  * final ones (tests/test_alloc_failure.sh). */
-static int sampled(int sr, int go_on, double t, gw_err *err)
+static int sampled(const run_state *st, int sr, int go_on, double t, gw_err *err)
 {
-    if (sr < 0)
+    /* a caller's own callback failing was told "the trace at t = ...: invalid
+     * input", a trace the caller had not asked for: the callback named */
+    if (sr < 0 && st->o->sample == gw_chain_trace_sample)
         return gw_err_set(err, sr, "chain: the trace at t = %.9g s: %s", t, gw_strerror(sr));
+    if (sr < 0)
+        return gw_err_set(err, sr, "chain: the sample callback failed at t = %.9g s: %s", t, gw_strerror(sr));
     return sr > 0 ? GW_DRIVE_STOP : go_on;
 }
 
@@ -642,8 +646,8 @@ static int collide_root(void *ctx, double t, double *y, const int *roots, gw_err
 {
     run_state *st = ctx;
     on_roots(st, t, y, roots);
-    return sampled(observe(st, t, y, 1), chain_roots_need_reset(st->c, t, y, roots) ? GW_DRIVE_RESET : GW_DRIVE_ON, t,
-                   err);
+    return sampled(st, observe(st, t, y, 1), chain_roots_need_reset(st->c, t, y, roots) ? GW_DRIVE_RESET : GW_DRIVE_ON,
+                   t, err);
 }
 
 static int collide_output(void *ctx, double t, double *y, gw_err *err)
@@ -653,7 +657,7 @@ static int collide_output(void *ctx, double t, double *y, gw_err *err)
     reconcile(st, t, y);
     if (wall_closed && !st->closed[0])
         on_wall_open(st, t, y);
-    return sampled(observe(st, t, y, 0), GW_DRIVE_ON, t, err);
+    return sampled(st, observe(st, t, y, 0), GW_DRIVE_ON, t, err);
 }
 
 static int collide_after(void *ctx, double t, const double *y, gw_err *err)
@@ -836,7 +840,7 @@ static int collide_run(const gw_chain *c, const gw_chain_run_opts *o, int drop, 
     st.t_expect = pl.t_expect;
     st.s = s;
     st.type = type;
-    if ((rc = sampled(observe(&st, t, y, 0), GW_DRIVE_ON, t, err)) < 0)
+    if ((rc = sampled(&st, observe(&st, t, y, 0), GW_DRIVE_ON, t, err)) < 0)
         goto done;
     if (rc == GW_DRIVE_STOP) {
         rc = GW_OK;

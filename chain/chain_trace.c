@@ -169,6 +169,8 @@ int gw_chain_trace_check(int n, double span, double dt_out, double events, gw_er
 static int trace_path(char *path, const char *dir, const char *stem, const char *suffix, gw_err *err)
 {
     char name[4096];
+    if (!dir[0]) /* it was "output path too long for the trace's file" */
+        return gw_err_set(err, GW_EINVAL, "gw_chain_trace_write: dir is empty ('' names no directory; '.' is this one)");
     if (gw_snprintf(name, sizeof name, "%s%s", stem, suffix) >= (int)sizeof name ||
         gw_path_join(path, 4096, dir, name) != GW_OK)
         return gw_err_set(err, GW_EINVAL, "%s: output path too long for the trace's file '%s%s'", dir, stem, suffix);
@@ -305,8 +307,13 @@ int gw_chain_trace_write(const gw_chain_trace *tr, const char *dir, const char *
     int rc = chain_trace_check(tr, "gw_chain_trace_write", err);
     if (rc != GW_OK)
         return rc;
-    if (!dir || !stem) /* (dir was printed as "(null)", stem read) */
-        return gw_err_set(err, GW_EINVAL, "gw_chain_trace_write: %s is NULL", !dir ? "dir" : "stem");
+    /* (dir was printed as "(null)", stem read; a NULL header was read through
+     * strlen by the HDF5 writer, SIGSEGV, after the CSV files were written) */
+    if (!dir || !stem || !header)
+        return gw_err_set(err, GW_EINVAL, "gw_chain_trace_write: %s is NULL", !dir ? "dir" : !stem ? "stem" : "header");
+    /* an empty stem wrote _wall_force.csv, _beads.csv and the hidden .h5 */
+    if (!stem[0])
+        return gw_err_set(err, GW_EINVAL, "gw_chain_trace_write: stem is empty (the start of its files' names)");
     char path[4096]; /* the longest of its names first: all of them, or nothing written */
     if ((rc = trace_path(path, dir, stem, "_wall_force.csv", err)) != GW_OK)
         return rc;

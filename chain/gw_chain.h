@@ -587,7 +587,9 @@ int gw_chain_run_check(const gw_chain_params *p, const gw_chain_run_opts *o, gw_
 /* Write DIR/<stem>_wall_force.csv and DIR/<stem>_beads.csv (and DIR/<stem>.h5 when
  * built with HDF5); header lines record version and parameters. A trace with
  * tr->n == 0 (a copy whose bead series are to be left out) writes the wall force
- * only: no _beads.csv and no x, v datasets. */
+ * only: no _beads.csv and no x, v datasets. A NULL dir, stem or header (the
+ * HDF5 file's run attribute read it: SIGSEGV), dir "" or stem "" is GW_EINVAL
+ * naming it, nothing written (stem "" wrote .h5 and _wall_force.csv). */
 int gw_chain_trace_write(const gw_chain_trace *tr, const char *dir, const char *stem,
                          const char *header, gw_err *err);
 

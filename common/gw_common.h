@@ -359,7 +359,9 @@ int gw_input_read(const char *path, const char *what, size_t max, char **out, si
  * (gw_input_open: a regular file only) and refuses it (GW_EINVAL, naming it and
  * its size) when it is larger than max bytes, before a byte is read, or when it
  * gives more bytes than that size (it grew while read, or a /proc file: 0
- * bytes, and /proc/self/pagemap gave 256 GiB; 8 KiB more read at most); text nonzero: a NUL
+ * bytes, and /proc/self/pagemap gave 256 GiB; 8 KiB more read at most); text 0
+ * or 1 (another value is GW_EINVAL naming it, before path is opened; 7 was
+ * taken as 1); text 1: a NUL
  * byte refuses it (GW_EFORMAT, naming its line), the read stopped there, so
  * that a text input is checked for binary data in the pass that hashes it.
  * gw_fnv1a64_file is gw_fnv1a64_file_max with max GW_INPUT_HASH_MAX, not text:

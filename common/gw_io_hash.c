@@ -123,6 +123,9 @@ int gw_fnv1a64_stream(FILE *fp, unsigned long long *h)
 int gw_fnv1a64_file_max(const char *path, const char *what, unsigned long long max, int text,
                         unsigned long long *h, gw_err *err)
 {
+    /* a yes/no: 7 was taken as yes, as the other yes/no arguments are not */
+    if (text != 0 && text != 1)
+        return gw_err_set(err, GW_EINVAL, "gw_fnv1a64_file_max: text is %d, not a flag (0 or 1)", text);
     return gw_io_fnv1a64_file_from(GW_FNV1A64_INIT, path, what, max, text, h, err);
 }
 

@@ -93,6 +93,13 @@ const char *gw_io_file_kind(mode_t m);
  * size + 1 bytes. */
 int gw_io_grew(const char *what, const char *path, unsigned long long size, gw_err *err);
 
+/* gw_path_join with its refusal told (GW_EINVAL): an empty dir as
+ * "WHAT: the directory is empty ('' names none; '.' is this one)", a path
+ * that does not fit n as "DIR: path too long" (an empty dir given to the
+ * journal, the sweep's table, the chain's traces and the statistics' files
+ * was refused as "path too long"). what NULL: "dir". */
+int gw_io_path_join(char *buf, size_t n, const char *dir, const char *name, const char *what, gw_err *err);
+
 /* gw_fnv1a64_file_max going on from the hash h0 of what came before (its
  * bytes hashed after them): the sweep config's hash, which holds the bytes
  * of the files it names after their names. */

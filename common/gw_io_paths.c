@@ -240,6 +240,17 @@ int gw_path_join(char *buf, size_t n, const char *dir, const char *name)
     return (w < 0 || (size_t)w >= n) ? GW_EINVAL : GW_OK;
 }
 
+int gw_io_path_join(char *buf, size_t n, const char *dir, const char *name, const char *what, gw_err *err)
+{
+    if (!what)
+        what = "dir";
+    if (dir && !dir[0])
+        return gw_err_set(err, GW_EINVAL, "%s: the directory is empty ('' names none; '.' is this one)", what);
+    if (gw_path_join(buf, n, dir, name) != GW_OK)
+        return gw_err_set(err, GW_EINVAL, "%s: path too long", dir ? dir : "(no directory)");
+    return GW_OK;
+}
+
 void gw_path_parent(char *buf)
 {
     if (!buf)

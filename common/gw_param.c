@@ -662,7 +662,7 @@ int gw_param_format(const gw_param *p, const void *obj, char *buf, size_t n)
 
 cJSON *gw_param_json(const gw_param *t, const void *obj)
 {
-    if (!obj)
+    if (!t || !obj) /* a NULL table was written {}: settings of no rows */
         return NULL;
     cJSON *o = cJSON_CreateObject();
     for (int i = 0; o && t && t[i].name; i++) {
@@ -681,9 +681,22 @@ cJSON *gw_param_json(const gw_param *t, const void *obj)
         case GW_PARAM_LONG:
             v = unset(p, f) ? cJSON_CreateNull() : cJSON_CreateNumber((double)*(const long *)f);
             break;
-        case GW_PARAM_FLAG: v = cJSON_CreateBool(*(const int *)f); break;
+        case GW_PARAM_FLAG:
+            /* a flag of 7 was written true, as 1 (gw_param_check refuses it) */
+            if (*(const int *)f != 0 && *(const int *)f != 1) {
+                cJSON_Delete(o);
+                return NULL;
+            }
+            v = cJSON_CreateBool(*(const int *)f);
+            break;
         case GW_PARAM_CHOICE:
-            v = gw_param_format(p, obj, buf, sizeof buf) > 0 ? cJSON_CreateString(buf) : cJSON_CreateNull();
+            /* an index outside the names (99 of "rk4,cvode,arkode") was
+             * written null, as not given: refused as gw_param_format's -1 */
+            if (*(const int *)f >= 0 && gw_param_format(p, obj, buf, sizeof buf) < 0) {
+                cJSON_Delete(o);
+                return NULL;
+            }
+            v = *(const int *)f >= 0 ? cJSON_CreateString(buf) : cJSON_CreateNull();
             break;
         case GW_PARAM_TEXT: {
             /* the text as held: it went through a buffer of 256 bytes, and a
@@ -695,6 +708,11 @@ cJSON *gw_param_json(const gw_param *t, const void *obj)
         }
         case GW_PARAM_LIST: {
             const gw_param_list *l = f;
+            /* a negative count was written [] (gw_param_format: -1) */
+            if (l->n < 0) {
+                cJSON_Delete(o);
+                return NULL;
+            }
             v = l->n ? gw_json_doubles(l->v, l->n) : cJSON_CreateNull();
             break;
         }

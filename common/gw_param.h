@@ -166,7 +166,11 @@ int gw_param_format(const gw_param *p, const void *obj, char *buf, size_t n);
 
 /* A JSON object {name: value} of t's input rows in obj (not given: null;
  * choices by name; lists as arrays; ranges as [a, b]; texts whole, of any
- * length: one over 255 bytes was null, as not given). NULL on ENOMEM. */
+ * length: one over 255 bytes was null, as not given). NULL on ENOMEM, and
+ * for a row it cannot write as a value gw_param_set could give: a choice
+ * index outside its names (it was null, as not given), a flag other than 0
+ * and 1 (7 was true), a list of a negative count ([]) or counted without its
+ * values (gw_param_check names each); t or obj NULL: NULL (t NULL was {}). */
 cJSON *gw_param_json(const gw_param *t, const void *obj);
 
 /* Free what obj's text and list rows own and reset them to not given. */

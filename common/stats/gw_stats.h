@@ -102,6 +102,8 @@ extern const int gw_stats_table_nrequired;
  * cut short: GW_EFORMAT "path:line: the file ends inside this line ..." (a
  * last comment line may; text given to gw_stats_table_parse may end so). */
 int gw_stats_table_read(const char *path, gw_stats_table *t, gw_err *err);
+/* name (the table's name in messages, kept in t->path): NULL or "" is
+ * "<table>" ("<table>:1: ...", where ":1: ..." named nothing). */
 int gw_stats_table_parse(const char *text, const char *name, gw_stats_table *t,
                            gw_err *err);
 void gw_stats_table_free(gw_stats_table *t);

@@ -553,8 +553,10 @@ int gw_stats_table_parse(const char *text, const char *name, gw_stats_table *t, 
         memset(t, 0, sizeof *t);
         return gw_err_set(err, GW_EINVAL, "gw_stats_table_parse: text is NULL");
     }
-    if (!name)
-        name = "";
+    /* no name (NULL or ""): its messages named nothing (":1: lines end in
+     * CR alone"), as the parsers say "value" for a NULL name */
+    if (!name || !name[0])
+        name = "<table>";
     memset(t, 0, sizeof *t);
     t->sweep_rows = t->sweep_cases = -1;
     gw_snprintf(t->path, sizeof t->path, "%s", name);

@@ -415,6 +415,8 @@ int gw_sweep_out_inputs_check(const char *dir, const gw_sweep_config *cfg, gw_er
     static const char *const outs[] = {"journal.csv", "results.csv", NULL};
     if (!dir || !cfg)
         return gw_err_set(err, GW_EINVAL, "gw_sweep_out_inputs_check: %s is NULL", !dir ? "dir" : "cfg");
+    if (!dir[0]) /* it passed, as the journal's and the table's calls refuse it */
+        return gw_err_set(err, GW_EINVAL, "sweep directory: the directory is empty ('' names none; '.' is this one)");
     const int shape = gw_sweep_config_check(cfg, err); /* inputs counted without their array: SIGSEGV before */
     if (shape != GW_OK)
         return shape;

@@ -810,8 +810,8 @@ int gw_sweep_journal_held(int dirfd, int *fdp, const char *dir, int *restored, g
     if (fstat(*fdp, &a) != 0)
         return gw_err_set(err, GW_EIO, "%s/journal.csv: %s", dir, strerror(errno));
     char path[4200];
-    if (gw_snprintf(path, sizeof path, "%s/journal.csv", dir) >= (int)sizeof path)
-        return gw_err_set(err, GW_EINVAL, "%s: path too long", dir);
+    if (gw_io_path_join(path, sizeof path, dir, "journal.csv", "sweep directory", err) != GW_OK)
+        return GW_EINVAL;
     /* what the sweep wrote into it (none: a descriptor not opened by
      * gw_sweep_journal_open_at, checked by its name alone) */
     jshadow *h = shadow_get(*fdp);
@@ -935,8 +935,9 @@ static int journal_access(const char *dir, const gw_sweep_config *cfg, char *don
         *fdp = -1;
     if (exists)
         *exists = 1;
-    if (gw_path_join(path, sizeof path, dir, "journal.csv") != GW_OK)
-        return gw_err_set(err, GW_EINVAL, "%s: path too long", dir);
+    const int jrc = gw_io_path_join(path, sizeof path, dir, "journal.csv", "sweep directory", err);
+    if (jrc != GW_OK)
+        return jrc;
     const int dfd = gw_sweep_dir_open(dir);
     if (dfd < 0 && torn && errno == ENOENT) { /* a check before the first run: nothing in it */
         *exists = 0;
@@ -979,8 +980,8 @@ static int journal_find(const char *path, int dfd, const char *dir, const gw_swe
     /* the table goes beside the journal once every case has run: a directory
      * or a FIFO of its name failed the sweep (exit 1) after all its cases */
     char tpath[4096];
-    if (gw_path_join(tpath, sizeof tpath, dir, "results.csv") != GW_OK)
-        return gw_err_set(err, GW_EINVAL, "%s: path too long", dir);
+    if (gw_io_path_join(tpath, sizeof tpath, dir, "results.csv", "sweep directory", err) != GW_OK)
+        return GW_EINVAL;
     if (gw_out_file_check(tpath, "sweep table", err) != GW_OK)
         return GW_EINVAL;
     if (gw_sweep_out_inputs_check(dir, cfg, err) != GW_OK)

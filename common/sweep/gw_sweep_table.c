@@ -20,6 +20,7 @@
 #include "gw_sweep.h"
 #include "gw_locale.h"
 #include "gw_sweep_impl.h"
+#include "gw_io_impl.h"
 
 typedef struct row_ref {
     long k;
@@ -111,6 +112,10 @@ int gw_sweep_write_table(const char *dir, const gw_sweep_config *cfg, const gw_s
 {
     if (!dir)
         return gw_err_set(err, GW_EINVAL, "gw_sweep_write_table: dir is NULL");
+    /* "": refused as "cannot open the sweep's directory: No such file or
+     * directory" here, as "path too long" by the _at call */
+    if (!dir[0])
+        return gw_err_set(err, GW_EINVAL, "sweep directory: the directory is empty ('' names none; '.' is this one)");
     const int dfd = gw_sweep_dir_open(dir);
     if (dfd < 0)
         return gw_err_set(err, GW_EIO, "%s: cannot open the sweep's directory: %s", dir, strerror(errno));
@@ -136,8 +141,8 @@ int gw_sweep_write_table_warned(int dfd, const char *dir, const gw_sweep_config 
     if (shape != GW_OK)
         return shape;
     char path[4096];
-    if (gw_path_join(path, sizeof path, dir, "journal.csv") != GW_OK)
-        return gw_err_set(err, GW_EINVAL, "%s: path too long", dir);
+    if (gw_io_path_join(path, sizeof path, dir, "journal.csv", "sweep directory", err) != GW_OK)
+        return GW_EINVAL;
     /* the journal now in the directory (another sweep's, when it was
      * replaced: refused below), read through the directory held */
     if (gw_sweep_dir_held(dfd, dir, err) != GW_OK)

@@ -18,9 +18,15 @@
  *   would report 0.3125. Asserted: the time within [T0, T0 + 2 htol].
  * - The same for a falling function that crosses without touching zero at a
  *   sample point, g = 0.3 - t: the located time within [0.3, 0.3 + 2 htol].
+ * - A rate that turns NaN past t = 0.5 (y' = -y before): a fixed step has no
+ *   error test to fail on it, and rk4 returned GW_OK with y = NaN at t = 1
+ *   (cvode and arkode stop on it). Asserted: GW_ESOLVER, a message naming the
+ *   state not finite, and the same run without the NaN ends GW_OK at y = e^-1
+ *   within rk4's error (the control).
  */
 #include <math.h>
 #include <stdio.h>
+#include <string.h>
 
 #include "gw_solver.h"
 #include "gw_test.h"
@@ -79,6 +85,35 @@ static double locate(rootp *p, long *nrhs)
     return t;
 }
 
+static int nan_rhs(double t, const double *y, double *yd, void *P)
+{
+    const int *turns = P;
+    yd[0] = (*turns && t > 0.5) ? NAN : -y[0];
+    return 0;
+}
+
+/* rk4 from y = 1 at 0 to 1 with dt = 1/64; the rate NaN past 0.5 if turns. */
+static int nan_run(int turns, double *y, char *msg, size_t len)
+{
+    gw_system sys = {0};
+    sys.dim = 1;
+    sys.rhs = nan_rhs;
+    sys.params = &turns;
+    gw_solver_params sp = gw_solver_params_default();
+    sp.dt = 1.0 / 64;
+    double y0 = 1.0, t = 0;
+    gw_solver *s = NULL;
+    gw_err err = {0};
+    if (gw_solver_create(gw_solver_rk4, &sys, &sp, 0.0, &y0, &s, &err) != GW_OK) {
+        snprintf(msg, len, "create: %s", err.msg);
+        return -1000;
+    }
+    int rc = gw_solver_advance(s, 1.0, &t, y, NULL);
+    snprintf(msg, len, "%s", rc < 0 ? gw_solver_error(s) : "");
+    gw_solver_free(s);
+    return rc;
+}
+
 int main(void)
 {
     const double htol = 1e-12 * 0.125;
@@ -101,6 +136,18 @@ int main(void)
     t = locate(&cross, &nrhs);
     snprintf(what, sizeof what, "g crossing at 0.3: t = %.17g in [0.3, 0.3 + 2 htol] (%ld right-hand sides)", t, nrhs);
     gw_test_true(t >= cross.t0 && t <= cross.t0 + 2 * htol, what);
+
+    double y = 0;
+    char msg[1024];
+    int rc = nan_run(1, &y, msg, sizeof msg);
+    snprintf(what, sizeof what, "a rate NaN past 0.5 is a solver failure, not a result: rc %d (GW_ESOLVER %d), y %g", rc,
+             GW_ESOLVER, y);
+    gw_test_true(rc == GW_ESOLVER, what);
+    printf("  (message: %s)\n", msg);
+    gw_test_true(strstr(msg, "not finite") != NULL, "and its message says the state is not finite");
+    rc = nan_run(0, &y, msg, sizeof msg);
+    snprintf(what, sizeof what, "control: the same run without the NaN ends GW_OK (rc %d) at y = e^-1 (y %.12g)", rc, y);
+    gw_test_true(rc == GW_OK && fabs(y - exp(-1.0)) < 1e-8, what);
 
     return gw_test_summary("test_solver_rk4_roots");
 }

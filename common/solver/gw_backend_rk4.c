@@ -406,6 +406,16 @@ static int rk4_advance(gw_solver *s, double tout, double *t, double *y, int *roo
         gw_solver_set_error(s, "rk4: model callback failed (code %d) at t = %.9g s", rc, r->t);
         return GW_ESOLVER;
     }
+    /* a fixed step has no error test to fail on a rate of NaN or infinity
+     * (cvode and arkode stop on it): the state handed back is checked, once
+     * per call, so that such a rate is never returned as a result */
+    for (long i = 0; i < n; i++)
+        if (!isfinite(r->y[i])) {
+            gw_solver_set_error(s, "rk4: the state is not finite (component %ld is %g) at t = %.9g s: "
+                                   "the model's rates gave NaN or infinity in the steps before",
+                                i, r->y[i], r->t);
+            return GW_ESOLVER;
+        }
     return GW_OK;
 }
 

@@ -213,15 +213,13 @@ static int cv_create(gw_solver *s, double t0, const double *y0, gw_err *err)
     return GW_OK;
 }
 
-/* A failed CVode call: the solver's message, GW_ELIMIT or GW_ESOLVER. */
+/* A failed CVode call: the solver's message, GW_ELIMIT or GW_ESOLVER
+ * (gw_sun_failed). */
 static int cv_failed(gw_solver *s, int flag, double tret)
 {
-    char msg[sizeof s->errmsg], name[64];
-    gw_snprintf(msg, sizeof msg, "%s", s->errmsg);
+    char name[64];
     cv_flag_name(flag, name, sizeof name);
-    gw_solver_set_error(s, "cvode failed at t = %.9g s (%s): %s", tret, name,
-                        msg[0] ? msg : "no message");
-    return flag == CV_TOO_MUCH_WORK ? GW_ELIMIT : GW_ESOLVER;
+    return gw_sun_failed(s, "cvode", name, flag == CV_TOO_MUCH_WORK, tret);
 }
 
 /* The first advance after the set-up: the step given, which knows tout. */

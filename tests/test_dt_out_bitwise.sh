@@ -35,17 +35,7 @@ hostile_setup "$@"
 export LC_ALL=C
 
 cpu_run 120 "$GW" layer-make --n 40 --out s40 --quiet >/dev/null 2>&1 ||
-    { ko "layer-make --n 40 (the pile the checks impact)"; # 3: arkode (erk), as cvode
-impact a0 --solver arkode || ko "arkode at the default --dt-out ran (exit $?)"
-for d in 3e-5 1e-5 7e-6 1e-4 2e-3; do
-    impact "a_$d" --solver arkode --dt-out "$d" || ko "arkode at --dt-out $d ran (exit $?)"
-    if [ "$d" = 1e-5 ] || [ "$d" = 7e-6 ]; then same a0 "a_$d" "arkode --dt-out $d"; else same a0 "a_$d" "arkode --dt-out $d" speeds; fi
-done
-[ "$(field a0 energy_error)" != null ] && [ "$(field a0 wave_speed)" != null ] &&
-    ok "control: arkode's default gives an energy_error and a wave speed" ||
-    ko "arkode's default gives energy_error $(field a0 energy_error), wave speed $(field a0 wave_speed)"
-
-test_summary test_dt_out_bitwise; exit; }
+    { ko "layer-make --n 40 (the pile the checks impact)"; test_summary test_dt_out_bitwise; exit; }
 
 # impact NAME ARGS...: layer-impact on s40, --json into NAME.json
 impact() {
@@ -62,8 +52,10 @@ SPEEDS="wave_speed wave_speed_kinetic wave_speed_xcorr"
 differ() {
     local keys=$KEYS
     [ "${3:-}" = speeds ] && keys="$keys $SPEEDS"
-    # shellcheck disable=SC2086
-    local -a k=($keys) a=($(json_fields "$1.json" %r $keys)) b=($(json_fields "$2.json" %r $keys))
+    local -a k a b
+    read -ra k <<<"$keys"
+    read -ra a <<<"$(json_fields "$1.json" %r "${k[@]}")"
+    read -ra b <<<"$(json_fields "$2.json" %r "${k[@]}")"
     local i out=
     for i in "${!k[@]}"; do
         [ "${a[$i]:-}" = "${b[$i]:-}" ] || out="$out ${k[$i]} (${a[$i]:-} vs ${b[$i]:-})"

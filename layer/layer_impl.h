@@ -469,7 +469,7 @@ int layer_impact_fall_rule(const gw_layer_impact_params *ip, double g, int gap_d
  * and outputs as if no peek had been made). Another backend stops at tpeek
  * (gw_layer_advance(L, tpeek)). GW_OK, or gw_layer_advance's failures. */
 int layer_advance_peek(gw_layer *L, double tpeek, double tout, gw_err *err);
-/* 1 when layer_advance_peek does not stop the run at tpeek (cvode, rk4) */
+/* 1 when layer_advance_peek does not stop the run at tpeek (cvode, arkode, rk4) */
 int layer_can_peek(const gw_solver_type *type);
 double layer_impact_dem_dt(const gw_layer_sample *s, const gw_layer_params *lp, const gw_layer_impact_params *ip);
 /* layer_settling_found and layer_impact_run: layer_plan_run.h (the program

@@ -413,7 +413,7 @@ int gw_layer_advance(gw_layer *L, double tout, gw_err *err)
 
 int layer_can_peek(const gw_solver_type *type)
 {
-    return type == gw_solver_cvode || type == gw_solver_rk4;
+    return type == gw_solver_cvode || type == gw_solver_arkode || type == gw_solver_rk4;
 }
 
 int layer_advance_peek(gw_layer *L, double tpeek, double tout, gw_err *err)

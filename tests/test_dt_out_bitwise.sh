@@ -1,6 +1,7 @@
 #!/bin/bash
-# test_dt_out_bitwise.sh GRANWAVE SRCDIR: layer-impact's outcome does not
-# depend on --dt-out under cvode and rk4, bit for bit.
+# test_dt_out_bitwise.sh GRANWAVE SRCDIR: layer-impact's outcome, and its
+# energy_error, do not depend on --dt-out under cvode, rk4 and arkode, bit
+# for bit.
 #  1 cvode stopped at every sample: a --dt-out that is not a multiple of the
 #    run's checks (2e-5 s), or finer, added stops between them, where the
 #    layer projects the state and restarts cvode, CVODE's first step after a
@@ -19,12 +20,19 @@
 #    20 steps (on the step grid) whatever --dt-out, its samples between them
 #    a step of rk4 from the start of the step that holds them, made aside;
 #    the crowns are read at the checks when the samples are coarser.
+#  3 arkode still stopped at every sample: e_n moved by 7.6e-8 at --dt-out
+#    3e-5, 7.0e-8 at 1e-5 and 9.3e-9 at 7e-6 (t_end 0.30603 s against
+#    0.30604). It now reads them on the way as cvode does (ark_advance_peek:
+#    ARKode's dense output in the step that passed the sample).
+#  4 energy_error took the samples between the checks (read on the way,
+#    interpolated): cvode at --dt-out 7e-6 read 1.41879066e-6 against
+#    1.41879065e-6 at the default. It is now taken where the run stops (the
+#    checks, the samples on them, t-max) and compared bit for bit here.
 # Checks that fail on the code before: see docs/tests.md.
 # shellcheck source=refusal_lib.sh
 . "$(dirname "$0")/refusal_lib.sh"
 hostile_setup "$@"
 export LC_ALL=C
-PY=/usr/bin/python3
 
 cpu_run 120 "$GW" layer-make --n 40 --out s40 --quiet >/dev/null 2>&1 ||
     { ko "layer-make --n 40 (the pile the checks impact)"; test_summary test_dt_out_bitwise; exit; }
@@ -35,22 +43,27 @@ impact() {
     shift
     cpu_run 120 "$GW" layer-impact --sample s40 --quiet --json "$@" >"$name.json" 2>"$name.err"
 }
-# differ NAME1 NAME2 [speeds]: the outcome fields of NAME1 (and with speeds
-# its wave speeds) that are not NAME2's bit for bit (repr of the doubles),
-# empty when all are
+# the outcome fields compared bit for bit (repr of the doubles), and the
+# wave speeds where the crowns are read at the checks
+KEYS="bounced e_n e alpha_r e_n_first t_f penetration t_end dissipated_first_contact t_contact_open energy_error"
+SPEEDS="wave_speed wave_speed_kinetic wave_speed_xcorr"
+# differ NAME1 NAME2 [speeds]: the fields of NAME1 that are not NAME2's, as
+# "KEY (V1 vs V2)"; empty when all are the same
 differ() {
-    $PY - "$1.json" "$2.json" "${3:-}" <<'EOF'
-import json, sys
-a, b = (json.load(open(f)) for f in sys.argv[1:3])
-keys = ["bounced", "e_n", "e", "alpha_r", "e_n_first", "t_f", "penetration", "t_end", "dissipated_first_contact",
-        "t_contact_open"]
-if sys.argv[3] == "speeds":
-    keys += ["wave_speed", "wave_speed_kinetic", "wave_speed_xcorr"]
-print(" ".join("%s (%r vs %r)" % (k, a.get(k), b.get(k)) for k in keys if repr(a.get(k)) != repr(b.get(k))))
-EOF
+    local keys=$KEYS
+    [ "${3:-}" = speeds ] && keys="$keys $SPEEDS"
+    local -a k a b
+    read -ra k <<<"$keys"
+    read -ra a <<<"$(json_fields "$1.json" %r "${k[@]}")"
+    read -ra b <<<"$(json_fields "$2.json" %r "${k[@]}")"
+    local i out=
+    for i in "${!k[@]}"; do
+        [ "${a[$i]:-}" = "${b[$i]:-}" ] || out="$out ${k[$i]} (${a[$i]:-} vs ${b[$i]:-})"
+    done
+    echo "${out# }"
 }
-field() { $PY -c "import json; print(repr(json.load(open('$1.json')).get('$2')))"; }
-warned() { $PY -c "import json; print(''.join(w for w in json.load(open('$1.json'))['warnings'] if 'dt-out' in w))"; }
+field() { json_fields "$1.json" %r "$2"; }
+warned() { json_warnings "$1.json" | grep -e dt-out | tr -d '\n'; }
 
 # same BASE NAME WHAT [speeds]: NAME's outcome (and wave speeds) is BASE's bit for bit
 same() {
@@ -63,11 +76,11 @@ same() {
 # 1: cvode; the wave speeds too where the crowns are read at the checks (a
 # --dt-out finer than them reads its own samples, which resolve them better)
 impact c0 --solver cvode || ko "cvode at the default --dt-out ran (exit $?)"
-for d in 3e-5 1e-5 1e-4 2e-3; do
+for d in 3e-5 1e-5 7e-6 1e-4 2e-3; do
     impact "c_$d" --solver cvode --dt-out "$d" || ko "cvode at --dt-out $d ran (exit $?)"
-    if [ "$d" = 1e-5 ]; then same c0 "c_$d" "cvode --dt-out $d"; else same c0 "c_$d" "cvode --dt-out $d" speeds; fi
+    if [ "$d" = 1e-5 ] || [ "$d" = 7e-6 ]; then same c0 "c_$d" "cvode --dt-out $d"; else same c0 "c_$d" "cvode --dt-out $d" speeds; fi
 done
-[ "$(field c0 wave_speed)" != None ] && ok "control: cvode's default gives a wave speed" ||
+[ "$(field c0 wave_speed)" != null ] && ok "control: cvode's default gives a wave speed" ||
     ko "cvode's default gives no wave speed"
 
 # 2: rk4 at its default step (1e-6 s) and at a step that does not divide
@@ -81,8 +94,18 @@ for d in 3e-5 1e-5 2e-3; do
     same q0 "q_$d" "rk4 --dt 3e-6 --dt-out $d"
 done
 w=$(warned q_2e-3)
-[ -z "$w" ] && [ "$(field q_2e-3 wave_speed_kinetic)" != None ] &&
+[ -z "$w" ] && [ "$(field q_2e-3 wave_speed_kinetic)" != null ] &&
     ok "rk4 --dt 3e-6 --dt-out 2e-3: wave speeds from the checks, no dt-out warning" ||
     ko "rk4 --dt 3e-6 --dt-out 2e-3: wave_speed_kinetic $(field q_2e-3 wave_speed_kinetic), warning '$w'"
+
+# 3: arkode (erk), as cvode
+impact a0 --solver arkode || ko "arkode at the default --dt-out ran (exit $?)"
+for d in 3e-5 1e-5 7e-6 1e-4 2e-3; do
+    impact "a_$d" --solver arkode --dt-out "$d" || ko "arkode at --dt-out $d ran (exit $?)"
+    if [ "$d" = 1e-5 ] || [ "$d" = 7e-6 ]; then same a0 "a_$d" "arkode --dt-out $d"; else same a0 "a_$d" "arkode --dt-out $d" speeds; fi
+done
+[ "$(field a0 energy_error)" != null ] && [ "$(field a0 wave_speed)" != null ] &&
+    ok "control: arkode's default gives an energy_error and a wave speed" ||
+    ko "arkode's default gives energy_error $(field a0 energy_error), wave speed $(field a0 wave_speed)"
 
 test_summary test_dt_out_bitwise

@@ -39,6 +39,17 @@ typedef struct ark_impl {
     double t;
     int erk;        /* mem is an ERKStep (the erk method), else an ARKStep */
     int first_step; /* a first step given, set at the first advance (gw_sun_init_step) */
+    /* a peek (gw_solver_set_peek), as cvode's (cv_advance_peek): the state
+     * there, the one at the start of a call in ARK_NORMAL mode and both
+     * derivatives (a peek before the last of its steps, cubic Hermite) */
+    N_Vector yp, y0, d0, d1;
+    int fresh;       /* no step since the set-up or the last reset (the first step not yet taken) */
+    int root_last;   /* the last return was a root, no reset since */
+    int have0;       /* a->y0 at t0 kept for the Hermite: 1 with its rate a->d0, 2 without */
+    double t0;
+    int pend;        /* held back: 1 tout reached (pend_t = pend_tout), 2 a root at pend_t */
+    double pend_t, pend_tout;
+    double tlast;    /* the time ARKode last returned (roots searched up to it) */
 } ark_impl;
 
 /* ARKStepGetReturnFlagName returns a malloc'ed string: copy it and free it. */
@@ -66,6 +77,10 @@ static void ark_destroy(gw_solver *s)
         N_VDestroy(a->abstol);
     if (a->y)
         N_VDestroy(a->y);
+    N_Vector *peek[] = {&a->yp, &a->y0, &a->d0, &a->d1};
+    for (size_t i = 0; i < sizeof peek / sizeof *peek; i++)
+        if (*peek[i])
+            N_VDestroy(*peek[i]);
     if (a->ctx)
         SUNContext_Free(&a->ctx);
     free(a->rootinfo);
@@ -180,6 +195,8 @@ static int ark_create(gw_solver *s, double t0, const double *y0, gw_err *err)
     }
     memcpy(N_VGetArrayPointer(a->y), y0, (size_t)s->sys.dim * sizeof *y0);
     a->t = t0;
+    a->tlast = t0;
+    a->fresh = 1;
     a->erk = method == GW_ARKODE_ERK;
     /* ERKStep touches the vectors only through their ops: a right-hand side
      * by ranges runs queued, in one pass with the stage's linear combination */
@@ -212,27 +229,223 @@ static int ark_create(gw_solver *s, double t0, const double *y0, gw_err *err)
     return GW_OK;
 }
 
+/* ERKStep's or ARKStep's call, whichever the memory is. */
+static int ark_evolve(ark_impl *a, double tout, double *tret, int itask)
+{
+    return a->erk ? ERKStepEvolve(a->mem, tout, a->y, tret, itask) : ARKStepEvolve(a->mem, tout, a->y, tret, itask);
+}
+
+static int ark_dky(ark_impl *a, double t, int k, N_Vector v)
+{
+    return a->erk ? ERKStepGetDky(a->mem, t, k, v) : ARKStepGetDky(a->mem, t, k, v);
+}
+
+/* The step count, the current time, the step to be tried next (after a root
+ * return: the step last taken, ARKode's own) and the step last taken. */
+static void ark_where(const ark_impl *a, long *nst, double *tn, double *hcur, double *hlast)
+{
+    if (a->erk) {
+        ERKStepGetNumSteps(a->mem, nst);
+        ERKStepGetCurrentTime(a->mem, tn);
+        ERKStepGetCurrentStep(a->mem, hcur);
+        ERKStepGetLastStep(a->mem, hlast);
+    } else {
+        ARKStepGetNumSteps(a->mem, nst);
+        ARKStepGetCurrentTime(a->mem, tn);
+        ARKStepGetCurrentStep(a->mem, hcur);
+        ARKStepGetLastStep(a->mem, hlast);
+    }
+}
+
+/* A failed Evolve call: the solver's message, GW_ELIMIT or GW_ESOLVER (gw_sun_failed). */
+static int ark_failed(gw_solver *s, int flag, double tret)
+{
+    char name[64];
+    ark_flag_name(flag, name, sizeof name);
+    return gw_sun_failed(s, "arkode", name, flag == ARK_TOO_MUCH_WORK, tret);
+}
+
+/* The first advance after the set-up: the step given, which knows tout. */
+static int ark_first_step(gw_solver *s, ark_impl *a, double tout)
+{
+    if (!a->first_step)
+        return ARK_SUCCESS;
+    a->first_step = 0;
+    const double h0 = gw_sun_init_step(s->p.dt, s->p.dt_max, a->t, tout);
+    return a->erk ? ERKStepSetInitStep(a->mem, h0) : ARKStepSetInitStep(a->mem, h0);
+}
+
+/* A return held back by a peek, now given (ark_advance_peek). */
+static int ark_pending(gw_solver *s, ark_impl *a, double *t, double *y, int *roots)
+{
+    const int root = a->pend == 2;
+    a->pend = 0;
+    a->t = a->pend_t;
+    *t = a->t;
+    gw_sun_copy_out(a->y, y, s->sys.dim);
+    if (!root)
+        return GW_OK;
+    if (a->erk)
+        ERKStepGetRootInfo(a->mem, a->rootinfo);
+    else
+        ARKStepGetRootInfo(a->mem, a->rootinfo);
+    if (roots)
+        memcpy(roots, a->rootinfo, (size_t)s->sys.nroots * sizeof *roots);
+    return GW_ROOT;
+}
+
+/* The state at p into a->yp: ARKode's dense output within its last step; a p
+ * before it (a call in ARK_NORMAL mode of several steps, from t0 where the
+ * state was a->y0 and its rate a->d0, have0 1; have0 2: the rate unknown) by
+ * a cubic Hermite between t0 and the last step's start (cv_peek_state). */
+static void ark_peek_state(gw_solver *s, ark_impl *a, double p)
+{
+    const int have0 = a->have0;
+    const double t0 = a->t0;
+    long nst = 0;
+    double tn = 0, hcur = 0, hu = 0;
+    ark_where(a, &nst, &tn, &hcur, &hu);
+    if ((p >= tn - hu && p <= tn) || !have0) {
+        ark_dky(a, fmin(tn, fmax(tn - hu, p)), 0, a->yp);
+        return;
+    }
+    const double t1 = tn - hu, H = t1 - t0, u = H > 0 ? (p - t0) / H : 1;
+    ark_dky(a, t1, 0, a->yp);
+    ark_dky(a, t1, 1, a->d1);
+    const double u2 = u * u, u3 = u2 * u;
+    const double h00 = 2 * u3 - 3 * u2 + 1, h10 = (u3 - 2 * u2 + u) * H, h01 = -2 * u3 + 3 * u2,
+                 h11 = (u3 - u2) * H;
+    double *yp = N_VGetArrayPointer(a->yp), *d1 = N_VGetArrayPointer(a->d1);
+    const double *y0 = N_VGetArrayPointer(a->y0), *d0 = N_VGetArrayPointer(a->d0);
+    for (long i = 0; i < s->sys.dim; i++)
+        yp[i] = have0 == 1 ? h00 * y0[i] + h10 * d0[i] + h01 * yp[i] + h11 * d1[i]
+                           : (1 - u) * y0[i] + u * yp[i];
+}
+
+/* An advance towards tout with a peek p before it (gw_solver_set_peek), as
+ * cvode's (cv_advance_peek says why): the Evolve calls an advance to tout
+ * makes without it, ARK_NORMAL towards tout, taken one step at a time
+ * (ARK_ONE_STEP) while the next step cannot reach tout, so that the dense
+ * output at p is in the step that passed it; a step that may reach tout is
+ * taken in ARK_NORMAL mode, whose root search ends at tout, and that call's
+ * return is held back and given at the next call. The step that may reach
+ * tout: the one ARKode will try next (ERKStepGetCurrentStep; failed tests
+ * only shorten it); after a root return that is the step last taken, and
+ * the next may grow by ARKode's largest factor (1e4 on the first step after
+ * a start, 20 after: its defaults, not set here), so 1e4 is allowed for. A
+ * start's first call (after the set-up or a reset) is in ARK_NORMAL mode:
+ * ARKode's first step estimated is not bounded by the way to tout (measured:
+ * 3.9e-5 s where tout was 2e-5 s ahead), and one taken in ARK_ONE_STEP mode
+ * past tout searched its roots beyond it; a p before that call's last step
+ * is then a cubic Hermite from the start, its rate the system's rhs. Stopping at p instead changed
+ * the run: e_n by 7.6e-8 at --dt-out 3e-5 on the 40-disc pile of `layer-make
+ * --n 40` (test_dt_out_bitwise). */
+static int ark_advance_peek(gw_solver *s, double tout, double *t, double *y, int *roots)
+{
+    ark_impl *a = s->impl;
+    const double p = s->peek;
+    if (!a->yp && (!(a->yp = N_VClone(a->y)) || !(a->y0 = N_VClone(a->y)) || !(a->d0 = N_VClone(a->y)) ||
+                   !(a->d1 = N_VClone(a->y)))) {
+        gw_solver_set_error(s, "arkode: out of memory for the state at t = %.9g s", p);
+        return GW_ENOMEM;
+    }
+    if ((a->pend == 1 && a->pend_tout != tout) || (a->pend == 2 && a->pend_t > tout))
+        a->pend = 0;
+    if (a->pend && p > a->pend_t)
+        return ark_pending(s, a, t, y, roots);
+    if (a->pend) { /* another peek before the return held back */
+        ark_peek_state(s, a, p);
+    } else {
+        int flag = ark_first_step(s, a, tout);
+        if (flag < 0)
+            return ark_failed(s, flag, a->t);
+        for (long steps = 0;; steps++) {
+            if (s->p.max_steps > 0 && steps >= s->p.max_steps) {
+                gw_solver_set_error(s, "arkode failed at t = %.9g s (ARK_TOO_MUCH_WORK): more than %ld steps "
+                                    "towards t = %.9g s", a->t, s->p.max_steps, tout);
+                return GW_ELIMIT;
+            }
+            long nst = 0;
+            double tn = a->t, hcur = 0, hu = 0;
+            if (!a->fresh)
+                ark_where(a, &nst, &tn, &hcur, &hu);
+            const double grow = a->root_last ? 1e4 : 1;
+            const int normal = a->fresh || tn >= tout || (p > tn && tn + grow * hcur >= tout);
+            a->have0 = 0;
+            a->t0 = tn;
+            if (p > tn) {
+                if (!a->fresh && ark_dky(a, tn, 0, a->y0) == ARK_SUCCESS && ark_dky(a, tn, 1, a->d0) == ARK_SUCCESS) {
+                    a->have0 = 1;
+                } else {
+                    /* a start: its state, and its rate from the system's rhs */
+                    N_VScale(1.0, a->y, a->y0);
+                    a->have0 = s->sys.rhs(tn, N_VGetArrayPointer(a->y0), N_VGetArrayPointer(a->d0), s->sys.params)
+                                   ? 2 : 1;
+                }
+            }
+            if (!a->fresh && p <= a->tlast) { /* searched, in the last step: no call */
+                ark_peek_state(s, a, p);
+                break;
+            }
+            double tret = a->t;
+            flag = ark_evolve(a, tout, &tret, normal ? ARK_NORMAL : ARK_ONE_STEP);
+            a->tlast = tret;
+            if (flag < 0) {
+                a->t = tret;
+                *t = tret;
+                gw_sun_copy_out(a->y, y, s->sys.dim);
+                return ark_failed(s, flag, tret);
+            }
+            a->fresh = 0;
+            a->root_last = flag == ARK_ROOT_RETURN;
+            if (p <= tret) {
+                ark_peek_state(s, a, p);
+                if (normal || flag == ARK_ROOT_RETURN) {
+                    a->pend = flag == ARK_ROOT_RETURN ? 2 : 1;
+                    a->pend_t = tret;
+                    a->pend_tout = tout;
+                }
+                break;
+            }
+            if (flag == ARK_ROOT_RETURN || normal) {
+                a->pend = flag == ARK_ROOT_RETURN ? 2 : 1;
+                a->pend_t = tret;
+                a->pend_tout = tout;
+                return ark_pending(s, a, t, y, roots);
+            }
+        }
+    }
+    s->peek = 0;
+    a->t = p;
+    *t = p;
+    gw_sun_copy_out(a->yp, y, s->sys.dim);
+    return GW_SOLVER_PEEK;
+}
+
 static int ark_advance(gw_solver *s, double tout, double *t, double *y, int *roots)
 {
     ark_impl *a = s->impl;
+    if (s->peek > a->t && s->peek < tout)
+        return ark_advance_peek(s, tout, t, y, roots);
+    if ((a->pend == 1 && a->pend_tout == tout) || (a->pend == 2 && a->pend_t <= tout))
+        return ark_pending(s, a, t, y, roots);
+    a->pend = 0;
     double tret = a->t;
     if (fabs(tout - a->t) <= 1e-13 * fmax(fabs(tout), fabs(a->t))) {
         *t = a->t;
         gw_sun_copy_out(a->y, y, s->sys.dim);
         return GW_OK;
     }
-    int flag = ARK_SUCCESS;
-    if (a->first_step) {
-        const double h0 = gw_sun_init_step(s->p.dt, s->p.dt_max, a->t, tout);
-        a->first_step = 0;
-        flag = a->erk ? ERKStepSetInitStep(a->mem, h0) : ARKStepSetInitStep(a->mem, h0);
-    }
+    int flag = ark_first_step(s, a, tout);
     if (flag == ARK_SUCCESS)
-        flag = a->erk ? ERKStepEvolve(a->mem, tout, a->y, &tret, ARK_NORMAL)
-                      : ARKStepEvolve(a->mem, tout, a->y, &tret, ARK_NORMAL);
+        flag = ark_evolve(a, tout, &tret, ARK_NORMAL);
+    a->tlast = tret;
     a->t = tret;
     *t = tret;
     gw_sun_copy_out(a->y, y, s->sys.dim);
+    if (flag >= 0)
+        a->fresh = 0;
+    a->root_last = flag == ARK_ROOT_RETURN;
     if (flag == ARK_ROOT_RETURN) {
         if (a->erk)
             ERKStepGetRootInfo(a->mem, a->rootinfo);
@@ -244,12 +457,7 @@ static int ark_advance(gw_solver *s, double tout, double *t, double *y, int *roo
     }
     if (flag >= 0)
         return GW_OK;
-    char msg[sizeof s->errmsg], name[64];
-    gw_snprintf(msg, sizeof msg, "%s", s->errmsg);
-    ark_flag_name(flag, name, sizeof name);
-    gw_solver_set_error(s, "arkode failed at t = %.9g s (%s): %s", tret, name,
-                        msg[0] ? msg : "no message");
-    return flag == ARK_TOO_MUCH_WORK ? GW_ELIMIT : GW_ESOLVER;
+    return ark_failed(s, flag, tret);
 }
 
 static int ark_reset(gw_solver *s, double t, const double *y)
@@ -257,8 +465,13 @@ static int ark_reset(gw_solver *s, double t, const double *y)
     ark_impl *a = s->impl;
     memcpy(N_VGetArrayPointer(a->y), y, (size_t)s->sys.dim * sizeof *y);
     a->t = t;
+    a->tlast = t;
     int flag = a->erk ? ERKStepReset(a->mem, t, a->y) : ARKStepReset(a->mem, t, a->y);
     a->first_step = 0;
+    a->fresh = 1;
+    a->root_last = 0;
+    a->pend = 0;
+    a->have0 = 0;
     if (flag >= 0 && s->p.dt > 0) /* the run's initial step only (cv_reset says why) */
         flag = a->erk ? ERKStepSetInitStep(a->mem, 0.0) : ARKStepSetInitStep(a->mem, 0.0);
     if (flag >= 0 && s->p.dt > 0) /* ARKode's own limit again, with its own step */

@@ -213,15 +213,13 @@ static int cv_create(gw_solver *s, double t0, const double *y0, gw_err *err)
     return GW_OK;
 }
 
-/* A failed CVode call: the solver's message, GW_ELIMIT or GW_ESOLVER. */
+/* A failed CVode call: the solver's message, GW_ELIMIT or GW_ESOLVER
+ * (gw_sun_failed). */
 static int cv_failed(gw_solver *s, int flag, double tret)
 {
-    char msg[sizeof s->errmsg], name[64];
-    gw_snprintf(msg, sizeof msg, "%s", s->errmsg);
+    char name[64];
     cv_flag_name(flag, name, sizeof name);
-    gw_solver_set_error(s, "cvode failed at t = %.9g s (%s): %s", tret, name,
-                        msg[0] ? msg : "no message");
-    return flag == CV_TOO_MUCH_WORK ? GW_ELIMIT : GW_ESOLVER;
+    return gw_sun_failed(s, "cvode", name, flag == CV_TOO_MUCH_WORK, tret);
 }
 
 /* The first advance after the set-up: the step given, which knows tout. */
@@ -337,9 +335,20 @@ static int cv_advance_peek(gw_solver *s, double tout, double *t, double *y, int 
                 CVodeGetCurrentTime(c->mem, &tn);
                 CVodeGetCurrentStep(c->mem, &hcur);
             }
-            /* after a root, the step may grow by CVODE's largest factor (1e4
-             * over the first 10 steps, then 10); a restart's first step
-             * estimated is at most a tenth of the way to tout */
+            /* the step CVODE tries next (CVodeGetCurrentStep: failed tests
+             * only shorten it) is its hprime after a return at tout or in
+             * CV_ONE_STEP mode; after a root return it is the step last
+             * taken, and the next may grow by CVODE's largest factor. No
+             * getter gives hprime there (CVodeGetCurrentStep, CVodeGetLastStep
+             * and CVodeGetIntegratorStats give the step taken), so this relies
+             * on CVODE 6.4's growth limits (ETAMX1 1e4 on a start's first
+             * step, ETAMX2 and ETAMX3 10 after; taken as 1e4 over the first
+             * 10 steps): a larger growth would take a step that reaches tout
+             * in CV_ONE_STEP mode, whose root search then passes tout (the
+             * run would differ from the one without the peek in a root's
+             * bracket, not fail). A restart's first step estimated is at most
+             * a tenth of the way to tout (cvHin's bound). arkode reads the
+             * same way (ark_advance_peek), with ARKode's limits. */
             const double grow = c->root_last ? (nst <= 10 ? 1e4 : 10) : 1;
             /* p already in the last step (a call in CV_NORMAL mode went past
              * it): CV_ONE_STEP searches the rest of the step for roots, as

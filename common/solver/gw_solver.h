@@ -210,14 +210,14 @@ int gw_solver_create(const gw_solver_type *type, const gw_system *sys,
 int gw_solver_advance(gw_solver *s, double tout, double *t, double *y,
                       int *rootsfound);
 
-/* A peek (cvode and rk4): the next gw_solver_advance towards a tout after tpeek
+/* A peek (cvode, arkode and rk4): the next gw_solver_advance towards a tout after tpeek
  * makes the steps and finds the roots that the advance to tout makes without
  * it, and returns GW_SOLVER_PEEK with *t = tpeek and y the state interpolated
  * there as soon as they pass tpeek (a root before it is returned first,
  * GW_ROOT, and the peek stays armed; restarts keep it). The advance to tout
  * goes on at the next call, which returns what it would have. An output
  * between the times a run stops at, without a stop that would change the
- * run (cvode: interpolated in the step that passed tpeek; rk4: a step of
+ * run (cvode, arkode: interpolated in the step that passed tpeek; rk4: a step of
  * rk4 from the start of the step that holds tpeek, the step then made again). Returns 1 when armed, 0 when the backend has none (nothing armed);
  * tpeek <= 0 disarms. */
 enum { GW_SOLVER_PEEK = 2 };

@@ -12,6 +12,7 @@
 #include <sunnonlinsol/sunnonlinsol_fixedpoint.h>
 
 #include "gw_sundials.h"
+#include "gw_locale.h"
 
 int gw_sun_rhs(realtype t, N_Vector y, N_Vector ydot, void *ud)
 {
@@ -386,4 +387,12 @@ int gw_sun_band(const gw_solver *s, N_Vector y, SUNContext ctx, SUNMatrix *A,
 void gw_sun_copy_out(N_Vector v, double *y, long n)
 {
     memcpy(y, N_VGetArrayPointer(v), (size_t)n * sizeof *y);
+}
+
+int gw_sun_failed(gw_solver *s, const char *name, const char *flag_name, int too_much_work, double tret)
+{
+    char msg[sizeof s->errmsg];
+    gw_snprintf(msg, sizeof msg, "%s", s->errmsg);
+    gw_solver_set_error(s, "%s failed at t = %.9g s (%s): %s", name, tret, flag_name, msg[0] ? msg : "no message");
+    return too_much_work ? GW_ELIMIT : GW_ESOLVER;
 }

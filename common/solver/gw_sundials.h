@@ -121,4 +121,10 @@ int gw_sun_band(const gw_solver *s, N_Vector y, SUNContext ctx, SUNMatrix *A,
 /* Copy n doubles from an N_Vector. */
 void gw_sun_copy_out(N_Vector v, double *y, long n);
 
+/* A failed CVode or ARKode call at tret: "NAME failed at t = T s (FLAG):
+ * message" on the solver (the message the solver's error handler left there,
+ * or "no message"); returns GW_ELIMIT when too_much_work (the flag is the
+ * backend's TOO_MUCH_WORK: the step limit), else GW_ESOLVER. */
+int gw_sun_failed(gw_solver *s, const char *name, const char *flag_name, int too_much_work, double tret);
+
 #endif

@@ -1,6 +1,7 @@
-"""docs_frame.py: the frame the docs tests that run the program share (test_docs_commands.py,
-test_docs_examples.py, test_docs_formats.py, test_docs_numbers.py; imported from the tests
-directory, beside them): their PROGRAM SRCDIR arguments, a real page with one text changed
+"""docs_frame.py: the frame the docs tests share (test_docs_commands.py, test_docs_examples.py,
+test_docs_formats.py, test_docs_numbers.py, and for their SRCDIR argument test_docs_links.py
+and test_docs_tests.py; imported from the tests directory, beside them): their arguments, a
+real page with one text changed
 (a drift put in), the self-test's verdict on the faults it must notice, and the closing
 lines (each fault, then the count)."""
 import os
@@ -15,6 +16,15 @@ def program_srcdir(doc):
         print(doc.split("\n")[0], file=sys.stderr)
         return None
     return os.path.abspath(sys.argv[1]), os.path.abspath(sys.argv[2])
+
+
+def srcdir_arg(doc):
+    """The source directory given as the one argument (absolute), else None with the usage
+    (the first line of doc) said on stderr (test_docs_links.py, test_docs_tests.py)."""
+    if len(sys.argv) != 2 or not os.path.isdir(sys.argv[1]):
+        print(doc.split("\n")[0], file=sys.stderr)
+        return None
+    return os.path.abspath(sys.argv[1])
 
 
 def drifted(page, old, new, regex=False):

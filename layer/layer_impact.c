@@ -1121,8 +1121,15 @@ int layer_impact_run(const gw_layer_sample *smp, const gw_layer_params *lp0, con
     const int crowns_checks = h < ip->dt_out * (1 - 1e-9);
     crown_series crowns = {.t = NULL, .kin = NULL, .strain = NULL, .scratch = NULL, .n = 0, .cap = 0,
                            .cap_max = 0, .nr = ip->nrings, .stride = 1, .closed = 0};
-    /* at most 2^24 values (134 MB; 671,000 points of 12 rings, 13 s at 2e-5 s) */
-    crowns.cap_max = 2 * (int)fmax(2048, (double)(1 << 23) / (1 + 2.0 * ip->nrings));
+    /* at most 2^22 values (33.5 MB; 167,772 points of 12 rings, 3.4 s at
+     * 2e-5 s: every check of a first impact within the default t-max of 2 s
+     * at the default rings), or 4096 points above 511 rings. It was 2^24
+     * (134 MB, 13 s), and the crowns' analysis (the spectra, the FFTs) adds
+     * about as much: on the pile of `layer-make --n 40` at --dt-out 1e-2,
+     * --rings 1000 peaked at 262 MB (now 134), and --rings 100 under
+     * --gravity 0.5 (T_f 2.6 s) at 252 MB (now 70 MB), its three speeds
+     * moved by under 1% of their errors (test_crowns_series_bound) */
+    crowns.cap_max = 2 * (int)fmax(2048, (double)(1 << 21) / (1 + 2.0 * ip->nrings));
     if (rc == GW_OK && crowns_checks && !(crowns.scratch = malloc(2 * (size_t)ip->nrings * sizeof *crowns.scratch)))
         rc = gw_err_set(err, GW_ENOMEM, "layer-impact: out of memory for the crowns' series");
     double t0 = gw_clock_ms();

@@ -36,6 +36,7 @@ import subprocess
 import sys
 import tempfile
 
+from docs_frame import drifted, finish, noticed, program_srcdir
 from docs_runner import line_holds
 
 HOME = "/home/me/"
@@ -326,11 +327,10 @@ def self_test(program, pages):
     ]
     missed = []
     for page, old, new, want in cases:
-        if old not in pages[page]:
+        bad = dict(pages, **{page: drifted(pages[page], old, new)})
+        if bad[page] is None:
             missed.append(f"{old!r} (not on {page})")
             continue
-        bad = dict(pages)
-        bad[page] = pages[page].replace(old, new, 1)
         with tempfile.TemporaryDirectory() as d:
             faults = (check_drop_keys(program, d, bad[page]) if page == "docs/drop.md" else
                       check_vtk(program, d, bad[page]) if page == "docs/formats.md" else
@@ -352,27 +352,21 @@ def self_test(program, pages):
         missed.append(f"a message the program does not print: {f1}")
     if not any("gives 'c.r.f_max = 24.4476 N'" in f for f in f2):
         missed.append(f"a number the program does not give: {f2}")
-    if missed:
-        print("self-test: faults not noticed: " + "; ".join(missed))
-        return False
-    return True
+    return noticed(missed)
 
 
 def main():
-    if len(sys.argv) != 3:
-        print(__doc__.split("\n")[0], file=sys.stderr)
+    args = program_srcdir(__doc__)
+    if args is None:
         return 2
-    program, srcdir = os.path.abspath(sys.argv[1]), sys.argv[2]
+    program, srcdir = args
     pages = {rel: open(os.path.join(srcdir, rel), encoding="utf-8").read()
              for rel in ("docs/cli.md", "docs/formats.md", "docs/drop.md", "docs/library.md", "docs/outcomes.md")}
     with tempfile.TemporaryDirectory() as work:
         faults = check(program, work, pages)
         ok = self_test(program, pages)  # reads the VTK run made in work
-    for f in faults:
-        print(f)
-    print(f"test_docs_commands: {len(MESSAGES)} quoted lines, drop's JSON keys, {len(NUMBERS)} quoted results, the VTK fields, "
-          f"{len(faults)} fault(s)")
-    return 1 if faults or not ok else 0
+    return finish(faults, f"test_docs_commands: {len(MESSAGES)} quoted lines, drop's JSON keys, {len(NUMBERS)} quoted "
+                  f"results, the VTK fields, {len(faults)} fault(s)", ok)
 
 
 if __name__ == "__main__":

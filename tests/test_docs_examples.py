@@ -44,6 +44,7 @@ import subprocess
 import sys
 import tempfile
 
+from docs_frame import finish, noticed, not_caught, program_srcdir
 from docs_runner import Runner, command_args, fenced, split_comment
 
 # run as written (each well below a second, the drops about one)
@@ -355,18 +356,14 @@ def self_test(program):
         print(f"self-test: {len(claims)} claims read of 6, "
               f"{sum('the page quotes' in f for f in faults)} faults of 3:\n" + "\n".join(faults))
         return False
-    missed = [w for w in want if not any(w in f for f in faults)]
-    if missed:
-        print("self-test: faults not noticed: " + ", ".join(missed) + "\n" + "\n".join(faults))
-        return False
-    return True
+    return noticed(not_caught(want, faults), faults)
 
 
 def main():
-    if len(sys.argv) != 3:
-        print(__doc__.split("\n")[0], file=sys.stderr)
+    args = program_srcdir(__doc__)
+    if args is None:
         return 2
-    program, srcdir = os.path.abspath(sys.argv[1]), sys.argv[2]
+    program, srcdir = args
     if not self_test(program):
         return 1
     lines = doc_lines(srcdir)
@@ -386,13 +383,11 @@ def main():
         claims += prose_claims(rel, open(os.path.join(srcdir, rel), encoding="utf-8").read())
     faults += check_claims(claims, help_tables(program))
     ncmd = sum(1 for _, _, k, l in lines if l.strip().startswith(("build/granwave ", "$ granwave ")))
-    for f in faults:
-        print(f)
     npy = sum(1 for _, _, k, l in lines if PY_LINE.match(l.strip()) or l.strip().startswith(">>> granwave."))
     pyrun = (f"{c.python_run} of {npy} Python lines run" if c.lib
              else f"{npy} Python lines not run (no GRANWAVE_LIB)")
-    print(f"{ncmd} documented commands, {ninline} inline ones, {pyrun}, {len(claims)} quoted defaults and ranges, {len(faults)} fault(s)")
-    return 1 if faults else 0
+    return finish(faults, f"{ncmd} documented commands, {ninline} inline ones, {pyrun}, {len(claims)} quoted defaults "
+                  f"and ranges, {len(faults)} fault(s)")
 
 
 if __name__ == "__main__":

@@ -35,6 +35,7 @@ import shlex
 import sys
 import tempfile
 
+from docs_frame import drifted, finish, noticed, program_srcdir
 from docs_runner import Runner, first_difference, fenced, line_holds, run
 
 
@@ -221,34 +222,28 @@ def self_test(program, page, work):
     }
     missed = []
     for name, (rx, new) in cases.items():
-        bad = re.sub(rx, new, page, count=1)
-        if bad == page:
+        bad = drifted(page, rx, new, regex=True)
+        if bad is None:
             missed.append(f"{name} (not on the page)")
             continue
         if not check_page(program, work, "self.md", bad):
             missed.append(name)
-    if missed:
-        print("self-test: faults not noticed: " + ", ".join(missed))
-        return False
-    return True
+    return noticed(missed)
 
 
 def main():
-    if len(sys.argv) != 3:
-        print(__doc__.split("\n")[0], file=sys.stderr)
+    args = program_srcdir(__doc__)
+    if args is None:
         return 2
-    program, srcdir = os.path.abspath(sys.argv[1]), sys.argv[2]
+    program, srcdir = args
     rel = "docs/formats.md"
     page = open(os.path.join(srcdir, rel), encoding="utf-8").read()
     with tempfile.TemporaryDirectory() as work:
         faults = check_page(program, work, rel, page)
         ok = self_test(program, page, work)
-    for f in faults:
-        print(f)
     nini = sum(1 for k, _, _ in blocks(page) if k == "ini")
-    print(f"test_docs_formats: the sample, springs and sweep table examples and {nini} configs of {rel}, "
-          f"{len(faults)} fault(s)")
-    return 1 if faults or not ok else 0
+    return finish(faults, f"test_docs_formats: the sample, springs and sweep table examples and {nini} configs of "
+                  f"{rel}, {len(faults)} fault(s)", ok)
 
 
 if __name__ == "__main__":

@@ -23,6 +23,8 @@ import re
 import sys
 import tempfile
 
+from docs_frame import srcdir_arg
+
 SKIP_DIRS = {".git", "results", "__pycache__", ".ipynb_checkpoints"}
 TEXT_EXT = (".md", ".c", ".h", ".py", ".sh", ".ipynb", ".cmake", ".txt", ".ini", ".in")
 LINK = re.compile(r"\]\(\s*<?([^)\s>]+)>?(?:\s+\"[^\"]*\")?\s*\)")
@@ -171,12 +173,12 @@ def selftest():
 
 
 def main():
-    if len(sys.argv) != 2 or not os.path.isdir(sys.argv[1]):
-        print("usage: test_docs_links.py SRCDIR", file=sys.stderr)
+    srcdir = srcdir_arg(__doc__)
+    if srcdir is None:
         return 2
     if not selftest():
         return 1
-    faults, nlinks = check(sys.argv[1])
+    faults, nlinks = check(srcdir)
     for f in faults:
         print("FAIL:", f)
     if faults:

@@ -46,6 +46,8 @@ import subprocess
 import sys
 import tempfile
 
+from docs_frame import finish, noticed, not_caught, program_srcdir
+
 TIMING_KEYS = {"wall_time_ms", "wall_time_s", "integrate_ms", "fft_ms"}
 
 
@@ -780,18 +782,14 @@ def self_test(program, srcdir):
         want = ("chain_beads.csv, which docs/cli.md", "chain.h5, which docs/cli.md", "chain_beads.csv has the columns",
             "the docs list ['t_s', 'f_N']", "says 'F_max is 99.9 N'", "--rtol says", "records 1e-06, not 1e-12",
             "--dt-max says", "made-up fault")
-        missing = [w for w in want if not any(w in x for x in c.faults)]
-        if missing:
-            print("self-test: not caught: " + "; ".join(missing) + "\n  faults: " + "\n  ".join(c.faults))
-            return False
-    return True
+        return noticed(not_caught(want, c.faults), c.faults)
 
 
-def main(argv):
-    if len(argv) != 3:
-        print("usage: test_docs_numbers.py PROGRAM SRCDIR", file=sys.stderr)
+def main():
+    args = program_srcdir(__doc__)
+    if args is None:
         return 2
-    program, srcdir = os.path.abspath(argv[1]), os.path.abspath(argv[2])
+    program, srcdir = args
     if not self_test(program, srcdir):
         return 1
     with tempfile.TemporaryDirectory() as work:
@@ -807,14 +805,9 @@ def main(argv):
             c.claim(page, text, args, get, fmt)
         for cmd, flag, text, args, check in HELP_DEFAULTS:
             c.help_default(cmd, flag, text, args, check)
-        if c.faults:
-            for f in c.faults:
-                print("FAIL: " + f)
-            return 1
-    print(f"{len(OUTPUT_RUNS)} --out runs, {len(CLAIMS)} quoted numbers and {len(HELP_DEFAULTS)} --help defaults "
-          "agree with the docs and the runs")
-    return 0
+    return finish(c.faults, f"{len(OUTPUT_RUNS)} --out runs, {len(CLAIMS)} quoted numbers and {len(HELP_DEFAULTS)} "
+                  f"--help defaults, {len(c.faults)} fault(s)", prefix="FAIL: ")
 
 
 if __name__ == "__main__":
-    sys.exit(main(sys.argv))
+    sys.exit(main())

@@ -11,6 +11,8 @@ import os
 import re
 import sys
 
+from docs_frame import srcdir_arg
+
 
 def registered(cmake_text):
     """Test names of gw_add_test(NAME, gw_add_script_test(NAME, gw_add_clock_test(NAME, gw_add_py_program_test(NAME and add_test(NAME NAME."""
@@ -35,12 +37,12 @@ def faults(cmake_text, doc_text):
             [f"in docs/tests.md, not registered in tests/CMakeLists.txt: {n}" for n in sorted(lst - reg)])
 
 
-def main(argv):
-    if len(argv) != 2:
-        print("usage: test_docs_tests.py SRCDIR", file=sys.stderr)
+def main():
+    srcdir = srcdir_arg(__doc__)
+    if srcdir is None:
         return 2
-    cmake = open(os.path.join(argv[1], "tests", "CMakeLists.txt"), encoding="utf-8").read()
-    doc = open(os.path.join(argv[1], "docs", "tests.md"), encoding="utf-8").read()
+    cmake = open(os.path.join(srcdir, "tests", "CMakeLists.txt"), encoding="utf-8").read()
+    doc = open(os.path.join(srcdir, "docs", "tests.md"), encoding="utf-8").read()
     some = sorted(registered(cmake))[0]
     made_up = "\n".join(l for l in doc.splitlines() if not re.match(r"\|\s*" + some + r"\s*\|", l))
     if not faults(cmake, made_up):
@@ -54,4 +56,4 @@ def main(argv):
 
 
 if __name__ == "__main__":
-    sys.exit(main(sys.argv))
+    sys.exit(main())

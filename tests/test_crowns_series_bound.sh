@@ -1,0 +1,113 @@
+#!/bin/bash
+# test_crowns_series_bound.sh GRANWAVE SRCDIR: the rings' series at the run's
+# checks, from which layer-impact reads its crowns when --dt-out is coarser
+# than the checks (every 2e-5 s), holds at most 2^22 values (4096 checks
+# above 511 rings), every other check dropped when it fills.
+#  1 It held up to 2^24 values (134 MB), and the crowns' analysis (the
+#    spectra, the correlation's FFTs) as much again: on the 40-disc pile of
+#    `layer-make --n 40`, `--rings 1000 --dt-out 1e-2` (T_f 0.306 s, 15,300
+#    checks of 2001 values) peaked at 262 MB; now 134 MB. The check: under
+#    190 MB.
+#  2 `--rings 150 --dt-out 1e-2 --out D`: the spectra's bins per ring bound
+#    the series' length (n <= M/2 + 1, M >= 2n - 1 the FFT's length), so
+#    bins x (1 + 2 rings) bounds its values: 4.6e6 before (every check
+#    kept), 2.3e6 now (every other one, the top frequency 12.5 kHz: an
+#    interval of 4e-5 s); the check: at most 2^22, the interval 2^k 2e-5 s.
+#    Control: its three speeds within their stated errors of the same run's
+#    at the default --dt-out (read from every sample).
+#  Control: a first impact within 2^22 values keeps every check: the pile
+#  under --gravity 0.5 (--other-settling; T_f 2.6 s, 130,000 checks of 12
+#  rings) gives at --dt-out 1e-2 the default --dt-out's speeds and arrivals
+#  bit for bit (at 2^21 values it would have been thinned).
+# Checks that fail on the code before: see docs/tests.md.
+# shellcheck source=test_lib.sh
+. "$(dirname "${BASH_SOURCE[0]}")/test_lib.sh"
+test_setup "$@"
+export LC_ALL=C
+cd "$tmp" || exit 1
+PY=/usr/bin/python3
+
+cpu_run 120 "$GW" layer-make --n 40 --out s40 --quiet >/dev/null 2>&1 ||
+    { ko "layer-make --n 40"; test_summary test_crowns_series_bound; exit; }
+
+# --- 1 peak memory at 1000 rings (not under the sanitizer, whose shadow and
+# quarantine hold more than the run) ---
+if [ -n "$(sanitizer_runtime)" ]; then
+    echo "SKIP: the peak memory under the sanitizer"
+else
+got=$($PY - "$GW" <<'EOF'
+import resource, subprocess, sys
+p = subprocess.run([sys.argv[1], "layer-impact", "--sample", "s40", "--quiet", "--json", "--rings", "1000",
+                    "--dt-out", "1e-2"], capture_output=True, timeout=600)
+print(p.returncode, resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss // 1024)
+EOF
+)
+read -r code mb <<<"$got"
+[ "${code:-x}" = 0 ] && [ "${mb:-999999}" -lt 190 ] &&
+    ok "--rings 1000 --dt-out 1e-2: peak memory $mb MB, under 190 MB (262 before)" ||
+    ko "--rings 1000 --dt-out 1e-2: exit ${code:-?}, peak memory ${mb:-?} MB (at most 190 MB)"
+fi
+
+# --- 2 the series' length at 150 rings, read from its spectra ---
+cpu_run 120 "$GW" layer-impact --sample s40 --quiet --json --rings 150 --dt-out 1e-2 --out o150 >o150.json 2>o150.err
+rc=$?
+got=$($PY - <<'EOF'
+import collections
+bins, fmax = collections.Counter(), 0.0
+for line in open("o150/crowns_spectra.csv"):
+    if line[0].isdigit():
+        f, ring = line.split(",", 2)[:2]
+        bins[ring] += 1
+        fmax = max(fmax, float(f))
+nf = max(bins.values())
+print(len(bins), nf, nf * 301, "%.6g" % (1 / (2 * fmax)))
+EOF
+)
+read -r rings _ values dt <<<"$got"
+rings=${rings:-0} values=${values:-0} dt=${dt:-0}
+[ $rc -eq 0 ] && [ "$rings" = 150 ] || ko "--rings 150 --out: exit $rc, $rings rings in crowns_spectra.csv: $(head -c 300 o150.err)"
+[ "$values" -gt 0 ] && [ "$values" -le $((1 << 22)) ] &&
+    ok "--rings 150: the checks' series holds at most $values values, not above 2^22" ||
+    ko "--rings 150: the checks' series holds up to $values values (its spectra's bins x 301), above 2^22"
+$PY -c "import math, sys; k = math.log2(float(sys.argv[1]) / 2e-5); sys.exit(0 if abs(k - round(k)) < 1e-6 and k >= 1 else 1)" "$dt" &&
+    ok "--rings 150: the series thinned evenly (interval $dt s, a power of two times 2e-5 s)" ||
+    ko "--rings 150: the series' interval $dt s, not thinned to 2, 4, 8 ... times 2e-5 s"
+cpu_run 120 "$GW" layer-impact --sample s40 --quiet --json --rings 150 >ref150.json 2>ref150.err
+got=$($PY - <<'EOF'
+import json
+a, b = json.load(open("o150.json")), json.load(open("ref150.json"))
+n, bad = 0, []
+for k in ("wave_speed", "wave_speed_kinetic", "wave_speed_xcorr"):
+    if a[k] is None or b[k] is None:
+        if (a[k] is None) != (b[k] is None):
+            bad.append(f"{k} {a[k]} vs {b[k]}")
+        continue
+    n += 1
+    if abs(a[k] - b[k]) > min(a[k + "_err"], b[k + "_err"]):
+        bad.append(f"{k} {a[k]:.6g} vs {b[k]:.6g} +- {b[k + '_err']:.3g}")
+print("ok" if n and not bad else f"{n} speeds; " + "; ".join(bad))
+EOF
+)
+[ "$got" = ok ] && ok "control: --rings 150 thinned: its speeds within their errors of the default --dt-out's" ||
+    ko "--rings 150 thinned against the default --dt-out: $got"
+
+# --- control: a long first impact of 12 rings kept whole ---
+long=(--gravity 0.5 --other-settling --t-max 10)
+cpu_run 120 "$GW" layer-impact --sample s40 --quiet --json "${long[@]}" --dt-out 1e-2 >g2.json 2>g2.err
+rc1=$?
+cpu_run 120 "$GW" layer-impact --sample s40 --quiet --json "${long[@]}" >g0.json 2>g0.err
+rc2=$?
+got=$($PY - <<'EOF'
+import json
+a, b = json.load(open("g2.json")), json.load(open("g0.json"))
+keys = ("wave_speed", "wave_speed_kinetic", "wave_speed_xcorr", "wave_speed_err")
+bad = [k for k in keys if a[k] != b[k] or a[k] is None]
+bad += [k for k in ("peak_strain_t", "peak_kinetic_t", "xcorr_delay") if a["crowns"][k] != b["crowns"][k]]
+print("ok" if not bad and b["t_f"] > 2 else f"T_f {b['t_f']}, differ: {bad}")
+EOF
+)
+[ $rc1 -eq 0 ] && [ $rc2 -eq 0 ] && [ "$got" = ok ] &&
+    ok "control: T_f 2.6 s at 12 rings: --dt-out 1e-2 gives the default's speeds and arrivals bit for bit" ||
+    ko "T_f 2.6 s at 12 rings: exit $rc1, $rc2: $got $(head -c 200 g2.err)"
+
+test_summary test_crowns_series_bound

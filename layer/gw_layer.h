@@ -785,7 +785,7 @@ void gw_layer_impact_result_free(gw_layer_impact_result *r);
  * study's setup do (since session 45; before, the run and the setup only) a
  * pile that does not rest on its floor alone (0.5 to 1.5 of its weight) or
  * that leans on a wall taken away (that wall's normal and friction forces'
- * resultant above 0.5 of the weight: a pile wedged between its walls), with
+ * resultant above the pile's weight: a pile wedged between its walls), with
  * GW_EINVAL "side-walls: ...", judged under the material and gravity the
  * sample records it settled with, else the default material (the run then
  * takes its lp; gw_layer_impact_dem_dt, which takes this check, is NaN). */

@@ -208,8 +208,11 @@ static void side_wall_force(const gw_layer_sample *smp, const gw_layer_params *l
  * at 0.5 m/s; seeds 2 to 4 push with 3.7 to 4.3). A wall taken away must carry
  * at most LAYER_SIDE_WALL_LOAD_MAX of the weight (its normal and friction
  * forces' resultant): the stored 300-disc pile's walls push with 0.24 and 0.26
- * of its weight (a pile of discs at rest against a wall, its face slumping
- * without it as any free face of a pile does) and pass. Judged under the
+ * of its weight, a loosely settled 40-disc pile's right wall 0.51 (piles of
+ * discs at rest against a wall, their face slumping without it as any free
+ * face of a pile does: the stored pile's E_k was 0.11 mm of its weight at
+ * 5 ms, seed 1's clump pile's 1.36 mm, 58 % of its strain energy gone), and
+ * pass. Judged under the
  * material and gravity the pile settled with when its sample records them
  * (the loads it rests with, whatever the impact's material: a material the
  * pile did not settle with is the rest and settling checks' to refuse), else

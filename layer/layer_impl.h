@@ -359,9 +359,11 @@ enum { LAYER_DEM_W = 8 };
 #define LAYER_FLOOR_LOAD_MAX 1.5
 /* The share of a pile's weight a side wall an impact takes away may carry
  * (its normal and friction forces' resultant, layer_side_walls_rest_check):
- * the stored 300-disc pile's walls 0.24 and 0.26, the narrow clump piles'
- * (--clumps --width-rm 6 --n 40, seeds 1 to 4) 2.2 to 4.3. */
-#define LAYER_SIDE_WALL_LOAD_MAX 0.5
+ * piles at rest against their walls measured 0.26 (the stored 300-disc pile)
+ * and 0.51 (`layer-make --n 40 --width-rm 14 --seed 2 --ke-threshold 1e-2`,
+ * its right wall), the wedged narrow clump piles 1.29 (`--clumps --width-rm
+ * 6 --n 20 --seed 1`) and 2.2 to 4.7 (--n 40, seeds 1 to 4). */
+#define LAYER_SIDE_WALL_LOAD_MAX 1.0
 /* Below this many times the weight the floor does not carry the pile: a pile
  * with a small E_k at the top of a bounce is in the air (layer-make --n 20 at
  * --ke-threshold 0.1 to 1 was called settled with a floor load of 0, at 0.01

@@ -12,7 +12,7 @@
  * 1.01 of its weight while its walls push with 2.2 and 2.5 times it, and
  * without its right wall its strain energy went into motion (5457 J of
  * kinetic energy at 0.05 s against 1.1 J with both walls). A wall taken away
- * may now carry at most 0.5 of the weight (its normal and friction forces'
+ * may now carry at most the pile's weight (its normal and friction forces'
  * resultant). And gw_layer_impact_check did not apply the rule at all (the
  * run and the setup did): it now refuses what gw_layer_impact refuses, with
  * the same message.
@@ -20,7 +20,7 @@
  *    "side-walls: left: ... leans on its right wall", right naming the left
  *    wall, none the left first), passes both; gw_layer_impact refuses left
  *    with the check's message, byte for byte.
- *  2 P = 0.6 W is refused, P = 0.4 W passes (the bound 0.5); the row 0.05 m
+ *  2 P = 1.2 W is refused, P = 0.8 W passes (the bound 1); the row 0.05 m
  *    away from both walls passes left, right and none.
  *  3 the same row at y = r (the floor carrying nothing: no pile at rest on
  *    its floor alone): gw_layer_impact_check refuses left naming side-walls
@@ -107,14 +107,14 @@ int main(void)
     GW_TEST_OK(rr == GW_EINVAL && rc == rr && strcmp(m, mr) == 0,
                "pressed 2 W, left: gw_layer_impact refuses with the check's message: %d '%s'", rr, mr);
 
-    /* 2 the bound: 0.5 of the weight */
-    s = row(0.6, 1);
+    /* 2 the bound: the weight */
+    s = row(1.2, 1);
     rc = check(&s, GW_LAYER_SIDES_LEFT, m, sizeof m);
-    GW_TEST_OK(rc == GW_EINVAL && strstr(m, "leans on its right wall"), "pressed 0.6 W, left: refused: %d '%s'",
+    GW_TEST_OK(rc == GW_EINVAL && strstr(m, "leans on its right wall"), "pressed 1.2 W, left: refused: %d '%s'",
                rc, m);
-    s = row(0.4, 1);
+    s = row(0.8, 1);
     rc = check(&s, GW_LAYER_SIDES_LEFT, m, sizeof m);
-    GW_TEST_OK(rc == GW_OK, "pressed 0.4 W, left: passes: %d '%s'", rc, m);
+    GW_TEST_OK(rc == GW_OK, "pressed 0.8 W, left: passes: %d '%s'", rc, m);
     s = row(-1, 1);
     int pass = 1;
     for (int k = GW_LAYER_SIDES_LEFT; k <= GW_LAYER_SIDES_NONE; k++)

@@ -780,7 +780,15 @@ void gw_layer_impact_result_free(gw_layer_impact_result *r);
  * the walls, which the box rule already does). gw_layer_impact_rest_check,
  * gw_layer_impact_gap_check, gw_layer_impact_dem_dt,
  * gw_layer_impact_settled_check and gw_layer_impact take the same check, with
- * the same message; gw_layer_impact takes it once a run. */
+ * the same message; gw_layer_impact takes it once a run. With ip->side_walls
+ * other than both (the floor kept), it refuses as gw_layer_impact and the
+ * study's setup do (since session 45; before, the run and the setup only) a
+ * pile that does not rest on its floor alone (0.5 to 1.5 of its weight) or
+ * that leans on a wall taken away (that wall's normal and friction forces'
+ * resultant above the pile's weight: a pile wedged between its walls), with
+ * GW_EINVAL "side-walls: ...", judged under the material and gravity the
+ * sample records it settled with, else the default material (the run then
+ * takes its lp; gw_layer_impact_dem_dt, which takes this check, is NaN). */
 int gw_layer_impact_check(const gw_layer_sample *s, const gw_layer_impact_params *ip,
                           gw_err *err);
 

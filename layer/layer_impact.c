@@ -176,31 +176,96 @@ static int impact_walls(const gw_layer_impact_params *ip)
            (s == GW_LAYER_SIDES_BOTH || s == GW_LAYER_SIDES_RIGHT ? GW_LAYER_WALL_RIGHT : 0);
 }
 
-/* A pile the impact keeps without a side wall must rest on its floor alone:
- * one whose side walls help hold it (their friction carrying part of its
- * weight, or pulling it down onto a floor that carries more than it: the
- * narrow clump piles layer-make calls settled by the walls' share) falls
- * apart at t = 0 once a wall is gone, the block hitting a collapsing pile.
- * Refused, naming side-walls, the floor's and the walls' shares; the floor
- * alone within [LAYER_FLOOR_LOAD_MIN, LAYER_FLOOR_LOAD_MAX] of the weight
- * (layer_load_rests without walls) passes. */
+/* The force (N) the side wall side (GW_LAYER_SPRING_LEFT or _RIGHT) exerts on
+ * the pile of smp under lp's material: its contacts' Hertz normal forces
+ * (horizontal, *fn) and their friction through the springs the sample keeps
+ * against it (vertical, upward, *ft: layer_sample_side_hold at friction_deg). */
+static void side_wall_force(const gw_layer_sample *smp, const gw_layer_params *lp, double friction_deg, int side,
+                            double *fn, double *ft)
+{
+    *fn = 0;
+    for (int i = 0; i < smp->n; i++) {
+        const double u = side == GW_LAYER_SPRING_LEFT ? smp->r[i] - smp->x[i] : smp->r[i] - (smp->width - smp->x[i]);
+        if (u > 0)
+            *fn += gw_layer_kn(lp, smp->r[i]) * u * sqrt(u);
+    }
+    *ft = smp->springs ? layer_sample_side_hold(smp, lp, friction_deg, side) : 0;
+}
+
+/* A pile the impact keeps without a side wall must rest on its floor alone
+ * and must not lean on the wall taken away. One whose side walls help hold it
+ * (their friction carrying part of its weight, or pulling it down onto a floor
+ * that carries more than it: the narrow clump piles layer-make calls settled
+ * by the walls' share) falls apart at t = 0 once a wall is gone, the block
+ * hitting a collapsing pile: the floor alone within [LAYER_FLOOR_LOAD_MIN,
+ * LAYER_FLOOR_LOAD_MAX] of the weight (layer_load_rests without walls)
+ * passes. The floor's share alone passed a pile wedged between its walls:
+ * `layer-make --clumps --width-rm 6 --n 40 --seed 1` rests with its floor at
+ * 1.01 of its weight and its walls' friction at +0.26 (left) and -0.31
+ * (right), but its walls push it with 2.20 and 2.50 times its weight; without
+ * the right wall its strain energy (1845 J) went into motion, 5457 J of
+ * kinetic energy at 0.05 s against 1.1 J with both walls (a block of 0.2 R_m
+ * at 0.5 m/s; seeds 2 to 4 push with 3.7 to 4.3). A wall taken away must carry
+ * at most LAYER_SIDE_WALL_LOAD_MAX of the weight (its normal and friction
+ * forces' resultant): the stored 300-disc pile's walls push with 0.24 and 0.26
+ * of its weight, a loosely settled 40-disc pile's right wall 0.51 (piles of
+ * discs at rest against a wall, their face slumping without it as any free
+ * face of a pile does: the stored pile's E_k was 0.11 mm of its weight at
+ * 5 ms, seed 1's clump pile's 1.36 mm, 58 % of its strain energy gone), and
+ * pass. Judged under the
+ * material and gravity the pile settled with when its sample records them
+ * (the loads it rests with, whatever the impact's material: a material the
+ * pile did not settle with is the rest and settling checks' to refuse), else
+ * under lp's, or the default material when lp is NULL (gw_layer_impact_check,
+ * which has no material). Refused, naming side-walls and the shares. */
 int layer_side_walls_rest_check(const gw_layer_sample *smp, const gw_layer_params *lp,
                                 const gw_layer_impact_params *ip, gw_err *err)
 {
-    if (ip->remove_walls || ip->side_walls == GW_LAYER_SIDES_BOTH || !(lp->gravity > 0))
+    if (ip->remove_walls || ip->side_walls == GW_LAYER_SIDES_BOTH)
+        return GW_OK;
+    gw_layer_params m = lp ? *lp : gw_layer_params_default();
+    if (!lp)
+        m.mass_law = smp->mass_law;
+    double phi = m.friction_deg;
+    if (smp->settled.recorded) {
+        m.shear_modulus = smp->settled.shear_modulus;
+        m.poisson = smp->settled.poisson;
+        m.density = smp->settled.density;
+        m.gravity = smp->settled.gravity;
+        m.mass_law = smp->settled.mass_law;
+        phi = smp->settled.friction_deg;
+    }
+    if (!(m.gravity > 0))
         return GW_OK;
     double f, w;
-    layer_floor_load(lp, smp->n, smp->y, smp->r, sizeof *smp->y, &f, &w);
-    if (!(w > 0) || layer_load_rests(f, 0, w))
+    layer_floor_load(&m, smp->n, smp->y, smp->r, sizeof *smp->y, &f, &w);
+    if (!(w > 0))
         return GW_OK;
-    const double hold = smp->springs ? layer_sample_wall_hold(smp, lp, lp->friction_deg) : 0;
     const char *gone = ip->side_walls == GW_LAYER_SIDES_LEFT ? "its right wall"
                        : ip->side_walls == GW_LAYER_SIDES_RIGHT ? "its left wall" : "its side walls";
-    return gw_err_set(err, GW_EINVAL, "side-walls: %s: the sample's pile does not rest on its floor alone (at t = 0 "
-                      "the floor carries %.3g of its weight and the side walls %.3g; at rest on the floor: %g to %g): "
-                      "its side walls help hold it, and without %s it is not at rest (give side-walls both, or a "
-                      "sample settled on its floor)", side_walls_name(ip->side_walls), f / w, hold / w,
-                      LAYER_FLOOR_LOAD_MIN, LAYER_FLOOR_LOAD_MAX, gone);
+    if (!layer_load_rests(f, 0, w)) {
+        const double hold = smp->springs ? layer_sample_wall_hold(smp, &m, phi) : 0;
+        return gw_err_set(err, GW_EINVAL, "side-walls: %s: the sample's pile does not rest on its floor alone (at "
+                          "t = 0 the floor carries %.3g of its weight and the side walls %.3g; at rest on the floor: "
+                          "%g to %g): its side walls help hold it, and without %s it is not at rest (give side-walls "
+                          "both, or a sample settled on its floor)", side_walls_name(ip->side_walls), f / w, hold / w,
+                          LAYER_FLOOR_LOAD_MIN, LAYER_FLOOR_LOAD_MAX, gone);
+    }
+    for (int k = 0; k < 2; k++) {
+        const int side = k == 0 ? GW_LAYER_SPRING_LEFT : GW_LAYER_SPRING_RIGHT;
+        if (ip->side_walls == (k == 0 ? GW_LAYER_SIDES_LEFT : GW_LAYER_SIDES_RIGHT))
+            continue; /* kept */
+        double fn, ft;
+        side_wall_force(smp, &m, phi, side, &fn, &ft);
+        if (hypot(fn, ft) > LAYER_SIDE_WALL_LOAD_MAX * w)
+            return gw_err_set(err, GW_EINVAL, "side-walls: %s: the sample's pile leans on its %s wall (at t = 0 it "
+                              "pushes the pile with %.3g of its weight and its friction carries %.3g, while the floor "
+                              "carries %.3g; a wall taken away may carry at most %g): the pile is wedged between its "
+                              "walls, and without %s it is not at rest (give side-walls both, or a sample settled in "
+                              "a wider box)", side_walls_name(ip->side_walls), k == 0 ? "left" : "right", fn / w,
+                              ft / w, f / w, LAYER_SIDE_WALL_LOAD_MAX, gone);
+    }
+    return GW_OK;
 }
 
 int gw_layer_impact_check(const gw_layer_sample *smp, const gw_layer_impact_params *p, gw_err *err)
@@ -209,8 +274,13 @@ int gw_layer_impact_check(const gw_layer_sample *smp, const gw_layer_impact_para
         return gw_err_set(err, GW_EINVAL, "gw_layer_impact_check: %s is NULL", !smp ? "s" : "ip");
     /* the limits every sample is held to (the reader's: a disc outside the
      * box, of a radius 1e6 R_m, or two at one place ran before session 43) */
-    const int rc = layer_sample_shape_check(smp, "s", err);
-    return rc == GW_OK ? layer_impact_params_check(smp, p, err) : rc;
+    int rc = layer_sample_shape_check(smp, "s", err);
+    if (rc == GW_OK)
+        rc = layer_impact_params_check(smp, p, err);
+    /* the side walls kept, as the run and the setup judge them (the setup's
+     * check and gw_layer_impact applied it, this check did not until session
+     * 45): under the sample's recorded settling, else the default material */
+    return rc == GW_OK ? layer_side_walls_rest_check(smp, NULL, p, err) : rc;
 }
 
 int layer_impact_params_check(const gw_layer_sample *smp, const gw_layer_impact_params *p, gw_err *err)

@@ -357,6 +357,13 @@ enum { LAYER_DEM_W = 8 };
  * (layer_make.c) and layer-impact refuses the sample
  * (gw_layer_impact_rest_check). */
 #define LAYER_FLOOR_LOAD_MAX 1.5
+/* The share of a pile's weight a side wall an impact takes away may carry
+ * (its normal and friction forces' resultant, layer_side_walls_rest_check):
+ * piles at rest against their walls measured 0.26 (the stored 300-disc pile)
+ * and 0.51 (`layer-make --n 40 --width-rm 14 --seed 2 --ke-threshold 1e-2`,
+ * its right wall), the wedged narrow clump piles 1.29 (`--clumps --width-rm
+ * 6 --n 20 --seed 1`) and 2.2 to 4.7 (--n 40, seeds 1 to 4). */
+#define LAYER_SIDE_WALL_LOAD_MAX 1.0
 /* Below this many times the weight the floor does not carry the pile: a pile
  * with a small E_k at the top of a bounce is in the air (layer-make --n 20 at
  * --ke-threshold 0.1 to 1 was called settled with a floor load of 0, at 0.01
@@ -422,15 +429,21 @@ void layer_floor_load(const gw_layer_params *lp, int n, const double *y, const d
  * right walls, under lp's material and a friction angle of friction_deg, as
  * an impact loads them (layer_settled.c). */
 double layer_sample_wall_hold(const gw_layer_sample *smp, const gw_layer_params *lp, double friction_deg);
+/* The same of one side wall (side GW_LAYER_SPRING_LEFT or _RIGHT; 0: both,
+ * layer_sample_wall_hold, summed in the springs' order). */
+double layer_sample_side_hold(const gw_layer_sample *smp, const gw_layer_params *lp, double friction_deg, int side);
 /* gw_layer_impact_rest_check with other_settling: 1 allows the floor load the
  * sample's recorded settling explains, LAYER_FLOOR_LOAD_MAX q times the weight
  * (q = gw_layer_settled_load_ratio above 1), as other-settling allows the
  * settling check's q (layer-impact and a layer sweep, with the warning
  * gw_layer_impact_settled_check records); 0 is gw_layer_impact_rest_check. */
 /* A pile an impact keeps without a side wall (ip->side_walls other than
- * both, the floor kept) must rest on its floor alone under lp's material:
- * GW_EINVAL naming side-walls, the floor's and the walls' shares, otherwise
- * (layer_impact.c; the run, and a plan's or a sweep case's check). */
+ * both, the floor kept) must rest on its floor alone, and each wall taken
+ * away carry at most LAYER_SIDE_WALL_LOAD_MAX of its weight, under the
+ * material the sample records it settled with, else lp's (NULL: the
+ * default material): GW_EINVAL naming side-walls, the floor's and the walls'
+ * shares, otherwise (layer_impact.c; the run, a plan's or a sweep case's
+ * check, and gw_layer_impact_check with lp NULL: one rule). */
 int layer_side_walls_rest_check(const gw_layer_sample *smp, const gw_layer_params *lp,
                                 const gw_layer_impact_params *ip, gw_err *err);
 int layer_rest_check(const gw_layer_sample *smp, const gw_layer_params *lp, int other_settling, const char *name,

@@ -82,6 +82,9 @@ static const gw_param make_fields[] = {
        "pulling it down); the pile rests when floor_load or floor_load + wall_load lies in [0.5, 1.5]"),
     RD("fall_energy", r.fall_energy, "J", "what the grains in flight at the end (touching nothing) land with"),
     RD("ke_limit", r.ke_limit, "J", "the settling threshold ke-threshold M g R_m (M: the sample's mass)"),
+    RD("ke_top_share", r.ke_top_share, "", "the share of ke_final the one grain (clump or disc) that moves most "
+       "holds at the end, in [0, 1] (0: none moves; near 1 on a pile that did not settle: one grain still rolling "
+       "or rocking on a pile at rest)"),
     RD("t_judge", r.t_judge, "s", "the settling is judged from this time on (a t-max below it cannot converge)"),
     RD("max_overlap_over_rp", r.max_overlap, "", "largest u_n / R_p at the end"),
     RI("n_removed_above_height", r.n_removed, "particles (clumps: grains) above height-rm taken away"),

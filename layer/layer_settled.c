@@ -215,11 +215,17 @@ int gw_layer_impact_settled_check(const gw_layer_sample *smp, const gw_layer_par
  * gets F_t n_x upward. */
 double layer_sample_wall_hold(const gw_layer_sample *smp, const gw_layer_params *lp, double friction_deg)
 {
+    return layer_sample_side_hold(smp, lp, friction_deg, 0);
+}
+
+double layer_sample_side_hold(const gw_layer_sample *smp, const gw_layer_params *lp, double friction_deg, int side)
+{
     const double tp = tan(friction_deg * M_PI / 180);
     double up = 0;
     for (int k = 0; smp->springs && k < smp->n_springs; k++) {
         const int a = smp->springs[k].a, wall = smp->springs[k].b;
-        if (a < 0 || a >= smp->n || (wall != GW_LAYER_SPRING_LEFT && wall != GW_LAYER_SPRING_RIGHT))
+        if (a < 0 || a >= smp->n || (wall != GW_LAYER_SPRING_LEFT && wall != GW_LAYER_SPRING_RIGHT) ||
+            (side != 0 && wall != side))
             continue;
         const double ra = smp->r[a];
         const double un = wall == GW_LAYER_SPRING_LEFT ? ra - smp->x[a] : ra - (smp->width - smp->x[a]);

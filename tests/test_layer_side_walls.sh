@@ -20,6 +20,12 @@
 #    side (fell_off, bounced false), the settings name side_walls left;
 #  5 --side-walls both gives the default's JSON (but wall_time_ms), with no
 #    side_walls key (every other run's JSON unchanged).
+#  6 (session 45) layer-make's --json gives that share, ke_top_share, the
+#    warning's value to 2 digits (it was in the warning only);
+#  7 (session 45) a row of 5 discs on the floor pressed between its walls with
+#    twice its weight (the floor carrying 1.00 of it): --side-walls left is
+#    refused naming the right wall's push (the floor's share alone passed
+#    it), both walls kept it runs.
 # About 12 s of CPU (the pluviation to 3 s).
 # shellcheck source=refusal_lib.sh
 . "$2/tests/refusal_lib.sh"
@@ -97,6 +103,44 @@ if [ $rc0 -eq 0 ] && [ $rc -eq 0 ] && [ "$v" = True ]; then
     ok "--side-walls both: the default's JSON, no side_walls key"
 else
     ko "--side-walls both: exit $rc0/$rc, equal and keyless: $v $(head -c 300 b.err)"
+fi
+
+# --- 6 the grain's share in layer-make's JSON ---
+v=$(jq_py p.json 'd["converged"] is False and "%.2g" % d["ke_top_share"] == "'"$share"'"' 2>/dev/null)
+if [ -n "$share" ] && [ "$v" = True ]; then
+    ok "layer-make --json: ke_top_share $(jq_py p.json 'd["ke_top_share"]'), the warning's $share"
+else
+    ko "layer-make --json: ke_top_share $(jq_py p.json 'd.get("ke_top_share")' 2>&1 | tail -1) against the warning's '$share'"
+fi
+
+# --- 7 a pile wedged between its walls, its floor carrying its weight (session 45) ---
+# 5 discs (r = 0.1 m) in a row on the floor, each with the floor overlap that
+# carries its weight, pressed between the walls with twice the row's weight
+# (Hertz K_n = 2 sqrt(2 r) G / (3 (1 - nu)), the default material): the floor's
+# share alone (1) passed it, as it passed `layer-make --clumps --width-rm 6
+# --n 40 --seed 1` (floor 1.01, walls pushing with 2.2 and 2.5 times its weight)
+/usr/bin/python3 - <<'PY'
+import math
+G, nu, rho, g, r, n = 40e9, 0.25, 2650.0, 9.81, 0.1, 5
+kn, mg = 2 * math.sqrt(2 * r) * G / (3 * (1 - nu)), rho * math.pi * r * r * g
+uf, uw = (mg / kn) ** (2 / 3), (2 * n * mg / kn) ** (2 / 3)
+x = [r - uw + i * (2 * r - uw) for i in range(n)]
+with open("row.txt", "w") as f:
+    f.write("granwave-layer-sample 1\n# units: metres; lines after 'n' are: x y r\n")
+    f.write(f"width {x[-1] + r - uw!r}\nrm {r!r}\nvolume_ratio 1\nseed 0\nmass_law disc\nn {n}\n")
+    for xi in x:
+        f.write(f"{xi!r} {r - uf!r} {r!r}\n")
+PY
+cpu_run 60 "$GW" layer-impact --sample row.txt --side-walls left --t-max 1e-3 --json --quiet >w.json 2>w.err
+rc=$?
+cpu_run 60 "$GW" layer-impact --sample row.txt --t-max 1e-3 --json --quiet >wb.json 2>wb.err
+rcb=$?
+if [ $rc -eq 2 ] && [ "$(wc -l <w.err)" = 1 ] && [ ! -s w.json ] &&
+    grep -q -- "--side-walls: left: the sample's pile leans on its right wall (at t = 0 it pushes the pile with 2 of its weight" w.err &&
+    grep -q "while the floor carries 1; a wall taken away may carry at most 1" w.err && [ $rcb -eq 0 ]; then
+    ok "a row pressed between its walls: --side-walls left refused naming the right wall's push, both runs"
+else
+    ko "a row pressed between its walls: exit $rc (both: $rcb), $(head -c 400 w.err) $(head -c 200 wb.err)"
 fi
 
 test_summary test_layer_side_walls

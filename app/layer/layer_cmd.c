@@ -253,6 +253,7 @@ int gw_cmd_layer_make(int argc, char **argv)
         cJSON_AddNumberToObject(j, "wall_load", r.wall_load);
         cJSON_AddNumberToObject(j, "fall_energy", r.fall_energy);
         cJSON_AddNumberToObject(j, "ke_limit", r.ke_limit);
+        cJSON_AddNumberToObject(j, "ke_top_share", r.ke_top_share);
         cJSON_AddNumberToObject(j, "steps", (double)r.steps);
         cJSON_AddNumberToObject(j, "rebuilds", (double)r.rebuilds);
         cJSON_AddNumberToObject(j, "wall_time_ms", r.wall_ms);

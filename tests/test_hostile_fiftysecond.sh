@@ -20,6 +20,13 @@
 #    it now says the impacts reached the threshold at a contact's end.
 #    Controls: --peak-threshold 1e9 (no impact) keeps the old line; the rigid
 #    sensor's impacts are located peaks.
+#  3 layer-impact's options given at their default's value where they have no
+#    effect passed in silence: `--rtol 1e-8` (or --atol) with verlet or rk4
+#    (1e-6 was refused), `--side-walls both` with --remove-walls (left was
+#    refused), in the program, a sweep case and Python alike: the rows were
+#    judged given by their value. rtol, atol and side-walls are now optional
+#    rows (not given: NaN, -1), refused at any value given. Controls: the
+#    default run and --solver cvode --rtol 1e-8 run.
 # Checks that fail on the code before: see docs/tests.md.
 # shellcheck source=refusal_lib.sh
 . "$(dirname "${BASH_SOURCE[0]}")/refusal_lib.sh"
@@ -81,5 +88,32 @@ cpu_run 120 "$GW" drop --quiet --json >dr.json 2>dr.err </dev/null
 import json, sys; d = json.load(open('dr.json'))
 sys.exit(0 if d['n_impacts'] > 0 and d['n_peaks'] > 0 and all(i['located'] for i in d['impacts']) else 1)" &&
     ok "control: the default drop's impacts are located peaks" || ko "control: the default drop's impacts"
+
+# 3 options given at their default's value without effect
+make_sample s40 --n 40 --quiet
+refused "3 layer-impact --rtol 1e-8 (verlet)" "^granwave layer-impact --rtol: has no effect with the fixed-step verlet" \
+    layer-impact --sample s40 --rtol 1e-8 --out o
+refused "3 layer-impact --exact --atol 1e-8 (rk4)" "^granwave layer-impact --atol: has no effect with the fixed-step rk4" \
+    layer-impact --sample s40 --exact --atol 1e-8 --out o
+refused "3 layer-impact --remove-walls --side-walls both" \
+    "^granwave layer-impact --side-walls: both is given with remove-walls, which takes every wall away" \
+    layer-impact --sample s40 --remove-walls --side-walls both --out o
+printf '[sweep]\nmodel = layer\n[grid]\npoint = 0:1\n[params]\nsample = s40\npoints = 2\nrtol = 1e-8\n' >lr.ini
+refused "3 a layer sweep with rtol = 1e-8 (verlet)" "case 0: rtol: has no effect with the fixed-step verlet" \
+    sweep lr.ini --out o
+pyenv /usr/bin/python3 -c "
+import granwave
+try:
+    granwave.layer_impact(sample='s40', remove_walls=True, side_walls='both')
+except granwave.GranwaveValueError as e:
+    assert 'side_walls: both is given with remove_walls' in str(e), str(e)
+else:
+    raise SystemExit('ran')
+" 2>py3.err && ok "3 Python: layer_impact(remove_walls=True, side_walls='both') refused" ||
+    ko "3 Python: side_walls='both' with remove_walls: $(tail -c 300 py3.err)"
+cpu_run 120 "$GW" layer-impact --sample s40 --solver cvode --rtol 1e-8 --t-max 0.01 --quiet >c3.txt 2>c3.err </dev/null &&
+    cpu_run 120 "$GW" layer-impact --sample s40 --side-walls both --t-max 0.01 --quiet >d3.txt 2>d3.err </dev/null &&
+    ok "control: --solver cvode --rtol 1e-8 and --side-walls both (walls kept) run" ||
+    ko "control: cvode --rtol 1e-8 or --side-walls both: $(head -c 300 c3.err d3.err)"
 
 test_summary test_hostile_fiftysecond

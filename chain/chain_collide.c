@@ -933,9 +933,20 @@ void chain_chatter_rerun(const gw_solver_type *type, double step, gw_solver_para
         gw_snprintf(how, how_size, "rk4's step halved, %g s", sp->dt);
         gw_snprintf(flags, flags_size, "--dt %g (half the step)", sp->dt);
     } else {
-        sp->rtol = fmax(0.1 * sp->rtol, 1e-15);
-        sp->atol = fmax(0.1 * sp->atol, 1e-15);
-        gw_snprintf(how, how_size, "rtol %g, atol %g", sp->rtol, sp->atol);
+        /* 10 times tighter where both can be: at the floor GW_TOL_MIN neither
+         * could, and the rerun of rtol = atol = 1e-15 was the run itself, bit
+         * for bit, its chatter "none" (chain --n 3 --sensor-mass 1e-4
+         * --sensor-stiffness 1e3 --rtol 1e-15 --atol 1e-15: chatter 0 and no
+         * word, where 1e-14 against 1e-15 moved eps_eff by 1.35e-6); one at
+         * the floor (rtol 1e-15, atol 1e-12) was run again changing the other
+         * alone. Then both are 10 times looser (at most GW_TOL_MAX): the
+         * spread measured is the looser run's, a bound on this one's */
+        const int tighter = sp->rtol >= 10 * GW_TOL_MIN * (1 - 1e-9) && sp->atol >= 10 * GW_TOL_MIN * (1 - 1e-9);
+        const double f = tighter ? 0.1 : 10.0;
+        sp->rtol = fmin(fmax(f * sp->rtol, GW_TOL_MIN), GW_TOL_MAX);
+        sp->atol = fmin(fmax(f * sp->atol, GW_TOL_MIN), GW_TOL_MAX);
+        gw_snprintf(how, how_size, "rtol %g, atol %g%s", sp->rtol, sp->atol,
+                    tighter ? "" : " (10 times looser: 1e-15 is the floor)");
         gw_snprintf(flags, flags_size, "--rtol %g --atol %g", sp->rtol, sp->atol);
     }
 }
@@ -954,7 +965,7 @@ static void chatter_spread(const gw_chain *c, const gw_chain_run_opts *o, int dr
     o2.sample = NULL;
     o2.sample_ctx = NULL;
     o2.sp = pl->sp; /* the plan's step bounds, and the tolerances tightened */
-    char how[64], flags[80], ending[CHAIN_CHATTER_TEXT];
+    char how[96], flags[80], ending[CHAIN_CHATTER_TEXT];
     chain_chatter_rerun(pl->type, chain_plan_step(pl), &o2.sp, how, sizeof how, flags, sizeof flags);
     /* a costly run is not run again (--n 3 --sensor-mass 1e-7 --sensor-stiffness 1e3:
      * 6707 contacts, 4.8 million steps, a minute), and says so */
@@ -980,7 +991,7 @@ static void chatter_spread(const gw_chain *c, const gw_chain_run_opts *o, int dr
     }
     r->chatter_kind = rc == GW_OK ? GW_CHAIN_CHATTER_MOVED : GW_CHAIN_CHATTER_FAILED;
     r->chatter_spread = rc == GW_OK ? d : 0;
-    char where[48];
+    char where[112];
     gw_snprintf(where, sizeof where, "; %d at %s", r2.wall_contacts, how);
     if (rc == GW_OK)
         gw_snprintf(ending, sizeof ending, "and a rerun there gave eps_eff %.6g against %.6g, tau_N %.6g s against "

@@ -285,6 +285,19 @@ static int episode_end(drop_state *st, double t, const double *y, int end)
     st->in_episode = 0;
     if (end && isnan(st->t_end1))
         st->t_end1 = t;
+    /* the force at the episode's end (the located event's state, observed
+     * only after this): a sensor body's reading k_s x_s + c v_s still rises
+     * as bead 1 leaves, so the episode's largest force is there, no peak is
+     * located inside it and its f_max was the last sample before the end
+     * (drop --n 3 --sensor-mass 1e-4 --sensor-stiffness 1e3: 0.714172 N at
+     * --dt-out 1e-6, 0.714384 at 3e-7). The start is observed after
+     * episode_start, as every event's state */
+    const double f = gw_chain_wall_force(st->d->c, y);
+    if (f > st->ep_fsample) {
+        st->ep_fsample = f;
+        st->ep_tsample = t;
+        st->ep_cluster_sample = cluster_of(st, y);
+    }
     int rc = GW_OK;
     if (st->ep_index < 0 && st->ep_fsample >= st->p->peak_threshold && st->ep_fsample > 0)
         rc = episode_record(st);
@@ -590,7 +603,7 @@ static void drop_chatter(const gw_chain_drop_params *p, const gw_chain_run_opts 
     o2.sample = NULL;
     o2.sample_ctx = NULL;
     o2.sp = *sp;
-    char how[64], flags[80];
+    char how[96], flags[80];
     chain_chatter_rerun(type, r->run_dt, &o2.sp, how, sizeof how, flags, sizeof flags);
     gw_chain_drop_result r2;
     gw_err e2 = {{0}};

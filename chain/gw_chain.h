@@ -848,7 +848,9 @@ typedef struct gw_chain_drop_impact {
     int n_peaks;           /* peaks of the episode */
     int cluster;           /* beads joined to the sensor by closed contacts at f_max */
     int located;           /* 1: f_max is a located peak; 0: no peak was located
-                              (a missed episode), f_max is the largest sample */
+                              (a sensor body's reading still rising as bead 1
+                              leaves), f_max is the largest of the samples and
+                              of the force at the contact's end event */
     double chatter;        /* the drop's chatter check (gw_chain_drop_result's
                               chatter_kind): |f_max - the rerun's| / f_max of this
                               impact in a rerun at tighter tolerances, 1 when the

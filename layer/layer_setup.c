@@ -66,19 +66,24 @@ static const gw_param impact_params[] = {
         "fixed step of verlet or rk4, s [0 = auto: verlet the shortest binary contact time / 100, rk4 1e-6]"),
     FLAG("exact", exact, "exact mode: RK4 (or solver cvode|arkode) stopping at every contact and stick/slip "
                          "transition, dt 1e-6 s; the reference the fast default is tested against"),
-    ROW("rtol", GW_PARAM_DOUBLE, rtol, "", GW_TOL_MIN, GW_TOL_MAX, 0, 0, "1e-8", "R",
-        "relative tolerance of cvode/arkode [1e-8]"),
-    ROW("atol", GW_PARAM_DOUBLE, atol, "", GW_TOL_MIN, GW_TOL_MAX, 0, 0, "1e-8", "A",
-        "absolute tolerance (scaled per component) [1e-8]"),
+    /* optional (not given: NaN): a tolerance given at its default's value
+     * with verlet or rk4 passed in silence (--rtol 1e-8), where chain's and
+     * dispersion's, rows without a default, are refused at any value */
+    GW_PARAM_OPT_ROW("rtol", GW_PARAM_DOUBLE, OFF(rtol), "", GW_TOL_MIN, GW_TOL_MAX, 0, 0, "1e-8", "R",
+                     "relative tolerance of cvode/arkode [1e-8]"),
+    GW_PARAM_OPT_ROW("atol", GW_PARAM_DOUBLE, OFF(atol), "", GW_TOL_MIN, GW_TOL_MAX, 0, 0, "1e-8", "A",
+                     "absolute tolerance (scaled per component) [1e-8]"),
     ROW("energy-tol", GW_PARAM_DOUBLE, energy_tol, "", 0, 1, 0, 0, "0", "E",
         "stop (an error; the command exits 1) when the ledger closure |sum - A|/A exceeds E [0 = off]"),
     FLAG("remove-walls", remove_walls, "take the left, right and bottom walls away at the start of the impact"),
     /* one side wall taken away over the floor (the library's walls mask:
      * until session 44 no option removed one alone) */
-    CHOICE("side-walls", side_walls, "both,left,right,none", "both", "KIND",
+    /* optional (not given: -1): both given with remove-walls passed in
+     * silence, as its default's value */
+    GW_PARAM_OPT_CHOICE_ROW("side-walls", OFF(side_walls), "both,left,right,none", "both", "KIND",
            "the side walls kept from the start of the impact, the floor kept: both, left (the right one taken "
-           "away), right or none; a pile whose side walls help hold it is refused without both, and so is any "
-           "but both with remove-walls [both]"),
+           "away), right or none; a pile whose side walls help hold it is refused without both, and any is "
+           "refused with remove-walls [both]"),
     FLAG("full", full, "run to t-max even after the outcome is decided (for the crowns)"),
     /* layer-make's settings line records the pile's settling material: far
      * from it the pile is not at rest at t = 0 (layer_settled.c) */
@@ -412,7 +417,8 @@ static int resolve(const gw_layer_impact_setup *s, const gw_layer_sample *smp, g
         return gw_err_set(err, GW_EINVAL, "solver: unknown solver or method");
     /* options that would have no effect in this combination are refused: a
      * method the backend does not offer, tolerances of a fixed-step solver
-     * (given: other than the table's default), a clump mass without clumps */
+     * (at any value given: rtol and atol are optional rows), a clump mass
+     * without clumps */
     const int m = sp->method, cv = *type == gw_solver_cvode, ak = *type == gw_solver_arkode;
     if (m != GW_METHOD_DEFAULT && !((cv && (m == GW_CVODE_BDF || m == GW_CVODE_ADAMS)) ||
                                     (ak && (m == GW_ARKODE_ERK || m == GW_ARKODE_DIRK))))
@@ -438,8 +444,8 @@ static int resolve(const gw_layer_impact_setup *s, const gw_layer_sample *smp, g
                           "and atol; dt is the fixed step of verlet and rk4)", gw_solver_type_name(*type));
     sp->dt = *type == gw_solver_verlet ? s->dt /* 0: gw_layer_impact chooses */
            : *type == gw_solver_rk4 ? (s->dt > 0 ? s->dt : 1e-6) : 0;
-    sp->rtol = s->rtol;
-    sp->atol = s->atol;
+    sp->rtol = isnan(s->rtol) ? 1e-8 : s->rtol; /* the rows' default, not given */
+    sp->atol = isnan(s->atol) ? 1e-8 : s->atol;
     *ip = gw_layer_impact_params_default();
     ip->rb_rm = s->rb_rm;
     ip->vi = s->vi;
@@ -455,7 +461,10 @@ static int resolve(const gw_layer_impact_setup *s, const gw_layer_sample *smp, g
     ip->nrings = (int)s->rings;
     ip->energy_tol = s->energy_tol;
     ip->remove_walls = s->remove_walls;
-    ip->side_walls = s->side_walls;
+    ip->side_walls = s->side_walls >= 0 ? s->side_walls : GW_LAYER_SIDES_BOTH;
+    if (ip->remove_walls && s->side_walls >= 0) /* both too (any other: layer_impact_params_check) */
+        return gw_err_set(err, GW_EINVAL, "side-walls: %s is given with remove-walls, which takes every wall away "
+                          "(the floor too): give one or the other", choice(s, "side-walls", sname, sizeof sname));
     ip->full = s->full;
     ip->other_settling = s->other_settling;
     ip->zero_springs = s->zero_springs;

@@ -867,9 +867,11 @@ static double steps_of(const gw_chain_params *p, const gw_chain_run_opts *o, con
  * names of what it sets, "dt-out: the default tau_1/200 = 8.68e-127 s gives
  * about 8.63e+121 samples" (the default dt-out), "dt-max: a step of 3.78e-125
  * s" (dt-out given) or rk4's "dt: a step of 1.78e-127 s" (left after session
- * 44). Where the wall's contact is the column's shortest, its range holds
- * both the steps' bound and, under the default dt-out (tau_1/200, tau_1 the
- * wall's), the samples' 1e9. */
+ * 44). Where the wall's contact is the column's shortest, kwall is named
+ * with its range within the steps' bound; the default dt-out's samples
+ * (tau_1/200, tau_1 the wall's) are put on kwall only where its steps are
+ * refused too (else a dt-out passes: chain --n 2 --k 1e3 --kwall 1e14 is told
+ * the dt-out that does). */
 static double stiff_over(const gw_chain_params *p, const gw_chain_run_opts *o, const gw_solver_type *type, int wall,
                          double x)
 {
@@ -877,16 +879,7 @@ static double stiff_over(const gw_chain_params *p, const gw_chain_run_opts *o, c
         return steps_at_k(p, o, type, x) / 1e8;
     gw_chain_params q = *p;
     q.kwall = x;
-    double r = steps_of(&q, o, type) / 1e8;
-    if (!(o->dt_out > 0) && !isnan(r)) {
-        const double t_col = chain_collision_length(&q, NULL);
-        const double t_expect = fmin(o->t_max > 0 ? o->t_max : 20.0 * t_col, t_col);
-        /* the samples' 1e9 (plan_make) and their share of a transit (chain_sampling_check) */
-        const double samples = t_expect / (gw_chain_tau1(q.masses ? q.masses[0] : q.mass, x, q.v_imp) / 200.0),
-                     transit = fmin(samples / SAMPLING_MAX, samples / (2.0 * q.n + 1) / SAMPLING_PER_TRANSIT_MAX);
-        r = isfinite(samples) && samples > 0 ? fmax(r, fmax(samples / 1e9, transit)) : NAN;
-    }
-    return r;
+    return steps_of(&q, o, type) / 1e8;
 }
 
 static int stiff_refusal(const gw_chain_params *p, const gw_chain_run_opts *o, const gw_solver_type *type, int wall,
@@ -974,10 +967,10 @@ static int stiff_refusal(const gw_chain_params *p, const gw_chain_run_opts *o, c
     const double t_expect = fmin(o->t_max > 0 ? o->t_max : 20.0 * t_col, t_col);
     if (wall)
         return gw_err_set(err, GW_EINVAL, "kwall: %g N/m^1.5 is outside [%.2g, %.2g], where this column's run stays "
-                          "within 1e+08 steps%s (%d beads, k %g N/m^1.5, masses, radii and v_imp as given): at this "
+                          "within 1e+08 steps (%d beads, k %g N/m^1.5, masses, radii and v_imp as given): at this "
                           "kwall its shortest contact, the wall's, lasts %.3g s, and the step chosen to resolve it "
                           "needs about %.3g steps over %s (about %.3g s)",
-                          k, lo, hi, o->dt_out > 0 ? "" : " and 1e+09 samples of the default dt-out", p->n, p->k,
+                          k, lo, hi, p->n, p->k,
                           chain_contact_tau_min(&q, 2 * q.v_imp), steps_of(&q, o, type), over, t_expect);
     return gw_err_set(err, GW_EINVAL, "k: %g N/m^1.5 is outside [%.2g, %.2g], where this column's run stays within "
                       "%.0e steps (%d beads, kwall %g N/m^1.5, masses, radii and v_imp as given): at this k its "
@@ -1097,7 +1090,10 @@ static int plan_make(const gw_chain_params *p0, const gw_chain_run_opts *o, coll
                                  : " (bead 1's wall contact is far shorter than the column's collision: unequal "
                                    "radii or masses, or a stiff wall)");
         n_ok[2] = n * max_samples / (pl->t_expect / pl->dt_out);
-        if (!(o->dt_out > 0)) /* the default dt-out is the wall's tau_1/200: kwall the cause, named */
+        /* the default dt-out is the wall's tau_1/200: kwall the cause, named
+         * where its steps are refused too (a dt-out alone passes otherwise:
+         * chain --n 2 --k 1e3 --kwall 1e14 is told the dt-out that passes) */
+        if (!(o->dt_out > 0) && isfinite(n_ok[0]))
             stiffness_refusal(p, o, pl->type, 1, over, &e[2]);
     }
     int worst = -1;
@@ -1123,11 +1119,8 @@ static int plan_make(const gw_chain_params *p0, const gw_chain_run_opts *o, coll
         return rc;
     /* sampling far finer than the column's own scale (chain_sampling_check;
      * after the stored trace's bound, which names what --out would write) */
-    if ((rc = chain_sampling_check(n, pl->t_expect, pl->dt_out, o->dt_out > 0, over, rides ? why : NULL, err)) != GW_OK) {
-        if (!(o->dt_out > 0)) /* the default dt-out: kwall the cause, named */
-            stiffness_refusal(p, o, pl->type, 1, over, err);
+    if ((rc = chain_sampling_check(n, pl->t_expect, pl->dt_out, o->dt_out > 0, over, rides ? why : NULL, err)) != GW_OK)
         return rc;
-    }
     if (!whole)
         return GW_OK;
     /* A run that does not end (a column held on the wall by gravity and damping,

@@ -819,11 +819,20 @@ static int opts_numbers_check(const gw_chain_run_opts *o, gw_err *err)
 /* The run's steps over its expected collision (as plan_make counts them)
  * with the bead-bead coefficient k in place of p's, every other input p's
  * and o's: NaN where the column's scales leave the doubles. */
+static double steps_of(const gw_chain_params *p, const gw_chain_run_opts *o, const gw_solver_type *type);
+
 static double steps_at_k(const gw_chain_params *p, const gw_chain_run_opts *o, const gw_solver_type *type, double k)
 {
     gw_chain_params q = *p;
     q.k = k;
-    q.kc = NULL; /* (k_steps_refusal: each of them p's k) */
+    q.kc = NULL; /* (stiff_refusal: each of them p's k) */
+    return steps_of(&q, o, type);
+}
+
+/* the same for the column q as it is */
+static double steps_of(const gw_chain_params *p, const gw_chain_run_opts *o, const gw_solver_type *type)
+{
+    const gw_chain_params q = *p;
     const double t_col = chain_collision_length(&q, NULL);
     const double t_expect = fmin(o->t_max > 0 ? o->t_max : 20.0 * t_col, t_col);
     gw_solver_params sp = o->sp;
@@ -852,13 +861,33 @@ static double steps_at_k(const gw_chain_params *p, const gw_chain_run_opts *o, c
  * the cause: a k within the bound, a bead-bead contact that is not the
  * column's shortest (a stiff wall's is: kwall the cause), kc other than k at
  * a contact, a step given, or no k within the bound (too many beads: the
- * message as it was). */
-static int k_steps_refusal(const gw_chain_params *p, const gw_chain_run_opts *o, const gw_solver_type *type,
-                           const char *over, gw_err *err)
+ * message as it was).
+ *
+ * The wall's kwall alike (wall 1): a kwall of 1.8e308 was refused under the
+ * names of what it sets, "dt-out: the default tau_1/200 = 8.68e-127 s gives
+ * about 8.63e+121 samples" (the default dt-out), "dt-max: a step of 3.78e-125
+ * s" (dt-out given) or rk4's "dt: a step of 1.78e-127 s" (left after session
+ * 44). Where the wall's contact is the column's shortest, kwall is named
+ * with its range within the steps' bound; the default dt-out's samples
+ * (tau_1/200, tau_1 the wall's) are put on kwall only where its steps are
+ * refused too (else a dt-out passes: chain --n 2 --k 1e3 --kwall 1e14 is told
+ * the dt-out that does). */
+static double stiff_over(const gw_chain_params *p, const gw_chain_run_opts *o, const gw_solver_type *type, int wall,
+                         double x)
 {
-    if (p->n < 2 || o->sp.dt_max > 0 || (type == gw_solver_rk4 && o->sp.dt > 0))
+    if (!wall)
+        return steps_at_k(p, o, type, x) / 1e8;
+    gw_chain_params q = *p;
+    q.kwall = x;
+    return steps_of(&q, o, type) / 1e8;
+}
+
+static int stiff_refusal(const gw_chain_params *p, const gw_chain_run_opts *o, const gw_solver_type *type, int wall,
+                         const char *over, gw_err *err)
+{
+    if (p->n < (wall ? 1 : 2) || o->sp.dt_max > 0 || (!wall && type == gw_solver_rk4 && o->sp.dt > 0))
         return GW_OK;
-    for (int i = 0; p->kc && i < p->n - 1; i++) /* the chain's own kc: each k, unless given per contact */
+    for (int i = 0; !wall && p->kc && i < p->n - 1; i++) /* the chain's own kc: each k, unless given per contact */
         if (p->kc[i] != p->k)
             return GW_OK;
     gw_chain_params q = *p;
@@ -869,19 +898,25 @@ static int k_steps_refusal(const gw_chain_params *p, const gw_chain_run_opts *o,
         q.mass = q.masses[0];
         q.masses = NULL;
     }
-    const double max_steps = 1e8, k = p->k, lk = log10(k), lo_end = log10(DBL_MIN), hi_end = log10(DBL_MAX);
-#define K_STEPS(x) steps_at_k(&q, o, type, pow(10, (x)))
-#define K_OK(x) (K_STEPS(x) <= max_steps)
+    const double k = wall ? p->kwall : p->k, lk = log10(k), lo_end = log10(DBL_MIN), hi_end = log10(DBL_MAX);
+#define K_STEPS(x) stiff_over(&q, o, type, wall, pow(10, (x)))
+#define K_OK(x) (K_STEPS(x) <= 1.0)
     if (K_OK(lk))
         return GW_OK;
-    /* k the cause: its bead-bead contact the shortest, shorter than every
-     * other (the wall's, a sensor's) as with the softest k. A column on a wall
-     * of kwall 1.8e308 was otherwise told to take k above 3.9e290. */
+    /* the cause: its contact the shortest, shorter than every other (the
+     * wall's, a sensor's; the bead-bead ones) as with the softest. A column on
+     * a wall of kwall 1.8e308 was otherwise told to take k above 3.9e290. */
     gw_chain_params soft = q;
     soft.kc = NULL;
-    soft.k = DBL_MIN;
+    if (wall)
+        soft.kwall = DBL_MIN;
+    else
+        soft.k = DBL_MIN;
     gw_chain_params given = soft;
-    given.k = k;
+    if (wall)
+        given.kwall = k;
+    else
+        given.k = k;
     if (!(chain_contact_tau_min(&given, 2 * q.v_imp) < chain_contact_tau_min(&soft, 2 * q.v_imp) * (1 - 1e-9)))
         return GW_OK;
     /* the least steps (NaN, beyond the doubles, as more than any) */
@@ -930,12 +965,43 @@ static int k_steps_refusal(const gw_chain_params *p, const gw_chain_run_opts *o,
                  hi = ends[1] < DBL_MAX ? floor(ends[1] / q1) * q1 : ends[1];
     const double t_col = chain_collision_length(&q, NULL);
     const double t_expect = fmin(o->t_max > 0 ? o->t_max : 20.0 * t_col, t_col);
+    if (wall)
+        return gw_err_set(err, GW_EINVAL, "kwall: %g N/m^1.5 is outside [%.2g, %.2g], where this column's run stays "
+                          "within 1e+08 steps (%d beads, k %g N/m^1.5, masses, radii and v_imp as given): at this "
+                          "kwall its shortest contact, the wall's, lasts %.3g s, and the step chosen to resolve it "
+                          "needs about %.3g steps over %s (about %.3g s)",
+                          k, lo, hi, p->n, p->k,
+                          chain_contact_tau_min(&q, 2 * q.v_imp), steps_of(&q, o, type), over, t_expect);
     return gw_err_set(err, GW_EINVAL, "k: %g N/m^1.5 is outside [%.2g, %.2g], where this column's run stays within "
                       "%.0e steps (%d beads, kwall %g N/m^1.5, masses, radii and v_imp as given): at this k its "
                       "shortest contact lasts %.3g s, and the step chosen to resolve it needs about %.3g steps over %s "
                       "(about %.3g s)",
-                      k, lo, hi, max_steps, p->n, p->kwall, chain_contact_tau_min(&q, 2 * q.v_imp),
+                      k, lo, hi, 1e8, p->n, p->kwall, chain_contact_tau_min(&q, 2 * q.v_imp),
                       steps_at_k(&q, o, type, k), over, t_expect);
+}
+
+/* k (unless wall_only), then kwall: GW_OK where neither is the cause (err
+ * untouched). A dt_max given above the contacts does not lower the work: the
+ * solver resolves each contact under any cap. k = 1.8e308 with dt_max 1e-9
+ * passed the check (left after session 44) and failed at its fourth step
+ * (cvode: "corrector convergence test failed", h = 9.6e-16 s), k = 1e30 ran
+ * on for minutes: with a dt_max given, k and kwall are held to their ranges
+ * at the default cap, the refusal naming the dt-max given too. */
+static int stiffness_refusal(const gw_chain_params *p, const gw_chain_run_opts *o, const gw_solver_type *type,
+                             int wall_only, const char *over, gw_err *err)
+{
+    gw_chain_run_opts od = *o;
+    od.sp.dt_max = 0;
+    gw_err ek = {{0}};
+    int rc = wall_only ? GW_OK : stiff_refusal(p, &od, type, 0, over, &ek);
+    if (rc == GW_OK)
+        rc = stiff_refusal(p, &od, type, 1, over, &ek);
+    if (rc == GW_OK)
+        return GW_OK;
+    if (o->sp.dt_max > 0)
+        return gw_err_set(err, rc, "%s; the dt-max given (%g s) does not change that: the solver resolves each "
+                          "contact under any cap", ek.msg, o->sp.dt_max);
+    return gw_err_set(err, rc, "%s", ek.msg);
 }
 
 /* The plan; whole 0: only the bounds that hold whatever t_max the run is cut
@@ -1000,7 +1066,7 @@ static int plan_make(const gw_chain_params *p0, const gw_chain_run_opts *o, coll
     double n_ok[3] = {INFINITY, INFINITY, INFINITY};
     if (chain_steps_check(pl->type, &pl->sp, &o->sp, pl->t_expect, over, &e[0]) != GW_OK) {
         n_ok[0] = n * 1e8 / (pl->t_expect / step);
-        k_steps_refusal(p, o, pl->type, over, &e[0]); /* k the cause: named, with its range */
+        stiffness_refusal(p, o, pl->type, 0, over, &e[0]); /* k or kwall the cause: named, with its range */
     }
     /* cvode and arkode follow a sensor body's oscillation too (8 s for 0.1 ms at
      * 1e-7 kg on 1e14 N/m, 5.8e7 steps) */
@@ -1024,6 +1090,11 @@ static int plan_make(const gw_chain_params *p0, const gw_chain_run_opts *o, coll
                                  : " (bead 1's wall contact is far shorter than the column's collision: unequal "
                                    "radii or masses, or a stiff wall)");
         n_ok[2] = n * max_samples / (pl->t_expect / pl->dt_out);
+        /* the default dt-out is the wall's tau_1/200: kwall the cause, named
+         * where its steps are refused too (a dt-out alone passes otherwise:
+         * chain --n 2 --k 1e3 --kwall 1e14 is told the dt-out that passes) */
+        if (!(o->dt_out > 0) && isfinite(n_ok[0]))
+            stiffness_refusal(p, o, pl->type, 1, over, &e[2]);
     }
     int worst = -1;
     for (int i = 0; i < 3; i++)
@@ -1031,6 +1102,10 @@ static int plan_make(const gw_chain_params *p0, const gw_chain_run_opts *o, coll
             worst = i;
     if (worst >= 0)
         return gw_err_set(err, GW_EINVAL, "%s", e[worst].msg);
+    /* a dt_max given above the contacts: k and kwall held to their ranges at
+     * the default cap (stiffness_refusal) */
+    if (o->sp.dt_max > 0 && (rc = stiffness_refusal(p, o, pl->type, 0, over, err)) != GW_OK)
+        return rc;
     /* cvode and arkode follow a light bead that heavy beads hold, all the time
      * they hold it (chain_ring_check) */
     if ((rc = chain_ring_check(p, pl->type, &pl->sp, pl->t_expect, t_col, over, err)) != GW_OK)

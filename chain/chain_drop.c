@@ -593,9 +593,18 @@ static void drop_chatter(const gw_chain_drop_params *p, const gw_chain_run_opts 
 {
     r->chatter_kind = GW_CHAIN_CHATTER_NONE;
     r->chatter_spread = 0;
-    if (gw_chain_sensor_index(c) < 0 || r->n_episodes < GW_CHAIN_CHATTER_CONTACTS)
+    if (gw_chain_sensor_index(c) < 0)
         return;
-    if (!((double)r->stats.steps * r->n <= GW_CHAIN_CHATTER_WORK)) {
+    r->chatter_rerun = type == gw_solver_rk4 ? GW_CHAIN_RERUN_STEP : GW_CHAIN_RERUN_TOL;
+    if (r->n_episodes < GW_CHAIN_CHATTER_CONTACTS)
+        return;
+    /* rk4's rerun at half the step costs twice the drop's steps (the first
+     * collision is not run again), known before it is made: made up to
+     * GW_CHAIN_DROP_CHATTER_RK4_WORK, the whole run then about 3 times the
+     * run without it. The tolerances' rerun's cost is not known before it
+     * is made: bounded as chain's. */
+    const double work_max = type == gw_solver_rk4 ? GW_CHAIN_DROP_CHATTER_RK4_WORK : GW_CHAIN_CHATTER_WORK;
+    if (!((double)r->stats.steps * r->n <= work_max)) {
         r->chatter_kind = GW_CHAIN_CHATTER_COSTLY;
         return;
     }

@@ -109,9 +109,10 @@ static const gw_param drop_fields[] = {
     RIA("peak_contacts", peak_contacts, "n_peaks", "n",
         "1 = contact closed at the peak: the sensor first, then beads k, k+1 [peak, contact]"),
     {.name = "impacts", .type = GW_PARAM_DARRAY, .offset = offsetof(O, impacts), .unit = "SI",
-     .rows = "n_impacts", .cols = "9", .choices = GW_DROP_IMPACT_COLS,
+     .rows = "n_impacts", .cols = "10", .choices = GW_DROP_IMPACT_COLS,
      .help = "per impact: t_start, t_end (NaN: in contact at t_max), f_max, t_fmax (s, N), v_in, v_out (m/s, "
-             "toward the sensor > 0), n_peaks, cluster, located [impact, column]"},
+             "toward the sensor > 0), n_peaks, cluster, located, chatter (its F_max's relative change in the "
+             "chatter's rerun, 1: absent from it; NaN: not run again) [impact, column]"},
     RF("cut_first_collision", r.first_cut, "1: t_max came before the first collision's end (its results are those at t_max)"),
     RF("open_at_t_max", r.open_at_t_max, "1: bead 1 still on the sensor at t_max (the last episode open)"),
     RI("n_first", n_first, "entries of the first collision's arrays"),
@@ -315,6 +316,7 @@ static int fill_tables(gw_chain_drop_outcome *o, gw_err *err)
         row[6] = im->n_peaks;
         row[7] = im->cluster;
         row[8] = im->located;
+        row[9] = im->chatter; /* the JSON's per-impact chatter (NaN: no key there) */
     }
     return GW_OK;
 }

@@ -637,22 +637,38 @@ static int drop_chatter_warning(const gw_chain_drop_result *r, const gw_chain_ru
     const int kind = r->chatter_kind;
     if (kind <= GW_CHAIN_CHATTER_NONE || kind > GW_CHAIN_CHATTER_FAILED)
         return GW_OK;
-    char how[96] = "10 times tighter tolerances (under rk4: half the step)",
-         flags[96] = "10 times tighter --rtol and --atol (under rk4: half the step)";
+    /* what was done for the method used, as the studies' line says it (the
+     * library's call, o NULL, said "10 times tighter tolerances (under rk4:
+     * half the step)" under either): the result's chatter_rerun */
+    const int step = o ? o->solver == gw_solver_rk4 : r->chatter_rerun == GW_CHAIN_RERUN_STEP;
+    char how[96] = "10 times tighter tolerances (rtol and atol)", flags[96] = "10 times tighter --rtol and --atol";
     if (o) {
         gw_solver_params sp = o->sp;
         chain_chatter_rerun(o->solver ? o->solver : gw_solver_cvode, r->run_dt, &sp, how, sizeof how, flags,
                             sizeof flags);
+    } else if (step) {
+        gw_solver_params sp = gw_solver_params_default();
+        chain_chatter_rerun(gw_solver_rk4, r->run_dt, &sp, how, sizeof how, flags, sizeof flags);
     }
-    char where[48], ending[512], text[CHAIN_CHATTER_TEXT + 64];
-    gw_snprintf(where, sizeof where, " in %.6g ms", r->t_end * 1e3);
+    /* the first collision ends half way to bead 1's second contact, which is
+     * the drop's next impact: its own check counts one contact (1 in each of
+     * 30 drops of 3 beads over sensor masses 1e-6 to 1e-1 kg and stiffnesses
+     * 1e3 to 1e8 N/m, up to 1291 episodes; chain's run under the same gravity
+     * counts the drop's episodes as its wall contacts: 44, 206, 12, 38, 11, 5),
+     * and the chatter is checked here, over the impacts (the first impact's
+     * F_max moved by at most 1.6e-7 in their reruns) */
+    char where[160], ending[512], text[CHAIN_CHATTER_TEXT + 160];
+    gw_snprintf(where, sizeof where, " in %.6g ms; the first collision ends half way to the second, its check seeing "
+                "one contact: the chatter is the drop's, checked over its impacts", r->t_end * 1e3);
     const char *less = "a stiffer, heavier or damped sensor body (--sensor-stiffness, --sensor-mass, --sensor-damping) "
                        "chatters less";
     if (kind == GW_CHAIN_CHATTER_COSTLY)
         gw_snprintf(ending, sizeof ending, "so that the impacts, their peaks and the energy ledger move with dt-out "
-                    "and the tolerances, and this drop (%.3g steps times %d bodies, above the %.3g a rerun is made "
-                    "within) was not run again to measure by how much: compare a run at %s; %s",
-                    (double)r->stats.steps, r->n, GW_CHAIN_CHATTER_WORK, flags, less);
+                    "and the tolerances, and this drop (%.3g steps times %d bodies, above the %.3g a rerun %s) was "
+                    "not run again to measure by how much: compare a run at %s; %s",
+                    (double)r->stats.steps, r->n, step ? GW_CHAIN_DROP_CHATTER_RK4_WORK : GW_CHAIN_CHATTER_WORK,
+                    step ? "at half rk4's step, twice the drop's steps, is made within" : "is made within", flags,
+                    less);
     else if (kind == GW_CHAIN_CHATTER_MOVED && r->chatter_spread >= 1)
         gw_snprintf(ending, sizeof ending, "and a rerun at %s gave other impacts (their count or contact episodes "
                     "differ): the impacts, their peaks and the energy ledger are one of the chatter's outcomes, "

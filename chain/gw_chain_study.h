@@ -577,8 +577,8 @@ typedef struct gw_chain_drop_setup {
 } gw_chain_drop_setup;
 
 /* Columns of the impacts table ([n_impacts x GW_DROP_NIMPACT_COLS]). */
-#define GW_DROP_IMPACT_COLS "t_start,t_end,f_max,t_fmax,v_in,v_out,n_peaks,cluster,located"
-#define GW_DROP_NIMPACT_COLS 9
+#define GW_DROP_IMPACT_COLS "t_start,t_end,f_max,t_fmax,v_in,v_out,n_peaks,cluster,located,chatter"
+#define GW_DROP_NIMPACT_COLS 10
 
 typedef struct gw_chain_drop_outcome {
     gw_chain_drop_result r;  /* everything the run measured (gw_chain.h) */

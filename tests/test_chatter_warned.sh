@@ -24,6 +24,11 @@
 #  4 Python: chain's result and a study's carry the line (their keywords) and
 #    chain's the chatter value, a sweep's result the chatter column and the line,
 #    drop's the line and its chatter values.
+#  Session 45: the drop's line says its first collision's check sees one
+#    contact (it ends half way to bead 1's second, the drop's next impact);
+#    under rk4 the drop is run again at half the step up to 1e7 steps times
+#    bodies (1e-4 kg: -1 before, now 0, every impact measured), above it the
+#    line says why; Python's drop has the impacts' chatter column.
 # About 16 s of CPU (softwall's 23 collisions the most).
 # Checks that fail on the code before: see docs/tests.md.
 # shellcheck source=refusal_lib.sh
@@ -145,13 +150,39 @@ if awk -v t="$dtop" -v m="$dmax" -v f="$dfirst" -v n="$nimp" -v c="$nchk" \
 else
     ko "  drop --json: chatter '$dtop', impacts' largest '$dmax', $nchk of $nimp impacts with the key, first '$dfirst'"
 fi
+# the first collision ends half way to bead 1's second contact (the drop's
+# next impact): its own check sees one contact, which the line says (session 45)
+if grep -qF "the first collision ends half way to the second, its check seeing one contact" d4.err &&
+    /usr/bin/python3 -c "import json,sys; sys.exit(json.load(open('d4.json'))['first_collision']['wall_contacts'] != 1)"; then
+    ok "3 drop on 1e-4 kg: the line says the first collision's check sees one contact (its wall_contacts 1)"
+else
+    ko "3 drop on 1e-4 kg: the first collision's one contact not said: $(head -c 300 d4.err)"
+fi
+# rk4's rerun at half the step costs twice the drop's steps, known before it is
+# made: run again up to 1e7 steps times bodies (9.8e5 steps times 3 here:
+# chatter -1 before, session 45), every impact's chatter measured, within 1e-6
+# (no line); above it (1e-6 kg on 1e5 N/m: 6e6 steps) -1, the line saying why
 # shellcheck disable=SC2086
 cpu_run 60 "$GW" drop --n 3 $S --solver rk4 --json --quiet >d5.json 2>d5.err
-if [ "$(nlines d5.err)" = 1 ] && grep -qF "was not run again" d5.err && grep -qF "compare a run at --dt " d5.err &&
-    [ "$(jwarn d5.json | sed -n 1p)" = "1 -1" ]; then
-    ok "3 drop rk4 on 1e-4 kg (costly): one line naming --dt, --json chatter -1"
+d5=$(/usr/bin/python3 -c "
+import json
+d = json.load(open('d5.json'))
+c = [i.get('chatter') for i in d['impacts']]
+print(d.get('chatter'), len(c), sum(x is not None for x in c), max([x for x in c if x is not None] or [-1]))" 2>/dev/null)
+read -r d5top d5n d5chk d5max <<<"$d5"
+if [ "$(nlines d5.err)" = 0 ] && [ "$d5top" = 0 ] &&
+    awk -v n="$d5n" -v c="$d5chk" -v m="$d5max" 'BEGIN { exit !(n > 10 && c == n && m >= 0 && m <= 1e-6) }'; then
+    ok "3 drop rk4 on 1e-4 kg: run again at half the step (chatter 0, $d5chk of $d5n impacts measured, up to $d5max), no line"
 else
-    ko "3 drop rk4: $(nlines d5.err) lines, --json '$(jwarn d5.json | sed -n 1p)': $(head -c 300 d5.err)"
+    ko "3 drop rk4 on 1e-4 kg: chatter '$d5top', $d5chk of $d5n impacts measured (up to $d5max): $(head -c 300 d5.err)"
+fi
+cpu_run 60 "$GW" drop --n 3 --sensor-mass 1e-6 --sensor-stiffness 1e5 --solver rk4 --json --quiet >d6.json 2>d6.err
+if [ "$(nlines d6.err)" = 1 ] && grep -qF "was not run again" d6.err && grep -qF "compare a run at --dt " d6.err &&
+    grep -qF "above the 1e+07 a rerun at half rk4's step, twice the drop's steps, is made within" d6.err &&
+    [ "$(jwarn d6.json | sed -n 1p)" = "1 -1" ]; then
+    ok "3 drop rk4 on 1e-6 kg, 1e5 N/m (costly): one line naming --dt and why (twice the drop's steps above 1e7), chatter -1"
+else
+    ko "3 drop rk4 costly: $(nlines d6.err) lines, --json '$(jwarn d6.json | sed -n 1p)': $(head -c 500 d6.err)"
 fi
 
 # --- 3c the reruns named by the solver run: a study under cvode was told
@@ -168,7 +199,7 @@ else
 fi
 
 # --- 4 Python
-py_checks 4 <<'PY'
+py_checks 5 <<'PY'
 r, ws = caught(granwave.chain, n=5, sensor_mass=1e-4, sensor_stiffness=1e3, solver="rk4")
 w = [m for m in ws if "chattered on the sensor body" in m]
 check(len(w) == 1 and "was not run again" in w[0] and "sensor_stiffness" in w[0] and
@@ -190,6 +221,14 @@ check(len(w) == 1 and "times in 10 ms" in w[0] and r.get("chatter", 0) > 1e-6 an
       r["first_collision"].get("chatter") == 0,
       "4 Python drop: one chatter warning, chatter %s as --json's, first_collision's %s: %s"
       % (r.get("chatter"), r["first_collision"].get("chatter"), [m[:100] for m in w]))
+# the impacts' chatter column, each as --json's per-impact chatter (session 45)
+import json
+d4 = json.load(open("d4.json"))
+col = list(r["impacts"].get("chatter", []))
+want = [i.get("chatter") for i in d4["impacts"]]
+check(len(col) == len(want) > 10 and all(a == b for a, b in zip(col, want)),
+      "4 Python drop: the impacts' chatter column (%d values, up to %s) as --json's per impact"
+      % (len(col), max(col) if col else None))
 PY
 
 test_summary test_chatter_warned

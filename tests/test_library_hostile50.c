@@ -195,11 +195,12 @@ static int c_k_huge_named(void)
     p.n = 3;
     o.sp.dt_max = 1e-15;
     EXPECT(refused(gw_chain_run_check(&p, &o, &e), &e, "dt-max: a step of 1e-15 s"));
-    /* and a wall of kwall 1.8e308 (its contact the shortest) does not blame k */
+    /* and a wall of kwall 1.8e308 (its contact the shortest) does not blame k:
+     * kwall is named (session 45; "dt-max: a step of" before, test_stiffness_named) */
     o = gw_chain_run_opts_default();
     o.dt_out = 1e-6;
     p.kwall = DBL_MAX;
-    EXPECT(refused(gw_chain_run_check(&p, &o, &e), &e, "dt-max: a step of") && strncmp(e.msg, "k: ", 3) != 0);
+    EXPECT(refused(gw_chain_run_check(&p, &o, &e), &e, "kwall: ") && strncmp(e.msg, "k: ", 3) != 0);
     return 0;
 }
 

@@ -282,7 +282,7 @@ def drop(*, progress=None, **kwargs):
     return r
 
 
-_IMPACT_COLS = ("t_start", "t_end", "f_max", "t_fmax", "v_in", "v_out", "n_peaks", "cluster", "located")
+_IMPACT_COLS = ("t_start", "t_end", "f_max", "t_fmax", "v_in", "v_out", "n_peaks", "cluster", "located", "chatter")
 
 
 def sweep(model="chain", grid=None, *, jobs=0, progress=None, **params):

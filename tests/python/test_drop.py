@@ -103,6 +103,28 @@ def test_drop_matches_cli(program, args):
         assert close(d[k], m[k]), k
 
 
+@pytest.mark.parametrize("solver", ["cvode", "rk4"])
+def test_drop_impacts_chatter_column(program, solver):
+    """The impacts table's chatter column (session 45; the JSON had it for each
+    impact run again, the module not): each impact's relative F_max change in
+    the chatter's rerun as --json's, NaN where the JSON has no key. Under rk4
+    the drop on 1e-4 kg is run again at half the step (-1 before: too costly)."""
+    args = dict(n=3, sensor_mass=1e-4, sensor_stiffness=1e3, solver=solver)
+    d = granwave.drop(**args)
+    c = run_cli(program, "drop", *[x for k, v in args.items() for x in ("--" + k.replace("_", "-"), str(v))])
+    col = d.impacts["chatter"]
+    assert len(col) == d.n_impacts == len(c["impacts"]) > 10
+    for j, im in enumerate(c["impacts"]):
+        assert "chatter" in im and col[j] == im["chatter"], j
+    assert d.chatter == c["chatter"] == (max(col) if solver == "cvode" else 0)
+    assert (max(col) > 1e-6) if solver == "cvode" else (0 <= max(col) <= 1e-6)
+    # a drop on a rigid sensor is not run again: NaN in every row, no key in the JSON
+    d = granwave.drop(n=2)
+    c = run_cli(program, "drop", "--n", "2")
+    assert len(d.impacts["chatter"]) == d.n_impacts > 0 and np.isnan(d.impacts["chatter"]).all()
+    assert all("chatter" not in im for im in c["impacts"])
+
+
 @pytest.mark.parametrize("kw, name", [
     (dict(height=2), "height"),
     (dict(n=3, gap=[1e-4] * 3), "gap"),

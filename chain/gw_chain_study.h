@@ -77,7 +77,7 @@ int gw_chain_study_speeds_check(const double *v, int n, int n_speeds, gw_err *er
  * GW_CHAIN_VIMP_MAX] and the heights in [GW_CHAIN_HEIGHT_MIN_MM,
  * GW_CHAIN_HEIGHT_MAX_MM] ("vimp: item K is X, outside [A, B]", the rows of
  * gw_chain_falcon_setup_params); under another gravity than Earth's, each
- * height's fall within the speeds of those heights at 9.81 m/s^2, [0.99e-9,
+ * height's fall within chain's impact speeds [GW_CHAIN_VIMP_MIN,
  * GW_CHAIN_VIMP_MAX] m/s ("heights: item K is H mm: at gravity G m/s^2 it falls
  * to v = ... m/s, outside the impact speeds [..] m/s"); then the velocities
  * distinct (gw_chain_study_speeds_check, which compares finite speeds only). */

@@ -42,7 +42,10 @@ GW_BEGIN_DECLS /* the exported interface, C linkage (gw_api.h) */
  * study (softwall --sheets --n 1:40, 9 walls x 22140 = 2.0e5, 47 s) and room
  * for falcon --n 1:100 at its five default speeds (1.7e6); at the bound one
  * column of N = 1414, estimated 8 to 15 min from the N = 400 run (N^2 to N^2.5).
- * --n 1:100000 asked for 3e14 (days). */
+ * --n 1:100000 asked for 3e14 (days). One column is held to the same bound
+ * over the share of its collision it runs (the plan: chain, drop, sweeps,
+ * dispersion's column, Python; since session 45: chain --n 100000 ran for
+ * days). */
 #define GW_CHAIN_STUDY_WORK_MAX 2e6
 
 /* The work of a study over N = a..b with runs columns at each N (runs < 1

@@ -384,10 +384,6 @@ int chain_column_work_check(long n, double t_expect, double t_col, const char *o
  * --out does not turn it into "run without storing it"), the run before it
  * allocates. */
 int chain_drop_work_check(const gw_chain_params *p, double t_max, gw_err *err);
-/* The CPU time of a column at the bound (N = 1414, whole collision, cvode),
- * as the message says it (measured: docs/cli.md) */
-#define GW_CHAIN_COLUMN_WORK_CPU "10 min"
-
 /* The run's steps bounded before it starts (chain_collide_plan.c): the RK4 step
  * (the smaller of dt and dt_max), or cvode's and arkode's largest step dt_max,
  * may need at most 1e8 steps over t_len seconds; GW_EINVAL naming dt or

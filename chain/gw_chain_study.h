@@ -41,7 +41,8 @@ GW_BEGIN_DECLS /* the exported interface, C linkage (gw_api.h) */
  * walls), is refused above 2e6 before anything runs: 9x the largest documented
  * study (softwall --sheets --n 1:40, 9 walls x 22140 = 2.0e5, 47 s) and room
  * for falcon --n 1:100 at its five default speeds (1.7e6); at the bound one
- * column of N = 1414, estimated 8 to 15 min from the N = 400 run (N^2 to N^2.5).
+ * column of N = 1414, estimated 8 to 15 min from the N = 400 run (N^2 to N^2.5),
+ * measured 353 s of CPU under cvode (session 45).
  * --n 1:100000 asked for 3e14 (days). One column is held to the same bound
  * over the share of its collision it runs (the plan: chain, drop, sweeps,
  * dispersion's column, Python; since session 45: chain --n 100000 ran for

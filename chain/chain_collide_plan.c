@@ -16,6 +16,7 @@
 #include <string.h>
 
 #include "gw_chain.h"
+#include "gw_chain_study.h"
 #include "chain_model.h"
 #include "chain_collide_impl.h"
 #include "gw_locale.h"
@@ -1004,6 +1005,34 @@ static int stiffness_refusal(const gw_chain_params *p, const gw_chain_run_opts *
     return gw_err_set(err, rc, "%s", ek.msg);
 }
 
+/* The CPU time of a column at the bound, as chain_column_work_check says it:
+ * chain --n 1414 (cvode bdf, a whole collision) took 353 s of CPU, 1.35e6
+ * steps (docs/cli.md) */
+#define COLUMN_WORK_CPU "6 min"
+
+int chain_column_work_check(long n, double t_expect, double t_col, const char *over, const char *name,
+                            const char *t_max_name, gw_err *err)
+{
+    /* A column's work grows as N^2 (N beads, steps over a collision of N
+     * transits): the studies' bound (GW_CHAIN_STUDY_WORK_MAX, N = 1414 over a
+     * whole collision) holds for one column too, over the share of its
+     * collision the run covers (t_expect / t_col: a short t-max runs the start
+     * of a long column). Before the forty-fifth session one column was bounded
+     * by its memory alone: chain --n 100000 (a collision of 2.5 s) ran, its
+     * progress saying 6.5e5 s left (N = 400 took 15.5 s of CPU) */
+    const double share = t_col > 0 ? fmin(1.0, t_expect / t_col) : 1.0, work = (double)n * (double)n * share;
+    if (work <= GW_CHAIN_STUDY_WORK_MAX)
+        return GW_OK;
+    char more[96] = "";
+    if (t_max_name)
+        gw_snprintf(more, sizeof more, ", or %s to run only the collision's start", t_max_name);
+    return gw_err_set(err, GW_EINVAL, "%s: a column of %ld beads over %s (about %.3g s) is %.4g bead^2 of work (N^2 "
+                      "times the share of the collision run), above the bound %.0e of the studies (N = %.0f over a "
+                      "whole collision, about %s of CPU): lower %s%s", name, n, over ? over : "the collision",
+                      t_expect, work, GW_CHAIN_STUDY_WORK_MAX, floor(sqrt(GW_CHAIN_STUDY_WORK_MAX)),
+                      COLUMN_WORK_CPU, name, more);
+}
+
 /* The plan; whole 0: only the bounds that hold whatever t_max the run is cut
  * at (t_max above the collision's expected length), not those of a run going
  * on to t_max (chain_collide_plan_early) */
@@ -1109,6 +1138,11 @@ static int plan_make(const gw_chain_params *p0, const gw_chain_run_opts *o, coll
     /* cvode and arkode follow a light bead that heavy beads hold, all the time
      * they hold it (chain_ring_check) */
     if ((rc = chain_ring_check(p, pl->type, &pl->sp, pl->t_expect, t_col, over, err)) != GW_OK)
+        return rc;
+    /* A column's work bounded as a study's (chain_column_work_check), before
+     * the stored trace's bound: with --out, chain --n 100000 was told to run
+     * without storing it, a run of days */
+    if ((rc = chain_column_work_check(n, pl->t_expect, t_col, over, "n", "t-max", err)) != GW_OK)
         return rc;
     /* A stored trace (gw_chain_trace_sample) keeps t, the wall force and every
      * bead's x and v at each sample and event (about 4 events per bead): bound

@@ -13,6 +13,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "chain_model.h"
 #include "chain_setup_rows.h"
 #include "gw_locale.h"
 
@@ -256,7 +257,24 @@ static int run_column(const gw_chain_dispersion_setup *s, const gw_solver_type *
     o.sample_ctx = &tr;
     gw_chain_result r;
     memset(&r, 0, sizeof r);
-    int rc = gw_chain_create(&p, &ch, err);
+    /* the column's work, bounded as chain's (chain_column_work_check) and
+     * named as this study's row: the plan's "n" is dispersion's lattice (the
+     * bound said "dispersion --n" to --column-n 100000); before the chain is
+     * made. Its other refusals that name n name column-n too. */
+    gw_chain_params q = p;
+    q.v_imp = chain_speed_scale(&p);
+    const double t_col = chain_collision_length(&q, NULL);
+    int rc = chain_column_work_check(p.n, t_col, t_col, NULL, "column-n", NULL, err);
+    if (rc == GW_OK && (rc = gw_chain_run_check(&p, &o, err)) != GW_OK && strncmp(err->msg, "n: ", 3) == 0) {
+        char tmp[sizeof err->msg];
+        gw_snprintf(tmp, sizeof tmp, "column-n: %s", err->msg + 3);
+        gw_err_set(err, rc, "%s", tmp);
+    }
+    if (rc != GW_OK) {
+        gw_chain_trace_free(&tr);
+        return rc;
+    }
+    rc = gw_chain_create(&p, &ch, err);
     column_progress cp = {.fn = progress, .ctx = pctx, .dt_out = o.dt_out};
     if (rc == GW_OK)
         rc = gw_chain_collide_progress(ch, &o, progress ? column_report : NULL, &cp, &r, err);

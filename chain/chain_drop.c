@@ -568,6 +568,14 @@ int gw_chain_drop_run(const gw_chain_drop_params *p, const gw_chain_run_opts *o,
     return gw_chain_drop_run_progress(p, o, NULL, NULL, r, err);
 }
 
+int chain_drop_work_check(const gw_chain_params *p, double t_max, gw_err *err)
+{
+    gw_chain_params w = *p;
+    w.v_imp = chain_speed_scale(p);
+    const double t_col = chain_collision_length(&w, NULL);
+    return chain_column_work_check(p->n, fmin(t_max, t_col), t_col, "the first collision", "n", "t-max", err);
+}
+
 static int drop_run(const gw_chain_drop_params *p, const gw_chain_run_opts *o, gw_progress_fn progress, void *pctx,
                     int rerun, gw_chain_drop_result *r, gw_err *err);
 
@@ -651,6 +659,11 @@ static int drop_run(const gw_chain_drop_params *p, const gw_chain_run_opts *o, g
     int rc = gw_chain_drop_params_validate(p, err);
     if (rc == GW_OK) /* before anything is allocated */
         rc = gw_chain_memory_check(&p->chain, o->solver, o->sp.method, err);
+    if (rc == GW_OK) { /* and the column's work (chain_drop_work_check) */
+        gw_chain_params w = p->chain;
+        w.v_imp = sqrt(2.0 * p->chain.gravity * p->height);
+        rc = chain_drop_work_check(&w, p->t_max, err);
+    }
     if (rc != GW_OK)
         return rc;
     const int n = p->chain.n;

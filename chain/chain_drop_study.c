@@ -366,7 +366,8 @@ int gw_chain_drop_study_run(const gw_chain_drop_setup *s, gw_progress_fn progres
         gw_chain_resolved_free(&res);
         return rc;
     }
-    if ((rc = gw_chain_memory_check(p, res.run.solver, res.run.sp.method, err)) != GW_OK) {
+    if ((rc = gw_chain_memory_check(p, res.run.solver, res.run.sp.method, err)) != GW_OK ||
+        (rc = chain_drop_work_check(p, res.run.t_max, err)) != GW_OK) {
         gw_chain_resolved_free(&res);
         return rc;
     }

@@ -473,10 +473,11 @@ int gw_chain_falcon_speeds(const double *vimp, int n_vimp, const double *heights
      * vimp"): the table's rows (speeds as every chain command takes
      * them; heights GW_CHAIN_HEIGHT_MIN_MM to GW_CHAIN_HEIGHT_MAX_MM, those
      * speeds at 9.81), and under another gravity each height's fall within the
-     * speeds of the row (the smallest height's at 9.81, 0.99e-9 m/s, to
-     * GW_CHAIN_VIMP_MAX): the row alone let --heights 5e7 --gravity 1e4 run at
-     * 31623 m/s and --heights 1 --gravity 1e-300 at 4.5e-152 m/s */
-    const double vlo = sqrt(2 * GW_CHAIN_G_EARTH * GW_CHAIN_HEIGHT_MIN_MM * 1e-3);
+     * speeds of the row, chain's [GW_CHAIN_VIMP_MIN, GW_CHAIN_VIMP_MAX]: the
+     * row alone let --heights 5e7 --gravity 1e4 run at 31623 m/s and --heights
+     * 1 --gravity 1e-300 at 4.5e-152 m/s (the lower end was the smallest
+     * height's speed at 9.81, 0.99e-9 m/s, below chain's until session 45) */
+    const double vlo = GW_CHAIN_VIMP_MIN;
     for (int i = 0; i < nv; i++) {
         int is_h = i >= n_vimp, k = is_h ? i - n_vimp + 1 : i + 1;
         double x = is_h ? heights_mm[i - n_vimp] : vimp[i];

@@ -365,6 +365,25 @@ int chain_held_check(const gw_chain_params *p, double t_max, double t_col, doubl
 int chain_sampling_check(int n, double t_expect, double dt_out, int given, const char *over, const char *why,
                          gw_err *err);
 
+/* One column's work (chain_collide_plan.c): N^2 times the share of its
+ * collision the run covers (t_expect / t_col, at most 1: the collision's
+ * expected length t_col as the plan and the progress line take it) at most
+ * GW_CHAIN_STUDY_WORK_MAX, the studies' bound (N = 1414 over a whole
+ * collision); GW_EINVAL "NAME: a column of N beads over OVER (about T s) is W
+ * bead^2 of work ...: lower NAME[, or T_MAX_NAME to run only the collision's
+ * start]" otherwise. name is the caller's parameter for N ("n" in the plan,
+ * so chain, drop, sweeps and Python; "column-n" in dispersion's column),
+ * t_max_name the one that cuts the run (NULL: none). Checked by the plan
+ * before a run allocates, and by dispersion's column before it creates one. */
+int chain_column_work_check(long n, double t_expect, double t_col, const char *over, const char *name,
+                            const char *t_max_name, gw_err *err);
+/* The drop's column's work (chain_drop.c): its first collision over the
+ * t_max followed after the first contact, p the column arriving at its impact
+ * speed (p->v_imp = sqrt(2 g h)), named n and t-max: drop --n 100000 ran for
+ * days. The drop study checks it before the written trace's bound (so that
+ * --out does not turn it into "run without storing it"), the run before it
+ * allocates. */
+int chain_drop_work_check(const gw_chain_params *p, double t_max, gw_err *err);
 /* The run's steps bounded before it starts (chain_collide_plan.c): the RK4 step
  * (the smaller of dt and dt_max), or cvode's and arkode's largest step dt_max,
  * may need at most 1e8 steps over t_len seconds; GW_EINVAL naming dt or

@@ -257,7 +257,11 @@ typedef struct gw_chain_params {
  * heights, mm: [GW_CHAIN_HEIGHT_MIN_MM, v_max^2 / (2 g)]. */
 #define GW_CHAIN_VIMP_MIN 1e-9
 #define GW_CHAIN_VIMP_MAX 1e3
-#define GW_CHAIN_HEIGHT_MIN_MM 5e-17 /* v = sqrt(2 g h) = 0.99e-9 m/s: rounded so that h >= it gives v >= ~VIMP_MIN */
+/* v = sqrt(2 g h) = 1.0003e-9 m/s at 9.81 m/s^2: the smallest drop height
+ * (VIMP_MIN^2 / 2 g = 5.0968e-17 mm) rounded up, so that every height of the
+ * row falls at a speed chain takes (5e-17 mm ran falcon at 9.9e-10 m/s, a
+ * speed chain --vimp refuses) */
+#define GW_CHAIN_HEIGHT_MIN_MM 5.1e-17
 /* Earth's gravity, m/s^2: the fall of a drop height when the run has no
  * gravity of its own (gw_chain_falcon_speeds), the paper's 2.9 mm drop of
  * softwall and of the sheets' K_eff, the drop's default gravity. */

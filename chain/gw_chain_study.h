@@ -41,8 +41,12 @@ GW_BEGIN_DECLS /* the exported interface, C linkage (gw_api.h) */
  * walls), is refused above 2e6 before anything runs: 9x the largest documented
  * study (softwall --sheets --n 1:40, 9 walls x 22140 = 2.0e5, 47 s) and room
  * for falcon --n 1:100 at its five default speeds (1.7e6); at the bound one
- * column of N = 1414, estimated 8 to 15 min from the N = 400 run (N^2 to N^2.5).
- * --n 1:100000 asked for 3e14 (days). */
+ * column of N = 1414, estimated 8 to 15 min from the N = 400 run (N^2 to N^2.5),
+ * measured 353 s of CPU under cvode (session 45).
+ * --n 1:100000 asked for 3e14 (days). One column is held to the same bound
+ * over the share of its collision it runs (the plan: chain, drop, sweeps,
+ * dispersion's column, Python; since session 45: chain --n 100000 ran for
+ * days). */
 #define GW_CHAIN_STUDY_WORK_MAX 2e6
 
 /* The work of a study over N = a..b with runs columns at each N (runs < 1
@@ -77,7 +81,7 @@ int gw_chain_study_speeds_check(const double *v, int n, int n_speeds, gw_err *er
  * GW_CHAIN_VIMP_MAX] and the heights in [GW_CHAIN_HEIGHT_MIN_MM,
  * GW_CHAIN_HEIGHT_MAX_MM] ("vimp: item K is X, outside [A, B]", the rows of
  * gw_chain_falcon_setup_params); under another gravity than Earth's, each
- * height's fall within the speeds of those heights at 9.81 m/s^2, [0.99e-9,
+ * height's fall within chain's impact speeds [GW_CHAIN_VIMP_MIN,
  * GW_CHAIN_VIMP_MAX] m/s ("heights: item K is H mm: at gravity G m/s^2 it falls
  * to v = ... m/s, outside the impact speeds [..] m/s"); then the velocities
  * distinct (gw_chain_study_speeds_check, which compares finite speeds only). */

@@ -10,7 +10,7 @@
 #    cannot tell them apart" (also with --heights 1,1e308, --gravity 1e4, and
 #    through Python). gw_chain_falcon_speeds now checks the ranges before it
 #    compares the velocities, and gw_chain_study_speeds_check compares finite
-#    speeds only: "heights: item 1 is 1e+308, outside [5e-17, 5.09683e+07]".
+#    speeds only: "heights: item 1 is 1e+308, outside [5.1e-17, 5.09683e+07]".
 #    Twins in range are still refused as such, and a pair too close to tell
 #    apart shows each speed in the digits that read back as it: the refusal
 #    of --vimp 0.3,0.3000000001 named item 1 as 0.29999999999999999 m/s.
@@ -56,16 +56,16 @@ PY=/usr/bin/python3
 
 # --- 1 a height beyond its row named as given, not as an infinite twin ---
 refused "falcon --heights 1e308: the height's range, as given" \
-    '^granwave falcon --heights: item 1 is 1e\+308, outside \[5e-17, 5\.09683e\+07\]$' \
+    '^granwave falcon --heights: item 1 is 1e\+308, outside \[5\.1e-17, 5\.09683e\+07\]$' \
     falcon --n 1:2 --heights 1e308 --quiet --out o
 refused "falcon --heights 1,1e308 (the second beyond the row): item 2's range" \
-    '^granwave falcon --heights: item 2 is 1e\+308, outside \[5e-17, 5\.09683e\+07\]$' \
+    '^granwave falcon --heights: item 2 is 1e\+308, outside \[5\.1e-17, 5\.09683e\+07\]$' \
     falcon --n 1:2 --heights 1,1e308 --quiet --out o
 refused "falcon --heights 1e308 --gravity 1e4: the height's range" \
-    '^granwave falcon --heights: item 1 is 1e\+308, outside \[5e-17, 5\.09683e\+07\]$' \
+    '^granwave falcon --heights: item 1 is 1e\+308, outside \[5\.1e-17, 5\.09683e\+07\]$' \
     falcon --n 1:2 --heights 1e308 --gravity 1e4 --quiet --out o
 refused "falcon --heights 1e300,1.0000000001e300 (two finite twins, both beyond the row): the range first" \
-    '^granwave falcon --heights: item 1 is 1e\+300, outside \[5e-17, 5\.09683e\+07\]$' \
+    '^granwave falcon --heights: item 1 is 1e\+300, outside \[5\.1e-17, 5\.09683e\+07\]$' \
     falcon --n 1:2 --heights 1e300,1.0000000001e300 --quiet --out o
 # twins inside the range: still refused as twins
 refused "falcon --heights 1,1 (in range): still the same collisions twice" \

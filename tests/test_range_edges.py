@@ -303,7 +303,7 @@ def chain_cases():
 
 def study_cases():
     case("falcon", ["--quiet", "--jobs", 1, "--n", "1:2", "--heights", "none", "--vimp", "1e-9,1000"])
-    case("falcon", ["--quiet", "--jobs", 1, "--n", "1:2", "--heights", "5e-17"])
+    case("falcon", ["--quiet", "--jobs", 1, "--n", "1:2", "--heights", "5.1e-17"], must_run=True)
     case("falcon", ["--quiet", "--jobs", 1, "--n", "1:2", "--heights", "none", "--accuracy", 0.01],
          full_only=True)
     # the row's range is [1e-9, 1e-2] and 0 (the solver options as given): taken

@@ -14,7 +14,7 @@
  *    the program, the library and Python): heights fall in the run's gravity
  *    (9.81 when off), to 1e-15; a negative value, a speed given twice, a speed
  *    beyond 1000 m/s and a height whose fall under the run's gravity leaves the
- *    speeds [0.99e-9, 1000] m/s (5e7 mm at 1e4 m/s^2, 1 mm at 1e-300) refused
+ *    speeds [1e-9, 1000] m/s (5e7 mm at 1e4 m/s^2, 1 mm at 1e-300) refused
  *    by name, by the function and by gw_chain_falcon_run (which ran both).
  *  - Pluviation and an impact on a 30-disc sample: the impact's ledger closes
  *    to 2e-3 (the fast default's bound, tests/test_layer_cli.sh) and the

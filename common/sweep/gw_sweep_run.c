@@ -286,33 +286,6 @@ void gw_sweep_checks_end(const gw_sweep_model *m, void *memo)
         m->memo_free(memo);
 }
 
-int gw_sweep_undecided_warning(const gw_sweep_model *m, long n, long total, long first, char **list)
-{
-    if (!m || !list || n <= 0)
-        return GW_OK;
-    if (n > total || first < 0 || first >= total) /* 5 of 3 cases, or a first case outside them, was written as given */
-        return GW_EINVAL;
-    /* the chain's column: converged 0 is a collision held by gravity (its
-     * row nan) or not ended at t-max (its values those there), the texts
-     * gw_chain_result_warnings gives a single run */
-    return gw_warnings_add(list, "%ld of %ld cases did not end their collision (column converged = 0; the first, "
-                           "case %ld): one held on the wall by gravity has its undecided values nan, one cut at t-max "
-                           "those at t-max (raise t-max); a single run of such a case says which", n, total, first);
-}
-
-long gw_sweep_undecided_rows(const gw_sweep_model *m, const double *values, long ncases, long *first)
-{
-    int col = -1;
-    for (int j = 0; m && m->columns && j < m->ncolumns; j++)
-        if (m->columns[j] && strcmp(m->columns[j], "converged") == 0)
-            col = j;
-    long n = 0;
-    for (long k = 0; col >= 0 && values && k < ncases; k++)
-        if (values[k * m->ncolumns + col] == 0 && n++ == 0 && first)
-            *first = k;
-    return n;
-}
-
 static int same_key(const char *a, const char *b)
 {
     for (; *a && *b; a++, b++)
@@ -330,33 +303,6 @@ static int same_key_n(const char *a, size_t n, const char *b)
     return *b == 0;
 }
 
-/* The single run's warning texts name its flags (--vimp); a sweep's config
- * has keys (vimp): each "--NAME" whose NAME is a key of the model's options
- * table (has_key, the one mapping) loses its dashes, in place. */
-void gw_sweep_warnings_keys(const gw_sweep_model *m, char *list)
-{
-    if (!m || !m->has_key || !list)
-        return;
-    char *out = list;
-    for (const char *p = list; *p;) {
-        if (p[0] == '-' && p[1] == '-' && (p == list || !(isalnum((unsigned char)p[-1]) || p[-1] == '-'))) {
-            size_t n = 0;
-            char name[64];
-            while (n + 1 < sizeof name && (islower((unsigned char)p[2 + n]) || isdigit((unsigned char)p[2 + n]) ||
-                                           p[2 + n] == '-'))
-                name[n] = p[2 + n], n++;
-            while (n > 0 && name[n - 1] == '-') /* "--vimp-" of a dash after the name: the name alone */
-                n--;
-            name[n] = '\0';
-            if (n > 0 && m->has_key(name)) {
-                p += 2;
-                continue;
-            }
-        }
-        *out++ = *p++;
-    }
-    *out = '\0';
-}
 
 int gw_sweep_case_refused(const gw_sweep_config *cfg, const gw_sweep_model *m, long k, int rc, gw_err *err)
 {

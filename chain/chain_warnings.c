@@ -669,6 +669,13 @@ static int drop_chatter_warning(const gw_chain_drop_result *r, const gw_chain_ru
                     (double)r->stats.steps, r->n, step ? GW_CHAIN_DROP_CHATTER_RK4_WORK : GW_CHAIN_CHATTER_WORK,
                     step ? "at half rk4's step, twice the drop's steps, is made within" : "is made within", flags,
                     less);
+    else if (kind == GW_CHAIN_CHATTER_MOVED && !(r->chatter_spread >= 0))
+        /* a result filled by hand (a NaN or negative spread was said "up to
+         * nan"): the rerun moved them, by how much is not recorded */
+        gw_snprintf(ending, sizeof ending, "and a rerun at %s changed the impacts' F_max by an amount the result "
+                    "does not record (its chatter_spread is %s, not a spread): the impacts, their peaks and the "
+                    "energy ledger are uncertain by an unknown amount, and move with dt-out and the tolerances; %s",
+                    how, isnan(r->chatter_spread) ? "not a number" : "negative", less);
     else if (kind == GW_CHAIN_CHATTER_MOVED && r->chatter_spread >= 1)
         gw_snprintf(ending, sizeof ending, "and a rerun at %s gave other impacts (their count or contact episodes "
                     "differ): the impacts, their peaks and the energy ledger are one of the chatter's outcomes, "

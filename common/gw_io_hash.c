@@ -123,6 +123,9 @@ int gw_fnv1a64_stream(FILE *fp, unsigned long long *h)
 int gw_fnv1a64_file_max(const char *path, const char *what, unsigned long long max, int text,
                         unsigned long long *h, gw_err *err)
 {
+    /* NULL named as NULL (it was "input: empty file name") */
+    if (!path || !h)
+        return gw_err_set(err, GW_EINVAL, "gw_fnv1a64_file_max: %s is NULL", !path ? "path" : "h");
     /* a yes/no: 7 was taken as yes, as the other yes/no arguments are not */
     if (text != 0 && text != 1)
         return gw_err_set(err, GW_EINVAL, "gw_fnv1a64_file_max: text is %d, not a flag (0 or 1)", text);
@@ -169,5 +172,7 @@ int gw_io_fnv1a64_file_from(unsigned long long h0, const char *path, const char 
 
 int gw_fnv1a64_file(const char *path, const char *what, unsigned long long *h, gw_err *err)
 {
+    if (!path || !h)
+        return gw_err_set(err, GW_EINVAL, "gw_fnv1a64_file: %s is NULL", !path ? "path" : "h");
     return gw_fnv1a64_file_max(path, what, GW_INPUT_HASH_MAX, 0, h, err);
 }

@@ -27,10 +27,13 @@ int gw_input_open(const char *path, const char *what, FILE **out, gw_err *err)
 {
     if (!out)
         return gw_err_set(err, GW_EINVAL, "gw_input_open: out is NULL");
+    *out = NULL;
+    /* NULL named as NULL (the library's rule; it was "input: empty file name") */
+    if (!path)
+        return gw_err_set(err, GW_EINVAL, "gw_input_open: path is NULL");
     if (!what)
         what = "input";
-    *out = NULL;
-    if (!path || !*path)
+    if (!*path)
         return gw_err_set(err, GW_EINVAL, "%s: empty file name", what);
     /* O_NONBLOCK: opening a FIFO without a writer would block until one comes */
     int fd = open(path, O_RDONLY | O_NONBLOCK | O_NOCTTY);
@@ -64,6 +67,8 @@ int gw_input_open(const char *path, const char *what, FILE **out, gw_err *err)
 
 int gw_input_check(const char *path, const char *what, gw_err *err)
 {
+    if (!path)
+        return gw_err_set(err, GW_EINVAL, "gw_input_check: path is NULL");
     FILE *fp = NULL;
     int rc = gw_input_open(path, what, &fp, err);
     if (fp)
@@ -79,6 +84,8 @@ int gw_input_read(const char *path, const char *what, size_t max, char **out, si
     *out = NULL;
     if (len)
         *len = 0;
+    if (!path)
+        return gw_err_set(err, GW_EINVAL, "gw_input_read: path is NULL");
     FILE *fp = NULL;
     int rc = gw_input_open(path, what, &fp, err);
     if (rc != GW_OK)

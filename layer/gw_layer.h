@@ -787,10 +787,19 @@ void gw_layer_impact_result_free(gw_layer_impact_result *r);
  * that leans on a wall taken away (that wall's normal and friction forces'
  * resultant above the pile's weight: a pile wedged between its walls), with
  * GW_EINVAL "side-walls: ...", judged under the material and gravity the
- * sample records it settled with, else the default material (the run then
- * takes its lp; gw_layer_impact_dem_dt, which takes this check, is NaN). */
+ * sample records it settled with, else the default material: this check has
+ * no material, and a sample without a settling record run under another
+ * (gw_layer_impact with lp's shear modulus at 4e9 Pa) is judged under lp by
+ * the run. gw_layer_impact_check_with takes the run's lp and judges the side
+ * walls as the run does, with the run's message (lp NULL: GW_EINVAL naming
+ * it; lp held to gw_layer_params_validate first); gw_layer_impact_dem_dt
+ * takes it (NaN where it refuses; before session 45 the default material's
+ * verdict). The setup's check (gw_layer_impact_setup_check) judges under the
+ * setup's material. */
 int gw_layer_impact_check(const gw_layer_sample *s, const gw_layer_impact_params *ip,
                           gw_err *err);
+int gw_layer_impact_check_with(const gw_layer_sample *s, const gw_layer_params *lp,
+                               const gw_layer_impact_params *ip, gw_err *err);
 
 /* The block falls the gap under gravity g (m/s^2) before it touches: its
  * normal speed at contact is sqrt(V_ni^2 + 2 g gap). The outcome (e_n, e,

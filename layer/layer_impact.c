@@ -268,19 +268,45 @@ int layer_side_walls_rest_check(const gw_layer_sample *smp, const gw_layer_param
     return GW_OK;
 }
 
-int gw_layer_impact_check(const gw_layer_sample *smp, const gw_layer_impact_params *p, gw_err *err)
+/* gw_layer_impact_check's rules with the side walls judged under lp (NULL:
+ * the default material), lp as the run takes it: its width the sample's, its
+ * walls the impact's (gw_layer_impact's copy of lp). */
+static int impact_check(const gw_layer_sample *smp, const gw_layer_params *lp, const gw_layer_impact_params *p,
+                        gw_err *err)
 {
-    if (!smp || !p)
-        return gw_err_set(err, GW_EINVAL, "gw_layer_impact_check: %s is NULL", !smp ? "s" : "ip");
     /* the limits every sample is held to (the reader's: a disc outside the
      * box, of a radius 1e6 R_m, or two at one place ran before session 43) */
     int rc = layer_sample_shape_check(smp, "s", err);
     if (rc == GW_OK)
         rc = layer_impact_params_check(smp, p, err);
-    /* the side walls kept, as the run and the setup judge them (the setup's
-     * check and gw_layer_impact applied it, this check did not until session
-     * 45): under the sample's recorded settling, else the default material */
-    return rc == GW_OK ? layer_side_walls_rest_check(smp, NULL, p, err) : rc;
+    if (rc != GW_OK || !lp)
+        /* the side walls kept, as the run and the setup judge them (the
+         * setup's check and gw_layer_impact applied it, this check did not
+         * until session 45): under the sample's recorded settling, else the
+         * default material */
+        return rc == GW_OK ? layer_side_walls_rest_check(smp, NULL, p, err) : rc;
+    gw_layer_params m = *lp;
+    m.width = smp->width;
+    m.walls = impact_walls(p);
+    return layer_side_walls_rest_check(smp, &m, p, err);
+}
+
+int gw_layer_impact_check(const gw_layer_sample *smp, const gw_layer_impact_params *p, gw_err *err)
+{
+    if (!smp || !p)
+        return gw_err_set(err, GW_EINVAL, "gw_layer_impact_check: %s is NULL", !smp ? "s" : "ip");
+    return impact_check(smp, NULL, p, err);
+}
+
+int gw_layer_impact_check_with(const gw_layer_sample *smp, const gw_layer_params *lp, const gw_layer_impact_params *p,
+                               gw_err *err)
+{
+    if (!smp || !lp || !p)
+        return gw_err_set(err, GW_EINVAL, "gw_layer_impact_check_with: %s is NULL", !smp ? "s" : !lp ? "lp" : "ip");
+    /* the impact's material as the run holds it (gw_layer_impact_rest_check's
+     * rule: a NaN gravity would judge no pile) */
+    const int rc = gw_layer_params_validate(lp, err);
+    return rc == GW_OK ? impact_check(smp, lp, p, err) : rc;
 }
 
 int layer_impact_params_check(const gw_layer_sample *smp, const gw_layer_impact_params *p, gw_err *err)
@@ -690,8 +716,9 @@ double gw_layer_impact_dem_dt(const gw_layer_sample *s, const gw_layer_params *l
 {
     /* any sample or impact the run refuses (gw_layer_impact_check: before
      * session 43 the sample's form only, and a disc outside the box, two discs
-     * at one place got a step, a speed of 0 an infinite one) */
-    if (!s || !lp || !ip || gw_layer_impact_check(s, ip, NULL) != GW_OK)
+     * at one place got a step, a speed of 0 an infinite one; its side walls
+     * under lp since session 45, under the default material before) */
+    if (!s || !lp || !ip || gw_layer_impact_check_with(s, lp, ip, NULL) != GW_OK)
         return NAN;
     return layer_impact_dem_dt(s, lp, ip);
 }

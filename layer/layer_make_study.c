@@ -140,6 +140,9 @@ static char *header(const gw_layer_make_setup *given, const gw_layer_make_outcom
 int gw_layer_make_plan(const gw_layer_make_setup *given, gw_layer_params *lp_out, gw_layer_make_params *mp_out,
                        gw_err *err)
 {
+    /* its outputs were written through NULL once the setup passed (SIGSEGV) */
+    if (!given || !lp_out || !mp_out)
+        return gw_err_set(err, GW_EINVAL, "gw_layer_make_plan: %s is NULL", !given ? "s" : !lp_out ? "lp" : "mp");
     int rc = gw_param_check(make_params, given, err);
     if (rc != GW_OK)
         return rc;

@@ -502,9 +502,13 @@ static int setup_rows_check(const gw_layer_impact_setup *s, gw_err *err)
 static int plan_make(const gw_layer_impact_setup *s, gw_layer_impact_plan *p, layer_settling_memo *memo,
                      layer_settling_found *found, gw_err *err)
 {
+    /* p emptied first, s NULL too: a plan declared without a value and
+     * refused was left as it was, and freeing it freed what it held (before
+     * session 45: "writes nothing", SIGSEGV in gw_layer_impact_plan_free) */
+    if (p)
+        memset(p, 0, sizeof *p);
     if (!s || !p)
         return gw_err_set(err, GW_EINVAL, "gw_layer_impact_plan_make: %s is NULL", !s ? "s" : "p");
-    memset(p, 0, sizeof *p);
     int rc = setup_rows_check(s, err);
     if (rc != GW_OK)
         return rc;

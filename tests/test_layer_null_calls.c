@@ -180,6 +180,11 @@ static int c_gw_layer_impact_check(void)
     gw_err e = {{0}}; return gw_layer_impact_check(NULL, NULL, &e) == GW_EINVAL && gw_test_said(&e, "gw_layer_impact_check: s is NULL");
 }
 
+static int c_gw_layer_impact_check_with(void)
+{
+    gw_err e = {{0}}; return gw_layer_impact_check_with(NULL, NULL, NULL, &e) == GW_EINVAL && gw_test_said(&e, "gw_layer_impact_check_with: s is NULL");
+}
+
 static int c_gw_layer_impact_fall_check(void)
 {
     gw_err e = {{0}}; return gw_layer_impact_fall_check(NULL, 9.81, &e) == GW_EINVAL && gw_test_said(&e, "gw_layer_impact_fall_check: ip is NULL");
@@ -259,6 +264,7 @@ static const gw_test_call calls[] = {
     {"gw_layer_make", c_gw_layer_make},
     {"gw_layer_sample_porosity", c_gw_layer_sample_porosity},
     {"gw_layer_impact_check", c_gw_layer_impact_check},
+    {"gw_layer_impact_check_with", c_gw_layer_impact_check_with},
     {"gw_layer_impact_fall_check", c_gw_layer_impact_fall_check},
     {"gw_layer_impact_gap_check", c_gw_layer_impact_gap_check},
     {"gw_layer_impact_rest_check", c_gw_layer_impact_rest_check},

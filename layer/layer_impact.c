@@ -1199,12 +1199,18 @@ int layer_impact_run(const gw_layer_sample *smp, const gw_layer_params *lp0, con
                            .cap_max = 0, .nr = ip->nrings, .stride = 1, .closed = 0};
     /* at most 2^22 values (33.5 MB; 167,772 points of 12 rings, 3.4 s at
      * 2e-5 s: every check of a first impact within the default t-max of 2 s
-     * at the default rings), or 4096 points above 511 rings. It was 2^24
-     * (134 MB, 13 s), and the crowns' analysis (the spectra, the FFTs) adds
-     * about as much: on the pile of `layer-make --n 40` at --dt-out 1e-2,
-     * --rings 1000 peaked at 262 MB (now 134), and --rings 100 under
-     * --gravity 0.5 (T_f 2.6 s) at 252 MB (now 70 MB), its three speeds
-     * moved by under 1% of their errors (test_crowns_series_bound) */
+     * at the default rings) at every ring count: 2096 points at 1000 rings,
+     * at least 1048 over the first impact, so a first impact up to 0.58 s
+     * long (the 40-disc pile's: 0.306 s) still gives a crown's crossing at
+     * 580 m/s (1.1 ms) the two sampling intervals the speeds need
+     * (layer_crowns.c). It was 2^24 (134 MB, 13 s), then 4096
+     * points above 511 rings (8.2e6 values, 65 MB, at 1000 rings); the
+     * crowns' analysis turns the series into its spectra in place
+     * (layer_crowns_series) where it added about as much again: on the pile
+     * of `layer-make --n 40` at --dt-out 1e-2, --rings 1000 peaked at 262 MB,
+     * then 134, now 43 MB (its speeds moved by 0.3 % of their errors), and
+     * --rings 100 under --gravity 0.5 (T_f 2.6 s) at 252 MB, then 70 MB
+     * (test_crowns_series_bound) */
     crowns.cap_max = 2 * (int)((double)(1 << 21) / (1 + 2.0 * ip->nrings));
     if (rc == GW_OK && crowns_checks && !(crowns.scratch = malloc(2 * (size_t)ip->nrings * sizeof *crowns.scratch)))
         rc = gw_err_set(err, GW_ENOMEM, "layer-impact: out of memory for the crowns' series");

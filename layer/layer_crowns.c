@@ -16,7 +16,10 @@
  * Every speed (this one, the kinetic one and the cross-correlation's below)
  * is NaN unless it is positive, resolved by the samples (the wave takes at
  * least two sampling intervals dt to cross a ring, d_c / c >= 2 dt) and known
- * to better than half of it (standard error < c / 2).
+ * to better than half of it (standard error < c / 2); the cross-correlation's
+ * also when its pairs' mean delay per crown exceeds 10 times the first
+ * contact's opening time (pairs locked onto the pile's slow motion:
+ * layer_crowns_xcorr_locked, warned of by layer_crowns_warning).
  *
  * Delays by FFT cross-correlation (gw_xcorr.c). Ring k's total energy
  * E_k(t) = strain increase + kinetic energy, sampled every dt; its changes

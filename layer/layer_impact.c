@@ -940,7 +940,12 @@ static double record(gw_layer_impact_result *r, gw_layer *L, int block, double w
  * and stride doubled (an even series of bounded size). No point is kept after
  * the first at or after T_f (the first impact, all the crowns read). */
 typedef struct crown_series {
-    double *t, *kin, *strain; /* [cap], [cap * nr], [cap * nr] */
+    double *t;                /* [cap] */
+    /* one block [2 nr + 2 cap nr]: room for the crowns' delays and correlations,
+     * then strain [cap * nr], then kin [cap * nr] (the layout of the result's
+     * xcorr_delay block, so that the analysis turns the series into the spectra
+     * in place: layer_crowns_series) */
+    double *buf, *kin, *strain;
     double *scratch;          /* [2 nr]: the rings' coordination and dissipation */
     int n, cap, cap_max, nr;
     long stride;
@@ -949,7 +954,7 @@ typedef struct crown_series {
 
 static void crown_series_free(crown_series *c)
 {
-    free(c->t), free(c->kin), free(c->strain), free(c->scratch);
+    free(c->t), free(c->buf), free(c->scratch);
     memset(c, 0, sizeof *c);
 }
 
@@ -975,13 +980,14 @@ static int crown_room(crown_series *c)
     double *t = realloc(c->t, (size_t)cap * sizeof *t);
     if (t)
         c->t = t;
-    double *k = t ? realloc(c->kin, (size_t)cap * nr * sizeof *k) : NULL;
-    if (k)
-        c->kin = k;
-    double *s = k ? realloc(c->strain, (size_t)cap * nr * sizeof *s) : NULL;
-    if (!s)
+    double *b = t ? realloc(c->buf, (2 + 2 * (size_t)cap) * nr * sizeof *b) : NULL;
+    if (!b)
         return GW_ENOMEM;
-    c->strain = s;
+    c->buf = b;
+    c->strain = b + 2 * nr;
+    /* the kinetic rows move up past the strain's new room */
+    memmove(c->strain + (size_t)cap * nr, c->strain + (size_t)c->cap * nr, (size_t)c->n * nr * sizeof *b);
+    c->kin = c->strain + (size_t)cap * nr;
     c->cap = cap;
     return GW_OK;
 }
@@ -1216,17 +1222,23 @@ int layer_impact_run(const gw_layer_sample *smp, const gw_layer_params *lp0, con
     /* the crowns from the checks when the samples are coarser, else from the
      * samples (a finer dt-out resolves them better) */
     const int crowns_checks = h < ip->dt_out * (1 - 1e-9);
-    crown_series crowns = {.t = NULL, .kin = NULL, .strain = NULL, .scratch = NULL, .n = 0, .cap = 0,
+    crown_series crowns = {.t = NULL, .buf = NULL, .kin = NULL, .strain = NULL, .scratch = NULL, .n = 0, .cap = 0,
                            .cap_max = 0, .nr = ip->nrings, .stride = 1, .closed = 0};
     /* at most 2^22 values (33.5 MB; 167,772 points of 12 rings, 3.4 s at
      * 2e-5 s: every check of a first impact within the default t-max of 2 s
-     * at the default rings), or 4096 points above 511 rings. It was 2^24
-     * (134 MB, 13 s), and the crowns' analysis (the spectra, the FFTs) adds
-     * about as much: on the pile of `layer-make --n 40` at --dt-out 1e-2,
-     * --rings 1000 peaked at 262 MB (now 134), and --rings 100 under
-     * --gravity 0.5 (T_f 2.6 s) at 252 MB (now 70 MB), its three speeds
-     * moved by under 1% of their errors (test_crowns_series_bound) */
-    crowns.cap_max = 2 * (int)fmax(2048, (double)(1 << 21) / (1 + 2.0 * ip->nrings));
+     * at the default rings) at every ring count: 2096 points at 1000 rings,
+     * at least 1048 over the first impact, so a first impact up to 0.58 s
+     * long (the 40-disc pile's: 0.306 s) still gives a crown's crossing at
+     * 580 m/s (1.1 ms) the two sampling intervals the speeds need
+     * (layer_crowns.c). It was 2^24 (134 MB, 13 s), then 4096
+     * points above 511 rings (8.2e6 values, 65 MB, at 1000 rings); the
+     * crowns' analysis turns the series into its spectra in place
+     * (layer_crowns_series) where it added about as much again: on the pile
+     * of `layer-make --n 40` at --dt-out 1e-2, --rings 1000 peaked at 262 MB,
+     * then 134, now 43 MB (its speeds moved by 0.3 % of their errors), and
+     * --rings 100 under --gravity 0.5 (T_f 2.6 s) at 252 MB, then 70 MB
+     * (test_crowns_series_bound) */
+    crowns.cap_max = 2 * (int)((double)(1 << 21) / (1 + 2.0 * ip->nrings));
     if (rc == GW_OK && crowns_checks && !(crowns.scratch = malloc(2 * (size_t)ip->nrings * sizeof *crowns.scratch)))
         rc = gw_err_set(err, GW_ENOMEM, "layer-impact: out of memory for the crowns' series");
     double t0 = gw_clock_ms();
@@ -1377,8 +1389,8 @@ int layer_impact_run(const gw_layer_sample *smp, const gw_layer_params *lp0, con
     res->block_loss_contact_open = over_incident(res->ledger[0].kinetic_block - kb_open, res->e_incident);
     gw_layer_free(L);
     /* the crowns from the checks' series when dt-out is coarser (crown_series) */
-    rc = crowns_checks ? layer_crowns_series(res, crowns.t, crowns.strain, crowns.kin, crowns.n)
-              : layer_crowns_series(res, NULL, NULL, NULL, 0);
+    rc = crowns_checks ? layer_crowns_series(res, crowns.t, &crowns.buf, crowns.cap, crowns.n)
+              : layer_crowns_series(res, NULL, NULL, 0, 0);
     crown_series_free(&crowns);
     if (rc != GW_OK) {
         gw_layer_impact_result_free(res);

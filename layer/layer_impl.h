@@ -664,14 +664,25 @@ int layer_result_shape(const gw_layer_impact_result *r, int whole, gw_err *err);
  * interval and the crown width into *dt_s, *dc_s (layer_crowns.c). */
 unsigned layer_crowns_undersampled(const gw_layer_impact_result *r, double *dt_s, double *dc_s, int *few);
 
-/* gw_layer_crowns of r over the series t[n], strain[n * nrings] and
- * kin[n * nrings] (the run's checks: layer_impact.c) in place of r's written
- * ones (t NULL: r's own), which r keeps. The series' interval, its samples of
+/* gw_layer_crowns of r over the series t[n] and the block *buf (the run's
+ * checks: layer_impact.c) in place of r's written ones (t NULL: r's own),
+ * which r keeps. *buf holds 2 nrings doubles of room, then strain
+ * [rows * nrings], then kin [rows * nrings] (n <= rows); the analysis turns it
+ * into r's xcorr_delay block in place (the spectra over the series, ring by
+ * ring: the peak memory is the series', not twice it) and sets *buf NULL, or
+ * leaves it to the caller to free (fewer than 4 samples, or out of memory).
+ * The series' interval, its samples of
  * the first impact and their span go to peak_strain_t[3 nrings .. 3 nrings + 2]
  * (LAYER_CROWN_GRID doubles after the peaks and ring_r, allocated by the run
  * only), where layer_crowns_undersampled reads them. */
 #define LAYER_CROWN_GRID 3
-int layer_crowns_series(gw_layer_impact_result *r, double *t, double *strain, double *kin, int n);
+/* 1 when the crowns' cross-correlation speed is not the wave's: its pairs'
+ * mean delay per crown (*delay, s) above LAYER_XCORR_LOCK times the first
+ * contact's opening time, or without one the crown's transit at the faster
+ * peak speed (*ref, s); gw_layer_crowns then reports it as NaN (layer_crowns.c). */
+#define LAYER_XCORR_LOCK 10.0
+int layer_crowns_xcorr_locked(const gw_layer_impact_result *r, double *delay, double *ref);
+int layer_crowns_series(gw_layer_impact_result *r, double *t, double **buf, int rows, int n);
 
 /* The checks a sample read from a file passes (layer_sample_check of
  * layer_sample_check.c and layer_overlaps_check): GW_EFORMAT with a message starting

@@ -699,6 +699,18 @@ int layer_crowns_warning(const gw_layer_sample *smp, const gw_layer_impact_param
     int rc = crowns_sampling_warning(ip, r, list);
     if (rc != GW_OK)
         return rc;
+    /* the cross-correlation locked onto something slower than the wave
+     * (layer_crowns_xcorr_locked): its speed null, said here */
+    double delay, ref;
+    if (isnan(r->wave_speed_xcorr) && layer_crowns_xcorr_locked(r, &delay, &ref) &&
+        (rc = gw_warnings_add(list, "crowns: the cross-correlation's ring pairs are %.3g s apart on average, %.0f "
+                              "times the %.3g s %s: they follow the pile's slower motion over the first impact, not "
+                              "the wave, so wave_speed_xcorr is null (undecided; it read %.4g m/s)", delay,
+                              delay / ref, ref, r->t_contact_open > 0 && isfinite(r->t_contact_open)
+                              ? "the block's first contact lasted (to its opening)"
+                              : "a crown takes at the faster peak speed", (r->ring_r[1] - r->ring_r[0]) / delay))
+        != GW_OK)
+        return rc;
     const double w = ip->ring_width > 0 ? ip->ring_width : 2 * smp->rm;
     if (ip->nrings < 4)
         return gw_warnings_add(list, "rings: %d crowns leave %d beyond the first, where the wave speeds need 3: "

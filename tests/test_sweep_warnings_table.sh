@@ -139,7 +139,8 @@ else
 fi
 # --- 5 layer-stats says the table's warnings: first on stderr, once each, as its own; in --json ---
 # (they were dropped: a user reading layer-stats' output alone lost them)
-sweep_said=$(sed 's|^|granwave layer-stats: warning: l.out/results.csv: the sweep that wrote it warned: |' <<<"$w")
+sweep_said=$(while IFS= read -r t; do
+    echo "granwave layer-stats: warning: l.out/results.csv: the sweep that wrote it warned: $t"; done <<<"$w")
 nw=$(grep -c . <<<"$w")
 cpu_run 60 "$GW" layer-stats l.out/results.csv --json >ls1.json 2>/dev/null; rcj=$?
 if [ $rc1 -eq 0 ] && [ "$(head -n "$nw" ls1.err)" = "$sweep_said" ] &&

@@ -17,8 +17,16 @@
 #  4 a layer sweep on a sample settled at density 2000 and hit at 2650 (the
 #    settling warning of the check pass): the line in the table; layer-stats
 #    reads the table (exit 0) and says what it says of the table without the
-#    warning lines (its stdout, stderr and groups.csv the same, but for the
-#    table's path and hash).
+#    warning lines (its stdout and groups.csv the same, but for the table's
+#    path and hash).
+#  5 layer-stats says the table's warnings (it ignored them): on stderr first,
+#    "granwave layer-stats: warning: TABLE: the sweep that wrote it warned:
+#    TEXT", then its own as before; first in --json's "warnings"; a warning
+#    line given twice in the table said once.
+#  6 the library's older table call gw_sweep_write_table (a C caller's, by
+#    tests/gw_grid_probe) writes the check pass's warnings too: table 1's
+#    byte for byte the program's (it wrote the rows' alone); control: table
+#    2's (a rows' warning alone) the program's.
 #  Control: a sweep without warnings writes no "# warning:" line, its header
 #  right after its "# grid" lines (its table is the build before's, but for
 #  the "# build" line's commit: checked by hand, see docs/tests.md).
@@ -121,13 +129,61 @@ fi
 grep -v '^# warning: ' l.out/results.csv >plain.csv
 cpu_run 60 "$GW" layer-stats l.out/results.csv --out ls1 >ls1.out 2>ls1.err; rc1=$?
 cpu_run 60 "$GW" layer-stats plain.csv --out ls2 >ls2.out 2>ls2.err; rc2=$?
+# its numbers the same: stdout and groups.csv as the table's without the warning lines
 if [ -n "$w" ] && [ $rc1 -eq 0 ] && [ $rc2 -eq 0 ] &&
-    cmp -s <(sed 's|l.out/results.csv|T|g' ls1.err) <(sed 's|plain.csv|T|g' ls2.err) &&
     cmp -s <(sed 's|l.out/results.csv|T|g' ls1.out) <(sed 's|plain.csv|T|g' ls2.out) &&
     [ -s ls1/groups.csv ] && cmp -s <(grep -v '^# \(input\|command\)' ls1/groups.csv) <(grep -v '^# \(input\|command\)' ls2/groups.csv); then
-    ok "4 layer-stats reads the table with its warning lines as without them (exit 0, the same output and groups.csv)"
+    ok "4 layer-stats reads the table with its warning lines: its numbers as without them (exit 0, stdout, groups.csv)"
 else
     ko "4 layer-stats: warned '$w', exit $rc1 and $rc2, $(head -c 300 ls1.err)"
+fi
+# --- 5 layer-stats says the table's warnings: first on stderr, once each, as its own; in --json ---
+# (they were dropped: a user reading layer-stats' output alone lost them)
+sweep_said=$(while IFS= read -r t; do
+    echo "granwave layer-stats: warning: l.out/results.csv: the sweep that wrote it warned: $t"; done <<<"$w")
+nw=$(grep -c . <<<"$w")
+cpu_run 60 "$GW" layer-stats l.out/results.csv --json >ls1.json 2>/dev/null; rcj=$?
+if [ $rc1 -eq 0 ] && [ "$(head -n "$nw" ls1.err)" = "$sweep_said" ] &&
+    cmp -s <(tail -n +"$((nw + 1))" ls1.err | sed 's|l.out/results.csv|T|g') <(sed 's|plain.csv|T|g' ls2.err); then
+    ok "5 layer-stats says the table's $nw warning(s) on stderr, first, as its own, then its own as before"
+else
+    ko "5 layer-stats stderr: '$(head -c 500 ls1.err)'"
+fi
+if [ $rcj -eq 0 ] && python3 -c '
+import json, sys
+w = json.load(open(sys.argv[1]))["warnings"]
+want = ["l.out/results.csv: the sweep that wrote it warned: " + t for t in sys.argv[2].split("\n")]
+sys.exit(0 if w[:len(want)] == want else 1)' ls1.json "$w"; then
+    ok "5 layer-stats --json: the table's warnings first in \"warnings\""
+else
+    ko "5 layer-stats --json (exit $rcj): $(head -c 300 ls1.json | tr '\n' ' ')"
+fi
+# a table whose warning line is given twice (edited, or two heads joined): said once
+awk '/^# warning: / && !d { print; d = 1 } { print }' l.out/results.csv >twice.csv
+cpu_run 60 "$GW" layer-stats twice.csv >/dev/null 2>tw.err; rct=$?
+if [ $rct -eq 0 ] && [ "$(grep -c 'the sweep that wrote it warned: ' tw.err)" -eq "$nw" ] &&
+    [ "$(grep -c '^# warning: ' twice.csv)" -gt "$nw" ]; then
+    ok "5 a warning line given twice in the table: said once ($nw line(s))"
+else
+    ko "5 twice: exit $rct, $(grep -c 'the sweep that wrote it warned: ' tw.err) said"
+fi
+
+# --- 6 the library's older call (gw_sweep_write_table, a C caller's) writes the check pass's warnings too ---
+# (it wrote the rows' alone: a C caller's table of d lost the dashpot's line)
+probe=${GW_GRID_PROBE:-$(dirname "$GW")/tests/gw_grid_probe} # (GW_GRID_PROBE: one built on another library)
+cp -r d.out d.old && rm -f d.old/results.csv
+if [ -x "$probe" ] && cpu_run 60 "$probe" table d.ini d.old >/dev/null 2>d.old.err &&
+    cmp -s d.out/results.csv d.old/results.csv; then
+    ok "6 gw_sweep_write_table: d's table byte for byte the program's, its dashpot line too"
+else
+    ko "6 gw_sweep_write_table: $(head -c 300 d.old.err) $(diff d.out/results.csv d.old/results.csv 2>&1 | head -c 300)"
+fi
+cp -r u.out u.old && rm -f u.old/results.csv
+if [ -x "$probe" ] && cpu_run 60 "$probe" table u.ini u.old >/dev/null 2>u.old.err &&
+    cmp -s u.out/results.csv u.old/results.csv; then
+    ok "6 control: gw_sweep_write_table of u (the rows' warning alone): the program's table"
+else
+    ko "6 control u: $(head -c 300 u.old.err)"
 fi
 
 # --- control: a sweep without warnings has no such line ---

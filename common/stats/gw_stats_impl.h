@@ -11,6 +11,13 @@
 
 #include "gw_stats.h"
 
+/* gw_stats_table_read, and the sweep's warnings its "# warning: TEXT" lines
+ * give (tables since session 45, before the header) appended to *warnings (a
+ * gw_warnings_add list; NULL: not kept), in the table's order, a text given
+ * twice kept once. *warnings may hold some after a failure: the caller frees
+ * it. */
+int gw_stats_table_read_warned(const char *path, gw_stats_table *t, char **warnings, gw_err *err);
+
 /* gw_stats_table_check.c, run by gw_stats_table_parse in this order once
  * every row is read: the rows (a case once, grid values once, a bouncing
  * row's e_n, e, alpha_r), the table's completeness against its first line

@@ -554,8 +554,20 @@ int gw_stats_analyse(const gw_stats_setup *s, gw_stats_analysis *A, gw_err *err)
         return gw_err_set(err, GW_EINVAL, "gamma-deg: has no effect when tan_gamma is fitted (fit lists tan_gamma)");
     A->delta_rm = s->delta_rm;
     A->defaults = s->defaults;
-    rc = gw_stats_table_read(s->input, &A->t, err);
+    char *said = NULL; /* the sweep's warnings its table kept ("# warning:" lines) */
+    rc = gw_stats_table_read_warned(s->input, &A->t, &said, err);
     A->input = A->t.path;
+    /* said first and once each, named as the table's: a user reading
+     * layer-stats' output alone (stderr, --json, boundary_fit.json, Python)
+     * lost them */
+    for (const char *p = rc == GW_OK ? said : NULL; p && *p && rc == GW_OK;) {
+        const char *e = strchr(p, '\n');
+        const int n = e ? (int)(e - p) : (int)strlen(p);
+        if (gw_warnings_add(&A->warnings, "%s: the sweep that wrote it warned: %.*s", A->input, n, p) != GW_OK)
+            rc = gw_err_set(err, GW_ENOMEM, "%s: out of memory", A->input);
+        p += n + (e ? 1 : 0);
+    }
+    free(said);
     /* the rows against the definitions of e_n, e, alpha_r: with the run's
      * settings, which the reader does not know */
     if (rc == GW_OK && (rc = gw_stats_table_bounds(&A->t, &A->defaults, &A->warnings, err)) == GW_ENOMEM)

@@ -519,6 +519,26 @@ static int sweep_line(gw_stats_table *t, const char *line, long ln, gw_err *err)
     return GW_OK;
 }
 
+/* "# warning: TEXT": a warning of the sweep that wrote the table (its check
+ * pass's or its rows', docs/formats.md), appended to *list (NULL: not kept)
+ * once however often given: a reader of layer-stats' output lost them. */
+static int add_sweep_warning(char **list, const char *text, const char *name, gw_err *err)
+{
+    if (!list || !*text)
+        return GW_OK;
+    const size_t len = strlen(text);
+    for (const char *p = *list; p && *p;) {
+        const char *e = strchr(p, '\n');
+        const size_t n = e ? (size_t)(e - p) : strlen(p);
+        if (n == len && memcmp(p, text, len) == 0)
+            return GW_OK;
+        p += n + (e ? 1 : 0);
+    }
+    if (gw_warnings_add(list, "%s", text) != GW_OK)
+        return gw_err_set(err, GW_ENOMEM, "%s: out of memory", name);
+    return GW_OK;
+}
+
 /* "# grid NAME = v1, v2, ...": the sweep's grid, in the config's order. */
 static int add_grid_list(gw_stats_table *t, char *text, long ln, gw_err *err)
 {
@@ -545,7 +565,14 @@ static int add_grid_list(gw_stats_table *t, char *text, long ln, gw_err *err)
     return GW_OK;
 }
 
+static int table_parse(const char *text, const char *name, gw_stats_table *t, char **warnings, gw_err *err);
+
 int gw_stats_table_parse(const char *text, const char *name, gw_stats_table *t, gw_err *err)
+{
+    return table_parse(text, name, t, NULL, err);
+}
+
+static int table_parse(const char *text, const char *name, gw_stats_table *t, char **warnings, gw_err *err)
 {
     if (!t)
         return gw_err_set(err, GW_EINVAL, "gw_stats_table_parse: t is NULL");
@@ -592,6 +619,8 @@ int gw_stats_table_parse(const char *text, const char *name, gw_stats_table *t, 
                 rc = add_grid_list(t, line + 5, ln, err);
             else if (!header_line && strncmp(line, "input ", 6) == 0)
                 rc = add_input(t, line + 6, ln, err);
+            else if (!header_line && strncmp(line, "warning: ", 9) == 0)
+                rc = add_sweep_warning(warnings, gw_str_trim(line + 9), name, err);
             else if (ln == 1 && strncmp(line, "granwave sweep journal ", 23) == 0)
                 journal = 1;
             else if (!header_line && ln == 1 && strncmp(line, "granwave ", 9) == 0)
@@ -645,6 +674,11 @@ int gw_stats_table_parse(const char *text, const char *name, gw_stats_table *t, 
 
 int gw_stats_table_read(const char *path, gw_stats_table *t, gw_err *err)
 {
+    return gw_stats_table_read_warned(path, t, NULL, err);
+}
+
+int gw_stats_table_read_warned(const char *path, gw_stats_table *t, char **warnings, gw_err *err)
+{
     if (!t || !path)
         return gw_err_set(err, GW_EINVAL, "gw_stats_table_read: %s is NULL", !t ? "t" : "path");
     memset(t, 0, sizeof *t);
@@ -679,7 +713,7 @@ int gw_stats_table_read(const char *path, gw_stats_table *t, gw_err *err)
                             "short? a sweep ends every line of its table", path, ln);
     }
     if (rc == GW_OK)
-        rc = gw_stats_table_parse(buf, path, t, err);
+        rc = table_parse(buf, path, t, warnings, err);
     if (rc == GW_OK) {
         t->content_hash = gw_fnv1a64(GW_FNV1A64_INIT, buf, len);
         t->has_content_hash = 1;

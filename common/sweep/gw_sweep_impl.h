@@ -20,6 +20,13 @@
 int gw_sweep_pairs_check(const char *call, int nk, const char *const *names, const char *const *values,
                          gw_err *err);
 
+/* gw_sweep_run.c: the warnings of cfg's check pass (every case checked by m,
+ * then m->memo_warnings), appended to *list with its config's keys named
+ * (gw_sweep_warnings_keys), as the program's sweep says them and writes them
+ * into its table: GW_OK; a case refused, a key of no effect on any case or no
+ * memory: its status, *list unchanged (nothing said). */
+int gw_sweep_check_warnings(const gw_sweep_config *cfg, const gw_sweep_model *m, char **list);
+
 /* gw_sweep_run.c: the warnings of a sweep name its config's keys: "--NAME"
  * in list, NAME a key of m (has_key), written NAME, in place. */
 void gw_sweep_warnings_keys(const gw_sweep_model *m, char *list);

@@ -286,6 +286,40 @@ void gw_sweep_checks_end(const gw_sweep_model *m, void *memo)
         m->memo_free(memo);
 }
 
+int gw_sweep_check_warnings(const gw_sweep_config *cfg, const gw_sweep_model *m, char **list)
+{
+    if (!cfg || !m || !list)
+        return GW_EINVAL;
+    if (!m->check && !m->check_memo)
+        return GW_OK;
+    const int nk = cfg->ngrid + cfg->nparams;
+    void *memo = NULL;
+    gw_err e = {{0}};
+    int rc = GW_OK;
+    for (long k = 0; k < cfg->ncases && rc == GW_OK; k++) {
+        const char *names[2 * GW_SWEEP_MAX_KEYS], *vals[2 * GW_SWEEP_MAX_KEYS];
+        gw_sweep_case(cfg, k, names, vals);
+        rc = gw_sweep_case_check(m, &memo, nk, names, vals, &e);
+    }
+    char *w = NULL;
+    if (rc == GW_OK && memo && m->memo_warnings)
+        rc = m->memo_warnings(memo, &w);
+    gw_sweep_checks_end(m, memo);
+    if (rc == GW_OK && w) {
+        gw_sweep_warnings_keys(m, w);
+        const size_t have = *list ? strlen(*list) : 0;
+        char *grown = realloc(*list, have + strlen(w) + 1);
+        if (grown) {
+            strcpy(grown + have, w);
+            *list = grown;
+        } else {
+            rc = GW_ENOMEM;
+        }
+    }
+    free(w);
+    return rc;
+}
+
 static int same_key(const char *a, const char *b)
 {
     for (; *a && *b; a++, b++)

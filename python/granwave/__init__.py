@@ -15,6 +15,8 @@ same models and numbers as the `granwave` program.
     r.e_n, r.ledger["total"]                     # restitution, energy ledger series
     s = granwave.sweep("chain", grid={"n": range(1, 11), "vimp": [0.2, 0.3]}, solver="rk4")
     s.n, s.f_max                                 # one entry per case
+    g = granwave.sweep_n((1, 10), [0.2, 0.3])    # the library's N x v grid
+    g.f_max, g.warnings                          # [velocity, N]; its warnings
     st = granwave.layer_stats("out/results.csv")  # statistics of a layer sweep table
     st.groups["bounce_share"], st.diagrams["r_crit"]
 
@@ -33,7 +35,7 @@ installed module (cmake --install), or at GRANWAVE_LIB.
 """
 import numpy as _np
 
-from . import _core, _sweep
+from . import _core, _grid, _sweep
 from ._core import (GranwaveError, GranwaveIOError, GranwaveRunError, GranwaveUnsupported,
                     GranwaveValueError, GranwaveWarning, Result)
 from ._lib import lib as _clib
@@ -45,7 +47,7 @@ for _c in (GranwaveError, GranwaveIOError, GranwaveRunError, GranwaveUnsupported
     _c.__module__ = "granwave"
 
 __all__ = ["version", "version_info", "chain", "falcon", "wavespeed", "softwall", "dispersion", "drop",
-           "layer_make", "layer_impact", "layer_stats", "sweep", "params", "library_path",
+           "layer_make", "layer_impact", "layer_stats", "sweep", "sweep_n", "params", "library_path",
            "Result", "GranwaveError", "GranwaveValueError", "GranwaveIOError", "GranwaveRunError",
            "GranwaveUnsupported", "GranwaveWarning"]
 
@@ -301,6 +303,29 @@ def sweep(model="chain", grid=None, *, jobs=0, progress=None, **params):
     per result column (f_max, tau_n, ... for the chain), one entry per case.
     """
     return _sweep.run_sweep(model, grid or {}, params, jobs, progress)
+
+
+def sweep_n(n, vimp, *, jobs=0, progress=None, **kwargs):
+    """The library's N x v grid (gw_chain_sweep_n_warned): one collision of
+    the column for every impact speed in vimp (m/s, a number or a list) and
+    every N in n = (A, B) (N = A..B; a range or one N too), on `jobs` threads
+    (0: one per CPU). Other keywords are granwave.chain's (its column: model
+    and solver; not n, vimp or trace), resolved as falcon resolves its column
+    (N = A, the first speed: a restitution target is calibrated there).
+    progress: optional f(done, total) per collision, from the worker threads
+    one call at a time; return True (or raise) to stop.
+
+    Returns a Result: n [N], v_imp [velocity], and each result of
+    granwave.chain's collision (f_max, tau_n, eps_eff, converged, steps, ...)
+    as an array [velocity, N]; the per-bead series (final_velocities,
+    detach_times, velocities_at_tau_n) a list [velocity][N] of arrays.
+    warnings: the grid's "no effect" lines as a chain sweep's check pass says
+    them, with their count over the grid's cases (case k = iv * (B - A + 1) +
+    (N - A): "the sensor body's dashpot has no effect in 2 of 2 cases (the
+    first, case 0): ..."), then the collisions that did not end at t_max (as
+    falcon says them); each also issued as a GranwaveWarning.
+    """
+    return _grid.run_grid(_study("chain"), n, vimp, jobs, progress, kwargs)
 
 
 chain.__doc__ = _study("chain").doc(

@@ -17,7 +17,7 @@ CF="-g -O1 -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=undefined -
 # the sweep module's files (common/CMakeLists.txt lists the same)
 sweep="$SRC/common/sweep/gw_sweep_config.c $SRC/common/sweep/gw_sweep_inputs.c $SRC/common/sweep/gw_sweep_rows.c
  $SRC/common/sweep/gw_sweep_head.c $SRC/common/sweep/gw_sweep_journal.c $SRC/common/sweep/gw_sweep_build.c
- $SRC/common/sweep/gw_sweep_table.c"
+ $SRC/common/sweep/gw_sweep_table.c $SRC/common/sweep/gw_sweep_run.c $SRC/common/gw_pool.c"
 # the build a journal records names the numerical libraries' versions
 sweeplibs="-lsundials_cvode -lgsl -lgslcblas -lfftw3"
 common="$SRC/common/gw_common.c $SRC/common/gw_io_afile.c $SRC/common/gw_io_outset.c $SRC/common/gw_io_temps.c $SRC/common/gw_io_paths.c $SRC/common/gw_io_input.c $SRC/common/gw_io_hash.c $SRC/app/gw_cli.c $SRC/common/gw_json.c $SRC/common/gw_param.c $SRC/common/gw_locale.c $SRC/common/gw_forklock.c"

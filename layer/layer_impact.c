@@ -825,7 +825,7 @@ static int alloc_series(gw_layer_impact_result *r, int cap, int nr)
  * cvode, arkode, rk4 and verlet, which read the samples between two checks on
  * the way (layer_advance_peek), whatever dt_out: cvode and arkode every 2e-5 s,
  * rk4 every 20 steps (2e-5 s at its default 1e-6 s), verlet every 2e-5 s (its
- * automatic step divides it); their outcome is then the same at every dt_out,
+ * automatic step divides it) or, a step given, every 2 steps; their outcome is then the same at every dt_out,
  * bit for bit (test_dt_out_bitwise). A backend without peeks: the default
  * sampling interval (2e-5 s) or dt_out when
  * finer; a fixed step's multiple when the step divides dt_out (a check off
@@ -837,7 +837,7 @@ static int alloc_series(gw_layer_impact_result *r, int cap, int nr)
  * steps (test_layer_invariance: lengths x 4 with rk4's step x 4 and dt_out
  * 8e-5 had been checked every 5 steps, the original never, and the exact
  * mode's outcome moved by up to 3e-6 relative). */
-static double check_interval(double dt_out, const gw_solver_type *type, double step)
+static double check_interval(double dt_out, const gw_solver_type *type, double step, int given)
 {
     const int fixed = type == gw_solver_verlet || type == gw_solver_rk4;
     const double base = fixed && step > 0 ? fmax(2e-5, step * (type == gw_solver_rk4 ? 20 : 2)) : 2e-5;
@@ -849,13 +849,13 @@ static double check_interval(double dt_out, const gw_solver_type *type, double s
         /* rk4: 20 steps, which scale with a problem scaled in time
          * (test_layer_invariance); 2e-5 itself when within rounding of it,
          * the default sampling's times (k 2e-5) */
-        /* verlet: the interval the default sampling (2e-5 s) gave, so that
-         * the default run is the one it was: 2e-5 s for a step that divides
-         * it (the automatic step always does), else the steps in
-         * max(2e-5, 2 dt) (a step given) */
+        /* verlet: the automatic step, 2e-5 s (2 GW_LAYER_DEM_BASE, a
+         * multiple of it: the default sampling's checks, so that the default
+         * run is the one it was); a step given, 2 steps (the default's at
+         * 1e-5 s), which scale with a problem scaled in time as rk4's 20 */
         double ref = fixed && step > 0 ? 20 * step : 2e-5;
-        if (type == gw_solver_verlet && step > 0)
-            ref = step * fmax(1, floor(base / step * (1 + 1e-9)));
+        if (type == gw_solver_verlet)
+            ref = step > 0 && given ? 2 * step : 2 * GW_LAYER_DEM_BASE;
         return fabs(ref - 2e-5) <= 1e-9 * 2e-5 ? 2e-5 : ref;
     }
     if (!(dt_out > base))
@@ -1186,7 +1186,7 @@ int layer_impact_run(const gw_layer_sample *smp, const gw_layer_params *lp0, con
     }
     for (int k = 0; k < ip->nrings; k++)
         res->ring_r[k] = (k + 0.5) * w;
-    const double h = check_interval(ip->dt_out, type, res->dt);
+    const double h = check_interval(ip->dt_out, type, res->dt, sp->dt > 0);
     /* checks between samples, or (cvode, arkode, rk4) samples between checks, read on the
      * way without a stop (layer_advance_peek) */
     const int peek = layer_can_peek(type) && fabs(h - ip->dt_out) > 1e-9 * h;

@@ -895,9 +895,10 @@ double gw_layer_impact_dem_dt(const gw_layer_sample *s, const gw_layer_params *l
 /* 1 when dt_out is k dt for an integer k >= 1, to a relative 1e-9. */
 int gw_layer_impact_dt_divides(double dt, double dt_out);
 
-/* A verlet step sp->dt > 0 given by the caller must divide ip->dt_out, or the
- * step before every sample would be shortened to land on it (an uneven grid,
- * not the dt recorded): GW_EINVAL "dt-out: ..." naming dt and values that
+/* A verlet step sp->dt > 0 given by the caller must divide ip->dt_out (until
+ * session 45 the step before every sample was shortened to land on it; the
+ * samples off the steps are now read between two steps, and the refusal is
+ * kept as it was): GW_EINVAL "dt-out: ..." naming dt and values that
  * pass. An rk4 step given above dt_out is GW_EINVAL "dt: ..." (rk4 lands
  * on every sample: no step would be longer than dt_out). The automatic step
  * (sp->dt = 0) and the other cases pass (rk4 restarts its steps at every

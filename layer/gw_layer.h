@@ -886,12 +886,13 @@ double gw_layer_settled_load_ratio(const gw_layer_sample *s, const gw_layer_para
 /* The verlet step gw_layer_impact takes when sp->dt is 0: the Hertz contact
  * time of the two smallest discs meeting at V_i, tau = (4/5) B(2/5, 1/2)
  * (5 M / (4 K_n))^(2/5) V_i^(-1/5) with the reduced mass M = m/2, over GW_LAYER_DEM_STEPS,
- * rounded down to GW_LAYER_DEM_BASE / k (k >= 1, never above the base), so that
- * a dt_out that is a multiple of GW_LAYER_DEM_BASE samples on step ends: the
- * trajectory, hence the outcome, does not depend on dt_out. When ip->dt_out is
- * not a multiple of that step (gw_layer_impact_dt_divides), the largest divisor
- * of it below: dt_out / ceil(dt_out / step), so that every sample still ends a
- * step and the steps stay equal. s. NaN for a sample or an impact that
+ * rounded down to GW_LAYER_DEM_BASE / k (k >= 1, never above the base),
+ * whatever ip->dt_out: the run's checks are every 2 GW_LAYER_DEM_BASE, on the
+ * step grid, and a sample off the steps is read between two steps without
+ * changing the run (gw_solver_set_peek), so the trajectory, hence the outcome,
+ * does not depend on dt_out. (Until session 45 the step was the largest
+ * divisor of a dt_out it did not divide, and the outcome moved with dt_out.)
+ * s. NaN for a sample or an impact that
  * gw_layer_impact_check refuses (before session 43 the sample's form only: a
  * disc outside the box or two discs at one place got a step) or a radius not
  * finite and > 0 (a NaN radius gave the other discs' step before session 34). */
@@ -903,9 +904,10 @@ double gw_layer_impact_dem_dt(const gw_layer_sample *s, const gw_layer_params *l
 /* 1 when dt_out is k dt for an integer k >= 1, to a relative 1e-9. */
 int gw_layer_impact_dt_divides(double dt, double dt_out);
 
-/* A verlet step sp->dt > 0 given by the caller must divide ip->dt_out, or the
- * step before every sample would be shortened to land on it (an uneven grid,
- * not the dt recorded): GW_EINVAL "dt-out: ..." naming dt and values that
+/* A verlet step sp->dt > 0 given by the caller must divide ip->dt_out (until
+ * session 45 the step before every sample was shortened to land on it; the
+ * samples off the steps are now read between two steps, and the refusal is
+ * kept as it was): GW_EINVAL "dt-out: ..." naming dt and values that
  * pass. An rk4 step given above dt_out is GW_EINVAL "dt: ..." (rk4 lands
  * on every sample: no step would be longer than dt_out). The automatic step
  * (sp->dt = 0) and the other cases pass (rk4 restarts its steps at every

@@ -239,7 +239,7 @@ int layer_contacts_build(gw_layer *L, gw_err *err)
     L->tix = tix;
     L->tscr = tscr;
     L->geo = geo;
-    L->geo_valid = L->geo_pos = 0;
+    L->geo_valid = L->geo_pos = L->geo_peek = 0;
     L->snap = snap;
     L->stamp++;
     L->drift = drift;

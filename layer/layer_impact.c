@@ -744,16 +744,14 @@ double layer_impact_dem_dt(const gw_layer_sample *s, const gw_layer_params *lp, 
     double dt = tau / GW_LAYER_DEM_STEPS, b = GW_LAYER_DEM_BASE;
     if (!(dt > 0) || !isfinite(dt))
         return dt;
-    dt = b / ceil(b / dt);
-    /* and a divisor of dt_out: a dt_out that is not a multiple of the step
-     * (7e-6 s against 1e-5) shortened the step before each sample, so the run
-     * integrated on an uneven grid that the settings' dt did not describe (e_n
-     * of the default impact moved by 4e-5, dissipated_first_contact by 0.6 %).
-     * The largest step dt_out / k not above the automatic one; a dt_out that is
-     * a multiple keeps the step as it was, to the last bit */
-    if (ip->dt_out > 0 && isfinite(ip->dt_out) && !gw_layer_impact_dt_divides(dt, ip->dt_out))
-        dt = ip->dt_out / ceil(ip->dt_out / dt - 1e-9);
-    return dt;
+    /* whatever dt_out: the samples off the steps are read between two steps
+     * (layer_advance_peek), the run's checks every 2e-5 s on the step grid
+     * (check_interval). It was made a divisor of dt_out, so that every
+     * sample ended a step, and the outcome moved with dt-out: e_n_first
+     * 0.1493427 at --dt-out 1e-6 (steps of 1e-6 s) against 0.1493279 at the
+     * default 2e-5 (1e-5 s) on the 40-disc pile of `layer-make --n 40` to
+     * t-max 0.01 s, now bit for bit (test_dt_out_bitwise) */
+    return b / ceil(b / dt);
 }
 
 int gw_layer_impact_dt_divides(double dt, double dt_out)
@@ -823,9 +821,9 @@ int gw_layer_impact_step_check(const gw_layer_impact_params *ip, const gw_solver
         if (gw_layer_impact_dt_divides(gw_strtod(ds, NULL), ip->dt_out))
             break;
     }
-    return gw_err_set(err, GW_EINVAL, "dt-out: %g s is not a multiple of the verlet step dt = %g s, which would "
-                      "be shortened before every sample (give a multiple of dt such as %s s, a dt that divides it "
-                      "such as %s s, or no dt: the automatic step divides it)", ip->dt_out, sp->dt, ms, ds);
+    return gw_err_set(err, GW_EINVAL, "dt-out: %g s is not a multiple of the verlet step dt = %g s, a step given "
+                      "(give a multiple of dt such as %s s, a dt that divides it "
+                      "such as %s s, or no dt: the automatic step takes any dt-out)", ip->dt_out, sp->dt, ms, ds);
 }
 
 static int alloc_series(gw_layer_impact_result *r, int cap, int nr)
@@ -851,10 +849,11 @@ static int alloc_series(gw_layer_impact_result *r, int cap, int nr)
 }
 
 /* The interval of the checks (the outcome decided, the energy closure).
- * cvode, arkode and rk4, which read the samples between two checks on the way
- * (layer_advance_peek), whatever dt_out: cvode and arkode every 2e-5 s, rk4 every 20
- * steps (2e-5 s at its default 1e-6 s); their outcome is then the same at
- * every dt_out, bit for bit (test_dt_out_bitwise). The others: the default
+ * cvode, arkode, rk4 and verlet, which read the samples between two checks on
+ * the way (layer_advance_peek), whatever dt_out: cvode and arkode every 2e-5 s,
+ * rk4 every 20 steps (2e-5 s at its default 1e-6 s), verlet every 2e-5 s (its
+ * automatic step divides it) or, a step given, every 2 steps; their outcome is then the same at every dt_out,
+ * bit for bit (test_dt_out_bitwise). A backend without peeks: the default
  * sampling interval (2e-5 s) or dt_out when
  * finer; a fixed step's multiple when the step divides dt_out (a check off
  * the step grid would add a shorter step and change the trajectory), dt_out
@@ -865,7 +864,7 @@ static int alloc_series(gw_layer_impact_result *r, int cap, int nr)
  * steps (test_layer_invariance: lengths x 4 with rk4's step x 4 and dt_out
  * 8e-5 had been checked every 5 steps, the original never, and the exact
  * mode's outcome moved by up to 3e-6 relative). */
-static double check_interval(double dt_out, const gw_solver_type *type, double step)
+static double check_interval(double dt_out, const gw_solver_type *type, double step, int given)
 {
     const int fixed = type == gw_solver_verlet || type == gw_solver_rk4;
     const double base = fixed && step > 0 ? fmax(2e-5, step * (type == gw_solver_rk4 ? 20 : 2)) : 2e-5;
@@ -877,7 +876,13 @@ static double check_interval(double dt_out, const gw_solver_type *type, double s
         /* rk4: 20 steps, which scale with a problem scaled in time
          * (test_layer_invariance); 2e-5 itself when within rounding of it,
          * the default sampling's times (k 2e-5) */
-        const double ref = fixed && step > 0 ? 20 * step : 2e-5;
+        /* verlet: the automatic step, 2e-5 s (2 GW_LAYER_DEM_BASE, a
+         * multiple of it: the default sampling's checks, so that the default
+         * run is the one it was); a step given, 2 steps (the default's at
+         * 1e-5 s), which scale with a problem scaled in time as rk4's 20 */
+        double ref = fixed && step > 0 ? 20 * step : 2e-5;
+        if (type == gw_solver_verlet)
+            ref = step > 0 && given ? 2 * step : 2 * GW_LAYER_DEM_BASE;
         return fabs(ref - 2e-5) <= 1e-9 * 2e-5 ? 2e-5 : ref;
     }
     if (!(dt_out > base))
@@ -1214,7 +1219,7 @@ int layer_impact_run(const gw_layer_sample *smp, const gw_layer_params *lp0, con
     }
     for (int k = 0; k < ip->nrings; k++)
         res->ring_r[k] = (k + 0.5) * w;
-    const double h = check_interval(ip->dt_out, type, res->dt);
+    const double h = check_interval(ip->dt_out, type, res->dt, sp->dt > 0);
     /* checks between samples, or (cvode, arkode, rk4) samples between checks, read on the
      * way without a stop (layer_advance_peek) */
     const int peek = layer_can_peek(type) && fabs(h - ip->dt_out) > 1e-9 * h;

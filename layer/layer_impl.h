@@ -240,6 +240,10 @@ struct gw_layer {
     int geo_valid;      /* facc and dem_rate hold the state the next rhs sees */
     int geo_pos;        /* geo holds the positions of the last rhs evaluation
                            (layer_dem_rhs; 0 after a list rebuild) */
+    int geo_peek;       /* 1 while y holds a state read between two steps
+                           (layer_advance_peek under verlet): geo_pos is then 0,
+                           so that the snapshot reads y, and comes back at the
+                           next advance (geo the solver's state's again) */
     /* Contact snapshot for the ledger and ring analyses (layer_snapshot): one
      * pass of contact geometry per state, shared by every consumer. stamp
      * counts the changes of y; snap_stamp is the stamp the snapshot was made at. */
@@ -482,7 +486,7 @@ int layer_impact_fall_rule(const gw_layer_impact_params *ip, double g, int gap_d
  * and outputs as if no peek had been made). Another backend stops at tpeek
  * (gw_layer_advance(L, tpeek)). GW_OK, or gw_layer_advance's failures. */
 int layer_advance_peek(gw_layer *L, double tpeek, double tout, gw_err *err);
-/* 1 when layer_advance_peek does not stop the run at tpeek (cvode, arkode, rk4) */
+/* 1 when layer_advance_peek does not stop the run at tpeek (cvode, arkode, rk4, verlet) */
 int layer_can_peek(const gw_solver_type *type);
 double layer_impact_dem_dt(const gw_layer_sample *s, const gw_layer_params *lp, const gw_layer_impact_params *ip);
 /* layer_settling_found and layer_impact_run: layer_plan_run.h (the program

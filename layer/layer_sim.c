@@ -358,6 +358,8 @@ int gw_layer_advance(gw_layer *L, double tout, gw_err *err)
         L->adv_steps0 = st0.steps;
         L->adv_over = 0;
     }
+    if (L->geo_peek) /* (layer_advance_peek) the solver's state comes back into y below */
+        L->geo_peek = 0, L->geo_pos = 1;
     while (L->t < tout) {
         if (L->quiet_until > 0 && L->t >= L->quiet_until) { /* end of a Zeno guard */
             L->quiet_until = 0;
@@ -376,6 +378,10 @@ int gw_layer_advance(gw_layer *L, double tout, gw_err *err)
         if (rc == GW_SOLVER_PEEK) { /* L->y the state there; the solver on its way to target */
             L->stamp++;
             L->t = t;
+            /* DEM mode (verlet): geo is the geometry of the step's end, not
+             * of y (interpolated between two steps); the snapshot reads y */
+            if (L->geo_pos && !L->geo_peek)
+                L->geo_peek = 1, L->geo_pos = 0;
             return GW_OK;
         }
         if (rc < 0 && L->adv_over) { /* the bound's own message (layer_after_bound) */
@@ -413,7 +419,7 @@ int gw_layer_advance(gw_layer *L, double tout, gw_err *err)
 
 int layer_can_peek(const gw_solver_type *type)
 {
-    return type == gw_solver_cvode || type == gw_solver_arkode || type == gw_solver_rk4;
+    return type == gw_solver_cvode || type == gw_solver_arkode || type == gw_solver_rk4 || type == gw_solver_verlet;
 }
 
 int layer_advance_peek(gw_layer *L, double tpeek, double tout, gw_err *err)

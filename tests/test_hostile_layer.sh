@@ -185,10 +185,12 @@
 # 36 a --dt-out that is not a multiple of the verlet step shortened the step
 #    before each sample: --dt-out 1.7e-5 s took 1e-5 and 7e-6 s steps in turn
 #    (81212 steps to 0.690302 s) while the settings recorded dt 1e-5 (e_n
-#    0.25475 against 0.25429 on the even 8.5e-6 s grid). The automatic step is
-#    now the largest divisor of dt-out below it, recorded as such; a --dt
-#    given that dt-out is not a multiple of is refused (any path: the sweep's
-#    keys too).
+#    0.25475 against 0.25429 on the even 8.5e-6 s grid). The automatic step was
+#    then the largest divisor of dt-out below it; since session 45 it is the
+#    same at every dt-out (the samples off the steps read between two steps:
+#    test_dt_out_bitwise), and the run at --dt-out 1.7e-5 is the default's; a
+#    --dt given that dt-out is not a multiple of is refused (any path: the
+#    sweep's keys too).
 # 37 a sweep journal's '# input' hash was read with strtoull: ' 0x12', '-1'
 #    or 15 digits in place of the 16 hex digits resumed the sweep (exit 0), and
 #    with the sample changed '-000000000000001' was reported as 'fnv1a64
@@ -1052,17 +1054,22 @@ steps_check() {
     fi
 }
 runs "layer-impact --dt-out 7e-6 (above: steps of 1e-5 s recorded, 7e-6 s taken)" \
-    layer-impact --sample "$S300" --dt-out 7e-6 --t-max 0.007 --json && steps_check "dt-out 7e-6" 7e-06 0.007
-runs "layer-impact --dt-out 1.7e-5 (1e-5 and 7e-6 s steps in turn before)" \
-    layer-impact --sample "$S300" --dt-out 1.7e-5 --t-max 0.0068 --json && steps_check "dt-out 1.7e-5" 8.5e-06 0.0068
+    layer-impact --sample "$S300" --dt-out 7e-6 --t-max 0.007 --json && steps_check "dt-out 7e-6" 1e-05 0.007
+runs "layer-impact --dt-out 1.7e-5 (1e-5 and 7e-6 s steps in turn before, then 8.5e-6 s)" \
+    layer-impact --sample "$S300" --dt-out 1.7e-5 --t-max 0.0068 --json && steps_check "dt-out 1.7e-5" 1e-05 0.0068
 cp "$tmp/stdout" "$tmp/a36.json"
-runs "  the same with --dt 8.5e-6 given" layer-impact --sample "$S300" --dt-out 1.7e-5 --dt 8.5e-6 --t-max 0.0068 --json
-for k in e_n_first dissipated_first_contact penetration steps; do
-    [ "$(jnum "$k" "$tmp/stdout")" = "$(jnum "$k" "$tmp/a36.json")" ] && ok "  $k the same as the automatic step's" ||
-        ko "  $k $(jnum "$k" "$tmp/stdout") given, $(jnum "$k" "$tmp/a36.json") automatic"
-done
 runs "layer-impact at the default dt-out 2e-5" layer-impact --sample "$S300" --t-max 0.0068 --json &&
     steps_check "dt-out 2e-5 (a multiple: the step unchanged)" 1e-05 0.0068
+cp "$tmp/stdout" "$tmp/d36.json"
+for k in e_n_first dissipated_first_contact penetration steps; do
+    [ "$(jnum "$k" "$tmp/a36.json")" = "$(jnum "$k" "$tmp/d36.json")" ] && ok "  $k at dt-out 1.7e-5 the default dt-out's" ||
+        ko "  $k $(jnum "$k" "$tmp/a36.json") at dt-out 1.7e-5, $(jnum "$k" "$tmp/d36.json") at the default"
+done
+runs "  the same with --dt 1e-5 given" layer-impact --sample "$S300" --dt 1e-5 --t-max 0.0068 --json
+for k in e_n_first dissipated_first_contact penetration steps; do
+    [ "$(jnum "$k" "$tmp/stdout")" = "$(jnum "$k" "$tmp/d36.json")" ] && ok "  $k the same as the automatic step's" ||
+        ko "  $k $(jnum "$k" "$tmp/stdout") given, $(jnum "$k" "$tmp/d36.json") automatic"
+done
 refused "layer-impact --dt 1e-5 --dt-out 7e-6 (each step shortened to 7e-6 s, dt 1e-5 recorded)" \
     "^granwave layer-impact --dt-out: 7e-06 s is not a multiple of the verlet step dt = 1e-05 s, .* such as 1e-05 s, a dt that divides it such as 7e-06 s" \
     layer-impact --sample "$S300" --dt 1e-5 --dt-out 7e-6 --out "$tmp/o"

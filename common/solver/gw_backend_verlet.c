@@ -32,7 +32,11 @@
  * they move away from zero. Every step is dt, so the states do not depend on
  * where the outputs fall; a step that ends within 1e-9 dt of tout is reported
  * at tout, and only a remainder shorter than a step (a tout off the step grid)
- * is taken as one shorter step. Units are the model's.
+ * is taken as one shorter step. A peek (gw_solver_set_peek) reads a state
+ * between two steps without a step of its own: the step that holds it is taken
+ * as without it and the state at the peek interpolated from the step's two ends
+ * (verlet_peek_state), so the steps do not depend on where the samples fall
+ * either. Units are the model's.
  */
 #include <math.h>
 #include <stdlib.h>
@@ -54,6 +58,15 @@ typedef struct verlet_impl {
                            [run[2r], run[2r + 1]) (model components skipped) */
     signed char *sign;
     long steps, rhs_evals, root_evals;
+    /* a peek (gw_solver_set_peek): the step that holds it is taken and the
+     * state there interpolated from the step's two ends (verlet_peek_state),
+     * from y0 and f0, y and f at the step's start; a root found by that step
+     * is held back (pend, proots) and returned by the next call */
+    double *y0, *f0;
+    signed char *form;  /* per component: 1 a drift (Hermite with its velocity),
+                           2 a drift's velocity (Hermite with its rate), 0 linear */
+    int pend, *proots;
+    double hsaved;      /* the length of the last step when y0, f0 are its start, else 0 */
 } verlet_impl;
 
 static void verlet_destroy(gw_solver *s)
@@ -65,6 +78,9 @@ static void verlet_destroy(gw_solver *s)
     free(v->qi);
     free(v->run);
     free(v->sign);
+    free(v->y0);
+    free(v->form);
+    free(v->proots);
     free(v);
     s->impl = NULL;
 }
@@ -140,7 +156,10 @@ static int verlet_create(gw_solver *s, double t0, const double *y0, gw_err *err)
     v->y = malloc((4 * (size_t)n + nr + 1) * sizeof *v->y);
     v->qi = malloc(2 * (size_t)n * sizeof *v->qi);
     v->sign = calloc(nr + 1, 1);
-    if (!v->y || !v->qi || !v->sign) {
+    v->y0 = malloc(2 * (size_t)n * sizeof *v->y0);
+    v->form = calloc((size_t)n, 1);
+    v->proots = calloc(nr + 1, sizeof *v->proots);
+    if (!v->y || !v->qi || !v->sign || !v->y0 || !v->form || !v->proots) {
         verlet_destroy(s);
         return gw_err_set(err, GW_ENOMEM, "verlet: out of memory for %ld components", n);
     }
@@ -149,11 +168,14 @@ static int verlet_create(gw_solver *s, double t0, const double *y0, gw_err *err)
     v->kick = v->y + 3 * n;
     v->g = v->y + 4 * n;
     v->qv = v->qi + n;
+    v->f0 = v->y0 + n;
     for (long i = 0; i < n; i++) {
         v->kick[i] = s->sys.drift[i] == -1;
         if (s->sys.drift[i] >= 0) {
             v->qi[v->nq] = i;
             v->qv[v->nq++] = s->sys.drift[i];
+            v->form[i] = 1;
+            v->form[s->sys.drift[i]] = 2;
         }
     }
     block_layout(s->sys.drift, n, v);
@@ -264,6 +286,38 @@ static int verlet_step(gw_solver *s, double h)
     return s->sys.project ? s->sys.project(v->t + h, h, y, v->f, s->sys.params) : 0;
 }
 
+/* The state at p in the step of length h that ended at v->t (its start y0,
+ * f0): the end itself when p is there within rounding, else a cubic Hermite
+ * between the two ends for the drifts (their velocities the slopes) and their
+ * velocities (their rates the slopes; the kicks are the trapezoid of those
+ * rates), and a straight line for the other components (the model's, the
+ * ledgers: their rates are not all in f, the projection adds to them). The
+ * states are the method's, second order; the Hermite adds an error of fourth
+ * order in h, the line one of second order, so a sample read here is as
+ * accurate as one the run stopped at, and the run does not see it. */
+static void verlet_peek_state(const gw_solver *s, const verlet_impl *v, double p, double h, double *y)
+{
+    const long n = s->sys.dim;
+    if (fabs(v->t - p) <= 1e-9 * s->p.dt || !(h > 0)) {
+        memcpy(y, v->y, (size_t)n * sizeof *y);
+        return;
+    }
+    const double th = (p - (v->t - h)) / h, u = 1 - th;
+    const double h00 = (1 + 2 * th) * u * u, h10 = th * u * u * h, h01 = th * th * (3 - 2 * th);
+    const double h11 = -th * th * u * h;
+    const double *y0 = v->y0, *f0 = v->f0, *y1 = v->y, *f1 = v->f;
+    for (long i = 0; i < n; i++) {
+        if (v->form[i] == 1) {
+            const long j = s->sys.drift[i];
+            y[i] = h00 * y0[i] + h10 * y0[j] + h01 * y1[i] + h11 * y1[j];
+        } else if (v->form[i] == 2) {
+            y[i] = h00 * y0[i] + h10 * f0[i] + h01 * y1[i] + h11 * f1[i];
+        } else {
+            y[i] = u * y0[i] + th * y1[i];
+        }
+    }
+}
+
 static int verlet_advance(gw_solver *s, double tout, double *t, double *y, int *roots)
 {
     verlet_impl *v = s->impl;
@@ -272,6 +326,23 @@ static int verlet_advance(gw_solver *s, double tout, double *t, double *y, int *
     const double dt = s->p.dt;
     long taken = 0;
     int rc = 0, found = 0;
+    const double p0 = s->peek;
+    if (p0 > 0 && v->hsaved > 0 && p0 > v->t - v->hsaved && p0 <= v->t + 1e-9 * dt && p0 < tout) {
+        /* another peek in the step that held the last one (samples finer than
+         * the steps): read there, nothing taken */
+        s->peek = 0;
+        verlet_peek_state(s, v, p0, v->hsaved, y);
+        *t = p0;
+        return GW_SOLVER_PEEK;
+    }
+    if (v->pend) { /* the root of the step that held the last peek */
+        v->pend = 0;
+        for (int k = 0; roots && k < nr; k++)
+            roots[k] = v->proots[k];
+        *t = v->t;
+        memcpy(y, v->y, (size_t)n * sizeof *y);
+        return GW_ROOT;
+    }
     if (tout < v->t) { /* a fixed-step method runs forward only: it returned GW_OK where it stood */
         gw_solver_set_error(s, "verlet: tout = %.9g s is before the solver's time %.9g s (verlet runs forward "
                             "only)", tout, v->t);
@@ -294,9 +365,21 @@ static int verlet_advance(gw_solver *s, double tout, double *t, double *y, int *
         }
         if ((rc = gw_solver_interrupted(s, v->t)) != 0)
             break;
+        const double tend = (v->t + h >= tout || tout - (v->t + h) < 1e-9 * dt) ? tout : v->t + h;
+        /* a peek in this step (gw_solver_set_peek): the step is taken as
+         * without it (the same arithmetic: the run does not see the peek),
+         * its start kept for the interpolation */
+        const double p = s->peek;
+        const int peek = p > v->t && p < tout && p <= tend + 1e-9 * dt;
+        if (peek) {
+            memcpy(v->y0, v->y, (size_t)n * sizeof *y);
+            memcpy(v->f0, v->f, (size_t)n * sizeof *y);
+        }
+        v->hsaved = 0;
         if ((rc = verlet_step(s, h)) != 0)
             break;
-        v->t = (v->t + h >= tout || tout - (v->t + h) < 1e-9 * dt) ? tout : v->t + h;
+        v->t = tend;
+        v->hsaved = peek ? h : 0;
         if (nr > 0) {
             v->root_evals++;
             if ((rc = s->sys.roots(v->t, v->y, v->g, s->sys.params)) != 0)
@@ -305,10 +388,19 @@ static int verlet_advance(gw_solver *s, double tout, double *t, double *y, int *
                 int c = gw_root_crossed(v->sign, v->g, k);
                 if (roots)
                     roots[k] = c ? -v->sign[k] : 0;
+                if (peek)
+                    v->proots[k] = c ? -v->sign[k] : 0;
                 found |= c;
                 if (c || v->sign[k] == 0)
                     v->sign[k] = (signed char)gw_sgn(v->g[k]);
             }
+        }
+        if (peek) {
+            s->peek = 0;
+            v->pend = found;
+            verlet_peek_state(s, v, p, h, y);
+            *t = p;
+            return GW_SOLVER_PEEK;
         }
     }
     *t = v->t;
@@ -326,6 +418,8 @@ static int verlet_reset(gw_solver *s, double t, const double *y)
 {
     verlet_impl *v = s->impl;
     v->t = t;
+    v->pend = 0;
+    v->hsaved = 0;
     memcpy(v->y, y, (size_t)s->sys.dim * sizeof *y);
     if (verlet_restart(s) != 0) {
         gw_solver_set_error(s, "verlet: model callback failed at t = %.9g s", t);

@@ -235,7 +235,8 @@ int gw_solver_reset(gw_solver *s, double t, const double *y)
 
 int gw_solver_set_peek(gw_solver *s, double tpeek)
 {
-    if (!s || (s->type != gw_solver_cvode && s->type != gw_solver_arkode && s->type != gw_solver_rk4) || !(tpeek > 0) || !isfinite(tpeek)) {
+    if (!s || (s->type != gw_solver_cvode && s->type != gw_solver_arkode && s->type != gw_solver_rk4 &&
+               s->type != gw_solver_verlet) || !(tpeek > 0) || !isfinite(tpeek)) {
         if (s)
             s->peek = 0;
         return 0;

@@ -210,7 +210,7 @@ int gw_solver_create(const gw_solver_type *type, const gw_system *sys,
 int gw_solver_advance(gw_solver *s, double tout, double *t, double *y,
                       int *rootsfound);
 
-/* A peek (cvode, arkode and rk4): the next gw_solver_advance towards a tout after tpeek
+/* A peek (cvode, arkode, rk4 and verlet): the next gw_solver_advance towards a tout after tpeek
  * makes the steps and finds the roots that the advance to tout makes without
  * it, and returns GW_SOLVER_PEEK with *t = tpeek and y the state interpolated
  * there as soon as they pass tpeek (a root before it is returned first,
@@ -218,8 +218,11 @@ int gw_solver_advance(gw_solver *s, double tout, double *t, double *y,
  * goes on at the next call, which returns what it would have. An output
  * between the times a run stops at, without a stop that would change the
  * run (cvode, arkode: interpolated in the step that passed tpeek; rk4: a step of
- * rk4 from the start of the step that holds tpeek, the step then made again). Returns 1 when armed, 0 when the backend has none (nothing armed);
- * tpeek <= 0 disarms. */
+ * rk4 from the start of the step that holds tpeek, the step then made again;
+ * verlet: the step that holds tpeek taken, the state there a cubic Hermite
+ * between its ends for the drifts and their velocities, a line for the other
+ * components; a root that step found is returned by the next call). Returns 1
+ * when armed, 0 when the backend has none (nothing armed); tpeek <= 0 disarms. */
 enum { GW_SOLVER_PEEK = 2 };
 int gw_solver_set_peek(gw_solver *s, double tpeek);
 

@@ -42,12 +42,12 @@ GW_BEGIN_DECLS /* the exported interface, C linkage (gw_api.h) */
  * study (softwall --sheets --n 1:40, 9 walls x 22140 = 2.0e5, 47 s) and room
  * for falcon --n 1:100 at its five default speeds (1.7e6); at the bound one
  * column of N = 1414, measured 353 s of CPU under cvode (session 45): about
- * N^2.5 from chain --n 400's 16 s of CPU (N^2 gives 3.3 min, N^2.5 6.2 min; the
+ * N^2.5 from chain --n 400's 16 s of CPU (N^2 gives 3.4 min, N^2.5 6.3 min; the
  * 8 to 15 min estimated before scaled falcon's 39 s, its run to t_max, and was
  * 2.5 times too long). chain --n 600 took 49 s of CPU. The progress line's
- * first estimate ("~L s left", the pace of the collision's first tenth) is
- * low: the column's top separating, at 50 to 70 % of the expected length,
- * runs 3 to 6 times slower than the rest, and the run goes on past the
+ * first estimate ("~L s left" at the pace of its first seconds) is
+ * low: between 50 and 70 % of the expected length the run goes 3 to 6
+ * times slower than before, and it goes on past the
  * expected length until every pair separates (N = 400: first estimate 9.8 s of
  * CPU, 14.9 s to the expected length, 16.1 s in all; N = 600: 18.9 s, 39.3 s,
  * 48.9 s, t_end 113.8 ms against 15.0 ms expected; N = 1414: about 1300 s of

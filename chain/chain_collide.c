@@ -725,6 +725,7 @@ static int collide_run(const gw_chain *c, const gw_chain_run_opts *o, int drop, 
                        gw_chain_progress_fn progress, void *pctx, gw_chain_result *r, gw_err *err);
 static void chatter_spread(const gw_chain *c, const gw_chain_run_opts *o, int drop, int flight_cut,
                            const collide_plan *pl, gw_chain_result *r);
+static char *tols_room(const gw_chain_result *r);
 
 int gw_chain_collide(const gw_chain *c, const gw_chain_run_opts *o, gw_chain_result *r,
                      gw_err *err)
@@ -776,7 +777,8 @@ static int collide_run(const gw_chain *c, const gw_chain_run_opts *o, int drop, 
     if (prc != GW_OK)
         return prc;
     /* the velocities' arrays, then the column's pending text (chain_result_column_pending) */
-    r->final_v = calloc(1, 4 * (size_t)n * sizeof *r->final_v + CHAIN_PENDING_TEXT + CHAIN_CHATTER_TEXT);
+    r->final_v = calloc(1, 4 * (size_t)n * sizeof *r->final_v + CHAIN_PENDING_TEXT + CHAIN_CHATTER_TEXT +
+                               CHAIN_TOLS_ROOM);
     double *y = malloc((size_t)sys->dim * sizeof *y);
     int *roots = calloc((size_t)sys->nroots, sizeof *roots);
     run_state st = {.c = c, .o = o, .r = r, .n = n, .t_sampled = -INFINITY, .flight_cut = flight_cut,
@@ -791,6 +793,10 @@ static int collide_run(const gw_chain *c, const gw_chain_run_opts *o, int drop, 
         goto done;
     }
     made_add(r->final_v, n);
+    { /* the run's tolerances, after the chatter's text (chain_result_tolerances) */
+        const double tols[2] = {pl.sp.rtol, pl.sp.atol};
+        memcpy(tols_room(r), tols, sizeof tols);
+    }
     r->detach_t = r->final_v + n;
     r->v_tau_n = r->final_v + 2 * n;
     if (o->front_threshold > 0) {
@@ -925,6 +931,28 @@ static char *chatter_text(const gw_chain_result *r)
     return (char *)(r->final_v + 4 * (size_t)r->n) + CHAIN_PENDING_TEXT;
 }
 
+/* where the run's rtol and atol are kept, after the chatter's text */
+static char *tols_room(const gw_chain_result *r)
+{
+    return chatter_text(r) + CHAIN_CHATTER_TEXT;
+}
+
+int chain_result_tolerances(const gw_chain_result *r, double *rtol, double *atol)
+{
+    if (!r || !r->final_v || r->n < 1 || !made_find(r->final_v, r->n, 0))
+        return 0;
+    double tols[2];
+    memcpy(tols, tols_room(r), sizeof tols);
+    *rtol = tols[0];
+    *atol = tols[1];
+    return tols[0] > 0 && tols[1] > 0;
+}
+
+int chain_chatter_looser(double rtol, double atol)
+{
+    return !(rtol >= 10 * GW_TOL_MIN * (1 - 1e-9) && atol >= 10 * GW_TOL_MIN * (1 - 1e-9));
+}
+
 void chain_chatter_rerun(const gw_solver_type *type, double step, gw_solver_params *sp, char *how, size_t how_size,
                          char *flags, size_t flags_size)
 {
@@ -941,7 +969,7 @@ void chain_chatter_rerun(const gw_solver_type *type, double step, gw_solver_para
          * the floor (rtol 1e-15, atol 1e-12) was run again changing the other
          * alone. Then both are 10 times looser (at most GW_TOL_MAX): the
          * spread measured is the looser run's, a bound on this one's */
-        const int tighter = sp->rtol >= 10 * GW_TOL_MIN * (1 - 1e-9) && sp->atol >= 10 * GW_TOL_MIN * (1 - 1e-9);
+        const int tighter = !chain_chatter_looser(sp->rtol, sp->atol);
         const double f = tighter ? 0.1 : 10.0;
         sp->rtol = fmin(fmax(f * sp->rtol, GW_TOL_MIN), GW_TOL_MAX);
         sp->atol = fmin(fmax(f * sp->atol, GW_TOL_MIN), GW_TOL_MAX);

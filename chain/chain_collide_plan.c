@@ -886,7 +886,11 @@ static double stiff_over(const gw_chain_params *p, const gw_chain_run_opts *o, c
 static int stiff_refusal(const gw_chain_params *p, const gw_chain_run_opts *o, const gw_solver_type *type, int wall,
                          const char *over, gw_err *err)
 {
-    if (p->n < (wall ? 1 : 2) || o->sp.dt_max > 0 || (!wall && type == gw_solver_rk4 && o->sp.dt > 0))
+    /* (rk4 with a dt given was left out for k: k = 1.8e308 at dt 1e-9 was
+     * refused as "dt-max: a step of 2.86e-125 s ..." (left after session 44);
+     * its steps over k are those of the dt given where it is below a quarter
+     * of the contacts, steps_of's, and k is named as without a dt) */
+    if (p->n < (wall ? 1 : 2) || o->sp.dt_max > 0)
         return GW_OK;
     for (int i = 0; !wall && p->kc && i < p->n - 1; i++) /* the chain's own kc: each k, unless given per contact */
         if (p->kc[i] != p->k)
@@ -966,19 +970,24 @@ static int stiff_refusal(const gw_chain_params *p, const gw_chain_run_opts *o, c
                  hi = ends[1] < DBL_MAX ? floor(ends[1] / q1) * q1 : ends[1];
     const double t_col = chain_collision_length(&q, NULL);
     const double t_expect = fmin(o->t_max > 0 ? o->t_max : 20.0 * t_col, t_col);
+    const double tau = chain_contact_tau_min(&q, 2 * q.v_imp);
+    /* rk4's dt given above a quarter of that contact: its steps are the
+     * contact's (a dt below it sets them itself: the range is then that dt's) */
+    char dt_given[128] = "";
+    if (type == gw_solver_rk4 && o->sp.dt > 0.25 * tau)
+        gw_snprintf(dt_given, sizeof dt_given, "; the dt given (%g s) does not change that: rk4's step is at most a "
+                    "quarter of the shortest contact", o->sp.dt);
     if (wall)
         return gw_err_set(err, GW_EINVAL, "kwall: %g N/m^1.5 is outside [%.2g, %.2g], where this column's run stays "
                           "within 1e+08 steps (%d beads, k %g N/m^1.5, masses, radii and v_imp as given): at this "
                           "kwall its shortest contact, the wall's, lasts %.3g s, and the step chosen to resolve it "
-                          "needs about %.3g steps over %s (about %.3g s)",
-                          k, lo, hi, p->n, p->k,
-                          chain_contact_tau_min(&q, 2 * q.v_imp), steps_of(&q, o, type), over, t_expect);
+                          "needs about %.3g steps over %s (about %.3g s)%s",
+                          k, lo, hi, p->n, p->k, tau, steps_of(&q, o, type), over, t_expect, dt_given);
     return gw_err_set(err, GW_EINVAL, "k: %g N/m^1.5 is outside [%.2g, %.2g], where this column's run stays within "
                       "%.0e steps (%d beads, kwall %g N/m^1.5, masses, radii and v_imp as given): at this k its "
                       "shortest contact lasts %.3g s, and the step chosen to resolve it needs about %.3g steps over %s "
-                      "(about %.3g s)",
-                      k, lo, hi, 1e8, p->n, p->kwall, chain_contact_tau_min(&q, 2 * q.v_imp),
-                      steps_at_k(&q, o, type, k), over, t_expect);
+                      "(about %.3g s)%s",
+                      k, lo, hi, 1e8, p->n, p->kwall, tau, steps_at_k(&q, o, type, k), over, t_expect, dt_given);
 }
 
 /* k (unless wall_only), then kwall: GW_OK where neither is the cause (err

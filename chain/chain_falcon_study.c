@@ -651,7 +651,9 @@ static int falcon_run(const gw_chain_falcon_setup *s, gw_progress_fn progress, v
             rc = gw_err_set(err, rc, "falcon: out of memory");
     }
     /* a --dt above the step taken: the grid's columns and the traces'; the chatter's reruns by the solver */
-    chain_dt_tally dt_tally = {.solver = r.run.solver ? r.run.solver : gw_solver_cvode};
+    chain_dt_tally dt_tally = {.solver = r.run.solver ? r.run.solver : gw_solver_cvode,
+                               .rtol = r.run.sp.rtol,
+                               .atol = r.run.sp.atol};
     if (rc == GW_OK)
         chain_dt_tally_results(&dt_tally, res, out->ncase);
     if (rc == GW_OK && s->traces &&

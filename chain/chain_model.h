@@ -178,6 +178,13 @@ const char *chain_result_column_pending(const gw_chain_result *r);
  * Its kind and spread are the result's chatter_kind and chatter_spread. */
 #define CHAIN_CHATTER_TEXT 512
 const char *chain_result_chatter(const gw_chain_result *r);
+/* Room for the run's rtol and atol after the chatter's text (two doubles) */
+#define CHAIN_TOLS_ROOM (2 * sizeof(double))
+/* The tolerances the collision r ran at into *rtol, *atol: 1, or 0 for a
+ * result that gw_chain_collide did not fill (by hand, or a copy). The drop's
+ * library warning names its chatter's rerun by them: the drop result holds
+ * no rtol, and its first collision ran at the drop's (chain_drop.c). */
+int chain_result_tolerances(const gw_chain_result *r, double *rtol, double *atol);
 /* The one text of bead 1's chatter on a sensor body into buf: "bead 1
  * chattered on the sensor body (its wall contact closed CONTACTS times WHERE):
  * the chatter amplifies the integration's error, ENDING" (where "" or, say,
@@ -258,6 +265,8 @@ typedef struct chain_dt_tally {
     double chatter_work;       /* the largest work of a run too costly to run again */
     const gw_solver_type *solver; /* the runs' solver (the reruns' wording: rk4's step or the
                                      tolerances), set by the study; NULL: not known */
+    double rtol, atol;         /* the runs' tolerances, set by the study (the reruns' values:
+                                  10 times looser at the 1e-15 floor); 0: not known */
 } chain_dt_tally;
 /* One run into t: given the dt given (0: none), taken the step it took,
  * dt_max its largest step (s). t starts zeroed. */
@@ -281,11 +290,19 @@ void chain_dt_tally_overlap(chain_dt_tally *t, double overlap_rel);
  * chatter column): moved, costly, failed by kind (GW_CHAIN_CHATTER_*) of total
  * runs named what, the most wall contacts, the largest spread measured and
  * the largest work not run again; first "" or "; the first, case K". The
- * reruns of the moved ones: rk4 CHAIN_RERUN_TOL (10 times tighter
- * tolerances), CHAIN_RERUN_STEP (rk4's step halved) or CHAIN_RERUN_BOTH. */
-enum { CHAIN_RERUN_TOL = 1, CHAIN_RERUN_STEP = 2, CHAIN_RERUN_BOTH = 3 };
+ * reruns of the moved ones, bits: CHAIN_RERUN_TOL (10 times tighter
+ * tolerances), CHAIN_RERUN_LOOSE (10 times looser: a tolerance at the 1e-15
+ * floor, chain_chatter_rerun), CHAIN_RERUN_STEP (rk4's step halved); rtol and
+ * atol the moved runs' own tolerances where they are one setting (their
+ * reruns' values named), else 0. A study at rtol = atol = 1e-15, whose reruns
+ * were made at 1e-14, said "10 times tighter tolerances" (session 45). */
+enum { CHAIN_RERUN_TOL = 1, CHAIN_RERUN_STEP = 2, CHAIN_RERUN_BOTH = 3, CHAIN_RERUN_LOOSE = 4 };
 int chain_chatter_cases_warning(long moved, long costly, long failed, long total, int contacts, double spread,
-                                double work, int rerun, const char *what, const char *first, char **list);
+                                double work, int rerun, double rtol, double atol, const char *what, const char *first,
+                                char **list);
+/* Whether chain_chatter_rerun makes the tolerances rtol, atol 10 times looser
+ * (one of them at the floor GW_TOL_MIN) rather than tighter */
+int chain_chatter_looser(double rtol, double atol);
 
 /* Append speed v to the list in buf ("0.3, 6.16"; "..." once it is full),
  * counting in *count. */

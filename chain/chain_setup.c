@@ -27,7 +27,13 @@
 
 
 static const gw_param setup_params[] = {
-    ROW("n", GW_PARAM_LONG, n, "", 1, 50000000, 0, "1", "N", "number of beads [1]"),
+    /* the parser's range is the memory's (gw_chain_params_validate); the
+     * column's work holds a whole collision to N = 1414
+     * (chain_column_work_check), which the help printed nowhere (chain's
+     * --n: app/chain/chain_cmd.c, CHAIN_N_HELP) */
+    ROW("n", GW_PARAM_LONG, n, "", 1, 50000000, 0, "1", "N",
+        "number of beads, in [1, 50000000] as parsed, and at most 1414 over a whole collision: the column's work, "
+        "N^2 times the share of the collision the run covers, is held to 2e6 (a short t-max runs more beads) [1]"),
     ROW("vimp", GW_PARAM_DOUBLE, vimp, "m/s", GW_CHAIN_VIMP_MIN, GW_CHAIN_VIMP_MAX, 0, "0.3", "V", "impact velocity, m/s [0.3]"),
     GW_CHAIN_MODEL_ROWS
     ROW("trace", GW_PARAM_FLAG, trace, "", 0, 1, 0, "0", NULL,

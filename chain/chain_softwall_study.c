@@ -505,7 +505,9 @@ static int sw_run(const gw_chain_softwall_setup *s, gw_progress_fn progress, voi
     int small = 0; /* cases whose contact damping is predicted below rtol, the largest effect among them */
     double small_hi = 0;
     /* a --dt above the step taken: the rigid wall's 20 columns and the walls'; the chatter's reruns by the solver */
-    chain_dt_tally dt_tally = {.solver = rs.run.solver ? rs.run.solver : gw_solver_cvode};
+    chain_dt_tally dt_tally = {.solver = rs.run.solver ? rs.run.solver : gw_solver_cvode,
+                               .rtol = rs.run.sp.rtol,
+                               .atol = rs.run.sp.atol};
     chain_drag_tally drag = {0};   /* the sensor's dashpot and the guide's friction over the walls' columns */
     rc = res && sr && lay && wall ? GW_OK : gw_err_set(err, GW_ENOMEM, "softwall: out of memory");
     char name[32];

@@ -202,19 +202,25 @@ typedef struct rows_acc {
     long total, over, over_first, energy, energy_first;
     double over_hi, energy_hi;
     long moved, costly, failed, chatter_first; /* bead 1 chattered on the sensor body (chatter column) */
-    int rerun;                                  /* the moved ones' reruns (CHAIN_RERUN_*: rk4's or the tolerances) */
+    int rerun;                                  /* the moved ones' reruns (CHAIN_RERUN_* bits: rk4's or the tolerances,
+                                                   tighter or looser) */
     double spread_hi;
+    double rtol, atol; /* the moved ones' tolerances (under cvode, arkode) while one setting, else -1 */
 } rows_acc;
 
-/* Case k's solver and energy-tol as its run took them: *rk4 1 when it runs
- * rk4 (its chatter's rerun halves the step; the others tighten the
- * tolerances), *energy_tol 0 when off (the default). Read when a row needs
- * them (a chatter moved, an energy error above the bound). */
-static void case_settings(const gw_sweep_config *cfg, long k, int *rk4, double *energy_tol)
+/* Case k's solver, energy-tol and tolerances as its run took them: *rk4 1
+ * when it runs rk4 (its chatter's rerun halves the step; the others change
+ * the tolerances: 10 times tighter, looser at the 1e-15 floor), *energy_tol
+ * 0 when off (the default), *rtol and *atol (0 when the case is not read).
+ * Read when a row needs them (a chatter moved, an energy error above the
+ * bound). */
+static void case_settings(const gw_sweep_config *cfg, long k, int *rk4, double *energy_tol, double *rtol,
+                          double *atol)
 {
     const char *names[2 * GW_SWEEP_MAX_KEYS], *values[2 * GW_SWEEP_MAX_KEYS];
     *rk4 = 0;
     *energy_tol = 0;
+    *rtol = *atol = 0;
     if (!cfg || gw_sweep_case(cfg, k, names, values) != GW_OK)
         return;
     gw_chain_setup s;
@@ -222,6 +228,8 @@ static void case_settings(const gw_sweep_config *cfg, long k, int *rk4, double *
     char name[16] = "";
     if (prepare(&s, cfg->ngrid + cfg->nparams, names, values, &e) == GW_OK) {
         *energy_tol = s.energy_tol;
+        *rtol = isnan(s.rtol) ? GW_CHAIN_TOL_DEFAULT : s.rtol; /* as chain_setup.c resolves them */
+        *atol = isnan(s.atol) ? GW_CHAIN_TOL_DEFAULT : s.atol;
         if (s.solver >= 0 &&
             gw_param_format(gw_param_find(gw_chain_setup_params(), "solver"), &s, name, sizeof name) > 0)
             *rk4 = strcmp(name, "rk4") == 0;
@@ -235,7 +243,7 @@ static void rows_row(void *acc, const gw_sweep_config *cfg, long k, const double
     a->total++;
     const double ov = row[COL_OVERLAP], ee = row[COL_ENERGY];
     int rk4 = -1; /* (case_settings not read yet) */
-    double energy_tol = 0;
+    double energy_tol = 0, rtol = 0, atol = 0;
     if (ov > 1) {
         if (a->over++ == 0)
             a->over_first = k, a->over_hi = ov;
@@ -251,13 +259,19 @@ static void rows_row(void *acc, const gw_sweep_config *cfg, long k, const double
         a->failed += ch == -2;
         if (ch > 0) {
             a->spread_hi = fmax(a->spread_hi, ch);
-            case_settings(cfg, k, &rk4, &energy_tol);
-            a->rerun |= rk4 ? CHAIN_RERUN_STEP : CHAIN_RERUN_TOL;
+            case_settings(cfg, k, &rk4, &energy_tol, &rtol, &atol);
+            const int looser = rtol > 0 && atol > 0 && chain_chatter_looser(rtol, atol);
+            a->rerun |= rk4 ? CHAIN_RERUN_STEP : looser ? CHAIN_RERUN_LOOSE : CHAIN_RERUN_TOL;
+            /* the tolerances' values named while the moved cases share them */
+            if (!rk4 && (a->rtol == 0 || (a->rtol == rtol && a->atol == atol)))
+                a->rtol = rtol, a->atol = atol;
+            else if (!rk4)
+                a->rtol = a->atol = -1;
         }
     }
     /* a case with energy-tol on stopped at its bound; one below it ran on */
     if (ee > GW_CHAIN_ENERGY_WARN && rk4 < 0)
-        case_settings(cfg, k, &rk4, &energy_tol);
+        case_settings(cfg, k, &rk4, &energy_tol, &rtol, &atol);
     if (ee > GW_CHAIN_ENERGY_WARN && !(energy_tol > 0)) {
         if (a->energy++ == 0)
             a->energy_first = k, a->energy_hi = ee;
@@ -274,7 +288,8 @@ static int rows_warnings(const void *acc, const gw_sweep_config *cfg, char **lis
     char first[80];
     gw_snprintf(first, sizeof first, "; the first, case %ld; their chatter column", a->chatter_first);
     return rc == GW_OK ? chain_chatter_cases_warning(a->moved, a->costly, a->failed, a->total, 0, a->spread_hi, 0,
-                                                     a->rerun, "cases", first, list)
+                                                     a->rerun, fmax(a->rtol, 0), fmax(a->atol, 0), "cases", first,
+                                                     list)
                        : rc;
 }
 

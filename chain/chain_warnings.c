@@ -367,23 +367,51 @@ void chain_chatter_text(char *buf, size_t size, int contacts, const char *where,
  * study dropped: falcon, wavespeed and softwall ran the cheap ones again and
  * said nothing of what the reruns measured, nor of the costly ones). first:
  * "" or "; the first, case K" of a sweep; moved, costly, failed: the counts
- * by kind; rerun: what the moved ones' reruns changed (CHAIN_RERUN_*: a
- * study under cvode was told "(rk4: half the step)" too). GW_OK or GW_ENOMEM. */
+ * by kind; rerun: what the moved ones' reruns changed (CHAIN_RERUN_* bits:
+ * a study under cvode was told "(rk4: half the step)" too), rtol and atol
+ * their tolerances where one setting (0: not known). GW_OK or GW_ENOMEM. */
+static void rerun_words(char *buf, size_t size, int rerun, double rtol, double atol)
+{
+    const char *rk4 = rerun & CHAIN_RERUN_STEP ? "under rk4: half the step" : "";
+    if (!(rerun & (CHAIN_RERUN_TOL | CHAIN_RERUN_LOOSE))) {
+        gw_snprintf(buf, size, "half rk4's step");
+        return;
+    }
+    if (rtol > 0 && atol > 0) { /* one setting: the reruns' values, as the single run names them */
+        gw_solver_params sp = gw_solver_params_default();
+        sp.rtol = rtol;
+        sp.atol = atol;
+        char how[96], flags[80];
+        chain_chatter_rerun(gw_solver_cvode, 0, &sp, how, sizeof how, flags, sizeof flags);
+        if (chain_chatter_looser(rtol, atol))
+            gw_snprintf(buf, size, "rtol %g, atol %g (10 times looser: 1e-15 is the floor%s%s)", sp.rtol, sp.atol,
+                        rk4[0] ? "; " : "", rk4);
+        else
+            gw_snprintf(buf, size, "10 times tighter tolerances (rtol %g, atol %g%s%s)", sp.rtol, sp.atol,
+                        rk4[0] ? "; " : "", rk4);
+        return;
+    }
+    const int tight = (rerun & CHAIN_RERUN_TOL) != 0, loose = (rerun & CHAIN_RERUN_LOOSE) != 0;
+    const char *why = tight && loose ? "10 times looser where one was at the 1e-15 floor"
+                    : loose          ? "one was at the 1e-15 floor"
+                                     : "";
+    gw_snprintf(buf, size, "10 times %s tolerances%s%s%s%s%s", tight ? "tighter" : "looser",
+                why[0] || rk4[0] ? " (" : "", why, why[0] && rk4[0] ? "; " : "", rk4, why[0] || rk4[0] ? ")" : "");
+}
+
 int chain_chatter_cases_warning(long moved, long costly, long failed, long total, int contacts, double spread,
-                                double work, int rerun, const char *what, const char *first, char **list)
+                                double work, int rerun, double rtol, double atol, const char *what, const char *first,
+                                char **list)
 {
     const long n = moved + costly + failed;
     if (n <= 0)
         return GW_OK;
-    char a[160] = "", b[200] = "", c[64] = "", up[48] = "";
+    char a[224] = "", b[200] = "", c[64] = "", up[48] = "", words[160];
     if (contacts > 0) /* a sweep's rows hold no count of contacts */
         gw_snprintf(up, sizeof up, "up to %d wall contacts", contacts);
+    rerun_words(words, sizeof words, rerun, rtol, atol);
     if (moved > 0)
-        gw_snprintf(a, sizeof a, "; in %ld a rerun at %s moved eps_eff by up to %.3g", moved,
-                    rerun == CHAIN_RERUN_STEP  ? "half rk4's step"
-                    : rerun == CHAIN_RERUN_TOL ? "10 times tighter tolerances"
-                                               : "10 times tighter tolerances (under rk4: half the step)",
-                    spread);
+        gw_snprintf(a, sizeof a, "; in %ld a rerun at %s moved eps_eff by up to %.3g", moved, words, spread);
     if (costly > 0 && work > 0)
         gw_snprintf(b, sizeof b, "; %ld too costly to run again (up to %.3g steps times beads, above %.3g), their "
                     "spread unmeasured", costly, work, GW_CHAIN_CHATTER_WORK);
@@ -403,10 +431,13 @@ int chain_chatter_cases_warning(long moved, long costly, long failed, long total
 
 static int tally_chatter_warning(const chain_dt_tally *t, const char *what, char **list)
 {
-    const int rerun = !t->solver ? CHAIN_RERUN_BOTH : t->solver == gw_solver_rk4 ? CHAIN_RERUN_STEP : CHAIN_RERUN_TOL;
+    /* the tolerances' reruns 10 times looser where one is at the 1e-15 floor (chain_chatter_rerun) */
+    const int tol = t->rtol > 0 && t->atol > 0 && chain_chatter_looser(t->rtol, t->atol) ? CHAIN_RERUN_LOOSE
+                                                                                            : CHAIN_RERUN_TOL;
+    const int rerun = !t->solver ? tol | CHAIN_RERUN_STEP : t->solver == gw_solver_rk4 ? CHAIN_RERUN_STEP : tol;
     return chain_chatter_cases_warning(t->chatter[GW_CHAIN_CHATTER_MOVED], t->chatter[GW_CHAIN_CHATTER_COSTLY],
                                        t->chatter[GW_CHAIN_CHATTER_FAILED], t->total, t->chatter_contacts,
-                                       t->chatter_spread, t->chatter_work, rerun, what, "", list);
+                                       t->chatter_spread, t->chatter_work, rerun, t->rtol, t->atol, what, "", list);
 }
 
 /* The runs of a study pressed beyond one radius (overlap_warning's line, with
@@ -649,6 +680,14 @@ static int drop_chatter_warning(const gw_chain_drop_result *r, const gw_chain_ru
     } else if (step) {
         gw_solver_params sp = gw_solver_params_default();
         chain_chatter_rerun(gw_solver_rk4, r->run_dt, &sp, how, sizeof how, flags, sizeof flags);
+    } else {
+        /* the tolerances' values (10 times looser at the 1e-15 floor), as the
+         * program's line names them: the drop's first collision ran at the
+         * drop's tolerances and keeps them (chain_result_tolerances); a
+         * result that holds none (filled by hand) keeps the rule's words */
+        gw_solver_params sp = gw_solver_params_default();
+        if (chain_result_tolerances(&r->first, &sp.rtol, &sp.atol))
+            chain_chatter_rerun(gw_solver_cvode, r->run_dt, &sp, how, sizeof how, flags, sizeof flags);
     }
     /* the first collision ends half way to bead 1's second contact, which is
      * the drop's next impact: its own check counts one contact (1 in each of

@@ -496,7 +496,9 @@ static int ws_run(const gw_chain_wavespeed_setup *s, gw_progress_fn progress, vo
         out->dt_max[i] = res[i].run_dt_max;
     }
     /* a --dt above the step taken: the tau_N sweep's and the front's columns; the chatter's reruns by the solver */
-    chain_dt_tally dt_tally = {.solver = r.run.solver ? r.run.solver : gw_solver_cvode};
+    chain_dt_tally dt_tally = {.solver = r.run.solver ? r.run.solver : gw_solver_cvode,
+                               .rtol = r.run.sp.rtol,
+                               .atol = r.run.sp.atol};
     if (rc == GW_OK)
         chain_dt_tally_results(&dt_tally, res, out->ncase);
     for (int iv = 0; rc == GW_OK && iv < nv; iv++)

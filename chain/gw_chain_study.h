@@ -41,8 +41,17 @@ GW_BEGIN_DECLS /* the exported interface, C linkage (gw_api.h) */
  * walls), is refused above 2e6 before anything runs: 9x the largest documented
  * study (softwall --sheets --n 1:40, 9 walls x 22140 = 2.0e5, 47 s) and room
  * for falcon --n 1:100 at its five default speeds (1.7e6); at the bound one
- * column of N = 1414, estimated 8 to 15 min from the N = 400 run (N^2 to N^2.5),
- * measured 353 s of CPU under cvode (session 45).
+ * column of N = 1414, measured 353 s of CPU under cvode (session 45): about
+ * N^2.5 from chain --n 400's 16 s of CPU (N^2 gives 3.4 min, N^2.5 6.3 min; the
+ * 8 to 15 min estimated before scaled falcon's 39 s, its run to t_max, and was
+ * 2.5 times too long). chain --n 600 took 49 s of CPU. The progress line's
+ * first estimate ("~L s left" at the pace of its first seconds) is
+ * low: between 50 and 70 % of the expected length the run goes 3 to 6
+ * times slower than before, and it goes on past the
+ * expected length until every pair separates (N = 400: first estimate 9.8 s of
+ * CPU, 14.9 s to the expected length, 16.1 s in all; N = 600: 18.9 s, 39.3 s,
+ * 48.9 s, t_end 113.8 ms against 15.0 ms expected; N = 1414: about 1300 s of
+ * wall time at a 15 % share against 39 min).
  * --n 1:100000 asked for 3e14 (days). One column is held to the same bound
  * over the share of its collision it runs (the plan: chain, drop, sweeps,
  * dispersion's column, Python; since session 45: chain --n 100000 ran for

@@ -29,7 +29,13 @@
 #    under rk4 the drop is run again at half the step up to 1e7 steps times
 #    bodies (1e-4 kg: -1 before, now 0, every impact measured), above it the
 #    line says why; Python's drop has the impacts' chatter column.
-# About 16 s of CPU (softwall's 23 collisions the most).
+#  Session 45 too: a study's and a sweep's line said "10 times tighter
+#    tolerances" where the reruns were 10 times looser, a tolerance being at
+#    the 1e-15 floor (falcon --rtol 1e-15 --atol 1e-15, a sweep with rtol 1e-15
+#    in [params]); they name the reruns' values where the tolerances are one
+#    setting, "rtol 1e-14, atol 1e-14 (10 times looser: 1e-15 is the floor)"
+#    as the single run does, and both words where the cases differ.
+# About 20 s of CPU (softwall's 23 collisions the most).
 # Checks that fail on the code before: see docs/tests.md.
 # shellcheck source=refusal_lib.sh
 . "$2/tests/refusal_lib.sh"
@@ -187,19 +193,49 @@ fi
 
 # --- 3c the reruns named by the solver run: a study under cvode was told
 # "(rk4: half the step)" too
-if grep -qF "a rerun at 10 times tighter tolerances moved eps_eff" falcon.err && ! grep -q "rk4" falcon.err; then
-    ok "3 falcon under cvode: 'a rerun at 10 times tighter tolerances', no rk4"
+# (session 45: with the reruns' values, the tolerances being one setting)
+tight="a rerun at 10 times tighter tolerances (rtol 1e-13, atol 1e-13) moved eps_eff"
+if grep -qF "$tight" falcon.err && ! grep -q "rk4" falcon.err; then
+    ok "3 falcon under cvode: '$tight', no rk4"
 else
-    ko "3 falcon under cvode: $(grep -o 'in [0-9]* a rerun at[^;]*' falcon.err)"
+    ko "3 falcon under cvode: $(grep -o 'in [0-9]* a rerun at[^:]*' falcon.err)"
 fi
-if grep -qF "in 1 a rerun at 10 times tighter tolerances moved eps_eff" s.err && ! grep -q "rk4" s.err; then
-    ok "3 sweep (the moved case under cvode): no rk4 in its rerun"
+if grep -qF "in 1 $tight" s.err && ! grep -q "rk4" s.err; then
+    ok "3 sweep (the moved case under cvode): no rk4 in its rerun, its tolerances named"
 else
-    ko "3 sweep: $(grep -o 'in [0-9]* a rerun at[^;]*' s.err)"
+    ko "3 sweep: $(grep -o 'in [0-9]* a rerun at[^:]*' s.err)"
+fi
+
+# --- 3d at the 1e-15 floor the reruns are 10 times looser (chain_chatter_rerun),
+# and a study's and a sweep's line said "10 times tighter tolerances" (session 45)
+loose="a rerun at rtol 1e-14, atol 1e-14 (10 times looser: 1e-15 is the floor) moved eps_eff"
+# shellcheck disable=SC2086
+cpu_run 60 "$GW" falcon --n 1:3 --heights none $S --rtol 1e-15 --atol 1e-15 --quiet --json >fl.json 2>fl.err
+if [ "$(nlines fl.err)" = 1 ] && grep -qF "in 1 $loose" fl.err && ! grep -q "tighter" fl.err &&
+    [ "$(jwarn fl.json | sed -n 1p | cut -d' ' -f1)" = 1 ] && jwarn fl.json | sed -n 2p | grep -qF "$loose"; then
+    ok "3 falcon at rtol = atol = 1e-15: '$loose', on stderr and in --json"
+else
+    ko "3 falcon at 1e-15: $(grep -o 'in [0-9]* a rerun at[^:]*' fl.err)"
+fi
+printf '[sweep]\nmodel = chain\nout = OL\n[grid]\nn = 3, 5\n[params]\nsensor_mass = 1e-4\nsensor_stiffness = 1e3\nrtol = 1e-15\natol = 1e-15\n' >sl.ini
+cpu_run 120 "$GW" sweep sl.ini --quiet 2>sl.err
+if [ "$(nlines sl.err)" = 1 ] && grep -qF "in 2 $loose" sl.err && ! grep -q "tighter" sl.err; then
+    ok "3 sweep at rtol = atol = 1e-15: '$loose'"
+else
+    ko "3 sweep at 1e-15: $(grep -o 'in [0-9]* a rerun at[^:]*' sl.err)"
+fi
+# cases at the floor and above it: both said, no values (they differ)
+printf '[sweep]\nmodel = chain\nout = OM\n[grid]\nn = 3, 5\nrtol = 1e-15, 1e-12\n[params]\nsensor_mass = 1e-4\nsensor_stiffness = 1e3\n' >sm.ini
+cpu_run 120 "$GW" sweep sm.ini --quiet 2>sm.err
+mixed="in 4 a rerun at 10 times tighter tolerances (10 times looser where one was at the 1e-15 floor) moved eps_eff"
+if [ "$(nlines sm.err)" = 1 ] && grep -qF "$mixed" sm.err; then
+    ok "3 sweep over rtol 1e-15, 1e-12: '$mixed'"
+else
+    ko "3 sweep over rtol 1e-15, 1e-12: $(grep -o 'in [0-9]* a rerun at[^:]*' sm.err)"
 fi
 
 # --- 4 Python
-py_checks 5 <<'PY'
+py_checks 6 <<'PY'
 r, ws = caught(granwave.chain, n=5, sensor_mass=1e-4, sensor_stiffness=1e3, solver="rk4")
 w = [m for m in ws if "chattered on the sensor body" in m]
 check(len(w) == 1 and "was not run again" in w[0] and "sensor_stiffness" in w[0] and
@@ -215,6 +251,11 @@ r, ws = caught(granwave.sweep, "chain", grid={"n": [2, 5]}, solver="rk4", sensor
 w = [m for m in r["warnings"] if "chattered on the sensor body" in m]
 check(list(r.get("chatter", [])) == [-1, -1] and len(w) == 1 and "in 2 of 2 cases" in w[0],
       "4 Python sweep: the chatter column %s, one line: %s" % (list(r.get("chatter", [])), [m[:100] for m in w]))
+r, ws = caught(granwave.falcon, n="1:3", heights="none", sensor_mass=1e-4, sensor_stiffness=1e3, rtol=1e-15,
+               atol=1e-15)
+w = [m for m in ws if "chattered on the sensor body" in m]
+check(len(w) == 1 and "a rerun at rtol 1e-14, atol 1e-14 (10 times looser: 1e-15 is the floor)" in w[0],
+      "4 Python falcon at rtol = atol = 1e-15: the reruns 10 times looser: %s" % [m[:200] for m in w])
 r, ws = caught(granwave.drop, n=3, sensor_mass=1e-4, sensor_stiffness=1e3)
 w = [m for m in ws if "chattered on the sensor body" in m]
 check(len(w) == 1 and "times in 10 ms" in w[0] and r.get("chatter", 0) > 1e-6 and

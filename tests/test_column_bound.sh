@@ -12,7 +12,10 @@
 #    exit 2 and one line before anything is allocated or written. Controls:
 #    N = 1414 (the bound) passes a sweep's check, dispersion's column of 1414
 #    beads and the drop's of 4650 (its bound over 10 ms: 4690) start to run,
-#    100000 beads over the collision's first 1e-5 s run.
+#    100000 beads over the collision's first 1e-5 s run. `chain --help` printed
+#    --n's parser range [1, 50000000] alone (session 45): its line names the
+#    bound, N = 1414 over a whole collision (that N passes, N + 1 is refused),
+#    and dispersion's --column-n line too.
 #  2 falcon --heights 5e-17 (the row's lower end) fell at 9.9e-10 m/s, a speed
 #    chain --vimp refuses: the row now starts at 5.1e-17 mm (1.0003e-9 m/s), and
 #    under another gravity a height's fall is held to chain's speeds [1e-9,
@@ -61,6 +64,25 @@ for c in "dispersion --column-n 1414" "drop --n 4650"; do
         ok "control: $c (within the bound) runs, ended by its CPU limit (exit $rc)" ||
         ko "control: $c: exit $rc ($(head -c 300 "$tmp/stderr"))"
 done
+
+# the help says the real limit (session 45: `chain --help` printed --n's parser
+# range [1, 50000000] alone): the N it names over a whole collision is the
+# bound's, N passing a sweep's check and N + 1 refused
+nh=$("$GW" chain --help | grep -E '^  --n N ' | grep -oE 'at most [0-9]+ over a whole collision' | grep -oE '[0-9]+')
+if [ -n "$nh" ] && "$GW" chain --help | grep -E '^  --n N ' | grep -qF 'in [1, 50000000] as parsed'; then
+    printf '[sweep]\nmodel = chain\n[grid]\nn = %s\n' "$nh" >nh.ini
+    cpu_run 20 "$GW" sweep nh.ini --out nh --check >/dev/null 2>"$tmp/stderr" </dev/null &&
+        cpu_run 20 "$GW" chain --n $((nh + 1)) --out o --quiet >/dev/null 2>"$tmp/stderr2" </dev/null
+    rc=$?
+    [ $rc -eq 2 ] && grep -q "^granwave chain --n: a column of $((nh + 1)) beads" "$tmp/stderr2" &&
+        ok "chain --help's --n line names the work bound, N = $nh over a whole collision (N passes, N + 1 refused)" ||
+        ko "chain --help's N = $nh: exit $rc, $(head -c 300 "$tmp/stderr" "$tmp/stderr2")"
+else
+    ko "chain --help's --n line names no work bound: $("$GW" chain --help | grep -E '^  --n N ')"
+fi
+"$GW" dispersion --help | grep -E '^  --column-n N ' | grep -qF "at most 1414" &&
+    ok "dispersion --help's --column-n line names the work bound, 1414" ||
+    ko "dispersion --help's --column-n line: $("$GW" dispersion --help | grep -E '^  --column-n N ')"
 
 # 2 falcon's heights within chain's impact speeds
 refused "falcon --heights 5e-17 (9.9e-10 m/s) refused naming --heights and the value" \

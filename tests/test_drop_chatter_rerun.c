@@ -5,7 +5,12 @@
  *     solvers, "10 times tighter tolerances (under rk4: half the step)": it
  *     now says what was done for the method used, from the result's
  *     chatter_rerun (rk4: "--dt X (half the step)"; cvode: the tolerances,
- *     no rk4), as the studies' line does.
+ *     no rk4), as the studies' line does. Under cvode it said "10 times
+ *     tighter tolerances (rtol and atol)" without their values, the drop
+ *     result holding no rtol (left in session 45): it names them now, "a
+ *     rerun at rtol 1e-13, atol 1e-13", as the program's line does (the
+ *     first collision keeps the run's tolerances after its texts); a copy
+ *     whose first collision is the caller's own keeps the rule's words.
  *   - rk4's rerun at half the step costs twice the drop's steps, known before
  *     it is made: a drop of 3 beads on 1e-4 kg and 1e3 N/m (9.8e5 steps, 44
  *     episodes) was left unmeasured ("chatter" -1, above the 1e6 steps times
@@ -55,12 +60,27 @@ static int c_cvode_named(void)
     char *w = NULL;
     EXPECT(drop_on(1e-4, 1e3, 0, &r, &w) == 0);
     const char *s = w ? w : "";
-    if (!(r.chatter_kind == GW_CHAIN_CHATTER_MOVED && strstr(s, "a rerun at 10 times tighter tolerances") &&
+    /* the rerun's values, as the program's line names them (session 45: the
+     * library said "10 times tighter tolerances (rtol and atol)", the drop
+     * result holding no rtol) */
+    if (!(r.chatter_kind == GW_CHAIN_CHATTER_MOVED && strstr(s, "a rerun at rtol 1e-13, atol 1e-13 changed") &&
           !strstr(s, "rk4")))
         printf("kind %d, warnings '%s'\n", r.chatter_kind, s);
-    EXPECT(r.chatter_kind == GW_CHAIN_CHATTER_MOVED && strstr(s, "a rerun at 10 times tighter tolerances"));
+    EXPECT(r.chatter_kind == GW_CHAIN_CHATTER_MOVED && strstr(s, "a rerun at rtol 1e-13, atol 1e-13 changed"));
     EXPECT(!strstr(s, "rk4"));
     EXPECT(r.chatter_rerun == GW_CHAIN_RERUN_TOL);
+    /* a copy whose first collision is the caller's own (final_v not the
+     * library's: no tolerances kept) keeps the rule's words, read nothing
+     * past its array */
+    gw_chain_drop_result c = r;
+    double v[3] = {0, 0, 0};
+    c.first.final_v = v;
+    char *w2 = NULL;
+    EXPECT(gw_chain_drop_result_warnings(&c, &w2) == GW_OK);
+    if (!w2 || !strstr(w2, "a rerun at 10 times tighter tolerances (rtol and atol) changed"))
+        printf("copy: '%s'\n", w2 ? w2 : "");
+    EXPECT(w2 && strstr(w2, "a rerun at 10 times tighter tolerances (rtol and atol) changed"));
+    free(w2);
     free(w);
     gw_chain_drop_result_free(&r);
     return 0;
@@ -110,7 +130,9 @@ static int c_rk4_costly_named(void)
 }
 
 static const child_row rows[] = {
-    {"drop cvode on 1e-4 kg: the library's warning names the tolerances, no rk4", c_cvode_named},
+    {"drop cvode on 1e-4 kg: the library's warning names the rerun's rtol and atol (was the rule's words), no rk4; "
+     "a copy keeps the rule's words",
+     c_cvode_named},
     {"drop rk4 on 1e-4 kg: run again at half the step (was -1), every impact measured, no warning", c_rk4_run_again},
     {"drop rk4 on 1e-6 kg, 1e5 N/m (costly): the library's warning names --dt, half the step, and why",
      c_rk4_costly_named},

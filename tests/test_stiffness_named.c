@@ -17,6 +17,12 @@
  *     them and the dt-max given. Controls: k = 1e28 (the range's top end)
  *     with dt_max 1e-9 runs; a dt_max of 1e-3 s on the default column runs
  *     with the default's F_max.
+ *   - rk4 with a dt given left k out (session 45): k = 1.8e308 at dt 1e-9
+ *     was refused as "dt-max: a step of 2.86e-125 s needs about 1.22e+120
+ *     steps". Named k with its range at that dt and "the dt given (1e-09 s)
+ *     does not change that" (kwall alike); the range's top end passes.
+ *     Controls: dt 1e-13 (too small for any k) is still refused as the dt's;
+ *     k 1e20 at dt 1e-9 runs.
  * Each case runs in its own child process (test_child.h).
  */
 #define _POSIX_C_SOURCE 200809L
@@ -182,6 +188,68 @@ static int c_dt_max_controls(void)
     return 0;
 }
 
+static int c_rk4_dt_named(void)
+{
+    /* rk4 with a dt given: k = 1.8e308 at dt 1e-9 was refused as "dt-max: a
+     * step of 2.86e-125 s needs about 1.22e+120 steps ..." (that path left k
+     * out); now named k with its range and the dt given, as without a dt */
+    gw_chain_params p = gw_chain_params_default();
+    p.n = 3;
+    p.k = DBL_MAX;
+    gw_chain_run_opts o = gw_chain_run_opts_default();
+    o.solver = gw_solver_rk4;
+    o.sp.dt = 1e-9;
+    double hi = 0, hi2 = 0;
+    EXPECT(named(&p, &o, "k", &hi) && hi > 1e20 && hi < 1e40);
+    gw_err e = {0};
+    gw_chain_run_check(&p, &o, &e);
+    EXPECT(strstr(e.msg, "the dt given (1e-09 s) does not change that") != NULL);
+    /* the range's top end passes, 10 % above it is refused naming k */
+    p.k = hi;
+    if (gw_chain_run_check(&p, &o, &e) != GW_OK)
+        printf("k %g at dt 1e-9: '%s'\n", hi, e.msg);
+    EXPECT(gw_chain_run_check(&p, &o, &e) == GW_OK);
+    p.k = 1.1 * hi;
+    EXPECT(named(&p, &o, "k", &hi2) && hi2 == hi);
+    /* the run itself refuses it the same way */
+    p.k = DBL_MAX;
+    gw_chain *c = NULL;
+    EXPECT(gw_chain_create(&p, &c, &e) == GW_OK);
+    gw_chain_result r;
+    memset(&r, 0, sizeof r);
+    const int rc = gw_chain_collide(c, &o, &r, &e);
+    gw_chain_result_free(&r);
+    gw_chain_free(c);
+    EXPECT(refused(rc, &e, "k: 1.79769e+308 N/m^1.5 is outside ["));
+    /* kwall under the dt given names it too */
+    p = gw_chain_params_default();
+    p.n = 3;
+    p.kwall = DBL_MAX;
+    o.dt_out = 1e-6;
+    EXPECT(named(&p, &o, "kwall", &hi2));
+    gw_chain_run_check(&p, &o, &e);
+    EXPECT(strstr(e.msg, "the dt given (1e-09 s) does not change that") != NULL);
+    return 0;
+}
+
+static int c_rk4_dt_controls(void)
+{
+    /* a dt too small for any k is still the dt's; a k within the range at a
+     * dt below its contact runs */
+    gw_chain_params p = gw_chain_params_default();
+    p.n = 3;
+    gw_chain_run_opts o = gw_chain_run_opts_default();
+    o.solver = gw_solver_rk4;
+    o.sp.dt = 1e-13;
+    gw_err e = {0};
+    EXPECT(refused(gw_chain_run_check(&p, &o, &e), &e, "dt: a step of 1e-13 s"));
+    o.sp.dt = 1e-9;
+    p.k = 1e20;
+    EXPECT(gw_chain_run_check(&p, &o, &e) == GW_OK);
+    EXPECT(run_fmax(&p, &o) > 0);
+    return 0;
+}
+
 static const child_row rows[] = {
     {"kwall 1.8e308: named kwall with its range (was dt-out, dt-max, rk4's dt), by the check and the run",
      c_kwall_named},
@@ -189,6 +257,10 @@ static const child_row rows[] = {
     {"a dt_max given: k 1.8e308 and 1e30, kwall 1.8e308 refused naming them and the dt-max (passed)",
      c_dt_max_contacts},
     {"controls: k 1e28 with dt_max 1e-9 runs; dt_max 1e-3 s runs with the default's F_max", c_dt_max_controls},
+    {"rk4 with dt 1e-9: k 1.8e308 named k with its range and the dt given (was dt-max's), by the check and the run; "
+     "kwall too",
+     c_rk4_dt_named},
+    {"controls: rk4 dt 1e-13 still the dt's; k 1e20 at dt 1e-9 runs", c_rk4_dt_controls},
 };
 
 int main(void)

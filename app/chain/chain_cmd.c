@@ -137,6 +137,14 @@ static void chain_progress_report(void *ctx, double t, double t_expect, double t
     gw_cli_progress_time(&cp->p, t, t_expect, t_max, 0);
 }
 
+/* --n's range is the memory's (gw_chain_params_validate); the column's work
+ * holds a whole collision to N = 1414 (chain_column_work_check: N^2 times the
+ * share of the collision run at most GW_CHAIN_STUDY_WORK_MAX), which the help
+ * said nowhere, printing "in [1, 50000000]" alone */
+#define CHAIN_N_HELP                                                                                                  \
+    "number of beads, in [1, 50000000] as parsed, and at most 1414 over a whole collision: the column's work, N^2 "   \
+    "times the share of the collision the run covers, is held to 2e6 (a short --t-max runs more beads) [1]"
+
 int gw_cmd_chain(int argc, char **argv)
 {
     chain_cli c;
@@ -148,7 +156,7 @@ int gw_cmd_chain(int argc, char **argv)
     double vimp = 0.3;
     int quiet = 0;
     opts[CHAIN_CLI_NOPTS] = (gw_opt){.name = "n", .kind = GW_OPT_LONG, .dest = &n, .metavar = "N",
-                                     .help = "number of beads [1]", .lo = 1, .hi = 50000000};
+                                     .help = CHAIN_N_HELP, .lo = 1, .hi = 50000000};
     opts[CHAIN_CLI_NOPTS + 1] = (gw_opt){.name = "vimp", .kind = GW_OPT_DOUBLE, .dest = &vimp,
                                          .metavar = "V", .help = "impact velocity, m/s [0.3]",
                                          .lo = GW_CHAIN_VIMP_MIN, .hi = GW_CHAIN_VIMP_MAX};

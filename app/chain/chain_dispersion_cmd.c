@@ -92,7 +92,8 @@ static void disp_options(disp_cli *c, gw_opt *o)
     o[i++] = (gw_opt){.name = "fftw-measure", .kind = GW_OPT_FLAG, .dest = &c->measure,
                       .help = "plan the FFTs with FFTW_MEASURE (default FFTW_ESTIMATE)"};
     o[i++] = DOPT_S("wisdom", &c->wisdom, "FILE", "import FFTW wisdom from FILE if present (absent or empty: none), export it after the run");
-    o[i++] = DOPT_L("column-n", &c->column_n, "N", "instead: wall-force spectrum of an N-bead column collision", 1, 100000);
+    o[i++] = DOPT_L("column-n", &c->column_n, "N", "instead: wall-force spectrum of an N-bead column collision, in [1, 100000] as parsed, and at most "
+                        "1414: its work over the whole collision, N^2, is held to 2e6", 1, 100000);
     o[i++] = DOPT_D("vimp", &c->vimp, "V", "impact velocity of that column, m/s [0.3]", GW_CHAIN_VIMP_MIN,
                     GW_CHAIN_VIMP_MAX, 0);
     o[i++] = (gw_opt){.name = "json", .kind = GW_OPT_FLAG, .dest = &c->json, .help = "print results as one JSON object on stdout"};

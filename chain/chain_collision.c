@@ -172,7 +172,7 @@ int chain_collision_run_progress(const gw_chain_setup *s, gw_chain_collision *ou
                         (rc = chain_damping_small_warning(p, res.run.sp.rtol, &out->warnings)) != GW_OK ||
                         (rc = chain_drag_small_warnings(p, res.run.sp.rtol, &out->warnings)) != GW_OK ||
                         (rc = gw_chain_result_warnings(&out->r, &out->warnings)) != GW_OK ||
-                        (rc = chain_energy_warning(out->r.energy_error, &res.run, &out->warnings)) != GW_OK))
+                        (rc = chain_energy_warning(out->r.energy_error, out->r.run_dt, &res.run, &out->warnings)) != GW_OK))
         rc = gw_err_set(err, rc, "chain: out of memory");
     gw_chain_free(c);
     gw_chain_resolved_free(&res);

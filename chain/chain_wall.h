@@ -112,7 +112,7 @@ int chain_drag_cases_warnings(const chain_drag_cases *c, long total, char **list
  * the integration too loose to trust the column's numbers. Nothing when
  * energy_tol is on (the run stops at it instead). GW_OK or GW_ENOMEM. */
 #define GW_CHAIN_ENERGY_WARN 1e-3
-int chain_energy_warning(double energy_error, const gw_chain_run_opts *o, char **list);
+int chain_energy_warning(double energy_error, double run_dt, const gw_chain_run_opts *o, char **list);
 /* A sweep's n of total cases (the first, case first) whose rows say an
  * overlap beyond one radius (hi: the largest, in radii), or an energy error
  * above GW_CHAIN_ENERGY_WARN with energy-tol off (hi: the largest): the

@@ -867,8 +867,10 @@ int chain_wavespeed_warnings(const gw_chain_wavespeed_outcome *o, const gw_chain
  * the default tolerances give 5.4e-10 (chain --n 20, rtol 1e-12), and the
  * layer's runs 3.4e-5 (rk4) and 1.4e-6 (CVODE); 1e-3 (0.1 %) stands 30 times
  * above the largest of them and below what a loose tolerance gives (6e-3 at
- * rtol = atol = 1e-4, 9.9e-4 at 1e-5). */
-int chain_energy_warning(double energy_error, const gw_chain_run_opts *o, char **list)
+ * rtol = atol = 1e-4, 9.9e-4 at 1e-5). rk4's line names the step the run
+ * took (run_dt), not the dt given: a run given --dt 1e-9 that ran at
+ * 3.35e-13 s was told "the rk4 step dt = 1e-09 s is too coarse". */
+int chain_energy_warning(double energy_error, double run_dt, const gw_chain_run_opts *o, char **list)
 {
     if (!o || o->energy_tol > 0 || !(energy_error > GW_CHAIN_ENERGY_WARN))
         return GW_OK;
@@ -876,7 +878,8 @@ int chain_energy_warning(double energy_error, const gw_chain_run_opts *o, char *
     if (name && strcmp(name, "rk4") == 0)
         return gw_warnings_add(list, "the relative energy error reached %.3g (%.3g %%, above %g): the rk4 step dt = "
                                "%g s is too coarse to trust the run's numbers: lower --dt, or set --energy-tol to "
-                               "stop at a bound", energy_error, 100 * energy_error, GW_CHAIN_ENERGY_WARN, o->sp.dt);
+                               "stop at a bound", energy_error, 100 * energy_error, GW_CHAIN_ENERGY_WARN,
+                               run_dt > 0 ? run_dt : o->sp.dt);
     return gw_warnings_add(list, "the relative energy error reached %.3g (%.3g %%, above %g) at rtol = %g, atol = %g: "
                            "the tolerances are too loose to trust the run's numbers: tighten --rtol and --atol, or "
                            "set --energy-tol to stop at a bound", energy_error, 100 * energy_error,

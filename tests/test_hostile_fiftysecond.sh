@@ -116,4 +116,14 @@ cpu_run 120 "$GW" layer-impact --sample s40 --solver cvode --rtol 1e-8 --t-max 0
     ok "control: --solver cvode --rtol 1e-8 and --side-walls both (walls kept) run" ||
     ko "control: cvode --rtol 1e-8 or --side-walls both: $(head -c 300 c3.err d3.err)"
 
+# 4 (found after the pass, class 8) rk4's energy warning named the dt given, not
+# the step the run took: --dt 1e-9 on a column whose contacts need 3.35e-13 s
+# was told "the rk4 step dt = 1e-09 s is too coarse ... lower --dt"
+cpu_run 60 "$GW" chain --n 1000 --solver rk4 --dt 1e-9 --k 1e14 --mass 1e-15 --vimp 1000 --quiet --json \
+    >e4.json 2>e4.err </dev/null
+taken=$(pyenv /usr/bin/python3 -c "import json; print('%g' % json.load(open('e4.json'))['settings']['solver']['dt'])" 2>/dev/null)
+grep -q "the rk4 step dt = ${taken:-none} s is too coarse" e4.err && [ "$taken" != "1e-09" ] &&
+    ok "4 rk4's energy warning names the step taken ($taken s), not the dt given" ||
+    ko "4 rk4's energy warning: step taken ${taken:-?}: $(head -c 300 e4.err)"
+
 test_summary test_hostile_fiftysecond

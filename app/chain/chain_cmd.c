@@ -249,7 +249,7 @@ int gw_cmd_chain(int argc, char **argv)
         if (chain_damping_zero_warnings(&c.params, 0, 1, &w) == GW_OK &&
             chain_damping_small_warning(&c.params, c.run.sp.rtol, &w) == GW_OK &&
             chain_drag_small_warnings(&c.params, c.run.sp.rtol, &w) == GW_OK &&
-            gw_chain_result_warnings(&r, &w) == GW_OK && chain_energy_warning(r.energy_error, &c.run, &w) == GW_OK &&
+            gw_chain_result_warnings(&r, &w) == GW_OK && chain_energy_warning(r.energy_error, r.run_dt, &c.run, &w) == GW_OK &&
             c.out) /* the stored trace stopped at its bound while the run went on */
             (void)chain_trace_cut_warnings(&tr, r.t_end, "--dt-out", &w);
         if (c.out) {

@@ -333,6 +333,13 @@ int layer_crowns_xcorr_locked(const gw_layer_impact_result *r, double *delay, do
     const double dc = r->ring_r[1] - r->ring_r[0];
     if (!(c > 0) || !(dc > 0))
         return 0;
+    /* a speed the resolution rule nulls already is not locked but unresolved
+     * (no warning: a 60-disc pile's default impact, null before, was warned
+     * of as locked at 17.55 m/s) */
+    double cr = c, crerr = cerr;
+    resolved(r, &cr, &crerr);
+    if (isnan(cr))
+        return 0;
     /* the faster peak speed: the wave is at the crown no later than it says */
     const double cp = fmax(r->wave_speed > 0 ? r->wave_speed : 0, r->wave_speed_kin > 0 ? r->wave_speed_kin : 0);
     const double t = r->t_contact_open > 0 && isfinite(r->t_contact_open) ? r->t_contact_open

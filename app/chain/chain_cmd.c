@@ -143,7 +143,7 @@ static void chain_progress_report(void *ctx, double t, double t_expect, double t
  * said nowhere, printing "in [1, 50000000]" alone */
 #define CHAIN_N_HELP                                                                                                  \
     "number of beads, in [1, 50000000] as parsed, and at most 1414 over a whole collision: the column's work, N^2 "   \
-    "times the share of the collision the run covers, is held to 2e6 (a short --t-max runs more beads) [1]"
+    "times the share of the collision the run covers, is held to 2e6 (a short t-max runs more beads) [1]"
 
 int gw_cmd_chain(int argc, char **argv)
 {

@@ -350,7 +350,7 @@ int gw_sweep_case_refused(const gw_sweep_config *cfg, const gw_sweep_model *m, l
         if (cfg->params[i].name && same_key_n(tmp, len, cfg->params[i].name))
             key = cfg->params[i].name;
     long other = -1;
-    if (key && m && cfg->ncases > 1) {
+    if (key && m && cfg->ncases > 1 && rc == GW_EINVAL) { /* (out of memory is no key's fault) */
         /* the cases before k passed; past them, at most 1000 are tried */
         const char *names[2 * GW_SWEEP_MAX_KEYS], *vals[2 * GW_SWEEP_MAX_KEYS];
         void *memo = NULL;

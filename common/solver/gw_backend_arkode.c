@@ -275,6 +275,18 @@ static int ark_first_step(gw_solver *s, ark_impl *a, double tout)
     return a->erk ? ERKStepSetInitStep(a->mem, h0) : ARKStepSetInitStep(a->mem, h0);
 }
 
+/* A root return: the roots found, read from the stepper, into roots. */
+static int ark_root_info(gw_solver *s, ark_impl *a, int *roots)
+{
+    if (a->erk)
+        ERKStepGetRootInfo(a->mem, a->rootinfo);
+    else
+        ARKStepGetRootInfo(a->mem, a->rootinfo);
+    if (roots)
+        memcpy(roots, a->rootinfo, (size_t)s->sys.nroots * sizeof *roots);
+    return GW_ROOT;
+}
+
 /* A return held back by a peek, now given (ark_advance_peek). */
 static int ark_pending(gw_solver *s, ark_impl *a, double *t, double *y, int *roots)
 {
@@ -285,13 +297,7 @@ static int ark_pending(gw_solver *s, ark_impl *a, double *t, double *y, int *roo
     gw_sun_copy_out(a->y, y, s->sys.dim);
     if (!root)
         return GW_OK;
-    if (a->erk)
-        ERKStepGetRootInfo(a->mem, a->rootinfo);
-    else
-        ARKStepGetRootInfo(a->mem, a->rootinfo);
-    if (roots)
-        memcpy(roots, a->rootinfo, (size_t)s->sys.nroots * sizeof *roots);
-    return GW_ROOT;
+    return ark_root_info(s, a, roots);
 }
 
 /* The state at p into a->yp: ARKode's dense output within its last step; a p
@@ -447,13 +453,7 @@ static int ark_advance(gw_solver *s, double tout, double *t, double *y, int *roo
         a->fresh = 0;
     a->root_last = flag == ARK_ROOT_RETURN;
     if (flag == ARK_ROOT_RETURN) {
-        if (a->erk)
-            ERKStepGetRootInfo(a->mem, a->rootinfo);
-        else
-            ARKStepGetRootInfo(a->mem, a->rootinfo);
-        if (roots)
-            memcpy(roots, a->rootinfo, (size_t)s->sys.nroots * sizeof *roots);
-        return GW_ROOT;
+        return ark_root_info(s, a, roots);
     }
     if (flag >= 0)
         return GW_OK;

@@ -27,9 +27,13 @@ int gw_sweep_pairs_check(const char *call, int nk, const char *const *names, con
  * memory: its status, *list unchanged (nothing said). */
 int gw_sweep_check_warnings(const gw_sweep_config *cfg, const gw_sweep_model *m, char **list);
 
-/* gw_sweep_run.c: the warnings of a sweep name its config's keys: "--NAME"
+/* gw_sweep_rows.c: the warnings of a sweep name its config's keys: "--NAME"
  * in list, NAME a key of m (has_key), written NAME, in place. */
 void gw_sweep_warnings_keys(const gw_sweep_model *m, char *list);
+
+/* Append the lines w (a gw_warnings_add list, NULL: none) to *list: GW_OK,
+ * GW_ENOMEM (*list as it was). */
+int gw_sweep_warnings_append(char **list, const char *w);
 
 /* gw_sweep_run.c: case k's check refused it (rc, err->msg naming the key
  * first, "rtol: has no effect with ..."): err becomes "case k: ...", and when

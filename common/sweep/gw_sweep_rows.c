@@ -350,3 +350,16 @@ void gw_sweep_warnings_keys(const gw_sweep_model *m, char *list)
     }
     *out = '\0';
 }
+
+int gw_sweep_warnings_append(char **list, const char *w)
+{
+    if (!w || !*w)
+        return GW_OK;
+    const size_t have = *list ? strlen(*list) : 0;
+    char *grown = realloc(*list, have + strlen(w) + 1);
+    if (!grown)
+        return GW_ENOMEM;
+    strcpy(grown + have, w);
+    *list = grown;
+    return GW_OK;
+}

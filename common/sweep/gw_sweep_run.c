@@ -307,14 +307,7 @@ int gw_sweep_check_warnings(const gw_sweep_config *cfg, const gw_sweep_model *m,
     gw_sweep_checks_end(m, memo);
     if (rc == GW_OK && w) {
         gw_sweep_warnings_keys(m, w);
-        const size_t have = *list ? strlen(*list) : 0;
-        char *grown = realloc(*list, have + strlen(w) + 1);
-        if (grown) {
-            strcpy(grown + have, w);
-            *list = grown;
-        } else {
-            rc = GW_ENOMEM;
-        }
+        rc = gw_sweep_warnings_append(list, w);
     }
     free(w);
     return rc;

@@ -83,16 +83,8 @@ static int table_rows_warnings(const gw_sweep_config *cfg, const gw_sweep_model 
     free(acc);
     free(row);
     gw_sweep_warnings_keys(m, w);
-    if (rc == GW_OK && w) {
-        const size_t have = *list ? strlen(*list) : 0;
-        char *grown = realloc(*list, have + strlen(w) + 1);
-        if (grown) {
-            strcpy(grown + have, w);
-            *list = grown;
-        } else {
-            rc = GW_ENOMEM;
-        }
-    }
+    if (rc == GW_OK)
+        rc = gw_sweep_warnings_append(list, w);
     free(w);
     return rc;
 }

@@ -112,9 +112,10 @@ int gw_chain_collision_run(const gw_chain_setup *s, gw_chain_collision *out, gw_
 int chain_collision_run_progress(const gw_chain_setup *s, gw_chain_collision *out, gw_chain_progress_fn progress,
                                  void *pctx, gw_err *err)
 {
+    if (out) /* emptied on every refusal, a NULL setup's too (docs/library.md) */
+        memset(out, 0, sizeof *out);
     if (!s || !out)
         return gw_err_set(err, GW_EINVAL, "gw_chain_collision_run: %s is NULL", !s ? "setup" : "out");
-    memset(out, 0, sizeof *out);
     gw_chain_resolved res;
     gw_chain *c = NULL;
     gw_chain_trace tr;

@@ -336,9 +336,10 @@ int gw_chain_dispersion_run(const gw_chain_dispersion_setup *s, gw_chain_dispers
 int gw_chain_dispersion_run_progress(const gw_chain_dispersion_setup *s, gw_progress_fn progress, void *pctx,
                                      gw_chain_dispersion_outcome *out, gw_err *err)
 {
+    if (out) /* emptied on every refusal, a NULL setup's too (docs/library.md) */
+        memset(out, 0, sizeof *out);
     if (!s || !out)
         return gw_err_set(err, GW_EINVAL, "gw_chain_dispersion_run: %s is NULL", !s ? "setup" : "out");
-    memset(out, 0, sizeof *out);
     const gw_solver_type *type;
     gw_solver_params sp;
     int rc = gw_param_check(disp_params, s, err);

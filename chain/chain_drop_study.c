@@ -337,9 +337,10 @@ void gw_chain_drop_block_params(gw_chain_params *p)
 int gw_chain_drop_study_run(const gw_chain_drop_setup *s, gw_progress_fn progress, void *pctx,
                             gw_chain_drop_outcome *out, gw_err *err)
 {
+    if (out) /* emptied on every refusal, a NULL setup's too (docs/library.md) */
+        memset(out, 0, sizeof *out);
     if (!s || !out)
         return gw_err_set(err, GW_EINVAL, "gw_chain_drop_study_run: %s is NULL", !s ? "setup" : "out");
-    memset(out, 0, sizeof *out);
     double t0 = gw_clock_ms();
     int rc = gw_param_check(drop_params, s, err);
     if (rc != GW_OK)

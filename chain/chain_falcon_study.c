@@ -517,9 +517,10 @@ int gw_chain_falcon_run_watch(const gw_chain_falcon_setup *s, gw_progress_fn pro
 static int falcon_run(const gw_chain_falcon_setup *s, gw_progress_fn progress, void *pctx, chain_watch *watch,
                       gw_chain_falcon_outcome *out, gw_err *err)
 {
+    if (out) /* emptied on every refusal, a NULL setup's too (docs/library.md) */
+        memset(out, 0, sizeof *out);
     if (!s || !out)
         return gw_err_set(err, GW_EINVAL, "gw_chain_falcon_run: %s is NULL", !s ? "setup" : "out");
-    memset(out, 0, sizeof *out);
     /* the lists' counts summed as longs: vimp.n or heights.n set by hand near
      * INT_MAX overflowed the int sum before the range check refused them */
     const long nvl = (long)s->vimp.n + s->heights.n;

@@ -423,9 +423,10 @@ int gw_chain_wavespeed_run_watch(const gw_chain_wavespeed_setup *s, gw_progress_
 static int ws_run(const gw_chain_wavespeed_setup *s, gw_progress_fn progress, void *pctx, chain_watch *watch,
                   gw_chain_wavespeed_outcome *out, gw_err *err)
 {
+    if (out) /* emptied on every refusal, a NULL setup's too (docs/library.md) */
+        memset(out, 0, sizeof *out);
     if (!s || !out)
         return gw_err_set(err, GW_EINVAL, "gw_chain_wavespeed_run: %s is NULL", !s ? "setup" : "out");
-    memset(out, 0, sizeof *out);
     int rc = chain_study_range_check(ws_params, s, &s->col, s->vimp.n, err);
     if (rc != GW_OK)
         return rc;

@@ -198,9 +198,10 @@ int gw_layer_make_run(const gw_layer_make_setup *s, gw_layer_make_outcome *out, 
 int gw_layer_make_run_progress(const gw_layer_make_setup *s, gw_progress_fn progress, void *pctx,
                                gw_layer_make_outcome *out, gw_err *err)
 {
+    if (out) /* emptied on every refusal, a NULL setup's too (docs/library.md) */
+        memset(out, 0, sizeof *out);
     if (!s || !out)
         return gw_err_set(err, GW_EINVAL, "gw_layer_make_run: %s is NULL", !s ? "setup" : "out");
-    memset(out, 0, sizeof *out);
     /* a study run is a unit of work for its caller (Python, a C program): the
      * cJSON failures of an earlier call in this thread, an out-of-memory error
      * the caller went on from, are not this run's (its sample header is JSON) */

@@ -738,10 +738,12 @@ static int impact_run(const gw_layer_impact_setup *s, gw_progress_fn progress, v
                       void (*part)(void *part_ctx, double x), void *part_ctx, int single,
                       gw_layer_impact_outcome *out, gw_err *err)
 {
+    if (out) { /* emptied on every refusal, a NULL setup's too (docs/library.md) */
+        memset(out, 0, sizeof *out);
+        out->block_index = -1;
+    }
     if (!s || !out)
         return gw_err_set(err, GW_EINVAL, "gw_layer_impact_run: %s is NULL", !s ? "setup" : "out");
-    memset(out, 0, sizeof *out);
-    out->block_index = -1;
     gw_layer_impact_plan plan;
     layer_settling_found found = {.q = NAN}; /* the plan's verdict: the run does not find it again */
     int rc = plan_make(s, &plan, NULL, &found, err);

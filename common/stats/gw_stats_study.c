@@ -308,9 +308,10 @@ static int tables_make(gw_stats_outcome *out)
 
 int gw_stats_run(const gw_stats_setup *s, gw_stats_outcome *out, gw_err *err)
 {
+    if (out) /* emptied on every refusal, a NULL setup's too (docs/library.md) */
+        memset(out, 0, sizeof *out);
     if (!s || !out)
         return gw_err_set(err, GW_EINVAL, "gw_stats_run: %s is NULL", !s ? "setup" : "out");
-    memset(out, 0, sizeof *out);
     int rc = gw_stats_analyse(s, &out->a, err);
     if (rc == GW_OK && tables_make(out) != GW_OK)
         rc = gw_err_set(err, GW_ENOMEM, "%s: out of memory", out->a.input);

@@ -35,7 +35,7 @@ installed module (cmake --install), or at GRANWAVE_LIB.
 """
 import numpy as _np
 
-from . import _core, _grid, _sweep
+from . import _checks, _core, _grid, _sweep
 from ._core import (GranwaveError, GranwaveIOError, GranwaveRunError, GranwaveUnsupported,
                     GranwaveValueError, GranwaveWarning, Result)
 from ._lib import lib as _clib
@@ -48,6 +48,7 @@ for _c in (GranwaveError, GranwaveIOError, GranwaveRunError, GranwaveUnsupported
 
 __all__ = ["version", "version_info", "chain", "falcon", "wavespeed", "softwall", "dispersion", "drop",
            "layer_make", "layer_impact", "layer_stats", "sweep", "sweep_n", "params", "library_path",
+           "layer_impact_check", "layer_make_check", "sweep_case_check",
            "Result", "GranwaveError", "GranwaveValueError", "GranwaveIOError", "GranwaveRunError",
            "GranwaveUnsupported", "GranwaveWarning"]
 
@@ -208,6 +209,37 @@ def layer_stats(input=None, **kwargs):
         if t in r:
             r[t] = _Columns(r[t], before)
     return r
+
+
+def layer_impact_check(**kwargs):
+    """What layer_impact(**kwargs) refuses before it runs, without running
+    (gw_layer_impact_setup_check): the keywords, the sample read and checked
+    (gw_layer_impact_check's form and limits) and the impact resolved against
+    it under the given material (gw_layer_impact_check_with's side walls, the
+    pile at rest and its recorded settling, the gap, the step). None when the
+    run would start; else raises what layer_impact raises, with its text (the
+    library's message, inputs named by their keywords). Nothing is written."""
+    _checks.layer_impact_check(_study("layer-impact"), kwargs)
+
+
+def layer_make_check(**kwargs):
+    """What layer_make(**kwargs) refuses before it pluviates, without running
+    (gw_layer_make_plan): the keywords, the rules between them, the material,
+    and out tried as a sample file to write (never written). None when the run
+    would start; else raises what layer_make raises, with its text."""
+    _checks.layer_make_check(_study("layer-make"), kwargs)
+
+
+def sweep_case_check(model="layer", **params):
+    """One case of a sweep model ("layer" or "chain"), each keyword one value
+    as a sweep's grid or params give it, through the model's check
+    (gw_sweep_case_check), as a sweep's check pass takes each case before any
+    case runs: for the layer model the setup's check (layer_impact_check's)
+    and the impact point's placement (point, points, spacing). None when the
+    case passes; else raises what sweep() raises for that case, with its text.
+    The pass's refusals of the config as a whole (a chain key of no effect in
+    every case) are sweep()'s, not one case's."""
+    _checks.sweep_case_check(model, params)
 
 
 def falcon(*, progress=None, **kwargs):
@@ -398,6 +430,8 @@ for _f, _name, _pos, _prog in ((chain, "chain", (), False), (falcon, "falcon", (
                                (layer_make, "layer-make", (), True), (layer_impact, "layer-impact", (), True),
                                (layer_stats, "layer-stats", ("input",), False)):
     _f.__signature__ = _study(_name).signature(_pos, _prog)
+layer_impact_check.__signature__ = _study("layer-impact").signature()
+layer_make_check.__signature__ = _study("layer-make").signature()
 layer_stats.__doc__ = _study("layer-stats").doc(
     "Statistics of a layer sweep table (OUT/results.csv of `granwave sweep` with model =\n"
     "layer; Bourrier et al. 2008, physics.md 2.3, 2.5), as `granwave layer-stats INPUT`:\n"

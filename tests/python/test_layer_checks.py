@@ -1,0 +1,234 @@
+"""The layer's checks from Python (session 46): granwave.layer_impact_check
+(gw_layer_impact_setup_check: the sample's form and limits of
+gw_layer_impact_check, the side walls under the run's material of
+gw_layer_impact_check_with, the rest, settled, gap and step checks),
+granwave.layer_make_check (gw_layer_make_plan) and granwave.sweep_case_check
+(the sweep model's gw_sweep_case_check). Before, Python bound none of them: a
+caller learnt of a refusal only by running.
+
+Each refusal is compared three ways on the same inputs: the check raises what
+the run raises (the same class, the same text), and that text is the
+program's refusal (exit 2, one line "granwave CMD --FLAG: MSG" or "granwave
+CMD: MSG"), the library's MSG byte for byte with the inputs named by their
+keywords (keyword_text: the program's --t-max is Python's t_max). An input
+that passes returns None, runs nothing and writes nothing.
+"""
+import inspect
+import math
+import subprocess
+from pathlib import Path
+
+import pytest
+
+import granwave
+from granwave import _core
+
+REPO = Path(__file__).resolve().parents[2]
+SAMPLE = str(REPO / "data" / "measured" / "restitution_full" / "sample.txt")
+
+
+def _flags(kwargs):
+    args = []
+    for k, v in kwargs.items():
+        if v is True:
+            args.append("--" + k.replace("_", "-"))
+        else:
+            args += ["--" + k.replace("_", "-"), str(v)]
+    return args
+
+
+def _program_message(program, cmd, args):
+    """The library's message of the program's refusal: exit 2, one line on
+    stderr, nothing on stdout."""
+    r = subprocess.run([program, cmd, *args], capture_output=True, text=True, timeout=60)
+    assert r.returncode == 2, (r.returncode, r.stderr)
+    assert r.stdout == "" and r.stderr.count("\n") == 1, r.stderr
+    line = r.stderr[:-1]
+    head = "granwave " + cmd
+    assert line.startswith(head), line
+    rest = line[len(head):]
+    if rest.startswith(" --"):  # "granwave CMD --NAME: reason": the library's "NAME: reason"
+        return rest[3:]
+    assert rest.startswith(": "), line
+    return rest[2:]
+
+
+def _expected(study, msg, kwargs):
+    st = granwave._study(study)
+    return f"{st.func}: {_core.keyword_text(msg, st.names, _core._texts(kwargs.values()))}"
+
+
+def _raised(f, **kwargs):
+    with pytest.raises(granwave.GranwaveError) as e:
+        f(**kwargs)
+    return e.value
+
+
+@pytest.fixture(scope="module")
+def row(tmp_path_factory):
+    """5 discs in a row on the floor pressed between the walls with twice the
+    row's weight (test_layer_side_walls.sh, 7): run with both walls, refused
+    with side_walls left (the right wall pushes it with 2 of its weight)."""
+    G, nu, rho, g, r, n = 40e9, 0.25, 2650.0, 9.81, 0.1, 5
+    kn, mg = 2 * math.sqrt(2 * r) * G / (3 * (1 - nu)), rho * math.pi * r * r * g
+    uf, uw = (mg / kn) ** (2 / 3), (2 * n * mg / kn) ** (2 / 3)
+    x = [r - uw + i * (2 * r - uw) for i in range(n)]
+    path = tmp_path_factory.mktemp("checks") / "row.txt"
+    with open(path, "w") as f:
+        f.write("granwave-layer-sample 1\n# units: metres; lines after 'n' are: x y r\n")
+        f.write(f"width {x[-1] + r - uw!r}\nrm {r!r}\nvolume_ratio 1\nseed 0\nmass_law disc\nn {n}\n")
+        for xi in x:
+            f.write(f"{xi!r} {r - uf!r} {r!r}\n")
+    return str(path)
+
+
+@pytest.fixture(scope="module")
+def overlapping(tmp_path_factory):
+    """Two discs at one place: the sample's form check (the reader) refuses it."""
+    path = tmp_path_factory.mktemp("checks") / "twice.txt"
+    path.write_text("granwave-layer-sample 1\nwidth 2\nrm 0.1\nvolume_ratio 1\nseed 0\nmass_law disc\nn 2\n"
+                    "0.5 0.1 0.1\n0.5 0.1 0.1\n")
+    return str(path)
+
+
+IMPACT_REFUSALS = [
+    {"gap": 1},                                  # the fall changes the normal speed by 2.4 %
+    {"vi": 0.001},                               # too slow for the default gap
+    {"alpha": 60, "gap": 0.5},                   # the fall at an incidence
+    {"t_max": 1e-9},                             # ends before the block reaches the layer
+    {"rtol": 1e-6},                              # no effect under verlet
+    {"solver": "cvode", "dt": 1e-6},             # no effect under cvode
+    {"density": 100},                            # the pile not at rest under this material
+    {"mass_law": "sphere"},                      # nor under this mass law
+    {"clump_mass": "union"},                     # no clumps in the sample
+    {"side_walls": "left", "remove_walls": True},
+    {"x": 1e3},                                  # the block outside the box
+    {"rb_rm": 1e3},                              # wider than the box
+    {"gravity": 1e300},                          # the row's range
+]
+
+
+@pytest.mark.parametrize("kwargs", IMPACT_REFUSALS, ids=lambda k: ",".join(k))
+def test_layer_impact_check_refuses_as_the_run_and_the_program(program, kwargs):
+    kw = dict(sample=SAMPLE, **kwargs)
+    checked = _raised(granwave.layer_impact_check, **kw)
+    ran = _raised(granwave.layer_impact, **kw)
+    assert type(checked) is type(ran) and checked.status == ran.status
+    assert str(checked) == str(ran)
+    assert str(checked) == _expected("layer-impact", _program_message(program, "layer-impact", _flags(kw)), kw)
+
+
+def test_layer_impact_check_with_the_runs_material(program, row):
+    # gw_layer_impact_check_with's side-walls rule, under the setup's material:
+    # both walls pass, the right wall taken away is refused naming its push
+    assert granwave.layer_impact_check(sample=row) is None
+    kw = {"sample": row, "side_walls": "left"}
+    checked = _raised(granwave.layer_impact_check, **kw)
+    assert isinstance(checked, granwave.GranwaveValueError)
+    assert str(checked).startswith("layer_impact: side_walls: left: the sample's pile leans on its right wall "
+                                   "(at t = 0 it pushes the pile with 2 of its weight"), str(checked)
+    assert str(checked) == str(_raised(granwave.layer_impact, **kw))
+    assert str(checked) == _expected("layer-impact", _program_message(program, "layer-impact", _flags(kw)), kw)
+
+
+def test_layer_impact_check_sample_form_and_file(program, overlapping, tmp_path):
+    # the sample's form (gw_layer_impact_check's, the reader's): two discs at one place
+    kw = {"sample": overlapping}
+    checked = _raised(granwave.layer_impact_check, **kw)
+    assert isinstance(checked, granwave.GranwaveValueError) and checked.status == _core.GW_EFORMAT
+    assert str(checked) == str(_raised(granwave.layer_impact, **kw))
+    assert str(checked) == _expected("layer-impact", _program_message(program, "layer-impact", _flags(kw)), kw)
+    # a file that is not there: an OSError naming it
+    kw = {"sample": str(tmp_path / "none.txt")}
+    checked = _raised(granwave.layer_impact_check, **kw)
+    assert isinstance(checked, granwave.GranwaveIOError) and str(tmp_path / "none.txt") in str(checked)
+    assert str(checked) == str(_raised(granwave.layer_impact, **kw))
+    assert str(checked) == _expected("layer-impact", _program_message(program, "layer-impact", _flags(kw)), kw)
+
+
+def test_layer_impact_check_passes_and_keywords():
+    assert granwave.layer_impact_check(sample=SAMPLE) is None
+    assert granwave.layer_impact_check(sample=SAMPLE, solver="cvode", rtol=1e-6) is None
+    with pytest.raises(TypeError, match="unexpected keyword argument 'vimp'"):
+        granwave.layer_impact_check(sample=SAMPLE, vimp=1)
+    with pytest.raises(granwave.GranwaveValueError, match=r"^layer_impact: vi: -1 is outside"):
+        granwave.layer_impact_check(sample=SAMPLE, vi=-1)
+    # the same keywords as layer_impact (but progress)
+    run = [p for p in inspect.signature(granwave.layer_impact).parameters if p != "progress"]
+    assert list(inspect.signature(granwave.layer_impact_check).parameters) == run
+    assert {"layer_impact_check", "layer_make_check", "sweep_case_check"} <= set(granwave.__all__)
+
+
+MAKE_REFUSALS = [
+    {"gravity": 0},
+    {"aspect_max": 2},
+    {"clump_mass": "sum"},
+    {"clumps": True, "aspect_max": 1, "clump_mass": "union"},
+    {"n": 0},
+    {"modulus_factor": 1e-12},
+]
+
+
+@pytest.mark.parametrize("kwargs", MAKE_REFUSALS, ids=lambda k: ",".join(k))
+def test_layer_make_check_refuses_as_the_run_and_the_program(program, tmp_path, kwargs):
+    out = tmp_path / "m.txt"
+    kw = dict(out=str(out), **kwargs)
+    checked = _raised(granwave.layer_make_check, **kw)
+    ran = _raised(granwave.layer_make, **kw)
+    assert type(checked) is type(ran) and str(checked) == str(ran)
+    assert str(checked) == _expected("layer-make", _program_message(program, "layer-make", _flags(kw)), kw)
+    assert not out.exists()
+
+
+def test_layer_make_check_out(program, tmp_path):
+    for out in (tmp_path / "no" / "a.txt", tmp_path):  # a missing directory, a directory
+        kw = {"out": str(out), "n": 60}
+        checked = _raised(granwave.layer_make_check, **kw)
+        assert isinstance(checked, granwave.GranwaveValueError)
+        assert str(checked) == str(_raised(granwave.layer_make, **kw))
+        assert str(checked) == _expected("layer-make", _program_message(program, "layer-make", _flags(kw)), kw)
+    # a run that would start: None, and nothing pluviated or written
+    out = tmp_path / "a.txt"
+    assert granwave.layer_make_check(n=60, width_rm=16, out=str(out)) is None
+    assert not out.exists() and granwave.layer_make_check() is None
+
+
+SWEEP_REFUSALS = [
+    {"point": 5, "points": 2},
+    {"vi": 0.001},
+    {"gap": 1},
+    {"rtol": 1e-6},
+]
+
+
+@pytest.mark.parametrize("kwargs", SWEEP_REFUSALS, ids=lambda k: ",".join(k))
+def test_sweep_case_check_refuses_as_the_sweep_and_the_program(program, tmp_path, kwargs):
+    kw = dict(sample=SAMPLE, **kwargs)
+    checked = _raised(granwave.sweep_case_check, model="layer", **kw)
+    assert isinstance(checked, granwave.GranwaveValueError)
+    grid = {"vi": [kw.pop("vi", 20)]}
+    ran = _raised(granwave.sweep, model="layer", grid=grid, **kw)
+    assert str(ran) == str(checked).replace("sweep: ", "sweep: case 0: ", 1)
+    cfg = tmp_path / "c.ini"
+    cfg.write_text("[sweep]\nmodel = layer\nout = " + str(tmp_path / "o") + "\n[grid]\n"
+                   f"vi = {grid['vi'][0]}\n[params]\n" + "".join(f"{k.replace('_', '-')} = {v}\n"
+                                                               for k, v in kw.items()))
+    r = subprocess.run([program, "sweep", str(cfg), "--check"], capture_output=True, text=True, timeout=60)
+    assert r.returncode == 2 and r.stderr.count("\n") == 1, r.stderr
+    prefix = f"granwave sweep: {cfg}: case 0: "
+    assert r.stderr.startswith(prefix), r.stderr
+    msg = r.stderr[len(prefix):-1]
+    names = granwave._sweep._sweep_names("layer", granwave._sweep.sweep_models()["layer"])
+    assert str(checked) == "sweep: " + _core.keyword_text(msg, names, _core._texts(kw.values()))
+    assert not (tmp_path / "o").exists()
+
+
+def test_sweep_case_check_passes_and_keywords():
+    assert granwave.sweep_case_check("layer", sample=SAMPLE, vi=20, point=1, points=2) is None
+    assert granwave.sweep_case_check("chain", n=3, vimp=0.3) is None
+    with pytest.raises(granwave.GranwaveValueError, match=r"^sweep: vimp: 0 is outside"):
+        granwave.sweep_case_check("chain", n=3, vimp=0)
+    with pytest.raises(TypeError, match="unexpected keyword argument 'vimp' .not a parameter of model layer"):
+        granwave.sweep_case_check("layer", sample=SAMPLE, vimp=1)
+    with pytest.raises(granwave.GranwaveValueError, match="unknown model 'lay'"):
+        granwave.sweep_case_check("lay", sample=SAMPLE)

@@ -1001,10 +1001,12 @@ int layer_sample_file_check(const char *path, unsigned long long *h, gw_err *err
 
 int gw_layer_sample_read(const char *path, gw_layer_sample *s, gw_err *err)
 {
+    if (s) { /* emptied on every refusal, a NULL path's too (docs/library.md) */
+        memset(s, 0, sizeof *s);
+        s->mass_law = GW_LAYER_MASS_DISC;
+    }
     if (!s || !path)
         return gw_err_set(err, GW_EINVAL, "gw_layer_sample_read: %s is NULL", !s ? "s" : "path");
-    memset(s, 0, sizeof *s);
-    s->mass_law = GW_LAYER_MASS_DISC;
     text_in t = {.path = path, .hash = GW_FNV1A64_INIT};
     int rc, sb = -1, h5 = 0;
     int orc = sample_open(path, &t.fp, t.pre, &t.npre, &h5, &sb, &t.size, err);

@@ -621,6 +621,44 @@ static int threads_agree(void)
     return 0;
 }
 
+/* The readers empty their result on a NULL argument as on any other refusal
+ * (here an empty file name): until session 46 gw_layer_sample_read,
+ * gw_stats_table_read and gw_sweep_config_read(_string) left it as it was
+ * given, and freeing it freed what its bytes pointed at. */
+static int readers_null_empty(void)
+{
+    gw_err e = {{0}};
+    gw_layer_sample s, sref;
+    memset(&s, 0x5a, sizeof s);
+    memset(&sref, 0x5a, sizeof sref);
+    EXPECT(refused(gw_layer_sample_read(NULL, &s, &e), &e, "path is NULL"));
+    EXPECT(gw_layer_sample_read("", &sref, NULL) != GW_OK);
+    EXPECT(memcmp(&s, &sref, sizeof s) == 0);
+    gw_layer_sample_free(&s);
+    gw_stats_table t, tref;
+    memset(&t, 0x5a, sizeof t);
+    memset(&tref, 0x5a, sizeof tref);
+    EXPECT(refused(gw_stats_table_read(NULL, &t, &e), &e, "path is NULL"));
+    EXPECT(gw_stats_table_read("", &tref, NULL) != GW_OK);
+    EXPECT(memcmp(&t, &tref, sizeof t) == 0);
+    gw_stats_table_free(&t);
+    int nm = 0;
+    const gw_sweep_model *const *models = gw_sweep_models(&nm);
+    gw_sweep_config c, cref; /* the empty config: what the reader zeroes first */
+    const gw_sweep_model *m = (const gw_sweep_model *)&m;
+    memset(&c, 0x5a, sizeof c);
+    memset(&cref, 0, sizeof cref);
+    EXPECT(refused(gw_sweep_config_read_string(NULL, "x", models, nm, &c, &m, &e), &e, "text is NULL"));
+    EXPECT(memcmp(&c, &cref, sizeof c) == 0 && m == NULL);
+    gw_sweep_config_free(&c);
+    memset(&c, 0x5a, sizeof c);
+    m = (const gw_sweep_model *)&m;
+    EXPECT(refused(gw_sweep_config_read(NULL, models, nm, &c, &m, &e), &e, "path is NULL"));
+    EXPECT(memcmp(&c, &cref, sizeof c) == 0 && m == NULL);
+    gw_sweep_config_free(&c);
+    return 0;
+}
+
 int main(void)
 {
     static const struct {
@@ -646,6 +684,7 @@ int main(void)
     in_child("gw_chain_create/collide/sweep with NULL", chain_model_nulls);
     in_child("gw_cases_run hostile sizes", pool_hostile);
     in_child("utilities, readers and frees with NULL", utilities_nulls);
+    in_child("readers empty their result on a NULL argument", readers_null_empty);
     in_child("runs freed twice, reused, re-entered, stopped", runs_reused);
     in_child("16 threads", threads_agree);
     printf("%d of %d checks failed\n", nfail, ncases);

@@ -679,10 +679,12 @@ int gw_stats_table_read(const char *path, gw_stats_table *t, gw_err *err)
 
 int gw_stats_table_read_warned(const char *path, gw_stats_table *t, char **warnings, gw_err *err)
 {
+    if (t) { /* emptied on every refusal, a NULL path's too (docs/library.md) */
+        memset(t, 0, sizeof *t);
+        t->sweep_rows = t->sweep_cases = -1;
+    }
     if (!t || !path)
         return gw_err_set(err, GW_EINVAL, "gw_stats_table_read: %s is NULL", !t ? "t" : "path");
-    memset(t, 0, sizeof *t);
-    t->sweep_rows = t->sweep_cases = -1;
     char *buf = NULL;
     size_t len = 0;
     /* a regular file only (a FIFO or device is refused, never read), bounded */

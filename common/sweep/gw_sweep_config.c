@@ -655,11 +655,13 @@ static int lines_fit(const char *text, const char *name, int whole, parse_ctx *p
 int gw_sweep_config_read(const char *path, const gw_sweep_model *const *models, int nmodels,
                          gw_sweep_config *cfg, const gw_sweep_model **model, gw_err *err)
 {
+    if (cfg) /* emptied on every refusal, a NULL argument's too (docs/library.md) */
+        memset(cfg, 0, sizeof *cfg);
+    if (model)
+        *model = NULL;
     if (!cfg || !model || !path || !models)
         return gw_err_set(err, GW_EINVAL, "gw_sweep_config_read: %s is NULL",
                           !cfg ? "cfg" : !model ? "model" : !path ? "path" : "models");
-    memset(cfg, 0, sizeof *cfg);
-    *model = NULL;
     parse_ctx pc = {cfg, models, nmodels, "", 0, 0, NULL, 0, 0, NULL, 0, NULL};
     char *text = NULL;
     size_t len = 0;
@@ -706,11 +708,13 @@ int gw_sweep_config_read(const char *path, const gw_sweep_model *const *models, 
 int gw_sweep_config_read_string(const char *text, const char *name, const gw_sweep_model *const *models,
                                 int nmodels, gw_sweep_config *cfg, const gw_sweep_model **model, gw_err *err)
 {
+    if (cfg) /* emptied on every refusal, a NULL argument's too (docs/library.md) */
+        memset(cfg, 0, sizeof *cfg);
+    if (model)
+        *model = NULL;
     if (!cfg || !model || !text || !models)
         return gw_err_set(err, GW_EINVAL, "gw_sweep_config_read_string: %s is NULL",
                           !cfg ? "cfg" : !model ? "model" : !text ? "text" : "models");
-    memset(cfg, 0, sizeof *cfg);
-    *model = NULL;
     /* the bound of a config file (gw_sweep_config_read), for a config given as text too */
     size_t len = strlen(text);
     if (len > (size_t)GW_SWEEP_CONFIG_MAX)

@@ -11,7 +11,9 @@ the run raises (the same class, the same text), and that text is the
 program's refusal (exit 2, one line "granwave CMD --FLAG: MSG" or "granwave
 CMD: MSG"), the library's MSG byte for byte with the inputs named by their
 keywords (keyword_text: the program's --t-max is Python's t_max). An input
-that passes returns None, runs nothing and writes nothing.
+that passes returns None, runs nothing and writes nothing. Last, the rows a
+setup's _init leaves "not given" are those docs/library.md's table states,
+with the values they hold (layer-impact's rtol and atol NaN, side_walls -1).
 """
 import inspect
 import math
@@ -232,3 +234,87 @@ def test_sweep_case_check_passes_and_keywords():
         granwave.sweep_case_check("layer", sample=SAMPLE, vimp=1)
     with pytest.raises(granwave.GranwaveValueError, match="unknown model 'lay'"):
         granwave.sweep_case_check("lay", sample=SAMPLE)
+
+
+# ---- docs/library.md's "Not given after _init" table against the setups ----
+
+_SETUPS = {"chain": "gw_chain_setup", "falcon": "gw_chain_falcon_setup", "wavespeed": "gw_chain_wavespeed_setup",
+           "softwall": "gw_chain_softwall_setup", "dispersion": "gw_chain_dispersion_setup",
+           "drop": "gw_chain_drop_setup", "layer-impact": "gw_layer_impact_setup",
+           "layer-make": "gw_layer_make_setup", "layer-stats": "gw_stats_setup"}
+_COLUMN = {"chain", "falcon", "wavespeed", "softwall", "drop"}  # their column rows: gw_chain_setup's
+_LONG_MIN = -(2 ** 63)
+
+
+def _not_given_doc():
+    """{setup struct: {field: the value the page states}} from the table."""
+    import re
+    text = (REPO / "docs" / "library.md").read_text()
+    start = text.index("**Not given after `_init`.**")
+    table, setup = {}, None
+    for line in text[start:].split("\n")[1:]:
+        if line.startswith("| setup") or line.startswith("|---"):
+            continue
+        if not line.startswith("|"):
+            if table:
+                break
+            continue
+        cells = [c.strip() for c in line.strip("|").split("|")]
+        if cells[0]:
+            setup = re.match(r"`(\w+)`", cells[0]).group(1)
+        for names, value in re.findall(r"((?:`\w+`(?:, )?)+) \(([^)]*)\)", cells[1]):
+            for name in re.findall(r"`(\w+)`", names):
+                table.setdefault(setup, {})[name.split(".")[-1]] = value
+    return table
+
+
+def _raw(row, buf):
+    """A row's value in a setup buffer as the page states it."""
+    import ctypes
+    at = ctypes.addressof(buf) + row.offset
+    t = row.type
+    if t in (0, 11):  # double, count
+        v = ctypes.c_double.from_address(at).value
+        return "NaN" if math.isnan(v) else repr(v)
+    if t in (1, 3, 4):  # int, flag, choice
+        return str(ctypes.c_int.from_address(at).value)
+    if t == 2:
+        v = ctypes.c_long.from_address(at).value
+        return "`GW_PARAM_UNSET_LONG`" if v == _LONG_MIN else str(v)
+    if t == 5:
+        return "NULL" if not ctypes.c_void_p.from_address(at).value else "text"
+    if t == 6:  # gw_param_list {double *v; int n;}
+        return "empty" if ctypes.c_int.from_address(at + ctypes.sizeof(ctypes.c_void_p)).value == 0 else "list"
+    return "?"
+
+
+def test_not_given_rows_are_documented():
+    # every row a setup's _init leaves not given (gw_param_format ""), with the
+    # value it holds, is stated in the table (layer-impact's rtol, atol NaN and
+    # side_walls -1 were not); and the table states no other row
+    import ctypes
+    from granwave._lib import lib
+    lib.gw_param_format.restype = ctypes.c_int
+    lib.gw_param_format.argtypes = [ctypes.c_void_p, ctypes.c_void_p, ctypes.c_char_p, ctypes.c_size_t]
+    doc = _not_given_doc()
+    assert doc.get("gw_layer_impact_setup", {}).get("rtol") == "NaN"
+    assert doc["gw_layer_impact_setup"].get("side_walls") == "-1"
+    stated = set()
+    for study, setup in _SETUPS.items():
+        st = granwave._study(study)
+        buf = st.setup({})
+        try:
+            for i, row in enumerate(st.params):
+                out = ctypes.create_string_buffer(256)
+                lib.gw_param_format(ctypes.addressof(st.table[i]), buf, out, 256)
+                if out.value:
+                    continue
+                field = row.name.replace("-", "_")
+                where = setup if field in doc.get(setup, {}) or study not in _COLUMN else "gw_chain_setup"
+                assert field in doc.get(where, {}), f"{study}: {field} not given after init, not in the table"
+                assert doc[where][field] == _raw(row, buf), (study, field, doc[where][field], _raw(row, buf))
+                stated.add((where, field))
+        finally:
+            st.st.clear(buf)
+    every = {(s, f) for s, rows in doc.items() for f in rows}
+    assert every <= stated, f"stated but given after init: {sorted(every - stated)}"

@@ -684,6 +684,16 @@ static int crowns_sampling_warning(const gw_layer_impact_params *ip, const gw_la
                            "(the default is 2e-05 s)", dt, dc, names, (which & (which - 1)) ? "are" : "is");
 }
 
+unsigned layer_crowns_locked(const gw_layer_impact_result *r)
+{
+    double delay, ref, cp[2];
+    unsigned which = layer_crowns_peaks_locked(r, cp, &ref) &
+                     ((isnan(r->wave_speed) ? 1u : 0u) | (isnan(r->wave_speed_kin) ? 2u : 0u));
+    if (isnan(r->wave_speed_xcorr) && layer_crowns_xcorr_locked(r, &delay, &ref))
+        which |= 4u;
+    return which;
+}
+
 /* The crowns as set against the sample: the wave speeds fit the peak times
  * of rings 1 .. nrings - 1 and need 3 of them (layer_crowns.c), so crowns too
  * narrow to reach a particle (--ring-width 1e-9: every speed null, "0 rings"),

@@ -14,6 +14,8 @@
 #    times) while the kinetic peaks read 465 m/s and the cross-correlation
 #    505: the strain's alone null, the kinetic speed kept.
 #  3 Python's layer_impact: the same run's speeds None (NaN) and a warning.
+#  The program's text said "unresolved" of them, as of a speed the sampling
+#  left null: now "undecided, the pile's motion".
 #  Control: the pile's default impact keeps 98.06 and 371.76 m/s (4.2 and 1.1
 #  times its contact) to 6 decimals, with no such warning.
 # Checks that fail on the code before: see docs/tests.md.
@@ -52,6 +54,13 @@ PYEOF
 grep -q "^granwave layer-impact: warning: crowns: the strain peaks' speed 23.75 m/s crosses a crown of 0.65 m" \
     v40.err && ok "the program's stderr names the strain peaks' speed and the crown" ||
     ko "stderr: $(head -c 400 v40.err)"
+
+# the program's text: "undecided", where it said "unresolved" as of a speed
+# the sampling left null
+"$GW" layer-impact --sample s40 --vi 40 "${lock[@]}" >v40.txt 2>/dev/null
+grep -q "^  wave speed undecided, the pile's motion (strain peaks, 11 rings), undecided, the pile's motion (kinetic)$" \
+    v40.txt && ok "the program's text says both peak speeds undecided (the pile's motion), not unresolved" ||
+    ko "text: $(grep 'wave speed' v40.txt | head -2)"
 
 # --- 2 the strain peaks alone ---
 cpu_run 120 "$GW" layer-impact --sample s40 --quiet --json --vi 5 "${lock[@]}" >v5.json 2>v5.err

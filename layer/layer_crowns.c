@@ -265,12 +265,27 @@ static int crowns_xcorr(gw_layer_impact_result *r, double thr, int nw, double **
  * (2.2 samples a ring), then 483 at 1e-3 (1.1), 102 at 1e-2 and -4.7 m/s at
  * 0.05 s, reported as speeds; at 1e-2 s the cross-correlation gave
  * 13 +- 8.6 m/s from 4 of 10 ring pairs. */
-static void resolved(const gw_layer_impact_result *r, double *c, double *cerr)
+static void resolved_at(const gw_layer_impact_result *r, double dt, double *c, double *cerr)
 {
-    const double dt = r->ns >= 2 ? r->t[1] - r->t[0] : NAN;
     const double dc = r->nrings >= 2 ? r->ring_r[1] - r->ring_r[0] : NAN;
     if (!(*c > 0) || !(dc / *c >= 2 * dt) || !(*cerr < 0.5 * *c))
         *c = *cerr = NAN;
+}
+
+/* resolved_at over the interval of r's series (r->t: the one being read) */
+static void resolved(const gw_layer_impact_result *r, double *c, double *cerr)
+{
+    resolved_at(r, r->ns >= 2 ? r->t[1] - r->t[0] : NAN, c, cerr);
+}
+
+/* The interval of the series the run's crowns were read from (layer_crowns_series:
+ * the checks' when --dt-out is coarser), for the lock rules asked after the run,
+ * when r->t is the written samples again: a peak speed of 38.6 m/s nulled as
+ * locked at the checks' 2e-5 s was found unresolved at --dt-out 1e-2 (0.65 m in
+ * 0.017 s, under two samples) and not warned of. */
+static double crowns_dt(const gw_layer_impact_result *r)
+{
+    return r->peak_strain_t[3 * (size_t)r->nrings];
 }
 
 int layer_result_shape(const gw_layer_impact_result *r, int whole, gw_err *err)
@@ -322,7 +337,7 @@ static int first_impact_samples(const gw_layer_impact_result *r)
  * 1.73 ms). The threshold checked over a sweep of 29 impacts (42 runs,
  * gravity 9.81, 1 and 0.5, --vi 5 to 60, three piles): the locked pairs at
  * 23.2 to 103 times the contact, the kept at 0.47 to 0.76 (layer_impl.h). */
-int layer_crowns_xcorr_locked(const gw_layer_impact_result *r, double *delay, double *ref)
+static int xcorr_locked_at(const gw_layer_impact_result *r, double dt, double *delay, double *ref)
 {
     *delay = *ref = NAN;
     if (!r || !r->xcorr_delay || r->nrings < 3 || !r->ring_r)
@@ -341,7 +356,7 @@ int layer_crowns_xcorr_locked(const gw_layer_impact_result *r, double *delay, do
      * (no warning: a 60-disc pile's default impact, null before, was warned
      * of as locked at 17.55 m/s) */
     double cr = c, crerr = cerr;
-    resolved(r, &cr, &crerr);
+    resolved_at(r, dt, &cr, &crerr);
     if (isnan(cr))
         return 0;
     /* the faster peak speed: the wave is at the crown no later than it says */
@@ -352,6 +367,12 @@ int layer_crowns_xcorr_locked(const gw_layer_impact_result *r, double *delay, do
         return 0;
     *delay = dc / c, *ref = t;
     return dc / c > LAYER_XCORR_LOCK * t;
+}
+
+int layer_crowns_xcorr_locked(const gw_layer_impact_result *r, double *delay, double *ref)
+{
+    *delay = *ref = NAN;
+    return r && r->peak_strain_t && r->nrings >= 3 && xcorr_locked_at(r, crowns_dt(r), delay, ref);
 }
 
 /* Bits 1, 2 (strain peaks, kinetic peaks) when that peak speed, as fit and
@@ -365,7 +386,7 @@ int layer_crowns_xcorr_locked(const gw_layer_impact_result *r, double *delay, do
  * and 0.044 s, 20 and 32 times its first contact (open at 1.36 ms), reported
  * without a word; the default impact's strain peaks cross a crown in 0.6 of
  * its first contact. */
-unsigned layer_crowns_peaks_locked(const gw_layer_impact_result *r, double c[2], double *ref)
+static unsigned peaks_locked_at(const gw_layer_impact_result *r, double dt, double c[2], double *ref)
 {
     c[0] = c[1] = *ref = NAN;
     if (!r || r->nrings < 3 || !r->ring_r || !r->peak_strain_t || !r->peak_kin_t)
@@ -378,13 +399,19 @@ unsigned layer_crowns_peaks_locked(const gw_layer_impact_result *r, double c[2],
         double v, err;
         int m;
         fit(r, k ? r->peak_kin_t : r->peak_strain_t, &v, &err, &m);
-        resolved(r, &v, &err);
+        resolved_at(r, dt, &v, &err);
         if (v > 0 && dc / v > LAYER_XCORR_LOCK * t)
             which |= 1u << k, c[k] = v;
     }
     if (which)
         *ref = t;
     return which;
+}
+
+unsigned layer_crowns_peaks_locked(const gw_layer_impact_result *r, double c[2], double *ref)
+{
+    c[0] = c[1] = *ref = NAN;
+    return r && r->peak_strain_t && r->nrings >= 3 ? peaks_locked_at(r, crowns_dt(r), c, ref) : 0;
 }
 
 /* 1 when the arrivals tp of rings 1 .. nrings - 1 (3 or more) show a wave
@@ -487,10 +514,11 @@ static int crowns_of(gw_layer_impact_result *r, double **donor, int rows)
     resolved(r, &r->wave_speed_kin, &r->wave_speed_kin_err);
     resolved(r, &r->wave_speed_xcorr, &r->wave_speed_xcorr_err);
     double delay, ref;
-    if (layer_crowns_xcorr_locked(r, &delay, &ref))
+    const double dt = r->ns >= 2 ? r->t[1] - r->t[0] : NAN;
+    if (xcorr_locked_at(r, dt, &delay, &ref))
         r->wave_speed_xcorr = r->wave_speed_xcorr_err = NAN; /* undecided: layer_crowns_warning */
     double cp[2];
-    const unsigned peaks = layer_crowns_peaks_locked(r, cp, &ref);
+    const unsigned peaks = peaks_locked_at(r, dt, cp, &ref);
     if (peaks & 1u)
         r->wave_speed = r->wave_speed_err = NAN; /* undecided: layer_crowns_warning */
     if (peaks & 2u)

@@ -684,6 +684,8 @@ unsigned layer_crowns_undersampled(const gw_layer_impact_result *r, double *dt_s
  * mean delay per crown (*delay, s) above LAYER_XCORR_LOCK times the first
  * contact's opening time, or without one the crown's transit at the faster
  * peak speed (*ref, s); gw_layer_crowns then reports it as NaN (layer_crowns.c).
+ * Asked of a run's result (its resolution rule at the interval of the series
+ * the crowns were read from: layer_crowns_series), as is layer_crowns_peaks_locked.
  * Over 29 impacts (42 runs: the 40-disc pile, the stored 300-disc sample and
  * `layer-make --n 300 --seed 1`, --vi 5 to 60, gravity 9.81, 1, 0.5, alpha 30)
  * the ratio was 23.2 to 103 on the 16 locked, 0.47 to 0.76 on the 7 kept (1.8

@@ -16,6 +16,12 @@
 #  3 Python's layer_impact: the same run's speeds None (NaN) and a warning.
 #  The program's text said "unresolved" of them, as of a speed the sampling
 #  left null: now "undecided, the pile's motion".
+#  4 The lock rules were asked again after the run at the written samples'
+#    interval, not at the checks' the crowns were read from: at --vi 60
+#    --t-max 20 --dt-out 2e-2 the cross-correlation (22.45 m/s from pairs
+#    0.029 s apart, 23 times the contact) was nulled and found "unresolved"
+#    there (0.65 m in under two samples of 0.02 s): null in silence. Now
+#    warned of; its peak speeds (38.63, 20.83 m/s) null with a warning.
 #  Control: the pile's default impact keeps 98.06 and 371.76 m/s (4.2 and 1.1
 #  times its contact) to 6 decimals, with no such warning.
 # Checks that fail on the code before: see docs/tests.md.
@@ -77,6 +83,26 @@ PYEOF
 [ $rc -eq 0 ] && [ "$got" = ok ] &&
     ok "--vi 5: the strain peaks' 27 m/s null (11.6 times the contact), the kinetic 465 m/s kept" ||
     ko "--vi 5 locked run: exit $rc, $got $(head -c 200 v5.err)"
+
+# --- 4 the lock rules asked after the run, at the checks' interval ---
+cpu_run 120 "$GW" layer-impact --sample s40 --quiet --json --vi 60 --t-max 20 --dt-out 2e-2 >v60.json 2>v60.err
+rc=$?
+got=$($PY - <<'PYEOF'
+import json
+a = json.load(open("v60.json"))
+x = [w for w in a["warnings"] if "cross-correlation's ring pairs" in w]
+p = [w for w in a["warnings"] if "peaks' speed" in w]
+print("ok" if a["wave_speed_xcorr"] is None and len(x) == 1 and "it read 22.45 m/s" in x[0] else f"xcorr warnings {x}")
+print("ok" if a["wave_speed"] is None and a["wave_speed_kinetic"] is None and len(p) == 1 and "38.63 m/s" in p[0]
+      and "20.83 m/s" in p[0] else f"{a['wave_speed']}, {a['wave_speed_kinetic']}, peaks warnings {p}")
+PYEOF
+)
+{ read -r g1; read -r g2; } <<<"$got"
+[ $rc -eq 0 ] && [ "$g1" = ok ] &&
+    ok "--vi 60 --dt-out 2e-2: the locked cross-correlation (22.45 m/s at the checks) is warned of, not null in silence" ||
+    ko "--vi 60 --dt-out 2e-2: exit $rc, $g1"
+[ "$g2" = ok ] && ok "--vi 60 --dt-out 2e-2: both peak speeds (38.63, 20.83 m/s) null, one warning naming both" ||
+    ko "--vi 60 --dt-out 2e-2: $g2"
 
 # --- control: the default impact ---
 cpu_run 120 "$GW" layer-impact --sample s40 --quiet --json >def.json 2>def.err

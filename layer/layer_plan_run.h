@@ -43,6 +43,12 @@ int layer_impact_run(const gw_layer_sample *smp, const gw_layer_params *lp0, con
 int layer_crowns_warning(const gw_layer_sample *smp, const gw_layer_impact_params *ip,
                          const gw_layer_impact_result *res, char **list);
 
+/* Bits 1, 2, 4 (strain peaks, kinetic peaks, cross-correlation) for the crown
+ * speeds of res nulled as following the pile's slow motion, not the wave
+ * (layer_crowns_peaks_locked, layer_crowns_xcorr_locked): "undecided" where
+ * the program's text says "unresolved" of a speed the sampling left null. */
+unsigned layer_crowns_locked(const gw_layer_impact_result *res);
+
 /* A warning into *list when res's energy error is above GW_LAYER_ENERGY_WARN
  * while ip's energy_tol is off (0), naming it and the solver's rtol and atol
  * (rk4, verlet: the step), as the chain's (chain_energy_warning): layer-impact

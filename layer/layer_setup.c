@@ -684,6 +684,16 @@ static int crowns_sampling_warning(const gw_layer_impact_params *ip, const gw_la
                            "(the default is 2e-05 s)", dt, dc, names, (which & (which - 1)) ? "are" : "is");
 }
 
+unsigned layer_crowns_locked(const gw_layer_impact_result *r)
+{
+    double delay, ref, cp[2];
+    unsigned which = layer_crowns_peaks_locked(r, cp, &ref) &
+                     ((isnan(r->wave_speed) ? 1u : 0u) | (isnan(r->wave_speed_kin) ? 2u : 0u));
+    if (isnan(r->wave_speed_xcorr) && layer_crowns_xcorr_locked(r, &delay, &ref))
+        which |= 4u;
+    return which;
+}
+
 /* The crowns as set against the sample: the wave speeds fit the peak times
  * of rings 1 .. nrings - 1 and need 3 of them (layer_crowns.c), so crowns too
  * narrow to reach a particle (--ring-width 1e-9: every speed null, "0 rings"),
@@ -711,6 +721,25 @@ int layer_crowns_warning(const gw_layer_sample *smp, const gw_layer_impact_param
                               : "a crown takes at the faster peak speed", (r->ring_r[1] - r->ring_r[0]) / delay))
         != GW_OK)
         return rc;
+    /* the peak speeds following that motion (layer_crowns_peaks_locked): null, said here */
+    double cp[2];
+    const unsigned peaks = layer_crowns_peaks_locked(r, cp, &ref) &
+                           ((isnan(r->wave_speed) ? 1u : 0u) | (isnan(r->wave_speed_kin) ? 2u : 0u));
+    if (peaks) {
+        const double dc = r->ring_r[1] - r->ring_r[0], c0 = peaks & 1u ? cp[0] : cp[1];
+        char also[96] = "";
+        if (peaks == 3u)
+            gw_snprintf(also, sizeof also, ", the kinetic peaks' %.4g m/s in %.3g s (%.0f times)", cp[1],
+                        dc / cp[1], dc / cp[1] / ref);
+        if ((rc = gw_warnings_add(list, "crowns: the %s peaks' speed %.4g m/s crosses a crown of %g m in %.3g s "
+                                  "(%.0f times the %.3g s the block's first contact lasted, to its opening)%s: the "
+                                  "rings' peaks follow the pile's slower motion over the first impact, not the wave, "
+                                  "so %s null (undecided)", peaks & 1u ? "strain" : "kinetic", c0, dc, dc / c0,
+                                  dc / c0 / ref, ref, also,
+                                  peaks == 3u ? "wave_speed and wave_speed_kinetic are"
+                                  : peaks & 1u ? "wave_speed is" : "wave_speed_kinetic is")) != GW_OK)
+            return rc;
+    }
     const double w = ip->ring_width > 0 ? ip->ring_width : 2 * smp->rm;
     if (ip->nrings < 4)
         return gw_warnings_add(list, "rings: %d crowns leave %d beyond the first, where the wave speeds need 3: "

@@ -22,8 +22,8 @@
 #  Control: a first impact within 2^22 values keeps every check: the pile
 #  under --gravity 0.5 (--other-settling; T_f 2.6 s, 130,000 checks of 12
 #  rings) gives at --dt-out 1e-2 the default --dt-out's speeds and arrivals
-#  bit for bit (at 2^21 values it would have been thinned); its
-#  cross-correlation's speed is null in both (pairs locked, as in 3).
+#  bit for bit (at 2^21 values it would have been thinned); its three
+#  speeds are null in both (pairs and peaks locked, as in 3).
 #  3 A cross-correlation locked onto the pile's slow motion is no speed: the
 #    40-disc pile at `--vi 40 --gravity 1 --other-settling --t-max 20
 #    --dt-out 1e-2` (T_f 1.30 s) gave 15.99 +- 0.03 m/s from ring pairs
@@ -127,8 +127,10 @@ import json
 a, b = json.load(open("g2.json")), json.load(open("g0.json"))
 keys = ("wave_speed", "wave_speed_kinetic", "wave_speed_xcorr", "wave_speed_err")
 # (the cross-correlation's pairs lock onto the pile's motion over this long
-# first impact, 0.082 s apart: its speed is null in both, 7.9 m/s before)
-bad = [k for k in keys if a[k] != b[k] or (a[k] is None and k != "wave_speed_xcorr")]
+# first impact, 0.082 s apart: its speed is null in both, 7.9 m/s before; so
+# do its strain and kinetic peaks, 11.87 and 7.32 m/s, 35 and 57 times its
+# first contact: null in both, test_crowns_peaks_locked; the arrivals compared)
+bad = [k for k in keys if a[k] != b[k]]
 bad += [k for k in ("peak_strain_t", "peak_kinetic_t", "xcorr_delay") if a["crowns"][k] != b["crowns"][k]]
 print("ok" if not bad and b["t_f"] > 2 else f"T_f {b['t_f']}, differ: {bad}")
 EOF

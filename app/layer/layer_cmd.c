@@ -818,14 +818,19 @@ int gw_cmd_layer_impact(int argc, char **argv)
                        "block loss %s (B.28)\n", gw_cli_num(v[1], sizeof v[1], "%.3g", r.dissipated_first_contact),
                        gw_cli_num(v[2], sizeof v[2], "%.3g", r.block_loss_first_contact), r.t_first_contact * 1e3,
                        gw_cli_num(v[0], sizeof v[0], "%.3g", r.block_loss_contact_open));
-            char ws[3][64]; /* a crown speed the samples do not resolve is null in JSON: "unresolved" here */
+            /* a crown speed the samples do not resolve is null in JSON: "unresolved"
+             * here; one following the pile's slow motion (a warning says so):
+             * "undecided", where it said "unresolved" too */
+            char ws[3][64];
             const double wv[3] = {r.wave_speed, r.wave_speed_kin, r.wave_speed_xcorr};
             const double we[3] = {r.wave_speed_err, r.wave_speed_kin_err, r.wave_speed_xcorr_err};
+            const unsigned locked = layer_crowns_locked(&r);
             for (int q = 0; q < 3; q++)
                 if (isfinite(wv[q]))
                     snprintf(ws[q], sizeof ws[q], "%.4g +- %.3g m/s", wv[q], we[q]);
                 else
-                    snprintf(ws[q], sizeof ws[q], "unresolved");
+                    snprintf(ws[q], sizeof ws[q], "%s", locked & (1u << q) ? "undecided, the pile's motion"
+                                                                           : "unresolved");
             printf("  wave speed %s (strain peaks, %d rings), %s (kinetic)\n", ws[0], r.wave_rings, ws[1]);
             printf("  wave speed %s (cross-correlation of neighbouring rings, %d pairs)\n", ws[2], r.xcorr_gaps);
             printf("  energy closure max %.3g; t_end %.4g ms; wall %.0f ms, %ld steps, %ld events, %ld rebuilds\n",

@@ -483,7 +483,7 @@ typedef struct gw_chain_result {
     int chatter_kind;
     double chatter_spread;
     /* The run's relative and absolute tolerances as used (cvode, arkode:
-     * gw_chain_run_opts.sp.rtol and atol, 0 resolved to the defaults); NaN
+     * gw_chain_run_opts.sp.rtol and atol, 1e-10 in its default); NaN
      * under rk4, a fixed step with no error test. The drop's chatter line
      * names its rerun's values from its first collision's (0 in a result
      * filled by hand: the line says "10 times tighter tolerances"). Kept in a

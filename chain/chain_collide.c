@@ -725,7 +725,6 @@ static int collide_run(const gw_chain *c, const gw_chain_run_opts *o, int drop, 
                        gw_chain_progress_fn progress, void *pctx, gw_chain_result *r, gw_err *err);
 static void chatter_spread(const gw_chain *c, const gw_chain_run_opts *o, int drop, int flight_cut,
                            const collide_plan *pl, gw_chain_result *r);
-static char *tols_room(const gw_chain_result *r);
 
 int gw_chain_collide(const gw_chain *c, const gw_chain_run_opts *o, gw_chain_result *r,
                      gw_err *err)
@@ -777,8 +776,7 @@ static int collide_run(const gw_chain *c, const gw_chain_run_opts *o, int drop, 
     if (prc != GW_OK)
         return prc;
     /* the velocities' arrays, then the column's pending text (chain_result_column_pending) */
-    r->final_v = calloc(1, 4 * (size_t)n * sizeof *r->final_v + CHAIN_PENDING_TEXT + CHAIN_CHATTER_TEXT +
-                               CHAIN_TOLS_ROOM);
+    r->final_v = calloc(1, 4 * (size_t)n * sizeof *r->final_v + CHAIN_PENDING_TEXT + CHAIN_CHATTER_TEXT);
     double *y = malloc((size_t)sys->dim * sizeof *y);
     int *roots = calloc((size_t)sys->nroots, sizeof *roots);
     run_state st = {.c = c, .o = o, .r = r, .n = n, .t_sampled = -INFINITY, .flight_cut = flight_cut,
@@ -793,10 +791,9 @@ static int collide_run(const gw_chain *c, const gw_chain_run_opts *o, int drop, 
         goto done;
     }
     made_add(r->final_v, n);
-    { /* the run's tolerances, after the chatter's text (chain_result_tolerances) */
-        const double tols[2] = {pl.sp.rtol, pl.sp.atol};
-        memcpy(tols_room(r), tols, sizeof tols);
-    }
+    /* the run's tolerances (rk4: none) */
+    r->run_rtol = pl.type == gw_solver_rk4 ? NAN : pl.sp.rtol;
+    r->run_atol = pl.type == gw_solver_rk4 ? NAN : pl.sp.atol;
     r->detach_t = r->final_v + n;
     r->v_tau_n = r->final_v + 2 * n;
     if (o->front_threshold > 0) {
@@ -931,21 +928,13 @@ static char *chatter_text(const gw_chain_result *r)
     return (char *)(r->final_v + 4 * (size_t)r->n) + CHAIN_PENDING_TEXT;
 }
 
-/* where the run's rtol and atol are kept, after the chatter's text */
-static char *tols_room(const gw_chain_result *r)
-{
-    return chatter_text(r) + CHAIN_CHATTER_TEXT;
-}
-
 int chain_result_tolerances(const gw_chain_result *r, double *rtol, double *atol)
 {
-    if (!r || !r->final_v || r->n < 1 || !made_find(r->final_v, r->n, 0))
+    if (!r)
         return 0;
-    double tols[2];
-    memcpy(tols, tols_room(r), sizeof tols);
-    *rtol = tols[0];
-    *atol = tols[1];
-    return tols[0] > 0 && tols[1] > 0;
+    *rtol = r->run_rtol;
+    *atol = r->run_atol;
+    return r->run_rtol > 0 && r->run_atol > 0;
 }
 
 int chain_chatter_looser(double rtol, double atol)

@@ -883,6 +883,73 @@ static double stiff_over(const gw_chain_params *p, const gw_chain_run_opts *o, c
     return steps_of(&q, o, type) / 1e8;
 }
 
+/* The coefficient (k, wall 0; kwall, wall 1) of the column q set to x */
+static gw_chain_params with_coef(const gw_chain_params *q, int wall, double x)
+{
+    gw_chain_params w = *q;
+    if (wall)
+        w.kwall = x;
+    else {
+        w.k = x;
+        w.kc = NULL; /* (stiff_refusal: each of them q's k) */
+    }
+    return w;
+}
+
+/* No k (kwall) keeps the run within the steps' bound (stiff_refusal's least
+ * steps, `least` at log10 k = best, above it). Under rk4 with a dt given whose
+ * step the given coefficient's contact cuts (a quarter of it below the dt:
+ * the run steps at that quarter) the refusal named the dt-max, which was not
+ * given ("dt-max: a step of 5.74e-14 s ... the default largest step is a
+ * quarter of the shortest contact": dt 1e-13 with k 1e30, left after the
+ * forty-fifth session). Two inputs are wrong there, named in one line in a
+ * stated order, the dt first: the dt, where it is the step at the best
+ * coefficient (too small for any: "raise it"), and the coefficient, too stiff
+ * for the dt, with the largest value whose contact keeps the dt as the step.
+ * Where the dt is not the step even at the best coefficient (another input,
+ * a soft wall's long collision, holds the steps up), the coefficient alone is
+ * named, saying that no value of it keeps the run within the bound at that
+ * dt. GW_OK (err untouched) elsewhere: no dt given, a dt the contact does not
+ * cut (the dt's own refusal), or another contact already shorter than 4 dt. */
+static int rk4_dt_stiff(const gw_chain_params *q, const gw_chain_run_opts *o, const gw_solver_type *type, int wall,
+                        double k, double best, double least, const char *over, gw_err *err)
+{
+    const double dt = o->sp.dt, v2 = 2 * q->v_imp;
+    if (!(type == gw_solver_rk4 && dt > 0))
+        return GW_OK;
+    const double tau = chain_contact_tau_min(q, v2);
+    gw_chain_params soft = with_coef(q, wall, DBL_MIN);
+    if (!(0.25 * tau < dt) || !(0.25 * chain_contact_tau_min(&soft, v2) >= dt))
+        return GW_OK;
+    /* the largest coefficient whose contact keeps the dt as the step (the
+     * shortest contact falls as the coefficient grows) */
+    double in = log10(DBL_MIN), out = log10(k);
+    for (int it = 0; it < 80 && out - in > 1e-7; it++) {
+        const double mid = 0.5 * (in + out);
+        gw_chain_params w = with_coef(q, wall, pow(10, mid));
+        if (0.25 * chain_contact_tau_min(&w, v2) >= dt)
+            in = mid;
+        else
+            out = mid;
+    }
+    const double k_dt = pow(10, in), qd = pow(10, floor(in) - 1), k_dt2 = fmax(floor(k_dt / qd) * qd, DBL_MIN);
+    /* the least steps lie at or below k_dt (the dt the step there; the
+     * steps rise with the coefficient above it): within the search's 1e-6
+     * decades of it, at it */
+    const int dt_is_step = best <= in + 1e-5;
+    const char *name = wall ? "kwall" : "k", *whose = wall ? "the wall's" : "its shortest";
+    char stiff[320];
+    gw_snprintf(stiff, sizeof stiff, "%s: %g N/m^1.5 is too stiff for that dt: %s contact lasts %.3g s, a quarter of "
+                "it (%.3g s) below the dt; %s up to %.2g keeps the dt as the step", name, k, whose, tau, 0.25 * tau,
+                name, k_dt2);
+    if (dt_is_step)
+        return gw_err_set(err, GW_EINVAL, "dt: a step of %g s needs at least about %.3g steps over %s at any %s (the "
+                          "rest as given; at most 1e+08): raise it; and %s (named in the order dt, k, kwall)", dt,
+                          least, over, name, stiff);
+    return gw_err_set(err, GW_EINVAL, "%s (the dt given: %g s); no %s keeps this column within 1e+08 steps at that dt "
+                      "(at least about %.3g over %s, the rest as given)", stiff, dt, name, least, over);
+}
+
 static int stiff_refusal(const gw_chain_params *p, const gw_chain_run_opts *o, const gw_solver_type *type, int wall,
                          const char *over, gw_err *err)
 {
@@ -944,8 +1011,8 @@ static int stiff_refusal(const gw_chain_params *p, const gw_chain_run_opts *o, c
         }
     }
     const double best = 0.5 * (a + b);
-    if (!K_OK(best))
-        return GW_OK;
+    if (!K_OK(best)) /* no k within the bound: under rk4 with a dt given, maybe the dt and k both */
+        return rk4_dt_stiff(&q, o, type, wall, k, best, K_STEPS(best) * 1e8, over, err);
     /* under rk4 with a dt given, a k below its best makes too many steps of
      * that dt: the dt is the cause and is named (softwall --solver rk4 --dt
      * 1e-12 was told that its default k, 6.97e9, is outside [1.4e12, 1e28]);

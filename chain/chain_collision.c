@@ -52,6 +52,8 @@ static const gw_param collision_fields[] = {
     RD("dt", r.run_dt, "s", "step the run used: RK4's (default T_c/400, at most dt_max and dt_out), cvode's and arkode's first (0: their own)"),
     RD("dt_given", r.run_dt_given, "s", "the dt given (0: none); dt differs when it was above dt_max or rk4's dt_out"),
     RD("dt_max", r.run_dt_max, "s", "largest step the run allowed (default a quarter of the shortest contact)"),
+    RD("rtol", r.run_rtol, "", "relative tolerance the run used (cvode, arkode; NaN under rk4: no error test)"),
+    RD("atol", r.run_atol, "", "absolute tolerance the run used (cvode, arkode; NaN under rk4: no error test)"),
     RL("events", r.n_events, "contact events located"),
     RL("missed_events", r.missed_events, "contact changes found from the state, not a root"),
     RL("steps", r.stats.steps, "solver steps"),

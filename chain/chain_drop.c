@@ -608,8 +608,8 @@ static void drop_chatter(const gw_chain_drop_params *p, const gw_chain_run_opts 
         return;
     /* rk4's rerun at half the step costs twice the drop's steps (the first
      * collision is not run again), known before it is made: made up to
-     * GW_CHAIN_DROP_CHATTER_RK4_WORK, the whole run then about 3 times the
-     * run without it. The tolerances' rerun's cost is not known before it
+     * GW_CHAIN_DROP_CHATTER_RK4_WORK (about 11 s of CPU at most), the whole
+     * run then about 3 times the run without it. The tolerances' rerun's cost is not known before it
      * is made: bounded as chain's. */
     const double work_max = type == gw_solver_rk4 ? GW_CHAIN_DROP_CHATTER_RK4_WORK : GW_CHAIN_CHATTER_WORK;
     if (!((double)r->stats.steps * r->n <= work_max)) {

@@ -86,6 +86,8 @@ static const gw_param drop_fields[] = {
     RD("dt", dt, "s", "the step the run used: RK4's (at most dt_max and dt_out), cvode's and arkode's first (0: their own)"),
     RD("dt_given", r.run_dt_given, "s", "the dt given (0: none); dt differs when it was above dt_max or rk4's dt_out"),
     RD("dt_max", dt_max, "s", "the largest step the run allowed (given, or a quarter of the shortest contact)"),
+    RD("rtol", r.first.run_rtol, "", "the relative tolerance the run used (cvode, arkode; NaN under rk4: no error test)"),
+    RD("atol", r.first.run_atol, "", "the absolute tolerance the run used (cvode, arkode; NaN under rk4: no error test)"),
     RD("peak_threshold", peak_threshold, "N", "smallest peak force counted"),
     RD("mass", mass, "kg", "bead mass (bead 1 with radii; the block's with block)"),
     RD("k", k, "N/m^1.5", "bead-bead Hertz coefficient"),

@@ -178,12 +178,10 @@ const char *chain_result_column_pending(const gw_chain_result *r);
  * Its kind and spread are the result's chatter_kind and chatter_spread. */
 #define CHAIN_CHATTER_TEXT 512
 const char *chain_result_chatter(const gw_chain_result *r);
-/* Room for the run's rtol and atol after the chatter's text (two doubles) */
-#define CHAIN_TOLS_ROOM (2 * sizeof(double))
-/* The tolerances the collision r ran at into *rtol, *atol: 1, or 0 for a
- * result that gw_chain_collide did not fill (by hand, or a copy). The drop's
- * library warning names its chatter's rerun by them: the drop result holds
- * no rtol, and its first collision ran at the drop's (chain_drop.c). */
+/* The tolerances the collision r ran at into *rtol, *atol (its run_rtol and
+ * run_atol): 1, or 0 where they are not both positive (rk4's NaN, a result
+ * filled by hand). The drop's library warning names its chatter's rerun by
+ * them: its first collision ran at the drop's (chain_drop.c). */
 int chain_result_tolerances(const gw_chain_result *r, double *rtol, double *atol);
 /* The one text of bead 1's chatter on a sensor body into buf: "bead 1
  * chattered on the sensor body (its wall contact closed CONTACTS times WHERE):

@@ -482,6 +482,13 @@ typedef struct gw_chain_result {
      * else 0. The warnings say it (gw_chain_result_warnings). */
     int chatter_kind;
     double chatter_spread;
+    /* The run's relative and absolute tolerances as used (cvode, arkode:
+     * gw_chain_run_opts.sp.rtol and atol, 1e-10 in its default); NaN
+     * under rk4, a fixed step with no error test. The drop's chatter line
+     * names its rerun's values from its first collision's (0 in a result
+     * filled by hand: the line says "10 times tighter tolerances"). Kept in a
+     * hidden buffer after final_v before the forty-sixth session. */
+    double run_rtol, run_atol;
 } gw_chain_result;
 
 /* gw_chain_result's chatter_kind */
@@ -500,7 +507,13 @@ enum {
     GW_CHAIN_RERUN_TOL,  /* rtol and atol 10 times tighter (cvode, arkode) */
     GW_CHAIN_RERUN_STEP  /* rk4's step halved (run_dt / 2) */
 };
-#define GW_CHAIN_DROP_CHATTER_RK4_WORK 1e7 /* the drop's steps times bodies up to which rk4 runs it again */
+/* the drop's steps times bodies up to which rk4 runs it again (twice the
+ * drop's steps): its rerun about 11 s of CPU at most at the bound (measured
+ * 1.1e-7 s a step of one bead, 1.05e-7 of three, 2.7e-7 of thirty: 1.1e-7 s
+ * a step and body at most, a step of one bead); 1e7 before the forty-sixth session, which left drop --n 3
+ * --sensor-mass 1e-6 --sensor-stiffness 1e5 (1.8e7, its rerun 1.25 s)
+ * unmeasured */
+#define GW_CHAIN_DROP_CHATTER_RK4_WORK 5e7
 
 /* Run one collision from the initial state until every contact is open and every
  * pair separates (or t_max). Returns GW_OK, or GW_ESOLVER / GW_ELIMIT /
@@ -922,7 +935,9 @@ typedef struct gw_chain_drop_result {
      * rerun (half the step) costs twice the drop's steps, known before it is
      * made, and is made up to GW_CHAIN_DROP_CHATTER_RK4_WORK steps times
      * bodies (drop --n 3 --sensor-mass 1e-4 --sensor-stiffness 1e3 --solver
-     * rk4: 9.8e5 steps, 0.13 s of CPU, its rerun 1.95e6 steps and 0.25 s).
+     * rk4: 9.8e5 steps, 0.13 s of CPU, its rerun 1.95e6 steps and 0.25 s;
+     * --sensor-mass 1e-6 --sensor-stiffness 1e5: 6.0e6 steps, the rerun 1.2e7
+     * steps and 1.25 s).
      * chatter_rerun: how it is (or would be) run again, GW_CHAIN_RERUN_*, set
      * with the sensor body (gw_chain_drop_result_warnings names it). */
     int chatter_kind;

@@ -26,8 +26,8 @@
 #    drop's the line and its chatter values.
 #  Session 45: the drop's line says its first collision's check sees one
 #    contact (it ends half way to bead 1's second, the drop's next impact);
-#    under rk4 the drop is run again at half the step up to 1e7 steps times
-#    bodies (1e-4 kg: -1 before, now 0, every impact measured), above it the
+#    under rk4 the drop is run again at half the step up to 1e7 (5e7 from
+#    session 46) steps times bodies (1e-4 kg: -1 before, now 0, every impact measured), above it the
 #    line says why; Python's drop has the impacts' chatter column.
 #  Session 45 too: a study's and a sweep's line said "10 times tighter
 #    tolerances" where the reruns were 10 times looser, a tolerance being at
@@ -165,9 +165,10 @@ else
     ko "3 drop on 1e-4 kg: the first collision's one contact not said: $(head -c 300 d4.err)"
 fi
 # rk4's rerun at half the step costs twice the drop's steps, known before it is
-# made: run again up to 1e7 steps times bodies (9.8e5 steps times 3 here:
+# made: run again up to 5e7 steps times bodies (9.8e5 steps times 3 here:
 # chatter -1 before, session 45), every impact's chatter measured, within 1e-6
-# (no line); above it (1e-6 kg on 1e5 N/m: 6e6 steps) -1, the line saying why
+# (no line); above it (1e-6 kg on 1e5 N/m with 10 beads: 6e6 steps times 10;
+# 3 beads, 1.8e7, were above the 1e7 before session 46) -1, the line saying why
 # shellcheck disable=SC2086
 cpu_run 60 "$GW" drop --n 3 $S --solver rk4 --json --quiet >d5.json 2>d5.err
 d5=$(/usr/bin/python3 -c "
@@ -182,11 +183,11 @@ if [ "$(nlines d5.err)" = 0 ] && [ "$d5top" = 0 ] &&
 else
     ko "3 drop rk4 on 1e-4 kg: chatter '$d5top', $d5chk of $d5n impacts measured (up to $d5max): $(head -c 300 d5.err)"
 fi
-cpu_run 60 "$GW" drop --n 3 --sensor-mass 1e-6 --sensor-stiffness 1e5 --solver rk4 --json --quiet >d6.json 2>d6.err
+cpu_run 60 "$GW" drop --n 10 --sensor-mass 1e-6 --sensor-stiffness 1e5 --solver rk4 --json --quiet >d6.json 2>d6.err
 if [ "$(nlines d6.err)" = 1 ] && grep -qF "was not run again" d6.err && grep -qF "compare a run at --dt " d6.err &&
-    grep -qF "above the 1e+07 a rerun at half rk4's step, twice the drop's steps, is made within" d6.err &&
+    grep -qF "above the 5e+07 a rerun at half rk4's step, twice the drop's steps, is made within" d6.err &&
     [ "$(jwarn d6.json | sed -n 1p)" = "1 -1" ]; then
-    ok "3 drop rk4 on 1e-6 kg, 1e5 N/m (costly): one line naming --dt and why (twice the drop's steps above 1e7), chatter -1"
+    ok "3 drop rk4 of 10 beads on 1e-6 kg, 1e5 N/m (costly): one line naming --dt and why (twice the drop's steps above 5e7), chatter -1"
 else
     ko "3 drop rk4 costly: $(nlines d6.err) lines, --json '$(jwarn d6.json | sed -n 1p)': $(head -c 500 d6.err)"
 fi

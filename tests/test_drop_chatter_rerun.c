@@ -14,10 +14,12 @@
  *   - rk4's rerun at half the step costs twice the drop's steps, known before
  *     it is made: a drop of 3 beads on 1e-4 kg and 1e3 N/m (9.8e5 steps, 44
  *     episodes) was left unmeasured ("chatter" -1, above the 1e6 steps times
- *     bodies of chain's bound); it is run again up to 1e7 (0.13 s of CPU,
+ *     bodies of chain's bound); it is run again up to 1e7 (5e7 from session 46; 0.13 s of CPU,
  *     the rerun 0.25 s), every impact's chatter measured (within 6.4e-8: no
- *     warning). Above it (1e-6 kg on 1e5 N/m: 6e6 steps) it is not, and the
- *     warning says why (twice the drop's steps) and names --dt.
+ *     warning). Above it (1e-6 kg on 1e5 N/m with 10 beads: 6e6 steps times
+ *     10) it is not, and the warning says why (twice the drop's steps) and
+ *     names --dt; the bound is 5e7 from session 46 (3 beads there, 1.8e7,
+ *     are run again: the rerun 1.25 s of CPU).
  * Each case runs in its own child process (test_child.h).
  */
 #define _POSIX_C_SOURCE 200809L
@@ -31,10 +33,10 @@
 
 /* the drop of 3 beads on a sensor body of mass m (kg) and stiffness k (N/m),
  * under cvode at the program's tolerances or rk4; 0 or says why */
-static int drop_on(double m, double k, int rk4, gw_chain_drop_result *r, char **w)
+static int drop_of(int n, double m, double k, int rk4, gw_chain_drop_result *r, char **w)
 {
     gw_chain_drop_params p = gw_chain_drop_params_default();
-    p.chain.n = 3;
+    p.chain.n = n;
     p.chain.sensor.mass = m;
     p.chain.sensor.stiffness = k;
     gw_chain_run_opts o = gw_chain_run_opts_default();
@@ -54,6 +56,11 @@ static int drop_on(double m, double k, int rk4, gw_chain_drop_result *r, char **
     return 0;
 }
 
+static int drop_on(double m, double k, int rk4, gw_chain_drop_result *r, char **w)
+{
+    return drop_of(3, m, k, rk4, r, w);
+}
+
 static int c_cvode_named(void)
 {
     gw_chain_drop_result r;
@@ -70,11 +77,14 @@ static int c_cvode_named(void)
     EXPECT(!strstr(s, "rk4"));
     EXPECT(r.chatter_rerun == GW_CHAIN_RERUN_TOL);
     /* a copy whose first collision is the caller's own (final_v not the
-     * library's: no tolerances kept) keeps the rule's words, read nothing
-     * past its array */
+     * library's) reads nothing past its array; the tolerances are members
+     * since session 46 (run_rtol, run_atol: kept by a copy), and a result
+     * holding none (0, filled by hand) keeps the rule's words */
     gw_chain_drop_result c = r;
     double v[3] = {0, 0, 0};
     c.first.final_v = v;
+    EXPECT(c.first.run_rtol == 1e-12 && c.first.run_atol == 1e-12);
+    c.first.run_rtol = c.first.run_atol = 0;
     char *w2 = NULL;
     EXPECT(gw_chain_drop_result_warnings(&c, &w2) == GW_OK);
     if (!w2 || !strstr(w2, "a rerun at 10 times tighter tolerances (rtol and atol) changed"))
@@ -114,7 +124,7 @@ static int c_rk4_costly_named(void)
 {
     gw_chain_drop_result r;
     char *w = NULL;
-    EXPECT(drop_on(1e-6, 1e5, 1, &r, &w) == 0);
+    EXPECT(drop_of(10, 1e-6, 1e5, 1, &r, &w) == 0);
     const char *s = w ? w : "";
     if (!strstr(s, "twice the drop's steps"))
         printf("rk4 costly: kind %d, steps %ld, '%.400s'\n", r.chatter_kind, r.stats.steps, s);
@@ -134,7 +144,7 @@ static const child_row rows[] = {
      "a copy keeps the rule's words",
      c_cvode_named},
     {"drop rk4 on 1e-4 kg: run again at half the step (was -1), every impact measured, no warning", c_rk4_run_again},
-    {"drop rk4 on 1e-6 kg, 1e5 N/m (costly): the library's warning names --dt, half the step, and why",
+    {"drop rk4 of 10 beads on 1e-6 kg, 1e5 N/m (costly): the library's warning names --dt, half the step, and why",
      c_rk4_costly_named},
 };
 

@@ -14,6 +14,10 @@
 #    `--t-max 0.003 --dt-out 5e-3` said nothing of the crowns either: now
 #    the one line. Controls: `--t-max 0.005` (4 rings: the speeds given, no
 #    such line); `--rings 3` (its own line alone).
+#  2 `granwave help --json --json` was refused as "unknown command '--json'"
+#    (the second --json taken for a command name); `help chain --json --json`
+#    likewise. It is now "--json: given twice", as every command says a flag
+#    given twice. Control: `help --json chain` prints chain's help as JSON.
 # Checks that fail on the code before: see docs/tests.md.
 # shellcheck source=refusal_lib.sh
 . "$(dirname "${BASH_SOURCE[0]}")/refusal_lib.sh"
@@ -79,5 +83,11 @@ impact d --t-max 0.003 --dt-out 5e-3
 [ "$(grep -c 'warning: crowns\|warning: dt-out\|warning: t-max:' d.err)" = 1 ] &&
     ok "1 --t-max 0.003 --dt-out 5e-3: one crowns line" ||
     ko "1 --t-max 0.003 --dt-out 5e-3: stderr '$(head -c 400 d.err)'"
+
+# 2 help's --json given twice
+refused "2 help --json --json" "^granwave help: --json: given twice$" help --json --json
+refused "2 help chain --json --json" "^granwave help: --json: given twice$" help chain --json --json
+"$GW" help --json chain 2>/dev/null | /usr/bin/python3 -c "import json, sys; assert json.load(sys.stdin)['command'] == 'chain'" &&
+    ok "control: help --json chain prints chain's help as JSON" || ko "control: help --json chain"
 
 test_summary test_hostile_fiftythird

@@ -184,6 +184,11 @@ static int help(int argc, char **argv)
             argc--;
             break;
         }
+    /* a second --json was taken for a command ("unknown command '--json'"):
+     * said as every command says a flag given twice */
+    for (int i = 2; json && i < argc && strcmp(argv[i], "--") != 0; i++)
+        if (strcmp(argv[i], "--json") == 0)
+            return refuse(argv[1], "%s: given twice", "--json");
     int ended = argc > 2 && strcmp(argv[2], "--") == 0; /* "help -- COMMAND": COMMAND is no flag */
     if (ended) {
         argv[2] = argv[1];

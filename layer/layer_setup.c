@@ -694,6 +694,47 @@ unsigned layer_crowns_locked(const gw_layer_impact_result *r)
     return which;
 }
 
+/* The speeds a run ended before the wave crossed 3 crowns left null: the
+ * arrivals are read over the first impact, and a run that ended inside it (at
+ * t-max, at the bounce verdict, or found not to bounce) before the wave's
+ * peaks reached 3 of rings 1 .. nrings - 1 has no speed to fit, well sampled
+ * as it is. On the 40-disc pile of `layer-make --n 40`, `--until verdict`
+ * (the verdict at 1.56 ms, the strain peaks in 1 ring) and `--t-max 0.003`
+ * (2 rings) gave every speed null with no word of it (--t-max 0.005: 733 m/s
+ * over 4 rings). Said after the sampling's warning (a speed it names is not
+ * named again) and the locks of the cross-correlation and the peaks (likewise), on crowns that
+ * hold particles in 3 rings at least. */
+static int crowns_cut_warning(const gw_layer_impact_params *ip, const gw_layer_impact_result *r, char **list)
+{
+    if (!ip || (r->bounced == 1 && isfinite(r->t_f)) || !r->t || r->ns < 1 || r->wave_rings >= 3)
+        return GW_OK; /* the first impact ran to its end (not the run's end), or the rings were reached */
+    double dt, dc;
+    int few;
+    const unsigned warned = layer_crowns_undersampled(r, &dt, &dc, &few) | layer_crowns_locked(r);
+    static const char *const name[3] = {"wave_speed", "wave_speed_kinetic", "wave_speed_xcorr"};
+    const double v[3] = {r->wave_speed, r->wave_speed_kin, r->wave_speed_xcorr};
+    char names[96] = "";
+    int count = 0;
+    for (int k = 0; k < 3; k++)
+        if (isnan(v[k]) && !(warned & (1u << k))) {
+            strcat(names, count ? ", " : "");
+            strcat(names, name[k]);
+            count++;
+        }
+    if (!count)
+        return GW_OK;
+    const int verdict = r->bounced == 1 && ip->until == GW_LAYER_UNTIL_VERDICT && !r->undecided[0];
+    const int nobounce = !verdict && r->bounced == 0;
+    return gw_warnings_add(list, "crowns: the run ended at t = %.6g s %s, before the wave's strain peaks reached 3 of "
+                           "rings 1 to %d (they reached %d): %s %s null (unresolved); %s", r->t[r->ns - 1],
+                           verdict ? "at the bounce verdict (--until verdict), inside the first impact"
+                           : nobounce ? "when the block was found not to bounce, inside the first impact"
+                                      : "at t-max, inside the first impact",
+                           ip->nrings - 1, r->wave_rings, names, count > 1 ? "are" : "is",
+                           verdict ? "--until rebound runs on to T_f" : nobounce ? "--full runs on to t-max"
+                                                                        : "raise --t-max");
+}
+
 /* The crowns as set against the sample: the wave speeds fit the peak times
  * of rings 1 .. nrings - 1 and need 3 of them (layer_crowns.c), so crowns too
  * narrow to reach a particle (--ring-width 1e-9: every speed null, "0 rings"),
@@ -744,8 +785,6 @@ int layer_crowns_warning(const gw_layer_sample *smp, const gw_layer_impact_param
     if (ip->nrings < 4)
         return gw_warnings_add(list, "rings: %d crowns leave %d beyond the first, where the wave speeds need 3: "
                                "no wave speed can be read (give --rings 4 or more)", ip->nrings, ip->nrings - 1);
-    if (!(ip->ring_width > 0))
-        return GW_OK;
     int held = 0;
     for (int k = 1; k < ip->nrings && held < 3; k++) {
         int any = 0;
@@ -756,6 +795,8 @@ int layer_crowns_warning(const gw_layer_sample *smp, const gw_layer_impact_param
         held += any;
     }
     if (held >= 3)
+        return crowns_cut_warning(ip, r, list);
+    if (!(ip->ring_width > 0))
         return GW_OK;
     return gw_warnings_add(list, "ring-width: crowns %g m wide around the impact point hold particle centres in %d "
                            "of rings 1 to %d, where the wave speeds need 3: no wave speed can be read (the default "

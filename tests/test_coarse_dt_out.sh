@@ -77,12 +77,15 @@ same v2 v0 t_end 1e-9 && ok "--until verdict --dt-out 0.2 stops at the verdict's
 same v2 v0 e_n_first 1e-9 && ok "control: --until verdict --dt-out 0.2 gives the default's e_n_first" ||
     ko "--until verdict --dt-out 0.2: e_n_first $(field v2 e_n_first), the default $(field v0 e_n_first)"
 
-# 2: the reason named (the default sampling of these runs leaves the speeds null too)
-[ "$(field v0 wave_speed)" = None ] && [ "$(warned v0 '')" = "" ] &&
-    ok "control: --until verdict at the default sampling: speeds null, no warning" ||
+# 2: the reason named (the default sampling of these runs leaves the speeds null
+# too; since the fifty-third pass both say the run's end, the wave's strain peaks
+# in 1 ring at the verdict: test_hostile_fiftythird)
+[ "$(field v0 wave_speed)" = None ] && [ "$(warned v0 '')" = "$(warned v0 'crowns: the run ended at t = ')" ] &&
+    [ -n "$(warned v0 '')" ] &&
+    ok "control: --until verdict at the default sampling: speeds null, the run's end alone said" ||
     ko "--until verdict at the default sampling: wave_speed $(field v0 wave_speed), warnings '$(warned v0 '')'"
-[ "$(field v2 wave_speed)" = None ] && [ "$(warned v2 '')" = "" ] &&
-    ok "--until verdict --dt-out 0.2: speeds null, no warning, as the default sampling" ||
+[ "$(field v2 wave_speed)" = None ] && [ "$(warned v2 '')" = "$(warned v0 '')" ] &&
+    ok "--until verdict --dt-out 0.2: speeds null, the default sampling's warning alone (no dt-out)" ||
     ko "--until verdict --dt-out 0.2: wave_speed $(field v2 wave_speed), warnings '$(warned v2 '')'"
 # rk4 at a step (3e-6 s) that does not divide 0.2 s: its samples were its
 # checks, and the until/t-max wording was checked there; since the forty-fourth

@@ -123,6 +123,16 @@ static int cv_nomem(int flag)
 
 static const gw_sun_stepper cv_stepper;
 
+/* CVODE's root function: the system's, and after each step a peek asked for
+ * during the call read in the step that holds it (gw_sun_peek_catch). */
+static int cv_roots(realtype t, N_Vector y, realtype *g, void *ud)
+{
+    gw_solver *s = ud;
+    cv_impl *c = s->impl;
+    gw_sun_peek_catch(s, &c->pk, t, y);
+    return gw_sun_roots(t, y, g, ud);
+}
+
 static int cv_create(gw_solver *s, double t0, const double *y0, gw_err *err)
 {
     int method = s->p.method == GW_METHOD_DEFAULT ? GW_CVODE_BDF : s->p.method;
@@ -202,7 +212,7 @@ static int cv_create(gw_solver *s, double t0, const double *y0, gw_err *err)
         CV_TRY(CVodeSetNonlinearSolver(c->mem, c->NLS), "CVodeSetNonlinearSolver");
     }
     if (s->sys.nroots > 0)
-        CV_TRY(CVodeRootInit(c->mem, s->sys.nroots, gw_sun_roots), "CVodeRootInit");
+        CV_TRY(CVodeRootInit(c->mem, s->sys.nroots, cv_roots), "CVodeRootInit");
     return GW_OK;
 }
 

@@ -20,4 +20,13 @@ static inline void gw_hermite(double th, double h, double w[4])
     w[3] = -th * th * u * h;
 }
 
+/* The rates of the four weights in time (d/dt of gw_hermite's, same order). */
+static inline void gw_hermite_rate(double th, double h, double w[4])
+{
+    w[0] = 6 * th * (th - 1) / h;
+    w[1] = (3 * th - 1) * (th - 1);
+    w[2] = -w[0];
+    w[3] = th * (3 * th - 2);
+}
+
 #endif

@@ -406,14 +406,22 @@ void gw_sun_peek_start(gw_sun_peek *k, double t)
     k->have0 = 0;
     k->want = 0;
     k->got = 0;
+    k->rec = 0;
+    k->nend = 0;
 }
 
 void gw_sun_peek_free(gw_sun_peek *k)
 {
-    N_Vector *v[] = {&k->yp, &k->y0, &k->d0, &k->d1};
+    N_Vector *v[] = {&k->yp, &k->y0, &k->d0, &k->d1, &k->ym, &k->fm};
     for (size_t i = 0; i < sizeof v / sizeof *v; i++)
         if (*v[i])
             N_VDestroy(*v[i]), *v[i] = NULL;
+    for (int i = 0; i < GW_SUN_PEEK_ENDS; i++) {
+        if (k->yend[i])
+            N_VDestroy(k->yend[i]), k->yend[i] = NULL;
+        if (k->fend[i])
+            N_VDestroy(k->fend[i]), k->fend[i] = NULL;
+    }
 }
 
 int gw_sun_peek_pending(gw_solver *s, gw_sun_peek *k, double *t, double *y, int *roots)
@@ -428,20 +436,34 @@ int gw_sun_peek_pending(gw_solver *s, gw_sun_peek *k, double *t, double *y, int 
     return k->st->root_info(s, roots);
 }
 
-void gw_sun_peek_catch(gw_solver *s, gw_sun_peek *k)
+void gw_sun_peek_catch(gw_solver *s, gw_sun_peek *k, double t, N_Vector y)
 {
     const double p = k->want;
-    if (!(p > 0))
+    if (!(p > 0) && !k->rec)
         return;
     long nst = 0;
     double tn = 0, hnext = 0, hu = 0;
     k->st->where(s, &nst, &tn, &hnext, &hu);
     /* (a restart's first root check: its time tn, the peek after it) */
-    if (hu > 0 && p >= tn - hu && p <= tn && k->st->dky(s, p, 0, k->yp) == 0) {
+    if (p > 0 && hu > 0 && p >= tn - hu && p <= tn && k->st->dky(s, p, 0, k->yp) == 0) {
         k->got = 1;
         k->got_t = p;
         k->want = 0;
     }
+    /* a step's end (the root function at the step's end, its state there):
+     * kept from the last one before the peek on, while there is room */
+    if (!k->rec || t != tn || !(hu > 0) || (k->nend > 0 && !(tn > k->tend[k->nend - 1])))
+        return;
+    int i = k->want > 0 ? 0 : k->nend; /* before the peek: only the last end */
+    if (i >= GW_SUN_PEEK_ENDS)
+        return;
+    if ((!k->yend[i] && !(k->yend[i] = N_VClone(k->y))) || (!k->fend[i] && !(k->fend[i] = N_VClone(k->y))))
+        return; /* (no room: the Hermite spans the steps left) */
+    N_VScale(1.0, y, k->yend[i]);
+    if (s->sys.rhs(tn, N_VGetArrayPointer(k->yend[i]), N_VGetArrayPointer(k->fend[i]), s->sys.params) != 0)
+        return;
+    k->tend[i] = tn;
+    k->nend = i + 1;
 }
 
 /* The state at p into k->yp: the one read in the step that held it during the
@@ -464,27 +486,65 @@ static void peek_state(gw_solver *s, gw_sun_peek *k, double p)
         k->st->dky(s, fmin(tn, fmax(tn - hu, p)), 0, k->yp);
         return;
     }
-    const double t1 = tn - hu, H = t1 - t0, u = H > 0 ? (p - t0) / H : 1;
-    k->st->dky(s, t1, 0, k->yp);
-    k->st->dky(s, t1, 1, k->d1);
+    /* the Hermite's ends: the kept steps' ends around p (gw_sun_peek_catch),
+     * else the call's start and the last step's */
+    double ta = t0, tb = tn - hu;
+    const double *y0 = N_VGetArrayPointer(k->y0), *d0 = N_VGetArrayPointer(k->d0);
+    const double *yb = NULL, *fb = NULL;
+    for (int i = 0; i < k->nend; i++) {
+        if (k->tend[i] <= p && k->tend[i] > ta)
+            ta = k->tend[i], y0 = N_VGetArrayPointer(k->yend[i]), d0 = N_VGetArrayPointer(k->fend[i]);
+        if (k->tend[i] >= p && k->tend[i] < tb)
+            tb = k->tend[i], yb = N_VGetArrayPointer(k->yend[i]), fb = N_VGetArrayPointer(k->fend[i]);
+    }
+    const int have = ta > t0 ? 1 : have0;
+    const double t1 = tb, H = t1 - ta, u = H > 0 ? (p - ta) / H : 1;
+    if (!yb) {
+        k->st->dky(s, t1, 0, k->yp);
+        k->st->dky(s, t1, 1, k->d1);
+    } else {
+        memcpy(N_VGetArrayPointer(k->yp), yb, (size_t)s->sys.dim * sizeof *yb);
+        memcpy(N_VGetArrayPointer(k->d1), fb, (size_t)s->sys.dim * sizeof *fb);
+    }
     double w[4];
     gw_hermite(u, H, w);
     double *yp = N_VGetArrayPointer(k->yp), *d1 = N_VGetArrayPointer(k->d1);
-    const double *y0 = N_VGetArrayPointer(k->y0), *d0 = N_VGetArrayPointer(k->d0);
-    for (long i = 0; i < s->sys.dim; i++)
-        yp[i] = have0 == 1 ? w[0] * y0[i] + w[1] * d0[i] + w[2] * yp[i] + w[3] * d1[i]
-                           : (1 - u) * y0[i] + u * yp[i];
+    const long n = s->sys.dim;
+    if (have != 1) {
+        for (long i = 0; i < n; i++)
+            yp[i] = (1 - u) * y0[i] + u * yp[i];
+        return;
+    }
+    /* a quartic: the cubic plus c th^2 (1 - th)^2, whose c gives the system's
+     * rate at th = 2/3 of the interval (as ARKode's dense output of degree 4
+     * is made from its cubic): an error of fifth order in H, not fourth */
+    double *ym = N_VGetArrayPointer(k->ym), *fm = N_VGetArrayPointer(k->fm);
+    double wm[4], dm[4];
+    const double um = 2.0 / 3;
+    gw_hermite(um, H, wm);
+    gw_hermite_rate(um, H, dm);
+    for (long i = 0; i < n; i++)
+        ym[i] = wm[0] * y0[i] + wm[1] * d0[i] + wm[2] * yp[i] + wm[3] * d1[i];
+    const int quartic = H > 0 && s->sys.rhs(ta + um * H, ym, fm, s->sys.params) == 0;
+    const double q = u * u * (1 - u) * (1 - u), dq = -4.0 / (27 * H); /* th^2 (1 - th)^2 and its rate at 2/3 */
+    for (long i = 0; i < n; i++) {
+        double c = 0;
+        if (quartic)
+            c = (fm[i] - (dm[0] * y0[i] + dm[1] * d0[i] + dm[2] * yp[i] + dm[3] * d1[i])) / dq;
+        yp[i] = w[0] * y0[i] + w[1] * d0[i] + w[2] * yp[i] + w[3] * d1[i] + c * q;
+    }
 }
 
 int gw_sun_advance_peek(gw_solver *s, gw_sun_peek *k, double tout, double *t, double *y, int *roots)
 {
     const gw_sun_stepper *st = k->st;
     const double p = s->peek;
-    if (!k->yp && (!(k->yp = N_VClone(k->y)) || !(k->y0 = N_VClone(k->y)) || !(k->d0 = N_VClone(k->y)) ||
-                   !(k->d1 = N_VClone(k->y)))) {
-        gw_solver_set_error(s, "%s: out of memory for the state at t = %.9g s", st->name, p);
-        return GW_ENOMEM;
-    }
+    N_Vector *v[] = {&k->yp, &k->y0, &k->d0, &k->d1, &k->ym, &k->fm};
+    for (size_t i = 0; i < sizeof v / sizeof *v; i++)
+        if (!*v[i] && !(*v[i] = N_VClone(k->y))) {
+            gw_solver_set_error(s, "%s: out of memory for the state at t = %.9g s", st->name, p);
+            return GW_ENOMEM;
+        }
     if ((k->pend == 1 && k->pend_tout != tout) || (k->pend == 2 && k->pend_t > tout))
         k->pend = 0;
     if (k->pend && p > k->pend_t)
@@ -530,9 +590,9 @@ int gw_sun_advance_peek(gw_solver *s, gw_sun_peek *k, double tout, double *t, do
                 break;
             }
             double tret = *k->t;
-            k->want = p, k->got = 0;
+            k->want = p, k->got = 0, k->rec = normal, k->nend = 0;
             flag = st->evolve(s, tout, &tret, !normal);
-            k->want = 0;
+            k->want = 0, k->rec = 0;
             k->tlast = tret;
             if (flag < 0) {
                 *k->t = tret;

@@ -162,6 +162,7 @@ typedef struct gw_sun_peek {
     /* the state at the peek, the one at the start of a call towards tout and
      * both derivatives (a peek before the last of its steps, cubic Hermite) */
     N_Vector yp, y0, d0, d1;
+    N_Vector ym, fm; /* the Hermite's state and rate at 2/3 of its interval */
     int have0;        /* y0 at t0 kept for the Hermite: 1 with its rate d0, 2 without */
     double t0;
     int pend;         /* held back: 1 tout reached (pend_t = pend_tout), 2 a root at pend_t */
@@ -173,7 +174,15 @@ typedef struct gw_sun_peek {
      * during the call, got 1 with yp the state at got_t */
     double want, got_t;
     int got;
+    /* the ends of the steps of a call towards tout (rec 1), from the last
+     * one before the peek on: their times, states and rates, so that a later
+     * peek before the return held back is read in its own step (at most
+     * GW_SUN_PEEK_ENDS; past them the Hermite spans the steps left) */
+    int rec, nend;
+    double tend[16];
+    N_Vector yend[16], fend[16];
 } gw_sun_peek;
+enum { GW_SUN_PEEK_ENDS = 16 };
 
 /* The driver's state at a start (the set-up or a restart at t). */
 void gw_sun_peek_start(gw_sun_peek *k, double t);
@@ -187,8 +196,9 @@ int gw_sun_peek_pending(gw_solver *s, gw_sun_peek *k, double *t, double *y, int 
  * advance would have made before it. */
 int gw_sun_advance_peek(gw_solver *s, gw_sun_peek *k, double tout, double *t, double *y, int *roots);
 /* From the backend's root function, called after each step it takes (and in
- * its root search): the peek asked for during the call, read from the dense
- * output of the step just taken when that step holds it. */
-void gw_sun_peek_catch(gw_solver *s, gw_sun_peek *k);
+ * its root search, (t, y) its arguments): the peek asked for during the call,
+ * read from the dense output of the step just taken when that step holds it,
+ * and the step's end kept (gw_sun_peek.rec). */
+void gw_sun_peek_catch(gw_solver *s, gw_sun_peek *k, double t, N_Vector y);
 
 #endif

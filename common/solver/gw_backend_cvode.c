@@ -283,11 +283,6 @@ static int cv_evolve(gw_solver *s, double tout, double *tret, int one_step)
     return flag < 0 ? flag : flag == CV_ROOT_RETURN;
 }
 
-static int cv_failed_at(gw_solver *s, int flag, double tret)
-{
-    return cv_failed(s, flag, tret);
-}
-
 static int cv_root_info(gw_solver *s, int *roots)
 {
     cv_impl *c = s->impl;
@@ -323,7 +318,7 @@ static int cv_first_normal(gw_solver *s, double tout)
 }
 
 static const gw_sun_stepper cv_stepper = {"cvode", "CV_TOO_MUCH_WORK", cv_where, cv_dky, cv_prepare, cv_evolve,
-                                          cv_failed_at, cv_root_info, cv_grow, cv_first_normal, NULL};
+                                          cv_failed, cv_root_info, cv_grow, cv_first_normal, NULL};
 
 /* An advance towards tout with a peek p before it (gw_solver_set_peek),
  * gw_sun_advance_peek: the CVode calls an advance to tout makes without it,

@@ -460,10 +460,19 @@ void gw_sun_peek_catch(gw_solver *s, gw_sun_peek *k, double t, N_Vector y)
     if ((!k->yend[i] && !(k->yend[i] = N_VClone(k->y))) || (!k->fend[i] && !(k->fend[i] = N_VClone(k->y))))
         return; /* (no room: the Hermite spans the steps left) */
     N_VScale(1.0, y, k->yend[i]);
-    if (s->sys.rhs(tn, N_VGetArrayPointer(k->yend[i]), N_VGetArrayPointer(k->fend[i]), s->sys.params) != 0)
-        return;
     k->tend[i] = tn;
+    k->fok[i] = 0; /* (its rate when a peek reads it: end_rate) */
     k->nend = i + 1;
+}
+
+/* The rate at the kept end i (the system's rhs there, once): 1, or 0 when the
+ * rhs failed. */
+static int end_rate(gw_solver *s, gw_sun_peek *k, int i)
+{
+    if (!k->fok[i])
+        k->fok[i] = s->sys.rhs(k->tend[i], N_VGetArrayPointer(k->yend[i]), N_VGetArrayPointer(k->fend[i]),
+                               s->sys.params) == 0;
+    return k->fok[i];
 }
 
 /* The state at p into k->yp: the one read in the step that held it during the
@@ -491,12 +500,21 @@ static void peek_state(gw_solver *s, gw_sun_peek *k, double p)
     double ta = t0, tb = tn - hu;
     const double *y0 = N_VGetArrayPointer(k->y0), *d0 = N_VGetArrayPointer(k->d0);
     const double *yb = NULL, *fb = NULL;
+    int ia = -1, ib = -1;
     for (int i = 0; i < k->nend; i++) {
         if (k->tend[i] <= p && k->tend[i] > ta)
-            ta = k->tend[i], y0 = N_VGetArrayPointer(k->yend[i]), d0 = N_VGetArrayPointer(k->fend[i]);
+            ta = k->tend[i], ia = i;
         if (k->tend[i] >= p && k->tend[i] < tb)
-            tb = k->tend[i], yb = N_VGetArrayPointer(k->yend[i]), fb = N_VGetArrayPointer(k->fend[i]);
+            tb = k->tend[i], ib = i;
     }
+    if (ia >= 0 && end_rate(s, k, ia))
+        y0 = N_VGetArrayPointer(k->yend[ia]), d0 = N_VGetArrayPointer(k->fend[ia]);
+    else
+        ta = t0;
+    if (ib >= 0 && end_rate(s, k, ib))
+        yb = N_VGetArrayPointer(k->yend[ib]), fb = N_VGetArrayPointer(k->fend[ib]);
+    else
+        tb = tn - hu;
     const int have = ta > t0 ? 1 : have0;
     const double t1 = tb, H = t1 - ta, u = H > 0 ? (p - ta) / H : 1;
     if (!yb) {

@@ -181,6 +181,7 @@ typedef struct gw_sun_peek {
     int rec, nend;
     double tend[16];
     N_Vector yend[16], fend[16];
+    int fok[16]; /* fend[i] computed */
 } gw_sun_peek;
 enum { GW_SUN_PEEK_ENDS = 16 };
 

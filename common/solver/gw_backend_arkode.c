@@ -367,14 +367,16 @@ static int ark_roots(realtype t, N_Vector y, realtype *g, void *ud)
  * call. The step that may reach tout: the one ARKode will try next
  * (ERKStepGetCurrentStep; failed tests only shorten it), after a root return
  * the step taken times ark_grow; a start's first call is towards tout
- * (ark_first_normal). A call towards tout may take several steps: the state
- * at p is read by the root function in the step that holds it
- * (gw_sun_peek_catch), where the dense output is that step's, else (a system
- * without roots, or a second peek before the return held back) from the last
- * step, or a cubic Hermite from the call's start (its rate the system's rhs at
- * a start) to the last step's. Stopping at p instead changed the run: e_n by
- * 7.6e-8 at --dt-out 3e-5 on the 40-disc pile of `layer-make --n 40`
- * (test_dt_out_bitwise). */
+ * (ark_first_normal). Such a call may take several steps, and ARKode's dense
+ * output covers only the last (ARKStepGetDky refuses a t before it, whatever
+ * the interpolant's type or degree; setting either changes the outputs at
+ * tout and the roots, which are interpolated): the state at p is read by the
+ * root function in the step that holds it (gw_sun_peek_catch), and the ends
+ * of the call's later steps are kept for a later peek before the return held
+ * back (a quartic in its own step); a cubic Hermite over several steps (4.6e-3
+ * off on test_solver_peek's oscillator, erk) is left for peeks past the kept
+ * ends. Stopping at p instead changed the run: e_n by 7.6e-8 at --dt-out 3e-5
+ * on the 40-disc pile of `layer-make --n 40` (test_dt_out_bitwise). */
 static int ark_advance(gw_solver *s, double tout, double *t, double *y, int *roots)
 {
     ark_impl *a = s->impl;

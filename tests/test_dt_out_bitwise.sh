@@ -22,7 +22,7 @@
 #    the crowns are read at the checks when the samples are coarser.
 #  3 arkode still stopped at every sample: e_n moved by 7.6e-8 at --dt-out
 #    3e-5, 7.0e-8 at 1e-5 and 9.3e-9 at 7e-6 (t_end 0.30603 s against
-#    0.30604). It now reads them on the way as cvode does (ark_advance_peek:
+#    0.30604). It now reads them on the way as cvode does (gw_sun_advance_peek:
 #    ARKode's dense output in the step that passed the sample).
 #  4 energy_error took the samples between the checks (read on the way,
 #    interpolated): cvode at --dt-out 7e-6 read 1.41879066e-6 against

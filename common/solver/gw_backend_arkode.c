@@ -39,17 +39,8 @@ typedef struct ark_impl {
     double t;
     int erk;        /* mem is an ERKStep (the erk method), else an ARKStep */
     int first_step; /* a first step given, set at the first advance (gw_sun_init_step) */
-    /* a peek (gw_solver_set_peek), as cvode's (cv_advance_peek): the state
-     * there, the one at the start of a call in ARK_NORMAL mode and both
-     * derivatives (a peek before the last of its steps, cubic Hermite) */
-    N_Vector yp, y0, d0, d1;
+    gw_sun_peek pk;  /* a peek (gw_solver_set_peek): gw_sun_advance_peek's state */
     int fresh;       /* no step since the set-up or the last reset (the first step not yet taken) */
-    int root_last;   /* the last return was a root, no reset since */
-    int have0;       /* a->y0 at t0 kept for the Hermite: 1 with its rate a->d0, 2 without */
-    double t0;
-    int pend;        /* held back: 1 tout reached (pend_t = pend_tout), 2 a root at pend_t */
-    double pend_t, pend_tout;
-    double tlast;    /* the time ARKode last returned (roots searched up to it) */
 } ark_impl;
 
 /* ARKStepGetReturnFlagName returns a malloc'ed string: copy it and free it. */
@@ -77,16 +68,15 @@ static void ark_destroy(gw_solver *s)
         N_VDestroy(a->abstol);
     if (a->y)
         N_VDestroy(a->y);
-    N_Vector *peek[] = {&a->yp, &a->y0, &a->d0, &a->d1};
-    for (size_t i = 0; i < sizeof peek / sizeof *peek; i++)
-        if (*peek[i])
-            N_VDestroy(*peek[i]);
+    gw_sun_peek_free(&a->pk);
     if (a->ctx)
         SUNContext_Free(&a->ctx);
     free(a->rootinfo);
     free(a);
     s->impl = NULL;
 }
+
+static int ark_roots(realtype t, N_Vector y, realtype *g, void *ud);
 
 /* Configure the created ERKStep memory (erk): the same settings as
  * ark_configure through ERKStep's calls; returns the failing call's name or NULL. */
@@ -112,7 +102,7 @@ static const char *erk_configure(gw_solver *s, ark_impl *a, int *flag)
         ERK_CHECK(ERKStepSetMaxStep(a->mem, s->p.dt_max));
     ERK_CHECK(ERKStepSetTableName(a->mem, "ARKODE_CASH_KARP_6_4_5"));
     if (s->sys.nroots > 0)
-        ERK_CHECK(ERKStepRootInit(a->mem, s->sys.nroots, gw_sun_roots));
+        ERK_CHECK(ERKStepRootInit(a->mem, s->sys.nroots, ark_roots));
 #undef ERK_CHECK
     return NULL;
 }
@@ -162,10 +152,12 @@ static const char *ark_configure(gw_solver *s, ark_impl *a, int method, int *fla
         }
     }
     if (s->sys.nroots > 0)
-        ARK_CHECK(ARKStepRootInit(a->mem, s->sys.nroots, gw_sun_roots));
+        ARK_CHECK(ARKStepRootInit(a->mem, s->sys.nroots, ark_roots));
 #undef ARK_CHECK
     return NULL;
 }
+
+static const gw_sun_stepper ark_stepper;
 
 static int ark_create(gw_solver *s, double t0, const double *y0, gw_err *err)
 {
@@ -195,7 +187,10 @@ static int ark_create(gw_solver *s, double t0, const double *y0, gw_err *err)
     }
     memcpy(N_VGetArrayPointer(a->y), y0, (size_t)s->sys.dim * sizeof *y0);
     a->t = t0;
-    a->tlast = t0;
+    a->pk.st = &ark_stepper;
+    a->pk.y = a->y;
+    a->pk.t = &a->t;
+    gw_sun_peek_start(&a->pk, t0);
     a->fresh = 1;
     a->erk = method == GW_ARKODE_ERK;
     /* ERKStep touches the vectors only through their ops: a right-hand side
@@ -287,155 +282,109 @@ static int ark_root_info(gw_solver *s, ark_impl *a, int *roots)
     return GW_ROOT;
 }
 
-/* A return held back by a peek, now given (ark_advance_peek). */
-static int ark_pending(gw_solver *s, ark_impl *a, double *t, double *y, int *roots)
-{
-    const int root = a->pend == 2;
-    a->pend = 0;
-    a->t = a->pend_t;
-    *t = a->t;
-    gw_sun_copy_out(a->y, y, s->sys.dim);
-    if (!root)
-        return GW_OK;
-    return ark_root_info(s, a, roots);
-}
-
-/* The state at p into a->yp: ARKode's dense output within its last step; a p
- * before it (a call in ARK_NORMAL mode of several steps, from t0 where the
- * state was a->y0 and its rate a->d0, have0 1; have0 2: the rate unknown) by
- * a cubic Hermite between t0 and the last step's start (cv_peek_state). */
-static void ark_peek_state(gw_solver *s, ark_impl *a, double p)
-{
-    const int have0 = a->have0;
-    const double t0 = a->t0;
-    long nst = 0;
-    double tn = 0, hcur = 0, hu = 0;
-    ark_where(a, &nst, &tn, &hcur, &hu);
-    if ((p >= tn - hu && p <= tn) || !have0) {
-        ark_dky(a, fmin(tn, fmax(tn - hu, p)), 0, a->yp);
-        return;
-    }
-    const double t1 = tn - hu, H = t1 - t0, u = H > 0 ? (p - t0) / H : 1;
-    ark_dky(a, t1, 0, a->yp);
-    ark_dky(a, t1, 1, a->d1);
-    const double u2 = u * u, u3 = u2 * u;
-    const double h00 = 2 * u3 - 3 * u2 + 1, h10 = (u3 - 2 * u2 + u) * H, h01 = -2 * u3 + 3 * u2,
-                 h11 = (u3 - u2) * H;
-    double *yp = N_VGetArrayPointer(a->yp), *d1 = N_VGetArrayPointer(a->d1);
-    const double *y0 = N_VGetArrayPointer(a->y0), *d0 = N_VGetArrayPointer(a->d0);
-    for (long i = 0; i < s->sys.dim; i++)
-        yp[i] = have0 == 1 ? h00 * y0[i] + h10 * d0[i] + h01 * yp[i] + h11 * d1[i]
-                           : (1 - u) * y0[i] + u * yp[i];
-}
-
-/* An advance towards tout with a peek p before it (gw_solver_set_peek), as
- * cvode's (cv_advance_peek says why): the Evolve calls an advance to tout
- * makes without it, ARK_NORMAL towards tout, taken one step at a time
- * (ARK_ONE_STEP) while the next step cannot reach tout, so that the dense
- * output at p is in the step that passed it; a step that may reach tout is
- * taken in ARK_NORMAL mode, whose root search ends at tout, and that call's
- * return is held back and given at the next call. The step that may reach
- * tout: the one ARKode will try next (ERKStepGetCurrentStep; failed tests
- * only shorten it); after a root return that is the step last taken, and
- * the next may grow by ARKode's largest factor (1e4 on the first step after
- * a start, 20 after: its defaults, not set here), so 1e4 is allowed for. A
- * start's first call (after the set-up or a reset) is in ARK_NORMAL mode:
- * ARKode's first step estimated is not bounded by the way to tout (measured:
- * 3.9e-5 s where tout was 2e-5 s ahead), and one taken in ARK_ONE_STEP mode
- * past tout searched its roots beyond it; a p before that call's last step
- * is then a cubic Hermite from the start, its rate the system's rhs. Stopping at p instead changed
- * the run: e_n by 7.6e-8 at --dt-out 3e-5 on the 40-disc pile of `layer-make
- * --n 40` (test_dt_out_bitwise). */
-static int ark_advance_peek(gw_solver *s, double tout, double *t, double *y, int *roots)
+/* The stepper's calls for gw_sun_advance_peek. */
+static int ark_where_peek(gw_solver *s, long *nst, double *tn, double *hnext, double *hlast)
 {
     ark_impl *a = s->impl;
-    const double p = s->peek;
-    if (!a->yp && (!(a->yp = N_VClone(a->y)) || !(a->y0 = N_VClone(a->y)) || !(a->d0 = N_VClone(a->y)) ||
-                   !(a->d1 = N_VClone(a->y)))) {
-        gw_solver_set_error(s, "arkode: out of memory for the state at t = %.9g s", p);
-        return GW_ENOMEM;
-    }
-    if ((a->pend == 1 && a->pend_tout != tout) || (a->pend == 2 && a->pend_t > tout))
-        a->pend = 0;
-    if (a->pend && p > a->pend_t)
-        return ark_pending(s, a, t, y, roots);
-    if (a->pend) { /* another peek before the return held back */
-        ark_peek_state(s, a, p);
-    } else {
-        int flag = ark_first_step(s, a, tout);
-        if (flag < 0)
-            return ark_failed(s, flag, a->t);
-        for (long steps = 0;; steps++) {
-            if (s->p.max_steps > 0 && steps >= s->p.max_steps) {
-                gw_solver_set_error(s, "arkode failed at t = %.9g s (ARK_TOO_MUCH_WORK): more than %ld steps "
-                                    "towards t = %.9g s", a->t, s->p.max_steps, tout);
-                return GW_ELIMIT;
-            }
-            long nst = 0;
-            double tn = a->t, hcur = 0, hu = 0;
-            if (!a->fresh)
-                ark_where(a, &nst, &tn, &hcur, &hu);
-            const double grow = a->root_last ? 1e4 : 1;
-            const int normal = a->fresh || tn >= tout || (p > tn && tn + grow * hcur >= tout);
-            a->have0 = 0;
-            a->t0 = tn;
-            if (p > tn) {
-                if (!a->fresh && ark_dky(a, tn, 0, a->y0) == ARK_SUCCESS && ark_dky(a, tn, 1, a->d0) == ARK_SUCCESS) {
-                    a->have0 = 1;
-                } else {
-                    /* a start: its state, and its rate from the system's rhs */
-                    N_VScale(1.0, a->y, a->y0);
-                    a->have0 = s->sys.rhs(tn, N_VGetArrayPointer(a->y0), N_VGetArrayPointer(a->d0), s->sys.params)
-                                   ? 2 : 1;
-                }
-            }
-            if (!a->fresh && p <= a->tlast) { /* searched, in the last step: no call */
-                ark_peek_state(s, a, p);
-                break;
-            }
-            double tret = a->t;
-            flag = ark_evolve(a, tout, &tret, normal ? ARK_NORMAL : ARK_ONE_STEP);
-            a->tlast = tret;
-            if (flag < 0) {
-                a->t = tret;
-                *t = tret;
-                gw_sun_copy_out(a->y, y, s->sys.dim);
-                return ark_failed(s, flag, tret);
-            }
-            a->fresh = 0;
-            a->root_last = flag == ARK_ROOT_RETURN;
-            if (p <= tret) {
-                ark_peek_state(s, a, p);
-                if (normal || flag == ARK_ROOT_RETURN) {
-                    a->pend = flag == ARK_ROOT_RETURN ? 2 : 1;
-                    a->pend_t = tret;
-                    a->pend_tout = tout;
-                }
-                break;
-            }
-            if (flag == ARK_ROOT_RETURN || normal) {
-                a->pend = flag == ARK_ROOT_RETURN ? 2 : 1;
-                a->pend_t = tret;
-                a->pend_tout = tout;
-                return ark_pending(s, a, t, y, roots);
-            }
-        }
-    }
-    s->peek = 0;
-    a->t = p;
-    *t = p;
-    gw_sun_copy_out(a->yp, y, s->sys.dim);
-    return GW_SOLVER_PEEK;
+    ark_where(a, nst, tn, hnext, hlast);
+    return !a->fresh;
 }
 
+static int ark_dky_peek(gw_solver *s, double t, int k, N_Vector v)
+{
+    return ark_dky(s->impl, t, k, v);
+}
+
+static int ark_prepare(gw_solver *s, double tout)
+{
+    return ark_first_step(s, s->impl, tout);
+}
+
+static int ark_evolve_peek(gw_solver *s, double tout, double *tret, int one_step)
+{
+    ark_impl *a = s->impl;
+    int flag = ark_evolve(a, tout, tret, one_step ? ARK_ONE_STEP : ARK_NORMAL);
+    if (flag < 0)
+        return flag;
+    a->fresh = 0;
+    return flag == ARK_ROOT_RETURN;
+}
+
+static int ark_root_info_peek(gw_solver *s, int *roots)
+{
+    return ark_root_info(s, s->impl, roots);
+}
+
+/* After a root return ARKode's next step may grow by its largest factor over
+ * the step taken (1e4 on the first step after a start, 20 after: its
+ * defaults, not set here), so 1e4 is allowed for. */
+static double ark_grow(gw_solver *s, long nst)
+{
+    (void)s, (void)nst;
+    return 1e4;
+}
+
+/* A start's first call (after the set-up or a reset) is towards tout when
+ * the system has roots: ARKode's first step after a reset is the step the
+ * last one chose (its estimate is not made again unless an initial step is
+ * set: ARKStepReset keeps h0u), not bounded by the way to tout (measured:
+ * 3.9e-5 s where tout was 2e-5 s ahead), and one taken in ARK_ONE_STEP mode
+ * past tout searched its roots beyond it. Without roots the mode changes
+ * only where the call returns (the steps and the output at tout are the
+ * same): one step. */
+static int ark_first_normal(gw_solver *s, double tout)
+{
+    (void)tout;
+    return s->sys.nroots > 0;
+}
+
+/* A start: the rate from the system's rhs. */
+static int ark_start_rate(gw_solver *s, double t, N_Vector y, N_Vector f)
+{
+    return !s->sys.rhs(t, N_VGetArrayPointer(y), N_VGetArrayPointer(f), s->sys.params);
+}
+
+static const gw_sun_stepper ark_stepper = {"arkode", "ARK_TOO_MUCH_WORK", ark_where_peek, ark_dky_peek, ark_prepare,
+                                           ark_evolve_peek, ark_failed, ark_root_info_peek, ark_grow,
+                                           ark_first_normal, ark_start_rate};
+
+/* ARKode's root function: the system's, and after each step a peek asked for
+ * during the call read in the step that holds it (gw_sun_peek_catch). */
+static int ark_roots(realtype t, N_Vector y, realtype *g, void *ud)
+{
+    gw_solver *s = ud;
+    ark_impl *a = s->impl;
+    gw_sun_peek_catch(s, &a->pk, t, y);
+    return gw_sun_roots(t, y, g, ud);
+}
+
+/* An advance towards tout; with a peek p before it (gw_solver_set_peek),
+ * gw_sun_advance_peek as cvode's (cv_advance's comment says why): the Evolve
+ * calls an advance to tout makes without it, ARK_NORMAL towards tout, taken
+ * one step at a time (ARK_ONE_STEP) while the next step cannot reach tout;
+ * a step that may reach tout is taken in ARK_NORMAL mode, whose root search
+ * ends at tout, and that call's return is held back and given at the next
+ * call. The step that may reach tout: the one ARKode will try next
+ * (ERKStepGetCurrentStep; failed tests only shorten it), after a root return
+ * the step taken times ark_grow; a start's first call is towards tout
+ * (ark_first_normal). Such a call may take several steps, and ARKode's dense
+ * output covers only the last (ARKStepGetDky refuses a t before it, whatever
+ * the interpolant's type or degree; setting either changes the outputs at
+ * tout and the roots, which are interpolated): the state at p is read by the
+ * root function in the step that holds it (gw_sun_peek_catch), and the ends
+ * of the call's later steps are kept for a later peek before the return held
+ * back (a quartic in its own step); a cubic Hermite over several steps (4.6e-3
+ * off on test_solver_peek's oscillator, erk) is left for peeks past the kept
+ * ends. Stopping at p instead changed the run: e_n by 7.6e-8 at --dt-out 3e-5
+ * on the 40-disc pile of `layer-make --n 40` (test_dt_out_bitwise). */
 static int ark_advance(gw_solver *s, double tout, double *t, double *y, int *roots)
 {
     ark_impl *a = s->impl;
     if (s->peek > a->t && s->peek < tout)
-        return ark_advance_peek(s, tout, t, y, roots);
-    if ((a->pend == 1 && a->pend_tout == tout) || (a->pend == 2 && a->pend_t <= tout))
-        return ark_pending(s, a, t, y, roots);
-    a->pend = 0;
+        return gw_sun_advance_peek(s, &a->pk, tout, t, y, roots);
+    if ((a->pk.pend == 1 && a->pk.pend_tout == tout) || (a->pk.pend == 2 && a->pk.pend_t <= tout))
+        return gw_sun_peek_pending(s, &a->pk, t, y, roots);
+    a->pk.pend = 0;
     double tret = a->t;
     if (fabs(tout - a->t) <= 1e-13 * fmax(fabs(tout), fabs(a->t))) {
         *t = a->t;
@@ -445,13 +394,13 @@ static int ark_advance(gw_solver *s, double tout, double *t, double *y, int *roo
     int flag = ark_first_step(s, a, tout);
     if (flag == ARK_SUCCESS)
         flag = ark_evolve(a, tout, &tret, ARK_NORMAL);
-    a->tlast = tret;
+    a->pk.tlast = tret;
     a->t = tret;
     *t = tret;
     gw_sun_copy_out(a->y, y, s->sys.dim);
     if (flag >= 0)
         a->fresh = 0;
-    a->root_last = flag == ARK_ROOT_RETURN;
+    a->pk.root_last = flag == ARK_ROOT_RETURN;
     if (flag == ARK_ROOT_RETURN) {
         return ark_root_info(s, a, roots);
     }
@@ -465,13 +414,10 @@ static int ark_reset(gw_solver *s, double t, const double *y)
     ark_impl *a = s->impl;
     memcpy(N_VGetArrayPointer(a->y), y, (size_t)s->sys.dim * sizeof *y);
     a->t = t;
-    a->tlast = t;
     int flag = a->erk ? ERKStepReset(a->mem, t, a->y) : ARKStepReset(a->mem, t, a->y);
     a->first_step = 0;
     a->fresh = 1;
-    a->root_last = 0;
-    a->pend = 0;
-    a->have0 = 0;
+    gw_sun_peek_start(&a->pk, t);
     if (flag >= 0 && s->p.dt > 0) /* the run's initial step only (cv_reset says why) */
         flag = a->erk ? ERKStepSetInitStep(a->mem, 0.0) : ARKStepSetInitStep(a->mem, 0.0);
     if (flag >= 0 && s->p.dt > 0) /* ARKode's own limit again, with its own step */

@@ -27,17 +27,8 @@ typedef struct cv_impl {
     double t;
     gw_solver_stats base; /* counters accumulated over re-initialisations */
     int first_step;       /* a first step given, set at the first advance (gw_sun_init_step) */
-    /* a peek (gw_solver_set_peek): the state there, the one at the start of a
-     * call in CV_NORMAL mode and both derivatives (a peek before the last of
-     * its steps, cubic Hermite), and a return held back by a peek */
-    N_Vector yp, y0, d0, d1;
+    gw_sun_peek pk;       /* a peek (gw_solver_set_peek): gw_sun_advance_peek's state */
     double h0_given;      /* the first step given at this start (0: CVODE's estimate) */
-    int root_last;        /* the last return was a root, no restart since */
-    int have0;            /* c->y0 at t0 kept for the Hermite: 1 with its rate c->d0, 2 without */
-    double t0;
-    int pend;             /* held back: 1 tout reached (pend_t = pend_tout), 2 a root at pend_t */
-    double pend_t, pend_tout;
-    double tlast;         /* the time CVode last returned (roots searched up to it) */
     int jac_pending;      /* re-initialised: the Jacobians counted so far are carried at the next
                              advance (cv_advance says why) */
 } cv_impl;
@@ -91,10 +82,7 @@ static void cv_destroy(gw_solver *s)
         N_VDestroy(c->abstol);
     if (c->y)
         N_VDestroy(c->y);
-    N_Vector *peek[] = {&c->yp, &c->y0, &c->d0, &c->d1};
-    for (size_t i = 0; i < sizeof peek / sizeof *peek; i++)
-        if (*peek[i])
-            N_VDestroy(*peek[i]);
+    gw_sun_peek_free(&c->pk);
     if (c->ctx)
         SUNContext_Free(&c->ctx);
     free(c->rootinfo);
@@ -133,6 +121,18 @@ static int cv_nomem(int flag)
         }                                                                            \
     } while (0)
 
+static const gw_sun_stepper cv_stepper;
+
+/* CVODE's root function: the system's, and after each step a peek asked for
+ * during the call read in the step that holds it (gw_sun_peek_catch). */
+static int cv_roots(realtype t, N_Vector y, realtype *g, void *ud)
+{
+    gw_solver *s = ud;
+    cv_impl *c = s->impl;
+    gw_sun_peek_catch(s, &c->pk, t, y);
+    return gw_sun_roots(t, y, g, ud);
+}
+
 static int cv_create(gw_solver *s, double t0, const double *y0, gw_err *err)
 {
     int method = s->p.method == GW_METHOD_DEFAULT ? GW_CVODE_BDF : s->p.method;
@@ -157,7 +157,10 @@ static int cv_create(gw_solver *s, double t0, const double *y0, gw_err *err)
     }
     memcpy(N_VGetArrayPointer(c->y), y0, (size_t)s->sys.dim * sizeof *y0);
     c->t = t0;
-    c->tlast = t0;
+    c->pk.st = &cv_stepper;
+    c->pk.y = c->y;
+    c->pk.t = &c->t;
+    gw_sun_peek_start(&c->pk, t0);
     c->mem = CVodeCreate(method == GW_CVODE_BDF ? CV_BDF : CV_ADAMS, c->ctx);
     if (!c->mem) {
         cv_destroy(s);
@@ -209,7 +212,7 @@ static int cv_create(gw_solver *s, double t0, const double *y0, gw_err *err)
         CV_TRY(CVodeSetNonlinearSolver(c->mem, c->NLS), "CVodeSetNonlinearSolver");
     }
     if (s->sys.nroots > 0)
-        CV_TRY(CVodeRootInit(c->mem, s->sys.nroots, gw_sun_roots), "CVodeRootInit");
+        CV_TRY(CVodeRootInit(c->mem, s->sys.nroots, cv_roots), "CVodeRootInit");
     return GW_OK;
 }
 
@@ -247,169 +250,96 @@ static void cv_jac_carry(cv_impl *c)
     c->jac_pending = 0;
 }
 
-/* A return held back by a peek, now given (cv_advance_peek). */
-static int cv_pending(gw_solver *s, cv_impl *c, double *t, double *y, int *roots)
+/* The stepper's calls for gw_sun_advance_peek. */
+static int cv_where(gw_solver *s, long *nst, double *tn, double *hnext, double *hlast)
 {
-    const int root = c->pend == 2;
-    c->pend = 0;
-    c->t = c->pend_t;
-    *t = c->t;
-    gw_sun_copy_out(c->y, y, s->sys.dim);
-    if (!root)
-        return GW_OK;
+    cv_impl *c = s->impl;
+    CVodeGetNumSteps(c->mem, nst);
+    CVodeGetCurrentTime(c->mem, tn);
+    CVodeGetCurrentStep(c->mem, hnext);
+    CVodeGetLastStep(c->mem, hlast);
+    return *nst > 0;
+}
+
+static int cv_dky(gw_solver *s, double t, int k, N_Vector v)
+{
+    cv_impl *c = s->impl;
+    return CVodeGetDky(c->mem, t, k, v);
+}
+
+static int cv_prepare(gw_solver *s, double tout)
+{
+    cv_impl *c = s->impl;
+    int flag = cv_first_step(s, c, tout);
+    if (flag >= 0)
+        cv_jac_carry(c);
+    return flag;
+}
+
+static int cv_evolve(gw_solver *s, double tout, double *tret, int one_step)
+{
+    cv_impl *c = s->impl;
+    int flag = CVode(c->mem, tout, c->y, tret, one_step ? CV_ONE_STEP : CV_NORMAL);
+    return flag < 0 ? flag : flag == CV_ROOT_RETURN;
+}
+
+static int cv_root_info(gw_solver *s, int *roots)
+{
+    cv_impl *c = s->impl;
     CVodeGetRootInfo(c->mem, c->rootinfo);
     if (roots)
         memcpy(roots, c->rootinfo, (size_t)s->sys.nroots * sizeof *roots);
     return GW_ROOT;
 }
 
-/* The state at p into c->yp: CVODE's interpolation within its last step; a p
- * before it (a CV_NORMAL call of several steps, from t0 where the state was
- * c->y0 and its rate c->d0, have0 1; have0 2: the rate unknown, a restart's
- * first call) by a cubic Hermite between t0 and the last step's start. */
-static void cv_peek_state(gw_solver *s, cv_impl *c, double p)
+/* the step CVODE tries next (CVodeGetCurrentStep: failed tests only shorten
+ * it) is its hprime after a return at tout or in CV_ONE_STEP mode; after a
+ * root return it is the step last taken, and the next may grow by CVODE's
+ * largest factor. No getter gives hprime there (CVodeGetCurrentStep,
+ * CVodeGetLastStep and CVodeGetIntegratorStats give the step taken), so this
+ * relies on CVODE 6.4's growth limits (ETAMX1 1e4 on a start's first step,
+ * ETAMX2 and ETAMX3 10 after; taken as 1e4 over the first 10 steps): a larger
+ * growth would take a step that reaches tout in CV_ONE_STEP mode, whose root
+ * search then passes tout (the run would differ from the one without the peek
+ * in a root's bracket, not fail). */
+static double cv_grow(gw_solver *s, long nst)
 {
-    const int have0 = c->have0;
-    const double t0 = c->t0;
-    double tn = 0, hu = 0;
-    CVodeGetCurrentTime(c->mem, &tn);
-    CVodeGetLastStep(c->mem, &hu);
-    if ((p >= tn - hu && p <= tn) || !have0) {
-        CVodeGetDky(c->mem, fmin(tn, fmax(tn - hu, p)), 0, c->yp);
-        return;
-    }
-    const double t1 = tn - hu, H = t1 - t0, u = H > 0 ? (p - t0) / H : 1;
-    CVodeGetDky(c->mem, t1, 0, c->yp);
-    CVodeGetDky(c->mem, t1, 1, c->d1);
-    const double u2 = u * u, u3 = u2 * u;
-    const double h00 = 2 * u3 - 3 * u2 + 1, h10 = (u3 - 2 * u2 + u) * H, h01 = -2 * u3 + 3 * u2,
-                 h11 = (u3 - u2) * H;
-    double *yp = N_VGetArrayPointer(c->yp), *d1 = N_VGetArrayPointer(c->d1);
-    const double *y0 = N_VGetArrayPointer(c->y0), *d0 = N_VGetArrayPointer(c->d0);
-    for (long i = 0; i < s->sys.dim; i++)
-        yp[i] = have0 == 1 ? h00 * y0[i] + h10 * d0[i] + h01 * yp[i] + h11 * d1[i]
-                           : (1 - u) * y0[i] + u * yp[i];
+    (void)s;
+    return nst <= 10 ? 1e4 : 10;
 }
 
-/* An advance towards tout with a peek p before it (gw_solver_set_peek): the
- * CVode calls an advance to tout makes without it, CV_NORMAL towards tout,
- * taken one step at a time (CV_ONE_STEP) while the next step cannot reach
- * tout, so that the interpolation at p is in the step that passed it. A step
- * that may reach tout is taken in CV_NORMAL mode, whose root search ends at
- * tout (CV_ONE_STEP's at the step's end: a root there was located on another
- * bracket). The return that call makes (tout reached, a root after p) is held
- * back and given at the next call. Stopping at p instead (CVode towards p)
- * changed the run: another first step after each restart (CVODE's estimate
- * knows tout), another root bracket, and the restart the layer makes at an
- * output where a contact changed. */
-static int cv_advance_peek(gw_solver *s, double tout, double *t, double *y, int *roots)
+/* A restart's first step estimated is at most a tenth of the way to tout
+ * (cvHin's bound): its first call is one step unless a first step given may
+ * reach tout. */
+static int cv_first_normal(gw_solver *s, double tout)
 {
     cv_impl *c = s->impl;
-    const double p = s->peek;
-    if (!c->yp && (!(c->yp = N_VClone(c->y)) || !(c->y0 = N_VClone(c->y)) || !(c->d0 = N_VClone(c->y)) ||
-                   !(c->d1 = N_VClone(c->y)))) {
-        gw_solver_set_error(s, "cvode: out of memory for the state at t = %.9g s", p);
-        return GW_ENOMEM;
-    }
-    if ((c->pend == 1 && c->pend_tout != tout) || (c->pend == 2 && c->pend_t > tout))
-        c->pend = 0;
-    if (c->pend && p > c->pend_t)
-        return cv_pending(s, c, t, y, roots);
-    if (c->pend) { /* another peek before the return held back */
-        cv_peek_state(s, c, p);
-    } else {
-        int flag = cv_first_step(s, c, tout);
-        if (flag < 0)
-            return cv_failed(s, flag, c->t);
-        cv_jac_carry(c);
-        for (long steps = 0;; steps++) {
-            if (s->p.max_steps > 0 && steps >= s->p.max_steps) {
-                gw_solver_set_error(s, "cvode failed at t = %.9g s (CV_TOO_MUCH_WORK): more than %ld steps "
-                                    "towards t = %.9g s", c->t, s->p.max_steps, tout);
-                return GW_ELIMIT;
-            }
-            long nst = 0;
-            double tn = c->t, hcur = 0;
-            CVodeGetNumSteps(c->mem, &nst);
-            if (nst > 0) {
-                CVodeGetCurrentTime(c->mem, &tn);
-                CVodeGetCurrentStep(c->mem, &hcur);
-            }
-            /* the step CVODE tries next (CVodeGetCurrentStep: failed tests
-             * only shorten it) is its hprime after a return at tout or in
-             * CV_ONE_STEP mode; after a root return it is the step last
-             * taken, and the next may grow by CVODE's largest factor. No
-             * getter gives hprime there (CVodeGetCurrentStep, CVodeGetLastStep
-             * and CVodeGetIntegratorStats give the step taken), so this relies
-             * on CVODE 6.4's growth limits (ETAMX1 1e4 on a start's first
-             * step, ETAMX2 and ETAMX3 10 after; taken as 1e4 over the first
-             * 10 steps): a larger growth would take a step that reaches tout
-             * in CV_ONE_STEP mode, whose root search then passes tout (the
-             * run would differ from the one without the peek in a root's
-             * bracket, not fail). A restart's first step estimated is at most
-             * a tenth of the way to tout (cvHin's bound). arkode reads the
-             * same way (ark_advance_peek), with ARKode's limits. */
-            const double grow = c->root_last ? (nst <= 10 ? 1e4 : 10) : 1;
-            /* p already in the last step (a call in CV_NORMAL mode went past
-             * it): CV_ONE_STEP searches the rest of the step for roots, as
-             * CV_NORMAL does short of tout, and returns without a step */
-            const int normal = nst == 0 ? c->h0_given >= 0.5 * (tout - c->t) || tout - c->t <= 1e-9 * fabs(tout)
-                                        : tn >= tout || (p > tn && tn + grow * hcur >= tout);
-            c->have0 = 0;
-            c->t0 = tn;
-            if (p > tn) {
-                if (nst > 0 && CVodeGetDky(c->mem, tn, 0, c->y0) == CV_SUCCESS &&
-                    CVodeGetDky(c->mem, tn, 1, c->d0) == CV_SUCCESS)
-                    c->have0 = 1;
-                else
-                    N_VScale(1.0, c->y, c->y0), c->have0 = 2;
-            }
-            if (nst > 0 && p <= c->tlast) { /* searched, in the last step: no call */
-                cv_peek_state(s, c, p);
-                break;
-            }
-            double tret = c->t;
-            flag = CVode(c->mem, tout, c->y, &tret, normal ? CV_NORMAL : CV_ONE_STEP);
-            c->tlast = tret;
-            if (flag < 0) {
-                c->t = tret;
-                *t = tret;
-                gw_sun_copy_out(c->y, y, s->sys.dim);
-                return cv_failed(s, flag, tret);
-            }
-            c->root_last = flag == CV_ROOT_RETURN;
-            if (p <= tret) {
-                cv_peek_state(s, c, p);
-                if (normal || flag == CV_ROOT_RETURN) {
-                    c->pend = flag == CV_ROOT_RETURN ? 2 : 1;
-                    c->pend_t = tret;
-                    c->pend_tout = tout;
-                }
-                break;
-            }
-            if (flag == CV_ROOT_RETURN || normal) {
-                c->pend = flag == CV_ROOT_RETURN ? 2 : 1;
-                c->pend_t = tret;
-                c->pend_tout = tout;
-                return cv_pending(s, c, t, y, roots);
-            }
-        }
-    }
-    s->peek = 0;
-    c->t = p;
-    *t = p;
-    gw_sun_copy_out(c->yp, y, s->sys.dim);
-    return GW_SOLVER_PEEK;
+    return c->h0_given >= 0.5 * (tout - c->t) || tout - c->t <= 1e-9 * fabs(tout);
 }
 
+static const gw_sun_stepper cv_stepper = {"cvode", "CV_TOO_MUCH_WORK", cv_where, cv_dky, cv_prepare, cv_evolve,
+                                          cv_failed, cv_root_info, cv_grow, cv_first_normal, NULL};
+
+/* An advance towards tout with a peek p before it (gw_solver_set_peek),
+ * gw_sun_advance_peek: the CVode calls an advance to tout makes without it,
+ * CV_NORMAL towards tout, taken one step at a time (CV_ONE_STEP) while the
+ * next step cannot reach tout, so that the interpolation at p is in the step
+ * that passed it. A step that may reach tout is taken in CV_NORMAL mode, whose
+ * root search ends at tout (CV_ONE_STEP's at the step's end: a root there was
+ * located on another bracket). The return that call makes (tout reached, a
+ * root after p) is held back and given at the next call. Stopping at p
+ * instead (CVode towards p) changed the run: another first step after each
+ * restart (CVODE's estimate knows tout), another root bracket, and the
+ * restart the layer makes at an output where a contact changed. arkode reads
+ * the same way (ark_advance), with ARKode's limits. */
 static int cv_advance(gw_solver *s, double tout, double *t, double *y, int *roots)
 {
     cv_impl *c = s->impl;
     if (s->peek > c->t && s->peek < tout)
-        return cv_advance_peek(s, tout, t, y, roots);
-    if ((c->pend == 1 && c->pend_tout == tout) || (c->pend == 2 && c->pend_t <= tout))
-        return cv_pending(s, c, t, y, roots);
-    c->pend = 0;
+        return gw_sun_advance_peek(s, &c->pk, tout, t, y, roots);
+    if ((c->pk.pend == 1 && c->pk.pend_tout == tout) || (c->pk.pend == 2 && c->pk.pend_t <= tout))
+        return gw_sun_peek_pending(s, &c->pk, t, y, roots);
+    c->pk.pend = 0;
     double tret = c->t;
     if (fabs(tout - c->t) <= 1e-13 * fmax(fabs(tout), fabs(c->t))) {
         *t = c->t;
@@ -421,11 +351,11 @@ static int cv_advance(gw_solver *s, double tout, double *t, double *y, int *root
         cv_jac_carry(c);
     if (flag == CV_SUCCESS)
         flag = CVode(c->mem, tout, c->y, &tret, CV_NORMAL);
-    c->tlast = tret;
+    c->pk.tlast = tret;
     c->t = tret;
     *t = tret;
     gw_sun_copy_out(c->y, y, s->sys.dim);
-    c->root_last = flag == CV_ROOT_RETURN;
+    c->pk.root_last = flag == CV_ROOT_RETURN;
     if (flag == CV_ROOT_RETURN) {
         CVodeGetRootInfo(c->mem, c->rootinfo);
         if (roots)
@@ -442,7 +372,6 @@ static int cv_reset(gw_solver *s, double t, const double *y)
     cv_impl *c = s->impl;
     memcpy(N_VGetArrayPointer(c->y), y, (size_t)s->sys.dim * sizeof *y);
     c->t = t;
-    c->tlast = t;
     gw_solver_stats before;
     cv_raw_stats(c, &before);
     int flag = CVodeReInit(c->mem, t, c->y);
@@ -450,9 +379,7 @@ static int cv_reset(gw_solver *s, double t, const double *y)
     c->jac_pending = 1;
     c->first_step = 0;
     c->h0_given = 0;
-    c->root_last = 0;
-    c->pend = 0;
-    c->have0 = 0;
+    gw_sun_peek_start(&c->pk, t);
     /* dt is the run's initial step; a restart at an event estimates its own, as
      * one without dt does. Given again there, a dt far above the events' scale
      * (chain --n 6 --dt 1e-5, dt-max 6.6e-6) made CVODE look for roots that are

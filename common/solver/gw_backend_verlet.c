@@ -42,6 +42,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "gw_hermite.h"
 #include "gw_solver_impl.h"
 
 typedef struct verlet_impl {
@@ -303,8 +304,9 @@ static void verlet_peek_state(const gw_solver *s, const verlet_impl *v, double p
         return;
     }
     const double th = (p - (v->t - h)) / h, u = 1 - th;
-    const double h00 = (1 + 2 * th) * u * u, h10 = th * u * u * h, h01 = th * th * (3 - 2 * th);
-    const double h11 = -th * th * u * h;
+    double w[4];
+    gw_hermite(th, h, w);
+    const double h00 = w[0], h10 = w[1], h01 = w[2], h11 = w[3];
     const double *y0 = v->y0, *f0 = v->f0, *y1 = v->y, *f1 = v->f;
     for (long i = 0; i < n; i++) {
         if (v->form[i] == 1) {

@@ -11,6 +11,7 @@
 #include <sunmatrix/sunmatrix_band.h>
 #include <sunnonlinsol/sunnonlinsol_fixedpoint.h>
 
+#include "gw_hermite.h"
 #include "gw_sundials.h"
 #include "gw_locale.h"
 
@@ -395,4 +396,249 @@ int gw_sun_failed(gw_solver *s, const char *name, const char *flag_name, int too
     gw_snprintf(msg, sizeof msg, "%s", s->errmsg);
     gw_solver_set_error(s, "%s failed at t = %.9g s (%s): %s", name, tret, flag_name, msg[0] ? msg : "no message");
     return too_much_work ? GW_ELIMIT : GW_ESOLVER;
+}
+
+void gw_sun_peek_start(gw_sun_peek *k, double t)
+{
+    k->tlast = t;
+    k->root_last = 0;
+    k->pend = 0;
+    k->have0 = 0;
+    k->want = 0;
+    k->got = 0;
+    k->rec = 0;
+    k->nend = 0;
+}
+
+void gw_sun_peek_free(gw_sun_peek *k)
+{
+    N_Vector *v[] = {&k->yp, &k->y0, &k->d0, &k->d1, &k->ym, &k->fm};
+    for (size_t i = 0; i < sizeof v / sizeof *v; i++)
+        if (*v[i])
+            N_VDestroy(*v[i]), *v[i] = NULL;
+    for (int i = 0; i < GW_SUN_PEEK_ENDS; i++) {
+        if (k->yend[i])
+            N_VDestroy(k->yend[i]), k->yend[i] = NULL;
+        if (k->fend[i])
+            N_VDestroy(k->fend[i]), k->fend[i] = NULL;
+    }
+}
+
+int gw_sun_peek_pending(gw_solver *s, gw_sun_peek *k, double *t, double *y, int *roots)
+{
+    const int root = k->pend == 2;
+    k->pend = 0;
+    *k->t = k->pend_t;
+    *t = *k->t;
+    gw_sun_copy_out(k->y, y, s->sys.dim);
+    if (!root)
+        return GW_OK;
+    return k->st->root_info(s, roots);
+}
+
+void gw_sun_peek_catch(gw_solver *s, gw_sun_peek *k, double t, N_Vector y)
+{
+    const double p = k->want;
+    if (!(p > 0) && !k->rec)
+        return;
+    long nst = 0;
+    double tn = 0, hnext = 0, hu = 0;
+    k->st->where(s, &nst, &tn, &hnext, &hu);
+    /* (a restart's first root check: its time tn, the peek after it) */
+    if (p > 0 && hu > 0 && p >= tn - hu && p <= tn && k->st->dky(s, p, 0, k->yp) == 0) {
+        k->got = 1;
+        k->got_t = p;
+        k->want = 0;
+    }
+    /* a step's end (the root function at the step's end, its state there):
+     * kept from the last one before the peek on, while there is room */
+    if (!k->rec || t != tn || !(hu > 0) || (k->nend > 0 && !(tn > k->tend[k->nend - 1])))
+        return;
+    int i = k->want > 0 ? 0 : k->nend; /* before the peek: only the last end */
+    if (i >= GW_SUN_PEEK_ENDS)
+        return;
+    if ((!k->yend[i] && !(k->yend[i] = N_VClone(k->y))) || (!k->fend[i] && !(k->fend[i] = N_VClone(k->y))))
+        return; /* (no room: the Hermite spans the steps left) */
+    N_VScale(1.0, y, k->yend[i]);
+    k->tend[i] = tn;
+    k->fok[i] = 0; /* (its rate when a peek reads it: end_rate) */
+    k->nend = i + 1;
+}
+
+/* The rate at the kept end i (the system's rhs there, once): 1, or 0 when the
+ * rhs failed. */
+static int end_rate(gw_solver *s, gw_sun_peek *k, int i)
+{
+    if (!k->fok[i])
+        k->fok[i] = s->sys.rhs(k->tend[i], N_VGetArrayPointer(k->yend[i]), N_VGetArrayPointer(k->fend[i]),
+                               s->sys.params) == 0;
+    return k->fok[i];
+}
+
+/* The state at p into k->yp: the one read in the step that held it during the
+ * call (gw_sun_peek_catch), else the dense output within the last step; a p
+ * before it (a call towards tout of several steps, from t0 where the state was
+ * k->y0 and its rate k->d0, have0 1; have0 2: the rate unknown) by a cubic
+ * Hermite between t0 and the last step's start. */
+static void peek_state(gw_solver *s, gw_sun_peek *k, double p)
+{
+    if (k->got && k->got_t == p) {
+        k->got = 0;
+        return;
+    }
+    const int have0 = k->have0;
+    const double t0 = k->t0;
+    long nst = 0;
+    double tn = 0, hnext = 0, hu = 0;
+    k->st->where(s, &nst, &tn, &hnext, &hu);
+    if ((p >= tn - hu && p <= tn) || !have0) {
+        k->st->dky(s, fmin(tn, fmax(tn - hu, p)), 0, k->yp);
+        return;
+    }
+    /* the Hermite's ends: the kept steps' ends around p (gw_sun_peek_catch),
+     * else the call's start and the last step's */
+    double ta = t0, tb = tn - hu;
+    const double *y0 = N_VGetArrayPointer(k->y0), *d0 = N_VGetArrayPointer(k->d0);
+    const double *yb = NULL, *fb = NULL;
+    int ia = -1, ib = -1;
+    for (int i = 0; i < k->nend; i++) {
+        if (k->tend[i] <= p && k->tend[i] > ta)
+            ta = k->tend[i], ia = i;
+        if (k->tend[i] >= p && k->tend[i] < tb)
+            tb = k->tend[i], ib = i;
+    }
+    if (ia >= 0 && end_rate(s, k, ia))
+        y0 = N_VGetArrayPointer(k->yend[ia]), d0 = N_VGetArrayPointer(k->fend[ia]);
+    else
+        ta = t0;
+    if (ib >= 0 && end_rate(s, k, ib))
+        yb = N_VGetArrayPointer(k->yend[ib]), fb = N_VGetArrayPointer(k->fend[ib]);
+    else
+        tb = tn - hu;
+    const int have = ta > t0 ? 1 : have0;
+    const double t1 = tb, H = t1 - ta, u = H > 0 ? (p - ta) / H : 1;
+    if (!yb) {
+        k->st->dky(s, t1, 0, k->yp);
+        k->st->dky(s, t1, 1, k->d1);
+    } else {
+        memcpy(N_VGetArrayPointer(k->yp), yb, (size_t)s->sys.dim * sizeof *yb);
+        memcpy(N_VGetArrayPointer(k->d1), fb, (size_t)s->sys.dim * sizeof *fb);
+    }
+    double w[4];
+    gw_hermite(u, H, w);
+    double *yp = N_VGetArrayPointer(k->yp), *d1 = N_VGetArrayPointer(k->d1);
+    const long n = s->sys.dim;
+    if (have != 1) {
+        for (long i = 0; i < n; i++)
+            yp[i] = (1 - u) * y0[i] + u * yp[i];
+        return;
+    }
+    /* a quartic: the cubic plus c th^2 (1 - th)^2, whose c gives the system's
+     * rate at th = 2/3 of the interval (as ARKode's dense output of degree 4
+     * is made from its cubic): an error of fifth order in H, not fourth */
+    double *ym = N_VGetArrayPointer(k->ym), *fm = N_VGetArrayPointer(k->fm);
+    double wm[4], dm[4];
+    const double um = 2.0 / 3;
+    gw_hermite(um, H, wm);
+    gw_hermite_rate(um, H, dm);
+    for (long i = 0; i < n; i++)
+        ym[i] = wm[0] * y0[i] + wm[1] * d0[i] + wm[2] * yp[i] + wm[3] * d1[i];
+    const int quartic = H > 0 && s->sys.rhs(ta + um * H, ym, fm, s->sys.params) == 0;
+    const double q = u * u * (1 - u) * (1 - u), dq = -4.0 / (27 * H); /* th^2 (1 - th)^2 and its rate at 2/3 */
+    for (long i = 0; i < n; i++) {
+        double c = 0;
+        if (quartic)
+            c = (fm[i] - (dm[0] * y0[i] + dm[1] * d0[i] + dm[2] * yp[i] + dm[3] * d1[i])) / dq;
+        yp[i] = w[0] * y0[i] + w[1] * d0[i] + w[2] * yp[i] + w[3] * d1[i] + c * q;
+    }
+}
+
+int gw_sun_advance_peek(gw_solver *s, gw_sun_peek *k, double tout, double *t, double *y, int *roots)
+{
+    const gw_sun_stepper *st = k->st;
+    const double p = s->peek;
+    N_Vector *v[] = {&k->yp, &k->y0, &k->d0, &k->d1, &k->ym, &k->fm};
+    for (size_t i = 0; i < sizeof v / sizeof *v; i++)
+        if (!*v[i] && !(*v[i] = N_VClone(k->y))) {
+            gw_solver_set_error(s, "%s: out of memory for the state at t = %.9g s", st->name, p);
+            return GW_ENOMEM;
+        }
+    if ((k->pend == 1 && k->pend_tout != tout) || (k->pend == 2 && k->pend_t > tout))
+        k->pend = 0;
+    if (k->pend && p > k->pend_t)
+        return gw_sun_peek_pending(s, k, t, y, roots);
+    if (k->pend) { /* another peek before the return held back */
+        peek_state(s, k, p);
+    } else {
+        int flag = st->prepare(s, tout);
+        if (flag < 0)
+            return st->failed(s, flag, *k->t);
+        for (long steps = 0;; steps++) {
+            if (s->p.max_steps > 0 && steps >= s->p.max_steps) {
+                gw_solver_set_error(s, "%s failed at t = %.9g s (%s): more than %ld steps towards t = %.9g s",
+                                    st->name, *k->t, st->too_much, s->p.max_steps, tout);
+                return GW_ELIMIT;
+            }
+            long nst = 0;
+            double tn = 0, hcur = 0, hu = 0;
+            const int started = st->where(s, &nst, &tn, &hcur, &hu);
+            if (!started)
+                nst = 0, tn = *k->t, hcur = 0;
+            /* the step tried next (failed tests only shorten it) after a
+             * return at tout or of one step; after a root return the step
+             * taken, which the next may outgrow by the backend's factor */
+            const double grow = k->root_last ? st->grow(s, nst) : 1;
+            /* p already in the last step (a call towards tout went past it):
+             * a one-step call searches the rest of the step for roots, as one
+             * towards tout does short of tout, and returns without a step */
+            const int normal = !started ? st->first_normal(s, tout)
+                                        : tn >= tout || (p > tn && tn + grow * hcur >= tout);
+            k->have0 = 0;
+            k->t0 = tn;
+            if (p > tn) {
+                if (started && st->dky(s, tn, 0, k->y0) == 0 && st->dky(s, tn, 1, k->d0) == 0) {
+                    k->have0 = 1;
+                } else {
+                    N_VScale(1.0, k->y, k->y0);
+                    k->have0 = st->start_rate && st->start_rate(s, tn, k->y0, k->d0) ? 1 : 2;
+                }
+            }
+            if (started && p <= k->tlast) { /* searched, in the last step: no call */
+                peek_state(s, k, p);
+                break;
+            }
+            double tret = *k->t;
+            k->want = p, k->got = 0, k->rec = normal, k->nend = 0;
+            flag = st->evolve(s, tout, &tret, !normal);
+            k->want = 0, k->rec = 0;
+            k->tlast = tret;
+            if (flag < 0) {
+                *k->t = tret;
+                *t = tret;
+                gw_sun_copy_out(k->y, y, s->sys.dim);
+                return st->failed(s, flag, tret);
+            }
+            k->root_last = flag == 1;
+            if (p <= tret) {
+                peek_state(s, k, p);
+                if (normal || flag == 1) {
+                    k->pend = flag == 1 ? 2 : 1;
+                    k->pend_t = tret;
+                    k->pend_tout = tout;
+                }
+                break;
+            }
+            if (flag == 1 || normal) {
+                k->pend = flag == 1 ? 2 : 1;
+                k->pend_t = tret;
+                k->pend_tout = tout;
+                return gw_sun_peek_pending(s, k, t, y, roots);
+            }
+        }
+    }
+    s->peek = 0;
+    *k->t = p;
+    *t = p;
+    gw_sun_copy_out(k->yp, y, s->sys.dim);
+    return GW_SOLVER_PEEK;
 }

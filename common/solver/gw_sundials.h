@@ -127,4 +127,79 @@ void gw_sun_copy_out(N_Vector v, double *y, long n);
  * backend's TOO_MUCH_WORK: the step limit), else GW_ESOLVER. */
 int gw_sun_failed(gw_solver *s, const char *name, const char *flag_name, int too_much_work, double tret);
 
+/* A read-through sample (gw_solver_set_peek) under CVODE or ARKode, one driver
+ * for both: the backend's calls passed in (gw_sun_stepper), its state kept in
+ * a gw_sun_peek inside the backend's own. */
+typedef struct gw_sun_stepper {
+    const char *name;     /* "cvode", "arkode": the messages' */
+    const char *too_much; /* the backend's name of the step limit's flag */
+    /* the step count, the current time, the step to be tried next and the
+     * step last taken; returns 1 once a step was taken since the set-up or
+     * the last restart, else 0 */
+    int (*where)(gw_solver *s, long *nst, double *tn, double *hnext, double *hlast);
+    /* the k-th derivative of the dense output at t into v: the backend's flag (0 done) */
+    int (*dky)(gw_solver *s, double t, int k, N_Vector v);
+    /* before the first call of an advance (the first step given): a flag < 0 failed */
+    int (*prepare)(gw_solver *s, double tout);
+    /* one call towards tout, in one-step mode or not, its return time in
+     * *tret: the backend's flag when < 0 (failed), 1 a root, 0 otherwise */
+    int (*evolve)(gw_solver *s, double tout, double *tret, int one_step);
+    int (*failed)(gw_solver *s, int flag, double tret); /* a failed call: its message, GW_ESOLVER or GW_ELIMIT */
+    int (*root_info)(gw_solver *s, int *roots);         /* the roots found, into roots: GW_ROOT */
+    /* after a root return, how much the next step may grow over the step
+     * taken (nst the step count); no step since the start: whether the first
+     * call is made towards tout (not one step) */
+    double (*grow)(gw_solver *s, long nst);
+    int (*first_normal)(gw_solver *s, double tout);
+    /* the rate at a start (t, y) into f: 1 given, 0 unknown (NULL: unknown) */
+    int (*start_rate)(gw_solver *s, double t, N_Vector y, N_Vector f);
+} gw_sun_stepper;
+
+typedef struct gw_sun_peek {
+    const gw_sun_stepper *st;
+    N_Vector y;  /* the backend's state */
+    double *t;   /* the backend's time */
+    /* the state at the peek, the one at the start of a call towards tout and
+     * both derivatives (a peek before the last of its steps, cubic Hermite) */
+    N_Vector yp, y0, d0, d1;
+    N_Vector ym, fm; /* the Hermite's state and rate at 2/3 of its interval */
+    int have0;        /* y0 at t0 kept for the Hermite: 1 with its rate d0, 2 without */
+    double t0;
+    int pend;         /* held back: 1 tout reached (pend_t = pend_tout), 2 a root at pend_t */
+    double pend_t, pend_tout;
+    double tlast;     /* the time the backend last returned (roots searched up to it) */
+    int root_last;    /* the last return was a root, no restart since */
+    /* a state read at the peek during a call, in the step that held it (the
+     * backend's root function, gw_sun_peek_catch): want the peek asked for
+     * during the call, got 1 with yp the state at got_t */
+    double want, got_t;
+    int got;
+    /* the ends of the steps of a call towards tout (rec 1), from the last
+     * one before the peek on: their times, states and rates, so that a later
+     * peek before the return held back is read in its own step (at most
+     * GW_SUN_PEEK_ENDS; past them the Hermite spans the steps left) */
+    int rec, nend;
+    double tend[16];
+    N_Vector yend[16], fend[16];
+    int fok[16]; /* fend[i] computed */
+} gw_sun_peek;
+enum { GW_SUN_PEEK_ENDS = 16 };
+
+/* The driver's state at a start (the set-up or a restart at t). */
+void gw_sun_peek_start(gw_sun_peek *k, double t);
+/* Free the driver's vectors. */
+void gw_sun_peek_free(gw_sun_peek *k);
+/* A return held back by a peek, now given (gw_sun_advance_peek). */
+int gw_sun_peek_pending(gw_solver *s, gw_sun_peek *k, double *t, double *y, int *roots);
+/* An advance towards tout with the peek s->peek before it (the comments on
+ * cv_advance in gw_backend_cvode.c and ark_advance in gw_backend_arkode.c say
+ * how and why): GW_SOLVER_PEEK with the state there, or the return the
+ * advance would have made before it. */
+int gw_sun_advance_peek(gw_solver *s, gw_sun_peek *k, double tout, double *t, double *y, int *roots);
+/* From the backend's root function, called after each step it takes (and in
+ * its root search, (t, y) its arguments): the peek asked for during the call,
+ * read from the dense output of the step just taken when that step holds it,
+ * and the step's end kept (gw_sun_peek.rec). */
+void gw_sun_peek_catch(gw_solver *s, gw_sun_peek *k, double t, N_Vector y);
+
 #endif

@@ -904,15 +904,14 @@ double gw_layer_impact_dem_dt(const gw_layer_sample *s, const gw_layer_params *l
 /* 1 when dt_out is k dt for an integer k >= 1, to a relative 1e-9. */
 int gw_layer_impact_dt_divides(double dt, double dt_out);
 
-/* A verlet step sp->dt > 0 given by the caller must divide ip->dt_out (until
- * session 45 the step before every sample was shortened to land on it; the
- * samples off the steps are now read between two steps, and the refusal is
- * kept as it was): GW_EINVAL "dt-out: ..." naming dt and values that
- * pass. An rk4 step given above dt_out is GW_EINVAL "dt: ..." (rk4 lands
- * on every sample: no step would be longer than dt_out). The automatic step
- * (sp->dt = 0) and the other cases pass (rk4 restarts its steps at every
- * located contact event; cvode and arkode choose theirs). gw_layer_impact
- * checks it, as the setup's resolution does. */
+/* The solver's step and tolerances of an impact: GW_EINVAL naming sp->dt or
+ * sp->dt_max when not 0 or a normal finite number > 0, or a tolerance every
+ * backend refuses. A step given need not divide ip->dt_out nor be shorter:
+ * the samples off the steps are read between two steps (verlet, rk4), and
+ * the outcome is the same step's at a dt_out it divides, bit for bit (until
+ * session 46 verlet's dt had to divide dt_out, GW_EINVAL "dt-out: ...", and
+ * rk4's could not be above it, "dt: ..."). gw_layer_impact checks it, as the
+ * setup's resolution does. */
 int gw_layer_impact_step_check(const gw_layer_impact_params *ip, const gw_solver_type *type,
                                const gw_solver_params *sp, gw_err *err);
 

@@ -195,10 +195,11 @@ int layer_contacts_build(gw_layer *L, gw_err *err)
     double *snap = malloc(((size_t)nc + 1) * LAYER_SNAP_W * sizeof *snap);
     int *dem_act = malloc(((size_t)nc + 1) * sizeof *dem_act);
     double *dem_w = malloc(((size_t)nc + 1) * LAYER_DEM_W * sizeof *dem_w);
+    layer_pkc *pk_c = malloc(((size_t)nc + 1) * sizeof *pk_c);
     if (!ny || !nsc || !roots || !drift || !un_last || !tscr || !geo || !snap || !wake || !travel || !tix ||
-        !dem_act || !dem_w) {
+        !dem_act || !dem_w || !pk_c) {
         free(c), free(ny), free(nsc), free(roots), free(drift), free(un_last), free(tscr), free(snap);
-        free(geo), free(wake), free(travel), free(tix), free(dem_act), free(dem_w);
+        free(geo), free(wake), free(travel), free(tix), free(dem_act), free(dem_w), free(pk_c);
         return gw_err_set(err, GW_ENOMEM, "layer: out of memory for %d contacts", nc);
     }
     memcpy(ny, L->y, 6 * (size_t)nb * sizeof *ny);
@@ -212,7 +213,7 @@ int layer_contacts_build(gw_layer *L, gw_err *err)
             if (un > 0) {
                 int rc2 = missed_contact(L, &c[k], un, err);
                 free(c), free(ny), free(nsc), free(roots), free(drift), free(un_last), free(tscr), free(snap);
-                free(geo), free(wake), free(travel), free(tix), free(dem_act), free(dem_w);
+                free(geo), free(wake), free(travel), free(tix), free(dem_act), free(dem_w), free(pk_c);
                 return rc2;
             }
         }
@@ -229,7 +230,9 @@ int layer_contacts_build(gw_layer *L, gw_err *err)
     memcpy(ny + 6 * nb + nc, L->y + 6 * nb + L->nc, (size_t)L->ntail * sizeof *ny);
     free(L->y), free(L->scale), free(L->c), free(L->roots), free(L->drift), free(L->un_last);
     free(L->tscr), free(L->snap), free(L->geo), free(L->wake), free(L->travel);
-    free(L->tix), free(L->dem_act), free(L->dem_w);
+    free(L->tix), free(L->dem_act), free(L->dem_w), free(L->pk_c);
+    L->pk_c = pk_c;
+    L->pk_valid = 0; /* (the kept start's contacts were the old list's) */
     L->dem_act = dem_act;
     L->dem_w = dem_w;
     for (int k = 0; k < nc; k++)

@@ -215,6 +215,8 @@ void gw_layer_free(gw_layer *L)
     free(L->facc);
     free(L->dem_rate);
     free(L->dem_f);
+    free(L->pk_y);
+    free(L->pk_c);
     free(L->snap);
     free(L->snap_xy);
     free(L->snap_breg);

@@ -396,9 +396,25 @@ LAYER_HOT static void drift_discs(gw_layer *L, double h, const double *ph, doubl
     L->geo_valid = 1;
 }
 
+/* Keep the start of the step (t - h, t] that holds the peek (gw_layer.pk_y,
+ * pk_c): ph and the predicted end y as the drift gets them, the contacts' F_t
+ * and what the last rhs found of them. */
+static void layer_dem_peek_keep(gw_layer *L, double t, double h, const double *ph, const double *y)
+{
+    const size_t nb6 = 6 * (size_t)L->nb;
+    memcpy(L->pk_y, ph, nb6 * sizeof *ph);
+    memcpy(L->pk_y + nb6, y, nb6 * sizeof *y);
+    const double *fe = y + nb6;
+    for (int k = 0; k < L->nc; k++) {
+        const layer_tscr ts = L->tscr[k];
+        L->pk_c[k] = (layer_pkc){fe[k], L->un_last[k], ts.kt, ts.ikt, ts.q};
+    }
+    L->pk_t0 = t - h, L->pk_h = h;
+    L->pk_valid = 1;
+}
+
 int layer_dem_drift(double t, double h, const double *ph, double *y, void *P)
 {
-    (void)t;
     gw_layer *L = P;
     const int nb = L->nb, nc = L->nc;
     const double tp = L->tan_phi, hh = 0.5 * h;
@@ -406,6 +422,8 @@ int layer_dem_drift(double t, double h, const double *ph, double *y, void *P)
     memset(book, 0, (size_t)L->ntail * sizeof *book);
     if (!(tp > 0))
         return 0;
+    if (L->peek > t - h && L->peek <= t + 1e-9 * h) /* a sample in this step (layer_dem_peek) */
+        layer_dem_peek_keep(L, t, h, ph, y);
     if (!L->off) { /* (the mid positions computed per contact, as below) */
         drift_discs(L, h, ph, y);
         return 0;
@@ -448,6 +466,102 @@ int layer_dem_drift(double t, double h, const double *ph, double *y, void *P)
         }
     }
     return 0;
+}
+
+/* The tangential step of contact k from the step's start kept in pc over hp,
+ * the drift's own arithmetic (drift_discs's general path for discs, the clump
+ * loop of layer_dem_drift otherwise): php the start positions with the
+ * partial step's half-step velocities, yp its end positions, ymp its mid
+ * positions (clumps). F_t at the end in *f1, the books added into book. */
+static void peek_contact(const gw_layer *L, int k, const layer_pkc *pc, double hp, const double *php,
+                         const double *yp, const double *ymp, double *book, double *f1)
+{
+    const layer_contact *c = L->c + k;
+    const double tp = L->tan_phi, width = L->p.width;
+    const int closed0 = pc->u > 0;
+    const double ks = closed0 ? pc->kt : 0, f0 = pc->f;
+    double iks = closed0 ? pc->ikt : 0; /* (1/K_s: the clumps' rhs keeps K_s only) */
+    double ue, nn[2], vt, km = 0, ikm = 0, ike = 0;
+    if (!L->off)
+        ue = disc_geometry(c, yp, width, nn);
+    else
+        layer_contact_geometry(L, c, yp, &ue, nn, NULL);
+    const double su = ue > 0 ? sqrt(ue) : 0, ke = c->kts * su;
+    *f1 = 0;
+    if (!L->off) {
+        if (ke > 0 && closed0) {
+            ike = 1 / ke;
+            km = mean_kt(ks, ke, pc->u, ue);
+            ikm = 1 / km;
+        } else if (ke > 0) {
+            ike = 1 / ke;
+            km = mean_kt(0, ke, disc_overlap(c, php, width), ue);
+            ikm = 1 / km;
+        } else if (closed0) {
+            km = mean_kt(ks, 0, pc->u, disc_overlap(c, yp, width));
+            ikm = 1 / km;
+        }
+        if (!(iks > 0) && !(ike > 0))
+            return;
+        vt = disc_vt(c, php, 0.5 * hp);
+    } else {
+        if (!(ks > 0) && !(ke > 0))
+            return;
+        double um, us = pc->u, ns[2];
+        vt = layer_contact_vt(L, c, ymp, &um);
+        if (!(ks > 0))
+            layer_contact_geometry(L, c, php, &us, ns, NULL);
+        km = mean_kt(ks, ke, us, ue);
+        ikm = 1 / km;
+        ike = ke > 0 ? 1 / ke : 0;
+        iks = ks > 0 ? 1 / ks : 0;
+    }
+    const double cap = ue > 0 ? tp * c->kn * ue * su : 0;
+    const double ftr = f0 + vt * hp * km;
+    *f1 = ftr > cap ? cap : ftr < -cap ? -cap : ftr;
+    const double ed = ftr == *f1 ? 0 : 0.5 * (f0 + *f1) * (ftr - *f1) * ikm;
+    const double ek = 0.5 * ((ike > 0 ? *f1 * *f1 * (ikm - ike) : 0) + (iks > 0 ? f0 * f0 * (iks - ikm) : 0));
+    book[0] += ed;
+    book[1] += ek;
+    if (L->reg_n > 0) {
+        const int q = pc->q >= 0 && closed0 ? pc->q : layer_contact_region(L, c, yp);
+        book[2 + 2 * q] += ed;
+        book[3 + 2 * q] += ek;
+    }
+}
+
+void layer_dem_peek(gw_layer *L, double t)
+{
+    const double h = L->pk_h, hp = t - L->pk_t0;
+    /* the step's end itself (the solver hands it back within 1e-9 of a step):
+     * its own state; a start kept for another step: nothing to do */
+    if (!L->dem || !L->pk_valid || !(L->tan_phi > 0) || !(hp > 0) || !(hp < h) ||
+        fabs(L->pk_t0 + h - t) <= 1e-9 * h)
+        return;
+    const int nb = L->nb, nc = L->nc, nt = L->ntail;
+    const size_t nb6 = 6 * (size_t)nb;
+    /* the partial step's bodies from the kept ph (x0, v0 + (h/2) a0) and
+     * predicted end (v0 + h a0): its half-step velocities v0 + (hp/2) a0,
+     * its end and mid positions x0 + hp v, x0 + (hp/2) v */
+    const double *ph = L->pk_y, *ye = ph + nb6, r = hp / h;
+    double *php = L->pk_y + 2 * nb6, *yp = php + nb6, *book = yp + nb6, *ymp = L->ymid;
+    for (int i = 0; i < nb; i++)
+        for (int j = 0; j < 3; j++) {
+            const size_t q = 6 * (size_t)i + (size_t)j, u = q + 3;
+            const double dv = ye[u] - ph[u], v = ph[u] - (1 - r) * dv;
+            php[q] = ph[q], php[u] = v;
+            yp[q] = ph[q] + hp * v, yp[u] = v + r * dv;
+            ymp[q] = ph[q] + 0.5 * hp * v, ymp[u] = v;
+        }
+    memset(book, 0, (size_t)nt * sizeof *book);
+    double *fe = L->y + nb6, *tail = fe + nc;
+    for (int k = 0; k < nc; k++)
+        peek_contact(L, k, L->pk_c + k, hp, php, yp, ymp, book, fe + k);
+    /* the tail: the line between the step's ends less its share of the
+     * step's books (the kicks' part, the normal damping's, stays a line) */
+    for (int q = 0; q < nt; q++)
+        tail[q] += book[q] - r * L->dem_book[q];
+    L->stamp++;
 }
 
 int layer_dem_project(double t, double h, double *y, double *ydot, void *P)

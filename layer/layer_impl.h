@@ -236,6 +236,16 @@ struct gw_layer {
      * hands them back when dem_carry is set (layer_dem_carried). */
     double *dem_f;      /* [6 nb + ntail], DEM mode */
     int dem_carry;
+    /* DEM mode: the start of a step that holds a peek (layer_advance_peek),
+     * kept by its drift (layer_dem_peek_keep) for the samples in it
+     * (layer_dem_peek): the bodies' half-step state ph and predicted end y
+     * (pk_y[0, 12 nb); after them 12 nb + ntail of the sample's scratch), and
+     * each contact's F_t, overlap, K_t, 1/K_t and region at the step's start.
+     * The step is (pk_t0, pk_t0 + pk_h]; pk_valid 0: none kept (a new list). */
+    double *pk_y;       /* [24 nb + ntail + 1] */
+    struct layer_pkc *pk_c; /* [cap_c] */
+    double pk_t0, pk_h;
+    int pk_valid;
     int listed;        /* 1 once a contact list was built (layer_contacts.c) */
     int geo_valid;      /* facc and dem_rate hold the state the next rhs sees */
     int geo_pos;        /* geo holds the positions of the last rhs evaluation
@@ -499,6 +509,13 @@ typedef struct layer_tscr {
     double kt, ikt; /* K_t and 1/K_t */
     int q;
 } layer_tscr;
+
+/* A contact at the start of a step that holds a peek (gw_layer.pk_c): F_t,
+ * the overlap (0 when open) and what layer_tscr holds. */
+typedef struct layer_pkc {
+    double f, u, kt, ikt;
+    int q;
+} layer_pkc;
 
 /* The Coulomb cap F_n tan(phi) of a contact of stiffness kn at overlap un (0
  * when open), rounded as the right-hand side rounds it (layer_model.c: tp (kn
@@ -986,6 +1003,12 @@ int layer_dem_rhs(double t, const double *y, double *yd, void *P);
 /* The rhs call right after a DEM list rebuild (L->dem_carry): yd from L->dem_f
  * (contacts 0), the disc geometry of y into L->geo; clears dem_carry. */
 int layer_dem_carried(gw_layer *L, const double *y, double *yd);
+/* A sample read between two steps under verlet (layer_advance_peek): the
+ * tangential forces and the ledger's tail of L->y at t made the step's own
+ * (a partial step of t - pk_t0 from the step's start, not committed: L->y's
+ * line between the step's ends puts a slip's increments anywhere in the
+ * step); nothing when no start was kept for a step that holds t. */
+void layer_dem_peek(gw_layer *L, double t);
 
 /* Overlap (*un) and tangential relative velocity of contact c in state y, the
  * velocity also when the contact is open there (layer_model.c). */

@@ -186,14 +186,16 @@ int gw_layer_start(gw_layer *L, const gw_solver_type *type, const gw_solver_para
     L->stepend = L->dem || (type == gw_solver_rk4 && L->p.no_events && !L->watch);
     if (L->dem) { /* explicit DEM: no contact events (gw_layer_params.no_events) */
         L->p.no_events = 1;
-        free(L->ymid), free(L->dem_book), free(L->facc), free(L->dem_rate), free(L->dem_f);
+        free(L->ymid), free(L->dem_book), free(L->facc), free(L->dem_rate), free(L->dem_f), free(L->pk_y);
         L->dem_carry = 0;
+        L->pk_valid = 0;
         L->ymid = malloc(6 * (size_t)L->nb * sizeof *L->ymid);
+        L->pk_y = malloc((24 * (size_t)L->nb + (size_t)L->ntail + 1) * sizeof *L->pk_y);
         L->dem_f = malloc((6 * (size_t)L->nb + (size_t)L->ntail) * sizeof *L->dem_f);
         L->facc = malloc(3 * (size_t)L->nb * sizeof *L->facc);
         L->dem_book = calloc((size_t)L->ntail + 1, sizeof *L->dem_book);
         L->dem_rate = calloc((size_t)L->ntail + 1, sizeof *L->dem_rate);
-        if (!L->ymid || !L->facc || !L->dem_book || !L->dem_rate || !L->dem_f)
+        if (!L->ymid || !L->facc || !L->dem_book || !L->dem_rate || !L->dem_f || !L->pk_y)
             return gw_err_set(err, GW_ENOMEM, "layer: out of memory for the DEM step");
     }
     /* The contact network couples particles far apart in the state vector (no
@@ -382,6 +384,9 @@ int gw_layer_advance(gw_layer *L, double tout, gw_err *err)
              * of y (interpolated between two steps); the snapshot reads y */
             if (L->geo_pos && !L->geo_peek)
                 L->geo_peek = 1, L->geo_pos = 0;
+            /* and its tangential forces and ledgers the step's own: a
+             * partial step from the step's start, not committed */
+            layer_dem_peek(L, t);
             return GW_OK;
         }
         if (rc < 0 && L->adv_over) { /* the bound's own message (layer_after_bound) */

@@ -39,6 +39,22 @@
 #    for positions and velocities, a line for the rest). A control: the block's
 #    height at samples between the steps lies within 1e-6 m of a run at steps
 #    of 1 us (2.9e-7 m measured; the step's end would be 6e-5 m off).
+#  6 a --dt given that --dt-out is not a multiple of was refused (verlet:
+#    `--dt 1e-5 --dt-out 7e-6`, `--dt 3e-6` at the default --dt-out; rk4 a
+#    --dt above --dt-out: `--solver rk4 --dt 1e-5 --dt-out 7e-6`, `--exact
+#    --dt 3e-6 --dt-out 2e-6`), though the samples off the steps are read
+#    between them. Now run: the outcome and the steps are those of the same
+#    --dt at a --dt-out it divides, bit for bit, from the command, a layer
+#    sweep's case and Python.
+#  7 verlet's samples between two steps took the tangential forces and the
+#    ledgers' integrated terms (E_d, W_K) on a line between the step's ends:
+#    a slip puts its increments anywhere in the step, and to 3 ms at
+#    --dt-out 7e-6 the tangential strain energy and E_d were off a run at
+#    steps of 1 us by up to 51.5 and 49.8 J at those samples against 2.7 and
+#    2.5 J at the step ends (1.8e4 J dissipated). They are now a partial
+#    step from the step's start, not committed (layer_dem_peek): 2.66 and
+#    2.77 J, and a sample reads the E_d and W_K of a run whose last step ends
+#    there (--t-max at the sample; 5245.07 against 5245.42 J before).
 # Checks that fail on the code before: see docs/tests.md.
 # shellcheck source=refusal_lib.sh
 . "$(dirname "$0")/refusal_lib.sh"
@@ -154,5 +170,137 @@ read -r emax noff <<<"$e"
 /usr/bin/python3 -c "import sys; sys.exit(not float('$emax') < 1e-6)" &&
     ok "control: verlet's $noff samples between two steps within $emax m of steps of 1 us (block height)" ||
     ko "verlet's samples between two steps: block height off by $emax m ($noff samples) against steps of 1 us"
+
+# 6: a --dt given that --dt-out is not a multiple of, run as the same --dt
+# at a --dt-out it divides (the steps compared too)
+impact g0 --dt 1e-5 || ko "verlet --dt 1e-5 at the default --dt-out ran (exit $?)"
+impact g7 --dt 1e-5 --dt-out 7e-6 || ko "verlet --dt 1e-5 --dt-out 7e-6 ran (exit $?: $(head -c 200 g7.err))"
+same g0 g7 "verlet --dt 1e-5 --dt-out 7e-6 (was refused)" steps
+[ "$(jq_py g7.json "d['settings']['solver']['dt']" 2>/dev/null)" = 1e-05 ] && ok "  its settings record dt 1e-05 s" ||
+    ko "  verlet --dt 1e-5 --dt-out 7e-6 records dt $(jq_py g7.json "d['settings']['solver']['dt']" 2>/dev/null)"
+impact g3 --dt 3e-6 --dt-out 6e-5 || ko "verlet --dt 3e-6 --dt-out 6e-5 ran (exit $?)"
+impact g3d --dt 3e-6 || ko "verlet --dt 3e-6 at the default --dt-out ran (exit $?: $(head -c 200 g3d.err))"
+same g3 g3d "verlet --dt 3e-6 at the default --dt-out 2e-5 (was refused)" steps
+impact k0 --solver rk4 --dt 1e-5 --dt-out 2e-4 --t-max 0.004 --until verdict || ko "rk4 --dt 1e-5 --dt-out 2e-4 ran (exit $?)"
+impact k7 --solver rk4 --dt 1e-5 --dt-out 7e-6 --t-max 0.004 --until verdict ||
+    ko "rk4 --dt 1e-5 --dt-out 7e-6 ran (exit $?: $(head -c 200 k7.err))"
+same k0 k7 "rk4 --dt 1e-5 above --dt-out 7e-6 (was refused)" steps
+impact x0 --exact --dt 3e-6 --dt-out 6e-5 --t-max 0.004 --until verdict || ko "--exact --dt 3e-6 --dt-out 6e-5 ran (exit $?)"
+impact x2 --exact --dt 3e-6 --dt-out 2e-6 --t-max 0.004 --until verdict ||
+    ko "--exact --dt 3e-6 --dt-out 2e-6 ran (exit $?: $(head -c 200 x2.err))"
+same x0 x2 "--exact --dt 3e-6 above --dt-out 2e-6 (was refused)" steps
+# a layer sweep's case: its row, less the wave speed (read from the samples
+# when they are finer than the checks) and the case's config hash, the same
+# at dt-out 7e-6 as at 2e-5
+for d in 7e-6 2e-5; do
+    printf '[sweep]\nmodel = layer\n[grid]\nvi = 20\n[params]\nsample = s40\ndt = 1e-5\ndt-out = %s\n' "$d" >"sw$d.ini"
+    cpu_run 120 "$GW" sweep "sw$d.ini" --out "sw$d" --quiet --jobs 1 >/dev/null 2>"sw$d.err" ||
+        ko "a layer sweep with dt = 1e-5 and dt-out = $d ran (exit $?: $(head -c 200 "sw$d.err"))"
+done
+row() {
+    /usr/bin/python3 - "$1/results.csv" <<'PY'
+import csv, sys
+try:
+    rows = list(csv.DictReader(l for l in open(sys.argv[1]) if not l.startswith("#")))
+except OSError:
+    rows = []
+print(";".join("%s=%s" % (k, v) for k, v in rows[0].items() if k not in ("wave_speed", "case_config_fnv1a64"))
+      if len(rows) == 1 else "no row")
+PY
+}
+r7=$(row sw7e-6)
+r2=$(row sw2e-5)
+# the fields of row $1 that are not row $2's (at most 4)
+row_diff() {
+    /usr/bin/python3 -c "import sys; b = sys.argv[2].split(';'); print([x for x in sys.argv[1].split(';') if x not in b][:4])" \
+        "$1" "$2"
+}
+if [ "$r7" != "no row" ] && [ "$r7" = "$r2" ]; then
+    ok "a layer sweep's case at dt = 1e-5, dt-out = 7e-6: the row at dt-out 2e-5 ($(echo "$r2" | tr ';' '\n' |
+        grep -E '^(e_n|steps)=' | tr '\n' ' '))"
+else
+    ko "a layer sweep's case at dt = 1e-5, dt-out = 7e-6: $(row_diff "$r7" "$r2")"
+fi
+py_checks 2 <<'PY'
+ks = ("bounced", "e_n", "e", "alpha_r", "e_n_first", "t_f", "penetration", "t_end", "dissipated_first_contact",
+      "energy_error", "steps")
+def run(**kw):
+    try:
+        r, _ = caught(granwave.layer_impact, sample="s40", **kw)
+        return [repr(r[k]) for k in ks]
+    except Exception as e:  # noqa: BLE001
+        return ["raised %s" % str(e)[:160]]
+a, b = run(dt=1e-5, dt_out=7e-6), run(dt=1e-5, dt_out=2e-5)
+check(a == b, "Python: layer_impact(dt=1e-5, dt_out=7e-6) is dt_out=2e-5's (%s)" % [x for x in a if x not in b][:3])
+a = run(solver="rk4", dt=1e-5, dt_out=7e-6, t_max=0.004, until="verdict")
+b = run(solver="rk4", dt=1e-5, dt_out=2e-4, t_max=0.004, until="verdict")
+check(a == b, "Python: rk4 dt=1e-5 above dt_out=7e-6 is dt_out=2e-4's (%s)" % [x for x in a if x not in b][:3])
+PY
+
+# 7: verlet's samples between two steps, their tangential strain energy and
+# E_d against steps of 1 us (vo, vr of section 5: within twice the step
+# ends' own error) and against runs whose last step ends at the sample
+e=$(/usr/bin/python3 - vo/ledger.csv vr/ledger.csv <<'PY'
+import sys
+def load(p):
+    try:
+        rows = [l.strip().split(",") for l in open(p) if not l.startswith("#")]
+    except OSError:
+        return None, []
+    return rows[0], [[float(x) for x in r] for r in rows[1:]]
+h, a = load(sys.argv[1])
+_, b = load(sys.argv[2])
+on = lambda t: abs(t / 1e-5 - round(t / 1e-5)) < 1e-6
+for c in ("strain_tangent", "dissipated"):
+    if not a or len(a) != len(b):
+        print("%s nan nan" % c)
+        continue
+    j = h.index(c)
+    off = max(abs(x[j] - y[j]) for x, y in zip(a, b) if not on(x[0]))
+    at = max(abs(x[j] - y[j]) for x, y in zip(a, b) if on(x[0]))
+    print("%s %.4g %.4g" % (c, off, at))
+PY
+)
+while read -r c off at; do
+    if /usr/bin/python3 -c "import sys; sys.exit(not float('$off') <= 2 * float('$at'))"; then
+        ok "verlet's samples between two steps: $c within $off J of steps of 1 us (the step ends' $at J)"
+    else
+        ko "verlet's samples between two steps: $c off by $off J against steps of 1 us (the step ends' $at J)"
+    fi
+done <<<"$e"
+for tm in 0.001498 0.002989; do
+    cpu_run 120 "$GW" layer-impact --sample s40 --quiet --t-max "$tm" --dt-out 7e-6 --out "ve$tm" >/dev/null 2>&1 ||
+        ko "verlet --t-max $tm --out ran"
+    d=$(/usr/bin/python3 - vo/ledger.csv "ve$tm/ledger.csv" "$tm" <<'PY'
+import sys
+def at(p, t):
+    try:
+        rows = [l.strip().split(",") for l in open(p) if not l.startswith("#")]
+    except OSError:
+        return {}
+    h = rows[0]
+    for r in rows[1:]:
+        if abs(float(r[0]) - t) < 1e-12:
+            return {c: float(r[h.index(c)]) for c in ("dissipated", "mindlin_excess", "strain_tangent")}
+    return {}
+t = float(sys.argv[3])
+a, b = at(sys.argv[1], t), at(sys.argv[2], t)
+if not a or not b:
+    print("nan no row")
+else:
+    # the written ledger holds 9 digits: E_d and W_K to them (a partial step
+    # of the same arithmetic), E_st to 1e-5 (it takes K_t and the cap at the
+    # sample's interpolated positions, the run its last step's end)
+    rel = max(abs(a[c] - b[c]) / abs(b[c]) / (2e-9 if c != "strain_tangent" else 1e-5) for c in a)
+    print("%.3g %s" % (rel, " ".join("%s %.9g/%.9g" % (c, a[c], b[c]) for c in a)))
+PY
+)
+    read -r rel rest <<<"$d"
+    if /usr/bin/python3 -c "import sys; sys.exit(not float('$rel') <= 1)"; then
+        ok "verlet's sample at $tm s between two steps: the ledger of a run ending there ($rest)"
+    else
+        ko "verlet's sample at $tm s between two steps is not the ledger of a run ending there: $rest"
+    fi
+done
 
 test_summary test_dt_out_bitwise

@@ -189,8 +189,9 @@
 #    then the largest divisor of dt-out below it; since session 45 it is the
 #    same at every dt-out (the samples off the steps read between two steps:
 #    test_dt_out_bitwise), and the run at --dt-out 1.7e-5 is the default's; a
-#    --dt given that dt-out is not a multiple of is refused (any path: the
-#    sweep's keys too).
+#    --dt given that dt-out is not a multiple of was refused (any path: the
+#    sweep's keys too) and since session 46 runs as given (--dt 1e-5 at
+#    --dt-out 7e-6 as at 2e-5; the samples off the steps read between them).
 # 37 a sweep journal's '# input' hash was read with strtoull: ' 0x12', '-1'
 #    or 15 digits in place of the 16 hex digits resumed the sweep (exit 0), and
 #    with the sample changed '-000000000000001' was reported as 'fnv1a64
@@ -1070,15 +1071,20 @@ for k in e_n_first dissipated_first_contact penetration steps; do
     [ "$(jnum "$k" "$tmp/stdout")" = "$(jnum "$k" "$tmp/d36.json")" ] && ok "  $k the same as the automatic step's" ||
         ko "  $k $(jnum "$k" "$tmp/stdout") given, $(jnum "$k" "$tmp/d36.json") automatic"
 done
-refused "layer-impact --dt 1e-5 --dt-out 7e-6 (each step shortened to 7e-6 s, dt 1e-5 recorded)" \
-    "^granwave layer-impact --dt-out: 7e-06 s is not a multiple of the verlet step dt = 1e-05 s, .* such as 1e-05 s, a dt that divides it such as 7e-06 s" \
-    layer-impact --sample "$S300" --dt 1e-5 --dt-out 7e-6 --out "$tmp/o"
-refused "layer-impact --dt 3e-6 at the default dt-out" "dt-out: 2e-05 s is not a multiple of the verlet step dt = 3e-06 s" \
-    layer-impact --sample "$S300" --dt 3e-6 --out "$tmp/o"
-runs "  the divisor it names passes" layer-impact --sample "$S300" --dt "$(sed -n 's/.*divides it such as \([^ ]*\) s.*/\1/p' "$tmp/stderr")" \
-    --t-max 1e-4 --json
+# a --dt given that dt-out is not a multiple of (refused until session 46):
+# the step given on an even grid, the samples read between the steps, the
+# outcome the same --dt's at a dt-out it divides
+runs "layer-impact --dt 1e-5 --dt-out 7e-6 (refused before session 46)" \
+    layer-impact --sample "$S300" --dt 1e-5 --dt-out 7e-6 --t-max 0.0068 --json &&
+    steps_check "dt 1e-5 at dt-out 7e-6" 1e-05 0.0068
+for k in e_n_first dissipated_first_contact penetration steps; do
+    [ "$(jnum "$k" "$tmp/stdout")" = "$(jnum "$k" "$tmp/d36.json")" ] && ok "  $k the same as at dt-out 2e-5" ||
+        ko "  $k $(jnum "$k" "$tmp/stdout") at dt-out 7e-6, $(jnum "$k" "$tmp/d36.json") at 2e-5"
+done
+runs "layer-impact --dt 3e-6 at the default dt-out (refused before session 46)" \
+    layer-impact --sample "$S300" --dt 3e-6 --t-max 9.9e-5 --json && steps_check "dt 3e-6 at dt-out 2e-5" 3e-06 9.9e-05
 printf '[sweep]\nmodel = layer\n[grid]\nvi = 10, 20\n[params]\nsample = %s\nt-max = 1e-4\ndt = 1e-5\ndt-out = 7e-6\n' "$S300" >"$tmp/w36.ini"
-refused "a layer sweep with dt = 1e-5 and dt-out = 7e-6" "^granwave sweep: .*w36.ini: case 0: dt-out: 7e-06 s is not a multiple of the verlet step dt = 1e-05 s" \
+runs "a layer sweep with dt = 1e-5 and dt-out = 7e-6 passes its check (refused before session 46)" \
     sweep "$tmp/w36.ini" --out "$tmp/o" --check
 
 # --- 37: a journal's '# input' hash read strictly ----------------------------------

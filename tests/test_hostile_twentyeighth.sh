@@ -22,7 +22,10 @@
 #  4 layer-impact --exact (rk4) with --dt above --dt-out: rk4 lands on every
 #    sample, so no step was longer than dt-out (--dt 1e-4, 1e-3 and 1e-2 gave
 #    the same e_n and ledger to the last digit) while the settings recorded
-#    the dt given. Refused now, naming --dt; --dt at most dt-out still runs.
+#    the dt given. Refused then, naming --dt; --dt at most dt-out still runs.
+#    Since session 46 rk4 reads the samples between its steps, and a --dt
+#    above --dt-out runs at that step, the outcome the same --dt's at a
+#    --dt-out at least dt, bit for bit.
 # Checks that fail on the code before: see docs/tests.md.
 # shellcheck source=refusal_lib.sh
 . "$2/tests/refusal_lib.sh"
@@ -105,10 +108,10 @@ else
 fi
 
 # --- 4 layer-impact --exact with --dt above --dt-out ---
-refused "4 layer-impact --exact --dt 1e-4 (dt-out 2e-5)" "layer-impact --dt: 0.0001 s is longer than the sampling interval" \
-    layer-impact --sample s.txt --exact --dt 1e-4 --t-max 0.01 --out "$tmp/o"
-refused "4 layer-impact --solver rk4 --dt 3e-5 (dt-out 2e-5)" "layer-impact --dt: 3e-05 s is longer" \
-    layer-impact --sample s.txt --solver rk4 --dt 3e-5 --t-max 0.01 --out "$tmp/o"
+# refused from the twenty-eighth pass to session 46; rk4 now reads the samples
+# between its steps (a step of rk4 from the start of the step that holds
+# one, made aside), so the step given is taken and recorded, and the outcome
+# is the same --dt's at a --dt-out at least dt, bit for bit
 if runs_json "layer-impact --exact --dt 2e-5" e1.json layer-impact --sample s.txt --exact --dt 2e-5 --t-max 0.01 &&
     runs_json "layer-impact --exact --dt 1e-4 --dt-out 1e-4" e2.json layer-impact --sample s.txt --exact --dt 1e-4 \
         --dt-out 1e-4 --t-max 0.01 &&
@@ -117,6 +120,22 @@ if runs_json "layer-impact --exact --dt 2e-5" e1.json layer-impact --sample s.tx
     ok "4 --exact with dt at most dt-out still runs, the step recorded"
 else
     ko "4 layer-impact --exact with dt <= dt-out"
+fi
+# outcome FILE: the outcome (repr) and the step the settings record
+outcome() { jq_py "$1" "[repr(d.get(k)) for k in ('e_n_first', 'penetration', 't_end', 'steps', 'energy_error')] + [d['settings']['solver']['dt']]"; }
+if runs_json "4 layer-impact --exact --dt 1e-4 at the default dt-out 2e-5" e3.json layer-impact --sample s.txt --exact \
+    --dt 1e-4 --t-max 0.01; then
+    [ "$(outcome e3.json)" = "$(outcome e2.json)" ] &&
+        ok "4 --exact --dt 1e-4 above dt-out 2e-5 runs: its step recorded, the outcome at dt-out 1e-4 ($(outcome e3.json))" ||
+        ko "4 --exact --dt 1e-4 at dt-out 2e-5: $(outcome e3.json) against $(outcome e2.json) at dt-out 1e-4"
+fi
+if runs_json "4 layer-impact --solver rk4 --dt 3e-5 (dt-out 2e-5)" r1.json layer-impact --sample s.txt --solver rk4 \
+    --dt 3e-5 --t-max 0.01 &&
+    runs_json "4 layer-impact --solver rk4 --dt 3e-5 --dt-out 6e-5" r2.json layer-impact --sample s.txt --solver rk4 \
+        --dt 3e-5 --dt-out 6e-5 --t-max 0.01; then
+    [ "$(outcome r1.json)" = "$(outcome r2.json)" ] &&
+        ok "4 --solver rk4 --dt 3e-5 above dt-out 2e-5 runs, the outcome at dt-out 6e-5 ($(outcome r1.json))" ||
+        ko "4 --solver rk4 --dt 3e-5 at dt-out 2e-5: $(outcome r1.json) against $(outcome r2.json) at 6e-5"
 fi
 
 test_summary test_hostile_twentyeighth

@@ -175,6 +175,12 @@ static char *slurp(const char *path)
     return b;
 }
 
+/* the model as the table's writer is given it: ncolumns and columns set
+ * after the config was read (ncol 1, one_columns: as read); zero: a zeroed
+ * config journaled */
+static int t_ncol = 1, t_zero = 0;
+static const char *const *t_columns = one_columns;
+
 /* a sweep of the model "one" over a = 1, 2 journaled by hand in a new
  * directory, its table written with warnings; *table what it holds (NULL:
  * none written) */
@@ -193,21 +199,24 @@ static int table_with(const char *warnings, char **table, char **rows_w, gw_err 
     const gw_sweep_model *models[1] = {&m}, *got = NULL;
     gw_sweep_config cfg;
     memset(&cfg, 0, sizeof cfg);
-    int rc = gw_sweep_config_read_string("[sweep]\nmodel = one\n[grid]\na = 1, 2\n", "one.ini", models, 1, &cfg,
-                                         &got, e);
+    int rc = t_zero ? GW_OK
+                    : gw_sweep_config_read_string("[sweep]\nmodel = one\n[grid]\na = 1, 2\n", "one.ini", models, 1,
+                                                  &cfg, &got, e);
     char done[2] = {0, 0};
     long ndone = 0;
     int fd = -1, dfd = -1;
     if (rc == GW_OK)
         rc = gw_sweep_journal_open_at(dir, &cfg, done, &ndone, &fd, &dfd, e);
     double synced = 0;
-    for (long k = 0; rc == GW_OK && k < 2; k++) {
+    for (long k = 0; rc == GW_OK && k < cfg.ncases; k++) {
         char row[512];
         const double out = 2.0 * (double)(k + 1);
         rc = gw_sweep_format_row(&cfg, k, &out, 1, 0, row, sizeof row);
         if (rc == GW_OK)
             rc = gw_sweep_journal_append(fd, row, &synced, e);
     }
+    m.ncolumns = t_ncol;
+    m.columns = t_columns;
     if (rc == GW_OK)
         rc = gw_sweep_write_table_warned(dfd, dir, &cfg, &m, warnings, rows_w, e);
     char path[600];
@@ -259,6 +268,115 @@ static int c_table_warnings_control(void)
     free(t);
     EXPECT(table_with(NULL, &t, &rw, &e) == GW_OK && t && !strstr(t, "# warning:"));
     free(t);
+    return 0;
+}
+
+/* a model of no columns, of another count than its config's, and a config
+ * naming no model: refused naming them, no table (columns NULL: SIGSEGV;
+ * ncolumns 0 and -1 wrote a header of fewer cells than its rows; a zeroed
+ * config a table of "model (null)") */
+static int c_table_model_refused(void)
+{
+    static const char *const three[] = {"y", "z", "w"};
+    static const struct {
+        int ncol, zero;
+        const char *const *cols;
+        const char *msg;
+    } rows[] = {
+        {1, 0, NULL, "gw_sweep_write_table: model one: columns is NULL (ncolumns 1)"},
+        {0, 0, one_columns, "gw_sweep_write_table: model one: ncolumns 0 (its result columns: at least 1)"},
+        {-1, 0, one_columns, "gw_sweep_write_table: model one: ncolumns -1 (its result columns: at least 1)"},
+        {INT_MIN, 0, one_columns, "gw_sweep_write_table: model one: ncolumns -2147483648 (its result columns: at "
+                                  "least 1)"},
+        {3, 0, three, "gw_sweep_write_table: model one writes 3 result columns, its config's 1 (a config read "
+                      "with another model)"},
+        {1, 1, one_columns, "gw_sweep_write_table: the config names no model (cfg->model NULL)"},
+    };
+    for (size_t i = 0; i < sizeof rows / sizeof rows[0]; i++) {
+        t_ncol = rows[i].ncol;
+        t_columns = rows[i].cols;
+        t_zero = rows[i].zero;
+        char *t = NULL, *rw = NULL;
+        gw_err e = {{0}};
+        const int rc = table_with("w\n", &t, &rw, &e);
+        if (rc != GW_EINVAL || strcmp(e.msg, rows[i].msg) != 0 || t) {
+            printf("row %zu: status %d, '%s', table %s\n", i, rc, e.msg, t ? t : "(none)");
+            return 1;
+        }
+    }
+    return 0;
+}
+
+/* a hand model given to gw_sweep_run: run NULL, columns NULL, ncolumns 0,
+ * -1, another count than its config's: refused naming them, values
+ * untouched (run NULL was SIGSEGV, ncolumns -1 wrote before values) */
+static int c_sweep_run_model_refused(void)
+{
+    static const char *const two[] = {"y", "z"};
+    static const struct {
+        int ncol, null_run;
+        const char *const *cols;
+        const char *msg;
+    } rows[] = {
+        {1, 1, one_columns, "gw_sweep_run: model one: run is NULL"},
+        {1, 0, NULL, "gw_sweep_run: model one: columns is NULL (ncolumns 1)"},
+        {0, 0, one_columns, "gw_sweep_run: model one: ncolumns 0 (its result columns: at least 1)"},
+        {-1, 0, one_columns, "gw_sweep_run: model one: ncolumns -1 (its result columns: at least 1)"},
+        {2, 0, two, "gw_sweep_run: model one writes 2 result columns, its config's 1 (a config read with another "
+                    "model)"},
+    };
+    for (size_t i = 0; i < sizeof rows / sizeof rows[0]; i++) {
+        gw_sweep_model m;
+        memset(&m, 0, sizeof m);
+        m.name = "one";
+        m.ncolumns = 1;
+        m.columns = one_columns;
+        m.has_key = one_has;
+        m.run = one_run;
+        const gw_sweep_model *models[1] = {&m}, *got = NULL;
+        gw_sweep_config cfg;
+        memset(&cfg, 0, sizeof cfg);
+        gw_err e = {{0}};
+        EXPECT(gw_sweep_config_read_string("[sweep]\nmodel = one\n[grid]\na = 1, 2\n", "one.ini", models, 1, &cfg,
+                                           &got, &e) == GW_OK);
+        m.ncolumns = rows[i].ncol;
+        m.columns = rows[i].cols;
+        if (rows[i].null_run)
+            m.run = NULL;
+        double buf[8] = {42, 42, 42, 42, 42, 42, 42, 42};
+        char *w = NULL;
+        const int rc = gw_sweep_run_warned(&cfg, &m, 1, NULL, NULL, buf + 4, &w, &e);
+        gw_sweep_config_free(&cfg);
+        int kept = 1;
+        for (int j = 0; j < 8; j++)
+            kept &= buf[j] == 42;
+        if (rc != GW_EINVAL || strcmp(e.msg, rows[i].msg) != 0 || !kept || w) {
+            printf("row %zu: status %d, '%s', values %s\n", i, rc, e.msg, kept ? "kept" : "written");
+            return 1;
+        }
+    }
+    return 0;
+}
+
+/* control: the model as read runs, both cases' values written */
+static int c_sweep_run_model_control(void)
+{
+    gw_sweep_model m;
+    memset(&m, 0, sizeof m);
+    m.name = "one";
+    m.ncolumns = 1;
+    m.columns = one_columns;
+    m.has_key = one_has;
+    m.run = one_run;
+    const gw_sweep_model *models[1] = {&m}, *got = NULL;
+    gw_sweep_config cfg;
+    memset(&cfg, 0, sizeof cfg);
+    gw_err e = {{0}};
+    EXPECT(gw_sweep_config_read_string("[sweep]\nmodel = one\n[grid]\na = 1, 2\n", "one.ini", models, 1, &cfg,
+                                       &got, &e) == GW_OK);
+    double v[2] = {0, 0};
+    EXPECT(gw_sweep_run(&cfg, &m, 1, NULL, NULL, v, &e) == GW_OK && v[0] == 2 && v[1] == 4);
+    gw_sweep_config_free(&cfg);
     return 0;
 }
 
@@ -355,6 +473,9 @@ int main(void)
         {"grid: distinct speeds, bad grids (control)", c_grid_distinct_control},
         {"table: warnings escaped", c_table_warnings_escaped},
         {"table: warnings kept (control)", c_table_warnings_control},
+        {"table: a model of no columns, a config of no model", c_table_model_refused},
+        {"sweep run: a hand model of no run or columns", c_sweep_run_model_refused},
+        {"sweep run: the model as read (control)", c_sweep_run_model_control},
         {"drop: rk4 rerun of no step", c_drop_rerun_step_unknown},
         {"drop: rerun (control)", c_drop_rerun_control},
         {"layer: check_with's lp (control)", c_check_with_lp_control},

@@ -159,7 +159,11 @@ int gw_sweep_write_table_warned(int dfd, const char *dir, const gw_sweep_config 
 {
     if (!dir || !cfg || !m)
         return gw_err_set(err, GW_EINVAL, "gw_sweep_write_table_warned: %s is NULL", !dir ? "dir" : !cfg ? "cfg" : "m");
-    const int shape = gw_sweep_config_check(cfg, err); /* (as the journal's calls) */
+    int shape = gw_sweep_config_check(cfg, err); /* (as the journal's calls) */
+    if (shape == GW_OK)
+        shape = gw_sweep_model_check("gw_sweep_write_table", cfg, m, 0, err);
+    if (shape == GW_OK && !cfg->model) /* a zeroed config: a table of "model (null)" */
+        shape = gw_err_set(err, GW_EINVAL, "gw_sweep_write_table: the config names no model (cfg->model NULL)");
     if (shape != GW_OK)
         return shape;
     char path[4096];

@@ -28,6 +28,10 @@
  *     said "compare a run at --dt nan (half the step)" (-1: "--dt -0.5", 0:
  *     "--dt 0", inf: "rk4's step halved, inf s"): the step is said not
  *     recorded.
+ *   - gw_chain_study_work_check said a range just above its bound in 3
+ *     digits, as the bound: "n: 1415:1415 at 1 column per N is 2e+06 bead^2
+ *     of work ..., above the bound 2e+06" (granwave.sweep_n((1415, 1415),
+ *     ...)): in the digits that tell it from the bound (2002225).
  * Each case runs in its own child process (test_child.h).
  */
 #define _POSIX_C_SOURCE 200809L
@@ -437,6 +441,25 @@ static int c_drop_rerun_control(void)
     return 0;
 }
 
+/* ------------------------------------------ the studies' work bound ---- */
+
+/* a range just above the bound is said in the digits that tell it from the
+ * bound (1415:1415 was "2e+06 bead^2 of work ..., above the bound 2e+06");
+ * far above it in 3 digits, as docs/reliability.md quotes (control) */
+static int c_work_bound_digits(void)
+{
+    gw_err e = {{0}};
+    EXPECT(gw_chain_study_work_check(1415, 1415, 1, &e) == GW_EINVAL &&
+           strstr(e.msg, "n: 1415:1415 at 1 column per N is 2002225 bead^2 of work (sum of N^2), above the bound "
+                         "2e+06"));
+    EXPECT(gw_chain_study_work_check(1000, 1001, 1, &e) == GW_EINVAL &&
+           strstr(e.msg, "is 2002001 bead^2 of work"));
+    EXPECT(gw_chain_study_work_check(1, 100000, 5, &e) == GW_EINVAL &&
+           strstr(e.msg, "n: 1:100000 at 5 columns per N is 1.67e+15 bead^2 of work"));
+    EXPECT(gw_chain_study_work_check(1414, 1414, 1, &e) == GW_OK);
+    return 0;
+}
+
 /* ---------------------------------------------- the side walls' lp ---- */
 
 /* controls (no fault found): gw_layer_impact_check_with with lp NULL, a NaN
@@ -478,6 +501,7 @@ int main(void)
         {"sweep run: the model as read (control)", c_sweep_run_model_control},
         {"drop: rk4 rerun of no step", c_drop_rerun_step_unknown},
         {"drop: rerun (control)", c_drop_rerun_control},
+        {"work bound: its digits", c_work_bound_digits},
         {"layer: check_with's lp (control)", c_check_with_lp_control},
     };
     return child_cases_run(rows, sizeof rows / sizeof rows[0]);

@@ -83,7 +83,9 @@ def _speeds(vimp):
     for v in map(_number, items):
         if isinstance(v, (bool, np.bool_)) or not isinstance(v, (int, float, np.integer, np.floating)):
             raise TypeError(f"sweep_n(): vimp: an item is a number (m/s), not {_kind(v)}")
-        out.append(float(v))
+        # an int kept whole, for the library to hold to vimp's range: float()
+        # of 10**400 raised OverflowError, naming no keyword
+        out.append(int(v) if isinstance(v, (int, np.integer)) else float(v))
     if not out:
         raise GranwaveValueError("sweep_n: vimp: no impact speed (give at least one)", GW_EINVAL)
     return out
@@ -157,7 +159,8 @@ def run_grid(chain_study, n, vimp, jobs, progress, kwargs):
         if lo > hi:
             raise GranwaveValueError(f"sweep_n: n: ({lo}, {hi}): A > B, no column", GW_EINVAL)
         for x in v:
-            _set(st, buf, "vimp", repr(x), kwargs)
+            _set(st, buf, "vimp", _digits("sweep_n: vimp", x) if isinstance(x, int) else repr(x), kwargs)
+        v = [float(x) for x in v]
         _repeat_check(v)
         _set(st, buf, "n", str(lo), kwargs)
         _set(st, buf, "vimp", repr(v[0]), kwargs)

@@ -15,6 +15,12 @@ string, taking no argument). What it found:
 - sweep_n(n, np.array(0.3)) raised "iteration over a 0-d array", naming no
   keyword: a 0-d array of a number is that speed (as granwave.chain takes
   it), one of another kind refused naming vimp.
+- sweep_n((1, 2), 10**400) raised OverflowError "int too large to convert to
+  float": the library holds the integer to vimp's range, as granwave.chain
+  and falcon do ("'10000000000000000000...' (401 characters) is not a finite
+  number").
+- sweep_n((1415, 1415), [0.3]) was told "2e+06 bead^2 of work ..., above the
+  bound 2e+06": the work in the digits that tell it from the bound.
 The rest was refused with one message naming the keyword, or run: no fault.
 """
 import numpy as np
@@ -93,3 +99,25 @@ def test_sweep_n_progress_raises_through(exc):
         raise exc()
     with pytest.raises(exc):
         granwave.sweep_n((1, 2), [0.3, 0.4], jobs=1, progress=stop)
+
+
+def test_sweep_n_huge_int_speed():
+    with pytest.raises(granwave.GranwaveValueError) as e:
+        granwave.sweep_n((1, 2), 10**400, jobs=1)
+    assert str(e.value) == "sweep_n: vimp: '10000000000000000000...' (401 characters) is not a finite number"
+    with pytest.raises(granwave.GranwaveValueError) as e:
+        granwave.sweep_n((1, 2), [0.3, 10**5000], jobs=1)
+    assert str(e.value) == "sweep_n: vimp: an integer of about 5001 digits is beyond every input's range"
+
+
+def test_sweep_n_int_speeds_control():
+    g = granwave.sweep_n((1, 1), [1, np.int64(2)], jobs=1)
+    assert list(g["v_imp"]) == [1.0, 2.0] and g["v_imp"].dtype == float
+    with pytest.raises(granwave.GranwaveValueError, match="item 2 is the impact velocity 1.0 m/s of item 1"):
+        granwave.sweep_n((1, 1), [1, 1.0], jobs=1)
+
+
+def test_sweep_n_work_digits():
+    with pytest.raises(granwave.GranwaveValueError) as e:
+        granwave.sweep_n((1415, 1415), [0.3], jobs=1)
+    assert str(e.value).startswith("sweep_n: n: 1415:1415 at 1 column per N is 2002225 bead^2 of work")

@@ -460,6 +460,28 @@ static int c_work_bound_digits(void)
     return 0;
 }
 
+/* falcon's one column size: the pair suggested within the work bound
+ * (1415:1415 was told "e.g. 1414:1415", refused by the bound, and "granwave
+ * chain --n 1415", refused by the column's); below it as before (control) */
+static int c_falcon_one_size_advice(void)
+{
+    gw_err e = {{0}};
+    EXPECT(gw_chain_falcon_sizes_check(1415, 1415, &e) == GW_EINVAL &&
+           strstr(e.msg, "give at least two sizes, e.g. 999:1000, the largest pair the studies' work bound holds at "
+                         "one velocity (one column of 1415 beads is above the column's work bound too: granwave "
+                         "chain --n runs up to 1414 over a whole collision)"));
+    gw_err w = {{0}};
+    EXPECT(gw_chain_study_work_check(999, 1000, 1, &w) == GW_OK);
+    EXPECT(gw_chain_falcon_sizes_check(1001, 1001, &e) == GW_EINVAL &&
+           strstr(e.msg, "e.g. 999:1000, the largest pair") && strstr(e.msg, "granwave chain --n 1001)"));
+    EXPECT(gw_chain_falcon_sizes_check(1000, 1000, &e) == GW_EINVAL &&
+           strstr(e.msg, "e.g. 999:1000 (one column's collision: granwave chain --n 1000)"));
+    EXPECT(gw_chain_falcon_sizes_check(5, 5, &e) == GW_EINVAL &&
+           strstr(e.msg, "e.g. 4:5 (one column's collision: granwave chain --n 5)"));
+    EXPECT(gw_chain_falcon_sizes_check(1, 1, &e) == GW_EINVAL && strstr(e.msg, "e.g. 1:2 (one column's"));
+    return 0;
+}
+
 /* ---------------------------------------------- the side walls' lp ---- */
 
 /* controls (no fault found): gw_layer_impact_check_with with lp NULL, a NaN
@@ -502,6 +524,7 @@ int main(void)
         {"drop: rk4 rerun of no step", c_drop_rerun_step_unknown},
         {"drop: rerun (control)", c_drop_rerun_control},
         {"work bound: its digits", c_work_bound_digits},
+        {"falcon: one column size's advice", c_falcon_one_size_advice},
         {"layer: check_with's lp (control)", c_check_with_lp_control},
     };
     return child_cases_run(rows, sizeof rows / sizeof rows[0]);

@@ -423,10 +423,28 @@ int gw_chain_falcon_sizes_check(long a, long b, gw_err *err)
 {
     if (a < 1 || b < a) /* -5:9.2e18 passed */
         return gw_err_set(err, GW_EINVAL, "n: %ld:%ld is not a range of column sizes (1 <= A < B)", a, b);
-    if (a == b)
+    if (a == b) {
+        /* the pair suggested within the studies' work bound at one velocity
+         * (1415:1415 was told "e.g. 1414:1415", which the bound refuses):
+         * above it the largest pair it holds, 999:1000 */
+        long hi = a > 1 ? b : b + 1;
+        const char *why = "";
+        if ((double)(hi - 1) * (double)(hi - 1) + (double)hi * (double)hi > GW_CHAIN_STUDY_WORK_MAX) {
+            hi = 1;
+            while ((double)hi * hi + (double)(hi + 1) * (hi + 1) <= GW_CHAIN_STUDY_WORK_MAX)
+                hi++;
+            why = ", the largest pair the studies' work bound holds at one velocity";
+        }
+        if ((double)a * (double)a > GW_CHAIN_STUDY_WORK_MAX) /* chain --n 1415 is refused too */
+            return gw_err_set(err, GW_EINVAL, "n: %ld:%ld is one column size, and the study fits tau_N = T_q (N - 1) "
+                              "+ tau_1 over N (T_q, the wave speed 4R/T_q): give at least two sizes, e.g. %ld:%ld%s "
+                              "(one column of %ld beads is above the column's work bound too: granwave chain --n "
+                              "runs up to %ld over a whole collision)", a, b, hi - 1, hi, why, a,
+                              (long)floor(sqrt(GW_CHAIN_STUDY_WORK_MAX)));
         return gw_err_set(err, GW_EINVAL, "n: %ld:%ld is one column size, and the study fits tau_N = T_q (N - 1) + "
-                          "tau_1 over N (T_q, the wave speed 4R/T_q): give at least two sizes, e.g. %ld:%ld (one "
-                          "column's collision: granwave chain --n %ld)", a, b, a > 1 ? a - 1 : a, a > 1 ? b : b + 1, a);
+                          "tau_1 over N (T_q, the wave speed 4R/T_q): give at least two sizes, e.g. %ld:%ld%s (one "
+                          "column's collision: granwave chain --n %ld)", a, b, hi - 1, hi, why, a);
+    }
     return GW_OK;
 }
 

@@ -98,11 +98,18 @@ int gw_chain_study_work_check(long a, long b, int runs, gw_err *err)
      * at a = b = 9.2e18 and let the range pass); exact to 1e-16 where b <= 1e5 */
     const double m = (double)b - (double)a + 1, x = (double)a;
     double work = runs * (m * x * x + x * m * (m - 1) + (m - 1) * m * (2 * m - 1) / 6);
-    if (work > GW_CHAIN_STUDY_WORK_MAX)
+    if (work > GW_CHAIN_STUDY_WORK_MAX) {
+        /* in 3 digits, or as many as tell it from the bound: 1415:1415 was
+         * "2e+06 bead^2 of work ..., above the bound 2e+06" */
+        char w[32];
+        gw_snprintf(w, sizeof w, "%.3g", work);
+        if (!(gw_strtod(w, NULL) > GW_CHAIN_STUDY_WORK_MAX))
+            gw_num_text(w, sizeof w, work);
         return gw_err_set(err, GW_EINVAL,
-                          "n: %ld:%ld at %d column%s per N is %.3g bead^2 of work (sum of N^2), above the "
+                          "n: %ld:%ld at %d column%s per N is %s bead^2 of work (sum of N^2), above the "
                           "bound %.0e (a column's work grows as N^2; the largest documented study is 2e5)",
-                          a, b, runs, runs > 1 ? "s" : "", work, GW_CHAIN_STUDY_WORK_MAX);
+                          a, b, runs, runs > 1 ? "s" : "", w, GW_CHAIN_STUDY_WORK_MAX);
+    }
     return GW_OK;
 }
 

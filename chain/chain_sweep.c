@@ -6,12 +6,14 @@
  */
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "chain_model.h"
 #include "chain_wall.h"
 #include "chain_watch.h"
 #include "gw_chain.h"
+#include "gw_locale.h"
 #include "gw_pool.h"
 
 /* Steps a whole study may take, summed over its columns: each run is bounded at
@@ -117,9 +119,72 @@ static int one(void *arg, long k, gw_err *err)
     return rc;
 }
 
+/* Two speeds of a grid as one: equal, or within a relative 1e-12, a
+ * difference only printing makes. The chain sweep config's rule for a value
+ * listed twice (GW_SWEEP_SAME_REL, gw_sweep_config.c), so that a speed given
+ * twice is refused alike by the config, by this call and by Python's
+ * granwave.sweep_n. The grid has no fit over its speeds (falcon's 1e-6 rule,
+ * gw_chain_study_speeds_check, is its fits'): only a repeat is refused. */
+#define CHAIN_SWEEP_SAME_REL 1e-12
+
+typedef struct grid_speed {
+    double v;
+    int i;
+} grid_speed;
+
+static int grid_speed_cmp(const void *pa, const void *pb)
+{
+    const grid_speed *a = pa, *b = pb;
+    const int na = isnan(a->v), nb = isnan(b->v); /* NaN last: an order qsort can keep */
+    if (na != nb)
+        return na - nb;
+    if (!na && a->v != b->v)
+        return a->v < b->v ? -1 : 1;
+    return (a->i > b->i) - (a->i < b->i);
+}
+
+/* GW_EINVAL naming the first repeated speed of v (the pair j < i with i
+ * smallest, then j), items counted from 1: `granwave.sweep_n((1, 2), [0.3,
+ * 0.3])` ran every collision of the speed twice into two rows of its result.
+ * Sorted, so nv speeds cost nv log nv. Speeds not finite are left to their
+ * cases' refusal. */
+static int sweep_speeds_check(const double *v, int nv, gw_err *err)
+{
+    if (nv < 2)
+        return GW_OK;
+    grid_speed *s = malloc((size_t)nv * sizeof *s);
+    if (!s)
+        return gw_err_set(err, GW_ENOMEM, "gw_chain_sweep_n: out of memory for %d speeds", nv);
+    for (int k = 0; k < nv; k++)
+        s[k] = (grid_speed){v[k], k};
+    qsort(s, (size_t)nv, sizeof *s, grid_speed_cmp);
+    int j = -1, i = nv;
+    for (int k = 1; k < nv; k++) {
+        const double a = s[k - 1].v, b = s[k].v;
+        /* only finite speeds repeat: NaN and inf are refused by their
+         * cases' own words (gw_chain_params_validate), as falcon leaves them */
+        if (!isfinite(a) || !isfinite(b) ||
+            !(a == b || fabs(b - a) <= CHAIN_SWEEP_SAME_REL * fmax(fabs(a), fabs(b))))
+            continue;
+        const int lo = s[k - 1].i < s[k].i ? s[k - 1].i : s[k].i, hi = s[k - 1].i ^ s[k].i ^ lo;
+        if (hi < i || (hi == i && lo < j))
+            j = lo, i = hi;
+    }
+    free(s);
+    if (j < 0)
+        return GW_OK;
+    char vj[32], vi[32];
+    if (v[i] == v[j])
+        return gw_err_set(err, GW_EINVAL, "gw_chain_sweep_n: v: item %d is the impact velocity %s m/s of item %d "
+                          "(each of its collisions would run twice)", i + 1, gw_num_text(vi, sizeof vi, v[i]), j + 1);
+    return gw_err_set(err, GW_EINVAL, "gw_chain_sweep_n: v: item %d, %s m/s, and item %d, %s m/s, are the same "
+                      "impact velocity to 12 digits (each of its collisions would run twice)", i + 1,
+                      gw_num_text(vi, sizeof vi, v[i]), j + 1, gw_num_text(vj, sizeof vj, v[j]));
+}
+
 /* The grid's checks before any case runs (its arguments, the largest
- * column's bounds at each speed, the study's steps); res zeroed once the
- * grid's shape passed. */
+ * column's bounds at each speed, no speed repeated, the study's steps); res
+ * zeroed once the grid's shape passed. */
 static int sweep_check(const gw_chain_params *tmpl, const gw_chain_run_opts *o, const double *v, int nv, int n_lo,
                        int n_hi, gw_chain_result *res, gw_err *err)
 {
@@ -141,6 +206,9 @@ static int sweep_check(const gw_chain_params *tmpl, const gw_chain_run_opts *o, 
         if (rc != GW_OK)
             return rc;
     }
+    int rc = sweep_speeds_check(v, nv, err);
+    if (rc != GW_OK)
+        return rc;
     return study_steps_check(tmpl, o, v, nv, n_lo, n_hi, err);
 }
 

@@ -677,9 +677,17 @@ static int drop_chatter_warning(const gw_chain_drop_result *r, const gw_chain_ru
         gw_solver_params sp = o->sp;
         chain_chatter_rerun(o->solver ? o->solver : gw_solver_cvode, r->run_dt, &sp, how, sizeof how, flags,
                             sizeof flags);
-    } else if (step) {
+    } else if (step && r->run_dt > 0 && isfinite(r->run_dt)) {
         gw_solver_params sp = gw_solver_params_default();
         chain_chatter_rerun(gw_solver_rk4, r->run_dt, &sp, how, sizeof how, flags, sizeof flags);
+    } else if (step) {
+        /* a result filled by hand whose run_dt is no step: it was halved into
+         * "compare a run at --dt nan (half the step)" (-1: --dt -0.5, 0: --dt
+         * 0, inf: "rk4's step halved, inf s") */
+        char dt[32];
+        gw_num_text(dt, sizeof dt, r->run_dt);
+        gw_snprintf(how, sizeof how, "rk4's step halved (the result's run_dt, %s, is not a step)", dt);
+        gw_snprintf(flags, sizeof flags, "--dt half the drop's rk4 step (its run_dt, %s, is not one)", dt);
     } else {
         /* the tolerances' values (10 times looser at the 1e-15 floor), as the
          * program's line names them: the drop's first collision ran at the

@@ -639,6 +639,9 @@ int gw_chain_calibrate(const gw_chain_params *p, const gw_chain_run_opts *o,
  * template tmpl (its n and v_imp are replaced) and run options o (no sample
  * callback). res must hold nv * (n_hi - n_lo + 1) results, index
  * iv * (n_hi - n_lo + 1) + (N - n_lo); free each with gw_chain_result_free.
+ * A speed given twice (equal, or within a relative 1e-12: the chain sweep
+ * config's rule for a value listed twice) is GW_EINVAL naming v and both
+ * items, nothing run: each of its collisions would run twice.
  * jobs threads (<= 0: one per online CPU; the worker pool of gw_pool.h).
  * progress is ignored (kept for source compatibility: the library prints
  * nothing; for progress pass a callback to gw_chain_sweep_n_progress). On the

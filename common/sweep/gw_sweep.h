@@ -326,7 +326,11 @@ int gw_sweep_write_table_at(int dirfd, const char *dir, const gw_sweep_config *c
  * journal's rows, so a resumed sweep's table is an uninterrupted one's byte
  * for byte. The rows' lines written are appended to *rows_warnings (may be
  * NULL) for the caller to say. gw_sweep_write_table(_at) write the rows'
- * alone. */
+ * alone. Each warning line is written as gw_warnings_add makes one (a
+ * control character \r, \t or \xHH; a CR or an escape sequence went into
+ * the table raw). A model of no columns (ncolumns < 1, columns or one of
+ * them NULL) or of another count than its config's, and a config naming no
+ * model, are GW_EINVAL naming them, nothing written (columns NULL: SIGSEGV). */
 int gw_sweep_write_table_warned(int dirfd, const char *dir, const gw_sweep_config *cfg, const gw_sweep_model *m,
                                 const char *warnings, char **rows_warnings, gw_err *err);
 
@@ -371,7 +375,10 @@ int gw_sweep_size_check(const gw_sweep_config *cfg, const gw_sweep_model *m, gw_
  * then run on jobs threads (0: one per CPU; GW_EINVAL "jobs: ..." outside
  * [0, GW_SWEEP_JOBS_MAX]). values[k * m->ncolumns + j] receives column j
  * of case k (NaN for cases not run). GW_EINVAL / the first failing run's status
- * with "case K: message" in err; GW_ECANCELED when progress asked to stop. */
+ * with "case K: message" in err; GW_ECANCELED when progress asked to stop.
+ * A model whose run is NULL (called: SIGSEGV), of ncolumns below 1 (-1 wrote
+ * before values), columns NULL or of another count than its config's is
+ * GW_EINVAL "gw_sweep_run: model NAME: ...", nothing run. */
 int gw_sweep_run(const gw_sweep_config *cfg, const gw_sweep_model *m, int jobs, gw_progress_fn progress,
                  void *pctx, double *values, gw_err *err);
 

@@ -20,6 +20,17 @@
 int gw_sweep_pairs_check(const char *call, int nk, const char *const *names, const char *const *values,
                          gw_err *err);
 
+/* gw_sweep_run.c: a model filled by the caller (gw_sweep.h's model
+ * interface) is one the sweep can use: ncolumns at least 1, columns given
+ * and none of its first ncolumns NULL, ncolumns the config's when it records
+ * one (cfg->ncolumns > 0: its journal's rows hold that many), and with run
+ * != 0 its run given. GW_EINVAL "CALL: model NAME: ..." otherwise: run NULL
+ * was called (SIGSEGV), columns NULL read (SIGSEGV, the table's header),
+ * ncolumns -1 or 0 wrote each case's numbers before or past values and a
+ * table whose header had fewer cells than its rows. */
+int gw_sweep_model_check(const char *call, const gw_sweep_config *cfg, const gw_sweep_model *m, int run,
+                         gw_err *err);
+
 /* gw_sweep_run.c: the warnings of cfg's check pass (every case checked by m,
  * then m->memo_warnings), appended to *list with its config's keys named
  * (gw_sweep_warnings_keys), as the program's sweep says them and writes them

@@ -286,6 +286,28 @@ void gw_sweep_checks_end(const gw_sweep_model *m, void *memo)
         m->memo_free(memo);
 }
 
+int gw_sweep_model_check(const char *call, const gw_sweep_config *cfg, const gw_sweep_model *m, int run,
+                         gw_err *err)
+{
+    const char *name = m->name ? m->name : "(unnamed)";
+    if (m->ncolumns < 1)
+        return gw_err_set(err, GW_EINVAL, "%s: model %s: ncolumns %d (its result columns: at least 1)", call, name,
+                          m->ncolumns);
+    /* before its columns are read: a longer count than its array */
+    if (cfg->ncolumns > 0 && cfg->ncolumns != m->ncolumns)
+        return gw_err_set(err, GW_EINVAL, "%s: model %s writes %d result columns, its config's %d (a config read "
+                          "with another model)", call, name, m->ncolumns, cfg->ncolumns);
+    if (!m->columns)
+        return gw_err_set(err, GW_EINVAL, "%s: model %s: columns is NULL (ncolumns %d)", call, name, m->ncolumns);
+    for (int j = 0; j < m->ncolumns; j++)
+        if (!m->columns[j])
+            return gw_err_set(err, GW_EINVAL, "%s: model %s: columns[%d] is NULL (ncolumns %d)", call, name, j,
+                              m->ncolumns);
+    if (run && !m->run)
+        return gw_err_set(err, GW_EINVAL, "%s: model %s: run is NULL", call, name);
+    return GW_OK;
+}
+
 int gw_sweep_check_warnings(const gw_sweep_config *cfg, const gw_sweep_model *m, char **list)
 {
     if (!cfg || !m || !list)
@@ -395,6 +417,8 @@ int gw_sweep_run_warned(const gw_sweep_config *cfg, const gw_sweep_model *m, int
     /* a config filled by hand with more cases than its grid ran its first
      * cases again (GW_OK), one with a key of no values divided by zero */
     int crc = gw_sweep_config_check(cfg, err);
+    if (crc == GW_OK)
+        crc = gw_sweep_model_check("gw_sweep_run", cfg, m, 1, err);
     if (crc != GW_OK)
         return crc;
     const int nk = cfg->ngrid + cfg->nparams;

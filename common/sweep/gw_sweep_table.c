@@ -89,15 +89,33 @@ static int table_rows_warnings(const gw_sweep_config *cfg, const gw_sweep_model 
     return rc;
 }
 
-/* "# warning: TEXT" for each line of list (a gw_warnings_add list) */
-static void write_warnings(FILE *fp, const char *list)
+/* "# warning: TEXT" for each line of list (a gw_warnings_add list), each
+ * TEXT one line as gw_warnings_add makes it (gw_one_line: a control
+ * character written \r, \t or \xHH, a byte of no whole UTF-8 character
+ * \xHH): a caller's list given "a\rb" or an escape sequence wrote them raw
+ * into the table, whose reader (layer-stats) said them to a terminal.
+ * GW_ENOMEM when a line's copy cannot be made (nothing more written). */
+static int write_warnings(FILE *fp, const char *list)
 {
     for (const char *p = list; p && *p;) {
         const size_t len = strcspn(p, "\n");
-        if (len > 0)
-            gw_fprintf(fp, "# warning: %.*s\n", (int)len, p);
+        if (len > 0) {
+            char *raw = malloc(len + 1), *line = malloc(4 * len + 1);
+            if (!raw || !line) {
+                free(raw);
+                free(line);
+                return GW_ENOMEM;
+            }
+            memcpy(raw, p, len);
+            raw[len] = '\0';
+            gw_one_line(line, 4 * len + 1, raw);
+            gw_fprintf(fp, "# warning: %s\n", line);
+            free(raw);
+            free(line);
+        }
         p += len + (p[len] == '\n');
     }
+    return GW_OK;
 }
 
 int gw_sweep_write_table(const char *dir, const gw_sweep_config *cfg, const gw_sweep_model *m, gw_err *err)
@@ -141,7 +159,11 @@ int gw_sweep_write_table_warned(int dfd, const char *dir, const gw_sweep_config 
 {
     if (!dir || !cfg || !m)
         return gw_err_set(err, GW_EINVAL, "gw_sweep_write_table_warned: %s is NULL", !dir ? "dir" : !cfg ? "cfg" : "m");
-    const int shape = gw_sweep_config_check(cfg, err); /* (as the journal's calls) */
+    int shape = gw_sweep_config_check(cfg, err); /* (as the journal's calls) */
+    if (shape == GW_OK)
+        shape = gw_sweep_model_check("gw_sweep_write_table", cfg, m, 0, err);
+    if (shape == GW_OK && !cfg->model) /* a zeroed config: a table of "model (null)" */
+        shape = gw_err_set(err, GW_EINVAL, "gw_sweep_write_table: the config names no model (cfg->model NULL)");
     if (shape != GW_OK)
         return shape;
     char path[4096];
@@ -209,8 +231,7 @@ int gw_sweep_write_table_warned(int dfd, const char *dir, const gw_sweep_config 
                     gw_fprintf(f.fp, "%s%s", j ? ", " : "", cfg->grid[i].values[j]);
                 fputc('\n', f.fp);
             }
-            write_warnings(f.fp, warnings);
-            write_warnings(f.fp, rw);
+            const int wrote = write_warnings(f.fp, warnings) == GW_OK && write_warnings(f.fp, rw) == GW_OK;
             gw_fprintf(f.fp, "case");
             for (int i = 0; i < cfg->ngrid; i++)
                 gw_fprintf(f.fp, ",%s", cfg->grid[i].name);
@@ -224,7 +245,12 @@ int gw_sweep_write_table_warned(int dfd, const char *dir, const gw_sweep_config 
                 fwrite(rows[i].s, 1, rows[i].len, f.fp);
                 fputc('\n', f.fp);
             }
-            rc = gw_afile_commit(&f, err);
+            if (wrote) {
+                rc = gw_afile_commit(&f, err);
+            } else { /* no table without its warnings */
+                gw_afile_abort(&f);
+                rc = gw_err_set(err, GW_ENOMEM, "sweep: out of memory");
+            }
         }
         if (rc == GW_OK && rows_warnings && rw) { /* said by the caller: the lines it wrote */
             const size_t have = *rows_warnings ? strlen(*rows_warnings) : 0;

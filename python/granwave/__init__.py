@@ -341,7 +341,9 @@ def sweep_n(n, vimp, *, jobs=0, progress=None, **kwargs):
     """The library's N x v grid (gw_chain_sweep_n_warned): one collision of
     the column for every impact speed in vimp (m/s, a number or a list) and
     every N in n = (A, B) (N = A..B; a range or one N too), on `jobs` threads
-    (0: one per CPU). Other keywords are granwave.chain's (its column: model
+    (0: one per CPU); a speed given twice (or within a relative 1e-12, as a
+    chain sweep's config refuses a value listed twice) is refused naming vimp
+    and both items. Other keywords are granwave.chain's (its column: model
     and solver; not n, vimp or trace), resolved as falcon resolves its column
     (N = A, the first speed: a restitution target is calibrated there).
     progress: optional f(done, total) per collision, from the worker threads

@@ -62,21 +62,58 @@ def _range(n):
     raise TypeError(f"sweep_n(): n must be (A, B) (two integers: N = A..B), a range or an integer, not {_kind(n)}")
 
 
+def _number(v):
+    """A 0-d numpy array of a real number as its number (np.array(0.3) is one
+    speed, as granwave.chain takes it); anything else as it is."""
+    if isinstance(v, np.ndarray) and v.ndim == 0 and v.dtype.kind in "iuf":
+        return v[()]
+    return v
+
+
 def _speeds(vimp):
+    vimp = _number(vimp)  # iterated, it raised "iteration over a 0-d array", naming no keyword
     if isinstance(vimp, (int, float, np.number)):
         items = [vimp]
-    elif isinstance(vimp, (str, bytes, dict)) or not hasattr(vimp, "__iter__"):
+    elif isinstance(vimp, (str, bytes, dict)) or not hasattr(vimp, "__iter__") or \
+            (isinstance(vimp, np.ndarray) and vimp.ndim == 0):
         raise TypeError(f"sweep_n(): vimp must be a speed or a list of speeds (m/s), not {_kind(vimp)}")
     else:  # a generator that never ends is refused past the speeds a grid can hold
         items = _items("sweep_n: vimp", vimp, _SPEEDS_MAX)
     out = []
-    for v in items:
+    for v in map(_number, items):
         if isinstance(v, (bool, np.bool_)) or not isinstance(v, (int, float, np.integer, np.floating)):
             raise TypeError(f"sweep_n(): vimp: an item is a number (m/s), not {_kind(v)}")
-        out.append(float(v))
+        # an int kept whole, for the library to hold to vimp's range: float()
+        # of 10**400 raised OverflowError, naming no keyword
+        out.append(int(v) if isinstance(v, (int, np.integer)) else float(v))
     if not out:
         raise GranwaveValueError("sweep_n: vimp: no impact speed (give at least one)", GW_EINVAL)
     return out
+
+
+_SAME_REL = 1e-12  # the chain sweep config's rule for a value listed twice (as gw_chain_sweep_n's)
+
+
+def _repeat_check(v):
+    """A speed given twice (equal, or within a relative 1e-12) refused naming
+    vimp and both items, as gw_chain_sweep_n refuses it: each of its
+    collisions would run twice ((1, 2), [0.3, 0.3] ran them into two rows)."""
+    order = sorted(range(len(v)), key=lambda k: (v[k], k))
+    pair = None
+    for a, b in zip(order, order[1:]):
+        x, y = v[a], v[b]
+        if x == y or abs(y - x) <= _SAME_REL * max(abs(x), abs(y)):
+            lo, hi = min(a, b), max(a, b)
+            if pair is None or (hi, lo) < (pair[1], pair[0]):
+                pair = (lo, hi)
+    if pair is None:
+        return
+    j, i = pair
+    if v[i] == v[j]:
+        raise GranwaveValueError(f"sweep_n: vimp: item {i + 1} is the impact velocity {v[i]!r} m/s of item {j + 1} "
+                                 "(each of its collisions would run twice)", GW_EINVAL)
+    raise GranwaveValueError(f"sweep_n: vimp: item {i + 1}, {v[i]!r} m/s, and item {j + 1}, {v[j]!r} m/s, are the "
+                             "same impact velocity to 12 digits (each of its collisions would run twice)", GW_EINVAL)
 
 
 def _set(st, buf, name, value, kwargs):
@@ -122,7 +159,9 @@ def run_grid(chain_study, n, vimp, jobs, progress, kwargs):
         if lo > hi:
             raise GranwaveValueError(f"sweep_n: n: ({lo}, {hi}): A > B, no column", GW_EINVAL)
         for x in v:
-            _set(st, buf, "vimp", repr(x), kwargs)
+            _set(st, buf, "vimp", _digits("sweep_n: vimp", x) if isinstance(x, int) else repr(x), kwargs)
+        v = [float(x) for x in v]
+        _repeat_check(v)
         _set(st, buf, "n", str(lo), kwargs)
         _set(st, buf, "vimp", repr(v[0]), kwargs)
         rc = lib.gw_chain_study_work_check(lo, hi, len(v), ctypes.byref(err))

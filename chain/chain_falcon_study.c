@@ -419,21 +419,30 @@ static int pick_solver(const gw_chain_falcon_setup *s, gw_chain_resolved *r, dou
     return GW_OK;
 }
 
-int gw_chain_falcon_sizes_check(long a, long b, gw_err *err)
+int gw_chain_falcon_sizes_check_at(long a, long b, int ncols, gw_err *err)
 {
     if (a < 1 || b < a) /* -5:9.2e18 passed */
         return gw_err_set(err, GW_EINVAL, "n: %ld:%ld is not a range of column sizes (1 <= A < B)", a, b);
     if (a == b) {
-        /* the pair suggested within the studies' work bound at one velocity
-         * (1415:1415 was told "e.g. 1414:1415", which the bound refuses):
-         * above it the largest pair it holds, 999:1000 */
+        /* the pair suggested within the studies' work bound at the study's
+         * velocities (1415:1415 was told "e.g. 1414:1415", which the bound
+         * refuses; then "999:1000", which it refuses at falcon's default 5
+         * speeds): above it the largest pair it holds, 999:1000 at one
+         * velocity, 447:448 at five */
+        const double m = ncols > 1 ? (double)ncols : 1.0;
         long hi = a > 1 ? b : b + 1;
-        const char *why = "";
-        if ((double)(hi - 1) * (double)(hi - 1) + (double)hi * (double)hi > GW_CHAIN_STUDY_WORK_MAX) {
+        char why[96] = "";
+        if (m * ((double)(hi - 1) * (double)(hi - 1) + (double)hi * (double)hi) > GW_CHAIN_STUDY_WORK_MAX) {
             hi = 1;
-            while ((double)hi * hi + (double)(hi + 1) * (hi + 1) <= GW_CHAIN_STUDY_WORK_MAX)
+            while (m * ((double)hi * hi + (double)(hi + 1) * (hi + 1)) <= GW_CHAIN_STUDY_WORK_MAX)
                 hi++;
-            why = ", the largest pair the studies' work bound holds at one velocity";
+            if (hi < 2)
+                hi = 2; /* the smallest pair: the work check names the speeds */
+            if (ncols > 1)
+                gw_snprintf(why, sizeof why, ", the largest pair the studies' work bound holds at %d velocities",
+                            ncols);
+            else
+                gw_snprintf(why, sizeof why, ", the largest pair the studies' work bound holds at one velocity");
         }
         if ((double)a * (double)a > GW_CHAIN_STUDY_WORK_MAX) /* chain --n 1415 is refused too */
             return gw_err_set(err, GW_EINVAL, "n: %ld:%ld is one column size, and the study fits tau_N = T_q (N - 1) "
@@ -446,6 +455,11 @@ int gw_chain_falcon_sizes_check(long a, long b, gw_err *err)
                           "column's collision: granwave chain --n %ld)", a, b, hi - 1, hi, why, a);
     }
     return GW_OK;
+}
+
+int gw_chain_falcon_sizes_check(long a, long b, gw_err *err)
+{
+    return gw_chain_falcon_sizes_check_at(a, b, 1, err);
 }
 
 int gw_chain_falcon_speeds(const double *vimp, int n_vimp, const double *heights_mm, int n_heights, double gravity,
@@ -546,7 +560,7 @@ static int falcon_run(const gw_chain_falcon_setup *s, gw_progress_fn progress, v
     if (rc != GW_OK)
         return rc;
     int nv = (int)nvl, nn = (int)(s->n[1] - s->n[0] + 1);
-    if ((rc = gw_chain_falcon_sizes_check(s->n[0], s->n[1], err)) != GW_OK)
+    if ((rc = gw_chain_falcon_sizes_check_at(s->n[0], s->n[1], nv, err)) != GW_OK)
         return rc;
     if ((rc = alloc_outcome(out, nv, (int)s->n[0], nn, err)) != GW_OK)
         return rc;

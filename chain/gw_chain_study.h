@@ -349,6 +349,10 @@ int gw_chain_falcon_run_watch(const gw_chain_falcon_setup *s, gw_progress_fn pro
  * 0): GW_EINVAL "n: ..." when a == b. gw_chain_falcon_run checks it; the
  * command calls it before it creates --out. */
 int gw_chain_falcon_sizes_check(long a, long b, gw_err *err);
+/* The same at ncols columns per N (the study's speeds and heights): the pair
+ * it suggests for one size is one the work bound holds at that count
+ * (gw_chain_falcon_sizes_check is this at 1). */
+int gw_chain_falcon_sizes_check_at(long a, long b, int ncols, gw_err *err);
 void gw_chain_falcon_outcome_free(gw_chain_falcon_outcome *out);
 /* The warning of a study over columns (falcon, wavespeed) with unfinished of
  * its total collisions not ended at t_max, appended to *list

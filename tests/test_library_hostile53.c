@@ -479,6 +479,14 @@ static int c_falcon_one_size_advice(void)
     EXPECT(gw_chain_falcon_sizes_check(5, 5, &e) == GW_EINVAL &&
            strstr(e.msg, "e.g. 4:5 (one column's collision: granwave chain --n 5)"));
     EXPECT(gw_chain_falcon_sizes_check(1, 1, &e) == GW_EINVAL && strstr(e.msg, "e.g. 1:2 (one column's"));
+    /* at falcon's default 5 speeds the pair is one the bound holds at 5
+     * (999:1000 is 9.99e6 there: the advice was refused by the next check) */
+    EXPECT(gw_chain_falcon_sizes_check_at(1415, 1415, 5, &e) == GW_EINVAL &&
+           strstr(e.msg, "e.g. 446:447, the largest pair the studies' work bound holds at 5 velocities"));
+    EXPECT(gw_chain_study_work_check(446, 447, 5, &w) == GW_OK && gw_chain_study_work_check(447, 448, 5, &w) != GW_OK);
+    EXPECT(gw_chain_falcon_sizes_check_at(1000, 1000, 5, &e) == GW_EINVAL && strstr(e.msg, "e.g. 446:447, the"));
+    EXPECT(gw_chain_falcon_sizes_check_at(5, 5, 5, &e) == GW_EINVAL && strstr(e.msg, "e.g. 4:5 (one column's"));
+    EXPECT(gw_chain_falcon_sizes_check_at(1415, 1415, 1, &e) == GW_EINVAL && strstr(e.msg, "e.g. 999:1000, the"));
     return 0;
 }
 

@@ -232,7 +232,7 @@ int gw_cmd_falcon(int argc, char **argv)
         free(vv);
         return chain_cli_fail_rc(prc, err.msg);
     }
-    if ((prc = gw_chain_falcon_sizes_check(a, b, &err)) != GW_OK ||
+    if ((prc = gw_chain_falcon_sizes_check_at(a, b, nvv + nhh, &err)) != GW_OK ||
         (prc = gw_chain_study_work_check(a, b, nvv + nhh, &err)) != GW_OK) {
         free(vv);
         free(hh);

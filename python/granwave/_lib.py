@@ -24,7 +24,7 @@ c_double_p = ctypes.POINTER(ctypes.c_double)
 
 # The ABI of libgranwave (GW_ABI_VERSION, its soname number) these mirrors are
 # written for; test_abi fails while it differs from the headers'.
-ABI_VERSION = 7
+ABI_VERSION = 8
 
 
 class GwErr(ctypes.Structure):

@@ -466,11 +466,14 @@ static int maps_write(const char *pid, dev_t dev, ino_t ino, int unknown_ok, int
  * sees (gw_sweep_journal_append), not per row: a reader holding the journal
  * made the check after each row compare the whole file (a row's write read
  * the whole journal: 449 MB read over a sweep of 2000 cases).
- * A holder in another PID namespace (a container's process, or a process
- * outside the sweep's container) is not in this /proc: the lease still says
- * the file is held, none is found, and the answer is 1, so while it holds
- * the journal each row's check compares the whole file, as for any holder
- * before the walk. That is slower, never a miss, and it is not fixed: no
+ * A holder outside the sweep's PID namespace (the sweep in a container, the
+ * holder on the host or in another container) is not in this /proc (one in
+ * a namespace below the sweep's is listed): the lease still says the file
+ * is held, none is found, and the answer is 1, so while it holds the journal
+ * each row's check compares the whole file, as for any holder before the
+ * walk: 1200 one-bead cases run under `unshare --pid --fork --mount-proc`
+ * with a reader outside pread 161 MB, against 10.1 MB with the reader in
+ * the sweep's namespace. That is slower, never a miss, and it is not fixed: no
  * kernel call tells another namespace's descriptors' access modes. A lock
  * query (F_GETLK, F_OFD_GETLK, /proc/locks) sees locks alone, which a reader
  * does not take; a read lease, which the kernel refuses while any open file

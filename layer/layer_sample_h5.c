@@ -707,7 +707,16 @@ static int read_h5_locked(const char *path, gw_layer_sample *s, const h5_quiet *
  * written and deleted, its space never reused) was hashed whole, twice by a
  * read and three times by a sweep. The bound is the file's size against
  * these counts only: bytes HDF5 does not count (a global heap of
- * variable-length strings, a user block) fit in the slack for any sample. */
+ * variable-length strings, a user block) fit in the slack for any sample.
+ * The unheld bytes within the slack are hashed with the rest, and that is
+ * kept: a sample's content hash is its file's bytes (the journals' and
+ * tables' "# input" lines, the memo's and the pile check's keys), so a hash
+ * of the held bytes alone would change every HDF5 sample's and refuse their
+ * journals on resume, and a smaller slack would refuse valid files whose
+ * uncounted bytes HDF5 does not report. Its cost, measured on layer-make's
+ * 40-disc sample (6994 bytes) with 0.9 MiB freed by h5py (952,786 bytes):
+ * `sweep --check` over 2 cases read 5.8 MB against 0.13 MB and took 0.01 to
+ * 0.02 s of CPU against under 0.01. */
 #define H5_HELD_SLACK (1ULL << 20)
 typedef struct h5_held {
     unsigned long long bytes;

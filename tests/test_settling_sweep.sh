@@ -13,8 +13,10 @@
 #    of the matched pile 0 and 1, of a hand-written copy (no settings line) 0
 #    and nan;
 #  2 layer-stats warns (exit 0) on stderr, naming the rows and the load
-#    ratio, for the density-2000 table (Python's layer_stats: a
-#    GranwaveWarning), and says nothing of it for the matched one;
+#    ratio, for the density-2000 table without its "# warning:" lines (a
+#    table before the forty-fifth session; with them the sweep's line says
+#    it, once) (Python's layer_stats: a GranwaveWarning), and says nothing of
+#    it for the matched one;
 #  3 the table stays reproducible: the same sweep on 1 and 2 jobs, and one
 #    resumed from a journal cut to its first row, write results.csv byte for
 #    byte the same.
@@ -76,12 +78,16 @@ sweep hand hand.txt
 check_cols "a sweep over a hand-written copy (no settings line)" hand 0 nan
 
 # 2: layer-stats
+# (on the table without its "# warning:" lines, as tables were before the
+# forty-fifth session: layer-stats' own line counts the column; on the table
+# with them the sweep's line says it, once: test_sweep_warnings_table 7)
 if [ -s d2000/results.csv ]; then
-    "$GW" layer-stats d2000/results.csv >st.out 2>st.err; rc=$?
+    grep -v '^# warning: ' d2000/results.csv >d2000_old.csv
+    "$GW" layer-stats d2000_old.csv >st.out 2>st.err; rc=$?
     [ $rc -eq 0 ] && grep -q "warning: 2 of 2 rows ran on a sample settled under another material.*settled_load_ratio 0.755 to 0.755" st.err &&
         ok "layer-stats warns of the 2 rows settled under another material" || ko "layer-stats: exit $rc, $(cat st.err)"
     py_checks 1 <<'EOF'
-warned("Python layer_stats", "2 of 2 rows ran on a sample settled", granwave.layer_stats, "d2000/results.csv")
+warned("Python layer_stats", "2 of 2 rows ran on a sample settled", granwave.layer_stats, "d2000_old.csv")
 EOF
 else
     ko "layer-stats: no density-2000 table"

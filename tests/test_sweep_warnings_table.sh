@@ -21,12 +21,18 @@
 #    path and hash).
 #  5 layer-stats says the table's warnings (it ignored them): on stderr first,
 #    "granwave layer-stats: warning: TABLE: the sweep that wrote it warned:
-#    TEXT", then its own as before; first in --json's "warnings"; a warning
-#    line given twice in the table said once.
+#    TEXT", then its own as before (but the settling's: 7); first in --json's
+#    "warnings"; a warning line given twice in the table said once.
 #  6 the library's older table call gw_sweep_write_table (a C caller's, by
 #    tests/gw_grid_probe) writes the check pass's warnings too: table 1's
 #    byte for byte the program's (it wrote the rows' alone); control: table
 #    2's (a rows' warning alone) the program's.
+#  7 layer-stats says the settling of table 4 once (the sweep's line, which
+#    it repeats, and its own "2 of 2 rows ran on a sample settled under
+#    another material" said it twice, the forty-sixth session): one line
+#    naming it on stderr, in --json's "warnings", in boundary_fit.json's and
+#    in Python's layer_stats warnings, the sweep's; the table without the
+#    sweep's lines (an older table) still gets layer-stats' own line, once.
 #  Control: a sweep without warnings writes no "# warning:" line, its header
 #  right after its "# grid" lines (its table is the build before's, but for
 #  the "# build" line's commit: checked by hand, see docs/tests.md).
@@ -143,8 +149,10 @@ sweep_said=$(while IFS= read -r t; do
     echo "granwave layer-stats: warning: l.out/results.csv: the sweep that wrote it warned: $t"; done <<<"$w")
 nw=$(grep -c . <<<"$w")
 cpu_run 60 "$GW" layer-stats l.out/results.csv --json >ls1.json 2>/dev/null; rcj=$?
+# (its own settling line is said by the sweep's: 7)
 if [ $rc1 -eq 0 ] && [ "$(head -n "$nw" ls1.err)" = "$sweep_said" ] &&
-    cmp -s <(tail -n +"$((nw + 1))" ls1.err | sed 's|l.out/results.csv|T|g') <(sed 's|plain.csv|T|g' ls2.err); then
+    cmp -s <(tail -n +"$((nw + 1))" ls1.err | sed 's|l.out/results.csv|T|g') \
+        <(grep -v 'rows ran on a sample settled under another material' ls2.err | sed 's|plain.csv|T|g'); then
     ok "5 layer-stats says the table's $nw warning(s) on stderr, first, as its own, then its own as before"
 else
     ko "5 layer-stats stderr: '$(head -c 500 ls1.err)'"
@@ -184,6 +192,42 @@ if [ -x "$probe" ] && cpu_run 60 "$probe" table u.ini u.old >/dev/null 2>u.old.e
     ok "6 control: gw_sweep_write_table of u (the rows' warning alone): the program's table"
 else
     ko "6 control u: $(head -c 300 u.old.err)"
+fi
+
+# --- 7 layer-stats says the settling once: the sweep's line, not its own beside it ---
+settled='settled under another material'
+cpu_run 60 "$GW" layer-stats l.out/results.csv --out ls7 --json >ls7.json 2>ls7.err; rc7=$?
+cpu_run 60 "$GW" layer-stats plain.csv --json >ls8.json 2>ls8.err; rc8=$?
+n_err=$(grep -c "$settled" ls1.err)
+if [ $rc1 -eq 0 ] && [ "$n_err" -eq 1 ] && grep -q "the sweep that wrote it warned: .*$settled" ls1.err; then
+    ok "7 layer-stats stderr: the settling said once, in the sweep's line"
+else
+    ko "7 layer-stats stderr: the settling said $n_err times: $(grep "$settled" ls1.err | cut -c1-160)"
+fi
+# count_json FILE: the entries of FILE's "warnings" (JSON) that name the settling
+count_json() {
+    python3 -c '
+import json, sys
+d = json.load(open(sys.argv[1]))
+print(sum(1 for w in d.get("warnings", []) if sys.argv[2] in w))' "$1" "$settled" 2>/dev/null || echo "unreadable"
+}
+nj=$(count_json ls7.json)
+nb=$(count_json ls7/boundary_fit.json)
+[ $rc7 -eq 0 ] && [ "$nj" = 1 ] && ok "7 layer-stats --json: the settling once in \"warnings\"" ||
+    ko "7 layer-stats --json (exit $rc7): the settling $nj times"
+[ -s ls7/boundary_fit.json ] && [ "$nb" = 1 ] && ok "7 boundary_fit.json: the settling once in \"warnings\"" ||
+    ko "7 boundary_fit.json: the settling $nb times ($(ls ls7 2>&1 | tr '\n' ' '))"
+py_checks 1 <<'EOF'
+r, ws = caught(granwave.layer_stats, "l.out/results.csv")
+n = sum(1 for w in ws if "settled under another material" in w)
+check(n == 1, "7 Python layer_stats: the settling once among its warnings (%d: %s)" % (n, [w[:90] for w in ws]))
+EOF
+# an older table (no "# warning:" line): layer-stats' own line, once
+if [ $rc8 -eq 0 ] && [ "$(grep -c "$settled" ls8.err)" -eq 1 ] &&
+    grep -q "warning: 2 of 2 rows ran on a sample $settled" ls8.err && [ "$(count_json ls8.json)" = 1 ]; then
+    ok "7 a table without the sweep's line: layer-stats' own settling line, once (stderr, --json)"
+else
+    ko "7 older table (exit $rc8): $(grep -c "$settled" ls8.err) lines: $(head -c 300 ls8.err)"
 fi
 
 # --- control: a sweep without warnings has no such line ---

@@ -341,6 +341,26 @@ void gw_stats_analysis_free(gw_stats_analysis *A)
     memset(A, 0, sizeof *A);
 }
 
+/* 1 when the sweep that wrote the table said its settling itself (its
+ * "# warning:" line, repeated first among A's warnings: layer_sweep_model.c's
+ * memo_warnings) for the nw of the table's rows the column marks: the
+ * settling is then said once, in the sweep's words (which name the first
+ * case's verdict); a line counting other cases (a table cut or joined by
+ * hand) is not this one, and both are said */
+static int sweep_said_settling(const gw_stats_analysis *A, long nw)
+{
+    static const char said[] = ": the sweep that wrote it warned: ";
+    for (const char *p = A->warnings; p && (p = strstr(p, said)) != NULL;) {
+        p += sizeof said - 1;
+        long n = -1, m = -1;
+        int at = 0;
+        if (sscanf(p, "%ld of %ld cases run on a sample settled under another material or not settled%n", &n, &m,
+                   &at) == 2 && at > 0 && n == nw && m == A->t.nrows)
+            return 1;
+    }
+    return 0;
+}
+
 /* The rows of a layer sweep whose case ran on a sample settled under
  * another material, gravity, mass law, clump mass or friction (the model's
  * column settling_warning = 1, tables since session 28; an older table has
@@ -358,7 +378,7 @@ static int settling_warning(gw_stats_analysis *A)
             const double q = cq >= 0 ? t->val[r * t->ncols + cq] : NAN;
             lo = fmin(lo, q), hi = fmax(hi, q); /* fmin and fmax pass over nan */
         }
-    if (nw == 0)
+    if (nw == 0 || sweep_said_settling(A, nw))
         return GW_OK;
     char qs[96] = "";
     if (lo <= hi)

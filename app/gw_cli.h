@@ -139,16 +139,59 @@ double gw_cli_progress_ms(double ms);
 void gw_cli_progress_init(gw_cli_progress *p, const char *prefix, const char *unit, double every_ms);
 /* gw_progress_fn: a line after the last unit and when due; returns 0. */
 int gw_cli_progress_report(void *ctx, long done, long total);
+/* A column's time left (granwave chain's progress lines). The run's cost is
+ * not spread evenly over its simulated time: measured on chain --n 200 to 1000
+ * (CPU per unit of x = t / t_expect), cvode's BDF slows 3 to 6 times where the
+ * column's top opens (x 0.5 to 0.7: its restarts at each opening, more the
+ * more beads), runs at about 0.7 of its start's pace to the wall's release
+ * (x 1), and once every contact has opened costs about a twentieth of it per
+ * unit of x; rk4 and arkode's erk keep about their start's pace throughout.
+ * And the run goes on past t_expect until its last closing pair has met and
+ * parted, which no prior says: 1.2 to 7.6 times t_expect at N = 50 to 600
+ * (chain --n 600: 113.7 ms against 15.0 ms expected), known only once the
+ * column is in free flight (gw_cli_column.t_end, from its state). The time
+ * left is the remaining x of each phase (GW_CLI_COLUMN_PHASES, from
+ * gw_cli_column_starts) times its pace: the pace measured in the phase once
+ * it has run a quarter of it (or 0.05 of x past x 1.1), else the first
+ * phase's measured pace times its weight at N beads. */
+#define GW_CLI_COLUMN_PHASES 5
+typedef struct gw_cli_column {
+    int n;        /* beads */
+    int restarts; /* 1: cvode (BDF, the weights above); 0: rk4, arkode (even) */
+    double t_end; /* > 0: the run's end as the column's state says it, s (every
+                     contact open, bead 1 off the wall: the last closing pair's
+                     meeting plus its contact, or now when none closes); 0 while
+                     contacts act */
+    double t_meet;                    /* that pair's meeting, s (0: none) */
+    double el0[GW_CLI_COLUMN_PHASES]; /* s elapsed when x entered each phase (< 0 before) */
+    double x0[GW_CLI_COLUMN_PHASES];  /* and x then */
+} gw_cli_column;
+/* Where each phase of x starts (the last runs on to any x). */
+extern const double gw_cli_column_starts[GW_CLI_COLUMN_PHASES];
+/* Until the column's state says its end, the line's time left runs to x =
+ * GW_CLI_COLUMN_END_GUESS (the ends at N = 50 to 400 ran from 1.21 to 1.93)
+ * and says so: "~L s left or more". */
+#define GW_CLI_COLUMN_END_GUESS 1.3
+void gw_cli_column_init(gw_cli_column *c, int n, int restarts);
+/* Record that the run is at x after el s (every report: the phases' starts). */
+void gw_cli_column_note(gw_cli_column *c, double el, double x);
+/* The time left, s, from x after el s to x_end (0 when x_end <= x; NaN before
+ * any time or x has passed). */
+double gw_cli_column_left(const gw_cli_column *c, double el, double x, double x_end);
 /* Progress of one run in simulated time, whose length is known only roughly
  * (a collision: gw_chain_progress_fn's t, t_expect, t_max, s). One line when
  * due ("PREFIXt = T ms of ~E ms expected (P%), X s elapsed, ~L s left"; past
  * t_expect "... (P%, t-max M ms), X s elapsed, at most ~L s left"), or, last 1,
  * the run's end at t ("... (P%): ended, X s elapsed"); at t = 0, no pace yet,
- * the line ends at "X s elapsed" without L. Due: the first at
+ * the line ends at "X s elapsed" without L. With a column (col not NULL, noted
+ * at every call) L is gw_cli_column_left's: to its t_end once known ("~L s
+ * left (the last closing pair meets at about T ms)"), before that to
+ * GW_CLI_COLUMN_END_GUESS times t_expect ("~L s left or more"), and past that
+ * with contacts still acting the t-max line. Due: the first at
  * after_ms, then every max(every_ms, a twentieth of the time elapsed) up to
  * GW_CLI_PROGRESS_GAP_MAX_MS, so an hours-long run says where it is without a
  * line every few seconds, nor goes silent for minutes. */
-void gw_cli_progress_time(gw_cli_progress *p, double t, double t_expect, double t_max, int last);
+void gw_cli_progress_time(gw_cli_progress *p, gw_cli_column *col, double t, double t_expect, double t_max, int last);
 /* A study's first progress line (falcon, wavespeed, softwall), ms after its
  * start, and the shortest gap between two: as a single run's. */
 #define GW_CLI_STUDY_PROGRESS_MS 2000.0

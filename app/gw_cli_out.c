@@ -254,11 +254,80 @@ const char *gw_cli_time_unit(double t, double *scale)
     return t >= 1.0 ? "s" : t >= 1e-3 ? "ms" : "us";
 }
 
-void gw_cli_progress_time(gw_cli_progress *p, double t, double t_expect, double t_max, int last)
+const double gw_cli_column_starts[GW_CLI_COLUMN_PHASES] = {0.0, 0.5, 0.7, 1.0, 1.1};
+
+void gw_cli_column_init(gw_cli_column *c, int n, int restarts)
+{
+    memset(c, 0, sizeof *c);
+    c->n = n;
+    c->restarts = restarts;
+    for (int i = 0; i < GW_CLI_COLUMN_PHASES; i++)
+        c->el0[i] = c->x0[i] = -1.0;
+}
+
+void gw_cli_column_note(gw_cli_column *c, double el, double x)
+{
+    if (!c || !(el >= 0) || !(x >= 0))
+        return;
+    for (int i = 0; i < GW_CLI_COLUMN_PHASES && x >= gw_cli_column_starts[i]; i++)
+        if (c->el0[i] < 0) {
+            c->el0[i] = el;
+            c->x0[i] = x;
+        }
+}
+
+/* Phase i's pace relative to the first's, before it is measured (gw_cli.h):
+ * cvode's opening of the column's top (x 0.5 to 0.7) 3.2 times at N = 200,
+ * 5.2 at N = 400 (CPU per unit of x, chain --n N), as N^0.7 */
+static double column_weight(const gw_cli_column *c, int i)
+{
+    if (!c->restarts)
+        return 1.0;
+    static const double w[GW_CLI_COLUMN_PHASES] = {1.0, 0.0, 0.7, 1.1, 0.06};
+    return i == 1 ? fmax(1.0, 3.2 * pow(c->n / 200.0, 0.7)) : w[i];
+}
+
+static double column_phase_end(int i)
+{
+    return i + 1 < GW_CLI_COLUMN_PHASES ? gw_cli_column_starts[i + 1] : INFINITY;
+}
+
+double gw_cli_column_left(const gw_cli_column *c, double el, double x, double x_end)
+{
+    if (!c || !(el > 0) || !(x > 0))
+        return NAN;
+    if (!(x_end > x))
+        return 0.0;
+    int cur = 0;
+    while (cur + 1 < GW_CLI_COLUMN_PHASES && x >= gw_cli_column_starts[cur + 1])
+        cur++;
+    /* the first phase's pace, s per unit of x: measured over it (or so far) */
+    const double x1 = fmin(x, gw_cli_column_starts[1]);
+    const double base = cur == 0 || c->el0[1] < 0 ? el / x : c->el0[1] / fmax(c->x0[1], x1);
+    double left = 0;
+    for (int i = cur; i < GW_CLI_COLUMN_PHASES; i++) {
+        const double a = i == cur ? x : gw_cli_column_starts[i], b = fmin(x_end, column_phase_end(i));
+        if (b <= a)
+            break;
+        double pace = base * column_weight(c, i);
+        if (i == cur && i > 0 && c->el0[i] >= 0) { /* measured once it has run a quarter of it */
+            const double run = x - c->x0[i], span = isfinite(column_phase_end(i))
+                                                         ? column_phase_end(i) - gw_cli_column_starts[i] : 0.2;
+            if (run >= 0.25 * span && el > c->el0[i])
+                pace = (el - c->el0[i]) / run;
+        }
+        left += (b - a) * pace;
+    }
+    return left;
+}
+
+void gw_cli_progress_time(gw_cli_progress *p, gw_cli_column *col, double t, double t_expect, double t_max, int last)
 {
     if (!p || p->quiet || !(t_expect > 0))
         return;
     const double now = gw_clock_ms(), el_ms = now - p->t0;
+    if (col && !last)
+        gw_cli_column_note(col, el_ms / 1e3, t / t_expect);
     if (p->after_ms > 0 && el_ms < p->after_ms)
         return;
     if (!last && now - p->last < gw_cli_progress_gap(p, el_ms))
@@ -275,6 +344,16 @@ void gw_cli_progress_time(gw_cli_progress *p, double t, double t_expect, double 
         fprintf(p->fp, "): ended, %.1f s elapsed\n", el);
     else if (t <= 0) /* no pace yet: no time left (it said ~0.0 s) */
         fprintf(p->fp, "), %.1f s elapsed\n", el);
+    else if (col && col->t_end > 0) { /* the column's state says its end */
+        fprintf(p->fp, "), %.1f s elapsed, ~%.1f s left", el,
+                gw_cli_column_left(col, el, frac, fmin(col->t_end, t_max) / t_expect));
+        if (col->t_meet > t)
+            fprintf(p->fp, " (the last closing pair meets at about %.4g %s)\n", col->t_meet * sc, u);
+        else
+            fputs(" (every contact open or opening)\n", p->fp);
+    } else if (col && frac < GW_CLI_COLUMN_END_GUESS) /* the phases' paces, to a guessed end */
+        fprintf(p->fp, "), %.1f s elapsed, ~%.1f s left or more\n", el,
+                gw_cli_column_left(col, el, frac, fmin(GW_CLI_COLUMN_END_GUESS * t_expect, t_max) / t_expect));
     else if (t < t_expect) /* at the pace so far */
         fprintf(p->fp, "), %.1f s elapsed, ~%.1f s left\n", el, el / t * (t_expect - t));
     else /* the end comes when every contact has opened: at the latest at t_max */

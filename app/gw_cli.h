@@ -140,24 +140,24 @@ void gw_cli_progress_init(gw_cli_progress *p, const char *prefix, const char *un
 /* gw_progress_fn: a line after the last unit and when due; returns 0. */
 int gw_cli_progress_report(void *ctx, long done, long total);
 /* A column's time left (granwave chain's progress lines). The run's cost is
- * not spread evenly over its simulated time: measured on chain --n 200 to 1000
- * (CPU per unit of x = t / t_expect), cvode's BDF slows 3 to 6 times where the
- * column's top opens (x 0.5 to 0.7: its restarts at each opening, more the
- * more beads), runs at about 0.7 of its start's pace to the wall's release
- * (x 1), and once every contact has opened costs about a twentieth of it per
- * unit of x; rk4 and arkode's erk keep about their start's pace throughout.
- * And the run goes on past t_expect until its last closing pair has met and
- * parted, which no prior says: 1.2 to 7.6 times t_expect at N = 50 to 600
- * (chain --n 600: 113.7 ms against 15.0 ms expected), known only once the
- * column is in free flight (gw_cli_column.t_end, from its state). The time
- * left is the remaining x of each phase (GW_CLI_COLUMN_PHASES, from
- * gw_cli_column_starts) times its pace: the pace measured in the phase once
- * it has run a quarter of it (or 0.05 of x past x 1.1), else the first
- * phase's measured pace times its weight at N beads. */
+ * not spread evenly over its simulated time x = t / t_expect: measured on
+ * chain --n 200, 400 and 600 (CPU per unit of x against the first half's),
+ * cvode's BDF runs 2.4, 3.5 and 4.2 times slower while the column's top opens
+ * (x 0.5 to 0.75: a restart at each opening), at 0.6 to 0.7 of its first
+ * half's pace to the wall's release (x 1.05), 0.75 to 0.9 during it (to x
+ * 1.15), and once every contact is open at 0.05 to 0.07; rk4 and arkode's erk
+ * keep within 0.88 to 1.03 of it throughout. And the run goes on past t_expect
+ * until its last closing pair has met and parted, which no prior says: 1.2 to
+ * 7.6 times t_expect at N = 50 to 600 (chain --n 600: 113.7 ms against 15.0
+ * ms expected), known once the column flies free (t_end, from its state). The
+ * time left sums the x left in each phase (gw_cli_column_starts) times the
+ * first half's measured pace times the phase's weight (cvode's opening 2.4
+ * sqrt(N / 200)); in the free flight, once it has run 0.05 of x, its own
+ * measured pace. */
 #define GW_CLI_COLUMN_PHASES 5
 typedef struct gw_cli_column {
     int n;        /* beads */
-    int restarts; /* 1: cvode (BDF, the weights above); 0: rk4, arkode (even) */
+    int restarts; /* 1: cvode (the weights above); 0: rk4, arkode (even) */
     double t_end; /* > 0: the run's end as the column's state says it, s (every
                      contact open, bead 1 off the wall: the last closing pair's
                      meeting plus its contact, or now when none closes); 0 while
@@ -165,15 +165,17 @@ typedef struct gw_cli_column {
     double t_meet;                    /* that pair's meeting, s (0: none) */
     double el0[GW_CLI_COLUMN_PHASES]; /* s elapsed when x entered each phase (< 0 before) */
     double x0[GW_CLI_COLUMN_PHASES];  /* and x then */
+    double el_free, x_free;           /* s elapsed and x when t_end was first known (< 0 before) */
 } gw_cli_column;
 /* Where each phase of x starts (the last runs on to any x). */
 extern const double gw_cli_column_starts[GW_CLI_COLUMN_PHASES];
 /* Until the column's state says its end, the line's time left runs to x =
- * GW_CLI_COLUMN_END_GUESS (the ends at N = 50 to 400 ran from 1.21 to 1.93)
- * and says so: "~L s left or more". */
+ * GW_CLI_COLUMN_END_GUESS (the ends at N = 50 to 400 ran from 1.21 to 1.93
+ * times t_expect, and 7.6 at N = 600) and says so: "~L s left or more". */
 #define GW_CLI_COLUMN_END_GUESS 1.3
 void gw_cli_column_init(gw_cli_column *c, int n, int restarts);
-/* Record that the run is at x after el s (every report: the phases' starts). */
+/* Record that the run is at x after el s (every report: the phases' starts,
+ * and the free flight's once t_end > 0). */
 void gw_cli_column_note(gw_cli_column *c, double el, double x);
 /* The time left, s, from x after el s to x_end (0 when x_end <= x; NaN before
  * any time or x has passed). */

@@ -254,7 +254,7 @@ const char *gw_cli_time_unit(double t, double *scale)
     return t >= 1.0 ? "s" : t >= 1e-3 ? "ms" : "us";
 }
 
-const double gw_cli_column_starts[GW_CLI_COLUMN_PHASES] = {0.0, 0.5, 0.7, 1.0, 1.1};
+const double gw_cli_column_starts[GW_CLI_COLUMN_PHASES] = {0.0, 0.5, 0.75, 1.05, 1.15};
 
 void gw_cli_column_init(gw_cli_column *c, int n, int restarts)
 {
@@ -263,6 +263,7 @@ void gw_cli_column_init(gw_cli_column *c, int n, int restarts)
     c->restarts = restarts;
     for (int i = 0; i < GW_CLI_COLUMN_PHASES; i++)
         c->el0[i] = c->x0[i] = -1.0;
+    c->el_free = c->x_free = -1.0;
 }
 
 void gw_cli_column_note(gw_cli_column *c, double el, double x)
@@ -274,22 +275,19 @@ void gw_cli_column_note(gw_cli_column *c, double el, double x)
             c->el0[i] = el;
             c->x0[i] = x;
         }
+    if (c->t_end > 0 && c->el_free < 0) {
+        c->el_free = el;
+        c->x_free = x;
+    }
 }
 
-/* Phase i's pace relative to the first's, before it is measured (gw_cli.h):
- * cvode's opening of the column's top (x 0.5 to 0.7) 3.2 times at N = 200,
- * 5.2 at N = 400 (CPU per unit of x, chain --n N), as N^0.7 */
+/* Phase i's pace relative to the first half's (gw_cli.h) */
 static double column_weight(const gw_cli_column *c, int i)
 {
     if (!c->restarts)
         return 1.0;
-    static const double w[GW_CLI_COLUMN_PHASES] = {1.0, 0.0, 0.7, 1.1, 0.06};
-    return i == 1 ? fmax(1.0, 3.2 * pow(c->n / 200.0, 0.7)) : w[i];
-}
-
-static double column_phase_end(int i)
-{
-    return i + 1 < GW_CLI_COLUMN_PHASES ? gw_cli_column_starts[i + 1] : INFINITY;
+    static const double w[GW_CLI_COLUMN_PHASES] = {1.0, 0.0, 0.65, 0.85, 0.06};
+    return i == 1 ? fmax(1.0, 2.4 * sqrt(c->n / 200.0)) : w[i];
 }
 
 double gw_cli_column_left(const gw_cli_column *c, double el, double x, double x_end)
@@ -301,21 +299,19 @@ double gw_cli_column_left(const gw_cli_column *c, double el, double x, double x_
     int cur = 0;
     while (cur + 1 < GW_CLI_COLUMN_PHASES && x >= gw_cli_column_starts[cur + 1])
         cur++;
-    /* the first phase's pace, s per unit of x: measured over it (or so far) */
-    const double x1 = fmin(x, gw_cli_column_starts[1]);
-    const double base = cur == 0 || c->el0[1] < 0 ? el / x : c->el0[1] / fmax(c->x0[1], x1);
+    /* the first half's pace, s per unit of x: measured over it (or so far) */
+    const double base = cur == 0 || c->el0[1] < 0 ? el / x : c->el0[1] / fmax(c->x0[1], gw_cli_column_starts[1]);
     double left = 0;
     for (int i = cur; i < GW_CLI_COLUMN_PHASES; i++) {
-        const double a = i == cur ? x : gw_cli_column_starts[i], b = fmin(x_end, column_phase_end(i));
+        const double a = i == cur ? x : gw_cli_column_starts[i],
+                     b = i + 1 < GW_CLI_COLUMN_PHASES ? fmin(x_end, gw_cli_column_starts[i + 1]) : x_end;
         if (b <= a)
             break;
         double pace = base * column_weight(c, i);
-        if (i == cur && i > 0 && c->el0[i] >= 0) { /* measured once it has run a quarter of it */
-            const double run = x - c->x0[i], span = isfinite(column_phase_end(i))
-                                                         ? column_phase_end(i) - gw_cli_column_starts[i] : 0.2;
-            if (run >= 0.25 * span && el > c->el0[i])
-                pace = (el - c->el0[i]) / run;
-        }
+        /* the free flight's own pace, once it has run 0.05 of x (its cost
+         * is the solver's: cvode's long steps, rk4's fixed ones) */
+        if (i == GW_CLI_COLUMN_PHASES - 1 && c->el_free >= 0 && x - c->x_free >= 0.05 && el > c->el_free)
+            pace = (el - c->el_free) / (x - c->x_free);
         left += (b - a) * pace;
     }
     return left;

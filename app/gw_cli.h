@@ -142,19 +142,20 @@ int gw_cli_progress_report(void *ctx, long done, long total);
 /* A column's time left (granwave chain's progress lines). The run's cost is
  * not spread evenly over its simulated time x = t / t_expect: measured on
  * chain --n 200, 400 and 600 (CPU per unit of x against the first half's),
- * cvode's BDF runs 2.4, 3.5 and 4.2 times slower while the column's top opens
- * (x 0.5 to 0.75: a restart at each opening), at 0.6 to 0.7 of its first
- * half's pace to the wall's release (x 1.05), 0.75 to 0.9 during it (to x
- * 1.15), and once every contact is open at 0.05 to 0.07; rk4 and arkode's erk
- * keep within 0.88 to 1.03 of it throughout. And the run goes on past t_expect
- * until its last closing pair has met and parted, which no prior says: 1.2 to
- * 7.6 times t_expect at N = 50 to 600 (chain --n 600: 113.7 ms against 15.0
- * ms expected), known once the column flies free (t_end, from its state). The
- * time left sums the x left in each phase (gw_cli_column_starts) times the
- * first half's measured pace times the phase's weight (cvode's opening 2.4
- * sqrt(N / 200)); in the free flight, once it has run 0.05 of x, its own
- * measured pace. */
-#define GW_CLI_COLUMN_PHASES 5
+ * cvode's BDF runs 3.2, 4.6 and 5.4 times slower while the column's top opens
+ * (x 0.5 to 0.65: a restart at each opening), 1.1, 1.7 and 2.0 times as it
+ * eases (to x 0.8), at 0.55 to 0.6 of the first half's pace to the wall's
+ * release (x 1.05), 0.75 to 0.9 during it (to x 1.15), and once every contact
+ * is open at 0.05 to 0.07; rk4 and arkode's erk keep within 0.88 to 1.1 of it
+ * throughout. And the run goes on past t_expect until its last closing pair
+ * has met and parted, which no prior says: 1.2 to 7.6 times t_expect at N =
+ * 50 to 600 (chain --n 600: 113.7 ms against 15.0 ms expected), known once
+ * the column flies free (t_end, from its state). The time left sums the x
+ * left in each phase (gw_cli_column_starts) times the first half's measured
+ * pace times the phase's weight (cvode's: 3.2 sqrt(N / 200), 1.1 (N /
+ * 200)^0.6, 0.57, 0.82, 0.06); in the free flight, once it has run 0.05 of x,
+ * its own measured pace. */
+#define GW_CLI_COLUMN_PHASES 6
 typedef struct gw_cli_column {
     int n;        /* beads */
     int restarts; /* 1: cvode (the weights above); 0: rk4, arkode (even) */

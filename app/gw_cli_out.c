@@ -254,7 +254,7 @@ const char *gw_cli_time_unit(double t, double *scale)
     return t >= 1.0 ? "s" : t >= 1e-3 ? "ms" : "us";
 }
 
-const double gw_cli_column_starts[GW_CLI_COLUMN_PHASES] = {0.0, 0.5, 0.75, 1.05, 1.15};
+const double gw_cli_column_starts[GW_CLI_COLUMN_PHASES] = {0.0, 0.5, 0.65, 0.8, 1.05, 1.15};
 
 void gw_cli_column_init(gw_cli_column *c, int n, int restarts)
 {
@@ -286,8 +286,9 @@ static double column_weight(const gw_cli_column *c, int i)
 {
     if (!c->restarts)
         return 1.0;
-    static const double w[GW_CLI_COLUMN_PHASES] = {1.0, 0.0, 0.65, 0.85, 0.06};
-    return i == 1 ? fmax(1.0, 2.4 * sqrt(c->n / 200.0)) : w[i];
+    static const double w[GW_CLI_COLUMN_PHASES] = {1.0, 0.0, 0.0, 0.57, 0.82, 0.06};
+    const double r = fmax(1.0, c->n / 200.0);
+    return i == 1 ? 3.2 * sqrt(r) : i == 2 ? 1.1 * pow(r, 0.6) : w[i];
 }
 
 double gw_cli_column_left(const gw_cli_column *c, double el, double x, double x_end)

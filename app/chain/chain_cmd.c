@@ -208,8 +208,8 @@ int gw_cmd_chain(int argc, char **argv)
     prog.p.after_ms = gw_cli_progress_ms(CHAIN_PROGRESS_MS);
     gw_cli_column_init(&prog.col, c.params.n, !c.run.solver || c.run.solver == gw_solver_cvode);
     double t0 = gw_clock_ms();
-    int rc = chain_collide_progress_end(chain, &c.run, quiet ? NULL : chain_progress_report, &prog, &prog.end, &r,
-                                        &err);
+    int rc = chain_collide_progress_end(chain, &c.run, quiet ? NULL : chain_progress_report, &prog,
+                                        quiet ? NULL : &prog.end, &r, &err);
     double wall_ms = gw_clock_ms() - t0;
     if (rc == GW_OK && !quiet) /* the last line, at the run's end (none for a run under 2 s) */
         gw_cli_progress_time(&prog.p, &prog.col, r.t_end, prog.t_expect, prog.t_max, 1);

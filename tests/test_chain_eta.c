@@ -6,7 +6,10 @@
  * coarser: x, the CPU seconds spent by then, and the end the column's state
  * gave by then (chain_collide_progress_end's t_end over t_expect; 0 while
  * contacts acted). The runs end at 1.56, 1.26, 7.56, 1.56 and 7.56 times
- * t_expect; cvode's slows 3.2 to 5.4 times between x 0.5 and 0.65.
+ * t_expect, and 1.84 at N = 1000 (cvode, not used to fit the phases'
+ * weights: its opening of the top ran 7.8 times the first half's pace, the
+ * weight 3.2 sqrt(N / 200) says 7.2); cvode's slows 3.2 to 7.8 times between
+ * x 0.5 and 0.65.
  *
  * Asserted for each run, from 20 % of its CPU time on: once the column's
  * state gives the end, the time left is within 1.5 times the true time left,
@@ -67,6 +70,17 @@ static const eta_row cvode_600[] = {
     {4.342, 43.368, 7.576}, {4.842, 43.920, 7.576}, {5.342, 44.499, 7.576}, {5.843, 45.006, 7.576},
     {6.343, 45.519, 7.576}, {6.843, 46.069, 7.576}, {7.343, 46.592, 7.576}, {7.563, 46.813, 7.576},
 };
+static const eta_row cvode_1000[] = {
+    {0.040, 1.871, 0.000}, {0.080, 4.071, 0.000}, {0.120, 6.337, 0.000}, {0.160, 8.586, 0.000},
+    {0.200, 10.811, 0.000}, {0.240, 13.176, 0.000}, {0.280, 15.345, 0.000}, {0.320, 17.470, 0.000},
+    {0.360, 19.658, 0.000}, {0.400, 22.002, 0.000}, {0.440, 24.412, 0.000}, {0.480, 26.933, 0.000},
+    {0.520, 37.805, 0.000}, {0.560, 58.863, 0.000}, {0.600, 82.019, 0.000}, {0.640, 99.178, 0.000},
+    {0.680, 109.130, 0.000}, {0.720, 117.336, 0.000}, {0.760, 124.066, 0.000}, {0.800, 128.328, 0.000},
+    {0.840, 130.792, 0.000}, {0.880, 132.233, 0.000}, {0.920, 133.382, 0.000}, {0.960, 134.584, 0.000},
+    {1.000, 135.586, 0.000}, {1.040, 136.455, 0.000}, {1.080, 139.501, 0.000}, {1.120, 142.297, 0.000},
+    {1.160, 142.919, 0.000}, {1.200, 143.208, 1.841}, {1.240, 143.350, 1.841}, {1.280, 143.526, 1.841},
+    {1.540, 144.415, 1.840}, {1.800, 145.214, 1.839}, {1.820, 145.266, 1.839},
+};
 static const eta_row rk4_200[] = {
     {0.040, 0.012, 0.000}, {0.080, 0.026, 0.000}, {0.120, 0.038, 0.000}, {0.160, 0.049, 0.000},
     {0.200, 0.061, 0.000}, {0.240, 0.072, 0.000}, {0.280, 0.083, 0.000}, {0.320, 0.094, 0.000},
@@ -106,6 +120,7 @@ static const eta_run runs[] = {
     {"chain --n 200 --solver cvode", 200, 1, 3.0080, cvode_200, sizeof cvode_200 / sizeof *cvode_200},
     {"chain --n 400 --solver cvode", 400, 1, 15.8250, cvode_400, sizeof cvode_400 / sizeof *cvode_400},
     {"chain --n 600 --solver cvode", 600, 1, 46.8300, cvode_600, sizeof cvode_600 / sizeof *cvode_600},
+    {"chain --n 1000 --solver cvode", 1000, 1, 145.3330, cvode_1000, sizeof cvode_1000 / sizeof *cvode_1000},
     {"chain --n 200 --solver rk4", 200, 0, 0.4460, rk4_200, sizeof rk4_200 / sizeof *rk4_200},
     {"chain --n 600 --solver rk4", 600, 0, 19.0730, rk4_600, sizeof rk4_600 / sizeof *rk4_600},
 };

@@ -139,16 +139,62 @@ double gw_cli_progress_ms(double ms);
 void gw_cli_progress_init(gw_cli_progress *p, const char *prefix, const char *unit, double every_ms);
 /* gw_progress_fn: a line after the last unit and when due; returns 0. */
 int gw_cli_progress_report(void *ctx, long done, long total);
+/* A column's time left (granwave chain's progress lines). The run's cost is
+ * not spread evenly over its simulated time x = t / t_expect: measured on
+ * chain --n 200, 400 and 600 (CPU per unit of x against the first half's),
+ * cvode's BDF runs 3.2, 4.6 and 5.4 times slower while the column's top opens
+ * (x 0.5 to 0.65: a restart at each opening), 1.1, 1.7 and 2.0 times as it
+ * eases (to x 0.8), at 0.55 to 0.6 of the first half's pace to the wall's
+ * release (x 1.05), 0.75 to 0.9 during it (to x 1.15), and once every contact
+ * is open at 0.05 to 0.07; rk4 and arkode's erk keep within 0.88 to 1.1 of it
+ * throughout. And the run goes on past t_expect until its last closing pair
+ * has met and parted, which no prior says: 1.2 to 7.6 times t_expect at N =
+ * 50 to 600 (chain --n 600: 113.7 ms against 15.0 ms expected), known once
+ * the column flies free (t_end, from its state). The time left sums the x
+ * left in each phase (gw_cli_column_starts) times the first half's measured
+ * pace times the phase's weight (cvode's: 3.2 sqrt(N / 200), 1.1 (N /
+ * 200)^0.6, 0.57, 0.82, 0.06); in the free flight, once it has run 0.05 of x,
+ * its own measured pace. */
+#define GW_CLI_COLUMN_PHASES 6
+typedef struct gw_cli_column {
+    int n;        /* beads */
+    int restarts; /* 1: cvode (the weights above); 0: rk4, arkode (even) */
+    double t_end; /* > 0: the run's end as the column's state says it, s (every
+                     contact open, bead 1 off the wall: the last closing pair's
+                     meeting plus its contact, or now when none closes); 0 while
+                     contacts act */
+    double t_meet;                    /* that pair's meeting, s (0: none) */
+    double el0[GW_CLI_COLUMN_PHASES]; /* s elapsed when x entered each phase (< 0 before) */
+    double x0[GW_CLI_COLUMN_PHASES];  /* and x then */
+    double el_free, x_free;           /* s elapsed and x when t_end was first known (< 0 before) */
+} gw_cli_column;
+/* Where each phase of x starts (the last runs on to any x). */
+extern const double gw_cli_column_starts[GW_CLI_COLUMN_PHASES];
+/* Until the column's state says its end, the line's time left runs to x =
+ * GW_CLI_COLUMN_END_GUESS (the ends at N = 50 to 400 ran from 1.21 to 1.93
+ * times t_expect, and 7.6 at N = 600) and says so: "~L s left or more". */
+#define GW_CLI_COLUMN_END_GUESS 1.3
+void gw_cli_column_init(gw_cli_column *c, int n, int restarts);
+/* Record that the run is at x after el s (every report: the phases' starts,
+ * and the free flight's once t_end > 0). */
+void gw_cli_column_note(gw_cli_column *c, double el, double x);
+/* The time left, s, from x after el s to x_end (0 when x_end <= x; NaN before
+ * any time or x has passed). */
+double gw_cli_column_left(const gw_cli_column *c, double el, double x, double x_end);
 /* Progress of one run in simulated time, whose length is known only roughly
  * (a collision: gw_chain_progress_fn's t, t_expect, t_max, s). One line when
  * due ("PREFIXt = T ms of ~E ms expected (P%), X s elapsed, ~L s left"; past
  * t_expect "... (P%, t-max M ms), X s elapsed, at most ~L s left"), or, last 1,
  * the run's end at t ("... (P%): ended, X s elapsed"); at t = 0, no pace yet,
- * the line ends at "X s elapsed" without L. Due: the first at
+ * the line ends at "X s elapsed" without L. With a column (col not NULL, noted
+ * at every call) L is gw_cli_column_left's: to its t_end once known ("~L s
+ * left (the last closing pair meets at about T ms)"), before that to
+ * GW_CLI_COLUMN_END_GUESS times t_expect ("~L s left or more"), and past that
+ * with contacts still acting the t-max line. Due: the first at
  * after_ms, then every max(every_ms, a twentieth of the time elapsed) up to
  * GW_CLI_PROGRESS_GAP_MAX_MS, so an hours-long run says where it is without a
  * line every few seconds, nor goes silent for minutes. */
-void gw_cli_progress_time(gw_cli_progress *p, double t, double t_expect, double t_max, int last);
+void gw_cli_progress_time(gw_cli_progress *p, gw_cli_column *col, double t, double t_expect, double t_max, int last);
 /* A study's first progress line (falcon, wavespeed, softwall), ms after its
  * start, and the shortest gap between two: as a single run's. */
 #define GW_CLI_STUDY_PROGRESS_MS 2000.0

@@ -254,11 +254,77 @@ const char *gw_cli_time_unit(double t, double *scale)
     return t >= 1.0 ? "s" : t >= 1e-3 ? "ms" : "us";
 }
 
-void gw_cli_progress_time(gw_cli_progress *p, double t, double t_expect, double t_max, int last)
+const double gw_cli_column_starts[GW_CLI_COLUMN_PHASES] = {0.0, 0.5, 0.65, 0.8, 1.05, 1.15};
+
+void gw_cli_column_init(gw_cli_column *c, int n, int restarts)
+{
+    memset(c, 0, sizeof *c);
+    c->n = n;
+    c->restarts = restarts;
+    for (int i = 0; i < GW_CLI_COLUMN_PHASES; i++)
+        c->el0[i] = c->x0[i] = -1.0;
+    c->el_free = c->x_free = -1.0;
+}
+
+void gw_cli_column_note(gw_cli_column *c, double el, double x)
+{
+    if (!c || !(el >= 0) || !(x >= 0))
+        return;
+    for (int i = 0; i < GW_CLI_COLUMN_PHASES && x >= gw_cli_column_starts[i]; i++)
+        if (c->el0[i] < 0) {
+            c->el0[i] = el;
+            c->x0[i] = x;
+        }
+    if (c->t_end > 0 && c->el_free < 0) {
+        c->el_free = el;
+        c->x_free = x;
+    }
+}
+
+/* Phase i's pace relative to the first half's (gw_cli.h) */
+static double column_weight(const gw_cli_column *c, int i)
+{
+    if (!c->restarts)
+        return 1.0;
+    static const double w[GW_CLI_COLUMN_PHASES] = {1.0, 0.0, 0.0, 0.57, 0.82, 0.06};
+    const double r = fmax(1.0, c->n / 200.0);
+    return i == 1 ? 3.2 * sqrt(r) : i == 2 ? 1.1 * pow(r, 0.6) : w[i];
+}
+
+double gw_cli_column_left(const gw_cli_column *c, double el, double x, double x_end)
+{
+    if (!c || !(el > 0) || !(x > 0))
+        return NAN;
+    if (!(x_end > x))
+        return 0.0;
+    int cur = 0;
+    while (cur + 1 < GW_CLI_COLUMN_PHASES && x >= gw_cli_column_starts[cur + 1])
+        cur++;
+    /* the first half's pace, s per unit of x: measured over it (or so far) */
+    const double base = cur == 0 || c->el0[1] < 0 ? el / x : c->el0[1] / fmax(c->x0[1], gw_cli_column_starts[1]);
+    double left = 0;
+    for (int i = cur; i < GW_CLI_COLUMN_PHASES; i++) {
+        const double a = i == cur ? x : gw_cli_column_starts[i],
+                     b = i + 1 < GW_CLI_COLUMN_PHASES ? fmin(x_end, gw_cli_column_starts[i + 1]) : x_end;
+        if (b <= a)
+            break;
+        double pace = base * column_weight(c, i);
+        /* the free flight's own pace, once it has run 0.05 of x (its cost
+         * is the solver's: cvode's long steps, rk4's fixed ones) */
+        if (i == GW_CLI_COLUMN_PHASES - 1 && c->el_free >= 0 && x - c->x_free >= 0.05 && el > c->el_free)
+            pace = (el - c->el_free) / (x - c->x_free);
+        left += (b - a) * pace;
+    }
+    return left;
+}
+
+void gw_cli_progress_time(gw_cli_progress *p, gw_cli_column *col, double t, double t_expect, double t_max, int last)
 {
     if (!p || p->quiet || !(t_expect > 0))
         return;
     const double now = gw_clock_ms(), el_ms = now - p->t0;
+    if (col && !last)
+        gw_cli_column_note(col, el_ms / 1e3, t / t_expect);
     if (p->after_ms > 0 && el_ms < p->after_ms)
         return;
     if (!last && now - p->last < gw_cli_progress_gap(p, el_ms))
@@ -275,6 +341,16 @@ void gw_cli_progress_time(gw_cli_progress *p, double t, double t_expect, double 
         fprintf(p->fp, "): ended, %.1f s elapsed\n", el);
     else if (t <= 0) /* no pace yet: no time left (it said ~0.0 s) */
         fprintf(p->fp, "), %.1f s elapsed\n", el);
+    else if (col && col->t_end > 0) { /* the column's state says its end */
+        fprintf(p->fp, "), %.1f s elapsed, ~%.1f s left", el,
+                gw_cli_column_left(col, el, frac, fmin(col->t_end, t_max) / t_expect));
+        if (col->t_meet > t)
+            fprintf(p->fp, " (the last closing pair meets at about %.4g %s)\n", col->t_meet * sc, u);
+        else
+            fputs(" (every contact open or opening)\n", p->fp);
+    } else if (col && frac < GW_CLI_COLUMN_END_GUESS) /* the phases' paces, to a guessed end */
+        fprintf(p->fp, "), %.1f s elapsed, ~%.1f s left or more\n", el,
+                gw_cli_column_left(col, el, frac, fmin(GW_CLI_COLUMN_END_GUESS * t_expect, t_max) / t_expect));
     else if (t < t_expect) /* at the pace so far */
         fprintf(p->fp, "), %.1f s elapsed, ~%.1f s left\n", el, el / t * (t_expect - t));
     else /* the end comes when every contact has opened: at the latest at t_max */

@@ -476,6 +476,21 @@ struct gw_chain_collision;
 int chain_collision_run_progress(const struct gw_chain_setup *s, struct gw_chain_collision *out,
                                  gw_chain_progress_fn progress, void *pctx, gw_err *err);
 
+/* A collision's end as the column's state says it, updated before each
+ * progress report (chain_collide_progress_end; granwave chain's lines): once
+ * bead 1 is off the wall and every contact open, t_end is when the last
+ * closing pair will have met (t_meet) and parted, or the time then when none
+ * closes; both 0 before (the run's own end often comes well past its expected
+ * length: chain --n 600 at 7.6 times it). */
+typedef struct chain_column_end {
+    double t_end;  /* s; 0 while unknown */
+    double t_meet; /* s; 0 when no pair closes */
+} chain_column_end;
+/* gw_chain_collide_progress that also keeps *end (may be NULL) as above: the
+ * same results, bit for bit (the end is read from the state, never fed back). */
+int chain_collide_progress_end(const gw_chain *c, const gw_chain_run_opts *o, gw_chain_progress_fn progress,
+                               void *pctx, chain_column_end *end, gw_chain_result *r, gw_err *err);
+
 /* chain_trace.c: a gw_chain_trace as the calls that read it need it (tr
  * given, n >= 0, len <= cap, t and f given when len > 0, x and v too when n >
  * 0): GW_OK, or GW_EINVAL "CALL: ..." naming the fields. */

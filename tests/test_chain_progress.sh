@@ -18,7 +18,11 @@
 #    delay at 0 prints its header and lines (what the delay held back); at the
 #    default delay (2 s) any line it prints says 2 s elapsed or more;
 #  - a malformed GW_PROGRESS_MS (abc, -1, inf, empty) is refused: exit 2, one
-#    line naming it, nothing on stdout.
+#    line naming it, nothing on stdout;
+#  - the column's end from its state (session 46): a run that goes on to 1.56
+#    times its expected length (200 beads under rk4) says "or more" until its
+#    column flies free, then names its last closing pair's meeting, before
+#    t_end and within 3 % of it; its JSON is the quiet run's.
 # Before GW_PROGRESS_MS, whether the long run lasted 2 s and the short one
 # less depended on the machine's load.
 # shellcheck source=tests/test_lib.sh
@@ -158,5 +162,43 @@ for v in abc -1 inf '' 1e999 ' 5' 0x10; do
         ko "GW_PROGRESS_MS='$v': exit $rc, stdout $(head -c 80 "$tmp/m.out"), stderr $(head -2 "$tmp/m.err")"
     fi
 done
+
+# the column's end from its state (session 46): chain --n 200 --solver rk4 runs
+# on to 1.56 times its expected length, its last closing pair meeting at 7.74
+# ms (t_end 7.86 ms). Until bead 1 is off the wall and every contact open the
+# lines say "~L s left or more"; then they name that meeting, before t_end and
+# within 3 % of it, from past the expected length on (t under it there);
+# nothing in the results changes (the JSON is the quiet run's)
+GW_PROGRESS_MS=0 "$GW" chain --n 200 --solver rk4 --json >"$tmp/e.json" 2>"$tmp/e.err"; rc_e=$?
+"$GW" chain --n 200 --solver rk4 --json --quiet >"$tmp/eq.json" 2>/dev/null
+[ $rc_e -eq 0 ] && ok "chain --n 200 --solver rk4 exits 0" || ko "chain --n 200 --solver rk4: exit $rc_e"
+$PY - "$tmp/e.json" "$tmp/e.err" "$tmp/eq.json" >"$tmp/end.out" 2>&1 <<'EOF'
+import json, re, sys
+res = json.load(open(sys.argv[1]))
+quiet = json.load(open(sys.argv[3]))
+err = open(sys.argv[2]).read().splitlines()
+def check(cond, what):
+    print(("PASS: " if cond else "FAIL: ") + what)
+num = r"([0-9.]+(?:e[+-]?[0-9]+)?)"
+line = re.compile(r"  t = %s ms of ~%s ms expected \(%s%%\), %s s elapsed, ~%s s left(.*)" % (num, num, num, num, num))
+rows = [m for m in map(line.fullmatch, err) if m]
+more = [i for i, m in enumerate(rows) if m.group(6) == " or more"]
+meet = [i for i, m in enumerate(rows) if m.group(6).startswith(" (the last closing pair meets at about ")]
+check(len(more) >= 1 and len(meet) >= 1, "%d 'or more' lines and %d naming the last meeting" % (len(more), len(meet)))
+check(bool(more and meet) and max(more) < min(meet), "every 'or more' line before every line naming the meeting")
+t_end = res["t_end"] * 1e3
+ts = [float(re.search(r"meets at about %s ms" % num, rows[i].group(6)).group(1)) for i in meet]
+check(bool(ts) and all(0.97 * t_end <= t < t_end for t in ts),
+      "the meetings named %s ms: before t_end %.4g ms, within 3 %% of it" % (sorted(set(ts)), t_end))
+check(bool(meet) and all(float(rows[i].group(1)) >= float(rows[i].group(2)) and float(rows[i].group(1)) < ts[j]
+                         for j, i in enumerate(meet)),
+      "the meeting named only past the expected length, and while it is ahead")
+for d in (res, quiet):
+    d.pop("wall_time_ms", None)
+check(res == quiet, "the JSON is the quiet run's but for wall_time_ms")
+EOF
+while IFS= read -r l; do
+    case $l in PASS:*) ok "${l#PASS: }" ;; FAIL:*) ko "${l#FAIL: }" ;; *) ko "checker: $l" ;; esac
+done <"$tmp/end.out"
 
 test_summary test_chain_progress

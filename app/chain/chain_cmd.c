@@ -7,6 +7,7 @@
 
 #include "gw_cli.h"
 #include "chain_options.h"
+#include "chain_model.h"
 #include "chain_wall.h"
 
 static const char *chain_summary =
@@ -120,6 +121,8 @@ typedef struct chain_progress {
     char header[160];
     int n;
     double t_expect, t_max; /* the run's, from its first report */
+    gw_cli_column col;      /* the phases' paces, and the column's end (end) */
+    chain_column_end end;   /* kept by the run before each report (chain_collide_progress_end) */
 } chain_progress;
 
 static void chain_progress_report(void *ctx, double t, double t_expect, double t_max)
@@ -134,7 +137,9 @@ static void chain_progress_report(void *ctx, double t, double t_expect, double t
                  "%.4g %s (t-max %.4g %s)", cp->n, cp->n == 1 ? "" : "s", t_expect * sc, u, t_max * sc, u);
         cp->p.header = cp->header;
     }
-    gw_cli_progress_time(&cp->p, t, t_expect, t_max, 0);
+    cp->col.t_end = cp->end.t_end;
+    cp->col.t_meet = cp->end.t_meet;
+    gw_cli_progress_time(&cp->p, &cp->col, t, t_expect, t_max, 0);
 }
 
 /* --n's range is the memory's (gw_chain_params_validate); the column's work
@@ -201,11 +206,13 @@ int gw_cmd_chain(int argc, char **argv)
     chain_progress prog = {.n = c.params.n};
     gw_cli_progress_init(&prog.p, "  ", "", CHAIN_PROGRESS_MS);
     prog.p.after_ms = gw_cli_progress_ms(CHAIN_PROGRESS_MS);
+    gw_cli_column_init(&prog.col, c.params.n, !c.run.solver || c.run.solver == gw_solver_cvode);
     double t0 = gw_clock_ms();
-    int rc = gw_chain_collide_progress(chain, &c.run, quiet ? NULL : chain_progress_report, &prog, &r, &err);
+    int rc = chain_collide_progress_end(chain, &c.run, quiet ? NULL : chain_progress_report, &prog,
+                                        quiet ? NULL : &prog.end, &r, &err);
     double wall_ms = gw_clock_ms() - t0;
     if (rc == GW_OK && !quiet) /* the last line, at the run's end (none for a run under 2 s) */
-        gw_cli_progress_time(&prog.p, r.t_end, prog.t_expect, prog.t_max, 1);
+        gw_cli_progress_time(&prog.p, &prog.col, r.t_end, prog.t_expect, prog.t_max, 1);
     int code = 0;
     if (rc == GW_OK) /* held by gravity: what its warning calls undecided is null in JSON, n/a in the text */
         gw_chain_result_held_blank(&r);

@@ -323,7 +323,8 @@ sweep_config() {
 }
 
 sweep_dashpot_config() {
-    sweep_config "$1" chain "n = 1, 3;sensor-damping = ${2:-1e-12}, 10" "sensor-mass = 1e-2;sensor-stiffness = 1e7;vimp = 0.3"
+    sweep_config "$1" chain "n = 1, 3;sensor-damping = ${2:-1e-12}, 10" \
+        "sensor-mass = 1e-2;sensor-stiffness = 1e7;vimp = 0.3"
 }
 
 layer_grid_ini() {
